@@ -1,0 +1,94 @@
+"""Argument validation shared by the whole package (private).
+
+Every public function converts its array arguments with :func:`as_array`
+(or one of the shorthands), so that wrong shapes and non-finite numbers are
+reported uniformly, naming the argument.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .errors import InputError, NonFiniteError, ShapeError, SingularInertiaError
+
+__all__ = ["as_array", "as_vec3", "as_mat3", "as_xy", "as_scalar", "check_symmetric",
+           "check_positive_definite", "check_positive"]
+
+
+def as_array(x, name: str, tail: tuple[int, ...] = (), *, finite: bool = True) -> np.ndarray:
+    """Return ``x`` as a float array whose trailing dimensions are ``tail``.
+
+    Leading (batch) dimensions are free.  Raises :class:`ShapeError` naming
+    ``name`` if the trailing shape is wrong, and :class:`NonFiniteError` if a
+    value is NaN or infinite (unless ``finite=False``).
+    """
+    try:
+        a = np.asarray(x, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise InputError(f"{name} must be numeric, got {x!r}") from exc
+    nt = len(tail)
+    if a.ndim < nt or (nt and a.shape[-nt:] != tuple(tail)):
+        want = "(..., " + ", ".join(map(str, tail)) + ")" if nt else "a scalar array"
+        raise ShapeError(f"{name} must have shape {want}, got shape {a.shape}")
+    if finite and not np.all(np.isfinite(a)):
+        raise NonFiniteError(f"{name} must be finite, got non-finite values in {np.asarray(x)!r}")
+    return a
+
+
+def as_vec3(x, name: str) -> np.ndarray:
+    """Shorthand for ``as_array(x, name, (3,))``: homogeneous vectors, twists, wrenches."""
+    return as_array(x, name, (3,))
+
+
+def as_mat3(x, name: str) -> np.ndarray:
+    """Shorthand for ``as_array(x, name, (3, 3))``: conics, inertias, transforms."""
+    return as_array(x, name, (3, 3))
+
+
+def as_xy(x, name: str) -> np.ndarray:
+    """Shorthand for ``as_array(x, name, (2,))``: Euclidean points and directions."""
+    return as_array(x, name, (2,))
+
+
+def as_scalar(x, name: str) -> float:
+    """Return ``x`` as a finite Python float."""
+    a = as_array(x, name)
+    if a.ndim != 0:
+        raise ShapeError(f"{name} must be a scalar, got shape {a.shape}")
+    return float(a)
+
+
+def check_positive(x, name: str, *, strict: bool = True) -> np.ndarray:
+    """Raise :class:`InputError` unless every value of ``x`` is positive (or >= 0)."""
+    a = as_array(x, name)
+    bad = a <= 0 if strict else a < 0
+    if np.any(bad):
+        word = "positive" if strict else "non-negative"
+        raise InputError(f"{name} must be {word}, got {a[bad].ravel()[0]!r}")
+    return a
+
+
+def check_symmetric(m: np.ndarray, name: str, rtol: float = 1e-10) -> np.ndarray:
+    """Raise :class:`InputError` unless the (..., 3, 3) matrices ``m`` are symmetric."""
+    asym = np.abs(m - np.swapaxes(m, -1, -2)).max(initial=0.0)
+    scale = np.abs(m).max(initial=0.0)
+    if asym > rtol * max(scale, 1.0):
+        raise InputError(f"{name} must be symmetric, got asymmetry {asym:.3g}")
+    return m
+
+
+def check_positive_definite(m: np.ndarray, name: str, rtol: float = 1e-12) -> np.ndarray:
+    """Raise :class:`SingularInertiaError` unless ``m`` is symmetric positive definite.
+
+    The condition number is attached to the error.
+    """
+    check_symmetric(m, name)
+    w = np.linalg.eigvalsh(m)
+    lo, hi = w[..., 0], w[..., -1]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        cond = np.where(lo > 0, hi / np.where(lo > 0, lo, 1.0), np.inf)
+    bad = lo <= rtol * np.maximum(np.abs(hi), np.finfo(float).tiny)
+    if np.any(bad):
+        c = float(np.max(np.where(bad, cond, 0.0)))
+        raise SingularInertiaError(
+            f"{name} must be positive definite, got smallest eigenvalue {float(np.min(lo)):.3g}", c)
+    return m

@@ -1,0 +1,73 @@
+"""The ``planargeo`` command line: ``planargeo --help`` lists the subcommands.
+
+Each subcommand lives in its own module exposing ``add_arguments(parser)`` and
+``main(args) -> int``; modules are imported only when their command runs, so
+``planargeo --help`` stays fast.
+"""
+from __future__ import annotations
+
+import argparse
+import importlib
+import importlib.util
+import sys
+
+# name -> (module, one-line help)
+COMMANDS: dict[str, tuple[str, str]] = {
+    "report": ("planargeo.report", "print a scene's parameters, state and solved quantities"),
+    "gallery": ("planargeo.draw.gallery", "regenerate (or --check) the SVG gallery"),
+    "bench": ("planargeo.bench", "run the benchmarks and write tables and charts"),
+}
+
+
+def _available() -> dict[str, tuple[str, str]]:
+    out = {}
+    for name, (mod, helptext) in COMMANDS.items():
+        try:
+            if importlib.util.find_spec(mod) is not None:
+                out[name] = (mod, helptext)
+        except ModuleNotFoundError:
+            pass
+    return out
+
+
+def build_parser() -> argparse.ArgumentParser:
+    from . import __version__
+
+    parser = argparse.ArgumentParser(
+        prog="planargeo",
+        description="Planar rigid-body dynamics made visible: twists as points, wrenches as lines.",
+    )
+    parser.add_argument("--version", action="version", version=f"planargeo {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    for name, (mod, helptext) in _available().items():
+        p = sub.add_parser(name, help=helptext, description=helptext)
+        p.set_defaults(_module=mod)
+        # Arguments are added lazily in main() once the command is known, but
+        # --help on a subcommand must show them, so add them here when cheap.
+        p.set_defaults(_lazy=True)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    parser = build_parser()
+    if not argv or argv[0] in ("-h", "--help", "--version"):
+        args = parser.parse_args(argv)
+        parser.print_help()
+        return 0
+    name = argv[0]
+    cmds = _available()
+    if name not in cmds:
+        parser.print_usage(sys.stderr)
+        print(f"planargeo: error: unknown command {name!r} (choose from {', '.join(cmds)})",
+              file=sys.stderr)
+        return 2
+    mod = importlib.import_module(cmds[name][0])
+    sub = argparse.ArgumentParser(prog=f"planargeo {name}", description=cmds[name][1])
+    mod.add_arguments(sub)
+    args = sub.parse_args(argv[1:])
+    return int(mod.main(args) or 0)
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

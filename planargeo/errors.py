@@ -1,0 +1,98 @@
+"""The package's exceptions.
+
+Every error raised on purpose by planargeo derives from :class:`PlanargeoError`,
+so ``except planargeo.PlanargeoError`` catches them all.  Errors about bad
+*input* also derive from :class:`ValueError` (or :class:`TypeError`), so code
+that already guards against those keeps working.
+
+Messages always name the offending argument and say what was wrong with it,
+e.g. ``"mass must be positive, got -1.0"``.
+
+Hierarchy::
+
+    PlanargeoError
+    ├── InputError (ValueError)            bad argument values
+    │   ├── ShapeError                     wrong array shape
+    │   ├── NonFiniteError                 NaN or inf where numbers are needed
+    │   ├── InvalidPolygonError            shapely geometry not a valid area
+    │   ├── TopologyError                  parent array not a tree (e.g. a cycle)
+    │   └── SceneError                     scene parameters that cannot be built
+    ├── DegenerateGeometryError (ValueError)  e.g. the join of two coincident points
+    └── SingularError (numpy.linalg.LinAlgError)  carries ``cond``
+        ├── SingularInertiaError           an inertia that cannot be inverted
+        └── SingularConfigurationError     s^T A s or B^T G Λ^-1 G^T B singular
+"""
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = [
+    "PlanargeoError",
+    "InputError",
+    "ShapeError",
+    "NonFiniteError",
+    "InvalidPolygonError",
+    "TopologyError",
+    "SceneError",
+    "DegenerateGeometryError",
+    "SingularError",
+    "SingularInertiaError",
+    "SingularConfigurationError",
+]
+
+
+class PlanargeoError(Exception):
+    """Base class of every error planargeo raises on purpose."""
+
+
+class InputError(PlanargeoError, ValueError):
+    """An argument has a value the function cannot accept."""
+
+
+class ShapeError(InputError):
+    """An array argument has the wrong shape."""
+
+
+class NonFiniteError(InputError):
+    """An array argument contains NaN or infinity."""
+
+
+class InvalidPolygonError(InputError):
+    """A shapely geometry is not a valid, non-empty area."""
+
+
+class TopologyError(InputError):
+    """A mechanism's parent structure is not a tree (cycle, bad parent index)."""
+
+
+class SceneError(InputError):
+    """Scene parameters describe a mechanism that cannot be built or assembled."""
+
+
+class DegenerateGeometryError(PlanargeoError, ValueError):
+    """A construction has no unique answer (e.g. the join of two coincident points).
+
+    Points and lines at infinity are *not* degenerate: they are ordinary values.
+    """
+
+
+class SingularError(PlanargeoError, np.linalg.LinAlgError):
+    """A matrix that must be inverted is singular (or numerically so).
+
+    Attributes
+    ----------
+    cond : float
+        The condition number found (``inf`` when exactly singular).
+    """
+
+    def __init__(self, message: str, cond: float = float("inf")):
+        super().__init__(f"{message} (condition number {cond:.3g})")
+        self.cond = float(cond)
+
+
+class SingularInertiaError(SingularError):
+    """An inertia (or articulated inertia) is singular or not positive definite."""
+
+
+class SingularConfigurationError(SingularError):
+    """A mechanism is in a singular configuration (e.g. a slider-crank dead centre)."""
