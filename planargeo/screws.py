@@ -177,7 +177,7 @@ def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
     cx, cy = c[..., 0], c[..., 1]
     out[..., 0, 0] = m
     out[..., 1, 1] = m
-    out[..., 0, 2] = out[..., 2, 0] = -m * cy
+    out[..., 0, 2] = out[..., 2, 0] = 0.0 - m * cy
     out[..., 1, 2] = out[..., 2, 1] = m * cx
     out[..., 2, 2] = J + m * (cx * cx + cy * cy)
     return out
