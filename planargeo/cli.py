@@ -39,12 +39,8 @@ def build_parser() -> argparse.ArgumentParser:
     )
     parser.add_argument("--version", action="version", version=f"planargeo {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
-    for name, (mod, helptext) in _available().items():
-        p = sub.add_parser(name, help=helptext, description=helptext)
-        p.set_defaults(_module=mod)
-        # Arguments are added lazily in main() once the command is known, but
-        # --help on a subcommand must show them, so add them here when cheap.
-        p.set_defaults(_lazy=True)
+    for name, (_mod, helptext) in _available().items():
+        sub.add_parser(name, help=helptext, description=helptext)
     return parser
 
 
@@ -52,7 +48,7 @@ def main(argv: list[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     parser = build_parser()
     if not argv or argv[0] in ("-h", "--help", "--version"):
-        args = parser.parse_args(argv)
+        parser.parse_args(argv)  # --version prints and exits
         parser.print_help()
         return 0
     name = argv[0]
