@@ -8,7 +8,7 @@ STAMP  := $(VENV)/.installed-stamp
 ROOT_FLAG := $(if $(filter 0,$(shell id -u)),--allow-root,)
 PYTEST_ARGS ?=
 
-.PHONY: lab test install gallery bench clean help
+.PHONY: lab test install gallery bench clean help browser
 
 help:
 	@echo "make lab    - set up .venv and start JupyterLab on notebooks/00-tour.ipynb"
@@ -29,8 +29,16 @@ install: $(STAMP)
 lab: $(STAMP)
 	$(BIN)/jupyter lab $(ROOT_FLAG) --notebook-dir=notebooks 00-tour.ipynb
 
-test: $(STAMP)
-	MPLBACKEND=Agg $(BIN)/python -m pytest -n 2 $(PYTEST_ARGS)
+# Debian's chromium drives the real-browser test (Playwright's own download does not work here).
+browser:
+	@command -v chromium >/dev/null 2>&1 || { \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
+	    echo "installing Debian's chromium for the browser test"; \
+	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null; \
+	  else echo "chromium not found and cannot be installed: the browser test will be skipped"; fi; }
+
+test: $(STAMP) browser
+	MPLBACKEND=Agg $(BIN)/python -m pytest -n 2 --nbmake tests planargeo notebooks $(PYTEST_ARGS)
 
 gallery: $(STAMP)
 	MPLBACKEND=Agg $(BIN)/planargeo gallery
