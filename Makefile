@@ -27,7 +27,7 @@ $(STAMP): pyproject.toml | $(BIN)/python
 install: $(STAMP)
 
 lab: $(STAMP)
-	$(BIN)/jupyter lab $(ROOT_FLAG) --notebook-dir=notebooks 00-tour.ipynb
+	$(BIN)/jupyter lab $(ROOT_FLAG) notebooks/00-tour.ipynb
 
 # Debian's chromium drives the real-browser test (Playwright's own download does not work here).
 browser:
