@@ -1,0 +1,414 @@
+"""The :class:`Explorer` base class shared by every interactive explorer.
+
+An explorer is a small interactive figure: a matplotlib figure whose artists
+are built **once**, a set of ipywidgets controls, a readout of the key numbers,
+a message area, a *Reset* and an *Export SVG* button.  On every control change
+it recomputes what its scene needs and updates its artists in place
+(``set_data``, ``set_xy``...), then asks the canvas to redraw.
+
+Two front ends are supported:
+
+``"ipympl"``
+    under ``%matplotlib widget`` the figure canvas is itself a widget, and the
+    mouse can drag things on it;
+``"image"``
+    under the default inline backend the figure is rendered to PNG into an
+    :class:`ipywidgets.Image` after every change;
+``"agg"``
+    no display at all (tests, benchmarks): the figure is drawn on an Agg canvas.
+
+The default, ``display="auto"``, picks ``"ipympl"`` when that backend is
+active and ``"image"`` otherwise.
+
+Errors never escape a callback.  Any :class:`~planargeo.errors.PlanargeoError`
+raised while computing (an impossible combination of slider values, a
+singular configuration...) is shown in the message area; the drawing and the
+readout keep their last good state and the explorer keeps working.
+
+Programmatic use (tests, notebooks)::
+
+    ex.controls["angle"].value = 0.3     # triggers one update
+    ex.readout_values["distance"]        # the numbers shown in the readout
+    ex.message                           # "" when all is well
+    with ex.hold():                      # several changes, one update
+        ex.controls["a"].value = 1.0
+        ex.controls["b"].value = 2.0
+"""
+from __future__ import annotations
+
+import contextlib
+import html
+import io
+import itertools
+import os
+import time
+import warnings
+from pathlib import Path
+from typing import Any, Callable
+
+import ipywidgets as W
+import matplotlib
+import numpy as np
+from matplotlib.figure import Figure
+
+from ..errors import InputError, PlanargeoError
+
+__all__ = ["Explorer", "Step", "fmt"]
+
+_DISPLAYS = ("auto", "ipympl", "image", "agg")
+_export_counter = itertools.count(1)
+
+
+def fmt(x: Any, digits: int = 4) -> str:
+    """Readable text for a readout value (numbers rounded, ideal values named)."""
+    if isinstance(x, (bool, np.bool_)):
+        return "yes" if x else "no"
+    if isinstance(x, (int, np.integer)):
+        return str(int(x))
+    if isinstance(x, (float, np.floating)):
+        if not np.isfinite(x):
+            return "∞" if x > 0 else ("−∞" if x < 0 else "—")
+        if x == 0:
+            return "0"
+        if abs(x) >= 1e5 or abs(x) < 1e-3:
+            return f"{x:.{digits - 1}e}"
+        return f"{x:.{digits}g}"
+    if isinstance(x, (tuple, list, np.ndarray)):
+        return "(" + ", ".join(fmt(v, digits) for v in np.ravel(x)) + ")"
+    return html.escape(str(x))
+
+
+def _backend_is_ipympl() -> bool:
+    name = matplotlib.get_backend().lower()
+    return "ipympl" in name or name in ("widget", "module://ipympl.backend_nbagg")
+
+
+class Step:
+    """A float slider description: ``Step(lo, hi, step, value, label)``."""
+
+    def __init__(self, lo: float, hi: float, step: float, value: float, label: str = ""):
+        self.lo, self.hi, self.step, self.value, self.label = lo, hi, step, value, label
+
+    def make(self, name: str) -> W.FloatSlider:
+        return W.FloatSlider(value=self.value, min=self.lo, max=self.hi, step=self.step,
+                             description=self.label or name, continuous_update=True,
+                             readout_format=".3g", style={"description_width": "initial"},
+                             layout=W.Layout(width="330px"))
+
+
+class Explorer:
+    """Base class: a figure + controls + readout + message, updated in place.
+
+    Subclasses implement
+
+    * :meth:`make_controls` -> ``{name: widget}`` (initial values are the defaults),
+    * :meth:`setup_axes` (limits, labels) and :meth:`make_artists` (create every
+      artist once, store them on ``self``),
+    * :meth:`compute` ``(values) -> state``: pure, may raise PlanargeoError,
+    * :meth:`render` ``(state)``: update the artists in place and return the
+      readout dictionary.
+
+    Parameters
+    ----------
+    display : {"auto", "ipympl", "image", "agg"}
+        Front end (see the module docstring).
+    figsize : (float, float)
+        Figure size in inches.
+    export_dir : str or Path, optional
+        Where *Export SVG* writes (default: the current directory).
+    **values
+        Initial control values overriding the defaults (they also become the
+        values *Reset* returns to).
+    """
+
+    #: Title shown above the explorer.
+    title: str = "Explorer"
+    #: Short name used for exported file names.
+    slug: str = "explorer"
+    #: Readout keys shown (in this order); others are kept in readout_values only.
+    figsize: tuple[float, float] = (6.0, 5.0)
+    dpi: int = 90
+
+    def __init__(self, *, display: str = "auto", figsize=None, export_dir=None, **values):
+        if display not in _DISPLAYS:
+            raise InputError(f"display must be one of {_DISPLAYS}, got {display!r}")
+        if display == "auto":
+            display = "ipympl" if _backend_is_ipympl() else "image"
+        self.display_mode = display
+        self.export_dir = Path(export_dir) if export_dir is not None else None
+        self.readout_values: dict[str, Any] = {}
+        self.state: Any = None
+        self.n_updates = 0
+        self.last_export: Path | None = None
+        self._message = ""
+        self._hold = 0
+        self._pending = False
+        self._changed: set[str] = set()
+        self._busy = False
+
+        # controls -------------------------------------------------------------
+        self.controls: dict[str, W.ValueWidget] = dict(self.make_controls())
+        unknown = sorted(set(values) - set(self.controls))
+        if unknown:
+            raise InputError(f"{type(self).__name__} has no control {unknown[0]!r} "
+                             f"(controls: {', '.join(self.controls)})")
+        for k, v in values.items():
+            self.controls[k].value = v
+        self.defaults = {k: w.value for k, w in self.controls.items()}
+
+        # figure ----------------------------------------------------------------
+        self.fig, self.ax = self._make_figure(figsize or self.figsize)
+        self.setup_axes(self.ax)
+        self.make_artists(self.ax)
+        self._msg_text = self.ax.text(0.5, 0.5, "", transform=self.ax.transAxes, ha="center",
+                                      va="center", fontsize=11, color="#b00020", zorder=100,
+                                      wrap=True,
+                                      bbox=dict(boxstyle="round", fc="white", ec="#b00020",
+                                                alpha=0.9),
+                                      visible=False)
+
+        # widgets ---------------------------------------------------------------
+        self.readout = W.HTML(layout=W.Layout(min_width="220px"))
+        self.message_box = W.HTML(layout=W.Layout(min_height="1.5em"))
+        self.reset_button = W.Button(description="Reset", icon="undo",
+                                     tooltip="Return every control to its default")
+        self.export_button = W.Button(description="Export SVG", icon="download",
+                                      tooltip="Write the current view to an SVG file")
+        self.export_label = W.HTML()
+        self.reset_button.on_click(lambda _b: self.reset())
+        self.export_button.on_click(lambda _b: self._export_clicked())
+        for name, w in self.controls.items():
+            w.observe(self._make_observer(name), names="value")
+        self.widget = self._layout()
+        self.connect_mouse()
+        self._update(initial=True)
+
+    # ---------------------------------------------------------------- subclass API
+    def make_controls(self) -> dict[str, W.ValueWidget]:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def setup_axes(self, ax) -> None:
+        ax.set_aspect("equal")
+
+    def make_artists(self, ax) -> None:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def compute(self, values: dict[str, Any], changed: set[str]) -> Any:  # pragma: no cover
+        raise NotImplementedError
+
+    def render(self, state: Any) -> dict[str, Any]:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def extra_widgets(self) -> list:
+        """Widgets shown below the controls (e.g. a Play button)."""
+        return []
+
+    def connect_mouse(self) -> None:
+        """Connect mouse handlers (subclasses; only useful under ipympl)."""
+
+    # ---------------------------------------------------------------- public API
+    @property
+    def values(self) -> dict[str, Any]:
+        """Current value of every control."""
+        return {k: w.value for k, w in self.controls.items()}
+
+    @property
+    def message(self) -> str:
+        """The message shown ("" when the last update succeeded)."""
+        return self._message
+
+    @contextlib.contextmanager
+    def hold(self):
+        """Change several controls with a single update at the end."""
+        self._hold += 1
+        try:
+            yield self
+        finally:
+            self._hold -= 1
+            if self._hold == 0 and self._pending:
+                self._pending = False
+                self._update()
+
+    def set(self, **values) -> "Explorer":
+        """Set several controls at once (one update); returns ``self``."""
+        with self.hold():
+            for k, v in values.items():
+                if k not in self.controls:
+                    self._set_message(f"unknown control {k!r}")
+                    continue
+                self.controls[k].value = v
+        return self
+
+    def reset(self) -> None:
+        """Return every control to its default (one update)."""
+        with self.hold():
+            for k, v in self.defaults.items():
+                self.controls[k].value = v
+            self._pending = True
+
+    def export_svg(self, path=None) -> Path:
+        """Write the current view to an SVG file and return its path."""
+        if path is None:
+            d = self.export_dir or Path.cwd()
+            path = Path(d) / f"planargeo-{self.slug}-{os.getpid()}-{next(_export_counter)}.svg"
+        path = Path(path)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        self.fig.savefig(path, format="svg")
+        self.last_export = path.resolve()
+        return self.last_export
+
+    def redraw(self) -> None:
+        """Draw the figure and refresh the front end."""
+        if self.display_mode == "ipympl":
+            self.fig.canvas.draw_idle()
+        elif self.display_mode == "agg":
+            self.fig.canvas.draw()
+        else:
+            buf = io.BytesIO()
+            self.fig.savefig(buf, format="png", dpi=self.dpi)
+            self.image.value = buf.getvalue()
+
+    def _repr_mimebundle_(self, **kwargs):
+        return self.widget._repr_mimebundle_(**kwargs)
+
+    def show(self):
+        """Display the explorer (in a notebook) and return it."""
+        from IPython.display import display
+
+        display(self.widget)
+        return self
+
+    # ---------------------------------------------------------------- internals
+    def _make_figure(self, figsize):
+        if self.display_mode == "ipympl":
+            import matplotlib.pyplot as plt
+
+            with plt.ioff():
+                fig = plt.figure(figsize=figsize, dpi=self.dpi)
+            fig.canvas.header_visible = False
+            fig.canvas.footer_visible = False
+            fig.canvas.toolbar_position = "bottom"
+            fig.canvas.resizable = False
+        else:
+            from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+            fig = Figure(figsize=figsize, dpi=self.dpi)
+            FigureCanvasAgg(fig)
+        ax = fig.add_subplot(1, 1, 1)
+        fig.subplots_adjust(left=0.08, right=0.98, bottom=0.07, top=0.95)
+        return fig, ax
+
+    def _layout(self):
+        if self.display_mode == "ipympl":
+            fig_widget = self.fig.canvas
+        elif self.display_mode == "image":
+            self.image = W.Image(format="png", layout=W.Layout(width="auto"))
+            fig_widget = self.image
+        else:
+            self.image = None
+            fig_widget = W.HTML("<i>(figure drawn off-screen)</i>")
+        buttons = W.HBox([self.reset_button, self.export_button])
+        controls = W.VBox(list(self.controls.values()) + self.extra_widgets() + [buttons,
+                                                                                self.export_label])
+        right = W.VBox([W.HTML("<b>Readout</b>"), self.readout, self.message_box])
+        head = W.HTML(f"<h4 style='margin:2px'>{html.escape(self.title)}</h4>")
+        return W.VBox([head, W.HBox([controls, fig_widget, right])])
+
+    def _make_observer(self, name: str) -> Callable:
+        def _observer(change):
+            self._changed.add(name)
+            if self._hold:
+                self._pending = True
+                return
+            self._update()
+
+        return _observer
+
+    def _set_message(self, text: str) -> None:
+        self._message = text
+        if text:
+            self.message_box.value = (f"<div style='color:#b00020;font-weight:bold'>"
+                                      f"⚠ {html.escape(text)}</div>")
+        else:
+            self.message_box.value = ""
+
+    def _show_figure_message(self, text: str) -> None:
+        self._msg_text.set_text(text)
+        self._msg_text.set_visible(bool(text))
+
+    def _update(self, initial: bool = False) -> None:
+        """Recompute and redraw; never raises."""
+        if self._busy:  # a re-entrant change from inside render: fold it in
+            self._pending = True
+            return
+        self._busy = True
+        changed = set(self.controls) if initial else set(self._changed)
+        self._changed.clear()
+        try:
+            try:
+                with warnings.catch_warnings():
+                    warnings.simplefilter("error", RuntimeWarning)
+                    state = self.compute(self.values, changed)
+            except PlanargeoError as exc:
+                self._set_message(str(exc))
+                self._show_figure_message(self.figure_message(exc))
+                self._safe_redraw()
+                return
+            except (ArithmeticError, RuntimeWarning, np.linalg.LinAlgError, ValueError) as exc:
+                self._set_message(f"cannot compute this configuration: {exc}")
+                self._show_figure_message("cannot compute this configuration")
+                self._safe_redraw()
+                return
+            self.state = state
+            readout = self.render(state)
+            self.readout_values = dict(readout)
+            self.readout.value = self._readout_html(self.readout_values)
+            self._set_message(getattr(state, "message", "") if not isinstance(state, dict)
+                              else state.get("message", ""))
+            self._show_figure_message(self._message)
+            self.n_updates += 1
+            self._safe_redraw()
+        except Exception as exc:  # noqa: BLE001 - a callback must never raise
+            self._set_message(f"internal error ({type(exc).__name__}): {exc}")
+        finally:
+            self._busy = False
+        if self._pending and not self._hold:
+            self._pending = False
+            self._update()
+
+    def figure_message(self, exc: Exception) -> str:
+        """Short text drawn on the figure when an update fails."""
+        text = str(exc)
+        return text if len(text) < 90 else text[:87] + "..."
+
+    def _safe_redraw(self) -> None:
+        try:
+            self.redraw()
+        except Exception as exc:  # noqa: BLE001
+            self._message = self._message or f"drawing failed ({type(exc).__name__}): {exc}"
+
+    def _readout_html(self, values: dict[str, Any]) -> str:
+        rows = "".join(
+            f"<tr><td style='padding-right:8px'>{html.escape(str(k))}</td>"
+            f"<td style='text-align:right;font-family:monospace'>{fmt(v)}</td></tr>"
+            for k, v in values.items() if not str(k).startswith("_"))
+        return f"<table class='planargeo-readout'>{rows}</table>"
+
+    def _export_clicked(self) -> None:
+        try:
+            p = self.export_svg()
+            self.export_label.value = f"saved <code>{html.escape(str(p))}</code>"
+        except Exception as exc:  # noqa: BLE001
+            self.export_label.value = (f"<span style='color:#b00020'>export failed: "
+                                       f"{html.escape(str(exc))}</span>")
+
+    # -------------------------------------------------------------- benchmarking
+    def time_update(self, name: str, values: list, repeat: int = 1) -> list[float]:
+        """Seconds from setting ``controls[name]`` to the redrawn figure, per value."""
+        out = []
+        for _ in range(repeat):
+            for v in values:
+                t0 = time.perf_counter()
+                self.controls[name].value = v
+                out.append(time.perf_counter() - t0)
+        return out
