@@ -1,0 +1,15 @@
+"""Forward and inverse dynamics algorithms on a :class:`planargeo.model.Model`.
+
+Every forward dynamics function has the signature
+``(model, q, qd, tau, f_ext=None) -> qdd``; ``f_ext`` is ``(N, 3)`` world
+wrenches at the origin applied to each body (besides gravity).
+
+* :mod:`planargeo.algorithms.aba` -- recursive articulated-body algorithm (thesis 3.6)
+* :mod:`planargeo.algorithms.rnea` -- recursive Newton-Euler inverse dynamics (3.9)
+* :mod:`planargeo.algorithms.crba` -- dense reference: mass matrix and bias, solved densely
+* :mod:`planargeo.algorithms.projective` -- projective formulation (6.108-6.113)
+* :mod:`planargeo.algorithms.chain_splitting` -- mobility split (7.4.1, 7.54/7.56)
+* :mod:`planargeo.algorithms.stacked` -- stacked formulation (9.1, 9.39/9.48)
+
+Import the functions from their submodules (this package imports nothing).
+"""
