@@ -1,0 +1,698 @@
+"""Matplotlib artists for homogeneous points, lines and conics.
+
+Each artist holds one homogeneous array in the package's coordinates (a point
+``[y, -x, 1]`` is a twist, a line ``[fx, fy, tz]`` is a wrench, a symmetric
+``(3, 3)`` matrix is a conic or an inertia).  A ``set_*`` call only stores the
+new array and marks the artist stale; the geometry (clipping against the
+current view, glyph placement) is computed when the figure is drawn, with a
+fixed set of child primitives, so an artist can be updated thousands of times
+(animation, widgets) without creating new artists.
+
+* :class:`PointArtist`: a twist's pole with a rotation glyph (counter-clockwise
+  or clockwise arc arrow, radius growing with ``|ω|``); an ideal point (a
+  translation) becomes an arrow at the edge of the view, placed in the
+  direction in which the point lies and pointing along the translation.
+* :class:`LineArtist`: a wrench's line of action, infinite and clipped to the
+  view at draw time, with an arrow showing the force's sense and magnitude;
+  the line at infinity (a pure couple) is a labelled couple glyph in a corner.
+* :class:`ConicArtist`: ellipses, hyperbolas (both branches), parabolas as a
+  fixed unit path under an affine transform; degenerate conics as their real
+  lines; an imaginary conic (an inertia) by the package convention: the
+  sign-flipped real conic (for an inertia the radius-of-gyration circle about
+  the centre of mass), dashed, with its centre marked.
+"""
+from __future__ import annotations
+
+import numpy as np
+from matplotlib import artist as martist
+from matplotlib.lines import Line2D
+from matplotlib.patches import FancyArrowPatch, Polygon
+from matplotlib.path import Path
+from matplotlib.text import Text
+from matplotlib.transforms import Affine2D, IdentityTransform
+
+from .._validate import as_array, as_vec3
+from ..errors import InputError
+from .style import COLORS, style as _style
+
+__all__ = [
+    "PointArtist", "LineArtist", "ConicArtist",
+    "point_xy", "clip_line", "conic_geometry", "euclidean_conic",
+    "plot_point", "plot_line", "plot_conic", "plot_inertia",
+]
+
+# package point p = M @ [x, y, 1]
+_M = np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+
+
+# --------------------------------------------------------------------------- helpers
+def _vec(x, name: str) -> np.ndarray:
+    """A homogeneous 3-vector from an array or a planargeo object (``.array``)."""
+    if hasattr(x, "array") and not isinstance(x, np.ndarray):
+        x = x.array
+    return as_vec3(x, name).copy()
+
+
+def _mat(x, name: str) -> np.ndarray:
+    if not isinstance(x, np.ndarray):
+        for attr in ("matrix", "array"):
+            if hasattr(x, attr):
+                x = getattr(x, attr)
+                break
+    m = as_array(x, name, (3, 3)).copy()
+    if m.ndim != 2:
+        raise InputError(f"{name} must be a single (3, 3) matrix, got shape {m.shape}")
+    if not np.allclose(m, m.T, rtol=1e-10, atol=1e-12 * max(1.0, float(np.abs(m).max()))):
+        raise InputError(f"{name} must be symmetric")
+    return 0.5 * (m + m.T)
+
+
+def point_xy(p) -> np.ndarray | None:
+    """Euclidean ``(x, y)`` of a homogeneous point, or None for an ideal point.
+
+    Examples
+    --------
+    >>> point_xy([2.0, -1.0, 1.0])
+    array([1., 2.])
+    >>> point_xy([1.0, 0.0, 0.0]) is None
+    True
+    """
+    p = np.asarray(p, dtype=float)
+    if p[2] == 0.0:
+        return None
+    return np.array([-p[1] / p[2], p[0] / p[2]])
+
+
+def clip_line(line, box) -> np.ndarray | None:
+    """Endpoints ``(2, 2)`` of the infinite line ``[fx, fy, tz]`` inside ``box``.
+
+    ``box = (x0, x1, y0, y1)``.  Returns None if the line misses the box or is
+    the line at infinity.  The points satisfy ``tz + y fx - x fy = 0`` (4.27)
+    and lie on the boundary of the box.
+
+    Examples
+    --------
+    >>> clip_line([1.0, 0.0, -0.5], (-1, 1, -1, 1))   # y = 0.5, force along +x
+    array([[-1. ,  0.5],
+           [ 1. ,  0.5]])
+    """
+    fx, fy, tz = (float(v) for v in line)
+    F2 = fx * fx + fy * fy
+    if F2 == 0.0:
+        return None
+    x0, x1, y0, y1 = (float(v) for v in box)
+    p = np.array([fy * tz, -fx * tz]) / F2  # foot of the perpendicular from the origin
+    d = np.array([fx, fy]) / np.sqrt(F2)
+    tlo, thi = -np.inf, np.inf
+    for k, (lo, hi) in enumerate(((x0, x1), (y0, y1))):
+        if d[k] == 0.0:
+            if p[k] < lo or p[k] > hi:
+                return None
+            continue
+        a, b = (lo - p[k]) / d[k], (hi - p[k]) / d[k]
+        if a > b:
+            a, b = b, a
+        tlo, thi = max(tlo, a), min(thi, b)
+    if not tlo <= thi:
+        return None
+    out = np.array([p + tlo * d, p + thi * d])
+    # snap the coordinate that hit the boundary exactly onto it
+    for q in out:
+        for k, (lo, hi) in enumerate(((x0, x1), (y0, y1))):
+            if abs(q[k] - lo) <= 1e-12 * max(1.0, abs(lo)):
+                q[k] = lo
+            elif abs(q[k] - hi) <= 1e-12 * max(1.0, abs(hi)):
+                q[k] = hi
+    return out
+
+
+def _view(ax):
+    (x0, y0), (x1, y1) = ax.viewLim.get_points()
+    return (min(x0, x1), max(x0, x1), min(y0, y1), max(y0, y1))
+
+
+def _arc_glyph(center, radius, ccw: bool, npts: int = 40):
+    """Display-space arc (270°) and arrowhead triangle for a rotation glyph."""
+    a0, span = np.deg2rad(-45.0), np.deg2rad(270.0)
+    t = np.linspace(a0, a0 + span, npts) if ccw else np.linspace(a0 + span, a0, npts)
+    arc = center + radius * np.column_stack([np.cos(t), np.sin(t)])
+    end, te = arc[-1], t[-1]
+    tang = np.array([-np.sin(te), np.cos(te)]) * (1.0 if ccw else -1.0)
+    norm = np.array([np.cos(te), np.sin(te)])
+    h = max(3.0, 0.45 * radius)
+    head = np.array([end + tang * h, end - 0.5 * h * norm, end + 0.5 * h * norm])
+    return arc, head
+
+
+def _text_props(color):
+    return dict(color=color, fontsize=8, ha="center", va="center")
+
+
+class _Base(martist.Artist):
+    """Common plumbing: fixed children drawn in data or display space."""
+
+    def __init__(self, text=None, text_offset=(8.0, 8.0), zorder=3):
+        super().__init__()
+        self.set_zorder(zorder)
+        self.set_in_layout(False)
+        self._children = []
+        self._text = Text(0, 0, "" if text is None else str(text))
+        self._text.set_transform(IdentityTransform())
+        self._text_offset = np.asarray(text_offset, dtype=float)
+        self._add_child(self._text)
+
+    def _add_child(self, child):
+        self._children.append(child)
+        return child
+
+    def get_children(self):
+        return list(self._children)
+
+    def set_text(self, text):
+        """Set the text label drawn next to the glyph."""
+        self._text.set_text("" if text is None else str(text))
+        self.stale = True
+
+    def set_figure(self, fig):
+        super().set_figure(fig)
+        for c in self._children:
+            c.set_figure(fig)
+
+    def _prepare_children(self):
+        ax = self.axes
+        for c in self._children:
+            if c.axes is None and not isinstance(c, Text):
+                c.axes = ax
+            if c.get_clip_path() is None and ax is not None:
+                c.set_clip_path(ax.patch)
+            c.set_alpha(self.get_alpha())
+
+    def _draw_children(self, renderer, children):
+        for c in children:
+            if c.get_visible():
+                c.draw(renderer)
+
+    @martist.allow_rasterization
+    def draw(self, renderer):
+        if not self.get_visible() or self.axes is None:
+            self.stale = False
+            return
+        self._prepare_children()
+        drawn = self._update_geometry(renderer)
+        renderer.open_group(type(self).__name__, gid=self.get_gid())
+        self._draw_children(renderer, drawn)
+        renderer.close_group(type(self).__name__)
+        self.stale = False
+
+    def _place_text(self, anchor_disp, renderer):
+        if not self._text.get_text():
+            return []
+        off = self._text_offset * renderer.points_to_pixels(1.0)
+        self._text.set_position(tuple(np.asarray(anchor_disp) + off))
+        return [self._text]
+
+
+# --------------------------------------------------------------------------- points
+class PointArtist(_Base):
+    """A homogeneous point (a twist's pole) with a rotation glyph.
+
+    Parameters
+    ----------
+    point : array_like (3,) or object with ``.array``
+        ``[vx, vy, w]``; the pole is ``(-vy/w, vx/w)`` (thesis 4.10).
+    role : {"twist", "accel"}
+        Style role (colour), see :mod:`planargeo.draw.style`.
+    glyph_scale : float
+        Radius of the rotation arc in points per unit ``|w|`` (clamped to
+        [3, 30] points).  For an ideal point, arrow length in points per unit
+        speed (clamped to [12, 40]).
+    glyph : bool
+        Draw the rotation / translation glyph (the marker alone otherwise).
+    text : str, optional
+        Label drawn next to the pole.
+    """
+
+    def __init__(self, point, *, role="twist", glyph_scale=10.0, glyph=True, text=None,
+                 text_offset=(8.0, 8.0), color=None, markersize=None, zorder=4):
+        super().__init__(text, text_offset, zorder)
+        st = _style(role)
+        self._color = color or st["color"]
+        self._p = _vec(point, "point")
+        self._glyph_scale = float(glyph_scale)
+        self._glyph = bool(glyph)
+        self._marker = self._add_child(Line2D([0], [0], marker=st["marker"], linestyle="none",
+                                              markersize=markersize or st["markersize"],
+                                              color=self._color, markeredgecolor="white",
+                                              markeredgewidth=0.6))
+        self._arc = self._add_child(Line2D([0, 0], [0, 0], color=self._color, linewidth=1.0))
+        self._arc.set_transform(IdentityTransform())
+        self._head = self._add_child(Polygon(np.zeros((3, 2)), closed=True, color=self._color,
+                                             linewidth=0))
+        self._head.set_transform(IdentityTransform())
+        self._arrow = self._add_child(FancyArrowPatch((0, 0), (1, 1), arrowstyle="-|>",
+                                                      mutation_scale=9, color=self._color,
+                                                      linewidth=1.4, shrinkA=0, shrinkB=0,
+                                                      transform=IdentityTransform()))
+        self._inf = self._add_child(Text(0, 0, "∞", color=self._color, fontsize=8,
+                                         ha="center", va="center"))
+        self._inf.set_transform(IdentityTransform())
+        self._text.set_color(self._color)
+
+    # API
+    def set_point(self, point):
+        """Store a new homogeneous point; geometry is recomputed at draw time."""
+        self._p = _vec(point, "point")
+        self.stale = True
+
+    set_twist = set_point
+
+    def get_point(self) -> np.ndarray:
+        return self._p.copy()
+
+    def get_xy(self):
+        """Euclidean pole, or None for an ideal point."""
+        return point_xy(self._p)
+
+    def _update_geometry(self, renderer):
+        ax = self.axes
+        p = self._p
+        if not np.any(p):
+            return []
+        pts = renderer.points_to_pixels(1.0)
+        xy = point_xy(p)
+        out = []
+        if xy is not None:
+            self._marker.set_data([xy[0]], [xy[1]])
+            self._marker.set_transform(ax.transData)
+            out.append(self._marker)
+            disp = ax.transData.transform(xy)
+            if self._glyph:
+                r = float(np.clip(self._glyph_scale * abs(p[2]), 3.0, 30.0)) * pts
+                arc, head = _arc_glyph(disp, r, ccw=p[2] > 0)
+                self._arc.set_data(arc[:, 0], arc[:, 1])
+                self._head.set_xy(head)
+                out += [self._arc, self._head]
+            out += self._place_text(disp, renderer)
+            return out
+        # ideal point: translation velocity (a, b); the point lies in direction (-b, a)
+        a, b = float(p[0]), float(p[1])
+        lin = ax.transData.get_affine().get_matrix()[:2, :2]
+        bb = ax.bbox
+        cd = np.array([(bb.x0 + bb.x1) / 2, (bb.y0 + bb.y1) / 2])
+        n = lin @ np.array([-b, a])
+        n /= np.hypot(*n)
+        t = lin @ np.array([a, b])  # display direction of the velocity (a, b)
+        t /= np.hypot(*t)
+        half = np.array([bb.width, bb.height]) / 2
+        s = min(half[k] / abs(n[k]) for k in range(2) if n[k] != 0.0)
+        L = float(np.clip(self._glyph_scale * np.hypot(a, b), 12.0, 40.0)) * pts
+        base = cd + n * (s - 14 * pts)
+        self._arrow.set_positions(tuple(base - t * L / 2), tuple(base + t * L / 2))
+        self._inf.set_position(tuple(base - n * 8 * pts))
+        out += [self._arrow, self._inf]
+        out += self._place_text(base + t * L / 2, renderer)
+        return out
+
+
+# --------------------------------------------------------------------------- lines
+class LineArtist(_Base):
+    """A homogeneous line (a wrench's line of action), clipped to the view.
+
+    Parameters
+    ----------
+    line : array_like (3,) or object with ``.array``
+        ``[fx, fy, tz]``: the points with ``tz + y fx - x fy = 0`` (4.27).
+    role : {"wrench", "reaction", "momentum", "construct"}
+        Style role.
+    scale : float or None
+        Force arrow length in data units per unit force; None draws no arrow.
+    anchor : (x, y), optional
+        Where along the line to put the arrow (projected onto the line);
+        default: the foot of the perpendicular from the view centre.
+    corner : str
+        Corner for the couple glyph of the line at infinity
+        ("upper right", "upper left", "lower right", "lower left").
+    couple_scale : float
+        Couple glyph radius in points per unit moment (clamped to [5, 18]).
+    """
+
+    def __init__(self, line, *, role="wrench", scale=1.0, anchor=None, text=None,
+                 text_offset=(6.0, 6.0), corner="upper right", couple_scale=8.0,
+                 color=None, linewidth=None, linestyle=None, zorder=3):
+        super().__init__(text, text_offset, zorder)
+        st = _style(role)
+        self._color = color or st["color"]
+        self._l = _vec(line, "line")
+        self._scale = None if scale is None else float(scale)
+        self._anchor = None if anchor is None else np.asarray(anchor, dtype=float)
+        self._corner = corner
+        self._couple_scale = float(couple_scale)
+        self._line = self._add_child(Line2D([0, 0], [0, 0], color=self._color,
+                                            linewidth=linewidth or st["linewidth"],
+                                            linestyle=linestyle or st["linestyle"]))
+        self._arrow = self._add_child(FancyArrowPatch((0, 0), (1, 1), arrowstyle="-|>",
+                                                      mutation_scale=10, color=self._color,
+                                                      linewidth=2.0, shrinkA=0, shrinkB=0))
+        self._arc = self._add_child(Line2D([0, 0], [0, 0], color=self._color, linewidth=1.4))
+        self._arc.set_transform(IdentityTransform())
+        self._head = self._add_child(Polygon(np.zeros((3, 2)), closed=True, color=self._color,
+                                             linewidth=0))
+        self._head.set_transform(IdentityTransform())
+        self._text.set_color(self._color)
+
+    def set_line(self, line):
+        """Store a new homogeneous line; clipping happens at draw time."""
+        self._l = _vec(line, "line")
+        self.stale = True
+
+    set_wrench = set_line
+
+    def set_anchor(self, anchor):
+        self._anchor = None if anchor is None else np.asarray(anchor, dtype=float)
+        self.stale = True
+
+    def get_line(self) -> np.ndarray:
+        return self._l.copy()
+
+    def get_segment(self):
+        """The clipped endpoints ``(2, 2)`` in the current view (None if not visible)."""
+        if self.axes is None:
+            return None
+        return clip_line(self._l, _view(self.axes))
+
+    def _update_geometry(self, renderer):
+        ax = self.axes
+        fx, fy, tz = self._l
+        pts = renderer.points_to_pixels(1.0)
+        out = []
+        if fx == 0.0 and fy == 0.0:
+            if tz == 0.0:
+                return []
+            # the line at infinity: a pure couple, drawn as a curved arrow in a corner
+            bb = ax.bbox
+            r = float(np.clip(self._couple_scale * abs(tz), 5.0, 18.0)) * pts
+            m = 10 * pts + r
+            vert, horiz = self._corner.split()
+            cx = bb.x1 - m if horiz == "right" else bb.x0 + m
+            cy = bb.y1 - m if vert == "upper" else bb.y0 + m
+            arc, head = _arc_glyph(np.array([cx, cy]), r, ccw=tz > 0)
+            self._arc.set_data(arc[:, 0], arc[:, 1])
+            self._head.set_xy(head)
+            out += [self._arc, self._head]
+            if self._text.get_text():
+                self._text.set_position((cx, cy))
+                out.append(self._text)
+            return out
+        seg = clip_line(self._l, _view(ax))
+        if seg is None:
+            return []
+        self._line.set_data(seg[:, 0], seg[:, 1])
+        self._line.set_transform(ax.transData)
+        out.append(self._line)
+        F = np.hypot(fx, fy)
+        e = np.array([fx, fy]) / F
+        p0 = np.array([fy * tz, -fx * tz]) / (F * F)
+        if self._anchor is not None:
+            anchor = p0 + e * ((self._anchor - p0) @ e)
+        else:
+            box = _view(ax)
+            c = np.array([(box[0] + box[1]) / 2, (box[2] + box[3]) / 2])
+            anchor = p0 + e * ((c - p0) @ e)
+        tip = anchor
+        if self._scale is not None:
+            L = self._scale * F
+            tail, tip = anchor - e * L / 2, anchor + e * L / 2
+            self._arrow.set_positions(tuple(tail), tuple(tip))
+            self._arrow.set_transform(ax.transData)
+            out.append(self._arrow)
+        out += self._place_text(ax.transData.transform(tip), renderer)
+        return out
+
+
+# --------------------------------------------------------------------------- conics
+def _unit_paths():
+    t = np.linspace(0.0, 2 * np.pi, 181)
+    circle = Path(np.column_stack([np.cos(t), np.sin(t)]))
+    s = np.linspace(-7.0, 7.0, 481)
+    br = np.column_stack([np.cosh(s), np.sinh(s)])
+    verts = np.vstack([br, br * [-1.0, 1.0]])
+    codes = np.full(len(verts), Path.LINETO, dtype=np.uint8)
+    codes[0] = codes[len(br)] = Path.MOVETO
+    hyperbola = Path(verts, codes)
+    x = np.sinh(s)
+    parabola = Path(np.column_stack([x, x * x]))
+    return {"ellipse": circle, "hyperbola": hyperbola, "parabola": parabola}
+
+
+UNIT_PATHS = _unit_paths()
+
+
+def euclidean_conic(C) -> np.ndarray:
+    """The conic's matrix acting on Euclidean ``[x, y, 1]`` (``Mᵀ C M``)."""
+    return _M.T @ np.asarray(C, dtype=float) @ _M
+
+
+def _line_from_euclid(a, b, c):
+    """Package line of the Euclidean equation ``a x + b y + c = 0``."""
+    return np.array([b, -a, c])
+
+
+def conic_geometry(C, *, rtol: float = 1e-9) -> dict:
+    """How to draw the conic ``C`` (package coordinates).
+
+    Returns a dict with ``kind`` in {"ellipse", "hyperbola", "parabola",
+    "lines", "point", "empty"}, ``imaginary`` (True when ``C`` has no real
+    points and the sign-flipped conic is returned instead: the package
+    convention for inertias), and either ``affine`` (3×3 Euclidean matrix
+    mapping the unit path of :data:`UNIT_PATHS` onto the curve), ``lines``
+    (list of package lines) or ``point`` (x, y).
+
+    The class tests use a relative tolerance ``rtol``: this is drawing, not
+    arithmetic.
+
+    Examples
+    --------
+    >>> g = conic_geometry([[1, 0, 0], [0, 1, 0], [0, 0, -4]])   # circle r=2 at origin
+    >>> g["kind"], np.round(g["affine"][:2, :2], 12).tolist()
+    ('ellipse', [[2.0, 0.0], [0.0, 2.0]])
+    """
+    E = euclidean_conic(_mat(C, "conic"))
+    scale = float(np.abs(E).max())
+    if scale == 0.0:
+        return {"kind": "empty", "imaginary": False}
+    E = E / scale
+    A, b, c = E[:2, :2], E[:2, 2], E[2, 2]
+    lam, R = np.linalg.eigh(A)
+    order = np.argsort(-np.abs(lam))
+    lam, R = lam[order], R[:, order]
+    if np.linalg.det(R) < 0:
+        R[:, 1] = -R[:, 1]
+    tol = rtol
+    if abs(lam[1]) > tol * max(1.0, abs(lam[0])) and abs(lam[0]) > tol:
+        # central conic
+        x0 = -np.linalg.solve(A, b)
+        k = c + b @ x0
+        if abs(k) <= tol * max(abs(lam[0]), 1.0) * max(1.0, x0 @ x0):
+            if lam[0] * lam[1] > 0:
+                return {"kind": "point", "point": x0, "imaginary": False}
+            # two lines through x0: sqrt|l0| u = ± sqrt|l1| v in the eigenframe
+            s0, s1 = np.sqrt(abs(lam[0])), np.sqrt(abs(lam[1]))
+            lines = []
+            for sg in (1.0, -1.0):
+                nrm = s0 * R[:, 0] - sg * s1 * R[:, 1]
+                lines.append(_line_from_euclid(nrm[0], nrm[1], -nrm @ x0))
+            return {"kind": "lines", "lines": lines, "imaginary": False}
+        imaginary = False
+        if lam[0] * lam[1] > 0:
+            if lam[0] * k > 0:  # no real points: flip the sign of k (package convention)
+                imaginary = True
+                k = -k
+            ax_ = np.sqrt(-k / lam)
+            S = np.diag(ax_)
+            kind = "ellipse"
+        else:
+            # hyperbola: the axis whose eigenvalue has the sign of -k is the real one
+            if lam[0] * k < 0:
+                ax_ = np.sqrt(np.abs(k / lam))
+                Rr = R
+            else:
+                ax_ = np.sqrt(np.abs(k / lam))[::-1]
+                Rr = np.column_stack([R[:, 1], -R[:, 0]])
+            S = np.diag(ax_)
+            R = Rr
+            kind = "hyperbola"
+        aff = np.eye(3)
+        aff[:2, :2] = R @ S
+        aff[:2, 2] = x0
+        return {"kind": kind, "affine": aff, "imaginary": imaginary, "center": x0}
+    if abs(lam[0]) > tol:
+        # A has rank one: parabola or parallel lines
+        e, f = R[:, 0], R[:, 1]
+        l0 = lam[0]
+        be, bf = b @ e, b @ f
+        if abs(bf) > tol * max(1.0, abs(be), abs(c)) ** 1:
+            # l0 u^2 + 2 be u + 2 bf v + c = 0  ->  v = -(l0 u^2 + 2 be u + c) / (2 bf)
+            u0 = -be / l0
+            v0 = -(c - be * be / l0) / (2 * bf)
+            kcoef = -l0 / (2 * bf)  # v - v0 = kcoef (u - u0)^2
+            # unit parabola (s, s^2): u = u0 + s / kcoef, v = v0 + s^2 / kcoef
+            aff = np.eye(3)
+            aff[:2, 0] = e / kcoef
+            aff[:2, 1] = f / kcoef
+            aff[:2, 2] = u0 * e + v0 * f
+            return {"kind": "parabola", "affine": aff, "imaginary": False}
+        disc = be * be - l0 * c
+        if disc < -tol:
+            return {"kind": "empty", "imaginary": True}
+        r = np.sqrt(max(disc, 0.0))
+        us = sorted({(-be + r) / l0, (-be - r) / l0}) if r > 0 else [-be / l0]
+        return {"kind": "lines", "imaginary": False,
+                "lines": [_line_from_euclid(e[0], e[1], -u) for u in us]}
+    # A == 0: the line at infinity times a finite line  2 b.x + c = 0
+    if np.hypot(*b) > tol:
+        return {"kind": "lines", "imaginary": False,
+                "lines": [_line_from_euclid(2 * b[0], 2 * b[1], c)], "line_at_infinity": True}
+    return {"kind": "lines", "imaginary": False, "lines": [], "line_at_infinity": True}
+
+
+class ConicArtist(_Base):
+    """A conic drawn as a fixed unit path under an affine transform.
+
+    An update recomputes only the affine matrix (or, for degenerate conics,
+    the lines, which are clipped at draw time).  A conic without real points
+    (positive definite, e.g. an inertia) is drawn by the package convention:
+    the sign-flipped real conic, dashed, with its centre marked; for an
+    inertia ``inertia_matrix(m, c, J)`` this is the radius-of-gyration circle
+    about the centre of mass.
+
+    Parameters
+    ----------
+    conic : array_like (3, 3) or object with ``.matrix`` / ``.array``
+    role : {"conic", "inertia", "construct"}
+    mark_center : bool
+        Mark the centre (always for imaginary conics).
+    """
+
+    def __init__(self, conic, *, role="conic", mark_center=None, text=None,
+                 text_offset=(6.0, -10.0), color=None, linewidth=None, zorder=2):
+        super().__init__(text, text_offset, zorder)
+        st = _style(role)
+        self._color = color or st["color"]
+        self._role = role
+        self._mark_center = mark_center
+        self._affine = Affine2D()
+        self._curve = self._add_child(Line2D([], [], color=self._color,
+                                             linewidth=linewidth or st["linewidth"],
+                                             linestyle=st["linestyle"]))
+        self._lines = [self._add_child(Line2D([0, 0], [0, 0], color=self._color,
+                                              linewidth=linewidth or st["linewidth"],
+                                              linestyle=st["linestyle"])) for _ in range(2)]
+        self._center = self._add_child(Line2D([0], [0], marker="+", markersize=7,
+                                              color=self._color, linestyle="none"))
+        self._text.set_color(self._color)
+        self._geom = None
+        self.set_conic(conic)
+
+    def set_conic(self, conic):
+        """Store a new conic; only the affine transform (or the lines) change."""
+        self._C = _mat(conic, "conic")
+        self._geom = conic_geometry(self._C)
+        g = self._geom
+        if "affine" in g:
+            self._affine.set_matrix(g["affine"])
+            self._curve.set_data(*UNIT_PATHS[g["kind"]].vertices.T)
+            if g["kind"] == "hyperbola":
+                # keep the two branches separate: NaN between them
+                v = UNIT_PATHS["hyperbola"].vertices
+                n = len(v) // 2
+                xy = np.vstack([v[:n], [[np.nan, np.nan]], v[n:]])
+                self._curve.set_data(xy[:, 0], xy[:, 1])
+        if self._role == "inertia" or g.get("imaginary"):
+            self._curve.set_linestyle(_style("inertia")["linestyle"])
+        else:
+            self._curve.set_linestyle(_style(self._role)["linestyle"])
+        self.stale = True
+
+    set_inertia = set_conic
+
+    def get_conic(self) -> np.ndarray:
+        return self._C.copy()
+
+    @property
+    def kind(self) -> str:
+        return self._geom["kind"]
+
+    @property
+    def imaginary(self) -> bool:
+        return bool(self._geom.get("imaginary"))
+
+    def get_xy(self) -> np.ndarray:
+        """Euclidean points of the drawn curve (data coordinates, NaN between branches)."""
+        g = self._geom
+        if "affine" not in g:
+            return np.zeros((0, 2))
+        x, y = self._curve.get_data()
+        return self._affine.transform(np.column_stack([x, y]))
+
+    def _update_geometry(self, renderer):
+        ax = self.axes
+        g = self._geom
+        out = []
+        if "affine" in g:
+            self._curve.set_transform(self._affine + ax.transData)
+            out.append(self._curve)
+            anchor = g["affine"][:2, 2]
+            mark = self._mark_center if self._mark_center is not None else (
+                g.get("imaginary") or self._role == "inertia")
+            if mark and g["kind"] != "parabola":
+                self._center.set_data([anchor[0]], [anchor[1]])
+                self._center.set_transform(ax.transData)
+                out.append(self._center)
+            top = g["affine"] @ [0.7071, 0.7071, 1.0]
+            out += self._place_text(ax.transData.transform(top[:2]), renderer)
+        elif g["kind"] == "lines":
+            box = _view(ax)
+            for ln, art in zip(g["lines"], self._lines):
+                seg = clip_line(ln, box)
+                if seg is not None:
+                    art.set_data(seg[:, 0], seg[:, 1])
+                    art.set_transform(ax.transData)
+                    out.append(art)
+        elif g["kind"] == "point":
+            self._center.set_data([g["point"][0]], [g["point"][1]])
+            self._center.set_transform(ax.transData)
+            out.append(self._center)
+        return out
+
+
+# --------------------------------------------------------------------------- helpers
+def _get_ax(ax):
+    if ax is None:
+        import matplotlib.pyplot as plt
+
+        ax = plt.gca()
+    return ax
+
+
+def plot_point(point, ax=None, **kw) -> PointArtist:
+    """Add a :class:`PointArtist` to ``ax`` (default: current axes) and return it."""
+    ax = _get_ax(ax)
+    return ax.add_artist(PointArtist(point, **kw))
+
+
+def plot_line(line, ax=None, **kw) -> LineArtist:
+    """Add a :class:`LineArtist` to ``ax`` (default: current axes) and return it."""
+    ax = _get_ax(ax)
+    return ax.add_artist(LineArtist(line, **kw))
+
+
+def plot_conic(conic, ax=None, **kw) -> ConicArtist:
+    """Add a :class:`ConicArtist` to ``ax`` (default: current axes) and return it."""
+    ax = _get_ax(ax)
+    return ax.add_artist(ConicArtist(conic, **kw))
+
+
+def plot_inertia(inertia, ax=None, **kw) -> ConicArtist:
+    """Draw an inertia as its radius-of-gyration circle (dashed) with the centre of mass."""
+    kw.setdefault("role", "inertia")
+    return plot_conic(inertia, ax, **kw)

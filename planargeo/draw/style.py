@@ -1,0 +1,164 @@
+"""One visual language for every planargeo drawing.
+
+Colours come from the Okabe-Ito palette (colour-blind safe).  Each kind of
+object has one role, used in every figure:
+
+=============  ==========================  ==================================
+role           object                      look
+=============  ==========================  ==================================
+``twist``      a velocity twist (a point)  blue marker + rotation glyph
+``accel``      an acceleration (a point)   vermillion marker + glyph
+``wrench``     a wrench (a line)           orange line with force arrow
+``reaction``   a reaction / internal force bluish-green line
+``momentum``   a momentum wrench           reddish-purple line
+``inertia``    an inertia (conic)          black dashed conic + centre dot
+``conic``      a real conic                black solid curve
+``construct``  construction lines          grey thin dashed
+``body``       a rigid body outline        sky-blue fill, dark outline
+``ground``     ground / fixed frame        dark grey hatching
+=============  ==========================  ==================================
+
+Use :func:`figure` (or :func:`rc_context`) to get the package's fixed fonts and
+sizes; gallery output is reproducible only inside that context.
+"""
+from __future__ import annotations
+
+import contextlib
+
+#: Okabe-Ito colour-blind-safe palette.
+OKABE_ITO = {
+    "black": "#000000",
+    "orange": "#E69F00",
+    "skyblue": "#56B4E9",
+    "green": "#009E73",
+    "yellow": "#F0E442",
+    "blue": "#0072B2",
+    "vermillion": "#D55E00",
+    "purple": "#CC79A7",
+    "grey": "#7F7F7F",
+}
+
+#: Colour per role (see module docstring).
+COLORS = {
+    "twist": OKABE_ITO["blue"],
+    "accel": OKABE_ITO["vermillion"],
+    "wrench": OKABE_ITO["orange"],
+    "reaction": OKABE_ITO["green"],
+    "momentum": OKABE_ITO["purple"],
+    "inertia": OKABE_ITO["black"],
+    "conic": OKABE_ITO["black"],
+    "construct": OKABE_ITO["grey"],
+    "body": OKABE_ITO["skyblue"],
+    "ground": "#404040",
+    "text": OKABE_ITO["black"],
+}
+
+#: Line widths (points) per role.
+LINEWIDTHS = {
+    "wrench": 1.8,
+    "reaction": 1.8,
+    "momentum": 1.8,
+    "conic": 1.3,
+    "inertia": 1.2,
+    "construct": 0.8,
+    "body": 1.0,
+    "chart": 1.5,
+}
+
+#: Default artist styles per role (keyword arguments for the artists).
+STYLES = {
+    "twist": dict(color=COLORS["twist"], marker="o", markersize=5.0),
+    "accel": dict(color=COLORS["accel"], marker="o", markersize=5.0),
+    "wrench": dict(color=COLORS["wrench"], linewidth=LINEWIDTHS["wrench"], linestyle="-"),
+    "reaction": dict(color=COLORS["reaction"], linewidth=LINEWIDTHS["reaction"], linestyle="-"),
+    "momentum": dict(color=COLORS["momentum"], linewidth=LINEWIDTHS["momentum"], linestyle="-"),
+    "construct": dict(color=COLORS["construct"], linewidth=LINEWIDTHS["construct"], linestyle=(0, (4, 3))),
+    "conic": dict(color=COLORS["conic"], linewidth=LINEWIDTHS["conic"], linestyle="-"),
+    "inertia": dict(color=COLORS["inertia"], linewidth=LINEWIDTHS["inertia"], linestyle=(0, (5, 3))),
+}
+
+#: Fixed rcParams: fonts, sizes and SVG determinism (column width ≈ 3.4 in).
+RC = {
+    "font.family": "DejaVu Sans",
+    "font.size": 8.0,
+    "axes.titlesize": 8.5,
+    "axes.labelsize": 8.0,
+    "legend.fontsize": 7.0,
+    "xtick.labelsize": 7.0,
+    "ytick.labelsize": 7.0,
+    "lines.linewidth": 1.3,
+    "legend.frameon": False,
+    "figure.dpi": 100,
+    "savefig.dpi": 100,
+    "svg.hashsalt": "planargeo",
+    "svg.fonttype": "path",
+    "svg.id": None,
+    "path.simplify": False,
+    "axes.prop_cycle": None,  # filled in below
+}
+
+#: Column width (inches) and default figure size.
+COLUMN_WIDTH = 3.4
+FIGSIZE = (COLUMN_WIDTH, 2.8)
+
+
+def _rc() -> dict:
+    from cycler import cycler
+
+    rc = dict(RC)
+    rc["axes.prop_cycle"] = cycler(color=[OKABE_ITO[k] for k in (
+        "blue", "vermillion", "green", "orange", "purple", "skyblue", "black", "yellow")])
+    return rc
+
+
+@contextlib.contextmanager
+def rc_context():
+    """Context with the package's fixed fonts, sizes and SVG settings."""
+    import matplotlib as mpl
+
+    with mpl.rc_context(_rc()):
+        yield
+
+
+def style(role: str, **overrides) -> dict:
+    """Keyword arguments for ``role`` (see :data:`STYLES`), updated by ``overrides``.
+
+    Examples
+    --------
+    >>> style("wrench", linewidth=3)["linewidth"]
+    3
+    >>> style("twist")["color"]
+    '#0072B2'
+    """
+    if role not in STYLES:
+        from ..errors import InputError
+
+        raise InputError(f"role must be one of {sorted(STYLES)}, got {role!r}")
+    out = dict(STYLES[role])
+    out.update(overrides)
+    return out
+
+
+def setup_axes(ax, limits=None, *, grid=False, axis_off=True):
+    """Equal-aspect geometric axes with optional ``limits = (x0, x1, y0, y1)``."""
+    ax.set_aspect("equal", adjustable="box")
+    if limits is not None:
+        ax.set_xlim(limits[0], limits[1])
+        ax.set_ylim(limits[2], limits[3])
+    if axis_off:
+        ax.set_xticks([])
+        ax.set_yticks([])
+        for s in ax.spines.values():
+            s.set_visible(False)
+    ax.grid(grid)
+    return ax
+
+
+def get_ax(ax=None, limits=None):
+    """Return ``ax`` or, if None, the current axes set up by :func:`setup_axes`."""
+    if ax is None:
+        import matplotlib.pyplot as plt
+
+        ax = plt.gca()
+        setup_axes(ax, limits)
+    return ax
