@@ -312,7 +312,11 @@ class Explorer:
                                                                                 self.export_label])
         right = W.VBox([W.HTML("<b>Readout</b>"), self.readout, self.message_box])
         head = W.HTML(f"<h4 style='margin:2px'>{html.escape(self.title)}</h4>")
-        return W.VBox([head, W.HBox([controls, fig_widget, right])])
+        root = W.VBox([head, W.HBox([controls, fig_widget, right])])
+        root.add_class("planargeo-explorer")
+        self.readout.add_class("planargeo-readout")
+        fig_widget.add_class("planargeo-figure")
+        return root
 
     def _make_observer(self, name: str) -> Callable:
         def _observer(change):
