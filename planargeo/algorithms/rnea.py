@@ -1,0 +1,91 @@
+"""Recursive Newton-Euler inverse dynamics (thesis 3.5, 3.9-3.12, absolute formulation).
+
+Outwards, ``a_i = a_λ + s_i q̈_i + κ_i`` (2.18) with ``a_ground = 0``
+(gravity is an applied wrench in ``p_i``, 3.11).  Inwards, each body's joint
+force is the force needed to move it plus everything carried by its children,
+
+    ``f_i = I_i a_i + p_i + Σ_{c: λ(c) = i} f_c``       (3.10 for a tree)
+
+and the joint torque is its projection ``τ_i = s_iᵀ f_i`` (3.5).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..kinematics import check_state, kinematics
+from ..model import Data, Model
+
+__all__ = ["inverse_dynamics", "newton_euler"]
+
+
+def newton_euler(model: Model, q, qd, qdd, f_ext=None) -> Data:
+    """Recursive Newton-Euler pass; returns the workspace with ``a``, ``f``, ``tau``.
+
+    Parameters
+    ----------
+    model : Model
+    q, qd, qdd : array_like (..., nq)
+    f_ext : array_like (..., N, 3), optional
+        External world wrenches at the origin on each body.
+
+    Returns
+    -------
+    Data
+        Kinematics fields plus ``qdd``, ``a`` (..., N, 3) accelerations (2.18),
+        ``f`` (..., N, 3) joint forces (the load joint ``i`` transmits from the
+        parent to body ``i``, 3.10) and ``tau`` (..., nq) (3.5).
+
+    Examples
+    --------
+    Holding a horizontal uniform rod (m = 1, L = 1) still takes ``τ = m g L / 2``:
+
+    >>> from planargeo.model import chain_model
+    >>> w = newton_euler(chain_model(1), [0.0], [0.0], [0.0])
+    >>> w.tau, w.f[0]    # the joint carries the weight and the torque (a couple at the pivot)
+    (array([4.905]), array([0.   , 9.81 , 4.905]))
+    """
+    q, qd, _, f_ext, qdd, shape = check_state(model, q, qd, None, f_ext, qdd=qdd)
+    data = kinematics(model, q, qd, f_ext)
+    nq, N = model.nq, model.N
+    qdd = np.broadcast_to(qdd, shape + (nq,))
+    a = np.zeros(shape + (N, 3))
+    for i, par in enumerate(model.parents):
+        ai = data.kappa[..., i, :] + np.einsum("...ij,...j->...i", data.s(i), qdd[..., model.q_slice(i)])
+        if par >= 0:
+            ai = ai + a[..., par, :]
+        a[..., i, :] = ai
+    f = np.einsum("...ij,...j->...i", data.I, a) + data.p
+    tau = np.zeros(shape + (nq,))
+    for i in range(N - 1, -1, -1):
+        par = model.parents[i]
+        if par >= 0:
+            f[..., par, :] += f[..., i, :]
+        tau[..., model.q_slice(i)] = np.einsum("...ij,...i->...j", data.s(i), f[..., i, :])
+    data.qdd, data.a, data.f, data.tau = qdd, a, f, tau
+    return data
+
+
+def inverse_dynamics(model: Model, q, qd, qdd, f_ext=None, *, return_forces: bool = False):
+    """Joint forces/torques that produce ``qdd`` (recursive Newton-Euler).
+
+    Parameters
+    ----------
+    model : Model
+    q, qd, qdd : array_like (..., nq)
+    f_ext : array_like (..., N, 3), optional
+    return_forces : bool
+        Also return the joint forces ``f`` (..., N, 3) (world wrenches at the origin).
+
+    Returns
+    -------
+    tau : ndarray (..., nq)
+    f : ndarray (..., N, 3), only if ``return_forces``
+
+    Examples
+    --------
+    >>> from planargeo.model import chain_model
+    >>> inverse_dynamics(chain_model(1, gravity=(0, 0)), [0.0], [0.0], [3.0])   # J_pivot = 1/3
+    array([1.])
+    """
+    w = newton_euler(model, q, qd, qdd, f_ext)
+    return (w.tau, w.f) if return_forces else w.tau
