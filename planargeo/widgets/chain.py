@@ -1,0 +1,312 @@
+"""Chain explorer: an N-link planar chain with its geometric overlays (thesis ch. 4, 6, 7).
+
+Controls set the number of links (1-20), the joint types, the joint angles
+(first joint and a common bend for the others), speeds and torques, and
+toggle overlays drawn with :mod:`planargeo.draw`:
+
+* velocity poles ``v_i`` (points, 4.5) and acceleration poles ``a_i`` (4.6),
+* bias terms: the bias accelerations ``κ_i`` (points) and bias forces ``p_i`` (lines),
+* internal (joint) force lines ``f_i = A_i a_i + d_i`` (3.13),
+* the per-joint split ``f_i = T_i Q_i + R_i μ_i`` (6.38) into the active part
+  along the percussion axis and the reaction through the joint,
+* the articulated inertias ``A_i`` (3.38) as conics.
+
+*Play* integrates the motion ahead of time (with a progress bar), then
+animates it; the readout shows the energy and its drift.
+"""
+from __future__ import annotations
+
+import math
+
+import ipywidgets as W
+import numpy as np
+from matplotlib.lines import Line2D
+
+from ..algorithms.aba import articulated_body
+from ..draw.artists import ConicArtist, LineArtist, PointArtist
+from ..draw.style import COLORS, setup_axes
+from ..errors import InputError
+from ..model import Body, Joint, Model
+from ..screws import kinetic_energy
+from ..subspaces import percussion_space
+from .base import Explorer, Step
+
+__all__ = ["ChainExplorer", "chain_for"]
+
+NMAX = 20
+OVERLAYS = ("velocity poles", "acceleration poles", "bias terms", "internal forces",
+            "T/U split", "articulated inertias")
+JOINT_SETS = ("revolute", "prismatic", "alternating")
+
+
+def chain_for(n: int, joints: str = "revolute", gravity: bool = True, length: float = 1.0,
+              mass: float = 1.0) -> Model:
+    """The explorer's chain: ``n`` uniform slender links (mass ``mass``, length ``length``).
+
+    ``joints`` is ``"revolute"``, ``"prismatic"`` or ``"alternating"``
+    (revolute, prismatic, revolute...).  A prismatic joint slides along the
+    parent link's axis.
+    """
+    n = int(n)
+    if not 1 <= n <= NMAX:
+        raise InputError(f"n must be between 1 and {NMAX}, got {n}")
+    if joints not in JOINT_SETS:
+        raise InputError(f"joints must be one of {JOINT_SETS}, got {joints!r}")
+    kinds = {"revolute": ["revolute"] * n, "prismatic": ["prismatic"] * n,
+             "alternating": ["revolute" if i % 2 == 0 else "prismatic" for i in range(n)]}[joints]
+    L, m = float(length), float(mass)
+    bodies = [Body(m, (L / 2, 0.0), m * L * L / 12, name=f"link{i + 1}") for i in range(n)]
+    js = [Joint(k, (0.0 if i == 0 else L, 0.0, 0.0), name=f"joint{i + 1}") for i, k in enumerate(kinds)]
+    return Model(bodies, js, list(range(-1, n - 1)), (0.0, -9.81) if gravity else (0.0, 0.0))
+
+
+def _energy(model: Model, data) -> tuple[float, float]:
+    """Kinetic and potential energy of a kinematics workspace (single state)."""
+    ke = float(np.sum(kinetic_energy(data.I, data.v)))
+    m = model.arrays()["mass"]
+    g = np.asarray(model.gravity)
+    pe = float(-np.sum(m * (data.com @ g)))
+    return ke, pe
+
+
+class ChainExplorer(Explorer):
+    """Interactive N-link chain with velocity/acceleration poles, forces and inertias."""
+
+    title = "Chain: poles, forces and articulated inertias"
+    slug = "chain"
+    figsize = (6.4, 5.6)
+
+    def make_controls(self):
+        c = {
+            "links": W.IntSlider(value=4, min=1, max=NMAX, description="links",
+                                 style={"description_width": "initial"}, layout=W.Layout(width="330px")),
+            "joints": W.Dropdown(options=JOINT_SETS, value="revolute", description="joints"),
+            "angle": Step(-180, 180, 1, -30, "angle (deg)").make("angle"),
+            "bend": Step(-90, 90, 1, 20, "bend (deg)").make("bend"),
+            "slide": Step(-0.5, 1.0, 0.05, 0.2, "slide (m)").make("slide"),
+            "speed": Step(-5, 5, 0.1, 1.0, "speed").make("speed"),
+            "torque": Step(-50, 50, 0.5, 0.0, "torque").make("torque"),
+            "gravity": W.Checkbox(value=True, description="gravity"),
+        }
+        for name in OVERLAYS:
+            c[name] = W.Checkbox(value=name in ("velocity poles", "internal forces"), description=name,
+                                 indent=False)
+        c["frame"] = W.IntSlider(value=0, min=0, max=0, description="frame",
+                                 layout=W.Layout(width="330px"), disabled=True)
+        return c
+
+    def __init__(self, *, duration: float = 3.0, fps: int = 25, **kw):
+        self.duration, self.fps = float(duration), int(fps)
+        self._model_key = None
+        self._model = None
+        self._traj = None  # (t, q, qd) computed by Play
+        self._e0 = None
+        super().__init__(**kw)
+
+    # -- widgets ---------------------------------------------------------------
+    def extra_widgets(self):
+        self.play_button = W.Button(description="Simulate", icon="play",
+                                    tooltip="Integrate the motion from the current state, then animate it")
+        self.progress = W.FloatProgress(value=0.0, min=0.0, max=1.0, description="",
+                                        layout=W.Layout(width="150px"))
+        self.player = W.Play(value=0, min=0, max=0, interval=int(1000 / self.fps), description="play")
+        W.jslink((self.player, "value"), (self.controls["frame"], "value"))
+        self.play_button.on_click(lambda _b: self.simulate())
+        return [W.HBox([self.play_button, self.progress]), self.player]
+
+    def _layout(self):
+        return super()._layout()
+
+    # -- figure ------------------------------------------------------------------
+    def setup_axes(self, ax):
+        setup_axes(ax, (-4.5, 4.5, -4.5, 4.5), axis_off=False)
+
+    def make_artists(self, ax):
+        self.links_line = Line2D([], [], color=COLORS["ground"], lw=2.5, marker="o", ms=4,
+                                 mfc="white", zorder=5)
+        ax.add_line(self.links_line)
+        self.ground = Line2D([-0.3, 0.3], [0, 0], color=COLORS["ground"], lw=4, zorder=5)
+        ax.add_line(self.ground)
+        z = np.array([0.0, 0.0, 1.0])
+        zl = np.array([1.0, 0.0, 0.0])
+
+        def pool(factory):
+            out = [ax.add_artist(factory(i)) for i in range(NMAX)]
+            for a in out:
+                a.set_visible(False)
+            return out
+
+        self.v_art = pool(lambda i: PointArtist(z, role="twist", glyph_scale=4.0))
+        self.a_art = pool(lambda i: PointArtist(z, role="accel", glyph_scale=1.0))
+        self.kappa_art = pool(lambda i: PointArtist(z, role="accel", glyph=False, markersize=4,
+                                                    color=COLORS["momentum"]))
+        self.p_art = pool(lambda i: LineArtist(zl, role="momentum", scale=None, linewidth=1.0))
+        self.f_art = pool(lambda i: LineArtist(zl, role="wrench", scale=0.02))
+        self.t_art = pool(lambda i: LineArtist(zl, role="wrench", scale=None, linestyle=":",
+                                               linewidth=1.2))
+        self.r_art = pool(lambda i: LineArtist(zl, role="reaction", scale=0.02))
+        self.A_art = pool(lambda i: ConicArtist(np.eye(3), role="inertia", linewidth=0.8))
+        self.time_text = ax.text(0.02, 0.97, "", transform=ax.transAxes, va="top", fontsize=9)
+
+    # -- model / state -------------------------------------------------------------
+    def model_for(self, v) -> Model:
+        key = (v["links"], v["joints"], v["gravity"])
+        if key != self._model_key:
+            self._model = chain_for(*key)
+            self._model_key = key
+        return self._model
+
+    def initial_state(self, v):
+        model = self.model_for(v)
+        q = np.empty(model.nq)
+        for i, j in enumerate(model.joints):
+            if j.kind == "revolute":
+                q[i] = math.radians(v["angle"] if i == 0 else v["bend"])
+            else:
+                q[i] = v["slide"]
+        qd = np.full(model.nq, float(v["speed"]))
+        tau = np.full(model.nq, float(v["torque"]))
+        return model, q, qd, tau
+
+    def compute(self, v, changed):
+        if changed & {"links", "joints", "angle", "bend", "slide", "speed", "torque", "gravity"}:
+            self._invalidate_trajectory()
+        model, q, qd, tau = self.initial_state(v)
+        t = 0.0
+        frame = int(v["frame"])
+        if self._traj is not None and 0 < frame < len(self._traj[0]):
+            t, q, qd = self._traj[0][frame], self._traj[1][frame], self._traj[2][frame]
+        w = articulated_body(model, q, qd, tau)
+        st = {"model": model, "w": w, "t": t, "tau": tau}
+        if v["T/U split"]:
+            s = w.S.T.reshape(model.N, 3, 1)  # one-dof joints: column i is s_i
+            T = percussion_space(s, w.A)[..., 0]
+            Q = np.einsum("ij,ij->i", s[..., 0], w.f)
+            st["active"] = T * Q[:, None]
+            st["reaction"] = w.f - st["active"]
+        ke, pe = _energy(model, w)
+        st["ke"], st["pe"] = ke, pe
+        return st
+
+    def render(self, st):
+        model, w = st["model"], st["w"]
+        n = model.N
+        v = self.values
+        # links: joint origins then the tip
+        pts = np.vstack([w.origin[0], w.pose[:, :2]])
+        ends = []
+        for i in range(n):
+            x, y, th = w.pose[i]
+            ends.append((x + math.cos(th), y + math.sin(th)))
+        chain = np.vstack([w.origin[:1]] + [np.vstack([w.pose[i, :2], ends[i]]) for i in range(n)])
+        self.links_line.set_data(chain[:, 0], chain[:, 1])
+        del pts
+        reach = 1.2 * n + 0.5
+        if self.ax.get_xlim()[1] != reach:
+            self.ax.set_xlim(-reach, reach)
+            self.ax.set_ylim(-reach, reach)
+            self.ground.set_data([-0.06 * reach, 0.06 * reach], [0, 0])
+        fscale = 0.5 / max(1.0, float(np.max(np.abs(w.f[:, :2]))))
+        layers = [
+            (self.v_art, "velocity poles", w.v, PointArtist.set_point),
+            (self.a_art, "acceleration poles", w.a, PointArtist.set_point),
+            (self.kappa_art, "bias terms", w.kappa, PointArtist.set_point),
+            (self.p_art, "bias terms", w.p, LineArtist.set_line),
+            (self.f_art, "internal forces", w.f, LineArtist.set_line),
+            (self.t_art, "T/U split", st.get("active"), LineArtist.set_line),
+            (self.r_art, "T/U split", st.get("reaction"), LineArtist.set_line),
+            (self.A_art, "articulated inertias", w.A, ConicArtist.set_conic),
+        ]
+        for arts, flag, arr, setter in layers:
+            on = bool(v[flag]) and arr is not None
+            for i, art in enumerate(arts):
+                show = on and i < n
+                if show:
+                    setter(art, arr[i])
+                    if isinstance(art, LineArtist) and art._scale is not None:
+                        art._scale = fscale
+                if art.get_visible() != show:
+                    art.set_visible(show)
+        self.time_text.set_text(f"t = {st['t']:.2f} s" if self._traj is not None else "")
+        e = st["ke"] + st["pe"]
+        out = {"links": n, "frame": int(v["frame"]), "t (s)": st["t"],
+               "kinetic energy (J)": st["ke"], "potential energy (J)": st["pe"],
+               "total energy (J)": e}
+        if self._e0 is not None:
+            out["energy drift (J)"] = e - self._e0
+        out["qdd[1]"] = float(w.qdd[0])
+        out[f"qdd[{n}]"] = float(w.qdd[-1])
+        out["|base force| (N)"] = float(np.hypot(*w.f[0, :2]))
+        return out
+
+    # -- simulation -----------------------------------------------------------------
+    def _invalidate_trajectory(self):
+        if self._traj is not None:
+            self._traj = None
+            self._e0 = None
+            fr = self.controls["frame"]
+            with self.hold():
+                fr.value = 0
+                fr.max = 0
+                fr.disabled = True
+            self.player.max = 0
+            self._changed.discard("frame")
+
+    def simulate(self, duration: float | None = None) -> None:
+        """Integrate from the current control state (progress bar), then enable the animation."""
+        try:
+            self._simulate(self.duration if duration is None else float(duration))
+        except Exception as exc:  # noqa: BLE001 - a button callback must never raise
+            self._set_message(f"simulation failed: {exc}")
+
+    def _simulate(self, duration: float) -> None:
+        v = self.values
+        model, q0, qd0, tau = self.initial_state(v)
+        nframes = max(2, int(round(duration * self.fps)) + 1)
+        times = np.linspace(0.0, duration, nframes)
+        self.progress.value = 0.0
+        t, q, qd = _integrate(model, q0, qd0, tau, times, progress=self._progress)
+        self._traj = (t, q, qd)
+        data0 = articulated_body(model, q0, qd0, tau)
+        ke, pe = _energy(model, data0)
+        self._e0 = ke + pe
+        fr = self.controls["frame"]
+        fr.max = len(t) - 1
+        fr.disabled = False
+        self.player.max = len(t) - 1
+        self.progress.value = 1.0
+        self._update()
+
+    def _progress(self, frac: float) -> None:
+        self.progress.value = float(frac)
+
+
+def _integrate(model, q0, qd0, tau, times, progress=None):
+    """Fixed-step RK4 on :func:`planargeo.algorithms.aba.forward_dynamics` (local, minimal).
+
+    Substeps of at most 2 ms between output frames; ``progress(frac)`` is
+    called once per frame.
+    """
+    from ..algorithms.aba import forward_dynamics
+
+    def f(q, qd):
+        return qd, forward_dynamics(model, q, qd, tau)
+
+    q, qd = np.array(q0, float), np.array(qd0, float)
+    Q, QD = [q.copy()], [qd.copy()]
+    for k in range(1, len(times)):
+        dt_frame = times[k] - times[k - 1]
+        m = max(1, int(math.ceil(dt_frame / 0.002)))
+        h = dt_frame / m
+        for _ in range(m):
+            k1q, k1v = f(q, qd)
+            k2q, k2v = f(q + 0.5 * h * k1q, qd + 0.5 * h * k1v)
+            k3q, k3v = f(q + 0.5 * h * k2q, qd + 0.5 * h * k2v)
+            k4q, k4v = f(q + h * k3q, qd + h * k3v)
+            q = q + h / 6 * (k1q + 2 * k2q + 2 * k3q + k4q)
+            qd = qd + h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v)
+        Q.append(q.copy())
+        QD.append(qd.copy())
+        if progress is not None:
+            progress(k / (len(times) - 1))
+    return np.asarray(times), np.asarray(Q), np.asarray(QD)
