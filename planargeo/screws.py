@@ -13,12 +13,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validate import as_array, as_vec3, as_xy
+from ._validate import as_array, as_mat3, as_vec3, as_xy
 
 __all__ = [
     "X_P", "X_P_inv_T", "rot", "crm", "crf",
     "unit_rotation", "unit_translation", "inertia_matrix",
     "power", "kinetic_energy",
+    "twist_magnitude", "pole_xy", "wrench_magnitude", "wrench_axis", "reciprocal",
+    "inertia_at", "momentum", "kappa", "bias_force",
+    "Twist", "Wrench", "TwistSum", "WrenchSum", "add_twists", "add_wrenches",
 ]
 
 
@@ -201,3 +204,734 @@ def kinetic_energy(inertia, twist) -> np.ndarray:
     I = as_array(inertia, "inertia", (3, 3))
     v = as_vec3(twist, "twist")
     return np.asarray(0.5 * np.einsum("...i,...ij,...j->...", v, I, v))
+
+
+# ---------------------------------------------------------------------------
+# Scalar features of twists and wrenches (thesis 4.6-4.10, 4.22-4.32)
+# ---------------------------------------------------------------------------
+
+def _normalize_point(x: np.ndarray) -> np.ndarray:
+    """Finite points scaled to ``w = 1``, ideal points to unit length (zero stays zero)."""
+    x = np.asarray(x, dtype=float)
+    w = x[..., 2:3]
+    n = np.linalg.norm(x, axis=-1, keepdims=True)
+    scale = np.where(w != 0, w, np.where(n > 0, n, 1.0))
+    return x / scale
+
+
+def _normalize_line(x: np.ndarray) -> np.ndarray:
+    """Lines scaled to ``|f| = 1``, the line at infinity to ``[0, 0, ±1] -> [0, 0, 1]``."""
+    x = np.asarray(x, dtype=float)
+    F = np.hypot(x[..., 0:1], x[..., 1:2])
+    t = x[..., 2:3]
+    scale = np.where(F > 0, F, np.where(t != 0, t, 1.0))
+    return x / scale
+
+
+def twist_magnitude(twist) -> np.ndarray:
+    """Magnitude ``ω_z`` of a planar twist (thesis 4.6), signed; 0 for a translation.
+
+    Examples
+    --------
+    >>> twist_magnitude([1.0, -2.0, 3.0])
+    array(3.)
+    """
+    v = as_vec3(twist, "twist")
+    return np.asarray(v[..., 2])
+
+
+def pole_xy(twist) -> np.ndarray:
+    """Euclidean pole ``(-v_y/ω, v_x/ω)`` of a twist (thesis 4.10).
+
+    A translation (``ω = 0``) has its pole at infinity: NaN is returned (no
+    warning); use the homogeneous array itself (the twist *is* its pole).
+
+    Examples
+    --------
+    >>> pole_xy([2.0, -1.0, 1.0])
+    array([1., 2.])
+    >>> pole_xy([1.0, 0.0, 0.0])
+    array([nan, nan])
+    """
+    v = as_vec3(twist, "twist")
+    w = v[..., 2]
+    ok = w != 0
+    out = np.full(v.shape[:-1] + (2,), np.nan)
+    safe = np.where(ok, w, 1.0)
+    xy = np.stack([-v[..., 1] / safe, v[..., 0] / safe], axis=-1)
+    return np.where(ok[..., None], xy, out)
+
+
+def wrench_magnitude(wrench) -> np.ndarray:
+    """Magnitude ``F = sqrt(f_x² + f_y²)`` of a planar wrench (thesis 4.22, 4.29).
+
+    A pure couple has ``F = 0`` (its strength is the moment ``τ_z``).
+
+    Examples
+    --------
+    >>> wrench_magnitude([3.0, 4.0, 1.0])
+    array(5.)
+    """
+    f = as_vec3(wrench, "wrench")
+    return np.asarray(np.hypot(f[..., 0], f[..., 1]))
+
+
+def wrench_axis(wrench):
+    """Direction ``e``, distance ``d`` and normal ``n`` of a wrench's line of action (thesis 4.28-4.32).
+
+    ``e = f/F`` (4.28), ``d = τ_z/F`` (4.31), ``n = (f_y, -f_x)/F`` (4.32);
+    the point of the line nearest the origin is ``n d`` (4.30).  For a pure
+    couple (line at infinity) ``e`` and ``n`` are NaN and ``d`` is ``±inf``
+    (sign of ``τ_z``); for the zero wrench everything is NaN.  No warnings.
+
+    Returns
+    -------
+    e : ndarray (..., 2)
+    d : ndarray (...)
+    n : ndarray (..., 2)
+
+    Examples
+    --------
+    >>> e, d, n = wrench_axis([0.0, 2.0, 4.0])   # vertical force along x = 2
+    >>> e, d, n
+    (array([0., 1.]), array(2.), array([ 1., -0.]))
+    >>> e, d, n = wrench_axis([0.0, 0.0, -1.0])
+    >>> d
+    array(-inf)
+    """
+    f = as_vec3(wrench, "wrench")
+    F = np.hypot(f[..., 0], f[..., 1])
+    ok = F > 0
+    safe = np.where(ok, F, 1.0)
+    e = np.where(ok[..., None], f[..., :2] / safe[..., None], np.nan)
+    n = np.where(ok[..., None], np.stack([f[..., 1], -f[..., 0]], axis=-1) / safe[..., None], np.nan)
+    tau = f[..., 2]
+    far = np.where(tau != 0, np.copysign(np.inf, tau), np.nan)
+    d = np.where(ok, tau / safe, far)
+    return e, np.asarray(d), n
+
+
+def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
+    """True where twist and wrench are reciprocal: zero power (thesis 1.9, 5.61, 5.69).
+
+    Geometrically the pole of the twist lies on the line of the wrench.  The
+    test is ``|vᵀf| <= rtol * |v| |f|``.
+
+    Examples
+    --------
+    >>> bool(reciprocal(unit_rotation([1.0, 0.0]), [0.0, 1.0, 1.0]))   # the line x = 1
+    True
+    """
+    v = as_vec3(twist, "twist")
+    f = as_vec3(wrench, "wrench")
+    P = np.einsum("...i,...i->...", v, f)
+    scale = np.linalg.norm(v, axis=-1) * np.linalg.norm(f, axis=-1)
+    return np.asarray(np.abs(P) <= rtol * scale)
+
+
+# ---------------------------------------------------------------------------
+# Inertia frame change, momentum and bias terms (thesis 1.68, 2.19, 3.11, 5.72)
+# ---------------------------------------------------------------------------
+
+def inertia_at(inertia, point) -> np.ndarray:
+    """Inertia expressed at ``point`` (thesis 1.68, parallel axis theorem).
+
+    With ``_A X_B = X_P⁻¹`` (origin ``A``, point ``B = P``), 1.68 reads
+    ``I_P = X_P⁻ᵀ I X_P⁻¹``: twists at ``P`` are taken back to the origin
+    (``X_P⁻¹``), mapped to momenta, and the momenta carried to ``P`` with
+    ``X_P⁻ᵀ`` (4.24).  Consequently ``inertia_at(inertia_matrix(m, c, J), P)
+    == inertia_matrix(m, c - P, J)``.
+
+    Examples
+    --------
+    >>> inertia_at(inertia_matrix(2.0, [1.0, 0.0], 0.5), [1.0, 0.0])   # at the centre of mass
+    array([[2. , 0. , 0. ],
+           [0. , 2. , 0. ],
+           [0. , 0. , 0.5]])
+    """
+    I = as_mat3(inertia, "inertia")
+    W = X_P_inv_T(point)
+    return W @ I @ np.swapaxes(W, -1, -2)
+
+
+def momentum(inertia, twist) -> np.ndarray:
+    """Momentum wrench ``p = I v`` (thesis 1.65, 5.72).
+
+    Its line passes through the centre of mass (thesis 1.60) and ``pᵀa`` is the
+    power of the inertial force on ``a`` (5.74).
+
+    Examples
+    --------
+    >>> momentum(inertia_matrix(1.0, [0.0, 0.0], 1.0), [1.0, 0.0, 0.0])
+    array([1., 0., 0.])
+    """
+    I = as_mat3(inertia, "inertia")
+    v = as_vec3(twist, "twist")
+    return np.einsum("...ij,...j->...i", I, v)
+
+
+def kappa(twist, s, qd) -> np.ndarray:
+    """Bias (convective) acceleration ``κ = v × s q̇`` (thesis 2.19, 4.61).
+
+    Parameters
+    ----------
+    twist : array_like (..., 3)
+        Body velocity ``v_i`` (it may or may not include ``s q̇``: ``s q̇ × s q̇ = 0``
+        for one axis, and for several axes the thesis uses ``v_i``).
+    s : array_like (..., 3, k) or (..., 3)
+        Joint motion space (a single axis may be given as a vector).
+    qd : array_like (..., k) or (...)
+        Joint speeds.
+
+    Returns
+    -------
+    ndarray (..., 3)
+        A translation (zero ``ω``): reciprocal to ``v`` for a one-axis joint.
+
+    Examples
+    --------
+    Revolute joint, thesis 4.66-4.67 (``v_{i-1} = (1, 2, 0.5)``, ``θ̇ = 3``):
+
+    >>> kappa([1.0, 2.0, 3.5], [0.0, 0.0, 1.0], 3.0)
+    array([ 6., -3.,  0.])
+    """
+    v = as_vec3(twist, "twist")
+    S = as_array(s, "s")
+    q = as_array(qd, "qd")
+    if S.ndim >= 1 and S.shape[-1] == 3 and (S.ndim == 1 or S.shape[-2] != 3):
+        sq = S * q[..., None]
+    elif S.ndim >= 2 and S.shape[-2] == 3:
+        if q.ndim == 0 or q.shape[-1] != S.shape[-1]:
+            from .errors import ShapeError
+            raise ShapeError(f"qd must have shape (..., {S.shape[-1]}) to match s, got shape {q.shape}")
+        sq = np.einsum("...ik,...k->...i", S, q)
+    else:
+        from .errors import ShapeError
+        raise ShapeError(f"s must have shape (..., 3) or (..., 3, k), got shape {S.shape}")
+    return np.einsum("...ij,...j->...i", crm(v), sq)
+
+
+def bias_force(inertia, twist, g=None) -> np.ndarray:
+    """Bias force ``p = -(v×)ᵀ I v - g`` (thesis 3.11, 4.56, 4.62).
+
+    ``-(v×)ᵀ = v×*`` (:func:`crf`), so this is ``crf(v) @ I @ v - g``.  For a
+    rigid body the velocity part is the centripetal force: a force through the
+    centre of mass pointing towards the pole of ``v`` of magnitude ``m l ω²``
+    (thesis 4.7).
+
+    Parameters
+    ----------
+    inertia : array_like (..., 3, 3)
+    twist : array_like (..., 3)
+    g : array_like (..., 3), optional
+        External wrench (gravity, loads) at the origin; default zero.
+
+    Examples
+    --------
+    Body of mass 1 with its centre at (2, 0) spinning about the origin:
+
+    >>> bias_force(inertia_matrix(1.0, [2.0, 0.0], 1.0), [0.0, 0.0, 1.0])   # m l ω² = 2 towards the origin
+    array([-2.,  0.,  0.])
+    """
+    I = as_mat3(inertia, "inertia")
+    v = as_vec3(twist, "twist")
+    out = np.einsum("...ij,...jk,...k->...i", crf(v), I, v)
+    if g is not None:
+        out = out - as_vec3(g, "g")
+    return out
+
+
+# ---------------------------------------------------------------------------
+# Thin classes
+# ---------------------------------------------------------------------------
+
+def _is_number(x) -> bool:
+    return isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, bool)
+
+
+class _Screw:
+    """Common base of :class:`Twist` and :class:`Wrench` (one read-only ``(..., 3)`` array)."""
+
+    __slots__ = ("_array",)
+    _name = "screw"
+
+    def __init__(self, array):
+        if isinstance(array, _Screw):
+            array = array.array
+        a = np.array(as_vec3(array, self._name), dtype=float)
+        a.flags.writeable = False
+        self._array = a
+
+    @property
+    def array(self) -> np.ndarray:
+        """The screw coordinates (read-only)."""
+        return self._array
+
+    @property
+    def shape(self) -> tuple:
+        """Batch shape (leading dimensions)."""
+        return self._array.shape[:-1]
+
+    def __array__(self, dtype=None, copy=None):
+        return np.asarray(self._array, dtype=dtype)
+
+    def __repr__(self) -> str:
+        body = np.array2string(self._array, separator=", ", precision=6, suppress_small=True)
+        return f"{type(self).__name__}({body})"
+
+    def __add__(self, other):
+        if type(other) is not type(self):
+            return NotImplemented
+        return type(self)(self._array + other._array)
+
+    def __sub__(self, other):
+        if type(other) is not type(self):
+            return NotImplemented
+        return type(self)(self._array - other._array)
+
+    def __neg__(self):
+        return type(self)(-self._array)
+
+    def __mul__(self, k):
+        if not _is_number(k) and not (isinstance(k, np.ndarray) and k.ndim == 0):
+            return NotImplemented
+        return type(self)(self._array * float(k))
+
+    __rmul__ = __mul__
+
+    def __eq__(self, other):
+        if type(other) is not type(self):
+            return NotImplemented
+        return bool(np.array_equal(self._array, other._array))
+
+    __hash__ = None
+
+    def rotated(self, theta):
+        """The screw rotated by ``theta`` about the reference point (matrix :func:`rot`)."""
+        return type(self)(np.einsum("...ij,...j->...i", rot(theta), self._array))
+
+
+class Twist(_Screw):
+    """A planar velocity (or acceleration) twist ``[vx, vy, ω]`` at the origin (thesis 4.6).
+
+    A twist *is* its pole in homogeneous coordinates (thesis 5.51): ``.pole``
+    returns that point.  The zero twist (no motion) is a legal value but has
+    no pole.
+
+    Examples
+    --------
+    >>> v = Twist.rotation([1.0, 2.0], 3.0)
+    >>> v
+    Twist([ 6., -3.,  3.])
+    >>> v.pole_xy
+    array([1., 2.])
+    >>> (v + Twist.translation([0.0, 3.0])).pole_xy      # thesis 4.16: P = Q + (u/ω) n
+    array([0., 2.])
+    >>> float(v @ Wrench.force([1.0, 2.0], [1.0, 1.0]))  # a force through the pole: no power
+    0.0
+    """
+
+    __slots__ = ()
+    _name = "twist"
+
+    @classmethod
+    def rotation(cls, point, omega=1.0) -> "Twist":
+        """Rotation at rate ``omega`` (counter-clockwise positive) about ``point`` (thesis 4.10, 5.51)."""
+        w = as_array(omega, "omega")
+        return cls(unit_rotation(point) * w[..., None])
+
+    @classmethod
+    def translation(cls, velocity) -> "Twist":
+        """Pure translation with linear velocity ``velocity = (vx, vy)`` (a point at infinity)."""
+        u = as_xy(velocity, "velocity")
+        return cls(np.concatenate([u, np.zeros(u.shape[:-1] + (1,))], axis=-1))
+
+    @property
+    def magnitude(self) -> np.ndarray:
+        """``ω_z`` (thesis 4.6), signed; 0 for a translation (whose speed is ``|velocity|``)."""
+        return twist_magnitude(self._array)
+
+    omega = magnitude
+
+    @property
+    def velocity(self) -> np.ndarray:
+        """Linear velocity ``(vx, vy)`` of the body point at the reference point."""
+        return self._array[..., :2].copy()
+
+    @property
+    def is_translation(self) -> np.ndarray:
+        """True where ``ω == 0`` (pole at infinity)."""
+        return np.asarray(self._array[..., 2] == 0)
+
+    @property
+    def pole_xy(self) -> np.ndarray:
+        """Euclidean pole (thesis 4.10); NaN for translations."""
+        return pole_xy(self._array)
+
+    @property
+    def pole(self):
+        """The pole as a :class:`planargeo.geometry.Point` (the array itself, thesis 5.51)."""
+        if np.any(np.all(self._array == 0, axis=-1)):
+            from .errors import DegenerateGeometryError
+            raise DegenerateGeometryError("twist is zero: the zero twist has no pole")
+        from .geometry import Point
+        return Point(self._array)
+
+    def at(self, point) -> "Twist":
+        """The same motion expressed at ``point``: ``X_P v`` (thesis 4.8)."""
+        return Twist(np.einsum("...ij,...j->...i", X_P(point), self._array))
+
+    def power(self, wrench) -> np.ndarray:
+        """Power ``vᵀf`` (thesis 5.73)."""
+        return power(self._array, _wrench_array(wrench))
+
+    def reciprocal(self, wrench, rtol: float = 1e-12) -> np.ndarray:
+        """True where ``wrench`` does no power on this twist (pole on the line)."""
+        return reciprocal(self._array, _wrench_array(wrench), rtol)
+
+    def __matmul__(self, other):
+        if isinstance(other, Wrench):
+            return power(self._array, other.array)
+        return NotImplemented
+
+
+class Wrench(_Screw):
+    """A planar force wrench ``[fx, fy, τz]`` at the origin (thesis 4.21).
+
+    A wrench *is* its line of action (polar) in homogeneous coordinates
+    (thesis 5.56): ``.line`` returns that line.
+
+    Magnitude choice: ``.magnitude`` is ``F = |f|`` (thesis 4.22) also for a
+    pure couple, where it is 0; a couple's strength is its moment ``.moment``
+    (``τz``, the same at every point).  ``.distance`` of a couple is ``±inf``.
+
+    Examples
+    --------
+    >>> f = Wrench.force([0.0, 1.0], [2.0, 0.0])     # horizontal force along y = 1
+    >>> f
+    Wrench([ 2.,  0., -2.])
+    >>> float(f.magnitude), float(f.distance), f.normal
+    (2.0, -1.0, array([ 0., -1.]))
+    >>> f + Wrench.couple(2.0)                       # thesis 4.46: shifted by τ/F = 1
+    Wrench([2., 0., 0.])
+    """
+
+    __slots__ = ()
+    _name = "wrench"
+
+    @classmethod
+    def force(cls, point, force) -> "Wrench":
+        """Pure force ``force = (fx, fy)`` acting along the line through ``point``.
+
+        The moment at the origin is ``x fy - y fx`` (so that 4.27 holds at ``point``).
+        """
+        p = as_xy(point, "point")
+        f = as_xy(force, "force")
+        tau = p[..., 0] * f[..., 1] - p[..., 1] * f[..., 0]
+        fx, fy, tau = np.broadcast_arrays(f[..., 0], f[..., 1], tau)
+        return cls(np.stack([fx, fy, tau], axis=-1))
+
+    @classmethod
+    def couple(cls, tau) -> "Wrench":
+        """Pure couple of moment ``tau`` (counter-clockwise positive): the line at infinity."""
+        t = as_array(tau, "tau")
+        z = np.zeros(t.shape)
+        return cls(np.stack([z, z, t], axis=-1))
+
+    @property
+    def magnitude(self) -> np.ndarray:
+        """``F = sqrt(fx² + fy²)`` (thesis 4.22); 0 for a pure couple."""
+        return wrench_magnitude(self._array)
+
+    @property
+    def force_xy(self) -> np.ndarray:
+        """The force vector ``(fx, fy)``."""
+        return self._array[..., :2].copy()
+
+    @property
+    def moment(self) -> np.ndarray:
+        """``τz`` about the reference point."""
+        return np.asarray(self._array[..., 2])
+
+    @property
+    def is_couple(self) -> np.ndarray:
+        """True where the force part is zero (line at infinity)."""
+        return np.asarray(np.all(self._array[..., :2] == 0, axis=-1))
+
+    @property
+    def direction(self) -> np.ndarray:
+        """Unit direction ``e`` of the line of action (thesis 4.28); NaN for couples."""
+        return wrench_axis(self._array)[0]
+
+    @property
+    def distance(self) -> np.ndarray:
+        """Signed distance ``d = τ/F`` of the line from the origin (thesis 4.31)."""
+        return wrench_axis(self._array)[1]
+
+    @property
+    def normal(self) -> np.ndarray:
+        """Unit normal ``n = (fy, -fx)/F`` (thesis 4.32); the nearest point is ``n d`` (4.30)."""
+        return wrench_axis(self._array)[2]
+
+    @property
+    def line(self):
+        """The line of action (polar) as a :class:`planargeo.geometry.Line` (thesis 5.56)."""
+        if np.any(np.all(self._array == 0, axis=-1)):
+            from .errors import DegenerateGeometryError
+            raise DegenerateGeometryError("wrench is zero: the zero wrench has no line of action")
+        from .geometry import Line
+        return Line(self._array)
+
+    polar = line
+
+    def at(self, point) -> "Wrench":
+        """The same load expressed at ``point``: ``X_P⁻ᵀ f`` (thesis 4.24, 4.26)."""
+        return Wrench(np.einsum("...ij,...j->...i", X_P_inv_T(point), self._array))
+
+    def power(self, twist) -> np.ndarray:
+        """Power ``vᵀf`` (thesis 5.73)."""
+        return power(_twist_array(twist), self._array)
+
+    def reciprocal(self, twist, rtol: float = 1e-12) -> np.ndarray:
+        """True where this wrench does no power on ``twist``."""
+        return reciprocal(_twist_array(twist), self._array, rtol)
+
+    def __matmul__(self, other):
+        if isinstance(other, Twist):
+            return power(other.array, self._array)
+        return NotImplemented
+
+    def __rmatmul__(self, other):
+        if isinstance(other, Twist):
+            return power(other.array, self._array)
+        return NotImplemented
+
+
+def _twist_array(x) -> np.ndarray:
+    return as_vec3(x.array if isinstance(x, Twist) else x, "twist")
+
+
+def _wrench_array(x) -> np.ndarray:
+    return as_vec3(x.array if isinstance(x, Wrench) else x, "wrench")
+
+
+# ---------------------------------------------------------------------------
+# Twist and wrench addition as constructions (thesis 4.2, 4.4)
+# ---------------------------------------------------------------------------
+
+from dataclasses import dataclass  # noqa: E402
+
+
+def _single(x, cls, name) -> np.ndarray:
+    a = as_vec3(x.array if isinstance(x, cls) else x, name)
+    if a.ndim != 1:
+        from .errors import ShapeError
+        raise ShapeError(f"{name} must have shape (3,) for a construction, got shape {a.shape}")
+    if not np.any(a):
+        from .errors import DegenerateGeometryError
+        raise DegenerateGeometryError(f"{name} must be non-zero, got {a!r}")
+    return a
+
+
+@dataclass(frozen=True)
+class TwistSum:
+    """Construction of ``v3 = v1 + v2`` (thesis 4.2), for drawing.
+
+    Points and lines are normalised homogeneous arrays in the package's
+    coordinates (finite points with ``w = 1``, ideal points and lines with unit
+    length); wrap them with ``Point(...)`` / ``Line(...)`` to draw.  The pole
+    ``P`` of the sum always lies on ``line`` (the join of ``Q1`` and ``Q2``).
+
+    Attributes
+    ----------
+    v1, v2, sum : Twist
+    case : str
+        ``"rotations"`` (4.11-4.13), ``"opposite_rotations"`` (``ω1 = -ω2``:
+        a translation perpendicular to ``Q1Q2``, ``beta = inf``),
+        ``"rotation_translation"`` (4.16, always a rotation),
+        ``"translations"`` (sum of the velocities; ``"zero"`` when they cancel).
+    Q1, Q2 : ndarray (3,)
+        Poles of ``v1`` and ``v2`` (ideal for translations).
+    P : ndarray (3,) or None
+        Pole of the sum (None for the zero twist).
+    omega1, omega2, omega3 : float
+        Magnitudes; ``omega3 = omega1 + omega2`` (4.11).
+    beta : float or None
+        Lever ratio ``ω2/(ω1+ω2)`` with ``P = Q1 + β (Q2 - Q1)`` (4.12-4.13);
+        ``inf`` for opposite rotations, None when a translation is involved.
+    rho : float or None
+        Offset ``u/ω`` of 4.16 (rotation + translation), with ``P = Q + ρ n``,
+        ``n`` the translation direction turned by +90°.
+    line : ndarray (3,) or None
+        Join of ``Q1`` and ``Q2`` (None when they coincide).
+    """
+
+    v1: Twist
+    v2: Twist
+    sum: Twist
+    case: str
+    Q1: np.ndarray
+    Q2: np.ndarray
+    P: np.ndarray | None
+    omega1: float
+    omega2: float
+    omega3: float
+    beta: float | None
+    rho: float | None
+    line: np.ndarray | None
+
+
+def add_twists(v1, v2) -> TwistSum:
+    """Add two twists and describe the construction (thesis 4.11-4.16).
+
+    Parameters
+    ----------
+    v1, v2 : Twist or array_like (3,)
+        Non-zero twists at the origin.
+
+    Returns
+    -------
+    TwistSum
+
+    Examples
+    --------
+    >>> c = add_twists(Twist.rotation([0.0, 0.0], 1.0), Twist.rotation([4.0, 0.0], 3.0))
+    >>> c.case, c.beta, c.P
+    ('rotations', 0.75, array([ 0., -3.,  1.]))
+    >>> add_twists(Twist.rotation([0.0, 0.0], 1.0), Twist.rotation([4.0, 0.0], -1.0)).sum
+    Twist([0., 4., 0.])
+    """
+    a = _single(v1, Twist, "v1")
+    b = _single(v2, Twist, "v2")
+    s = a + b
+    w1, w2, w3 = float(a[2]), float(b[2]), float(s[2])
+    beta = rho = None
+    if w1 != 0 and w2 != 0:
+        if w3 == 0:
+            case, beta = "opposite_rotations", float("inf")
+        else:
+            case, beta = "rotations", w2 / w3
+    elif w1 != 0 or w2 != 0:
+        case = "rotation_translation"
+        w, t = (w1, b) if w1 != 0 else (w2, a)
+        rho = float(np.hypot(t[0], t[1])) / w
+    else:
+        case = "translations" if np.any(s) else "zero"
+    line = np.cross(a, b)
+    return TwistSum(
+        v1=Twist(a), v2=Twist(b), sum=Twist(s), case=case,
+        Q1=_normalize_point(a), Q2=_normalize_point(b),
+        P=_normalize_point(s) if np.any(s) else None,
+        omega1=w1, omega2=w2, omega3=w3, beta=beta, rho=rho,
+        line=_normalize_line(line) if np.any(line) else None,
+    )
+
+
+@dataclass(frozen=True)
+class WrenchSum:
+    """Construction of ``f3 = f1 + f2`` (thesis 4.4), for drawing.
+
+    Lines and points are normalised homogeneous arrays (see :class:`TwistSum`).
+    The line ``L3`` of the sum always passes through ``P``, the meet of ``L1``
+    and ``L2``.
+
+    Attributes
+    ----------
+    f1, f2, sum : Wrench
+    case : str
+        ``"concurrent"`` (4.4.1: two forces meeting at ``P``),
+        ``"parallel"`` (4.4.2: lever rule, ``P`` ideal),
+        ``"couple"`` (opposite parallel forces of equal size: a pure couple),
+        ``"force_couple"`` (4.4.3: the force shifted by ``rho = τ/F``),
+        ``"couples"`` (two couples), ``"zero"`` (the sum vanishes).
+    L1, L2 : ndarray (3,)
+        Lines of ``f1`` and ``f2``.
+    L3 : ndarray (3,) or None
+        Line of the sum (None for the zero wrench).
+    P : ndarray (3,) or None
+        Meet of ``L1`` and ``L2`` (ideal for parallel lines, None for two couples).
+    F1, F2, F3 : float
+        Magnitudes ``|f|`` (4.22, 4.39).
+    beta : float or None
+        Lever ratio ``F2/(F1+F2)`` of 4.44 with signed magnitudes along the
+        direction of ``f1`` (parallel case only).
+    d1, d2, d3 : float or None
+        Signed distances ``τ/F`` from the origin along the normal
+        ``n = (sin λ, -cos λ)`` of ``f1``'s direction ``λ`` (parallel case, 4.43-4.45).
+    rho : float or None
+        Shift ``τ/F`` of 4.46 (force + couple), along the force's normal ``n`` (4.32).
+    """
+
+    f1: Wrench
+    f2: Wrench
+    sum: Wrench
+    case: str
+    L1: np.ndarray
+    L2: np.ndarray
+    L3: np.ndarray | None
+    P: np.ndarray | None
+    F1: float
+    F2: float
+    F3: float
+    beta: float | None
+    d1: float | None
+    d2: float | None
+    d3: float | None
+    rho: float | None
+
+
+def add_wrenches(f1, f2, rtol: float = 1e-12) -> WrenchSum:
+    """Add two wrenches and describe the construction (thesis 4.33-4.46).
+
+    Two force lines are treated as parallel when
+    ``|f1x f2y - f1y f2x| <= rtol F1 F2``.
+
+    Note: thesis 4.37 is misprinted (see ``docs/errata/screws.md``); the meet
+    point here is the exact ``L1 × L2``.
+
+    Examples
+    --------
+    >>> c = add_wrenches(Wrench.force([0.0, 0.0], [1.0, 0.0]), Wrench.force([0.0, 2.0], [0.0, 1.0]))
+    >>> c.case, c.P                                   # x-axis meets the y-axis at the origin
+    ('concurrent', array([0., 0., 1.]))
+    >>> c = add_wrenches(Wrench.force([0.0, 0.0], [0.0, 1.0]), Wrench.force([4.0, 0.0], [0.0, 3.0]))
+    >>> c.case, c.beta, c.d3                          # lever rule: resultant on x = 3
+    ('parallel', 0.75, 3.0)
+    """
+    a = _single(f1, Wrench, "f1")
+    b = _single(f2, Wrench, "f2")
+    s = a + b
+    F1, F2 = float(np.hypot(a[0], a[1])), float(np.hypot(b[0], b[1]))
+    F3 = float(np.hypot(s[0], s[1]))
+    beta = d1 = d2 = d3 = rho = None
+    meet = np.cross(a, b)
+    if F1 > 0 and F2 > 0:
+        cr = a[0] * b[1] - a[1] * b[0]
+        if abs(cr) <= rtol * F1 * F2:
+            e = a[:2] / F1
+            meet = np.array([e[0], e[1], 0.0])     # the common ideal point
+            s1, s2 = F1, float(np.sign(e @ b[:2])) * F2
+            if s1 + s2 == 0 or F3 == 0:
+                case = "couple" if s[2] != 0 else "zero"
+                s = np.array([0.0, 0.0, s[2]])
+                F3 = 0.0
+            else:
+                case = "parallel"
+                beta = s2 / (s1 + s2)
+                d1, d2 = float(a[2]) / s1, float(b[2]) / s2
+                d3 = d1 + beta * (d2 - d1)
+        else:
+            case = "concurrent"
+    elif F1 > 0 or F2 > 0:
+        case = "force_couple"
+        force, cpl = (a, b) if F1 > 0 else (b, a)
+        rho = float(cpl[2]) / float(np.hypot(force[0], force[1]))
+    else:
+        case = "couples" if s[2] != 0 else "zero"
+    return WrenchSum(
+        f1=Wrench(a), f2=Wrench(b), sum=Wrench(s), case=case,
+        L1=_normalize_line(a), L2=_normalize_line(b),
+        L3=_normalize_line(s) if np.any(s) else None,
+        P=_normalize_point(meet) if np.any(meet) else None,
+        F1=F1, F2=F2, F3=F3, beta=beta, d1=d1, d2=d2, d3=d3, rho=rho,
+    )
