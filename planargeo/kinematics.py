@@ -24,10 +24,12 @@ printed form drops the cross terms (see ``docs/errata/dynamics-a.md``).
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ._validate import as_array
-from .errors import ShapeError
+from .errors import NonFiniteError, ShapeError
 from .model import Data, Model
 
 __all__ = ["kinematics", "check_state", "cross_motion", "cross_force", "joint_axes"]
@@ -65,37 +67,60 @@ def cross_force(v: np.ndarray, f: np.ndarray) -> np.ndarray:
     return out
 
 
+def _as_state(x, name: str, nq: int) -> np.ndarray:
+    if type(x) is np.ndarray and x.dtype == np.float64:
+        a = x
+    else:
+        a = as_array(x, name, finite=False)
+    if a.ndim == 0 or a.shape[-1] != nq:
+        raise ShapeError(f"{name} must have shape (..., {nq}), got shape {a.shape}")
+    if not np.isfinite(a).all():
+        raise NonFiniteError(f"{name} must be finite, got non-finite values in {a!r}")
+    return a
+
+
 def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None):
     """Validate and broadcast a state; returns ``(q, qd, tau, f_ext, qdd, batch_shape)``.
 
     ``q``, ``qd``, ``tau``, ``qdd`` have shape ``(..., nq)``; ``f_ext`` has
     shape ``(..., N, 3)`` (world wrenches at the origin, one per body) or is
-    ``None``.  Missing arguments are returned as ``None``.
+    ``None``.  Missing arguments are returned as ``None``.  Raises
+    :class:`ShapeError` / :class:`NonFiniteError` naming the argument.
+
+    Examples
+    --------
+    >>> from planargeo.model import chain_model
+    >>> check_state(chain_model(2), [0.0, 0.0], [[1.0, 2.0]] * 4)[-1]
+    (4,)
+    >>> check_state(chain_model(2), [0.0])
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.ShapeError: q must have shape (..., 2), got shape (1,)
     """
     nq, N = model.nq, model.N
-    q = as_array(q, "q")
-    if q.ndim == 0 or q.shape[-1] != nq:
-        raise ShapeError(f"q must have shape (..., {nq}), got shape {q.shape}")
+    q = _as_state(q, "q", nq)
     shape = q.shape[:-1]
     out = []
     for name, x in (("qd", qd), ("tau", tau), ("qdd", qdd)):
         if x is None:
             out.append(None)
             continue
-        a = as_array(x, name)
-        if a.ndim == 0 or a.shape[-1] != nq:
-            raise ShapeError(f"{name} must have shape (..., {nq}), got shape {a.shape}")
-        try:
-            shape = np.broadcast_shapes(shape, a.shape[:-1])
-        except ValueError:
-            raise ShapeError(f"{name} of shape {a.shape} does not broadcast with q of shape {q.shape}") from None
+        a = _as_state(x, name, nq)
+        if a.ndim > 1 or shape:
+            try:
+                shape = np.broadcast_shapes(shape, a.shape[:-1])
+            except ValueError:
+                raise ShapeError(
+                    f"{name} of shape {a.shape} does not broadcast with q of shape {q.shape}") from None
         out.append(a)
     if f_ext is not None:
         f_ext = as_array(f_ext, "f_ext", (N, 3))
-        try:
-            shape = np.broadcast_shapes(shape, f_ext.shape[:-2])
-        except ValueError:
-            raise ShapeError(f"f_ext of shape {f_ext.shape} does not broadcast with q of shape {q.shape}") from None
+        if f_ext.ndim > 2 or shape:
+            try:
+                shape = np.broadcast_shapes(shape, f_ext.shape[:-2])
+            except ValueError:
+                raise ShapeError(
+                    f"f_ext of shape {f_ext.shape} does not broadcast with q of shape {q.shape}") from None
     qd, tau, qdd = out
     return q, qd, tau, f_ext, qdd, shape
 
@@ -164,6 +189,8 @@ def kinematics(model: Model, q, qd=None, f_ext=None) -> Data:
     array([-0.5,  0. ,  0. ])
     """
     q, qd, _, f_ext, _, shape = check_state(model, q, qd, None, f_ext)
+    if shape == ():
+        return _kinematics_scalar(model, q, np.zeros(model.nq) if qd is None else qd, f_ext)
     q = np.broadcast_to(q, shape + (model.nq,))
     qd = np.zeros(shape + (model.nq,)) if qd is None else np.broadcast_to(qd, shape + (model.nq,))
     arr = model.arrays()
@@ -229,5 +256,77 @@ def kinematics(model: Model, q, qd=None, f_ext=None) -> Data:
     d.q, d.qd = q, qd
     d.pose, d.com, d.origin, d.S = pose, com, origin, S
     d.I, d.v, d.kappa, d.g, d.p = I, v, kappa, g, p
+    d.f_ext = f_ext
+    return d
+
+
+def _kinematics_scalar(model: Model, q: np.ndarray, qd: np.ndarray, f_ext) -> Data:
+    """:func:`kinematics` for one state, on Python floats (same results, less overhead)."""
+    cos, sin = math.cos, math.sin
+    arr = model.arrays()
+    N, nq = model.N, model.nq
+    gx, gy = model.gravity
+    ql, qdl = q.tolist(), qd.tolist()
+    pose, com, origin, v, kappa, g, Il = [], [], [], [], [], [], []
+    S = [[0.0] * nq for _ in range(3)]
+    for i, (joint, par) in enumerate(zip(model.joints, model.parents)):
+        px, py, pth = joint.placement
+        if par < 0:
+            ox, oy, phi = px, py, pth
+            vx = vy = w = 0.0
+        else:
+            bx, by, bth = pose[par]
+            cb, sb = cos(bth), sin(bth)
+            ox, oy, phi = bx + cb * px - sb * py, by + sb * px + cb * py, bth + pth
+            vx, vy, w = v[par]
+        o = model.q_offsets[i]
+        kind = joint.kind
+        c, s = cos(phi), sin(phi)
+        if kind == "revolute":
+            cols, (x, y, th) = [(oy, -ox, 1.0)], (ox, oy, phi + ql[o])
+        elif kind == "prismatic":
+            cols, (x, y, th) = [(c, s, 0.0)], (ox + ql[o] * c, oy + ql[o] * s, phi)
+        elif kind == "revolute_prismatic":
+            x, y = ox + ql[o] * c, oy + ql[o] * s
+            cols, th = [(c, s, 0.0), (y, -x, 1.0)], phi + ql[o + 1]
+        elif kind == "plane":
+            x = ox + ql[o] * c - ql[o + 1] * s
+            y = oy + ql[o] * s + ql[o + 1] * c
+            cols, th = [(c, s, 0.0), (-s, c, 0.0), (y, -x, 1.0)], phi + ql[o + 2]
+        else:
+            cols, (x, y, th) = [], (ox, oy, phi)
+        origin.append((ox, oy))
+        pose.append((x, y, th))
+        # twist (2.9) and bias acceleration (2.19 with sequential-screw cross terms)
+        k0 = k1 = 0.0
+        rx, ry, rw = vx, vy, w  # v_parent + sum_{k<j} s_k qd_k
+        for j, (s0, s1, s2) in enumerate(cols):
+            S[0][o + j], S[1][o + j], S[2][o + j] = s0, s1, s2
+            qj = qdl[o + j]
+            u0, u1, u2 = s0 * qj, s1 * qj, s2 * qj
+            k0 += -rw * u1 + ry * u2
+            k1 += rw * u0 - rx * u2
+            rx, ry, rw = rx + u0, ry + u1, rw + u2
+        v.append((rx, ry, rw))
+        kappa.append((k0, k1, 0.0))
+        m, J = float(arr["mass"][i]), float(arr["J"][i])
+        cbx, cby = model.bodies[i].com
+        ct, st = cos(th), sin(th)
+        cx, cy = x + ct * cbx - st * cby, y + st * cbx + ct * cby
+        com.append((cx, cy))
+        Il.append(((m, 0.0, -m * cy), (0.0, m, m * cx), (-m * cy, m * cx, J + m * (cx * cx + cy * cy))))
+        g.append((m * gx, m * gy, m * (cx * gy - cy * gx)))
+    d = Data(model)
+    d.q, d.qd = q, qd
+    d.pose, d.com, d.origin = np.array(pose), np.array(com), np.array(origin)
+    d.S = np.array(S).reshape(3, nq)
+    d.I = np.array(Il)
+    d.v, d.kappa = np.array(v), np.array(kappa)
+    gg = np.array(g)
+    if f_ext is not None:
+        gg = gg + f_ext
+    d.g = gg
+    Iv = np.einsum("...ij,...j->...i", d.I, d.v)
+    d.p = cross_force(d.v, Iv) - gg
     d.f_ext = f_ext
     return d

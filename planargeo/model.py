@@ -302,7 +302,7 @@ class Model:
     def arrays(self) -> dict:
         """Read-only numeric arrays of the model (cached): masses, coms, inertias, placements..."""
         a = self._arrays
-        if not a:
+        if "mass" not in a:
             a["mass"] = np.array([b.mass for b in self.bodies])
             a["com"] = np.array([b.com for b in self.bodies]).reshape(self.N, 2)
             a["J"] = np.array([b.inertia for b in self.bodies])
@@ -313,8 +313,8 @@ class Model:
                 for k in self.ancestors(i):
                     mask[i, self.q_slice(k)] = True
             a["ancestor_mask"] = mask
-            for v in a.values():
-                v.setflags(write=False)
+            for k in ("mass", "com", "J", "placement", "parents", "ancestor_mask"):
+                a[k].setflags(write=False)
         return a
 
     def with_gravity(self, gravity) -> "Model":

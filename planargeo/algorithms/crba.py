@@ -57,21 +57,26 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
 
         raise InputError(f"method must be 'crba' or 'jacobian', got {method!r}")
     Ic = data.I.copy()
-    H = np.zeros(shape + (nq, nq))
-    for i in range(model.N - 1, -1, -1):
+    for i in range(model.N - 1, -1, -1):       # composite inertias, tip to base
         par = model.parents[i]
-        si = model.q_slice(i)
-        F = Ic[..., i, :, :] @ data.s(i)          # (..., 3, k)
-        j = i
-        while j != -1:
-            sj = model.q_slice(j)
-            blk = np.swapaxes(data.s(j), -1, -2) @ F  # (..., kj, ki)
-            H[..., sj, si] = blk
-            H[..., si, sj] = np.swapaxes(blk, -1, -2)
-            j = model.parents[j]
         if par >= 0:
             Ic[..., par, :, :] += Ic[..., i, :, :]
-    return H
+    cols = _column_tables(model)
+    body = cols["body"]
+    F = np.einsum("...cij,...jc->...ic", Ic[..., body, :, :], data.S)   # Ic_{b(c)} s_c
+    SF = np.swapaxes(data.S, -1, -2) @ F                                # s_r^T Ic_{b(c)} s_c
+    # H[r, c] = s_r^T Ic_{b(c)} s_c when joint(r) is on the path to body(c), and symmetric
+    return np.where(cols["anc"], SF, np.where(cols["anc"].T, np.swapaxes(SF, -1, -2), 0.0))
+
+
+def _column_tables(model: Model) -> dict:
+    cache = model._arrays
+    if "crba_cols" not in cache:
+        body = np.repeat(np.arange(model.N), [j.dofs for j in model.joints])
+        mask = model.arrays()["ancestor_mask"]            # (N, nq): joint col on path to body
+        anc = mask[body].T                                  # anc[r, c]: col r on the path to body(c)
+        cache["crba_cols"] = {"body": body, "anc": anc}
+    return cache["crba_cols"]
 
 
 def bias_forces(model: Model, q, qd, f_ext=None) -> np.ndarray:
