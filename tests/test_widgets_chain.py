@@ -1,0 +1,126 @@
+"""ChainExplorer: controls drive readouts and artists; errors become messages."""
+import math
+
+import numpy as np
+import pytest
+
+from planargeo.errors import SingularConfigurationError
+from planargeo.widgets.chain import ChainExplorer
+
+G = 9.81
+
+
+@pytest.fixture
+def ex():
+    return ChainExplorer(display="agg", links=1, speed=0.0, torque=0.0, angle=0.0)
+
+
+def test_single_pendulum_matches_closed_form(ex):
+    # uniform rod (m=1, L=1) pinned at one end: J_pivot = mL²/3
+    for deg in (0.0, -30.0, 45.0):
+        ex.controls["angle"].value = deg
+        th = math.radians(deg)
+        assert ex.message == ""
+        assert ex.readout_values["qdd[1]"] == pytest.approx(-1.5 * G * math.cos(th), rel=1e-9)
+        assert ex.readout_values["potential energy (J)"] == pytest.approx(G * 0.5 * math.sin(th), abs=1e-12)
+        # the tip of the drawn link is at (cos, sin)
+        x, y = ex.links_line.get_data()
+        assert (x[-1], y[-1]) == pytest.approx((math.cos(th), math.sin(th)))
+
+
+def test_speed_sets_kinetic_energy_and_velocity_pole(ex):
+    ex.controls["speed"].value = 2.0
+    assert ex.readout_values["kinetic energy (J)"] == pytest.approx(0.5 * (1 / 3) * 4.0)
+    p = ex.v_art[0].get_point()          # rotation about the pivot (0, 0): [0, 0, w]
+    assert p == pytest.approx([0.0, 0.0, 2.0], abs=1e-12)
+    assert ex.v_art[0].get_visible() and not ex.v_art[1].get_visible()
+
+
+def test_torque_enters_the_acceleration(ex):
+    ex.controls["angle"].value = -90.0       # hanging: gravity gives no torque
+    ex.controls["torque"].value = 2.0
+    assert ex.readout_values["qdd[1]"] == pytest.approx(2.0 / (1 / 3), rel=1e-9)
+
+
+def test_links_and_overlays(ex):
+    with ex.hold():
+        ex.controls["links"].value = 6
+        for k in ("acceleration poles", "bias terms", "T/U split", "articulated inertias"):
+            ex.controls[k].value = True
+    assert ex.readout_values["links"] == 6 and "qdd[6]" in ex.readout_values
+    assert sum(a.get_visible() for a in ex.A_art) == 6
+    assert sum(a.get_visible() for a in ex.f_art) == 6
+    # the active + reaction parts add up to the joint force (6.38)
+    f = np.array([a.get_line() for a in ex.f_art[:6]])
+    t = np.array([a.get_line() for a in ex.t_art[:6]])
+    r = np.array([a.get_line() for a in ex.r_art[:6]])
+    assert t + r == pytest.approx(f, abs=1e-9)
+    # the reaction part passes through its revolute joint: incidence (5.24)
+    w = ex.state["w"]
+    for i in range(6):
+        x, y = w.origin[i]
+        assert np.dot([y, -x, 1.0], r[i]) == pytest.approx(0.0, abs=1e-9 * (1 + np.abs(r[i]).max()))
+    ex.controls["links"].value = 2
+    assert sum(a.get_visible() for a in ex.A_art) == 2
+    ex.controls["articulated inertias"].value = False
+    assert not any(a.get_visible() for a in ex.A_art)
+    ex.fig.canvas.draw()
+
+
+def test_joint_sets(ex):
+    for js in ("prismatic", "alternating", "revolute"):
+        ex.set(joints=js, links=5)
+        assert ex.message == ""
+        assert len([k for k in ex.readout_values if k.startswith("qdd")]) == 2
+
+
+def test_error_keeps_last_drawing(ex, monkeypatch):
+    ex.controls["angle"].value = 10.0
+    before = ex.links_line.get_data()[0].copy()
+    good = dict(ex.readout_values)
+
+    def boom(*a, **k):
+        raise SingularConfigurationError("joint 0: singular on purpose", 1e17)
+
+    monkeypatch.setattr(ex, "compute", boom)
+    ex.controls["angle"].value = 20.0            # must not raise
+    assert "singular on purpose" in ex.message
+    assert ex.readout_values == good
+    assert np.array_equal(ex.links_line.get_data()[0], before)
+    monkeypatch.undo()
+    ex.controls["angle"].value = 30.0            # and it keeps working
+    assert ex.message == ""
+    assert ex.readout_values["qdd[1]"] == pytest.approx(-1.5 * G * math.cos(math.radians(30)))
+
+
+def test_simulation_conserves_energy_and_animates():
+    ex = ChainExplorer(display="agg", links=3, speed=0.5, torque=0.0, fps=20)
+    e0 = ex.readout_values["total energy (J)"]
+    ex.simulate(0.5)
+    assert ex.message == ""
+    assert ex.controls["frame"].max == 10
+    ex.controls["frame"].value = 10
+    assert ex.readout_values["t (s)"] == pytest.approx(0.5)
+    assert ex.readout_values["energy drift (J)"] == pytest.approx(0.0, abs=1e-6 * max(1.0, abs(e0)))
+    assert ex.readout_values["total energy (J)"] == pytest.approx(e0, abs=1e-6 * max(1.0, abs(e0)))
+    # changing the initial state discards the trajectory
+    ex.controls["speed"].value = 0.0
+    assert ex.controls["frame"].max == 0 and ex.readout_values["t (s)"] == 0.0
+
+
+def test_reset_and_export(tmp_path):
+    ex = ChainExplorer(display="agg", export_dir=tmp_path)
+    ex.set(links=7, angle=50.0)
+    ex.reset()
+    assert ex.values == ex.defaults and ex.readout_values["links"] == 4
+    p = ex.export_svg()
+    assert p.exists() and p.read_text().lstrip().startswith("<?xml")
+    ex._export_clicked()
+    assert "saved" in ex.export_label.value
+
+
+def test_image_mode_updates_png():
+    ex = ChainExplorer(display="image", links=2)
+    a = ex.image.value
+    ex.controls["angle"].value = 60.0
+    assert ex.image.value[:8] == b"\x89PNG\r\n\x1a\n" and ex.image.value != a
