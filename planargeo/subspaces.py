@@ -1,0 +1,512 @@
+"""Subspace decompositions of wrenches, twists and inertias (thesis chapter 6).
+
+A joint's motion space ``s`` (3×k) and reaction space ``R`` (3×(3-k)),
+``sᵀR = 0``, are completed with the help of an inertia ``A`` (a rigid body
+inertia ``I`` or an articulated inertia) into
+
+* the *percussion space*            ``T = A s (sᵀ A s)⁻¹``          (6.30, 6.36, 6.39)
+* the *reactive-acceleration space* ``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹``      (6.37, 6.45; 6.33 misprinted)
+
+with ``sᵀT = 1``, ``RᵀU = 1`` and ``TᵀU = 0`` (6.22, 6.23, 6.46).  Any wrench
+splits as ``f = T Q + R μ`` (6.38) and any acceleration as ``a = s ψ + U γ``
+(6.44), the components being read off by the projections (6.61–6.62)::
+
+    Q = sᵀ f      μ = Uᵀ f      ψ = Tᵀ a      γ = Rᵀ a
+
+All functions broadcast over leading dimensions: spaces are ``(..., 3, k)``,
+inertias ``(..., 3, 3)``, wrenches / twists ``(..., 3)``.  A space may also be
+given as a single column of shape ``(3,)``.  No matrix is inverted explicitly:
+everything goes through :func:`numpy.linalg.solve` on the small ``k×k``
+matrices ``sᵀAs`` / ``RᵀA⁻¹R`` (and on ``A`` itself for ``A⁻¹R``).
+
+Errors: a singular ``sᵀAs`` or ``RᵀA⁻¹R`` raises
+:class:`~planargeo.errors.SingularConfigurationError`; a singular ``A`` where
+``A⁻¹`` is needed raises :class:`~planargeo.errors.SingularInertiaError`;
+both carry ``.cond``.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ._validate import as_array, check_symmetric
+from .errors import InputError, ShapeError, SingularConfigurationError, SingularInertiaError
+
+__all__ = [
+    "percussion_space", "reactive_acceleration_space",
+    "active_force", "reaction_force", "active_acceleration", "reactive_acceleration",
+    "wrench_projectors", "twist_projectors",
+    "joint_space_inertia", "reaction_space_inverse_inertia",
+    "inertia_decomposition", "inverse_inertia_decomposition",
+    "effective_mobility", "effective_base_inertia",
+    "Decomposition",
+]
+
+#: Largest (scale-free) condition number accepted for ``sᵀAs``, ``RᵀA⁻¹R`` and ``A``.
+COND_LIMIT = 1e12
+
+
+# ----------------------------------------------------------------------------- helpers
+def _space(x, name: str) -> np.ndarray:
+    """Validate a subspace: (..., 3, k) float array; a (3,) vector is one column."""
+    a = as_array(x, name)
+    if a.ndim == 1:
+        if a.shape != (3,):
+            raise ShapeError(f"{name} must have shape (..., 3, k), got shape {a.shape}")
+        return a[:, None]
+    if a.ndim < 2 or a.shape[-2] != 3 or a.shape[-1] > 3:
+        raise ShapeError(f"{name} must have shape (..., 3, k) with k <= 3, got shape {a.shape}")
+    return a
+
+
+def _inertia(A, name: str) -> np.ndarray:
+    a = as_array(A, name, (3, 3))
+    check_symmetric(a, name)
+    return a
+
+
+def _T(x: np.ndarray) -> np.ndarray:
+    return np.swapaxes(x, -1, -2)
+
+
+def _norm2(x: np.ndarray) -> np.ndarray:
+    """Spectral norm of each matrix in a stack (0 for empty matrices)."""
+    if x.shape[-1] == 0 or x.shape[-2] == 0:
+        return np.zeros(x.shape[:-2])
+    return np.linalg.svd(x, compute_uv=False)[..., 0]
+
+
+def _check_cond(M: np.ndarray, scale: np.ndarray, error, message: str) -> None:
+    """Raise ``error(message, cond)`` if ``M`` (..., k, k) is singular relative to ``scale``.
+
+    ``cond = scale / σ_min(M)``; ``scale`` is what ``‖M‖`` would be for a
+    well-conditioned problem (e.g. ``‖A‖ ‖s‖²`` for ``M = sᵀAs``), so a 1×1
+    ``M`` that is tiny compared with the inertia is caught too.
+    """
+    if M.shape[-1] == 0:
+        return
+    smin = np.linalg.svd(M, compute_uv=False)[..., -1]
+    scale = np.broadcast_to(scale, smin.shape)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        cond = np.where(smin > 0, scale / np.where(smin > 0, smin, 1.0), np.inf)
+    bad = ~(cond <= COND_LIMIT)
+    if np.any(bad):
+        raise error(message, float(np.max(np.where(bad, cond, 0.0))))
+
+
+def _solve_A(A: np.ndarray, B: np.ndarray, name: str) -> np.ndarray:
+    """``A⁻¹ B`` by a solve, raising SingularInertiaError (with cond) for a singular ``A``."""
+    sv = np.linalg.svd(A, compute_uv=False)
+    _check_cond(A, sv[..., 0], SingularInertiaError, f"{name} must be invertible")
+    shape = np.broadcast_shapes(A.shape[:-2], B.shape[:-2])
+    return np.linalg.solve(np.broadcast_to(A, shape + A.shape[-2:]), np.broadcast_to(B, shape + B.shape[-2:]))
+
+
+def _right_solve(X: np.ndarray, M: np.ndarray) -> np.ndarray:
+    """``X M⁻¹`` for symmetric ``M`` (..., k, k), as ``(M⁻¹ Xᵀ)ᵀ``."""
+    Xt = _T(X)
+    shape = np.broadcast_shapes(M.shape[:-2], Xt.shape[:-2])
+    return _T(np.linalg.solve(np.broadcast_to(M, shape + M.shape[-2:]),
+                              np.broadcast_to(Xt, shape + Xt.shape[-2:])))
+
+
+def _gram(s: np.ndarray, As: np.ndarray, A_scale: np.ndarray, sname: str, what: str) -> np.ndarray:
+    M = _T(s) @ As
+    M = 0.5 * (M + _T(M))
+    _check_cond(M, A_scale * _norm2(s) ** 2, SingularConfigurationError,
+                f"{what} is singular: the inertia has (almost) nothing along {sname}")
+    return M
+
+
+def _check_complementary(s: np.ndarray, R: np.ndarray) -> None:
+    k, r = s.shape[-1], R.shape[-1]
+    if k + r != 3:
+        raise ShapeError(f"s and R must have 3 columns together, got s with {k} and R with {r}")
+    sR = _T(s) @ R
+    if sR.size:
+        tol = 1e-9 * max(1.0, float(np.max(np.abs(s), initial=0.0)) * float(np.max(np.abs(R), initial=0.0)))
+        worst = float(np.max(np.abs(sR)))
+        if worst > tol:
+            raise InputError(f"R must be reciprocal to s (sᵀR = 0, thesis 6.1), got max |sᵀR| = {worst:.3g}")
+
+
+def _percussion(s: np.ndarray, A: np.ndarray, name: str) -> np.ndarray:
+    if s.shape[-1] == 0:
+        return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 0))
+    As = A @ s
+    return _right_solve(As, _gram(s, As, _norm2(A), "s", f"sᵀ{name}s"))
+
+
+def _reactive(R: np.ndarray, A: np.ndarray, name: str) -> np.ndarray:
+    if R.shape[-1] == 0:
+        return np.zeros(np.broadcast_shapes(R.shape[:-2], A.shape[:-2]) + (3, 0))
+    AiR = _solve_A(A, R, name)
+    Ainv_norm = 1.0 / np.linalg.svd(A, compute_uv=False)[..., -1]   # ‖A⁻¹‖ = 1 / σ_min(A)
+    return _right_solve(AiR, _gram(R, AiR, Ainv_norm, "R", f"Rᵀ{name}⁻¹R"))
+
+
+def _vec(x, name: str) -> np.ndarray:
+    return as_array(x, name, (3,))
+
+
+def _tmul(X: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """``Xᵀ v`` for stacks: X (..., 3, k), v (..., 3) -> (..., k)."""
+    return (_T(X) @ v[..., None])[..., 0]
+
+
+# ----------------------------------------------------------------------------- subspaces
+def percussion_space(s, A) -> np.ndarray:
+    """Percussion (active-force) space ``T = A s (sᵀ A s)⁻¹`` (thesis 6.30, 6.36, 6.39).
+
+    The weighted pseudo-inverse of ``s`` (6.26): ``sᵀT = 1`` (6.32) and
+    ``TᵀU = 0`` (6.46).  For a revolute joint its single column is the axis of
+    percussion of the pivot (5.67), scaled so that its moment about the pivot
+    is 1.
+
+    Parameters
+    ----------
+    s : array_like, shape (..., 3, k) or (3,)
+        Motion space (unit twists at the origin).
+    A : array_like, shape (..., 3, 3)
+        Rigid-body or articulated inertia (symmetric).
+
+    Returns
+    -------
+    ndarray, shape (..., 3, k)
+
+    Raises
+    ------
+    SingularConfigurationError
+        If ``sᵀAs`` is singular (``A`` has no inertia along ``s``).
+
+    Examples
+    --------
+    Pinned body of thesis 5.64 (``m = 2``, ``d = 1``, ``ρ² = 1/4``), pinned at the origin:
+
+    >>> from planargeo.screws import inertia_matrix
+    >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.5)
+    >>> percussion_space([0.0, 0.0, 1.0], I)      # force along y at x = 1/0.8 = d + ρ²/d (5.67)
+    array([[0. ],
+           [0.8],
+           [1. ]])
+    """
+    return _percussion(_space(s, "s"), _inertia(A, "A"), "A")
+
+
+def reactive_acceleration_space(R, A) -> np.ndarray:
+    """Reactive-acceleration space ``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹`` (thesis 6.37, 6.45; 6.33 corrected).
+
+    The weighted pseudo-inverse of ``R``: ``RᵀU = 1`` (6.35), ``TᵀU = 0`` (6.46).
+    Thesis 6.33 prints ``A⁻¹R (RᵀA⁻¹R)`` without the inverse (see
+    ``docs/errata/subspaces.md``).
+
+    Parameters
+    ----------
+    R : array_like, shape (..., 3, r) or (3,)
+        Reaction space (unit wrenches at the origin).
+    A : array_like, shape (..., 3, 3)
+        Rigid-body or articulated inertia (symmetric, invertible).
+
+    Returns
+    -------
+    ndarray, shape (..., 3, r)
+
+    Raises
+    ------
+    SingularInertiaError
+        If ``A`` is singular.
+    SingularConfigurationError
+        If ``RᵀA⁻¹R`` is singular.
+
+    Examples
+    --------
+    A free unit disc (``m = 1``, ``J = 1`` at the origin) held by a slider along x:
+    the reactive accelerations are pure sliding across (y) and pure spin.
+
+    >>> reactive_acceleration_space([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]], np.eye(3))
+    array([[0., 0.],
+           [1., 0.],
+           [0., 1.]])
+    """
+    return _reactive(_space(R, "R"), _inertia(A, "A"), "A")
+
+
+# ----------------------------------------------------------------------------- projections
+def active_force(s, f) -> np.ndarray:
+    """Active (joint) force ``Q = sᵀ f`` (thesis 6.61a, 6.51).
+
+    Examples
+    --------
+    >>> active_force([0.0, 0.0, 1.0], [1.0, 2.0, 3.0])   # the moment about the pivot
+    array([3.])
+    """
+    return _tmul(_space(s, "s"), _vec(f, "f"))
+
+
+def reaction_force(U, f) -> np.ndarray:
+    """Reaction-force components ``μ = Uᵀ f`` (thesis 6.61b, 6.54).
+
+    Examples
+    --------
+    >>> reaction_force(np.eye(3)[:, :2], [1.0, 2.0, 3.0])
+    array([1., 2.])
+    """
+    return _tmul(_space(U, "U"), _vec(f, "f"))
+
+
+def active_acceleration(T, a) -> np.ndarray:
+    """Active (absolute joint) acceleration ``ψ = Tᵀ a`` (thesis 6.62b, 6.57).
+
+    Examples
+    --------
+    >>> active_acceleration([0.0, 0.8, 1.0], [0.0, 0.0, 2.0])
+    array([2.])
+    """
+    return _tmul(_space(T, "T"), _vec(a, "a"))
+
+
+def reactive_acceleration(R, a) -> np.ndarray:
+    """Reactive-acceleration components ``γ = Rᵀ a`` (thesis 6.62a, 6.60).
+
+    Examples
+    --------
+    >>> reactive_acceleration([[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]], [0.0, 0.0, 2.0])  # pin at origin
+    array([0., 0.])
+    """
+    return _tmul(_space(R, "R"), _vec(a, "a"))
+
+
+# ----------------------------------------------------------------------------- projectors
+def wrench_projectors(s, R, A) -> tuple[np.ndarray, np.ndarray]:
+    """The complementary wrench projectors ``(T sᵀ, R Uᵀ)``, summing to 1 (thesis 6.75).
+
+    ``T sᵀ f`` is the active part ``T Q`` of a wrench, ``R Uᵀ f`` its reaction
+    part ``R μ`` (6.38, 6.61).
+
+    Examples
+    --------
+    >>> P_act, P_rea = wrench_projectors([0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]], np.eye(3))
+    >>> P_act + P_rea
+    array([[1., 0., 0.],
+           [0., 1., 0.],
+           [0., 0., 1.]])
+    """
+    d = Decomposition(s, R, A)
+    return d.T @ _T(d.s), d.R @ _T(d.U)
+
+
+def twist_projectors(s, R, A) -> tuple[np.ndarray, np.ndarray]:
+    """The complementary twist projectors ``(s Tᵀ, U Rᵀ)``, summing to 1 (dual of thesis 6.75).
+
+    ``s Tᵀ a = s ψ`` is the joint part of an acceleration, ``U Rᵀ a = U γ``
+    its reactive part (6.44, 6.62; ``U Rᵀ`` is the projection of 6.108).
+
+    Examples
+    --------
+    >>> P_joint, P_react = twist_projectors([0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]], np.eye(3))
+    >>> P_joint
+    array([[0., 0., 0.],
+           [0., 0., 0.],
+           [0., 0., 1.]])
+    """
+    d = Decomposition(s, R, A)
+    return d.s @ _T(d.T), d.U @ _T(d.R)
+
+
+# ----------------------------------------------------------------------------- inertias
+def joint_space_inertia(s, I) -> np.ndarray:
+    """Joint-space inertia ``sᵀ I s`` (thesis 6.67, 6.74c): ``Q = (sᵀIs) ψ``.
+
+    Examples
+    --------
+    >>> from planargeo.screws import inertia_matrix
+    >>> joint_space_inertia([0.0, 0.0, 1.0], inertia_matrix(2.0, [1.0, 0.0], 0.5))   # m (ρ² + d²)
+    array([[2.5]])
+    """
+    s = _space(s, "s")
+    I = _inertia(I, "I")
+    return _T(s) @ I @ s
+
+
+def reaction_space_inverse_inertia(R, I) -> np.ndarray:
+    """Reaction-space inverse inertia ``Rᵀ I⁻¹ R`` (thesis 6.71): ``γ = (RᵀI⁻¹R) μ``.
+
+    Computed with a solve, not an explicit inverse; singular ``I`` raises
+    :class:`~planargeo.errors.SingularInertiaError`.
+
+    Examples
+    --------
+    >>> reaction_space_inverse_inertia([[1.0], [0.0], [0.0]], np.diag([2.0, 2.0, 1.0]))
+    array([[0.5]])
+    """
+    R = _space(R, "R")
+    I = _inertia(I, "I")
+    return _T(R) @ _solve_A(I, R, "I")
+
+
+def inertia_decomposition(s, R, I) -> tuple[np.ndarray, np.ndarray]:
+    """Split an inertia as ``I = T sᵀ I + R Uᵀ I`` (thesis 6.76).
+
+    ``T sᵀ I a`` is the force accelerating the joint's moving part, ``R Uᵀ I a``
+    the (reaction) force accelerating its base; the second term is the
+    effective inertia of the joint base (6.97), see :func:`effective_base_inertia`.
+
+    Returns
+    -------
+    (ndarray, ndarray), each shape (..., 3, 3)
+
+    Examples
+    --------
+    >>> from planargeo.screws import inertia_matrix
+    >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.5)
+    >>> Ia, Ib = inertia_decomposition([0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]], I)
+    >>> np.allclose(Ia + Ib, I)
+    True
+    """
+    d = Decomposition(s, R, I, name="I")
+    return d.T @ _T(d.s) @ d.A, d.R @ _T(d.U) @ d.A
+
+
+def inverse_inertia_decomposition(s, R, I) -> tuple[np.ndarray, np.ndarray]:
+    """Split an inverse inertia as ``I⁻¹ = s Tᵀ I⁻¹ + U Rᵀ I⁻¹`` (thesis 6.79–6.81).
+
+    ``s Tᵀ I⁻¹ f`` is the motion of the joint produced by a wrench ``f`` (the
+    effective mobility of a constrained body, 6.93), ``U Rᵀ I⁻¹ f`` the motion
+    of the joint base (6.81).  Both parts are symmetric:
+    ``s Tᵀ I⁻¹ = s (sᵀIs)⁻¹ sᵀ`` and ``U Rᵀ I⁻¹ = I⁻¹R (RᵀI⁻¹R)⁻¹ RᵀI⁻¹``.
+
+    Examples
+    --------
+    >>> Ma, Mb = inverse_inertia_decomposition([0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]],
+    ...                                        np.diag([2.0, 2.0, 4.0]))
+    >>> Ma + Mb
+    array([[0.5 , 0.  , 0.  ],
+           [0.  , 0.5 , 0.  ],
+           [0.  , 0.  , 0.25]])
+    """
+    d = Decomposition(s, R, I, name="I")
+    IiR = _solve_A(d.A, d.R, "I")
+    return effective_mobility(d.s, d.A), d.U @ _T(IiR)
+
+
+def effective_mobility(s, I) -> np.ndarray:
+    """Effective inverse inertia of a joint-constrained body ``s Tᵀ I⁻¹ = s (sᵀIs)⁻¹ sᵀ`` (thesis 6.93).
+
+    A body at rest held by the joint and loaded by a wrench ``f`` accelerates
+    by ``a = s Tᵀ I⁻¹ f`` (with ``f`` the wrench *applied to* the body; the
+    thesis's 6.83–6.93 carry a minus sign because their ``f`` is the wrench the
+    body transmits, like ``f_{i+1}`` in 6.102).  No inverse of ``I`` is needed.
+
+    Examples
+    --------
+    >>> from planargeo.screws import inertia_matrix
+    >>> effective_mobility([0.0, 0.0, 1.0], inertia_matrix(2.0, [1.0, 0.0], 0.5))
+    array([[0. , 0. , 0. ],
+           [0. , 0. , 0. ],
+           [0. , 0. , 0.4]])
+    """
+    s = _space(s, "s")
+    I = _inertia(I, "I")
+    Is = I @ s
+    M = _gram(s, Is, _norm2(I), "s", "sᵀIs")
+    return _right_solve(s, M) @ _T(s)
+
+
+def effective_base_inertia(R, I) -> np.ndarray:
+    """Effective inertia of the joint base ``R Uᵀ I = R (RᵀI⁻¹R)⁻¹ Rᵀ`` (thesis 6.97).
+
+    The reaction force needed to give the joint base the acceleration ``a``
+    when the joint transmits no active force: ``f = R Uᵀ I a``.  This is the
+    projection the articulated-body recursion adds to the parent (6.76, 7.x).
+
+    Examples
+    --------
+    >>> effective_base_inertia([[0.0], [0.0], [1.0]], np.diag([2.0, 2.0, 4.0]))   # only a couple: J
+    array([[0., 0., 0.],
+           [0., 0., 0.],
+           [0., 0., 4.]])
+    """
+    R = _space(R, "R")
+    I = _inertia(I, "I")
+    IiR = _solve_A(I, R, "I")
+    Iinv_norm = 1.0 / np.linalg.svd(I, compute_uv=False)[..., -1]
+    M = _gram(R, IiR, Iinv_norm, "R", "RᵀI⁻¹R")
+    return _right_solve(R, M) @ _T(R)
+
+
+# ----------------------------------------------------------------------------- class
+class Decomposition:
+    """Decompose wrenches and twists about a joint with an inertia (thesis 6.2–6.3).
+
+    Parameters
+    ----------
+    s : array_like, shape (..., 3, k) or (3,)
+        Motion space.
+    R : array_like, shape (..., 3, 3 - k)
+        Reaction space, ``sᵀR = 0`` (checked).
+    A : array_like, shape (..., 3, 3)
+        Body or articulated inertia (symmetric; invertible when ``k < 3``).
+    name : str
+        Name used for ``A`` in error messages.
+
+    Attributes
+    ----------
+    s, R, A : ndarray
+    T : ndarray, shape (..., 3, k)
+        Percussion space (6.39).
+    U : ndarray, shape (..., 3, 3 - k)
+        Reactive-acceleration space (6.45).
+
+    Examples
+    --------
+    >>> from planargeo.joints import revolute
+    >>> from planargeo.screws import inertia_matrix
+    >>> j = revolute((0.0, 0.0))
+    >>> dec = Decomposition.from_joint(j, inertia_matrix(2.0, [1.0, 0.0], 0.5))
+    >>> Q, mu = dec.split_wrench([0.0, 1.0, 2.0])
+    >>> Q, mu
+    (array([2.]), array([ 0. , -0.6]))
+    >>> dec.join_wrench(Q, mu)
+    array([0., 1., 2.])
+    """
+
+    __slots__ = ("s", "R", "A", "T", "U")
+
+    def __init__(self, s, R, A, *, name: str = "A"):
+        s = _space(s, "s")
+        R = _space(R, "R")
+        A = _inertia(A, name)
+        _check_complementary(s, R)
+        self.s, self.R, self.A = s, R, A
+        self.T = _percussion(s, A, name)
+        self.U = _reactive(R, A, name)
+
+    @classmethod
+    def from_joint(cls, joint, A, *, name: str = "A") -> "Decomposition":
+        """Build from a :class:`planargeo.joints.JointSpace` (uses its ``s`` and ``R``)."""
+        return cls(joint.s, joint.R, A, name=name)
+
+    def split_wrench(self, f) -> tuple[np.ndarray, np.ndarray]:
+        """``(Q, μ) = (sᵀf, Uᵀf)`` so that ``f = T Q + R μ`` (thesis 6.38, 6.61)."""
+        f = _vec(f, "f")
+        return _tmul(self.s, f), _tmul(self.U, f)
+
+    def join_wrench(self, Q, mu) -> np.ndarray:
+        """``f = T Q + R μ`` (thesis 6.38)."""
+        Q = as_array(Q, "Q", (self.s.shape[-1],))
+        mu = as_array(mu, "mu", (self.R.shape[-1],))
+        return (self.T @ Q[..., None])[..., 0] + (self.R @ mu[..., None])[..., 0]
+
+    def split_twist(self, a) -> tuple[np.ndarray, np.ndarray]:
+        """``(ψ, γ) = (Tᵀa, Rᵀa)`` so that ``a = s ψ + U γ`` (thesis 6.44, 6.62)."""
+        a = _vec(a, "a")
+        return _tmul(self.T, a), _tmul(self.R, a)
+
+    def join_twist(self, psi, gamma) -> np.ndarray:
+        """``a = s ψ + U γ`` (thesis 6.44)."""
+        psi = as_array(psi, "psi", (self.s.shape[-1],))
+        gamma = as_array(gamma, "gamma", (self.R.shape[-1],))
+        return (self.s @ psi[..., None])[..., 0] + (self.U @ gamma[..., None])[..., 0]
+
+    def __repr__(self) -> str:
+        return (f"Decomposition(k={self.s.shape[-1]}, batch={self.A.shape[:-2]}, "
+                f"T={np.array2string(self.T, precision=4)}, U={np.array2string(self.U, precision=4)})")

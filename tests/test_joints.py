@@ -1,0 +1,161 @@
+"""Joint motion / reaction spaces (thesis 4.8, 5.61–5.63).
+
+References: the thesis's printed joint axes (4.64, 4.69, 4.74, 5.62, 5.63),
+the twist/wrench transforms of planargeo.screws (X_P, X_P_inv_T) used to look
+at each basis element *from the joint*, and ranks computed with numpy.
+"""
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from planargeo import errors
+from planargeo.joints import (DOF, KINDS, JointSpace, fixed, motion_space, plane, prismatic,
+                              reaction_space, revolute, revolute_prismatic)
+from planargeo.screws import X_P, X_P_inv_T
+
+coord = st.floats(-10, 10, allow_nan=False)
+angle = st.floats(0, 2 * np.pi, allow_nan=False)
+kinds = st.sampled_from(KINDS)
+
+
+def _dir(lam):
+    return np.array([np.cos(lam), np.sin(lam)])
+
+
+# --------------------------------------------------------------------------- thesis values
+@pytest.mark.parametrize("lam", [0.0, 0.3, 2.0, -1.2])
+def test_prismatic_matches_thesis_5_62_5_63(lam):
+    j = prismatic(_dir(lam))
+    c, s = np.cos(lam), np.sin(lam)
+    np.testing.assert_allclose(j.s, [[c], [s], [0.0]], atol=1e-15)                   # (5.62), (4.69)
+    np.testing.assert_allclose(j.R, [[-s, 0.0], [c, 0.0], [0.0, 1.0]], atol=1e-15)  # (5.63)
+
+
+def test_revolute_at_origin_matches_thesis_4_64():
+    np.testing.assert_array_equal(revolute().s, [[0.0], [0.0], [1.0]])
+
+
+@pytest.mark.parametrize("lam", [0.0, 0.7, -2.5])
+def test_revolute_prismatic_matches_thesis_4_74(lam):
+    c, s = np.cos(lam), np.sin(lam)
+    np.testing.assert_allclose(revolute_prismatic((0, 0), _dir(lam)).s,
+                               [[c, 0.0], [s, 0.0], [0.0, 1.0]], atol=1e-15)
+
+
+def test_dof_and_shapes():
+    for j, k in [(revolute((1, 2)), 1), (prismatic((1, 1), (3, 0)), 1),
+                 (revolute_prismatic((1, 2), (0, 1)), 2), (plane(), 3), (fixed((4, 5)), 0)]:
+        assert j.dof == k == DOF[j.kind]
+        assert j.s.shape == (3, k) and j.R.shape == (3, 3 - k)
+
+
+# --------------------------------------------------------------------------- properties
+@given(kinds, coord, coord, angle)
+def test_reciprocity_and_completeness(kind, x, y, lam):
+    """sᵀR = 0 (5.61) and [s R] spans the whole screw space, for every kind at any placement."""
+    j = JointSpace(kind, (x, y), _dir(lam))
+    scale = 1.0 + abs(x) + abs(y)
+    np.testing.assert_allclose(j.s.T @ j.R, 0.0, atol=1e-12 * scale)
+    full = np.hstack([j.s, j.R])
+    assert np.linalg.matrix_rank(full, tol=1e-9) == 3
+    # unit quantities: unit rotations (w = 1), unit translations, unit forces, unit couple
+    for col in full.T:
+        assert np.isclose(np.hypot(col[0], col[1]), 1.0) or np.isclose(col[2], 1.0)
+
+
+@given(coord, coord)
+def test_revolute_seen_from_its_pivot(x, y):
+    """At the pivot, s is a pure rotation and the reactions are pure forces (no moment)."""
+    j = revolute((x, y))
+    np.testing.assert_allclose(X_P((x, y)) @ j.s[:, 0], [0.0, 0.0, 1.0], atol=1e-12)
+    at_p = X_P_inv_T((x, y)) @ j.R
+    np.testing.assert_allclose(at_p, [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]], atol=1e-12)
+
+
+@given(coord, coord, angle)
+def test_prismatic_and_slot_seen_from_the_joint(x, y, lam):
+    e = _dir(lam)
+    for j in (prismatic(e, (x, y)), revolute_prismatic((x, y), e)):
+        force = X_P_inv_T((x, y)) @ j.R[:, 0]                 # at the joint point
+        np.testing.assert_allclose(force, [-e[1], e[0], 0.0], atol=1e-12)  # perpendicular force through it
+    j = revolute_prismatic((x, y), e)
+    np.testing.assert_allclose(X_P((x, y)) @ j.s[:, 1], [0.0, 0.0, 1.0], atol=1e-12)
+
+
+@given(coord, coord)
+def test_fixed_and_plane(x, y):
+    j = fixed((x, y))
+    np.testing.assert_allclose(X_P_inv_T((x, y)) @ j.R, np.eye(3), atol=1e-12)
+    np.testing.assert_array_equal(plane().s, np.eye(3))
+
+
+def test_vectorised_helpers_match_objects(rng):
+    pts = rng.uniform(-3, 3, (4, 5, 2))
+    dirs = rng.normal(size=(5, 2))
+    for kind in KINDS:
+        S = motion_space(kind, pts, dirs)
+        R = reaction_space(kind, pts, dirs)
+        assert S.shape == (4, 5, 3, DOF[kind]) and R.shape == (4, 5, 3, 3 - DOF[kind])
+        for i in range(4):
+            for k in range(5):
+                j = JointSpace(kind, pts[i, k], dirs[k])
+                np.testing.assert_allclose(S[i, k], j.s, atol=1e-14)
+                np.testing.assert_allclose(R[i, k], j.R, atol=1e-14)
+
+
+def test_direction_is_normalised_and_ignored_when_unused():
+    np.testing.assert_allclose(prismatic((0.0, 5.0)).direction, [0.0, 1.0])
+    assert revolute((1.0, 1.0)).direction is None
+    # a revolute joint does not look at direction at all
+    np.testing.assert_array_equal(motion_space("revolute", (1.0, 0.0), (0.0, 0.0)), [[0.0], [-1.0], [1.0]])
+
+
+# --------------------------------------------------------------------------- object behaviour
+def test_frozen_and_read_only():
+    j = revolute((1.0, 2.0))
+    with pytest.raises(AttributeError, match="frozen"):
+        j.kind = "prismatic"
+    with pytest.raises(ValueError):
+        j.s[0, 0] = 5.0
+
+
+def test_equality_hash_repr():
+    assert prismatic((2.0, 0.0), (1.0, 1.0)) == prismatic((1.0, 0.0), (1.0, 1.0))
+    assert revolute((1.0, 2.0)) != revolute((1.0, 2.5))
+    assert revolute() != fixed()
+    assert len({revolute((1, 2)), revolute((1.0, 2.0))}) == 1
+    assert repr(revolute((1, 2))) == "JointSpace('revolute', point=(1.0, 2.0))"
+    assert repr(prismatic((0, 2))) == "JointSpace('prismatic', point=(0.0, 0.0), direction=(0.0, 1.0))"
+
+
+# --------------------------------------------------------------------------- bad input
+@pytest.mark.parametrize("make", [lambda: prismatic((0.0, 0.0)),
+                                  lambda: revolute_prismatic((1.0, 1.0), (0.0, 0.0)),
+                                  lambda: motion_space("prismatic", (0, 0), [[1, 0], [0, 0]]),
+                                  lambda: reaction_space("revolute_prismatic", (0, 0), (0, 0))])
+def test_zero_axis_is_degenerate(make):
+    with pytest.raises(errors.DegenerateGeometryError, match="direction must be non-zero"):
+        make()
+
+
+def test_bad_shapes():
+    with pytest.raises(errors.ShapeError, match=r"point must have shape \(\.\.\., 2\), got shape \(3,\)"):
+        revolute((1.0, 2.0, 3.0))
+    with pytest.raises(errors.ShapeError, match=r"point must have shape \(2,\), got shape \(2, 2\)"):
+        revolute([[1.0, 2.0], [3.0, 4.0]])
+    with pytest.raises(errors.ShapeError, match=r"direction must have shape \(\.\.\., 2\)"):
+        prismatic((1.0, 0.0, 0.0))
+    with pytest.raises(errors.ShapeError, match=r"direction must have shape \(2,\), got shape \(1, 2\)"):
+        prismatic([[1.0, 0.0]])
+
+
+def test_non_finite_and_bad_kind():
+    with pytest.raises(errors.NonFiniteError, match="point must be finite"):
+        revolute((np.nan, 0.0))
+    with pytest.raises(errors.NonFiniteError, match="direction must be finite"):
+        prismatic((np.inf, 0.0))
+    with pytest.raises(errors.InputError, match="kind must be one of 'revolute'.*got 'hinge'"):
+        JointSpace("hinge")
+    with pytest.raises(errors.InputError, match="kind must be one of"):
+        motion_space("ball", (0, 0))

@@ -1,0 +1,271 @@
+"""Subspace decompositions (thesis 6.1–6.4).
+
+References from outside the code under test:
+* the defining conditions of T and U (sᵀT = 1, RᵀU = 1, TᵀU = 0, A U ⟂ s) as
+  hypothesis properties over random SPD inertias and every joint kind;
+* a dense Lagrange-multiplier (KKT) solve of a joint-constrained body at rest,
+  I a = f + R λ, Rᵀ a = 0, done here with numpy on a 6×6 system;
+* hand closed forms for the pinned body of thesis 5.64 (axis of percussion 5.67);
+* explicit inverses (np.linalg.inv) in the tests only.
+"""
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from planargeo import errors
+from planargeo.joints import DOF, KINDS, JointSpace, prismatic, revolute
+from planargeo.screws import inertia_matrix
+from planargeo.subspaces import (Decomposition, active_acceleration, active_force, effective_base_inertia,
+                                 effective_mobility, inertia_decomposition, inverse_inertia_decomposition,
+                                 joint_space_inertia, percussion_space, reaction_force,
+                                 reaction_space_inverse_inertia, reactive_acceleration,
+                                 reactive_acceleration_space, twist_projectors, wrench_projectors)
+
+coord = st.floats(-4, 4, allow_nan=False)
+angle = st.floats(0, 2 * np.pi, allow_nan=False)
+
+
+@st.composite
+def body_inertias(draw):
+    """Rigid-body inertia from mass, centre of mass and radius of gyration."""
+    m = draw(st.floats(0.1, 10))
+    c = (draw(coord), draw(coord))
+    rho = draw(st.floats(0.1, 3))
+    return inertia_matrix(m, c, m * rho ** 2)
+
+
+@st.composite
+def spd_matrices(draw):
+    """General symmetric positive definite 3×3 (an articulated inertia need not be a rigid body's)."""
+    L = np.array(draw(st.lists(st.floats(-2, 2), min_size=9, max_size=9))).reshape(3, 3)
+    return L @ L.T + draw(st.floats(0.1, 2)) * np.eye(3)
+
+
+inertias = st.one_of(body_inertias(), spd_matrices())
+
+
+@st.composite
+def joints(draw):
+    kind = draw(st.sampled_from(KINDS))
+    lam = draw(angle)
+    return JointSpace(kind, (draw(coord), draw(coord)), (np.cos(lam), np.sin(lam)))
+
+
+def _kkt(I, R, f):
+    """Body at rest held by a joint with reaction space R, loaded by f: I a = f + R λ, Rᵀ a = 0."""
+    r = R.shape[1]
+    K = np.zeros((3 + r, 3 + r))
+    K[:3, :3] = I
+    K[:3, 3:] = -R
+    K[3:, :3] = R.T
+    sol = np.linalg.solve(K, np.concatenate([f, np.zeros(r)]))
+    return sol[:3], sol[3:]
+
+
+def _mx(x):
+    return float(np.max(np.abs(x), initial=0.0))
+
+
+# --------------------------------------------------------------------------- identities (6.22, 6.23, 6.46, 6.75)
+@given(joints(), inertias)
+def test_pseudo_inverse_identities(j, A):
+    T = percussion_space(j.s, A)
+    U = reactive_acceleration_space(j.R, A)
+    k = j.dof
+    assert T.shape == (3, k) and U.shape == (3, 3 - k)
+    tol = 1e-8 * np.linalg.cond(A) * (1 + _mx(j.s) + _mx(j.R)) ** 2
+    np.testing.assert_allclose(j.s.T @ T, np.eye(k), atol=tol)            # (6.23), (6.32)
+    np.testing.assert_allclose(j.R.T @ U, np.eye(3 - k), atol=tol)        # (6.22), (6.35)
+    np.testing.assert_allclose(T.T @ U, 0.0, atol=tol)                    # (6.46)
+    np.testing.assert_allclose(T @ j.s.T + j.R @ U.T, np.eye(3), atol=tol)  # (6.75)
+    np.testing.assert_allclose(j.s @ T.T + U @ j.R.T, np.eye(3), atol=tol)  # dual of (6.75)
+    # defining properties: T ∈ span(A s), A U ∈ span(R) (i.e. sᵀ A U = 0)
+    np.testing.assert_allclose(j.s.T @ A @ U, 0.0, atol=tol * _mx(A))
+    if k:
+        coef = np.linalg.lstsq(A @ j.s, T, rcond=None)[0]
+        np.testing.assert_allclose(A @ j.s @ coef, T, atol=tol * (1 + _mx(T)))
+
+
+@given(joints(), inertias, st.lists(st.floats(-5, 5), min_size=6, max_size=6))
+def test_decomposition_round_trips(j, A, vals):
+    dec = Decomposition.from_joint(j, A)
+    f, a = np.array(vals[:3]), np.array(vals[3:])
+    Q, mu = dec.split_wrench(f)
+    psi, gamma = dec.split_twist(a)
+    tol = 1e-8 * np.linalg.cond(A) * (1 + _mx(f) + _mx(a)) * (1 + _mx(j.s)) ** 2
+    np.testing.assert_allclose(dec.join_wrench(Q, mu), f, atol=tol)      # (6.38)
+    np.testing.assert_allclose(dec.join_twist(psi, gamma), a, atol=tol)  # (6.44)
+    # the function projections agree with the class (6.61, 6.62)
+    np.testing.assert_allclose(active_force(j.s, f), Q, atol=1e-12)
+    np.testing.assert_allclose(reaction_force(dec.U, f), mu, atol=1e-12)
+    np.testing.assert_allclose(active_acceleration(dec.T, a), psi, atol=1e-12)
+    np.testing.assert_allclose(reactive_acceleration(j.R, a), gamma, atol=1e-12)
+    # the active part does no work through the reactions and vice versa: components are unique
+    Pa, Pr = wrench_projectors(j.s, j.R, A)
+    np.testing.assert_allclose(Pa @ Pa, Pa, atol=tol)
+    np.testing.assert_allclose(Pa @ Pr, 0.0, atol=tol)
+    Ja, Jr = twist_projectors(j.s, j.R, A)
+    np.testing.assert_allclose(Ja @ Ja, Ja, atol=tol)
+    np.testing.assert_allclose(Jr @ Jr, Jr, atol=tol)
+
+
+@given(joints(), body_inertias(), st.lists(st.floats(-5, 5), min_size=3, max_size=3))
+def test_constrained_body_at_rest_against_lagrange_multipliers(j, I, vals):
+    """Pinned body at rest loaded by f (6.63–6.74, 6.80–6.93) vs. a dense KKT solve.
+
+    The decomposition predicts: a = s Tᵀ I⁻¹ f (effective mobility, 6.93) with γ = Rᵀa = 0,
+    Q = (sᵀIs) ψ (6.67), and since I s ψ = T Q the joint reaction cancels exactly the
+    reactive part of f = T Q + R μ: λ = -μ (6.73, 6.84–6.88).
+    """
+    if j.dof == 3:                    # nothing holds the body: KKT is just I a = f
+        return
+    f = np.array(vals)
+    a_ref, lam_ref = _kkt(I, j.R, f)
+    dec = Decomposition.from_joint(j, I)
+    tol = 1e-8 * np.linalg.cond(I) * (1 + _mx(f)) * (1 + _mx(j.s)) ** 2
+    np.testing.assert_allclose(effective_mobility(j.s, I) @ f if j.dof else np.zeros(3), a_ref, atol=tol)
+    Q, mu = dec.split_wrench(f)
+    psi, gamma = dec.split_twist(a_ref)
+    np.testing.assert_allclose(gamma, 0.0, atol=tol)                                    # a = s q̈ (6.72)
+    if j.dof:
+        np.testing.assert_allclose(joint_space_inertia(j.s, I) @ psi, Q, atol=tol)     # (6.67)
+    np.testing.assert_allclose(lam_ref, -mu, atol=tol * (1 + _mx(I)))          # reaction = -Rμ part
+
+
+@given(joints(), body_inertias())
+def test_inertia_decompositions(j, I):
+    Ia, Ib = inertia_decomposition(j.s, j.R, I)
+    Ii = np.linalg.inv(I)
+    tol = 1e-8 * np.linalg.cond(I) * (1 + _mx(I)) * (1 + _mx(j.s)) ** 2
+    np.testing.assert_allclose(Ia + Ib, I, atol=tol)                                 # (6.76)
+    Ma, Mb = inverse_inertia_decomposition(j.s, j.R, I)
+    np.testing.assert_allclose(Ma + Mb, Ii, atol=tol * _mx(Ii))            # (6.79)–(6.81)
+    for P in (Ia, Ib, Ma, Mb):                                                      # all symmetric
+        np.testing.assert_allclose(P, P.T, atol=tol * (1 + _mx(Ii)))
+    # explicit-inverse references
+    s, R = j.s, j.R
+    if j.dof:
+        np.testing.assert_allclose(Ma, s @ np.linalg.inv(s.T @ I @ s) @ s.T, atol=tol * _mx(Ii))
+    if j.dof < 3:
+        np.testing.assert_allclose(Ib, R @ np.linalg.inv(R.T @ Ii @ R) @ R.T, atol=tol)
+        np.testing.assert_allclose(effective_base_inertia(R, I), Ib, atol=tol)       # (6.97)
+        np.testing.assert_allclose(reaction_space_inverse_inertia(R, I), R.T @ Ii @ R, atol=tol)
+    if j.dof:
+        np.testing.assert_allclose(joint_space_inertia(s, I), s.T @ I @ s, atol=tol)
+
+
+# --------------------------------------------------------------------------- hand closed forms
+@pytest.mark.parametrize("m,d,rho", [(2.0, 1.0, 0.5), (1.0, 3.0, 1.0), (5.0, 0.2, 2.0)])
+def test_axis_of_percussion_5_67(m, d, rho):
+    """Pinned at the origin, CG at (d, 0): T is a force along y at x = d + ρ²/d, moment 1 (5.64–5.67)."""
+    I = inertia_matrix(m, [d, 0.0], m * rho ** 2)
+    T = percussion_space(revolute().s, I)[:, 0]
+    np.testing.assert_allclose(T, [0.0, d / (rho ** 2 + d ** 2), 1.0], rtol=1e-14)
+    assert np.isclose(T[2] / T[1], d + rho ** 2 / d)     # line tz = x fy: x = l (5.67)
+
+
+def test_prismatic_at_centre_of_mass():
+    """A slider through the CG: T is a force along the slide through the CG, U = (perp/m, spin/J)."""
+    m, J, lam = 3.0, 2.0, 0.4
+    e = np.array([np.cos(lam), np.sin(lam)])
+    I = np.diag([m, m, J])
+    j = prismatic(e)
+    np.testing.assert_allclose(percussion_space(j.s, I)[:, 0], [e[0], e[1], 0.0], atol=1e-15)
+    np.testing.assert_allclose(reactive_acceleration_space(j.R, I), j.R, atol=1e-15)
+
+
+def test_batches_broadcast(rng):
+    Ls = rng.normal(size=(5, 3, 3))
+    A = Ls @ np.swapaxes(Ls, -1, -2) + np.eye(3)
+    j = revolute((0.5, -1.0))
+    T = percussion_space(j.s, A)
+    U = reactive_acceleration_space(j.R, A)
+    assert T.shape == (5, 3, 1) and U.shape == (5, 3, 2)
+    for i in range(5):
+        np.testing.assert_allclose(T[i], percussion_space(j.s, A[i]), atol=1e-14)
+        np.testing.assert_allclose(U[i], reactive_acceleration_space(j.R, A[i]), atol=1e-14)
+    # batch of joint spaces with one inertia
+    from planargeo.joints import motion_space, reaction_space
+    pts = rng.uniform(-2, 2, (4, 2))
+    S, R = motion_space("revolute", pts), reaction_space("revolute", pts)
+    dec = Decomposition(S, R, A[0])
+    f = rng.normal(size=(4, 3))
+    Q, mu = dec.split_wrench(f)
+    assert Q.shape == (4, 1) and mu.shape == (4, 2)
+    np.testing.assert_allclose(dec.join_wrench(Q, mu), f, atol=1e-12)
+    assert effective_mobility(S, A[0]).shape == (4, 3, 3)
+
+
+def test_empty_spaces():
+    I = np.diag([1.0, 1.0, 2.0])
+    dec = Decomposition(np.eye(3), np.zeros((3, 0)), I)
+    assert dec.U.shape == (3, 0)
+    np.testing.assert_allclose(dec.T, np.eye(3), atol=1e-15)     # T = I s (sᵀIs)⁻¹ = I I⁻¹ for s = 1
+    dec0 = Decomposition(np.zeros((3, 0)), np.eye(3), I)
+    assert dec0.T.shape == (3, 0)
+    np.testing.assert_allclose(dec0.U, np.eye(3), atol=1e-15)
+
+
+# --------------------------------------------------------------------------- thesis misprint 6.33
+def test_erratum_6_33_missing_inverse(rng):
+    """6.33 prints U = A⁻¹R (RᵀA⁻¹R); that fails RᵀU = 1 (6.35). The corrected form satisfies it."""
+    I = inertia_matrix(3.0, [1.0, 0.5], 0.8)
+    j = revolute((0.3, -0.2))
+    Ii = np.linalg.inv(I)
+    printed = Ii @ j.R @ (j.R.T @ Ii @ j.R)
+    assert not np.allclose(j.R.T @ printed, np.eye(2), atol=1e-3)
+    U = reactive_acceleration_space(j.R, I)
+    np.testing.assert_allclose(j.R.T @ U, np.eye(2), atol=1e-13)
+    np.testing.assert_allclose(U, Ii @ j.R @ np.linalg.inv(j.R.T @ Ii @ j.R), atol=1e-13)   # 6.37 / 6.45
+
+
+# --------------------------------------------------------------------------- bad input
+def test_singular_joint_space_inertia():
+    A = np.diag([1.0, 1.0, 0.0])                       # no rotational inertia: singular along s = rotation
+    with pytest.raises(errors.SingularConfigurationError, match="sᵀAs is singular") as info:
+        percussion_space(revolute().s, A)
+    assert info.value.cond == np.inf
+    with pytest.raises(errors.SingularConfigurationError, match="sᵀAs is singular") as info:
+        percussion_space([0.0, 0.0, 1.0], np.diag([1.0, 1.0, 1e-15]))
+    assert 1e14 < info.value.cond < 1e16
+    with pytest.raises(errors.SingularConfigurationError, match="sᵀIs is singular"):
+        effective_mobility([0.0, 0.0, 1.0], A)
+    with pytest.raises(errors.SingularConfigurationError, match="sᵀAs is singular"):
+        Decomposition(revolute().s, revolute().R, np.diag([1.0, 1.0, 0.0]))
+
+
+def test_singular_reaction_space_inverse_inertia():
+    A = np.diag([1.0, -1.0, 1.0])                      # indefinite: RᵀA⁻¹R can vanish
+    R = np.array([[1.0], [1.0], [0.0]]) / np.sqrt(2)
+    with pytest.raises(errors.SingularConfigurationError, match="RᵀA⁻¹R is singular"):
+        reactive_acceleration_space(R, A)
+    with pytest.raises(errors.SingularInertiaError, match="A must be invertible") as info:
+        reactive_acceleration_space(revolute().R, np.diag([1.0, 1.0, 0.0]))
+    assert info.value.cond == np.inf
+    with pytest.raises(errors.SingularInertiaError, match="I must be invertible"):
+        reaction_space_inverse_inertia(revolute().R, np.zeros((3, 3)))
+
+
+def test_bad_shapes_and_values():
+    with pytest.raises(errors.ShapeError, match=r"s must have shape \(\.\.\., 3, k\).*got shape \(2, 1\)"):
+        percussion_space(np.ones((2, 1)), np.eye(3))
+    with pytest.raises(errors.ShapeError, match=r"s must have shape \(\.\.\., 3, k\), got shape \(4,\)"):
+        percussion_space(np.ones(4), np.eye(3))
+    with pytest.raises(errors.ShapeError, match=r"A must have shape \(\.\.\., 3, 3\), got shape \(2, 2\)"):
+        percussion_space([0.0, 0.0, 1.0], np.eye(2))
+    with pytest.raises(errors.NonFiniteError, match="A must be finite"):
+        percussion_space([0.0, 0.0, 1.0], np.diag([1.0, np.nan, 1.0]))
+    with pytest.raises(errors.NonFiniteError, match="R must be finite"):
+        reactive_acceleration_space([[np.inf], [0.0], [0.0]], np.eye(3))
+    with pytest.raises(errors.InputError, match="A must be symmetric"):
+        percussion_space([0.0, 0.0, 1.0], [[1.0, 2.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
+    with pytest.raises(errors.ShapeError, match=r"f must have shape \(\.\.\., 3\)"):
+        active_force([0.0, 0.0, 1.0], [1.0, 2.0])
+    with pytest.raises(errors.ShapeError, match="s and R must have 3 columns together, got s with 1 and R with 1"):
+        Decomposition([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], np.eye(3))
+    with pytest.raises(errors.InputError, match=r"R must be reciprocal to s \(sᵀR = 0"):
+        Decomposition([0.0, 0.0, 1.0], np.eye(3)[:, 1:], np.eye(3))
+    dec = Decomposition.from_joint(revolute(), np.eye(3))
+    with pytest.raises(errors.ShapeError, match=r"mu must have shape \(\.\.\., 2\)"):
+        dec.join_wrench([1.0], [1.0, 2.0, 3.0])
