@@ -1,0 +1,149 @@
+"""Scene "slider-crank": the planar constrained example of thesis 9.6 (Fig 9.3).
+
+Three bodies in a chain of revolute joints: the crank (body 1) turns about
+the global origin by ``ψ``, the connecting rod (body 2) by ``θ`` relative to
+the crank at its tip, the piston (body 3) by ``φ`` relative to the rod at the
+rod's tip.  A slider contact keeps the piston on the vertical line through the
+crank pivot, not turning: ``ψ + θ + φ = π/2`` and
+``r cos ψ + l cos(ψ + θ) = 0``.  The state is given by the crank angle ``ψ``
+and speed ``ψ̇``; ``θ``, ``φ`` and their rates follow from the loop closure
+(assembly branch of Fig 9.3: the piston above the crank pivot,
+``sin(ψ + θ) ≥ 0``).
+
+Defaults are the thesis's: ``m = 0.40, 0.15, 0.30``, ``r = 2.29``,
+``l = 5.00``, ``t = 0.5``, centres of mass at ``r/4``, ``l/2`` and ``t`` from
+each body's joint, ``I_z = 0.1464 m₁ r², 0.0866 m₂ l², 0.666 m₃ t²``,
+``ψ = 0.4``, ``ψ̇ = 20``.  The thesis does not state the applied loads; ``g``
+(default 9.81, along -y) is a parameter (``g = 0`` gives the pure velocity
+effects).
+
+Note (erratum, ``docs/errata/trees-loops.md``): the printed state (9.78,
+9.79) has ``θ = 1.603`` (the loop closes at ``θ = 1.6063``) and the signs of
+``θ̇``, ``φ̇`` inverted: the closure gives ``q̇ = (20, -23.9343, 3.9343)``,
+which is the state behind the printed twists (9.80).
+
+Quantities (global origin, thesis ordering): ``q``, ``qd``, ``v`` (3 twists),
+``u`` (open-loop accelerations, 9.82), ``Lambda3_inv`` (9.81), ``h`` (9.86),
+``z3``, ``B3`` (9.87), ``xi`` (9.90), ``F3`` (9.92), ``a3`` (9.94), ``a``
+(all bodies), ``qdd``, ``tau_drive`` (crank torque needed by the drive).
+
+Examples
+--------
+>>> res = slider_crank()
+>>> [round(x, 4) for x in res.state["q"]]
+[0.4, 1.6063, -0.4355]
+>>> round(res.quantities["h"], 3)
+5.925
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..errors import SceneError, SingularConfigurationError
+from . import SceneResult, register
+
+__all__ = ["slider_crank", "slider_crank_model", "slider_crank_state"]
+
+
+def slider_crank_model(m1=0.40, m2=0.15, m3=0.30, r=2.29, l=5.00, t=0.5, g=9.81):
+    """The slider-crank :class:`~planargeo.model.Model` (tree + one slider contact) of thesis 9.6."""
+    from ..contacts import Contact
+    from ..model import Body, Joint, Model
+
+    for name, val in (("m1", m1), ("m2", m2), ("m3", m3), ("r", r), ("l", l), ("t", t)):
+        if not (np.isfinite(val) and val > 0):
+            raise SceneError(f"{name} must be positive, got {val!r}")
+    bodies = [
+        Body(m1, (r / 4, 0.0), 0.1464 * m1 * r * r, name="crank"),
+        Body(m2, (l / 2, 0.0), 0.0866 * m2 * l * l, name="rod"),
+        Body(m3, (t, 0.0), 0.666 * m3 * t * t, name="piston"),
+    ]
+    joints = [Joint("revolute", (0.0, 0.0, 0.0), name="psi"),
+              Joint("revolute", (r, 0.0, 0.0), name="theta"),
+              Joint("revolute", (l, 0.0, 0.0), name="phi")]
+    slider = Contact("slider", 2, -1, point_a=(t, 0.0), point_b=(0.0, 0.0), direction=(0.0, 1.0),
+                     angle=np.pi / 2, name="piston slider")
+    return Model(bodies, joints, [-1, 0, 1], gravity=(0.0, -float(g)), contacts=(slider,))
+
+
+def slider_crank_state(psi=0.4, psidot=20.0, r=2.29, l=5.00):
+    """Joint coordinates and rates closing the loop (assembly branch ``sin(ψ+θ) ≥ 0``).
+
+    Raises
+    ------
+    SceneError
+        If the rod cannot reach the piston line (``l < r |cos ψ|``).
+    SingularConfigurationError
+        If the rod lies along the horizontal (``l = r |cos ψ|``): the loop
+        closure does not determine ``θ̇``.
+
+    Examples
+    --------
+    >>> q, qd = slider_crank_state()
+    >>> np.round(qd, 4)
+    array([ 20.    , -23.9343,   3.9343])
+    """
+    c = -r * np.cos(psi) / l
+    if abs(c) > 1.0:
+        raise SceneError(
+            f"rod too short: l = {l:g} cannot reach the piston line x = 0 from the crank pin at "
+            f"x = r cos(psi) = {r * np.cos(psi):.6g} (need l >= r |cos psi|)")
+    beta = float(np.arccos(c))          # psi + theta, in [0, pi]: piston above the crank pin
+    theta = beta - psi
+    phi = np.pi / 2 - beta
+    sb = np.sin(beta)
+    Jdep = np.array([[-l * sb, 0.0], [1.0, 1.0]])     # d(closure)/d(theta, phi)
+    cond = np.linalg.cond(Jdep)
+    if not np.isfinite(cond) or cond > 1e12:
+        raise SingularConfigurationError(
+            "slider-crank loop closure is singular (rod along the horizontal): theta_dot undetermined", cond)
+    wrod = -r * np.sin(psi) * psidot / (l * sb)         # psidot + thetadot
+    q = np.array([psi, theta, phi])
+    qd = np.array([psidot, wrod - psidot, -wrod])
+    return q, qd
+
+
+def _tolist(x):
+    return np.asarray(x, dtype=float).tolist()
+
+
+@register("slider-crank")
+def slider_crank(psi: float = 0.4, psidot: float = 20.0, m1: float = 0.40, m2: float = 0.15,
+                 m3: float = 0.30, r: float = 2.29, l: float = 5.00, t: float = 0.5, g: float = 9.81,
+                 drive: str = "free") -> SceneResult:
+    """Slider-crank of thesis 9.6 solved with the constrained algorithm (9.5).
+
+    Parameters
+    ----------
+    psi, psidot : crank angle and speed
+    m1, m2, m3, r, l, t : masses and lengths (thesis 9.6)
+    g : gravity along -y
+    drive : {"free", "constant-speed"}
+        ``"free"``: no crank torque; ``"constant-speed"``: the crank is driven at
+        constant speed (``ψ̈ = 0``), the torque needed is ``tau_drive``.
+    """
+    from ..algorithms.loops import loop_solve
+
+    if drive not in ("free", "constant-speed"):
+        raise SceneError(f"drive must be 'free' or 'constant-speed', got {drive!r}")
+    model = slider_crank_model(m1, m2, m3, r, l, t, g)
+    q, qd = slider_crank_state(psi, psidot, r, l)
+    tau = np.zeros(3)
+    sol = loop_solve(model, q, qd, tau, prescribed={0: 0.0} if drive == "constant-speed" else None)
+    v = sol.data.v
+    h = r * np.sin(q[0]) + l * np.sin(q[0] + q[1]) + t * np.sin(q.sum())     # (9.85)
+    quantities = {
+        "q": _tolist(q), "qd": _tolist(qd), "v": _tolist(v),
+        "u": _tolist(sol.u.reshape(3, 3)),
+        "Lambda3_inv": _tolist(sol.Lambda_inv[6:9, 6:9]),
+        "h": float(h),
+        "z3": _tolist(sol.z[:, 0]), "B3": _tolist(sol.B),
+        "xi": _tolist(sol.xi), "F3": _tolist(sol.F),
+        "a3": _tolist(sol.a[6:9]), "a": _tolist(sol.a.reshape(3, 3)),
+        "qdd": _tolist(sol.qdd), "tau_drive": _tolist(sol.tau_drive),
+        "cond": float(sol.cond),
+    }
+    params = dict(psi=psi, psidot=psidot, m1=m1, m2=m2, m3=m3, r=r, l=l, t=t, g=g, drive=drive)
+    return SceneResult("slider-crank", params, model,
+                       state={"q": _tolist(q), "qd": _tolist(qd), "tau": _tolist(tau)},
+                       quantities=quantities, extra={"solution": sol})
