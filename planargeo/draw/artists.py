@@ -97,9 +97,11 @@ def clip_line(line, box) -> np.ndarray | None:
            [ 1. ,  0.5]])
     """
     fx, fy, tz = (float(v) for v in line)
-    F2 = fx * fx + fy * fy
-    if F2 == 0.0:
+    sc = max(abs(fx), abs(fy))
+    if sc == 0.0 or abs(tz) >= sc * 1e300:  # the line at infinity (or beyond any view)
         return None
+    fx, fy, tz = fx / sc, fy / sc, tz / sc  # homogeneous rescaling: same line
+    F2 = fx * fx + fy * fy
     x0, x1, y0, y1 = (float(v) for v in box)
     p = np.array([fy * tz, -fx * tz]) / F2  # foot of the perpendicular from the origin
     d = np.array([fx, fy]) / np.sqrt(F2)
@@ -109,7 +111,8 @@ def clip_line(line, box) -> np.ndarray | None:
             if p[k] < lo or p[k] > hi:
                 return None
             continue
-        a, b = (lo - p[k]) / d[k], (hi - p[k]) / d[k]
+        with np.errstate(over="ignore"):  # a subnormal component: the slab is unbounded
+            a, b = (lo - p[k]) / d[k], (hi - p[k]) / d[k]
         if a > b:
             a, b = b, a
         tlo, thi = max(tlo, a), min(thi, b)
@@ -180,12 +183,19 @@ class _Base(martist.Artist):
 
     def _prepare_children(self):
         ax = self.axes
+        if getattr(self, "_prepared_for", None) is ax:
+            return
         for c in self._children:
             if c.axes is None and not isinstance(c, Text):
                 c.axes = ax
             if c.get_clip_path() is None and ax is not None:
                 c.set_clip_path(ax.patch)
             c.set_alpha(self.get_alpha())
+        self._on_axes(ax)
+        self._prepared_for = ax
+
+    def _on_axes(self, ax):
+        """Set data-space transforms once, when the artist meets its axes."""
 
     def _draw_children(self, renderer, children):
         for c in children:
@@ -258,6 +268,9 @@ class PointArtist(_Base):
         self._inf.set_transform(IdentityTransform())
         self._text.set_color(self._color)
 
+    def _on_axes(self, ax):
+        self._marker.set_transform(ax.transData)
+
     # API
     def set_point(self, point):
         """Store a new homogeneous point; geometry is recomputed at draw time."""
@@ -283,7 +296,6 @@ class PointArtist(_Base):
         out = []
         if xy is not None:
             self._marker.set_data([xy[0]], [xy[1]])
-            self._marker.set_transform(ax.transData)
             out.append(self._marker)
             disp = ax.transData.transform(xy)
             if self._glyph:
@@ -360,6 +372,10 @@ class LineArtist(_Base):
         self._head.set_transform(IdentityTransform())
         self._text.set_color(self._color)
 
+    def _on_axes(self, ax):
+        self._line.set_transform(ax.transData)
+        self._arrow.set_transform(ax.transData)
+
     def set_line(self, line):
         """Store a new homogeneous line; clipping happens at draw time."""
         self._l = _vec(line, "line")
@@ -407,7 +423,6 @@ class LineArtist(_Base):
         if seg is None:
             return []
         self._line.set_data(seg[:, 0], seg[:, 1])
-        self._line.set_transform(ax.transData)
         out.append(self._line)
         F = np.hypot(fx, fy)
         e = np.array([fx, fy]) / F
@@ -423,7 +438,6 @@ class LineArtist(_Base):
             L = self._scale * F
             tail, tip = anchor - e * L / 2, anchor + e * L / 2
             self._arrow.set_positions(tuple(tail), tuple(tip))
-            self._arrow.set_transform(ax.transData)
             out.append(self._arrow)
         out += self._place_text(ax.transData.transform(tip), renderer)
         return out
@@ -615,6 +629,12 @@ class ConicArtist(_Base):
 
     set_inertia = set_conic
 
+    def _on_axes(self, ax):
+        self._curve.set_transform(self._affine + ax.transData)
+        self._center.set_transform(ax.transData)
+        for art in self._lines:
+            art.set_transform(ax.transData)
+
     def get_conic(self) -> np.ndarray:
         return self._C.copy()
 
@@ -639,14 +659,12 @@ class ConicArtist(_Base):
         g = self._geom
         out = []
         if "affine" in g:
-            self._curve.set_transform(self._affine + ax.transData)
             out.append(self._curve)
             anchor = g["affine"][:2, 2]
             mark = self._mark_center if self._mark_center is not None else (
                 g.get("imaginary") or self._role == "inertia")
             if mark and g["kind"] != "parabola":
                 self._center.set_data([anchor[0]], [anchor[1]])
-                self._center.set_transform(ax.transData)
                 out.append(self._center)
             top = g["affine"] @ [0.7071, 0.7071, 1.0]
             out += self._place_text(ax.transData.transform(top[:2]), renderer)
@@ -656,11 +674,9 @@ class ConicArtist(_Base):
                 seg = clip_line(ln, box)
                 if seg is not None:
                     art.set_data(seg[:, 0], seg[:, 1])
-                    art.set_transform(ax.transData)
                     out.append(art)
         elif g["kind"] == "point":
             self._center.set_data([g["point"][0]], [g["point"][1]])
-            self._center.set_transform(ax.transData)
             out.append(self._center)
         return out
 

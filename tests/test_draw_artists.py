@@ -1,0 +1,310 @@
+"""Tests of planargeo.draw.artists: clipping, poles, conic paths, cheap updates."""
+from __future__ import annotations
+
+import gc
+import tracemalloc
+import warnings
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+from hypothesis import given, strategies as st  # noqa: E402
+
+from planargeo.draw.artists import (ConicArtist, LineArtist, PointArtist, clip_line,  # noqa: E402
+                                    conic_geometry, plot_conic, plot_inertia, plot_line,
+                                    plot_point)
+from planargeo.errors import InputError, NonFiniteError, ShapeError  # noqa: E402
+from planargeo.screws import inertia_matrix  # noqa: E402
+
+BOX = (-3.0, 4.0, -2.0, 5.0)
+finite = st.floats(-10, 10, allow_nan=False, allow_infinity=False)
+
+
+@pytest.fixture
+def ax():
+    fig, ax = plt.subplots(figsize=(4, 4))
+    ax.set_xlim(BOX[0], BOX[1])
+    ax.set_ylim(BOX[2], BOX[3])
+    ax.set_aspect("equal")
+    yield ax
+    plt.close(fig)
+
+
+def _on_boundary(q, box, tol=1e-9):
+    x0, x1, y0, y1 = box
+    inside = x0 - tol <= q[0] <= x1 + tol and y0 - tol <= q[1] <= y1 + tol
+    on = min(abs(q[0] - x0), abs(q[0] - x1), abs(q[1] - y0), abs(q[1] - y1)) <= tol
+    return inside and on
+
+
+# ----------------------------------------------------------------- line clipping
+@given(finite, finite, finite)
+def test_clipped_endpoints_on_line_and_boundary(fx, fy, tz):
+    seg = clip_line([fx, fy, tz], BOX)
+    if fx == 0 and fy == 0:
+        assert seg is None
+        return
+    if seg is None:
+        # the line misses the box: the box corners all lie on one side (4.27)
+        xs = [(BOX[0], BOX[2]), (BOX[0], BOX[3]), (BOX[1], BOX[2]), (BOX[1], BOX[3])]
+        vals = [tz + y * fx - x * fy for x, y in xs]
+        assert all(v > 0 for v in vals) or all(v < 0 for v in vals)
+        return
+    F = np.hypot(fx, fy)
+    for x, y in seg:
+        assert abs(tz + y * fx - x * fy) / F <= 1e-9 * (1 + abs(tz) / F)  # on the line (4.27)
+        assert _on_boundary((x, y), BOX)
+    # the segment runs along the force direction
+    d = seg[1] - seg[0]
+    assert d @ [fx, fy] >= 0
+
+
+def test_clip_hand_cases():
+    # vertical line x = 2 (force along +y through (2, 0)): tz = x fy - y fx = 2
+    seg = clip_line([0.0, 1.0, 2.0], BOX)
+    np.testing.assert_allclose(seg, [[2.0, -2.0], [2.0, 5.0]])
+    assert clip_line([0.0, 1.0, 10.0], BOX) is None  # x = 10, outside
+    assert clip_line([0.0, 0.0, 1.0], BOX) is None   # line at infinity
+
+
+def test_drawn_line_matches_clip(ax):
+    art = plot_line([1.0, -2.0, 0.5], ax)
+    ax.figure.canvas.draw()
+    x, y = art._line.get_data()
+    for q in zip(x, y):
+        assert abs(0.5 + q[1] * 1.0 - q[0] * -2.0) < 1e-9
+        assert _on_boundary(q, BOX)
+    # the view changes: the endpoints follow at the next draw
+    ax.set_xlim(-10, 10)
+    ax.set_ylim(-10, 10)
+    ax.figure.canvas.draw()
+    x, y = art._line.get_data()
+    for q in zip(x, y):
+        assert _on_boundary(q, (-10, 10, -10, 10))
+
+
+# ----------------------------------------------------------------- points
+@given(finite, finite, st.floats(0.05, 5) | st.floats(-5, -0.05))
+def test_pole_sits_at_twist_pole(x, y, w):
+    fig, ax = plt.subplots()
+    try:
+        ax.set_xlim(-12, 12)
+        ax.set_ylim(-12, 12)
+        twist = np.array([w * y, -w * x, w])  # rotation w about (x, y) (4.10)
+        art = plot_point(twist, ax)
+        fig.canvas.draw()
+        mx, my = art._marker.get_data()
+        np.testing.assert_allclose([mx[0], my[0]], [x, y], atol=1e-9)
+        # glyph sense: the arc runs counter-clockwise for w > 0
+        ax_, ay_ = art._arc.get_data()
+        c = ax.transData.transform([x, y])
+        a0 = np.arctan2(ay_[0] - c[1], ax_[0] - c[0])
+        a1 = np.arctan2(ay_[1] - c[1], ax_[1] - c[0])
+        dtheta = (a1 - a0 + np.pi) % (2 * np.pi) - np.pi
+        assert np.sign(dtheta) == np.sign(w)
+    finally:
+        plt.close(fig)
+
+
+def test_glyph_grows_with_omega(ax):
+    a1 = plot_point([0.0, 0.0, 0.5], ax)
+    a2 = plot_point([0.0, 0.0, 2.0], ax)
+    ax.figure.canvas.draw()
+    r = [np.ptp(a._arc.get_data()[0]) for a in (a1, a2)]
+    assert r[1] > 1.5 * r[0]
+
+
+def test_ideal_point_arrow_at_edge(ax):
+    art = plot_point([1.0, 0.0, 0.0], ax)  # translation along +x; the point lies at +y infinity
+    ax.figure.canvas.draw()
+    (x0, y0), (x1, y1) = art._arrow._posA_posB
+    bb = ax.bbox
+    assert x1 > x0 and abs(y1 - y0) < 1e-9          # arrow along +x
+    assert y0 > bb.y0 + 0.75 * bb.height             # near the top edge
+    assert art.get_xy() is None
+
+
+# ----------------------------------------------------------------- conics
+def _check_on_conic(art, C):
+    xy = art.get_xy()
+    xy = xy[np.all(np.isfinite(xy), axis=1)]
+    assert len(xy) > 50
+    P = np.column_stack([xy[:, 1], -xy[:, 0], np.ones(len(xy))])  # package points
+    val = np.einsum("ni,ij,nj->n", P, C, P)
+    # normalise by the gradient scale so far points are judged fairly
+    grad = np.linalg.norm(P @ C, axis=1) * (1 + np.linalg.norm(xy, axis=1))
+    assert np.max(np.abs(val) / grad) < 1e-8
+
+
+def _rand_affine(rng):
+    th = rng.uniform(0, 2 * np.pi)
+    R = np.array([[np.cos(th), -np.sin(th)], [np.sin(th), np.cos(th)]])
+    H = np.eye(3)
+    H[:2, :2] = R @ np.diag(rng.uniform(0.3, 3, 2))
+    H[:2, 2] = rng.uniform(-2, 2, 2)
+    return H
+
+
+def _package_conic(E):
+    M = np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+    Mi = np.linalg.inv(M)
+    return Mi.T @ E @ Mi
+
+
+@pytest.mark.parametrize("kind,E0", [
+    ("ellipse", np.diag([1.0, 1.0, -1.0])),
+    ("hyperbola", np.diag([1.0, -1.0, -1.0])),
+    ("hyperbola", np.diag([-1.0, 1.0, -1.0])),
+    ("parabola", np.array([[1.0, 0, 0], [0, 0, -0.5], [0, -0.5, 0]])),  # x^2 - y = 0
+])
+def test_conic_path_satisfies_equation(ax, rng, kind, E0):
+    for _ in range(5):
+        H = _rand_affine(rng)
+        Hi = np.linalg.inv(H)
+        E = Hi.T @ E0 @ Hi  # Euclidean conic moved by H
+        C = _package_conic(E) * rng.uniform(-3, 3)
+        art = plot_conic(C, ax)
+        assert art.kind == kind and not art.imaginary
+        _check_on_conic(art, C)
+    ax.figure.canvas.draw()
+
+
+def test_hyperbola_has_both_branches(ax):
+    C = _package_conic(np.diag([1.0, -1.0, -1.0]))  # x^2 - y^2 = 1
+    xy = plot_conic(C, ax).get_xy()
+    xy = xy[np.isfinite(xy[:, 0])]
+    assert (xy[:, 0] > 0).any() and (xy[:, 0] < 0).any()
+
+
+def test_inertia_drawn_as_gyration_circle(ax):
+    m, c, J = 2.0, np.array([1.0, 0.5]), 0.5
+    rho = np.sqrt(J / m)
+    art = plot_inertia(inertia_matrix(m, c, J), ax)
+    assert art.imaginary and art.kind == "ellipse"
+    xy = art.get_xy()
+    np.testing.assert_allclose(np.linalg.norm(xy - c, axis=1), rho, rtol=1e-10)
+    assert art._curve.get_linestyle() in ("--", "-.", ":") or art._curve._dash_pattern[1] is not None
+    ax.figure.canvas.draw()
+    mx, my = art._center.get_data()
+    np.testing.assert_allclose([mx[0], my[0]], c)
+
+
+def test_degenerate_conics(ax):
+    l1, l2 = np.array([1.0, 2.0, 0.5]), np.array([0.0, 1.0, -1.0])
+    pair = np.outer(l1, l2) + np.outer(l2, l1)        # two crossing lines
+    par = np.outer(l1, l1 + [0, 0, 1.0]) + np.outer(l1 + [0, 0, 1.0], l1)  # parallel lines
+    dbl = np.outer(l1, l1)                              # a double line
+    inf = np.outer(l1, [0, 0, 1.0]) + np.outer([0, 0, 1.0], l1)  # line and line at infinity
+    for C in (pair, par, dbl, inf):
+        g = conic_geometry(C)
+        assert g["kind"] == "lines"
+        for ln in g["lines"]:
+            # each drawn line is one of the factors (parallel homogeneous vectors)
+            cands = [l1, l2, l1 + [0, 0, 1.0]]
+            assert any(np.linalg.norm(np.cross(ln, c)) < 1e-7 * np.linalg.norm(ln) * np.linalg.norm(c)
+                       for c in cands)
+        plot_conic(C, ax)
+    point = np.diag([1.0, 1.0, 0.0])  # x^2 + y^2 = 0: the origin
+    assert conic_geometry(point)["kind"] == "point"
+    plot_conic(point, ax)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        ax.figure.canvas.draw()
+
+
+# ----------------------------------------------------------------- special elements draw cleanly
+def test_special_elements_draw_without_warnings(ax):
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        plot_point([1.0, 2.0, 0.0], ax, text="ideal")
+        plot_point([0.0, 0.0, 0.0], ax)                # zero twist: nothing
+        plot_line([0.0, 0.0, 2.0], ax, text="τ")         # line at infinity: couple glyph
+        plot_line([0.0, 0.0, -1.0], ax, corner="lower left")
+        plot_line([0.0, 0.0, 0.0], ax)                 # zero wrench: nothing
+        plot_line([1.0, 0.0, 0.0], ax)
+        plot_line([2.0, 0.0, 1.0], ax)                 # parallel lines
+        plot_line([0.0, 1.0, 100.0], ax)               # outside the view
+        plot_conic(np.zeros((3, 3)), ax)
+        ax.figure.canvas.draw()
+        ax.figure.savefig(__import__("io").BytesIO(), format="svg")
+
+
+def test_couple_glyph_sense(ax):
+    ccw = plot_line([0.0, 0.0, 1.0], ax)
+    cw = plot_line([0.0, 0.0, -1.0], ax, corner="lower left")
+    ax.figure.canvas.draw()
+    for art, sign in ((ccw, 1), (cw, -1)):
+        x, y = art._arc.get_data()
+        c = np.array([x.mean(), y.mean()])
+        a = np.unwrap(np.arctan2(y - c[1], x - c[0]))
+        assert np.sign(a[-1] - a[0]) == sign
+
+
+# ----------------------------------------------------------------- validation
+def test_bad_input():
+    with pytest.raises(ShapeError, match="point"):
+        PointArtist([1.0, 2.0])
+    with pytest.raises(NonFiniteError, match="line"):
+        LineArtist([np.nan, 0.0, 1.0])
+    with pytest.raises(InputError, match="conic must be symmetric"):
+        ConicArtist([[1, 2, 0], [0, 1, 0], [0, 0, 1]])
+    with pytest.raises(InputError, match="role"):
+        PointArtist([0, 0, 1.0], role="nonsense")
+
+
+# ----------------------------------------------------------------- cheap updates
+def _count(fig):
+    return len(fig.findobj())
+
+
+def test_updates_create_no_artists_and_leak_no_memory(ax):
+    fig = ax.figure
+    ax.set_axis_off()
+    pa = plot_point([0.0, 0.0, 1.0], ax, text="v")
+    la = plot_line([1.0, 0.0, 0.0], ax, text="f")
+    ca = plot_conic(inertia_matrix(1.0, [0.0, 0.0], 1.0), ax, role="inertia")
+    fig.canvas.draw()
+    n_children = len(ax.get_children())
+    n_all = _count(fig)
+    rng = np.random.default_rng(0)
+
+    def step(i):
+        t = i * 0.01
+        pa.set_point([np.sin(t), np.cos(t), 1.0 + 0.5 * np.sin(3 * t)] if i % 10 else [1.0, 1.0, 0.0])
+        la.set_line([np.cos(t), np.sin(t), 0.3] if i % 7 else [0.0, 0.0, 1.0])
+        ca.set_conic(inertia_matrix(1.0 + 0.5 * np.sin(t), [np.cos(t), 0.0], 0.3))
+        assert pa.stale and la.stale and ca.stale
+        if i % 50 == 0:
+            fig.canvas.draw()
+
+    def grow(n0):
+        gc.collect()
+        tracemalloc.start()
+        before = tracemalloc.take_snapshot()
+        for i in range(n0, n0 + 1000):
+            step(i)
+        gc.collect()
+        after = tracemalloc.take_snapshot()
+        tracemalloc.stop()
+        return sum(s.size_diff for s in after.compare_to(before, "filename"))
+
+    for i in range(300):  # warm-up (font and transform caches fill once)
+        step(i)
+    grow(300)
+    growth = grow(1300)  # a second window of 1000 updates must not keep growing
+    assert growth < 100_000, growth
+    assert len(ax.get_children()) == n_children
+    assert _count(fig) == n_all
+    _ = rng
+
+
+def test_update_does_not_rebuild_conic_path(ax):
+    ca = plot_conic(inertia_matrix(1.0, [0.0, 0.0], 1.0), ax, role="inertia")
+    x0 = ca._curve.get_xdata()
+    ca.set_conic(inertia_matrix(3.0, [1.0, 2.0], 0.7))
+    assert ca._curve.get_xdata() is x0 or np.shares_memory(ca._curve.get_xdata(), x0) or \
+        np.array_equal(ca._curve.get_xdata(), x0)
+    np.testing.assert_allclose(np.linalg.norm(ca.get_xy() - [1.0, 2.0], axis=1), np.sqrt(0.7 / 3.0))
