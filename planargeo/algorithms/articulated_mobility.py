@@ -1,0 +1,153 @@
+"""Articulated mobility algorithm for a constrained chain (thesis 7.4, 7.4.1).
+
+The articulated mobility ``Lambda_i^-1`` and bias acceleration ``b_i`` relate
+the force of joint ``i+1`` to the acceleration of body ``i`` with the chain
+from the ground up to ``i`` attached (7.28)::
+
+    a_i = -Lambda_i^-1 f_{i+1} + b_i
+
+From the base to the tip, with the body-inertia subspaces ``T_i = I_i s_i
+(s_i^T I_i s_i)^-1``, ``U_i = I_i^-1 R_i (R_i^T I_i^-1 R_i)^-1`` (6.36, 6.37)::
+
+    eta_i      = s_i T_i^T I_i^-1 (T_i Q_i - p_i)                                (7.35)
+    Lambda_1^-1 = s_1 T_1^T I_1^-1,  b_1 = eta_1 + U_1 R_1^T kappa_1              (7.31)
+    M_i        = 1 + U_i R_i^T Lambda_{i-1}^-1 I_i
+    Lambda_i^-1 = M_i^-1 (s_i T_i^T I_i^-1 + U_i R_i^T Lambda_{i-1}^-1)          (7.38a, corrected)
+    b_i        = M_i^-1 (eta_i - U_i R_i^T (Lambda_{i-1}^-1 p_i - b_{i-1} - kappa_i))  (7.38b)
+
+The thesis prints a minus sign before ``U_i R_i^T Lambda_{i-1}^-1`` in 7.36
+and 7.38a, and its listing 7.4.1 drops the applied loads ``g_i`` from
+``p_i``; both are corrected here (``docs/errata/dynamics-b.md``).  The
+algorithm needs an unbranched chain whose first body hangs from the ground.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import SingularConfigurationError, TopologyError
+from .projective import _active_mobility, _state_arrays, percussion_subspace, reaction_space, reactive_subspace
+
+__all__ = ["ArticulatedMobilities", "mobility_recursion", "articulated_mobility"]
+
+
+@dataclass
+class ArticulatedMobilities:
+    """Result of the articulated mobility algorithm (per body ``i``).
+
+    Attributes
+    ----------
+    Lambda_inv : (N, 3, 3) articulated mobilities (7.31a, 7.38a); symmetric, positive semi-definite.
+    b : (N, 3) articulated bias accelerations (7.31b, 7.38b).
+    T, U, R : lists of body-inertia subspaces (6.36, 6.37) and reaction spaces.
+    """
+
+    Lambda_inv: np.ndarray
+    b: np.ndarray
+    T: list
+    U: list
+    R: list
+
+
+def _check_chain(parents, N):
+    if list(parents) != list(range(-1, N - 1)):
+        raise TopologyError(
+            f"parents must describe an unbranched chain [-1, 0, 1, ...] for the articulated "
+            f"mobility (thesis 7.4), got {list(parents)}")
+
+
+def mobility_recursion(I, S, kappa, p, tau, parents=None) -> ArticulatedMobilities:
+    """Articulated mobilities and bias accelerations on arrays (thesis 7.4.1).
+
+    Parameters
+    ----------
+    I : (N, 3, 3) body inertias at the origin (point masses allowed while every ``s_i^T I_i s_i`` is invertible).
+    S : list of N (3, k_i) joint spaces.
+    kappa, p : (N, 3) bias accelerations (2.19) and bias forces (3.11, gravity and loads included).
+    tau : list of N (k_i,) joint torques ``Q_i``.
+    parents : sequence of N ints; must be the chain ``[-1, 0, ..., N-2]`` (the default).
+
+    Returns
+    -------
+    ArticulatedMobilities
+
+    Raises
+    ------
+    TopologyError
+        When ``parents`` is not an unbranched chain.
+    SingularConfigurationError
+        When ``s_i^T I_i s_i`` or ``1 + U_i R_i^T Lambda_{i-1}^-1 I_i`` is singular.
+
+    Examples
+    --------
+    Thesis 7.42 with ``m = L = 1``, ``rho = 1/2``: ``4 / (m (L^2 + 4 rho^2)) = 2``.
+
+    >>> from planargeo.screws import inertia_matrix
+    >>> r = mobility_recursion([inertia_matrix(1.0, [0.5, 0.0], 0.25)], [np.array([[0.0], [0.0], [1.0]])],
+    ...                        np.zeros((1, 3)), np.zeros((1, 3)), [np.zeros(1)])
+    >>> r.Lambda_inv[0].round(12) + 0.0
+    array([[0., 0., 0.],
+           [0., 0., 0.],
+           [0., 0., 2.]])
+    """
+    I = np.asarray(I, dtype=float)
+    N = I.shape[0]
+    if parents is not None:
+        _check_chain(parents, N)
+    S = [np.asarray(x, dtype=float).reshape(3, -1) for x in S]
+    tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
+    kappa = np.asarray(kappa, dtype=float)
+    p = np.asarray(p, dtype=float)
+    Lam = np.zeros((N, 3, 3))
+    b = np.zeros((N, 3))
+    T, U, R = [None] * N, [None] * N, [None] * N
+    eye = np.eye(3)
+    for i in range(N):
+        R[i] = reaction_space(S[i])
+        T[i] = percussion_subspace(I[i], S[i], what=f"s^T I s of joint {i}")      # (6.36)
+        U[i] = reactive_subspace(I[i], R[i], s=S[i], T=T[i])                       # (6.37)
+        G = _active_mobility(I[i], S[i], f"s^T I s of joint {i}")   # s T^T I^-1 = s (s^T I s)^-1 s^T
+        eta = G @ (T[i] @ tau[i] - p[i])               # (7.35)
+        P = U[i] @ R[i].T                              # U R^T
+        if i == 0:                                     # (7.31a, 7.31b): a_0 = 0
+            Lam[i] = G
+            b[i] = eta + P @ kappa[i]
+        else:
+            M = eye + P @ Lam[i - 1] @ I[i]
+            c = np.linalg.cond(M)
+            if not c < 1e13:
+                raise SingularConfigurationError(f"1 + U R^T Lambda^-1 I of body {i} is singular", c)
+            Lam[i] = np.linalg.solve(M, G + P @ Lam[i - 1])                           # (7.38a)
+            b[i] = np.linalg.solve(M, eta - P @ (Lam[i - 1] @ p[i] - b[i - 1] - kappa[i]))  # (7.38b)
+        Lam[i] = 0.5 * (Lam[i] + Lam[i].T)             # symmetric by construction; remove round-off
+    return ArticulatedMobilities(Lam, b, T, U, R)
+
+
+def articulated_mobility(model, q, qd=None, tau=None, f_ext=None) -> ArticulatedMobilities:
+    """Articulated mobilities ``Lambda_i^-1`` and bias accelerations ``b_i`` (thesis 7.4.1).
+
+    Parameters
+    ----------
+    model : planargeo.model.Model
+        An unbranched chain (``model.is_chain``).
+    q, qd, tau : array_like (nq,)
+        State and joint torques (zero if omitted).
+    f_ext : array_like (N, 3), optional
+        World wrenches at the origin applied to each body (besides gravity).
+
+    Examples
+    --------
+    The tip of a double pendulum of unit links, at rest without gravity:
+    ``a_2 = -Lambda_2^-1 f_3 + b_2`` with ``b_2 = 0``.
+
+    >>> from planargeo.model import chain_model
+    >>> r = articulated_mobility(chain_model(2, gravity=(0, 0)), [0.0, 0.0])
+    >>> float(np.abs(r.b).max())
+    0.0
+    >>> bool(np.allclose(r.Lambda_inv[1], r.Lambda_inv[1].T))
+    True
+    """
+    _, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
+    _check_chain(parents, len(S))
+    return mobility_recursion(I, S, kappa, p, taus)

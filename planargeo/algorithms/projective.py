@@ -1,0 +1,428 @@
+"""Projective articulated dynamics: subspaces, propagators, forward dynamics (thesis 6.5-6.8).
+
+Every joint ``i`` splits the wrenches and accelerations of its body into an
+*active* part along the joint and a *reactive* part (thesis 6.38, 6.44)::
+
+    f_i = T_i Q_i + R_i mu_i          a_i = s_i psi_i + U_i gamma_i
+
+with the joint space ``s_i`` (3×k), the reaction space ``R_i`` (3×(3-k),
+``s_i^T R_i = 0``, 6.1) and the weighted pseudo-inverses (6.105, 6.99)::
+
+    T_i = A_i s_i (s_i^T A_i s_i)^-1      U_i = A_i^-1 R_i (R_i^T A_i^-1 R_i)^-1
+
+built on the articulated inertia ``A_i`` (6.8 uses the body inertia ``I_i``).
+The components are projections (6.61, 6.62): ``Q = s^T f``, ``mu = U^T f``,
+``psi = T^T a``, ``gamma = R^T a``.
+
+Solving the chain from the base outwards with the articulated inertias of
+:mod:`planargeo.algorithms.articulated_inertia` (thesis 6.108-6.110)::
+
+    gamma_i = R_i^T (a_{i-1} + kappa_i)                          (6.101)
+    psi_i   = T_i^T A_i^-1 (T_i Q_i - d_i)                        (6.107)
+    a_i     = s_i psi_i + U_i gamma_i                             (6.108)
+    mu_i    = U_i^T A_i U_i gamma_i + U_i^T d_i                   (6.106a)
+    f_i     = T_i Q_i + R_i mu_i                                  (6.109)
+    qdd_i   = T_i^T (a_i - a_{i-1} - kappa_i)                     (6.110)
+
+All quantities are world-frame screws at the global origin (twist
+``[vx, vy, w]``, wrench ``[fx, fy, tz]``); ``a_{i-1}`` is the acceleration of
+body ``i``'s parent (zero for the ground), so trees are handled as well as
+chains.  The reaction space of a revolute joint at ``(x, y)`` is the pair of
+unit forces along x and y through the joint; of a prismatic joint along ``e``,
+the unit force normal to ``e`` through the origin and the unit couple.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import SingularConfigurationError
+
+__all__ = [
+    "reaction_space", "percussion_subspace", "reactive_subspace",
+    "acceleration_propagator", "force_propagator",
+    "ProjectiveWorkspace", "projective_solve", "projective_workspace",
+    "forward_dynamics_projective",
+]
+
+#: ``s^T A s`` (or another joint-space matrix) whose condition number exceeds this is singular.
+COND_LIMIT = 1e13
+
+
+# ---------------------------------------------------------------------------
+# Subspaces (thesis 6.1, 6.30/6.105, 6.33/6.99)
+# ---------------------------------------------------------------------------
+def reaction_space(s) -> np.ndarray:
+    """Reaction space ``R`` of a joint space ``s``: ``s^T R = 0`` (thesis 6.1, 6.10-6.11).
+
+    Parameters
+    ----------
+    s : array_like, shape (3, k), k in 0..3
+        Joint unit twists at the origin (columns).
+
+    Returns
+    -------
+    ndarray, shape (3, 3 - k)
+        For a revolute joint ``s = [y, -x, 1]`` the unit forces along x and y
+        through ``(x, y)`` (thesis 7.16); for a prismatic joint along ``(ex, ey)``
+        the unit normal force through the origin and the unit couple; for a
+        two-dof joint the single wrench ``s_1 × s_2`` (unit length); for a free
+        joint an empty (3, 0) array; for a weld the identity.
+
+    Examples
+    --------
+    >>> reaction_space([[0.0], [-2.0], [1.0]]) + 0.0   # revolute at (2, 0), thesis 7.16
+    array([[1., 0.],
+           [0., 1.],
+           [0., 2.]])
+    >>> reaction_space([[1.0], [0.0], [0.0]]) + 0.0   # prismatic along x
+    array([[0., 0.],
+           [1., 0.],
+           [0., 1.]])
+    """
+    s = np.asarray(s, dtype=float).reshape(3, -1)
+    k = s.shape[1]
+    if k == 0:
+        return np.eye(3)
+    if k == 3:
+        return np.zeros((3, 0))
+    if k == 2:
+        r = np.cross(s[:, 0], s[:, 1])
+        return (r / np.linalg.norm(r))[:, None]
+    a, b, w = s[:, 0]
+    if w != 0.0:  # a rotation about the finite point (-b/w, a/w): forces through it
+        return np.array([[1.0, 0.0], [0.0, 1.0], [-a / w, -b / w]])
+    n = np.hypot(a, b)
+    return np.array([[-b / n, 0.0], [a / n, 0.0], [0.0, 1.0]])
+
+
+def _joint_inverse(M: np.ndarray, what: str, scale: np.ndarray | None = None) -> np.ndarray:
+    """Inverse of a symmetric joint-space matrix; SingularConfigurationError when singular.
+
+    The condition number is ``λmax(scale) / λmin(M)`` where ``scale`` (default
+    ``M``) is the same product taken with absolute values (``|s|^T |A| |s|``):
+    it measures how much of ``M`` was lost to cancellation, so a joint-space
+    inertia that vanishes (e.g. a point mass on its own revolute joint) is
+    caught even for a 1×1 ``M``.
+    """
+    k = M.shape[0]
+    if k == 0:
+        return np.zeros((0, 0))
+    M = 0.5 * (M + M.T)
+    lo = np.linalg.eigvalsh(M)[0]
+    hi = np.linalg.eigvalsh(M if scale is None else 0.5 * (scale + scale.T))[-1]
+    cond = hi / lo if lo > 0 else np.inf
+    if not cond < COND_LIMIT:
+        raise SingularConfigurationError(f"{what} is singular", cond)
+    return np.linalg.inv(M)
+
+
+def _sAs_inverse(A, s, what):
+    """``(s^T A s)^-1`` with the cancellation-aware singularity check."""
+    abs_s = np.abs(s)
+    return _joint_inverse(s.T @ A @ s, what, abs_s.T @ np.abs(A) @ abs_s)
+
+
+def percussion_subspace(A, s, *, what: str = "s^T A s") -> np.ndarray:
+    """Active force subspace ``T = A s (s^T A s)^-1`` (thesis 6.30, 6.105; 6.36 with ``I``).
+
+    The axis of percussion of the joint: ``s^T T = 1`` (6.32).
+
+    Raises
+    ------
+    SingularConfigurationError
+        When ``s^T A s`` is (numerically) singular; ``.cond`` holds its condition number.
+
+    Examples
+    --------
+    Thesis 7.40 (m = 1, L = 1, rho = 1/2: ``2L/(L^2 + 4 rho^2) = 1``):
+
+    >>> from planargeo.screws import inertia_matrix
+    >>> percussion_subspace(inertia_matrix(1.0, [0.5, 0.0], 0.25), [[0.0], [0.0], [1.0]]).ravel()
+    array([0., 1., 1.])
+    """
+    A = np.asarray(A, dtype=float)
+    s = np.asarray(s, dtype=float).reshape(3, -1)
+    return A @ s @ _sAs_inverse(A, s, what)
+
+
+def reactive_subspace(A, R, *, s=None, T=None, what: str = "R^T A^-1 R") -> np.ndarray:
+    """Reactive acceleration subspace ``U = A^-1 R (R^T A^-1 R)^-1`` (thesis 6.45, 6.99, 6.37).
+
+    ``R^T U = 1`` (6.35) and ``T^T U = 0`` (6.46).  Thesis 6.33 prints the
+    same expression without the inverse on ``R^T A^-1 R``; see
+    ``docs/errata/dynamics-b.md``.
+
+    When the joint space ``s`` (and optionally ``T``) is given, the
+    inverse-free equivalent ``U = (1 - s T^T) R (R^T R)^-1`` (from the identity
+    ``T s^T + R U^T = 1``, 6.75 / 7.8) is used: it needs only ``s^T A s``
+    invertible, so point-mass bodies (singular ``I``) are fine.
+
+    Examples
+    --------
+    Thesis 7.40 (m = 1, L = 1, rho = 1/2):
+
+    >>> from planargeo.screws import inertia_matrix
+    >>> U = reactive_subspace(inertia_matrix(1.0, [0.5, 0.0], 0.25), reaction_space([[0.0], [0.0], [1.0]]))
+    >>> np.round(U, 12) + 0.0
+    array([[ 1.,  0.],
+           [ 0.,  1.],
+           [ 0., -1.]])
+    """
+    A = np.asarray(A, dtype=float)
+    R = np.asarray(R, dtype=float).reshape(3, -1)
+    if R.shape[1] == 0:
+        return np.zeros((3, 0))
+    if s is not None:
+        s = np.asarray(s, dtype=float).reshape(3, -1)
+        T = percussion_subspace(A, s) if T is None else np.asarray(T, dtype=float).reshape(3, -1)
+        return (np.eye(3) - s @ T.T) @ R @ np.linalg.inv(R.T @ R)
+    try:
+        AiR = np.linalg.solve(A, R)
+    except np.linalg.LinAlgError:
+        from ..errors import SingularInertiaError
+
+        raise SingularInertiaError("A must be invertible for U = A^-1 R (R^T A^-1 R)^-1; "
+                                   "pass s= for the inverse-free form", np.inf) from None
+    return AiR @ _joint_inverse(R.T @ AiR, what)
+
+
+def _active_mobility(A, s, what):
+    """``s (s^T A s)^-1 s^T`` = ``s T^T A^-1`` (thesis 6.93, 7.31a), without inverting ``A``."""
+    return s @ _sAs_inverse(A, s, what) @ s.T
+
+
+# ---------------------------------------------------------------------------
+# Propagators (thesis 6.113)
+# ---------------------------------------------------------------------------
+def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, R=None) -> np.ndarray:
+    """Acceleration of a body from its neighbours' loads (thesis 6.113a).
+
+    ``a_i = s_i T_i^T I_i^-1 (T_i Q_i - p_i - f_{i+1}) + U_i R_i^T (a_{i-1} + kappa_i)``
+    with ``T_i``, ``U_i`` built on the body inertia (6.36, 6.37).
+
+    Parameters
+    ----------
+    I : (3, 3) body inertia; s : (3, k) joint space; Q : (k,) joint torque;
+    p : (3,) bias force (3.11); f_next : (3,) internal force of the child
+    joints (sum); a_prev : (3,) parent acceleration; kappa : (3,) bias
+    acceleration (2.19); R : (3, 3-k) reaction space (default :func:`reaction_space`).
+
+    Examples
+    --------
+    A unit point mass at (1, 0) pinned at the origin, pushed up by a unit force
+    through itself (``p = -g``): it turns at 1 rad/s².
+
+    >>> from planargeo.screws import inertia_matrix
+    >>> acceleration_propagator(inertia_matrix(1.0, [1.0, 0.0], 0.0), [[0.0], [0.0], [1.0]], [0.0],
+    ...                         [0.0, -1.0, -1.0], np.zeros(3), np.zeros(3), np.zeros(3))
+    array([0., 0., 1.])
+    """
+    I = np.asarray(I, dtype=float)
+    s = np.asarray(s, dtype=float).reshape(3, -1)
+    R = reaction_space(s) if R is None else np.asarray(R, dtype=float).reshape(3, -1)
+    T = percussion_subspace(I, s)
+    U = reactive_subspace(I, R, s=s, T=T)
+    Q = np.asarray(Q, dtype=float).reshape(-1)
+    rhs = T @ Q - np.asarray(p, dtype=float) - np.asarray(f_next, dtype=float)
+    return _active_mobility(I, s, "s^T I s") @ rhs + U @ (R.T @ (np.asarray(a_prev, dtype=float) + np.asarray(kappa, dtype=float)))
+
+
+def force_propagator(I, s, Q, p, f_next, a_prev, kappa, R=None) -> np.ndarray:
+    """Internal force of a body's joint from its neighbours (thesis 6.113b).
+
+    ``f_i = T_i Q_i + R_i U_i^T (I_i (a_{i-1} + kappa_i) + p_i + f_{i+1})``
+    with ``T_i``, ``U_i`` built on the body inertia (6.36, 6.37).
+
+    Examples
+    --------
+    The pinned point mass of :func:`acceleration_propagator`, at rest with the
+    base still: the pin carries the whole push (``f = I a + p`` with ``a = [0, 0, 1]``).
+
+    >>> from planargeo.screws import inertia_matrix
+    >>> f = force_propagator(inertia_matrix(1.0, [1.0, 0.0], 0.0), [[0.0], [0.0], [1.0]], [0.0],
+    ...                      [0.0, -1.0, -1.0], np.zeros(3), np.zeros(3), np.zeros(3))
+    >>> np.round(f, 12) + 0.0
+    array([0., 0., 0.])
+    """
+    I = np.asarray(I, dtype=float)
+    s = np.asarray(s, dtype=float).reshape(3, -1)
+    R = reaction_space(s) if R is None else np.asarray(R, dtype=float).reshape(3, -1)
+    T = percussion_subspace(I, s)
+    U = reactive_subspace(I, R, s=s, T=T)
+    Q = np.asarray(Q, dtype=float).reshape(-1)
+    base = I @ (np.asarray(a_prev, dtype=float) + np.asarray(kappa, dtype=float))
+    return T @ Q + R @ (U.T @ (base + np.asarray(p, dtype=float) + np.asarray(f_next, dtype=float)))
+
+
+# ---------------------------------------------------------------------------
+# Model glue
+# ---------------------------------------------------------------------------
+def _state_arrays(model, q, qd, tau, f_ext):
+    """Kinematics of one state: (data, I, S list, kappa, p, parents, tau list)."""
+    from ..kinematics import check_state, kinematics
+
+    q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
+    if shape != ():
+        raise _batch_error(shape)
+    if tau is None:
+        tau = np.zeros(model.nq)
+    d = kinematics(model, q, qd, f_ext)
+    S = [d.s(i) for i in range(model.N)]
+    taus = [np.asarray(tau[model.q_slice(i)], dtype=float) for i in range(model.N)]
+    return d, d.I, S, d.kappa, d.p, list(model.parents), taus
+
+
+def _batch_error(shape):
+    from ..errors import ShapeError
+
+    return ShapeError(f"q must describe one state (shape (nq,)), got batch shape {shape}; "
+                      "loop over states or use planargeo.algorithms.aba for batches")
+
+
+def _stack_tau(taus, N, model):
+    out = np.empty(model.nq)
+    for i in range(N):
+        out[model.q_slice(i)] = taus[i]
+    return out
+
+
+# ---------------------------------------------------------------------------
+# Projective forward dynamics (thesis 6.101-6.110)
+# ---------------------------------------------------------------------------
+@dataclass
+class ProjectiveWorkspace:
+    """Everything the projective solution computes, per body ``i`` (lists of arrays).
+
+    Attributes
+    ----------
+    s, R, T, U : list of (3, k), (3, 3-k), (3, k), (3, 3-k)
+        Joint space, reaction space, active force and reactive acceleration subspaces (6.99, 6.105).
+    A, d : (N, 3, 3), (N, 3)
+        Articulated inertias and bias forces (7.7a, 7.7b).
+    Q, mu : list of (k,), (3-k,)
+        Active (joint torque) and reaction components of ``f_i`` (6.104, 6.106a).
+    psi, gamma : list of (k,), (3-k,)
+        Active and reactive components of ``a_i`` (6.107, 6.101).
+    a, f : (N, 3)
+        Body accelerations (6.108) and internal joint forces (6.109).
+    qdd : (nq,) joint accelerations (6.110).
+    """
+
+    s: list
+    R: list
+    T: list
+    U: list
+    A: np.ndarray
+    d: np.ndarray
+    Q: list
+    mu: list
+    psi: list
+    gamma: list
+    a: np.ndarray
+    f: np.ndarray
+    qdd: np.ndarray
+
+
+def projective_solve(I, S, kappa, p, tau, parents=None) -> ProjectiveWorkspace:
+    """Projective articulated equations of motion on arrays (thesis 6.101-6.110).
+
+    Parameters
+    ----------
+    I : (N, 3, 3) body inertias at the origin.
+    S : list of N arrays (3, k_i): joint spaces.
+    kappa, p : (N, 3) bias accelerations (2.19) and bias forces (3.11).
+    tau : list of N arrays (k_i,): joint torques ``Q_i``.
+    parents : sequence of N ints (``-1`` ground), default a chain.
+
+    Returns
+    -------
+    ProjectiveWorkspace
+
+    Examples
+    --------
+    One unit point mass at (1, 0) on a pin at the origin, a unit torque: ``qdd = 1``.
+
+    >>> from planargeo.screws import inertia_matrix
+    >>> ws = projective_solve([inertia_matrix(1.0, [1.0, 0.0], 0.0)], [np.array([[0.0], [0.0], [1.0]])],
+    ...                       np.zeros((1, 3)), np.zeros((1, 3)), [np.array([1.0])])
+    >>> ws.qdd, ws.a[0]
+    (array([1.]), array([0., 0., 1.]))
+    """
+    from .articulated_inertia import articulated_recursion
+
+    I = np.asarray(I, dtype=float)
+    N = I.shape[0]
+    parents = list(range(-1, N - 1)) if parents is None else [int(x) for x in parents]
+    S = [np.asarray(x, dtype=float).reshape(3, -1) for x in S]
+    tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
+    kappa = np.asarray(kappa, dtype=float)
+    p = np.asarray(p, dtype=float)
+    rec = articulated_recursion(I, S, kappa, p, tau, parents)
+    A, d, T, R = rec.A, rec.d, rec.T, rec.R
+    U = [reactive_subspace(A[i], R[i], s=S[i], T=T[i]) for i in range(N)]
+    a = np.zeros((N, 3))
+    f = np.zeros((N, 3))
+    mu, psi, gamma, qdd = [None] * N, [None] * N, [None] * N, []
+    for i in range(N):
+        j = parents[i]
+        a_prev = a[j] if j >= 0 else np.zeros(3)
+        base = a_prev + kappa[i]
+        gamma[i] = R[i].T @ base                                     # (6.101)
+        # (6.107) with T^T A^-1 = (s^T A s)^-1 s^T: psi = (s^T A s)^-1 (Q - s^T d)
+        psi[i] = _sAs_inverse(A[i], S[i], f"s^T A s of joint {i}") @ (tau[i] - S[i].T @ d[i])
+        a[i] = S[i] @ psi[i] + U[i] @ gamma[i]                       # (6.108)
+        mu[i] = U[i].T @ A[i] @ U[i] @ gamma[i] + U[i].T @ d[i]       # (6.106a)
+        f[i] = T[i] @ tau[i] + R[i] @ mu[i]                          # (6.109)
+        qdd.append(T[i].T @ (a[i] - base))                           # (6.110)
+    qdd = np.concatenate(qdd) if qdd else np.zeros(0)
+    return ProjectiveWorkspace(S, R, T, U, A, d, list(tau), mu, psi, gamma, a, f, qdd)
+
+
+def projective_workspace(model, q, qd=None, tau=None, f_ext=None) -> ProjectiveWorkspace:
+    """Full projective solution of one state of ``model`` (thesis 6.101-6.110).
+
+    Returns the per-joint subspaces ``T, U``, components ``Q, mu, psi,
+    gamma``, body accelerations ``a_i`` and internal forces ``f_i`` (for drawings).
+
+    Examples
+    --------
+    >>> from planargeo.model import chain_model
+    >>> ws = projective_workspace(chain_model(2, gravity=(0, 0)), [0.0, 0.0], [0.0, 0.0], [1.0, 0.0])
+    >>> [round(float(x), 12) for x in ws.qdd]
+    [1.714285714286, -4.285714285714]
+    """
+    _, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
+    return projective_solve(I, S, kappa, p, taus, parents)
+
+
+def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
+    """Joint accelerations by the projective articulated equations (thesis 6.108-6.110).
+
+    Parameters
+    ----------
+    model : planargeo.model.Model
+    q, qd, tau : array_like (nq,)
+    f_ext : array_like (N, 3), optional
+        World wrenches at the origin applied to each body (besides gravity).
+
+    Returns
+    -------
+    ndarray (nq,)
+
+    Raises
+    ------
+    SingularConfigurationError
+        When some ``s_i^T A_i s_i`` is singular.
+
+    Examples
+    --------
+    A unit slender link lying along +x on a pin at the origin, under gravity:
+    ``qdd = -g (L/2) / (L^2/3) = -14.715``.
+
+    >>> from planargeo.model import chain_model
+    >>> forward_dynamics_projective(chain_model(1), [0.0], [0.0], [0.0]).round(6)
+    array([-14.715])
+    """
+    return projective_workspace(model, q, qd, tau, f_ext).qdd
