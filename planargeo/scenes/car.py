@@ -1,0 +1,165 @@
+"""Scene ``car``: a car cornering and accelerating, solved by projective dynamics (thesis 6.9).
+
+The car (wheelbase ``L``) turns with its steering fixed, so it rotates about
+the instant centre of rotation (ICR), where the rear-axle line meets the
+front-axle line.  The thesis models this as a revolute joint ``s`` at the ICR
+(6.114) whose reactions are the two lateral tyre forces.
+
+Geometry (thesis frame = world frame, the ICR at the global origin):
+
+* ICR ``(0, 0)``; rear tyre contact ``(d, 0)``; front tyre contact ``(d, L)``;
+  the car heads along +y, so ``d > 0`` is a left turn;
+* centre of gravity ``(d, (1 - ε) L)``, i.e. ``ε L`` behind the front axle;
+* rear tyre reaction ``R₁ = [1, 0, 0]``: a unit force along the rear axle (+x);
+  front tyre reaction ``R₂ = [d, L, 0]/√(d²+L²)``: a unit force along the front
+  axle, pointing away from the ICR (6.114);
+* drive force ``F_A`` at the front contact along the front wheels' rolling
+  direction ``(-L, d)/√(d²+L²)`` (6.120).
+
+The solution goes through :mod:`planargeo.subspaces` exactly as in the thesis:
+``T`` (6.124), ``U`` (6.126), ``γ = Rᵀκ`` (6.128), ``ω̇ = ψ = Tᵀ I⁻¹ (T Q − d)``
+with ``Q = 0`` and ``d = p − f_A`` (6.107, 6.130), and
+``μ = Uᵀ I U γ + Uᵀ d`` (6.106a, 6.132).  ``μ = (μ_rear, μ_front)`` are the
+signed tyre forces along ``R₁``, ``R₂``: negative values push the car towards
+the ICR.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .._validate import as_scalar
+from ..errors import SceneError
+from ..joints import _force_through, revolute
+from ..screws import crf, crm, inertia_matrix
+from ..subspaces import Decomposition
+from . import SceneResult, register
+
+__all__ = ["car"]
+
+
+def _positive(value, name: str) -> float:
+    v = as_scalar(value, name)
+    if not v > 0:
+        raise SceneError(f"{name} must be positive, got {v!r}")
+    return v
+
+
+@register("car")
+def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps: float = 0.45,
+        omega: float = 0.5, F_A: float = 2000.0) -> SceneResult:
+    """Car cornering and accelerating at the same time (thesis 6.9, 6.114–6.133).
+
+    Parameters
+    ----------
+    m : float
+        Mass of the car [kg] (> 0).  Default 1200 kg, a small car.
+    rho : float
+        Radius of gyration about the vertical axis through the centre of
+        gravity [m] (> 0; yaw inertia ``m ρ²``).  Default 1.2 m.
+    L : float
+        Wheelbase [m] (> 0).  Default 2.6 m.
+    d : float
+        Radius of the turn measured at the rear axle: the ICR is ``d`` to the
+        left of the rear tyre contact [m] (the rear speed is ``V = ω d``).
+        Default 8 m, a tight corner.
+    eps : float
+        Distance of the centre of gravity behind the front axle, as a fraction
+        of the wheelbase (``ε L``; usually in ``[0, 1]``).  Default 0.45
+        (slightly nose-heavy).
+    omega : float
+        Yaw rate about the ICR [rad/s].  Default 0.5 rad/s (``V`` = 4 m/s).
+    F_A : float
+        Drive force at the front tyres along their rolling direction [N].
+        Default 2000 N.
+
+    Returns
+    -------
+    SceneResult
+        ``quantities`` (plain lists, thesis ordering, at the global origin = ICR):
+        ``omega_dot`` (6.131), ``mu`` = [rear, front] tyre forces (6.133),
+        ``T`` (3,) (6.125), ``U`` (3×2) (6.127), ``s``, ``R`` (6.114), ``I``
+        (6.117), ``v`` (6.115), ``kappa`` (6.116), ``p`` (6.119), ``f_A``
+        (6.120), ``gamma`` (6.129), ``a`` (acceleration twist), ``f`` (joint =
+        total tyre wrench, 6.122), ``V`` (rear speed ``ω d``).
+        ``extra`` (numpy arrays, for drawing): ``icr``, ``rear_contact``,
+        ``front_contact``, ``cg``, ``heading``, ``rear_axle``, ``front_axle``
+        (unit lateral directions of ``R₁``, ``R₂``), ``front_rolling``,
+        ``steer`` (front steering angle [rad]), ``joint`` (the
+        :class:`~planargeo.joints.JointSpace`), ``s``, ``R``, ``T``, ``U``,
+        ``tyre_wrenches`` (3×2: ``R₁ μ₁``, ``R₂ μ₂``), ``decomposition``.
+
+    Examples
+    --------
+    >>> res = car()
+    >>> round(res.quantities["omega_dot"], 4)
+    0.2077
+    >>> [round(x, 1) for x in res.quantities["mu"]]
+    [-1102.4, -1089.3]
+    """
+    params = dict(m=m, rho=rho, L=L, d=d, eps=eps, omega=omega, F_A=F_A)
+    m = _positive(m, "m")
+    rho = _positive(rho, "rho")
+    L = _positive(L, "L")
+    d = as_scalar(d, "d")
+    eps = as_scalar(eps, "eps")
+    omega = as_scalar(omega, "omega")
+    F_A = as_scalar(F_A, "F_A")
+
+    # --- model-less geometry
+    icr = np.zeros(2)
+    rear = np.array([d, 0.0])
+    front = np.array([d, L])
+    cg = np.array([d, (1.0 - eps) * L])
+    hyp = np.hypot(d, L)
+    rear_axle = np.array([1.0, 0.0])
+    front_axle = np.array([d, L]) / hyp
+    front_rolling = np.array([-L, d]) / hyp
+
+    joint = revolute(icr)                                                     # (6.114)
+    s = joint.s
+    R = np.stack([_force_through(rear, rear_axle), _force_through(front, front_axle)], axis=-1)  # (6.114)
+
+    # --- dynamics quantities at the ICR
+    I = inertia_matrix(m, cg, m * rho ** 2)                                   # (6.117)
+    qd = np.array([omega])
+    v = s @ qd                                                                # (6.115)
+    kappa = crm(v) @ (s @ qd)                                                 # (6.116)
+    p = crf(v) @ (I @ v)                                                      # (6.118)-(6.119)
+    f_A = F_A * _force_through(front, front_rolling)                         # (6.120)
+
+    dec = Decomposition(s, R, I, name="I")                                    # T (6.124), U (6.126)
+    T, U = dec.T, dec.U
+    gamma = R.T @ kappa                                                       # (6.128)
+    Q = np.zeros(1)                                                           # unpowered joint
+    bias = p - f_A                                                            # f = I a + bias (6.122)
+    psi = T.T @ np.linalg.solve(I, T @ Q - bias)                              # (6.107), (6.130)
+    mu = U.T @ I @ U @ gamma + U.T @ bias                                     # (6.106a), (6.132)
+    a = dec.join_twist(psi, gamma)                                            # (6.44)
+    f = dec.join_wrench(Q, mu)                                                # (6.38), (6.123)
+
+    quantities = {
+        "omega_dot": float(psi[0]),
+        "mu": mu.tolist(),
+        "T": T[:, 0].tolist(),
+        "U": U.tolist(),
+        "s": s[:, 0].tolist(),
+        "R": R.tolist(),
+        "I": I.tolist(),
+        "v": v.tolist(),
+        "kappa": kappa.tolist(),
+        "p": p.tolist(),
+        "f_A": f_A.tolist(),
+        "gamma": gamma.tolist(),
+        "a": a.tolist(),
+        "f": f.tolist(),
+        "V": omega * d,
+    }
+    extra = {
+        "icr": icr, "rear_contact": rear, "front_contact": front, "cg": cg,
+        "heading": np.array([0.0, 1.0]), "rear_axle": rear_axle, "front_axle": front_axle,
+        "front_rolling": front_rolling, "steer": float(np.arctan2(L, d)),
+        "joint": joint, "s": s, "R": R, "T": T, "U": U,
+        "tyre_wrenches": R * mu, "decomposition": dec,
+    }
+    return SceneResult(name="car", params=params, model=None, state={"omega": omega},
+                       quantities=quantities, extra=extra)
