@@ -113,13 +113,14 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
 
     Examples
     --------
-    A pendulum hanging from the origin, its tip also pinned to the ground
-    where it already is: the pin holds it still against gravity.
+    A parallelogram four-bar: a chain of three uniform unit links whose tip
+    is pinned to the ground at (1, 0).  In the crank angle ``φ`` its energy is
+    ``T = 5/6 φ̇²``, ``V = 2 g sin φ``, so ``φ̈ = -6/5 g cos φ``:
 
     >>> from planargeo.model import chain_model
-    >>> m = chain_model(1)
-    >>> sol = loop_solve(m, [-np.pi / 2], [0.0], [0.0], contacts=[Contact("pin", 0, -1, (1.0, 0.0), (0.0, -1.0))])
-    >>> np.abs(sol.qdd).max() < 1e-12
+    >>> pin = Contact("pin", 2, -1, point_a=(1.0, 0.0), point_b=(1.0, 0.0))
+    >>> sol = loop_solve(chain_model(3), [1.2, -1.2, 1.2 - np.pi], [1.0, -1.0, 1.0], [0.0] * 3, contacts=[pin])
+    >>> bool(abs(sol.qdd[0] - (-6 / 5 * 9.81 * np.cos(1.2))) < 1e-12)
     True
     """
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
