@@ -1,0 +1,87 @@
+"""SliderCrankExplorer against closed forms of the slider-crank (thesis 9.6 geometry)."""
+import math
+
+import numpy as np
+import pytest
+
+from planargeo.widgets.slider_crank import SliderCrankExplorer
+
+R, T = 2.29, 0.5
+M = (0.40, 0.15, 0.30)
+J = (0.1464 * 0.40 * R * R, None, 0.666 * 0.30 * T * T)
+
+
+def height(psi, l):
+    return R * math.sin(psi) + math.sqrt(l * l - (R * math.cos(psi)) ** 2) + T
+
+
+def gen_mass(psi, l, h=1e-5):
+    """Generalised mass M(ψ) = Σ m |dc/dψ|² + J (dθ/dψ)² from closed-form positions."""
+    def coms(p):
+        pin = np.array([R * math.cos(p), R * math.sin(p)])
+        wrist = np.array([0.0, height(p, l) - T])
+        beta = math.atan2(*(wrist - pin)[::-1])
+        return [0.25 * pin, 0.5 * (pin + wrist), wrist + [0.0, T]], [p, beta, math.pi / 2]
+
+    (c0, a0), (c1, a1) = coms(psi - h), coms(psi + h)
+    dc = [(b - a) / (2 * h) for a, b in zip(c0, c1)]
+    da = [(b - a) / (2 * h) for a, b in zip(a0, a1)]
+    Jrod = 0.0866 * M[1] * l * l
+    return sum(m * d @ d for m, d in zip(M, dc)) + J[0] * da[0] ** 2 + Jrod * da[1] ** 2
+
+
+@pytest.fixture
+def ex():
+    return SliderCrankExplorer(display="agg")
+
+
+def test_thesis_state(ex):
+    r = ex.readout_values
+    assert r["piston height h"] == pytest.approx(height(0.4, 5.0), rel=1e-9)
+    assert r["piston height h"] == pytest.approx(5.925, abs=1e-3)        # thesis 9.86
+    assert r["piston speed"] == pytest.approx(50.483, abs=1e-3)           # thesis 9.80
+
+
+@pytest.mark.parametrize("deg", [-60.0, 10.0, 135.0])
+def test_constant_speed_kinematics(ex, deg):
+    ex.set(**{"crank angle (deg)": deg, "drive": "constant-speed", "crank speed": 12.0})
+    psi, w, e = math.radians(deg), 12.0, 1e-4
+    hp = (height(psi + e, 5.0) - height(psi - e, 5.0)) / (2 * e)
+    hpp = (height(psi + e, 5.0) - 2 * height(psi, 5.0) + height(psi - e, 5.0)) / e ** 2
+    r = ex.readout_values
+    assert r["ψ̈ crank"] == pytest.approx(0.0, abs=1e-9)
+    assert r["piston speed"] == pytest.approx(hp * w, rel=1e-6)
+    assert r["piston acceleration"] == pytest.approx(hpp * w * w, rel=1e-4)
+    # the piston only slides: its acceleration is a pure vertical translation (ideal point)
+    a3 = ex.a_art[2].get_point()
+    assert a3[0] == pytest.approx(0.0, abs=1e-9) and a3[2] == pytest.approx(0.0, abs=1e-9)
+
+
+def test_free_crank_matches_lagrange(ex):
+    ex.set(gravity=0.0, **{"crank angle (deg)": math.degrees(0.4)})
+    psi, w, e = 0.4, 20.0, 1e-4
+    Mp = (gen_mass(psi + e, 5.0) - gen_mass(psi - e, 5.0)) / (2 * e)
+    expected = -0.5 * Mp / gen_mass(psi, 5.0) * w * w
+    assert ex.readout_values["ψ̈ crank"] == pytest.approx(expected, rel=1e-5)
+
+
+def test_contact_force_line_is_drawn(ex):
+    F = ex.contact.get_line()
+    assert F[1] == pytest.approx(0.0, abs=1e-12)      # the slider only pushes sideways
+    assert ex.readout_values["contact force Fx"] == pytest.approx(F[0])
+    ex.fig.canvas.draw()
+
+
+def test_dead_centre_and_impossible_configurations(ex):
+    ex.controls["crank angle (deg)"].value = 90.0
+    assert "dead centre" in ex.message and ex.readout_values["dead centre"] is True
+    assert ex._msg_text.get_visible()
+    ex.set(**{"rod length": 2.29, "crank angle (deg)": 0.0})   # rod along the horizontal
+    assert "singular" in ex.message
+    good = dict(ex.readout_values)
+    ex.controls["rod length"].value = 2.0                      # rod cannot reach
+    assert "rod too short" in ex.message and "rod too short" in ex._msg_text.get_text()
+    assert ex.readout_values == good
+    ex.controls["rod length"].value = 5.0
+    assert ex.message == ""
+    assert ex.readout_values["piston height h"] == pytest.approx(height(0.0, 5.0))
