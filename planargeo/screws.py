@@ -781,13 +781,16 @@ class TwistSum:
     line: np.ndarray | None
 
 
-def add_twists(v1, v2) -> TwistSum:
+def add_twists(v1, v2, rtol: float = 1e-12) -> TwistSum:
     """Add two twists and describe the construction (thesis 4.11-4.16).
 
     Parameters
     ----------
     v1, v2 : Twist or array_like (3,)
         Non-zero twists at the origin.
+    rtol : float
+        The poles count as coincident (``line`` is None) when
+        ``|v1 × v2| <= rtol |v1| |v2|``.
 
     Returns
     -------
@@ -818,6 +821,8 @@ def add_twists(v1, v2) -> TwistSum:
     else:
         case = "translations" if np.any(s) else "zero"
     line = np.cross(a, b)
+    if np.linalg.norm(line) <= rtol * np.linalg.norm(a) * np.linalg.norm(b):
+        line = np.zeros(3)
     return TwistSum(
         v1=Twist(a), v2=Twist(b), sum=Twist(s), case=case,
         Q1=_normalize_point(a), Q2=_normalize_point(b),
@@ -909,8 +914,8 @@ def add_wrenches(f1, f2, rtol: float = 1e-12) -> WrenchSum:
         cr = a[0] * b[1] - a[1] * b[0]
         if abs(cr) <= rtol * F1 * F2:
             e = a[:2] / F1
-            meet = np.array([e[0], e[1], 0.0])     # the common ideal point
-            s1, s2 = F1, float(np.sign(e @ b[:2])) * F2
+            meet = np.array([e[1], -e[0], 0.0])    # the common ideal point (direction e)
+            s1, s2 = F1, (F2 if e @ b[:2] >= 0 else -F2)
             if s1 + s2 == 0 or F3 == 0:
                 case = "couple" if s[2] != 0 else "zero"
                 s = np.array([0.0, 0.0, s[2]])
