@@ -1,0 +1,119 @@
+"""Articulated mobility algorithm (thesis 7.4.1) against dense joint-space references."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from planargeo.algorithms.articulated_mobility import articulated_mobility, mobility_recursion
+from planargeo.errors import TopologyError
+from planargeo.kinematics import kinematics
+from planargeo.model import Body, Joint, Model, random_model
+from planargeo.screws import inertia_matrix
+from test_articulated_reference import dense_mobility, random_state
+
+ALL_KINDS = ("revolute", "prismatic", "revolute_prismatic", "plane", "fixed")
+
+
+@given(n=st.integers(1, 6), seed=st.integers(0, 10_000), loads=st.booleans())
+def test_Lambda_and_b_match_dense_truncated_chain(n, seed, loads):
+    model = random_model(n, seed=seed)
+    q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed), loads=loads)
+    r = articulated_mobility(model, q, qd, tau, f_ext)
+    for i in range(model.N):
+        Lam, b = dense_mobility(model, q, qd, tau, f_ext, i)
+        np.testing.assert_allclose(r.Lambda_inv[i], Lam, atol=1e-9 * (1 + np.abs(Lam).max()))
+        np.testing.assert_allclose(r.b[i], b, atol=1e-8 * (1 + np.abs(b).max()))
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_multi_dof_joints(seed):
+    model = random_model(5, seed=200 + seed, kinds=ALL_KINDS)
+    q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
+    r = articulated_mobility(model, q, qd, tau, f_ext)
+    for i in range(model.N):
+        Lam, b = dense_mobility(model, q, qd, tau, f_ext, i)
+        np.testing.assert_allclose(r.Lambda_inv[i], Lam, atol=1e-9 * (1 + np.abs(Lam).max()))
+        np.testing.assert_allclose(r.b[i], b, atol=1e-8 * (1 + np.abs(b).max()))
+
+
+@given(seed=st.integers(0, 10_000))
+def test_mobility_is_symmetric_positive_semidefinite_with_the_jacobian_rank(seed):
+    model = random_model(5, seed=seed)
+    q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
+    r = articulated_mobility(model, q, qd, tau, f_ext)
+    d = kinematics(model, q)
+    for i in range(model.N):
+        L = r.Lambda_inv[i]
+        np.testing.assert_array_equal(L, L.T)
+        w = np.linalg.eigvalsh(L)
+        assert w[0] > -1e-10 * w[-1]
+        assert np.linalg.matrix_rank(L, tol=1e-9 * w[-1]) == np.linalg.matrix_rank(d.jacobian(i))
+
+
+def _printed_mobility(I, S, kappa, p, tau):
+    """Thesis 7.38a exactly as printed (minus sign before U R^T Lambda^-1)."""
+    from planargeo.algorithms.projective import percussion_subspace, reaction_space, reactive_subspace
+
+    N = len(I)
+    Lam = np.zeros((N, 3, 3))
+    for i in range(N):
+        s = S[i]
+        T = percussion_subspace(I[i], s)
+        U = reactive_subspace(I[i], reaction_space(s))
+        G = s @ T.T @ np.linalg.inv(I[i])
+        if i == 0:
+            Lam[i] = G
+        else:
+            P = U @ reaction_space(s).T
+            M = np.eye(3) + P @ Lam[i - 1] @ I[i]
+            Lam[i] = np.linalg.solve(M, G - P @ Lam[i - 1])
+    return Lam
+
+
+def test_printed_7_38a_sign_is_wrong():
+    # Erratum 7.36/7.38a: "- U R^T Lambda^-1" must be "+ U R^T Lambda^-1".
+    model = random_model(4, seed=5)
+    q, qd, tau, f_ext = random_state(model, np.random.default_rng(5))
+    d = kinematics(model, q, qd, f_ext)
+    S = [d.s(i) for i in range(4)]
+    printed = _printed_mobility(d.I, S, d.kappa, d.p, [tau[model.q_slice(i)] for i in range(4)])
+    for i in (1, 2, 3):
+        Lam, _ = dense_mobility(model, q, qd, tau, f_ext, i)
+        assert np.abs(printed[i] - Lam).max() > 0.1 * np.abs(Lam).max()
+    np.testing.assert_allclose(printed[0], dense_mobility(model, q, qd, tau, f_ext, 0)[0], atol=1e-12)
+
+
+def test_listing_7_4_1_without_applied_loads_is_wrong_under_gravity():
+    # Erratum 7.4.1: p_i = -(v_i x)^T I_i v_i drops -g_i; b_i must include the loads.
+    model = random_model(3, seed=9)
+    q, qd, tau, _ = random_state(model, np.random.default_rng(9), loads=False)
+    d = kinematics(model, q, qd)
+    S = [d.s(i) for i in range(3)]
+    taus = [tau[model.q_slice(i)] for i in range(3)]
+    printed = mobility_recursion(d.I, S, d.kappa, d.p + d.g, taus)     # p without -g
+    right = mobility_recursion(d.I, S, d.kappa, d.p, taus)
+    _, b_ref = dense_mobility(model, q, qd, tau, None, 2)
+    np.testing.assert_allclose(right.b[2], b_ref, atol=1e-9 * np.abs(b_ref).max())
+    assert np.abs(printed.b[2] - b_ref).max() > 0.1 * np.abs(b_ref).max()
+
+
+def test_thesis_7_42_first_body_mobility():
+    m, rho, L = 1.7, 0.3, 1.2
+    model = Model([Body(m, (L / 2, 0.0), m * rho**2)] * 2,
+                  [Joint("revolute"), Joint("revolute", (L, 0.0, 0.0))], [-1, 0], gravity=(0, 0))
+    r = articulated_mobility(model, [0.0, 0.5])
+    expected = np.zeros((3, 3))
+    expected[2, 2] = 4 / (m * (L**2 + 4 * rho**2))
+    np.testing.assert_allclose(r.Lambda_inv[0], expected, atol=1e-14)
+
+
+def test_branched_model_is_rejected():
+    model = Model([Body(1.0, (0.5, 0.0), 0.1)] * 3, [Joint("revolute")] * 3, [-1, 0, 0])
+    with pytest.raises(TopologyError, match="unbranched chain"):
+        articulated_mobility(model, np.zeros(3))
+    I = np.stack([inertia_matrix(1.0, [0.5, 0.0], 0.1)] * 2)
+    with pytest.raises(TopologyError, match="parents"):
+        mobility_recursion(I, [np.array([[0.0], [0.0], [1.0]])] * 2, np.zeros((2, 3)), np.zeros((2, 3)),
+                           [np.zeros(1)] * 2, parents=[-1, -1])

@@ -1,0 +1,179 @@
+"""Projective articulated equations (thesis 6.101-6.113) against the dense CRBA reference."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from planargeo.algorithms.crba import forward_dynamics_crba
+from planargeo.algorithms.projective import (
+    acceleration_propagator, force_propagator, forward_dynamics_projective, percussion_subspace,
+    projective_solve, projective_workspace, reaction_space, reactive_subspace)
+from planargeo.algorithms.rnea import newton_euler
+from planargeo.errors import SingularConfigurationError, SingularInertiaError
+from planargeo.model import Body, Joint, Model, random_model
+from planargeo.screws import inertia_matrix
+from test_articulated_reference import random_state, rtol_for
+
+ALL_KINDS = ("revolute", "prismatic", "revolute_prismatic", "plane", "fixed")
+
+
+def _close(x, ref, rtol):
+    err = np.linalg.norm(x - ref) / max(np.linalg.norm(ref), 1.0)
+    assert err <= rtol, (err, rtol)
+
+
+@given(n=st.integers(1, 8), seed=st.integers(0, 10_000), tree=st.booleans(), loads=st.booleans())
+def test_qdd_matches_crba_random_chains_and_trees(n, seed, tree, loads):
+    model = random_model(n, seed=seed, tree=tree)
+    q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed), loads=loads)
+    ref = forward_dynamics_crba(model, q, qd, tau, f_ext)
+    _close(forward_dynamics_projective(model, q, qd, tau, f_ext), ref, rtol_for(model, q))
+
+
+@pytest.mark.parametrize("n", [50, 200])
+def test_qdd_matches_crba_long_chains(n):
+    model = random_model(n, seed=n)
+    q, qd, tau, f_ext = random_state(model, np.random.default_rng(n))
+    ref = forward_dynamics_crba(model, q, qd, tau, f_ext)
+    _close(forward_dynamics_projective(model, q, qd, tau, f_ext), ref, rtol_for(model, q))
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_qdd_matches_crba_multi_dof_joints(seed):
+    model = random_model(6, seed=seed, kinds=ALL_KINDS, tree=bool(seed % 2))
+    q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
+    ref = forward_dynamics_crba(model, q, qd, tau, f_ext)
+    _close(forward_dynamics_projective(model, q, qd, tau, f_ext), ref, rtol_for(model, q))
+
+
+@given(seed=st.integers(0, 10_000))
+def test_workspace_accelerations_and_forces_match_newton_euler(seed):
+    model = random_model(6, seed=seed, tree=True, kinds=ALL_KINDS)
+    q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
+    ws = projective_workspace(model, q, qd, tau, f_ext)
+    w = newton_euler(model, q, qd, forward_dynamics_crba(model, q, qd, tau, f_ext), f_ext)
+    tol = 1e-8 * (1 + np.abs(w.f).max())
+    np.testing.assert_allclose(ws.a, w.a, atol=tol)
+    np.testing.assert_allclose(ws.f, w.f, atol=tol)
+
+
+@given(seed=st.integers(0, 10_000))
+def test_components_are_the_projections_6_61_6_62(seed):
+    model = random_model(5, seed=seed, tree=True, kinds=ALL_KINDS)
+    q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
+    ws = projective_workspace(model, q, qd, tau, f_ext)
+    for i in range(model.N):
+        s, R, T, U = ws.s[i], ws.R[i], ws.T[i], ws.U[i]
+        tol = 1e-9 * (1 + np.abs(ws.f).max() + np.abs(ws.a).max())
+        np.testing.assert_allclose(s.T @ ws.f[i], ws.Q[i], atol=tol)          # Q = s^T f (6.61a)
+        np.testing.assert_allclose(U.T @ ws.f[i], ws.mu[i], atol=tol)         # mu = U^T f (6.61b)
+        np.testing.assert_allclose(T.T @ ws.a[i], ws.psi[i], atol=tol)        # psi = T^T a (6.62b)
+        np.testing.assert_allclose(R.T @ ws.a[i], ws.gamma[i], atol=tol)      # gamma = R^T a (6.62a)
+        np.testing.assert_allclose(T @ ws.Q[i] + R @ ws.mu[i], ws.f[i], atol=tol)       # (6.104)
+        np.testing.assert_allclose(s @ ws.psi[i] + U @ ws.gamma[i], ws.a[i], atol=tol)  # (6.44)
+
+
+@given(seed=st.integers(0, 10_000))
+def test_propagators_6_113_reproduce_the_solution(seed):
+    # with the true neighbour quantities, 6.113a/b give back a_i and f_i
+    model = random_model(5, seed=seed, tree=True)
+    q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
+    qdd = forward_dynamics_crba(model, q, qd, tau, f_ext)
+    w = newton_euler(model, q, qd, qdd, f_ext)
+    for i in range(model.N):
+        kids = model.children(i)
+        f_next = sum((w.f[c] for c in kids), np.zeros(3))
+        par = model.parents[i]
+        a_prev = w.a[par] if par >= 0 else np.zeros(3)
+        args = (w.I[i], w.s(i), tau[model.q_slice(i)], w.p[i], f_next, a_prev, w.kappa[i])
+        tol = 1e-8 * (1 + np.abs(w.f).max())
+        np.testing.assert_allclose(acceleration_propagator(*args), w.a[i], atol=tol)
+        np.testing.assert_allclose(force_propagator(*args), w.f[i], atol=tol)
+
+
+def test_relative_and_absolute_joint_acceleration_6_100():
+    # psi_i = qdd_i + T_i^T (a_{i-1} + kappa_i)
+    model = random_model(4, seed=11)
+    q, qd, tau, f_ext = random_state(model, np.random.default_rng(11))
+    ws = projective_workspace(model, q, qd, tau, f_ext)
+    for i in range(model.N):
+        a_prev = ws.a[i - 1] if i else np.zeros(3)
+        from planargeo.kinematics import kinematics
+        kap = kinematics(model, q, qd).kappa[i]
+        np.testing.assert_allclose(ws.psi[i], ws.qdd[model.q_slice(i)] + ws.T[i].T @ (a_prev + kap), atol=1e-9)
+
+
+def test_reaction_space_is_null_space_of_s():
+    for s in ([[0.3], [-2.0], [1.0]], [[0.6], [0.8], [0.0]], [[1.0, 2.0], [0.0, -1.0], [0.0, 1.0]]):
+        s = np.array(s)
+        R = reaction_space(s)
+        assert R.shape == (3, 3 - s.shape[1])
+        np.testing.assert_allclose(s.T @ R, 0.0, atol=1e-15)
+        assert np.linalg.matrix_rank(np.hstack([s, R])) == 3
+    assert reaction_space(np.zeros((3, 0))).shape == (3, 3)
+    assert reaction_space(np.eye(3)).shape == (3, 0)
+
+
+def test_revolute_reaction_forces_pass_through_the_joint():
+    # each reaction wrench is a line through the joint point (5.69 incidence)
+    R = reaction_space([[2.0], [-3.0], [1.0]])       # joint at (3, 2)
+    np.testing.assert_allclose(np.array([2.0, -3.0, 1.0]) @ R, 0.0, atol=1e-15)
+    np.testing.assert_allclose(R[:2], np.eye(2))    # unit forces along x and y
+
+
+def test_thesis_7_41_U2_and_corrected_T2():
+    m, rho, L, phi = 1.3, 0.37, 1.1, 0.7
+    c, s = np.cos(phi), np.sin(phi)
+    D = L**2 + 4 * rho**2
+    I2 = inertia_matrix(m, [L + L / 2 * c, L / 2 * s], m * rho**2)
+    s2 = np.array([[0.0], [-L], [1.0]])
+    U2 = reactive_subspace(I2, reaction_space(s2))
+    np.testing.assert_allclose(U2, [[1, 0], [-2 * L**2 * s / D, 1 + 2 * L**2 * c / D],
+                                    [2 * L * s / D, -2 * L * c / D]], atol=1e-14)
+    T2 = percussion_subspace(I2, s2).ravel()
+    # as printed in 7.41 the last entry is 1: that is T2 expressed at the joint (L, 0);
+    # at the origin (the thesis's stated reference point, and s^T T = 1) it is 1 + 2 L^2 cos(phi) / D.
+    np.testing.assert_allclose(T2, [-2 * L * s / D, 2 * L * c / D, 1 + 2 * L**2 * c / D], atol=1e-14)
+    assert (s2.ravel() @ [-2 * L * s / D, 2 * L * c / D, 1.0]) != pytest.approx(1.0)
+
+
+def test_reactive_subspace_forms_agree_and_singular_inertia_is_reported():
+    I = inertia_matrix(2.0, [0.4, -0.3], 0.2)
+    s = np.array([[0.5], [0.1], [1.0]])
+    R = reaction_space(s)
+    np.testing.assert_allclose(reactive_subspace(I, R), reactive_subspace(I, R, s=s), atol=1e-13)
+    with pytest.raises(SingularInertiaError, match="A must be invertible"):
+        reactive_subspace(inertia_matrix(1.0, [1.0, 0.0], 0.0), R)
+
+
+def test_singular_joint_raises_with_cond_array_level():
+    I = np.stack([inertia_matrix(1.0, [0.5, 0.0], 0.1), np.zeros((3, 3))])
+    S = [np.array([[0.0], [0.0], [1.0]]), np.array([[0.0], [-1.0], [1.0]])]
+    with pytest.raises(SingularConfigurationError, match="s\\^T A s of joint 1") as e:
+        projective_solve(I, S, np.zeros((2, 3)), np.zeros((2, 3)), [np.zeros(1)] * 2)
+    assert e.value.cond == np.inf
+
+
+def test_singular_joint_raises_model_level():
+    model = Model([Body(1.0, (0.5, 0.0), 0.1), Body(1.0, (0.0, 0.0), 0.0)],
+                  [Joint("revolute"), Joint("revolute", (1.0, 0.0, 0.0))], [-1, 0])
+    with pytest.raises(SingularConfigurationError, match="condition number"):
+        forward_dynamics_projective(model, [0.1, 0.2], [0.0, 0.0], [0.0, 0.0])
+
+
+def test_single_pendulum_hand_value():
+    # uniform rod m = 2, L = 3 on a pin, horizontal, torque 1: qdd = (tau - m g L/2) / (m L^2 / 3)
+    model = Model([Body(2.0, (1.5, 0.0), 2.0 * 9 / 12)], [Joint("revolute")], [-1])
+    qdd = forward_dynamics_projective(model, [0.0], [0.0], [1.0])
+    assert qdd[0] == pytest.approx((1.0 - 2.0 * 9.81 * 1.5) / (2.0 * 9 / 3), rel=1e-13)
+
+
+def test_f_ext_shape_is_validated():
+    from planargeo.errors import ShapeError
+
+    model = random_model(3, seed=2)
+    with pytest.raises(ShapeError, match="f_ext"):
+        forward_dynamics_projective(model, np.zeros(model.nq), np.zeros(model.nq), np.zeros(model.nq),
+                                    np.zeros((2, 3)))
