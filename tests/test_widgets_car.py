@@ -1,0 +1,65 @@
+"""CarExplorer: tyre forces against an independent Newton-Euler solve about the ICR."""
+import math
+
+import numpy as np
+import pytest
+
+from planargeo.widgets.car import CarExplorer
+
+L = 2.6
+
+
+def newton_euler(m, rho, d, eps, V, FA):
+    """Unknowns (ω̇, μ_rear, μ_front): m a_cg = ΣF, m ρ² ω̇ = Σ moments about the CG."""
+    w = V / d
+    c = np.array([d, (1 - eps) * L])
+    rear, front = np.array([d, 0.0]), np.array([d, L])
+    e1 = np.array([1.0, 0.0])
+    e2 = np.array([d, L]) / math.hypot(d, L)
+    roll = np.array([-L, d]) / math.hypot(d, L)
+    cross = lambda r, f: r[0] * f[1] - r[1] * f[0]
+    # a_cg = ω̇ k×c − ω² c
+    kc = np.array([-c[1], c[0]])
+    A = np.array([[m * kc[0], -e1[0], -e2[0]],
+                  [m * kc[1], -e1[1], -e2[1]],
+                  [m * rho ** 2, -cross(rear - c, e1), -cross(front - c, e2)]])
+    b = np.array([m * w * w * c[0] + FA * roll[0], m * w * w * c[1] + FA * roll[1],
+                  FA * cross(front - c, roll)])
+    return np.linalg.solve(A, b)
+
+
+@pytest.fixture
+def ex():
+    return CarExplorer(display="agg")
+
+
+@pytest.mark.parametrize("vals", [
+    {},
+    {"speed (m/s)": 12.0, "turn radius (m)": 30.0},
+    {"drive force (N)": -3000.0, "COM behind front (ε)": 0.7, "radius of gyration (m)": 2.0},
+    {"mass (kg)": 2000.0, "speed (m/s)": 0.0},
+])
+def test_tyre_forces_match_newton_euler(ex, vals):
+    ex.set(**vals)
+    v = ex.values
+    wd, mu1, mu2 = newton_euler(v["mass (kg)"], v["radius of gyration (m)"], v["turn radius (m)"],
+                                v["COM behind front (ε)"], v["speed (m/s)"], v["drive force (N)"])
+    r = ex.readout_values
+    assert ex.message == ""
+    assert r["yaw acceleration ω̇ (rad/s²)"] == pytest.approx(wd, rel=1e-9, abs=1e-12)
+    assert r["rear tyre force (N)"] == pytest.approx(mu1, rel=1e-9, abs=1e-9)
+    assert r["front tyre force (N)"] == pytest.approx(mu2, rel=1e-9, abs=1e-9)
+    # drawn tyre lines: the rear force acts along the rear axle through the rear contact
+    rl = ex.rear.get_line()
+    d = v["turn radius (m)"]
+    assert rl[:2] == pytest.approx([mu1, 0.0], abs=1e-9)
+    assert np.dot([0.0, -d, 1.0], rl) == pytest.approx(0.0, abs=1e-6)
+    ex.fig.canvas.draw()
+
+
+def test_more_speed_more_tyre_force(ex):
+    ex.set(**{"drive force (N)": 0.0})
+    f1 = ex.readout_values["rear tyre force (N)"]
+    ex.controls["speed (m/s)"].value = 8.0
+    assert abs(ex.readout_values["rear tyre force (N)"]) > abs(f1)
+    assert ex.readout_values["steering angle (deg)"] == pytest.approx(math.degrees(math.atan2(L, 8.0)))
