@@ -68,35 +68,37 @@ def _T(x: np.ndarray) -> np.ndarray:
     return np.swapaxes(x, -1, -2)
 
 
-def _norm2(x: np.ndarray) -> np.ndarray:
-    """Spectral norm of each matrix in a stack (0 for empty matrices)."""
-    if x.shape[-1] == 0 or x.shape[-2] == 0:
-        return np.zeros(x.shape[:-2])
-    return np.linalg.svd(x, compute_uv=False)[..., 0]
+def _abs_eig(A: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Largest and smallest |eigenvalue| of symmetric matrices (= their singular values)."""
+    w = np.abs(np.linalg.eigvalsh(A))
+    return w.max(axis=-1), w.min(axis=-1)
 
 
-def _check_cond(M: np.ndarray, scale: np.ndarray, error, message: str) -> None:
-    """Raise ``error(message, cond)`` if ``M`` (..., k, k) is singular relative to ``scale``.
+def _fro2(x: np.ndarray) -> np.ndarray:
+    """Squared Frobenius norm of each matrix in a stack (an upper bound of the squared 2-norm)."""
+    return np.einsum("...ij,...ij->...", x, x)
 
-    ``cond = scale / σ_min(M)``; ``scale`` is what ``‖M‖`` would be for a
-    well-conditioned problem (e.g. ``‖A‖ ‖s‖²`` for ``M = sᵀAs``), so a 1×1
-    ``M`` that is tiny compared with the inertia is caught too.
+
+def _check_cond(smin: np.ndarray, scale: np.ndarray, error, message: str) -> None:
+    """Raise ``error(message, cond)`` where ``cond = scale / smin`` exceeds :data:`COND_LIMIT`.
+
+    ``smin`` is the smallest singular value of the matrix to be inverted and
+    ``scale`` what its norm would be for a well-conditioned problem (e.g.
+    ``‖A‖ ‖s‖²`` for ``sᵀAs``), so that a 1×1 ``sᵀAs`` that is tiny compared
+    with the inertia is caught too.
     """
-    if M.shape[-1] == 0:
-        return
-    smin = np.linalg.svd(M, compute_uv=False)[..., -1]
-    scale = np.broadcast_to(scale, smin.shape)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        cond = np.where(smin > 0, scale / np.where(smin > 0, smin, 1.0), np.inf)
+    smin, scale = np.broadcast_arrays(np.asarray(smin, dtype=float), np.asarray(scale, dtype=float))
+    cond = np.full(smin.shape, np.inf)
+    np.divide(scale, smin, out=cond, where=smin > 0)
     bad = ~(cond <= COND_LIMIT)
     if np.any(bad):
         raise error(message, float(np.max(np.where(bad, cond, 0.0))))
 
 
-def _solve_A(A: np.ndarray, B: np.ndarray, name: str) -> np.ndarray:
+def _solve_A(A: np.ndarray, B: np.ndarray, name: str, eig=None) -> np.ndarray:
     """``A⁻¹ B`` by a solve, raising SingularInertiaError (with cond) for a singular ``A``."""
-    sv = np.linalg.svd(A, compute_uv=False)
-    _check_cond(A, sv[..., 0], SingularInertiaError, f"{name} must be invertible")
+    hi, lo = _abs_eig(A) if eig is None else eig
+    _check_cond(lo, hi, SingularInertiaError, f"{name} must be invertible")
     shape = np.broadcast_shapes(A.shape[:-2], B.shape[:-2])
     return np.linalg.solve(np.broadcast_to(A, shape + A.shape[-2:]), np.broadcast_to(B, shape + B.shape[-2:]))
 
@@ -110,9 +112,13 @@ def _right_solve(X: np.ndarray, M: np.ndarray) -> np.ndarray:
 
 
 def _gram(s: np.ndarray, As: np.ndarray, A_scale: np.ndarray, sname: str, what: str) -> np.ndarray:
+    """``M = sᵀ (A s)``, symmetrised, checked for singularity relative to ``‖A‖ ‖s‖²``."""
     M = _T(s) @ As
     M = 0.5 * (M + _T(M))
-    _check_cond(M, A_scale * _norm2(s) ** 2, SingularConfigurationError,
+    if M.shape[-1] == 0:
+        return M
+    smin = np.abs(M[..., 0, 0]) if M.shape[-1] == 1 else _abs_eig(M)[1]
+    _check_cond(smin, A_scale * _fro2(s), SingularConfigurationError,
                 f"{what} is singular: the inertia has (almost) nothing along {sname}")
     return M
 
@@ -129,18 +135,21 @@ def _check_complementary(s: np.ndarray, R: np.ndarray) -> None:
             raise InputError(f"R must be reciprocal to s (sᵀR = 0, thesis 6.1), got max |sᵀR| = {worst:.3g}")
 
 
-def _percussion(s: np.ndarray, A: np.ndarray, name: str) -> np.ndarray:
+def _percussion(s: np.ndarray, A: np.ndarray, name: str, eig=None) -> np.ndarray:
     if s.shape[-1] == 0:
         return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 0))
+    hi, _ = _abs_eig(A) if eig is None else eig
     As = A @ s
-    return _right_solve(As, _gram(s, As, _norm2(A), "s", f"sᵀ{name}s"))
+    return _right_solve(As, _gram(s, As, hi, "s", f"sᵀ{name}s"))
 
 
-def _reactive(R: np.ndarray, A: np.ndarray, name: str) -> np.ndarray:
+def _reactive(R: np.ndarray, A: np.ndarray, name: str, eig=None) -> np.ndarray:
     if R.shape[-1] == 0:
         return np.zeros(np.broadcast_shapes(R.shape[:-2], A.shape[:-2]) + (3, 0))
-    AiR = _solve_A(A, R, name)
-    Ainv_norm = 1.0 / np.linalg.svd(A, compute_uv=False)[..., -1]   # ‖A⁻¹‖ = 1 / σ_min(A)
+    eig = _abs_eig(A) if eig is None else eig
+    AiR = _solve_A(A, R, name, eig)
+    with np.errstate(divide="ignore"):
+        Ainv_norm = 1.0 / eig[1]          # ‖A⁻¹‖ = 1 / σ_min(A); finite here (A checked invertible)
     return _right_solve(AiR, _gram(R, AiR, Ainv_norm, "R", f"Rᵀ{name}⁻¹R"))
 
 
@@ -407,7 +416,7 @@ def effective_mobility(s, I) -> np.ndarray:
     s = _space(s, "s")
     I = _inertia(I, "I")
     Is = I @ s
-    M = _gram(s, Is, _norm2(I), "s", "sᵀIs")
+    M = _gram(s, Is, _abs_eig(I)[0], "s", "sᵀIs")
     return _right_solve(s, M) @ _T(s)
 
 
@@ -427,9 +436,9 @@ def effective_base_inertia(R, I) -> np.ndarray:
     """
     R = _space(R, "R")
     I = _inertia(I, "I")
-    IiR = _solve_A(I, R, "I")
-    Iinv_norm = 1.0 / np.linalg.svd(I, compute_uv=False)[..., -1]
-    M = _gram(R, IiR, Iinv_norm, "R", "RᵀI⁻¹R")
+    eig = _abs_eig(I)
+    IiR = _solve_A(I, R, "I", eig)
+    M = _gram(R, IiR, 1.0 / eig[1], "R", "RᵀI⁻¹R")
     return _right_solve(R, M) @ _T(R)
 
 
@@ -477,8 +486,9 @@ class Decomposition:
         A = _inertia(A, name)
         _check_complementary(s, R)
         self.s, self.R, self.A = s, R, A
-        self.T = _percussion(s, A, name)
-        self.U = _reactive(R, A, name)
+        eig = _abs_eig(A)
+        self.T = _percussion(s, A, name, eig)
+        self.U = _reactive(R, A, name, eig)
 
     @classmethod
     def from_joint(cls, joint, A, *, name: str = "A") -> "Decomposition":
