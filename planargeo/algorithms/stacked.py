@@ -37,7 +37,7 @@ from __future__ import annotations
 import numpy as np
 
 from .._validate import as_array
-from ..errors import ShapeError, SingularConfigurationError, SingularInertiaError, TopologyError
+from ..errors import ShapeError, SingularConfigurationError, TopologyError
 from ..kinematics import check_state, kinematics
 from ..model import Model
 
@@ -187,11 +187,12 @@ def articulated_quantities(model: Model, data, tau):
     T, U, P = [None] * N, [None] * N, [None] * N
     for i in range(N - 1, -1, -1):
         Ai = A[i]
-        Ainv = _inv_checked(Ai, f"articulated inertia A[{i}]", SingularInertiaError)
         sAs = s[i].T @ Ai @ s[i]
         T[i] = Ai @ s[i] @ _inv_checked(sAs, f"s^T A s of joint {i}")
-        RAR = R[i].T @ Ainv @ R[i]
-        U[i] = Ainv @ R[i] @ _inv_checked(RAR, f"R^T A^-1 R of joint {i}", SingularInertiaError)
+        # U = A^-1 R (R^T A^-1 R)^-1 written without A^-1 (A may be singular for
+        # point masses): U R^T = 1 - S T^T (6.75) and R^T U = 1 give U = (1 - S T^T) R
+        # for an orthonormal R; P = R U^T = 1 - T S^T (7.8).
+        U[i] = (np.eye(3) - s[i] @ T[i].T) @ R[i]
         P[i] = R[i] @ U[i].T
         j = model.parents[i]
         if j >= 0:
@@ -258,8 +259,7 @@ class StackedSolution:
         ``Λ^{-1}`` of 9.65-9.73, see the erratum there).
         """
         if not hasattr(self, "_mob"):
-            Ainv = np.linalg.inv(self.A)
-            self._mob = self.L.T @ self.S @ self.T.T @ Ainv @ self.L
+            self._mob = self.L.T @ self.StTAinv @ self.L
             self._mob = 0.5 * (self._mob + self._mob.T)
         return self._mob
 
@@ -319,8 +319,10 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     # (9.32) corrected: d = L (p + C^T T Q + C^T R U^T A κ)
     sol.d = sol.L @ (sol.p + C.T @ (T @ Q) + C.T @ R @ U.T @ A @ sol.kappa)
     # (9.39): a = L^T [S T^T A^-1 (T Q - d) + U R^T κ]
-    Ainv_rhs = np.linalg.solve(A, T @ Q - sol.d)
-    sol.a = sol.L.T @ (S @ (T.T @ Ainv_rhs) + U @ (R.T @ sol.kappa))
+    # S T^T A^-1 = S (S^T A S)^-1 S^T: no inverse of A needed
+    sol.StTAinv = _blockdiag([si @ np.linalg.solve(si.T @ Ai @ si, si.T) if si.shape[1] else np.zeros((3, 3))
+                              for si, Ai in zip(art["s"], art["A"])], three, three)
+    sol.a = sol.L.T @ (sol.StTAinv @ (T @ Q - sol.d) + U @ (R.T @ sol.kappa))
     # (9.41) with (9.17): internal forces
     sol.f = T @ Q + R @ (U.T @ (A @ (C @ sol.a + sol.kappa) + sol.d))
     # (9.43): q̈ = T^T (Δ a - κ)
@@ -382,14 +384,21 @@ def tree_mobilities(model: Model, data, tau, art=None):
             beta = Y @ (b[j] - Lam[j] @ e)
         si, Ri = art["s"][i], art["R"][i]
         Ii = I[i]
-        Iinv = _inv_checked(Ii, f"inertia I[{i}]", SingularInertiaError)
-        Ti = Ii @ si @ _inv_checked(si.T @ Ii @ si, f"s^T I s of joint {i}")
-        Ui = Iinv @ Ri @ _inv_checked(Ri.T @ Iinv @ Ri, f"R^T I^-1 R of joint {i}", SingularInertiaError)
         Qi = tau[model.q_slice(i)]
-        eta = si @ (Ti.T @ (Iinv @ (Ti @ Qi - p[i])))      # (7.35)
-        URt = Ui @ Ri.T
+        # s T^T I^-1 = s (s^T I s)^-1 s^T and U R^T = 1 - s T^T: no inverse of I
+        # (point masses have a singular I); η = s (s^T I s)^-1 (Q - s^T p)   (7.35)
+        if si.shape[1]:
+            sIs_inv = _inv_checked(si.T @ Ii @ si, f"s^T I s of joint {i}")
+            Ti = Ii @ si @ sIs_inv
+            mob_i = si @ sIs_inv @ si.T
+            eta = si @ (sIs_inv @ (Qi - si.T @ p[i]))
+        else:
+            Ti = np.zeros((3, 0))
+            mob_i = np.zeros((3, 3))
+            eta = np.zeros(3)
+        URt = one - si @ Ti.T
         X = one + URt @ M @ Ii
-        Lam[i] = np.linalg.solve(X, si @ Ti.T @ Iinv + URt @ M)
+        Lam[i] = np.linalg.solve(X, mob_i + URt @ M)
         b[i] = np.linalg.solve(X, eta - URt @ (M @ p[i] - beta - kap[i]))
     return Lam, b
 

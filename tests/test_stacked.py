@@ -1,0 +1,271 @@
+"""Stacked form of trees (thesis 9.1-9.2) against the dense CRBA reference."""
+import numpy as np
+import pytest
+from hypothesis import given, strategies as st
+
+from planargeo.algorithms.crba import forward_dynamics_crba, mass_matrix
+from planargeo.algorithms.stacked import (
+    adjacency, blocks, direct_accelerations, forward_dynamics_stacked, reaction_basis,
+    stacked_solve, tree_mobilities, trunk)
+from planargeo.errors import InputError, ShapeError, SingularConfigurationError, TopologyError
+from planargeo.kinematics import kinematics
+from planargeo.model import Body, Joint, Model, chain_model, random_model
+
+FIG91 = [-1, 0, 1, 2, 0, 4, 5, 5, 0]  # Fig 9.1: parents of bodies 1..9 (0-based)
+
+
+def _state(m, rng):
+    return (rng.normal(size=m.nq), rng.normal(size=m.nq), rng.normal(size=m.nq),
+            rng.normal(size=(m.N, 3)))
+
+
+def _tol(m, q, ref):
+    # tolerance scaled by the conditioning of the mass matrix
+    return 1e-13 * np.linalg.cond(mass_matrix(m, q)) * max(1.0, np.abs(ref).max()) + 1e-12
+
+
+# --------------------------------------------------------------------------- topology
+def test_adjacency_fig_9_1_is_9_1():
+    printed = np.zeros((9, 9), int)
+    for i, j in [(2, 1), (3, 2), (4, 3), (5, 1), (6, 5), (7, 6), (8, 6), (9, 1)]:
+        printed[i - 1, j - 1] = 1
+    assert np.array_equal(adjacency(FIG91), printed)
+
+
+def test_trunk_fig_9_1_is_9_13():
+    rows = {1: [1], 2: [1, 2], 3: [1, 2, 3], 4: [1, 2, 3, 4], 5: [1, 5], 6: [1, 5, 6],
+            7: [1, 5, 6, 7], 8: [1, 5, 6, 8], 9: [1, 9]}
+    printed = np.zeros((9, 9))
+    for i, cols in rows.items():
+        printed[i - 1, [c - 1 for c in cols]] = 1
+    D = trunk(adjacency(FIG91))
+    assert np.array_equal(D, printed)
+    assert np.allclose(D @ (np.eye(9) - adjacency(FIG91)), np.eye(9))  # (9.12)
+
+
+def test_chain_adjacency_9_2_and_trunk_lower_triangular():
+    C = adjacency(range(-1, 4))
+    assert np.array_equal(C, np.eye(5, k=-1))
+    assert np.array_equal(trunk(C), np.tril(np.ones((5, 5))))
+
+
+@pytest.mark.parametrize("C, msg", [
+    (np.array([[0, 1], [1, 0]]), "cycle"),
+    (np.array([[0, 0, 1], [1, 0, 0], [0, 1, 0]]), "cycle"),
+    (np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0]]), "more than one parent"),
+    (np.array([[0, 2], [0, 0]]), "zeros and ones"),
+])
+def test_trunk_rejects_non_trees(C, msg):
+    with pytest.raises(TopologyError, match=msg):
+        trunk(C)
+
+
+def test_trunk_shape_error():
+    with pytest.raises(ShapeError, match="C must be a square matrix"):
+        trunk(np.zeros((2, 3)))
+
+
+@pytest.mark.parametrize("parents, msg", [([-1, 1], "parents\\[1\\] must not be 1"),
+                                          ([-1, 7], "parents\\[1\\] must be -1"),
+                                          (["a"], "parents must be a sequence of integers")])
+def test_adjacency_rejects_bad_parents(parents, msg):
+    with pytest.raises(TopologyError, match=msg):
+        adjacency(parents)
+
+
+def test_raw_cycle_in_unordered_parents_detected():
+    # parents given raw (not ordered): 0 -> 2 -> 1 -> 0 is a cycle
+    with pytest.raises(TopologyError, match="cycle"):
+        trunk(adjacency([2, 0, 1]))
+    # a valid but unordered tree passes
+    D = trunk(adjacency([1, -1, 1]))
+    assert np.array_equal(D, [[1, 1, 0], [0, 1, 0], [0, 1, 1]])
+
+
+@given(st.integers(0, 3))
+def test_reaction_basis_is_orthogonal_complement(k):
+    rng = np.random.default_rng(k)
+    s = rng.normal(size=(3, k))
+    R = reaction_basis(s)
+    assert R.shape == (3, 3 - k)
+    assert np.allclose(s.T @ R, 0, atol=1e-12)
+    assert np.allclose(R.T @ R, np.eye(3 - k))
+
+
+# --------------------------------------------------------------------------- dynamics
+@given(st.integers(1, 12), st.booleans(), st.integers(0, 10_000))
+def test_stacked_matches_crba_random_trees(n, tree, seed):
+    rng = np.random.default_rng(seed)
+    m = random_model(n, seed=seed, tree=tree)
+    q, qd, tau, fe = _state(m, rng)
+    ref = forward_dynamics_crba(m, q, qd, tau, fe)
+    tol = _tol(m, q, ref)
+    assert np.abs(forward_dynamics_stacked(m, q, qd, tau, fe) - ref).max() < tol
+    assert np.abs(forward_dynamics_stacked(m, q, qd, tau, fe, method="direct") - ref).max() < tol
+
+
+@given(st.integers(2, 8), st.integers(0, 10_000))
+def test_stacked_all_joint_kinds(n, seed):
+    rng = np.random.default_rng(seed)
+    m = random_model(n, seed=seed, tree=True,
+                     kinds=("revolute", "prismatic", "revolute_prismatic", "plane", "fixed"))
+    q, qd, tau, fe = _state(m, rng)
+    ref = forward_dynamics_crba(m, q, qd, tau, fe)
+    tol = _tol(m, q, ref)
+    assert np.abs(forward_dynamics_stacked(m, q, qd, tau, fe) - ref).max() < tol
+    assert np.abs(forward_dynamics_stacked(m, q, qd, tau, fe, method="direct") - ref).max() < tol
+
+
+@pytest.mark.parametrize("tree", [False, True])
+def test_stacked_200_bodies(tree):
+    rng = np.random.default_rng(200)
+    m = random_model(200, seed=7, tree=tree)
+    q, qd, tau, fe = _state(m, rng)
+    ref = forward_dynamics_crba(m, q, qd, tau, fe)
+    tol = _tol(m, q, ref)
+    assert np.abs(forward_dynamics_stacked(m, q, qd, tau, fe) - ref).max() < tol
+    assert np.abs(forward_dynamics_stacked(m, q, qd, tau, fe, method="direct") - ref).max() < tol
+
+
+def test_batched_states():
+    rng = np.random.default_rng(3)
+    m = random_model(4, seed=3, tree=True)
+    q, qd, tau = (rng.normal(size=(2, 3, m.nq)) for _ in range(3))
+    out = forward_dynamics_stacked(m, q, qd, tau)
+    assert out.shape == (2, 3, m.nq)
+    assert np.allclose(out, forward_dynamics_crba(m, q, qd, tau), atol=1e-10)
+
+
+def test_closed_form_pendulum():
+    # uniform rod hinged at one end, horizontal: qdd = -3 g / (2 L)
+    assert forward_dynamics_stacked(chain_model(1), [0.0], [0.0], [0.0])[0] == pytest.approx(-1.5 * 9.81)
+
+
+def test_mobility_is_jacobian_mass_inverse():
+    # Φ = L^T S T^T A^-1 L equals J H^-1 J^T (Jacobians of DYN-A's kinematics, H by CRBA)
+    rng = np.random.default_rng(5)
+    m = random_model(6, seed=5, tree=True)
+    q, qd, tau, fe = _state(m, rng)
+    sol = stacked_solve(m, q, qd, tau, fe)
+    d = kinematics(m, q, qd)
+    Jb = np.concatenate([d.jacobian(i) for i in range(m.N)], 0)
+    H = mass_matrix(m, q)
+    assert np.allclose(sol.mobility, Jb @ np.linalg.solve(H, Jb.T), atol=1e-10)
+
+
+def test_internal_forces_and_9_43():
+    rng = np.random.default_rng(6)
+    m = random_model(7, seed=6, tree=True)
+    q, qd, tau, fe = _state(m, rng)
+    sol = stacked_solve(m, q, qd, tau, fe)
+    # joint torques are the projections of the internal forces (9.21: Q = S^T f)
+    assert np.allclose(sol.S.T @ sol.f, tau, atol=1e-10)
+    # (9.14): f = C^T f + I a + p
+    assert np.allclose(sol.f, sol.C.T @ sol.f + sol.I @ sol.a + sol.p, atol=1e-9)
+    # (9.10): a = C a + S qdd + κ
+    assert np.allclose(sol.a, sol.C @ sol.a + sol.S @ sol.qdd + sol.kappa, atol=1e-10)
+
+
+# --------------------------------------------------------------------------- errata pins
+def _printed_d(sol, tau):
+    # (9.32) as printed: d = L p + L C^T T Q
+    return sol.L @ sol.p + sol.L @ sol.C.T @ sol.T @ tau
+
+
+def test_erratum_9_32_missing_kappa_term():
+    rng = np.random.default_rng(11)
+    m = random_model(5, seed=11)
+    q, qd, tau, _ = _state(m, rng)
+    sol = stacked_solve(m, q, qd, tau)
+    # the corrected d reproduces the recursive articulated bias forces (7.7b) ...
+    assert np.allclose(sol.d, np.concatenate(sol.articulated["d"]), atol=1e-10)
+    # ... the printed one does not when the joints move (κ ≠ 0) ...
+    assert np.abs(_printed_d(sol, tau) - sol.d).max() > 1e-3
+    # ... and agrees when they are at rest (κ = 0): the missing term is C^T R U^T A κ
+    sol0 = stacked_solve(m, q, np.zeros(m.nq), tau)
+    assert np.allclose(_printed_d(sol0, tau), sol0.d, atol=1e-10)
+
+
+def test_erratum_9_27_9_30_articulated_inertia():
+    m = chain_model(3)
+    rng = np.random.default_rng(1)
+    q, qd, tau, _ = _state(m, rng)
+    sol = stacked_solve(m, q, qd, tau)
+    C, R, U, A, I = sol.C, sol.R, sol.U, sol.A, sol.I
+    P = R @ U.T
+    # corrected (9.27): A = I + C^T R U^T A C (block diagonal)
+    assert np.allclose(A, I + C.T @ P @ A @ C, atol=1e-10)
+    # printed (9.27) fails: C^T R U^T A + I has off-diagonal blocks
+    assert np.abs(C.T @ P @ A + I - A).max() > 1e-2
+    # corrected (9.30): A = Σ_k (C^T R U^T)^k I C^k, not L I
+    acc, M, Ck = np.zeros_like(A), np.eye(9), np.eye(9)
+    for _ in range(3):
+        acc += M @ I @ Ck
+        M, Ck = M @ C.T @ P, Ck @ C
+    assert np.allclose(A, acc, atol=1e-10)
+    assert np.abs(sol.L @ I - A).max() > 1e-2
+
+
+def test_erratum_9_44b_missing_inverse():
+    m = chain_model(4)
+    rng = np.random.default_rng(2)
+    q, qd, tau, _ = _state(m, rng)
+    sol = stacked_solve(m, q, qd, tau)
+    Dinv = sol.Dinv
+    n = Dinv.shape[0]
+    assert np.allclose(sol.f, Dinv.T @ (sol.I @ sol.a + sol.p), atol=1e-9)           # corrected
+    assert np.abs((np.eye(n) - sol.C.T) @ (sol.I @ sol.a + sol.p) - sol.f).max() > 1e-2  # printed
+    # printed (9.48) gives wrong accelerations; corrected (9.48) gives the right ones
+    Lam, b = tree_mobilities(m, sol.data, tau, sol.articulated)
+    assert np.allclose(direct_accelerations(sol, Lam, b), sol.a, atol=1e-9)
+    Lb = np.zeros((n, n))
+    for i, Li in enumerate(Lam):
+        Lb[3 * i:3 * i + 3, 3 * i:3 * i + 3] = Li
+    K = Lb @ sol.C.T @ (np.eye(n) - sol.C.T)
+    a_printed = np.linalg.solve(np.eye(n) + K @ sol.I, np.concatenate(b) - K @ sol.p)
+    assert np.abs(a_printed - sol.a).max() > 1e-2
+
+
+def test_erratum_7_38a_sign_in_chain_mobility():
+    # the corrected chain mobility predicts the response of body 1 (of a 2-chain) to a wrench on it
+    m = chain_model(2, gravity=(0, 0))
+    q, qd, tau = np.array([0.3, 0.7]), np.zeros(2), np.zeros(2)
+    sol = stacked_solve(m, q, qd, tau)
+    Lam, _ = tree_mobilities(m, sol.data, tau, sol.articulated)
+    # Λ_2^{-1} is the mobility of the tip in the whole chain: block (2, 2) of Φ = J H^-1 J^T
+    assert np.allclose(Lam[1], sol.mobility[3:, 3:], atol=1e-12)
+
+
+# --------------------------------------------------------------------------- errors
+def test_singular_joint_inertia_raises_with_cond():
+    # a point mass on its own revolute axis: s^T A s = 0
+    m = Model([Body(1.0, (0.0, 0.0), 0.0)], [Joint("revolute")], [-1])
+    with pytest.raises(SingularConfigurationError, match="s\\^T A s of joint 0") as e:
+        forward_dynamics_stacked(m, [0.0], [0.0], [0.0])
+    assert e.value.cond > 1e14
+
+
+def test_bad_method_and_shapes():
+    m = chain_model(2)
+    with pytest.raises(InputError, match="method must be"):
+        forward_dynamics_stacked(m, [0, 0], [0, 0], [0, 0], method="magic")
+    with pytest.raises(ShapeError, match="q must have shape"):
+        forward_dynamics_stacked(m, [0, 0, 0], [0, 0], [0, 0])
+    with pytest.raises(ShapeError, match="stacked_solve takes one state"):
+        stacked_solve(m, np.zeros((2, 2)), np.zeros(2), np.zeros(2))
+
+
+def test_blocks_kron():
+    assert np.array_equal(blocks(np.array([[0, 1]])), np.hstack([np.zeros((3, 3)), np.eye(3)]))
+
+
+def test_point_masses_need_no_inverse_inertia():
+    # J = 0 bodies have singular I (and tip A); the stacked form never inverts them
+    bodies = [Body(1.0, (1.0, 0.0), 0.0), Body(2.0, (0.5, 0.2), 0.0), Body(0.5, (1.0, 0.0), 0.0)]
+    joints = [Joint("revolute"), Joint("prismatic", (1.0, 0.0, 0.3)), Joint("revolute", (0.5, 0.0, 0.0))]
+    m = Model(bodies, joints, [-1, 0, 1])
+    rng = np.random.default_rng(8)
+    q, qd, tau, fe = _state(m, rng)
+    ref = forward_dynamics_crba(m, q, qd, tau, fe)
+    assert np.allclose(forward_dynamics_stacked(m, q, qd, tau, fe), ref, atol=1e-10)
+    assert np.allclose(forward_dynamics_stacked(m, q, qd, tau, fe, method="direct"), ref, atol=1e-10)
