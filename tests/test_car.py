@@ -187,3 +187,34 @@ def test_registry_and_plain_outputs():
 def test_bad_parameters(kw, err, msg):
     with pytest.raises(err, match=msg):
         car(**kw)
+
+
+@pytest.mark.parametrize("kw", PARAM_SETS)
+def test_model_forward_dynamics_reproduces_omega_dot(kw):
+    """The scene's Model through the package's dense CRBA solver (DYN-A's code, not the subspaces)."""
+    from planargeo.algorithms.crba import forward_dynamics_crba
+
+    res = car(**_params(kw))
+    st_ = res.state
+    qdd = forward_dynamics_crba(res.model, st_["q"], st_["qd"], st_["tau"], f_ext=st_["f_ext"])
+    assert np.isclose(qdd[0], res.quantities["omega_dot"], rtol=1e-10, atol=1e-14)
+
+
+def test_drawing_geometry():
+    res = car(d=8.0, L=2.6)
+    ex = res.extra
+    rear, front = ex["tyres"]
+    assert res.model.bodies[0].shape.contains(_point(ex["cg"]))
+    assert rear.centroid.distance(_point(ex["rear_contact"])) < 1e-12
+    assert front.centroid.distance(_point(ex["front_contact"])) < 1e-12
+    # the front tyre's long side is along the rolling direction (-L, d)/√(d²+L²)
+    xs, ys = front.exterior.coords.xy
+    edges = [np.array([xs[i + 1] - xs[i], ys[i + 1] - ys[i]]) for i in range(4)]
+    longest = max(edges, key=np.linalg.norm)
+    assert abs(abs(longest @ ex["front_rolling"]) - np.linalg.norm(longest)) < 1e-12
+    assert np.isclose(np.tan(ex["steer"]), 2.6 / 8.0)
+
+
+def _point(xy):
+    from shapely.geometry import Point
+    return Point(*xy)

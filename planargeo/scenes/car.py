@@ -30,11 +30,25 @@ import numpy as np
 from .._validate import as_scalar
 from ..errors import SceneError
 from ..joints import _force_through, revolute
+from ..model import Body, Joint, Model
 from ..screws import crf, crm, inertia_matrix
 from ..subspaces import Decomposition
 from . import SceneResult, register
 
 __all__ = ["car"]
+
+
+def _outlines(d: float, L: float, steer: float):
+    """Car body (body frame = world frame at q = 0) and the two tyres, as shapely polygons."""
+    from shapely import affinity
+    from shapely.geometry import box
+
+    w, over = 0.7 * L, 0.3 * L
+    body = box(d - w / 2, -over, d + w / 2, L + over)
+    tyre = box(-0.06 * L, -0.13 * L, 0.06 * L, 0.13 * L)
+    rear = affinity.translate(tyre, d, 0.0)
+    front = affinity.translate(affinity.rotate(tyre, steer, origin=(0, 0), use_radians=True), d, L)
+    return body, rear, front
 
 
 def _positive(value, name: str) -> float:
@@ -86,7 +100,12 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
         (unit lateral directions of ``R₁``, ``R₂``), ``front_rolling``,
         ``steer`` (front steering angle [rad]), ``joint`` (the
         :class:`~planargeo.joints.JointSpace`), ``s``, ``R``, ``T``, ``U``,
-        ``tyre_wrenches`` (3×2: ``R₁ μ₁``, ``R₂ μ₂``), ``decomposition``.
+        ``tyre_wrenches`` (3×2: ``R₁ μ₁``, ``R₂ μ₂``), ``decomposition``,
+        ``tyres`` (shapely outlines of the rear and front tyre, world frame).
+        ``model``: one body (the car, outline as ``shape``) on a revolute
+        joint at the ICR, no gravity (the road is the plane); ``state`` holds
+        ``q = [0]``, ``qd = [ω]``, ``tau = [0]`` and ``f_ext = [f_A]``, so any
+        forward-dynamics function reproduces ``omega_dot``.
 
     Examples
     --------
@@ -161,5 +180,11 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
         "joint": joint, "s": s, "R": R, "T": T, "U": U,
         "tyre_wrenches": R * mu, "decomposition": dec,
     }
-    return SceneResult(name="car", params=params, model=None, state={"omega": omega},
+    steer = float(np.arctan2(L, d))          # heading (0, 1) turned by steer = front rolling direction
+    body_shape, rear_tyre, front_tyre = _outlines(d, L, steer)
+    model = Model([Body(m, com=tuple(cg), inertia=m * rho ** 2, shape=body_shape, name="car")],
+                  [Joint("revolute", (0.0, 0.0, 0.0), name="icr")], [-1], gravity=(0.0, 0.0))
+    extra["tyres"] = [rear_tyre, front_tyre]
+    state = {"q": [0.0], "qd": [omega], "tau": [0.0], "f_ext": [f_A.tolist()], "omega": omega}
+    return SceneResult(name="car", params=params, model=model, state=state,
                        quantities=quantities, extra=extra)
