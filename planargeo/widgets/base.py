@@ -206,6 +206,48 @@ class Explorer:
     def connect_mouse(self) -> None:
         """Connect mouse handlers (subclasses; only useful under ipympl)."""
 
+    def connect_drag(self, x_control: str, y_control: str, target: Callable[[], Any],
+                     radius_px: float = 12.0) -> None:
+        """Let the mouse drag the point ``target()`` (data ``(x, y)``) on the figure.
+
+        A press within ``radius_px`` pixels of the point starts a drag; motion
+        sets the two controls (clamped to their ranges, one update per move);
+        release ends it.  Works wherever the canvas emits mouse events
+        (``%matplotlib widget``); harmless elsewhere.
+        """
+        state = {"on": False}
+
+        def press(ev):
+            try:
+                if ev.inaxes is not self.ax or ev.button not in (1, None):
+                    return
+                xy = target()
+                if xy is None or not np.all(np.isfinite(xy)):
+                    return
+                px = self.ax.transData.transform(np.asarray(xy, float))
+                if np.hypot(px[0] - ev.x, px[1] - ev.y) <= radius_px:
+                    state["on"] = True
+            except Exception as exc:  # noqa: BLE001
+                self._set_message(f"drag failed: {exc}")
+
+        def move(ev):
+            if not state["on"] or ev.inaxes is not self.ax or ev.xdata is None:
+                return
+            cx, cy = self.controls[x_control], self.controls[y_control]
+            x = float(np.clip(ev.xdata, cx.min, cx.max))
+            y = float(np.clip(ev.ydata, cy.min, cy.max))
+            self.set(**{x_control: x, y_control: y})
+
+        def release(ev):
+            state["on"] = False
+
+        self._drag_state = state
+        cids = getattr(self, "_mouse_cids", [])
+        cids += [self.fig.canvas.mpl_connect("button_press_event", press),
+                 self.fig.canvas.mpl_connect("motion_notify_event", move),
+                 self.fig.canvas.mpl_connect("button_release_event", release)]
+        self._mouse_cids = cids
+
     # ---------------------------------------------------------------- public API
     @property
     def values(self) -> dict[str, Any]:

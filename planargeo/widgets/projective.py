@@ -1,0 +1,183 @@
+"""Projective playground: a conic maps points to lines and back (thesis 5.2).
+
+Pick a real conic (circle, ellipse, hyperbola, parabola) or an inertia (an
+imaginary circle of radius ``ρ``, 5.4).  A movable point ``P`` maps to its
+polar line ``C P`` (5.36), a movable line ``M`` to its pole ``C⁻¹ M`` (5.37).
+For a real conic the geometric constructions of 5.2.2 follow the point:
+
+* ``P`` outside the conic: the two tangents from ``P``; the polar joins their
+  contact points (Fig 5.2);
+* ``P`` inside: two chords through ``P``; the tangents at their ends meet in
+  two poles, which the polar joins (Fig 5.3).
+
+The readout also shows the invariance of linear forms (5.40-5.41): the
+distance-like number ``P·M`` equals ``pole(M)·polar(P)``.
+
+Under ``%matplotlib widget`` drag ``P`` with the mouse.
+"""
+from __future__ import annotations
+
+import math
+
+import ipywidgets as W
+import numpy as np
+
+from ..conics import (centre, classify, conic_circle, conic_ellipse, conic_hyperbola,
+                      conic_parabola, polar, polar_construction_interior, pole,
+                      tangents_from_point)
+from ..draw.artists import ConicArtist, LineArtist, PointArtist
+from ..draw.style import setup_axes
+from ..projective import from_xy
+from .base import Explorer, Step
+
+__all__ = ["ProjectiveExplorer", "CONICS", "make_conic"]
+
+CONICS = ("circle", "ellipse", "hyperbola", "parabola", "inertia (imaginary circle)")
+
+
+def make_conic(kind: str, a: float, b: float, tilt_deg: float) -> np.ndarray:
+    """The playground's conic: centred at the origin (parabola: vertex), turned by ``tilt``."""
+    t = math.radians(tilt_deg)
+    if kind == "circle":
+        return conic_circle([0.0, 0.0], a)
+    if kind == "ellipse":
+        return conic_ellipse([0.0, 0.0], [a, b], t)
+    if kind == "hyperbola":
+        return conic_hyperbola([0.0, 0.0], [a, b], t)
+    if kind == "parabola":
+        return conic_parabola([0.0, 0.0], a / 4.0, t)
+    return conic_circle([0.0, 0.0], a, imaginary=True)
+
+
+def _line(angle_deg: float, offset: float) -> np.ndarray:
+    """Line with direction ``angle`` at signed distance ``offset`` left of the origin (5.55)."""
+    t = math.radians(angle_deg)
+    e = np.array([math.cos(t), math.sin(t)])
+    # points (x, y) with tz + y fx - x fy = 0; through the foot point -offset * (-e_y, e_x)
+    foot = offset * np.array([-e[1], e[0]])
+    return np.array([e[0], e[1], foot[0] * e[1] - foot[1] * e[0]])
+
+
+def _xy(p):
+    p = np.asarray(p, float)
+    if p[2] == 0:
+        return "at infinity"
+    return (float(-p[1] / p[2]), float(p[0] / p[2]))
+
+
+class ProjectiveExplorer(Explorer):
+    """Pole and polar of a movable point and line with respect to a conic."""
+
+    title = "Projective playground: poles, polars and constructions"
+    slug = "projective"
+    figsize = (5.6, 5.4)
+
+    def make_controls(self):
+        return {
+            "P x": Step(-4, 4, 0.05, 2.0, "P x").make("P x"),
+            "P y": Step(-4, 4, 0.05, 1.5, "P y").make("P y"),
+            "line angle (deg)": Step(-180, 180, 1, 100, "line angle (deg)").make("angle"),
+            "line offset": Step(-4, 4, 0.05, 0.5, "line offset").make("offset"),
+            "conic": W.Dropdown(options=CONICS, value="ellipse", description="conic"),
+            "a": Step(0.2, 3, 0.05, 1.5, "a").make("a"),
+            "b": Step(0.2, 3, 0.05, 1.0, "b").make("b"),
+            "tilt (deg)": Step(-90, 90, 1, 20, "tilt (deg)").make("tilt"),
+            "construction": W.Checkbox(value=True, description="construction (5.2.2)", indent=False),
+            "line and its pole": W.Checkbox(value=True, description="line and its pole",
+                                            indent=False),
+        }
+
+    def setup_axes(self, ax):
+        setup_axes(ax, (-4, 4, -4, 4), axis_off=False)
+        ax.grid(True, lw=0.3, alpha=0.5)
+
+    def make_artists(self, ax):
+        z = np.array([0.0, 0.0, 1.0])
+        zl = np.array([1.0, 0.0, 0.0])
+        self.conic_art = ax.add_artist(ConicArtist(np.eye(3), role="conic", text="C"))
+        self.P_art = ax.add_artist(PointArtist(z, role="twist", glyph=False, text="P", markersize=7))
+        self.polar_art = ax.add_artist(LineArtist(zl, role="wrench", scale=None, text="polar of P"))
+        self.M_art = ax.add_artist(LineArtist(zl, role="momentum", scale=None, text="M"))
+        self.Mpole_art = ax.add_artist(PointArtist(z, role="accel", glyph=False, text="pole of M",
+                                                   markersize=6))
+        self.tan_art = [ax.add_artist(LineArtist(zl, role="construct", scale=None)) for _ in range(4)]
+        self.chord_art = [ax.add_artist(LineArtist(zl, role="construct", scale=None, linewidth=0.6))
+                          for _ in range(2)]
+        self.cpts_art = [ax.add_artist(PointArtist(z, role="twist", glyph=False, markersize=4,
+                                                   color="#7F7F7F")) for _ in range(6)]
+
+    def connect_mouse(self):
+        self.connect_drag("P x", "P y", lambda: (self.values["P x"], self.values["P y"]))
+
+    def compute(self, v, changed):
+        C = make_conic(v["conic"], v["a"], v["b"], v["tilt (deg)"])
+        P = from_xy([v["P x"], v["P y"]])
+        M = _line(v["line angle (deg)"], v["line offset"])
+        ctype = classify(C)
+        polarP = polar(C, P)
+        poleM = pole(C, M)
+        st = {"C": C, "P": P, "M": M, "type": ctype, "polar": polarP, "poleM": poleM,
+              "where": "—", "tangents": None, "contacts": None, "interior": None}
+        if ctype.reality == "real":
+            res = float(P @ C @ P)
+            T, X = tangents_from_point(C, P, on_interior="nan")
+            if np.all(np.isfinite(T)):
+                st["tangents"], st["contacts"] = T, X
+                st["where"] = "on the conic" if abs(res) <= 1e-9 * np.abs(C).max() else "outside"
+            else:
+                st["where"] = "inside"
+                st["interior"] = polar_construction_interior(C, P, on_miss="nan")
+        elif ctype.reality == "imaginary":
+            st["where"] = "no real points: algebraic map only"
+        return st
+
+    def render(self, st):
+        v = self.values
+        self.conic_art.set_conic(st["C"])
+        self.P_art.set_point(st["P"])
+        self.polar_art.set_line(st["polar"])
+        show_line = bool(v["line and its pole"])
+        self.M_art.set_visible(show_line)
+        self.Mpole_art.set_visible(show_line)
+        self.M_art.set_line(st["M"])
+        self.Mpole_art.set_point(st["poleM"])
+        for a in self.tan_art + self.chord_art + self.cpts_art:
+            a.set_visible(False)
+        if v["construction"]:
+            if st["tangents"] is not None:
+                for k in range(2):
+                    self.tan_art[k].set_line(st["tangents"][k])
+                    self.tan_art[k].set_visible(True)
+                    self.cpts_art[k].set_point(st["contacts"][k])
+                    self.cpts_art[k].set_visible(True)
+            elif st["interior"] is not None:
+                K = st["interior"]
+                ok = bool(np.all(np.isfinite(K.tangents)) and np.all(np.isfinite(K.poles)))
+                if ok:
+                    for i in range(2):
+                        self.chord_art[i].set_line(K.lines[i])
+                        self.chord_art[i].set_visible(True)
+                        for j in range(2):
+                            self.tan_art[2 * i + j].set_line(K.tangents[i, j])
+                            self.tan_art[2 * i + j].set_visible(True)
+                            self.cpts_art[2 * i + j].set_point(K.chord_points[i, j])
+                            self.cpts_art[2 * i + j].set_visible(True)
+                        self.cpts_art[4 + i].set_point(K.poles[i])
+                        self.cpts_art[4 + i].set_visible(True)
+        P, M, pol, pm = st["P"], st["M"], st["polar"], st["poleM"]
+        # polar of P: normalised line [e, r] (5.55): direction and signed distance from the origin
+        F = float(np.hypot(pol[0], pol[1]))
+        out = {
+            "P x": v["P x"], "P y": v["P y"],
+            "conic": str(st["type"]),
+            "P is": st["where"],
+            "polar of P: distance to origin": "line at infinity" if F == 0 else abs(pol[2]) / F,
+            "pole of M": _xy(pm),
+            "P·M": float(P @ M),
+            "pole(M)·polar(P)": float(pm @ pol),
+        }
+        if st["type"].kind == "parabola":
+            out["centre"] = "at infinity"
+        else:
+            out["centre"] = _xy(centre(st["C"]))
+        return out

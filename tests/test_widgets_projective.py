@@ -1,0 +1,102 @@
+"""ProjectiveExplorer: poles, polars and constructions against closed forms for circles."""
+import math
+
+import numpy as np
+import pytest
+from matplotlib.backend_bases import MouseEvent
+
+from planargeo.widgets.projective import CONICS, ProjectiveExplorer
+
+
+def xy(p):
+    return np.array([-p[1] / p[2], p[0] / p[2]])
+
+
+def line_distance(l):
+    """Distance |tz| / |f| of the line from the origin (5.55)."""
+    F = math.hypot(l[0], l[1])
+    return abs(l[2]) / F
+
+
+@pytest.fixture
+def ex():
+    return ProjectiveExplorer(display="agg", conic="circle", a=1.5)
+
+
+@pytest.mark.parametrize("P", [(2.0, 1.5), (0.3, -0.4), (-3.0, 0.5)])
+def test_circle_polar_distance(ex, P):
+    ex.set(**{"P x": P[0], "P y": P[1]})
+    r2, d = 1.5 ** 2, math.hypot(*P)
+    assert ex.readout_values["polar of P: distance to origin"] == pytest.approx(r2 / d)
+    pol = ex.polar_art.get_line()
+    # the polar is perpendicular to OP and crosses OP at distance r²/d (same side as P)
+    foot = r2 / d * np.array(P) / d
+    assert np.dot([foot[1], -foot[0], 1.0], pol) == pytest.approx(0.0, abs=1e-12)
+    assert np.dot(pol[:2], P) == pytest.approx(0.0, abs=1e-12)
+    assert ex.readout_values["P is"] == ("outside" if d > 1.5 else "inside")
+
+
+def test_exterior_construction_contacts_are_tangent_points(ex):
+    ex.set(**{"P x": 2.0, "P y": 1.5})
+    shown = [a for a in ex.cpts_art if a.get_visible()]
+    assert len(shown) == 2 and sum(a.get_visible() for a in ex.tan_art) == 2
+    for a in shown:
+        X = a.get_xy()
+        assert np.hypot(*X) == pytest.approx(1.5)                      # on the circle
+        assert np.dot(X - [2.0, 1.5], X) == pytest.approx(0.0, abs=1e-9)  # radius ⟂ tangent
+
+
+def test_interior_construction_poles_lie_on_polar(ex):
+    ex.set(**{"P x": 0.4, "P y": 0.3})
+    assert sum(a.get_visible() for a in ex.tan_art) == 4
+    pol = ex.polar_art.get_line()
+    for a in ex.cpts_art[4:]:
+        assert a.get_visible()
+        assert np.dot(a.get_point(), pol) == pytest.approx(0.0, abs=1e-9 * np.abs(a.get_point()).max())
+
+
+def test_inertia_polar_is_axis_of_percussion(ex):
+    # imaginary circle of radius ρ = radius of gyration: polar of a point at distance d
+    # lies on the other side of the centre at distance ρ²/d (thesis 5.68)
+    ex.set(conic="inertia (imaginary circle)", a=0.8, **{"P x": 2.0, "P y": 0.0})
+    assert ex.readout_values["conic"] == "imaginary circle"
+    pol = ex.polar_art.get_line()
+    x_line = pol[2] / pol[1]             # vertical line: tz - x fy = 0
+    assert x_line == pytest.approx(-0.8 ** 2 / 2.0)
+    assert not any(a.get_visible() for a in ex.tan_art)
+
+
+def test_line_pole_and_invariance(ex):
+    ex.set(**{"line angle (deg)": 90.0, "line offset": 0.5})   # vertical line x = -0.5
+    M = ex.M_art.get_line()
+    assert np.dot([0.0, 0.5, 1.0], M) == pytest.approx(0.0)    # (−0.5, 0) lies on it
+    # pole of the line x = -0.5 w.r.t. the circle r = 1.5: (-r²/0.5, 0)
+    assert ex.readout_values["pole of M"] == pytest.approx((-4.5, 0.0))
+    assert ex.readout_values["P·M"] == pytest.approx(ex.readout_values["pole(M)·polar(P)"])
+
+
+@pytest.mark.parametrize("conic", CONICS)
+def test_every_conic_draws(ex, conic):
+    for P in [(2.0, 1.5), (0.1, 0.1), (0.0, 0.0)]:
+        ex.set(conic=conic, **{"P x": P[0], "P y": P[1]})
+        assert ex.message == ""
+        assert ex.readout_values["P·M"] == pytest.approx(ex.readout_values["pole(M)·polar(P)"])
+        ex.fig.canvas.draw()
+
+
+def test_drag_moves_the_point(ex):
+    ex.fig.canvas.draw()
+    canvas = ex.fig.canvas
+    x0, y0 = ex.ax.transData.transform([2.0, 1.5])
+    x1, y1 = ex.ax.transData.transform([-1.0, 2.5])
+    canvas.callbacks.process("button_press_event",
+                             MouseEvent("button_press_event", canvas, x0 + 2, y0 - 2, button=1))
+    canvas.callbacks.process("motion_notify_event", MouseEvent("motion_notify_event", canvas, x1, y1))
+    canvas.callbacks.process("button_release_event",
+                             MouseEvent("button_release_event", canvas, x1, y1, button=1))
+    assert ex.values["P x"] == pytest.approx(-1.0, abs=0.02)
+    assert ex.values["P y"] == pytest.approx(2.5, abs=0.02)
+    assert xy(ex.P_art.get_point()) == pytest.approx([ex.values["P x"], ex.values["P y"]])
+    # a move without a press on the point does nothing
+    canvas.callbacks.process("motion_notify_event", MouseEvent("motion_notify_event", canvas, x0, y0))
+    assert ex.values["P x"] == pytest.approx(-1.0, abs=0.02)
