@@ -1,0 +1,118 @@
+"""Scenes "tree" (thesis Fig 9.1) and "constrained-tree" (Fig 9.2).
+
+Nine uniform links (mass ``mass``, length ``length``, centre of mass at
+mid-link, ``J = m L²/12``) joined by revolute joints at their parents' tips,
+with the topology of Fig 9.1: body 1 is the root (pinned at the origin),
+bodies 2-3-4 and 5-6-7 are two branches from body 1's tip, body 8 branches
+from body 6 and body 9 from body 1.  In the default pose (absolute link
+angles 90°, 135°, 90°, 45° | 45°, 90°, 135° | 225° | 90°) the tips of bodies
+4 and 7 meet, and so do the tips of bodies 8 and 9: the "constrained-tree"
+closes both loops there with pin contacts (Fig 9.2: ``G`` of 9.49), leaving
+9 - 2·2 = 5 degrees of freedom.
+
+Quantities (0-based body order, global origin): ``C`` (9.1), ``Dinv`` (9.13),
+``qdd`` (9.39/9.43), ``qdd_direct`` (9.48), ``a`` (body accelerations); for the
+constrained tree also ``G`` (9.49), ``Upsilon`` (9.51), ``u``, ``F`` (contact
+forces, one wrench per contact, 9.71), ``xi`` and ``cond``.
+
+Examples
+--------
+>>> res = tree()
+>>> len(res.quantities["qdd"])
+9
+>>> ct = constrained_tree()
+>>> np.array(ct.quantities["G"]).astype(int)[0]
+array([ 0,  0,  0,  1,  0,  0, -1,  0,  0])
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..errors import SceneError
+from . import SceneResult, register
+
+__all__ = ["tree", "constrained_tree", "tree_model", "FIG91_PARENTS", "FIG91_ANGLES"]
+
+#: Parents of Fig 9.1 (0-based; -1 is the ground).
+FIG91_PARENTS = (-1, 0, 1, 2, 0, 4, 5, 5, 0)
+#: Absolute link angles (degrees) of the default pose, in which both loops of Fig 9.2 close.
+FIG91_ANGLES = (90.0, 135.0, 90.0, 45.0, 45.0, 90.0, 135.0, 225.0, 90.0)
+_QD_PATTERN = np.array([1.0, -0.5, 0.3, 0.2, -0.4, 0.6, -0.3, 0.5, 0.1])
+
+
+def tree_model(mass=1.0, length=1.0, g=9.81, contacts=()):
+    """The nine-link tree of Fig 9.1 (optionally with contacts)."""
+    from ..model import Body, Joint, Model
+
+    for name, val in (("mass", mass), ("length", length)):
+        if not (np.isfinite(val) and val > 0):
+            raise SceneError(f"{name} must be positive, got {val!r}")
+    L = float(length)
+    bodies = [Body(mass, (L / 2, 0.0), mass * L * L / 12, name=f"body{i + 1}") for i in range(9)]
+    joints = [Joint("revolute", (0.0 if p < 0 else L, 0.0, 0.0), name=f"joint{i + 1}")
+              for i, p in enumerate(FIG91_PARENTS)]
+    return Model(bodies, joints, FIG91_PARENTS, gravity=(0.0, -float(g)), contacts=contacts)
+
+
+def _default_q():
+    th = np.radians(FIG91_ANGLES)
+    return np.array([th[i] - (th[p] if p >= 0 else 0.0) for i, p in enumerate(FIG91_PARENTS)])
+
+
+def _tolist(x):
+    return np.asarray(x, dtype=float).tolist()
+
+
+@register("tree")
+def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float = 1.0) -> SceneResult:
+    """The open tree of Fig 9.1 in the default pose, joint speeds ``speed × pattern``, no torques."""
+    from ..algorithms.stacked import adjacency, direct_accelerations, stacked_solve, tree_mobilities, trunk
+
+    model = tree_model(mass, length, g)
+    q = _default_q()
+    qd = speed * _QD_PATTERN
+    tau = np.zeros(9)
+    sol = stacked_solve(model, q, qd, tau)
+    Lam, b = tree_mobilities(model, sol.data, tau, sol.articulated)
+    a_direct = direct_accelerations(sol, Lam, b)
+    qdd_direct = sol.T.T @ (a_direct - sol.C @ a_direct - sol.kappa)
+    C = adjacency(model.parents)
+    quantities = {"C": _tolist(C), "Dinv": _tolist(trunk(C)), "qdd": _tolist(sol.qdd),
+                  "qdd_direct": _tolist(qdd_direct), "a": _tolist(sol.a.reshape(9, 3)),
+                  "f": _tolist(sol.f.reshape(9, 3))}
+    return SceneResult("tree", dict(mass=mass, length=length, g=g, speed=speed), model,
+                       state={"q": _tolist(q), "qd": _tolist(qd), "tau": _tolist(tau)},
+                       quantities=quantities, extra={"solution": sol})
+
+
+@register("constrained-tree")
+def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float = 1.0) -> SceneResult:
+    """The tree of Fig 9.2: pins between the tips of bodies 4 and 7 and of bodies 8 and 9.
+
+    The joint speeds are ``speed × pattern`` projected onto the velocities the
+    loops allow (least-squares correction).
+    """
+    from ..algorithms.loops import loop_solve
+    from ..algorithms.stacked import blocks
+    from ..contacts import Contact, contact_matrix, stacked_contact_spaces
+    from ..kinematics import kinematics
+
+    L = float(length)
+    contacts = (Contact("pin", 3, 6, (L, 0.0), (L, 0.0), name="4-7"),
+                Contact("pin", 7, 8, (L, 0.0), (L, 0.0), name="8-9"))
+    model = tree_model(mass, length, g, contacts)
+    q = _default_q()
+    d = kinematics(model, q)
+    _, B = stacked_contact_spaces(contacts, d.pose)
+    Jb = np.concatenate([d.jacobian(i) for i in range(9)], 0)
+    Jc = B.T @ blocks(contact_matrix(contacts, 9)) @ Jb
+    qd = speed * _QD_PATTERN
+    qd = qd - np.linalg.pinv(Jc) @ (Jc @ qd)
+    tau = np.zeros(9)
+    sol = loop_solve(model, q, qd, tau)
+    quantities = {"G": _tolist(sol.G), "Upsilon": _tolist(sol.Upsilon), "qdd": _tolist(sol.qdd),
+                  "a": _tolist(sol.a.reshape(9, 3)), "u": _tolist(sol.u.reshape(9, 3)),
+                  "F": _tolist(sol.F.reshape(-1, 3)), "xi": _tolist(sol.xi), "cond": float(sol.cond)}
+    return SceneResult("constrained-tree", dict(mass=mass, length=length, g=g, speed=speed), model,
+                       state={"q": _tolist(q), "qd": _tolist(qd), "tau": _tolist(tau)},
+                       quantities=quantities, extra={"solution": sol})
