@@ -11,7 +11,8 @@ toggle overlays drawn with :mod:`planargeo.draw`:
   along the percussion axis and the reaction through the joint,
 * the articulated inertias ``A_i`` (3.38) as conics.
 
-*Play* integrates the motion ahead of time (with a progress bar), then
+*Simulate* integrates the motion ahead of time with
+:func:`planargeo.simulate.simulate` (with a progress bar), then *play*
 animates it; the readout shows the energy and its drift.
 """
 from __future__ import annotations
@@ -25,9 +26,9 @@ from matplotlib.lines import Line2D
 from ..algorithms.aba import articulated_body
 from ..draw.artists import ConicArtist, LineArtist, PointArtist
 from ..draw.style import COLORS, setup_axes
-from ..errors import InputError
+from ..errors import InputError, SingularConfigurationError
 from ..model import Body, Joint, Model
-from ..screws import kinetic_energy
+from ..simulate import energy
 from ..subspaces import percussion_space
 from .base import Explorer, Step
 
@@ -61,12 +62,9 @@ def chain_for(n: int, joints: str = "revolute", gravity: bool = True, length: fl
 
 
 def _energy(model: Model, data) -> tuple[float, float]:
-    """Kinetic and potential energy of a kinematics workspace (single state)."""
-    ke = float(np.sum(kinetic_energy(data.I, data.v)))
-    m = model.arrays()["mass"]
-    g = np.asarray(model.gravity)
-    pe = float(-np.sum(m * (data.com @ g)))
-    return ke, pe
+    """Kinetic and potential energy of an articulated-body workspace (single state)."""
+    T, V = energy(model, data.q, data.qd)
+    return float(T), float(V)
 
 
 class ChainExplorer(Explorer):
@@ -281,32 +279,25 @@ class ChainExplorer(Explorer):
         self.progress.value = float(frac)
 
 
-def _integrate(model, q0, qd0, tau, times, progress=None):
-    """Fixed-step RK4 on :func:`planargeo.algorithms.aba.forward_dynamics` (local, minimal).
+def _integrate(model, q0, qd0, tau, times, progress=None, chunks: int = 10):
+    """Integrate with :func:`planargeo.simulate.simulate` in ``chunks`` pieces (for the progress bar).
 
-    Substeps of at most 2 ms between output frames; ``progress(frac)`` is
-    called once per frame.
+    ``times`` are equally spaced output frames starting at 0; returns
+    ``(t, q, qd)`` sampled at them.
     """
-    from ..algorithms.aba import forward_dynamics
+    from ..simulate import simulate
 
-    def f(q, qd):
-        return qd, forward_dynamics(model, q, qd, tau)
-
-    q, qd = np.array(q0, float), np.array(qd0, float)
-    Q, QD = [q.copy()], [qd.copy()]
-    for k in range(1, len(times)):
-        dt_frame = times[k] - times[k - 1]
-        m = max(1, int(math.ceil(dt_frame / 0.002)))
-        h = dt_frame / m
-        for _ in range(m):
-            k1q, k1v = f(q, qd)
-            k2q, k2v = f(q + 0.5 * h * k1q, qd + 0.5 * h * k1v)
-            k3q, k3v = f(q + 0.5 * h * k2q, qd + 0.5 * h * k2v)
-            k4q, k4v = f(q + h * k3q, qd + h * k3v)
-            q = q + h / 6 * (k1q + 2 * k2q + 2 * k3q + k4q)
-            qd = qd + h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v)
-        Q.append(q.copy())
-        QD.append(qd.copy())
+    n = len(times) - 1
+    dt = float(times[1] - times[0])
+    bounds = np.unique(np.linspace(0, n, min(chunks, n) + 1).round().astype(int))
+    Q, QD = [np.array(q0, float)], [np.array(qd0, float)]
+    for k0, k1 in zip(bounds[:-1], bounds[1:]):
+        r = simulate(model, Q[-1], QD[-1], (k1 - k0) * dt, tau=tau, dt=dt, progress=False)
+        if r.status != "ok":
+            raise SingularConfigurationError(f"simulation stopped at t = {times[k0] + r.t[-1]:.3g} s: "
+                                             f"{r.message}")
+        Q.extend(r.q[1:k1 - k0 + 1])
+        QD.extend(r.qd[1:k1 - k0 + 1])
         if progress is not None:
-            progress(k / (len(times) - 1))
+            progress(k1 / n)
     return np.asarray(times), np.asarray(Q), np.asarray(QD)
