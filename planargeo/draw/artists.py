@@ -142,7 +142,7 @@ def _arc_glyph(center, radius, ccw: bool, npts: int = 40):
     end, te = arc[-1], t[-1]
     tang = np.array([-np.sin(te), np.cos(te)]) * (1.0 if ccw else -1.0)
     norm = np.array([np.cos(te), np.sin(te)])
-    h = max(3.0, 0.45 * radius)
+    h = min(max(3.0, 0.45 * radius), 6.0)
     head = np.array([end + tang * h, end - 0.5 * h * norm, end + 0.5 * h * norm])
     return arc, head
 
@@ -159,7 +159,7 @@ class _Base(martist.Artist):
         self.set_zorder(zorder)
         self.set_in_layout(False)
         self._children = []
-        self._text = Text(0, 0, "" if text is None else str(text))
+        self._text = Text(0, 0, "" if text is None else str(text), fontsize=8, va="bottom")
         self._text.set_transform(IdentityTransform())
         self._text_offset = np.asarray(text_offset, dtype=float)
         self._add_child(self._text)
@@ -188,7 +188,7 @@ class _Base(martist.Artist):
         for c in self._children:
             if c.axes is None and not isinstance(c, Text):
                 c.axes = ax
-            if c.get_clip_path() is None and ax is not None:
+            if c.get_clip_path() is None and ax is not None and not isinstance(c, Text):
                 c.set_clip_path(ax.patch)
             c.set_alpha(self.get_alpha())
         self._on_axes(ax)
@@ -234,7 +234,7 @@ class PointArtist(_Base):
         Style role (colour), see :mod:`planargeo.draw.style`.
     glyph_scale : float
         Radius of the rotation arc in points per unit ``|w|`` (clamped to
-        [3, 30] points).  For an ideal point, arrow length in points per unit
+        [4, 16] points).  For an ideal point, arrow length in points per unit
         speed (clamped to [12, 40]).
     glyph : bool
         Draw the rotation / translation glyph (the marker alone otherwise).
@@ -242,9 +242,10 @@ class PointArtist(_Base):
         Label drawn next to the pole.
     """
 
-    def __init__(self, point, *, role="twist", glyph_scale=10.0, glyph=True, text=None,
-                 text_offset=(8.0, 8.0), color=None, markersize=None, zorder=4):
-        super().__init__(text, text_offset, zorder)
+    def __init__(self, point, *, role="twist", glyph_scale=6.0, glyph=True, text=None,
+                 text_offset=None, color=None, markersize=None, zorder=4):
+        super().__init__(text, (0.0, 0.0) if text_offset is None else text_offset, zorder)
+        self._auto_offset = text_offset is None
         st = _style(role)
         self._color = color or st["color"]
         self._p = _vec(point, "point")
@@ -299,11 +300,14 @@ class PointArtist(_Base):
             out.append(self._marker)
             disp = ax.transData.transform(xy)
             if self._glyph:
-                r = float(np.clip(self._glyph_scale * abs(p[2]), 3.0, 30.0)) * pts
+                r = float(np.clip(self._glyph_scale * abs(p[2]), 4.0, 16.0)) * pts
                 arc, head = _arc_glyph(disp, r, ccw=p[2] > 0)
                 self._arc.set_data(arc[:, 0], arc[:, 1])
                 self._head.set_xy(head)
                 out += [self._arc, self._head]
+            if self._auto_offset:
+                rr = float(np.clip(self._glyph_scale * abs(p[2]), 4.0, 16.0)) if self._glyph else 2.0
+                self._text_offset = np.array([0.75 * rr + 3.0, 0.75 * rr + 3.0])
             out += self._place_text(disp, renderer)
             return out
         # ideal point: translation velocity (a, b); the point lies in direction (-b, a)
@@ -320,9 +324,11 @@ class PointArtist(_Base):
         L = float(np.clip(self._glyph_scale * np.hypot(a, b), 12.0, 40.0)) * pts
         base = cd + n * (s - 14 * pts)
         self._arrow.set_positions(tuple(base - t * L / 2), tuple(base + t * L / 2))
-        self._inf.set_position(tuple(base - n * 8 * pts))
+        self._inf.set_position(tuple(base - t * (L / 2 + 7 * pts)))
         out += [self._arrow, self._inf]
-        out += self._place_text(base + t * L / 2, renderer)
+        if self._text.get_text():
+            self._text.set_position(tuple(base - n * 16 * pts))
+            out.append(self._text)
         return out
 
 
@@ -416,7 +422,10 @@ class LineArtist(_Base):
             self._head.set_xy(head)
             out += [self._arc, self._head]
             if self._text.get_text():
-                self._text.set_position((cx, cy))
+                right = horiz == "right"
+                self._text.set_position((cx - r - 4 * pts, cy) if right else (cx + r + 4 * pts, cy))
+                self._text.set_horizontalalignment("right" if right else "left")
+                self._text.set_verticalalignment("center")
                 out.append(self._text)
             return out
         seg = clip_line(self._l, _view(ax))

@@ -1,0 +1,219 @@
+"""Mechanism drawing: bodies, pins, sliders, ground, frames, internal forces.
+
+Bodies are drawn from their shapely polygons (world frame) or as a default
+rounded link between two points.  Internal and contact forces are drawn as
+lines (:class:`~planargeo.draw.artists.LineArtist`), with a joint's force
+split into its active part (along the percussion space ``T Q``) and its
+reaction part (``R μ``) by :func:`draw_joint_split`.
+"""
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.patches import Circle, Polygon, Rectangle
+
+from .artists import plot_line, plot_point
+from .style import COLORS, LINEWIDTHS
+
+__all__ = ["link_polygon", "draw_body", "draw_link", "draw_pin", "draw_ground", "draw_slider",
+           "draw_frame", "draw_com", "draw_joint_split", "transform_shape"]
+
+
+def _ax(ax):
+    if ax is None:
+        import matplotlib.pyplot as plt
+
+        ax = plt.gca()
+    return ax
+
+
+def link_polygon(p, q, width=0.25):
+    """A rounded link (stadium) between Euclidean points ``p`` and ``q`` as a shapely polygon."""
+    from shapely.geometry import LineString, Point as SPoint
+
+    p, q = tuple(map(float, p)), tuple(map(float, q))
+    geom = SPoint(p) if p == q else LineString([p, q])
+    return geom.buffer(width / 2, quad_segs=12)
+
+
+def transform_shape(shape, pose):
+    """A shapely shape given in a body frame, moved to world by ``pose = (x, y, θ)``."""
+    from shapely import affinity
+
+    x, y, th = (float(v) for v in pose)
+    return affinity.translate(affinity.rotate(shape, th, origin=(0, 0), use_radians=True), x, y)
+
+
+def draw_body(shape, ax=None, *, color=None, alpha=0.35, edgecolor="#1f3a4d", zorder=1, label=None):
+    """Fill a shapely polygon (or multipolygon) in world coordinates; returns the patches."""
+    ax = _ax(ax)
+    geoms = getattr(shape, "geoms", [shape])
+    out = []
+    for g in geoms:
+        xy = np.asarray(g.exterior.coords)
+        patch = Polygon(xy, closed=True, facecolor=color or COLORS["body"], alpha=alpha,
+                        edgecolor=edgecolor, linewidth=LINEWIDTHS["body"], zorder=zorder)
+        ax.add_patch(patch)
+        out.append(patch)
+        for hole in g.interiors:
+            h = Polygon(np.asarray(hole.coords), closed=True, facecolor="white",
+                        edgecolor=edgecolor, linewidth=LINEWIDTHS["body"], zorder=zorder)
+            ax.add_patch(h)
+            out.append(h)
+    if label is not None:
+        c = shape.representative_point()
+        out.append(ax.text(c.x, c.y, label, ha="center", va="center", fontsize=7,
+                           color="#1f3a4d", zorder=zorder + 0.5))
+    return out
+
+
+def draw_link(p, q, ax=None, *, width=0.25, **kw):
+    """A default rounded link between two Euclidean points."""
+    return draw_body(link_polygon(p, q, width), ax, **kw)
+
+
+def draw_pin(xy, ax=None, *, radius=0.06, zorder=6):
+    """A revolute joint: white disc with a dark rim."""
+    ax = _ax(ax)
+    c = Circle(tuple(map(float, xy)), radius, facecolor="white", edgecolor="#222222",
+               linewidth=1.0, zorder=zorder)
+    ax.add_patch(c)
+    return c
+
+
+def draw_ground(xy, ax=None, *, width=0.8, angle=0.0, depth=0.12, n=7, zorder=1):
+    """A ground line with hatching below it (``angle`` of the line in radians)."""
+    ax = _ax(ax)
+    xy = np.asarray(xy, float)
+    e = np.array([np.cos(angle), np.sin(angle)])
+    nrm = np.array([-e[1], e[0]])
+    a, b = xy - e * width / 2, xy + e * width / 2
+    out = ax.plot(*np.column_stack([a, b]), color=COLORS["ground"], lw=1.2, zorder=zorder)
+    for t in np.linspace(0, 1, n):
+        s = a + (b - a) * t
+        out += ax.plot([s[0], s[0] - (e[0] + nrm[0]) * depth], [s[1], s[1] - (e[1] + nrm[1]) * depth],
+                       color=COLORS["ground"], lw=0.7, zorder=zorder)
+    return out
+
+
+def draw_slider(xy, direction, ax=None, *, size=(0.35, 0.2), track=1.6, zorder=3):
+    """A prismatic joint: a block on a track along ``direction`` (the track is hatched ground)."""
+    ax = _ax(ax)
+    xy = np.asarray(xy, float)
+    d = np.asarray(direction, float)
+    ang = np.arctan2(d[1], d[0])
+    w, h = size
+    out = draw_ground(xy - np.array([-d[1], d[0]]) / np.hypot(*d) * h / 2, ax, width=track,
+                      angle=ang)
+    rect = Rectangle((-w / 2, -h / 2), w, h, facecolor="#dddddd", edgecolor="#222222", lw=1.0,
+                     zorder=zorder)
+    from matplotlib.transforms import Affine2D
+
+    rect.set_transform(Affine2D().rotate(ang).translate(*xy) + ax.transData)
+    ax.add_patch(rect)
+    return out + [rect]
+
+
+def draw_frame(origin, angle=0.0, ax=None, *, length=0.5, labels=("$x$", "$y$"), color="#222222"):
+    """Coordinate axes arrows at ``origin`` rotated by ``angle``."""
+    ax = _ax(ax)
+    o = np.asarray(origin, float)
+    out = []
+    for k, lab in enumerate(labels):
+        a = angle + k * np.pi / 2
+        tip = o + length * np.array([np.cos(a), np.sin(a)])
+        out.append(ax.annotate("", xy=tuple(tip), xytext=tuple(o),
+                               arrowprops=dict(arrowstyle="-|>", color=color, lw=0.9,
+                                               shrinkA=0, shrinkB=0, mutation_scale=8)))
+        if lab:
+            out.append(ax.annotate(lab, xy=tuple(tip), xytext=(3, 3), textcoords="offset points",
+                                   fontsize=7, color=color))
+    return out
+
+
+def draw_com(xy, ax=None, *, radius=0.07, zorder=6):
+    """The centre-of-mass symbol (quartered disc)."""
+    from matplotlib.patches import Wedge
+
+    ax = _ax(ax)
+    xy = tuple(map(float, xy))
+    out = []
+    for k in range(4):
+        out.append(Wedge(xy, radius, 90 * k, 90 * (k + 1),
+                         facecolor="black" if k % 2 == 0 else "white",
+                         edgecolor="black", lw=0.6, zorder=zorder))
+        ax.add_patch(out[-1])
+    return out
+
+
+def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None):
+    """Draw a joint force ``f`` split into active ``T Q`` and reaction ``R μ`` parts (6.38).
+
+    ``s``, ``R``: the joint's motion and reaction spaces, ``A``: the inertia
+    (articulated) the decomposition uses.  Returns the artists and the split.
+    """
+    from ..subspaces import Decomposition
+
+    ax = _ax(ax)
+    dec = Decomposition(s, R, A)
+    Q, mu = dec.split_wrench(f)
+    active = dec.T @ Q
+    react = dec.R @ mu
+    out = {
+        "f": plot_line(f, ax, role="wrench", scale=scale, anchor=anchor, text=f"$f_{{{name}}}$"),
+        "active": plot_line(active, ax, role="momentum", scale=scale, anchor=anchor,
+                            text=f"$TQ_{{{name}}}$", linestyle=(0, (6, 2))),
+        "reaction": plot_line(react, ax, role="reaction", scale=scale, anchor=anchor,
+                              text=f"$R\\mu_{{{name}}}$", linestyle=(0, (2, 2))),
+    }
+    return out, (Q, mu, active, react)
+
+
+_ = plot_point
+
+
+def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pin_radius=0.05,
+               show_com=True, alpha=0.35):
+    """Draw a model's bodies and joints at the state in ``data`` (from :func:`planargeo.kinematics.kinematics`).
+
+    A body with a shapely ``shape`` is drawn from it (moved by its pose);
+    otherwise as a rounded link from its joint to each child's joint (or, for
+    a tip body, through its centre of mass).  Revolute joints are pins,
+    prismatic joints sliders; joints on the ground get hatching.
+    Returns a dict of lists of artists.
+    """
+    ax = _ax(ax)
+    pose = np.asarray(data.pose)
+    com = np.asarray(data.com)
+    origin = np.asarray(data.origin)
+    out = {"bodies": [], "joints": [], "com": []}
+    for i, body in enumerate(model.bodies):
+        if body.shape is not None:
+            shape = transform_shape(body.shape, pose[i])
+        else:
+            kids = model.children(i)
+            ends = [origin[k] for k in kids] or [pose[i, :2] + 2 * (com[i] - pose[i, :2])]
+            from shapely.ops import unary_union
+
+            shape = unary_union([link_polygon(pose[i, :2], e, width) for e in ends])
+        name = body.name if labels and body.name else (str(i + 1) if labels else None)
+        out["bodies"] += draw_body(shape, ax, alpha=alpha, label=None)
+        if labels:
+            c = shape.centroid
+            out["bodies"].append(ax.annotate(name, xy=(c.x, c.y), xytext=(0, -9),
+                                             textcoords="offset points", ha="center",
+                                             fontsize=7, color="#1f3a4d"))
+        if show_com:
+            out["com"] += draw_com(com[i], ax, radius=0.045)
+    for i, joint in enumerate(model.joints):
+        o = origin[i]
+        th = pose[i, 2]
+        if model.parents[i] == -1 and ground and joint.kind != "plane":
+            out["joints"] += draw_ground(o - [0, pin_radius * 1.6], ax, width=0.5, depth=0.08)
+        if joint.kind in ("revolute", "revolute_prismatic"):
+            out["joints"].append(draw_pin(pose[i, :2] if joint.kind == "revolute" else o, ax,
+                                          radius=pin_radius))
+        if joint.kind in ("prismatic", "revolute_prismatic"):
+            phi = th if joint.kind == "prismatic" else th
+            out["joints"] += draw_slider(pose[i, :2], (np.cos(phi), np.sin(phi)), ax,
+                                         size=(0.25, 0.14), track=0.9)
+    return out
