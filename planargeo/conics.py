@@ -69,8 +69,18 @@ def _check_invertible(M, name: str, what: str, rtol: float) -> None:
         raise err
 
 
+def _unit(v):
+    """Scale homogeneous vectors to unit length (zero and NaN rows pass through silently)."""
+    n = np.linalg.norm(v / np.maximum(np.abs(v).max(axis=-1, keepdims=True), np.finfo(float).tiny),
+                       axis=-1) * np.abs(v).max(axis=-1)
+    out = np.full(v.shape, np.nan)
+    np.divide(v, n[..., None], out=out, where=(n != 0)[..., None])
+    return np.where(np.isnan(n)[..., None] | (n != 0)[..., None], out, v)
+
+
 def _npoint(p):
     """Normalise points (w = 1, or unit length if ideal), letting NaN and zero through silently."""
+    p = _unit(p)
     n = np.linalg.norm(p, axis=-1)
     w = p[..., 2]
     den = np.where(w != 0, w, n)
@@ -205,7 +215,7 @@ def _classify1(S: np.ndarray, rtol: float) -> ConicType:
         a = np.linalg.eigvalsh(S[1:, 1:])
         amax = np.max(np.abs(a))
         circle = False
-        if abs(a[0]) <= rtol * amax or amax <= rtol * top:
+        if np.min(np.abs(a)) <= rtol * amax or amax <= rtol * top:
             kind = "parabola"
         elif a[0] * a[1] > 0:
             kind = "ellipse"
@@ -292,6 +302,31 @@ def centre(C) -> np.ndarray:
 
 
 # --------------------------------------------------------------------------- intersections, tangents
+def _intersections(C, l, rtol):
+    """Raw intersections (unit length rows) of validated lines with validated conics."""
+    C, l = np.broadcast_arrays(C, l[..., None, :])
+    l = l[..., 0, :]
+    k = np.argmax(np.abs(l), axis=-1)
+    eye = np.eye(3)
+    a = _unit(np.cross(l, eye[(k + 1) % 3]))
+    b = _unit(np.cross(l, eye[(k + 2) % 3]))
+    A, B, G = _quad(a, C, a), _quad(a, C, b), _quad(b, C, b)
+    D = B * B - A * G
+    scale = B * B + np.abs(A * G)
+    D = np.where((D < 0) & (D >= -rtol * scale), 0.0, D)
+    real = D >= 0
+    sq = np.sqrt(np.where(real, D, 0.0))
+    q = -(B + np.where(B < 0, -1.0, 1.0) * sq)
+    X1 = q[..., None] * a + A[..., None] * b
+    X2 = G[..., None] * a + q[..., None] * b
+    z1 = np.all(X1 == 0, axis=-1, keepdims=True)
+    z2 = np.all(X2 == 0, axis=-1, keepdims=True)
+    X1, X2 = np.where(z1, X2, X1), np.where(z2, X1, X2)
+    X = np.stack([X1, X2], axis=-2)
+    X = np.where(real[..., None, None], X, np.nan)
+    return _unit(X), real
+
+
 def line_conic_intersections(C, l, rtol: float = 1e-9):
     """The two points where line ``l`` meets conic ``C`` (thesis 5.38 on a line).
 
@@ -316,26 +351,7 @@ def line_conic_intersections(C, l, rtol: float = 1e-9):
     """
     C = _conic(C)
     l = as_vec3(l, "l")
-    C, l = np.broadcast_arrays(C, l[..., None, :])
-    l = l[..., 0, :]
-    k = np.argmax(np.abs(l), axis=-1)
-    eye = np.eye(3)
-    a = np.cross(l, eye[(k + 1) % 3])
-    b = np.cross(l, eye[(k + 2) % 3])
-    A, B, G = _quad(a, C, a), _quad(a, C, b), _quad(b, C, b)
-    D = B * B - A * G
-    scale = B * B + np.abs(A * G)
-    D = np.where((D < 0) & (D >= -rtol * scale), 0.0, D)
-    real = D >= 0
-    sq = np.sqrt(np.where(real, D, 0.0))
-    q = -(B + np.where(B < 0, -1.0, 1.0) * sq)
-    X1 = q[..., None] * a + A[..., None] * b
-    X2 = G[..., None] * a + q[..., None] * b
-    z1 = np.all(X1 == 0, axis=-1, keepdims=True)
-    z2 = np.all(X2 == 0, axis=-1, keepdims=True)
-    X1, X2 = np.where(z1, X2, X1), np.where(z2, X1, X2)
-    X = np.stack([X1, X2], axis=-2)
-    X = np.where(real[..., None, None], X, np.nan)
+    X, real = _intersections(C, l, rtol)
     return _npoint(X), real
 
 
@@ -380,12 +396,12 @@ def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
     if np.any(bad):
         raise DegenerateGeometryError(f"p is the vertex of the degenerate conic C{_first_index(bad)}: "
                                       "its polar is undefined")
-    X, real = line_conic_intersections(C, L, rtol=rtol)
+    X, real = _intersections(C, _unit(L), rtol)
     if on_interior == "raise" and not np.all(real):
         raise InputError(f"p has no real tangents to C{_first_index(~real)}: it lies inside the conic "
                          "(or C is imaginary); use on_interior='nan' to get NaN instead")
     T = _mv(C[..., None, :, :], X)
-    return _nline(T), X
+    return _nline(T), _npoint(X)
 
 
 @dataclass(frozen=True)
@@ -445,7 +461,8 @@ def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 
     C = _conic(C)
     p = as_vec3(p, "p")
     T, X = tangents_from_point(C, p, on_interior=on_interior, rtol=rtol)
-    Lj = np.cross(X[..., 0, :], X[..., 1, :])
+    Xu = _unit(X)
+    Lj = np.cross(Xu[..., 0, :], Xu[..., 1, :])
     same = np.all(Lj == 0, axis=-1, keepdims=True)
     Lj = np.where(same, T[..., 0, :], Lj)
     # orient like C p so that drawings and comparisons are consistent
@@ -499,14 +516,14 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
         if np.any(off):
             i = int(np.argwhere(off)[0][-1])
             raise InputError(f"lines[{i}] does not pass through p")
-    X, real = line_conic_intersections(C[..., None, :, :], lines, rtol=rtol)
+    X, real = _intersections(C[..., None, :, :], _unit(lines), rtol)
     distinct = real & ~np.all(np.cross(X[..., 0, :], X[..., 1, :]) == 0, axis=-1)
     if on_miss == "raise" and not np.all(distinct):
         i = int(np.argwhere(~distinct)[0][-1])
         raise InputError(f"lines[{i}] does not cut C in two distinct real points "
                          "(p is not interior, or the line is tangent)")
     T = _nline(_mv(C[..., None, None, :, :], X))
-    poles = np.cross(T[..., 0, :], T[..., 1, :])
+    poles = _unit(np.cross(_unit(T[..., 0, :]), _unit(T[..., 1, :])))
     polar_ = np.cross(poles[..., 0, :], poles[..., 1, :])
     bad = np.all(polar_ == 0, axis=-1) & np.all(distinct, axis=-1)
     if np.any(bad):
@@ -514,7 +531,7 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
     s = np.einsum("...i,...i->...", polar_, _mv(C, p))
     polar_ = np.where((s < 0)[..., None], -polar_, polar_)
     P = np.broadcast_to(p, polar_.shape)
-    return InteriorConstruction(_npoint(P), _nline(lines), X, T, _npoint(poles), _nline(polar_))
+    return InteriorConstruction(_npoint(P), _nline(lines), _npoint(X), T, _npoint(poles), _nline(polar_))
 
 
 # --------------------------------------------------------------------------- duality
