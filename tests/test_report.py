@@ -1,0 +1,112 @@
+"""``planargeo report``: tables, --json, --list, and one-line errors without tracebacks."""
+from __future__ import annotations
+
+import argparse
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from planargeo import report, scenes
+
+
+def run(*args):
+    return subprocess.run([sys.executable, "-m", "planargeo.cli", "report", *args],
+                          capture_output=True, text=True, timeout=120)
+
+
+def call(*argv, capsys):
+    p = argparse.ArgumentParser()
+    report.add_arguments(p)
+    code = report.main(p.parse_args(list(argv)))
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_json_object_has_the_four_keys_and_scene_values(capsys):
+    code, out, err = call("two-body", "--set", "phi=0", "--set", "rho=1", "--json", capsys=capsys)
+    assert code == 0 and err == ""
+    obj = json.loads(out)
+    assert set(obj) == {"scene", "params", "state", "quantities"}
+    assert obj["scene"] == "two-body"
+    assert obj["params"] == {"m": 1.0, "rho": 1.0, "L": 1.0, "phi": 0.0}
+    assert isinstance(obj["params"]["rho"], float)          # int promoted to the default's float
+    # phi = 0: m_x = 2 m (7.20)
+    assert obj["quantities"]["m_x"] == pytest.approx(2.0)
+    assert np.array(obj["quantities"]["A1"]).shape == (3, 3)
+
+
+def test_json_over_subprocess_matches_scene_build():
+    r = run("mobility-example", "--set", "phi=0.3", "--set", "tau=2", "--json")
+    assert r.returncode == 0, r.stderr
+    obj = json.loads(r.stdout)
+    ref = scenes.build("mobility-example", phi=0.3, tau=2.0).quantities
+    assert obj["quantities"]["x_over_L"] == pytest.approx(ref["x_over_L"], rel=1e-15)
+    np.testing.assert_allclose(obj["quantities"]["Lambda2_inv"], ref["Lambda2_inv"])
+
+
+def test_table_lists_parameters_state_and_quantities(capsys):
+    code, out, _ = call("horizontal-chain", "--set", "n=3", "--set", "lam=2", capsys=capsys)
+    assert code == 0
+    assert out.startswith("scene: horizontal-chain")
+    for word in ("parameters", "state", "quantities", "d_over_L", "mx_over_m", "my_over_m", "Az_over_m_rho2"):
+        assert word in out
+    line = next(l for l in out.splitlines() if l.strip().startswith("d_over_L"))
+    assert float(line.split()[-1]) == pytest.approx(2 / 3, rel=1e-5)
+
+
+def test_list_shows_every_scene_and_its_parameters(capsys):
+    code, out, _ = call("--list", capsys=capsys)
+    assert code == 0
+    for name in scenes.names():
+        assert any(l.startswith(name + ":") or l == name for l in out.splitlines())
+    assert "horizontal-chain: n=4, lam=2.0" in out
+    code, out, _ = call("--list", "--json", capsys=capsys)
+    listing = json.loads(out)["scenes"]
+    assert listing["mobility-example"] == {"m": 1.0, "rho": 0.5, "L": 1.0, "phi": np.pi / 4, "tau": 1.0}
+
+
+@pytest.mark.parametrize("args, code, msg", [
+    (("no-such-scene",), 1, "scene must be one of"),
+    (("two-body", "--set", "mass=2"), 1, "has no parameter 'mass'"),
+    (("two-body", "--set", "m=-1"), 1, "m must be positive"),
+    (("horizontal-chain", "--set", "n=0"), 1, "n must be a positive integer"),
+    (("mobility-example", "--set", "tau=0"), 1, "tau must be non-zero"),
+    (("two-body", "--set", "phi"), 2, "--set expects NAME=VALUE"),
+    ((), 2, "a scene name is required"),
+])
+def test_errors_are_one_line_without_traceback(args, code, msg):
+    r = run(*args)
+    assert r.returncode == code
+    assert msg in r.stderr
+    assert "Traceback" not in r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1
+    assert r.stdout == ""
+
+
+@pytest.mark.parametrize("text, value", [
+    ("3", 3), ("-2", -2), ("2.5", 2.5), ("1e-3", 1e-3), ("true", True), ("False", False),
+    ("none", None), ("[1, 2]", [1, 2]), ("revolute", "revolute"), ("[oops", "[oops"),
+])
+def test_parse_value(text, value):
+    assert report.parse_value(text) == value
+
+
+def test_parse_value_nan_and_inf():
+    assert np.isnan(report.parse_value("nan"))
+    assert report.parse_value("-inf") == -np.inf
+
+
+def test_parse_sets_last_wins_and_keeps_int_parameters_int():
+    assert report.parse_sets(["n=2", "n=5", "lam=3"], {"n": 4, "lam": 2.0}) == {"n": 5, "lam": 3.0}
+    assert type(report.parse_sets(["n=2"], {"n": 4})["n"]) is int
+    with pytest.raises(ValueError, match="NAME=VALUE"):
+        report.parse_sets(["=3"])
+
+
+def test_to_plain_converts_numpy():
+    out = report.to_plain({"a": np.float64(1.5), "b": np.arange(3), "c": (np.int64(2), None), "d": np.bool_(True)})
+    assert out == {"a": 1.5, "b": [0, 1, 2], "c": [2, None], "d": True}
+    json.dumps(out)
