@@ -284,3 +284,13 @@ def test_bad_inputs():
         Wrench([0.0, 0.0, 0.0]).line
     with pytest.raises(ShapeError, match="inertia must have shape"):
         inertia_at(np.eye(2), [0.0, 0.0])
+
+
+def test_pole_and_line_as_geometry_objects():
+    geometry = pytest.importorskip("planargeo.geometry")
+    v = Twist.rotation([1.0, 2.0], 3.0)
+    assert isinstance(v.pole, geometry.Point)
+    np.testing.assert_allclose(np.asarray(v.pole.array), v.array)
+    f = Wrench.force([0.0, 1.0], [2.0, 0.0])
+    assert isinstance(f.line, geometry.Line) and isinstance(f.polar, geometry.Line)
+    np.testing.assert_allclose(np.asarray(f.line.array), f.array)
