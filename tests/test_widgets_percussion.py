@@ -1,0 +1,86 @@
+"""PercussionExplorer: axis of percussion and sweet spot against 5.64-5.68 closed forms."""
+import math
+
+import numpy as np
+import pytest
+
+from planargeo.widgets.percussion import PercussionExplorer, parse_polygon
+from planargeo.errors import InvalidPolygonError
+
+# uniform rod preset: box 1.0 x 0.08, centre (0.5, 0):  ρ² = (1 + 0.08²) / 12
+RHO2 = (1.0 + 0.08 ** 2) / 12.0
+
+
+@pytest.fixture
+def ex():
+    return PercussionExplorer(display="agg", shape="uniform rod")
+
+
+def test_rod_pivot_at_end(ex):
+    r = ex.readout_values
+    assert r["radius of gyration ρ"] == pytest.approx(math.sqrt(RHO2))
+    assert r["centre of mass"] == pytest.approx((0.5, 0.0), abs=1e-12)
+    assert r["l = d + ρ²/d (5.67)"] == pytest.approx(0.5 + RHO2 / 0.5)    # ≈ 2/3 of the rod
+    assert r["force for α: m d α (5.66)"] == pytest.approx(1.0 * 0.5 * 10.0)
+    f = ex.axis_art.get_line()                  # vertical line x = l:  tz - x fy = 0
+    assert f[0] == pytest.approx(0.0, abs=1e-12)
+    assert f[2] / f[1] == pytest.approx(0.5 + RHO2 / 0.5)
+
+
+@pytest.mark.parametrize("pole", [(-0.4, 0.3), (1.2, -0.5), (0.5, 0.9)])
+def test_axis_far_side_at_rho2_over_d(ex, pole):
+    ex.set(**{"pole x": pole[0], "pole y": pole[1]})
+    c = np.array([0.5, 0.0])
+    P = np.array(pole)
+    d = np.linalg.norm(P - c)
+    f = ex.axis_art.get_line()
+    F = np.hypot(f[0], f[1])
+    # signed distance of the centre of mass and of the pole from the axis (5.23)
+    dist_c = np.dot([c[1], -c[0], 1.0], f) / F
+    dist_P = np.dot([P[1], -P[0], 1.0], f) / F
+    assert abs(dist_c) == pytest.approx(RHO2 / d)                   # (5.68)
+    assert abs(dist_P) == pytest.approx(d + RHO2 / d)               # (5.67)
+    assert np.sign(dist_c) == np.sign(dist_P)                       # both on the same side: c between
+    assert np.dot(f[:2], P - c) == pytest.approx(0.0, abs=1e-12)    # axis ⟂ (pole - c)
+
+
+def test_pole_at_centre_gives_a_couple(ex):
+    ex.set(**{"pole x": 0.5, "pole y": 0.0})
+    f = ex.axis_art.get_line()
+    assert f[:2] == pytest.approx([0.0, 0.0], abs=1e-12) and f[2] != 0     # line at infinity
+    assert ex.readout_values["force for α: m d α (5.66)"] == "pure couple"
+    ex.fig.canvas.draw()
+
+
+def test_impact_at_sweet_spot_turns_about_the_grip(ex):
+    ex.set(drive="impact")
+    spot = 0.5 + RHO2 / 0.5
+    assert ex.readout_values["sweet spot of the grip"] == pytest.approx((spot, 0.0), abs=1e-12)
+    ex.controls["impact at"].value = spot
+    assert ex.readout_values["pole distance from grip"] == pytest.approx(0.0, abs=1e-9)
+    # elsewhere the body turns about another point on the axis: x = 0.5 - ρ²/(s - 0.5)
+    ex.controls["impact at"].value = 0.9
+    assert ex.readout_values["pole"] == pytest.approx((0.5 - RHO2 / 0.4, 0.0), abs=1e-12)
+    ex.fig.canvas.draw()
+
+
+def test_presets_and_custom_polygon(ex):
+    for name in ("bat", "disc", "L-shape"):
+        ex.controls["shape"].value = name
+        assert ex.message == ""
+        ex.fig.canvas.draw()
+    ex.set(shape="custom polygon", polygon="0,0; 1,0; 0.5,1")   # triangle: centroid (0.5, 1/3)
+    assert ex.readout_values["centre of mass"] == pytest.approx((0.5, 1 / 3))
+    good = dict(ex.readout_values)
+    ex.controls["polygon"].value = "0,0; 1,1; 1,0; 0,1"         # bow tie
+    assert "polygon" in ex.message and ex.readout_values == good
+    ex.controls["polygon"].value = "nonsense"
+    assert "polygon" in ex.message
+    ex.controls["polygon"].value = "0,0; 2,0; 2,1; 0,1"
+    assert ex.message == "" and ex.readout_values["centre of mass"] == pytest.approx((1.0, 0.5))
+
+
+def test_parse_polygon_errors():
+    with pytest.raises(InvalidPolygonError, match="polygon"):
+        parse_polygon("0,0; 1,1")
+    assert parse_polygon("0,0; 1,0; 0,1;").area == pytest.approx(0.5)
