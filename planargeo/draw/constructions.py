@@ -16,6 +16,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..conics import (line_conic_intersections, polar, polar_construction_exterior,
+                      polar_construction_interior)
+from ..inertia import percussion_axis
 from ..projective import from_xy, join, meet, to_xy
 from .artists import _mat, _vec, plot_conic, plot_line, plot_point
 from .style import COLORS, style
@@ -67,31 +70,16 @@ def draw_dimension(ax, p, q, text, *, offset=0.0, color=None, fontsize=7):
 
 # --------------------------------------------------------------------------- conic helpers
 def line_conic_points(C, L) -> list[np.ndarray]:
-    """Real common points of line ``L`` and conic ``C`` (0, 1 or 2 homogeneous points).
-
-    The line is parametrised by its foot point and its ideal point,
-    ``X(t) = P0 + t D``, and ``X(t)ᵀ C X(t) = 0`` is solved for ``t``.
-    """
-    C = _mat(C, "C")
-    L = _vec(L, "L")
-    fx, fy, tz = L
-    F2 = fx * fx + fy * fy
-    P0 = np.array([-fx * tz / F2, -fy * tz / F2, 1.0])  # foot point [y, -x, 1]
-    D = np.array([fy, -fx, 0.0]) / np.sqrt(F2)          # the line's ideal point
-    a, b, c = D @ C @ D, 2 * (P0 @ C @ D), P0 @ C @ P0
-    if a == 0.0:
-        return [] if b == 0.0 else [P0 - (c / b) * D]
-    disc = b * b - 4 * a * c
-    if disc < 0:
-        return []
-    r = np.sqrt(disc)
-    return [P0 + ((-b - r) / (2 * a)) * D, P0 + ((-b + r) / (2 * a)) * D]
+    """Real common points of line ``L`` and conic ``C`` (0 or 2 homogeneous points; GEO's
+    :func:`planargeo.conics.line_conic_intersections`)."""
+    X, real = line_conic_intersections(_mat(C, "C"), _vec(L, "L"))
+    return [X[0], X[1]] if bool(real) else []
 
 
 def tangent_points(C, p) -> list[np.ndarray]:
     """Points where the tangents from ``p`` touch ``C``: the conic meets the polar ``C p`` (5.36)."""
     C = _mat(C, "C")
-    return line_conic_points(C, C @ _vec(p, "p"))
+    return line_conic_points(C, polar(C, _vec(p, "p")))
 
 
 # --------------------------------------------------------------------------- twist / wrench sums
@@ -152,22 +140,21 @@ def draw_tangent(C, q, ax=None, *, text=None):
     ax = _ax(ax)
     C, q = _mat(C, "C"), _vec(q, "q")
     return {"q": plot_point(q, ax, role="twist", glyph=False, text=text),
-            "tangent": plot_line(C @ q, ax, role="construct", scale=None)}
+            "tangent": plot_line(polar(C, q), ax, role="construct", scale=None)}
 
 
 def draw_polar_exterior(C, p, ax=None, *, names=("$P$", "$L = CP$")):
     """Polar of an exterior point (thesis 5.36, Fig. 5.2): tangents from ``p``; ``L`` joins their contacts."""
     ax = _ax(ax)
     C, p = _mat(C, "C"), _vec(p, "p")
-    L = C @ p
+    K = polar_construction_exterior(C, p)
     out = {"conic": plot_conic(C, ax, text="$C$"),
            "P": plot_point(p, ax, glyph=False, text=names[0]),
-           "L": plot_line(L, ax, role="wrench", scale=None, text=names[1])}
-    touch = tangent_points(C, p)
-    out["touch"] = touch
-    out["tangents"] = [plot_line(join(p, t), ax, role="construct", scale=None) for t in touch]
+           "L": plot_line(K.polar, ax, role="wrench", scale=None, text=names[1])}
+    out["construction"] = K
+    out["tangents"] = [plot_line(t, ax, role="construct", scale=None) for t in K.tangents]
     out["touch_marks"] = [ax.plot(*to_xy(t), "o", color=COLORS["construct"], ms=3.5, zorder=5)[0]
-                          for t in touch]
+                          for t in K.contacts]
     return out
 
 
@@ -181,24 +168,17 @@ def draw_polar_interior(C, p, ax=None, *, angles=(0.35, 1.9), names=("$P$", "$L 
     ax = _ax(ax)
     C, p = _mat(C, "C"), _vec(p, "p")
     pxy = to_xy(p)
+    lines = np.stack([join(p, from_xy(pxy + [np.cos(t), np.sin(t)])) for t in angles])
+    K = polar_construction_interior(C, p, lines=lines)
     out = {"conic": plot_conic(C, ax, text="$C$"),
-           "P": plot_point(p, ax, glyph=False, text=names[0])}
-    poles, chords = [], []
-    for k, th in enumerate(angles):
-        ideal = from_xy(pxy + [np.cos(th), np.sin(th)]) - from_xy(pxy)  # direction's ideal point
-        chord = join(p, ideal)
-        ends = line_conic_points(C, chord)
-        chords.append(plot_line(chord, ax, role="construct", scale=None))
-        tang = [C @ e for e in ends]
-        for e, t in zip(ends, tang):
-            plot_line(t, ax, role="construct", scale=None, linewidth=0.6)
-            ax.plot(*to_xy(e), "o", color=COLORS["construct"], ms=3, zorder=5)
-        R = meet(tang[0], tang[1])
-        poles.append(R)
-        plot_point(R, ax, glyph=False, role="accel", text=f"$R_{k + 1}$")
-    out["poles"] = poles
-    out["chords"] = chords
-    out["L"] = plot_line(join(poles[0], poles[1]), ax, role="wrench", scale=None, text=names[1])
+           "P": plot_point(p, ax, glyph=False, text=names[0]), "construction": K}
+    out["chords"] = [plot_line(ln, ax, role="construct", scale=None) for ln in K.lines]
+    for k in range(2):
+        for j in range(2):
+            plot_line(K.tangents[k, j], ax, role="construct", scale=None, linewidth=0.6)
+            ax.plot(*to_xy(K.chord_points[k, j]), "o", color=COLORS["construct"], ms=3, zorder=5)
+        plot_point(K.poles[k], ax, glyph=False, role="accel", text=f"$R_{k + 1}$")
+    out["L"] = plot_line(K.polar, ax, role="wrench", scale=None, text=names[1])
     return out
 
 
@@ -212,7 +192,7 @@ def draw_percussion(I, a, ax=None, *, names=("$a$", "$f = Ia$"), dims=True, scal
     """
     ax = _ax(ax)
     I, a = _mat(I, "inertia"), _vec(a, "a")
-    f = I @ a
+    f = percussion_axis(I, a)
     m = I[0, 0]
     c = np.array([I[1, 2], -I[0, 2]]) / m
     out = {"inertia": plot_conic(I, ax, role="inertia"),
