@@ -74,7 +74,7 @@ def test_pseudo_inverse_identities(j, A):
     U = reactive_acceleration_space(j.R, A)
     k = j.dof
     assert T.shape == (3, k) and U.shape == (3, 3 - k)
-    tol = 1e-8 * np.linalg.cond(A) * (1 + _mx(j.s) + _mx(j.R)) ** 2
+    tol = 1e-11 * np.linalg.cond(A) * (1 + _mx(j.s) + _mx(j.R)) ** 2
     np.testing.assert_allclose(j.s.T @ T, np.eye(k), atol=tol)            # (6.23), (6.32)
     np.testing.assert_allclose(j.R.T @ U, np.eye(3 - k), atol=tol)        # (6.22), (6.35)
     np.testing.assert_allclose(T.T @ U, 0.0, atol=tol)                    # (6.46)
@@ -93,7 +93,7 @@ def test_decomposition_round_trips(j, A, vals):
     f, a = np.array(vals[:3]), np.array(vals[3:])
     Q, mu = dec.split_wrench(f)
     psi, gamma = dec.split_twist(a)
-    tol = 1e-8 * np.linalg.cond(A) * (1 + _mx(f) + _mx(a)) * (1 + _mx(j.s)) ** 2
+    tol = 1e-11 * np.linalg.cond(A) * (1 + _mx(f) + _mx(a)) * (1 + _mx(j.s)) ** 2
     np.testing.assert_allclose(dec.join_wrench(Q, mu), f, atol=tol)      # (6.38)
     np.testing.assert_allclose(dec.join_twist(psi, gamma), a, atol=tol)  # (6.44)
     # the function projections agree with the class (6.61, 6.62)
@@ -123,7 +123,7 @@ def test_constrained_body_at_rest_against_lagrange_multipliers(j, I, vals):
     f = np.array(vals)
     a_ref, lam_ref = _kkt(I, j.R, f)
     dec = Decomposition.from_joint(j, I)
-    tol = 1e-8 * np.linalg.cond(I) * (1 + _mx(f)) * (1 + _mx(j.s)) ** 2
+    tol = 1e-11 * np.linalg.cond(I) * (1 + _mx(f)) * (1 + _mx(j.s)) ** 2
     np.testing.assert_allclose(effective_mobility(j.s, I) @ f if j.dof else np.zeros(3), a_ref, atol=tol)
     Q, mu = dec.split_wrench(f)
     psi, gamma = dec.split_twist(a_ref)
@@ -137,7 +137,7 @@ def test_constrained_body_at_rest_against_lagrange_multipliers(j, I, vals):
 def test_inertia_decompositions(j, I):
     Ia, Ib = inertia_decomposition(j.s, j.R, I)
     Ii = np.linalg.inv(I)
-    tol = 1e-8 * np.linalg.cond(I) * (1 + _mx(I)) * (1 + _mx(j.s)) ** 2
+    tol = 1e-11 * np.linalg.cond(I) * (1 + _mx(I)) * (1 + _mx(j.s)) ** 2
     np.testing.assert_allclose(Ia + Ib, I, atol=tol)                                 # (6.76)
     Ma, Mb = inverse_inertia_decomposition(j.s, j.R, I)
     np.testing.assert_allclose(Ma + Mb, Ii, atol=tol * _mx(Ii))            # (6.79)–(6.81)
@@ -269,3 +269,37 @@ def test_bad_shapes_and_values():
     dec = Decomposition.from_joint(revolute(), np.eye(3))
     with pytest.raises(errors.ShapeError, match=r"mu must have shape \(\.\.\., 2\)"):
         dec.join_wrench([1.0], [1.0, 2.0, 3.0])
+
+
+@given(joints(), inertias, st.lists(st.floats(-3, 3), min_size=12, max_size=12))
+def test_projective_equations_6_106_to_6_110_against_dense_solve(j, A, vals):
+    """One body on a joint whose base accelerates: f = A a + d, a = a_prev + s q̈ + κ, sᵀf = Q.
+
+    Dense reference (numpy, unknowns a, f, q̈) versus the decomposed solution
+    a = s Tᵀ A⁻¹ (T Q − d) + U Rᵀ (a_prev + κ) (6.108), f = T Q + R Uᵀ (A (a_prev + κ) + d) (6.109),
+    μ = Uᵀ A U γ + Uᵀ d (6.106a), ψ (6.107) and q̈ = Tᵀ (a − a_prev − κ) (6.110).
+    """
+    k = j.dof
+    d, base, Q = np.array(vals[0:3]), np.array(vals[3:6]), np.array(vals[6:6 + k])   # base = a_prev + κ
+    n = 6 + k
+    K = np.zeros((n, n))
+    rhs = np.zeros(n)
+    K[0:3, 0:3], K[0:3, 3:6], rhs[0:3] = A, -np.eye(3), -d            # A a − f = −d
+    K[3:6, 0:3], K[3:6, 6:], rhs[3:6] = np.eye(3), -j.s, base          # a − s q̈ = a_prev + κ
+    K[6:, 3:6], rhs[6:] = j.s.T, Q                                     # sᵀ f = Q
+    x = np.linalg.solve(K, rhs)
+    a_ref, f_ref, qdd_ref = x[0:3], x[3:6], x[6:]
+
+    dec = Decomposition.from_joint(j, A)
+    T, U, R, s = dec.T, dec.U, j.R, j.s
+    gamma = reactive_acceleration(R, base)                                         # (6.101)
+    psi = T.T @ np.linalg.solve(A, T @ Q - d)                                      # (6.107)
+    a = s @ psi + U @ gamma                                                        # (6.108)
+    mu = U.T @ A @ U @ gamma + U.T @ d                                             # (6.106a)
+    f = T @ Q + R @ mu                                                             # (6.109)
+    tol = 1e-12 * np.linalg.cond(A) * (1 + _mx(vals)) * (1 + _mx(s) + _mx(R)) ** 2 * (1 + _mx(A))
+    np.testing.assert_allclose(a, a_ref, atol=tol)
+    np.testing.assert_allclose(f, f_ref, atol=tol)
+    np.testing.assert_allclose(f, A @ a + d, atol=tol)
+    np.testing.assert_allclose(T.T @ (a - base), qdd_ref, atol=tol)                # (6.110)
+    np.testing.assert_allclose(reaction_force(U, f_ref), mu, atol=tol)            # (6.61b)
