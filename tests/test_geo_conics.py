@@ -330,7 +330,7 @@ def test_drawable_conic_polars_are_point_reflections(c, a, b, th, m, p, ideal):
     I = E - 2 * k * np.outer([0, 0, 1.0], [0, 0, 1.0])
     assert classify(I).reality == "imaginary"
     D = drawable_conic(m * I)
-    assert same_up_to_scale(D, E, tol=1e-8) if True else None           # 10.2.3: back to the real ellipse
+    assert same_up_to_scale(D, E, tol=1e-8)                             # 10.2.3: back to the real ellipse
     P = from_direction(p + [0.1, 0.0]) if ideal else from_xy(p)
     Lc, Ld = polar(I, P), polar(D, P)
     # reflect two points of the polar w.r.t. I through the centre: they lie on the polar w.r.t. D
