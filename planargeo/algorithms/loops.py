@@ -27,6 +27,8 @@ body; tree joints and contacts alike as analytic constraints), solved densely.
 """
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from ..contacts import Contact, contact_matrix, stacked_contact_spaces, validate_contacts
@@ -75,6 +77,18 @@ class LoopSolution:
 
     def __repr__(self):
         return f"LoopSolution(N={self.tree.N}, contacts={self.G.shape[0]}, cond={self.cond:.3g})"
+
+
+@functools.lru_cache(maxsize=256)
+def _contact_topology(parents: tuple, contacts: tuple):
+    """Cached ``G``, ``Υ`` and their 3×3 block forms for a tree and its contacts."""
+    N = len(parents)
+    G = contact_matrix(contacts, N)
+    Ups = branch_matrix(G, parents) if len(contacts) else np.zeros((0, N))
+    out = (G, Ups, blocks(G), blocks(Ups))
+    for x in out:
+        x.setflags(write=False)
+    return out
 
 
 def _contacts_of(model, contacts):
@@ -137,12 +151,9 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
     sol.tree = tree
     sol.contacts = cs
     # 1. preparatory work
-    G = contact_matrix(cs, N)
+    G, sol.Upsilon, G3, U3 = _contact_topology(tuple(model.parents), tuple(cs))
     sol.G = G
-    sol.Upsilon = branch_matrix(G, model.parents) if len(cs) else np.zeros((0, N))
     z, B = stacked_contact_spaces(cs, data.pose)
-    G3 = blocks(G)
-    U3 = blocks(sol.Upsilon)
     v = data.v.reshape(-1)
     # 2. open-loop accelerations and the tree's mobility
     u = tree.a

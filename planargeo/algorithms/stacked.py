@@ -34,6 +34,8 @@ array([1, 0, 0, 0, 1, 1, 0, 1, 0])
 """
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from .._validate import as_array
@@ -126,6 +128,16 @@ def trunk(C) -> np.ndarray:
     raise TopologyError("C contains a cycle (C^n is not zero): not a tree")
 
 
+@functools.lru_cache(maxsize=256)
+def _topology(parents: tuple) -> tuple[np.ndarray, np.ndarray]:
+    """Cached block adjacency and trunk matrices ``(C ⊗ 1_3, Δ^{-1} ⊗ 1_3)`` of a parent tuple."""
+    C = adjacency(parents)
+    C3, D3 = blocks(C), blocks(trunk(C))
+    C3.setflags(write=False)
+    D3.setflags(write=False)
+    return C3, D3
+
+
 def blocks(X, k: int = 3) -> np.ndarray:
     """Expand an ``n × m`` 0/±1 topology matrix into ``3n × 3m`` blocks (``X ⊗ 1_3``).
 
@@ -159,6 +171,11 @@ def reaction_basis(s) -> np.ndarray:
 def _inv_checked(M, what, exc=SingularConfigurationError):
     if M.size == 0:
         return M.copy()
+    if M.shape == (1, 1):
+        m = float(M[0, 0])
+        if not abs(m) > 0 or not np.isfinite(m):
+            raise exc(f"{what} is singular", float("inf"))
+        return np.array([[1.0 / m]])
     c = np.linalg.cond(M)
     if not np.isfinite(c) or c > 1e14:
         raise exc(f"{what} is singular", c)
@@ -176,30 +193,40 @@ def articulated_quantities(model: Model, data, tau):
     ``d = p + C^T T Q + C^T R U^T (A κ + d)``, with ``T = A S (S^T A S)^{-1}``
     (9.19) and ``U = A^{-1} R (R^T A^{-1} R)^{-1}`` (9.20).
 
-    Returns a dict of per-body lists ``A, d, s, R, T, U, P`` (``P = R U^T``).
+    Returns a dict of per-body lists ``A, d, s, T, P`` with ``P = R U^T = 1 - T s^T`` (7.8);
+    ``R`` and ``U`` themselves are available from :func:`quake_space`.
     """
     N = model.N
     I, p, kap = data.I, data.p, data.kappa
     A = [I[i].copy() for i in range(N)]
     d = [p[i].copy() for i in range(N)]
     s = [data.s(i) for i in range(N)]
-    R = [reaction_basis(si) for si in s]
-    T, U, P = [None] * N, [None] * N, [None] * N
+    T, P = [None] * N, [None] * N
+    eye3 = np.eye(3)
     for i in range(N - 1, -1, -1):
         Ai = A[i]
         sAs = s[i].T @ Ai @ s[i]
         T[i] = Ai @ s[i] @ _inv_checked(sAs, f"s^T A s of joint {i}")
-        # U = A^-1 R (R^T A^-1 R)^-1 written without A^-1 (A may be singular for
-        # point masses): U R^T = 1 - S T^T (6.75) and R^T U = 1 give U = (1 - S T^T) R
-        # for an orthonormal R; P = R U^T = 1 - T S^T (7.8).
-        U[i] = (np.eye(3) - s[i] @ T[i].T) @ R[i]
-        P[i] = R[i] @ U[i].T
+        # R U^T = 1 - T S^T (7.8): no reaction basis and no inverse of A needed
+        # (A may be singular for point masses)
+        P[i] = eye3 - T[i] @ s[i].T
         j = model.parents[i]
         if j >= 0:
             Qi = tau[model.q_slice(i)]
             A[j] = A[j] + P[i] @ Ai
             d[j] = d[j] + T[i] @ Qi + P[i] @ (Ai @ kap[i] + d[i])
-    return {"A": A, "d": d, "s": s, "R": R, "T": T, "U": U, "P": P}
+    return {"A": A, "d": d, "s": s, "T": T, "P": P}
+
+
+def quake_space(s, T, R=None):
+    """Reaction basis ``R`` and quake space ``U`` of one joint (thesis 9.20, 6.33).
+
+    ``U = A^{-1} R (R^T A^{-1} R)^{-1}`` is computed without ``A^{-1}``: from
+    ``U R^T = 1 - s T^T`` (6.75) and ``R^T U = 1``, ``U = (1 - s T^T) R`` for an
+    orthonormal ``R`` (:func:`reaction_basis`).
+    """
+    R = reaction_basis(s) if R is None else R
+    return R, (np.eye(3) - s @ T.T) @ R
 
 
 def _blockdiag(mats, rows, cols):
@@ -212,23 +239,24 @@ def _blockdiag(mats, rows, cols):
     return out
 
 
-def articulation_matrix(C3, R, U) -> np.ndarray:
+def articulation_matrix(C3, P) -> np.ndarray:
     """Articulation matrix ``L = (1 - C^T R U^T)^{-1}`` (thesis 9.31, 9.34).
 
-    ``C3`` is the block adjacency (3n×3n), ``R`` and ``U`` block-diagonal.
-    ``C^T R U^T`` is nilpotent, so the series (9.34) is finite; a direct
-    solve is used.
+    ``C3`` is the block adjacency (3n×3n) and ``P = {{R_i U_i^T}}`` the
+    block-diagonal projector (``R U^T = 1 - T S^T``, 7.8).  ``C^T P`` is
+    nilpotent, so the series (9.34) is finite; a direct solve is used.
 
     Examples
     --------
-    >>> C3 = blocks(adjacency([-1, 0])); R = np.eye(6); U = np.eye(6)
-    >>> articulation_matrix(C3, R, U)[3:, :3]          # no path from body 1 to body 2's row
-    array([[0., 0., 0.],
-           [0., 0., 0.],
-           [0., 0., 0.]])
+    >>> C3 = blocks(adjacency([-1, 0]))
+    >>> L = articulation_matrix(C3, np.eye(6))
+    >>> L[:3, 3:], L[3:, :3].any()                   # body 2's articulated load reaches body 1
+    (array([[1., 0., 0.],
+           [0., 1., 0.],
+           [0., 0., 1.]]), np.False_)
     """
     n = C3.shape[0]
-    return np.linalg.solve(np.eye(n) - C3.T @ R @ U.T, np.eye(n))
+    return np.linalg.solve(np.eye(n) - C3.T @ P, np.eye(n))
 
 
 class StackedSolution:
@@ -238,7 +266,8 @@ class StackedSolution:
     ----------
     C, Dinv : (3N, 3N) block adjacency and trunk matrices (9.1, 9.12)
     S, T : (3N, nq) joint axes and percussion spaces (9.9, 9.19)
-    R, U : (3N, 3N-nq) reaction and quake spaces (9.20)
+    P : (3N, 3N) block-diagonal ``R U^T = 1 - T S^T`` (7.8)
+    R, U : (3N, 3N-nq) reaction and quake spaces (9.20), computed on demand
     I, A : (3N, 3N) block-diagonal inertias and articulated inertias
     L : (3N, 3N) articulation matrix (9.31)
     kappa, p, d : (3N,) bias accelerations, bias forces, articulated bias forces (9.32)
@@ -249,6 +278,25 @@ class StackedSolution:
 
     def __repr__(self):
         return f"StackedSolution(N={self.N}, nq={len(self.qdd)})"
+
+    def _RU(self):
+        if not hasattr(self, "_ru"):
+            art = self.articulated
+            pairs = [quake_space(si, Ti) for si, Ti in zip(art["s"], art["T"])]
+            kr = [3 - si.shape[1] for si in art["s"]]
+            three = [3] * self.N
+            self._ru = (_blockdiag([p[0] for p in pairs], three, kr), _blockdiag([p[1] for p in pairs], three, kr))
+        return self._ru
+
+    @property
+    def R(self) -> np.ndarray:
+        """Block-diagonal reaction spaces ``{{R_i}}`` (orthonormal, ``S^T R = 0``)."""
+        return self._RU()[0]
+
+    @property
+    def U(self) -> np.ndarray:
+        """Block-diagonal quake spaces ``{{U_i}}`` (9.20), ``U R^T = 1 - S T^T``."""
+        return self._RU()[1]
 
     @property
     def mobility(self) -> np.ndarray:
@@ -303,28 +351,26 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     three = [3] * N
     sol = StackedSolution()
     sol.N = N
-    sol.C = blocks(adjacency(model.parents))
-    sol.Dinv = blocks(trunk(adjacency(model.parents)))
+    sol.C, sol.Dinv = _topology(tuple(model.parents))
     sol.S = _blockdiag(art["s"], three, ks)
     sol.T = _blockdiag(art["T"], three, ks)
-    sol.R = _blockdiag(art["R"], three, kr)
-    sol.U = _blockdiag(art["U"], three, kr)
+    sol.P = _blockdiag(art["P"], three, three)
     sol.I = _blockdiag(list(data.I), three, three)
     sol.A = _blockdiag(art["A"], three, three)
     sol.kappa = data.kappa.reshape(-1)
     sol.p = data.p.reshape(-1)
     Q = np.asarray(tau, dtype=float)
-    C, S, T, R, U, A = sol.C, sol.S, sol.T, sol.R, sol.U, sol.A
-    sol.L = articulation_matrix(C, R, U)
+    C, S, T, P, A = sol.C, sol.S, sol.T, sol.P, sol.A
+    sol.L = articulation_matrix(C, P)
     # (9.32) corrected: d = L (p + C^T T Q + C^T R U^T A κ)
-    sol.d = sol.L @ (sol.p + C.T @ (T @ Q) + C.T @ R @ U.T @ A @ sol.kappa)
+    sol.d = sol.L @ (sol.p + C.T @ (T @ Q) + C.T @ P @ A @ sol.kappa)
     # (9.39): a = L^T [S T^T A^-1 (T Q - d) + U R^T κ]
     # S T^T A^-1 = S (S^T A S)^-1 S^T: no inverse of A needed
     sol.StTAinv = _blockdiag([si @ np.linalg.solve(si.T @ Ai @ si, si.T) if si.shape[1] else np.zeros((3, 3))
                               for si, Ai in zip(art["s"], art["A"])], three, three)
-    sol.a = sol.L.T @ (sol.StTAinv @ (T @ Q - sol.d) + U @ (R.T @ sol.kappa))
+    sol.a = sol.L.T @ (sol.StTAinv @ (T @ Q - sol.d) + P.T @ sol.kappa)     # U R^T = P^T
     # (9.41) with (9.17): internal forces
-    sol.f = T @ Q + R @ (U.T @ (A @ (C @ sol.a + sol.kappa) + sol.d))
+    sol.f = T @ Q + P @ (A @ (C @ sol.a + sol.kappa) + sol.d)
     # (9.43): q̈ = T^T (Δ a - κ)
     sol.qdd = T.T @ (sol.a - C @ sol.a - sol.kappa)
     sol.articulated = art
@@ -382,7 +428,7 @@ def tree_mobilities(model: Model, data, tau, art=None):
             Y = np.linalg.inv(one + Lam[j] @ E)
             M = Y @ Lam[j]
             beta = Y @ (b[j] - Lam[j] @ e)
-        si, Ri = art["s"][i], art["R"][i]
+        si = art["s"][i]
         Ii = I[i]
         Qi = tau[model.q_slice(i)]
         # s T^T I^-1 = s (s^T I s)^-1 s^T and U R^T = 1 - s T^T: no inverse of I
