@@ -379,14 +379,18 @@ def kappa(twist, s, qd) -> np.ndarray:
         Body velocity ``v_i`` (it may or may not include ``s q̇``: ``s q̇ × s q̇ = 0``
         for one axis, and for several axes the thesis uses ``v_i``).
     s : array_like (..., 3, k) or (..., 3)
-        Joint motion space (a single axis may be given as a vector).
+        Joint motion space (a single axis may be given as a vector; an array
+        whose last two dimensions are ``(3, 3)`` is a 3-column motion space).
     qd : array_like (..., k) or (...)
         Joint speeds.
 
     Returns
     -------
     ndarray (..., 3)
-        A translation (zero ``ω``): reciprocal to ``v`` for a one-axis joint.
+        A translation (zero ``ω``) whose velocity lies along the line joining
+        the poles of ``v`` and ``s`` (thesis 4.6): in fact ``κ[:2] = (v × s q̇)[:2]``,
+        i.e. ``ω_{i-1} q̇ (S - V)`` for normalised poles ``V`` of ``v_{i-1}``
+        and ``S`` of ``s`` (magnitude ``ω_{i-1} q̇ k_i``, 4.53).
 
     Examples
     --------

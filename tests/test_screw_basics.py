@@ -20,6 +20,7 @@ fin = st.floats(-10, 10, allow_nan=False, allow_infinity=False)
 vec3 = arrays(float, 3, elements=fin)
 xy = arrays(float, 2, elements=fin)
 pos = st.floats(0.1, 10)
+nz = st.floats(0.2, 5) | st.floats(-5, -0.2)
 
 # ---------------------------------------------------------------- 3D references
 D = np.zeros((6, 3))
@@ -173,7 +174,7 @@ def test_plane_joint_bias_4_81_to_4_83(k):
     np.testing.assert_allclose(bias_force(I458(m, k["r"], C), v), p, atol=1e-12)
 
 
-@given(pos, xy, pos, xy, st.floats(0.2, 5) | st.floats(-5, -0.2))
+@given(pos, xy, pos, xy, nz)
 def test_centripetal_force_through_com_towards_pole(m, c, J, q, w):
     # thesis 4.7: p = -(v x)^T I v is a force through the centre of gravity,
     # towards the velocity pole, of magnitude m l w^2
@@ -294,3 +295,28 @@ def test_pole_and_line_as_geometry_objects():
     f = Wrench.force([0.0, 1.0], [2.0, 0.0])
     assert isinstance(f.line, geometry.Line) and isinstance(f.polar, geometry.Line)
     np.testing.assert_allclose(np.asarray(f.line.array), f.array)
+
+
+@given(xy, xy, nz, nz, nz)
+def test_acceleration_kinematics_4_48_to_4_54(V, S, w, qd, qdd):
+    # previous body rotating about V at w, revolute joint at S with speed qd, acceleration qdd
+    from planargeo.screws import add_twists
+    k = np.linalg.norm(S - V)
+    if k < 1e-2:
+        return
+    v_prev = Twist.rotation(V, w).array
+    s = unit_rotation(S)
+    v_i = v_prev + s * qd
+    kap = kappa(v_i, s, qd)
+    # 4.53: a translation from the pole of v_{i-1} towards the joint, of size w qd k
+    np.testing.assert_allclose(kap, np.r_[w * qd * (S - V), 0.0], atol=1e-9 * 100 * (1 + abs(w * qd)))
+    assert np.linalg.norm(kap) == pytest.approx(abs(w * qd) * k)
+    # 4.48: the velocity pole of body i divides V S with beta = qd / (qd + w)
+    if abs(qd + w) > 1e-3:
+        assert add_twists(v_prev, s * qd).beta == pytest.approx(qd / (qd + w))
+    # 4.54: s qdd + kappa is a rotation about a point rho = w qd k / qdd from the joint
+    c = add_twists(s * qdd, kap)
+    assert c.case == "rotation_translation"
+    P = c.sum.pole_xy
+    assert np.linalg.norm(P - S) == pytest.approx(abs(w * qd * k / qdd), rel=1e-7, abs=1e-9)
+    assert abs((P - S) @ (S - V)) < 1e-7 * (1 + k * k) * (1 + abs(w * qd / qdd))   # perpendicular offset (4.16)
