@@ -77,9 +77,21 @@ def test_list_shows_every_scene_and_its_parameters(capsys):
     (("two-body", "--set", "phi"), 2, "--set expects NAME=VALUE"),
     ((), 2, "a scene name is required"),
 ])
-def test_errors_are_one_line_without_traceback(args, code, msg):
+def test_errors_are_one_line_messages(args, code, msg, capsys):
+    got, out, err = call(*args, capsys=capsys)
+    assert got == code
+    assert msg in err
+    assert len(err.strip().splitlines()) == 1
+    assert out == ""
+
+
+@pytest.mark.parametrize("args, msg", [
+    (("no-such-scene",), "scene must be one of"),
+    (("two-body", "--set", "m=-1"), "m must be positive"),
+])
+def test_errors_over_subprocess_have_no_traceback(args, msg):
     r = run(*args)
-    assert r.returncode == code
+    assert r.returncode == 1
     assert msg in r.stderr
     assert "Traceback" not in r.stderr
     assert len(r.stderr.strip().splitlines()) == 1
