@@ -25,8 +25,8 @@ kind (dof)                    ``s`` columns               ``R`` columns
 ``prismatic`` (1)             translation along ``e``     unit force through ``p`` along ``e⊥``, couple
 ``revolute_prismatic`` (2)    translation ``e``,          unit force through ``p`` along ``e⊥``
                               rotation about ``p``
-``plane`` (3)                 translations x, y,          (none)
-                              rotation about the origin
+``plane`` (3)                 translations ``e``, ``e⊥``, (none)
+                              rotation about ``p``
 ``fixed`` (0)                 (none)                      unit forces through ``p`` along x, y, couple
 ============================  ==========================  =============================================
 
@@ -39,7 +39,9 @@ and :func:`reaction_space` are the vectorised array functions behind it.
 
 Note: thesis 4.8.4 calls its 2-dof "twin prismatic" joint (translations x
 and y, 4.79) a *plane joint*; here ``plane`` is the 3-dof free planar joint of
-the package's model (``Model`` kinds), whose reaction space is empty.
+the package's model (:class:`planargeo.model.Joint` kinds), whose reaction
+space is empty.  The column order of every kind matches
+:func:`planargeo.kinematics.joint_axes`.
 """
 from __future__ import annotations
 
@@ -58,7 +60,7 @@ KINDS = ("revolute", "prismatic", "revolute_prismatic", "plane", "fixed")
 #: Degrees of freedom of each kind.
 DOF = {"revolute": 1, "prismatic": 1, "revolute_prismatic": 2, "plane": 3, "fixed": 0}
 
-_USES_DIRECTION = ("prismatic", "revolute_prismatic")
+_USES_DIRECTION = ("prismatic", "revolute_prismatic", "plane")
 
 
 def _check_kind(kind) -> str:
@@ -95,9 +97,11 @@ def motion_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
     ----------
     kind : {"revolute", "prismatic", "revolute_prismatic", "plane", "fixed"}
     point : array_like, shape (..., 2)
-        The joint's pivot (revolute), or a point on the slide (prismatic).
+        The joint's pivot (revolute), a point on the slide (prismatic), the
+        joint frame's origin (plane), the weld point (fixed).
     direction : array_like, shape (..., 2)
-        Slide direction (prismatic kinds only; normalised; ignored otherwise).
+        Slide direction (prismatic kinds), the joint frame's x axis (plane);
+        normalised; ignored by ``revolute`` and ``fixed``.
         A zero direction raises :class:`~planargeo.errors.DegenerateGeometryError`.
 
     Returns
@@ -127,7 +131,8 @@ def motion_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
     if kind == "revolute_prismatic":
         return np.stack([e, unit_rotation(p)], axis=-1) + 0.0
     if kind == "plane":
-        return np.broadcast_to(np.eye(3), shape + (3, 3)).copy()
+        perp = np.stack([-e[..., 1], e[..., 0], e[..., 2]], axis=-1)
+        return np.stack([e, perp, unit_rotation(p)], axis=-1) + 0.0
     return np.zeros(shape + (3, 0))
 
 
@@ -164,14 +169,14 @@ def reaction_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
     couple = np.broadcast_to(np.array([0.0, 0.0, 1.0]), shape + (3,))
     if kind == "revolute":
         return np.stack([_force_through(p, ex), _force_through(p, ey)], axis=-1)
+    if kind == "plane":
+        return np.zeros(shape + (3, 0))
     if kind in _USES_DIRECTION:
         normal = np.stack([-e[..., 1], e[..., 0]], axis=-1)
         cols = [_force_through(p, normal)]
         if kind == "prismatic":
             cols.append(couple)
         return np.stack(cols, axis=-1)
-    if kind == "plane":
-        return np.zeros(shape + (3, 0))
     return np.stack([_force_through(p, ex), _force_through(p, ey), couple], axis=-1)
 
 
@@ -192,9 +197,9 @@ class JointSpace:
     ----------
     kind : str
     point : ndarray, shape (2,)
-        Pivot / point on the slide (the origin for ``plane``).
+        Pivot / point on the slide / joint-frame origin / weld point.
     direction : ndarray, shape (2,) or None
-        Unit slide direction (prismatic kinds), else ``None``.
+        Unit slide direction (prismatic kinds, plane), else ``None``.
     s : ndarray, shape (3, k)
         Motion space, unit twists at the origin.
     R : ndarray, shape (3, 3 - k)
@@ -301,15 +306,23 @@ def revolute_prismatic(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     return JointSpace("revolute_prismatic", point, direction)
 
 
-def plane() -> JointSpace:
-    """Free planar (3-dof) joint: ``s`` is the identity, ``R`` is empty.
+def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
+    """Free planar (3-dof) joint: slides along ``direction`` and its normal, turns about ``point``.
+
+    The columns follow the package's ``Model`` joint ``"plane"`` (translations
+    along the joint frame's x and y axes, then rotation about its origin); with
+    the defaults ``s`` is the identity.  ``R`` is empty.
 
     Examples
     --------
+    >>> plane().s
+    array([[1., 0., 0.],
+           [0., 1., 0.],
+           [0., 0., 1.]])
     >>> plane().R.shape
     (3, 0)
     """
-    return JointSpace("plane")
+    return JointSpace("plane", point, direction)
 
 
 def fixed(point=(0.0, 0.0)) -> JointSpace:

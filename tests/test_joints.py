@@ -83,11 +83,15 @@ def test_prismatic_and_slot_seen_from_the_joint(x, y, lam):
     np.testing.assert_allclose(X_P((x, y)) @ j.s[:, 1], [0.0, 0.0, 1.0], atol=1e-12)
 
 
-@given(coord, coord)
-def test_fixed_and_plane(x, y):
+@given(coord, coord, angle)
+def test_fixed_and_plane(x, y, lam):
     j = fixed((x, y))
     np.testing.assert_allclose(X_P_inv_T((x, y)) @ j.R, np.eye(3), atol=1e-12)
     np.testing.assert_array_equal(plane().s, np.eye(3))
+    # plane: seen from its frame origin, the frame's x and y translations and a rotation
+    e = _dir(lam)
+    at_p = X_P((x, y)) @ plane((x, y), e).s
+    np.testing.assert_allclose(at_p, [[e[0], -e[1], 0.0], [e[1], e[0], 0.0], [0.0, 0.0, 1.0]], atol=1e-12)
 
 
 def test_vectorised_helpers_match_objects(rng):
@@ -159,3 +163,14 @@ def test_non_finite_and_bad_kind():
         JointSpace("hinge")
     with pytest.raises(errors.InputError, match="kind must be one of"):
         motion_space("ball", (0, 0))
+
+
+@given(kinds, coord, coord, angle)
+def test_motion_space_matches_model_kinematics(kind, x, y, phi):
+    """Same columns, same order as the Model's kinematics (planargeo.kinematics.joint_axes at q = 0)."""
+    from planargeo.kinematics import joint_axes
+
+    k = DOF[kind]
+    cols, _ = joint_axes(kind, np.array(x), np.array(y), np.array(phi), np.zeros(k))
+    ref = np.stack(cols, axis=-1) if cols else np.zeros((3, 0))
+    np.testing.assert_allclose(motion_space(kind, (x, y), _dir(phi)), ref, atol=1e-12)
