@@ -32,6 +32,11 @@ def unit(a):
     return a / np.linalg.norm(a, axis=-1, keepdims=True)
 
 
+def same_matrix_up_to_scale(A, B, tol=1e-8):
+    a, b = np.ravel(A) / np.linalg.norm(A), np.ravel(B) / np.linalg.norm(B)
+    return min(np.linalg.norm(a - b), np.linalg.norm(a + b)) <= tol
+
+
 def same_up_to_scale(a, b, tol=1e-8):
     a, b = unit(a), unit(b)
     return np.linalg.norm(np.cross(a, b)) <= tol * np.linalg.norm(a) * np.linalg.norm(b)
@@ -330,7 +335,7 @@ def test_drawable_conic_polars_are_point_reflections(c, a, b, th, m, p, ideal):
     I = E - 2 * k * np.outer([0, 0, 1.0], [0, 0, 1.0])
     assert classify(I).reality == "imaginary"
     D = drawable_conic(m * I)
-    assert same_up_to_scale(D, E, tol=1e-8)                             # 10.2.3: back to the real ellipse
+    assert same_matrix_up_to_scale(D, E, tol=1e-8)                           # 10.2.3: back to the real ellipse
     P = from_direction(p + [0.1, 0.0]) if ideal else from_xy(p)
     Lc, Ld = polar(I, P), polar(D, P)
     # reflect two points of the polar w.r.t. I through the centre: they lie on the polar w.r.t. D
@@ -356,7 +361,7 @@ def test_affine_frame_maps_unit_curve_onto_conic(c, a, b, th, kind):
          "parabola": np.stack([s, s * s], -1)}[kind]
     X = U @ F.A.T + F.t
     assert np.all(is_on_conic(C, from_xy(X), rtol=1e-8))
-    assert same_up_to_scale(conic_from_affine(kind, F.A, F.t), C, tol=1e-7)
+    assert same_matrix_up_to_scale(conic_from_affine(kind, F.A, F.t), C, tol=1e-7)
     if kind == "hyperbola":
         assert np.allclose(F.t, c)
         assert np.allclose(np.linalg.norm(F.A, axis=0), [a, b])        # semi-axes (transverse first)
@@ -411,3 +416,16 @@ def test_broadcasting():
     assert np.allclose(to_xy(X)[:, 0, 0], np.arange(1.0, 5.0) ** 2 / 10)
     K = polar_construction_interior(C, from_xy([0.5, 0.2]))
     assert K.chord_points.shape == (4, 2, 2, 3) and K.polar.shape == (4, 3)
+
+
+def test_centre_is_stationary_not_minimum_for_hyperbola():
+    # erratum 5.2.2: the centre is the stationary point of Q C Q (w = 1); for a hyperbola a saddle
+    C = conic_hyperbola([1.0, 2.0], [1.0, 2.0], 0.3)
+    z = to_xy(centre(C))
+    q = lambda x: conic_residual(C, from_xy(x))      # noqa: E731
+    h = 1e-3
+    for d in np.eye(2):
+        assert abs(q(z + h * d) - q(z - h * d)) < 1e-9          # zero gradient (central difference)
+    F = affine_frame(C)
+    along = [q(z + h * F.A[:, i] / np.linalg.norm(F.A[:, i])) - q(z) for i in range(2)]
+    assert along[0] * along[1] < 0                               # a saddle: no minimum
