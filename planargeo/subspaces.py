@@ -425,7 +425,7 @@ def effective_base_inertia(R, I) -> np.ndarray:
 
     The reaction force needed to give the joint base the acceleration ``a``
     when the joint transmits no active force: ``f = R Uᵀ I a``.  This is the
-    projection the articulated-body recursion adds to the parent (6.76, 7.x).
+    projection the articulated-body recursion adds to the parent (6.76, chapter 7).
 
     Examples
     --------
