@@ -177,3 +177,19 @@ def test_f_ext_shape_is_validated():
     with pytest.raises(ShapeError, match="f_ext"):
         forward_dynamics_projective(model, np.zeros(model.nq), np.zeros(model.nq), np.zeros(model.nq),
                                     np.zeros((2, 3)))
+
+
+def test_batched_states_are_solved_one_by_one():
+    from planargeo.algorithms.chain_splitting import forward_dynamics_mobility_split
+
+    model = random_model(4, seed=21)
+    rng = np.random.default_rng(21)
+    q = rng.normal(size=(2, 3, model.nq))
+    qd = rng.normal(size=(3, model.nq))
+    tau = rng.normal(size=model.nq)
+    f_ext = rng.normal(size=(2, 1, model.N, 3))
+    ref = forward_dynamics_crba(model, q, qd, tau, f_ext)
+    for fn in (forward_dynamics_projective, forward_dynamics_mobility_split):
+        out = fn(model, q, qd, tau, f_ext)
+        assert out.shape == (2, 3, model.nq)
+        np.testing.assert_allclose(out, ref, atol=1e-9 * np.abs(ref).max())

@@ -25,7 +25,7 @@ import numpy as np
 from ..errors import SingularConfigurationError
 from .articulated_inertia import articulated_recursion
 from .articulated_mobility import _check_chain, mobility_recursion
-from .projective import _state_arrays
+from .projective import _per_state, _state_arrays
 
 __all__ = ["ChainSplit", "split_acceleration", "split_force", "chain_split",
            "mobility_split", "forward_dynamics_mobility_split"]
@@ -189,13 +189,14 @@ def forward_dynamics_mobility_split(model, q, qd, tau, f_ext=None) -> np.ndarray
     ----------
     model : planargeo.model.Model
         An unbranched chain whose first body hangs from the ground.
-    q, qd, tau : array_like (nq,)
-    f_ext : array_like (N, 3), optional
+    q, qd, tau : array_like (..., nq)
+        Leading batch dimensions are solved state by state.
+    f_ext : array_like (..., N, 3), optional
         World wrenches at the origin applied to each body (besides gravity).
 
     Returns
     -------
-    ndarray (nq,)
+    ndarray (..., nq)
 
     Raises
     ------
@@ -210,4 +211,4 @@ def forward_dynamics_mobility_split(model, q, qd, tau, f_ext=None) -> np.ndarray
     >>> forward_dynamics_mobility_split(chain_model(1), [0.0], [0.0], [0.0]).round(6)
     array([-14.715])
     """
-    return mobility_split(model, q, qd, tau, f_ext).qdd
+    return _per_state(lambda *a: mobility_split(*a).qdd, model, q, qd, tau, f_ext)

@@ -281,10 +281,21 @@ def _batch_error(shape):
                       "loop over states or use planargeo.algorithms.aba for batches")
 
 
-def _stack_tau(taus, N, model):
-    out = np.empty(model.nq)
-    for i in range(N):
-        out[model.q_slice(i)] = taus[i]
+def _per_state(fn, model, q, qd, tau, f_ext):
+    """Apply the single-state solver ``fn(model, q, qd, tau, f_ext) -> (nq,)`` over batch dimensions."""
+    from ..kinematics import check_state
+
+    q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
+    if shape == ():
+        return fn(model, q, qd, tau, f_ext)
+    nq, N = model.nq, model.N
+    q = np.broadcast_to(q, shape + (nq,))
+    qd = np.zeros(shape + (nq,)) if qd is None else np.broadcast_to(qd, shape + (nq,))
+    tau = np.zeros(shape + (nq,)) if tau is None else np.broadcast_to(tau, shape + (nq,))
+    fx = None if f_ext is None else np.broadcast_to(f_ext, shape + (N, 3))
+    out = np.empty(shape + (nq,))
+    for idx in np.ndindex(*shape):
+        out[idx] = fn(model, q[idx], qd[idx], tau[idx], None if fx is None else fx[idx])
     return out
 
 
@@ -403,13 +414,14 @@ def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
     Parameters
     ----------
     model : planargeo.model.Model
-    q, qd, tau : array_like (nq,)
-    f_ext : array_like (N, 3), optional
+    q, qd, tau : array_like (..., nq)
+        Leading batch dimensions are solved state by state.
+    f_ext : array_like (..., N, 3), optional
         World wrenches at the origin applied to each body (besides gravity).
 
     Returns
     -------
-    ndarray (nq,)
+    ndarray (..., nq)
 
     Raises
     ------
@@ -425,4 +437,4 @@ def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
     >>> forward_dynamics_projective(chain_model(1), [0.0], [0.0], [0.0]).round(6)
     array([-14.715])
     """
-    return projective_workspace(model, q, qd, tau, f_ext).qdd
+    return _per_state(lambda *a: projective_workspace(*a).qdd, model, q, qd, tau, f_ext)
