@@ -11,6 +11,8 @@ action; thesis 5.56).  See :mod:`planargeo.projective`.
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from ._validate import as_array, as_mat3, as_vec3, as_xy
@@ -722,8 +724,6 @@ def _wrench_array(x) -> np.ndarray:
 # ---------------------------------------------------------------------------
 # Twist and wrench addition as constructions (thesis 4.2, 4.4)
 # ---------------------------------------------------------------------------
-
-from dataclasses import dataclass  # noqa: E402
 
 
 def _single(x, cls, name) -> np.ndarray:
