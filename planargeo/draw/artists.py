@@ -243,7 +243,7 @@ class PointArtist(_Base):
     """
 
     def __init__(self, point, *, role="twist", glyph_scale=6.0, glyph=True, text=None,
-                 text_offset=None, color=None, markersize=None, zorder=4):
+                 text_offset=None, color=None, markersize=None, zorder=7):
         super().__init__(text, (0.0, 0.0) if text_offset is None else text_offset, zorder)
         self._auto_offset = text_offset is None
         st = _style(role)
