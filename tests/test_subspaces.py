@@ -14,7 +14,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from planargeo import errors
-from planargeo.joints import DOF, KINDS, JointSpace, prismatic, revolute
+from planargeo.joints import KINDS, JointSpace, prismatic, revolute
 from planargeo.screws import inertia_matrix
 from planargeo.subspaces import (Decomposition, active_acceleration, active_force, effective_base_inertia,
                                  effective_mobility, inertia_decomposition, inverse_inertia_decomposition,
