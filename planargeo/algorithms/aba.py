@@ -41,6 +41,8 @@ __all__ = ["forward_dynamics", "articulated_body"]
 
 #: relative threshold below which ``s^T A s`` is declared singular
 SINGULAR_RTOL = 1e-13
+#: batches up to this size are evaluated state by state on Python floats
+SMALL_BATCH = 8
 
 
 def _check_D(D, A, s, i):
@@ -163,9 +165,23 @@ def _scalar_tables(model: Model):
     return cache["aba_scalar"]
 
 
-def _aba_scalar(model: Model, table, q, qd, tau, fe) -> np.ndarray:
-    """Thesis 3.6 on Python floats for one state (revolute / prismatic / fixed joints)."""
-    cos, sin = math.cos, math.sin
+def _singular_components(D, scale, i):
+    D, scale = np.asarray(D, dtype=float), np.asarray(scale, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        cond = np.where(D > 0, scale / np.where(D > 0, D, 1.0), np.inf)
+    raise SingularConfigurationError(
+        f"joint {i}: s^T A s is singular (the articulated inertia does not resist the joint motion)",
+        float(np.max(cond)))
+
+
+def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.sin) -> list:
+    """Thesis 3.6 written component by component (revolute / prismatic / fixed joints).
+
+    ``q[k]``, ``qd[k]``, ``tau[k]``, ``fe[i][c]`` are Python floats (one state:
+    no numpy overhead) or equally shaped 1-D arrays (a batch: every operation
+    is a contiguous elementwise numpy operation); ``cos``/``sin`` match.
+    Returns the list of ``q̈_k``.
+    """
     gx, gy = model.gravity
     N = len(table)
     # per body: pose+cos/sin, s, v, kappa, A (6 entries), d
@@ -246,9 +262,10 @@ def _aba_scalar(model: Model, table, q, qd, tau, fe) -> np.ndarray:
         U1 = a01 * s0 + a11 * s1 + a12 * s2
         U2 = a02 * s0 + a12 * s1 + a22 * s2
         D = s0 * U0 + s1 * U1 + s2 * U2
-        if not D > SINGULAR_RTOL * (a00 + a11 + a22) * (s0 * s0 + s1 * s1 + s2 * s2):
-            _check_D(np.array([[D]]), np.array([[a00, a01, a02], [a01, a11, a12], [a02, a12, a22]]),
-                     np.array([[s0], [s1], [s2]]), i)
+        scale = (a00 + a11 + a22) * (s0 * s0 + s1 * s1 + s2 * s2)
+        ok = D > SINGULAR_RTOL * scale
+        if ok is not True and not np.all(ok):
+            _singular_components(D, scale, i)
         Di = 1.0 / D
         u = tau[o] - (s0 * c0 + s1 * c1 + s2 * c2)
         UU[i] = (U0, U1, U2, Di, u)
@@ -282,7 +299,7 @@ def _aba_scalar(model: Model, table, q, qd, tau, fe) -> np.ndarray:
             Acc[i] = (b0 + s0 * qi + k0, b1 + s1 * qi + k1, b2 + s2 * qi)
         else:
             Acc[i] = (b0 + k0, b1 + k1, b2)
-    return np.array(qdd)
+    return qdd
 
 
 def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
@@ -320,9 +337,30 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
            [  0.   ]])
     """
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
-    if shape == () and (f_ext is None or f_ext.ndim == 2):
-        table = _scalar_tables(model)
-        if table is not None:
-            return _aba_scalar(model, table, q.tolist(), qd.tolist(), tau.tolist(),
-                               None if f_ext is None else f_ext.tolist())
-    return articulated_body(model, q, qd, tau, f_ext).qdd
+    table = _scalar_tables(model)
+    if table is None:
+        return articulated_body(model, q, qd, tau, f_ext).qdd
+    if shape == ():   # one state: Python floats
+        return np.array(_aba_components(model, table, q.tolist(), qd.tolist(), tau.tolist(),
+                                        None if f_ext is None else f_ext.tolist()))
+    # a batch: one contiguous array per component, batch along the last axis
+    nq, N = model.nq, model.N
+    B = int(np.prod(shape))
+    if B <= SMALL_BATCH:   # numpy's per-call overhead dominates: state by state on floats
+        qb, qdb, taub = (np.broadcast_to(x, shape + (nq,)).reshape(B, nq) for x in (q, qd, tau))
+        feb = None if f_ext is None else np.broadcast_to(f_ext, shape + (N, 3)).reshape(B, N, 3)
+        res = np.array([_aba_components(model, table, qb[k].tolist(), qdb[k].tolist(), taub[k].tolist(),
+                                        None if feb is None else feb[k].tolist()) for k in range(B)])
+        return res.reshape(shape + (nq,))
+
+    def rows(x):
+        return np.ascontiguousarray(np.broadcast_to(x, shape + (nq,)).reshape(B, nq).T)
+
+    fe = None
+    if f_ext is not None:
+        fe = np.ascontiguousarray(np.broadcast_to(f_ext, shape + (N, 3)).reshape(B, N, 3).transpose(1, 2, 0))
+    out = _aba_components(model, table, rows(q), rows(qd), rows(tau), fe, np.cos, np.sin)
+    res = np.empty((B, nq))
+    for k, x in enumerate(out):
+        res[:, k] = x
+    return res.reshape(shape + (nq,))
