@@ -351,6 +351,8 @@ def stacked_contact_spaces(contacts, pose):
     """
     pose = _pose(pose)
     cs = validate_contacts(contacts, pose.shape[-2])
+    if pose.ndim != 2:
+        raise ShapeError(f"pose must have shape (N, 3) here, got shape {pose.shape}")
     m = len(cs)
     kz = sum(c.dofs for c in cs)
     kb = sum(c.nc for c in cs)
@@ -358,8 +360,26 @@ def stacked_contact_spaces(contacts, pose):
     B = np.zeros((3 * m, kb))
     iz = ib = 0
     for k, c in enumerate(cs):
-        z[3 * k:3 * k + 3, iz:iz + c.dofs] = motion_space(c, pose)
-        B[3 * k:3 * k + 3, ib:ib + c.nc] = reaction_space(c, pose)
+        # same formulas as motion_space / reaction_space, without re-validation
+        xa, ya, tha = pose[c.a]
+        ca, sa = np.cos(tha), np.sin(tha)
+        px = xa + ca * c.point_a[0] - sa * c.point_a[1]
+        py = ya + sa * c.point_a[0] + ca * c.point_a[1]
+        r = 3 * k
+        if c.kind == "pin":
+            z[r:r + 3, iz] = (py, -px, 1.0)
+            B[r:r + 3, ib] = (1.0, 0.0, -py)
+            B[r:r + 3, ib + 1] = (0.0, 1.0, px)
+        elif c.kind == "slider":
+            thb = pose[c.b, 2] if c.b >= 0 else 0.0
+            cb, sb = np.cos(thb), np.sin(thb)
+            dx = cb * c.direction[0] - sb * c.direction[1]
+            dy = sb * c.direction[0] + cb * c.direction[1]
+            z[r:r + 3, iz] = (dx, dy, 0.0)
+            B[r:r + 3, ib] = (dy, -dx, px * (-dx) - py * dy)
+            B[r:r + 3, ib + 1] = (0.0, 0.0, 1.0)
+        else:
+            B[r:r + 3, ib:ib + 3] = np.eye(3)
         iz += c.dofs
         ib += c.nc
     return z, B
