@@ -226,3 +226,24 @@ def test_singular_point_mass_on_its_pivot():
         forward_dynamics(m, [[0.0], [1.0]], [[0.0], [0.0]], [[0.0], [0.0]])
     with pytest.raises(SingularConfigurationError, match="mass matrix H is singular"):
         forward_dynamics_crba(m, [0.0], [0.0], [0.0])
+
+
+@pytest.mark.parametrize("tree", [False, True])
+def test_large_batch_component_path(tree):
+    """Batches above SMALL_BATCH go through the component-wise vectorised path (with f_ext, broadcasting)."""
+    m = random_model(12, seed=21, kinds=("revolute", "prismatic", "fixed"), tree=tree)
+    rng = np.random.default_rng(21)
+    q, qd, tau, f_ext = _random_state(m, rng, (3, 4))
+    got = forward_dynamics(m, q, qd, tau, f_ext)
+    assert got.shape == (3, 4, m.nq)
+    _assert_close_cond(got, forward_dynamics_crba(m, q, qd, tau, f_ext), mass_matrix(m, q))
+    # broadcasting a single qd / f_ext against the batch
+    got2 = forward_dynamics(m, q, qd[0, 0], tau, f_ext[0, 0])
+    ref2 = forward_dynamics_crba(m, q, np.broadcast_to(qd[0, 0], q.shape), tau, np.broadcast_to(f_ext[0, 0], (3, 4, m.N, 3)))
+    _assert_close_cond(got2, ref2, mass_matrix(m, q))
+
+
+def test_singular_large_batch():
+    m = Model([Body(1.0, (0.0, 0.0), 0.0)], [Joint("revolute")], [-1])
+    with pytest.raises(SingularConfigurationError, match="joint 0"):
+        forward_dynamics(m, np.zeros((20, 1)), np.zeros((20, 1)), np.zeros((20, 1)))
