@@ -163,15 +163,18 @@ def conic_residual(C, p) -> np.ndarray:
 def is_on_conic(C, p, rtol: float = 1e-9) -> np.ndarray:
     """True where ``|p C p| <= rtol |C| |p|²`` (relative form of thesis 5.38).
 
+    ``p`` is scaled to unit length first, so far (near-ideal) points are
+    handled without overflow.
+
     Examples
     --------
     >>> bool(is_on_conic(conic_circle([1.0, 1.0], 1.0), [1.0, -2.0, 1.0]))   # (2, 1)
     True
     """
     C = _conic(C)
-    p = as_vec3(p, "p")
+    p = _unit(as_vec3(p, "p"))
     r = np.abs(_quad(p, C, p))
-    return r <= rtol * np.linalg.norm(C, axis=(-2, -1)) * np.einsum("...i,...i->...", p, p)
+    return r <= rtol * np.linalg.norm(C, axis=(-2, -1))
 
 
 # --------------------------------------------------------------------------- classification
