@@ -93,7 +93,7 @@ class Step:
         return W.FloatSlider(value=self.value, min=self.lo, max=self.hi, step=self.step,
                              description=self.label or name, continuous_update=True,
                              readout_format=".3g", style={"description_width": "initial"},
-                             layout=W.Layout(width="330px"))
+                             layout=W.Layout(width="360px"))
 
 
 class Explorer:
@@ -351,7 +351,8 @@ class Explorer:
             fig_widget = W.HTML("<i>(figure drawn off-screen)</i>")
         buttons = W.HBox([self.reset_button, self.export_button])
         controls = W.VBox(list(self.controls.values()) + self.extra_widgets() + [buttons,
-                                                                                self.export_label])
+                                                                                self.export_label],
+                          layout=W.Layout(min_width="370px", overflow="visible"))
         right = W.VBox([W.HTML("<b>Readout</b>"), self.readout, self.message_box])
         head = W.HTML(f"<h4 style='margin:2px'>{html.escape(self.title)}</h4>")
         root = W.VBox([head, W.HBox([controls, fig_widget, right])])
