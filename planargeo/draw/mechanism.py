@@ -172,7 +172,7 @@ _ = plot_point
 
 
 def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pin_radius=0.05,
-               show_com=True, alpha=0.35):
+               show_com=True, alpha=0.35, names=None):
     """Draw a model's bodies and joints at the state in ``data`` (from :func:`planargeo.kinematics.kinematics`).
 
     A body with a shapely ``shape`` is drawn from it (moved by its pose);
@@ -195,7 +195,10 @@ def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pi
             from shapely.ops import unary_union
 
             shape = unary_union([link_polygon(pose[i, :2], e, width) for e in ends])
-        name = body.name if labels and body.name else (str(i + 1) if labels else None)
+        if names is not None:
+            name = names[i]
+        else:
+            name = body.name if labels and body.name else (str(i + 1) if labels else None)
         out["bodies"] += draw_body(shape, ax, alpha=alpha, label=None)
         if labels:
             c = shape.centroid
@@ -203,12 +206,13 @@ def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pi
                                              textcoords="offset points", ha="center",
                                              fontsize=7, color="#1f3a4d"))
         if show_com:
-            out["com"] += draw_com(com[i], ax, radius=0.045)
+            out["com"] += draw_com(com[i], ax, radius=0.9 * pin_radius)
     for i, joint in enumerate(model.joints):
         o = origin[i]
         th = pose[i, 2]
         if model.parents[i] == -1 and ground and joint.kind != "plane":
-            out["joints"] += draw_ground(o - [0, pin_radius * 1.6], ax, width=0.5, depth=0.08)
+            out["joints"] += draw_ground(o - [0, pin_radius * 1.6], ax, width=10 * pin_radius,
+                                         depth=1.6 * pin_radius)
         if joint.kind in ("revolute", "revolute_prismatic"):
             out["joints"].append(draw_pin(pose[i, :2] if joint.kind == "revolute" else o, ax,
                                           radius=pin_radius))
