@@ -41,6 +41,10 @@ __all__ = [
     "plot_point", "plot_line", "plot_conic", "plot_inertia",
 ]
 
+#: A finite pole farther than FAR view diagonals from the view is drawn like an ideal point
+#: (direction arrow at the edge): its weight is zero up to rounding.
+FAR = 1e6
+
 # package point p = M @ [x, y, 1]
 _M = np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
 
@@ -295,6 +299,12 @@ class PointArtist(_Base):
         pts = renderer.points_to_pixels(1.0)
         xy = point_xy(p)
         out = []
+        if xy is not None:
+            box = _view(ax)
+            diag = np.hypot(box[1] - box[0], box[3] - box[2])
+            c = np.array([(box[0] + box[1]) / 2, (box[2] + box[3]) / 2])
+            if np.hypot(*(xy - c)) > FAR * diag:
+                xy = None  # numerically finite but far beyond the view: drawn like an ideal point
         if xy is not None:
             self._marker.set_data([xy[0]], [xy[1]])
             out.append(self._marker)

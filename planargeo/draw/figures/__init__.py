@@ -71,6 +71,10 @@ def fit_view(ax, points, margin=0.25, *, aspect=None):
 
     P = np.asarray(points, float).reshape(-1, 2)
     P = P[np.all(np.isfinite(P), axis=1)]
+    if len(P) > 2:  # ignore far outliers (poles of near-translations)
+        med = np.median(P, axis=0)
+        dist = np.hypot(*(P - med).T)
+        P = P[dist <= 20 * max(np.median(dist), 1e-9) + 1e-9] if np.median(dist) > 0 else P
     lo, hi = P.min(axis=0), P.max(axis=0)
     size = max(float(np.max(hi - lo)), 1e-9)
     lo, hi = lo - margin * size, hi + margin * size

@@ -1,0 +1,90 @@
+"""Extra figures: the inertia's point->line field, joint force splits, slider-crank dynamics."""
+from __future__ import annotations
+
+import numpy as np
+
+from ...algorithms.articulated_inertia import articulated_inertia
+from ...algorithms.rnea import newton_euler
+from ...inertia import Inertia, percussion_axis
+from ...kinematics import kinematics
+from ...projective import from_xy, to_xy
+from ...scenes import build as build_scene
+from ..artists import plot_conic, plot_line, plot_point
+from ..mechanism import draw_body, draw_com, draw_joint_split, draw_model, link_polygon
+from ..style import COLORS
+from . import fit_view, new_figure, register
+
+
+@register("extra_inertia_field", "Extra — the inertia as a point→line map (5.64–5.68): several "
+          "acceleration poles a_k and their axes of percussion I a_k; the pole at the centre of mass "
+          "maps to the line at infinity (a couple, corner glyph), a translation (ideal point, edge "
+          "arrow) to a line through the centre of mass.", 10.01)
+def extra_inertia_field():
+    fig, ax = new_figure(3.4, 2.8)
+    shape = link_polygon([-0.8, 0.0], [0.8, 0.0], 0.6)
+    I = Inertia.from_polygon(shape).matrix
+    c = np.array([I[1, 2], -I[0, 2]]) / I[0, 0]
+    draw_body(shape, ax, alpha=0.2)
+    draw_com(c, ax)
+    plot_conic(I, ax, role="inertia")
+    poles = [from_xy([-1.6, 0.9]), from_xy([1.3, -1.0]), from_xy([0.2, 1.3]), from_xy(c),
+             np.array([1.0, 0.6, 0.0])]
+    for k, a in enumerate(poles, start=1):
+        f = percussion_axis(I, a)
+        plot_point(a, ax, role="accel", glyph=False, text=f"$a_{k}$")
+        anchor = None
+        if np.any(f[:2]):
+            e = f[:2] / np.hypot(*f[:2])
+            foot = c + e * ((c - c) @ e) - np.array([-e[1], e[0]]) * (
+                (f[2] + c[1] * f[0] - c[0] * f[1]) / np.hypot(*f[:2]))   # foot of c on f (4.27)
+            anchor = foot + 1.3 * e
+        plot_line(f, ax, role="wrench", scale=None, text=f"$Ia_{k}$", anchor=anchor, linewidth=1.2)
+    fit_view(ax, [[-2.0, -1.4], [2.0, 1.6]], margin=0.02)
+    return fig
+
+
+@register("extra_joint_splits", "Extra — every joint force of a 3-link chain under gravity (RNEA) split "
+          "into its active part T_iQ_i and its reaction R_iμ_i (6.38, 6.61) with T_i, U_i built on "
+          "the articulated inertia A_i (6.105); one panel per joint.", 10.02)
+def extra_joint_splits():
+    from .ch3 import QD, QDD, Q, _chain
+
+    m = _chain()
+    w = newton_euler(m, Q, QD, QDD)
+    r = articulated_inertia(m, Q, QD, w.tau)
+    fig, axs = new_figure(3.4, 6.0, nrows=3)
+    for i, ax in enumerate(axs):
+        draw_model(m, w, ax, alpha=0.2, show_com=False)
+        _, (Qi, mu, act, rea) = draw_joint_split(r.S[i], r.R[i], r.A[i], w.f[i], ax, name=str(i + 1),
+                                                 scale=0.05, anchor=w.origin[i])
+        assert np.allclose(act + rea, w.f[i]) and np.allclose(Qi, w.tau[i])
+        ax.text(0.02, 0.02, f"joint {i + 1}: Q = τ = {Qi[0]:.2f}", transform=ax.transAxes,
+                fontsize=7)
+        fit_view(ax, [*w.origin, w.com[-1] * 2 - w.origin[-1], [-0.5, -0.8]], margin=0.12)
+    return fig
+
+
+@register("extra_slider_crank", "Extra — slider-crank dynamics (scene 'slider-crank', 9.78–9.94): the "
+          "slider contact force F₃ on the piston (a line), the closed-loop accelerations a₁, a₂ "
+          "(poles) and a₃ (the piston translates: an ideal point, arrow at the edge).", 10.03)
+def extra_slider_crank():
+    res = build_scene("slider-crank")
+    m = res.model
+    d = kinematics(m, res.state["q"], np.asarray(res.state["qd"]))
+    fig, ax = new_figure(3.4, 3.6)
+    draw_model(m, d, ax, width=0.3, show_com=True, pin_radius=0.1, alpha=0.25)
+    piston = d.pose[2, :2]
+    for x in (-0.45, 0.45):
+        ax.plot([x, x], [piston[1] - 1.3, piston[1] + 1.8], color=COLORS["ground"], lw=1.0)
+    a = np.asarray(res.quantities["a"])
+    F3 = np.asarray(res.quantities["F3"])
+    plot_line(F3, ax, role="reaction", scale=0.01, anchor=piston + [0.0, 0.5],
+              text=f"$F_3$ = {np.hypot(*F3[:2]):.1f} N")
+    for k in range(3):
+        plot_point(a[k], ax, role="accel", text=f"$a_{k + 1}$", glyph_scale=0.05)
+    for k in range(3):
+        plot_point(np.asarray(res.quantities["v"])[k], ax, role="twist", text=f"$v_{k + 1}$",
+                   glyph=False, text_offset=(-14, -12))
+    pts = [*d.origin, piston + [0, 1.0]] + [to_xy(x) for x in a[:2]]
+    fit_view(ax, pts, margin=0.1)
+    return fig
