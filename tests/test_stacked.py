@@ -270,3 +270,18 @@ def test_point_masses_need_no_inverse_inertia():
     ref = forward_dynamics_crba(m, q, qd, tau, fe)
     assert np.allclose(forward_dynamics_stacked(m, q, qd, tau, fe), ref, atol=1e-10)
     assert np.allclose(forward_dynamics_stacked(m, q, qd, tau, fe, method="direct"), ref, atol=1e-10)
+
+
+def test_erratum_tree_mobilities_need_sibling_subtrees():
+    # 7.4.1 applied along each root path (siblings ignored) breaks the direct solution on trees
+    from planargeo.scenes.trees import tree
+    res = tree()
+    m, q, qd = res.model, res.state["q"], res.state["qd"]
+    tau = np.zeros(9)
+    sol = stacked_solve(m, q, qd, tau)
+    ref = forward_dynamics_crba(m, q, qd, tau)
+    for siblings, ok in [(True, True), (False, False)]:
+        Lam, b = tree_mobilities(m, sol.data, tau, sol.articulated, siblings=siblings)
+        a = direct_accelerations(sol, Lam, b)
+        qdd = sol.T.T @ (a - sol.C @ a - sol.kappa)
+        assert np.allclose(qdd, ref, atol=1e-9) == ok

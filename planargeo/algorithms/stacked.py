@@ -386,7 +386,7 @@ def stacked_mobility(sol: StackedSolution) -> np.ndarray:
 # ---------------------------------------------------------------------------
 # direct solution (9.2)
 # ---------------------------------------------------------------------------
-def tree_mobilities(model: Model, data, tau, art=None):
+def tree_mobilities(model: Model, data, tau, art=None, *, siblings: bool = True):
     """Articulated mobilities ``Λ_i^{-1}`` and bias accelerations ``b_i`` of a tree (thesis 7.37-7.38, corrected).
 
     ``a_i = b_i - Λ_i^{-1} Σ_{c child of i} f_c`` (7.37) where ``Λ_i^{-1}``
@@ -399,7 +399,9 @@ def tree_mobilities(model: Model, data, tau, art=None):
     ``Λ_i^{-1} = X^{-1} (s_i T_i^T I_i^{-1} + U_i R_i^T M)``,
     ``b_i = X^{-1} (η_i - U_i R_i^T (M p_i - β - κ_i))``,
     ``X = 1 + U_i R_i^T M I_i``, with ``T_i``, ``U_i`` from the body inertia ``I_i``.
-    For a chain ``E = e = 0`` and this is 7.4.1.
+    For a chain ``E = e = 0`` and this is 7.4.1.  ``siblings=False`` drops
+    ``E``, ``e`` (the chain recursion applied along each root path, as 7.4.1
+    would be read for a tree): wrong for trees, kept to pin the erratum.
 
     Returns
     -------
@@ -421,7 +423,7 @@ def tree_mobilities(model: Model, data, tau, art=None):
             E = np.zeros((3, 3))
             e = np.zeros(3)
             for k in model.children(j):
-                if k == i:
+                if k == i or not siblings:
                     continue
                 E += art["P"][k] @ art["A"][k]
                 e += art["T"][k] @ tau[model.q_slice(k)] + art["P"][k] @ (art["A"][k] @ kap[k] + art["d"][k])
