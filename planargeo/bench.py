@@ -17,7 +17,9 @@ Three tables (Markdown) and charts (SVG + PNG) are written to ``--out``
     dense CRBA solve and against Pinocchio, with its time per call.
 
 All timings are the best of several repeats of the mean over many calls
-(``timeit``), so they estimate the cost without the noise of other processes.
+(``timeit``), so they estimate the cost without the noise of other processes;
+BLAS runs single-threaded (as Pinocchio does): the command re-runs itself in a
+fresh process with ``OPENBLAS_NUM_THREADS=1`` (and OMP/MKL) if needed.
 This module imports matplotlib (charts); the math modules never do.
 """
 from __future__ import annotations
@@ -27,6 +29,7 @@ import datetime as _dt
 import importlib
 import os
 import platform
+import sys
 import timeit
 from pathlib import Path
 
@@ -203,7 +206,9 @@ def write_accuracy(rows, out: Path) -> str:
     names = list(rows[0]["err_crba"])
     lines = [_header("Speed against accuracy"),
              "Largest relative error max|q̈ − q̈_ref| / max|q̈_ref| against the dense CRBA solve "
-             "(`H q̈ = τ − C`) and against Pinocchio's `pin.aba`, with the time per call.\n",
+             "(`H q̈ = τ − C`) and against Pinocchio's `pin.aba`, with the time per call. "
+             "For large N the dense solve is itself the least accurate (its error grows with cond(H)), "
+             "so the column against Pinocchio is the sharper one.\n",
              "| N | method | µs per call | error vs CRBA | error vs Pinocchio |", "|---:|---|---:|---:|---:|"]
     for r in rows:
         for n in names:
@@ -242,12 +247,15 @@ def write_charts(single, batch, out: Path) -> None:
     import matplotlib.pyplot as plt
 
     Ns = [r["N"] for r in single]
+    cycle = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    colour = {n: cycle[k % len(cycle)] for k, n in enumerate(single[0]["times"])}
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     for n in single[0]["times"]:
         ts = np.array([r["times"][n] for r in single]) * 1e6
-        ax[0].loglog(Ns, ts, "o-", label=n)
+        ax[0].loglog(Ns, ts, "o-", label=n, color=colour[n])
         if "pinocchio" in single[0]["times"] and n != "pinocchio":
-            ax[1].semilogx(Ns, ts / (np.array([r["times"]["pinocchio"] for r in single]) * 1e6), "o-", label=n)
+            ax[1].semilogx(Ns, ts / (np.array([r["times"]["pinocchio"] for r in single]) * 1e6), "o-", label=n,
+                           color=colour[n])
     ax[0].set(xlabel="N (links)", ylabel="µs per call", title="Single state: time per call")
     ax[1].set(xlabel="N (links)", ylabel="time / pin.aba", title="Single state: ratio to Pinocchio")
     ax[1].set_yscale("log")
@@ -277,7 +285,7 @@ def write_charts(single, batch, out: Path) -> None:
                if not isinstance(r["err_crba"][n], str) and np.isfinite(r["times"][n])]
         if pts:
             x, y = zip(*pts)
-            ax.loglog(x, np.maximum(y, 1e-17), "o-", label=n)
+            ax.loglog(x, np.maximum(y, 1e-17), "o-", label=n, color=colour[n])
     ax.set(xlabel="µs per call (N = " + ", ".join(map(str, Ns)) + ")", ylabel="relative error vs CRBA",
            title="Speed against accuracy")
     ax.grid(True, which="both", alpha=0.3)
@@ -288,7 +296,27 @@ def write_charts(single, batch, out: Path) -> None:
     plt.close(fig)
 
 
+_THREAD_VARS = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
+
+
+def _single_threaded_argv(args):
+    """argv to re-run this benchmark with single-threaded BLAS, or None if it already is."""
+    if all(os.environ.get(v) == "1" for v in _THREAD_VARS):
+        return None
+    argv = [sys.executable, "-m", "planargeo.bench", "--out", str(args.out), "--sizes", str(args.sizes)]
+    argv += ["--quick"] * bool(args.quick) + ["--no-charts"] * bool(args.no_charts)
+    return argv
+
+
 def main(args) -> int:
+    # Pinocchio is single-threaded; multi-threaded BLAS on a busy machine makes small dense solves
+    # (CRBA) erratic, so every method runs with one BLAS thread: re-run in a fresh process if needed.
+    argv = _single_threaded_argv(args)
+    if argv is not None:
+        import subprocess
+
+        env = dict(os.environ, **{v: "1" for v in _THREAD_VARS})
+        return subprocess.call(argv, env=env)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     sizes = tuple(int(s) for s in str(args.sizes).split(",") if s.strip())

@@ -1,0 +1,130 @@
+"""Widget latency: time from a control change to the redrawn figure, per explorer.
+
+For each explorer (drawn off-screen on an Agg canvas, ``display="agg"``) a
+control is moved through a list of values; each change runs the explorer's
+update (recompute, set the artists in place, ``canvas.draw()``).  It is
+compared with a *bare redraw*: ``fig.canvas.draw()`` of the same figure with
+nothing changed.  The two are measured interleaved (change, bare, change,
+bare...) so that machine load affects both alike; medians are reported.
+
+Goal: for the 10-link chain with every overlay on, the update should cost at
+most 1.3 bare redraws (the explorer's own work is small next to drawing).
+
+Run::
+
+    MPLBACKEND=Agg .venv/bin/python benchmarks/widget_latency.py [--repeat 15] [--out benchmarks/results]
+"""
+from __future__ import annotations
+
+import argparse
+import datetime
+import json
+import os
+import platform
+import statistics
+import time
+from pathlib import Path
+
+import numpy as np
+
+ALL_CHAIN_OVERLAYS = {k: True for k in ("velocity poles", "acceleration poles", "bias terms",
+                                          "internal forces", "T/U split", "articulated inertias")}
+
+
+def cases():
+    """(label, factory, control, values) for every explorer."""
+    from planargeo.widgets import (CarExplorer, ChainExplorer, PercussionExplorer,
+                                   ProjectiveExplorer, ScrewSumExplorer, SliderCrankExplorer,
+                                   TreeExplorer)
+
+    return [
+        ("projective playground (ellipse, construction)", lambda: ProjectiveExplorer(display="agg"),
+         "P x", list(np.linspace(1.8, 3.0, 6)) + list(np.linspace(0.1, 0.6, 6))),
+        ("inertia and percussion (bat)", lambda: PercussionExplorer(display="agg"),
+         "pole x", list(np.linspace(-0.8, -0.1, 12))),
+        ("twist addition", lambda: ScrewSumExplorer(display="agg"),
+         "x2", list(np.linspace(0.5, 2.5, 12))),
+        ("wrench addition", lambda: ScrewSumExplorer(display="agg", add="wrenches"),
+         "angle2", list(np.linspace(60, 120, 12))),
+        ("chain, 4 links, default overlays", lambda: ChainExplorer(display="agg"),
+         "angle", list(np.linspace(-60, 0, 12))),
+        ("chain, 10 links, all overlays", lambda: ChainExplorer(display="agg", links=10, **ALL_CHAIN_OVERLAYS),
+         "angle", list(np.linspace(-60, 0, 12))),
+        ("chain, 20 links, all overlays", lambda: ChainExplorer(display="agg", links=20, **ALL_CHAIN_OVERLAYS),
+         "angle", list(np.linspace(-60, 0, 12))),
+        ("car cornering", lambda: CarExplorer(display="agg"),
+         "speed (m/s)", list(np.linspace(2, 14, 12))),
+        ("slider-crank", lambda: SliderCrankExplorer(display="agg"),
+         "crank angle (deg)", list(np.linspace(10, 70, 12))),
+        ("trees and loops (Fig 9.2)", lambda: TreeExplorer(display="agg"),
+         "speed", list(np.linspace(0.2, 2.0, 12))),
+    ]
+
+
+def measure(factory, control, values, repeat):
+    ex = factory()
+    fig = ex.fig
+    fig.canvas.draw()
+    upd, bare = [], []
+    for _ in range(repeat):
+        for v in values:
+            t0 = time.perf_counter()
+            ex.controls[control].value = float(v)
+            t1 = time.perf_counter()
+            fig.canvas.draw()
+            t2 = time.perf_counter()
+            upd.append(t1 - t0)
+            bare.append(t2 - t1)
+    if ex.message:
+        raise RuntimeError(f"explorer reported a message during the benchmark: {ex.message}")
+    return statistics.median(upd), statistics.median(bare), ex.n_updates
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeat", type=int, default=3, help="passes over each value list")
+    ap.add_argument("--out", default=str(Path(__file__).parent / "results"))
+    args = ap.parse_args(argv)
+    import matplotlib
+
+    matplotlib.use("Agg")
+    rows = []
+    for label, factory, control, values in cases():
+        u, b, n = measure(factory, control, values, args.repeat)
+        rows.append({"explorer": label, "control": control, "update_ms": 1e3 * u, "bare_ms": 1e3 * b,
+                     "ratio": u / b, "updates": n})
+        print(f"{label:48s} update {1e3 * u:7.1f} ms  bare {1e3 * b:7.1f} ms  ratio {u / b:5.2f}")
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    goal = next(r for r in rows if r["explorer"].startswith("chain, 10 links"))
+    meta = {"date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+            "python": platform.python_version(), "machine": platform.machine(),
+            "cpus": os.cpu_count(), "load": os.getloadavg()[0] if hasattr(os, "getloadavg") else None,
+            "matplotlib": matplotlib.__version__, "repeat": args.repeat}
+    (out / "widget_latency.json").write_text(json.dumps({"meta": meta, "rows": rows}, indent=1))
+    lines = [
+        "# Widget latency",
+        "",
+        "Median time from a control change to the redrawn figure (Agg canvas, off-screen), and its",
+        "ratio to a bare redraw (`fig.canvas.draw()` of the same figure with nothing changed),",
+        "measured interleaved. Generated by `benchmarks/widget_latency.py`.",
+        "",
+        f"Machine: {meta['machine']}, {meta['cpus']} CPUs, load average {meta['load']:.1f} at the start; "
+        f"Python {meta['python']}, matplotlib {meta['matplotlib']}; {meta['date']}.",
+        "",
+        "| explorer | control | update (ms) | bare redraw (ms) | ratio |",
+        "|---|---|---:|---:|---:|",
+    ]
+    for r in rows:
+        lines.append(f"| {r['explorer']} | `{r['control']}` | {r['update_ms']:.1f} | {r['bare_ms']:.1f} "
+                     f"| {r['ratio']:.2f} |")
+    ok = goal["ratio"] <= 1.3
+    lines += ["", f"Goal (10-link chain, all overlays, ratio <= 1.3): **{'met' if ok else 'NOT met'}** "
+                  f"({goal['ratio']:.2f}).", ""]
+    (out / "widget_latency.md").write_text("\n".join(lines))
+    print(f"wrote {out / 'widget_latency.md'}")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
