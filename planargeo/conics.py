@@ -20,7 +20,7 @@ import numpy as np
 
 from ._validate import as_array, as_mat3, as_vec3, as_xy, check_positive, check_symmetric
 from .errors import DegenerateGeometryError, InputError, ShapeError
-from .projective import T_STD, _first_index
+from .projective import T_STD, _cross, _first_index
 
 __all__ = [
     "polar", "pole", "conic_residual", "is_on_conic", "ConicType", "classify", "centre",
@@ -296,7 +296,7 @@ def centre(C) -> np.ndarray:
     array([1., 0., 0.])
     """
     C = _conic(C)
-    z = np.cross(C[..., 0, :], C[..., 1, :])
+    z = _cross(C[..., 0, :], C[..., 1, :])
     bad = np.all(z == 0, axis=-1)
     if np.any(bad):
         raise DegenerateGeometryError(f"C has no unique centre{_first_index(bad)} "
@@ -311,8 +311,8 @@ def _intersections(C, l, rtol):
     l = l[..., 0, :]
     k = np.argmax(np.abs(l), axis=-1)
     eye = np.eye(3)
-    a = _unit(np.cross(l, eye[(k + 1) % 3]))
-    b = _unit(np.cross(l, eye[(k + 2) % 3]))
+    a = _unit(_cross(l, eye[(k + 1) % 3]))
+    b = _unit(_cross(l, eye[(k + 2) % 3]))
     A, B, G = _quad(a, C, a), _quad(a, C, b), _quad(b, C, b)
     D = B * B - A * G
     scale = B * B + np.abs(A * G)
@@ -465,7 +465,7 @@ def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 
     p = as_vec3(p, "p")
     T, X = tangents_from_point(C, p, on_interior=on_interior, rtol=rtol)
     Xu = _unit(X)
-    Lj = np.cross(Xu[..., 0, :], Xu[..., 1, :])
+    Lj = _cross(Xu[..., 0, :], Xu[..., 1, :])
     same = np.all(Lj == 0, axis=-1, keepdims=True)
     Lj = np.where(same, T[..., 0, :], Lj)
     # orient like C p so that drawings and comparisons are consistent
@@ -509,7 +509,7 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
     if lines is None:
         k = np.argmax(np.abs(p), axis=-1)
         eye = np.eye(3)
-        lines = np.stack([np.cross(p, eye[(k + 1) % 3]), np.cross(p, eye[(k + 2) % 3])], axis=-2)
+        lines = np.stack([_cross(p, eye[(k + 1) % 3]), _cross(p, eye[(k + 2) % 3])], axis=-2)
         if np.any(np.all(p == 0, axis=-1)):
             raise DegenerateGeometryError("p is the zero vector, which is no point")
     else:
@@ -520,14 +520,14 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
             i = int(np.argwhere(off)[0][-1])
             raise InputError(f"lines[{i}] does not pass through p")
     X, real = _intersections(C[..., None, :, :], _unit(lines), rtol)
-    distinct = real & ~np.all(np.cross(X[..., 0, :], X[..., 1, :]) == 0, axis=-1)
+    distinct = real & ~np.all(_cross(X[..., 0, :], X[..., 1, :]) == 0, axis=-1)
     if on_miss == "raise" and not np.all(distinct):
         i = int(np.argwhere(~distinct)[0][-1])
         raise InputError(f"lines[{i}] does not cut C in two distinct real points "
                          "(p is not interior, or the line is tangent)")
     T = _nline(_mv(C[..., None, None, :, :], X))
-    poles = _unit(np.cross(_unit(T[..., 0, :]), _unit(T[..., 1, :])))
-    polar_ = np.cross(poles[..., 0, :], poles[..., 1, :])
+    poles = _unit(_cross(_unit(T[..., 0, :]), _unit(T[..., 1, :])))
+    polar_ = _cross(poles[..., 0, :], poles[..., 1, :])
     bad = np.all(polar_ == 0, axis=-1) & np.all(distinct, axis=-1)
     if np.any(bad):
         raise DegenerateGeometryError(f"lines[0] and lines[1] are the same line{_first_index(bad)}")
@@ -562,7 +562,7 @@ def correlation(C, Q, L, rtol: float = 1e-13):
 
 
 def _solve_basis(Mcols, v, name: str, rtol: float):
-    _check_invertible(Mcols, name, "not a basis (its three elements are dependent)", rtol)
+    _check_invertible(Mcols, name, "singular: the three base elements are dependent (no basis)", rtol)
     Mcols, v = np.broadcast_arrays(Mcols, v[..., None, :])
     return np.linalg.solve(Mcols, v[..., 0, :][..., None])[..., 0]
 
@@ -582,7 +582,7 @@ def decompose_point(P, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     """
     P = as_vec3(P, "P")
     Q = np.stack(np.broadcast_arrays(as_vec3(Q1, "Q1"), as_vec3(Q2, "Q2"), as_vec3(Q3, "Q3")), axis=-1)
-    return _solve_basis(Q, P, "Q1, Q2, Q3", rtol)
+    return _solve_basis(Q, P, "[Q1, Q2, Q3]", rtol)
 
 
 def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
@@ -600,7 +600,7 @@ def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     C = _conic(C)
     L = as_vec3(L, "L")
     Q = np.stack(np.broadcast_arrays(as_vec3(Q1, "Q1"), as_vec3(Q2, "Q2"), as_vec3(Q3, "Q3")), axis=-1)
-    return _solve_basis(C @ Q, L, "C Q1, C Q2, C Q3", rtol)
+    return _solve_basis(C @ Q, L, "[C Q1, C Q2, C Q3]", rtol)
 
 
 def special_base(C, Q1, rtol: float = 1e-9):

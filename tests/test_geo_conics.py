@@ -311,7 +311,7 @@ def test_special_decomposition_5_44_to_5_46(c, a, b, th, s, phi, P):
 
 
 def test_collinear_base_raises():
-    with pytest.raises(DegenerateGeometryError, match="Q1, Q2, Q3 is not a basis"):
+    with pytest.raises(DegenerateGeometryError, match=r"\[Q1, Q2, Q3\] is singular: the three base elements are dependent"):
         decompose_point([1.0, 2, 3], from_xy([0.0, 0]), from_xy([1.0, 1]), from_xy([2.0, 2]))
 
 
