@@ -577,7 +577,10 @@ class Twist(_Screw):
     @property
     def pole(self):
         """The pole as a :class:`planargeo.geometry.Point` (the array itself, thesis 5.51)."""
-        if np.any(np.all(self._array == 0, axis=-1)):
+        if self._array.ndim != 1:
+            from .errors import ShapeError
+            raise ShapeError(f"twist must be a single (3,) twist for .pole, got shape {self._array.shape}")
+        if not np.any(self._array):
             from .errors import DegenerateGeometryError
             raise DegenerateGeometryError("twist is zero: the zero twist has no pole")
         from .geometry import Point
@@ -682,7 +685,10 @@ class Wrench(_Screw):
     @property
     def line(self):
         """The line of action (polar) as a :class:`planargeo.geometry.Line` (thesis 5.56)."""
-        if np.any(np.all(self._array == 0, axis=-1)):
+        if self._array.ndim != 1:
+            from .errors import ShapeError
+            raise ShapeError(f"wrench must be a single (3,) wrench for .line, got shape {self._array.shape}")
+        if not np.any(self._array):
             from .errors import DegenerateGeometryError
             raise DegenerateGeometryError("wrench is zero: the zero wrench has no line of action")
         from .geometry import Line

@@ -192,3 +192,13 @@ def test_geometry_classes_when_available():
     np.testing.assert_allclose(L.array, [0.0, 2.0, 2.5])
     assert isinstance(I.percussion_pole([0.0, 0.0, 1.0]), geometry.Point)
     assert isinstance(I.drawable_conic(), geometry.Conic)
+
+
+def test_drawable_conic_matches_geo_circle():
+    geometry = pytest.importorskip("planargeo.geometry")
+    I = Inertia.from_mass(3.0, [1.5, -0.5], radius_of_gyration=0.8)
+    C = I.drawable_conic().matrix
+    ref = geometry.Conic.circle((1.5, -0.5), 0.8).matrix
+    k = C[0, 0] / ref[0, 0]
+    np.testing.assert_allclose(C, k * ref, atol=1e-12)
+    assert k > 0

@@ -295,6 +295,8 @@ def test_pole_and_line_as_geometry_objects():
     f = Wrench.force([0.0, 1.0], [2.0, 0.0])
     assert isinstance(f.line, geometry.Line) and isinstance(f.polar, geometry.Line)
     np.testing.assert_allclose(np.asarray(f.line.array), f.array)
+    with pytest.raises(ShapeError, match="twist must be a single"):
+        Twist(np.ones((2, 3))).pole
 
 
 @given(xy, xy, nz, nz, nz)
