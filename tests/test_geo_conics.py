@@ -361,6 +361,16 @@ def test_affine_frame_maps_unit_curve_onto_conic(c, a, b, th, kind):
          "parabola": np.stack([s, s * s], -1)}[kind]
     X = U @ F.A.T + F.t
     assert np.all(is_on_conic(C, from_xy(X), rtol=1e-8))
+    # tangency for every kind: the polar of a point on the conic is along the curve's derivative
+    dU = {"ellipse": np.stack([-np.sin(2 * s), np.cos(2 * s)], -1),
+          "hyperbola": np.concatenate([np.stack([np.sinh(s), np.cosh(s)], -1),
+                                       np.stack([-np.sinh(s), np.cosh(s)], -1)]),
+          "parabola": np.stack([np.ones_like(s), 2 * s], -1)}[kind]
+    dX = dU @ F.A.T
+    e = line_direction(polar(C, from_xy(X)))
+    assert np.allclose((e[:, 0] * dX[:, 1] - e[:, 1] * dX[:, 0]) / np.linalg.norm(dX, axis=-1), 0, atol=1e-8)
+    assert np.allclose(incidence(from_xy(X), polar(C, from_xy(X))) / np.linalg.norm(polar(C, from_xy(X)), axis=-1),
+                       0, atol=1e-8 * (1 + np.abs(X).max()))
     assert same_matrix_up_to_scale(conic_from_affine(kind, F.A, F.t), C, tol=1e-7)
     if kind == "hyperbola":
         assert np.allclose(F.t, c)
