@@ -63,7 +63,7 @@ def check_positive(x, name: str, *, strict: bool = True) -> np.ndarray:
     bad = a <= 0 if strict else a < 0
     if np.any(bad):
         word = "positive" if strict else "non-negative"
-        raise InputError(f"{name} must be {word}, got {a[bad].ravel()[0]!r}")
+        raise InputError(f"{name} must be {word}, got {float(a[bad].ravel()[0])!r}")
     return a
 
 
