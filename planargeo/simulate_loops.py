@@ -26,9 +26,11 @@ Diagnostics per recorded step (``result.residual`` columns and ``result.extra``)
 energy (kinetic + gravitational; conserved for a free mechanism without
 drives), the position residuals ``φ`` and the velocity residuals ``J_c q̇``.
 
-Measured (slider-crank of 9.6, free crank, g = 9.81, 10 s, DOP853 with
-``rtol = 1e-8``, projection): position residual below 1e-12, velocity
-residual below 1e-12, relative energy drift about 1e-8 (see the tests).
+Measured (slider-crank of 9.6, free crank, g = 9.81, 10 s ≈ 44 crank turns,
+DOP853 with ``rtol = 1e-8``, projection triggered above 1e-10): position
+residual ≤ 5e-11, velocity residual ≤ 1e-10, relative energy drift 8e-7
+(24 560 dynamics evaluations).  Without stabilisation the residuals grow
+by about 1e-8 per second at that tolerance.
 """
 from __future__ import annotations
 
