@@ -91,7 +91,7 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
 
     Examples
     --------
-    A unit point mass on a massless-free rod of length 1 (pendulum), held horizontally:
+    A unit point mass at distance 1 from its pivot (a simple pendulum), released horizontally:
 
     >>> from planargeo.model import Body, Joint, Model
     >>> m = Model([Body(1.0, com=(1.0, 0.0))], [Joint("revolute")], [-1])
