@@ -43,7 +43,7 @@ from ..errors import ShapeError, SingularConfigurationError, TopologyError
 from ..kinematics import check_state, kinematics
 from ..model import Model
 
-__all__ = ["adjacency", "trunk", "blocks", "reaction_basis", "StackedSolution", "stacked_solve",
+__all__ = ["adjacency", "trunk", "blocks", "reaction_basis", "quake_space", "StackedSolution", "stacked_solve",
            "articulated_quantities", "articulation_matrix", "stacked_mobility",
            "tree_mobilities", "direct_accelerations", "forward_dynamics_stacked"]
 
@@ -168,13 +168,20 @@ def reaction_basis(s) -> np.ndarray:
     return u[:, k:]
 
 
-def _inv_checked(M, what, exc=SingularConfigurationError):
+def _inv_checked(M, what, exc=SingularConfigurationError, scale=None):
+    """Inverse of a small matrix; ``exc`` with the condition number if it is singular.
+
+    For 1×1 matrices ``scale`` (the size the entry would have if regular)
+    gives the relative test ``|m| <= 1e-14 scale``.
+    """
     if M.size == 0:
         return M.copy()
     if M.shape == (1, 1):
         m = float(M[0, 0])
-        if not abs(m) > 0 or not np.isfinite(m):
-            raise exc(f"{what} is singular", float("inf"))
+        ref = abs(m) if scale is None else float(scale)
+        if not np.isfinite(m) or abs(m) <= 1e-14 * ref or m == 0.0:
+            cond = float("inf") if m == 0.0 or not np.isfinite(m) else ref / abs(m)
+            raise exc(f"{what} is singular", cond)
         return np.array([[1.0 / m]])
     c = np.linalg.cond(M)
     if not np.isfinite(c) or c > 1e14:
@@ -206,7 +213,8 @@ def articulated_quantities(model: Model, data, tau):
     for i in range(N - 1, -1, -1):
         Ai = A[i]
         sAs = s[i].T @ Ai @ s[i]
-        T[i] = Ai @ s[i] @ _inv_checked(sAs, f"s^T A s of joint {i}")
+        T[i] = Ai @ s[i] @ _inv_checked(sAs, f"s^T A s of joint {i}",
+                                        scale=np.abs(Ai).max() * float(np.sum(s[i] * s[i])))
         # R U^T = 1 - T S^T (7.8): no reaction basis and no inverse of A needed
         # (A may be singular for point masses)
         P[i] = eye3 - T[i] @ s[i].T
@@ -436,7 +444,8 @@ def tree_mobilities(model: Model, data, tau, art=None, *, siblings: bool = True)
         # s T^T I^-1 = s (s^T I s)^-1 s^T and U R^T = 1 - s T^T: no inverse of I
         # (point masses have a singular I); η = s (s^T I s)^-1 (Q - s^T p)   (7.35)
         if si.shape[1]:
-            sIs_inv = _inv_checked(si.T @ Ii @ si, f"s^T I s of joint {i}")
+            sIs_inv = _inv_checked(si.T @ Ii @ si, f"s^T I s of joint {i}",
+                                   scale=np.abs(Ii).max() * float(np.sum(si * si)))
             Ti = Ii @ si @ sIs_inv
             mob_i = si @ sIs_inv @ si.T
             eta = si @ (sIs_inv @ (Qi - si.T @ p[i]))
