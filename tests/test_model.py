@@ -151,3 +151,22 @@ def test_gravity_wrench_acts_at_com():
         point = np.array([d.com[i, 1], -d.com[i, 0], 1.0])  # the com as a homogeneous point
         assert abs(point @ d.g[i]) < 1e-12                    # incidence (5.69)
         np.testing.assert_allclose(d.g[i, :2], m.bodies[i].mass * np.array(m.gravity))
+
+
+from hypothesis import given  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@given(st.lists(st.integers(-3, 8), min_size=1, max_size=8))
+def test_property_parents_valid_or_topology_error(parents):
+    """Any integer parent list either builds a model whose parents precede their children,
+    or raises TopologyError (never anything else)."""
+    n = len(parents)
+    try:
+        m = Model([Body(1.0)] * n, [Joint("revolute")] * n, parents)
+    except TopologyError:
+        assert any(not -1 <= p < i for i, p in enumerate(parents))
+        return
+    assert all(-1 <= p < i for i, p in enumerate(m.parents))
+    for i in range(n):
+        assert m.ancestors(i)[-1] == i and m.ancestors(i)[0] in m.children(-1)
