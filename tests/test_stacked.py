@@ -285,3 +285,36 @@ def test_erratum_tree_mobilities_need_sibling_subtrees():
         a = direct_accelerations(sol, Lam, b)
         qdd = sol.T.T @ (a - sol.C @ a - sol.kappa)
         assert np.allclose(qdd, ref, atol=1e-9) == ok
+
+
+@given(st.integers(1, 15), st.integers(0, 10_000))
+def test_trunk_rows_are_root_paths(n, seed):
+    m = random_model(n, seed=seed, tree=True)
+    D = trunk(adjacency(m.parents))
+    for i in range(n):
+        assert set(np.flatnonzero(D[i])) == set(m.ancestors(i))
+
+
+def test_articulation_matrix_series_9_34_and_recursion_9_64():
+    rng = np.random.default_rng(12)
+    m = random_model(7, seed=12, tree=True)
+    q, qd, tau, fe = _state(m, rng)
+    sol = stacked_solve(m, q, qd, tau, fe)
+    X = sol.C.T @ sol.P
+    series, Xk = np.eye(21), np.eye(21)
+    for _ in range(6):
+        Xk = Xk @ X
+        series += Xk
+    assert np.allclose(series, sol.L, atol=1e-10)                         # (9.34), finite
+    assert np.allclose(sol.L.T, np.linalg.inv(np.eye(21) - sol.U @ sol.R.T @ sol.C), atol=1e-10)  # (9.40)
+    # (9.64): u_i = s_i T_i^T A_i^-1 (T_i Q_i - d_i) + U_i R_i^T (u_parent + κ_i), root to tips
+    art = sol.articulated
+    u = np.zeros((7, 3))
+    for i in range(7):
+        s, T, A = art["s"][i], art["T"][i], art["A"][i]
+        up = u[m.parents[i]] if m.parents[i] >= 0 else np.zeros(3)
+        Qi = tau[m.q_slice(i)]
+        R, U = sol.R[3 * i:3 * i + 3], sol.U[3 * i:3 * i + 3]
+        act = s @ np.linalg.solve(s.T @ A @ s, Qi - s.T @ art["d"][i]) if s.shape[1] else np.zeros(3)
+        u[i] = act + U @ (R.T @ (up + sol.kappa[3 * i:3 * i + 3]))
+    assert np.allclose(u.reshape(-1), sol.a, atol=1e-9)
