@@ -21,9 +21,12 @@ articulated bias force ``d_i`` (after its children have been added):
 * the joint force is ``f_i = A_i a_i + d_i`` (3.13).
 
 :func:`forward_dynamics` evaluates batches ``(..., nq)`` in one vectorised
-call (loop over bodies, vectorised over the batch); a single state of a model
-with one-dof (or fixed) joints and no batch dimension takes a scalar
-pure-Python path that avoids numpy's per-call overhead.
+call (loop over bodies, vectorised over the batch).  For models whose joints
+are all revolute, prismatic or fixed the recursion is written component by
+component (:func:`_aba_components`): a single state (or a batch of at most
+``SMALL_BATCH``) runs on Python floats, avoiding numpy's per-call overhead, and
+a larger batch runs the same code on one contiguous array per component.
+Other joint kinds use the general 3×k array path of :func:`articulated_body`.
 :func:`articulated_body` returns the whole workspace (``A``, ``d``, ``a``,
 ``f``, ``D``, ``U``, ``u``...) for drawings and reports.
 """
