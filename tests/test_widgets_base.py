@@ -1,0 +1,170 @@
+"""Behaviour shared by every explorer: construction, fuzzed controls, errors, export, ipympl."""
+import subprocess
+import sys
+import textwrap
+
+import ipywidgets as W
+import numpy as np
+import pytest
+
+import planargeo.widgets as widgets
+from planargeo.errors import InputError, SceneError
+from planargeo.widgets.base import Explorer, Step, fmt
+
+NAMES = sorted(widgets.EXPLORERS)
+
+
+def _values_for(w):
+    if isinstance(w, (W.FloatSlider, W.IntSlider)):
+        lo, hi = w.min, w.max
+        return [lo, hi, w.value]
+    if isinstance(w, (W.Dropdown, W.ToggleButtons)):
+        return [o if not isinstance(o, tuple) else o[1] for o in w.options] + [w.value]
+    if isinstance(w, W.Checkbox):
+        return [not w.value, w.value]
+    if isinstance(w, W.Text):
+        return ["1,2; nonsense", "", w.value]
+    return [w.value]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_constructs_with_a_readout(name):
+    ex = getattr(widgets, name)(display="agg")
+    assert ex.message == "" and ex.readout_values and ex.n_updates == 1
+    assert "<table" in ex.readout.value
+    assert isinstance(ex.widget, W.VBox) and "planargeo-explorer" in ex.widget._dom_classes
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_control_every_extreme_never_raises(name):
+    ex = getattr(widgets, name)(display="agg")
+    for cname, w in ex.controls.items():
+        if w.disabled:
+            continue
+        for v in _values_for(w):
+            w.value = v                      # must not raise, whatever the value
+            assert isinstance(ex.message, str)
+            assert not ex.message.startswith("internal error"), (cname, v, ex.message)
+        ex.fig.canvas.draw()
+    ex.reset()
+    assert ex.message == "", ex.message
+    assert ex.values == ex.defaults
+
+
+def test_unknown_control_and_display_are_input_errors():
+    with pytest.raises(InputError, match="no control 'nope'"):
+        widgets.ScrewSumExplorer(display="agg", nope=1)
+    with pytest.raises(InputError, match="display must be one of"):
+        widgets.ScrewSumExplorer(display="svg")
+
+
+class Toy(Explorer):
+    """A minimal explorer: a segment from the origin to (a, b); a > b is 'impossible'."""
+
+    def make_controls(self):
+        return {"a": Step(-2, 2, 0.1, 0.5, "a").make("a"), "b": Step(-2, 2, 0.1, 1.0, "b").make("b")}
+
+    def make_artists(self, ax):
+        self.seg, = ax.plot([0, 1], [0, 1])
+
+    def compute(self, v, changed):
+        if v["a"] > v["b"]:
+            raise SceneError("a must not exceed b")
+        if v["a"] == -2:
+            return {"a": 1 / 0}
+        if v["b"] == -2:
+            return {"boom": True}
+        return dict(v, changed=sorted(changed))
+
+    def render(self, st):
+        if st.get("boom"):
+            raise KeyError("render failed on purpose")
+        self.seg.set_data([0, st["a"]], [0, st["b"]])
+        return {"a": st["a"], "b": st["b"], "changed": ",".join(st["changed"])}
+
+
+def test_errors_become_messages_and_keep_the_last_drawing():
+    t = Toy(display="agg")
+    t.controls["a"].value = 0.8
+    assert t.readout_values["a"] == 0.8 and t.seg.get_xdata()[1] == 0.8
+    t.controls["a"].value = 1.5                              # a PlanargeoError
+    assert t.message == "a must not exceed b" and t.seg.get_xdata()[1] == 0.8
+    assert t._msg_text.get_visible() and t.readout_values["a"] == 0.8
+    t.controls["a"].value = -2.0                             # ZeroDivisionError in compute
+    assert t.message.startswith("cannot compute this configuration")
+    t.controls["a"].value = 0.0
+    t.controls["b"].value = -2.0 + 0.0                       # a <= b fails first: message
+    t.set(a=-1.9, b=-2.0)                                    # still a > b
+    assert "exceed" in t.message
+    t.set(a=-2.0, b=-2.0)                                    # compute raises ZeroDivisionError
+    assert "cannot compute" in t.message
+    t.controls["a"].value = 0.3
+    t.controls["b"].value = 1.0
+    assert t.message == "" and not t._msg_text.get_visible() and t.readout_values["a"] == 0.3
+
+
+def test_render_errors_are_reported_not_raised():
+    t = Toy(display="agg")
+    t.set(a=-2.0 + 0.1, b=-2.0 + 0.1)
+    t.compute = lambda v, c: {"boom": True}
+    t.controls["b"].value = 1.0
+    assert t.message.startswith("internal error (KeyError)")
+    del t.compute
+    t.controls["b"].value = 1.5
+    assert t.message == ""
+
+
+def test_hold_batches_updates():
+    t = Toy(display="agg")
+    n = t.n_updates
+    with t.hold():
+        t.controls["a"].value = -1.0
+        t.controls["b"].value = 0.0
+    assert t.n_updates == n + 1 and t.readout_values["changed"] == "a,b"
+
+
+def test_export_button(tmp_path):
+    t = Toy(display="agg", export_dir=tmp_path)
+    t.export_button.click()
+    files = list(tmp_path.glob("*.svg"))
+    assert len(files) == 1 and str(files[0]) in t.export_label.value
+    assert "<svg" in files[0].read_text()
+
+
+def test_reset_button():
+    t = Toy(display="agg", a=-1.0)
+    assert t.defaults["a"] == -1.0
+    t.set(a=0.2, b=0.4)
+    t.reset_button.click()
+    assert t.values == {"a": -1.0, "b": 1.0} and t.readout_values["a"] == -1.0
+
+
+def test_image_display_renders_png():
+    t = Toy(display="image")
+    first = bytes(t.image.value)
+    assert first.startswith(b"\x89PNG")
+    t.controls["b"].value = -0.5
+    assert bytes(t.image.value) != first
+
+
+def test_fmt():
+    assert fmt(float("inf")) == "∞" and fmt(0.0) == "0" and fmt(True) == "yes"
+    assert fmt(1234567.0) == "1.235e+06" and fmt((1.0, 2.5)) == "(1, 2.5)" and fmt("<b>") == "&lt;b&gt;"
+
+
+def test_ipympl_canvas_is_the_figure_widget():
+    code = textwrap.dedent("""
+        import matplotlib
+        matplotlib.use("module://ipympl.backend_nbagg")
+        import ipywidgets as W
+        from planargeo.widgets import ProjectiveExplorer
+        ex = ProjectiveExplorer()
+        assert ex.display_mode == "ipympl"
+        assert isinstance(ex.fig.canvas, W.DOMWidget)
+        assert any(ex.fig.canvas is c for c in ex.widget.children[1].children)
+        ex.controls["P x"].value = 1.0
+        assert ex.message == "" and ex.readout_values["P x"] == 1.0
+        print("ok")
+    """)
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0 and r.stdout.strip().endswith("ok"), r.stderr[-2000:]
