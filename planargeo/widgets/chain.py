@@ -25,6 +25,7 @@ from matplotlib.lines import Line2D
 
 from ..algorithms.aba import articulated_body
 from ..draw.artists import ConicArtist, LineArtist, PointArtist
+from ..draw.mechanism import draw_ground
 from ..draw.style import COLORS, setup_axes
 from ..errors import InputError, SingularConfigurationError
 from ..model import Body, Joint, Model
@@ -59,6 +60,15 @@ def chain_for(n: int, joints: str = "revolute", gravity: bool = True, length: fl
     bodies = [Body(m, (L / 2, 0.0), m * L * L / 12, name=f"link{i + 1}") for i in range(n)]
     js = [Joint(k, (0.0 if i == 0 else L, 0.0, 0.0), name=f"joint{i + 1}") for i, k in enumerate(kinds)]
     return Model(bodies, js, list(range(-1, n - 1)), (0.0, -9.81) if gravity else (0.0, 0.0))
+
+
+def _set_arrow_scale(art: LineArtist, scale: float) -> None:
+    """Change a LineArtist's force-arrow scale (draw has no public setter yet)."""
+    if hasattr(art, "set_scale"):
+        art.set_scale(scale)
+    else:
+        art._scale = float(scale)
+        art.stale = True
 
 
 def _energy(model: Model, data) -> tuple[float, float]:
@@ -123,8 +133,7 @@ class ChainExplorer(Explorer):
         self.links_line = Line2D([], [], color=COLORS["ground"], lw=2.5, marker="o", ms=4,
                                  mfc="white", zorder=5)
         ax.add_line(self.links_line)
-        self.ground = Line2D([-0.3, 0.3], [0, 0], color=COLORS["ground"], lw=4, zorder=5)
-        ax.add_line(self.ground)
+        draw_ground((0.0, 0.0), ax, width=0.8, zorder=4)
         z = np.array([0.0, 0.0, 1.0])
         zl = np.array([1.0, 0.0, 0.0])
 
@@ -144,6 +153,7 @@ class ChainExplorer(Explorer):
                                                linewidth=1.2))
         self.r_art = pool(lambda i: LineArtist(zl, role="reaction", scale=0.02))
         self.A_art = pool(lambda i: ConicArtist(np.eye(3), role="inertia", linewidth=0.8))
+        self._scaled = set(self.f_art + self.r_art)
         self.time_text = ax.text(0.02, 0.97, "", transform=ax.transAxes, va="top", fontsize=9)
 
     # -- model / state -------------------------------------------------------------
@@ -203,7 +213,6 @@ class ChainExplorer(Explorer):
         if self.ax.get_xlim()[1] != reach:
             self.ax.set_xlim(-reach, reach)
             self.ax.set_ylim(-reach, reach)
-            self.ground.set_data([-0.06 * reach, 0.06 * reach], [0, 0])
         fscale = 0.5 / max(1.0, float(np.max(np.abs(w.f[:, :2]))))
         layers = [
             (self.v_art, "velocity poles", w.v, PointArtist.set_point),
@@ -221,8 +230,8 @@ class ChainExplorer(Explorer):
                 show = on and i < n
                 if show:
                     setter(art, arr[i])
-                    if isinstance(art, LineArtist) and art._scale is not None:
-                        art._scale = fscale
+                    if isinstance(art, LineArtist) and art in self._scaled:
+                        _set_arrow_scale(art, fscale)
                 if art.get_visible() != show:
                     art.set_visible(show)
         self.time_text.set_text(f"t = {st['t']:.2f} s" if self._traj is not None else "")

@@ -23,6 +23,7 @@ from matplotlib.patches import Rectangle
 
 from .. import scenes
 from ..draw.artists import LineArtist, PointArtist
+from ..draw.mechanism import draw_ground
 from ..draw.style import COLORS, setup_axes
 from .base import Explorer, Step
 
@@ -61,6 +62,7 @@ class SliderCrankExplorer(Explorer):
         self.guide = Line2D([-0.35, -0.35, np.nan, 0.35, 0.35], [-20, 20, np.nan, -20, 20],
                             color=COLORS["ground"], lw=1.0, ls="--", zorder=1)
         ax.add_line(self.guide)
+        draw_ground((0.0, -0.15), ax, width=0.9, zorder=1)
         self.crank = Line2D([], [], color=COLORS["ground"], lw=4, solid_capstyle="round", zorder=5)
         self.rod = Line2D([], [], color=COLORS["body"], lw=3, solid_capstyle="round", zorder=5)
         self.pins = Line2D([], [], ls="none", marker="o", ms=5, mfc="white", mec="black", zorder=6)

@@ -14,6 +14,7 @@ from matplotlib.lines import Line2D
 
 from .. import scenes
 from ..draw.artists import LineArtist, PointArtist
+from ..draw.mechanism import draw_ground
 from ..draw.style import COLORS, setup_axes
 from .base import Explorer, Step
 
@@ -53,6 +54,7 @@ class TreeExplorer(Explorer):
                            mew=2, zorder=6)
         for a in (self.links, self.joints, self.pins):
             ax.add_line(a)
+        draw_ground((0.0, 0.0), ax, width=0.9, zorder=1)
         self.labels = [ax.text(0, 0, str(i + 1), fontsize=7, color="#404040", zorder=7)
                        for i in range(N)]
         z = np.array([0.0, 0.0, 1.0])
