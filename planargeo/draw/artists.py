@@ -133,6 +133,11 @@ def clip_line(line, box) -> np.ndarray | None:
     return out
 
 
+def _pyxy(xy):
+    """Plain Python floats (numpy scalars trip a Matplotlib 3.10 mathtext deprecation)."""
+    return (float(xy[0]), float(xy[1]))
+
+
 def _view(ax):
     (x0, y0), (x1, y1) = ax.viewLim.get_points()
     return (min(x0, x1), max(x0, x1), min(y0, y1), max(y0, y1))
@@ -203,6 +208,10 @@ class _Base(martist.Artist):
 
     def _draw_children(self, renderer, children):
         for c in children:
+            if isinstance(c, Text):
+                x, y = c.get_position()
+                if not (abs(x) < 1e7 and abs(y) < 1e7):  # far off the canvas: nothing to show
+                    continue
             if c.get_visible():
                 c.draw(renderer)
 
@@ -222,7 +231,7 @@ class _Base(martist.Artist):
         if not self._text.get_text():
             return []
         off = self._text_offset * renderer.points_to_pixels(1.0)
-        self._text.set_position(tuple(np.asarray(anchor_disp) + off))
+        self._text.set_position(_pyxy(np.asarray(anchor_disp) + off))
         return [self._text]
 
 
@@ -334,10 +343,10 @@ class PointArtist(_Base):
         L = float(np.clip(self._glyph_scale * np.hypot(a, b), 12.0, 40.0)) * pts
         base = cd + n * (s - 14 * pts)
         self._arrow.set_positions(tuple(base - t * L / 2), tuple(base + t * L / 2))
-        self._inf.set_position(tuple(base - t * (L / 2 + 7 * pts)))
+        self._inf.set_position(_pyxy(base - t * (L / 2 + 7 * pts)))
         out += [self._arrow, self._inf]
         if self._text.get_text():
-            self._text.set_position(tuple(base - n * 16 * pts))
+            self._text.set_position(_pyxy(base - n * 16 * pts))
             out.append(self._text)
         return out
 
@@ -433,7 +442,7 @@ class LineArtist(_Base):
             out += [self._arc, self._head]
             if self._text.get_text():
                 right = horiz == "right"
-                self._text.set_position((cx - r - 4 * pts, cy) if right else (cx + r + 4 * pts, cy))
+                self._text.set_position(_pyxy((cx - r - 4 * pts, cy) if right else (cx + r + 4 * pts, cy)))
                 self._text.set_horizontalalignment("right" if right else "left")
                 self._text.set_verticalalignment("center")
                 out.append(self._text)
