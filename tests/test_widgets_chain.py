@@ -124,3 +124,17 @@ def test_image_mode_updates_png():
     a = ex.image.value
     ex.controls["angle"].value = 60.0
     assert ex.image.value[:8] == b"\x89PNG\r\n\x1a\n" and ex.image.value != a
+
+
+def test_active_part_hidden_without_torque_shown_with_it():
+    ex = ChainExplorer(display="agg", links=3, torque=0.0, **{"T/U split": True})
+    # no joint torque: Q = sᵀf = τ = 0, the joint force is pure reaction
+    assert not any(a.get_visible() for a in ex.t_art)
+    assert [a.get_visible() for a in ex.r_art[:3]] == [True] * 3
+    ex.controls["torque"].value = 5.0
+    assert [a.get_visible() for a in ex.t_art[:3]] == [True] * 3
+    # the active part lies on the percussion axis: its moment about the joint is Q = τ
+    w = ex.state["w"]
+    for i in range(3):
+        x, y = w.origin[i]
+        assert np.dot([y, -x, 1.0], ex.t_art[i].get_line()) == pytest.approx(5.0)

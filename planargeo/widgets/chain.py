@@ -192,6 +192,8 @@ class ChainExplorer(Explorer):
             Q = np.einsum("ij,ij->i", s[..., 0], w.f)
             st["active"] = T * Q[:, None]
             st["reaction"] = w.f - st["active"]
+            # an active part that is zero up to rounding (no joint torque) has no line to draw
+            st["active_on"] = np.abs(Q) > 1e-9 * np.maximum(1.0, np.abs(w.f).max(axis=1))
         ke, pe = _energy(model, w)
         st["ke"], st["pe"] = ke, pe
         return st
@@ -232,6 +234,8 @@ class ChainExplorer(Explorer):
                     setter(art, arr[i])
                     if isinstance(art, LineArtist) and art in self._scaled:
                         _set_arrow_scale(art, fscale)
+                    if arts is self.t_art:
+                        show = bool(st["active_on"][i])
                 if art.get_visible() != show:
                     art.set_visible(show)
         self.time_text.set_text(f"t = {st['t']:.2f} s" if self._traj is not None else "")
