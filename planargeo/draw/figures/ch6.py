@@ -150,8 +150,8 @@ def fig6_5():
     plot_point(w.s(i)[:, 0], ax, glyph=False, text="$s_2$", text_offset=(-16, -12))
     plot_point(w.a[i - 1], ax, role="accel", text="$a_1$")
     plot_point(w.a[i], ax, role="accel", text="$a_2$")
-    ax.text(0.02, 0.02, f"$\\psi_2$ = {psi_i:.3g},  $\\psi_1$ = {psi_prev:.3g},  "
-            f"$\\ddot q_2$ = {qdd:.3g}", transform=ax.transAxes, fontsize=7)
+    ax.text(0.02, 0.98, f"$\\psi_2$ = {psi_i:.3g},  $\\psi_1$ = {psi_prev:.3g},  "
+            f"$\\ddot q_2$ = {qdd:.3g}", transform=ax.transAxes, fontsize=7, va="top")
     fit_view(ax, [to_xy(w.a[i - 1]), to_xy(w.a[i]), *w.origin], margin=0.15)
     return fig
 
@@ -168,20 +168,21 @@ def fig6_6():
     for t in ex["tyres"]:
         draw_body(t, ax, color="#333333", alpha=0.9)
     draw_com(ex["cg"], ax, radius=0.12)
-    plot_point(ex["s"][:, 0], ax, glyph=False, text="ICR ($s$)")
+    plot_point(ex["s"][:, 0], ax, glyph=False, text="ICR ($s$)", text_offset=(4, -20))
     sc = 1.0 / 1000.0
     R1mu, R2mu = ex["tyre_wrenches"][:, 0], ex["tyre_wrenches"][:, 1]
-    plot_line(R1mu, ax, role="reaction", scale=sc, anchor=ex["rear_contact"],
-              text=f"$R_1\\mu_1$ = {qn['mu'][0]:.0f} N", text_offset=(-30, 8))
-    plot_line(R2mu, ax, role="reaction", scale=sc, anchor=ex["front_contact"],
-              text=f"$R_2\\mu_2$ = {qn['mu'][1]:.0f} N", text_offset=(-40, 8))
+    plot_line(R1mu, ax, role="reaction", scale=sc, anchor=0.5 * ex["rear_contact"],
+              text=f"$R_1\\mu_1$ = {qn['mu'][0]:.0f} N (rear)", text_offset=(30, -20))
+    plot_line(R2mu, ax, role="reaction", scale=sc, anchor=0.5 * ex["front_contact"],
+              text=f"$R_2\\mu_2$ = {qn['mu'][1]:.0f} N (front)", text_offset=(-30, 8))
     plot_line(qn["f_A"], ax, scale=sc, anchor=ex["front_contact"] + 0.9 * ex["front_rolling"],
               text="$f_A$")
     plot_line(ex["T"][:, 0], ax, role="momentum", scale=None, text="$T$")
-    plot_point(qn["a"], ax, role="accel", text="$a$")
+    plot_point(qn["a"], ax, role="accel", text="$a$", text_offset=(-14, 8))
     pts = [ex["icr"], ex["rear_contact"], ex["front_contact"], to_xy(qn["a"])]
     fit_view(ax, pts, margin=0.15)
-    label(ax, [0, 0], f"ω̇ = {qn['omega_dot']:.3f} rad/s²", offset=(5, -14), fontsize=7)
+    ax.text(0.02, 0.98, f"ω̇ = {qn['omega_dot']:.3f} rad/s²", transform=ax.transAxes, fontsize=7,
+            va="top")
     return fig
 
 
