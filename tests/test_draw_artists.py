@@ -308,3 +308,36 @@ def test_update_does_not_rebuild_conic_path(ax):
     assert ca._curve.get_xdata() is x0 or np.shares_memory(ca._curve.get_xdata(), x0) or \
         np.array_equal(ca._curve.get_xdata(), x0)
     np.testing.assert_allclose(np.linalg.norm(ca.get_xy() - [1.0, 2.0], axis=1), np.sqrt(0.7 / 3.0))
+
+
+# ----------------------------------------------------------------- cross-checks with GEO / SCREW
+@given(st.lists(st.floats(-3, 3), min_size=6, max_size=6))
+def test_conic_kind_agrees_with_geo_classify(c):
+    """An independent classifier (planargeo.conics.classify) agrees with the drawing's."""
+    from planargeo.conics import classify
+
+    a, b, cc, d, e, f = c
+    C = np.array([[a, b, d], [b, cc, e], [d, e, f]])
+    if np.abs(C).max() < 1e-3:
+        return
+    ev = np.linalg.eigvalsh(C)
+    A = np.linalg.eigvalsh(C[:2, :2])
+    # stay away from class boundaries (both classifiers use tolerances there)
+    if np.min(np.abs(ev)) < 1e-3 * np.abs(ev).max() or np.min(np.abs(A)) < 1e-3 * np.abs(ev).max():
+        return
+    t = classify(C)
+    g = conic_geometry(C)
+    if t.reality == "imaginary":
+        assert g["imaginary"] and g["kind"] == "ellipse"
+    else:
+        assert g["kind"] == t.kind and not g["imaginary"]
+
+
+def test_inertia_circle_is_screws_drawable_conic(ax, rng):
+    """The drawn inertia curve lies on SCREW's drawable_conic (the radius-of-gyration circle)."""
+    from planargeo.inertia import drawable_conic
+
+    for _ in range(5):
+        I = inertia_matrix(rng.uniform(0.5, 3), rng.uniform(-2, 2, 2), rng.uniform(0.1, 2))
+        art = plot_inertia(I, ax)
+        _check_on_conic(art, drawable_conic(I))

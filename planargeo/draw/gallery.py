@@ -54,7 +54,13 @@ def readme(specs) -> str:
         "`planargeo gallery --check` verifies these files are current).",
         "Colours: twists/velocity poles blue, accelerations vermillion, wrenches orange,",
         "reactions green, momenta/active parts purple, inertias dashed black circles",
-        "(radius of gyration about the centre of mass), constructions grey dashed.",
+        "(radius of gyration about the centre of mass), constructions grey dashed",
+        "(see `extra_style_key`).  Every figure is computed from planargeo's math modules and",
+        "scenes; captions name the thesis figure and equations, and say where a printed result",
+        "was corrected (details in docs/errata/).",
+        "",
+        f"{len(specs)} figures: "
+        + ", ".join(f"[{n}](#{n.lower()})" for n in specs) + ".",
         "",
     ]
     for s in specs.values():

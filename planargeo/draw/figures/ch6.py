@@ -181,7 +181,7 @@ def fig6_6():
     plot_point(qn["a"], ax, role="accel", text="$a$", text_offset=(-14, 8))
     pts = [ex["icr"], ex["rear_contact"], ex["front_contact"], to_xy(qn["a"])]
     fit_view(ax, pts, margin=0.15)
-    ax.text(0.02, 0.98, f"ω̇ = {qn['omega_dot']:.3f} rad/s²", transform=ax.transAxes, fontsize=7,
+    ax.text(0.02, 0.98, f"$\\dot\\omega$ = {qn['omega_dot']:.3f} rad/s²", transform=ax.transAxes, fontsize=7,
             va="top")
     return fig
 

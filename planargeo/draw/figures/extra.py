@@ -88,3 +88,39 @@ def extra_slider_crank():
     pts = [*d.origin, piston + [0, 1.0]] + [to_xy(x) for x in a[:2]]
     fit_view(ax, pts, margin=0.1)
     return fig
+
+
+@register("extra_style_key", "Extra — the visual language used in every figure: twists (velocity "
+          "poles, blue, arc arrow = sense and size of ω), accelerations (vermillion), ideal points "
+          "(translations, arrow at the view's edge), wrenches (orange lines with force arrows), "
+          "reactions (green), momenta / active parts (purple), the line at infinity (a couple, "
+          "corner glyph), inertias (dashed radius-of-gyration circle), constructions (grey dashed).",
+          0.5)
+def extra_style_key():
+    fig, ax = new_figure(3.4, 2.6)
+    ax.set_xlim(0, 10)
+    ax.set_ylim(0, 7.6)
+    rows = [
+        ("twist (pole), ω > 0", lambda y: plot_point(from_xy([1.0, y]) * 1.0, ax)),
+        ("acceleration, α < 0", lambda y: plot_point(from_xy([1.0, y]) * -1.5, ax, role="accel")),
+        ("wrench (line of action)", lambda y: plot_line(np.array([1.0, 0.0, -y]), ax, scale=1.2,
+                                                        anchor=[1.0, y], text=None)),
+        ("reaction force", lambda y: plot_line(np.array([1.0, 0.0, -y]), ax, role="reaction",
+                                               scale=1.2, anchor=[1.0, y])),
+        ("momentum / active part", lambda y: plot_line(np.array([1.0, 0.0, -y]), ax,
+                                                       role="momentum", scale=1.2, anchor=[1.0, y])),
+        ("construction line", lambda y: plot_line(np.array([1.0, 0.0, -y]), ax, role="construct",
+                                                  scale=None)),
+    ]
+    for k, (txt, make) in enumerate(rows):
+        y = 7.0 - 1.05 * k
+        make(y)
+        ax.text(2.4, y, txt, va="center", fontsize=7.5,
+                bbox=dict(fc="white", ec="none", pad=0.5))
+    from ...screws import inertia_matrix
+
+    plot_conic(inertia_matrix(1.0, [8.6, 6.5], 0.3), ax, role="inertia")
+    ax.text(7.8, 6.5, "inertia", ha="right", va="center", fontsize=7.5)
+    plot_point(np.array([-1.0, 0.0, 0.0]), ax, text="translation (ideal point)")
+    plot_line(np.array([0.0, 0.0, 1.0]), ax, text="couple", corner="lower right")
+    return fig
