@@ -293,6 +293,11 @@ class PointArtist(_Base):
 
     set_twist = set_point
 
+    def set_glyph_scale(self, glyph_scale):
+        """Rotation-glyph radius in points per unit ``|w|`` (clamped to [4, 16])."""
+        self._glyph_scale = float(glyph_scale)
+        self.stale = True
+
     def get_point(self) -> np.ndarray:
         return self._p.copy()
 
@@ -408,7 +413,13 @@ class LineArtist(_Base):
 
     set_wrench = set_line
 
+    def set_scale(self, scale):
+        """Force-arrow length in data units per unit force (None: no arrow)."""
+        self._scale = None if scale is None else float(scale)
+        self.stale = True
+
     def set_anchor(self, anchor):
+        """Where along the line the arrow sits (projected onto the line); None: view centre."""
         self._anchor = None if anchor is None else np.asarray(anchor, dtype=float)
         self.stale = True
 
@@ -633,27 +644,36 @@ class ConicArtist(_Base):
                                               color=self._color, linestyle="none"))
         self._text.set_color(self._color)
         self._geom = None
+        self._path_kind = None
         self.set_conic(conic)
 
     def set_conic(self, conic):
-        """Store a new conic; only the affine transform (or the lines) change."""
+        """Store a new conic and mark the artist stale (the geometry is computed at draw time).
+
+        Only the affine transform (or, for a degenerate conic, the lines) changes;
+        the unit path is set once per conic class.
+        """
         self._C = _mat(conic, "conic")
-        self._geom = conic_geometry(self._C)
-        g = self._geom
+        self._geom = None
+        self.stale = True
+
+    def _geometry(self) -> dict:
+        """Classify the stored conic (cached until the next ``set_conic``)."""
+        if self._geom is not None:
+            return self._geom
+        g = self._geom = conic_geometry(self._C)
         if "affine" in g:
             self._affine.set_matrix(g["affine"])
-            self._curve.set_data(*UNIT_PATHS[g["kind"]].vertices.T)
-            if g["kind"] == "hyperbola":
-                # keep the two branches separate: NaN between them
-                v = UNIT_PATHS["hyperbola"].vertices
-                n = len(v) // 2
-                xy = np.vstack([v[:n], [[np.nan, np.nan]], v[n:]])
-                self._curve.set_data(xy[:, 0], xy[:, 1])
-        if self._role == "inertia" or g.get("imaginary"):
-            self._curve.set_linestyle(_style("inertia")["linestyle"])
-        else:
-            self._curve.set_linestyle(_style(self._role)["linestyle"])
-        self.stale = True
+            if self._path_kind != g["kind"]:  # the fixed unit path of this class
+                v = UNIT_PATHS[g["kind"]].vertices
+                if g["kind"] == "hyperbola":  # keep the two branches apart: NaN between them
+                    n = len(v) // 2
+                    v = np.vstack([v[:n], [[np.nan, np.nan]], v[n:]])
+                self._curve.set_data(v[:, 0], v[:, 1])
+                self._path_kind = g["kind"]
+        dashed = self._role == "inertia" or g.get("imaginary")
+        self._curve.set_linestyle(_style("inertia" if dashed else self._role)["linestyle"])
+        return g
 
     set_inertia = set_conic
 
@@ -668,15 +688,17 @@ class ConicArtist(_Base):
 
     @property
     def kind(self) -> str:
-        return self._geom["kind"]
+        """Conic class drawn: ellipse, hyperbola, parabola, lines, point or empty."""
+        return self._geometry()["kind"]
 
     @property
     def imaginary(self) -> bool:
-        return bool(self._geom.get("imaginary"))
+        """True when the conic has no real points and its sign-flipped partner is drawn."""
+        return bool(self._geometry().get("imaginary"))
 
     def get_xy(self) -> np.ndarray:
         """Euclidean points of the drawn curve (data coordinates, NaN between branches)."""
-        g = self._geom
+        g = self._geometry()
         if "affine" not in g:
             return np.zeros((0, 2))
         x, y = self._curve.get_data()
@@ -684,7 +706,7 @@ class ConicArtist(_Base):
 
     def _update_geometry(self, renderer):
         ax = self.axes
-        g = self._geom
+        g = self._geometry()
         out = []
         if "affine" in g:
             out.append(self._curve)
