@@ -156,3 +156,22 @@ def test_joint_split_and_model_drawing(ax):
     assert abs(j.s[:, 0] @ rea) < 1e-12              # the reaction does no work on the joint
     np.testing.assert_allclose(Q, j.s.T @ w.f[1])     # Q = s^T f (6.61a)
     assert link_polygon([0, 0], [1, 0], 0.2).area == pytest.approx(0.2 + np.pi * 0.01, rel=1e-2)
+
+
+def test_chain_kinematics_figures_match_4_48_and_4_54():
+    """The state drawn in Figs 4.7/4.8 obeys the thesis's closed forms (4.48, 4.49, 4.53, 4.54)."""
+    from planargeo.algorithms.rnea import newton_euler
+    from planargeo.draw.figures.ch4 import Q47, QD47, QDD47, _chain3
+
+    w = newton_euler(_chain3(), Q47, QD47, QDD47)
+    i = 2
+    J = w.origin[i]
+    w_prev, qd, qdd = w.v[i - 1][2], QD47[i], QDD47[i]
+    P_prev = _xy(w.v[i - 1])
+    k = np.linalg.norm(J - P_prev)
+    beta = qd / (qd + w_prev)                                   # (4.48)
+    np.testing.assert_allclose(_xy(w.v[i]), P_prev + beta * (J - P_prev))
+    assert w.v[i][2] == pytest.approx(w_prev + qd)              # (4.49)
+    assert np.hypot(*w.kappa[i][:2]) == pytest.approx(abs(w_prev * qd * k))   # (4.53)
+    combo = w.s(i)[:, 0] * qdd + w.kappa[i]
+    assert np.linalg.norm(_xy(combo) - J) == pytest.approx(abs(w_prev * qd * k / qdd))  # (4.54)

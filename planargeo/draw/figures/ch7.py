@@ -28,11 +28,6 @@ def _chain(n=4, base="revolute", gravity=(0.0, 0.0)):
 Q4 = np.array([0.3, 0.5, -0.6, 0.7])
 
 
-def _faded(model, data, ax, keep):
-    out = draw_model(model, data, ax, show_com=False)
-    return out
-
-
 @register("fig7_1", "Fig. 7.1 — articulated inertia A_i of a free-floating sub-chain (7.1–7.8): the "
           "internal force f_i at joint i accelerates body i by a_i = A_i⁻¹ f_i (at rest), including "
           "the bodies beyond; A₂ drawn as its (sign-flipped) conic about the effective centre.", 7.01)
@@ -67,8 +62,7 @@ def fig7_2():
     i = 1
     draw_model(m, d, ax, show_com=False)
     o = d.origin[i + 1]
-    f_next = np.array([-1.0, 0.0, o[1] * -1.0 * -1.0])   # f_3: a unit force along -x through joint 3
-    f_next = np.array([-1.0, 0.0, o[1]])
+    f_next = np.array([-1.0, 0.0, o[1]])   # f_3: a unit force along -x through joint 3 (4.27)
     a = -r.Lambda_inv[i] @ f_next
     plot_line(-f_next, ax, role="reaction", scale=0.6, anchor=o, text="$-f_3$")
     plot_point(a, ax, role="accel", text="$a_2 = -\\Lambda_2^{-1}f_3$")
@@ -222,12 +216,9 @@ def fig7_11():
     fig, ax = new_figure(3.4, 2.6)
     m = _chain(4)
     F = np.zeros((4, 3))
-    tip = None
     d0 = kinematics(m, Q4, np.zeros(4))
     tip = d0.origin[3] + 1.0 * np.array([np.cos(d0.pose[3, 2]), np.sin(d0.pose[3, 2])])
-    F[3] = np.array([0.0, -1.0, -tip[0] * 1.0 * 1.0])       # a downward unit force at the tip
-    F[3] = np.array([0.0, -1.0, 0.0 - tip[0] * -1.0 * -1.0])
-    F[3] = np.array([0.0, -1.0, -tip[0]])
+    F[3] = np.array([0.0, -1.0, -tip[0]])       # a downward unit force through the tip (4.27)
     sol = mobility_split(m, Q4, np.zeros(4), np.zeros(4), F)
     d = kinematics(m, Q4, np.zeros(4), F)
     draw_model(m, d, ax, show_com=False)
