@@ -343,3 +343,15 @@ def test_inertia_circle_is_screws_drawable_conic(ax, rng):
         I = inertia_matrix(rng.uniform(0.5, 3), rng.uniform(-2, 2, 2), rng.uniform(0.1, 2))
         art = plot_inertia(I, ax)
         _check_on_conic(art, drawable_conic(I))
+
+
+def test_imaginary_conic_drawn_as_geo_drawable_conic(ax, rng):
+    """Any definite conic (e.g. an articulated inertia) is drawn as conics.drawable_conic."""
+    from planargeo.conics import drawable_conic
+
+    for _ in range(5):
+        B = rng.normal(size=(3, 3))
+        C = B @ B.T + 0.5 * np.eye(3)   # positive definite: imaginary
+        art = plot_conic(C, ax)
+        assert art.imaginary and art.kind == "ellipse"
+        _check_on_conic(art, drawable_conic(C))

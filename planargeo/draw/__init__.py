@@ -1,7 +1,22 @@
 """Drawing: twists as points, wrenches as lines, inertias as conics (matplotlib).
 
 Math modules never import matplotlib; this package imports the math.
+
+* :mod:`~planargeo.draw.artists`: ``PointArtist``, ``LineArtist``, ``ConicArtist`` and
+  ``plot_point`` / ``plot_line`` / ``plot_conic`` / ``plot_inertia``;
+* :mod:`~planargeo.draw.constructions`: the thesis's constructions (``draw_twist_sum``,
+  ``draw_wrench_sum``, ``draw_polar_exterior``, ``draw_polar_interior``, ``draw_percussion``,
+  ``draw_power`` ...);
+* :mod:`~planargeo.draw.mechanism`: bodies, pins, sliders, ground, ``draw_model``,
+  ``draw_joint_split``;
+* :mod:`~planargeo.draw.charts`: curves over a parameter;
+* :mod:`~planargeo.draw.style`: the one visual language (Okabe-Ito roles, fixed rcParams);
+* :mod:`~planargeo.draw.gallery`: ``planargeo gallery [--out DIR] [--check]``.
 """
 from .artists import (ConicArtist, LineArtist, PointArtist, plot_conic, plot_inertia,  # noqa: F401
                       plot_line, plot_point)
+from .constructions import (draw_percussion, draw_polar_exterior, draw_polar_interior,  # noqa: F401
+                            draw_power, draw_tangent, draw_twist_sum, draw_wrench_sum)
+from .mechanism import (draw_body, draw_ground, draw_joint_split, draw_link, draw_model,  # noqa: F401
+                        draw_pin, draw_slider)
 from .style import COLORS, OKABE_ITO, rc_context, style  # noqa: F401
