@@ -78,6 +78,8 @@ def fig4_3():
     v2 = u * unit_translation([np.cos(lam), np.sin(lam)])
     out = draw_twist_sum(v1, v2, ax, labels=("$v_1$ about $Q$", "$v_2$ (translation)",
                                              "$v_3 = v_1 + v_2$"))
+    out["v3"].set_text(None)
+    label(ax, to_xy(v1 + v2), "$v_3 = v_1 + v_2$", offset=(10, -14), color=COLORS["accel"])
     P, Q = to_xy(v1 + v2), to_xy(v1)
     draw_dimension(ax, Q, P, r"$\rho = u/\omega$", offset=0.25)
     e = np.array([np.cos(lam), np.sin(lam)])

@@ -52,13 +52,13 @@ def _coords_figure(alternative: bool):
         eL = np.array([-nL[1], nL[0]])          # along the line (5.55)
         _vec_arrow(ax, Pxy, 0.7 * eP, r"$\vec e$", color=COLORS["twist"])
         _vec_arrow(ax, foot, 0.7 * eL, r"$\vec e$", color=COLORS["wrench"])
-        label(ax, [0, -0.2], r"$P=[-r\vec e;\,1]$ (5.49),  $L=[\vec e;\,r]$ (5.55)", offset=(0, -8),
-              fontsize=7, ha="center", va="top")
+        ax.text(0.98, 0.02, r"$P=[-r\vec e;\,1]$ (5.49),  $L=[\vec e;\,r]$ (5.55)",
+                transform=ax.transAxes, fontsize=7, ha="right", va="bottom")
     else:
         _vec_arrow(ax, [0, 0], 0.7 * nP, r"$\vec n$", color=COLORS["twist"])
         _vec_arrow(ax, [0, 0], 0.7 * nL, r"$\vec n$", color=COLORS["wrench"])
-        label(ax, [0, -0.2], r"$P=[1;\,r\vec n]$,  $L=[r;\,-\vec n]$ (5.4, 5.14)", offset=(0, -8),
-              fontsize=7, ha="center", va="top")
+        ax.text(0.98, 0.02, r"$P=[1;\,r\vec n]$,  $L=[r;\,-\vec n]$ (5.4, 5.14)",
+                transform=ax.transAxes, fontsize=7, ha="right", va="bottom")
     label(ax, Pxy / 2, "$r$", offset=(-10, 2))
     label(ax, foot / 2, "$r$", offset=(0, 4))
     fit_view(ax, [[-0.6, -1.6], [2.8, 2.6]], margin=0.03)

@@ -54,7 +54,8 @@ def fig6_1():
         plot_line(R, ax, role="reaction", scale=None, text=f"$R_{k}$",
                   anchor=J + 1.1 * R[:2] / np.hypot(*R[:2]))
         a = percussion_pole(I, R)
-        plot_point(a, ax, role="accel", glyph=False, text=f"$I^{{-1}}R_{k}$")
+        plot_point(a, ax, role="accel", glyph=False, text=f"$I^{{-1}}R_{k}$",
+                   text_offset=(6, 4) if k == 1 else (8, -14))
         pts.append(to_xy(a))
     _view(ax, pts)
     return fig
