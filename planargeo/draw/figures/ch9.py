@@ -65,7 +65,9 @@ def fig9_2():
 def _slider_crank_base(ax, res):
     m = res.model
     d = kinematics(m, res.state["q"], np.asarray(res.state["qd"]))
-    draw_model(m, d, ax, width=0.3, labels=True, show_com=True, pin_radius=0.1)
+    draw_model(m, d, ax, width=0.3, labels=False, show_com=True, pin_radius=0.1)
+    for i, body in enumerate(m.bodies):
+        label(ax, d.com[i], body.name, offset=(9, -3), fontsize=7, color="#1f3a4d", va="center")
     piston = d.pose[2, :2]
     ax.plot([-0.45, -0.45], [piston[1] - 1.3, piston[1] + 1.8], color=COLORS["ground"], lw=1.0)
     ax.plot([0.45, 0.45], [piston[1] - 1.3, piston[1] + 1.8], color=COLORS["ground"], lw=1.0)
@@ -85,13 +87,14 @@ def fig9_3():
         o = d.pose[i, :2]
         base = absang[i] - val
         t = np.linspace(base, absang[i], 30)
-        rr = 0.55 + 0.1 * i
+        rr = (0.9, 0.7, 0.6)[i]
         ax.plot(o[0] + rr * np.cos(t), o[1] + rr * np.sin(t), color=COLORS["twist"], lw=0.8)
         ax.plot([o[0], o[0] + 0.9 * np.cos(base)], [o[1], o[1] + 0.9 * np.sin(base)],
                 color=COLORS["construct"], lw=0.6, ls="--")
         mid = t[len(t) // 2]
-        label(ax, o + (rr + 0.15) * np.array([np.cos(mid), np.sin(mid)]),
-              f"{nm} = {val:.3f}", offset=(0, 0), fontsize=7, color=COLORS["twist"])
+        label(ax, o + rr * np.array([np.cos(mid), np.sin(mid)]),
+              f"{nm} = {val:.3f}", offset=((6, -12), (6, 2), (-62, 4))[i], fontsize=7,
+              color=COLORS["twist"])
     fit_view(ax, [*d.origin, d.pose[2, :2] + [0, 1.2], [-1, -0.6], [2.6, 0]], margin=0.08)
     return fig
 
