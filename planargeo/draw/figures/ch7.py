@@ -40,13 +40,14 @@ def fig7_1():
     i = 1
     draw_model(m, d, ax, show_com=False)
     A = r.A[i]
-    plot_conic(A, ax, role="inertia", text="$A_2$")
+    plot_conic(A, ax, role="inertia", text="$A_2$", text_offset=(4, 4))
     plot_conic(d.I[i], ax, role="inertia", color=COLORS["construct"], mark_center=False)
     o = d.origin[i]
-    f = np.array([0.0, 1.0, o[0] * 1.0])            # a unit upward force through joint 2
+    f = np.array([1.0, 0.0, -o[1]])                 # a unit force along +x through joint 2 (4.27)
     a = np.linalg.solve(A, f)
-    plot_line(f, ax, role="reaction", scale=0.6, anchor=o, text="$f_2$")
-    plot_point(a, ax, role="accel", text="$a_2 = A_2^{-1}f_2$")
+    plot_line(f, ax, role="reaction", scale=0.6, anchor=o - [0.5, 0.0], text="$f_2$",
+              text_offset=(-4, -16))
+    plot_point(a, ax, role="accel", text="$a_2 = A_2^{-1}f_2$", glyph_scale=2.0)
     fit_view(ax, [*d.origin, d.com[-1] + [0.6, 0.3], to_xy(a)], margin=0.12)
     return fig
 
