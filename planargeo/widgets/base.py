@@ -355,7 +355,9 @@ class Explorer:
                           layout=W.Layout(min_width="370px", overflow="visible"))
         right = W.VBox([W.HTML("<b>Readout</b>"), self.readout, self.message_box])
         head = W.HTML(f"<h4 style='margin:2px'>{html.escape(self.title)}</h4>")
-        root = W.VBox([head, W.HBox([controls, fig_widget, right])])
+        body = W.HBox([controls, fig_widget, right],
+                      layout=W.Layout(flex_flow="row wrap", align_items="flex-start"))
+        root = W.VBox([head, body])
         root.add_class("planargeo-explorer")
         self.readout.add_class("planargeo-readout")
         fig_widget.add_class("planargeo-figure")
