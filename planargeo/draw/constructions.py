@@ -227,7 +227,8 @@ def draw_power(v, I, ax=None, *, f_offset=0.6, a_offset=0.8):
     out = {"inertia": plot_conic(I, ax, role="inertia"),
            "v": plot_point(v, ax, text="$v$"),
            "p": plot_line(p, ax, role="momentum", scale=None, text="$p = Iv$"),
-           "f": plot_line(f, ax, role="wrench", scale=None, text="$f$: $v^Tf = 0$"),
+           "f": plot_line(f, ax, role="wrench", scale=None, text="$f$: $v^Tf = 0$",
+                          anchor=vxy + 1.6 * np.array([np.cos(ang), np.sin(ang)])),
            "a": plot_point(a, ax, role="accel", text="$a$: $p^Ta = 0$", glyph=False)}
     out["checks"] = (float(v @ f), float(p @ a))
     return out
