@@ -33,6 +33,22 @@ Programmatic use (tests, notebooks)::
     with ex.hold():                      # several changes, one update
         ex.controls["a"].value = 1.0
         ex.controls["b"].value = 2.0
+
+Examples
+--------
+Two equal and opposite rotations add up to a translation (thesis 4.2); a zero
+rotation is refused with a message, not an exception:
+
+>>> from planargeo.widgets import ScrewSumExplorer
+>>> ex = ScrewSumExplorer(display="agg")
+>>> ex.controls["size2"].value = -1.0
+>>> ex.readout_values["case"], ex.readout_values["pole of sum"]
+('opposite_rotations', 'at infinity')
+>>> ex.controls["size2"].value = 0.0
+>>> ex.message
+'v2 must be non-zero, got array([ 0., -0.,  0.])'
+>>> ex.readout_values["case"]                 # the last good state is kept
+'opposite_rotations'
 """
 from __future__ import annotations
 
@@ -60,7 +76,13 @@ _export_counter = itertools.count(1)
 
 
 def fmt(x: Any, digits: int = 4) -> str:
-    """Readable text for a readout value (numbers rounded, ideal values named)."""
+    """Readable text for a readout value (numbers rounded, ideal values named).
+
+    Examples
+    --------
+    >>> fmt(0.123456), fmt(float("inf")), fmt((1.0, -2.5)), fmt(True)
+    ('0.1235', '∞', '(1, -2.5)', 'yes')
+    """
     if isinstance(x, (bool, np.bool_)):
         return "yes" if x else "no"
     if isinstance(x, (int, np.integer)):

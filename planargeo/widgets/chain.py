@@ -48,6 +48,12 @@ def chain_for(n: int, joints: str = "revolute", gravity: bool = True, length: fl
     ``joints`` is ``"revolute"``, ``"prismatic"`` or ``"alternating"``
     (revolute, prismatic, revolute...).  A prismatic joint slides along the
     parent link's axis.
+
+    Examples
+    --------
+    >>> m = chain_for(3, "alternating")
+    >>> [j.kind for j in m.joints], m.gravity
+    (['revolute', 'prismatic', 'revolute'], (0.0, -9.81))
     """
     n = int(n)
     if not 1 <= n <= NMAX:

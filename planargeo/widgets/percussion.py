@@ -53,6 +53,15 @@ def parse_polygon(text: str) -> Polygon:
     """A shapely polygon from ``"x, y; x, y; ..."`` (at least three vertices).
 
     Raises :class:`~planargeo.errors.InvalidPolygonError` naming ``polygon``.
+
+    Examples
+    --------
+    >>> parse_polygon("0, 0; 2, 0; 0, 1").area
+    1.0
+    >>> parse_polygon("0,0; 1,1; 1,0; 0,1")
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InvalidPolygonError: polygon must be a simple (non self-intersecting) area, got '0,0; 1,1; 1,0; 0,1'
     """
     try:
         pts = [tuple(float(c) for c in item.replace(" ", "").split(","))

@@ -36,7 +36,14 @@ CONICS = ("circle", "ellipse", "hyperbola", "parabola", "inertia (imaginary circ
 
 
 def make_conic(kind: str, a: float, b: float, tilt_deg: float) -> np.ndarray:
-    """The playground's conic: centred at the origin (parabola: vertex), turned by ``tilt``."""
+    """The playground's conic: centred at the origin (parabola: vertex), turned by ``tilt``.
+
+    Examples
+    --------
+    >>> from planargeo.conics import classify
+    >>> [str(classify(make_conic(k, 1.5, 1.0, 20.0))) for k in CONICS]
+    ['real circle', 'real ellipse', 'real hyperbola', 'real parabola', 'imaginary circle']
+    """
     t = math.radians(tilt_deg)
     if kind == "circle":
         return conic_circle([0.0, 0.0], a)
