@@ -84,3 +84,10 @@ def test_parse_polygon_errors():
     with pytest.raises(InvalidPolygonError, match="polygon"):
         parse_polygon("0,0; 1,1")
     assert parse_polygon("0,0; 1,0; 0,1;").area == pytest.approx(0.5)
+
+
+def test_view_grows_to_show_a_large_custom_body(ex):
+    ex.set(shape="custom polygon", polygon="0,0; 4,0; 4,3; 0,3")
+    x0, x1 = ex.ax.get_xlim()
+    y0, y1 = ex.ax.get_ylim()
+    assert x0 <= 0 and x1 >= 4 and y0 <= 0 and y1 >= 3

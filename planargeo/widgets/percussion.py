@@ -190,5 +190,16 @@ class PercussionExplorer(Explorer):
                 self.spot.set_data([grip_spot[0]], [grip_spot[1]])
             out["impact at"] = self.values["impact at"]
             out["pole distance from grip"] = "at infinity" if P is None else float(np.hypot(*P))
-        # keep the view on the body and the pole
+        self._fit_view(shape)
         return out
+
+    def _fit_view(self, shape):
+        """Keep the body (and the slider range of the pole) in view; change limits only if needed."""
+        x0, y0, x1, y1 = shape.bounds
+        cx, cy = self.controls["pole x"], self.controls["pole y"]
+        lo_x, hi_x = min(x0, cx.min) - 0.1, max(x1, cx.max) + 0.1
+        lo_y, hi_y = min(y0, cy.min) - 0.1, max(y1, cy.max) + 0.1
+        (ax0, ax1), (ay0, ay1) = self.ax.get_xlim(), self.ax.get_ylim()
+        if lo_x < ax0 or hi_x > ax1 or lo_y < ay0 or hi_y > ay1:
+            self.ax.set_xlim(lo_x, hi_x)
+            self.ax.set_ylim(lo_y, hi_y)
