@@ -142,6 +142,11 @@ class ScrewSumExplorer(Explorer):
         else:
             self.l1.set_line(c.f1.array)
             self.l2.set_line(c.f2.array)
+            self.l1.set_anchor((v["x1"], v["y1"]))
+            self.l2.set_anchor((v["x2"], v["y2"]))
+            meet = _xy_or_ideal(c.P)
+            self.l3.set_anchor(meet if isinstance(meet, tuple) else
+                               (0.5 * (v["x1"] + v["x2"]), 0.5 * (v["y1"] + v["y2"])))
             if c.L3 is None:
                 self.l3.set_visible(False)
             else:
