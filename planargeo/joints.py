@@ -51,7 +51,7 @@ from ._validate import as_xy
 from .errors import InputError, ShapeError
 from .screws import unit_rotation, unit_translation
 
-__all__ = ["KINDS", "DOF", "motion_space", "reaction_space", "JointSpace",
+__all__ = ["KINDS", "DOF", "motion_space", "reaction_space", "reaction_space_of", "JointSpace",
            "revolute", "prismatic", "revolute_prismatic", "plane", "fixed"]
 
 #: Joint kinds understood by :func:`motion_space` / :func:`reaction_space`.
@@ -178,6 +178,78 @@ def reaction_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
             cols.append(couple)
         return np.stack(cols, axis=-1)
     return np.stack([_force_through(p, ex), _force_through(p, ey), couple], axis=-1)
+
+
+def reaction_space_of(s, point=(0.0, 0.0)) -> np.ndarray:
+    """The reaction space :func:`reaction_space` of the joint whose motion space is ``s`` (thesis 4.8, 5.63, 7.16).
+
+    The algorithms (:mod:`planargeo.algorithms.projective`, ``stacked``,
+    ``articulated_*``) know a joint only by its motion space ``s`` at the
+    current state; this reads the kind, pivot and slide direction off ``s``
+    and returns ``reaction_space(kind, point, direction)``, so that every
+    reaction component ``μ = Uᵀ f`` in the package is measured in the same,
+    thesis-meaningful basis (module table):
+
+    * ``k = 1``, rotation ``[a, b, w]`` with ``w ≠ 0``: revolute about the
+      point ``(-b/w, a/w)``; ``R`` = unit forces along x and y through it (7.16);
+    * ``k = 1``, translation ``[a, b, 0]``: prismatic along ``(a, b)``;
+      ``R`` = unit force along ``e⊥`` through ``point``, then the unit couple (5.63);
+    * ``k = 2``: the span holds one translation ``e`` and rotations about the
+      points of one line; ``R`` = the unit force along ``e⊥`` through the
+      rotation point (kind ``revolute_prismatic``); two translations (the
+      twin prismatic joint of 4.79) give the unit couple;
+    * ``k = 3``: empty; ``k = 0``: weld at ``point``.
+
+    The kind test ``w ≠ 0`` is exact (a translation is an ordinary ideal
+    point with ``w = 0``), not a tolerance.
+
+    Parameters
+    ----------
+    s : array_like, shape (3, k)
+        Motion space (unit twists at the origin, as columns).
+    point : array_like, shape (2,)
+        A point of the joint, used where ``s`` does not fix the reaction
+        lines: on the slide of a prismatic joint (the models use the body's
+        frame origin, i.e. the slider's current position) and the weld point.
+
+    Returns
+    -------
+    ndarray, shape (3, 3 - k)
+
+    Examples
+    --------
+    >>> reaction_space_of([[3.0], [-2.0], [1.0]])             # revolute at (2, 3): thesis 7.16
+    array([[ 1.,  0.],
+           [ 0.,  1.],
+           [-3.,  2.]])
+    >>> reaction_space_of([[1.0], [0.0], [0.0]], (2.0, 3.0))  # prismatic along x at (2, 3): 5.63
+    array([[0., 0.],
+           [1., 0.],
+           [2., 1.]])
+    """
+    from ._validate import as_array
+
+    a = as_array(s, "s")
+    if a.ndim == 1 and a.shape == (3,):
+        a = a[:, None]
+    if a.ndim != 2 or a.shape[0] != 3 or a.shape[1] > 3:
+        raise ShapeError(f"s must have shape (3, k) with k <= 3, got shape {a.shape}")
+    k = a.shape[1]
+    if k == 3:
+        return reaction_space("plane")
+    if k == 0:
+        return reaction_space("fixed", point)
+    if k == 1:
+        x, y, w = a[:, 0]
+        if w != 0.0:
+            return reaction_space("revolute", (-y / w, x / w))
+        return reaction_space("prismatic", point, (x, y))
+    (x1, y1, w1), (x2, y2, w2) = a[:, 0], a[:, 1]
+    if w1 == 0.0 and w2 == 0.0:
+        return np.array([[0.0], [0.0], [1.0]])              # two translations: only a couple
+    e = w2 * a[:2, 0] - w1 * a[:2, 1]                      # the translation in the span
+    rot = a[:, 1] if w2 != 0.0 else a[:, 0]
+    return reaction_space("revolute_prismatic", (-rot[1] / rot[2], rot[0] / rot[2]), e * np.sign(w2 or -w1))
 
 
 def _frozen(a: np.ndarray) -> np.ndarray:

@@ -135,22 +135,30 @@ def _check_complementary(s: np.ndarray, R: np.ndarray) -> None:
             raise InputError(f"R must be reciprocal to s (sᵀR = 0, thesis 6.1), got max |sᵀR| = {worst:.3g}")
 
 
-def _percussion(s: np.ndarray, A: np.ndarray, name: str, eig=None) -> np.ndarray:
+def _percussion(s: np.ndarray, A: np.ndarray, name: str, eig=None, what=None) -> np.ndarray:
     if s.shape[-1] == 0:
         return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 0))
     hi, _ = _abs_eig(A) if eig is None else eig
     As = A @ s
-    return _right_solve(As, _gram(s, As, hi, "s", f"sᵀ{name}s"))
+    return _right_solve(As, _gram(s, As, hi, "s", what or f"sᵀ{name}s"))
 
 
-def _reactive(R: np.ndarray, A: np.ndarray, name: str, eig=None) -> np.ndarray:
+def _reactive(R: np.ndarray, A: np.ndarray, name: str, eig=None, what=None) -> np.ndarray:
     if R.shape[-1] == 0:
         return np.zeros(np.broadcast_shapes(R.shape[:-2], A.shape[:-2]) + (3, 0))
     eig = _abs_eig(A) if eig is None else eig
     AiR = _solve_A(A, R, name, eig)
     with np.errstate(divide="ignore"):
         Ainv_norm = 1.0 / eig[1]          # ‖A⁻¹‖ = 1 / σ_min(A); finite here (A checked invertible)
-    return _right_solve(AiR, _gram(R, AiR, Ainv_norm, "R", f"Rᵀ{name}⁻¹R"))
+    return _right_solve(AiR, _gram(R, AiR, Ainv_norm, "R", what or f"Rᵀ{name}⁻¹R"))
+
+
+def _reactive_from_T(R: np.ndarray, s: np.ndarray, T: np.ndarray) -> np.ndarray:
+    """Inverse-free ``U = (1 - s Tᵀ) R (RᵀR)⁻¹`` (from ``T sᵀ + R Uᵀ = 1``, 6.75, and ``RᵀU = 1``)."""
+    if R.shape[-1] == 0:
+        return np.zeros(np.broadcast_shapes(R.shape[:-2], T.shape[:-2]) + (3, 0))
+    P = np.eye(3) - s @ _T(T)
+    return _right_solve(P @ R, _T(R) @ R)
 
 
 def _vec(x, name: str) -> np.ndarray:
@@ -163,7 +171,7 @@ def _tmul(X: np.ndarray, v: np.ndarray) -> np.ndarray:
 
 
 # ----------------------------------------------------------------------------- subspaces
-def percussion_space(s, A) -> np.ndarray:
+def percussion_space(s, A, *, what: str | None = None) -> np.ndarray:
     """Percussion (active-force) space ``T = A s (sᵀ A s)⁻¹`` (thesis 6.30, 6.36, 6.39).
 
     The weighted pseudo-inverse of ``s`` (6.26): ``sᵀT = 1`` (6.32) and
@@ -178,6 +186,10 @@ def percussion_space(s, A) -> np.ndarray:
     A : array_like, shape (..., 3, 3)
         Rigid-body or articulated inertia (symmetric).
 
+    what : str, optional
+        How ``sᵀAs`` is named in the error message (default ``"sᵀAs"``), e.g.
+        ``"sᵀAs of joint 3"`` in the chain algorithms.
+
     Returns
     -------
     ndarray, shape (..., 3, k)
@@ -185,7 +197,10 @@ def percussion_space(s, A) -> np.ndarray:
     Raises
     ------
     SingularConfigurationError
-        If ``sᵀAs`` is singular (``A`` has no inertia along ``s``).
+        If ``sᵀAs`` is singular (``A`` has no inertia along ``s``): its
+        scale-free condition number ``‖A‖ ‖s‖² / λ_min(sᵀAs)`` (``.cond``)
+        exceeds :data:`COND_LIMIT`.  This is the package's one singularity
+        rule for joint-space matrices; every algorithm builds ``T`` here.
 
     Examples
     --------
@@ -198,10 +213,10 @@ def percussion_space(s, A) -> np.ndarray:
            [0.8],
            [1. ]])
     """
-    return _percussion(_space(s, "s"), _inertia(A, "A"), "A")
+    return _percussion(_space(s, "s"), _inertia(A, "A"), "A", what=what)
 
 
-def reactive_acceleration_space(R, A) -> np.ndarray:
+def reactive_acceleration_space(R, A=None, *, s=None, T=None, what: str | None = None) -> np.ndarray:
     """Reactive-acceleration space ``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹`` (thesis 6.37, 6.45; 6.33 corrected).
 
     The weighted pseudo-inverse of ``R``: ``RᵀU = 1`` (6.35), ``TᵀU = 0`` (6.46).
@@ -213,7 +228,17 @@ def reactive_acceleration_space(R, A) -> np.ndarray:
     R : array_like, shape (..., 3, r) or (3,)
         Reaction space (unit wrenches at the origin).
     A : array_like, shape (..., 3, 3)
-        Rigid-body or articulated inertia (symmetric, invertible).
+        Rigid-body or articulated inertia (symmetric; invertible unless ``s`` is
+        given; may be omitted when both ``s`` and ``T`` are given).
+    s : array_like, shape (..., 3, 3 - r), optional
+        The joint's motion space (``sᵀR = 0``).  When given, the inverse-free
+        equivalent ``U = (1 - s Tᵀ) R (RᵀR)⁻¹`` is used (from ``T sᵀ + R Uᵀ = 1``,
+        6.75 / 7.8, and ``RᵀU = 1``): only ``sᵀAs`` must be invertible, so
+        point-mass bodies (singular ``A``) are fine.
+    T : array_like, shape (..., 3, 3 - r), optional
+        ``percussion_space(s, A)`` if already computed (only with ``s``).
+    what : str, optional
+        Name of the matrix in the singularity message.
 
     Returns
     -------
@@ -222,9 +247,9 @@ def reactive_acceleration_space(R, A) -> np.ndarray:
     Raises
     ------
     SingularInertiaError
-        If ``A`` is singular.
+        If ``A`` is singular (and ``s`` is not given).
     SingularConfigurationError
-        If ``RᵀA⁻¹R`` is singular.
+        If ``RᵀA⁻¹R`` (or, with ``s``, ``sᵀAs``) is singular.
 
     Examples
     --------
@@ -235,8 +260,34 @@ def reactive_acceleration_space(R, A) -> np.ndarray:
     array([[0., 0.],
            [1., 0.],
            [0., 1.]])
+
+    A unit point mass at (1, 0) pinned at the origin (``A`` singular): with
+    ``s`` the inverse-free form applies (thesis 7.40 with ``ρ = 0``).
+
+    >>> from planargeo.screws import inertia_matrix
+    >>> from planargeo.joints import revolute
+    >>> j = revolute((0.0, 0.0))
+    >>> reactive_acceleration_space(j.R, inertia_matrix(1.0, [1.0, 0.0], 0.0), s=j.s) + 0.0
+    array([[ 1.,  0.],
+           [ 0.,  1.],
+           [ 0., -1.]])
     """
-    return _reactive(_space(R, "R"), _inertia(A, "A"), "A")
+    R = _space(R, "R")
+    if s is None:
+        if T is not None:
+            raise InputError("T must be given together with s")
+        if A is None:
+            raise InputError("A must be given unless s and T are")
+        return _reactive(R, _inertia(A, "A"), "A", what=what)
+    s = _space(s, "s")
+    _check_complementary(s, R)
+    if T is None:
+        if A is None:
+            raise InputError("A must be given unless s and T are")
+        T = _percussion(s, _inertia(A, "A"), "A", what=what)
+    else:
+        T = _space(T, "T")
+    return _reactive_from_T(R, s, T)
 
 
 # ----------------------------------------------------------------------------- projections
@@ -397,7 +448,7 @@ def inverse_inertia_decomposition(s, R, I) -> tuple[np.ndarray, np.ndarray]:
     return effective_mobility(d.s, d.A), d.U @ _T(IiR)
 
 
-def effective_mobility(s, I) -> np.ndarray:
+def effective_mobility(s, I, *, what: str | None = None) -> np.ndarray:
     """Effective inverse inertia of a joint-constrained body ``s Tᵀ I⁻¹ = s (sᵀIs)⁻¹ sᵀ`` (thesis 6.93).
 
     A body at rest held by the joint and loaded by a wrench ``f`` accelerates
@@ -416,7 +467,9 @@ def effective_mobility(s, I) -> np.ndarray:
     s = _space(s, "s")
     I = _inertia(I, "I")
     Is = I @ s
-    M = _gram(s, Is, _abs_eig(I)[0], "s", "sᵀIs")
+    if s.shape[-1] == 0:
+        return np.zeros(np.broadcast_shapes(s.shape[:-2], I.shape[:-2]) + (3, 3))
+    M = _gram(s, Is, _abs_eig(I)[0], "s", what or "sᵀIs")
     return _right_solve(s, M) @ _T(s)
 
 

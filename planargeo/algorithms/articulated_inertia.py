@@ -38,7 +38,8 @@ class ArticulatedInertias:
     A : (N, 3, 3) articulated inertias (7.7a).
     d : (N, 3) articulated bias forces (7.7b).
     T : list of (3, k_i) active force subspaces ``A_i s_i (s_i^T A_i s_i)^-1`` (6.105).
-    R : list of (3, 3-k_i) reaction spaces.
+    R : list of (3, 3-k_i) reaction spaces, the basis of :func:`planargeo.joints.reaction_space_of`
+        (forces through the joint, couples; thesis 7.16, 5.63).
     S : list of (3, k_i) joint spaces.
     """
 
@@ -53,7 +54,7 @@ class ArticulatedInertias:
         return reactive_subspace(self.A[i], self.R[i], s=self.S[i], T=self.T[i])
 
 
-def articulated_recursion(I, S, kappa, p, tau, parents=None) -> ArticulatedInertias:
+def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None) -> ArticulatedInertias:
     """Articulated inertias and bias forces on arrays (thesis 7.1.1: 7.2, 7.7a, 7.7b, 7.8).
 
     Parameters
@@ -63,6 +64,9 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None) -> ArticulatedInert
     kappa, p : (N, 3) bias accelerations (2.19) and bias forces (3.11, gravity and loads included).
     tau : list of N (k_i,) joint torques ``Q_i``.
     parents : sequence of N ints, default a chain.
+    points : (N, 2), optional
+        A point of each joint, for the reaction bases ``R`` of prismatic joints
+        (:func:`planargeo.joints.reaction_space_of`); default the origin.
 
     Returns
     -------
@@ -99,8 +103,8 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None) -> ArticulatedInert
     eye = np.eye(3)
     for i in reversed(range(N)):
         A[i] = 0.5 * (A[i] + A[i].T)               # symmetric by construction; remove round-off
-        R[i] = reaction_space(S[i])
-        T[i] = percussion_subspace(A[i], S[i], what=f"s^T A s of joint {i}")   # (6.105)
+        R[i] = reaction_space(S[i], (0.0, 0.0) if points is None else points[i])
+        T[i] = percussion_subspace(A[i], S[i], what=f"sᵀAs of joint {i}")   # (6.105)
         j = parents[i]
         if j < 0:
             continue
@@ -134,5 +138,5 @@ def articulated_inertia(model, q, qd=None, tau=None, f_ext=None) -> ArticulatedI
     >>> float(articulated_inertia(chain_model(2), [0.0, 0.0]).A[0][0, 0])
     2.0
     """
-    _, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
-    return articulated_recursion(I, S, kappa, p, taus, parents)
+    d, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
+    return articulated_recursion(I, S, kappa, p, taus, parents, d.pose[:, :2])

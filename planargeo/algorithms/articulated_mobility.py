@@ -40,7 +40,8 @@ class ArticulatedMobilities:
     ----------
     Lambda_inv : (N, 3, 3) articulated mobilities (7.31a, 7.38a); symmetric, positive semi-definite.
     b : (N, 3) articulated bias accelerations (7.31b, 7.38b).
-    T, U, R : lists of body-inertia subspaces (6.36, 6.37) and reaction spaces.
+    T, U, R : lists of body-inertia subspaces (6.36, 6.37) and reaction spaces (the basis of
+        :func:`planargeo.joints.reaction_space_of`: forces through the joint, couples; 7.16, 5.63).
     """
 
     Lambda_inv: np.ndarray
@@ -57,7 +58,7 @@ def _check_chain(parents, N):
             f"mobility (thesis 7.4), got {list(parents)}")
 
 
-def mobility_recursion(I, S, kappa, p, tau, parents=None) -> ArticulatedMobilities:
+def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None) -> ArticulatedMobilities:
     """Articulated mobilities and bias accelerations on arrays (thesis 7.4.1).
 
     Parameters
@@ -67,6 +68,9 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None) -> ArticulatedMobiliti
     kappa, p : (N, 3) bias accelerations (2.19) and bias forces (3.11, gravity and loads included).
     tau : list of N (k_i,) joint torques ``Q_i``.
     parents : sequence of N ints; must be the chain ``[-1, 0, ..., N-2]`` (the default).
+    points : (N, 2), optional
+        A point of each joint, for the reaction bases ``R`` of prismatic joints
+        (:func:`planargeo.joints.reaction_space_of`); default the origin.
 
     Returns
     -------
@@ -104,10 +108,10 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None) -> ArticulatedMobiliti
     T, U, R = [None] * N, [None] * N, [None] * N
     eye = np.eye(3)
     for i in range(N):
-        R[i] = reaction_space(S[i])
-        T[i] = percussion_subspace(I[i], S[i], what=f"s^T I s of joint {i}")      # (6.36)
+        R[i] = reaction_space(S[i], (0.0, 0.0) if points is None else points[i])
+        T[i] = percussion_subspace(I[i], S[i], what=f"sᵀIs of joint {i}")      # (6.36)
         U[i] = reactive_subspace(I[i], R[i], s=S[i], T=T[i])                       # (6.37)
-        G = _active_mobility(I[i], S[i], f"s^T I s of joint {i}")   # s T^T I^-1 = s (s^T I s)^-1 s^T
+        G = _active_mobility(I[i], S[i], f"sᵀIs of joint {i}")   # s T^T I^-1 = s (s^T I s)^-1 s^T
         eta = G @ (T[i] @ tau[i] - p[i])               # (7.35)
         P = U[i] @ R[i].T                              # U R^T
         if i == 0:                                     # (7.31a, 7.31b): a_0 = 0
@@ -148,6 +152,6 @@ def articulated_mobility(model, q, qd=None, tau=None, f_ext=None) -> Articulated
     >>> bool(np.allclose(r.Lambda_inv[1], r.Lambda_inv[1].T))
     True
     """
-    _, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
+    d, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
     _check_chain(parents, len(S))
-    return mobility_recursion(I, S, kappa, p, taus)
+    return mobility_recursion(I, S, kappa, p, taus, points=d.pose[:, :2])

@@ -37,7 +37,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import SingularConfigurationError
+from ..joints import reaction_space_of
+from ..subspaces import effective_mobility, percussion_space, reactive_acceleration_space
 
 __all__ = [
     "reaction_space", "percussion_subspace", "reactive_subspace",
@@ -46,93 +47,41 @@ __all__ = [
     "forward_dynamics_projective",
 ]
 
-#: ``s^T A s`` (or another joint-space matrix) whose condition number exceeds this is singular.
-COND_LIMIT = 1e13
-
 
 # ---------------------------------------------------------------------------
-# Subspaces (thesis 6.1, 6.30/6.105, 6.33/6.99)
+# Subspaces (thesis 6.1, 6.30/6.105, 6.33/6.99): thin wrappers of the one
+# implementation each, in planargeo.joints and planargeo.subspaces
 # ---------------------------------------------------------------------------
-def reaction_space(s) -> np.ndarray:
-    """Reaction space ``R`` of a joint space ``s``: ``s^T R = 0`` (thesis 6.1, 6.10-6.11).
+def reaction_space(s, point=(0.0, 0.0)) -> np.ndarray:
+    """Reaction space ``R`` of the joint with motion space ``s`` (thesis 6.1, 7.16, 5.63).
 
-    Parameters
-    ----------
-    s : array_like, shape (3, k), k in 0..3
-        Joint unit twists at the origin (columns).
-
-    Returns
-    -------
-    ndarray, shape (3, 3 - k)
-        For a revolute joint ``s = [y, -x, 1]`` the unit forces along x and y
-        through ``(x, y)`` (thesis 7.16); for a prismatic joint along ``(ex, ey)``
-        the unit normal force through the origin and the unit couple; for a
-        two-dof joint the single wrench ``s_1 × s_2`` (unit length); for a free
-        joint an empty (3, 0) array; for a weld the identity.
+    The same basis everywhere: this is :func:`planargeo.joints.reaction_space_of`
+    (which reads kind, pivot and direction off ``s`` and calls
+    :func:`planargeo.joints.reaction_space`).  Revolute: unit forces along x
+    and y through the pivot; prismatic: the unit force along ``e⊥`` through
+    ``point`` (on the slide) and the unit couple; revolute-prismatic: the unit
+    force along ``e⊥`` through the pivot.
 
     Examples
     --------
-    >>> reaction_space([[0.0], [-2.0], [1.0]]) + 0.0   # revolute at (2, 0), thesis 7.16
+    >>> reaction_space([[0.0], [-2.0], [1.0]])          # revolute at (2, 0), thesis 7.16
     array([[1., 0.],
            [0., 1.],
            [0., 2.]])
-    >>> reaction_space([[1.0], [0.0], [0.0]]) + 0.0   # prismatic along x
+    >>> reaction_space([[1.0], [0.0], [0.0]], (2.0, 3.0))   # prismatic along x through (2, 3)
     array([[0., 0.],
            [1., 0.],
-           [0., 1.]])
+           [2., 1.]])
     """
-    s = np.asarray(s, dtype=float).reshape(3, -1)
-    k = s.shape[1]
-    if k == 0:
-        return np.eye(3)
-    if k == 3:
-        return np.zeros((3, 0))
-    if k == 2:
-        r = np.cross(s[:, 0], s[:, 1])
-        return (r / np.linalg.norm(r))[:, None]
-    a, b, w = s[:, 0]
-    if w != 0.0:  # a rotation about the finite point (-b/w, a/w): forces through it
-        return np.array([[1.0, 0.0], [0.0, 1.0], [-a / w, -b / w]])
-    n = np.hypot(a, b)
-    return np.array([[-b / n, 0.0], [a / n, 0.0], [0.0, 1.0]])
+    return reaction_space_of(s, point)
 
 
-def _joint_inverse(M: np.ndarray, what: str, scale: np.ndarray | None = None) -> np.ndarray:
-    """Inverse of a symmetric joint-space matrix; SingularConfigurationError when singular.
+def percussion_subspace(A, s, *, what: str = "sᵀAs") -> np.ndarray:
+    """Active force subspace ``T = A s (sᵀAs)⁻¹`` (thesis 6.30, 6.105; 6.36 with ``I``).
 
-    The condition number is ``λmax(scale) / λmin(M)`` where ``scale`` (default
-    ``M``) is the same product taken with absolute values (``|s|^T |A| |s|``):
-    it measures how much of ``M`` was lost to cancellation, so a joint-space
-    inertia that vanishes (e.g. a point mass on its own revolute joint) is
-    caught even for a 1×1 ``M``.
-    """
-    k = M.shape[0]
-    if k == 0:
-        return np.zeros((0, 0))
-    M = 0.5 * (M + M.T)
-    lo = np.linalg.eigvalsh(M)[0]
-    hi = np.linalg.eigvalsh(M if scale is None else 0.5 * (scale + scale.T))[-1]
-    cond = hi / lo if lo > 0 else np.inf
-    if not cond < COND_LIMIT:
-        raise SingularConfigurationError(f"{what} is singular", cond)
-    return np.linalg.inv(M)
-
-
-def _sAs_inverse(A, s, what):
-    """``(s^T A s)^-1`` with the cancellation-aware singularity check."""
-    abs_s = np.abs(s)
-    return _joint_inverse(s.T @ A @ s, what, abs_s.T @ np.abs(A) @ abs_s)
-
-
-def percussion_subspace(A, s, *, what: str = "s^T A s") -> np.ndarray:
-    """Active force subspace ``T = A s (s^T A s)^-1`` (thesis 6.30, 6.105; 6.36 with ``I``).
-
-    The axis of percussion of the joint: ``s^T T = 1`` (6.32).
-
-    Raises
-    ------
-    SingularConfigurationError
-        When ``s^T A s`` is (numerically) singular; ``.cond`` holds its condition number.
+    Alias of :func:`planargeo.subspaces.percussion_space` with the arguments
+    in the order ``(A, s)``; the singularity rule and message are that
+    function's (:class:`~planargeo.errors.SingularConfigurationError` with ``.cond``).
 
     Examples
     --------
@@ -142,22 +91,17 @@ def percussion_subspace(A, s, *, what: str = "s^T A s") -> np.ndarray:
     >>> percussion_subspace(inertia_matrix(1.0, [0.5, 0.0], 0.25), [[0.0], [0.0], [1.0]]).ravel()
     array([0., 1., 1.])
     """
-    A = np.asarray(A, dtype=float)
-    s = np.asarray(s, dtype=float).reshape(3, -1)
-    return A @ s @ _sAs_inverse(A, s, what)
+    return percussion_space(np.asarray(s, dtype=float).reshape(3, -1), A, what=what)
 
 
-def reactive_subspace(A, R, *, s=None, T=None, what: str = "R^T A^-1 R") -> np.ndarray:
-    """Reactive acceleration subspace ``U = A^-1 R (R^T A^-1 R)^-1`` (thesis 6.45, 6.99, 6.37).
+def reactive_subspace(A, R, *, s=None, T=None, what: str | None = None) -> np.ndarray:
+    """Reactive acceleration subspace ``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹`` (thesis 6.45, 6.99, 6.37).
 
-    ``R^T U = 1`` (6.35) and ``T^T U = 0`` (6.46).  Thesis 6.33 prints the
-    same expression without the inverse on ``R^T A^-1 R``; see
-    ``docs/errata/dynamics-b.md``.
-
-    When the joint space ``s`` (and optionally ``T``) is given, the
-    inverse-free equivalent ``U = (1 - s T^T) R (R^T R)^-1`` (from the identity
-    ``T s^T + R U^T = 1``, 6.75 / 7.8) is used: it needs only ``s^T A s``
-    invertible, so point-mass bodies (singular ``I``) are fine.
+    Alias of :func:`planargeo.subspaces.reactive_acceleration_space` with the
+    arguments in the order ``(A, R)``.  With ``s`` (and optionally ``T``) the
+    inverse-free form ``U = (1 - s Tᵀ) R (RᵀR)⁻¹`` is used (point masses have
+    a singular ``A``).  Thesis 6.33 misprints the inverse; see
+    ``docs/errata/subspaces.md``.
 
     Examples
     --------
@@ -170,27 +114,24 @@ def reactive_subspace(A, R, *, s=None, T=None, what: str = "R^T A^-1 R") -> np.n
            [ 0.,  1.],
            [ 0., -1.]])
     """
-    A = np.asarray(A, dtype=float)
     R = np.asarray(R, dtype=float).reshape(3, -1)
-    if R.shape[1] == 0:
-        return np.zeros((3, 0))
     if s is not None:
         s = np.asarray(s, dtype=float).reshape(3, -1)
-        T = percussion_subspace(A, s) if T is None else np.asarray(T, dtype=float).reshape(3, -1)
-        return (np.eye(3) - s @ T.T) @ R @ np.linalg.inv(R.T @ R)
-    try:
-        AiR = np.linalg.solve(A, R)
-    except np.linalg.LinAlgError:
-        from ..errors import SingularInertiaError
-
-        raise SingularInertiaError("A must be invertible for U = A^-1 R (R^T A^-1 R)^-1; "
-                                   "pass s= for the inverse-free form", np.inf) from None
-    return AiR @ _joint_inverse(R.T @ AiR, what)
+    if T is not None:
+        T = np.asarray(T, dtype=float).reshape(3, -1)
+    return reactive_acceleration_space(R, A, s=s, T=T, what=what)
 
 
 def _active_mobility(A, s, what):
-    """``s (s^T A s)^-1 s^T`` = ``s T^T A^-1`` (thesis 6.93, 7.31a), without inverting ``A``."""
-    return s @ _sAs_inverse(A, s, what) @ s.T
+    """``s (sᵀAs)⁻¹ sᵀ`` = ``s Tᵀ A⁻¹`` (thesis 6.93, 7.31a): :func:`planargeo.subspaces.effective_mobility`."""
+    return effective_mobility(s, A, what=what)
+
+
+def _joint_solve(A, s, rhs):
+    """``(sᵀAs)⁻¹ rhs``; call after ``T`` was built, so singularity has been checked (one rule)."""
+    if s.shape[1] == 0:
+        return np.zeros(0)
+    return np.linalg.solve(s.T @ A @ s, rhs)
 
 
 # ---------------------------------------------------------------------------
@@ -226,7 +167,7 @@ def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, R=None) -> np.nda
     U = reactive_subspace(I, R, s=s, T=T)
     Q = np.asarray(Q, dtype=float).reshape(-1)
     rhs = T @ Q - np.asarray(p, dtype=float) - np.asarray(f_next, dtype=float)
-    return _active_mobility(I, s, "s^T I s") @ rhs + U @ (R.T @ (np.asarray(a_prev, dtype=float) + np.asarray(kappa, dtype=float)))
+    return _active_mobility(I, s, "sᵀIs") @ rhs + U @ (R.T @ (np.asarray(a_prev, dtype=float) + np.asarray(kappa, dtype=float)))
 
 
 def force_propagator(I, s, Q, p, f_next, a_prev, kappa, R=None) -> np.ndarray:
@@ -336,7 +277,7 @@ class ProjectiveWorkspace:
     qdd: np.ndarray
 
 
-def projective_solve(I, S, kappa, p, tau, parents=None) -> ProjectiveWorkspace:
+def projective_solve(I, S, kappa, p, tau, parents=None, points=None) -> ProjectiveWorkspace:
     """Projective articulated equations of motion on arrays (thesis 6.101-6.110).
 
     Parameters
@@ -346,10 +287,18 @@ def projective_solve(I, S, kappa, p, tau, parents=None) -> ProjectiveWorkspace:
     kappa, p : (N, 3) bias accelerations (2.19) and bias forces (3.11).
     tau : list of N arrays (k_i,): joint torques ``Q_i``.
     parents : sequence of N ints (``-1`` ground), default a chain.
+    points : (N, 2), optional
+        A point of each joint for the reaction bases (:func:`planargeo.joints.reaction_space_of`:
+        used by prismatic joints, whose reaction force passes through it); default the origin.
+        :func:`projective_workspace` passes each body's frame origin.
 
     Returns
     -------
     ProjectiveWorkspace
+        ``mu[i]`` are the reaction components in the basis ``R[i]`` of
+        :func:`planargeo.joints.reaction_space_of` (forces along x and y through
+        a revolute joint; force along ``e⊥`` through the slider and a couple
+        for a prismatic joint), so that ``f[i] = T[i] Q[i] + R[i] mu[i]``.
 
     Examples
     --------
@@ -370,7 +319,7 @@ def projective_solve(I, S, kappa, p, tau, parents=None) -> ProjectiveWorkspace:
     tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
     kappa = np.asarray(kappa, dtype=float)
     p = np.asarray(p, dtype=float)
-    rec = articulated_recursion(I, S, kappa, p, tau, parents)
+    rec = articulated_recursion(I, S, kappa, p, tau, parents, points)
     A, d, T, R = rec.A, rec.d, rec.T, rec.R
     U = [reactive_subspace(A[i], R[i], s=S[i], T=T[i]) for i in range(N)]
     a = np.zeros((N, 3))
@@ -382,7 +331,7 @@ def projective_solve(I, S, kappa, p, tau, parents=None) -> ProjectiveWorkspace:
         base = a_prev + kappa[i]
         gamma[i] = R[i].T @ base                                     # (6.101)
         # (6.107) with T^T A^-1 = (s^T A s)^-1 s^T: psi = (s^T A s)^-1 (Q - s^T d)
-        psi[i] = _sAs_inverse(A[i], S[i], f"s^T A s of joint {i}") @ (tau[i] - S[i].T @ d[i])
+        psi[i] = _joint_solve(A[i], S[i], tau[i] - S[i].T @ d[i])
         a[i] = S[i] @ psi[i] + U[i] @ gamma[i]                       # (6.108)
         mu[i] = U[i].T @ A[i] @ U[i] @ gamma[i] + U[i].T @ d[i]       # (6.106a)
         f[i] = T[i] @ tau[i] + R[i] @ mu[i]                          # (6.109)
@@ -404,8 +353,8 @@ def projective_workspace(model, q, qd=None, tau=None, f_ext=None) -> ProjectiveW
     >>> [round(float(x), 12) for x in ws.qdd]
     [1.714285714286, -4.285714285714]
     """
-    _, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
-    return projective_solve(I, S, kappa, p, taus, parents)
+    d, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
+    return projective_solve(I, S, kappa, p, taus, parents, d.pose[:, :2])
 
 
 def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:

@@ -40,7 +40,9 @@ import numpy as np
 
 from .._validate import as_array
 from ..errors import ShapeError, SingularConfigurationError, TopologyError
+from ..joints import reaction_space_of
 from ..kinematics import check_state, kinematics
+from ..subspaces import effective_mobility, percussion_space, reactive_acceleration_space
 from ..model import Model
 
 __all__ = ["adjacency", "trunk", "blocks", "reaction_basis", "quake_space", "StackedSolution", "stacked_solve",
@@ -149,59 +151,67 @@ def blocks(X, k: int = 3) -> np.ndarray:
     return np.kron(np.asarray(X, dtype=float), np.eye(k))
 
 
-def reaction_basis(s) -> np.ndarray:
-    """An orthonormal basis ``R`` of the wrenches powerless on ``s`` (``s^T R = 0``; thesis 6.36).
+def reaction_basis(s, point=(0.0, 0.0)) -> np.ndarray:
+    """Reaction space ``R`` of a joint with motion space ``s`` (``sᵀR = 0``; thesis 6.1, 7.16, 5.63).
+
+    Kept for compatibility: this is :func:`planargeo.joints.reaction_space_of`,
+    the package's one reaction basis (forces through the joint, couples), not
+    an orthonormal basis.
 
     Examples
     --------
-    >>> s = np.array([[0.0], [-1.0], [1.0]])            # revolute at (1, 0)
-    >>> R = reaction_basis(s); R.shape, np.allclose(s.T @ R, 0)
-    ((3, 2), True)
+    >>> reaction_basis(np.array([[3.0], [-2.0], [1.0]]))     # revolute at (2, 3): forces through it (7.16)
+    array([[ 1.,  0.],
+           [ 0.,  1.],
+           [-3.,  2.]])
     """
-    s = np.asarray(s, dtype=float)
-    k = s.shape[1]
-    if k == 0:
-        return np.eye(3)
-    if k == 3:
-        return np.zeros((3, 0))
-    u, _, _ = np.linalg.svd(s, full_matrices=True)
-    return u[:, k:]
-
-
-def _inv_checked(M, what, exc=SingularConfigurationError, scale=None):
-    """Inverse of a small matrix; ``exc`` with the condition number if it is singular.
-
-    For 1×1 matrices ``scale`` (the size the entry would have if regular)
-    gives the relative test ``|m| <= 1e-14 scale``.
-    """
-    if M.size == 0:
-        return M.copy()
-    if M.shape == (1, 1):
-        m = float(M[0, 0])
-        ref = abs(m) if scale is None else float(scale)
-        if not np.isfinite(m) or abs(m) <= 1e-14 * ref or m == 0.0:
-            cond = float("inf") if m == 0.0 or not np.isfinite(m) else ref / abs(m)
-            raise exc(f"{what} is singular", cond)
-        return np.array([[1.0 / m]])
-    c = np.linalg.cond(M)
-    if not np.isfinite(c) or c > 1e14:
-        raise exc(f"{what} is singular", c)
-    return np.linalg.inv(M)
+    return reaction_space_of(s, point)
 
 
 # ---------------------------------------------------------------------------
 # articulated quantities
 # ---------------------------------------------------------------------------
 def articulated_quantities(model: Model, data, tau):
-    """Articulated inertias, bias forces and the subspaces ``T``, ``U`` of every body.
+    """Articulated inertias, bias forces and the subspaces ``T``, ``R U^T`` of every body (thesis 7.7a, 7.7b, 9.27-9.28).
 
     Recursion from the tips to the root (thesis 7.7a/7.7b, stacked 9.27/9.28
-    corrected): ``A = I + C^T R U^T A C`` and
+    corrected, see ``docs/errata/trees-loops.md``): ``A = I + C^T R U^T A C`` and
     ``d = p + C^T T Q + C^T R U^T (A κ + d)``, with ``T = A S (S^T A S)^{-1}``
-    (9.19) and ``U = A^{-1} R (R^T A^{-1} R)^{-1}`` (9.20).
+    (9.19, 6.105; built by :func:`planargeo.subspaces.percussion_space`) and
+    ``R U^T = 1 - T s^T`` (7.8), which needs neither a reaction basis nor ``A^{-1}``
+    (``A`` may be singular for point masses).
 
-    Returns a dict of per-body lists ``A, d, s, T, P`` with ``P = R U^T = 1 - T s^T`` (7.8);
-    ``R`` and ``U`` themselves are available from :func:`quake_space`.
+    Parameters
+    ----------
+    model : Model
+    data : Data
+        Kinematics of the state (:func:`planargeo.kinematics.kinematics`).
+    tau : array_like (nq,)
+        Joint forces ``Q``.
+
+    Returns
+    -------
+    dict
+        Per-body lists ``A`` (3×3), ``d`` (3,), ``s`` (3×k), ``T`` (3×k),
+        ``P = R U^T`` (3×3), and ``points`` (the body frame origins, used for
+        the reaction bases of :func:`quake_space`).
+
+    Raises
+    ------
+    SingularConfigurationError
+        When some ``s^T A s`` is singular (``.cond``; message names the joint).
+
+    Examples
+    --------
+    Two unit slender links in line on pins: the first body feels twice the
+    mass along the chain (thesis 7.20, ``m_x = 2m``).
+
+    >>> from planargeo.model import chain_model
+    >>> from planargeo.kinematics import kinematics
+    >>> m = chain_model(2)
+    >>> art = articulated_quantities(m, kinematics(m, [0.0, 0.0]), np.zeros(2))
+    >>> float(art["A"][0][0, 0]), bool(np.allclose(art["P"][1] @ art["T"][1], 0))
+    (2.0, True)
     """
     N = model.N
     I, p, kap = data.I, data.p, data.kappa
@@ -211,30 +221,38 @@ def articulated_quantities(model: Model, data, tau):
     T, P = [None] * N, [None] * N
     eye3 = np.eye(3)
     for i in range(N - 1, -1, -1):
-        Ai = A[i]
-        sAs = s[i].T @ Ai @ s[i]
-        T[i] = Ai @ s[i] @ _inv_checked(sAs, f"s^T A s of joint {i}",
-                                        scale=np.abs(Ai).max() * float(np.sum(s[i] * s[i])))
-        # R U^T = 1 - T S^T (7.8): no reaction basis and no inverse of A needed
-        # (A may be singular for point masses)
-        P[i] = eye3 - T[i] @ s[i].T
+        Ai = A[i] = 0.5 * (A[i] + A[i].T)          # symmetric by construction; remove round-off
+        T[i] = percussion_space(s[i], Ai, what=f"sᵀAs of joint {i}")      # (9.19, 6.105)
+        P[i] = eye3 - T[i] @ s[i].T                                         # R U^T (7.8)
         j = model.parents[i]
         if j >= 0:
             Qi = tau[model.q_slice(i)]
             A[j] = A[j] + P[i] @ Ai
             d[j] = d[j] + T[i] @ Qi + P[i] @ (Ai @ kap[i] + d[i])
-    return {"A": A, "d": d, "s": s, "T": T, "P": P}
+    return {"A": A, "d": d, "s": s, "T": T, "P": P, "points": list(np.asarray(data.pose)[:, :2])}
 
 
-def quake_space(s, T, R=None):
-    """Reaction basis ``R`` and quake space ``U`` of one joint (thesis 9.20, 6.33).
+def quake_space(s, T, R=None, point=(0.0, 0.0)):
+    """Reaction basis ``R`` and quake space ``U`` of one joint (thesis 9.20, 6.99; 6.33 corrected).
 
-    ``U = A^{-1} R (R^T A^{-1} R)^{-1}`` is computed without ``A^{-1}``: from
-    ``U R^T = 1 - s T^T`` (6.75) and ``R^T U = 1``, ``U = (1 - s T^T) R`` for an
-    orthonormal ``R`` (:func:`reaction_basis`).
+    ``R`` is :func:`planargeo.joints.reaction_space_of` (forces through the
+    joint, couples; ``point`` places the force of a prismatic joint) unless
+    given, and ``U = A^{-1} R (R^T A^{-1} R)^{-1}`` comes from
+    :func:`planargeo.subspaces.reactive_acceleration_space` in its inverse-free
+    form ``(1 - s T^T) R (R^T R)^{-1}`` (6.75), so ``A`` is not needed.
+
+    Examples
+    --------
+    Thesis 7.40 (``m = L = 1``, ``ρ = 1/2``: ``T = [0, 1, 1]``), pin at the origin:
+
+    >>> R, U = quake_space(np.array([[0.0], [0.0], [1.0]]), np.array([[0.0], [1.0], [1.0]]))
+    >>> U + 0.0
+    array([[ 1.,  0.],
+           [ 0.,  1.],
+           [ 0., -1.]])
     """
-    R = reaction_basis(s) if R is None else R
-    return R, (np.eye(3) - s @ T.T) @ R
+    R = reaction_space_of(s, point) if R is None else np.asarray(R, dtype=float)
+    return R, reactive_acceleration_space(R, s=s, T=T)
 
 
 def _blockdiag(mats, rows, cols):
@@ -290,7 +308,7 @@ class StackedSolution:
     def _RU(self):
         if not hasattr(self, "_ru"):
             art = self.articulated
-            pairs = [quake_space(si, Ti) for si, Ti in zip(art["s"], art["T"])]
+            pairs = [quake_space(si, Ti, point=pt) for si, Ti, pt in zip(art["s"], art["T"], art["points"])]
             kr = [3 - si.shape[1] for si in art["s"]]
             three = [3] * self.N
             self._ru = (_blockdiag([p[0] for p in pairs], three, kr), _blockdiag([p[1] for p in pairs], three, kr))
@@ -298,7 +316,7 @@ class StackedSolution:
 
     @property
     def R(self) -> np.ndarray:
-        """Block-diagonal reaction spaces ``{{R_i}}`` (orthonormal, ``S^T R = 0``)."""
+        """Block-diagonal reaction spaces ``{{R_i}}`` (``S^T R = 0``; :func:`planargeo.joints.reaction_space_of`: forces through the joints, couples)."""
         return self._RU()[0]
 
     @property
@@ -374,8 +392,8 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     sol.d = sol.L @ (sol.p + C.T @ (T @ Q) + C.T @ P @ A @ sol.kappa)
     # (9.39): a = L^T [S T^T A^-1 (T Q - d) + U R^T κ]
     # S T^T A^-1 = S (S^T A S)^-1 S^T: no inverse of A needed
-    sol.StTAinv = _blockdiag([si @ np.linalg.solve(si.T @ Ai @ si, si.T) if si.shape[1] else np.zeros((3, 3))
-                              for si, Ai in zip(art["s"], art["A"])], three, three)
+    sol.StTAinv = _blockdiag([effective_mobility(si, Ai, what=f"sᵀAs of joint {i}")
+                              for i, (si, Ai) in enumerate(zip(art["s"], art["A"]))], three, three)
     sol.a = sol.L.T @ (sol.StTAinv @ (T @ Q - sol.d) + P.T @ sol.kappa)     # U R^T = P^T
     # (9.41) with (9.17): internal forces
     sol.f = T @ Q + P @ (A @ (C @ sol.a + sol.kappa) + sol.d)
@@ -387,7 +405,23 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
 
 
 def stacked_mobility(sol: StackedSolution) -> np.ndarray:
-    """Full stacked mobility ``Φ = L^T S T^T A^{-1} L`` of the tree (see :attr:`StackedSolution.mobility`)."""
+    """Full stacked mobility ``Φ = L^T S T^T A^{-1} L`` of the tree (thesis 9.39, 9.65-9.73 corrected).
+
+    ``a = u - Φ w`` when wrenches ``-w`` are applied to the bodies (see
+    :attr:`StackedSolution.mobility` and ``docs/errata/trees-loops.md``).
+
+    Examples
+    --------
+    A single unit link on a pin at the origin (``ρ² = 1/12``): a unit couple
+    turns it at ``1/(m(ρ² + L²/4)) = 3`` rad/s² (thesis 7.42).
+
+    >>> from planargeo.model import chain_model
+    >>> Phi = stacked_mobility(stacked_solve(chain_model(1), [0.0], [0.0], [0.0]))
+    >>> Phi.round(12) + 0.0
+    array([[0., 0., 0.],
+           [0., 0., 0.],
+           [0., 0., 3.]])
+    """
     return sol.mobility
 
 
@@ -411,9 +445,34 @@ def tree_mobilities(model: Model, data, tau, art=None, *, siblings: bool = True)
     ``E``, ``e`` (the chain recursion applied along each root path, as 7.4.1
     would be read for a tree): wrong for trees, kept to pin the erratum.
 
+    Parameters
+    ----------
+    model : Model
+    data : Data
+        Kinematics of the state.
+    tau : array_like (nq,)
+    art : dict, optional
+        :func:`articulated_quantities` of the state (computed if omitted).
+    siblings : bool
+        Load the parent with the siblings' articulated inertias (default; right for trees).
+
     Returns
     -------
     (Lambda_inv, b) : lists of (3, 3) and (3,) arrays
+
+    Examples
+    --------
+    Thesis 7.42 (``m = L = 1``, ``ρ² = 1/12``, pin at the origin): the single
+    link's mobility about its pivot is ``1/(m(ρ² + L²/4)) = 3``.
+
+    >>> from planargeo.model import chain_model
+    >>> from planargeo.kinematics import kinematics
+    >>> m = chain_model(1, gravity=(0.0, 0.0))
+    >>> Lam, b = tree_mobilities(m, kinematics(m, [0.0]), np.zeros(1))
+    >>> Lam[0].round(12) + 0.0, b[0] + 0.0
+    (array([[0., 0., 0.],
+           [0., 0., 0.],
+           [0., 0., 3.]]), array([0., 0., 0.]))
     """
     N = model.N
     if art is None:
@@ -442,17 +501,10 @@ def tree_mobilities(model: Model, data, tau, art=None, *, siblings: bool = True)
         Ii = I[i]
         Qi = tau[model.q_slice(i)]
         # s T^T I^-1 = s (s^T I s)^-1 s^T and U R^T = 1 - s T^T: no inverse of I
-        # (point masses have a singular I); η = s (s^T I s)^-1 (Q - s^T p)   (7.35)
-        if si.shape[1]:
-            sIs_inv = _inv_checked(si.T @ Ii @ si, f"s^T I s of joint {i}",
-                                   scale=np.abs(Ii).max() * float(np.sum(si * si)))
-            Ti = Ii @ si @ sIs_inv
-            mob_i = si @ sIs_inv @ si.T
-            eta = si @ (sIs_inv @ (Qi - si.T @ p[i]))
-        else:
-            Ti = np.zeros((3, 0))
-            mob_i = np.zeros((3, 3))
-            eta = np.zeros(3)
+        # (point masses have a singular I); η = s T^T I^-1 (T Q - p)   (7.35)
+        Ti = percussion_space(si, Ii, what=f"sᵀIs of joint {i}")          # (6.36)
+        mob_i = effective_mobility(si, Ii, what=f"sᵀIs of joint {i}")    # (6.93)
+        eta = mob_i @ (Ti @ Qi - p[i])
         URt = one - si @ Ti.T
         X = one + URt @ M @ Ii
         Lam[i] = np.linalg.solve(X, mob_i + URt @ M)
@@ -469,6 +521,26 @@ def direct_accelerations(sol: StackedSolution, Lambda_inv, b) -> np.ndarray:
         a = (1 + Λ^{-1} C^T Δ^{-T} I)^{-1} (b - Λ^{-1} C^T Δ^{-T} p)
 
     ``Λ^{-1} = {{Λ_i^{-1}}}`` block diagonal and ``b = {b_i}`` from :func:`tree_mobilities`.
+
+    Parameters
+    ----------
+    sol : StackedSolution
+        The state (:func:`stacked_solve`), for ``C``, ``Δ^{-1}``, ``I``, ``p``.
+    Lambda_inv, b : lists of (3, 3) and (3,)
+        From :func:`tree_mobilities`.
+
+    Returns
+    -------
+    a : (3N,) stacked body accelerations, equal to ``sol.a`` (9.39).
+
+    Examples
+    --------
+    >>> from planargeo.model import chain_model
+    >>> m = chain_model(2, gravity=(0.0, 0.0))
+    >>> sol = stacked_solve(m, [0.0, 0.0], [0.0, 0.0], [1.0, 0.0])
+    >>> a = direct_accelerations(sol, *tree_mobilities(m, sol.data, np.array([1.0, 0.0])))
+    >>> bool(np.allclose(a, sol.a))
+    True
     """
     N = sol.N
     Lam = _blockdiag(Lambda_inv, [3] * N, [3] * N)
