@@ -14,7 +14,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validate import as_array, as_mat3, as_scalar, as_vec3, as_xy, check_positive_definite
+from ._validate import (as_array, as_mat3, as_scalar, as_vec3, as_xy, check_positive_definite,
+                        check_symmetric)
 from .errors import InputError, InvalidPolygonError, SingularInertiaError
 from .screws import inertia_at, inertia_matrix, kinetic_energy, momentum
 
@@ -35,6 +36,29 @@ def _positive(x, name: str) -> np.ndarray:
 
 def _mat(x, name="inertia") -> np.ndarray:
     return as_mat3(x.matrix if isinstance(x, Inertia) else x, name)
+
+
+def _psd(x, name="inertia", rtol: float = 1e-12) -> np.ndarray:
+    """An inertia that must be symmetric positive *semi*-definite (a point mass, ``J = 0``, is allowed).
+
+    Raises :class:`InputError` (not symmetric) or :class:`SingularInertiaError`
+    (a negative eigenvalue beyond rounding), naming ``name``.
+    """
+    I = _mat(x, name)
+    check_symmetric(I, name)
+    w = np.linalg.eigvalsh(I)
+    lo, hi = w[..., 0], w[..., -1]
+    bad = lo < -rtol * np.maximum(np.abs(hi), np.finfo(float).tiny)
+    if np.any(bad):
+        raise SingularInertiaError(
+            f"{name} must be positive semi-definite, got smallest eigenvalue {float(np.min(lo[bad])):.3g}",
+            float("inf"))
+    return I
+
+
+def _pd(x, name="inertia") -> np.ndarray:
+    """An inertia that must be symmetric positive definite (it is inverted)."""
+    return check_positive_definite(_mat(x, name), name)
 
 
 def _vec(x, name) -> np.ndarray:
@@ -146,6 +170,14 @@ def percussion_axis(inertia, point) -> np.ndarray:
     ndarray (..., 3)
         The wrench ``I a`` (not normalised: its size is the force for unit ``α``).
 
+    Raises
+    ------
+    InputError
+        ``inertia`` is not symmetric.
+    SingularInertiaError
+        ``inertia`` is not positive semi-definite (a point mass, ``J = 0``,
+        is accepted: its axes of percussion all pass through the mass).
+
     Examples
     --------
     Thesis 5.64-5.66 with ``m = 2``, ``d = 1``, ``ρ = 1/2``: the line ``x = 1.25``.
@@ -153,8 +185,12 @@ def percussion_axis(inertia, point) -> np.ndarray:
     >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.5)
     >>> percussion_axis(I, [0.0, 0.0, 1.0])
     array([0. , 2. , 2.5])
+    >>> percussion_axis(np.diag([1.0, 1.0, -1.0]), [0.0, 0.0, 1.0])
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.SingularInertiaError: inertia must be positive semi-definite, got smallest eigenvalue -1 (condition number inf)
     """
-    I = _mat(inertia)
+    I = _psd(inertia)
     a = _vec(point, "point")
     return np.einsum("...ij,...j->...i", I, a)
 
@@ -165,13 +201,21 @@ def percussion_pole(inertia, line) -> np.ndarray:
     A line through the centre of mass gives a pole at infinity (the body
     translates); the line at infinity (a couple) gives the centre of mass.
 
+    Raises
+    ------
+    InputError
+        ``inertia`` is not symmetric.
+    SingularInertiaError
+        ``inertia`` is not positive definite (e.g. a point mass, or an
+        indefinite matrix); carries ``.cond``.
+
     Examples
     --------
     >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.5)
     >>> percussion_pole(I, [0.0, 0.0, 1.0])      # a couple spins the body about its centre (1, 0)
     array([ 0., -1.,  1.])
     """
-    I = _mat(inertia)
+    I = _pd(inertia)
     f = _vec(line, "line")
     return _solve(I, f[..., None])[..., 0]
 
@@ -200,6 +244,11 @@ def drawable_conic(inertia) -> np.ndarray:
         Symmetric, with signature (2, 1): ``pᵀ C p = m (|x - c|² - ρ²)`` for
         ``p = [y, -x, 1]``.
 
+    This is :func:`planargeo.conics.drawable_conic` (which handles any
+    imaginary conic) after checking that ``inertia`` is an inertia (symmetric
+    positive semi-definite; a point mass gives the degenerate circle of
+    radius 0, the inertia itself).
+
     Examples
     --------
     >>> drawable_conic(inertia_matrix(2.0, [0.0, 0.0], 0.5))
@@ -207,10 +256,9 @@ def drawable_conic(inertia) -> np.ndarray:
            [ 0. ,  2. ,  0. ],
            [ 0. ,  0. , -0.5]])
     """
-    I = _mat(inertia)
-    C = np.array(I, copy=True)
-    C[..., 2, 2] = I[..., 2, 2] - 2.0 * rotational_inertia(I)
-    return C
+    from .conics import drawable_conic as _drawable_conic
+
+    return _drawable_conic(_psd(inertia))
 
 
 # ---------------------------------------------------------------------------

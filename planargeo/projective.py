@@ -118,7 +118,10 @@ def normalize_line(l) -> np.ndarray:
 
     Finite lines are scaled to a unit force ``|(fx, fy)| = 1`` (keeping the
     line's orientation, so signed distances keep their sign); the line at
-    infinity (force exactly zero) is scaled to ``tz = ±1``.
+    infinity (force exactly zero) is scaled to ``tz = ±1``, keeping its sign:
+    as a wrench it is a pure couple and the sign is the couple's sense
+    (counter-clockwise ``+1``).  Every normalisation in the package
+    (e.g. :func:`planargeo.screws.add_wrenches`) uses this function.
 
     Parameters
     ----------
@@ -137,7 +140,7 @@ def normalize_line(l) -> np.ndarray:
     --------
     >>> normalize_line([0.0, 2.0, 4.0])       # the vertical line x = 2, pointing up
     array([0., 1., 2.])
-    >>> normalize_line([0.0, 0.0, -5.0])      # the line at infinity
+    >>> normalize_line([0.0, 0.0, -5.0])      # the line at infinity: a clockwise couple
     array([ 0.,  0., -1.])
     """
     l = as_vec3(l, "l")
@@ -150,19 +153,32 @@ def normalize_line(l) -> np.ndarray:
     return l / den[..., None]
 
 
-def normalize(x, kind: str = "point") -> np.ndarray:
+def normalize(x, kind: str | None = None) -> np.ndarray:
     """Base coordinates of points (``kind="point"``) or lines (``kind="line"``).
 
     See :func:`normalize_point` (thesis 5.49) and :func:`normalize_line`
-    (thesis 5.55).
+    (thesis 5.55).  ``kind`` is required: the same array is a point or a line
+    depending on how it is read (a twist or a wrench), and the two are scaled
+    differently (weight ``w = 1`` versus unit force), so there is no default.
+
+    Raises
+    ------
+    InputError
+        ``kind`` missing or not ``"point"`` / ``"line"``.
 
     Examples
     --------
-    >>> normalize([2.0, 0.0, 2.0])
+    >>> normalize([2.0, 0.0, 2.0], kind="point")
     array([1., 0., 1.])
     >>> normalize([3.0, 4.0, 10.0], kind="line")
     array([0.6, 0.8, 2. ])
+    >>> normalize([3.0, 4.0, 10.0])
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: kind must be given, 'point' or 'line' (a point and a line are scaled differently)
     """
+    if kind is None:
+        raise InputError("kind must be given, 'point' or 'line' (a point and a line are scaled differently)")
     if kind == "point":
         return normalize_point(x)
     if kind == "line":

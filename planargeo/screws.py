@@ -15,7 +15,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validate import as_array, as_mat3, as_vec3, as_xy
+from ._validate import as_array, as_mat3, as_vec3, as_xy, check_positive
+from .projective import normalize_line, normalize_point, to_xy
 
 __all__ = [
     "X_P", "X_P_inv_T", "rot", "crm", "crf",
@@ -118,7 +119,22 @@ def crm(v) -> np.ndarray:
 
 
 def crf(v) -> np.ndarray:
-    """Planar force cross operator ``v×* = -(v×)^T`` (dual of :func:`crm`, thesis 3.8)."""
+    """Planar force cross operator ``v×* = -(v×)^T`` (dual of :func:`crm`, thesis 3.8).
+
+    ``crf(v) @ f`` is the rate of change of a wrench ``f`` carried by a body
+    moving with twist ``v``; for ``v = [vx, vy, w]``::
+
+        [[ 0,   -w,   0],
+         [ w,    0,   0],
+         [-vy,  vx,   0]]
+
+    Examples
+    --------
+    >>> crf([0.0, 0.0, 1.0]) @ [1.0, 0.0, 0.0]   # a force along x, rotated at unit rate about the origin
+    array([0., 1., 0.])
+    >>> crf([1.0, 0.0, 0.0]) @ [0.0, 1.0, 0.0]   # a force along y carried along x: moment about the origin grows
+    array([0., 0., 1.])
+    """
     return -np.swapaxes(crm(v), -1, -2)
 
 
@@ -165,7 +181,20 @@ def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
          [ 0,     m,     m cx          ],
          [-m cy,  m cx,  J + m |c|²    ]]
 
-    No validation of positivity here; :class:`planargeo.Inertia` validates.
+    Parameters
+    ----------
+    mass : array_like (...)
+        ``m > 0``.
+    com : array_like (..., 2)
+    inertia_about_com : array_like (...)
+        ``J >= 0`` (``J = 0`` is a point mass: a singular, positive
+        semi-definite inertia).
+
+    Raises
+    ------
+    InputError
+        ``mass <= 0`` or ``inertia_about_com < 0`` (the message names the
+        argument, e.g. ``"mass must be positive, got -1.0"``).
 
     Examples
     --------
@@ -173,10 +202,14 @@ def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
     array([[2. , 0. , 0. ],
            [0. , 2. , 2. ],
            [0. , 2. , 2.5]])
+    >>> inertia_matrix(-1, [0.0, 0.0], 1.0)
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: mass must be positive, got -1.0
     """
-    m = as_array(mass, "mass")
+    m = check_positive(mass, "mass")
     c = as_xy(com, "com")
-    J = as_array(inertia_about_com, "inertia_about_com")
+    J = check_positive(inertia_about_com, "inertia_about_com", strict=False)
     shape = np.broadcast_shapes(m.shape, c.shape[:-1], J.shape)
     out = np.zeros(shape + (3, 3))
     cx, cy = c[..., 0], c[..., 1]
@@ -202,7 +235,16 @@ def power(twist, wrench) -> np.ndarray:
 
 
 def kinetic_energy(inertia, twist) -> np.ndarray:
-    """Kinetic energy ``½ vᵀ I v`` (thesis 1.9), invariant under frame changes."""
+    """Kinetic energy ``½ vᵀ I v`` (thesis 1.9), invariant under frame changes.
+
+    Examples
+    --------
+    A disc (``m = 2``, ``J = 0.5``) centred at ``(1, 0)`` spinning at ``ω = 3``
+    about the origin: ``½ (J + m d²) ω² = 11.25``.
+
+    >>> float(kinetic_energy(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 3.0]))
+    11.25
+    """
     I = as_array(inertia, "inertia", (3, 3))
     v = as_vec3(twist, "twist")
     return np.asarray(0.5 * np.einsum("...i,...ij,...j->...", v, I, v))
@@ -211,24 +253,6 @@ def kinetic_energy(inertia, twist) -> np.ndarray:
 # ---------------------------------------------------------------------------
 # Scalar features of twists and wrenches (thesis 4.6-4.10, 4.22-4.32)
 # ---------------------------------------------------------------------------
-
-def _normalize_point(x: np.ndarray) -> np.ndarray:
-    """Finite points scaled to ``w = 1``, ideal points to unit length (zero stays zero)."""
-    x = np.asarray(x, dtype=float)
-    w = x[..., 2:3]
-    n = np.linalg.norm(x, axis=-1, keepdims=True)
-    scale = np.where(w != 0, w, np.where(n > 0, n, 1.0))
-    return x / scale
-
-
-def _normalize_line(x: np.ndarray) -> np.ndarray:
-    """Lines scaled to ``|f| = 1``, the line at infinity to ``[0, 0, ±1] -> [0, 0, 1]``."""
-    x = np.asarray(x, dtype=float)
-    F = np.hypot(x[..., 0:1], x[..., 1:2])
-    t = x[..., 2:3]
-    scale = np.where(F > 0, F, np.where(t != 0, t, 1.0))
-    return x / scale
-
 
 def twist_magnitude(twist) -> np.ndarray:
     """Magnitude ``ω_z`` of a planar twist (thesis 4.6), signed; 0 for a translation.
@@ -245,8 +269,10 @@ def twist_magnitude(twist) -> np.ndarray:
 def pole_xy(twist) -> np.ndarray:
     """Euclidean pole ``(-v_y/ω, v_x/ω)`` of a twist (thesis 4.10).
 
-    A translation (``ω = 0``) has its pole at infinity: NaN is returned (no
-    warning); use the homogeneous array itself (the twist *is* its pole).
+    The twist *is* its pole (thesis 5.51), so this is
+    :func:`planargeo.projective.to_xy` applied to the twist.  A translation
+    (``ω = 0``) has its pole at infinity: NaN is returned (no warning); use
+    the homogeneous array itself.
 
     Examples
     --------
@@ -255,13 +281,7 @@ def pole_xy(twist) -> np.ndarray:
     >>> pole_xy([1.0, 0.0, 0.0])
     array([nan, nan])
     """
-    v = as_vec3(twist, "twist")
-    w = v[..., 2]
-    ok = w != 0
-    out = np.full(v.shape[:-1] + (2,), np.nan)
-    safe = np.where(ok, w, 1.0)
-    xy = np.stack([-v[..., 1] / safe, v[..., 0] / safe], axis=-1)
-    return np.where(ok[..., None], xy, out)
+    return to_xy(as_vec3(twist, "twist"))
 
 
 def wrench_magnitude(wrench) -> np.ndarray:
@@ -373,48 +393,83 @@ def momentum(inertia, twist) -> np.ndarray:
 
 
 def kappa(twist, s, qd) -> np.ndarray:
-    """Bias (convective) acceleration ``κ = v × s q̇`` (thesis 2.19, 4.61).
+    """Bias (convective) acceleration ``κ = ṡ q̇`` of a joint with sequential screws (thesis 2.19, 4.61).
+
+    The columns ``s_1 … s_k`` of ``s`` are *sequential screws* (thesis 2.2):
+    column ``j`` is carried by the parent body and by the motions of the
+    columns ``1 … j-1`` before it, so it moves with the twist
+    ``v + Σ_{l<j} s_l q̇_l`` and (2.14) gives ``ṡ_j = (v + Σ_{l<j} s_l q̇_l) × s_j``.
+    Hence::
+
+        κ = Σ_j (v + Σ_{l<j} s_l q̇_l) × s_j q̇_j
+          = v × s q̇ + Σ_{l<j} (s_l q̇_l) × (s_j q̇_j)
+
+    For one column (and for columns that commute, e.g. two translations) this
+    is the printed ``v × s q̇`` of 2.19/4.61; for a multi-dof joint the printed
+    form drops the cross terms (see ``docs/errata/screws.md``, 4.77, and
+    ``docs/errata/dynamics-a.md`` §1).  Agrees with
+    :func:`planargeo.kinematics.kinematics` (``Data.kappa``).
 
     Parameters
     ----------
     twist : array_like (..., 3)
-        Body velocity ``v_i`` (it may or may not include ``s q̇``: ``s q̇ × s q̇ = 0``
-        for one axis, and for several axes the thesis uses ``v_i``).
+        Velocity ``v_{λ(i)}`` of the parent body (the one that carries the
+        joint), at the origin.  Passing the body's own velocity
+        ``v_i = v_{λ(i)} + s q̇`` gives the same result, because
+        ``(s q̇) × (s q̇) = 0``.
     s : array_like (..., 3, k) or (..., 3)
-        Joint motion space (a single axis may be given as a vector; an array
-        whose last two dimensions are ``(3, 3)`` is a 3-column motion space).
+        Joint motion space at the current configuration, columns **in the
+        order the motions are applied** (e.g. slide then turn for
+        :func:`planargeo.joints.revolute_prismatic`).  A single axis may be
+        given as a vector; an array whose last two dimensions are ``(3, 3)``
+        is a 3-column motion space.
     qd : array_like (..., k) or (...)
-        Joint speeds.
+        Joint speeds, in the order of the columns.
 
     Returns
     -------
     ndarray (..., 3)
-        A translation (zero ``ω``) whose velocity lies along the line joining
-        the poles of ``v`` and ``s`` (thesis 4.6): in fact ``κ[:2] = (v × s q̇)[:2]``,
-        i.e. ``ω_{i-1} q̇ (S - V)`` for normalised poles ``V`` of ``v_{i-1}``
-        and ``S`` of ``s`` (magnitude ``ω_{i-1} q̇ k_i``, 4.53).
+        A translation (zero ``ω``).  For one revolute column it lies along the
+        line joining the poles of ``v`` and ``s`` (thesis 4.53):
+        ``ω q̇ (S - V)`` for normalised poles ``V`` of ``v`` and ``S`` of ``s``.
 
     Examples
     --------
     Revolute joint, thesis 4.66-4.67 (``v_{i-1} = (1, 2, 0.5)``, ``θ̇ = 3``):
 
-    >>> kappa([1.0, 2.0, 3.5], [0.0, 0.0, 1.0], 3.0)
+    >>> kappa([1.0, 2.0, 0.5], [0.0, 0.0, 1.0], 3.0)
     array([ 6., -3.,  0.])
+
+    Slide along x by ``u = 1.5`` then turn at ``θ̇ = 2`` about the slid pin at
+    ``(0.7, 0)``, parent at rest: the pin's velocity ``u`` turns at ``θ̇``,
+    ``κ = u θ̇ (0, -1)`` (the printed 4.77 gives zero):
+
+    >>> kappa([0.0, 0.0, 0.0], [[1.0, 0.0], [0.0, -0.7], [0.0, 1.0]], [1.5, 2.0])
+    array([ 0., -3.,  0.])
     """
     v = as_vec3(twist, "twist")
     S = as_array(s, "s")
     q = as_array(qd, "qd")
     if S.ndim >= 1 and S.shape[-1] == 3 and (S.ndim == 1 or S.shape[-2] != 3):
-        sq = S * q[..., None]
+        U = (S * q[..., None])[..., None]
     elif S.ndim >= 2 and S.shape[-2] == 3:
         if q.ndim == 0 or q.shape[-1] != S.shape[-1]:
             from .errors import ShapeError
             raise ShapeError(f"qd must have shape (..., {S.shape[-1]}) to match s, got shape {q.shape}")
-        sq = np.einsum("...ik,...k->...i", S, q)
+        U = S * q[..., None, :]
     else:
         from .errors import ShapeError
         raise ShapeError(f"s must have shape (..., 3) or (..., 3, k), got shape {S.shape}")
-    return np.einsum("...ij,...j->...i", crm(v), sq)
+    shape = np.broadcast_shapes(v.shape[:-1], U.shape[:-2])
+    out = np.zeros(shape + (3,))
+    carrier = np.broadcast_to(v, shape + (3,))         # v + Σ_{l<j} s_l q̇_l
+    for j in range(U.shape[-1]):
+        u = U[..., :, j]
+        w = carrier[..., 2]
+        out[..., 0] += carrier[..., 1] * u[..., 2] - w * u[..., 1]   # crm(carrier) @ u (4.63)
+        out[..., 1] += w * u[..., 0] - carrier[..., 0] * u[..., 2]
+        carrier = carrier + u
+    return out
 
 
 def bias_force(inertia, twist, g=None) -> np.ndarray:
@@ -748,8 +803,10 @@ class TwistSum:
     """Construction of ``v3 = v1 + v2`` (thesis 4.2), for drawing.
 
     Points and lines are normalised homogeneous arrays in the package's
-    coordinates (finite points with ``w = 1``, ideal points and lines with unit
-    length); wrap them with ``Point(...)`` / ``Line(...)`` to draw.  The pole
+    coordinates (:func:`planargeo.projective.normalize_point` /
+    :func:`~planargeo.projective.normalize_line`: finite points with ``w = 1``,
+    ideal points and finite lines with unit length, the line at infinity
+    ``[0, 0, ±1]`` keeping the sign of the couple); wrap them with ``Point(...)`` / ``Line(...)`` to draw.  The pole
     ``P`` of the sum always lies on ``line`` (the join of ``Q1`` and ``Q2``).
 
     Attributes
@@ -835,10 +892,10 @@ def add_twists(v1, v2, rtol: float = 1e-12) -> TwistSum:
         line = np.zeros(3)
     return TwistSum(
         v1=Twist(a), v2=Twist(b), sum=Twist(s), case=case,
-        Q1=_normalize_point(a), Q2=_normalize_point(b),
-        P=_normalize_point(s) if np.any(s) else None,
+        Q1=normalize_point(a), Q2=normalize_point(b),
+        P=normalize_point(s) if np.any(s) else None,
         omega1=w1, omega2=w2, omega3=w3, beta=beta, rho=rho,
-        line=_normalize_line(line) if np.any(line) else None,
+        line=normalize_line(line) if np.any(line) else None,
     )
 
 
@@ -945,8 +1002,8 @@ def add_wrenches(f1, f2, rtol: float = 1e-12) -> WrenchSum:
         case = "couples" if s[2] != 0 else "zero"
     return WrenchSum(
         f1=Wrench(a), f2=Wrench(b), sum=Wrench(s), case=case,
-        L1=_normalize_line(a), L2=_normalize_line(b),
-        L3=_normalize_line(s) if np.any(s) else None,
-        P=_normalize_point(meet) if np.any(meet) else None,
+        L1=normalize_line(a), L2=normalize_line(b),
+        L3=normalize_line(s) if np.any(s) else None,
+        P=normalize_point(meet) if np.any(meet) else None,
         F1=F1, F2=F2, F3=F3, beta=beta, d1=d1, d2=d2, d3=d3, rho=rho,
     )

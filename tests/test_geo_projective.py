@@ -94,6 +94,33 @@ def test_normalize_zero_vector_raises():
         normalize([1.0, 0, 0], kind="conic")
 
 
+def test_normalize_requires_kind():
+    # a line passed without kind must not be silently scaled as a point
+    with pytest.raises(InputError, match=r"^kind must be given, 'point' or 'line'"):
+        normalize([3.0, 4.0, 10.0])
+    assert np.allclose(normalize([3.0, 4.0, 10.0], "line"), [0.6, 0.8, 2.0])      # positional still works
+    assert np.allclose(normalize([3.0, 4.0, 10.0], "point"), [0.3, 0.4, 1.0])
+
+
+def test_line_at_infinity_keeps_the_couples_sense_everywhere():
+    # one rule for the whole package: a line at infinity is a couple, its sign is the couple's sense
+    from planargeo.screws import Wrench, add_wrenches
+    assert np.array_equal(normalize_line([0.0, 0.0, -3.0]), [0.0, 0.0, -1.0])
+    assert np.array_equal(normalize_line([0.0, 0.0, 2.0]), [0.0, 0.0, 1.0])
+    cw = add_wrenches(Wrench.couple(-2.0), Wrench.force([0.0, 0.0], [1.0, 0.0]))
+    assert np.array_equal(cw.L1, [0.0, 0.0, -1.0])
+    c = add_wrenches(Wrench.couple(-2.0), Wrench.couple(-1.0))
+    assert c.case == "couples" and np.array_equal(c.L3, [0.0, 0.0, -1.0])
+
+
+def test_screws_pole_xy_is_to_xy():
+    from planargeo.screws import pole_xy
+    P = np.array([[2.0, -1.0, 1.0], [4.0, -2.0, 2.0], [1.0, 0.0, 0.0], [0.0, 3.0, -3.0]])
+    expected = np.array([[1.0, 2.0], [1.0, 2.0], [np.nan, np.nan], [1.0, 0.0]])   # (x, y) = (-p1/w, p0/w)
+    np.testing.assert_array_equal(pole_xy(P), expected)
+    np.testing.assert_array_equal(to_xy(P), expected)
+
+
 def test_is_ideal_exact():
     assert list(is_ideal([[1, 2, 0], [1, 2, 1e-300]])) == [True, False]
     assert list(is_at_infinity([[0, 0, 1], [1e-300, 0, 1]])) == [True, False]

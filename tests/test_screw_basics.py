@@ -2,7 +2,8 @@
 
 References are independent: 6x6 spatial operators of chapter 1/2 projected
 with D (4.1, 4.7), the closed forms printed in 4.66-4.83 (each re-derived by
-hand, they are correct as printed), and the parallel axis theorem.
+hand; all correct as printed except 4.77, which misses the sequential-screw
+cross term, see docs/errata/screws.md), and the parallel axis theorem.
 """
 import numpy as np
 import pytest
@@ -152,15 +153,30 @@ def test_prismatic_bias_4_71_to_4_73(k):
 
 @pytest.mark.parametrize("k", PARAMS)
 def test_revolute_prismatic_bias_4_76_to_4_78(k):
+    """4.76 and 4.78 as printed; 4.77 corrected (erratum): slide-then-turn adds u θ̇ (sin λ, -cos λ, 0).
+
+    Hand derivation, local frame at the pin (4.58), parent twist (vx, vy, w):
+    the slide direction e = (c, s) is carried by the parent, ṡ_1 = w (-s, c, 0);
+    the rotation column s_2 = [p_y, -p_x, 1] follows the pin p, which sits at the
+    origin and moves at (vx + u c, vy + u s), so ṡ_2 = (vy + u s, -(vx + u c), 0).
+    κ = ṡ_1 u + ṡ_2 θ̇.
+    """
     m, C, vx, vy, w, u, lam, th = k["m"], k["C"], k["vx"], k["vy"], k["w"], k["u"], k["lam"], k["th"]
     c, s = np.cos(lam), np.sin(lam)
     S = np.array([[c, 0.0], [s, 0.0], [0.0, 1.0]])                    # 4.74
     qd = np.array([u, th])                                             # 4.75
+    v_prev = np.array([vx, vy, w])
     v = np.array([vx + u * c, vy + u * s, w + th])                     # 4.76
-    kap = np.array([-(w * u * s - vy * th), w * u * c - vx * th, 0.0])  # 4.77
+    np.testing.assert_allclose(v_prev + S @ qd, v, atol=1e-12)
+    kap_printed = np.array([-(w * u * s - vy * th), w * u * c - vx * th, 0.0])    # 4.77 as printed
+    kap_hand = w * u * np.array([-s, c, 0.0]) + th * np.array([vy + u * s, -(vx + u * c), 0.0])
+    np.testing.assert_allclose(kap_hand, kap_printed + u * th * np.array([s, -c, 0.0]), atol=1e-12)
+    np.testing.assert_allclose(kappa(v_prev, S, qd), kap_hand, atol=1e-12)
+    np.testing.assert_allclose(kappa(v, S, qd), kap_hand, atol=1e-12)   # body velocity: same κ
+    if u * th != 0:
+        assert np.abs(kappa(v_prev, S, qd) - kap_printed).max() > 0.1 * abs(u * th)
     W = w + th
     p = np.array([-m * (vy + u * s) * W - m * C * W ** 2, m * (vx + u * c) * W, m * C * (vx + u * c) * W])  # 4.78
-    np.testing.assert_allclose(kappa(v, S, qd), kap, atol=1e-12)
     np.testing.assert_allclose(bias_force(I458(m, k["r"], C), v), p, atol=1e-12)
 
 

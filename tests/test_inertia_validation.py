@@ -1,0 +1,79 @@
+"""Bad inertia input raises package exceptions naming the argument (conventions: Errors).
+
+References: hand-built matrices (non-symmetric, indefinite, point mass) and the
+closed form of a point mass's axis of percussion (it passes through the mass).
+"""
+import numpy as np
+import pytest
+
+import planargeo
+from planargeo.errors import InputError, SingularInertiaError
+from planargeo.inertia import Inertia, drawable_conic, percussion_axis, percussion_pole
+from planargeo.screws import inertia_matrix
+
+NONSYM = np.array([[1.0, 0.5, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
+INDEF = np.diag([1.0, 1.0, -1.0])
+
+
+@pytest.mark.parametrize("fn", [percussion_axis, percussion_pole, planargeo.percussion_axis,
+                                planargeo.percussion_pole, drawable_conic])
+def test_non_symmetric_inertia_rejected(fn):
+    with pytest.raises(InputError, match=r"^inertia must be symmetric, got asymmetry 0\.5$"):
+        fn(NONSYM, [0.0, 0.0, 1.0]) if fn is not drawable_conic else fn(NONSYM)
+
+
+@pytest.mark.parametrize("fn", [percussion_axis, planargeo.percussion_axis, drawable_conic])
+def test_indefinite_inertia_rejected_semidefinite_check(fn):
+    with pytest.raises(SingularInertiaError,
+                       match=r"^inertia must be positive semi-definite, got smallest eigenvalue -1 ") as e:
+        fn(INDEF, [0.0, 0.0, 1.0]) if fn is not drawable_conic else fn(INDEF)
+    assert e.value.cond == np.inf
+
+
+@pytest.mark.parametrize("fn", [percussion_pole, planargeo.percussion_pole])
+def test_indefinite_and_singular_inertia_rejected_by_pole(fn):
+    with pytest.raises(SingularInertiaError, match=r"^inertia must be positive definite, got smallest eigenvalue -1 "):
+        fn(INDEF, [0.0, 0.0, 1.0])
+    point_mass = inertia_matrix(2.0, [1.0, -0.5], 0.0)             # J = 0: singular, rank 2
+    with pytest.raises(SingularInertiaError, match="inertia must be positive definite") as e:
+        fn(point_mass, [0.0, 0.0, 1.0])
+    assert e.value.cond > 1e12
+
+
+def test_batch_with_one_bad_inertia_rejected():
+    I = np.stack([inertia_matrix(1.0, [0.0, 0.0], 1.0), INDEF])
+    with pytest.raises(SingularInertiaError, match="inertia must be positive semi-definite"):
+        percussion_axis(I, [0.0, 0.0, 1.0])
+
+
+def test_point_mass_axis_of_percussion_passes_through_the_mass():
+    # J = 0 is legitimate for I a: every axis of percussion passes through the mass (5.67 with ρ = 0)
+    c = np.array([1.0, -0.5])
+    I = inertia_matrix(2.0, c, 0.0)
+    for a in ([0.0, 0.0, 1.0], [3.0, 1.0, 1.0], [1.0, 0.0, 0.0]):
+        f = percussion_axis(I, a)
+        assert abs(np.array([c[1], -c[0], 1.0]) @ f) < 1e-12
+    # hand: pole at the origin, unit α: force m (velocity-rate of c) = m (-c_y, c_x) through c
+    np.testing.assert_allclose(percussion_axis(I, [0.0, 0.0, 1.0]),
+                               [2.0 * 0.5, 2.0 * 1.0, 2.0 * (1.0 * 1.0 - (-0.5) * 0.5)], atol=1e-15)
+
+
+def test_inertia_matrix_rejects_bad_mass_and_inertia():
+    with pytest.raises(InputError, match=r"^mass must be positive, got -1\.0$"):
+        inertia_matrix(-1, [0.0, 0.0], 1.0)
+    with pytest.raises(InputError, match=r"^mass must be positive, got 0\.0$"):
+        inertia_matrix(0.0, [0.0, 0.0], 1.0)
+    with pytest.raises(InputError, match=r"^mass must be positive, got -2\.0$"):
+        inertia_matrix([1.0, -2.0], [0.0, 0.0], 1.0)
+    with pytest.raises(InputError, match=r"^inertia_about_com must be non-negative, got -0\.5$"):
+        inertia_matrix(1.0, [0.0, 0.0], -0.5)
+    # J = 0 (point mass) is legitimate and positive semi-definite
+    I = inertia_matrix(3.0, [0.0, 2.0], 0.0)
+    np.testing.assert_array_equal(I, [[3.0, 0.0, -6.0], [0.0, 3.0, 0.0], [-6.0, 0.0, 12.0]])
+
+
+def test_inertia_class_still_validates():
+    with pytest.raises(SingularInertiaError, match="matrix must be positive definite"):
+        Inertia(inertia_matrix(1.0, [0.0, 0.0], 0.0))
+    with pytest.raises(InputError, match="matrix must be symmetric"):
+        Inertia(NONSYM)
