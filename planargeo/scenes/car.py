@@ -27,13 +27,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._validate import as_scalar
-from ..errors import SceneError
 from ..joints import _force_through, revolute
 from ..model import Body, Joint, Model
 from ..screws import crf, crm, inertia_matrix
 from ..subspaces import Decomposition
-from . import SceneResult, register
+from . import SceneResult, check_param, register
 
 __all__ = ["car"]
 
@@ -49,13 +47,6 @@ def _outlines(d: float, L: float, steer: float):
     rear = affinity.translate(tyre, d, 0.0)
     front = affinity.translate(affinity.rotate(tyre, steer, origin=(0, 0), use_radians=True), d, L)
     return body, rear, front
-
-
-def _positive(value, name: str) -> float:
-    v = as_scalar(value, name)
-    if not v > 0:
-        raise SceneError(f"{name} must be positive, got {v!r}")
-    return v
 
 
 @register("car")
@@ -116,13 +107,13 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
     [-1102.4, -1089.3]
     """
     params = dict(m=m, rho=rho, L=L, d=d, eps=eps, omega=omega, F_A=F_A)
-    m = _positive(m, "m")
-    rho = _positive(rho, "rho")
-    L = _positive(L, "L")
-    d = as_scalar(d, "d")
-    eps = as_scalar(eps, "eps")
-    omega = as_scalar(omega, "omega")
-    F_A = as_scalar(F_A, "F_A")
+    m = check_param("m", m, positive=True)
+    rho = check_param("rho", rho, positive=True)
+    L = check_param("L", L, positive=True)
+    d = check_param("d", d)
+    eps = check_param("eps", eps)
+    omega = check_param("omega", omega)
+    F_A = check_param("F_A", F_A)
 
     # --- model-less geometry
     icr = np.zeros(2)

@@ -31,10 +31,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..errors import SceneError
 from ..model import Body, Joint, Model
-from . import SceneResult, register
-from .two_body import _plain, positive
+from . import SceneResult, check_param, register
+from .two_body import _plain
 
 __all__ = ["horizontal_chain", "horizontal_chain_model", "effective_centre"]
 
@@ -89,13 +88,8 @@ def horizontal_chain(n: int = 4, lam: float = 2.0) -> SceneResult:
     from ..algorithms.articulated_inertia import articulated_inertia
 
     params = dict(n=n, lam=lam)
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) and not (
-            isinstance(n, float) and n.is_integer()):
-        raise SceneError(f"n must be a positive integer, got {n!r}")
-    n = int(n)
-    if n < 1:
-        raise SceneError(f"n must be a positive integer, got {n}")
-    lam = positive(lam, "lam")
+    n = check_param("n", n, "int", positive=True)
+    lam = check_param("lam", lam, positive=True)
     m, L = 1.0, 1.0
     rho = L / lam
     model = horizontal_chain_model(n, m, rho, L)

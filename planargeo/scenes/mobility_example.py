@@ -26,8 +26,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import SceneResult, register
-from .two_body import _plain, finite, positive, two_body_model
+from . import SceneResult, check_param, register
+from .two_body import _plain, two_body_model
 
 __all__ = ["mobility_example"]
 
@@ -61,14 +61,10 @@ def mobility_example(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: floa
     1.333333333333
     """
     from ..algorithms.articulated_mobility import articulated_mobility
-    from ..errors import SceneError
-
     params = dict(m=m, rho=rho, L=L, phi=phi, tau=tau)
-    m, rho, L = positive(m, "m"), positive(rho, "rho"), positive(L, "L")
-    phi = finite(phi, "phi")
-    tau = finite(tau, "tau")
-    if tau == 0:
-        raise SceneError("tau must be non-zero (a zero couple has no instant centre), got 0.0")
+    m, rho, L = (check_param(k, v, positive=True) for k, v in (("m", m), ("rho", rho), ("L", L)))
+    phi = check_param("phi", phi)
+    tau = check_param("tau", tau, nonzero=True)   # a zero couple has no instant centre
     model = two_body_model(m, rho, L)
     q = np.array([0.0, phi])
     r = articulated_mobility(model, q)

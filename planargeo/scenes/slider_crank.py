@@ -40,7 +40,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import SceneError, SingularConfigurationError
-from . import SceneResult, register
+from . import SceneResult, check_param, register
 
 __all__ = ["slider_crank", "slider_crank_model", "slider_crank_state"]
 
@@ -50,9 +50,9 @@ def slider_crank_model(m1=0.40, m2=0.15, m3=0.30, r=2.29, l=5.00, t=0.5, g=9.81)
     from ..contacts import Contact
     from ..model import Body, Joint, Model
 
-    for name, val in (("m1", m1), ("m2", m2), ("m3", m3), ("r", r), ("l", l), ("t", t)):
-        if not (np.isfinite(val) and val > 0):
-            raise SceneError(f"{name} must be positive, got {val!r}")
+    m1, m2, m3, r, l, t = (check_param(name, val, positive=True) for name, val in
+                           (("m1", m1), ("m2", m2), ("m3", m3), ("r", r), ("l", l), ("t", t)))
+    g = check_param("g", g)
     bodies = [
         Body(m1, (r / 4, 0.0), 0.1464 * m1 * r * r, name="crank"),
         Body(m2, (l / 2, 0.0), 0.0866 * m2 * l * l, name="rod"),
@@ -72,7 +72,8 @@ def slider_crank_state(psi=0.4, psidot=20.0, r=2.29, l=5.00):
     Raises
     ------
     SceneError
-        If the rod cannot reach the piston line (``l < r |cos ψ|``).
+        If the rod cannot reach the piston line (``l < r |cos ψ|``), or a
+        parameter is not finite (``r``, ``l`` not positive).
     SingularConfigurationError
         If the rod lies along the horizontal (``l = r |cos ψ|``): the loop
         closure does not determine ``θ̇``.
@@ -83,6 +84,8 @@ def slider_crank_state(psi=0.4, psidot=20.0, r=2.29, l=5.00):
     >>> np.round(qd, 4)
     array([ 20.    , -23.9343,   3.9343])
     """
+    psi, psidot = check_param("psi", psi), check_param("psidot", psidot)
+    r, l = check_param("r", r, positive=True), check_param("l", l, positive=True)
     c = -r * np.cos(psi) / l
     if abs(c) > 1.0:
         raise SceneError(
@@ -124,8 +127,8 @@ def slider_crank(psi: float = 0.4, psidot: float = 20.0, m1: float = 0.40, m2: f
     """
     from ..algorithms.loops import loop_solve
 
-    if drive not in ("free", "constant-speed"):
-        raise SceneError(f"drive must be 'free' or 'constant-speed', got {drive!r}")
+    psi, psidot = check_param("psi", psi), check_param("psidot", psidot)
+    drive = check_param("drive", drive, "choice", choices=("free", "constant-speed"))
     model = slider_crank_model(m1, m2, m3, r, l, t, g)
     q, qd = slider_crank_state(psi, psidot, r, l)
     tau = np.zeros(3)

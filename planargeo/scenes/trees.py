@@ -28,8 +28,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..errors import SceneError
-from . import SceneResult, register
+from . import SceneResult, check_param, register
 
 __all__ = ["tree", "constrained_tree", "tree_model", "FIG91_PARENTS", "FIG91_ANGLES"]
 
@@ -44,9 +43,8 @@ def tree_model(mass=1.0, length=1.0, g=9.81, contacts=()):
     """The nine-link tree of Fig 9.1 (optionally with contacts)."""
     from ..model import Body, Joint, Model
 
-    for name, val in (("mass", mass), ("length", length)):
-        if not (np.isfinite(val) and val > 0):
-            raise SceneError(f"{name} must be positive, got {val!r}")
+    mass, length = check_param("mass", mass, positive=True), check_param("length", length, positive=True)
+    g = check_param("g", g)
     L = float(length)
     bodies = [Body(mass, (L / 2, 0.0), mass * L * L / 12, name=f"body{i + 1}") for i in range(9)]
     joints = [Joint("revolute", (0.0 if p < 0 else L, 0.0, 0.0), name=f"joint{i + 1}")
@@ -68,6 +66,7 @@ def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float =
     """The open tree of Fig 9.1 in the default pose, joint speeds ``speed × pattern``, no torques."""
     from ..algorithms.stacked import adjacency, direct_accelerations, stacked_solve, tree_mobilities, trunk
 
+    speed = check_param("speed", speed)
     model = tree_model(mass, length, g)
     q = _default_q()
     qd = speed * _QD_PATTERN
@@ -97,7 +96,9 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
     from ..contacts import Contact, contact_matrix, stacked_contact_spaces
     from ..kinematics import kinematics
 
-    L = float(length)
+    mass, length = check_param("mass", mass, positive=True), check_param("length", length, positive=True)
+    g, speed = check_param("g", g), check_param("speed", speed)
+    L = length
     contacts = (Contact("pin", 3, 6, (L, 0.0), (L, 0.0), name="4-7"),
                 Contact("pin", 7, 8, (L, 0.0), (L, 0.0), name="8-9"))
     model = tree_model(mass, length, g, contacts)

@@ -21,23 +21,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._validate import as_scalar
-from ..errors import SceneError
 from ..model import Body, Joint, Model
-from . import SceneResult, register
+from . import SceneResult, check_param, register
 
 __all__ = ["two_body", "positive"]
 
 
 def positive(value, name: str) -> float:
-    """``value`` as a float; :class:`SceneError` unless finite and > 0."""
-    try:
-        v = as_scalar(value, name)
-    except Exception as exc:  # InputError / ShapeError from validation
-        raise SceneError(str(exc)) from None
-    if not v > 0:
-        raise SceneError(f"{name} must be positive, got {v!r}")
-    return v
+    """``value`` as a float; :class:`SceneError` unless finite and > 0 (:func:`check_param`)."""
+    return check_param(name, value, positive=True)
 
 
 def _plain(x) -> list:
@@ -46,11 +38,8 @@ def _plain(x) -> list:
 
 
 def finite(value, name: str) -> float:
-    """``value`` as a finite float, else :class:`SceneError`."""
-    try:
-        return as_scalar(value, name)
-    except Exception as exc:
-        raise SceneError(str(exc)) from None
+    """``value`` as a finite float, else :class:`SceneError` (:func:`check_param`)."""
+    return check_param(name, value)
 
 
 def two_body_model(m: float, rho: float, L: float) -> Model:
