@@ -124,7 +124,9 @@ def radius_of_gyration(inertia) -> np.ndarray:
 def mobility(inertia) -> np.ndarray:
     """Mobility ``I⁻¹`` (the dual conic; thesis 8.3.5), computed with ``solve``.
 
-    Raises :class:`~planargeo.errors.SingularInertiaError` for a singular inertia.
+    Raises :class:`~planargeo.errors.SingularInertiaError` for a singular or
+    indefinite inertia (carrying ``.cond``), :class:`~planargeo.errors.InputError` for a
+    non-symmetric one.
 
     Examples
     --------
@@ -133,7 +135,7 @@ def mobility(inertia) -> np.ndarray:
            [0. , 0.5, 0. ],
            [0. , 0. , 2. ]])
     """
-    I = _mat(inertia)
+    I = _pd(inertia)
     return _solve(I, np.broadcast_to(np.eye(3), I.shape))
 
 
@@ -467,7 +469,13 @@ class Inertia:
 
     @property
     def mobility(self) -> np.ndarray:
-        """Inverse inertia ``I⁻¹`` (via ``solve``)."""
+        """Inverse inertia ``I⁻¹`` (via ``solve``).
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).mobility.diagonal()
+        array([0.5, 0.5, 2. ])
+        """
         return mobility(self._matrix)
 
     def __array__(self, dtype=None, copy=None):
@@ -497,45 +505,106 @@ class Inertia:
         """The same body expressed at ``point`` (thesis 1.68: ``X_P⁻ᵀ I X_P⁻¹``).
 
         The result's ``com`` is then relative to ``point``.
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).at([1.0, 0.0])
+        Inertia(mass=2, com=(0, 0), radius_of_gyration=0.5)
         """
         return Inertia(inertia_at(self._matrix, point))
 
     def kinetic_energy(self, twist) -> np.ndarray:
-        """``½ vᵀ I v`` (thesis 1.9)."""
+        """``½ vᵀ I v`` (thesis 1.9).
+
+        Examples
+        --------
+        >>> float(Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).kinetic_energy([1.0, 0.0, 0.0]))   # ½ m u²
+        1.0
+        """
         return kinetic_energy(self._matrix, getattr(twist, "array", twist))
 
     def momentum(self, twist) -> np.ndarray:
-        """Momentum wrench ``I v`` (thesis 5.72)."""
+        """Momentum wrench ``I v`` (thesis 5.72).
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [0.0, 1.0], inertia=0.5).momentum([1.0, 0.0, 0.0])   # m u along y = 1
+        array([ 2.,  0., -2.])
+        """
         return momentum(self._matrix, getattr(twist, "array", twist))
 
     def percussion_axis_array(self, point) -> np.ndarray:
-        """:func:`percussion_axis` as an array."""
+        """:func:`percussion_axis` as an array.
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_axis_array([0.0, 0.0, 1.0])
+        array([0. , 2. , 2.5])
+        """
         return percussion_axis(self._matrix, point)
 
     def percussion_axis(self, point):
-        """Axis of percussion of ``point`` as a :class:`planargeo.geometry.Line` (thesis 5.67)."""
+        """Axis of percussion of ``point`` as a :class:`planargeo.geometry.Line` (thesis 5.67).
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_axis([0.0, 0.0, 1.0]).array   # x = 1.25
+        array([0. , 2. , 2.5])
+        """
         from .geometry import Line
         return Line(percussion_axis(self._matrix, point))
 
     def percussion_pole_array(self, line) -> np.ndarray:
-        """:func:`percussion_pole` as an array."""
+        """:func:`percussion_pole` as an array.
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_pole_array([0.0, 2.0, 2.5])
+        array([0., 0., 1.])
+        """
         return percussion_pole(self._matrix, line)
 
     def percussion_pole(self, line):
-        """Pole whose axis of percussion is ``line``, as a :class:`planargeo.geometry.Point`."""
+        """Pole whose axis of percussion is ``line``, as a :class:`planargeo.geometry.Point`.
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_pole([0.0, 0.0, 1.0])   # a couple: the centre
+        Point(x=1, y=0)
+        """
         from .geometry import Point
         return Point(percussion_pole(self._matrix, line))
 
     def drawable_conic_matrix(self) -> np.ndarray:
-        """:func:`drawable_conic` as an array."""
+        """:func:`drawable_conic` as an array.
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).drawable_conic_matrix()
+        array([[ 2. ,  0. ,  0. ],
+               [ 0. ,  2. ,  0. ],
+               [ 0. ,  0. , -0.5]])
+        """
         return drawable_conic(self._matrix)
 
     def drawable_conic(self):
-        """The radius-of-gyration circle as a :class:`planargeo.geometry.Conic` (thesis 10.2.3)."""
+        """The radius-of-gyration circle as a :class:`planargeo.geometry.Conic` (thesis 10.2.3).
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).drawable_conic().matrix[2, 2]   # -m ρ²
+        np.float64(-0.5)
+        """
         from .geometry import Conic
         return Conic(drawable_conic(self._matrix))
 
     def conic(self):
-        """The inertia itself as a (imaginary) :class:`planargeo.geometry.Conic` (thesis 5.4)."""
+        """The inertia itself as a (imaginary) :class:`planargeo.geometry.Conic` (thesis 5.4).
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).conic().matrix[2, 2]
+        np.float64(0.5)
+        """
         from .geometry import Conic
         return Conic(self._matrix)

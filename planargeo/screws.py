@@ -568,7 +568,13 @@ class _Screw:
     __hash__ = None
 
     def rotated(self, theta):
-        """The screw rotated by ``theta`` about the reference point (matrix :func:`rot`)."""
+        """The screw rotated by ``theta`` about the reference point (matrix :func:`rot`).
+
+        Examples
+        --------
+        >>> Twist.rotation([1.0, 0.0]).rotated(np.pi / 2).pole_xy.round(12)   # the pole turns with it
+        array([0., 1.])
+        """
         return type(self)(np.einsum("...ij,...j->...i", rot(theta), self._array))
 
 
@@ -597,13 +603,26 @@ class Twist(_Screw):
 
     @classmethod
     def rotation(cls, point, omega=1.0) -> "Twist":
-        """Rotation at rate ``omega`` (counter-clockwise positive) about ``point`` (thesis 4.10, 5.51)."""
+        """Rotation at rate ``omega`` (counter-clockwise positive) about ``point`` (thesis 4.10, 5.51).
+
+        Examples
+        --------
+        >>> Twist.rotation([1.0, 0.0], 2.0)      # ω [y, -x, 1]
+        Twist([ 0., -2.,  2.])
+        """
         w = as_array(omega, "omega")
         return cls(unit_rotation(point) * w[..., None])
 
     @classmethod
     def translation(cls, velocity) -> "Twist":
-        """Pure translation with linear velocity ``velocity = (vx, vy)`` (a point at infinity)."""
+        """Pure translation with linear velocity ``velocity = (vx, vy)`` (a point at infinity).
+
+        Examples
+        --------
+        >>> t = Twist.translation([0.0, 3.0])
+        >>> t, bool(t.is_translation)
+        (Twist([0., 3., 0.]), True)
+        """
         u = as_xy(velocity, "velocity")
         return cls(np.concatenate([u, np.zeros(u.shape[:-1] + (1,))], axis=-1))
 
@@ -631,7 +650,13 @@ class Twist(_Screw):
 
     @property
     def pole(self):
-        """The pole as a :class:`planargeo.geometry.Point` (the array itself, thesis 5.51)."""
+        """The pole as a :class:`planargeo.geometry.Point` (the array itself, thesis 5.51).
+
+        Examples
+        --------
+        >>> Twist.rotation([1.0, 2.0], 3.0).pole
+        Point(x=1, y=2)
+        """
         if self._array.ndim != 1:
             from .errors import ShapeError
             raise ShapeError(f"twist must be a single (3,) twist for .pole, got shape {self._array.shape}")
@@ -642,15 +667,33 @@ class Twist(_Screw):
         return Point(self._array)
 
     def at(self, point) -> "Twist":
-        """The same motion expressed at ``point``: ``X_P v`` (thesis 4.8)."""
+        """The same motion expressed at ``point``: ``X_P v`` (thesis 4.8).
+
+        Examples
+        --------
+        >>> Twist.rotation([0.0, 0.0], 1.0).at([2.0, 0.0])   # the point (2, 0) moves up at 2
+        Twist([0., 2., 1.])
+        """
         return Twist(np.einsum("...ij,...j->...i", X_P(point), self._array))
 
     def power(self, wrench) -> np.ndarray:
-        """Power ``vᵀf`` (thesis 5.73)."""
+        """Power ``vᵀf`` (thesis 5.73).
+
+        Examples
+        --------
+        >>> float(Twist.translation([2.0, 0.0]).power(Wrench.force([0.0, 5.0], [3.0, 0.0])))   # 2 · 3
+        6.0
+        """
         return power(self._array, _wrench_array(wrench))
 
     def reciprocal(self, wrench, rtol: float = 1e-12) -> np.ndarray:
-        """True where ``wrench`` does no power on this twist (pole on the line)."""
+        """True where ``wrench`` does no power on this twist (pole on the line).
+
+        Examples
+        --------
+        >>> bool(Twist.rotation([1.0, 1.0]).reciprocal(Wrench.force([1.0, 0.0], [0.0, 1.0])))  # line x = 1
+        True
+        """
         return reciprocal(self._array, _wrench_array(wrench), rtol)
 
     def __matmul__(self, other):
@@ -688,6 +731,11 @@ class Wrench(_Screw):
         """Pure force ``force = (fx, fy)`` acting along the line through ``point``.
 
         The moment at the origin is ``x fy - y fx`` (so that 4.27 holds at ``point``).
+
+        Examples
+        --------
+        >>> Wrench.force([2.0, 0.0], [0.0, 1.0])     # upward force along x = 2: moment 2 at the origin
+        Wrench([0., 1., 2.])
         """
         p = as_xy(point, "point")
         f = as_xy(force, "force")
@@ -697,7 +745,14 @@ class Wrench(_Screw):
 
     @classmethod
     def couple(cls, tau) -> "Wrench":
-        """Pure couple of moment ``tau`` (counter-clockwise positive): the line at infinity."""
+        """Pure couple of moment ``tau`` (counter-clockwise positive): the line at infinity.
+
+        Examples
+        --------
+        >>> c = Wrench.couple(-2.0)
+        >>> c, bool(c.is_couple), float(c.magnitude), float(c.moment)
+        (Wrench([ 0.,  0., -2.]), True, 0.0, -2.0)
+        """
         t = as_array(tau, "tau")
         z = np.zeros(t.shape)
         return cls(np.stack([z, z, t], axis=-1))
@@ -739,7 +794,13 @@ class Wrench(_Screw):
 
     @property
     def line(self):
-        """The line of action (polar) as a :class:`planargeo.geometry.Line` (thesis 5.56)."""
+        """The line of action (polar) as a :class:`planargeo.geometry.Line` (thesis 5.56).
+
+        Examples
+        --------
+        >>> Wrench.force([2.0, 0.0], [0.0, 1.0]).line.array
+        array([0., 1., 2.])
+        """
         if self._array.ndim != 1:
             from .errors import ShapeError
             raise ShapeError(f"wrench must be a single (3,) wrench for .line, got shape {self._array.shape}")
@@ -752,15 +813,33 @@ class Wrench(_Screw):
     polar = line
 
     def at(self, point) -> "Wrench":
-        """The same load expressed at ``point``: ``X_P⁻ᵀ f`` (thesis 4.24, 4.26)."""
+        """The same load expressed at ``point``: ``X_P⁻ᵀ f`` (thesis 4.24, 4.26).
+
+        Examples
+        --------
+        >>> Wrench.force([2.0, 0.0], [0.0, 1.0]).at([2.0, 0.0])   # no moment about a point of the line
+        Wrench([0., 1., 0.])
+        """
         return Wrench(np.einsum("...ij,...j->...i", X_P_inv_T(point), self._array))
 
     def power(self, twist) -> np.ndarray:
-        """Power ``vᵀf`` (thesis 5.73)."""
+        """Power ``vᵀf`` (thesis 5.73).
+
+        Examples
+        --------
+        >>> float(Wrench.couple(2.0).power(Twist.rotation([5.0, 5.0], 3.0)))   # τ ω
+        6.0
+        """
         return power(_twist_array(twist), self._array)
 
     def reciprocal(self, twist, rtol: float = 1e-12) -> np.ndarray:
-        """True where this wrench does no power on ``twist``."""
+        """True where this wrench does no power on ``twist``.
+
+        Examples
+        --------
+        >>> bool(Wrench.couple(1.0).reciprocal(Twist.translation([1.0, 0.0])))   # a couple does no work on a translation
+        True
+        """
         return reciprocal(_twist_array(twist), self._array, rtol)
 
     def __matmul__(self, other):

@@ -77,3 +77,13 @@ def test_inertia_class_still_validates():
         Inertia(inertia_matrix(1.0, [0.0, 0.0], 0.0))
     with pytest.raises(InputError, match="matrix must be symmetric"):
         Inertia(NONSYM)
+
+
+def test_mobility_rejects_indefinite_and_singular():
+    from planargeo.inertia import mobility
+    with pytest.raises(SingularInertiaError, match="inertia must be positive definite, got smallest eigenvalue -1"):
+        mobility(INDEF)
+    with pytest.raises(SingularInertiaError, match="inertia must be positive definite"):
+        mobility(inertia_matrix(1.0, [0.5, 0.0], 0.0))
+    # hand: at the centre of mass I = diag(m, m, J), so I⁻¹ = diag(1/m, 1/m, 1/J)
+    np.testing.assert_allclose(mobility(inertia_matrix(4.0, [0.0, 0.0], 0.25)), np.diag([0.25, 0.25, 4.0]))
