@@ -147,3 +147,21 @@ def test_bad_tau_shape_names_tau():
     model = random_model(2, seed=1)
     with pytest.raises(ShapeError, match="tau"):
         articulated_inertia(model, np.zeros(model.nq), None, np.zeros(model.nq + 1))
+
+
+@pytest.mark.parametrize("n, seed, tree", [(50, 0, False), (50, 1, True), (200, 2, False), (200, 3, True)])
+def test_long_chains_and_trees_match_dense_reference(n, seed, tree):
+    # issue 3: agreement with the independent dense reference up to N = 200, with a relative
+    # tolerance scaled by the conditioning of the (sub)tree's mass matrix
+    from planargeo.algorithms.crba import mass_matrix
+    from test_articulated_reference import EPS, floating_subtree
+
+    model = random_model(n, seed=seed, tree=tree)
+    q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
+    r = articulated_inertia(model, q, qd, tau, f_ext)
+    for i in (0, 1, n // 2, n - 2, n - 1):
+        A_ref, d_ref = dense_articulated(model, q, qd, tau, f_ext, i)
+        sub, q_sub, *_ = floating_subtree(model, q, qd, f_ext, i)
+        rtol = max(1e-12, 100 * EPS * np.linalg.cond(mass_matrix(sub, q_sub)))
+        assert np.linalg.norm(r.A[i] - A_ref) <= rtol * np.linalg.norm(A_ref)
+        assert np.linalg.norm(r.d[i] - d_ref) <= rtol * max(np.linalg.norm(d_ref), 1.0)

@@ -117,3 +117,21 @@ def test_branched_model_is_rejected():
     with pytest.raises(TopologyError, match="parents"):
         mobility_recursion(I, [np.array([[0.0], [0.0], [1.0]])] * 2, np.zeros((2, 3)), np.zeros((2, 3)),
                            [np.zeros(1)] * 2, parents=[-1, -1])
+
+
+@pytest.mark.parametrize("n, seed", [(50, 0), (50, 1), (200, 2)])
+def test_long_chains_match_dense_reference(n, seed):
+    # issue 3: agreement with the independent dense reference up to N = 200, with a relative
+    # tolerance scaled by the conditioning of the truncated chain's mass matrix
+    from planargeo.algorithms.crba import mass_matrix
+    from test_articulated_reference import EPS, truncated_chain
+
+    model = random_model(n, seed=seed)
+    q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
+    r = articulated_mobility(model, q, qd, tau, f_ext)
+    for i in (0, 1, n // 2, n - 2, n - 1):
+        Lam, b = dense_mobility(model, q, qd, tau, f_ext, i)
+        sub = truncated_chain(model, i)
+        rtol = max(1e-12, 100 * EPS * np.linalg.cond(mass_matrix(sub, q[:sub.nq])))
+        assert np.linalg.norm(r.Lambda_inv[i] - Lam) <= rtol * max(np.linalg.norm(Lam), 1.0)
+        assert np.linalg.norm(r.b[i] - b) <= rtol * max(np.linalg.norm(b), 1.0)

@@ -174,3 +174,34 @@ def test_motion_space_matches_model_kinematics(kind, x, y, phi):
     cols, _ = joint_axes(kind, np.array(x), np.array(y), np.array(phi), np.zeros(k))
     ref = np.stack(cols, axis=-1) if cols else np.zeros((3, 0))
     np.testing.assert_allclose(motion_space(kind, (x, y), _dir(phi)), ref, atol=1e-12)
+
+
+# --------------------------------------------------------------------------- reaction_space_of (the algorithms' basis)
+@given(kinds, coord, coord, angle)
+def test_reaction_space_of_reads_the_joint_off_s(kind, x, y, lam):
+    # the algorithms only see s (and a point of the joint): they must get the same R as the joint
+    from planargeo.joints import reaction_space_of
+
+    j = JointSpace(kind, (x, y), _dir(lam))
+    np.testing.assert_allclose(reaction_space_of(j.s, (x, y)), j.R, atol=1e-12 * (1 + abs(x) + abs(y)))
+
+
+def test_reaction_space_of_hand_values_and_errors():
+    from planargeo.joints import reaction_space_of
+
+    # revolute at (2, 3): unit forces along x and y through it (thesis 7.16)
+    np.testing.assert_array_equal(reaction_space_of([[3.0], [-2.0], [1.0]]), [[1, 0], [0, 1], [-3, 2]])
+    # prismatic along x through (2, 3): the normal force through (2, 3) and the couple (5.63)
+    np.testing.assert_array_equal(reaction_space_of([[1.0], [0.0], [0.0]], (2.0, 3.0)), [[0, 0], [1, 0], [2, 1]])
+    # pin in a slot along x at (2, 3): the normal force through the pin; columns in either order
+    s = np.array([[1.0, 3.0], [0.0, -2.0], [0.0, 1.0]])
+    np.testing.assert_array_equal(reaction_space_of(s), [[0], [1], [2]])
+    np.testing.assert_array_equal(reaction_space_of(s[:, ::-1]), [[0], [1], [2]])
+    # two translations (twin prismatic, thesis 4.79): only a couple
+    np.testing.assert_array_equal(reaction_space_of(np.eye(3)[:, :2]), [[0], [0], [1]])
+    assert reaction_space_of(np.eye(3)).shape == (3, 0)
+    np.testing.assert_array_equal(reaction_space_of(np.zeros((3, 0)), (1.0, 0.0)), [[1, 0, 0], [0, 1, 0], [0, 1, 1]])
+    with pytest.raises(errors.ShapeError, match=r"s must have shape \(3, k\) with k <= 3, got shape \(2, 1\)"):
+        reaction_space_of(np.zeros((2, 1)))
+    with pytest.raises(errors.DegenerateGeometryError, match="direction must be non-zero"):
+        reaction_space_of(np.zeros((3, 1)))

@@ -193,3 +193,68 @@ def test_batched_states_are_solved_one_by_one():
         out = fn(model, q, qd, tau, f_ext)
         assert out.shape == (2, 3, model.nq)
         np.testing.assert_allclose(out, ref, atol=1e-9 * np.abs(ref).max())
+
+
+# --------------------------------------------------------------------------- reaction components mu
+def test_mu_of_a_pendulum_is_the_pin_force_through_the_joint_by_hand():
+    # uniform rod m, L hanging from a pin at (2, 3); no joint torque.  By hand (Newton on the rod):
+    # F = m a_c - m g, with a_c the centre-of-mass acceleration.  In the basis of thesis 7.16
+    # (unit forces along x and y through the pin) mu is exactly (Fx, Fy).
+    m, L, g = 2.0, 3.0, 9.81
+    model = Model([Body(m, (L / 2, 0.0), m * L**2 / 12)], [Joint("revolute", (2.0, 3.0, 0.4))], [-1])
+    q, qd = 0.3, 1.1
+    th = 0.4 + q
+    thdd = -m * g * (L / 2) * np.cos(th) / (m * L**2 / 3)
+    ac = (L / 2) * np.array([-np.sin(th) * thdd - np.cos(th) * qd**2, np.cos(th) * thdd - np.sin(th) * qd**2])
+    F = m * ac - m * np.array([0.0, -g])
+    ws = projective_workspace(model, [q], [qd], [0.0])
+    assert ws.qdd[0] == pytest.approx(thdd, rel=1e-12)
+    np.testing.assert_allclose(ws.R[0], [[1.0, 0.0], [0.0, 1.0], [-3.0, 2.0]])
+    np.testing.assert_allclose(ws.mu[0], F, rtol=1e-12)
+    # the reaction wrench R mu is a line through the pin (incidence, 5.69)
+    assert np.array([3.0, -2.0, 1.0]) @ (ws.R[0] @ ws.mu[0]) == pytest.approx(0.0, abs=1e-12)
+
+
+def test_mu_of_a_slider_is_the_normal_force_through_the_slider_and_a_couple_by_hand():
+    # a block (m, com offset c in its frame) sliding along x on a slide through (2, 3), gravity down,
+    # pushed by Q: the slide holds it with N = m g along +y and a couple balancing the offset weight.
+    # Basis 5.63 at the slider's position (2 + q, 3): [unit force along +y through it, unit couple].
+    m, cx, Q, q = 1.5, 0.4, 0.7, 0.25
+    model = Model([Body(m, (cx, 0.0), 0.2)], [Joint("prismatic", (2.0, 3.0, 0.0))], [-1])
+    ws = projective_workspace(model, [q], [0.0], [Q])
+    x0 = 2.0 + q
+    np.testing.assert_allclose(ws.R[0], [[0.0, 0.0], [1.0, 0.0], [x0, 1.0]])
+    # moments about the slider point: couple C + (weight at x0 + cx) = 0 -> C = m g cx; the thrust Q
+    # acts along the slide (through the com line y = 3, no moment about (x0, 3)).
+    assert ws.qdd[0] == pytest.approx(Q / m, rel=1e-12)
+    f_hand = np.array([Q, m * 9.81, 0.0])
+    f_hand[2] = x0 * f_hand[1] - 3.0 * f_hand[0] + m * 9.81 * cx      # moment at the origin
+    np.testing.assert_allclose(ws.f[0], f_hand, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(ws.mu[0], ws.U[0].T @ f_hand, rtol=1e-12)
+    # with no active part along the normal/couple (T Q is a pure push along x through the com):
+    # f - T Q = R mu is the normal force m g through the slider plus the couple m g cx
+    np.testing.assert_allclose(ws.R[0] @ ws.mu[0], f_hand - ws.T[0] @ [Q], atol=1e-12)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_mu_is_U_transpose_of_the_rnea_joint_force_in_the_joints_basis(seed):
+    from planargeo.algorithms.rnea import inverse_dynamics
+    from planargeo.joints import reaction_space as joint_R
+    from planargeo.kinematics import kinematics
+
+    model = random_model(6, seed=seed, kinds=ALL_KINDS, tree=bool(seed % 2))
+    q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
+    qdd = forward_dynamics_crba(model, q, qd, tau, f_ext)
+    _, f_rnea = inverse_dynamics(model, q, qd, qdd, f_ext, return_forces=True)   # independent f_i
+    ws = projective_workspace(model, q, qd, tau, f_ext)
+    d = kinematics(model, q, qd)
+    for i, joint in enumerate(model.joints):
+        # the joint's frame: origin d.origin[i], x axis at the parent's angle + placement angle
+        j = model.parents[i]
+        phi = (d.pose[j, 2] if j >= 0 else 0.0) + joint.placement[2]
+        point = d.pose[i, :2]
+        R_ref = joint_R(joint.kind, point, (np.cos(phi), np.sin(phi)))
+        np.testing.assert_allclose(ws.R[i], R_ref, atol=1e-12 * (1 + np.abs(R_ref).max(initial=0.0)))
+        scale = 1 + np.abs(f_rnea[i]).max()
+        np.testing.assert_allclose(ws.f[i], f_rnea[i], atol=1e-8 * scale)
+        np.testing.assert_allclose(ws.mu[i], ws.U[i].T @ f_rnea[i], atol=1e-8 * scale * (1 + np.abs(ws.U[i]).max(initial=0.0)))

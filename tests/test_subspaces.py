@@ -118,19 +118,30 @@ def test_constrained_body_at_rest_against_lagrange_multipliers(j, I, vals):
     Q = (sᵀIs) ψ (6.67), and since I s ψ = T Q the joint reaction cancels exactly the
     reactive part of f = T Q + R μ: λ = -μ (6.73, 6.84–6.88).
     """
-    if j.dof == 3:                    # nothing holds the body: KKT is just I a = f
-        return
     f = np.array(vals)
-    a_ref, lam_ref = _kkt(I, j.R, f)
+    a_ref, lam_ref = _kkt(I, j.R, f)          # plane joint (R empty): the free body, I a = f
+    if j.dof == 3:
+        np.testing.assert_allclose(a_ref, np.linalg.solve(I, f), atol=1e-12 * np.linalg.cond(I) * (1 + _mx(f)))
+    # the joint rate of the KKT motion, read off a = s ψ by least squares (no T involved)
+    psi_ref = np.linalg.lstsq(j.s, a_ref, rcond=None)[0] if j.dof else np.zeros(0)
     dec = Decomposition.from_joint(j, I)
     tol = 1e-11 * np.linalg.cond(I) * (1 + _mx(f)) * (1 + _mx(j.s)) ** 2
-    np.testing.assert_allclose(effective_mobility(j.s, I) @ f if j.dof else np.zeros(3), a_ref, atol=tol)
+    np.testing.assert_allclose(effective_mobility(j.s, I) @ f, a_ref, atol=tol)          # (6.93)
     Q, mu = dec.split_wrench(f)
     psi, gamma = dec.split_twist(a_ref)
     np.testing.assert_allclose(gamma, 0.0, atol=tol)                                    # a = s q̈ (6.72)
-    if j.dof:
-        np.testing.assert_allclose(joint_space_inertia(j.s, I) @ psi, Q, atol=tol)     # (6.67)
+    np.testing.assert_allclose(psi, psi_ref, atol=tol)
+    np.testing.assert_allclose(joint_space_inertia(j.s, I) @ psi_ref, Q, atol=tol * (1 + _mx(I)))   # (6.67)
     np.testing.assert_allclose(lam_ref, -mu, atol=tol * (1 + _mx(I)))          # reaction = -Rμ part
+    # the projection functions (6.61, 6.62) against the same KKT reference, not against the class
+    T = percussion_space(j.s, I)
+    U = reactive_acceleration_space(j.R, I)
+    np.testing.assert_allclose(active_force(j.s, f), joint_space_inertia(j.s, I) @ psi_ref, atol=tol * (1 + _mx(I)))
+    np.testing.assert_allclose(reaction_force(U, f), -lam_ref, atol=tol * (1 + _mx(I)))
+    np.testing.assert_allclose(active_acceleration(T, a_ref), psi_ref, atol=tol)
+    np.testing.assert_allclose(reactive_acceleration(j.R, a_ref), 0.0, atol=tol)
+    # the inverse-free U (with s) is the same U
+    np.testing.assert_allclose(reactive_acceleration_space(j.R, I, s=j.s), U, atol=tol * (1 + _mx(U)))
 
 
 @given(joints(), body_inertias())
@@ -303,3 +314,22 @@ def test_projective_equations_6_106_to_6_110_against_dense_solve(j, A, vals):
     np.testing.assert_allclose(f, A @ a + d, atol=tol)
     np.testing.assert_allclose(T.T @ (a - base), qdd_ref, atol=tol)                # (6.110)
     np.testing.assert_allclose(reaction_force(U, f_ref), mu, atol=tol)            # (6.61b)
+
+
+def test_inverse_free_U_handles_a_point_mass_and_needs_A_or_T():
+    # unit point mass at (1, 0) pinned at the origin: A is singular, U by hand (thesis 7.40, ρ = 0):
+    # U = [[1, 0], [0, 1], [0, -1]] (the reactive accelerations leave the mass at (1, 0) at rest... along y)
+    j = revolute((0.0, 0.0))
+    I = inertia_matrix(1.0, [1.0, 0.0], 0.0)
+    U = reactive_acceleration_space(j.R, I, s=j.s)
+    np.testing.assert_allclose(U, [[1.0, 0.0], [0.0, 1.0], [0.0, -1.0]], atol=1e-15)
+    with pytest.raises(errors.SingularInertiaError, match="A must be invertible"):
+        reactive_acceleration_space(j.R, I)
+    with pytest.raises(errors.InputError, match="A must be given unless s and T are"):
+        reactive_acceleration_space(j.R, s=j.s)
+    with pytest.raises(errors.InputError, match="T must be given together with s"):
+        reactive_acceleration_space(j.R, I, T=np.zeros((3, 1)))
+    T = percussion_space(j.s, I)
+    np.testing.assert_allclose(reactive_acceleration_space(j.R, s=j.s, T=T), U, atol=1e-15)
+    with pytest.raises(errors.SingularConfigurationError, match="sᵀAs of joint 7 is singular"):
+        percussion_space(revolute((1.0, 0.0)).s, I, what="sᵀAs of joint 7")
