@@ -305,6 +305,330 @@ def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.
     return qdd
 
 
+
+# -- single state: a compiled plan ---------------------------------------------
+#
+# One state of a model whose joints are all revolute, prismatic or fixed runs
+# the same recursion (3.35-3.42) as straight-line Python on floats, generated
+# once per topology ("plan") and compiled: no loops, no containers, no numpy
+# calls, only local-variable float arithmetic.  Two reformulations make it
+# cheaper without changing the algorithm:
+#
+# * Every quantity of body i (twist, bias acceleration, articulated inertia and
+#   bias force, acceleration) is taken at the body's own origin o_i (world-
+#   aligned axes) instead of the world origin: a constant change of reference
+#   point, under which the spatial algebra of 3.6 is unchanged (twists
+#   transform as ``(v + w × r, w)``, wrenches as ``(F, n + r × F)``, inertias
+#   congruently).  A revolute joint is then ``s = [0, 0, 1]``: ``U = A s`` is
+#   a column of ``A``, ``D = A_22`` and ``(1 - s s⁺)ᵀ A`` keeps only the 2×2
+#   force block, so each step costs a few flops.
+# * Gravity enters as the base acceleration ``a_ground = -g`` (Featherstone's
+#   device): the gravity wrench of 3.34 on body i equals ``I_i (-g)``, so both
+#   give the same ``q̈``.
+#
+# Constants equal to zero (placements along x, coms on the body's x axis, a
+# vertical gravity...) are folded out of the generated code; the zero pattern is
+# part of the plan's key, the nonzero values are passed in at call time.
+_PLAN_KINDS = {"revolute": 1, "prismatic": 2, "fixed": 0}
+_PLANS: dict = {}
+#: single states of models with more bodies than this use the loop of :func:`_aba_components`
+MAX_PLAN_BODIES = 400
+_cos, _sin = math.cos, math.sin
+
+
+def _singular_float(D, scale, i):
+    raise SingularConfigurationError(
+        f"joint {i}: s^T A s is singular (the articulated inertia does not resist the joint motion)",
+        scale / D if D > 0 else math.inf)
+
+
+def _plan_source(kinds, parents, zero, with_fext):
+    """Python source of thesis 3.6 for one state of one topology (see the comment above).
+
+    ``kinds``: 1 revolute, 2 prismatic, 0 fixed; ``zero``: which of the
+    constants (see :func:`_plan_constants`) vanish.  Values are tracked as
+    "signed atoms" ``(negated, name)`` or ``None`` for an exact zero, so zero
+    terms disappear and single atoms are aliased rather than copied.
+    """
+    N = len(kinds)
+    nchild = [0] * N
+    for p in parents:
+        if p >= 0:
+            nchild[p] += 1
+    lines = []
+    emit = lines.append
+    ONE = (False, "1")
+
+    def neg(a):
+        return None if a is None else (not a[0], a[1])
+
+    def text(a):
+        return "0.0" if a is None else ("-" if a[0] else "") + a[1]
+
+    def expr(terms):
+        # sum of products of signed atoms -> (source, None) or (None, single atom or None)
+        parts = []
+        for factors in terms:
+            if any(f is None for f in factors):
+                continue
+            sign, names = False, []
+            for f in factors:
+                sign ^= f[0]
+                if f[1] != "1":
+                    names.append(f[1])
+            parts.append((sign, "*".join(names) if names else "1.0"))
+        if not parts:
+            return None, None
+        if len(parts) == 1 and parts[0][1] != "1.0" and "*" not in parts[0][1]:
+            return None, parts[0]
+        parts.sort(key=lambda t: t[0])
+        src = ("-" if parts[0][0] else "") + parts[0][1]
+        for sign, part in parts[1:]:
+            src += (" - " if sign else " + ") + part
+        return src, None
+
+    def let(name, terms):
+        src, atom = expr(terms)
+        if src is None:
+            return atom
+        emit(f"    {name} = {src}")
+        return (False, name)
+
+    def let_scaled(name, scale, terms):
+        # name = scale * (sum of terms)
+        src, atom = expr(terms)
+        if src is None or scale is None:
+            return let(name, [[scale, atom]])
+        emit(f"    {name} = {text(scale)}*({src})")
+        return (False, name)
+
+    names = []
+
+    def const(name, k):
+        if zero[k]:
+            return None
+        names.append(name)
+        return (False, name)
+
+    gx, gy = const("gx", 0), const("gy", 1)
+    cst = []
+    for i in range(N):
+        cst.append([const(f"{c}{i}", 2 + 7 * i + k)
+                    for k, c in enumerate(("px", "py", "pth", "m", "hx", "hy", "Jo"))])
+    emit("def aba_plan(C, q, qd, tau, fe):")
+    if names:
+        emit("    " + ", ".join(names) + ", = C")
+    nq = sum(1 for k in kinds if k)
+    if nq:
+        for v in ("q", "qd", "tau"):
+            emit("    " + ", ".join(f"{v}{k}" for k in range(nq)) + f", = {v}")
+    if with_fext:
+        emit("    " + ", ".join(f"F{c}_{i}" for i in range(N) for c in "xyn") + ", = fe")
+    ground = dict(c=ONE, s=None, th=None, v=(None, None, None), o=(None, None))
+    body = []
+    k = 0
+    # 1-2. poses, twists, bias accelerations and bias forces, base to tip (3.32-3.34)
+    for i in range(N):
+        kind, p = kinds[i], parents[i]
+        P = ground if p < 0 else body[p]
+        px, py, pth, m, mcbx, mcby, Jo = cst[i]
+        cp, sp = P["c"], P["s"]
+        emit(f"    # body {i}: {('fixed', 'revolute', 'prismatic')[kind]} joint on {'the ground' if p < 0 else p}")
+        rx = let(f"rx{i}", [[cp, px], [neg(sp), py]])      # joint frame origin - o_parent
+        ry = let(f"ry{i}", [[sp, px], [cp, py]])
+        phi = let(f"phi{i}", [[P["th"]], [pth]])
+        B = {}
+        if kind:
+            qi, qdi = (False, f"q{k}"), (False, f"qd{k}")
+            B["tau"] = (False, f"tau{k}")
+            k += 1
+        if kind == 1:
+            th = let(f"th{i}", [[phi], [qi]])
+        else:
+            th = phi
+        if th is None:
+            c, s = ONE, None
+        else:
+            emit(f"    c{i} = _cos({text(th)}); s{i} = _sin({text(th)})")
+            c, s = (False, f"c{i}"), (False, f"s{i}")
+        if kind == 2:   # the body origin slides by q along the joint axis e = (c, s)
+            rx = let(f"rx{i}", [[rx], [qi, c]])
+            ry = let(f"ry{i}", [[ry], [qi, s]])
+        B.update(c=c, s=s, th=th, r=(rx, ry), kind=kind, p=p)
+        vxp, vyp, wp = P["v"]
+        lx = let(f"lx{i}", [[vxp], [neg(wp), ry]])          # parent's velocity at o_i
+        ly = let(f"ly{i}", [[vyp], [wp, rx]])
+        if kind == 1:   # s = [0, 0, 1] at o_i; kappa = v_parent x s qd (2.19)
+            vx, vy, w = lx, ly, let(f"w{i}", [[wp], [qdi]])
+            kap = (let(f"k0_{i}", [[ly, qdi]]), let(f"k1_{i}", [[neg(lx), qdi]]))
+        elif kind == 2:   # s = [c, s, 0]
+            vx, vy, w = let(f"vx{i}", [[lx], [c, qdi]]), let(f"vy{i}", [[ly], [s, qdi]]), wp
+            wq = let(f"wq{i}", [[wp, qdi]])
+            kap = (let(f"k0_{i}", [[neg(wq), s]]), let(f"k1_{i}", [[wq, c]]))
+        else:
+            vx, vy, w, kap = lx, ly, wp, (None, None)
+        B.update(v=(vx, vy, w), kap=kap)
+        if with_fext:
+            ox = let(f"ox{i}", [[P["o"][0]], [rx]])
+            oy = let(f"oy{i}", [[P["o"][1]], [ry]])
+            B["o"] = (ox, oy)
+        # rigid inertia at o_i (4.58): m, m (c_i - o_i), J + m |com in body|^2
+        mcx = let(f"mcx{i}", [[c, mcbx], [neg(s), mcby]])
+        mcy = let(f"mcy{i}", [[s, mcbx], [c, mcby]])
+        f0 = let(f"f0_{i}", [[m, vx], [neg(mcy), w]])
+        f1 = let(f"f1_{i}", [[m, vy], [mcx, w]])
+        # bias force p = -(v x)^T I v - g_ext (3.11, 3.34; gravity is the base acceleration)
+        if with_fext:
+            Fx, Fy, Fn = (False, f"Fx_{i}"), (False, f"Fy_{i}"), (False, f"Fn_{i}")
+            e = ([neg(Fx)], [neg(Fy)], [neg(Fn)], [ox, Fy], [neg(oy), Fx])
+        else:
+            e = ([None],) * 5
+        B["A"] = [m, None, neg(mcy), m, mcx, Jo]
+        B["d"] = [let(f"d0_{i}", [[neg(w), f1], e[0]]),
+                  let(f"d1_{i}", [[w, f0], e[1]]),
+                  let(f"d2_{i}", [[vx, f1], [neg(vy), f0], e[2], e[3], e[4]])]
+        body.append(B)
+    # 3. articulated inertias and bias forces, tip to base (3.35-3.39)
+    IDX = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))
+    for i in range(N - 1, -1, -1):
+        B = body[i]
+        kind, p = B["kind"], B["p"]
+        A, d, (k0, k1) = B["A"], B["d"], B["kap"]
+        a00, a01, a02, a11, a12, a22 = A
+        emit(f"    # body {i}, inwards")
+        tr, _ = expr([[a00], [a11], [a22]])
+        tr = tr or text(expr([[a00], [a11], [a22]])[1])
+        if kind == 1:   # D = A_22, U = A[:, 2]
+            emit(f"    if not {text(a22)} > SINGULAR_RTOL * ({tr}):")
+            emit(f"        _singular_float({text(a22)}, {tr}, {i})")
+            emit(f"    Di{i} = 1.0 / {text(a22)}")
+            Di = (False, f"Di{i}")
+            W0, W1 = let(f"W0_{i}", [[a02, Di]]), let(f"W1_{i}", [[a12, Di]])
+            uu = let(f"u{i}", [[B["tau"]], [neg(d[2])]])
+            B["acc"] = (a02, a12, Di, uu)
+            if p < 0:
+                continue
+            b = [let(f"b00_{i}", [[a00], [neg(W0), a02]]), let(f"b01_{i}", [[a01], [neg(W0), a12]]), None,
+                 let(f"b11_{i}", [[a11], [neg(W1), a12]]), None, None]
+            e = [let(f"e0_{i}", [[b[0], k0], [b[1], k1], [d[0]], [W0, uu]]),
+                 let(f"e1_{i}", [[b[1], k0], [b[3], k1], [d[1]], [W1, uu]]),
+                 B["tau"]]
+        else:
+            c = [let(f"c{j}_{i}", [[A[IDX.index(tuple(sorted((j, 0))))], k0],
+                                   [A[IDX.index(tuple(sorted((j, 1))))], k1], [d[j]]]) for j in range(3)]
+            if kind == 2:   # s = [c, s, 0]
+                cs, ss = B["c"], B["s"]
+                U = [let(f"U{j}_{i}", [[A[IDX.index(tuple(sorted((j, 0))))], cs],
+                                       [A[IDX.index(tuple(sorted((j, 1))))], ss]]) for j in range(3)]
+                D = let(f"D{i}", [[U[0], cs], [U[1], ss]])
+                emit(f"    if not {text(D)} > SINGULAR_RTOL * ({tr}):")
+                emit(f"        _singular_float({text(D)}, {tr}, {i})")
+                emit(f"    Di{i} = 1.0 / {text(D)}")
+                Di = (False, f"Di{i}")
+                uu = let(f"u{i}", [[B["tau"]], [neg(cs), c[0]], [neg(ss), c[1]]])
+                B["acc"] = (U, Di, uu)
+                if p < 0:
+                    continue
+                W = [let(f"W{j}_{i}", [[U[j], Di]]) for j in range(3)]
+                b = [let(f"b{j}{l}_{i}", [[A[n]], [neg(W[j]), U[l]]]) for n, (j, l) in enumerate(IDX)]
+                e = [let(f"e{j}_{i}", [[c[j]], [W[j], uu]]) for j in range(3)]
+            else:
+                if p < 0:
+                    continue
+                b, e = A, c
+        # move (b, e) from o_i to o_parent: n' = n + r x F; inertia congruently
+        rx, ry = B["r"]
+        P02 = let(f"P02_{i}", [[b[2]], [neg(ry), b[0]], [rx, b[1]]])
+        P12 = let(f"P12_{i}", [[b[4]], [neg(ry), b[1]], [rx, b[3]]])
+        P22 = let(f"P22_{i}", [[b[5]], [neg(ry), b[2]], [neg(ry), P02], [rx, b[4]], [rx, P12]])
+        E2 = let(f"E2_{i}", [[e[2]], [rx, e[1]], [neg(ry), e[0]]])
+        Q = body[p]
+        for n, x in enumerate((b[0], b[1], P02, b[3], P12, P22)):
+            Q["A"][n] = let(f"A{IDX[n][0]}{IDX[n][1]}_{p}", [[Q["A"][n]], [x]])
+        for j, x in enumerate((e[0], e[1], E2)):
+            Q["d"][j] = let(f"d{j}_{p}", [[Q["d"][j]], [x]])
+    # 4. accelerations, base to tip (3.40-3.42); a_ground = -g
+    out = []
+    for i in range(N):
+        B = body[i]
+        kind, p = B["kind"], B["p"]
+        a0p, a1p, a2p = (neg(gx), neg(gy), None) if p < 0 else body[p]["a"]
+        rx, ry = B["r"]
+        k0, k1 = B["kap"]
+        if kind == 1:   # a0, a1: the parent's acceleration at o_i plus kappa
+            a0 = let(f"a0_{i}", [[a0p], [neg(a2p), ry], [k0]])
+            a1 = let(f"a1_{i}", [[a1p], [a2p, rx], [k1]])
+            a02, a12, Di, uu = B["acc"]
+            qdd = let_scaled(f"qdd{i}", Di, [[uu], [neg(a02), a0], [neg(a12), a1]])
+            qdd = let(f"qdd{i}", [[qdd], [neg(a2p)]])
+            out.append(qdd)
+            if nchild[i]:
+                B["a"] = (a0, a1, let(f"a2_{i}", [[a2p], [qdd]]))
+        elif kind == 2:   # a0, a1: the parent's acceleration at o_i
+            a0 = let(f"a0p_{i}", [[a0p], [neg(a2p), ry]])
+            a1 = let(f"a1p_{i}", [[a1p], [a2p, rx]])
+            U, Di, uu = B["acc"]
+            qdd = let_scaled(f"qdd{i}", Di, [[uu], [neg(U[0]), a0], [neg(U[1]), a1], [neg(U[2]), a2p]])
+            out.append(qdd)
+            if nchild[i]:
+                B["a"] = (let(f"a0_{i}", [[a0], [B["c"], qdd], [k0]]),
+                          let(f"a1_{i}", [[a1], [B["s"], qdd], [k1]]), a2p)
+        elif nchild[i]:
+            B["a"] = (let(f"a0_{i}", [[a0p], [neg(a2p), ry]]), let(f"a1_{i}", [[a1p], [a2p, rx]]), a2p)
+    emit("    return [" + ", ".join(text(x) for x in out) + "]")
+    return "\n".join(lines) + "\n"
+
+
+def _plan_constants(model: Model):
+    """``(key, constants)`` of the compiled single-state plan, or None if a joint kind is unsupported."""
+    kinds = []
+    for j in model.joints:
+        if j.kind not in _PLAN_KINDS:
+            return None
+        kinds.append(_PLAN_KINDS[j.kind])
+    C = [float(g) for g in model.gravity]
+    for b, j in zip(model.bodies, model.joints):
+        m, (cx, cy), J = float(b.mass), b.com, float(b.inertia)
+        C += [float(x) for x in j.placement] + [m, m * cx, m * cy, J + m * (cx * cx + cy * cy)]
+    zero = tuple(c == 0.0 for c in C)
+    return (tuple(kinds), tuple(model.parents), zero), tuple(c for c in C if c != 0.0)
+
+
+def _plan(model: Model, with_fext: bool):
+    """The compiled single-state function and its constants for ``model`` (cached), or None."""
+    cache = model._arrays
+    entry = cache.get("aba_plan")
+    if entry is None:
+        entry = _plan_constants(model) if model.N <= MAX_PLAN_BODIES else None
+        entry = cache["aba_plan"] = entry or False
+    if entry is False:
+        return None
+    key, C = entry
+    fkey = key + (with_fext,)
+    fn = _PLANS.get(fkey)
+    if fn is None:
+        if len(_PLANS) >= 256:
+            _PLANS.clear()
+        src = _plan_source(*key, with_fext)
+        ns: dict = {}
+        exec(compile(src, f"<aba plan N={len(key[0])}>", "exec"), globals(), ns)
+        fn = _PLANS[fkey] = ns["aba_plan"]
+    return fn, C
+
+
+_ndarray, _F64, _array, _isfinite = np.ndarray, np.dtype(np.float64), np.array, math.isfinite
+
+
+def _single(model: Model, table, q, qd, tau, f_ext) -> np.ndarray:
+    """One validated state (float64 arrays (nq,), f_ext (N, 3) or None): the compiled plan or the float loop."""
+    plan = _plan(model, f_ext is not None)
+    if plan is None:
+        return np.array(_aba_components(model, table, q.tolist(), qd.tolist(), tau.tolist(),
+                                        None if f_ext is None else f_ext.tolist()))
+    return np.array(plan[0](plan[1], q.tolist(), qd.tolist(), tau.tolist(),
+                            None if f_ext is None else f_ext.ravel().tolist()))
+
+
 def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     """Joint accelerations by the recursive articulated-body algorithm (thesis 3.6).
 
@@ -339,21 +663,32 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     array([[-14.715],
            [  0.   ]])
     """
+    # one state as float64 vectors: a cheap check (shapes; finite iff the sum is), then the compiled plan
+    nq = model.nq
+    if (type(q) is _ndarray and type(qd) is _ndarray and type(tau) is _ndarray and q.dtype is _F64
+            and qd.dtype is _F64 and tau.dtype is _F64 and q.shape == qd.shape == tau.shape == (nq,)
+            and (f_ext is None or (type(f_ext) is _ndarray and f_ext.dtype is _F64
+                                   and f_ext.shape == (model.N, 3)))):
+        plan = _plan(model, f_ext is not None)
+        if plan is not None:
+            ql, qdl, taul = q.tolist(), qd.tolist(), tau.tolist()
+            fe = None if f_ext is None else f_ext.ravel().tolist()
+            if _isfinite(sum(ql) + sum(qdl) + sum(taul) + (0.0 if fe is None else sum(fe))):
+                return _array(plan[0](plan[1], ql, qdl, taul, fe))
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
     table = _scalar_tables(model)
     if table is None:
         return articulated_body(model, q, qd, tau, f_ext).qdd
     if shape == ():   # one state: Python floats
-        return np.array(_aba_components(model, table, q.tolist(), qd.tolist(), tau.tolist(),
-                                        None if f_ext is None else f_ext.tolist()))
+        return _single(model, table, q, qd, tau, f_ext)
     # a batch: one contiguous array per component, batch along the last axis
     nq, N = model.nq, model.N
     B = int(np.prod(shape))
     if B <= SMALL_BATCH:   # numpy's per-call overhead dominates: state by state on floats
         qb, qdb, taub = (np.broadcast_to(x, shape + (nq,)).reshape(B, nq) for x in (q, qd, tau))
         feb = None if f_ext is None else np.broadcast_to(f_ext, shape + (N, 3)).reshape(B, N, 3)
-        res = np.array([_aba_components(model, table, qb[k].tolist(), qdb[k].tolist(), taub[k].tolist(),
-                                        None if feb is None else feb[k].tolist()) for k in range(B)])
+        res = np.array([_single(model, table, qb[k], qdb[k], taub[k], None if feb is None else feb[k])
+                        for k in range(B)])
         return res.reshape(shape + (nq,))
 
     def rows(x):
