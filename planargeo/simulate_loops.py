@@ -58,7 +58,11 @@ def _cs(model, contacts):
 
 
 def closure_residual(model: Model, q, contacts=None) -> np.ndarray:
-    """Position residuals ``φ(q)`` of all contacts, concatenated (zero when every loop is closed).
+    """Position residuals ``φ(q)`` of all contacts, concatenated (thesis 9.54 in positions; zero when closed).
+
+    ``φ`` is the position-level form of the contact kinematics ``G v = z θ̇``
+    (9.54): the relative pose of the two contact frames, resolved along the
+    reaction space ``B`` (9.59-9.60), so ``φ̇ = Bᵀ G v``.
 
     Examples
     --------
@@ -75,7 +79,10 @@ def closure_residual(model: Model, q, contacts=None) -> np.ndarray:
 
 
 def closure_jacobian(model: Model, q, contacts=None) -> np.ndarray:
-    """Closure Jacobian ``J_c = B^T G J`` (``nc × nq``): ``φ̇ = J_c q̇`` on the manifold (9.54, 9.60).
+    """Closure Jacobian ``J_c = B^T G J`` (``nc × nq``): ``φ̇ = J_c q̇`` on the manifold (thesis 9.54, 9.60).
+
+    ``J`` stacks the body Jacobians (Remark 8); ``Bᵀ G J q̇ = Bᵀ z θ̇ = 0``
+    on the manifold because ``zᵀ B = 0`` (9.60).
 
     Examples
     --------
@@ -110,7 +117,11 @@ def _weighted_correction(model, q, J, rhs, free):
 
 
 def project_state(model: Model, q, qd, contacts=None, *, fixed=(), tol: float = 1e-12, max_iter: int = 25):
-    """Project ``(q, q̇)`` onto the constraint manifold (positions, then velocities).
+    """Project ``(q, q̇)`` onto the constraint manifold, positions then velocities (thesis 9.54, 9.58, 9.60).
+
+    The velocity step removes the part of ``q̇`` that violates ``Bᵀ G v = 0``
+    (9.54 with 9.60), with the kinetic-energy metric ``H`` (as 9.56-9.58 project
+    the contact velocities with the stacked inertia).
 
     Positions: Gauss-Newton ``q ← q - J_c^+ φ(q)`` until ``max |φ| < tol``.
     Velocities: mass-weighted projection onto ``J_c q̇ = 0``.  Coordinates in
@@ -142,10 +153,26 @@ def project_state(model: Model, q, qd, contacts=None, *, fixed=(), tol: float = 
 
 
 def baumgarte(model: Model, contacts=None, alpha: float = 5.0, beta: float = 5.0, *, fixed=()) -> Callable:
-    """A ``stabilize(t, q, qd, qdd)`` hook enforcing ``φ̈ + 2αφ̇ + β²φ = 0`` (Baumgarte).
+    """A ``stabilize(t, q, qd, qdd)`` hook enforcing ``φ̈ + 2αφ̇ + β²φ = 0`` (Baumgarte; thesis 9.69 stabilised).
 
-    The accelerations from the loop algorithm satisfy ``φ̈ = 0``; the hook adds
-    the mass-weighted correction ``-H^{-1} J_c^T (J_c H^{-1} J_c^T)^{-1} (2α J_c q̇ + β² φ)``.
+    The accelerations from the loop algorithm satisfy ``φ̈ = 0`` (the contact
+    acceleration condition 9.68-9.69); the hook adds the mass-weighted
+    correction ``-H^{-1} J_c^T (J_c H^{-1} J_c^T)^{-1} (2α J_c q̇ + β² φ)``.
+
+    Examples
+    --------
+    On the manifold the hook changes nothing; off it, the corrected
+    accelerations satisfy ``J_c Δq̈ = -(2α φ̇ + β² φ)``:
+
+    >>> from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
+    >>> m = slider_crank_model(); q, qd = slider_crank_state()
+    >>> hook = baumgarte(m, alpha=5.0, beta=5.0)
+    >>> bool(np.abs(hook(0.0, q, qd, np.zeros(3))).max() < 1e-9)
+    True
+    >>> q2 = q + [0.0, 1e-3, 0.0]
+    >>> dqdd = hook(0.0, q2, 0 * qd, np.zeros(3))
+    >>> bool(np.allclose(closure_jacobian(m, q2) @ dqdd, -25.0 * closure_residual(m, q2)))
+    True
     """
     cs = _cs(model, contacts)
     free = np.setdiff1d(np.arange(model.nq), np.asarray(fixed, dtype=int))
@@ -166,7 +193,12 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
                    beta: float = 5.0, prescribed=None, tol: float = 1e-12, trigger: float = 1e-10,
                    project_initial: bool = True,
                    progress: bool | None = None) -> SimulationResult:
-    """Integrate a closed-loop mechanism with stabilised loop closures.
+    """Integrate a closed-loop mechanism with stabilised loop closures (thesis 9.5, 9.65-9.75 in time).
+
+    The accelerations come from the constrained algorithm (open-loop ``u``
+    9.63, contact forces ``F = Γ(Gu - ν)`` 9.71, closed-loop ``a`` 9.73 and
+    ``q̈`` 9.75); positions and velocities are kept on the manifold by the
+    chosen ``stabilization`` (module docstring).
 
     Parameters
     ----------

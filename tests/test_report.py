@@ -38,13 +38,36 @@ def test_json_object_has_the_four_keys_and_scene_values(capsys):
     assert np.array(obj["quantities"]["A1"]).shape == (3, 3)
 
 
-def test_json_over_subprocess_matches_scene_build():
+def test_json_over_subprocess_mobility_example_closed_form():
+    """x/L = 1 + 2 eta^2 cos(phi) / (4 + 5 eta^2) (7.48, derived by hand; eta = L/rho = 2 here)."""
     r = run("mobility-example", "--set", "phi=0.3", "--set", "tau=2", "--json")
     assert r.returncode == 0, r.stderr
     obj = json.loads(r.stdout)
-    ref = scenes.build("mobility-example", phi=0.3, tau=2.0).quantities
-    assert obj["quantities"]["x_over_L"] == pytest.approx(ref["x_over_L"], rel=1e-15)
-    np.testing.assert_allclose(obj["quantities"]["Lambda2_inv"], ref["Lambda2_inv"])
+    assert obj["quantities"]["x_over_L"] == pytest.approx(1 + 8 * np.cos(0.3) / (4 + 20), rel=1e-13)
+    # a2 = -Lambda2_inv f3 with f3 = [0, 0, 2]: a rotation about (x, 0)
+    a2 = np.array(obj["quantities"]["a2"])
+    assert -a2[1] / a2[2] == pytest.approx(obj["quantities"]["x_over_L"], rel=1e-13)
+    assert a2[0] == pytest.approx(0.0, abs=1e-13 * np.abs(a2).max())
+
+
+def test_json_car_omega_dot_6_131(capsys):
+    """omega_dot = F_A sqrt(d^2 + L^2) / (m (rho^2 + d^2 + (1 - eps)^2 L^2)): drive moment over inertia at the ICR."""
+    code, out, _ = call("car", "--json", capsys=capsys)
+    assert code == 0
+    m, rho, L, d, eps, F = 1200.0, 1.2, 2.6, 8.0, 0.45, 2000.0
+    ref = F * np.hypot(d, L) / (m * (rho ** 2 + d ** 2 + (1 - eps) ** 2 * L ** 2))
+    assert json.loads(out)["quantities"]["omega_dot"] == pytest.approx(ref, rel=1e-13)
+    assert ref == pytest.approx(0.2077, abs=5e-5)
+
+
+@pytest.mark.parametrize("phi", [0.0, np.pi / 3, np.pi / 2])
+def test_json_two_body_m_x_7_20(phi, capsys):
+    """m_x / m = (8 + lambda^2 (1 + cos^2 phi)) / (lambda^2 + 4) (7.22), lambda = 2 by default."""
+    code, out, _ = call("two-body", "--set", f"phi={phi}", "--json", capsys=capsys)
+    assert code == 0
+    q = json.loads(out)["quantities"]
+    assert q["m_x"] == pytest.approx((8 + 4 * (1 + np.cos(phi) ** 2)) / 8, rel=1e-13)
+    assert q["A1"][0][0] == q["m_x"]
 
 
 def test_table_lists_parameters_state_and_quantities(capsys):

@@ -27,7 +27,12 @@ SINGULAR_RCOND = 1e-13
 
 
 def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
-    """Joint-space mass matrix ``H(q)`` (..., nq, nq).
+    """Joint-space mass matrix ``H(q) = Σ_i J_iᵀ I_i J_i`` (..., nq, nq) (thesis Remark 8, 3.5, 3.10).
+
+    ``J_i = [s_1 … s_i]`` (Remark 8) maps joint rates to the twist of body
+    ``i``; projecting the Newton-Euler forces (3.10) on the joint axes (3.5)
+    gives ``τ = H q̈ + C``.  The composite-rigid-body recursion sums the
+    inertias at the origin: ``H[r, c] = s_rᵀ Ic_{body(c)} s_c``.
 
     Parameters
     ----------
@@ -35,6 +40,11 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
     q : array_like (..., nq)
     method : {"crba", "jacobian"}
         Composite-rigid-body recursion, or the direct sum ``Σ J_iᵀ I_i J_i``.
+
+    Returns
+    -------
+    ndarray (..., nq, nq)
+        Symmetric positive definite (for bodies with mass).
 
     Examples
     --------
@@ -45,6 +55,12 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
     >>> (mass_matrix(chain_model(2), [0.0, 0.0]) * 6).round(12)
     array([[16.,  5.],
            [ 5.,  2.]])
+
+    Folded back (q2 = π), link 2's centre is at ``x = 0.5``: ``H11 = 1/3 + 1/12 + 0.5²``:
+
+    >>> (mass_matrix(chain_model(2), [0.0, np.pi], method="jacobian") * 6).round(12)
+    array([[ 4., -1.],
+           [-1.,  2.]])
     """
     q, _, _, _, _, shape = check_state(model, q)
     data = kinematics(model, q)
@@ -80,13 +96,42 @@ def _column_tables(model: Model) -> dict:
 
 
 def bias_forces(model: Model, q, qd, f_ext=None) -> np.ndarray:
-    """``C(q, q̇)``: the joint forces needed for ``q̈ = 0`` (inverse dynamics, gravity, loads)."""
+    """Bias forces ``C(q, q̇) = τ(q, q̇, q̈ = 0)``: velocity terms, gravity, loads (thesis 3.5, 3.10, 3.11).
+
+    The joint forces that keep every joint from accelerating, by inverse
+    dynamics with ``q̈ = 0`` (so ``p_i`` of 3.11 and ``κ_i`` of 2.19 enter).
+
+    Parameters
+    ----------
+    model : Model
+    q, qd : array_like (..., nq)
+    f_ext : array_like (..., N, 3), optional
+        External world wrenches at the origin on each body.
+
+    Returns
+    -------
+    ndarray (..., nq)
+
+    Examples
+    --------
+    A unit rod at rest, horizontal: the gravity torque ``m g L / 2``; spinning
+    without gravity: no torque (the centripetal force passes through the pivot):
+
+    >>> from planargeo.model import chain_model
+    >>> bias_forces(chain_model(1), [0.0], [0.0])
+    array([4.905])
+    >>> bias_forces(chain_model(1, gravity=(0, 0)), [0.3], [5.0]).round(12)
+    array([0.])
+    """
     q, qd, _, f_ext, _, shape = check_state(model, q, qd, None, f_ext)
     return inverse_dynamics(model, q, qd, np.zeros(shape + (model.nq,)), f_ext)
 
 
 def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
-    """Joint accelerations by the dense solve ``H q̈ = τ - C`` (independent reference).
+    """Joint accelerations by the dense solve ``H q̈ = τ - C`` (thesis 3.5, 3.10 in joint space; independent reference).
+
+    ``H`` by :func:`mass_matrix`, ``C`` by :func:`bias_forces`.  A model
+    without joint coordinates (every joint ``"fixed"``) gives an empty ``q̈``.
 
     Parameters
     ----------
@@ -106,16 +151,23 @@ def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     Examples
     --------
     >>> from planargeo.model import chain_model
-    >>> forward_dynamics_crba(chain_model(1), [0.0], [0.0], [0.0])
+    >>> forward_dynamics_crba(chain_model(1), [0.0], [0.0], [0.0])     # -1.5 g / L
     array([-14.715])
+
+    A welded body has no coordinates:
+
+    >>> from planargeo.model import Body, Joint, Model
+    >>> welded = Model([Body(1.0, (0.5, 0.0), 0.1)], [Joint("fixed", (0.0, 0.0, 0.0))], [-1])
+    >>> forward_dynamics_crba(welded, [], [], [])
+    array([], dtype=float64)
     """
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
     H = mass_matrix(model, q)
     H = np.broadcast_to(H, shape + H.shape[-2:])
     C = bias_forces(model, q, qd, f_ext)
     rhs = np.broadcast_to(tau, shape + (model.nq,)) - C
-    if model.nq == 0:
-        return rhs
+    if model.nq == 0:                      # nothing to solve (and no condition number to take)
+        return np.zeros(shape + (0,))
     w = np.linalg.eigvalsh(H)
     lo, hi = w[..., 0], w[..., -1]
     bad = ~(lo > SINGULAR_RCOND * hi)

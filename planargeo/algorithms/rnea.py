@@ -66,7 +66,10 @@ def newton_euler(model: Model, q, qd, qdd, f_ext=None) -> Data:
 
 
 def inverse_dynamics(model: Model, q, qd, qdd, f_ext=None, *, return_forces: bool = False):
-    """Joint forces/torques that produce ``qdd`` (recursive Newton-Euler).
+    """Joint forces/torques ``τ_i = s_iᵀ f_i`` that produce ``qdd`` (thesis 3.5, 3.10, 2.18; recursive Newton-Euler).
+
+    Accelerations outwards by 2.18, joint forces inwards by 3.10 (3.12 at the
+    tips, children summed for a tree), torques by 3.5.
 
     Parameters
     ----------
@@ -83,9 +86,21 @@ def inverse_dynamics(model: Model, q, qd, qdd, f_ext=None, *, return_forces: boo
 
     Examples
     --------
+    A unit rod about its end (``J_pivot = m L²/3 = 1/3``), no gravity:
+
     >>> from planargeo.model import chain_model
-    >>> inverse_dynamics(chain_model(1, gravity=(0, 0)), [0.0], [0.0], [3.0])   # J_pivot = 1/3
+    >>> inverse_dynamics(chain_model(1, gravity=(0, 0)), [0.0], [0.0], [3.0])
     array([1.])
+
+    Holding it horizontal against gravity takes ``m g L / 2``; the joint force is the
+    pivot's reaction (weight plus couple), and a batch of states is one call:
+
+    >>> tau, f = inverse_dynamics(chain_model(1), [0.0], [0.0], [0.0], return_forces=True)
+    >>> tau, f
+    (array([4.905]), array([[0.   , 9.81 , 4.905]]))
+    >>> inverse_dynamics(chain_model(1), [[0.0], [np.pi / 2]], [[0.0], [0.0]], [[0.0], [0.0]]).round(12)
+    array([[4.905],
+           [0.   ]])
     """
     w = newton_euler(model, q, qd, qdd, f_ext)
     return (w.tau, w.f) if return_forces else w.tau
