@@ -69,7 +69,7 @@ def _xy_tuple(x, name):
 
 @dataclass(frozen=True)
 class Contact:
-    """A contact / loop closure between body ``a`` and body ``b`` (frozen).
+    """A contact / loop closure between body ``a`` and body ``b`` (frozen; thesis 9.3, Definition 42, 9.49).
 
     Parameters
     ----------
@@ -144,7 +144,7 @@ class Contact:
 
 
 def validate_contacts(contacts, n_bodies: int) -> tuple[Contact, ...]:
-    """Check ``contacts`` against a model of ``n_bodies`` bodies; return them as a tuple.
+    """Check ``contacts`` against a model of ``n_bodies`` bodies; return them as a tuple (the rows of ``G``, 9.49).
 
     Raises :class:`~planargeo.errors.InputError` naming the contact for a
     non-:class:`Contact` entry or a body index out of range.
@@ -195,7 +195,7 @@ def _pose_of(pose, i):
 
 
 def world_point(pose, body: int, point) -> np.ndarray:
-    """World coordinates of ``point`` given in ``body``'s frame (``body = -1``: world).
+    """World coordinates of ``point`` given in ``body``'s frame (``body = -1``: world; the pose of 2.1-2.9).
 
     Examples
     --------
@@ -266,6 +266,14 @@ def reaction_space(contact: Contact, pose) -> np.ndarray:
     unit force normal to the sliding direction (the direction turned by -90°)
     through the contact point on body a, and the unit couple; weld: the identity.
 
+    These follow the conventions of the joints' reaction spaces
+    (:func:`planargeo.joints.reaction_space`: unit forces through the joint,
+    unit couples), so the contact force components ``ξ`` (``F = B ξ``, 9.70)
+    read like a joint's ``μ``.  One difference, kept on purpose: a joint's
+    slider normal is the direction turned by **+90°** (thesis 5.63), a
+    contact's by **-90°**, as printed in the slider-crank example 9.87, so that
+    ``ξ`` compares directly with 9.90 (the thesis uses both orientations).
+
     Examples
     --------
     >>> c = Contact("slider", 0, -1, point_a=(0.5, 0.0), direction=(0.0, 1.0), angle=np.pi / 2)
@@ -292,7 +300,7 @@ def reaction_space(contact: Contact, pose) -> np.ndarray:
 
 
 def residual(contact: Contact, pose) -> np.ndarray:
-    """Position-level loop-closure residual (3-k values; zero when the loop is closed).
+    """Position-level loop-closure residual (3-k values; zero when the loop is closed; position form of 9.59-9.60).
 
     Pin: world ``point_a - point_b`` (2); slider: the signed distance of
     ``point_a`` from the sliding line and the relative-angle error (2); weld:
@@ -341,7 +349,7 @@ def contact_bias(v_a, v_b) -> np.ndarray:
 
 
 def stacked_contact_spaces(contacts, pose):
-    """Block-diagonal ``z = {{z_k}}`` (3m×Σk) and ``B = {{B_k}}`` (3m×Σ(3-k)) for all contacts.
+    """Block-diagonal ``z = {{z_k}}`` (3m×Σk) and ``B = {{B_k}}`` (3m×Σ(3-k)) for all contacts (thesis 9.54, 9.60).
 
     Examples
     --------

@@ -379,7 +379,7 @@ def revolute_prismatic(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 
 
 def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
-    """Free planar (3-dof) joint: slides along ``direction`` and its normal, turns about ``point``.
+    """Free planar (3-dof) joint: slides along ``direction`` and its normal, turns about ``point`` (thesis 4.79, 5.62).
 
     The columns follow the package's ``Model`` joint ``"plane"`` (translations
     along the joint frame's x and y axes, then rotation about its origin); with
@@ -398,7 +398,7 @@ def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 
 
 def fixed(point=(0.0, 0.0)) -> JointSpace:
-    """Weld (0-dof) at ``point``: ``s`` is empty, ``R`` = forces through ``point`` along x, y and a couple.
+    """Weld (0-dof) at ``point``: ``s`` is empty, ``R`` = forces through ``point`` along x, y and a couple (thesis 6.10).
 
     Examples
     --------

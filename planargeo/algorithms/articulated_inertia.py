@@ -31,7 +31,7 @@ __all__ = ["ArticulatedInertias", "articulated_recursion", "articulated_inertia"
 
 @dataclass
 class ArticulatedInertias:
-    """Result of the articulated inertia algorithm (per body ``i``).
+    """Result of the articulated inertia algorithm (per body ``i``; thesis 7.1.1, 7.7a-7.7b).
 
     Attributes
     ----------

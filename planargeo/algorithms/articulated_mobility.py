@@ -34,7 +34,7 @@ __all__ = ["ArticulatedMobilities", "mobility_recursion", "articulated_mobility"
 
 @dataclass
 class ArticulatedMobilities:
-    """Result of the articulated mobility algorithm (per body ``i``).
+    """Result of the articulated mobility algorithm (per body ``i``; thesis 7.4.1, 7.31, 7.38).
 
     Attributes
     ----------

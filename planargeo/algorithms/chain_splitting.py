@@ -110,7 +110,7 @@ def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) 
 
 @dataclass
 class ChainSplit:
-    """Direct solution of a chain by splitting at every joint.
+    """Direct solution of a chain by splitting at every joint (thesis 7.6: 7.54, 7.56, 6.110).
 
     Attributes
     ----------

@@ -58,7 +58,20 @@ def branch_matrix(G, parents) -> np.ndarray:
 
 
 class LoopSolution:
-    """All quantities of one constrained state (thesis symbols).
+    """All quantities of one constrained state (thesis 9.49-9.75; attributes named after the symbols).
+
+    Reaction bases: ``xi`` are the components of the contact forces in the
+    contact reaction spaces ``B`` of :func:`planargeo.contacts.reaction_space`
+    (``F = B ξ``, 9.70-9.71): for a pin, the unit forces along x and y through
+    the contact point; for a slider, the unit force normal to the slide through
+    the contact point on body ``a`` (the slide direction turned by -90°, as in
+    the thesis's 9.87), then the unit couple; for a weld, the identity.  These
+    are the conventions of the joints' reaction spaces
+    (:func:`planargeo.joints.reaction_space`: forces through the joint, couples),
+    except that a joint's slider normal is the direction turned by +90° (5.63):
+    the thesis itself uses the two orientations, and the contact's follows 9.87
+    so that ``xi`` compares with 9.90.  The open tree's joint reaction bases
+    (``tree.R``) are the joints'.
 
     Attributes
     ----------
@@ -70,9 +83,25 @@ class LoopSolution:
     J : (3m, 3m) branch composite inertia ``Υ I Υ^T`` (9.57)
     theta_dot : contact rates (9.58); nu : (3m,) contact bias accelerations
     K : ``B^T G Λ^{-1} G^T B`` ; cond : its condition number
-    Gamma : (3m, 3m) (9.72); xi : reaction magnitudes (9.70); F : (3m,) contact forces (9.71)
+    Gamma : (3m, 3m) (9.72); xi : reaction magnitudes in the basis ``B`` (9.70); F : (3m,) contact forces (9.71)
     a : (3N,) closed-loop accelerations (9.73); qdd : (nq,) (9.75)
     tau_drive : (nq,) joint torques including the drives (prescribed joints)
+
+    Examples
+    --------
+    A free body (``plane`` joint, m = 2) pinned to the ground at its centre of
+    mass (3, 1): at rest the pin carries its weight.  ``-F`` acts on the body,
+    so ``ξ = [0, -m g]`` in the basis of unit forces along x and y through the pin.
+
+    >>> from planargeo.contacts import Contact
+    >>> from planargeo.model import Body, Joint, Model
+    >>> m = Model([Body(2.0, (0.0, 0.0), 0.5)], [Joint("plane")], [-1])
+    >>> pin = Contact("pin", 0, -1, point_a=(0.0, 0.0), point_b=(3.0, 1.0))
+    >>> sol = loop_solve(m, [3.0, 1.0, 0.0], [0.0] * 3, [0.0] * 3, contacts=[pin])
+    >>> sol.xi.round(9) + 0.0, sol.B[:, :2]
+    (array([ 0.  , -19.62]), array([[ 1.,  0.],
+           [ 0.,  1.],
+           [-1.,  3.]]))
     """
 
     def __repr__(self):
@@ -283,7 +312,7 @@ def _rot(th):
 
 
 def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribed=None):
-    """Independent reference: Lagrange multipliers in maximal coordinates, solved densely.
+    """Independent reference: Lagrange multipliers in maximal coordinates, solved densely (reference for 9.73, 9.75).
 
     Each body ``i`` has coordinates ``x_i = (c_x, c_y, θ)`` (centre of mass and
     angle) and the diagonal mass matrix ``diag(m, m, J)``; Newton-Euler at the
@@ -304,6 +333,17 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
     dict with ``a`` (N, 3) spatial accelerations at the origin, ``qdd`` (nq,)
     (least squares from ``Δ a - κ = S q̈``), ``F`` (m, 3) contact forces in
     the thesis's sign (``-F`` acts on body ``a``), ``tau_drive`` (nq,).
+
+    Examples
+    --------
+    The four-bar of :func:`loop_solve`, ``φ̈ = -6/5 g cos φ``:
+
+    >>> from planargeo.model import chain_model
+    >>> pin = Contact("pin", 2, -1, point_a=(1.0, 0.0), point_b=(1.0, 0.0))
+    >>> ref = constrained_dynamics_lagrange(chain_model(3), [1.2, -1.2, 1.2 - np.pi], [1.0, -1.0, 1.0],
+    ...                                     [0.0] * 3, contacts=[pin])
+    >>> bool(abs(ref["qdd"][0] - (-6 / 5 * 9.81 * np.cos(1.2))) < 1e-10)
+    True
     """
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
     if shape != ():

@@ -27,9 +27,21 @@ Solving the chain from the base outwards with the articulated inertias of
 All quantities are world-frame screws at the global origin (twist
 ``[vx, vy, w]``, wrench ``[fx, fy, tz]``); ``a_{i-1}`` is the acceleration of
 body ``i``'s parent (zero for the ground), so trees are handled as well as
-chains.  The reaction space of a revolute joint at ``(x, y)`` is the pair of
-unit forces along x and y through the joint; of a prismatic joint along ``e``,
-the unit force normal to ``e`` through the origin and the unit couple.
+chains.
+
+Reaction basis (the meaning of ``mu``): every ``R_i`` is
+:func:`planargeo.joints.reaction_space_of`, the package's one definition
+(:func:`planargeo.joints.reaction_space`, thesis 4.8, 5.63, 7.16): for a
+revolute joint at ``(x, y)`` the unit forces along x and y through the joint;
+for a prismatic joint along ``e`` the unit force along ``e⊥`` (``e`` turned by
++90°) through the slider (the body frame's origin) and the unit couple; for a
+revolute-prismatic joint the unit force along ``e⊥`` through the pin.  So with
+no joint force (``Q = 0``) ``mu`` is the joint's reaction force in those
+components; in general ``f = T Q + R mu`` first sets apart the force ``T Q`` on
+the axis of percussion (6.38).  ``T`` and ``U`` come from
+:func:`planargeo.subspaces.percussion_space` and
+:func:`planargeo.subspaces.reactive_acceleration_space` (one implementation,
+one singularity rule); ``qdd`` does not depend on the basis.
 """
 from __future__ import annotations
 
@@ -245,7 +257,10 @@ def _per_state(fn, model, q, qd, tau, f_ext):
 # ---------------------------------------------------------------------------
 @dataclass
 class ProjectiveWorkspace:
-    """Everything the projective solution computes, per body ``i`` (lists of arrays).
+    """Everything the projective solution computes, per body ``i`` (thesis 6.99-6.110; lists of arrays).
+
+    ``mu[i]`` are components in ``R[i]``, the basis of
+    :func:`planargeo.joints.reaction_space_of` (unit forces through the joint, couples).
 
     Attributes
     ----------

@@ -141,7 +141,7 @@ def _topology(parents: tuple) -> tuple[np.ndarray, np.ndarray]:
 
 
 def blocks(X, k: int = 3) -> np.ndarray:
-    """Expand an ``n × m`` 0/±1 topology matrix into ``3n × 3m`` blocks (``X ⊗ 1_3``).
+    """Expand an ``n × m`` 0/±1 topology matrix into ``3n × 3m`` blocks (``X ⊗ 1_3``; thesis 9.9, 9.14).
 
     Examples
     --------
@@ -286,7 +286,11 @@ def articulation_matrix(C3, P) -> np.ndarray:
 
 
 class StackedSolution:
-    """All stacked quantities of one state (attributes named after the thesis symbols).
+    """All stacked quantities of one state (thesis 9.17-9.43; attributes named after the symbols).
+
+    Reaction basis: ``R`` holds each joint's :func:`planargeo.joints.reaction_space_of`
+    (unit forces through the joint, couples; thesis 7.16, 5.63), the same as
+    :mod:`planargeo.algorithms.projective`, so ``U^T f`` gives the same ``μ``.
 
     Attributes
     ----------
@@ -300,6 +304,23 @@ class StackedSolution:
     a : (3N,) body accelerations (9.39)
     f : (3N,) internal joint forces (9.41 with 9.17)
     qdd : (nq,) joint accelerations (9.43)
+
+    Examples
+    --------
+    A unit link (m = L = 1) lying along x on a pin at the origin, released
+    under gravity with no joint torque: ``μ = Uᵀ f`` (6.61b) is the pin force,
+    along x and y through the pin, ``m (a_c + g) = 0.5 q̈ + 9.81`` along y.
+    (With a joint torque ``Q``, ``f = T Q + R μ`` sets the percussion-axis
+    force ``T Q`` apart first, 6.38.)
+
+    >>> from planargeo.model import chain_model
+    >>> sol = stacked_solve(chain_model(1), [0.0], [0.0], [0.0])
+    >>> sol.R
+    array([[1., 0.],
+           [0., 1.],
+           [0., 0.]])
+    >>> (sol.U.T @ sol.f).round(6) + 0.0, round(0.5 * float(sol.qdd[0]) + 9.81, 6)
+    (array([0.    , 2.4525]), 2.4525)
     """
 
     def __repr__(self):
