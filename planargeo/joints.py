@@ -164,9 +164,12 @@ def reaction_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
            [-1.,  2.]])
     """
     kind, p, e, shape = _prepare(kind, point, direction)
-    ex = np.broadcast_to(np.array([1.0, 0.0]), shape + (2,))
-    ey = np.broadcast_to(np.array([0.0, 1.0]), shape + (2,))
-    couple = np.broadcast_to(np.array([0.0, 0.0, 1.0]), shape + (3,))
+    if shape == ():
+        ex, ey, couple = np.array([1.0, 0.0]), np.array([0.0, 1.0]), np.array([0.0, 0.0, 1.0])
+    else:
+        ex = np.broadcast_to(np.array([1.0, 0.0]), shape + (2,))
+        ey = np.broadcast_to(np.array([0.0, 1.0]), shape + (2,))
+        couple = np.broadcast_to(np.array([0.0, 0.0, 1.0]), shape + (3,))
     if kind == "revolute":
         return np.stack([_force_through(p, ex), _force_through(p, ey)], axis=-1)
     if kind == "plane":

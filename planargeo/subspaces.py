@@ -106,6 +106,8 @@ def _solve_A(A: np.ndarray, B: np.ndarray, name: str, eig=None) -> np.ndarray:
 def _right_solve(X: np.ndarray, M: np.ndarray) -> np.ndarray:
     """``X M⁻¹`` for symmetric ``M`` (..., k, k), as ``(M⁻¹ Xᵀ)ᵀ``."""
     Xt = _T(X)
+    if M.shape[:-2] == Xt.shape[:-2]:
+        return _T(np.linalg.solve(M, Xt))
     shape = np.broadcast_shapes(M.shape[:-2], Xt.shape[:-2])
     return _T(np.linalg.solve(np.broadcast_to(M, shape + M.shape[-2:]),
                               np.broadcast_to(Xt, shape + Xt.shape[-2:])))
