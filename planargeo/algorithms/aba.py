@@ -22,10 +22,17 @@ articulated bias force ``d_i`` (after its children have been added):
 
 :func:`forward_dynamics` evaluates batches ``(..., nq)`` in one vectorised
 call (loop over bodies, vectorised over the batch).  For models whose joints
-are all revolute, prismatic or fixed the recursion is written component by
-component (:func:`_aba_components`): a single state (or a batch of at most
-``SMALL_BATCH``) runs on Python floats, avoiding numpy's per-call overhead, and
-a larger batch runs the same code on one contiguous array per component.
+are all revolute, prismatic or fixed:
+
+* a single state (or each state of a batch of at most ``SMALL_BATCH``) runs a
+  *compiled plan*: the recursion generated once per topology as straight-line
+  Python on floats (no loops, containers or numpy calls), with every body's
+  quantities taken at its own origin (a revolute joint is then ``[0, 0, 1]``)
+  and gravity as the base acceleration ``-g``; a state given as float64
+  arrays skips the general validator after a cheap shape and finiteness check
+  (see the comment above :func:`_plan_source`);
+* a larger batch runs the recursion component by component
+  (:func:`_aba_components`) on one contiguous array per component.
 Other joint kinds use the general 3×k array path of :func:`articulated_body`.
 :func:`articulated_body` returns the whole workspace (``A``, ``d``, ``a``,
 ``f``, ``D``, ``U``, ``u``...) for drawings and reports.
@@ -33,6 +40,7 @@ Other joint kinds use the general 3×k array path of :func:`articulated_body`.
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 
@@ -576,7 +584,83 @@ def _plan_source(kinds, parents, zero, with_fext):
         elif nchild[i]:
             B["a"] = (let(f"a0_{i}", [[a0p], [neg(a2p), ry]]), let(f"a1_{i}", [[a1p], [a2p, rx]]), a2p)
     emit("    return [" + ", ".join(text(x) for x in out) + "]")
-    return "\n".join(lines) + "\n"
+    return "\n".join(_registers(lines)) + "\n"
+
+
+_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_PARAMS = frozenset(("C", "q", "qd", "tau", "fe"))
+
+
+def _registers(lines):
+    """Drop dead assignments and rename the locals of straight-line code onto few reused names.
+
+    CPython slows down past 256 local variables (``EXTENDED_ARG``) and with large
+    frames; a linear scan over single assignments (each value lives from its
+    assignment to its last read) reuses names as soon as a value is dead.
+    """
+    head, body = lines[0], []
+    for line in lines[1:]:
+        st = line.strip()
+        if st.startswith("#"):
+            continue
+        ind = line[:len(line) - len(line.lstrip())]
+        body += [(ind, part) for part in st.split("; ")]
+    stmts = []   # (indent, targets source or None, targets, rhs source)
+    for ind, st in body:
+        if " = " in st and not st.startswith(("if ", "return")):
+            lhs, rhs = st.split(" = ", 1)
+            stmts.append((ind, lhs, [t for t in _NAME.findall(lhs)], rhs))
+        else:
+            stmts.append((ind, None, [], st))
+    local = _PARAMS | {t for s in stmts for t in s[2]}
+    while True:   # dead code elimination (pure assignments whose value is never read)
+        live, keep = set(), []
+        for ind, lhs, tg, rhs in reversed(stmts):
+            if lhs is not None and len(tg) == 1 and tg[0] not in live:
+                continue
+            live.difference_update(tg)
+            live.update(n for n in _NAME.findall(rhs) if n in local)
+            keep.append((ind, lhs, tg, rhs))
+        keep.reverse()
+        if len(keep) == len(stmts):
+            break
+        stmts = keep
+    # versions and last reads
+    cur, last, reads, writes = {}, {}, [], []
+    nver = 0
+    for k, (ind, lhs, tg, rhs) in enumerate(stmts):
+        r = {n: cur[n] for n in _NAME.findall(rhs) if n in local and n in cur}
+        for v in r.values():
+            last[v] = k
+        w = []
+        for t in tg:
+            cur[t] = nver
+            w.append(nver)
+            nver += 1
+        reads.append(r)
+        writes.append(w)
+    free, reg, nreg, out = [], {}, 0, [head]
+    for k, (ind, lhs, tg, rhs) in enumerate(stmts):
+        r = reads[k]
+        src = _NAME.sub(lambda mt: reg[r[mt.group()]] if mt.group() in r else mt.group(), rhs)
+        for v in set(r.values()):
+            if last[v] == k:
+                free.append(reg[v])
+        names = []
+        for v in writes[k]:
+            if free:
+                reg[v] = free.pop()
+            else:
+                reg[v] = f"r{nreg}"
+                nreg += 1
+            names.append(reg[v])
+            if v not in last:   # never read
+                free.append(reg[v])
+        if lhs is None:
+            out.append(ind + src)
+        else:
+            out.append(ind + (", ".join(names) + ("," if len(names) > 1 or lhs.endswith(",") else "")) + " = " + src)
+    return out
 
 
 def _plan_constants(model: Model):

@@ -1,0 +1,150 @@
+"""The single-state fast path of ``forward_dynamics`` (compiled plan) against the general numpy path.
+
+The physics reference stays the dense CRBA solve and Pinocchio (test_dyn_aba.py,
+test_pinocchio.py); here the compiled straight-line plan (body-origin frame,
+gravity as base acceleration, zero constants folded) must reproduce the general
+3×k array recursion of :func:`articulated_body` to 1e-12 relative, on chains and
+trees of revolute, prismatic and fixed joints, with random gravity and external
+wrenches, and every input must still be validated.
+"""
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from planargeo.algorithms import aba
+from planargeo.algorithms.aba import articulated_body, forward_dynamics
+from planargeo.errors import NonFiniteError, ShapeError, SingularConfigurationError
+from planargeo.model import Body, Joint, Model, chain_model, random_model
+
+KINDS = [("revolute",), ("prismatic",), ("revolute", "prismatic"), ("revolute", "prismatic", "fixed")]
+
+
+def _state(m, seed):
+    rng = np.random.default_rng(seed)
+    q, qd, tau = rng.normal(size=(3, m.nq))
+    return q, qd, tau, rng.normal(size=(m.N, 3))
+
+
+def _rel(a, b):
+    return np.abs(a - b).max() / max(np.abs(b).max(), 1e-300)
+
+
+@pytest.fixture
+def no_full_validation(monkeypatch):
+    """Fail if forward_dynamics falls back to the general validator (the fast path must not need it)."""
+    def boom(*args, **kwargs):
+        raise AssertionError("check_state called: the fast path was not taken")
+
+    monkeypatch.setattr(aba, "check_state", boom)
+
+
+def _general(m, q, qd, tau, f_ext=None):
+    return articulated_body(m, q, qd, tau, f_ext).qdd
+
+
+@pytest.mark.parametrize("kinds", KINDS)
+@pytest.mark.parametrize("tree", [False, True])
+@pytest.mark.parametrize("N", [1, 2, 7, 30])
+def test_fast_path_equals_general_path(N, tree, kinds):
+    rng = np.random.default_rng(N)
+    g = tuple(rng.normal(size=2) * 5)
+    m = random_model(N, seed=N, kinds=kinds, tree=tree, gravity=g)
+    if m.nq == 0:
+        pytest.skip("all joints fixed")
+    for seed in range(3):
+        q, qd, tau, f_ext = _state(m, seed)
+        ref, ref_f = _general(m, q, qd, tau), _general(m, q, qd, tau, f_ext)
+        assert _rel(forward_dynamics(m, q, qd, tau), ref) < 1e-12
+        assert _rel(forward_dynamics(m, q, qd, tau, f_ext), ref_f) < 1e-12
+        assert not np.allclose(ref, ref_f)     # the external wrenches matter
+
+
+@given(st.integers(1, 12), st.integers(0, 10_000), st.booleans(), st.sampled_from(KINDS))
+def test_property_fast_path_equals_general_path(n, seed, tree, kinds):
+    rng = np.random.default_rng(seed)
+    m = random_model(n, seed=seed, kinds=kinds, tree=tree, gravity=tuple(rng.normal(size=2) * 10))
+    if m.nq == 0:
+        return
+    q, qd, tau, f_ext = _state(m, seed)
+    assert _rel(forward_dynamics(m, q, qd, tau, f_ext), _general(m, q, qd, tau, f_ext)) < 1e-12
+
+
+def test_fast_path_skips_the_general_validator(no_full_validation):
+    m = random_model(6, seed=2, tree=True)
+    q, qd, tau, f_ext = _state(m, 2)
+    out = forward_dynamics(m, q, qd, tau, f_ext)
+    assert out.shape == (m.nq,) and out.dtype == np.float64
+
+
+def test_zero_constants_folded_and_plans_shared():
+    """chain_model has zero placement angles, y offsets and x gravity: folded; same topology shares code."""
+    a, b = chain_model(5), chain_model(5, mass=3.0, length=0.5)
+    q, qd, tau, f_ext = _state(a, 5)
+    for m in (a, b):
+        assert _rel(forward_dynamics(m, q, qd, tau, f_ext), _general(m, q, qd, tau, f_ext)) < 1e-12
+    fa, Ca = aba._plan(a, True)
+    fb, Cb = aba._plan(b, True)
+    assert fa is fb and Ca != Cb
+    # the zero pattern is part of the plan: a nonzero x gravity is not folded away
+    c = chain_model(5, gravity=(2.0, -9.81))
+    assert aba._plan(c, True)[0] is not fa
+    assert _rel(forward_dynamics(c, q, qd, tau), _general(c, q, qd, tau)) < 1e-12
+
+
+def test_other_inputs_take_the_validated_route():
+    m = random_model(4, seed=7, tree=True)
+    q, qd, tau, f_ext = _state(m, 7)
+    ref = _general(m, q, qd, tau, f_ext)
+    assert _rel(forward_dynamics(m, list(q), tuple(qd), tau, f_ext.tolist()), ref) < 1e-12
+    assert _rel(forward_dynamics(m, q.astype(np.float32), qd, tau, f_ext), _general(m, q.astype(np.float32), qd, tau,
+                                                                                   f_ext)) < 1e-12
+    # a finite state whose sum overflows: the cheap check fails, the full validator accepts it
+    two = Model([Body(1.0, (0.5, 0.0), 0.1)] * 2, [Joint("revolute")] * 2, [-1, -1])
+    out = forward_dynamics(two, np.full(2, 1e308), np.zeros(2), np.zeros(2))
+    assert out.shape == (2,) and np.isfinite(out).all()
+
+
+@pytest.mark.parametrize("name", ["q", "qd", "tau"])
+def test_bad_single_states_raise(name):
+    m = chain_model(3)
+    args = dict(q=np.zeros(3), qd=np.zeros(3), tau=np.zeros(3))
+    args[name] = np.array([0.0, np.nan, 0.0])
+    with pytest.raises(NonFiniteError, match=name):
+        forward_dynamics(m, **args)
+    args[name] = np.zeros(4)
+    with pytest.raises(ShapeError, match=name):
+        forward_dynamics(m, **args)
+    with pytest.raises(NonFiniteError, match="f_ext"):
+        forward_dynamics(m, np.zeros(3), np.zeros(3), np.zeros(3), np.array([[0.0, np.inf, 0.0]] * 3))
+    with pytest.raises(ShapeError, match="f_ext"):
+        forward_dynamics(m, np.zeros(3), np.zeros(3), np.zeros(3), np.zeros((2, 3)))
+
+
+def test_singular_on_the_fast_path():
+    m = Model([Body(1.0, (0.0, 0.0), 0.0)], [Joint("revolute")], [-1])
+    with pytest.raises(SingularConfigurationError, match="joint 0") as e:
+        forward_dynamics(m, np.zeros(1), np.zeros(1), np.zeros(1))
+    assert e.value.cond == np.inf
+    # a point mass on its own pivot at the tip of a pendulum
+    m = Model([Body(1.0, (0.5, 0.0), 0.1), Body(1.0, (0.0, 0.0), 0.0)],
+              [Joint("revolute"), Joint("revolute", (1.0, 0.0, 0.3))], [-1, 0])
+    with pytest.raises(SingularConfigurationError, match="joint 1"):
+        forward_dynamics(m, np.zeros(2), np.zeros(2), np.zeros(2))
+
+
+def test_models_beyond_the_plan_limit_use_the_float_loop(monkeypatch):
+    monkeypatch.setattr(aba, "MAX_PLAN_BODIES", 3)
+    m = random_model(6, seed=11, kinds=("revolute", "prismatic", "fixed"), tree=True)
+    q, qd, tau, f_ext = _state(m, 11)
+    assert _rel(forward_dynamics(m, q, qd, tau, f_ext), _general(m, q, qd, tau, f_ext)) < 1e-12
+    assert m._arrays["aba_plan"] is False
+
+
+def test_small_batches_use_the_plan_state_by_state():
+    m = random_model(5, seed=3, tree=True)
+    rng = np.random.default_rng(3)
+    q, qd, tau = rng.normal(size=(3, 4, m.nq))
+    f_ext = rng.normal(size=(4, m.N, 3))
+    out = forward_dynamics(m, q, qd, tau, f_ext)
+    assert _rel(out, _general(m, q, qd, tau, f_ext)) < 1e-12
