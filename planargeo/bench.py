@@ -17,7 +17,12 @@ Three tables (Markdown) and charts (SVG + PNG) are written to ``--out``
     dense CRBA solve and against Pinocchio, with its time per call.
 
 All timings are the best of several repeats of the mean over many calls
-(``timeit``), so they estimate the cost without the noise of other processes;
+(``timeit``) in *thread CPU time* (``time.thread_time``: time the process
+spends descheduled on a busy machine does not count), so they estimate the cost
+without the noise of other processes.  The headline ratio ``aba / pin.aba`` is
+measured by interleaving: the two calls alternate in short blocks over many
+rounds, and the table gives the ratio of the best blocks and the median of the
+per-round ratios (both see the same machine state);
 BLAS runs single-threaded (as Pinocchio does): the command re-runs itself in a
 fresh process with ``OPENBLAS_NUM_THREADS=1`` (and OMP/MKL) if needed.
 This module imports matplotlib (charts); the math modules never do.
@@ -30,6 +35,7 @@ import importlib
 import os
 import platform
 import sys
+import time
 import timeit
 from pathlib import Path
 
@@ -37,7 +43,7 @@ import numpy as np
 
 from .model import chain_model
 
-__all__ = ["add_arguments", "main", "time_call", "to_pinocchio"]
+__all__ = ["add_arguments", "main", "time_call", "time_interleaved", "to_pinocchio"]
 
 SINGLE_SIZES = (2, 5, 10, 20, 50, 100)
 BATCH_SIZES = (1, 100, 10000)
@@ -51,17 +57,44 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="chain sizes N for the single-state table (default: %(default)s)")
 
 
-def time_call(fn, *, budget: float = 0.2, repeat: int = 5) -> float:
-    """Seconds per call of ``fn()``: best over ``repeat`` runs of the mean over ~``budget`` seconds."""
+def _calls_for(fn, seconds: float, timer) -> int:
+    """How many calls of ``fn`` take about ``seconds``."""
     fn()
     n, t = 1, 0.0
     while True:
-        t = timeit.timeit(fn, number=n)
-        if t > budget / 10 or n > 1e6:
+        t = timeit.Timer(fn, timer=timer).timeit(number=n)
+        if t > seconds / 10 or n > 1e6:
             break
-        n *= 4 if t < budget / 100 else 2
-    n = max(1, int(n * (budget / repeat) / max(t, 1e-9)))
-    return min(timeit.repeat(fn, number=n, repeat=repeat)) / n
+        n *= 4 if t < seconds / 100 else 2
+    return max(1, int(n * seconds / max(t, 1e-9)))
+
+
+def time_call(fn, *, budget: float = 0.2, repeat: int = 5, timer=time.thread_time) -> float:
+    """Seconds per call of ``fn()``: best over ``repeat`` runs of the mean over ~``budget`` seconds (thread CPU time)."""
+    n = _calls_for(fn, budget / repeat, timer)
+    return min(timeit.Timer(fn, timer=timer).repeat(number=n, repeat=repeat)) / n
+
+
+def time_interleaved(fns: dict, *, budget: float = 0.5, rounds: int = 25, timer=time.thread_time) -> dict:
+    """Seconds per call of each ``fns[name]()``, measured in alternating blocks: ``{name: [per round]}``.
+
+    Every round times one block of each function in turn, so the functions see
+    the same machine state; ratios of the best blocks or medians of per-round
+    ratios are robust to load.
+    """
+    per = budget / (rounds * len(fns))
+    timers = {k: (timeit.Timer(f, timer=timer), _calls_for(f, per, timer)) for k, f in fns.items()}
+    out = {k: [] for k in fns}
+    for _ in range(rounds):
+        for k, (t, n) in timers.items():
+            out[k].append(t.timeit(number=n) / n)
+    return out
+
+
+def ratio_stats(times: dict, num: str, den: str) -> dict:
+    """``{"best": min(num)/min(den), "median": median of per-round num/den}`` from :func:`time_interleaved`."""
+    a, b = np.array(times[num]), np.array(times[den])
+    return {"best": float(a.min() / b.min()), "median": float(np.median(a / b))}
 
 
 def to_pinocchio(model):
@@ -99,8 +132,31 @@ def _fmt_us(t):
     return "—" if t is None or not np.isfinite(t) else (f"{t * 1e6:.1f}" if t < 1e-2 else f"{t * 1e6:.0f}")
 
 
+def _interleaved_ratio(m, budget, seed):
+    """aba and pin.aba on one model, interleaved: (best aba s, best pin s, ratio stats) or None without Pinocchio."""
+    from .algorithms.aba import forward_dynamics
+
+    pm = to_pinocchio(m)
+    if pm is None:
+        return None
+    import pinocchio as pin
+
+    pd = pm.createData()
+    q, qd, tau = _state(m.nq, seed=seed)
+    t = time_interleaved({"aba": lambda: forward_dynamics(m, q, qd, tau), "pin": lambda: pin.aba(pm, pd, q, qd, tau)},
+                         budget=2 * budget)
+    return min(t["aba"]), min(t["pin"]), ratio_stats(t, "aba", "pin")
+
+
 def run_single(sizes, budget):
-    """Time per call (s) of every method and pin.aba for each N; and their errors."""
+    """Time per call (s) of every method and pin.aba for each N; and their errors.
+
+    ``aba`` and ``pinocchio`` are timed interleaved (:func:`time_interleaved`);
+    ``ratio`` holds their best and median ratios on ``chain_model(N)``, and
+    ``ratio_random`` on ``random_model(N)`` (no zero placements or offsets).
+    """
+    from .model import random_model
+
     methods = _methods()
     rows = []
     for N in sizes:
@@ -115,8 +171,10 @@ def run_single(sizes, budget):
 
             pd = pm.createData()
             pin_ref = pin.aba(pm, pd, q, qd, tau).copy()
-            row["times"]["pinocchio"] = time_call(lambda: pin.aba(pm, pd, q, qd, tau), budget=budget)
             row["err_crba"]["pinocchio"] = float(np.abs(pin_ref - ref).max() / np.abs(ref).max())
+            t_aba, t_pin, row["ratio"] = _interleaved_ratio(m, budget, N)
+            row["times"]["pinocchio"] = t_pin
+            row["ratio_random"] = _interleaved_ratio(random_model(N, seed=N), budget, N)[2]
         for name, fn in methods.items():
             try:
                 out = np.asarray(fn(m, q, qd, tau))
@@ -124,7 +182,10 @@ def run_single(sizes, budget):
                 row["times"][name] = float("nan")
                 row["err_crba"][name] = f"{type(exc).__name__}"
                 continue
-            row["times"][name] = time_call(lambda: fn(m, q, qd, tau), budget=budget)
+            if name == "aba" and "ratio" in row:
+                row["times"][name] = t_aba
+            else:
+                row["times"][name] = time_call(lambda: fn(m, q, qd, tau), budget=budget)
             row["err_crba"][name] = float(np.abs(out - ref).max() / np.abs(ref).max())
             if pin_ref is not None:
                 row["err_pin"][name] = float(np.abs(out - pin_ref).max() / np.abs(pin_ref).max())
@@ -178,7 +239,7 @@ def _header(title):
         pv = "not installed"
     return (f"# {title}\n\nGenerated by `planargeo bench` on {now}; Python {platform.python_version()}, "
             f"numpy {np.__version__}, Pinocchio {pv}, {os.cpu_count()} CPU(s), {platform.machine()}.\n"
-            "Times are per call (µs), best of repeats; **ratios are the headline** (absolute times depend "
+            "Times are per call (µs), best of repeats in thread CPU time; **ratios are the headline** (absolute times depend "
             "on the machine and its load).\n\n")
 
 
@@ -187,6 +248,20 @@ def write_single(rows, out: Path) -> str:
     has_pin = "pinocchio" in rows[0]["times"]
     lines = [_header("Single-state forward dynamics, uniform chain of N links"),
              "Model: `chain_model(N)` (unit links, revolute joints, gravity -9.81 y), random q, q̇, τ.\n"]
+    if "ratio" in rows[0]:
+        lines += ["## Headline: ABA / pin.aba, measured interleaved\n",
+                  "`aba` (`planargeo.algorithms.aba.forward_dynamics`, one state as float64 arrays: the compiled "
+                  "plan) and `pin.aba` alternate in short blocks over 25 rounds (thread CPU time). *best*: ratio "
+                  "of the best blocks; *median*: median of the per-round ratios. `chain_model` has zero placement "
+                  "angles and y offsets, folded out of the plan; `random_model(N)` (random placements, coms, "
+                  "revolute and prismatic joints) has none.\n",
+                  "| N | pin.aba µs | aba µs | chain: best | chain: median | random_model: best | "
+                  "random_model: median |", "|---:|---:|---:|---:|---:|---:|---:|"]
+        for r in rows:
+            a, b = r["ratio"], r["ratio_random"]
+            lines.append(f"| {r['N']} | {_fmt_us(r['times']['pinocchio'])} | {_fmt_us(r['times']['aba'])} | "
+                         f"{a['best']:.1f}× | {a['median']:.1f}× | {b['best']:.1f}× | {b['median']:.1f}× |")
+        lines += ["", "## All methods\n"]
     cols = ["N"] + (["pin.aba µs"] if has_pin else []) + [f"{n} µs" for n in names]
     cols += [f"{n} / pin" for n in names] if has_pin else []
     lines.append("| " + " | ".join(cols) + " |")
