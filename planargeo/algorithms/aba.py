@@ -399,6 +399,10 @@ def _plan_source(kinds, parents, zero, with_fext):
         src, atom = expr(terms)
         if src is None:
             return atom
+        if src.startswith("-") and " + " not in src:   # all terms negative: store the opposite
+            src, atom = expr([[(True, "1")] + t for t in terms])
+            emit(f"    {name} = {src}")
+            return (True, name)
         emit(f"    {name} = {src}")
         return (False, name)
 
@@ -567,8 +571,13 @@ def _plan_source(kinds, parents, zero, with_fext):
             a0 = let(f"a0_{i}", [[a0p], [neg(a2p), ry], [k0]])
             a1 = let(f"a1_{i}", [[a1p], [a2p, rx], [k1]])
             a02, a12, Di, uu = B["acc"]
-            qdd = let_scaled(f"qdd{i}", Di, [[uu], [neg(a02), a0], [neg(a12), a1]])
-            qdd = let(f"qdd{i}", [[qdd], [neg(a2p)]])
+            src, atom = expr([[uu], [neg(a02), a0], [neg(a12), a1]])
+            if src is not None and a2p is not None:   # q̈ = D⁻¹ (u - Uᵀ a') - a'_2, one statement
+                emit(f"    qdd{i} = {text(Di)}*({src}) - {text(a2p)}")
+                qdd = (False, f"qdd{i}")
+            else:
+                qdd = let_scaled(f"qdd{i}", Di, [[uu], [neg(a02), a0], [neg(a12), a1]])
+                qdd = let(f"qdd{i}", [[qdd], [neg(a2p)]])
             out.append(qdd)
             if nchild[i]:
                 B["a"] = (a0, a1, let(f"a2_{i}", [[a2p], [qdd]]))
@@ -748,17 +757,22 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
            [  0.   ]])
     """
     # one state as float64 vectors: a cheap check (shapes; finite iff the sum is), then the compiled plan
-    nq = model.nq
     if (type(q) is _ndarray and type(qd) is _ndarray and type(tau) is _ndarray and q.dtype is _F64
-            and qd.dtype is _F64 and tau.dtype is _F64 and q.shape == qd.shape == tau.shape == (nq,)
-            and (f_ext is None or (type(f_ext) is _ndarray and f_ext.dtype is _F64
-                                   and f_ext.shape == (model.N, 3)))):
-        plan = _plan(model, f_ext is not None)
-        if plan is not None:
-            ql, qdl, taul = q.tolist(), qd.tolist(), tau.tolist()
-            fe = None if f_ext is None else f_ext.ravel().tolist()
-            if _isfinite(sum(ql) + sum(qdl) + sum(taul) + (0.0 if fe is None else sum(fe))):
-                return _array(plan[0](plan[1], ql, qdl, taul, fe))
+            and qd.dtype is _F64 and tau.dtype is _F64 and q.ndim == 1 and q.shape == qd.shape == tau.shape):
+        if f_ext is None:
+            plan = model._arrays.get("aba_plan0")
+            if plan is None:
+                plan = model._arrays["aba_plan0"] = _plan(model, False) or False
+            if plan and len(q) == model.nq:
+                ql, qdl, taul = q.tolist(), qd.tolist(), tau.tolist()
+                if _isfinite(sum(ql) + sum(qdl) + sum(taul)):
+                    return _array(plan[0](plan[1], ql, qdl, taul, None))
+        elif type(f_ext) is _ndarray and f_ext.dtype is _F64 and f_ext.shape == (model.N, 3):
+            plan = _plan(model, True)
+            if plan is not None and len(q) == model.nq:
+                ql, qdl, taul, fe = q.tolist(), qd.tolist(), tau.tolist(), f_ext.ravel().tolist()
+                if _isfinite(sum(ql) + sum(qdl) + sum(taul) + sum(fe)):
+                    return _array(plan[0](plan[1], ql, qdl, taul, fe))
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
     table = _scalar_tables(model)
     if table is None:
