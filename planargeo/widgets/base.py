@@ -96,7 +96,14 @@ def fmt(x: Any, digits: int = 4) -> str:
             return f"{x:.{digits - 1}e}"
         return f"{x:.{digits}g}"
     if isinstance(x, (tuple, list, np.ndarray)):
-        return "(" + ", ".join(fmt(v, digits) for v in np.ravel(x)) + ")"
+        a = np.ravel(np.asarray(x, dtype=object))
+        try:  # components at rounding level relative to the largest are shown as 0
+            f = np.asarray(a, dtype=float)
+            big = np.max(np.abs(f[np.isfinite(f)]), initial=0.0)
+            a = np.where(np.isfinite(f) & (np.abs(f) <= 1e-12 * big), 0.0, f)
+        except (TypeError, ValueError):
+            pass
+        return "(" + ", ".join(fmt(v, digits) for v in a) + ")"
     return html.escape(str(x))
 
 
@@ -115,7 +122,7 @@ class Step:
         return W.FloatSlider(value=self.value, min=self.lo, max=self.hi, step=self.step,
                              description=self.label or name, continuous_update=True,
                              readout_format=".3g", style={"description_width": "initial"},
-                             layout=W.Layout(width="360px"))
+                             layout=W.Layout(width="310px"))
 
 
 class Explorer:
@@ -190,7 +197,7 @@ class Explorer:
                                       visible=False)
 
         # widgets ---------------------------------------------------------------
-        self.readout = W.HTML(layout=W.Layout(min_width="220px"))
+        self.readout = W.HTML(layout=W.Layout(width="230px"))
         self.message_box = W.HTML(layout=W.Layout(min_height="1.5em"))
         self.reset_button = W.Button(description="Reset", icon="undo",
                                      tooltip="Return every control to its default")
@@ -366,7 +373,7 @@ class Explorer:
         if self.display_mode == "ipympl":
             fig_widget = self.fig.canvas
         elif self.display_mode == "image":
-            self.image = W.Image(format="png", layout=W.Layout(width="auto"))
+            self.image = W.Image(format="png", layout=W.Layout(width="400px", height="auto"))
             fig_widget = self.image
         else:
             self.image = None
@@ -374,7 +381,7 @@ class Explorer:
         buttons = W.HBox([self.reset_button, self.export_button])
         controls = W.VBox(list(self.controls.values()) + self.extra_widgets() + [buttons,
                                                                                 self.export_label],
-                          layout=W.Layout(min_width="370px", overflow="visible"))
+                          layout=W.Layout(min_width="320px", overflow="visible"))
         right = W.VBox([W.HTML("<b>Readout</b>"), self.readout, self.message_box])
         head = W.HTML(f"<h4 style='margin:2px'>{html.escape(self.title)}</h4>")
         body = W.HBox([controls, fig_widget, right],
@@ -460,10 +467,10 @@ class Explorer:
 
     def _readout_html(self, values: dict[str, Any]) -> str:
         rows = "".join(
-            f"<tr><td style='padding-right:8px'>{html.escape(str(k))}</td>"
-            f"<td style='text-align:right;font-family:monospace'>{fmt(v)}</td></tr>"
+            f"<tr><td style='padding-right:6px;line-height:1.2'>{html.escape(str(k))}</td>"
+            f"<td style='text-align:right;font-family:monospace;line-height:1.2'>{fmt(v)}</td></tr>"
             for k, v in values.items() if not str(k).startswith("_"))
-        return f"<table class='planargeo-readout'>{rows}</table>"
+        return f"<table class='planargeo-readout' style='font-size:12px'>{rows}</table>"
 
     def _export_clicked(self) -> None:
         try:

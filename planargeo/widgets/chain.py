@@ -93,7 +93,7 @@ class ChainExplorer(Explorer):
     def make_controls(self):
         c = {
             "links": W.IntSlider(value=4, min=1, max=NMAX, description="links",
-                                 style={"description_width": "initial"}, layout=W.Layout(width="330px")),
+                                 style={"description_width": "initial"}, layout=W.Layout(width="310px")),
             "joints": W.Dropdown(options=JOINT_SETS, value="revolute", description="joints"),
             "angle": Step(-180, 180, 1, -30, "angle (deg)").make("angle"),
             "bend": Step(-90, 90, 1, 20, "bend (deg)").make("bend"),
@@ -106,7 +106,7 @@ class ChainExplorer(Explorer):
             c[name] = W.Checkbox(value=name in ("velocity poles", "internal forces"), description=name,
                                  indent=False)
         c["frame"] = W.IntSlider(value=0, min=0, max=0, description="frame",
-                                 layout=W.Layout(width="330px"), disabled=True)
+                                 layout=W.Layout(width="310px"), disabled=True)
         return c
 
     def __init__(self, *, duration: float = 3.0, fps: int = 25, **kw):
@@ -217,7 +217,7 @@ class ChainExplorer(Explorer):
         chain = np.vstack([w.origin[:1]] + [np.vstack([w.pose[i, :2], ends[i]]) for i in range(n)])
         self.links_line.set_data(chain[:, 0], chain[:, 1])
         del pts
-        reach = 1.2 * n + 0.5
+        reach = n + 0.4
         if self.ax.get_xlim()[1] != reach:
             self.ax.set_xlim(-reach, reach)
             self.ax.set_ylim(-reach, reach)
