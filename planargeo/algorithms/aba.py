@@ -783,11 +783,18 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     nq, N = model.nq, model.N
     B = int(np.prod(shape))
     if B <= SMALL_BATCH:   # numpy's per-call overhead dominates: state by state on floats
-        qb, qdb, taub = (np.broadcast_to(x, shape + (nq,)).reshape(B, nq) for x in (q, qd, tau))
-        feb = None if f_ext is None else np.broadcast_to(f_ext, shape + (N, 3)).reshape(B, N, 3)
-        res = np.array([_single(model, table, qb[k], qdb[k], taub[k], None if feb is None else feb[k])
-                        for k in range(B)])
-        return res.reshape(shape + (nq,))
+        qb, qdb, taub = ((x if x.shape == shape + (nq,) else np.broadcast_to(x, shape + (nq,))).reshape(B, nq).tolist()
+                         for x in (q, qd, tau))
+        plan = _plan(model, f_ext is not None)
+        if plan is None:
+            feb = None if f_ext is None else np.broadcast_to(f_ext, shape + (N, 3)).reshape(B, N, 3).tolist()
+            res = [_aba_components(model, table, qb[k], qdb[k], taub[k], None if feb is None else feb[k])
+                   for k in range(B)]
+        else:
+            feb = None if f_ext is None else np.broadcast_to(f_ext, shape + (N, 3)).reshape(B, 3 * N).tolist()
+            fn, C = plan
+            res = [fn(C, qb[k], qdb[k], taub[k], None if feb is None else feb[k]) for k in range(B)]
+        return np.array(res).reshape(shape + (nq,))
 
     def rows(x):
         return np.ascontiguousarray(np.broadcast_to(x, shape + (nq,)).reshape(B, nq).T)
