@@ -148,3 +148,17 @@ def test_small_batches_use_the_plan_state_by_state():
     f_ext = rng.normal(size=(4, m.N, 3))
     out = forward_dynamics(m, q, qd, tau, f_ext)
     assert _rel(out, _general(m, q, qd, tau, f_ext)) < 1e-12
+
+
+@pytest.mark.parametrize("tree", [False, True])
+def test_packed_plans_equal_general_path(monkeypatch, tree):
+    """Plans for many bodies keep per-body values in tuples between passes: same results."""
+    monkeypatch.setattr(aba, "PACK_BODIES", 2)
+    for seed, kinds in enumerate(KINDS):
+        m = random_model(9, seed=seed, kinds=kinds, tree=tree, gravity=(1.5, -9.81))
+        if m.nq == 0:
+            continue
+        q, qd, tau, f_ext = _state(m, seed)
+        assert _rel(forward_dynamics(m, q, qd, tau), _general(m, q, qd, tau)) < 1e-12
+        assert _rel(forward_dynamics(m, q, qd, tau, f_ext), _general(m, q, qd, tau, f_ext)) < 1e-12
+        assert m._arrays["aba_plan"][0][-1] is True     # the packed layout was used

@@ -341,6 +341,8 @@ _PLAN_KINDS = {"revolute": 1, "prismatic": 2, "fixed": 0}
 _PLANS: dict = {}
 #: single states of models with more bodies than this use the loop of :func:`_aba_components`
 MAX_PLAN_BODIES = 400
+#: plans for more bodies than this keep each body's values in a tuple between passes
+PACK_BODIES = 64
 _cos, _sin = math.cos, math.sin
 
 
@@ -350,7 +352,12 @@ def _singular_float(D, scale, i):
         scale / D if D > 0 else math.inf)
 
 
-def _plan_source(kinds, parents, zero, with_fext):
+def _packed(N):
+    """Whether the plan for ``N`` bodies keeps per-body values in tuples between passes (fewer locals)."""
+    return N > PACK_BODIES
+
+
+def _plan_source(kinds, parents, zero, with_fext, pack=None):
     """Python source of thesis 3.6 for one state of one topology (see the comment above).
 
     ``kinds``: 1 revolute, 2 prismatic, 0 fixed; ``zero``: which of the
@@ -414,28 +421,54 @@ def _plan_source(kinds, parents, zero, with_fext):
         emit(f"    {name} = {text(scale)}*({src})")
         return (False, name)
 
-    names = []
+    names, gnames, bnames = [], [], [[] for _ in range(N)]
+    if pack is None:
+        pack = _packed(N)
 
-    def const(name, k):
+    def const(name, k, group):
         if zero[k]:
             return None
         names.append(name)
+        group.append(name)
         return (False, name)
 
-    gx, gy = const("gx", 0), const("gy", 1)
+    gx, gy = const("gx", 0, gnames), const("gy", 1, gnames)
     cst = []
     for i in range(N):
-        cst.append([const(f"{c}{i}", 2 + 7 * i + k)
+        cst.append([const(f"{c}{i}", 2 + 7 * i + k, bnames[i])
                     for k, c in enumerate(("px", "py", "pth", "m", "hx", "hy", "Jo"))])
     emit("def aba_plan(C, q, qd, tau, fe):")
-    if names:
-        emit("    " + ", ".join(names) + ", = C")
     nq = sum(1 for k in kinds if k)
-    if nq:
-        for v in ("q", "qd", "tau"):
-            emit("    " + ", ".join(f"{v}{k}" for k in range(nq)) + f", = {v}")
-    if with_fext:
-        emit("    " + ", ".join(f"F{c}_{i}" for i in range(N) for c in "xyn") + ", = fe")
+    if not pack:
+        if names:
+            emit("    " + ", ".join(names) + ", = C")
+        if nq:
+            for v in ("q", "qd", "tau"):
+                emit("    " + ", ".join(f"{v}{k}" for k in range(nq)) + f", = {v}")
+        if with_fext:
+            emit("    " + ", ".join(f"F{c}_{i}" for i in range(N) for c in "xyn") + ", = fe")
+    else:   # many bodies: read constants and inputs where they are needed
+        if gnames:
+            emit("    " + ", ".join(gnames) + ", = C[0]")
+    stashed = {}
+
+    def stash(name, atoms):
+        seen = list(dict.fromkeys(a[1] for a in atoms if a is not None and a[1].isidentifier()))
+        stashed[name] = seen
+        emit(f"    {name} = ({', '.join(seen)}{',' if len(seen) == 1 else ''})")
+
+    def unstash(name):
+        if stashed[name]:
+            emit(f"    {', '.join(stashed[name])}, = {name}")
+
+    unpacked = set()
+
+    def need(i):
+        if pack and i not in unpacked:
+            unpacked.add(i)
+            unstash(f"T{i}")
+            if "tau" in body[i]:
+                emit(f"    {body[i]['tau'][1]} = tau[{body[i]['tau'][1][3:]}]")
     ground = dict(c=ONE, s=None, th=None, v=(None, None, None), o=(None, None))
     body = []
     k = 0
@@ -446,6 +479,12 @@ def _plan_source(kinds, parents, zero, with_fext):
         px, py, pth, m, mcbx, mcby, Jo = cst[i]
         cp, sp = P["c"], P["s"]
         emit(f"    # body {i}: {('fixed', 'revolute', 'prismatic')[kind]} joint on {'the ground' if p < 0 else p}")
+        if pack:
+            emit(f"    {', '.join(bnames[i])}, = C[{i + 1}]")
+            if kind:
+                emit(f"    q{k} = q[{k}]; qd{k} = qd[{k}]")
+            if with_fext:
+                emit(f"    Fx_{i} = fe[{3 * i}]; Fy_{i} = fe[{3 * i + 1}]; Fn_{i} = fe[{3 * i + 2}]")
         rx = let(f"rx{i}", [[cp, px], [neg(sp), py]])      # joint frame origin - o_parent
         ry = let(f"ry{i}", [[sp, px], [cp, py]])
         phi = let(f"phi{i}", [[P["th"]], [pth]])
@@ -500,9 +539,12 @@ def _plan_source(kinds, parents, zero, with_fext):
                   let(f"d1_{i}", [[w, f0], e[1]]),
                   let(f"d2_{i}", [[vx, f1], [neg(vy), f0], e[2], e[3], e[4]])]
         body.append(B)
+        if pack:   # what the inward pass needs, in one local
+            stash(f"T{i}", [*B["r"], *B["kap"], *B["A"], *B["d"]])
     # 3. articulated inertias and bias forces, tip to base (3.35-3.39)
     IDX = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))
-    for i in range(N - 1, -1, -1):
+
+    def inward(i):
         B = body[i]
         kind, p = B["kind"], B["p"]
         A, d, (k0, k1) = B["A"], B["d"], B["kap"]
@@ -519,7 +561,7 @@ def _plan_source(kinds, parents, zero, with_fext):
             uu = let(f"u{i}", [[B["tau"]], [neg(d[2])]])
             B["acc"] = (a02, a12, Di, uu)
             if p < 0:
-                continue
+                return
             b = [let(f"b00_{i}", [[a00], [neg(W0), a02]]), let(f"b01_{i}", [[a01], [neg(W0), a12]]), None,
                  let(f"b11_{i}", [[a11], [neg(W1), a12]]), None, None]
             e = [let(f"e0_{i}", [[b[0], k0], [b[1], k1], [d[0]], [W0, uu]]),
@@ -540,13 +582,13 @@ def _plan_source(kinds, parents, zero, with_fext):
                 uu = let(f"u{i}", [[B["tau"]], [neg(cs), c[0]], [neg(ss), c[1]]])
                 B["acc"] = (U, Di, uu)
                 if p < 0:
-                    continue
+                    return
                 W = [let(f"W{j}_{i}", [[U[j], Di]]) for j in range(3)]
                 b = [let(f"b{j}{l}_{i}", [[A[n]], [neg(W[j]), U[l]]]) for n, (j, l) in enumerate(IDX)]
                 e = [let(f"e{j}_{i}", [[c[j]], [W[j], uu]]) for j in range(3)]
             else:
                 if p < 0:
-                    continue
+                    return
                 b, e = A, c
         # move (b, e) from o_i to o_parent: n' = n + r x F; inertia congruently
         rx, ry = B["r"]
@@ -554,15 +596,30 @@ def _plan_source(kinds, parents, zero, with_fext):
         P12 = let(f"P12_{i}", [[b[4]], [neg(ry), b[1]], [rx, b[3]]])
         P22 = let(f"P22_{i}", [[b[5]], [neg(ry), b[2]], [neg(ry), P02], [rx, b[4]], [rx, P12]])
         E2 = let(f"E2_{i}", [[e[2]], [rx, e[1]], [neg(ry), e[0]]])
+        need(p)
         Q = body[p]
         for n, x in enumerate((b[0], b[1], P02, b[3], P12, P22)):
             Q["A"][n] = let(f"A{IDX[n][0]}{IDX[n][1]}_{p}", [[Q["A"][n]], [x]])
         for j, x in enumerate((e[0], e[1], E2)):
             Q["d"][j] = let(f"d{j}_{p}", [[Q["d"][j]], [x]])
+    for i in range(N - 1, -1, -1):
+        need(i)
+        inward(i)
+        if pack:   # what the outward pass needs, in one local
+            B = body[i]
+            keep = [*B["r"], *B["kap"]]
+            if B["kind"] == 1:
+                keep += B["acc"]
+            elif B["kind"] == 2:
+                keep += [*B["acc"][0], *B["acc"][1:], B["c"], B["s"]]
+            stash(f"S{i}", keep)
+
     # 4. accelerations, base to tip (3.40-3.42); a_ground = -g
     out = []
     for i in range(N):
         B = body[i]
+        if pack:
+            unstash(f"S{i}")
         kind, p = B["kind"], B["p"]
         a0p, a1p, a2p = (neg(gx), neg(gy), None) if p < 0 else body[p]["a"]
         rx, ry = B["r"]
@@ -684,7 +741,12 @@ def _plan_constants(model: Model):
         m, (cx, cy), J = float(b.mass), b.com, float(b.inertia)
         C += [float(x) for x in j.placement] + [m, m * cx, m * cy, J + m * (cx * cx + cy * cy)]
     zero = tuple(c == 0.0 for c in C)
-    return (tuple(kinds), tuple(model.parents), zero), tuple(c for c in C if c != 0.0)
+    pack = _packed(model.N)
+    key = (tuple(kinds), tuple(model.parents), zero, pack)
+    if not pack:
+        return key, tuple(c for c in C if c != 0.0)
+    groups = [C[:2]] + [C[2 + 7 * i:9 + 7 * i] for i in range(model.N)]
+    return key, tuple(tuple(c for c in g if c != 0.0) for g in groups)
 
 
 def _plan(model: Model, with_fext: bool):
@@ -702,7 +764,8 @@ def _plan(model: Model, with_fext: bool):
     if fn is None:
         if len(_PLANS) >= 256:
             _PLANS.clear()
-        src = _plan_source(*key, with_fext)
+        kinds, parents, zero, pack = key
+        src = _plan_source(kinds, parents, zero, with_fext, pack)
         ns: dict = {}
         exec(compile(src, f"<aba plan N={len(key[0])}>", "exec"), globals(), ns)
         fn = _PLANS[fkey] = ns["aba_plan"]
