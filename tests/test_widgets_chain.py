@@ -138,3 +138,18 @@ def test_active_part_hidden_without_torque_shown_with_it():
     for i in range(3):
         x, y = w.origin[i]
         assert np.dot([y, -x, 1.0], ex.t_art[i].get_line()) == pytest.approx(5.0)
+
+
+def test_torque_on_one_joint_only():
+    ex = ChainExplorer(display="agg", links=3, speed=0.0, torque=0.0, gravity=False)
+    assert ex.readout_values["qdd[1]"] == pytest.approx(0.0, abs=1e-12)
+    ex.set(torque=2.0, **{"torque on": "last joint"})
+    # only the tip joint is driven; at rest without gravity the only external load is the
+    # base pin, which carries no moment about the origin (τ1 = 0): Σ (I_i a_i)_z = 0
+    w = ex.state["w"]
+    assert np.array(w.tau) == pytest.approx([0.0, 0.0, 2.0])
+    assert ex.readout_values["qdd[3]"] > 0
+    moment = sum((w.I[i] @ w.a[i])[2] for i in range(3))
+    assert moment == pytest.approx(0.0, abs=1e-9)
+    ex.controls["torque on"].value = "first joint"
+    assert np.array(ex.state["w"].tau) == pytest.approx([2.0, 0.0, 0.0])

@@ -154,7 +154,7 @@ class Explorer:
     title: str = "Explorer"
     #: Short name used for exported file names.
     slug: str = "explorer"
-    #: Readout keys shown (in this order); others are kept in readout_values only.
+    #: Figure size (inches) and resolution of the rendered image.
     figsize: tuple[float, float] = (6.0, 5.0)
     dpi: int = 90
 

@@ -1,7 +1,9 @@
 """Chain explorer: an N-link planar chain with its geometric overlays (thesis ch. 4, 6, 7).
 
-Controls set the number of links (1-20), the joint types, the joint angles
-(first joint and a common bend for the others), speeds and torques, and
+Controls set the number of links (1-20), the joint types (all revolute, all
+prismatic, or alternating), the joint angles (first joint and a common bend
+for the others), the joint speeds, a torque (on all joints, the first or the
+last), and
 toggle overlays drawn with :mod:`planargeo.draw`:
 
 * velocity poles ``v_i`` (points, 4.5) and acceleration poles ``a_i`` (4.6),
@@ -39,6 +41,7 @@ NMAX = 20
 OVERLAYS = ("velocity poles", "acceleration poles", "bias terms", "internal forces",
             "T/U split", "articulated inertias")
 JOINT_SETS = ("revolute", "prismatic", "alternating")
+TORQUE_ON = ("all joints", "first joint", "last joint")
 
 
 def chain_for(n: int, joints: str = "revolute", gravity: bool = True, length: float = 1.0,
@@ -100,6 +103,7 @@ class ChainExplorer(Explorer):
             "slide": Step(-0.5, 1.0, 0.05, 0.2, "slide (m)").make("slide"),
             "speed": Step(-5, 5, 0.1, 1.0, "speed").make("speed"),
             "torque": Step(-50, 50, 0.5, 0.0, "torque").make("torque"),
+            "torque on": W.Dropdown(options=TORQUE_ON, value="all joints", description="torque on"),
             "gravity": W.Checkbox(value=True, description="gravity"),
         }
         for name in OVERLAYS:
@@ -179,11 +183,15 @@ class ChainExplorer(Explorer):
             else:
                 q[i] = v["slide"]
         qd = np.full(model.nq, float(v["speed"]))
-        tau = np.full(model.nq, float(v["torque"]))
+        tau = np.zeros(model.nq)
+        sel = {"all joints": slice(None), "first joint": slice(0, 1),
+               "last joint": slice(model.nq - 1, None)}[v["torque on"]]
+        tau[sel] = float(v["torque"])
         return model, q, qd, tau
 
     def compute(self, v, changed):
-        if changed & {"links", "joints", "angle", "bend", "slide", "speed", "torque", "gravity"}:
+        if changed & {"links", "joints", "angle", "bend", "slide", "speed", "torque", "torque on",
+                      "gravity"}:
             self._invalidate_trajectory()
         model, q, qd, tau = self.initial_state(v)
         t = 0.0
