@@ -162,3 +162,18 @@ def test_packed_plans_equal_general_path(monkeypatch, tree):
         assert _rel(forward_dynamics(m, q, qd, tau), _general(m, q, qd, tau)) < 1e-12
         assert _rel(forward_dynamics(m, q, qd, tau, f_ext), _general(m, q, qd, tau, f_ext)) < 1e-12
         assert m._arrays["aba_plan"][0][-1] is True     # the packed layout was used
+
+
+def test_large_models_compile_on_reuse(monkeypatch):
+    """A one-off call on a large model runs the float loop; the plan is compiled once the model is reused."""
+    monkeypatch.setattr(aba, "EAGER_PLAN_BODIES", 3)
+    m = random_model(7, seed=31, kinds=("revolute", "prismatic", "fixed"), tree=True)
+    q, qd, tau, f_ext = _state(m, 31)
+    ref = _general(m, q, qd, tau)
+    first = forward_dynamics(m, q, qd, tau)
+    assert "aba_plan0" not in m._arrays
+    assert _rel(first, ref) < 1e-12
+    for _ in range(3):
+        assert _rel(forward_dynamics(m, q, qd, tau), ref) < 1e-12
+    assert "aba_plan0" in m._arrays
+    assert _rel(forward_dynamics(m, q, qd, tau, f_ext), _general(m, q, qd, tau, f_ext)) < 1e-12

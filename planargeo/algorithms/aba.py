@@ -341,6 +341,8 @@ _PLAN_KINDS = {"revolute": 1, "prismatic": 2, "fixed": 0}
 _PLANS: dict = {}
 #: single states of models with more bodies than this use the loop of :func:`_aba_components`
 MAX_PLAN_BODIES = 400
+#: plans for more bodies than this are compiled only when the model is used again (the float loop meanwhile)
+EAGER_PLAN_BODIES = 64
 #: plans for more bodies than this keep each body's values in a tuple between passes
 PACK_BODIES = 64
 _cos, _sin = math.cos, math.sin
@@ -750,7 +752,12 @@ def _plan_constants(model: Model):
 
 
 def _plan(model: Model, with_fext: bool):
-    """The compiled single-state function and its constants for ``model`` (cached), or None."""
+    """The compiled single-state function and its constants for ``model`` (cached), or None.
+
+    None for unsupported joint kinds or too many bodies (see ``MAX_PLAN_BODIES``), and
+    for the first calls on a large model (``EAGER_PLAN_BODIES``): callers then run
+    the float loop of :func:`_aba_components`.
+    """
     cache = model._arrays
     entry = cache.get("aba_plan")
     if entry is None:
@@ -762,6 +769,10 @@ def _plan(model: Model, with_fext: bool):
     fkey = key + (with_fext,)
     fn = _PLANS.get(fkey)
     if fn is None:
+        if len(key[0]) > EAGER_PLAN_BODIES:   # compiling takes ~5 ms per body: not for a one-off call
+            calls = cache["aba_plan_calls"] = cache.get("aba_plan_calls", 0) + 1
+            if calls < 4:
+                return None
         if len(_PLANS) >= 256:
             _PLANS.clear()
         kinds, parents, zero, pack = key
@@ -823,10 +834,9 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     if (type(q) is _ndarray and type(qd) is _ndarray and type(tau) is _ndarray and q.dtype is _F64
             and qd.dtype is _F64 and tau.dtype is _F64 and q.ndim == 1 and q.shape == qd.shape == tau.shape):
         if f_ext is None:
-            plan = model._arrays.get("aba_plan0")
-            if plan is None:
-                plan = model._arrays["aba_plan0"] = _plan(model, False) or False
-            if plan and len(q) == model.nq:
+            plan = model._arrays.get("aba_plan0") or _plan(model, False)
+            if plan is not None and len(q) == model.nq:
+                model._arrays["aba_plan0"] = plan
                 ql, qdl, taul = q.tolist(), qd.tolist(), tau.tolist()
                 if _isfinite(sum(ql) + sum(qdl) + sum(taul)):
                     return _array(plan[0](plan[1], ql, qdl, taul, None))
