@@ -100,3 +100,27 @@ def test_drag_moves_the_point(ex):
     # a move without a press on the point does nothing
     canvas.callbacks.process("motion_notify_event", MouseEvent("motion_notify_event", canvas, x0, y0))
     assert ex.values["P x"] == pytest.approx(-1.0, abs=0.02)
+
+
+def test_ideal_point_maps_to_a_diameter_and_line_at_infinity_to_the_centre(ex):
+    # thesis 5.2.2: a point at infinity maps to a line through the centre, the line at
+    # infinity to the centre (here the circle's centre is the origin)
+    ex.set(**{"P at infinity": True, "P x": 1.0, "P y": 1.0, "M at infinity": True})
+    assert ex.message == ""
+    pol = ex.polar_art.get_line()
+    assert pol[2] == pytest.approx(0.0, abs=1e-12)                  # through the origin
+    assert np.dot(pol[:2], [1.0, 1.0]) == pytest.approx(0.0, abs=1e-12)  # ⟂ to the direction (circle)
+    assert ex.readout_values["pole of M"] == pytest.approx((0.0, 0.0), abs=1e-12)
+    assert ex.readout_values["P"] == "at infinity" and "at infinity" in ex.readout_values["P is"]
+    # the two tangents in that direction are parallel and touch the circle at ±r along the normal
+    shown = [a for a in ex.cpts_art if a.get_visible()]
+    assert len(shown) == 2
+    for a in shown:
+        X = a.get_xy()
+        assert np.hypot(*X) == pytest.approx(1.5)
+        assert np.dot(X, [1.0, 1.0]) == pytest.approx(0.0, abs=1e-9)
+    ex.fig.canvas.draw()
+    ex.set(**{"P x": 0.0, "P y": 0.0})                                # no direction: a message
+    assert "P x, P y" in ex.message
+    ex.set(**{"P at infinity": False})
+    assert ex.message == ""

@@ -11,7 +11,9 @@ For a real conic the geometric constructions of 5.2.2 follow the point:
   two poles, which the polar joins (Fig 5.3).
 
 The readout also shows the invariance of linear forms (5.40-5.41): the
-distance-like number ``P·M`` equals ``pole(M)·polar(P)``.
+distance-like number ``P·M`` equals ``pole(M)·polar(P)``.  Ideal elements are
+ordinary: put ``P`` at infinity (a direction) and its polar is a diameter, a
+line through the centre; the line at infinity has the centre as its pole.
 
 Under ``%matplotlib widget`` drag ``P`` with the mouse.
 """
@@ -27,6 +29,7 @@ from ..conics import (centre, classify, conic_circle, conic_ellipse, conic_hyper
                       tangents_from_point)
 from ..draw.artists import ConicArtist, LineArtist, PointArtist
 from ..draw.style import setup_axes
+from ..errors import DegenerateGeometryError
 from ..projective import from_xy
 from .base import Explorer, Step
 
@@ -89,6 +92,9 @@ class ProjectiveExplorer(Explorer):
             "a": Step(0.2, 3, 0.05, 1.5, "a").make("a"),
             "b": Step(0.2, 3, 0.05, 1.0, "b").make("b"),
             "tilt (deg)": Step(-90, 90, 1, 20, "tilt (deg)").make("tilt"),
+            "P at infinity": W.Checkbox(value=False, indent=False,
+                                        description="P at infinity (direction P x, P y)"),
+            "M at infinity": W.Checkbox(value=False, indent=False, description="M = line at infinity"),
             "construction": W.Checkbox(value=True, description="construction (5.2.2)", indent=False),
             "line and its pole": W.Checkbox(value=True, description="line and its pole",
                                             indent=False),
@@ -118,8 +124,15 @@ class ProjectiveExplorer(Explorer):
 
     def compute(self, v, changed):
         C = make_conic(v["conic"], v["a"], v["b"], v["tilt (deg)"])
-        P = from_xy([v["P x"], v["P y"]])
-        M = _line(v["line angle (deg)"], v["line offset"])
+        if v["P at infinity"]:
+            # the ideal point in the direction (dx, dy): [dy, -dx, 0] (conventions: direction (-b, a))
+            P = np.array([v["P y"], -v["P x"], 0.0])
+            if not np.any(P):
+                raise DegenerateGeometryError("P x, P y must not both be zero for a point at infinity")
+        else:
+            P = from_xy([v["P x"], v["P y"]])
+        M = np.array([0.0, 0.0, 1.0]) if v["M at infinity"] else _line(v["line angle (deg)"],
+                                                                       v["line offset"])
         ctype = classify(C)
         polarP = polar(C, P)
         poleM = pole(C, M)
@@ -127,10 +140,18 @@ class ProjectiveExplorer(Explorer):
               "where": "—", "tangents": None, "contacts": None, "interior": None}
         if ctype.reality == "real":
             res = float(P @ C @ P)
+            if P[2] == 0 and abs(res) <= 1e-12 * float(np.abs(C).max()) * float(P @ P):
+                # an ideal point on the conic (asymptote / parabola axis direction)
+                st["where"] = "on the conic (at infinity)"
+                return st
             T, X = tangents_from_point(C, P, on_interior="nan")
             if np.all(np.isfinite(T)):
                 st["tangents"], st["contacts"] = T, X
                 st["where"] = "on the conic" if abs(res) <= 1e-9 * np.abs(C).max() else "outside"
+                if P[2] == 0:
+                    st["where"] += " (at infinity)"
+            elif P[2] == 0:
+                st["where"] = "inside (at infinity)"
             else:
                 st["where"] = "inside"
                 st["interior"] = polar_construction_interior(C, P, on_miss="nan")
@@ -176,6 +197,7 @@ class ProjectiveExplorer(Explorer):
         F = float(np.hypot(pol[0], pol[1]))
         out = {
             "P x": v["P x"], "P y": v["P y"],
+            "P": _xy(P),
             "conic": str(st["type"]),
             "P is": st["where"],
             "polar of P: distance to origin": "line at infinity" if F == 0 else abs(pol[2]) / F,
