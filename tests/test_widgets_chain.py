@@ -153,3 +153,19 @@ def test_torque_on_one_joint_only():
     assert moment == pytest.approx(0.0, abs=1e-9)
     ex.controls["torque on"].value = "first joint"
     assert np.array(ex.state["w"].tau) == pytest.approx([2.0, 0.0, 0.0])
+
+
+def test_per_joint_lists_override_the_patterns():
+    ex = ChainExplorer(display="agg", links=2, gravity=False, speed=0.0, torque=0.0)
+    ex.set(**{"joint values (deg / m)": "90, -90", "joint speeds": "0, 0", "joint torques": "0, 1"})
+    w = ex.state["w"]
+    assert w.q == pytest.approx([math.pi / 2, -math.pi / 2])
+    # the tip of link 2 is at (1, 1): link 1 points up, link 2 turns back to +x
+    x, y = ex.links_line.get_data()
+    assert (x[-1], y[-1]) == pytest.approx((1.0, 1.0))
+    assert np.array(w.tau) == pytest.approx([0.0, 1.0])
+    good = dict(ex.readout_values)
+    ex.controls["joint torques"].value = "0, one"
+    assert "joint torques must be numbers" in ex.message and ex.readout_values == good
+    ex.controls["joint torques"].value = ""
+    assert ex.message == "" and np.array(ex.state["w"].tau) == pytest.approx([0.0, 0.0])

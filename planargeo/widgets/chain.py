@@ -3,7 +3,8 @@
 Controls set the number of links (1-20), the joint types (all revolute, all
 prismatic, or alternating), the joint angles (first joint and a common bend
 for the others), the joint speeds, a torque (on all joints, the first or the
-last), and
+last), and per joint (lists typed as ``30, -20, 10`` override those patterns joint by
+joint), and
 toggle overlays drawn with :mod:`planargeo.draw`:
 
 * velocity poles ``v_i`` (points, 4.5) and acceleration poles ``a_i`` (4.6),
@@ -35,7 +36,7 @@ from ..simulate import energy
 from ..subspaces import percussion_space
 from .base import Explorer, Step
 
-__all__ = ["ChainExplorer", "chain_for"]
+__all__ = ["ChainExplorer", "chain_for", "parse_list"]
 
 NMAX = 20
 OVERLAYS = ("velocity poles", "acceleration poles", "bias terms", "internal forces",
@@ -69,6 +70,32 @@ def chain_for(n: int, joints: str = "revolute", gravity: bool = True, length: fl
     bodies = [Body(m, (L / 2, 0.0), m * L * L / 12, name=f"link{i + 1}") for i in range(n)]
     js = [Joint(k, (0.0 if i == 0 else L, 0.0, 0.0), name=f"joint{i + 1}") for i, k in enumerate(kinds)]
     return Model(bodies, js, list(range(-1, n - 1)), (0.0, -9.81) if gravity else (0.0, 0.0))
+
+
+def _list_text(description: str, placeholder: str) -> W.Text:
+    return W.Text(value="", placeholder=placeholder, description=description,
+                  continuous_update=False, style={"description_width": "initial"},
+                  layout=W.Layout(width="310px"))
+
+
+def parse_list(text: str, name: str) -> list[float]:
+    """Numbers from ``"1, -2.5, 3"`` (empty text: no numbers); InputError naming ``name``.
+
+    Examples
+    --------
+    >>> parse_list("30, -20,0.5", "joint values")
+    [30.0, -20.0, 0.5]
+    >>> parse_list("  ", "joint values")
+    []
+    """
+    items = [t for t in text.replace(";", ",").split(",") if t.strip()]
+    try:
+        out = [float(t) for t in items]
+    except ValueError:
+        raise InputError(f"{name} must be numbers separated by commas, got {text!r}") from None
+    if not all(math.isfinite(x) for x in out):
+        raise InputError(f"{name} must be finite numbers, got {text!r}")
+    return out
 
 
 def _set_arrow_scale(art: LineArtist, scale: float) -> None:
@@ -105,6 +132,9 @@ class ChainExplorer(Explorer):
             "torque": Step(-50, 50, 0.5, 0.0, "torque").make("torque"),
             "torque on": W.Dropdown(options=TORQUE_ON, value="all joints", description="torque on"),
             "gravity": W.Checkbox(value=True, description="gravity"),
+            "joint values (deg / m)": _list_text("joint values (deg / m)", "e.g. 30, -20, 0.4"),
+            "joint speeds": _list_text("joint speeds", "e.g. 1, 0, -2"),
+            "joint torques": _list_text("joint torques", "e.g. 0, 5"),
         }
         for name in OVERLAYS:
             c[name] = W.Checkbox(value=name in ("velocity poles", "internal forces"), description=name,
@@ -187,11 +217,18 @@ class ChainExplorer(Explorer):
         sel = {"all joints": slice(None), "first joint": slice(0, 1),
                "last joint": slice(model.nq - 1, None)}[v["torque on"]]
         tau[sel] = float(v["torque"])
+        # per-joint values typed as lists override the patterns, joint by joint
+        for i, x in enumerate(parse_list(v["joint values (deg / m)"], "joint values")[:model.nq]):
+            q[i] = math.radians(x) if model.joints[i].kind == "revolute" else x
+        for i, x in enumerate(parse_list(v["joint speeds"], "joint speeds")[:model.nq]):
+            qd[i] = x
+        for i, x in enumerate(parse_list(v["joint torques"], "joint torques")[:model.nq]):
+            tau[i] = x
         return model, q, qd, tau
 
     def compute(self, v, changed):
         if changed & {"links", "joints", "angle", "bend", "slide", "speed", "torque", "torque on",
-                      "gravity"}:
+                      "gravity", "joint values (deg / m)", "joint speeds", "joint torques"}:
             self._invalidate_trajectory()
         model, q, qd, tau = self.initial_state(v)
         t = 0.0
