@@ -20,7 +20,7 @@ Multi-dof joints: the columns of ``s_i`` are sequential screws (2.2); column
 ``ṡ_j = (v_{λ(i)} + Σ_{k<j} s_k q̇_k) × s_j`` and
 ``kappa_i = v_{λ(i)} × s_i q̇_i + Σ_{k<j} (s_k q̇_k) × (s_j q̇_j)``.  For one-dof
 joints this is the printed ``v_i × s_i q̇_i`` (2.19); for multi-dof joints the
-printed form drops the cross terms (see ``docs/errata/dynamics-a.md``).
+printed form drops the cross terms (see ``docs/errata.md``).
 """
 from __future__ import annotations
 

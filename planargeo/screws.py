@@ -406,8 +406,8 @@ def kappa(twist, s, qd) -> np.ndarray:
 
     For one column (and for columns that commute, e.g. two translations) this
     is the printed ``v × s q̇`` of 2.19/4.61; for a multi-dof joint the printed
-    form drops the cross terms (see ``docs/errata/screws.md``, 4.77, and
-    ``docs/errata/dynamics-a.md`` §1).  Agrees with
+    form drops the cross terms (see ``docs/errata.md``, 4.77, and
+    ``docs/errata.md`` §1).  Agrees with
     :func:`planargeo.kinematics.kinematics` (``Data.kappa``).
 
     Parameters
@@ -1037,7 +1037,7 @@ def add_wrenches(f1, f2, rtol: float = 1e-12) -> WrenchSum:
     Two force lines are treated as parallel when
     ``|f1x f2y - f1y f2x| <= rtol F1 F2``.
 
-    Note: thesis 4.37 is misprinted (see ``docs/errata/screws.md``); the meet
+    Note: thesis 4.37 is misprinted (see ``docs/errata.md``); the meet
     point here is the exact ``L1 × L2``.
 
     Examples

@@ -223,7 +223,7 @@ def reactive_acceleration_space(R, A=None, *, s=None, T=None, what: str | None =
 
     The weighted pseudo-inverse of ``R``: ``RᵀU = 1`` (6.35), ``TᵀU = 0`` (6.46).
     Thesis 6.33 prints ``A⁻¹R (RᵀA⁻¹R)`` without the inverse (see
-    ``docs/errata/subspaces.md``).
+    ``docs/errata.md``).
 
     Parameters
     ----------

@@ -1,7 +1,7 @@
 """Twist addition (thesis 4.2, 4.11-4.16) and wrench addition (4.4, 4.33-4.46).
 
 References: the thesis closed forms (re-derived by hand; 4.37 corrected, see
-docs/errata/screws.md), and elementary statics/kinematics.
+docs/errata.md), and elementary statics/kinematics.
 """
 import numpy as np
 import pytest

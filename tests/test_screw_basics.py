@@ -3,7 +3,7 @@
 References are independent: 6x6 spatial operators of chapter 1/2 projected
 with D (4.1, 4.7), the closed forms printed in 4.66-4.83 (each re-derived by
 hand; all correct as printed except 4.77, which misses the sequential-screw
-cross term, see docs/errata/screws.md), and the parallel axis theorem.
+cross term, see docs/errata.md), and the parallel axis theorem.
 """
 import numpy as np
 import pytest

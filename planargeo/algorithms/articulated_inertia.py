@@ -15,7 +15,7 @@ From the tip to the base (7.2, 7.7a, 7.7b, 7.8)::
 
 with ``p_i = -(v_i×)^T I_i v_i - g_i`` (3.11).  The algorithm listing of 7.1.1
 prints ``+ g_i`` in ``d_N`` and ``d_i``; the applied loads enter with a minus
-sign (3.11, 3.34), see ``docs/errata/dynamics-b.md``.  On a tree each body
+sign (3.11, 3.34), see ``docs/errata.md``.  On a tree each body
 sums the projected contributions of all its children.
 """
 from __future__ import annotations

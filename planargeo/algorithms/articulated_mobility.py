@@ -17,7 +17,7 @@ From the base to the tip, with the body-inertia subspaces ``T_i = I_i s_i
 
 The thesis prints a minus sign before ``U_i R_i^T Lambda_{i-1}^-1`` in 7.36
 and 7.38a, and its listing 7.4.1 drops the applied loads ``g_i`` from
-``p_i``; both are corrected here (``docs/errata/dynamics-b.md``).  The
+``p_i``; both are corrected here (``docs/errata.md``).  The
 algorithm needs an unbranched chain whose first body hangs from the ground.
 """
 from __future__ import annotations

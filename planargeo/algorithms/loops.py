@@ -13,7 +13,7 @@ contact forces needed to close the loops are added (thesis 9.5):
 5. closed-loop accelerations ``a = u - Λ^{-1} G^T F`` (9.73) and
    ``q̈ = T^T (Δ a - κ)`` (9.75).
 
-Correction (``docs/errata/trees-loops.md``): in (9.65)-(9.73) ``Λ^{-1}`` must
+Correction (``docs/errata.md``): in (9.65)-(9.73) ``Λ^{-1}`` must
 be the tree's *full* stacked mobility ``Λ^{-1} = L^T S T^T A^{-1} L`` (block
 ``(i, j)``: acceleration of body ``i`` per unit wrench on body ``j``), not the
 block-diagonal ``{{Λ_i^{-1}}}`` of the chain mobilities (7.37): a contact force

@@ -113,7 +113,7 @@ def reactive_subspace(A, R, *, s=None, T=None, what: str | None = None) -> np.nd
     arguments in the order ``(A, R)``.  With ``s`` (and optionally ``T``) the
     inverse-free form ``U = (1 - s Tᵀ) R (RᵀR)⁻¹`` is used (point masses have
     a singular ``A``).  Thesis 6.33 misprints the inverse; see
-    ``docs/errata/subspaces.md``.
+    ``docs/errata.md``.
 
     Examples
     --------

@@ -10,7 +10,7 @@ the adjacency matrix ``C`` (Definition 41, 9.1) and the trunk matrix
   ``q̈ = T^T (Δ a - κ)`` (9.43);
 * the direct solution (9.48) from the articulated mobilities ``Λ^{-1}``, ``b``.
 
-Corrections to the printed equations (see ``docs/errata/trees-loops.md``):
+Corrections to the printed equations (see ``docs/errata.md``):
 
 * (9.27) ``A = I + C^T R U^T A C`` (printed without the trailing ``C``, which
   makes ``C^T R U^T A`` off-diagonal); hence (9.30) ``A = Σ_k (C^T R U^T)^k I C^k``,
@@ -175,7 +175,7 @@ def articulated_quantities(model: Model, data, tau):
     """Articulated inertias, bias forces and the subspaces ``T``, ``R U^T`` of every body (thesis 7.7a, 7.7b, 9.27-9.28).
 
     Recursion from the tips to the root (thesis 7.7a/7.7b, stacked 9.27/9.28
-    corrected, see ``docs/errata/trees-loops.md``): ``A = I + C^T R U^T A C`` and
+    corrected, see ``docs/errata.md``): ``A = I + C^T R U^T A C`` and
     ``d = p + C^T T Q + C^T R U^T (A κ + d)``, with ``T = A S (S^T A S)^{-1}``
     (9.19, 6.105; built by :func:`planargeo.subspaces.percussion_space`) and
     ``R U^T = 1 - T s^T`` (7.8), which needs neither a reaction basis nor ``A^{-1}``
@@ -429,7 +429,7 @@ def stacked_mobility(sol: StackedSolution) -> np.ndarray:
     """Full stacked mobility ``Φ = L^T S T^T A^{-1} L`` of the tree (thesis 9.39, 9.65-9.73 corrected).
 
     ``a = u - Φ w`` when wrenches ``-w`` are applied to the bodies (see
-    :attr:`StackedSolution.mobility` and ``docs/errata/trees-loops.md``).
+    :attr:`StackedSolution.mobility` and ``docs/errata.md``).
 
     Examples
     --------

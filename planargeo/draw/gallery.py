@@ -57,7 +57,7 @@ def readme(specs) -> str:
         "(radius of gyration about the centre of mass), constructions grey dashed",
         "(see `extra_style_key`).  Every figure is computed from planargeo's math modules and",
         "scenes; captions name the thesis figure and equations, and say where a printed result",
-        "was corrected (details in docs/errata/).  Not drawn: the spatial (3-D) figures 1.1,",
+        "was corrected (details in docs/errata.md).  Not drawn: the spatial (3-D) figures 1.1,",
         "1.4, 2.1, 3.3 and 8.1-8.4.",
         "",
         f"{len(specs)} figures: "

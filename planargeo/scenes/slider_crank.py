@@ -17,7 +17,7 @@ each body's joint, ``I_z = 0.1464 m₁ r², 0.0866 m₂ l², 0.666 m₃ t²``,
 (default 9.81, along -y) is a parameter (``g = 0`` gives the pure velocity
 effects).
 
-Note (erratum, ``docs/errata/trees-loops.md``): the printed state (9.78,
+Note (erratum, ``docs/errata.md``): the printed state (9.78,
 9.79) has ``θ = 1.603`` (the loop closes at ``θ = 1.6063``) and the signs of
 ``θ̇``, ``φ̇`` inverted: the closure gives ``q̇ = (20, -23.9343, 3.9343)``,
 which is the state behind the printed twists (9.80).

@@ -53,7 +53,7 @@ def fig7_1():
 
 
 @register("fig7_2", "Fig. 7.2 — articulated mobility Λ_i⁻¹ of a constrained chain (7.28–7.38, "
-          "corrected sign of 7.38a, see docs/errata/dynamics-b.md): the load −f_{i+1} on body i "
+          "corrected sign of 7.38a, see docs/errata.md): the load −f_{i+1} on body i "
           "accelerates it by a_i = −Λ_i⁻¹ f_{i+1} (at rest), including the bodies before it.", 7.02)
 def fig7_2():
     fig, ax = new_figure(3.4, 2.6)
@@ -157,7 +157,7 @@ def _lam_chart(key, ylabel, caption_n=(2, 3, 4)):
 
 @register("fig7_6", "Fig. 7.6 — relative location d/L of the effective centre of the first body over "
           "λ = L/ρ (7.26–7.27); n = 2 is the thesis's two-body system, n = 3, 4 added for comparison "
-          "(d/L = (λ²+12)/(2(λ²+8)) for n = 2, derived in docs/errata/dynamics-b.md).", 7.06)
+          "(d/L = (λ²+12)/(2(λ²+8)) for n = 2, derived in docs/errata.md).", 7.06)
 def fig7_6():
     return _lam_chart("d_over_L", "$d/L$")
 
@@ -195,7 +195,7 @@ def fig7_9():
 
 @register("fig7_10", "Fig. 7.10 — polar plot of the instant centre x/L of body 2 over φ for several "
           "η = L/ρ (7.47–7.49), computed with the corrected articulated mobility (the printed sign "
-          "of 7.38a gives e.g. 1.613 instead of 1.236 at φ = 45°, η = 2; docs/errata/dynamics-b.md).",
+          "of 7.38a gives e.g. 1.613 instead of 1.236 at φ = 45°, η = 2; docs/errata.md).",
           7.10)
 def fig7_10():
     import matplotlib.pyplot as plt

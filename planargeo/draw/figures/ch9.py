@@ -76,7 +76,7 @@ def _slider_crank_base(ax, res):
 
 @register("fig9_3", "Fig. 9.3 — slider-crank (scene 'slider-crank', thesis 9.6): relative rotations "
           "ψ, θ, φ with ψ + θ + φ = π/2; the state closes the loop at θ = 1.6063 (the printed 1.603 "
-          "and the signs of θ̇, φ̇ in 9.78–9.79 are corrected, docs/errata/trees-loops.md).", 9.03)
+          "and the signs of θ̇, φ̇ in 9.78–9.79 are corrected, docs/errata.md).", 9.03)
 def fig9_3():
     res = build_scene("slider-crank")
     fig, ax = new_figure(3.4, 3.4)
