@@ -313,7 +313,6 @@ def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.
     return qdd
 
 
-
 # -- single state: a compiled plan ---------------------------------------------
 #
 # One state of a model whose joints are all revolute, prismatic or fixed runs
@@ -329,7 +328,12 @@ def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.
 #   transform as ``(v + w × r, w)``, wrenches as ``(F, n + r × F)``, inertias
 #   congruently).  A revolute joint is then ``s = [0, 0, 1]``: ``U = A s`` is
 #   a column of ``A``, ``D = A_22`` and ``(1 - s s⁺)ᵀ A`` keeps only the 2×2
-#   force block, so each step costs a few flops.
+#   force block, so each step costs a few flops; the articulated bias force
+#   passed inwards has moment ``τ_i`` about the joint, and (3.41) reads
+#   ``q̈_i = D⁻¹ (u'_i - U_0 ā_0 - U_1 ā_1) - a'_2`` with ``u'_i = τ_i - d_i,2`` and
+#   ``ā = a' + κ_i`` (the parent's acceleration at o_i plus the bias term).
+#   Singularity is tested as ``D > SINGULAR_RTOL · trace(A)`` at o_i (|s| = 1
+#   there), the general path's test with the scale taken at o_i.
 # * Gravity enters as the base acceleration ``a_ground = -g`` (Featherstone's
 #   device): the gravity wrench of 3.34 on body i equals ``I_i (-g)``, so both
 #   give the same ``q̈``.
