@@ -177,3 +177,20 @@ def test_large_models_compile_on_reuse(monkeypatch):
         assert _rel(forward_dynamics(m, q, qd, tau), ref) < 1e-12
     assert "aba_plan0" in m._arrays
     assert _rel(forward_dynamics(m, q, qd, tau, f_ext), _general(m, q, qd, tau, f_ext)) < 1e-12
+
+
+@pytest.mark.parametrize("B", [1, 3])
+def test_few_states_agree_and_validate(B, monkeypatch):
+    """A few states as (B, nq) arrays take the cheap check and the plan state by state."""
+    m = random_model(5, seed=9, tree=True)
+    rng = np.random.default_rng(9)
+    q, qd, tau = rng.normal(size=(3, B, m.nq))
+    ref = _general(m, q, qd, tau)
+    with monkeypatch.context() as mp:
+        mp.setattr(aba, "check_state", lambda *a, **k: pytest.fail("check_state called"))
+        out = forward_dynamics(m, q, qd, tau)
+    assert out.shape == (B, m.nq)
+    assert _rel(out, ref) < 1e-12
+    qd[0, 1] = np.inf
+    with pytest.raises(NonFiniteError, match="qd"):
+        forward_dynamics(m, q, qd, tau)

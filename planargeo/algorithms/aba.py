@@ -834,22 +834,30 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     array([[-14.715],
            [  0.   ]])
     """
-    # one state as float64 vectors: a cheap check (shapes; finite iff the sum is), then the compiled plan
+    # float64 arrays of one state (or a few): a cheap check (shapes; finite iff the sum is), then the compiled plan
     if (type(q) is _ndarray and type(qd) is _ndarray and type(tau) is _ndarray and q.dtype is _F64
-            and qd.dtype is _F64 and tau.dtype is _F64 and q.ndim == 1 and q.shape == qd.shape == tau.shape):
-        if f_ext is None:
-            plan = model._arrays.get("aba_plan0") or _plan(model, False)
-            if plan is not None and len(q) == model.nq:
-                model._arrays["aba_plan0"] = plan
+            and qd.dtype is _F64 and tau.dtype is _F64 and q.shape == qd.shape == tau.shape):
+        if q.ndim == 1:
+            if f_ext is None:
+                plan = model._arrays.get("aba_plan0") or _plan(model, False)
+                if plan is not None and len(q) == model.nq:
+                    model._arrays["aba_plan0"] = plan
+                    ql, qdl, taul = q.tolist(), qd.tolist(), tau.tolist()
+                    if _isfinite(sum(ql) + sum(qdl) + sum(taul)):
+                        return _array(plan[0](plan[1], ql, qdl, taul, None))
+            elif type(f_ext) is _ndarray and f_ext.dtype is _F64 and f_ext.shape == (model.N, 3):
+                plan = _plan(model, True)
+                if plan is not None and len(q) == model.nq:
+                    ql, qdl, taul, fe = q.tolist(), qd.tolist(), tau.tolist(), f_ext.ravel().tolist()
+                    if _isfinite(sum(ql) + sum(qdl) + sum(taul) + sum(fe)):
+                        return _array(plan[0](plan[1], ql, qdl, taul, fe))
+        elif f_ext is None and q.ndim == 2 and q.shape[0] <= SMALL_BATCH and q.shape[1] == model.nq:
+            plan = model._arrays.get("aba_plan0") or _plan(model, False)   # (B, nq): state by state
+            if plan is not None:
                 ql, qdl, taul = q.tolist(), qd.tolist(), tau.tolist()
-                if _isfinite(sum(ql) + sum(qdl) + sum(taul)):
-                    return _array(plan[0](plan[1], ql, qdl, taul, None))
-        elif type(f_ext) is _ndarray and f_ext.dtype is _F64 and f_ext.shape == (model.N, 3):
-            plan = _plan(model, True)
-            if plan is not None and len(q) == model.nq:
-                ql, qdl, taul, fe = q.tolist(), qd.tolist(), tau.tolist(), f_ext.ravel().tolist()
-                if _isfinite(sum(ql) + sum(qdl) + sum(taul) + sum(fe)):
-                    return _array(plan[0](plan[1], ql, qdl, taul, fe))
+                if _isfinite(sum(map(sum, ql)) + sum(map(sum, qdl)) + sum(map(sum, taul))):
+                    fn, C = model._arrays["aba_plan0"] = plan
+                    return _array([fn(C, x, y, z, None) for x, y, z in zip(ql, qdl, taul)]).reshape(q.shape)
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
     table = _scalar_tables(model)
     if table is None:
