@@ -144,7 +144,7 @@ def _interleaved_ratio(m, budget, seed):
     pd = pm.createData()
     q, qd, tau = _state(m.nq, seed=seed)
     t = time_interleaved({"aba": lambda: forward_dynamics(m, q, qd, tau), "pin": lambda: pin.aba(pm, pd, q, qd, tau)},
-                         budget=2 * budget)
+                         budget=3 * budget, rounds=40)
     return min(t["aba"]), min(t["pin"]), ratio_stats(t, "aba", "pin")
 
 
@@ -251,7 +251,7 @@ def write_single(rows, out: Path) -> str:
     if "ratio" in rows[0]:
         lines += ["## Headline: ABA / pin.aba, measured interleaved\n",
                   "`aba` (`planargeo.algorithms.aba.forward_dynamics`, one state as float64 arrays: the compiled "
-                  "plan) and `pin.aba` alternate in short blocks over 25 rounds (thread CPU time). *best*: ratio "
+                  "plan) and `pin.aba` alternate in short blocks over 40 rounds (thread CPU time). *best*: ratio "
                   "of the best blocks; *median*: median of the per-round ratios. `chain_model` has zero placement "
                   "angles and y offsets, folded out of the plan; `random_model(N)` (random placements, coms, "
                   "revolute and prismatic joints) has none.\n",
