@@ -164,6 +164,11 @@ def test_ipympl_canvas_is_the_figure_widget():
         assert any(ex.fig.canvas is c for c in ex.widget.children[1].children)
         ex.controls["P x"].value = 1.0
         assert ex.message == "" and ex.readout_values["P x"] == 1.0
+        import planargeo.widgets as widgets
+        for name in widgets.EXPLORERS:                 # every explorer builds on the ipympl canvas
+            other = getattr(widgets, name)()
+            assert other.display_mode == "ipympl" and other.message == "", (name, other.message)
+            assert isinstance(other.fig.canvas, W.DOMWidget)
         print("ok")
     """)
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
