@@ -55,6 +55,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--no-charts", action="store_true", help="tables only")
     parser.add_argument("--sizes", default=",".join(map(str, SINGLE_SIZES)),
                         help="chain sizes N for the single-state table (default: %(default)s)")
+    parser.add_argument("--only", choices=("dynamics", "breakdown", "widgets"), action="append",
+                        help="run only these groups (repeatable; default: all). 'breakdown' is the "
+                             "accuracy study benchmarks/breakdown.py, 'widgets' the explorer latencies "
+                             "benchmarks/widget_latency.py (both need a source checkout)")
 
 
 def _calls_for(fn, seconds: float, timer) -> int:
@@ -380,6 +384,8 @@ def _single_threaded_argv(args):
         return None
     argv = [sys.executable, "-m", "planargeo.bench", "--out", str(args.out), "--sizes", str(args.sizes)]
     argv += ["--quick"] * bool(args.quick) + ["--no-charts"] * bool(args.no_charts)
+    for group in getattr(args, "only", None) or ():
+        argv += ["--only", group]
     return argv
 
 
@@ -395,17 +401,32 @@ def main(args) -> int:
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     sizes = tuple(int(s) for s in str(args.sizes).split(",") if s.strip())
-    budget = 0.05 if args.quick else 0.3
-    batches = (1, 100, 1000) if args.quick else BATCH_SIZES
-    single = run_single(sizes, budget)
-    print(write_single(single, out))
-    print(write_accuracy(single, out))
-    batch = run_batch(batches, budget)
-    print(write_batch(batch, out))
-    if not args.no_charts:
-        write_charts(single, batch, out)
-        print(f"charts written to {out}/single_state.svg, batch.svg, speed_accuracy.svg (+ .png)")
-    return 0
+    groups = set(getattr(args, "only", None) or ("dynamics", "breakdown", "widgets"))
+    rc = 0
+    if "dynamics" in groups:
+        budget = 0.05 if args.quick else 0.3
+        batches = (1, 100, 1000) if args.quick else BATCH_SIZES
+        single = run_single(sizes, budget)
+        print(write_single(single, out))
+        print(write_accuracy(single, out))
+        batch = run_batch(batches, budget)
+        print(write_batch(batch, out))
+        if not args.no_charts:
+            write_charts(single, batch, out)
+            print(f"charts written to {out}/single_state.svg, batch.svg, speed_accuracy.svg (+ .png)")
+    scripts = Path(__file__).resolve().parents[1] / "benchmarks"
+    for group, script in (("breakdown", "breakdown.py"), ("widgets", "widget_latency.py")):
+        if group not in groups:
+            continue
+        path = scripts / script
+        if not path.exists():
+            print(f"skipping {group}: {path} not found (run from a source checkout)")
+            continue
+        import subprocess
+
+        print(f"running {path.name} ...", flush=True)
+        rc |= subprocess.call([sys.executable, str(path)], cwd=str(scripts.parent))
+    return rc
 
 
 if __name__ == "__main__":  # pragma: no cover
