@@ -26,6 +26,8 @@ both carry ``.cond``.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ._validate import as_array, check_symmetric
@@ -104,7 +106,13 @@ def _solve_A(A: np.ndarray, B: np.ndarray, name: str, eig=None) -> np.ndarray:
 
 
 def _right_solve(X: np.ndarray, M: np.ndarray) -> np.ndarray:
-    """``X M⁻¹`` for symmetric ``M`` (..., k, k), as ``(M⁻¹ Xᵀ)ᵀ``."""
+    """``X M⁻¹`` for symmetric ``M`` (..., k, k), as ``(M⁻¹ Xᵀ)ᵀ``.
+
+    A single 1×1 ``M`` multiplies by ``1 / M``: the same numbers as the LU solve
+    (which scales by the reciprocal pivot), without its overhead.
+    """
+    if M.shape == (1, 1):
+        return X * (1.0 / M[0, 0])
     Xt = _T(X)
     if M.shape[:-2] == Xt.shape[:-2]:
         return _T(np.linalg.solve(M, Xt))
@@ -113,13 +121,40 @@ def _right_solve(X: np.ndarray, M: np.ndarray) -> np.ndarray:
                               np.broadcast_to(Xt, shape + Xt.shape[-2:])))
 
 
-def _gram(s: np.ndarray, As: np.ndarray, A_scale: np.ndarray, sname: str, what: str) -> np.ndarray:
-    """``M = sᵀ (A s)``, symmetrised, checked for singularity relative to ``‖A‖ ‖s‖²``."""
+def _norm(A: np.ndarray):
+    """Cheap norm ``‖A‖`` of each matrix in a stack: the Frobenius norm (a float for one matrix).
+
+    Within a factor ``√3`` of the 2-norm of a 3×3 matrix, and no eigen-solve:
+    the scale of the singularity rule (:func:`_gram`).
+    """
+    if A.ndim == 2:
+        a = A.ravel()
+        return math.sqrt(float(a @ a))
+    return np.sqrt(_fro2(A))
+
+
+def _gram(s: np.ndarray, As: np.ndarray, A_scale, sname: str, what: str) -> np.ndarray:
+    """``M = sᵀ (A s)``, symmetrised, checked for singularity relative to ``‖A‖ ‖s‖²``.
+
+    The package's one singularity rule for joint-space matrices: the scale-free
+    condition number ``‖A‖ ‖s‖² / σ_min(M)`` (Frobenius norms; ``σ_min`` is
+    ``|M|`` for a 1×1 ``M``, else from the small ``k×k`` matrix itself) must not
+    exceed :data:`COND_LIMIT`.
+    """
     M = _T(s) @ As
-    M = 0.5 * (M + _T(M))
-    if M.shape[-1] == 0:
+    k = M.shape[-1]
+    if k == 0:
         return M
-    smin = np.abs(M[..., 0, 0]) if M.shape[-1] == 1 else _abs_eig(M)[1]
+    if k == 1 and M.ndim == 2:                 # one joint, one dof: Python floats (M is its own transpose)
+        col = s[:, 0]
+        smin, scale = abs(float(M[0, 0])), A_scale * float(col @ col)
+        cond = scale / smin if smin > 0 else math.inf
+        if not cond <= COND_LIMIT:
+            raise SingularConfigurationError(
+                f"{what} is singular: the inertia has (almost) nothing along {sname}", float(cond))
+        return M
+    M = 0.5 * (M + _T(M))
+    smin = np.abs(M[..., 0, 0]) if k == 1 else _abs_eig(M)[1]
     _check_cond(smin, A_scale * _fro2(s), SingularConfigurationError,
                 f"{what} is singular: the inertia has (almost) nothing along {sname}")
     return M
@@ -137,12 +172,25 @@ def _check_complementary(s: np.ndarray, R: np.ndarray) -> None:
             raise InputError(f"R must be reciprocal to s (sᵀR = 0, thesis 6.1), got max |sᵀR| = {worst:.3g}")
 
 
-def _percussion(s: np.ndarray, A: np.ndarray, name: str, eig=None, what=None) -> np.ndarray:
+def _percussion_space(A: np.ndarray, s: np.ndarray, what: str = "sᵀAs") -> np.ndarray:
+    """``T = A s (sᵀ A s)⁻¹`` (6.30, 6.39) on float arrays already checked (the unchecked kernel).
+
+    ``A`` (..., 3, 3) symmetric, ``s`` (..., 3, k).  Shared by
+    :func:`percussion_space` and the chain algorithms; raises
+    :class:`~planargeo.errors.SingularConfigurationError` (the rule of :func:`_gram`).
+    """
     if s.shape[-1] == 0:
         return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 0))
-    hi, _ = _abs_eig(A) if eig is None else eig
     As = A @ s
-    return _right_solve(As, _gram(s, As, hi, "s", what or f"sᵀ{name}s"))
+    return _right_solve(As, _gram(s, As, _norm(A), "s", what))
+
+
+def _effective_mobility(A: np.ndarray, s: np.ndarray, what: str = "sᵀIs") -> np.ndarray:
+    """``s (sᵀ A s)⁻¹ sᵀ`` (6.93) on float arrays already checked (the unchecked kernel)."""
+    if s.shape[-1] == 0:
+        return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 3))
+    M = _gram(s, A @ s, _norm(A), "s", what)
+    return _right_solve(s, M) @ _T(s)
 
 
 def _reactive(R: np.ndarray, A: np.ndarray, name: str, eig=None, what=None) -> np.ndarray:
@@ -200,7 +248,8 @@ def percussion_space(s, A, *, what: str | None = None) -> np.ndarray:
     ------
     SingularConfigurationError
         If ``sᵀAs`` is singular (``A`` has no inertia along ``s``): its
-        scale-free condition number ``‖A‖ ‖s‖² / λ_min(sᵀAs)`` (``.cond``)
+        scale-free condition number ``‖A‖ ‖s‖² / |λ|_min(sᵀAs)`` (``.cond``;
+        Frobenius norms, no eigen-solve of ``A``)
         exceeds :data:`COND_LIMIT`.  This is the package's one singularity
         rule for joint-space matrices; every algorithm builds ``T`` here.
 
@@ -215,7 +264,7 @@ def percussion_space(s, A, *, what: str | None = None) -> np.ndarray:
            [0.8],
            [1. ]])
     """
-    return _percussion(_space(s, "s"), _inertia(A, "A"), "A", what=what)
+    return _percussion_space(_inertia(A, "A"), _space(s, "s"), what or "sᵀAs")
 
 
 def reactive_acceleration_space(R, A=None, *, s=None, T=None, what: str | None = None) -> np.ndarray:
@@ -286,7 +335,7 @@ def reactive_acceleration_space(R, A=None, *, s=None, T=None, what: str | None =
     if T is None:
         if A is None:
             raise InputError("A must be given unless s and T are")
-        T = _percussion(s, _inertia(A, "A"), "A", what=what)
+        T = _percussion_space(_inertia(A, "A"), s, what or "sᵀAs")
     else:
         T = _space(T, "T")
     return _reactive_from_T(R, s, T)
@@ -466,13 +515,7 @@ def effective_mobility(s, I, *, what: str | None = None) -> np.ndarray:
            [0. , 0. , 0. ],
            [0. , 0. , 0.4]])
     """
-    s = _space(s, "s")
-    I = _inertia(I, "I")
-    Is = I @ s
-    if s.shape[-1] == 0:
-        return np.zeros(np.broadcast_shapes(s.shape[:-2], I.shape[:-2]) + (3, 3))
-    M = _gram(s, Is, _abs_eig(I)[0], "s", what or "sᵀIs")
-    return _right_solve(s, M) @ _T(s)
+    return _effective_mobility(_inertia(I, "I"), _space(s, "s"), what or "sᵀIs")
 
 
 def effective_base_inertia(R, I) -> np.ndarray:
@@ -541,9 +584,8 @@ class Decomposition:
         A = _inertia(A, name)
         _check_complementary(s, R)
         self.s, self.R, self.A = s, R, A
-        eig = _abs_eig(A)
-        self.T = _percussion(s, A, name, eig)
-        self.U = _reactive(R, A, name, eig)
+        self.T = _percussion_space(A, s, f"sᵀ{name}s")
+        self.U = _reactive(R, A, name)
 
     @classmethod
     def from_joint(cls, joint, A, *, name: str = "A") -> "Decomposition":

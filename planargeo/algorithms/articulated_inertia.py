@@ -24,7 +24,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .projective import _state_arrays, percussion_subspace, reaction_space, reactive_subspace
+from ..subspaces import _percussion_space
+from .projective import _state_arrays, reaction_space, reactive_subspace
 
 __all__ = ["ArticulatedInertias", "articulated_recursion", "articulated_inertia"]
 
@@ -96,22 +97,34 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None) -> Art
     parents = list(range(-1, N - 1)) if parents is None else [int(x) for x in parents]
     S = [np.asarray(x, dtype=float).reshape(3, -1) for x in S]
     tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
-    kappa = np.asarray(kappa, dtype=float)
+    A, d, T = _articulated(I, S, np.asarray(kappa, dtype=float), p, tau, parents)
+    R = [reaction_space(S[i], (0.0, 0.0) if points is None else points[i]) for i in range(N)]
+    return ArticulatedInertias(A, d, T, R, S)
+
+
+def _articulated(I, S, kappa, p, tau, parents):
+    """The recursion of :func:`articulated_recursion` on checked arrays: ``(A, d, T)`` (7.2, 7.7a, 7.7b, 7.8).
+
+    ``I`` (N, 3, 3), ``S`` / ``tau`` lists of (3, k_i) / (k_i,) float arrays,
+    ``kappa`` (N, 3), ``parents`` a list of ints.  The reaction bases are not
+    needed (``R U^T = 1 - T s^T``, 7.8) and not built.
+    """
+    N = I.shape[0]
     A = I.copy()                                   # (7.2): A_N = I_N, children added below
     d = np.asarray(p, dtype=float).copy()          # d_N = p_N
-    T, R = [None] * N, [None] * N
+    T = [None] * N
     eye = np.eye(3)
     for i in reversed(range(N)):
-        A[i] = 0.5 * (A[i] + A[i].T)               # symmetric by construction; remove round-off
-        R[i] = reaction_space(S[i], (0.0, 0.0) if points is None else points[i])
-        T[i] = percussion_subspace(A[i], S[i], what=f"sᵀAs of joint {i}")   # (6.105)
+        Ai = A[i] = 0.5 * (A[i] + A[i].T)          # symmetric by construction; remove round-off
+        Si = S[i]
+        T[i] = Ti = _percussion_space(Ai, Si, f"sᵀAs of joint {i}")   # (6.105)
         j = parents[i]
         if j < 0:
             continue
-        P = eye - T[i] @ S[i].T                    # R_i U_i^T (7.8)
-        A[j] += P @ A[i]                           # (7.7a)
-        d[j] += T[i] @ tau[i] + P @ (A[i] @ kappa[i] + d[i])   # (7.7b)
-    return ArticulatedInertias(A, d, T, R, S)
+        P = eye - Ti @ Si.T                        # R_i U_i^T (7.8)
+        A[j] += P @ Ai                             # (7.7a)
+        d[j] += Ti @ tau[i] + P @ (Ai @ kappa[i] + d[i])   # (7.7b)
+    return A, d, T
 
 
 def articulated_inertia(model, q, qd=None, tau=None, f_ext=None) -> ArticulatedInertias:

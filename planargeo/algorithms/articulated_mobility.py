@@ -22,12 +22,14 @@ algorithm needs an unbranched chain whose first body hangs from the ground.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from ..errors import SingularConfigurationError, TopologyError
-from .projective import _active_mobility, _state_arrays, percussion_subspace, reaction_space, reactive_subspace
+from ..subspaces import _effective_mobility, _percussion_space, _reactive_from_T
+from .projective import _state_arrays, reaction_space
 
 __all__ = ["ArticulatedMobilities", "mobility_recursion", "articulated_mobility"]
 
@@ -103,29 +105,55 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None) -> Articu
     tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
     kappa = np.asarray(kappa, dtype=float)
     p = np.asarray(p, dtype=float)
+    Lam, b, T = _mobility(I, S, kappa, p, tau)
+    R = [reaction_space(S[i], (0.0, 0.0) if points is None else points[i]) for i in range(N)]
+    U = [_reactive_from_T(R[i], S[i], T[i]) for i in range(N)]                     # (6.37), inverse-free
+    return ArticulatedMobilities(Lam, b, T, U, R)
+
+
+def _cond(M) -> float:
+    """Cheap condition number ``‖M‖ ‖M⁻¹‖`` (Frobenius norms) of a small square matrix; ``inf`` if singular.
+
+    Between ``cond₂`` and ``k cond₂`` for a ``k×k`` matrix; no singular value decomposition.
+    """
+    try:
+        Mi = np.linalg.inv(M)
+    except np.linalg.LinAlgError:
+        return math.inf
+    m, mi = M.ravel(), Mi.ravel()
+    c = math.sqrt(float(m @ m) * float(mi @ mi))
+    return c if c == c else math.inf
+
+
+def _mobility(I, S, kappa, p, tau):
+    """The recursion of :func:`mobility_recursion` on checked arrays: ``(Lambda_inv, b, T)`` (7.31, 7.35, 7.38).
+
+    ``U_i R_i^T = 1 - s_i T_i^T`` (the twist projectors of 6.75), so no reaction basis is built.
+    """
+    N = I.shape[0]
     Lam = np.zeros((N, 3, 3))
     b = np.zeros((N, 3))
-    T, U, R = [None] * N, [None] * N, [None] * N
+    T = [None] * N
     eye = np.eye(3)
     for i in range(N):
-        R[i] = reaction_space(S[i], (0.0, 0.0) if points is None else points[i])
-        T[i] = percussion_subspace(I[i], S[i], what=f"sᵀIs of joint {i}")      # (6.36)
-        U[i] = reactive_subspace(I[i], R[i], s=S[i], T=T[i])                       # (6.37)
-        G = _active_mobility(I[i], S[i], f"sᵀIs of joint {i}")   # s T^T I^-1 = s (s^T I s)^-1 s^T
-        eta = G @ (T[i] @ tau[i] - p[i])               # (7.35)
-        P = U[i] @ R[i].T                              # U R^T
-        if i == 0:                                     # (7.31a, 7.31b): a_0 = 0
+        Si, Ii = S[i], I[i]
+        what = f"sᵀIs of joint {i}"
+        T[i] = Ti = _percussion_space(Ii, Si, what)                   # (6.36)
+        G = _effective_mobility(Ii, Si, what)           # s T^T I^-1 = s (s^T I s)^-1 s^T (6.93)
+        eta = G @ (Ti @ tau[i] - p[i])                  # (7.35)
+        P = eye - Si @ Ti.T                             # U R^T (6.75)
+        if i == 0:                                      # (7.31a, 7.31b): a_0 = 0
             Lam[i] = G
             b[i] = eta + P @ kappa[i]
         else:
-            M = eye + P @ Lam[i - 1] @ I[i]
-            c = np.linalg.cond(M)
+            M = eye + P @ Lam[i - 1] @ Ii
+            c = _cond(M)
             if not c < 1e13:
                 raise SingularConfigurationError(f"1 + U R^T Lambda^-1 I of body {i} is singular", c)
             Lam[i] = np.linalg.solve(M, G + P @ Lam[i - 1])                           # (7.38a)
             b[i] = np.linalg.solve(M, eta - P @ (Lam[i - 1] @ p[i] - b[i - 1] - kappa[i]))  # (7.38b)
-        Lam[i] = 0.5 * (Lam[i] + Lam[i].T)             # symmetric by construction; remove round-off
-    return ArticulatedMobilities(Lam, b, T, U, R)
+        Lam[i] = 0.5 * (Lam[i] + Lam[i].T)              # symmetric by construction; remove round-off
+    return Lam, b, T
 
 
 def articulated_mobility(model, q, qd=None, tau=None, f_ext=None) -> ArticulatedMobilities:

@@ -23,8 +23,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import SingularConfigurationError
-from .articulated_inertia import articulated_recursion
-from .articulated_mobility import _check_chain, mobility_recursion
+from .articulated_inertia import _articulated
+from .articulated_mobility import _check_chain, _cond, _mobility
 from .projective import _per_state, _state_arrays
 
 __all__ = ["ChainSplit", "split_acceleration", "split_force", "chain_split",
@@ -33,7 +33,7 @@ __all__ = ["ChainSplit", "split_acceleration", "split_force", "chain_split",
 
 def _C(Lam_i, K):
     C = np.eye(3) + Lam_i @ K
-    c = np.linalg.cond(C)
+    c = _cond(C)
     if not c < 1e13:
         raise SingularConfigurationError("1 + Lambda^-1 R U^T A of the split is singular", c)
     return C
@@ -66,15 +66,18 @@ def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa
     >>> split_acceleration(Lam1, [0, 0, 1.0], A2, np.zeros(3), T2, s2, [0.0], np.zeros(3)).round(12)
     array([0. , 0. , 0.5])
     """
-    Lam_i = np.asarray(Lam_i, dtype=float)
-    A_next = np.asarray(A_next, dtype=float)
-    s_next = np.asarray(s_next, dtype=float).reshape(3, -1)
-    T_next = np.asarray(T_next, dtype=float).reshape(3, -1)
+    return _split_acceleration(np.asarray(Lam_i, dtype=float), np.asarray(b_i, dtype=float),
+                               np.asarray(A_next, dtype=float), np.asarray(d_next, dtype=float),
+                               np.asarray(T_next, dtype=float).reshape(3, -1),
+                               np.asarray(s_next, dtype=float).reshape(3, -1),
+                               np.asarray(Q_next, dtype=float).reshape(-1), np.asarray(kappa_next, dtype=float))
+
+
+def _split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next):
+    """7.54 on float arrays of the right shapes (the kernel of :func:`split_acceleration`)."""
     P = np.eye(3) - T_next @ s_next.T                     # R U^T (7.8)
     K = P @ A_next
-    rhs = np.asarray(b_i, dtype=float) - Lam_i @ (
-        T_next @ np.asarray(Q_next, dtype=float).reshape(-1)
-        + P @ (A_next @ np.asarray(kappa_next, dtype=float) + np.asarray(d_next, dtype=float)))
+    rhs = b_i - Lam_i @ (T_next @ Q_next + P @ (A_next @ kappa_next + d_next))
     return np.linalg.solve(_C(Lam_i, K), rhs)
 
 
@@ -150,19 +153,20 @@ def chain_split(I, S, kappa, p, tau, parents=None) -> ChainSplit:
     S = [np.asarray(x, dtype=float).reshape(3, -1) for x in S]
     tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
     kappa = np.asarray(kappa, dtype=float)
-    art = articulated_recursion(I, S, kappa, p, tau)
-    mob = mobility_recursion(I, S, kappa, p, tau)
+    p = np.asarray(p, dtype=float)
+    A, d, T = _articulated(I, S, kappa, p, tau, list(range(-1, N - 1)))     # (7.1.1)
+    Lam, b, _ = _mobility(I, S, kappa, p, tau)                               # (7.4.1)
     a = np.zeros((N, 3))
     f = np.zeros((N, 3))
     for i in range(N - 1):
         j = i + 1
-        args = (mob.Lambda_inv[i], mob.b[i], art.A[j], art.d[j], art.T[j], S[j], tau[j], kappa[j])
+        args = (Lam[i], b[i], A[j], d[j], T[j], S[j], tau[j], kappa[j])
         a[i] = split_acceleration(*args)                # (7.54)
         f[j] = split_force(*args)                       # (7.56)
-    a[N - 1] = mob.b[N - 1]                             # f_{N+1} = 0 in (7.37)
+    a[N - 1] = b[N - 1]                                 # f_{N+1} = 0 in (7.37)
     f[0] = force_propagator(I[0], S[0], tau[0], np.asarray(p, dtype=float)[0],
                             f[1] if N > 1 else np.zeros(3), np.zeros(3), kappa[0])   # (6.113b)
-    qdd = [art.T[i].T @ (a[i] - (a[i - 1] if i else 0.0) - kappa[i]) for i in range(N)]  # (6.110)
+    qdd = [T[i].T @ (a[i] - (a[i - 1] if i else 0.0) - kappa[i]) for i in range(N)]  # (6.110)
     qdd = np.concatenate(qdd) if qdd else np.zeros(0)
     return ChainSplit(a, f, qdd)
 
@@ -211,4 +215,22 @@ def forward_dynamics_mobility_split(model, q, qd, tau, f_ext=None) -> np.ndarray
     >>> forward_dynamics_mobility_split(chain_model(1), [0.0], [0.0], [0.0]).round(6)
     array([-14.715])
     """
-    return _per_state(lambda *a: mobility_split(*a).qdd, model, q, qd, tau, f_ext)
+    return _per_state(_mobility_split_qdd, model, q, qd, tau, f_ext)
+
+
+def _mobility_split_qdd(model, q, qd, tau, f_ext):
+    """``qdd`` of one state by 7.54 and 6.110 (the forces 7.56 of :func:`mobility_split` are not needed)."""
+    from .articulated_inertia import _articulated
+
+    _, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
+    _check_chain(parents, len(S))
+    N = len(S)
+    A, d, T = _articulated(I, S, kappa, p, taus, parents)
+    Lam, b, _ = _mobility(I, S, kappa, p, taus)
+    a = np.zeros((N, 3))
+    for i in range(N - 1):
+        j = i + 1
+        a[i] = _split_acceleration(Lam[i], b[i], A[j], d[j], T[j], S[j], taus[j], kappa[j])   # (7.54)
+    a[N - 1] = b[N - 1]                                 # f_{N+1} = 0 in (7.37)
+    qdd = [T[i].T @ (a[i] - (a[i - 1] if i else 0.0) - kappa[i]) for i in range(N)]  # (6.110)
+    return np.concatenate(qdd) if qdd else np.zeros(0)

@@ -50,7 +50,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..joints import reaction_space_of
-from ..subspaces import effective_mobility, percussion_space, reactive_acceleration_space
+from ..subspaces import _reactive_from_T, effective_mobility, percussion_space, reactive_acceleration_space
 
 __all__ = [
     "reaction_space", "percussion_subspace", "reactive_subspace",
@@ -141,9 +141,13 @@ def _active_mobility(A, s, what):
 
 def _joint_solve(A, s, rhs):
     """``(sᵀAs)⁻¹ rhs``; call after ``T`` was built, so singularity has been checked (one rule)."""
-    if s.shape[1] == 0:
+    k = s.shape[1]
+    if k == 0:
         return np.zeros(0)
-    return np.linalg.solve(s.T @ A @ s, rhs)
+    M = s.T @ A @ s
+    if k == 1:
+        return rhs * (1.0 / M[0, 0])             # the numbers of the LU solve (reciprocal pivot)
+    return np.linalg.solve(M, rhs)
 
 
 # ---------------------------------------------------------------------------
@@ -222,8 +226,9 @@ def _state_arrays(model, q, qd, tau, f_ext):
     if tau is None:
         tau = np.zeros(model.nq)
     d = kinematics(model, q, qd, f_ext)
-    S = [d.s(i) for i in range(model.N)]
-    taus = [np.asarray(tau[model.q_slice(i)], dtype=float) for i in range(model.N)]
+    offs, N = model.q_offsets, model.N
+    S = [d.S[:, offs[i]:offs[i + 1]] for i in range(N)]            # d.s(i)
+    taus = [tau[offs[i]:offs[i + 1]] for i in range(N)]
     return d, d.I, S, d.kappa, d.p, list(model.parents), taus
 
 
@@ -336,7 +341,7 @@ def projective_solve(I, S, kappa, p, tau, parents=None, points=None) -> Projecti
     p = np.asarray(p, dtype=float)
     rec = articulated_recursion(I, S, kappa, p, tau, parents, points)
     A, d, T, R = rec.A, rec.d, rec.T, rec.R
-    U = [reactive_subspace(A[i], R[i], s=S[i], T=T[i]) for i in range(N)]
+    U = [_reactive_from_T(R[i], S[i], T[i]) for i in range(N)]   # (6.99), inverse-free (6.75)
     a = np.zeros((N, 3))
     f = np.zeros((N, 3))
     mu, psi, gamma, qdd = [None] * N, [None] * N, [None] * N, []
@@ -372,6 +377,32 @@ def projective_workspace(model, q, qd=None, tau=None, f_ext=None) -> ProjectiveW
     return projective_solve(I, S, kappa, p, taus, parents, d.pose[:, :2])
 
 
+def _projective_qdd(model, q, qd, tau, f_ext):
+    """``qdd`` of one state by 6.107, 6.108, 6.110, without the reaction bases.
+
+    The reactive part of 6.108 needs only the projector ``U_i R_i^T = 1 - s_i T_i^T``
+    (the twist projectors of 6.75), which is the same for every reaction basis,
+    so ``R_i``, ``U_i``, ``gamma_i``, ``mu_i`` and ``f_i`` (the drawing workspace
+    of :func:`projective_workspace`) are not built.
+    """
+    from .articulated_inertia import _articulated
+
+    _, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
+    A, d, T = _articulated(I, S, kappa, p, taus, parents)
+    N = len(S)
+    a = np.zeros((N, 3))
+    qdd = []
+    zero = np.zeros(3)
+    for i in range(N):
+        j = parents[i]
+        base = (a[j] if j >= 0 else zero) + kappa[i]
+        Si, Ti = S[i], T[i]
+        psi = _joint_solve(A[i], Si, taus[i] - Si.T @ d[i])             # (6.107)
+        a[i] = Si @ psi + (base - Si @ (Ti.T @ base))                   # (6.108), U R^T = 1 - s T^T
+        qdd.append(Ti.T @ (a[i] - base))                                # (6.110)
+    return np.concatenate(qdd) if qdd else np.zeros(0)
+
+
 def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
     """Joint accelerations by the projective articulated equations (thesis 6.108-6.110).
 
@@ -401,4 +432,4 @@ def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
     >>> forward_dynamics_projective(chain_model(1), [0.0], [0.0], [0.0]).round(6)
     array([-14.715])
     """
-    return _per_state(lambda *a: projective_workspace(*a).qdd, model, q, qd, tau, f_ext)
+    return _per_state(_projective_qdd, model, q, qd, tau, f_ext)

@@ -42,7 +42,7 @@ from .._validate import as_array
 from ..errors import ShapeError, SingularConfigurationError, TopologyError
 from ..joints import reaction_space_of
 from ..kinematics import check_state, kinematics
-from ..subspaces import effective_mobility, percussion_space, reactive_acceleration_space
+from ..subspaces import _effective_mobility, _percussion_space, reactive_acceleration_space
 from ..model import Model
 
 __all__ = ["adjacency", "trunk", "blocks", "reaction_basis", "quake_space", "StackedSolution", "stacked_solve",
@@ -217,16 +217,18 @@ def articulated_quantities(model: Model, data, tau):
     I, p, kap = data.I, data.p, data.kappa
     A = [I[i].copy() for i in range(N)]
     d = [p[i].copy() for i in range(N)]
-    s = [data.s(i) for i in range(N)]
+    offs = model.q_offsets
+    S = data.S
+    s = [S[..., :, offs[i]:offs[i + 1]] for i in range(N)]          # data.s(i)
     T, P = [None] * N, [None] * N
     eye3 = np.eye(3)
     for i in range(N - 1, -1, -1):
         Ai = A[i] = 0.5 * (A[i] + A[i].T)          # symmetric by construction; remove round-off
-        T[i] = percussion_space(s[i], Ai, what=f"sᵀAs of joint {i}")      # (9.19, 6.105)
+        T[i] = _percussion_space(Ai, s[i], f"sᵀAs of joint {i}")            # (9.19, 6.105)
         P[i] = eye3 - T[i] @ s[i].T                                         # R U^T (7.8)
         j = model.parents[i]
         if j >= 0:
-            Qi = tau[model.q_slice(i)]
+            Qi = tau[offs[i]:offs[i + 1]]
             A[j] = A[j] + P[i] @ Ai
             d[j] = d[j] + T[i] @ Qi + P[i] @ (Ai @ kap[i] + d[i])
     return {"A": A, "d": d, "s": s, "T": T, "P": P, "points": list(np.asarray(data.pose)[:, :2])}
@@ -263,6 +265,13 @@ def _blockdiag(mats, rows, cols):
         r += nr
         c += nc
     return out
+
+
+def _unit_upper_solve(M, b, trans: bool = False) -> np.ndarray:
+    """``M⁻¹ b`` (or ``M⁻ᵀ b``) for the unit upper triangular ``M = 1 - C^T P`` of a tree whose parents come first."""
+    from scipy.linalg import solve_triangular
+
+    return solve_triangular(M, b, trans=1 if trans else 0, unit_diagonal=True, check_finite=False)
 
 
 def articulation_matrix(C3, P) -> np.ndarray:
@@ -325,6 +334,13 @@ class StackedSolution:
 
     def __repr__(self):
         return f"StackedSolution(N={self.N}, nq={len(self.qdd)})"
+
+    @property
+    def L(self) -> np.ndarray:
+        """Articulation matrix ``L = (1 - C^T R U^T)^{-1}`` (9.31; :func:`articulation_matrix`, built on first access)."""
+        if not hasattr(self, "_L"):
+            self._L = articulation_matrix(self.C, self.P)
+        return self._L
 
     def _RU(self):
         if not hasattr(self, "_ru"):
@@ -408,14 +424,17 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     sol.p = data.p.reshape(-1)
     Q = np.asarray(tau, dtype=float)
     C, S, T, P, A = sol.C, sol.S, sol.T, sol.P, sol.A
-    sol.L = articulation_matrix(C, P)
+    # L = (1 - C^T R U^T)^-1 (9.31) is applied by solves with the unit upper triangular
+    # 1 - C^T P (parents before children); sol.L itself is built on first access.
+    CtP = C.T @ P
+    Linv = np.eye(3 * N) - CtP
     # (9.32) corrected: d = L (p + C^T T Q + C^T R U^T A κ)
-    sol.d = sol.L @ (sol.p + C.T @ (T @ Q) + C.T @ P @ A @ sol.kappa)
+    sol.d = _unit_upper_solve(Linv, sol.p + C.T @ (T @ Q) + CtP @ (A @ sol.kappa))
     # (9.39): a = L^T [S T^T A^-1 (T Q - d) + U R^T κ]
     # S T^T A^-1 = S (S^T A S)^-1 S^T: no inverse of A needed
-    sol.StTAinv = _blockdiag([effective_mobility(si, Ai, what=f"sᵀAs of joint {i}")
+    sol.StTAinv = _blockdiag([_effective_mobility(Ai, si, f"sᵀAs of joint {i}")
                               for i, (si, Ai) in enumerate(zip(art["s"], art["A"]))], three, three)
-    sol.a = sol.L.T @ (sol.StTAinv @ (T @ Q - sol.d) + P.T @ sol.kappa)     # U R^T = P^T
+    sol.a = _unit_upper_solve(Linv, sol.StTAinv @ (T @ Q - sol.d) + P.T @ sol.kappa, trans=True)  # U R^T = P^T
     # (9.41) with (9.17): internal forces
     sol.f = T @ Q + P @ (A @ (C @ sol.a + sol.kappa) + sol.d)
     # (9.43): q̈ = T^T (Δ a - κ)
@@ -523,8 +542,8 @@ def tree_mobilities(model: Model, data, tau, art=None, *, siblings: bool = True)
         Qi = tau[model.q_slice(i)]
         # s T^T I^-1 = s (s^T I s)^-1 s^T and U R^T = 1 - s T^T: no inverse of I
         # (point masses have a singular I); η = s T^T I^-1 (T Q - p)   (7.35)
-        Ti = percussion_space(si, Ii, what=f"sᵀIs of joint {i}")          # (6.36)
-        mob_i = effective_mobility(si, Ii, what=f"sᵀIs of joint {i}")    # (6.93)
+        Ti = _percussion_space(Ii, si, f"sᵀIs of joint {i}")             # (6.36)
+        mob_i = _effective_mobility(Ii, si, f"sᵀIs of joint {i}")       # (6.93)
         eta = mob_i @ (Ti @ Qi - p[i])
         URt = one - si @ Ti.T
         X = one + URt @ M @ Ii
