@@ -105,6 +105,16 @@ def _solve_A(A: np.ndarray, B: np.ndarray, name: str, eig=None) -> np.ndarray:
     return np.linalg.solve(np.broadcast_to(A, shape + A.shape[-2:]), np.broadcast_to(B, shape + B.shape[-2:]))
 
 
+try:                                             # the gufuncs behind numpy.linalg.solve, without its wrapper
+    from numpy.linalg import _umath_linalg as _gufuncs
+
+    def _solve(M: np.ndarray, b: np.ndarray) -> np.ndarray:
+        """``M⁻¹ b`` for one small float64 ``M`` already checked non-singular (the numbers of :func:`numpy.linalg.solve`)."""
+        return (_gufuncs.solve1 if b.ndim == 1 else _gufuncs.solve)(M, b, signature="dd->d")
+except (ImportError, AttributeError):              # pragma: no cover (other numpy layouts)
+    _solve = np.linalg.solve
+
+
 def _right_solve(X: np.ndarray, M: np.ndarray) -> np.ndarray:
     """``X M⁻¹`` for symmetric ``M`` (..., k, k), as ``(M⁻¹ Xᵀ)ᵀ``.
 
@@ -128,8 +138,7 @@ def _norm(A: np.ndarray):
     the scale of the singularity rule (:func:`_gram`).
     """
     if A.ndim == 2:
-        a = A.ravel()
-        return math.sqrt(float(a @ a))
+        return math.sqrt(float(np.vdot(A, A)))
     return np.sqrt(_fro2(A))
 
 
@@ -146,8 +155,7 @@ def _gram(s: np.ndarray, As: np.ndarray, A_scale, sname: str, what: str) -> np.n
     if k == 0:
         return M
     if k == 1 and M.ndim == 2:                 # one joint, one dof: Python floats (M is its own transpose)
-        col = s[:, 0]
-        smin, scale = abs(float(M[0, 0])), A_scale * float(col @ col)
+        smin, scale = abs(float(M[0, 0])), A_scale * float(np.vdot(s, s))
         cond = scale / smin if smin > 0 else math.inf
         if not cond <= COND_LIMIT:
             raise SingularConfigurationError(
@@ -172,24 +180,34 @@ def _check_complementary(s: np.ndarray, R: np.ndarray) -> None:
             raise InputError(f"R must be reciprocal to s (sᵀR = 0, thesis 6.1), got max |sᵀR| = {worst:.3g}")
 
 
-def _percussion_space(A: np.ndarray, s: np.ndarray, what: str = "sᵀAs") -> np.ndarray:
+def _checked_gram(A: np.ndarray, s: np.ndarray, what: str) -> tuple[np.ndarray, np.ndarray]:
+    """``(A s, sᵀ A s)`` with ``sᵀAs`` checked by the singularity rule of :func:`_gram`."""
+    As = A @ s
+    return As, _gram(s, As, _norm(A), "s", what)
+
+
+def _percussion_space(A: np.ndarray, s: np.ndarray, what: str = "sᵀAs", gram=None) -> np.ndarray:
     """``T = A s (sᵀ A s)⁻¹`` (6.30, 6.39) on float arrays already checked (the unchecked kernel).
 
     ``A`` (..., 3, 3) symmetric, ``s`` (..., 3, k).  Shared by
     :func:`percussion_space` and the chain algorithms; raises
     :class:`~planargeo.errors.SingularConfigurationError` (the rule of :func:`_gram`).
+    ``gram``: ``_checked_gram(A, s, what)`` if already formed.
     """
     if s.shape[-1] == 0:
         return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 0))
-    As = A @ s
-    return _right_solve(As, _gram(s, As, _norm(A), "s", what))
+    As, M = _checked_gram(A, s, what) if gram is None else gram
+    return _right_solve(As, M)
 
 
-def _effective_mobility(A: np.ndarray, s: np.ndarray, what: str = "sᵀIs") -> np.ndarray:
-    """``s (sᵀ A s)⁻¹ sᵀ`` (6.93) on float arrays already checked (the unchecked kernel)."""
+def _effective_mobility(A: np.ndarray, s: np.ndarray, what: str = "sᵀIs", gram=None) -> np.ndarray:
+    """``s (sᵀ A s)⁻¹ sᵀ`` (6.93) on float arrays already checked (the unchecked kernel).
+
+    ``gram``: ``_checked_gram(A, s, what)`` if already formed (e.g. for :func:`_percussion_space`).
+    """
     if s.shape[-1] == 0:
         return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 3))
-    M = _gram(s, A @ s, _norm(A), "s", what)
+    _, M = _checked_gram(A, s, what) if gram is None else gram
     return _right_solve(s, M) @ _T(s)
 
 

@@ -28,7 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import SingularConfigurationError, TopologyError
-from ..subspaces import _effective_mobility, _percussion_space, _reactive_from_T
+from ..subspaces import _checked_gram, _effective_mobility, _percussion_space, _reactive_from_T, _solve
 from .projective import _state_arrays, reaction_space
 
 __all__ = ["ArticulatedMobilities", "mobility_recursion", "articulated_mobility"]
@@ -111,17 +111,33 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None) -> Articu
     return ArticulatedMobilities(Lam, b, T, U, R)
 
 
+_EYE3 = np.eye(3)
+_EYE3.setflags(write=False)
+
+
 def _cond(M) -> float:
     """Cheap condition number ``‖M‖ ‖M⁻¹‖`` (Frobenius norms) of a small square matrix; ``inf`` if singular.
 
     Between ``cond₂`` and ``k cond₂`` for a ``k×k`` matrix; no singular value decomposition.
     """
+    if M.shape == (3, 3):                       # adjugate and determinant on Python floats
+        (a, b, c), (d, e, f), (g, h, k) = M.tolist()
+        adj = (e * k - f * h, c * h - b * k, b * f - c * e,
+               f * g - d * k, a * k - c * g, c * d - a * f,
+               d * h - e * g, b * g - a * h, a * e - b * d)
+        det = a * adj[0] + b * adj[3] + c * adj[6]
+        if det == 0.0:
+            return math.inf
+        n2 = a * a + b * b + c * c + d * d + e * e + f * f + g * g + h * h + k * k
+        m0, m1, m2, m3, m4, m5, m6, m7, m8 = adj
+        a2 = m0 * m0 + m1 * m1 + m2 * m2 + m3 * m3 + m4 * m4 + m5 * m5 + m6 * m6 + m7 * m7 + m8 * m8
+        cond = math.sqrt(n2 * a2) / abs(det)
+        return cond if cond == cond else math.inf
     try:
         Mi = np.linalg.inv(M)
     except np.linalg.LinAlgError:
         return math.inf
-    m, mi = M.ravel(), Mi.ravel()
-    c = math.sqrt(float(m @ m) * float(mi @ mi))
+    c = math.sqrt(float(np.vdot(M, M)) * float(np.vdot(Mi, Mi)))
     return c if c == c else math.inf
 
 
@@ -134,12 +150,13 @@ def _mobility(I, S, kappa, p, tau):
     Lam = np.zeros((N, 3, 3))
     b = np.zeros((N, 3))
     T = [None] * N
-    eye = np.eye(3)
+    eye = _EYE3
     for i in range(N):
         Si, Ii = S[i], I[i]
         what = f"sᵀIs of joint {i}"
-        T[i] = Ti = _percussion_space(Ii, Si, what)                   # (6.36)
-        G = _effective_mobility(Ii, Si, what)           # s T^T I^-1 = s (s^T I s)^-1 s^T (6.93)
+        gram = _checked_gram(Ii, Si, what)              # (I s, s^T I s), checked once
+        T[i] = Ti = _percussion_space(Ii, Si, what, gram)                  # (6.36)
+        G = _effective_mobility(Ii, Si, what, gram)     # s T^T I^-1 = s (s^T I s)^-1 s^T (6.93)
         eta = G @ (Ti @ tau[i] - p[i])                  # (7.35)
         P = eye - Si @ Ti.T                             # U R^T (6.75)
         if i == 0:                                      # (7.31a, 7.31b): a_0 = 0
@@ -150,8 +167,8 @@ def _mobility(I, S, kappa, p, tau):
             c = _cond(M)
             if not c < 1e13:
                 raise SingularConfigurationError(f"1 + U R^T Lambda^-1 I of body {i} is singular", c)
-            Lam[i] = np.linalg.solve(M, G + P @ Lam[i - 1])                           # (7.38a)
-            b[i] = np.linalg.solve(M, eta - P @ (Lam[i - 1] @ p[i] - b[i - 1] - kappa[i]))  # (7.38b)
+            Lam[i] = _solve(M, G + P @ Lam[i - 1])                           # (7.38a)
+            b[i] = _solve(M, eta - P @ (Lam[i - 1] @ p[i] - b[i - 1] - kappa[i]))  # (7.38b)
         Lam[i] = 0.5 * (Lam[i] + Lam[i].T)              # symmetric by construction; remove round-off
     return Lam, b, T
 

@@ -24,7 +24,8 @@ import numpy as np
 
 from ..errors import SingularConfigurationError
 from .articulated_inertia import _articulated
-from .articulated_mobility import _check_chain, _cond, _mobility
+from ..subspaces import _solve
+from .articulated_mobility import _EYE3, _check_chain, _cond, _mobility
 from .projective import _per_state, _state_arrays
 
 __all__ = ["ChainSplit", "split_acceleration", "split_force", "chain_split",
@@ -32,7 +33,7 @@ __all__ = ["ChainSplit", "split_acceleration", "split_force", "chain_split",
 
 
 def _C(Lam_i, K):
-    C = np.eye(3) + Lam_i @ K
+    C = _EYE3 + Lam_i @ K
     c = _cond(C)
     if not c < 1e13:
         raise SingularConfigurationError("1 + Lambda^-1 R U^T A of the split is singular", c)
@@ -75,10 +76,10 @@ def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa
 
 def _split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next):
     """7.54 on float arrays of the right shapes (the kernel of :func:`split_acceleration`)."""
-    P = np.eye(3) - T_next @ s_next.T                     # R U^T (7.8)
+    P = _EYE3 - T_next @ s_next.T                         # R U^T (7.8)
     K = P @ A_next
     rhs = b_i - Lam_i @ (T_next @ Q_next + P @ (A_next @ kappa_next + d_next))
-    return np.linalg.solve(_C(Lam_i, K), rhs)
+    return _solve(_C(Lam_i, K), rhs)
 
 
 def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) -> np.ndarray:
@@ -222,7 +223,7 @@ def _mobility_split_qdd(model, q, qd, tau, f_ext):
     """``qdd`` of one state by 7.54 and 6.110 (the forces 7.56 of :func:`mobility_split` are not needed)."""
     from .articulated_inertia import _articulated
 
-    _, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
+    _, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext, checked=True)
     _check_chain(parents, len(S))
     N = len(S)
     A, d, T = _articulated(I, S, kappa, p, taus, parents)

@@ -216,16 +216,21 @@ def force_propagator(I, s, Q, p, f_next, a_prev, kappa, R=None) -> np.ndarray:
 # ---------------------------------------------------------------------------
 # Model glue
 # ---------------------------------------------------------------------------
-def _state_arrays(model, q, qd, tau, f_ext):
-    """Kinematics of one state: (data, I, S list, kappa, p, parents, tau list)."""
-    from ..kinematics import check_state, kinematics
+def _state_arrays(model, q, qd, tau, f_ext, checked=False):
+    """Kinematics of one state: (data, I, S list, kappa, p, parents, tau list).
 
-    q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
-    if shape != ():
-        raise _batch_error(shape)
+    ``checked``: the arguments come out of :func:`planargeo.kinematics.check_state`
+    for one state already (as in :func:`_per_state`), so they are not validated again.
+    """
+    from ..kinematics import _kinematics_scalar, check_state
+
+    if not checked:
+        q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
+        if shape != ():
+            raise _batch_error(shape)
     if tau is None:
         tau = np.zeros(model.nq)
-    d = kinematics(model, q, qd, f_ext)
+    d = _kinematics_scalar(model, q, np.zeros(model.nq) if qd is None else qd, f_ext)   # kinematics()
     offs, N = model.q_offsets, model.N
     S = [d.S[:, offs[i]:offs[i + 1]] for i in range(N)]            # d.s(i)
     taus = [tau[offs[i]:offs[i + 1]] for i in range(N)]
@@ -387,7 +392,7 @@ def _projective_qdd(model, q, qd, tau, f_ext):
     """
     from .articulated_inertia import _articulated
 
-    _, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
+    _, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext, checked=True)
     A, d, T = _articulated(I, S, kappa, p, taus, parents)
     N = len(S)
     a = np.zeros((N, 3))

@@ -258,6 +258,13 @@ def quake_space(s, T, R=None, point=(0.0, 0.0)):
 
 
 def _blockdiag(mats, rows, cols):
+    n = len(mats)
+    if n and all(r == rows[0] for r in rows) and all(c == cols[0] for c in cols):   # equal blocks: one assignment
+        r, c = rows[0], cols[0]
+        out = np.zeros((n * r, n * c))
+        k = np.arange(n)
+        out.reshape(n, r, n, c)[k, :, k, :] = np.asarray(mats, dtype=float).reshape(n, r, c)
+        return out
     out = np.zeros((sum(rows), sum(cols)))
     r = c = 0
     for M, nr, nc in zip(mats, rows, cols):
@@ -426,10 +433,12 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     C, S, T, P, A = sol.C, sol.S, sol.T, sol.P, sol.A
     # L = (1 - C^T R U^T)^-1 (9.31) is applied by solves with the unit upper triangular
     # 1 - C^T P (parents before children); sol.L itself is built on first access.
-    CtP = C.T @ P
-    Linv = np.eye(3 * N) - CtP
+    Linv = np.eye(3 * N)                           # 1 - C^T P: block (λ(i), i) is -P_i
+    for i, j in enumerate(model.parents):
+        if j >= 0:
+            Linv[3 * j:3 * j + 3, 3 * i:3 * i + 3] = -art["P"][i]
     # (9.32) corrected: d = L (p + C^T T Q + C^T R U^T A κ)
-    sol.d = _unit_upper_solve(Linv, sol.p + C.T @ (T @ Q) + CtP @ (A @ sol.kappa))
+    sol.d = _unit_upper_solve(Linv, sol.p + C.T @ (T @ Q) + C.T @ (P @ (A @ sol.kappa)))
     # (9.39): a = L^T [S T^T A^-1 (T Q - d) + U R^T κ]
     # S T^T A^-1 = S (S^T A S)^-1 S^T: no inverse of A needed
     sol.StTAinv = _blockdiag([_effective_mobility(Ai, si, f"sᵀAs of joint {i}")
