@@ -150,16 +150,17 @@ def _gram(s: np.ndarray, As: np.ndarray, A_scale, sname: str, what: str) -> np.n
     ``|M|`` for a 1×1 ``M``, else from the small ``k×k`` matrix itself) must not
     exceed :data:`COND_LIMIT`.
     """
-    M = _T(s) @ As
-    k = M.shape[-1]
-    if k == 0:
-        return M
-    if k == 1 and M.ndim == 2:                 # one joint, one dof: Python floats (M is its own transpose)
+    if s.shape == (3, 1) and As.ndim == 2:     # one joint, one dof: Python floats (M is its own transpose)
+        M = s.T @ As
         smin, scale = abs(float(M[0, 0])), A_scale * float(np.vdot(s, s))
         cond = scale / smin if smin > 0 else math.inf
         if not cond <= COND_LIMIT:
             raise SingularConfigurationError(
                 f"{what} is singular: the inertia has (almost) nothing along {sname}", float(cond))
+        return M
+    M = _T(s) @ As
+    k = M.shape[-1]
+    if k == 0:
         return M
     M = 0.5 * (M + _T(M))
     smin = np.abs(M[..., 0, 0]) if k == 1 else _abs_eig(M)[1]

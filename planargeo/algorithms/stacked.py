@@ -41,7 +41,7 @@ import numpy as np
 from .._validate import as_array
 from ..errors import ShapeError, SingularConfigurationError, TopologyError
 from ..joints import reaction_space_of
-from ..kinematics import check_state, kinematics
+from ..kinematics import _kinematics_scalar, check_state, kinematics
 from ..subspaces import _effective_mobility, _percussion_space, reactive_acceleration_space
 from ..model import Model
 
@@ -276,9 +276,12 @@ def _blockdiag(mats, rows, cols):
 
 def _unit_upper_solve(M, b, trans: bool = False) -> np.ndarray:
     """``M⁻¹ b`` (or ``M⁻ᵀ b``) for the unit upper triangular ``M = 1 - C^T P`` of a tree whose parents come first."""
-    from scipy.linalg import solve_triangular
+    from scipy.linalg.lapack import dtrtrs
 
-    return solve_triangular(M, b, trans=1 if trans else 0, unit_diagonal=True, check_finite=False)
+    # LAPACK on the Fortran-ordered view M^T (lower triangular): M x = b is (M^T)^T x = b
+    x, info = dtrtrs(M.T, b, lower=1, trans=0 if trans else 1, unitdiag=1)
+    assert info == 0, info                        # unit diagonal: never singular
+    return x
 
 
 def articulation_matrix(C3, P) -> np.ndarray:
@@ -412,9 +415,9 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
     if shape != ():
         raise ShapeError(f"stacked_solve takes one state, got batch shape {shape}")
-    if data is None:
-        data = kinematics(model, q, qd, f_ext)
     N, nq = model.N, model.nq
+    if data is None:
+        data = _kinematics_scalar(model, q, np.zeros(nq) if qd is None else qd, f_ext)   # kinematics(), checked
     art = articulated_quantities(model, data, tau)
     ks = [si.shape[1] for si in art["s"]]
     kr = [3 - k for k in ks]
@@ -441,8 +444,11 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     sol.d = _unit_upper_solve(Linv, sol.p + C.T @ (T @ Q) + C.T @ (P @ (A @ sol.kappa)))
     # (9.39): a = L^T [S T^T A^-1 (T Q - d) + U R^T κ]
     # S T^T A^-1 = S (S^T A S)^-1 S^T: no inverse of A needed
-    sol.StTAinv = _blockdiag([_effective_mobility(Ai, si, f"sᵀAs of joint {i}")
-                              for i, (si, Ai) in enumerate(zip(art["s"], art["A"]))], three, three)
+    if N and all(k == 1 for k in ks):              # one-dof joints: all bodies in one call (sᵀAs checked above)
+        mobs = _effective_mobility(np.stack(art["A"]), np.stack(art["s"]), "sᵀAs of a joint")
+    else:
+        mobs = [_effective_mobility(Ai, si, f"sᵀAs of joint {i}") for i, (si, Ai) in enumerate(zip(art["s"], art["A"]))]
+    sol.StTAinv = _blockdiag(mobs, three, three)
     sol.a = _unit_upper_solve(Linv, sol.StTAinv @ (T @ Q - sol.d) + P.T @ sol.kappa, trans=True)  # U R^T = P^T
     # (9.41) with (9.17): internal forces
     sol.f = T @ Q + P @ (A @ (C @ sol.a + sol.kappa) + sol.d)
