@@ -50,7 +50,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..joints import reaction_space_of
-from ..subspaces import _reactive_from_T, effective_mobility, percussion_space, reactive_acceleration_space
+from ..subspaces import _reactive_from_T, _solve, effective_mobility, percussion_space, reactive_acceleration_space
 
 __all__ = [
     "reaction_space", "percussion_subspace", "reactive_subspace",
@@ -144,10 +144,7 @@ def _joint_solve(A, s, rhs):
     k = s.shape[1]
     if k == 0:
         return np.zeros(0)
-    M = s.T @ A @ s
-    if k == 1:
-        return rhs * (1.0 / M[0, 0])             # the numbers of the LU solve (reciprocal pivot)
-    return np.linalg.solve(M, rhs)
+    return _solve(s.T @ A @ s, rhs)
 
 
 # ---------------------------------------------------------------------------
