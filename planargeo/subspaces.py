@@ -17,7 +17,14 @@ All functions broadcast over leading dimensions: spaces are ``(..., 3, k)``,
 inertias ``(..., 3, 3)``, wrenches / twists ``(..., 3)``.  A space may also be
 given as a single column of shape ``(3,)``.  No matrix is inverted explicitly:
 everything goes through :func:`numpy.linalg.solve` on the small ``k×k``
-matrices ``sᵀAs`` / ``RᵀA⁻¹R`` (and on ``A`` itself for ``A⁻¹R``).
+matrices ``sᵀAs`` / ``RᵀA⁻¹R`` (and on ``A`` itself for ``A⁻¹R``); a single
+1×1 ``sᵀAs`` is applied as the LU solve does it, by its reciprocal.
+
+The public functions validate their arguments and call private, unchecked
+kernels (``_percussion_space(A, s)``, ``_effective_mobility(A, s)``,
+``_reactive_from_T(R, s, T)``) that the chain algorithms call per body; the
+singularity rule (:func:`_gram`: ``‖A‖ ‖s‖² / |λ|_min(sᵀAs)`` with Frobenius
+norms, no eigen-solve of ``A``) lives in the kernels, so it is the same everywhere.
 
 Errors: a singular ``sᵀAs`` or ``RᵀA⁻¹R`` raises
 :class:`~planargeo.errors.SingularConfigurationError`; a singular ``A`` where
