@@ -112,14 +112,9 @@ def _solve_A(A: np.ndarray, B: np.ndarray, name: str, eig=None) -> np.ndarray:
     return np.linalg.solve(np.broadcast_to(A, shape + A.shape[-2:]), np.broadcast_to(B, shape + B.shape[-2:]))
 
 
-try:                                             # the gufuncs behind numpy.linalg.solve, without its wrapper
-    from numpy.linalg import _umath_linalg as _gufuncs
-
-    def _solve(M: np.ndarray, b: np.ndarray) -> np.ndarray:
-        """``M⁻¹ b`` for one small float64 ``M`` already checked non-singular (the numbers of :func:`numpy.linalg.solve`)."""
-        return (_gufuncs.solve1 if b.ndim == 1 else _gufuncs.solve)(M, b, signature="dd->d")
-except (ImportError, AttributeError):              # pragma: no cover (other numpy layouts)
-    _solve = np.linalg.solve
+def _solve(M: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``M⁻¹ b`` for one small ``M`` already checked non-singular."""
+    return np.linalg.solve(M, b)
 
 
 def _right_solve(X: np.ndarray, M: np.ndarray) -> np.ndarray:
