@@ -28,6 +28,8 @@ only the sine/cosine rounding (exact mode).
 """
 from __future__ import annotations
 
+import warnings
+from decimal import Decimal, localcontext
 from fractions import Fraction
 
 import numpy as np
@@ -39,8 +41,13 @@ from planargeo.algorithms.crba import forward_dynamics_crba
 from planargeo.algorithms.loops import SINGULAR_COND, constrained_dynamics_lagrange, loop_solve
 from planargeo.algorithms.projective import forward_dynamics_projective
 from planargeo.algorithms.stacked import forward_dynamics_stacked
-from planargeo.errors import SingularConfigurationError
+from planargeo.conics import pole
+from planargeo.errors import DegenerateGeometryError, SingularConfigurationError, SingularInertiaError
+from planargeo.inertia import percussion_axis, percussion_pole
 from planargeo.model import Body, Joint, Model, chain_model  # noqa: F401
+from planargeo.projective import (direction, from_xy, join, line_through_point_direction, meet, signed_distance,
+                                  to_xy)
+from planargeo.screws import inertia_matrix
 
 EPS = float(np.finfo(float).eps)
 EPS_LD = float(np.finfo(np.longdouble).eps)
@@ -304,6 +311,189 @@ def folded_state(delta: float, path: str = "rod"):
     return model, q, qd, r, l
 
 
+# ---------------------------------------------------------------------------- geometry reference
+# The geometry layer (planargeo.projective, conics, inertia) against exact rational arithmetic.
+# Every input is a float64 array; the reference takes it as the exact number it is (``Fraction``)
+# and forms the cross product (join / meet), the matrix-vector product (polar, axis of percussion)
+# or the solve (pole, percussion pole) without rounding.  Errors are normwise and relative:
+# ``|x - x_ref| / |x_ref|`` for a homogeneous result (the package returns the unnormalised
+# ``p × q``, ``C p`` or ``C⁻¹ l``, the scale of the reference), and for its Euclidean reading
+# (a point's ``(x, y)``; a line's distance from a given point).
+
+def fr(v) -> list:
+    """A float64 vector as exact Fractions."""
+    return [Fraction(float(x)) for x in np.asarray(v, dtype=float).ravel()]
+
+
+def cross_exact(a, b) -> list:
+    """``a × b`` in exact arithmetic (join of two points, meet of two lines)."""
+    a, b = fr(a), fr(b)
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def matvec_exact(M, v) -> list:
+    """``M v`` in exact arithmetic (polar of a point, axis of percussion ``I a``)."""
+    v = fr(v)
+    return [sum(x * y for x, y in zip(fr(row), v)) for row in np.asarray(M, dtype=float)]
+
+
+def solve_exact(M, b) -> list:
+    """``M⁻¹ b`` in exact arithmetic (pole of a line, percussion pole ``I⁻¹ f``): Gauss-Jordan."""
+    A = [fr(row) + [x] for row, x in zip(np.asarray(M, dtype=float), fr(b))]
+    n = len(A)
+    for k in range(n):
+        piv = next(i for i in range(k, n) if A[i][k] != 0)
+        A[k], A[piv] = A[piv], A[k]
+        for i in range(n):
+            if i != k and A[i][k] != 0:
+                f = A[i][k] / A[k][k]
+                A[i] = [x - f * y for x, y in zip(A[i], A[k])]
+    return [A[i][n] / A[i][i] for i in range(n)]
+
+
+def norm_exact(v) -> float:
+    """Euclidean norm of exact (or float) numbers, rounded once at the end."""
+    return float(np.sqrt(float(sum(Fraction(x) ** 2 for x in v))))
+
+
+def hom_err(x, ref) -> float:
+    """Normwise relative error of a homogeneous result against the exact one (same scale)."""
+    return norm_exact([Fraction(float(a)) - b for a, b in zip(np.asarray(x).ravel(), ref)]) / norm_exact(ref)
+
+
+def cross_cond(a, b, ref) -> float:
+    """Condition number ``|a| |b| / |a × b|`` of a cross product: 1 / sine of the angle of the 3-vectors.
+
+    Each component of ``a × b`` is a difference of two rounded products, so the
+    rounding error is at most about ``ε |a| |b|`` and the relative error about ``ε``
+    times this number.
+    """
+    return norm_exact(fr(a)) * norm_exact(fr(b)) / norm_exact(ref)
+
+
+def matvec_cond(M, v, ref) -> float:
+    """Condition number ``| |M| |v| | / |M v|`` of a matrix-vector product (componentwise magnitudes)."""
+    return norm_exact(matvec_exact(np.abs(M), np.abs(np.asarray(v, dtype=float)))) / norm_exact(ref)
+
+
+def euclid_err(p, ref) -> float:
+    """Relative error of ``to_xy(p)`` against the exact ``(-p1/w, p0/w)`` (``inf``: the point was lost to infinity)."""
+    x = to_xy(p)
+    if not np.all(np.isfinite(x)):
+        return float("inf")
+    X = [-ref[1] / ref[2], ref[0] / ref[2]]
+    return norm_exact([Fraction(float(a)) - b for a, b in zip(x, X)]) / norm_exact(X)
+
+
+def euclid_cond(kappa: float, ref, weight) -> float:
+    """Condition number of a Euclidean reading: ``κ |x| / |weight|``.
+
+    Reading Euclidean positions off a homogeneous result divides by its weight
+    (``w`` of a point; the force ``|(fx, fy)|`` of a line), which turns the absolute
+    error ``ε κ |x|`` into a relative error of up to ``ε κ |x| / |weight|``: large for
+    elements near infinity however accurate the homogeneous result is.
+    """
+    weight = abs(float(weight))
+    return kappa * norm_exact(ref) / weight if weight else float("inf")
+
+
+def distance_cond(kappa: float, f, c) -> float:
+    """Condition number of the distance ``r = c·f / |(fx, fy)|`` of the point ``c`` from a line ``f``.
+
+    ``κ (|c| |f| / |c·f| + |f| / |(fx, fy)|)`` (``c`` homogeneous, weight 1): the dot
+    product loses accuracy when the line passes close to ``c`` (r → 0), the division
+    when the line is near the line at infinity (r → ∞).
+    """
+    ch = fr(from_xy(c))
+    dot = abs(float(sum(x * y for x, y in zip(ch, f))))
+    force = norm_exact(f[:2])
+    nf = norm_exact(f)
+    if dot == 0 or force == 0:
+        return float("inf")
+    return kappa * (norm_exact(ch) * nf / dot + nf / force)
+
+
+def _dec(x) -> Decimal:
+    x = Fraction(x)
+    return Decimal(x.numerator) / Decimal(x.denominator)
+
+
+def distance_exact(f, c) -> Decimal:
+    """Signed distance (thesis 5.23) of the Euclidean point ``c`` from the exact line ``f``, to 40 digits."""
+    num = sum(x * y for x, y in zip(fr(from_xy(c)), f))
+    with localcontext() as ctx:
+        ctx.prec = 40
+        return _dec(num) / (_dec(f[0]) ** 2 + _dec(f[1]) ** 2).sqrt()
+
+
+def decimal_err(x: float, ref: Decimal) -> float:
+    """Relative error of a float against a 40-digit reference."""
+    with localcontext() as ctx:
+        ctx.prec = 40
+        return float(abs(Decimal(float(x)) - ref) / abs(ref))
+
+
+def pencil_pair(theta: float, rng):
+    """Two lines through one random point of ``[-1, 1]²`` at random angles ``a`` and ``a + θ`` (near-coincident)."""
+    P = from_xy(rng.uniform(-1, 1, 2))
+    a = rng.uniform(0, np.pi)
+    return (line_through_point_direction(P, (np.cos(a), np.sin(a))),
+            line_through_point_direction(P, (np.cos(a + theta), np.sin(a + theta))))
+
+
+def strip_pair(theta: float, rng, h: float = 1.0):
+    """Two lines ``h`` apart (the first through a random point of ``[-3, 3]²``) at angles ``a``, ``a + θ``.
+
+    Near-parallel but not near-coincident: they meet about ``h / θ`` away.  ``θ = 0``
+    gives exactly parallel lines (the same direction floats).
+    """
+    P = rng.uniform(-3, 3, 2)
+    a = rng.uniform(0, np.pi)
+    n = np.array([-np.sin(a), np.cos(a)])
+    return (line_through_point_direction(from_xy(P), (np.cos(a), np.sin(a))),
+            line_through_point_direction(from_xy(P + h * n), (np.cos(a + theta), np.sin(a + theta))))
+
+
+def near_points(delta: float, R: float, rng):
+    """Two homogeneous points ``δ`` apart, the first at a random distance in ``[R/2, R]`` from the origin."""
+    u, v = rng.normal(size=(2, 2))
+    P = R * rng.uniform(0.5, 1.0) * u / np.linalg.norm(u)
+    return from_xy(P), from_xy(P + delta * v / np.linalg.norm(v))
+
+
+#: body of the percussion sweeps: m = 1.3, centre of mass (0.7, -0.4), ρ = 0.5 (no power-of-two products)
+GEO_MASS, GEO_COM, GEO_RHO = 1.3, np.array([0.7, -0.4]), 0.5
+
+
+def geo_inertia(rho: float = GEO_RHO):
+    return inertia_matrix(GEO_MASS, GEO_COM, GEO_MASS * rho * rho)
+
+
+def pole_near_com(d: float, rng):
+    """A homogeneous acceleration pole at distance ``d`` from the centre of mass (random direction)."""
+    u = rng.normal(size=2)
+    return from_xy(GEO_COM + d * u / np.linalg.norm(u))
+
+
+def pole_far(R: float, rng):
+    """A homogeneous acceleration pole ``R`` away from the centre of mass, scaled by ``1/R`` (weight ``1/R``)."""
+    u = rng.normal(size=2)
+    return from_xy(GEO_COM + R * u / np.linalg.norm(u)) / R
+
+
+def line_near_infinity(e: float, rng):
+    """A line ``[e fx, e fy, 1]``: as ``e → 0`` the line at infinity (its percussion pole → the centre of mass)."""
+    u = rng.normal(size=3)
+    return np.array([e * u[0], e * u[1], 1.0])
+
+
+def line_near_com(e: float, rng):
+    """A line passing ``e`` from the centre of mass (its percussion pole goes to infinity as ``e → 0``)."""
+    u = rng.normal(size=2)
+    u /= np.linalg.norm(u)
+    return line_through_point_direction(from_xy(GEO_COM + e * np.array([-u[1], u[0]])), u)
+
+
 # =========================================================================== tests
 def test_reference_matches_hand_pendulum():
     # single uniform link: J_o = m L²/3, q̈ = (τ - m g L/2 cos q) / J_o
@@ -456,3 +646,181 @@ def test_psi_path_is_ill_posed_for_float_states():
     lag = constrained_dynamics_lagrange(model, q, qd, tau)["qdd"]
     assert rel_err(sol.qdd, ref) < 2 * sens and rel_err(lag, ref) < 2 * sens
     assert rel_err(sol.qdd, lag) < 1e-3 * sens
+
+
+# ---------------------------------------------------------------------------- geometry layer (knob f)
+def _no_warnings(fn, *args):
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        return fn(*args)
+
+
+def test_geometry_reference_is_exact():
+    # the meet of x = 1 and y = 2, and a percussion axis of thesis 5.64-5.66, by hand
+    assert cross_exact([0.0, 1.0, -1.0], [1.0, 0.0, 2.0]) == [2, -1, -1]        # the point (1, 2), weight -1
+    I = inertia_matrix(2.0, [1.0, 0.0], 0.5)
+    assert matvec_exact(I, [0.0, 0.0, 1.0]) == [0, 2, Fraction(5, 2)]
+    assert solve_exact(I, [0, 2, 2.5]) == [0, 0, 1]
+
+
+def test_meet_of_exactly_parallel_lines_is_an_ideal_point_silently():
+    # θ = 0 in strip_pair: the same direction floats, one unit apart: weight exactly 0, no warning
+    rng = np.random.default_rng(7)
+    for _ in range(16):
+        l, m = strip_pair(0.0, rng)
+        p = _no_warnings(meet, l, m)
+        assert p[2] == 0.0
+        assert np.all(np.isnan(_no_warnings(to_xy, p)))
+        d = _no_warnings(direction, p)
+        assert abs(abs(d @ (l[:2] / np.hypot(*l[:2]))) - 1) < 1e-15      # along the common direction
+        assert hom_err(p, cross_exact(l, m)) < 4 * EPS
+
+
+@pytest.mark.parametrize("theta", [1e-4, 1e-10, 1e-15])
+def test_meet_of_near_parallel_lines_homogeneous_accurate_euclidean_eps_over_theta(theta):
+    # lines one unit apart meeting ~1/θ away: measured κ ≤ 18 and homogeneous error ≤ 3.7e-16 at every θ,
+    # while the Euclidean point loses ε·κ_E ≈ ε/θ (θ = 1e-15: 6e-2), as the exact answer does for 1 ulp in m
+    rng = np.random.default_rng(11)
+    for _ in range(8):
+        l, m = strip_pair(theta, rng)
+        p = _no_warnings(meet, l, m)
+        exact = cross_exact(l, m)
+        kappa = cross_cond(l, m, exact)
+        assert kappa < 30
+        assert hom_err(p, exact) < 4 * EPS
+        assert euclid_err(p, exact) <= EPS * euclid_cond(kappa, exact, exact[2])
+        assert euclid_cond(kappa, exact, exact[2]) > 0.1 / theta
+
+
+@pytest.mark.parametrize("theta", [1e-3, 1e-8, 1e-13])
+def test_meet_of_near_coincident_lines_loses_eps_kappa_and_raises_only_when_identical(theta):
+    # two lines through one point at angle θ: κ ≈ 1/θ, measured error ≤ 0.7 ε κ (homogeneous), ≤ ε κ_E (Euclidean)
+    rng = np.random.default_rng(13)
+    for _ in range(8):
+        l, m = pencil_pair(theta, rng)
+        p = _no_warnings(meet, l, m)
+        exact = cross_exact(l, m)
+        kappa = cross_cond(l, m, exact)
+        assert 0.1 / theta < kappa < 10 / theta
+        assert hom_err(p, exact) <= EPS * kappa
+        assert euclid_err(p, exact) <= EPS * euclid_cond(kappa, exact, exact[2])
+
+
+def test_meet_names_only_an_exactly_repeated_line():
+    # the rule: DegenerateGeometryError iff l × m is exactly zero.  A line and its double (exact) raise; a line
+    # and its triple or its normalised copy (rounded) are two distinct float lines and return some point of
+    # the line (measured: 140 of 200 and 135 of 200 random lines), with κ ~ 1/ε
+    l = np.array([0.3, -1.7, 0.9])
+    for m in (l, 2 * l, -0.5 * l):
+        with pytest.raises(DegenerateGeometryError):
+            meet(l, m)
+    p = meet(l, 3 * l)                                   # no error: a point with no meaning
+    assert np.all(np.isfinite(p)) and np.any(p != 0)
+    assert cross_cond(l, 3 * l, cross_exact(l, 3 * l)) > 1e15
+    # near-coincident at θ = 1e-15: nothing refuses; the answer keeps about one digit (measured ≤ 0.1)
+    rng = np.random.default_rng(5)
+    errs = [euclid_err(meet(*pair), cross_exact(*pair)) for pair in (pencil_pair(1e-15, rng) for _ in range(8))]
+    assert max(errs) > 1e-3
+
+
+@pytest.mark.parametrize("R", [1.0, 1e3])
+def test_join_of_nearly_coincident_points_error_eps_kappa_and_named_error_only_for_identical_points(R):
+    rng = np.random.default_rng(17)
+    for k in range(0, 16, 3):
+        p, q = near_points(R * 10.0 ** -k, R, rng)
+        l = _no_warnings(join, p, q)
+        exact = cross_exact(p, q)
+        assert hom_err(l, exact) <= EPS * cross_cond(p, q, exact)
+        assert np.all(l[:2] == (to_xy(q) - to_xy(p)))       # the direction is exact; the moment carries the error
+    with pytest.raises(DegenerateGeometryError):
+        join(p, p.copy())
+
+
+def test_join_one_ulp_apart_far_from_the_origin_returns_a_wrong_line_without_error():
+    # measured in the study: at R ≈ 1e3, δ ≈ 1 ulp the relative error reaches 3.5 and the line misses the
+    # given point by up to 269 units: no named error, because p × q is not exactly zero
+    P = np.array([700.3, -512.9])
+    Q = np.array([np.nextafter(P[0], np.inf), np.nextafter(P[1], -np.inf)])
+    p, q = from_xy(P), from_xy(Q)
+    l = join(p, q)
+    exact = cross_exact(p, q)
+    assert cross_cond(p, q, exact) > 1e15
+    miss = abs(float(distance_exact(fr(l), P)))
+    assert miss > 1.0, miss                               # the returned line passes far from P
+
+
+def test_percussion_axis_of_the_centre_of_mass_is_the_line_at_infinity_exactly():
+    I = geo_inertia()
+    f = _no_warnings(percussion_axis, I, from_xy(GEO_COM))
+    assert f[0] == 0.0 and f[1] == 0.0 and f[2] > 0              # a pure couple [0, 0, J]
+    assert abs(f[2] - GEO_MASS * GEO_RHO ** 2) < 4 * EPS
+
+
+@pytest.mark.parametrize("d", [1e-3, 1e-9, 1e-15])
+def test_percussion_axis_near_the_centre_homogeneous_accurate_distance_eps_over_d(d):
+    # measured: homogeneous error ≤ 4e-16 (κ ≈ 9) at every d; the distance r = ρ²/d of the axis from c
+    # loses ε κ_E ≈ ε/d (d = 1e-15: 4.9e-2)
+    I = geo_inertia()
+    rng = np.random.default_rng(19)
+    for _ in range(8):
+        a = pole_near_com(d, rng)
+        f = _no_warnings(percussion_axis, I, a)
+        exact = matvec_exact(I, a)
+        kappa = matvec_cond(I, a, exact)
+        assert kappa < 15 and hom_err(f, exact) < 4 * EPS
+        r = distance_exact(exact, GEO_COM)
+        # r = ρ²/d (5.68) for the distance d the rounded pole really has (c + d u rounds by ~ε |c|)
+        assert abs(float(r) - GEO_RHO ** 2 / d) < (1e-12 + 4 * EPS / d) * GEO_RHO ** 2 / d
+        err = decimal_err(float(signed_distance(from_xy(GEO_COM), f)), r)
+        assert err <= EPS * distance_cond(kappa, exact, GEO_COM)
+
+
+def test_percussion_axis_of_a_far_or_ideal_pole_passes_through_the_centre():
+    I = geo_inertia()
+    rng = np.random.default_rng(23)
+    for R in (1e6, 1e12):
+        a = pole_far(R, rng)
+        f = _no_warnings(percussion_axis, I, a)
+        exact = matvec_exact(I, a)
+        assert hom_err(f, exact) < 4 * EPS
+        assert abs(float(signed_distance(from_xy(GEO_COM), f))) < GEO_RHO ** 2 / R + 4 * EPS
+    u = np.array([0.6, -0.8])
+    f = _no_warnings(percussion_axis, I, np.array([u[1], -u[0], 0.0]))     # a translation
+    assert abs(float(signed_distance(from_xy(GEO_COM), f))) < 4 * EPS       # the force passes through c
+
+
+def test_percussion_pole_as_the_line_runs_to_infinity_or_through_the_centre():
+    I = geo_inertia()
+    rng = np.random.default_rng(29)
+    for e in (1e-6, 1e-14):
+        f = line_near_infinity(e, rng)                    # pole → c: accurate both ways (measured ≤ 6.5e-16)
+        p = _no_warnings(percussion_pole, I, f)
+        exact = solve_exact(I, f)
+        assert hom_err(p, exact) < 8 * EPS and euclid_err(p, exact) < 8 * EPS
+        f = line_near_com(e, rng)                         # pole → ∞: homogeneous accurate, Euclidean ε κ_E
+        p = _no_warnings(percussion_pole, I, f)
+        exact = solve_exact(I, f)
+        assert hom_err(p, exact) < 8 * EPS
+        kappa = float(np.linalg.cond(I))
+        assert euclid_err(p, exact) <= EPS * euclid_cond(kappa, exact, exact[2])
+    assert np.allclose(to_xy(percussion_pole(I, [0.0, 0.0, 1.0])), GEO_COM, rtol=0, atol=4 * EPS)
+
+
+def test_pole_of_an_inertia_degenerating_to_a_point_mass_raises_past_its_threshold():
+    # ρ → 0: cond₂(I) ≈ 2.7 / ρ²; the homogeneous pole loses ≤ 0.26 ε cond (measured) in its size, not its
+    # position.  percussion_pole refuses at λ_min ≤ 1e-12 λ_max (ρ = 1e-6), conics.pole at cond > 1e13 (ρ = 1e-7)
+    f = np.array([0.4, -1.1, 0.7])
+    I5, I6, I7 = geo_inertia(1e-5), geo_inertia(1e-6), geo_inertia(1e-7)
+    for fn in (pole, percussion_pole):
+        p = fn(I5, f)
+        exact = solve_exact(I5, f)
+        assert 1e-9 < hom_err(p, exact) <= EPS * np.linalg.cond(I5)
+        assert euclid_err(p, exact) < 1e-14
+    with pytest.raises(SingularInertiaError) as e:
+        percussion_pole(I6, f)
+    assert 1e12 <= e.value.cond < 1e13
+    p = pole(I6, f)                                        # 2.7e12 < 1e13: still answers, error ≤ ε cond
+    assert hom_err(p, solve_exact(I6, f)) <= EPS * np.linalg.cond(I6)
+    with pytest.raises(DegenerateGeometryError) as e:
+        pole(I7, f)
+    assert e.value.cond > 1e13
