@@ -2,8 +2,11 @@
 import argparse
 
 import numpy as np
+import pytest
 
 from planargeo import bench
+from planargeo.algorithms.crba import forward_dynamics_crba
+from planargeo.model import chain_model, random_model
 
 
 def test_tables_and_charts(tmp_path):
@@ -36,3 +39,91 @@ def test_arguments_and_single_thread_rerun(monkeypatch):
     for v in bench._THREAD_VARS:
         monkeypatch.setenv(v, "1")
     assert bench._single_threaded_argv(args) is None
+
+
+# --------------------------------------------------------------------------- MuJoCo peer
+@pytest.mark.parametrize("make", [
+    pytest.param(lambda n: chain_model(n), id="chain"),
+    pytest.param(lambda n: chain_model(n, joint="prismatic"), id="prismatic-chain"),
+    pytest.param(lambda n: random_model(n, seed=n), id="random"),
+    pytest.param(lambda n: random_model(n, seed=n + 7, tree=True), id="random-tree"),
+])
+@pytest.mark.parametrize("n", [1, 2, 5, 20, 100])
+def test_mujoco_agrees_with_crba_and_pinocchio(make, n):
+    mujoco = pytest.importorskip("mujoco")
+    model = make(n)
+    mjm = bench.to_mujoco(model)
+    assert mjm.nv == model.nq and mjm.opt.gravity[1] == model.gravity[1]
+    assert not mjm.dof_armature.any() and not mjm.dof_damping.any()
+    assert mjm.opt.disableflags & mujoco.mjtDisableBit.mjDSBL_CONTACT
+    mjd = mujoco.MjData(mjm)
+    dofs = bench.mujoco_dofs(mjm, model)
+    rng = np.random.default_rng(n)
+    for _ in range(3):
+        q, qd, tau = rng.normal(size=(3, model.nq))
+        got = bench.mujoco_forward(mjm, mjd, q, qd, tau, dofs)
+        ref = forward_dynamics_crba(model, q, qd, tau)
+        assert np.abs(got - ref).max() <= 1e-9 * np.abs(ref).max()
+        pm = bench.to_pinocchio(model)
+        if pm is not None:
+            import pinocchio as pin
+
+            p = pin.aba(pm, pm.createData(), q, qd, tau)
+            assert np.abs(got - p).max() <= 1e-9 * np.abs(p).max()
+
+
+def test_mujoco_xml_is_explicit():
+    xml = bench.to_mujoco_xml(random_model(3, seed=1))
+    for s in ('<flag contact="disable"/>', 'gravity="0.0 -9.81 0"', 'armature="0"', 'damping="0"',
+              "<inertial ", 'inertiafromgeom="false"'):
+        assert s in xml
+    assert "<geom" not in xml
+
+
+def test_mujoco_tree_dof_order_is_mapped():
+    pytest.importorskip("mujoco")
+    m = random_model(12, seed=19, tree=True)
+    mjm = bench.to_mujoco(m)
+    dofs = bench.mujoco_dofs(mjm, m)
+    assert dofs is not None and sorted(dofs) == list(range(m.nq))   # a real permutation is exercised
+
+
+# --------------------------------------------------------------------------- reference, RESULTS.md
+def test_reference_errors_and_scaling_ratio():
+    rows = bench.run_single((2, 8), budget=0.001, rounds=2)
+    for r in rows:
+        assert r["ref"]["mode"] == ("exact" if r["N"] <= bench.EXACT_MAX else "longdouble")
+        for name in ("aba", "projective", "mobility_split", "stacked", "crba"):
+            assert r["err_ref"][name] < 1e-12
+        for peer in bench.PEERS:
+            if peer in r["times"]:
+                assert r["err_ref"][peer] < 1e-12
+    assert bench.scaling_pair(rows) == (2, 8)
+    assert set(bench.scaling_ratios(rows)) == set(rows[0]["times"])
+
+
+def test_quick_main_writes_results_with_sections(tmp_path, monkeypatch):
+    for v in bench._THREAD_VARS:
+        monkeypatch.setenv(v, "1")
+    p = argparse.ArgumentParser()
+    bench.add_arguments(p)
+    out = tmp_path / "results"
+    gallery = tmp_path / "gallery" / "benchmarks"
+    monkeypatch.setattr(bench, "QUICK_BATCH_SIZES", (1, 50))
+    args = p.parse_args(["--quick", "--only", "dynamics", "--sizes", "2,10", "--out", str(out),
+                         "--gallery", str(gallery)])
+    assert bench.main(args) == 0
+    text = (tmp_path / "RESULTS.md").read_text(encoding="utf-8")
+    for heading in ("## Headline", "## Charts", "## Single call: ratios to Pinocchio and MuJoCo",
+                    "## Single call: time per call", "## Accuracy: error against the extended-precision reference",
+                    "## Batched sweeps", "## Scaling", "## Other results"):
+        assert heading in text
+    for link in ("results/scaling.svg", "results/work_precision.svg", "results/breakdown.md",
+                 "results/widget_latency.md", "results/integrators.md", "results/scene_cost.md"):
+        assert f"]({link})" in text
+    assert "single call, N = 10: `aba` / pin.aba" in text or "pinocchio" not in bench._peers(chain_model(1))
+    assert "t(10) / t(2)" in text
+    for name in bench.CHARTS:
+        assert (out / f"{name}.svg").stat().st_size > 1000
+        assert (gallery / f"{name}.svg").read_bytes() == (out / f"{name}.svg").read_bytes()
+    assert (out / "dynamics.json").exists()
