@@ -87,7 +87,8 @@ def _progress(msg: str) -> None:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--out", default="benchmarks/results", help="output directory (default: %(default)s)")
+    parser.add_argument("--out", default="benchmarks/results",
+                        help="output directory, also passed to the group scripts that take --out (default: %(default)s)")
     parser.add_argument("--quick", action="store_true",
                         help="fewer sizes, repeats and smaller batches (under a minute); passed on to the "
                              "group scripts that accept it")
@@ -841,9 +842,13 @@ MARKERS = {"aba": "o", "projective": "s", "mobility_split": "^", "stacked": "D",
            "mujoco": "*"}
 
 
-def _save(fig, out: Path, name: str):
+def _save(fig, out: Path, name: str, rect=(0, 0, 1, 1)):
+    """Lay out (minor ticks off: on log axes they are thousands of labels to measure) and write SVG + PNG."""
     import matplotlib.pyplot as plt
 
+    for a in fig.axes:
+        a.minorticks_off()
+    fig.tight_layout(rect=rect)
     fig.savefig(out / f"{name}.svg", metadata={"Date": None})
     fig.savefig(out / f"{name}.png", dpi=110)
     plt.close(fig)
@@ -877,9 +882,8 @@ def write_charts(single, batch, out: Path) -> None:
     ax[0].set(xlabel="N (links)", ylabel="µs per call", title="Single state: time per call")
     ax[1].set(xlabel="N (links)", ylabel="time / pin.aba", title="Single state: ratio to Pinocchio")
     for a in ax:
-        a.grid(True, which="both", alpha=0.3)
+        a.grid(True, which="major", alpha=0.3)
         a.legend(fontsize=8)
-    fig.tight_layout()
     _save(fig, out, "single_state")
 
     # scaling: time vs N with O(N) and O(N^3) guides
@@ -896,17 +900,15 @@ def write_charts(single, batch, out: Path) -> None:
         # guides through one point below the curves at the largest N: the slopes compare where it matters
         Ng = np.geomspace(min(Ns), max(Ns), 50)
         anchor = np.exp(np.nanmean(np.log(all_t[-1]))) / 3
-        for p, ls, txt in ((1, "--", "O(N)"), (3, ":", "O(N³)")):
+        for p, ls, txt, at in ((1, "--", "O(N)", 25), (3, ":", "O(N³)", 38)):
             g = anchor * (Ng / Ng[-1]) ** p
             ax.loglog(Ng, g, "k" + ls, lw=1.2, alpha=0.6, label=f"{txt} guide")
-            ax.annotate(txt, (Ng[-1], g[-1]), fontsize=9, color="0.3", xytext=(-28, -12),
-                        textcoords="offset points")
+            ax.annotate(txt, (Ng[at], g[at]), fontsize=9, color="0.3", xytext=(6, -4), textcoords="offset points")
     ax.set_ylim(lo / 2, hi * 4)
     ax.set(xlabel="N (links)", ylabel="µs per call (thread CPU time)",
            title="Forward dynamics of an N-link chain: time per call")
-    ax.grid(True, which="both", alpha=0.3)
+    ax.grid(True, which="major", alpha=0.3)
     ax.legend(fontsize=8, loc="upper left")
-    fig.tight_layout()
     _save(fig, out, "scaling")
 
     # batch throughput
@@ -915,9 +917,8 @@ def write_charts(single, batch, out: Path) -> None:
     for n in batch[0]["times"]:
         ax.loglog(Bs, [r["times"][n] / r["B"] * 1e6 for r in batch], "o-", label=n)
     ax.set(xlabel="batch size B (states)", ylabel="µs per state", title="Batch throughput, N = 10")
-    ax.grid(True, which="both", alpha=0.3)
+    ax.grid(True, which="major", alpha=0.3)
     ax.legend(fontsize=8)
-    fig.tight_layout()
     _save(fig, out, "batch")
 
     # speed against accuracy: each method a line through N
@@ -934,9 +935,8 @@ def write_charts(single, batch, out: Path) -> None:
                         color=colour[n], xytext=(3, 3), textcoords="offset points")
     ax.set(xlabel="µs per call (N = " + ", ".join(map(str, Ns)) + ")", ylabel=f"relative error vs {ref_lab}",
            title="Speed against accuracy (each line: one method through N)")
-    ax.grid(True, which="both", alpha=0.3)
+    ax.grid(True, which="major", alpha=0.3)
     ax.legend(fontsize=8)
-    fig.tight_layout()
     _save(fig, out, "speed_accuracy")
 
     # work-precision: one panel per N, each method a point
@@ -970,8 +970,7 @@ def write_charts(single, batch, out: Path) -> None:
     labels.append("below 3× the reference's own error")
     fig.legend(handles, labels, loc="upper center", ncol=len(labels), fontsize=8, frameon=False)
     fig.text(0.005, 0.005, f"exact zeros plotted at {floor:g}", fontsize=7, color="0.4")
-    fig.tight_layout(rect=(0, 0, 1, 1 - 0.5 / (3.0 * nrow + 0.6)))
-    _save(fig, out, "work_precision")
+    _save(fig, out, "work_precision", rect=(0, 0, 1, 1 - 0.5 / (3.0 * nrow + 0.6)))
 
 
 def copy_to_gallery(out: Path, gallery: Path, names=None) -> list:
@@ -1019,7 +1018,8 @@ def _single_threaded_argv(args):
     return argv
 
 
-def run_dynamics(args, out: Path) -> None:
+def run_dynamics(args, out: Path):
+    """The dynamics group: single-state, accuracy and batch tables, raw JSON and charts; returns ``(single, batch)``."""
     sizes = (tuple(int(s) for s in str(args.sizes).split(",") if s.strip()) if args.sizes
              else (QUICK_SIZES if args.quick else SINGLE_SIZES))
     budget = 0.04 if args.quick else 0.3
@@ -1037,14 +1037,22 @@ def run_dynamics(args, out: Path) -> None:
         _progress("[charts] scaling, work_precision, speed_accuracy, single_state, batch ...")
         write_charts(single, batch, out)
         print(f"charts written to {out}/" + ", ".join(f"{c}.svg" for c in CHARTS) + " (+ .png)")
+    return single, batch
+
+
+def _summarise(args, out: Path, single, batch) -> None:
     summary = Path(args.summary) if getattr(args, "summary", None) else out.parent / "RESULTS.md"
     write_results(single, batch, out, summary, charts=not args.no_charts, quick=args.quick)
     _progress(f"[results] {summary}")
     h = headline(single, batch)
     for p, st in h.get("batch", {}).items():
-        _progress(f"[headline] batched N=10 B={h['B']} vectorised / {_peer_label(p)} loop: {_x(st['median'])}")
+        _progress(f"[headline] batched N=10 B={h['B']}: vectorised / {_peer_label(p)} loop {_x(st['median'])}")
     for p, st in h.get("single", {}).items():
-        _progress(f"[headline] single N=10 aba / {_peer_label(p)}: {_x(st['median'])}")
+        _progress(f"[headline] single N=10: aba / {_peer_label(p)} {_x(st['median'])}")
+    if h["scaling"]:
+        a, b = h["scaling_pair"]
+        _progress(f"[headline] t({b})/t({a}): " + ", ".join(f"{_peer_label(n)} {x:.1f}"
+                                                           for n, x in h["scaling"].items()))
 
 
 def main(args) -> int:
@@ -1061,8 +1069,7 @@ def main(args) -> int:
     explicit = set(getattr(args, "only", None) or ())
     groups = explicit or set(GROUPS)
     rc = 0
-    if "dynamics" in groups:
-        run_dynamics(args, out)
+    dynamics = run_dynamics(args, out) if "dynamics" in groups else None
     scripts = Path(__file__).resolve().parents[1] / "benchmarks"
     for group, script in SCRIPTS.items():
         if group not in groups:
@@ -1072,8 +1079,11 @@ def main(args) -> int:
             _progress(f"[{group}] skipping: {path} not found (not written yet, or not a source checkout)")
             continue
         cmd = [sys.executable, str(path)]
+        source = path.read_text(encoding="utf-8")
+        if '"--out"' in source:          # the script takes an output folder: the same as ours
+            cmd += ["--out", str(out.resolve())]
         if args.quick:
-            if "--quick" in path.read_text(encoding="utf-8"):
+            if '"--quick"' in source:
                 cmd.append("--quick")
             elif group not in explicit:
                 _progress(f"[{group}] skipping in --quick mode: {script} has no --quick "
@@ -1083,11 +1093,13 @@ def main(args) -> int:
                 _progress(f"[{group}] {script} has no --quick: running it in full")
         import subprocess
 
-        _progress(f"[{group}] running {' '.join(['python'] + cmd[1:])} ...")
+        _progress(f"[{group}] running python {' '.join(cmd[1:])} ...")
         code = subprocess.call(cmd, cwd=str(scripts.parent), env=dict(os.environ, MPLBACKEND="Agg"))
         if code:
             _progress(f"[{group}] {script} exited with {code}")
         rc |= code
+    if dynamics is not None:     # last, so that it links the other groups' fresh results
+        _summarise(args, out, *dynamics)
     if not args.no_charts and getattr(args, "gallery", DEFAULT_GALLERY):
         copied = copy_to_gallery(out, Path(args.gallery))
         if copied:
