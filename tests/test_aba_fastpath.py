@@ -1,11 +1,15 @@
-"""The single-state fast path of ``forward_dynamics`` (compiled plan) against the general numpy path.
+"""The fast paths of ``forward_dynamics`` (compiled plan, batched plan) against the general path and CRBA.
 
 The physics reference stays the dense CRBA solve and Pinocchio (test_dyn_aba.py,
 test_pinocchio.py); here the compiled straight-line plan (body-origin frame,
 gravity as base acceleration, zero constants folded) must reproduce the general
 3×k array recursion of :func:`articulated_body` to 1e-12 relative, on chains and
 trees of revolute, prismatic and fixed joints, with random gravity and external
-wrenches, and every input must still be validated.
+wrenches, and every input must still be validated.  Batches above SMALL_BATCH
+run the plan lowered to in-place numpy calls on rows, block by block: they must
+agree with CRBA (the independent reference) and with the states one by one, at
+block boundaries, for strided, broadcast and non-float64 inputs, and raise what
+single states raise.
 """
 import numpy as np
 import pytest
@@ -14,6 +18,7 @@ from hypothesis import strategies as st
 
 from planargeo.algorithms import aba
 from planargeo.algorithms.aba import articulated_body, forward_dynamics
+from planargeo.algorithms.crba import forward_dynamics_crba
 from planargeo.errors import NonFiniteError, ShapeError, SingularConfigurationError
 from planargeo.model import Body, Joint, Model, chain_model, random_model
 
@@ -194,3 +199,154 @@ def test_few_states_agree_and_validate(B, monkeypatch):
     qd[0, 1] = np.inf
     with pytest.raises(NonFiniteError, match="qd"):
         forward_dynamics(m, q, qd, tau)
+
+
+# -- batches: the plan on rows of numbers (one per state), block by block ----------------------------------------
+
+BATCH_MODELS = {
+    "chain10": lambda: chain_model(10),
+    "prismatic chain": lambda: chain_model(4, joint="prismatic", gravity=(0.5, -9.81)),
+    "random": lambda: random_model(10, seed=4, gravity=(1.5, -9.81)),
+    "random tree, fixed joints": lambda: random_model(9, seed=5, kinds=("revolute", "prismatic", "fixed"), tree=True,
+                                                      gravity=(-2.0, 3.0)),
+}
+
+
+@pytest.fixture
+def no_component_path(monkeypatch):
+    """Fail if a batch falls back to the component-wise path (the batched plan must cover it)."""
+    def boom(*args, **kwargs):
+        raise AssertionError("_aba_components called: the batched plan was not taken")
+
+    monkeypatch.setattr(aba, "_aba_components", boom)
+
+
+def _batch_state(m, shape, seed):
+    rng = np.random.default_rng(seed)
+    q, qd, tau = rng.normal(size=(3,) + shape + (m.nq,))
+    return q, qd, tau, rng.normal(size=shape + (m.N, 3))
+
+
+@pytest.mark.parametrize("name", list(BATCH_MODELS))
+@pytest.mark.parametrize("shape", [(40,), (5, 9)])
+def test_batched_plan_equals_crba(name, shape, monkeypatch, no_component_path):
+    """Batches above SMALL_BATCH run the batched plan; CRBA (dense solve) is the independent reference."""
+    monkeypatch.setattr(aba, "BATCH_CHUNK", 16)     # several blocks and a partial one
+    m = BATCH_MODELS[name]()
+    q, qd, tau, f_ext = _batch_state(m, shape, 1)
+    for f in (None, f_ext):
+        out = forward_dynamics(m, q, qd, tau, f)
+        assert out.shape == shape + (m.nq,) and out.dtype == np.float64
+        assert _rel(out, forward_dynamics_crba(m, q, qd, tau, f)) < 1e-12
+    assert not np.allclose(forward_dynamics(m, q, qd, tau), forward_dynamics(m, q, qd, tau, f_ext))
+
+
+@pytest.mark.parametrize("B", [33, 47, 48, 49, 64, 65])
+def test_batched_plan_block_boundaries(B, monkeypatch, no_component_path):
+    """Batches just below, at and above multiples of the block size agree with the states one by one."""
+    monkeypatch.setattr(aba, "BATCH_CHUNK", 16)
+    m = random_model(6, seed=B, tree=True)
+    q, qd, tau, f_ext = _batch_state(m, (B,), B)
+    out = forward_dynamics(m, q, qd, tau, f_ext)
+    assert _rel(out, forward_dynamics_crba(m, q, qd, tau, f_ext)) < 1e-12
+    one = np.array([forward_dynamics(m, q[k], qd[k], tau[k], f_ext[k]) for k in range(B)])
+    assert _rel(out, one) < 1e-14
+
+
+@pytest.mark.parametrize("B", [aba.BATCH_CHUNK - 1, aba.BATCH_CHUNK + 1])
+def test_batched_plan_default_block_size(B, no_component_path):
+    m = chain_model(5)
+    q, qd, tau, _ = _batch_state(m, (B,), 7)
+    assert _rel(forward_dynamics(m, q, qd, tau), forward_dynamics_crba(m, q, qd, tau)) < 1e-12
+
+
+def test_batched_plan_strided_broadcast_and_dtypes(monkeypatch, no_component_path):
+    """Non-contiguous views, Fortran order, broadcast arguments and non-float64 dtypes take the batched plan."""
+    monkeypatch.setattr(aba, "BATCH_CHUNK", 32)
+    m = random_model(7, seed=8, kinds=("revolute", "prismatic", "fixed"), tree=True)
+    q, qd, tau, f_ext = _batch_state(m, (100,), 8)
+    ref = forward_dynamics_crba(m, q[::2], qd[::2], tau[::2], f_ext[::2])
+    assert _rel(forward_dynamics(m, q[::2], np.asfortranarray(qd[::2]), tau.T.copy().T[::2], f_ext[::2]), ref) < 1e-12
+    # (B1, B2) from a transposed view, qd and f_ext broadcast from one state
+    q2 = q.reshape(10, 10, m.nq).transpose(1, 0, 2)
+    got = forward_dynamics(m, q2, qd[0], tau.reshape(10, 10, m.nq), f_ext[0])
+    ref = forward_dynamics_crba(m, q2, np.broadcast_to(qd[0], q2.shape), tau.reshape(10, 10, m.nq),
+                                np.broadcast_to(f_ext[0], (10, 10, m.N, 3)))
+    assert got.shape == (10, 10, m.nq) and _rel(got, ref) < 1e-12
+    # float32 and integer inputs are converted to float64 like single states
+    q32, qi = q.astype(np.float32), np.round(3 * qd).astype(int)
+    ref = forward_dynamics_crba(m, q32.astype(float), qi.astype(float), tau)
+    assert _rel(forward_dynamics(m, q32, qi, tau), ref) < 1e-12
+
+
+def test_batched_plan_singular_state_raises_like_a_single_state():
+    """A singular state in a batch raises the error the single-state plan raises for it (first such state)."""
+    # a point mass on its own pivot, carrying a pendulum: singular when the pendulum is in line with the link
+    m = Model([Body(1.0, (0.0, 0.0), 0.0), Body(1.0, (0.5, 0.0), 0.0)],
+              [Joint("revolute"), Joint("revolute", (1.0, 0.0, 0.0))], [-1, 0])
+    rng = np.random.default_rng(3)
+    q, qd, tau = rng.normal(size=(3, 100, 2))
+    q[:, 1] = 0.3 + rng.uniform(size=100)
+    assert np.isfinite(forward_dynamics(m, q, qd, tau)).all()
+    q[[57, 80], 1] = 0.0
+    with pytest.raises(SingularConfigurationError, match="joint 0") as batch:
+        forward_dynamics(m, q, qd, tau)
+    with pytest.raises(SingularConfigurationError) as single:
+        forward_dynamics(m, q[57], qd[57], tau[57])
+    assert str(batch.value) == str(single.value) and batch.value.cond == single.value.cond
+
+
+def test_batched_plan_overflow_falls_back_to_the_component_path(monkeypatch):
+    """Finite inputs whose results overflow give the component path's values (non-finite), not a crash."""
+    m = chain_model(3)
+    q, qd, tau, _ = _batch_state(m, (40,), 9)
+    qd[5] = 1e200
+    with np.errstate(all="ignore"):
+        got = forward_dynamics(m, q, qd, tau)
+        monkeypatch.setattr(aba, "_batch_plan", lambda *a: None)
+        ref = forward_dynamics(m, q, qd, tau)
+    assert not np.isfinite(got[5]).all()
+    np.testing.assert_array_equal(got, ref)
+
+
+def test_batched_plan_bad_input_raises():
+    m = chain_model(3)
+    q, qd, tau, f_ext = _batch_state(m, (50,), 10)
+    qd[31, 2] = np.nan
+    with pytest.raises(NonFiniteError, match="qd"):
+        forward_dynamics(m, q, qd, tau)
+    with pytest.raises(ShapeError, match="tau"):
+        forward_dynamics(m, q, q, tau[:, :2])
+    with pytest.raises(ShapeError, match="f_ext"):
+        forward_dynamics(m, q, q, tau, f_ext[:, :2])
+
+
+def test_batched_plan_large_and_packed_models(monkeypatch):
+    """Large models compile the batched plan on reuse; packed constants (many bodies) are flattened for it."""
+    monkeypatch.setattr(aba, "EAGER_PLAN_BODIES", 3)
+    monkeypatch.setattr(aba, "PACK_BODIES", 2)
+    m = random_model(7, seed=12, kinds=("revolute", "prismatic", "fixed"), tree=True)
+    q, qd, tau, f_ext = _batch_state(m, (40,), 12)
+    ref = forward_dynamics_crba(m, q, qd, tau, f_ext)
+    for _ in range(4):
+        assert _rel(forward_dynamics(m, q, qd, tau, f_ext), ref) < 1e-12
+    assert m._arrays["aba_batch_calls"] == 4 and m._arrays["aba_plan"][0][-1] is True
+    with monkeypatch.context() as mp:
+        mp.setattr(aba, "_aba_components", lambda *a, **k: pytest.fail("component path after compilation"))
+        assert _rel(forward_dynamics(m, q, qd, tau, f_ext), ref) < 1e-12
+
+
+def test_batched_plan_without_coordinates():
+    m = random_model(3, seed=1, kinds=("fixed",))
+    assert forward_dynamics(m, np.zeros((40, 0)), np.zeros((40, 0)), np.zeros((40, 0))).shape == (40, 0)
+
+
+def test_batched_plan_source_reuses_rows():
+    """The lowered plan writes every value into a preallocated row; rows are reused once their value is dead."""
+    m = chain_model(10)
+    (kinds, parents, zero, _), _ = aba._plan_entry(m)
+    src, nreg = aba._batch_source(aba._plan_lines(kinds, parents, zero, False, False))
+    calls = [line.strip() for line in src.splitlines()[3:] if line.strip().startswith(("mul(", "add(", "sub("))]
+    assert len(calls) > 5 * nreg        # far fewer rows than values
+    assert all(" = " not in c for c in calls)   # no temporaries: every call writes into a row
+    assert src.count("tan(") == 10 and "cos(" not in src and "sin(" not in src

@@ -27,11 +27,16 @@ are all revolute, prismatic or fixed:
 * a single state (or each state of a batch of at most ``SMALL_BATCH``) runs a
   *compiled plan*: the recursion generated once per topology as straight-line
   Python on floats (no loops, containers or numpy calls), with every body's
-  quantities taken at its own origin (a revolute joint is then ``[0, 0, 1]``)
-  and gravity as the base acceleration ``-g``; a state given as float64
+  quantities taken at its own origin (a revolute joint is then ``[0, 0, 1]``),
+  classical accelerations (the bias terms are centripetal and Coriolis terms
+  of angular velocities only) and gravity as the base acceleration ``-g``; a
+  state given as float64
   arrays skips the general validator after a cheap shape and finiteness check
   (see the comment above :func:`_plan_source`);
-* a larger batch runs the recursion component by component
+* a larger batch runs the same plan on rows of numbers (one per state) as
+  in-place numpy ufunc calls into preallocated rows, block by block
+  (:func:`_batch_source`); models the plan does not cover (or not yet: large
+  models compile on reuse) run the recursion component by component
   (:func:`_aba_components`) on one contiguous array per component.
 Other joint kinds use the general 3×k array path of :func:`articulated_body`.
 :func:`articulated_body` returns the whole workspace (``A``, ``d``, ``a``,
@@ -39,6 +44,7 @@ Other joint kinds use the general 3×k array path of :func:`articulated_body`.
 """
 from __future__ import annotations
 
+import ast
 import math
 import re
 
@@ -52,8 +58,9 @@ __all__ = ["forward_dynamics", "articulated_body"]
 
 #: relative threshold below which ``s^T A s`` is declared singular
 SINGULAR_RTOL = 1e-13
-#: batches up to this size are evaluated state by state on Python floats
-SMALL_BATCH = 8
+#: batches up to this size are evaluated state by state on Python floats (the batched
+#: plan's ~0.5 µs per numpy call per body-step is worth it from about 30 states on)
+SMALL_BATCH = 32
 
 
 def _check_D(D, A, s, i):
@@ -318,14 +325,14 @@ def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.
 # One state of a model whose joints are all revolute, prismatic or fixed runs
 # the same recursion (3.35-3.42) as straight-line Python on floats, generated
 # once per topology ("plan") and compiled: no loops, no containers, no numpy
-# calls, only local-variable float arithmetic.  Two reformulations make it
-# cheaper without changing the algorithm:
+# calls, only local-variable float arithmetic.  Three reformulations make it
+# cheaper without changing the algorithm (the same elimination, 3.35-3.42):
 #
-# * Every quantity of body i (twist, bias acceleration, articulated inertia and
-#   bias force, acceleration) is taken at the body's own origin o_i (world-
-#   aligned axes) instead of the world origin: a constant change of reference
-#   point, under which the spatial algebra of 3.6 is unchanged (twists
-#   transform as ``(v + w × r, w)``, wrenches as ``(F, n + r × F)``, inertias
+# * Every quantity of body i (bias acceleration, articulated inertia and bias
+#   force, acceleration) is taken at the body's own origin o_i (world-aligned
+#   axes) instead of the world origin: a constant change of reference point,
+#   under which the algebra of 3.6 is unchanged (accelerations transform as
+#   ``(a + α ẑ × r, α)``, wrenches as ``(F, n + r × F)``, inertias
 #   congruently).  A revolute joint is then ``s = [0, 0, 1]``: ``U = A s`` is
 #   a column of ``A``, ``D = A_22`` and ``(1 - s s⁺)ᵀ A`` keeps only the 2×2
 #   force block, so each step costs a few flops; the articulated bias force
@@ -334,6 +341,15 @@ def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.
 #   ``ā = a' + κ_i`` (the parent's acceleration at o_i plus the bias term).
 #   Singularity is tested as ``D > SINGULAR_RTOL · trace(A)`` at o_i (|s| = 1
 #   there), the general path's test with the scale taken at o_i.
+# * Accelerations are *classical*: ``a_i`` is the acceleration of the material
+#   point at o_i (and the angular acceleration), not the spatial acceleration.
+#   The equations keep their form ``f = I a + d``, ``a_i = a'_λ + s_i q̈_i + κ_i``
+#   with other bias terms: the rigid body's ``d`` is the centripetal force
+#   ``-ω_i² m_i (c_i - o_i)`` (through the centre of mass: no moment about o_i),
+#   and ``κ_i = -ω_λ² r_i`` (the centripetal acceleration of o_i about o_λ, with
+#   ``r_i = o_i - o_λ``), plus ``2 ω_λ q̇_i ẑ × e_i`` (Coriolis) for a prismatic
+#   joint along ``e_i``.  Only the angular velocities are needed, not the twists
+#   (3.32), and the angular component of ``κ`` stays zero.
 # * Gravity enters as the base acceleration ``a_ground = -g`` (Featherstone's
 #   device): the gravity wrench of 3.34 on body i equals ``I_i (-g)``, so both
 #   give the same ``q̈``.
@@ -364,7 +380,12 @@ def _packed(N):
 
 
 def _plan_source(kinds, parents, zero, with_fext, pack=None):
-    """Python source of thesis 3.6 for one state of one topology (see the comment above).
+    """Python source of thesis 3.6 for one state of one topology (see the comment above)."""
+    return "\n".join(_registers(_plan_lines(kinds, parents, zero, with_fext, pack))) + "\n"
+
+
+def _plan_lines(kinds, parents, zero, with_fext, pack=None):
+    """The plan as straight-line statements on uniquely named values, before :func:`_registers`.
 
     ``kinds``: 1 revolute, 2 prismatic, 0 fixed; ``zero``: which of the
     constants (see :func:`_plan_constants`) vanish.  Values are tracked as
@@ -378,7 +399,7 @@ def _plan_source(kinds, parents, zero, with_fext, pack=None):
             nchild[p] += 1
     lines = []
     emit = lines.append
-    ONE = (False, "1")
+    ONE, TWO = (False, "1"), (False, "2.0")
 
     def neg(a):
         return None if a is None else (not a[0], a[1])
@@ -475,10 +496,10 @@ def _plan_source(kinds, parents, zero, with_fext, pack=None):
             unstash(f"T{i}")
             if "tau" in body[i]:
                 emit(f"    {body[i]['tau'][1]} = tau[{body[i]['tau'][1][3:]}]")
-    ground = dict(c=ONE, s=None, th=None, v=(None, None, None), o=(None, None))
+    ground = dict(c=ONE, s=None, th=None, w=None, ww=None, o=(None, None))
     body = []
     k = 0
-    # 1-2. poses, twists, bias accelerations and bias forces, base to tip (3.32-3.34)
+    # 1-2. poses, angular velocities, bias accelerations and bias forces, base to tip (3.32-3.34)
     for i in range(N):
         kind, p = kinds[i], parents[i]
         P = ground if p < 0 else body[p]
@@ -512,19 +533,17 @@ def _plan_source(kinds, parents, zero, with_fext, pack=None):
             rx = let(f"rx{i}", [[rx], [qi, c]])
             ry = let(f"ry{i}", [[ry], [qi, s]])
         B.update(c=c, s=s, th=th, r=(rx, ry), kind=kind, p=p)
-        vxp, vyp, wp = P["v"]
-        lx = let(f"lx{i}", [[vxp], [neg(wp), ry]])          # parent's velocity at o_i
-        ly = let(f"ly{i}", [[vyp], [wp, rx]])
-        if kind == 1:   # s = [0, 0, 1] at o_i; kappa = v_parent x s qd (2.19)
-            vx, vy, w = lx, ly, let(f"w{i}", [[wp], [qdi]])
-            kap = (let(f"k0_{i}", [[ly, qdi]]), let(f"k1_{i}", [[neg(lx), qdi]]))
-        elif kind == 2:   # s = [c, s, 0]
-            vx, vy, w = let(f"vx{i}", [[lx], [c, qdi]]), let(f"vy{i}", [[ly], [s, qdi]]), wp
-            wq = let(f"wq{i}", [[wp, qdi]])
-            kap = (let(f"k0_{i}", [[neg(wq), s]]), let(f"k1_{i}", [[wq, c]]))
-        else:
-            vx, vy, w, kap = lx, ly, wp, (None, None)
-        B.update(v=(vx, vy, w), kap=kap)
+        # classical accelerations (see the comment above): only angular velocities are needed
+        wp = P["w"]
+        w = let(f"w{i}", [[wp], [qdi]]) if kind == 1 else wp
+        ww = P["ww"] if kind != 1 else let(f"ww{i}", [[w, w]])
+        wwp = P["ww"]
+        if kind == 2:   # kappa = -w² r + 2 w q̇ ẑ × e, e = (c, s)
+            wq = let(f"wq{i}", [[TWO, wp, qdi]])
+            kap = (let(f"k0_{i}", [[neg(wwp), rx], [neg(wq), s]]), let(f"k1_{i}", [[neg(wwp), ry], [wq, c]]))
+        else:           # kappa = -w² r (centripetal)
+            kap = (let(f"k0_{i}", [[neg(wwp), rx]]), let(f"k1_{i}", [[neg(wwp), ry]]))
+        B.update(w=w, ww=ww, kap=kap)
         if with_fext:
             ox = let(f"ox{i}", [[P["o"][0]], [rx]])
             oy = let(f"oy{i}", [[P["o"][1]], [ry]])
@@ -532,18 +551,17 @@ def _plan_source(kinds, parents, zero, with_fext, pack=None):
         # rigid inertia at o_i (4.58): m, m (c_i - o_i), J + m |com in body|^2
         mcx = let(f"mcx{i}", [[c, mcbx], [neg(s), mcby]])
         mcy = let(f"mcy{i}", [[s, mcbx], [c, mcby]])
-        f0 = let(f"f0_{i}", [[m, vx], [neg(mcy), w]])
-        f1 = let(f"f1_{i}", [[m, vy], [mcx, w]])
-        # bias force p = -(v x)^T I v - g_ext (3.11, 3.34; gravity is the base acceleration)
+        # bias force: the centripetal force -w² m (c_i - o_i), through the com (no moment about o_i),
+        # less the external wrench moved to o_i (3.34; gravity is the base acceleration)
         if with_fext:
             Fx, Fy, Fn = (False, f"Fx_{i}"), (False, f"Fy_{i}"), (False, f"Fn_{i}")
             e = ([neg(Fx)], [neg(Fy)], [neg(Fn)], [ox, Fy], [neg(oy), Fx])
         else:
             e = ([None],) * 5
         B["A"] = [m, None, neg(mcy), m, mcx, Jo]
-        B["d"] = [let(f"d0_{i}", [[neg(w), f1], e[0]]),
-                  let(f"d1_{i}", [[w, f0], e[1]]),
-                  let(f"d2_{i}", [[vx, f1], [neg(vy), f0], e[2], e[3], e[4]])]
+        B["d"] = [let(f"d0_{i}", [[neg(ww), mcx], e[0]]),
+                  let(f"d1_{i}", [[neg(ww), mcy], e[1]]),
+                  let(f"d2_{i}", [e[2], e[3], e[4]])]
         body.append(B)
         if pack:   # what the inward pass needs, in one local
             stash(f"T{i}", [*B["r"], *B["kap"], *B["A"], *B["d"]])
@@ -653,10 +671,10 @@ def _plan_source(kinds, parents, zero, with_fext, pack=None):
             if nchild[i]:
                 B["a"] = (let(f"a0_{i}", [[a0], [B["c"], qdd], [k0]]),
                           let(f"a1_{i}", [[a1], [B["s"], qdd], [k1]]), a2p)
-        elif nchild[i]:
-            B["a"] = (let(f"a0_{i}", [[a0p], [neg(a2p), ry]]), let(f"a1_{i}", [[a1p], [a2p, rx]]), a2p)
+        elif nchild[i]:   # fixed: the parent's acceleration at o_i plus kappa
+            B["a"] = (let(f"a0_{i}", [[a0p], [neg(a2p), ry], [k0]]), let(f"a1_{i}", [[a1p], [a2p, rx], [k1]]), a2p)
     emit("    return [" + ", ".join(text(x) for x in out) + "]")
-    return "\n".join(_registers(lines)) + "\n"
+    return lines
 
 
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
@@ -755,28 +773,40 @@ def _plan_constants(model: Model):
     return key, tuple(tuple(c for c in g if c != 0.0) for g in groups)
 
 
-def _plan(model: Model, with_fext: bool):
-    """The compiled single-state function and its constants for ``model`` (cached), or None.
-
-    None for unsupported joint kinds or too many bodies (see ``MAX_PLAN_BODIES``), and
-    for the first calls on a large model (``EAGER_PLAN_BODIES``): callers then run
-    the float loop of :func:`_aba_components`.
-    """
+def _plan_entry(model: Model):
+    """``(key, constants)`` of ``model``'s plan (cached on the model), or None (unsupported joints, too many bodies)."""
     cache = model._arrays
     entry = cache.get("aba_plan")
     if entry is None:
         entry = _plan_constants(model) if model.N <= MAX_PLAN_BODIES else None
         entry = cache["aba_plan"] = entry or False
-    if entry is False:
+    return entry or None
+
+
+def _compile_now(model: Model, counter: str) -> bool:
+    """Whether to compile a plan for ``model`` now: at once up to EAGER_PLAN_BODIES bodies, else on the 4th call."""
+    if model.N <= EAGER_PLAN_BODIES:   # compiling takes ~5 ms per body: not for a one-off call
+        return True
+    calls = model._arrays[counter] = model._arrays.get(counter, 0) + 1
+    return calls >= 4
+
+
+def _plan(model: Model, with_fext: bool, force: bool = False):
+    """The compiled single-state function and its constants for ``model`` (cached), or None.
+
+    None for unsupported joint kinds or too many bodies (see ``MAX_PLAN_BODIES``), and
+    (unless ``force``) for the first calls on a large model (``EAGER_PLAN_BODIES``):
+    callers then run the float loop of :func:`_aba_components`.
+    """
+    entry = _plan_entry(model)
+    if entry is None:
         return None
     key, C = entry
     fkey = key + (with_fext,)
     fn = _PLANS.get(fkey)
     if fn is None:
-        if len(key[0]) > EAGER_PLAN_BODIES:   # compiling takes ~5 ms per body: not for a one-off call
-            calls = cache["aba_plan_calls"] = cache.get("aba_plan_calls", 0) + 1
-            if calls < 4:
-                return None
+        if not (force or _compile_now(model, "aba_plan_calls")):
+            return None
         if len(_PLANS) >= 256:
             _PLANS.clear()
         kinds, parents, zero, pack = key
@@ -788,6 +818,260 @@ def _plan(model: Model, with_fext: bool):
 
 
 _ndarray, _F64, _array, _isfinite = np.ndarray, np.dtype(np.float64), np.array, math.isfinite
+
+
+# -- batches: the plan on rows of numbers ---------------------------------------
+#
+# A batch of more than SMALL_BATCH states runs the same plan, with each input and
+# each intermediate value a row of float64 numbers, one per state.  The plan's
+# statements (before :func:`_registers`) are lowered to three-address numpy ufunc
+# calls that write into preallocated rows (``out=``), so no temporary array is
+# created; values that depend only on the model's constants stay Python floats,
+# computed once per block.  A linear scan over the ufunc calls assigns each value a
+# row of one work array ``W``, reusing a row as soon as its value is dead (an
+# operand's row may be the result's: elementwise ufuncs allow that).  The batch is
+# cut into blocks of ``BATCH_CHUNK`` states, so the live rows of a block stay in
+# the cache; each block's inputs are transposed into rows once, and its ``q̈`` rows
+# written back as columns.
+#
+# ``cos`` and ``sin`` of an angle come from one libm call, ``t = tan(θ/2)``:
+# ``cos θ = 2/(1 + t²) - 1``, ``sin θ = t · 2/(1 + t²)`` (|t| ≤ 1.7e16 for any
+# finite double, so nothing overflows; the absolute error stays at rounding level).
+#
+# The singularity test ``D > SINGULAR_RTOL · trace`` becomes ``D - SINGULAR_RTOL ·
+# trace > 0`` (equivalent for floats), its minimum kept in one row and tested once
+# per block.  If it fails, the block is evaluated state by state by the
+# single-state plan, which raises SingularConfigurationError for the first singular
+# state exactly as a single state does.  If a result is not finite (finite but huge
+# inputs overflow), the batch is run again by the general component path
+# (:func:`_aba_components`), which returns its non-finite values with numpy's warnings.
+_BATCH_PLANS: dict = {}
+#: states per block of a batched plan
+BATCH_CHUNK = 4096
+_UFUNC_NS = {"add": np.add, "sub": np.subtract, "mul": np.multiply, "div": np.divide, "neg": np.negative,
+             "tan": np.tan, "minimum": np.minimum, "copyto": np.copyto,
+             "_mcos": math.cos, "_msin": math.sin, "SINGULAR_RTOL": SINGULAR_RTOL}
+_BINOPS = {ast.Add: ("add", "+"), ast.Sub: ("sub", "-"), ast.Mult: ("mul", "*"), ast.Div: ("div", "/")}
+_CHECK = re.compile(r"if not (.+) > SINGULAR_RTOL \* \((.+)\):$")
+
+
+def _batch_source(lines):
+    """Python source of the plan ``lines`` (see :func:`_plan_lines`) on rows: ``(source, number of work rows)``.
+
+    The function ``aba_batch(C, q, qd, tau, fe, W, out)`` takes the constants
+    ``C`` (as for the plan), the inputs as sequences of rows (``fe``: ``3 N``
+    rows, x, y, moment of each body), the work rows ``W`` and the ``q̈`` rows
+    ``out``; it returns False if the singularity test fails.
+    """
+    # statements: ("let", target, rhs) / ("unpack", targets, source) / ("check", D, trace) / ("return", atoms)
+    stmts = []
+    for line in lines[1:]:
+        for st in line.strip().split("; "):
+            if not st or st.startswith(("#", "_singular_float")):
+                continue
+            if st.startswith("if not "):
+                stmts.append(("check",) + _CHECK.match(st).groups())
+            elif st.startswith("return ["):
+                stmts.append(("return", [a.strip() for a in st[8:-1].split(",")]))
+            else:
+                lhs, rhs = st.split(" = ", 1)
+                if lhs.endswith(","):
+                    stmts.append(("unpack", [t.strip() for t in lhs.split(",") if t.strip()], rhs))
+                else:
+                    stmts.append(("let", lhs, rhs))
+    live, keep = set(), []
+    for s in reversed(stmts):   # drop assignments whose value is never read
+        if s[0] == "let" and s[1] not in live:
+            continue
+        if s[0] == "let":
+            live.discard(s[1])
+        for src in ((s[2],) if s[0] == "let" else s[1:] if s[0] == "check" else s[1] if s[0] == "return" else ()):
+            live.update(_NAME.findall(src))
+        keep.append(s)
+    stmts = keep[::-1]
+
+    # lower to items ("py", source) and ("op", ufunc, result id, operands); an operand is
+    # ("v", id) for a value computed in a row, ("x", source) for an input row or a Python float
+    env, items, nval, trig = {}, [], [0], {}
+    nscal = [0]
+
+    def op(uf, *args):
+        nval[0] += 1
+        items.append(("op", uf, nval[0], args))
+        return ("v", nval[0])
+
+    def lower(node):   # -> (negated, operand, is_row)
+        if isinstance(node, ast.Name):
+            return (False,) + env[node.id]
+        if isinstance(node, ast.Constant):
+            return False, ("x", repr(float(node.value))), False
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+            n, x, row = lower(node.operand)
+            return (n, x, True) if row else (False, ("x", f"(-{x[1]})"), False)
+        if isinstance(node, ast.Call):
+            n, x, row = lower(node.args[0])
+            fn = node.func.id[1:]   # _cos / _sin
+            if not row:
+                return False, ("x", f"_m{fn}({'-' if n else ''}{x[1]})"), False
+            if x not in trig:   # both from t = tan(x/2): one libm call instead of two
+                t = op("tan", op("mul", x, ("x", "0.5")))
+                h = op("div", ("x", "2.0"), op("add", op("mul", t, t), ("x", "1.0")))   # 1 + cos x
+                trig[x] = (op("sub", h, ("x", "1.0")), op("mul", t, h))
+            return (n and fn == "sin"), trig[x][fn == "sin"], True
+        nl, l, rl = lower(node.left)
+        nr, r, rr = lower(node.right)
+        uf, sym = _BINOPS[type(node.op)]
+        if not (rl or rr):
+            return False, ("x", f"({l[1]} {sym} {r[1]})"), False
+        if uf in ("mul", "div"):
+            return nl ^ nr, op(uf, l, r), True
+        if uf == "sub":
+            nr = not nr
+        if nl == nr:
+            return nl, op("add", l, r), True
+        return False, (op("sub", r, l) if nl else op("sub", l, r)), True
+
+    def value(src):
+        n, x, row = lower(ast.parse(src, mode="eval").body)
+        return (op("neg", x) if n else x), row
+
+    ok = None
+    for s in stmts:
+        if s[0] == "unpack":
+            for t in s[1]:
+                env[t] = (("x", t), s[2] != "C")
+            items.append(("py", f"{', '.join(s[1])}, = {s[2]}"))
+        elif s[0] == "let":
+            x, row = value(s[2])
+            if not row and x[1] != s[1]:
+                nscal[0] += 1
+                items.append(("py", f"s{nscal[0]} = {x[1]}"))
+                x = ("x", f"s{nscal[0]}")
+            env[s[1]] = (x, row)
+        elif s[0] == "check":
+            (D, drow), (tr, trow) = value(s[1]), value(s[2])
+            if not (drow or trow):
+                items.append(("py", f"if not {D[1]} > SINGULAR_RTOL * ({tr[1]}): return False"))
+                continue
+            tr = op("mul", tr, ("x", "SINGULAR_RTOL")) if trow else ("x", f"SINGULAR_RTOL * ({tr[1]})")
+            margin = op("sub", D, tr)
+            ok = margin if ok is None else op("minimum", ok, margin)
+        else:
+            outs = s[1]
+    # the returned values are computed in (or copied into) the rows of ``out``
+    pinned, defined = {}, {it[2] for it in items if it[0] == "op"}
+    for k, src in enumerate(outs):
+        x, row = value(src)
+        if x[0] == "v" and x[1] in defined and x[1] not in pinned:
+            pinned[x[1]] = f"o{k}"
+        else:
+            items.append(("op", "copyto", None, (x,), f"o{k}"))
+
+    # rows: last reads, then a linear scan
+    last = {}
+    for j, it in enumerate(items):
+        if it[0] == "op":
+            for a in it[3]:
+                if a[0] == "v":
+                    last[a[1]] = j
+    if ok is not None:
+        last[ok[1]] = len(items)
+    reg, free, nreg, body = dict(pinned), [], 0, []
+
+    def name(a):
+        return reg[a[1]] if a[0] == "v" else a[1]
+
+    for j, it in enumerate(items):
+        if it[0] == "py":
+            body.append(it[1])
+            continue
+        uf, dst, args = it[1], it[2], it[3]
+        srcs = [name(a) for a in args]
+        for a in set(a[1] for a in args if a[0] == "v"):
+            if last[a] == j and not reg[a].startswith("o"):
+                free.append(reg[a])
+        if uf == "copyto":
+            body.append(f"copyto({it[4]}, {srcs[0]})")
+            continue
+        if dst not in reg:
+            if free:
+                reg[dst] = free.pop()
+            else:
+                reg[dst] = f"w{nreg}"
+                nreg += 1
+            if dst not in last:   # never read (cannot happen after dead-code elimination)
+                free.append(reg[dst])
+        body.append(f"{uf}({', '.join(srcs)}, {'out=' if uf == 'minimum' else ''}{reg[dst]})")
+    head = ["def aba_batch(C, q, qd, tau, fe, W, out):"]
+    if nreg:
+        head.append("    " + ", ".join(f"w{r}" for r in range(nreg)) + ", = W")
+    head.append("    " + ", ".join(f"o{k}" for k in range(len(outs))) + ", = out")
+    tail = f"    return {reg[ok[1]]}.min() > 0.0" if ok is not None else "    return True"
+    return "\n".join(head + ["    " + b for b in body] + [tail]) + "\n", nreg
+
+
+def _batch_plan(model: Model, with_fext: bool):
+    """The compiled batch function, its flat constants and number of work rows for ``model`` (cached), or None.
+
+    Available for the models the single-state plan covers (see :func:`_plan`).
+    """
+    entry = _plan_entry(model)
+    if entry is None or model.nq == 0:
+        return None
+    (kinds, parents, zero, pack), C = entry
+    if pack:
+        C = tuple(c for g in C for c in g)
+    fkey = (kinds, parents, zero, with_fext)
+    entry = _BATCH_PLANS.get(fkey)
+    if entry is None:
+        if not _compile_now(model, "aba_batch_calls"):
+            return None
+        if len(_BATCH_PLANS) >= 256:
+            _BATCH_PLANS.clear()
+        src, nreg = _batch_source(_plan_lines(kinds, parents, zero, with_fext, False))
+        ns: dict = {}
+        exec(compile(src, f"<aba batch plan N={len(kinds)}>", "exec"), dict(_UFUNC_NS), ns)
+        entry = _BATCH_PLANS[fkey] = (ns["aba_batch"], nreg)
+    return entry[0], C, entry[1]
+
+
+def _batch(model: Model, plan, q, qd, tau, f_ext, shape):
+    """A validated batch through the batched plan, block by block: ``q̈`` (..., nq), or None (see above)."""
+    fn, C, nreg = plan
+    nq, N = model.nq, model.N
+    B = int(np.prod(shape))
+    ins = [np.broadcast_to(x, shape + (nq,)).reshape(B, nq) for x in (q, qd, tau)]
+    fe = None if f_ext is None else np.broadcast_to(f_ext, shape + (N, 3)).reshape(B, 3 * N)
+    n = min(B, BATCH_CHUNK)
+    rows = np.empty((3, nq, n))
+    frows = None if fe is None else np.empty((3 * N, n))
+    W, out = np.empty((nreg, n)), np.empty((nq, n))
+    res = np.empty((B, nq))
+    with np.errstate(all="ignore"):
+        for lo in range(0, B, n):
+            k = min(n, B - lo)
+            r, w, o = (rows, W, out) if k == n else (rows[:, :, :k], W[:, :k], out[:, :k])
+            for j in range(3):
+                np.copyto(r[j], ins[j][lo:lo + k].T)
+            f = None
+            if fe is not None:
+                f = frows if k == n else frows[:, :k]
+                np.copyto(f, fe[lo:lo + k].T)
+            if fn(C, r[0], r[1], r[2], f, w, o):
+                res[lo:lo + k] = o.T
+            else:   # some state fails the singularity test: the block state by state, as single states run
+                single, Cs = _plan(model, fe is not None, force=True)
+                ql, qdl, taul = (x[lo:lo + k].tolist() for x in ins)
+                fl = [None] * k if fe is None else fe[lo:lo + k].tolist()
+                try:
+                    res[lo:lo + k] = [single(Cs, *state) for state in zip(ql, qdl, taul, fl)]
+                except SingularConfigurationError:
+                    raise
+                except (ArithmeticError, ValueError):   # overflow (math.cos(inf)...), not a singular state
+                    return None
+            if not _isfinite(res[lo:lo + k].sum()):
+                return None
+    return res.reshape(shape + (nq,))
 
 
 def _single(model: Model, table, q, qd, tau, f_ext) -> np.ndarray:
@@ -880,6 +1164,12 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
             fn, C = plan
             res = [fn(C, qb[k], qdb[k], taub[k], None if feb is None else feb[k]) for k in range(B)]
         return np.array(res).reshape(shape + (nq,))
+
+    plan = _batch_plan(model, f_ext is not None)
+    if plan is not None:
+        res = _batch(model, plan, q, qd, tau, f_ext, shape)
+        if res is not None:
+            return res
 
     def rows(x):
         return np.ascontiguousarray(np.broadcast_to(x, shape + (nq,)).reshape(B, nq).T)
