@@ -11,7 +11,11 @@ import numpy as np
 from .errors import InputError, NonFiniteError, ShapeError, SingularInertiaError
 
 __all__ = ["as_array", "as_vec3", "as_mat3", "as_xy", "as_scalar", "check_symmetric",
-           "check_positive_definite", "check_positive"]
+           "check_positive_definite", "check_positive_semidefinite", "check_positive", "PSD_RTOL"]
+
+#: Relative tolerance of :func:`check_positive_semidefinite`: an eigenvalue below
+#: ``-PSD_RTOL * max|eigenvalue|`` is a genuinely negative direction, not rounding.
+PSD_RTOL = 1e-10
 
 
 def as_array(x, name: str, tail: tuple[int, ...] = (), *, finite: bool = True) -> np.ndarray:
@@ -68,12 +72,54 @@ def check_positive(x, name: str, *, strict: bool = True) -> np.ndarray:
 
 
 def check_symmetric(m: np.ndarray, name: str, rtol: float = 1e-10) -> np.ndarray:
-    """Raise :class:`InputError` unless the (..., 3, 3) matrices ``m`` are symmetric."""
-    asym = np.abs(m - np.swapaxes(m, -1, -2)).max(initial=0.0)
-    scale = np.abs(m).max(initial=0.0)
-    if asym > rtol * max(scale, 1.0):
-        raise InputError(f"{name} must be symmetric, got asymmetry {asym:.3g}")
+    """Raise :class:`InputError` unless the (..., 3, 3) matrices ``m`` are symmetric.
+
+    Scale-relative, matrix by matrix: ``max|m - mᵀ| <= rtol * max|m|``, so a
+    tiny matrix is judged like a large one (``1e-11 * M`` is symmetric exactly
+    when ``M`` is).  Only the all-zero matrix has a zero scale, and it is
+    symmetric.  The message gives the largest asymmetry of an offending matrix.
+    """
+    asym = np.abs(m - np.swapaxes(m, -1, -2)).max(axis=(-2, -1), initial=0.0)
+    scale = np.abs(m).max(axis=(-2, -1), initial=0.0)
+    bad = asym > rtol * scale
+    if np.any(bad):
+        raise InputError(f"{name} must be symmetric, got asymmetry {float(np.max(asym[bad])):.3g}")
     return m
+
+
+def check_positive_semidefinite(m: np.ndarray, name: str, rtol: float = PSD_RTOL, *,
+                                eig: bool = False):
+    """Raise unless ``m`` is symmetric positive *semi*-definite (an inertia, possibly singular).
+
+    Rigid-body inertias of point masses and articulated inertias projected
+    across a joint are singular but legitimate, so zero eigenvalues pass; an
+    eigenvalue below ``-rtol * max|eigenvalue|`` (per matrix) does not.
+
+    Raises
+    ------
+    InputError
+        ``m`` is not symmetric (:func:`check_symmetric`).
+    SingularInertiaError
+        ``m`` has a negative eigenvalue (indefinite or negative definite);
+        the message names ``name`` and gives the smallest eigenvalue
+        (``.cond`` is ``inf``).
+
+    Returns
+    -------
+    ndarray, or (ndarray, ndarray) with ``eig=True``
+        ``m``, and with ``eig=True`` also its eigenvalues in ascending order
+        (so that a caller that needs them does not solve again).
+    """
+    check_symmetric(m, name)
+    w = np.linalg.eigvalsh(m)
+    lo = w[..., 0]
+    top = np.maximum(np.abs(w[..., 0]), np.abs(w[..., -1]))
+    bad = lo < -rtol * top
+    if np.any(bad):
+        raise SingularInertiaError(
+            f"{name} must be positive semi-definite, got smallest eigenvalue {float(np.min(lo[bad])):.3g}",
+            float("inf"))
+    return (m, w) if eig else m
 
 
 def check_positive_definite(m: np.ndarray, name: str, rtol: float = 1e-12) -> np.ndarray:

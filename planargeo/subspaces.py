@@ -26,6 +26,20 @@ kernels (``_percussion_space(A, s)``, ``_effective_mobility(A, s)``,
 singularity rule (:func:`_gram`: ``‖A‖ ‖s‖² / |λ|_min(sᵀAs)`` with Frobenius
 norms, no eigen-solve of ``A``) lives in the kernels, so it is the same everywhere.
 
+Inertia arguments of the public functions must be symmetric
+(:class:`~planargeo.errors.InputError`) and positive semi-definite: an
+eigenvalue below ``-1e-10 max|eigenvalue|`` raises
+:class:`~planargeo.errors.SingularInertiaError` naming the argument.  Singular
+(semi-definite) inertias — point masses, articulated inertias projected across
+a joint — are legitimate wherever only ``sᵀAs`` is inverted
+(:func:`percussion_space`, :func:`joint_space_inertia`,
+:func:`effective_mobility`, :func:`reactive_acceleration_space` with ``s``);
+the functions that need ``A⁻¹`` (:func:`reactive_acceleration_space` without
+``s``, :func:`reaction_space_inverse_inertia`, :func:`effective_base_inertia`,
+:func:`inertia_decomposition`, :func:`inverse_inertia_decomposition`,
+:class:`Decomposition` with ``k < 3``) need it positive definite.  The private
+kernels do not check (their callers build ``A`` from checked bodies).
+
 Errors: a singular ``sᵀAs`` or ``RᵀA⁻¹R`` raises
 :class:`~planargeo.errors.SingularConfigurationError`; a singular ``A`` where
 ``A⁻¹`` is needed raises :class:`~planargeo.errors.SingularInertiaError`;
@@ -37,7 +51,7 @@ import math
 
 import numpy as np
 
-from ._validate import as_array, check_symmetric
+from ._validate import as_array, check_positive_semidefinite
 from .errors import InputError, ShapeError, SingularConfigurationError, SingularInertiaError
 
 __all__ = [
@@ -68,9 +82,15 @@ def _space(x, name: str) -> np.ndarray:
 
 
 def _inertia(A, name: str) -> np.ndarray:
-    a = as_array(A, name, (3, 3))
-    check_symmetric(a, name)
-    return a
+    """An inertia argument: (..., 3, 3), finite, symmetric, positive semi-definite (named ``name``)."""
+    return check_positive_semidefinite(as_array(A, name, (3, 3)), name)
+
+
+def _inertia_eig(A, name: str):
+    """:func:`_inertia` and the ``(largest, smallest)`` |eigenvalue| of ``A`` (for :func:`_solve_A`), one eigen-solve."""
+    a, w = check_positive_semidefinite(as_array(A, name, (3, 3)), name, eig=True)
+    w = np.abs(w)
+    return a, (w.max(axis=-1), w.min(axis=-1))
 
 
 def _T(x: np.ndarray) -> np.ndarray:
@@ -255,7 +275,8 @@ def percussion_space(s, A, *, what: str | None = None) -> np.ndarray:
     s : array_like, shape (..., 3, k) or (3,)
         Motion space (unit twists at the origin).
     A : array_like, shape (..., 3, 3)
-        Rigid-body or articulated inertia (symmetric).
+        Rigid-body or articulated inertia: symmetric positive semi-definite
+        (singular is fine, e.g. a point mass, as long as ``sᵀAs`` is not).
 
     what : str, optional
         How ``sᵀAs`` is named in the error message (default ``"sᵀAs"``), e.g.
@@ -267,6 +288,10 @@ def percussion_space(s, A, *, what: str | None = None) -> np.ndarray:
 
     Raises
     ------
+    InputError
+        ``A`` is not symmetric (message ``"A must be symmetric, ..."``).
+    SingularInertiaError
+        ``A`` has a negative eigenvalue (``"A must be positive semi-definite, ..."``).
     SingularConfigurationError
         If ``sᵀAs`` is singular (``A`` has no inertia along ``s``): its
         scale-free condition number ``‖A‖ ‖s‖² / |λ|_min(sᵀAs)`` (``.cond``;
@@ -284,6 +309,10 @@ def percussion_space(s, A, *, what: str | None = None) -> np.ndarray:
     array([[0. ],
            [0.8],
            [1. ]])
+    >>> percussion_space([0.0, 0.0, 1.0], np.diag([1.0, 1.0, -1.0]))
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.SingularInertiaError: A must be positive semi-definite, got smallest eigenvalue -1 (condition number inf)
     """
     return _percussion_space(_inertia(A, "A"), _space(s, "s"), what or "sᵀAs")
 
@@ -300,8 +329,9 @@ def reactive_acceleration_space(R, A=None, *, s=None, T=None, what: str | None =
     R : array_like, shape (..., 3, r) or (3,)
         Reaction space (unit wrenches at the origin).
     A : array_like, shape (..., 3, 3)
-        Rigid-body or articulated inertia (symmetric; invertible unless ``s`` is
-        given; may be omitted when both ``s`` and ``T`` are given).
+        Rigid-body or articulated inertia: symmetric positive semi-definite,
+        and positive definite (invertible) unless ``s`` is given; may be
+        omitted when both ``s`` and ``T`` are given.
     s : array_like, shape (..., 3, 3 - r), optional
         The joint's motion space (``sᵀR = 0``).  When given, the inverse-free
         equivalent ``U = (1 - s Tᵀ) R (RᵀR)⁻¹`` is used (from ``T sᵀ + R Uᵀ = 1``,
@@ -318,8 +348,11 @@ def reactive_acceleration_space(R, A=None, *, s=None, T=None, what: str | None =
 
     Raises
     ------
+    InputError
+        ``A`` is not symmetric.
     SingularInertiaError
-        If ``A`` is singular (and ``s`` is not given).
+        ``A`` has a negative eigenvalue, or is singular and ``s`` is not given
+        (``"A must be invertible"``, with ``.cond``).
     SingularConfigurationError
         If ``RᵀA⁻¹R`` (or, with ``s``, ``sᵀAs``) is singular.
 
@@ -350,7 +383,8 @@ def reactive_acceleration_space(R, A=None, *, s=None, T=None, what: str | None =
             raise InputError("T must be given together with s")
         if A is None:
             raise InputError("A must be given unless s and T are")
-        return _reactive(R, _inertia(A, "A"), "A", what=what)
+        A, eig = _inertia_eig(A, "A")
+        return _reactive(R, A, "A", eig, what=what)
     s = _space(s, "s")
     _check_complementary(s, R)
     if T is None:
@@ -448,6 +482,10 @@ def twist_projectors(s, R, A) -> tuple[np.ndarray, np.ndarray]:
 def joint_space_inertia(s, I) -> np.ndarray:
     """Joint-space inertia ``sᵀ I s`` (thesis 6.67, 6.74c): ``Q = (sᵀIs) ψ``.
 
+    ``I`` must be symmetric (:class:`~planargeo.errors.InputError`) and positive
+    semi-definite (:class:`~planargeo.errors.SingularInertiaError` naming ``I``);
+    it may be singular.
+
     Examples
     --------
     >>> from planargeo.screws import inertia_matrix
@@ -462,8 +500,10 @@ def joint_space_inertia(s, I) -> np.ndarray:
 def reaction_space_inverse_inertia(R, I) -> np.ndarray:
     """Reaction-space inverse inertia ``Rᵀ I⁻¹ R`` (thesis 6.71): ``γ = (RᵀI⁻¹R) μ``.
 
-    Computed with a solve, not an explicit inverse; singular ``I`` raises
-    :class:`~planargeo.errors.SingularInertiaError`.
+    Computed with a solve, not an explicit inverse.  ``I`` must be symmetric
+    (:class:`~planargeo.errors.InputError`) and positive definite: a negative
+    eigenvalue or a singular ``I`` raises
+    :class:`~planargeo.errors.SingularInertiaError` naming ``I``.
 
     Examples
     --------
@@ -471,8 +511,8 @@ def reaction_space_inverse_inertia(R, I) -> np.ndarray:
     array([[0.5]])
     """
     R = _space(R, "R")
-    I = _inertia(I, "I")
-    return _T(R) @ _solve_A(I, R, "I")
+    I, eig = _inertia_eig(I, "I")
+    return _T(R) @ _solve_A(I, R, "I", eig)
 
 
 def inertia_decomposition(s, R, I) -> tuple[np.ndarray, np.ndarray]:
@@ -481,6 +521,8 @@ def inertia_decomposition(s, R, I) -> tuple[np.ndarray, np.ndarray]:
     ``T sᵀ I a`` is the force accelerating the joint's moving part, ``R Uᵀ I a``
     the (reaction) force accelerating its base; the second term is the
     effective inertia of the joint base (6.97), see :func:`effective_base_inertia`.
+    ``I`` must be symmetric positive definite (``U`` needs ``I⁻¹``) unless
+    the joint is free (``k = 3``); errors as for :class:`Decomposition`.
 
     Returns
     -------
@@ -505,6 +547,7 @@ def inverse_inertia_decomposition(s, R, I) -> tuple[np.ndarray, np.ndarray]:
     effective mobility of a constrained body, 6.93), ``U Rᵀ I⁻¹ f`` the motion
     of the joint base (6.81).  Both parts are symmetric:
     ``s Tᵀ I⁻¹ = s (sᵀIs)⁻¹ sᵀ`` and ``U Rᵀ I⁻¹ = I⁻¹R (RᵀI⁻¹R)⁻¹ RᵀI⁻¹``.
+    ``I`` must be symmetric positive definite; errors as for :class:`Decomposition`.
 
     Examples
     --------
@@ -517,7 +560,7 @@ def inverse_inertia_decomposition(s, R, I) -> tuple[np.ndarray, np.ndarray]:
     """
     d = Decomposition(s, R, I, name="I")
     IiR = _solve_A(d.A, d.R, "I")
-    return effective_mobility(d.s, d.A), d.U @ _T(IiR)
+    return _effective_mobility(d.A, d.s, "sᵀIs"), d.U @ _T(IiR)
 
 
 def effective_mobility(s, I, *, what: str | None = None) -> np.ndarray:
@@ -526,7 +569,10 @@ def effective_mobility(s, I, *, what: str | None = None) -> np.ndarray:
     A body at rest held by the joint and loaded by a wrench ``f`` accelerates
     by ``a = s Tᵀ I⁻¹ f`` (with ``f`` the wrench *applied to* the body; the
     thesis's 6.83–6.93 carry a minus sign because their ``f`` is the wrench the
-    body transmits, like ``f_{i+1}`` in 6.102).  No inverse of ``I`` is needed.
+    body transmits, like ``f_{i+1}`` in 6.102).  No inverse of ``I`` is needed:
+    ``I`` must be symmetric (:class:`~planargeo.errors.InputError`) and positive
+    semi-definite (:class:`~planargeo.errors.SingularInertiaError` naming ``I``);
+    singular ``sᵀIs`` raises :class:`~planargeo.errors.SingularConfigurationError`.
 
     Examples
     --------
@@ -545,6 +591,9 @@ def effective_base_inertia(R, I) -> np.ndarray:
     The reaction force needed to give the joint base the acceleration ``a``
     when the joint transmits no active force: ``f = R Uᵀ I a``.  This is the
     projection the articulated-body recursion adds to the parent (6.76, chapter 7).
+    ``I`` must be symmetric positive definite
+    (:class:`~planargeo.errors.InputError` / :class:`~planargeo.errors.SingularInertiaError`
+    naming ``I``).
 
     Examples
     --------
@@ -554,8 +603,7 @@ def effective_base_inertia(R, I) -> np.ndarray:
            [0., 0., 4.]])
     """
     R = _space(R, "R")
-    I = _inertia(I, "I")
-    eig = _abs_eig(I)
+    I, eig = _inertia_eig(I, "I")
     IiR = _solve_A(I, R, "I", eig)
     M = _gram(R, IiR, 1.0 / eig[1], "R", "RᵀI⁻¹R")
     return _right_solve(R, M) @ _T(R)
@@ -572,9 +620,20 @@ class Decomposition:
     R : array_like, shape (..., 3, 3 - k)
         Reaction space, ``sᵀR = 0`` (checked).
     A : array_like, shape (..., 3, 3)
-        Body or articulated inertia (symmetric; invertible when ``k < 3``).
+        Body or articulated inertia: symmetric positive semi-definite, and
+        positive definite (invertible) when ``k < 3`` (``U`` needs ``A⁻¹``).
     name : str
         Name used for ``A`` in error messages.
+
+    Raises
+    ------
+    InputError
+        ``A`` not symmetric, or ``sᵀR ≠ 0``.
+    SingularInertiaError
+        ``A`` has a negative eigenvalue (``"A must be positive semi-definite"``),
+        or is singular when ``k < 3`` (``"A must be invertible"``, with ``.cond``).
+    SingularConfigurationError
+        ``sᵀAs`` or ``RᵀA⁻¹R`` singular.
 
     Attributes
     ----------
@@ -602,11 +661,11 @@ class Decomposition:
     def __init__(self, s, R, A, *, name: str = "A"):
         s = _space(s, "s")
         R = _space(R, "R")
-        A = _inertia(A, name)
+        A, eig = _inertia_eig(A, name)
         _check_complementary(s, R)
         self.s, self.R, self.A = s, R, A
         self.T = _percussion_space(A, s, f"sᵀ{name}s")
-        self.U = _reactive(R, A, name)
+        self.U = _reactive(R, A, name, eig)
 
     @classmethod
     def from_joint(cls, joint, A, *, name: str = "A") -> "Decomposition":

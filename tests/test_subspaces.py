@@ -247,15 +247,95 @@ def test_singular_joint_space_inertia():
 
 
 def test_singular_reaction_space_inverse_inertia():
-    A = np.diag([1.0, -1.0, 1.0])                      # indefinite: RᵀA⁻¹R can vanish
-    R = np.array([[1.0], [1.0], [0.0]]) / np.sqrt(2)
-    with pytest.raises(errors.SingularConfigurationError, match="RᵀA⁻¹R is singular"):
+    # a legitimate (positive definite, rigid-body) inertia with a rank-deficient reaction space:
+    # both columns are the unit force along x through the pivot, so RᵀA⁻¹R = [[a, a], [a, a]] is singular
+    A = inertia_matrix(2.0, [1.0, 0.0], 0.5)
+    fx = revolute((0.0, 0.0)).R[:, :1]
+    R = np.hstack([fx, fx])
+    G = R.T @ np.linalg.inv(A) @ R                              # by an explicit inverse: rank 1
+    assert G[0, 0] > 0 and abs(np.linalg.det(G)) <= 1e-15 * G[0, 0] ** 2
+    with pytest.raises(errors.SingularConfigurationError, match="RᵀA⁻¹R is singular") as info:
         reactive_acceleration_space(R, A)
+    assert info.value.cond > 1e12
+    with pytest.raises(errors.SingularConfigurationError, match="RᵀI⁻¹R is singular"):
+        effective_base_inertia(R, A)
+    # positive semi-definite but singular A where A⁻¹ is needed: SingularInertiaError with cond
     with pytest.raises(errors.SingularInertiaError, match="A must be invertible") as info:
         reactive_acceleration_space(revolute().R, np.diag([1.0, 1.0, 0.0]))
     assert info.value.cond == np.inf
     with pytest.raises(errors.SingularInertiaError, match="I must be invertible"):
         reaction_space_inverse_inertia(revolute().R, np.zeros((3, 3)))
+
+
+# --------------------------------------------------------------------------- inertia arguments: symmetric, PSD / PD
+INDEF = np.diag([1.0, -1.0, 1.0])                                # indefinite: RᵀA⁻¹R could vanish
+NEGDEF = -inertia_matrix(2.0, [1.0, 0.0], 0.5)                   # negative definite
+NONSYM = np.array([[1.0, 0.5, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
+POINT_MASS = inertia_matrix(1.0, [1.0, 0.0], 0.0)                # singular, positive semi-definite
+_RJ = revolute((0.0, 0.0))
+
+# (call with the inertia as the last argument, name of the inertia argument in messages)
+INERTIA_ARG_CALLS = {
+    "percussion_space": (lambda A: percussion_space(_RJ.s, A), "A"),
+    "reactive_acceleration_space": (lambda A: reactive_acceleration_space(_RJ.R, A), "A"),
+    "reactive_acceleration_space(s=)": (lambda A: reactive_acceleration_space(_RJ.R, A, s=_RJ.s), "A"),
+    "joint_space_inertia": (lambda A: joint_space_inertia(_RJ.s, A), "I"),
+    "reaction_space_inverse_inertia": (lambda A: reaction_space_inverse_inertia(_RJ.R, A), "I"),
+    "effective_mobility": (lambda A: effective_mobility(_RJ.s, A), "I"),
+    "effective_base_inertia": (lambda A: effective_base_inertia(_RJ.R, A), "I"),
+    "inertia_decomposition": (lambda A: inertia_decomposition(_RJ.s, _RJ.R, A), "I"),
+    "inverse_inertia_decomposition": (lambda A: inverse_inertia_decomposition(_RJ.s, _RJ.R, A), "I"),
+    "wrench_projectors": (lambda A: wrench_projectors(_RJ.s, _RJ.R, A), "A"),
+    "twist_projectors": (lambda A: twist_projectors(_RJ.s, _RJ.R, A), "A"),
+    "Decomposition": (lambda A: Decomposition(_RJ.s, _RJ.R, A), "A"),
+    "Decomposition(name=)": (lambda A: Decomposition(_RJ.s, _RJ.R, A, name="A_3"), "A_3"),
+    "Decomposition.from_joint": (lambda A: Decomposition.from_joint(_RJ, A), "A"),
+}
+# functions that only multiply A or invert sᵀAs: a singular (semi-definite) inertia is fine
+PSD_OK = {"percussion_space", "reactive_acceleration_space(s=)", "joint_space_inertia", "effective_mobility"}
+
+
+@pytest.mark.parametrize("fn", sorted(INERTIA_ARG_CALLS))
+@pytest.mark.parametrize("bad", [INDEF, NEGDEF, np.stack([np.eye(3), INDEF])], ids=["indefinite", "negdef", "batch"])
+def test_indefinite_inertia_rejected_naming_the_argument(fn, bad):
+    call, name = INERTIA_ARG_CALLS[fn]
+    with pytest.raises(errors.SingularInertiaError,
+                       match=rf"^{name} must be positive semi-definite, got smallest eigenvalue -") as info:
+        call(bad)
+    assert isinstance(info.value, ValueError) and isinstance(info.value, errors.PlanargeoError)
+    assert info.value.cond == np.inf
+
+
+@pytest.mark.parametrize("fn", sorted(INERTIA_ARG_CALLS))
+def test_non_symmetric_inertia_rejected_naming_the_argument(fn):
+    call, name = INERTIA_ARG_CALLS[fn]
+    with pytest.raises(errors.InputError, match=rf"^{name} must be symmetric, got asymmetry 0\.5$"):
+        call(NONSYM)
+
+
+@pytest.mark.parametrize("fn", sorted(INERTIA_ARG_CALLS))
+def test_singular_semidefinite_inertia_accepted_only_where_no_inverse_is_needed(fn):
+    call, name = INERTIA_ARG_CALLS[fn]
+    # a point mass at (1, 0) pinned at the origin: sᵀAs = m = 1, but A itself is singular
+    if fn in PSD_OK:
+        out = call(POINT_MASS)
+        assert np.all(np.isfinite(out))
+    else:
+        with pytest.raises(errors.SingularInertiaError, match=rf"^{name} must be invertible") as info:
+            call(POINT_MASS)
+        assert info.value.cond > 1e12
+
+
+def test_semidefinite_inertia_results_by_hand():
+    # point mass m = 1 at (1, 0) on a pin at the origin: sᵀIs = m d² = 1, T = I s = [0, 1, 1]
+    # (the force along y through the mass), s (sᵀIs)⁻¹ sᵀ = e₃ e₃ᵀ; U by hand in test_inverse_free_U...
+    np.testing.assert_allclose(joint_space_inertia(_RJ.s, POINT_MASS), [[1.0]])
+    np.testing.assert_allclose(percussion_space(_RJ.s, POINT_MASS), [[0.0], [1.0], [1.0]])
+    np.testing.assert_allclose(effective_mobility(_RJ.s, POINT_MASS), np.diag([0.0, 0.0, 1.0]))
+    # rounding-level negative eigenvalues (a point mass far away) are not an error
+    far = inertia_matrix(3.0, [1e3, -2e3], 0.0)
+    assert np.linalg.eigvalsh(far)[0] <= 1e-9 * np.abs(far).max()
+    joint_space_inertia(_RJ.s, far)
 
 
 def test_bad_shapes_and_values():

@@ -59,3 +59,58 @@ def test_hierarchy():
     assert issubclass(errors.SingularInertiaError, errors.SingularError)
     assert issubclass(errors.SingularConfigurationError, np.linalg.LinAlgError)
     assert issubclass(errors.DegenerateGeometryError, errors.PlanargeoError)
+
+
+def test_symmetry_is_scale_relative():
+    from planargeo._validate import check_symmetric
+    m = np.array([[1.0, 0.5, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
+    for scale in (1e-11, 1e-200, 1.0, 1e8):
+        with pytest.raises(errors.InputError, match=r"^C must be symmetric, got asymmetry "):
+            check_symmetric(scale * m, "C")
+    # the message gives the (absolute) asymmetry of the tiny matrix itself
+    with pytest.raises(errors.InputError, match=r"^C must be symmetric, got asymmetry 5e-12$"):
+        check_symmetric(1e-11 * m, "C")
+    # rounding-level asymmetry passes at every scale, and so does the all-zero matrix
+    r = np.array([[1.0, 0.3, 0.0], [0.3 * (1 + 1e-15), 1.0, 0.0], [0.0, 0.0, 2.0]])
+    for scale in (1e-11, 1.0, 1e8):
+        check_symmetric(scale * r, "C")
+    check_symmetric(np.zeros((3, 3)), "C")
+
+
+def test_symmetry_checked_matrix_by_matrix_in_a_batch():
+    from planargeo._validate import check_symmetric
+    big = 1e6 * np.eye(3)
+    small = 1e-6 * np.array([[1.0, 0.5, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])   # asymmetry 5e-7 < 1e-10 * 1e6
+    with pytest.raises(errors.InputError, match=r"^C must be symmetric, got asymmetry 5e-07$"):
+        check_symmetric(np.stack([big, small]), "C")
+
+
+def test_small_asymmetric_inertia_rejected():
+    from planargeo.inertia import Inertia
+    m = 1e-11 * np.array([[1.0, 0.5, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
+    with pytest.raises(errors.InputError, match=r"^matrix must be symmetric, got asymmetry 5e-12$"):
+        Inertia(m)
+    # the same body, symmetric, is accepted at that scale
+    Inertia(1e-11 * np.eye(3))
+
+
+def test_positive_semidefinite_check():
+    from planargeo._validate import PSD_RTOL, check_positive_semidefinite
+    with pytest.raises(errors.SingularInertiaError,
+                       match=r"^A must be positive semi-definite, got smallest eigenvalue -2 \(condition number inf\)$"):
+        check_positive_semidefinite(np.diag([1.0, 3.0, -2.0]), "A")
+    with pytest.raises(errors.SingularInertiaError, match="A must be positive semi-definite"):
+        check_positive_semidefinite(-np.eye(3), "A")
+    with pytest.raises(errors.InputError, match="A must be symmetric"):
+        check_positive_semidefinite(np.triu(np.ones((3, 3))), "A")
+    # singular and zero matrices pass; a negative eigenvalue within the scaled tolerance is rounding
+    check_positive_semidefinite(np.diag([1.0, 1.0, 0.0]), "A")
+    check_positive_semidefinite(np.zeros((3, 3)), "A")
+    check_positive_semidefinite(np.diag([1e6, 1.0, -0.5 * PSD_RTOL * 1e6]), "A")
+    with pytest.raises(errors.SingularInertiaError):
+        check_positive_semidefinite(np.diag([1e6, 1.0, -2.0 * PSD_RTOL * 1e6]), "A")
+    # tiny matrices are judged relative to their own scale
+    with pytest.raises(errors.SingularInertiaError):
+        check_positive_semidefinite(1e-20 * np.diag([1.0, 1.0, -1.0]), "A")
+    m, w = check_positive_semidefinite(np.diag([3.0, 1.0, 2.0]), "A", eig=True)
+    np.testing.assert_array_equal(w, [1.0, 2.0, 3.0])
