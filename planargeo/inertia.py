@@ -15,9 +15,9 @@ from __future__ import annotations
 import numpy as np
 
 from ._validate import (as_array, as_mat3, as_scalar, as_vec3, as_xy, check_positive_definite,
-                        check_symmetric)
+                        check_positive_semidefinite)
 from .errors import InputError, InvalidPolygonError, SingularInertiaError
-from .screws import inertia_at, inertia_matrix, kinetic_energy, momentum
+from .screws import _congruence, _inertia_rotated, _kinetic_energy, X_P_inv_T, inertia_matrix
 
 __all__ = [
     "Inertia", "mass", "centre_of_mass", "rotational_inertia", "radius_of_gyration",
@@ -38,22 +38,34 @@ def _mat(x, name="inertia") -> np.ndarray:
     return as_mat3(x.matrix if isinstance(x, Inertia) else x, name)
 
 
-def _psd(x, name="inertia", rtol: float = 1e-12) -> np.ndarray:
+def _psd(x, name="inertia") -> np.ndarray:
     """An inertia that must be symmetric positive *semi*-definite (a point mass, ``J = 0``, is allowed).
 
     Raises :class:`InputError` (not symmetric) or :class:`SingularInertiaError`
-    (a negative eigenvalue beyond rounding), naming ``name``.
+    (a negative eigenvalue beyond rounding,
+    :func:`planargeo._validate.check_positive_semidefinite`), naming ``name``.
     """
-    I = _mat(x, name)
-    check_symmetric(I, name)
-    w = np.linalg.eigvalsh(I)
-    lo, hi = w[..., 0], w[..., -1]
-    bad = lo < -rtol * np.maximum(np.abs(hi), np.finfo(float).tiny)
+    return check_positive_semidefinite(_mat(x, name), name)
+
+
+#: Relative tolerance of the rigid-body structure test of :class:`Inertia`.
+RIGID_RTOL = 1e-10
+
+
+def _check_rigid(M: np.ndarray, name: str) -> np.ndarray:
+    """Raise :class:`InputError` unless ``M[0, 0] == M[1, 1]`` and ``M[0, 1] == 0`` (thesis 4.58), relative to ``max|M|``."""
+    scale = np.abs(M).max(axis=(-2, -1), initial=0.0)
+    dev = np.maximum(np.abs(M[..., 0, 0] - M[..., 1, 1]),
+                     np.maximum(np.abs(M[..., 0, 1]), np.abs(M[..., 1, 0])))
+    bad = dev > RIGID_RTOL * scale
     if np.any(bad):
-        raise SingularInertiaError(
-            f"{name} must be positive semi-definite, got smallest eigenvalue {float(np.min(lo[bad])):.3g}",
-            float("inf"))
-    return I
+        i = np.unravel_index(int(np.argmax(np.where(bad, dev, -1.0))), bad.shape) if bad.ndim else ()
+        a, b, c = (float(M[i + (0, 0)]), float(M[i + (1, 1)]), float(M[i + (0, 1)]))
+        raise InputError(
+            f"{name} must be a rigid-body inertia ({name}[0, 0] == {name}[1, 1] == mass and "
+            f"{name}[0, 1] == 0, thesis 4.58), got {name}[0, 0] = {a:.6g}, {name}[1, 1] = {b:.6g}, "
+            f"{name}[0, 1] = {c:.6g}; articulated inertias are plain arrays")
+    return M
 
 
 def _pd(x, name="inertia") -> np.ndarray:
@@ -67,10 +79,18 @@ def _vec(x, name) -> np.ndarray:
 
 # ---------------------------------------------------------------------------
 # Features of a rigid-body inertia (thesis 1.66, 4.58)
+#
+# mass, centre_of_mass, rotational_inertia and radius_of_gyration read the
+# entries of the rigid-body form 4.58 and do not check it: for an articulated
+# inertia (no such structure) the numbers mean nothing.  The Inertia class
+# checks the structure, so its properties are always meaningful.
 # ---------------------------------------------------------------------------
 
 def mass(inertia) -> np.ndarray:
     """Mass ``m = I[0, 0]`` of a rigid-body inertia (thesis 1.66, 4.58).
+
+    Only meaningful for the rigid-body form 4.58 (not checked here; it is by
+    :class:`Inertia`); an articulated inertia has no mass.
 
     Examples
     --------
@@ -341,15 +361,28 @@ class Inertia:
     """A planar rigid-body inertia at the origin (thesis 1.66, 4.58, 5.64): an imaginary conic.
 
     Wraps one symmetric positive definite ``(..., 3, 3)`` array ``.matrix``
-    (read-only).  Construct with :meth:`from_mass`, :meth:`from_polygon`,
-    :meth:`composite` (or ``+``), or from a matrix.
+    (read-only) with the structure of a rigid body (4.58)::
+
+        [[ m,     0,    -m cy       ],
+         [ 0,     m,     m cx       ],
+         [-m cy,  m cx,  J + m |c|² ]]
+
+    so that :attr:`mass`, :attr:`com`, :attr:`rotational_inertia` and
+    :attr:`radius_of_gyration` are meaningful.  Construct with
+    :meth:`from_mass`, :meth:`from_polygon`, :meth:`composite` (or ``+``), or
+    from a matrix.  Articulated inertias (chapters 6-7: any symmetric positive
+    semi-definite matrix, e.g. ``diag(1, 2, 1)``) have no mass or centre of
+    mass; they stay plain arrays, which every function of
+    :mod:`planargeo.inertia`, :mod:`planargeo.screws` and
+    :mod:`planargeo.subspaces` accepts.
 
     Raises
     ------
     InputError
-        Non-symmetric matrix, non-positive mass ``matrix[0, 0]`` (message names
-        ``matrix``); wrong shape / non-finite values (``ShapeError`` /
-        ``NonFiniteError``).
+        Non-symmetric matrix, non-positive mass ``matrix[0, 0]``, no rigid-body
+        structure (``matrix[0, 0] != matrix[1, 1]`` or ``matrix[0, 1] != 0``
+        beyond ``1e-10 max|matrix|``); the message names ``matrix``.  Wrong
+        shape / non-finite values (``ShapeError`` / ``NonFiniteError``).
     SingularInertiaError
         Not positive definite (carries ``.cond``).
 
@@ -374,6 +407,7 @@ class Inertia:
             bad = M[..., 0, 0][M[..., 0, 0] <= 0].ravel()[0]
             raise InputError(f"matrix must have a positive mass matrix[0, 0], got {float(bad)!r}")
         check_positive_definite(M, "matrix")
+        _check_rigid(M, "matrix")
         M.flags.writeable = False
         self._matrix = M
 
@@ -451,6 +485,13 @@ class Inertia:
 
     @property
     def mass(self) -> np.ndarray:
+        """Mass ``m = matrix[0, 0]`` (thesis 1.66, 4.58); an array of the batch shape.
+
+        Examples
+        --------
+        >>> float(Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).mass)
+        2.0
+        """
         return mass(self._matrix)
 
     @property
@@ -465,6 +506,13 @@ class Inertia:
 
     @property
     def radius_of_gyration(self) -> np.ndarray:
+        """Radius of gyration ``ρ = sqrt(J / m)`` about the centre of mass (thesis 4.58, 5.64).
+
+        Examples
+        --------
+        >>> float(Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).radius_of_gyration)
+        0.5
+        """
         return radius_of_gyration(self._matrix)
 
     @property
@@ -511,7 +559,24 @@ class Inertia:
         >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).at([1.0, 0.0])
         Inertia(mass=2, com=(0, 0), radius_of_gyration=0.5)
         """
-        return Inertia(inertia_at(self._matrix, point))
+        return Inertia(_congruence(X_P_inv_T(point), self._matrix))
+
+    def rotated(self, theta, about=(0.0, 0.0)) -> "Inertia":
+        """The body turned by ``theta`` about ``about`` (thesis 1.68; :func:`planargeo.screws.inertia_rotated`).
+
+        The active rotation, like :meth:`planargeo.screws.Twist.rotated`:
+        ``m`` and ``J`` are unchanged and the centre of mass turns about
+        ``about``; twists and wrenches turned the same way keep their kinetic
+        energy, momentum and power.  (:meth:`at` changes the reference point
+        instead; :func:`planargeo.screws.inertia_transform` is the passive
+        change to a translated and rotated frame.)
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [2.0, 0.0], inertia=0.5).rotated(np.pi / 2, about=[1.0, 0.0])
+        Inertia(mass=2, com=(1, 1), radius_of_gyration=0.5)
+        """
+        return Inertia(_inertia_rotated(self._matrix, theta, about))
 
     def kinetic_energy(self, twist) -> np.ndarray:
         """``½ vᵀ I v`` (thesis 1.9).
@@ -521,7 +586,7 @@ class Inertia:
         >>> float(Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).kinetic_energy([1.0, 0.0, 0.0]))   # ½ m u²
         1.0
         """
-        return kinetic_energy(self._matrix, getattr(twist, "array", twist))
+        return _kinetic_energy(self._matrix, as_vec3(getattr(twist, "array", twist), "twist"))
 
     def momentum(self, twist) -> np.ndarray:
         """Momentum wrench ``I v`` (thesis 5.72).
@@ -531,7 +596,7 @@ class Inertia:
         >>> Inertia.from_mass(2.0, [0.0, 1.0], inertia=0.5).momentum([1.0, 0.0, 0.0])   # m u along y = 1
         array([ 2.,  0., -2.])
         """
-        return momentum(self._matrix, getattr(twist, "array", twist))
+        return np.einsum("...ij,...j->...i", self._matrix, as_vec3(getattr(twist, "array", twist), "twist"))
 
     def percussion_axis_array(self, point) -> np.ndarray:
         """:func:`percussion_axis` as an array.

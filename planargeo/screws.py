@@ -15,15 +15,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validate import as_array, as_mat3, as_vec3, as_xy, check_positive
+from ._validate import as_array, as_mat3, as_vec3, as_xy, check_positive, check_positive_semidefinite
 from .projective import normalize_line, normalize_point, to_xy
 
 __all__ = [
-    "X_P", "X_P_inv_T", "rot", "crm", "crf",
+    "X_P", "X_P_inv_T", "rot", "X_frame", "X_frame_inv_T", "rotation_about", "crm", "crf",
     "unit_rotation", "unit_translation", "inertia_matrix",
     "power", "kinetic_energy",
     "twist_magnitude", "pole_xy", "wrench_magnitude", "wrench_axis", "reciprocal",
-    "inertia_at", "momentum", "kappa", "bias_force",
+    "inertia_at", "inertia_transform", "inertia_rotated", "momentum", "kappa", "bias_force",
     "Twist", "Wrench", "TwistSum", "WrenchSum", "add_twists", "add_wrenches",
 ]
 
@@ -92,6 +92,72 @@ def rot(theta) -> np.ndarray:
     out[..., 1, 1] = c
     out[..., 2, 2] = 1.0
     return out
+
+
+def X_frame(theta, point) -> np.ndarray:
+    """General planar twist transform: translation to ``point``, then rotation by ``theta`` (thesis 1.56, 4.7).
+
+    Thesis 1.56 projected on the plane (``X_2D = Dᵀ X_3D D``, 4.7) with
+    ``r_AB = point`` and ``E`` the rotation by ``theta`` about z::
+
+        X = rot(θ) X_P(p) = [[ cos θ, -sin θ,  -(p_y cos θ + p_x sin θ)],
+                             [ sin θ,  cos θ,    p_x cos θ - p_y sin θ ],
+                             [ 0,      0,        1                     ]]
+
+    ``X @ v`` is the twist ``v`` (given at the origin) expressed at ``point``
+    and then rotated by ``theta`` (the coordinates in a frame at ``point``
+    whose axes are turned by ``-theta``).  ``theta = 0`` gives :func:`X_P`;
+    ``point = (0, 0)`` gives :func:`rot`.
+
+    Parameters
+    ----------
+    theta : array_like (...)
+    point : array_like (..., 2)
+
+    Returns
+    -------
+    ndarray (..., 3, 3)
+
+    Examples
+    --------
+    >>> np.round(X_frame(np.pi / 2, [2.0, 0.0]) @ [0.0, 0.0, 1.0], 12) + 0.0   # X_P gives [0, 2, 1], then turned
+    array([-2.,  0.,  1.])
+    """
+    return rot(theta) @ X_P(point)
+
+
+def X_frame_inv_T(theta, point) -> np.ndarray:
+    """Wrench transform matching :func:`X_frame`: ``X⁻ᵀ = rot(θ) X_P⁻ᵀ`` (thesis 1.58, 4.24).
+
+    ``X_frame_inv_T(θ, p) @ f`` is the wrench ``f`` (given at the origin)
+    expressed at ``p`` and rotated by ``θ``; power is preserved:
+    ``(X v)ᵀ (X⁻ᵀ f) = vᵀ f``.
+
+    Examples
+    --------
+    >>> np.round(X_frame_inv_T(np.pi / 2, [0.0, 1.0]) @ [1.0, 0.0, 0.0], 12) + 0.0   # X_P⁻ᵀ gives [1, 0, 1]
+    array([0., 1., 1.])
+    """
+    return rot(theta) @ X_P_inv_T(point)
+
+
+def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
+    """Twist map of a rigid rotation by ``theta`` about the point ``about`` (active; thesis 4.8, 1.56).
+
+    ``M = X_P(-c) rot(θ) X_P(c)``: express at ``c``, turn, express back at the
+    origin.  ``M @ v`` is the twist ``v`` carried along when the plane is
+    turned by ``theta`` about ``c`` (its pole turns about ``c``); wrenches are
+    carried by ``inv(M).T`` (= ``X_P⁻ᵀ(-c) rot(θ) X_P⁻ᵀ(c)``) and inertias by
+    :func:`inertia_rotated`.  With ``about = (0, 0)`` this is :func:`rot`.
+
+    Examples
+    --------
+    >>> v = unit_rotation([2.0, 0.0])                       # spin about (2, 0)
+    >>> pole_xy(rotation_about(np.pi / 2, [1.0, 0.0]) @ v).round(12) + 0.0   # (2, 0) turned about (1, 0)
+    array([1., 1.])
+    """
+    c = as_xy(about, "about")
+    return X_P(-c) @ rot(theta) @ X_P(c)
 
 
 def crm(v) -> np.ndarray:
@@ -244,10 +310,35 @@ def kinetic_energy(inertia, twist) -> np.ndarray:
 
     >>> float(kinetic_energy(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 3.0]))
     11.25
+
+    Raises
+    ------
+    InputError
+        ``inertia`` is not symmetric.
+    SingularInertiaError
+        ``inertia`` has a negative eigenvalue (beyond rounding,
+        :data:`planargeo._validate.PSD_RTOL`): no inertia, the energy could be
+        negative.  Singular (positive semi-definite) inertias such as point
+        masses are accepted.
+
+    >>> kinetic_energy(np.diag([1.0, 1.0, -1.0]), [0.0, 0.0, 1.0])
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.SingularInertiaError: inertia must be positive semi-definite, got smallest eigenvalue -1 (condition number inf)
     """
-    I = as_array(inertia, "inertia", (3, 3))
+    I = _inertia_psd(inertia)
     v = as_vec3(twist, "twist")
+    return _kinetic_energy(I, v)
+
+
+def _kinetic_energy(I: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """``½ vᵀ I v`` on arrays already checked (the unchecked kernel)."""
     return np.asarray(0.5 * np.einsum("...i,...ij,...j->...", v, I, v))
+
+
+def _inertia_psd(inertia, name: str = "inertia") -> np.ndarray:
+    """An inertia argument: (..., 3, 3), finite, symmetric, positive semi-definite."""
+    return check_positive_semidefinite(as_mat3(inertia, name), name)
 
 
 # ---------------------------------------------------------------------------
@@ -362,7 +453,13 @@ def inertia_at(inertia, point) -> np.ndarray:
     ``I_P = X_P⁻ᵀ I X_P⁻¹``: twists at ``P`` are taken back to the origin
     (``X_P⁻¹``), mapped to momenta, and the momenta carried to ``P`` with
     ``X_P⁻ᵀ`` (4.24).  Consequently ``inertia_at(inertia_matrix(m, c, J), P)
-    == inertia_matrix(m, c - P, J)``.
+    == inertia_matrix(m, c - P, J)``.  For a rotation as well see
+    :func:`inertia_transform` (passive) and :func:`inertia_rotated` (active).
+
+    Raises
+    ------
+    InputError, SingularInertiaError
+        ``inertia`` not symmetric positive semi-definite (see :func:`kinetic_energy`).
 
     Examples
     --------
@@ -371,9 +468,88 @@ def inertia_at(inertia, point) -> np.ndarray:
            [0. , 2. , 0. ],
            [0. , 0. , 0.5]])
     """
-    I = as_mat3(inertia, "inertia")
-    W = X_P_inv_T(point)
+    return _congruence(X_P_inv_T(point), _inertia_psd(inertia))
+
+
+def _congruence(W: np.ndarray, I: np.ndarray) -> np.ndarray:
+    """``W I Wᵀ`` (thesis 1.68 with ``W = (_A X_B)ᵀ``), symmetric by construction."""
     return W @ I @ np.swapaxes(W, -1, -2)
+
+
+def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
+    """Inertia in the frame of :func:`X_frame`: ``I_B = X⁻ᵀ I X⁻¹`` (thesis 1.68).
+
+    With ``_B X_A = X_frame(θ, p)`` (translation to ``p`` then rotation by
+    ``θ``, 1.56 projected), 1.68 reads ``I_B = (_A X_B)ᵀ I_A (_A X_B)`` with
+    ``_A X_B = X⁻¹``, i.e. ``I_B = W I Wᵀ`` with ``W = X_frame_inv_T(θ, p)
+    = rot(θ) X_P⁻ᵀ(p)``.  Twists and wrenches transformed by ``X`` and ``X⁻ᵀ``
+    then give the same momenta and kinetic energy.  ``theta = 0`` is
+    :func:`inertia_at`; for a rigid body ``I_B = inertia_matrix(m, rot₂(θ) (c - p), J)``.
+
+    Parameters
+    ----------
+    inertia : array_like (..., 3, 3)
+        Symmetric positive semi-definite (rigid-body or articulated) inertia.
+    theta : array_like (...)
+    point : array_like (..., 2)
+
+    Raises
+    ------
+    InputError, SingularInertiaError
+        ``inertia`` not symmetric positive semi-definite (see :func:`kinetic_energy`).
+
+    Examples
+    --------
+    A body centred at ``(1, 0)`` seen from a frame at the origin turned by
+    -90° (``θ = 90°``): its centre is at ``(0, 1)`` there.
+
+    >>> np.round(inertia_transform(inertia_matrix(2.0, [1.0, 0.0], 0.5), np.pi / 2), 12) + 0.0
+    array([[ 2. ,  0. , -2. ],
+           [ 0. ,  2. ,  0. ],
+           [-2. ,  0. ,  2.5]])
+    """
+    return _congruence(X_frame_inv_T(theta, point), _inertia_psd(inertia))
+
+
+def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
+    """Inertia of the body turned by ``theta`` about ``about`` (thesis 1.68 with :func:`rotation_about`).
+
+    The active counterpart of :func:`inertia_transform`, matching
+    :meth:`Twist.rotated`: with ``M = rotation_about(θ, c)`` carrying twists,
+    ``I' = M⁻ᵀ I M⁻¹`` so that ``I' (M v) = M⁻ᵀ (I v)`` (the momentum is
+    carried along) and ``½ (M v)ᵀ I' (M v) = ½ vᵀ I v``.  For a rigid body the
+    centre of mass turns about ``c`` and ``m``, ``J`` are unchanged.  About the
+    origin this is ``rot(θ) I rot(θ)ᵀ``, also 1.68 for the pure rotation
+    ``X = rot(θ)`` (:func:`inertia_transform` with ``point = (0, 0)``).
+
+    Parameters
+    ----------
+    inertia : array_like (..., 3, 3)
+        Symmetric positive semi-definite (rigid-body or articulated) inertia.
+    theta : array_like (...)
+    about : array_like (..., 2), optional
+        Centre of the rotation (default the origin).
+
+    Raises
+    ------
+    InputError, SingularInertiaError
+        ``inertia`` not symmetric positive semi-definite (see :func:`kinetic_energy`).
+
+    Examples
+    --------
+    A body centred at ``(2, 0)`` turned by 90° about ``(1, 0)``: centred at ``(1, 1)``.
+
+    >>> I = inertia_rotated(inertia_matrix(2.0, [2.0, 0.0], 0.5), np.pi / 2, about=[1.0, 0.0])
+    >>> np.allclose(I, inertia_matrix(2.0, [1.0, 1.0], 0.5))
+    True
+    """
+    return _inertia_rotated(_inertia_psd(inertia), theta, about)
+
+
+def _inertia_rotated(I: np.ndarray, theta, about) -> np.ndarray:
+    """:func:`inertia_rotated` without the inertia check (the unchecked kernel)."""
+    c = as_xy(about, "about")
+    return _congruence(X_P_inv_T(-c) @ rot(theta) @ X_P_inv_T(c), I)
 
 
 def momentum(inertia, twist) -> np.ndarray:
@@ -386,8 +562,13 @@ def momentum(inertia, twist) -> np.ndarray:
     --------
     >>> momentum(inertia_matrix(1.0, [0.0, 0.0], 1.0), [1.0, 0.0, 0.0])
     array([1., 0., 0.])
+
+    Raises
+    ------
+    InputError, SingularInertiaError
+        ``inertia`` not symmetric positive semi-definite (see :func:`kinetic_energy`).
     """
-    I = as_mat3(inertia, "inertia")
+    I = _inertia_psd(inertia)
     v = as_vec3(twist, "twist")
     return np.einsum("...ij,...j->...i", I, v)
 
@@ -406,8 +587,8 @@ def kappa(twist, s, qd) -> np.ndarray:
 
     For one column (and for columns that commute, e.g. two translations) this
     is the printed ``v × s q̇`` of 2.19/4.61; for a multi-dof joint the printed
-    form drops the cross terms (see ``docs/errata.md``, 4.77, and
-    ``docs/errata.md`` §1).  Agrees with
+    form drops the cross terms (see ``docs/errata.md``: 4.77, and
+    Kinematics §1, (2.19)/(3.33)).  Agrees with
     :func:`planargeo.kinematics.kinematics` (``Data.kappa``).
 
     Parameters
@@ -493,8 +674,13 @@ def bias_force(inertia, twist, g=None) -> np.ndarray:
 
     >>> bias_force(inertia_matrix(1.0, [2.0, 0.0], 1.0), [0.0, 0.0, 1.0])   # m l ω² = 2 towards the origin
     array([-2.,  0.,  0.])
+
+    Raises
+    ------
+    InputError, SingularInertiaError
+        ``inertia`` not symmetric positive semi-definite (see :func:`kinetic_energy`).
     """
-    I = as_mat3(inertia, "inertia")
+    I = _inertia_psd(inertia)
     v = as_vec3(twist, "twist")
     out = np.einsum("...ij,...jk,...k->...i", crf(v), I, v)
     if g is not None:
@@ -567,15 +753,29 @@ class _Screw:
 
     __hash__ = None
 
-    def rotated(self, theta):
-        """The screw rotated by ``theta`` about the reference point (matrix :func:`rot`).
+    def rotated(self, theta, about=None):
+        """The screw turned by ``theta`` about ``about`` (default the reference point, matrix :func:`rot`).
+
+        Twists are carried by :func:`rotation_about` ``M``, wrenches by
+        ``M⁻ᵀ``, so power is unchanged; about the reference point both are
+        :func:`rot`.  Inertias turn with :meth:`planargeo.inertia.Inertia.rotated`.
 
         Examples
         --------
         >>> Twist.rotation([1.0, 0.0]).rotated(np.pi / 2).pole_xy.round(12)   # the pole turns with it
         array([0., 1.])
+        >>> Wrench.force([2.0, 0.0], [0.0, 1.0]).rotated(np.pi, about=[1.0, 0.0]).line.array.round(12) + 0.0
+        array([ 0., -1.,  0.])
         """
-        return type(self)(np.einsum("...ij,...j->...i", rot(theta), self._array))
+        if about is None:
+            M = rot(theta)
+        else:
+            c = as_xy(about, "about")
+            if isinstance(self, Wrench):
+                M = X_P_inv_T(-c) @ rot(theta) @ X_P_inv_T(c)
+            else:
+                M = X_P(-c) @ rot(theta) @ X_P(c)
+        return type(self)(np.einsum("...ij,...j->...i", M, self._array))
 
 
 class Twist(_Screw):

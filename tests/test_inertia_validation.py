@@ -87,3 +87,37 @@ def test_mobility_rejects_indefinite_and_singular():
         mobility(inertia_matrix(1.0, [0.5, 0.0], 0.0))
     # hand: at the centre of mass I = diag(m, m, J), so I⁻¹ = diag(1/m, 1/m, 1/J)
     np.testing.assert_allclose(mobility(inertia_matrix(4.0, [0.0, 0.0], 0.25)), np.diag([0.25, 0.25, 4.0]))
+
+
+# ----------------------------------------------------------------------------- rigid-body structure (thesis 4.58)
+@pytest.mark.parametrize("M, got", [
+    (np.diag([1.0, 2.0, 1.0]), r"matrix\[0, 0\] = 1, matrix\[1, 1\] = 2, matrix\[0, 1\] = 0"),
+    ([[1.0, 0.2, 0.0], [0.2, 1.0, 0.0], [0.0, 0.0, 1.0]], r"matrix\[0, 0\] = 1, matrix\[1, 1\] = 1, matrix\[0, 1\] = 0\.2"),
+    (np.stack([np.eye(3), np.diag([3.0, 1.0, 1.0])]), r"matrix\[0, 0\] = 3, matrix\[1, 1\] = 1"),
+])
+def test_inertia_class_requires_rigid_body_structure(M, got):
+    # symmetric positive definite, but not m 1 in the linear block: no mass or centre of mass to report
+    assert np.linalg.eigvalsh(np.asarray(M)).min() > 0
+    with pytest.raises(InputError, match=r"^matrix must be a rigid-body inertia \(matrix\[0, 0\] == matrix\[1, 1\] == mass "
+                                         r"and matrix\[0, 1\] == 0, thesis 4\.58\), got " + got):
+        Inertia(M)
+
+
+def test_articulated_inertias_stay_plain_arrays():
+    # an articulated inertia (symmetric positive definite, no rigid-body structure) works with the functions
+    A = np.array([[2.0, 0.3, 0.0], [0.3, 1.0, 0.5], [0.0, 0.5, 1.0]])
+    f = percussion_axis(A, [0.0, 0.0, 1.0])
+    np.testing.assert_allclose(f, A[:, 2])
+    np.testing.assert_allclose(percussion_pole(A, f), [0.0, 0.0, 1.0], atol=1e-14)
+
+
+def test_rigid_structure_survives_frame_changes_and_sums():
+    I = Inertia.from_mass(2.0, [1.0, -3.0], radius_of_gyration=0.7)
+    for theta in np.linspace(-7.0, 7.0, 29):                       # rounding in cos² + sin² is tolerated
+        B = I.rotated(theta, about=[0.3, 2.0]).at([-1.0, 5.0])
+        assert float(B.mass) == pytest.approx(2.0) and float(B.radius_of_gyration) == pytest.approx(0.7)
+    assert float((I + I.rotated(1.0)).mass) == pytest.approx(4.0)
+    # a tiny body is judged relative to its own size
+    Inertia(1e-12 * inertia_matrix(2.0, [1.0, -3.0], 0.98))
+    with pytest.raises(InputError, match="matrix must be a rigid-body inertia"):
+        Inertia(1e-12 * np.diag([1.0, 1.001, 1.0]))
