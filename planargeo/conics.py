@@ -194,6 +194,14 @@ class ConicType:
     is_circle : bool
         An ellipse (real or imaginary) whose quadratic part is isotropic.
     rank : int
+
+    Examples
+    --------
+    >>> t = classify(conic_ellipse([0.0, 0.0], [2.0, 1.0]))
+    >>> t
+    ConicType(reality='real', kind='ellipse', is_circle=False, rank=3)
+    >>> str(t), str(classify(conic_circle([1.0, 0.0], 2.0, imaginary=True)))   # like an inertia
+    ('real ellipse', 'imaginary circle')
     """
 
     reality: str
@@ -730,6 +738,26 @@ class AffineFrame:
     Unit curves: ``"ellipse"``: ``u1² + u2² = 1`` (``u = (cos s, sin s)``);
     ``"hyperbola"``: ``u1² - u2² = 1`` (``u = (±cosh s, sinh s)``, two
     branches); ``"parabola"``: ``u2 = u1²`` (``u = (s, s²)``).
+
+    Attributes
+    ----------
+    kind : str
+        ``"ellipse"``, ``"hyperbola"`` or ``"parabola"``.
+    A : ndarray (2, 2)
+    t : ndarray (2,)
+
+    Examples
+    --------
+    A hyperbola centred at ``(0, 1)`` with semi-axes 2 and 1: a point of the
+    unit hyperbola mapped by ``(A, t)`` lies on it.
+
+    >>> C = conic_hyperbola([0.0, 1.0], [2.0, 1.0])
+    >>> F = affine_frame(C)
+    >>> F.kind, F.t + 0.0
+    ('hyperbola', array([0., 1.]))
+    >>> x = F.A @ [np.cosh(0.5), np.sinh(0.5)] + F.t
+    >>> bool(abs(conic_residual(C, [x[1], -x[0], 1.0])) < 1e-12)
+    True
     """
 
     kind: str

@@ -5,6 +5,10 @@ Each wraps one read-only array in the package's homogeneous coordinates
 ``Conic.matrix``: symmetric 3×3), validated in the constructor.  All the
 mathematics lives in :mod:`planargeo.projective` and :mod:`planargeo.conics`.
 
+Single values only: each object is *one* point, line or conic (a batch such as
+shape ``(n, 3)`` raises :class:`~planargeo.errors.ShapeError`).  For many at
+once use the array functions, which broadcast over leading dimensions.
+
 Equality is projective: two points (lines, conics) are equal when their
 arrays are proportional (any non-zero factor, either sign), up to a relative
 tolerance of 1e-12.  The classes are therefore not hashable.
@@ -66,7 +70,9 @@ class Point:
     ----------
     array : array_like, shape (3,)
         Homogeneous coordinates ``[y, -x, w]`` (any non-zero multiple);
-        ``w = 0`` is a point at infinity.
+        ``w = 0`` is a point at infinity.  Single values only: a batch
+        ``(..., 3)`` raises :class:`~planargeo.errors.ShapeError`; the functions
+        of :mod:`planargeo.projective` broadcast.
 
     Examples
     --------
@@ -177,6 +183,9 @@ class Line:
     array : array_like, shape (3,)
         ``[fx, fy, tz]``: the points ``(x, y)`` with ``tz + y fx - x fy = 0``,
         directed along ``(fx, fy)``.  ``[0, 0, 1]`` is the line at infinity.
+        Single values only: a batch ``(..., 3)`` raises
+        :class:`~planargeo.errors.ShapeError`; the functions of
+        :mod:`planargeo.projective` broadcast.
 
     Examples
     --------
@@ -288,6 +297,9 @@ class Conic:
     Parameters
     ----------
     matrix : array_like, shape (3, 3), symmetric
+        Single values only: a batch ``(..., 3, 3)`` raises
+        :class:`~planargeo.errors.ShapeError`; the functions of
+        :mod:`planargeo.conics` broadcast.
 
     Examples
     --------

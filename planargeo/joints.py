@@ -268,6 +268,10 @@ class JointSpace:
     :func:`revolute`, :func:`prismatic`, :func:`revolute_prismatic`,
     :func:`plane`, :func:`fixed` (or ``JointSpace(kind, point, direction)``).
 
+    Single joints only: ``point`` and ``direction`` must have shape ``(2,)``
+    (a batch raises :class:`~planargeo.errors.ShapeError`).  For many joints
+    at once use :func:`motion_space` / :func:`reaction_space`, which broadcast.
+
     Attributes
     ----------
     kind : str
@@ -315,11 +319,66 @@ class JointSpace:
     def __setattr__(self, name, value):
         raise AttributeError(f"JointSpace is frozen; cannot set {name!r}")
 
-    kind = property(lambda self: self._kind, doc="Joint kind.")
-    point = property(lambda self: self._point, doc="Pivot / point on the slide, shape (2,).")
-    direction = property(lambda self: self._direction, doc="Unit slide direction or None.")
-    s = property(lambda self: self._s, doc="Motion space (3, k), unit twists at the origin.")
-    R = property(lambda self: self._R, doc="Reaction space (3, 3-k), unit wrenches at the origin.")
+    @property
+    def kind(self) -> str:
+        """Joint kind, one of :data:`KINDS`.
+
+        Examples
+        --------
+        >>> revolute((1.0, 2.0)).kind
+        'revolute'
+        """
+        return self._kind
+
+    @property
+    def point(self) -> np.ndarray:
+        """The joint's point, shape (2,), read-only: pivot / point on the slide / joint-frame origin / weld point.
+
+        Examples
+        --------
+        >>> prismatic((0.0, 1.0), point=(3.0, 0.0)).point
+        array([3., 0.])
+        """
+        return self._point
+
+    @property
+    def direction(self) -> np.ndarray | None:
+        """Unit slide direction, shape (2,), read-only (prismatic kinds, plane), else ``None``.
+
+        Examples
+        --------
+        >>> prismatic((3.0, 4.0)).direction
+        array([0.6, 0.8])
+        >>> revolute().direction is None
+        True
+        """
+        return self._direction
+
+    @property
+    def s(self) -> np.ndarray:
+        """Motion space ``s``, shape (3, k), read-only: unit twists at the origin as columns (thesis 4.64-4.79).
+
+        Examples
+        --------
+        >>> revolute((2.0, 0.0)).s                 # rotation about (2, 0): the point [y, -x, 1]
+        array([[ 0.],
+               [-2.],
+               [ 1.]])
+        """
+        return self._s
+
+    @property
+    def R(self) -> np.ndarray:
+        """Reaction space ``R``, shape (3, 3 - k), read-only: unit wrenches at the origin, ``sᵀR = 0`` (thesis 5.63, 6.1).
+
+        Examples
+        --------
+        >>> revolute((2.0, 0.0)).R                 # unit forces along x and y through (2, 0)
+        array([[1., 0.],
+               [0., 1.],
+               [0., 2.]])
+        """
+        return self._R
 
     @property
     def dof(self) -> int:
@@ -349,6 +408,9 @@ class JointSpace:
 def revolute(point=(0.0, 0.0)) -> JointSpace:
     """Revolute (pin) joint about ``point`` (thesis 4.64): ``s`` = the point ``[y, -x, 1]``.
 
+    One joint: ``point`` of shape ``(2,)`` (like every joint constructor;
+    :func:`motion_space` / :func:`reaction_space` broadcast).
+
     Examples
     --------
     >>> revolute((0.0, 0.0)).s.ravel()          # thesis 4.64
@@ -360,6 +422,8 @@ def revolute(point=(0.0, 0.0)) -> JointSpace:
 def prismatic(direction=(1.0, 0.0), point=(0.0, 0.0)) -> JointSpace:
     """Prismatic (slider) joint along ``direction`` through ``point`` (thesis 4.69, 5.62, 5.63).
 
+    One joint: ``direction`` and ``point`` of shape ``(2,)``.
+
     Examples
     --------
     >>> np.round(prismatic((1.0, 1.0)).s.ravel(), 4)
@@ -370,6 +434,8 @@ def prismatic(direction=(1.0, 0.0), point=(0.0, 0.0)) -> JointSpace:
 
 def revolute_prismatic(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Two-dof pin-in-slot joint: slide along ``direction``, turn about ``point`` (thesis 4.74).
+
+    One joint: ``point`` and ``direction`` of shape ``(2,)``.
 
     Examples
     --------
@@ -386,7 +452,8 @@ def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 
     The columns follow the package's ``Model`` joint ``"plane"`` (translations
     along the joint frame's x and y axes, then rotation about its origin); with
-    the defaults ``s`` is the identity.  ``R`` is empty.
+    the defaults ``s`` is the identity.  ``R`` is empty.  One joint: ``point``
+    and ``direction`` of shape ``(2,)``.
 
     Examples
     --------
@@ -402,6 +469,8 @@ def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 
 def fixed(point=(0.0, 0.0)) -> JointSpace:
     """Weld (0-dof) at ``point``: ``s`` is empty, ``R`` = forces through ``point`` along x, y and a couple (thesis 6.10).
+
+    One joint: ``point`` of shape ``(2,)``.
 
     Examples
     --------

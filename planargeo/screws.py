@@ -1110,6 +1110,19 @@ class TwistSum:
         ``n`` the translation direction turned by +90°.
     line : ndarray (3,) or None
         Join of ``Q1`` and ``Q2`` (None when they coincide).
+
+    Examples
+    --------
+    A unit rotation about the origin plus a translation along y at 2
+    (thesis 4.16): a rotation about the pole shifted by ``ρ = u/ω = 2``
+    along ``n = (-1, 0)``, i.e. about ``(-2, 0)``.
+
+    >>> c = add_twists(Twist.rotation([0.0, 0.0], 1.0), Twist.translation([0.0, 2.0]))
+    >>> c.case, c.rho, c.sum
+    ('rotation_translation', 2.0, Twist([0., 2., 1.]))
+    >>> from planargeo.projective import to_xy
+    >>> to_xy(c.P)
+    array([-2.,  0.])
     """
 
     v1: Twist
@@ -1129,6 +1142,10 @@ class TwistSum:
 
 def add_twists(v1, v2, rtol: float = 1e-12) -> TwistSum:
     """Add two twists and describe the construction (thesis 4.11-4.16).
+
+    Single twists only (a construction is one drawing): a batch raises
+    :class:`~planargeo.errors.ShapeError`; for many sums add the arrays (or
+    ``Twist`` batches) directly.
 
     Parameters
     ----------
@@ -1211,6 +1228,17 @@ class WrenchSum:
         ``n = (sin λ, -cos λ)`` of ``f1``'s direction ``λ`` (parallel case, 4.43-4.45).
     rho : float or None
         Shift ``τ/F`` of 4.46 (force + couple), along the force's normal ``n`` (4.32).
+
+    Examples
+    --------
+    A unit force along the x axis plus a couple of 2 (thesis 4.46): the force
+    shifted by ``ρ = τ/F = 2`` along ``n = (0, -1)``, onto the line ``y = -2``.
+
+    >>> c = add_wrenches(Wrench.force([0.0, 0.0], [1.0, 0.0]), Wrench.couple(2.0))
+    >>> c.case, c.rho, c.L3
+    ('force_couple', 2.0, array([1., 0., 2.]))
+    >>> c.sum.line.foot
+    Point(x=0, y=-2)
     """
 
     f1: Wrench
@@ -1236,6 +1264,10 @@ def add_wrenches(f1, f2, rtol: float = 1e-12) -> WrenchSum:
 
     Two force lines are treated as parallel when
     ``|f1x f2y - f1y f2x| <= rtol F1 F2``.
+
+    Single wrenches only (a construction is one drawing): ``f1`` and ``f2``
+    must have shape ``(3,)`` (a batch raises :class:`~planargeo.errors.ShapeError`);
+    for many sums add the arrays (or ``Wrench`` batches) directly.
 
     Note: thesis 4.37 is misprinted (see ``docs/errata.md``); the meet
     point here is the exact ``L1 × L2``.

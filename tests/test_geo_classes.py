@@ -103,6 +103,8 @@ def test_conic_methods():
 def test_class_bad_input():
     with pytest.raises(ShapeError, match=r"array must have shape \(3,\), got shape \(2, 3\)"):
         Point(np.zeros((2, 3)))
+    with pytest.raises(ShapeError, match=r"^array must have shape \(3,\), got shape \(4, 3\)$"):
+        Line(np.ones((4, 3)))                                      # single values only (documented)
     with pytest.raises(NonFiniteError, match="array must be finite"):
         Line([np.nan, 0, 1])
     with pytest.raises(DegenerateGeometryError, match="array is the zero vector, which is no point"):

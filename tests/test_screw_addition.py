@@ -216,3 +216,8 @@ def test_bad_construction_inputs():
         add_wrenches([1.0, 0.0, 0.0], [0.0, 0.0, 0.0])
     with pytest.raises(ShapeError, match="f1 must have shape"):
         add_wrenches(np.ones((2, 3)), [1.0, 0.0, 0.0])
+    # single values only (documented): the constructions do not broadcast
+    with pytest.raises(ShapeError, match=r"^v2 must have shape \(3,\) for a construction, got shape \(2, 3\)$"):
+        add_twists([1.0, 0.0, 1.0], np.ones((2, 3)))
+    with pytest.raises(ShapeError, match=r"^f2 must have shape \(3,\) for a construction, got shape \(1, 3\)$"):
+        add_wrenches([1.0, 0.0, 0.0], np.ones((1, 3)))
