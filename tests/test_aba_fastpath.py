@@ -344,9 +344,67 @@ def test_batched_plan_without_coordinates():
 def test_batched_plan_source_reuses_rows():
     """The lowered plan writes every value into a preallocated row; rows are reused once their value is dead."""
     m = chain_model(10)
-    (kinds, parents, zero, _), _ = aba._plan_entry(m)
-    src, nreg = aba._batch_source(aba._plan_lines(kinds, parents, zero, False, False))
+    (kinds, parents, zero, checks, _), _ = aba._plan_entry(m)
+    src, nreg = aba._batch_source(aba._plan_lines(kinds, parents, zero, False, False, checks))
     calls = [line.strip() for line in src.splitlines()[3:] if line.strip().startswith(("mul(", "add(", "sub("))]
     assert len(calls) > 5 * nreg        # far fewer rows than values
     assert all(" = " not in c for c in calls)   # no temporaries: every call writes into a row
-    assert src.count("tan(") == 10 and "cos(" not in src and "sin(" not in src
+    assert src.count("sincos(") == 10 and "tan(" not in src   # cos and sin of each angle in one call
+
+
+def test_table_sine_and_cosine():
+    """The batched plan's cos/sin (table + short polynomials) agree with libm to about one unit in the last place."""
+    rng = np.random.default_rng(0)
+    h = 2 * np.pi / aba.TRIG_TABLE
+    x = np.concatenate([rng.uniform(-aba.TRIG_TABLE_RANGE, aba.TRIG_TABLE_RANGE, 20_000), rng.normal(size=20_000) * 3,
+                        np.arange(-3000, 3000) * h, (np.arange(-3000, 3000) + 0.5) * h,   # table points, midpoints
+                        [0.0, -0.0, np.pi, -np.pi, np.pi / 2, 1e-300, 0.999 * aba.TRIG_TABLE_RANGE]])
+    n = len(x)
+    c, s, K, R, Z = np.empty((5, n))
+    aba._sincos_table(x, c, s, K, R, Z, np.empty(n, np.int64))
+    assert np.abs(c - np.cos(x)).max() <= 2 * np.spacing(1.0)
+    assert np.abs(s - np.sin(x)).max() <= 2 * np.spacing(1.0)
+
+
+def test_batched_plan_large_angles_use_libm(monkeypatch):
+    """Angles beyond the table's range (here q ~ 1e5) take numpy's cos and sin; results as for single states."""
+    calls = []
+    monkeypatch.setattr(aba, "_sincos_numpy", lambda x, c, s: (calls.append(1), np.cos(x, c), np.sin(x, s)))
+    m = chain_model(4)
+    q, qd, tau, _ = _batch_state(m, (40,), 13)
+    q[7] *= 1e5
+    out = forward_dynamics(m, q, qd, tau)
+    assert calls
+    one = np.array([forward_dynamics(m, q[k], qd[k], tau[k]) for k in range(40)])
+    assert _rel(out, one) < 1e-13
+
+
+@given(st.integers(1, 8), st.integers(0, 10_000), st.booleans())
+def test_property_left_out_singularity_tests_cannot_fail(n, seed, tree):
+    """Where the plan leaves a joint's singularity test out, the test provably passes: try hard to make it fail.
+
+    Extreme masses, inertias down to zero, coms on and off the joints, any angles: the plan with every
+    test kept never raises for a joint whose test was left out.
+    """
+    rng = np.random.default_rng(seed)
+    bodies, joints, parents = [], [], []
+    for i in range(n):
+        mass = 10.0 ** rng.uniform(-6, 6)
+        com = tuple(rng.uniform(-1, 1, 2) * rng.choice([0.0, 1e-6, 1.0, 10.0]))
+        bodies.append(Body(mass, com, mass * rng.choice([0.0, 1e-9, 1.0]) * rng.uniform(0, 1)))
+        joints.append(Joint(str(rng.choice(["revolute", "revolute", "fixed", "prismatic"])),
+                            tuple(rng.uniform(-1, 1, 3) * [rng.choice([0.0, 1e-6, 1.0, 100.0])] * 2 + [3.0])))
+        parents.append(int(rng.integers(-1, i)) if tree and i > 0 else i - 1)
+    m = Model(bodies, joints, parents)
+    if m.nq == 0:
+        return
+    (kinds, par, zero, checks, pack), C = aba._plan_entry(m)
+    ns = {}
+    exec(aba._plan_source(kinds, par, zero, False, pack, None), vars(aba), ns)   # every test kept
+    for k in range(20):
+        q = rng.normal(size=m.nq) * rng.choice([1.0, 100.0])
+        try:
+            ns["aba_plan"](C, q.tolist(), rng.normal(size=m.nq).tolist(), rng.normal(size=m.nq).tolist(), None)
+        except SingularConfigurationError as e:
+            joint = int(str(e).split(":")[0].split()[1])
+            assert checks[joint], f"joint {joint}'s test was left out but fails"

@@ -47,6 +47,7 @@ from __future__ import annotations
 import ast
 import math
 import re
+from fractions import Fraction
 
 import numpy as np
 
@@ -365,6 +366,8 @@ MAX_PLAN_BODIES = 400
 EAGER_PLAN_BODIES = 64
 #: plans for more bodies than this keep each body's values in a tuple between passes
 PACK_BODIES = 64
+#: a joint's singularity test is left out of the plan when proven to pass with this margin (see :func:`_checks`)
+PROVEN_RTOL = 1e-8
 _cos, _sin = math.cos, math.sin
 
 
@@ -379,12 +382,12 @@ def _packed(N):
     return N > PACK_BODIES
 
 
-def _plan_source(kinds, parents, zero, with_fext, pack=None):
+def _plan_source(kinds, parents, zero, with_fext, pack=None, checks=None):
     """Python source of thesis 3.6 for one state of one topology (see the comment above)."""
-    return "\n".join(_registers(_plan_lines(kinds, parents, zero, with_fext, pack))) + "\n"
+    return "\n".join(_registers(_plan_lines(kinds, parents, zero, with_fext, pack, checks))) + "\n"
 
 
-def _plan_lines(kinds, parents, zero, with_fext, pack=None):
+def _plan_lines(kinds, parents, zero, with_fext, pack=None, checks=None):
     """The plan as straight-line statements on uniquely named values, before :func:`_registers`.
 
     ``kinds``: 1 revolute, 2 prismatic, 0 fixed; ``zero``: which of the
@@ -451,6 +454,8 @@ def _plan_lines(kinds, parents, zero, with_fext, pack=None):
     names, gnames, bnames = [], [], [[] for _ in range(N)]
     if pack is None:
         pack = _packed(N)
+    if checks is None:
+        checks = (True,) * N
 
     def const(name, k, group):
         if zero[k]:
@@ -577,8 +582,9 @@ def _plan_lines(kinds, parents, zero, with_fext, pack=None):
         tr, _ = expr([[a00], [a11], [a22]])
         tr = tr or text(expr([[a00], [a11], [a22]])[1])
         if kind == 1:   # D = A_22, U = A[:, 2]
-            emit(f"    if not {text(a22)} > SINGULAR_RTOL * ({tr}):")
-            emit(f"        _singular_float({text(a22)}, {tr}, {i})")
+            if checks[i]:
+                emit(f"    if not {text(a22)} > SINGULAR_RTOL * ({tr}):")
+                emit(f"        _singular_float({text(a22)}, {tr}, {i})")
             emit(f"    Di{i} = 1.0 / {text(a22)}")
             Di = (False, f"Di{i}")
             W0, W1 = let(f"W0_{i}", [[a02, Di]]), let(f"W1_{i}", [[a12, Di]])
@@ -599,8 +605,9 @@ def _plan_lines(kinds, parents, zero, with_fext, pack=None):
                 U = [let(f"U{j}_{i}", [[A[IDX.index(tuple(sorted((j, 0))))], cs],
                                        [A[IDX.index(tuple(sorted((j, 1))))], ss]]) for j in range(3)]
                 D = let(f"D{i}", [[U[0], cs], [U[1], ss]])
-                emit(f"    if not {text(D)} > SINGULAR_RTOL * ({tr}):")
-                emit(f"        _singular_float({text(D)}, {tr}, {i})")
+                if checks[i]:
+                    emit(f"    if not {text(D)} > SINGULAR_RTOL * ({tr}):")
+                    emit(f"        _singular_float({text(D)}, {tr}, {i})")
                 emit(f"    Di{i} = 1.0 / {text(D)}")
                 Di = (False, f"Di{i}")
                 uu = let(f"u{i}", [[B["tau"]], [neg(cs), c[0]], [neg(ss), c[1]]])
@@ -652,16 +659,11 @@ def _plan_lines(kinds, parents, zero, with_fext, pack=None):
             a0 = let(f"a0_{i}", [[a0p], [neg(a2p), ry], [k0]])
             a1 = let(f"a1_{i}", [[a1p], [a2p, rx], [k1]])
             a02, a12, Di, uu = B["acc"]
-            src, atom = expr([[uu], [neg(a02), a0], [neg(a12), a1]])
-            if src is not None and a2p is not None:   # q̈ = D⁻¹ (u - Uᵀ a') - a'_2, one statement
-                emit(f"    qdd{i} = {text(Di)}*({src}) - {text(a2p)}")
-                qdd = (False, f"qdd{i}")
-            else:
-                qdd = let_scaled(f"qdd{i}", Di, [[uu], [neg(a02), a0], [neg(a12), a1]])
-                qdd = let(f"qdd{i}", [[qdd], [neg(a2p)]])
-            out.append(qdd)
+            # the body's angular acceleration a_2 = D⁻¹ (u - U_0 ā_0 - U_1 ā_1), and q̈ = a_2 - a'_2
+            a2 = let_scaled(f"a2_{i}", Di, [[uu], [neg(a02), a0], [neg(a12), a1]])
+            out.append(let(f"qdd{i}", [[a2], [neg(a2p)]]))
             if nchild[i]:
-                B["a"] = (a0, a1, let(f"a2_{i}", [[a2p], [qdd]]))
+                B["a"] = (a0, a1, a2)
         elif kind == 2:   # a0, a1: the parent's acceleration at o_i
             a0 = let(f"a0p_{i}", [[a0p], [neg(a2p), ry]])
             a1 = let(f"a1p_{i}", [[a1p], [a2p, rx]])
@@ -753,6 +755,41 @@ def _registers(lines):
     return out
 
 
+def _checks(model: Model, kinds) -> tuple:
+    """Which joints keep the singularity test in the plan: those where it is not proven to pass.
+
+    In exact arithmetic the articulated inertia lies between the body's own
+    inertia and the composite inertia of its subtree: at o_i, ``D = A_22 ≥ J_i +
+    m_i |c_i - o_i|²`` (revolute) or ``D = eᵀ A e ≥ m_i`` (prismatic), and ``trace A
+    ≤ 2 M + Σ J_k + M ρ²`` with ``M`` the subtree's mass and ``ρ`` a bound on the
+    distance from o_i to its centres of mass.  With only revolute and fixed joints
+    below body i, ``ρ`` is a constant (sums of placement lengths); if then the lower
+    bound on ``D`` exceeds ``PROVEN_RTOL`` (10⁵ × SINGULAR_RTOL, far above rounding
+    errors) times the upper bound on the trace, the test can never fail for any
+    finite state and is left out.  Joints whose test can fail (a point mass on its
+    own joint, prismatic joints below...) keep it.
+    """
+    N = model.N
+    mass, jsum, reach, rigid = [0.0] * N, [0.0] * N, [0.0] * N, [True] * N
+    for i in range(N - 1, -1, -1):   # children come after their parents
+        b = model.bodies[i]
+        mass[i] += b.mass
+        jsum[i] += b.inertia
+        reach[i] = max(reach[i], math.hypot(*b.com))
+        p = model.parents[i]
+        if p >= 0:
+            mass[p] += mass[i]
+            jsum[p] += jsum[i]
+            reach[p] = max(reach[p], math.hypot(*model.joints[i].placement[:2]) + reach[i])
+            rigid[p] = rigid[p] and rigid[i] and kinds[i] != 2
+    checks = []
+    for i, (b, kind) in enumerate(zip(model.bodies, kinds)):
+        low = b.mass if kind == 2 else b.inertia + b.mass * (b.com[0] ** 2 + b.com[1] ** 2)
+        high = 2.0 * mass[i] + jsum[i] + mass[i] * reach[i] ** 2
+        checks.append(kind != 0 and not (rigid[i] and low > PROVEN_RTOL * high))
+    return tuple(checks)
+
+
 def _plan_constants(model: Model):
     """``(key, constants)`` of the compiled single-state plan, or None if a joint kind is unsupported."""
     kinds = []
@@ -766,7 +803,7 @@ def _plan_constants(model: Model):
         C += [float(x) for x in j.placement] + [m, m * cx, m * cy, J + m * (cx * cx + cy * cy)]
     zero = tuple(c == 0.0 for c in C)
     pack = _packed(model.N)
-    key = (tuple(kinds), tuple(model.parents), zero, pack)
+    key = (tuple(kinds), tuple(model.parents), zero, _checks(model, kinds), pack)
     if not pack:
         return key, tuple(c for c in C if c != 0.0)
     groups = [C[:2]] + [C[2 + 7 * i:9 + 7 * i] for i in range(model.N)]
@@ -809,8 +846,8 @@ def _plan(model: Model, with_fext: bool, force: bool = False):
             return None
         if len(_PLANS) >= 256:
             _PLANS.clear()
-        kinds, parents, zero, pack = key
-        src = _plan_source(kinds, parents, zero, with_fext, pack)
+        kinds, parents, zero, checks, pack = key
+        src = _plan_source(kinds, parents, zero, with_fext, pack, checks)
         ns: dict = {}
         exec(compile(src, f"<aba plan N={len(key[0])}>", "exec"), globals(), ns)
         fn = _PLANS[fkey] = ns["aba_plan"]
@@ -830,13 +867,13 @@ _ndarray, _F64, _array, _isfinite = np.ndarray, np.dtype(np.float64), np.array, 
 # computed once per block.  A linear scan over the ufunc calls assigns each value a
 # row of one work array ``W``, reusing a row as soon as its value is dead (an
 # operand's row may be the result's: elementwise ufuncs allow that).  The batch is
-# cut into blocks of ``BATCH_CHUNK`` states, so the live rows of a block stay in
-# the cache; each block's inputs are transposed into rows once, and its ``q̈`` rows
-# written back as columns.
+# cut into equal blocks of at most ``BATCH_CHUNK`` states (fewer if the work rows
+# would take more than ``BATCH_BYTES``): fewer, longer calls cost less Python and
+# numpy overhead per state, shorter rows stay in the cache.  A block's inputs are
+# read, and its ``q̈`` written, in place as strided rows (columns of the batch).
 #
-# ``cos`` and ``sin`` of an angle come from one libm call, ``t = tan(θ/2)``:
-# ``cos θ = 2/(1 + t²) - 1``, ``sin θ = t · 2/(1 + t²)`` (|t| ≤ 1.7e16 for any
-# finite double, so nothing overflows; the absolute error stays at rounding level).
+# ``cos`` and ``sin`` of an angle (libm's take ~10 ns each per state, as much as
+# 30 multiplications) come together from a table (see :func:`_sincos_table`).
 #
 # The singularity test ``D > SINGULAR_RTOL · trace`` becomes ``D - SINGULAR_RTOL ·
 # trace > 0`` (equivalent for floats), its minimum kept in one row and tested once
@@ -846,22 +883,79 @@ _ndarray, _F64, _array, _isfinite = np.ndarray, np.dtype(np.float64), np.array, 
 # inputs overflow), the batch is run again by the general component path
 # (:func:`_aba_components`), which returns its non-finite values with numpy's warnings.
 _BATCH_PLANS: dict = {}
-#: states per block of a batched plan
-BATCH_CHUNK = 4096
+#: states per block of a batched plan, and the most bytes of work rows a block may use
+BATCH_CHUNK = 8192
+BATCH_BYTES = 8 << 20
 _UFUNC_NS = {"add": np.add, "sub": np.subtract, "mul": np.multiply, "div": np.divide, "neg": np.negative,
-             "tan": np.tan, "minimum": np.minimum, "copyto": np.copyto,
+             "minimum": np.minimum, "copyto": np.copyto,
              "_mcos": math.cos, "_msin": math.sin, "SINGULAR_RTOL": SINGULAR_RTOL}
 _BINOPS = {ast.Add: ("add", "+"), ast.Sub: ("sub", "-"), ast.Mult: ("mul", "*"), ast.Div: ("div", "/")}
 _CHECK = re.compile(r"if not (.+) > SINGULAR_RTOL \* \((.+)\):$")
 
 
+#: entries of the sine and cosine tables of :func:`_sincos_table`, and the angles it serves
+TRIG_TABLE = 4096
+TRIG_TABLE_RANGE = 1e4
+_TRIG_H = 2 * Fraction("3.14159265358979323846264338327950288419716939937510582097494459") / TRIG_TABLE
+_TRIG_H1 = math.ldexp(round(math.ldexp(_TRIG_H, 39)), -39)   # 29 significant bits: k H1 exact for |k| < 2^24
+_TRIG_H2 = float(_TRIG_H - Fraction(_TRIG_H1))               # H1 + H2 = 2π/TRIG_TABLE to ~1e-28
+_TRIG_ANGLES = np.arange(TRIG_TABLE, dtype=np.longdouble) * (np.longdouble(_TRIG_H1) + np.longdouble(_TRIG_H2))
+_TRIG_COS, _TRIG_SIN = np.cos(_TRIG_ANGLES).astype(float), np.sin(_TRIG_ANGLES).astype(float)
+_TRIG_INV_H = float(1 / _TRIG_H)
+
+
+def _sincos_table(x, c, s, K, R, Z, I):   # noqa: E741
+    """``c = cos x``, ``s = sin x`` on rows, for ``|x| < TRIG_TABLE_RANGE``; ``K, R, Z`` float, ``I`` int64 scratch rows.
+
+    ``x = k h + r`` with ``h = 2π/TRIG_TABLE``, ``k`` the nearest integer and
+    ``|r| ≤ h/2 ≈ 0.00077`` (Cody–Waite: ``k h`` in two parts, the first exact);
+    ``cos r = 1 - r²/2 + r⁴/24`` and ``sin r = r (1 - r²/6)`` (truncation below
+    3e-18), then ``cos x = C_k cos r - S_k sin r``, ``sin x = S_k cos r + C_k sin r``
+    with the tabulated ``C_k, S_k`` (rounded from extended precision).  24
+    elementwise operations (two table lookups), against ~10 ns per value for each
+    of libm's ``cos`` and ``sin``; agrees with them to about one unit in the last place.
+    """
+    mul, sub, add = np.multiply, np.subtract, np.add
+    mul(x, _TRIG_INV_H, K)
+    np.rint(K, K)
+    mul(K, _TRIG_H1, R)
+    sub(x, R, R)
+    mul(K, _TRIG_H2, Z)
+    sub(R, Z, R)                                   # r
+    np.copyto(I, K, casting="unsafe")
+    np.bitwise_and(I, TRIG_TABLE - 1, I)           # k mod TRIG_TABLE
+    mul(R, R, Z)                                   # r²
+    mul(Z, -1.0 / 6.0, K)
+    add(K, 1.0, K)
+    mul(K, R, R)                                   # sin r
+    mul(Z, 1.0 / 24.0, K)
+    sub(K, 0.5, K)
+    mul(K, Z, K)
+    add(K, 1.0, Z)                                 # cos r
+    np.take(_TRIG_COS, I, out=c, mode="clip")      # (in range: "clip" skips the bounds check)
+    np.take(_TRIG_SIN, I, out=s, mode="clip")
+    mul(c, R, K)                                   # C_k sin r
+    mul(c, Z, c)
+    mul(s, R, R)                                   # S_k sin r
+    mul(s, Z, s)
+    add(s, K, s)
+    sub(c, R, c)
+
+
+def _sincos_numpy(x, c, s):
+    """``c = cos x``, ``s = sin x`` on rows by numpy (libm), for angles beyond the table's range."""
+    np.cos(x, c)
+    np.sin(x, s)
+
+
 def _batch_source(lines):
     """Python source of the plan ``lines`` (see :func:`_plan_lines`) on rows: ``(source, number of work rows)``.
 
-    The function ``aba_batch(C, q, qd, tau, fe, W, out)`` takes the constants
-    ``C`` (as for the plan), the inputs as sequences of rows (``fe``: ``3 N``
-    rows, x, y, moment of each body), the work rows ``W`` and the ``q̈`` rows
-    ``out``; it returns False if the singularity test fails.
+    The function ``aba_batch(C, q, qd, tau, fe, W, out, sincos)`` takes the
+    constants ``C`` (as for the plan), the inputs as sequences of rows (``fe``:
+    ``3 N`` rows, x, y, moment of each body), the work rows ``W``, the ``q̈`` rows
+    ``out`` and ``sincos(x, cos_out, sin_out)`` on rows; it returns False if the
+    singularity test fails.
     """
     # statements: ("let", target, rhs) / ("unpack", targets, source) / ("check", D, trace) / ("return", atoms)
     stmts = []
@@ -913,10 +1007,10 @@ def _batch_source(lines):
             fn = node.func.id[1:]   # _cos / _sin
             if not row:
                 return False, ("x", f"_m{fn}({'-' if n else ''}{x[1]})"), False
-            if x not in trig:   # both from t = tan(x/2): one libm call instead of two
-                t = op("tan", op("mul", x, ("x", "0.5")))
-                h = op("div", ("x", "2.0"), op("add", op("mul", t, t), ("x", "1.0")))   # 1 + cos x
-                trig[x] = (op("sub", h, ("x", "1.0")), op("mul", t, h))
+            if x not in trig:   # cos and sin together, into two rows
+                nval[0] += 2
+                items.append(("op", "sincos", (nval[0] - 1, nval[0]), (x,)))
+                trig[x] = (("v", nval[0] - 1), ("v", nval[0]))
             return (n and fn == "sin"), trig[x][fn == "sin"], True
         nl, l, rl = lower(node.left)
         nr, r, rr = lower(node.right)
@@ -987,22 +1081,28 @@ def _batch_source(lines):
             continue
         uf, dst, args = it[1], it[2], it[3]
         srcs = [name(a) for a in args]
-        for a in set(a[1] for a in args if a[0] == "v"):
-            if last[a] == j and not reg[a].startswith("o"):
-                free.append(reg[a])
+        dead = [reg[a] for a in set(a[1] for a in args if a[0] == "v") if last[a] == j and not reg[a].startswith("o")]
         if uf == "copyto":
             body.append(f"copyto({it[4]}, {srcs[0]})")
+            free += dead
             continue
-        if dst not in reg:
-            if free:
-                reg[dst] = free.pop()
-            else:
-                reg[dst] = f"w{nreg}"
-                nreg += 1
-            if dst not in last:   # never read (cannot happen after dead-code elimination)
-                free.append(reg[dst])
-        body.append(f"{uf}({', '.join(srcs)}, {'out=' if uf == 'minimum' else ''}{reg[dst]})")
-    head = ["def aba_batch(C, q, qd, tau, fe, W, out):"]
+        if uf != "sincos":   # one elementwise ufunc: the result may take an operand's row
+            free += dead
+        dsts = dst if uf == "sincos" else (dst,)
+        for d in dsts:
+            if d not in reg:
+                if free:
+                    reg[d] = free.pop()
+                else:
+                    reg[d] = f"w{nreg}"
+                    nreg += 1
+        free += [reg[d] for d in dsts if d not in last and d not in pinned]   # never read (a sine without its cosine)
+        if uf == "sincos":
+            free += dead
+            body.append(f"sincos({srcs[0]}, {reg[dst[0]]}, {reg[dst[1]]})")
+        else:
+            body.append(f"{uf}({', '.join(srcs)}, {'out=' if uf == 'minimum' else ''}{reg[dst]})")
+    head = ["def aba_batch(C, q, qd, tau, fe, W, out, sincos):"]
     if nreg:
         head.append("    " + ", ".join(f"w{r}" for r in range(nreg)) + ", = W")
     head.append("    " + ", ".join(f"o{k}" for k in range(len(outs))) + ", = out")
@@ -1011,55 +1111,58 @@ def _batch_source(lines):
 
 
 def _batch_plan(model: Model, with_fext: bool):
-    """The compiled batch function, its flat constants and number of work rows for ``model`` (cached), or None.
+    """The compiled batch function, its flat constants, number of work rows and placement-angle bound (or None).
 
     Available for the models the single-state plan covers (see :func:`_plan`).
     """
     entry = _plan_entry(model)
     if entry is None or model.nq == 0:
         return None
-    (kinds, parents, zero, pack), C = entry
+    (kinds, parents, zero, checks, pack), C = entry
     if pack:
         C = tuple(c for g in C for c in g)
-    fkey = (kinds, parents, zero, with_fext)
+    fkey = (kinds, parents, zero, checks, with_fext)
     entry = _BATCH_PLANS.get(fkey)
     if entry is None:
         if not _compile_now(model, "aba_batch_calls"):
             return None
         if len(_BATCH_PLANS) >= 256:
             _BATCH_PLANS.clear()
-        src, nreg = _batch_source(_plan_lines(kinds, parents, zero, with_fext, False))
+        src, nreg = _batch_source(_plan_lines(kinds, parents, zero, with_fext, False, checks))
         ns: dict = {}
         exec(compile(src, f"<aba batch plan N={len(kinds)}>", "exec"), dict(_UFUNC_NS), ns)
         entry = _BATCH_PLANS[fkey] = (ns["aba_batch"], nreg)
-    return entry[0], C, entry[1]
+    turn = model._arrays.get("aba_turn")
+    if turn is None:   # a bound on the placement angles' part of any body's angle
+        turn = model._arrays["aba_turn"] = sum(abs(j.placement[2]) for j in model.joints)
+    return entry[0], C, entry[1], turn
 
 
 def _batch(model: Model, plan, q, qd, tau, f_ext, shape):
     """A validated batch through the batched plan, block by block: ``q̈`` (..., nq), or None (see above)."""
-    fn, C, nreg = plan
+    fn, C, nreg, turn = plan
     nq, N = model.nq, model.N
     B = int(np.prod(shape))
     ins = [np.broadcast_to(x, shape + (nq,)).reshape(B, nq) for x in (q, qd, tau)]
     fe = None if f_ext is None else np.broadcast_to(f_ext, shape + (N, 3)).reshape(B, 3 * N)
-    n = min(B, BATCH_CHUNK)
-    rows = np.empty((3, nq, n))
-    frows = None if fe is None else np.empty((3 * N, n))
-    W, out = np.empty((nreg, n)), np.empty((nq, n))
+    most = max(256, min(BATCH_CHUNK, BATCH_BYTES // (8 * (nreg + 4))))
+    n = -(-B // -(-B // most))   # blocks of equal size, at most ``most``
+    W, S, I = np.empty((nreg, n)), np.empty((3, n)), np.empty(n, np.int64)   # noqa: E741
     res = np.empty((B, nq))
     with np.errstate(all="ignore"):
         for lo in range(0, B, n):
             k = min(n, B - lo)
-            r, w, o = (rows, W, out) if k == n else (rows[:, :, :k], W[:, :k], out[:, :k])
-            for j in range(3):
-                np.copyto(r[j], ins[j][lo:lo + k].T)
-            f = None
-            if fe is not None:
-                f = frows if k == n else frows[:, :k]
-                np.copyto(f, fe[lo:lo + k].T)
-            if fn(C, r[0], r[1], r[2], f, w, o):
-                res[lo:lo + k] = o.T
-            else:   # some state fails the singularity test: the block state by state, as single states run
+            # a block's inputs and q̈ are read and written in place, as strided rows (no copies)
+            rows = [x[lo:lo + k].T for x in ins] + [None if fe is None else fe[lo:lo + k].T]
+            w, s, i = (W, S, I) if k == n else (W[:, :k], S[:, :k], I[:k])
+            qmax = max(rows[0].max(), -rows[0].min())
+            if N * qmax + turn < TRIG_TABLE_RANGE:   # every angle (sums of q and placement angles) in the table's range
+                def sincos(x, c, si, s=s, i=i):
+                    _sincos_table(x, c, si, s[0], s[1], s[2], i)
+            else:
+                sincos = _sincos_numpy
+            if not fn(C, *rows, w, res[lo:lo + k].T, sincos):
+                # some state fails the singularity test: the block state by state, as single states run
                 single, Cs = _plan(model, fe is not None, force=True)
                 ql, qdl, taul = (x[lo:lo + k].tolist() for x in ins)
                 fl = [None] * k if fe is None else fe[lo:lo + k].tolist()
