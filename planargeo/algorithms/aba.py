@@ -868,8 +868,9 @@ _ndarray, _F64, _array, _isfinite = np.ndarray, np.dtype(np.float64), np.array, 
 # row of one work array ``W``, reusing a row as soon as its value is dead (an
 # operand's row may be the result's: elementwise ufuncs allow that).  The batch is
 # cut into equal blocks of at most ``BATCH_CHUNK`` states (fewer if the work rows
-# would take more than ``BATCH_BYTES``): fewer, longer calls cost less Python and
-# numpy overhead per state, shorter rows stay in the cache.  A block's inputs are
+# would take more than ``BATCH_BYTES``, but at least 1024): fewer, longer calls cost
+# less Python and numpy overhead per state (~0.4 µs a call), shorter rows stay in the
+# cache.  A block's inputs are
 # read, and its ``q̈`` written, in place as strided rows (columns of the batch).
 #
 # ``cos`` and ``sin`` of an angle (libm's take ~10 ns each per state, as much as
@@ -1143,7 +1144,7 @@ def _batch(model: Model, plan, q, qd, tau, f_ext, shape):
     B = int(np.prod(shape))
     ins = [np.broadcast_to(x, shape + (nq,)).reshape(B, nq) for x in (q, qd, tau)]
     fe = None if f_ext is None else np.broadcast_to(f_ext, shape + (N, 3)).reshape(B, 3 * N)
-    most = max(256, min(BATCH_CHUNK, BATCH_BYTES // (8 * (nreg + 4))))
+    most = max(1024, min(BATCH_CHUNK, BATCH_BYTES // (8 * (nreg + 4))))
     n = -(-B // -(-B // most))   # blocks of equal size, at most ``most``
     W, S, I = np.empty((nreg, n)), np.empty((3, n)), np.empty(n, np.int64)   # noqa: E741
     res = np.empty((B, nq))
