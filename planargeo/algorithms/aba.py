@@ -888,7 +888,7 @@ _BATCH_PLANS: dict = {}
 BATCH_CHUNK = 8192
 BATCH_BYTES = 8 << 20
 _UFUNC_NS = {"add": np.add, "sub": np.subtract, "mul": np.multiply, "div": np.divide, "neg": np.negative,
-             "minimum": np.minimum, "copyto": np.copyto,
+             "minimum": np.minimum, "copyto": np.copyto, "_0d": np.array,
              "_mcos": math.cos, "_msin": math.sin, "SINGULAR_RTOL": SINGULAR_RTOL}
 _BINOPS = {ast.Add: ("add", "+"), ast.Sub: ("sub", "-"), ast.Mult: ("mul", "*"), ast.Div: ("div", "/")}
 _CHECK = re.compile(r"if not (.+) > SINGULAR_RTOL \* \((.+)\):$")
@@ -903,6 +903,7 @@ _TRIG_H2 = float(_TRIG_H - Fraction(_TRIG_H1))               # H1 + H2 = 2π/TRI
 _TRIG_ANGLES = np.arange(TRIG_TABLE, dtype=np.longdouble) * (np.longdouble(_TRIG_H1) + np.longdouble(_TRIG_H2))
 _TRIG_COS, _TRIG_SIN = np.cos(_TRIG_ANGLES).astype(float), np.sin(_TRIG_ANGLES).astype(float)
 _TRIG_INV_H = float(1 / _TRIG_H)
+_TRIG_0D = tuple(np.array(c) for c in (_TRIG_INV_H, _TRIG_H1, _TRIG_H2, TRIG_TABLE - 1, -1.0 / 6.0, 1.0, -0.5))
 
 
 def _sincos_table(x, c, s, K, R, Z, I):   # noqa: E741
@@ -917,20 +918,21 @@ def _sincos_table(x, c, s, K, R, Z, I):   # noqa: E741
     value for each of libm's ``cos`` and ``sin``; within 2 units of 1 of them.
     """
     mul, sub, add = np.multiply, np.subtract, np.add
-    mul(x, _TRIG_INV_H, K)
+    inv_h, h1, h2, mask, sixth, one, half = _TRIG_0D   # constants as 0-d arrays (cheaper operands than floats)
+    mul(x, inv_h, K)
     np.rint(K, K)
-    mul(K, _TRIG_H1, R)
+    mul(K, h1, R)
     sub(x, R, R)
-    mul(K, _TRIG_H2, Z)
+    mul(K, h2, Z)
     sub(R, Z, R)                                   # r
     np.copyto(I, K, casting="unsafe")
-    np.bitwise_and(I, TRIG_TABLE - 1, I)           # k mod TRIG_TABLE
+    np.bitwise_and(I, mask, I)                     # k mod TRIG_TABLE
     mul(R, R, Z)                                   # r²
-    mul(Z, -1.0 / 6.0, K)
-    add(K, 1.0, K)
+    mul(Z, sixth, K)
+    add(K, one, K)
     mul(K, R, R)                                   # sin r
-    mul(Z, -0.5, Z)
-    add(Z, 1.0, Z)                                 # cos r
+    mul(Z, half, Z)
+    add(Z, one, Z)                                 # cos r
     np.take(_TRIG_COS, I, out=c, mode="clip")      # (in range: "clip" skips the bounds check)
     np.take(_TRIG_SIN, I, out=s, mode="clip")
     mul(c, R, K)                                   # C_k sin r
@@ -1070,9 +1072,18 @@ def _batch_source(lines):
     if ok is not None:
         last[ok[1]] = len(items)
     reg, free, nreg, body = dict(pinned), [], 0, []
+    rows = {t for s in stmts if s[0] == "unpack" and s[2] != "C" for t in s[1]}
+    zeros = {}   # Python floats as ufunc operands: 0-d arrays, made once (a float costs ~0.3 µs more per call)
 
     def name(a):
-        return reg[a[1]] if a[0] == "v" else a[1]
+        if a[0] == "v":
+            return reg[a[1]]
+        if a[1] in rows:
+            return a[1]
+        if a[1] not in zeros:
+            zeros[a[1]] = f"z{len(zeros)}"
+            body.append(f"{zeros[a[1]]} = _0d({a[1]})")
+        return zeros[a[1]]
 
     for j, it in enumerate(items):
         if it[0] == "py":
