@@ -357,7 +357,10 @@ def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.
 #
 # Constants equal to zero (placements along x, coms on the body's x axis, a
 # vertical gravity...) are folded out of the generated code; the zero pattern is
-# part of the plan's key, the nonzero values are passed in at call time.
+# part of the plan's key, the nonzero values are passed in at call time.  So is
+# the set of joints whose singularity test cannot fail for any state (proven from
+# the constants, see :func:`_checks`; e.g. every joint of ``chain_model``): their
+# tests are left out.
 _PLAN_KINDS = {"revolute": 1, "prismatic": 2, "fixed": 0}
 _PLANS: dict = {}
 #: single states of models with more bodies than this use the loop of :func:`_aba_components`
@@ -864,25 +867,28 @@ _ndarray, _F64, _array, _isfinite = np.ndarray, np.dtype(np.float64), np.array, 
 # statements (before :func:`_registers`) are lowered to three-address numpy ufunc
 # calls that write into preallocated rows (``out=``), so no temporary array is
 # created; values that depend only on the model's constants stay Python floats,
-# computed once per block.  A linear scan over the ufunc calls assigns each value a
-# row of one work array ``W``, reusing a row as soon as its value is dead (an
-# operand's row may be the result's: elementwise ufuncs allow that).  The batch is
-# cut into equal blocks of at most ``BATCH_CHUNK`` states (fewer if the work rows
-# would take more than ``BATCH_BYTES``, but at least 1024): fewer, longer calls cost
-# less Python and numpy overhead per state (~0.4 µs a call), shorter rows stay in the
-# cache.  A block's inputs are
+# computed once per block and handed to ufuncs as 0-d arrays (cheaper operands).  A
+# linear scan over the ufunc calls assigns each value a row of one work array
+# ``W``, reusing a row as soon as its value is dead (an operand's row may be the
+# result's: elementwise ufuncs allow that).  The batch is cut into equal blocks of
+# at most ``BATCH_CHUNK`` states (fewer if the work rows would take more than
+# ``BATCH_BYTES``, but at least 1024): fewer, longer calls cost less overhead per
+# state (~0.4 µs a call), shorter rows stay in the cache.  A block's inputs are
 # read, and its ``q̈`` written, in place as strided rows (columns of the batch).
 #
 # ``cos`` and ``sin`` of an angle (libm's take ~10 ns each per state, as much as
-# 30 multiplications) come together from a table (see :func:`_sincos_table`).
+# 30 multiplications) come together from a table (:func:`_sincos_table`), when a
+# bound on the block's angles (``N max|q|`` plus the placement angles) is within
+# ``TRIG_TABLE_RANGE``; otherwise from numpy.
 #
-# The singularity test ``D > SINGULAR_RTOL · trace`` becomes ``D - SINGULAR_RTOL ·
-# trace > 0`` (equivalent for floats), its minimum kept in one row and tested once
-# per block.  If it fails, the block is evaluated state by state by the
-# single-state plan, which raises SingularConfigurationError for the first singular
-# state exactly as a single state does.  If a result is not finite (finite but huge
-# inputs overflow), the batch is run again by the general component path
-# (:func:`_aba_components`), which returns its non-finite values with numpy's warnings.
+# The singularity test ``D > SINGULAR_RTOL · trace`` (where the plan keeps it, see
+# :func:`_checks`) becomes ``D - SINGULAR_RTOL · trace > 0`` (equivalent for
+# floats), its minimum kept in one row and tested once per block.  If it fails, the
+# block is evaluated state by state by the single-state plan, which raises
+# SingularConfigurationError for the first singular state exactly as a single state
+# does.  If a result is not finite (finite but huge inputs overflow), the batch is
+# run again by the general component path (:func:`_aba_components`), which returns
+# its non-finite values with numpy's warnings.
 _BATCH_PLANS: dict = {}
 #: states per block of a batched plan, and the most bytes of work rows a block may use
 BATCH_CHUNK = 8192
