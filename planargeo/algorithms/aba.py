@@ -891,8 +891,8 @@ _ndarray, _F64, _array, _isfinite = np.ndarray, np.dtype(np.float64), np.array, 
 # its non-finite values with numpy's warnings.
 _BATCH_PLANS: dict = {}
 #: states per block of a batched plan, and the most bytes of work rows a block may use
-BATCH_CHUNK = 8192
-BATCH_BYTES = 8 << 20
+BATCH_CHUNK = 16384
+BATCH_BYTES = 16 << 20
 _UFUNC_NS = {"add": np.add, "sub": np.subtract, "mul": np.multiply, "div": np.divide, "neg": np.negative,
              "minimum": np.minimum, "copyto": np.copyto, "_0d": np.array,
              "_mcos": math.cos, "_msin": math.sin, "SINGULAR_RTOL": SINGULAR_RTOL}
