@@ -96,3 +96,24 @@ class SingularInertiaError(SingularError):
 
 class SingularConfigurationError(SingularError):
     """A mechanism is in a singular configuration (e.g. a slider-crank dead centre)."""
+
+
+class CyclicTopologyError(TopologyError):
+    """A parent structure contains a cycle, so ``1 - C`` (thesis 9.12) is singular.
+
+    The cycle's indicator vector ``e`` satisfies ``eᵀ (1 - C) = 0`` exactly
+    (every body on the cycle is the parent of exactly one other one), so the
+    trunk ``Δ^{-1} = (1 - C)^{-1}`` does not exist.
+
+    Attributes
+    ----------
+    cond : float
+        Condition number of ``1 - C`` (``inf``: exactly singular).
+    cycle : tuple of int
+        The bodies on the cycle, in parent order (``cycle[k+1]`` is the parent of ``cycle[k]``).
+    """
+
+    def __init__(self, message: str, cond: float = float("inf"), cycle: tuple = ()):
+        super().__init__(f"{message} (condition number of 1 - C: {cond:.3g})")
+        self.cond = float(cond)
+        self.cycle = tuple(int(i) for i in cycle)

@@ -42,13 +42,14 @@ slice(1, 2, None)
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
 from ._validate import as_array, as_scalar, as_xy
-from .errors import InputError, ShapeError, TopologyError
+from .errors import CyclicTopologyError, InputError, ShapeError, TopologyError
 
 __all__ = ["Body", "Joint", "Model", "Data", "JOINT_DOFS", "chain_model", "random_model"]
 
@@ -166,6 +167,52 @@ class Joint:
         return JOINT_DOFS[self.kind]
 
 
+def _find_cycle(ps) -> tuple[int, ...]:
+    """The first cycle of a parent list (bodies in parent order), or ``()`` if there is none."""
+    n = len(ps)
+    for i in range(n):
+        order, j = {}, i
+        while 0 <= j < n and j not in order:
+            order[j] = len(order)
+            j = ps[j]
+        if 0 <= j < n:                     # came back to a body already on this path
+            path = list(order)
+            return tuple(path[order[j]:])
+    return ()
+
+
+def _cycle_error(ps, cycle, message: str | None = None) -> CyclicTopologyError:
+    """The :class:`~planargeo.errors.CyclicTopologyError` of a parent list with a ``cycle``.
+
+    ``1 - C`` (thesis 9.12) is exactly singular: the cycle's indicator ``e``
+    has ``eᵀ (1 - C) = 0`` (checked here in exact 0/1 arithmetic), so its
+    condition number is ``inf``.  ``message`` replaces the default text
+    (the bodies of the cycle and the parents).
+
+    Examples
+    --------
+    >>> e = _cycle_error([1, 2, 0], (0, 1, 2))
+    >>> e.cond, e.cycle
+    (inf, (0, 1, 2))
+    >>> str(e)
+    'parents contain a cycle through bodies 0 -> 1 -> 2 -> 0 (parents=[1, 2, 0]) (condition number of 1 - C: inf)'
+    """
+    ps = [int(p) for p in ps]
+    n = len(ps)
+    C = np.zeros((n, n))
+    for i, p in enumerate(ps):
+        if 0 <= p < n:
+            C[i, p] = 1.0
+    e = np.zeros(n)
+    e[list(cycle)] = 1.0
+    singular = not np.any(e @ (np.eye(n) - C))        # exact: small integers
+    cond = math.inf if singular else float(np.linalg.cond(np.eye(n) - C))
+    path = " -> ".join(str(b) for b in (*cycle, cycle[0]))
+    if message is None:
+        message = f"parents contain a cycle through bodies {path} (parents={ps})"
+    return CyclicTopologyError(message.format(path=path, parents=ps), cond, cycle)
+
+
 def _check_parents(parents, n: int) -> tuple[int, ...]:
     try:
         ps = [int(p) for p in parents]
@@ -187,7 +234,7 @@ def _check_parents(parents, n: int) -> tuple[int, ...]:
                 seen.add(j)
                 j = ps[j]
             if j != -1:
-                raise TopologyError(f"parents contain a cycle through body {j} (parents={ps})")
+                raise _cycle_error(ps, _find_cycle(ps))
             raise TopologyError(
                 f"parents[{i}] must be below {i} (parents before children), got {p}")
     return tuple(ps)
@@ -226,7 +273,7 @@ class Model:
     >>> Model([Body(1.0), Body(1.0)], [Joint("revolute")] * 2, [1, 0])
     Traceback (most recent call last):
     ...
-    planargeo.errors.TopologyError: parents contain a cycle through body 0 (parents=[1, 0])
+    planargeo.errors.CyclicTopologyError: parents contain a cycle through bodies 0 -> 1 -> 0 (parents=[1, 0]) (condition number of 1 - C: inf)
     """
 
     bodies: tuple[Body, ...]

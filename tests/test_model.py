@@ -2,7 +2,7 @@
 import numpy as np
 import pytest
 
-from planargeo.errors import InputError, NonFiniteError, ShapeError, TopologyError
+from planargeo.errors import CyclicTopologyError, InputError, NonFiniteError, ShapeError, TopologyError
 from planargeo.kinematics import check_state, kinematics
 from planargeo.model import JOINT_DOFS, Body, Joint, Model, chain_model, random_model
 
@@ -55,6 +55,36 @@ def test_topology_errors(parents, words):
     n = len(parents)
     with pytest.raises(TopologyError, match=words):
         Model([Body(1.0)] * n, [Joint("revolute")] * n, parents)
+
+
+@pytest.mark.parametrize("parents, cycle", [
+    ([1, 0], (0, 1)),
+    ([0], (0,)),                                  # a body that is its own parent
+    ([-1, 3, 1, 2], (1, 3, 2)),                   # 1 -> 3 -> 2 -> 1 behind a good root
+    ([-1, 0, 4, 2, 3, 1], (2, 4, 3)),             # cycle not through the first bad index
+])
+def test_cycle_raises_cyclic_topology_error_with_cond(parents, cycle):
+    """A cycle makes 1 - C singular (thesis 9.12): the error names the cycle's bodies and carries cond = inf."""
+    n = len(parents)
+    with pytest.raises(CyclicTopologyError) as e:
+        Model([Body(1.0)] * n, [Joint("revolute")] * n, parents)
+    assert isinstance(e.value, TopologyError) and isinstance(e.value, ValueError)
+    assert e.value.cond == np.inf and e.value.cycle == cycle
+    path = " -> ".join(map(str, cycle + cycle[:1]))
+    assert str(e.value) == (f"parents contain a cycle through bodies {path} (parents={parents}) "
+                            "(condition number of 1 - C: inf)")
+    # cross-check: numerically, 1 - C is singular too
+    C = np.zeros((n, n))
+    for i, p in enumerate(parents):
+        if p >= 0:
+            C[i, p] = 1.0
+    assert np.linalg.cond(np.eye(n) - C) > 1e15
+
+
+def test_ordering_problem_is_not_a_cycle():
+    with pytest.raises(TopologyError) as e:
+        Model([Body(1.0)] * 3, [Joint("revolute")] * 3, [-1, 2, 0])
+    assert not isinstance(e.value, CyclicTopologyError)
 
 
 def test_model_other_errors():
@@ -164,6 +194,11 @@ def test_property_parents_valid_or_topology_error(parents):
     n = len(parents)
     try:
         m = Model([Body(1.0)] * n, [Joint("revolute")] * n, parents)
+    except CyclicTopologyError as e:
+        assert e.cond == np.inf and len(e.cycle) >= 1
+        # the reported cycle is one: each body's parent is the next one
+        assert all(parents[a] == b for a, b in zip(e.cycle, e.cycle[1:] + e.cycle[:1]))
+        return
     except TopologyError:
         assert any(not -1 <= p < i for i, p in enumerate(parents))
         return

@@ -7,7 +7,8 @@ from planargeo.algorithms.crba import forward_dynamics_crba, mass_matrix
 from planargeo.algorithms.stacked import (
     adjacency, blocks, direct_accelerations, forward_dynamics_stacked, reaction_basis,
     stacked_solve, tree_mobilities, trunk)
-from planargeo.errors import InputError, ShapeError, SingularConfigurationError, TopologyError
+from planargeo.errors import (CyclicTopologyError, InputError, ShapeError, SingularConfigurationError,
+                             TopologyError)
 from planargeo.kinematics import kinematics
 from planargeo.joints import reaction_space as joint_reaction_space
 from planargeo.model import Body, Joint, Model, chain_model, random_model
@@ -51,9 +52,24 @@ def test_chain_adjacency_9_2_and_trunk_lower_triangular():
     assert np.array_equal(trunk(C), np.tril(np.ones((5, 5))))
 
 
+@pytest.mark.parametrize("C, cycle", [
+    (np.array([[0, 1], [1, 0]]), (0, 1)),
+    (np.array([[0, 0, 1], [1, 0, 0], [0, 1, 0]]), (0, 2, 1)),
+    (np.array([[0, 0, 0, 0], [1, 0, 0, 0], [0, 0, 0, 1], [0, 0, 1, 0]]), (2, 3)),   # a tree plus a 2-cycle
+    (np.array([[1]]), (0,)),
+])
+def test_trunk_cycle_raises_cyclic_topology_error_with_cond(C, cycle):
+    """A cycle: C^n ≠ 0 and 1 - C singular (9.12); the error carries cond = inf and names the bodies."""
+    with pytest.raises(CyclicTopologyError) as e:
+        trunk(C)
+    assert isinstance(e.value, TopologyError)
+    assert e.value.cond == np.inf and e.value.cycle == cycle
+    path = " -> ".join(map(str, cycle + cycle[:1]))
+    assert str(e.value) == f"C contains a cycle through bodies {path}: not a tree (condition number of 1 - C: inf)"
+    assert np.linalg.cond(np.eye(len(C)) - C) > 1e15            # numerically singular as well
+
+
 @pytest.mark.parametrize("C, msg", [
-    (np.array([[0, 1], [1, 0]]), "cycle"),
-    (np.array([[0, 0, 1], [1, 0, 0], [0, 1, 0]]), "cycle"),
     (np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0]]), "more than one parent"),
     (np.array([[0, 2], [0, 0]]), "zeros and ones"),
 ])
@@ -67,6 +83,14 @@ def test_trunk_shape_error():
         trunk(np.zeros((2, 3)))
 
 
+def test_adjacency_self_parent_is_a_cycle_of_length_one():
+    with pytest.raises(CyclicTopologyError) as e:
+        adjacency([-1, 1])
+    assert e.value.cond == np.inf and e.value.cycle == (1,)
+    assert str(e.value) == ("parents[1] must not be 1 itself: a cycle of length one through bodies 1 -> 1 "
+                            "(parents=[-1, 1]) (condition number of 1 - C: inf)")
+
+
 @pytest.mark.parametrize("parents, msg", [([-1, 1], "parents\\[1\\] must not be 1"),
                                           ([-1, 7], "parents\\[1\\] must be -1"),
                                           (["a"], "parents must be a sequence of integers")])
@@ -77,8 +101,9 @@ def test_adjacency_rejects_bad_parents(parents, msg):
 
 def test_raw_cycle_in_unordered_parents_detected():
     # parents given raw (not ordered): 0 -> 2 -> 1 -> 0 is a cycle
-    with pytest.raises(TopologyError, match="cycle"):
+    with pytest.raises(CyclicTopologyError, match="cycle through bodies 0 -> 2 -> 1 -> 0") as e:
         trunk(adjacency([2, 0, 1]))
+    assert e.value.cond == np.inf and e.value.cycle == (0, 2, 1)
     # a valid but unordered tree passes
     D = trunk(adjacency([1, -1, 1]))
     assert np.array_equal(D, [[1, 1, 0], [0, 1, 0], [0, 1, 1]])

@@ -43,7 +43,7 @@ from ..errors import ShapeError, SingularConfigurationError, TopologyError
 from ..joints import reaction_space_of
 from ..kinematics import _kinematics_scalar, check_state, kinematics
 from ..subspaces import _effective_mobility, _percussion_space, reactive_acceleration_space
-from ..model import Model
+from ..model import Model, _cycle_error, _find_cycle
 
 __all__ = ["adjacency", "trunk", "blocks", "reaction_basis", "quake_space", "StackedSolution", "stacked_solve",
            "articulated_quantities", "articulation_matrix", "stacked_mobility",
@@ -81,7 +81,8 @@ def adjacency(parents) -> np.ndarray:
         if p < -1 or p >= n:
             raise TopologyError(f"parents[{i}] must be -1 (ground) or a body index in 0..{n - 1}, got {p}")
         if p == i:
-            raise TopologyError(f"parents[{i}] must not be {i} itself (a cycle of length one)")
+            raise _cycle_error(ps, (i,), f"parents[{i}] must not be {i} itself: a cycle of length one "
+                                         "through bodies {path} (parents={parents})")
         if p >= 0:
             C[i, p] = 1.0
     return C
@@ -97,8 +98,12 @@ def trunk(C) -> np.ndarray:
     Raises
     ------
     TopologyError
-        If ``C`` is not square, not 0/1, gives a body two parents, or contains
-        a cycle (``C^n ≠ 0``).
+        If ``C`` is not 0/1 or gives a body two parents.
+    CyclicTopologyError
+        If ``C`` contains a cycle (``C^n ≠ 0``): ``1 - C`` is singular
+        (``.cond`` is ``inf``, ``.cycle`` the bodies on it).
+    ShapeError
+        If ``C`` is not square.
 
     Examples
     --------
@@ -109,7 +114,7 @@ def trunk(C) -> np.ndarray:
     >>> trunk(np.array([[0, 1], [1, 0]]))
     Traceback (most recent call last):
     ...
-    planargeo.errors.TopologyError: C contains a cycle (C^n is not zero): not a tree
+    planargeo.errors.CyclicTopologyError: C contains a cycle through bodies 0 -> 1 -> 0: not a tree (condition number of 1 - C: inf)
     """
     C = as_array(C, "C")
     if C.ndim != 2 or C.shape[0] != C.shape[1]:
@@ -127,7 +132,9 @@ def trunk(C) -> np.ndarray:
         if not P.any():
             return out
         out = out + P
-    raise TopologyError("C contains a cycle (C^n is not zero): not a tree")
+    # C^n ≠ 0: some body reaches itself through its parents; 1 - C is singular
+    ps = [int(np.argmax(row)) if row.any() else -1 for row in C]
+    raise _cycle_error(ps, _find_cycle(ps), "C contains a cycle through bodies {path}: not a tree")
 
 
 @functools.lru_cache(maxsize=256)
