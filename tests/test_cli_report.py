@@ -1,10 +1,12 @@
 """``planargeo report`` end to end: every output named in issue 3, checked against references
-computed here (closed forms, dense Lagrange solves, Pinocchio), and one-line errors.
+computed here (closed forms, dense solves), and one-line errors.  The checks that need
+Pinocchio (the n = 50 chain, the slider-crank's multiplier solve) are in
+``test_cli_report_pinocchio.py``, so these run without it.
 
 The references never call the scene or algorithm under test: inertias are written out by hand
 (twist ``[vx, vy, w]`` at the origin, momentum ``m (v + w × c)``), Jacobians from the joint
 points (a revolute joint at ``(x, y)`` has ``s = [y, -x, 1]``), and joint-space problems are
-solved densely with numpy or by Pinocchio.
+solved densely with numpy.
 """
 from __future__ import annotations
 
@@ -21,10 +23,7 @@ import pytest
 from planargeo import report
 from planargeo.errors import SingularConfigurationError
 
-pin = pytest.importorskip("pinocchio")
-
 EXE = Path(sys.executable).with_name("planargeo")
-EPS = np.finfo(float).eps
 
 
 def cli(*args) -> subprocess.CompletedProcess:
@@ -55,53 +54,8 @@ def rot_twist(x, y):
 
 
 # ---------------------------------------------------------------------------
-# chain: n = 50, seed = 3, five methods against each other and against Pinocchio
+# chain: a method's error
 # ---------------------------------------------------------------------------
-def pinocchio_chain(n, mass=1.0, length=1.0, g=-9.81):
-    """The issue's default chain in Pinocchio: JointModelRZ, inertia about the centre of mass."""
-    pm = pin.Model()
-    parent = 0
-    for i in range(n):
-        place = pin.SE3(np.eye(3), np.array([0.0 if i == 0 else length, 0.0, 0.0]))
-        parent = pm.addJoint(parent, pin.JointModelRZ(), place, f"j{i}")
-        I3 = np.diag([1.0, 1.0, mass * length ** 2 / 12])
-        pm.appendBodyToJoint(parent, pin.Inertia(mass, np.array([length / 2, 0.0, 0.0]), I3), pin.SE3.Identity())
-    pm.gravity = pin.Motion(np.array([0.0, g, 0.0, 0.0, 0.0, 0.0]))
-    return pm
-
-
-def test_chain_n50_seed3_json_every_method_agrees_with_pinocchio():
-    obj = report_json("chain", "--set", "n=50", "--set", "seed=3")
-    assert obj["scene"] == "chain"
-    assert obj["params"]["n"] == 50 and obj["params"]["seed"] == 3
-    qs = obj["quantities"]
-    q, qd, tau = (np.array(qs[k]) for k in ("q", "qd", "tau"))
-    for v in (q, qd, tau):
-        assert v.shape == (50,)
-    # the random state is numpy's default_rng(3) normal draw, as documented
-    np.testing.assert_array_equal(np.stack([q, qd, tau]), np.random.default_rng(3).normal(size=(3, 50)))
-    assert obj["state"] == {"q": qs["q"], "qd": qs["qd"], "tau": qs["tau"]}
-    assert set(qs["qdd"]) == {"aba", "projective", "mobility_split", "stacked", "crba"}
-
-    pm = pinocchio_chain(50)
-    ref = pin.aba(pm, pm.createData(), q, qd, tau).copy()
-    H = pin.crba(pm, pm.createData(), q).copy()
-    H = np.triu(H) + np.triu(H, 1).T
-    cond = np.linalg.cond(H)                                   # ~5e5 here
-    tol = 10 * EPS * cond                                      # relative, scaled by cond(H)
-    scale = np.abs(ref).max()
-    qdd = {k: np.array(v) for k, v in qs["qdd"].items()}
-    for name, v in qdd.items():
-        assert v.shape == (50,)
-        for other, w in qdd.items():
-            assert np.abs(v - w).max() <= tol * scale, (name, other)
-        assert np.abs(v - ref).max() <= tol * scale, name
-    assert np.abs(qdd["aba"] - ref).max() <= 1e-9 * scale      # issue: 1e-9 relative for N <= 100
-    # and the equations of motion themselves: H qdd + C = tau (C from Pinocchio's RNEA)
-    C = pin.rnea(pm, pm.createData(), q, qd, np.zeros(50)).copy()
-    assert np.abs(H @ qdd["aba"] + C - tau).max() <= 1e-9 * np.abs(tau - C).max()
-
-
 def test_chain_method_error_makes_report_fail(monkeypatch, capsys):
     """A PlanargeoError raised by any method propagates: exit 1, its message on one line."""
     from planargeo.scenes import chain as chain_mod
@@ -120,70 +74,9 @@ def test_chain_method_error_makes_report_fail(monkeypatch, capsys):
 
 
 # ---------------------------------------------------------------------------
-# slider-crank (9.6): dense Lagrange-multiplier reference built from the thesis's data
+# slider-crank (9.6); the multiplier-solve references are in test_cli_report_pinocchio.py
 # ---------------------------------------------------------------------------
-M1, M2, M3, R_, L_, T_ = 0.40, 0.15, 0.30, 2.29, 5.00, 0.5
-
-
-def slider_crank_reference(psi, psidot, g=9.81):
-    """Loop closure by hand, then ``[H Jᵀ; J 0][q̈; λ] = [-C; -J̇ q̇]`` with H, C from Pinocchio."""
-    beta = np.arccos(-R_ * np.cos(psi) / L_)               # psi + theta, piston above the pivot
-    q = np.array([psi, beta - psi, np.pi / 2 - beta])
-    wrod = -R_ * np.sin(psi) * psidot / (L_ * np.sin(beta))
-    qd = np.array([psidot, wrod - psidot, -wrod])
-    pm = pin.Model()
-    parent = 0
-    for x, m, c, J in ((0.0, M1, R_ / 4, 0.1464 * M1 * R_ ** 2), (R_, M2, L_ / 2, 0.0866 * M2 * L_ ** 2),
-                       (L_, M3, T_, 0.666 * M3 * T_ ** 2)):
-        parent = pm.addJoint(parent, pin.JointModelRZ(), pin.SE3(np.eye(3), np.array([x, 0.0, 0.0])), "j")
-        pm.appendBodyToJoint(parent, pin.Inertia(m, np.array([c, 0.0, 0.0]), np.diag([1.0, 1.0, J])),
-                             pin.SE3.Identity())
-    pm.gravity = pin.Motion(np.array([0.0, -g, 0.0, 0.0, 0.0, 0.0]))
-    H = pin.crba(pm, pm.createData(), q).copy()
-    H = np.triu(H) + np.triu(H, 1).T
-    C = pin.rnea(pm, pm.createData(), q, qd, np.zeros(3)).copy()
-    # closure: x of the piston point (t, 0) = 0 and the piston angle psi+theta+phi = pi/2
-    a1, a12, a123 = q[0], q[0] + q[1], q.sum()
-    w1, w12, w123 = qd[0], qd[0] + qd[1], qd.sum()
-    J = np.array([[-R_ * np.sin(a1) - L_ * np.sin(a12) - T_ * np.sin(a123),
-                   -L_ * np.sin(a12) - T_ * np.sin(a123), -T_ * np.sin(a123)], [1.0, 1.0, 1.0]])
-    Jdqd = np.array([-R_ * np.cos(a1) * w1 ** 2 - L_ * np.cos(a12) * w12 ** 2 - T_ * np.cos(a123) * w123 ** 2,
-                     0.0])
-    K = np.block([[H, J.T], [J, np.zeros((2, 2))]])
-    qdd = np.linalg.solve(K, np.concatenate([-C, -Jdqd]))[:3]
-    # piston height h (9.85) and its acceleration
-    Jh = np.array([R_ * np.cos(a1) + L_ * np.cos(a12), L_ * np.cos(a12), 0.0])
-    hdd = Jh @ qdd - R_ * np.sin(a1) * w1 ** 2 - L_ * np.sin(a12) * w12 ** 2
-    h = R_ * np.sin(a1) + L_ * np.sin(a12) + T_
-    pin_xy = (R_ * np.cos(a1), R_ * np.sin(a1))
-    # twists at the origin: v1 = psi' s1, v2 = v1 + theta' s2 (2.9), the piston translates along y
-    v = np.array([w1 * rot_twist(0.0, 0.0), w1 * rot_twist(0.0, 0.0) + qd[1] * rot_twist(*pin_xy),
-                  [0.0, Jh @ qd, 0.0]])
-    return dict(q=q, qd=qd, qdd=qdd, h=h, hdd=hdd, v=v)
-
-
-@pytest.mark.parametrize("psi, psidot", [(0.4, 20.0), (2.0, -5.0)])
-def test_slider_crank_json_outputs_against_lagrange(psi, psidot):
-    obj = report_json("slider-crank", "--set", f"psi={psi}", "--set", f"psidot={psidot}")
-    qs = obj["quantities"]
-    for key in ("q", "qd", "v", "u", "Lambda3_inv", "h", "xi", "F3", "a3", "qdd"):
-        assert key in qs, key
-    shapes = {"q": (3,), "qd": (3,), "v": (3, 3), "u": (3, 3), "Lambda3_inv": (3, 3), "h": (),
-              "xi": (2,), "F3": (3,), "a3": (3,), "qdd": (3,)}
-    for key, shape in shapes.items():
-        assert np.shape(qs[key]) == shape, key
-    ref = slider_crank_reference(psi, psidot)
-    np.testing.assert_allclose(qs["q"], ref["q"], rtol=1e-13, atol=1e-13)
-    np.testing.assert_allclose(qs["qd"], ref["qd"], rtol=1e-12, atol=1e-12)
-    assert qs["h"] == pytest.approx(ref["h"], rel=1e-13)
-    np.testing.assert_allclose(qs["v"], ref["v"], rtol=1e-11, atol=1e-11 * np.abs(ref["v"]).max())
-    scale = np.abs(ref["qdd"]).max()
-    np.testing.assert_allclose(qs["qdd"], ref["qdd"], rtol=1e-9, atol=1e-9 * scale)
-    # the piston translates vertically: a3 = [0, h'', 0] at the origin
-    np.testing.assert_allclose(qs["a3"], [0.0, ref["hdd"], 0.0], atol=1e-9 * max(abs(ref["hdd"]), 1.0))
-    L3 = np.array(qs["Lambda3_inv"])
-    np.testing.assert_allclose(L3, L3.T, atol=1e-12 * np.abs(L3).max())
-    assert np.linalg.eigvalsh(L3).min() > -1e-12 * np.abs(L3).max()   # a mobility: positive semi-definite
+R_, L_, T_ = 2.29, 5.00, 0.5
 
 
 def test_slider_crank_default_h_is_the_thesis_value():
