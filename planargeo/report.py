@@ -28,11 +28,12 @@ import argparse
 import json
 import math
 import sys
+import warnings
 from typing import Any
 
 import numpy as np
 
-__all__ = ["add_arguments", "main", "parse_value", "parse_sets", "to_plain", "format_table"]
+__all__ = ["add_arguments", "main", "parse_value", "parse_sets", "to_plain", "format_table", "non_finite"]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -215,14 +216,73 @@ def main(args: argparse.Namespace) -> int:
     except ValueError as exc:
         return _error(str(exc).splitlines()[0], 2)
     try:
-        res = scenes.build(args.scene, **params)
+        # overflow and invalid arithmetic are reported once, below, not as numpy warnings
+        res = _build_quietly(scenes, args.scene, params)
     except (PlanargeoError, ValueError, TypeError, ArithmeticError, np.linalg.LinAlgError) as exc:
         msg = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
         return _error(msg, 1)
     report = {"scene": res.name, "params": to_plain(res.params), "state": to_plain(res.state),
               "quantities": to_plain(res.quantities)}
-    if args.json:
-        print(json.dumps(report))
-    else:
-        print(format_table(report))
+    bad = non_finite(report)
+    if bad:
+        return _error(_non_finite_message(scenes, res.name, bad, params), 1)
+    try:
+        text = json.dumps(report, allow_nan=False) if args.json else format_table(report)
+    except ValueError as exc:  # pragma: no cover - non_finite() found nothing, json did
+        return _error(str(exc).splitlines()[0], 1)
+    print(text)
     return 0
+
+
+def non_finite(report: dict) -> list[str]:
+    """Names (``section.key``) of the entries of a plain report holding NaN or infinity.
+
+    Examples
+    --------
+    >>> non_finite({"params": {"a": 1.0}, "state": {"q": [0.0, float("inf")]},
+    ...             "quantities": {"M": [[1.0, float("nan")]], "h": 2.0}})
+    ['state.q', 'quantities.M']
+    """
+    def bad(v) -> bool:
+        if isinstance(v, dict):
+            return any(bad(w) for w in v.values())
+        if isinstance(v, (list, tuple)):
+            return any(bad(w) for w in v)
+        return isinstance(v, float) and not math.isfinite(v)
+
+    return [f"{section}.{k}" for section in ("params", "state", "quantities")
+            for k, v in (report.get(section) or {}).items() if bad(v)]
+
+
+def _build_quietly(scenes, name: str, params: dict[str, Any]):
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore", RuntimeWarning)
+        return scenes.build(name, **params)
+
+
+def _culprits(scenes, name: str, params: dict[str, Any]) -> list[str]:
+    """The given parameters that, each put back to its default, make the results finite."""
+    from .errors import PlanargeoError
+
+    out = []
+    for k in params:
+        try:
+            res = _build_quietly(scenes, name, {j: v for j, v in params.items() if j != k})
+        except (PlanargeoError, ValueError, TypeError, ArithmeticError, np.linalg.LinAlgError):
+            continue
+        plain = {"params": to_plain(res.params), "state": to_plain(res.state), "quantities": to_plain(res.quantities)}
+        if not non_finite(plain):
+            out.append(k)
+    return out
+
+
+def _non_finite_message(scenes, scene: str, bad: list[str], params: dict[str, Any]) -> str:
+    """One line: which results are not finite and which given parameter(s) led there."""
+    names = ", ".join(b.split(".", 1)[1] for b in bad[:8]) + (", ..." if len(bad) > 8 else "")
+    head = f"scene '{scene}' gives non-finite results ({names})"
+    if not params:
+        return f"{head} with the default parameters"
+    culprits = _culprits(scenes, scene, params) or list(params)
+    given = ", ".join(f"{k}={_fmt_number(v) if not isinstance(v, str) else v}" for k, v in params.items()
+                      if k in culprits)
+    return f"{head} with {given} (beyond what double precision can evaluate)"

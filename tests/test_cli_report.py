@@ -234,3 +234,51 @@ def test_errors_exit_nonzero_with_one_line_and_no_traceback(args, msg):
     assert len(lines) == 1, r.stderr
     assert msg in lines[0]
     assert "Traceback" not in r.stderr
+
+
+# ---------------------------------------------------------------------------
+# non-finite results: exit 1, one line naming the parameter, no NaN tokens, no warnings
+# ---------------------------------------------------------------------------
+NONFINITE_MSG = ("planargeo report: error: scene 'slider-crank' gives non-finite results (u, xi, F3, a3, a, qdd) "
+                 "with psidot=1e+200 (beyond what double precision can evaluate)")
+
+
+@pytest.mark.parametrize("fmt", [["--json"], []])
+@pytest.mark.parametrize("extra", [[], ["--set", "psi=0.3"]])
+def test_non_finite_quantities_exit_1_naming_the_parameter(fmt, extra):
+    cmd = [str(EXE)] if EXE.exists() else [sys.executable, "-m", "planargeo.cli"]
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONWARNINGS"}      # warnings would show
+    r = subprocess.run(cmd + ["report", "slider-crank", "--set", "psidot=1e200", *extra, *fmt],
+                       capture_output=True, text=True, timeout=300, env=env)
+    assert r.returncode == 1
+    assert r.stdout == ""                                   # no JSON with NaN tokens, no table of nans
+    assert r.stderr.splitlines() == [NONFINITE_MSG]         # psi=0.3 is fine on its own: not named
+
+
+def test_large_but_finite_speed_still_reports():
+    obj = report_json("slider-crank", "--set", "psidot=1e100")
+    assert np.isfinite(np.array(obj["quantities"]["qdd"])).all()
+
+
+def test_non_finite_in_process(monkeypatch, capsys):
+    """A scene returning NaN (any scene, any quantity): one line naming the quantity and the parameter."""
+    from planargeo import scenes
+    from planargeo.scenes import SceneResult
+
+    real = scenes.build
+
+    def build(name, **params):
+        res = real(name, **params)
+        q = dict(res.quantities, m_x=float("nan") if params.get("phi") == 1.0 else res.quantities["m_x"])
+        return SceneResult(res.name, res.params, res.model, res.state, q, res.extra)
+
+    monkeypatch.setattr(scenes, "build", build)
+    p = argparse.ArgumentParser()
+    report.add_arguments(p)
+    for fmt in (["--json"], []):
+        code = report.main(p.parse_args(["two-body", "--set", "phi=1.0", "--set", "m=2.0", *fmt]))
+        out = capsys.readouterr()
+        assert code == 1 and out.out == ""
+        assert out.err.splitlines() == ["planargeo report: error: scene 'two-body' gives non-finite results (m_x) "
+                                        "with phi=1.0 (beyond what double precision can evaluate)"]
+    assert report.main(p.parse_args(["two-body", "--set", "phi=0.5", "--json"])) == 0
