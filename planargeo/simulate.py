@@ -46,7 +46,7 @@ from .errors import InputError, SingularConfigurationError
 from .kinematics import check_state, kinematics
 from .model import Model
 
-__all__ = ["simulate", "SimulationResult", "energy", "METHODS"]
+__all__ = ["simulate", "SimulationResult", "energy", "progress_enabled", "METHODS"]
 
 METHODS = ("RK45", "DOP853", "Radau", "RK4")
 
@@ -117,10 +117,53 @@ class SimulationResult:
         return float(np.max(np.abs(self.energy - self.energy[0])) / scale)
 
 
+def _in_ipython_kernel() -> bool:
+    """True inside a Jupyter/IPython kernel (notebook, JupyterLab, Colab), without importing IPython."""
+    ipython = sys.modules.get("IPython")
+    if ipython is None:
+        return False
+    try:
+        shell = ipython.get_ipython()
+    except Exception:  # pragma: no cover - a broken IPython
+        return False
+    if shell is None:
+        return False
+    if any(cls.__name__ == "ZMQInteractiveShell" for cls in type(shell).__mro__):
+        return True
+    try:
+        return "IPKernelApp" in shell.config
+    except Exception:  # pragma: no cover
+        return False
+
+
+def progress_enabled(progress: bool | None = None, stream=None) -> bool:
+    """Whether :func:`simulate` shows a progress bar.
+
+    ``True``/``False`` are obeyed; ``None`` (auto) shows it when ``stream``
+    (default ``sys.stderr``) is a terminal or when running inside a
+    Jupyter/IPython kernel, where stderr is not a terminal but the bar
+    (``tqdm.auto``: a notebook widget when ipywidgets is installed, text
+    otherwise) is still seen.
+
+    Examples
+    --------
+    >>> import io
+    >>> progress_enabled(True), progress_enabled(False), progress_enabled(None, io.StringIO())
+    (True, False, False)
+    """
+    if progress is not None:
+        return bool(progress)
+    stream = sys.stderr if stream is None else stream
+    try:
+        if stream is not None and stream.isatty():
+            return True
+    except Exception:  # closed or odd streams
+        pass
+    return _in_ipython_kernel()
+
+
 def _progress(enabled, total):
-    if enabled is None:
-        enabled = bool(getattr(sys.stderr, "isatty", lambda: False)())
-    if not enabled:
+    if not progress_enabled(enabled):
         return None
     try:
         from tqdm.auto import tqdm
@@ -164,7 +207,9 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     forward, stabilize, project, residual, energy_fn : callables, optional
         Hooks, see the module docstring.
     progress : bool or None
-        Show a tqdm progress bar (``None``: only when stderr is a terminal).
+        Show a tqdm progress bar (``tqdm.auto``); ``None`` (default) decides
+        automatically: on when stderr is a terminal or inside a Jupyter/IPython
+        kernel (:func:`progress_enabled`).
 
     Returns
     -------

@@ -1,4 +1,7 @@
-"""Time integration: energy conservation, hooks, singular stops."""
+"""Time integration: energy conservation, hooks, singular stops, progress bars."""
+import io
+import sys
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -6,7 +9,7 @@ from hypothesis import strategies as st
 
 from planargeo.errors import InputError, SingularConfigurationError
 from planargeo.model import chain_model, random_model
-from planargeo.simulate import energy, simulate
+from planargeo.simulate import energy, progress_enabled, simulate
 
 Q0, QD0 = [0.3, 0.5, -0.2], [0.0, 1.0, 0.0]
 
@@ -129,3 +132,71 @@ def test_property_energy_conserved_random_chains(n, seed, tree):
     r = simulate(m, rng.normal(size=m.nq), rng.normal(size=m.nq), 0.5, method="DOP853", rtol=1e-10, atol=1e-12)
     assert r.status == "ok"
     assert r.energy_drift() < 1e-6
+
+
+# --------------------------------------------------------------------------- progress bar decision
+class _Stream:
+    def __init__(self, tty):
+        self.tty = tty
+
+    def isatty(self):
+        return self.tty
+
+
+def _fake_ipython(monkeypatch, shell):
+    import types
+
+    mod = types.ModuleType("IPython")
+    mod.get_ipython = lambda: shell
+    monkeypatch.setitem(sys.modules, "IPython", mod)
+
+
+def test_progress_explicit_values_win(monkeypatch):
+    _fake_ipython(monkeypatch, None)
+    assert progress_enabled(True, _Stream(False)) is True
+    assert progress_enabled(False, _Stream(True)) is False
+
+
+def test_progress_auto_terminal(monkeypatch):
+    _fake_ipython(monkeypatch, None)
+    assert progress_enabled(None, _Stream(True)) is True
+    assert progress_enabled(None, _Stream(False)) is False
+    assert progress_enabled(None, io.StringIO()) is False
+
+
+def test_progress_auto_jupyter_kernel(monkeypatch):
+    """A Jupyter kernel's stderr is not a terminal, yet the bar is shown there."""
+    ZMQInteractiveShell = type("ZMQInteractiveShell", (), {"config": {}})
+    Colab = type("Shell", (ZMQInteractiveShell,), {})                      # e.g. Colab subclasses it
+    TerminalInteractiveShell = type("TerminalInteractiveShell", (), {"config": {}})
+    KernelConfigured = type("SomeShell", (), {"config": {"IPKernelApp": {}}})
+    for shell, expected in ((ZMQInteractiveShell(), True), (Colab(), True), (KernelConfigured(), True),
+                            (TerminalInteractiveShell(), False), (None, False)):
+        _fake_ipython(monkeypatch, shell)
+        assert progress_enabled(None, _Stream(False)) is expected, shell
+    monkeypatch.delitem(sys.modules, "IPython")                           # IPython not loaded: no kernel
+    assert progress_enabled(None, _Stream(False)) is False
+
+
+def test_progress_bar_is_used_when_enabled(monkeypatch):
+    """progress=None under a (fake) kernel drives a tqdm.auto bar to t_end."""
+    import tqdm.auto
+
+    _fake_ipython(monkeypatch, type("ZMQInteractiveShell", (), {"config": {}})())
+    seen = {}
+
+    class Bar:
+        def __init__(self, total, **kw):
+            seen["total"], seen["n"] = total, 0.0
+
+        def update(self, dt):
+            seen["n"] += dt
+
+        def close(self):
+            seen["closed"] = True
+
+    monkeypatch.setattr(tqdm.auto, "tqdm", Bar)
+    monkeypatch.setattr(sys, "stderr", _Stream(False))
+    r = simulate(chain_model(1), [0.0], [0.0], 0.1, method="RK4", dt=0.01)
+    assert r.status == "ok" and seen["total"] == 0.1 and seen["closed"]
+    assert seen["n"] == pytest.approx(0.1)
