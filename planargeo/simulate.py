@@ -21,9 +21,25 @@ Hooks (for closed loops and other constrained systems):
 ``energy(q, qd) -> float``
     Replace the default energy.
 
-A :class:`~planargeo.errors.SingularConfigurationError` raised by the
-dynamics stops the integration cleanly: the result holds the trajectory up to
-the last good step, ``status == "singular"`` and a ``message``.
+``condition(q, qd) -> float``
+    A condition number watched at every recorded step (``"joints"``: the
+    joints' ``sᵀAs``, :func:`planargeo.algorithms.stacked.joint_conditions`;
+    closed loops watch ``BᵀGΛ⁻¹GᵀB``, :func:`planargeo.simulate_loops.simulate_loops`).
+
+Singular configurations are events, recorded as data in ``result.events``
+(a list of dicts, in time order):
+
+* ``{"kind": "near-singular", "t", "cond", "t_start", "t_end"}`` for every
+  excursion of the watched condition number above ``cond_event``: ``t`` and
+  ``cond`` at the recorded step where it peaked, ``t_start``/``t_end`` the
+  first and last recorded steps above the threshold (the series itself is
+  ``result.cond``);
+* ``{"kind": "singular", "t", "cond", "message"}`` when the dynamics raise a
+  :class:`~planargeo.errors.SingularConfigurationError` (the algorithms refuse
+  condition numbers above their limit, e.g. ``sᵀAs`` above 1e12 or the contact
+  matrix above 1e10): ``t`` is the time of the failing evaluation and ``cond``
+  the error's.  The integration then stops cleanly: the result holds the
+  trajectory up to the last good step, ``status == "singular"`` and a ``message``.
 
 Examples
 --------
@@ -46,7 +62,7 @@ from .errors import InputError, SingularConfigurationError
 from .kinematics import check_state, kinematics
 from .model import Model
 
-__all__ = ["simulate", "SimulationResult", "energy", "progress_enabled", "METHODS"]
+__all__ = ["simulate", "SimulationResult", "energy", "progress_enabled", "near_singular_events", "METHODS"]
 
 METHODS = ("RK45", "DOP853", "Radau", "RK4")
 
@@ -81,6 +97,10 @@ class SimulationResult:
     kinetic, potential, energy : ndarray (T,)
     residual : ndarray (T, m) or None
         Constraint residuals (when a ``residual`` hook was given).
+    cond : ndarray (T,) or None
+        The watched condition number per recorded step (when ``condition`` was given).
+    events : list of dict
+        Singular and near-singular events (module docstring).
     status : str
         ``"ok"``, ``"singular"`` (a singular configuration stopped the run) or
         ``"failed"`` (the integrator gave up).
@@ -102,6 +122,8 @@ class SimulationResult:
     method: str = ""
     nfev: int = 0
     extra: dict[str, Any] = field(default_factory=dict)
+    cond: np.ndarray | None = None
+    events: list = field(default_factory=list)
 
     @property
     def success(self) -> bool:
@@ -176,7 +198,8 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
              rtol: float = 1e-8, atol: float = 1e-10, dt: float | None = None, max_step: float = math.inf,
              forward: Callable | None = None, stabilize: Callable | None = None,
              project: Callable | None = None, residual: Callable | None = None,
-             energy_fn: Callable | None = None, progress: bool | None = None) -> SimulationResult:
+             energy_fn: Callable | None = None, condition: Callable | str | None = None,
+             cond_event: float = 1e6, progress: bool | None = None) -> SimulationResult:
     """Integrate ``q̈ = forward(q, q̇, τ)`` from ``(q0, qd0)`` over ``[0, t_end]`` (thesis 3.41-3.42, 2.9 in time).
 
     The state ``y = (q, q̇)`` obeys ``ẏ = (q̇, q̈)`` with ``q̈`` from the
@@ -206,6 +229,12 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         Largest step of the adaptive methods.
     forward, stabilize, project, residual, energy_fn : callables, optional
         Hooks, see the module docstring.
+    condition : callable ``(q, qd) -> float``, ``"joints"`` or None
+        Condition number to watch at every recorded step (``"joints"``: the
+        largest of the joints' ``sᵀAs``, for trees and chains); ``None``: only
+        the singular stops are recorded.
+    cond_event : float
+        A watched condition number above this opens a ``"near-singular"`` event.
     progress : bool or None
         Show a tqdm progress bar (``tqdm.auto``); ``None`` (default) decides
         automatically: on when stderr is a terminal or inside a Jupyter/IPython
@@ -215,7 +244,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     -------
     SimulationResult
         ``status`` is ``"ok"``, ``"singular"`` (stopped cleanly at a singular
-        configuration) or ``"failed"``.
+        configuration) or ``"failed"``; ``events`` the (near-)singular events.
 
     Raises
     ------
@@ -261,6 +290,14 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     nq = model.nq
     tau_c = None if callable(tau) else (np.zeros(nq) if tau is None else as_array(tau, "tau", (nq,)))
     fext_c = None if callable(f_ext) else (None if f_ext is None else as_array(f_ext, "f_ext", (model.N, 3)))
+    if condition == "joints":
+        from .algorithms.stacked import joint_conditions
+
+        def condition(q, qd):
+            return float(np.max(joint_conditions(model, q), initial=1.0))
+    elif condition is not None and not callable(condition):
+        raise InputError(f"condition must be a callable, 'joints' or None, got {condition!r}")
+    cond_event = as_scalar(cond_event, "cond_event")
     nfev = 0
 
     def qdd_of(t, q, qd):
@@ -268,7 +305,11 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         nfev += 1
         ta = tau(t, q, qd) if tau_c is None else tau_c
         fe = f_ext(t, q, qd) if callable(f_ext) else fext_c
-        a = forward(model, q, qd, ta, fe)
+        try:
+            a = forward(model, q, qd, ta, fe)
+        except SingularConfigurationError as exc:
+            exc.t = float(t)                     # when it happened (a stage may lie past the last step)
+            raise
         if stabilize is not None:
             a = stabilize(t, q, qd, a)
         return a
@@ -283,16 +324,25 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
 
     ts, ys = [], []
 
+    cs = []
+
+    def watch(y):
+        # at record time: a hook may reuse the value of the dynamics evaluation at this very state
+        return float(condition(y[:nq], y[nq:])) if condition is not None else math.nan
+
     def record(t, y):
+        y = np.array(y, dtype=float)
+        c = watch(y)
         ts.append(float(t))
-        ys.append(np.array(y, dtype=float))
+        ys.append(y)
+        cs.append(c)
 
     y = np.concatenate([q0, qd0]).astype(float)
     if project is not None:
         qp, qdp = project(y[:nq], y[nq:])
         y = np.concatenate([qp, qdp])
     record(0.0, y)
-    status, message = "ok", ""
+    status, message, singular = "ok", "", None
     bar = _progress(progress, t_end)
     t = 0.0
     try:
@@ -352,6 +402,8 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
                     qp, qdp = project(solver.y[:nq], solver.y[nq:])
                     yp = np.concatenate([qp, qdp])
                     if dt is None:
+                        if not np.array_equal(yp, ys[-1]):
+                            cs[-1] = watch(yp)
                         ys[-1] = yp
                     if solver.status == "running" and not np.array_equal(yp, solver.y):
                         h = min(solver.step_size or (t_end - t), t_end - t)
@@ -359,6 +411,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     except SingularConfigurationError as exc:
         status = "singular"
         message = f"stopped at t = {t:.6g}: singular configuration: {exc}"
+        singular = {"kind": "singular", "t": getattr(exc, "t", t), "cond": exc.cond, "message": str(exc)}
     finally:
         if bar is not None:
             bar.close()
@@ -371,5 +424,47 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     res = None
     if residual is not None:
         res = np.array([np.atleast_1d(np.asarray(residual(qs[k], qds[k]), dtype=float)) for k in range(len(ts))])
-    return SimulationResult(t=np.array(ts), q=qs, qd=qds, kinetic=Ts, potential=Vs, energy=Ts + Vs,
-                            residual=res, status=status, message=message, method=method, nfev=nfev)
+    tt = np.array(ts)
+    conds = None
+    events = []
+    if condition is not None:
+        conds = np.array(cs)
+        events = near_singular_events(tt, conds, cond_event)
+    if singular is not None:
+        events.append(singular)
+    return SimulationResult(t=tt, q=qs, qd=qds, kinetic=Ts, potential=Vs, energy=Ts + Vs,
+                            residual=res, status=status, message=message, method=method, nfev=nfev,
+                            cond=conds, events=events)
+
+
+def near_singular_events(t, cond, threshold: float) -> list[dict]:
+    """``"near-singular"`` events of a condition-number series: one per excursion above ``threshold``.
+
+    Each is ``{"kind", "t", "cond", "t_start", "t_end"}`` with the peak's time
+    and value and the first/last times above the threshold (``nan`` counts as
+    above: a condition number that could not be computed).
+
+    Examples
+    --------
+    >>> ev = near_singular_events([0, 1, 2, 3, 4, 5], [1, 1e7, 1e9, 1e8, 1, 1e7], 1e6)
+    >>> [(e["t"], e["cond"], e["t_start"], e["t_end"]) for e in ev]
+    [(2.0, 1000000000.0, 1.0, 3.0), (5.0, 10000000.0, 5.0, 5.0)]
+    """
+    t = np.asarray(t, dtype=float)
+    c = np.asarray(cond, dtype=float)
+    above = ~(c <= threshold)
+    out = []
+    k, n = 0, len(c)
+    while k < n:
+        if not above[k]:
+            k += 1
+            continue
+        e = k
+        while e + 1 < n and above[e + 1]:
+            e += 1
+        seg = np.where(np.isnan(c[k:e + 1]), np.inf, c[k:e + 1])
+        p = k + int(np.argmax(seg))
+        out.append({"kind": "near-singular", "t": float(t[p]), "cond": float(c[p]),
+                    "t_start": float(t[k]), "t_end": float(t[e])})
+        k = e + 1
+    return out

@@ -1,7 +1,7 @@
 """Simulation of closed-loop mechanisms (thesis 9.5 integrated in time).
 
 :func:`simulate_loops` integrates the accelerations of the constrained
-projective dynamics algorithm (:func:`planargeo.algorithms.loops.forward_dynamics_loops`)
+projective dynamics algorithm (:func:`planargeo.algorithms.loops.loop_solve`)
 with :func:`planargeo.simulate.simulate`.  The loop closures hold exactly
 only at the acceleration level (``B^T (G a - ν) = 0``, 9.55/9.60), so the
 positions and velocities drift; two documented stabilisations are offered:
@@ -26,11 +26,17 @@ Diagnostics per recorded step (``result.residual`` columns and ``result.extra``)
 energy (kinetic + gravitational; conserved for a free mechanism without
 drives), the position residuals ``φ`` and the velocity residuals ``J_c q̇``.
 
-Measured (slider-crank of 9.6, free crank, g = 9.81, 10 s ≈ 44 crank turns,
-DOP853 with ``rtol = 1e-8``, projection triggered above 1e-10): position
-residual ≤ 5e-11, velocity residual ≤ 1e-10, relative energy drift 8e-7
-(24 560 dynamics evaluations).  Without stabilisation the residuals grow
-by about 1e-8 per second at that tolerance.
+Documented tolerances (``docs/simulation.md``, the figures the tests assert):
+slider-crank of 9.6, free crank, g = 9.81, 10 s (44 crank turns), DOP853
+with ``rtol = 1e-7``, ``atol = 1e-9``, projection triggered above 1e-10:
+position and velocity residuals below 1e-9 (measured 8.6e-11 and 1.0e-10,
+the trigger), relative energy drift below 2e-5 (measured 4.1e-6; 6.9e-7 at
+``rtol = 1e-8``), 18 600 dynamics evaluations.  Without stabilisation the
+position residual reaches 4e-6 after 1 s at that tolerance.
+
+Singular configurations (a dead centre where ``BᵀGΛ⁻¹GᵀB`` loses rank) are
+watched and recorded as events (``result.cond``, ``result.events``; see
+:mod:`planargeo.simulate`).
 """
 from __future__ import annotations
 
@@ -39,7 +45,7 @@ from typing import Callable
 
 import numpy as np
 
-from .algorithms.loops import forward_dynamics_loops
+from .algorithms.loops import loop_condition, loop_solve
 from .algorithms.stacked import blocks
 from .contacts import contact_matrix, residual as contact_residual, stacked_contact_spaces, validate_contacts
 from .errors import InputError
@@ -191,7 +197,7 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
                    method: str = "DOP853", rtol: float = 1e-8, atol: float = 1e-10, dt: float | None = None,
                    max_step: float = math.inf, stabilization: str = "projection", alpha: float = 5.0,
                    beta: float = 5.0, prescribed=None, tol: float = 1e-12, trigger: float = 1e-10,
-                   project_initial: bool = True,
+                   project_initial: bool = True, watch: bool = True, cond_event: float = 1e6,
                    progress: bool | None = None) -> SimulationResult:
     """Integrate a closed-loop mechanism with stabilised loop closures (thesis 9.5, 9.65-9.75 in time).
 
@@ -223,13 +229,32 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
         The projection runs only when a position or velocity residual exceeds
         ``trigger`` (each projection restarts the integrator); residuals stay
         below ``trigger`` plus one step's drift.
+    project_initial : bool
+        Project ``(q0, qd0)`` onto the manifold before starting.
+    watch : bool
+        Record ``cond(BᵀGΛ⁻¹GᵀB)`` (9.70-9.72) at every recorded step
+        (``result.cond``) and its excursions above ``cond_event`` as
+        ``"near-singular"`` events (``result.events``; see
+        :mod:`planargeo.simulate`).  Nearly free: the value of the dynamics
+        evaluation at the accepted state is reused when there is one
+        (DOP853/RK45), also after a projection that moved ``q`` by ``|Δq|``
+        with ``cond |Δq| < 1e-8``; otherwise
+        :func:`planargeo.algorithms.loops.loop_condition`.
+        A configuration the solver refuses (condition number above
+        :data:`planargeo.algorithms.loops.SINGULAR_COND`, e.g. a folded dead
+        centre) stops the run with a ``"singular"`` event whatever ``watch``.
+    cond_event : float
+        Threshold of the near-singular events.
+    progress : bool or None
+        Progress bar (:func:`planargeo.simulate.progress_enabled`).
 
     Returns
     -------
     SimulationResult
         ``residual`` holds ``[φ(q), J_c q̇]`` per recorded step;
         ``extra["position_residual"]`` and ``extra["velocity_residual"]`` their
-        maxima per step, ``extra["n_position"]`` the number of position residuals.
+        maxima per step, ``extra["n_position"]`` the number of position residuals;
+        ``cond`` and ``events`` the watched condition number and the singular events.
 
     Examples
     --------
@@ -252,8 +277,22 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
                 raise InputError(f"prescribed keys must be joint indices in 0..{model.N - 1}, got {i!r}")
             fixed.extend(range(model.q_slice(i).start, model.q_slice(i).stop))
 
+    last = {}                                  # cond(BᵀGΛ⁻¹GᵀB) of the last state solved
+
     def forward(m, q, qd, ta, fe):
-        return forward_dynamics_loops(m, q, qd, ta, fe, cs, prescribed=prescribed)
+        sol = loop_solve(m, q, qd, ta, fe, cs, prescribed=prescribed)
+        last["q"], last["cond"] = np.array(q, dtype=float), sol.cond
+        return sol.qdd
+
+    def condition(q, qd):
+        # The adaptive methods evaluate the dynamics at the accepted state last (FSAL): reuse its
+        # cond, also after a projection that moved q by |Δq| with cond |Δq| < 1e-8 (K depends on q
+        # only and smoothly: the relative change of cond is about cond |Δq| per unit length).
+        if "q" in last and np.abs(last["q"] - q).max() * last["cond"] < 1e-8:
+            return last["cond"]
+        c = loop_condition(model, q, cs, prescribed=prescribed)
+        last["q"], last["cond"] = np.array(q, dtype=float), c
+        return c
 
     use_proj = stabilization in ("projection", "both")
     use_baum = stabilization in ("baumgarte", "both")
@@ -274,7 +313,8 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
     res = simulate(model, q0, qd0, t_end, tau=tau, f_ext=f_ext, method=method, rtol=rtol, atol=atol, dt=dt,
                    max_step=max_step, forward=forward,
                    stabilize=baumgarte(model, cs, alpha, beta, fixed=fixed) if use_baum else None,
-                   project=project if use_proj else None, residual=resid, progress=progress)
+                   project=project if use_proj else None, residual=resid,
+                   condition=condition if watch else None, cond_event=cond_event, progress=progress)
     npos = sum(c.nc for c in cs)
     R = res.residual if res.residual is not None else np.zeros((len(res.t), 0))
     res.extra["n_position"] = npos

@@ -168,3 +168,13 @@ def reference(psi, psidot, *, m=M, r=R, l=L, t=T, g=9.81, drive="free", method="
     return dict(q=q, qd=qd, v=np.array([J @ qd for J, _ in Js]), H=H, C=C, J3=J3, Jc=Jc, B3=B3, h=h,
                 Lambda3_inv=J3 @ np.linalg.solve(H, J3.T), u=u, xi=xi, F3=B3 @ xi, a=a, a3=a[2], qdd=qdd,
                 qdd_open=qdd_open, tau_drive=tau_drive)
+
+
+def contact_matrix_cond(q, m=M, r=R, l=L, t=T, drive="free"):
+    """``cond(J_c H⁻¹ J_cᵀ)`` at any ``q``: the reference's ``B₃ᵀ Λ₃⁻¹ B₃`` (9.70), singular at the folded
+    dead centre.  A constant-speed crank adds its drive row ``ψ̇`` (the drive's ``B = s (sᵀs)⁻¹``, ``s = [0, 0, 1]``)."""
+    H, _ = mass_matrix_and_bias(q, np.zeros(3), m, r, l, t, 0.0)
+    Jc = complex_step_jacobian(lambda x: closure(x, r, l, t), q)
+    if drive == "constant-speed":
+        Jc = np.vstack([Jc, [1.0, 0.0, 0.0]])
+    return float(np.linalg.cond(Jc @ np.linalg.solve(H, Jc.T)))

@@ -37,7 +37,7 @@ from ..kinematics import check_state, kinematics
 from ..model import Model
 from .stacked import blocks, stacked_solve, trunk, adjacency
 
-__all__ = ["LoopSolution", "loop_solve", "forward_dynamics_loops", "constrained_dynamics_lagrange",
+__all__ = ["LoopSolution", "loop_solve", "loop_condition", "forward_dynamics_loops", "constrained_dynamics_lagrange",
            "branch_matrix", "SINGULAR_COND"]
 
 #: ``B^T G Λ^{-1} G^T B`` is declared singular above this condition number.
@@ -272,6 +272,32 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
     sol.tau_drive = tau_drive
     sol.data = data
     return sol
+
+
+def loop_condition(model: Model, q, contacts=None, *, prescribed=None) -> float:
+    """Condition number of ``B^T G Λ^{-1} G^T B`` at ``q`` (thesis 9.70-9.72), without raising.
+
+    The matrix depends on ``q`` only (``Λ^{-1}`` and ``B``); :func:`loop_solve`
+    refuses it above :data:`SINGULAR_COND`.  Here a singular configuration
+    returns the condition number found (``inf`` when exactly singular), also
+    when it is the open tree's ``sᵀAs`` that is singular.  Used to watch a
+    closed-loop simulation for dead centres (:func:`planargeo.simulate_loops.simulate_loops`).
+
+    Examples
+    --------
+    The folded slider-crank (``l = r``) at ``ψ = 0`` is singular; the thesis's is not:
+
+    >>> from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
+    >>> loop_condition(slider_crank_model(l=2.29), [0.0, np.pi, -np.pi / 2]) > 1e15
+    True
+    >>> round(loop_condition(slider_crank_model(), slider_crank_state()[0]), 3)
+    5.905
+    """
+    nq = model.nq
+    try:
+        return float(loop_solve(model, q, np.zeros(nq), np.zeros(nq), None, contacts, prescribed=prescribed).cond)
+    except SingularConfigurationError as exc:
+        return exc.cond
 
 
 def forward_dynamics_loops(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribed=None):

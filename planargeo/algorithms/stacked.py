@@ -46,6 +46,7 @@ from ..subspaces import _effective_mobility, _percussion_space, reactive_acceler
 from ..model import Model, _cycle_error, _find_cycle
 
 __all__ = ["adjacency", "trunk", "blocks", "reaction_basis", "quake_space", "StackedSolution", "stacked_solve",
+           "joint_conditions",
            "articulated_quantities", "articulation_matrix", "stacked_mobility",
            "tree_mobilities", "direct_accelerations", "forward_dynamics_stacked"]
 
@@ -239,6 +240,57 @@ def articulated_quantities(model: Model, data, tau):
             A[j] = A[j] + P[i] @ Ai
             d[j] = d[j] + T[i] @ Qi + P[i] @ (Ai @ kap[i] + d[i])
     return {"A": A, "d": d, "s": s, "T": T, "P": P, "points": list(np.asarray(data.pose)[:, :2])}
+
+
+def joint_conditions(model: Model, q) -> np.ndarray:
+    """Scale-free condition number of every joint's ``sᵀAs`` at ``q`` (thesis 7.7a, 6.105; the singular case of 3.6).
+
+    ``cond_i = ‖A_i‖ ‖s_i‖² / σ_min(s_iᵀ A_i s_i)`` (Frobenius norms), the
+    package's singularity rule (:mod:`planargeo.subspaces`, limit
+    ``COND_LIMIT = 1e12``), with ``A_i`` the articulated inertias of the
+    tree (``A = I + C^T R U^T A C``).  Unlike the forward dynamics it never
+    raises: a singular joint gets ``inf`` (and is treated as locked for its
+    parent).  ``A`` does not depend on ``q̇``.  Joints with no coordinates
+    (``"fixed"``) get ``1.0``.  Used to watch a simulation for singular
+    configurations (:func:`planargeo.simulate.simulate`, ``condition="joints"``).
+
+    Examples
+    --------
+    A unit point mass on the pivot of a rod along which a second unit point
+    mass slides (at ``x``): ``sᵀAs = m x²`` for the pivot and ``‖A‖ ≈ √5 m``,
+    so ``cond ≈ √5 / x²``; the slider's own ``‖I‖ ‖s‖² / sᵀIs = √(2 + 2x² + x⁴)``.
+
+    >>> from planargeo.model import Body, Joint, Model
+    >>> m = Model([Body(1.0), Body(1.0)], [Joint("revolute"), Joint("prismatic")], [-1, 0])
+    >>> c = joint_conditions(m, [0.0, 1e-3])
+    >>> round(float(c[0]) * 1e-6, 3), round(float(c[1]), 3)
+    (2.236, 1.414)
+    >>> float(joint_conditions(m, [0.0, 0.0])[0])
+    inf
+    """
+    q = np.asarray(q, dtype=float)
+    data = _kinematics_scalar(model, q, np.zeros(model.nq), None)
+    N = model.N
+    A = [data.I[i].copy() for i in range(N)]
+    offs = model.q_offsets
+    out = np.ones(N)
+    eye3 = np.eye(3)
+    for i in range(N - 1, -1, -1):
+        Ai = A[i] = 0.5 * (A[i] + A[i].T)
+        si = data.S[:, offs[i]:offs[i + 1]]
+        P = eye3
+        if si.shape[1]:
+            M = si.T @ Ai @ si
+            M = 0.5 * (M + M.T)
+            smin = float(np.abs(np.linalg.eigvalsh(M)).min()) if M.shape[0] > 1 else abs(float(M[0, 0]))
+            scale = float(np.sqrt(np.vdot(Ai, Ai))) * float(np.vdot(si, si))
+            out[i] = scale / smin if smin > 0 else np.inf
+            if np.isfinite(out[i]):
+                P = eye3 - Ai @ si @ np.linalg.solve(M, si.T)        # R U^T = 1 - T s^T (7.8)
+        j = model.parents[i]
+        if j >= 0:
+            A[j] = A[j] + P @ Ai
+    return out
 
 
 def quake_space(s, T, R=None, point=(0.0, 0.0)):
