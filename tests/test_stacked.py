@@ -178,6 +178,25 @@ def test_stacked_200_bodies(tree):
     assert np.abs(forward_dynamics_stacked(m, q, qd, tau, fe, method="direct") - ref).max() < tol
 
 
+@pytest.mark.parametrize("n", [50, 200])
+@pytest.mark.parametrize("shape", ["uniform", "deep"])
+@pytest.mark.parametrize("seed", range(3))
+def test_stacked_matches_crba_large_random_trees(n, shape, seed):
+    """Random trees of 50 and 200 bodies (revolute + prismatic, external loads), both stacked solutions
+    (9.39 and the direct 9.48) against CRBA within 100 eps cond(H) relative (measured <= 2.3 eps cond(H))."""
+    from test_articulated_reference import random_state, rtol_for
+    from test_projective_dyn import large_tree
+
+    m = large_tree(n, seed, shape)
+    q, qd, tau, fe = random_state(m, np.random.default_rng(seed))
+    ref = forward_dynamics_crba(m, q, qd, tau, fe)
+    rtol = rtol_for(m, q)
+    scale = max(np.linalg.norm(ref), 1.0)
+    for method in ("articulation", "direct"):
+        err = np.linalg.norm(forward_dynamics_stacked(m, q, qd, tau, fe, method=method) - ref) / scale
+        assert err <= rtol, (method, err, rtol)
+
+
 def test_batched_states():
     rng = np.random.default_rng(3)
     m = random_model(4, seed=3, tree=True)
