@@ -33,7 +33,7 @@ from .screws import (X_P, X_P_inv_T, Twist, Wrench, add_twists, add_wrenches, bi
                      crm, inertia_at, kappa, kinetic_energy, momentum, power, rot)
 from .inertia import Inertia, percussion_axis, percussion_pole
 from . import joints
-from .joints import fixed, plane, prismatic, revolute, revolute_prismatic
+from .joints import fixed, plane, prismatic, revolute, revolute_prismatic, twin_prismatic
 from .subspaces import Decomposition, percussion_space, reactive_acceleration_space
 from .model import Body, Joint, Model
 from . import scenes
@@ -56,7 +56,7 @@ __all__ = [
     "kappa", "bias_force", "momentum", "power", "kinetic_energy", "inertia_at",
     "Inertia", "percussion_axis", "percussion_pole",
     # joints and subspaces
-    "joints", "revolute", "prismatic", "revolute_prismatic", "plane", "fixed",
+    "joints", "revolute", "prismatic", "revolute_prismatic", "twin_prismatic", "plane", "fixed",
     "Decomposition", "percussion_space", "reactive_acceleration_space",
     # mechanisms
     "Body", "Joint", "Model", "scenes",

@@ -25,6 +25,7 @@ kind (dof)                    ``s`` columns               ``R`` columns
 ``prismatic`` (1)             translation along ``e``     unit force through ``p`` along ``e⊥``, couple
 ``revolute_prismatic`` (2)    translation ``e``,          unit force through ``p`` along ``e⊥``
                               rotation about ``p``
+``twin_prismatic`` (2)        translations ``e``, ``e⊥``  unit couple (the line at infinity)
 ``plane`` (3)                 translations ``e``, ``e⊥``, (none)
                               rotation about ``p``
 ``fixed`` (0)                 (none)                      unit forces through ``p`` along x, y, couple
@@ -38,10 +39,14 @@ translation first, then rotation.
 and :func:`reaction_space` are the vectorised array functions behind it.
 
 Note: thesis 4.8.4 calls its 2-dof "twin prismatic" joint (translations x
-and y, 4.79) a *plane joint*; here ``plane`` is the 3-dof free planar joint of
-the package's model (:class:`planargeo.model.Joint` kinds), whose reaction
-space is empty.  The column order of every kind matches
-:func:`planargeo.kinematics.joint_axes`.
+and y, 4.79) a *plane joint*; here that joint is ``twin_prismatic``
+(:func:`twin_prismatic`; with ``direction = (1, 0)`` its ``s`` is 4.79
+exactly, and its reaction space is the unit couple ``[0, 0, 1]``, the line at
+infinity, whatever ``point``), while ``plane`` is the 3-dof free planar joint
+of the package's model (:class:`planargeo.model.Joint` kinds), whose reaction
+space is empty.  The column order of every kind the model knows matches
+:func:`planargeo.kinematics.joint_axes`; ``twin_prismatic`` is not (yet) a
+model joint kind, its columns are the first two of ``plane``.
 """
 from __future__ import annotations
 
@@ -52,15 +57,15 @@ from .errors import InputError, ShapeError
 from .screws import unit_rotation, unit_translation
 
 __all__ = ["KINDS", "DOF", "motion_space", "reaction_space", "reaction_space_of", "JointSpace",
-           "revolute", "prismatic", "revolute_prismatic", "plane", "fixed"]
+           "revolute", "prismatic", "revolute_prismatic", "twin_prismatic", "plane", "fixed"]
 
 #: Joint kinds understood by :func:`motion_space` / :func:`reaction_space`.
-KINDS = ("revolute", "prismatic", "revolute_prismatic", "plane", "fixed")
+KINDS = ("revolute", "prismatic", "revolute_prismatic", "twin_prismatic", "plane", "fixed")
 
 #: Degrees of freedom of each kind.
-DOF = {"revolute": 1, "prismatic": 1, "revolute_prismatic": 2, "plane": 3, "fixed": 0}
+DOF = {"revolute": 1, "prismatic": 1, "revolute_prismatic": 2, "twin_prismatic": 2, "plane": 3, "fixed": 0}
 
-_USES_DIRECTION = ("prismatic", "revolute_prismatic", "plane")
+_USES_DIRECTION = ("prismatic", "revolute_prismatic", "twin_prismatic", "plane")
 
 
 def _check_kind(kind) -> str:
@@ -95,13 +100,14 @@ def motion_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
 
     Parameters
     ----------
-    kind : {"revolute", "prismatic", "revolute_prismatic", "plane", "fixed"}
+    kind : {"revolute", "prismatic", "revolute_prismatic", "twin_prismatic", "plane", "fixed"}
     point : array_like, shape (..., 2)
         The joint's pivot (revolute), a point on the slide (prismatic), the
-        joint frame's origin (plane), the weld point (fixed).
+        joint frame's origin (plane, twin prismatic: its ``s`` and ``R`` do
+        not depend on it), the weld point (fixed).
     direction : array_like, shape (..., 2)
-        Slide direction (prismatic kinds), the joint frame's x axis (plane);
-        normalised; ignored by ``revolute`` and ``fixed``.
+        Slide direction (prismatic kinds), the joint frame's x axis (plane,
+        twin prismatic); normalised; ignored by ``revolute`` and ``fixed``.
         A zero direction raises :class:`~planargeo.errors.DegenerateGeometryError`.
 
     Returns
@@ -120,6 +126,10 @@ def motion_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
     array([[0.],
            [1.],
            [0.]])
+    >>> motion_space("twin_prismatic")                # thesis 4.79
+    array([[1., 0.],
+           [0., 1.],
+           [0., 0.]])
     >>> motion_space("fixed", (1.0, 1.0)).shape
     (3, 0)
     """
@@ -130,8 +140,10 @@ def motion_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
         return np.array(e)[..., None]
     if kind == "revolute_prismatic":
         return np.stack([e, unit_rotation(p)], axis=-1) + 0.0
-    if kind == "plane":
-        perp = np.stack([-e[..., 1], e[..., 0], e[..., 2]], axis=-1)
+    if kind in ("twin_prismatic", "plane"):
+        perp = np.stack([-e[..., 1], e[..., 0], e[..., 2]], axis=-1) + 0.0
+        if kind == "twin_prismatic":
+            return np.stack([e, perp], axis=-1)
         return np.stack([e, perp, unit_rotation(p)], axis=-1) + 0.0
     return np.zeros(shape + (3, 0))
 
@@ -162,6 +174,10 @@ def reaction_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
     array([[ 1.,  0.],
            [ 0.,  1.],
            [-1.,  2.]])
+    >>> reaction_space("twin_prismatic", (2.0, 1.0))        # the couple: line at infinity
+    array([[0.],
+           [0.],
+           [1.]])
     """
     kind, p, e, shape = _prepare(kind, point, direction)
     if shape == ():
@@ -174,6 +190,8 @@ def reaction_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
         return np.stack([_force_through(p, ex), _force_through(p, ey)], axis=-1)
     if kind == "plane":
         return np.zeros(shape + (3, 0))
+    if kind == "twin_prismatic":
+        return np.array(couple)[..., None]
     if kind in _USES_DIRECTION:
         normal = np.stack([-e[..., 1], e[..., 0]], axis=-1)
         cols = [_force_through(p, normal)]
@@ -200,7 +218,7 @@ def reaction_space_of(s, point=(0.0, 0.0)) -> np.ndarray:
     * ``k = 2``: the span holds one translation ``e`` and rotations about the
       points of one line; ``R`` = the unit force along ``e⊥`` through the
       rotation point (kind ``revolute_prismatic``); two translations (the
-      twin prismatic joint of 4.79) give the unit couple;
+      twin prismatic joint of 4.79, kind ``twin_prismatic``) give the unit couple;
     * ``k = 3``: empty; ``k = 0``: weld at ``point``.
 
     The kind test ``w ≠ 0`` is exact (a translation is an ordinary ideal
@@ -249,7 +267,7 @@ def reaction_space_of(s, point=(0.0, 0.0)) -> np.ndarray:
         return reaction_space("prismatic", point, (x, y))
     (x1, y1, w1), (x2, y2, w2) = a[:, 0], a[:, 1]
     if w1 == 0.0 and w2 == 0.0:
-        return np.array([[0.0], [0.0], [1.0]])              # two translations: only a couple
+        return reaction_space("twin_prismatic")             # two translations: only a couple
     e = w2 * a[:2, 0] - w1 * a[:2, 1]                      # the translation in the span
     rot = a[:, 1] if w2 != 0.0 else a[:, 0]
     return reaction_space("revolute_prismatic", (-rot[1] / rot[2], rot[0] / rot[2]), e * np.sign(w2 or -w1))
@@ -266,7 +284,8 @@ class JointSpace:
 
     Frozen: the arrays are read-only.  Build with the named constructors
     :func:`revolute`, :func:`prismatic`, :func:`revolute_prismatic`,
-    :func:`plane`, :func:`fixed` (or ``JointSpace(kind, point, direction)``).
+    :func:`twin_prismatic`, :func:`plane`, :func:`fixed` (or
+    ``JointSpace(kind, point, direction)``).
 
     Single joints only: ``point`` and ``direction`` must have shape ``(2,)``
     (a batch raises :class:`~planargeo.errors.ShapeError`).  For many joints
@@ -278,7 +297,7 @@ class JointSpace:
     point : ndarray, shape (2,)
         Pivot / point on the slide / joint-frame origin / weld point.
     direction : ndarray, shape (2,) or None
-        Unit slide direction (prismatic kinds, plane), else ``None``.
+        Unit slide direction (prismatic kinds, twin prismatic, plane), else ``None``.
     s : ndarray, shape (3, k)
         Motion space, unit twists at the origin.
     R : ndarray, shape (3, 3 - k)
@@ -343,7 +362,7 @@ class JointSpace:
 
     @property
     def direction(self) -> np.ndarray | None:
-        """Unit slide direction, shape (2,), read-only (prismatic kinds, plane), else ``None``.
+        """Unit slide direction, shape (2,), read-only (prismatic kinds, twin prismatic, plane), else ``None``.
 
         Examples
         --------
@@ -447,13 +466,48 @@ def revolute_prismatic(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     return JointSpace("revolute_prismatic", point, direction)
 
 
+def twin_prismatic(direction=(1.0, 0.0), point=(0.0, 0.0)) -> JointSpace:
+    """Two-dof twin prismatic joint, thesis 4.8.4's "plane joint" (4.79): slides along ``direction`` and its normal.
+
+    ``s = [e, e⊥]`` (two unit translations, ``e⊥`` the direction turned by
+    +90°); with the default ``direction = (1, 0)`` this is 4.79,
+    ``s = [[1, 0], [0, 1], [0, 0]]``.  Rotation is blocked by a couple only:
+    ``R = [0, 0, 1]``, the line at infinity, reciprocal to every translation
+    (the ideal points lie on the line at infinity).  ``point`` (the joint
+    frame's origin) does not change ``s`` or ``R``; it is kept for drawing.
+    The argument order follows :func:`prismatic`.  One joint: ``direction``
+    and ``point`` of shape ``(2,)``.
+
+    Not a kind of :class:`planargeo.model.Joint`; in a model the same motion
+    is the ``"plane"`` joint with its rotation left out.
+
+    Examples
+    --------
+    >>> j = twin_prismatic()
+    >>> j.s                                      # thesis 4.79
+    array([[1., 0.],
+           [0., 1.],
+           [0., 0.]])
+    >>> j.R                                      # the unit couple
+    array([[0.],
+           [0.],
+           [1.]])
+    >>> twin_prismatic((0.0, 2.0)).s              # e = y, e⊥ = -x
+    array([[ 0., -1.],
+           [ 1.,  0.],
+           [ 0.,  0.]])
+    """
+    return JointSpace("twin_prismatic", point, direction)
+
+
 def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
-    """Free planar (3-dof) joint: slides along ``direction`` and its normal, turns about ``point`` (thesis 4.79, 5.62).
+    """Free planar (3-dof) joint: slides along ``direction`` and its normal, turns about ``point`` (thesis 4.79 + 4.64, 5.62).
 
     The columns follow the package's ``Model`` joint ``"plane"`` (translations
     along the joint frame's x and y axes, then rotation about its origin); with
     the defaults ``s`` is the identity.  ``R`` is empty.  One joint: ``point``
-    and ``direction`` of shape ``(2,)``.
+    and ``direction`` of shape ``(2,)``.  Thesis 4.8.4's 2-dof "plane joint"
+    (4.79, no rotation) is :func:`twin_prismatic`.
 
     Examples
     --------

@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 from planargeo import errors
 from planargeo.joints import (DOF, KINDS, JointSpace, fixed, motion_space, plane, prismatic,
-                              reaction_space, revolute, revolute_prismatic)
+                              reaction_space, revolute, revolute_prismatic, twin_prismatic)
 from planargeo.screws import X_P, X_P_inv_T
 
 coord = st.floats(-10, 10, allow_nan=False)
@@ -43,9 +43,62 @@ def test_revolute_prismatic_matches_thesis_4_74(lam):
                                [[c, 0.0], [s, 0.0], [0.0, 1.0]], atol=1e-15)
 
 
+def test_twin_prismatic_matches_thesis_4_79():
+    """Thesis 4.8.4 "plane joint": s = [e_x, e_y] (4.79); R = the couple [0, 0, 1] (line at infinity)."""
+    j = twin_prismatic()
+    np.testing.assert_array_equal(j.s, [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])   # (4.79)
+    np.testing.assert_array_equal(j.R, [[0.0], [0.0], [1.0]])
+    np.testing.assert_array_equal(j.s.T @ j.R, [[0.0], [0.0]])                 # (5.61)
+    assert j.dof == 2 and j.kind == "twin_prismatic"
+    import planargeo
+    assert planargeo.twin_prismatic is twin_prismatic and "twin_prismatic" in planargeo.__all__
+    # plane (3 dof) is still the free joint: 4.79 plus the rotation about the frame origin
+    np.testing.assert_array_equal(plane().s, np.eye(3))
+
+
+@given(coord, coord, angle)
+def test_twin_prismatic_rotated_and_placed(x, y, lam):
+    """Frame x axis at angle λ: s = [(c, s, 0), (-s, c, 0)] (4.79 turned by λ); R is the couple wherever it is."""
+    c, s = np.cos(lam), np.sin(lam)
+    j = twin_prismatic(_dir(lam), (x, y))
+    np.testing.assert_allclose(j.s, [[c, -s], [s, c], [0.0, 0.0]], atol=1e-15)
+    np.testing.assert_array_equal(j.R, [[0.0], [0.0], [1.0]])
+    np.testing.assert_allclose(j.s.T @ j.R, 0.0, atol=0.0)                     # exact: translations are ideal
+    # seen from the joint point, still two translations and a pure couple (frame changes 4.8, 4.24)
+    np.testing.assert_allclose(X_P((x, y)) @ j.s, j.s, atol=1e-15)
+    np.testing.assert_allclose(X_P_inv_T((x, y)) @ j.R, j.R, atol=1e-15)
+    # it slides but does not turn: a rotation is not in span(s) (rank 3 with any unit rotation)
+    assert np.linalg.matrix_rank(np.column_stack([j.s, [y, -x, 1.0]])) == 3
+
+
+def test_twin_prismatic_subspace_identities():
+    """Chapter 6 identities with a hand-derived T and U for a body with c.o.m. (a, b), mass m, inertia J about it.
+
+    With s = [e_x, e_y] at the origin and I = [[m, 0, -m b], [0, m, m a], [-m b, m a, J + m(a²+b²)]] (4.58),
+    sᵀIs = m·1, so T = I s / m = first two columns of I divided by m.  With R = [0, 0, 1], RᵀI⁻¹R = (I⁻¹)₂₂
+    = 1/J (the rotational part of the mobility at the c.o.m.), so U = J · I⁻¹[:, 2] = [b, -a, 1]: the
+    rotation about the centre of mass (a couple turns a free body about its c.o.m.).
+    """
+    from planargeo.subspaces import Decomposition
+
+    m, a, b, J = 2.0, 0.5, -1.5, 0.8
+    I = np.array([[m, 0.0, -m * b], [0.0, m, m * a], [-m * b, m * a, J + m * (a * a + b * b)]])
+    j = twin_prismatic()
+    dec = Decomposition.from_joint(j, I)
+    T_hand = np.array([[1.0, 0.0], [0.0, 1.0], [-b, a]])
+    U_hand = np.array([[b], [-a], [1.0]])
+    np.testing.assert_allclose(dec.T, T_hand, atol=1e-14)
+    np.testing.assert_allclose(dec.U, U_hand, atol=1e-14)
+    np.testing.assert_allclose(j.s.T @ dec.T, np.eye(2), atol=1e-14)           # sᵀT = 1
+    np.testing.assert_allclose(j.R.T @ dec.U, [[1.0]], atol=1e-14)             # RᵀU = 1
+    np.testing.assert_allclose(dec.T.T @ dec.U, 0.0, atol=1e-14)               # TᵀU = 0
+    np.testing.assert_allclose(dec.T @ j.s.T + j.R @ dec.U.T, np.eye(3), atol=1e-14)   # (6.75)
+
+
 def test_dof_and_shapes():
     for j, k in [(revolute((1, 2)), 1), (prismatic((1, 1), (3, 0)), 1),
-                 (revolute_prismatic((1, 2), (0, 1)), 2), (plane(), 3), (fixed((4, 5)), 0)]:
+                 (revolute_prismatic((1, 2), (0, 1)), 2), (twin_prismatic((0, 1), (1, 2)), 2),
+                 (plane(), 3), (fixed((4, 5)), 0)]:
         assert j.dof == k == DOF[j.kind]
         assert j.s.shape == (3, k) and j.R.shape == (3, 3 - k)
 
@@ -167,9 +220,16 @@ def test_non_finite_and_bad_kind():
 
 @given(kinds, coord, coord, angle)
 def test_motion_space_matches_model_kinematics(kind, x, y, phi):
-    """Same columns, same order as the Model's kinematics (planargeo.kinematics.joint_axes at q = 0)."""
+    """Same columns, same order as the Model's kinematics (planargeo.kinematics.joint_axes at q = 0).
+
+    ``twin_prismatic`` is not a Model joint kind: its columns are the two translations of ``plane``.
+    """
     from planargeo.kinematics import joint_axes
 
+    if kind == "twin_prismatic":
+        cols, _ = joint_axes("plane", np.array(x), np.array(y), np.array(phi), np.zeros(3))
+        np.testing.assert_allclose(motion_space(kind, (x, y), _dir(phi)), np.stack(cols[:2], axis=-1), atol=1e-12)
+        return
     k = DOF[kind]
     cols, _ = joint_axes(kind, np.array(x), np.array(y), np.array(phi), np.zeros(k))
     ref = np.stack(cols, axis=-1) if cols else np.zeros((3, 0))

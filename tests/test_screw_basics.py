@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
 from planargeo.errors import DegenerateGeometryError, NonFiniteError, ShapeError
+from planargeo.joints import twin_prismatic
 from planargeo.screws import (
     X_P, X_P_inv_T, Twist, Wrench, bias_force, crf, crm, inertia_at, inertia_matrix, kappa,
     kinetic_energy, momentum, pole_xy, power, reciprocal, rot, unit_rotation, wrench_axis,
@@ -186,7 +187,9 @@ def test_plane_joint_bias_4_81_to_4_83(k):
     v = np.array([vx + ux, vy + uy, w])                                # 4.81
     kap = np.array([-uy * w, ux * w, 0.0])                             # 4.82
     p = np.array([-m * w * (uy + vy) - m * C * w ** 2, m * w * (ux + vx), m * C * w * (ux + vx)])  # 4.83
-    np.testing.assert_allclose(kappa(v, np.eye(3)[:, :2], [ux, uy]), kap, atol=1e-12)
+    s = twin_prismatic().s                                             # 4.79
+    np.testing.assert_allclose(v, np.array([vx, vy, w]) + s @ [ux, uy], atol=1e-12)   # 4.81 = v_prev + s q̇
+    np.testing.assert_allclose(kappa(v, s, [ux, uy]), kap, atol=1e-12)
     np.testing.assert_allclose(bias_force(I458(m, k["r"], C), v), p, atol=1e-12)
 
 
