@@ -83,7 +83,8 @@ def _vec(x, name) -> np.ndarray:
 # mass, centre_of_mass, rotational_inertia and radius_of_gyration read the
 # entries of the rigid-body form 4.58 and do not check it: for an articulated
 # inertia (no such structure) the numbers mean nothing.  The Inertia class
-# checks the structure, so its properties are always meaningful.
+# checks the structure, so its properties are always meaningful.  The three
+# that divide by the mass reject a zero or negative ``inertia[0, 0]``.
 # ---------------------------------------------------------------------------
 
 def mass(inertia) -> np.ndarray:
@@ -100,31 +101,55 @@ def mass(inertia) -> np.ndarray:
     return np.asarray(_mat(inertia)[..., 0, 0])
 
 
+def _with_mass(inertia, name: str = "inertia") -> np.ndarray:
+    """The inertia array, after checking its mass ``inertia[0, 0] > 0`` (every one of a batch).
+
+    Raises :class:`InputError` naming the argument and the first bad mass,
+    e.g. ``"inertia: mass inertia[0, 0] must be positive, got -1.0"``.
+    """
+    I = _mat(inertia, name)
+    m = I[..., 0, 0]
+    bad = ~(m > 0)
+    if np.any(bad):
+        raise InputError(f"{name}: mass {name}[0, 0] must be positive, got {float(m[bad].ravel()[0])!r}")
+    return I
+
+
 def centre_of_mass(inertia) -> np.ndarray:
     """Centre of mass ``c = (I[1, 2], -I[0, 2]) / m`` (thesis 1.66, 4.58).
 
     It is also the centre of the conic: the pole of the line at infinity
     (thesis 5.2.2), i.e. the point whose axis of percussion is a pure couple.
 
+    Raises :class:`~planargeo.errors.InputError` if the mass ``inertia[0, 0]``
+    is zero or negative (there is no centre of mass to divide out).
+
     Examples
     --------
     >>> centre_of_mass(inertia_matrix(2.0, [1.0, -3.0], 0.5))
     array([ 1., -3.])
+    >>> centre_of_mass(np.diag([-1.0, -1.0, 1.0]))
+    Traceback (most recent call last):
+        ...
+    planargeo.errors.InputError: inertia: mass inertia[0, 0] must be positive, got -1.0
     """
-    I = _mat(inertia)
+    I = _with_mass(inertia)
     m = I[..., 0, 0]
     return np.stack([I[..., 1, 2] / m, (0.0 - I[..., 0, 2]) / m], axis=-1)
 
 
 def rotational_inertia(inertia) -> np.ndarray:
-    """Rotational inertia ``J = m ρ²`` about the centre of mass (parallel axis theorem).
+    """Rotational inertia ``J = m ρ²`` about the centre of mass (parallel axis theorem, thesis 1.68, 4.58).
+
+    Raises :class:`~planargeo.errors.InputError` if the mass ``inertia[0, 0]``
+    is zero or negative.
 
     Examples
     --------
     >>> rotational_inertia(inertia_matrix(2.0, [1.0, -3.0], 0.5))
     array(0.5)
     """
-    I = _mat(inertia)
+    I = _with_mass(inertia)
     c = centre_of_mass(I)
     return np.asarray(I[..., 2, 2] - I[..., 0, 0] * np.einsum("...i,...i->...", c, c))
 
@@ -132,12 +157,15 @@ def rotational_inertia(inertia) -> np.ndarray:
 def radius_of_gyration(inertia) -> np.ndarray:
     """Radius of gyration ``ρ = sqrt(J / m)`` (thesis 4.58, 5.64).
 
+    Raises :class:`~planargeo.errors.InputError` if the mass ``inertia[0, 0]``
+    is zero or negative.
+
     Examples
     --------
     >>> radius_of_gyration(inertia_matrix(2.0, [1.0, 0.0], 0.5))
     array(0.5)
     """
-    I = _mat(inertia)
+    I = _with_mass(inertia)
     return np.asarray(np.sqrt(np.maximum(rotational_inertia(I) / I[..., 0, 0], 0.0)))
 
 

@@ -121,3 +121,25 @@ def test_rigid_structure_survives_frame_changes_and_sums():
     Inertia(1e-12 * inertia_matrix(2.0, [1.0, -3.0], 0.98))
     with pytest.raises(InputError, match="matrix must be a rigid-body inertia"):
         Inertia(1e-12 * np.diag([1.0, 1.001, 1.0]))
+
+
+@pytest.mark.parametrize("fn", [planargeo.inertia.centre_of_mass, planargeo.inertia.rotational_inertia,
+                                planargeo.inertia.radius_of_gyration])
+@pytest.mark.parametrize("m, shown", [(-1.0, r"-1\.0"), (0.0, r"0\.0"), (-2.5, r"-2\.5")])
+def test_features_reject_zero_or_negative_mass(fn, m, shown):
+    # a rigid-body form 4.58 with m <= 0 (hand-built: inertia_matrix itself refuses such a mass)
+    I = np.array([[m, 0.0, 0.0], [0.0, m, 0.0], [0.0, 0.0, 1.0]])
+    with pytest.raises(InputError, match=rf"^inertia: mass inertia\[0, 0\] must be positive, got {shown}$"):
+        fn(I)
+    # one bad inertia in a batch is reported by its value
+    batch = np.stack([inertia_matrix(1.0, [0.0, 0.0], 1.0), I])
+    with pytest.raises(InputError, match=rf"^inertia: mass inertia\[0, 0\] must be positive, got {shown}$"):
+        fn(batch)
+
+
+def test_features_of_good_masses_are_the_hand_values():
+    # I = inertia_matrix(m, c, J): c, J and ρ = sqrt(J/m) come back (4.58), for a batch too, without warnings
+    I = np.stack([inertia_matrix(2.0, [1.0, -3.0], 0.5), inertia_matrix(4.0, [0.0, 2.0], 9.0)])
+    np.testing.assert_allclose(planargeo.inertia.centre_of_mass(I), [[1.0, -3.0], [0.0, 2.0]], atol=1e-14)
+    np.testing.assert_allclose(planargeo.inertia.rotational_inertia(I), [0.5, 9.0], atol=1e-13)
+    np.testing.assert_allclose(planargeo.inertia.radius_of_gyration(I), [0.5, 1.5], atol=1e-14)
