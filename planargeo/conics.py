@@ -503,6 +503,12 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
     on_miss : {"raise", "nan"}
         A line that does not cut the conic in two distinct real points raises
         :class:`InputError` naming ``lines[i]``, or gives NaN elements.
+    rtol : float
+        Relative tolerance of both numerical tests: a given line passes through
+        ``p`` when ``|lines[i] · p| <= rtol |lines[i]| |p|`` (else
+        :class:`InputError` naming ``lines[i]``), and a line whose intersection
+        discriminant is within ``rtol`` of zero is a tangent (as in
+        :func:`line_conic_intersections`).
 
     Examples
     --------
@@ -523,10 +529,12 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
     else:
         lines = as_array(lines, "lines", (2, 3))
         inc = np.abs(np.einsum("...i,...ki->...k", p, lines))
-        off = inc > 1e-9 * np.linalg.norm(lines, axis=-1) * np.linalg.norm(p, axis=-1)[..., None]
+        scale = np.linalg.norm(lines, axis=-1) * np.linalg.norm(p, axis=-1)[..., None]
+        off = inc > rtol * scale
         if np.any(off):
-            i = int(np.argwhere(off)[0][-1])
-            raise InputError(f"lines[{i}] does not pass through p")
+            j = tuple(np.argwhere(off)[0])
+            raise InputError(f"lines[{j[-1]}] does not pass through p: |lines[{j[-1]}] · p| = "
+                             f"{float(inc[j]):.3g} > rtol |lines[{j[-1]}]| |p| = {float(rtol * scale[j]):.3g}")
     X, real = _intersections(C[..., None, :, :], _unit(lines), rtol)
     distinct = real & ~np.all(_cross(X[..., 0, :], X[..., 1, :]) == 0, axis=-1)
     if on_miss == "raise" and not np.all(distinct):

@@ -260,6 +260,19 @@ def test_interior_construction_with_given_lines_and_errors():
         polar_construction_interior(C, from_xy([3.0, 0.0]), lines=[[0.0, 1.0, 3.0], [1.0, 0.0, 0.0]])
 
 
+def test_interior_construction_incidence_uses_rtol():
+    # p = (1, 0) = [0, -1, 1]; the line y = 1e-6 (a force along x through (1, 1e-6): [1, 0, -1e-6], 5.56)
+    # misses p by |l·p| = 1e-6, i.e. 1e-6 / sqrt(2) relative to |l| |p|
+    C = conic_circle([0.0, 0.0], 2.0)
+    p = from_xy([1.0, 0.0])
+    near = [1.0, 0.0, -1e-6]
+    vertical = [0.0, 1.0, 1.0]                                     # x = 1 through p: force along y through (1, 0)
+    with pytest.raises(InputError, match=r"^lines\[0\] does not pass through p: \|lines\[0\] · p\| = 1e-06 > "):
+        polar_construction_interior(C, p, lines=[near, vertical])          # default rtol 1e-9
+    K = polar_construction_interior(C, p, lines=[near, vertical], rtol=1e-5)   # accepted with a looser rtol
+    assert same_up_to_scale(K.polar, [0.0, 1.0, 4.0], tol=1e-5)           # still x = 4 = r²/|p|
+
+
 def test_interior_point_has_no_tangents():
     C = conic_circle([0.0, 0.0], 1.0)
     with pytest.raises(InputError, match="p has no real tangents to C"):
