@@ -78,14 +78,26 @@ def parse_value(text: str) -> Any:
 def parse_sets(sets: list[str], defaults: dict[str, Any] | None = None) -> dict[str, Any]:
     """``["a=1", "b=x"]`` -> ``{"a": 1, "b": "x"}``; ints become floats where the default is a float.
 
-    Raises ``ValueError`` for an item without ``=`` or with an empty name.
+    Raises :class:`~planargeo.errors.InputError` for an item without ``=`` or
+    with an empty name (``planargeo report`` exits with status 2 on it).
+
+    Examples
+    --------
+    >>> parse_sets(["n=2", "lam=3"], {"n": 4, "lam": 2.0})
+    {'n': 2, 'lam': 3.0}
+    >>> parse_sets(["n"])
+    Traceback (most recent call last):
+        ...
+    planargeo.errors.InputError: --set expects NAME=VALUE, got 'n'
     """
+    from .errors import InputError
+
     out: dict[str, Any] = {}
     for item in sets:
         name, sep, value = item.partition("=")
         name = name.strip()
         if not sep or not name:
-            raise ValueError(f"--set expects NAME=VALUE, got {item!r}")
+            raise InputError(f"--set expects NAME=VALUE, got {item!r}")
         v = parse_value(value)
         if defaults is not None and isinstance(defaults.get(name), float) and type(v) is int:
             v = float(v)
@@ -190,7 +202,7 @@ def _error(msg: str, code: int) -> int:
 def main(args: argparse.Namespace) -> int:
     """Run ``planargeo report``; returns the exit status."""
     from . import scenes
-    from .errors import PlanargeoError
+    from .errors import InputError, PlanargeoError
 
     if args.list:
         listing = {}
@@ -210,10 +222,11 @@ def main(args: argparse.Namespace) -> int:
         return _error("a scene name is required (planargeo report --list shows them)", 2)
     try:
         defaults = scenes.parameters(args.scene)
-        params = parse_sets(args.sets, defaults)
     except PlanargeoError as exc:
         return _error(str(exc).splitlines()[0], 1)
-    except ValueError as exc:
+    try:
+        params = parse_sets(args.sets, defaults)
+    except InputError as exc:                  # a malformed --set: a usage error
         return _error(str(exc).splitlines()[0], 2)
     try:
         # overflow and invalid arithmetic are reported once, below, not as numpy warnings

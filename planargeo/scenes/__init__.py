@@ -18,7 +18,7 @@ from typing import Any, Callable
 
 import numpy as np
 
-from ..errors import NonFiniteError, SceneError, ShapeError
+from ..errors import InputError, NonFiniteError, SceneError, ShapeError
 
 __all__ = ["SceneResult", "register", "get", "names", "parameters", "build", "check_param",
            "SceneNonFiniteError", "SceneShapeError"]
@@ -159,6 +159,9 @@ def check_param(name: str, value: Any, kind: str = "float", *, positive: bool = 
         Wrong type, out of range or not one of ``choices``;
         :class:`SceneNonFiniteError` for NaN / inf and :class:`SceneShapeError`
         for an array (subclasses of ``SceneError``).
+    InputError
+        ``kind`` is not one of ``"float"``, ``"int"``, ``"choice"`` (a mistake
+        in the scene module, not in the user's parameters).
 
     Examples
     --------
@@ -199,7 +202,7 @@ def check_param(name: str, value: Any, kind: str = "float", *, positive: bool = 
             raise SceneError(msg)
         return v
     if kind != "float":
-        raise ValueError(f"kind must be 'float', 'int' or 'choice', got {kind!r}")
+        raise InputError(f"kind must be 'float', 'int' or 'choice', got {kind!r}")
     if isinstance(value, (bool, np.bool_, str, bytes)) or value is None:
         raise SceneError(f"{name} must be numeric, got {value!r}")
     try:
