@@ -1,0 +1,94 @@
+"""README.md's ```python blocks run, and the results shown in their comments are what they return.
+
+A block is run statement by statement.  An expression statement whose trailing comment starts with
+a repr (``Point(...)``, ``Line(...)``, ...) must have exactly that repr; one whose comment starts
+with a number must have that value.  Independently of those comments, the "A first look" values
+are checked against hand computations (thesis 4.10 pole, power v·f, 5.67 axis of percussion).
+"""
+import ast
+import io
+import re
+import tokenize
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+README = Path(__file__).resolve().parents[1] / "README.md"
+REPR_START = re.compile(r"(Point|Line|Conic|Twist|Wrench|Inertia|JointSpace)\(")
+NUMBER_START = re.compile(r"[-+]?\d+(\.\d*)?([eE][-+]?\d+)?(?=[\s:;,]|$)")
+
+
+def python_blocks() -> list[str]:
+    blocks = re.findall(r"^```python\n(.*?)^```", README.read_text(encoding="utf-8"), re.S | re.M)
+    assert blocks, "README.md has no ```python block"
+    return blocks
+
+
+def _comments(src: str) -> dict[int, str]:
+    """Line number -> text of the comment on that line (without '#')."""
+    out = {}
+    for tok in tokenize.generate_tokens(io.StringIO(src).readline):
+        if tok.type == tokenize.COMMENT:
+            out[tok.start[0]] = tok.string[1:].strip()
+    return out
+
+
+def _balanced(text: str) -> str:
+    """The leading ``Name(...)`` of ``text``, up to its matching closing parenthesis."""
+    depth = 0
+    for i, ch in enumerate(text):
+        depth += ch == "("
+        depth -= ch == ")"
+        if ch == ")" and depth == 0:
+            return text[:i + 1]
+    raise AssertionError(f"unbalanced parentheses in README comment {text!r}")
+
+
+def run_block(src: str):
+    """Run ``src``; returns the namespace and ``[(line, source, value, comment)]`` of its expressions."""
+    tree = ast.parse(src)
+    comments = _comments(src)
+    ns: dict = {}
+    shown = []
+    for stmt in tree.body:
+        if isinstance(stmt, ast.Expr):
+            value = eval(compile(ast.Expression(stmt.value), "README.md", "eval"), ns)
+            shown.append((stmt.lineno, ast.get_source_segment(src, stmt), value, comments.get(stmt.end_lineno, "")))
+        else:
+            exec(compile(ast.Module([stmt], type_ignores=[]), "README.md", "exec"), ns)
+    return ns, shown
+
+
+@pytest.mark.parametrize("index", range(len(python_blocks())))
+def test_readme_block_runs_and_shows_what_it_returns(index):
+    _, shown = run_block(python_blocks()[index])
+    checked = 0
+    for line, source, value, comment in shown:
+        if REPR_START.match(comment):
+            assert repr(value) == _balanced(comment), f"README python block {index}, line {line}: {source}"
+            checked += 1
+        elif NUMBER_START.match(comment):
+            expected = float(NUMBER_START.match(comment).group(0))
+            assert float(np.asarray(value)) == pytest.approx(expected, rel=1e-12, abs=1e-12), \
+                f"README python block {index}, line {line}: {source}"
+            checked += 1
+    assert checked == sum(1 for *_, c in shown if c), "an expression's comment shows no checkable result"
+
+
+def test_first_look_values_against_hand_computations():
+    first = next(b for b in python_blocks() if "import planargeo as pg" in b)
+    ns, shown = run_block(first)
+    values = {source: value for _, source, value, _ in shown}
+    assert len(values) >= 4                                   # pole, line, power, axis of percussion
+    # 4.10: the pole of the rotation about (1, 2) is (1, 2)
+    pole = values["v.pole"]
+    np.testing.assert_allclose(pole.xy, [1.0, 2.0], atol=1e-15)
+    # power v·f = ω · (moment of f about the pole): f = (1, 0) through the origin, arm from the pole
+    # (0 - 1, 0 - 2): moment = (-1)(0) - (-2)(1) = 2, ω = 3
+    assert float(values["v @ f"]) == pytest.approx(3.0 * 2.0, abs=1e-14)
+    # 5.67: pole at the origin, c.o.m. at d = 1, ρ = 0.5: the axis is x = d + ρ²/d = 1.25, along y
+    axis = values["bat.percussion_axis(pg.Point.from_xy(0.0, 0.0))"]
+    assert axis.incidence(ns["pg"].Point.from_xy(1.25, 0.0)) == pytest.approx(0.0, abs=1e-14)
+    assert axis.incidence(ns["pg"].Point.from_xy(1.25, 7.0)) == pytest.approx(0.0, abs=1e-13)
+    assert abs(axis.incidence(ns["pg"].Point.from_xy(1.0, 0.0))) > 0.1
