@@ -11,11 +11,12 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.patches import Circle, Polygon, Rectangle
 
-from .artists import plot_line, plot_point
+from .artists import plot_line
 from .style import COLORS, LINEWIDTHS
 
 __all__ = ["link_polygon", "draw_body", "draw_link", "draw_pin", "draw_ground", "draw_slider",
-           "draw_frame", "draw_com", "draw_joint_split", "transform_shape"]
+           "draw_frame", "draw_com", "draw_joint_split", "transform_shape", "draw_contact",
+           "slider_guide", "draw_model"]
 
 
 def _ax(ax):
@@ -168,33 +169,126 @@ def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None):
     return out, (Q, mu, active, react)
 
 
-_ = plot_point
+def slider_guide(contact, pose, body_shape=None, *, clearance=0.04, margin=None):
+    """The guide of a slider contact in world coordinates, from the contact and the state.
+
+    The guide is the line through ``point_b`` (body b's frame, or the world for
+    the ground) along ``direction``, turned by body b's pose (9.83).  Its walls
+    sit ``clearance`` outside the drawn body a (``body_shape``, a shapely shape
+    in world coordinates: its half-width across the guide), and span body a's
+    extent along the guide plus ``margin`` (default: the body's width) at each end.
+
+    Returns ``(p0, e, n, half_width, (s0, s1))``: a point on the guide line, its
+    unit direction, the unit normal (``e`` turned by +90°), the half distance
+    between the walls and the wall span ``p0 + e s`` for ``s`` in ``[s0, s1]``.
+
+    Examples
+    --------
+    >>> from planargeo.contacts import Contact
+    >>> c = Contact("slider", 0, -1, point_a=(0.5, 0.0), direction=(0.0, 1.0), angle=np.pi / 2)
+    >>> pose = np.array([[0.0, 2.0, np.pi / 2]])            # body a upright on the line x = 0
+    >>> p0, e, n, hw, (s0, s1) = slider_guide(c, pose, link_polygon([0, 2], [0, 3], 0.3))
+    >>> e.round(12), n.round(12), round(hw, 6), (round(s0, 6), round(s1, 6))
+    (array([0., 1.]), array([-1.,  0.]), 0.19, (1.55, 3.45))
+    """
+    from ..contacts import world_point
+
+    pose = np.asarray(pose, float)
+    thb = 0.0 if contact.b < 0 else float(pose[contact.b, 2])
+    d = np.asarray(contact.direction, float)
+    c, s = np.cos(thb), np.sin(thb)
+    e = np.array([c * d[0] - s * d[1], s * d[0] + c * d[1]])
+    n = np.array([-e[1], e[0]])
+    p0 = np.asarray(world_point(pose, contact.b, contact.point_b), float)
+    pa = np.asarray(world_point(pose, contact.a, contact.point_a), float)
+    if body_shape is not None:
+        xy = np.vstack([np.asarray(g.exterior.coords) for g in getattr(body_shape, "geoms", [body_shape])])
+        across = (xy - p0) @ n
+        along = (xy - p0) @ e
+        half = float(np.max(np.abs(across)))
+        width = float(np.max(across) - np.min(across))
+        lo, hi = float(np.min(along)), float(np.max(along))
+    else:
+        half, width = 0.1, 0.2
+        lo = hi = float((pa - p0) @ e)
+    m = width if margin is None else float(margin)
+    return p0, e, n, half + clearance, (lo - m, hi + m)
+
+
+def draw_contact(contact, pose, ax=None, *, body_shape=None, size=0.08, clearance=0.04,
+                 zorder=7):
+    """Draw one contact of a model (thesis 9.3, 9.49) at the poses ``pose`` (N, 3).
+
+    * ``"pin"``: a white square with a dark rim at the contact point (a loop
+      closure, distinct from the tree's round pins);
+    * ``"slider"``: the two guide walls of :func:`slider_guide` (hatched outside
+      when the guide is the ground) and a dot at the contact point on body a;
+    * ``"weld"``: a filled dark square at the contact point.
+
+    Returns the list of artists.
+    """
+    from ..contacts import world_point
+
+    ax = _ax(ax)
+    pose = np.asarray(pose, float)
+    pa = np.asarray(world_point(pose, contact.a, contact.point_a), float)
+    out = []
+    if contact.kind == "slider":
+        p0, e, n, hw, (s0, s1) = slider_guide(contact, pose, body_shape, clearance=clearance)
+        ang = float(np.arctan2(e[1], e[0]))
+        length = s1 - s0
+        mid = p0 + e * (s0 + s1) / 2
+        for side in (1.0, -1.0):
+            wall = mid + side * hw * n
+            if contact.b < 0:   # hatching on the outside of each wall
+                out += draw_ground(wall, ax, width=length, angle=ang if side < 0 else ang + np.pi,
+                                   depth=0.6 * size, n=max(int(round(length / (1.5 * size))), 2),
+                                   zorder=zorder - 5)
+            else:
+                out += ax.plot(*np.column_stack([wall - e * length / 2, wall + e * length / 2]),
+                               color=COLORS["ground"], lw=1.2, zorder=zorder - 5)
+        out += ax.plot([pa[0]], [pa[1]], "o", ms=2.5, color="#222222", zorder=zorder)
+        return out
+    filled = contact.kind == "weld"
+    sq = Rectangle((pa[0] - size / 2, pa[1] - size / 2), size, size,
+                   facecolor="#222222" if filled else "white", edgecolor="#222222", lw=1.0,
+                   zorder=zorder)
+    ax.add_patch(sq)
+    return [sq]
 
 
 def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pin_radius=0.05,
-               show_com=True, alpha=0.35, names=None):
-    """Draw a model's bodies and joints at the state in ``data`` (from :func:`planargeo.kinematics.kinematics`).
+               show_com=True, alpha=0.35, names=None, contacts=True):
+    """Draw a model's bodies, joints and contacts at the state in ``data``.
 
+    ``data`` is a :class:`planargeo.model.Data` (from
+    :func:`planargeo.kinematics.kinematics` or the RNEA): poses, centres of
+    mass, joint origins and joint axes ``data.s(i)``.
     A body with a shapely ``shape`` is drawn from it (moved by its pose);
     otherwise as a rounded link from its joint to each child's joint (or, for
     a tip body, through its centre of mass).  Revolute joints are pins,
-    prismatic joints sliders; joints on the ground get hatching.
-    Returns a dict of lists of artists.
+    prismatic joints sliders along the joint's translation axis (the first
+    column of ``s_i``); joints on the ground get hatching.  With ``contacts``
+    every contact of ``model.contacts`` is drawn by :func:`draw_contact`
+    (slider guides from the contact and the state).
+    Returns a dict of lists of artists (``"bodies"``, ``"joints"``, ``"com"``,
+    ``"contacts"``) and the bodies' world shapes under ``"shapes"``.
     """
+    from shapely.ops import unary_union
+
     ax = _ax(ax)
     pose = np.asarray(data.pose)
     com = np.asarray(data.com)
     origin = np.asarray(data.origin)
-    out = {"bodies": [], "joints": [], "com": []}
+    out = {"bodies": [], "joints": [], "com": [], "contacts": [], "shapes": []}
     for i, body in enumerate(model.bodies):
         if body.shape is not None:
             shape = transform_shape(body.shape, pose[i])
         else:
             kids = model.children(i)
             ends = [origin[k] for k in kids] or [pose[i, :2] + 2 * (com[i] - pose[i, :2])]
-            from shapely.ops import unary_union
-
             shape = unary_union([link_polygon(pose[i, :2], e, width) for e in ends])
+        out["shapes"].append(shape)
         if names is not None:
             name = names[i]
         else:
@@ -209,7 +303,6 @@ def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pi
             out["com"] += draw_com(com[i], ax, radius=0.9 * pin_radius)
     for i, joint in enumerate(model.joints):
         o = origin[i]
-        th = pose[i, 2]
         if model.parents[i] == -1 and ground and joint.kind != "plane":
             out["joints"] += draw_ground(o - [0, pin_radius * 1.6], ax, width=10 * pin_radius,
                                          depth=1.6 * pin_radius)
@@ -217,7 +310,10 @@ def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pi
             out["joints"].append(draw_pin(pose[i, :2] if joint.kind == "revolute" else o, ax,
                                           radius=pin_radius))
         if joint.kind in ("prismatic", "revolute_prismatic"):
-            phi = th if joint.kind == "prismatic" else th
-            out["joints"] += draw_slider(pose[i, :2], (np.cos(phi), np.sin(phi)), ax,
-                                         size=(0.25, 0.14), track=0.9)
+            axis = np.asarray(data.s(i))[:2, 0]        # the translation column of s_i (world)
+            out["joints"] += draw_slider(pose[i, :2], axis, ax, size=(0.25, 0.14), track=0.9)
+    if contacts:
+        for c in model.contacts:
+            out["contacts"] += draw_contact(c, pose, ax, body_shape=out["shapes"][c.a],
+                                            size=1.6 * pin_radius)
     return out

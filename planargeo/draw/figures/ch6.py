@@ -10,10 +10,9 @@ from ...projective import from_xy, join, to_xy
 from ...scenes import build as build_scene
 from ...subspaces import Decomposition
 from ..artists import plot_conic, plot_line, plot_point
-from ..constructions import label
-from ..mechanism import draw_body, draw_com, draw_ground, draw_model, draw_pin, link_polygon
-from ..style import COLORS
+from ..mechanism import draw_body, draw_com, draw_model, draw_pin, link_polygon
 from . import fit_view, new_figure, register
+from ._layout import fit_panel, shape_points
 
 J = np.array([0.0, 0.0])
 
@@ -32,8 +31,15 @@ def _base(ax, shape, I):
     return c
 
 
-def _view(ax, pts, margin=0.12):
-    fit_view(ax, list(pts) + [[-0.6, -0.8], [2.6, 1.4]], margin=margin)
+def _on_line(L, y):
+    """The point of the line ``L`` (4.27: ``tz + y fx − x fy = 0``) at height ``y`` (L not horizontal)."""
+    return np.array([(L[2] + y * L[0]) / L[1], y])
+
+
+def _view(ax, shape, pts, margin=0.1, *, panel=False):
+    """Fit the view to the body and the computed points (single panel: the figure height too)."""
+    P = np.vstack([shape_points(shape), np.reshape(pts, (-1, 2))])
+    (fit_view if panel else fit_panel)(ax, P, margin=margin)
 
 
 @register("fig6_1", "Fig. 6.1 — basic decomposition at a pin joint: force space [T R₁ R₂] with "
@@ -47,23 +53,25 @@ def fig6_1():
     s = j.s[:, 0]
     T = I @ s
     R1, R2 = j.R[:, 0], j.R[:, 1]
-    plot_point(s, ax, glyph=False, text="$s = I^{-1}T$", text_offset=(-40, 8))
-    plot_line(T, ax, role="momentum", scale=None, text="$T = Is$", anchor=[2.2, 1.0])
-    pts = []
-    for k, R in enumerate((R1, R2), start=1):
-        plot_line(R, ax, role="reaction", scale=None, text=f"$R_{k}$",
-                  anchor=J + 1.1 * R[:2] / np.hypot(*R[:2]))
-        a = percussion_pole(I, R)
-        plot_point(a, ax, role="accel", glyph=False, text=f"$I^{{-1}}R_{k}$",
-                   text_offset=(6, 4) if k == 1 else (8, -14))
-        pts.append(to_xy(a))
-    _view(ax, pts)
+    plot_point(s, ax, glyph=False, text="$s = I^{-1}T$", text_offset=(-54, 6))
+    pts = [to_xy(percussion_pole(I, R)) for R in (R1, R2)]
+    lo = min(-0.5, pts[0][1] - 2.0)
+    plot_line(T, ax, role="momentum", scale=None, text="$T = Is$", anchor=_on_line(T, lo + 0.25),
+              text_offset=(5, -3))
+    for k, (R, off, anchor) in enumerate(((R1, (-14, -13), [pts[1][0] + 1.4, 0.0]),
+                                          (R2, (-14, -4), [0.0, pts[0][1]])), start=1):
+        plot_line(R, ax, role="reaction", scale=None, text=f"$R_{k}$", anchor=anchor,
+                  text_offset=off)
+        plot_point(percussion_pole(I, R), ax, role="accel", glyph=False, text=f"$I^{{-1}}R_{k}$",
+                   text_offset=(7, 3))
+    _view(ax, shape, pts + [[pts[1][0] + 1.5, lo], [-0.7, pts[0][1] + 0.3]], margin=0.02)
     return fig
 
 
 @register("fig6_2", "Fig. 6.2 — decoupled decomposition (6.36–6.48): the reactive accelerations "
           "U = I⁻¹R(RᵀI⁻¹R)⁻¹ lie on the axis of percussion T, U₁ on R₂ and U₂ on R₁, so "
-          "RᵀU = 1 (6.47–6.48). From subspaces.Decomposition.", 6.02)
+          "RᵀU = 1 (6.47–6.48). Drawn with the inverse that the printed (6.33)–(6.34) miss (there RᵀU = (RᵀI⁻¹R)², not 1; "
+          "docs/errata.md, (6.33)–(6.34)). From subspaces.Decomposition.", 6.02)
 def fig6_2():
     fig, ax = new_figure(3.4, 2.6)
     shape, I = _body()
@@ -71,16 +79,18 @@ def fig6_2():
     j = revolute(J)
     dec = Decomposition.from_joint(j, I)
     assert np.allclose(dec.R.T @ dec.U, np.eye(2))
-    plot_point(j.s[:, 0], ax, glyph=False, text="$s$", text_offset=(-14, 8))
-    plot_line(dec.T[:, 0], ax, role="momentum", scale=None, text="$T$", anchor=[2.4, 1.0])
-    pts = []
-    for k in range(2):
-        R = dec.R[:, k]
-        plot_line(R, ax, role="reaction", scale=None, text=f"$R_{k + 1}$",
-                  anchor=J + 1.1 * R[:2] / np.hypot(*R[:2]))
-        plot_point(dec.U[:, k], ax, role="accel", glyph=False, text=f"$U_{k + 1}$")
-        pts.append(to_xy(dec.U[:, k]))
-    _view(ax, pts)
+    plot_point(j.s[:, 0], ax, glyph=False, text="$s$", text_offset=(-12, 5))
+    pts = [to_xy(dec.U[:, k]) for k in range(2)]     # U₁ on R₂ (x = 0), U₂ on R₁ (y = 0)
+    T = dec.T[:, 0]
+    plot_line(T, ax, role="momentum", scale=None, text="$T$", anchor=_on_line(T, -0.45),
+              text_offset=(5, -3))
+    for k, (off, anchor) in enumerate((((-14, -13), [pts[1][0] + 1.0, 0.0]),
+                                       ((-14, -4), [0.0, 0.5 * (1.0 + pts[0][1])]))):
+        plot_line(dec.R[:, k], ax, role="reaction", scale=None, text=f"$R_{k + 1}$", anchor=anchor,
+                  text_offset=off)
+        plot_point(dec.U[:, k], ax, role="accel", glyph=False, text=f"$U_{k + 1}$",
+                   text_offset=(6, 3))
+    _view(ax, shape, pts + [[pts[1][0] + 1.1, -0.6], [-0.6, pts[0][1] + 0.3]], margin=0.02)
     return fig
 
 
@@ -105,15 +115,22 @@ def _split_panels(kind):
         assert np.allclose(a1, j.s @ (dec.T.T @ np.linalg.solve(I, f)))
         panels = (("A", a1, f1, "$a_1 = I^{-1}f_1$", "$f_1 = TQ$"),
                   ("B", a2, f2, "$a_2 = I^{-1}f_2$", "$f_2 = R\\mu$"))
+    T = dec.T[:, 0]
     for ax, (tag, a, f, ta, tf) in zip(axs, panels):
         _base(ax, shape, I)
-        plot_line(dec.T[:, 0], ax, role="construct", scale=None, text="$T$", anchor=[2.5, 1.2])
-        plot_point(a, ax, role="accel", text=ta)
-        plot_line(f, ax, role="wrench", scale=0.6 / max(np.hypot(*f[:2]), 1e-12) if np.any(f[:2])
-                  else None, text=tf, anchor=to_xy(a) if a[2] != 0 else None,
-                  corner="lower right")
+        plot_line(T, ax, role="construct", scale=None, text="$T$", anchor=_on_line(T, -0.85),
+                  text_offset=(5, -2))
+        xa = to_xy(a)
+        plot_point(a, ax, role="accel", text=ta,
+                   text_offset=(-62, -16) if np.hypot(*xa) < 0.1 else (10, 1))
+        # the force arrow where its line leaves the body (upper end), its label beside it
+        e = f[:2] / np.hypot(*f[:2])
+        top = _on_line(f, 1.3) if abs(e[1]) > 0.3 else xa
+        rising = e[0] * e[1] > 0            # label on the side the line leaves free
+        plot_line(f, ax, role="wrench", scale=0.6 / np.hypot(*f[:2]), text=tf, anchor=top,
+                  text_offset=(-56, -4) if rising else (7, -4))
         ax.text(0.02, 0.96, tag, transform=ax.transAxes, fontsize=9, fontweight="bold", va="top")
-        _view(ax, [to_xy(a)])
+        _view(ax, shape, [xa, [-0.7, -0.95], [2.9, 1.9]], margin=0.02, panel=True)
     return fig
 
 
@@ -146,14 +163,18 @@ def fig6_5():
     psi_i, psi_prev = T @ w.a[i], T @ w.a[i - 1]
     qdd = psi_i - T @ (w.a[i - 1] + w.kappa[i])
     assert np.isclose(qdd, QDD47[i])
-    draw_model(m, w, ax, show_com=False)
-    plot_line(T, ax, role="momentum", scale=None, text="$T_2$")
+    arts = draw_model(m, w, ax, show_com=False)
+    P = np.vstack([shape_points(*arts["shapes"]), to_xy(w.a[i - 1]), to_xy(w.a[i])])
+    lo = P.min(axis=0)
+    plot_line(T, ax, role="momentum", scale=None, text="$T_2$", text_offset=(-4, 6),
+              anchor=P.max(axis=0) - [0.9, 0.0])
     plot_point(w.s(i)[:, 0], ax, glyph=False, text="$s_2$", text_offset=(-16, -12))
-    plot_point(w.a[i - 1], ax, role="accel", text="$a_1$")
-    plot_point(w.a[i], ax, role="accel", text="$a_2$")
-    ax.text(0.02, 0.98, f"$\\psi_2$ = {psi_i:.3g},  $\\psi_1$ = {psi_prev:.3g},  "
-            f"$\\ddot q_2$ = {qdd:.3g}", transform=ax.transAxes, fontsize=7, va="top")
-    fit_view(ax, [to_xy(w.a[i - 1]), to_xy(w.a[i]), *w.origin], margin=0.15)
+    plot_point(w.a[i - 1], ax, role="accel", text="$a_1$", text_offset=(-18, 6))
+    plot_point(w.a[i], ax, role="accel", text="$a_2$", text_offset=(17, -6))
+    fit_panel(ax, np.vstack([P, lo - [0.0, 0.45]]), margin=0.04)
+    ax.text(0.98, 0.02, f"$\\psi_2$ = {psi_i:.3g},  $\\psi_1$ = {psi_prev:.3g},  "
+            f"$\\ddot q_2$ = {qdd:.3g}", transform=ax.transAxes, fontsize=7, ha="right",
+            va="bottom")
     return fig
 
 
@@ -169,22 +190,30 @@ def fig6_6():
     for t in ex["tyres"]:
         draw_body(t, ax, color="#333333", alpha=0.9)
     draw_com(ex["cg"], ax, radius=0.12)
-    plot_point(ex["s"][:, 0], ax, glyph=False, text="ICR ($s$)", text_offset=(4, -20))
+    icr, rear, front = ex["icr"], ex["rear_contact"], ex["front_contact"]
+    plot_point(ex["s"][:, 0], ax, glyph=False, text="ICR ($s$)", text_offset=(-10, -16))
     sc = 1.0 / 1000.0
     R1mu, R2mu = ex["tyre_wrenches"][:, 0], ex["tyre_wrenches"][:, 1]
-    plot_line(R1mu, ax, role="reaction", scale=sc, anchor=0.5 * ex["rear_contact"],
-              text=f"$R_1\\mu_1$ = {qn['mu'][0]:.0f} N (rear)", text_offset=(30, -20))
-    plot_line(R2mu, ax, role="reaction", scale=sc, anchor=0.5 * ex["front_contact"],
-              text=f"$R_2\\mu_2$ = {qn['mu'][1]:.0f} N (front)", text_offset=(-30, 8))
-    plot_line(qn["f_A"], ax, scale=sc, anchor=ex["front_contact"] + 0.9 * ex["front_rolling"],
-              text="$f_A$")
-    plot_line(ex["T"][:, 0], ax, role="momentum", scale=None, text="$T$")
+    # force arrows halfway between the ICR and the tyres, labels on the open side of each line
+    plot_line(R1mu, ax, role="reaction", scale=sc, anchor=0.5 * (icr + rear),
+              text=f"$R_1\\mu_1$ = {qn['mu'][0]:.0f} N (rear)", text_offset=(-40, -15))
+    plot_line(R2mu, ax, role="reaction", scale=sc, anchor=0.5 * (icr + front),
+              text=f"$R_2\\mu_2$ = {qn['mu'][1]:.0f} N (front)", text_offset=(-70, 10))
+    fA = np.asarray(qn["f_A"])
+    eA = fA[:2] / np.hypot(*fA[:2])
+    anchor_A = front + 0.9 * ex["front_rolling"]
+    plot_line(fA, ax, scale=sc, anchor=anchor_A, text="$f_A$", text_offset=(-16, -4))
+    T = ex["T"][:, 0]
+    L_A = 0.5 * sc * np.hypot(*fA[:2])
+    P = np.vstack([shape_points(shape, *ex["tyres"]), icr, rear, front, to_xy(qn["a"]),
+                   anchor_A + eA * L_A, anchor_A - eA * L_A])
+    lo, hi = P.min(axis=0), P.max(axis=0)
+    plot_line(T, ax, role="momentum", scale=None, text="$T$", anchor=_on_line(T, lo[1] - 0.5),
+              text_offset=(-12, 0))
     plot_point(qn["a"], ax, role="accel", text="$a$", text_offset=(-14, 8))
-    pts = [ex["icr"], ex["rear_contact"], ex["front_contact"], to_xy(qn["a"])]
-    fit_view(ax, pts, margin=0.15)
-    ax.text(0.02, 0.98, f"$\\dot\\omega$ = {qn['omega_dot']:.3f} rad/s²", transform=ax.transAxes, fontsize=7,
-            va="top")
+    fit_panel(ax, np.vstack([P, [lo[0] - 0.6, lo[1] - 0.9], [hi[0] + 0.8, hi[1] + 0.5]]),
+              margin=0.02)
+    ax.text(0.02, 0.98, f"$\\dot\\omega$ = {qn['omega_dot']:.3f} rad/s²", transform=ax.transAxes,
+            fontsize=7, va="top")
     return fig
 
-
-_ = (draw_ground, COLORS)
