@@ -419,12 +419,31 @@ def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
 class ExteriorConstruction:
     """Elements of the polar construction of an exterior point (thesis 5.2.2, Fig. 5.2).
 
-    Attributes (all normalised homogeneous arrays)
-    ----------------------------------------------
-    point : (..., 3)          the point ``p``
-    tangents : (..., 2, 3)    step 1: the two tangents from ``p``
-    contacts : (..., 2, 3)    step 2: their contact points
-    polar : (..., 3)          step 3: the line joining the contacts; equals ``C p`` up to scale
+    Returned by :func:`polar_construction_exterior`, so that each step can be
+    drawn.  All arrays are normalised homogeneous coordinates (points with
+    ``w = 1``, lines with unit force).
+
+    Attributes
+    ----------
+    point : ndarray, shape (..., 3)
+        The point ``p``.
+    tangents : ndarray, shape (..., 2, 3)
+        Step 1: the two tangents from ``p``.
+    contacts : ndarray, shape (..., 2, 3)
+        Step 2: their contact points (``contacts[i]`` on ``tangents[i]``).
+    polar : ndarray, shape (..., 3)
+        Step 3: the line joining the contacts; equals ``C p`` (5.36) up to scale.
+
+    Examples
+    --------
+    >>> from planargeo.geometry import Line, Point
+    >>> K = polar_construction_exterior(conic_circle([0.0, 0.0], 1.0), [0.0, -2.0, 1.0])  # p = (2, 0)
+    >>> Point(K.point), [Point(x) for x in K.contacts]
+    (Point(x=2, y=0), [Point(x=0.5, y=0.866025), Point(x=0.5, y=-0.866025)])
+    >>> Line(K.tangents[0])
+    Line(through=(0.5, 0.866025), direction=(0.866025, -0.5))
+    >>> Line(K.polar)                                    # x = 1/2 through both contacts
+    Line(through=(0.5, 0), direction=(0, -1))
     """
 
     point: np.ndarray
@@ -437,14 +456,38 @@ class ExteriorConstruction:
 class InteriorConstruction:
     """Elements of the polar construction of an interior point (thesis 5.2.2, Fig. 5.3).
 
-    Attributes (all normalised homogeneous arrays)
-    ----------------------------------------------
-    point : (..., 3)               the point ``p``
-    lines : (..., 2, 3)            step 1: two lines through ``p``
-    chord_points : (..., 2, 2, 3)  step 1: where line ``i`` cuts the conic
-    tangents : (..., 2, 2, 3)      step 2: the tangents at those points
-    poles : (..., 2, 3)            steps 3-4: where each pair of tangents meets (pole of line ``i``)
-    polar : (..., 3)               step 5: the line joining the two poles; equals ``C p`` up to scale
+    Returned by :func:`polar_construction_interior`, so that each step can be
+    drawn.  All arrays are normalised homogeneous coordinates (points with
+    ``w = 1`` or unit length at infinity, lines with unit force).
+
+    Attributes
+    ----------
+    point : ndarray, shape (..., 3)
+        The point ``p``.
+    lines : ndarray, shape (..., 2, 3)
+        Step 1: two lines through ``p``.
+    chord_points : ndarray, shape (..., 2, 2, 3)
+        Step 1: the two points where line ``i`` cuts the conic.
+    tangents : ndarray, shape (..., 2, 2, 3)
+        Step 2: the tangents at those points.
+    poles : ndarray, shape (..., 2, 3)
+        Steps 3-4: where each pair of tangents meets, the pole of line ``i``
+        (Theorem 12); a point at infinity when line ``i`` is a diameter.
+    polar : ndarray, shape (..., 3)
+        Step 5: the line joining the two poles; equals ``C p`` (5.36) up to scale.
+
+    Examples
+    --------
+    >>> from planargeo.geometry import Line, Point
+    >>> K = polar_construction_interior(conic_circle([0.0, 0.0], 2.0), [0.0, -1.0, 1.0])  # p = (1, 0)
+    >>> [Line(l) for l in K.lines]                      # the x axis (a diameter) and x = 1
+    [Line(through=(0, 0), direction=(-1, 0)), Line(through=(1, 0), direction=(0, 1))]
+    >>> [Point(q) for q in K.chord_points[1]]           # x = 1 cuts the circle at (1, ±√3)
+    [Point(x=1, y=1.73205), Point(x=1, y=-1.73205)]
+    >>> [Point(q) for q in K.poles]                     # the diameter's pole is at infinity
+    [Point(at infinity, direction=(0, -1)), Point(x=4, y=0)]
+    >>> Line(K.polar)                                   # x = r²/|p| = 4
+    Line(through=(4, 0), direction=(0, -1))
     """
 
     point: np.ndarray

@@ -138,7 +138,19 @@ class Point:
 
     # geometry
     def join(self, other) -> "Line":
-        """The line through this point and ``other`` (thesis 5.32)."""
+        """The line through this point and ``other`` (thesis 5.32); also ``p ^ q``.
+
+        Joining with a point at infinity gives the line through this point in
+        that direction; two coincident points raise
+        :class:`~planargeo.errors.DegenerateGeometryError`.
+
+        Examples
+        --------
+        >>> Point.from_xy(0, 0).join(Point.from_xy(1, 1))
+        Line(through=(0, 0), direction=(0.707107, 0.707107))
+        >>> Point.from_xy(0, 2).join(Point.at_infinity((1, 0)))     # the horizontal line y = 2
+        Line(through=(0, 2), direction=(1, 0))
+        """
         return Line(_p.join(self._a, _as_point_array(other, "other")))
 
     def __xor__(self, other):
@@ -147,7 +159,19 @@ class Point:
         return NotImplemented
 
     def incidence(self, line) -> float:
-        """The form ``p @ l`` (thesis 5.23)."""
+        """The form ``p @ l`` (thesis 5.23): zero exactly when the point lies on ``line``.
+
+        For a twist and a wrench it is the power ``v·f``.  Its value depends on
+        the scale of both arrays; for a distance use :meth:`distance_to`.
+
+        Examples
+        --------
+        >>> y1 = Line.from_point_direction((0, 1), (1, 0))            # the line y = 1
+        >>> Point.from_xy(3, 1).incidence(y1), Point.from_xy(3, 2).incidence(y1)
+        (0.0, 1.0)
+        >>> Point.at_infinity((1, 0)) @ y1                            # y = 1 passes through it
+        0.0
+        """
         return float(_p.incidence(self._a, _as_line_array(line, "line")))
 
     def __matmul__(self, other):
@@ -253,7 +277,19 @@ class Line:
         return Line(_p.normalize_line(self._a))
 
     def meet(self, other) -> Point:
-        """The common point with ``other`` (thesis 5.34); parallel lines meet at infinity."""
+        """The common point with ``other`` (thesis 5.34); also ``l ^ m``.
+
+        Parallel lines meet at infinity (no error); the same line twice raises
+        :class:`~planargeo.errors.DegenerateGeometryError`.
+
+        Examples
+        --------
+        >>> y1 = Line.from_point_direction((0, 1), (1, 0))            # y = 1
+        >>> y1.meet(Line.from_point_direction((2, 0), (0, 1)))        # x = 2
+        Point(x=2, y=1)
+        >>> y1.meet(Line.from_point_direction((0, 5), (2, 0))).is_ideal   # y = 5: parallel
+        True
+        """
         return Point(_p.meet(self._a, _as_line_array(other, "other")))
 
     def __xor__(self, other):
@@ -262,7 +298,15 @@ class Line:
         return NotImplemented
 
     def incidence(self, point) -> float:
-        """The form ``p @ l`` (thesis 5.23)."""
+        """The form ``p @ l`` (thesis 5.23): zero exactly when ``point`` lies on this line.
+
+        Examples
+        --------
+        >>> Line.at_infinity().incidence(Point.at_infinity((3, 4)))    # every ideal point is on it
+        0.0
+        >>> Line.at_infinity() @ Point.from_xy(3, 4)                   # no finite point is
+        1.0
+        """
         return float(_p.incidence(_as_point_array(point, "point"), self._a))
 
     def __matmul__(self, other):
@@ -271,7 +315,20 @@ class Line:
         return NotImplemented
 
     def signed_distance(self, point) -> float:
-        """Signed distance of ``point`` from this line, positive on the left (thesis 5.23)."""
+        """Signed distance of ``point`` from this line, positive on the left (thesis 5.23).
+
+        "Left" is seen looking along the line's direction ``(fx, fy)``.  A point
+        at infinity has no finite distance: the result is NaN (documented, no
+        warning).
+
+        Examples
+        --------
+        >>> y1 = Line.from_point_direction((0, 1), (1, 0))            # y = 1, directed along +x
+        >>> y1.signed_distance(Point.from_xy(3, 4)), y1.signed_distance(Point.from_xy(0, -1))
+        (3.0, -2.0)
+        >>> y1.signed_distance(Point.at_infinity((1, 0)))
+        nan
+        """
         return float(_p.signed_distance(_as_point_array(point, "point"), self._a))
 
     def __eq__(self, other):
@@ -358,31 +415,100 @@ class Conic:
         return self._m
 
     def polar(self, point) -> Line:
-        """The polar line ``C p`` (thesis 5.36)."""
+        """The polar line ``C p`` of ``point`` (thesis 5.36).
+
+        For an inertia conic this is the axis of percussion of an acceleration
+        pole (5.64).  A point at infinity maps to a diameter (a line through
+        the centre).
+
+        Examples
+        --------
+        >>> C = Conic.circle((0, 0), 1)
+        >>> C.polar(Point.from_xy(2, 0))                # x = r²/2 = 1/2
+        Line(through=(0.5, 0), direction=(0, -1))
+        >>> C.polar(Point.at_infinity((1, 0)))          # the diameter perpendicular to x
+        Line(through=(0, 0), direction=(0, -1))
+        """
         return Line(_c.polar(self._m, _as_point_array(point, "point")))
 
     def pole(self, line) -> Point:
-        """The pole ``C⁻¹ l`` (thesis 5.37)."""
+        """The pole ``C⁻¹ l`` of ``line`` (thesis 5.37), the inverse of :meth:`polar`.
+
+        The line at infinity maps to the centre; a line through the centre to
+        a point at infinity.  A degenerate (singular) conic raises
+        :class:`~planargeo.errors.DegenerateGeometryError`.
+
+        Examples
+        --------
+        >>> C = Conic.circle((0, 0), 1)
+        >>> C.pole(Line.from_point_direction((0.5, 0), (0, 1)))   # x = 1/2
+        Point(x=2, y=0)
+        >>> C.pole(Line.at_infinity())
+        Point(x=0, y=0)
+        """
         return Point(_c.pole(self._m, _as_line_array(line, "line")))
 
     def classify(self, rtol: float = 1e-10) -> _c.ConicType:
-        """Real / imaginary / degenerate and kind (see :func:`planargeo.conics.classify`)."""
+        """Real / imaginary / degenerate and kind (thesis 5.2.2; see :func:`planargeo.conics.classify`).
+
+        Examples
+        --------
+        >>> Conic.circle((0, 0), 1).classify()
+        ConicType(reality='real', kind='ellipse', is_circle=True, rank=3)
+        >>> str(Conic(np.diag([2.0, 2.0, 8.0])).classify())    # an inertia: no real points
+        'imaginary circle'
+        >>> str(Conic.parabola((0, 0), 1).classify())
+        'real parabola'
+        """
         return _c.classify(self._m, rtol=rtol)
 
     @property
     def centre(self) -> Point:
-        """The pole of the line at infinity (ideal for a parabola)."""
+        """The centre: the pole ``C⁻¹ [0, 0, 1]`` of the line at infinity (thesis 5.37 with 5.16; 5.2.2).
+
+        A point at infinity (the axis direction) for a parabola; the centre of
+        mass for an inertia (4.58).  See :func:`planargeo.conics.centre`.
+
+        Examples
+        --------
+        >>> Conic.ellipse((1, 2), (2, 1)).centre
+        Point(x=1, y=2)
+        >>> Conic.parabola((0, 0), 1).centre            # y = x²/4: ideal point along the axis
+        Point(at infinity, direction=(0, 1))
+        """
         return Point(_c.centre(self._m))
 
     def contains(self, point, rtol: float = 1e-9) -> bool:
-        """True if ``point`` lies on the conic (thesis 5.38, relative tolerance)."""
+        """True if ``point`` lies on the conic: ``|p C p| <= rtol |C| |p|²`` (thesis 5.38).
+
+        Points at infinity are ordinary: a hyperbola contains the ideal points
+        of its asymptotes.
+
+        Examples
+        --------
+        >>> C = Conic.circle((0, 0), 1)
+        >>> C.contains(Point.from_xy(0.6, 0.8)), C.contains(Point.from_xy(1, 1))
+        (True, False)
+        >>> Conic.hyperbola((0, 0), (1, 1)).contains(Point.at_infinity((1, 1)))   # asymptote y = x
+        True
+        """
         return bool(_c.is_on_conic(self._m, _as_point_array(point, "point"), rtol=rtol))
 
     def tangents_from(self, point):
         """The two tangents from an exterior ``point`` and their contact points.
 
-        Returns ``((Line, Line), (Point, Point))``; raises :class:`InputError`
-        for an interior point (see :func:`planargeo.conics.tangents_from_point`).
+        Returns ``((Line, Line), (Point, Point))``: the tangent ``i`` touches
+        at contact point ``i``, which lies on the polar of ``point`` (thesis
+        5.2.2, 5.39).  Raises :class:`~planargeo.errors.InputError` for an
+        interior point (see :func:`planargeo.conics.tangents_from_point`).
+
+        Examples
+        --------
+        >>> (t1, t2), (x1, x2) = Conic.circle((0, 0), 1).tangents_from(Point.from_xy(2, 0))
+        >>> x1, x2                                      # (1/2, ±√3/2), on the polar x = 1/2
+        (Point(x=0.5, y=0.866025), Point(x=0.5, y=-0.866025))
+        >>> abs(t1 @ Point.from_xy(2, 0)) < 1e-12       # the tangent passes through the point
+        True
         """
         L, X = _c.tangents_from_point(self._m, _as_point_array(point, "point"))
         return (Line(L[0]), Line(L[1])), (Point(X[0]), Point(X[1]))
@@ -392,7 +518,21 @@ class Conic:
         return _c.affine_frame(self._m)
 
     def drawable(self) -> "Conic":
-        """The real point-reflection partner of an imaginary conic (thesis 10.2.3); self if real."""
+        """The real point-reflection partner of an imaginary conic (thesis 10.2.3); self if real.
+
+        For an inertia it is the circle (or ellipse) of gyration about the
+        centre of mass: the polar of a point with respect to it is the point
+        reflection, through the centre, of the polar with respect to the
+        inertia.  See :func:`planargeo.conics.drawable_conic`.
+
+        Examples
+        --------
+        >>> I = Conic(np.diag([2.0, 2.0, 8.0]))    # inertia m = 2, J = 8 at the origin
+        >>> I, I.drawable()                                 # ρ = sqrt(J/m) = 2
+        (Conic(imaginary circle, centre=(0, 0)), Conic(real circle, centre=(0, 0)))
+        >>> I.drawable().contains(Point.from_xy(2, 0))
+        True
+        """
         return Conic(_c.drawable_conic(self._m))
 
     def __eq__(self, other):
