@@ -1,8 +1,6 @@
 """Charts (curves over a parameter) in the package style: Figs 7.4, 7.6-7.8, 7.10."""
 from __future__ import annotations
 
-import numpy as np
-
 from .style import OKABE_ITO, LINEWIDTHS
 
 __all__ = ["CURVE_COLORS", "plot_curves", "polar_curves"]
@@ -36,7 +34,11 @@ def plot_curves(ax, x, ys, labels, *, xlabel="", ylabel="", title=None, legend_l
 
 
 def polar_curves(ax, theta, rs, labels, *, title=None, rlabel=""):
-    """Polar curves ``rs[k](theta)`` on a polar axes ``ax``."""
+    """Polar curves ``rs[k](theta)`` on a polar axes ``ax``; ``rlabel`` names the radius.
+
+    The radial tick labels run along 100°; ``rlabel`` goes in the axes' upper-left
+    corner (outside the circle) so that it never sits on a tick label.
+    """
     arts = []
     for k, (r, lab) in enumerate(zip(rs, labels)):
         (ln,) = ax.plot(theta, r, color=CURVE_COLORS[k % len(CURVE_COLORS)],
@@ -45,7 +47,8 @@ def polar_curves(ax, theta, rs, labels, *, title=None, rlabel=""):
     if title:
         ax.set_title(title)
     ax.set_rlabel_position(100)
-    if rlabel:
-        ax.text(np.deg2rad(100), ax.get_rmax() * 1.08, rlabel, fontsize=7, ha="center")
+    if rlabel:  # in the empty upper-left corner, clear of the radial tick labels along 100°
+        ax.text(-0.08, 1.04, f"radius: {rlabel}", transform=ax.transAxes, fontsize=7,
+                ha="left", va="top")
     ax.legend(loc="upper left", bbox_to_anchor=(0.92, 1.12), frameon=False, fontsize=6.5)
     return arts

@@ -16,6 +16,7 @@ from ..constructions import draw_dimension, label
 from ..mechanism import draw_model
 from ..style import COLORS
 from . import fit_view, new_figure, register
+from ._layout import fit_panel, shape_points
 
 
 def _chain(n=4, base="revolute", gravity=(0.0, 0.0)):
@@ -38,17 +39,18 @@ def fig7_1():
     d = kinematics(m, q, np.zeros(m.nq))
     r = articulated_inertia(m, q)
     i = 1
-    draw_model(m, d, ax, show_com=False)
+    arts = draw_model(m, d, ax, show_com=False)
     A = r.A[i]
-    plot_conic(A, ax, role="inertia", text="$A_2$", text_offset=(4, 4))
+    plot_conic(A, ax, role="inertia", text="$A_2$", text_offset=(-26, 10))
     plot_conic(d.I[i], ax, role="inertia", color=COLORS["construct"], mark_center=False)
     o = d.origin[i]
     f = np.array([1.0, 0.0, -o[1]])                 # a unit force along +x through joint 2 (4.27)
     a = np.linalg.solve(A, f)
     plot_line(f, ax, role="reaction", scale=0.6, anchor=o - [0.5, 0.0], text="$f_2$",
               text_offset=(-4, -16))
-    plot_point(a, ax, role="accel", text="$a_2 = A_2^{-1}f_2$", glyph_scale=2.0)
-    fit_view(ax, [*d.origin, d.com[-1] + [0.6, 0.3], to_xy(a)], margin=0.12)
+    plot_point(a, ax, role="accel", text="$a_2 = A_2^{-1}f_2$", glyph_scale=2.0,
+               text_offset=(10, 10))
+    fit_panel(ax, [*shape_points(*arts["shapes"]), to_xy(a), o - [1.0, 0.0]], margin=0.06)
     return fig
 
 
@@ -61,38 +63,55 @@ def fig7_2():
     d = kinematics(m, Q4, np.zeros(4))
     r = articulated_mobility(m, Q4)
     i = 1
-    draw_model(m, d, ax, show_com=False)
+    arts = draw_model(m, d, ax, show_com=False)
     o = d.origin[i + 1]
     f_next = np.array([-1.0, 0.0, o[1]])   # f_3: a unit force along -x through joint 3 (4.27)
     a = -r.Lambda_inv[i] @ f_next
     plot_line(-f_next, ax, role="reaction", scale=0.6, anchor=o, text="$-f_3$")
     plot_point(a, ax, role="accel", text="$a_2 = -\\Lambda_2^{-1}f_3$")
-    fit_view(ax, [*d.origin, to_xy(a), d.com[-1] + [0.6, 0.3]], margin=0.12)
+    fit_panel(ax, [*shape_points(*arts["shapes"]), to_xy(a), d.origin[0] - [0.0, 0.15]],
+              margin=0.06)
     return fig
 
 
 @register("fig7_3", "Fig. 7.3 — two identical bodies at angle φ pushed by a horizontal force f₁ at "
-          "CJ₁ (scene 'two-body', 7.9–7.24): a₁ = A₁⁻¹f₁; m_x = {A₁}₁₁ (7.12).", 7.03)
+          "CJ₁ (scene 'two-body', 7.9–7.24): the articulated inertia A₁ (black) from the bodies' "
+          "inertias (grey); a₁ = A₁⁻¹f₁ is the acceleration pole of body 1 (below CJ₁); "
+          "m_x = {A₁}₁₁ (7.12).", 7.03)
 def fig7_3():
+    from matplotlib.patches import Rectangle
+
     res = build_scene("two-body")
     A1 = np.array(res.quantities["A1"])
-    fig, ax = new_figure(3.4, 2.4)
+    fig, axs = new_figure(3.4, 2.9, ncols=2, gridspec_kw={"width_ratios": [2.3, 1.0]})
     d = kinematics(res.model, res.state["q"], [0.0, 0.0])
-    draw_model(res.model, d, ax, ground=False, labels=False)
-    for k in range(2):
-        plot_conic(d.I[k], ax, role="inertia", color=COLORS["construct"], mark_center=False)
-    plot_conic(A1, ax, role="inertia", text="$A_1$")
-    f1 = np.array([1.0, 0.0, 0.0])
+    f1 = np.array([1.0, 0.0, 0.0])                  # unit horizontal force through CJ₁ (4.27)
     a1 = np.linalg.solve(A1, f1)
-    plot_line(f1, ax, scale=0.6, anchor=[-0.35, 0.0], text="$f_1$")
-    plot_point(a1, ax, role="accel", text="$a_1$")
-    label(ax, [0, 0], "$CJ_1$", offset=(-4, -14), fontsize=7)
     ax1 = to_xy(a1)
-    ax.text(0.02, 0.10, f"$a_1$ pole at ({ax1[0]:.2f}, {ax1[1]:.2f}) (off view)",
-            transform=ax.transAxes, fontsize=7, color=COLORS["accel"])
-    ax.text(0.02, 0.02, f"φ = {np.rad2deg(res.params['phi']):.0f}°, λ = {res.quantities['lam']:g}:"
-            f"  $m_x/m$ = {res.quantities['mx_over_m']:.3f}", transform=ax.transAxes, fontsize=7)
-    fit_view(ax, [*d.origin, d.com[1] * 2 - d.origin[1], [-0.6, -0.5], [1.8, 0.9]], margin=0.08)
+    # left: the bodies, their inertias and A₁ in detail; right: the same scene with the pole a₁
+    for k, ax in enumerate(axs):
+        detail = k == 0
+        arts = draw_model(res.model, d, ax, ground=False, labels=False, show_com=detail)
+        cs = [plot_conic(d.I[j], ax, role="inertia", color=COLORS["construct"], mark_center=False)
+              for j in range(2)] if detail else []
+        cs.append(plot_conic(A1, ax, role="inertia", text="$A_1$" if detail else None,
+                             text_offset=(-4, -16), mark_center=detail))
+        plot_line(f1, ax, scale=0.6 if detail else None, anchor=[-0.35, 0.0],
+                  text="$f_1$" if detail else None, text_offset=(-20, 4))
+        plot_line([0.0, 1.0, 0.0], ax, role="construct", scale=None)    # x = 0 through CJ₁
+        P = np.vstack([shape_points(*arts["shapes"]), *[c.get_xy() for c in cs]])
+        if detail:
+            label(ax, [0, 0], "$CJ_1$", offset=(-22, -14), fontsize=7)
+            ax.text(0.98, 0.02, f"φ = {np.rad2deg(res.params['phi']):.0f}°, "
+                    f"λ = {res.quantities['lam']:g}:\n$m_x/m$ = {res.quantities['mx_over_m']:.3f}",
+                    transform=ax.transAxes, fontsize=7, ha="right")
+            fit_view(ax, np.vstack([P, P.min(axis=0) - [0.3, 0.7]]), margin=0.03)
+        else:
+            plot_point(a1, ax, role="accel", text=f"$a_1$\n({ax1[0]:.2f}, {ax1[1]:.2f})",
+                       text_offset=(6, 4))
+            fit_view(ax, np.vstack([P, ax1, ax1 + [1.6, -0.3]]), margin=0.03)
+            ax.add_patch(Rectangle((0, 0), 1, 1, transform=ax.transAxes, fill=False, ec="#bbbbbb",
+                                   lw=0.6))
     return fig
 
 
@@ -211,25 +230,37 @@ def fig7_10():
 
 
 @register("fig7_11", "Fig. 7.11 — chain splitting (7.50–7.56): an external force F on the tip; the "
-          "chain is split at joint 3 into a constrained chain (bodies 1–2, mobility Λ₂⁻¹) and a free "
-          "floating chain (bodies 3–4, inertia A₃); the internal force f₃ from 7.56.", 7.11)
+          "chain is split at joint 3 into a constrained chain (bodies 1–2, articulated mobility "
+          "Λ₂⁻¹) and a free-floating chain (bodies 3–4, articulated inertia A₃); the internal force "
+          "f₃ from 7.56 gives a₂ = b₂ − Λ₂⁻¹f₃ and a₃ = A₃⁻¹(f₃ − d₃) (here at rest without gravity, "
+          "b₂ = 0). Computed with listings 7.1.1 and 7.4.1 as corrected for applied loads (docs/errata.md, "
+          "chapter 7 items 2 and 3).", 7.11)
 def fig7_11():
     fig, ax = new_figure(3.4, 2.6)
     m = _chain(4)
+    z = np.zeros(4)
     F = np.zeros((4, 3))
-    d0 = kinematics(m, Q4, np.zeros(4))
+    d0 = kinematics(m, Q4, z)
     tip = d0.origin[3] + 1.0 * np.array([np.cos(d0.pose[3, 2]), np.sin(d0.pose[3, 2])])
     F[3] = np.array([0.0, -1.0, -tip[0]])       # a downward unit force through the tip (4.27)
-    sol = mobility_split(m, Q4, np.zeros(4), np.zeros(4), F)
-    d = kinematics(m, Q4, np.zeros(4), F)
-    draw_model(m, d, ax, show_com=False)
-    r_in = articulated_inertia(m, Q4, np.zeros(4), np.zeros(4), F)
-    r_mob = articulated_mobility(m, Q4, np.zeros(4), np.zeros(4), F)
-    plot_conic(r_in.A[2], ax, role="inertia", text="$A_3$")
-    plot_line(F[3], ax, scale=0.5, anchor=tip, text="$F$")
-    plot_line(sol.f[2], ax, role="reaction", scale=0.5, anchor=d.origin[2], text="$f_3$")
-    plot_point(sol.a[1], ax, role="accel", text="$a_2$")
-    plot_point(sol.a[2], ax, role="accel", text="$a_3$")
-    _ = r_mob
-    fit_view(ax, [*d.origin, tip, to_xy(sol.a[1]), to_xy(sol.a[2])], margin=0.12)
+    sol = mobility_split(m, Q4, z, z, F)
+    d = kinematics(m, Q4, z, F)
+    r_in = articulated_inertia(m, Q4, z, z, F)
+    r_mob = articulated_mobility(m, Q4, z, z, F)
+    f3 = sol.f[2]
+    # the two halves: the constrained chain's mobility and the floating chain's inertia (7.52-7.55)
+    assert np.allclose(sol.a[1], r_mob.b[1] - r_mob.Lambda_inv[1] @ f3)
+    assert np.allclose(r_in.A[2] @ sol.a[2], f3 - r_in.d[2])
+    b2_zero = np.allclose(r_mob.b[1], 0.0)
+    arts = draw_model(m, d, ax, show_com=False)
+    A3 = plot_conic(r_in.A[2], ax, role="inertia", text="$A_3$", text_offset=(10, -30))
+    plot_line(F[3], ax, scale=0.5, anchor=tip, text="$F$", text_offset=(-14, -8))
+    plot_line(f3, ax, role="reaction", scale=0.5, anchor=d.origin[2], text="$f_3$",
+              text_offset=(-16, 4))
+    plot_point(sol.a[1], ax, role="accel",
+               text="$a_2 = -\\Lambda_2^{-1}f_3$" if b2_zero else "$a_2 = b_2 - \\Lambda_2^{-1}f_3$",
+               text_offset=(10, -12))
+    plot_point(sol.a[2], ax, role="accel", text="$a_3 = A_3^{-1}(f_3 - d_3)$", text_offset=(-40, 10))
+    fit_panel(ax, [*shape_points(*arts["shapes"]), *A3.get_xy(), tip, to_xy(sol.a[1]),
+                   to_xy(sol.a[2]), d.origin[0] - [0.0, 0.2]], margin=0.05)
     return fig
