@@ -7,7 +7,9 @@ for the slider-crank, the closed-loop solver and the Lagrange-multiplier
 solver) with an *independent* reference: the joint-space equations
 ``H q̈ = τ - C`` written from scratch with world-frame Jacobians and solved in
 ``np.longdouble`` or in exact rational arithmetic (``reference_system`` in
-``tests/test_breakdown.py``: one copy, imported from there).
+``tests/test_breakdown.py``: one copy, imported from there).  ``join`` and ``meet``
+are measured without their condition-number limit (``cond_limit=inf``) so that the error
+can be charted past it; the tables say which samples the default call refuses.
 
 Knobs
 -----
@@ -53,7 +55,7 @@ from planargeo.conics import pole  # noqa: E402
 from planargeo.errors import DegenerateGeometryError, SingularConfigurationError, SingularInertiaError  # noqa: E402
 from planargeo.inertia import percussion_axis, percussion_pole  # noqa: E402
 from planargeo.model import Body, Joint, Model, chain_model, random_model  # noqa: E402
-from planargeo.projective import direction, from_xy, join, meet, signed_distance, to_xy  # noqa: E402
+from planargeo.projective import COND_LIMIT, direction, from_xy, join, meet, signed_distance, to_xy  # noqa: E402
 
 EPS, EPS_LD = ref.EPS, ref.EPS_LD
 METHODS = ref.METHODS
@@ -229,10 +231,22 @@ def _point_reading(p, exact, kappa) -> dict:
     return out
 
 
+def _refusal(fn, a, b) -> dict:
+    """Whether ``fn(a, b)`` at the default :data:`COND_LIMIT` refuses, and the ``.cond`` it reports."""
+    try:
+        _silently(fn, a, b)
+    except DegenerateGeometryError as e:
+        return {"refused": True, "refused_cond": float(e.cond)}
+    return {"refused": False}
+
+
 def _meet(l, m) -> dict:
-    p = _silently(meet, l, m)
+    # the bare cross product (cond_limit=inf: only an exactly zero l × m raises), so the error can be
+    # charted past the threshold; whether the default call refuses is recorded alongside
+    p = _silently(meet, l, m, np.inf)
     exact = ref.cross_exact(l, m)
     out = _point_reading(p, exact, ref.cross_cond(l, m, exact))
+    out.update(_refusal(meet, l, m))
     if "err_e" in out:
         # the problem's own sensitivity: the largest change of the exact meet when one coefficient
         # of m moves by one ulp (what the float inputs can pin down at all)
@@ -252,9 +266,10 @@ def _meet(l, m) -> dict:
 
 
 def _join(p, q) -> dict:
-    l = _silently(join, p, q)
+    l = _silently(join, p, q, np.inf)
     exact = ref.cross_exact(p, q)
     out = {"kappa": ref.cross_cond(p, q, exact), "err": ref.hom_err(l, exact)}
+    out.update(_refusal(join, p, q))
     # how far the returned line passes from the first point (which lies on the exact line)
     P = to_xy(p)
     dist = ref.distance_exact(ref.fr(l), P)
@@ -316,17 +331,23 @@ def knob_geometry() -> dict:
                                                lambda I_, f: _ppole(percussion_pole, I_, f), 900)
     # two copies of one line, one of them scaled (rounded): the same line to the eye, not to meet()
     rng = np.random.default_rng(1000)
-    same = {"identical": [0, 0], "scaled by 2": [0, 0], "scaled by 3": [0, 0], "normalised": [0, 0]}
+    # [exact zero, a point from the bare cross product, a point at the default COND_LIMIT]
+    same = {"identical": [0, 0, 0], "scaled by 2": [0, 0, 0], "scaled by 3": [0, 0, 0], "normalised": [0, 0, 0]}
     from planargeo.projective import normalize_line
     for _ in range(200):
         l = rng.normal(size=3)
         for name, m in (("identical", l.copy()), ("scaled by 2", 2 * l), ("scaled by 3", 3 * l),
                         ("normalised", normalize_line(l))):
             try:
-                meet(l, m)
+                meet(l, m, np.inf)                    # the bare cross product: raises only for an exact zero
                 same[name][1] += 1
             except DegenerateGeometryError:
                 same[name][0] += 1
+            try:
+                meet(l, m)
+                same[name][2] += 1
+            except DegenerateGeometryError:
+                pass
     res["same_line"] = same
     return res
 
@@ -389,6 +410,22 @@ def _raised(row) -> str:
     return f"**{row['raised']}/{row['raised'] + len(row['samples'])}** ({row['raised_as']}{c})"
 
 
+def _refused(row) -> str:
+    """Samples the default ``join``/``meet`` refuses: exactly zero (``raised``) plus κ > COND_LIMIT."""
+    k = row["raised"] + sum(1 for s in row["samples"] if s.get("refused"))
+    n = row["raised"] + len(row["samples"])
+    if not k:
+        return "0"
+    conds = [s["refused_cond"] for s in row["samples"] if s.get("refused")]
+    c = f", `.cond` ≥ {min(conds):.0e}" if conds else ", exactly zero"
+    return f"**{k}/{n}**{c}"
+
+
+def _accepted(rows):
+    """Rows in which the default ``join``/``meet`` answered every sample."""
+    return [r for r in rows if r["samples"] and not r["raised"] and not any(s.get("refused") for s in r["samples"])]
+
+
 def _gv(v) -> str:
     return "∞" if not np.isfinite(v) else ("0" if v == 0 else f"{v:.0e}")
 
@@ -419,22 +456,24 @@ def geometry_markdown(g: dict) -> list:
     L += ["### Meet of two lines", "",
           "**Near-coincident lines**: both through one point of [−1, 1]², at angles a and a + θ (`pencil_pair`). "
           "The meet is that point; as θ → 0 the two lines become one line.", "",
-          "| θ | κ | hom. error | κ_E | Eucl. error | exact answer's change for 1 ulp in m | raised |",
+          "Errors are those of the bare cross product (`meet(l, m, cond_limit=inf)`); **refused** counts the "
+          f"samples the default `meet(l, m)` answers with `DegenerateGeometryError` (κ > COND_LIMIT = "
+          f"{COND_LIMIT:.0e}, or l × m exactly zero).", "",
+          "| θ | κ | hom. error | κ_E | Eucl. error | exact answer's change for 1 ulp in m | refused |",
           "|---:|---:|---:|---:|---:|---:|---|"]
     for r in rows:
         L.append(f"| {_gv(r['value'])} | {_ge(_gmed(r, 'kappa'))} | {_ge(_gstats(r, 'err'))} | "
                  f"{_ge(_gmed(r, 'kappa_e'))} | {_ge(_gstats(r, 'err_e'))} | {_ge(_gstats(r, 'ulp_sensitivity'))} | "
-                 f"{_raised(r)} |")
-    first = next(r for r in rows if r["raised"])
-    last = [r for r in rows if r["samples"] and not r["raised"]][-1]
-    L += ["", f"The error follows ε·κ with κ ≈ 1/θ all the way down (θ = {last['value']:.0e}: "
-          f"{_gstats(last, 'err'):.1e} homogeneous, {_gstats(last, 'err_e'):.1e} Euclidean), and it is never larger "
+                 f"{_refused(r)} |")
+    last = _accepted(rows)[-1]
+    past = [r for r in rows if r["samples"] and r["value"] < last["value"]]
+    L += ["", f"The error follows ε·κ with κ ≈ 1/θ all the way down, and it is never larger "
           "than what one ulp in a coefficient of the input does to the exact answer (last-but-one column): the float "
-          "lines do not determine their common point any better. Nothing refuses along the way: "
-          f"`DegenerateGeometryError` comes only when l × m is exactly zero, i.e. the two float lines are the same "
-          f"(from θ = {first['value']:.0e}: {first['raised']} of {first['raised'] + len(first['samples'])}); the other "
-          f"{len(first['samples'])} samples at that θ return a point with up to "
-          f"{_gstats(first, 'err_e'):.0%} Euclidean error.", ""]
+          f"lines do not determine their common point any better. `meet` answers while κ ≤ {COND_LIMIT:.0e} "
+          f"(θ = {last['value']:.0e}: up to {_gstats(last, 'err'):.1e} homogeneous, {_gstats(last, 'err_e'):.1e} "
+          "Euclidean) and refuses past it with `DegenerateGeometryError` carrying `.cond`"
+          + (f"; the bare cross product would have returned points with up to "
+             f"{max(_gstats(r, 'err_e') for r in past):.0%} Euclidean error there." if past else ".") + "", ""]
     # strip
     rows = g["meet_strip"]
     par = rows[-1]
@@ -457,28 +496,30 @@ def geometry_markdown(g: dict) -> list:
           "`direction` the common direction. Between them (θ ≲ 1e-16) the direction floats of the two lines "
           "may round to the same numbers and give an ideal point too: the honest answer for those floats.", ""]
     sl = g["same_line"]
-    L += [f"**The same line written twice.** `meet(l, l)` and `meet(l, 2 l)` raise (the cross product is exactly "
-          f"zero), but `meet(l, 3 l)` returns a point in {sl['scaled by 3'][1]} of "
-          f"{sum(sl['scaled by 3'])} random lines and `meet(l, normalize_line(l))` in {sl['normalised'][1]} of "
-          f"{sum(sl['normalised'])}: rounding makes the copies distinct lines with κ ~ 1/ε, and their \"meet\" is "
-          "an arbitrary point of the line.", ""]
+    L += [f"**The same line written twice.** `l × l` and `l × 2 l` are exactly zero; `l × 3 l` is not in "
+          f"{sl['scaled by 3'][1]} of {sum(sl['scaled by 3'][:2])} random lines, nor `l × normalize_line(l)` in "
+          f"{sl['normalised'][1]} of {sum(sl['normalised'][:2])}: rounding makes the copies distinct lines with "
+          "κ ~ 1/ε, whose \"meet\" would be an arbitrary point of the line. The default `meet` returns a point "
+          f"for {sl['scaled by 3'][2] + sl['normalised'][2]} of them (κ > COND_LIMIT refuses the rest).", ""]
     # join
     L += ["### Join of nearly coincident points", "",
           "Two points δ apart, the first at distance between R/2 and R from the origin (`near_points`). "
-          "**misses by**: distance of the first point from the returned line (the exact line passes through it).",
-          "", "| R | δ | κ | hom. error | misses by | raised |", "|---:|---:|---:|---:|---:|---|"]
+          "**misses by**: distance of the first point from the line of the bare cross product "
+          "(`join(p, q, cond_limit=inf)`; the exact line passes through it). **refused**: as for `meet`.",
+          "", "| R | δ | κ | hom. error | misses by | refused |", "|---:|---:|---:|---:|---:|---|"]
     for r in g["join"]:
         L.append(f"| {r['R']:g} | {_gv(r['value'])} | {_ge(_gmed(r, 'kappa'))} | {_ge(_gstats(r, 'err'))} | "
-                 f"{_ge(_gstats(r, 'miss'))} | {_raised(r)} |")
+                 f"{_ge(_gstats(r, 'miss'))} | {_refused(r)} |")
     far = [r for r in g["join"] if r["R"] > 1]
-    lastj = [r for r in far if r["samples"] and not r["raised"]][-1]
+    lastj = [r for r in far if r["samples"] and not r["raised"]][-1]     # bare cross product, last non-zero
+    acc_j = _accepted(far)[-1]
     L += ["", "The direction of the join (x₂ − x₁, y₂ − y₁) is exact (the differences of nearby floats are exact), "
           "the moment x₁y₂ − x₂y₁ is not: it cancels, so the error is ε·κ with κ ≈ R/δ (R ≥ 1), and the line misses "
-          "the given points by about ε R²/δ. Here too the only named error is the exact one: the two float points "
-          f"are identical. Just before that, at R ≈ 1e3 and δ = {lastj['value']:.0e} (about one ulp), `join` "
-          f"returns lines with relative error up to {_gstats(lastj, 'err'):.1f} that pass up to "
-          f"{_gstats(lastj, 'miss'):.0f} units away from the points they were asked to join: a wrong answer "
-          "without an error.", ""]
+          "the given points by about ε R²/δ. At R ≈ 1e3 and δ = " f"{lastj['value']:.0e} (about one ulp) the bare "
+          f"cross product returns lines with relative error up to {_gstats(lastj, 'err'):.1f} that pass up to "
+          f"{_gstats(lastj, 'miss'):.0f} units away from the points they were asked to join; the default `join` "
+          f"refuses them (κ > {COND_LIMIT:.0e}). The last δ it answers at R ≈ 1e3 is {acc_j['value']:.0e}: error "
+          f"≤ {_gstats(acc_j, 'err'):.0e}, the line within {_gstats(acc_j, 'miss'):.0e} of the points.", ""]
     # percussion axis
     L += ["### Axis of percussion (the polar of the acceleration pole, thesis 5.64–5.68)", "",
           f"Body m = {ref.GEO_MASS}, centre of mass c = ({ref.GEO_COM[0]}, {ref.GEO_COM[1]}), ρ = {ref.GEO_RHO}. "
@@ -548,10 +589,10 @@ def geometry_markdown(g: dict) -> list:
     L += ["### Where the geometry layer reports a named error", "",
           "| operation | named error | rule | largest error returned before it (measured above) |",
           "|---|---|---|---|",
-          f"| `meet(l, m)`, `join(p, q)` | `DegenerateGeometryError` | `l × m` exactly zero: the same float line / "
-          f"point (or exactly proportional copies) | near-coincident lines {_gstats(first, 'err_e'):.0%} (Euclidean); "
-          f"points one ulp apart at R ≈ 1e3: {_gstats(lastj, 'err'):.1f}, the line {_gstats(lastj, 'miss'):.0f} "
-          "units off |",
+          f"| `meet(l, m)`, `join(p, q)` | `DegenerateGeometryError` (`.cond`) | κ = |a| |b| / |a × b| > "
+          f"COND_LIMIT = {COND_LIMIT:.0e} (or a × b exactly zero) | near-coincident lines "
+          f"{_gstats(last, 'err_e'):.0e} (Euclidean); nearly coincident points at R ≈ 1e3: "
+          f"{_gstats(acc_j, 'err'):.0e} |",
           "| `percussion_axis(I, a)`, `polar(C, p)` | none for a positive semi-definite I | a product needs no "
           f"inversion; both limits (line at infinity, line through c) are ordinary values | ≤ {axis_err:.0e} "
           "homogeneous |",
@@ -559,15 +600,11 @@ def geometry_markdown(g: dict) -> list:
           f"{_gstats(lp, 'err'):.0e} at cond {_gmed(lp, 'kappa'):.0e} |",
           f"| `pole(C, l)` | `DegenerateGeometryError` (`.cond`) | cond₂(C) > 1/rtol = 1e13 | "
           f"{_gstats(lc, 'err'):.0e} at cond {_gmed(lc, 'kappa'):.0e} |", "",
-          "**Finding.** `meet` and `join` decide degeneracy by an exact zero only (a deliberate choice, "
-          "`planargeo/projective.py` docstring: 'no epsilon is used'). That is right for near-*parallel* lines and "
-          "for points and lines near infinity, which the homogeneous form handles at full accuracy (κ stays small), "
-          "but near-*coincident* lines and nearly coincident points return answers with no correct digit and no "
-          "error. The condition number κ = |a| |b| / |a × b| costs three norms, stays small for near-parallel lines "
-          f"(≤ {kmax:.0f} above) and grows like 1/θ, R/δ for the ill-posed cases; refusing above a threshold (as `pole` does "
-          "at 1e13, with `.cond`) would turn those wrong answers into named errors without touching the legitimate "
-          "far points. Not changed here: `planargeo/projective.py` belongs to another piece of work; this study and "
-          "`tests/test_breakdown.py` pin the present behaviour.", ""]
+          "**Finding.** `meet` and `join` refuse on the condition number κ = |a| |b| / |a × b| (three norms), as "
+          "`pole` does at 1e13: near-*parallel* lines and points and lines near infinity keep κ small "
+          f"(≤ {kmax:.0f} above) and are answered at full accuracy, ideal results included, while near-*coincident* "
+          "lines and nearly coincident points (κ ≈ 1/θ, R/δ) are answered to about ε·κ ≤ 2e-3 and refused beyond, "
+          "instead of returning answers with no correct digit.", ""]
     return L
 
 
@@ -840,8 +877,9 @@ def plot_geometry(g: dict, ax, bx) -> None:
         a.set_ylim(floor / 2, top)
         a.grid(True, which="major", alpha=0.3)
     ax.axvline(1e12, color="C8", lw=0.8, ls=":")
-    ax.axvline(1e13, color="C7", lw=0.8, ls=":")
-    ax.text(1.5, 1.4 * band, "raised (pole / percussion_pole: at their cond; meet / join raise only at κ = ∞)",
+    ax.axvline(COND_LIMIT, color="C7", lw=0.8, ls=":")
+    ax.text(1.5, 1.4 * band, "raised, at their cond (dotted: pole, join, meet refuse past κ = 1e13; "
+            "percussion_pole past 1e12); join / meet shown without the limit",
             fontsize=7, color="0.4")
     bx.text(1.5, 1.4 * band, "Euclidean reading lost (returned at infinity)", fontsize=7, color="0.4")
     ax.set_xlabel("κ (join / meet: |a||b|/|a×b|; axis: ‖|I||a|‖/‖Ia‖; pole: cond₂)")

@@ -18,6 +18,16 @@ for lines); no epsilon is used.  A point computed as the meet of two lines
 that are parallel only up to rounding therefore comes out as a very far
 finite point, which is the honest answer for the numbers given.
 
+:func:`join` and :func:`meet` refuse near-coincident inputs: their condition
+number ``κ = |a| |b| / |a × b|`` (one over the sine of the angle between the
+two 3-vectors) bounds the relative error of the result by about ``ε κ``, and
+past :data:`COND_LIMIT` (``1e13``, the same limit as
+:func:`planargeo.conics.pole`) they raise :class:`DegenerateGeometryError`
+carrying ``.cond`` instead of returning a line or point with fewer than about
+three correct digits.  Parallel lines and distinct ideal points are well
+conditioned: their meet (an ideal point) and join (the line at infinity) are
+ordinary results.
+
 Every function broadcasts over leading dimensions: homogeneous vectors are
 ``(..., 3)``, Euclidean points and directions ``(..., 2)``.
 """
@@ -29,11 +39,11 @@ from ._validate import as_array, as_vec3, as_xy
 from .errors import DegenerateGeometryError, InputError
 
 __all__ = [
-    "T_STD", "LINE_AT_INFINITY",
+    "T_STD", "LINE_AT_INFINITY", "COND_LIMIT",
     "normalize", "normalize_point", "normalize_line",
     "is_ideal", "is_at_infinity",
     "from_xy", "from_direction", "to_xy", "direction", "line_direction",
-    "join", "meet", "incidence", "signed_distance", "pencil",
+    "join", "meet", "cross_cond", "incidence", "signed_distance", "pencil",
     "line_through_point_direction", "foot_point",
     "to_standard", "from_standard", "conic_to_standard", "conic_from_standard",
 ]
@@ -47,6 +57,14 @@ T_STD.setflags(write=False)
 #: The line at infinity ``[0, 0, 1]`` (a pure couple).
 LINE_AT_INFINITY = np.array([0.0, 0.0, 1.0])
 LINE_AT_INFINITY.setflags(write=False)
+
+#: Largest condition number ``κ = |a| |b| / |a × b|`` that :func:`join` and
+#: :func:`meet` accept.  Their relative error is at most about ``ε κ``
+#: (measured in ``benchmarks/results/breakdown.md`` §(f): the error follows
+#: ``ε κ`` up to κ ≈ 1e16), so at the limit ``ε κ ≈ 2e-3``: past it fewer than
+#: about three digits would be right, and the answer is refused.  The same
+#: limit as ``rtol = 1e-13`` of :func:`planargeo.conics.pole`.
+COND_LIMIT = 1e13
 
 
 def _first_index(mask: np.ndarray) -> str:
@@ -335,7 +353,77 @@ def foot_point(l) -> np.ndarray:
 
 
 # --------------------------------------------------------------------------- join / meet
-def join(p, q) -> np.ndarray:
+def cross_cond(a, b) -> np.ndarray:
+    """Condition number ``κ = |a| |b| / |a × b|`` of :func:`join` and :func:`meet`.
+
+    One over the sine of the angle between the 3-vectors ``a`` and ``b``:
+    invariant under scaling either argument, ``1`` for perpendicular vectors,
+    ``inf`` for dependent ones (the same point or line, or a zero vector).
+    The relative error of the computed ``a × b`` is at most about ``ε κ``.
+    Vectors whose norms could over- or underflow are first rescaled to unit
+    largest component, so any finite non-zero inputs give the right κ.
+
+    Examples
+    --------
+    >>> round(float(cross_cond([0.0, 0.0, 1.0], [1.0, 0.0, 1.0])), 6)   # 45 degrees apart: √2
+    1.414214
+    >>> float(cross_cond([1.0, 2.0, 3.0], [-2.0, -4.0, -6.0]))     # the same point
+    inf
+    """
+    a, b = np.broadcast_arrays(np.asarray(a, float), np.asarray(b, float))
+    return _cross_cond(a, b, _cross(a, b))
+
+
+_TINY, _HUGE = 1e-150, 1e150          # squared norms of vectors in this range neither over- nor underflow
+
+
+def _cross_cond(a, b, c) -> np.ndarray:
+    """κ of :func:`cross_cond` given ``c = a × b``; rescales only where the norms could over/underflow."""
+    na = np.sqrt(np.einsum("...i,...i->...", a, a))
+    nb = np.sqrt(np.einsum("...i,...i->...", b, b))
+    nc = np.sqrt(np.einsum("...i,...i->...", c, c))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        out = na * nb / nc
+    ok = (na > _TINY) & (na < _HUGE) & (nb > _TINY) & (nb < _HUGE) & (nc > _TINY) & (nc < _HUGE)
+    if np.all(ok):
+        return out
+    # rare: rescale to unit largest component (a zero vector gives NaN there, hence κ = inf)
+    ma = np.abs(a).max(axis=-1, keepdims=True)
+    mb = np.abs(b).max(axis=-1, keepdims=True)
+    a = _safe_div(a, ma)
+    b = _safe_div(b, mb)
+    num = np.linalg.norm(a, axis=-1) * np.linalg.norm(b, axis=-1)
+    c = _cross(a, b)
+    mc = np.abs(c).max(axis=-1)
+    den = np.linalg.norm(_safe_div(c, mc[..., None]), axis=-1) * mc
+    slow = np.full(den.shape, np.inf)
+    np.divide(num, den, out=slow, where=(den > 0) & ~np.isnan(num))
+    return np.where(ok, out, slow)
+
+
+def _check_cond(a, b, c, what: str, cond_limit: float) -> None:
+    """Raise for an exactly zero ``c = a × b`` or a condition number past ``cond_limit``."""
+    zero = np.all(c == 0, axis=-1)
+    if np.any(zero):
+        err = DegenerateGeometryError(
+            what.format(kind="the same") + f" (or one is the zero vector){_first_index(zero)}, "
+            + ("so the line through them is not unique" if what.startswith("join") else
+               "so their common point is not unique"))
+        err.cond = float("inf")
+        raise err
+    cond = _cross_cond(a, b, c)
+    bad = ~(cond <= cond_limit)
+    if np.any(bad):
+        k = float(np.max(np.where(bad, cond, 0.0)))
+        err = DegenerateGeometryError(
+            what.format(kind="nearly the same") + f"{_first_index(bad)}: condition number {k:.3g} "
+            f"exceeds cond_limit = {cond_limit:.3g} (relative error up to about ε κ = "
+            f"{np.finfo(float).eps * k:.1g})")
+        err.cond = k
+        raise err
+
+
+def join(p, q, cond_limit: float = COND_LIMIT) -> np.ndarray:
     """The line through two points, ``p × q`` (thesis 5.27-5.32).
 
     For points normalised to ``w = 1`` the result is the wrench with force
@@ -348,6 +436,12 @@ def join(p, q) -> np.ndarray:
     Parameters
     ----------
     p, q : array_like, shape (..., 3)
+    cond_limit : float, optional
+        Largest accepted condition number ``κ = |p| |q| / |p × q|``
+        (:func:`cross_cond`), :data:`COND_LIMIT` = ``1e13`` by default.  The
+        returned line's relative error is at most about ``ε κ``; for finite
+        points ``δ`` apart at distance ``R ≳ 1`` from the origin ``κ ≈ R / δ``
+        and the line misses them by about ``ε R² / δ``.
 
     Returns
     -------
@@ -356,34 +450,47 @@ def join(p, q) -> np.ndarray:
     Raises
     ------
     DegenerateGeometryError
-        If ``p`` and ``q`` are the same point (``p × q`` exactly zero), or one
-        of them is the zero vector.
+        If ``p`` and ``q`` are the same point (``p × q`` exactly zero, ``.cond``
+        is ``inf``), one of them is the zero vector, or they are so nearly the
+        same point that ``κ > cond_limit`` (``.cond`` is the largest such κ).
+        Two distinct ideal points are not near each other unless their
+        directions differ by less than about ``1/cond_limit`` radians.
 
     Examples
     --------
     >>> join(from_xy([0.0, 0.0]), from_xy([2.0, 0.0]))   # the x axis, pointing +x
     array([2., 0., 0.])
+    >>> join(from_direction([1.0, 0.0]), from_direction([1.0, 1.0]))   # the line at infinity
+    array([0., 0., 1.])
+    >>> join(from_xy([0.0, 0.0]), from_xy([0.0, 1e-14]))     # 1e-14 apart: κ = 1e14
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.DegenerateGeometryError: join(p, q): p and q are nearly the same point: condition number 1e+14 exceeds cond_limit = 1e+13 (relative error up to about ε κ = 0.02)
+    >>> join(from_xy([0.0, 0.0]), from_xy([0.0, 1e-14]), cond_limit=np.inf)   # accepted: the y axis
+    array([0.e+00, 1.e-14, 0.e+00])
     """
     p = as_vec3(p, "p")
     q = as_vec3(q, "q")
     l = _cross(p, q)
-    bad = np.all(l == 0, axis=-1)
-    if np.any(bad):
-        raise DegenerateGeometryError(
-            f"join(p, q): p and q are the same point (or one is the zero vector)"
-            f"{_first_index(bad)}, so the line through them is not unique")
+    _check_cond(p, q, l, "join(p, q): p and q are {kind} point", cond_limit)
     return l
 
 
-def meet(l, m) -> np.ndarray:
+def meet(l, m, cond_limit: float = COND_LIMIT) -> np.ndarray:
     """The point common to two lines, ``l × m`` (thesis 5.33-5.34).
 
-    Parallel lines meet at a point at infinity, which is a legitimate result.
-    Thesis (5.34), in standard coordinates, is ``-(l × m)``: the same point.
+    Parallel lines meet at a point at infinity, which is a legitimate result
+    (well conditioned unless the lines are nearly the same line).  Thesis
+    (5.34), in standard coordinates, is ``-(l × m)``: the same point.
 
     Parameters
     ----------
     l, m : array_like, shape (..., 3)
+    cond_limit : float, optional
+        Largest accepted condition number ``κ = |l| |m| / |l × m|``
+        (:func:`cross_cond`), :data:`COND_LIMIT` = ``1e13`` by default.  The
+        returned point's relative error is at most about ``ε κ``; for two
+        lines through a point near the origin at an angle ``θ``, ``κ ≈ 1/θ``.
 
     Returns
     -------
@@ -392,8 +499,9 @@ def meet(l, m) -> np.ndarray:
     Raises
     ------
     DegenerateGeometryError
-        If ``l`` and ``m`` are the same line (``l × m`` exactly zero), or one
-        of them is the zero vector.
+        If ``l`` and ``m`` are the same line (``l × m`` exactly zero, ``.cond``
+        is ``inf``), one of them is the zero vector, or they are so nearly the
+        same line that ``κ > cond_limit`` (``.cond`` is the largest such κ).
 
     Examples
     --------
@@ -401,15 +509,18 @@ def meet(l, m) -> np.ndarray:
     array([-3.,  0.])
     >>> meet([1.0, 0.0, 0.0], [1.0, 0.0, 1.0])           # parallel: ideal point
     array([ 0., -1.,  0.])
+    >>> meet([0.3, -1.7, 0.9], [0.9, -5.1, 2.7])  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.DegenerateGeometryError: meet(l, m): l and m are nearly the same line: condition number ... exceeds cond_limit = 1e+13 ...
+
+    (``[0.9, -5.1, 2.7]`` is ``3 l`` rounded: the same line to the eye, a
+    different float line, whose "meet" with ``l`` would be an arbitrary point.)
     """
     l = as_vec3(l, "l")
     m = as_vec3(m, "m")
     p = _cross(l, m)
-    bad = np.all(p == 0, axis=-1)
-    if np.any(bad):
-        raise DegenerateGeometryError(
-            f"meet(l, m): l and m are the same line (or one is the zero vector)"
-            f"{_first_index(bad)}, so their common point is not unique")
+    _check_cond(l, m, p, "meet(l, m): l and m are {kind} line", cond_limit)
     return p
 
 

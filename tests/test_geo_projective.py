@@ -8,7 +8,7 @@ from hypothesis import strategies as st
 
 from planargeo.errors import DegenerateGeometryError, NonFiniteError, ShapeError, InputError
 from planargeo.projective import (
-    LINE_AT_INFINITY, T_STD, conic_from_standard, conic_to_standard, direction, foot_point,
+    COND_LIMIT, LINE_AT_INFINITY, T_STD, cross_cond, conic_from_standard, conic_to_standard, direction, foot_point,
     from_direction, from_standard, from_xy, incidence, is_at_infinity, is_ideal, join,
     line_direction, line_through_point_direction, meet, normalize, normalize_line,
     normalize_point, pencil, signed_distance, to_standard, to_xy,
@@ -249,6 +249,90 @@ def test_join_coincident_points_raises_naming_arguments():
 def test_meet_identical_lines_raises_naming_arguments():
     with pytest.raises(DegenerateGeometryError, match=r"meet\(l, m\): l and m are the same line"):
         meet([1.0, 2.0, 3.0], [-2.0, -4.0, -6.0])
+
+
+# ----------------------------------------------------------------------------- the join/meet threshold
+# Hand-derived: for a = [0, 0, 1] and b = [s, 0, 1] (the origin and the point (0, s); or, read as lines,
+# ...) |a × b| = s and |a| |b| = sqrt(1 + s²), so κ = sqrt(1 + s²) / s: κ = 1e13 at s ≈ 1e-13.
+def _kappa(s):
+    return np.sqrt(1.0 + s * s) / s
+
+
+def test_cond_limit_documented_value():
+    assert COND_LIMIT == 1e13
+    assert "COND_LIMIT" in join.__doc__ and "COND_LIMIT" in meet.__doc__
+
+
+@pytest.mark.parametrize("s", [1e-3, 1e-9, 1.1e-13])
+def test_join_just_below_the_limit_returns_the_line(s):
+    p, q = from_xy([0.0, 0.0]), from_xy([0.0, s])        # the y axis, points s apart
+    assert _kappa(s) < COND_LIMIT
+    assert abs(cross_cond(p, q) / _kappa(s) - 1) < 1e-12
+    l = join(p, q)
+    assert same_up_to_scale(l, [0.0, 1.0, 0.0], tol=1e-15)   # exactly the line x = 0, force +y
+    assert l[1] > 0
+
+
+@pytest.mark.parametrize("s", [0.9e-13, 1e-15, 1e-300])
+def test_join_just_above_the_limit_raises_with_cond(s):
+    p, q = from_xy([0.0, 0.0]), from_xy([0.0, s])
+    with pytest.raises(DegenerateGeometryError, match=r"join\(p, q\): p and q are nearly the same point: "
+                                                      r"condition number .* exceeds cond_limit = 1e\+13") as e:
+        join(p, q)
+    assert abs(e.value.cond / _kappa(s) - 1) < 1e-12
+    # the limit is the caller's to move; a larger one accepts the same points
+    assert same_up_to_scale(join(p, q, cond_limit=np.inf), [0.0, 1.0, 0.0], tol=1e-15)
+
+
+@pytest.mark.parametrize("s, ok", [(1.1e-13, True), (0.9e-13, False)])
+def test_meet_of_lines_through_the_origin_at_angle_s_threshold(s, ok):
+    # y = 0 ([1, 0, 0]) and the line through the origin along (1, s) ([1, s, 0]): κ = sqrt(1 + s²)/s,
+    # and they meet at the origin [0, 0, s]
+    l, m = [1.0, 0.0, 0.0], [1.0, s, 0.0]
+    if ok:
+        p = meet(l, m)
+        assert np.array_equal(p, [0.0, 0.0, s])
+    else:
+        with pytest.raises(DegenerateGeometryError, match=r"l and m are nearly the same line") as e:
+            meet(l, m)
+        assert abs(e.value.cond / _kappa(s) - 1) < 1e-12
+
+
+def test_condition_number_is_scale_invariant_and_safe_from_overflow():
+    a, b = np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 1.0])      # 45 degrees apart: κ = √2
+    for sa, sb in ((1.0, 1.0), (1e200, 1e-200), (-3e-300, 7e250)):
+        assert abs(cross_cond(sa * a, sb * b) - np.sqrt(2.0)) < 1e-15
+        join(sa * a, sb * b)                                          # no error, no warning
+    assert cross_cond(a, 0.0 * b) == np.inf
+
+
+def test_ideal_points_and_parallel_lines_are_well_conditioned():
+    # two ideal points 1e-6 rad apart: κ = 1/sin(1e-6); their join is the line at infinity, no error
+    t = 1e-6
+    P, Q = from_direction([1.0, 0.0]), from_direction([np.cos(t), np.sin(t)])
+    l = join(P, Q)
+    assert is_at_infinity(l) and l[2] != 0
+    assert abs(cross_cond(P, Q) * np.sin(t) - 1) < 1e-9
+    # parallel lines one unit apart at any angle: κ = sqrt(1 + (1 + 1)... ) ≤ 3; their meet is the ideal point
+    for a in np.linspace(0, np.pi, 7):
+        d = np.array([np.cos(a), np.sin(a)])
+        L1 = line_through_point_direction(from_xy([0.0, 0.0]), d)
+        L2 = line_through_point_direction(from_xy([-d[1], d[0]]), d)
+        assert cross_cond(L1, L2) < 3
+        assert is_ideal(meet(L1, L2))
+    # the line at infinity meets a finite line in its ideal point (κ = 1 for a line through the origin)
+    assert is_ideal(meet([1.0, 0.0, 0.0], LINE_AT_INFINITY))
+
+
+def test_threshold_broadcasts_and_names_the_index():
+    P = from_xy([[0.0, 0.0], [0.0, 0.0], [1.0, 1.0]])
+    Q = from_xy([[0.0, 1.0], [0.0, 1e-14], [2.0, 1.0]])
+    with pytest.raises(DegenerateGeometryError, match=r"at index \(1,\)") as e:
+        join(P, Q)
+    assert abs(e.value.cond / _kappa(1e-14) - 1) < 1e-12
+    with pytest.raises(DegenerateGeometryError, match=r"same point .*at index \(0,\)") as e:
+        join(P[:1], P[:1])
+    assert e.value.cond == np.inf
 
 
 def test_bad_input_named():
