@@ -61,11 +61,70 @@ __all__ = [
     "joint_space_inertia", "reaction_space_inverse_inertia",
     "inertia_decomposition", "inverse_inertia_decomposition",
     "effective_mobility", "effective_base_inertia",
-    "Decomposition",
+    "Decomposition", "COND_LIMIT", "joint_cond", "singular_joint_error",
 ]
 
 #: Largest (scale-free) condition number accepted for ``sᵀAs``, ``RᵀA⁻¹R`` and ``A``.
+#:
+#: The package's one singularity rule for a joint (every forward-dynamics method:
+#: ``aba``, ``projective``, ``mobility_split``, ``stacked``; the simulation's
+#: watched ``joint_conditions``): with ``A`` the joint's articulated inertia and
+#: ``s`` its motion space, both **at the global origin** (the thesis's
+#: convention, in which the chain algorithms form ``sᵀAs``),
+#:
+#:     cond = ‖A‖_F ‖s‖_F² / σ_min(sᵀAs)        (σ_min = |sᵀAs| for one dof)
+#:
+#: (:func:`joint_cond`), and the joint is singular when ``cond > COND_LIMIT``
+#: (``inf`` when ``σ_min = 0``).  ``‖A‖ ‖s‖²`` is the size of the products that
+#: cancel when ``sᵀAs`` is formed at the origin, so ``ε cond`` is the relative
+#: rounding error of ``sᵀAs`` there: a joint 10⁶ units from the origin reaches
+#: the limit 10¹² even for a well-conditioned body (``‖A‖ ‖s‖² ~ m |o|⁴``).
 COND_LIMIT = 1e12
+#: ``COND_LIMIT²``: the rule without a square root, ``σ_min² COND_LIMIT² > ‖A‖_F² ‖s‖⁴``
+#: (the form the compiled ABA plans test; it accepts exactly the states ``cond <= COND_LIMIT`` accepts,
+#: up to rounding of the last bit at the threshold itself)
+COND_LIMIT2 = COND_LIMIT * COND_LIMIT
+
+
+def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
+    """The scale-free condition number of a joint's ``sᵀAs`` (the rule of :data:`COND_LIMIT`), as a float.
+
+    Parameters
+    ----------
+    smin : float
+        ``σ_min(sᵀAs)`` (``|sᵀAs|`` for one dof; its sign is ignored).
+    A_norm2 : float
+        ``‖A‖_F²`` of the articulated inertia at the global origin.
+    s_norm2 : float
+        ``‖s‖_F²`` of the motion space at the global origin.
+
+    Returns
+    -------
+    float
+        ``‖A‖_F ‖s‖² / σ_min``; ``inf`` when ``σ_min = 0``.
+
+    Examples
+    --------
+    A unit point mass at distance ``d = 1e-6`` from a pivot at the origin:
+    ``sᵀAs = d²``, ``‖A‖_F ≈ √2`` (its mass block), ``s = [0, 0, 1]``.
+
+    >>> round(joint_cond(1e-12, 2.0 + 1e-24, 1.0) / 1e12, 6)
+    1.414214
+    >>> joint_cond(0.0, 2.0, 1.0)
+    inf
+    """
+    smin = abs(float(smin))
+    return math.sqrt(float(A_norm2)) * float(s_norm2) / smin if smin > 0 else math.inf
+
+
+def singular_joint_error(i: int, cond: float) -> SingularConfigurationError:
+    """The error every method raises for a singular joint ``i`` (message and ``.cond`` shared).
+
+    >>> str(singular_joint_error(3, 2e12))
+    'sᵀAs of joint 3 is singular: the inertia has (almost) nothing along s (condition number 2e+12)'
+    """
+    return SingularConfigurationError(
+        f"sᵀAs of joint {i} is singular: the inertia has (almost) nothing along s", float(cond))
 
 
 # ----------------------------------------------------------------------------- helpers
@@ -174,8 +233,7 @@ def _gram(s: np.ndarray, As: np.ndarray, A_scale, sname: str, what: str) -> np.n
     """
     if s.shape == (3, 1) and As.ndim == 2:     # one joint, one dof: Python floats (M is its own transpose)
         M = s.T @ As
-        smin, scale = abs(float(M[0, 0])), A_scale * float(np.vdot(s, s))
-        cond = scale / smin if smin > 0 else math.inf
+        cond = joint_cond(M[0, 0], A_scale * A_scale, float(np.vdot(s, s)))
         if not cond <= COND_LIMIT:
             raise SingularConfigurationError(
                 f"{what} is singular: the inertia has (almost) nothing along {sname}", float(cond))

@@ -54,33 +54,36 @@ import numpy as np
 from ..errors import SingularConfigurationError
 from ..kinematics import check_state, kinematics
 from ..model import Data, Model
+from ..subspaces import COND_LIMIT, COND_LIMIT2, _fro2, joint_cond, singular_joint_error
 
 __all__ = ["forward_dynamics", "articulated_body"]
 
-#: relative threshold below which ``s^T A s`` is declared singular
-SINGULAR_RTOL = 1e-13
+# Singular joints: the package's one rule, :data:`planargeo.subspaces.COND_LIMIT` (imported, not
+# restated): ``cond = ‖A‖_F ‖s‖² / σ_min(sᵀAs)`` with ``A`` and ``s`` at the global origin, so every
+# method accepts or raises for the same states, with the same ``.cond`` and message
+# (:func:`planargeo.subspaces.singular_joint_error`).
 #: batches up to this size are evaluated state by state on Python floats (the batched
 #: plan's ~0.5 µs per numpy call per body-step is worth it from about 30 states on)
 SMALL_BATCH = 32
 
 
 def _check_D(D, A, s, i):
-    """Raise SingularConfigurationError if D = s^T A s (..., k, k) is (numerically) singular."""
+    """Raise SingularConfigurationError if D = s^T A s (..., k, k) is singular by the package's rule.
+
+    ``A`` (..., 3, 3) and ``s`` (..., 3, k) at the global origin; the rule of
+    :data:`planargeo.subspaces.COND_LIMIT` (``‖A‖_F ‖s‖² / σ_min(D)``).
+    """
     k = D.shape[-1]
-    scale = np.trace(A, axis1=-2, axis2=-1) * np.maximum(np.sum(s * s, axis=(-2, -1)), 1e-300)
     if k == 1:
-        lo = D[..., 0, 0]
-        hi = lo
+        lo = np.abs(D[..., 0, 0])
     else:
-        w = np.linalg.eigvalsh(D)
-        lo, hi = w[..., 0], w[..., -1]
-    bad = ~(lo > SINGULAR_RTOL * scale)
+        lo = np.abs(np.linalg.eigvalsh(0.5 * (D + np.swapaxes(D, -1, -2)))).min(axis=-1)
+    lo, F2, s2 = np.broadcast_arrays(lo, _fro2(A), _fro2(s))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        cond = np.where(lo > 0, np.sqrt(F2) * s2 / np.where(lo > 0, lo, 1.0), np.inf)
+    bad = ~(cond <= COND_LIMIT)
     if np.any(bad):
-        with np.errstate(divide="ignore", invalid="ignore"):
-            cond = np.where(lo > 0, np.maximum(scale, hi) / np.where(lo > 0, lo, 1.0), np.inf)
-        raise SingularConfigurationError(
-            f"joint {i}: s^T A s is singular (the articulated inertia does not resist the joint motion)",
-            float(np.max(np.where(bad, cond, 0.0))))
+        raise singular_joint_error(i, float(np.max(np.where(bad, cond, 0.0))))
 
 
 def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
@@ -106,7 +109,7 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
     ------
     SingularConfigurationError
         If some ``s_i^T A_i s_i`` is singular (e.g. a point mass on a revolute
-        joint at its own position).
+        joint at its own position), by the rule of :data:`planargeo.subspaces.COND_LIMIT`.
 
     Examples
     --------
@@ -184,13 +187,12 @@ def _scalar_tables(model: Model):
     return cache["aba_scalar"]
 
 
-def _singular_components(D, scale, i):
-    D, scale = np.asarray(D, dtype=float), np.asarray(scale, dtype=float)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        cond = np.where(D > 0, scale / np.where(D > 0, D, 1.0), np.inf)
-    raise SingularConfigurationError(
-        f"joint {i}: s^T A s is singular (the articulated inertia does not resist the joint motion)",
-        float(np.max(cond)))
+def _singular_components(D, F2, s2, i):
+    """Raise the singular-joint error for the states of ``D`` that fail the rule (scalars or rows)."""
+    D, F2, s2 = np.broadcast_arrays(*(np.abs(np.asarray(x, dtype=float)) for x in (D, F2, s2)))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        cond = np.where(D > 0, np.sqrt(F2) * s2 / np.where(D > 0, D, 1.0), np.inf)
+    raise singular_joint_error(i, float(np.max(np.where(cond <= COND_LIMIT, 0.0, cond))))
 
 
 def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.sin) -> list:
@@ -281,10 +283,12 @@ def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.
         U1 = a01 * s0 + a11 * s1 + a12 * s2
         U2 = a02 * s0 + a12 * s1 + a22 * s2
         D = s0 * U0 + s1 * U1 + s2 * U2
-        scale = (a00 + a11 + a22) * (s0 * s0 + s1 * s1 + s2 * s2)
-        ok = D > SINGULAR_RTOL * scale
+        # the rule of subspaces.COND_LIMIT, squared: D² LIMIT² > ‖A‖_F² ‖s‖⁴ (A, s at the origin)
+        F2 = a00 * a00 + a11 * a11 + a22 * a22 + 2.0 * (a01 * a01 + a02 * a02 + a12 * a12)
+        ss = s0 * s0 + s1 * s1 + s2 * s2
+        ok = D * D * COND_LIMIT2 > F2 * ss * ss
         if ok is not True and not np.all(ok):
-            _singular_components(D, scale, i)
+            _singular_components(D, F2, ss, i)
         Di = 1.0 / D
         u = tau[o] - (s0 * c0 + s1 * c1 + s2 * c2)
         UU[i] = (U0, U1, U2, Di, u)
@@ -340,8 +344,12 @@ def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.
 #   passed inwards has moment ``τ_i`` about the joint, and (3.41) reads
 #   ``q̈_i = D⁻¹ (u'_i - U_0 ā_0 - U_1 ā_1) - a'_2`` with ``u'_i = τ_i - d_i,2`` and
 #   ``ā = a' + κ_i`` (the parent's acceleration at o_i plus the bias term).
-#   Singularity is tested as ``D > SINGULAR_RTOL · trace(A)`` at o_i (|s| = 1
-#   there), the general path's test with the scale taken at o_i.
+#   Singularity follows the package's rule (:data:`planargeo.subspaces.COND_LIMIT`,
+#   ``A`` and ``s`` at the global origin): the plan tests a cheap sufficient
+#   condition ``D² LIMIT² > b²``, ``b ≥ ‖A_O‖_F ‖s_O‖²`` from ``trace A`` at o_i and
+#   the world position of o_i, and only where that fails the exact rule
+#   (:func:`_singular_plan`), so it accepts and raises exactly where the other
+#   methods do.
 # * Accelerations are *classical*: ``a_i`` is the acceleration of the material
 #   point at o_i (and the angular acceleration), not the spatial acceleration.
 #   The equations keep their form ``f = I a + d``, ``a_i = a'_λ + s_i q̈_i + κ_i``
@@ -369,15 +377,34 @@ MAX_PLAN_BODIES = 400
 EAGER_PLAN_BODIES = 64
 #: plans for more bodies than this keep each body's values in a tuple between passes
 PACK_BODIES = 64
-#: a joint's singularity test is left out of the plan when proven to pass with this margin (see :func:`_checks`)
-PROVEN_RTOL = 1e-8
+#: a joint's singularity test is left out of the plan when proven to pass: ``D`` above this times the bound on
+#: ``‖A_O‖_F ‖s_O‖²`` (twice the rule's ``1 / COND_LIMIT``: the other methods, forming ``sᵀAs`` at the origin,
+#: see a ``cond`` off by a relative ``ε cond ≤ 1e-4``, far less than the factor 2; see :func:`_checks`) ...
+PROVEN_RTOL = 2.0 / COND_LIMIT
+#: ... and above this times the bound on ``trace A`` at o_i (rounding errors of ``D``, accumulated at o_i, stay far below)
+ROUNDING_RTOL = 1e-8
 _cos, _sin = math.cos, math.sin
 
 
-def _singular_float(D, scale, i):
-    raise SingularConfigurationError(
-        f"joint {i}: s^T A s is singular (the articulated inertia does not resist the joint motion)",
-        scale / D if D > 0 else math.inf)
+def _singular_plan(D, a00, a01, a02, a11, a12, a22, X, Y, kind, i):
+    """The exact singularity rule for joint ``i`` of a plan, where its cheap bound failed: raise or return.
+
+    The plan keeps ``A`` at the body origin ``o_i = (X, Y)`` (world axes); the rule
+    (:data:`planargeo.subspaces.COND_LIMIT`) takes ``A`` and ``s`` at the global origin:
+    ``A_O`` is ``A`` moved by ``o_i`` (moments ``n + o × F``, congruently), ``s_O = [Y, -X, 1]``
+    (revolute, ``‖s‖² = 1 + |o|²``) or ``[cos, sin, 0]`` (prismatic, ``‖s‖² = 1``);
+    ``D = sᵀAs`` is the same at either point.  The plan tests first the cheaper sufficient
+    condition ``D² LIMIT² > b²`` with ``b ≥ ‖A_O‖_F ‖s_O‖²``: for positive semi-definite ``A``,
+    ``‖A_O‖_F ≤ trace A_O ≤ (1 + 2|o|²)(A_00 + A_11) + 2 A_22`` (the moment about the origin
+    ``(ẑ + u)ᵀA(ẑ + u) ≤ 2 ẑᵀAẑ + 2 uᵀAu``, ``|u| = |o|``); this function runs only when that fails.
+    """
+    P02 = a02 - Y * a00 + X * a01
+    P12 = a12 - Y * a01 + X * a11
+    P22 = a22 - Y * a02 - Y * P02 + X * a12 + X * P12
+    F2 = a00 * a00 + a11 * a11 + P22 * P22 + 2.0 * (a01 * a01 + P02 * P02 + P12 * P12)
+    cond = joint_cond(D, F2, 1.0 + X * X + Y * Y if kind == 1 else 1.0)
+    if not cond <= COND_LIMIT:
+        raise singular_joint_error(i, cond)
 
 
 def _packed(N):
@@ -552,10 +579,10 @@ def _plan_lines(kinds, parents, zero, with_fext, pack=None, checks=None):
         else:           # kappa = -w² r (centripetal)
             kap = (let(f"k0_{i}", [[neg(wwp), rx]]), let(f"k1_{i}", [[neg(wwp), ry]]))
         B.update(w=w, ww=ww, kap=kap)
-        if with_fext:
-            ox = let(f"ox{i}", [[P["o"][0]], [rx]])
-            oy = let(f"oy{i}", [[P["o"][1]], [ry]])
-            B["o"] = (ox, oy)
+        # the body origin in the world (for external wrenches and the singularity tests; dropped if unused)
+        ox = let(f"ox{i}", [[P["o"][0]], [rx]])
+        oy = let(f"oy{i}", [[P["o"][1]], [ry]])
+        B["o"] = (ox, oy)
         # rigid inertia at o_i (4.58): m, m (c_i - o_i), J + m |com in body|^2
         mcx = let(f"mcx{i}", [[c, mcbx], [neg(s), mcby]])
         mcy = let(f"mcy{i}", [[s, mcbx], [c, mcby]])
@@ -572,9 +599,23 @@ def _plan_lines(kinds, parents, zero, with_fext, pack=None, checks=None):
                   let(f"d2_{i}", [e[2], e[3], e[4]])]
         body.append(B)
         if pack:   # what the inward pass needs, in one local
-            stash(f"T{i}", [*B["r"], *B["kap"], *B["A"], *B["d"]])
+            stash(f"T{i}", [*B["r"], *B["kap"], *B["A"], *B["d"], *(B["o"] if checks[i] else ())])
     # 3. articulated inertias and bias forces, tip to base (3.35-3.39)
     IDX = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))
+
+    def check(i, D):
+        # the rule of subspaces.COND_LIMIT, cheaply bounded (see the comment above _singular_plan):
+        # pass if D² LIMIT² > (bound on ‖A_O‖_F ‖s_O‖²)², else the exact rule in _singular_plan
+        B = body[i]
+        a00, a01, a02, a11, a12, a22 = B["A"]
+        ox, oy = B["o"]
+        R2 = let(f"R2_{i}", [[ox, ox], [oy, oy]])
+        t0 = let(f"t0_{i}", [[a00], [a11]])
+        bnd = let(f"bd{i}", [[t0], [TWO, R2, t0], [TWO, a22]])
+        if B["kind"] == 1:   # ‖s_O‖² = 1 + |o|²
+            bnd = let(f"bs{i}", [[bnd], [bnd, R2]])
+        emit(f"    if not {text(D)}*{text(D)}*{COND_LIMIT2!r} > {text(bnd)}*{text(bnd)}:")
+        emit(f"        _singular_plan({', '.join(text(x) for x in (D, *B['A'], ox, oy))}, {B['kind']}, {i})")
 
     def inward(i):
         B = body[i]
@@ -582,12 +623,9 @@ def _plan_lines(kinds, parents, zero, with_fext, pack=None, checks=None):
         A, d, (k0, k1) = B["A"], B["d"], B["kap"]
         a00, a01, a02, a11, a12, a22 = A
         emit(f"    # body {i}, inwards")
-        tr, _ = expr([[a00], [a11], [a22]])
-        tr = tr or text(expr([[a00], [a11], [a22]])[1])
         if kind == 1:   # D = A_22, U = A[:, 2]
             if checks[i]:
-                emit(f"    if not {text(a22)} > SINGULAR_RTOL * ({tr}):")
-                emit(f"        _singular_float({text(a22)}, {tr}, {i})")
+                check(i, a22)
             emit(f"    Di{i} = 1.0 / {text(a22)}")
             Di = (False, f"Di{i}")
             W0, W1 = let(f"W0_{i}", [[a02, Di]]), let(f"W1_{i}", [[a12, Di]])
@@ -609,8 +647,7 @@ def _plan_lines(kinds, parents, zero, with_fext, pack=None, checks=None):
                                        [A[IDX.index(tuple(sorted((j, 1))))], ss]]) for j in range(3)]
                 D = let(f"D{i}", [[U[0], cs], [U[1], ss]])
                 if checks[i]:
-                    emit(f"    if not {text(D)} > SINGULAR_RTOL * ({tr}):")
-                    emit(f"        _singular_float({text(D)}, {tr}, {i})")
+                    check(i, D)
                 emit(f"    Di{i} = 1.0 / {text(D)}")
                 Di = (False, f"Di{i}")
                 uu = let(f"u{i}", [[B["tau"]], [neg(cs), c[0]], [neg(ss), c[1]]])
@@ -761,16 +798,20 @@ def _registers(lines):
 def _checks(model: Model, kinds) -> tuple:
     """Which joints keep the singularity test in the plan: those where it is not proven to pass.
 
-    In exact arithmetic the articulated inertia lies between the body's own
-    inertia and the composite inertia of its subtree: at o_i, ``D = A_22 ≥ J_i +
-    m_i |c_i - o_i|²`` (revolute) or ``D = eᵀ A e ≥ m_i`` (prismatic), and ``trace A
-    ≤ 2 M + Σ J_k + M ρ²`` with ``M`` the subtree's mass and ``ρ`` a bound on the
-    distance from o_i to its centres of mass.  With only revolute and fixed joints
-    below body i, ``ρ`` is a constant (sums of placement lengths); if then the lower
-    bound on ``D`` exceeds ``PROVEN_RTOL`` (10⁵ × SINGULAR_RTOL, far above rounding
-    errors) times the upper bound on the trace, the test can never fail for any
-    finite state and is left out.  Joints whose test can fail (a point mass on its
-    own joint, prismatic joints below...) keep it.
+    The rule (:data:`planargeo.subspaces.COND_LIMIT`) accepts ``D = sᵀAs`` when
+    ``D > ‖A_O‖_F ‖s_O‖² / COND_LIMIT`` (``A``, ``s`` at the global origin).  In exact
+    arithmetic the articulated inertia lies between the body's own inertia and the
+    composite inertia of its subtree: at o_i, ``D = A_22 ≥ J_i + m_i |c_i - o_i|²``
+    (revolute; a prismatic joint's own ``q`` moves o_i without bound, so its test is
+    always kept), and ``‖A_O‖_F ≤ trace A_O ≤ 2 M + Σ J_k + M (r + ρ)²`` with ``M`` the
+    subtree's mass, ``ρ`` a bound on the distance from o_i to its centres of mass and
+    ``r`` a bound on ``|o_i|``; ``‖s_O‖² = 1 + |o_i|² ≤ 1 + r²``.  With only revolute
+    and fixed joints above and below body i, ``r`` and ``ρ`` are constants (sums of
+    placement lengths); if the lower bound on ``D`` exceeds ``PROVEN_RTOL`` (2 / LIMIT)
+    times the upper bound on ``‖A_O‖_F ‖s_O‖²`` and ``ROUNDING_RTOL`` times the bound on
+    ``trace A`` at o_i (so that rounding cannot matter), the test can never fail for
+    any finite state and is left out.  Joints whose test can fail (a point mass on its
+    own joint, prismatic joints, joints far from the origin...) keep it.
     """
     N = model.N
     mass, jsum, reach, rigid = [0.0] * N, [0.0] * N, [0.0] * N, [True] * N
@@ -785,11 +826,19 @@ def _checks(model: Model, kinds) -> tuple:
             jsum[p] += jsum[i]
             reach[p] = max(reach[p], math.hypot(*model.joints[i].placement[:2]) + reach[i])
             rigid[p] = rigid[p] and rigid[i] and kinds[i] != 2
+    dist, fixed_base = [0.0] * N, [True] * N   # bound on |o_i|; whether no prismatic joint is above body i
+    for i in range(N):
+        p = model.parents[i]
+        dist[i] = math.hypot(*model.joints[i].placement[:2]) + (dist[p] if p >= 0 else 0.0)
+        fixed_base[i] = (fixed_base[p] and kinds[p] != 2) if p >= 0 else True
     checks = []
     for i, (b, kind) in enumerate(zip(model.bodies, kinds)):
-        low = b.mass if kind == 2 else b.inertia + b.mass * (b.com[0] ** 2 + b.com[1] ** 2)
+        low = b.inertia + b.mass * (b.com[0] ** 2 + b.com[1] ** 2)
         high = 2.0 * mass[i] + jsum[i] + mass[i] * reach[i] ** 2
-        checks.append(kind != 0 and not (rigid[i] and low > PROVEN_RTOL * high))
+        high_O = (2.0 * mass[i] + jsum[i] + mass[i] * (dist[i] + reach[i]) ** 2) * (1.0 + dist[i] ** 2)
+        proven = (kind == 1 and rigid[i] and fixed_base[i]
+                  and low > ROUNDING_RTOL * high and low > PROVEN_RTOL * high_O)
+        checks.append(kind != 0 and not proven)
     return tuple(checks)
 
 
@@ -881,12 +930,12 @@ _ndarray, _F64, _array, _isfinite = np.ndarray, np.dtype(np.float64), np.array, 
 # bound on the block's angles (``N max|q|`` plus the placement angles) is within
 # ``TRIG_TABLE_RANGE``; otherwise from numpy.
 #
-# The singularity test ``D > SINGULAR_RTOL · trace`` (where the plan keeps it, see
-# :func:`_checks`) becomes ``D - SINGULAR_RTOL · trace > 0`` (equivalent for
-# floats), its minimum kept in one row and tested once per block.  If it fails, the
-# block is evaluated state by state by the single-state plan, which raises
-# SingularConfigurationError for the first singular state exactly as a single state
-# does.  If a result is not finite (finite but huge inputs overflow), the batch is
+# The plan's cheap singularity test ``D² LIMIT² > b²`` (where the plan keeps it, see
+# :func:`_checks` and :func:`_singular_plan`) becomes ``D² LIMIT² - b² > 0``, its
+# minimum kept in one row and tested once per block.  If it fails, the block is
+# evaluated state by state by the single-state plan, which applies the exact rule and
+# raises SingularConfigurationError for the first singular state exactly as a single
+# state does.  If a result is not finite (finite but huge inputs overflow), the batch is
 # run again by the general component path (:func:`_aba_components`), which returns
 # its non-finite values with numpy's warnings.
 _BATCH_PLANS: dict = {}
@@ -895,9 +944,9 @@ BATCH_CHUNK = 16384
 BATCH_BYTES = 16 << 20
 _UFUNC_NS = {"add": np.add, "sub": np.subtract, "mul": np.multiply, "div": np.divide, "neg": np.negative,
              "minimum": np.minimum, "copyto": np.copyto, "_0d": np.array,
-             "_mcos": math.cos, "_msin": math.sin, "SINGULAR_RTOL": SINGULAR_RTOL}
+             "_mcos": math.cos, "_msin": math.sin}
 _BINOPS = {ast.Add: ("add", "+"), ast.Sub: ("sub", "-"), ast.Mult: ("mul", "*"), ast.Div: ("div", "/")}
-_CHECK = re.compile(r"if not (.+) > SINGULAR_RTOL \* \((.+)\):$")
+_CHECK = re.compile(r"if not (.+) > (.+):$")
 
 
 #: entries of the sine and cosine tables of :func:`_sincos_table`, and the angles it serves
@@ -968,7 +1017,7 @@ def _batch_source(lines):
     stmts = []
     for line in lines[1:]:
         for st in line.strip().split("; "):
-            if not st or st.startswith(("#", "_singular_float")):
+            if not st or st.startswith(("#", "_singular_plan")):
                 continue
             if st.startswith("if not "):
                 stmts.append(("check",) + _CHECK.match(st).groups())
@@ -1052,9 +1101,8 @@ def _batch_source(lines):
         elif s[0] == "check":
             (D, drow), (tr, trow) = value(s[1]), value(s[2])
             if not (drow or trow):
-                items.append(("py", f"if not {D[1]} > SINGULAR_RTOL * ({tr[1]}): return False"))
+                items.append(("py", f"if not {D[1]} > {tr[1]}: return False"))
                 continue
-            tr = op("mul", tr, ("x", "SINGULAR_RTOL")) if trow else ("x", f"SINGULAR_RTOL * ({tr[1]})")
             margin = op("sub", D, tr)
             ok = margin if ok is None else op("minimum", ok, margin)
         else:
@@ -1223,7 +1271,10 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     Raises
     ------
     SingularConfigurationError
-        If some ``s_i^T A_i s_i`` is singular.
+        If some ``s_i^T A_i s_i`` is singular by the package's one rule
+        (:data:`planargeo.subspaces.COND_LIMIT`: ``‖A‖_F ‖s‖² / σ_min(sᵀAs) > 1e12``
+        at the global origin), with that ``.cond``, for exactly the states the other
+        recursive methods refuse.
 
     Examples
     --------

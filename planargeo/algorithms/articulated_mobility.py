@@ -114,6 +114,14 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None) -> Articu
 _EYE3 = np.eye(3)
 _EYE3.setflags(write=False)
 
+#: Backstop for the method's own 3×3 solves (``1 + U Rᵀ Λ⁻¹ I`` of 7.38, ``1 + Λ⁻¹ R Uᵀ A`` of 7.54):
+#: raise only when numerically singular (``cond ≥ 1/ε``).  Whether a configuration is singular is
+#: decided by the joints' rule (:data:`planargeo.subspaces.COND_LIMIT`, checked on every ``sᵀIs``)
+#: as for every other method; these matrices inherit their conditioning from the joints' (measured
+#: up to ~30 × the joint's ``cond`` near the limit: a point-mass tip), so a tighter limit here
+#: would refuse states the other methods accept.
+SOLVE_COND_LIMIT = 1e16
+
 
 def _cond(M) -> float:
     """Cheap condition number ``‖M‖ ‖M⁻¹‖`` (Frobenius norms) of a small square matrix; ``inf`` if singular.
@@ -165,7 +173,7 @@ def _mobility(I, S, kappa, p, tau):
         else:
             M = eye + P @ Lam[i - 1] @ Ii
             c = _cond(M)
-            if not c < 1e13:
+            if not c < SOLVE_COND_LIMIT:
                 raise SingularConfigurationError(f"1 + U R^T Lambda^-1 I of body {i} is singular", c)
             Lam[i] = _solve(M, G + P @ Lam[i - 1])                           # (7.38a)
             b[i] = _solve(M, eta - P @ (Lam[i - 1] @ p[i] - b[i - 1] - kappa[i]))  # (7.38b)

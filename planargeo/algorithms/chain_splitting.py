@@ -25,7 +25,7 @@ import numpy as np
 from ..errors import SingularConfigurationError
 from .articulated_inertia import _articulated
 from ..subspaces import _solve
-from .articulated_mobility import _EYE3, _check_chain, _cond, _mobility
+from .articulated_mobility import _EYE3, SOLVE_COND_LIMIT, _check_chain, _cond, _mobility
 from .projective import _per_state, _state_arrays
 
 __all__ = ["ChainSplit", "split_acceleration", "split_force", "chain_split",
@@ -35,7 +35,7 @@ __all__ = ["ChainSplit", "split_acceleration", "split_force", "chain_split",
 def _C(Lam_i, K):
     C = _EYE3 + Lam_i @ K
     c = _cond(C)
-    if not c < 1e13:
+    if not c < SOLVE_COND_LIMIT:
         raise SingularConfigurationError("1 + Lambda^-1 R U^T A of the split is singular", c)
     return C
 
