@@ -173,3 +173,104 @@ def test_ipympl_canvas_is_the_figure_widget():
     """)
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert r.returncode == 0 and r.stdout.strip().endswith("ok"), r.stderr[-2000:]
+
+
+# ----------------------------------------------------------------- display-only controls
+class ToyOverlay(Toy):
+    """Toy with a display-only checkbox: it hides the segment, changes nothing computed."""
+
+    display_controls = ("show",)
+
+    def make_controls(self):
+        c = super().make_controls()
+        c["show"] = W.Checkbox(value=True, description="show")
+        return c
+
+    def render(self, st):
+        out = super().render(st)
+        self.seg.set_visible(self.values["show"])
+        return out
+
+
+def test_display_only_control_redraws_without_computing():
+    t = ToyOverlay(display="agg")
+    assert t.n_computes == 1
+    state = t.state
+    t.controls["show"].value = False
+    assert t.n_computes == 1 and t.n_updates == 2 and t.state is state
+    assert not t.seg.get_visible()
+    t.controls["show"].value = True
+    assert t.seg.get_visible() and t.n_computes == 1
+    t.controls["a"].value = 0.7                                # physics: one compute
+    assert t.n_computes == 2 and t.seg.get_xdata()[1] == 0.7
+    with t.hold():                                              # mixed changes: one compute
+        t.controls["show"].value = False
+        t.controls["b"].value = 1.5
+    assert t.n_computes == 3 and t.readout_values["changed"] == "b,show"
+
+
+def test_display_toggle_after_a_failed_compute_recomputes():
+    t = ToyOverlay(display="agg")
+    t.controls["a"].value = 1.5                                 # a > b: message, last drawing kept
+    n = t.n_computes
+    t.controls["show"].value = False                            # the shown state is not current
+    assert t.n_computes == n + 1 and t.message == "a must not exceed b"
+    t.controls["a"].value = 0.2
+    assert t.message == "" and not t.seg.get_visible()
+
+
+def test_display_controls_must_name_controls():
+    class Bad(ToyOverlay):
+        display_controls = ("shwo",)
+
+    with pytest.raises(InputError, match="display_controls names no control 'shwo'"):
+        Bad(display="agg")
+
+
+@pytest.mark.parametrize("name", [n for n in NAMES if getattr(widgets, n).display_controls])
+def test_every_display_control_skips_the_compute(name):
+    ex = getattr(widgets, name)(display="agg")
+    calls = []
+    real = ex.compute
+    ex.compute = lambda v, changed: calls.append(set(changed)) or real(v, changed)
+    for cname in ex.display_controls:
+        w = ex.controls[cname]
+        old = w.value
+        w.value = (not old) if isinstance(w, W.Checkbox) else (w.max if old != w.max else w.min)
+        assert ex.message == "", (cname, ex.message)
+        w.value = old
+    assert calls == []
+    assert ex.n_updates == 1 + 2 * len(ex.display_controls)
+    ex.fig.canvas.draw()
+    # every other control still recomputes
+    physics = next(k for k, w in ex.controls.items()
+                   if k not in ex.display_controls and isinstance(w, W.FloatSlider))
+    w = ex.controls[physics]
+    w.value = w.min + 0.5 * (w.max - w.min)
+    assert calls == [{physics}]
+
+
+# ----------------------------------------------------------------- export, every explorer
+@pytest.mark.parametrize("name", NAMES)
+def test_export_svg_every_explorer_writes_the_current_view(name, tmp_path):
+    import xml.etree.ElementTree as ET
+
+    ex = getattr(widgets, name)(display="agg", export_dir=tmp_path)
+    ex.export_button.click()
+    first = ex.last_export
+    assert first is not None and first.parent == tmp_path.resolve()
+    assert "saved" in ex.export_label.value and str(first) in ex.export_label.value
+    root = ET.parse(first).getroot()
+    assert root.tag.endswith("svg")
+    w_in, h_in = ex.fig.get_size_inches()
+    assert float(root.get("width").rstrip("pt")) == pytest.approx(72 * w_in)
+    assert float(root.get("height").rstrip("pt")) == pytest.approx(72 * h_in)
+    ex.export_button.click()                          # the same view: the same file
+    assert ex.last_export != first and ex.last_export.read_text() == first.read_text()
+    # move the first float slider: the next export shows the new view
+    slider = next(w for w in ex.controls.values() if isinstance(w, W.FloatSlider))
+    slider.value = slider.min + 0.37 * (slider.max - slider.min)
+    ex.export_button.click()
+    second = ex.last_export
+    assert second != first and second.read_text() != first.read_text()
+    assert len(list(tmp_path.glob(f"planargeo-{ex.slug}-*.svg"))) == 3

@@ -91,3 +91,71 @@ def test_view_grows_to_show_a_large_custom_body(ex):
     x0, x1 = ex.ax.get_xlim()
     y0, y1 = ex.ax.get_ylim()
     assert x0 <= 0 and x1 >= 4 and y0 <= 0 and y1 >= 3
+
+
+def _drag(ex, start, end):
+    from matplotlib.backend_bases import MouseEvent
+
+    ex.fig.canvas.draw()
+    canvas = ex.fig.canvas
+    x0, y0 = ex.ax.transData.transform(start)
+    x1, y1 = ex.ax.transData.transform(end)
+    canvas.callbacks.process("button_press_event",
+                             MouseEvent("button_press_event", canvas, x0 + 2, y0 - 2, button=1))
+    canvas.callbacks.process("motion_notify_event", MouseEvent("motion_notify_event", canvas, x1, y1))
+    canvas.callbacks.process("button_release_event",
+                             MouseEvent("button_release_event", canvas, x1, y1, button=1))
+    return (x0, y0)
+
+
+def test_mouse_drag_moves_the_pole_and_the_axis_follows(ex):
+    start = _drag(ex, (0.0, 0.0), (-0.4, 0.3))          # grab the pole at the grip, drop it
+    assert ex.values["pole x"] == pytest.approx(-0.4, abs=0.01)
+    assert ex.values["pole y"] == pytest.approx(0.3, abs=0.01)
+    P = np.array([ex.values["pole x"], ex.values["pole y"]])
+    a = ex.pole_art.get_point()
+    assert [-a[1] / a[2], a[0] / a[2]] == pytest.approx(P)
+    # the axis of percussion of the dropped pole: ⟂ (P - c) at ρ²/d beyond c (5.67, 5.68)
+    c = np.array([0.5, 0.0])
+    d = np.linalg.norm(P - c)
+    f = ex.axis_art.get_line()
+    assert np.dot(f[:2], P - c) == pytest.approx(0.0, abs=1e-12)
+    assert abs(np.dot([c[1], -c[0], 1.0], f)) / np.hypot(f[0], f[1]) == pytest.approx(RHO2 / d)
+    assert ex.readout_values["d = |pole − c|"] == pytest.approx(d)
+    # a drag that does not start on the pole moves nothing
+    from matplotlib.backend_bases import MouseEvent
+
+    canvas = ex.fig.canvas
+    far = ex.ax.transData.transform((1.5, -0.8))
+    canvas.callbacks.process("button_press_event",
+                             MouseEvent("button_press_event", canvas, *far, button=1))
+    canvas.callbacks.process("motion_notify_event", MouseEvent("motion_notify_event", canvas, *start))
+    assert ex.values["pole x"] == pytest.approx(-0.4, abs=0.01)
+    # beyond the slider range the pole stops at the range's end
+    assert ex.ax.get_xlim()[1] > 2.07 > ex.controls["pole x"].max
+    _drag(ex, tuple(P), (2.07, 0.2))
+    assert ex.values["pole x"] == ex.controls["pole x"].max
+
+
+def test_angular_acceleration_only_redraws(ex, monkeypatch):
+    import planargeo.widgets.percussion as mod
+
+    calls = []
+    real = mod.polygon_moments
+    monkeypatch.setattr(mod, "polygon_moments", lambda *a, **k: calls.append(1) or real(*a, **k))
+    n = ex.n_computes
+    ex.controls["angular accel. α"].value = -4.0
+    assert ex.n_computes == n                                        # no recompute
+    assert ex.readout_values["force for α: m d α (5.66)"] == pytest.approx(1.0 * 0.5 * -4.0)
+    # mass, pole, drive: recompute, but the polygon is not integrated again
+    ex.set(**{"mass (kg)": 2.0, "pole x": 0.1})
+    ex.controls["drive"].value = "impact"
+    ex.controls["drive"].value = "acceleration pole"
+    assert calls == [] and ex.n_computes == n + 3
+    assert ex.readout_values["mass m"] == pytest.approx(2.0)
+    assert ex.readout_values["radius of gyration ρ"] == pytest.approx(math.sqrt(RHO2))
+    # a new shape is integrated once, and again only when it changes
+    ex.controls["shape"].value = "disc"
+    ex.controls["pole x"].value = -0.3
+    assert len(calls) == 1
+    assert ex.readout_values["mass m"] == pytest.approx(2.0)

@@ -124,3 +124,21 @@ def test_ideal_point_maps_to_a_diameter_and_line_at_infinity_to_the_centre(ex):
     assert "P x, P y" in ex.message
     ex.set(**{"P at infinity": False})
     assert ex.message == ""
+
+
+def test_construction_toggle_only_redraws_and_shows_the_current_point(ex):
+    ex.set(**{"P x": 2.0, "P y": 1.5})
+    n = ex.n_computes
+    ex.controls["construction"].value = False
+    assert ex.n_computes == n and not any(a.get_visible() for a in ex.tan_art + ex.cpts_art)
+    ex.controls["P x"].value = -2.5                      # moved while the construction is hidden
+    ex.controls["construction"].value = True
+    assert ex.n_computes == n + 1
+    shown = [a for a in ex.cpts_art if a.get_visible()]
+    assert len(shown) == 2
+    for a in shown:                                      # tangent points of the moved P
+        X = a.get_xy()
+        assert np.hypot(*X) == pytest.approx(1.5)
+        assert np.dot(X - [-2.5, 1.5], X) == pytest.approx(0.0, abs=1e-9)
+    ex.controls["line and its pole"].value = False
+    assert ex.n_computes == n + 1 and not ex.M_art.get_visible() and not ex.Mpole_art.get_visible()

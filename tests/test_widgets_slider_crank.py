@@ -85,3 +85,24 @@ def test_dead_centre_and_impossible_configurations(ex):
     ex.controls["rod length"].value = 5.0
     assert ex.message == ""
     assert ex.readout_values["piston height h"] == pytest.approx(height(0.0, 5.0))
+
+
+def test_crank_moves_reuse_the_model_and_pole_toggles_only_redraw(ex):
+    model = ex.model_for(5.0, 9.81)
+    ex.controls["crank angle (deg)"].value = 40.0
+    assert ex.model_for(5.0, 9.81) is model and len(ex._models) == 1
+    n = ex.n_computes
+    ex.controls["velocity poles"].value = True
+    assert ex.n_computes == n
+    # the drawn velocity poles are the link twists of the current state: the crank turns about
+    # the origin at the crank speed, the piston only slides (an ideal point) at h'(ψ) ψ̇
+    psi, w, e = math.radians(40.0), 20.0, 1e-5
+    assert ex.v_art[0].get_point() == pytest.approx([0.0, 0.0, w], abs=1e-12)
+    v3 = ex.v_art[2].get_point()
+    hp = (height(psi + e, 5.0) - height(psi - e, 5.0)) / (2 * e)
+    assert v3 == pytest.approx([0.0, hp * w, 0.0], abs=1e-6)
+    ex.controls["acceleration poles"].value = False
+    assert ex.n_computes == n and not any(a.get_visible() for a in ex.a_art)
+    ex.controls["rod length"].value = 4.0                       # a new model
+    assert ex.n_computes == n + 1 and len(ex._models) == 2
+    assert ex.readout_values["piston height h"] == pytest.approx(height(psi, 4.0), rel=1e-9)

@@ -1,7 +1,12 @@
-"""TreeExplorer: the closed loops hold (pin points share accelerations), forces pass the pins."""
+"""TreeExplorer: the closed loops hold (pin points share accelerations), forces pass the pins,
+and the numbers shown match independent references (Lagrange multipliers in maximal coordinates,
+dense CRBA, a hand count of the degrees of freedom)."""
 import numpy as np
 import pytest
 
+from planargeo import scenes
+from planargeo.algorithms.crba import forward_dynamics_crba
+from planargeo.algorithms.loops import constrained_dynamics_lagrange
 from planargeo.widgets.trees import TreeExplorer
 
 
@@ -12,8 +17,7 @@ def point_accel(a, p):
 
 
 def pin_points(ex):
-    d = ex.state["res"].extra["solution"].data
-    pose = d.pose
+    pose = ex.state["sol"].data.pose
     return pose[:, :2] + np.column_stack([np.cos(pose[:, 2]), np.sin(pose[:, 2])])
 
 
@@ -23,12 +27,44 @@ def ex():
 
 
 def test_loops_close_at_rest(ex):
-    a = np.asarray(ex.state["res"].quantities["a"]).reshape(9, 3)
+    a = ex.state["a"]
     tips = pin_points(ex)
     for i, j in ((3, 6), (7, 8)):
         assert tips[i] == pytest.approx(tips[j], abs=1e-12)
         assert point_accel(a[i], tips[i]) == pytest.approx(point_accel(a[j], tips[j]), abs=1e-9)
-    assert ex.readout_values["degrees of freedom"] == 5
+
+
+def test_degrees_of_freedom_hand_count(ex):
+    # Fig 9.1: nine one-dof revolute joints; Fig 9.2 adds two pins, each fixing two
+    # translations of one tip relative to another: 9 - 2 * 2 = 5.
+    assert ex.readout_values["degrees of freedom"] == 9 - 2 * 2
+    ex.controls["loops"].value = "open (Fig 9.1)"
+    assert ex.readout_values["degrees of freedom"] == 9
+
+
+@pytest.mark.parametrize("speed, mass, g", [(0.0, 1.0, 9.81), (1.5, 2.0, 4.0), (-2.0, 0.5, 0.0)])
+def test_contact_forces_match_lagrange_reference(ex, speed, mass, g):
+    ex.set(speed=speed, mass=mass, gravity=g)
+    assert ex.message == ""
+    # the reference: the scene's own state, solved by Lagrange multipliers in maximal coordinates
+    res = scenes.build("constrained-tree", speed=speed, mass=mass, g=g)
+    ref = constrained_dynamics_lagrange(res.model, res.state["q"], res.state["qd"], np.zeros(9))
+    F = np.asarray(ref["F"]).reshape(-1, 3)
+    for k, name in enumerate(("4-7", "8-9")):
+        shown = ex.readout_values[f"contact {name}: |force| (N)"]
+        assert shown == pytest.approx(np.hypot(F[k, 0], F[k, 1]), rel=1e-9, abs=1e-9)
+        # the drawn line is the reference wrench (same line, same sense and size)
+        assert ex.F_art[k].get_line() == pytest.approx(F[k], rel=1e-9, abs=1e-9)
+    assert ex.readout_values["qdd[1] (root)"] == pytest.approx(ref["qdd"][0], abs=1e-9)
+    assert ex.readout_values["max |qdd|"] == pytest.approx(np.abs(ref["qdd"]).max(), rel=1e-9)
+
+
+def test_open_tree_matches_crba(ex):
+    ex.set(loops="open (Fig 9.1)", speed=1.2, mass=1.5)
+    res = scenes.build("tree", speed=1.2, mass=1.5)
+    ref = forward_dynamics_crba(res.model, res.state["q"], res.state["qd"], np.zeros(9))
+    assert ex.readout_values["qdd[1] (root)"] == pytest.approx(ref[0], abs=1e-10)
+    assert ex.readout_values["max |qdd|"] == pytest.approx(np.abs(ref).max(), rel=1e-10)
 
 
 def test_contact_forces_pass_through_the_pins(ex):
@@ -38,16 +74,14 @@ def test_contact_forces_pass_through_the_pins(ex):
         x, y = tips[i]
         assert ex.F_art[k].get_visible()
         assert np.dot([y, -x, 1.0], F) == pytest.approx(0.0, abs=1e-9 * (1 + np.abs(F).max()))
-        assert ex.readout_values[list(ex.readout_values)[3 + k]] == pytest.approx(np.hypot(F[0], F[1]))
     ex.fig.canvas.draw()
 
 
 def test_opening_the_loops_changes_the_motion(ex):
     closed = dict(ex.readout_values)
     ex.controls["loops"].value = "open (Fig 9.1)"
-    assert ex.readout_values["degrees of freedom"] == 9
     assert not any(a.get_visible() for a in ex.F_art)
-    a = np.asarray(ex.state["res"].quantities["a"]).reshape(9, 3)
+    a = ex.state["a"]
     tips = pin_points(ex)
     assert not np.allclose(point_accel(a[3], tips[3]), point_accel(a[6], tips[6]))   # tips drift apart
     assert ex.readout_values["qdd[1] (root)"] != closed["qdd[1] (root)"]
@@ -58,3 +92,24 @@ def test_overlays_and_speed(ex):
     assert all(a.get_visible() for a in ex.v_art + ex.a_art)
     assert ex.message == ""
     ex.fig.canvas.draw()
+
+
+@pytest.mark.parametrize("toggle", ["velocity poles", "acceleration poles", "contact forces"])
+def test_display_toggles_do_not_recompute(toggle):
+    ex = TreeExplorer(display="agg", speed=1.0)
+    calls = []
+    real = ex.compute
+    ex.compute = lambda v, changed: calls.append(changed) or real(v, changed)
+    before = ex.controls[toggle].value
+    ex.controls[toggle].value = not before
+    ex.controls[toggle].value = before
+    ex.controls[toggle].value = not before
+    assert calls == [] and ex.n_updates == 4
+    arts = {"velocity poles": ex.v_art, "acceleration poles": ex.a_art, "contact forces": ex.F_art}[toggle]
+    assert all(a.get_visible() == (not before) for a in arts)
+    # the artists still show the state: the velocity poles are the joint-speed twists
+    if toggle == "velocity poles":
+        for i in range(9):
+            assert ex.v_art[i].get_point() == pytest.approx(ex.state["sol"].data.v[i])
+    ex.controls["speed"].value = 0.5          # a physics control does recompute
+    assert len(calls) == 1 and calls[0] == {"speed"}

@@ -6,6 +6,14 @@ a message area, a *Reset* and an *Export SVG* button.  On every control change
 it recomputes what its scene needs and updates its artists in place
 (``set_data``, ``set_xy``...), then asks the canvas to redraw.
 
+Physics and drawing are two steps: :meth:`Explorer.compute` (the scene's
+numbers) and :meth:`Explorer.render` (artists and readout from them).  A
+control listed in :attr:`Explorer.display_controls` (an overlay checkbox, a
+construction toggle) only changes what is drawn: changing it re-renders the
+last computed state without calling ``compute`` again.  Explorers also cache
+what depends on a few controls only (a model, a shape's moments), so that a
+change recomputes no more than its scene needs.
+
 Two front ends are supported:
 
 ``"ipympl"``
@@ -135,7 +143,12 @@ class Explorer:
       artist once, store them on ``self``),
     * :meth:`compute` ``(values) -> state``: pure, may raise PlanargeoError,
     * :meth:`render` ``(state)``: update the artists in place and return the
-      readout dictionary.
+      readout dictionary (it may derive overlay quantities from ``state`` and
+      store them there, so that they are computed once per state).
+
+    Controls named in :attr:`display_controls` change the drawing only: a change
+    of those alone re-renders the last good state without calling
+    :meth:`compute` (:attr:`n_computes` counts the calls).
 
     Parameters
     ----------
@@ -157,6 +170,8 @@ class Explorer:
     #: Figure size (inches) and resolution of the rendered image.
     figsize: tuple[float, float] = (6.0, 5.0)
     dpi: int = 90
+    #: Controls that only change what is drawn (no recompute when only they change).
+    display_controls: tuple[str, ...] = ()
 
     def __init__(self, *, display: str = "auto", figsize=None, export_dir=None, **values):
         if display not in _DISPLAYS:
@@ -168,6 +183,8 @@ class Explorer:
         self.readout_values: dict[str, Any] = {}
         self.state: Any = None
         self.n_updates = 0
+        self.n_computes = 0
+        self._state_ok = False
         self.last_export: Path | None = None
         self._message = ""
         self._hold = 0
@@ -177,6 +194,9 @@ class Explorer:
 
         # controls -------------------------------------------------------------
         self.controls: dict[str, W.ValueWidget] = dict(self.make_controls())
+        bad = sorted(set(self.display_controls) - set(self.controls))
+        if bad:  # a programming error in the subclass, not user input
+            raise InputError(f"{type(self).__name__}.display_controls names no control {bad[0]!r}")
         unknown = sorted(set(values) - set(self.controls))
         if unknown:
             raise InputError(f"{type(self).__name__} has no control {unknown[0]!r} "
@@ -318,13 +338,18 @@ class Explorer:
             self._pending = True
 
     def export_svg(self, path=None) -> Path:
-        """Write the current view to an SVG file and return its path."""
+        """Write the current view to an SVG file and return its path.
+
+        The file depends on the view only (no date, fixed element ids).
+        """
         if path is None:
             d = self.export_dir or Path.cwd()
             path = Path(d) / f"planargeo-{self.slug}-{os.getpid()}-{next(_export_counter)}.svg"
         path = Path(path)
         path.parent.mkdir(parents=True, exist_ok=True)
-        self.fig.savefig(path, format="svg")
+        # no date and fixed element ids: the same view always gives the same file
+        with matplotlib.rc_context({"svg.hashsalt": "planargeo"}):
+            self.fig.savefig(path, format="svg", metadata={"Date": None})
         self.last_export = path.resolve()
         return self.last_export
 
@@ -422,11 +447,18 @@ class Explorer:
         self._busy = True
         changed = set(self.controls) if initial else set(self._changed)
         self._changed.clear()
+        redraw_only = (not initial and bool(changed) and self._state_ok
+                       and changed <= set(self.display_controls))
         try:
             try:
                 with warnings.catch_warnings():
                     warnings.simplefilter("error", RuntimeWarning)
-                    state = self.compute(self.values, changed)
+                    if redraw_only:
+                        state = self.state
+                    else:
+                        self._state_ok = False
+                        self.n_computes += 1
+                        state = self.compute(self.values, changed)
             except PlanargeoError as exc:
                 self._set_message(str(exc))
                 self._show_figure_message(self.figure_message(exc))
@@ -439,6 +471,7 @@ class Explorer:
                 return
             self.state = state
             readout = self.render(state)
+            self._state_ok = True
             self.readout_values = dict(readout)
             self.readout.value = self._readout_html(self.readout_values)
             self._set_message(getattr(state, "message", "") if not isinstance(state, dict)

@@ -17,6 +17,11 @@ Two ways to play:
     pole of the resulting acceleration follows (``a = I⁻¹ f``).  Strike at
     the sweet spot and the body starts turning exactly about the grip: the
     hands feel no sting.
+
+The polygon is integrated once per shape (its area, centroid and polar
+moment); the inertia is linear in the mass, so a change of mass, pole or
+impact point needs no integration.  The angular acceleration ``α`` only
+enters the readout (``m d α``, 5.66): changing it only redraws.
 """
 from __future__ import annotations
 
@@ -32,7 +37,7 @@ from shapely.geometry import Polygon, box
 from ..draw.artists import ConicArtist, LineArtist, PointArtist
 from ..draw.style import COLORS, setup_axes
 from ..errors import InvalidPolygonError
-from ..inertia import Inertia, percussion_axis, percussion_pole
+from ..inertia import Inertia, percussion_axis, percussion_pole, polygon_moments
 from ..projective import from_xy
 from .base import Explorer, Step
 
@@ -82,6 +87,11 @@ class PercussionExplorer(Explorer):
     title = "Inertia and percussion: the sweet spot"
     slug = "percussion"
     figsize = (6.0, 4.8)
+    display_controls = ("angular accel. α",)
+
+    def __init__(self, **kw):
+        self._moments: dict = {}   # shape key -> (shape, area, centroid, polar moment)
+        super().__init__(**kw)
 
     def make_controls(self):
         return {
@@ -123,17 +133,27 @@ class PercussionExplorer(Explorer):
         self.connect_drag("pole x", "pole y", lambda: (self.values["pole x"], self.values["pole y"]))
 
     def _shape(self, v):
-        if v["shape"] == "custom polygon":
-            return parse_polygon(v["polygon"])
-        return PRESETS[v["shape"]]
+        return self._shape_moments(v)[0]
+
+    def _shape_moments(self, v):
+        """The shape and its area, centroid and polar moment, integrated once per shape."""
+        key = (v["shape"], v["polygon"] if v["shape"] == "custom polygon" else None)
+        if key not in self._moments:
+            shape = parse_polygon(v["polygon"]) if key[1] is not None else PRESETS[v["shape"]]
+            area, c, J = polygon_moments(shape, "polygon")
+            if not J > 0:
+                raise InvalidPolygonError(f"polygon must have a positive polar moment, got {J!r}")
+            if len(self._moments) > 32:
+                self._moments.clear()
+            self._moments[key] = (shape, float(area), np.asarray(c, dtype=float), float(J))
+        return self._moments[key]
 
     def compute(self, v, changed):
-        shape = self._shape(v)
-        I0 = Inertia.from_polygon(shape)
-        I = Inertia.from_polygon(shape, density=float(v["mass (kg)"]) / float(I0.mass))
+        shape, area, c, J = self._shape_moments(v)
+        m = float(v["mass (kg)"])
+        # uniform lamina of mass m: rotational inertia m J / area about the centroid (5.64)
+        I = Inertia.from_mass(m, c, inertia=m * J / area)
         Imat = I.matrix
-        c = np.asarray(I.com, float)
-        alpha = float(v["angular accel. α"])
         if v["drive"] == "impact":
             s = float(v["impact at"])
             f = np.array([0.0, 1.0, s])             # unit force along +y through (s, 0) (5.56)
@@ -142,7 +162,7 @@ class PercussionExplorer(Explorer):
         else:
             a = from_xy([v["pole x"], v["pole y"]])
             line = percussion_axis(Imat, a)
-        return {"shape": shape, "I": I, "c": c, "a": a, "f": line, "alpha": alpha}
+        return {"shape": shape, "I": I, "c": c, "a": a, "f": line}
 
     def render(self, st):
         I, c, a, f = st["I"], st["c"], st["a"], st["f"]
@@ -172,7 +192,7 @@ class PercussionExplorer(Explorer):
             self.spot.set_data([spot[0]], [spot[1]])
             out["r = ρ²/d (5.68)"] = r
             out["l = d + ρ²/d (5.67)"] = d + r
-            out["force for α: m d α (5.66)"] = m * d * st["alpha"]
+            out["force for α: m d α (5.66)"] = m * d * float(self.values["angular accel. α"])
             out["centre of percussion"] = tuple(spot)
         else:
             self.join_art.set_visible(False)

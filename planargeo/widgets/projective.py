@@ -15,7 +15,8 @@ distance-like number ``P·M`` equals ``pole(M)·polar(P)``.  Ideal elements are
 ordinary: put ``P`` at infinity (a direction) and its polar is a diameter, a
 line through the centre; the line at infinity has the centre as its pole.
 
-Under ``%matplotlib widget`` drag ``P`` with the mouse.
+Under ``%matplotlib widget`` drag ``P`` with the mouse.  The *construction*
+and *line and its pole* checkboxes only redraw (nothing is recomputed).
 """
 from __future__ import annotations
 
@@ -81,6 +82,7 @@ class ProjectiveExplorer(Explorer):
     title = "Projective playground: poles, polars and constructions"
     slug = "projective"
     figsize = (5.6, 5.4)
+    display_controls = ("construction", "line and its pole")
 
     def make_controls(self):
         return {

@@ -11,6 +11,9 @@ A dead-centre position (crank in line with the slider) is flagged on the
 figure; a configuration that cannot be assembled (rod too short) or whose loop
 closure is singular (rod along the horizontal when ``l = r``) shows a message
 and keeps the last good drawing.
+
+The model is kept per rod length and gravity (a crank move only re-solves the
+loop), and the pole checkboxes only redraw.
 """
 from __future__ import annotations
 
@@ -22,6 +25,8 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 
 from .. import scenes
+from ..algorithms.loops import loop_solve
+from ..scenes.slider_crank import slider_crank_model, slider_crank_state
 from ..draw.artists import LineArtist, PointArtist
 from ..draw.mechanism import draw_ground
 from ..draw.style import COLORS, setup_axes
@@ -39,6 +44,22 @@ class SliderCrankExplorer(Explorer):
     title = "Slider-crank: a closed loop"
     slug = "slider-crank"
     figsize = (5.4, 6.0)
+    display_controls = ("velocity poles", "acceleration poles")
+
+    def __init__(self, **kw):
+        p = scenes.parameters("slider-crank")     # the thesis 9.6 masses and lengths
+        self.params = {k: p[k] for k in ("m1", "m2", "m3", "r", "t")}
+        self._models: dict = {}
+        super().__init__(**kw)
+
+    def model_for(self, l: float, g: float):
+        """The slider-crank model for rod length ``l`` and gravity ``g`` (kept per pair)."""
+        key = (l, g)
+        if key not in self._models:
+            if len(self._models) > 32:
+                self._models.clear()
+            self._models[key] = slider_crank_model(l=l, g=g, **self.params)
+        return self._models[key]
 
     def make_controls(self):
         return {
@@ -81,20 +102,25 @@ class SliderCrankExplorer(Explorer):
 
     def compute(self, v, changed):
         psi = math.radians(v["crank angle (deg)"])
-        res = scenes.build("slider-crank", psi=psi, psidot=float(v["crank speed"]),
-                           l=float(v["rod length"]), g=float(v["gravity"]), drive=v["drive"])
-        st = {"res": res, "message": ""}
+        l, g = float(v["rod length"]), float(v["gravity"])
+        r, t = self.params["r"], self.params["t"]
+        model = self.model_for(l, g)
+        q, qd = slider_crank_state(psi, float(v["crank speed"]), r, l)    # loop closure
+        driven = v["drive"] == "constant-speed"
+        sol = loop_solve(model, q, qd, np.zeros(3), prescribed={0: 0.0} if driven else None)
+        h = r * math.sin(q[0]) + l * math.sin(q[0] + q[1]) + t * math.sin(q.sum())   # (9.85)
+        st = {"sol": sol, "q": q, "qd": qd, "r": r, "l": l, "t": t, "h": h,
+              "v": sol.data.v, "a": sol.a.reshape(3, 3), "F3": np.asarray(sol.F, dtype=float),
+              "message": ""}
         if abs(math.cos(psi)) < DEAD_CENTRE_TOL:
             st["message"] = ("dead centre: the crank is in line with the slider, so a force on the "
                              "piston cannot turn the crank here")
         return st
 
     def render(self, st):
-        res = st["res"]
-        sol = res.extra["solution"]
+        sol = st["sol"]
         d = sol.data
-        p = res.params
-        r, l, t = p["r"], p["l"], p["t"]
+        r, l, t = st["r"], st["l"], st["t"]
         pose = d.pose
         pin = pose[1, :2]
         wrist = pose[2, :2]
@@ -103,8 +129,7 @@ class SliderCrankExplorer(Explorer):
         self.pins.set_data([0.0, pin[0], wrist[0]], [0.0, pin[1], wrist[1]])
         self.piston.set_xy((wrist[0] - 0.3, wrist[1]))
         self.piston.set_height(2 * t)
-        q = res.quantities
-        F = np.asarray(q["F3"])
+        F = st["F3"]
         if np.any(F):
             self.contact.set_line(F)
             self.contact.set_anchor(d.com[2])
@@ -112,8 +137,7 @@ class SliderCrankExplorer(Explorer):
         else:
             self.contact.set_visible(False)
         vals = self.values
-        vel = np.asarray(q["v"])
-        acc = np.asarray(q["a"])
+        vel, acc = st["v"], st["a"]
         for i in range(3):
             self.v_art[i].set_visible(bool(vals["velocity poles"]))
             self.v_art[i].set_point(vel[i])
@@ -122,16 +146,16 @@ class SliderCrankExplorer(Explorer):
         top = max(9.0, r + l + 2 * t + 1.0)
         if self.ax.get_ylim()[1] != top:
             self.ax.set_ylim(-r - 1.2, top)
-        qq, qd, qdd = q["q"], q["qd"], q["qdd"]
+        qq, qdd = st["q"], sol.qdd
         return {
             "crank angle (deg)": vals["crank angle (deg)"],
             "θ (rod, rad)": qq[1], "φ (piston, rad)": qq[2],
-            "piston height h": q["h"],
+            "piston height h": st["h"],
             "piston speed": vel[2][1],
             "piston acceleration": acc[2][1],
             "ψ̈ crank": qdd[0],
             "contact force Fx": F[0], "contact moment (origin)": F[2],
-            "drive torque": q["tau_drive"][0],
+            "drive torque": sol.tau_drive[0],
             "dead centre": abs(math.cos(qq[0])) < DEAD_CENTRE_TOL,
         }
 

@@ -5,6 +5,13 @@ form, 9.1-9.2); close them with pins between the tips of bodies 4 and 7 and
 of bodies 8 and 9 (Fig 9.2) and the constrained algorithm (9.4-9.5) adds the
 contact forces, drawn as lines through the pins.  Controls: joint speed
 scale, gravity, link mass, loops open or closed, and the pole overlays.
+
+The explorer computes only what it draws: the pose, the unit speed pattern
+(projected onto the velocities the loops allow) and the degrees of freedom
+come from one build of the scene per loop setting, the model is kept per mass
+and gravity, and a change of speed runs a single solve (``stacked_solve`` for
+the open tree, ``loop_solve`` for the loops), never the scene's cross-check by
+the direct solution 9.48.  The overlay checkboxes only redraw.
 """
 from __future__ import annotations
 
@@ -13,6 +20,10 @@ import numpy as np
 from matplotlib.lines import Line2D
 
 from .. import scenes
+from ..algorithms.loops import loop_solve
+from ..algorithms.stacked import stacked_solve
+from ..scenes.trees import tree_model
+from ..simulate_loops import closure_jacobian
 from ..draw.artists import LineArtist, PointArtist
 from ..draw.mechanism import draw_ground
 from ..draw.style import COLORS, setup_axes
@@ -29,6 +40,12 @@ class TreeExplorer(Explorer):
     title = "Trees and loops: Fig 9.2 and its contact forces"
     slug = "trees"
     figsize = (5.6, 5.6)
+    display_controls = ("velocity poles", "acceleration poles", "contact forces")
+
+    def __init__(self, **kw):
+        self._geometry: dict = {}   # closed -> (contacts, q, unit speed pattern, length, dof)
+        self._models: dict = {}     # (closed, mass, g) -> Model
+        super().__init__(**kw)
 
     def make_controls(self):
         return {
@@ -63,17 +80,52 @@ class TreeExplorer(Explorer):
         self.F_art = [ax.add_artist(LineArtist([1.0, 0, 0], role="reaction", scale=0.15,
                                                text=f"F{k + 1}")) for k in range(2)]
 
+    def geometry(self, closed: bool):
+        """Contacts, pose ``q``, unit speed pattern, link length and degrees of freedom (cached).
+
+        Taken once from the scene (``speed = 1``): the pattern projected onto the
+        loops' allowed velocities is linear in the speed.  The degrees of freedom
+        are ``nq − rank J_c`` with the closure Jacobian ``J_c`` (9.54, 9.60).
+        """
+        if closed not in self._geometry:
+            res = scenes.build("constrained-tree" if closed else "tree", speed=1.0)
+            model = res.model
+            q = np.array(res.state["q"], dtype=float)
+            rank = np.linalg.matrix_rank(closure_jacobian(model, q)) if model.contacts else 0
+            self._geometry[closed] = (tuple(model.contacts), q, np.array(res.state["qd"], dtype=float),
+                                      float(res.params["length"]), model.nq - int(rank))
+        return self._geometry[closed]
+
+    def model_for(self, closed: bool, mass: float, g: float):
+        """The nine-link model (with the pins when ``closed``), kept per (mass, g)."""
+        key = (closed, mass, g)
+        if key not in self._models:
+            if len(self._models) > 32:
+                self._models.clear()
+            contacts, _q, _u, L, _dof = self.geometry(closed)
+            self._models[key] = tree_model(mass, L, g, contacts)
+        return self._models[key]
+
     def compute(self, v, changed):
         closed = v["loops"].startswith("closed")
-        res = scenes.build("constrained-tree" if closed else "tree", mass=float(v["mass"]),
-                           g=float(v["gravity"]), speed=float(v["speed"]))
-        return {"res": res, "closed": closed}
+        model = self.model_for(closed, float(v["mass"]), float(v["gravity"]))
+        _c, q, unit, L, dof = self.geometry(closed)
+        qd = float(v["speed"]) * unit
+        tau = np.zeros(model.nq)
+        st = {"closed": closed, "model": model, "q": q, "qd": qd, "length": L, "dof": dof}
+        if closed:
+            sol = loop_solve(model, q, qd, tau)                      # 9.5
+            st["F"] = sol.F.reshape(-1, 3)
+            st["cond"] = float(sol.cond)
+        else:
+            sol = stacked_solve(model, q, qd, tau)                   # 9.39-9.43
+        st.update(sol=sol, a=sol.a.reshape(N, 3), qdd=np.asarray(sol.qdd))
+        return st
 
     def render(self, st):
-        res, closed = st["res"], st["closed"]
-        sol = res.extra["solution"]
-        d = sol.data
-        L = res.params["length"]
+        closed, model = st["closed"], st["model"]
+        d = st["sol"].data
+        L = st["length"]
         pose = d.pose
         tips = pose[:, :2] + L * np.column_stack([np.cos(pose[:, 2]), np.sin(pose[:, 2])])
         xs, ys = [], []
@@ -86,18 +138,18 @@ class TreeExplorer(Explorer):
             mid = 0.5 * (pose[i, :2] + tips[i])
             t.set_position((mid[0] + 0.05, mid[1] + 0.05))
         vals = self.values
-        a = np.asarray(res.quantities["a"]).reshape(N, 3)
+        a = st["a"]
         for i in range(N):
             self.v_art[i].set_visible(bool(vals["velocity poles"]))
             self.v_art[i].set_point(d.v[i])
             self.a_art[i].set_visible(bool(vals["acceleration poles"]))
             self.a_art[i].set_point(a[i])
         out = {"speed": vals["speed"], "loops": "closed" if closed else "open",
-               "degrees of freedom": 9 - (4 if closed else 0)}
+               "degrees of freedom": st["dof"]}
         if closed:
-            F = np.asarray(res.quantities["F"]).reshape(-1, 3)
+            F = st["F"]
             pins = []
-            for k, c in enumerate(res.model.contacts):
+            for k, c in enumerate(model.contacts):
                 p = tips[c.a]
                 pins.append(p)
                 self.F_art[k].set_line(F[k])
@@ -106,12 +158,12 @@ class TreeExplorer(Explorer):
                 out[f"contact {c.name}: |force| (N)"] = float(np.hypot(F[k, 0], F[k, 1]))
             pins = np.array(pins)
             self.pins.set_data(pins[:, 0], pins[:, 1])
-            out["condition number"] = res.quantities["cond"]
+            out["condition number"] = st["cond"]
         else:
             for art in self.F_art:
                 art.set_visible(False)
             self.pins.set_data([], [])
-        qdd = res.quantities["qdd"]
+        qdd = st["qdd"]
         out["qdd[1] (root)"] = qdd[0]
         out["max |qdd|"] = float(np.max(np.abs(qdd)))
         return out
