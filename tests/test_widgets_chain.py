@@ -169,3 +169,116 @@ def test_per_joint_lists_override_the_patterns():
     assert "joint torques must be numbers" in ex.message and ex.readout_values == good
     ex.controls["joint torques"].value = ""
     assert ex.message == "" and np.array(ex.state["w"].tau) == pytest.approx([0.0, 0.0])
+
+
+# ----------------------------------------------------------------- T/U split of the accelerations
+def _hand_two_link(q, qd, tau, g=G):
+    """Two uniform unit links (m = 1, L = 1, J = 1/12) on revolute joints, by hand.
+
+    Returns joint points p_i, unit twists s_i = [p_y, -p_x, 1], body accelerations
+    a_i = Σ_{j≤i} (s_j q̈_j + ṡ_j q̇_j) from the dense (CRBA) solution, and the
+    spatial inertias at the origin I = [[m, 0, -m c_y], [0, m, m c_x], [-m c_y, m c_x, J + m|c|²]].
+    """
+    from planargeo.algorithms.crba import forward_dynamics_crba
+
+    th1, th2 = q[0], q[0] + q[1]
+    p = [np.zeros(2), np.array([math.cos(th1), math.sin(th1)])]
+    c = [0.5 * p[1], p[1] + 0.5 * np.array([math.cos(th2), math.sin(th2)])]
+    pdot = [np.zeros(2), qd[0] * np.array([-math.sin(th1), math.cos(th1)])]
+    s = [np.array([pi[1], -pi[0], 1.0]) for pi in p]
+    sdot = [np.array([pd[1], -pd[0], 0.0]) for pd in pdot]
+    from planargeo.model import Body, Joint, Model
+
+    model = Model([Body(1.0, (0.5, 0.0), 1 / 12), Body(1.0, (0.5, 0.0), 1 / 12)],
+                  [Joint("revolute", (0.0, 0.0, 0.0)), Joint("revolute", (1.0, 0.0, 0.0))],
+                  [-1, 0], (0.0, -g))
+    qdd = forward_dynamics_crba(model, q, qd, tau)
+    a1 = s[0] * qdd[0] + sdot[0] * qd[0]
+    a2 = a1 + s[1] * qdd[1] + sdot[1] * qd[1]
+    I = [np.array([[1.0, 0.0, -ci[1]], [0.0, 1.0, ci[0]], [-ci[1], ci[0], 1 / 12 + ci @ ci]]) for ci in c]
+    return p, s, [a1, a2], I, qdd
+
+
+def test_acceleration_split_matches_hand_formulas():
+    q, qd, tau = np.array([0.4, -0.9]), np.array([1.3, -0.6]), np.array([2.0, -1.0])
+    ex = ChainExplorer(display="agg", links=2, gravity=True,
+                       **{"joint values (deg / m)": f"{math.degrees(q[0])}, {math.degrees(q[1])}",
+                          "joint speeds": "1.3, -0.6", "joint torques": "2, -1", "T/U split": True})
+    assert ex.message == ""
+    p, s, a, I, qdd = _hand_two_link(q, qd, tau)
+    assert ex.readout_values["qdd[1]"] == pytest.approx(qdd[0], rel=1e-9)
+    # articulated inertias (3.38): the last body is rigid; the first adds the second projected
+    A2 = I[1]
+    A1 = I[0] + A2 - np.outer(A2 @ s[1], A2 @ s[1]) / (s[1] @ A2 @ s[1])
+    for i, A in enumerate((A1, A2)):
+        T = A @ s[i] / (s[i] @ A @ s[i])                                        # (6.36)
+        R = np.array([[1.0, 0.0], [0.0, 1.0], [-p[i][1], p[i][0]]])            # forces through p_i
+        Ainv_R = np.linalg.solve(A, R)
+        U = Ainv_R @ np.linalg.inv(R.T @ Ainv_R)                                 # (6.37), (6.45)
+        psi, gamma = T @ a[i], R.T @ a[i]                                        # (6.100), (6.101)
+        motion = ex.spsi_art[i].get_point()
+        reactive = ex.ugam_art[i].get_point()
+        assert ex.spsi_art[i].get_visible() and ex.ugam_art[i].get_visible()
+        assert motion == pytest.approx(s[i] * psi, abs=1e-9)
+        assert reactive == pytest.approx(U @ gamma, abs=1e-9)
+        assert motion + reactive == pytest.approx(a[i], abs=1e-9)               # (6.44)
+        # the motion part is a rotation about the joint; the reactive part has no ψ (Tᵀ U = 0)
+        assert T @ reactive == pytest.approx(0.0, abs=1e-9)
+        # the force split: sᵀ (T Q) = Q is the joint torque (6.49)
+        assert s[i] @ ex.t_art[i].get_line() == pytest.approx(tau[i], rel=1e-9)
+    assert not any(x.get_visible() for x in ex.spsi_art[2:] + ex.ugam_art[2:])
+
+
+def test_split_is_hidden_when_off_and_derived_once():
+    ex = ChainExplorer(display="agg", links=3, torque=1.0)
+    assert not any(x.get_visible() for x in ex.t_art + ex.r_art + ex.spsi_art + ex.ugam_art)
+    assert "split" not in ex.state
+    n = ex.n_computes
+    ex.controls["T/U split"].value = True                      # drawing only: no recompute
+    assert ex.n_computes == n and "split" in ex.state
+    split = ex.state["split"]
+    assert sum(x.get_visible() for x in ex.spsi_art) == 3 and sum(x.get_visible() for x in ex.r_art) == 3
+    ex.controls["T/U split"].value = False
+    ex.controls["T/U split"].value = True
+    assert ex.state["split"] is split and ex.n_computes == n
+    ex.controls["angle"].value = 10.0                          # physics: recomputed
+    assert ex.n_computes == n + 1 and ex.state["split"] is not split
+
+
+@pytest.mark.parametrize("overlay", ["velocity poles", "acceleration poles", "bias terms",
+                                     "internal forces", "articulated inertias"])
+def test_overlay_toggles_do_not_recompute_and_draw_the_state(overlay):
+    ex = ChainExplorer(display="agg", links=3, speed=1.0, torque=0.5,
+                       **{k: False for k in ("velocity poles", "internal forces")})
+    calls = []
+    real = ex.compute
+    ex.compute = lambda v, changed: calls.append(changed) or real(v, changed)
+    ex.controls[overlay].value = True
+    assert calls == []
+    w = ex.state["w"]
+    arts, data = {"velocity poles": (ex.v_art, w.v), "acceleration poles": (ex.a_art, w.a),
+                  "bias terms": (ex.p_art, w.p), "internal forces": (ex.f_art, w.f),
+                  "articulated inertias": (ex.A_art, w.A)}[overlay]
+    assert [x.get_visible() for x in arts[:4]] == [True, True, True, False]
+    for i in range(3):
+        got = arts[i].get_conic() if overlay == "articulated inertias" else (
+            arts[i].get_point() if overlay.endswith("poles") else arts[i].get_line())
+        assert np.asarray(got) == pytest.approx(np.asarray(data[i]))
+    ex.fig.canvas.draw()
+
+
+def test_play_drives_the_frame():
+    ex = ChainExplorer(display="agg", links=2, speed=1.0, torque=0.0, fps=10)
+    ex.simulate(0.4)
+    assert ex.player.max == ex.controls["frame"].max == 4
+    qs = []
+    for k in range(5):                       # what the Play widget does while it runs
+        ex.player.value = k
+        assert ex.controls["frame"].value == k
+        assert ex.readout_values["t (s)"] == pytest.approx(0.1 * k)
+        qs.append(ex.links_line.get_xydata().copy())
+    assert not np.allclose(qs[0], qs[-1])                      # the links moved
+    ex.controls["frame"].value = 2                           # and the slider moves the player
+    assert ex.player.value == 2
+    ex.controls["speed"].value = 0.0                         # a new initial state: no animation
+    assert ex.player.max == 0 and ex.player.value == 0

@@ -10,9 +10,16 @@ toggle overlays drawn with :mod:`planargeo.draw`:
 * velocity poles ``v_i`` (points, 4.5) and acceleration poles ``a_i`` (4.6),
 * bias terms: the bias accelerations ``κ_i`` (points) and bias forces ``p_i`` (lines),
 * internal (joint) force lines ``f_i = A_i a_i + d_i`` (3.13),
-* the per-joint split ``f_i = T_i Q_i + R_i μ_i`` (6.38) into the active part
-  along the percussion axis and the reaction through the joint,
+* the per-joint T/U split: the force ``f_i = T_i Q_i + R_i μ_i`` (6.38, 6.104)
+  into the active part along the percussion axis and the reaction through the
+  joint, and the acceleration ``a_i = s_i ψ_i + U_i γ_i`` (6.44) into the
+  part along the joint's motion space (``ψ_i = T_iᵀ a_i``, 6.100) and the
+  reactive part (``γ_i = R_iᵀ a_i``, 6.101) in the quake space
+  ``U_i = A_i⁻¹ R_i (R_iᵀ A_i⁻¹ R_i)⁻¹`` (6.45),
 * the articulated inertias ``A_i`` (3.38) as conics.
+
+The overlay checkboxes change the drawing only: toggling one re-renders the
+last computed state (the split is derived from it once, when first shown).
 
 *Simulate* integrates the motion ahead of time with
 :func:`planargeo.simulate.simulate` (with a progress bar), then *play*
@@ -98,15 +105,6 @@ def parse_list(text: str, name: str) -> list[float]:
     return out
 
 
-def _set_arrow_scale(art: LineArtist, scale: float) -> None:
-    """Change a LineArtist's force-arrow scale (draw has no public setter yet)."""
-    if hasattr(art, "set_scale"):
-        art.set_scale(scale)
-    else:
-        art._scale = float(scale)
-        art.stale = True
-
-
 def _energy(model: Model, data) -> tuple[float, float]:
     """Kinetic and potential energy of an articulated-body workspace (single state)."""
     T, V = energy(model, data.q, data.qd)
@@ -119,6 +117,7 @@ class ChainExplorer(Explorer):
     title = "Chain: poles, forces and articulated inertias"
     slug = "chain"
     figsize = (6.4, 5.6)
+    display_controls = OVERLAYS
 
     def make_controls(self):
         c = {
@@ -158,12 +157,11 @@ class ChainExplorer(Explorer):
         self.progress = W.FloatProgress(value=0.0, min=0.0, max=1.0, description="",
                                         layout=W.Layout(width="150px"))
         self.player = W.Play(value=0, min=0, max=0, interval=int(1000 / self.fps), description="play")
-        W.jslink((self.player, "value"), (self.controls["frame"], "value"))
+        # a kernel-side link (not jslink): a frame the player shows is a frame the kernel drew,
+        # and setting either from Python moves the other
+        self._play_link = W.link((self.player, "value"), (self.controls["frame"], "value"))
         self.play_button.on_click(lambda _b: self.simulate())
         return [W.HBox([self.play_button, self.progress]), self.player]
-
-    def _layout(self):
-        return super()._layout()
 
     # -- figure ------------------------------------------------------------------
     def setup_axes(self, ax):
@@ -192,6 +190,10 @@ class ChainExplorer(Explorer):
         self.t_art = pool(lambda i: LineArtist(zl, role="wrench", scale=None, linestyle=":",
                                                linewidth=1.2))
         self.r_art = pool(lambda i: LineArtist(zl, role="reaction", scale=0.02))
+        # acceleration split (6.44): s ψ (along the joint) and U γ (reactive part)
+        self.spsi_art = pool(lambda i: PointArtist(z, role="accel", glyph=False, markersize=5))
+        self.ugam_art = pool(lambda i: PointArtist(z, role="accel", glyph=False, markersize=5,
+                                                   color=COLORS["reaction"]))
         self.A_art = pool(lambda i: ConicArtist(np.eye(3), role="inertia", linewidth=0.8))
         self._scaled = set(self.f_art + self.r_art)
         self.time_text = ax.text(0.02, 0.97, "", transform=ax.transAxes, va="top", fontsize=9)
@@ -237,31 +239,48 @@ class ChainExplorer(Explorer):
             t, q, qd = self._traj[0][frame], self._traj[1][frame], self._traj[2][frame]
         w = articulated_body(model, q, qd, tau)
         st = {"model": model, "w": w, "t": t, "tau": tau}
-        if v["T/U split"]:
-            s = w.S.T.reshape(model.N, 3, 1)  # one-dof joints: column i is s_i
-            T = percussion_space(s, w.A)[..., 0]
-            Q = np.einsum("ij,ij->i", s[..., 0], w.f)
-            st["active"] = T * Q[:, None]
-            st["reaction"] = w.f - st["active"]
-            # an active part that is zero up to rounding (no joint torque) has no line to draw
-            st["active_on"] = np.abs(Q) > 1e-9 * np.maximum(1.0, np.abs(w.f).max(axis=1))
         ke, pe = _energy(model, w)
         st["ke"], st["pe"] = ke, pe
         return st
+
+    @staticmethod
+    def tu_split(st) -> dict:
+        """The per-joint T/U split of a computed state (derived once, kept in ``st``).
+
+        Returns ``{"active": T Q, "reaction": R μ, "active_on": Q ≠ 0,
+        "motion": s ψ, "reactive": U γ}`` (arrays of shape ``(N, 3)``): the
+        force split 6.38 with ``Q = sᵀ f`` (6.49), ``R μ = f − T Q``, and the
+        acceleration split 6.44 with ``ψ = Tᵀ a`` (6.100), ``U γ = a − s ψ``,
+        ``T = A s (sᵀ A s)⁻¹`` (6.105) from each body's articulated inertia.
+        """
+        if "split" not in st:
+            model, w = st["model"], st["w"]
+            s = w.S.T.reshape(model.N, 3, 1)  # one-dof joints: column i is s_i
+            T = percussion_space(s, w.A)[..., 0]
+            Q = np.einsum("ij,ij->i", s[..., 0], w.f)
+            active = T * Q[:, None]
+            psi = np.einsum("ij,ij->i", T, w.a)
+            motion = s[..., 0] * psi[:, None]
+            st["split"] = {
+                "active": active, "reaction": w.f - active,
+                # an active part that is zero up to rounding (no joint torque) has no line to draw
+                "active_on": np.abs(Q) > 1e-9 * np.maximum(1.0, np.abs(w.f).max(axis=1)),
+                "motion": motion, "reactive": w.a - motion,
+            }
+        return st["split"]
 
     def render(self, st):
         model, w = st["model"], st["w"]
         n = model.N
         v = self.values
+        split = self.tu_split(st) if v["T/U split"] else {}
         # links: joint origins then the tip
-        pts = np.vstack([w.origin[0], w.pose[:, :2]])
         ends = []
         for i in range(n):
             x, y, th = w.pose[i]
             ends.append((x + math.cos(th), y + math.sin(th)))
         chain = np.vstack([w.origin[:1]] + [np.vstack([w.pose[i, :2], ends[i]]) for i in range(n)])
         self.links_line.set_data(chain[:, 0], chain[:, 1])
-        del pts
         reach = n + 0.4
         if self.ax.get_xlim()[1] != reach:
             self.ax.set_xlim(-reach, reach)
@@ -273,8 +292,10 @@ class ChainExplorer(Explorer):
             (self.kappa_art, "bias terms", w.kappa, PointArtist.set_point),
             (self.p_art, "bias terms", w.p, LineArtist.set_line),
             (self.f_art, "internal forces", w.f, LineArtist.set_line),
-            (self.t_art, "T/U split", st.get("active"), LineArtist.set_line),
-            (self.r_art, "T/U split", st.get("reaction"), LineArtist.set_line),
+            (self.t_art, "T/U split", split.get("active"), LineArtist.set_line),
+            (self.r_art, "T/U split", split.get("reaction"), LineArtist.set_line),
+            (self.spsi_art, "T/U split", split.get("motion"), PointArtist.set_point),
+            (self.ugam_art, "T/U split", split.get("reactive"), PointArtist.set_point),
             (self.A_art, "articulated inertias", w.A, ConicArtist.set_conic),
         ]
         for arts, flag, arr, setter in layers:
@@ -284,9 +305,9 @@ class ChainExplorer(Explorer):
                 if show:
                     setter(art, arr[i])
                     if isinstance(art, LineArtist) and art in self._scaled:
-                        _set_arrow_scale(art, fscale)
+                        art.set_scale(fscale)
                     if arts is self.t_art:
-                        show = bool(st["active_on"][i])
+                        show = bool(split["active_on"][i])
                 if art.get_visible() != show:
                     art.set_visible(show)
         self.time_text.set_text(f"t = {st['t']:.2f} s" if self._traj is not None else "")
