@@ -80,3 +80,21 @@ def test_zero_screw_is_a_message_not_an_exception(ex):
     assert ex._msg_text.get_visible()
     ex.controls["size2"].value = 1.0
     assert ex.message == "" and not ex._msg_text.get_visible()
+
+
+def test_meet_of_forces_on_one_line_is_not_at_infinity(ex):
+    # two forces along the x-axis: their lines coincide, so they meet at every point of it
+    ex.set(add="wrenches", kind1="force", kind2="force", x1=0.0, y1=0.0, angle1=0.0, size1=1.0,
+           x2=1.5, y2=0.0, angle2=0.0, size2=-1.0)
+    assert ex.readout_values["case"] == "zero"
+    assert ex.readout_values["meet of lines"] == "every point of their common line"
+    ex.set(size2=-2.0)                                 # unequal: a force on the same line
+    assert ex.readout_values["case"] == "parallel"
+    assert ex.readout_values["meet of lines"] == "every point of their common line"
+    assert ex.readout_values["sum"] == pytest.approx((-1.0, 0.0, 0.0), abs=1e-12)
+    # distinct parallel lines (y = 0 and y = 1) do meet at infinity
+    ex.set(y2=1.0)
+    assert ex.readout_values["meet of lines"] == "at infinity"
+    # crossing lines meet at a finite point: the x-axis and the vertical through x = 1.5
+    ex.set(y2=0.0, angle2=90.0, size2=1.0)
+    assert ex.readout_values["meet of lines"] == pytest.approx((1.5, 0.0))

@@ -40,6 +40,22 @@ def _xy_or_ideal(p):
     return (float(-p[1] / p[2]), float(p[0] / p[2]))
 
 
+def _same_line(a, b, rtol: float = 1e-9) -> bool:
+    """Two forces (not couples) on one line: proportional wrenches ``a × b = 0`` (5.21)."""
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    Fa, Fb = np.hypot(a[0], a[1]), np.hypot(b[0], b[1])
+    if Fa == 0 or Fb == 0:
+        return False
+    return bool(np.all(np.abs(np.cross(a, b)) <= rtol * np.linalg.norm(a) * np.linalg.norm(b)))
+
+
+def _meet_label(c):
+    """Where the two force lines meet: a point, at infinity (parallel lines) or the common line."""
+    if c.P is not None and _same_line(c.f1.array, c.f2.array):
+        return "every point of their common line"
+    return _xy_or_ideal(c.P)
+
+
 class ScrewSumExplorer(Explorer):
     """Add two twists (points) or two wrenches (lines) and watch the construction."""
 
@@ -158,6 +174,6 @@ class ScrewSumExplorer(Explorer):
             out.update({"case": c.case, "F1": c.F1, "F2": c.F2, "|F1+F2|": c.F3,
                         "β": "—" if c.beta is None else c.beta,
                         "ρ": "—" if c.rho is None else c.rho,
-                        "meet of lines": _xy_or_ideal(c.P)})
+                        "meet of lines": _meet_label(c)})
             out["sum"] = tuple(float(x) for x in c.sum.array)
         return out
