@@ -3,33 +3,25 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...contacts import world_point
 from ...kinematics import kinematics
-from ...projective import to_xy
 from ...scenes import build as build_scene
-from ..artists import plot_line, plot_point
+from ..artists import plot_line
 from ..constructions import label
-from ..mechanism import draw_ground, draw_model, draw_slider, transform_shape
+from ..mechanism import draw_model
 from ..style import COLORS
 from . import fit_view, new_figure, register
+from ._layout import fit_panel, shape_points
 
 
 def _contact_points(model, data):
-    out = []
-    for c in model.contacts:
-        pa = data.pose[c.a]
-        th = pa[2]
-        R = np.array([[np.cos(th), -np.sin(th)], [np.sin(th), np.cos(th)]])
-        out.append(pa[:2] + R @ np.asarray(c.point_a))
-    return out
+    """World contact points on body a of every contact (9.49)."""
+    return [world_point(data.pose, c.a, c.point_a) for c in model.contacts]
 
 
 def _tips(model, data):
-    pts = []
-    for i in range(model.N):
-        th = data.pose[i, 2]
-        pts.append(data.pose[i, :2] + 2 * (data.com[i] - data.pose[i, :2]))
-        _ = th
-    return pts
+    """Far ends of the bodies drawn as links through their centres of mass."""
+    return [data.pose[i, :2] + 2 * (data.com[i] - data.pose[i, :2]) for i in range(model.N)]
 
 
 @register("fig9_1", "Fig. 9.1 — the rigid-body tree of scene 'tree': body 1 is the root (pinned), "
@@ -44,34 +36,45 @@ def fig9_1():
     return fig
 
 
-@register("fig9_2", "Fig. 9.2 — constrained tree (scene 'constrained-tree'): pin contacts close the "
-          "loops 4–7 and 8–9 (G of 9.49); the contact forces F (9.71) drawn as lines (the force on "
-          "body a of each contact), with the resulting 5-dof motion (gravity on).", 9.02)
+@register("fig9_2", "Fig. 9.2 — constrained tree (scene 'constrained-tree', gravity on): pin contacts "
+          "(squares) close the loops 4–7 and 8–9 (G of 9.49), leaving 9 − 2·2 = 5 dof; the contact "
+          "forces F = Bξ (9.70–9.71; arrows: F on body b, i.e. on 7 and 9) are computed with "
+          "the tree's full stacked mobility Λ⁻¹ that (9.65)–(9.73) must use (the printed block-diagonal "
+          "Λ⁻¹ gets them 9 % wrong; docs/errata.md, chapter 9 item 6).", 9.02)
 def fig9_2():
     res = build_scene("constrained-tree")
     m = res.model
     d = kinematics(m, res.state["q"], np.asarray(res.state["qd"]))
     fig, ax = new_figure(3.4, 3.0)
-    draw_model(m, d, ax, width=0.14, show_com=False, names=[str(k + 1) for k in range(9)])
+    arts = draw_model(m, d, ax, width=0.14, show_com=False, names=[str(k + 1) for k in range(9)])
     F = np.asarray(res.quantities["F"])
+    sc = 0.12
+    P = [shape_points(*arts["shapes"])]
+    mags = []
     for k, (c, p) in enumerate(zip(m.contacts, _contact_points(m, d))):
-        ax.plot(*p, "s", ms=5, mfc="none", mec=COLORS["reaction"], mew=1.2, zorder=8)
-        plot_line(F[k], ax, role="reaction", scale=0.12, anchor=p,
-                  text=f"$F_{{{c.a + 1}-{c.b + 1}}}$")
-    fit_view(ax, [*d.origin, *_tips(m, d)], margin=0.1)
+        f = F[k]                          # Definition 42: +F acts on body b, −F on body a
+        mag = np.hypot(*f[:2])
+        e = f[:2] / mag
+        anchor = p + e * (0.5 * sc * mag + 0.12)     # the line passes through p (9.70); arrow beyond it
+        plot_line(f, ax, role="reaction", scale=sc, anchor=anchor, text=f"$F_{{{c.name}}}$",
+                  text_offset=(6, -6))
+        P.append(np.array([anchor + e * 0.5 * sc * mag]))
+        mags.append(f"$|F_{{{c.name}}}|$ = {mag:.2f} N")
+    fit_panel(ax, np.vstack(P), margin=0.06)
+    ax.text(0.02, 0.02, "\n".join(mags), transform=ax.transAxes, fontsize=7,
+            color=COLORS["reaction"])
     return fig
 
 
 def _slider_crank_base(ax, res):
     m = res.model
     d = kinematics(m, res.state["q"], np.asarray(res.state["qd"]))
-    draw_model(m, d, ax, width=0.3, labels=False, show_com=True, pin_radius=0.1)
-    for i, body in enumerate(m.bodies):
-        label(ax, d.com[i], body.name, offset=(9, -3), fontsize=7, color="#1f3a4d", va="center")
-    piston = d.pose[2, :2]
-    ax.plot([-0.45, -0.45], [piston[1] - 1.3, piston[1] + 1.8], color=COLORS["ground"], lw=1.0)
-    ax.plot([0.45, 0.45], [piston[1] - 1.3, piston[1] + 1.8], color=COLORS["ground"], lw=1.0)
-    return d
+    arts = draw_model(m, d, ax, width=0.3, labels=False, show_com=True, pin_radius=0.1)
+    for i, body in enumerate(m.bodies):   # the piston's name right of its guide, the others left
+        right = i == 2
+        label(ax, d.com[i], body.name, offset=(18 if right else -9, 6 if i == 0 else 0), fontsize=7,
+              color="#1f3a4d", va="center", ha="left" if right else "right")
+    return d, shape_points(*arts["shapes"])
 
 
 @register("fig9_3", "Fig. 9.3 — slider-crank (scene 'slider-crank', thesis 9.6): relative rotations "
@@ -80,7 +83,7 @@ def _slider_crank_base(ax, res):
 def fig9_3():
     res = build_scene("slider-crank")
     fig, ax = new_figure(3.4, 3.4)
-    d = _slider_crank_base(ax, res)
+    d, P = _slider_crank_base(ax, res)
     q = res.state["q"]
     absang = np.cumsum(q)
     for i, (nm, val) in enumerate(zip(("ψ", "θ", "φ"), q)):
@@ -95,8 +98,6 @@ def fig9_3():
         label(ax, o + rr * np.array([np.cos(mid), np.sin(mid)]),
               f"{nm} = {val:.3f}", offset=((6, -12), (6, 2), (-62, 4))[i], fontsize=7,
               color=COLORS["twist"])
-    fit_view(ax, [*d.origin, d.pose[2, :2] + [0, 1.2], [-1, -0.6], [2.6, 0]], margin=0.08)
+    fit_view(ax, np.vstack([P, P.min(axis=0) - [1.0, 0.4], P.max(axis=0) + [0.8, 0.2]]), margin=0.03)
     return fig
 
-
-_ = (draw_ground, draw_slider, transform_shape, plot_point, to_xy)

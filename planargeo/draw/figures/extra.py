@@ -5,6 +5,7 @@ import numpy as np
 
 from ...algorithms.articulated_inertia import articulated_inertia
 from ...algorithms.rnea import newton_euler
+from ...contacts import world_point
 from ...inertia import Inertia, percussion_axis
 from ...kinematics import kinematics
 from ...projective import from_xy, to_xy
@@ -13,6 +14,7 @@ from ..artists import plot_conic, plot_line, plot_point
 from ..mechanism import draw_body, draw_com, draw_joint_split, draw_model, link_polygon
 from ..style import COLORS
 from . import fit_view, new_figure, register
+from ._layout import shape_points
 
 
 @register("extra_inertia_field", "Extra — the inertia as a point→line map (5.64–5.68): several "
@@ -65,28 +67,35 @@ def extra_joint_splits():
 
 
 @register("extra_slider_crank", "Extra — slider-crank dynamics (scene 'slider-crank', 9.78–9.94): the "
-          "slider contact force F₃ on the piston (a line), the closed-loop accelerations a₁, a₂ "
-          "(poles) and a₃ (the piston translates: an ideal point, arrow at the edge).", 10.03)
+          "guide drawn from the model's slider contact, the contact force F₃ = Bξ (its line: the "
+          "normal force through the contact point shifted by the contact couple; −F₃ acts on the "
+          "piston, Definition 42), the closed-loop accelerations a₁, a₂ (poles; a₁ and the velocity "
+          "pole v₁ at the crank's pivot) and a₃, v₃ (the piston translates: ideal "
+          "points, arrows at the edge).", 10.03)
 def extra_slider_crank():
     res = build_scene("slider-crank")
     m = res.model
     d = kinematics(m, res.state["q"], np.asarray(res.state["qd"]))
     fig, ax = new_figure(3.4, 3.6)
-    draw_model(m, d, ax, width=0.3, show_com=True, pin_radius=0.1, alpha=0.25)
-    piston = d.pose[2, :2]
-    for x in (-0.45, 0.45):
-        ax.plot([x, x], [piston[1] - 1.3, piston[1] + 1.8], color=COLORS["ground"], lw=1.0)
+    arts = draw_model(m, d, ax, width=0.3, show_com=True, pin_radius=0.1, alpha=0.25, labels=False)
+    for i, body in enumerate(m.bodies):
+        ax.annotate(body.name, xy=tuple(d.com[i]), xytext=(-10, 0), textcoords="offset points",
+                    ha="right", va="center", fontsize=7, color="#1f3a4d")
+    (contact,) = m.contacts
+    pc = world_point(d.pose, contact.a, contact.point_a)          # the slider's contact point
     a = np.asarray(res.quantities["a"])
     F3 = np.asarray(res.quantities["F3"])
-    plot_line(F3, ax, role="reaction", scale=0.01, anchor=piston + [0.0, 0.5],
-              text=f"$F_3$ = {np.hypot(*F3[:2]):.1f} N")
-    for k in range(3):
-        plot_point(a[k], ax, role="accel", text=f"$a_{k + 1}$", glyph_scale=0.05)
-    for k in range(3):
-        plot_point(np.asarray(res.quantities["v"])[k], ax, role="twist", text=f"$v_{k + 1}$",
-                   glyph=False, text_offset=(-14, -12))
-    pts = [*d.origin, piston + [0, 1.0]] + [to_xy(x) for x in a[:2]]
-    fit_view(ax, pts, margin=0.1)
+    plot_line(F3, ax, role="reaction", scale=0.01, anchor=pc + [0.9, 0.0],
+              text=f"$F_3$ = {np.hypot(*F3[:2]):.1f} N", text_offset=(-10, 5))
+    # label offsets (points): poles beside their glyphs, ideal points (a₃, v₃) beside the edge arrows
+    for k, off in enumerate([(10, -14), (10, 4), (-22, -4)]):
+        plot_point(a[k], ax, role="accel", text=f"$a_{k + 1}$", glyph_scale=0.05, text_offset=off)
+    v = np.asarray(res.quantities["v"])
+    for k, off in ((0, (-22, -4)), (2, (8, -4))):     # v₂'s pole (the rod's ICR) lies far right
+        plot_point(v[k], ax, role="twist", text=f"$v_{k + 1}$", glyph=False, text_offset=off)
+    pts = [shape_points(*arts["shapes"]), *[np.reshape(to_xy(x), (1, 2)) for x in a[:2]],
+           [pc + [1.6, 0.0], d.origin[0] - [1.2, 0.3]]]
+    fit_view(ax, np.vstack(pts), margin=0.06)
     return fig
 
 
