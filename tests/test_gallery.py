@@ -94,10 +94,29 @@ def test_only_unknown_name(tmp_path):
         gallery.generate(tmp_path, only=["no_such_figure"])
 
 
-def test_registry_covers_chapter_4_and_5():
+#: Every planar figure issue 4 asks for (1.2, 1.3, 3.1, 3.2, 4.1–4.10, 5.1–5.7, 6.1–6.6,
+#: 7.1–7.11, 9.1–9.3), written out from the issue, not from the registry.
+THESIS_FIGURES = (["fig1_2", "fig1_3", "fig3_1", "fig3_2"]
+                  + [f"fig4_{k}" for k in range(1, 11)] + [f"fig5_{k}" for k in range(1, 8)]
+                  + [f"fig6_{k}" for k in range(1, 7)] + [f"fig7_{k}" for k in range(1, 12)]
+                  + [f"fig9_{k}" for k in range(1, 4)])
+#: The three extras and what each caption must name.
+EXTRAS = {"extra_inertia_field": ("point→line", "axes of percussion"),
+          "extra_joint_splits": ("every joint", "active", "reaction"),
+          "extra_slider_crank": ("contact force", "closed-loop accelerations")}
+
+
+def test_registry_covers_every_thesis_figure_and_the_extras():
     specs = load_all()
-    for n in [f"fig4_{k}" for k in range(1, 11)] + [f"fig5_{k}" for k in range(1, 8)]:
-        assert n in specs
+    missing = [n for n in THESIS_FIGURES + list(EXTRAS) if n not in specs]
+    assert missing == []
+    assert len(THESIS_FIGURES) == 4 + 10 + 7 + 6 + 11 + 3
+    for n in THESIS_FIGURES:   # each caption names its thesis figure
+        ch, k = n[3:].split("_")
+        assert specs[n].caption.startswith(f"Fig. {ch}.{k} "), n
+    for n, words in EXTRAS.items():
+        for w in words:
+            assert w in specs[n].caption, (n, w)
     assert set(specs) == set(REGISTRY)
 
 
@@ -106,3 +125,25 @@ def test_cli_dispatch(tmp_path, small_registry):
 
     assert main(["gallery", "--out", str(tmp_path)]) == 0
     assert main(["gallery", "--check", "--out", str(tmp_path)]) == 0
+
+
+def test_readme_indexes_benchmark_charts(tmp_path, small_registry):
+    """Charts copied by `planargeo bench` into benchmarks/ get a captioned entry; --check follows them."""
+    out = tmp_path / "g"
+    (out / "benchmarks").mkdir(parents=True)
+    (out / "benchmarks" / "scaling.svg").write_text("<svg/>")
+    (out / "benchmarks" / "batch.svg").write_text("<svg/>")
+    text = gallery.generate(out)["README.md"].decode()
+    assert text.index("![batch](benchmarks/batch.svg)") < text.index("![scaling](benchmarks/scaling.svg)")
+    assert "O(N³) guides" in text                      # scaling's caption
+    assert gallery.check(out) == []                    # the benchmark SVGs are not "extra" files
+    assert gallery.generate(tmp_path / "h", benchmarks=out / "benchmarks")["README.md"].decode() == text
+    (out / "benchmarks" / "new_chart.svg").write_text("<svg/>")
+    assert gallery.check(out) == ["stale: README.md"]  # a new chart makes the index stale
+    text2 = gallery.generate(out)["README.md"].decode()
+    assert "new_chart: benchmark chart (see benchmarks/README.md)." in text2
+
+
+def test_readme_without_benchmarks_has_no_benchmark_section(tmp_path, small_registry):
+    text = gallery.generate(tmp_path)["README.md"].decode()
+    assert "Benchmark charts" not in text
