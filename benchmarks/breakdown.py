@@ -7,7 +7,8 @@ for the slider-crank, the closed-loop solver and the Lagrange-multiplier
 solver) with an *independent* reference: the joint-space equations
 ``H q̈ = τ - C`` written from scratch with world-frame Jacobians and solved in
 ``np.longdouble`` or in exact rational arithmetic (``reference_system`` in
-``tests/test_breakdown.py``: one copy, imported from there).  ``join`` and ``meet``
+``planargeo/_reference.py``: one copy, shared with ``tests/test_breakdown.py`` and
+``planargeo.bench``).  ``join`` and ``meet``
 are measured without their condition-number limit (``cond_limit=inf``) so that the error
 can be charted past it; the tables say which samples the default call refuses.
 
@@ -25,13 +26,12 @@ f. the geometry layer: the meet of near-coincident and of near-parallel lines, t
    mass or goes to infinity, the percussion pole (pole) as its line approaches the line at
    infinity or the centre of mass, and the pole for an inertia conic degenerating to a point
    mass; each against exact rational arithmetic on the same float inputs (``cross_exact``,
-   ``matvec_exact``, ``solve_exact`` in ``tests/test_breakdown.py``).
+   ``matvec_exact``, ``solve_exact`` in ``planargeo/_reference.py``).
 
 Writes ``results/breakdown.md`` and ``results/breakdown.svg/.png``.
 """
 from __future__ import annotations
 
-import importlib.util
 import json
 import platform
 import sys
@@ -46,10 +46,12 @@ ROOT = HERE.parent
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-_spec = importlib.util.spec_from_file_location("_breakdown_reference", ROOT / "tests" / "test_breakdown.py")
-ref = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(ref)
-
+import planargeo._reference as ref  # noqa: E402  (the study's reference, one copy: also tests and planargeo.bench)
+from planargeo.algorithms.aba import forward_dynamics  # noqa: E402
+from planargeo.algorithms.chain_splitting import forward_dynamics_mobility_split  # noqa: E402
+from planargeo.algorithms.crba import forward_dynamics_crba  # noqa: E402
+from planargeo.algorithms.projective import forward_dynamics_projective  # noqa: E402
+from planargeo.algorithms.stacked import forward_dynamics_stacked  # noqa: E402
 from planargeo.algorithms.loops import SINGULAR_COND, constrained_dynamics_lagrange, loop_solve  # noqa: E402
 from planargeo.conics import pole  # noqa: E402
 from planargeo.errors import DegenerateGeometryError, SingularConfigurationError, SingularInertiaError  # noqa: E402
@@ -58,7 +60,13 @@ from planargeo.model import Body, Joint, Model, chain_model, random_model  # noq
 from planargeo.projective import COND_LIMIT, direction, from_xy, join, meet, signed_distance, to_xy  # noqa: E402
 
 EPS, EPS_LD = ref.EPS, ref.EPS_LD
-METHODS = ref.METHODS
+METHODS = {
+    "aba": forward_dynamics,
+    "projective": forward_dynamics_projective,
+    "mobility_split": forward_dynamics_mobility_split,
+    "stacked": forward_dynamics_stacked,
+    "crba": forward_dynamics_crba,
+}
 MARKERS = {"aba": "o", "projective": "s", "mobility_split": "^", "stacked": "D", "crba": "x",
            "loop_solve": "v", "lagrange": "P"}
 COLORS = {"aba": "C0", "projective": "C1", "mobility_split": "C2", "stacked": "C3", "crba": "C4",
@@ -438,7 +446,7 @@ def _n_samples(g: dict) -> int:
 def geometry_markdown(g: dict) -> list:
     L = ["## (f) Geometry layer: near-parallel lines, points near infinity", "",
          "The projective layer (`planargeo.projective`, `conics`, `inertia`) against **exact rational arithmetic on "
-         "the same float inputs** (`cross_exact`, `matvec_exact`, `solve_exact` in `tests/test_breakdown.py`): the "
+         "the same float inputs** (`cross_exact`, `matvec_exact`, `solve_exact` in `planargeo/_reference.py`): the "
          "reference answers the question for the numbers given, so any difference is the package's rounding. "
          f"{_n_samples(g)} random configurations per row (random positions and orientations; masses and coordinates "
          "that are not powers of two); the tables give the median condition number and the largest error. "
@@ -622,7 +630,7 @@ def write_markdown(res: dict, path: Path) -> None:
          f"`np.longdouble` (`ld`, ε_ld = {EPS_LD:.1e}; its own error, `±`, is estimated by solving again with "
          "the elimination order reversed; at N = 20 that estimate, 1.0e-15, matches the actual ld-vs-exact "
          "difference, 1.3e-15). Errors marked `≲` are below 3× that estimate: not resolved. "
-         "Code: `reference_system` in `tests/test_breakdown.py`. "
+         "Code: `reference_system` in `planargeo/_reference.py`. "
          "cond(H) is the 2-norm condition number (λ_max from `eigvalsh`, λ_min by long-double inverse "
          f"iteration). ε = {EPS:.1e}. **raises (c)**: the method raised `SingularConfigurationError` with "
          "`.cond = c` (its own measure). The chart `breakdown.svg/.png` plots every point against the ε·cond line.",

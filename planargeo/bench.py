@@ -14,7 +14,7 @@ charts in ``--gallery`` (default ``gallery/benchmarks``):
     which is robust to machine speed and load.
 ``accuracy``, ``work_precision``, ``speed_accuracy``
     Error of every method and peer against an independent extended-precision
-    reference (``reference_system`` of ``tests/test_breakdown.py``: exact
+    reference (``reference_system`` of ``planargeo/_reference.py``: exact
     rational arithmetic for small N, ``np.longdouble`` beyond), with its time
     per call: one point (time, error) per method and N.
 ``batch``
@@ -42,7 +42,6 @@ from __future__ import annotations
 import argparse
 import datetime as _dt
 import importlib
-import importlib.util
 import json
 import os
 import platform
@@ -323,27 +322,20 @@ def _peers(m):
 
 
 # --------------------------------------------------------------------------- reference
-_REF = {}
-
-
 def _reference_module():
-    """``tests/test_breakdown.py`` loaded by path (the breakdown study's reference, one copy), or None."""
-    if "mod" not in _REF:
-        path = Path(__file__).resolve().parents[1] / "tests" / "test_breakdown.py"
-        mod = None
-        if path.exists():
-            try:
-                spec = importlib.util.spec_from_file_location("_breakdown_reference", path)
-                mod = importlib.util.module_from_spec(spec)
-                spec.loader.exec_module(mod)
-            except Exception:  # pragma: no cover - e.g. pytest missing
-                mod = None
-        _REF["mod"] = mod
-    return _REF["mod"]
+    """The breakdown study's independent reference, :mod:`planargeo._reference` (one copy).
+
+    It lives in the package (not in the tests) so the accuracy columns exist
+    for an installed package too; an import error is a packaging bug and is not
+    caught.
+    """
+    from . import _reference
+
+    return _reference
 
 
 def reference_qdd(model, q, qd, tau):
-    """``(q̈_ref, info)`` from the independent reference of the breakdown study, or ``(None, {})`` without it.
+    """``(q̈_ref, info)`` from the independent reference of the breakdown study (:mod:`planargeo._reference`).
 
     Exact rational arithmetic up to :data:`EXACT_MAX` coordinates, ``np.longdouble``
     beyond; ``info``: ``mode``, ``spread`` (longdouble: the change when the
@@ -351,8 +343,6 @@ def reference_qdd(model, q, qd, tau):
     exact: 0) and ``cond`` (2-norm condition number of H).
     """
     ref = _reference_module()
-    if ref is None:
-        return None, {}
     mode = "exact" if model.nq <= EXACT_MAX else "longdouble"
     H, rhs = ref.reference_system(model, q, qd, tau, mode=mode)
     x = np.array([float(v) for v in ref._gauss_solve(H, rhs)])
@@ -633,15 +623,14 @@ def _accuracy_table(rows) -> list:
             cells += [_err(r["err_ref"].get(n), info["spread"]) for n in names]
             lines.append("| " + " | ".join(cells) + " |")
         return lines + [""]
-    return ["(reference not available: tests/test_breakdown.py not found; see accuracy.md for the errors "
-            "against the dense CRBA solve)", ""]
+    return ["(no reference errors were measured; see accuracy.md for the errors against the dense CRBA solve)", ""]
 
 
 def write_accuracy(rows, out: Path) -> str:
     names = list(rows[0]["err_crba"])
     lines = [_header("Speed against accuracy"),
              "Largest relative error max|q̈ − q̈_ref| / max|q̈_ref| of every method and peer against the "
-             "independent reference of the breakdown study (`reference_system` in `tests/test_breakdown.py`: "
+             "independent reference of the breakdown study (`reference_system` in `planargeo/_reference.py`: "
              f"the joint-space equations from world-frame Jacobians, solved exactly for N ≤ {EXACT_MAX} and in "
              "`np.longdouble` beyond, `ld ±` its own error estimated by reversing the elimination order; errors "
              "marked `≲` are below 3× that estimate, not resolved), against the dense CRBA solve (`H q̈ = τ − C`) "
@@ -798,7 +787,7 @@ def write_results(single, batch, out: Path, summary: Path, charts: bool = True, 
     L += _time_table(single)
     L += ["## Accuracy: error against the extended-precision reference", "",
           "max|q̈ − q̈_ref| / max|q̈_ref| for the states above. Reference: `reference_system` of "
-          "`tests/test_breakdown.py` (the breakdown study's independent reference: the joint-space equations "
+          "`planargeo/_reference.py` (the breakdown study's independent reference: the joint-space equations "
           f"written from world-frame Jacobians, solved in exact rational arithmetic for N ≤ {EXACT_MAX}, in "
           "`np.longdouble` beyond; `ld ±e`: its own error estimated by reversing the elimination order; `≲`: "
           "below 3× that, not resolved). Errors against the dense solve and against Pinocchio: "
