@@ -355,3 +355,16 @@ def test_imaginary_conic_drawn_as_geo_drawable_conic(ax, rng):
         art = plot_conic(C, ax)
         assert art.imaginary and art.kind == "ellipse"
         _check_on_conic(art, drawable_conic(C))
+
+
+def test_point_beyond_float_range_draws_as_ideal(ax):
+    # [1e200, 1, 1e-200]: the pole (-1e200, 1e400) overflows; it is drawn like the ideal point
+    # [1e200, 1, 0] (an arrow at the edge of the view), with no warning
+    art = plot_point([1e200, 1.0, 1e-200], ax, text="far")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        ax.figure.canvas.draw()
+        assert art.get_xy() is None
+    ideal = plot_point([1e200, 1.0, 0.0], ax)
+    ax.figure.canvas.draw()
+    np.testing.assert_allclose(art._arrow.get_path().vertices, ideal._arrow.get_path().vertices)

@@ -11,9 +11,10 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 from hypothesis import given, strategies as st  # noqa: E402
 
-from planargeo.draw.constructions import (draw_percussion, draw_polar_exterior,  # noqa: E402
+from planargeo.draw.constructions import (draw_acceleration_step, draw_newton_euler,  # noqa: E402
+                                          draw_percussion, draw_polar_exterior,
                                           draw_polar_interior, draw_power, draw_twist_sum,
-                                          draw_wrench_sum, line_conic_points)
+                                          draw_velocity_step, draw_wrench_sum, line_conic_points)
 from planargeo.draw.mechanism import draw_joint_split, draw_model, link_polygon  # noqa: E402
 from planargeo.screws import inertia_matrix, unit_rotation, unit_translation  # noqa: E402
 
@@ -125,17 +126,135 @@ def test_percussion_distance(ax):
     I = inertia_matrix(m, c, m * rho * rho)
     a = np.array([c[1], -(c[0] - d), 1.0])   # pole at c - (d, 0)
     f = draw_percussion(I, a, ax)["f"].get_line()
-    x_axis = -f[2] / -f[1] if f[1] else None
-    # f is vertical (force along y): x = -tz / -fy ... from tz + y fx - x fy = 0 with fx = 0
-    x_axis = f[2] / f[1]
+    assert f[0] == pytest.approx(0.0, abs=1e-12)   # a vertical axis (force along y)
+    x_axis = f[2] / f[1]                           # tz + y fx - x fy = 0 with fx = 0 (4.27)
     assert x_axis - c[0] == pytest.approx(rho * rho / d)
     ax.figure.canvas.draw()
 
 
+def _momentum_closed_form(m, c, J, Q, w):
+    """p = I v by hand: force m v_c (v_c = w x (c - Q)), moment about O = J w + (c x m v_c)_z."""
+    vc = w * np.array([-(c[1] - Q[1]), c[0] - Q[0]])
+    F = m * vc
+    return np.array([F[0], F[1], J * w + c[0] * F[1] - c[1] * F[0]])
+
+
 def test_power_relations(ax):
-    I = inertia_matrix(1.5, [0.5, 0.2], 0.4)
-    out = draw_power(np.array([0.3, -1.0, 1.2]), I, ax)
-    assert np.allclose(out["checks"], 0.0, atol=1e-12)
+    # thesis 5.69-5.74: f through the pole of v (v^T f = 0), a on the momentum line (p^T a = 0)
+    m, c, J, Q, w = 1.5, np.array([0.5, 0.2]), 0.4, np.array([1.0, -0.3]), 1.2
+    I = inertia_matrix(m, c, J)
+    out = draw_power(w * unit_rotation(Q), I, ax)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        ax.figure.canvas.draw()
+    p = _momentum_closed_form(m, c, J, Q, w)
+    P = out["p"].get_line()
+    np.testing.assert_allclose(P, p, rtol=1e-12)                      # p = I v
+    Qh = np.array([Q[1], -Q[0], 1.0])
+    f = out["f"].get_line()
+    assert abs(Qh @ f) <= 1e-12 * np.linalg.norm(f)                   # f passes through v's pole
+    a = out["a"].get_point()
+    assert abs(p @ a) <= 1e-12 * np.linalg.norm(p) * np.linalg.norm(a)  # a lies on p
+    # the drawn (clipped) momentum line satisfies the closed form's equation (4.27)
+    for x, y in out["p"].get_segment():
+        assert abs(p[2] + y * p[0] - x * p[1]) <= 1e-9 * np.hypot(p[0], p[1])
+
+
+def test_power_velocity_at_centre_of_mass_is_a_couple(ax):
+    # v at the centre of mass: p = I v = [0, 0, J w], the line at infinity (a pure couple);
+    # a powerless acceleration is then a translation (an ideal point)
+    m, c, J, w = 2.0, np.array([0.3, -0.4]), 0.5, 1.5
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        out = draw_power(w * unit_rotation(c), inertia_matrix(m, c, J), ax)
+        ax.figure.canvas.draw()
+    np.testing.assert_allclose(out["p"].get_line(), [0.0, 0.0, J * w], atol=1e-12)
+    a = out["a"].get_point()
+    assert abs(a[2]) <= 1e-12 * np.hypot(a[0], a[1])       # (numerically) an ideal point
+    p = out["p"].get_line()
+    assert abs(p @ a) <= 1e-12 * np.linalg.norm(p) * np.linalg.norm(a)
+    # exactly a couple: exactly an ideal point
+    I = inertia_matrix(m, [0.0, 0.0], J)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        out = draw_power(w * unit_rotation([0.0, 0.0]), I, ax)
+        ax.figure.canvas.draw()
+    assert out["a"].get_point()[2] == 0.0 and out["a"].get_xy() is None
+    f = out["f"].get_line()
+    assert abs(np.array([0.0, 0.0, 1.0]) @ f) <= 1e-12 * np.linalg.norm(f)   # f through v's pole
+
+
+def test_power_translation_velocity(ax):
+    # v a translation (ideal point): p = m u through the centre of mass; f is parallel to...
+    # every line along the translation's normal direction has v^T f = 0
+    m, c, J, u = 2.0, np.array([0.3, -0.4]), 0.5, np.array([1.0, 2.0])
+    v = np.array([u[0], u[1], 0.0])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        out = draw_power(v, inertia_matrix(m, c, J), ax)
+        ax.figure.canvas.draw()
+    p = out["p"].get_line()
+    np.testing.assert_allclose(p, [m * u[0], m * u[1], m * (c[0] * u[1] - c[1] * u[0])])
+    f = out["f"].get_line()
+    assert abs(v @ f) <= 1e-12 * np.linalg.norm(f) and np.any(f[:2])
+    assert abs(p @ out["a"].get_point()) <= 1e-12 * np.linalg.norm(p)
+
+
+def test_twist_sum_coincident_poles_draws(ax):
+    # v + 2 v: the same pole (no lever line); the sum is 3 v
+    v = 0.7 * unit_rotation([1.0, 0.5])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        out = draw_twist_sum(v, 2 * v, ax)
+        ax.figure.canvas.draw()
+    np.testing.assert_allclose(out["v3"].get_xy(), [1.0, 0.5])
+    assert out["v3"].get_point()[2] == pytest.approx(3 * 0.7)
+    assert not np.any(out["lever"].get_line())
+
+
+def test_velocity_step_lever_rule(ax):
+    # thesis 4.48-4.49: V_i = V_{i-1} + beta (S - V_{i-1}), beta = qd / (qd + w_{i-1})
+    Vp, S, wp, qd = np.array([-1.0, 0.5]), np.array([1.0, 1.5]), 0.8, 1.7
+    out = draw_velocity_step(wp * unit_rotation(Vp), unit_rotation(S), qd, ax)
+    beta = qd / (qd + wp)
+    np.testing.assert_allclose(out["v"].get_xy(), Vp + beta * (S - Vp))
+    assert out["v"].get_point()[2] == pytest.approx(wp + qd)
+    ax.figure.canvas.draw()
+
+
+def test_acceleration_step_bias_and_offset(ax):
+    # thesis 4.53: kappa = w qd (S - V) rotated: a translation of magnitude |w qd k|;
+    # 4.54: s qdd + kappa is a rotation qdd about a point at |w qd k / qdd| from the joint
+    V, S, w, qd, qdd = np.array([0.0, 0.0]), np.array([2.0, 1.0]), 1.3, 0.9, 2.5
+    ap = 0.4 * unit_rotation([-1.0, 1.0])
+    out = draw_acceleration_step(ap, w * unit_rotation(V), unit_rotation(S), qd, qdd, ax)
+    k = np.linalg.norm(S - V)
+    bias = out["bias"].get_point()
+    assert bias[2] == 0.0
+    assert np.hypot(*bias[:2]) == pytest.approx(abs(w * qd * k))
+    combo = out["joint_total"].get_xy()
+    assert np.linalg.norm(combo - S) == pytest.approx(abs(w * qd * k / qdd))
+    a = out["a"].get_point()
+    np.testing.assert_allclose(a, ap + qdd * unit_rotation(S) + bias)
+    assert abs(a @ out["lever"].get_line()) < 1e-12 * np.linalg.norm(a)
+    ax.figure.canvas.draw()
+
+
+def test_newton_euler_one_body(ax):
+    # thesis 4.7, 4.55-4.56: p is the centripetal force m l w^2 through the centre of mass toward
+    # the pole of v; I a the axis of percussion at rho^2/d; f_net = I a + p
+    m, c, J = 2.0, np.array([1.0, 0.0]), 0.18
+    Q, w = np.array([-1.0, 0.0]), 1.5                      # v: rotation about Q, l = 2
+    A, alpha = np.array([1.0, -1.0]), 2.0                  # a: rotation about A, d = 1
+    out = draw_newton_euler(inertia_matrix(m, c, J), alpha * unit_rotation(A),
+                            w * unit_rotation(Q), ax, scale=0.1)
+    p = out["p"].get_line()
+    np.testing.assert_allclose(p, [-m * 2.0 * w * w, 0.0, 0.0], atol=1e-12)  # along -x through y=0
+    Ia = out["Ia"].get_line()
+    rho2 = J / m
+    np.testing.assert_allclose(Ia / Ia[0], [1.0, 0.0, -rho2 / 1.0], atol=1e-12)  # y = rho^2/d
+    np.testing.assert_allclose(out["f_net"].get_line(), Ia + p, atol=1e-12)
+    ax.figure.canvas.draw()
 
 
 def test_joint_split_and_model_drawing(ax):

@@ -80,11 +80,16 @@ def point_xy(p) -> np.ndarray | None:
     array([1., 2.])
     >>> point_xy([1.0, 0.0, 0.0]) is None
     True
+    >>> point_xy([1e200, 1.0, 1e-200]) is None   # beyond the float range: drawn as ideal
+    True
     """
     p = np.asarray(p, dtype=float)
     if p[2] == 0.0:
         return None
-    return np.array([-p[1] / p[2], p[0] / p[2]])
+    with np.errstate(over="ignore", under="ignore"):
+        xy = np.array([-p[1] / p[2], p[0] / p[2]])
+    # a weight so small that the pole is beyond the float range: numerically an ideal point
+    return xy if np.all(np.isfinite(xy)) else None
 
 
 def clip_line(line, box) -> np.ndarray | None:
@@ -143,15 +148,18 @@ def _view(ax):
     return (min(x0, x1), max(x0, x1), min(y0, y1), max(y0, y1))
 
 
-def _arc_glyph(center, radius, ccw: bool, npts: int = 40):
-    """Display-space arc (270°) and arrowhead triangle for a rotation glyph."""
+def _arc_glyph(center, radius, ccw: bool, npts: int = 40, pts: float = 1.0):
+    """Display-space arc (270°) and arrowhead triangle for a rotation glyph.
+
+    ``pts`` is the renderer's pixels per point (the head is 3-6 points long).
+    """
     a0, span = np.deg2rad(-45.0), np.deg2rad(270.0)
     t = np.linspace(a0, a0 + span, npts) if ccw else np.linspace(a0 + span, a0, npts)
     arc = center + radius * np.column_stack([np.cos(t), np.sin(t)])
     end, te = arc[-1], t[-1]
     tang = np.array([-np.sin(te), np.cos(te)]) * (1.0 if ccw else -1.0)
     norm = np.array([np.cos(te), np.sin(te)])
-    h = min(max(3.0, 0.45 * radius), 6.0)
+    h = min(max(3.0 * pts, 0.45 * radius), 6.0 * pts)
     head = np.array([end + tang * h, end - 0.5 * h * norm, end + 0.5 * h * norm])
     return arc, head
 
@@ -171,6 +179,7 @@ class _Base(martist.Artist):
         self._text = Text(0, 0, "" if text is None else str(text), fontsize=8, va="bottom")
         self._text.set_transform(IdentityTransform())
         self._text_offset = np.asarray(text_offset, dtype=float)
+        self._ha, self._va = "left", "bottom"
         self._add_child(self._text)
 
     def _add_child(self, child):
@@ -183,6 +192,13 @@ class _Base(martist.Artist):
     def set_text(self, text):
         """Set the text label drawn next to the glyph."""
         self._text.set_text("" if text is None else str(text))
+        self.stale = True
+
+    def set_text_alignment(self, ha="left", va="bottom"):
+        """Alignment of the label at its offset point (e.g. ``ha="right"`` for a label on the left)."""
+        self._ha, self._va = ha, va
+        self._text.set_horizontalalignment(ha)
+        self._text.set_verticalalignment(va)
         self.stale = True
 
     def set_figure(self, fig):
@@ -253,10 +269,14 @@ class PointArtist(_Base):
         Draw the rotation / translation glyph (the marker alone otherwise).
     text : str, optional
         Label drawn next to the pole.
+    text_offset : (dx, dy) points, optional
+        Label offset from the pole; default: clear of the glyph, up and right.
+    marker, markersize : optional
+        Override the role's marker (e.g. :data:`planargeo.draw.style.SUM` for a sum).
     """
 
     def __init__(self, point, *, role="twist", glyph_scale=6.0, glyph=True, text=None,
-                 text_offset=None, color=None, markersize=None, zorder=7):
+                 text_offset=None, color=None, marker=None, markersize=None, zorder=7):
         super().__init__(text, (0.0, 0.0) if text_offset is None else text_offset, zorder)
         self._auto_offset = text_offset is None
         st = _style(role)
@@ -264,7 +284,7 @@ class PointArtist(_Base):
         self._p = _vec(point, "point")
         self._glyph_scale = float(glyph_scale)
         self._glyph = bool(glyph)
-        self._marker = self._add_child(Line2D([0], [0], marker=st["marker"], linestyle="none",
+        self._marker = self._add_child(Line2D([0], [0], marker=marker or st["marker"], linestyle="none",
                                               markersize=markersize or st["markersize"],
                                               color=self._color, markeredgecolor="white",
                                               markeredgewidth=0.6))
@@ -311,24 +331,31 @@ class PointArtist(_Base):
         if not np.any(p):
             return []
         pts = renderer.points_to_pixels(1.0)
-        xy = point_xy(p)
         out = []
-        if xy is not None:
+        xy = None
+        if p[2] != 0.0:
+            # far beyond the view (FAR view diagonals): drawn like an ideal point.  Tested as
+            # |w (pole - centre)| > FAR diag |w|, before any division by w (which may overflow).
             box = _view(ax)
             diag = np.hypot(box[1] - box[0], box[3] - box[2])
             c = np.array([(box[0] + box[1]) / 2, (box[2] + box[3]) / 2])
-            if np.hypot(*(xy - c)) > FAR * diag:
-                xy = None  # numerically finite but far beyond the view: drawn like an ideal point
+            with np.errstate(over="ignore"):
+                off = np.hypot(-p[1] - c[0] * p[2], p[0] - c[1] * p[2])
+                near = off <= FAR * diag * abs(p[2])
+            if near:
+                xy = point_xy(p)
         if xy is not None:
             self._marker.set_data([xy[0]], [xy[1]])
             out.append(self._marker)
             disp = ax.transData.transform(xy)
             if self._glyph:
                 r = float(np.clip(self._glyph_scale * abs(p[2]), 4.0, 16.0)) * pts
-                arc, head = _arc_glyph(disp, r, ccw=p[2] > 0)
+                arc, head = _arc_glyph(disp, r, ccw=p[2] > 0, pts=pts)
                 self._arc.set_data(arc[:, 0], arc[:, 1])
                 self._head.set_xy(head)
                 out += [self._arc, self._head]
+            self._text.set_horizontalalignment(self._ha)
+            self._text.set_verticalalignment(self._va)
             if self._auto_offset:
                 rr = float(np.clip(self._glyph_scale * abs(p[2]), 4.0, 16.0)) if self._glyph else 2.0
                 self._text_offset = np.array([0.75 * rr + 3.0, 0.75 * rr + 3.0])
@@ -340,6 +367,8 @@ class PointArtist(_Base):
         bb = ax.bbox
         cd = np.array([(bb.x0 + bb.x1) / 2, (bb.y0 + bb.y1) / 2])
         n = lin @ np.array([-b, a])
+        if p[2] < 0.0:  # a far finite pole with negative weight lies the other way
+            n = -n
         n /= np.hypot(*n)
         t = lin @ np.array([a, b])  # display direction of the velocity (a, b)
         t /= np.hypot(*t)
@@ -350,8 +379,18 @@ class PointArtist(_Base):
         self._arrow.set_positions(tuple(base - t * L / 2), tuple(base + t * L / 2))
         self._inf.set_position(_pyxy(base - t * (L / 2 + 7 * pts)))
         out += [self._arrow, self._inf]
-        if self._text.get_text():
+        if self._text.get_text() and not self._auto_offset:  # as asked, from the arrow's middle
+            self._text.set_position(_pyxy(base + self._text_offset * pts))
+            self._text.set_horizontalalignment(self._ha)
+            self._text.set_verticalalignment(self._va)
+            out.append(self._text)
+        elif self._text.get_text():
+            # inside the view from the arrow, aligned so that it extends away from the edge
             self._text.set_position(_pyxy(base - n * 16 * pts))
+            self._text.set_horizontalalignment(
+                "right" if n[0] > 0.5 else "left" if n[0] < -0.5 else "center")
+            self._text.set_verticalalignment(
+                "top" if n[1] > 0.5 else "bottom" if n[1] < -0.5 else "center")
             out.append(self._text)
         return out
 
@@ -447,7 +486,7 @@ class LineArtist(_Base):
             vert, horiz = self._corner.split()
             cx = bb.x1 - m if horiz == "right" else bb.x0 + m
             cy = bb.y1 - m if vert == "upper" else bb.y0 + m
-            arc, head = _arc_glyph(np.array([cx, cy]), r, ccw=tz > 0)
+            arc, head = _arc_glyph(np.array([cx, cy]), r, ccw=tz > 0, pts=pts)
             self._arc.set_data(arc[:, 0], arc[:, 1])
             self._head.set_xy(head)
             out += [self._arc, self._head]

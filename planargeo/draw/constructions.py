@@ -19,13 +19,15 @@ import numpy as np
 from ..conics import (line_conic_intersections, polar, polar_construction_exterior,
                       polar_construction_interior)
 from ..inertia import percussion_axis
-from ..projective import from_xy, join, meet, to_xy
+from ..projective import from_direction, from_xy, join, meet, to_xy
+from ..screws import bias_force, kappa
 from .artists import _mat, _vec, plot_conic, plot_line, plot_point
-from .style import COLORS, style
+from .style import COLORS, style, sum_style
 
 __all__ = [
     "line_conic_points", "tangent_points", "label",
-    "draw_twist_sum", "draw_wrench_sum", "draw_polar_exterior", "draw_polar_interior",
+    "draw_twist_sum", "draw_wrench_sum", "draw_velocity_step", "draw_acceleration_step",
+    "draw_newton_euler", "draw_polar_exterior", "draw_polar_interior",
     "draw_tangent", "draw_percussion", "draw_power", "draw_segment", "draw_dimension",
 ]
 
@@ -53,16 +55,25 @@ def draw_segment(ax, p, q, role="construct", **kw):
     return ln
 
 
-def draw_dimension(ax, p, q, text, *, offset=0.0, color=None, fontsize=7):
-    """A dimension arrow ``<->`` between Euclidean points ``p`` and ``q``, labelled ``text``."""
+def draw_dimension(ax, p, q, text, *, offset=0.0, color=None, fontsize=7, at=0.5):
+    """A dimension arrow ``<->`` between Euclidean points ``p`` and ``q``, labelled ``text``.
+
+    The arrow is shifted by ``offset`` (data units) to the left of ``p → q``;
+    the label sits at fraction ``at`` along it, on the same side.
+    """
     p, q = np.asarray(p, float), np.asarray(q, float)
     d = q - p
-    n = np.array([-d[1], d[0]]) / max(np.hypot(*d), 1e-300)
+    L = np.hypot(*d)
+    if L == 0.0:
+        from ..errors import InputError
+
+        raise InputError("draw_dimension: p and q must be distinct points")
+    n = np.array([-d[1], d[0]]) / L
     p2, q2 = p + offset * n, q + offset * n
     arr = ax.annotate("", xy=tuple(q2), xytext=tuple(p2),
                       arrowprops=dict(arrowstyle="<->", color=color or COLORS["construct"],
                                       lw=0.7, shrinkA=0, shrinkB=0))
-    m = (p2 + q2) / 2
+    m = p2 + at * (q2 - p2)
     txt = ax.annotate(text, xy=tuple(m), xytext=tuple(4 * n), textcoords="offset points",
                       ha="center", va="center", fontsize=fontsize, color=color or COLORS["text"])
     return arr, txt
@@ -83,32 +94,59 @@ def tangent_points(C, p) -> list[np.ndarray]:
 
 
 # --------------------------------------------------------------------------- twist / wrench sums
+def _lever(p, q):
+    """``p × q`` without the coincidence check of :func:`join`: zero when the poles coincide
+    (then every line through the common pole is a lever; the artist draws nothing)."""
+    return np.cross(p, q)
+
+
 def draw_twist_sum(v1, v2, ax=None, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"),
-                   lever=True, glyph_scale=6.0):
+                   lever=True, glyph_scale=6.0, role="twist", text_offsets=(None, None, None)):
     """Twist addition (thesis 4.11–4.16, Figs 4.1, 4.3): ``v3 = v1 + v2`` lies on ``join(v1, v2)``.
 
-    Returns the artists ``{"v1", "v2", "v3", "lever"}``.
+    The sum is a twist like its terms: same ``role`` colour, marked by
+    :func:`~planargeo.draw.style.sum_style` (larger diamond).  Coincident poles
+    (``v2`` a multiple of ``v1``) have no lever line: its artist then draws
+    nothing.  Returns the artists ``{"v1", "v2", "v3", "lever"}``.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> from planargeo.screws import unit_rotation
+    >>> out = draw_twist_sum(unit_rotation([0, 0]), 2 * unit_rotation([3, 0]), plt.figure().gca())
+    >>> out["v3"].get_xy()          # beta = 2 / 3 of the way from Q1 to Q2 (4.12-4.13)
+    array([2., 0.])
+    >>> plt.close("all")
     """
     ax = _ax(ax)
     v1, v2 = _vec(v1, "v1"), _vec(v2, "v2")
     v3 = v1 + v2
     out = {}
     if lever:
-        out["lever"] = plot_line(join(v1, v2), ax, role="construct", scale=None)
-    out["v1"] = plot_point(v1, ax, text=labels[0], glyph_scale=glyph_scale)
-    out["v2"] = plot_point(v2, ax, text=labels[1], glyph_scale=glyph_scale)
-    out["v3"] = plot_point(v3, ax, role="accel", text=labels[2], glyph_scale=glyph_scale)
+        out["lever"] = plot_line(_lever(v1, v2), ax, role="construct", scale=None)
+    o1, o2, o3 = text_offsets
+    out["v1"] = plot_point(v1, ax, role=role, text=labels[0], glyph_scale=glyph_scale,
+                           text_offset=o1)
+    out["v2"] = plot_point(v2, ax, role=role, text=labels[1], glyph_scale=glyph_scale,
+                           text_offset=o2)
+    out["v3"] = plot_point(v3, ax, role=role, text=labels[2], glyph_scale=glyph_scale,
+                           text_offset=o3, **sum_style("point"))
     return out
 
 
 def draw_wrench_sum(f1, f2, ax=None, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"),
-                    scale=1.0, anchors=(None, None, None), parallelogram=True):
+                    scale=1.0, anchors=(None, None, None), parallelogram=True,
+                    text_offsets=(None, None, None), role="wrench"):
     """Wrench addition (thesis 4.33–4.46, Figs 4.4–4.6): ``f3 = f1 + f2``.
 
     Two crossing forces: ``f3`` passes through ``meet(f1, f2)`` and the force
     parallelogram is drawn there.  Parallel forces: ``f3`` lies between them by
     the lever rule (4.43); a force and a couple: ``f3`` is parallel to ``f1``
-    at ``ρ = τ/F`` (4.46).  Returns ``{"f1", "f2", "f3", "meet", ...}``.
+    at ``ρ = τ/F`` (4.46).  The sum is a wrench like its terms: same ``role``
+    colour, heavier line (:func:`~planargeo.draw.style.sum_style`).
+    Returns ``{"f1", "f2", "f3", "meet", ...}``.
     """
     ax = _ax(ax)
     f1, f2 = _vec(f1, "f1"), _vec(f2, "f2")
@@ -120,10 +158,13 @@ def draw_wrench_sum(f1, f2, ax=None, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + 
     if finite_meet and parallelogram:
         Pxy = to_xy(P)
         anc = [Pxy + scale * f1[:2] / 2, Pxy + scale * f2[:2] / 2, Pxy + scale * f3[:2] / 2]
-    out["f1"] = plot_line(f1, ax, text=labels[0], scale=scale, anchor=anc[0])
-    out["f2"] = plot_line(f2, ax, text=labels[1], scale=scale, anchor=anc[1],
-                          corner="upper left")
-    out["f3"] = plot_line(f3, ax, role="reaction", text=labels[2], scale=scale, anchor=anc[2])
+    off = [(6.0, 6.0) if o is None else o for o in text_offsets]
+    out["f1"] = plot_line(f1, ax, role=role, text=labels[0], scale=scale, anchor=anc[0],
+                          text_offset=off[0])
+    out["f2"] = plot_line(f2, ax, role=role, text=labels[1], scale=scale, anchor=anc[1],
+                          corner="upper left", text_offset=off[1])
+    out["f3"] = plot_line(f3, ax, role=role, text=labels[2], scale=scale, anchor=anc[2],
+                          text_offset=off[2], **sum_style("line"))
     if finite_meet:
         Pxy = to_xy(P)
         out["meet"] = ax.plot(*Pxy, "o", color=COLORS["construct"], ms=3.5, zorder=5)[0]
@@ -131,6 +172,118 @@ def draw_wrench_sum(f1, f2, ax=None, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + 
             a, b = Pxy + scale * f1[:2], Pxy + scale * f2[:2]
             c = Pxy + scale * f3[:2]
             out["parallelogram"] = [draw_segment(ax, a, c), draw_segment(ax, b, c)]
+    return out
+
+
+# --------------------------------------------------------------------------- chains, one body
+def draw_velocity_step(v_prev, s, qd, ax=None, *,
+                       names=("$v_{i-1}$", r"$s_i\dot q_i$", "$v_i$"),
+                       text_offsets=(None, None, None), dims=True, dim_offset=0.25):
+    """One step of velocity kinematics along a chain (thesis 4.47–4.49, Fig. 4.7).
+
+    ``v_i = v_{i-1} + s_i q̇_i`` is a twist sum: the pole of ``v_i`` lies on
+    the line joining the pole of ``v_{i-1}`` and the joint (the pole of
+    ``s_i``), at ``β k`` from the former with ``β = q̇_i/(q̇_i + ω_{i-1})``.
+    With ``dims`` the distance ``k`` between the two poles is dimensioned
+    (when both are finite), ``dim_offset`` to the left of the lever line.
+
+    Returns the artists of :func:`draw_twist_sum` keyed ``{"v_prev", "joint",
+    "v", "lever"}`` (plus ``"k"``) and ``"values"``: the arrays
+    ``{"joint": s q̇, "v": v_i}``.
+    """
+    ax = _ax(ax)
+    v_prev = _vec(v_prev, "v_prev")
+    u = _vec(s, "s") * float(qd)
+    art = draw_twist_sum(v_prev, u, ax, labels=names, text_offsets=text_offsets)
+    out = {"v_prev": art["v1"], "joint": art["v2"], "v": art["v3"], "lever": art["lever"],
+           "values": {"joint": u, "v": v_prev + u}}
+    if dims and v_prev[2] != 0.0 and u[2] != 0.0:
+        out["k"] = draw_dimension(ax, to_xy(v_prev), to_xy(u), "$k$", offset=dim_offset)
+    return out
+
+
+def draw_acceleration_step(a_prev, v_prev, s, qd, qdd, ax=None, *,
+                           names=("$a_{i-1}$", r"$s_i\ddot q_i$", r"$v_i\times s_i\dot q_i$",
+                                  r"$s_i\ddot q_i + v_i\times s_i\dot q_i$", "$a_i$"),
+                           text_offsets=(None,) * 5):
+    """One step of acceleration kinematics along a chain (thesis 4.50–4.54, Fig. 4.8).
+
+    ``a_i = a_{i-1} + s_i q̈_i + κ_i`` with the bias ``κ_i = v_i × s_i q̇_i``
+    (:func:`planargeo.screws.kappa`), a translation (an ideal point).  The
+    joint's part ``s_i q̈_i + κ_i`` is a rotation on the line through the joint
+    in the direction of that ideal point, offset by ``|κ_i| / q̈_i`` (4.54), and
+    ``a_i`` lies on its line to ``a_{i-1}``; all five are accelerations
+    (vermillion), ``a_i`` marked as the sum.
+
+    Returns the artists ``{"a_prev", "joint", "bias", "joint_total", "a",
+    "lever", "joint_lever"}`` and ``"values"`` (the arrays of the same names).
+    """
+    ax = _ax(ax)
+    a_prev, v_prev, s = _vec(a_prev, "a_prev"), _vec(v_prev, "v_prev"), _vec(s, "s")
+    rel = s * float(qdd)
+    bias = kappa(v_prev, s, float(qd))
+    combo = rel + bias
+    a = a_prev + combo
+    o = list(text_offsets)
+    out = {"lever": plot_line(_lever(a_prev, combo), ax, role="construct", scale=None),
+           "joint_lever": plot_line(_lever(rel, bias), ax, role="construct", scale=None,
+                                    linewidth=0.6)}
+    out["a_prev"] = plot_point(a_prev, ax, role="accel", text=names[0], text_offset=o[0])
+    out["joint"] = plot_point(rel, ax, role="accel", text=names[1], text_offset=o[1])
+    out["bias"] = plot_point(bias, ax, role="accel", text=names[2], text_offset=o[2])
+    out["joint_total"] = plot_point(combo, ax, role="accel", text=names[3], text_offset=o[3])
+    out["a"] = plot_point(a, ax, role="accel", text=names[4], text_offset=o[4],
+                          **sum_style("point"))
+    out["values"] = {"a_prev": a_prev, "joint": rel, "bias": bias, "joint_total": combo, "a": a}
+    return out
+
+
+def _com(I):
+    """Centre of mass of an inertia matrix ``[[m, 0, m cy], [0, m, -m cx], ...]`` (4.58)."""
+    return np.array([I[1, 2], -I[0, 2]]) / I[0, 0]
+
+
+def draw_newton_euler(I, a, v, ax=None, *, scale=None, names=("$v$", "$a$", "$Ia$", "$p$",
+                                                               r"$f^{net} = Ia + p$"),
+                      positions=(-1.0, -0.9, 1.0), text_offsets=(None,) * 5, inertia=True):
+    """Newton–Euler balance of one body (thesis 4.55–4.56, Fig. 4.9): ``f_net = I a + p``.
+
+    ``I a`` is the axis of percussion of ``a`` (5.64), ``p = v×* I v``
+    (:func:`planargeo.screws.bias_force`, no gravity) the centripetal force
+    through the centre of mass toward the pole of ``v``, and ``f_net`` their
+    sum, drawn as a wrench with the sum's heavier line.  The arrows sit at
+    signed distances ``positions`` (for ``Ia``, ``p``, ``f_net``) along each
+    line from the foot of the centre of mass.
+
+    Returns the artists ``{"inertia", "v", "a", "Ia", "p", "f_net"}`` and
+    ``"values"`` (the arrays ``Ia``, ``p``, ``f_net``).
+    """
+    ax = _ax(ax)
+    I, a, v = _mat(I, "inertia"), _vec(a, "a"), _vec(v, "v")
+    Ia = I @ a
+    p = bias_force(I, v)
+    fnet = Ia + p
+    c = _com(I)
+    o = list(text_offsets)
+
+    def along(f, t):  # a point at signed distance t along line f from the foot of c
+        F = np.hypot(f[0], f[1])
+        return None if F == 0.0 else c + f[:2] / F * t
+
+    out = {}
+    if inertia:
+        out["inertia"] = plot_conic(I, ax, role="inertia")
+    out["v"] = plot_point(v, ax, role="twist", text=names[0], text_offset=o[0])
+    out["a"] = plot_point(a, ax, role="accel", text=names[1], text_offset=o[1])
+    lo = [(6.0, 6.0) if x is None else x for x in o]
+    out["Ia"] = plot_line(Ia, ax, role="wrench", scale=scale, text=names[2],
+                          anchor=along(Ia, positions[0]), text_offset=lo[2])
+    out["p"] = plot_line(p, ax, role="momentum", scale=scale, text=names[3],
+                         anchor=along(p, positions[1]), text_offset=lo[3])
+    out["f_net"] = plot_line(fnet, ax, role="wrench", scale=scale, text=names[4],
+                             anchor=along(fnet, positions[2]), text_offset=lo[4],
+                             **sum_style("line"))
+    out["values"] = {"Ia": Ia, "p": p, "f_net": fnet}
     return out
 
 
@@ -143,14 +296,15 @@ def draw_tangent(C, q, ax=None, *, text=None):
             "tangent": plot_line(polar(C, q), ax, role="construct", scale=None)}
 
 
-def draw_polar_exterior(C, p, ax=None, *, names=("$P$", "$L = CP$")):
+def draw_polar_exterior(C, p, ax=None, *, names=("$P$", "$L = CP$"), L_anchor=None):
     """Polar of an exterior point (thesis 5.36, Fig. 5.2): tangents from ``p``; ``L`` joins their contacts."""
     ax = _ax(ax)
     C, p = _mat(C, "C"), _vec(p, "p")
     K = polar_construction_exterior(C, p)
     out = {"conic": plot_conic(C, ax, text="$C$"),
            "P": plot_point(p, ax, glyph=False, text=names[0]),
-           "L": plot_line(K.polar, ax, role="wrench", scale=None, text=names[1])}
+           "L": plot_line(K.polar, ax, role="wrench", scale=None, text=names[1],
+                          anchor=L_anchor)}
     out["construction"] = K
     out["tangents"] = [plot_line(t, ax, role="construct", scale=None) for t in K.tangents]
     out["touch_marks"] = [ax.plot(*to_xy(t), "o", color=COLORS["construct"], ms=3.5, zorder=5)[0]
@@ -158,12 +312,15 @@ def draw_polar_exterior(C, p, ax=None, *, names=("$P$", "$L = CP$")):
     return out
 
 
-def draw_polar_interior(C, p, ax=None, *, angles=(0.35, 1.9), names=("$P$", "$L = CP$")):
+def draw_polar_interior(C, p, ax=None, *, angles=(0.35, 1.9), names=("$P$", "$L = CP$"),
+                        L_anchor=None, text_offsets=(None, (6.0, 6.0), None, None)):
     """Polar of an interior point (thesis 5.36, Fig. 5.3).
 
     Two chords through ``p`` (at ``angles``); the tangents at each chord's ends
     meet in a point; the two points span ``L``.  Each of them is the pole of
     its chord (Theorem 12), which is why ``L`` passes through both.
+    ``L_anchor`` places ``L``'s label; ``text_offsets`` are for ``P``, ``L``,
+    ``R_1``, ``R_2`` (points, None: automatic).
     """
     ax = _ax(ax)
     C, p = _mat(C, "C"), _vec(p, "p")
@@ -171,24 +328,29 @@ def draw_polar_interior(C, p, ax=None, *, angles=(0.35, 1.9), names=("$P$", "$L 
     lines = np.stack([join(p, from_xy(pxy + [np.cos(t), np.sin(t)])) for t in angles])
     K = polar_construction_interior(C, p, lines=lines)
     out = {"conic": plot_conic(C, ax, text="$C$"),
-           "P": plot_point(p, ax, glyph=False, text=names[0]), "construction": K}
+           "P": plot_point(p, ax, glyph=False, text=names[0], text_offset=text_offsets[0]),
+           "construction": K}
     out["chords"] = [plot_line(ln, ax, role="construct", scale=None) for ln in K.lines]
     for k in range(2):
         for j in range(2):
             plot_line(K.tangents[k, j], ax, role="construct", scale=None, linewidth=0.6)
             ax.plot(*to_xy(K.chord_points[k, j]), "o", color=COLORS["construct"], ms=3, zorder=5)
-        plot_point(K.poles[k], ax, glyph=False, role="accel", text=f"$R_{k + 1}$")
-    out["L"] = plot_line(K.polar, ax, role="wrench", scale=None, text=names[1])
+        out[f"R{k + 1}"] = plot_point(K.poles[k], ax, glyph=False, role="accel",
+                                      text=f"$R_{k + 1}$", text_offset=text_offsets[2 + k])
+    out["L"] = plot_line(K.polar, ax, role="wrench", scale=None, text=names[1], anchor=L_anchor,
+                         text_offset=text_offsets[1])
     return out
 
 
 # --------------------------------------------------------------------------- inertia
-def draw_percussion(I, a, ax=None, *, names=("$a$", "$f = Ia$"), dims=True, scale=None):
+def draw_percussion(I, a, ax=None, *, names=("$a$", "$f = Ia$"), dims=True, scale=None,
+                    f_anchor=None, text_offsets=(None, (6.0, 6.0))):
     """Axis of percussion ``f = I a`` of an acceleration pole ``a`` (thesis 5.64–5.68, Fig. 5.6).
 
     Draws the inertia (radius-of-gyration circle, dashed), the pole and the
     axis; with ``dims`` the distances ``d`` (pole to centre of mass) and
     ``ρ²/d`` (centre of mass to the axis) along the line through both.
+    ``f_anchor`` places the axis's label (and arrow, with ``scale``) along it.
     """
     ax = _ax(ax)
     I, a = _mat(I, "inertia"), _vec(a, "a")
@@ -196,8 +358,9 @@ def draw_percussion(I, a, ax=None, *, names=("$a$", "$f = Ia$"), dims=True, scal
     m = I[0, 0]
     c = np.array([I[1, 2], -I[0, 2]]) / m
     out = {"inertia": plot_conic(I, ax, role="inertia"),
-           "a": plot_point(a, ax, role="accel", text=names[0]),
-           "f": plot_line(f, ax, role="wrench", scale=scale, text=names[1])}
+           "a": plot_point(a, ax, role="accel", text=names[0], text_offset=text_offsets[0]),
+           "f": plot_line(f, ax, role="wrench", scale=scale, text=names[1], anchor=f_anchor,
+                          text_offset=text_offsets[1])}
     axy = to_xy(a)
     if dims and a[2] != 0.0 and np.any(f[:2]):
         foot = to_xy(meet(f, join(a, from_xy(c))))
@@ -207,28 +370,61 @@ def draw_percussion(I, a, ax=None, *, names=("$a$", "$f = Ia$"), dims=True, scal
     return out
 
 
-def draw_power(v, I, ax=None, *, f_offset=0.6, a_offset=0.8):
+def draw_power(v, I, ax=None, *, f_angle=0.6, a_distance=1.6,
+               names=("$v$", "$p = Iv$", "$f$: $v^Tf = 0$", "$a$: $p^Ta = 0$"),
+               text_offsets=(None,) * 4, f_label_at=1.6, p_label_at=None):
     """Power relations (thesis 5.69–5.74, Fig. 5.7).
 
     A powerless force ``f`` passes through the velocity pole ``v``
     (``vᵀ f = 0``); a powerless acceleration ``a`` lies on the momentum line
-    ``p = I v`` (``pᵀ a = 0``).  ``f`` and ``a`` are picked on those
-    incidences at the given offsets.
+    ``p = I v`` (``pᵀ a = 0``), which passes through the centre of mass.
+
+    ``f`` is the line through ``v`` whose direction is the momentum's turned by
+    ``f_angle`` (for a translation ``v``, an ideal point: the line through the
+    centre of mass along ``v``'s direction); ``a`` is the point of ``p`` at
+    signed distance ``a_distance`` from the foot of the perpendicular from the
+    centre of mass.  Ideal elements are
+    ordinary values: ``v`` at the centre of mass makes ``p`` a pure couple (the
+    line at infinity), and ``a`` is then an ideal point (a translation) in the
+    direction turned by ``f_angle`` from the x axis.  ``f_label_at`` and
+    ``p_label_at`` place the labels of ``f`` and ``p`` at signed distances along
+    them from ``v`` and from ``a`` (None: the default place).
+
+    Returns the artists ``{"inertia", "v", "p", "f", "a"}`` and ``"values"``
+    (the arrays ``p``, ``f``, ``a``).
     """
     ax = _ax(ax)
     v, I = _vec(v, "v"), _mat(I, "inertia")
     p = I @ v
-    vxy = to_xy(v)
-    ang = np.arctan2(p[1], p[0]) + f_offset
-    f = join(v, from_xy(vxy + [np.cos(ang), np.sin(ang)]))  # a line through v
-    fp = p[:2] / np.hypot(*p[:2])
-    foot = to_xy(np.array([-p[0] * p[2], -p[1] * p[2], p[0] ** 2 + p[1] ** 2]))
-    a = from_xy(foot + a_offset * 2 * fp)
+    c = _com(I)
+    F = np.hypot(p[0], p[1])
+    ang = np.arctan2(p[1], p[0]) + f_angle          # arctan2(0, 0) = 0: a couple p
+    ef = np.array([np.cos(ang), np.sin(ang)])
+    if v[2] != 0.0:
+        f = np.cross(v, from_direction(ef))          # through v, along ef
+    else:
+        f = np.cross(v, from_xy(c))                  # through c, parallel to the translation
+    if F != 0.0:   # on p, a_distance from the foot of the perpendicular from the centre of mass
+        e = p[:2] / F
+        foot = np.cross(p, np.cross(from_xy(c), from_direction([-e[1], e[0]])))   # homogeneous
+        a = foot + foot[2] * a_distance * from_direction(e)   # no division by the weight: a
+        # nearly-couple p (v close to the centre of mass) gives a far, nearly ideal point
+    else:
+        a = from_direction(ef)                       # p at infinity: an ideal point
+    o = list(text_offsets)
+    lo = [(6.0, 6.0) if x is None else x for x in o]
+    f_anchor = None
+    if v[2] != 0.0 and f_label_at is not None:
+        f_anchor = to_xy(v) + f_label_at * ef
+    p_anchor = None
+    if p_label_at is not None and F != 0.0 and a[2] != 0.0:
+        p_anchor = to_xy(a) + p_label_at * p[:2] / F
     out = {"inertia": plot_conic(I, ax, role="inertia"),
-           "v": plot_point(v, ax, text="$v$"),
-           "p": plot_line(p, ax, role="momentum", scale=None, text="$p = Iv$"),
-           "f": plot_line(f, ax, role="wrench", scale=None, text="$f$: $v^Tf = 0$",
-                          anchor=vxy + 1.6 * np.array([np.cos(ang), np.sin(ang)])),
-           "a": plot_point(a, ax, role="accel", text="$a$: $p^Ta = 0$", glyph=False)}
-    out["checks"] = (float(v @ f), float(p @ a))
+           "v": plot_point(v, ax, text=names[0], text_offset=o[0]),
+           "p": plot_line(p, ax, role="momentum", scale=None, text=names[1], anchor=p_anchor,
+                          text_offset=lo[1]),
+           "f": plot_line(f, ax, role="wrench", scale=None, text=names[2], anchor=f_anchor,
+                          text_offset=lo[2]),
+           "a": plot_point(a, ax, role="accel", text=names[3], glyph=False, text_offset=o[3])}
+    out["values"] = {"p": p, "f": f, "a": a}
     return out

@@ -18,6 +18,11 @@ role           object                      look
 ``ground``     ground / fixed frame        dark grey hatching
 =============  ==========================  ==================================
 
+A sum keeps the role of its terms (a sum of twists is a twist, a sum of
+wrenches is a wrench): ``v₃ = v₁ + v₂`` or ``f₃ = f₁ + f₂`` is drawn in the
+same colour, told apart by weight (:data:`SUM`: a heavier line, a larger
+diamond marker).  :func:`legend` makes a key of roles for one panel.
+
 Use :func:`figure` (or :func:`rc_context`) to get the package's fixed fonts and
 sizes; gallery output is reproducible only inside that context.
 """
@@ -75,6 +80,14 @@ STYLES = {
     "construct": dict(color=COLORS["construct"], linewidth=LINEWIDTHS["construct"], linestyle=(0, (4, 3))),
     "conic": dict(color=COLORS["conic"], linewidth=LINEWIDTHS["conic"], linestyle="-"),
     "inertia": dict(color=COLORS["inertia"], linewidth=LINEWIDTHS["inertia"], linestyle=(0, (5, 3))),
+}
+
+#: Emphasis of a sum (same colour as its terms, heavier): keyword arguments for
+#: :class:`~planargeo.draw.artists.LineArtist` (``"line"``) and
+#: :class:`~planargeo.draw.artists.PointArtist` (``"point"``).
+SUM = {
+    "line": dict(linewidth=3.4),
+    "point": dict(marker="D", markersize=6.5),
 }
 
 #: Fixed rcParams: fonts, sizes and SVG determinism (column width ≈ 3.4 in).
@@ -137,6 +150,70 @@ def style(role: str, **overrides) -> dict:
     out = dict(STYLES[role])
     out.update(overrides)
     return out
+
+
+def sum_style(kind: str, **overrides) -> dict:
+    """Keyword arguments that mark a sum (``kind`` "line" or "point"), see :data:`SUM`.
+
+    Examples
+    --------
+    >>> sum_style("line")["linewidth"] > STYLES["wrench"]["linewidth"]
+    True
+    >>> sum_style("point")["marker"]
+    'D'
+    """
+    if kind not in SUM:
+        from ..errors import InputError
+
+        raise InputError(f"kind must be one of {sorted(SUM)}, got {kind!r}")
+    out = dict(SUM[kind])
+    out.update(overrides)
+    return out
+
+
+def legend(ax, items, *, loc="lower right", **kw):
+    """A key of roles for one panel.
+
+    ``items`` are ``(role, kind, text)`` with ``kind`` one of "point", "line",
+    "sum-point", "sum-line"; line roles use their style's dash pattern.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> leg = legend(ax, [("twist", "point", "twist"), ("wrench", "sum-line", "sum")])
+    >>> [t.get_text() for t in leg.get_texts()]
+    ['twist', 'sum']
+    >>> plt.close(fig)
+    """
+    from matplotlib.lines import Line2D
+
+    handles = []
+    for role, kind, text in items:
+        emph = kind.startswith("sum-")
+        base = kind.removeprefix("sum-")
+        if base == "point":
+            st = STYLES.get(role, {})
+            pt = sum_style("point") if emph else {}
+            handles.append(Line2D([], [], color=COLORS[role], linestyle="none",
+                                  marker=pt.get("marker", st.get("marker", "o")),
+                                  markersize=pt.get("markersize", st.get("markersize", 5.0)),
+                                  markeredgecolor="white", markeredgewidth=0.6, label=text))
+        elif base == "line":
+            st = STYLES.get(role, dict(color=COLORS[role], linewidth=1.3, linestyle="-"))
+            lw = sum_style("line")["linewidth"] if emph else st["linewidth"]
+            handles.append(Line2D([], [], color=COLORS[role], linewidth=lw,
+                                  linestyle=st["linestyle"], label=text))
+        else:
+            from ..errors import InputError
+
+            raise InputError(f"legend item kind must be point, line, sum-point or sum-line, "
+                             f"got {kind!r}")
+    opts = dict(loc=loc, fontsize=6.5, handlelength=1.8, borderaxespad=0.2, labelspacing=0.3)
+    opts.update(kw)
+    return ax.legend(handles=handles, **opts)
 
 
 def setup_axes(ax, limits=None, *, grid=False, axis_off=True):

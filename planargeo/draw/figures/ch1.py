@@ -51,7 +51,8 @@ def fig1_2():
 
 @register("fig1_3", "Fig. 1.3 — spatial acceleration of the same disk is zero: the velocity of "
           "whatever body point occupies the fixed spatial location P is the same at every instant "
-          "(v_P at three instants drawn), so a = dv/dt = 0 (no acceleration pole).", 1.03)
+          "(grey dots: body points that are at P a moment before and after; each has velocity v_P "
+          "there, one arrow), so a = dv/dt = 0 (no acceleration pole).", 1.03)
 def fig1_3():
     fig, ax = new_figure(3.4, 2.3)
     v = _disk(ax)

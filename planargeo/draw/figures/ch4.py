@@ -2,27 +2,19 @@
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.patches import Polygon
 
 from ...algorithms.rnea import newton_euler
 from ...kinematics import kinematics
 from ...model import Body, Joint, Model
 from ...projective import from_xy, join, meet, to_xy
 from ...screws import inertia_matrix, unit_rotation, unit_translation
-from ..artists import plot_conic, plot_line, plot_point
-from ..constructions import draw_dimension, draw_segment, draw_twist_sum, draw_wrench_sum, label
-from ..mechanism import draw_com, draw_ground, draw_link, draw_model, draw_pin, draw_frame
-from ..style import COLORS
+from ..artists import plot_conic, plot_line
+from ..constructions import (draw_acceleration_step, draw_dimension, draw_newton_euler,
+                             draw_twist_sum, draw_velocity_step, draw_wrench_sum, label)
+from ..mechanism import draw_com, draw_frame, draw_ground, draw_link, draw_model, draw_pin
+from ..style import COLORS, legend, sum_style
 from . import fit_view, new_figure, register
-
-
-def _legend(ax, items, loc="lower right"):
-    from matplotlib.lines import Line2D
-
-    handles = [Line2D([], [], color=COLORS[role], lw=2 if kind == "line" else 0,
-                      marker="o" if kind == "point" else None, ms=5, label=text,
-                      linestyle="--" if role in ("inertia", "construct") and kind == "line" else "-")
-               for role, kind, text in items]
-    ax.legend(handles=handles, loc=loc, fontsize=6.5, handlelength=1.8)
 
 
 @register("fig4_1", "Fig. 4.1 — two rotations add to a rotation on the line through their poles: "
@@ -31,11 +23,15 @@ def fig4_1():
     fig, ax = new_figure(3.4, 1.9)
     v1 = 1.0 * unit_rotation([0.0, 0.0])
     v2 = 2.0 * unit_rotation([3.0, 0.0])
-    draw_twist_sum(v1, v2, ax, labels=("$v_1$ (ω=1)", "$v_2$ (ω=2)", "$v_3$ (ω=3)"))
+    out = draw_twist_sum(v1, v2, ax, labels=("$v_1$ (ω=1)", "$v_2$ (ω=2)", "$v_3$ (ω=3)"),
+                         text_offsets=(None, None, (0.0, 19.0)))
+    out["v3"].set_text_alignment("center")
     P, Q1, Q2 = to_xy(v1 + v2), to_xy(v1), to_xy(v2)
     draw_dimension(ax, Q1, P, r"$\beta k$", offset=-0.55)
     draw_dimension(ax, Q1, Q2, "$k$", offset=-1.0)
-    fit_view(ax, [Q1, Q2, P, Q1 + [0, -1.1], Q2 + [0.9, 0.6]], margin=0.08)
+    legend(ax, [("twist", "point", "twist (pole)"), ("twist", "sum-point", "sum of twists"),
+                ("construct", "line", "lever line")], loc="lower right")
+    fit_view(ax, [Q1, Q2, P, Q1 + [0, -1.1], Q2 + [2.2, 0.6]], margin=0.06)
     return fig
 
 
@@ -53,7 +49,7 @@ def fig4_2():
     assert np.allclose(F + R1 + R2, 0)
     draw_link([0, 0.12], [L, 0.12], ax, width=0.16)
     for x in (0.0, L):
-        ax.add_patch(__import__("matplotlib.patches", fromlist=["Polygon"]).Polygon(
+        ax.add_patch(Polygon(
             [[x, 0.04], [x - 0.15, -0.22], [x + 0.15, -0.22]], closed=True, fc="#dddddd",
             ec="#222222", lw=0.8, zorder=2))
         draw_ground([x, -0.22], ax, width=0.5, depth=0.1)
@@ -62,9 +58,11 @@ def fig4_2():
     plot_line(R1, ax, role="reaction", scale=sc, anchor=[0, -0.75], text=f"$R_1$ = {r[0]:.3g}",
               text_offset=(8, -6))
     plot_line(R2, ax, role="reaction", scale=sc, anchor=[L, -0.75], text=f"$R_2$ = {r[1]:.3g}",
-              text_offset=(-38, -6))
+              text_offset=(-6, -6)).set_text_alignment("right")
     beta = r[1] / (r[0] + r[1])
-    draw_dimension(ax, [0, 0.45], [beta * L, 0.45], rf"$\beta L$, β={beta:.2g}")
+    draw_dimension(ax, [0, 0.45], [beta * L, 0.45], r"$\beta L$")
+    ax.text(0.6, 0.97, rf"$\beta = R_2/(R_1 + R_2)$ = {beta:.2g}", transform=ax.transAxes,
+            ha="center", va="top", fontsize=7)
     fit_view(ax, [[-0.3, -1.4], [L + 0.3, 1.4]], margin=0.03)
     return fig
 
@@ -76,10 +74,9 @@ def fig4_3():
     omega, u, lam = 1.0, 1.5, np.deg2rad(30)
     v1 = omega * unit_rotation([0.0, 0.0])
     v2 = u * unit_translation([np.cos(lam), np.sin(lam)])
-    out = draw_twist_sum(v1, v2, ax, labels=("$v_1$ about $Q$", "$v_2$ (translation)",
-                                             "$v_3 = v_1 + v_2$"))
-    out["v3"].set_text(None)
-    label(ax, to_xy(v1 + v2), "$v_3 = v_1 + v_2$", offset=(10, -14), color=COLORS["accel"])
+    draw_twist_sum(v1, v2, ax, labels=("$v_1$ about $Q$", "$v_2$ (translation)",
+                                       "$v_3 = v_1 + v_2$"),
+                   text_offsets=((12.0, -18.0), (14.0, -4.0), (12.0, -14.0)))
     P, Q = to_xy(v1 + v2), to_xy(v1)
     draw_dimension(ax, Q, P, r"$\rho = u/\omega$", offset=0.25)
     e = np.array([np.cos(lam), np.sin(lam)])
@@ -87,12 +84,13 @@ def fig4_3():
                 arrowprops=dict(arrowstyle="-|>", color=COLORS["twist"], lw=1))
     label(ax, Q + 0.8 * e, "$e$", color=COLORS["twist"])
     fit_view(ax, [Q, P, Q - [1.2, 0.8], P + [1.2, 0.5]], margin=0.1)
-    _ = out
     return fig
 
 
 @register("fig4_4", "Fig. 4.4 — two crossing forces add by the parallelogram rule; f₃ passes through "
-          "the meet of f₁ and f₂ (4.33–4.39).", 4.04)
+          "the meet P = f₁ × f₂ of f₁ and f₂ (4.33–4.39). Erratum: the printed meet 4.35 with the "
+          "intercepts of 4.37 has the sign of one y-intercept wrong (both are −τᵢ/f_xi); P is "
+          "computed homogeneously, see docs/errata.md (4.37).", 4.04)
 def fig4_4():
     fig, ax = new_figure(3.4, 2.4)
     f1 = join(from_xy([-1.0, 0.5]), from_xy([0.0, 1.0])) * 1.2
@@ -107,19 +105,19 @@ def fig4_4():
           "lever rule, F₃ = F₁ + F₂, d₃ = d₁ + β(d₂ − d₁), β = F₂/(F₁ + F₂) (4.40–4.45).", 4.05)
 def fig4_5():
     fig, ax = new_figure(3.4, 2.0)
-    down = np.array([0.0, -1.0])
-    f1 = join(from_xy([0.0, 0.0]), from_xy(down)) * 2.0
-    f2 = join(from_xy([3.0, 0.0]), from_xy([3.0, -1.0])) * 1.0
-    f3 = f1 + f2
-    plot_line(f1, ax, scale=0.4, anchor=[0, 0.3], text="$f_1$ ($F_1$=2)")
-    plot_line(f2, ax, scale=0.4, anchor=[3, 0.3], text="$f_2$ ($F_2$=1)")
-    plot_line(f3, ax, role="reaction", scale=0.4, anchor=[0, -0.3], text="$f_3$ ($F_3$=3)")
+    f1 = join(from_xy([0.0, 0.0]), from_xy([0.0, -1.0])) * 2.0     # downward through x = 0
+    f2 = join(from_xy([3.0, 0.0]), from_xy([3.0, -1.0])) * 1.0     # downward through x = 3
+    out = draw_wrench_sum(f1, f2, ax, scale=0.4, anchors=([0, 0.45], [3, 0.45], [0, 0.15]),
+                          labels=("$f_1$ ($F_1$=2)", "$f_2$ ($F_2$=1)", "$f_3$ ($F_3$=3)"),
+                          text_offsets=((-4.0, 6.0), (-4.0, 6.0), (5.0, -4.0)))
+    for k in ("f1", "f2"):   # labels to the left of their lines, clear of f3
+        out[k].set_text_alignment("right")
     lever = join(from_xy([0.0, 0.0]), from_xy([1.0, 0.0]))
     plot_line(lever, ax, role="construct", scale=None)
-    x3 = to_xy(meet(f3, lever))
-    draw_dimension(ax, [0, -1.1], [x3[0], -1.1], r"$\beta\,(d_2-d_1)$")
-    draw_dimension(ax, [0, -1.6], [3, -1.6], r"$d_2-d_1$")
-    fit_view(ax, [[-0.5, -1.9], [3.5, 1.0]], margin=0.05)
+    x3 = to_xy(meet(f1 + f2, lever))
+    draw_dimension(ax, [0, -1.1], [x3[0], -1.1], r"$\beta d$")
+    draw_dimension(ax, [0, -1.6], [3, -1.6], r"$d = d_2-d_1$", at=0.68)
+    fit_view(ax, [[-1.3, -1.9], [3.5, 1.0]], margin=0.05)
     return fig
 
 
@@ -161,16 +159,17 @@ def fig4_7():
     m = _chain3()
     d = kinematics(m, Q47, QD47)
     draw_model(m, d, ax, show_com=False)
-    v2, v3 = d.v[1], d.v[2]
-    s3 = d.s(2)[:, 0] * QD47[2]
-    plot_line(join(v2, s3), ax, role="construct", scale=None)
-    plot_point(v2, ax, text="$v_2$")
-    plot_point(s3, ax, role="twist", text=r"$s_3\dot q_3$", text_offset=(8, -12))
-    plot_point(v3, ax, role="accel", text="$v_3$")
-    pts = [to_xy(v2), to_xy(s3), to_xy(v3), *d.origin, d.pose[2, :2] + 0.8 * np.array(
-        [np.cos(d.pose[2, 2]), np.sin(d.pose[2, 2])])]
-    draw_dimension(ax, to_xy(v2), to_xy(s3), "$k$", offset=0.25)
-    fit_view(ax, pts, margin=0.12)
+    i = 2
+    out = draw_velocity_step(d.v[i - 1], d.s(i)[:, 0], QD47[i], ax,
+                             names=("$v_2$", r"$s_3\dot q_3$", "$v_3$"),
+                             text_offsets=((8.0, 8.0), (14.0, -20.0), (-22.0, -4.0)),
+                             dim_offset=0.4)
+    assert np.allclose(out["values"]["v"], d.v[i])
+    out["v"].set_text_alignment("right")
+    legend(ax, [("twist", "point", r"twists $v_2$, $s_3\dot q_3$"),
+                ("twist", "sum-point", r"$v_3 = v_2 + s_3\dot q_3$")], loc="lower right")
+    tip = d.pose[i, :2] + 0.8 * np.array([np.cos(d.pose[i, 2]), np.sin(d.pose[i, 2])])
+    fit_view(ax, [to_xy(d.v[i - 1]), to_xy(d.v[i]), *d.origin, tip], margin=0.12)
     return fig
 
 
@@ -181,22 +180,20 @@ def fig4_8():
     fig, ax = new_figure(3.4, 2.8)
     m = _chain3()
     w = newton_euler(m, Q47, QD47, QDD47)
-    a2, a3 = w.a[1], w.a[2]
-    s3 = w.s(2)[:, 0]
-    rel = s3 * QDD47[2]
-    bias = w.kappa[2]
-    combo = rel + bias
-    assert np.allclose(a2 + combo, a3)
-    draw_model(m, w, ax, show_com=False)
-    plot_line(join(a2, combo), ax, role="construct", scale=None)
-    plot_line(join(s3, combo), ax, role="construct", scale=None, linewidth=0.6)
-    plot_point(a2, ax, role="accel", text="$a_2$")
-    plot_point(rel, ax, role="accel", text=r"$s_3\ddot q_3$", text_offset=(-30, 6))
-    plot_point(bias, ax, role="accel", text=r"$v_3\times s_3\dot q_3$")
-    plot_point(combo, ax, role="accel", text=r"$s_3\ddot q_3 + v_3\times s_3\dot q_3$",
-               text_offset=(10, -16))
-    plot_point(a3, ax, role="accel", text="$a_3$")
-    fit_view(ax, [to_xy(a2), to_xy(rel), to_xy(combo), to_xy(a3), *w.origin], margin=0.15)
+    i = 2
+    draw_model(m, w, ax, show_com=False, labels=False)
+    out = draw_acceleration_step(
+        w.a[i - 1], w.v[i - 1], w.s(i)[:, 0], QD47[i], QDD47[i], ax,
+        names=("$a_2$", r"$s_3\ddot q_3$", r"$\kappa_3 = v_3\times s_3\dot q_3$",
+               r"$s_3\ddot q_3 + \kappa_3$", "$a_3$"),
+        text_offsets=((16.0, -4.0), (-16.0, 12.0), None, (18.0, -4.0), (-22.0, -4.0)))
+    out["joint"].set_text_alignment("right")
+    out["a"].set_text_alignment("right")
+    assert np.allclose(out["values"]["a"], w.a[i])
+    assert np.allclose(out["values"]["bias"], w.kappa[i])
+    vals = out["values"]
+    fit_view(ax, [to_xy(vals[k]) for k in ("a_prev", "joint", "joint_total", "a")] + [*w.origin],
+             margin=0.15)
     return fig
 
 
@@ -208,27 +205,19 @@ def fig4_9():
     m = _chain3()
     w = newton_euler(m, Q47, QD47, QDD47)
     i = 1
-    I, a, v, p = w.I[i], w.a[i], w.v[i], w.p[i]
-    Ia = I @ a
-    fnet = w.f[i] - w.f[i + 1]
-    assert np.allclose(fnet, Ia + p)
-    draw_model(m, w, ax)
-    plot_conic(I, ax, role="inertia")
-    sc = 0.07
+    draw_model(m, w, ax, labels=False)
+    out = draw_newton_euler(w.I[i], w.a[i], w.v[i], ax, scale=0.07,
+                            names=("$v_2$", "$a_2$", "$I_2a_2$", "$p_2$",
+                                   r"$f^{net}_2 = f_2 - f_3$"),
+                            positions=(-1.2, -1.0, 1.0),
+                            text_offsets=((-14.0, 8.0), (10.0, -4.0), (-6.0, -16.0), (-20.0, 4.0),
+                                          (-30.0, 8.0)))
+    assert np.allclose(out["values"]["f_net"], w.f[i] - w.f[i + 1])   # RNEA agrees (4.55)
+    legend(ax, [("wrench", "line", "force"), ("wrench", "sum-line", "sum of forces"),
+                ("momentum", "line", "centripetal $p$"), ("inertia", "line", "inertia")],
+           loc="lower right")
     c = w.com[i]
-
-    def along(f, t):  # a point on line f at signed distance t from the foot of c
-        e = f[:2] / np.hypot(*f[:2])
-        return c + e * t
-
-    plot_point(v, ax, text="$v_2$")
-    plot_point(a, ax, role="accel", text="$a_2$")
-    plot_line(Ia, ax, scale=sc, text="$I_2a_2$", anchor=along(Ia, -1.0))
-    plot_line(p, ax, role="momentum", scale=sc, text="$p_2$", anchor=along(p, -0.9),
-              text_offset=(-14, 4))
-    plot_line(fnet, ax, role="reaction", scale=sc, text=r"$f^{net}_2 = f_2 - f_3$",
-              anchor=along(fnet, 1.0), text_offset=(-20, 8))
-    fit_view(ax, [to_xy(v), to_xy(a), *w.origin, c, c + [1.6, 0.0]], margin=0.1)
+    fit_view(ax, [to_xy(w.v[i]), to_xy(w.a[i]), *w.origin, c, c + [1.6, 0.0]], margin=0.1)
     return fig
 
 
@@ -249,5 +238,3 @@ def fig4_10():
     fit_view(ax, [[-0.4, -0.8], [2 * C + 0.4, 0.8]], margin=0.02)
     return fig
 
-
-_ = (plot_conic, draw_segment, label)

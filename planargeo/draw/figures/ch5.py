@@ -55,12 +55,12 @@ def _coords_figure(alternative: bool):
         ax.text(0.98, 0.02, r"$P=[-r\vec e;\,1]$ (5.49),  $L=[\vec e;\,r]$ (5.55)",
                 transform=ax.transAxes, fontsize=7, ha="right", va="bottom")
     else:
-        _vec_arrow(ax, [0, 0], 0.7 * nP, r"$\vec n$", color=COLORS["twist"])
-        _vec_arrow(ax, [0, 0], 0.7 * nL, r"$\vec n$", color=COLORS["wrench"])
+        _vec_arrow(ax, [0, 0], 0.7 * nP, r"$\vec n$", color=COLORS["twist"], offset=(-12, -2))
+        _vec_arrow(ax, [0, 0], 0.7 * nL, r"$\vec n$", color=COLORS["wrench"], offset=(-4, -16))
         ax.text(0.98, 0.02, r"$P=[1;\,r\vec n]$,  $L=[r;\,-\vec n]$ (5.4, 5.14)",
                 transform=ax.transAxes, fontsize=7, ha="right", va="bottom")
-    label(ax, Pxy / 2, "$r$", offset=(-10, 2))
-    label(ax, foot / 2, "$r$", offset=(0, 4))
+    label(ax, 0.72 * Pxy, "$r$", offset=(-10, 2))      # beyond the unit-vector arrows
+    label(ax, 0.72 * foot, "$r$", offset=(0, 4))
     fit_view(ax, [[-0.6, -1.6], [2.8, 2.6]], margin=0.03)
     return fig
 
@@ -102,9 +102,13 @@ def fig5_3():
     fig, ax = new_figure(3.4, 2.8)
     C = _ellipse()
     p = from_xy([1.0, 0.45])
-    out = draw_polar_interior(C, p, ax, angles=(np.deg2rad(75), np.deg2rad(150)))
+    out = draw_polar_interior(C, p, ax, angles=(np.deg2rad(75), np.deg2rad(150)),
+                              text_offsets=(None, (10.0, -4.0), None, (-8.0, 4.0)))
     K = out["construction"]
-    fit_view(ax, [to_xy(K.poles[0]), to_xy(K.poles[1]), [-1.8, -1.2], [1.8, 1.2]], margin=0.15)
+    R1, R2 = to_xy(K.poles[0]), to_xy(K.poles[1])
+    out["L"].set_anchor((R1 + R2) / 2)           # L's label between R1 and R2, right of L
+    out["R2"].set_text_alignment("right")        # R2's label left of L
+    fit_view(ax, [R1, R2, [-1.8, -1.2], [1.8, 1.2]], margin=0.15)
     return fig
 
 
@@ -120,17 +124,25 @@ def fig5_4():
     uL = decompose_line_special(C, polar(C, P), Q1, Q2, Q3)
     assert np.allclose(u, uL, rtol=1e-9, atol=1e-12)
     plot_conic(C, ax, text="$C$")
-    for k, (Q, nm) in enumerate(((Q1, "Q_1"), (Q2, "Q_2"), (Q3, "Q_3"))):
-        plot_point(Q, ax, glyph=False, text=f"${nm}$")
+    q1, q2, q3 = to_xy(Q1), to_xy(Q2), to_xy(Q3)
+    # M1 = C Q1 is the chord Q2 Q3, M2 and M3 the tangents Q1 Q2 and Q1 Q3: labels away from the Qs
+    anchors = (q3 + 0.5 * (q3 - q2) / np.hypot(*(q3 - q2)), (q1 + q2) / 2, (q1 + q3) / 2)
+    offsets = ((6.0, 2.0), (-4.0, 6.0), (8.0, -6.0))
+    q_offsets = ((-6.0, 6.0), (-6.0, 8.0), (-10.0, -2.0))
+    for k, Q in enumerate((Q1, Q2, Q3)):
+        pt = plot_point(Q, ax, glyph=False, text=f"$Q_{k + 1}$", text_offset=q_offsets[k])
+        if k == 0:
+            pt.set_text_alignment("right")
+        if k == 2:
+            pt.set_text_alignment("right", "top")
         plot_line(polar(C, Q), ax, role="construct", scale=None, text=f"$M_{k + 1}$",
-                  anchor=to_xy(Q) + [0.4, -0.3])
+                  anchor=anchors[k], text_offset=offsets[k])
     plot_point(P, ax, glyph=False, role="accel", text="$P$")
-    plot_line(polar(C, P), ax, scale=None, text="$L = CP$", anchor=[1.5, 2.0])
-    Pn = P / P[2]
+    plot_line(polar(C, P), ax, scale=None, text="$L = CP$", anchor=[1.0, -1.2],
+              text_offset=(8.0, -12.0))
     txt = ", ".join(f"$u_{k + 1}$={v:.2f}" for k, v in enumerate(u / (u @ [Q1[2], Q2[2], Q3[2]])))
-    ax.text(0.02, 0.02, txt, transform=ax.transAxes, fontsize=7, ha="left", va="bottom")
-    _ = Pn
-    fit_view(ax, [to_xy(Q1), [-1.9, -1.5], [1.9, 1.5]], margin=0.1)
+    ax.text(0.02, 0.98, txt, transform=ax.transAxes, fontsize=7, ha="left", va="top")
+    fit_view(ax, [q1, [-1.9, -1.5], [1.9, 1.5]], margin=0.1)
     return fig
 
 
@@ -157,11 +169,12 @@ def fig5_6():
     draw_body(shape, ax)
     draw_com(c, ax)
     a = from_xy(c - [1.5, 0.0])
-    draw_percussion(I.matrix, a, ax)
     f = percussion_axis(I.matrix, a)
     d, rho = 1.5, float(I.radius_of_gyration)
     x_axis = to_xy(np.cross(f, [1.0, 0.0, -c[1]]))  # meet with the line y = c_y
     assert np.isclose(x_axis[0] - c[0], rho ** 2 / d)
+    # the axis's label near the top of the view, right of the line and outside the circle
+    draw_percussion(I.matrix, a, ax, f_anchor=[x_axis[0], c[1] + 0.8], text_offsets=(None, (5.0, 0.0)))
     fit_view(ax, [to_xy(a) - [0.3, 0], [2.6, -0.7], [2.6, 0.7]], margin=0.06)
     return fig
 
@@ -175,7 +188,8 @@ def fig5_7():
     draw_body(shape, ax)
     draw_com(I.com, ax)
     v = 1.2 * from_xy([0.6, -1.1])
-    out = draw_power(v, I.matrix, ax)
-    assert np.allclose(out["checks"], 0.0, atol=1e-12)
+    out = draw_power(v, I.matrix, ax, text_offsets=((-14.0, -16.0), (8.0, 4.0), (0.0, -14.0), None),
+                     p_label_at=-2.3, f_label_at=-1.0)
+    out["v"].set_text_alignment("right")
     fit_view(ax, [[-0.6, -1.5], [2.6, 1.2], out["a"].get_xy(), to_xy(v)], margin=0.08)
     return fig
