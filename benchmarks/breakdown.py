@@ -60,6 +60,13 @@ from planargeo.model import Body, Joint, Model, chain_model, random_model  # noq
 from planargeo.projective import COND_LIMIT, direction, from_xy, join, meet, signed_distance, to_xy  # noqa: E402
 
 EPS, EPS_LD = ref.EPS, ref.EPS_LD
+_T0 = time.perf_counter()
+
+
+def log(msg: str) -> None:
+    """One progress line on stderr (flushed), with the wall time since the start."""
+    print(f"[breakdown {time.perf_counter() - _T0:6.1f} s] {msg}", file=sys.stderr, flush=True)
+
 METHODS = {
     "aba": forward_dynamics,
     "projective": forward_dynamics_projective,
@@ -102,6 +109,7 @@ LENGTHS = (2, 5, 10, 20, 50, 100, 200, 400)
 def knob_length(lengths=LENGTHS) -> list:
     rows = []
     for N in lengths:
+        log(f"(a) chain length N = {N}")
         q, qd, tau = ref.state(N)
         rows.append(tree_point(chain_model(N), q, qd, tau, "exact" if N <= 20 else "longdouble", N=N))
     return rows
@@ -111,6 +119,7 @@ def knob_mass_ratio() -> list:
     rows = []
     N = 8
     for reverse in (False, True):
+        log(f"(b) mass ratio, light {'base' if reverse else 'tip'}: 13 ratios")
         for k in range(13):
             ratio = 10.0 ** -k
             q, qd, tau = ref.state(N, 1)
@@ -125,6 +134,7 @@ def knob_slender() -> list:
     rows = []
     N = 8
     q, qd, tau = ref.state(N, 2)
+    log("(c) slender links and a point-mass tip near its joint")
     for rho in (0.3, 1e-1, 1e-2, 1e-4, 1e-6, 1e-8, 0.0):
         rows.append(tree_point(ref.slender_chain(N, rho), q, qd, tau, "exact", variant="rho", value=rho))
     for j in range(1, 10):
@@ -139,9 +149,11 @@ def knob_slender() -> list:
 def knob_prismatic() -> list:
     rows = []
     for N in (2, 5, 10, 20, 50, 100, 200):
+        log(f"(e) parallel sliders N = {N}")
         q, qd, tau = ref.state(N, 5)
         rows.append(tree_point(chain_model(N, joint="prismatic"), q, qd, tau,
                                "exact" if N <= 10 else "longdouble", variant="parallel", N=N))
+    log("(e) random sliding directions, graded sliders")
     for N in (5, 20, 50):
         q, qd, tau = ref.state(N, 6)
         rows.append(tree_point(random_model(N, seed=N, kinds=("prismatic",)), q, qd, tau,
@@ -161,6 +173,7 @@ def knob_prismatic() -> list:
 def knob_slider_crank() -> list:
     rows = []
     for path in ("rod", "psi"):
+        log(f"(d) slider-crank folding, {path} path: 15 steps")
         for k in range(1, 16):
             delta = 10.0 ** -k
             row = dict(path=path, delta=delta)
@@ -310,6 +323,7 @@ def _ppole(fn, I, f) -> dict:
 def knob_geometry() -> dict:
     I = ref.geo_inertia()
     res = {}
+    log(f"(f) geometry layer: {GEO_SAMPLES} samples per row")
     ks = list(range(0, 18))
     res["meet_pencil"] = _sweep([10.0 ** -k for k in ks], lambda t, rng: ref.pencil_pair(t, rng), _meet, 100)
     res["meet_strip"] = _sweep([10.0 ** -k for k in ks] + [0.0], lambda t, rng: ref.strip_pair(t, rng), _meet, 200)
@@ -918,11 +932,12 @@ def run(out_dir, quick: bool = False) -> dict:
                         ("geometry", knob_geometry)):
             t = time.time()
             res[key] = fn()
-            print(f"{key}: {time.time() - t:.1f} s", flush=True)
+            log(f"{key}: done in {time.time() - t:.1f} s")
     finally:
         GEO_SAMPLES = samples
     res["meta"] = {"date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()), "python": platform.python_version(),
                    "runtime_s": time.time() - t0, "quick": quick}
+    log(f"writing {out_dir / 'breakdown.md'} and the charts")
     write_markdown(res, out_dir / "breakdown.md")
     plot(res, out_dir)
     return res

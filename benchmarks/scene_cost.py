@@ -571,6 +571,7 @@ def measure_updates(budget: float, rounds: int) -> list:
     from planargeo.widgets import CarExplorer, SliderCrankExplorer, TreeExplorer
 
     rows = []
+    log("  update: chain, 10 links, overlays on / off")
     on, off = chain_explorer(True), chain_explorer(False)
     angles = list(np.linspace(-40.0, 0.0, 7))
     t = time_interleaved({"on": _cycler(on, "angle", angles), "off": _cycler(off, "angle", angles)},
@@ -581,6 +582,7 @@ def measure_updates(budget: float, rounds: int) -> list:
             ("car", CarExplorer(display="agg"), "speed (m/s)", list(np.linspace(2, 14, 7))),
             ("slider-crank", SliderCrankExplorer(display="agg"), "crank angle (deg)", list(np.linspace(10, 70, 7))),
             ("trees, loops closed", TreeExplorer(display="agg"), "speed", list(np.linspace(0.2, 2.0, 7)))):
+        log(f"  update: {label}")
         tt = time_interleaved({"update": _cycler(ex, control, values), "draw": ex.fig.canvas.draw},
                               budget=budget, rounds=rounds)
         rows.append({"explorer": label, "update_ms": 1e3 * np.median(tt["update"]),
@@ -693,6 +695,14 @@ def _notes(res: dict) -> list:
     return out
 
 
+_T0 = time.perf_counter()
+
+
+def log(msg: str) -> None:
+    """One progress line on stderr (flushed), with the wall time since the start."""
+    print(f"[scene_cost {time.perf_counter() - _T0:6.1f} s] {msg}", file=sys.stderr, flush=True)
+
+
 def run(out_dir, quick: bool = False) -> dict:
     """Measure every case, write ``scene_cost.md`` in ``out_dir``; returns the results."""
     out_dir = Path(out_dir)
@@ -700,16 +710,17 @@ def run(out_dir, quick: bool = False) -> dict:
     t0 = time.time()
     budget, rounds = (0.15, 10) if quick else (1.0, 30)
     res = {"cases": []}
+    log("building the scenes and explorers")
     all_cases = cases() + explorer_cases()
     for k, case in enumerate(all_cases):
+        log(f"[{k + 1}/{len(all_cases)}] {case.scene}: {case.consumer} (~{rounds} rounds, {budget:g} s) ...")
         row = {"group": case.group, "scene": case.scene, "consumer": case.consumer, "skipped": case.skipped}
         row.update(measure(case, budget, rounds))
         res["cases"].append(row)
-        print(f"[{k + 1}/{len(all_cases)}] {case.scene}: {case.consumer}: minimal/full "
-              f"{row['ratio']['best']:.2f} best, {row['ratio']['median']:.2f} median", flush=True)
+        log(f"[{k + 1}/{len(all_cases)}] minimal/full {row['ratio']['best']:.2f} best, "
+            f"{row['ratio']['median']:.2f} median")
+    log("whole explorer updates (4 explorers) ...")
     res["updates"] = measure_updates(0.6 if quick else 4.0, 5 if quick else 10)
-    for u in res["updates"]:
-        print("update:", u["explorer"], flush=True)
     res["meta"] = {"date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()), "python": platform.python_version(),
                    "runtime_s": time.time() - t0, "quick": quick, "rounds": rounds}
     res["notes"] = _notes(res)
