@@ -160,11 +160,14 @@ def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None):
     active = dec.T @ Q
     react = dec.R @ mu
     out = {
-        "f": plot_line(f, ax, role="wrench", scale=scale, anchor=anchor, text=f"$f_{{{name}}}$"),
+        # three labels at one anchor: spread them (right-above, right-below, left-above)
+        "f": plot_line(f, ax, role="wrench", scale=scale, anchor=anchor, text=f"$f_{{{name}}}$",
+                       text_offset=(8, 6)),
         "active": plot_line(active, ax, role="momentum", scale=scale, anchor=anchor,
-                            text=f"$TQ_{{{name}}}$", linestyle=(0, (6, 2))),
+                            text=f"$TQ_{{{name}}}$", linestyle=(0, (6, 2)), text_offset=(8, -16)),
         "reaction": plot_line(react, ax, role="reaction", scale=scale, anchor=anchor,
-                              text=f"$R\\mu_{{{name}}}$", linestyle=(0, (2, 2))),
+                              text=f"$R\\mu_{{{name}}}$", linestyle=(0, (2, 2)),
+                              text_offset=(-34, 6)),
     }
     return out, (Q, mu, active, react)
 
