@@ -1,0 +1,84 @@
+"""Legibility of every gallery figure: no label cut off, no two labels on top of each other.
+
+Each registered figure is built in the gallery's style and drawn on Agg.  The
+texts that are actually drawn (recorded at draw time, so labels of artists
+that skip them, ticks outside the view and empty texts do not count) must lie
+inside the figure, and no two of them may overlap by more than ``TOL`` pixels
+in both directions (at the gallery's 100 dpi: 0.7 pt).
+"""
+from __future__ import annotations
+
+import itertools
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import pytest  # noqa: E402
+from matplotlib.text import Text  # noqa: E402
+
+from planargeo.draw.figures import load_all  # noqa: E402
+from planargeo.draw.style import rc_context  # noqa: E402
+
+TOL = 1.0  # pixels
+
+SPECS = load_all()
+
+#: Figures of chapters 6, 7, 9 and the extras still being fixed (by another change).
+PENDING = {"fig6_1", "extra_joint_splits"}
+
+
+def _drawn_texts(fig, monkeypatch):
+    """(text, window extent) of every non-empty Text drawn while rendering ``fig``."""
+    drawn = []
+    orig = Text.draw
+
+    def record(self, renderer):
+        orig(self, renderer)
+        if self.get_visible() and self.get_text():
+            drawn.append((self.get_text(), self.get_window_extent(renderer)))
+
+    monkeypatch.setattr(Text, "draw", record)
+    fig.canvas.draw()
+    monkeypatch.setattr(Text, "draw", orig)
+    return drawn
+
+
+def _params():
+    return [pytest.param(name, id=name,
+                         marks=[pytest.mark.xfail(reason="G2 in progress")] if name in PENDING else [])
+            for name in SPECS]
+
+
+def test_overlap_measure_detects_overlap():
+    # the check itself: two texts at the same place overlap, two far apart do not
+    from matplotlib.transforms import Bbox
+
+    a, b, c = Bbox([[0, 0], [20, 10]]), Bbox([[5, 2], [25, 12]]), Bbox([[30, 0], [40, 10]])
+    assert _overlap(a, b) == (15, 8)
+    assert _overlap(a, c)[0] < 0
+
+
+def _overlap(a, b):
+    return (min(a.x1, b.x1) - max(a.x0, b.x0), min(a.y1, b.y1) - max(a.y0, b.y0))
+
+
+@pytest.mark.parametrize("name", _params())
+def test_labels_inside_and_apart(name, monkeypatch):
+    with rc_context():
+        fig = SPECS[name].build()
+        try:
+            texts = _drawn_texts(fig, monkeypatch)
+            W, H = fig.bbox.width, fig.bbox.height
+        finally:
+            plt.close(fig)
+    assert texts, f"{name}: no text drawn"
+    outside = [(t, [round(v, 1) for v in bb.extents]) for t, bb in texts
+               if bb.x0 < -TOL or bb.y0 < -TOL or bb.x1 > W + TOL or bb.y1 > H + TOL]
+    assert not outside, f"{name}: texts cut off by the figure edge ({W:g}x{H:g} px): {outside}"
+    clashes = []
+    for (ta, ba), (tb, bb) in itertools.combinations(texts, 2):
+        dx, dy = _overlap(ba, bb)
+        if dx > TOL and dy > TOL:
+            clashes.append((ta, tb, round(dx, 1), round(dy, 1)))
+    assert not clashes, f"{name}: overlapping texts (text, text, dx px, dy px): {clashes}"
