@@ -1103,6 +1103,8 @@ def _batch_source(lines):
             if not (drow or trow):
                 items.append(("py", f"if not {D[1]} > {tr[1]}: return False"))
                 continue
+            if not drow:   # a constant D (e.g. 0: a point mass on its joint) is tested before 1/D is taken
+                items.append(("py", f"if not {D[1]} > 0.0: return False"))
             margin = op("sub", D, tr)
             ok = margin if ok is None else op("minimum", ok, margin)
         else:
