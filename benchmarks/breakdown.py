@@ -815,10 +815,11 @@ def plot(res: dict, out_dir: Path) -> None:
         xs = [r["cond"] for r in tree_rows if name in r["errors"]]
         ys = [max(r["errors"][name], floor) for r in tree_rows if name in r["errors"]]
         ax.scatter(xs, ys, marker=MARKERS[name], s=22, label=name, color=COLORS[name],
-                   facecolors="none" if MARKERS[name] not in ("x", "P") else None, alpha=0.8)
+                   facecolors="none" if MARKERS[name] not in ("x", "P") else None, alpha=0.8, rasterized=True)
         xr = [r["cond"] for r in tree_rows if name in r["raised"]]
         if xr:
-            ax.scatter(xr, [3e-2] * len(xr), marker=MARKERS[name], s=22, color=COLORS[name], alpha=0.8)
+            ax.scatter(xr, [3e-2] * len(xr), marker=MARKERS[name], s=22, color=COLORS[name], alpha=0.8,
+                       rasterized=True)
     c = np.geomspace(1, 1e22, 50)
     for a in (ax, bx):
         a.plot(c, EPS * c, "k--", lw=1, label="ε·cond")
@@ -841,9 +842,9 @@ def plot(res: dict, out_dir: Path) -> None:
             xs = [r["cond"] for r in sc if name in r]
             ys = [max(r[name], floor) for r in sc if name in r]
             bx.scatter(xs, ys, marker=MARKERS[name], color=col, s=26, label=f"{name} ({path} path)",
-                       facecolors="none" if name == "loop_solve" else None)
+                       facecolors="none" if name == "loop_solve" else None, rasterized=True)
         xr = [r["cond"] for r in sc if "loop_raised" in r]
-        bx.scatter(xr, [3e-2] * len(xr), marker=MARKERS["loop_solve"], color=cols[0], s=26)
+        bx.scatter(xr, [3e-2] * len(xr), marker=MARKERS["loop_solve"], color=cols[0], s=26, rasterized=True)
     bx.axvline(SINGULAR_COND, color="C5", lw=0.8, ls=":")
     bx.set_xlim(1, 1e16)
     bx.set_xlabel("loop solver cond(BᵀGΛ⁻¹GᵀB)")
@@ -852,8 +853,12 @@ def plot(res: dict, out_dir: Path) -> None:
     if geo:
         plot_geometry(res["geometry"], axes[1][0], axes[1][1])
     fig.tight_layout()
-    for ext in ("svg", "png"):
-        fig.savefig(out_dir / f"breakdown.{ext}", dpi=110)
+    # the dense scatter layers are rasterized (in the SVG too, at 110 dpi): the geometry panels alone hold
+    # thousands of markers; axes, guides and text stay vector.  No date and a fixed hash salt: a rerun with
+    # the same numbers writes the same bytes
+    with plt.rc_context({"svg.hashsalt": "planargeo"}):
+        fig.savefig(out_dir / "breakdown.svg", dpi=110, metadata={"Date": None})
+    fig.savefig(out_dir / "breakdown.png", dpi=110)
     plt.close(fig)
 
 
@@ -884,11 +889,11 @@ def plot_geometry(g: dict, ax, bx) -> None:
             x, y = np.array(pts).T
             y = np.where(np.isfinite(y), np.maximum(y, floor), band)
             a.scatter(x, np.minimum(y, band), marker=mk, s=14, color=col, alpha=0.6, label=label,
-                      facecolors="none" if mk in "osD^v<>" else None, linewidths=0.8)
+                      facecolors="none" if mk in "osD^v<>" else None, linewidths=0.8, rasterized=True)
         xr = [r["raised_cond"] for r in rows if r["raised"] and r["raised_cond"] is not None
               and np.isfinite(r["raised_cond"])]
         if xr:
-            ax.scatter(xr, [band] * len(xr), marker=mk, s=30, color=col)
+            ax.scatter(xr, [band] * len(xr), marker=mk, s=30, color=col, rasterized=True)
     c = np.geomspace(1, 1e19, 50)
     for a in (ax, bx):
         a.plot(c, EPS * c, "k--", lw=1, label="ε·κ")

@@ -837,7 +837,8 @@ def _save(fig, out: Path, name: str, rect=(0, 0, 1, 1)):
     for a in fig.axes:
         a.minorticks_off()
     fig.tight_layout(rect=rect)
-    fig.savefig(out / f"{name}.svg", metadata={"Date": None})
+    with plt.rc_context({"svg.hashsalt": "planargeo"}):      # deterministic ids: identical bytes on a rerun
+        fig.savefig(out / f"{name}.svg", metadata={"Date": None})
     fig.savefig(out / f"{name}.png", dpi=110)
     plt.close(fig)
 
