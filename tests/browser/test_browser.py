@@ -1,9 +1,12 @@
 """Drive the tour notebook in a real JupyterLab with headless Debian chromium.
 
-Run all cells, move the first explorer's first slider with the keyboard, wait
-for the *final* readout value (the browser coalesces slider updates while the
-kernel is busy), and check that both the readout text and the figure's pixels
-changed.  Screenshots go to ``tests/browser/artifacts/`` (git-ignored); with
+Run all cells, move the projective playground's first slider (``P x``) with
+the keyboard, wait for the *final* readout value (the browser coalesces slider
+updates while the kernel is busy), and check that both the readout text and the
+figure's pixels changed.  The ``P x`` row only echoes the slider, so a computed
+row must follow too: the distance of the polar of ``P`` from the origin, checked
+against the hand formula ``1 / |M P|`` for the ellipse ``xᵀ M x = 1`` whose
+semi-axes and tilt the explorer's own sliders show.  Screenshots go to ``tests/browser/artifacts/`` (git-ignored); with
 ``PLANARGEO_UPDATE_SCREENSHOT=1`` the final one also replaces the committed
 ``benchmarks/results/browser.png``.
 """
@@ -45,6 +48,31 @@ def _number(text: str) -> float:
     return float(m.group())
 
 
+def _slider_values(explorer) -> dict[str, float]:
+    """Label -> number shown by every slider of an explorer."""
+    sliders = explorer.locator(".widget-slider")
+    out = {}
+    for i in range(sliders.count()):
+        sl = sliders.nth(i)
+        out[sl.locator(".widget-label").first.inner_text().strip()] = _number(
+            sl.locator(".widget-readout").first.inner_text())
+    return out
+
+
+def _polar_distance(v: dict[str, float], conic: str) -> float:
+    """Distance from the centre to the polar of P w.r.t. the ellipse xᵀ M x = 1 (by hand).
+
+    ``M = R(tilt) diag(1/a², 1/b²) R(tilt)ᵀ`` (a circle: ``b = a``); the polar of
+    ``P`` is ``{x : xᵀ M P = 1}``, at distance ``1 / |M P|`` from the centre.
+    """
+    a = v["a"]
+    b = a if conic == "circle" else v["b"]
+    t = np.radians(v["tilt (deg)"])
+    R = np.array([[np.cos(t), -np.sin(t)], [np.sin(t), np.cos(t)]])
+    M = R @ np.diag([1 / a ** 2, 1 / b ** 2]) @ R.T
+    return float(1.0 / np.linalg.norm(M @ np.array([v["P x"], v["P y"]])))
+
+
 def _pixels(png: bytes) -> np.ndarray:
     from PIL import Image
 
@@ -82,7 +110,7 @@ def test_tour_slider_updates_readout_and_figure(lab, browser):
                                " && window.jupyterapp.shell.currentWidget.sessionContext.session.kernel",
                                timeout=60_000)
         page.evaluate("window.jupyterapp.commands.execute('notebook:run-all-cells')")
-        explorer = page.locator(".planargeo-explorer").first
+        explorer = page.locator(".planargeo-explorer").filter(has_text="Projective playground").first
         explorer.wait_for(state="visible", timeout=120_000)
         # every cell has run once the kernel is idle and no cell shows [*]
         page.wait_for_function(
@@ -104,7 +132,13 @@ def test_tour_slider_updates_readout_and_figure(lab, browser):
         v0 = _number(value_box.inner_text())
         before = _wait_for(lambda: _readout(page, explorer), 30, "the readout")
         assert label in before, f"readout {before} has no row for slider {label!r}"
+        assert label == "P x", f"the first slider is {label!r}"
         assert abs(_number(before[label]) - v0) <= 1e-3 * max(1.0, abs(v0))
+        conic = explorer.locator(".widget-dropdown select").first.input_value()
+        assert conic in ("ellipse", "circle"), conic
+        DIST = "polar of P: distance to origin"
+        d0 = _polar_distance(_slider_values(explorer), conic)
+        assert _number(before[DIST]) == pytest.approx(d0, rel=2e-3)
         png_before = figure.screenshot()
         page.screenshot(path=str(ARTIFACTS / "before.png"))
 
@@ -113,14 +147,28 @@ def test_tour_slider_updates_readout_and_figure(lab, browser):
         for _ in range(PRESSES):
             page.keyboard.press("ArrowRight")
             time.sleep(0.05)
-        v1 = _wait_for(lambda: (lambda v: v if v != v0 else None)(_number(value_box.inner_text())),
-                       10, "the slider to move")
+        _wait_for(lambda: _number(value_box.inner_text()) != v0, 10, "the slider to move")
+
+        def settled():
+            a = _number(value_box.inner_text())
+            time.sleep(0.5)
+            return a if _number(value_box.inner_text()) == a else None
+
+        v1 = _wait_for(settled, 10, "the slider to settle")
         assert v1 > v0
         # the readout shows the FINAL slider value (intermediate updates may be coalesced)
         after = _wait_for(
             lambda: (lambda r: r if abs(_number(r[label]) - v1) <= 1e-3 * max(1.0, abs(v1)) else None)(
                 _readout(page, explorer)), 60, f"readout {label!r} to reach {v1}")
         assert after != before
+        # a computed row follows: the polar's distance for the final P, by hand
+        v_after = _slider_values(explorer)
+        assert v_after["P x"] == pytest.approx(v1)
+        d1 = _polar_distance(v_after, conic)
+        assert abs(d1 - d0) > 0.01 * d0, "the step did not move the polar enough to tell"
+        after = _wait_for(
+            lambda: (lambda r: r if abs(_number(r[DIST]) - d1) <= 2e-3 * d1 else None)(
+                _readout(page, explorer)), 30, f"readout {DIST!r} to reach {d1:.4g}")
         time.sleep(1.0)  # let the image widget repaint
         png_after = figure.screenshot()
         a, b = _pixels(png_before), _pixels(png_after)
