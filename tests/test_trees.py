@@ -56,3 +56,94 @@ def test_bad_parameters(name):
         scenes.build(name, length=-1.0)
     with pytest.raises(SceneError, match="has no parameter 'colour'"):
         scenes.build(name, colour="red")
+
+
+def _fig91_parents():
+    # Fig 9.1 read off by hand (0-based): 1 root; 2-3-4 and 5-6-7 from 1's tip; 8 from 6; 9 from 1
+    return [-1, 0, 1, 2, 0, 4, 5, 5, 0]
+
+
+def test_tree_articulation_matrix_is_the_finite_series_on_independent_articulated_inertias():
+    """``L = (1 - Cᵀ R Uᵀ)⁻¹`` (9.31) against its finite series (9.34), ``Σ_k (Cᵀ P)^k``, built here.
+
+    ``C`` from the hand-read parents of Fig 9.1, ``P_i = R_i U_iᵀ = 1 - T_i s_iᵀ`` (7.8) with
+    ``T_i = A_i s_i / (s_iᵀ A_i s_i)`` from the articulated inertias of the recursive
+    articulated-body algorithm (:func:`planargeo.algorithms.aba.articulated_body`, an
+    independent code path from the stacked solution's).
+    """
+    from planargeo.algorithms.aba import articulated_body
+
+    res = scenes.build("tree", speed=2.0)
+    L = np.array(res.quantities["L"])
+    assert L.shape == (27, 27)
+    m, q, qd = res.model, np.array(res.state["q"]), np.array(res.state["qd"])
+    w = articulated_body(m, q, qd, np.zeros(9))
+    d = kinematics(m, q)
+    C = np.zeros((9, 9))
+    for i, p in enumerate(_fig91_parents()):
+        if p >= 0:
+            C[i, p] = 1.0
+    C3 = np.kron(C, np.eye(3))
+    P = np.zeros((27, 27))
+    for i in range(9):
+        s = d.S[:, i:i + 1]
+        A = w.A[i]
+        P[3 * i:3 * i + 3, 3 * i:3 * i + 3] = np.eye(3) - (A @ s) @ s.T / (s.T @ A @ s)[0, 0]
+    X = C3.T @ P
+    series, term = np.eye(27), np.eye(27)
+    for _ in range(4):                     # depth of Fig 9.1 is 4 (1-2-3-4): X⁴ = 0
+        term = term @ X
+        series = series + term
+    assert not (term @ X).any() or np.abs(term @ X).max() < 1e-12
+    np.testing.assert_allclose(L, series, atol=1e-12)
+    # body 4's articulated load reaches bodies 3, 2, 1 and no other (the block structure of L)
+    reach = [bool(np.abs(L[3 * j:3 * j + 3, 9:12]).max() > 0) for j in range(9)]
+    assert reach == [True, True, True, True, False, False, False, False, False]
+
+
+def test_tree_mobilities_are_those_of_the_tree_with_descendants_cut_off():
+    """``Λ_i⁻¹`` and ``b_i`` of the direct solution 9.48, against the dense reference.
+
+    Cut off body ``i``'s descendants: in the remaining tree ``Λ_i⁻¹ = J_i H⁻¹ J_iᵀ``
+    (``H`` its CRBA mass matrix, ``J_i`` body ``i``'s Jacobian) and ``b_i`` is body
+    ``i``'s acceleration when nothing else acts: the dense ``q̈ = H⁻¹(τ - C)`` of the cut
+    tree (CRBA) propagated along the root path, ``a_i = Σ_k (s_k q̈_k + κ_k)`` (3.42).
+    """
+    from planargeo.algorithms.crba import mass_matrix
+    from planargeo.model import Model
+
+    res = scenes.build("tree", speed=1.5, g=9.81)
+    Lam, b = np.array(res.quantities["Lambda_inv"]), np.array(res.quantities["b"])
+    m, q, qd = res.model, np.array(res.state["q"]), np.array(res.state["qd"])
+    parents = _fig91_parents()
+
+    def descendants(i):
+        out = set()
+        for k in range(9):
+            j = k
+            while j >= 0:
+                if parents[j] == i:
+                    out.add(k)
+                    break
+                j = parents[j]
+        return out
+
+    for i in range(9):
+        keep = [k for k in range(9) if k not in descendants(i)]
+        idx = {k: n for n, k in enumerate(keep)}
+        sub = Model([m.bodies[k] for k in keep], [m.joints[k] for k in keep],
+                    [idx[parents[k]] if parents[k] >= 0 else -1 for k in keep], gravity=m.gravity)
+        qs, qds = q[keep], qd[keep]
+        H = mass_matrix(sub, qs)
+        qdd = forward_dynamics_crba(sub, qs, qds, np.zeros(len(keep)))
+        d = kinematics(sub, qs, qds)
+        Ji = d.jacobian(idx[i])
+        np.testing.assert_allclose(Lam[i], Ji @ np.linalg.solve(H, Ji.T), atol=1e-12, err_msg=f"Lambda_inv {i}")
+        # body i's acceleration: along its root path, a = a_parent + s q̈ + κ (3.42; κ from the kinematics)
+        a, path, j = np.zeros(3), [], idx[i]
+        while j >= 0:
+            path.append(j)
+            j = sub.parents[j]
+        for j in reversed(path):
+            a = a + d.S[:, j] * qdd[j] + d.kappa[j]
+        np.testing.assert_allclose(b[i], a, atol=1e-11, err_msg=f"b {i}")

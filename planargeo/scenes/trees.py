@@ -11,7 +11,11 @@ closes both loops there with pin contacts (Fig 9.2: ``G`` of 9.49), leaving
 9 - 2·2 = 5 degrees of freedom.
 
 Quantities (0-based body order, global origin): ``C`` (9.1), ``Dinv`` (9.13),
-``qdd`` (9.39/9.43), ``qdd_direct`` (9.48), ``a`` (body accelerations); for the
+``L`` (the 27×27 articulation matrix ``(1 - Cᵀ R Uᵀ)⁻¹`` of 9.31 on the 3×3-block
+adjacency), ``Lambda_inv`` (nine 3×3 articulated mobilities ``Λ_i⁻¹``, each body
+with its descendants cut off, 7.37) and ``b`` (nine bias accelerations ``b_i``),
+the inputs of the direct solution 9.48, ``qdd`` (9.39/9.43), ``qdd_direct``
+(9.48), ``a`` (body accelerations), ``f`` (joint forces); for the
 constrained tree also ``G`` (9.49), ``Upsilon`` (9.51), ``u``, ``F`` (contact
 forces, one wrench per contact, 9.71), ``xi`` and ``cond``.
 
@@ -76,7 +80,8 @@ def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float =
     a_direct = direct_accelerations(sol, Lam, b)
     qdd_direct = sol.T.T @ (a_direct - sol.C @ a_direct - sol.kappa)
     C = adjacency(model.parents)
-    quantities = {"C": _tolist(C), "Dinv": _tolist(trunk(C)), "qdd": _tolist(sol.qdd),
+    quantities = {"C": _tolist(C), "Dinv": _tolist(trunk(C)), "L": _tolist(sol.L),
+                  "Lambda_inv": _tolist(np.stack(Lam)), "b": _tolist(np.stack(b)), "qdd": _tolist(sol.qdd),
                   "qdd_direct": _tolist(qdd_direct), "a": _tolist(sol.a.reshape(9, 3)),
                   "f": _tolist(sol.f.reshape(9, 3))}
     return SceneResult("tree", dict(mass=mass, length=length, g=g, speed=speed), model,
