@@ -27,12 +27,12 @@ charts in ``--gallery`` (default ``gallery/benchmarks``):
 
 Timings are in *thread CPU time* (``time.thread_time``: time the process
 spends descheduled on a busy machine does not count).  The headline ratios are
-measured by interleaving: ``aba``, ``pin.aba`` and ``mj_forward`` alternate in
-short blocks over many rounds, and the tables give the ratio of the best blocks
-and the median of the per-round ratios (both see the same machine state).  The
-other methods: best of several repeats of the mean over many calls; a method
-slower than a fifth of the budget per call is timed over 1-3 single calls (and
-the table says so).  BLAS runs single-threaded (as Pinocchio and MuJoCo do):
+measured by interleaving: every method, ``pin.aba`` and ``mj_forward`` alternate
+in short blocks over many rounds, and the tables give the ratio of the best
+blocks and the median of the per-round ratios (both see the same machine state).
+A method too slow to share the rounds (one call above ``2 budget / rounds``) is
+timed on its own: best of several repeats of the mean over many calls, or over
+1-3 single calls when slower than a fifth of the budget (the table says so).  BLAS runs single-threaded (as Pinocchio and MuJoCo do):
 the command re-runs itself in a fresh process with ``OPENBLAS_NUM_THREADS=1``
 (and OMP/MKL) if needed.  Progress goes to stderr, one line per step.
 This module imports matplotlib (charts); the math modules never do.
@@ -374,16 +374,23 @@ def _fmt_us(t):
     return "—" if t is None or not np.isfinite(t) else (f"{t * 1e6:.1f}" if t < 1e-2 else f"{t * 1e6:.0f}")
 
 
-def _interleaved(m, budget, seed, rounds=40, label=""):
-    """``aba``, ``pin.aba`` and ``mj_forward`` on one model, interleaved: ``(best times, ratio stats)``.
+def _interleaved(m, budget, seed, rounds=40, label="", extra=None):
+    """``aba``, ``pin.aba``, ``mj_forward`` (and ``extra``) on one model, interleaved.
 
-    ``ratios`` maps ``"pinocchio"``/``"mujoco"`` to the stats of ``aba / peer``
-    and ``"mujoco/pinocchio"`` to ``mj_forward / pin.aba``.
+    Returns ``(best times, ratio stats, median times)``.  ``extra`` maps more
+    method names to ``fn(model, q, qd, tau)``, timed in the same rounds on the
+    same state.  ``ratios`` maps ``"pinocchio"``/``"mujoco"`` to the stats of
+    ``aba / peer``, ``"mujoco/pinocchio"`` to ``mj_forward / pin.aba`` and, with
+    Pinocchio present, ``"<name>/pinocchio"`` to ``name / pin.aba`` for every
+    planargeo method timed.
     """
     from .algorithms.aba import forward_dynamics
 
     q, qd, tau = _state(m.nq, seed=seed)
     fns = {"aba": lambda: forward_dynamics(m, q, qd, tau)}
+    for name, fn in (extra or {}).items():
+        if name != "aba":
+            fns[name] = (lambda fn=fn: fn(m, q, qd, tau))
     for name, (_, make) in _peers(m).items():
         fns[name] = make(q, qd, tau)
     for f in fns.values():       # warm-up (the plan is compiled on first or second use)
@@ -394,14 +401,23 @@ def _interleaved(m, budget, seed, rounds=40, label=""):
     ratios = {p: ratio_stats(t, "aba", p) for p in PEERS if p in t}
     if "pinocchio" in t and "mujoco" in t:
         ratios["mujoco/pinocchio"] = ratio_stats(t, "mujoco", "pinocchio")
-    return {k: float(min(v)) for k, v in t.items()}, ratios
+    if "pinocchio" in t:
+        for name in fns:
+            if name not in PEERS:
+                ratios[f"{name}/pinocchio"] = ratio_stats(t, name, "pinocchio")
+    return ({k: float(min(v)) for k, v in t.items()}, ratios,
+            {k: float(np.median(v)) for k, v in t.items()})
 
 
 def run_single(sizes, budget, rounds=40):
     """Time per call (s) of every method and peer for each N; their errors against the reference, CRBA and Pinocchio.
 
-    ``aba``, ``pinocchio`` and ``mujoco`` are timed interleaved
-    (:func:`time_interleaved`); ``ratio`` / ``ratio_mj`` hold the best and
+    Every method and both peers are timed interleaved (:func:`time_interleaved`)
+    in the same rounds on the same state, except a method whose single call
+    takes more than ``2 budget / rounds`` (listed in ``alone``: timed on its own,
+    :func:`_time_method`); ``times`` are the best blocks, ``times_median`` the
+    medians, ``ratio_pin_all`` maps every interleaved method to the stats of
+    ``method / pin.aba``.  ``ratio`` / ``ratio_mj`` hold the best and
     median ratios ``aba / pin.aba`` / ``aba / mj_forward`` on ``chain_model(N)``,
     ``ratio_random`` / ``ratio_mj_random`` on ``random_model(N)`` (no zero
     placements or offsets), ``ratio_mj_pin`` is ``mj_forward / pin.aba``.
@@ -421,18 +437,9 @@ def run_single(sizes, budget, rounds=40):
         outs = {}
         for name, (call, _) in peers.items():
             outs[name] = call(q, qd, tau)
-        if peers:
-            t, ratios = _interleaved(m, budget, N, rounds, "(chain_model)")
-            row["times"].update(t)
-            t_aba = t["aba"]
-            tr, ratios_r = _interleaved(random_model(N, seed=N), budget, N, rounds, "(random_model)")
-            row["times_random"] = tr
-            if "pinocchio" in ratios:
-                row["ratio"], row["ratio_random"] = ratios["pinocchio"], ratios_r["pinocchio"]
-            if "mujoco" in ratios:
-                row["ratio_mj"], row["ratio_mj_random"] = ratios["mujoco"], ratios_r["mujoco"]
-            if "mujoco/pinocchio" in ratios:
-                row["ratio_mj_pin"] = ratios["mujoco/pinocchio"]
+        # every method that runs: fast ones join the interleaved rounds with the peers, a method whose
+        # single call exceeds 2 budget / rounds (it would dominate the rounds) is timed on its own
+        fast, slow = {}, {}
         for name, fn in methods.items():
             try:
                 outs[name] = np.asarray(fn(m, q, qd, tau))
@@ -440,13 +447,32 @@ def run_single(sizes, budget, rounds=40):
                 row["times"][name] = float("nan")
                 row["err_crba"][name] = row["err_ref"][name] = f"{type(exc).__name__}"
                 continue
-            if name == "aba" and peers:
-                row["times"][name] = t_aba
-            else:
-                _progress(f"[single] N={N} {name} ...")
-                row["times"][name], calls = _time_method(lambda: fn(m, q, qd, tau), budget)
-                if calls is not None:
-                    row["calls"][name] = calls
+            fn(m, q, qd, tau)
+            t0 = time.thread_time()
+            fn(m, q, qd, tau)
+            (fast if name == "aba" or time.thread_time() - t0 <= 2 * budget / rounds else slow)[name] = fn
+        if peers:
+            t, ratios, tmed = _interleaved(m, budget, N, rounds, "(chain_model)", extra=fast)
+            row["times"].update(t)
+            row["times_median"] = tmed
+            row["ratio_pin_all"] = {k.split("/")[0]: v for k, v in ratios.items()
+                                    if k.endswith("/pinocchio") and k.split("/")[0] in methods}
+            tr, ratios_r, _ = _interleaved(random_model(N, seed=N), budget, N, rounds, "(random_model)")
+            row["times_random"] = tr
+            if "pinocchio" in ratios:
+                row["ratio"], row["ratio_random"] = ratios["pinocchio"], ratios_r["pinocchio"]
+            if "mujoco" in ratios:
+                row["ratio_mj"], row["ratio_mj_random"] = ratios["mujoco"], ratios_r["mujoco"]
+            if "mujoco/pinocchio" in ratios:
+                row["ratio_mj_pin"] = ratios["mujoco/pinocchio"]
+        else:
+            slow.update(fast)
+        for name, fn in slow.items():
+            _progress(f"[single] N={N} {name} (alone: too slow to interleave) ...")
+            row["times"][name], calls = _time_method(lambda fn=fn: fn(m, q, qd, tau), budget)
+            row.setdefault("alone", []).append(name)
+            if calls is not None:
+                row["calls"][name] = calls
         pin_ref = outs.get("pinocchio")
         for name, out in outs.items():
             if qdd_ref is not None:
@@ -567,19 +593,26 @@ def _time_table(rows) -> list:
     peers = [p for p in PEERS if p in rows[0]["times"]]
     cols = ["N"] + [f"{_peer_label(p)} µs" for p in peers] + [f"{n} µs" for n in names]
     cols += [f"{n} / pin" for n in names] if "pinocchio" in peers else []
-    lines = ["| " + " | ".join(cols) + " |", "|" + "---:|" * len(cols)]
+    lines = ["Every method and both peers alternate in short blocks over the same rounds on the same state "
+             "(thread CPU time): **µs** is the best block, **/ pin** the median of the per-round ratios to "
+             "`pin.aba`. `†`: a method too slow to share the rounds (one call > 2 budget / rounds), timed on its "
+             "own (best of several repeats; its ratio is best / best).", "",
+             "| " + " | ".join(cols) + " |", "|" + "---:|" * len(cols)]
     slow = False
     for r in rows:
         t = r["times"]
+        alone = r.get("alone", [])
         cells = [str(r["N"])] + [_fmt_us(t[p]) for p in peers]
         for n in names:
-            c = _fmt_us(t[n])
+            c = _fmt_us(t[n]) + (" †" if n in alone else "")
             if n in r.get("calls", {}):
                 c += f" ({r['calls'][n]}×1)"
                 slow = True
             cells.append(c)
         if "pinocchio" in peers:
-            cells += [_x(t[n] / t["pinocchio"]) if np.isfinite(t[n]) else "—" for n in names]
+            rp = r.get("ratio_pin_all", {})
+            cells += [(_x(rp[n]["median"]) if n in rp else _x(t[n] / t["pinocchio"]) + (" †" if n in alone else ""))
+                      if np.isfinite(t[n]) else "—" for n in names]
         lines.append("| " + " | ".join(cells) + " |")
     if slow:
         lines += ["", "`(k×1)`: slower than a fifth of the budget per call, timed as the best of k single calls."]
