@@ -106,3 +106,18 @@ def test_crank_moves_reuse_the_model_and_pole_toggles_only_redraw(ex):
     ex.controls["rod length"].value = 4.0                       # a new model
     assert ex.n_computes == n + 1 and len(ex._models) == 2
     assert ex.readout_values["piston height h"] == pytest.approx(height(psi, 4.0), rel=1e-9)
+
+
+def test_crank_changes_build_no_model(ex, monkeypatch):
+    import planargeo.widgets.slider_crank as mod
+
+    built = []
+    real = mod.slider_crank_model
+    monkeypatch.setattr(mod, "slider_crank_model", lambda **k: built.append(k) or real(**k))
+    for deg in (10.0, 20.0, 30.0):
+        ex.controls["crank angle (deg)"].value = deg
+    ex.controls["crank speed"].value = 5.0
+    ex.controls["drive"].value = "constant-speed"
+    assert built == []
+    ex.controls["gravity"].value = 3.0
+    assert len(built) == 1 and built[0]["g"] == 3.0 and built[0]["l"] == 5.0
