@@ -274,3 +274,10 @@ def test_export_svg_every_explorer_writes_the_current_view(name, tmp_path):
     second = ex.last_export
     assert second != first and second.read_text() != first.read_text()
     assert len(list(tmp_path.glob(f"planargeo-{ex.slug}-*.svg"))) == 3
+
+
+def test_display_only_toggle_repaints_the_image():
+    t = ToyOverlay(display="image")
+    png = t.image.value
+    t.controls["show"].value = False
+    assert t.n_computes == 1 and t.image.value[:8] == b"\x89PNG\r\n\x1a\n" and t.image.value != png
