@@ -209,6 +209,47 @@ def test_list_over_subprocess():
     assert listing["car"] == {"m": 1200.0, "rho": 1.2, "L": 2.6, "d": 8.0, "eps": 0.45, "omega": 0.5, "F_A": 2000.0}
 
 
+@pytest.mark.parametrize("psi", ["0", "3.141592653589793"])
+def test_folded_slider_crank_reports_the_singular_contact_matrix_with_its_condition(psi):
+    """l = r at a dead centre (ψ = 0 or π): the piston pin lies on the crank pivot.
+
+    Exit 1 with one line naming the singular configuration and carrying the condition number of
+    the contact matrix (past the loop solver's limit), not the velocity closure's message.
+    """
+    r = cli("slider-crank", "--set", "l=2.29", "--set", f"psi={psi}")
+    assert r.returncode == 1 and r.stdout == ""
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1 and "Traceback" not in r.stderr
+    line = lines[0]
+    assert line.startswith("planargeo report: error: singular configuration: slider-crank at a dead centre "
+                           "with the piston pin on the crank pivot")
+    assert "the contact matrix B^T G Λ^-1 G^T B of the piston slider is singular" in line
+    cond = float(line.rsplit("(condition number ", 1)[1].rstrip(")"))
+    assert cond > 1e10
+
+
+def test_folded_slider_crank_in_process_error_and_independent_condition():
+    """The named error carries the contact matrix's condition; ``J_c H⁻¹ J_cᵀ`` (dense, by hand) is singular too."""
+    from planargeo import scenes
+    from planargeo.algorithms.crba import mass_matrix
+    from planargeo.algorithms.loops import SINGULAR_COND
+    from planargeo.scenes.slider_crank import slider_crank_model
+    from planargeo.simulate_loops import closure_jacobian
+
+    with pytest.raises(SingularConfigurationError, match="piston pin on the crank pivot") as e:
+        scenes.build("slider-crank", l=R_, psi=0.0)
+    assert e.value.cond > SINGULAR_COND
+    # the folded pose: crank along +x, rod back along -x to the pivot, piston upright
+    model, q = slider_crank_model(l=R_), np.array([0.0, np.pi, -np.pi / 2])
+    Jc = closure_jacobian(model, q)
+    H = mass_matrix(model, q)
+    assert np.linalg.cond(Jc @ np.linalg.solve(H, Jc.T)) > 1e10
+    # a rod too short for the pivot but horizontal at psi = arccos(l / r) is only a kinematic limit:
+    # the contact matrix is regular there and the velocity closure's error stands
+    with pytest.raises(SingularConfigurationError, match="theta_dot undetermined") as e:
+        scenes.build("slider-crank", l=2.0, psi=float(np.arccos(2.0 / R_)))
+
+
 @pytest.mark.parametrize("args, msg", [
     (("no-such-scene",), "scene must be one of"),
     (("chain", "--set", "links=3"), "scene 'chain' has no parameter 'links'"),

@@ -125,12 +125,24 @@ def slider_crank(psi: float = 0.4, psidot: float = 20.0, m1: float = 0.40, m2: f
         ``"free"``: no crank torque; ``"constant-speed"``: the crank is driven at
         constant speed (``ψ̈ = 0``), the torque needed is ``tau_drive``.
     """
-    from ..algorithms.loops import loop_solve
+    from ..algorithms.loops import SINGULAR_COND, loop_condition, loop_solve
 
     psi, psidot = check_param("psi", psi), check_param("psidot", psidot)
     drive = check_param("drive", drive, "choice", choices=("free", "constant-speed"))
     model = slider_crank_model(m1, m2, m3, r, l, t, g)
-    q, qd = slider_crank_state(psi, psidot, r, l)
+    try:
+        q, qd = slider_crank_state(psi, psidot, r, l)
+    except SingularConfigurationError:
+        # the rod lies along the horizontal: if the piston pin is then on the crank pivot (l = r at a dead
+        # centre, the folded crank), the contact matrix is singular too: report that, with its condition
+        beta = 0.0 if -r * np.cos(psi) / l > 0 else np.pi
+        cond = loop_condition(model, [psi, beta - psi, np.pi / 2 - beta])
+        if not cond <= SINGULAR_COND:
+            raise SingularConfigurationError(
+                f"singular configuration: slider-crank at a dead centre with the piston pin on the crank pivot "
+                f"(l = r = {l:g}, psi = {psi:g}): the contact matrix B^T G Λ^-1 G^T B of the piston slider is "
+                f"singular and theta_dot undetermined", cond) from None
+        raise
     tau = np.zeros(3)
     sol = loop_solve(model, q, qd, tau, prescribed={0: 0.0} if drive == "constant-speed" else None)
     v = sol.data.v
