@@ -142,7 +142,8 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
         constant speed, ``{0: 0.0}``); the torques they need are returned in
         ``tau_drive``.  Each drive is treated as one more contact between the
         body and its parent with ``B = s (s^T s)^{-1}`` and
-        ``ν = κ_i + s q̈_prescribed``.
+        ``ν = κ_i + s q̈_prescribed``; the returned ``qdd`` of a driven joint
+        is the prescribed value exactly.
 
     Returns
     -------
@@ -227,7 +228,7 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
             G_rows.append(row)
             B_blocks.append(si @ np.linalg.inv(si.T @ si))
             nu_rows.append(data.kappa[i] + si @ val)
-            drive_cols.append((i, k))
+            drive_cols.append((i, k, val))
     Gall = np.vstack(G_rows)
     nb = [b.shape[1] for b in B_blocks]
     Ball = np.zeros((Gall.shape[0], sum(nb)))
@@ -266,8 +267,11 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
     sol.qdd = tree.T.T @ (a - tree.C @ a - tree.kappa)
     tau_drive = np.array(tau, dtype=float)
     off = nbc
-    for i, k in drive_cols:
+    for i, k, val in drive_cols:
         tau_drive[model.q_slice(i)] -= xi_all[off:off + k]
+        # a driven coordinate's acceleration is the drive's, exactly (the solve above reproduces it only
+        # to rounding, e.g. -5e-13 for the constant-speed crank); a and F keep the solve's values
+        sol.qdd[model.q_slice(i)] = val
         off += k
     sol.tau_drive = tau_drive
     sol.data = data
