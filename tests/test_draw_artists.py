@@ -368,3 +368,19 @@ def test_point_beyond_float_range_draws_as_ideal(ax):
     ideal = plot_point([1e200, 1.0, 0.0], ax)
     ax.figure.canvas.draw()
     np.testing.assert_allclose(art._arrow.get_path().vertices, ideal._arrow.get_path().vertices)
+
+
+def test_line_arrow_ends_and_label_at_anchor(ax):
+    # 2 N along +y on the line x = 1.5 (4.27: tz + y fx - x fy = 0 -> tz = 3); arrow 0.25/N at y = 1
+    art = plot_line([0.0, 2.0, 3.0], ax, scale=0.25, anchor=[7.0, 1.0], text="f", text_at="anchor",
+                    text_offset=(0.0, 0.0))
+    tail, tip = art.get_arrow()
+    np.testing.assert_allclose(tail, [1.5, 0.75])
+    np.testing.assert_allclose(tip, [1.5, 1.25])
+    ax.figure.canvas.draw()
+    # the label sits at the arrow's middle (1.5, 1), not at its tip
+    np.testing.assert_allclose(art._text.get_position(), ax.transData.transform([1.5, 1.0]))
+    assert plot_line([0.0, 2.0, 3.0], ax, scale=None, anchor=[0, 0]).get_arrow() is None
+    assert plot_line([0.0, 0.0, 1.0], ax, anchor=[0, 0]).get_arrow() is None     # a couple
+    with pytest.raises(InputError, match="text_at"):
+        plot_line([0.0, 2.0, 3.0], ax, text_at="middle")

@@ -294,3 +294,27 @@ def test_chain_kinematics_figures_match_4_48_and_4_54():
     assert np.hypot(*w.kappa[i][:2]) == pytest.approx(abs(w_prev * qd * k))   # (4.53)
     combo = w.s(i)[:, 0] * qdd + w.kappa[i]
     assert np.linalg.norm(_xy(combo) - J) == pytest.approx(abs(w_prev * qd * k / qdd))  # (4.54)
+
+
+def test_joint_split_arrows_slide_off_the_bodies(ax):
+    """With ``avoid`` every arrow stays on its own line and clear of the bodies (hand geometry)."""
+    from shapely.geometry import LineString
+
+    from planargeo.joints import revolute
+    from planargeo.screws import inertia_matrix
+
+    j = revolute([0.0, 0.0])
+    A = inertia_matrix(2.0, [1.0, 0.0], 0.3)
+    f = np.array([1.0, 1.0, 0.0])              # 1 N along (1, 1) through the joint (4.27)
+    body = link_polygon([-1.0, -1.0], [1.0, 1.0], 0.4)    # a link lying along that line
+    out, (Q, mu, act, rea) = draw_joint_split(j.s, j.R, A, f, ax, anchor=[0.0, 0.0], scale=0.5,
+                                              avoid=body, clearance=0.1)
+    tail, tip = out["f"].get_arrow()
+    for p in (tail, tip):                      # on the line y = x
+        assert p[1] == pytest.approx(p[0])
+    assert np.hypot(*(tip - tail)) == pytest.approx(0.5 * np.sqrt(2))
+    assert LineString([tail, tip]).distance(body) >= 0.1 - 1e-9
+    for k in ("active", "reaction"):
+        seg = out[k].get_arrow()
+        if seg is not None:
+            assert LineString(seg).distance(body) >= 0.1 - 1e-9

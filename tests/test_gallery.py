@@ -147,3 +147,12 @@ def test_readme_indexes_benchmark_charts(tmp_path, small_registry):
 def test_readme_without_benchmarks_has_no_benchmark_section(tmp_path, small_registry):
     text = gallery.generate(tmp_path)["README.md"].decode()
     assert "Benchmark charts" not in text
+
+
+def test_load_all_fails_loudly_on_a_broken_module(monkeypatch):
+    """A figure module that cannot be imported is an error, not a silently missing figure."""
+    from planargeo.draw import figures
+
+    monkeypatch.setattr(figures, "MODULES", figures.MODULES + ("no_such_chapter",))
+    with pytest.raises(ModuleNotFoundError, match="no_such_chapter"):
+        figures.load_all()

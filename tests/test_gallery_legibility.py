@@ -24,9 +24,6 @@ TOL = 1.0  # pixels
 
 SPECS = load_all()
 
-#: Figures of chapters 6, 7, 9 and the extras still being fixed (by another change).
-PENDING = {"fig6_1", "extra_joint_splits"}
-
 
 def _drawn_texts(fig, monkeypatch):
     """(text, window extent) of every non-empty Text drawn while rendering ``fig``."""
@@ -45,9 +42,7 @@ def _drawn_texts(fig, monkeypatch):
 
 
 def _params():
-    return [pytest.param(name, id=name,
-                         marks=[pytest.mark.xfail(reason="G2 in progress")] if name in PENDING else [])
-            for name in SPECS]
+    return [pytest.param(name, id=name) for name in SPECS]
 
 
 def test_overlap_measure_detects_overlap():

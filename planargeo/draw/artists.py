@@ -194,6 +194,13 @@ class _Base(martist.Artist):
         self._text.set_text("" if text is None else str(text))
         self.stale = True
 
+    def set_text_offset(self, offset):
+        """Offset (dx, dy) in points of the label from its reference point."""
+        self._text_offset = np.asarray(offset, dtype=float)
+        if hasattr(self, "_auto_offset"):
+            self._auto_offset = False
+        self.stale = True
+
     def set_text_alignment(self, ha="left", va="bottom"):
         """Alignment of the label at its offset point (e.g. ``ha="right"`` for a label on the left)."""
         self._ha, self._va = ha, va
@@ -415,11 +422,15 @@ class LineArtist(_Base):
         ("upper right", "upper left", "lower right", "lower left").
     couple_scale : float
         Couple glyph radius in points per unit moment (clamped to [5, 18]).
+    text_at : {"tip", "anchor"}
+        Where the label's ``text_offset`` (points) starts: the arrow's tip
+        (default) or its middle, the anchor (a label beside the arrow, which
+        stays in view whenever the arrow's middle does).
     """
 
     def __init__(self, line, *, role="wrench", scale=1.0, anchor=None, text=None,
                  text_offset=(6.0, 6.0), corner="upper right", couple_scale=8.0,
-                 color=None, linewidth=None, linestyle=None, zorder=3):
+                 color=None, linewidth=None, linestyle=None, zorder=3, text_at="tip"):
         super().__init__(text, text_offset, zorder)
         st = _style(role)
         self._color = color or st["color"]
@@ -427,6 +438,9 @@ class LineArtist(_Base):
         self._scale = None if scale is None else float(scale)
         self._anchor = None if anchor is None else np.asarray(anchor, dtype=float)
         self._corner = corner
+        if text_at not in ("tip", "anchor"):
+            raise InputError(f"text_at must be 'tip' or 'anchor', got {text_at!r}")
+        self._text_at = text_at
         self._couple_scale = float(couple_scale)
         self._line = self._add_child(Line2D([0, 0], [0, 0], color=self._color,
                                             linewidth=linewidth or st["linewidth"],
@@ -464,6 +478,24 @@ class LineArtist(_Base):
 
     def get_line(self) -> np.ndarray:
         return self._l.copy()
+
+    def get_arrow(self):
+        """The force arrow's ``(tail, tip)`` in data coordinates, or None.
+
+        None when no arrow is drawn (``scale`` None, the line at infinity) or
+        when it sits at the view centre's foot (no ``anchor``: known only at draw
+        time).  With an anchor it needs no axes, so a figure can fit its view to
+        the arrow ends before drawing.
+        """
+        fx, fy, tz = self._l
+        if self._scale is None or self._anchor is None or (fx == 0.0 and fy == 0.0):
+            return None
+        F = np.hypot(fx, fy)
+        e = np.array([fx, fy]) / F
+        p0 = np.array([fy * tz, -fx * tz]) / (F * F)
+        mid = p0 + e * ((self._anchor - p0) @ e)
+        half = 0.5 * self._scale * F * e
+        return mid - half, mid + half
 
     def get_segment(self):
         """The clipped endpoints ``(2, 2)`` in the current view (None if not visible)."""
@@ -517,7 +549,8 @@ class LineArtist(_Base):
             tail, tip = anchor - e * L / 2, anchor + e * L / 2
             self._arrow.set_positions(tuple(tail), tuple(tip))
             out.append(self._arrow)
-        out += self._place_text(ax.transData.transform(tip), renderer)
+        at = anchor if self._text_at == "anchor" else tip
+        out += self._place_text(ax.transData.transform(at), renderer)
         return out
 
 

@@ -146,11 +146,62 @@ def draw_com(xy, ax=None, *, radius=0.07, zorder=6):
     return out
 
 
-def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None):
+def _seg_dist(c, a, b):
+    """Distance from point ``c`` to the segment ``a b`` (Euclidean)."""
+    d = b - a
+    t = float(np.clip((c - a) @ d / max(d @ d, 1e-300), 0.0, 1.0))
+    return float(np.hypot(*(a + t * d - c)))
+
+
+def _slide_clear(line, L, foot, blocked, clearance):
+    """The arrow middle on ``line`` nearest ``foot`` whose arrow (length ``L``) clears ``blocked``."""
+    from shapely.geometry import LineString
+
+    e = np.array([line[0], line[1]]) / np.hypot(line[0], line[1])
+    if blocked is None or blocked.is_empty:
+        return foot
+    step = max(L, clearance) / 4
+    for k in range(41):                      # 0, +1, -1, +2, -2, ... steps along the line
+        t = (k + 1) // 2 * step * (1 if k % 2 else -1)
+        m = foot + t * e
+        if not LineString([m - e * L / 2, m + e * L / 2]).buffer(clearance).intersects(blocked):
+            return m
+    return foot
+
+
+def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None, gap=5.0,
+                     avoid=None, clearance=0.1):
     """Draw a joint force ``f`` split into active ``T Q`` and reaction ``R μ`` parts (6.38).
 
     ``s``, ``R``: the joint's motion and reaction spaces, ``A``: the inertia
-    (articulated) the decomposition uses.  Returns the artists and the split.
+    (articulated) the decomposition uses.  Each of the three arrows (``f``,
+    ``TQ``, ``Rμ``) sits where its line passes closest to ``anchor`` (e.g. the
+    joint); each label sits beside the middle of its arrow, ``gap`` points off
+    the line, on the side that keeps it farthest from the other two arrows and
+    the labels already placed (so the three labels do not stack).  With
+    ``avoid`` (a shapely geometry, e.g. the drawn bodies) each arrow slides
+    along its line to the nearest place where it stays ``clearance`` (data
+    units) away from ``avoid`` and from the arrows placed before it.  The arrow
+    ends are ``out[k].get_arrow()`` (to fit a view to them).
+    Returns the artists and the split ``(Q, μ, TQ, Rμ)``.
+
+    Examples
+    --------
+    >>> import matplotlib; matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> from planargeo.joints import revolute
+    >>> from planargeo.screws import inertia_matrix
+    >>> j = revolute([0.0, 0.0])
+    >>> A = inertia_matrix(2.0, [1.0, 0.0], 0.3)
+    >>> f = np.array([0.0, 1.0, 2.0])                     # 1 N upwards on the line x = 2 (4.27)
+    >>> fig, ax = plt.subplots()
+    >>> out, (Q, mu, TQ, Rmu) = draw_joint_split(j.s, j.R, A, f, ax, name="1", anchor=[0.0, 0.0])
+    >>> bool(np.allclose(TQ + Rmu, f)), sorted(out)
+    (True, ['active', 'f', 'reaction'])
+    >>> tail, tip = out["f"].get_arrow()                   # centred at the foot of the joint on f
+    >>> tail.round(6).tolist(), tip.round(6).tolist()
+    ([2.0, -0.5], [2.0, 0.5])
+    >>> plt.close(fig)
     """
     from ..subspaces import Decomposition
 
@@ -159,16 +210,55 @@ def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None):
     Q, mu = dec.split_wrench(f)
     active = dec.T @ Q
     react = dec.R @ mu
-    out = {
-        # three labels at one anchor: spread them (right-above, right-below, left-above)
-        "f": plot_line(f, ax, role="wrench", scale=scale, anchor=anchor, text=f"$f_{{{name}}}$",
-                       text_offset=(8, 6)),
-        "active": plot_line(active, ax, role="momentum", scale=scale, anchor=anchor,
-                            text=f"$TQ_{{{name}}}$", linestyle=(0, (6, 2)), text_offset=(8, -16)),
-        "reaction": plot_line(react, ax, role="reaction", scale=scale, anchor=anchor,
-                              text=f"$R\\mu_{{{name}}}$", linestyle=(0, (2, 2)),
-                              text_offset=(-34, 6)),
+    parts = {
+        "f": (f, dict(role="wrench"), f"$f_{{{name}}}$"),
+        "active": (active, dict(role="momentum", linestyle=(0, (6, 2))), f"$TQ_{{{name}}}$"),
+        "reaction": (react, dict(role="reaction", linestyle=(0, (2, 2))), f"$R\\mu_{{{name}}}$"),
     }
+    out = {k: plot_line(line, ax, scale=scale, anchor=anchor, text=txt, text_at="anchor", **kw)
+           for k, (line, kw, txt) in parts.items()}
+    if avoid is not None and anchor is not None:
+        from shapely.geometry import LineString
+
+        blocked = avoid
+        for k, art in out.items():
+            seg = art.get_arrow()
+            if seg is None:
+                continue
+            L = float(np.hypot(*(seg[1] - seg[0])))
+            mid = _slide_clear(art.get_line(), L, 0.5 * (seg[0] + seg[1]), blocked, clearance)
+            art.set_anchor(mid)
+            tail, tip = art.get_arrow()
+            blocked = blocked.union(LineString([tail, tip]))
+    arrows = {k: a.get_arrow() for k, a in out.items()}
+    placed = []                                          # label spots chosen so far (data)
+    for k, art in out.items():
+        seg = arrows[k]
+        if seg is None:                                  # no arrow (a zero part): default spot
+            continue
+        tail, tip = seg
+        mid, d = 0.5 * (tail + tip), tip - tail
+        L = float(np.hypot(*d))
+        if L == 0.0:
+            continue
+        n = np.array([-d[1], d[0]]) / L
+        others = [v for j, v in arrows.items() if j != k and v is not None]
+
+        def clearance(side):
+            c = mid + side * n * 0.25 * L
+            dist = [_seg_dist(c, *o) for o in others] + [float(np.hypot(*(c - p))) for p in placed]
+            if avoid is not None:
+                from shapely.geometry import Point as SPoint
+
+                dist.append(float(avoid.distance(SPoint(*c))))
+            return min(dist) if dist else 0.0
+
+        side = 1.0 if clearance(1.0) >= clearance(-1.0) else -1.0
+        placed.append(mid + side * n * 0.25 * L)
+        u = side * n
+        art.set_text_offset(gap * u)
+        art.set_text_alignment("left" if u[0] > 0.35 else "right" if u[0] < -0.35 else "center",
+                               "bottom" if u[1] > 0.35 else "top" if u[1] < -0.35 else "center")
     return out, (Q, mu, active, react)
 
 

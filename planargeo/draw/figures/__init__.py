@@ -2,8 +2,8 @@
 
 A figure module registers builders with :func:`register`; a builder takes no
 argument and returns a matplotlib Figure drawn from computed quantities.
-Modules whose math has not landed yet fail to import and are skipped by
-:func:`load_all` (their figures are simply not in the registry).
+:func:`load_all` imports every module of :data:`MODULES`; an import error
+propagates (a figure never silently drops out of the gallery).
 """
 from __future__ import annotations
 
@@ -23,7 +23,6 @@ class FigureSpec:
 
 
 REGISTRY: dict[str, FigureSpec] = {}
-SKIPPED: dict[str, str] = {}
 
 
 def register(name: str, caption: str, order: float):
@@ -35,15 +34,12 @@ def register(name: str, caption: str, order: float):
 
 
 def load_all() -> dict[str, FigureSpec]:
-    """Import every figure module; return the registry sorted by thesis order."""
+    """Import every figure module; return the registry sorted by thesis order.
+
+    Any import error propagates: a broken figure module fails the gallery loudly.
+    """
     for mod in MODULES:
-        try:
-            importlib.import_module(f"{__name__}.{mod}")
-        except ModuleNotFoundError as exc:  # math not landed yet: skip that module's figures
-            if exc.name and exc.name.startswith("planargeo"):
-                SKIPPED[mod] = str(exc)
-            else:
-                raise
+        importlib.import_module(f"{__name__}.{mod}")
     return dict(sorted(REGISTRY.items(), key=lambda kv: (kv[1].order, kv[0])))
 
 

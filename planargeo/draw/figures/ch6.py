@@ -53,7 +53,9 @@ def fig6_1():
     s = j.s[:, 0]
     T = I @ s
     R1, R2 = j.R[:, 0], j.R[:, 1]
-    plot_point(s, ax, glyph=False, text="$s = I^{-1}T$", text_offset=(-54, 6))
+    # the joint's label below-left of the pin, right-aligned so it grows into the view
+    plot_point(s, ax, glyph=False, text="$s = I^{-1}T$", text_offset=(-5, -4)).set_text_alignment(
+        "right", "top")
     pts = [to_xy(percussion_pole(I, R)) for R in (R1, R2)]
     lo = min(-0.5, pts[0][1] - 2.0)
     plot_line(T, ax, role="momentum", scale=None, text="$T = Is$", anchor=_on_line(T, lo + 0.25),

@@ -42,25 +42,54 @@ def fig9_1():
           "the tree's full stacked mobility Λ⁻¹ that (9.65)–(9.73) must use (the printed block-diagonal "
           "Λ⁻¹ gets them 9 % wrong; docs/errata.md, chapter 9 item 6).", 9.02)
 def fig9_2():
+    from shapely.geometry import LineString, Point as SPoint
+    from shapely.ops import unary_union
+
     res = build_scene("constrained-tree")
     m = res.model
     d = kinematics(m, res.state["q"], np.asarray(res.state["qd"]))
     fig, ax = new_figure(3.4, 3.0)
-    arts = draw_model(m, d, ax, width=0.14, show_com=False, names=[str(k + 1) for k in range(9)])
+    arts = draw_model(m, d, ax, width=0.14, show_com=False, labels=False)
+    bodies = unary_union(arts["shapes"])
     F = np.asarray(res.quantities["F"])
     sc = 0.12
     P = [shape_points(*arts["shapes"])]
-    mags = []
+    mags, lines = [], []
     for k, (c, p) in enumerate(zip(m.contacts, _contact_points(m, d))):
         f = F[k]                          # Definition 42: +F acts on body b, −F on body a
         mag = np.hypot(*f[:2])
         e = f[:2] / mag
-        anchor = p + e * (0.5 * sc * mag + 0.12)     # the line passes through p (9.70); arrow beyond it
-        plot_line(f, ax, role="reaction", scale=sc, anchor=anchor, text=f"$F_{{{c.name}}}$",
-                  text_offset=(6, -6))
-        P.append(np.array([anchor + e * 0.5 * sc * mag]))
+        L = sc * mag
+        # the line passes through p (9.70); the arrow beside p, on the side of p where it
+        # covers less of the bodies (ahead of p, or behind it pointing at p)
+        ahead, behind = p + e * (0.5 * L + 0.12), p - e * (0.5 * L + 0.12)
+        anchor = min((ahead, behind), key=lambda q: LineString([q - e * L / 2, q + e * L / 2])
+                     .intersection(bodies).length)
+        n = np.array([-e[1], e[0]])
+        side = 1.0 if bodies.distance(SPoint(*(anchor + 0.2 * n))) >= \
+            bodies.distance(SPoint(*(anchor - 0.2 * n))) else -1.0
+        u = side * n
+        art = plot_line(f, ax, role="reaction", scale=sc, anchor=anchor, text=f"$F_{{{c.name}}}$",
+                        text_offset=5 * u, text_at="anchor")
+        art.set_text_alignment("left" if u[0] > 0.35 else "right" if u[0] < -0.35 else "center",
+                               "bottom" if u[1] > 0.35 else "top" if u[1] < -0.35 else "center")
+        P.append(np.array(art.get_arrow()))
+        lines.append(f)
         mags.append(f"$|F_{{{c.name}}}|$ = {mag:.2f} N")
     fit_panel(ax, np.vstack(P), margin=0.06)
+    # body numbers beside their links, on the side away from the contact-force lines
+    for i, shape in enumerate(arts["shapes"]):
+        cxy = np.array(shape.centroid.coords[0])
+        a = d.pose[i, :2]
+        t = cxy - a
+        n = np.array([-t[1], t[0]]) / max(np.hypot(*t), 1e-12)
+
+        def line_dist(q):
+            return min(abs(f[2] + q[1] * f[0] - q[0] * f[1]) / np.hypot(*f[:2]) for f in lines)
+
+        u = n if line_dist(cxy + 0.25 * n) >= line_dist(cxy - 0.25 * n) else -n
+        label(ax, cxy, str(i + 1), offset=tuple(9 * u), fontsize=7, color="#1f3a4d",
+              ha="center", va="center")
     ax.text(0.02, 0.02, "\n".join(mags), transform=ax.transAxes, fontsize=7,
             color=COLORS["reaction"])
     return fig

@@ -49,6 +49,8 @@ def extra_inertia_field():
           "into its active part T_iQ_i and its reaction R_iμ_i (6.38, 6.61) with T_i, U_i built on "
           "the articulated inertia A_i (6.105); one panel per joint.", 10.02)
 def extra_joint_splits():
+    from shapely.ops import unary_union
+
     from .ch3 import QD, QDD, Q, _chain
 
     m = _chain()
@@ -56,13 +58,15 @@ def extra_joint_splits():
     r = articulated_inertia(m, Q, QD, w.tau)
     fig, axs = new_figure(3.4, 6.0, nrows=3)
     for i, ax in enumerate(axs):
-        draw_model(m, w, ax, alpha=0.2, show_com=False)
-        _, (Qi, mu, act, rea) = draw_joint_split(r.S[i], r.R[i], r.A[i], w.f[i], ax, name=str(i + 1),
-                                                 scale=0.05, anchor=w.origin[i])
+        arts = draw_model(m, w, ax, alpha=0.2, show_com=False)
+        out, (Qi, mu, act, rea) = draw_joint_split(r.S[i], r.R[i], r.A[i], w.f[i], ax,
+                                                   name=str(i + 1), scale=0.03, anchor=w.origin[i],
+                                                   avoid=unary_union(arts["shapes"]))
         assert np.allclose(act + rea, w.f[i]) and np.allclose(Qi, w.tau[i])
         ax.text(0.02, 0.02, f"joint {i + 1}: Q = τ = {Qi[0]:.2f}", transform=ax.transAxes,
-                fontsize=7)
-        fit_view(ax, [*w.origin, w.com[-1] * 2 - w.origin[-1], [-0.5, -0.8]], margin=0.12)
+                fontsize=7, bbox=dict(fc="white", ec="none", pad=0.5))
+        ends = [p for a in out.values() if a.get_arrow() is not None for p in a.get_arrow()]
+        fit_view(ax, [*shape_points(*arts["shapes"]), *ends, [-0.3, -0.5]], margin=0.1)
     return fig
 
 
@@ -106,9 +110,11 @@ def extra_slider_crank():
           "corner glyph), inertias (dashed radius-of-gyration circle), constructions (grey dashed).",
           0.5)
 def extra_style_key():
-    fig, ax = new_figure(3.4, 2.6)
+    from ...screws import inertia_matrix
+
+    fig, ax = new_figure(3.4, 3.2)
     ax.set_xlim(0, 10)
-    ax.set_ylim(0, 7.6)
+    ax.set_ylim(-1.6, 7.6)
     rows = [
         ("twist (pole), ω > 0", lambda y: plot_point(from_xy([1.0, y]) * 1.0, ax)),
         ("acceleration, α < 0", lambda y: plot_point(from_xy([1.0, y]) * -1.5, ax, role="accel")),
@@ -120,16 +126,15 @@ def extra_style_key():
                                                        role="momentum", scale=1.2, anchor=[1.0, y])),
         ("construction line", lambda y: plot_line(np.array([1.0, 0.0, -y]), ax, role="construct",
                                                   scale=None)),
+        ("inertia (radius of gyration)",
+         lambda y: plot_conic(inertia_matrix(1.0, [1.0, y], 0.3), ax, role="inertia")),
     ]
     for k, (txt, make) in enumerate(rows):
         y = 7.0 - 1.05 * k
         make(y)
         ax.text(2.4, y, txt, va="center", fontsize=7.5,
                 bbox=dict(fc="white", ec="none", pad=0.5))
-    from ...screws import inertia_matrix
-
-    plot_conic(inertia_matrix(1.0, [8.6, 6.5], 0.3), ax, role="inertia")
-    ax.text(7.8, 6.5, "inertia", ha="right", va="center", fontsize=7.5)
+    # bottom band: an ideal point (arrow at the view's lower edge, label above it) and a couple
     plot_point(np.array([-1.0, 0.0, 0.0]), ax, text="translation (ideal point)")
     plot_line(np.array([0.0, 0.0, 1.0]), ax, text="couple", corner="lower right")
     return fig
