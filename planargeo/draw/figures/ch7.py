@@ -67,7 +67,9 @@ def fig7_2():
     o = d.origin[i + 1]
     f_next = np.array([-1.0, 0.0, o[1]])   # f_3: a unit force along -x through joint 3 (4.27)
     a = -r.Lambda_inv[i] @ f_next
-    plot_line(-f_next, ax, role="reaction", scale=0.6, anchor=o, text="$-f_3$")
+    # the label above-left of joint 3 (free of links 2 and 3), not on link 3 at the arrow's tip
+    plot_line(-f_next, ax, role="reaction", scale=0.6, anchor=o, text="$-f_3$", text_at="anchor",
+              text_offset=(-10, 4)).set_text_alignment("right", "bottom")
     plot_point(a, ax, role="accel", text="$a_2 = -\\Lambda_2^{-1}f_3$")
     fit_panel(ax, [*shape_points(*arts["shapes"]), to_xy(a), d.origin[0] - [0.0, 0.15]],
               margin=0.06)
