@@ -246,6 +246,18 @@ def graded_chain(n: int, ratio: float, *, reverse: bool = False, joint: str = "r
     return Model(bodies, joints, list(range(-1, n - 1)))
 
 
+def alternating_chain(n: int, k: float, *, joint: str = "revolute") -> Model:
+    """A uniform-length chain whose link masses alternate between ``10^(k/2)`` and ``10^(-k/2)``.
+
+    Tiny and huge masses mixed along a long chain (mass ratio ``10^k``), inertias ``m L²/12``,
+    unit links, heavy first.
+    """
+    masses = [10.0 ** (k / 2) if i % 2 == 0 else 10.0 ** (-k / 2) for i in range(n)]
+    bodies = [Body(float(m), (0.5, 0.0), float(m) / 12) for m in masses]
+    joints = [Joint(joint, (0.0 if i == 0 else 1.0, 0.0, 0.0)) for i in range(n)]
+    return Model(bodies, joints, list(range(-1, n - 1)))
+
+
 def slender_chain(n: int, rho: float) -> Model:
     """Chain of unit links, unit masses at mid-link, radius of gyration ``rho`` (0: point masses)."""
     bodies = [Body(1.0, (0.5, 0.0), rho * rho) for _ in range(n)]

@@ -32,7 +32,7 @@ from planargeo._reference import (  # the study's reference: one copy, shared wi
     slider_crank_reference, folded_state, fr, cross_exact, matvec_exact, solve_exact, hom_err, cross_cond,
     matvec_cond, euclid_err, euclid_cond, distance_cond, distance_exact, decimal_err, pencil_pair,
     strip_pair, near_points, geo_inertia, pole_near_com, pole_far, line_near_infinity, line_near_com,
-    GEO_MASS, GEO_COM, GEO_RHO,
+    GEO_MASS, GEO_COM, GEO_RHO, alternating_chain,
 )
 
 
@@ -141,6 +141,36 @@ def test_light_base_1e10_dense_solve_bounded_by_eps_cond_and_worst():
     assert err > 10 * rel_err(forward_dynamics(m, q, qd, tau), ref)
     # the long-double reference is not enough here: it is off by ~1e-10
     assert rel_err(reference_qdd(m, q, qd, tau), ref) > 1e-12
+
+
+def test_long_chain_of_mixed_tiny_and_huge_masses_at_cond_1e12():
+    # 50 unit links, masses alternating 10^3.5 and 10^-3.5 (ratio 1e7): cond(H) ≈ 5e12 by the reference.
+    # Measured: aba 3.7e-16, projective 3.6e-13, stacked 3.8e-13, crba 5.4e-13, mobility_split 6.3e-6
+    # (ε cond = 1.1e-3); the long-double reference agrees with the exact one to 1e-17 at N = 20, k = 7
+    m = alternating_chain(50, 7)
+    q, qd, tau = state(50, 3)
+    H, rhs = reference_system(m, q, qd, tau)
+    x = np.array([float(v) for v in _gauss_solve(H, rhs)])
+    c = cond_spd(H)
+    assert 1e12 < c < 1e13
+    errs = {name: rel_err(f(m, q, qd, tau), x) for name, f in METHODS.items()}
+    assert errs["aba"] < 100 * EPS
+    assert errs["projective"] < 1e-11 and errs["stacked"] < 1e-11
+    assert max(errs.values()) <= EPS * c                              # nobody worse than ε cond(H)
+    assert errs["mobility_split"] > 1e3 * errs["aba"]                 # the least accurate recursive method
+
+
+def test_long_chain_of_mixed_masses_dense_solve_refuses_past_its_threshold():
+    # ratio 1e8 (cond ≈ 5e13): the dense solve names the singularity with the reference's cond; ABA still ~ε
+    m = alternating_chain(50, 8)
+    q, qd, tau = state(50, 3)
+    H, rhs = reference_system(m, q, qd, tau)
+    x = np.array([float(v) for v in _gauss_solve(H, rhs)])
+    c = cond_spd(H)
+    with pytest.raises(SingularConfigurationError) as e:
+        forward_dynamics_crba(m, q, qd, tau)
+    assert 0.3 < e.value.cond / c < 3
+    assert rel_err(forward_dynamics(m, q, qd, tau), x) < 100 * EPS
 
 
 def test_light_base_slider_dense_solve_loses_recursive_exact():
