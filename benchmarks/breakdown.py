@@ -1,7 +1,7 @@
 """Where the forward-dynamics methods break down: accuracy against an extended-precision reference.
 
 Run ``python benchmarks/breakdown.py [--quick] [--out DIR]`` (about a minute;
-``--quick``: chains up to N = 100, fewer geometry samples, about 15 s).  Sweeps six
+``--quick``: chains up to N = 100, fewer geometry samples, about 15 s).  Sweeps seven
 conditioning knobs and, at each point, compares the five tree methods (and,
 for the slider-crank, the closed-loop solver and the Lagrange-multiplier
 solver) with an *independent* reference: the joint-space equations
@@ -26,7 +26,9 @@ f. the geometry layer: the meet of near-coincident and of near-parallel lines, t
    mass or goes to infinity, the percussion pole (pole) as its line approaches the line at
    infinity or the centre of mass, and the pole for an inertia conic degenerating to a point
    mass; each against exact rational arithmetic on the same float inputs (``cross_exact``,
-   ``matvec_exact``, ``solve_exact`` in ``planargeo/_reference.py``).
+   ``matvec_exact``, ``solve_exact`` in ``planargeo/_reference.py``);
+g. long chains (N = 20, 50, 200) with tiny and huge masses mixed: masses alternating 10^(k/2) and
+   10^(-k/2), condition numbers of H to 1e12 and beyond.
 
 Writes ``results/breakdown.md`` and ``results/breakdown.svg/.png``.
 """
