@@ -134,7 +134,17 @@ def joint_axes(kind: str, ox, oy, phi, qi):
 
     ``(ox, oy, phi)`` is the joint frame's world pose, ``qi`` (..., k) the joint
     coordinates.  Returns ``(cols, (x, y, theta))`` with ``cols`` a list of k
-    arrays (..., 3): the unit twists at the origin (4.10, 5.51, 5.62).
+    arrays (..., 3): the unit twists at the origin (4.10, 5.51, 5.62; the
+    twin prismatic joint's two translations are 4.79 turned by ``phi``).
+
+    Examples
+    --------
+    >>> cols, pose = joint_axes("twin_prismatic", 1.0, 2.0, np.pi / 2, np.array([0.5, 0.25]))
+    >>> np.round(np.array(cols), 12) + 0.0        # e = y, e⊥ = -x: ideal points
+    array([[ 0.,  1.,  0.],
+           [-1.,  0.,  0.]])
+    >>> np.round(pose, 12)                          # slid 0.5 along y, 0.25 along -x; not turned
+    array([0.75      , 2.5       , 1.57079633])
     """
     c, s = np.cos(phi), np.sin(phi)
     zero, one = np.zeros_like(ox), np.ones_like(ox)
@@ -148,6 +158,11 @@ def joint_axes(kind: str, ox, oy, phi, qi):
         x1, y1 = ox + qi[..., 0] * c, oy + qi[..., 0] * s
         cols = [np.stack([c, s, zero], -1), np.stack([y1, -x1, one], -1)]
         return cols, (x1, y1, phi + qi[..., 1])
+    if kind == "twin_prismatic":       # thesis 4.79: s = [e, e⊥], no rotation
+        x1 = ox + qi[..., 0] * c - qi[..., 1] * s
+        y1 = oy + qi[..., 0] * s + qi[..., 1] * c
+        cols = [np.stack([c, s, zero], -1), np.stack([-s, c, zero], -1)]
+        return cols, (x1, y1, phi)
     if kind == "plane":
         x1 = ox + qi[..., 0] * c - qi[..., 1] * s
         y1 = oy + qi[..., 0] * s + qi[..., 1] * c
@@ -289,6 +304,10 @@ def _kinematics_scalar(model: Model, q: np.ndarray, qd: np.ndarray, f_ext) -> Da
         elif kind == "revolute_prismatic":
             x, y = ox + ql[o] * c, oy + ql[o] * s
             cols, th = [(c, s, 0.0), (y, -x, 1.0)], phi + ql[o + 1]
+        elif kind == "twin_prismatic":
+            x = ox + ql[o] * c - ql[o + 1] * s
+            y = oy + ql[o] * s + ql[o + 1] * c
+            cols, th = [(c, s, 0.0), (-s, c, 0.0)], phi
         elif kind == "plane":
             x = ox + ql[o] * c - ql[o + 1] * s
             y = oy + ql[o] * s + ql[o + 1] * c

@@ -19,6 +19,10 @@ Frames (thesis Chapter 2, planar):
   ``"prismatic"``               1     slid by ``q`` along its x axis
   ``"revolute_prismatic"``      2     slid by ``q[0]`` along x, then rotated by ``q[1]``
                                       about the slid origin (thesis 2.6-2.8)
+  ``"twin_prismatic"``          2     slid by ``(q[0], q[1])`` along (x, y), not rotated
+                                      (thesis 4.8.4, 4.79: ``s`` = the first two
+                                      columns of ``"plane"``, ``R`` = the line at
+                                      infinity)
   ``"plane"``                   3     slid by ``(q[0], q[1])`` along (x, y), then
                                       rotated by ``q[2]`` (a free body)
   ``"fixed"``                   0     unchanged (a weld)
@@ -58,6 +62,7 @@ JOINT_DOFS: dict[str, int] = {
     "revolute": 1,
     "prismatic": 1,
     "revolute_prismatic": 2,
+    "twin_prismatic": 2,
     "plane": 3,
     "fixed": 0,
 }
@@ -134,7 +139,7 @@ class Joint:
     ----------
     kind : str
         One of ``"revolute"``, ``"prismatic"``, ``"revolute_prismatic"``,
-        ``"plane"``, ``"fixed"`` (see the module docstring).
+        ``"twin_prismatic"``, ``"plane"``, ``"fixed"`` (see the module docstring).
     placement : (x, y, theta)
         Pose of the joint frame in the parent body's frame (world frame when
         the parent is the ground).
@@ -144,10 +149,12 @@ class Joint:
     --------
     >>> Joint("revolute", (1.0, 0.0, 0.0)).dofs
     1
+    >>> Joint("twin_prismatic").dofs              # thesis 4.79: translations along x and y
+    2
     >>> Joint("hinge")
     Traceback (most recent call last):
     ...
-    planargeo.errors.InputError: kind must be one of ['revolute', 'prismatic', 'revolute_prismatic', 'plane', 'fixed'], got 'hinge'
+    planargeo.errors.InputError: kind must be one of ['revolute', 'prismatic', 'revolute_prismatic', 'twin_prismatic', 'plane', 'fixed'], got 'hinge'
     """
 
     kind: str

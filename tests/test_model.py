@@ -30,7 +30,7 @@ def test_joint_kind_and_placement():
         Joint("hinge")
     with pytest.raises(ShapeError, match="placement"):
         Joint("revolute", (0.0, 0.0))
-    assert [Joint(k).dofs for k in ALL_KINDS] == [1, 1, 2, 3, 0]
+    assert [Joint(k).dofs for k in ALL_KINDS] == [1, 1, 2, 2, 3, 0]
 
 
 def test_frozen():

@@ -470,6 +470,8 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
             same_angle(i, par)
         elif jt.kind == "revolute_prismatic":
             on_line(i, (0.0, 0.0), par, (px, py), axis_y)
+        elif jt.kind == "twin_prismatic":               # two translations: only the angle is kept
+            same_angle(i, par)
         elif jt.kind == "fixed":
             coincide(i, (0.0, 0.0), par, (px, py))
             same_angle(i, par)
