@@ -731,23 +731,87 @@ class Decomposition:
         return cls(joint.s, joint.R, A, name=name)
 
     def split_wrench(self, f) -> tuple[np.ndarray, np.ndarray]:
-        """``(Q, μ) = (sᵀf, Uᵀf)`` so that ``f = T Q + R μ`` (thesis 6.38, 6.61)."""
+        """``(Q, μ) = (sᵀf, Uᵀf)`` so that ``f = T Q + R μ`` (thesis 6.38, 6.61).
+
+        Examples
+        --------
+        A pendulum (m = 2, centre of mass at (1, 0), J = 0.5 about it) on a
+        revolute joint at the origin, loaded by a unit couple: the joint
+        torque is ``Q = sᵀf = 1``; the body turns at ``α = 1 / (J + m d²) = 0.4``,
+        its centre of mass accelerates by (0, 0.4), which takes the force
+        (0, 0.8) of ``T Q = [0, 0.8, 1]``; the pivot supplies the rest,
+        ``μ = (0, -0.8)`` (unit forces along x and y through the pivot).
+
+        >>> from planargeo.joints import revolute
+        >>> from planargeo.screws import inertia_matrix
+        >>> dec = Decomposition.from_joint(revolute((0.0, 0.0)), inertia_matrix(2.0, [1.0, 0.0], 0.5))
+        >>> dec.split_wrench([0.0, 0.0, 1.0])
+        (array([1.]), array([ 0. , -0.8]))
+        """
         f = _vec(f, "f")
         return _tmul(self.s, f), _tmul(self.U, f)
 
     def join_wrench(self, Q, mu) -> np.ndarray:
-        """``f = T Q + R μ`` (thesis 6.38)."""
+        """``f = T Q + R μ`` (thesis 6.38).
+
+        Examples
+        --------
+        The pendulum of :meth:`split_wrench`: ``T = [0, 0.8, 1]`` (the wrench
+        of unit joint torque) plus the pivot's force (0, -0.8) through the
+        origin is the unit couple again.
+
+        >>> from planargeo.joints import revolute
+        >>> from planargeo.screws import inertia_matrix
+        >>> dec = Decomposition.from_joint(revolute((0.0, 0.0)), inertia_matrix(2.0, [1.0, 0.0], 0.5))
+        >>> dec.T.ravel()
+        array([0. , 0.8, 1. ])
+        >>> dec.join_wrench([1.0], [0.0, -0.8]) + 0.0
+        array([0., 0., 1.])
+        """
         Q = as_array(Q, "Q", (self.s.shape[-1],))
         mu = as_array(mu, "mu", (self.R.shape[-1],))
         return (self.T @ Q[..., None])[..., 0] + (self.R @ mu[..., None])[..., 0]
 
     def split_twist(self, a) -> tuple[np.ndarray, np.ndarray]:
-        """``(ψ, γ) = (Tᵀa, Rᵀa)`` so that ``a = s ψ + U γ`` (thesis 6.44, 6.62)."""
+        """``(ψ, γ) = (Tᵀa, Rᵀa)`` so that ``a = s ψ + U γ`` (thesis 6.44, 6.62).
+
+        Examples
+        --------
+        The pendulum of :meth:`split_wrench` translated upwards at unit
+        acceleration: ``γ = Rᵀa = (0, 1)`` is the pivot's acceleration.  With
+        no joint torque the pivot's push would turn the body at
+        ``-m d / (J + m d²) = -0.8`` (``U γ = [0, 1, -0.8]``); ``ψ = 0.8`` is
+        the joint acceleration that cancels that turn.
+
+        >>> from planargeo.joints import revolute
+        >>> from planargeo.screws import inertia_matrix
+        >>> dec = Decomposition.from_joint(revolute((0.0, 0.0)), inertia_matrix(2.0, [1.0, 0.0], 0.5))
+        >>> dec.split_twist([0.0, 1.0, 0.0])
+        (array([0.8]), array([0., 1.]))
+        """
         a = _vec(a, "a")
         return _tmul(self.T, a), _tmul(self.R, a)
 
     def join_twist(self, psi, gamma) -> np.ndarray:
-        """``a = s ψ + U γ`` (thesis 6.44)."""
+        """``a = s ψ + U γ`` (thesis 6.44).
+
+        Examples
+        --------
+        The pendulum of :meth:`split_twist`: the reactive acceleration of a
+        unit upward push on the pivot, ``U[:, 1] = [0, 1, -0.8]``, plus the
+        joint's ``s ψ = [0, 0, 0.8]`` is the pure translation; a joint
+        acceleration alone is a rotation about the pivot.
+
+        >>> from planargeo.joints import revolute
+        >>> from planargeo.screws import inertia_matrix
+        >>> dec = Decomposition.from_joint(revolute((0.0, 0.0)), inertia_matrix(2.0, [1.0, 0.0], 0.5))
+        >>> dec.U[:, 1]
+        array([ 0. ,  1. , -0.8])
+        >>> dec.join_twist([0.8], [0.0, 1.0]) + 0.0
+        array([0., 1., 0.])
+        >>> dec.join_twist([1.0], [0.0, 0.0])
+        array([0., 0., 1.])
+        """
         psi = as_array(psi, "psi", (self.s.shape[-1],))
         gamma = as_array(gamma, "gamma", (self.R.shape[-1],))
         return (self.s @ psi[..., None])[..., 0] + (self.U @ gamma[..., None])[..., 0]
