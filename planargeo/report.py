@@ -136,13 +136,66 @@ def _fmt_number(v: Any) -> str:
     return str(v)
 
 
+#: Matrices with more columns than this are summarised in the table (``--json`` has the values).
+MAX_TABLE_COLUMNS = 12
+
+
 def _is_matrix(v: Any) -> bool:
     return (isinstance(v, list) and len(v) > 0 and all(isinstance(r, list) for r in v)
             and all(not isinstance(x, (list, dict)) for r in v for x in r))
 
 
+def _shape(v: Any) -> tuple[int, ...] | None:
+    """Shape of a rectangular nested list of numbers (``()`` for a number), else None."""
+    if isinstance(v, list):
+        if not v:
+            return (0,)
+        subs = [_shape(x) for x in v]
+        if subs[0] is None or any(s != subs[0] for s in subs):
+            return None
+        return (len(v),) + subs[0]
+    if isinstance(v, (int, float)) and not isinstance(v, bool):
+        return ()
+    return None
+
+
 def _fmt_value(v: Any, indent: int) -> list[str]:
-    """Lines for one value: scalars and vectors on one line, matrices as aligned rows."""
+    """Lines for one value: scalars and vectors on one line, matrices as aligned rows.
+
+    A matrix wider than :data:`MAX_TABLE_COLUMNS` is summarised by its shape
+    (``--json`` gives its values); an array of three or more dimensions gets
+    a shape line, then its matrices one after the other, each labelled with
+    its leading indices.  Ragged nested lists are printed as JSON.
+
+    Examples
+    --------
+    >>> for line in _fmt_value([[[1.0, 0.0], [0.0, 1.0]], [[2.0, 0.5], [0.5, 3.0]]], 0):
+    ...     print(line)
+    shape (2, 2, 2)
+    [0]  [1.0  0.0]
+         [0.0  1.0]
+    [1]  [2.0  0.5]
+         [0.5  3.0]
+    >>> _fmt_value([[0.0] * 27] * 27, 0)
+    ['27×27 matrix, too wide for the table (--json gives its values)']
+    """
+    shape = _shape(v)
+    if shape is not None and len(shape) == 2 and shape[1] > MAX_TABLE_COLUMNS:
+        return [f"{shape[0]}×{shape[1]} matrix, too wide for the table (--json gives its values)"]
+    if shape is not None and len(shape) >= 3:
+        if shape[-1] > MAX_TABLE_COLUMNS:
+            dims = " × ".join(map(str, shape))
+            return [f"{dims} array, too wide for the table (--json gives its values)"]
+        lines = [f"shape {shape}"]
+        width = len(str(shape[0] - 1)) + 2
+        for i, sub in enumerate(v):
+            body = _fmt_value(sub, indent + width + 2)
+            if body and body[0].startswith("shape "):
+                body = body[1:]
+            label = f"[{i}]".ljust(width)
+            lines.append(f"{label}  {body[0]}")
+            lines.extend(" " * (width + 2) + s for s in body[1:])
+        return lines
     if _is_matrix(v):
         cells = [[_fmt_number(x) for x in r] for r in v]
         width = max((len(c) for r in cells for c in r), default=1)

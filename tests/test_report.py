@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from planargeo import report, scenes
+from planargeo.errors import InputError
 
 
 def run(*args):
@@ -137,7 +138,7 @@ def test_parse_value_nan_and_inf():
 def test_parse_sets_last_wins_and_keeps_int_parameters_int():
     assert report.parse_sets(["n=2", "n=5", "lam=3"], {"n": 4, "lam": 2.0}) == {"n": 5, "lam": 3.0}
     assert type(report.parse_sets(["n=2"], {"n": 4})["n"]) is int
-    with pytest.raises(ValueError, match="NAME=VALUE"):
+    with pytest.raises(InputError, match="^--set expects NAME=VALUE, got '=3'$"):
         report.parse_sets(["=3"])
 
 
@@ -145,3 +146,59 @@ def test_to_plain_converts_numpy():
     out = report.to_plain({"a": np.float64(1.5), "b": np.arange(3), "c": (np.int64(2), None), "d": np.bool_(True)})
     assert out == {"a": 1.5, "b": [0, 1, 2], "c": [2, None], "d": True}
     json.dumps(out)
+
+
+# --------------------------------------------------------------------------- table formatting
+def _table_block(text, name):
+    """The lines of quantity ``name`` in a report table (its first line and the indented ones after it)."""
+    lines = text.splitlines()
+    start = next(i for i, ln in enumerate(lines) if ln.startswith(f"  {name} "))
+    out = [lines[start]]
+    for ln in lines[start + 1:]:
+        if not ln.startswith("   "):          # the next quantity starts at column 2
+            break
+        out.append(ln)
+    return out
+
+
+def test_table_three_level_array_shape_and_rows(capsys):
+    """The tree's nine 3×3 mobilities Λ_i⁻¹: a shape line, then nine labelled 3×3 blocks whose numbers
+    are those of --json (to the table's 6 significant digits); --json itself keeps the nested lists."""
+    code, out, _ = call("tree", capsys=capsys)
+    assert code == 0
+    block = _table_block(out, "Lambda_inv")
+    assert block[0].split() == ["Lambda_inv", "shape", "(9,", "3,", "3)"]
+    assert len(block) == 1 + 9 * 3
+    code, js, _ = call("tree", "--json", capsys=capsys)
+    lam = np.array(json.loads(js)["quantities"]["Lambda_inv"])
+    assert lam.shape == (9, 3, 3)
+    for i in range(9):
+        rows = block[1 + 3 * i: 4 + 3 * i]
+        assert rows[0].split()[0] == f"[{i}]"
+        nums = [float(x) for r in rows for x in r.replace(f"[{i}]", "").replace("[", " ").replace("]", " ").split()]
+        assert np.allclose(nums, lam[i].ravel(), rtol=1e-5, atol=1e-30)
+    # no raw nested list anywhere in the table
+    assert "[[" not in out
+
+
+def test_table_wide_matrix_is_summarised_and_json_keeps_it(capsys):
+    code, out, _ = call("tree", capsys=capsys)
+    assert code == 0
+    assert _table_block(out, "L") == ["  L           27×27 matrix, too wide for the table (--json gives its values)"]
+    code, js, _ = call("tree", "--json", capsys=capsys)
+    L = np.array(json.loads(js)["quantities"]["L"])
+    assert L.shape == (27, 27) and np.allclose(np.diag(L), 1.0)      # unit triangular (9.31)
+
+
+def test_fmt_value_arrays_by_hand():
+    three = [[[1.0, 2.0], [3.0, 4.0]], [[5.0, 6.0], [7.0, 8.5]]]
+    assert report._fmt_value(three, 0) == ["shape (2, 2, 2)",
+                                           "[0]  [1.0  2.0]", "     [3.0  4.0]",
+                                           "[1]  [5.0  6.0]", "     [7.0  8.5]"]
+    four = [three, three]
+    lines = report._fmt_value(four, 0)
+    assert lines[0] == "shape (2, 2, 2, 2)" and lines[1] == "[0]  [0]  [1.0  2.0]" and len(lines) == 1 + 8
+    assert report._fmt_value([[1.0, [2.0]], [3.0]], 0) == ["[[1.0, [2.0]], [3.0]]"]     # ragged: JSON
+    assert report._fmt_value([[0.0] * 13] * 2, 0) == [
+        "2×13 matrix, too wide for the table (--json gives its values)"]
+    assert report._fmt_value([[0.0] * 12] * 2, 0)[0].count("0.0") == 12                  # 12 columns shown
