@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from planargeo import scenes
-from planargeo.errors import NonFiniteError, SceneError, ShapeError
+from planargeo.errors import InputError, NonFiniteError, SceneError, ShapeError
 from planargeo.scenes import check_param
 
 ALL = scenes.names()
@@ -82,5 +82,5 @@ def test_check_param_conversions():
     assert check_param("x", -0.0, nonnegative=True) == 0.0
     with pytest.raises(SceneError, match="^x must be non-negative, got -1.0$"):
         check_param("x", -1, nonnegative=True)
-    with pytest.raises(ValueError, match="kind must be"):
+    with pytest.raises(InputError, match="^kind must be 'float', 'int' or 'choice', got 'complex'$"):
         check_param("x", 1, "complex")
