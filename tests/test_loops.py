@@ -288,12 +288,36 @@ def test_prescribed_joint_matches_reference():
     m = chain_model(3)
     q, qd = [0.8, -0.8, 0.8 - np.pi], [2.0, -2.0, 2.0]
     sol = loop_solve(m, q, qd, [0.0] * 3, contacts=[pin], prescribed={0: 0.5})
-    assert sol.qdd[0] == pytest.approx(0.5, abs=1e-12)
+    assert sol.qdd[0] == 0.5                       # the prescribed value exactly, not the solve's rounding
     ref = constrained_dynamics_lagrange(m, q, qd, [0.0] * 3, contacts=[pin], prescribed={0: 0.5})
     assert np.allclose(sol.qdd, ref["qdd"], atol=1e-10)
     assert np.allclose(sol.tau_drive, ref["tau_drive"], atol=1e-9)
     # closed form: τ = (5/3) φ̈ + 2 g cos φ
     assert sol.tau_drive[0] == pytest.approx(5 / 3 * 0.5 + 2 * 9.81 * np.cos(0.8), abs=1e-9)
+
+
+@pytest.mark.parametrize("q0, w, val", [(0.8, 2.0, 0.5), (0.3, -1.0, 0.0), (2.1, 5.0, -3.7), (1.1, 0.7, 1e-3)])
+def test_driven_joint_acceleration_is_the_prescribed_value_exactly(q0, w, val):
+    """The four-bar driven at joint 0, and the same with a second drive on the open-loop tree: the driven
+    coordinates' q̈ are the prescribed floats bit for bit (the solve alone reproduces them only to
+    rounding); the rest still matches the Lagrange reference, and the drive torque its closed form."""
+    pin = Contact("pin", 2, -1, (1.0, 0.0), (1.0, 0.0))
+    m = chain_model(3)
+    q, qd = [q0, -q0, q0 - np.pi], [w, -w, w]
+    sol = loop_solve(m, q, qd, [0.0] * 3, contacts=[pin], prescribed={0: val})
+    assert sol.qdd[0] == val
+    ref = constrained_dynamics_lagrange(m, q, qd, [0.0] * 3, contacts=[pin], prescribed={0: val})
+    assert np.allclose(sol.qdd, ref["qdd"], atol=1e-10)
+    assert sol.tau_drive[0] == pytest.approx(5 / 3 * val + 2 * 9.81 * np.cos(q0), abs=1e-9)
+    # two drives on an open tree (no contacts): both exact, the free joint from the reference
+    tree = random_model(4, seed=7, tree=True, kinds=("revolute",))
+    rng = np.random.default_rng(int(1000 * q0))
+    qt, qdt, taut = rng.normal(size=(3, 4))
+    drives = {1: val, 3: -2.0 * val + 0.1}
+    sol = loop_solve(tree, qt, qdt, taut, contacts=[], prescribed=drives)
+    assert sol.qdd[1] == drives[1] and sol.qdd[3] == drives[3]
+    ref = constrained_dynamics_lagrange(tree, qt, qdt, taut, contacts=[], prescribed=drives)
+    assert np.allclose(sol.qdd, ref["qdd"], atol=1e-9)
 
 
 def test_prescribed_errors():
