@@ -318,3 +318,148 @@ def test_joint_split_arrows_slide_off_the_bodies(ax):
         seg = out[k].get_arrow()
         if seg is not None:
             assert LineString(seg).distance(body) >= 0.1 - 1e-9
+
+
+# --------------------------------------------------------------------------- T/U decompositions (ch. 6)
+# A rod (mass m, centre of mass c, inertia J about c) on a revolute joint at P, everything by hand:
+#   s = [Py, -Px, 1] (the pole P, 4.64), R = [unit x force through P, unit y force through P]:
+#   R1 = [1, 0, -Py], R2 = [0, 1, Px] (a line [fx, fy, tz]: tz + y fx - x fy = 0, 4.27).
+#   For a twist u = [vx, vy, w], R_kᵀu is the velocity of P along e_k (vP = (vx - w Py, vy + w Px)).
+#   T = A s (sᵀAs)⁻¹ (6.36): A s is the momentum of a unit rotation about P: force m (k × r)
+#   (r = c - P), moment about O = J + m (c × (k × r))_z; sᵀAs = J_P = J + m|r|².
+#   U = A⁻¹R(RᵀA⁻¹R)⁻¹ (6.45) is the only U with RᵀU = 1 and sᵀAU = 0 (sᵀ A A⁻¹ R = sᵀR = 0):
+#   U_k moves P with unit acceleration along e_k and has zero angular momentum about P:
+#   J w + m r × (e_k + w k × r) = 0  =>  w_k = -m (r × e_k) / J_P.
+M, C, JC, P = 2.0, np.array([1.7, 0.4]), 0.3, np.array([0.5, -0.3])
+
+
+def _rod_by_hand():
+    r = C - P
+    JP = JC + M * r @ r
+    s = np.array([P[1], -P[0], 1.0])
+    R = np.array([[1.0, 0.0], [0.0, 1.0], [-P[1], P[0]]])
+    As = np.array([-M * r[1], M * r[0], JC + M * (C[0] * r[0] + C[1] * r[1])])
+    T = As / JP
+    U = np.zeros((3, 2))
+    for k, ek in enumerate(np.eye(2)):
+        w = -M * (r[0] * ek[1] - r[1] * ek[0]) / JP
+        U[:, k] = [ek[0] + w * P[1], ek[1] - w * P[0], w]
+    return s, R, T, U, JP
+
+
+def _rod_inertia():
+    # the rigid-body inertia at the origin, written out (4.58 with the package's column order)
+    return np.array([[M, 0.0, -M * C[1]], [0.0, M, M * C[0]],
+                     [-M * C[1], M * C[0], JC + M * C @ C]])
+
+
+def test_decomposition_hand_closed_forms(ax):
+    from planargeo.draw.constructions import draw_decomposition
+
+    s, R, T, U, _ = _rod_by_hand()
+    A = _rod_inertia()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        out = draw_decomposition(s[:, None], R, A, ax)
+        ax.figure.canvas.draw()
+    np.testing.assert_allclose(out["T"].get_line(), T, rtol=1e-12)          # T = A s (sᵀAs)⁻¹
+    np.testing.assert_allclose(out["s"].get_point(), s)
+    for k in range(2):
+        np.testing.assert_allclose(out[f"R{k + 1}"].get_line(), R[:, k])
+        np.testing.assert_allclose(out[f"U{k + 1}"].get_point(), U[:, k], atol=1e-12)
+    # Fig. 6.2's geometry: U1 on R2, U2 on R1 (RᵀU = 1), both on T (TᵀU = 0)
+    assert abs(U[:, 0] @ R[:, 1]) < 1e-12 and abs(U[:, 1] @ R[:, 0]) < 1e-12
+    assert np.all(np.abs(T @ U) < 1e-12)
+    # the drawn (clipped) T satisfies the hand line's equation (4.27)
+    for x, y in out["T"].get_segment():
+        assert abs(T[2] + y * T[0] - x * T[1]) <= 1e-9 * np.hypot(*T[:2])
+    # Fig. 6.1's variant: the plain percussion poles A⁻¹R_k, also on T
+    out = draw_decomposition(s[:, None], R, A, ax, reactive="inverse")
+    for k in range(2):
+        p = out[f"AiR{k + 1}"].get_point()
+        assert abs(T @ p) < 1e-12 * np.linalg.norm(p)
+        np.testing.assert_allclose(A @ p, R[:, k], atol=1e-12)
+    with pytest.raises(Exception, match="reactive"):
+        draw_decomposition(s, R, A, ax, reactive="V")
+
+
+def test_wrench_split_is_f_equals_TQ_plus_Rmu(ax):
+    """(6.38): f = T Q + R μ with Q = sᵀf (the moment of f about P) and μ = Uᵀf, by hand."""
+    from planargeo.draw.constructions import draw_wrench_split
+
+    s, R, T, U, _ = _rod_by_hand()
+    A = _rod_inertia()
+    # 3 N along (1, 2)/√5 through the point (2, 1): tz = x fy - y fx
+    F = 3.0 * np.array([1.0, 2.0]) / np.sqrt(5.0)
+    f = np.array([F[0], F[1], 2.0 * F[1] - 1.0 * F[0]])
+    Q = (2.0 - P[0]) * F[1] - (1.0 - P[1]) * F[0]           # moment about P: (x - P) × F
+    mu = U.T @ f
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        out = draw_wrench_split(s, R, A, f, ax, arrow_length=0.6)
+        ax.figure.canvas.draw()
+    v = out["values"]
+    assert v["Q"][0] == pytest.approx(Q)
+    np.testing.assert_allclose(v["mu"], mu, rtol=1e-12)
+    np.testing.assert_allclose(out["f1"].get_line(), T * Q, rtol=1e-12)     # the active part TQ
+    np.testing.assert_allclose(out["f2"].get_line(), R @ mu, atol=1e-12)    # the reaction Rμ
+    np.testing.assert_allclose(out["f1"].get_line() + out["f2"].get_line(), f, atol=1e-12)
+    # Rμ passes through the joint (sᵀRμ = 0); a1 = A⁻¹TQ turns about the joint; a2 on T
+    assert abs(s @ out["f2"].get_line()) < 1e-12
+    a1, a2 = out["a1"].get_point(), out["a2"].get_point()
+    np.testing.assert_allclose(A @ a1, T * Q, atol=1e-12)
+    np.testing.assert_allclose(a1[:2] / a1[2], s[:2], atol=1e-12)           # the pole P
+    assert abs(T @ a2) < 1e-12 * np.linalg.norm(a2)
+    for k in ("f1", "f2"):                                  # arrow_length: 0.6 whatever |F|
+        out[k].set_anchor([0.0, 0.0])
+        tail, tip = out[k].get_arrow()
+        assert np.hypot(*(tip - tail)) == pytest.approx(0.6)
+
+
+def test_twist_split_is_a_equals_s_psi_plus_U_gamma(ax):
+    """(6.44): a = s ψ + U γ with ψ = Tᵀa and γ = Rᵀa (the acceleration of P), by hand."""
+    from planargeo.draw.constructions import draw_twist_split
+
+    s, R, T, U, _ = _rod_by_hand()
+    A = _rod_inertia()
+    alpha, X = 1.5, np.array([2.6, -0.4])                   # α about X
+    a = alpha * np.array([X[1], -X[0], 1.0])
+    aP = alpha * np.array([-(P[1] - X[1]), P[0] - X[0]])    # acceleration of P: α k × (P − X)
+    psi = T @ a
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        out = draw_twist_split(s, R, A, a, ax, parts=[1])
+        ax.figure.canvas.draw()
+    assert "a2" not in out and "f2" not in out               # only the part asked for is drawn
+    v = out["values"]
+    np.testing.assert_allclose(v["gamma"], aP, rtol=1e-12)  # γ = Rᵀa
+    assert v["psi"][0] == pytest.approx(psi)
+    np.testing.assert_allclose(out["a1"].get_point(), s * psi, rtol=1e-12)
+    np.testing.assert_allclose(v["a2"], U @ aP, atol=1e-12)
+    np.testing.assert_allclose(v["a1"] + v["a2"], a, atol=1e-12)
+    np.testing.assert_allclose(out["f1"].get_line(), A @ (s * psi), rtol=1e-12)
+    # f1 = A sψ is a multiple of T (6.76), f2 = A Uγ passes through the joint
+    np.testing.assert_allclose(np.cross(out["f1"].get_line(), T), 0.0, atol=1e-12)
+    out2 = draw_twist_split(s, R, A, a, ax, parts=(2,), show_T=False)
+    np.testing.assert_allclose(out2["a2"].get_point(), U @ aP, atol=1e-12)
+    assert abs(s @ out2["f2"].get_line()) < 1e-12
+    with pytest.raises(Exception, match="parts"):
+        draw_twist_split(s, R, A, a, ax, parts=(3,))
+
+
+def test_projective_step_joint_acceleration(ax):
+    """(6.98–6.101): q̈ = Tᵀa_i − Tᵀ(a_{i−1} + κ); with a_i = a_{i−1} + κ + s q̈ this is q̈ (sᵀT = 1)."""
+    from planargeo.draw.constructions import draw_projective_step
+
+    s, R, T, U, _ = _rod_by_hand()
+    A = _rod_inertia()
+    a_prev = 0.7 * np.array([1.0, -2.0, 1.0])
+    kap = np.array([0.4, -0.9, 0.0])                        # a translation (an ideal point)
+    qdd = -1.3
+    a = a_prev + kap + s * qdd
+    out = draw_projective_step(s, R, A, a_prev, a, kap, ax)
+    ax.figure.canvas.draw()
+    assert out["values"]["qdd"][0] == pytest.approx(qdd)
+    assert out["values"]["psi"][0] == pytest.approx(T @ a)
+    np.testing.assert_allclose(out["T"].get_line(), T, rtol=1e-12)
+    np.testing.assert_allclose(out["a"].get_point(), a)

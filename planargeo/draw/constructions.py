@@ -29,6 +29,7 @@ __all__ = [
     "draw_twist_sum", "draw_wrench_sum", "draw_velocity_step", "draw_acceleration_step",
     "draw_newton_euler", "draw_polar_exterior", "draw_polar_interior",
     "draw_tangent", "draw_percussion", "draw_power", "draw_segment", "draw_dimension",
+    "draw_decomposition", "draw_twist_split", "draw_wrench_split", "draw_projective_step",
 ]
 
 
@@ -427,4 +428,294 @@ def draw_power(v, I, ax=None, *, f_angle=0.6, a_distance=1.6,
                           text_offset=lo[2]),
            "a": plot_point(a, ax, role="accel", text=names[3], glyph=False, text_offset=o[3])}
     out["values"] = {"p": p, "f": f, "a": a}
+    return out
+
+
+# --------------------------------------------------------------------------- T/U decompositions
+def _decomposition(s, R, A):
+    """``(s, R, A, T, U)`` of a joint completed by an inertia (thesis 6.36–6.37, 6.45)."""
+    from ..subspaces import Decomposition
+
+    dec = Decomposition(s, R, A)
+    return dec.s, dec.R, dec.A, dec.T, dec.U
+
+
+def _names(prefix, k):
+    """Artist keys of ``k`` columns: ``prefix`` alone for one column, else ``prefix1``..."""
+    return [prefix] if k == 1 else [f"{prefix}{j + 1}" for j in range(k)]
+
+
+def _tex(sym, k, j):
+    """``$sym$`` for one column, ``$sym_{j+1}$`` for column ``j`` of several."""
+    return f"${sym}$" if k == 1 else f"${sym}_{{{j + 1}}}$"
+
+
+def draw_decomposition(s, R, A, ax=None, *, reactive="U", labels=None, anchors=None,
+                       text_offsets=None):
+    """A joint's spaces completed by an inertia (thesis 6.2–6.3, 6.36–6.48, Figs 6.1, 6.2).
+
+    Draws the motion space ``s`` (joint poles), the percussion space
+    ``T = A s (sᵀAs)⁻¹`` (6.36, lines: for a pin, the axis of percussion of the
+    joint, ``sᵀT = 1``) and the reaction space ``R`` (lines through the joint),
+    and the accelerations the reactions produce: with ``reactive="U"`` the
+    decoupled ``U = A⁻¹R(RᵀA⁻¹R)⁻¹`` (6.45, Fig. 6.2: ``RᵀU = 1``, so ``U₁``
+    lies on ``R₂`` and ``U₂`` on ``R₁``; ``TᵀU = 0``, all on ``T``), with
+    ``reactive="inverse"`` the plain ``A⁻¹R_k`` (Fig. 6.1, the percussion poles
+    of the reactions, also on ``T``).
+
+    Parameters
+    ----------
+    s, R : array_like (3, k), (3, 3-k)
+        Motion and reaction spaces of the joint (``sᵀR = 0``).
+    A : array_like (3, 3)
+        The (rigid or articulated) inertia, positive definite.
+    reactive : {"U", "inverse"}
+        Which accelerations to mark for the reactions (see above).
+    labels, anchors, text_offsets : dict, optional
+        Per artist key (``"s"``, ``"T"``, ``"R1"``, ``"U1"`` or ``"AiR1"``...):
+        the label text (None: no label), where a line's label sits
+        (projected onto it) and the label's offset in points.
+
+    Returns
+    -------
+    dict
+        The artists keyed as above (one column: ``"s"``, ``"T"``; several:
+        ``"s1"``, ``"T1"``...), and ``"values"``: the arrays ``{"T", "U",
+        "AiR"}`` (``AiR = A⁻¹R``).
+
+    Examples
+    --------
+    A rod of mass 1, centre of mass at (1, 0), pinned at the origin:
+    ``T`` is the vertical axis of percussion ``x = (ρ² + 1)/1``.
+
+    >>> import matplotlib; matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> from planargeo.joints import revolute
+    >>> from planargeo.screws import inertia_matrix
+    >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
+    >>> out = draw_decomposition(j.s, j.R, A, plt.figure().gca())
+    >>> sorted(k for k in out if k != "values")
+    ['R1', 'R2', 'T', 'U1', 'U2', 's']
+    >>> T = out["T"].get_line()
+    >>> float(T[2] / T[1])                      # x = tz / fy on the axis (4.27): 1 + 0.25
+    1.25
+    >>> bool(np.allclose(j.R.T @ out["values"]["U"], np.eye(2)))    # RᵀU = 1 (6.48)
+    True
+    >>> plt.close("all")
+    """
+    if reactive not in ("U", "inverse"):
+        from ..errors import InputError
+
+        raise InputError(f"reactive must be 'U' or 'inverse', got {reactive!r}")
+    ax = _ax(ax)
+    s, R, A, T, U = _decomposition(s, R, A)
+    AiR = np.linalg.solve(A, R)
+    k, r = s.shape[1], R.shape[1]
+    pts, psym = (U, "U") if reactive == "U" else (AiR, "A^{-1}R")
+    keys = {"s": _names("s", k), "T": _names("T", k), "R": _names("R", r),
+            "P": _names("U" if reactive == "U" else "AiR", r)}
+    labels, anchors, offs = dict(labels or {}), dict(anchors or {}), dict(text_offsets or {})
+    default = {**{n: _tex("s", k, j) for j, n in enumerate(keys["s"])},
+               **{n: _tex("T", k, j) for j, n in enumerate(keys["T"])},
+               **{n: _tex("R", r, j) for j, n in enumerate(keys["R"])},
+               **{n: _tex(psym, r, j) if reactive == "U" or r == 1 else f"$A^{{-1}}R_{j + 1}$"
+                  for j, n in enumerate(keys["P"])}}
+    for n, t in default.items():
+        labels.setdefault(n, t)
+    out = {}
+    for j, n in enumerate(keys["T"]):
+        out[n] = plot_line(T[:, j], ax, role="momentum", scale=None, text=labels[n],
+                           anchor=anchors.get(n), text_offset=offs.get(n, (6.0, 6.0)))
+    for j, n in enumerate(keys["R"]):
+        out[n] = plot_line(R[:, j], ax, role="reaction", scale=None, text=labels[n],
+                           anchor=anchors.get(n), text_offset=offs.get(n, (6.0, 6.0)))
+    for j, n in enumerate(keys["s"]):
+        out[n] = plot_point(s[:, j], ax, glyph=False, text=labels[n], text_offset=offs.get(n))
+    for j, n in enumerate(keys["P"]):
+        out[n] = plot_point(pts[:, j], ax, role="accel", glyph=False, text=labels[n],
+                            text_offset=offs.get(n))
+    out["values"] = {"T": T, "U": U, "AiR": AiR}
+    return out
+
+
+def _arrow_scale(f, scale, arrow_length):
+    """Data units per unit force: ``arrow_length / |F|`` when an arrow length is asked for."""
+    if arrow_length is None:
+        return scale
+    F = float(np.hypot(f[0], f[1]))
+    return None if F == 0.0 else float(arrow_length) / F
+
+
+def _draw_split(parts, show, T, ax, names, text_offsets, scale, arrow_length, show_T, T_anchor):
+    out = {}
+    offs = dict(text_offsets or {})
+    if show_T:
+        for j in range(T.shape[1]):
+            n = "T" if T.shape[1] == 1 else f"T{j + 1}"
+            out[n] = plot_line(T[:, j], ax, role="construct", scale=None,
+                               text=names.get(n, _tex("T", T.shape[1], j)), anchor=T_anchor,
+                               text_offset=offs.get(n, (5.0, -2.0)))
+    for k in show:
+        a, f = parts[f"a{k}"], parts[f"f{k}"]
+        out[f"a{k}"] = plot_point(a, ax, role="accel", text=names.get(f"a{k}"),
+                                  text_offset=offs.get(f"a{k}"))
+        out[f"f{k}"] = plot_line(f, ax, role="wrench", scale=_arrow_scale(f, scale, arrow_length),
+                                 text=names.get(f"f{k}"),
+                                 text_offset=offs.get(f"f{k}", (6.0, 6.0)))
+    return out
+
+
+def _parts_arg(parts):
+    show = tuple(int(p) for p in parts)
+    if not show or any(p not in (1, 2) for p in show):
+        from ..errors import InputError
+
+        raise InputError(f"parts must be a non-empty selection of 1 and 2, got {parts!r}")
+    return show
+
+
+def draw_twist_split(s, R, A, a, ax=None, *, parts=(1, 2),
+                     names=None, text_offsets=None, scale=1.0, arrow_length=None, show_T=True,
+                     T_anchor=None):
+    """An acceleration split by a joint, and the forces of its parts (thesis 6.44, 6.75–6.76, Fig. 6.3).
+
+    ``a = s ψ + U γ`` with ``ψ = Tᵀa``, ``γ = Rᵀa`` (6.44, 6.62): ``a₁ = sψ``
+    turns the body about the joint, ``a₂ = Uγ`` lies on the axis ``T``.  Their
+    forces ``f_k = A a_k`` add up to ``A a`` (the inertia decomposition
+    ``A = T sᵀA + R UᵀA``, 6.76): ``f₁ = T sᵀA a`` is a multiple of ``T``,
+    ``f₂ = R UᵀA a`` passes through the joint.
+
+    Parameters
+    ----------
+    s, R, A : array_like
+        As in :func:`draw_decomposition`.
+    a : array_like (3,)
+        The acceleration to split.
+    parts : sequence of {1, 2}
+        Which parts to draw (e.g. one per panel); the values hold both.
+    names, text_offsets : dict, optional
+        Labels and label offsets keyed ``"a1"``, ``"f1"``, ``"a2"``, ``"f2"``, ``"T"``.
+    scale, arrow_length : float, optional
+        Force arrows: data units per unit force, or (``arrow_length``) a fixed
+        length in data units whatever the magnitude.
+    show_T, T_anchor :
+        Draw the axis ``T`` (construction line) and where its label sits.
+
+    Returns
+    -------
+    dict
+        Artists ``{"T", "a1", "f1", "a2", "f2"}`` (those drawn) and ``"values"``:
+        ``{"T", "U", "psi", "gamma", "a1", "a2", "f1", "f2"}``.
+
+    Examples
+    --------
+    >>> import matplotlib; matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> from planargeo.joints import revolute
+    >>> from planargeo.screws import inertia_matrix, unit_rotation
+    >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
+    >>> out = draw_twist_split(j.s, j.R, A, unit_rotation([2.0, 1.0]), plt.figure().gca())
+    >>> v = out["values"]
+    >>> bool(np.allclose(v["a1"] + v["a2"], unit_rotation([2.0, 1.0])))    # a = sψ + Uγ (6.44)
+    True
+    >>> bool(np.allclose(out["f1"].get_line(), A @ v["a1"]))
+    True
+    >>> plt.close("all")
+    """
+    show = _parts_arg(parts)
+    ax = _ax(ax)
+    s, R, A, T, U = _decomposition(s, R, A)
+    a = _vec(a, "a")
+    psi, gamma = T.T @ a, R.T @ a
+    a1, a2 = s @ psi, U @ gamma
+    vals = {"T": T, "U": U, "psi": psi, "gamma": gamma, "a1": a1, "a2": a2,
+            "f1": A @ a1, "f2": A @ a2}
+    nm = {"a1": r"$a_1 = s\psi$", "a2": r"$a_2 = U\gamma$", "f1": "$f_1 = Aa_1$",
+          "f2": "$f_2 = Aa_2$", **(names or {})}
+    out = _draw_split(vals, show, T, ax, nm, text_offsets, scale, arrow_length, show_T, T_anchor)
+    out["values"] = vals
+    return out
+
+
+def draw_wrench_split(s, R, A, f, ax=None, *, parts=(1, 2),
+                      names=None, text_offsets=None, scale=1.0, arrow_length=None, show_T=True,
+                      T_anchor=None):
+    """A force split by a joint, and the accelerations of its parts (thesis 6.38, 6.77–6.81, Fig. 6.4).
+
+    ``f = T Q + R μ`` with ``Q = sᵀf``, ``μ = Uᵀf`` (6.38, 6.61): the active
+    part ``f₁ = TQ`` (a multiple of the axis ``T``) turns the body about the
+    joint, ``a₁ = A⁻¹f₁ = s TᵀA⁻¹f``; the reaction ``f₂ = Rμ`` passes through
+    the joint and produces ``a₂ = A⁻¹f₂ = U RᵀA⁻¹f`` on ``T`` (6.80–6.81).
+
+    Parameters and returns as :func:`draw_twist_split` (``f`` instead of
+    ``a``); ``"values"``: ``{"T", "U", "Q", "mu", "f1", "f2", "a1", "a2"}``.
+
+    Examples
+    --------
+    >>> import matplotlib; matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> from planargeo.joints import revolute
+    >>> from planargeo.screws import inertia_matrix
+    >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
+    >>> f = np.array([0.0, 1.0, 2.0])                 # 1 N upwards on the line x = 2 (4.27)
+    >>> out = draw_wrench_split(j.s, j.R, A, f, plt.figure().gca(), parts=[1])
+    >>> v = out["values"]
+    >>> bool(np.allclose(v["f1"] + v["f2"], f)), float(v["Q"][0])   # Q = sᵀf: the moment 2
+    (True, 2.0)
+    >>> plt.close("all")
+    """
+    show = _parts_arg(parts)
+    ax = _ax(ax)
+    s, R, A, T, U = _decomposition(s, R, A)
+    f = _vec(f, "f")
+    Q, mu = s.T @ f, U.T @ f
+    f1, f2 = T @ Q, R @ mu
+    vals = {"T": T, "U": U, "Q": Q, "mu": mu, "f1": f1, "f2": f2,
+            "a1": np.linalg.solve(A, f1), "a2": np.linalg.solve(A, f2)}
+    nm = {"a1": "$a_1 = A^{-1}f_1$", "a2": "$a_2 = A^{-1}f_2$", "f1": "$f_1 = TQ$",
+          "f2": r"$f_2 = R\mu$", **(names or {})}
+    out = _draw_split(vals, show, T, ax, nm, text_offsets, scale, arrow_length, show_T, T_anchor)
+    out["values"] = vals
+    return out
+
+
+def draw_projective_step(s, R, A, a_prev, a, kappa, ax=None, *,
+                         names=("$T_i$", "$s_i$", "$a_{i-1}$", "$a_i$"),
+                         text_offsets=(None,) * 4, T_anchor=None):
+    """Projective kinematics across one joint (thesis 6.98–6.101, Fig. 6.5).
+
+    With ``T_i`` the percussion space of joint ``i`` for the body inertia
+    ``A`` (6.36), ``ψ_i = T_iᵀa_i`` and ``ψ_{i-1} = T_iᵀa_{i-1}`` are the
+    absolute accelerations along the joint (``T_i`` picks the ``s_i`` component
+    of an acceleration, 6.44), and the joint acceleration is
+    ``q̈_i = ψ_i − T_iᵀ(a_{i-1} + κ_i)`` (6.101).
+
+    Returns the artists ``{"T", "s", "a_prev", "a"}`` (first columns for a
+    multi-dof joint) and ``"values"``: ``{"T", "psi", "psi_prev", "qdd"}``.
+
+    Examples
+    --------
+    >>> import matplotlib; matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> from planargeo.joints import revolute
+    >>> from planargeo.screws import inertia_matrix, unit_rotation
+    >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
+    >>> a = 2.0 * j.s[:, 0]                            # turning about the joint at 2 rad/s²
+    >>> out = draw_projective_step(j.s, j.R, A, np.zeros(3), a, np.zeros(3), plt.figure().gca())
+    >>> out["values"]["qdd"].round(12).tolist()
+    [2.0]
+    >>> plt.close("all")
+    """
+    ax = _ax(ax)
+    s, R, A, T, _ = _decomposition(s, R, A)
+    a_prev, a, kap = _vec(a_prev, "a_prev"), _vec(a, "a"), _vec(kappa, "kappa")
+    psi, psi_prev = T.T @ a, T.T @ a_prev
+    qdd = psi - T.T @ (a_prev + kap)
+    o = list(text_offsets)
+    out = {"T": plot_line(T[:, 0], ax, role="momentum", scale=None, text=names[0],
+                          anchor=T_anchor, text_offset=(6.0, 6.0) if o[0] is None else o[0]),
+           "s": plot_point(s[:, 0], ax, glyph=False, text=names[1], text_offset=o[1]),
+           "a_prev": plot_point(a_prev, ax, role="accel", text=names[2], text_offset=o[2]),
+           "a": plot_point(a, ax, role="accel", text=names[3], text_offset=o[3])}
+    out["values"] = {"T": T, "psi": psi, "psi_prev": psi_prev, "qdd": qdd}
     return out
