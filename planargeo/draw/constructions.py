@@ -560,7 +560,7 @@ def _draw_split(parts, show, T, ax, names, text_offsets, scale, arrow_length, sh
         out[f"a{k}"] = plot_point(a, ax, role="accel", text=names.get(f"a{k}"),
                                   text_offset=offs.get(f"a{k}"))
         out[f"f{k}"] = plot_line(f, ax, role="wrench", scale=_arrow_scale(f, scale, arrow_length),
-                                 text=names.get(f"f{k}"),
+                                 text=names.get(f"f{k}"), text_at="anchor",
                                  text_offset=offs.get(f"f{k}", (6.0, 6.0)))
     return out
 
@@ -597,7 +597,9 @@ def draw_twist_split(s, R, A, a, ax=None, *, parts=(1, 2),
         Labels and label offsets keyed ``"a1"``, ``"f1"``, ``"a2"``, ``"f2"``, ``"T"``.
     scale, arrow_length : float, optional
         Force arrows: data units per unit force, or (``arrow_length``) a fixed
-        length in data units whatever the magnitude.
+        length in data units whatever the magnitude.  A force's label sits
+        beside its arrow's middle (``text_at="anchor"``); place the arrow with
+        ``out["f1"].set_anchor(xy)``.
     show_T, T_anchor :
         Draw the axis ``T`` (construction line) and where its label sits.
 

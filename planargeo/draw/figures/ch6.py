@@ -2,14 +2,16 @@
 from __future__ import annotations
 
 import numpy as np
+from shapely.geometry import Point
 
 from ...algorithms.rnea import newton_euler
 from ...inertia import Inertia, percussion_pole
 from ...joints import revolute
 from ...projective import from_xy, join, to_xy
 from ...scenes import build as build_scene
-from ...subspaces import Decomposition
 from ..artists import plot_conic, plot_line, plot_point
+from ..constructions import (draw_decomposition, draw_projective_step, draw_twist_split,
+                             draw_wrench_split)
 from ..mechanism import draw_body, draw_com, draw_model, draw_pin, link_polygon
 from . import fit_view, new_figure, register
 from ._layout import fit_panel, shape_points
@@ -44,28 +46,27 @@ def _view(ax, shape, pts, margin=0.1, *, panel=False):
 
 @register("fig6_1", "Fig. 6.1 — basic decomposition at a pin joint: force space [T R₁ R₂] with "
           "T = I s the axis of percussion of the joint (6.2–6.3) and two unit reactions through "
-          "the joint; their mapped accelerations I⁻¹T = s, I⁻¹R₁, I⁻¹R₂ (percussion poles).", 6.01)
+          "the joint; their mapped accelerations I⁻¹T = s, I⁻¹R₁, I⁻¹R₂ (percussion poles). "
+          "Drawn by constructions.draw_decomposition.", 6.01)
 def fig6_1():
     fig, ax = new_figure(3.4, 2.6)
     shape, I = _body()
     _base(ax, shape, I)
     j = revolute(J)
-    s = j.s[:, 0]
-    T = I @ s
-    R1, R2 = j.R[:, 0], j.R[:, 1]
+    out = draw_decomposition(
+        j.s, j.R, I, ax, reactive="inverse",
+        labels={"s": "$s = I^{-1}T$", "T": "$T = Is$", "AiR1": "$I^{-1}R_1$",
+                "AiR2": "$I^{-1}R_2$"},
+        text_offsets={"s": (-5, -4), "T": (5, -3), "R1": (-14, -13), "R2": (-14, -4),
+                      "AiR1": (7, 3), "AiR2": (7, 3)})
     # the joint's label below-left of the pin, right-aligned so it grows into the view
-    plot_point(s, ax, glyph=False, text="$s = I^{-1}T$", text_offset=(-5, -4)).set_text_alignment(
-        "right", "top")
-    pts = [to_xy(percussion_pole(I, R)) for R in (R1, R2)]
+    out["s"].set_text_alignment("right", "top")
+    T = out["values"]["T"][:, 0]
+    pts = [to_xy(out["values"]["AiR"][:, k]) for k in range(2)]
     lo = min(-0.5, pts[0][1] - 2.0)
-    plot_line(T, ax, role="momentum", scale=None, text="$T = Is$", anchor=_on_line(T, lo + 0.25),
-              text_offset=(5, -3))
-    for k, (R, off, anchor) in enumerate(((R1, (-14, -13), [pts[1][0] + 1.4, 0.0]),
-                                          (R2, (-14, -4), [0.0, pts[0][1]])), start=1):
-        plot_line(R, ax, role="reaction", scale=None, text=f"$R_{k}$", anchor=anchor,
-                  text_offset=off)
-        plot_point(percussion_pole(I, R), ax, role="accel", glyph=False, text=f"$I^{{-1}}R_{k}$",
-                   text_offset=(7, 3))
+    out["T"].set_anchor(_on_line(T, lo + 0.25))
+    out["R1"].set_anchor([pts[1][0] + 1.4, 0.0])
+    out["R2"].set_anchor([0.0, pts[0][1]])
     _view(ax, shape, pts + [[pts[1][0] + 1.5, lo], [-0.7, pts[0][1] + 0.3]], margin=0.02)
     return fig
 
@@ -73,25 +74,21 @@ def fig6_1():
 @register("fig6_2", "Fig. 6.2 — decoupled decomposition (6.36–6.48): the reactive accelerations "
           "U = I⁻¹R(RᵀI⁻¹R)⁻¹ lie on the axis of percussion T, U₁ on R₂ and U₂ on R₁, so "
           "RᵀU = 1 (6.47–6.48). Drawn with the inverse that the printed (6.33)–(6.34) miss (there RᵀU = (RᵀI⁻¹R)², not 1; "
-          "docs/errata.md, (6.33)–(6.34)). From subspaces.Decomposition.", 6.02)
+          "docs/errata.md, (6.33)–(6.34)). From constructions.draw_decomposition.", 6.02)
 def fig6_2():
     fig, ax = new_figure(3.4, 2.6)
     shape, I = _body()
     _base(ax, shape, I)
     j = revolute(J)
-    dec = Decomposition.from_joint(j, I)
-    assert np.allclose(dec.R.T @ dec.U, np.eye(2))
-    plot_point(j.s[:, 0], ax, glyph=False, text="$s$", text_offset=(-12, 5))
-    pts = [to_xy(dec.U[:, k]) for k in range(2)]     # U₁ on R₂ (x = 0), U₂ on R₁ (y = 0)
-    T = dec.T[:, 0]
-    plot_line(T, ax, role="momentum", scale=None, text="$T$", anchor=_on_line(T, -0.45),
-              text_offset=(5, -3))
-    for k, (off, anchor) in enumerate((((-14, -13), [pts[1][0] + 1.0, 0.0]),
-                                       ((-14, -4), [0.0, 0.5 * (1.0 + pts[0][1])]))):
-        plot_line(dec.R[:, k], ax, role="reaction", scale=None, text=f"$R_{k + 1}$", anchor=anchor,
-                  text_offset=off)
-        plot_point(dec.U[:, k], ax, role="accel", glyph=False, text=f"$U_{k + 1}$",
-                   text_offset=(6, 3))
+    out = draw_decomposition(j.s, j.R, I, ax, text_offsets={
+        "s": (-12, 5), "T": (5, -3), "R1": (-14, -13), "R2": (-14, -4), "U1": (6, 3),
+        "U2": (6, 3)})
+    U = out["values"]["U"]
+    assert np.allclose(j.R.T @ U, np.eye(2))
+    pts = [to_xy(U[:, k]) for k in range(2)]     # U₁ on R₂ (x = 0), U₂ on R₁ (y = 0)
+    out["T"].set_anchor(_on_line(out["values"]["T"][:, 0], -0.45))
+    out["R1"].set_anchor([pts[1][0] + 1.0, 0.0])
+    out["R2"].set_anchor([0.0, 0.5 * (1.0 + pts[0][1])])
     _view(ax, shape, pts + [[pts[1][0] + 1.1, -0.6], [-0.6, pts[0][1] + 0.3]], margin=0.02)
     return fig
 
@@ -100,59 +97,66 @@ def _split_panels(kind):
     fig, axs = new_figure(3.4, 4.2, nrows=2)
     shape, I = _body()
     j = revolute(J)
-    dec = Decomposition.from_joint(j, I)
     if kind == "inertia":
-        a = from_xy([2.6, -0.4]) * 1.0          # an acceleration pole, unit α
-        psi, gamma = dec.split_twist(a)
-        a1, a2 = j.s @ psi, dec.U @ gamma       # a = s ψ + U γ (6.44)
-        f1, f2 = I @ a1, I @ a2                 # I = T sᵀI + R UᵀI (6.76)
-        assert np.allclose(f1 + f2, I @ a) and np.allclose(f1, dec.T @ (j.s.T @ I @ a))
-        panels = (("A", a1, f1, "$a_1 = s\\psi$", "$f_1 = Ia_1$"),
-                  ("B", a2, f2, "$a_2 = U\\gamma$", "$f_2 = Ia_2$"))
+        q = from_xy([2.6, -0.4]) * 1.0          # an acceleration pole, unit α
+        draw, names = draw_twist_split, {"a1": "$a_1 = s\\psi$", "a2": "$a_2 = U\\gamma$",
+                                         "f1": "$f_1 = Ia_1$", "f2": "$f_2 = Ia_2$"}
     else:
-        f = join(from_xy([2.4, -0.6]), from_xy([2.0, 1.2]))   # an applied force
-        Q, mu = dec.split_wrench(f)
-        f1, f2 = dec.T @ Q, dec.R @ mu          # f = T Q + R μ (6.38)
-        a1, a2 = np.linalg.solve(I, f1), np.linalg.solve(I, f2)   # (6.80), (6.81)
-        assert np.allclose(a1, j.s @ (dec.T.T @ np.linalg.solve(I, f)))
-        panels = (("A", a1, f1, "$a_1 = I^{-1}f_1$", "$f_1 = TQ$"),
-                  ("B", a2, f2, "$a_2 = I^{-1}f_2$", "$f_2 = R\\mu$"))
-    T = dec.T[:, 0]
-    for ax, (tag, a, f, ta, tf) in zip(axs, panels):
+        q = join(from_xy([2.4, -0.6]), from_xy([2.0, 1.2]))   # an applied force
+        draw, names = draw_wrench_split, {"a1": "$a_1 = I^{-1}f_1$", "a2": "$a_2 = I^{-1}f_2$"}
+    for k, ax in enumerate(axs, start=1):
         _base(ax, shape, I)
-        plot_line(T, ax, role="construct", scale=None, text="$T$", anchor=_on_line(T, -0.85),
-                  text_offset=(5, -2))
+        out = draw(j.s, j.R, I, q, ax, parts=[k], names=names, arrow_length=0.6)
+        v = out["values"]
+        if kind == "inertia":   # a = sψ + Uγ (6.44), I a = f₁ + f₂ (6.76)
+            assert np.allclose(v["a1"] + v["a2"], q) and np.allclose(v["f1"] + v["f2"], I @ q)
+        else:                   # f = TQ + Rμ (6.38), a₁ = s TᵀI⁻¹f (6.80)
+            assert np.allclose(v["f1"] + v["f2"], q)
+            assert np.allclose(v["a1"], j.s @ (v["T"].T @ np.linalg.solve(I, q)))
+        T = v["T"][:, 0]
+        out["T"].set_anchor(_on_line(T, -0.85))
+        a, f = v[f"a{k}"], v[f"f{k}"]
         xa = to_xy(a)
-        plot_point(a, ax, role="accel", text=ta,
-                   text_offset=(-62, -16) if np.hypot(*xa) < 0.1 else (10, 1))
-        # the force arrow where its line leaves the body (upper end), its label beside it
+        if np.hypot(*xa) < 0.1:          # the pole at the joint: label left of the body
+            out[f"a{k}"].set_text_offset((-62, -16))
+        elif shape.contains(Point(xa)):  # a pole on the body: label above the body's edge
+            out[f"a{k}"].set_text_offset((8, 18))
+        else:
+            out[f"a{k}"].set_text_offset((10, 1))
+        # the force arrow above the body, where its line leaves it; its label beside the
+        # arrow's middle on the side the line leaves free (away from the body)
         e = f[:2] / np.hypot(*f[:2])
-        top = _on_line(f, 1.3) if abs(e[1]) > 0.3 else xa
-        rising = e[0] * e[1] > 0            # label on the side the line leaves free
-        plot_line(f, ax, role="wrench", scale=0.6 / np.hypot(*f[:2]), text=tf, anchor=top,
-                  text_offset=(-56, -4) if rising else (7, -4))
-        ax.text(0.02, 0.96, tag, transform=ax.transAxes, fontsize=9, fontweight="bold", va="top")
-        _view(ax, shape, [xa, [-0.7, -0.95], [2.9, 1.9]], margin=0.02, panel=True)
+        top = _on_line(f, 1.55) if abs(e[1]) > 0.3 else xa
+        rising = e[0] * e[1] > 0
+        art = out[f"f{k}"]
+        art.set_anchor(top)
+        art.set_text_offset((-8, 0) if rising else (8, 0))
+        art.set_text_alignment("right" if rising else "left", "center")
+        ax.text(0.02, 0.96, "AB"[k - 1], transform=ax.transAxes, fontsize=9, fontweight="bold",
+                va="top")
+        _view(ax, shape, [xa, [-0.7, -0.95], [2.9, 1.95]], margin=0.02, panel=True)
     return fig
 
 
 @register("fig6_3", "Fig. 6.3 — inertia decomposition I = T sᵀI + R UᵀI (6.75–6.76): an "
           "acceleration a = sψ + Uγ; A) f₁ = I sψ accelerates the body about the joint (on T), "
-          "B) f₂ = I Uγ accelerates it along the reactive space (a force through the joint).", 6.03)
+          "B) f₂ = I Uγ accelerates it along the reactive space (a force through the joint). "
+          "Drawn by constructions.draw_twist_split.", 6.03)
 def fig6_3():
     return _split_panels("inertia")
 
 
 @register("fig6_4", "Fig. 6.4 — inverse inertia decomposition (6.77–6.81): a force f = TQ + Rμ; "
           "A) the active part TQ produces a₁ = sTᵀI⁻¹f about the joint, B) the reaction Rμ "
-          "produces a₂ = URᵀI⁻¹f on the axis T.", 6.04)
+          "produces a₂ = URᵀI⁻¹f on the axis T. Drawn by constructions.draw_wrench_split.", 6.04)
 def fig6_4():
     return _split_panels("inverse")
 
 
 @register("fig6_5", "Fig. 6.5 — projective kinematics (6.98–6.101): ψ_i = T_iᵀa_i and ψ_{i−1} = "
           "T_iᵀa_{i−1} are the absolute accelerations along joint i, q̈_i = ψ_i − T_iᵀ(a_{i−1} + "
-          "κ_i); T_i from the body inertia of link 2 (RNEA state).", 6.05)
+          "κ_i); T_i from the body inertia of link 2 (RNEA state). Drawn by "
+          "constructions.draw_projective_step.", 6.05)
 def fig6_5():
     from .ch4 import Q47, QD47, QDD47, _chain3
 
@@ -160,19 +164,16 @@ def fig6_5():
     m = _chain3()
     w = newton_euler(m, Q47, QD47, QDD47)
     i = 1
-    dec = Decomposition(w.s(i), revolute(w.origin[i]).R, w.I[i])
-    T = dec.T[:, 0]
-    psi_i, psi_prev = T @ w.a[i], T @ w.a[i - 1]
-    qdd = psi_i - T @ (w.a[i - 1] + w.kappa[i])
-    assert np.isclose(qdd, QDD47[i])
     arts = draw_model(m, w, ax, show_com=False)
     P = np.vstack([shape_points(*arts["shapes"]), to_xy(w.a[i - 1]), to_xy(w.a[i])])
     lo = P.min(axis=0)
-    plot_line(T, ax, role="momentum", scale=None, text="$T_2$", text_offset=(-4, 6),
-              anchor=P.max(axis=0) - [0.9, 0.0])
-    plot_point(w.s(i)[:, 0], ax, glyph=False, text="$s_2$", text_offset=(-16, -12))
-    plot_point(w.a[i - 1], ax, role="accel", text="$a_1$", text_offset=(-18, 6))
-    plot_point(w.a[i], ax, role="accel", text="$a_2$", text_offset=(17, -6))
+    out = draw_projective_step(w.s(i), revolute(w.origin[i]).R, w.I[i], w.a[i - 1], w.a[i],
+                               w.kappa[i], ax, names=("$T_2$", "$s_2$", "$a_1$", "$a_2$"),
+                               text_offsets=((-4, 6), (-16, -12), (-18, 6), (17, -6)),
+                               T_anchor=P.max(axis=0) - [0.9, 0.0])
+    v = out["values"]
+    psi_i, psi_prev, qdd = v["psi"][0], v["psi_prev"][0], v["qdd"][0]
+    assert np.isclose(qdd, QDD47[i])
     fit_panel(ax, np.vstack([P, lo - [0.0, 0.45]]), margin=0.04)
     ax.text(0.98, 0.02, f"$\\psi_2$ = {psi_i:.3g},  $\\psi_1$ = {psi_prev:.3g},  "
             f"$\\ddot q_2$ = {qdd:.3g}", transform=ax.transAxes, fontsize=7, ha="right",

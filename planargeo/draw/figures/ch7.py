@@ -96,14 +96,18 @@ def fig7_3():
         arts = draw_model(res.model, d, ax, ground=False, labels=False, show_com=detail)
         cs = [plot_conic(d.I[j], ax, role="inertia", color=COLORS["construct"], mark_center=False)
               for j in range(2)] if detail else []
-        cs.append(plot_conic(A1, ax, role="inertia", text="$A_1$" if detail else None,
-                             text_offset=(-4, -16), mark_center=detail))
+        cs.append(plot_conic(A1, ax, role="inertia", mark_center=detail))
         plot_line(f1, ax, scale=0.6 if detail else None, anchor=[-0.35, 0.0],
                   text="$f_1$" if detail else None, text_offset=(-20, 4))
         plot_line([0.0, 1.0, 0.0], ax, role="construct", scale=None)    # x = 0 through CJ₁
         P = np.vstack([shape_points(*arts["shapes"]), *[c.get_xy() for c in cs]])
         if detail:
             label(ax, [0, 0], "$CJ_1$", offset=(-22, -14), fontsize=7)
+            # A₁'s label outside every circle: at its lower-right point (the bodies' grey
+            # circles lie left and above), pushed outward
+            xy = cs[-1].get_xy()
+            label(ax, xy[np.argmax(xy[:, 0] - xy[:, 1])], "$A_1$", offset=(2, -2), ha="left",
+                  va="top")
             ax.text(0.98, 0.02, f"φ = {np.rad2deg(res.params['phi']):.0f}°, "
                     f"λ = {res.quantities['lam']:g}:\n$m_x/m$ = {res.quantities['mx_over_m']:.3f}",
                     transform=ax.transAxes, fontsize=7, ha="right")
