@@ -6,7 +6,8 @@ Math modules never import matplotlib; this package imports the math.
   ``plot_point`` / ``plot_line`` / ``plot_conic`` / ``plot_inertia``;
 * :mod:`~planargeo.draw.constructions`: the thesis's constructions (``draw_twist_sum``,
   ``draw_wrench_sum``, ``draw_polar_exterior``, ``draw_polar_interior``, ``draw_percussion``,
-  ``draw_power`` ...);
+  ``draw_power``, the T/U decompositions of chapter 6: ``draw_decomposition``,
+  ``draw_twist_split``, ``draw_wrench_split``, ``draw_projective_step`` ...);
 * :mod:`~planargeo.draw.mechanism`: bodies, pins, sliders, ground, ``draw_model``,
   ``draw_joint_split``;
 * :mod:`~planargeo.draw.charts`: curves over a parameter;
@@ -15,8 +16,9 @@ Math modules never import matplotlib; this package imports the math.
 """
 from .artists import (ConicArtist, LineArtist, PointArtist, plot_conic, plot_inertia,  # noqa: F401
                       plot_line, plot_point)
-from .constructions import (draw_percussion, draw_polar_exterior, draw_polar_interior,  # noqa: F401
-                            draw_power, draw_tangent, draw_twist_sum, draw_wrench_sum)
+from .constructions import (draw_decomposition, draw_percussion, draw_polar_exterior,  # noqa: F401
+                            draw_polar_interior, draw_power, draw_projective_step, draw_tangent,
+                            draw_twist_split, draw_twist_sum, draw_wrench_split, draw_wrench_sum)
 from .mechanism import (draw_body, draw_ground, draw_joint_split, draw_link, draw_model,  # noqa: F401
                         draw_pin, draw_slider)
 from .style import COLORS, OKABE_ITO, rc_context, style  # noqa: F401
