@@ -345,3 +345,49 @@ def test_model_contacts_used_by_default():
     m = Model(base.bodies, base.joints, base.parents, base.gravity, contacts=(pin,))
     q, qd = [1.2, -1.2, 1.2 - np.pi], [1.0, -1.0, 1.0]
     assert forward_dynamics_loops(m, q, qd, [0.0] * 3)[0] == pytest.approx(-1.2 * 9.81 * np.cos(1.2))
+
+
+# --------------------------------------------------------------------------- contact columns of Λ⁻¹
+@pytest.mark.parametrize("n, ncontacts, seed, tree", LARGE_LOOPS[:4])
+def test_column_solve_matches_full_mobility_and_lagrange(n, ncontacts, seed, tree):
+    """loop_solve's default forms only Λ⁻¹ Gᵀ (tree sweeps); it agrees with the full-Λ⁻¹ transcription
+    of 9.65-9.73 and with the maximal-coordinate Lagrange multipliers, and its columns are those of
+    the full matrix (built only when sol.Lambda_inv is read)."""
+    m, cs, q, qd, tau, fe, Jc = large_loop(n, seed, ncontacts, tree)
+    col = loop_solve(m, q, qd, tau, fe, cs)
+    assert not hasattr(col.tree, "_mob")                 # the full mobility was never built
+    full = loop_solve(m, q, qd, tau, fe, cs, mobility="full")
+    rtol = max(1e-11, 100 * np.finfo(float).eps * np.linalg.cond(mass_matrix(m, q)) * full.cond)
+    scale = max(1.0, np.abs(full.a).max(), np.abs(full.F).max())
+    for name in ("a", "F", "xi", "qdd"):
+        assert np.abs(getattr(col, name) - getattr(full, name)).max() < rtol * scale, name
+    ref = constrained_dynamics_lagrange(m, q, qd, tau, fe, cs)
+    assert np.abs(col.a.reshape(-1, 3) - ref["a"]).max() < rtol * scale
+    assert np.abs(col.F.reshape(-1, 3) - ref["F"]).max() < rtol * scale
+    Lam = col.Lambda_inv                                  # built now, on access
+    assert np.allclose(col.Lambda_inv_Gt, Lam @ col.G3.T, atol=1e-12 * np.abs(Lam).max())
+    assert np.allclose(col.contact_mobility, col.G3 @ Lam @ col.G3.T, atol=1e-12 * np.abs(Lam).max())
+
+
+def test_mobility_times_is_the_mobility_on_a_hand_case():
+    """Two uniform unit links pinned at the origin, straight along x, at rest, no gravity: a unit couple
+    on the tip body gives it the acceleration J₂ H⁻¹ J₂ᵀ e_z (H and J₂ by hand); and mobility_times(X)
+    equals the full Φ X for any X."""
+    from planargeo.algorithms.stacked import stacked_solve
+    m = chain_model(2, gravity=(0.0, 0.0))
+    sol = stacked_solve(m, [0.0, 0.0], [0.0, 0.0], [0.0, 0.0])
+    # hand mass matrix of two uniform unit links: H = [[5/3 + c, 1/3 + c/2], [1/3 + c/2, 1/3]] with c = cos q2 = 1
+    H = np.array([[8 / 3, 5 / 6], [5 / 6, 1 / 3]])
+    J2 = np.array([[0.0, 0.0], [0.0, -1.0], [1.0, 1.0]])        # body 2's joint-space Jacobian at the origin
+    X = np.zeros((6, 1)); X[5, 0] = 1.0                         # unit couple on body 2
+    qdd = np.linalg.solve(H, J2.T @ X[3:, 0])
+    a2 = J2 @ qdd                                               # body 2's acceleration (no bias at rest)
+    assert np.allclose(sol.mobility_times(X)[3:, 0], a2, atol=1e-12)
+    rng = np.random.default_rng(0)
+    Y = rng.normal(size=(6, 4))
+    assert np.allclose(sol.mobility_times(Y), sol.mobility @ Y, atol=1e-12)
+
+
+def test_mobility_option_is_checked():
+    with pytest.raises(InputError, match="mobility must be 'columns' or 'full', got 'dense'"):
+        loop_solve(chain_model(1), [0.0], [0.0], [0.0], mobility="dense")

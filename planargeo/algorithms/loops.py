@@ -79,7 +79,11 @@ class LoopSolution:
     G, Upsilon : (m, N) contact and branch matrices; ``G3`` the 3m×3N blocks
     z, B : block-diagonal contact motion / reaction spaces
     u : (3N,) open-loop accelerations (9.63)
-    Lambda_inv : (3N, 3N) the tree's mobility (the ``Λ^{-1}`` of 9.65-9.73)
+    Lambda_inv : (3N, 3N) the tree's full mobility (the ``Λ^{-1}`` of 9.65-9.73); built on first
+        access (``tree.mobility``): the solve itself uses only its contact columns
+    Lambda_inv_Gt : (3N, 3m) the contact columns ``Λ^{-1} G^T`` (two unit-triangular solves,
+        :meth:`~planargeo.algorithms.stacked.StackedSolution.mobility_times`)
+    contact_mobility : (3m, 3m) ``G Λ^{-1} G^T``, the mobility seen at the contacts
     J : (3m, 3m) branch composite inertia ``Υ I Υ^T`` (9.57)
     theta_dot : contact rates (9.58); nu : (3m,) contact bias accelerations
     K : ``B^T G Λ^{-1} G^T B`` ; cond : its condition number
@@ -107,6 +111,11 @@ class LoopSolution:
     def __repr__(self):
         return f"LoopSolution(N={self.tree.N}, contacts={self.G.shape[0]}, cond={self.cond:.3g})"
 
+    @property
+    def Lambda_inv(self) -> np.ndarray:
+        """The tree's full stacked mobility ``Λ^{-1}`` (3N×3N), built on first access (``tree.mobility``)."""
+        return self.tree.mobility
+
 
 @functools.lru_cache(maxsize=256)
 def _contact_topology(parents: tuple, contacts: tuple):
@@ -125,7 +134,8 @@ def _contacts_of(model, contacts):
     return validate_contacts(cs, model.N)
 
 
-def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribed=None) -> LoopSolution:
+def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribed=None,
+               mobility: str = "columns") -> LoopSolution:
     """Constrained projective dynamics algorithm, one state (thesis 9.5).
 
     Parameters
@@ -144,6 +154,13 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
         body and its parent with ``B = s (s^T s)^{-1}`` and
         ``ν = κ_i + s q̈_prescribed``; the returned ``qdd`` of a driven joint
         is the prescribed value exactly.
+    mobility : {"columns", "full"}
+        How ``Λ^{-1}`` enters 9.65-9.73, which read it only through
+        ``Λ^{-1} G^T``: ``"columns"`` (default) forms just those ``3m`` (+ 3
+        per drive) columns, ``Lᵀ (S Tᵀ A⁻¹ (L Gᵀ))`` by two unit-triangular
+        solves with ``L⁻¹ = 1 - Cᵀ P``; ``"full"`` builds the full 3N×3N
+        ``Λ^{-1} = Lᵀ S Tᵀ A⁻¹ L`` first (the direct transcription, kept as a
+        check).  Either way ``sol.Lambda_inv`` gives the full matrix on access.
 
     Returns
     -------
@@ -167,6 +184,8 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
     >>> bool(abs(sol.qdd[0] - (-6 / 5 * 9.81 * np.cos(1.2))) < 1e-12)
     True
     """
+    if mobility not in ("columns", "full"):
+        raise InputError(f"mobility must be 'columns' or 'full', got {mobility!r}")
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
     if shape != ():
         raise ShapeError(f"loop_solve takes one state, got batch shape {shape}")
@@ -185,10 +204,9 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
     sol.G = G
     z, B = stacked_contact_spaces(cs, data.pose)
     v = data.v.reshape(-1)
-    # 2. open-loop accelerations and the tree's mobility
+    # 2. open-loop accelerations (the tree's mobility enters below, through its contact columns)
     u = tree.a
-    Lam = tree.mobility
-    sol.u, sol.Lambda_inv = u, Lam
+    sol.u = u
     # 3. kinematics of the contacts (9.57, 9.58, 9.55)
     J = U3 @ tree.I @ U3.T
     sol.J = J
@@ -239,8 +257,17 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
         c0 += b.shape[1]
     nuall = np.concatenate(nu_rows)
     sol.z, sol.B, sol.nu, sol.G3 = z, B, nu, G3
-    # 4. contact forces (9.70-9.72)
-    K = Ball.T @ Gall @ Lam @ Gall.T @ Ball
+    # 4. contact forces (9.70-9.72): Λ^{-1} is read only as Λ^{-1} G^T
+    if mobility == "full":
+        LamGt = tree.mobility @ Gall.T
+    else:
+        LamGt = tree.mobility_times(Gall.T)
+    ncr = G3.shape[0]
+    sol.Lambda_inv_Gt = LamGt[:, :ncr]
+    GLG = Gall @ LamGt
+    GLG = 0.5 * (GLG + GLG.T)                      # symmetric in exact arithmetic
+    sol.contact_mobility = GLG[:ncr, :ncr]
+    K = Ball.T @ GLG @ Ball
     sol.K = K
     if K.size:
         cond = float(np.linalg.cond(K))
@@ -262,7 +289,7 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
     sol.xi = xi_all[:nbc]
     sol.F = Fall[:3 * len(cs)]
     # 5. closed-loop accelerations (9.73, 9.75)
-    a = u - Lam @ (Gall.T @ Fall)
+    a = u - LamGt @ Fall
     sol.a = a
     sol.qdd = tree.T.T @ (a - tree.C @ a - tree.kappa)
     tau_drive = np.array(tau, dtype=float)

@@ -375,6 +375,7 @@ class StackedSolution:
     C, Dinv : (3N, 3N) block adjacency and trunk matrices (9.1, 9.12)
     S, T : (3N, nq) joint axes and percussion spaces (9.9, 9.19)
     P : (3N, 3N) block-diagonal ``R U^T = 1 - T S^T`` (7.8)
+    Linv : (3N, 3N) ``L^{-1} = 1 - C^T P``, unit upper triangular (9.31)
     R, U : (3N, 3N-nq) reaction and quake spaces (9.20), computed on demand
     I, A : (3N, 3N) block-diagonal inertias and articulated inertias
     L : (3N, 3N) articulation matrix (9.31)
@@ -443,6 +444,40 @@ class StackedSolution:
             self._mob = 0.5 * (self._mob + self._mob.T)
         return self._mob
 
+    def mobility_times(self, X) -> np.ndarray:
+        """``Φ X`` without forming ``Φ`` or ``L``: ``Lᵀ (S Tᵀ A⁻¹ (L X))`` by two unit-triangular solves.
+
+        ``L⁻¹ = 1 - Cᵀ P`` is block upper triangular along the tree, so
+        ``Y = L X`` is the inward sweep ``Y_λ(i) += P_i Y_i`` (children first,
+        the articulated load of 9.31/9.34) and ``Z = Lᵀ W`` the outward sweep
+        ``Z_i = W_i + P_iᵀ Z_λ(i)``: ``O(N k)`` for the ``k`` columns of ``X``
+        (3N × k), 3×3 blocks only, instead of the ``3N × 3N`` inverse and
+        products of :attr:`mobility`.  This is what the loop solver needs:
+        the contact columns ``Λ⁻¹ Gᵀ`` (9.65-9.73).
+
+        Examples
+        --------
+        The unit link of :func:`stacked_mobility`: a unit couple turns it at 3 rad/s².
+
+        >>> from planargeo.model import chain_model
+        >>> sol = stacked_solve(chain_model(1), [0.0], [0.0], [0.0])
+        >>> sol.mobility_times(np.array([[0.0], [0.0], [1.0]])).ravel().round(12) + 0.0
+        array([0., 0., 3.])
+        """
+        X = np.asarray(X, dtype=float)
+        N, P, par = self.N, self.articulated["P"], self.parents
+        Y = X.reshape(N, 3, -1).copy()
+        for i in range(N - 1, 0, -1):                  # Y = L X: children before parents
+            j = par[i]
+            if j >= 0:
+                Y[j] += P[i] @ Y[i]
+        Z = np.einsum("nij,njk->nik", self.mobs, Y)   # S Tᵀ A⁻¹, block diagonal
+        for i in range(1, N):                          # Z = Lᵀ W: parents before children
+            j = par[i]
+            if j >= 0:
+                Z[i] += P[i].T @ Z[j]
+        return Z.reshape(X.shape)
+
 
 def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> StackedSolution:
     """Solve one state of a tree in stacked form (thesis 9.17-9.43, 9.39).
@@ -508,7 +543,10 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     else:
         mobs = [_effective_mobility(Ai, si, f"sᵀAs of joint {i}") for i, (si, Ai) in enumerate(zip(art["s"], art["A"]))]
     sol.StTAinv = _blockdiag(mobs, three, three)
+    sol.mobs = np.reshape(mobs, (N, 3, 3))         # its 3×3 blocks (mobility_times)
+    sol.parents = tuple(model.parents)
     sol.a = _unit_upper_solve(Linv, sol.StTAinv @ (T @ Q - sol.d) + P.T @ sol.kappa, trans=True)  # U R^T = P^T
+    sol.Linv = Linv
     # (9.41) with (9.17): internal forces
     sol.f = T @ Q + P @ (A @ (C @ sol.a + sol.kappa) + sol.d)
     # (9.43): q̈ = T^T (Δ a - κ)
