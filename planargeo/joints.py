@@ -45,8 +45,8 @@ exactly, and its reaction space is the unit couple ``[0, 0, 1]``, the line at
 infinity, whatever ``point``), while ``plane`` is the 3-dof free planar joint
 of the package's model (:class:`planargeo.model.Joint` kinds), whose reaction
 space is empty.  The column order of every kind the model knows matches
-:func:`planargeo.kinematics.joint_axes`; ``twin_prismatic`` is not (yet) a
-model joint kind, its columns are the first two of ``plane``.
+:func:`planargeo.kinematics.joint_axes` (``twin_prismatic``'s columns are the
+first two of ``plane``).
 """
 from __future__ import annotations
 

@@ -191,9 +191,18 @@ def _solve_A(A: np.ndarray, B: np.ndarray, name: str, eig=None) -> np.ndarray:
     return np.linalg.solve(np.broadcast_to(A, shape + A.shape[-2:]), np.broadcast_to(B, shape + B.shape[-2:]))
 
 
-def _solve(M: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """``M⁻¹ b`` for one small ``M`` already checked non-singular."""
-    return np.linalg.solve(M, b)
+def _solve(M: np.ndarray, b: np.ndarray, what: str = "a recursion matrix") -> np.ndarray:
+    """``M⁻¹ b`` for one small ``M`` already checked non-singular.
+
+    The caller's cheap condition estimate can pass a matrix that LAPACK still finds
+    exactly singular (a zero pivot after round-off, e.g. masses mixed over 14 decades
+    in the mobility recursion 7.38): that is reported as a SingularConfigurationError
+    with ``cond = inf``, never as numpy's bare LinAlgError.
+    """
+    try:
+        return np.linalg.solve(M, b)
+    except np.linalg.LinAlgError:
+        raise SingularConfigurationError(f"{what} is singular to working precision", math.inf) from None
 
 
 def _right_solve(X: np.ndarray, M: np.ndarray) -> np.ndarray:

@@ -274,3 +274,22 @@ def test_the_tip_joint_away_from_the_origin_is_what_sets_the_condition():
     for name, f in METHODS.items():
         kind, out = _call(f, model, q, qd, tau)
         assert kind == "raise", name
+
+
+def test_mobility_recursion_with_masses_mixed_over_fourteen_decades_is_a_named_error():
+    # masses alternating 1e7 and 1e-7 (the breakdown study's chain, section g): in 7.38a the matrix
+    # 1 + U Rᵀ Λ⁻¹ I adds 1 to products of order 1e14 and LAPACK meets an exact zero pivot; that must be
+    # a SingularConfigurationError (cond = inf), never numpy's bare LinAlgError, while ABA still answers
+    # and agrees with an exact-fraction solve of the joint-space equations (written independently of the package)
+    from planargeo import _reference as ref
+
+    model = ref.alternating_chain(20, 14)
+    q, qd, tau = ref.state(20, 3)
+    with pytest.raises(SingularConfigurationError, match="singular to working precision") as err:
+        forward_dynamics_mobility_split(model, q, qd, tau)
+    assert err.value.cond == math.inf
+    exact = np.array(ref.reference_qdd(model, q, qd, tau, mode="exact"), dtype=float)
+    H, _ = ref.reference_system(model, q, qd, tau, mode="exact")
+    cond = ref.cond_spd(H)
+    assert cond > 1e12
+    assert _rel(forward_dynamics(model, q, qd, tau), exact) < 100 * EPS * cond

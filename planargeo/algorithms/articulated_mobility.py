@@ -175,8 +175,9 @@ def _mobility(I, S, kappa, p, tau):
             c = _cond(M)
             if not c < SOLVE_COND_LIMIT:
                 raise SingularConfigurationError(f"1 + U R^T Lambda^-1 I of body {i} is singular", c)
-            Lam[i] = _solve(M, G + P @ Lam[i - 1])                           # (7.38a)
-            b[i] = _solve(M, eta - P @ (Lam[i - 1] @ p[i] - b[i - 1] - kappa[i]))  # (7.38b)
+            Lam[i] = _solve(M, G + P @ Lam[i - 1], f"1 + U R^T Lambda^-1 I of body {i}")  # (7.38a)
+            b[i] = _solve(M, eta - P @ (Lam[i - 1] @ p[i] - b[i - 1] - kappa[i]),
+                          f"1 + U R^T Lambda^-1 I of body {i}")  # (7.38b)
         Lam[i] = 0.5 * (Lam[i] + Lam[i].T)              # symmetric by construction; remove round-off
     return Lam, b, T
 

@@ -79,7 +79,7 @@ def _split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kapp
     P = _EYE3 - T_next @ s_next.T                         # R U^T (7.8)
     K = P @ A_next
     rhs = b_i - Lam_i @ (T_next @ Q_next + P @ (A_next @ kappa_next + d_next))
-    return _solve(_C(Lam_i, K), rhs)
+    return _solve(_C(Lam_i, K), rhs, "1 + Lambda^-1 R U^T A of the split")
 
 
 def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) -> np.ndarray:
