@@ -1,11 +1,13 @@
 """Time integration of a mechanism's equations of motion.
 
 :func:`simulate` integrates ``q̈ = forward(model, q, q̇, τ, f_ext)`` with one
-of scipy's adaptive integrators (``"RK45"``, ``"DOP853"``, ``"Radau"``),
-stepped one accepted step at a time, or with a fixed-step classical
-Runge-Kutta (``"RK4"``).  Every accepted step is recorded with its
-diagnostics: total energy (kinetic ``½ Σ vᵢᵀ Iᵢ vᵢ`` plus gravitational
-potential) and, when a constraint is plugged in, its residuals.
+of scipy's adaptive integrators (explicit Runge-Kutta ``"RK23"``,
+``"RK45"``, ``"DOP853"``; implicit ``"Radau"``, ``"BDF"``; ``"LSODA"``,
+which switches between Adams and BDF by stiffness), stepped one accepted
+step at a time, or with a fixed-step classical Runge-Kutta (``"RK4"``).
+Every accepted step is recorded with its diagnostics: total energy (kinetic
+``½ Σ vᵢᵀ Iᵢ vᵢ`` plus gravitational potential) and, when a constraint is
+plugged in, its residuals.
 
 Hooks (for closed loops and other constrained systems):
 
@@ -15,7 +17,9 @@ Hooks (for closed loops and other constrained systems):
     Correct the accelerations, e.g. Baumgarte terms ``-2α φ̇ - β² φ``.
 ``project(q, qd) -> (q, qd)``
     Pull the state back onto the constraint manifold after each accepted step
-    (the adaptive integrator restarts from the projected state).
+    (the adaptive integrator restarts from the projected state when it moved;
+    the multistep ``"BDF"`` and ``"LSODA"`` restart at order 1 with a small
+    step, so a projection that fires at every step keeps them slow).
 ``residual(q, qd) -> array``
     Constraint residuals recorded at every step.
 ``energy(q, qd) -> float``
@@ -62,9 +66,18 @@ from .errors import InputError, SingularConfigurationError
 from .kinematics import check_state, kinematics
 from .model import Model
 
-__all__ = ["simulate", "SimulationResult", "energy", "progress_enabled", "near_singular_events", "METHODS"]
+__all__ = ["simulate", "SimulationResult", "energy", "progress_enabled", "near_singular_events", "METHODS",
+           "MULTISTEP"]
 
-METHODS = ("RK45", "DOP853", "Radau", "RK4")
+METHODS = ("RK23", "RK45", "DOP853", "Radau", "BDF", "LSODA", "RK4")
+
+#: scipy's ``OdeSolver`` class of each adaptive method (``"RK4"`` is stepped here).
+_SCIPY_SOLVERS = {"RK23": "RK23", "RK45": "RK45", "DOP853": "DOP853", "Radau": "Radau", "BDF": "BDF",
+                  "LSODA": "LSODA"}
+
+#: The multistep methods: a restart (after a projection that moved the state) begins again at
+#: order 1 with a small step, so projecting after every step keeps them there (docs/simulation.md).
+MULTISTEP = ("BDF", "LSODA")
 
 
 def energy(model: Model, q, qd) -> tuple[np.ndarray, np.ndarray]:
@@ -218,7 +231,12 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         Joint forces (zero by default: a free, conservative mechanism).
     f_ext : array_like (N, 3) or callable ``f_ext(t, q, qd)``, optional
         External world wrenches at the origin.
-    method : {"DOP853", "RK45", "Radau", "RK4"}
+    method : {"DOP853", "RK23", "RK45", "Radau", "BDF", "LSODA", "RK4"}
+        scipy's adaptive solvers (``scipy.integrate.<method>``, stepped one
+        accepted step at a time; ``Radau``, ``BDF`` and ``LSODA`` estimate
+        their Jacobian by finite differences, counted in ``nfev``) or
+        fixed-step classical RK4 (:data:`METHODS`).  Every method records
+        the same diagnostics at every accepted step (or output time).
     rtol, atol : float
         Tolerances of the adaptive methods.
     dt : float, optional
@@ -365,7 +383,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         else:
             from scipy import integrate
 
-            cls = {"RK45": integrate.RK45, "DOP853": integrate.DOP853, "Radau": integrate.Radau}[method]
+            cls = getattr(integrate, _SCIPY_SOLVERS[method])
 
             def make(t0, y0, first_step=None):
                 return cls(rhs, t0, y0, t_end, rtol=rtol, atol=atol, max_step=max_step, first_step=first_step)
