@@ -150,8 +150,8 @@ class DirectResult:
 def integrate_direct(system: dict, method: str, rtol: float, atol: float, forward=None):
     """``scipy.integrate.solve_ivp`` on the same right-hand side ``(q̇, q̈(q, q̇))`` as :func:`simulate`.
 
-    For the scipy methods :func:`~planargeo.simulate.simulate` does not offer (``RK23``, ``BDF``,
-    ``LSODA``).  The dynamics are the package's: ``forward_dynamics`` (ABA) for the chain, the loop
+    Used for a method :func:`~planargeo.simulate.simulate` does not offer (today it offers every
+    method of the study, so only :func:`simulate_overhead` calls this).  The dynamics are the package's: ``forward_dynamics`` (ABA) for the chain, the loop
     solver (``loop_solve``, as ``simulate_loops(stabilization="none")`` uses it) for the slider-crank.
     No per-step diagnostics are recorded (``simulate`` computes energy and residuals at every step):
     :func:`simulate_overhead` measures what that costs.  ``nfev`` counts every evaluation of the
@@ -448,10 +448,10 @@ def write_markdown(res: dict, path: Path) -> None:
          "## Method", "",
          "Each system is integrated with scipy's `RK23`, `RK45`, `DOP853`, `Radau`, `BDF` and `LSODA` "
          f"over a range of `rtol` (`atol = {ATOL_FACTOR:g} rtol`) and with fixed-step classical `RK4` over a range "
-         "of `dt`: `RK45`, `DOP853`, `Radau` and `RK4` through `planargeo.simulate.simulate` (the ones it offers), "
-         "`RK23`, `BDF` and `LSODA` (marked †) by `scipy.integrate.solve_ivp` driven directly on the same "
-         "right-hand side (the package's forward dynamics; for the slider-crank the loop solver, as "
-         "`simulate_loops(stabilization=\"none\")` uses it), without `simulate`'s per-step diagnostics.  "
+         "of `dt`, all through `planargeo.simulate.simulate` (for the slider-crank, the loop solver as "
+         "`simulate_loops(stabilization=\"none\")` uses it); a method `simulate` did not offer would be run by "
+         "`scipy.integrate.solve_ivp` directly on the same right-hand side, without the per-step diagnostics, "
+         "and marked †.  "
          "**Error** is `‖y(t_end) − y_ref(t_end)‖∞` over the state `y = (q, q̇)` (rad, rad/s) against a "
          "reference run of `DOP853` at `rtol = 1e-13`, `atol = 1e-14`; the reference itself is checked against a "
          "second, independent run and their disagreement is its error floor (errors near it are not resolved).  "
