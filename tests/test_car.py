@@ -166,7 +166,8 @@ def test_thesis_remark_signs_at_defaults():
 
 def test_registry_and_plain_outputs():
     assert "car" in scenes.names()
-    assert scenes.parameters("car") == dict(m=1200.0, rho=1.2, L=2.6, d=8.0, eps=0.45, omega=0.5, F_A=2000.0)
+    assert scenes.parameters("car") == dict(m=1200.0, rho=1.2, L=2.6, d=8.0, eps=0.45, omega=0.5, F_A=2000.0,
+                                            outlines=True)
     res = scenes.build("car", omega=1.0)
     assert res.name == "car" and res.params["omega"] == 1.0
     for key, value in res.quantities.items():
@@ -183,6 +184,8 @@ def test_registry_and_plain_outputs():
     (dict(d=np.nan), errors.NonFiniteError, "d must be finite"),
     (dict(F_A=[1.0, 2.0]), errors.ShapeError, "F_A must be a scalar"),
     (dict(omega="fast"), errors.InputError, "omega must be numeric"),
+    (dict(outlines="no"), errors.SceneError, "^outlines must be True or False, got 'no'$"),
+    (dict(outlines=1), errors.SceneError, "^outlines must be True or False, got 1$"),
 ])
 def test_bad_parameters(kw, err, msg):
     with pytest.raises(err, match=msg):
@@ -218,3 +221,83 @@ def test_drawing_geometry():
 def _point(xy):
     from shapely.geometry import Point
     return Point(*xy)
+
+
+# --------------------------------------------------------------------------- outlines=False
+def _has_shapely(x):
+    from shapely.geometry.base import BaseGeometry
+    if isinstance(x, BaseGeometry):
+        return True
+    if isinstance(x, (list, tuple)):
+        return any(_has_shapely(y) for y in x)
+    if isinstance(x, dict):
+        return any(_has_shapely(y) for y in x.values())
+    return False
+
+
+def _counting_outlines(monkeypatch):
+    """Count the calls of the scene's shapely outline builder (the real one still runs)."""
+    import planargeo.scenes.car as car_module
+    calls = []
+    real = car_module._outlines
+
+    def counted(*args):
+        calls.append(args)
+        return real(*args)
+
+    monkeypatch.setattr(car_module, "_outlines", counted)
+    return calls
+
+
+@pytest.mark.parametrize("kw", PARAM_SETS)
+def test_outlines_false_same_outputs_no_outlines(kw, monkeypatch):
+    calls = _counting_outlines(monkeypatch)
+    full = car(**_params(kw))
+    assert len(calls) == 1 and _has_shapely(full.extra["tyres"])
+    assert _has_shapely([b.shape for b in full.model.bodies])
+    bare = car(**_params(kw), outlines=False)
+    assert len(calls) == 1                                   # not built for the bare scene
+    # every quantity bit for bit (the report's numbers)
+    assert bare.quantities == full.quantities
+    assert bare.params == full.params and bare.state == full.state and bare.name == full.name
+    # the drawing data minus the outlines, arrays exactly equal
+    assert set(bare.extra) == set(full.extra) - {"tyres"}
+    for k, v in bare.extra.items():
+        if isinstance(v, np.ndarray):
+            assert np.array_equal(v, full.extra[k]), k
+        elif isinstance(v, float):
+            assert v == full.extra[k], k
+    assert not _has_shapely(bare.extra)
+    # the model: same mass properties and joint, no shape
+    (b0,), (f0,) = bare.model.bodies, full.model.bodies
+    assert b0.shape is None
+    assert (b0.mass, tuple(b0.com), b0.inertia, b0.name) == (f0.mass, tuple(f0.com), f0.inertia, f0.name)
+    assert bare.model.joints == full.model.joints and bare.model.parents == full.model.parents
+    # ω̇ through the bare model still matches the thesis closed form 6.131
+    from planargeo.algorithms.crba import forward_dynamics_crba
+    p = _params(kw)
+    _T, _U, omega_dot, mu = thesis_closed_forms(**p)
+    st_ = bare.state
+    qdd = forward_dynamics_crba(bare.model, st_["q"], st_["qd"], st_["tau"], f_ext=st_["f_ext"])
+    assert np.isclose(qdd[0], omega_dot, rtol=1e-10, atol=1e-14)
+    np.testing.assert_allclose(bare.quantities["mu"], mu, rtol=1e-10, atol=1e-9)
+
+
+def test_car_explorer_skips_the_outlines(monkeypatch):
+    """CarExplorer asks for outlines=False (it draws its own outline): no shapely work per change."""
+    from planargeo.widgets.car import CarExplorer
+
+    calls = _counting_outlines(monkeypatch)
+    ex = CarExplorer(display="agg")
+    ex.set(**{"speed (m/s)": 9.0, "turn radius (m)": 20.0, "drive force (N)": -1000.0})
+    assert ex.message == ""
+    assert ex.n_computes >= 2                                # the scene did run, several times
+    assert calls == []                                       # ... never building an outline
+    # what it shows is still the thesis's closed form (6.131, 6.133)
+    v = ex.values
+    _T, _U, omega_dot, mu = thesis_closed_forms(m=v["mass (kg)"], rho=v["radius of gyration (m)"], L=2.6,
+                                                d=20.0, eps=v["COM behind front (ε)"], omega=9.0 / 20.0,
+                                                F_A=-1000.0)
+    r = ex.readout_values
+    assert r["yaw acceleration ω̇ (rad/s²)"] == pytest.approx(omega_dot, rel=1e-10)
+    assert [r["rear tyre force (N)"], r["front tyre force (N)"]] == pytest.approx(mu, rel=1e-10)

@@ -31,6 +31,7 @@ from ..joints import _force_through, revolute
 from ..model import Body, Joint, Model
 from ..screws import crf, crm, inertia_matrix
 from ..subspaces import Decomposition
+from ..errors import SceneError
 from . import SceneResult, check_param, register
 
 __all__ = ["car"]
@@ -51,7 +52,7 @@ def _outlines(d: float, L: float, steer: float):
 
 @register("car")
 def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps: float = 0.45,
-        omega: float = 0.5, F_A: float = 2000.0) -> SceneResult:
+        omega: float = 0.5, F_A: float = 2000.0, outlines: bool = True) -> SceneResult:
     """Car cornering and accelerating at the same time (thesis 6.9, 6.114–6.133).
 
     Parameters
@@ -76,6 +77,14 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
     F_A : float
         Drive force at the front tyres along their rolling direction [N].
         Default 2000 N.
+    outlines : bool
+        Build the shapely outlines (the car body as ``model.bodies[0].shape``
+        and ``extra["tyres"]``).  Default True.  Only gallery Fig 6.6 draws
+        them; ``False`` (used by the car explorer, which draws its own outline
+        and rebuilds the scene on every control change) skips the shapely
+        work: no ``"tyres"`` key, body ``shape`` None, every other output
+        identical.  A drawing option, not a physical parameter, so it is not
+        listed in ``params``.
 
     Returns
     -------
@@ -92,8 +101,10 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
         ``steer`` (front steering angle [rad]), ``joint`` (the
         :class:`~planargeo.joints.JointSpace`), ``s``, ``R``, ``T``, ``U``,
         ``tyre_wrenches`` (3×2: ``R₁ μ₁``, ``R₂ μ₂``), ``decomposition``,
-        ``tyres`` (shapely outlines of the rear and front tyre, world frame).
-        ``model``: one body (the car, outline as ``shape``) on a revolute
+        ``tyres`` (shapely outlines of the rear and front tyre, world frame;
+        only when ``outlines``).
+        ``model``: one body (the car, outline as ``shape`` when ``outlines``,
+        else None) on a revolute
         joint at the ICR, no gravity (the road is the plane); ``state`` holds
         ``q = [0]``, ``qd = [ω]``, ``tau = [0]`` and ``f_ext = [f_A]``, so any
         forward-dynamics function reproduces ``omega_dot``.
@@ -105,6 +116,9 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
     0.2077
     >>> [round(x, 1) for x in res.quantities["mu"]]
     [-1102.4, -1089.3]
+    >>> bare = car(outlines=False)
+    >>> bare.quantities["mu"] == res.quantities["mu"], "tyres" in bare.extra
+    (True, False)
     """
     params = dict(m=m, rho=rho, L=L, d=d, eps=eps, omega=omega, F_A=F_A)
     m = check_param("m", m, positive=True)
@@ -114,6 +128,8 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
     eps = check_param("eps", eps)
     omega = check_param("omega", omega)
     F_A = check_param("F_A", F_A)
+    if not isinstance(outlines, (bool, np.bool_)):
+        raise SceneError(f"outlines must be True or False, got {outlines!r}")
 
     # --- model-less geometry
     icr = np.zeros(2)
@@ -171,11 +187,13 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
         "joint": joint, "s": s, "R": R, "T": T, "U": U,
         "tyre_wrenches": R * mu, "decomposition": dec,
     }
-    steer = float(np.arctan2(L, d))          # heading (0, 1) turned by steer = front rolling direction
-    body_shape, rear_tyre, front_tyre = _outlines(d, L, steer)
+    body_shape = None
+    if outlines:                             # shapely work only Fig 6.6 reads
+        steer = float(np.arctan2(L, d))      # heading (0, 1) turned by steer = front rolling direction
+        body_shape, rear_tyre, front_tyre = _outlines(d, L, steer)
+        extra["tyres"] = [rear_tyre, front_tyre]
     model = Model([Body(m, com=tuple(cg), inertia=m * rho ** 2, shape=body_shape, name="car")],
                   [Joint("revolute", (0.0, 0.0, 0.0), name="icr")], [-1], gravity=(0.0, 0.0))
-    extra["tyres"] = [rear_tyre, front_tyre]
     state = {"q": [0.0], "qd": [omega], "tau": [0.0], "f_ext": [f_A.tolist()], "omega": omega}
     return SceneResult(name="car", params=params, model=model, state=state,
                        quantities=quantities, extra=extra)
