@@ -206,7 +206,7 @@ def test_list_over_subprocess():
     r = cli("--list", "--json")
     listing = json.loads(r.stdout)["scenes"]
     assert listing["slider-crank"]["psi"] == 0.4 and listing["slider-crank"]["psidot"] == 20.0
-    assert listing["car"] == {"m": 1200.0, "rho": 1.2, "L": 2.6, "d": 8.0, "eps": 0.45, "omega": 0.5, "F_A": 2000.0}
+    assert listing["car"] == {"m": 1200.0, "rho": 1.2, "L": 2.6, "d": 8.0, "eps": 0.45, "omega": 0.5, "F_A": 2000.0, "outlines": True}
 
 
 @pytest.mark.parametrize("psi", ["0", "3.141592653589793"])
