@@ -27,7 +27,8 @@ Hooks (for closed loops and other constrained systems):
 
 ``condition(q, qd) -> float``
     A condition number watched at every recorded step (``"joints"``: the
-    joints' ``sᵀAs``, :func:`planargeo.algorithms.stacked.joint_conditions`;
+    joints' ``sᵀAs`` by the rule of :data:`planargeo.subspaces.COND_LIMIT`, measured at each
+    joint's point, :func:`planargeo.algorithms.stacked.joint_conditions`;
     closed loops watch ``BᵀGΛ⁻¹GᵀB``, :func:`planargeo.simulate_loops.simulate_loops`).
 
 Singular configurations are events, recorded as data in ``result.events``

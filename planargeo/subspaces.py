@@ -61,24 +61,29 @@ __all__ = [
     "joint_space_inertia", "reaction_space_inverse_inertia",
     "inertia_decomposition", "inverse_inertia_decomposition",
     "effective_mobility", "effective_base_inertia",
-    "Decomposition", "COND_LIMIT", "joint_cond", "singular_joint_error",
+    "Decomposition", "COND_LIMIT", "joint_cond", "joint_scale", "singular_joint_error",
 ]
 
 #: Largest (scale-free) condition number accepted for ``sᵀAs``, ``RᵀA⁻¹R`` and ``A``.
 #:
 #: The package's one singularity rule for a joint (every forward-dynamics method:
 #: ``aba``, ``projective``, ``mobility_split``, ``stacked``; the simulation's
-#: watched ``joint_conditions``): with ``A`` the joint's articulated inertia and
-#: ``s`` its motion space, both **at the global origin** (the thesis's
-#: convention, in which the chain algorithms form ``sᵀAs``),
+#: watched ``joint_conditions``): with ``A_P`` the joint's articulated inertia and
+#: ``s_P`` its motion space, both **at the joint's own point** ``P`` (its world
+#: position in this state: the pivot of a revolute joint, the placement point — the
+#: joint frame's origin — of a prismatic or multi-dof joint), moved there from the
+#: origin by ``s_P = X s``, ``A_P = X⁻ᵀ A X⁻¹`` (:func:`joint_scale`),
 #:
-#:     cond = ‖A‖_F ‖s‖_F² / σ_min(sᵀAs)        (σ_min = |sᵀAs| for one dof)
+#:     cond = ‖A_P‖_F ‖s_P‖_F² / σ_min(sᵀAs)        (σ_min = |sᵀAs| for one dof)
 #:
-#: (:func:`joint_cond`), and the joint is singular when ``cond > COND_LIMIT``
-#: (``inf`` when ``σ_min = 0``).  ``‖A‖ ‖s‖²`` is the size of the products that
-#: cancel when ``sᵀAs`` is formed at the origin, so ``ε cond`` is the relative
-#: rounding error of ``sᵀAs`` there: a joint 10⁶ units from the origin reaches
-#: the limit 10¹² even for a well-conditioned body (``‖A‖ ‖s‖² ~ m |o|⁴``).
+#: (:func:`joint_cond`; ``sᵀAs`` itself is the same at every point), and the joint
+#: is singular when ``cond > COND_LIMIT`` (``inf`` when ``σ_min = 0``).  Measured at
+#: ``P``, the rule is invariant under translating and rotating the whole mechanism
+#: (``‖·‖_F`` is invariant under the rotation, ``A_P`` and ``s_P`` do not depend on
+#: where ``P`` is): a pendulum pinned 1 km from the origin is as regular as one
+#: pinned at it.  ``‖A_P‖ ‖s_P‖²`` is the size of the products that cancel when
+#: ``sᵀAs`` is formed at ``P``.  The public subspace functions of this module, which
+#: know no joint point, measure it at the origin of the coordinates they are given.
 COND_LIMIT = 1e12
 #: ``COND_LIMIT²``: the rule without a square root, ``σ_min² COND_LIMIT² > ‖A‖_F² ‖s‖⁴``
 #: (the form the compiled ABA plans test; it accepts exactly the states ``cond <= COND_LIMIT`` accepts,
@@ -94,9 +99,9 @@ def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
     smin : float
         ``σ_min(sᵀAs)`` (``|sᵀAs|`` for one dof; its sign is ignored).
     A_norm2 : float
-        ``‖A‖_F²`` of the articulated inertia at the global origin.
+        ``‖A_P‖_F²`` of the articulated inertia at the joint's point ``P``.
     s_norm2 : float
-        ``‖s‖_F²`` of the motion space at the global origin.
+        ``‖s_P‖_F²`` of the motion space at ``P`` (``1`` for a revolute or prismatic joint).
 
     Returns
     -------
@@ -105,8 +110,8 @@ def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
 
     Examples
     --------
-    A unit point mass at distance ``d = 1e-6`` from a pivot at the origin:
-    ``sᵀAs = d²``, ``‖A‖_F ≈ √2`` (its mass block), ``s = [0, 0, 1]``.
+    A unit point mass at distance ``d = 1e-6`` from its pivot ``P``:
+    ``sᵀAs = d²``, ``‖A_P‖_F ≈ √2`` (its mass block), ``s_P = [0, 0, 1]``.
 
     >>> round(joint_cond(1e-12, 2.0 + 1e-24, 1.0) / 1e12, 6)
     1.414214
@@ -115,6 +120,51 @@ def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
     """
     smin = abs(float(smin))
     return math.sqrt(float(A_norm2)) * float(s_norm2) / smin if smin > 0 else math.inf
+
+
+def joint_scale(A, s, point):
+    """``‖A_P‖_F ‖s_P‖_F²``: the scale of the rule of :data:`COND_LIMIT` at the joint's point ``P``.
+
+    ``A`` (..., 3, 3) and ``s`` (..., 3, k) are given at the origin and moved to
+    ``P = (x, y)`` (..., 2): twists by ``X = [[1, 0, -y], [0, 1, x], [0, 0, 1]]``
+    (``s_P = X s``, thesis 4.8), the inertia congruently, ``A_P = X⁻ᵀ A X⁻¹`` (1.68,
+    4.58): only its moment row and column change,
+    ``(A_P)_{j2} = A_{j2} + y A_{j0} - x A_{j1}`` for ``j = 0, 1`` and
+    ``(A_P)_22 = A_22 + 2 y A_02 - 2 x A_12 + y² A_00 - 2 x y A_01 + x² A_11``.
+
+    Returns
+    -------
+    float or ndarray (...)
+
+    Examples
+    --------
+    A unit point mass at ``(1000.5, 0)`` on a pivot at ``(1000, 0)``: at the pivot
+    ``A_P = [[1, 0, 0], [0, 1, 0.5], [0, 0.5, 0.25]]`` and ``s_P = [0, 0, 1]``.
+
+    >>> from planargeo.screws import inertia_matrix
+    >>> joint_scale(inertia_matrix(1.0, [1000.5, 0.0], 0.0), [0.0, -1000.0, 1.0], [1000.0, 0.0])
+    1.6007810593582121
+    >>> round(float(np.sqrt(2 + 2 * 0.25 + 0.0625)), 12)
+    1.600781059358
+    """
+    A = np.asarray(A, dtype=float)
+    s = np.asarray(s, dtype=float)
+    if s.ndim == 1:
+        s = s[:, None]
+    P = np.asarray(point, dtype=float)
+    x, y = P[..., 0], P[..., 1]
+    a00, a01, a02 = A[..., 0, 0], A[..., 0, 1], A[..., 0, 2]
+    a11, a12, a22 = A[..., 1, 1], A[..., 1, 2], A[..., 2, 2]
+    p02 = a02 + y * a00 - x * a01
+    p12 = a12 + y * a01 - x * a11
+    p22 = a22 + y * a02 - x * a12 + y * p02 - x * p12
+    F2 = a00 * a00 + a11 * a11 + p22 * p22 + 2.0 * (a01 * a01 + p02 * p02 + p12 * p12)
+    x, y = x[..., None], y[..., None]
+    s0, s1, s2 = s[..., 0, :], s[..., 1, :], s[..., 2, :]
+    t0, t1 = s0 - y * s2, s1 + x * s2
+    ss = np.sum(t0 * t0 + t1 * t1 + s2 * s2, axis=-1)
+    out = np.sqrt(F2) * ss
+    return float(out) if np.ndim(out) == 0 else out
 
 
 def singular_joint_error(i: int, cond: float) -> SingularConfigurationError:
@@ -232,17 +282,21 @@ def _norm(A: np.ndarray):
     return np.sqrt(_fro2(A))
 
 
-def _gram(s: np.ndarray, As: np.ndarray, A_scale, sname: str, what: str) -> np.ndarray:
+def _gram(s: np.ndarray, As: np.ndarray, A_scale, sname: str, what: str, scale=None) -> np.ndarray:
     """``M = sᵀ (A s)``, symmetrised, checked for singularity relative to ``‖A‖ ‖s‖²``.
 
     The package's one singularity rule for joint-space matrices: the scale-free
     condition number ``‖A‖ ‖s‖² / σ_min(M)`` (Frobenius norms; ``σ_min`` is
     ``|M|`` for a 1×1 ``M``, else from the small ``k×k`` matrix itself) must not
-    exceed :data:`COND_LIMIT`.
+    exceed :data:`COND_LIMIT`.  ``scale``: ``‖A_P‖ ‖s_P‖²`` at the joint's point
+    (:func:`joint_scale`) when known, else ``A_scale ‖s‖²`` (at the origin of the coordinates).
     """
     if s.shape == (3, 1) and As.ndim == 2:     # one joint, one dof: Python floats (M is its own transpose)
         M = s.T @ As
-        cond = joint_cond(M[0, 0], A_scale * A_scale, float(np.vdot(s, s)))
+        if scale is None:
+            cond = joint_cond(M[0, 0], A_scale * A_scale, float(np.vdot(s, s)))
+        else:
+            cond = joint_cond(M[0, 0], float(scale) ** 2, 1.0)
         if not cond <= COND_LIMIT:
             raise SingularConfigurationError(
                 f"{what} is singular: the inertia has (almost) nothing along {sname}", float(cond))
@@ -253,7 +307,7 @@ def _gram(s: np.ndarray, As: np.ndarray, A_scale, sname: str, what: str) -> np.n
         return M
     M = 0.5 * (M + _T(M))
     smin = np.abs(M[..., 0, 0]) if k == 1 else _abs_eig(M)[1]
-    _check_cond(smin, A_scale * _fro2(s), SingularConfigurationError,
+    _check_cond(smin, A_scale * _fro2(s) if scale is None else scale, SingularConfigurationError,
                 f"{what} is singular: the inertia has (almost) nothing along {sname}")
     return M
 
@@ -270,34 +324,41 @@ def _check_complementary(s: np.ndarray, R: np.ndarray) -> None:
             raise InputError(f"R must be reciprocal to s (sᵀR = 0, thesis 6.1), got max |sᵀR| = {worst:.3g}")
 
 
-def _checked_gram(A: np.ndarray, s: np.ndarray, what: str) -> tuple[np.ndarray, np.ndarray]:
-    """``(A s, sᵀ A s)`` with ``sᵀAs`` checked by the singularity rule of :func:`_gram`."""
+def _checked_gram(A: np.ndarray, s: np.ndarray, what: str, point=None) -> tuple[np.ndarray, np.ndarray]:
+    """``(A s, sᵀ A s)`` with ``sᵀAs`` checked by the singularity rule of :func:`_gram`.
+
+    ``point``: the joint's point ``P`` (..., 2), where the rule of :data:`COND_LIMIT`
+    is measured (:func:`joint_scale`); default the origin of the coordinates.
+    """
     As = A @ s
-    return As, _gram(s, As, _norm(A), "s", what)
+    scale = None if point is None else joint_scale(A, s, point)
+    return As, _gram(s, As, _norm(A), "s", what, scale)
 
 
-def _percussion_space(A: np.ndarray, s: np.ndarray, what: str = "sᵀAs", gram=None) -> np.ndarray:
+def _percussion_space(A: np.ndarray, s: np.ndarray, what: str = "sᵀAs", gram=None, point=None) -> np.ndarray:
     """``T = A s (sᵀ A s)⁻¹`` (6.30, 6.39) on float arrays already checked (the unchecked kernel).
 
     ``A`` (..., 3, 3) symmetric, ``s`` (..., 3, k).  Shared by
     :func:`percussion_space` and the chain algorithms; raises
     :class:`~planargeo.errors.SingularConfigurationError` (the rule of :func:`_gram`).
-    ``gram``: ``_checked_gram(A, s, what)`` if already formed.
+    ``gram``: ``_checked_gram(A, s, what, point)`` if already formed; ``point``: the
+    joint's point, where the rule is measured (default the origin of the coordinates).
     """
     if s.shape[-1] == 0:
         return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 0))
-    As, M = _checked_gram(A, s, what) if gram is None else gram
+    As, M = _checked_gram(A, s, what, point) if gram is None else gram
     return _right_solve(As, M)
 
 
-def _effective_mobility(A: np.ndarray, s: np.ndarray, what: str = "sᵀIs", gram=None) -> np.ndarray:
+def _effective_mobility(A: np.ndarray, s: np.ndarray, what: str = "sᵀIs", gram=None, point=None) -> np.ndarray:
     """``s (sᵀ A s)⁻¹ sᵀ`` (6.93) on float arrays already checked (the unchecked kernel).
 
-    ``gram``: ``_checked_gram(A, s, what)`` if already formed (e.g. for :func:`_percussion_space`).
+    ``gram``: ``_checked_gram(A, s, what, point)`` if already formed (e.g. for :func:`_percussion_space`);
+    ``point``: the joint's point, where the rule is measured (default the origin of the coordinates).
     """
     if s.shape[-1] == 0:
         return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 3))
-    _, M = _checked_gram(A, s, what) if gram is None else gram
+    _, M = _checked_gram(A, s, what, point) if gram is None else gram
     return _right_solve(s, M) @ _T(s)
 
 
@@ -364,7 +425,9 @@ def percussion_space(s, A, *, what: str | None = None) -> np.ndarray:
         scale-free condition number ``‖A‖ ‖s‖² / |λ|_min(sᵀAs)`` (``.cond``;
         Frobenius norms, no eigen-solve of ``A``)
         exceeds :data:`COND_LIMIT`.  This is the package's one singularity
-        rule for joint-space matrices; every algorithm builds ``T`` here.
+        rule for joint-space matrices, here measured at the origin of the given
+        coordinates (the chain algorithms measure it at each joint's point,
+        :func:`joint_scale`).
 
     Examples
     --------

@@ -54,12 +54,14 @@ import numpy as np
 from ..errors import SingularConfigurationError
 from ..kinematics import check_state, kinematics
 from ..model import Data, Model
-from ..subspaces import COND_LIMIT, COND_LIMIT2, _fro2, joint_cond, singular_joint_error
+from ..subspaces import COND_LIMIT, COND_LIMIT2, joint_cond, joint_scale, singular_joint_error
 
 __all__ = ["forward_dynamics", "articulated_body"]
 
 # Singular joints: the package's one rule, :data:`planargeo.subspaces.COND_LIMIT` (imported, not
-# restated): ``cond = ‖A‖_F ‖s‖² / σ_min(sᵀAs)`` with ``A`` and ``s`` at the global origin, so every
+# restated): ``cond = ‖A_P‖_F ‖s_P‖² / σ_min(sᵀAs)`` with ``A`` and ``s`` at the joint's point ``P``
+# (the joint frame's world origin: the pivot of a revolute joint), invariant under moving the whole
+# mechanism, so every
 # method accepts or raises for the same states, with the same ``.cond`` and message
 # (:func:`planargeo.subspaces.singular_joint_error`).
 #: batches up to this size are evaluated state by state on Python floats (the batched
@@ -67,20 +69,20 @@ __all__ = ["forward_dynamics", "articulated_body"]
 SMALL_BATCH = 32
 
 
-def _check_D(D, A, s, i):
+def _check_D(D, A, s, i, P):
     """Raise SingularConfigurationError if D = s^T A s (..., k, k) is singular by the package's rule.
 
-    ``A`` (..., 3, 3) and ``s`` (..., 3, k) at the global origin; the rule of
-    :data:`planargeo.subspaces.COND_LIMIT` (``‖A‖_F ‖s‖² / σ_min(D)``).
+    ``A`` (..., 3, 3) and ``s`` (..., 3, k) at the global origin, ``P`` (..., 2) the joint's
+    point; the rule of :data:`planargeo.subspaces.COND_LIMIT` (``‖A_P‖_F ‖s_P‖² / σ_min(D)``).
     """
     k = D.shape[-1]
     if k == 1:
         lo = np.abs(D[..., 0, 0])
     else:
         lo = np.abs(np.linalg.eigvalsh(0.5 * (D + np.swapaxes(D, -1, -2)))).min(axis=-1)
-    lo, F2, s2 = np.broadcast_arrays(lo, _fro2(A), _fro2(s))
+    lo, scale = np.broadcast_arrays(lo, joint_scale(A, s, P))
     with np.errstate(divide="ignore", invalid="ignore"):
-        cond = np.where(lo > 0, np.sqrt(F2) * s2 / np.where(lo > 0, lo, 1.0), np.inf)
+        cond = np.where(lo > 0, scale / np.where(lo > 0, lo, 1.0), np.inf)
     bad = ~(cond <= COND_LIMIT)
     if np.any(bad):
         raise singular_joint_error(i, float(np.max(np.where(bad, cond, 0.0))))
@@ -109,7 +111,8 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
     ------
     SingularConfigurationError
         If some ``s_i^T A_i s_i`` is singular (e.g. a point mass on a revolute
-        joint at its own position), by the rule of :data:`planargeo.subspaces.COND_LIMIT`.
+        joint at its own position), by the rule of :data:`planargeo.subspaces.COND_LIMIT`
+        (measured at the joint's point).
 
     Examples
     --------
@@ -144,7 +147,7 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
             continue
         U = Ai @ s
         D = np.swapaxes(s, -1, -2) @ U
-        _check_D(D, Ai, s, i)
+        _check_D(D, Ai, s, i, data.origin[..., i, :])
         Dinv = 1.0 / D if k == 1 else np.linalg.inv(D)
         u = tau[..., model.q_slice(i)] - np.einsum("...ij,...i->...j", s, c)
         Dl[i], Ul[i], Dinvl[i], ul[i] = D, U, Dinv, u
@@ -207,6 +210,7 @@ def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.
     N = len(table)
     # per body: pose+cos/sin, s, v, kappa, A (6 entries), d
     P = [None] * N
+    O = [None] * N   # the joints' points (joint frame origins), where the singularity rule is measured
     S = [None] * N
     V = [None] * N
     K = [None] * N
@@ -239,6 +243,7 @@ def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.
             x, y, th = ox, oy, phi
             ct, st = cos(th), sin(th)
         P[i] = (x, y, th, ct, st)
+        O[i] = (ox, oy)
         S[i] = (s0, s1, s2)
         u0, u1, u2 = s0 * qdi, s1 * qdi, s2 * qdi
         # kappa = v_parent x (s qd)   (2.19; equal to v_i x s qd for one-dof joints)
@@ -283,12 +288,16 @@ def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.
         U1 = a01 * s0 + a11 * s1 + a12 * s2
         U2 = a02 * s0 + a12 * s1 + a22 * s2
         D = s0 * U0 + s1 * U1 + s2 * U2
-        # the rule of subspaces.COND_LIMIT, squared: D² LIMIT² > ‖A‖_F² ‖s‖⁴ (A, s at the origin)
-        F2 = a00 * a00 + a11 * a11 + a22 * a22 + 2.0 * (a01 * a01 + a02 * a02 + a12 * a12)
-        ss = s0 * s0 + s1 * s1 + s2 * s2
-        ok = D * D * COND_LIMIT2 > F2 * ss * ss
+        # the rule of subspaces.COND_LIMIT, squared: D² LIMIT² > ‖A_P‖_F² ‖s_P‖⁴ at the joint's point
+        # P = (X, Y), where ‖s_P‖ = 1 (s_P = [0, 0, 1] or [cos, sin, 0]); A moved to P (joint_scale)
+        X, Y = O[i]
+        p02 = a02 + Y * a00 - X * a01
+        p12 = a12 + Y * a01 - X * a11
+        p22 = a22 + Y * a02 - X * a12 + Y * p02 - X * p12
+        F2 = a00 * a00 + a11 * a11 + p22 * p22 + 2.0 * (a01 * a01 + p02 * p02 + p12 * p12)
+        ok = D * D * COND_LIMIT2 > F2
         if ok is not True and not np.all(ok):
-            _singular_components(D, F2, ss, i)
+            _singular_components(D, F2, 1.0, i)
         Di = 1.0 / D
         u = tau[o] - (s0 * c0 + s1 * c1 + s2 * c2)
         UU[i] = (U0, U1, U2, Di, u)
@@ -345,9 +354,10 @@ def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.
 #   ``q̈_i = D⁻¹ (u'_i - U_0 ā_0 - U_1 ā_1) - a'_2`` with ``u'_i = τ_i - d_i,2`` and
 #   ``ā = a' + κ_i`` (the parent's acceleration at o_i plus the bias term).
 #   Singularity follows the package's rule (:data:`planargeo.subspaces.COND_LIMIT`,
-#   ``A`` and ``s`` at the global origin): the plan tests a cheap sufficient
-#   condition ``D² LIMIT² > b²``, ``b ≥ ‖A_O‖_F ‖s_O‖²`` from ``trace A`` at o_i and
-#   the world position of o_i, and only where that fails the exact rule
+#   ``A`` and ``s`` at the joint's point ``P``: o_i itself for a revolute joint, o_i
+#   less ``q`` along the axis for a prismatic one): the plan tests a cheap sufficient
+#   condition ``D² LIMIT² > b²``, ``b ≥ ‖A_P‖_F ‖s_P‖²`` from ``trace A`` at o_i (and
+#   ``q²`` for a prismatic joint), and only where that fails the exact rule
 #   (:func:`_singular_plan`), so it accepts and raises exactly where the other
 #   methods do.
 # * Accelerations are *classical*: ``a_i`` is the acceleration of the material
@@ -378,31 +388,39 @@ EAGER_PLAN_BODIES = 64
 #: plans for more bodies than this keep each body's values in a tuple between passes
 PACK_BODIES = 64
 #: a joint's singularity test is left out of the plan when proven to pass: ``D`` above this times the bound on
-#: ``‖A_O‖_F ‖s_O‖²`` (twice the rule's ``1 / COND_LIMIT``: the other methods, forming ``sᵀAs`` at the origin,
-#: see a ``cond`` off by a relative ``ε cond ≤ 1e-4``, far less than the factor 2; see :func:`_checks`) ...
+#: ``‖A_P‖_F ‖s_P‖²`` (twice the rule's ``1 / COND_LIMIT``: rounding of ``D`` formed at the joint's point moves
+#: ``cond`` by a relative ``ε cond ≤ 1e-4``, far less than the factor 2; see :func:`_checks`) ...
 PROVEN_RTOL = 2.0 / COND_LIMIT
 #: ... and above this times the bound on ``trace A`` at o_i (rounding errors of ``D``, accumulated at o_i, stay far below)
 ROUNDING_RTOL = 1e-8
 _cos, _sin = math.cos, math.sin
 
 
-def _singular_plan(D, a00, a01, a02, a11, a12, a22, X, Y, kind, i):
+def _singular_plan(D, a00, a01, a02, a11, a12, a22, q, c, s, i):
     """The exact singularity rule for joint ``i`` of a plan, where its cheap bound failed: raise or return.
 
-    The plan keeps ``A`` at the body origin ``o_i = (X, Y)`` (world axes); the rule
-    (:data:`planargeo.subspaces.COND_LIMIT`) takes ``A`` and ``s`` at the global origin:
-    ``A_O`` is ``A`` moved by ``o_i`` (moments ``n + o × F``, congruently), ``s_O = [Y, -X, 1]``
-    (revolute, ``‖s‖² = 1 + |o|²``) or ``[cos, sin, 0]`` (prismatic, ``‖s‖² = 1``);
-    ``D = sᵀAs`` is the same at either point.  The plan tests first the cheaper sufficient
-    condition ``D² LIMIT² > b²`` with ``b ≥ ‖A_O‖_F ‖s_O‖²``: for positive semi-definite ``A``,
-    ``‖A_O‖_F ≤ trace A_O ≤ (1 + 2|o|²)(A_00 + A_11) + 2 A_22`` (the moment about the origin
-    ``(ẑ + u)ᵀA(ẑ + u) ≤ 2 ẑᵀAẑ + 2 uᵀAu``, ``|u| = |o|``); this function runs only when that fails.
+    The plan keeps ``A`` at the body origin o_i (world axes); the rule
+    (:data:`planargeo.subspaces.COND_LIMIT`) takes ``A`` and ``s`` at the joint's point ``P``:
+    o_i itself for a revolute joint (``q = 0`` is passed), ``P = o_i - q (c, s)`` for a prismatic
+    joint along ``(c, s)`` (its placement point; o_i has slid by ``q``).  ``A_P`` is ``A`` moved by
+    ``r = P - o_i`` (moments ``n - r × F``, congruently: :func:`planargeo.subspaces.joint_scale`),
+    ``s_P = [0, 0, 1]`` or ``[c, s, 0]`` (``‖s_P‖² = 1``); ``D = sᵀAs`` is the same at either point.
+
+    The plan tests first the cheaper sufficient condition ``D² LIMIT² > b²`` with
+    ``b ≥ ‖A_P‖_F ‖s_P‖² = ‖A_P‖_F``: for positive semi-definite ``A``, ``‖A_P‖_F ≤ trace A_P``
+    (the 2-norm of the eigenvalues is at most their sum), which is ``trace A`` at o_i for a
+    revolute joint (``b = A_00 + A_11 + A_22``) and at most ``(1 + 2 q²)(A_00 + A_11) + 2 A_22``
+    for a prismatic one (the force block is the same at every point; the moment about ``P`` is
+    ``(ẑ + u)ᵀA(ẑ + u) ≤ 2 ẑᵀAẑ + 2 uᵀAu`` with ``|u| = |r| = |q|``); this function runs only
+    when that fails.  The test is translation invariant: the plan never uses the world
+    position of o_i for it.
     """
-    P02 = a02 - Y * a00 + X * a01
-    P12 = a12 - Y * a01 + X * a11
-    P22 = a22 - Y * a02 - Y * P02 + X * a12 + X * P12
+    X, Y = -q * c, -q * s
+    P02 = a02 + Y * a00 - X * a01
+    P12 = a12 + Y * a01 - X * a11
+    P22 = a22 + Y * a02 - X * a12 + Y * P02 - X * P12
     F2 = a00 * a00 + a11 * a11 + P22 * P22 + 2.0 * (a01 * a01 + P02 * P02 + P12 * P12)
-    cond = joint_cond(D, F2, 1.0 + X * X + Y * Y if kind == 1 else 1.0)
+    cond = joint_cond(D, F2, 1.0)
     if not cond <= COND_LIMIT:
         raise singular_joint_error(i, cond)
 
@@ -567,7 +585,7 @@ def _plan_lines(kinds, parents, zero, with_fext, pack=None, checks=None):
         if kind == 2:   # the body origin slides by q along the joint axis e = (c, s)
             rx = let(f"rx{i}", [[rx], [qi, c]])
             ry = let(f"ry{i}", [[ry], [qi, s]])
-        B.update(c=c, s=s, th=th, r=(rx, ry), kind=kind, p=p)
+        B.update(c=c, s=s, th=th, r=(rx, ry), kind=kind, p=p, q=qi if kind else None)
         # classical accelerations (see the comment above): only angular velocities are needed
         wp = P["w"]
         w = let(f"w{i}", [[wp], [qdi]]) if kind == 1 else wp
@@ -579,7 +597,7 @@ def _plan_lines(kinds, parents, zero, with_fext, pack=None, checks=None):
         else:           # kappa = -w² r (centripetal)
             kap = (let(f"k0_{i}", [[neg(wwp), rx]]), let(f"k1_{i}", [[neg(wwp), ry]]))
         B.update(w=w, ww=ww, kap=kap)
-        # the body origin in the world (for external wrenches and the singularity tests; dropped if unused)
+        # the body origin in the world (for external wrenches; dropped if unused)
         ox = let(f"ox{i}", [[P["o"][0]], [rx]])
         oy = let(f"oy{i}", [[P["o"][1]], [ry]])
         B["o"] = (ox, oy)
@@ -599,23 +617,26 @@ def _plan_lines(kinds, parents, zero, with_fext, pack=None, checks=None):
                   let(f"d2_{i}", [e[2], e[3], e[4]])]
         body.append(B)
         if pack:   # what the inward pass needs, in one local
-            stash(f"T{i}", [*B["r"], *B["kap"], *B["A"], *B["d"], *(B["o"] if checks[i] else ())])
+            stash(f"T{i}", [*B["r"], *B["kap"], *B["A"], *B["d"],
+                            *((B["q"], B["c"], B["s"]) if checks[i] and kind == 2 else ())])
     # 3. articulated inertias and bias forces, tip to base (3.35-3.39)
     IDX = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))
 
     def check(i, D):
-        # the rule of subspaces.COND_LIMIT, cheaply bounded (see the comment above _singular_plan):
-        # pass if D² LIMIT² > (bound on ‖A_O‖_F ‖s_O‖²)², else the exact rule in _singular_plan
+        # the rule of subspaces.COND_LIMIT at the joint's point P, cheaply bounded (see _singular_plan):
+        # pass if D² LIMIT² > (bound on ‖A_P‖_F ‖s_P‖²)², else the exact rule in _singular_plan
         B = body[i]
         a00, a01, a02, a11, a12, a22 = B["A"]
-        ox, oy = B["o"]
-        R2 = let(f"R2_{i}", [[ox, ox], [oy, oy]])
         t0 = let(f"t0_{i}", [[a00], [a11]])
-        bnd = let(f"bd{i}", [[t0], [TWO, R2, t0], [TWO, a22]])
-        if B["kind"] == 1:   # ‖s_O‖² = 1 + |o|²
-            bnd = let(f"bs{i}", [[bnd], [bnd, R2]])
+        if B["kind"] == 1:   # P = o_i: trace A
+            bnd = let(f"bd{i}", [[t0], [a22]])
+            args = (D, *B["A"], None, ONE, None)
+        else:                # P = o_i - q e: (1 + 2 q²)(A_00 + A_11) + 2 A_22
+            qq = B["q"]
+            bnd = let(f"bd{i}", [[t0], [TWO, qq, qq, t0], [TWO, a22]])
+            args = (D, *B["A"], qq, B["c"], B["s"])
         emit(f"    if not {text(D)}*{text(D)}*{COND_LIMIT2!r} > {text(bnd)}*{text(bnd)}:")
-        emit(f"        _singular_plan({', '.join(text(x) for x in (D, *B['A'], ox, oy))}, {B['kind']}, {i})")
+        emit(f"        _singular_plan({', '.join(text(x) for x in args)}, {i})")
 
     def inward(i):
         B = body[i]
@@ -799,19 +820,19 @@ def _checks(model: Model, kinds) -> tuple:
     """Which joints keep the singularity test in the plan: those where it is not proven to pass.
 
     The rule (:data:`planargeo.subspaces.COND_LIMIT`) accepts ``D = sᵀAs`` when
-    ``D > ‖A_O‖_F ‖s_O‖² / COND_LIMIT`` (``A``, ``s`` at the global origin).  In exact
-    arithmetic the articulated inertia lies between the body's own inertia and the
-    composite inertia of its subtree: at o_i, ``D = A_22 ≥ J_i + m_i |c_i - o_i|²``
-    (revolute; a prismatic joint's own ``q`` moves o_i without bound, so its test is
-    always kept), and ``‖A_O‖_F ≤ trace A_O ≤ 2 M + Σ J_k + M (r + ρ)²`` with ``M`` the
-    subtree's mass, ``ρ`` a bound on the distance from o_i to its centres of mass and
-    ``r`` a bound on ``|o_i|``; ``‖s_O‖² = 1 + |o_i|² ≤ 1 + r²``.  With only revolute
-    and fixed joints above and below body i, ``r`` and ``ρ`` are constants (sums of
-    placement lengths); if the lower bound on ``D`` exceeds ``PROVEN_RTOL`` (2 / LIMIT)
-    times the upper bound on ``‖A_O‖_F ‖s_O‖²`` and ``ROUNDING_RTOL`` times the bound on
-    ``trace A`` at o_i (so that rounding cannot matter), the test can never fail for
-    any finite state and is left out.  Joints whose test can fail (a point mass on its
-    own joint, prismatic joints, joints far from the origin...) keep it.
+    ``D > ‖A_P‖_F ‖s_P‖² / COND_LIMIT`` (``A``, ``s`` at the joint's point ``P``, which
+    for a revolute joint is o_i, ``s_P = [0, 0, 1]``).  In exact arithmetic the
+    articulated inertia lies between the body's own inertia and the composite inertia
+    of its subtree: at o_i, ``D = A_22 ≥ J_i + m_i |c_i - o_i|²`` (revolute; a prismatic
+    joint's own ``q`` moves o_i away from ``P`` without bound, so its test is always
+    kept), and ``‖A_P‖_F ≤ trace A_P ≤ 2 M + Σ J_k + M ρ²`` with ``M`` the subtree's
+    mass and ``ρ`` a bound on the distance from o_i to its centres of mass.  With only
+    revolute and fixed joints below body i, ``ρ`` is a constant (a sum of placement
+    lengths); where the joint is in the world does not matter.  If the lower bound on
+    ``D`` exceeds ``PROVEN_RTOL`` (2 / LIMIT) and ``ROUNDING_RTOL`` times that upper
+    bound (so that rounding cannot matter), the test can never fail for any finite
+    state and is left out.  Joints whose test can fail (a point mass on its own joint,
+    prismatic joints, prismatic joints below...) keep it.
     """
     N = model.N
     mass, jsum, reach, rigid = [0.0] * N, [0.0] * N, [0.0] * N, [True] * N
@@ -826,18 +847,11 @@ def _checks(model: Model, kinds) -> tuple:
             jsum[p] += jsum[i]
             reach[p] = max(reach[p], math.hypot(*model.joints[i].placement[:2]) + reach[i])
             rigid[p] = rigid[p] and rigid[i] and kinds[i] != 2
-    dist, fixed_base = [0.0] * N, [True] * N   # bound on |o_i|; whether no prismatic joint is above body i
-    for i in range(N):
-        p = model.parents[i]
-        dist[i] = math.hypot(*model.joints[i].placement[:2]) + (dist[p] if p >= 0 else 0.0)
-        fixed_base[i] = (fixed_base[p] and kinds[p] != 2) if p >= 0 else True
     checks = []
     for i, (b, kind) in enumerate(zip(model.bodies, kinds)):
         low = b.inertia + b.mass * (b.com[0] ** 2 + b.com[1] ** 2)
         high = 2.0 * mass[i] + jsum[i] + mass[i] * reach[i] ** 2
-        high_O = (2.0 * mass[i] + jsum[i] + mass[i] * (dist[i] + reach[i]) ** 2) * (1.0 + dist[i] ** 2)
-        proven = (kind == 1 and rigid[i] and fixed_base[i]
-                  and low > ROUNDING_RTOL * high and low > PROVEN_RTOL * high_O)
+        proven = kind == 1 and rigid[i] and low > ROUNDING_RTOL * high and low > PROVEN_RTOL * high
         checks.append(kind != 0 and not proven)
     return tuple(checks)
 
@@ -1274,9 +1288,9 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     ------
     SingularConfigurationError
         If some ``s_i^T A_i s_i`` is singular by the package's one rule
-        (:data:`planargeo.subspaces.COND_LIMIT`: ``‖A‖_F ‖s‖² / σ_min(sᵀAs) > 1e12``
-        at the global origin), with that ``.cond``, for exactly the states the other
-        recursive methods refuse.
+        (:data:`planargeo.subspaces.COND_LIMIT`: ``‖A_P‖_F ‖s_P‖² / σ_min(sᵀAs) > 1e12``
+        at the joint's point ``P``, invariant under moving the whole mechanism), with
+        that ``.cond``, for the same states the other recursive methods refuse.
 
     Examples
     --------

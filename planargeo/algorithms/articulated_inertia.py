@@ -55,7 +55,7 @@ class ArticulatedInertias:
         return reactive_subspace(self.A[i], self.R[i], s=self.S[i], T=self.T[i])
 
 
-def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None) -> ArticulatedInertias:
+def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_points=None) -> ArticulatedInertias:
     """Articulated inertias and bias forces on arrays (thesis 7.1.1: 7.2, 7.7a, 7.7b, 7.8).
 
     Parameters
@@ -68,6 +68,10 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None) -> Art
     points : (N, 2), optional
         A point of each joint, for the reaction bases ``R`` of prismatic joints
         (:func:`planargeo.joints.reaction_space_of`); default the origin.
+    joint_points : (N, 2), optional
+        Each joint's point (pivot; placement point of a prismatic joint: the joint
+        frame's origin), where the singularity rule of :data:`planargeo.subspaces.COND_LIMIT`
+        is measured; default the origin.  The model-level functions pass the joint frames' origins.
 
     Returns
     -------
@@ -97,17 +101,18 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None) -> Art
     parents = list(range(-1, N - 1)) if parents is None else [int(x) for x in parents]
     S = [np.asarray(x, dtype=float).reshape(3, -1) for x in S]
     tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
-    A, d, T = _articulated(I, S, np.asarray(kappa, dtype=float), p, tau, parents)
+    A, d, T = _articulated(I, S, np.asarray(kappa, dtype=float), p, tau, parents, joint_points)
     R = [reaction_space(S[i], (0.0, 0.0) if points is None else points[i]) for i in range(N)]
     return ArticulatedInertias(A, d, T, R, S)
 
 
-def _articulated(I, S, kappa, p, tau, parents):
+def _articulated(I, S, kappa, p, tau, parents, jpoints=None):
     """The recursion of :func:`articulated_recursion` on checked arrays: ``(A, d, T)`` (7.2, 7.7a, 7.7b, 7.8).
 
     ``I`` (N, 3, 3), ``S`` / ``tau`` lists of (3, k_i) / (k_i,) float arrays,
     ``kappa`` (N, 3), ``parents`` a list of ints.  The reaction bases are not
-    needed (``R U^T = 1 - T s^T``, 7.8) and not built.
+    needed (``R U^T = 1 - T s^T``, 7.8) and not built.  ``jpoints`` (N, 2): the joints'
+    points, where the singularity rule is measured (default the origin).
     """
     N = I.shape[0]
     A = I.copy()                                   # (7.2): A_N = I_N, children added below
@@ -117,7 +122,8 @@ def _articulated(I, S, kappa, p, tau, parents):
     for i in reversed(range(N)):
         Ai = A[i] = 0.5 * (A[i] + A[i].T)          # symmetric by construction; remove round-off
         Si = S[i]
-        T[i] = Ti = _percussion_space(Ai, Si, f"sᵀAs of joint {i}")   # (6.105)
+        T[i] = Ti = _percussion_space(Ai, Si, f"sᵀAs of joint {i}",   # (6.105)
+                                      point=None if jpoints is None else jpoints[i])
         j = parents[i]
         if j < 0:
             continue
@@ -152,4 +158,4 @@ def articulated_inertia(model, q, qd=None, tau=None, f_ext=None) -> ArticulatedI
     2.0
     """
     d, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
-    return articulated_recursion(I, S, kappa, p, taus, parents, d.pose[:, :2])
+    return articulated_recursion(I, S, kappa, p, taus, parents, d.pose[:, :2], d.origin)

@@ -60,7 +60,7 @@ def _check_chain(parents, N):
             f"mobility (thesis 7.4), got {list(parents)}")
 
 
-def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None) -> ArticulatedMobilities:
+def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_points=None) -> ArticulatedMobilities:
     """Articulated mobilities and bias accelerations on arrays (thesis 7.4.1).
 
     Parameters
@@ -73,6 +73,10 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None) -> Articu
     points : (N, 2), optional
         A point of each joint, for the reaction bases ``R`` of prismatic joints
         (:func:`planargeo.joints.reaction_space_of`); default the origin.
+    joint_points : (N, 2), optional
+        Each joint's point (pivot; placement point of a prismatic joint: the joint
+        frame's origin), where the singularity rule of :data:`planargeo.subspaces.COND_LIMIT`
+        is measured; default the origin.  The model-level functions pass the joint frames' origins.
 
     Returns
     -------
@@ -105,7 +109,7 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None) -> Articu
     tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
     kappa = np.asarray(kappa, dtype=float)
     p = np.asarray(p, dtype=float)
-    Lam, b, T = _mobility(I, S, kappa, p, tau)
+    Lam, b, T = _mobility(I, S, kappa, p, tau, joint_points)
     R = [reaction_space(S[i], (0.0, 0.0) if points is None else points[i]) for i in range(N)]
     U = [_reactive_from_T(R[i], S[i], T[i]) for i in range(N)]                     # (6.37), inverse-free
     return ArticulatedMobilities(Lam, b, T, U, R)
@@ -149,10 +153,11 @@ def _cond(M) -> float:
     return c if c == c else math.inf
 
 
-def _mobility(I, S, kappa, p, tau):
+def _mobility(I, S, kappa, p, tau, jpoints=None):
     """The recursion of :func:`mobility_recursion` on checked arrays: ``(Lambda_inv, b, T)`` (7.31, 7.35, 7.38).
 
     ``U_i R_i^T = 1 - s_i T_i^T`` (the twist projectors of 6.75), so no reaction basis is built.
+    ``jpoints`` (N, 2): the joints' points, where the singularity rule is measured (default the origin).
     """
     N = I.shape[0]
     Lam = np.zeros((N, 3, 3))
@@ -162,7 +167,7 @@ def _mobility(I, S, kappa, p, tau):
     for i in range(N):
         Si, Ii = S[i], I[i]
         what = f"sᵀIs of joint {i}"
-        gram = _checked_gram(Ii, Si, what)              # (I s, s^T I s), checked once
+        gram = _checked_gram(Ii, Si, what, None if jpoints is None else jpoints[i])   # (I s, s^T I s), checked once
         T[i] = Ti = _percussion_space(Ii, Si, what, gram)                  # (6.36)
         G = _effective_mobility(Ii, Si, what, gram)     # s T^T I^-1 = s (s^T I s)^-1 s^T (6.93)
         eta = G @ (Ti @ tau[i] - p[i])                  # (7.35)
@@ -208,4 +213,4 @@ def articulated_mobility(model, q, qd=None, tau=None, f_ext=None) -> Articulated
     """
     d, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
     _check_chain(parents, len(S))
-    return mobility_recursion(I, S, kappa, p, taus, points=d.pose[:, :2])
+    return mobility_recursion(I, S, kappa, p, taus, points=d.pose[:, :2], joint_points=d.origin)

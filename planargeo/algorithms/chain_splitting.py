@@ -130,12 +130,14 @@ class ChainSplit:
     qdd: np.ndarray
 
 
-def chain_split(I, S, kappa, p, tau, parents=None) -> ChainSplit:
+def chain_split(I, S, kappa, p, tau, parents=None, joint_points=None) -> ChainSplit:
     """Solve a chain by chain splitting on arrays (thesis 7.6 algorithm).
 
     Steps: articulated inertias (7.1.1), articulated mobilities (7.4.1),
     then every ``a_i`` directly by 7.54, every ``f_{i+1}`` by 7.56, and the
-    joint accelerations by 6.110.
+    joint accelerations by 6.110.  ``joint_points`` (N, 2): each joint's point, where the
+    singularity rule of :data:`planargeo.subspaces.COND_LIMIT` is measured (default the origin;
+    :func:`mobility_split` passes the joint frames' origins).
 
     Examples
     --------
@@ -145,7 +147,6 @@ def chain_split(I, S, kappa, p, tau, parents=None) -> ChainSplit:
     >>> chain_split(I, S, np.zeros((2, 3)), np.zeros((2, 3)), [np.ones(1), np.zeros(1)]).qdd.round(9)
     array([ 1.71428571, -4.28571429])
     """
-    from .projective import force_propagator
 
     I = np.asarray(I, dtype=float)
     N = I.shape[0]
@@ -155,8 +156,8 @@ def chain_split(I, S, kappa, p, tau, parents=None) -> ChainSplit:
     tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
     kappa = np.asarray(kappa, dtype=float)
     p = np.asarray(p, dtype=float)
-    A, d, T = _articulated(I, S, kappa, p, tau, list(range(-1, N - 1)))     # (7.1.1)
-    Lam, b, _ = _mobility(I, S, kappa, p, tau)                               # (7.4.1)
+    A, d, T = _articulated(I, S, kappa, p, tau, list(range(-1, N - 1)), joint_points)     # (7.1.1)
+    Lam, b, Tm = _mobility(I, S, kappa, p, tau, joint_points)                              # (7.4.1)
     a = np.zeros((N, 3))
     f = np.zeros((N, 3))
     for i in range(N - 1):
@@ -165,8 +166,8 @@ def chain_split(I, S, kappa, p, tau, parents=None) -> ChainSplit:
         a[i] = split_acceleration(*args)                # (7.54)
         f[j] = split_force(*args)                       # (7.56)
     a[N - 1] = b[N - 1]                                 # f_{N+1} = 0 in (7.37)
-    f[0] = force_propagator(I[0], S[0], tau[0], np.asarray(p, dtype=float)[0],
-                            f[1] if N > 1 else np.zeros(3), np.zeros(3), kappa[0])   # (6.113b)
+    if N:   # (6.113b) with a_0 = 0: f = T Q + R Uᵀ (I κ + p + f_next), R Uᵀ = 1 - T sᵀ (7.8); T of sᵀIs (checked)
+        f[0] = Tm[0] @ tau[0] + (_EYE3 - Tm[0] @ S[0].T) @ (I[0] @ kappa[0] + p[0] + (f[1] if N > 1 else 0.0))
     qdd = [T[i].T @ (a[i] - (a[i - 1] if i else 0.0) - kappa[i]) for i in range(N)]  # (6.110)
     qdd = np.concatenate(qdd) if qdd else np.zeros(0)
     return ChainSplit(a, f, qdd)
@@ -182,9 +183,9 @@ def mobility_split(model, q, qd=None, tau=None, f_ext=None) -> ChainSplit:
     >>> r.qdd.round(9)
     array([ 1.71428571, -4.28571429])
     """
-    _, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
+    d, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
     _check_chain(parents, len(S))
-    return chain_split(I, S, kappa, p, taus)
+    return chain_split(I, S, kappa, p, taus, joint_points=d.origin)
 
 
 def forward_dynamics_mobility_split(model, q, qd, tau, f_ext=None) -> np.ndarray:
@@ -223,11 +224,11 @@ def _mobility_split_qdd(model, q, qd, tau, f_ext):
     """``qdd`` of one state by 7.54 and 6.110 (the forces 7.56 of :func:`mobility_split` are not needed)."""
     from .articulated_inertia import _articulated
 
-    _, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext, checked=True)
+    data, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext, checked=True)
     _check_chain(parents, len(S))
     N = len(S)
-    A, d, T = _articulated(I, S, kappa, p, taus, parents)
-    Lam, b, _ = _mobility(I, S, kappa, p, taus)
+    A, d, T = _articulated(I, S, kappa, p, taus, parents, data.origin)
+    Lam, b, _ = _mobility(I, S, kappa, p, taus, data.origin)
     a = np.zeros((N, 3))
     for i in range(N - 1):
         j = i + 1

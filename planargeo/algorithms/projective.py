@@ -299,7 +299,7 @@ class ProjectiveWorkspace:
     qdd: np.ndarray
 
 
-def projective_solve(I, S, kappa, p, tau, parents=None, points=None) -> ProjectiveWorkspace:
+def projective_solve(I, S, kappa, p, tau, parents=None, points=None, joint_points=None) -> ProjectiveWorkspace:
     """Projective articulated equations of motion on arrays (thesis 6.101-6.110).
 
     Parameters
@@ -313,6 +313,10 @@ def projective_solve(I, S, kappa, p, tau, parents=None, points=None) -> Projecti
         A point of each joint for the reaction bases (:func:`planargeo.joints.reaction_space_of`:
         used by prismatic joints, whose reaction force passes through it); default the origin.
         :func:`projective_workspace` passes each body's frame origin.
+    joint_points : (N, 2), optional
+        Each joint's point (pivot; placement point of a prismatic joint: the joint
+        frame's origin), where the singularity rule of :data:`planargeo.subspaces.COND_LIMIT`
+        is measured; default the origin.  The model-level functions pass the joint frames' origins.
 
     Returns
     -------
@@ -341,7 +345,7 @@ def projective_solve(I, S, kappa, p, tau, parents=None, points=None) -> Projecti
     tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
     kappa = np.asarray(kappa, dtype=float)
     p = np.asarray(p, dtype=float)
-    rec = articulated_recursion(I, S, kappa, p, tau, parents, points)
+    rec = articulated_recursion(I, S, kappa, p, tau, parents, points, joint_points)
     A, d, T, R = rec.A, rec.d, rec.T, rec.R
     U = [_reactive_from_T(R[i], S[i], T[i]) for i in range(N)]   # (6.99), inverse-free (6.75)
     a = np.zeros((N, 3))
@@ -376,7 +380,7 @@ def projective_workspace(model, q, qd=None, tau=None, f_ext=None) -> ProjectiveW
     [1.714285714286, -4.285714285714]
     """
     d, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
-    return projective_solve(I, S, kappa, p, taus, parents, d.pose[:, :2])
+    return projective_solve(I, S, kappa, p, taus, parents, d.pose[:, :2], d.origin)
 
 
 def _projective_qdd(model, q, qd, tau, f_ext):
@@ -389,8 +393,8 @@ def _projective_qdd(model, q, qd, tau, f_ext):
     """
     from .articulated_inertia import _articulated
 
-    _, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext, checked=True)
-    A, d, T = _articulated(I, S, kappa, p, taus, parents)
+    data, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext, checked=True)
+    A, d, T = _articulated(I, S, kappa, p, taus, parents, data.origin)
     N = len(S)
     a = np.zeros((N, 3))
     qdd = []

@@ -42,7 +42,7 @@ from .._validate import as_array
 from ..errors import ShapeError, SingularConfigurationError, TopologyError
 from ..joints import reaction_space_of
 from ..kinematics import _kinematics_scalar, check_state, kinematics
-from ..subspaces import _effective_mobility, _percussion_space, reactive_acceleration_space
+from ..subspaces import _effective_mobility, _percussion_space, joint_scale, reactive_acceleration_space
 from ..model import Model, _cycle_error, _find_cycle
 
 __all__ = ["adjacency", "trunk", "blocks", "reaction_basis", "quake_space", "StackedSolution", "stacked_solve",
@@ -201,8 +201,10 @@ def articulated_quantities(model: Model, data, tau):
     -------
     dict
         Per-body lists ``A`` (3×3), ``d`` (3,), ``s`` (3×k), ``T`` (3×k),
-        ``P = R U^T`` (3×3), and ``points`` (the body frame origins, used for
-        the reaction bases of :func:`quake_space`).
+        ``P = R U^T`` (3×3), ``points`` (the body frame origins, used for
+        the reaction bases of :func:`quake_space`) and ``joint_points`` (N, 2) (the
+        joint frames' origins, where the singularity rule of
+        :data:`planargeo.subspaces.COND_LIMIT` is measured).
 
     Raises
     ------
@@ -230,24 +232,27 @@ def articulated_quantities(model: Model, data, tau):
     s = [S[..., :, offs[i]:offs[i + 1]] for i in range(N)]          # data.s(i)
     T, P = [None] * N, [None] * N
     eye3 = np.eye(3)
+    jp = np.asarray(data.origin)                   # the joints' points: where the singularity rule is measured
     for i in range(N - 1, -1, -1):
         Ai = A[i] = 0.5 * (A[i] + A[i].T)          # symmetric by construction; remove round-off
-        T[i] = _percussion_space(Ai, s[i], f"sᵀAs of joint {i}")            # (9.19, 6.105)
+        T[i] = _percussion_space(Ai, s[i], f"sᵀAs of joint {i}", point=jp[i])   # (9.19, 6.105)
         P[i] = eye3 - T[i] @ s[i].T                                         # R U^T (7.8)
         j = model.parents[i]
         if j >= 0:
             Qi = tau[offs[i]:offs[i + 1]]
             A[j] = A[j] + P[i] @ Ai
             d[j] = d[j] + T[i] @ Qi + P[i] @ (Ai @ kap[i] + d[i])
-    return {"A": A, "d": d, "s": s, "T": T, "P": P, "points": list(np.asarray(data.pose)[:, :2])}
+    return {"A": A, "d": d, "s": s, "T": T, "P": P, "points": list(np.asarray(data.pose)[:, :2]),
+            "joint_points": jp}
 
 
 def joint_conditions(model: Model, q) -> np.ndarray:
     """Scale-free condition number of every joint's ``sᵀAs`` at ``q`` (thesis 7.7a, 6.105; the singular case of 3.6).
 
-    ``cond_i = ‖A_i‖ ‖s_i‖² / σ_min(s_iᵀ A_i s_i)`` (Frobenius norms), the
-    package's singularity rule (:mod:`planargeo.subspaces`, limit
-    ``COND_LIMIT = 1e12``), with ``A_i`` the articulated inertias of the
+    ``cond_i = ‖A_i‖ ‖s_i‖² / σ_min(s_iᵀ A_i s_i)`` (Frobenius norms; ``A_i`` and
+    ``s_i`` at the joint's point, :func:`planargeo.subspaces.joint_scale`), the
+    package's singularity rule (:data:`planargeo.subspaces.COND_LIMIT` ``= 1e12``;
+    invariant under moving the whole mechanism), with ``A_i`` the articulated inertias of the
     tree (``A = I + C^T R U^T A C``).  Unlike the forward dynamics it never
     raises: a singular joint gets ``inf`` (and is treated as locked for its
     parent).  ``A`` does not depend on ``q̇``.  Joints with no coordinates
@@ -257,8 +262,9 @@ def joint_conditions(model: Model, q) -> np.ndarray:
     Examples
     --------
     A unit point mass on the pivot of a rod along which a second unit point
-    mass slides (at ``x``): ``sᵀAs = m x²`` for the pivot and ``‖A‖ ≈ √5 m``,
-    so ``cond ≈ √5 / x²``; the slider's own ``‖I‖ ‖s‖² / sᵀIs = √(2 + 2x² + x⁴)``.
+    mass slides (at ``x``): ``sᵀAs = m x²`` for the pivot and ``‖A‖ ≈ √5 m`` at it,
+    so ``cond ≈ √5 / x²``; the slider (its point: the pivot) has ``sᵀIs = m`` and
+    ``‖I‖ = m √(2 + 2x² + x⁴)`` there, so ``cond = √(2 + 2x² + x⁴)``.
 
     >>> from planargeo.model import Body, Joint, Model
     >>> m = Model([Body(1.0), Body(1.0)], [Joint("revolute"), Joint("prismatic")], [-1, 0])
@@ -283,7 +289,7 @@ def joint_conditions(model: Model, q) -> np.ndarray:
             M = si.T @ Ai @ si
             M = 0.5 * (M + M.T)
             smin = float(np.abs(np.linalg.eigvalsh(M)).min()) if M.shape[0] > 1 else abs(float(M[0, 0]))
-            scale = float(np.sqrt(np.vdot(Ai, Ai))) * float(np.vdot(si, si))
+            scale = joint_scale(Ai, si, data.origin[i])              # ‖A_P‖ ‖s_P‖² at the joint's point
             out[i] = scale / smin if smin > 0 else np.inf
             if np.isfinite(out[i]):
                 P = eye3 - Ai @ si @ np.linalg.solve(M, si.T)        # R U^T = 1 - T s^T (7.8)
@@ -539,9 +545,11 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     # (9.39): a = L^T [S T^T A^-1 (T Q - d) + U R^T κ]
     # S T^T A^-1 = S (S^T A S)^-1 S^T: no inverse of A needed
     if N and all(k == 1 for k in ks):              # one-dof joints: all bodies in one call (sᵀAs checked above)
-        mobs = _effective_mobility(np.stack(art["A"]), np.stack(art["s"]), "sᵀAs of a joint")
+        mobs = _effective_mobility(np.stack(art["A"]), np.stack(art["s"]), "sᵀAs of a joint",
+                                   point=art["joint_points"])
     else:
-        mobs = [_effective_mobility(Ai, si, f"sᵀAs of joint {i}") for i, (si, Ai) in enumerate(zip(art["s"], art["A"]))]
+        mobs = [_effective_mobility(Ai, si, f"sᵀAs of joint {i}", point=art["joint_points"][i])
+                for i, (si, Ai) in enumerate(zip(art["s"], art["A"]))]
     sol.StTAinv = _blockdiag(mobs, three, three)
     sol.mobs = np.reshape(mobs, (N, 3, 3))         # its 3×3 blocks (mobility_times)
     sol.parents = tuple(model.parents)
@@ -654,8 +662,9 @@ def tree_mobilities(model: Model, data, tau, art=None, *, siblings: bool = True)
         Qi = tau[model.q_slice(i)]
         # s T^T I^-1 = s (s^T I s)^-1 s^T and U R^T = 1 - s T^T: no inverse of I
         # (point masses have a singular I); η = s T^T I^-1 (T Q - p)   (7.35)
-        Ti = _percussion_space(Ii, si, f"sᵀIs of joint {i}")             # (6.36)
-        mob_i = _effective_mobility(Ii, si, f"sᵀIs of joint {i}")       # (6.93)
+        Pi = data.origin[i]                                             # the joint's point (the rule)
+        Ti = _percussion_space(Ii, si, f"sᵀIs of joint {i}", point=Pi)             # (6.36)
+        mob_i = _effective_mobility(Ii, si, f"sᵀIs of joint {i}", point=Pi)       # (6.93)
         eta = mob_i @ (Ti @ Qi - p[i])
         URt = one - si @ Ti.T
         X = one + URt @ M @ Ii
