@@ -49,17 +49,13 @@ if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
 import planargeo._reference as ref  # noqa: E402  (the study's reference, one copy: also tests and planargeo.bench)
-from planargeo.algorithms.aba import forward_dynamics  # noqa: E402
-from planargeo.algorithms.chain_splitting import forward_dynamics_mobility_split  # noqa: E402
-from planargeo.algorithms.crba import forward_dynamics_crba  # noqa: E402
-from planargeo.algorithms.projective import forward_dynamics_projective  # noqa: E402
-from planargeo.algorithms.stacked import forward_dynamics_stacked  # noqa: E402
 from planargeo.algorithms.loops import SINGULAR_COND, constrained_dynamics_lagrange, loop_solve  # noqa: E402
 from planargeo.conics import pole  # noqa: E402
 from planargeo.errors import DegenerateGeometryError, SingularConfigurationError, SingularInertiaError  # noqa: E402
 from planargeo.inertia import percussion_axis, percussion_pole  # noqa: E402
 from planargeo.model import Body, Joint, Model, chain_model, random_model  # noqa: E402
 from planargeo.projective import COND_LIMIT, direction, from_xy, join, meet, signed_distance, to_xy  # noqa: E402
+from planargeo.scenes.chain import METHODS  # noqa: E402  (method name -> forward dynamics, one table)
 
 EPS, EPS_LD = ref.EPS, ref.EPS_LD
 _T0 = time.perf_counter()
@@ -69,13 +65,6 @@ def log(msg: str) -> None:
     """One progress line on stderr (flushed), with the wall time since the start."""
     print(f"[breakdown {time.perf_counter() - _T0:6.1f} s] {msg}", file=sys.stderr, flush=True)
 
-METHODS = {
-    "aba": forward_dynamics,
-    "projective": forward_dynamics_projective,
-    "mobility_split": forward_dynamics_mobility_split,
-    "stacked": forward_dynamics_stacked,
-    "crba": forward_dynamics_crba,
-}
 MARKERS = {"aba": "o", "projective": "s", "mobility_split": "^", "stacked": "D", "crba": "x",
            "loop_solve": "v", "lagrange": "P"}
 COLORS = {"aba": "C0", "projective": "C1", "mobility_split": "C2", "stacked": "C3", "crba": "C4",

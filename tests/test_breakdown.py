@@ -15,7 +15,6 @@ import numpy as np
 import pytest
 
 from planargeo.algorithms.aba import forward_dynamics
-from planargeo.algorithms.chain_splitting import forward_dynamics_mobility_split
 from planargeo.algorithms.crba import forward_dynamics_crba
 from planargeo.algorithms.loops import SINGULAR_COND, constrained_dynamics_lagrange, loop_solve
 from planargeo.algorithms.projective import forward_dynamics_projective
@@ -27,6 +26,7 @@ from planargeo.model import Body, Joint, Model, chain_model  # noqa: F401
 from planargeo.projective import (COND_LIMIT, direction, from_xy, join, line_through_point_direction, meet,
                                   normalize_line, signed_distance, to_xy)
 from planargeo.screws import inertia_matrix
+from planargeo.scenes.chain import METHODS  # method name -> forward dynamics, one table
 from planargeo._reference import (  # the study's reference: one copy, shared with the benchmarks
     EPS, _gauss_solve, reference_system, reference_qdd, cond_spd, rel_err, graded_chain, state,
     slider_crank_reference, folded_state, fr, cross_exact, matvec_exact, solve_exact, hom_err, cross_cond,
@@ -36,13 +36,6 @@ from planargeo._reference import (  # the study's reference: one copy, shared wi
 )
 
 
-METHODS = {
-    "aba": forward_dynamics,
-    "projective": forward_dynamics_projective,
-    "mobility_split": forward_dynamics_mobility_split,
-    "stacked": forward_dynamics_stacked,
-    "crba": forward_dynamics_crba,
-}
 RECURSIVE = ("aba", "projective", "mobility_split", "stacked")
 
 
