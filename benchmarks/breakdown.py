@@ -54,7 +54,7 @@ from planargeo.conics import pole  # noqa: E402
 from planargeo.errors import DegenerateGeometryError, SingularConfigurationError, SingularInertiaError  # noqa: E402
 from planargeo.inertia import percussion_axis, percussion_pole  # noqa: E402
 from planargeo.model import Body, Joint, Model, chain_model, random_model  # noqa: E402
-from planargeo.projective import COND_LIMIT, direction, from_xy, join, meet, signed_distance, to_xy  # noqa: E402
+from planargeo.projective import COND_LIMIT, from_xy, join, meet, signed_distance, to_xy  # noqa: E402
 from planargeo.scenes.chain import METHODS  # noqa: E402  (method name -> forward dynamics, one table)
 
 EPS, EPS_LD = ref.EPS, ref.EPS_LD

@@ -58,7 +58,7 @@ from planargeo.algorithms.aba import articulated_body, forward_dynamics  # noqa:
 from planargeo.algorithms.articulated_inertia import articulated_inertia  # noqa: E402
 from planargeo.algorithms.articulated_mobility import articulated_mobility  # noqa: E402
 from planargeo.algorithms.chain_splitting import forward_dynamics_mobility_split, mobility_split  # noqa: E402
-from planargeo.algorithms.loops import SINGULAR_COND, loop_solve  # noqa: E402
+from planargeo.algorithms.loops import SINGULAR_COND  # noqa: E402
 from planargeo.algorithms.projective import forward_dynamics_projective, projective_workspace  # noqa: E402
 from planargeo.algorithms.stacked import blocks, forward_dynamics_stacked, stacked_solve  # noqa: E402
 from planargeo.bench import ratio_stats, time_interleaved  # noqa: E402

@@ -46,6 +46,7 @@ import json
 import os
 import platform
 import shutil
+import subprocess
 import sys
 import time
 import timeit
@@ -557,8 +558,7 @@ def _peer_label(p):
 
 
 def _single_tables(rows) -> list:
-    """Markdown lines: the interleaved headline ratios and the all-methods time table."""
-    names = [n for n in rows[0]["times"] if n not in PEERS]
+    """Markdown lines: the interleaved headline ratios (the all-methods time table is :func:`_time_table`)."""
     peers = [p for p in PEERS if p in rows[0]["times"]]
     lines = []
     if "ratio" in rows[0] or "ratio_mj" in rows[0]:
@@ -1082,8 +1082,6 @@ def main(args) -> int:
     # (CRBA) erratic, so every method runs with one BLAS thread: re-run in a fresh process if needed.
     argv = _single_threaded_argv(args)
     if argv is not None:
-        import subprocess
-
         env = dict(os.environ, **{v: "1" for v in _THREAD_VARS})
         return subprocess.call(argv, env=env)
     out = Path(args.out)
@@ -1113,8 +1111,6 @@ def main(args) -> int:
                 continue
             else:
                 _progress(f"[{group}] {script} has no --quick: running it in full")
-        import subprocess
-
         _progress(f"[{group}] running python {' '.join(cmd[1:])} ...")
         code = subprocess.call(cmd, cwd=str(scripts.parent), env=dict(os.environ, MPLBACKEND="Agg"))
         if code:

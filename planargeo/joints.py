@@ -265,7 +265,7 @@ def reaction_space_of(s, point=(0.0, 0.0)) -> np.ndarray:
         if w != 0.0:
             return reaction_space("revolute", (-y / w, x / w))
         return reaction_space("prismatic", point, (x, y))
-    (x1, y1, w1), (x2, y2, w2) = a[:, 0], a[:, 1]
+    w1, w2 = a[2, 0], a[2, 1]
     if w1 == 0.0 and w2 == 0.0:
         return reaction_space("twin_prismatic")             # two translations: only a couple
     e = w2 * a[:2, 0] - w1 * a[:2, 1]                      # the translation in the span

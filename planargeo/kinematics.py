@@ -279,7 +279,7 @@ def _kinematics_scalar(model: Model, q: np.ndarray, qd: np.ndarray, f_ext) -> Da
     """:func:`kinematics` for one state, on Python floats (same results, less overhead)."""
     cos, sin = math.cos, math.sin
     arr = model.arrays()
-    N, nq = model.N, model.nq
+    nq = model.nq
     gx, gy = model.gravity
     ql, qdl = q.tolist(), qd.tolist()
     pose, com, origin, v, kappa, g, Il = [], [], [], [], [], [], []

@@ -22,8 +22,8 @@ from planargeo.algorithms.stacked import forward_dynamics_stacked
 from planargeo.conics import pole
 from planargeo.errors import DegenerateGeometryError, SingularConfigurationError, SingularInertiaError
 from planargeo.inertia import percussion_axis, percussion_pole
-from planargeo.model import Body, Joint, Model, chain_model  # noqa: F401
-from planargeo.projective import (COND_LIMIT, direction, from_xy, join, line_through_point_direction, meet,
+from planargeo.model import chain_model
+from planargeo.projective import (COND_LIMIT, direction, from_xy, join, meet,
                                   normalize_line, signed_distance, to_xy)
 from planargeo.screws import inertia_matrix
 from planargeo.scenes.chain import METHODS  # method name -> forward dynamics, one table

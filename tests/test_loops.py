@@ -13,7 +13,7 @@ from planargeo.contacts import (
 from planargeo.errors import (
     DegenerateGeometryError, InputError, ShapeError, SingularConfigurationError)
 from planargeo.kinematics import kinematics
-from planargeo.model import Body, Joint, Model, chain_model, random_model
+from planargeo.model import Model, chain_model, random_model
 
 FIG91 = [-1, 0, 1, 2, 0, 4, 5, 5, 0]
 

@@ -376,11 +376,12 @@ def test_articulation_matrix_series_9_34_and_recursion_9_64():
         series += Xk
     assert np.allclose(series, sol.L, atol=1e-10)                         # (9.34), finite
     assert np.allclose(sol.L.T, np.linalg.inv(np.eye(21) - sol.U @ sol.R.T @ sol.C), atol=1e-10)  # (9.40)
-    # (9.64): u_i = s_i T_i^T A_i^-1 (T_i Q_i - d_i) + U_i R_i^T (u_parent + κ_i), root to tips
+    # (9.64): u_i = s_i T_i^T A_i^-1 (T_i Q_i - d_i) + U_i R_i^T (u_parent + κ_i), root to tips;
+    # its first term in the s-only form s_i (s_iᵀ A_i s_i)^-1 (Q_i - s_iᵀ d_i) (s_iᵀ T_i = 1)
     art = sol.articulated
     u = np.zeros((7, 3))
     for i in range(7):
-        s, T, A = art["s"][i], art["T"][i], art["A"][i]
+        s, A = art["s"][i], art["A"][i]
         up = u[m.parents[i]] if m.parents[i] >= 0 else np.zeros(3)
         Qi = tau[m.q_slice(i)]
         R, U = sol.R[3 * i:3 * i + 3], sol.U[3 * i:3 * i + 3]

@@ -4,7 +4,6 @@ import sys
 import textwrap
 
 import ipywidgets as W
-import numpy as np
 import pytest
 
 import planargeo.widgets as widgets

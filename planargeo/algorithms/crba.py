@@ -64,7 +64,6 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
     """
     q, _, _, _, _, shape = check_state(model, q)
     data = kinematics(model, q)
-    nq = model.nq
     if method == "jacobian":
         J = data.J
         return np.einsum("...nki,...nkl,...nlj->...ij", J, data.I, J)

@@ -31,7 +31,7 @@ import functools
 
 import numpy as np
 
-from ..contacts import Contact, contact_matrix, stacked_contact_spaces, validate_contacts
+from ..contacts import contact_matrix, stacked_contact_spaces, validate_contacts
 from ..errors import InputError, ShapeError, SingularConfigurationError
 from ..kinematics import check_state, kinematics
 from ..model import Model
@@ -178,6 +178,7 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
     is pinned to the ground at (1, 0).  In the crank angle ``φ`` its energy is
     ``T = 5/6 φ̇²``, ``V = 2 g sin φ``, so ``φ̈ = -6/5 g cos φ``:
 
+    >>> from planargeo.contacts import Contact
     >>> from planargeo.model import chain_model
     >>> pin = Contact("pin", 2, -1, point_a=(1.0, 0.0), point_b=(1.0, 0.0))
     >>> sol = loop_solve(chain_model(3), [1.2, -1.2, 1.2 - np.pi], [1.0, -1.0, 1.0], [0.0] * 3, contacts=[pin])
@@ -395,6 +396,7 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
     --------
     The four-bar of :func:`loop_solve`, ``φ̈ = -6/5 g cos φ``:
 
+    >>> from planargeo.contacts import Contact
     >>> from planargeo.model import chain_model
     >>> pin = Contact("pin", 2, -1, point_a=(1.0, 0.0), point_b=(1.0, 0.0))
     >>> ref = constrained_dynamics_lagrange(chain_model(3), [1.2, -1.2, 1.2 - np.pi], [1.0, -1.0, 1.0],

@@ -39,9 +39,9 @@ import functools
 import numpy as np
 
 from .._validate import as_array
-from ..errors import ShapeError, SingularConfigurationError, TopologyError
+from ..errors import ShapeError, TopologyError
 from ..joints import reaction_space_of
-from ..kinematics import _kinematics_scalar, check_state, kinematics
+from ..kinematics import _kinematics_scalar, check_state
 from ..subspaces import _effective_mobility, _percussion_space, joint_scale, reactive_acceleration_space
 from ..model import Model, _cycle_error, _find_cycle
 
@@ -520,7 +520,6 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
         data = _kinematics_scalar(model, q, np.zeros(nq) if qd is None else qd, f_ext)   # kinematics(), checked
     art = articulated_quantities(model, data, tau)
     ks = [si.shape[1] for si in art["s"]]
-    kr = [3 - k for k in ks]
     three = [3] * N
     sol = StackedSolution()
     sol.N = N
@@ -533,7 +532,7 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     sol.kappa = data.kappa.reshape(-1)
     sol.p = data.p.reshape(-1)
     Q = np.asarray(tau, dtype=float)
-    C, S, T, P, A = sol.C, sol.S, sol.T, sol.P, sol.A
+    C, T, P, A = sol.C, sol.T, sol.P, sol.A
     # L = (1 - C^T R U^T)^-1 (9.31) is applied by solves with the unit upper triangular
     # 1 - C^T P (parents before children); sol.L itself is built on first access.
     Linv = np.eye(3 * N)                           # 1 - C^T P: block (λ(i), i) is -P_i

@@ -33,7 +33,7 @@ from matplotlib.transforms import Affine2D, IdentityTransform
 
 from .._validate import as_array, as_vec3
 from ..errors import InputError
-from .style import COLORS, style as _style
+from .style import style as _style
 
 __all__ = [
     "PointArtist", "LineArtist", "ConicArtist",

@@ -13,7 +13,7 @@ from ..artists import plot_conic, plot_line
 from ..constructions import (draw_acceleration_step, draw_dimension, draw_newton_euler,
                              draw_twist_sum, draw_velocity_step, draw_wrench_sum, label)
 from ..mechanism import draw_com, draw_frame, draw_ground, draw_link, draw_model, draw_pin
-from ..style import COLORS, legend, sum_style
+from ..style import COLORS, legend
 from . import fit_view, new_figure, register
 
 

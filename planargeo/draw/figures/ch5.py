@@ -8,7 +8,7 @@ from ...conics import (conic_ellipse, decompose_line_special, decompose_point_sp
 from ...inertia import Inertia, percussion_axis
 from ...projective import from_standard, from_xy, join, to_xy
 from ..artists import plot_conic, plot_line, plot_point
-from ..constructions import (line_conic_points, draw_dimension, draw_percussion, draw_polar_exterior,
+from ..constructions import (line_conic_points, draw_percussion, draw_polar_exterior,
                              draw_polar_interior, draw_power, draw_segment, label)
 from ..mechanism import draw_body, draw_com, link_polygon
 from ..style import COLORS

@@ -5,7 +5,7 @@ import numpy as np
 from shapely.geometry import Point
 
 from ...algorithms.rnea import newton_euler
-from ...inertia import Inertia, percussion_pole
+from ...inertia import Inertia
 from ...joints import revolute
 from ...projective import from_xy, join, to_xy
 from ...scenes import build as build_scene

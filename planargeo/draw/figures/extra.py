@@ -12,7 +12,6 @@ from ...projective import from_xy, to_xy
 from ...scenes import build as build_scene
 from ..artists import plot_conic, plot_line, plot_point
 from ..mechanism import draw_body, draw_com, draw_joint_split, draw_model, link_polygon
-from ..style import COLORS
 from . import fit_view, new_figure, register
 from ._layout import shape_points
 
