@@ -149,8 +149,9 @@ def test_long_chain_of_mixed_tiny_and_huge_masses_at_cond_1e12():
     errs = {name: rel_err(f(m, q, qd, tau), x) for name, f in METHODS.items()}
     assert errs["aba"] < 100 * EPS
     assert errs["projective"] < 1e-11 and errs["stacked"] < 1e-11
+    # mobility_split is held only to ε cond(H): the study observes it as the least accurate recursive
+    # method here (6.3e-6, 1e10 x ABA's error), a weakness a fix may remove, so it is not asserted
     assert max(errs.values()) <= EPS * c                              # nobody worse than ε cond(H)
-    assert errs["mobility_split"] > 1e3 * errs["aba"]                 # the least accurate recursive method
 
 
 def test_long_chain_of_mixed_masses_dense_solve_refuses_past_its_threshold():
