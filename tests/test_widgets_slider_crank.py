@@ -78,6 +78,7 @@ def test_dead_centre_and_impossible_configurations(ex):
     assert ex._msg_text.get_visible()
     ex.set(**{"rod length": 2.29, "crank angle (deg)": 0.0})   # rod along the horizontal
     assert "singular" in ex.message
+    assert "piston pin on the crank pivot" in ex.message       # folded: l = r at ψ = 0
     good = dict(ex.readout_values)
     ex.controls["rod length"].value = 2.0                      # rod cannot reach
     assert "rod too short" in ex.message and "rod too short" in ex._msg_text.get_text()
@@ -121,3 +122,23 @@ def test_crank_changes_build_no_model(ex, monkeypatch):
     assert built == []
     ex.controls["gravity"].value = 3.0
     assert len(built) == 1 and built[0]["g"] == 3.0 and built[0]["l"] == 5.0
+
+
+def test_folded_dead_centre_reports_the_contact_matrix(ex):
+    """l = r at ψ = 180°: the rod folds back onto the crank, the piston pin sits on the crank pivot
+    (pin at (-r, 0), rod of length r along +x), so the slider's contact matrix is singular; the widget
+    reports what the scene reports, with the condition of that matrix (beyond COND_LIMIT = 1e12)."""
+    import re
+
+    from planargeo import scenes
+    from planargeo.errors import SingularConfigurationError
+
+    ex.set(**{"rod length": 2.29, "crank angle (deg)": 180.0})
+    assert "dead centre with the piston pin on the crank pivot" in ex.message
+    assert "contact matrix" in ex.message and "singular" in ex.message
+    assert "piston pin is on the crank pivot" in ex._msg_text.get_text()
+    cond = float(re.search(r"condition number ([0-9.e+]+)", ex.message).group(1))
+    assert cond > 1e12
+    with pytest.raises(SingularConfigurationError) as err:
+        scenes.build("slider-crank", l=2.29, psi=math.pi)
+    assert str(err.value) == ex.message and err.value.cond > 1e12

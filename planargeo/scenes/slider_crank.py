@@ -42,7 +42,7 @@ import numpy as np
 from ..errors import SceneError, SingularConfigurationError
 from . import SceneResult, check_param, register
 
-__all__ = ["slider_crank", "slider_crank_model", "slider_crank_state"]
+__all__ = ["slider_crank", "slider_crank_model", "slider_crank_solve", "slider_crank_state"]
 
 
 def slider_crank_model(m1=0.40, m2=0.15, m3=0.30, r=2.29, l=5.00, t=0.5, g=9.81):
@@ -106,6 +106,68 @@ def slider_crank_state(psi=0.4, psidot=20.0, r=2.29, l=5.00):
     return q, qd
 
 
+def slider_crank_solve(model, psi, psidot, r, l, t, drive="free"):
+    """Close the loop at crank angle ``psi`` and solve it with the constrained algorithm (9.5).
+
+    The one solve behind the scene and the slider-crank explorer (which passes
+    its cached model).
+
+    Parameters
+    ----------
+    model : Model
+        :func:`slider_crank_model` built with the same ``r``, ``l``, ``t``.
+    psi, psidot : float
+        Crank angle and speed.
+    r, l, t : float
+        Crank, rod and piston lengths (thesis 9.6).
+    drive : {"free", "constant-speed"}
+        ``"constant-speed"`` prescribes ``ψ̈ = 0`` (the torque needed is
+        ``sol.tau_drive``).
+
+    Returns
+    -------
+    q, qd : ndarray
+        Joint coordinates and rates closing the loop.
+    sol : LoopSolution
+        The result of :func:`~planargeo.algorithms.loops.loop_solve`.
+    h : float
+        Piston height (9.85).
+
+    Raises
+    ------
+    SceneError
+        If the rod cannot reach the piston line.
+    SingularConfigurationError
+        If the loop closure is singular (rod along the horizontal); when the
+        piston pin is then on the crank pivot (``l = r`` at a dead centre) the
+        message says so and carries the condition of the contact matrix.
+
+    Examples
+    --------
+    >>> q, qd, sol, h = slider_crank_solve(slider_crank_model(), 0.4, 20.0, 2.29, 5.0, 0.5)
+    >>> round(h, 3)
+    5.925
+    """
+    from ..algorithms.loops import SINGULAR_COND, loop_condition, loop_solve
+
+    try:
+        q, qd = slider_crank_state(psi, psidot, r, l)
+    except SingularConfigurationError:
+        # the rod lies along the horizontal: if the piston pin is then on the crank pivot (l = r at a dead
+        # centre, the folded crank), the contact matrix is singular too: report that, with its condition
+        beta = 0.0 if -r * np.cos(psi) / l > 0 else np.pi
+        cond = loop_condition(model, [psi, beta - psi, np.pi / 2 - beta])
+        if not cond <= SINGULAR_COND:
+            raise SingularConfigurationError(
+                f"singular configuration: slider-crank at a dead centre with the piston pin on the crank pivot "
+                f"(l = r = {l:g}, psi = {psi:g}): the contact matrix B^T G Λ^-1 G^T B of the piston slider is "
+                f"singular and theta_dot undetermined", cond) from None
+        raise
+    sol = loop_solve(model, q, qd, np.zeros(3), prescribed={0: 0.0} if drive == "constant-speed" else None)
+    h = r * np.sin(q[0]) + l * np.sin(q[0] + q[1]) + t * np.sin(q.sum())     # (9.85)
+    return q, qd, sol, float(h)
+
+
 def _tolist(x):
     return np.asarray(x, dtype=float).tolist()
 
@@ -125,28 +187,12 @@ def slider_crank(psi: float = 0.4, psidot: float = 20.0, m1: float = 0.40, m2: f
         ``"free"``: no crank torque; ``"constant-speed"``: the crank is driven at
         constant speed (``ψ̈ = 0``), the torque needed is ``tau_drive``.
     """
-    from ..algorithms.loops import SINGULAR_COND, loop_condition, loop_solve
-
     psi, psidot = check_param("psi", psi), check_param("psidot", psidot)
     drive = check_param("drive", drive, "choice", choices=("free", "constant-speed"))
     model = slider_crank_model(m1, m2, m3, r, l, t, g)
-    try:
-        q, qd = slider_crank_state(psi, psidot, r, l)
-    except SingularConfigurationError:
-        # the rod lies along the horizontal: if the piston pin is then on the crank pivot (l = r at a dead
-        # centre, the folded crank), the contact matrix is singular too: report that, with its condition
-        beta = 0.0 if -r * np.cos(psi) / l > 0 else np.pi
-        cond = loop_condition(model, [psi, beta - psi, np.pi / 2 - beta])
-        if not cond <= SINGULAR_COND:
-            raise SingularConfigurationError(
-                f"singular configuration: slider-crank at a dead centre with the piston pin on the crank pivot "
-                f"(l = r = {l:g}, psi = {psi:g}): the contact matrix B^T G Λ^-1 G^T B of the piston slider is "
-                f"singular and theta_dot undetermined", cond) from None
-        raise
+    q, qd, sol, h = slider_crank_solve(model, psi, psidot, r, l, t, drive)
     tau = np.zeros(3)
-    sol = loop_solve(model, q, qd, tau, prescribed={0: 0.0} if drive == "constant-speed" else None)
     v = sol.data.v
-    h = r * np.sin(q[0]) + l * np.sin(q[0] + q[1]) + t * np.sin(q.sum())     # (9.85)
     quantities = {
         "q": _tolist(q), "qd": _tolist(qd), "v": _tolist(v),
         "u": _tolist(sol.u.reshape(3, 3)),

@@ -10,7 +10,10 @@ driven at constant speed.
 A dead-centre position (crank in line with the slider) is flagged on the
 figure; a configuration that cannot be assembled (rod too short) or whose loop
 closure is singular (rod along the horizontal when ``l = r``) shows a message
-and keeps the last good drawing.
+and keeps the last good drawing.  The loop is closed and solved by
+:func:`planargeo.scenes.slider_crank.slider_crank_solve`, the scene's own solve
+(so the widget reports the folded dead centre, ``l = r`` at ``ψ = 180°``, as the
+scene does).
 
 The model is kept per rod length and gravity (a crank move only re-solves the
 loop), and the pole checkboxes only redraw.
@@ -25,8 +28,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 
 from .. import scenes
-from ..algorithms.loops import loop_solve
-from ..scenes.slider_crank import slider_crank_model, slider_crank_state
+from ..scenes.slider_crank import slider_crank_model, slider_crank_solve
 from ..draw.artists import LineArtist, PointArtist
 from ..draw.mechanism import draw_ground
 from ..draw.style import COLORS, setup_axes
@@ -105,10 +107,7 @@ class SliderCrankExplorer(Explorer):
         l, g = float(v["rod length"]), float(v["gravity"])
         r, t = self.params["r"], self.params["t"]
         model = self.model_for(l, g)
-        q, qd = slider_crank_state(psi, float(v["crank speed"]), r, l)    # loop closure
-        driven = v["drive"] == "constant-speed"
-        sol = loop_solve(model, q, qd, np.zeros(3), prescribed={0: 0.0} if driven else None)
-        h = r * math.sin(q[0]) + l * math.sin(q[0] + q[1]) + t * math.sin(q.sum())   # (9.85)
+        q, qd, sol, h = slider_crank_solve(model, psi, float(v["crank speed"]), r, l, t, v["drive"])
         st = {"sol": sol, "q": q, "qd": qd, "r": r, "l": l, "t": t, "h": h,
               "v": sol.data.v, "a": sol.a.reshape(3, 3), "F3": np.asarray(sol.F, dtype=float),
               "message": ""}
@@ -163,6 +162,8 @@ class SliderCrankExplorer(Explorer):
         text = str(exc)
         if "rod too short" in text:
             return "rod too short: it cannot reach the slider at this crank angle"
+        if "piston pin on the crank pivot" in text:
+            return "singular configuration: folded dead centre, the piston pin is on the crank pivot"
         if "singular" in text:
             return "singular configuration: the rod lies along the horizontal"
         return super().figure_message(exc)
