@@ -222,20 +222,27 @@ def test_velocity_step_lever_rule(ax):
     ax.figure.canvas.draw()
 
 
-def test_acceleration_step_bias_and_offset(ax):
+@pytest.mark.parametrize("V", [(0.0, 0.0), (-0.5, 0.8)])
+def test_acceleration_step_bias_and_offset(ax, V):
     # thesis 4.53: kappa = w qd (S - V) rotated: a translation of magnitude |w qd k|;
     # 4.54: s qdd + kappa is a rotation qdd about a point at |w qd k / qdd| from the joint
-    V, S, w, qd, qdd = np.array([0.0, 0.0]), np.array([2.0, 1.0]), 1.3, 0.9, 2.5
+    V, S, w, qd, qdd = np.array(V), np.array([2.0, 1.0]), 1.3, 0.9, 2.5
     ap = 0.4 * unit_rotation([-1.0, 1.0])
     out = draw_acceleration_step(ap, w * unit_rotation(V), unit_rotation(S), qd, qdd, ax)
+    # hand value: with twists [vx, vy, w] (a rotation w about P is w [Py, -Px, 1]) the spatial cross
+    # product (w, u) x (w', u') = (0, w z x u' + u x w' z) gives for v = w [Vy, -Vx, 1], s qd = qd [Sy, -Sx, 1]
+    #   w z x (qd (Sy, -Sx)) = w qd (Sx, Sy),   (w (Vy, -Vx)) x qd z = w qd (-Vx, -Vy),
+    # so kappa = [w qd (S - V)_x, w qd (S - V)_y, 0]: a translation along S - V (4.53-4.54, 2.19)
+    kappa_hand = np.array([w * qd * (S - V)[0], w * qd * (S - V)[1], 0.0])
     k = np.linalg.norm(S - V)
     bias = out["bias"].get_point()
+    np.testing.assert_allclose(bias, kappa_hand, rtol=1e-12, atol=1e-15)
     assert bias[2] == 0.0
     assert np.hypot(*bias[:2]) == pytest.approx(abs(w * qd * k))
     combo = out["joint_total"].get_xy()
     assert np.linalg.norm(combo - S) == pytest.approx(abs(w * qd * k / qdd))
     a = out["a"].get_point()
-    np.testing.assert_allclose(a, ap + qdd * unit_rotation(S) + bias)
+    np.testing.assert_allclose(a, ap + qdd * unit_rotation(S) + kappa_hand)
     assert abs(a @ out["lever"].get_line()) < 1e-12 * np.linalg.norm(a)
     ax.figure.canvas.draw()
 
