@@ -131,6 +131,9 @@ def joint_scale(A, s, point):
     4.58): only its moment row and column change,
     ``(A_P)_{j2} = A_{j2} + y A_{j0} - x A_{j1}`` for ``j = 0, 1`` and
     ``(A_P)_22 = A_22 + 2 y A_02 - 2 x A_12 + y² A_00 - 2 x y A_01 + x² A_11``.
+    Scale-safe: where the squares of the entries would overflow or underflow (masses
+    like ``1e160`` or ``1e-170``), the norm is taken of ``A_P`` divided by its largest
+    entry and scaled back (the rule is scale invariant).
 
     Returns
     -------
@@ -158,12 +161,22 @@ def joint_scale(A, s, point):
     p02 = a02 + y * a00 - x * a01
     p12 = a12 + y * a01 - x * a11
     p22 = a22 + y * a02 - x * a12 + y * p02 - x * p12
-    F2 = a00 * a00 + a11 * a11 + p22 * p22 + 2.0 * (a01 * a01 + p02 * p02 + p12 * p12)
+    with np.errstate(over="ignore", under="ignore"):
+        F2 = a00 * a00 + a11 * a11 + p22 * p22 + 2.0 * (a01 * a01 + p02 * p02 + p12 * p12)
+    if not np.all((F2 < 1e300) & (F2 > 1e-300)):
+        # squares overflowed or underflowed (masses like 1e160 or 1e-170): the norm is homogeneous,
+        # so take it of the entries divided by their largest magnitude, then scale back
+        e = [np.abs(v) for v in np.broadcast_arrays(a00, a11, p22, a01, p02, p12)]
+        mx = np.maximum.reduce(e)
+        safe = np.where(mx > 0, mx, 1.0)
+        r = [v / safe for v in e]
+        F2 = None
+        F = mx * np.sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + 2.0 * (r[3] * r[3] + r[4] * r[4] + r[5] * r[5]))
     x, y = x[..., None], y[..., None]
     s0, s1, s2 = s[..., 0, :], s[..., 1, :], s[..., 2, :]
     t0, t1 = s0 - y * s2, s1 + x * s2
     ss = np.sum(t0 * t0 + t1 * t1 + s2 * s2, axis=-1)
-    out = np.sqrt(F2) * ss
+    out = (np.sqrt(F2) if F2 is not None else F) * ss
     return float(out) if np.ndim(out) == 0 else out
 
 
@@ -293,10 +306,9 @@ def _gram(s: np.ndarray, As: np.ndarray, A_scale, sname: str, what: str, scale=N
     """
     if s.shape == (3, 1) and As.ndim == 2:     # one joint, one dof: Python floats (M is its own transpose)
         M = s.T @ As
-        if scale is None:
-            cond = joint_cond(M[0, 0], A_scale * A_scale, float(np.vdot(s, s)))
-        else:
-            cond = joint_cond(M[0, 0], float(scale) ** 2, 1.0)
+        smin = abs(float(M[0, 0]))     # the rule of joint_cond, without squaring the scale (no overflow)
+        scale = A_scale * float(np.vdot(s, s)) if scale is None else float(scale)
+        cond = scale / smin if smin > 0 else math.inf
         if not cond <= COND_LIMIT:
             raise SingularConfigurationError(
                 f"{what} is singular: the inertia has (almost) nothing along {sname}", float(cond))

@@ -414,3 +414,47 @@ def test_mobility_recursion_with_masses_mixed_over_fourteen_decades_is_a_named_e
     cond = ref.cond_spd(H)
     assert cond > 1e12
     assert _rel(forward_dynamics(model, q, qd, tau), exact) < 100 * EPS * cond
+
+
+def _point_mass_chain(n, mass):
+    """``n`` massless links of length 1, a point mass ``mass`` at each link's end (on the next pivot)."""
+    bodies = [Body(mass, com=(1.0, 0.0)) for _ in range(n)]
+    joints = [Joint("revolute")] + [Joint("revolute", placement=(1.0, 0.0, 0.0)) for _ in range(n - 1)]
+    return Model(bodies, joints, list(range(-1, n - 1)))
+
+
+@pytest.mark.parametrize("mass", [1e-170, 1.0, 1e160])
+@pytest.mark.parametrize("n", [10, 401])
+def test_extreme_masses_accepted_by_every_aba_path(n, mass):
+    """The rule is scale-free: masses 1e-170 (squares underflow) and 1e160 (squares overflow) are regular.
+
+    Hand closed form: a horizontal chain of point masses at rest, released, is in free fall
+    at the first instant (every vertical acceleration is compatible with the links), so mass
+    ``k`` (at ``x = k + 1``) has ``Σ_{j≤k} (k + 1 - j) q̈_j = -g``: ``q̈ = [-g, g, 0, 0, ...]``,
+    whatever the mass.  ``n = 401`` exceeds ``MAX_PLAN_BODIES``: the general component loop
+    (:func:`_aba_components`), whose cheap squared test fails for both extreme masses.
+    """
+    from planargeo.algorithms.aba import MAX_PLAN_BODIES
+    assert n <= 64 or n > MAX_PLAN_BODIES
+    m = _point_mass_chain(n, mass)
+    g = 9.81
+    want = np.zeros(n)
+    want[0], want[1] = -g, g
+    z = np.zeros(n)
+    np.testing.assert_allclose(forward_dynamics(m, z, z, z), want, atol=1e-9)
+    np.testing.assert_allclose(forward_dynamics(m, np.zeros((3, n)), np.zeros((3, n)), np.zeros((3, n))),
+                               np.broadcast_to(want, (3, n)), atol=1e-9)
+    # the global-origin methods round by ε ‖A_O‖ ‖s_O‖² / D, growing like (distance from the origin)²
+    tol = 1e-9 if n < 100 else 1e-7
+    np.testing.assert_allclose(articulated_body(m, z, z, z).qdd, want, atol=tol)
+    np.testing.assert_allclose(forward_dynamics_projective(m, z, z, z), want, atol=tol)
+
+
+def test_extreme_masses_joint_scale_finite():
+    """``joint_scale`` does not overflow/underflow: ``‖m I_unit‖_F = m ‖I_unit‖_F`` by hand."""
+    from planargeo.screws import inertia_matrix
+    from planargeo.subspaces import joint_scale
+    # unit point mass at (1, 0), pivot at the origin: A = [[1,0,0],[0,1,1],[0,1,1]], ‖A‖_F = √5
+    for mass in (1e-170, 1e160):
+        got = joint_scale(inertia_matrix(mass, [1.0, 0.0], 0.0), [0.0, 0.0, 1.0], [0.0, 0.0])
+        assert math.isclose(got, mass * math.sqrt(5.0), rel_tol=1e-14)

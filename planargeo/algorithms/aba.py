@@ -190,12 +190,26 @@ def _scalar_tables(model: Model):
     return cache["aba_scalar"]
 
 
-def _singular_components(D, F2, s2, i):
-    """Raise the singular-joint error for the states of ``D`` that fail the rule (scalars or rows)."""
-    D, F2, s2 = np.broadcast_arrays(*(np.abs(np.asarray(x, dtype=float)) for x in (D, F2, s2)))
+def _singular_components(D, A6, s, X, Y, i):
+    """The exact rule for joint ``i`` of :func:`_aba_components`, where its cheap squared test failed.
+
+    ``D = sᵀAs``; ``A6 = (A_00, A_01, A_02, A_11, A_12, A_22)`` and ``s = (s_0, s_1, s_2)`` at the
+    origin, ``(X, Y)`` the joint's point (scalars or equally long rows).  The squared test
+    ``D² LIMIT² > ‖A_P‖_F²`` also fails when the squares underflow (masses ``1e-170``) or
+    overflow: the condition number is computed scale-safely (:func:`planargeo.subspaces.joint_scale`)
+    and the error raised only for states above :data:`planargeo.subspaces.COND_LIMIT`.
+    """
+    *a, s0, s1, s2, X, Y, D = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (*A6, *s, X, Y, D)))
+    a00, a01, a02, a11, a12, a22 = a
+    A = np.stack([np.stack([a00, a01, a02], -1), np.stack([a01, a11, a12], -1),
+                  np.stack([a02, a12, a22], -1)], -2)
+    scale = joint_scale(A, np.stack([s0, s1, s2], -1)[..., None], np.stack([X, Y], -1))
+    D = np.abs(D)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        cond = np.where(D > 0, np.sqrt(F2) * s2 / np.where(D > 0, D, 1.0), np.inf)
-    raise singular_joint_error(i, float(np.max(np.where(cond <= COND_LIMIT, 0.0, cond))))
+        cond = np.where(D > 0, scale / np.where(D > 0, D, 1.0), np.inf)
+    bad = ~(cond <= COND_LIMIT)
+    if np.any(bad):
+        raise singular_joint_error(i, float(np.max(np.where(bad, cond, 0.0))))
 
 
 def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.sin) -> list:
@@ -297,7 +311,7 @@ def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.
         F2 = a00 * a00 + a11 * a11 + p22 * p22 + 2.0 * (a01 * a01 + p02 * p02 + p12 * p12)
         ok = D * D * COND_LIMIT2 > F2
         if ok is not True and not np.all(ok):
-            _singular_components(D, F2, 1.0, i)
+            _singular_components(D, A[i], S[i], X, Y, i)
         Di = 1.0 / D
         u = tau[o] - (s0 * c0 + s1 * c1 + s2 * c2)
         UU[i] = (U0, U1, U2, Di, u)
