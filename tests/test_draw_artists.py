@@ -384,3 +384,24 @@ def test_line_arrow_ends_and_label_at_anchor(ax):
     assert plot_line([0.0, 0.0, 1.0], ax, anchor=[0, 0]).get_arrow() is None     # a couple
     with pytest.raises(InputError, match="text_at"):
         plot_line([0.0, 2.0, 3.0], ax, text_at="middle")
+
+
+def test_line_label_offset_none_is_the_default(ax):
+    # text_offset None (what the constructions pass for "automatic") means the (6, 6) pt default:
+    # the label sits 6 pt right and 6 pt up of the arrow tip, not at a NaN offset (dropped)
+    # 1 N along +x on the line y = 2 (4.27: tz + 2 fx = 0 -> tz = -2); arrow 1/N centred at x = 0
+    for off in (None, "set"):
+        art = plot_line([1.0, 0.0, -2.0], ax, scale=1.0, anchor=[0.0, 0.0], text="f",
+                        text_offset=None if off is None else (1.0, 1.0))
+        if off == "set":
+            art.set_text_offset(None)
+        ax.figure.canvas.draw()
+        pts = ax.figure.dpi / 72.0
+        tip = ax.transData.transform([0.5, 2.0])
+        x, y = art._text.get_position()
+        assert np.isfinite([x, y]).all() and art._text.get_text() == "f"
+        np.testing.assert_allclose([x, y], tip + 6.0 * pts, atol=1e-9)
+        assert art._text.get_window_extent().width > 0
+    # a point's None offset is automatic (clear of the glyph), a conic's is (6, -10)
+    assert np.isfinite(plot_point([0.0, 0.0, 1.0], ax, text="P", text_offset=None)._text_offset).all()
+    np.testing.assert_allclose(plot_conic(inertia_matrix(1.0, [0, 0], 1.0), ax)._text_offset, [6.0, -10.0])

@@ -171,8 +171,13 @@ def _text_props(color):
 class _Base(martist.Artist):
     """Common plumbing: fixed children drawn in data or display space."""
 
-    def __init__(self, text=None, text_offset=(8.0, 8.0), zorder=3):
+    #: label offset (dx, dy) in points used when ``text_offset`` is None
+    default_text_offset = (8.0, 8.0)
+
+    def __init__(self, text=None, text_offset=None, zorder=3):
         super().__init__()
+        if text_offset is None:
+            text_offset = self.default_text_offset
         self.set_zorder(zorder)
         self.set_in_layout(False)
         self._children = []
@@ -195,10 +200,13 @@ class _Base(martist.Artist):
         self.stale = True
 
     def set_text_offset(self, offset):
-        """Offset (dx, dy) in points of the label from its reference point."""
-        self._text_offset = np.asarray(offset, dtype=float)
+        """Offset (dx, dy) in points of the label from its reference point (None: the default)."""
         if hasattr(self, "_auto_offset"):
-            self._auto_offset = False
+            self._auto_offset = offset is None
+            offset = (0.0, 0.0) if offset is None else offset
+        elif offset is None:
+            offset = self.default_text_offset
+        self._text_offset = np.asarray(offset, dtype=float)
         self.stale = True
 
     def set_text_alignment(self, ha="left", va="bottom"):
@@ -422,14 +430,18 @@ class LineArtist(_Base):
         ("upper right", "upper left", "lower right", "lower left").
     couple_scale : float
         Couple glyph radius in points per unit moment (clamped to [5, 18]).
+    text_offset : (dx, dy) points, optional
+        Label offset; None: :attr:`default_text_offset` ``(6, 6)``.
     text_at : {"tip", "anchor"}
         Where the label's ``text_offset`` (points) starts: the arrow's tip
         (default) or its middle, the anchor (a label beside the arrow, which
         stays in view whenever the arrow's middle does).
     """
 
+    default_text_offset = (6.0, 6.0)
+
     def __init__(self, line, *, role="wrench", scale=1.0, anchor=None, text=None,
-                 text_offset=(6.0, 6.0), corner="upper right", couple_scale=8.0,
+                 text_offset=None, corner="upper right", couple_scale=8.0,
                  color=None, linewidth=None, linestyle=None, zorder=3, text_at="tip"):
         super().__init__(text, text_offset, zorder)
         st = _style(role)
@@ -698,8 +710,10 @@ class ConicArtist(_Base):
         Mark the centre (always for imaginary conics).
     """
 
+    default_text_offset = (6.0, -10.0)
+
     def __init__(self, conic, *, role="conic", mark_center=None, text=None,
-                 text_offset=(6.0, -10.0), color=None, linewidth=None, zorder=2):
+                 text_offset=None, color=None, linewidth=None, zorder=2):
         super().__init__(text, text_offset, zorder)
         st = _style(role)
         self._color = color or st["color"]

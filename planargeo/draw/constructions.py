@@ -159,7 +159,7 @@ def draw_wrench_sum(f1, f2, ax=None, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + 
     if finite_meet and parallelogram:
         Pxy = to_xy(P)
         anc = [Pxy + scale * f1[:2] / 2, Pxy + scale * f2[:2] / 2, Pxy + scale * f3[:2] / 2]
-    off = [(6.0, 6.0) if o is None else o for o in text_offsets]
+    off = list(text_offsets)
     out["f1"] = plot_line(f1, ax, role=role, text=labels[0], scale=scale, anchor=anc[0],
                           text_offset=off[0])
     out["f2"] = plot_line(f2, ax, role=role, text=labels[1], scale=scale, anchor=anc[1],
@@ -276,13 +276,12 @@ def draw_newton_euler(I, a, v, ax=None, *, scale=None, names=("$v$", "$a$", "$Ia
         out["inertia"] = plot_conic(I, ax, role="inertia")
     out["v"] = plot_point(v, ax, role="twist", text=names[0], text_offset=o[0])
     out["a"] = plot_point(a, ax, role="accel", text=names[1], text_offset=o[1])
-    lo = [(6.0, 6.0) if x is None else x for x in o]
     out["Ia"] = plot_line(Ia, ax, role="wrench", scale=scale, text=names[2],
-                          anchor=along(Ia, positions[0]), text_offset=lo[2])
+                          anchor=along(Ia, positions[0]), text_offset=o[2])
     out["p"] = plot_line(p, ax, role="momentum", scale=scale, text=names[3],
-                         anchor=along(p, positions[1]), text_offset=lo[3])
+                         anchor=along(p, positions[1]), text_offset=o[3])
     out["f_net"] = plot_line(fnet, ax, role="wrench", scale=scale, text=names[4],
-                             anchor=along(fnet, positions[2]), text_offset=lo[4],
+                             anchor=along(fnet, positions[2]), text_offset=o[4],
                              **sum_style("line"))
     out["values"] = {"Ia": Ia, "p": p, "f_net": fnet}
     return out
@@ -314,7 +313,7 @@ def draw_polar_exterior(C, p, ax=None, *, names=("$P$", "$L = CP$"), L_anchor=No
 
 
 def draw_polar_interior(C, p, ax=None, *, angles=(0.35, 1.9), names=("$P$", "$L = CP$"),
-                        L_anchor=None, text_offsets=(None, (6.0, 6.0), None, None)):
+                        L_anchor=None, text_offsets=(None,) * 4):
     """Polar of an interior point (thesis 5.36, Fig. 5.3).
 
     Two chords through ``p`` (at ``angles``); the tangents at each chord's ends
@@ -345,7 +344,7 @@ def draw_polar_interior(C, p, ax=None, *, angles=(0.35, 1.9), names=("$P$", "$L 
 
 # --------------------------------------------------------------------------- inertia
 def draw_percussion(I, a, ax=None, *, names=("$a$", "$f = Ia$"), dims=True, scale=None,
-                    f_anchor=None, text_offsets=(None, (6.0, 6.0))):
+                    f_anchor=None, text_offsets=(None, None)):
     """Axis of percussion ``f = I a`` of an acceleration pole ``a`` (thesis 5.64–5.68, Fig. 5.6).
 
     Draws the inertia (radius-of-gyration circle, dashed), the pole and the
@@ -413,7 +412,6 @@ def draw_power(v, I, ax=None, *, f_angle=0.6, a_distance=1.6,
     else:
         a = from_direction(ef)                       # p at infinity: an ideal point
     o = list(text_offsets)
-    lo = [(6.0, 6.0) if x is None else x for x in o]
     f_anchor = None
     if v[2] != 0.0 and f_label_at is not None:
         f_anchor = to_xy(v) + f_label_at * ef
@@ -423,9 +421,9 @@ def draw_power(v, I, ax=None, *, f_angle=0.6, a_distance=1.6,
     out = {"inertia": plot_conic(I, ax, role="inertia"),
            "v": plot_point(v, ax, text=names[0], text_offset=o[0]),
            "p": plot_line(p, ax, role="momentum", scale=None, text=names[1], anchor=p_anchor,
-                          text_offset=lo[1]),
+                          text_offset=o[1]),
            "f": plot_line(f, ax, role="wrench", scale=None, text=names[2], anchor=f_anchor,
-                          text_offset=lo[2]),
+                          text_offset=o[2]),
            "a": plot_point(a, ax, role="accel", text=names[3], glyph=False, text_offset=o[3])}
     out["values"] = {"p": p, "f": f, "a": a}
     return out
@@ -525,10 +523,10 @@ def draw_decomposition(s, R, A, ax=None, *, reactive="U", labels=None, anchors=N
     out = {}
     for j, n in enumerate(keys["T"]):
         out[n] = plot_line(T[:, j], ax, role="momentum", scale=None, text=labels[n],
-                           anchor=anchors.get(n), text_offset=offs.get(n, (6.0, 6.0)))
+                           anchor=anchors.get(n), text_offset=offs.get(n))
     for j, n in enumerate(keys["R"]):
         out[n] = plot_line(R[:, j], ax, role="reaction", scale=None, text=labels[n],
-                           anchor=anchors.get(n), text_offset=offs.get(n, (6.0, 6.0)))
+                           anchor=anchors.get(n), text_offset=offs.get(n))
     for j, n in enumerate(keys["s"]):
         out[n] = plot_point(s[:, j], ax, glyph=False, text=labels[n], text_offset=offs.get(n))
     for j, n in enumerate(keys["P"]):
@@ -561,7 +559,7 @@ def _draw_split(parts, show, T, ax, names, text_offsets, scale, arrow_length, sh
                                   text_offset=offs.get(f"a{k}"))
         out[f"f{k}"] = plot_line(f, ax, role="wrench", scale=_arrow_scale(f, scale, arrow_length),
                                  text=names.get(f"f{k}"), text_at="anchor",
-                                 text_offset=offs.get(f"f{k}", (6.0, 6.0)))
+                                 text_offset=offs.get(f"f{k}"))
     return out
 
 
@@ -715,7 +713,7 @@ def draw_projective_step(s, R, A, a_prev, a, kappa, ax=None, *,
     qdd = psi - T.T @ (a_prev + kap)
     o = list(text_offsets)
     out = {"T": plot_line(T[:, 0], ax, role="momentum", scale=None, text=names[0],
-                          anchor=T_anchor, text_offset=(6.0, 6.0) if o[0] is None else o[0]),
+                          anchor=T_anchor, text_offset=o[0]),
            "s": plot_point(s[:, 0], ax, glyph=False, text=names[1], text_offset=o[1]),
            "a_prev": plot_point(a_prev, ax, role="accel", text=names[2], text_offset=o[2]),
            "a": plot_point(a, ax, role="accel", text=names[3], text_offset=o[3])}
