@@ -141,8 +141,9 @@ def test_angular_acceleration_only_redraws(ex, monkeypatch):
     import planargeo.widgets.percussion as mod
 
     calls = []
-    real = mod.polygon_moments
-    monkeypatch.setattr(mod, "polygon_moments", lambda *a, **k: calls.append(1) or real(*a, **k))
+    real = mod.Inertia.from_polygon
+    monkeypatch.setattr(mod.Inertia, "from_polygon",
+                        staticmethod(lambda *a, **k: calls.append(1) or real(*a, **k)))
     n = ex.n_computes
     ex.controls["angular accel. α"].value = -4.0
     assert ex.n_computes == n                                        # no recompute

@@ -37,7 +37,7 @@ from shapely.geometry import Polygon, box
 from ..draw.artists import ConicArtist, LineArtist, PointArtist
 from ..draw.style import COLORS, setup_axes
 from ..errors import InvalidPolygonError
-from ..inertia import Inertia, percussion_axis, percussion_pole, polygon_moments
+from ..inertia import Inertia, percussion_axis, percussion_pole
 from ..projective import from_xy
 from .base import Explorer, Step
 
@@ -90,7 +90,7 @@ class PercussionExplorer(Explorer):
     display_controls = ("angular accel. α",)
 
     def __init__(self, **kw):
-        self._moments: dict = {}   # shape key -> (shape, area, centroid, polar moment)
+        self._inertias: dict = {}   # shape key -> (shape, unit-density Inertia)
         super().__init__(**kw)
 
     def make_controls(self):
@@ -133,26 +133,24 @@ class PercussionExplorer(Explorer):
         self.connect_drag("pole x", "pole y", lambda: (self.values["pole x"], self.values["pole y"]))
 
     def _shape(self, v):
-        return self._shape_moments(v)[0]
+        return self._shape_inertia(v)[0]
 
-    def _shape_moments(self, v):
-        """The shape and its area, centroid and polar moment, integrated once per shape."""
+    def _shape_inertia(self, v):
+        """The shape and its unit-density inertia ``I0`` (5.64), integrated once per shape."""
         key = (v["shape"], v["polygon"] if v["shape"] == "custom polygon" else None)
-        if key not in self._moments:
+        if key not in self._inertias:
             shape = parse_polygon(v["polygon"]) if key[1] is not None else PRESETS[v["shape"]]
-            area, c, J = polygon_moments(shape, "polygon")
-            if not J > 0:
-                raise InvalidPolygonError(f"polygon must have a positive polar moment, got {J!r}")
-            if len(self._moments) > 32:
-                self._moments.clear()
-            self._moments[key] = (shape, float(area), np.asarray(c, dtype=float), float(J))
-        return self._moments[key]
+            if len(self._inertias) > 32:
+                self._inertias.clear()
+            self._inertias[key] = (shape, Inertia.from_polygon(shape))
+        return self._inertias[key]
 
     def compute(self, v, changed):
-        shape, area, c, J = self._shape_moments(v)
+        shape, I0 = self._shape_inertia(v)
         m = float(v["mass (kg)"])
-        # uniform lamina of mass m: rotational inertia m J / area about the centroid (5.64)
-        I = Inertia.from_mass(m, c, inertia=m * J / area)
+        # uniform lamina of mass m: the unit-density inertia scaled by m / area (1.65 is linear)
+        I = Inertia(I0.matrix * (m / float(I0.mass)))
+        c = np.asarray(I.com, dtype=float)
         Imat = I.matrix
         if v["drive"] == "impact":
             s = float(v["impact at"])
