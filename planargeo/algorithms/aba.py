@@ -54,7 +54,7 @@ import numpy as np
 from ..errors import SingularConfigurationError
 from ..kinematics import check_state, kinematics
 from ..model import Data, Model
-from ..subspaces import COND_LIMIT, COND_LIMIT2, joint_cond, joint_scale, singular_joint_error
+from ..subspaces import COND_LIMIT, COND_LIMIT2, _checked_gram, joint_cond, joint_scale, singular_joint_error
 
 __all__ = ["forward_dynamics", "articulated_body"]
 
@@ -67,25 +67,6 @@ __all__ = ["forward_dynamics", "articulated_body"]
 #: batches up to this size are evaluated state by state on Python floats (the batched
 #: plan's ~0.5 µs per numpy call per body-step is worth it from about 30 states on)
 SMALL_BATCH = 32
-
-
-def _check_D(D, A, s, i, P):
-    """Raise SingularConfigurationError if D = s^T A s (..., k, k) is singular by the package's rule.
-
-    ``A`` (..., 3, 3) and ``s`` (..., 3, k) at the global origin, ``P`` (..., 2) the joint's
-    point; the rule of :data:`planargeo.subspaces.COND_LIMIT` (``‖A_P‖_F ‖s_P‖² / σ_min(D)``).
-    """
-    k = D.shape[-1]
-    if k == 1:
-        lo = np.abs(D[..., 0, 0])
-    else:
-        lo = np.abs(np.linalg.eigvalsh(0.5 * (D + np.swapaxes(D, -1, -2)))).min(axis=-1)
-    lo, scale = np.broadcast_arrays(lo, joint_scale(A, s, P))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        cond = np.where(lo > 0, scale / np.where(lo > 0, lo, 1.0), np.inf)
-    bad = ~(cond <= COND_LIMIT)
-    if np.any(bad):
-        raise singular_joint_error(i, float(np.max(np.where(bad, cond, 0.0))))
 
 
 def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
@@ -145,9 +126,7 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
                 A[..., par, :, :] += Ai
                 d[..., par, :] += c
             continue
-        U = Ai @ s
-        D = np.swapaxes(s, -1, -2) @ U
-        _check_D(D, Ai, s, i, data.origin[..., i, :])
+        U, D = _checked_gram(Ai, s, f"sᵀAs of joint {i}", data.origin[..., i, :])
         Dinv = 1.0 / D if k == 1 else np.linalg.inv(D)
         u = tau[..., model.q_slice(i)] - np.einsum("...ij,...i->...j", s, c)
         Dl[i], Ul[i], Dinvl[i], ul[i] = D, U, Dinv, u
@@ -429,12 +408,10 @@ def _singular_plan(D, a00, a01, a02, a11, a12, a22, q, c, s, i):
     when that fails.  The test is translation invariant: the plan never uses the world
     position of o_i for it.
     """
-    X, Y = -q * c, -q * s
-    P02 = a02 + Y * a00 - X * a01
-    P12 = a12 + Y * a01 - X * a11
-    P22 = a22 + Y * a02 - X * a12 + Y * P02 - X * P12
-    F2 = a00 * a00 + a11 * a11 + P22 * P22 + 2.0 * (a01 * a01 + P02 * P02 + P12 * P12)
-    cond = joint_cond(D, F2, 1.0)
+    A = np.array([[a00, a01, a02], [a01, a11, a12], [a02, a12, a22]])
+    # s = [c, s, 0] at o_i: the prismatic axis, the same at P; for a revolute joint (c, s) = (1, 0), q = 0 and P = o_i:
+    # either way ‖s_P‖² = 1, so the scale is ‖A_P‖_F, computed scale-safely (masses 1e-170 or 1e160)
+    cond = joint_cond(D, 1.0, joint_scale(A, [c, s, 0.0], (-q * c, -q * s)))
     if not cond <= COND_LIMIT:
         raise singular_joint_error(i, cond)
 
