@@ -8,9 +8,7 @@ Work–precision (in the manner of the classic ODE-solver comparisons, Hairer & 
 -------------------------------------------------------------------------------------
 Two systems, each integrated with every scipy method (``RK23``, ``RK45``, ``DOP853``, ``Radau``,
 ``BDF``, ``LSODA``) over a range of ``rtol`` (``atol = 1e-2 rtol``) and with fixed-step classical
-``RK4`` over a range of ``dt``; through :func:`planargeo.simulate.simulate` for the methods it
-offers, by ``scipy.integrate.solve_ivp`` on the same right-hand side for the others
-(:func:`integrate_direct`; :func:`simulate_overhead` measures the difference):
+``RK4`` over a range of ``dt``, all through :func:`planargeo.simulate.simulate`:
 
 a. a free conservative chain (``chain_model(5)``, gravity, ``τ = 0``) released from a bent,
    moving state, ``t_end = 3 s`` (full mode);
@@ -60,9 +58,6 @@ if str(ROOT) not in sys.path:
 from planargeo import scenes  # noqa: E402
 from planargeo.algorithms.loops import constrained_dynamics_lagrange  # noqa: E402
 from planargeo.model import chain_model  # noqa: E402
-from planargeo.algorithms.aba import forward_dynamics  # noqa: E402
-from planargeo.algorithms.loops import loop_solve  # noqa: E402
-from planargeo.simulate import METHODS as SIMULATE_METHODS  # noqa: E402
 from planargeo.simulate import simulate  # noqa: E402
 from planargeo.simulate_loops import simulate_loops  # noqa: E402
 
@@ -139,60 +134,13 @@ def crank_system(t_end: float = 0.5) -> dict:
                 t_end=float(t_end), loops=True)
 
 
-class DirectResult:
-    """What :func:`integrate_direct` returns: the fields of a simulation result the study reads."""
-
-    def __init__(self, t, y, nq, nfev, status, message):
-        self.t, self.q, self.qd = t, y[:, :nq], y[:, nq:]
-        self.nfev, self.status, self.message = nfev, status, message
-
-
-def integrate_direct(system: dict, method: str, rtol: float, atol: float, forward=None):
-    """``scipy.integrate.solve_ivp`` on the same right-hand side ``(q̇, q̈(q, q̇))`` as :func:`simulate`.
-
-    Used for a method :func:`~planargeo.simulate.simulate` does not offer (today it offers every
-    method of the study, so only :func:`simulate_overhead` calls this).  The dynamics are the package's: ``forward_dynamics`` (ABA) for the chain, the loop
-    solver (``loop_solve``, as ``simulate_loops(stabilization="none")`` uses it) for the slider-crank.
-    No per-step diagnostics are recorded (``simulate`` computes energy and residuals at every step):
-    :func:`simulate_overhead` measures what that costs.  ``nfev`` counts every evaluation of the
-    dynamics, finite-difference Jacobians (BDF, LSODA) included, as ``simulate`` does.
-    """
-    from scipy.integrate import solve_ivp
-
-    model = system["model"]
-    nq = model.nq
-    tau = np.zeros(nq)
-    if forward is None:
-        if system["loops"]:
-            def forward(m, q, qd, ta, fe):
-                return loop_solve(m, q, qd, ta, fe).qdd
-        else:
-            def forward(m, q, qd, ta, fe):
-                return forward_dynamics(m, q, qd, ta)
-    count = [0]
-
-    def rhs(t, y):
-        count[0] += 1
-        return np.concatenate([y[nq:], forward(model, y[:nq], y[nq:], tau, None)])
-
-    y0 = np.concatenate([system["q0"], system["qd0"]]).astype(float)
-    sol = solve_ivp(rhs, (0.0, system["t_end"]), y0, method=method, rtol=rtol, atol=atol)
-    return DirectResult(sol.t, sol.y.T, nq, count[0], "ok" if sol.success else "failed", sol.message)
-
-
 def integrate(system: dict, method: str, *, rtol=None, atol=None, dt=None, stabilization: str = "none",
               forward=None, **kw):
     """One run of ``system``; returns ``(result, cpu_seconds, wall_seconds)``.
 
-    Through :func:`~planargeo.simulate.simulate` (or ``simulate_loops``) for the methods it offers,
-    :func:`integrate_direct` for the other scipy methods.
+    Through :func:`~planargeo.simulate.simulate` (or ``simulate_loops``), which offers every method
+    of the study.
     """
-    if method not in SIMULATE_METHODS:
-        if stabilization != "none" or kw:
-            raise ValueError(f"{method} runs outside simulate: no stabilisation or options")
-        c0, w0 = time.thread_time(), time.perf_counter()
-        r = integrate_direct(system, method, rtol, atol if atol is not None else ATOL_FACTOR * rtol, forward)
-        return r, time.thread_time() - c0, time.perf_counter() - w0
     opts = dict(method=method)
     if method == "RK4":
         opts["dt"] = dt
@@ -207,33 +155,6 @@ def integrate(system: dict, method: str, *, rtol=None, atol=None, dt=None, stabi
         r = simulate(system["model"], system["q0"], system["qd0"], system["t_end"], forward=forward,
                      progress=False, **opts, **kw)
     return r, time.thread_time() - c0, time.perf_counter() - w0
-
-
-def simulate_overhead(system: dict, rtol: float = 1e-6, method: str = "RK45") -> dict:
-    """The same method and tolerance through ``simulate`` and through :func:`integrate_direct`.
-
-    Both step scipy's same solver class over the same right-hand side, so their final states agree
-    to rounding; the wall-time ratio is what ``simulate``'s per-step recording (energy, residuals,
-    condition watch) adds, i.e. how much cheaper the directly driven methods look for that reason.
-    """
-    best = {}
-    for how in ("simulate", "direct", "simulate", "direct"):        # interleaved, best of 2
-        c0, w0 = time.thread_time(), time.perf_counter()
-        if how == "direct":
-            r = integrate_direct(system, method, rtol, ATOL_FACTOR * rtol)
-        else:
-            r, _, _ = integrate(system, method, rtol=rtol)
-        wall, cpu = time.perf_counter() - w0, time.thread_time() - c0
-        prev = best.get(how)
-        if prev is None or wall < prev["wall"]:
-            best[how] = dict(wall=wall, cpu=cpu, nfev=r.nfev, y=final_state(r))
-    out = dict(method=method, rtol=rtol, wall_simulate=best["simulate"]["wall"], wall_direct=best["direct"]["wall"],
-               nfev_simulate=best["simulate"]["nfev"], nfev_direct=best["direct"]["nfev"],
-               agreement=state_error(best["simulate"]["y"], best["direct"]["y"]))
-    out["ratio"] = out["wall_simulate"] / out["wall_direct"]
-    log(f"  simulate vs direct solve_ivp ({method}, rtol {rtol:g}): wall ×{out['ratio']:.2f}, "
-        f"nfev {out['nfev_simulate']} / {out['nfev_direct']}, final states differ by {out['agreement']:.1e}")
-    return out
 
 
 def final_state(r) -> np.ndarray:
@@ -449,18 +370,14 @@ def write_markdown(res: dict, path: Path) -> None:
          "Each system is integrated with scipy's `RK23`, `RK45`, `DOP853`, `Radau`, `BDF` and `LSODA` "
          f"over a range of `rtol` (`atol = {ATOL_FACTOR:g} rtol`) and with fixed-step classical `RK4` over a range "
          "of `dt`, all through `planargeo.simulate.simulate` (for the slider-crank, the loop solver as "
-         "`simulate_loops(stabilization=\"none\")` uses it); a method `simulate` did not offer would be run by "
-         "`scipy.integrate.solve_ivp` directly on the same right-hand side, without the per-step diagnostics, "
-         "and marked †.  "
+         "`simulate_loops(stabilization=\"none\")` uses it).  "
          "**Error** is `‖y(t_end) − y_ref(t_end)‖∞` over the state `y = (q, q̇)` (rad, rad/s) against a "
          "reference run of `DOP853` at `rtol = 1e-13`, `atol = 1e-14`; the reference itself is checked against a "
          "second, independent run and their disagreement is its error floor (errors near it are not resolved).  "
          "**Cost** is the number of dynamics evaluations (`nfev`; for `Radau`, `BDF` and `LSODA` it includes the "
          "finite-difference Jacobians) and the **wall time** of the run (charted, as the issue asks; thread CPU "
          "time is tabulated as well — where the two differ the machine was busy; both vary by some tens of per "
-         "cent between runs under load, the `nfev` panels do not).  The † runs skip the per-step recording that "
-         "`simulate` does (energy, residuals): the same method (`RK45`, rtol 1e-6) run both ways measures that "
-         "overhead, given under each table: multiply the † times by that ratio to compare like with like."
+         "cent between runs under load, the `nfev` panels do not)."
          + (f"  Runs cheaper than {cfg['repeat_below']:g} s wall are repeated (best of 3)." if cfg["repeat_below"] else ""),
          "",
          f"* **Free chain**: `chain_model({cfg['chain_n']})` (uniform unit links, g = 9.81, τ = 0), "
@@ -480,12 +397,7 @@ def write_markdown(res: dict, path: Path) -> None:
         L += ["", "| method | tol / dt | nfev | steps | CPU s | wall s | error at t_end |", "|---|---|---:|---:|---:|---:|---:|"]
         for r in s["rows"]:
             err = _e(r["error"]) if r["status"] == "ok" else f"{r['status']}"
-            L.append(f"| {r['method']}{'' if r['method'] in SIMULATE_METHODS else ' †'} | {_tol(r)} | {r['nfev']} | {r['steps']} | {r['cpu']:.3f} | {r['wall']:.3f} | {err} |")
-        if s.get("overhead"):
-            o = s["overhead"]
-            L += ["", f"`simulate` vs `solve_ivp` driven directly ({o['method']}, rtol {o['rtol']:g}, the same "
-                  f"solver class): wall ×{o['ratio']:.2f} ({o['wall_simulate']:.3f} s vs {o['wall_direct']:.3f} s), "
-                  f"nfev {o['nfev_simulate']} vs {o['nfev_direct']}, final states differ by {_e(o['agreement'])}."]
+            L.append(f"| {r['method']} | {_tol(r)} | {r['nfev']} | {r['steps']} | {r['cpu']:.3f} | {r['wall']:.3f} | {err} |")
         if s["rk4_orders"]:
             L += ["", "RK4 on halving dt: " + ", ".join(f"dt = {o['dt']:.4g}: ×{o['ratio']:.1f} (order {o['order']:.2f})"
                                                         for o in s["rk4_orders"]) + "."]
@@ -525,8 +437,7 @@ def plot(res: dict, out_dir: Path) -> None:
                 if not pts:
                     continue
                 ax.loglog([p[xkey] for p in pts], [p["error"] for p in pts], marker=MARKERS[m], color=COLORS[m],
-                          label=m + (" (fixed dt)" if m == "RK4" else " (rtol sweep)")
-                          + ("" if m in SIMULATE_METHODS else " †"))
+                          label=m + (" (fixed dt)" if m == "RK4" else " (rtol sweep)"))
             if floor:
                 ax.axhline(floor, color="0.5", ls="--", lw=1, label="reference error floor")
             ax.set_xlabel(xlabel)
@@ -535,8 +446,7 @@ def plot(res: dict, out_dir: Path) -> None:
             if row == 0:
                 ax.set_title(s["label"], fontsize=10)
             ax.legend(fontsize=8)
-    fig.suptitle("Work–precision: error at t_end against cost (wall time, top; dynamics evaluations, bottom); "
-                 "† solve_ivp driven directly (no per-step diagnostics)", fontsize=10)
+    fig.suptitle("Work–precision: error at t_end against cost (wall time, top; dynamics evaluations, bottom)", fontsize=10)
     fig.tight_layout()
     for ext in ("svg", "png"):
         fig.savefig(out_dir / f"integrators.{ext}", dpi=100, metadata={"Date": None} if ext == "svg" else None)
@@ -585,14 +495,13 @@ def run(out_dir, quick: bool = False, jobs: int | None = None) -> dict:
     ref = reference(chain, cfg["chain_check"])
     rows = work_precision(chain, cfg["chain_grid"], ref["y"], cfg["repeat_below"])
     res["chain"] = dict(label=chain["label"], q0=chain["q0"].tolist(), qd0=chain["qd0"].tolist(), ref=ref,
-                        rows=rows, rk4_orders=rk4_orders(rows), overhead=simulate_overhead(chain))
+                        rows=rows, rk4_orders=rk4_orders(rows))
 
     crank = crank_system(cfg["crank_t"])
     log(f"work-precision: {crank['label']}")
     ref = reference(crank, "lagrange" if cfg["crank_check"] else None)
     rows = work_precision(crank, cfg["crank_grid"], ref["y"], cfg["repeat_below"])
-    res["crank"] = dict(label=crank["label"], ref=ref, rows=rows, rk4_orders=rk4_orders(rows),
-                        overhead=simulate_overhead(crank))
+    res["crank"] = dict(label=crank["label"], ref=ref, rows=rows, rk4_orders=rk4_orders(rows))
 
     log(f"drift: slider-crank over {cfg['drift_t']:g} s, DOP853 rtol {cfg['drift_rtol']:g}, {jobs} run(s) at a time")
     res["drift"] = drift_study(cfg["drift_t"], cfg["stabilisations"], cfg["drift_rtol"], jobs)
