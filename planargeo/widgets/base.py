@@ -77,7 +77,7 @@ from matplotlib.figure import Figure
 
 from ..errors import InputError, PlanargeoError
 
-__all__ = ["Explorer", "Step", "fmt"]
+__all__ = ["Explorer", "Step", "cached", "fmt"]
 
 _DISPLAYS = ("auto", "ipympl", "image", "agg")
 _export_counter = itertools.count(1)
@@ -113,6 +113,33 @@ def fmt(x: Any, digits: int = 4) -> str:
             pass
         return "(" + ", ".join(fmt(v, digits) for v in a) + ")"
     return html.escape(str(x))
+
+
+#: entries an explorer's per-parameter cache holds before it is emptied
+CACHE_LIMIT = 32
+
+
+def cached(cache: dict, key, make: Callable[[], Any]) -> Any:
+    """``cache[key]``, built by ``make()`` when missing; a full cache (> :data:`CACHE_LIMIT`) is emptied.
+
+    Explorers keep models or integrated shapes per parameter tuple with this, so
+    a slider sweep over many values cannot grow a cache without bound.
+
+    Examples
+    --------
+    >>> store = {}
+    >>> cached(store, (1.0, 2.0), lambda: "model"), cached(store, (1.0, 2.0), lambda: "other")
+    ('model', 'model')
+    >>> for k in range(40):
+    ...     _ = cached(store, k, lambda: k)
+    >>> len(store) <= CACHE_LIMIT + 1
+    True
+    """
+    if key not in cache:
+        if len(cache) > CACHE_LIMIT:
+            cache.clear()
+        cache[key] = make()
+    return cache[key]
 
 
 def _backend_is_ipympl() -> bool:

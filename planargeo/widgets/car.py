@@ -34,9 +34,6 @@ class CarExplorer(Explorer):
     def __init__(self, **kw):
         # the scene function itself (scenes.build checks parameter names on every call)
         self._scene = scenes.get("car")
-        # the body and tyre outlines are drawn by gallery Fig 6.6, not here: skip them
-        # where the scene allows it
-        self._scene_options = {"outlines": False} if "outlines" in scenes.parameters("car") else {}
         super().__init__(**kw)
 
     def make_controls(self):
@@ -80,7 +77,8 @@ class CarExplorer(Explorer):
             raise SceneError(f"turn radius must be positive, got {d}")
         res = self._scene(m=float(v["mass (kg)"]), rho=float(v["radius of gyration (m)"]),
                           d=d, eps=float(v["COM behind front (ε)"]), omega=V / d,
-                          F_A=float(v["drive force (N)"]), **self._scene_options)
+                          F_A=float(v["drive force (N)"]),
+                          outlines=False)   # the outlines are drawn by gallery Fig 6.6, not here
         return {"res": res}
 
     def render(self, st):

@@ -39,7 +39,7 @@ from ..draw.style import COLORS, setup_axes
 from ..errors import InvalidPolygonError
 from ..inertia import Inertia, percussion_axis, percussion_pole
 from ..projective import from_xy
-from .base import Explorer, Step
+from .base import Explorer, Step, cached
 
 __all__ = ["PercussionExplorer", "PRESETS", "parse_polygon"]
 
@@ -138,12 +138,12 @@ class PercussionExplorer(Explorer):
     def _shape_inertia(self, v):
         """The shape and its unit-density inertia ``I0`` (5.64), integrated once per shape."""
         key = (v["shape"], v["polygon"] if v["shape"] == "custom polygon" else None)
-        if key not in self._inertias:
-            shape = parse_polygon(v["polygon"]) if key[1] is not None else PRESETS[v["shape"]]
-            if len(self._inertias) > 32:
-                self._inertias.clear()
-            self._inertias[key] = (shape, Inertia.from_polygon(shape))
-        return self._inertias[key]
+        return cached(self._inertias, key, lambda: self._integrate(key, v))
+
+    @staticmethod
+    def _integrate(key, v):
+        shape = parse_polygon(v["polygon"]) if key[1] is not None else PRESETS[key[0]]
+        return shape, Inertia.from_polygon(shape)
 
     def compute(self, v, changed):
         shape, I0 = self._shape_inertia(v)

@@ -32,7 +32,7 @@ from ..scenes.slider_crank import slider_crank_model, slider_crank_solve
 from ..draw.artists import LineArtist, PointArtist
 from ..draw.mechanism import draw_ground
 from ..draw.style import COLORS, setup_axes
-from .base import Explorer, Step
+from .base import Explorer, Step, cached
 
 __all__ = ["SliderCrankExplorer"]
 
@@ -56,12 +56,7 @@ class SliderCrankExplorer(Explorer):
 
     def model_for(self, l: float, g: float):
         """The slider-crank model for rod length ``l`` and gravity ``g`` (kept per pair)."""
-        key = (l, g)
-        if key not in self._models:
-            if len(self._models) > 32:
-                self._models.clear()
-            self._models[key] = slider_crank_model(l=l, g=g, **self.params)
-        return self._models[key]
+        return cached(self._models, (l, g), lambda: slider_crank_model(l=l, g=g, **self.params))
 
     def make_controls(self):
         return {

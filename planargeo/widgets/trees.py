@@ -27,7 +27,7 @@ from ..simulate_loops import closure_jacobian
 from ..draw.artists import LineArtist, PointArtist
 from ..draw.mechanism import draw_ground
 from ..draw.style import COLORS, setup_axes
-from .base import Explorer, Step
+from .base import Explorer, Step, cached
 
 __all__ = ["TreeExplorer"]
 
@@ -98,13 +98,11 @@ class TreeExplorer(Explorer):
 
     def model_for(self, closed: bool, mass: float, g: float):
         """The nine-link model (with the pins when ``closed``), kept per (mass, g)."""
-        key = (closed, mass, g)
-        if key not in self._models:
-            if len(self._models) > 32:
-                self._models.clear()
+        def build():
             contacts, _q, _u, L, _dof = self.geometry(closed)
-            self._models[key] = tree_model(mass, L, g, contacts)
-        return self._models[key]
+            return tree_model(mass, L, g, contacts)
+
+        return cached(self._models, (closed, mass, g), build)
 
     def compute(self, v, changed):
         closed = v["loops"].startswith("closed")
