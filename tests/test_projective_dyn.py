@@ -282,3 +282,24 @@ def test_mu_is_U_transpose_of_the_rnea_joint_force_in_the_joints_basis(seed):
         scale = 1 + np.abs(f_rnea[i]).max()
         np.testing.assert_allclose(ws.f[i], f_rnea[i], atol=1e-8 * scale)
         np.testing.assert_allclose(ws.mu[i], ws.U[i].T @ f_rnea[i], atol=1e-8 * scale * (1 + np.abs(ws.U[i]).max(initial=0.0)))
+
+
+def test_force_propagator_takes_T_checked_at_the_joint():
+    """6.113b with ``T=`` given: a pendulum pinned far from the origin, torque ``τ`` at rest.
+
+    Hand values: unit point mass at ``c = (X + 1, 0)``, pin at ``(X, 0)``, ``s = [0, -X, 1]``:
+    ``I s = [0, 1, X + 1]``, ``sᵀIs = 1`` so ``T = [0, 1, X + 1]``; gravity ``p = [0, g, g (X + 1)]``.
+    ``q̈ = τ - g``, the mass accelerates by ``(0, τ - g)``, so the pin pushes ``(0, τ)`` through
+    ``(X, 0)``, and the joint adds its torque ``τ``: ``f = [0, τ, X τ + τ]`` (``sᵀf = τ``).  Measured at the origin the rule refuses this joint
+    (``cond_O ≈ X⁴ = 1e16``), at the pin it is a plain pendulum: ``T=`` carries the checked one.
+    """
+    from planargeo.screws import inertia_matrix
+    X, g, tau = 1e4, 9.81, 2.0
+    I = inertia_matrix(1.0, [X + 1.0, 0.0], 0.0)
+    s = [[0.0], [-X], [1.0]]
+    p = [0.0, g, g * (X + 1.0)]
+    z = np.zeros(3)
+    f = force_propagator(I, s, [tau], p, z, z, z, T=[0.0, 1.0, X + 1.0])
+    np.testing.assert_allclose(f, [0.0, tau, X * tau + tau], rtol=1e-9, atol=1e-7)
+    with pytest.raises(SingularConfigurationError):
+        force_propagator(I, s, [tau], p, z, z, z)

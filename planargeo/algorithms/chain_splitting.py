@@ -26,7 +26,9 @@ from ..errors import SingularConfigurationError
 from .articulated_inertia import _articulated
 from ..subspaces import _solve
 from .articulated_mobility import _EYE3, SOLVE_COND_LIMIT, _check_chain, _cond, _mobility
-from .projective import _per_state, _state_arrays
+from .projective import _per_state, _state_arrays, force_propagator
+
+_ZERO3 = np.zeros(3)
 
 __all__ = ["ChainSplit", "split_acceleration", "split_force", "chain_split",
            "mobility_split", "forward_dynamics_mobility_split"]
@@ -166,8 +168,8 @@ def chain_split(I, S, kappa, p, tau, parents=None, joint_points=None) -> ChainSp
         a[i] = split_acceleration(*args)                # (7.54)
         f[j] = split_force(*args)                       # (7.56)
     a[N - 1] = b[N - 1]                                 # f_{N+1} = 0 in (7.37)
-    if N:   # (6.113b) with a_0 = 0: f = T Q + R Uᵀ (I κ + p + f_next), R Uᵀ = 1 - T sᵀ (7.8); T of sᵀIs (checked)
-        f[0] = Tm[0] @ tau[0] + (_EYE3 - Tm[0] @ S[0].T) @ (I[0] @ kappa[0] + p[0] + (f[1] if N > 1 else 0.0))
+    if N:   # (6.113b) with a_0 = 0; T of sᵀIs from the mobility pass (checked at the joint's point)
+        f[0] = force_propagator(I[0], S[0], tau[0], p[0], f[1] if N > 1 else _ZERO3, _ZERO3, kappa[0], T=Tm[0])
     qdd = [T[i].T @ (a[i] - (a[i - 1] if i else 0.0) - kappa[i]) for i in range(N)]  # (6.110)
     qdd = np.concatenate(qdd) if qdd else np.zeros(0)
     return ChainSplit(a, f, qdd)

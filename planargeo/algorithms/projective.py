@@ -183,11 +183,15 @@ def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, R=None) -> np.nda
     return _active_mobility(I, s, "sᵀIs") @ rhs + U @ (R.T @ (np.asarray(a_prev, dtype=float) + np.asarray(kappa, dtype=float)))
 
 
-def force_propagator(I, s, Q, p, f_next, a_prev, kappa, R=None) -> np.ndarray:
+def force_propagator(I, s, Q, p, f_next, a_prev, kappa, R=None, *, T=None) -> np.ndarray:
     """Internal force of a body's joint from its neighbours (thesis 6.113b).
 
     ``f_i = T_i Q_i + R_i U_i^T (I_i (a_{i-1} + kappa_i) + p_i + f_{i+1})``
     with ``T_i``, ``U_i`` built on the body inertia (6.36, 6.37).
+
+    ``T``: the percussion subspace ``I s (sᵀIs)⁻¹`` if already formed (and checked, e.g. by
+    the singularity rule at the joint's own point, as :func:`reactive_subspace` takes it);
+    by default it is formed here, with the rule measured at the origin of the coordinates.
 
     Examples
     --------
@@ -203,7 +207,7 @@ def force_propagator(I, s, Q, p, f_next, a_prev, kappa, R=None) -> np.ndarray:
     I = np.asarray(I, dtype=float)
     s = np.asarray(s, dtype=float).reshape(3, -1)
     R = reaction_space(s) if R is None else np.asarray(R, dtype=float).reshape(3, -1)
-    T = percussion_subspace(I, s)
+    T = percussion_subspace(I, s) if T is None else np.asarray(T, dtype=float).reshape(3, -1)
     U = reactive_subspace(I, R, s=s, T=T)
     Q = np.asarray(Q, dtype=float).reshape(-1)
     base = I @ (np.asarray(a_prev, dtype=float) + np.asarray(kappa, dtype=float))
