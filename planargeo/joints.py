@@ -478,8 +478,9 @@ def twin_prismatic(direction=(1.0, 0.0), point=(0.0, 0.0)) -> JointSpace:
     The argument order follows :func:`prismatic`.  One joint: ``direction``
     and ``point`` of shape ``(2,)``.
 
-    Not a kind of :class:`planargeo.model.Joint`; in a model the same motion
-    is the ``"plane"`` joint with its rotation left out.
+    In a model it is the joint kind ``"twin_prismatic"`` of :class:`planargeo.model.Joint`
+    (two dofs, slid by ``(q[0], q[1])`` along ``e`` and ``e⊥``, not rotated; the same
+    columns as :func:`planargeo.kinematics.joint_axes`).
 
     Examples
     --------

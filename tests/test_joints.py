@@ -4,6 +4,8 @@ References: the thesis's printed joint axes (4.64, 4.69, 4.74, 5.62, 5.63),
 the twist/wrench transforms of planargeo.screws (X_P, X_P_inv_T) used to look
 at each basis element *from the joint*, and ranks computed with numpy.
 """
+import math
+
 import numpy as np
 import pytest
 from hypothesis import given
@@ -222,13 +224,17 @@ def test_non_finite_and_bad_kind():
 def test_motion_space_matches_model_kinematics(kind, x, y, phi):
     """Same columns, same order as the Model's kinematics (planargeo.kinematics.joint_axes at q = 0).
 
-    ``twin_prismatic`` is not a Model joint kind: its columns are the two translations of ``plane``.
+    ``twin_prismatic`` is a Model joint kind too (thesis 4.79): ``s = [e, e⊥]`` with
+    ``e = (cos φ, sin φ)``, by hand ``[[cos φ, -sin φ], [sin φ, cos φ], [0, 0]]`` wherever the joint is.
     """
     from planargeo.kinematics import joint_axes
 
     if kind == "twin_prismatic":
-        cols, _ = joint_axes("plane", np.array(x), np.array(y), np.array(phi), np.zeros(3))
-        np.testing.assert_allclose(motion_space(kind, (x, y), _dir(phi)), np.stack(cols[:2], axis=-1), atol=1e-12)
+        got = motion_space(kind, (x, y), _dir(phi))
+        cols, _ = joint_axes("twin_prismatic", np.array(x), np.array(y), np.array(phi), np.zeros(2))
+        np.testing.assert_allclose(got, np.stack(cols, axis=-1), atol=1e-12)
+        c, s = math.cos(phi), math.sin(phi)
+        np.testing.assert_allclose(got, [[c, -s], [s, c], [0.0, 0.0]], atol=1e-12)
         return
     k = DOF[kind]
     cols, _ = joint_axes(kind, np.array(x), np.array(y), np.array(phi), np.zeros(k))
