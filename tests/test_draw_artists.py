@@ -378,6 +378,8 @@ def test_line_arrow_ends_and_label_at_anchor(ax):
     np.testing.assert_allclose(tail, [1.5, 0.75])
     np.testing.assert_allclose(tip, [1.5, 1.25])
     ax.figure.canvas.draw()
+    # the drawn arrow is the one get_arrow reports
+    np.testing.assert_allclose(art._arrow._posA_posB, [[1.5, 0.75], [1.5, 1.25]])
     # the label sits at the arrow's middle (1.5, 1), not at its tip
     np.testing.assert_allclose(art._text.get_position(), ax.transData.transform([1.5, 1.0]))
     assert plot_line([0.0, 2.0, 3.0], ax, scale=None, anchor=[0, 0]).get_arrow() is None

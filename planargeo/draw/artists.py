@@ -499,15 +499,27 @@ class LineArtist(_Base):
         time).  With an anchor it needs no axes, so a figure can fit its view to
         the arrow ends before drawing.
         """
-        fx, fy, tz = self._l
+        fx, fy, _ = self._l
         if self._scale is None or self._anchor is None or (fx == 0.0 and fy == 0.0):
             return None
+        _, tail, tip = self._arrow_at(self._anchor)
+        return tail, tip
+
+    def _arrow_at(self, near):
+        """``(anchor, tail, tip)``: the foot of ``near`` on the (finite) line and the arrow about it.
+
+        The arrow is ``scale |f|`` long along the force ``(fx, fy)``, centred on
+        the anchor; without a scale ``tail`` and ``tip`` are the anchor.
+        """
+        fx, fy, tz = self._l
         F = np.hypot(fx, fy)
         e = np.array([fx, fy]) / F
-        p0 = np.array([fy * tz, -fx * tz]) / (F * F)
-        mid = p0 + e * ((self._anchor - p0) @ e)
+        p0 = np.array([fy * tz, -fx * tz]) / (F * F)     # foot of the origin (4.27)
+        anchor = p0 + e * ((np.asarray(near, dtype=float) - p0) @ e)
+        if self._scale is None:
+            return anchor, anchor, anchor
         half = 0.5 * self._scale * F * e
-        return mid - half, mid + half
+        return anchor, anchor - half, anchor + half
 
     def get_segment(self):
         """The clipped endpoints ``(2, 2)`` in the current view (None if not visible)."""
@@ -546,19 +558,12 @@ class LineArtist(_Base):
             return []
         self._line.set_data(seg[:, 0], seg[:, 1])
         out.append(self._line)
-        F = np.hypot(fx, fy)
-        e = np.array([fx, fy]) / F
-        p0 = np.array([fy * tz, -fx * tz]) / (F * F)
-        if self._anchor is not None:
-            anchor = p0 + e * ((self._anchor - p0) @ e)
-        else:
+        near = self._anchor
+        if near is None:
             box = _view(ax)
-            c = np.array([(box[0] + box[1]) / 2, (box[2] + box[3]) / 2])
-            anchor = p0 + e * ((c - p0) @ e)
-        tip = anchor
+            near = ((box[0] + box[1]) / 2, (box[2] + box[3]) / 2)
+        anchor, tail, tip = self._arrow_at(near)
         if self._scale is not None:
-            L = self._scale * F
-            tail, tip = anchor - e * L / 2, anchor + e * L / 2
             self._arrow.set_positions(tuple(tail), tuple(tip))
             out.append(self._arrow)
         at = anchor if self._text_at == "anchor" else tip
