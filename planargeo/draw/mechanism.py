@@ -244,7 +244,7 @@ def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None, ga
         n = np.array([-d[1], d[0]]) / L
         others = [v for j, v in arrows.items() if j != k and v is not None]
 
-        def clearance(side):
+        def label_room(side):
             c = mid + side * n * 0.25 * L
             dist = [_seg_dist(c, *o) for o in others] + [float(np.hypot(*(c - p))) for p in placed]
             if avoid is not None:
@@ -253,7 +253,7 @@ def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None, ga
                 dist.append(float(avoid.distance(SPoint(*c))))
             return min(dist) if dist else 0.0
 
-        side = 1.0 if clearance(1.0) >= clearance(-1.0) else -1.0
+        side = 1.0 if label_room(1.0) >= label_room(-1.0) else -1.0
         placed.append(mid + side * n * 0.25 * L)
         u = side * n
         art.set_text_offset(gap * u)
