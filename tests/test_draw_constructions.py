@@ -377,6 +377,12 @@ def test_decomposition_hand_closed_forms(ax):
     # Fig. 6.2's geometry: U1 on R2, U2 on R1 (RᵀU = 1), both on T (TᵀU = 0)
     assert abs(U[:, 0] @ R[:, 1]) < 1e-12 and abs(U[:, 1] @ R[:, 0]) < 1e-12
     assert np.all(np.abs(T @ U) < 1e-12)
+    # ... and so do the drawn poles and lines, against the hand lines and poles
+    Ud = np.column_stack([out["U1"].get_point(), out["U2"].get_point()])
+    Td = out["T"].get_line()
+    assert abs(Ud[:, 0] @ R[:, 1]) < 1e-12 and abs(Ud[:, 1] @ R[:, 0]) < 1e-12
+    np.testing.assert_allclose(R.T @ Ud, np.eye(2), atol=1e-12)
+    assert np.all(np.abs(Td @ U) < 1e-12) and np.all(np.abs(T @ Ud) < 1e-12)
     # the drawn (clipped) T satisfies the hand line's equation (4.27)
     for x, y in out["T"].get_segment():
         assert abs(T[2] + y * T[0] - x * T[1]) <= 1e-9 * np.hypot(*T[:2])
