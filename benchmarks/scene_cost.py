@@ -19,18 +19,17 @@ per-joint T/U split only when it is drawn), together with the qdd-only fast
 paths of the forward-dynamics methods against their full workspaces, and,
 for scale, the whole explorer update (compute, artists, Agg redraw).
 
-The minimal paths that would need changes in ``planargeo/`` (a cached model,
-only the contact columns of the stacked mobility, no outlines for the car
-explorer...) are **not** applied to the package here: they are prototypes
-in this file, so that the saving is measured before anyone changes the
-scenes; ``docs/scenes.md`` lists them.
+Where an explorer already computes only what it draws (cached models, ``loop_solve``'s
+contact columns, the car's ``outlines=False``), its compute step is the minimal side and
+the scene the full one.  The one minimal path not applied to the package, the chain
+explorer's q̈-plus-Newton–Euler compute step, is a prototype in this file;
+``docs/scenes.md`` lists what is applied and what is found.
 
 Writes ``results/scene_cost.md``.
 """
 from __future__ import annotations
 
 import argparse
-import contextlib
 import functools
 import itertools
 import math
@@ -58,19 +57,15 @@ from planargeo.algorithms.aba import articulated_body, forward_dynamics  # noqa:
 from planargeo.algorithms.articulated_inertia import articulated_inertia  # noqa: E402
 from planargeo.algorithms.articulated_mobility import articulated_mobility  # noqa: E402
 from planargeo.algorithms.chain_splitting import forward_dynamics_mobility_split, mobility_split  # noqa: E402
-from planargeo.algorithms.loops import SINGULAR_COND  # noqa: E402
 from planargeo.algorithms.projective import forward_dynamics_projective, projective_workspace  # noqa: E402
-from planargeo.algorithms.stacked import blocks, forward_dynamics_stacked, stacked_solve  # noqa: E402
+from planargeo.algorithms.stacked import forward_dynamics_stacked, stacked_solve  # noqa: E402
 from planargeo.bench import ratio_stats, time_interleaved  # noqa: E402
-from planargeo.contacts import Contact, contact_matrix, stacked_contact_spaces, validate_contacts  # noqa: E402
-from planargeo.errors import SingularConfigurationError  # noqa: E402
 from planargeo.kinematics import kinematics  # noqa: E402
 from planargeo.model import chain_model  # noqa: E402
 from planargeo.scenes import car as car_scene  # noqa: E402
 from planargeo.scenes import chain as chain_scene  # noqa: E402
 from planargeo.scenes import trees as tree_scene  # noqa: E402
 from planargeo.scenes.horizontal_chain import effective_centre, horizontal_chain_model  # noqa: E402
-from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state  # noqa: E402
 from planargeo.scenes.two_body import two_body_model  # noqa: E402
 
 
@@ -87,168 +82,40 @@ def chain_methods_only(n=10, seed=1):
 
 
 # --------------------------------------------------------------------------- car (explorer)
-@contextlib.contextmanager
-def _patched(module, name, value):
-    old = getattr(module, name)
-    setattr(module, name, value)
-    try:
-        yield
-    finally:
-        setattr(module, name, old)
-
-
-def car_without_outlines(**params):
-    """The car scene without its shapely outlines (body and tyres), which only gallery Fig 6.6 draws."""
-    with _patched(car_scene, "_outlines", lambda d, L, steer: (None, None, None)):
-        return car_scene.car(**params)
-
-
-# --------------------------------------------------------------------------- loops: contact columns only
-def _linv(tree):
-    """``1 - Cᵀ P`` (unit upper triangular, parents before children): ``L⁻¹`` of thesis 9.31."""
-    return np.eye(tree.C.shape[0]) - tree.C.T @ tree.P
-
-
-def loop_solve_columns(model, q, qd, tau, *, prescribed=None):
-    """:func:`planargeo.algorithms.loops.loop_solve` with only the contact columns of the tree's mobility.
-
-    The loop solver needs ``Λ⁻¹`` only as ``G Λ⁻¹ Gᵀ`` and ``Λ⁻¹ Gᵀ F`` (9.72, 9.73):
-    the columns ``Λ⁻¹ Gᵀ = Lᵀ (S Tᵀ A⁻¹ (L Gᵀ))`` take two unit-triangular solves with
-    ``3m`` right-hand sides, where the full ``Λ⁻¹ = Lᵀ S Tᵀ A⁻¹ L`` takes the
-    ``3N × 3N`` articulation matrix ``L`` and two dense products.  Everything else
-    is the steps of ``loop_solve`` unchanged.  Returns a dict with the fields the
-    explorers read: ``data``, ``u``, ``a``, ``qdd``, ``F``, ``xi``, ``tau_drive``,
-    ``cond``.
-    """
-    from scipy.linalg import solve_triangular
-
-    from planargeo.algorithms.loops import _contact_topology
-
-    nq = model.nq
-    cs = validate_contacts(model.contacts, model.N)
-    data = kinematics(model, q, qd)
-    tree = stacked_solve(model, q, qd, tau, data=data)
-    N = model.N
-    G, Ups, G3, U3 = _contact_topology(tuple(model.parents), tuple(cs))
-    z, B = stacked_contact_spaces(cs, data.pose)
-    v = data.v.reshape(-1)
-    u = tree.a
-    J = U3 @ tree.I @ U3.T
-    Gv = G3 @ v
-    if z.shape[1]:
-        try:
-            theta_dot = np.linalg.solve(z.T @ J @ z, z.T @ J @ Gv)
-        except np.linalg.LinAlgError:
-            theta_dot = np.linalg.lstsq(z, Gv, rcond=None)[0]
-    else:
-        theta_dot = np.zeros(0)
-    zt = z @ theta_dot
-    nu = np.zeros(3 * len(cs))
-    for k, c in enumerate(cs):
-        va = data.v[c.a]
-        w = zt[3 * k:3 * k + 3]
-        nu[3 * k:3 * k + 3] = [-va[2] * w[1] + va[1] * w[2], va[2] * w[0] - va[0] * w[2], 0.0]
-    G_rows, B_blocks, nu_rows, drive_cols = [G3], [B], [nu], []
-    for i, val in dict(prescribed or {}).items():
-        si = data.s(i)
-        k = si.shape[1]
-        val = np.broadcast_to(np.asarray(val, dtype=float), (k,))
-        row = np.zeros((3, 3 * N))
-        row[:, 3 * i:3 * i + 3] = np.eye(3)
-        j = model.parents[i]
-        if j >= 0:
-            row[:, 3 * j:3 * j + 3] = -np.eye(3)
-        G_rows.append(row)
-        B_blocks.append(si @ np.linalg.inv(si.T @ si))
-        nu_rows.append(data.kappa[i] + si @ val)
-        drive_cols.append((i, k))
-    Gall = np.vstack(G_rows)
-    Ball = np.zeros((Gall.shape[0], sum(b.shape[1] for b in B_blocks)))
-    r = c0 = 0
-    for b in B_blocks:
-        Ball[r:r + b.shape[0], c0:c0 + b.shape[1]] = b
-        r += b.shape[0]
-        c0 += b.shape[1]
-    nuall = np.concatenate(nu_rows)
-    # the one change: Λ⁻¹ Gᵀ by two triangular solves, not the full stacked mobility
-    Linv = _linv(tree)
-    X = solve_triangular(Linv, Gall.T, unit_diagonal=True)                     # L Gᵀ
-    LamG = solve_triangular(Linv, tree.StTAinv @ X, trans="T", unit_diagonal=True)  # Lᵀ S Tᵀ A⁻¹ L Gᵀ
-    K = Ball.T @ (Gall @ LamG) @ Ball
-    cond = float(np.linalg.cond(K)) if K.size else 1.0
-    if K.size and (not np.isfinite(cond) or cond > SINGULAR_COND):
-        raise SingularConfigurationError("B^T G Λ^-1 G^T B is singular", cond)
-    Kinv = np.linalg.inv(K) if K.size else K
-    rhs = Gall @ u - nuall
-    xi_all = Kinv @ (Ball.T @ rhs)
-    Fall = Ball @ xi_all
-    a = u - LamG @ Fall
-    qdd = tree.T.T @ (a - tree.C @ a - tree.kappa)
-    tau_drive = np.array(tau, dtype=float)
-    off = B.shape[1]
-    for i, k in drive_cols:
-        tau_drive[model.q_slice(i)] -= xi_all[off:off + k]
-        off += k
-    return {"data": data, "u": u, "a": a, "qdd": qdd, "F": Fall[:3 * len(cs)], "xi": xi_all[:B.shape[1]],
-            "tau_drive": tau_drive, "cond": cond, "nq": nq}
-
-
-# --------------------------------------------------------------------------- slider-crank (explorer)
-_sc_model = functools.lru_cache(maxsize=64)(slider_crank_model)
-
-
-def _slider_crank(psi, psidot, l, g, drive, solver):
-    model = _sc_model(0.40, 0.15, 0.30, 2.29, l, 0.5, g)
-    q, qd = slider_crank_state(psi, psidot, 2.29, l)
-    tau = np.zeros(3)
-    return model, q, qd, solver(model, q, qd, tau, prescribed={0: 0.0} if drive == "constant-speed" else None)
-
-
-def slider_crank_explorer_minimal(psi=0.4, psidot=20.0, l=5.0, g=9.81, drive="free"):
-    """What the slider-crank explorer reads, from a cached model and the contact columns of Λ⁻¹ only."""
-    model, q, qd, sol = _slider_crank(psi, psidot, l, g, drive, loop_solve_columns)
-    r, t = 2.29, 0.5
-    h = r * np.sin(q[0]) + l * np.sin(q[0] + q[1]) + t * np.sin(q.sum())
-    return {"pose": sol["data"].pose, "com": sol["data"].com, "v": sol["data"].v, "a": sol["a"].reshape(3, 3),
-            "F3": sol["F"], "qdd": sol["qdd"], "tau_drive": sol["tau_drive"], "h": h, "q": q, "qd": qd}
-
-
-def slider_crank_columns_only(psi=0.4, psidot=20.0, l=5.0, g=9.81, drive="free"):
-    """The slider-crank with the contact columns of Λ⁻¹ only (model rebuilt, as now)."""
-    model = slider_crank_model(l=l, g=g)
-    q, qd = slider_crank_state(psi, psidot, 2.29, l)
-    return loop_solve_columns(model, q, qd, np.zeros(3), prescribed={0: 0.0} if drive == "constant-speed" else None)
+# --------------------------------------------------------------------------- explorers that solve loops or trees
+def slider_crank_compute_reads(st) -> dict:
+    """The numbers the slider-crank explorer's ``render`` reads from its compute state."""
+    sol = st["sol"]
+    return {"pose": sol.data.pose, "com": sol.data.com, "v": np.asarray(st["v"]), "a": np.asarray(st["a"]),
+            "F3": st["F3"], "qdd": np.asarray(sol.qdd), "tau_drive": np.asarray(sol.tau_drive), "h": st["h"],
+            "q": np.asarray(st["q"]), "qd": np.asarray(st["qd"])}
 
 
 def slider_crank_explorer_reads(res) -> dict:
-    """The numbers the slider-crank explorer's ``render`` reads from a scene result."""
+    """The same numbers from the ``slider-crank`` scene's result."""
     sol, qn = res.extra["solution"], res.quantities
     return {"pose": sol.data.pose, "com": sol.data.com, "v": np.asarray(qn["v"]), "a": np.asarray(qn["a"]),
             "F3": np.asarray(qn["F3"]), "qdd": np.asarray(qn["qdd"]), "tau_drive": np.asarray(qn["tau_drive"]),
             "h": qn["h"], "q": np.asarray(qn["q"]), "qd": np.asarray(qn["qd"])}
 
 
-# --------------------------------------------------------------------------- trees (explorer, gallery)
-_tree_model = functools.lru_cache(maxsize=64)(tree_scene.tree_model)
+def tree_compute_reads(st) -> dict:
+    """What the tree explorer's ``render`` reads from its compute state (loops open or closed)."""
+    sol = st["sol"]
+    out = {"pose": sol.data.pose, "v": sol.data.v, "a": np.asarray(st["a"]), "qdd": np.asarray(st["qdd"])}
+    if st["closed"]:
+        out.update(F=np.asarray(st["F"]), cond=st["cond"])
+    return out
 
 
-def tree_explorer_minimal(mass=1.0, length=1.0, g=9.81, speed=1.0):
-    """What the tree explorer reads for the open tree (Fig 9.1): one stacked solve on a cached model.
-
-    Skips the direct solution 9.48 (``tree_mobilities`` + ``direct_accelerations``:
-    ``qdd_direct``, the report's cross-check of 9.39), ``C`` and ``Dinv``.
-    """
-    model = _tree_model(mass, length, g)
-    q = tree_scene._default_q()
-    qd = speed * tree_scene._QD_PATTERN
-    sol = stacked_solve(model, q, qd, np.zeros(9))
-    return {"pose": sol.data.pose, "v": sol.data.v, "a": sol.a.reshape(9, 3), "qdd": sol.qdd}
-
-
-def tree_explorer_reads(res) -> dict:
+def tree_scene_reads(res) -> dict:
+    """The same numbers from the ``tree`` / ``constrained-tree`` scene's result."""
     sol = res.extra["solution"]
-    return {"pose": sol.data.pose, "v": sol.data.v, "a": np.asarray(res.quantities["a"]).reshape(-1, 3),
-            "qdd": np.asarray(res.quantities["qdd"])}
+    out = {"pose": sol.data.pose, "v": sol.data.v, "a": np.asarray(res.quantities["a"]).reshape(-1, 3),
+           "qdd": np.asarray(res.quantities["qdd"])}
+    if "F" in res.quantities:
+        out.update(F=np.asarray(res.quantities["F"]).reshape(-1, 3), cond=res.quantities["cond"])
+    return out
 
 
 def tree_geometry_only(mass=1.0, length=1.0, g=9.81):
@@ -260,38 +127,6 @@ def tree_geometry_only(mass=1.0, length=1.0, g=9.81):
 
 def tree_figure_reads(res) -> dict:
     return {"model": res.model, "pose": kinematics(res.model, res.state["q"], np.zeros(res.model.nq)).pose}
-
-
-@functools.lru_cache(maxsize=64)
-def _constrained_setup(mass, length, g):
-    """Model and the unit velocity pattern projected onto the loops' allowed velocities (linear in speed)."""
-    L = length
-    contacts = (Contact("pin", 3, 6, (L, 0.0), (L, 0.0), name="4-7"),
-                Contact("pin", 7, 8, (L, 0.0), (L, 0.0), name="8-9"))
-    model = tree_scene.tree_model(mass, length, g, contacts)
-    q = tree_scene._default_q()
-    d = kinematics(model, q)
-    _, B = stacked_contact_spaces(contacts, d.pose)
-    Jb = np.concatenate([d.jacobian(i) for i in range(9)], 0)
-    Jc = B.T @ blocks(contact_matrix(contacts, 9)) @ Jb
-    pattern = tree_scene._QD_PATTERN
-    return model, q, pattern - np.linalg.pinv(Jc) @ (Jc @ pattern)
-
-
-def constrained_tree_explorer_minimal(mass=1.0, length=1.0, g=9.81, speed=1.0):
-    """What the tree explorer reads for the closed loops (Fig 9.2): cached model and velocity projection,
-    contact columns of Λ⁻¹ only."""
-    model, q, unit = _constrained_setup(mass, length, g)
-    sol = loop_solve_columns(model, q, speed * unit, np.zeros(9))
-    return {"pose": sol["data"].pose, "v": sol["data"].v, "a": sol["a"].reshape(9, 3), "qdd": sol["qdd"],
-            "F": sol["F"].reshape(-1, 3), "cond": sol["cond"]}
-
-
-def constrained_tree_explorer_reads(res) -> dict:
-    out = tree_explorer_reads(res)
-    out["F"] = np.asarray(res.quantities["F"]).reshape(-1, 3)
-    out["cond"] = res.quantities["cond"]
-    return out
 
 
 # --------------------------------------------------------------------------- chapter 7 chart points
@@ -367,44 +202,6 @@ def chain_explorer_reads(st) -> dict:
 
 
 # --------------------------------------------------------------------------- percussion explorer
-@functools.lru_cache(maxsize=32)
-def _moments(wkb: bytes):
-    from shapely import wkb as shapely_wkb
-
-    from planargeo.inertia import polygon_moments
-
-    return polygon_moments(shapely_wkb.loads(wkb))
-
-
-def percussion_cached_compute(ex, v) -> dict:
-    """The percussion explorer's compute step with the shape's moments computed once per shape (prototype).
-
-    The explorer integrates the polygon twice on every change (``Inertia.from_polygon``
-    for the area, then again at the density giving the chosen mass), although only the
-    shape changes them: the inertia is linear in the mass.
-    """
-    from planargeo.inertia import percussion_axis, percussion_pole
-    from planargeo.projective import from_xy
-    from planargeo.screws import inertia_matrix
-
-    shape = ex._shape(v)
-    area, c, polar = _moments(shape.wkb)
-    m = float(v["mass (kg)"])
-    I = inertia_matrix(m, c, m * polar / area)
-    if v["drive"] == "impact":
-        f = np.array([0.0, 1.0, float(v["impact at"])])
-        a = percussion_pole(I, f)
-    else:
-        a = from_xy([v["pole x"], v["pole y"]])
-        f = percussion_axis(I, a)
-    return {"I": I, "c": np.asarray(c, float), "a": a, "f": f}
-
-
-def percussion_reads(st) -> dict:
-    I = st["I"]
-    return {"I": np.asarray(getattr(I, "matrix", I)), "c": st["c"], "a": st["a"], "f": st["f"]}
-
-
 # =========================================================================== cases
 @dataclass
 class Case:
@@ -446,39 +243,41 @@ def cases() -> list:
     N = 10
     qn, qdn, taun = np.random.default_rng(3).normal(size=(3, N))
     mn = chain_model(N)
+    from planargeo.widgets import SliderCrankExplorer, TreeExplorer
+
+    sc_ex, tr_ex = SliderCrankExplorer(display="agg"), TreeExplorer(display="agg")
+    v_sc = dict(sc_ex.values, **{"crank angle (deg)": math.degrees(0.7)})
+    v_open = dict(tr_ex.values, speed=0.7, loops="open (Fig 9.1)")
+    v_closed = dict(tr_ex.values, speed=0.7, loops="closed (Fig 9.2)")
     out = [
         # ---- scenes as their consumers read them
         Case("scene", "chain", "`planargeo report chain`, notebook 08 (n = 10)",
              "the ABA workspace `extra['data']` (read by nothing)",
              lambda: scenes.build("chain", n=10, seed=1), lambda: chain_methods_only(10, 1),
              read_full=_chain_report_reads),
-        Case("scene", "car", "car explorer (every control change)",
-             "the shapely outlines of the body and tyres (only gallery Fig 6.6 draws them)",
-             lambda: scenes.build("car", omega=0.6), lambda: car_without_outlines(omega=0.6),
+        Case("scene", "car", "car explorer (every control change): `car(..., outlines=False)`",
+             "the shapely outlines of the body and tyres, which the report and gallery Fig 6.6 compute "
+             "(the default) and the explorer skips",
+             lambda: car_scene.car(omega=0.6), lambda: car_scene.car(omega=0.6, outlines=False),
              read_full=_car_reads, read_minimal=_car_reads),
-        Case("scene", "slider-crank", "slider-crank explorer (every control change)",
-             "rebuilding the model; the full 9×9 stacked mobility Λ⁻¹ (only its 3 contact columns are used)",
-             lambda: scenes.build("slider-crank", psi=0.7), lambda: slider_crank_explorer_minimal(psi=0.7),
-             read_full=slider_crank_explorer_reads, exact=False),
-        Case("scene", "slider-crank", "slider-crank explorer, the mobility alone",
-             "the full 9×9 stacked mobility Λ⁻¹ (model still rebuilt)",
-             lambda: scenes.build("slider-crank", psi=0.7), lambda: slider_crank_columns_only(psi=0.7),
-             read_full=lambda r: {"qdd": np.asarray(r.quantities["qdd"]), "F3": np.asarray(r.quantities["F3"])},
-             read_minimal=lambda s: {"qdd": s["qdd"], "F3": s["F"]}, exact=False),
-        Case("scene", "tree", "tree explorer, loops open (every control change)",
-             "the direct solution 9.48 (`tree_mobilities`, `qdd_direct`: the report's cross-check), C, Δ⁻¹; "
-             "rebuilding the model",
-             lambda: scenes.build("tree", speed=0.7), lambda: tree_explorer_minimal(speed=0.7),
-             read_full=tree_explorer_reads),
+        Case("scene", "slider-crank", "slider-crank explorer: its compute step vs the scene",
+             "the scene's model rebuild and report quantities (the explorer caches the model and calls "
+             "`loop_solve`, which forms only the contact columns of Λ⁻¹)",
+             lambda: scenes.build("slider-crank", psi=0.7), lambda: sc_ex.compute(v_sc, set()),
+             read_full=slider_crank_explorer_reads, read_minimal=slider_crank_compute_reads, exact=False),
+        Case("scene", "tree", "tree explorer, loops open: its compute step vs the scene",
+             "the direct solution 9.48 (`tree_mobilities`, `qdd_direct`: the report's cross-check), C, Δ⁻¹, "
+             "the model rebuild: the explorer runs one stacked solve on a cached model",
+             lambda: scenes.build("tree", speed=0.7), lambda: tr_ex.compute(v_open, set()),
+             read_full=tree_scene_reads, read_minimal=tree_compute_reads, exact=False, rtol=1e-12),
         Case("scene", "tree", "gallery Fig 9.1 (draws the pose)",
              "all dynamics (the figure calls `kinematics` itself)",
              lambda: scenes.build("tree"), lambda: tree_geometry_only(), read_full=tree_figure_reads,
              read_minimal=lambda r: {"model": r["model"], "pose": r["pose"]}),
-        Case("scene", "constrained-tree", "tree explorer, loops closed (every control change)",
-             "rebuilding the model and the velocity projection; the full 27×27 stacked mobility "
-             "(only the 6 contact columns are used)",
-             lambda: scenes.build("constrained-tree", speed=0.7), lambda: constrained_tree_explorer_minimal(speed=0.7),
-             read_full=constrained_tree_explorer_reads, exact=False, rtol=1e-10),
+        Case("scene", "constrained-tree", "tree explorer, loops closed: its compute step vs the scene",
+             "the model rebuild and velocity projection (cached in the explorer)",
+             lambda: scenes.build("constrained-tree", speed=0.7), lambda: tr_ex.compute(v_closed, set()),
+             read_full=tree_scene_reads, read_minimal=tree_compute_reads, exact=False, rtol=1e-10),
         Case("scene", "two-body", "gallery Fig 7.4 chart, one point (m_x/m)",
              "rebuilding the model; `U2`, `T2`, `s`, `R` and the lists of the report",
              lambda: scenes.build("two-body", rho=0.25, phi=1.0), lambda: two_body_mx(0.25, 1.0),
@@ -521,34 +320,31 @@ def cases() -> list:
 
 #: (group, scene, consumer, what the lighter side skips) of :func:`explorer_cases`, in order
 EXPLORER_LABELS = (
-    ("explorer", "chain", "chain explorer (10 links): compute step, all overlays vs none",
-     "the per-joint T/U split (`percussion_space`): the explorer computes it only when drawn"),
+    ("explorer", "chain", "chain explorer (10 links): compute step with the T/U split drawn vs not",
+     "the per-joint T/U split (`tu_split`, `percussion_space`): derived in `render` only when shown"),
     ("explorer", "chain", "chain explorer (10 links, default overlays): compute step",
      "the ABA workspace (`articulated_body`, vectorised path): q̈ by the compiled plan and one Newton–Euler "
      "pass give every drawn and read number unless the articulated inertias or the T/U split are shown "
      "(prototype)"),
-    ("explorer", "(no scene)", "percussion explorer: compute step (dragging the pole)",
-     "integrating the polygon twice on every change (`Inertia.from_polygon` ×2): its moments depend on the "
-     "shape only (prototype: cached per shape)"),
 )
+
+
+def _compute_with_split(ex, v):
+    st = ex.compute(v, set())
+    ex.tu_split(st)
+    return st
 
 
 def explorer_cases() -> list:
     """The explorers' compute steps: as they are against what they draw (explorer instances on Agg)."""
-    from planargeo.widgets import PercussionExplorer
-
     ex = chain_explorer_default()          # compute() reads only the values it is given
-    v_on, v_off, v_dflt = chain_explorer_values(ex, True), chain_explorer_values(ex, False), dict(ex.values)
-    perc = PercussionExplorer(display="agg")
-    v_perc = dict(perc.values, **{"pole x": -0.35, "pole y": 0.05})
-    tu, rnea, pc = EXPLORER_LABELS
+    v_dflt = dict(ex.values)
+    tu, rnea = EXPLORER_LABELS
     return [
-        Case(*tu, lambda: ex.compute(v_on, set()), lambda: ex.compute(v_off, set()),
+        Case(*tu, lambda: _compute_with_split(ex, v_dflt), lambda: ex.compute(v_dflt, set()),
              read_full=chain_explorer_reads, read_minimal=chain_explorer_reads),
         Case(*rnea, lambda: ex.compute(v_dflt, set()), lambda: chain_explorer_rnea_compute(ex, v_dflt),
              read_full=chain_explorer_drawn, read_minimal=chain_explorer_drawn, exact=False),
-        Case(*pc, lambda: perc.compute(v_perc, set()), lambda: percussion_cached_compute(perc, v_perc),
-             read_full=percussion_reads, read_minimal=percussion_reads, exact=False),
     ]
 
 
@@ -648,35 +444,31 @@ def _notes(res: dict) -> list:
     def get(scene, start):
         return next(r for (s, c), r in by.items() if s == scene and c.startswith(start))
 
-    sc, sc_mob = get("slider-crank", "slider-crank explorer (every"), get("slider-crank", "slider-crank explorer, the")
-    tr, ct = get("tree", "tree explorer"), get("constrained-tree", "tree explorer")
+    sc, tr, ct = (get("slider-crank", "slider-crank explorer"), get("tree", "tree explorer"),
+                  get("constrained-tree", "tree explorer"))
     car, chain, build = get("car", "car"), get("chain", "`planargeo"), get("(every scene)", "explorers")
     fig91 = get("tree", "gallery")
     ch_rnea = get("chain", "chain explorer (10 links, default")
     ch_tu = get("chain", "chain explorer (10 links): compute")
-    perc = get("(no scene)", "percussion")
     ups = {u["explorer"]: u for u in res.get("updates", [])}
     out = [
-        f"* **tree**: the scene always runs the direct solution 9.48 (`tree_mobilities`, the report's `qdd_direct` "
-        f"cross-check) besides the stacked solve; the explorer reads only the stacked solve, so it could run in "
-        f"{tr['ratio']['median']:.2f}× the time ({_us(tr['saved_us'])} µs saved per change), and gallery Fig 9.1, which "
-        f"only draws the pose, in {fig91['ratio']['median']:.2f}×.",
-        f"* **constrained-tree**: rebuilding the model and the velocity projection on every change and forming the "
-        f"full 27×27 stacked mobility where 6 columns are used: {ct['ratio']['median']:.2f}× "
-        f"({_us(ct['saved_us'])} µs per change).",
-        f"* **slider-crank**: cached model and the 3 contact columns of Λ⁻¹: {sc['ratio']['median']:.2f}× "
-        f"({_us(sc['saved_us'])} µs); the columns alone: {sc_mob['ratio']['median']:.2f}× — with three bodies the "
-        "full mobility is cheap, and the model rebuild weighs more.",
-        f"* **car**: the shapely outlines, drawn only by gallery Fig 6.6: {car['ratio']['median']:.2f}× without them "
-        f"({_us(car['saved_us'])} µs per change).",
+        f"* **tree**: the scene runs the direct solution 9.48 (the report's `qdd_direct` cross-check) besides the "
+        f"stacked solve; the explorer runs only the stacked solve on a cached model: "
+        f"{tr['ratio']['median']:.2f}× the scene's time ({_us(tr['saved_us'])} µs saved per change). Gallery "
+        f"Fig 9.1, which only draws the pose, would need {fig91['ratio']['median']:.2f}× the scene's time.",
+        f"* **constrained-tree**: the explorer caches the model and the velocity projection: "
+        f"{ct['ratio']['median']:.2f}× the scene's time ({_us(ct['saved_us'])} µs per change).",
+        f"* **slider-crank**: the explorer caches the model; both call `loop_solve` (contact columns of Λ⁻¹ "
+        f"only): {sc['ratio']['median']:.2f}× the scene's time ({_us(sc['saved_us'])} µs per change).",
+        f"* **car**: the explorer passes `outlines=False`: {car['ratio']['median']:.2f}× the time of the "
+        f"default scene ({_us(car['saved_us'])} µs per change), which computes the shapely outlines for the "
+        "report and gallery Fig 6.6.",
         f"* **chain scene**: its ABA workspace `extra['data']` is read by nothing: {chain['ratio']['median']:.2f}× "
         "without it.",
-        f"* **chain explorer**: it computes the T/U split only when it is shown (with every overlay its compute "
-        f"step takes {1 / ch_tu['ratio']['median']:.2f}× the time without), but it always builds the full ABA "
+        f"* **chain explorer**: it derives the T/U split only when it is shown (with it, its compute step takes "
+        f"{1 / ch_tu['ratio']['median']:.2f}× the time without), but it always builds the full ABA "
         f"workspace; for the default overlays the compiled plan plus one Newton–Euler pass would do in "
         f"{ch_rnea['ratio']['median']:.2f}× the time ({_us(ch_rnea['saved_us'])} µs per change).",
-        f"* **percussion explorer** (no scene): it integrates the polygon twice on every change; with the moments "
-        f"cached per shape its compute step takes {perc['ratio']['median']:.2f}× the time.",
         f"* **`scenes.build`** checks parameter names with `inspect.signature` on every call: calling the scene "
         f"function directly takes {build['ratio']['median']:.2f}× the time ({_us(build['saved_us'])} µs per change).",
     ]

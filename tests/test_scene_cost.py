@@ -15,10 +15,7 @@ import numpy as np
 import pytest
 
 from planargeo import scenes
-from planargeo.algorithms.loops import loop_solve
-from planargeo.contacts import Contact
-from planargeo.errors import SingularConfigurationError
-from planargeo.model import Model, chain_model
+from planargeo.model import Model
 
 _PATH = Path(__file__).resolve().parents[1] / "benchmarks" / "scene_cost.py"
 _spec = importlib.util.spec_from_file_location("_scene_cost", _PATH)
@@ -66,50 +63,8 @@ def test_every_scene_has_a_case():
     assert set(scenes.names()) <= covered, set(scenes.names()) - covered
 
 
-@pytest.mark.parametrize("psi, drive", [(0.4, "free"), (0.4, "constant-speed"), (2.5, "free"), (-1.2, "constant-speed")])
-def test_loop_solve_columns_matches_loop_solve_on_the_slider_crank(psi, drive):
-    # every field the explorers and the report read, with and without the crank drive
-    res = scenes.build("slider-crank", psi=psi, drive=drive)
-    sol = res.extra["solution"]
-    model = res.model
-    q, qd = np.asarray(res.state["q"]), np.asarray(res.state["qd"])
-    cols = sc.loop_solve_columns(model, q, qd, np.zeros(3), prescribed={0: 0.0} if drive == "constant-speed" else None)
-    for k, ref in (("a", sol.a), ("qdd", sol.qdd), ("F", sol.F), ("xi", sol.xi), ("tau_drive", sol.tau_drive),
-                   ("u", sol.u)):
-        np.testing.assert_allclose(cols[k], ref, rtol=0, atol=1e-12 * max(1.0, np.abs(ref).max()), err_msg=k)
-    assert cols["cond"] == pytest.approx(sol.cond, rel=1e-9)
-    # the columns hold the report's Λ₃⁻¹ = G Λ⁻¹ Gᵀ (the slider acts on body 3)
-    np.testing.assert_allclose(np.asarray(res.quantities["Lambda3_inv"]),
-                               sol.Lambda_inv[6:9, 6:9], rtol=0, atol=1e-15)
-
-
-def test_loop_solve_columns_on_a_four_bar_and_at_the_fold():
-    # the parallelogram four-bar of loop_solve's docstring (φ̈ = -6/5 g cos φ), and the folded slider-crank,
-    # where both refuse
-    pin = Contact("pin", 2, -1, point_a=(1.0, 0.0), point_b=(1.0, 0.0))
-    m = chain_model(3)
-    m = Model(m.bodies, m.joints, m.parents, m.gravity, contacts=(pin,))
-    q, qd = np.array([1.2, -1.2, 1.2 - np.pi]), np.array([1.0, -1.0, 1.0])
-    cols = sc.loop_solve_columns(m, q, qd, np.zeros(3))
-    assert abs(cols["qdd"][0] - (-6 / 5 * 9.81 * np.cos(1.2))) < 1e-12
-    np.testing.assert_allclose(cols["qdd"], loop_solve(m, q, qd, np.zeros(3)).qdd, rtol=0, atol=1e-12)
-    from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
-
-    r = 2.29
-    model = slider_crank_model(l=r * (1 + 1e-11))
-    q, qd = slider_crank_state(0.0, 20.0, r, r * (1 + 1e-11))
-    for solve in (loop_solve, sc.loop_solve_columns):
-        with pytest.raises(SingularConfigurationError):
-            solve(model, q, qd, np.zeros(3))
-
-
 def test_cached_models_are_the_scenes_models():
-    assert sc._sc_model(0.40, 0.15, 0.30, 2.29, 5.0, 0.5, 9.81) == scenes.build("slider-crank").model
-    assert sc._tree_model(1.0, 1.0, 9.81) == scenes.build("tree").model
-    model, q, unit = sc._constrained_setup(1.0, 1.0, 9.81)
-    res = scenes.build("constrained-tree", speed=2.0)
-    assert model == res.model
-    np.testing.assert_allclose(2.0 * unit, res.state["qd"], rtol=0, atol=1e-14)
+    assert sc._two_body_model(1.0, 0.5, 1.0) == scenes.build("two-body", rho=0.5).model
 
 
 def test_report_writer_formats_every_case(tmp_path):
