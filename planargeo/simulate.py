@@ -72,9 +72,6 @@ __all__ = ["simulate", "SimulationResult", "energy", "progress_enabled", "near_s
 
 METHODS = ("RK23", "RK45", "DOP853", "Radau", "BDF", "LSODA", "RK4")
 
-#: scipy's ``OdeSolver`` class of each adaptive method (``"RK4"`` is stepped here).
-_SCIPY_SOLVERS = {"RK23": "RK23", "RK45": "RK45", "DOP853": "DOP853", "Radau": "Radau", "BDF": "BDF",
-                  "LSODA": "LSODA"}
 
 #: The multistep methods: a restart (after a projection that moved the state) begins again at
 #: order 1 with a small step, so projecting after every step keeps them there (docs/simulation.md).
@@ -384,7 +381,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         else:
             from scipy import integrate
 
-            cls = getattr(integrate, _SCIPY_SOLVERS[method])
+            cls = getattr(integrate, method)   # scipy's OdeSolver class of that name ("RK4" is stepped above)
 
             def make(t0, y0, first_step=None):
                 return cls(rhs, t0, y0, t_end, rtol=rtol, atol=atol, max_step=max_step, first_step=first_step)

@@ -386,6 +386,7 @@ PACK_BODIES = 64
 PROVEN_RTOL = 2.0 / COND_LIMIT
 #: ... and above this times the bound on ``trace A`` at o_i (rounding errors of ``D``, accumulated at o_i, stay far below)
 ROUNDING_RTOL = 1e-8
+assert ROUNDING_RTOL >= PROVEN_RTOL   # so the one test of _checks implies both
 _cos, _sin = math.cos, math.sin
 
 
@@ -820,8 +821,8 @@ def _checks(model: Model, kinds) -> tuple:
     mass and ``ρ`` a bound on the distance from o_i to its centres of mass.  With only
     revolute and fixed joints below body i, ``ρ`` is a constant (a sum of placement
     lengths); where the joint is in the world does not matter.  If the lower bound on
-    ``D`` exceeds ``PROVEN_RTOL`` (2 / LIMIT) and ``ROUNDING_RTOL`` times that upper
-    bound (so that rounding cannot matter), the test can never fail for any finite
+    ``D`` exceeds ``ROUNDING_RTOL`` times that upper bound (so that rounding cannot
+    matter; this implies the rule's own margin ``PROVEN_RTOL`` = 2 / LIMIT, far smaller), the test can never fail for any finite
     state and is left out.  Joints whose test can fail (a point mass on its own joint,
     prismatic joints, prismatic joints below...) keep it.
     """
@@ -842,7 +843,7 @@ def _checks(model: Model, kinds) -> tuple:
     for i, (b, kind) in enumerate(zip(model.bodies, kinds)):
         low = b.inertia + b.mass * (b.com[0] ** 2 + b.com[1] ** 2)
         high = 2.0 * mass[i] + jsum[i] + mass[i] * reach[i] ** 2
-        proven = kind == 1 and rigid[i] and low > ROUNDING_RTOL * high and low > PROVEN_RTOL * high
+        proven = kind == 1 and rigid[i] and low > ROUNDING_RTOL * high   # implies low > PROVEN_RTOL * high
         checks.append(kind != 0 and not proven)
     return tuple(checks)
 

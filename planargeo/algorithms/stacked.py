@@ -381,7 +381,6 @@ class StackedSolution:
     C, Dinv : (3N, 3N) block adjacency and trunk matrices (9.1, 9.12)
     S, T : (3N, nq) joint axes and percussion spaces (9.9, 9.19)
     P : (3N, 3N) block-diagonal ``R U^T = 1 - T S^T`` (7.8)
-    Linv : (3N, 3N) ``L^{-1} = 1 - C^T P``, unit upper triangular (9.31)
     R, U : (3N, 3N-nq) reaction and quake spaces (9.20), computed on demand
     I, A : (3N, 3N) block-diagonal inertias and articulated inertias
     L : (3N, 3N) articulation matrix (9.31)
@@ -553,7 +552,6 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     sol.mobs = np.reshape(mobs, (N, 3, 3))         # its 3×3 blocks (mobility_times)
     sol.parents = tuple(model.parents)
     sol.a = _unit_upper_solve(Linv, sol.StTAinv @ (T @ Q - sol.d) + P.T @ sol.kappa, trans=True)  # U R^T = P^T
-    sol.Linv = Linv
     # (9.41) with (9.17): internal forces
     sol.f = T @ Q + P @ (A @ (C @ sol.a + sol.kappa) + sol.d)
     # (9.43): q̈ = T^T (Δ a - κ)
