@@ -18,7 +18,7 @@ import numpy as np
 
 from ..conics import (line_conic_intersections, polar, polar_construction_exterior,
                       polar_construction_interior)
-from ..inertia import percussion_axis
+from ..inertia import centre_of_mass, percussion_axis
 from ..projective import from_direction, from_xy, join, meet, to_xy
 from ..screws import bias_force, kappa
 from .artists import _mat, _vec, plot_conic, plot_line, plot_point
@@ -239,11 +239,6 @@ def draw_acceleration_step(a_prev, v_prev, s, qd, qdd, ax=None, *,
     return out
 
 
-def _com(I):
-    """Centre of mass of an inertia matrix ``[[m, 0, m cy], [0, m, -m cx], ...]`` (4.58)."""
-    return np.array([I[1, 2], -I[0, 2]]) / I[0, 0]
-
-
 def draw_newton_euler(I, a, v, ax=None, *, scale=None, names=("$v$", "$a$", "$Ia$", "$p$",
                                                                r"$f^{net} = Ia + p$"),
                       positions=(-1.0, -0.9, 1.0), text_offsets=(None,) * 5, inertia=True):
@@ -264,7 +259,7 @@ def draw_newton_euler(I, a, v, ax=None, *, scale=None, names=("$v$", "$a$", "$Ia
     Ia = I @ a
     p = bias_force(I, v)
     fnet = Ia + p
-    c = _com(I)
+    c = centre_of_mass(I)
     o = list(text_offsets)
 
     def along(f, t):  # a point at signed distance t along line f from the foot of c
@@ -355,8 +350,7 @@ def draw_percussion(I, a, ax=None, *, names=("$a$", "$f = Ia$"), dims=True, scal
     ax = _ax(ax)
     I, a = _mat(I, "inertia"), _vec(a, "a")
     f = percussion_axis(I, a)
-    m = I[0, 0]
-    c = np.array([I[1, 2], -I[0, 2]]) / m
+    c = centre_of_mass(I)
     out = {"inertia": plot_conic(I, ax, role="inertia"),
            "a": plot_point(a, ax, role="accel", text=names[0], text_offset=text_offsets[0]),
            "f": plot_line(f, ax, role="wrench", scale=scale, text=names[1], anchor=f_anchor,
@@ -396,7 +390,7 @@ def draw_power(v, I, ax=None, *, f_angle=0.6, a_distance=1.6,
     ax = _ax(ax)
     v, I = _vec(v, "v"), _mat(I, "inertia")
     p = I @ v
-    c = _com(I)
+    c = centre_of_mass(I)
     F = np.hypot(p[0], p[1])
     ang = np.arctan2(p[1], p[0]) + f_angle          # arctan2(0, 0) = 0: a couple p
     ef = np.array([np.cos(ang), np.sin(ang)])
@@ -624,10 +618,12 @@ def draw_twist_split(s, R, A, a, ax=None, *, parts=(1, 2),
     """
     show = _parts_arg(parts)
     ax = _ax(ax)
-    s, R, A, T, U = _decomposition(s, R, A)
-    a = _vec(a, "a")
-    psi, gamma = T.T @ a, R.T @ a
-    a1, a2 = s @ psi, U @ gamma
+    from ..subspaces import Decomposition
+
+    dec = Decomposition(s, R, A)
+    T, U, A = dec.T, dec.U, dec.A
+    psi, gamma = dec.split_twist(_vec(a, "a"))          # (Tᵀa, Rᵀa), 6.44
+    a1, a2 = dec.s @ psi, U @ gamma
     vals = {"T": T, "U": U, "psi": psi, "gamma": gamma, "a1": a1, "a2": a2,
             "f1": A @ a1, "f2": A @ a2}
     nm = {"a1": r"$a_1 = s\psi$", "a2": r"$a_2 = U\gamma$", "f1": "$f_1 = Aa_1$",
@@ -666,10 +662,12 @@ def draw_wrench_split(s, R, A, f, ax=None, *, parts=(1, 2),
     """
     show = _parts_arg(parts)
     ax = _ax(ax)
-    s, R, A, T, U = _decomposition(s, R, A)
-    f = _vec(f, "f")
-    Q, mu = s.T @ f, U.T @ f
-    f1, f2 = T @ Q, R @ mu
+    from ..subspaces import Decomposition
+
+    dec = Decomposition(s, R, A)
+    T, U, A = dec.T, dec.U, dec.A
+    Q, mu = dec.split_wrench(_vec(f, "f"))              # (sᵀf, Uᵀf), 6.38
+    f1, f2 = T @ Q, dec.R @ mu
     vals = {"T": T, "U": U, "Q": Q, "mu": mu, "f1": f1, "f2": f2,
             "a1": np.linalg.solve(A, f1), "a2": np.linalg.solve(A, f2)}
     nm = {"a1": "$a_1 = A^{-1}f_1$", "a2": "$a_2 = A^{-1}f_2$", "f1": "$f_1 = TQ$",

@@ -284,18 +284,16 @@ def slider_guide(contact, pose, body_shape=None, *, clearance=0.04, margin=None)
     >>> e.round(12), n.round(12), round(hw, 6), (round(s0, 6), round(s1, 6))
     (array([0., 1.]), array([-1.,  0.]), 0.19, (1.55, 3.45))
     """
-    from ..contacts import world_point
+    from ..contacts import motion_space, world_point
+    from .figures._layout import shape_points
 
     pose = np.asarray(pose, float)
-    thb = 0.0 if contact.b < 0 else float(pose[contact.b, 2])
-    d = np.asarray(contact.direction, float)
-    c, s = np.cos(thb), np.sin(thb)
-    e = np.array([c * d[0] - s * d[1], s * d[0] + c * d[1]])
+    e = np.asarray(motion_space(contact, pose)[:2, 0], float)    # the world sliding direction (9.83)
     n = np.array([-e[1], e[0]])
     p0 = np.asarray(world_point(pose, contact.b, contact.point_b), float)
     pa = np.asarray(world_point(pose, contact.a, contact.point_a), float)
     if body_shape is not None:
-        xy = np.vstack([np.asarray(g.exterior.coords) for g in getattr(body_shape, "geoms", [body_shape])])
+        xy = shape_points(body_shape)
         across = (xy - p0) @ n
         along = (xy - p0) @ e
         half = float(np.max(np.abs(across)))
