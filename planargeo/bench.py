@@ -27,8 +27,8 @@ charts in ``--gallery`` (default ``gallery/benchmarks``):
 
 Timings are in *thread CPU time* (``time.thread_time``: time the process
 spends descheduled on a busy machine does not count).  The headline ratios are
-measured by interleaving: every method, ``pin.aba`` and ``mj_forward`` alternate
-in short blocks over many rounds, and the tables give the ratio of the best
+measured by interleaving: every method, ``pin.aba`` and ``mj_forward`` (the peers
+that are installed) alternate in short blocks over many rounds, and the tables give the ratio of the best
 blocks and the median of the per-round ratios (both see the same machine state).
 A method too slow to share the rounds (one call above ``2 budget / rounds``) is
 timed on its own: best of several repeats of the mean over many calls, or over
@@ -413,7 +413,7 @@ def _interleaved(m, budget, seed, rounds=40, label="", extra=None):
 def run_single(sizes, budget, rounds=40):
     """Time per call (s) of every method and peer for each N; their errors against the reference, CRBA and Pinocchio.
 
-    Every method and both peers are timed interleaved (:func:`time_interleaved`)
+    Every method and the installed peers (none, one or both) are timed interleaved (:func:`time_interleaved`)
     in the same rounds on the same state, except a method whose single call
     takes more than ``2 budget / rounds`` (listed in ``alone``: timed on its own,
     :func:`_time_method`); ``times`` are the best blocks, ``times_median`` the
@@ -452,12 +452,13 @@ def run_single(sizes, budget, rounds=40):
             t0 = time.thread_time()
             fn(m, q, qd, tau)
             (fast if name == "aba" or time.thread_time() - t0 <= 2 * budget / rounds else slow)[name] = fn
+        # the fast methods share the rounds among themselves even when no peer is installed
+        t, ratios, tmed = _interleaved(m, budget, N, rounds, "(chain_model)", extra=fast)
+        row["times"].update(t)
+        row["times_median"] = tmed
+        row["ratio_pin_all"] = {k.split("/")[0]: v for k, v in ratios.items()
+                                if k.endswith("/pinocchio") and k.split("/")[0] in methods}
         if peers:
-            t, ratios, tmed = _interleaved(m, budget, N, rounds, "(chain_model)", extra=fast)
-            row["times"].update(t)
-            row["times_median"] = tmed
-            row["ratio_pin_all"] = {k.split("/")[0]: v for k, v in ratios.items()
-                                    if k.endswith("/pinocchio") and k.split("/")[0] in methods}
             tr, ratios_r, _ = _interleaved(random_model(N, seed=N), budget, N, rounds, "(random_model)")
             row["times_random"] = tr
             if "pinocchio" in ratios:
@@ -466,8 +467,6 @@ def run_single(sizes, budget, rounds=40):
                 row["ratio_mj"], row["ratio_mj_random"] = ratios["mujoco"], ratios_r["mujoco"]
             if "mujoco/pinocchio" in ratios:
                 row["ratio_mj_pin"] = ratios["mujoco/pinocchio"]
-        else:
-            slow.update(fast)
         for name, fn in slow.items():
             _progress(f"[single] N={N} {name} (alone: too slow to interleave) ...")
             row["times"][name], calls = _time_method(lambda fn=fn: fn(m, q, qd, tau), budget)
@@ -557,6 +556,24 @@ def _peer_label(p):
     return {"pinocchio": "pin.aba", "mujoco": "mj_forward"}.get(p, p)
 
 
+def _peer_text(peers) -> str:
+    """The peers that took part, for the table headers: ``"the peers `pin.aba` and `mj_forward`"`` etc.
+
+    >>> _peer_text(["pinocchio", "mujoco"])
+    'both peers, `pin.aba` and `mj_forward` (setting `qpos`, `qvel`, `qfrc_applied`, then `mj_forward`),'
+    >>> _peer_text(["pinocchio"])
+    'the peer `pin.aba` (MuJoCo not installed)'
+    """
+    labels = {"pinocchio": "`pin.aba`",
+              "mujoco": "`mj_forward` (setting `qpos`, `qvel`, `qfrc_applied`, then `mj_forward`)"}
+    if len(peers) == 2:
+        return f"both peers, {labels[peers[0]]} and {labels[peers[1]]},"
+    if len(peers) == 1:
+        other = {"pinocchio": "MuJoCo", "mujoco": "Pinocchio"}[peers[0]]
+        return f"the peer {labels[peers[0]]} ({other} not installed)"
+    return "no peer (neither Pinocchio nor MuJoCo installed)"
+
+
 def _single_tables(rows) -> list:
     """Markdown lines: the interleaved headline ratios (the all-methods time table is :func:`_time_table`)."""
     peers = [p for p in PEERS if p in rows[0]["times"]]
@@ -569,9 +586,8 @@ def _single_tables(rows) -> list:
         if "ratio_mj_pin" in rows[0]:
             cols += ["mj_forward / pin.aba (median)"]
         lines += ["`aba` (`planargeo.algorithms.aba.forward_dynamics`, one state as float64 arrays: the compiled "
-                  "plan), `pin.aba` and `mj_forward` (setting `qpos`, `qvel`, `qfrc_applied`, then `mj_forward`) "
-                  "alternate in short blocks over many rounds (thread CPU time). *best*: ratio of the best blocks; "
-                  "*median*: median of the per-round ratios. `chain_model` has zero placement angles and y offsets, "
+                  f"plan) and {_peer_text(peers)} alternate in short blocks over many rounds (thread CPU "
+                  "time). *best*: ratio of the best blocks; *median*: median of the per-round ratios. `chain_model` has zero placement angles and y offsets, "
                   "folded out of the plan; `random_model(N)` (random placements, coms, revolute and prismatic "
                   "joints) has none.\n",
                   "| " + " | ".join(cols) + " |", "|" + "---:|" * len(cols)]
@@ -593,11 +609,16 @@ def _time_table(rows) -> list:
     peers = [p for p in PEERS if p in rows[0]["times"]]
     cols = ["N"] + [f"{_peer_label(p)} µs" for p in peers] + [f"{n} µs" for n in names]
     cols += [f"{n} / pin" for n in names] if "pinocchio" in peers else []
-    lines = ["Every method and both peers alternate in short blocks over the same rounds on the same state "
-             "(thread CPU time): **µs** is the best block, **/ pin** the median of the per-round ratios to "
-             "`pin.aba`. `†`: a method too slow to share the rounds (one call > 2 budget / rounds), timed on its "
-             "own (best of several repeats; its ratio is best / best).", "",
-             "| " + " | ".join(cols) + " |", "|" + "---:|" * len(cols)]
+    who = f"Every method and {_peer_text(peers)}" if peers else \
+        "Every method (no peer installed: neither Pinocchio nor MuJoCo took part)"
+    text = (f"{who} alternate in short blocks over the same rounds on the same state (thread CPU time): "
+            "**µs** is the best block" + (", **/ pin** the median of the per-round ratios to `pin.aba`"
+                                          if "pinocchio" in peers else "") + ".")
+    if any(r.get("alone") for r in rows):
+        text += (" `†`: a method too slow to share the rounds (one call > 2 budget / rounds), timed on its "
+                 "own (best of several repeats" + ("; its ratio is best / best" if "pinocchio" in peers else "")
+                 + ").")
+    lines = [text, "", "| " + " | ".join(cols) + " |", "|" + "---:|" * len(cols)]
     slow = False
     for r in rows:
         t = r["times"]

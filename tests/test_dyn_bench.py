@@ -127,3 +127,25 @@ def test_quick_main_writes_results_with_sections(tmp_path, monkeypatch):
         assert (out / f"{name}.svg").stat().st_size > 1000
         assert (gallery / f"{name}.svg").read_bytes() == (out / f"{name}.svg").read_bytes()
     assert (out / "dynamics.json").exists()
+
+
+# --------------------------------------------------------------------------- no peers installed
+def test_without_peers_fast_methods_share_the_rounds(tmp_path, monkeypatch):
+    # Pinocchio and MuJoCo absent: the fast methods are still interleaved among themselves (no †),
+    # and the table headers don't claim peers that did not take part
+    monkeypatch.setattr(bench, "_peers", lambda m: {})
+    monkeypatch.setattr(bench, "_versions", lambda: {"Python": "x", "Pinocchio": "not installed",
+                                                     "MuJoCo": "not installed"})
+    rows = bench.run_single((2,), budget=2e-4, rounds=2)
+    r = rows[0]
+    assert not set(bench.PEERS) & set(r["times"])
+    assert "aba" not in r.get("alone", []) and "crba" not in r.get("alone", [])
+    assert {"aba", "crba", "projective"} <= set(r["times_median"])       # timed in the shared rounds
+    text = bench.write_single(rows, tmp_path)
+    row_aba = [ln for ln in text.splitlines() if ln.startswith("| 2 |")][0]
+    cells = row_aba.split("|")[1:-1]
+    header = [ln for ln in text.splitlines() if ln.startswith("| N |")][0].split("|")[1:-1]
+    for name in ("aba", "crba"):
+        assert "†" not in cells[header.index(f" {name} µs ")]
+    assert "both peers" not in text and "pin.aba" not in text and "mj_forward" not in text
+    assert "neither Pinocchio nor MuJoCo" in text
