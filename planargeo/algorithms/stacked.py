@@ -42,7 +42,8 @@ from .._validate import as_array
 from ..errors import ShapeError, TopologyError
 from ..joints import reaction_space_of
 from ..kinematics import _kinematics_scalar, check_state
-from ..subspaces import _effective_mobility, _percussion_space, joint_scale, reactive_acceleration_space
+from ..subspaces import (_checked_gram, _effective_mobility, _percussion_space, joint_scale,
+                         reactive_acceleration_space)
 from ..model import Model, _cycle_error, _find_cycle
 
 __all__ = ["adjacency", "trunk", "blocks", "reaction_basis", "quake_space", "StackedSolution", "stacked_solve",
@@ -204,7 +205,8 @@ def articulated_quantities(model: Model, data, tau):
         ``P = R U^T`` (3×3), ``points`` (the body frame origins, used for
         the reaction bases of :func:`quake_space`) and ``joint_points`` (N, 2) (the
         joint frames' origins, where the singularity rule of
-        :data:`planargeo.subspaces.COND_LIMIT` is measured).
+        :data:`planargeo.subspaces.COND_LIMIT` is measured), ``gram``: per body
+        ``(A s, sᵀAs)`` already checked by that rule (``None`` for a fixed joint).
 
     Raises
     ------
@@ -230,12 +232,14 @@ def articulated_quantities(model: Model, data, tau):
     offs = model.q_offsets
     S = data.S
     s = [S[..., :, offs[i]:offs[i + 1]] for i in range(N)]          # data.s(i)
-    T, P = [None] * N, [None] * N
+    T, P, G = [None] * N, [None] * N, [None] * N
     eye3 = np.eye(3)
     jp = np.asarray(data.origin)                   # the joints' points: where the singularity rule is measured
     for i in range(N - 1, -1, -1):
         Ai = A[i] = 0.5 * (A[i] + A[i].T)          # symmetric by construction; remove round-off
-        T[i] = _percussion_space(Ai, s[i], f"sᵀAs of joint {i}", point=jp[i])   # (9.19, 6.105)
+        if s[i].shape[-1]:   # (A s, sᵀAs) formed and checked once: for T here and the mobility in solve
+            G[i] = _checked_gram(Ai, s[i], f"sᵀAs of joint {i}", point=jp[i])
+        T[i] = _percussion_space(Ai, s[i], gram=G[i])                        # (9.19, 6.105)
         P[i] = eye3 - T[i] @ s[i].T                                         # R U^T (7.8)
         j = model.parents[i]
         if j >= 0:
@@ -243,7 +247,7 @@ def articulated_quantities(model: Model, data, tau):
             A[j] = A[j] + P[i] @ Ai
             d[j] = d[j] + T[i] @ Qi + P[i] @ (Ai @ kap[i] + d[i])
     return {"A": A, "d": d, "s": s, "T": T, "P": P, "points": list(np.asarray(data.pose)[:, :2]),
-            "joint_points": jp}
+            "joint_points": jp, "gram": G}
 
 
 def joint_conditions(model: Model, q) -> np.ndarray:
@@ -543,11 +547,12 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     # (9.39): a = L^T [S T^T A^-1 (T Q - d) + U R^T κ]
     # S T^T A^-1 = S (S^T A S)^-1 S^T: no inverse of A needed
     if N and all(k == 1 for k in ks):              # one-dof joints: all bodies in one call (sᵀAs checked above)
-        mobs = _effective_mobility(np.stack(art["A"]), np.stack(art["s"]), "sᵀAs of a joint",
-                                   point=art["joint_points"])
+        G = art["gram"]
+        mobs = _effective_mobility(np.stack(art["A"]), np.stack(art["s"]),
+                                   gram=(np.stack([g[0] for g in G]), np.stack([g[1] for g in G])))
     else:
-        mobs = [_effective_mobility(Ai, si, f"sᵀAs of joint {i}", point=art["joint_points"][i])
-                for i, (si, Ai) in enumerate(zip(art["s"], art["A"]))]
+        mobs = [_effective_mobility(Ai, si, gram=g)
+                for si, Ai, g in zip(art["s"], art["A"], art["gram"])]
     sol.StTAinv = _blockdiag(mobs, three, three)
     sol.mobs = np.reshape(mobs, (N, 3, 3))         # its 3×3 blocks (mobility_times)
     sol.parents = tuple(model.parents)
@@ -660,8 +665,9 @@ def tree_mobilities(model: Model, data, tau, art=None, *, siblings: bool = True)
         # s T^T I^-1 = s (s^T I s)^-1 s^T and U R^T = 1 - s T^T: no inverse of I
         # (point masses have a singular I); η = s T^T I^-1 (T Q - p)   (7.35)
         Pi = data.origin[i]                                             # the joint's point (the rule)
-        Ti = _percussion_space(Ii, si, f"sᵀIs of joint {i}", point=Pi)             # (6.36)
-        mob_i = _effective_mobility(Ii, si, f"sᵀIs of joint {i}", point=Pi)       # (6.93)
+        g = _checked_gram(Ii, si, f"sᵀIs of joint {i}", point=Pi) if si.shape[-1] else None   # formed once
+        Ti = _percussion_space(Ii, si, gram=g)                                  # (6.36)
+        mob_i = _effective_mobility(Ii, si, gram=g)                             # (6.93)
         eta = mob_i @ (Ti @ Qi - p[i])
         URt = one - si @ Ti.T
         X = one + URt @ M @ Ii
