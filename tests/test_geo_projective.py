@@ -400,3 +400,28 @@ def test_broadcasting_shapes():
     assert incidence(P, L).shape == (4, 5)
     assert np.allclose(incidence(P, L), 0)
     assert to_xy(meet(L, LINE_AT_INFINITY)).shape == (4, 5, 2)
+
+
+@pytest.mark.parametrize("fn", [join, meet])
+@pytest.mark.parametrize("scale", [1e-100, 1e-7, 1.0, 1e7, 1e100])   # ±100: squared norms out of range
+def test_scalar_fast_check_agrees_with_batch(fn, scale):
+    """The one-pair path (plain float norms) accepts and refuses exactly where the array path does.
+
+    ``a = [1, 0, 1]``, ``b = [cos θ, sin θ, 1]`` scaled by ``scale``: by hand ``|a| = |b| = √2``,
+    ``|a × b| = √(2 sin²θ + (1 - cos θ)²) ≈ √2 θ``, so ``κ ≈ √2 / θ`` and the default limit 1e13
+    refuses exactly ``θ < 1.41e-13``.
+    """
+    for theta in (1.0, 1e-6, 1e-12, 3e-14, 1e-16, 0.0):
+        a = scale * np.array([1.0, 0.0, 1.0])
+        b = scale * np.array([np.cos(theta), np.sin(theta), 1.0])
+        try:
+            one = fn(a, b)
+        except DegenerateGeometryError as e:
+            with pytest.raises(DegenerateGeometryError) as eb:
+                fn(a[None], b[None])
+            assert str(eb.value).replace(" at index (0,)", "") == str(e)
+            assert eb.value.cond == e.cond
+            assert theta < 1.41e-13
+        else:
+            np.testing.assert_array_equal(fn(a[None], b[None])[0], one)
+            assert theta > 1.42e-13
