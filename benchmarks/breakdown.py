@@ -50,6 +50,7 @@ if str(ROOT) not in sys.path:
 
 import planargeo._reference as ref  # noqa: E402  (the study's reference, one copy: also tests and planargeo.bench)
 from planargeo.algorithms.loops import SINGULAR_COND, constrained_dynamics_lagrange, loop_solve  # noqa: E402
+from planargeo.bench import _progress as log  # noqa: E402  (one progress-line helper)
 from planargeo.conics import pole  # noqa: E402
 from planargeo.errors import DegenerateGeometryError, SingularConfigurationError, SingularInertiaError  # noqa: E402
 from planargeo.inertia import percussion_axis, percussion_pole  # noqa: E402
@@ -58,12 +59,6 @@ from planargeo.projective import COND_LIMIT, from_xy, join, meet, signed_distanc
 from planargeo.scenes.chain import METHODS  # noqa: E402  (method name -> forward dynamics, one table)
 
 EPS, EPS_LD = ref.EPS, ref.EPS_LD
-_T0 = time.perf_counter()
-
-
-def log(msg: str) -> None:
-    """One progress line on stderr (flushed), with the wall time since the start."""
-    print(f"[breakdown {time.perf_counter() - _T0:6.1f} s] {msg}", file=sys.stderr, flush=True)
 
 MARKERS = {"aba": "o", "projective": "s", "mobility_split": "^", "stacked": "D", "crba": "x",
            "loop_solve": "v", "lagrange": "P"}
@@ -74,16 +69,11 @@ COLORS = {"aba": "C0", "projective": "C1", "mobility_split": "C2", "stacked": "C
 # --------------------------------------------------------------------------- one point
 def tree_point(model: Model, q, qd, tau, mode: str, **label) -> dict:
     """Every tree method against the reference at one state."""
-    H, rhs = ref.reference_system(model, q, qd, tau, mode=mode)
-    x = ref._gauss_solve(H, rhs)
-    qdd_ref = np.array([float(v) for v in x])
-    cond = ref.cond_spd(H)
+    qdd_ref, spread, cond = ref.reference_with_info(model, q, qd, tau, mode=mode)
     row = dict(label, cond=cond, ref=mode, errors={}, raised={})
     if mode == "longdouble":
-        # the reference's own error, estimated by eliminating in the reverse order (validated against
-        # the exact reference at N = 20: 1.0e-15 estimated, 1.3e-15 actual)
-        xr = ref._gauss_solve(H[::-1, ::-1].copy(), rhs[::-1].copy())[::-1]
-        row["ref_spread"] = ref.rel_err(np.array([float(v) for v in xr]), qdd_ref)
+        # the reference's own error, estimated by eliminating in the reverse order
+        row["ref_spread"] = spread
     if mode == "exact" and model.nq <= 20:
         row["ld_vs_exact"] = ref.rel_err(ref.reference_qdd(model, q, qd, tau), qdd_ref)
     for name, f in METHODS.items():

@@ -59,6 +59,7 @@ from planargeo.algorithms.articulated_mobility import articulated_mobility  # no
 from planargeo.algorithms.chain_splitting import forward_dynamics_mobility_split, mobility_split  # noqa: E402
 from planargeo.algorithms.projective import forward_dynamics_projective, projective_workspace  # noqa: E402
 from planargeo.algorithms.stacked import forward_dynamics_stacked, stacked_solve  # noqa: E402
+from planargeo.bench import _progress as log  # noqa: E402  (one progress-line helper)
 from planargeo.bench import ratio_stats, time_interleaved  # noqa: E402
 from planargeo.kinematics import kinematics  # noqa: E402
 from planargeo.model import chain_model  # noqa: E402
@@ -487,12 +488,6 @@ def _notes(res: dict) -> list:
     return out
 
 
-_T0 = time.perf_counter()
-
-
-def log(msg: str) -> None:
-    """One progress line on stderr (flushed), with the wall time since the start."""
-    print(f"[scene_cost {time.perf_counter() - _T0:6.1f} s] {msg}", file=sys.stderr, flush=True)
 
 
 def run(out_dir, quick: bool = False) -> dict:

@@ -54,6 +54,8 @@ from pathlib import Path
 
 import numpy as np
 
+# the reference lives in the package (not in the tests) so the accuracy columns exist for an installed package too
+from ._reference import reference_with_info, rel_err
 from .model import chain_model
 
 __all__ = ["add_arguments", "main", "time_call", "time_interleaved", "to_pinocchio", "to_mujoco",
@@ -323,18 +325,6 @@ def _peers(m):
 
 
 # --------------------------------------------------------------------------- reference
-def _reference_module():
-    """The breakdown study's independent reference, :mod:`planargeo._reference` (one copy).
-
-    It lives in the package (not in the tests) so the accuracy columns exist
-    for an installed package too; an import error is a packaging bug and is not
-    caught.
-    """
-    from . import _reference
-
-    return _reference
-
-
 def reference_qdd(model, q, qd, tau):
     """``(q̈_ref, info)`` from the independent reference of the breakdown study (:mod:`planargeo._reference`).
 
@@ -343,20 +333,9 @@ def reference_qdd(model, q, qd, tau):
     elimination order is reversed, an estimate of the reference's own error;
     exact: 0) and ``cond`` (2-norm condition number of H).
     """
-    ref = _reference_module()
     mode = "exact" if model.nq <= EXACT_MAX else "longdouble"
-    H, rhs = ref.reference_system(model, q, qd, tau, mode=mode)
-    x = np.array([float(v) for v in ref._gauss_solve(H, rhs)])
-    info = {"mode": mode, "spread": 0.0}
-    if mode == "longdouble":
-        xr = ref._gauss_solve(H[::-1, ::-1].copy(), rhs[::-1].copy())[::-1]
-        info["spread"] = ref.rel_err(np.array([float(v) for v in xr]), x)
-    info["cond"] = float(ref.cond_spd(H))
-    return x, info
-
-
-def _rel(x, ref) -> float:
-    return float(np.abs(np.asarray(x) - ref).max() / np.abs(ref).max())
+    x, spread, cond = reference_with_info(model, q, qd, tau, mode=mode)
+    return x, {"mode": mode, "spread": spread, "cond": float(cond)}
 
 
 # --------------------------------------------------------------------------- runs
@@ -476,10 +455,10 @@ def run_single(sizes, budget, rounds=40):
         pin_ref = outs.get("pinocchio")
         for name, out in outs.items():
             if qdd_ref is not None:
-                row["err_ref"][name] = _rel(out, qdd_ref)
-            row["err_crba"][name] = _rel(out, ref)
+                row["err_ref"][name] = rel_err(out, qdd_ref)
+            row["err_crba"][name] = rel_err(out, ref)
             if pin_ref is not None and name != "pinocchio":
-                row["err_pin"][name] = _rel(out, pin_ref)
+                row["err_pin"][name] = rel_err(out, pin_ref)
         # methods first, then the peers (the order of the tables)
         order = list(methods) + [p for p in PEERS if p in row["times"]]
         row["times"] = {k: row["times"][k] for k in order}
@@ -525,8 +504,8 @@ def run_batch(batch_sizes, budget, N=10, rounds=7):
                "ratio": {p: ratio_stats(t, "aba (vectorised)", f"{p} (loop)") for p in peers}}
         # agreement of the vectorised call with the dense reference and the peers
         a, b = forward_dynamics(m, q, qd, tau), forward_dynamics_crba(m, q, qd, tau)
-        row["err"] = _rel(a, b)
-        row["err_peer"] = {p: _rel(a, o) for p, o in outs.items()}
+        row["err"] = rel_err(a, b)
+        row["err_peer"] = {p: rel_err(a, o) for p, o in outs.items()}
         rows.append(row)
     return rows
 

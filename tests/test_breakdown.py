@@ -28,7 +28,7 @@ from planargeo.projective import (COND_LIMIT, direction, from_xy, join, meet,
 from planargeo.screws import inertia_matrix
 from planargeo.scenes.chain import METHODS  # method name -> forward dynamics, one table
 from planargeo._reference import (  # the study's reference: one copy, shared with the benchmarks
-    EPS, _gauss_solve, reference_system, reference_qdd, cond_spd, rel_err, graded_chain, state,
+    EPS, reference_system, reference_qdd, reference_with_info, cond_spd, rel_err, graded_chain, state,
     slider_crank_reference, folded_state, fr, cross_exact, matvec_exact, solve_exact, hom_err, cross_cond,
     matvec_cond, euclid_err, euclid_cond, distance_cond, distance_exact, decimal_err, pencil_pair,
     strip_pair, near_points, geo_inertia, pole_near_com, pole_far, line_near_infinity, line_near_com,
@@ -75,9 +75,7 @@ def test_long_chain_every_method_within_eps_cond():
     N = 200
     m = chain_model(N)
     q, qd, tau = state(N)
-    H, rhs = reference_system(m, q, qd, tau)
-    ref = np.array([float(v) for v in _gauss_solve(H, rhs)])
-    cond = cond_spd(H)
+    ref, _, cond = reference_with_info(m, q, qd, tau)
     assert 1e8 < cond < 1e10
     for name in ("aba", "projective", "mobility_split", "crba"):      # stacked: 2 s at N = 200, checked at N = 50
         err = rel_err(METHODS[name](m, q, qd, tau), ref)
@@ -91,9 +89,8 @@ def test_long_chain_every_method_within_eps_cond():
 def test_chain_50_stacked_within_eps_cond():
     m = chain_model(50)
     q, qd, tau = state(50)
-    H, rhs = reference_system(m, q, qd, tau)
-    ref = np.array([float(v) for v in _gauss_solve(H, rhs)])
-    assert rel_err(forward_dynamics_stacked(m, q, qd, tau), ref) <= 100 * EPS * cond_spd(H)
+    ref, _, cond = reference_with_info(m, q, qd, tau)
+    assert rel_err(forward_dynamics_stacked(m, q, qd, tau), ref) <= 100 * EPS * cond
 
 
 def _graded(k, reverse, joint="revolute", seed=1):
@@ -142,9 +139,7 @@ def test_long_chain_of_mixed_tiny_and_huge_masses_at_cond_1e12():
     # (ε cond = 1.1e-3); the long-double reference agrees with the exact one to 1e-17 at N = 20, k = 7
     m = alternating_chain(50, 7)
     q, qd, tau = state(50, 3)
-    H, rhs = reference_system(m, q, qd, tau)
-    x = np.array([float(v) for v in _gauss_solve(H, rhs)])
-    c = cond_spd(H)
+    x, _, c = reference_with_info(m, q, qd, tau)
     assert 1e12 < c < 1e13
     errs = {name: rel_err(f(m, q, qd, tau), x) for name, f in METHODS.items()}
     assert errs["aba"] < 100 * EPS
@@ -158,9 +153,7 @@ def test_long_chain_of_mixed_masses_dense_solve_refuses_past_its_threshold():
     # ratio 1e8 (cond ≈ 5e13): the dense solve names the singularity with the reference's cond; ABA still ~ε
     m = alternating_chain(50, 8)
     q, qd, tau = state(50, 3)
-    H, rhs = reference_system(m, q, qd, tau)
-    x = np.array([float(v) for v in _gauss_solve(H, rhs)])
-    c = cond_spd(H)
+    x, _, c = reference_with_info(m, q, qd, tau)
     with pytest.raises(SingularConfigurationError) as e:
         forward_dynamics_crba(m, q, qd, tau)
     assert 0.3 < e.value.cond / c < 3
