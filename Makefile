@@ -44,7 +44,7 @@ gallery: $(STAMP)
 	MPLBACKEND=Agg $(BIN)/planargeo gallery
 
 bench: $(STAMP)
-	MPLBACKEND=Agg $(BIN)/planargeo bench
+	MPLBACKEND=Agg $(BIN)/python benchmarks/run.py --out benchmarks/results --summary benchmarks/RESULTS.md --gallery gallery/benchmarks
 
 clean:
 	rm -rf $(VENV) build *.egg-info

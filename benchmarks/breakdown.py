@@ -48,14 +48,14 @@ ROOT = HERE.parent
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-import planargeo._reference as ref  # noqa: E402  (the study's reference, one copy: also tests and planargeo.bench)
+import reference as ref  # noqa: E402  (the study's reference, one copy: also tests and planargeo.bench)
 from planargeo.algorithms.loops import SINGULAR_COND, constrained_dynamics_lagrange, loop_solve  # noqa: E402
-from planargeo.bench import _progress as log  # noqa: E402  (one progress-line helper)
-from planargeo.conics import pole  # noqa: E402
+from bench import _progress as log  # noqa: E402  (one progress-line helper)
+from planargeo.geometry.conics import pole  # noqa: E402
 from planargeo.errors import DegenerateGeometryError, SingularConfigurationError, SingularInertiaError  # noqa: E402
-from planargeo.inertia import percussion_axis, percussion_pole  # noqa: E402
-from planargeo.model import Body, Joint, Model, chain_model, random_model  # noqa: E402
-from planargeo.projective import COND_LIMIT, from_xy, join, meet, signed_distance, to_xy  # noqa: E402
+from planargeo.screws.inertia import percussion_axis, percussion_pole  # noqa: E402
+from planargeo.mechanics.model import Body, Joint, Model, chain_model, random_model  # noqa: E402
+from planargeo.geometry.projective import COND_LIMIT, from_xy, join, meet, signed_distance, to_xy  # noqa: E402
 from planargeo.scenes.chain import METHODS  # noqa: E402  (method name -> forward dynamics, one table)
 
 EPS, EPS_LD = ref.EPS, ref.EPS_LD
@@ -353,7 +353,7 @@ def knob_geometry() -> dict:
     rng = np.random.default_rng(1000)
     # [exact zero, a point from the bare cross product, a point at the default COND_LIMIT]
     same = {"identical": [0, 0, 0], "scaled by 2": [0, 0, 0], "scaled by 3": [0, 0, 0], "normalised": [0, 0, 0]}
-    from planargeo.projective import normalize_line
+    from planargeo.geometry.projective import normalize_line
     for _ in range(200):
         l = rng.normal(size=3)
         for name, m in (("identical", l.copy()), ("scaled by 2", 2 * l), ("scaled by 3", 3 * l),
@@ -459,7 +459,7 @@ def _n_samples(g: dict) -> int:
 
 def geometry_markdown(g: dict) -> list:
     L = ["## (f) Geometry layer: near-parallel lines, points near infinity", "",
-         "The projective layer (`planargeo.projective`, `conics`, `inertia`) against **exact rational arithmetic on "
+         "The projective layer (`planargeo.geometry.projective`, `conics`, `inertia`) against **exact rational arithmetic on "
          "the same float inputs** (`cross_exact`, `matvec_exact`, `solve_exact` in `planargeo/_reference.py`): the "
          "reference answers the question for the numbers given, so any difference is the package's rounding. "
          f"{_n_samples(g)} random configurations per row (random positions and orientations; masses and coordinates "

@@ -13,7 +13,7 @@ Two systems, each integrated with every scipy method (``RK23``, ``RK45``, ``DOP8
 a. a free conservative chain (``chain_model(5)``, gravity, ``τ = 0``) released from a bent,
    moving state, ``t_end = 3 s`` (full mode);
 b. the slider-crank of thesis 9.6 (scene ``slider-crank``, free crank, ``g = 9.81``) through
-   :func:`planargeo.simulate_loops.simulate_loops` with ``stabilization="none"`` (the plain ODE
+   :func:`planargeo.simulate.loops.simulate_loops` with ``stabilization="none"`` (the plain ODE
    ``q̈ = f(q, q̇)`` of the constrained algorithm, so that the error is the integrator's alone).
 
 For each run: the error at ``t_end``, ``‖y - y_ref‖∞`` over the state ``y = (q, q̇)`` (rad,
@@ -28,7 +28,7 @@ of the loop algorithm).  Their disagreement is reported as the reference's own e
 Drift
 -----
 The slider-crank over 10 s (full mode; ``DOP853``, ``rtol = 1e-5``) with every stabilisation
-:func:`~planargeo.simulate_loops.simulate_loops` offers: ``none``, ``baumgarte`` (default
+:func:`~planargeo.simulate.loops.simulate_loops` offers: ``none``, ``baumgarte`` (default
 ``α = β = 5``/s and a stiffer ``α = β = 20``/s), ``projection`` (trigger 1e-10) and ``both``:
 relative energy drift ``|E(t) - E(0)| / max(|E(0)|, max T)`` (energy is conserved: free crank,
 no drive, no friction), position residual ``max |φ(q)|`` and velocity residual
@@ -57,9 +57,9 @@ if str(ROOT) not in sys.path:
 
 from planargeo import scenes  # noqa: E402
 from planargeo.algorithms.loops import constrained_dynamics_lagrange  # noqa: E402
-from planargeo.model import chain_model  # noqa: E402
-from planargeo.simulate import simulate  # noqa: E402
-from planargeo.simulate_loops import simulate_loops  # noqa: E402
+from planargeo.mechanics.model import chain_model  # noqa: E402
+from planargeo.simulate.integrate import simulate  # noqa: E402
+from planargeo.simulate.loops import simulate_loops  # noqa: E402
 
 METHODS = ("RK23", "RK45", "DOP853", "Radau", "BDF", "LSODA", "RK4")
 COLORS = {"RK45": "C0", "DOP853": "C1", "Radau": "C2", "RK4": "C3", "RK23": "C4", "BDF": "C5", "LSODA": "C6"}

@@ -2,7 +2,7 @@
 import argparse
 import sys
 
-from planargeo import bench
+import bench
 
 if __name__ == "__main__":
     p = argparse.ArgumentParser(description=bench.__doc__.splitlines()[0])

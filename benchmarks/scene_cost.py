@@ -59,10 +59,10 @@ from planargeo.algorithms.articulated_mobility import articulated_mobility  # no
 from planargeo.algorithms.chain_splitting import forward_dynamics_mobility_split, mobility_split  # noqa: E402
 from planargeo.algorithms.projective import forward_dynamics_projective, projective_workspace  # noqa: E402
 from planargeo.algorithms.stacked import forward_dynamics_stacked, stacked_solve  # noqa: E402
-from planargeo.bench import _progress as log  # noqa: E402  (one progress-line helper)
-from planargeo.bench import ratio_stats, time_interleaved  # noqa: E402
-from planargeo.kinematics import kinematics  # noqa: E402
-from planargeo.model import chain_model  # noqa: E402
+from bench import _progress as log  # noqa: E402  (one progress-line helper)
+from bench import ratio_stats, time_interleaved  # noqa: E402
+from planargeo.mechanics.kinematics import kinematics  # noqa: E402
+from planargeo.mechanics.model import chain_model  # noqa: E402
 from planargeo.scenes import car as car_scene  # noqa: E402
 from planargeo.scenes import chain as chain_scene  # noqa: E402
 from planargeo.scenes import trees as tree_scene  # noqa: E402
@@ -182,7 +182,7 @@ def chain_explorer_rnea_compute(ex, v) -> dict:
     pass (:func:`newton_euler`) give ``v``, ``κ``, ``p``, ``a``, ``f`` and the energies.
     """
     from planargeo.algorithms.rnea import newton_euler
-    from planargeo.simulate import energy
+    from planargeo.simulate.integrate import energy
 
     model, q, qd, tau = ex.initial_state(v)
     w = newton_euler(model, q, qd, forward_dynamics(model, q, qd, tau))

@@ -19,24 +19,24 @@ imported on demand; importing ``planargeo`` never imports matplotlib.
 """
 from __future__ import annotations
 
-from . import errors
-from .errors import (DegenerateGeometryError, InputError, InvalidPolygonError, NonFiniteError,
+from planargeo import errors
+from planargeo.errors import (DegenerateGeometryError, InputError, InvalidPolygonError, NonFiniteError,
                      PlanargeoError, SceneError, ShapeError, SingularConfigurationError,
                      SingularError, SingularInertiaError, TopologyError)
-from .projective import (from_standard, from_xy, incidence, is_ideal, join, meet, normalize,
+from planargeo.geometry.projective import (from_standard, from_xy, incidence, is_ideal, join, meet, normalize,
                          pencil, signed_distance, to_standard, to_xy)
-from .conics import (centre, classify, correlation, decompose_line, decompose_point,
+from planargeo.geometry.conics import (centre, classify, correlation, decompose_line, decompose_point,
                      drawable_conic, polar, polar_construction_exterior,
                      polar_construction_interior, pole, tangents_from_point)
-from .geometry import Conic, Line, Point
-from .screws import (X_P, X_P_inv_T, Twist, Wrench, add_twists, add_wrenches, bias_force, crf,
+from planargeo.geometry.elements import Conic, Line, Point
+from planargeo.screws.twists import (X_P, X_P_inv_T, Twist, Wrench, add_twists, add_wrenches, bias_force, crf,
                      crm, inertia_at, kappa, kinetic_energy, momentum, power, rot)
-from .inertia import Inertia, percussion_axis, percussion_pole
-from . import joints
-from .joints import fixed, plane, prismatic, revolute, revolute_prismatic, twin_prismatic
-from .subspaces import Decomposition, percussion_space, reactive_acceleration_space
-from .model import Body, Joint, Model
-from . import scenes
+from planargeo.screws.inertia import Inertia, percussion_axis, percussion_pole
+from planargeo.mechanics import joints
+from planargeo.mechanics.joints import fixed, plane, prismatic, revolute, revolute_prismatic, twin_prismatic
+from planargeo.mechanics.subspaces import Decomposition, percussion_space, reactive_acceleration_space
+from planargeo.mechanics.model import Body, Joint, Model
+from planargeo import scenes
 
 __version__ = "0.1.0"
 

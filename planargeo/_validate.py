@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .errors import InputError, NonFiniteError, ShapeError, SingularInertiaError
+from planargeo.errors import InputError, NonFiniteError, ShapeError, SingularInertiaError
 
 __all__ = ["as_array", "as_vec3", "as_mat3", "as_xy", "as_scalar", "check_symmetric",
            "check_positive_definite", "check_positive_semidefinite", "check_positive", "PSD_RTOL"]

@@ -14,8 +14,8 @@ import sys
 # name -> (module, one-line help)
 COMMANDS: dict[str, tuple[str, str]] = {
     "report": ("planargeo.report", "print a scene's parameters, state and solved quantities"),
-    "gallery": ("planargeo.draw.gallery", "regenerate (or --check) the SVG gallery"),
-    "bench": ("planargeo.bench", "run the benchmarks and write tables and charts"),
+    "gallery": ("planargeo.gallery.build", "regenerate (or --check) the SVG gallery"),
+    "bench": ("planargeo.run_benchmarks", "run the benchmarks and write tables and charts"),
 }
 
 
@@ -31,7 +31,7 @@ def _available() -> dict[str, tuple[str, str]]:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from . import __version__
+    from planargeo import __version__
 
     parser = argparse.ArgumentParser(
         prog="planargeo",

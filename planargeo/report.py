@@ -90,7 +90,7 @@ def parse_sets(sets: list[str], defaults: dict[str, Any] | None = None) -> dict[
         ...
     planargeo.errors.InputError: --set expects NAME=VALUE, got 'n'
     """
-    from .errors import InputError
+    from planargeo.errors import InputError
 
     out: dict[str, Any] = {}
     for item in sets:
@@ -254,8 +254,8 @@ def _error(msg: str, code: int) -> int:
 
 def main(args: argparse.Namespace) -> int:
     """Run ``planargeo report``; returns the exit status."""
-    from . import scenes
-    from .errors import InputError, PlanargeoError
+    from planargeo import scenes
+    from planargeo.errors import InputError, PlanargeoError
 
     if args.list:
         listing = {}
@@ -328,7 +328,7 @@ def _build_quietly(scenes, name: str, params: dict[str, Any]):
 
 def _culprits(scenes, name: str, params: dict[str, Any]) -> list[str]:
     """The given parameters that, each put back to its default, make the results finite."""
-    from .errors import PlanargeoError
+    from planargeo.errors import PlanargeoError
 
     out = []
     for k in params:

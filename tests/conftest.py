@@ -1,4 +1,6 @@
 import os
+import sys
+from pathlib import Path
 
 import matplotlib
 import numpy as np
@@ -6,6 +8,10 @@ import pytest
 from hypothesis import HealthCheck, settings
 
 matplotlib.use("Agg")
+
+# The benchmark suite (benchmarks/) is not part of the installed package; its independent
+# reference (benchmarks/reference.py) and harness (benchmarks/bench.py) are imported from there.
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 
 settings.register_profile(
     "ci", max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow]

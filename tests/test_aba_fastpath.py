@@ -22,7 +22,7 @@ from planargeo.algorithms import aba
 from planargeo.algorithms.aba import articulated_body, forward_dynamics
 from planargeo.algorithms.crba import forward_dynamics_crba
 from planargeo.errors import NonFiniteError, ShapeError, SingularConfigurationError
-from planargeo.model import Body, Joint, Model, chain_model, random_model
+from planargeo.mechanics.model import Body, Joint, Model, chain_model, random_model
 
 KINDS = [("revolute",), ("prismatic",), ("revolute", "prismatic"), ("revolute", "prismatic", "fixed")]
 

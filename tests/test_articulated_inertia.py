@@ -10,10 +10,10 @@ from planargeo.algorithms.articulated_inertia import articulated_inertia, articu
 from planargeo.algorithms.crba import forward_dynamics_crba
 from planargeo.algorithms.rnea import newton_euler
 from planargeo.errors import SingularConfigurationError, ShapeError
-from planargeo.kinematics import kinematics
-from planargeo.model import Body, Joint, Model, random_model
-from planargeo.screws import inertia_matrix
-from planargeo.subspaces import COND_LIMIT
+from planargeo.mechanics.kinematics import kinematics
+from planargeo.mechanics.model import Body, Joint, Model, random_model
+from planargeo.screws.twists import inertia_matrix
+from planargeo.mechanics.subspaces import COND_LIMIT
 from test_articulated_reference import dense_articulated, random_state
 
 KINDS = ("revolute", "prismatic")

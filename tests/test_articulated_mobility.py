@@ -8,9 +8,9 @@ from hypothesis import strategies as st
 
 from planargeo.algorithms.articulated_mobility import articulated_mobility, mobility_recursion
 from planargeo.errors import TopologyError
-from planargeo.kinematics import kinematics
-from planargeo.model import Body, Joint, Model, random_model
-from planargeo.screws import inertia_matrix
+from planargeo.mechanics.kinematics import kinematics
+from planargeo.mechanics.model import Body, Joint, Model, random_model
+from planargeo.screws.twists import inertia_matrix
 from test_articulated_reference import dense_mobility, random_state
 
 ALL_KINDS = ("revolute", "prismatic", "revolute_prismatic", "plane", "fixed")

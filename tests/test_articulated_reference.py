@@ -23,9 +23,9 @@ import pytest
 
 from planargeo.algorithms.crba import forward_dynamics_crba, mass_matrix
 from planargeo.algorithms.rnea import newton_euler
-from planargeo.kinematics import kinematics
-from planargeo.model import Body, Joint, Model, random_model
-from planargeo.screws import inertia_matrix
+from planargeo.mechanics.kinematics import kinematics
+from planargeo.mechanics.model import Body, Joint, Model, random_model
+from planargeo.screws.twists import inertia_matrix
 
 EPS = np.finfo(float).eps
 

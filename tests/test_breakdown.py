@@ -19,15 +19,15 @@ from planargeo.algorithms.crba import forward_dynamics_crba
 from planargeo.algorithms.loops import SINGULAR_COND, constrained_dynamics_lagrange, loop_solve
 from planargeo.algorithms.projective import forward_dynamics_projective
 from planargeo.algorithms.stacked import forward_dynamics_stacked
-from planargeo.conics import pole
+from planargeo.geometry.conics import pole
 from planargeo.errors import DegenerateGeometryError, SingularConfigurationError, SingularInertiaError
-from planargeo.inertia import percussion_axis, percussion_pole
-from planargeo.model import chain_model
-from planargeo.projective import (COND_LIMIT, direction, from_xy, join, meet,
+from planargeo.screws.inertia import percussion_axis, percussion_pole
+from planargeo.mechanics.model import chain_model
+from planargeo.geometry.projective import (COND_LIMIT, direction, from_xy, join, meet,
                                   normalize_line, signed_distance, to_xy)
-from planargeo.screws import inertia_matrix
+from planargeo.screws.twists import inertia_matrix
 from planargeo.scenes.chain import METHODS  # method name -> forward dynamics, one table
-from planargeo._reference import (  # the study's reference: one copy, shared with the benchmarks
+from reference import (  # the study's reference: one copy, shared with the benchmarks
     EPS, reference_system, reference_qdd, reference_with_info, cond_spd, rel_err, graded_chain, state,
     slider_crank_reference, folded_state, fr, cross_exact, matvec_exact, solve_exact, hom_err, cross_cond,
     matvec_cond, euclid_err, euclid_cond, distance_cond, distance_exact, decimal_err, pencil_pair,

@@ -11,8 +11,8 @@ from planargeo.algorithms.chain_splitting import (
 from planargeo.algorithms.crba import forward_dynamics_crba
 from planargeo.algorithms.rnea import newton_euler
 from planargeo.errors import SingularConfigurationError, TopologyError
-from planargeo.model import Body, Joint, Model, random_model
-from planargeo.screws import inertia_matrix
+from planargeo.mechanics.model import Body, Joint, Model, random_model
+from planargeo.screws.twists import inertia_matrix
 from test_articulated_reference import random_state, rtol_for
 
 ALL_KINDS = ("revolute", "prismatic", "revolute_prismatic", "plane", "fixed")

@@ -234,7 +234,7 @@ def test_folded_slider_crank_in_process_error_and_independent_condition():
     from planargeo.algorithms.crba import mass_matrix
     from planargeo.algorithms.loops import SINGULAR_COND
     from planargeo.scenes.slider_crank import slider_crank_model
-    from planargeo.simulate_loops import closure_jacobian
+    from planargeo.simulate.loops import closure_jacobian
 
     with pytest.raises(SingularConfigurationError, match="piston pin on the crank pivot") as e:
         scenes.build("slider-crank", l=R_, psi=0.0)

@@ -17,7 +17,7 @@ from planargeo.draw.artists import (ConicArtist, LineArtist, PointArtist, clip_l
                                     conic_geometry, plot_conic, plot_inertia, plot_line,
                                     plot_point)
 from planargeo.errors import InputError, NonFiniteError, ShapeError  # noqa: E402
-from planargeo.screws import inertia_matrix  # noqa: E402
+from planargeo.screws.twists import inertia_matrix  # noqa: E402
 
 BOX = (-3.0, 4.0, -2.0, 5.0)
 finite = st.floats(-10, 10, allow_nan=False, allow_infinity=False)
@@ -315,8 +315,8 @@ def test_update_does_not_rebuild_conic_path(ax):
 # ----------------------------------------------------------------- cross-checks with GEO / SCREW
 @given(st.lists(st.floats(-3, 3), min_size=6, max_size=6))
 def test_conic_kind_agrees_with_geo_classify(c):
-    """An independent classifier (planargeo.conics.classify) agrees with the drawing's."""
-    from planargeo.conics import classify
+    """An independent classifier (planargeo.geometry.conics.classify) agrees with the drawing's."""
+    from planargeo.geometry.conics import classify
 
     a, b, cc, d, e, f = c
     C = np.array([[a, b, d], [b, cc, e], [d, e, f]])
@@ -337,7 +337,7 @@ def test_conic_kind_agrees_with_geo_classify(c):
 
 def test_inertia_circle_is_screws_drawable_conic(ax, rng):
     """The drawn inertia curve lies on SCREW's drawable_conic (the radius-of-gyration circle)."""
-    from planargeo.inertia import drawable_conic
+    from planargeo.screws.inertia import drawable_conic
 
     for _ in range(5):
         I = inertia_matrix(rng.uniform(0.5, 3), rng.uniform(-2, 2, 2), rng.uniform(0.1, 2))
@@ -347,7 +347,7 @@ def test_inertia_circle_is_screws_drawable_conic(ax, rng):
 
 def test_imaginary_conic_drawn_as_geo_drawable_conic(ax, rng):
     """Any definite conic (e.g. an articulated inertia) is drawn as conics.drawable_conic."""
-    from planargeo.conics import drawable_conic
+    from planargeo.geometry.conics import drawable_conic
 
     for _ in range(5):
         B = rng.normal(size=(3, 3))

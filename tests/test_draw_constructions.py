@@ -16,7 +16,7 @@ from planargeo.draw.constructions import (draw_acceleration_step, draw_newton_eu
                                           draw_polar_interior, draw_power, draw_twist_sum,
                                           draw_velocity_step, draw_wrench_sum, line_conic_points)
 from planargeo.draw.mechanism import draw_joint_split, draw_model, link_polygon  # noqa: E402
-from planargeo.screws import inertia_matrix, unit_rotation, unit_translation  # noqa: E402
+from planargeo.screws.twists import inertia_matrix, unit_rotation, unit_translation  # noqa: E402
 
 
 @pytest.fixture
@@ -266,8 +266,8 @@ def test_newton_euler_one_body(ax):
 
 def test_joint_split_and_model_drawing(ax):
     from planargeo.algorithms.rnea import newton_euler
-    from planargeo.joints import revolute
-    from planargeo.model import chain_model
+    from planargeo.mechanics.joints import revolute
+    from planargeo.mechanics.model import chain_model
 
     m = chain_model(3)
     w = newton_euler(m, [0.3, 0.4, -0.5], [1.0, 0.5, -0.2], [0.1, 0.2, 0.3])
@@ -287,7 +287,7 @@ def test_joint_split_and_model_drawing(ax):
 def test_chain_kinematics_figures_match_4_48_and_4_54():
     """The state drawn in Figs 4.7/4.8 obeys the thesis's closed forms (4.48, 4.49, 4.53, 4.54)."""
     from planargeo.algorithms.rnea import newton_euler
-    from planargeo.draw.figures.ch4 import Q47, QD47, QDD47, _chain3
+    from planargeo.gallery.figures.ch4 import Q47, QD47, QDD47, _chain3
 
     w = newton_euler(_chain3(), Q47, QD47, QDD47)
     i = 2
@@ -307,8 +307,8 @@ def test_joint_split_arrows_slide_off_the_bodies(ax):
     """With ``avoid`` every arrow stays on its own line and clear of the bodies (hand geometry)."""
     from shapely.geometry import LineString
 
-    from planargeo.joints import revolute
-    from planargeo.screws import inertia_matrix
+    from planargeo.mechanics.joints import revolute
+    from planargeo.screws.twists import inertia_matrix
 
     j = revolute([0.0, 0.0])
     A = inertia_matrix(2.0, [1.0, 0.0], 0.3)

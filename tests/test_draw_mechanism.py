@@ -11,7 +11,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 from planargeo.draw.mechanism import draw_model, slider_guide  # noqa: E402
-from planargeo.kinematics import kinematics  # noqa: E402
+from planargeo.mechanics.kinematics import kinematics  # noqa: E402
 from planargeo.scenes import build  # noqa: E402
 
 
@@ -57,7 +57,7 @@ def test_pin_contacts_drawn_at_the_tips(ax):
 
 
 def test_prismatic_slider_follows_the_joint_axis_not_the_body_angle(ax):
-    from planargeo.model import Body, Joint, Model
+    from planargeo.mechanics.model import Body, Joint, Model
 
     m = Model([Body(1.0, (0.3, 0.0), 0.1)], [Joint("revolute_prismatic", (0.0, 0.0, 0.5))], [-1])
     d = kinematics(m, [0.4, 1.2])                    # slide 0.4 along 0.5 rad, then turn by 1.2

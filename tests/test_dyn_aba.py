@@ -13,7 +13,7 @@ from planargeo.algorithms.aba import articulated_body, forward_dynamics
 from planargeo.algorithms.crba import bias_forces, forward_dynamics_crba, mass_matrix
 from planargeo.algorithms.rnea import inverse_dynamics, newton_euler
 from planargeo.errors import SingularConfigurationError
-from planargeo.model import JOINT_DOFS, Body, Joint, Model, chain_model, random_model
+from planargeo.mechanics.model import JOINT_DOFS, Body, Joint, Model, chain_model, random_model
 
 ALL_KINDS = tuple(JOINT_DOFS)
 G = 9.81

@@ -4,9 +4,9 @@ import argparse
 import numpy as np
 import pytest
 
-from planargeo import bench
+import bench
 from planargeo.algorithms.crba import forward_dynamics_crba
-from planargeo.model import chain_model, random_model
+from planargeo.mechanics.model import chain_model, random_model
 
 
 def test_tables_and_charts(tmp_path):

@@ -9,8 +9,8 @@ import matplotlib
 matplotlib.use("Agg")
 import pytest  # noqa: E402
 
-from planargeo.draw import gallery  # noqa: E402
-from planargeo.draw.figures import REGISTRY, load_all  # noqa: E402
+from planargeo.gallery import build as gallery  # noqa: E402
+from planargeo.gallery.figures import REGISTRY, load_all  # noqa: E402
 
 SUBSET = ("fig4_3", "fig5_6")
 
@@ -29,7 +29,7 @@ def small_registry(monkeypatch):
     """Restrict the gallery to two figures (fast mutation tests)."""
     specs = load_all()
     sub = {k: specs[k] for k in SUBSET}
-    monkeypatch.setattr("planargeo.draw.figures.load_all", lambda: dict(sub))
+    monkeypatch.setattr("planargeo.gallery.figures.load_all", lambda: dict(sub))
     return sub
 
 
@@ -151,7 +151,7 @@ def test_readme_without_benchmarks_has_no_benchmark_section(tmp_path, small_regi
 
 def test_load_all_fails_loudly_on_a_broken_module(monkeypatch):
     """A figure module that cannot be imported is an error, not a silently missing figure."""
-    from planargeo.draw import figures
+    from planargeo.gallery import figures
 
     monkeypatch.setattr(figures, "MODULES", figures.MODULES + ("no_such_chapter",))
     with pytest.raises(ModuleNotFoundError, match="no_such_chapter"):

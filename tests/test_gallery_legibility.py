@@ -17,7 +17,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import pytest  # noqa: E402
 from matplotlib.text import Text  # noqa: E402
 
-from planargeo.draw.figures import load_all  # noqa: E402
+from planargeo.gallery.figures import load_all  # noqa: E402
 from planargeo.draw.style import rc_context  # noqa: E402
 
 TOL = 1.0  # pixels

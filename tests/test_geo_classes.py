@@ -1,12 +1,12 @@
-"""Tests of the thin classes Point, Line, Conic (planargeo.geometry)."""
+"""Tests of the thin classes Point, Line, Conic (planargeo.geometry.elements)."""
 import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
 from planargeo.errors import DegenerateGeometryError, InputError, NonFiniteError, ShapeError
-from planargeo.geometry import Conic, Line, Point
-from planargeo.screws import inertia_matrix
+from planargeo.geometry.elements import Conic, Line, Point
+from planargeo.screws.twists import inertia_matrix
 
 coord = st.floats(-10, 10).map(lambda x: round(x, 3))
 

@@ -1,4 +1,4 @@
-"""Tests of planargeo.conics against hand-derived references (thesis 5.35-5.46, 10.2.3)."""
+"""Tests of planargeo.geometry.conics against hand-derived references (thesis 5.35-5.46, 10.2.3)."""
 import warnings
 
 import numpy as np
@@ -6,7 +6,7 @@ import pytest
 from hypothesis import assume, given
 from hypothesis import strategies as st
 
-from planargeo.conics import (
+from planargeo.geometry.conics import (
     affine_frame, centre, classify, conic_circle, conic_ellipse, conic_from_affine,
     conic_from_coefficients, conic_hyperbola, conic_parabola, conic_residual, correlation,
     decompose_line, decompose_line_special, decompose_point, decompose_point_special,
@@ -14,11 +14,11 @@ from planargeo.conics import (
     polar_construction_interior, pole, special_base, tangents_from_point,
 )
 from planargeo.errors import DegenerateGeometryError, InputError, NonFiniteError, ShapeError
-from planargeo.projective import (
+from planargeo.geometry.projective import (
     LINE_AT_INFINITY, direction, from_direction, from_xy, incidence, is_ideal, join,
     line_direction, meet, to_xy,
 )
-from planargeo.screws import inertia_matrix
+from planargeo.screws.twists import inertia_matrix
 
 coord = st.floats(-5, 5).map(lambda x: round(x, 4))
 xy = st.tuples(coord, coord).map(np.array)

@@ -4,10 +4,10 @@ import warnings
 import numpy as np
 import pytest
 
-from planargeo import conics as K
-from planargeo import projective as P
-from planargeo.geometry import Conic, Line, Point
-from planargeo.screws import inertia_matrix
+from planargeo.geometry import conics as K
+from planargeo.geometry import projective as P
+from planargeo.geometry.elements import Conic, Line, Point
+from planargeo.screws.twists import inertia_matrix
 
 IDEAL = P.from_direction([1.0, 0.0])            # the point at infinity along x
 FINITE = P.from_xy([0.5, -0.25])

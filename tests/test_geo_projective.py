@@ -1,4 +1,4 @@
-"""Tests of planargeo.projective against hand-derived references (thesis 5.1-5.34, 5.47-5.60)."""
+"""Tests of planargeo.geometry.projective against hand-derived references (thesis 5.1-5.34, 5.47-5.60)."""
 import warnings
 
 import numpy as np
@@ -7,7 +7,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from planargeo.errors import DegenerateGeometryError, NonFiniteError, ShapeError, InputError
-from planargeo.projective import (
+from planargeo.geometry.projective import (
     COND_LIMIT, LINE_AT_INFINITY, T_STD, cross_cond, conic_from_standard, conic_to_standard, direction, foot_point,
     from_direction, from_standard, from_xy, incidence, is_at_infinity, is_ideal, join,
     line_direction, line_through_point_direction, meet, normalize, normalize_line,
@@ -104,7 +104,7 @@ def test_normalize_requires_kind():
 
 def test_line_at_infinity_keeps_the_couples_sense_everywhere():
     # one rule for the whole package: a line at infinity is a couple, its sign is the couple's sense
-    from planargeo.screws import Wrench, add_wrenches
+    from planargeo.screws.twists import Wrench, add_wrenches
     assert np.array_equal(normalize_line([0.0, 0.0, -3.0]), [0.0, 0.0, -1.0])
     assert np.array_equal(normalize_line([0.0, 0.0, 2.0]), [0.0, 0.0, 1.0])
     cw = add_wrenches(Wrench.couple(-2.0), Wrench.force([0.0, 0.0], [1.0, 0.0]))
@@ -114,7 +114,7 @@ def test_line_at_infinity_keeps_the_couples_sense_everywhere():
 
 
 def test_screws_pole_xy_is_to_xy():
-    from planargeo.screws import pole_xy
+    from planargeo.screws.twists import pole_xy
     P = np.array([[2.0, -1.0, 1.0], [4.0, -2.0, 2.0], [1.0, 0.0, 0.0], [0.0, 3.0, -3.0]])
     expected = np.array([[1.0, 2.0], [1.0, 2.0], [np.nan, np.nan], [1.0, 0.0]])   # (x, y) = (-p1/w, p0/w)
     np.testing.assert_array_equal(pole_xy(P), expected)

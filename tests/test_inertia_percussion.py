@@ -5,10 +5,10 @@ from hypothesis import assume, given
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
-from planargeo.inertia import (
+from planargeo.screws.inertia import (
     Inertia, centre_of_mass, drawable_conic, mobility, percussion_axis, percussion_pole, radius_of_gyration,
 )
-from planargeo.screws import X_P, crf, inertia_matrix
+from planargeo.screws.twists import X_P, crf, inertia_matrix
 
 coord = st.floats(-10, 10, allow_nan=False)
 xy = arrays(float, 2, elements=coord)
@@ -185,7 +185,7 @@ def test_batched_functions():
 
 
 def test_geometry_classes_when_available():
-    geometry = pytest.importorskip("planargeo.geometry")
+    geometry = pytest.importorskip("planargeo.geometry.elements")
     I = Inertia.from_mass(2.0, [1.0, 0.0], radius_of_gyration=0.5)
     L = I.percussion_axis([0.0, 0.0, 1.0])
     assert isinstance(L, geometry.Line)
@@ -195,7 +195,7 @@ def test_geometry_classes_when_available():
 
 
 def test_drawable_conic_matches_geo_circle():
-    geometry = pytest.importorskip("planargeo.geometry")
+    geometry = pytest.importorskip("planargeo.geometry.elements")
     I = Inertia.from_mass(3.0, [1.5, -0.5], radius_of_gyration=0.8)
     C = I.drawable_conic().matrix
     ref = geometry.Conic.circle((1.5, -0.5), 0.8).matrix

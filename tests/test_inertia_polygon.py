@@ -8,8 +8,8 @@ from shapely.geometry import LineString, MultiPolygon, Point, Polygon, box
 from shapely.ops import unary_union
 
 from planargeo.errors import InputError, InvalidPolygonError, NonFiniteError, ShapeError, SingularInertiaError
-from planargeo.inertia import Inertia, polygon_moments
-from planargeo.screws import inertia_matrix
+from planargeo.screws.inertia import Inertia, polygon_moments
+from planargeo.screws.twists import inertia_matrix
 
 coord = st.floats(-20, 20, allow_nan=False)
 

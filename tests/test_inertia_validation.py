@@ -8,8 +8,8 @@ import pytest
 
 import planargeo
 from planargeo.errors import InputError, SingularInertiaError
-from planargeo.inertia import Inertia, drawable_conic, percussion_axis, percussion_pole
-from planargeo.screws import inertia_matrix
+from planargeo.screws.inertia import Inertia, drawable_conic, percussion_axis, percussion_pole
+from planargeo.screws.twists import inertia_matrix
 
 NONSYM = np.array([[1.0, 0.5, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
 INDEF = np.diag([1.0, 1.0, -1.0])
@@ -80,7 +80,7 @@ def test_inertia_class_still_validates():
 
 
 def test_mobility_rejects_indefinite_and_singular():
-    from planargeo.inertia import mobility
+    from planargeo.screws.inertia import mobility
     with pytest.raises(SingularInertiaError, match="inertia must be positive definite, got smallest eigenvalue -1"):
         mobility(INDEF)
     with pytest.raises(SingularInertiaError, match="inertia must be positive definite"):
@@ -123,8 +123,8 @@ def test_rigid_structure_survives_frame_changes_and_sums():
         Inertia(1e-12 * np.diag([1.0, 1.001, 1.0]))
 
 
-@pytest.mark.parametrize("fn", [planargeo.inertia.centre_of_mass, planargeo.inertia.rotational_inertia,
-                                planargeo.inertia.radius_of_gyration])
+@pytest.mark.parametrize("fn", [planargeo.screws.inertia.centre_of_mass, planargeo.screws.inertia.rotational_inertia,
+                                planargeo.screws.inertia.radius_of_gyration])
 @pytest.mark.parametrize("m, shown", [(-1.0, r"-1\.0"), (0.0, r"0\.0"), (-2.5, r"-2\.5")])
 def test_features_reject_zero_or_negative_mass(fn, m, shown):
     # a rigid-body form 4.58 with m <= 0 (hand-built: inertia_matrix itself refuses such a mass)
@@ -140,6 +140,6 @@ def test_features_reject_zero_or_negative_mass(fn, m, shown):
 def test_features_of_good_masses_are_the_hand_values():
     # I = inertia_matrix(m, c, J): c, J and ρ = sqrt(J/m) come back (4.58), for a batch too, without warnings
     I = np.stack([inertia_matrix(2.0, [1.0, -3.0], 0.5), inertia_matrix(4.0, [0.0, 2.0], 9.0)])
-    np.testing.assert_allclose(planargeo.inertia.centre_of_mass(I), [[1.0, -3.0], [0.0, 2.0]], atol=1e-14)
-    np.testing.assert_allclose(planargeo.inertia.rotational_inertia(I), [0.5, 9.0], atol=1e-13)
-    np.testing.assert_allclose(planargeo.inertia.radius_of_gyration(I), [0.5, 1.5], atol=1e-14)
+    np.testing.assert_allclose(planargeo.screws.inertia.centre_of_mass(I), [[1.0, -3.0], [0.0, 2.0]], atol=1e-14)
+    np.testing.assert_allclose(planargeo.screws.inertia.rotational_inertia(I), [0.5, 9.0], atol=1e-13)
+    np.testing.assert_allclose(planargeo.screws.inertia.radius_of_gyration(I), [0.5, 1.5], atol=1e-14)

@@ -23,10 +23,10 @@ import numpy as np
 import pytest
 from scipy.special import ellipj, ellipk
 
-from planargeo.model import chain_model
+from planargeo.mechanics.model import chain_model
 from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
-from planargeo.simulate import energy, simulate
-from planargeo.simulate_loops import simulate_loops
+from planargeo.simulate.integrate import energy, simulate
+from planargeo.simulate.loops import simulate_loops
 
 ROOT = Path(__file__).resolve().parent.parent
 G = 9.81

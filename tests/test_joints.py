@@ -1,7 +1,7 @@
 """Joint motion / reaction spaces (thesis 4.8, 5.61–5.63).
 
 References: the thesis's printed joint axes (4.64, 4.69, 4.74, 5.62, 5.63),
-the twist/wrench transforms of planargeo.screws (X_P, X_P_inv_T) used to look
+the twist/wrench transforms of planargeo.screws.twists (X_P, X_P_inv_T) used to look
 at each basis element *from the joint*, and ranks computed with numpy.
 """
 import math
@@ -12,9 +12,9 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from planargeo import errors
-from planargeo.joints import (DOF, KINDS, JointSpace, fixed, motion_space, plane, prismatic,
+from planargeo.mechanics.joints import (DOF, KINDS, JointSpace, fixed, motion_space, plane, prismatic,
                               reaction_space, revolute, revolute_prismatic, twin_prismatic)
-from planargeo.screws import X_P, X_P_inv_T
+from planargeo.screws.twists import X_P, X_P_inv_T
 
 coord = st.floats(-10, 10, allow_nan=False)
 angle = st.floats(0, 2 * np.pi, allow_nan=False)
@@ -81,7 +81,7 @@ def test_twin_prismatic_subspace_identities():
     = 1/J (the rotational part of the mobility at the c.o.m.), so U = J · I⁻¹[:, 2] = [b, -a, 1]: the
     rotation about the centre of mass (a couple turns a free body about its c.o.m.).
     """
-    from planargeo.subspaces import Decomposition
+    from planargeo.mechanics.subspaces import Decomposition
 
     m, a, b, J = 2.0, 0.5, -1.5, 0.8
     I = np.array([[m, 0.0, -m * b], [0.0, m, m * a], [-m * b, m * a, J + m * (a * a + b * b)]])
@@ -222,12 +222,12 @@ def test_non_finite_and_bad_kind():
 
 @given(kinds, coord, coord, angle)
 def test_motion_space_matches_model_kinematics(kind, x, y, phi):
-    """Same columns, same order as the Model's kinematics (planargeo.kinematics.joint_axes at q = 0).
+    """Same columns, same order as the Model's kinematics (planargeo.mechanics.kinematics.joint_axes at q = 0).
 
     ``twin_prismatic`` is a Model joint kind too (thesis 4.79): ``s = [e, e⊥]`` with
     ``e = (cos φ, sin φ)``, by hand ``[[cos φ, -sin φ], [sin φ, cos φ], [0, 0]]`` wherever the joint is.
     """
-    from planargeo.kinematics import joint_axes
+    from planargeo.mechanics.kinematics import joint_axes
 
     if kind == "twin_prismatic":
         got = motion_space(kind, (x, y), _dir(phi))
@@ -246,14 +246,14 @@ def test_motion_space_matches_model_kinematics(kind, x, y, phi):
 @given(kinds, coord, coord, angle)
 def test_reaction_space_of_reads_the_joint_off_s(kind, x, y, lam):
     # the algorithms only see s (and a point of the joint): they must get the same R as the joint
-    from planargeo.joints import reaction_space_of
+    from planargeo.mechanics.joints import reaction_space_of
 
     j = JointSpace(kind, (x, y), _dir(lam))
     np.testing.assert_allclose(reaction_space_of(j.s, (x, y)), j.R, atol=1e-12 * (1 + abs(x) + abs(y)))
 
 
 def test_reaction_space_of_hand_values_and_errors():
-    from planargeo.joints import reaction_space_of
+    from planargeo.mechanics.joints import reaction_space_of
 
     # revolute at (2, 3): unit forces along x and y through it (thesis 7.16)
     np.testing.assert_array_equal(reaction_space_of([[3.0], [-2.0], [1.0]]), [[1, 0], [0, 1], [-3, 2]])

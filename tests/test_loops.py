@@ -7,13 +7,13 @@ from planargeo.algorithms.crba import forward_dynamics_crba, mass_matrix
 from planargeo.algorithms.loops import (
     branch_matrix, constrained_dynamics_lagrange, forward_dynamics_loops, loop_solve)
 from planargeo.algorithms.stacked import blocks, tree_mobilities
-from planargeo.contacts import (
+from planargeo.mechanics.contacts import (
     Contact, contact_bias, contact_matrix, motion_space, reaction_space, residual,
     stacked_contact_spaces, validate_contacts, world_point)
 from planargeo.errors import (
     DegenerateGeometryError, InputError, ShapeError, SingularConfigurationError)
-from planargeo.kinematics import kinematics
-from planargeo.model import Model, chain_model, random_model
+from planargeo.mechanics.kinematics import kinematics
+from planargeo.mechanics.model import Model, chain_model, random_model
 
 FIG91 = [-1, 0, 1, 2, 0, 4, 5, 5, 0]
 
@@ -123,7 +123,7 @@ def test_contact_validation_errors():
 
 def test_contact_bias_symmetric():
     # ν = v_a × (v_a - v_b) = v_b × (v_a - v_b): either body may carry z
-    from planargeo.screws import crm
+    from planargeo.screws.twists import crm
     rng = np.random.default_rng(0)
     va, vb = rng.normal(size=3), rng.normal(size=3)
     assert np.allclose(contact_bias(va, vb), crm(vb) @ (va - vb))

@@ -1,10 +1,10 @@
-"""Closed-loop simulation with stabilisation (planargeo.simulate_loops) on the slider-crank of 9.6."""
+"""Closed-loop simulation with stabilisation (planargeo.simulate.loops) on the slider-crank of 9.6."""
 import numpy as np
 import pytest
 
 from planargeo.errors import InputError
 from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
-from planargeo.simulate_loops import closure_jacobian, closure_residual, project_state, simulate_loops
+from planargeo.simulate.loops import closure_jacobian, closure_residual, project_state, simulate_loops
 
 import _slider_crank_reference as scref
 

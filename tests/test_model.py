@@ -1,10 +1,10 @@
-"""Model description and validation (planargeo.model) and kinematics checks."""
+"""Model description and validation (planargeo.mechanics.model) and kinematics checks."""
 import numpy as np
 import pytest
 
 from planargeo.errors import CyclicTopologyError, InputError, NonFiniteError, ShapeError, TopologyError
-from planargeo.kinematics import check_state, kinematics
-from planargeo.model import JOINT_DOFS, Body, Joint, Model, chain_model, random_model
+from planargeo.mechanics.kinematics import check_state, kinematics
+from planargeo.mechanics.model import JOINT_DOFS, Body, Joint, Model, chain_model, random_model
 
 ALL_KINDS = tuple(JOINT_DOFS)
 

@@ -16,10 +16,10 @@ from planargeo.algorithms.loops import constrained_dynamics_lagrange, loop_solve
 from planargeo.algorithms.projective import forward_dynamics_projective, projective_workspace
 from planargeo.algorithms.rnea import inverse_dynamics
 from planargeo.algorithms.stacked import forward_dynamics_stacked
-from planargeo.contacts import Contact, stacked_contact_spaces, contact_matrix, world_point
+from planargeo.mechanics.contacts import Contact, stacked_contact_spaces, contact_matrix, world_point
 from planargeo.algorithms.stacked import blocks
-from planargeo.kinematics import kinematics
-from planargeo.model import JOINT_DOFS, Body, Joint, Model, random_model
+from planargeo.mechanics.kinematics import kinematics
+from planargeo.mechanics.model import JOINT_DOFS, Body, Joint, Model, random_model
 
 G = 9.81
 KINDS = ("revolute", "prismatic", "twin_prismatic", "twin_prismatic")   # twin prismatic drawn half the time

@@ -13,9 +13,9 @@ from planargeo.algorithms.chain_splitting import forward_dynamics_mobility_split
 from planargeo.algorithms.crba import forward_dynamics_crba
 from planargeo.algorithms.projective import forward_dynamics_projective, projective_workspace
 from planargeo.algorithms.stacked import articulation_matrix, forward_dynamics_stacked, stacked_solve
-from planargeo.model import chain_model, random_model
-from planargeo.screws import inertia_matrix
-from planargeo.subspaces import (COND_LIMIT, _effective_mobility, _percussion_space, effective_mobility,
+from planargeo.mechanics.model import chain_model, random_model
+from planargeo.screws.twists import inertia_matrix
+from planargeo.mechanics.subspaces import (COND_LIMIT, _effective_mobility, _percussion_space, effective_mobility,
                                  percussion_space)
 
 EPS = np.finfo(float).eps

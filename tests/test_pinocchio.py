@@ -13,7 +13,7 @@ pin = pytest.importorskip("pinocchio")
 from planargeo.algorithms.aba import forward_dynamics  # noqa: E402
 from planargeo.algorithms.crba import mass_matrix  # noqa: E402
 from planargeo.algorithms.rnea import inverse_dynamics  # noqa: E402
-from planargeo.model import chain_model, random_model  # noqa: E402
+from planargeo.mechanics.model import chain_model, random_model  # noqa: E402
 
 
 def to_pinocchio(model):

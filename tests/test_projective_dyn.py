@@ -12,8 +12,8 @@ from planargeo.algorithms.projective import (
     projective_solve, projective_workspace, reaction_space, reactive_subspace)
 from planargeo.algorithms.rnea import newton_euler
 from planargeo.errors import SingularConfigurationError, SingularInertiaError
-from planargeo.model import Body, Joint, Model, random_model
-from planargeo.screws import inertia_matrix
+from planargeo.mechanics.model import Body, Joint, Model, random_model
+from planargeo.screws.twists import inertia_matrix
 from test_articulated_reference import random_state, rtol_for
 
 ALL_KINDS = ("revolute", "prismatic", "revolute_prismatic", "plane", "fixed")
@@ -124,7 +124,7 @@ def test_relative_and_absolute_joint_acceleration_6_100():
     ws = projective_workspace(model, q, qd, tau, f_ext)
     for i in range(model.N):
         a_prev = ws.a[i - 1] if i else np.zeros(3)
-        from planargeo.kinematics import kinematics
+        from planargeo.mechanics.kinematics import kinematics
         kap = kinematics(model, q, qd).kappa[i]
         np.testing.assert_allclose(ws.psi[i], ws.qdd[model.q_slice(i)] + ws.T[i].T @ (a_prev + kap), atol=1e-9)
 
@@ -263,8 +263,8 @@ def test_mu_of_a_slider_is_the_normal_force_through_the_slider_and_a_couple_by_h
 @pytest.mark.parametrize("seed", range(4))
 def test_mu_is_U_transpose_of_the_rnea_joint_force_in_the_joints_basis(seed):
     from planargeo.algorithms.rnea import inverse_dynamics
-    from planargeo.joints import reaction_space as joint_R
-    from planargeo.kinematics import kinematics
+    from planargeo.mechanics.joints import reaction_space as joint_R
+    from planargeo.mechanics.kinematics import kinematics
 
     model = random_model(6, seed=seed, kinds=ALL_KINDS, tree=bool(seed % 2))
     q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
@@ -293,7 +293,7 @@ def test_force_propagator_takes_T_checked_at_the_joint():
     ``(X, 0)``, and the joint adds its torque ``τ``: ``f = [0, τ, X τ + τ]`` (``sᵀf = τ``).  Measured at the origin the rule refuses this joint
     (``cond_O ≈ X⁴ = 1e16``), at the pin it is a plain pendulum: ``T=`` carries the checked one.
     """
-    from planargeo.screws import inertia_matrix
+    from planargeo.screws.twists import inertia_matrix
     X, g, tau = 1e4, 9.81, 2.0
     I = inertia_matrix(1.0, [X + 1.0, 0.0], 0.0)
     s = [[0.0], [-X], [1.0]]

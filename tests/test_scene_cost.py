@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from planargeo import scenes
-from planargeo.model import Model
+from planargeo.mechanics.model import Model
 
 _PATH = Path(__file__).resolve().parents[1] / "benchmarks" / "scene_cost.py"
 _spec = importlib.util.spec_from_file_location("_scene_cost", _PATH)

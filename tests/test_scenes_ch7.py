@@ -184,7 +184,7 @@ def test_mobility_subspaces_7_40_7_41_7_42():
 def test_mobility_printed_sign_would_move_the_centre():
     # with the sign of 7.38a as printed, Lambda_2^-1 (and the centre x) would be wrong
     from test_articulated_mobility import _printed_mobility
-    from planargeo.kinematics import kinematics
+    from planargeo.mechanics.kinematics import kinematics
 
     r = scenes.build("mobility-example")
     d = kinematics(r.model, r.state["q"])

@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
 from planargeo.errors import DegenerateGeometryError, ShapeError
-from planargeo.screws import Twist, Wrench, add_twists, add_wrenches
+from planargeo.screws.twists import Twist, Wrench, add_twists, add_wrenches
 
 fin = st.floats(-10, 10, allow_nan=False, allow_infinity=False)
 xy = arrays(float, 2, elements=fin)

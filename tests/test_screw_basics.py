@@ -12,8 +12,8 @@ from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
 from planargeo.errors import DegenerateGeometryError, NonFiniteError, ShapeError
-from planargeo.joints import twin_prismatic
-from planargeo.screws import (
+from planargeo.mechanics.joints import twin_prismatic
+from planargeo.screws.twists import (
     X_P, X_P_inv_T, Twist, Wrench, bias_force, crf, crm, inertia_at, inertia_matrix, kappa,
     kinetic_energy, momentum, pole_xy, power, reciprocal, rot, unit_rotation, wrench_axis,
 )
@@ -307,7 +307,7 @@ def test_bad_inputs():
 
 
 def test_pole_and_line_as_geometry_objects():
-    geometry = pytest.importorskip("planargeo.geometry")
+    geometry = pytest.importorskip("planargeo.geometry.elements")
     v = Twist.rotation([1.0, 2.0], 3.0)
     assert isinstance(v.pole, geometry.Point)
     np.testing.assert_allclose(np.asarray(v.pole.array), v.array)
@@ -321,7 +321,7 @@ def test_pole_and_line_as_geometry_objects():
 @given(xy, xy, nz, nz, nz)
 def test_acceleration_kinematics_4_48_to_4_54(V, S, w, qd, qdd):
     # previous body rotating about V at w, revolute joint at S with speed qd, acceleration qdd
-    from planargeo.screws import add_twists
+    from planargeo.screws.twists import add_twists
     k = np.linalg.norm(S - V)
     if k < 1e-2:
         return

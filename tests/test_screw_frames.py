@@ -16,8 +16,8 @@ from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
 from planargeo import errors
-from planargeo.inertia import Inertia
-from planargeo.screws import (
+from planargeo.screws.inertia import Inertia
+from planargeo.screws.twists import (
     X_P, X_P_inv_T, X_frame, X_frame_inv_T, Twist, Wrench, bias_force, inertia_at, inertia_matrix,
     inertia_rotated, inertia_transform, kinetic_energy, momentum, power, rot, rotation_about,
 )

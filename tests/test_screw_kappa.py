@@ -6,7 +6,7 @@ References are independent of :func:`planargeo.screws.kappa`:
   where the columns ``s_j(t)`` are carried by the parent motion and the earlier columns'
   motions, built with ``scipy.linalg.expm`` of the 3×3 SE(2) matrices (no code under test);
 * hand derivations (4.77 corrected: ``+ u θ̇ (sin λ, -cos λ, 0)``);
-* :func:`planargeo.kinematics.kinematics` (DYN-A's own sequential-screw implementation).
+* :func:`planargeo.mechanics.kinematics.kinematics` (DYN-A's own sequential-screw implementation).
 """
 import numpy as np
 import pytest
@@ -15,10 +15,10 @@ from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 from scipy.linalg import expm
 
-from planargeo.joints import plane, revolute_prismatic
-from planargeo.kinematics import kinematics
-from planargeo.model import Body, Joint, Model
-from planargeo.screws import kappa
+from planargeo.mechanics.joints import plane, revolute_prismatic
+from planargeo.mechanics.kinematics import kinematics
+from planargeo.mechanics.model import Body, Joint, Model
+from planargeo.screws.twists import kappa
 
 fin = st.floats(-3, 3, allow_nan=False, allow_infinity=False)
 vec3 = arrays(float, 3, elements=fin)

@@ -9,8 +9,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from planargeo.errors import InputError, SingularConfigurationError
-from planargeo.model import Body, Joint, Model, chain_model, random_model
-from planargeo.simulate import energy, progress_enabled, simulate
+from planargeo.mechanics.model import Body, Joint, Model, chain_model, random_model
+from planargeo.simulate.integrate import energy, progress_enabled, simulate
 
 Q0, QD0 = [0.3, 0.5, -0.2], [0.0, 1.0, 0.0]
 

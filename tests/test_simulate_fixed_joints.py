@@ -3,8 +3,8 @@ import numpy as np
 import pytest
 
 from planargeo.algorithms.crba import bias_forces, forward_dynamics_crba, mass_matrix
-from planargeo.model import Body, Joint, Model
-from planargeo.simulate import simulate
+from planargeo.mechanics.model import Body, Joint, Model
+from planargeo.simulate.integrate import simulate
 
 
 def welded(kinds=("fixed", "fixed")):

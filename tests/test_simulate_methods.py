@@ -6,10 +6,10 @@ import pytest
 from scipy.special import ellipj, ellipk
 
 from planargeo.errors import InputError, SingularConfigurationError
-from planargeo.model import chain_model
+from planargeo.mechanics.model import chain_model
 from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
-from planargeo.simulate import METHODS, MULTISTEP, simulate
-from planargeo.simulate_loops import closure_residual, simulate_loops
+from planargeo.simulate.integrate import METHODS, MULTISTEP, simulate
+from planargeo.simulate.loops import closure_residual, simulate_loops
 
 NEW = ("RK23", "BDF", "LSODA")
 

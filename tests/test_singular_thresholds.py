@@ -2,7 +2,7 @@
 
 Every recursive method (``aba``: single-state plan, batched plan, general array
 path; ``projective``; ``mobility_split``; ``stacked``) applies one rule
-(:data:`planargeo.subspaces.COND_LIMIT`): with ``A`` and ``s`` at the joint's own
+(:data:`planargeo.mechanics.subspaces.COND_LIMIT`): with ``A`` and ``s`` at the joint's own
 point ``P`` (its pivot), ``cond = ‖A_P‖_F ‖s_P‖² / σ_min(sᵀAs)`` and the joint is
 singular when ``cond > 1e12`` (``docs/simulation.md``, "One rule for singular joints");
 the rule does not change when the whole mechanism is moved.  The methods that form
@@ -35,8 +35,8 @@ from planargeo.algorithms.crba import forward_dynamics_crba
 from planargeo.algorithms.projective import forward_dynamics_projective
 from planargeo.algorithms.stacked import forward_dynamics_stacked
 from planargeo.errors import InputError, SingularConfigurationError
-from planargeo.model import Body, Joint, Model
-from planargeo.subspaces import COND_LIMIT
+from planargeo.mechanics.model import Body, Joint, Model
+from planargeo.mechanics.subspaces import COND_LIMIT
 
 EPS = np.finfo(float).eps
 G = 9.81
@@ -349,7 +349,7 @@ def _moved(model, beta, tx, ty):
        beta=st.floats(-math.pi, math.pi), tx=st.floats(-10, 10), ty=st.floats(-10, 10))
 def test_the_rule_is_invariant_under_moving_the_whole_mechanism(seed, n, tree, beta, tx, ty):
     from planargeo.algorithms.stacked import joint_conditions
-    from planargeo.model import random_model
+    from planargeo.mechanics.model import random_model
 
     model = random_model(n, seed, tree=tree)
     moved = _moved(model, beta, tx, ty)
@@ -377,7 +377,7 @@ def test_the_decision_at_the_threshold_does_not_move_with_the_mechanism(seed, n,
     # a random revolute chain ending in a point mass d from its joint: that (leaf) joint's cond is
     # √(2 + 2d² + d⁴)/d² (hand, at the joint), d set to put it 1e-5 (relative) either side of the limit; aba's
     # plans (single state and batched), which form sᵀAs at the joint, decide the same wherever the mechanism is
-    from planargeo.model import random_model
+    from planargeo.mechanics.model import random_model
 
     base = random_model(n, seed, kinds=("revolute",))
     # cond = √(2 + 2d² + d⁴)/d² = C  <=>  (C² - 1) d⁴ - 2 d² - 2 = 0
@@ -402,7 +402,7 @@ def test_mobility_recursion_with_masses_mixed_over_fourteen_decades_is_a_named_e
     # 1 + U Rᵀ Λ⁻¹ I adds 1 to products of order 1e14 and LAPACK meets an exact zero pivot; that must be
     # a SingularConfigurationError (cond = inf), never numpy's bare LinAlgError, while ABA still answers
     # and agrees with an exact-fraction solve of the joint-space equations (written independently of the package)
-    from planargeo import _reference as ref
+    import reference as ref
 
     model = ref.alternating_chain(20, 14)
     q, qd, tau = ref.state(20, 3)
@@ -452,8 +452,8 @@ def test_extreme_masses_accepted_by_every_aba_path(n, mass):
 
 def test_extreme_masses_joint_scale_finite():
     """``joint_scale`` does not overflow/underflow: ``‖m I_unit‖_F = m ‖I_unit‖_F`` by hand."""
-    from planargeo.screws import inertia_matrix
-    from planargeo.subspaces import joint_scale
+    from planargeo.screws.twists import inertia_matrix
+    from planargeo.mechanics.subspaces import joint_scale
     # unit point mass at (1, 0), pivot at the origin: A = [[1,0,0],[0,1,1],[0,1,1]], ‖A‖_F = √5
     for mass in (1e-170, 1e160):
         got = joint_scale(inertia_matrix(mass, [1.0, 0.0], 0.0), [0.0, 0.0, 1.0], [0.0, 0.0])

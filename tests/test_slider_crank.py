@@ -6,7 +6,7 @@ from hypothesis import given, strategies as st
 from planargeo import scenes
 from planargeo.algorithms.loops import constrained_dynamics_lagrange, loop_solve
 from planargeo.errors import SceneError, SingularConfigurationError
-from planargeo.kinematics import kinematics
+from planargeo.mechanics.kinematics import kinematics
 from planargeo.scenes.slider_crank import slider_crank, slider_crank_model, slider_crank_state
 
 import _slider_crank_reference as scref

@@ -9,10 +9,10 @@ from planargeo.algorithms.stacked import (
     stacked_solve, tree_mobilities, trunk)
 from planargeo.errors import (CyclicTopologyError, InputError, ShapeError, SingularConfigurationError,
                              TopologyError)
-from planargeo.kinematics import kinematics
-from planargeo.joints import reaction_space as joint_reaction_space
-from planargeo.model import Body, Joint, Model, chain_model, random_model
-from planargeo.subspaces import COND_LIMIT
+from planargeo.mechanics.kinematics import kinematics
+from planargeo.mechanics.joints import reaction_space as joint_reaction_space
+from planargeo.mechanics.model import Body, Joint, Model, chain_model, random_model
+from planargeo.mechanics.subspaces import COND_LIMIT
 
 FIG91 = [-1, 0, 1, 2, 0, 4, 5, 5, 0]  # Fig 9.1: parents of bodies 1..9 (0-based)
 

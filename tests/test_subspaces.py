@@ -14,9 +14,9 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from planargeo import errors
-from planargeo.joints import KINDS, JointSpace, prismatic, revolute
-from planargeo.screws import inertia_matrix
-from planargeo.subspaces import (Decomposition, active_acceleration, active_force, effective_base_inertia,
+from planargeo.mechanics.joints import KINDS, JointSpace, prismatic, revolute
+from planargeo.screws.twists import inertia_matrix
+from planargeo.mechanics.subspaces import (Decomposition, active_acceleration, active_force, effective_base_inertia,
                                  effective_mobility, inertia_decomposition, inverse_inertia_decomposition,
                                  joint_space_inertia, percussion_space, reaction_force,
                                  reaction_space_inverse_inertia, reactive_acceleration,
@@ -197,7 +197,7 @@ def test_batches_broadcast(rng):
         np.testing.assert_allclose(T[i], percussion_space(j.s, A[i]), atol=1e-14)
         np.testing.assert_allclose(U[i], reactive_acceleration_space(j.R, A[i]), atol=1e-14)
     # batch of joint spaces with one inertia
-    from planargeo.joints import motion_space, reaction_space
+    from planargeo.mechanics.joints import motion_space, reaction_space
     pts = rng.uniform(-2, 2, (4, 2))
     S, R = motion_space("revolute", pts), reaction_space("revolute", pts)
     dec = Decomposition(S, R, A[0])

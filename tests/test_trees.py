@@ -6,8 +6,8 @@ from planargeo import scenes
 from planargeo.algorithms.crba import forward_dynamics_crba
 from planargeo.algorithms.loops import constrained_dynamics_lagrange
 from planargeo.errors import SceneError
-from planargeo.kinematics import kinematics
-from planargeo.simulate_loops import closure_jacobian, closure_residual
+from planargeo.mechanics.kinematics import kinematics
+from planargeo.simulate.loops import closure_jacobian, closure_residual
 
 
 def test_registered():
@@ -110,7 +110,7 @@ def test_tree_mobilities_are_those_of_the_tree_with_descendants_cut_off():
     tree (CRBA) propagated along the root path, ``a_i = Σ_k (s_k q̈_k + κ_k)`` (3.42).
     """
     from planargeo.algorithms.crba import mass_matrix
-    from planargeo.model import Model
+    from planargeo.mechanics.model import Model
 
     res = scenes.build("tree", speed=1.5, g=9.81)
     Lam, b = np.array(res.quantities["Lambda_inv"]), np.array(res.quantities["b"])

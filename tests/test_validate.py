@@ -86,7 +86,7 @@ def test_symmetry_checked_matrix_by_matrix_in_a_batch():
 
 
 def test_small_asymmetric_inertia_rejected():
-    from planargeo.inertia import Inertia
+    from planargeo.screws.inertia import Inertia
     m = 1e-11 * np.array([[1.0, 0.5, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
     with pytest.raises(errors.InputError, match=r"^matrix must be symmetric, got asymmetry 5e-12$"):
         Inertia(m)

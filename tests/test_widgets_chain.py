@@ -187,7 +187,7 @@ def _hand_two_link(q, qd, tau, g=G):
     pdot = [np.zeros(2), qd[0] * np.array([-math.sin(th1), math.cos(th1)])]
     s = [np.array([pi[1], -pi[0], 1.0]) for pi in p]
     sdot = [np.array([pd[1], -pd[0], 0.0]) for pd in pdot]
-    from planargeo.model import Body, Joint, Model
+    from planargeo.mechanics.model import Body, Joint, Model
 
     model = Model([Body(1.0, (0.5, 0.0), 1 / 12), Body(1.0, (0.5, 0.0), 1 / 12)],
                   [Joint("revolute", (0.0, 0.0, 0.0)), Joint("revolute", (1.0, 0.0, 0.0))],

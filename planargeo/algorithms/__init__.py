@@ -1,4 +1,4 @@
-"""Forward and inverse dynamics algorithms on a :class:`planargeo.model.Model`.
+"""Forward and inverse dynamics algorithms on a :class:`planargeo.mechanics.model.Model`.
 
 Every forward dynamics function has the signature
 ``(model, q, qd, tau, f_ext=None) -> qdd``; ``f_ext`` is ``(N, 3)`` world

@@ -51,19 +51,19 @@ from fractions import Fraction
 
 import numpy as np
 
-from ..errors import SingularConfigurationError
-from ..kinematics import check_state, kinematics
-from ..model import Data, Model
-from ..subspaces import COND_LIMIT, COND_LIMIT2, _checked_gram, joint_cond, joint_scale, singular_joint_error
+from planargeo.errors import SingularConfigurationError
+from planargeo.mechanics.kinematics import check_state, kinematics
+from planargeo.mechanics.model import Data, Model
+from planargeo.mechanics.subspaces import COND_LIMIT, COND_LIMIT2, _checked_gram, joint_cond, joint_scale, singular_joint_error
 
 __all__ = ["forward_dynamics", "articulated_body"]
 
-# Singular joints: the package's one rule, :data:`planargeo.subspaces.COND_LIMIT` (imported, not
+# Singular joints: the package's one rule, :data:`planargeo.mechanics.subspaces.COND_LIMIT` (imported, not
 # restated): ``cond = ‖A_P‖_F ‖s_P‖² / σ_min(sᵀAs)`` with ``A`` and ``s`` at the joint's point ``P``
 # (the joint frame's world origin: the pivot of a revolute joint), invariant under moving the whole
 # mechanism, so every
 # method accepts or raises for the same states, with the same ``.cond`` and message
-# (:func:`planargeo.subspaces.singular_joint_error`).
+# (:func:`planargeo.mechanics.subspaces.singular_joint_error`).
 #: batches up to this size are evaluated state by state on Python floats (the batched
 #: plan's ~0.5 µs per numpy call per body-step is worth it from about 30 states on)
 SMALL_BATCH = 32
@@ -92,14 +92,14 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
     ------
     SingularConfigurationError
         If some ``s_i^T A_i s_i`` is singular (e.g. a point mass on a revolute
-        joint at its own position), by the rule of :data:`planargeo.subspaces.COND_LIMIT`
+        joint at its own position), by the rule of :data:`planargeo.mechanics.subspaces.COND_LIMIT`
         (measured at the joint's point).
 
     Examples
     --------
     A unit point mass at distance 1 from its pivot (a simple pendulum), released horizontally:
 
-    >>> from planargeo.model import Body, Joint, Model
+    >>> from planargeo.mechanics.model import Body, Joint, Model
     >>> m = Model([Body(1.0, com=(1.0, 0.0))], [Joint("revolute")], [-1])
     >>> w = articulated_body(m, [0.0], [0.0], [0.0])
     >>> w.qdd, w.f[0]                  # g/L, and the pivot carries no load in free fall
@@ -175,8 +175,8 @@ def _singular_components(D, A6, s, X, Y, i):
     ``D = sᵀAs``; ``A6 = (A_00, A_01, A_02, A_11, A_12, A_22)`` and ``s = (s_0, s_1, s_2)`` at the
     origin, ``(X, Y)`` the joint's point (scalars or equally long rows).  The squared test
     ``D² LIMIT² > ‖A_P‖_F²`` also fails when the squares underflow (masses ``1e-170``) or
-    overflow: the condition number is computed scale-safely (:func:`planargeo.subspaces.joint_scale`)
-    and the error raised only for states above :data:`planargeo.subspaces.COND_LIMIT`.
+    overflow: the condition number is computed scale-safely (:func:`planargeo.mechanics.subspaces.joint_scale`)
+    and the error raised only for states above :data:`planargeo.mechanics.subspaces.COND_LIMIT`.
     """
     *a, s0, s1, s2, X, Y, D = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (*A6, *s, X, Y, D)))
     a00, a01, a02, a11, a12, a22 = a
@@ -346,7 +346,7 @@ def _aba_components(model: Model, table, q, qd, tau, fe, cos=math.cos, sin=math.
 #   passed inwards has moment ``τ_i`` about the joint, and (3.41) reads
 #   ``q̈_i = D⁻¹ (u'_i - U_0 ā_0 - U_1 ā_1) - a'_2`` with ``u'_i = τ_i - d_i,2`` and
 #   ``ā = a' + κ_i`` (the parent's acceleration at o_i plus the bias term).
-#   Singularity follows the package's rule (:data:`planargeo.subspaces.COND_LIMIT`,
+#   Singularity follows the package's rule (:data:`planargeo.mechanics.subspaces.COND_LIMIT`,
 #   ``A`` and ``s`` at the joint's point ``P``: o_i itself for a revolute joint, o_i
 #   less ``q`` along the axis for a prismatic one): the plan tests a cheap sufficient
 #   condition ``D² LIMIT² > b²``, ``b ≥ ‖A_P‖_F ‖s_P‖²`` from ``trace A`` at o_i (and
@@ -394,10 +394,10 @@ def _singular_plan(D, a00, a01, a02, a11, a12, a22, q, c, s, i):
     """The exact singularity rule for joint ``i`` of a plan, where its cheap bound failed: raise or return.
 
     The plan keeps ``A`` at the body origin o_i (world axes); the rule
-    (:data:`planargeo.subspaces.COND_LIMIT`) takes ``A`` and ``s`` at the joint's point ``P``:
+    (:data:`planargeo.mechanics.subspaces.COND_LIMIT`) takes ``A`` and ``s`` at the joint's point ``P``:
     o_i itself for a revolute joint (``q = 0`` is passed), ``P = o_i - q (c, s)`` for a prismatic
     joint along ``(c, s)`` (its placement point; o_i has slid by ``q``).  ``A_P`` is ``A`` moved by
-    ``r = P - o_i`` (moments ``n - r × F``, congruently: :func:`planargeo.subspaces.joint_scale`),
+    ``r = P - o_i`` (moments ``n - r × F``, congruently: :func:`planargeo.mechanics.subspaces.joint_scale`),
     ``s_P = [0, 0, 1]`` or ``[c, s, 0]`` (``‖s_P‖² = 1``); ``D = sᵀAs`` is the same at either point.
 
     The plan tests first the cheaper sufficient condition ``D² LIMIT² > b²`` with
@@ -811,7 +811,7 @@ def _registers(lines):
 def _checks(model: Model, kinds) -> tuple:
     """Which joints keep the singularity test in the plan: those where it is not proven to pass.
 
-    The rule (:data:`planargeo.subspaces.COND_LIMIT`) accepts ``D = sᵀAs`` when
+    The rule (:data:`planargeo.mechanics.subspaces.COND_LIMIT`) accepts ``D = sᵀAs`` when
     ``D > ‖A_P‖_F ‖s_P‖² / COND_LIMIT`` (``A``, ``s`` at the joint's point ``P``, which
     for a revolute joint is o_i, ``s_P = [0, 0, 1]``).  In exact arithmetic the
     articulated inertia lies between the body's own inertia and the composite inertia
@@ -1280,7 +1280,7 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     ------
     SingularConfigurationError
         If some ``s_i^T A_i s_i`` is singular by the package's one rule
-        (:data:`planargeo.subspaces.COND_LIMIT`: ``‖A_P‖_F ‖s_P‖² / σ_min(sᵀAs) > 1e12``
+        (:data:`planargeo.mechanics.subspaces.COND_LIMIT`: ``‖A_P‖_F ‖s_P‖² / σ_min(sᵀAs) > 1e12``
         at the joint's point ``P``, invariant under moving the whole mechanism), with
         that ``.cond``, for the same states the other recursive methods refuse.
 
@@ -1289,7 +1289,7 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     A uniform rod (mass 1, length 1) pinned at one end, released horizontally:
     ``q̈ = -(m g L/2) / (m L²/3) = -1.5 g``.
 
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> forward_dynamics(chain_model(1), [0.0], [0.0], [0.0])
     array([-14.715])
     >>> forward_dynamics(chain_model(1), [[0.0], [np.pi / 2]], [[0.0], [0.0]], [[0.0], [0.0]]).round(12)

@@ -24,8 +24,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..subspaces import _percussion_space
-from .projective import _state_arrays, reaction_space, reactive_subspace
+from planargeo.mechanics.subspaces import _percussion_space
+from planargeo.algorithms.projective import _state_arrays, reaction_space, reactive_subspace
 
 __all__ = ["ArticulatedInertias", "articulated_recursion", "articulated_inertia"]
 
@@ -39,7 +39,7 @@ class ArticulatedInertias:
     A : (N, 3, 3) articulated inertias (7.7a).
     d : (N, 3) articulated bias forces (7.7b).
     T : list of (3, k_i) active force subspaces ``A_i s_i (s_i^T A_i s_i)^-1`` (6.105).
-    R : list of (3, 3-k_i) reaction spaces, the basis of :func:`planargeo.joints.reaction_space_of`
+    R : list of (3, 3-k_i) reaction spaces, the basis of :func:`planargeo.mechanics.joints.reaction_space_of`
         (forces through the joint, couples; thesis 7.16, 5.63).
     S : list of (3, k_i) joint spaces.
     """
@@ -67,10 +67,10 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
     parents : sequence of N ints, default a chain.
     points : (N, 2), optional
         A point of each joint, for the reaction bases ``R`` of prismatic joints
-        (:func:`planargeo.joints.reaction_space_of`); default the origin.
+        (:func:`planargeo.mechanics.joints.reaction_space_of`); default the origin.
     joint_points : (N, 2), optional
         Each joint's point (pivot; placement point of a prismatic joint: the joint
-        frame's origin), where the singularity rule of :data:`planargeo.subspaces.COND_LIMIT`
+        frame's origin), where the singularity rule of :data:`planargeo.mechanics.subspaces.COND_LIMIT`
         is measured; default the origin.  The model-level functions pass the joint frames' origins.
 
     Returns
@@ -87,7 +87,7 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
     Thesis 7.2 with ``m = L = 1``, ``rho = 1/2``, ``phi = 0``: the two bodies in
     line have ``m_x = 2 m`` (7.20).
 
-    >>> from planargeo.screws import inertia_matrix
+    >>> from planargeo.screws.twists import inertia_matrix
     >>> I = [inertia_matrix(1.0, [0.5, 0.0], 0.25), inertia_matrix(1.0, [1.5, 0.0], 0.25)]
     >>> S = [np.array([[0.0], [0.0], [1.0]]), np.array([[0.0], [-1.0], [1.0]])]
     >>> r = articulated_recursion(I, S, np.zeros((2, 3)), np.zeros((2, 3)), [np.zeros(1)] * 2)
@@ -138,7 +138,7 @@ def articulated_inertia(model, q, qd=None, tau=None, f_ext=None) -> ArticulatedI
 
     Parameters
     ----------
-    model : planargeo.model.Model
+    model : planargeo.mechanics.model.Model
     q, qd, tau : array_like (nq,)
         State and joint torques (zero if omitted).
     f_ext : array_like (N, 3), optional
@@ -153,7 +153,7 @@ def articulated_inertia(model, q, qd=None, tau=None, f_ext=None) -> ArticulatedI
     Two unit slender links in line on pins: the first body feels twice the
     mass along the chain.
 
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> float(articulated_inertia(chain_model(2), [0.0, 0.0]).A[0][0, 0])
     2.0
     """

@@ -27,9 +27,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import SingularConfigurationError, TopologyError
-from ..subspaces import _checked_gram, _effective_mobility, _percussion_space, _reactive_from_T, _solve
-from .projective import _state_arrays, reaction_space
+from planargeo.errors import SingularConfigurationError, TopologyError
+from planargeo.mechanics.subspaces import _checked_gram, _effective_mobility, _percussion_space, _reactive_from_T, _solve
+from planargeo.algorithms.projective import _state_arrays, reaction_space
 
 __all__ = ["ArticulatedMobilities", "mobility_recursion", "articulated_mobility"]
 
@@ -43,7 +43,7 @@ class ArticulatedMobilities:
     Lambda_inv : (N, 3, 3) articulated mobilities (7.31a, 7.38a); symmetric, positive semi-definite.
     b : (N, 3) articulated bias accelerations (7.31b, 7.38b).
     T, U, R : lists of body-inertia subspaces (6.36, 6.37) and reaction spaces (the basis of
-        :func:`planargeo.joints.reaction_space_of`: forces through the joint, couples; 7.16, 5.63).
+        :func:`planargeo.mechanics.joints.reaction_space_of`: forces through the joint, couples; 7.16, 5.63).
     """
 
     Lambda_inv: np.ndarray
@@ -72,10 +72,10 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_poi
     parents : sequence of N ints; must be the chain ``[-1, 0, ..., N-2]`` (the default).
     points : (N, 2), optional
         A point of each joint, for the reaction bases ``R`` of prismatic joints
-        (:func:`planargeo.joints.reaction_space_of`); default the origin.
+        (:func:`planargeo.mechanics.joints.reaction_space_of`); default the origin.
     joint_points : (N, 2), optional
         Each joint's point (pivot; placement point of a prismatic joint: the joint
-        frame's origin), where the singularity rule of :data:`planargeo.subspaces.COND_LIMIT`
+        frame's origin), where the singularity rule of :data:`planargeo.mechanics.subspaces.COND_LIMIT`
         is measured; default the origin.  The model-level functions pass the joint frames' origins.
 
     Returns
@@ -93,7 +93,7 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_poi
     --------
     Thesis 7.42 with ``m = L = 1``, ``rho = 1/2``: ``4 / (m (L^2 + 4 rho^2)) = 2``.
 
-    >>> from planargeo.screws import inertia_matrix
+    >>> from planargeo.screws.twists import inertia_matrix
     >>> r = mobility_recursion([inertia_matrix(1.0, [0.5, 0.0], 0.25)], [np.array([[0.0], [0.0], [1.0]])],
     ...                        np.zeros((1, 3)), np.zeros((1, 3)), [np.zeros(1)])
     >>> r.Lambda_inv[0].round(12) + 0.0
@@ -120,7 +120,7 @@ _EYE3.setflags(write=False)
 
 #: Backstop for the method's own 3×3 solves (``1 + U Rᵀ Λ⁻¹ I`` of 7.38, ``1 + Λ⁻¹ R Uᵀ A`` of 7.54):
 #: raise only when numerically singular (``cond ≥ 1/ε``).  Whether a configuration is singular is
-#: decided by the joints' rule (:data:`planargeo.subspaces.COND_LIMIT`, checked on every ``sᵀIs``)
+#: decided by the joints' rule (:data:`planargeo.mechanics.subspaces.COND_LIMIT`, checked on every ``sᵀIs``)
 #: as for every other method; these matrices inherit their conditioning from the joints' (measured
 #: up to ~30 × the joint's ``cond`` near the limit: a point-mass tip), so a tighter limit here
 #: would refuse states the other methods accept.
@@ -192,7 +192,7 @@ def articulated_mobility(model, q, qd=None, tau=None, f_ext=None) -> Articulated
 
     Parameters
     ----------
-    model : planargeo.model.Model
+    model : planargeo.mechanics.model.Model
         An unbranched chain (``model.is_chain``).
     q, qd, tau : array_like (nq,)
         State and joint torques (zero if omitted).
@@ -204,7 +204,7 @@ def articulated_mobility(model, q, qd=None, tau=None, f_ext=None) -> Articulated
     The tip of a double pendulum of unit links, at rest without gravity:
     ``a_2 = -Lambda_2^-1 f_3 + b_2`` with ``b_2 = 0``.
 
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> r = articulated_mobility(chain_model(2, gravity=(0, 0)), [0.0, 0.0])
     >>> float(np.abs(r.b).max())
     0.0

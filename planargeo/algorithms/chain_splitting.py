@@ -22,11 +22,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import SingularConfigurationError
-from .articulated_inertia import _articulated
-from ..subspaces import _solve
-from .articulated_mobility import _EYE3, SOLVE_COND_LIMIT, _check_chain, _cond, _mobility
-from .projective import _per_state, _state_arrays, force_propagator
+from planargeo.errors import SingularConfigurationError
+from planargeo.algorithms.articulated_inertia import _articulated
+from planargeo.mechanics.subspaces import _solve
+from planargeo.algorithms.articulated_mobility import _EYE3, SOLVE_COND_LIMIT, _check_chain, _cond, _mobility
+from planargeo.algorithms.projective import _per_state, _state_arrays, force_propagator
 
 _ZERO3 = np.zeros(3)
 
@@ -61,7 +61,7 @@ def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa
     (1, 0), at rest, with a unit upward push on body i (``b_i = [0, 0, 1]``):
     the second mass adds to the first, halving the acceleration.
 
-    >>> from planargeo.screws import inertia_matrix
+    >>> from planargeo.screws.twists import inertia_matrix
     >>> A2 = inertia_matrix(1.0, [1.0, 0.0], 1e-3)
     >>> s2 = np.array([[0.0], [-1.0], [1.0]])
     >>> T2 = A2 @ s2 / (s2.T @ A2 @ s2)
@@ -94,7 +94,7 @@ def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) 
     The example of :func:`split_acceleration`: the pin between the masses pushes
     the second one up with half the unit push (``f = I_2 a_1`` with ``a_1 = [0, 0, 0.5]``).
 
-    >>> from planargeo.screws import inertia_matrix
+    >>> from planargeo.screws.twists import inertia_matrix
     >>> A2 = inertia_matrix(1.0, [1.0, 0.0], 1e-3)
     >>> s2 = np.array([[0.0], [-1.0], [1.0]])
     >>> T2 = A2 @ s2 / (s2.T @ A2 @ s2)
@@ -138,12 +138,12 @@ def chain_split(I, S, kappa, p, tau, parents=None, joint_points=None) -> ChainSp
     Steps: articulated inertias (7.1.1), articulated mobilities (7.4.1),
     then every ``a_i`` directly by 7.54, every ``f_{i+1}`` by 7.56, and the
     joint accelerations by 6.110.  ``joint_points`` (N, 2): each joint's point, where the
-    singularity rule of :data:`planargeo.subspaces.COND_LIMIT` is measured (default the origin;
+    singularity rule of :data:`planargeo.mechanics.subspaces.COND_LIMIT` is measured (default the origin;
     :func:`mobility_split` passes the joint frames' origins).
 
     Examples
     --------
-    >>> from planargeo.screws import inertia_matrix
+    >>> from planargeo.screws.twists import inertia_matrix
     >>> I = [inertia_matrix(1.0, [0.5, 0.0], 1 / 12), inertia_matrix(1.0, [1.5, 0.0], 1 / 12)]
     >>> S = [np.array([[0.0], [0.0], [1.0]]), np.array([[0.0], [-1.0], [1.0]])]
     >>> chain_split(I, S, np.zeros((2, 3)), np.zeros((2, 3)), [np.ones(1), np.zeros(1)]).qdd.round(9)
@@ -180,7 +180,7 @@ def mobility_split(model, q, qd=None, tau=None, f_ext=None) -> ChainSplit:
 
     Examples
     --------
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> r = mobility_split(chain_model(2, gravity=(0, 0)), [0.0, 0.0], [0.0, 0.0], [1.0, 0.0])
     >>> r.qdd.round(9)
     array([ 1.71428571, -4.28571429])
@@ -195,7 +195,7 @@ def forward_dynamics_mobility_split(model, q, qd, tau, f_ext=None) -> np.ndarray
 
     Parameters
     ----------
-    model : planargeo.model.Model
+    model : planargeo.mechanics.model.Model
         An unbranched chain whose first body hangs from the ground.
     q, qd, tau : array_like (..., nq)
         Leading batch dimensions are solved state by state.
@@ -215,7 +215,7 @@ def forward_dynamics_mobility_split(model, q, qd, tau, f_ext=None) -> np.ndarray
 
     Examples
     --------
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> forward_dynamics_mobility_split(chain_model(1), [0.0], [0.0], [0.0]).round(6)
     array([-14.715])
     """
@@ -224,7 +224,7 @@ def forward_dynamics_mobility_split(model, q, qd, tau, f_ext=None) -> np.ndarray
 
 def _mobility_split_qdd(model, q, qd, tau, f_ext):
     """``qdd`` of one state by 7.54 and 6.110 (the forces 7.56 of :func:`mobility_split` are not needed)."""
-    from .articulated_inertia import _articulated
+    from planargeo.algorithms.articulated_inertia import _articulated
 
     data, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext, checked=True)
     _check_chain(parents, len(S))

@@ -15,10 +15,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..errors import SingularConfigurationError
-from ..kinematics import check_state, kinematics
-from ..model import Model
-from .rnea import inverse_dynamics
+from planargeo.errors import SingularConfigurationError
+from planargeo.mechanics.kinematics import check_state, kinematics
+from planargeo.mechanics.model import Model
+from planargeo.algorithms.rnea import inverse_dynamics
 
 __all__ = ["mass_matrix", "bias_forces", "forward_dynamics_crba", "SINGULAR_RCOND"]
 
@@ -51,7 +51,7 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
     Double pendulum of unit uniform links at q = 0, by hand:
     ``H11 = 1/3 + (1/12 + 1.5²) = 8/3``, ``H12 = 1/12 + 1.5·0.5 = 5/6``, ``H22 = 1/12 + 0.5² = 1/3``:
 
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> (mass_matrix(chain_model(2), [0.0, 0.0]) * 6).round(12)
     array([[16.,  5.],
            [ 5.,  2.]])
@@ -68,7 +68,7 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
         J = data.J
         return np.einsum("...nki,...nkl,...nlj->...ij", J, data.I, J)
     if method != "crba":
-        from ..errors import InputError
+        from planargeo.errors import InputError
 
         raise InputError(f"method must be 'crba' or 'jacobian', got {method!r}")
     Ic = data.I.copy()
@@ -116,7 +116,7 @@ def bias_forces(model: Model, q, qd, f_ext=None) -> np.ndarray:
     A unit rod at rest, horizontal: the gravity torque ``m g L / 2``; spinning
     without gravity: no torque (the centripetal force passes through the pivot):
 
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> bias_forces(chain_model(1), [0.0], [0.0])
     array([4.905])
     >>> bias_forces(chain_model(1, gravity=(0, 0)), [0.3], [5.0]).round(12)
@@ -147,7 +147,7 @@ def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     SingularConfigurationError
         If ``H`` is numerically singular: ``λ_min(H) ≤ SINGULAR_RCOND λ_max(H)``
         (``.cond = λ_max / λ_min``).  The dense reference keeps this rule of its
-        own, not the joints' rule of :data:`planargeo.subspaces.COND_LIMIT` that
+        own, not the joints' rule of :data:`planargeo.mechanics.subspaces.COND_LIMIT` that
         the recursive methods share: a joint whose ``sᵀAs`` vanishes need not
         make ``H`` ill-conditioned (a lone point-mass pendulum has ``H = m d²``,
         condition number 1), so ``crba`` may answer states they refuse
@@ -155,13 +155,13 @@ def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
 
     Examples
     --------
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> forward_dynamics_crba(chain_model(1), [0.0], [0.0], [0.0])     # -1.5 g / L
     array([-14.715])
 
     A welded body has no coordinates:
 
-    >>> from planargeo.model import Body, Joint, Model
+    >>> from planargeo.mechanics.model import Body, Joint, Model
     >>> welded = Model([Body(1.0, (0.5, 0.0), 0.1)], [Joint("fixed", (0.0, 0.0, 0.0))], [-1])
     >>> forward_dynamics_crba(welded, [], [], [])
     array([], dtype=float64)

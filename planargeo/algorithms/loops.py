@@ -1,7 +1,7 @@
 """Closed loops and contacts in stacked form (thesis 9.3-9.5).
 
-The tree of a :class:`~planargeo.model.Model` is cut open at its contacts
-(:class:`planargeo.contacts.Contact`), solved as an open tree, and the
+The tree of a :class:`~planargeo.mechanics.model.Model` is cut open at its contacts
+(:class:`planargeo.mechanics.contacts.Contact`), solved as an open tree, and the
 contact forces needed to close the loops are added (thesis 9.5):
 
 1. contact matrix ``G`` (9.49), branch matrix ``Υ = G Δ^{-1}`` (9.50),
@@ -31,11 +31,11 @@ import functools
 
 import numpy as np
 
-from ..contacts import contact_matrix, stacked_contact_spaces, validate_contacts
-from ..errors import InputError, ShapeError, SingularConfigurationError
-from ..kinematics import check_state, kinematics
-from ..model import Model
-from .stacked import blocks, stacked_solve, trunk, adjacency
+from planargeo.mechanics.contacts import contact_matrix, stacked_contact_spaces, validate_contacts
+from planargeo.errors import InputError, ShapeError, SingularConfigurationError
+from planargeo.mechanics.kinematics import check_state, kinematics
+from planargeo.mechanics.model import Model
+from planargeo.algorithms.stacked import blocks, stacked_solve, trunk, adjacency
 
 __all__ = ["LoopSolution", "loop_solve", "loop_condition", "forward_dynamics_loops", "constrained_dynamics_lagrange",
            "branch_matrix", "SINGULAR_COND"]
@@ -61,13 +61,13 @@ class LoopSolution:
     """All quantities of one constrained state (thesis 9.49-9.75; attributes named after the symbols).
 
     Reaction bases: ``xi`` are the components of the contact forces in the
-    contact reaction spaces ``B`` of :func:`planargeo.contacts.reaction_space`
+    contact reaction spaces ``B`` of :func:`planargeo.mechanics.contacts.reaction_space`
     (``F = B ξ``, 9.70-9.71): for a pin, the unit forces along x and y through
     the contact point; for a slider, the unit force normal to the slide through
     the contact point on body ``a`` (the slide direction turned by -90°, as in
     the thesis's 9.87), then the unit couple; for a weld, the identity.  These
     are the conventions of the joints' reaction spaces
-    (:func:`planargeo.joints.reaction_space`: forces through the joint, couples),
+    (:func:`planargeo.mechanics.joints.reaction_space`: forces through the joint, couples),
     except that a joint's slider normal is the direction turned by +90° (5.63):
     the thesis itself uses the two orientations, and the contact's follows 9.87
     so that ``xi`` compares with 9.90.  The open tree's joint reaction bases
@@ -97,8 +97,8 @@ class LoopSolution:
     mass (3, 1): at rest the pin carries its weight.  ``-F`` acts on the body,
     so ``ξ = [0, -m g]`` in the basis of unit forces along x and y through the pin.
 
-    >>> from planargeo.contacts import Contact
-    >>> from planargeo.model import Body, Joint, Model
+    >>> from planargeo.mechanics.contacts import Contact
+    >>> from planargeo.mechanics.model import Body, Joint, Model
     >>> m = Model([Body(2.0, (0.0, 0.0), 0.5)], [Joint("plane")], [-1])
     >>> pin = Contact("pin", 0, -1, point_a=(0.0, 0.0), point_b=(3.0, 1.0))
     >>> sol = loop_solve(m, [3.0, 1.0, 0.0], [0.0] * 3, [0.0] * 3, contacts=[pin])
@@ -178,8 +178,8 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
     is pinned to the ground at (1, 0).  In the crank angle ``φ`` its energy is
     ``T = 5/6 φ̇²``, ``V = 2 g sin φ``, so ``φ̈ = -6/5 g cos φ``:
 
-    >>> from planargeo.contacts import Contact
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.contacts import Contact
+    >>> from planargeo.mechanics.model import chain_model
     >>> pin = Contact("pin", 2, -1, point_a=(1.0, 0.0), point_b=(1.0, 0.0))
     >>> sol = loop_solve(chain_model(3), [1.2, -1.2, 1.2 - np.pi], [1.0, -1.0, 1.0], [0.0] * 3, contacts=[pin])
     >>> bool(abs(sol.qdd[0] - (-6 / 5 * 9.81 * np.cos(1.2))) < 1e-12)
@@ -313,7 +313,7 @@ def loop_condition(model: Model, q, contacts=None, *, prescribed=None) -> float:
     refuses it above :data:`SINGULAR_COND`.  Here a singular configuration
     returns the condition number found (``inf`` when exactly singular), also
     when it is the open tree's ``sᵀAs`` that is singular.  Used to watch a
-    closed-loop simulation for dead centres (:func:`planargeo.simulate_loops.simulate_loops`).
+    closed-loop simulation for dead centres (:func:`planargeo.simulate.loops.simulate_loops`).
 
     Examples
     --------
@@ -340,7 +340,7 @@ def forward_dynamics_loops(model: Model, q, qd, tau, f_ext=None, contacts=None, 
 
     Examples
     --------
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> forward_dynamics_loops(chain_model(1), [0.0], [0.0], [0.0]).round(3)    # no contacts: a tree
     array([-14.715])
     """
@@ -384,7 +384,7 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
 
     is solved densely.  Joint torques act as equal and opposite wrenches
     ``s (s^T s)^{-1} τ`` on body and parent.  Only the poses and velocities of
-    :func:`planargeo.kinematics.kinematics` are shared with the stacked code.
+    :func:`planargeo.mechanics.kinematics.kinematics` are shared with the stacked code.
 
     Returns
     -------
@@ -396,8 +396,8 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
     --------
     The four-bar of :func:`loop_solve`, ``φ̈ = -6/5 g cos φ``:
 
-    >>> from planargeo.contacts import Contact
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.contacts import Contact
+    >>> from planargeo.mechanics.model import chain_model
     >>> pin = Contact("pin", 2, -1, point_a=(1.0, 0.0), point_b=(1.0, 0.0))
     >>> ref = constrained_dynamics_lagrange(chain_model(3), [1.2, -1.2, 1.2 - np.pi], [1.0, -1.0, 1.0],
     ...                                     [0.0] * 3, contacts=[pin])

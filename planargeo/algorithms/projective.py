@@ -30,8 +30,8 @@ body ``i``'s parent (zero for the ground), so trees are handled as well as
 chains.
 
 Reaction basis (the meaning of ``mu``): every ``R_i`` is
-:func:`planargeo.joints.reaction_space_of`, the package's one definition
-(:func:`planargeo.joints.reaction_space`, thesis 4.8, 5.63, 7.16): for a
+:func:`planargeo.mechanics.joints.reaction_space_of`, the package's one definition
+(:func:`planargeo.mechanics.joints.reaction_space`, thesis 4.8, 5.63, 7.16): for a
 revolute joint at ``(x, y)`` the unit forces along x and y through the joint;
 for a prismatic joint along ``e`` the unit force along ``e⊥`` (``e`` turned by
 +90°) through the slider (the body frame's origin) and the unit couple; for a
@@ -39,8 +39,8 @@ revolute-prismatic joint the unit force along ``e⊥`` through the pin.  So with
 no joint force (``Q = 0``) ``mu`` is the joint's reaction force in those
 components; in general ``f = T Q + R mu`` first sets apart the force ``T Q`` on
 the axis of percussion (6.38).  ``T`` and ``U`` come from
-:func:`planargeo.subspaces.percussion_space` and
-:func:`planargeo.subspaces.reactive_acceleration_space` (one implementation,
+:func:`planargeo.mechanics.subspaces.percussion_space` and
+:func:`planargeo.mechanics.subspaces.reactive_acceleration_space` (one implementation,
 one singularity rule); ``qdd`` does not depend on the basis.
 """
 from __future__ import annotations
@@ -49,8 +49,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..joints import reaction_space_of
-from ..subspaces import _reactive_from_T, _solve, effective_mobility, percussion_space, reactive_acceleration_space
+from planargeo.mechanics.joints import reaction_space_of
+from planargeo.mechanics.subspaces import _reactive_from_T, _solve, effective_mobility, percussion_space, reactive_acceleration_space
 
 __all__ = [
     "reaction_space", "percussion_subspace", "reactive_subspace",
@@ -62,14 +62,14 @@ __all__ = [
 
 # ---------------------------------------------------------------------------
 # Subspaces (thesis 6.1, 6.30/6.105, 6.33/6.99): thin wrappers of the one
-# implementation each, in planargeo.joints and planargeo.subspaces
+# implementation each, in planargeo.mechanics.joints and planargeo.mechanics.subspaces
 # ---------------------------------------------------------------------------
 def reaction_space(s, point=(0.0, 0.0)) -> np.ndarray:
     """Reaction space ``R`` of the joint with motion space ``s`` (thesis 6.1, 7.16, 5.63).
 
-    The same basis everywhere: this is :func:`planargeo.joints.reaction_space_of`
+    The same basis everywhere: this is :func:`planargeo.mechanics.joints.reaction_space_of`
     (which reads kind, pivot and direction off ``s`` and calls
-    :func:`planargeo.joints.reaction_space`).  Revolute: unit forces along x
+    :func:`planargeo.mechanics.joints.reaction_space`).  Revolute: unit forces along x
     and y through the pivot; prismatic: the unit force along ``e⊥`` through
     ``point`` (on the slide) and the unit couple; revolute-prismatic: the unit
     force along ``e⊥`` through the pivot.
@@ -91,7 +91,7 @@ def reaction_space(s, point=(0.0, 0.0)) -> np.ndarray:
 def percussion_subspace(A, s, *, what: str = "sᵀAs") -> np.ndarray:
     """Active force subspace ``T = A s (sᵀAs)⁻¹`` (thesis 6.30, 6.105; 6.36 with ``I``).
 
-    Alias of :func:`planargeo.subspaces.percussion_space` with the arguments
+    Alias of :func:`planargeo.mechanics.subspaces.percussion_space` with the arguments
     in the order ``(A, s)``; the singularity rule and message are that
     function's (:class:`~planargeo.errors.SingularConfigurationError` with ``.cond``).
 
@@ -99,7 +99,7 @@ def percussion_subspace(A, s, *, what: str = "sᵀAs") -> np.ndarray:
     --------
     Thesis 7.40 (m = 1, L = 1, rho = 1/2: ``2L/(L^2 + 4 rho^2) = 1``):
 
-    >>> from planargeo.screws import inertia_matrix
+    >>> from planargeo.screws.twists import inertia_matrix
     >>> percussion_subspace(inertia_matrix(1.0, [0.5, 0.0], 0.25), [[0.0], [0.0], [1.0]]).ravel()
     array([0., 1., 1.])
     """
@@ -109,7 +109,7 @@ def percussion_subspace(A, s, *, what: str = "sᵀAs") -> np.ndarray:
 def reactive_subspace(A, R, *, s=None, T=None, what: str | None = None) -> np.ndarray:
     """Reactive acceleration subspace ``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹`` (thesis 6.45, 6.99, 6.37).
 
-    Alias of :func:`planargeo.subspaces.reactive_acceleration_space` with the
+    Alias of :func:`planargeo.mechanics.subspaces.reactive_acceleration_space` with the
     arguments in the order ``(A, R)``.  With ``s`` (and optionally ``T``) the
     inverse-free form ``U = (1 - s Tᵀ) R (RᵀR)⁻¹`` is used (point masses have
     a singular ``A``).  Thesis 6.33 misprints the inverse; see
@@ -119,7 +119,7 @@ def reactive_subspace(A, R, *, s=None, T=None, what: str | None = None) -> np.nd
     --------
     Thesis 7.40 (m = 1, L = 1, rho = 1/2):
 
-    >>> from planargeo.screws import inertia_matrix
+    >>> from planargeo.screws.twists import inertia_matrix
     >>> U = reactive_subspace(inertia_matrix(1.0, [0.5, 0.0], 0.25), reaction_space([[0.0], [0.0], [1.0]]))
     >>> np.round(U, 12) + 0.0
     array([[ 1.,  0.],
@@ -135,7 +135,7 @@ def reactive_subspace(A, R, *, s=None, T=None, what: str | None = None) -> np.nd
 
 
 def _active_mobility(A, s, what):
-    """``s (sᵀAs)⁻¹ sᵀ`` = ``s Tᵀ A⁻¹`` (thesis 6.93, 7.31a): :func:`planargeo.subspaces.effective_mobility`."""
+    """``s (sᵀAs)⁻¹ sᵀ`` = ``s Tᵀ A⁻¹`` (thesis 6.93, 7.31a): :func:`planargeo.mechanics.subspaces.effective_mobility`."""
     return effective_mobility(s, A, what=what)
 
 
@@ -168,7 +168,7 @@ def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, R=None) -> np.nda
     A unit point mass at (1, 0) pinned at the origin, pushed up by a unit force
     through itself (``p = -g``): it turns at 1 rad/s².
 
-    >>> from planargeo.screws import inertia_matrix
+    >>> from planargeo.screws.twists import inertia_matrix
     >>> acceleration_propagator(inertia_matrix(1.0, [1.0, 0.0], 0.0), [[0.0], [0.0], [1.0]], [0.0],
     ...                         [0.0, -1.0, -1.0], np.zeros(3), np.zeros(3), np.zeros(3))
     array([0., 0., 1.])
@@ -198,7 +198,7 @@ def force_propagator(I, s, Q, p, f_next, a_prev, kappa, R=None, *, T=None) -> np
     The pinned point mass of :func:`acceleration_propagator`, at rest with the
     base still: the pin carries the whole push (``f = I a + p`` with ``a = [0, 0, 1]``).
 
-    >>> from planargeo.screws import inertia_matrix
+    >>> from planargeo.screws.twists import inertia_matrix
     >>> f = force_propagator(inertia_matrix(1.0, [1.0, 0.0], 0.0), [[0.0], [0.0], [1.0]], [0.0],
     ...                      [0.0, -1.0, -1.0], np.zeros(3), np.zeros(3), np.zeros(3))
     >>> np.round(f, 12) + 0.0
@@ -220,10 +220,10 @@ def force_propagator(I, s, Q, p, f_next, a_prev, kappa, R=None, *, T=None) -> np
 def _state_arrays(model, q, qd, tau, f_ext, checked=False):
     """Kinematics of one state: (data, I, S list, kappa, p, parents, tau list).
 
-    ``checked``: the arguments come out of :func:`planargeo.kinematics.check_state`
+    ``checked``: the arguments come out of :func:`planargeo.mechanics.kinematics.check_state`
     for one state already (as in :func:`_per_state`), so they are not validated again.
     """
-    from ..kinematics import _kinematics_scalar, check_state
+    from planargeo.mechanics.kinematics import _kinematics_scalar, check_state
 
     if not checked:
         q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
@@ -239,7 +239,7 @@ def _state_arrays(model, q, qd, tau, f_ext, checked=False):
 
 
 def _batch_error(shape):
-    from ..errors import ShapeError
+    from planargeo.errors import ShapeError
 
     return ShapeError(f"q must describe one state (shape (nq,)), got batch shape {shape}; "
                       "loop over states or use planargeo.algorithms.aba for batches")
@@ -247,7 +247,7 @@ def _batch_error(shape):
 
 def _per_state(fn, model, q, qd, tau, f_ext):
     """Apply the single-state solver ``fn(model, q, qd, tau, f_ext) -> (nq,)`` over batch dimensions."""
-    from ..kinematics import check_state
+    from planargeo.mechanics.kinematics import check_state
 
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
     if shape == ():
@@ -271,7 +271,7 @@ class ProjectiveWorkspace:
     """Everything the projective solution computes, per body ``i`` (thesis 6.99-6.110; lists of arrays).
 
     ``mu[i]`` are components in ``R[i]``, the basis of
-    :func:`planargeo.joints.reaction_space_of` (unit forces through the joint, couples).
+    :func:`planargeo.mechanics.joints.reaction_space_of` (unit forces through the joint, couples).
 
     Attributes
     ----------
@@ -314,19 +314,19 @@ def projective_solve(I, S, kappa, p, tau, parents=None, points=None, joint_point
     tau : list of N arrays (k_i,): joint torques ``Q_i``.
     parents : sequence of N ints (``-1`` ground), default a chain.
     points : (N, 2), optional
-        A point of each joint for the reaction bases (:func:`planargeo.joints.reaction_space_of`:
+        A point of each joint for the reaction bases (:func:`planargeo.mechanics.joints.reaction_space_of`:
         used by prismatic joints, whose reaction force passes through it); default the origin.
         :func:`projective_workspace` passes each body's frame origin.
     joint_points : (N, 2), optional
         Each joint's point (pivot; placement point of a prismatic joint: the joint
-        frame's origin), where the singularity rule of :data:`planargeo.subspaces.COND_LIMIT`
+        frame's origin), where the singularity rule of :data:`planargeo.mechanics.subspaces.COND_LIMIT`
         is measured; default the origin.  The model-level functions pass the joint frames' origins.
 
     Returns
     -------
     ProjectiveWorkspace
         ``mu[i]`` are the reaction components in the basis ``R[i]`` of
-        :func:`planargeo.joints.reaction_space_of` (forces along x and y through
+        :func:`planargeo.mechanics.joints.reaction_space_of` (forces along x and y through
         a revolute joint; force along ``e⊥`` through the slider and a couple
         for a prismatic joint), so that ``f[i] = T[i] Q[i] + R[i] mu[i]``.
 
@@ -334,13 +334,13 @@ def projective_solve(I, S, kappa, p, tau, parents=None, points=None, joint_point
     --------
     One unit point mass at (1, 0) on a pin at the origin, a unit torque: ``qdd = 1``.
 
-    >>> from planargeo.screws import inertia_matrix
+    >>> from planargeo.screws.twists import inertia_matrix
     >>> ws = projective_solve([inertia_matrix(1.0, [1.0, 0.0], 0.0)], [np.array([[0.0], [0.0], [1.0]])],
     ...                       np.zeros((1, 3)), np.zeros((1, 3)), [np.array([1.0])])
     >>> ws.qdd, ws.a[0]
     (array([1.]), array([0., 0., 1.]))
     """
-    from .articulated_inertia import articulated_recursion
+    from planargeo.algorithms.articulated_inertia import articulated_recursion
 
     I = np.asarray(I, dtype=float)
     N = I.shape[0]
@@ -378,7 +378,7 @@ def projective_workspace(model, q, qd=None, tau=None, f_ext=None) -> ProjectiveW
 
     Examples
     --------
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> ws = projective_workspace(chain_model(2, gravity=(0, 0)), [0.0, 0.0], [0.0, 0.0], [1.0, 0.0])
     >>> [round(float(x), 12) for x in ws.qdd]
     [1.714285714286, -4.285714285714]
@@ -395,7 +395,7 @@ def _projective_qdd(model, q, qd, tau, f_ext):
     so ``R_i``, ``U_i``, ``gamma_i``, ``mu_i`` and ``f_i`` (the drawing workspace
     of :func:`projective_workspace`) are not built.
     """
-    from .articulated_inertia import _articulated
+    from planargeo.algorithms.articulated_inertia import _articulated
 
     data, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext, checked=True)
     A, d, T = _articulated(I, S, kappa, p, taus, parents, data.origin)
@@ -418,7 +418,7 @@ def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
 
     Parameters
     ----------
-    model : planargeo.model.Model
+    model : planargeo.mechanics.model.Model
     q, qd, tau : array_like (..., nq)
         Leading batch dimensions are solved state by state.
     f_ext : array_like (..., N, 3), optional
@@ -438,7 +438,7 @@ def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
     A unit slender link lying along +x on a pin at the origin, under gravity:
     ``qdd = -g (L/2) / (L^2/3) = -14.715``.
 
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> forward_dynamics_projective(chain_model(1), [0.0], [0.0], [0.0]).round(6)
     array([-14.715])
     """

@@ -12,8 +12,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..kinematics import check_state, kinematics
-from ..model import Data, Model
+from planargeo.mechanics.kinematics import check_state, kinematics
+from planargeo.mechanics.model import Data, Model
 
 __all__ = ["inverse_dynamics", "newton_euler"]
 
@@ -39,7 +39,7 @@ def newton_euler(model: Model, q, qd, qdd, f_ext=None) -> Data:
     --------
     Holding a horizontal uniform rod (m = 1, L = 1) still takes ``τ = m g L / 2``:
 
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> w = newton_euler(chain_model(1), [0.0], [0.0], [0.0])
     >>> w.tau, w.f[0]    # the joint carries the weight and the torque (a couple at the pivot)
     (array([4.905]), array([0.   , 9.81 , 4.905]))
@@ -88,7 +88,7 @@ def inverse_dynamics(model: Model, q, qd, qdd, f_ext=None, *, return_forces: boo
     --------
     A unit rod about its end (``J_pivot = m L²/3 = 1/3``), no gravity:
 
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> inverse_dynamics(chain_model(1, gravity=(0, 0)), [0.0], [0.0], [3.0])
     array([1.])
 

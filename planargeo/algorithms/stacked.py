@@ -38,13 +38,13 @@ import functools
 
 import numpy as np
 
-from .._validate import as_array
-from ..errors import ShapeError, TopologyError
-from ..joints import reaction_space_of
-from ..kinematics import _kinematics_scalar, check_state
-from ..subspaces import (_checked_gram, _effective_mobility, _percussion_space, joint_scale,
+from planargeo._validate import as_array
+from planargeo.errors import ShapeError, TopologyError
+from planargeo.mechanics.joints import reaction_space_of
+from planargeo.mechanics.kinematics import _kinematics_scalar, check_state
+from planargeo.mechanics.subspaces import (_checked_gram, _effective_mobility, _percussion_space, joint_scale,
                          reactive_acceleration_space)
-from ..model import Model, _cycle_error, _find_cycle
+from planargeo.mechanics.model import Model, _cycle_error, _find_cycle
 
 __all__ = ["adjacency", "trunk", "blocks", "reaction_basis", "quake_space", "StackedSolution", "stacked_solve",
            "joint_conditions",
@@ -163,7 +163,7 @@ def blocks(X, k: int = 3) -> np.ndarray:
 def reaction_basis(s, point=(0.0, 0.0)) -> np.ndarray:
     """Reaction space ``R`` of a joint with motion space ``s`` (``sᵀR = 0``; thesis 6.1, 7.16, 5.63).
 
-    Kept for compatibility: this is :func:`planargeo.joints.reaction_space_of`,
+    Kept for compatibility: this is :func:`planargeo.mechanics.joints.reaction_space_of`,
     the package's one reaction basis (forces through the joint, couples), not
     an orthonormal basis.
 
@@ -186,7 +186,7 @@ def articulated_quantities(model: Model, data, tau):
     Recursion from the tips to the root (thesis 7.7a/7.7b, stacked 9.27/9.28
     corrected, see ``docs/errata.md``): ``A = I + C^T R U^T A C`` and
     ``d = p + C^T T Q + C^T R U^T (A κ + d)``, with ``T = A S (S^T A S)^{-1}``
-    (9.19, 6.105; built by :func:`planargeo.subspaces.percussion_space`) and
+    (9.19, 6.105; built by :func:`planargeo.mechanics.subspaces.percussion_space`) and
     ``R U^T = 1 - T s^T`` (7.8), which needs neither a reaction basis nor ``A^{-1}``
     (``A`` may be singular for point masses).
 
@@ -194,7 +194,7 @@ def articulated_quantities(model: Model, data, tau):
     ----------
     model : Model
     data : Data
-        Kinematics of the state (:func:`planargeo.kinematics.kinematics`).
+        Kinematics of the state (:func:`planargeo.mechanics.kinematics.kinematics`).
     tau : array_like (nq,)
         Joint forces ``Q``.
 
@@ -205,7 +205,7 @@ def articulated_quantities(model: Model, data, tau):
         ``P = R U^T`` (3×3), ``points`` (the body frame origins, used for
         the reaction bases of :func:`quake_space`) and ``joint_points`` (N, 2) (the
         joint frames' origins, where the singularity rule of
-        :data:`planargeo.subspaces.COND_LIMIT` is measured), ``gram``: per body
+        :data:`planargeo.mechanics.subspaces.COND_LIMIT` is measured), ``gram``: per body
         ``(A s, sᵀAs)`` already checked by that rule (``None`` for a fixed joint).
 
     Raises
@@ -218,8 +218,8 @@ def articulated_quantities(model: Model, data, tau):
     Two unit slender links in line on pins: the first body feels twice the
     mass along the chain (thesis 7.20, ``m_x = 2m``).
 
-    >>> from planargeo.model import chain_model
-    >>> from planargeo.kinematics import kinematics
+    >>> from planargeo.mechanics.model import chain_model
+    >>> from planargeo.mechanics.kinematics import kinematics
     >>> m = chain_model(2)
     >>> art = articulated_quantities(m, kinematics(m, [0.0, 0.0]), np.zeros(2))
     >>> float(art["A"][0][0, 0]), bool(np.allclose(art["P"][1] @ art["T"][1], 0))
@@ -254,8 +254,8 @@ def joint_conditions(model: Model, q) -> np.ndarray:
     """Scale-free condition number of every joint's ``sᵀAs`` at ``q`` (thesis 7.7a, 6.105; the singular case of 3.6).
 
     ``cond_i = ‖A_i‖ ‖s_i‖² / σ_min(s_iᵀ A_i s_i)`` (Frobenius norms; ``A_i`` and
-    ``s_i`` at the joint's point, :func:`planargeo.subspaces.joint_scale`), the
-    package's singularity rule (:data:`planargeo.subspaces.COND_LIMIT` ``= 1e12``;
+    ``s_i`` at the joint's point, :func:`planargeo.mechanics.subspaces.joint_scale`), the
+    package's singularity rule (:data:`planargeo.mechanics.subspaces.COND_LIMIT` ``= 1e12``;
     invariant under moving the whole mechanism), with ``A_i`` the articulated inertias of the
     tree (``A = I + C^T R U^T A C``).  Unlike the forward dynamics it never
     raises: a singular joint gets ``inf`` (and is treated as locked for its
@@ -270,7 +270,7 @@ def joint_conditions(model: Model, q) -> np.ndarray:
     so ``cond ≈ √5 / x²``; the slider (its point: the pivot) has ``sᵀIs = m`` and
     ``‖I‖ = m √(2 + 2x² + x⁴)`` there, so ``cond = √(2 + 2x² + x⁴)``.
 
-    >>> from planargeo.model import Body, Joint, Model
+    >>> from planargeo.mechanics.model import Body, Joint, Model
     >>> m = Model([Body(1.0), Body(1.0)], [Joint("revolute"), Joint("prismatic")], [-1, 0])
     >>> c = joint_conditions(m, [0.0, 1e-3])
     >>> round(float(c[0]) * 1e-6, 3), round(float(c[1]), 3)
@@ -306,10 +306,10 @@ def joint_conditions(model: Model, q) -> np.ndarray:
 def quake_space(s, T, R=None, point=(0.0, 0.0)):
     """Reaction basis ``R`` and quake space ``U`` of one joint (thesis 9.20, 6.99; 6.33 corrected).
 
-    ``R`` is :func:`planargeo.joints.reaction_space_of` (forces through the
+    ``R`` is :func:`planargeo.mechanics.joints.reaction_space_of` (forces through the
     joint, couples; ``point`` places the force of a prismatic joint) unless
     given, and ``U = A^{-1} R (R^T A^{-1} R)^{-1}`` comes from
-    :func:`planargeo.subspaces.reactive_acceleration_space` in its inverse-free
+    :func:`planargeo.mechanics.subspaces.reactive_acceleration_space` in its inverse-free
     form ``(1 - s T^T) R (R^T R)^{-1}`` (6.75), so ``A`` is not needed.
 
     Examples
@@ -376,7 +376,7 @@ def articulation_matrix(C3, P) -> np.ndarray:
 class StackedSolution:
     """All stacked quantities of one state (thesis 9.17-9.43; attributes named after the symbols).
 
-    Reaction basis: ``R`` holds each joint's :func:`planargeo.joints.reaction_space_of`
+    Reaction basis: ``R`` holds each joint's :func:`planargeo.mechanics.joints.reaction_space_of`
     (unit forces through the joint, couples; thesis 7.16, 5.63), the same as
     :mod:`planargeo.algorithms.projective`, so ``U^T f`` gives the same ``μ``.
 
@@ -401,7 +401,7 @@ class StackedSolution:
     (With a joint torque ``Q``, ``f = T Q + R μ`` sets the percussion-axis
     force ``T Q`` apart first, 6.38.)
 
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> sol = stacked_solve(chain_model(1), [0.0], [0.0], [0.0])
     >>> sol.R
     array([[1., 0.],
@@ -432,7 +432,7 @@ class StackedSolution:
 
     @property
     def R(self) -> np.ndarray:
-        """Block-diagonal reaction spaces ``{{R_i}}`` (``S^T R = 0``; :func:`planargeo.joints.reaction_space_of`: forces through the joints, couples)."""
+        """Block-diagonal reaction spaces ``{{R_i}}`` (``S^T R = 0``; :func:`planargeo.mechanics.joints.reaction_space_of`: forces through the joints, couples)."""
         return self._RU()[0]
 
     @property
@@ -468,7 +468,7 @@ class StackedSolution:
         --------
         The unit link of :func:`stacked_mobility`: a unit couple turns it at 3 rad/s².
 
-        >>> from planargeo.model import chain_model
+        >>> from planargeo.mechanics.model import chain_model
         >>> sol = stacked_solve(chain_model(1), [0.0], [0.0], [0.0])
         >>> sol.mobility_times(np.array([[0.0], [0.0], [1.0]])).ravel().round(12) + 0.0
         array([0., 0., 3.])
@@ -510,7 +510,7 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
 
     Examples
     --------
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> sol = stacked_solve(chain_model(1), [0.0], [0.0], [0.0])
     >>> round(float(sol.qdd[0]), 6)                      # uniform rod from its end: -3g/(2L)
     -14.715
@@ -577,7 +577,7 @@ def stacked_mobility(sol: StackedSolution) -> np.ndarray:
     A single unit link on a pin at the origin (``ρ² = 1/12``): a unit couple
     turns it at ``1/(m(ρ² + L²/4)) = 3`` rad/s² (thesis 7.42).
 
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> Phi = stacked_mobility(stacked_solve(chain_model(1), [0.0], [0.0], [0.0]))
     >>> Phi.round(12) + 0.0
     array([[0., 0., 0.],
@@ -627,8 +627,8 @@ def tree_mobilities(model: Model, data, tau, art=None, *, siblings: bool = True)
     Thesis 7.42 (``m = L = 1``, ``ρ² = 1/12``, pin at the origin): the single
     link's mobility about its pivot is ``1/(m(ρ² + L²/4)) = 3``.
 
-    >>> from planargeo.model import chain_model
-    >>> from planargeo.kinematics import kinematics
+    >>> from planargeo.mechanics.model import chain_model
+    >>> from planargeo.mechanics.kinematics import kinematics
     >>> m = chain_model(1, gravity=(0.0, 0.0))
     >>> Lam, b = tree_mobilities(m, kinematics(m, [0.0]), np.zeros(1))
     >>> Lam[0].round(12) + 0.0, b[0] + 0.0
@@ -699,7 +699,7 @@ def direct_accelerations(sol: StackedSolution, Lambda_inv, b) -> np.ndarray:
 
     Examples
     --------
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> m = chain_model(2, gravity=(0.0, 0.0))
     >>> sol = stacked_solve(m, [0.0, 0.0], [0.0, 0.0], [1.0, 0.0])
     >>> a = direct_accelerations(sol, *tree_mobilities(m, sol.data, np.array([1.0, 0.0])))
@@ -732,14 +732,14 @@ def forward_dynamics_stacked(model: Model, q, qd, tau, f_ext=None, *, method: st
 
     Examples
     --------
-    >>> from planargeo.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> m = chain_model(2, gravity=(0.0, 0.0))
     >>> forward_dynamics_stacked(m, [0.0, 0.0], [0.0, 0.0], [1.0, 0.0]).round(6)
     array([ 1.714286, -4.285714])
     >>> forward_dynamics_stacked(m, [0.0, 0.0], [0.0, 0.0], [1.0, 0.0], method="direct").round(6)
     array([ 1.714286, -4.285714])
     """
-    from ..errors import InputError
+    from planargeo.errors import InputError
 
     if method not in ("articulation", "direct"):
         raise InputError(f"method must be 'articulation' or 'direct', got {method!r}")

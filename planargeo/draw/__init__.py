@@ -12,13 +12,13 @@ Math modules never import matplotlib; this package imports the math.
   ``draw_joint_split``;
 * :mod:`~planargeo.draw.charts`: curves over a parameter;
 * :mod:`~planargeo.draw.style`: the one visual language (Okabe-Ito roles, fixed rcParams);
-* :mod:`~planargeo.draw.gallery`: ``planargeo gallery [--out DIR] [--check]``.
+* :mod:`~planargeo.gallery.build`: ``planargeo gallery [--out DIR] [--check]``.
 """
-from .artists import (ConicArtist, LineArtist, PointArtist, plot_conic, plot_inertia,  # noqa: F401
+from planargeo.draw.artists import (ConicArtist, LineArtist, PointArtist, plot_conic, plot_inertia,  # noqa: F401
                       plot_line, plot_point)
-from .constructions import (draw_decomposition, draw_percussion, draw_polar_exterior,  # noqa: F401
+from planargeo.draw.constructions import (draw_decomposition, draw_percussion, draw_polar_exterior,  # noqa: F401
                             draw_polar_interior, draw_power, draw_projective_step, draw_tangent,
                             draw_twist_split, draw_twist_sum, draw_wrench_split, draw_wrench_sum)
-from .mechanism import (draw_body, draw_ground, draw_joint_split, draw_link, draw_model,  # noqa: F401
+from planargeo.draw.mechanism import (draw_body, draw_ground, draw_joint_split, draw_link, draw_model,  # noqa: F401
                         draw_pin, draw_slider)
-from .style import COLORS, OKABE_ITO, rc_context, style  # noqa: F401
+from planargeo.draw.style import COLORS, OKABE_ITO, rc_context, style  # noqa: F401

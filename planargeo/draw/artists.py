@@ -31,9 +31,9 @@ from matplotlib.path import Path
 from matplotlib.text import Text
 from matplotlib.transforms import Affine2D, IdentityTransform
 
-from .._validate import as_array, as_vec3
-from ..errors import InputError
-from .style import style as _style
+from planargeo._validate import as_array, as_vec3
+from planargeo.errors import InputError
+from planargeo.draw.style import style as _style
 
 __all__ = [
     "PointArtist", "LineArtist", "ConicArtist",

@@ -1,7 +1,7 @@
 """Charts (curves over a parameter) in the package style: Figs 7.4, 7.6-7.8, 7.10."""
 from __future__ import annotations
 
-from .style import OKABE_ITO, LINEWIDTHS
+from planargeo.draw.style import OKABE_ITO, LINEWIDTHS
 
 __all__ = ["CURVE_COLORS", "plot_curves", "polar_curves"]
 

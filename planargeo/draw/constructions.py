@@ -2,7 +2,7 @@
 
 Every function takes the quantities (arrays in the package's coordinates, or
 planargeo objects), computes what the construction needs with the math modules
-(:mod:`planargeo.projective`, conic polarity ``C p`` / ``C⁻¹ l``, twist and
+(:mod:`planargeo.geometry.projective`, conic polarity ``C p`` / ``C⁻¹ l``, twist and
 wrench sums) and draws it with the artists of :mod:`planargeo.draw.artists`.
 They take ``ax=None`` (current axes) and return a dict of the artists made,
 keyed by name, so a caller (a widget) can update them.
@@ -16,13 +16,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..conics import (line_conic_intersections, polar, polar_construction_exterior,
+from planargeo.geometry.conics import (line_conic_intersections, polar, polar_construction_exterior,
                       polar_construction_interior)
-from ..inertia import centre_of_mass, percussion_axis
-from ..projective import from_direction, from_xy, join, meet, to_xy
-from ..screws import bias_force, kappa
-from .artists import _mat, _vec, plot_conic, plot_line, plot_point
-from .style import COLORS, style, sum_style
+from planargeo.screws.inertia import centre_of_mass, percussion_axis
+from planargeo.geometry.projective import from_direction, from_xy, join, meet, to_xy
+from planargeo.screws.twists import bias_force, kappa
+from planargeo.draw.artists import _mat, _vec, plot_conic, plot_line, plot_point
+from planargeo.draw.style import COLORS, style, sum_style
 
 __all__ = [
     "line_conic_points", "tangent_points", "label",
@@ -66,7 +66,7 @@ def draw_dimension(ax, p, q, text, *, offset=0.0, color=None, fontsize=7, at=0.5
     d = q - p
     L = np.hypot(*d)
     if L == 0.0:
-        from ..errors import InputError
+        from planargeo.errors import InputError
 
         raise InputError("draw_dimension: p and q must be distinct points")
     n = np.array([-d[1], d[0]]) / L
@@ -83,7 +83,7 @@ def draw_dimension(ax, p, q, text, *, offset=0.0, color=None, fontsize=7, at=0.5
 # --------------------------------------------------------------------------- conic helpers
 def line_conic_points(C, L) -> list[np.ndarray]:
     """Real common points of line ``L`` and conic ``C`` (0 or 2 homogeneous points; GEO's
-    :func:`planargeo.conics.line_conic_intersections`)."""
+    :func:`planargeo.geometry.conics.line_conic_intersections`)."""
     X, real = line_conic_intersections(_mat(C, "C"), _vec(L, "L"))
     return [X[0], X[1]] if bool(real) else []
 
@@ -115,7 +115,7 @@ def draw_twist_sum(v1, v2, ax=None, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v
     >>> import matplotlib
     >>> matplotlib.use("Agg")
     >>> import matplotlib.pyplot as plt
-    >>> from planargeo.screws import unit_rotation
+    >>> from planargeo.screws.twists import unit_rotation
     >>> out = draw_twist_sum(unit_rotation([0, 0]), 2 * unit_rotation([3, 0]), plt.figure().gca())
     >>> out["v3"].get_xy()          # beta = 2 / 3 of the way from Q1 to Q2 (4.12-4.13)
     array([2., 0.])
@@ -426,7 +426,7 @@ def draw_power(v, I, ax=None, *, f_angle=0.6, a_distance=1.6,
 # --------------------------------------------------------------------------- T/U decompositions
 def _decomposition(s, R, A):
     """``(s, R, A, T, U)`` of a joint completed by an inertia (thesis 6.36–6.37, 6.45)."""
-    from ..subspaces import Decomposition
+    from planargeo.mechanics.subspaces import Decomposition
 
     dec = Decomposition(s, R, A)
     return dec.s, dec.R, dec.A, dec.T, dec.U
@@ -482,8 +482,8 @@ def draw_decomposition(s, R, A, ax=None, *, reactive="U", labels=None, anchors=N
 
     >>> import matplotlib; matplotlib.use("Agg")
     >>> import matplotlib.pyplot as plt
-    >>> from planargeo.joints import revolute
-    >>> from planargeo.screws import inertia_matrix
+    >>> from planargeo.mechanics.joints import revolute
+    >>> from planargeo.screws.twists import inertia_matrix
     >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
     >>> out = draw_decomposition(j.s, j.R, A, plt.figure().gca())
     >>> sorted(k for k in out if k != "values")
@@ -496,7 +496,7 @@ def draw_decomposition(s, R, A, ax=None, *, reactive="U", labels=None, anchors=N
     >>> plt.close("all")
     """
     if reactive not in ("U", "inverse"):
-        from ..errors import InputError
+        from planargeo.errors import InputError
 
         raise InputError(f"reactive must be 'U' or 'inverse', got {reactive!r}")
     ax = _ax(ax)
@@ -560,7 +560,7 @@ def _draw_split(parts, show, T, ax, names, text_offsets, scale, arrow_length, sh
 def _parts_arg(parts):
     show = tuple(int(p) for p in parts)
     if not show or any(p not in (1, 2) for p in show):
-        from ..errors import InputError
+        from planargeo.errors import InputError
 
         raise InputError(f"parts must be a non-empty selection of 1 and 2, got {parts!r}")
     return show
@@ -605,8 +605,8 @@ def draw_twist_split(s, R, A, a, ax=None, *, parts=(1, 2),
     --------
     >>> import matplotlib; matplotlib.use("Agg")
     >>> import matplotlib.pyplot as plt
-    >>> from planargeo.joints import revolute
-    >>> from planargeo.screws import inertia_matrix, unit_rotation
+    >>> from planargeo.mechanics.joints import revolute
+    >>> from planargeo.screws.twists import inertia_matrix, unit_rotation
     >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
     >>> out = draw_twist_split(j.s, j.R, A, unit_rotation([2.0, 1.0]), plt.figure().gca())
     >>> v = out["values"]
@@ -618,7 +618,7 @@ def draw_twist_split(s, R, A, a, ax=None, *, parts=(1, 2),
     """
     show = _parts_arg(parts)
     ax = _ax(ax)
-    from ..subspaces import Decomposition
+    from planargeo.mechanics.subspaces import Decomposition
 
     dec = Decomposition(s, R, A)
     T, U, A = dec.T, dec.U, dec.A
@@ -650,8 +650,8 @@ def draw_wrench_split(s, R, A, f, ax=None, *, parts=(1, 2),
     --------
     >>> import matplotlib; matplotlib.use("Agg")
     >>> import matplotlib.pyplot as plt
-    >>> from planargeo.joints import revolute
-    >>> from planargeo.screws import inertia_matrix
+    >>> from planargeo.mechanics.joints import revolute
+    >>> from planargeo.screws.twists import inertia_matrix
     >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
     >>> f = np.array([0.0, 1.0, 2.0])                 # 1 N upwards on the line x = 2 (4.27)
     >>> out = draw_wrench_split(j.s, j.R, A, f, plt.figure().gca(), parts=[1])
@@ -662,7 +662,7 @@ def draw_wrench_split(s, R, A, f, ax=None, *, parts=(1, 2),
     """
     show = _parts_arg(parts)
     ax = _ax(ax)
-    from ..subspaces import Decomposition
+    from planargeo.mechanics.subspaces import Decomposition
 
     dec = Decomposition(s, R, A)
     T, U, A = dec.T, dec.U, dec.A
@@ -695,8 +695,8 @@ def draw_projective_step(s, R, A, a_prev, a, kappa, ax=None, *,
     --------
     >>> import matplotlib; matplotlib.use("Agg")
     >>> import matplotlib.pyplot as plt
-    >>> from planargeo.joints import revolute
-    >>> from planargeo.screws import inertia_matrix, unit_rotation
+    >>> from planargeo.mechanics.joints import revolute
+    >>> from planargeo.screws.twists import inertia_matrix, unit_rotation
     >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
     >>> a = 2.0 * j.s[:, 0]                            # turning about the joint at 2 rad/s²
     >>> out = draw_projective_step(j.s, j.R, A, np.zeros(3), a, np.zeros(3), plt.figure().gca())

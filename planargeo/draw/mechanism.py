@@ -11,8 +11,8 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.patches import Circle, Polygon, Rectangle
 
-from .artists import plot_line
-from .style import COLORS, LINEWIDTHS
+from planargeo.draw.artists import plot_line
+from planargeo.draw.style import COLORS, LINEWIDTHS
 
 __all__ = ["link_polygon", "draw_body", "draw_link", "draw_pin", "draw_ground", "draw_slider",
            "draw_frame", "draw_com", "draw_joint_split", "transform_shape", "draw_contact",
@@ -189,8 +189,8 @@ def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None, ga
     --------
     >>> import matplotlib; matplotlib.use("Agg")
     >>> import matplotlib.pyplot as plt
-    >>> from planargeo.joints import revolute
-    >>> from planargeo.screws import inertia_matrix
+    >>> from planargeo.mechanics.joints import revolute
+    >>> from planargeo.screws.twists import inertia_matrix
     >>> j = revolute([0.0, 0.0])
     >>> A = inertia_matrix(2.0, [1.0, 0.0], 0.3)
     >>> f = np.array([0.0, 1.0, 2.0])                     # 1 N upwards on the line x = 2 (4.27)
@@ -203,7 +203,7 @@ def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None, ga
     ([2.0, -0.5], [2.0, 0.5])
     >>> plt.close(fig)
     """
-    from ..subspaces import Decomposition
+    from planargeo.mechanics.subspaces import Decomposition
 
     ax = _ax(ax)
     dec = Decomposition(s, R, A)
@@ -277,15 +277,15 @@ def slider_guide(contact, pose, body_shape=None, *, clearance=0.04, margin=None)
 
     Examples
     --------
-    >>> from planargeo.contacts import Contact
+    >>> from planargeo.mechanics.contacts import Contact
     >>> c = Contact("slider", 0, -1, point_a=(0.5, 0.0), direction=(0.0, 1.0), angle=np.pi / 2)
     >>> pose = np.array([[0.0, 2.0, np.pi / 2]])            # body a upright on the line x = 0
     >>> p0, e, n, hw, (s0, s1) = slider_guide(c, pose, link_polygon([0, 2], [0, 3], 0.3))
     >>> e.round(12), n.round(12), round(hw, 6), (round(s0, 6), round(s1, 6))
     (array([0., 1.]), array([-1.,  0.]), 0.19, (1.55, 3.45))
     """
-    from ..contacts import motion_space, world_point
-    from .figures._layout import shape_points
+    from planargeo.mechanics.contacts import motion_space, world_point
+    from planargeo.draw.layout import shape_points
 
     pose = np.asarray(pose, float)
     e = np.asarray(motion_space(contact, pose)[:2, 0], float)    # the world sliding direction (9.83)
@@ -318,7 +318,7 @@ def draw_contact(contact, pose, ax=None, *, body_shape=None, size=0.08, clearanc
 
     Returns the list of artists.
     """
-    from ..contacts import world_point
+    from planargeo.mechanics.contacts import world_point
 
     ax = _ax(ax)
     pose = np.asarray(pose, float)
@@ -352,8 +352,8 @@ def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pi
                show_com=True, alpha=0.35, names=None, contacts=True):
     """Draw a model's bodies, joints and contacts at the state in ``data``.
 
-    ``data`` is a :class:`planargeo.model.Data` (from
-    :func:`planargeo.kinematics.kinematics` or the RNEA): poses, centres of
+    ``data`` is a :class:`planargeo.mechanics.model.Data` (from
+    :func:`planargeo.mechanics.kinematics.kinematics` or the RNEA): poses, centres of
     mass, joint origins and joint axes ``data.s(i)``.
     A body with a shapely ``shape`` is drawn from it (moved by its pose);
     otherwise as a rounded link from its joint to each child's joint (or, for

@@ -144,7 +144,7 @@ def style(role: str, **overrides) -> dict:
     '#0072B2'
     """
     if role not in STYLES:
-        from ..errors import InputError
+        from planargeo.errors import InputError
 
         raise InputError(f"role must be one of {sorted(STYLES)}, got {role!r}")
     out = dict(STYLES[role])
@@ -163,7 +163,7 @@ def sum_style(kind: str, **overrides) -> dict:
     'D'
     """
     if kind not in SUM:
-        from ..errors import InputError
+        from planargeo.errors import InputError
 
         raise InputError(f"kind must be one of {sorted(SUM)}, got {kind!r}")
     out = dict(SUM[kind])
@@ -207,7 +207,7 @@ def legend(ax, items, *, loc="lower right", **kw):
             handles.append(Line2D([], [], color=COLORS[role], linewidth=lw,
                                   linestyle=st["linestyle"], label=text))
         else:
-            from ..errors import InputError
+            from planargeo.errors import InputError
 
             raise InputError(f"legend item kind must be point, line, sum-point or sum-line, "
                              f"got {kind!r}")

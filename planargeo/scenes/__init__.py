@@ -18,7 +18,7 @@ from typing import Any, Callable
 
 import numpy as np
 
-from ..errors import InputError, NonFiniteError, SceneError, ShapeError
+from planargeo.errors import InputError, NonFiniteError, SceneError, ShapeError
 
 __all__ = ["SceneResult", "register", "get", "names", "parameters", "build", "check_param",
            "SceneNonFiniteError", "SceneShapeError"]
@@ -57,7 +57,7 @@ class SceneResult:
     params : dict
         Every parameter with the value used (defaults filled in).
     model : object or None
-        The frozen mechanism description (``planargeo.model.Model``), if the scene has one.
+        The frozen mechanism description (``planargeo.mechanics.model.Model``), if the scene has one.
     state : dict
         The state used: plain numbers / lists (e.g. ``q``, ``qd``, ``tau``).
     quantities : dict

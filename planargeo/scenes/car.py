@@ -16,7 +16,7 @@ Geometry (thesis frame = world frame, the ICR at the global origin):
 * drive force ``F_A`` at the front contact along the front wheels' rolling
   direction ``(-L, d)/√(d²+L²)`` (6.120).
 
-The solution goes through :mod:`planargeo.subspaces` exactly as in the thesis:
+The solution goes through :mod:`planargeo.mechanics.subspaces` exactly as in the thesis:
 ``T`` (6.124), ``U`` (6.126), ``γ = Rᵀκ`` (6.128), ``ω̇ = ψ = Tᵀ I⁻¹ (T Q − d)``
 with ``Q = 0`` and ``d = p − f_A`` (6.107, 6.130), and
 ``μ = Uᵀ I U γ + Uᵀ d`` (6.106a, 6.132).  ``μ = (μ_rear, μ_front)`` are the
@@ -27,12 +27,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..joints import _force_through, revolute
-from ..model import Body, Joint, Model
-from ..screws import crf, crm, inertia_matrix
-from ..subspaces import Decomposition
-from ..errors import SceneError
-from . import SceneResult, check_param, register
+from planargeo.mechanics.joints import _force_through, revolute
+from planargeo.mechanics.model import Body, Joint, Model
+from planargeo.screws.twists import crf, crm, inertia_matrix
+from planargeo.mechanics.subspaces import Decomposition
+from planargeo.errors import SceneError
+from planargeo.scenes import SceneResult, check_param, register
 
 __all__ = ["car"]
 
@@ -99,7 +99,7 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
         ``front_contact``, ``cg``, ``heading``, ``rear_axle``, ``front_axle``
         (unit lateral directions of ``R₁``, ``R₂``), ``front_rolling``,
         ``steer`` (front steering angle [rad]), ``joint`` (the
-        :class:`~planargeo.joints.JointSpace`), ``s``, ``R``, ``T``, ``U``,
+        :class:`~planargeo.mechanics.joints.JointSpace`), ``s``, ``R``, ``T``, ``U``,
         ``tyre_wrenches`` (3×2: ``R₁ μ₁``, ``R₂ μ₂``), ``decomposition``,
         ``tyres`` (shapely outlines of the rear and front tyre, world frame;
         only when ``outlines``).

@@ -23,13 +23,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..algorithms.aba import articulated_body, forward_dynamics
-from ..algorithms.chain_splitting import forward_dynamics_mobility_split
-from ..algorithms.crba import forward_dynamics_crba
-from ..algorithms.projective import forward_dynamics_projective
-from ..algorithms.stacked import forward_dynamics_stacked
-from ..model import JOINT_DOFS, chain_model
-from . import SceneResult, check_param, register
+from planargeo.algorithms.aba import articulated_body, forward_dynamics
+from planargeo.algorithms.chain_splitting import forward_dynamics_mobility_split
+from planargeo.algorithms.crba import forward_dynamics_crba
+from planargeo.algorithms.projective import forward_dynamics_projective
+from planargeo.algorithms.stacked import forward_dynamics_stacked
+from planargeo.mechanics.model import JOINT_DOFS, chain_model
+from planargeo.scenes import SceneResult, check_param, register
 
 __all__ = ["chain", "METHODS", "available_methods"]
 
@@ -76,7 +76,7 @@ def chain(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str = "revo
     Returns
     -------
     SceneResult
-        ``model`` (:class:`planargeo.model.Model`); ``state``: ``q``, ``qd``,
+        ``model`` (:class:`planargeo.mechanics.model.Model`); ``state``: ``q``, ``qd``,
         ``tau``; ``quantities``: ``q``, ``qd``, ``tau``, ``qdd`` (``{method:
         list}`` for each of the five methods), ``max_disagreement`` (largest
         difference from the ``aba`` result); ``extra``: ``methods``

@@ -31,9 +31,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..model import Body, Joint, Model
-from . import SceneResult, check_param, register
-from .two_body import _plain
+from planargeo.mechanics.model import Body, Joint, Model
+from planargeo.scenes import SceneResult, check_param, register
+from planargeo.scenes.two_body import _plain
 
 __all__ = ["horizontal_chain", "horizontal_chain_model", "effective_centre"]
 
@@ -52,7 +52,7 @@ def effective_centre(A) -> tuple[float, float, float, float]:
 
     Examples
     --------
-    >>> from planargeo.screws import inertia_matrix
+    >>> from planargeo.screws.twists import inertia_matrix
     >>> effective_centre(inertia_matrix(2.0, [0.5, 0.0], 0.3))
     (0.5, 2.0, 2.0, 0.3)
     """
@@ -85,7 +85,7 @@ def horizontal_chain(n: int = 4, lam: float = 2.0) -> SceneResult:
     >>> horizontal_chain(n=1, lam=3.0).quantities["d_over_L"]
     0.5
     """
-    from ..algorithms.articulated_inertia import articulated_inertia
+    from planargeo.algorithms.articulated_inertia import articulated_inertia
 
     params = dict(n=n, lam=lam)
     n = check_param("n", n, "int", positive=True)

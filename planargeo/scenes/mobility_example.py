@@ -26,8 +26,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import SceneResult, check_param, register
-from .two_body import _plain, two_body_model
+from planargeo.scenes import SceneResult, check_param, register
+from planargeo.scenes.two_body import _plain, two_body_model
 
 __all__ = ["mobility_example"]
 
@@ -60,7 +60,7 @@ def mobility_example(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: floa
     >>> round(r.quantities["x_over_L"], 12)    # 1 + 2*4/(4 + 20)
     1.333333333333
     """
-    from ..algorithms.articulated_mobility import articulated_mobility
+    from planargeo.algorithms.articulated_mobility import articulated_mobility
     params = dict(m=m, rho=rho, L=L, phi=phi, tau=tau)
     m, rho, L = (check_param(k, v, positive=True) for k, v in (("m", m), ("rho", rho), ("L", L)))
     phi = check_param("phi", phi)

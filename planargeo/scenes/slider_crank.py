@@ -39,16 +39,16 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..errors import SceneError, SingularConfigurationError
-from . import SceneResult, check_param, register
+from planargeo.errors import SceneError, SingularConfigurationError
+from planargeo.scenes import SceneResult, check_param, register
 
 __all__ = ["slider_crank", "slider_crank_model", "slider_crank_solve", "slider_crank_state"]
 
 
 def slider_crank_model(m1=0.40, m2=0.15, m3=0.30, r=2.29, l=5.00, t=0.5, g=9.81):
-    """The slider-crank :class:`~planargeo.model.Model` (tree + one slider contact) of thesis 9.6."""
-    from ..contacts import Contact
-    from ..model import Body, Joint, Model
+    """The slider-crank :class:`~planargeo.mechanics.model.Model` (tree + one slider contact) of thesis 9.6."""
+    from planargeo.mechanics.contacts import Contact
+    from planargeo.mechanics.model import Body, Joint, Model
 
     m1, m2, m3, r, l, t = (check_param(name, val, positive=True) for name, val in
                            (("m1", m1), ("m2", m2), ("m3", m3), ("r", r), ("l", l), ("t", t)))
@@ -148,7 +148,7 @@ def slider_crank_solve(model, psi, psidot, r, l, t, drive="free"):
     >>> round(h, 3)
     5.925
     """
-    from ..algorithms.loops import SINGULAR_COND, loop_condition, loop_solve
+    from planargeo.algorithms.loops import SINGULAR_COND, loop_condition, loop_solve
 
     try:
         q, qd = slider_crank_state(psi, psidot, r, l)

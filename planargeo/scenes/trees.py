@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import SceneResult, check_param, register
+from planargeo.scenes import SceneResult, check_param, register
 
 __all__ = ["tree", "constrained_tree", "tree_model", "FIG91_PARENTS", "FIG91_ANGLES"]
 
@@ -45,7 +45,7 @@ _QD_PATTERN = np.array([1.0, -0.5, 0.3, 0.2, -0.4, 0.6, -0.3, 0.5, 0.1])
 
 def tree_model(mass=1.0, length=1.0, g=9.81, contacts=()):
     """The nine-link tree of Fig 9.1 (optionally with contacts)."""
-    from ..model import Body, Joint, Model
+    from planargeo.mechanics.model import Body, Joint, Model
 
     mass, length = check_param("mass", mass, positive=True), check_param("length", length, positive=True)
     g = check_param("g", g)
@@ -68,7 +68,7 @@ def _tolist(x):
 @register("tree")
 def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float = 1.0) -> SceneResult:
     """The open tree of Fig 9.1 in the default pose, joint speeds ``speed × pattern``, no torques."""
-    from ..algorithms.stacked import adjacency, direct_accelerations, stacked_solve, tree_mobilities, trunk
+    from planargeo.algorithms.stacked import adjacency, direct_accelerations, stacked_solve, tree_mobilities, trunk
 
     speed = check_param("speed", speed)
     model = tree_model(mass, length, g)
@@ -96,10 +96,10 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
     The joint speeds are ``speed × pattern`` projected onto the velocities the
     loops allow (least-squares correction).
     """
-    from ..algorithms.loops import loop_solve
-    from ..algorithms.stacked import blocks
-    from ..contacts import Contact, contact_matrix, stacked_contact_spaces
-    from ..kinematics import kinematics
+    from planargeo.algorithms.loops import loop_solve
+    from planargeo.algorithms.stacked import blocks
+    from planargeo.mechanics.contacts import Contact, contact_matrix, stacked_contact_spaces
+    from planargeo.mechanics.kinematics import kinematics
 
     mass, length = check_param("mass", mass, positive=True), check_param("length", length, positive=True)
     g, speed = check_param("g", g), check_param("speed", speed)

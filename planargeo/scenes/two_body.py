@@ -21,8 +21,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..model import Body, Joint, Model
-from . import SceneResult, check_param, register
+from planargeo.mechanics.model import Body, Joint, Model
+from planargeo.scenes import SceneResult, check_param, register
 
 __all__ = ["two_body", "positive"]
 
@@ -81,7 +81,7 @@ def two_body(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: float = np.p
     >>> round(r.quantities["mx_over_m"], 12)     # (L^2 + 8 rho^2) / (L^2 + 4 rho^2) = 12/8
     1.5
     """
-    from ..algorithms.articulated_inertia import articulated_inertia
+    from planargeo.algorithms.articulated_inertia import articulated_inertia
 
     params = dict(m=m, rho=rho, L=L, phi=phi)
     m, rho, L = positive(m, "m"), positive(rho, "rho"), positive(L, "L")

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import importlib
 
-from .base import Explorer, fmt
+from planargeo.widgets.base import Explorer, fmt
 
 __all__ = ["Explorer", "fmt", "EXPLORERS"]
 

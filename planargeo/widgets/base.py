@@ -75,7 +75,7 @@ import matplotlib
 import numpy as np
 from matplotlib.figure import Figure
 
-from ..errors import InputError, PlanargeoError
+from planargeo.errors import InputError, PlanargeoError
 
 __all__ = ["Explorer", "Step", "cached", "fmt"]
 

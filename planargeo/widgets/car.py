@@ -15,11 +15,11 @@ import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.patches import Polygon as MplPolygon
 
-from .. import scenes
-from ..draw.artists import ConicArtist, LineArtist, PointArtist
-from ..draw.style import COLORS, setup_axes
-from ..errors import SceneError
-from .base import Explorer, Step
+from planargeo import scenes
+from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
+from planargeo.draw.style import COLORS, setup_axes
+from planargeo.errors import SceneError
+from planargeo.widgets.base import Explorer, Step
 
 __all__ = ["CarExplorer"]
 

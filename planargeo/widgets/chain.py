@@ -33,15 +33,15 @@ import ipywidgets as W
 import numpy as np
 from matplotlib.lines import Line2D
 
-from ..algorithms.aba import articulated_body
-from ..draw.artists import ConicArtist, LineArtist, PointArtist
-from ..draw.mechanism import draw_ground
-from ..draw.style import COLORS, setup_axes
-from ..errors import InputError, SingularConfigurationError
-from ..model import Body, Joint, Model
-from ..simulate import energy
-from ..subspaces import percussion_space
-from .base import Explorer, Step
+from planargeo.algorithms.aba import articulated_body
+from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
+from planargeo.draw.mechanism import draw_ground
+from planargeo.draw.style import COLORS, setup_axes
+from planargeo.errors import InputError, SingularConfigurationError
+from planargeo.mechanics.model import Body, Joint, Model
+from planargeo.simulate.integrate import energy
+from planargeo.mechanics.subspaces import percussion_space
+from planargeo.widgets.base import Explorer, Step
 
 __all__ = ["ChainExplorer", "chain_for", "parse_list"]
 
@@ -370,7 +370,7 @@ def _integrate(model, q0, qd0, tau, times, progress=None, chunks: int = 10):
     ``times`` are equally spaced output frames starting at 0; returns
     ``(t, q, qd)`` sampled at them.
     """
-    from ..simulate import simulate
+    from planargeo.simulate.integrate import simulate
 
     n = len(times) - 1
     dt = float(times[1] - times[0])

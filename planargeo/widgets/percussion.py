@@ -34,12 +34,12 @@ from matplotlib.patches import Polygon as MplPolygon
 from shapely.geometry import Point as SPoint
 from shapely.geometry import Polygon, box
 
-from ..draw.artists import ConicArtist, LineArtist, PointArtist
-from ..draw.style import COLORS, setup_axes
-from ..errors import InvalidPolygonError
-from ..inertia import Inertia, percussion_axis, percussion_pole
-from ..projective import from_xy
-from .base import Explorer, Step, cached
+from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
+from planargeo.draw.style import COLORS, setup_axes
+from planargeo.errors import InvalidPolygonError
+from planargeo.screws.inertia import Inertia, percussion_axis, percussion_pole
+from planargeo.geometry.projective import from_xy
+from planargeo.widgets.base import Explorer, Step, cached
 
 __all__ = ["PercussionExplorer", "PRESETS", "parse_polygon"]
 

@@ -25,14 +25,14 @@ import math
 import ipywidgets as W
 import numpy as np
 
-from ..conics import (centre, classify, conic_circle, conic_ellipse, conic_hyperbola,
+from planargeo.geometry.conics import (centre, classify, conic_circle, conic_ellipse, conic_hyperbola,
                       conic_parabola, polar, polar_construction_interior, pole,
                       tangents_from_point)
-from ..draw.artists import ConicArtist, LineArtist, PointArtist
-from ..draw.style import setup_axes
-from ..errors import DegenerateGeometryError
-from ..projective import from_xy
-from .base import Explorer, Step
+from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
+from planargeo.draw.style import setup_axes
+from planargeo.errors import DegenerateGeometryError
+from planargeo.geometry.projective import from_xy
+from planargeo.widgets.base import Explorer, Step
 
 __all__ = ["ProjectiveExplorer", "CONICS", "make_conic"]
 
@@ -44,7 +44,7 @@ def make_conic(kind: str, a: float, b: float, tilt_deg: float) -> np.ndarray:
 
     Examples
     --------
-    >>> from planargeo.conics import classify
+    >>> from planargeo.geometry.conics import classify
     >>> [str(classify(make_conic(k, 1.5, 1.0, 20.0))) for k in CONICS]
     ['real circle', 'real ellipse', 'real hyperbola', 'real parabola', 'imaginary circle']
     """

@@ -21,10 +21,10 @@ import math
 import ipywidgets as W
 import numpy as np
 
-from ..draw.artists import LineArtist, PointArtist
-from ..draw.style import setup_axes
-from ..screws import Twist, Wrench, add_twists, add_wrenches
-from .base import Explorer, Step
+from planargeo.draw.artists import LineArtist, PointArtist
+from planargeo.draw.style import setup_axes
+from planargeo.screws.twists import Twist, Wrench, add_twists, add_wrenches
+from planargeo.widgets.base import Explorer, Step
 
 __all__ = ["ScrewSumExplorer"]
 

@@ -27,12 +27,12 @@ import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 
-from .. import scenes
-from ..scenes.slider_crank import slider_crank_model, slider_crank_solve
-from ..draw.artists import LineArtist, PointArtist
-from ..draw.mechanism import draw_ground
-from ..draw.style import COLORS, setup_axes
-from .base import Explorer, Step, cached
+from planargeo import scenes
+from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_solve
+from planargeo.draw.artists import LineArtist, PointArtist
+from planargeo.draw.mechanism import draw_ground
+from planargeo.draw.style import COLORS, setup_axes
+from planargeo.widgets.base import Explorer, Step, cached
 
 __all__ = ["SliderCrankExplorer"]
 

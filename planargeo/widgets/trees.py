@@ -19,15 +19,15 @@ import ipywidgets as W
 import numpy as np
 from matplotlib.lines import Line2D
 
-from .. import scenes
-from ..algorithms.loops import loop_solve
-from ..algorithms.stacked import stacked_solve
-from ..scenes.trees import tree_model
-from ..simulate_loops import closure_jacobian
-from ..draw.artists import LineArtist, PointArtist
-from ..draw.mechanism import draw_ground
-from ..draw.style import COLORS, setup_axes
-from .base import Explorer, Step, cached
+from planargeo import scenes
+from planargeo.algorithms.loops import loop_solve
+from planargeo.algorithms.stacked import stacked_solve
+from planargeo.scenes.trees import tree_model
+from planargeo.simulate.loops import closure_jacobian
+from planargeo.draw.artists import LineArtist, PointArtist
+from planargeo.draw.mechanism import draw_ground
+from planargeo.draw.style import COLORS, setup_axes
+from planargeo.widgets.base import Explorer, Step, cached
 
 __all__ = ["TreeExplorer"]
 

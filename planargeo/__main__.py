@@ -1,0 +1,6 @@
+"""``python -m planargeo``: the same as the ``planargeo`` command."""
+import sys
+
+from planargeo.cli import main
+
+sys.exit(main())

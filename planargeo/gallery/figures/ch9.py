@@ -1,0 +1,133 @@
+"""Chapter 9 figures: trees, contacts and the slider-crank (9.1-9.3)."""
+from __future__ import annotations
+
+import numpy as np
+
+from planargeo.mechanics.contacts import world_point
+from planargeo.mechanics.kinematics import kinematics
+from planargeo.scenes import build as build_scene
+from planargeo.draw.artists import plot_line
+from planargeo.draw.constructions import label
+from planargeo.draw.mechanism import draw_model
+from planargeo.draw.style import COLORS
+from planargeo.draw.layout import fit_view
+from planargeo.gallery.figures import new_figure, register
+from planargeo.draw.layout import fit_panel, shape_points
+
+
+def _contact_points(model, data):
+    """World contact points on body a of every contact (9.49)."""
+    return [world_point(data.pose, c.a, c.point_a) for c in model.contacts]
+
+
+def _tips(model, data):
+    """Far ends of the bodies drawn as links through their centres of mass."""
+    return [data.pose[i, :2] + 2 * (data.com[i] - data.pose[i, :2]) for i in range(model.N)]
+
+
+@register("fig9_1", "Fig. 9.1 — the rigid-body tree of scene 'tree': body 1 is the root (pinned), "
+          "bodies 4, 7, 8 and 9 are the tips of the branches (parents (9.1): "
+          "−, 1, 2, 3, 1, 5, 6, 6, 1).", 9.01)
+def fig9_1():
+    res = build_scene("tree")
+    d = kinematics(res.model, res.state["q"], np.zeros(res.model.nq))
+    fig, ax = new_figure(3.4, 3.0)
+    draw_model(res.model, d, ax, width=0.14, show_com=False, names=[str(k + 1) for k in range(9)])
+    fit_view(ax, [*d.origin, *_tips(res.model, d)], margin=0.08)
+    return fig
+
+
+@register("fig9_2", "Fig. 9.2 — constrained tree (scene 'constrained-tree', gravity on): pin contacts "
+          "(squares) close the loops 4–7 and 8–9 (G of 9.49), leaving 9 − 2·2 = 5 dof; the contact "
+          "forces F = Bξ (9.70–9.71; arrows: F on body b, i.e. on 7 and 9) are computed with "
+          "the tree's full stacked mobility Λ⁻¹ that (9.65)–(9.73) must use (the printed block-diagonal "
+          "Λ⁻¹ gets them 9 % wrong; docs/errata.md, chapter 9 item 6).", 9.02)
+def fig9_2():
+    from shapely.geometry import LineString, Point as SPoint
+    from shapely.ops import unary_union
+
+    res = build_scene("constrained-tree")
+    m = res.model
+    d = kinematics(m, res.state["q"], np.asarray(res.state["qd"]))
+    fig, ax = new_figure(3.4, 3.0)
+    arts = draw_model(m, d, ax, width=0.14, show_com=False, labels=False)
+    bodies = unary_union(arts["shapes"])
+    F = np.asarray(res.quantities["F"])
+    sc = 0.12
+    P = [shape_points(*arts["shapes"])]
+    mags, lines = [], []
+    for k, (c, p) in enumerate(zip(m.contacts, _contact_points(m, d))):
+        f = F[k]                          # Definition 42: +F acts on body b, −F on body a
+        mag = np.hypot(*f[:2])
+        e = f[:2] / mag
+        L = sc * mag
+        # the line passes through p (9.70); the arrow beside p, on the side of p where it
+        # covers less of the bodies (ahead of p, or behind it pointing at p)
+        ahead, behind = p + e * (0.5 * L + 0.12), p - e * (0.5 * L + 0.12)
+        anchor = min((ahead, behind), key=lambda q: LineString([q - e * L / 2, q + e * L / 2])
+                     .intersection(bodies).length)
+        n = np.array([-e[1], e[0]])
+        side = 1.0 if bodies.distance(SPoint(*(anchor + 0.2 * n))) >= \
+            bodies.distance(SPoint(*(anchor - 0.2 * n))) else -1.0
+        u = side * n
+        art = plot_line(f, ax, role="reaction", scale=sc, anchor=anchor, text=f"$F_{{{c.name}}}$",
+                        text_offset=5 * u, text_at="anchor")
+        art.set_text_alignment("left" if u[0] > 0.35 else "right" if u[0] < -0.35 else "center",
+                               "bottom" if u[1] > 0.35 else "top" if u[1] < -0.35 else "center")
+        P.append(np.array(art.get_arrow()))
+        lines.append(f)
+        mags.append(f"$|F_{{{c.name}}}|$ = {mag:.2f} N")
+    fit_panel(ax, np.vstack(P), margin=0.06)
+    # body numbers beside their links, on the side away from the contact-force lines
+    for i, shape in enumerate(arts["shapes"]):
+        cxy = np.array(shape.centroid.coords[0])
+        a = d.pose[i, :2]
+        t = cxy - a
+        n = np.array([-t[1], t[0]]) / max(np.hypot(*t), 1e-12)
+
+        def line_dist(q):
+            return min(abs(f[2] + q[1] * f[0] - q[0] * f[1]) / np.hypot(*f[:2]) for f in lines)
+
+        u = n if line_dist(cxy + 0.25 * n) >= line_dist(cxy - 0.25 * n) else -n
+        label(ax, cxy, str(i + 1), offset=tuple(9 * u), fontsize=7, color="#1f3a4d",
+              ha="center", va="center")
+    ax.text(0.02, 0.02, "\n".join(mags), transform=ax.transAxes, fontsize=7,
+            color=COLORS["reaction"])
+    return fig
+
+
+def _slider_crank_base(ax, res):
+    m = res.model
+    d = kinematics(m, res.state["q"], np.asarray(res.state["qd"]))
+    arts = draw_model(m, d, ax, width=0.3, labels=False, show_com=True, pin_radius=0.1)
+    for i, body in enumerate(m.bodies):   # the piston's name right of its guide, the others left
+        right = i == 2
+        label(ax, d.com[i], body.name, offset=(18 if right else -9, 6 if i == 0 else 0), fontsize=7,
+              color="#1f3a4d", va="center", ha="left" if right else "right")
+    return d, shape_points(*arts["shapes"])
+
+
+@register("fig9_3", "Fig. 9.3 — slider-crank (scene 'slider-crank', thesis 9.6): relative rotations "
+          "ψ, θ, φ with ψ + θ + φ = π/2; the state closes the loop at θ = 1.6063 (the printed 1.603 "
+          "and the signs of θ̇, φ̇ in 9.78–9.79 are corrected, docs/errata.md).", 9.03)
+def fig9_3():
+    res = build_scene("slider-crank")
+    fig, ax = new_figure(3.4, 3.4)
+    d, P = _slider_crank_base(ax, res)
+    q = res.state["q"]
+    absang = np.cumsum(q)
+    for i, (nm, val) in enumerate(zip(("ψ", "θ", "φ"), q)):
+        o = d.pose[i, :2]
+        base = absang[i] - val
+        t = np.linspace(base, absang[i], 30)
+        rr = (0.9, 0.7, 0.6)[i]
+        ax.plot(o[0] + rr * np.cos(t), o[1] + rr * np.sin(t), color=COLORS["twist"], lw=0.8)
+        ax.plot([o[0], o[0] + 0.9 * np.cos(base)], [o[1], o[1] + 0.9 * np.sin(base)],
+                color=COLORS["construct"], lw=0.6, ls="--")
+        mid = t[len(t) // 2]
+        label(ax, o + rr * np.array([np.cos(mid), np.sin(mid)]),
+              f"{nm} = {val:.3f}", offset=((6, -12), (6, 2), (-62, 4))[i], fontsize=7,
+              color=COLORS["twist"])
+    fit_view(ax, np.vstack([P, P.min(axis=0) - [1.0, 0.4], P.max(axis=0) + [0.8, 0.2]]), margin=0.03)
+    return fig
+

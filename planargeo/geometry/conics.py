@@ -1,0 +1,1011 @@
+"""Conics as symmetric 3×3 matrices: polarity, classification, constructions (thesis 5.2).
+
+A conic is a symmetric matrix ``C`` in the package's homogeneous coordinates
+(see :mod:`planargeo.geometry.projective`): its points are the ``Q`` with
+``Q @ C @ Q == 0`` (5.38).  It maps a point ``p`` to its *polar* line
+``C p`` (5.36) and a line ``l`` to its *pole* ``C⁻¹ l`` (5.37).  An inertia
+matrix is a positive definite, i.e. *imaginary*, conic (5.4): it has no real
+points, yet maps every real point (acceleration) to a real line (force).
+
+Every function broadcasts over leading dimensions unless said otherwise
+(matrices ``(..., 3, 3)``, vectors ``(..., 3)``).  Tolerances appear only
+where a decision is genuinely numerical (rank, "is a parabola", "is on the
+conic"); they are relative and exposed as ``rtol`` arguments.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from planargeo._validate import as_array, as_mat3, as_vec3, as_xy, check_positive, check_symmetric
+from planargeo.errors import DegenerateGeometryError, InputError, ShapeError
+from planargeo.geometry.projective import T_STD, _cross, _first_index
+
+__all__ = [
+    "polar", "pole", "conic_residual", "is_on_conic", "ConicType", "classify", "centre",
+    "line_conic_intersections", "tangents_from_point",
+    "ExteriorConstruction", "InteriorConstruction",
+    "polar_construction_exterior", "polar_construction_interior",
+    "correlation", "decompose_point", "decompose_line", "special_base",
+    "decompose_point_special", "decompose_line_special",
+    "drawable_conic", "AffineFrame", "affine_frame", "conic_from_affine",
+    "conic_circle", "conic_ellipse", "conic_hyperbola", "conic_parabola", "conic_from_coefficients",
+]
+
+_E2 = np.array([0.0, 0.0, 1.0])
+
+
+# --------------------------------------------------------------------------- helpers
+def _conic(C, name: str = "C") -> np.ndarray:
+    C = as_mat3(C, name)
+    check_symmetric(C, name)
+    return C
+
+
+def _mv(M, v):
+    return np.einsum("...ij,...j->...i", M, v)
+
+
+def _quad(u, M, v):
+    return np.einsum("...i,...ij,...j->...", u, M, v)
+
+
+def _cond(M) -> np.ndarray:
+    s = np.linalg.svd(M, compute_uv=False)
+    out = np.full(s.shape[:-1], np.inf)
+    np.divide(s[..., 0], s[..., -1], out=out, where=s[..., -1] > 0)
+    return out
+
+
+def _check_invertible(M, name: str, what: str, rtol: float) -> None:
+    cond = _cond(M)
+    bad = ~(cond * rtol < 1.0)
+    if np.any(bad):
+        c = float(np.max(np.where(bad, cond, 0.0)))
+        err = DegenerateGeometryError(f"{name} is {what}{_first_index(bad)} "
+                                      f"(condition number {c:.3g})")
+        err.cond = c
+        raise err
+
+
+def _unit(v):
+    """Scale homogeneous vectors to unit length (zero and NaN rows pass through silently)."""
+    n = np.linalg.norm(v / np.maximum(np.abs(v).max(axis=-1, keepdims=True), np.finfo(float).tiny),
+                       axis=-1) * np.abs(v).max(axis=-1)
+    out = np.full(v.shape, np.nan)
+    np.divide(v, n[..., None], out=out, where=(n != 0)[..., None])
+    return np.where(np.isnan(n)[..., None] | (n != 0)[..., None], out, v)
+
+
+def _npoint(p):
+    """Normalise points (w = 1, or unit length if ideal), letting NaN and zero through silently."""
+    p = _unit(p)
+    n = np.linalg.norm(p, axis=-1)
+    w = p[..., 2]
+    den = np.where(w != 0, w, n)
+    out = np.full(p.shape, np.nan)
+    np.divide(p, den[..., None], out=out, where=(den != 0)[..., None])
+    return out + 0.0
+
+
+def _nline(l):
+    """Normalise lines (|f| = 1, or tz = ±1 for the line at infinity), letting NaN through."""
+    f = np.hypot(l[..., 0], l[..., 1])
+    den = np.where(f != 0, f, np.abs(l[..., 2]))
+    out = np.full(l.shape, np.nan)
+    np.divide(l, den[..., None], out=out, where=(den != 0)[..., None])
+    return out + 0.0
+
+
+# --------------------------------------------------------------------------- polarity
+def polar(C, p) -> np.ndarray:
+    """Polar line ``C p`` of point ``p`` with respect to conic ``C`` (thesis 5.36).
+
+    For an inertia ``I`` and an acceleration pole ``a`` this is the axis of
+    percussion ``I a`` (5.64-5.68).  A point at infinity maps to a line
+    through the centre (a diameter).
+
+    Parameters
+    ----------
+    C : array_like, shape (..., 3, 3), symmetric
+    p : array_like, shape (..., 3)
+
+    Examples
+    --------
+    >>> C = conic_circle([0.0, 0.0], 1.0)
+    >>> polar(C, [0.0, -2.0, 1.0])          # the point (2, 0): polar is x = 1/2
+    array([ 0., -2., -1.])
+    """
+    C = _conic(C)
+    p = as_vec3(p, "p")
+    return _mv(C, p)
+
+
+def pole(C, l, rtol: float = 1e-13) -> np.ndarray:
+    """Pole ``C⁻¹ l`` of line ``l`` with respect to conic ``C`` (thesis 5.37).
+
+    Solved with ``numpy.linalg.solve`` (no explicit inverse), so the scale is
+    exact: for an inertia ``I`` and a force ``f``, ``pole(I, f)`` is the
+    acceleration ``I⁻¹ f``.  The line at infinity maps to the centre.
+
+    Raises
+    ------
+    DegenerateGeometryError
+        If ``C`` is singular (a degenerate conic, condition number above
+        ``1/rtol``): poles are then not unique.  The error carries ``.cond``.
+
+    Examples
+    --------
+    >>> pole(conic_circle([0.0, 0.0], 1.0), [0.0, -2.0, -1.0])   # the line x = 1/2
+    array([ 0., -2.,  1.])
+    """
+    C = _conic(C)
+    l = as_vec3(l, "l")
+    _check_invertible(C, "C", "singular (a degenerate conic), so poles are not unique", rtol)
+    C, l = np.broadcast_arrays(C, l[..., None, :])
+    return np.linalg.solve(C, l[..., 0, :][..., None])[..., 0]
+
+
+def conic_residual(C, p) -> np.ndarray:
+    """The quadratic form ``p @ C @ p`` (thesis 5.38); zero on the conic.
+
+    Examples
+    --------
+    >>> float(conic_residual(conic_circle([0.0, 0.0], 2.0), [0.0, -2.0, 1.0]))  # (2, 0)
+    0.0
+    """
+    C = _conic(C)
+    p = as_vec3(p, "p")
+    return _quad(p, C, p)
+
+
+def is_on_conic(C, p, rtol: float = 1e-9) -> np.ndarray:
+    """True where ``|p C p| <= rtol |C| |p|²`` (relative form of thesis 5.38).
+
+    ``p`` is scaled to unit length first, so far (near-ideal) points are
+    handled without overflow.
+
+    Examples
+    --------
+    >>> bool(is_on_conic(conic_circle([1.0, 1.0], 1.0), [1.0, -2.0, 1.0]))   # (2, 1)
+    True
+    """
+    C = _conic(C)
+    p = _unit(as_vec3(p, "p"))
+    r = np.abs(_quad(p, C, p))
+    return r <= rtol * np.linalg.norm(C, axis=(-2, -1))
+
+
+# --------------------------------------------------------------------------- classification
+@dataclass(frozen=True)
+class ConicType:
+    """Result of :func:`classify`.
+
+    Attributes
+    ----------
+    reality : str
+        ``"real"`` (full rank, has real points), ``"imaginary"`` (full rank,
+        definite: no real points, like an inertia) or ``"degenerate"``.
+    kind : str
+        ``"ellipse"``, ``"parabola"``, ``"hyperbola"`` for full rank;
+        ``"line pair"``, ``"point"`` (two conjugate imaginary lines through a
+        real point), ``"double line"`` or ``"zero"`` for degenerate conics.
+    is_circle : bool
+        An ellipse (real or imaginary) whose quadratic part is isotropic.
+    rank : int
+
+    Examples
+    --------
+    >>> t = classify(conic_ellipse([0.0, 0.0], [2.0, 1.0]))
+    >>> t
+    ConicType(reality='real', kind='ellipse', is_circle=False, rank=3)
+    >>> str(t), str(classify(conic_circle([1.0, 0.0], 2.0, imaginary=True)))   # like an inertia
+    ('real ellipse', 'imaginary circle')
+    """
+
+    reality: str
+    kind: str
+    is_circle: bool
+    rank: int
+
+    def __str__(self) -> str:
+        name = "circle" if self.is_circle else self.kind
+        return name if self.reality == "degenerate" else f"{self.reality} {name}"
+
+
+def _classify1(S: np.ndarray, rtol: float) -> ConicType:
+    ev = np.linalg.eigvalsh(S)
+    top = np.max(np.abs(ev))
+    if top == 0:
+        return ConicType("degenerate", "zero", False, 0)
+    nz = np.abs(ev) > rtol * top
+    rank = int(nz.sum())
+    pos, neg = int((ev[nz] > 0).sum()), int((ev[nz] < 0).sum())
+    if rank == 3:
+        a = np.linalg.eigvalsh(S[1:, 1:])
+        amax = np.max(np.abs(a))
+        circle = False
+        if np.min(np.abs(a)) <= rtol * amax or amax <= rtol * top:
+            kind = "parabola"
+        elif a[0] * a[1] > 0:
+            kind = "ellipse"
+            circle = bool(a[1] - a[0] <= rtol * amax)
+        else:
+            kind = "hyperbola"
+        reality = "imaginary" if (pos == 3 or neg == 3) else "real"
+        return ConicType(reality, kind, circle, 3)
+    if rank == 2:
+        return ConicType("degenerate", "line pair" if pos == neg else "point", False, 2)
+    return ConicType("degenerate", "double line", False, 1)
+
+
+def classify(C, rtol: float = 1e-10):
+    """Classify a conic (thesis 5.2.2): real / imaginary / degenerate, and its kind.
+
+    Work is done in standard coordinates ``S = T C T`` (5.47), where the
+    conic reads ``u^T A u + 2 b^T u + c = 0`` with ``A = S[1:, 1:]``:
+    ``det S = 0`` is degenerate; ``S`` definite is imaginary (no real points);
+    otherwise ``det A > 0`` is an ellipse, ``< 0`` a hyperbola, ``= 0`` a
+    parabola.  Rank and "``det A = 0``" are decided with the relative
+    tolerance ``rtol`` on eigenvalues (a parabola is a measure-zero case).
+
+    Parameters
+    ----------
+    C : array_like, shape (3, 3) or (..., 3, 3)
+    rtol : float
+
+    Returns
+    -------
+    ConicType, or an object ndarray of them for a batch.
+
+    Examples
+    --------
+    >>> str(classify(conic_circle([1.0, 2.0], 3.0)))
+    'real circle'
+    >>> str(classify(np.diag([2.0, 1.0, 5.0])))       # an inertia-like matrix
+    'imaginary ellipse'
+    >>> str(classify(conic_parabola([0.0, 0.0], 1.0)))
+    'real parabola'
+    """
+    C = _conic(C)
+    S = T_STD @ C @ T_STD
+    if S.ndim == 2:
+        return _classify1(S, rtol)
+    flat = S.reshape(-1, 3, 3)
+    out = np.empty(len(flat), dtype=object)
+    for i, s in enumerate(flat):
+        out[i] = _classify1(s, rtol)
+    return out.reshape(S.shape[:-2])
+
+
+def centre(C) -> np.ndarray:
+    """Centre of a conic: the pole of the line at infinity (thesis 5.2.2).
+
+    Computed as ``C[0] × C[1]`` (the third column of the adjugate, proportional
+    to ``C⁻¹ [0, 0, 1]``), then normalised.  Its weight is the determinant of
+    the quadratic part, so the centre of a parabola is a point at infinity
+    (its axis direction), exactly so when that determinant is exactly zero;
+    a rotated parabola built in floating point has a tiny determinant and so a
+    very far finite centre on its axis.
+    For a line pair it is the vertex.  For an inertia it is the centre of mass.
+
+    Raises
+    ------
+    DegenerateGeometryError
+        If the centre is not unique (rows 0 and 1 of ``C`` dependent, e.g. a
+        double line or two parallel lines).
+
+    Examples
+    --------
+    >>> centre(conic_circle([1.0, 2.0], 3.0))      # the point (1, 2)
+    array([ 2., -1.,  1.])
+    >>> centre(conic_parabola([0.0, 0.0], 1.0))    # axis along y: ideal point
+    array([1., 0., 0.])
+    """
+    C = _conic(C)
+    z = _cross(C[..., 0, :], C[..., 1, :])
+    bad = np.all(z == 0, axis=-1)
+    if np.any(bad):
+        raise DegenerateGeometryError(f"C has no unique centre{_first_index(bad)} "
+                                      "(a double line or a pair of parallel lines)")
+    return _npoint(z)
+
+
+# --------------------------------------------------------------------------- intersections, tangents
+def _intersections(C, l, rtol):
+    """Raw intersections (unit length rows) of validated lines with validated conics."""
+    C, l = np.broadcast_arrays(C, l[..., None, :])
+    l = l[..., 0, :]
+    k = np.argmax(np.abs(l), axis=-1)
+    eye = np.eye(3)
+    a = _unit(_cross(l, eye[(k + 1) % 3]))
+    b = _unit(_cross(l, eye[(k + 2) % 3]))
+    A, B, G = _quad(a, C, a), _quad(a, C, b), _quad(b, C, b)
+    D = B * B - A * G
+    scale = B * B + np.abs(A * G)
+    D = np.where((D < 0) & (D >= -rtol * scale), 0.0, D)
+    real = D >= 0
+    sq = np.sqrt(np.where(real, D, 0.0))
+    q = -(B + np.where(B < 0, -1.0, 1.0) * sq)
+    X1 = q[..., None] * a + A[..., None] * b
+    X2 = G[..., None] * a + q[..., None] * b
+    z1 = np.all(X1 == 0, axis=-1, keepdims=True)
+    z2 = np.all(X2 == 0, axis=-1, keepdims=True)
+    X1, X2 = np.where(z1, X2, X1), np.where(z2, X1, X2)
+    X = np.stack([X1, X2], axis=-2)
+    X = np.where(real[..., None, None], X, np.nan)
+    return _unit(X), real
+
+
+def line_conic_intersections(C, l, rtol: float = 1e-9):
+    """The two points where line ``l`` meets conic ``C`` (thesis 5.38 on a line).
+
+    The line is spanned by two of its points ``a, b``; ``X = α a + β b``
+    solves the binary quadratic ``α² aCa + 2αβ aCb + β² bCb = 0`` with the
+    cancellation-free root formula.  A discriminant negative by less than
+    ``rtol`` times its scale counts as zero (a tangent).  Points at infinity
+    (e.g. on the asymptotes of a hyperbola) are ordinary results.
+
+    Returns
+    -------
+    points : ndarray, shape (..., 2, 3)
+        Normalised points; NaN where the intersections are not real.  For a
+        tangent both rows are the contact point.
+    real : ndarray of bool, shape (...)
+
+    Examples
+    --------
+    >>> X, real = line_conic_intersections(conic_circle([0.0, 0.0], 1.0), [1.0, 0.0, 0.0])
+    >>> bool(real), sorted(X[:, 1].round(12).tolist())    # x axis meets the unit circle at x = ±1
+    (True, [-1.0, 1.0])
+    """
+    C = _conic(C)
+    l = as_vec3(l, "l")
+    X, real = _intersections(C, l, rtol)
+    return _npoint(X), real
+
+
+def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
+    """The two tangents from a point to a conic, and their contact points (thesis 5.2.2).
+
+    The contact points are where the polar ``C p`` meets the conic; the
+    tangent at a contact point ``X`` is its polar ``C X`` (5.39), which passes
+    through ``p``.  A point on the conic gives its tangent twice.
+
+    Parameters
+    ----------
+    C : array_like, shape (..., 3, 3)
+    p : array_like, shape (..., 3)
+    on_interior : {"raise", "nan"}
+        What to do for a point with no real tangents (interior to ``C``, or any
+        point when ``C`` is imaginary): raise :class:`InputError`, or return
+        NaN rows for it.
+    rtol : float
+        Tolerance for "on the conic" (see :func:`line_conic_intersections`).
+
+    Returns
+    -------
+    lines : ndarray, shape (..., 2, 3)
+        Normalised tangent lines.
+    points : ndarray, shape (..., 2, 3)
+        Normalised contact points (row ``i`` is where ``lines[i]`` touches).
+
+    Examples
+    --------
+    >>> L, X = tangents_from_point(conic_circle([0.0, 0.0], 1.0), [0.0, -2.0, 1.0])   # from (2, 0)
+    >>> np.round(X[:, :2] * [1, -1], 6)[:, ::-1]      # contacts at (1/2, ±√3/2)
+    array([[ 0.5     ,  0.866025],
+           [ 0.5     , -0.866025]])
+    """
+    if on_interior not in ("raise", "nan"):
+        raise InputError(f"on_interior must be 'raise' or 'nan', got {on_interior!r}")
+    C = _conic(C)
+    p = as_vec3(p, "p")
+    L = _mv(C, p)
+    bad = np.all(L == 0, axis=-1)
+    if np.any(bad):
+        raise DegenerateGeometryError(f"p is the vertex of the degenerate conic C{_first_index(bad)}: "
+                                      "its polar is undefined")
+    X, real = _intersections(C, _unit(L), rtol)
+    if on_interior == "raise" and not np.all(real):
+        raise InputError(f"p has no real tangents to C{_first_index(~real)}: it lies inside the conic "
+                         "(or C is imaginary); use on_interior='nan' to get NaN instead")
+    T = _mv(C[..., None, :, :], X)
+    return _nline(T), _npoint(X)
+
+
+@dataclass(frozen=True)
+class ExteriorConstruction:
+    """Elements of the polar construction of an exterior point (thesis 5.2.2, Fig. 5.2).
+
+    Returned by :func:`polar_construction_exterior`, so that each step can be
+    drawn.  All arrays are normalised homogeneous coordinates (points with
+    ``w = 1``, lines with unit force).
+
+    Attributes
+    ----------
+    point : ndarray, shape (..., 3)
+        The point ``p``.
+    tangents : ndarray, shape (..., 2, 3)
+        Step 1: the two tangents from ``p``.
+    contacts : ndarray, shape (..., 2, 3)
+        Step 2: their contact points (``contacts[i]`` on ``tangents[i]``).
+    polar : ndarray, shape (..., 3)
+        Step 3: the line joining the contacts; equals ``C p`` (5.36) up to scale.
+
+    Examples
+    --------
+    >>> from planargeo.geometry.elements import Line, Point
+    >>> K = polar_construction_exterior(conic_circle([0.0, 0.0], 1.0), [0.0, -2.0, 1.0])  # p = (2, 0)
+    >>> Point(K.point), [Point(x) for x in K.contacts]
+    (Point(x=2, y=0), [Point(x=0.5, y=0.866025), Point(x=0.5, y=-0.866025)])
+    >>> Line(K.tangents[0])
+    Line(through=(0.5, 0.866025), direction=(0.866025, -0.5))
+    >>> Line(K.polar)                                    # x = 1/2 through both contacts
+    Line(through=(0.5, 0), direction=(0, -1))
+    """
+
+    point: np.ndarray
+    tangents: np.ndarray
+    contacts: np.ndarray
+    polar: np.ndarray
+
+
+@dataclass(frozen=True)
+class InteriorConstruction:
+    """Elements of the polar construction of an interior point (thesis 5.2.2, Fig. 5.3).
+
+    Returned by :func:`polar_construction_interior`, so that each step can be
+    drawn.  All arrays are normalised homogeneous coordinates (points with
+    ``w = 1`` or unit length at infinity, lines with unit force).
+
+    Attributes
+    ----------
+    point : ndarray, shape (..., 3)
+        The point ``p``.
+    lines : ndarray, shape (..., 2, 3)
+        Step 1: two lines through ``p``.
+    chord_points : ndarray, shape (..., 2, 2, 3)
+        Step 1: the two points where line ``i`` cuts the conic.
+    tangents : ndarray, shape (..., 2, 2, 3)
+        Step 2: the tangents at those points.
+    poles : ndarray, shape (..., 2, 3)
+        Steps 3-4: where each pair of tangents meets, the pole of line ``i``
+        (Theorem 12); a point at infinity when line ``i`` is a diameter.
+    polar : ndarray, shape (..., 3)
+        Step 5: the line joining the two poles; equals ``C p`` (5.36) up to scale.
+
+    Examples
+    --------
+    >>> from planargeo.geometry.elements import Line, Point
+    >>> K = polar_construction_interior(conic_circle([0.0, 0.0], 2.0), [0.0, -1.0, 1.0])  # p = (1, 0)
+    >>> [Line(l) for l in K.lines]                      # the x axis (a diameter) and x = 1
+    [Line(through=(0, 0), direction=(-1, 0)), Line(through=(1, 0), direction=(0, 1))]
+    >>> [Point(q) for q in K.chord_points[1]]           # x = 1 cuts the circle at (1, ±√3)
+    [Point(x=1, y=1.73205), Point(x=1, y=-1.73205)]
+    >>> [Point(q) for q in K.poles]                     # the diameter's pole is at infinity
+    [Point(at infinity, direction=(0, -1)), Point(x=4, y=0)]
+    >>> Line(K.polar)                                   # x = r²/|p| = 4
+    Line(through=(4, 0), direction=(0, -1))
+    """
+
+    point: np.ndarray
+    lines: np.ndarray
+    chord_points: np.ndarray
+    tangents: np.ndarray
+    poles: np.ndarray
+    polar: np.ndarray
+
+
+def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 1e-9) -> ExteriorConstruction:
+    """Geometric construction of the polar of an exterior point (thesis 5.2.2, Fig. 5.2).
+
+    1. the two tangents through ``p``; 2. their contact points; 3. the line
+    joining the contacts is the polar.  For ``p`` on the conic the contacts
+    coincide and the polar is the tangent there.  Interior points: see
+    ``on_interior`` of :func:`tangents_from_point`.
+
+    Examples
+    --------
+    >>> K = polar_construction_exterior(conic_circle([0.0, 0.0], 1.0), [0.0, -2.0, 1.0])
+    >>> K.polar                                  # x = 1/2, as C p
+    array([ 0. , -1. , -0.5])
+    """
+    C = _conic(C)
+    p = as_vec3(p, "p")
+    T, X = tangents_from_point(C, p, on_interior=on_interior, rtol=rtol)
+    Xu = _unit(X)
+    Lj = _cross(Xu[..., 0, :], Xu[..., 1, :])
+    same = np.all(Lj == 0, axis=-1, keepdims=True)
+    Lj = np.where(same, T[..., 0, :], Lj)
+    # orient like C p so that drawings and comparisons are consistent
+    s = np.einsum("...i,...i->...", Lj, _mv(C, p))
+    Lj = np.where((s < 0)[..., None], -Lj, Lj)
+    P = np.broadcast_to(p, Lj.shape)
+    return ExteriorConstruction(_npoint(P), T, X, _nline(Lj))
+
+
+def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: float = 1e-9) -> InteriorConstruction:
+    """Geometric construction of the polar of an interior point (thesis 5.2.2, Fig. 5.3).
+
+    1. two lines through ``p`` cut the conic in two points each; 2. the
+    tangents at each pair of points 3. meet in a point (the pole of that
+    line, by Theorem 12); 4.-5. the line joining the two poles is the polar
+    of ``p``.  The construction works for any ``p`` whose chosen lines are
+    secants (every line through an interior point is).
+
+    Parameters
+    ----------
+    C : array_like, shape (..., 3, 3)
+    p : array_like, shape (..., 3)
+    lines : array_like, shape (..., 2, 3), optional
+        Two distinct lines through ``p``.  Default: two of the vertical line,
+        the horizontal line and the line to the origin through ``p`` (the
+        pair ``p × e_i`` that is never degenerate).
+    on_miss : {"raise", "nan"}
+        A line that does not cut the conic in two distinct real points raises
+        :class:`InputError` naming ``lines[i]``, or gives NaN elements.
+    rtol : float
+        Relative tolerance of both numerical tests: a given line passes through
+        ``p`` when ``|lines[i] · p| <= rtol |lines[i]| |p|`` (else
+        :class:`InputError` naming ``lines[i]``), and a line whose intersection
+        discriminant is within ``rtol`` of zero is a tangent (as in
+        :func:`line_conic_intersections`).
+
+    Examples
+    --------
+    >>> K = polar_construction_interior(conic_circle([0.0, 0.0], 2.0), [0.0, -1.0, 1.0])  # (1, 0)
+    >>> K.polar                                  # x = 4, as C p
+    array([ 0., -1., -4.])
+    """
+    if on_miss not in ("raise", "nan"):
+        raise InputError(f"on_miss must be 'raise' or 'nan', got {on_miss!r}")
+    C = _conic(C)
+    p = as_vec3(p, "p")
+    if lines is None:
+        k = np.argmax(np.abs(p), axis=-1)
+        eye = np.eye(3)
+        lines = np.stack([_cross(p, eye[(k + 1) % 3]), _cross(p, eye[(k + 2) % 3])], axis=-2)
+        if np.any(np.all(p == 0, axis=-1)):
+            raise DegenerateGeometryError("p is the zero vector, which is no point")
+    else:
+        lines = as_array(lines, "lines", (2, 3))
+        inc = np.abs(np.einsum("...i,...ki->...k", p, lines))
+        scale = np.linalg.norm(lines, axis=-1) * np.linalg.norm(p, axis=-1)[..., None]
+        off = inc > rtol * scale
+        if np.any(off):
+            j = tuple(np.argwhere(off)[0])
+            raise InputError(f"lines[{j[-1]}] does not pass through p: |lines[{j[-1]}] · p| = "
+                             f"{float(inc[j]):.3g} > rtol |lines[{j[-1]}]| |p| = {float(rtol * scale[j]):.3g}")
+    X, real = _intersections(C[..., None, :, :], _unit(lines), rtol)
+    distinct = real & ~np.all(_cross(X[..., 0, :], X[..., 1, :]) == 0, axis=-1)
+    if on_miss == "raise" and not np.all(distinct):
+        i = int(np.argwhere(~distinct)[0][-1])
+        raise InputError(f"lines[{i}] does not cut C in two distinct real points "
+                         "(p is not interior, or the line is tangent)")
+    T = _nline(_mv(C[..., None, None, :, :], X))
+    poles = _unit(_cross(_unit(T[..., 0, :]), _unit(T[..., 1, :])))
+    polar_ = _cross(poles[..., 0, :], poles[..., 1, :])
+    bad = np.all(polar_ == 0, axis=-1) & np.all(distinct, axis=-1)
+    if np.any(bad):
+        raise DegenerateGeometryError(f"lines[0] and lines[1] are the same line{_first_index(bad)}")
+    s = np.einsum("...i,...i->...", polar_, _mv(C, p))
+    polar_ = np.where((s < 0)[..., None], -polar_, polar_)
+    P = np.broadcast_to(p, polar_.shape)
+    return InteriorConstruction(_npoint(P), _nline(lines), _npoint(X), T, _npoint(poles), _nline(polar_))
+
+
+# --------------------------------------------------------------------------- duality
+def correlation(C, Q, L, rtol: float = 1e-13):
+    """The correlation of Theorem 12: ``(P, M) = (pole(C, L), polar(C, Q))``.
+
+    Theorem 12 (corrected to the mapping direction of 5.36-5.37): if line
+    ``L`` passes through point ``Q``, then the pole ``P = C⁻¹ L`` lies on the
+    polar ``M = C Q``.  More strongly, linear forms are invariant (5.40-5.41):
+    ``P @ M == Q @ L`` for symmetric ``C``.
+
+    Returns
+    -------
+    P : ndarray, shape (..., 3)
+    M : ndarray, shape (..., 3)
+
+    Examples
+    --------
+    >>> C = np.diag([2.0, 1.0, 3.0])
+    >>> P, M = correlation(C, [1.0, 2.0, 3.0], [4.0, 5.0, 6.0])
+    >>> float(P @ M), 1 * 4 + 2 * 5 + 3 * 6
+    (32.0, 32)
+    """
+    return pole(C, L, rtol=rtol), polar(C, Q)
+
+
+def _solve_basis(Mcols, v, name: str, rtol: float):
+    _check_invertible(Mcols, name, "singular: the three base elements are dependent (no basis)", rtol)
+    Mcols, v = np.broadcast_arrays(Mcols, v[..., None, :])
+    return np.linalg.solve(Mcols, v[..., 0, :][..., None])[..., 0]
+
+
+def decompose_point(P, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
+    """Components ``u`` of ``P = u1 Q1 + u2 Q2 + u3 Q3`` (thesis 5.42).
+
+    Raises
+    ------
+    DegenerateGeometryError
+        If ``Q1, Q2, Q3`` are collinear (no basis).
+
+    Examples
+    --------
+    >>> decompose_point([1.0, 2.0, 3.0], [1.0, 0, 0], [0, 1.0, 0], [1.0, 1.0, 1.0])
+    array([-2., -1.,  3.])
+    """
+    P = as_vec3(P, "P")
+    Q = np.stack(np.broadcast_arrays(as_vec3(Q1, "Q1"), as_vec3(Q2, "Q2"), as_vec3(Q3, "Q3")), axis=-1)
+    return _solve_basis(Q, P, "[Q1, Q2, Q3]", rtol)
+
+
+def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
+    """Components ``u`` of ``L = u1 C Q1 + u2 C Q2 + u3 C Q3`` (thesis 5.43).
+
+    For ``L = C P`` these are the components of ``P`` on ``Q1, Q2, Q3``
+    (same proportionality ratios).
+
+    Examples
+    --------
+    >>> C = np.diag([1.0, 2.0, 4.0])
+    >>> decompose_line(C, C @ [1.0, 2.0, 3.0], [1.0, 0, 0], [0, 1.0, 0], [1.0, 1.0, 1.0])
+    array([-2., -1.,  3.])
+    """
+    C = _conic(C)
+    L = as_vec3(L, "L")
+    Q = np.stack(np.broadcast_arrays(as_vec3(Q1, "Q1"), as_vec3(Q2, "Q2"), as_vec3(Q3, "Q3")), axis=-1)
+    return _solve_basis(C @ Q, L, "[C Q1, C Q2, C Q3]", rtol)
+
+
+def special_base(C, Q1, rtol: float = 1e-9):
+    """The special base of Fig. 5.4: ``Q1`` exterior, ``Q2, Q3`` its tangent contact points.
+
+    Then ``Q2 C Q2 = Q3 C Q3 = 0`` and ``Q1 C Q2 = Q1 C Q3 = 0`` (the
+    tangents at ``Q2, Q3`` pass through ``Q1``).
+
+    Returns
+    -------
+    Q1, Q2, Q3 : ndarray, shape (..., 3)
+
+    Raises
+    ------
+    InputError
+        If ``Q1`` has no real tangents (interior, or ``C`` imaginary).
+
+    Examples
+    --------
+    >>> Q1, Q2, Q3 = special_base(conic_circle([0.0, 0.0], 1.0), [0.0, -2.0, 1.0])
+    >>> float(Q2 @ conic_circle([0.0, 0.0], 1.0) @ Q1)
+    0.0
+    """
+    Q1 = as_vec3(Q1, "Q1")
+    try:
+        _, X = tangents_from_point(C, Q1, rtol=rtol)
+    except InputError as exc:
+        raise InputError("Q1 must be exterior to the real conic C for the special base "
+                         "(it has no real tangents)") from exc
+    Q1b = np.broadcast_to(Q1, X[..., 0, :].shape)
+    return Q1b, X[..., 0, :], X[..., 1, :]
+
+
+def decompose_point_special(C, P, Q1, Q2, Q3) -> np.ndarray:
+    """Components of ``P`` on the special base of Fig. 5.4 by projections (thesis 5.44-5.45).
+
+    ``u1 = Q1 C P / Q1 C Q1``, ``u2 = Q3 C P / Q3 C Q2``,
+    ``u3 = Q2 C P / Q2 C Q3``.  Only valid for a base from
+    :func:`special_base` (the decoupling needs ``Qi C Qj = 0`` as stated).
+
+    Examples
+    --------
+    >>> C = conic_circle([0.0, 0.0], 1.0)
+    >>> B = special_base(C, [0.0, -2.0, 1.0])
+    >>> u = decompose_point_special(C, [0.3, 0.1, 1.0], *B)
+    >>> np.allclose(u[0] * B[0] + u[1] * B[1] + u[2] * B[2], [0.3, 0.1, 1.0])
+    True
+    """
+    C = _conic(C)
+    P, Q1, Q2, Q3 = (as_vec3(x, n) for x, n in ((P, "P"), (Q1, "Q1"), (Q2, "Q2"), (Q3, "Q3")))
+    CP = _mv(C, P)
+    return np.stack([
+        np.einsum("...i,...i->...", Q1, CP) / _quad(Q1, C, Q1),
+        np.einsum("...i,...i->...", Q3, CP) / _quad(Q3, C, Q2),
+        np.einsum("...i,...i->...", Q2, CP) / _quad(Q2, C, Q3),
+    ], axis=-1)
+
+
+def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
+    """Components of ``L`` on the lines ``Mi = C Qi`` of the special base (thesis 5.46).
+
+    Since ``Mi^T C⁻¹ = Qi^T`` and ``Mi^T C⁻¹ Mj = Qi C Qj``, (5.46) needs no
+    inverse: ``u1 = Q1·L / Q1 C Q1``, ``u2 = Q3·L / Q3 C Q2``,
+    ``u3 = Q2·L / Q2 C Q3``.
+
+    Examples
+    --------
+    >>> C = conic_circle([0.0, 0.0], 1.0)
+    >>> B = special_base(C, [0.0, -2.0, 1.0])
+    >>> P = np.array([0.3, 0.1, 1.0])
+    >>> np.allclose(decompose_line_special(C, C @ P, *B), decompose_point_special(C, P, *B))
+    True
+    """
+    C = _conic(C)
+    L, Q1, Q2, Q3 = (as_vec3(x, n) for x, n in ((L, "L"), (Q1, "Q1"), (Q2, "Q2"), (Q3, "Q3")))
+    dot = lambda a, b: np.einsum("...i,...i->...", a, b)  # noqa: E731
+    return np.stack([dot(Q1, L) / _quad(Q1, C, Q1), dot(Q3, L) / _quad(Q3, C, Q2),
+                     dot(Q2, L) / _quad(Q2, C, Q3)], axis=-1)
+
+
+# --------------------------------------------------------------------------- drawing support
+def drawable_conic(C) -> np.ndarray:
+    """A real conic that shows an imaginary one (thesis 10.2.3).
+
+    For an imaginary (definite) conic, scaled to be positive definite, with
+    centre ``z`` (weight 1) and ``k = z C z = 1 / (C⁻¹)[2, 2] > 0`` the
+    minimum of the quadratic form over points of weight 1, returns
+
+        ``C' = C - 2 k e e^T``,  ``e = [0, 0, 1]`` (the line at infinity),
+
+    i.e. the sign of the homogeneous part flipped in the centred principal
+    frame (10.2.3).  Its real points ``Q`` (weight 1) are those where
+    ``Q C Q = 2 k``: twice the minimum.  For an inertia ``inertia_matrix(m,
+    c, J)`` this is the circle (or ellipse) of gyration about the centre of
+    mass, of radius ``sqrt(J/m)``.  The polar of any point with respect to
+    ``C'`` is the point reflection through the centre of its polar with
+    respect to ``C``: ``C'`` is the point-reflection partner of ``C``.
+
+    Real (and degenerate) conics are returned unchanged.
+
+    Examples
+    --------
+    >>> drawable_conic(np.diag([2.0, 2.0, 8.0]))   # inertia m = 2, J = 8 at the origin: radius 2
+    array([[ 2.,  0.,  0.],
+           [ 0.,  2.,  0.],
+           [ 0.,  0., -8.]])
+    """
+    C = _conic(C)
+    ev = np.linalg.eigvalsh(C)
+    pos = np.all(ev > 0, axis=-1)
+    neg = np.all(ev < 0, axis=-1)
+    imag = pos | neg
+    Cs = np.where(neg[..., None, None], -C, C)
+    cof = Cs[..., 0, 0] * Cs[..., 1, 1] - Cs[..., 0, 1] ** 2
+    det = np.linalg.det(Cs)
+    k = np.zeros(cof.shape)
+    np.divide(det, cof, out=k, where=imag & (cof != 0))
+    out = Cs.copy()
+    out[..., 2, 2] = Cs[..., 2, 2] - 2.0 * k
+    return np.where(imag[..., None, None], out, C)
+
+
+@dataclass(frozen=True)
+class AffineFrame:
+    """``x = A u + t`` maps the unit curve of ``kind`` onto a real conic (see :func:`affine_frame`).
+
+    Unit curves: ``"ellipse"``: ``u1² + u2² = 1`` (``u = (cos s, sin s)``);
+    ``"hyperbola"``: ``u1² - u2² = 1`` (``u = (±cosh s, sinh s)``, two
+    branches); ``"parabola"``: ``u2 = u1²`` (``u = (s, s²)``).
+
+    Attributes
+    ----------
+    kind : str
+        ``"ellipse"``, ``"hyperbola"`` or ``"parabola"``.
+    A : ndarray (2, 2)
+    t : ndarray (2,)
+
+    Examples
+    --------
+    A hyperbola centred at ``(0, 1)`` with semi-axes 2 and 1: a point of the
+    unit hyperbola mapped by ``(A, t)`` lies on it.
+
+    >>> C = conic_hyperbola([0.0, 1.0], [2.0, 1.0])
+    >>> F = affine_frame(C)
+    >>> F.kind, F.t + 0.0
+    ('hyperbola', array([0., 1.]))
+    >>> x = F.A @ [np.cosh(0.5), np.sinh(0.5)] + F.t
+    >>> bool(abs(conic_residual(C, [x[1], -x[0], 1.0])) < 1e-12)
+    True
+    """
+
+    kind: str
+    A: np.ndarray
+    t: np.ndarray
+
+
+_UNIT_STD = {
+    "ellipse": np.diag([-1.0, 1.0, 1.0]),
+    "hyperbola": np.diag([-1.0, 1.0, -1.0]),
+    "parabola": np.array([[0.0, 0.0, -0.5], [0.0, 1.0, 0.0], [-0.5, 0.0, 0.0]]),
+}
+
+
+def affine_frame(C, rtol: float = 1e-10) -> AffineFrame:
+    """Affine frame of a real conic: ``x = A u + t`` maps the unit curve onto it.
+
+    A drawing can then draw one fixed unit path (circle, hyperbola, parabola)
+    under the affine transform ``(A, t)``.  For an ellipse and a hyperbola
+    ``t`` is the centre and the columns of ``A`` are the semi-axes (for the
+    hyperbola the first column is the transverse semi-axis); for a parabola
+    ``t`` is the vertex, ``A[:, 0]`` a unit vector along the tangent at the
+    vertex and ``A[:, 1]`` points along the axis into the parabola.
+
+    Parameters
+    ----------
+    C : array_like, shape (3, 3)
+        A single conic.
+    rtol : float
+        Classification tolerance (see :func:`classify`).
+
+    Raises
+    ------
+    InputError
+        For an imaginary conic (use :func:`drawable_conic` first).
+    DegenerateGeometryError
+        For a degenerate conic.
+
+    Examples
+    --------
+    >>> F = affine_frame(conic_ellipse([1.0, 2.0], [3.0, 1.0]))
+    >>> F.kind, F.t
+    ('ellipse', array([1., 2.]))
+    >>> np.abs(F.A).round(12)
+    array([[3., 0.],
+           [0., 1.]])
+    """
+    C = _conic(C)
+    if C.shape != (3, 3):
+        raise ShapeError(f"C must have shape (3, 3) for affine_frame, got shape {C.shape}")
+    ct = _classify1(T_STD @ C @ T_STD, rtol)
+    if ct.reality == "degenerate":
+        raise DegenerateGeometryError(f"C is a degenerate conic ({ct.kind}): it has no affine frame")
+    if ct.reality == "imaginary":
+        raise InputError("C is an imaginary conic (no real points); draw drawable_conic(C) instead")
+    S = T_STD @ C @ T_STD
+    c, b, A2 = S[0, 0], S[1:, 0], S[1:, 1:]
+    lam, V = np.linalg.eigh(A2)
+    if ct.kind == "parabola":
+        i = int(np.argmax(np.abs(lam)))
+        n, d, lm = V[:, i], V[:, 1 - i], lam[i]
+        bn, bd = b @ n, b @ d
+        s0 = -bn / lm
+        tau0 = -(c - bn * bn / lm) / (2.0 * bd)
+        t = s0 * n + tau0 * d
+        A = np.column_stack([n, (-lm / (2.0 * bd)) * d])
+        return AffineFrame("parabola", A, t)
+    t = -np.linalg.solve(A2, b)
+    k = t @ A2 @ t - c         # (u - t)^T A2 (u - t) = k
+    if ct.kind == "ellipse":
+        return AffineFrame("ellipse", V * np.sqrt(k / lam), t)
+    # hyperbola: the transverse axis has the eigenvalue of the same sign as k
+    order = [0, 1] if lam[0] * k > 0 else [1, 0]
+    lam, V = lam[order], V[:, order]
+    return AffineFrame("hyperbola", V * np.sqrt(np.abs(k / lam)), t)
+
+
+def conic_from_affine(kind: str, A, t) -> np.ndarray:
+    """The conic image of the unit curve ``kind`` under ``x = A u + t`` (inverse of :func:`affine_frame`).
+
+    In standard coordinates the map is ``X = M U`` with ``M = [[1, 0], [t, A]]``,
+    so ``S = M⁻ᵀ S_unit M⁻¹``; the result is ``T S T`` (5.47).
+
+    Examples
+    --------
+    >>> conic_from_affine("ellipse", np.eye(2), [0.0, 0.0])    # the unit circle
+    array([[ 1.,  0.,  0.],
+           [ 0.,  1.,  0.],
+           [ 0.,  0., -1.]])
+    """
+    if kind not in _UNIT_STD:
+        raise InputError(f"kind must be 'ellipse', 'hyperbola' or 'parabola', got {kind!r}")
+    A = as_array(A, "A", (2, 2))
+    t = as_xy(t, "t")
+    _check_invertible(A, "A", "singular", 1e-13)
+    M = np.zeros(np.broadcast_shapes(A.shape[:-2], t.shape[:-1]) + (3, 3))
+    M[..., 0, 0] = 1.0
+    M[..., 1:, 0] = t
+    M[..., 1:, 1:] = A
+    Minv = np.linalg.inv(M)
+    S = np.swapaxes(Minv, -1, -2) @ _UNIT_STD[kind] @ Minv
+    C = T_STD @ S @ T_STD
+    return 0.5 * (C + np.swapaxes(C, -1, -2))
+
+
+def _rot(angle):
+    c, s = np.cos(angle), np.sin(angle)
+    return np.stack([np.stack([c, -s], -1), np.stack([s, c], -1)], -2)
+
+
+def conic_circle(centre, radius, imaginary: bool = False) -> np.ndarray:
+    """Circle ``|x - c|² = r²`` (or the imaginary circle ``|x - c|² = -r²``).
+
+    In the package's coordinates (point ``[y, -x, w]``)::
+
+        [[ 1,   0,  -cy],
+         [ 0,   1,   cx],
+         [-cy,  cx,  cx² + cy² ∓ r²]]
+
+    The imaginary circle with ``r² = J/m`` is ``inertia_matrix(m, c, J) / m``.
+
+    Examples
+    --------
+    >>> conic_circle([1.0, 2.0], 3.0)
+    array([[ 1.,  0., -2.],
+           [ 0.,  1.,  1.],
+           [-2.,  1., -4.]])
+    """
+    c = as_xy(centre, "centre")
+    r = check_positive(radius, "radius")
+    r2 = np.where(imaginary, -1.0, 1.0) * r * r
+    shape = np.broadcast_shapes(c.shape[:-1], r.shape)
+    C = np.zeros(shape + (3, 3))
+    C[..., 0, 0] = C[..., 1, 1] = 1.0
+    C[..., 0, 2] = C[..., 2, 0] = -c[..., 1]
+    C[..., 1, 2] = C[..., 2, 1] = c[..., 0]
+    C[..., 2, 2] = c[..., 0] ** 2 + c[..., 1] ** 2 - r2
+    return C
+
+
+def conic_ellipse(centre, axes, angle=0.0) -> np.ndarray:
+    """Ellipse with semi-axes ``axes = (a, b)``, the first turned by ``angle`` from +x.
+
+    Examples
+    --------
+    >>> str(classify(conic_ellipse([0.0, 0.0], [2.0, 1.0], 0.3)))
+    'real ellipse'
+    """
+    axes = check_positive(as_xy(axes, "axes"), "axes")
+    angle = as_array(angle, "angle")
+    A = _rot(angle) * axes[..., None, :]
+    return conic_from_affine("ellipse", A, centre)
+
+
+def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
+    """Hyperbola ``x'²/a² - y'²/b² = 1`` in the frame at ``centre`` turned by ``angle``.
+
+    Examples
+    --------
+    >>> str(classify(conic_hyperbola([0.0, 0.0], [1.0, 1.0])))
+    'real hyperbola'
+    """
+    axes = check_positive(as_xy(axes, "axes"), "axes")
+    angle = as_array(angle, "angle")
+    A = _rot(angle) * axes[..., None, :]
+    return conic_from_affine("hyperbola", A, centre)
+
+
+def conic_parabola(vertex, focal_length, angle=0.0) -> np.ndarray:
+    """Parabola ``y' = x'² / (4 f)`` in the frame at ``vertex`` turned by ``angle`` (opens to +y').
+
+    Examples
+    --------
+    >>> conic_parabola([0.0, 0.0], 0.25)      # y = x²
+    array([[ 0. ,  0. , -0.5],
+           [ 0. ,  1. ,  0. ],
+           [-0.5,  0. ,  0. ]])
+    """
+    f = check_positive(focal_length, "focal_length")
+    angle = as_array(angle, "angle")
+    scale = np.stack([np.ones_like(f), 1.0 / (4.0 * f)], axis=-1)
+    A = _rot(angle) * scale[..., None, :]
+    return conic_from_affine("parabola", A, vertex)
+
+
+def conic_from_coefficients(a, b, c, d, e, f) -> np.ndarray:
+    """Conic ``a x² + b xy + c y² + d x + e y + f = 0`` (thesis 5.35 in standard coordinates).
+
+    Examples
+    --------
+    >>> conic_from_coefficients(1, 0, 1, 0, 0, -1)    # the unit circle
+    array([[ 1.,  0.,  0.],
+           [ 0.,  1.,  0.],
+           [ 0.,  0., -1.]])
+    """
+    a, b, c, d, e, f = np.broadcast_arrays(*(as_array(v, n) for v, n in
+                                             zip((a, b, c, d, e, f), "abcdef")))
+    S = np.stack([np.stack([f, d / 2, e / 2], -1), np.stack([d / 2, a, b / 2], -1),
+                  np.stack([e / 2, b / 2, c], -1)], -2)
+    return T_STD @ S @ T_STD + 0.0

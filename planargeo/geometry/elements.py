@@ -1,0 +1,558 @@
+"""Thin classes over the array functions: :class:`Point`, :class:`Line`, :class:`Conic`.
+
+Each wraps one read-only array in the package's homogeneous coordinates
+(``Point.array``: ``[y, -x, w]``; ``Line.array``: a wrench ``[fx, fy, tz]``;
+``Conic.matrix``: symmetric 3×3), validated in the constructor.  All the
+mathematics lives in :mod:`planargeo.geometry.projective` and :mod:`planargeo.geometry.conics`.
+
+Single values only: each object is *one* point, line or conic (a batch such as
+shape ``(n, 3)`` raises :class:`~planargeo.errors.ShapeError`).  For many at
+once use the array functions, which broadcast over leading dimensions.
+
+Equality is projective: two points (lines, conics) are equal when their
+arrays are proportional (any non-zero factor, either sign), up to a relative
+tolerance of 1e-12.  The classes are therefore not hashable.
+
+Operators: ``p ^ q`` is the join (a :class:`Line`), ``l ^ m`` the meet (a
+:class:`Point`), ``p @ l`` / ``l @ p`` the incidence form (a float, zero iff
+the point lies on the line).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from planargeo.geometry import conics as _c
+from planargeo.geometry import projective as _p
+from planargeo._validate import as_array
+from planargeo.errors import DegenerateGeometryError, ShapeError
+
+__all__ = ["Point", "Line", "Conic"]
+
+_EQ_TOL = 1e-12
+
+
+def _fmt(v: float) -> str:
+    v = float(v)
+    if v == 0:
+        return "0"
+    return f"{v:.6g}"
+
+
+def _vec(x, name: str) -> np.ndarray:
+    if isinstance(x, (Point, Line)):
+        x = x.array
+    a = as_array(x, name, (3,))
+    if a.shape != (3,):
+        raise ShapeError(f"{name} must have shape (3,), got shape {a.shape}")
+    a = a + 0.0
+    a.setflags(write=False)
+    return a
+
+
+def _proportional(a: np.ndarray, b: np.ndarray) -> bool:
+    a = a.ravel() / np.linalg.norm(a)
+    b = b.ravel() / np.linalg.norm(b)
+    return bool(min(np.linalg.norm(a - b), np.linalg.norm(a + b)) <= _EQ_TOL * 10)
+
+
+def _as_point_array(p, name: str = "p") -> np.ndarray:
+    return p.array if isinstance(p, Point) else _vec(p, name)
+
+
+def _as_line_array(l, name: str = "l") -> np.ndarray:
+    return l.array if isinstance(l, Line) else _vec(l, name)
+
+
+class Point:
+    """A point of the projective plane (thesis 5.49), i.e. a twist's pole.
+
+    Parameters
+    ----------
+    array : array_like, shape (3,)
+        Homogeneous coordinates ``[y, -x, w]`` (any non-zero multiple);
+        ``w = 0`` is a point at infinity.  Single values only: a batch
+        ``(..., 3)`` raises :class:`~planargeo.errors.ShapeError`; the functions
+        of :mod:`planargeo.geometry.projective` broadcast.
+
+    Examples
+    --------
+    >>> Point.from_xy(1, 2)
+    Point(x=1, y=2)
+    >>> Point.at_infinity((0, 1))
+    Point(at infinity, direction=(0, 1))
+    >>> Point.from_xy(0, 0) ^ Point.from_xy(1, 1)
+    Line(through=(0, 0), direction=(0.707107, 0.707107))
+    """
+
+    __slots__ = ("_a",)
+    __hash__ = None
+
+    def __init__(self, array):
+        a = _vec(array, "array")
+        if not np.any(a):
+            raise DegenerateGeometryError("array is the zero vector, which is no point")
+        self._a = a
+
+    # constructors
+    @classmethod
+    def from_xy(cls, x, y=None) -> "Point":
+        """The finite point ``(x, y)``; accepts ``from_xy(x, y)`` or ``from_xy((x, y))``."""
+        xy = x if y is None else (x, y)
+        a = as_array(xy, "xy", (2,))
+        if a.shape != (2,):
+            raise ShapeError(f"xy must have shape (2,), got shape {a.shape}")
+        return cls(_p.from_xy(a))
+
+    @classmethod
+    def at_infinity(cls, direction) -> "Point":
+        """The point at infinity in ``direction`` (a translation perpendicular to it)."""
+        d = as_array(direction, "direction", (2,))
+        if d.shape != (2,):
+            raise ShapeError(f"direction must have shape (2,), got shape {d.shape}")
+        return cls(_p.from_direction(d))
+
+    # data
+    @property
+    def array(self) -> np.ndarray:
+        """The read-only homogeneous coordinates ``[y, -x, w]``."""
+        return self._a
+
+    @property
+    def xy(self) -> np.ndarray:
+        """Euclidean ``(x, y)``; ``(nan, nan)`` at infinity."""
+        return _p.to_xy(self._a)
+
+    @property
+    def is_ideal(self) -> bool:
+        """True for a point at infinity (``w`` exactly zero)."""
+        return bool(_p.is_ideal(self._a))
+
+    @property
+    def direction(self) -> np.ndarray:
+        """Unit direction of a point at infinity; ``(nan, nan)`` for a finite point."""
+        return _p.direction(self._a)
+
+    def normalized(self) -> "Point":
+        """The same point with ``w = 1`` (or unit length at infinity)."""
+        return Point(_p.normalize_point(self._a))
+
+    # geometry
+    def join(self, other) -> "Line":
+        """The line through this point and ``other`` (thesis 5.32); also ``p ^ q``.
+
+        Joining with a point at infinity gives the line through this point in
+        that direction; two coincident points raise
+        :class:`~planargeo.errors.DegenerateGeometryError`.
+
+        Examples
+        --------
+        >>> Point.from_xy(0, 0).join(Point.from_xy(1, 1))
+        Line(through=(0, 0), direction=(0.707107, 0.707107))
+        >>> Point.from_xy(0, 2).join(Point.at_infinity((1, 0)))     # the horizontal line y = 2
+        Line(through=(0, 2), direction=(1, 0))
+        """
+        return Line(_p.join(self._a, _as_point_array(other, "other")))
+
+    def __xor__(self, other):
+        if isinstance(other, Point):
+            return self.join(other)
+        return NotImplemented
+
+    def incidence(self, line) -> float:
+        """The form ``p @ l`` (thesis 5.23): zero exactly when the point lies on ``line``.
+
+        For a twist and a wrench it is the power ``v·f``.  Its value depends on
+        the scale of both arrays; for a distance use :meth:`distance_to`.
+
+        Examples
+        --------
+        >>> y1 = Line.from_point_direction((0, 1), (1, 0))            # the line y = 1
+        >>> Point.from_xy(3, 1).incidence(y1), Point.from_xy(3, 2).incidence(y1)
+        (0.0, 1.0)
+        >>> Point.at_infinity((1, 0)) @ y1                            # y = 1 passes through it
+        0.0
+        """
+        return float(_p.incidence(self._a, _as_line_array(line, "line")))
+
+    def __matmul__(self, other):
+        if isinstance(other, Line):
+            return self.incidence(other)
+        return NotImplemented
+
+    def distance_to(self, line) -> float:
+        """Signed distance to ``line``, positive on its left (thesis 5.23)."""
+        return float(_p.signed_distance(self._a, _as_line_array(line, "line")))
+
+    def __eq__(self, other):
+        if not isinstance(other, Point):
+            return NotImplemented
+        return _proportional(self._a, other._a)
+
+    def __array__(self, dtype=None, copy=None):
+        return np.array(self._a, dtype=dtype)
+
+    def __repr__(self) -> str:
+        if self.is_ideal:
+            d = self.direction
+            return f"Point(at infinity, direction=({_fmt(d[0])}, {_fmt(d[1])}))"
+        x, y = self.xy
+        return f"Point(x={_fmt(x)}, y={_fmt(y)})"
+
+
+class Line:
+    """A line of the projective plane (thesis 5.55), i.e. a wrench's line of action.
+
+    Parameters
+    ----------
+    array : array_like, shape (3,)
+        ``[fx, fy, tz]``: the points ``(x, y)`` with ``tz + y fx - x fy = 0``,
+        directed along ``(fx, fy)``.  ``[0, 0, 1]`` is the line at infinity.
+        Single values only: a batch ``(..., 3)`` raises
+        :class:`~planargeo.errors.ShapeError`; the functions of
+        :mod:`planargeo.geometry.projective` broadcast.
+
+    Examples
+    --------
+    >>> Line.through(Point.from_xy(0, 1), Point.from_xy(2, 1))
+    Line(through=(0, 1), direction=(1, 0))
+    >>> Line.at_infinity()
+    Line(at infinity)
+    >>> Line([1, 0, 0]) ^ Line([0, 1, -3])
+    Point(x=-3, y=0)
+    """
+
+    __slots__ = ("_a",)
+    __hash__ = None
+
+    def __init__(self, array):
+        a = _vec(array, "array")
+        if not np.any(a):
+            raise DegenerateGeometryError("array is the zero vector, which is no line")
+        self._a = a
+
+    @classmethod
+    def through(cls, p, q) -> "Line":
+        """The line from ``p`` to ``q`` (Points or homogeneous arrays; thesis 5.32)."""
+        return cls(_p.join(_as_point_array(p, "p"), _as_point_array(q, "q")))
+
+    @classmethod
+    def at_infinity(cls) -> "Line":
+        """The line at infinity ``[0, 0, 1]`` (thesis 5.16)."""
+        return cls(_p.LINE_AT_INFINITY)
+
+    @classmethod
+    def from_point_direction(cls, point, direction) -> "Line":
+        """The line through ``point`` (a Point, or Euclidean ``(x, y)``) along ``direction``."""
+        if isinstance(point, Point):
+            pa = point.array
+        else:
+            xy = as_array(point, "point", (2,))
+            if xy.shape != (2,):
+                raise ShapeError(f"point must have shape (2,), got shape {xy.shape}")
+            pa = _p.from_xy(xy)
+        return cls(_p.line_through_point_direction(pa, direction))
+
+    @property
+    def array(self) -> np.ndarray:
+        """The read-only coordinates ``[fx, fy, tz]``."""
+        return self._a
+
+    @property
+    def is_at_infinity(self) -> bool:
+        """True for the line at infinity (force exactly zero)."""
+        return bool(_p.is_at_infinity(self._a))
+
+    @property
+    def direction(self) -> np.ndarray:
+        """Unit direction ``(fx, fy)/|f|``; ``(nan, nan)`` for the line at infinity."""
+        return _p.line_direction(self._a)
+
+    @property
+    def foot(self) -> Point | None:
+        """The point of the line nearest to the origin (``None`` for the line at infinity)."""
+        return None if self.is_at_infinity else Point(_p.foot_point(self._a))
+
+    def normalized(self) -> "Line":
+        """The same line with unit force (or ``tz = ±1`` at infinity)."""
+        return Line(_p.normalize_line(self._a))
+
+    def meet(self, other) -> Point:
+        """The common point with ``other`` (thesis 5.34); also ``l ^ m``.
+
+        Parallel lines meet at infinity (no error); the same line twice raises
+        :class:`~planargeo.errors.DegenerateGeometryError`.
+
+        Examples
+        --------
+        >>> y1 = Line.from_point_direction((0, 1), (1, 0))            # y = 1
+        >>> y1.meet(Line.from_point_direction((2, 0), (0, 1)))        # x = 2
+        Point(x=2, y=1)
+        >>> y1.meet(Line.from_point_direction((0, 5), (2, 0))).is_ideal   # y = 5: parallel
+        True
+        """
+        return Point(_p.meet(self._a, _as_line_array(other, "other")))
+
+    def __xor__(self, other):
+        if isinstance(other, Line):
+            return self.meet(other)
+        return NotImplemented
+
+    def incidence(self, point) -> float:
+        """The form ``p @ l`` (thesis 5.23): zero exactly when ``point`` lies on this line.
+
+        Examples
+        --------
+        >>> Line.at_infinity().incidence(Point.at_infinity((3, 4)))    # every ideal point is on it
+        0.0
+        >>> Line.at_infinity() @ Point.from_xy(3, 4)                   # no finite point is
+        1.0
+        """
+        return float(_p.incidence(_as_point_array(point, "point"), self._a))
+
+    def __matmul__(self, other):
+        if isinstance(other, Point):
+            return self.incidence(other)
+        return NotImplemented
+
+    def signed_distance(self, point) -> float:
+        """Signed distance of ``point`` from this line, positive on the left (thesis 5.23).
+
+        "Left" is seen looking along the line's direction ``(fx, fy)``.  A point
+        at infinity has no finite distance: the result is NaN (documented, no
+        warning).
+
+        Examples
+        --------
+        >>> y1 = Line.from_point_direction((0, 1), (1, 0))            # y = 1, directed along +x
+        >>> y1.signed_distance(Point.from_xy(3, 4)), y1.signed_distance(Point.from_xy(0, -1))
+        (3.0, -2.0)
+        >>> y1.signed_distance(Point.at_infinity((1, 0)))
+        nan
+        """
+        return float(_p.signed_distance(_as_point_array(point, "point"), self._a))
+
+    def __eq__(self, other):
+        if not isinstance(other, Line):
+            return NotImplemented
+        return _proportional(self._a, other._a)
+
+    def __array__(self, dtype=None, copy=None):
+        return np.array(self._a, dtype=dtype)
+
+    def __repr__(self) -> str:
+        if self.is_at_infinity:
+            return "Line(at infinity)"
+        x, y = _p.to_xy(_p.foot_point(self._a))
+        d = self.direction
+        return (f"Line(through=({_fmt(x)}, {_fmt(y)}), "
+                f"direction=({_fmt(d[0])}, {_fmt(d[1])}))")
+
+
+class Conic:
+    """A conic (thesis 5.35): a symmetric 3×3 matrix mapping points to lines.
+
+    Parameters
+    ----------
+    matrix : array_like, shape (3, 3), symmetric
+        Single values only: a batch ``(..., 3, 3)`` raises
+        :class:`~planargeo.errors.ShapeError`; the functions of
+        :mod:`planargeo.geometry.conics` broadcast.
+
+    Examples
+    --------
+    >>> C = Conic.circle((0, 0), 1)
+    >>> C
+    Conic(real circle, centre=(0, 0))
+    >>> C.polar(Point.from_xy(2, 0))
+    Line(through=(0.5, 0), direction=(0, -1))
+    >>> C.pole(Line.at_infinity())
+    Point(x=0, y=0)
+    """
+
+    __slots__ = ("_m",)
+    __hash__ = None
+
+    def __init__(self, matrix):
+        if isinstance(matrix, Conic):
+            matrix = matrix.matrix
+        m = _c._conic(matrix, "matrix")
+        if m.shape != (3, 3):
+            raise ShapeError(f"matrix must have shape (3, 3), got shape {m.shape}")
+        if not np.any(m):
+            raise DegenerateGeometryError("matrix is zero, which is no conic")
+        m = 0.5 * (m + m.T)
+        m.setflags(write=False)
+        self._m = m
+
+    @classmethod
+    def circle(cls, centre, radius, imaginary: bool = False) -> "Conic":
+        """Circle of ``radius`` about ``centre`` (imaginary: ``|x - c|² = -r²``)."""
+        return cls(_c.conic_circle(centre, radius, imaginary=imaginary))
+
+    @classmethod
+    def ellipse(cls, centre, axes, angle=0.0) -> "Conic":
+        """Ellipse with semi-axes ``axes``, the first turned by ``angle``."""
+        return cls(_c.conic_ellipse(centre, axes, angle))
+
+    @classmethod
+    def hyperbola(cls, centre, axes, angle=0.0) -> "Conic":
+        """Hyperbola ``x'²/a² - y'²/b² = 1`` in the frame at ``centre`` turned by ``angle``."""
+        return cls(_c.conic_hyperbola(centre, axes, angle))
+
+    @classmethod
+    def parabola(cls, vertex, focal_length, angle=0.0) -> "Conic":
+        """Parabola ``y' = x'²/(4 f)`` at ``vertex`` turned by ``angle``."""
+        return cls(_c.conic_parabola(vertex, focal_length, angle))
+
+    @classmethod
+    def from_coefficients(cls, a, b, c, d, e, f) -> "Conic":
+        """Conic ``a x² + b xy + c y² + d x + e y + f = 0``."""
+        return cls(_c.conic_from_coefficients(a, b, c, d, e, f))
+
+    @property
+    def matrix(self) -> np.ndarray:
+        """The read-only symmetric matrix."""
+        return self._m
+
+    def polar(self, point) -> Line:
+        """The polar line ``C p`` of ``point`` (thesis 5.36).
+
+        For an inertia conic this is the axis of percussion of an acceleration
+        pole (5.64).  A point at infinity maps to a diameter (a line through
+        the centre).
+
+        Examples
+        --------
+        >>> C = Conic.circle((0, 0), 1)
+        >>> C.polar(Point.from_xy(2, 0))                # x = r²/2 = 1/2
+        Line(through=(0.5, 0), direction=(0, -1))
+        >>> C.polar(Point.at_infinity((1, 0)))          # the diameter perpendicular to x
+        Line(through=(0, 0), direction=(0, -1))
+        """
+        return Line(_c.polar(self._m, _as_point_array(point, "point")))
+
+    def pole(self, line) -> Point:
+        """The pole ``C⁻¹ l`` of ``line`` (thesis 5.37), the inverse of :meth:`polar`.
+
+        The line at infinity maps to the centre; a line through the centre to
+        a point at infinity.  A degenerate (singular) conic raises
+        :class:`~planargeo.errors.DegenerateGeometryError`.
+
+        Examples
+        --------
+        >>> C = Conic.circle((0, 0), 1)
+        >>> C.pole(Line.from_point_direction((0.5, 0), (0, 1)))   # x = 1/2
+        Point(x=2, y=0)
+        >>> C.pole(Line.at_infinity())
+        Point(x=0, y=0)
+        """
+        return Point(_c.pole(self._m, _as_line_array(line, "line")))
+
+    def classify(self, rtol: float = 1e-10) -> _c.ConicType:
+        """Real / imaginary / degenerate and kind (thesis 5.2.2; see :func:`planargeo.geometry.conics.classify`).
+
+        Examples
+        --------
+        >>> Conic.circle((0, 0), 1).classify()
+        ConicType(reality='real', kind='ellipse', is_circle=True, rank=3)
+        >>> str(Conic(np.diag([2.0, 2.0, 8.0])).classify())    # an inertia: no real points
+        'imaginary circle'
+        >>> str(Conic.parabola((0, 0), 1).classify())
+        'real parabola'
+        """
+        return _c.classify(self._m, rtol=rtol)
+
+    @property
+    def centre(self) -> Point:
+        """The centre: the pole ``C⁻¹ [0, 0, 1]`` of the line at infinity (thesis 5.37 with 5.16; 5.2.2).
+
+        A point at infinity (the axis direction) for a parabola; the centre of
+        mass for an inertia (4.58).  See :func:`planargeo.geometry.conics.centre`.
+
+        Examples
+        --------
+        >>> Conic.ellipse((1, 2), (2, 1)).centre
+        Point(x=1, y=2)
+        >>> Conic.parabola((0, 0), 1).centre            # y = x²/4: ideal point along the axis
+        Point(at infinity, direction=(0, 1))
+        """
+        return Point(_c.centre(self._m))
+
+    def contains(self, point, rtol: float = 1e-9) -> bool:
+        """True if ``point`` lies on the conic: ``|p C p| <= rtol |C| |p|²`` (thesis 5.38).
+
+        Points at infinity are ordinary: a hyperbola contains the ideal points
+        of its asymptotes.
+
+        Examples
+        --------
+        >>> C = Conic.circle((0, 0), 1)
+        >>> C.contains(Point.from_xy(0.6, 0.8)), C.contains(Point.from_xy(1, 1))
+        (True, False)
+        >>> Conic.hyperbola((0, 0), (1, 1)).contains(Point.at_infinity((1, 1)))   # asymptote y = x
+        True
+        """
+        return bool(_c.is_on_conic(self._m, _as_point_array(point, "point"), rtol=rtol))
+
+    def tangents_from(self, point):
+        """The two tangents from an exterior ``point`` and their contact points.
+
+        Returns ``((Line, Line), (Point, Point))``: the tangent ``i`` touches
+        at contact point ``i``, which lies on the polar of ``point`` (thesis
+        5.2.2, 5.39).  Raises :class:`~planargeo.errors.InputError` for an
+        interior point (see :func:`planargeo.geometry.conics.tangents_from_point`).
+
+        Examples
+        --------
+        >>> (t1, t2), (x1, x2) = Conic.circle((0, 0), 1).tangents_from(Point.from_xy(2, 0))
+        >>> x1, x2                                      # (1/2, ±√3/2), on the polar x = 1/2
+        (Point(x=0.5, y=0.866025), Point(x=0.5, y=-0.866025))
+        >>> abs(t1 @ Point.from_xy(2, 0)) < 1e-12       # the tangent passes through the point
+        True
+        """
+        L, X = _c.tangents_from_point(self._m, _as_point_array(point, "point"))
+        return (Line(L[0]), Line(L[1])), (Point(X[0]), Point(X[1]))
+
+    def affine_frame(self) -> _c.AffineFrame:
+        """``x = A u + t`` mapping the unit curve onto this real conic."""
+        return _c.affine_frame(self._m)
+
+    def drawable(self) -> "Conic":
+        """The real point-reflection partner of an imaginary conic (thesis 10.2.3); self if real.
+
+        For an inertia it is the circle (or ellipse) of gyration about the
+        centre of mass: the polar of a point with respect to it is the point
+        reflection, through the centre, of the polar with respect to the
+        inertia.  See :func:`planargeo.geometry.conics.drawable_conic`.
+
+        Examples
+        --------
+        >>> I = Conic(np.diag([2.0, 2.0, 8.0]))    # inertia m = 2, J = 8 at the origin
+        >>> I, I.drawable()                                 # ρ = sqrt(J/m) = 2
+        (Conic(imaginary circle, centre=(0, 0)), Conic(real circle, centre=(0, 0)))
+        >>> I.drawable().contains(Point.from_xy(2, 0))
+        True
+        """
+        return Conic(_c.drawable_conic(self._m))
+
+    def __eq__(self, other):
+        if not isinstance(other, Conic):
+            return NotImplemented
+        return _proportional(self._m, other._m)
+
+    def __array__(self, dtype=None, copy=None):
+        return np.array(self._m, dtype=dtype)
+
+    def __repr__(self) -> str:
+        t = self.classify()
+        name = str(t)
+        if t.reality == "degenerate":
+            return f"Conic(degenerate {name}, matrix={np.round(self._m, 6).tolist()})"
+        if t.kind == "parabola" and t.reality == "real":
+            F = _c.affine_frame(self._m)
+            d = F.A[:, 1] / np.linalg.norm(F.A[:, 1])
+            return (f"Conic({name}, vertex=({_fmt(F.t[0])}, {_fmt(F.t[1])}), "
+                    f"axis=({_fmt(d[0])}, {_fmt(d[1])}))")
+        z = _c.centre(self._m)
+        x, y = _p.to_xy(z)
+        return f"Conic({name}, centre=({_fmt(x)}, {_fmt(y)}))"

@@ -1,0 +1,683 @@
+"""Points and lines of the projective plane as arrays (thesis chapter 5).
+
+planargeo uses the thesis's *alternative homogeneous coordinates* (5.47-5.56),
+which are screw coordinates:
+
+* a point ``(x, y)`` is ``[y, -x, 1]`` (any non-zero multiple): the unit
+  rotation twist about the point (5.51).  ``w = p[..., 2]`` is its *weight*;
+  ``w = 0`` is a point at infinity (a translation twist).
+* a line is a wrench ``[fx, fy, tz]`` acting along it (5.56): the points
+  ``(x, y)`` with ``tz + y fx - x fy = 0`` (4.27).  ``[0, 0, 1]`` (a pure
+  couple) is the line at infinity.
+* incidence is ``p @ l == 0`` (zero power, 5.24).
+
+Ideal points and the line at infinity are ordinary values that flow through
+every function without warnings.  Whether an element is ideal is decided by
+an *exact* zero (of the weight ``w`` for points, of the force ``(fx, fy)``
+for lines); no epsilon is used.  A point computed as the meet of two lines
+that are parallel only up to rounding therefore comes out as a very far
+finite point, which is the honest answer for the numbers given.
+
+:func:`join` and :func:`meet` refuse near-coincident inputs: their condition
+number ``κ = |a| |b| / |a × b|`` (one over the sine of the angle between the
+two 3-vectors) bounds the relative error of the result by about ``ε κ``, and
+past :data:`COND_LIMIT` (``1e13``, the same limit as
+:func:`planargeo.geometry.conics.pole`) they raise :class:`DegenerateGeometryError`
+carrying ``.cond`` instead of returning a line or point with fewer than about
+three correct digits.  Parallel lines and distinct ideal points are well
+conditioned: their meet (an ideal point) and join (the line at infinity) are
+ordinary results.
+
+Every function broadcasts over leading dimensions: homogeneous vectors are
+``(..., 3)``, Euclidean points and directions ``(..., 2)``.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo._validate import as_array, as_vec3, as_xy
+from planargeo.errors import DegenerateGeometryError, InputError
+
+__all__ = [
+    "T_STD", "LINE_AT_INFINITY", "COND_LIMIT",
+    "normalize", "normalize_point", "normalize_line",
+    "is_ideal", "is_at_infinity",
+    "from_xy", "from_direction", "to_xy", "direction", "line_direction",
+    "join", "meet", "cross_cond", "incidence", "signed_distance", "pencil",
+    "line_through_point_direction", "foot_point",
+    "to_standard", "from_standard", "conic_to_standard", "conic_from_standard",
+]
+
+#: Change of coordinates of thesis (5.47): ``alternative = T_STD @ standard``.
+#: It is symmetric, orthogonal and a proper rotation (det = +1), hence its own
+#: inverse, and cross products (join, meet) carry over unchanged.
+T_STD = np.array([[0.0, 0.0, 1.0], [0.0, -1.0, 0.0], [1.0, 0.0, 0.0]])
+T_STD.setflags(write=False)
+
+#: The line at infinity ``[0, 0, 1]`` (a pure couple).
+LINE_AT_INFINITY = np.array([0.0, 0.0, 1.0])
+LINE_AT_INFINITY.setflags(write=False)
+
+#: Largest condition number ``κ = |a| |b| / |a × b|`` that :func:`join` and
+#: :func:`meet` accept.  Their relative error is at most about ``ε κ``
+#: (measured in ``benchmarks/results/breakdown.md`` §(f): the error follows
+#: ``ε κ`` up to κ ≈ 1e16), so at the limit ``ε κ ≈ 2e-3``: past it fewer than
+#: about three digits would be right, and the answer is refused.  The same
+#: limit as ``rtol = 1e-13`` of :func:`planargeo.geometry.conics.pole`.
+COND_LIMIT = 1e13
+
+
+def _first_index(mask: np.ndarray) -> str:
+    """Human-readable position of the first True in ``mask`` ('' for a scalar)."""
+    if mask.ndim == 0:
+        return ""
+    idx = tuple(int(i) for i in np.argwhere(mask)[0])
+    return f" at index {idx}"
+
+
+def _cross(a, b):
+    """Cross product over the last axis (broadcasting); ~10x faster than ``np.cross``."""
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    if a.shape == b.shape == (3,):    # one pair: Python floats, one array (a few µs less than the general path)
+        a0, a1, a2 = a.tolist()
+        b0, b1, b2 = b.tolist()
+        return np.array([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0])
+    a, b = np.broadcast_arrays(a, b)
+    out = np.empty(a.shape)
+    out[..., 0] = a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1]
+    out[..., 1] = a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2]
+    out[..., 2] = a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+    return out
+
+
+def _safe_div(num, den):
+    """``num / den`` where ``den != 0``, NaN elsewhere, without warnings."""
+    num, den = np.broadcast_arrays(np.asarray(num, float), np.asarray(den, float))
+    out = np.full(num.shape, np.nan)
+    np.divide(num, den, out=out, where=den != 0)
+    return out
+
+
+# --------------------------------------------------------------------------- normalisation
+def normalize_point(p) -> np.ndarray:
+    """Base coordinates of points (thesis 5.2, 5.49).
+
+    Finite points are scaled to weight ``w = 1`` (``[y, -x, 1]``); points at
+    infinity (``w`` exactly zero) are scaled to unit length, keeping their
+    sign.
+
+    Parameters
+    ----------
+    p : array_like, shape (..., 3)
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+
+    Raises
+    ------
+    DegenerateGeometryError
+        If some ``p`` is the zero vector (which is no point).
+
+    Examples
+    --------
+    >>> normalize_point([4.0, -2.0, 2.0])
+    array([ 2., -1.,  1.])
+    >>> normalize_point([0.0, 3.0, 0.0])      # a point at infinity
+    array([0., 1., 0.])
+    """
+    p = as_vec3(p, "p")
+    w = p[..., 2]
+    n = np.linalg.norm(p, axis=-1)
+    zero = n == 0
+    if np.any(zero):
+        raise DegenerateGeometryError(f"p is the zero vector{_first_index(zero)}, which is no point")
+    den = np.where(w != 0, w, n)
+    return p / den[..., None]
+
+
+def normalize_line(l) -> np.ndarray:
+    """Base coordinates of lines (thesis 5.11, 5.55).
+
+    Finite lines are scaled to a unit force ``|(fx, fy)| = 1`` (keeping the
+    line's orientation, so signed distances keep their sign); the line at
+    infinity (force exactly zero) is scaled to ``tz = ±1``, keeping its sign:
+    as a wrench it is a pure couple and the sign is the couple's sense
+    (counter-clockwise ``+1``).  Every normalisation in the package
+    (e.g. :func:`planargeo.screws.add_wrenches`) uses this function.
+
+    Parameters
+    ----------
+    l : array_like, shape (..., 3)
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+
+    Raises
+    ------
+    DegenerateGeometryError
+        If some ``l`` is the zero vector (which is no line).
+
+    Examples
+    --------
+    >>> normalize_line([0.0, 2.0, 4.0])       # the vertical line x = 2, pointing up
+    array([0., 1., 2.])
+    >>> normalize_line([0.0, 0.0, -5.0])      # the line at infinity: a clockwise couple
+    array([ 0.,  0., -1.])
+    """
+    l = as_vec3(l, "l")
+    f = np.hypot(l[..., 0], l[..., 1])
+    t = np.abs(l[..., 2])
+    zero = (f == 0) & (t == 0)
+    if np.any(zero):
+        raise DegenerateGeometryError(f"l is the zero vector{_first_index(zero)}, which is no line")
+    den = np.where(f != 0, f, t)
+    return l / den[..., None]
+
+
+def normalize(x, kind: str | None = None) -> np.ndarray:
+    """Base coordinates of points (``kind="point"``) or lines (``kind="line"``).
+
+    See :func:`normalize_point` (thesis 5.49) and :func:`normalize_line`
+    (thesis 5.55).  ``kind`` is required: the same array is a point or a line
+    depending on how it is read (a twist or a wrench), and the two are scaled
+    differently (weight ``w = 1`` versus unit force), so there is no default.
+
+    Raises
+    ------
+    InputError
+        ``kind`` missing or not ``"point"`` / ``"line"``.
+
+    Examples
+    --------
+    >>> normalize([2.0, 0.0, 2.0], kind="point")
+    array([1., 0., 1.])
+    >>> normalize([3.0, 4.0, 10.0], kind="line")
+    array([0.6, 0.8, 2. ])
+    >>> normalize([3.0, 4.0, 10.0])
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: kind must be given, 'point' or 'line' (a point and a line are scaled differently)
+    """
+    if kind is None:
+        raise InputError("kind must be given, 'point' or 'line' (a point and a line are scaled differently)")
+    if kind == "point":
+        return normalize_point(x)
+    if kind == "line":
+        return normalize_line(x)
+    raise InputError(f"kind must be 'point' or 'line', got {kind!r}")
+
+
+def is_ideal(p) -> np.ndarray:
+    """True for points at infinity: weight ``w = p[..., 2]`` exactly zero (thesis 5.5).
+
+    Examples
+    --------
+    >>> is_ideal([[1.0, 0.0, 0.0], [1.0, 0.0, 1.0]])
+    array([ True, False])
+    """
+    p = as_vec3(p, "p")
+    return p[..., 2] == 0
+
+
+def is_at_infinity(l) -> np.ndarray:
+    """True for the line at infinity: force ``(fx, fy)`` exactly zero (thesis 5.16).
+
+    Examples
+    --------
+    >>> bool(is_at_infinity([0.0, 0.0, 2.0]))
+    True
+    """
+    l = as_vec3(l, "l")
+    return (l[..., 0] == 0) & (l[..., 1] == 0)
+
+
+# --------------------------------------------------------------------------- Euclidean <-> homogeneous
+def from_xy(xy) -> np.ndarray:
+    """Homogeneous point ``[y, -x, 1]`` of Euclidean points (thesis 5.49, 5.51).
+
+    Parameters
+    ----------
+    xy : array_like, shape (..., 2)
+
+    Examples
+    --------
+    >>> from_xy([1.0, 2.0])
+    array([ 2., -1.,  1.])
+    """
+    xy = as_xy(xy, "xy")
+    out = np.empty(xy.shape[:-1] + (3,))
+    out[..., 0] = xy[..., 1]
+    out[..., 1] = -xy[..., 0]
+    out[..., 2] = 1.0
+    return out
+
+
+def from_direction(d) -> np.ndarray:
+    """The point at infinity in direction ``d``: ``[dy, -dx, 0]``.
+
+    It is the unit translation twist perpendicular to ``d`` (the translation
+    velocity is ``(dy, -dx)``); :func:`direction` returns ``d / |d|``.
+
+    Raises
+    ------
+    DegenerateGeometryError
+        If ``d`` is the zero vector.
+
+    Examples
+    --------
+    >>> from_direction([0.0, 1.0])
+    array([1., 0., 0.])
+    """
+    d = as_xy(d, "d")
+    zero = (d[..., 0] == 0) & (d[..., 1] == 0)
+    if np.any(zero):
+        raise DegenerateGeometryError(f"d is the zero vector{_first_index(zero)}, which has no direction")
+    out = np.zeros(d.shape[:-1] + (3,))
+    out[..., 0] = d[..., 1]
+    out[..., 1] = 0.0 - d[..., 0]
+    return out
+
+
+def to_xy(p) -> np.ndarray:
+    """Euclidean coordinates ``(x, y) = (-p1/w, p0/w)`` of points (thesis 5.51).
+
+    Points at infinity (``w`` exactly zero) give ``(nan, nan)``, silently (no
+    warning): they have no Euclidean position; use :func:`direction`.
+
+    Parameters
+    ----------
+    p : array_like, shape (..., 3)
+
+    Returns
+    -------
+    ndarray, shape (..., 2)
+
+    Examples
+    --------
+    >>> to_xy([4.0, -2.0, 2.0])
+    array([1., 2.])
+    >>> to_xy([1.0, 0.0, 0.0])
+    array([nan, nan])
+    """
+    p = as_vec3(p, "p")
+    w = p[..., 2]
+    return np.stack([_safe_div(-p[..., 1], w), _safe_div(p[..., 0], w)], axis=-1)
+
+
+def direction(p) -> np.ndarray:
+    """Unit direction in which a point at infinity ``[a, b, 0]`` lies: ``(-b, a)/|(a, b)|``.
+
+    The translation velocity of the twist is ``(a, b)``, perpendicular to this
+    direction.  Finite points (``w != 0``) give ``(nan, nan)`` silently.
+
+    Examples
+    --------
+    >>> direction([1.0, 0.0, 0.0])
+    array([0., 1.])
+    >>> direction([0.0, 0.0, 1.0])
+    array([nan, nan])
+    """
+    p = as_vec3(p, "p")
+    n = np.hypot(p[..., 0], p[..., 1])
+    den = np.where(p[..., 2] == 0, n, 0.0)
+    return np.stack([_safe_div(-p[..., 1], den), _safe_div(p[..., 0], den)], axis=-1)
+
+
+def line_direction(l) -> np.ndarray:
+    """Unit direction ``(fx, fy)/|f|`` along a line (thesis 5.55: the vector ``e``).
+
+    The line at infinity gives ``(nan, nan)`` silently.
+
+    Examples
+    --------
+    >>> line_direction([0.0, -3.0, 1.0])
+    array([ 0., -1.])
+    """
+    l = as_vec3(l, "l")
+    n = np.hypot(l[..., 0], l[..., 1])
+    return np.stack([_safe_div(l[..., 0], n), _safe_div(l[..., 1], n)], axis=-1)
+
+
+def foot_point(l) -> np.ndarray:
+    """The point of a line nearest to the origin, as a homogeneous point.
+
+    For the line at infinity this is ``nan`` (it has no finite point).
+
+    Examples
+    --------
+    >>> to_xy(foot_point([0.0, 1.0, 2.0]))     # the line x = 2
+    array([2., 0.])
+    """
+    l = as_vec3(l, "l")
+    f2 = l[..., 0] ** 2 + l[..., 1] ** 2
+    x = _safe_div(l[..., 2] * l[..., 1], f2)
+    y = _safe_div(0.0 - l[..., 2] * l[..., 0], f2)
+    return np.stack([y + 0.0, 0.0 - x, np.where(f2 != 0, 1.0, np.nan)], axis=-1)
+
+
+# --------------------------------------------------------------------------- join / meet
+def cross_cond(a, b) -> np.ndarray:
+    """Condition number ``κ = |a| |b| / |a × b|`` of :func:`join` and :func:`meet`.
+
+    One over the sine of the angle between the 3-vectors ``a`` and ``b``:
+    invariant under scaling either argument, ``1`` for perpendicular vectors,
+    ``inf`` for dependent ones (the same point or line, or a zero vector).
+    The relative error of the computed ``a × b`` is at most about ``ε κ``.
+    Vectors whose norms could over- or underflow are first rescaled to unit
+    largest component, so any finite non-zero inputs give the right κ.
+
+    Examples
+    --------
+    >>> round(float(cross_cond([0.0, 0.0, 1.0], [1.0, 0.0, 1.0])), 6)   # 45 degrees apart: √2
+    1.414214
+    >>> float(cross_cond([1.0, 2.0, 3.0], [-2.0, -4.0, -6.0]))     # the same point
+    inf
+    """
+    a, b = np.broadcast_arrays(np.asarray(a, float), np.asarray(b, float))
+    return _cross_cond(a, b, _cross(a, b))
+
+
+_TINY, _HUGE = 1e-150, 1e150          # squared norms of vectors in this range neither over- nor underflow
+_TINY2, _HUGE2 = _TINY * _TINY, _HUGE * _HUGE   # the same bounds on the squared norms
+
+
+def _cross_cond(a, b, c) -> np.ndarray:
+    """κ of :func:`cross_cond` given ``c = a × b``; rescales only where the norms could over/underflow."""
+    na = np.sqrt(np.einsum("...i,...i->...", a, a))
+    nb = np.sqrt(np.einsum("...i,...i->...", b, b))
+    nc = np.sqrt(np.einsum("...i,...i->...", c, c))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        out = na * nb / nc
+    ok = (na > _TINY) & (na < _HUGE) & (nb > _TINY) & (nb < _HUGE) & (nc > _TINY) & (nc < _HUGE)
+    if np.all(ok):
+        return out
+    # rare: rescale to unit largest component (a zero vector gives NaN there, hence κ = inf)
+    ma = np.abs(a).max(axis=-1, keepdims=True)
+    mb = np.abs(b).max(axis=-1, keepdims=True)
+    a = _safe_div(a, ma)
+    b = _safe_div(b, mb)
+    num = np.linalg.norm(a, axis=-1) * np.linalg.norm(b, axis=-1)
+    c = _cross(a, b)
+    mc = np.abs(c).max(axis=-1)
+    den = np.linalg.norm(_safe_div(c, mc[..., None]), axis=-1) * mc
+    slow = np.full(den.shape, np.inf)
+    np.divide(num, den, out=slow, where=(den > 0) & ~np.isnan(num))
+    return np.where(ok, out, slow)
+
+
+def _check_cond(a, b, c, what: str, cond_limit: float) -> None:
+    """Raise for an exactly zero ``c = a × b`` or a condition number past ``cond_limit``."""
+    if c.shape == (3,) and a.shape == b.shape == (3,):
+        # one pair (the common scalar call): the squared norms in plain float arithmetic; where they are
+        # in range and κ passes (every ordinary case) return, else the array code below decides and reports
+        a0, a1, a2 = a.tolist()
+        b0, b1, b2 = b.tolist()
+        c0, c1, c2 = c.tolist()
+        na2 = a0 * a0 + a1 * a1 + a2 * a2
+        nb2 = b0 * b0 + b1 * b1 + b2 * b2
+        nc2 = c0 * c0 + c1 * c1 + c2 * c2
+        if (_TINY2 < na2 < _HUGE2 and _TINY2 < nb2 < _HUGE2 and _TINY2 < nc2 < _HUGE2
+                and math.sqrt(na2) * math.sqrt(nb2) / math.sqrt(nc2) <= cond_limit):
+            return
+    zero = np.all(c == 0, axis=-1)
+    if np.any(zero):
+        err = DegenerateGeometryError(
+            what.format(kind="the same") + f" (or one is the zero vector){_first_index(zero)}, "
+            + ("so the line through them is not unique" if what.startswith("join") else
+               "so their common point is not unique"))
+        err.cond = float("inf")
+        raise err
+    cond = _cross_cond(a, b, c)
+    bad = ~(cond <= cond_limit)
+    if np.any(bad):
+        k = float(np.max(np.where(bad, cond, 0.0)))
+        err = DegenerateGeometryError(
+            what.format(kind="nearly the same") + f"{_first_index(bad)}: condition number {k:.3g} "
+            f"exceeds cond_limit = {cond_limit:.3g} (relative error up to about ε κ = "
+            f"{np.finfo(float).eps * k:.1g})")
+        err.cond = k
+        raise err
+
+
+def join(p, q, cond_limit: float = COND_LIMIT) -> np.ndarray:
+    """The line through two points, ``p × q`` (thesis 5.27-5.32).
+
+    For points normalised to ``w = 1`` the result is the wrench with force
+    ``q - p`` acting along the line from ``p`` to ``q``.  Thesis (5.32), in
+    standard coordinates, gives the opposite orientation (the same line).
+    Points at infinity are fine: the join of a finite point and an ideal
+    point is the line through the point in that direction, the join of two
+    ideal points is the line at infinity.
+
+    Parameters
+    ----------
+    p, q : array_like, shape (..., 3)
+    cond_limit : float, optional
+        Largest accepted condition number ``κ = |p| |q| / |p × q|``
+        (:func:`cross_cond`), :data:`COND_LIMIT` = ``1e13`` by default.  The
+        returned line's relative error is at most about ``ε κ``; for finite
+        points ``δ`` apart at distance ``R ≳ 1`` from the origin ``κ ≈ R / δ``
+        and the line misses them by about ``ε R² / δ``.
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+
+    Raises
+    ------
+    DegenerateGeometryError
+        If ``p`` and ``q`` are the same point (``p × q`` exactly zero, ``.cond``
+        is ``inf``), one of them is the zero vector, or they are so nearly the
+        same point that ``κ > cond_limit`` (``.cond`` is the largest such κ).
+        Two distinct ideal points are not near each other unless their
+        directions differ by less than about ``1/cond_limit`` radians.
+
+    Examples
+    --------
+    >>> join(from_xy([0.0, 0.0]), from_xy([2.0, 0.0]))   # the x axis, pointing +x
+    array([2., 0., 0.])
+    >>> join(from_direction([1.0, 0.0]), from_direction([1.0, 1.0]))   # the line at infinity
+    array([0., 0., 1.])
+    >>> join(from_xy([0.0, 0.0]), from_xy([0.0, 1e-14]))     # 1e-14 apart: κ = 1e14
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.DegenerateGeometryError: join(p, q): p and q are nearly the same point: condition number 1e+14 exceeds cond_limit = 1e+13 (relative error up to about ε κ = 0.02)
+    >>> join(from_xy([0.0, 0.0]), from_xy([0.0, 1e-14]), cond_limit=np.inf)   # accepted: the y axis
+    array([0.e+00, 1.e-14, 0.e+00])
+    """
+    p = as_vec3(p, "p")
+    q = as_vec3(q, "q")
+    l = _cross(p, q)
+    _check_cond(p, q, l, "join(p, q): p and q are {kind} point", cond_limit)
+    return l
+
+
+def meet(l, m, cond_limit: float = COND_LIMIT) -> np.ndarray:
+    """The point common to two lines, ``l × m`` (thesis 5.33-5.34).
+
+    Parallel lines meet at a point at infinity, which is a legitimate result
+    (well conditioned unless the lines are nearly the same line).  Thesis
+    (5.34), in standard coordinates, is ``-(l × m)``: the same point.
+
+    Parameters
+    ----------
+    l, m : array_like, shape (..., 3)
+    cond_limit : float, optional
+        Largest accepted condition number ``κ = |l| |m| / |l × m|``
+        (:func:`cross_cond`), :data:`COND_LIMIT` = ``1e13`` by default.  The
+        returned point's relative error is at most about ``ε κ``; for two
+        lines through a point near the origin at an angle ``θ``, ``κ ≈ 1/θ``.
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+
+    Raises
+    ------
+    DegenerateGeometryError
+        If ``l`` and ``m`` are the same line (``l × m`` exactly zero, ``.cond``
+        is ``inf``), one of them is the zero vector, or they are so nearly the
+        same line that ``κ > cond_limit`` (``.cond`` is the largest such κ).
+
+    Examples
+    --------
+    >>> to_xy(meet([1.0, 0.0, 0.0], [0.0, 1.0, -3.0]))   # x axis meets x = -3
+    array([-3.,  0.])
+    >>> meet([1.0, 0.0, 0.0], [1.0, 0.0, 1.0])           # parallel: ideal point
+    array([ 0., -1.,  0.])
+    >>> meet([0.3, -1.7, 0.9], [0.9, -5.1, 2.7])  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.DegenerateGeometryError: meet(l, m): l and m are nearly the same line: condition number ... exceeds cond_limit = 1e+13 ...
+
+    (``[0.9, -5.1, 2.7]`` is ``3 l`` rounded: the same line to the eye, a
+    different float line, whose "meet" with ``l`` would be an arbitrary point.)
+    """
+    l = as_vec3(l, "l")
+    m = as_vec3(m, "m")
+    p = _cross(l, m)
+    _check_cond(l, m, p, "meet(l, m): l and m are {kind} line", cond_limit)
+    return p
+
+
+def incidence(p, l) -> np.ndarray:
+    """The linear form ``p @ l`` (thesis 5.23); zero iff ``p`` lies on ``l`` (5.24).
+
+    It is also the power of twist ``p`` against wrench ``l`` (5.69).
+
+    Examples
+    --------
+    >>> float(incidence(from_xy([3.0, 0.0]), [1.0, 0.0, 0.0]))
+    0.0
+    """
+    p = as_vec3(p, "p")
+    l = as_vec3(l, "l")
+    return np.einsum("...i,...i->...", p, l)
+
+
+def signed_distance(p, l) -> np.ndarray:
+    """Signed distance from point ``p`` to line ``l`` (thesis 5.23).
+
+    Equals ``p @ l`` with ``p`` at weight ``w = 1`` and ``l`` at unit force:
+    the moment of the unit force along ``l`` about ``p``.  Positive when the
+    point lies to the **left** of the directed line.
+
+    A point at infinity, or the line at infinity, is infinitely far: the
+    result is ``±inf`` (sign of ``p @ l`` divided by the weight's sign), or
+    ``nan`` when ``p @ l`` is exactly zero too (an ideal point on the line).
+    No warning is issued.
+
+    Examples
+    --------
+    >>> float(signed_distance(from_xy([0.0, 2.0]), [3.0, 0.0, 0.0]))   # left of the +x axis
+    2.0
+    >>> float(signed_distance([1.0, 0.0, 0.0], [1.0, 0.0, 0.0]))      # ideal point
+    inf
+    """
+    p = as_vec3(p, "p")
+    l = as_vec3(l, "l")
+    num = np.einsum("...i,...i->...", p, l)
+    den = p[..., 2] * np.hypot(l[..., 0], l[..., 1])
+    out = _safe_div(num, den)
+    inf = (den == 0) & (num != 0)
+    return np.where(inf, np.copysign(np.inf, num * np.where(p[..., 2] < 0, -1.0, 1.0)), out)
+
+
+def pencil(l1, l2, beta) -> np.ndarray:
+    """Member ``l1 + beta (l2 - l1)`` of the pencil of two lines (thesis 5.20).
+
+    All members pass through ``meet(l1, l2)`` (5.21-5.22).  The same formula
+    gives the range of points on ``join(p1, p2)`` when applied to points
+    (5.9).  ``beta`` broadcasts against the leading dimensions.
+
+    Examples
+    --------
+    >>> pencil([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], 0.5)   # the diagonal through the origin
+    array([0.5, 0.5, 0. ])
+    """
+    l1 = as_vec3(l1, "l1")
+    l2 = as_vec3(l2, "l2")
+    beta = as_array(beta, "beta")
+    return l1 + beta[..., None] * (l2 - l1)
+
+
+def line_through_point_direction(p, d) -> np.ndarray:
+    """The line through point ``p`` (homogeneous) along direction ``d`` (Euclidean).
+
+    For ``p`` at weight 1 the result is the wrench with force ``d`` acting
+    through ``p``.  For ``p`` at infinity it is the line at infinity (or a
+    :class:`DegenerateGeometryError` if ``p`` lies in direction ``d``).
+
+    Examples
+    --------
+    >>> line_through_point_direction(from_xy([1.0, 1.0]), [0.0, 2.0])   # x = 1
+    array([0., 2., 2.])
+    """
+    p = as_vec3(p, "p")
+    q = from_direction(d)
+    try:
+        return join(p, q)
+    except DegenerateGeometryError as exc:
+        raise DegenerateGeometryError(
+            "line_through_point_direction: p is the point at infinity in direction d") from exc
+
+
+# --------------------------------------------------------------------------- standard coordinates
+def to_standard(x) -> np.ndarray:
+    """Standard homogeneous coordinates (thesis 5.1-5.16) of points or lines.
+
+    ``to_standard(x) = T @ x`` with ``T`` of (5.47), its own inverse.  A point
+    ``(x, y)`` becomes ``[1, x, y]``; a line becomes ``[r, -cos λ, -sin λ]``
+    (5.14a) times the force magnitude.
+
+    Examples
+    --------
+    >>> to_standard(from_xy([1.0, 2.0]))
+    array([1., 1., 2.])
+    """
+    x = as_vec3(x, "x")
+    return np.einsum("ij,...j->...i", T_STD, x)
+
+
+def from_standard(x) -> np.ndarray:
+    """Alternative (screw) coordinates of standard homogeneous points or lines (thesis 5.47).
+
+    Examples
+    --------
+    >>> from_standard([1.0, 1.0, 2.0])      # the point (1, 2)
+    array([ 2., -1.,  1.])
+    """
+    x = as_vec3(x, "x")
+    return np.einsum("ij,...j->...i", T_STD, x)
+
+
+def conic_to_standard(C) -> np.ndarray:
+    """A conic's matrix in standard coordinates, ``T C T`` (thesis 5.35, 5.47).
+
+    Examples
+    --------
+    >>> conic_to_standard(np.diag([1.0, 1.0, -4.0]))   # the circle x² + y² = 4
+    array([[-4.,  0.,  0.],
+           [ 0.,  1.,  0.],
+           [ 0.,  0.,  1.]])
+    """
+    C = as_array(C, "C", (3, 3))
+    return T_STD @ C @ T_STD
+
+
+def conic_from_standard(S) -> np.ndarray:
+    """A conic's matrix in the package's coordinates from standard coordinates, ``T S T``.
+
+    Examples
+    --------
+    >>> conic_from_standard(np.diag([-4.0, 1.0, 1.0]))
+    array([[ 1.,  0.,  0.],
+           [ 0.,  1.,  0.],
+           [ 0.,  0., -4.]])
+    """
+    S = as_array(S, "S", (3, 3))
+    return T_STD @ S @ T_STD

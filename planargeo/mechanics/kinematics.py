@@ -1,0 +1,351 @@
+"""Forward kinematics in world-frame, at-origin screw coordinates (thesis Chapter 2).
+
+:func:`kinematics` walks the tree from the ground outwards and fills a
+:class:`planargeo.mechanics.model.Data` with, for every body ``i``:
+
+* the world pose and centre of mass,
+* the joint motion space ``s_i`` (3×k unit twists at the global origin;
+  a revolute joint at ``(x, y)`` is the point ``[y, -x, 1]``, a prismatic
+  joint along ``d`` the ideal point ``[dx, dy, 0]``),
+* the spatial inertia ``I_i`` at the origin (4.58),
+* the twist ``v_i = v_{λ(i)} + s_i q̇_i`` (2.9, 3.32),
+* the bias acceleration ``kappa_i`` (2.19, 3.33),
+* the applied wrench ``g_i`` (gravity at the centre of mass plus ``f_ext``)
+  and the bias force ``p_i = -(v_i×)^T I_i v_i - g_i`` (3.11, 3.34).
+
+All arrays broadcast over leading batch dimensions of ``q``.
+
+Multi-dof joints: the columns of ``s_i`` are sequential screws (2.2); column
+``j`` is carried by the frame after the motions ``1..j-1``, so its rate is
+``ṡ_j = (v_{λ(i)} + Σ_{k<j} s_k q̇_k) × s_j`` and
+``kappa_i = v_{λ(i)} × s_i q̇_i + Σ_{k<j} (s_k q̇_k) × (s_j q̇_j)``.  For one-dof
+joints this is the printed ``v_i × s_i q̇_i`` (2.19); for multi-dof joints the
+printed form drops the cross terms (see ``docs/errata.md``).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo._validate import as_array
+from planargeo.errors import NonFiniteError, ShapeError
+from planargeo.mechanics.model import Data, Model
+
+__all__ = ["kinematics", "check_state", "cross_motion", "cross_force", "joint_axes"]
+
+
+def cross_motion(v: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """``v × u`` for twists (thesis 2.16 projected; same as ``crm(v) @ u``).
+
+    Examples
+    --------
+    >>> cross_motion(np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]))
+    array([0., 1., 0.])
+    """
+    w = v[..., 2]
+    out = np.empty(np.broadcast_shapes(v.shape, u.shape))
+    out[..., 0] = -w * u[..., 1] + v[..., 1] * u[..., 2]
+    out[..., 1] = w * u[..., 0] - v[..., 0] * u[..., 2]
+    out[..., 2] = 0.0
+    return out
+
+
+def cross_force(v: np.ndarray, f: np.ndarray) -> np.ndarray:
+    """``v ×* f = -(v×)^T f`` for a twist ``v`` and a wrench ``f`` (thesis 3.8, 3.11).
+
+    Examples
+    --------
+    >>> cross_force(np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]))
+    array([0., 1., 0.])
+    """
+    w = v[..., 2]
+    out = np.empty(np.broadcast_shapes(v.shape, f.shape))
+    out[..., 0] = -w * f[..., 1]
+    out[..., 1] = w * f[..., 0]
+    out[..., 2] = v[..., 0] * f[..., 1] - v[..., 1] * f[..., 0]
+    return out
+
+
+def _as_state(x, name: str, nq: int) -> np.ndarray:
+    if type(x) is np.ndarray and x.dtype == np.float64:
+        a = x
+    else:
+        a = as_array(x, name, finite=False)
+    if a.ndim == 0 or a.shape[-1] != nq:
+        raise ShapeError(f"{name} must have shape (..., {nq}), got shape {a.shape}")
+    if not np.isfinite(a).all():
+        raise NonFiniteError(f"{name} must be finite, got non-finite values in {a!r}")
+    return a
+
+
+def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None):
+    """Validate and broadcast a state; returns ``(q, qd, tau, f_ext, qdd, batch_shape)``.
+
+    ``q``, ``qd``, ``tau``, ``qdd`` have shape ``(..., nq)``; ``f_ext`` has
+    shape ``(..., N, 3)`` (world wrenches at the origin, one per body) or is
+    ``None``.  Missing arguments are returned as ``None``.  Raises
+    :class:`ShapeError` / :class:`NonFiniteError` naming the argument.
+
+    Examples
+    --------
+    >>> from planargeo.mechanics.model import chain_model
+    >>> check_state(chain_model(2), [0.0, 0.0], [[1.0, 2.0]] * 4)[-1]
+    (4,)
+    >>> check_state(chain_model(2), [0.0])
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.ShapeError: q must have shape (..., 2), got shape (1,)
+    """
+    nq, N = model.nq, model.N
+    q = _as_state(q, "q", nq)
+    shape = q.shape[:-1]
+    out = []
+    for name, x in (("qd", qd), ("tau", tau), ("qdd", qdd)):
+        if x is None:
+            out.append(None)
+            continue
+        a = _as_state(x, name, nq)
+        if a.ndim > 1 or shape:
+            try:
+                shape = np.broadcast_shapes(shape, a.shape[:-1])
+            except ValueError:
+                raise ShapeError(
+                    f"{name} of shape {a.shape} does not broadcast with q of shape {q.shape}") from None
+        out.append(a)
+    if f_ext is not None:
+        f_ext = as_array(f_ext, "f_ext", (N, 3))
+        if f_ext.ndim > 2 or shape:
+            try:
+                shape = np.broadcast_shapes(shape, f_ext.shape[:-2])
+            except ValueError:
+                raise ShapeError(
+                    f"f_ext of shape {f_ext.shape} does not broadcast with q of shape {q.shape}") from None
+    qd, tau, qdd = out
+    return q, qd, tau, f_ext, qdd, shape
+
+
+def _rot2(c, s, x, y):
+    return c * x - s * y, s * x + c * y
+
+
+def joint_axes(kind: str, ox, oy, phi, qi):
+    """World-frame motion space of one joint and the resulting body pose.
+
+    ``(ox, oy, phi)`` is the joint frame's world pose, ``qi`` (..., k) the joint
+    coordinates.  Returns ``(cols, (x, y, theta))`` with ``cols`` a list of k
+    arrays (..., 3): the unit twists at the origin (4.10, 5.51, 5.62; the
+    twin prismatic joint's two translations are 4.79 turned by ``phi``).
+
+    Examples
+    --------
+    >>> cols, pose = joint_axes("twin_prismatic", 1.0, 2.0, np.pi / 2, np.array([0.5, 0.25]))
+    >>> np.round(np.array(cols), 12) + 0.0        # e = y, e⊥ = -x: ideal points
+    array([[ 0.,  1.,  0.],
+           [-1.,  0.,  0.]])
+    >>> np.round(pose, 12)                          # slid 0.5 along y, 0.25 along -x; not turned
+    array([0.75      , 2.5       , 1.57079633])
+    """
+    c, s = np.cos(phi), np.sin(phi)
+    zero, one = np.zeros_like(ox), np.ones_like(ox)
+    if kind == "revolute":
+        cols = [np.stack([oy, -ox, one], -1)]
+        return cols, (ox, oy, phi + qi[..., 0])
+    if kind == "prismatic":
+        cols = [np.stack([c, s, zero], -1)]
+        return cols, (ox + qi[..., 0] * c, oy + qi[..., 0] * s, phi)
+    if kind == "revolute_prismatic":
+        x1, y1 = ox + qi[..., 0] * c, oy + qi[..., 0] * s
+        cols = [np.stack([c, s, zero], -1), np.stack([y1, -x1, one], -1)]
+        return cols, (x1, y1, phi + qi[..., 1])
+    if kind == "twin_prismatic":       # thesis 4.79: s = [e, e⊥], no rotation
+        x1 = ox + qi[..., 0] * c - qi[..., 1] * s
+        y1 = oy + qi[..., 0] * s + qi[..., 1] * c
+        cols = [np.stack([c, s, zero], -1), np.stack([-s, c, zero], -1)]
+        return cols, (x1, y1, phi)
+    if kind == "plane":
+        x1 = ox + qi[..., 0] * c - qi[..., 1] * s
+        y1 = oy + qi[..., 0] * s + qi[..., 1] * c
+        cols = [np.stack([c, s, zero], -1), np.stack([-s, c, zero], -1), np.stack([y1, -x1, one], -1)]
+        return cols, (x1, y1, phi + qi[..., 2])
+    if kind == "fixed":
+        return [], (ox, oy, phi)
+    raise AssertionError(kind)  # pragma: no cover (Joint validates kinds)
+
+
+def kinematics(model: Model, q, qd=None, f_ext=None) -> Data:
+    """World-frame kinematics and bias terms of every body (thesis 3.6 step 2).
+
+    Parameters
+    ----------
+    model : Model
+    q : array_like (..., nq)
+        Joint coordinates.
+    qd : array_like (..., nq), optional
+        Joint speeds (zero if omitted).
+    f_ext : array_like (..., N, 3), optional
+        External wrenches at the origin applied to each body (the thesis's
+        ``g_i`` besides gravity).
+
+    Returns
+    -------
+    Data
+        With ``pose, com, origin, S, I, v, kappa, g, p`` (see :class:`~planargeo.mechanics.model.Data`).
+
+    Examples
+    --------
+    A unit link turning at 1 rad/s about the origin, at q = 0:
+
+    >>> from planargeo.mechanics.model import chain_model
+    >>> d = kinematics(chain_model(1, gravity=(0, 0)), [0.0], [1.0])
+    >>> d.s(0)[:, 0], d.v[0]          # the joint is the point (0, 0) = [0, 0, 1]
+    (array([ 0., -0.,  1.]), array([0., 0., 1.]))
+    >>> d.p[0]                        # centripetal: the bias force pulls towards the pivot
+    array([-0.5,  0. ,  0. ])
+    """
+    q, qd, _, f_ext, _, shape = check_state(model, q, qd, None, f_ext)
+    if shape == ():
+        return _kinematics_scalar(model, q, np.zeros(model.nq) if qd is None else qd, f_ext)
+    q = np.broadcast_to(q, shape + (model.nq,))
+    qd = np.zeros(shape + (model.nq,)) if qd is None else np.broadcast_to(qd, shape + (model.nq,))
+    arr = model.arrays()
+    N, nq = model.N, model.nq
+    gx, gy = model.gravity
+
+    pose = np.empty(shape + (N, 3))
+    com = np.empty(shape + (N, 2))
+    origin = np.empty(shape + (N, 2))
+    S = np.zeros(shape + (3, nq))
+    I = np.zeros(shape + (N, 3, 3))
+    v = np.empty(shape + (N, 3))
+    kappa = np.empty(shape + (N, 3))
+    g = np.empty(shape + (N, 3))
+    zeros = np.zeros(shape)
+
+    for i, (joint, par) in enumerate(zip(model.joints, model.parents)):
+        px, py, pth = arr["placement"][i]
+        if par < 0:
+            ox, oy, phi = zeros + px, zeros + py, zeros + pth
+            vp = np.zeros(shape + (3,))
+        else:
+            bx, by, bth = pose[..., par, 0], pose[..., par, 1], pose[..., par, 2]
+            dx, dy = _rot2(np.cos(bth), np.sin(bth), px, py)
+            ox, oy, phi = bx + dx, by + dy, bth + pth
+            vp = v[..., par, :]
+        sl = model.q_slice(i)
+        cols, (x, y, th) = joint_axes(joint.kind, ox, oy, phi, q[..., sl])
+        origin[..., i, 0], origin[..., i, 1] = ox, oy
+        pose[..., i, 0], pose[..., i, 1], pose[..., i, 2] = x, y, th
+        # twist (2.9) and bias acceleration (2.19 with sequential-screw cross terms)
+        vi = vp.copy()
+        kap = np.zeros(shape + (3,))
+        rel = np.zeros(shape + (3,))  # Σ_{k<j} s_k qd_k
+        for j, col in enumerate(cols):
+            S[..., :, sl.start + j] = col
+            sq = col * qd[..., sl.start + j, None]
+            kap += cross_motion(vp + rel, sq)
+            rel += sq
+        vi += rel
+        v[..., i, :] = vi
+        kappa[..., i, :] = kap
+        # inertia at the origin (4.58) and gravity at the centre of mass
+        m, J = arr["mass"][i], arr["J"][i]
+        cbx, cby = arr["com"][i]
+        ddx, ddy = _rot2(np.cos(th), np.sin(th), cbx, cby)
+        cx, cy = x + ddx, y + ddy
+        com[..., i, 0], com[..., i, 1] = cx, cy
+        I[..., i, 0, 0] = I[..., i, 1, 1] = m
+        I[..., i, 0, 2] = I[..., i, 2, 0] = -m * cy
+        I[..., i, 1, 2] = I[..., i, 2, 1] = m * cx
+        I[..., i, 2, 2] = J + m * (cx * cx + cy * cy)
+        g[..., i, 0] = m * gx
+        g[..., i, 1] = m * gy
+        g[..., i, 2] = m * (cx * gy - cy * gx)
+
+    if f_ext is not None:
+        g = g + f_ext
+    Iv = np.einsum("...ij,...j->...i", I, v)
+    p = cross_force(v, Iv) - g
+
+    d = Data(model)
+    d.q, d.qd = q, qd
+    d.pose, d.com, d.origin, d.S = pose, com, origin, S
+    d.I, d.v, d.kappa, d.g, d.p = I, v, kappa, g, p
+    d.f_ext = f_ext
+    return d
+
+
+def _kinematics_scalar(model: Model, q: np.ndarray, qd: np.ndarray, f_ext) -> Data:
+    """:func:`kinematics` for one state, on Python floats (same results, less overhead)."""
+    cos, sin = math.cos, math.sin
+    arr = model.arrays()
+    nq = model.nq
+    gx, gy = model.gravity
+    ql, qdl = q.tolist(), qd.tolist()
+    pose, com, origin, v, kappa, g, Il = [], [], [], [], [], [], []
+    S = [[0.0] * nq for _ in range(3)]
+    for i, (joint, par) in enumerate(zip(model.joints, model.parents)):
+        px, py, pth = joint.placement
+        if par < 0:
+            ox, oy, phi = px, py, pth
+            vx = vy = w = 0.0
+        else:
+            bx, by, bth = pose[par]
+            cb, sb = cos(bth), sin(bth)
+            ox, oy, phi = bx + cb * px - sb * py, by + sb * px + cb * py, bth + pth
+            vx, vy, w = v[par]
+        o = model.q_offsets[i]
+        kind = joint.kind
+        c, s = cos(phi), sin(phi)
+        if kind == "revolute":
+            cols, (x, y, th) = [(oy, -ox, 1.0)], (ox, oy, phi + ql[o])
+        elif kind == "prismatic":
+            cols, (x, y, th) = [(c, s, 0.0)], (ox + ql[o] * c, oy + ql[o] * s, phi)
+        elif kind == "revolute_prismatic":
+            x, y = ox + ql[o] * c, oy + ql[o] * s
+            cols, th = [(c, s, 0.0), (y, -x, 1.0)], phi + ql[o + 1]
+        elif kind == "twin_prismatic":
+            x = ox + ql[o] * c - ql[o + 1] * s
+            y = oy + ql[o] * s + ql[o + 1] * c
+            cols, th = [(c, s, 0.0), (-s, c, 0.0)], phi
+        elif kind == "plane":
+            x = ox + ql[o] * c - ql[o + 1] * s
+            y = oy + ql[o] * s + ql[o + 1] * c
+            cols, th = [(c, s, 0.0), (-s, c, 0.0), (y, -x, 1.0)], phi + ql[o + 2]
+        else:
+            cols, (x, y, th) = [], (ox, oy, phi)
+        origin.append((ox, oy))
+        pose.append((x, y, th))
+        # twist (2.9) and bias acceleration (2.19 with sequential-screw cross terms)
+        k0 = k1 = 0.0
+        rx, ry, rw = vx, vy, w  # v_parent + sum_{k<j} s_k qd_k
+        for j, (s0, s1, s2) in enumerate(cols):
+            S[0][o + j], S[1][o + j], S[2][o + j] = s0, s1, s2
+            qj = qdl[o + j]
+            u0, u1, u2 = s0 * qj, s1 * qj, s2 * qj
+            k0 += -rw * u1 + ry * u2
+            k1 += rw * u0 - rx * u2
+            rx, ry, rw = rx + u0, ry + u1, rw + u2
+        v.append((rx, ry, rw))
+        kappa.append((k0, k1, 0.0))
+        m, J = float(arr["mass"][i]), float(arr["J"][i])
+        cbx, cby = model.bodies[i].com
+        ct, st = cos(th), sin(th)
+        cx, cy = x + ct * cbx - st * cby, y + st * cbx + ct * cby
+        com.append((cx, cy))
+        Il.append(((m, 0.0, -m * cy), (0.0, m, m * cx), (-m * cy, m * cx, J + m * (cx * cx + cy * cy))))
+        g.append((m * gx, m * gy, m * (cx * gy - cy * gx)))
+    d = Data(model)
+    d.q, d.qd = q, qd
+    d.pose, d.com, d.origin = np.array(pose), np.array(com), np.array(origin)
+    d.S = np.array(S).reshape(3, nq)
+    d.I = np.array(Il)
+    d.v, d.kappa = np.array(v), np.array(kappa)
+    gg = np.array(g)
+    if f_ext is not None:
+        gg = gg + f_ext
+    d.g = gg
+    Iv = np.einsum("...ij,...j->...i", d.I, d.v)
+    d.p = cross_force(d.v, Iv) - gg
+    d.f_ext = f_ext
+    return d

@@ -1,0 +1,484 @@
+"""Frozen mechanism descriptions: :class:`Body`, :class:`Joint`, :class:`Model`.
+
+A :class:`Model` is a tree of rigid bodies connected to the ground (and to
+each other) by joints.  Body ``i`` hangs from ``parents[i]`` (``-1`` is the
+ground) through ``joints[i]``; parents always come before their children, so
+``parents[i] < i``.  Everything is validated up front: a model that exists is
+a model every algorithm can run on.
+
+Frames (thesis Chapter 2, planar):
+
+* ``Joint.placement = (x, y, theta)`` is the pose of the *joint frame* in the
+  parent body's frame (in the world frame when the parent is the ground).
+* The joint moves the body frame relative to the joint frame:
+
+  ============================  ====  =================================================
+  kind                          dofs  body frame = joint frame ...
+  ============================  ====  =================================================
+  ``"revolute"``                1     rotated by ``q`` about its origin (CCW positive)
+  ``"prismatic"``               1     slid by ``q`` along its x axis
+  ``"revolute_prismatic"``      2     slid by ``q[0]`` along x, then rotated by ``q[1]``
+                                      about the slid origin (thesis 2.6-2.8)
+  ``"twin_prismatic"``          2     slid by ``(q[0], q[1])`` along (x, y), not rotated
+                                      (thesis 4.8.4, 4.79: ``s`` = the first two
+                                      columns of ``"plane"``, ``R`` = the line at
+                                      infinity)
+  ``"plane"``                   3     slid by ``(q[0], q[1])`` along (x, y), then
+                                      rotated by ``q[2]`` (a free body)
+  ``"fixed"``                   0     unchanged (a weld)
+  ============================  ====  =================================================
+
+* :class:`Body` mass properties (``com``, ``inertia`` about the com, ``shape``)
+  are given in the body frame.
+
+The per-state workspace (world-frame poses, joint axes ``s_i``, inertias
+``I_i``, twists ``v_i``, bias terms ``kappa_i``, ``p_i``, and everything the
+recursive algorithms add) is a :class:`Data`, filled by
+:func:`planargeo.mechanics.kinematics.kinematics`.
+
+Examples
+--------
+>>> m = chain_model(2)              # double pendulum of unit links
+>>> m.nq, m.parents
+(2, (-1, 0))
+>>> m.q_slice(1)
+slice(1, 2, None)
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from planargeo._validate import as_array, as_scalar, as_xy
+from planargeo.errors import CyclicTopologyError, InputError, ShapeError, TopologyError
+
+__all__ = ["Body", "Joint", "Model", "Data", "JOINT_DOFS", "chain_model", "random_model"]
+
+#: Number of degrees of freedom of each joint kind.
+JOINT_DOFS: dict[str, int] = {
+    "revolute": 1,
+    "prismatic": 1,
+    "revolute_prismatic": 2,
+    "twin_prismatic": 2,
+    "plane": 3,
+    "fixed": 0,
+}
+
+
+def _finite_tuple(x, name: str, n: int) -> tuple[float, ...]:
+    a = as_array(x, name, (n,))
+    if a.ndim != 1:
+        raise ShapeError(f"{name} must have shape ({n},), got shape {a.shape}")
+    return tuple(float(v) for v in a)
+
+
+@dataclass(frozen=True)
+class Body:
+    """A rigid body (frozen).
+
+    Parameters
+    ----------
+    mass : float
+        Mass, strictly positive.
+    com : (float, float)
+        Centre of mass in the body frame.
+    inertia : float
+        Rotational inertia about the centre of mass, ``J = m rho^2 >= 0``
+        (0 is a point mass).
+    shape : shapely geometry or None
+        Outline in the body frame, for drawings only.
+    name : str
+
+    Examples
+    --------
+    >>> b = Body(2.0, com=(0.5, 0.0), inertia=1 / 6)
+    >>> b.spatial_inertia()      # at the body-frame origin (thesis 5.64)
+    array([[2.        , 0.        , 0.        ],
+           [0.        , 2.        , 1.        ],
+           [0.        , 1.        , 0.66666667]])
+    >>> Body(-1.0)
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: mass must be positive, got -1.0
+    """
+
+    mass: float
+    com: tuple[float, float] = (0.0, 0.0)
+    inertia: float = 0.0
+    shape: Any = None
+    name: str = ""
+
+    def __post_init__(self):
+        m = as_scalar(self.mass, "mass")
+        if not m > 0:
+            raise InputError(f"mass must be positive, got {m!r}")
+        J = as_scalar(self.inertia, "inertia")
+        if J < 0:
+            raise InputError(f"inertia must be non-negative, got {J!r}")
+        object.__setattr__(self, "mass", m)
+        object.__setattr__(self, "inertia", J)
+        object.__setattr__(self, "com", _finite_tuple(self.com, "com", 2))
+        if not isinstance(self.name, str):
+            raise InputError(f"name must be a string, got {self.name!r}")
+
+    def spatial_inertia(self) -> np.ndarray:
+        """The 3×3 inertia at the body-frame origin (thesis 4.58, 5.64)."""
+        from planargeo.screws.twists import inertia_matrix
+
+        return inertia_matrix(self.mass, self.com, self.inertia)
+
+
+@dataclass(frozen=True)
+class Joint:
+    """A joint between a body and its parent (frozen).
+
+    Parameters
+    ----------
+    kind : str
+        One of ``"revolute"``, ``"prismatic"``, ``"revolute_prismatic"``,
+        ``"twin_prismatic"``, ``"plane"``, ``"fixed"`` (see the module docstring).
+    placement : (x, y, theta)
+        Pose of the joint frame in the parent body's frame (world frame when
+        the parent is the ground).
+    name : str
+
+    Examples
+    --------
+    >>> Joint("revolute", (1.0, 0.0, 0.0)).dofs
+    1
+    >>> Joint("twin_prismatic").dofs              # thesis 4.79: translations along x and y
+    2
+    >>> Joint("hinge")
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: kind must be one of ['revolute', 'prismatic', 'revolute_prismatic', 'twin_prismatic', 'plane', 'fixed'], got 'hinge'
+    """
+
+    kind: str
+    placement: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    name: str = ""
+
+    def __post_init__(self):
+        if not isinstance(self.kind, str) or self.kind not in JOINT_DOFS:
+            raise InputError(f"kind must be one of {list(JOINT_DOFS)}, got {self.kind!r}")
+        object.__setattr__(self, "placement", _finite_tuple(self.placement, "placement", 3))
+        if not isinstance(self.name, str):
+            raise InputError(f"name must be a string, got {self.name!r}")
+
+    @property
+    def dofs(self) -> int:
+        """Number of joint coordinates (columns of ``s``)."""
+        return JOINT_DOFS[self.kind]
+
+
+def _find_cycle(ps) -> tuple[int, ...]:
+    """The first cycle of a parent list (bodies in parent order), or ``()`` if there is none."""
+    n = len(ps)
+    for i in range(n):
+        order, j = {}, i
+        while 0 <= j < n and j not in order:
+            order[j] = len(order)
+            j = ps[j]
+        if 0 <= j < n:                     # came back to a body already on this path
+            path = list(order)
+            return tuple(path[order[j]:])
+    return ()
+
+
+def _cycle_error(ps, cycle, message: str | None = None) -> CyclicTopologyError:
+    """The :class:`~planargeo.errors.CyclicTopologyError` of a parent list with a ``cycle``.
+
+    ``1 - C`` (thesis 9.12) is exactly singular: the cycle's indicator ``e``
+    has ``eᵀ (1 - C) = 0`` (checked here in exact 0/1 arithmetic), so its
+    condition number is ``inf``.  ``message`` replaces the default text
+    (the bodies of the cycle and the parents).
+
+    Examples
+    --------
+    >>> e = _cycle_error([1, 2, 0], (0, 1, 2))
+    >>> e.cond, e.cycle
+    (inf, (0, 1, 2))
+    >>> str(e)
+    'parents contain a cycle through bodies 0 -> 1 -> 2 -> 0 (parents=[1, 2, 0]) (condition number of 1 - C: inf)'
+    """
+    ps = [int(p) for p in ps]
+    n = len(ps)
+    C = np.zeros((n, n))
+    for i, p in enumerate(ps):
+        if 0 <= p < n:
+            C[i, p] = 1.0
+    e = np.zeros(n)
+    e[list(cycle)] = 1.0
+    singular = not np.any(e @ (np.eye(n) - C))        # exact: small integers
+    cond = math.inf if singular else float(np.linalg.cond(np.eye(n) - C))
+    path = " -> ".join(str(b) for b in (*cycle, cycle[0]))
+    if message is None:
+        message = f"parents contain a cycle through bodies {path} (parents={ps})"
+    return CyclicTopologyError(message.format(path=path, parents=ps), cond, cycle)
+
+
+def _check_parents(parents, n: int) -> tuple[int, ...]:
+    try:
+        ps = [int(p) for p in parents]
+        if any(int(p) != p for p in parents):
+            raise ValueError
+    except (TypeError, ValueError):
+        raise TopologyError(f"parents must be a sequence of integers, got {parents!r}") from None
+    if len(ps) != n:
+        raise TopologyError(f"parents must have one entry per body ({n}), got {len(ps)}")
+    for i, p in enumerate(ps):
+        if p < -1 or p >= n:
+            raise TopologyError(
+                f"parents[{i}] must be -1 (ground) or a body index in 0..{n - 1}, got {p} (index out of range)")
+    for i, p in enumerate(ps):
+        if p >= i:
+            # Distinguish a genuine cycle from a mere ordering problem.
+            seen, j = {i}, p
+            while j != -1 and j not in seen:
+                seen.add(j)
+                j = ps[j]
+            if j != -1:
+                raise _cycle_error(ps, _find_cycle(ps))
+            raise TopologyError(
+                f"parents[{i}] must be below {i} (parents before children), got {p}")
+    return tuple(ps)
+
+
+@dataclass(frozen=True)
+class Model:
+    """A tree of rigid bodies (frozen, validated).
+
+    Parameters
+    ----------
+    bodies : sequence of Body
+    joints : sequence of Joint
+        ``joints[i]`` connects body ``i`` to ``parents[i]``.
+    parents : sequence of int
+        ``parents[i]`` is ``-1`` (ground) or a body index ``< i``.
+    gravity : (gx, gy)
+        Gravitational acceleration; it acts on each body at its centre of mass.
+    contacts : tuple
+        Contact / loop-closure descriptions (used by :mod:`planargeo.mechanics.contacts`).
+
+    Attributes
+    ----------
+    N : int
+        Number of bodies.
+    nq : int
+        Number of joint coordinates.
+    q_offsets : tuple of int
+        ``q[q_offsets[i]:q_offsets[i+1]]`` are joint ``i``'s coordinates.
+
+    Examples
+    --------
+    >>> m = Model([Body(1.0)], [Joint("plane")], [-1])
+    >>> m.nq, m.q_slice(0)
+    (3, slice(0, 3, None))
+    >>> Model([Body(1.0), Body(1.0)], [Joint("revolute")] * 2, [1, 0])
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.CyclicTopologyError: parents contain a cycle through bodies 0 -> 1 -> 0 (parents=[1, 0]) (condition number of 1 - C: inf)
+    """
+
+    bodies: tuple[Body, ...]
+    joints: tuple[Joint, ...]
+    parents: tuple[int, ...]
+    gravity: tuple[float, float] = (0.0, -9.81)
+    contacts: tuple = ()
+    # derived, filled in __post_init__
+    N: int = field(init=False, repr=False, compare=False)
+    nq: int = field(init=False, repr=False, compare=False)
+    q_offsets: tuple[int, ...] = field(init=False, repr=False, compare=False)
+    _arrays: dict = field(init=False, repr=False, compare=False, hash=False)
+
+    def __post_init__(self):
+        bodies = tuple(self.bodies)
+        joints = tuple(self.joints)
+        for i, b in enumerate(bodies):
+            if not isinstance(b, Body):
+                raise InputError(f"bodies[{i}] must be a Body, got {type(b).__name__}")
+        for i, j in enumerate(joints):
+            if not isinstance(j, Joint):
+                raise InputError(f"joints[{i}] must be a Joint, got {type(j).__name__}")
+        if len(bodies) == 0:
+            raise InputError("bodies must not be empty")
+        if len(joints) != len(bodies):
+            raise InputError(f"joints must have one entry per body ({len(bodies)}), got {len(joints)}")
+        parents = _check_parents(self.parents, len(bodies))
+        g = _finite_tuple(as_xy(self.gravity, "gravity"), "gravity", 2)
+        object.__setattr__(self, "bodies", bodies)
+        object.__setattr__(self, "joints", joints)
+        object.__setattr__(self, "parents", parents)
+        object.__setattr__(self, "gravity", g)
+        object.__setattr__(self, "contacts", tuple(self.contacts))
+        offs = [0]
+        for j in joints:
+            offs.append(offs[-1] + j.dofs)
+        object.__setattr__(self, "N", len(bodies))
+        object.__setattr__(self, "nq", offs[-1])
+        object.__setattr__(self, "q_offsets", tuple(offs))
+        object.__setattr__(self, "_arrays", {})
+
+    # -- structure -------------------------------------------------------
+    def q_slice(self, i: int) -> slice:
+        """Slice of ``q`` holding joint ``i``'s coordinates."""
+        if not -self.N <= i < self.N:
+            raise InputError(f"i must be a body index in 0..{self.N - 1}, got {i}")
+        i %= self.N
+        return slice(self.q_offsets[i], self.q_offsets[i + 1])
+
+    def children(self, i: int) -> tuple[int, ...]:
+        """Bodies whose parent is ``i`` (``-1``: bodies on the ground)."""
+        return tuple(k for k, p in enumerate(self.parents) if p == i)
+
+    def ancestors(self, i: int) -> tuple[int, ...]:
+        """Bodies on the path from the ground to ``i`` (inclusive), root first."""
+        path = []
+        while i != -1:
+            path.append(i)
+            i = self.parents[i]
+        return tuple(reversed(path))
+
+    @property
+    def is_chain(self) -> bool:
+        """True for an unbranched chain ``parents == (-1, 0, 1, ...)``."""
+        return self.parents == tuple(range(-1, self.N - 1))
+
+    @property
+    def mass(self) -> float:
+        """Total mass."""
+        return float(sum(b.mass for b in self.bodies))
+
+    # -- cached numeric arrays (used by the algorithms) -------------------
+    def arrays(self) -> dict:
+        """Read-only numeric arrays of the model (cached): masses, coms, inertias, placements..."""
+        a = self._arrays
+        if "mass" not in a:
+            a["mass"] = np.array([b.mass for b in self.bodies])
+            a["com"] = np.array([b.com for b in self.bodies]).reshape(self.N, 2)
+            a["J"] = np.array([b.inertia for b in self.bodies])
+            a["placement"] = np.array([j.placement for j in self.joints]).reshape(self.N, 3)
+            a["parents"] = np.array(self.parents, dtype=int)
+            mask = np.zeros((self.N, self.nq), dtype=bool)
+            for i in range(self.N):
+                for k in self.ancestors(i):
+                    mask[i, self.q_slice(k)] = True
+            a["ancestor_mask"] = mask
+            for k in ("mass", "com", "J", "placement", "parents", "ancestor_mask"):
+                a[k].setflags(write=False)
+        return a
+
+    def with_gravity(self, gravity) -> "Model":
+        """A copy with another gravity vector."""
+        return Model(self.bodies, self.joints, self.parents, gravity, self.contacts)
+
+
+class Data:
+    """Per-state workspace of world-frame, at-origin quantities (mutable).
+
+    Filled by :func:`planargeo.mechanics.kinematics.kinematics`; the recursive
+    algorithms add their intermediates (``A``, ``d``, ``a``, ``f``, ``qdd``...).
+    Leading batch dimensions ``...`` are those of ``q``.
+
+    Attributes
+    ----------
+    model : Model
+    q, qd : ndarray (..., nq)
+    pose : ndarray (..., N, 3)
+        World pose ``(x, y, theta)`` of each body frame.
+    com : ndarray (..., N, 2)
+        World centre of mass of each body.
+    origin : ndarray (..., N, 2)
+        World position of each joint frame's origin (before the joint motion).
+    S : ndarray (..., 3, nq)
+        All joint axes side by side, ``S[..., :, q_slice(i)] = s_i`` (thesis
+        Remark 8: the chain's Jacobian).
+    I : ndarray (..., N, 3, 3)
+        Spatial inertias at the origin (thesis 4.58).
+    v : ndarray (..., N, 3)
+        Body twists (2.9 / 3.32).
+    kappa : ndarray (..., N, 3)
+        Bias accelerations (2.19 / 3.33, with the cross terms of multi-dof joints).
+    g : ndarray (..., N, 3)
+        Applied wrenches: gravity at the centre of mass plus ``f_ext``.
+    p : ndarray (..., N, 3)
+        Bias forces ``-(v×)^T I v - g`` (3.11 / 3.34).
+    """
+
+    def __init__(self, model: Model):
+        self.model = model
+
+    def s(self, i: int) -> np.ndarray:
+        """Joint ``i``'s world-frame motion space, shape (..., 3, k)."""
+        return self.S[..., :, self.model.q_slice(i)]
+
+    def jacobian(self, i: int) -> np.ndarray:
+        """Body ``i``'s Jacobian (..., 3, nq): ``v_i = J_i qd`` (thesis Remark 8)."""
+        mask = self.model.arrays()["ancestor_mask"][i]
+        return self.S * mask
+
+    @property
+    def J(self) -> np.ndarray:
+        """All body Jacobians, shape (..., N, 3, nq)."""
+        mask = self.model.arrays()["ancestor_mask"]
+        return self.S[..., None, :, :] * mask[:, None, :]
+
+    def __repr__(self) -> str:
+        keys = [k for k in vars(self) if k != "model"]
+        return f"Data(N={self.model.N}, nq={self.model.nq}, fields={keys})"
+
+
+# ---------------------------------------------------------------------------
+# Builders (used by scenes and tests)
+# ---------------------------------------------------------------------------
+def chain_model(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str = "revolute",
+                gravity=(0.0, -9.81)) -> Model:
+    """An unbranched chain of ``n`` uniform slender links.
+
+    Link ``i`` has mass ``mass``, length ``length``, centre of mass at mid-link
+    and inertia ``mass length² / 12`` about it; joint 1 sits at the origin and
+    joint ``i`` at the tip of link ``i-1``; at ``q = 0`` the links lie along +x.
+
+    Examples
+    --------
+    >>> m = chain_model(3, joint="prismatic")
+    >>> [j.kind for j in m.joints], m.joints[1].placement
+    (['prismatic', 'prismatic', 'prismatic'], (1.0, 0.0, 0.0))
+    """
+    n = int(n)
+    if n < 1:
+        raise InputError(f"n must be a positive integer, got {n}")
+    L = as_scalar(length, "length")
+    if not L > 0:
+        raise InputError(f"length must be positive, got {L!r}")
+    m = as_scalar(mass, "mass")
+    bodies = [Body(m, (L / 2, 0.0), m * L * L / 12, name=f"link{i + 1}") for i in range(n)]
+    joints = [Joint(joint, (0.0 if i == 0 else L, 0.0, 0.0), name=f"joint{i + 1}") for i in range(n)]
+    return Model(bodies, joints, list(range(-1, n - 1)), gravity)
+
+
+def random_model(n: int, seed=None, *, kinds=("revolute", "prismatic"), tree: bool = False,
+                 gravity=(0.0, -9.81)) -> Model:
+    """A random model for tests: ``n`` bodies, joint kinds drawn from ``kinds``.
+
+    With ``tree=True`` each body's parent is drawn uniformly among the earlier
+    bodies and the ground; otherwise the model is a chain.
+
+    Examples
+    --------
+    >>> m = random_model(5, seed=1, tree=True)
+    >>> m.N, all(p < i for i, p in enumerate(m.parents))
+    (5, True)
+    """
+    rng = np.random.default_rng(seed)
+    bodies, joints, parents = [], [], []
+    for i in range(n):
+        bodies.append(Body(rng.uniform(0.5, 2.0), tuple(rng.uniform(-0.5, 1.0, 2)), rng.uniform(0.05, 0.5)))
+        kind = str(kinds[rng.integers(len(kinds))])
+        pl = (rng.uniform(-0.5, 1.5), rng.uniform(-0.5, 0.5), rng.uniform(-np.pi, np.pi))
+        joints.append(Joint(kind, pl))
+        parents.append(int(rng.integers(-1, i)) if tree and i > 0 else i - 1)
+    return Model(bodies, joints, parents, gravity)

@@ -1,0 +1,905 @@
+"""Subspace decompositions of wrenches, twists and inertias (thesis chapter 6).
+
+A joint's motion space ``s`` (3×k) and reaction space ``R`` (3×(3-k)),
+``sᵀR = 0``, are completed with the help of an inertia ``A`` (a rigid body
+inertia ``I`` or an articulated inertia) into
+
+* the *percussion space*            ``T = A s (sᵀ A s)⁻¹``          (6.30, 6.36, 6.39)
+* the *reactive-acceleration space* ``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹``      (6.37, 6.45; 6.33 misprinted)
+
+with ``sᵀT = 1``, ``RᵀU = 1`` and ``TᵀU = 0`` (6.22, 6.23, 6.46).  Any wrench
+splits as ``f = T Q + R μ`` (6.38) and any acceleration as ``a = s ψ + U γ``
+(6.44), the components being read off by the projections (6.61–6.62)::
+
+    Q = sᵀ f      μ = Uᵀ f      ψ = Tᵀ a      γ = Rᵀ a
+
+All functions broadcast over leading dimensions: spaces are ``(..., 3, k)``,
+inertias ``(..., 3, 3)``, wrenches / twists ``(..., 3)``.  A space may also be
+given as a single column of shape ``(3,)``.  No matrix is inverted explicitly:
+everything goes through :func:`numpy.linalg.solve` on the small ``k×k``
+matrices ``sᵀAs`` / ``RᵀA⁻¹R`` (and on ``A`` itself for ``A⁻¹R``); a single
+1×1 ``sᵀAs`` is applied as the LU solve does it, by its reciprocal.
+
+The public functions validate their arguments and call private, unchecked
+kernels (``_percussion_space(A, s)``, ``_effective_mobility(A, s)``,
+``_reactive_from_T(R, s, T)``) that the chain algorithms call per body; the
+singularity rule (:func:`_gram`: ``‖A‖ ‖s‖² / |λ|_min(sᵀAs)`` with Frobenius
+norms, no eigen-solve of ``A``) lives in the kernels, so it is the same everywhere.
+
+Inertia arguments of the public functions must be symmetric
+(:class:`~planargeo.errors.InputError`) and positive semi-definite: an
+eigenvalue below ``-1e-10 max|eigenvalue|`` raises
+:class:`~planargeo.errors.SingularInertiaError` naming the argument.  Singular
+(semi-definite) inertias — point masses, articulated inertias projected across
+a joint — are legitimate wherever only ``sᵀAs`` is inverted
+(:func:`percussion_space`, :func:`joint_space_inertia`,
+:func:`effective_mobility`, :func:`reactive_acceleration_space` with ``s``);
+the functions that need ``A⁻¹`` (:func:`reactive_acceleration_space` without
+``s``, :func:`reaction_space_inverse_inertia`, :func:`effective_base_inertia`,
+:func:`inertia_decomposition`, :func:`inverse_inertia_decomposition`,
+:class:`Decomposition` with ``k < 3``) need it positive definite.  The private
+kernels do not check (their callers build ``A`` from checked bodies).
+
+Errors: a singular ``sᵀAs`` or ``RᵀA⁻¹R`` raises
+:class:`~planargeo.errors.SingularConfigurationError`; a singular ``A`` where
+``A⁻¹`` is needed raises :class:`~planargeo.errors.SingularInertiaError`;
+both carry ``.cond``.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo._validate import as_array, check_positive_semidefinite
+from planargeo.errors import InputError, ShapeError, SingularConfigurationError, SingularInertiaError
+
+__all__ = [
+    "percussion_space", "reactive_acceleration_space",
+    "active_force", "reaction_force", "active_acceleration", "reactive_acceleration",
+    "wrench_projectors", "twist_projectors",
+    "joint_space_inertia", "reaction_space_inverse_inertia",
+    "inertia_decomposition", "inverse_inertia_decomposition",
+    "effective_mobility", "effective_base_inertia",
+    "Decomposition", "COND_LIMIT", "joint_cond", "joint_scale", "singular_joint_error",
+]
+
+#: Largest (scale-free) condition number accepted for ``sᵀAs``, ``RᵀA⁻¹R`` and ``A``.
+#:
+#: The package's one singularity rule for a joint (every forward-dynamics method:
+#: ``aba``, ``projective``, ``mobility_split``, ``stacked``; the simulation's
+#: watched ``joint_conditions``): with ``A_P`` the joint's articulated inertia and
+#: ``s_P`` its motion space, both **at the joint's own point** ``P`` (its world
+#: position in this state: the pivot of a revolute joint, the placement point — the
+#: joint frame's origin — of a prismatic or multi-dof joint), moved there from the
+#: origin by ``s_P = X s``, ``A_P = X⁻ᵀ A X⁻¹`` (:func:`joint_scale`),
+#:
+#:     cond = ‖A_P‖_F ‖s_P‖_F² / σ_min(sᵀAs)        (σ_min = |sᵀAs| for one dof)
+#:
+#: (:func:`joint_cond`; ``sᵀAs`` itself is the same at every point), and the joint
+#: is singular when ``cond > COND_LIMIT`` (``inf`` when ``σ_min = 0``).  Measured at
+#: ``P``, the rule is invariant under translating and rotating the whole mechanism
+#: (``‖·‖_F`` is invariant under the rotation, ``A_P`` and ``s_P`` do not depend on
+#: where ``P`` is): a pendulum pinned 1 km from the origin is as regular as one
+#: pinned at it.  ``‖A_P‖ ‖s_P‖²`` is the size of the products that cancel when
+#: ``sᵀAs`` is formed at ``P``.  The public subspace functions of this module, which
+#: know no joint point, measure it at the origin of the coordinates they are given.
+COND_LIMIT = 1e12
+#: ``COND_LIMIT²``: the rule without a square root, ``σ_min² COND_LIMIT² > ‖A‖_F² ‖s‖⁴``
+#: (the form the compiled ABA plans test; it accepts exactly the states ``cond <= COND_LIMIT`` accepts,
+#: up to rounding of the last bit at the threshold itself)
+COND_LIMIT2 = COND_LIMIT * COND_LIMIT
+
+
+def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
+    """The scale-free condition number of a joint's ``sᵀAs`` (the rule of :data:`COND_LIMIT`), as a float.
+
+    Parameters
+    ----------
+    smin : float
+        ``σ_min(sᵀAs)`` (``|sᵀAs|`` for one dof; its sign is ignored).
+    A_norm2 : float
+        ``‖A_P‖_F²`` of the articulated inertia at the joint's point ``P``.
+    s_norm2 : float
+        ``‖s_P‖_F²`` of the motion space at ``P`` (``1`` for a revolute or prismatic joint).
+
+    Returns
+    -------
+    float
+        ``‖A‖_F ‖s‖² / σ_min``; ``inf`` when ``σ_min = 0``.
+
+    Examples
+    --------
+    A unit point mass at distance ``d = 1e-6`` from its pivot ``P``:
+    ``sᵀAs = d²``, ``‖A_P‖_F ≈ √2`` (its mass block), ``s_P = [0, 0, 1]``.
+
+    >>> round(joint_cond(1e-12, 2.0 + 1e-24, 1.0) / 1e12, 6)
+    1.414214
+    >>> joint_cond(0.0, 2.0, 1.0)
+    inf
+    """
+    smin = abs(float(smin))
+    return math.sqrt(float(A_norm2)) * float(s_norm2) / smin if smin > 0 else math.inf
+
+
+def joint_scale(A, s, point):
+    """``‖A_P‖_F ‖s_P‖_F²``: the scale of the rule of :data:`COND_LIMIT` at the joint's point ``P``.
+
+    ``A`` (..., 3, 3) and ``s`` (..., 3, k) are given at the origin and moved to
+    ``P = (x, y)`` (..., 2): twists by ``X = [[1, 0, -y], [0, 1, x], [0, 0, 1]]``
+    (``s_P = X s``, thesis 4.8), the inertia congruently, ``A_P = X⁻ᵀ A X⁻¹`` (1.68,
+    4.58): only its moment row and column change,
+    ``(A_P)_{j2} = A_{j2} + y A_{j0} - x A_{j1}`` for ``j = 0, 1`` and
+    ``(A_P)_22 = A_22 + 2 y A_02 - 2 x A_12 + y² A_00 - 2 x y A_01 + x² A_11``.
+    Scale-safe: where the squares of the entries would overflow or underflow (masses
+    like ``1e160`` or ``1e-170``), the norm is taken of ``A_P`` divided by its largest
+    entry and scaled back (the rule is scale invariant).
+
+    Returns
+    -------
+    float or ndarray (...)
+
+    Examples
+    --------
+    A unit point mass at ``(1000.5, 0)`` on a pivot at ``(1000, 0)``: at the pivot
+    ``A_P = [[1, 0, 0], [0, 1, 0.5], [0, 0.5, 0.25]]`` and ``s_P = [0, 0, 1]``.
+
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> joint_scale(inertia_matrix(1.0, [1000.5, 0.0], 0.0), [0.0, -1000.0, 1.0], [1000.0, 0.0])
+    1.6007810593582121
+    >>> round(float(np.sqrt(2 + 2 * 0.25 + 0.0625)), 12)
+    1.600781059358
+    """
+    A = np.asarray(A, dtype=float)
+    s = np.asarray(s, dtype=float)
+    if s.ndim == 1:
+        s = s[:, None]
+    P = np.asarray(point, dtype=float)
+    x, y = P[..., 0], P[..., 1]
+    a00, a01, a02 = A[..., 0, 0], A[..., 0, 1], A[..., 0, 2]
+    a11, a12, a22 = A[..., 1, 1], A[..., 1, 2], A[..., 2, 2]
+    p02 = a02 + y * a00 - x * a01
+    p12 = a12 + y * a01 - x * a11
+    p22 = a22 + y * a02 - x * a12 + y * p02 - x * p12
+    with np.errstate(over="ignore", under="ignore"):
+        F2 = a00 * a00 + a11 * a11 + p22 * p22 + 2.0 * (a01 * a01 + p02 * p02 + p12 * p12)
+    if not np.all((F2 < 1e300) & (F2 > 1e-300)):
+        # squares overflowed or underflowed (masses like 1e160 or 1e-170): the norm is homogeneous,
+        # so take it of the entries divided by their largest magnitude, then scale back
+        e = [np.abs(v) for v in np.broadcast_arrays(a00, a11, p22, a01, p02, p12)]
+        mx = np.maximum.reduce(e)
+        safe = np.where(mx > 0, mx, 1.0)
+        r = [v / safe for v in e]
+        F2 = None
+        F = mx * np.sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + 2.0 * (r[3] * r[3] + r[4] * r[4] + r[5] * r[5]))
+    x, y = x[..., None], y[..., None]
+    s0, s1, s2 = s[..., 0, :], s[..., 1, :], s[..., 2, :]
+    t0, t1 = s0 - y * s2, s1 + x * s2
+    ss = np.sum(t0 * t0 + t1 * t1 + s2 * s2, axis=-1)
+    out = (np.sqrt(F2) if F2 is not None else F) * ss
+    return float(out) if np.ndim(out) == 0 else out
+
+
+def singular_joint_error(i: int, cond: float) -> SingularConfigurationError:
+    """The error every method raises for a singular joint ``i`` (message and ``.cond`` shared).
+
+    >>> str(singular_joint_error(3, 2e12))
+    'sᵀAs of joint 3 is singular: the inertia has (almost) nothing along s (condition number 2e+12)'
+    """
+    return SingularConfigurationError(
+        f"sᵀAs of joint {i} is singular: the inertia has (almost) nothing along s", float(cond))
+
+
+# ----------------------------------------------------------------------------- helpers
+def _space(x, name: str) -> np.ndarray:
+    """Validate a subspace: (..., 3, k) float array; a (3,) vector is one column."""
+    a = as_array(x, name)
+    if a.ndim == 1:
+        if a.shape != (3,):
+            raise ShapeError(f"{name} must have shape (..., 3, k), got shape {a.shape}")
+        return a[:, None]
+    if a.ndim < 2 or a.shape[-2] != 3 or a.shape[-1] > 3:
+        raise ShapeError(f"{name} must have shape (..., 3, k) with k <= 3, got shape {a.shape}")
+    return a
+
+
+def _inertia(A, name: str) -> np.ndarray:
+    """An inertia argument: (..., 3, 3), finite, symmetric, positive semi-definite (named ``name``)."""
+    return check_positive_semidefinite(as_array(A, name, (3, 3)), name)
+
+
+def _inertia_eig(A, name: str):
+    """:func:`_inertia` and the ``(largest, smallest)`` |eigenvalue| of ``A`` (for :func:`_solve_A`), one eigen-solve."""
+    a, w = check_positive_semidefinite(as_array(A, name, (3, 3)), name, eig=True)
+    w = np.abs(w)
+    return a, (w.max(axis=-1), w.min(axis=-1))
+
+
+def _T(x: np.ndarray) -> np.ndarray:
+    return np.swapaxes(x, -1, -2)
+
+
+def _abs_eig(A: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Largest and smallest |eigenvalue| of symmetric matrices (= their singular values)."""
+    w = np.abs(np.linalg.eigvalsh(A))
+    return w.max(axis=-1), w.min(axis=-1)
+
+
+def _fro2(x: np.ndarray) -> np.ndarray:
+    """Squared Frobenius norm of each matrix in a stack (an upper bound of the squared 2-norm)."""
+    return np.einsum("...ij,...ij->...", x, x)
+
+
+def _check_cond(smin: np.ndarray, scale: np.ndarray, error, message: str) -> None:
+    """Raise ``error(message, cond)`` where ``cond = scale / smin`` exceeds :data:`COND_LIMIT`.
+
+    ``smin`` is the smallest singular value of the matrix to be inverted and
+    ``scale`` what its norm would be for a well-conditioned problem (e.g.
+    ``‖A‖ ‖s‖²`` for ``sᵀAs``), so that a 1×1 ``sᵀAs`` that is tiny compared
+    with the inertia is caught too.
+    """
+    smin, scale = np.broadcast_arrays(np.asarray(smin, dtype=float), np.asarray(scale, dtype=float))
+    cond = np.full(smin.shape, np.inf)
+    np.divide(scale, smin, out=cond, where=smin > 0)
+    bad = ~(cond <= COND_LIMIT)
+    if np.any(bad):
+        raise error(message, float(np.max(np.where(bad, cond, 0.0))))
+
+
+def _solve_A(A: np.ndarray, B: np.ndarray, name: str, eig=None) -> np.ndarray:
+    """``A⁻¹ B`` by a solve, raising SingularInertiaError (with cond) for a singular ``A``."""
+    hi, lo = _abs_eig(A) if eig is None else eig
+    _check_cond(lo, hi, SingularInertiaError, f"{name} must be invertible")
+    shape = np.broadcast_shapes(A.shape[:-2], B.shape[:-2])
+    return np.linalg.solve(np.broadcast_to(A, shape + A.shape[-2:]), np.broadcast_to(B, shape + B.shape[-2:]))
+
+
+def _solve(M: np.ndarray, b: np.ndarray, what: str = "a recursion matrix") -> np.ndarray:
+    """``M⁻¹ b`` for one small ``M`` already checked non-singular.
+
+    The caller's cheap condition estimate can pass a matrix that LAPACK still finds
+    exactly singular (a zero pivot after round-off, e.g. masses mixed over 14 decades
+    in the mobility recursion 7.38): that is reported as a SingularConfigurationError
+    with ``cond = inf``, never as numpy's bare LinAlgError.
+    """
+    try:
+        return np.linalg.solve(M, b)
+    except np.linalg.LinAlgError:
+        raise SingularConfigurationError(f"{what} is singular to working precision", math.inf) from None
+
+
+def _right_solve(X: np.ndarray, M: np.ndarray) -> np.ndarray:
+    """``X M⁻¹`` for symmetric ``M`` (..., k, k), as ``(M⁻¹ Xᵀ)ᵀ``.
+
+    A single 1×1 ``M`` multiplies by ``1 / M``: the same numbers as the LU solve
+    (which scales by the reciprocal pivot), without its overhead.
+    """
+    if M.shape == (1, 1):
+        return X * (1.0 / M[0, 0])
+    Xt = _T(X)
+    if M.shape[:-2] == Xt.shape[:-2]:
+        return _T(np.linalg.solve(M, Xt))
+    shape = np.broadcast_shapes(M.shape[:-2], Xt.shape[:-2])
+    return _T(np.linalg.solve(np.broadcast_to(M, shape + M.shape[-2:]),
+                              np.broadcast_to(Xt, shape + Xt.shape[-2:])))
+
+
+def _norm(A: np.ndarray):
+    """Cheap norm ``‖A‖`` of each matrix in a stack: the Frobenius norm (a float for one matrix).
+
+    Within a factor ``√3`` of the 2-norm of a 3×3 matrix, and no eigen-solve:
+    the scale of the singularity rule (:func:`_gram`).
+    """
+    if A.ndim == 2:
+        return math.sqrt(float(np.vdot(A, A)))
+    return np.sqrt(_fro2(A))
+
+
+def _gram(s: np.ndarray, As: np.ndarray, A_scale, sname: str, what: str, scale=None) -> np.ndarray:
+    """``M = sᵀ (A s)``, symmetrised, checked for singularity relative to ``‖A‖ ‖s‖²``.
+
+    The package's one singularity rule for joint-space matrices: the scale-free
+    condition number ``‖A‖ ‖s‖² / σ_min(M)`` (Frobenius norms; ``σ_min`` is
+    ``|M|`` for a 1×1 ``M``, else from the small ``k×k`` matrix itself) must not
+    exceed :data:`COND_LIMIT`.  ``scale``: ``‖A_P‖ ‖s_P‖²`` at the joint's point
+    (:func:`joint_scale`) when known, else ``A_scale ‖s‖²`` (at the origin of the coordinates).
+    """
+    if s.shape == (3, 1) and As.ndim == 2:     # one joint, one dof: Python floats (M is its own transpose)
+        M = s.T @ As
+        smin = abs(float(M[0, 0]))     # the rule of joint_cond, without squaring the scale (no overflow)
+        scale = A_scale * float(np.vdot(s, s)) if scale is None else float(scale)
+        cond = scale / smin if smin > 0 else math.inf
+        if not cond <= COND_LIMIT:
+            raise SingularConfigurationError(
+                f"{what} is singular: the inertia has (almost) nothing along {sname}", float(cond))
+        return M
+    M = _T(s) @ As
+    k = M.shape[-1]
+    if k == 0:
+        return M
+    M = 0.5 * (M + _T(M))
+    smin = np.abs(M[..., 0, 0]) if k == 1 else _abs_eig(M)[1]
+    _check_cond(smin, A_scale * _fro2(s) if scale is None else scale, SingularConfigurationError,
+                f"{what} is singular: the inertia has (almost) nothing along {sname}")
+    return M
+
+
+def _check_complementary(s: np.ndarray, R: np.ndarray) -> None:
+    k, r = s.shape[-1], R.shape[-1]
+    if k + r != 3:
+        raise ShapeError(f"s and R must have 3 columns together, got s with {k} and R with {r}")
+    sR = _T(s) @ R
+    if sR.size:
+        tol = 1e-9 * max(1.0, float(np.max(np.abs(s), initial=0.0)) * float(np.max(np.abs(R), initial=0.0)))
+        worst = float(np.max(np.abs(sR)))
+        if worst > tol:
+            raise InputError(f"R must be reciprocal to s (sᵀR = 0, thesis 6.1), got max |sᵀR| = {worst:.3g}")
+
+
+def _checked_gram(A: np.ndarray, s: np.ndarray, what: str, point=None) -> tuple[np.ndarray, np.ndarray]:
+    """``(A s, sᵀ A s)`` with ``sᵀAs`` checked by the singularity rule of :func:`_gram`.
+
+    ``point``: the joint's point ``P`` (..., 2), where the rule of :data:`COND_LIMIT`
+    is measured (:func:`joint_scale`); default the origin of the coordinates.
+    """
+    As = A @ s
+    scale = None if point is None else joint_scale(A, s, point)
+    return As, _gram(s, As, _norm(A), "s", what, scale)
+
+
+def _percussion_space(A: np.ndarray, s: np.ndarray, what: str = "sᵀAs", gram=None, point=None) -> np.ndarray:
+    """``T = A s (sᵀ A s)⁻¹`` (6.30, 6.39) on float arrays already checked (the unchecked kernel).
+
+    ``A`` (..., 3, 3) symmetric, ``s`` (..., 3, k).  Shared by
+    :func:`percussion_space` and the chain algorithms; raises
+    :class:`~planargeo.errors.SingularConfigurationError` (the rule of :func:`_gram`).
+    ``gram``: ``_checked_gram(A, s, what, point)`` if already formed; ``point``: the
+    joint's point, where the rule is measured (default the origin of the coordinates).
+    """
+    if s.shape[-1] == 0:
+        return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 0))
+    As, M = _checked_gram(A, s, what, point) if gram is None else gram
+    return _right_solve(As, M)
+
+
+def _effective_mobility(A: np.ndarray, s: np.ndarray, what: str = "sᵀIs", gram=None, point=None) -> np.ndarray:
+    """``s (sᵀ A s)⁻¹ sᵀ`` (6.93) on float arrays already checked (the unchecked kernel).
+
+    ``gram``: ``_checked_gram(A, s, what, point)`` if already formed (e.g. for :func:`_percussion_space`);
+    ``point``: the joint's point, where the rule is measured (default the origin of the coordinates).
+    """
+    if s.shape[-1] == 0:
+        return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 3))
+    _, M = _checked_gram(A, s, what, point) if gram is None else gram
+    return _right_solve(s, M) @ _T(s)
+
+
+def _reactive(R: np.ndarray, A: np.ndarray, name: str, eig=None, what=None) -> np.ndarray:
+    if R.shape[-1] == 0:
+        return np.zeros(np.broadcast_shapes(R.shape[:-2], A.shape[:-2]) + (3, 0))
+    eig = _abs_eig(A) if eig is None else eig
+    AiR = _solve_A(A, R, name, eig)
+    with np.errstate(divide="ignore"):
+        Ainv_norm = 1.0 / eig[1]          # ‖A⁻¹‖ = 1 / σ_min(A); finite here (A checked invertible)
+    return _right_solve(AiR, _gram(R, AiR, Ainv_norm, "R", what or f"Rᵀ{name}⁻¹R"))
+
+
+def _reactive_from_T(R: np.ndarray, s: np.ndarray, T: np.ndarray) -> np.ndarray:
+    """Inverse-free ``U = (1 - s Tᵀ) R (RᵀR)⁻¹`` (from ``T sᵀ + R Uᵀ = 1``, 6.75, and ``RᵀU = 1``)."""
+    if R.shape[-1] == 0:
+        return np.zeros(np.broadcast_shapes(R.shape[:-2], T.shape[:-2]) + (3, 0))
+    P = np.eye(3) - s @ _T(T)
+    return _right_solve(P @ R, _T(R) @ R)
+
+
+def _vec(x, name: str) -> np.ndarray:
+    return as_array(x, name, (3,))
+
+
+def _tmul(X: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """``Xᵀ v`` for stacks: X (..., 3, k), v (..., 3) -> (..., k)."""
+    return (_T(X) @ v[..., None])[..., 0]
+
+
+# ----------------------------------------------------------------------------- subspaces
+def percussion_space(s, A, *, what: str | None = None) -> np.ndarray:
+    """Percussion (active-force) space ``T = A s (sᵀ A s)⁻¹`` (thesis 6.30, 6.36, 6.39).
+
+    The weighted pseudo-inverse of ``s`` (6.26): ``sᵀT = 1`` (6.32) and
+    ``TᵀU = 0`` (6.46).  For a revolute joint its single column is the axis of
+    percussion of the pivot (5.67), scaled so that its moment about the pivot
+    is 1.
+
+    Parameters
+    ----------
+    s : array_like, shape (..., 3, k) or (3,)
+        Motion space (unit twists at the origin).
+    A : array_like, shape (..., 3, 3)
+        Rigid-body or articulated inertia: symmetric positive semi-definite
+        (singular is fine, e.g. a point mass, as long as ``sᵀAs`` is not).
+
+    what : str, optional
+        How ``sᵀAs`` is named in the error message (default ``"sᵀAs"``), e.g.
+        ``"sᵀAs of joint 3"`` in the chain algorithms.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, k)
+
+    Raises
+    ------
+    InputError
+        ``A`` is not symmetric (message ``"A must be symmetric, ..."``).
+    SingularInertiaError
+        ``A`` has a negative eigenvalue (``"A must be positive semi-definite, ..."``).
+    SingularConfigurationError
+        If ``sᵀAs`` is singular (``A`` has no inertia along ``s``): its
+        scale-free condition number ``‖A‖ ‖s‖² / |λ|_min(sᵀAs)`` (``.cond``;
+        Frobenius norms, no eigen-solve of ``A``)
+        exceeds :data:`COND_LIMIT`.  This is the package's one singularity
+        rule for joint-space matrices, here measured at the origin of the given
+        coordinates (the chain algorithms measure it at each joint's point,
+        :func:`joint_scale`).
+
+    Examples
+    --------
+    Pinned body of thesis 5.64 (``m = 2``, ``d = 1``, ``ρ² = 1/4``), pinned at the origin:
+
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.5)
+    >>> percussion_space([0.0, 0.0, 1.0], I)      # force along y at x = 1/0.8 = d + ρ²/d (5.67)
+    array([[0. ],
+           [0.8],
+           [1. ]])
+    >>> percussion_space([0.0, 0.0, 1.0], np.diag([1.0, 1.0, -1.0]))
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.SingularInertiaError: A must be positive semi-definite, got smallest eigenvalue -1 (condition number inf)
+    """
+    return _percussion_space(_inertia(A, "A"), _space(s, "s"), what or "sᵀAs")
+
+
+def reactive_acceleration_space(R, A=None, *, s=None, T=None, what: str | None = None) -> np.ndarray:
+    """Reactive-acceleration space ``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹`` (thesis 6.37, 6.45; 6.33 corrected).
+
+    The weighted pseudo-inverse of ``R``: ``RᵀU = 1`` (6.35), ``TᵀU = 0`` (6.46).
+    Thesis 6.33 prints ``A⁻¹R (RᵀA⁻¹R)`` without the inverse (see
+    ``docs/errata.md``).
+
+    Parameters
+    ----------
+    R : array_like, shape (..., 3, r) or (3,)
+        Reaction space (unit wrenches at the origin).
+    A : array_like, shape (..., 3, 3)
+        Rigid-body or articulated inertia: symmetric positive semi-definite,
+        and positive definite (invertible) unless ``s`` is given; may be
+        omitted when both ``s`` and ``T`` are given.
+    s : array_like, shape (..., 3, 3 - r), optional
+        The joint's motion space (``sᵀR = 0``).  When given, the inverse-free
+        equivalent ``U = (1 - s Tᵀ) R (RᵀR)⁻¹`` is used (from ``T sᵀ + R Uᵀ = 1``,
+        6.75 / 7.8, and ``RᵀU = 1``): only ``sᵀAs`` must be invertible, so
+        point-mass bodies (singular ``A``) are fine.
+    T : array_like, shape (..., 3, 3 - r), optional
+        ``percussion_space(s, A)`` if already computed (only with ``s``).
+    what : str, optional
+        Name of the matrix in the singularity message.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, r)
+
+    Raises
+    ------
+    InputError
+        ``A`` is not symmetric.
+    SingularInertiaError
+        ``A`` has a negative eigenvalue, or is singular and ``s`` is not given
+        (``"A must be invertible"``, with ``.cond``).
+    SingularConfigurationError
+        If ``RᵀA⁻¹R`` (or, with ``s``, ``sᵀAs``) is singular.
+
+    Examples
+    --------
+    A free unit disc (``m = 1``, ``J = 1`` at the origin) held by a slider along x:
+    the reactive accelerations are pure sliding across (y) and pure spin.
+
+    >>> reactive_acceleration_space([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]], np.eye(3))
+    array([[0., 0.],
+           [1., 0.],
+           [0., 1.]])
+
+    A unit point mass at (1, 0) pinned at the origin (``A`` singular): with
+    ``s`` the inverse-free form applies (thesis 7.40 with ``ρ = 0``).
+
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> from planargeo.mechanics.joints import revolute
+    >>> j = revolute((0.0, 0.0))
+    >>> reactive_acceleration_space(j.R, inertia_matrix(1.0, [1.0, 0.0], 0.0), s=j.s) + 0.0
+    array([[ 1.,  0.],
+           [ 0.,  1.],
+           [ 0., -1.]])
+    """
+    R = _space(R, "R")
+    if s is None:
+        if T is not None:
+            raise InputError("T must be given together with s")
+        if A is None:
+            raise InputError("A must be given unless s and T are")
+        A, eig = _inertia_eig(A, "A")
+        return _reactive(R, A, "A", eig, what=what)
+    s = _space(s, "s")
+    _check_complementary(s, R)
+    if T is None:
+        if A is None:
+            raise InputError("A must be given unless s and T are")
+        T = _percussion_space(_inertia(A, "A"), s, what or "sᵀAs")
+    else:
+        T = _space(T, "T")
+    return _reactive_from_T(R, s, T)
+
+
+# ----------------------------------------------------------------------------- projections
+def active_force(s, f) -> np.ndarray:
+    """Active (joint) force ``Q = sᵀ f`` (thesis 6.61a, 6.51).
+
+    Examples
+    --------
+    >>> active_force([0.0, 0.0, 1.0], [1.0, 2.0, 3.0])   # the moment about the pivot
+    array([3.])
+    """
+    return _tmul(_space(s, "s"), _vec(f, "f"))
+
+
+def reaction_force(U, f) -> np.ndarray:
+    """Reaction-force components ``μ = Uᵀ f`` (thesis 6.61b, 6.54).
+
+    Examples
+    --------
+    >>> reaction_force(np.eye(3)[:, :2], [1.0, 2.0, 3.0])
+    array([1., 2.])
+    """
+    return _tmul(_space(U, "U"), _vec(f, "f"))
+
+
+def active_acceleration(T, a) -> np.ndarray:
+    """Active (absolute joint) acceleration ``ψ = Tᵀ a`` (thesis 6.62b, 6.57).
+
+    Examples
+    --------
+    >>> active_acceleration([0.0, 0.8, 1.0], [0.0, 0.0, 2.0])
+    array([2.])
+    """
+    return _tmul(_space(T, "T"), _vec(a, "a"))
+
+
+def reactive_acceleration(R, a) -> np.ndarray:
+    """Reactive-acceleration components ``γ = Rᵀ a`` (thesis 6.62a, 6.60).
+
+    Examples
+    --------
+    >>> reactive_acceleration([[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]], [0.0, 0.0, 2.0])  # pin at origin
+    array([0., 0.])
+    """
+    return _tmul(_space(R, "R"), _vec(a, "a"))
+
+
+# ----------------------------------------------------------------------------- projectors
+def wrench_projectors(s, R, A) -> tuple[np.ndarray, np.ndarray]:
+    """The complementary wrench projectors ``(T sᵀ, R Uᵀ)``, summing to 1 (thesis 6.75).
+
+    ``T sᵀ f`` is the active part ``T Q`` of a wrench, ``R Uᵀ f`` its reaction
+    part ``R μ`` (6.38, 6.61).
+
+    Examples
+    --------
+    >>> P_act, P_rea = wrench_projectors([0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]], np.eye(3))
+    >>> P_act + P_rea
+    array([[1., 0., 0.],
+           [0., 1., 0.],
+           [0., 0., 1.]])
+    """
+    d = Decomposition(s, R, A)
+    return d.T @ _T(d.s), d.R @ _T(d.U)
+
+
+def twist_projectors(s, R, A) -> tuple[np.ndarray, np.ndarray]:
+    """The complementary twist projectors ``(s Tᵀ, U Rᵀ)``, summing to 1 (dual of thesis 6.75).
+
+    ``s Tᵀ a = s ψ`` is the joint part of an acceleration, ``U Rᵀ a = U γ``
+    its reactive part (6.44, 6.62; ``U Rᵀ`` is the projection of 6.108).
+
+    Examples
+    --------
+    >>> P_joint, P_react = twist_projectors([0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]], np.eye(3))
+    >>> P_joint
+    array([[0., 0., 0.],
+           [0., 0., 0.],
+           [0., 0., 1.]])
+    """
+    d = Decomposition(s, R, A)
+    return d.s @ _T(d.T), d.U @ _T(d.R)
+
+
+# ----------------------------------------------------------------------------- inertias
+def joint_space_inertia(s, I) -> np.ndarray:
+    """Joint-space inertia ``sᵀ I s`` (thesis 6.67, 6.74c): ``Q = (sᵀIs) ψ``.
+
+    ``I`` must be symmetric (:class:`~planargeo.errors.InputError`) and positive
+    semi-definite (:class:`~planargeo.errors.SingularInertiaError` naming ``I``);
+    it may be singular.
+
+    Examples
+    --------
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> joint_space_inertia([0.0, 0.0, 1.0], inertia_matrix(2.0, [1.0, 0.0], 0.5))   # m (ρ² + d²)
+    array([[2.5]])
+    """
+    s = _space(s, "s")
+    I = _inertia(I, "I")
+    return _T(s) @ I @ s
+
+
+def reaction_space_inverse_inertia(R, I) -> np.ndarray:
+    """Reaction-space inverse inertia ``Rᵀ I⁻¹ R`` (thesis 6.71): ``γ = (RᵀI⁻¹R) μ``.
+
+    Computed with a solve, not an explicit inverse.  ``I`` must be symmetric
+    (:class:`~planargeo.errors.InputError`) and positive definite: a negative
+    eigenvalue or a singular ``I`` raises
+    :class:`~planargeo.errors.SingularInertiaError` naming ``I``.
+
+    Examples
+    --------
+    >>> reaction_space_inverse_inertia([[1.0], [0.0], [0.0]], np.diag([2.0, 2.0, 1.0]))
+    array([[0.5]])
+    """
+    R = _space(R, "R")
+    I, eig = _inertia_eig(I, "I")
+    return _T(R) @ _solve_A(I, R, "I", eig)
+
+
+def inertia_decomposition(s, R, I) -> tuple[np.ndarray, np.ndarray]:
+    """Split an inertia as ``I = T sᵀ I + R Uᵀ I`` (thesis 6.76).
+
+    ``T sᵀ I a`` is the force accelerating the joint's moving part, ``R Uᵀ I a``
+    the (reaction) force accelerating its base; the second term is the
+    effective inertia of the joint base (6.97), see :func:`effective_base_inertia`.
+    ``I`` must be symmetric positive definite (``U`` needs ``I⁻¹``) unless
+    the joint is free (``k = 3``); errors as for :class:`Decomposition`.
+
+    Returns
+    -------
+    (ndarray, ndarray), each shape (..., 3, 3)
+
+    Examples
+    --------
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.5)
+    >>> Ia, Ib = inertia_decomposition([0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]], I)
+    >>> np.allclose(Ia + Ib, I)
+    True
+    """
+    d = Decomposition(s, R, I, name="I")
+    return d.T @ _T(d.s) @ d.A, d.R @ _T(d.U) @ d.A
+
+
+def inverse_inertia_decomposition(s, R, I) -> tuple[np.ndarray, np.ndarray]:
+    """Split an inverse inertia as ``I⁻¹ = s Tᵀ I⁻¹ + U Rᵀ I⁻¹`` (thesis 6.79–6.81).
+
+    ``s Tᵀ I⁻¹ f`` is the motion of the joint produced by a wrench ``f`` (the
+    effective mobility of a constrained body, 6.93), ``U Rᵀ I⁻¹ f`` the motion
+    of the joint base (6.81).  Both parts are symmetric:
+    ``s Tᵀ I⁻¹ = s (sᵀIs)⁻¹ sᵀ`` and ``U Rᵀ I⁻¹ = I⁻¹R (RᵀI⁻¹R)⁻¹ RᵀI⁻¹``.
+    ``I`` must be symmetric positive definite; errors as for :class:`Decomposition`.
+
+    Examples
+    --------
+    >>> Ma, Mb = inverse_inertia_decomposition([0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]],
+    ...                                        np.diag([2.0, 2.0, 4.0]))
+    >>> Ma + Mb
+    array([[0.5 , 0.  , 0.  ],
+           [0.  , 0.5 , 0.  ],
+           [0.  , 0.  , 0.25]])
+    """
+    d = Decomposition(s, R, I, name="I")
+    IiR = _solve_A(d.A, d.R, "I")
+    return _effective_mobility(d.A, d.s, "sᵀIs"), d.U @ _T(IiR)
+
+
+def effective_mobility(s, I, *, what: str | None = None) -> np.ndarray:
+    """Effective inverse inertia of a joint-constrained body ``s Tᵀ I⁻¹ = s (sᵀIs)⁻¹ sᵀ`` (thesis 6.93).
+
+    A body at rest held by the joint and loaded by a wrench ``f`` accelerates
+    by ``a = s Tᵀ I⁻¹ f`` (with ``f`` the wrench *applied to* the body; the
+    thesis's 6.83–6.93 carry a minus sign because their ``f`` is the wrench the
+    body transmits, like ``f_{i+1}`` in 6.102).  No inverse of ``I`` is needed:
+    ``I`` must be symmetric (:class:`~planargeo.errors.InputError`) and positive
+    semi-definite (:class:`~planargeo.errors.SingularInertiaError` naming ``I``);
+    singular ``sᵀIs`` raises :class:`~planargeo.errors.SingularConfigurationError`.
+
+    Examples
+    --------
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> effective_mobility([0.0, 0.0, 1.0], inertia_matrix(2.0, [1.0, 0.0], 0.5))
+    array([[0. , 0. , 0. ],
+           [0. , 0. , 0. ],
+           [0. , 0. , 0.4]])
+    """
+    return _effective_mobility(_inertia(I, "I"), _space(s, "s"), what or "sᵀIs")
+
+
+def effective_base_inertia(R, I) -> np.ndarray:
+    """Effective inertia of the joint base ``R Uᵀ I = R (RᵀI⁻¹R)⁻¹ Rᵀ`` (thesis 6.97).
+
+    The reaction force needed to give the joint base the acceleration ``a``
+    when the joint transmits no active force: ``f = R Uᵀ I a``.  This is the
+    projection the articulated-body recursion adds to the parent (6.76, chapter 7).
+    ``I`` must be symmetric positive definite
+    (:class:`~planargeo.errors.InputError` / :class:`~planargeo.errors.SingularInertiaError`
+    naming ``I``).
+
+    Examples
+    --------
+    >>> effective_base_inertia([[0.0], [0.0], [1.0]], np.diag([2.0, 2.0, 4.0]))   # only a couple: J
+    array([[0., 0., 0.],
+           [0., 0., 0.],
+           [0., 0., 4.]])
+    """
+    R = _space(R, "R")
+    I, eig = _inertia_eig(I, "I")
+    IiR = _solve_A(I, R, "I", eig)
+    M = _gram(R, IiR, 1.0 / eig[1], "R", "RᵀI⁻¹R")
+    return _right_solve(R, M) @ _T(R)
+
+
+# ----------------------------------------------------------------------------- class
+class Decomposition:
+    """Decompose wrenches and twists about a joint with an inertia (thesis 6.2–6.3).
+
+    Parameters
+    ----------
+    s : array_like, shape (..., 3, k) or (3,)
+        Motion space.
+    R : array_like, shape (..., 3, 3 - k)
+        Reaction space, ``sᵀR = 0`` (checked).
+    A : array_like, shape (..., 3, 3)
+        Body or articulated inertia: symmetric positive semi-definite, and
+        positive definite (invertible) when ``k < 3`` (``U`` needs ``A⁻¹``).
+    name : str
+        Name used for ``A`` in error messages.
+
+    Raises
+    ------
+    InputError
+        ``A`` not symmetric, or ``sᵀR ≠ 0``.
+    SingularInertiaError
+        ``A`` has a negative eigenvalue (``"A must be positive semi-definite"``),
+        or is singular when ``k < 3`` (``"A must be invertible"``, with ``.cond``).
+    SingularConfigurationError
+        ``sᵀAs`` or ``RᵀA⁻¹R`` singular.
+
+    Attributes
+    ----------
+    s, R, A : ndarray
+    T : ndarray, shape (..., 3, k)
+        Percussion space (6.39).
+    U : ndarray, shape (..., 3, 3 - k)
+        Reactive-acceleration space (6.45).
+
+    Examples
+    --------
+    >>> from planargeo.mechanics.joints import revolute
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> j = revolute((0.0, 0.0))
+    >>> dec = Decomposition.from_joint(j, inertia_matrix(2.0, [1.0, 0.0], 0.5))
+    >>> Q, mu = dec.split_wrench([0.0, 1.0, 2.0])
+    >>> Q, mu
+    (array([2.]), array([ 0. , -0.6]))
+    >>> dec.join_wrench(Q, mu)
+    array([0., 1., 2.])
+    """
+
+    __slots__ = ("s", "R", "A", "T", "U")
+
+    def __init__(self, s, R, A, *, name: str = "A"):
+        s = _space(s, "s")
+        R = _space(R, "R")
+        A, eig = _inertia_eig(A, name)
+        _check_complementary(s, R)
+        self.s, self.R, self.A = s, R, A
+        self.T = _percussion_space(A, s, f"sᵀ{name}s")
+        self.U = _reactive(R, A, name, eig)
+
+    @classmethod
+    def from_joint(cls, joint, A, *, name: str = "A") -> "Decomposition":
+        """Build from a :class:`planargeo.mechanics.joints.JointSpace` (uses its ``s`` and ``R``)."""
+        return cls(joint.s, joint.R, A, name=name)
+
+    def split_wrench(self, f) -> tuple[np.ndarray, np.ndarray]:
+        """``(Q, μ) = (sᵀf, Uᵀf)`` so that ``f = T Q + R μ`` (thesis 6.38, 6.61).
+
+        Examples
+        --------
+        A pendulum (m = 2, centre of mass at (1, 0), J = 0.5 about it) on a
+        revolute joint at the origin, loaded by a unit couple: the joint
+        torque is ``Q = sᵀf = 1``; the body turns at ``α = 1 / (J + m d²) = 0.4``,
+        its centre of mass accelerates by (0, 0.4), which takes the force
+        (0, 0.8) of ``T Q = [0, 0.8, 1]``; the pivot supplies the rest,
+        ``μ = (0, -0.8)`` (unit forces along x and y through the pivot).
+
+        >>> from planargeo.mechanics.joints import revolute
+        >>> from planargeo.screws.twists import inertia_matrix
+        >>> dec = Decomposition.from_joint(revolute((0.0, 0.0)), inertia_matrix(2.0, [1.0, 0.0], 0.5))
+        >>> dec.split_wrench([0.0, 0.0, 1.0])
+        (array([1.]), array([ 0. , -0.8]))
+        """
+        f = _vec(f, "f")
+        return _tmul(self.s, f), _tmul(self.U, f)
+
+    def join_wrench(self, Q, mu) -> np.ndarray:
+        """``f = T Q + R μ`` (thesis 6.38).
+
+        Examples
+        --------
+        The pendulum of :meth:`split_wrench`: ``T = [0, 0.8, 1]`` (the wrench
+        of unit joint torque) plus the pivot's force (0, -0.8) through the
+        origin is the unit couple again.
+
+        >>> from planargeo.mechanics.joints import revolute
+        >>> from planargeo.screws.twists import inertia_matrix
+        >>> dec = Decomposition.from_joint(revolute((0.0, 0.0)), inertia_matrix(2.0, [1.0, 0.0], 0.5))
+        >>> dec.T.ravel()
+        array([0. , 0.8, 1. ])
+        >>> dec.join_wrench([1.0], [0.0, -0.8]) + 0.0
+        array([0., 0., 1.])
+        """
+        Q = as_array(Q, "Q", (self.s.shape[-1],))
+        mu = as_array(mu, "mu", (self.R.shape[-1],))
+        return (self.T @ Q[..., None])[..., 0] + (self.R @ mu[..., None])[..., 0]
+
+    def split_twist(self, a) -> tuple[np.ndarray, np.ndarray]:
+        """``(ψ, γ) = (Tᵀa, Rᵀa)`` so that ``a = s ψ + U γ`` (thesis 6.44, 6.62).
+
+        Examples
+        --------
+        The pendulum of :meth:`split_wrench` translated upwards at unit
+        acceleration: ``γ = Rᵀa = (0, 1)`` is the pivot's acceleration.  With
+        no joint torque the pivot's push would turn the body at
+        ``-m d / (J + m d²) = -0.8`` (``U γ = [0, 1, -0.8]``); ``ψ = 0.8`` is
+        the joint acceleration that cancels that turn.
+
+        >>> from planargeo.mechanics.joints import revolute
+        >>> from planargeo.screws.twists import inertia_matrix
+        >>> dec = Decomposition.from_joint(revolute((0.0, 0.0)), inertia_matrix(2.0, [1.0, 0.0], 0.5))
+        >>> dec.split_twist([0.0, 1.0, 0.0])
+        (array([0.8]), array([0., 1.]))
+        """
+        a = _vec(a, "a")
+        return _tmul(self.T, a), _tmul(self.R, a)
+
+    def join_twist(self, psi, gamma) -> np.ndarray:
+        """``a = s ψ + U γ`` (thesis 6.44).
+
+        Examples
+        --------
+        The pendulum of :meth:`split_twist`: the reactive acceleration of a
+        unit upward push on the pivot, ``U[:, 1] = [0, 1, -0.8]``, plus the
+        joint's ``s ψ = [0, 0, 0.8]`` is the pure translation; a joint
+        acceleration alone is a rotation about the pivot.
+
+        >>> from planargeo.mechanics.joints import revolute
+        >>> from planargeo.screws.twists import inertia_matrix
+        >>> dec = Decomposition.from_joint(revolute((0.0, 0.0)), inertia_matrix(2.0, [1.0, 0.0], 0.5))
+        >>> dec.U[:, 1]
+        array([ 0. ,  1. , -0.8])
+        >>> dec.join_twist([0.8], [0.0, 1.0]) + 0.0
+        array([0., 1., 0.])
+        >>> dec.join_twist([1.0], [0.0, 0.0])
+        array([0., 0., 1.])
+        """
+        psi = as_array(psi, "psi", (self.s.shape[-1],))
+        gamma = as_array(gamma, "gamma", (self.R.shape[-1],))
+        return (self.s @ psi[..., None])[..., 0] + (self.U @ gamma[..., None])[..., 0]
+
+    def __repr__(self) -> str:
+        return (f"Decomposition(k={self.s.shape[-1]}, batch={self.A.shape[:-2]}, "
+                f"T={np.array2string(self.T, precision=4)}, U={np.array2string(self.U, precision=4)})")

@@ -1,0 +1,76 @@
+"""``planargeo bench``: run the benchmark suite of a source checkout, side by side in one run.
+
+The suite (``benchmarks/`` beside the package in a source checkout, or ``--suite``) is not part
+of the installed package: this command only finds it and runs ``benchmarks/run.py`` in a fresh
+process.  Results go to ``--out`` (default: a new temporary folder, printed at the end), never
+to the committed ``benchmarks/results``, ``benchmarks/RESULTS.md`` or ``gallery/`` files:
+only ``make bench`` rewrites those.
+"""
+from __future__ import annotations
+
+import argparse
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+from planargeo.errors import InputError
+
+__all__ = ["add_arguments", "main", "find_suite"]
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--suite", default=None,
+                        help="the benchmarks folder (default: ./benchmarks, else the one beside the package)")
+    parser.add_argument("--out", default=None,
+                        help="output folder (default: a new temporary folder)")
+    parser.add_argument("--quick", action="store_true", help="fewer sizes and repeats (under a minute)")
+    parser.add_argument("--only", action="append", default=None,
+                        help="run only this group (repeatable): dynamics, breakdown, widgets, integrators, scenes")
+    parser.add_argument("--no-charts", action="store_true", help="tables only")
+
+
+def find_suite(suite: str | None = None) -> Path:
+    """The folder holding ``run.py`` of the benchmark suite.
+
+    Parameters
+    ----------
+    suite : str, optional
+        An explicit folder; by default ``./benchmarks``, then the folder beside the package.
+
+    Returns
+    -------
+    pathlib.Path
+
+    Raises
+    ------
+    InputError
+        If no folder with a ``run.py`` is found (an installed package without its checkout).
+    """
+    candidates = [Path(suite)] if suite else [Path.cwd() / "benchmarks",
+                                              Path(__file__).resolve().parents[1] / "benchmarks"]
+    for c in candidates:
+        if (c / "run.py").is_file():
+            return c.resolve()
+    raise InputError(f"suite: no benchmarks/run.py found in {', '.join(map(str, candidates))} "
+                     "(the benchmarks ship with the source checkout, not the installed package)")
+
+
+def main(args: argparse.Namespace) -> int:
+    try:
+        suite = find_suite(args.suite)
+    except InputError as e:
+        print(f"planargeo bench: error: {e}", file=sys.stderr)
+        return 2
+    out = Path(args.out) if args.out else Path(tempfile.mkdtemp(prefix="planargeo-bench-"))
+    cmd = [sys.executable, str(suite / "run.py"), "--out", str(out.resolve()),
+           "--summary", str(out.resolve() / "RESULTS.md"), "--gallery", ""]
+    if args.quick:
+        cmd.append("--quick")
+    if args.no_charts:
+        cmd.append("--no-charts")
+    for group in args.only or ():
+        cmd += ["--only", group]
+    rc = subprocess.call(cmd, cwd=str(suite.parent))
+    print(f"planargeo bench: results in {out}")
+    return rc

@@ -1,0 +1,703 @@
+"""Planar rigid-body inertias as (imaginary) conics (thesis 1.8, 4.58, 5.4, 10.2.3).
+
+An inertia ``I`` (a symmetric positive definite ``(3, 3)`` matrix at the
+origin, :func:`planargeo.screws.inertia_matrix`) maps an acceleration twist
+(a point: its pole) to the force wrench that produces it from rest (a line:
+the *axis of percussion* of the pole, thesis 5.64-5.68).  As a conic it has
+no real points; :func:`drawable_conic` gives the real *radius of gyration
+circle* that can be drawn instead (thesis 10.2.3).
+
+Functions broadcast over leading dimensions (inertias ``(..., 3, 3)``, points
+and lines ``(..., 3)``); :class:`Inertia` is a thin validated wrapper.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from planargeo._validate import (as_array, as_mat3, as_scalar, as_vec3, as_xy, check_positive_definite,
+                        check_positive_semidefinite)
+from planargeo.errors import InputError, InvalidPolygonError, SingularInertiaError
+from planargeo.screws.twists import _congruence, _inertia_rotated, _kinetic_energy, X_P_inv_T, inertia_matrix
+
+__all__ = [
+    "Inertia", "mass", "centre_of_mass", "rotational_inertia", "radius_of_gyration",
+    "percussion_axis", "percussion_pole", "drawable_conic", "mobility", "polygon_moments",
+]
+
+
+def _positive(x, name: str) -> np.ndarray:
+    """Like ``_validate.check_positive`` but with a plain-float message ("got -1.0")."""
+    a = as_array(x, name)
+    bad = ~(a > 0)
+    if np.any(bad):
+        raise InputError(f"{name} must be positive, got {float(a[bad].ravel()[0])!r}")
+    return a
+
+
+def _mat(x, name="inertia") -> np.ndarray:
+    return as_mat3(x.matrix if isinstance(x, Inertia) else x, name)
+
+
+def _psd(x, name="inertia") -> np.ndarray:
+    """An inertia that must be symmetric positive *semi*-definite (a point mass, ``J = 0``, is allowed).
+
+    Raises :class:`InputError` (not symmetric) or :class:`SingularInertiaError`
+    (a negative eigenvalue beyond rounding,
+    :func:`planargeo._validate.check_positive_semidefinite`), naming ``name``.
+    """
+    return check_positive_semidefinite(_mat(x, name), name)
+
+
+#: Relative tolerance of the rigid-body structure test of :class:`Inertia`.
+RIGID_RTOL = 1e-10
+
+
+def _check_rigid(M: np.ndarray, name: str) -> np.ndarray:
+    """Raise :class:`InputError` unless ``M[0, 0] == M[1, 1]`` and ``M[0, 1] == 0`` (thesis 4.58), relative to ``max|M|``."""
+    scale = np.abs(M).max(axis=(-2, -1), initial=0.0)
+    dev = np.maximum(np.abs(M[..., 0, 0] - M[..., 1, 1]),
+                     np.maximum(np.abs(M[..., 0, 1]), np.abs(M[..., 1, 0])))
+    bad = dev > RIGID_RTOL * scale
+    if np.any(bad):
+        i = np.unravel_index(int(np.argmax(np.where(bad, dev, -1.0))), bad.shape) if bad.ndim else ()
+        a, b, c = (float(M[i + (0, 0)]), float(M[i + (1, 1)]), float(M[i + (0, 1)]))
+        raise InputError(
+            f"{name} must be a rigid-body inertia ({name}[0, 0] == {name}[1, 1] == mass and "
+            f"{name}[0, 1] == 0, thesis 4.58), got {name}[0, 0] = {a:.6g}, {name}[1, 1] = {b:.6g}, "
+            f"{name}[0, 1] = {c:.6g}; articulated inertias are plain arrays")
+    return M
+
+
+def _pd(x, name="inertia") -> np.ndarray:
+    """An inertia that must be symmetric positive definite (it is inverted)."""
+    return check_positive_definite(_mat(x, name), name)
+
+
+def _vec(x, name) -> np.ndarray:
+    return as_vec3(getattr(x, "array", x), name)
+
+
+# ---------------------------------------------------------------------------
+# Features of a rigid-body inertia (thesis 1.66, 4.58)
+#
+# mass, centre_of_mass, rotational_inertia and radius_of_gyration read the
+# entries of the rigid-body form 4.58 and do not check it: for an articulated
+# inertia (no such structure) the numbers mean nothing.  The Inertia class
+# checks the structure, so its properties are always meaningful.  The three
+# that divide by the mass reject a zero or negative ``inertia[0, 0]``.
+# ---------------------------------------------------------------------------
+
+def mass(inertia) -> np.ndarray:
+    """Mass ``m = I[0, 0]`` of a rigid-body inertia (thesis 1.66, 4.58).
+
+    Only meaningful for the rigid-body form 4.58 (not checked here; it is by
+    :class:`Inertia`); an articulated inertia has no mass.
+
+    Examples
+    --------
+    >>> mass(inertia_matrix(2.0, [1.0, 0.0], 0.5))
+    array(2.)
+    """
+    return np.asarray(_mat(inertia)[..., 0, 0])
+
+
+def _with_mass(inertia, name: str = "inertia") -> np.ndarray:
+    """The inertia array, after checking its mass ``inertia[0, 0] > 0`` (every one of a batch).
+
+    Raises :class:`InputError` naming the argument and the first bad mass,
+    e.g. ``"inertia: mass inertia[0, 0] must be positive, got -1.0"``.
+    """
+    I = _mat(inertia, name)
+    m = I[..., 0, 0]
+    bad = ~(m > 0)
+    if np.any(bad):
+        raise InputError(f"{name}: mass {name}[0, 0] must be positive, got {float(m[bad].ravel()[0])!r}")
+    return I
+
+
+def centre_of_mass(inertia) -> np.ndarray:
+    """Centre of mass ``c = (I[1, 2], -I[0, 2]) / m`` (thesis 1.66, 4.58).
+
+    It is also the centre of the conic: the pole of the line at infinity
+    (thesis 5.2.2), i.e. the point whose axis of percussion is a pure couple.
+
+    Raises :class:`~planargeo.errors.InputError` if the mass ``inertia[0, 0]``
+    is zero or negative (there is no centre of mass to divide out).
+
+    Examples
+    --------
+    >>> centre_of_mass(inertia_matrix(2.0, [1.0, -3.0], 0.5))
+    array([ 1., -3.])
+    >>> centre_of_mass(np.diag([-1.0, -1.0, 1.0]))
+    Traceback (most recent call last):
+        ...
+    planargeo.errors.InputError: inertia: mass inertia[0, 0] must be positive, got -1.0
+    """
+    I = _with_mass(inertia)
+    m = I[..., 0, 0]
+    return np.stack([I[..., 1, 2] / m, (0.0 - I[..., 0, 2]) / m], axis=-1)
+
+
+def rotational_inertia(inertia) -> np.ndarray:
+    """Rotational inertia ``J = m ρ²`` about the centre of mass (parallel axis theorem, thesis 1.68, 4.58).
+
+    Raises :class:`~planargeo.errors.InputError` if the mass ``inertia[0, 0]``
+    is zero or negative.
+
+    Examples
+    --------
+    >>> rotational_inertia(inertia_matrix(2.0, [1.0, -3.0], 0.5))
+    array(0.5)
+    """
+    I = _with_mass(inertia)
+    c = centre_of_mass(I)
+    return np.asarray(I[..., 2, 2] - I[..., 0, 0] * np.einsum("...i,...i->...", c, c))
+
+
+def radius_of_gyration(inertia) -> np.ndarray:
+    """Radius of gyration ``ρ = sqrt(J / m)`` (thesis 4.58, 5.64).
+
+    Raises :class:`~planargeo.errors.InputError` if the mass ``inertia[0, 0]``
+    is zero or negative.
+
+    Examples
+    --------
+    >>> radius_of_gyration(inertia_matrix(2.0, [1.0, 0.0], 0.5))
+    array(0.5)
+    """
+    I = _with_mass(inertia)
+    return np.asarray(np.sqrt(np.maximum(rotational_inertia(I) / I[..., 0, 0], 0.0)))
+
+
+def mobility(inertia) -> np.ndarray:
+    """Mobility ``I⁻¹`` (the dual conic; thesis 8.3.5), computed with ``solve``.
+
+    Raises :class:`~planargeo.errors.SingularInertiaError` for a singular or
+    indefinite inertia (carrying ``.cond``), :class:`~planargeo.errors.InputError` for a
+    non-symmetric one.
+
+    Examples
+    --------
+    >>> mobility(inertia_matrix(2.0, [0.0, 0.0], 0.5))
+    array([[0.5, 0. , 0. ],
+           [0. , 0.5, 0. ],
+           [0. , 0. , 2. ]])
+    """
+    I = _pd(inertia)
+    return _solve(I, np.broadcast_to(np.eye(3), I.shape))
+
+
+def _solve(I: np.ndarray, b: np.ndarray) -> np.ndarray:
+    try:
+        return np.linalg.solve(I, b)
+    except np.linalg.LinAlgError:
+        raise SingularInertiaError("inertia must be invertible", float("inf")) from None
+
+
+# ---------------------------------------------------------------------------
+# Axis of percussion (thesis 5.64-5.68) and the drawable conic (10.2.3)
+# ---------------------------------------------------------------------------
+
+def percussion_axis(inertia, point) -> np.ndarray:
+    """Axis of percussion ``f = I a`` of an acceleration pole ``a`` (thesis 5.64-5.68).
+
+    ``point`` is a homogeneous point (an acceleration twist; ``[y, -x, 1]`` for
+    ``(x, y)``).  The returned line is the force that, applied to the body at
+    rest, accelerates it about ``point``.  For a pole at distance ``d`` from
+    the centre of mass ``c`` the axis is perpendicular to the line ``P c``,
+    on the far side of ``c``, at distance ``r = ρ²/d`` from ``c`` (5.68), i.e.
+    ``l = d + ρ²/d`` from the pole (5.67).  Limits (no special cases in the
+    code): the pole at ``c`` gives the line at infinity (a pure couple); a pole
+    at infinity (a translation) gives a line through ``c``.
+
+    Parameters
+    ----------
+    inertia : array_like (..., 3, 3) or Inertia
+    point : array_like (..., 3) or Point/Twist
+
+    Returns
+    -------
+    ndarray (..., 3)
+        The wrench ``I a`` (not normalised: its size is the force for unit ``α``).
+
+    Raises
+    ------
+    InputError
+        ``inertia`` is not symmetric.
+    SingularInertiaError
+        ``inertia`` is not positive semi-definite (a point mass, ``J = 0``,
+        is accepted: its axes of percussion all pass through the mass).
+
+    Examples
+    --------
+    Thesis 5.64-5.66 with ``m = 2``, ``d = 1``, ``ρ = 1/2``: the line ``x = 1.25``.
+
+    >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.5)
+    >>> percussion_axis(I, [0.0, 0.0, 1.0])
+    array([0. , 2. , 2.5])
+    >>> percussion_axis(np.diag([1.0, 1.0, -1.0]), [0.0, 0.0, 1.0])
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.SingularInertiaError: inertia must be positive semi-definite, got smallest eigenvalue -1 (condition number inf)
+    """
+    I = _psd(inertia)
+    a = _vec(point, "point")
+    return np.einsum("...ij,...j->...i", I, a)
+
+
+def percussion_pole(inertia, line) -> np.ndarray:
+    """Acceleration pole ``a = I⁻¹ f`` whose axis of percussion is ``line`` (inverse of :func:`percussion_axis`).
+
+    A line through the centre of mass gives a pole at infinity (the body
+    translates); the line at infinity (a couple) gives the centre of mass.
+
+    Raises
+    ------
+    InputError
+        ``inertia`` is not symmetric.
+    SingularInertiaError
+        ``inertia`` is not positive definite (e.g. a point mass, or an
+        indefinite matrix); carries ``.cond``.
+
+    Examples
+    --------
+    >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.5)
+    >>> percussion_pole(I, [0.0, 0.0, 1.0])      # a couple spins the body about its centre (1, 0)
+    array([ 0., -1.,  1.])
+    """
+    I = _pd(inertia)
+    f = _vec(line, "line")
+    return _solve(I, f[..., None])[..., 0]
+
+
+def drawable_conic(inertia) -> np.ndarray:
+    """The real conic drawn for an inertia: the radius-of-gyration circle (thesis 10.2.3).
+
+    In the centre-of-mass frame the inertia is ``diag(m, m, m ρ²)``, an
+    imaginary conic.  Flipping the sign of the homogeneous part gives
+    ``diag(m, m, -m ρ²)``: the real circle of radius ``ρ`` about the centre of
+    mass ``c`` (in world coordinates ``X_cᵀ diag(m, m, -m ρ²) X_c``, which is
+    ``I`` with ``2 m ρ²`` subtracted from ``I[2, 2]``).
+
+    Meaning: a point ``P`` at distance ``d`` from ``c`` and its axis of
+    percussion lie on opposite sides of ``c`` with ``d r = ρ²``, while the
+    ordinary polar of ``P`` with respect to the circle lies on the *same* side
+    at the same distance ``ρ²/d``.  So the axis of percussion of ``P`` is the
+    reflection through ``c`` of the polar of ``P`` with respect to this circle
+    (and vice versa).  In matrices: with the point reflection ``R`` through
+    ``c``, ``I ∝ Rᵀ C`` (in the centre frame ``R = diag(-1, -1, 1)`` and
+    ``R C = -I``).
+
+    Returns
+    -------
+    ndarray (..., 3, 3)
+        Symmetric, with signature (2, 1): ``pᵀ C p = m (|x - c|² - ρ²)`` for
+        ``p = [y, -x, 1]``.
+
+    This is :func:`planargeo.geometry.conics.drawable_conic` (which handles any
+    imaginary conic) after checking that ``inertia`` is an inertia (symmetric
+    positive semi-definite; a point mass gives the degenerate circle of
+    radius 0, the inertia itself).
+
+    Examples
+    --------
+    >>> drawable_conic(inertia_matrix(2.0, [0.0, 0.0], 0.5))
+    array([[ 2. ,  0. ,  0. ],
+           [ 0. ,  2. ,  0. ],
+           [ 0. ,  0. , -0.5]])
+    """
+    from planargeo.geometry.conics import drawable_conic as _drawable_conic
+
+    return _drawable_conic(_psd(inertia))
+
+
+# ---------------------------------------------------------------------------
+# Polygon moments
+# ---------------------------------------------------------------------------
+
+def polygon_moments(geometry, name: str = "geometry"):
+    """Area, centroid and polar second moment about the centroid of a shapely area.
+
+    Uses Green's theorem on each ring (exterior counter-clockwise, holes
+    clockwise after ``shapely.geometry.polygon.orient``), so holes and
+    (disjoint) unions of a ``MultiPolygon`` work.  Coordinates are shifted to
+    the centre of the bounding box first for accuracy.
+
+    Returns
+    -------
+    area : float
+    centroid : ndarray (2,)
+    polar_moment : float
+        ``∫ |x - c|² dA`` (per unit density).
+
+    Raises
+    ------
+    InvalidPolygonError
+        Not a Polygon/MultiPolygon, empty, invalid (with shapely's
+        ``explain_validity`` reason) or of zero area.
+
+    Examples
+    --------
+    >>> from shapely.geometry import box
+    >>> A, c, J = polygon_moments(box(0.0, 0.0, 2.0, 1.0))     # b h (b² + h²) / 12
+    >>> float(A), c, float(J)
+    (2.0, array([1. , 0.5]), 0.833333)
+    """
+    try:
+        from shapely.geometry import MultiPolygon, Polygon
+        from shapely.geometry.polygon import orient
+        from shapely.validation import explain_validity
+    except ImportError as exc:  # pragma: no cover - shapely is a dependency
+        raise InputError("shapely is required for polygon inertias") from exc
+    if not isinstance(geometry, (Polygon, MultiPolygon)):
+        raise InvalidPolygonError(
+            f"{name} must be a shapely Polygon or MultiPolygon, got {type(geometry).__name__}")
+    if geometry.is_empty:
+        raise InvalidPolygonError(f"{name} must be non-empty, got an empty {type(geometry).__name__}")
+    if not geometry.is_valid:
+        raise InvalidPolygonError(f"{name} must be a valid polygon: {explain_validity(geometry)}")
+    parts = list(geometry.geoms) if isinstance(geometry, MultiPolygon) else [geometry]
+    x0, y0, x1, y1 = geometry.bounds
+    o = np.array([0.5 * (x0 + x1), 0.5 * (y0 + y1)])
+    if not np.all(np.isfinite([x0, y0, x1, y1])):
+        raise InvalidPolygonError(f"{name} must have finite coordinates")
+    A = Sx = Sy = Ixx = Iyy = 0.0
+    for part in parts:
+        part = orient(part, 1.0)
+        for ring in [part.exterior, *part.interiors]:
+            xy = np.asarray(ring.coords, dtype=float)[:, :2] - o
+            x, y = xy[:-1, 0], xy[:-1, 1]
+            xn, yn = xy[1:, 0], xy[1:, 1]
+            cr = x * yn - xn * y
+            A += cr.sum() / 2.0
+            Sx += ((x + xn) * cr).sum() / 6.0
+            Sy += ((y + yn) * cr).sum() / 6.0
+            Iyy += ((x * x + x * xn + xn * xn) * cr).sum() / 12.0
+            Ixx += ((y * y + y * yn + yn * yn) * cr).sum() / 12.0
+    if not A > 0:
+        raise InvalidPolygonError(f"{name} must have positive area, got {A!r}")
+    cl = np.array([Sx / A, Sy / A])
+    J = Ixx + Iyy - A * float(cl @ cl)
+    return float(A), cl + o, float(J)
+
+
+# ---------------------------------------------------------------------------
+# The class
+# ---------------------------------------------------------------------------
+
+class Inertia:
+    """A planar rigid-body inertia at the origin (thesis 1.66, 4.58, 5.64): an imaginary conic.
+
+    Wraps one symmetric positive definite ``(..., 3, 3)`` array ``.matrix``
+    (read-only) with the structure of a rigid body (4.58)::
+
+        [[ m,     0,    -m cy       ],
+         [ 0,     m,     m cx       ],
+         [-m cy,  m cx,  J + m |c|² ]]
+
+    so that :attr:`mass`, :attr:`com`, :attr:`rotational_inertia` and
+    :attr:`radius_of_gyration` are meaningful.  Construct with
+    :meth:`from_mass`, :meth:`from_polygon`, :meth:`composite` (or ``+``), or
+    from a matrix.  Articulated inertias (chapters 6-7: any symmetric positive
+    semi-definite matrix, e.g. ``diag(1, 2, 1)``) have no mass or centre of
+    mass; they stay plain arrays, which every function of
+    :mod:`planargeo.screws.inertia`, :mod:`planargeo.screws.twists` and
+    :mod:`planargeo.mechanics.subspaces` accepts.
+
+    Raises
+    ------
+    InputError
+        Non-symmetric matrix, non-positive mass ``matrix[0, 0]``, no rigid-body
+        structure (``matrix[0, 0] != matrix[1, 1]`` or ``matrix[0, 1] != 0``
+        beyond ``1e-10 max|matrix|``); the message names ``matrix``.  Wrong
+        shape / non-finite values (``ShapeError`` / ``NonFiniteError``).
+    SingularInertiaError
+        Not positive definite (carries ``.cond``).
+
+    Examples
+    --------
+    >>> I = Inertia.from_mass(2.0, [1.0, 0.0], radius_of_gyration=0.5)
+    >>> I
+    Inertia(mass=2, com=(1, 0), radius_of_gyration=0.5)
+    >>> I.percussion_axis_array([0.0, 0.0, 1.0])    # thesis 5.66: the line x = 1 + 0.25
+    array([0. , 2. , 2.5])
+    >>> float(I.kinetic_energy([0.0, 0.0, 2.0]))      # ½ (J + m d²) ω²
+    5.0
+    """
+
+    __slots__ = ("_matrix",)
+
+    def __init__(self, matrix):
+        if isinstance(matrix, Inertia):
+            matrix = matrix.matrix
+        M = np.array(as_mat3(matrix, "matrix"), dtype=float)
+        if np.any(M[..., 0, 0] <= 0):
+            bad = M[..., 0, 0][M[..., 0, 0] <= 0].ravel()[0]
+            raise InputError(f"matrix must have a positive mass matrix[0, 0], got {float(bad)!r}")
+        check_positive_definite(M, "matrix")
+        _check_rigid(M, "matrix")
+        M.flags.writeable = False
+        self._matrix = M
+
+    # -- constructors ---------------------------------------------------
+    @classmethod
+    def from_mass(cls, mass, com, radius_of_gyration=None, inertia=None) -> "Inertia":
+        """Inertia of mass ``mass`` centred at ``com`` (thesis 4.58, 5.64).
+
+        Give exactly one of ``radius_of_gyration`` (``ρ > 0``) or ``inertia``
+        (``J > 0`` about the centre of mass; ``J = m ρ²``).
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).matrix
+        array([[2. , 0. , 0. ],
+               [0. , 2. , 0. ],
+               [0. , 0. , 0.5]])
+        """
+        m = _positive(mass, "mass")
+        c = as_xy(com, "com")
+        if (radius_of_gyration is None) == (inertia is None):
+            raise InputError("give exactly one of radius_of_gyration or inertia")
+        if inertia is None:
+            rho = _positive(radius_of_gyration, "radius_of_gyration")
+            J = m * rho * rho
+        else:
+            J = _positive(inertia, "inertia")
+        return cls(inertia_matrix(m, c, J))
+
+    @classmethod
+    def from_polygon(cls, geometry, density=1.0) -> "Inertia":
+        """Inertia of a uniform lamina (shapely ``Polygon`` / ``MultiPolygon``).
+
+        Mass ``density × area``, centre the centroid, rotational inertia
+        ``density × ∫|x - c|² dA``; holes and disjoint unions work (see
+        :func:`polygon_moments`).
+
+        Examples
+        --------
+        >>> from shapely.geometry import box
+        >>> I = Inertia.from_polygon(box(-1.0, -0.5, 1.0, 0.5), density=3.0)
+        >>> float(I.mass), float(I.rotational_inertia)        # m (b² + h²)/12 = 6 · 5/48
+        (6.0, 2.5)
+        """
+        rho_d = as_scalar(density, "density")
+        if not rho_d > 0:
+            raise InputError(f"density must be positive, got {rho_d!r}")
+        A, c, J = polygon_moments(geometry, "geometry")
+        if not J > 0:
+            raise InvalidPolygonError(f"geometry must have a positive polar moment, got {J!r}")
+        return cls(inertia_matrix(rho_d * A, c, rho_d * J))
+
+    @classmethod
+    def composite(cls, parts) -> "Inertia":
+        """Inertia of rigidly joined parts: the sum of their matrices (thesis 1.65 is linear).
+
+        Examples
+        --------
+        >>> a = Inertia.from_mass(1.0, [-1.0, 0.0], inertia=0.1)
+        >>> b = Inertia.from_mass(1.0, [1.0, 0.0], inertia=0.1)
+        >>> float(Inertia.composite([a, b]).rotational_inertia)   # 0.2 + 2 · 1²
+        2.2
+        """
+        parts = list(parts)
+        if not parts:
+            raise InputError("parts must contain at least one inertia")
+        total = sum(_mat(p, f"parts[{i}]") for i, p in enumerate(parts))
+        return cls(total)
+
+    # -- data ------------------------------------------------------------
+    @property
+    def matrix(self) -> np.ndarray:
+        """The ``(..., 3, 3)`` matrix at the origin (read-only)."""
+        return self._matrix
+
+    @property
+    def mass(self) -> np.ndarray:
+        """Mass ``m = matrix[0, 0]`` (thesis 1.66, 4.58); an array of the batch shape.
+
+        Examples
+        --------
+        >>> float(Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).mass)
+        2.0
+        """
+        return mass(self._matrix)
+
+    @property
+    def com(self) -> np.ndarray:
+        """Centre of mass ``(x, y)``."""
+        return centre_of_mass(self._matrix)
+
+    @property
+    def rotational_inertia(self) -> np.ndarray:
+        """``J`` about the centre of mass."""
+        return rotational_inertia(self._matrix)
+
+    @property
+    def radius_of_gyration(self) -> np.ndarray:
+        """Radius of gyration ``ρ = sqrt(J / m)`` about the centre of mass (thesis 4.58, 5.64).
+
+        Examples
+        --------
+        >>> float(Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).radius_of_gyration)
+        0.5
+        """
+        return radius_of_gyration(self._matrix)
+
+    @property
+    def mobility(self) -> np.ndarray:
+        """Inverse inertia ``I⁻¹`` (via ``solve``).
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).mobility.diagonal()
+        array([0.5, 0.5, 2. ])
+        """
+        return mobility(self._matrix)
+
+    def __array__(self, dtype=None, copy=None):
+        return np.asarray(self._matrix, dtype=dtype)
+
+    def __repr__(self) -> str:
+        if self._matrix.ndim == 2:
+            c = self.com
+            return (f"Inertia(mass={float(self.mass):.6g}, com=({c[0]:.6g}, {c[1]:.6g}), "
+                    f"radius_of_gyration={float(self.radius_of_gyration):.6g})")
+        return f"Inertia(batch of shape {self._matrix.shape[:-2]})"
+
+    def __add__(self, other):
+        if not isinstance(other, Inertia):
+            return NotImplemented
+        return Inertia(self._matrix + other._matrix)
+
+    def __eq__(self, other):
+        if not isinstance(other, Inertia):
+            return NotImplemented
+        return bool(np.array_equal(self._matrix, other._matrix))
+
+    __hash__ = None
+
+    # -- operations ------------------------------------------------------
+    def at(self, point) -> "Inertia":
+        """The same body expressed at ``point`` (thesis 1.68: ``X_P⁻ᵀ I X_P⁻¹``).
+
+        The result's ``com`` is then relative to ``point``.
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).at([1.0, 0.0])
+        Inertia(mass=2, com=(0, 0), radius_of_gyration=0.5)
+        """
+        return Inertia(_congruence(X_P_inv_T(point), self._matrix))
+
+    def rotated(self, theta, about=(0.0, 0.0)) -> "Inertia":
+        """The body turned by ``theta`` about ``about`` (thesis 1.68; :func:`planargeo.screws.inertia_rotated`).
+
+        The active rotation, like :meth:`planargeo.screws.Twist.rotated`:
+        ``m`` and ``J`` are unchanged and the centre of mass turns about
+        ``about``; twists and wrenches turned the same way keep their kinetic
+        energy, momentum and power.  (:meth:`at` changes the reference point
+        instead; :func:`planargeo.screws.inertia_transform` is the passive
+        change to a translated and rotated frame.)
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [2.0, 0.0], inertia=0.5).rotated(np.pi / 2, about=[1.0, 0.0])
+        Inertia(mass=2, com=(1, 1), radius_of_gyration=0.5)
+        """
+        return Inertia(_inertia_rotated(self._matrix, theta, about))
+
+    def kinetic_energy(self, twist) -> np.ndarray:
+        """``½ vᵀ I v`` (thesis 1.9).
+
+        Examples
+        --------
+        >>> float(Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).kinetic_energy([1.0, 0.0, 0.0]))   # ½ m u²
+        1.0
+        """
+        return _kinetic_energy(self._matrix, as_vec3(getattr(twist, "array", twist), "twist"))
+
+    def momentum(self, twist) -> np.ndarray:
+        """Momentum wrench ``I v`` (thesis 5.72).
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [0.0, 1.0], inertia=0.5).momentum([1.0, 0.0, 0.0])   # m u along y = 1
+        array([ 2.,  0., -2.])
+        """
+        return np.einsum("...ij,...j->...i", self._matrix, as_vec3(getattr(twist, "array", twist), "twist"))
+
+    def percussion_axis_array(self, point) -> np.ndarray:
+        """:func:`percussion_axis` as an array.
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_axis_array([0.0, 0.0, 1.0])
+        array([0. , 2. , 2.5])
+        """
+        return percussion_axis(self._matrix, point)
+
+    def percussion_axis(self, point):
+        """Axis of percussion of ``point`` as a :class:`planargeo.geometry.Line` (thesis 5.67).
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_axis([0.0, 0.0, 1.0]).array   # x = 1.25
+        array([0. , 2. , 2.5])
+        """
+        from planargeo.geometry.elements import Line
+        return Line(percussion_axis(self._matrix, point))
+
+    def percussion_pole_array(self, line) -> np.ndarray:
+        """:func:`percussion_pole` as an array.
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_pole_array([0.0, 2.0, 2.5])
+        array([0., 0., 1.])
+        """
+        return percussion_pole(self._matrix, line)
+
+    def percussion_pole(self, line):
+        """Pole whose axis of percussion is ``line``, as a :class:`planargeo.geometry.Point`.
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_pole([0.0, 0.0, 1.0])   # a couple: the centre
+        Point(x=1, y=0)
+        """
+        from planargeo.geometry.elements import Point
+        return Point(percussion_pole(self._matrix, line))
+
+    def drawable_conic_matrix(self) -> np.ndarray:
+        """:func:`drawable_conic` as an array.
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).drawable_conic_matrix()
+        array([[ 2. ,  0. ,  0. ],
+               [ 0. ,  2. ,  0. ],
+               [ 0. ,  0. , -0.5]])
+        """
+        return drawable_conic(self._matrix)
+
+    def drawable_conic(self):
+        """The radius-of-gyration circle as a :class:`planargeo.geometry.Conic` (thesis 10.2.3).
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).drawable_conic().matrix[2, 2]   # -m ρ²
+        np.float64(-0.5)
+        """
+        from planargeo.geometry.elements import Conic
+        return Conic(drawable_conic(self._matrix))
+
+    def conic(self):
+        """The inertia itself as a (imaginary) :class:`planargeo.geometry.Conic` (thesis 5.4).
+
+        Examples
+        --------
+        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).conic().matrix[2, 2]
+        np.float64(0.5)
+        """
+        from planargeo.geometry.elements import Conic
+        return Conic(self._matrix)

@@ -1,0 +1,486 @@
+"""Time integration of a mechanism's equations of motion.
+
+:func:`simulate` integrates ``q̈ = forward(model, q, q̇, τ, f_ext)`` with one
+of scipy's adaptive integrators (explicit Runge-Kutta ``"RK23"``,
+``"RK45"``, ``"DOP853"``; implicit ``"Radau"``, ``"BDF"``; ``"LSODA"``,
+which switches between Adams and BDF by stiffness), stepped one accepted
+step at a time, or with a fixed-step classical Runge-Kutta (``"RK4"``).
+Every accepted step is recorded with its diagnostics: total energy (kinetic
+``½ Σ vᵢᵀ Iᵢ vᵢ`` plus gravitational potential) and, when a constraint is
+plugged in, its residuals.
+
+Hooks (for closed loops and other constrained systems):
+
+``forward(model, q, qd, tau, f_ext) -> qdd``
+    The forward dynamics (default: :func:`planargeo.algorithms.aba.forward_dynamics`).
+``stabilize(t, q, qd, qdd) -> qdd``
+    Correct the accelerations, e.g. Baumgarte terms ``-2α φ̇ - β² φ``.
+``project(q, qd) -> (q, qd)``
+    Pull the state back onto the constraint manifold after each accepted step
+    (the adaptive integrator restarts from the projected state when it moved;
+    the multistep ``"BDF"`` and ``"LSODA"`` restart at order 1 with a small
+    step, so a projection that fires at every step keeps them slow).
+``residual(q, qd) -> array``
+    Constraint residuals recorded at every step.
+``energy(q, qd) -> float``
+    Replace the default energy.
+
+``condition(q, qd) -> float``
+    A condition number watched at every recorded step (``"joints"``: the
+    joints' ``sᵀAs`` by the rule of :data:`planargeo.mechanics.subspaces.COND_LIMIT`, measured at each
+    joint's point, :func:`planargeo.algorithms.stacked.joint_conditions`;
+    closed loops watch ``BᵀGΛ⁻¹GᵀB``, :func:`planargeo.simulate.loops.simulate_loops`).
+
+Singular configurations are events, recorded as data in ``result.events``
+(a list of dicts, in time order):
+
+* ``{"kind": "near-singular", "t", "cond", "t_start", "t_end"}`` for every
+  excursion of the watched condition number above ``cond_event``: ``t`` and
+  ``cond`` at the recorded step where it peaked, ``t_start``/``t_end`` the
+  first and last recorded steps above the threshold (the series itself is
+  ``result.cond``);
+* ``{"kind": "singular", "t", "cond", "message"}`` when the dynamics raise a
+  :class:`~planargeo.errors.SingularConfigurationError` (the algorithms refuse
+  condition numbers above their limit, e.g. ``sᵀAs`` above 1e12 or the contact
+  matrix above 1e10): ``t`` is the time of the failing evaluation and ``cond``
+  the error's.  The integration then stops cleanly: the result holds the
+  trajectory up to the last good step, ``status == "singular"`` and a ``message``.
+
+Examples
+--------
+>>> from planargeo.mechanics.model import chain_model
+>>> r = simulate(chain_model(1), [0.0], [0.0], 1.0, method="RK4", dt=1e-3)
+>>> r.status, float(r.t[-1]), bool(r.energy_drift() < 1e-9)
+('ok', 1.0, True)
+"""
+from __future__ import annotations
+
+import math
+import sys
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+import numpy as np
+
+from planargeo._validate import as_array, as_scalar
+from planargeo.errors import InputError, SingularConfigurationError
+from planargeo.mechanics.kinematics import check_state, kinematics
+from planargeo.mechanics.model import Model
+
+__all__ = ["simulate", "SimulationResult", "energy", "progress_enabled", "near_singular_events", "METHODS",
+           "MULTISTEP"]
+
+METHODS = ("RK23", "RK45", "DOP853", "Radau", "BDF", "LSODA", "RK4")
+
+
+#: The multistep methods: a restart (after a projection that moved the state) begins again at
+#: order 1 with a small step, so projecting after every step keeps them there (docs/simulation.md).
+MULTISTEP = ("BDF", "LSODA")
+
+
+def energy(model: Model, q, qd) -> tuple[np.ndarray, np.ndarray]:
+    """Kinetic and gravitational potential energy ``(T, V)`` (broadcast over ``q``).
+
+    ``T = ½ Σ vᵢᵀ Iᵢ vᵢ`` (thesis 1.9), ``V = -Σ mᵢ g · cᵢ``.
+
+    Examples
+    --------
+    >>> from planargeo.mechanics.model import chain_model
+    >>> T, V = energy(chain_model(1), [np.pi / 2], [3.0])   # rod upright, spinning at 3 rad/s
+    >>> float(T), float(V)                                  # ½ (1/3) 9, m g L/2
+    (1.5, 4.905)
+    """
+    d = kinematics(model, q, qd)
+    T = 0.5 * np.einsum("...ni,...nij,...nj->...", d.v, d.I, d.v)
+    m = model.arrays()["mass"]
+    V = -np.einsum("n,...nk,k->...", m, d.com, np.asarray(model.gravity))
+    return T, V
+
+
+@dataclass
+class SimulationResult:
+    """A trajectory and its diagnostics.
+
+    Attributes
+    ----------
+    t : ndarray (T,)
+    q, qd : ndarray (T, nq)
+    kinetic, potential, energy : ndarray (T,)
+    residual : ndarray (T, m) or None
+        Constraint residuals (when a ``residual`` hook was given).
+    cond : ndarray (T,) or None
+        The watched condition number per recorded step (when ``condition`` was given).
+    events : list of dict
+        Singular and near-singular events (module docstring).
+    status : str
+        ``"ok"``, ``"singular"`` (a singular configuration stopped the run) or
+        ``"failed"`` (the integrator gave up).
+    message : str
+    method : str
+    nfev : int
+        Number of dynamics evaluations.
+    """
+
+    t: np.ndarray
+    q: np.ndarray
+    qd: np.ndarray
+    kinetic: np.ndarray
+    potential: np.ndarray
+    energy: np.ndarray
+    residual: np.ndarray | None = None
+    status: str = "ok"
+    message: str = ""
+    method: str = ""
+    nfev: int = 0
+    extra: dict[str, Any] = field(default_factory=dict)
+    cond: np.ndarray | None = None
+    events: list = field(default_factory=list)
+
+    @property
+    def success(self) -> bool:
+        return self.status == "ok"
+
+    def energy_drift(self) -> float:
+        """``max |E(t) - E(0)| / max(|E(0)|, max T(t))``: relative drift of the total energy.
+
+        The kinetic energy in the denominator keeps the measure meaningful when
+        the total energy happens to be near zero.
+        """
+        scale = max(abs(float(self.energy[0])), float(np.max(self.kinetic)), np.finfo(float).tiny)
+        return float(np.max(np.abs(self.energy - self.energy[0])) / scale)
+
+
+def _in_ipython_kernel() -> bool:
+    """True inside a Jupyter/IPython kernel (notebook, JupyterLab, Colab), without importing IPython."""
+    ipython = sys.modules.get("IPython")
+    if ipython is None:
+        return False
+    try:
+        shell = ipython.get_ipython()
+    except Exception:  # pragma: no cover - a broken IPython
+        return False
+    if shell is None:
+        return False
+    if any(cls.__name__ == "ZMQInteractiveShell" for cls in type(shell).__mro__):
+        return True
+    try:
+        return "IPKernelApp" in shell.config
+    except Exception:  # pragma: no cover
+        return False
+
+
+def progress_enabled(progress: bool | None = None, stream=None) -> bool:
+    """Whether :func:`simulate` shows a progress bar.
+
+    ``True``/``False`` are obeyed; ``None`` (auto) shows it when ``stream``
+    (default ``sys.stderr``) is a terminal or when running inside a
+    Jupyter/IPython kernel, where stderr is not a terminal but the bar
+    (``tqdm.auto``: a notebook widget when ipywidgets is installed, text
+    otherwise) is still seen.
+
+    Examples
+    --------
+    >>> import io
+    >>> progress_enabled(True), progress_enabled(False), progress_enabled(None, io.StringIO())
+    (True, False, False)
+    """
+    if progress is not None:
+        return bool(progress)
+    stream = sys.stderr if stream is None else stream
+    try:
+        if stream is not None and stream.isatty():
+            return True
+    except Exception:  # closed or odd streams
+        pass
+    return _in_ipython_kernel()
+
+
+def _progress(enabled, total):
+    if not progress_enabled(enabled):
+        return None
+    try:
+        from tqdm.auto import tqdm
+    except ImportError:  # pragma: no cover
+        return None
+    return tqdm(total=total, unit="s", leave=False, bar_format="{l_bar}{bar}| {n:.3g}/{total:.3g} s")
+
+
+def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str = "DOP853",
+             rtol: float = 1e-8, atol: float = 1e-10, dt: float | None = None, max_step: float = math.inf,
+             forward: Callable | None = None, stabilize: Callable | None = None,
+             project: Callable | None = None, residual: Callable | None = None,
+             energy_fn: Callable | None = None, condition: Callable | str | None = None,
+             cond_event: float = 1e6, progress: bool | None = None) -> SimulationResult:
+    """Integrate ``q̈ = forward(q, q̇, τ)`` from ``(q0, qd0)`` over ``[0, t_end]`` (thesis 3.41-3.42, 2.9 in time).
+
+    The state ``y = (q, q̇)`` obeys ``ẏ = (q̇, q̈)`` with ``q̈`` from the
+    forward dynamics (default the articulated-body algorithm of 3.6,
+    3.31-3.42); the thesis leaves the integration itself to the reader ("the
+    joint accelerations ... can be integrated", 3.6; MATLAB ``ode45`` in its
+    appendix), which here is one of scipy's adaptive methods or fixed-step RK4.
+
+    Parameters
+    ----------
+    model : Model
+    q0, qd0 : array_like (nq,)
+    t_end : float
+        Final time (> 0).
+    tau : array_like (nq,) or callable ``tau(t, q, qd)``, optional
+        Joint forces (zero by default: a free, conservative mechanism).
+    f_ext : array_like (N, 3) or callable ``f_ext(t, q, qd)``, optional
+        External world wrenches at the origin.
+    method : {"DOP853", "RK23", "RK45", "Radau", "BDF", "LSODA", "RK4"}
+        scipy's adaptive solvers (``scipy.integrate.<method>``, stepped one
+        accepted step at a time; ``Radau``, ``BDF`` and ``LSODA`` estimate
+        their Jacobian by finite differences, counted in ``nfev``) or
+        fixed-step classical RK4 (:data:`METHODS`).  Every method records
+        the same diagnostics at every accepted step (or output time).
+    rtol, atol : float
+        Tolerances of the adaptive methods.
+    dt : float, optional
+        Step of ``"RK4"`` (required there); for the adaptive methods, if given,
+        the output is sampled every ``dt`` (dense output) instead of at every
+        accepted step.
+    max_step : float
+        Largest step of the adaptive methods.
+    forward, stabilize, project, residual, energy_fn : callables, optional
+        Hooks, see the module docstring.
+    condition : callable ``(q, qd) -> float``, ``"joints"`` or None
+        Condition number to watch at every recorded step (``"joints"``: the
+        largest of the joints' ``sᵀAs``, for trees and chains); ``None``: only
+        the singular stops are recorded.
+    cond_event : float
+        A watched condition number above this opens a ``"near-singular"`` event.
+    progress : bool or None
+        Show a tqdm progress bar (``tqdm.auto``); ``None`` (default) decides
+        automatically: on when stderr is a terminal or inside a Jupyter/IPython
+        kernel (:func:`progress_enabled`).
+
+    Returns
+    -------
+    SimulationResult
+        ``status`` is ``"ok"``, ``"singular"`` (stopped cleanly at a singular
+        configuration) or ``"failed"``; ``events`` the (near-)singular events.
+
+    Raises
+    ------
+    InputError
+        Unknown ``method``, ``t_end`` or ``dt`` not positive, a batch of
+        states, ``"RK4"`` without ``dt``.
+
+    Examples
+    --------
+    A free unit rod released horizontally swings down; energy is kept
+    (``T + V`` with ``V = m g y_c``) and after a small time ``q ≈ -½ (1.5 g) t²``:
+
+    >>> from planargeo.mechanics.model import chain_model
+    >>> r = simulate(chain_model(1), [0.0], [0.0], 0.01, method="DOP853", rtol=1e-12, atol=1e-14)
+    >>> r.status, round(float(r.q[-1, 0]) / (-0.5 * 14.715 * 0.01 ** 2), 4)
+    ('ok', 1.0)
+    >>> bool(r.energy_drift() < 1e-10)
+    True
+
+    Driven by a torque that holds it (``τ = m g L cos q / 2``), it stays put:
+
+    >>> hold = lambda t, q, qd: 4.905 * np.cos(q)
+    >>> r = simulate(chain_model(1), [0.3], [0.0], 0.5, tau=hold, method="RK4", dt=0.01)
+    >>> bool(np.abs(r.q[:, 0] - 0.3).max() < 1e-12), len(r.t)
+    (True, 51)
+    """
+    if method not in METHODS:
+        raise InputError(f"method must be one of {list(METHODS)}, got {method!r}")
+    q0, qd0, _, _, _, shape = check_state(model, q0, qd0)
+    if shape != ():
+        raise InputError(f"q0 and qd0 must be single states of shape ({model.nq},), got batch shape {shape}")
+    t_end = as_scalar(t_end, "t_end")
+    if not t_end > 0:
+        raise InputError(f"t_end must be positive, got {t_end!r}")
+    if dt is not None:
+        dt = as_scalar(dt, "dt")
+        if not dt > 0:
+            raise InputError(f"dt must be positive, got {dt!r}")
+    elif method == "RK4":
+        raise InputError("dt must be given for method 'RK4'")
+    if forward is None:
+        from planargeo.algorithms.aba import forward_dynamics as forward
+    nq = model.nq
+    tau_c = None if callable(tau) else (np.zeros(nq) if tau is None else as_array(tau, "tau", (nq,)))
+    fext_c = None if callable(f_ext) else (None if f_ext is None else as_array(f_ext, "f_ext", (model.N, 3)))
+    if condition == "joints":
+        from planargeo.algorithms.stacked import joint_conditions
+
+        def condition(q, qd):
+            return float(np.max(joint_conditions(model, q), initial=1.0))
+    elif condition is not None and not callable(condition):
+        raise InputError(f"condition must be a callable, 'joints' or None, got {condition!r}")
+    cond_event = as_scalar(cond_event, "cond_event")
+    nfev = 0
+
+    def qdd_of(t, q, qd):
+        nonlocal nfev
+        nfev += 1
+        ta = tau(t, q, qd) if tau_c is None else tau_c
+        fe = f_ext(t, q, qd) if callable(f_ext) else fext_c
+        try:
+            a = forward(model, q, qd, ta, fe)
+        except SingularConfigurationError as exc:
+            exc.t = float(t)                     # when it happened (a stage may lie past the last step)
+            raise
+        if stabilize is not None:
+            a = stabilize(t, q, qd, a)
+        return a
+
+    def rhs(t, y):
+        return np.concatenate([y[nq:], qdd_of(t, y[:nq], y[nq:])])
+
+    if energy_fn is None:
+        def energy_fn(q, qd):
+            T, V = energy(model, q, qd)
+            return float(T), float(V)
+
+    ts, ys = [], []
+
+    cs = []
+
+    def watch(y):
+        # at record time: a hook may reuse the value of the dynamics evaluation at this very state
+        return float(condition(y[:nq], y[nq:])) if condition is not None else math.nan
+
+    def record(t, y):
+        y = np.array(y, dtype=float)
+        c = watch(y)
+        ts.append(float(t))
+        ys.append(y)
+        cs.append(c)
+
+    y = np.concatenate([q0, qd0]).astype(float)
+    if project is not None:
+        qp, qdp = project(y[:nq], y[nq:])
+        y = np.concatenate([qp, qdp])
+    record(0.0, y)
+    status, message, singular = "ok", "", None
+    bar = _progress(progress, t_end)
+    t = 0.0
+    try:
+        if method == "RK4":
+            nsteps = max(1, int(math.ceil(t_end / dt - 1e-9)))
+            h = t_end / nsteps
+            for k in range(nsteps):
+                k1 = rhs(t, y)
+                k2 = rhs(t + h / 2, y + h / 2 * k1)
+                k3 = rhs(t + h / 2, y + h / 2 * k2)
+                k4 = rhs(t + h, y + h * k3)
+                y = y + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+                t = (k + 1) * h
+                if project is not None:
+                    qp, qdp = project(y[:nq], y[nq:])
+                    y = np.concatenate([qp, qdp])
+                record(t, y)
+                if bar is not None:
+                    bar.update(h)
+        else:
+            from scipy import integrate
+
+            cls = getattr(integrate, method)   # scipy's OdeSolver class of that name ("RK4" is stepped above)
+
+            def make(t0, y0, first_step=None):
+                return cls(rhs, t0, y0, t_end, rtol=rtol, atol=atol, max_step=max_step, first_step=first_step)
+
+            solver = make(0.0, y)
+            grid = []
+            if dt is not None:
+                nout = int(math.floor(t_end / dt + 1e-9))
+                grid = [k * dt for k in range(1, nout + 1)]
+                if not grid or grid[-1] < t_end * (1 - 1e-12):
+                    grid.append(t_end)
+                grid[-1] = min(grid[-1], t_end)
+            gi = 0
+            while solver.status == "running":
+                msg = solver.step()
+                if solver.status == "failed":
+                    status, message = "failed", f"{method} failed at t = {solver.t:.6g}: {msg}"
+                    break
+                t_new = solver.t
+                if dt is not None:
+                    dense = solver.dense_output()
+                    while gi < len(grid) and (grid[gi] <= t_new or solver.status == "finished"):
+                        yo = dense(grid[gi])
+                        if project is not None:  # outputs between projections, pulled back too
+                            yo = np.concatenate(project(yo[:nq], yo[nq:]))
+                        record(grid[gi], yo)
+                        gi += 1
+                else:
+                    record(t_new, solver.y)
+                if bar is not None:
+                    bar.update(t_new - t)
+                t = t_new
+                if project is not None:
+                    qp, qdp = project(solver.y[:nq], solver.y[nq:])
+                    yp = np.concatenate([qp, qdp])
+                    if dt is None:
+                        if not np.array_equal(yp, ys[-1]):
+                            cs[-1] = watch(yp)
+                        ys[-1] = yp
+                    if solver.status == "running" and not np.array_equal(yp, solver.y):
+                        h = min(solver.step_size or (t_end - t), t_end - t)
+                        solver = make(t, yp, first_step=h if h > 0 else None)
+    except SingularConfigurationError as exc:
+        status = "singular"
+        message = f"stopped at t = {t:.6g}: singular configuration: {exc}"
+        singular = {"kind": "singular", "t": getattr(exc, "t", t), "cond": exc.cond, "message": str(exc)}
+    finally:
+        if bar is not None:
+            bar.close()
+
+    Y = np.array(ys)
+    qs, qds = Y[:, :nq], Y[:, nq:]
+    Ts, Vs = np.empty(len(ts)), np.empty(len(ts))
+    for k in range(len(ts)):
+        Ts[k], Vs[k] = energy_fn(qs[k], qds[k])
+    res = None
+    if residual is not None:
+        res = np.array([np.atleast_1d(np.asarray(residual(qs[k], qds[k]), dtype=float)) for k in range(len(ts))])
+    tt = np.array(ts)
+    conds = None
+    events = []
+    if condition is not None:
+        conds = np.array(cs)
+        events = near_singular_events(tt, conds, cond_event)
+    if singular is not None:
+        events.append(singular)
+    return SimulationResult(t=tt, q=qs, qd=qds, kinetic=Ts, potential=Vs, energy=Ts + Vs,
+                            residual=res, status=status, message=message, method=method, nfev=nfev,
+                            cond=conds, events=events)
+
+
+def near_singular_events(t, cond, threshold: float) -> list[dict]:
+    """``"near-singular"`` events of a condition-number series: one per excursion above ``threshold``.
+
+    Each is ``{"kind", "t", "cond", "t_start", "t_end"}`` with the peak's time
+    and value and the first/last times above the threshold (``nan`` counts as
+    above: a condition number that could not be computed).
+
+    Examples
+    --------
+    >>> ev = near_singular_events([0, 1, 2, 3, 4, 5], [1, 1e7, 1e9, 1e8, 1, 1e7], 1e6)
+    >>> [(e["t"], e["cond"], e["t_start"], e["t_end"]) for e in ev]
+    [(2.0, 1000000000.0, 1.0, 3.0), (5.0, 10000000.0, 5.0, 5.0)]
+    """
+    t = np.asarray(t, dtype=float)
+    c = np.asarray(cond, dtype=float)
+    above = ~(c <= threshold)
+    out = []
+    k, n = 0, len(c)
+    while k < n:
+        if not above[k]:
+            k += 1
+            continue
+        e = k
+        while e + 1 < n and above[e + 1]:
+            e += 1
+        seg = np.where(np.isnan(c[k:e + 1]), np.inf, c[k:e + 1])
+        p = k + int(np.argmax(seg))
+        out.append({"kind": "near-singular", "t": float(t[p]), "cond": float(c[p]),
+                    "t_start": float(t[k]), "t_end": float(t[e])})
+        k = e + 1
+    return out
