@@ -117,3 +117,10 @@ class CyclicTopologyError(TopologyError):
         super().__init__(f"{message} (condition number of 1 - C: {cond:.3g})")
         self.cond = float(cond)
         self.cycle = tuple(int(i) for i in cycle)
+
+
+class OutputError(PlanargeoError, OSError):
+    """A file or folder could not be written (the message names the path and the cause).
+
+    Whatever was there before is left as it was (writes are atomic: see :mod:`planargeo.files`).
+    """

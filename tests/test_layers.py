@@ -22,7 +22,7 @@ import planargeo
 PKG = Path(planargeo.__file__).parent
 
 LAYERS = [
-    {"planargeo.errors", "planargeo._validate"},
+    {"planargeo.errors", "planargeo._validate", "planargeo.files"},
     {"planargeo.geometry"},
     {"planargeo.screws"},
     {"planargeo.mechanics"},
