@@ -1,0 +1,30 @@
+"""``docs/equations.md`` maps every cited thesis equation to the code, and is current."""
+import importlib.util
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+_spec = importlib.util.spec_from_file_location("equations_index", ROOT / "docs" / "equations_index.py")
+eqi = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(eqi)
+
+LABELS = eqi.thesis_labels()
+
+
+def test_committed_index_is_current():
+    assert (ROOT / "docs" / "equations.md").read_text(encoding="utf-8") == eqi.render(), \
+        "docs/equations.md is stale: run `python docs/equations_index.py`"
+
+
+def test_citations_are_read_as_the_book_writes_them():
+    doc = ("Joint accelerations (thesis 3.40-3.42), with the force 3.13 and (6.113b);\n"
+           "the point (2.5, 1.25) is data.\n\nExamples\n--------\n>>> f(3.31)\n")
+    got = eqi.cited(doc, LABELS)
+    assert got[:3] == ["3.40", "3.41", "3.42"]
+    assert "6.113b" in got and "6.113a" not in got and "2.5" not in got and "3.31" not in got
+
+
+def test_the_recursions_are_found_from_their_numbers():
+    index = eqi.implementations(LABELS)
+    for label, module in [("3.41", "planargeo.algorithms.aba"), ("6.113a", "planargeo.algorithms.projective"),
+                          ("7.38a", "planargeo.algorithms.")]:
+        assert any(f.startswith(module) for f in index[label]), (label, index[label])
