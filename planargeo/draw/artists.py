@@ -33,7 +33,7 @@ from matplotlib.transforms import Affine2D, IdentityTransform
 
 from planargeo._validate import as_array, as_vec3
 from planargeo.errors import InputError
-from planargeo.draw.style import style as _style
+from planargeo.draw.style import get_ax, style as _style
 
 __all__ = [
     "PointArtist", "LineArtist", "ConicArtist",
@@ -822,31 +822,20 @@ class ConicArtist(_Base):
         return out
 
 
-# --------------------------------------------------------------------------- helpers
-def _get_ax(ax):
-    if ax is None:
-        import matplotlib.pyplot as plt
-
-        ax = plt.gca()
-    return ax
-
-
+# --------------------------------------------------------------------------- plot functions
 def plot_point(point, ax=None, **kw) -> PointArtist:
     """Add a :class:`PointArtist` to ``ax`` (default: current axes) and return it."""
-    ax = _get_ax(ax)
-    return ax.add_artist(PointArtist(point, **kw))
+    return get_ax(ax).add_artist(PointArtist(point, **kw))
 
 
 def plot_line(line, ax=None, **kw) -> LineArtist:
     """Add a :class:`LineArtist` to ``ax`` (default: current axes) and return it."""
-    ax = _get_ax(ax)
-    return ax.add_artist(LineArtist(line, **kw))
+    return get_ax(ax).add_artist(LineArtist(line, **kw))
 
 
 def plot_conic(conic, ax=None, **kw) -> ConicArtist:
     """Add a :class:`ConicArtist` to ``ax`` (default: current axes) and return it."""
-    ax = _get_ax(ax)
-    return ax.add_artist(ConicArtist(conic, **kw))
+    return get_ax(ax).add_artist(ConicArtist(conic, **kw))
 
 
 def plot_inertia(inertia, ax=None, **kw) -> ConicArtist:

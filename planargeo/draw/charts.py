@@ -1,7 +1,8 @@
 """Charts (curves over a parameter) in the package style: Figs 7.4, 7.6-7.8, 7.10."""
 from __future__ import annotations
 
-from planargeo.draw.style import OKABE_ITO, LINEWIDTHS
+from planargeo.draw.style import OKABE_ITO, LINEWIDTHS, get_ax
+from planargeo.errors import InputError
 
 __all__ = ["CURVE_COLORS", "plot_curves", "polar_curves"]
 
@@ -11,41 +12,60 @@ CURVE_COLORS = [OKABE_ITO[k] for k in ("blue", "vermillion", "green", "purple", 
 _DASHES = ["-", "--", "-.", ":", (0, (5, 1, 1, 1)), (0, (1, 1)), (0, (8, 2))]
 
 
-def plot_curves(ax, x, ys, labels, *, xlabel="", ylabel="", title=None, legend_loc="best",
-                logx=False, ylim=None):
-    """Several curves ``ys[k]`` over ``x`` with distinct colour and dash (readable in grey)."""
-    arts = []
-    for k, (y, lab) in enumerate(zip(ys, labels)):
-        (ln,) = ax.plot(x, y, color=CURVE_COLORS[k % len(CURVE_COLORS)],
-                        linestyle=_DASHES[k % len(_DASHES)], lw=LINEWIDTHS["chart"], label=lab)
-        arts.append(ln)
+def _curves(ax, x, ys, labels, title):
+    """One line per ``ys[k]`` over ``x``, the k-th colour and dash (readable in grey); the title."""
+    arts = [ax.plot(x, y, color=CURVE_COLORS[k % len(CURVE_COLORS)], linestyle=_DASHES[k % len(_DASHES)],
+                    lw=LINEWIDTHS["chart"], label=lab)[0] for k, (y, lab) in enumerate(zip(ys, labels))]
+    if title:
+        ax.set_title(title)
+    return arts
+
+
+def plot_curves(x, ys, labels, ax=None, *, xlabel="", ylabel="", title=None, logx=False, ylim=None,
+                legend=None):
+    """Several curves ``ys[k]`` over ``x`` with distinct colour and dash (readable in grey).
+
+    ``legend``: keyword arguments of the legend (default: best place, no frame).
+
+    Examples
+    --------
+    >>> import matplotlib; matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> arts = plot_curves([0, 1], [[0, 1], [1, 0]], ["up", "down"], ax, legend=dict(loc="center"))
+    >>> [a.get_label() for a in arts], arts[1].get_linestyle()
+    (['up', 'down'], '--')
+    >>> plt.close(fig)
+    """
+    ax = get_ax(ax)
+    arts = _curves(ax, x, ys, labels, title)
     if logx:
         ax.set_xscale("log")
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     if ylim is not None:
         ax.set_ylim(*ylim)
-    if title:
-        ax.set_title(title)
     ax.grid(True, lw=0.4, alpha=0.5)
     if any(labels):
-        ax.legend(loc=legend_loc, frameon=False)
+        ax.legend(**{"loc": "best", "frameon": False, **(legend or {})})
     return arts
 
 
-def polar_curves(ax, theta, rs, labels, *, title=None, rlabel=""):
-    """Polar curves ``rs[k](theta)`` on a polar axes ``ax``; ``rlabel`` names the radius.
+def polar_curves(theta, rs, labels, ax=None, *, title=None, rlabel=""):
+    """Polar curves ``rs[k](theta)`` on the polar axes ``ax``; ``rlabel`` names the radius.
 
     The radial tick labels run along 100°; ``rlabel`` goes in the axes' upper-left
     corner (outside the circle) so that it never sits on a tick label.
+
+    Raises
+    ------
+    InputError
+        If ``ax`` (or the current axes) is not a polar axes.
     """
-    arts = []
-    for k, (r, lab) in enumerate(zip(rs, labels)):
-        (ln,) = ax.plot(theta, r, color=CURVE_COLORS[k % len(CURVE_COLORS)],
-                        linestyle=_DASHES[k % len(_DASHES)], lw=LINEWIDTHS["chart"], label=lab)
-        arts.append(ln)
-    if title:
-        ax.set_title(title)
+    ax = get_ax(ax)
+    if ax.name != "polar":
+        raise InputError(f"ax must be a polar axes (projection='polar'), got a {ax.name!r} axes")
+    arts = _curves(ax, theta, rs, labels, title)
     ax.set_rlabel_position(100)
     if rlabel:  # in the empty upper-left corner, clear of the radial tick labels along 100°
         ax.text(-0.08, 1.04, f"radius: {rlabel}", transform=ax.transAxes, fontsize=7,

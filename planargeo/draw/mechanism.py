@@ -12,19 +12,11 @@ import numpy as np
 from matplotlib.patches import Circle, Polygon, Rectangle
 
 from planargeo.draw.artists import plot_line
-from planargeo.draw.style import COLORS, LINEWIDTHS
+from planargeo.draw.style import COLORS, LINEWIDTHS, get_ax
 
 __all__ = ["link_polygon", "draw_body", "draw_link", "draw_pin", "draw_ground", "draw_slider",
            "draw_frame", "draw_com", "draw_joint_split", "transform_shape", "draw_contact",
            "slider_guide", "draw_model"]
-
-
-def _ax(ax):
-    if ax is None:
-        import matplotlib.pyplot as plt
-
-        ax = plt.gca()
-    return ax
 
 
 def link_polygon(p, q, width=0.25):
@@ -44,9 +36,13 @@ def transform_shape(shape, pose):
     return affinity.translate(affinity.rotate(shape, th, origin=(0, 0), use_radians=True), x, y)
 
 
-def draw_body(shape, ax=None, *, color=None, alpha=0.35, edgecolor="#1f3a4d", zorder=1, label=None):
-    """Fill a shapely polygon (or multipolygon) in world coordinates; returns the patches."""
-    ax = _ax(ax)
+def draw_body(shape, ax=None, *, color=None, alpha=0.35, edgecolor="#1f3a4d", zorder=1, label=None,
+              com=None):
+    """Fill a shapely polygon (or multipolygon) in world coordinates; returns the patches.
+
+    With ``com`` (x, y) the centre-of-mass symbol (:func:`draw_com`) marks it.
+    """
+    ax = get_ax(ax)
     geoms = getattr(shape, "geoms", [shape])
     out = []
     for g in geoms:
@@ -64,6 +60,8 @@ def draw_body(shape, ax=None, *, color=None, alpha=0.35, edgecolor="#1f3a4d", zo
         c = shape.representative_point()
         out.append(ax.text(c.x, c.y, label, ha="center", va="center", fontsize=7,
                            color="#1f3a4d", zorder=zorder + 0.5))
+    if com is not None:
+        out += draw_com(com, ax)
     return out
 
 
@@ -74,7 +72,7 @@ def draw_link(p, q, ax=None, *, width=0.25, **kw):
 
 def draw_pin(xy, ax=None, *, radius=0.06, zorder=6):
     """A revolute joint: white disc with a dark rim."""
-    ax = _ax(ax)
+    ax = get_ax(ax)
     c = Circle(tuple(map(float, xy)), radius, facecolor="white", edgecolor="#222222",
                linewidth=1.0, zorder=zorder)
     ax.add_patch(c)
@@ -83,7 +81,7 @@ def draw_pin(xy, ax=None, *, radius=0.06, zorder=6):
 
 def draw_ground(xy, ax=None, *, width=0.8, angle=0.0, depth=0.12, n=7, zorder=1):
     """A ground line with hatching below it (``angle`` of the line in radians)."""
-    ax = _ax(ax)
+    ax = get_ax(ax)
     xy = np.asarray(xy, float)
     e = np.array([np.cos(angle), np.sin(angle)])
     nrm = np.array([-e[1], e[0]])
@@ -98,7 +96,7 @@ def draw_ground(xy, ax=None, *, width=0.8, angle=0.0, depth=0.12, n=7, zorder=1)
 
 def draw_slider(xy, direction, ax=None, *, size=(0.35, 0.2), track=1.6, zorder=3):
     """A prismatic joint: a block on a track along ``direction`` (the track is hatched ground)."""
-    ax = _ax(ax)
+    ax = get_ax(ax)
     xy = np.asarray(xy, float)
     d = np.asarray(direction, float)
     ang = np.arctan2(d[1], d[0])
@@ -114,9 +112,9 @@ def draw_slider(xy, direction, ax=None, *, size=(0.35, 0.2), track=1.6, zorder=3
     return out + [rect]
 
 
-def draw_frame(origin, angle=0.0, ax=None, *, length=0.5, labels=("$x$", "$y$"), color="#222222"):
+def draw_frame(origin, ax=None, *, angle=0.0, length=0.5, labels=("$x$", "$y$"), color="#222222"):
     """Coordinate axes arrows at ``origin`` rotated by ``angle``."""
-    ax = _ax(ax)
+    ax = get_ax(ax)
     o = np.asarray(origin, float)
     out = []
     for k, lab in enumerate(labels):
@@ -135,7 +133,7 @@ def draw_com(xy, ax=None, *, radius=0.07, zorder=6):
     """The centre-of-mass symbol (quartered disc)."""
     from matplotlib.patches import Wedge
 
-    ax = _ax(ax)
+    ax = get_ax(ax)
     xy = tuple(map(float, xy))
     out = []
     for k in range(4):
@@ -205,7 +203,7 @@ def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None, ga
     """
     from planargeo.mechanics.subspaces import Decomposition
 
-    ax = _ax(ax)
+    ax = get_ax(ax)
     dec = Decomposition(s, R, A)
     Q, mu = dec.split_wrench(f)
     active = dec.T @ Q
@@ -320,7 +318,7 @@ def draw_contact(contact, pose, ax=None, *, body_shape=None, size=0.08, clearanc
     """
     from planargeo.mechanics.contacts import world_point
 
-    ax = _ax(ax)
+    ax = get_ax(ax)
     pose = np.asarray(pose, float)
     pa = np.asarray(world_point(pose, contact.a, contact.point_a), float)
     out = []
@@ -367,7 +365,7 @@ def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pi
     """
     from shapely.ops import unary_union
 
-    ax = _ax(ax)
+    ax = get_ax(ax)
     pose = np.asarray(data.pose)
     com = np.asarray(data.com)
     origin = np.asarray(data.origin)

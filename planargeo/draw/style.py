@@ -23,12 +23,15 @@ wrenches is a wrench): ``v₃ = v₁ + v₂`` or ``f₃ = f₁ + f₂`` is drawn
 same colour, told apart by weight (:data:`SUM`: a heavier line, a larger
 diamond marker).  :func:`legend` makes a key of roles for one panel.
 
-Use :func:`figure` (or :func:`rc_context`) to get the package's fixed fonts and
-sizes; gallery output is reproducible only inside that context.
+Use :func:`rc_context` to get the package's fixed fonts and sizes; gallery
+output is reproducible only inside that context.  Every drawing function takes
+what it draws first and ``ax=None`` next (None: the current axes, :func:`get_ax`).
 """
 from __future__ import annotations
 
 import contextlib
+
+from planargeo.errors import InputError
 
 #: Okabe-Ito colour-blind-safe palette.
 OKABE_ITO = {
@@ -133,6 +136,13 @@ def rc_context():
         yield
 
 
+def _entry(table: dict, key: str, what: str, overrides: dict) -> dict:
+    """A copy of ``table[key]`` updated by ``overrides``; an unknown key is an InputError naming ``what``."""
+    if key not in table:
+        raise InputError(f"{what} must be one of {sorted(table)}, got {key!r}")
+    return {**table[key], **overrides}
+
+
 def style(role: str, **overrides) -> dict:
     """Keyword arguments for ``role`` (see :data:`STYLES`), updated by ``overrides``.
 
@@ -143,13 +153,7 @@ def style(role: str, **overrides) -> dict:
     >>> style("twist")["color"]
     '#0072B2'
     """
-    if role not in STYLES:
-        from planargeo.errors import InputError
-
-        raise InputError(f"role must be one of {sorted(STYLES)}, got {role!r}")
-    out = dict(STYLES[role])
-    out.update(overrides)
-    return out
+    return _entry(STYLES, role, "role", overrides)
 
 
 def sum_style(kind: str, **overrides) -> dict:
@@ -162,16 +166,10 @@ def sum_style(kind: str, **overrides) -> dict:
     >>> sum_style("point")["marker"]
     'D'
     """
-    if kind not in SUM:
-        from planargeo.errors import InputError
-
-        raise InputError(f"kind must be one of {sorted(SUM)}, got {kind!r}")
-    out = dict(SUM[kind])
-    out.update(overrides)
-    return out
+    return _entry(SUM, kind, "kind", overrides)
 
 
-def legend(ax, items, *, loc="lower right", **kw):
+def legend(items, ax=None, *, loc="lower right", **kw):
     """A key of roles for one panel.
 
     ``items`` are ``(role, kind, text)`` with ``kind`` one of "point", "line",
@@ -183,7 +181,7 @@ def legend(ax, items, *, loc="lower right", **kw):
     >>> matplotlib.use("Agg")
     >>> import matplotlib.pyplot as plt
     >>> fig, ax = plt.subplots()
-    >>> leg = legend(ax, [("twist", "point", "twist"), ("wrench", "sum-line", "sum")])
+    >>> leg = legend([("twist", "point", "twist"), ("wrench", "sum-line", "sum")], ax)
     >>> [t.get_text() for t in leg.get_texts()]
     ['twist', 'sum']
     >>> plt.close(fig)
@@ -207,13 +205,11 @@ def legend(ax, items, *, loc="lower right", **kw):
             handles.append(Line2D([], [], color=COLORS[role], linewidth=lw,
                                   linestyle=st["linestyle"], label=text))
         else:
-            from planargeo.errors import InputError
-
             raise InputError(f"legend item kind must be point, line, sum-point or sum-line, "
                              f"got {kind!r}")
     opts = dict(loc=loc, fontsize=6.5, handlelength=1.8, borderaxespad=0.2, labelspacing=0.3)
     opts.update(kw)
-    return ax.legend(handles=handles, **opts)
+    return get_ax(ax).legend(handles=handles, **opts)
 
 
 def setup_axes(ax, limits=None, *, grid=False, axis_off=True):
@@ -231,11 +227,10 @@ def setup_axes(ax, limits=None, *, grid=False, axis_off=True):
     return ax
 
 
-def get_ax(ax=None, limits=None):
-    """Return ``ax`` or, if None, the current axes set up by :func:`setup_axes`."""
+def get_ax(ax=None):
+    """``ax``, or the current axes when None: how every drawing function treats its ``ax=None``."""
     if ax is None:
         import matplotlib.pyplot as plt
 
         ax = plt.gca()
-        setup_axes(ax, limits)
     return ax

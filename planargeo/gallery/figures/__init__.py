@@ -1,15 +1,22 @@
-"""Registry of gallery figures (one function per thesis figure).
+"""Registry of gallery figures (one function per thesis figure) and what they share.
 
-A figure module registers builders with :func:`register`; a builder takes no
-argument and returns a matplotlib Figure drawn from computed quantities.
-:func:`load_all` imports every module of :data:`MODULES`; an import error
-propagates (a figure never silently drops out of the gallery).
+A figure module registers a drawing function ``draw(ax)`` with :func:`register`:
+the registered builder makes the figure (:func:`new_figure`), draws on its axes
+from computed quantities and returns it.  :func:`load_all` imports every module
+of :data:`MODULES`; an import error propagates (a figure never silently drops
+out of the gallery).  :func:`chain` and :func:`scene_state` are the models and
+states several figures draw.
 """
 from __future__ import annotations
 
 import importlib
 from dataclasses import dataclass
 from typing import Callable
+
+from planargeo.draw.style import COLUMN_WIDTH, setup_axes
+from planargeo.mechanics.kinematics import kinematics
+from planargeo.mechanics.model import Body, Joint, Model
+from planargeo.scenes import build as build_scene
 
 MODULES = ("ch1", "ch3", "ch4", "ch5", "ch6", "ch7", "ch9", "extra")
 
@@ -25,11 +32,21 @@ class FigureSpec:
 REGISTRY: dict[str, FigureSpec] = {}
 
 
-def register(name: str, caption: str, order: float):
-    """Decorator: register ``build() -> Figure`` under ``name`` (the SVG file stem)."""
-    def deco(fn):
-        REGISTRY[name] = FigureSpec(name, caption, fn, order)
-        return fn
+def register(name: str, caption: str, order: float, *, height: float = 2.8, **layout):
+    """Decorator: register ``draw(ax)`` as the figure ``name`` (the SVG file stem).
+
+    The figure's ``build() -> Figure`` makes a one-column figure ``height``
+    inches tall with :func:`new_figure` (``layout``: its keywords), calls
+    ``draw`` with its axes (an array of axes for several panels) and returns it.
+    """
+    def deco(draw):
+        def build():
+            fig, ax = new_figure(height, **layout)
+            draw(ax)
+            return fig
+
+        REGISTRY[name] = FigureSpec(name, caption, build, order)
+        return draw
     return deco
 
 
@@ -43,17 +60,46 @@ def load_all() -> dict[str, FigureSpec]:
     return dict(sorted(REGISTRY.items(), key=lambda kv: (kv[1].order, kv[0])))
 
 
-def new_figure(w=3.4, h=2.8, *, ncols=1, nrows=1, limits=None, geometric=True, **kw):
-    """A figure with equal-aspect, axis-free panels (geometric) or plain axes (charts)."""
-    import matplotlib.pyplot as plt
-    from planargeo.draw.style import setup_axes
+def new_figure(height=2.8, *, nrows=1, ncols=1, margins=None, polar=None, **kw):
+    """A figure one column wide and ``height`` inches tall, and its axes.
 
-    fig, axs = plt.subplots(nrows, ncols, figsize=(w, h), squeeze=False, **kw)
-    if geometric:
+    By default ``nrows × ncols`` equal-aspect, axis-free panels filling the
+    figure; with ``margins = (left, right, bottom, top)`` chart axes inside
+    those figure fractions; with ``polar = [left, bottom, width, height]`` one
+    polar axes there.  ``kw`` go to :func:`matplotlib.pyplot.subplots`.
+    Returns ``(fig, ax)``, or ``(fig, axs)`` (flat) for several panels.
+    """
+    import matplotlib.pyplot as plt
+
+    if polar is not None:
+        fig = plt.figure(figsize=(COLUMN_WIDTH, height))
+        return fig, fig.add_axes(polar, projection="polar")
+    fig, axs = plt.subplots(nrows, ncols, figsize=(COLUMN_WIDTH, height), squeeze=False, **kw)
+    if margins is None:
         fig.subplots_adjust(left=0.02, right=0.98, bottom=0.02, top=0.98, wspace=0.05, hspace=0.05)
-    for ax in axs.ravel():
-        if geometric:
-            setup_axes(ax, limits)
+        for ax in axs.flat:
+            setup_axes(ax)
+    else:
+        left, right, bottom, top = margins
+        fig.subplots_adjust(left=left, right=right, bottom=bottom, top=top)
     return fig, (axs[0, 0] if axs.size == 1 else axs.ravel())
 
 
+def chain(n: int, *, base: str = "revolute", gravity=(0.0, 0.0), tip_com: float = 0.5) -> Model:
+    """``n`` unit links (mass 1, centre of mass 0.5 along the link, 1/12 about it) named 1…n.
+
+    Joint 1 (kind ``base``) sits at the origin, joint ``i`` (revolute) 1 along
+    link ``i − 1``; the last link's centre of mass is at ``tip_com`` (it is
+    drawn ``2 tip_com`` long).
+    """
+    bodies = [Body(1.0, (0.5 if i < n - 1 else tip_com, 0.0), 1.0 / 12, name=str(i + 1))
+              for i in range(n)]
+    joints = [Joint(base if i == 0 else "revolute", (0.0 if i == 0 else 1.0, 0.0, 0.0))
+              for i in range(n)]
+    return Model(bodies, joints, list(range(-1, n - 1)), gravity)
+
+
+def scene_state(name: str, **params):
+    """The scene ``name`` (:func:`planargeo.scenes.build`) and its model's kinematics at its state."""
+    res = build_scene(name, **params)
+    return res, kinematics(res.model, res.state["q"], res.state["qd"])

@@ -9,16 +9,21 @@ from planargeo.draw.artists import plot_point
 from planargeo.draw.constructions import label
 from planargeo.draw.style import COLORS
 from planargeo.draw.layout import fit_view
-from planargeo.gallery.figures import new_figure, register
+from planargeo.gallery.figures import register
 
 OMEGA, R_DISK, P = 2.0, 1.0, np.array([0.7, 0.35])
 
 
 def _disk(ax):
+    """The disk spinning at constant ω about O, in the view of Figs 1.2-1.3.
+
+    Returns its twist ``v`` and the velocity ``v_P`` of the body point at ``P``.
+    """
     ax.add_patch(Circle((0, 0), R_DISK, fc=COLORS["body"], alpha=0.35, ec="#1f3a4d", lw=1.0))
     v = OMEGA * unit_rotation([0.0, 0.0])     # constant spin about O
     plot_point(v, ax, text="$v$ (ω = const)", text_offset=(-34, -26))
-    return v
+    fit_view(ax, [[-1.1, -1.1], [1.6, 1.1]], margin=0.03)
+    return v, (X_P(P) @ v)[:2]
 
 
 def _arrow(ax, p, d, text, color, offset=(4, 4)):
@@ -30,11 +35,9 @@ def _arrow(ax, p, d, text, color, offset=(4, 4)):
 
 @register("fig1_2", "Fig. 1.2 — material acceleration of a disk spinning at constant ω: the body "
           "point at P moves on a circle, so its acceleration v̇_P + ω × v_P = −ω² r is centripetal "
-          "(computed from the twist with X_P and crm).", 1.02)
-def fig1_2():
-    fig, ax = new_figure(3.4, 2.3)
-    v = _disk(ax)
-    vP = (X_P(P) @ v)[:2]                       # velocity of the body point at P
+          "(computed from the twist with X_P and crm).", 1.02, height=2.3)
+def fig1_2(ax):
+    v, vP = _disk(ax)
     a_spatial = np.zeros(3)                     # dv/dt = 0 for constant spin
     aP = (X_P(P) @ a_spatial)[:2] + (crm(v) @ np.append(vP, 0.0))[:2]  # ω × v_P
     assert np.allclose(aP, -OMEGA ** 2 * P)
@@ -46,18 +49,14 @@ def fig1_2():
     t = np.linspace(0, 2 * np.pi, 100)
     ax.plot(np.hypot(*P) * np.cos(t), np.hypot(*P) * np.sin(t), color=COLORS["construct"], lw=0.6,
             ls="--")
-    fit_view(ax, [[-1.1, -1.1], [1.6, 1.1]], margin=0.03)
-    return fig
 
 
 @register("fig1_3", "Fig. 1.3 — spatial acceleration of the same disk is zero: the velocity of "
           "whatever body point occupies the fixed spatial location P is the same at every instant "
           "(grey dots: body points that are at P a moment before and after; each has velocity v_P "
-          "there, one arrow), so a = dv/dt = 0 (no acceleration pole).", 1.03)
-def fig1_3():
-    fig, ax = new_figure(3.4, 2.3)
-    v = _disk(ax)
-    vP = (X_P(P) @ v)[:2]
+          "there, one arrow), so a = dv/dt = 0 (no acceleration pole).", 1.03, height=2.3)
+def fig1_3(ax):
+    _, vP = _disk(ax)
     for k, dt in enumerate((-0.12, 0.0, 0.12)):
         # the body point that is at P at time dt had been elsewhere: its own velocity at P is still vP
         c, s_ = np.cos(OMEGA * dt), np.sin(OMEGA * dt)
@@ -69,5 +68,3 @@ def fig1_3():
     label(ax, P, "$P$ (fixed in space)", offset=(4, -11), fontsize=7)
     ax.text(0.98, 0.04, "spatial acceleration $a = \\dot v = 0$", transform=ax.transAxes,
             ha="right", fontsize=7, color=COLORS["accel"])
-    fit_view(ax, [[-1.1, -1.1], [1.6, 1.1]], margin=0.03)
-    return fig

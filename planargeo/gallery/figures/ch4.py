@@ -5,8 +5,6 @@ import numpy as np
 from matplotlib.patches import Polygon
 
 from planargeo.algorithms.rnea import newton_euler
-from planargeo.mechanics.kinematics import kinematics
-from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.geometry.projective import from_xy, join, meet, to_xy
 from planargeo.screws.twists import inertia_matrix, unit_rotation, unit_translation
 from planargeo.draw.artists import plot_conic, plot_line
@@ -15,13 +13,13 @@ from planargeo.draw.constructions import (draw_acceleration_step, draw_dimension
 from planargeo.draw.mechanism import draw_com, draw_frame, draw_ground, draw_link, draw_model, draw_pin
 from planargeo.draw.style import COLORS, legend
 from planargeo.draw.layout import fit_view
-from planargeo.gallery.figures import new_figure, register
+from planargeo.gallery.figures import chain, register
 
 
 @register("fig4_1", "Fig. 4.1 — two rotations add to a rotation on the line through their poles: "
-          "ω₃ = ω₁ + ω₂ (4.11), P = Q₁ + β(Q₂ − Q₁) with β = ω₂/(ω₁ + ω₂) (4.12–4.13).", 4.01)
-def fig4_1():
-    fig, ax = new_figure(3.4, 1.9)
+          "ω₃ = ω₁ + ω₂ (4.11), P = Q₁ + β(Q₂ − Q₁) with β = ω₂/(ω₁ + ω₂) (4.12–4.13).", 4.01,
+          height=1.9)
+def fig4_1(ax):
     v1 = 1.0 * unit_rotation([0.0, 0.0])
     v2 = 2.0 * unit_rotation([3.0, 0.0])
     out = draw_twist_sum(v1, v2, ax, labels=("$v_1$ (ω=1)", "$v_2$ (ω=2)", "$v_3$ (ω=3)"),
@@ -30,17 +28,15 @@ def fig4_1():
     P, Q1, Q2 = to_xy(v1 + v2), to_xy(v1), to_xy(v2)
     draw_dimension(ax, Q1, P, r"$\beta k$", offset=-0.55)
     draw_dimension(ax, Q1, Q2, "$k$", offset=-1.0)
-    legend(ax, [("twist", "point", "twist (pole)"), ("twist", "sum-point", "sum of twists"),
-                ("construct", "line", "lever line")], loc="lower right")
+    legend([("twist", "point", "twist (pole)"), ("twist", "sum-point", "sum of twists"),
+            ("construct", "line", "lever line")], ax, loc="lower right")
     fit_view(ax, [Q1, Q2, P, Q1 + [0, -1.1], Q2 + [2.2, 0.6]], margin=0.06)
-    return fig
 
 
 @register("fig4_2", "Fig. 4.2 — lever rule in statics: the reactions R₁, R₂ balancing a load F on a "
           "simply supported beam, solved as wrenches (F + R₁ + R₂ = 0); β = R₂/(R₁ + R₂) (4.14–4.15).",
-          4.02)
-def fig4_2():
-    fig, ax = new_figure(3.4, 1.9)
+          4.02, height=1.9)
+def fig4_2(ax):
     L, xF, Fmag = 4.0, 1.0, 3.0
     F = join(from_xy([xF, 0.0]), from_xy([xF, -1.0])) * Fmag       # downward load through (xF, 0)
     B = np.column_stack([join(from_xy([0.0, 0.0]), from_xy([0.0, 1.0])),   # unit upward force at 0
@@ -65,13 +61,12 @@ def fig4_2():
     ax.text(0.6, 0.97, rf"$\beta = R_2/(R_1 + R_2)$ = {beta:.2g}", transform=ax.transAxes,
             ha="center", va="top", fontsize=7)
     fit_view(ax, [[-0.3, -1.4], [L + 0.3, 1.4]], margin=0.03)
-    return fig
 
 
 @register("fig4_3", "Fig. 4.3 — a rotation v₁ (ω) plus a translation v₂ (speed u, an ideal point, "
-          "arrow at the edge of the view) is a rotation about P = Q + ρn, ρ = u/ω (4.16).", 4.03)
-def fig4_3():
-    fig, ax = new_figure(3.4, 2.4)
+          "arrow at the edge of the view) is a rotation about P = Q + ρn, ρ = u/ω (4.16).", 4.03,
+          height=2.4)
+def fig4_3(ax):
     omega, u, lam = 1.0, 1.5, np.deg2rad(30)
     v1 = omega * unit_rotation([0.0, 0.0])
     v2 = u * unit_translation([np.cos(lam), np.sin(lam)])
@@ -85,27 +80,25 @@ def fig4_3():
                 arrowprops=dict(arrowstyle="-|>", color=COLORS["twist"], lw=1))
     label(ax, Q + 0.8 * e, "$e$", color=COLORS["twist"])
     fit_view(ax, [Q, P, Q - [1.2, 0.8], P + [1.2, 0.5]], margin=0.1)
-    return fig
 
 
 @register("fig4_4", "Fig. 4.4 — two crossing forces add by the parallelogram rule; f₃ passes through "
           "the meet P = f₁ × f₂ of f₁ and f₂ (4.33–4.39). Erratum: the printed meet 4.35 with the "
           "intercepts of 4.37 has the sign of one y-intercept wrong (both are −τᵢ/f_xi); P is "
-          "computed homogeneously, see docs/errata.md (4.37).", 4.04)
-def fig4_4():
-    fig, ax = new_figure(3.4, 2.4)
+          "computed homogeneously, see docs/errata.md (4.37).", 4.04,
+          height=2.4)
+def fig4_4(ax):
     f1 = join(from_xy([-1.0, 0.5]), from_xy([0.0, 1.0])) * 1.2
     f2 = join(from_xy([2.0, -1.0]), from_xy([1.6, 0.5])) * 1.0
     draw_wrench_sum(f1, f2, ax, scale=0.9)
     P = to_xy(meet(f1, f2))
     fit_view(ax, [P, P + 0.9 * (f1 + f2)[:2], [-1.0, -1.0], P + [1.8, 1.5]], margin=0.12)
-    return fig
 
 
 @register("fig4_5", "Fig. 4.5 — parallel forces add like two rotations: f₃ lies between them by the "
-          "lever rule, F₃ = F₁ + F₂, d₃ = d₁ + β(d₂ − d₁), β = F₂/(F₁ + F₂) (4.40–4.45).", 4.05)
-def fig4_5():
-    fig, ax = new_figure(3.4, 2.0)
+          "lever rule, F₃ = F₁ + F₂, d₃ = d₁ + β(d₂ − d₁), β = F₂/(F₁ + F₂) (4.40–4.45).", 4.05,
+          height=2.0)
+def fig4_5(ax):
     f1 = join(from_xy([0.0, 0.0]), from_xy([0.0, -1.0])) * 2.0     # downward through x = 0
     f2 = join(from_xy([3.0, 0.0]), from_xy([3.0, -1.0])) * 1.0     # downward through x = 3
     out = draw_wrench_sum(f1, f2, ax, scale=0.4, anchors=([0, 0.45], [3, 0.45], [0, 0.15]),
@@ -119,47 +112,48 @@ def fig4_5():
     draw_dimension(ax, [0, -1.1], [x3[0], -1.1], r"$\beta d$")
     draw_dimension(ax, [0, -1.6], [3, -1.6], r"$d = d_2-d_1$", at=0.68)
     fit_view(ax, [[-1.3, -1.9], [3.5, 1.0]], margin=0.05)
-    return fig
 
 
 @register("fig4_6", "Fig. 4.6 — a force f₁ plus a pure couple f₂ (the line at infinity, glyph in the "
-          "corner) is a parallel force at ρ = τ/F (4.46).", 4.06)
-def fig4_6():
-    fig, ax = new_figure(3.4, 2.0)
+          "corner) is a parallel force at ρ = τ/F (4.46).", 4.06, height=2.0)
+def fig4_6(ax):
     F, tau = 2.0, 1.5
     f1 = join(from_xy([0.0, 0.0]), from_xy([0.0, 1.0])) * F
     f2 = np.array([0.0, 0.0, tau])
-    out = draw_wrench_sum(f1, f2, ax, scale=0.4, labels=("$f_1$", "$f_2$ = couple τ",
-                                                         "$f_3 = f_1 + f_2$"),
-                          anchors=([0, 0], None, [0, 0]))
+    draw_wrench_sum(f1, f2, ax, scale=0.4, labels=("$f_1$", "$f_2$ = couple τ", "$f_3 = f_1 + f_2$"),
+                    anchors=([0, 0], None, [0, 0]))
     x3 = to_xy(meet(f1 + f2, [1.0, 0.0, 0.0]))
     draw_dimension(ax, [0, -0.7], [x3[0], -0.7], r"$\rho = \tau/F$")
     fit_view(ax, [[-1.2, -1.0], [x3[0] + 1.2, 1.0]], margin=0.05)
-    _ = out
-    return fig
 
 
-def _chain3(gravity=(0.0, 0.0)):
-    bodies = [Body(1.0, (0.5, 0.0), 1 / 12, name="1"), Body(1.0, (0.5, 0.0), 1 / 12, name="2"),
-              Body(1.0, (0.4, 0.0), 1 / 12, name="3")]
-    joints = [Joint("revolute", (0.0, 0.0, 0.0)), Joint("revolute", (1.0, 0.0, 0.0)),
-              Joint("revolute", (1.0, 0.0, 0.0))]
-    return Model(bodies, joints, [-1, 0, 1], gravity)
-
-
+#: The state of the chain of Figs 4.7-4.9 and 6.5.
 Q47 = np.array([0.5, 0.7, -0.9])
 QD47 = np.array([1.5, -0.6, 1.2])
 QDD47 = np.array([1.0, 2.0, -6.0])
 
 
+def _chain3():
+    """The chain of Figs 4.7-4.9 and 6.5: three unit links, the last one 0.8 long."""
+    return chain(3, tip_com=0.4)
+
+
+def chain47(ax, **draw):
+    """The chain of Figs 4.7-4.9 and 6.5 drawn at ``Q47`` (``draw``: options of ``draw_model``).
+
+    Returns its RNEA state at ``(Q47, QD47, QDD47)`` (4.47-4.56) and the drawn artists.
+    """
+    m = _chain3()
+    w = newton_euler(m, Q47, QD47, QDD47)
+    return w, draw_model(m, w, ax, **draw)
+
+
 @register("fig4_7", "Fig. 4.7 — velocity kinematics v_i = v_{i−1} + s_i q̇_i (4.47): the pole of v₃ "
           "lies on the line joining the pole of v₂ and the joint, at β k with β = q̇/(q̇ + ω_{i−1}) "
-          "(4.48–4.49); computed with planargeo.mechanics.kinematics.", 4.07)
-def fig4_7():
-    fig, ax = new_figure(3.4, 2.6)
-    m = _chain3()
-    d = kinematics(m, Q47, QD47)
-    draw_model(m, d, ax, show_com=False)
+          "(4.48–4.49); computed with planargeo.mechanics.kinematics.", 4.07,
+          height=2.6)
+def fig4_7(ax):
+    d, _ = chain47(ax, show_com=False)
     i = 2
     out = draw_velocity_step(d.v[i - 1], d.s(i)[:, 0], QD47[i], ax,
                              names=("$v_2$", r"$s_3\dot q_3$", "$v_3$"),
@@ -167,22 +161,19 @@ def fig4_7():
                              dim_offset=0.4)
     assert np.allclose(out["values"]["v"], d.v[i])
     out["v"].set_text_alignment("right")
-    legend(ax, [("twist", "point", r"twists $v_2$, $s_3\dot q_3$"),
-                ("twist", "sum-point", r"$v_3 = v_2 + s_3\dot q_3$")], loc="lower right")
+    legend([("twist", "point", r"twists $v_2$, $s_3\dot q_3$"),
+            ("twist", "sum-point", r"$v_3 = v_2 + s_3\dot q_3$")], ax, loc="lower right")
     tip = d.pose[i, :2] + 0.8 * np.array([np.cos(d.pose[i, 2]), np.sin(d.pose[i, 2])])
     fit_view(ax, [to_xy(d.v[i - 1]), to_xy(d.v[i]), *d.origin, tip], margin=0.12)
-    return fig
 
 
 @register("fig4_8", "Fig. 4.8 — acceleration kinematics a_i = a_{i−1} + s_i q̈_i + v_i × s_i q̇_i "
           "(4.52): the bias term is a translation (ideal point); s_i q̈_i plus the bias is a rotation "
-          "offset from the joint (4.54), and a_i lies on its line to a_{i−1}.", 4.08)
-def fig4_8():
-    fig, ax = new_figure(3.4, 2.8)
-    m = _chain3()
-    w = newton_euler(m, Q47, QD47, QDD47)
+          "offset from the joint (4.54), and a_i lies on its line to a_{i−1}.", 4.08,
+          height=2.8)
+def fig4_8(ax):
+    w, _ = chain47(ax, show_com=False, labels=False)
     i = 2
-    draw_model(m, w, ax, show_com=False, labels=False)
     out = draw_acceleration_step(
         w.a[i - 1], w.v[i - 1], w.s(i)[:, 0], QD47[i], QDD47[i], ax,
         names=("$a_2$", r"$s_3\ddot q_3$", r"$\kappa_3 = v_3\times s_3\dot q_3$",
@@ -195,18 +186,15 @@ def fig4_8():
     vals = out["values"]
     fit_view(ax, [to_xy(vals[k]) for k in ("a_prev", "joint", "joint_total", "a")] + [*w.origin],
              margin=0.15)
-    return fig
 
 
 @register("fig4_9", "Fig. 4.9 — Newton–Euler for body 2 of a chain: f_net = I a + p (4.55–4.56); "
           "I a is the axis of percussion of a, p the centripetal force through the centre of mass "
-          "toward the velocity pole, f_net = f₂ − f₃ the net joint force (RNEA, no gravity).", 4.09)
-def fig4_9():
-    fig, ax = new_figure(3.4, 2.8)
-    m = _chain3()
-    w = newton_euler(m, Q47, QD47, QDD47)
+          "toward the velocity pole, f_net = f₂ − f₃ the net joint force (RNEA, no gravity).", 4.09,
+          height=2.8)
+def fig4_9(ax):
+    w, _ = chain47(ax, labels=False)
     i = 1
-    draw_model(m, w, ax, labels=False)
     out = draw_newton_euler(w.I[i], w.a[i], w.v[i], ax, scale=0.07,
                             names=("$v_2$", "$a_2$", "$I_2a_2$", "$p_2$",
                                    r"$f^{net}_2 = f_2 - f_3$"),
@@ -214,28 +202,26 @@ def fig4_9():
                             text_offsets=((-14.0, 8.0), (10.0, -4.0), (-6.0, -16.0), (-20.0, 4.0),
                                           (-30.0, 8.0)))
     assert np.allclose(out["values"]["f_net"], w.f[i] - w.f[i + 1])   # RNEA agrees (4.55)
-    legend(ax, [("wrench", "line", "force"), ("wrench", "sum-line", "sum of forces"),
-                ("momentum", "line", "centripetal $p$"), ("inertia", "line", "inertia")],
+    legend([("wrench", "line", "force"), ("wrench", "sum-line", "sum of forces"),
+            ("momentum", "line", "centripetal $p$"), ("inertia", "line", "inertia")], ax,
            loc="lower right")
     c = w.com[i]
     fit_view(ax, [to_xy(w.v[i]), to_xy(w.a[i]), *w.origin, c, c + [1.6, 0.0]], margin=0.1)
-    return fig
 
 
 @register("fig4_10", "Fig. 4.10 — local frame of the planar examples: origin at the joint, x toward "
           "the centre of mass at distance C; the inertia (4.58) drawn as its radius-of-gyration "
-          "circle r about the centre of mass.", 4.10)
-def fig4_10():
-    fig, ax = new_figure(3.4, 1.9)
+          "circle r about the centre of mass.", 4.10,
+          height=1.9)
+def fig4_10(ax):
     mass, C, r = 1.0, 1.2, 0.45
     I = inertia_matrix(mass, [C, 0.0], mass * r * r)
     draw_link([0, 0], [2 * C, 0], ax, width=0.5)
     draw_pin([0, 0], ax, radius=0.06)
-    draw_frame([0, 0], 0.0, ax, length=0.55)
+    draw_frame([0, 0], ax, length=0.55)
     draw_com([C, 0], ax)
     plot_conic(I, ax, role="inertia", mark_center=False)
     draw_dimension(ax, [0, -0.55], [C, -0.55], "$C_i$")
     draw_dimension(ax, [C, 0], [C + r * np.cos(0.8), r * np.sin(0.8)], "$r_i$")
     fit_view(ax, [[-0.4, -0.8], [2 * C + 0.4, 0.8]], margin=0.02)
-    return fig
 

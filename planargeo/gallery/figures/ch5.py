@@ -10,10 +10,10 @@ from planargeo.geometry.projective import from_standard, from_xy, join, to_xy
 from planargeo.draw.artists import plot_conic, plot_line, plot_point
 from planargeo.draw.constructions import (line_conic_points, draw_percussion, draw_polar_exterior,
                              draw_polar_interior, draw_power, draw_segment, label)
-from planargeo.draw.mechanism import draw_body, draw_com, link_polygon
+from planargeo.draw.mechanism import draw_body, link_polygon
 from planargeo.draw.style import COLORS
 from planargeo.draw.layout import fit_view
-from planargeo.gallery.figures import new_figure, register
+from planargeo.gallery.figures import register
 
 
 def _vec_arrow(ax, p, d, text, color="#222222", **kw):
@@ -33,8 +33,8 @@ def _axes_cross(ax, size=2.6):
     label(ax, [0, size], "$y$", offset=(-10, 0), color="#555555")
 
 
-def _coords_figure(alternative: bool):
-    fig, ax = new_figure(3.4, 2.7)
+def _coords(ax, alternative: bool):
+    """A point P and a line L in standard (Fig. 5.1) or alternative (Fig. 5.5) coordinates."""
     _axes_cross(ax)
     lamP, rP = np.deg2rad(62), 2.0
     lamL, rL = np.deg2rad(-20), 1.8
@@ -63,14 +63,13 @@ def _coords_figure(alternative: bool):
     label(ax, 0.72 * Pxy, "$r$", offset=(-10, 2))      # beyond the unit-vector arrows
     label(ax, 0.72 * foot, "$r$", offset=(0, 4))
     fit_view(ax, [[-0.6, -1.6], [2.8, 2.6]], margin=0.03)
-    return fig
 
 
 @register("fig5_1", "Fig. 5.1 — standard homogeneous coordinates: a point P = [1, r n] and a line "
           "L = [r, −n] at distance r with unit normal n (5.1–5.16); both built with "
-          "projective.from_standard.", 5.01)
-def fig5_1():
-    return _coords_figure(False)
+          "projective.from_standard.", 5.01, height=2.7)
+def fig5_1(ax):
+    _coords(ax, alternative=False)
 
 
 def _ellipse():
@@ -79,9 +78,9 @@ def _ellipse():
 
 @register("fig5_2", "Fig. 5.2 — polar of an exterior point: the tangents from P touch the conic C at "
           "two points whose join is L = C P (5.36); a point Q on C maps to its tangent M = C Q "
-          "(5.38–5.39). From conics.polar_construction_exterior.", 5.02)
-def fig5_2():
-    fig, ax = new_figure(3.4, 2.6)
+          "(5.38–5.39). From conics.polar_construction_exterior.", 5.02,
+          height=2.6)
+def fig5_2(ax):
     C = _ellipse()
     p = from_xy([2.6, 1.3])
     draw_polar_exterior(C, p, ax)
@@ -93,14 +92,13 @@ def fig5_2():
     plot_line(polar(C, q), ax, role="construct", scale=None, text="$M = CQ$",
               anchor=to_xy(q) + [-0.6, 0.6], color=COLORS["accel"])
     fit_view(ax, [[-2.0, -1.6], [2.9, 1.6]], margin=0.05)
-    return fig
 
 
 @register("fig5_3", "Fig. 5.3 — polar of an interior point: two chords through P; the tangents at "
           "each chord's ends meet at its pole R_i (Theorem 12); L = C P joins R₁ and R₂. From "
-          "conics.polar_construction_interior.", 5.03)
-def fig5_3():
-    fig, ax = new_figure(3.4, 2.8)
+          "conics.polar_construction_interior.", 5.03,
+          height=2.8)
+def fig5_3(ax):
     C = _ellipse()
     p = from_xy([1.0, 0.45])
     out = draw_polar_interior(C, p, ax, angles=(np.deg2rad(75), np.deg2rad(150)),
@@ -110,14 +108,13 @@ def fig5_3():
     out["L"].set_anchor((R1 + R2) / 2)           # L's label between R1 and R2, right of L
     out["R2"].set_text_alignment("right")        # R2's label left of L
     fit_view(ax, [R1, R2, [-1.8, -1.2], [1.8, 1.2]], margin=0.15)
-    return fig
 
 
 @register("fig5_4", "Fig. 5.4 — special decomposition P = u₁Q₁ + u₂Q₂ + u₃Q₃ (5.42) on Q₁ exterior "
           "and Q₂, Q₃ its tangent contacts, so u_i come from single projections (5.44–5.45); the "
-          "dual lines M_i = C Q_i decompose L = C P with the same u_i (5.43, 5.46).", 5.04)
-def fig5_4():
-    fig, ax = new_figure(3.4, 2.8)
+          "dual lines M_i = C Q_i decompose L = C P with the same u_i (5.43, 5.46).", 5.04,
+          height=2.8)
+def fig5_4(ax):
     C = _ellipse()
     Q1, Q2, Q3 = special_base(C, from_xy([2.4, 1.6]))
     P = from_xy([0.4, -0.5])
@@ -144,31 +141,31 @@ def fig5_4():
     txt = ", ".join(f"$u_{k + 1}$={v:.2f}" for k, v in enumerate(u / (u @ [Q1[2], Q2[2], Q3[2]])))
     ax.text(0.02, 0.98, txt, transform=ax.transAxes, fontsize=7, ha="left", va="top")
     fit_view(ax, [q1, [-1.9, -1.5], [1.9, 1.5]], margin=0.1)
-    return fig
 
 
 @register("fig5_5", "Fig. 5.5 — alternative homogeneous coordinates (5.47–5.56): P = [−r e; 1] "
           "with e ⟂ n (5.49–5.50), L = [e; r] with e along the line (5.55): a twist about P and a "
-          "wrench along L.", 5.05)
-def fig5_5():
-    return _coords_figure(True)
+          "wrench along L.", 5.05, height=2.7)
+def fig5_5(ax):
+    _coords(ax, alternative=True)
 
 
-def _body():
+def _body(ax):
+    """The link of Figs 5.6-5.7, drawn with its centre of mass; returns its inertia (from the polygon)."""
     shape = link_polygon([-0.2, 0.0], [2.2, 0.0], 0.7)
-    return shape, Inertia.from_polygon(shape, density=1.0)
+    I = Inertia.from_polygon(shape, density=1.0)
+    draw_body(shape, ax, com=I.com)
+    return I
 
 
 @register("fig5_6", "Fig. 5.6 — the inertia maps an acceleration pole a to its axis of percussion "
           "f = I a (5.64–5.68): at distance d from the centre of mass, the axis lies beyond it at "
           "ρ²/d. Inertia from the body's polygon (Inertia.from_polygon), drawn as its "
-          "radius-of-gyration circle.", 5.06)
-def fig5_6():
-    fig, ax = new_figure(3.4, 2.0)
-    shape, I = _body()
+          "radius-of-gyration circle.", 5.06,
+          height=2.0)
+def fig5_6(ax):
+    I = _body(ax)
     c = np.asarray(I.com)
-    draw_body(shape, ax)
-    draw_com(c, ax)
     a = from_xy(c - [1.5, 0.0])
     f = percussion_axis(I.matrix, a)
     d, rho = 1.5, float(I.radius_of_gyration)
@@ -177,20 +174,16 @@ def fig5_6():
     # the axis's label near the top of the view, right of the line and outside the circle
     draw_percussion(I.matrix, a, ax, f_anchor=[x_axis[0], c[1] + 0.8], text_offsets=(None, (5.0, 0.0)))
     fit_view(ax, [to_xy(a) - [0.3, 0], [2.6, -0.7], [2.6, 0.7]], margin=0.06)
-    return fig
 
 
 @register("fig5_7", "Fig. 5.7 — power relations: a powerless force f passes through the velocity "
           "pole v (vᵀf = 0, 5.69), and a powerless acceleration a lies on the momentum line "
-          "p = I v (pᵀa = 0, 5.71–5.72).", 5.07)
-def fig5_7():
-    fig, ax = new_figure(3.4, 2.4)
-    shape, I = _body()
-    draw_body(shape, ax)
-    draw_com(I.com, ax)
+          "p = I v (pᵀa = 0, 5.71–5.72).", 5.07,
+          height=2.4)
+def fig5_7(ax):
+    I = _body(ax)
     v = 1.2 * from_xy([0.6, -1.1])
     out = draw_power(v, I.matrix, ax, text_offsets=((-14.0, -16.0), (8.0, 4.0), (0.0, -14.0), None),
                      p_label_at=-2.3, f_label_at=-1.0)
     out["v"].set_text_alignment("right")
     fit_view(ax, [[-0.6, -1.5], [2.6, 1.2], out["a"].get_xy(), to_xy(v)], margin=0.08)
-    return fig

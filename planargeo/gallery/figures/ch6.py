@@ -4,34 +4,32 @@ from __future__ import annotations
 import numpy as np
 from shapely.geometry import Point
 
-from planargeo.algorithms.rnea import newton_euler
-from planargeo.screws.inertia import Inertia
+from planargeo.screws.inertia import Inertia, centre_of_mass
 from planargeo.mechanics.joints import revolute
 from planargeo.geometry.projective import from_xy, join, to_xy
 from planargeo.scenes import build as build_scene
 from planargeo.draw.artists import plot_conic, plot_line, plot_point
 from planargeo.draw.constructions import (draw_decomposition, draw_projective_step, draw_twist_split,
                              draw_wrench_split)
-from planargeo.draw.mechanism import draw_body, draw_com, draw_model, draw_pin, link_polygon
-from planargeo.draw.layout import fit_view
-from planargeo.gallery.figures import new_figure, register
-from planargeo.draw.layout import fit_panel, shape_points
+from planargeo.draw.mechanism import draw_body, draw_com, draw_pin, link_polygon
+from planargeo.draw.layout import fit_panel, fit_view, shape_points
+from planargeo.gallery.figures import register
+from planargeo.gallery.figures.ch4 import QDD47, chain47
 
 J = np.array([0.0, 0.0])
 
 
-def _body():
+def _pinned_body(ax):
+    """The body of Figs 6.1-6.4 pinned at ``J``, drawn with its centre of mass and inertia.
+
+    Returns its shape, its inertia (from the polygon) and the revolute joint at ``J``.
+    """
     shape = link_polygon(J, [2.0, 0.7], 0.6)
-    return shape, Inertia.from_polygon(shape, density=1.0).matrix
-
-
-def _base(ax, shape, I):
-    draw_body(shape, ax)
-    c = np.array([I[1, 2], -I[0, 2]]) / I[0, 0]
-    draw_com(c, ax)
+    I = Inertia.from_polygon(shape, density=1.0).matrix
+    draw_body(shape, ax, com=centre_of_mass(I))
     draw_pin(J, ax)
     plot_conic(I, ax, role="inertia", mark_center=False)
-    return c
+    return shape, I, revolute(J)
 
 
 def _on_line(L, y):
@@ -48,12 +46,10 @@ def _view(ax, shape, pts, margin=0.1, *, panel=False):
 @register("fig6_1", "Fig. 6.1 — basic decomposition at a pin joint: force space [T R₁ R₂] with "
           "T = I s the axis of percussion of the joint (6.2–6.3) and two unit reactions through "
           "the joint; their mapped accelerations I⁻¹T = s, I⁻¹R₁, I⁻¹R₂ (percussion poles). "
-          "Drawn by constructions.draw_decomposition.", 6.01)
-def fig6_1():
-    fig, ax = new_figure(3.4, 2.6)
-    shape, I = _body()
-    _base(ax, shape, I)
-    j = revolute(J)
+          "Drawn by constructions.draw_decomposition.", 6.01,
+          height=2.6)
+def fig6_1(ax):
+    shape, I, j = _pinned_body(ax)
     out = draw_decomposition(
         j.s, j.R, I, ax, reactive="inverse",
         labels={"s": "$s = I^{-1}T$", "T": "$T = Is$", "AiR1": "$I^{-1}R_1$",
@@ -69,18 +65,15 @@ def fig6_1():
     out["R1"].set_anchor([pts[1][0] + 1.4, 0.0])
     out["R2"].set_anchor([0.0, pts[0][1]])
     _view(ax, shape, pts + [[pts[1][0] + 1.5, lo], [-0.7, pts[0][1] + 0.3]], margin=0.02)
-    return fig
 
 
 @register("fig6_2", "Fig. 6.2 — decoupled decomposition (6.36–6.48): the reactive accelerations "
           "U = I⁻¹R(RᵀI⁻¹R)⁻¹ lie on the axis of percussion T, U₁ on R₂ and U₂ on R₁, so "
           "RᵀU = 1 (6.47–6.48). Drawn with the inverse that the printed (6.33)–(6.34) miss (there RᵀU = (RᵀI⁻¹R)², not 1; "
-          "docs/errata.md, (6.33)–(6.34)). From constructions.draw_decomposition.", 6.02)
-def fig6_2():
-    fig, ax = new_figure(3.4, 2.6)
-    shape, I = _body()
-    _base(ax, shape, I)
-    j = revolute(J)
+          "docs/errata.md, (6.33)–(6.34)). From constructions.draw_decomposition.", 6.02,
+          height=2.6)
+def fig6_2(ax):
+    shape, I, j = _pinned_body(ax)
     out = draw_decomposition(j.s, j.R, I, ax, text_offsets={
         "s": (-12, 5), "T": (5, -3), "R1": (-14, -13), "R2": (-14, -4), "U1": (6, 3),
         "U2": (6, 3)})
@@ -91,13 +84,10 @@ def fig6_2():
     out["R1"].set_anchor([pts[1][0] + 1.0, 0.0])
     out["R2"].set_anchor([0.0, 0.5 * (1.0 + pts[0][1])])
     _view(ax, shape, pts + [[pts[1][0] + 1.1, -0.6], [-0.6, pts[0][1] + 0.3]], margin=0.02)
-    return fig
 
 
-def _split_panels(kind):
-    fig, axs = new_figure(3.4, 4.2, nrows=2)
-    shape, I = _body()
-    j = revolute(J)
+def _split_panels(axs, kind):
+    """Figs 6.3-6.4: an acceleration (``kind`` "inertia") or a force split by the pin joint, A and B."""
     if kind == "inertia":
         q = from_xy([2.6, -0.4]) * 1.0          # an acceleration pole, unit α
         draw, names = draw_twist_split, {"a1": "$a_1 = s\\psi$", "a2": "$a_2 = U\\gamma$",
@@ -106,7 +96,7 @@ def _split_panels(kind):
         q = join(from_xy([2.4, -0.6]), from_xy([2.0, 1.2]))   # an applied force
         draw, names = draw_wrench_split, {"a1": "$a_1 = I^{-1}f_1$", "a2": "$a_2 = I^{-1}f_2$"}
     for k, ax in enumerate(axs, start=1):
-        _base(ax, shape, I)
+        shape, I, j = _pinned_body(ax)
         out = draw(j.s, j.R, I, q, ax, parts=[k], names=names, arrow_length=0.6)
         v = out["values"]
         if kind == "inertia":   # a = sψ + Uγ (6.44), I a = f₁ + f₂ (6.76)
@@ -136,36 +126,33 @@ def _split_panels(kind):
         ax.text(0.02, 0.96, "AB"[k - 1], transform=ax.transAxes, fontsize=9, fontweight="bold",
                 va="top")
         _view(ax, shape, [xa, [-0.7, -0.95], [2.9, 1.95]], margin=0.02, panel=True)
-    return fig
 
 
 @register("fig6_3", "Fig. 6.3 — inertia decomposition I = T sᵀI + R UᵀI (6.75–6.76): an "
           "acceleration a = sψ + Uγ; A) f₁ = I sψ accelerates the body about the joint (on T), "
           "B) f₂ = I Uγ accelerates it along the reactive space (a force through the joint). "
-          "Drawn by constructions.draw_twist_split.", 6.03)
-def fig6_3():
-    return _split_panels("inertia")
+          "Drawn by constructions.draw_twist_split.", 6.03,
+          height=4.2, nrows=2)
+def fig6_3(axs):
+    _split_panels(axs, "inertia")
 
 
 @register("fig6_4", "Fig. 6.4 — inverse inertia decomposition (6.77–6.81): a force f = TQ + Rμ; "
           "A) the active part TQ produces a₁ = sTᵀI⁻¹f about the joint, B) the reaction Rμ "
-          "produces a₂ = URᵀI⁻¹f on the axis T. Drawn by constructions.draw_wrench_split.", 6.04)
-def fig6_4():
-    return _split_panels("inverse")
+          "produces a₂ = URᵀI⁻¹f on the axis T. Drawn by constructions.draw_wrench_split.", 6.04,
+          height=4.2, nrows=2)
+def fig6_4(axs):
+    _split_panels(axs, "inverse")
 
 
 @register("fig6_5", "Fig. 6.5 — projective kinematics (6.98–6.101): ψ_i = T_iᵀa_i and ψ_{i−1} = "
           "T_iᵀa_{i−1} are the absolute accelerations along joint i, q̈_i = ψ_i − T_iᵀ(a_{i−1} + "
           "κ_i); T_i from the body inertia of link 2 (RNEA state). Drawn by "
-          "constructions.draw_projective_step.", 6.05)
-def fig6_5():
-    from planargeo.gallery.figures.ch4 import Q47, QD47, QDD47, _chain3
-
-    fig, ax = new_figure(3.4, 2.8)
-    m = _chain3()
-    w = newton_euler(m, Q47, QD47, QDD47)
+          "constructions.draw_projective_step.", 6.05,
+          height=2.8)
+def fig6_5(ax):
+    w, arts = chain47(ax, show_com=False)
     i = 1
-    arts = draw_model(m, w, ax, show_com=False)
     P = np.vstack([shape_points(*arts["shapes"]), to_xy(w.a[i - 1]), to_xy(w.a[i])])
     lo = P.min(axis=0)
     out = draw_projective_step(w.s(i), revolute(w.origin[i]).R, w.I[i], w.a[i - 1], w.a[i],
@@ -179,16 +166,15 @@ def fig6_5():
     ax.text(0.98, 0.02, f"$\\psi_2$ = {psi_i:.3g},  $\\psi_1$ = {psi_prev:.3g},  "
             f"$\\ddot q_2$ = {qdd:.3g}", transform=ax.transAxes, fontsize=7, ha="right",
             va="bottom")
-    return fig
 
 
 @register("fig6_6", "Fig. 6.6 — car cornering and accelerating (6.114–6.133, scene 'car'): the ICR "
           "is the joint s, the tyre reactions R₁μ₁ (rear) and R₂μ₂ (front) act along the axles, "
-          "f_A drives the front wheels; a is the resulting acceleration pole.", 6.06)
-def fig6_6():
+          "f_A drives the front wheels; a is the resulting acceleration pole.", 6.06,
+          height=3.0)
+def fig6_6(ax):
     res = build_scene("car")
     ex, qn = res.extra, res.quantities
-    fig, ax = new_figure(3.4, 3.0)
     shape = res.model.bodies[0].shape
     draw_body(shape, ax, alpha=0.25)
     for t in ex["tyres"]:
@@ -219,5 +205,4 @@ def fig6_6():
               margin=0.02)
     ax.text(0.02, 0.98, f"$\\dot\\omega$ = {qn['omega_dot']:.3f} rad/s²", transform=ax.transAxes,
             fontsize=7, va="top")
-    return fig
 

@@ -7,7 +7,6 @@ from planargeo.algorithms.articulated_inertia import articulated_inertia
 from planargeo.algorithms.articulated_mobility import articulated_mobility
 from planargeo.algorithms.chain_splitting import mobility_split
 from planargeo.mechanics.kinematics import kinematics
-from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.geometry.projective import to_xy
 from planargeo.scenes import build as build_scene
 from planargeo.draw.artists import plot_conic, plot_line, plot_point
@@ -15,33 +14,33 @@ from planargeo.draw.charts import plot_curves, polar_curves
 from planargeo.draw.constructions import draw_dimension, label
 from planargeo.draw.mechanism import draw_model
 from planargeo.draw.style import COLORS
-from planargeo.draw.layout import fit_view
-from planargeo.gallery.figures import new_figure, register
-from planargeo.draw.layout import fit_panel, shape_points
+from planargeo.draw.layout import fit_panel, fit_view, shape_points
+from planargeo.gallery.figures import chain, register, scene_state
 
-
-def _chain(n=4, base="revolute", gravity=(0.0, 0.0)):
-    bodies = [Body(1.0, (0.5, 0.0), 1.0 / 12, name=str(i + 1)) for i in range(n)]
-    joints = [Joint(base if i == 0 else "revolute", (0.0 if i == 0 else 1.0, 0.0, 0.0))
-              for i in range(n)]
-    return Model(bodies, joints, list(range(-1, n - 1)), gravity)
-
-
+#: The joint angles of the four-link chains of Figs 7.1, 7.2 and 7.11.
 Q4 = np.array([0.3, 0.5, -0.6, 0.7])
+
+
+def _chain4(ax, q, base="revolute"):
+    """The four-link chain of Figs 7.1, 7.2 and 7.11 drawn at rest at ``q``.
+
+    Returns the model, its kinematics and the outline points of the drawn bodies.
+    """
+    m = chain(4, base=base)
+    d = kinematics(m, q, np.zeros(m.nq))
+    arts = draw_model(m, d, ax, show_com=False)
+    return m, d, shape_points(*arts["shapes"])
 
 
 @register("fig7_1", "Fig. 7.1 — articulated inertia A_i of a free-floating sub-chain (7.1–7.8): the "
           "internal force f_i at joint i accelerates body i by a_i = A_i⁻¹ f_i (at rest), including "
-          "the bodies beyond; A₂ drawn as its (sign-flipped) conic about the effective centre.", 7.01)
-def fig7_1():
-    fig, ax = new_figure(3.4, 2.6)
-    m = _chain(4, base="plane")
+          "the bodies beyond; A₂ drawn as its (sign-flipped) conic about the effective centre.", 7.01,
+          height=2.6)
+def fig7_1(ax):
     q = np.concatenate([[0.0, 0.0, 0.2], Q4[1:]])
-    d = kinematics(m, q, np.zeros(m.nq))
-    r = articulated_inertia(m, q)
+    m, d, outline = _chain4(ax, q, base="plane")
     i = 1
-    arts = draw_model(m, d, ax, show_com=False)
-    A = r.A[i]
+    A = articulated_inertia(m, q).A[i]
     plot_conic(A, ax, role="inertia", text="$A_2$", text_offset=(-26, 10))
     plot_conic(d.I[i], ax, role="inertia", color=COLORS["construct"], mark_center=False)
     o = d.origin[i]
@@ -51,43 +50,36 @@ def fig7_1():
               text_offset=(-4, -16))
     plot_point(a, ax, role="accel", text="$a_2 = A_2^{-1}f_2$", glyph_scale=2.0,
                text_offset=(10, 10))
-    fit_panel(ax, [*shape_points(*arts["shapes"]), to_xy(a), o - [1.0, 0.0]], margin=0.06)
-    return fig
+    fit_panel(ax, [*outline, to_xy(a), o - [1.0, 0.0]], margin=0.06)
 
 
 @register("fig7_2", "Fig. 7.2 — articulated mobility Λ_i⁻¹ of a constrained chain (7.28–7.38, "
           "corrected sign of 7.38a, see docs/errata.md): the load −f_{i+1} on body i "
-          "accelerates it by a_i = −Λ_i⁻¹ f_{i+1} (at rest), including the bodies before it.", 7.02)
-def fig7_2():
-    fig, ax = new_figure(3.4, 2.6)
-    m = _chain(4)
-    d = kinematics(m, Q4, np.zeros(4))
-    r = articulated_mobility(m, Q4)
+          "accelerates it by a_i = −Λ_i⁻¹ f_{i+1} (at rest), including the bodies before it.", 7.02,
+          height=2.6)
+def fig7_2(ax):
+    m, d, outline = _chain4(ax, Q4)
     i = 1
-    arts = draw_model(m, d, ax, show_com=False)
     o = d.origin[i + 1]
     f_next = np.array([-1.0, 0.0, o[1]])   # f_3: a unit force along -x through joint 3 (4.27)
-    a = -r.Lambda_inv[i] @ f_next
+    a = -articulated_mobility(m, Q4).Lambda_inv[i] @ f_next
     # the label above-left of joint 3 (free of links 2 and 3), not on link 3 at the arrow's tip
     plot_line(-f_next, ax, role="reaction", scale=0.6, anchor=o, text="$-f_3$", text_at="anchor",
               text_offset=(-10, 4)).set_text_alignment("right", "bottom")
     plot_point(a, ax, role="accel", text="$a_2 = -\\Lambda_2^{-1}f_3$")
-    fit_panel(ax, [*shape_points(*arts["shapes"]), to_xy(a), d.origin[0] - [0.0, 0.15]],
-              margin=0.06)
-    return fig
+    fit_panel(ax, [*outline, to_xy(a), d.origin[0] - [0.0, 0.15]], margin=0.06)
 
 
 @register("fig7_3", "Fig. 7.3 — two identical bodies at angle φ pushed by a horizontal force f₁ at "
           "CJ₁ (scene 'two-body', 7.9–7.24): the articulated inertia A₁ (black) from the bodies' "
           "inertias (grey); a₁ = A₁⁻¹f₁ is the acceleration pole of body 1 (below CJ₁); "
-          "m_x = {A₁}₁₁ (7.12).", 7.03)
-def fig7_3():
+          "m_x = {A₁}₁₁ (7.12).", 7.03,
+          height=2.9, ncols=2, gridspec_kw={"width_ratios": [2.3, 1.0]})
+def fig7_3(axs):
     from matplotlib.patches import Rectangle
 
-    res = build_scene("two-body")
+    res, d = scene_state("two-body")
     A1 = np.array(res.quantities["A1"])
-    fig, axs = new_figure(3.4, 2.9, ncols=2, gridspec_kw={"width_ratios": [2.3, 1.0]})
-    d = kinematics(res.model, res.state["q"], [0.0, 0.0])
     f1 = np.array([1.0, 0.0, 0.0])                  # unit horizontal force through CJ₁ (4.27)
     a1 = np.linalg.solve(A1, f1)
     ax1 = to_xy(a1)
@@ -119,38 +111,31 @@ def fig7_3():
             fit_view(ax, np.vstack([P, ax1, ax1 + [1.6, -0.3]]), margin=0.03)
             ax.add_patch(Rectangle((0, 0), 1, 1, transform=ax.transAxes, fill=False, ec="#bbbbbb",
                                    lw=0.6))
-    return fig
 
 
 @register("fig7_4", "Fig. 7.4 — effective horizontal mass m_x/m of the two-body example over φ for "
           "several size ratios λ = L/ρ (7.22), computed with the articulated inertia recursion "
-          "(scene 'two-body'); the λ → ∞ limit is 1 + cos²φ (7.23).", 7.04)
-def fig7_4():
-    import matplotlib.pyplot as plt
-
-    fig, ax = plt.subplots(figsize=(3.4, 2.4))
-    fig.subplots_adjust(left=0.16, right=0.97, bottom=0.18, top=0.95)
+          "(scene 'two-body'); the λ → ∞ limit is 1 + cos²φ (7.23).", 7.04,
+          height=2.4, margins=(0.16, 0.97, 0.18, 0.95))
+def fig7_4(ax):
     phi = np.linspace(0, np.pi, 61)
     lams = (0.5, 1.0, 2.0, 4.0, 10.0)
     ys = [[build_scene("two-body", rho=1.0 / lam, phi=p).quantities["mx_over_m"] for p in phi]
           for lam in lams]
     ys.append(1 + np.cos(phi) ** 2)
-    plot_curves(ax, np.rad2deg(phi), ys, [f"λ = {lam:g}" for lam in lams] + ["λ → ∞"],
-                xlabel="φ [deg]", ylabel="$m_x/m$", legend_loc="upper center")
+    plot_curves(np.rad2deg(phi), ys, [f"λ = {lam:g}" for lam in lams] + ["λ → ∞"], ax,
+                xlabel="φ [deg]", ylabel="$m_x/m$", ylim=(0.9, 2.45),
+                legend=dict(ncol=3, loc="upper center", fontsize=6.5))
     ax.set_xticks([0, 45, 90, 135, 180])
-    ax.legend(ncol=3, loc="upper center", frameon=False, fontsize=6.5)
-    ax.set_ylim(0.9, 2.45)
-    return fig
 
 
 @register("fig7_5", "Fig. 7.5 — horizontal chain of n bodies (scene 'horizontal-chain', 7.25–7.27): "
           "the articulated inertia A₁ of the first body grows with each body added; its effective "
-          "centre d₁ is marked for n = 1…4 (λ = 2 here).", 7.05)
-def fig7_5():
-    fig, ax = new_figure(3.4, 1.8)
+          "centre d₁ is marked for n = 1…4 (λ = 2 here).", 7.05,
+          height=1.8)
+def fig7_5(ax):
     lam = 2.0
-    res = build_scene("horizontal-chain", n=4, lam=lam)
-    d = kinematics(res.model, res.state["q"], [0.0] * 4)
+    res, d = scene_state("horizontal-chain", n=4, lam=lam)
     draw_model(res.model, d, ax, show_com=True, ground=False, labels=False)
     plot_conic(np.array(res.quantities["A1"]), ax, role="inertia", text="$A_1$ (n=4)",
                text_offset=(4, 10))
@@ -165,49 +150,50 @@ def fig7_5():
         label(ax, [dn, y], f"$d_1$ = {dn:.3f} L (n = {', '.join(map(str, ns))})", offset=(2, -2),
               fontsize=6.5, va="top", color=COLORS["accel"])
     fit_view(ax, [[-0.3, -1.1], [4.2, 0.7]], margin=0.02)
-    return fig
 
 
-def _lam_chart(key, ylabel, caption_n=(2, 3, 4)):
-    import matplotlib.pyplot as plt
+#: The margins of the λ charts, Figs 7.6-7.8.
+LAM_CHART = (0.17, 0.97, 0.19, 0.95)
 
-    fig, ax = plt.subplots(figsize=(3.4, 2.3))
-    fig.subplots_adjust(left=0.17, right=0.97, bottom=0.19, top=0.95)
+
+def _lam_chart(ax, key, ylabel, caption_n=(2, 3, 4)):
+    """Figs 7.6-7.8: the first body's articulated-inertia quantity ``key`` of the horizontal chain over λ."""
     lam = np.geomspace(0.1, 10.0, 49)
     ys = [[build_scene("horizontal-chain", n=n, lam=x).quantities[key] for x in lam]
           for n in caption_n]
-    plot_curves(ax, lam, ys, [f"n = {n}" + (" (thesis)" if n == 2 else "") for n in caption_n],
+    plot_curves(lam, ys, [f"n = {n}" + (" (thesis)" if n == 2 else "") for n in caption_n], ax,
                 xlabel="λ = L/ρ", ylabel=ylabel, logx=True)
-    return fig
 
 
 @register("fig7_6", "Fig. 7.6 — relative location d/L of the effective centre of the first body over "
           "λ = L/ρ (7.26–7.27); n = 2 is the thesis's two-body system, n = 3, 4 added for comparison "
-          "(d/L = (λ²+12)/(2(λ²+8)) for n = 2, derived in docs/errata.md).", 7.06)
-def fig7_6():
-    return _lam_chart("d_over_L", "$d/L$")
+          "(d/L = (λ²+12)/(2(λ²+8)) for n = 2, derived in docs/errata.md).", 7.06,
+          height=2.3, margins=LAM_CHART)
+def fig7_6(ax):
+    _lam_chart(ax, "d_over_L", "$d/L$")
 
 
 @register("fig7_7", "Fig. 7.7 — effective vertical mass m_y/m of the first body over λ (7.26); "
           "m_y/m = (λ²+8)/(λ²+4) for n = 2. The thesis's claim that bodies beyond two change nothing "
-          "at λ = 2 holds for m_y (all curves meet at 3/2) but not for m_x (errata §5).", 7.07)
-def fig7_7():
-    return _lam_chart("my_over_m", "$m_y/m$")
+          "at λ = 2 holds for m_y (all curves meet at 3/2) but not for m_x (errata §5).", 7.07,
+          height=2.3, margins=LAM_CHART)
+def fig7_7(ax):
+    _lam_chart(ax, "my_over_m", "$m_y/m$")
 
 
 @register("fig7_8", "Fig. 7.8 — effective rotational inertia A_z/(mρ²) of the first body over λ "
-          "(7.26); 2(λ²+4)/(λ²+8) for n = 2; all n meet at 4/3 for λ = 2.", 7.08)
-def fig7_8():
-    return _lam_chart("Az_over_m_rho2", r"$A_z/(m\rho^2)$")
+          "(7.26); 2(λ²+4)/(λ²+8) for n = 2; all n meet at 4/3 for λ = 2.", 7.08,
+          height=2.3, margins=LAM_CHART)
+def fig7_8(ax):
+    _lam_chart(ax, "Az_over_m_rho2", r"$A_z/(m\rho^2)$")
 
 
 @register("fig7_9", "Fig. 7.9 — articulated mobility example (scene 'mobility-example', 7.40–7.49): "
           "CJ₁ pinned to the ground, a pure couple f₃ (line at infinity) on body 2; its acceleration "
-          "pole a₂ lies on the x axis at x/L = 1 + 2η²cosφ/(4 + 5η²) (corrected 7.38a).", 7.09)
-def fig7_9():
-    res = build_scene("mobility-example")
-    fig, ax = new_figure(3.4, 2.2)
-    d = kinematics(res.model, res.state["q"], [0.0, 0.0])
+          "pole a₂ lies on the x axis at x/L = 1 + 2η²cosφ/(4 + 5η²) (corrected 7.38a).", 7.09,
+          height=2.2)
+def fig7_9(ax):
+    res, d = scene_state("mobility-example")
     draw_model(res.model, d, ax)
     a2 = np.array(res.quantities["a2"])
     plot_line(-np.array(res.quantities["f3"]), ax, text="$-f_3$ (couple on body 2)",
@@ -216,24 +202,18 @@ def fig7_9():
     x = to_xy(a2)
     draw_dimension(ax, [0, -0.35], [x[0], -0.35], f"$x$ = {res.quantities['x_over_L']:.3f} L")
     fit_view(ax, [*d.origin, d.com[1] * 2 - d.origin[1], x, [0, -0.5]], margin=0.12)
-    return fig
 
 
 @register("fig7_10", "Fig. 7.10 — polar plot of the instant centre x/L of body 2 over φ for several "
           "η = L/ρ (7.47–7.49), computed with the corrected articulated mobility (the printed sign "
           "of 7.38a gives e.g. 1.613 instead of 1.236 at φ = 45°, η = 2; docs/errata.md).",
-          7.10)
-def fig7_10():
-    import matplotlib.pyplot as plt
-
-    fig = plt.figure(figsize=(3.4, 3.0))
-    ax = fig.add_axes([0.1, 0.1, 0.66, 0.8], projection="polar")
+          7.10, height=3.0, polar=[0.1, 0.1, 0.66, 0.8])
+def fig7_10(ax):
     phi = np.linspace(0, 2 * np.pi, 121)
     etas = (0.5, 1.0, 2.0, 4.0)
     rs = [[build_scene("mobility-example", rho=1.0 / eta, phi=p).quantities["x_over_L"] for p in phi]
           for eta in etas]
-    polar_curves(ax, phi, rs, [f"η = {e:g}" for e in etas], rlabel="x/L")
-    return fig
+    polar_curves(phi, rs, [f"η = {e:g}" for e in etas], ax, rlabel="x/L")
 
 
 @register("fig7_11", "Fig. 7.11 — chain splitting (7.50–7.56): an external force F on the tip; the "
@@ -241,17 +221,15 @@ def fig7_10():
           "Λ₂⁻¹) and a free-floating chain (bodies 3–4, articulated inertia A₃); the internal force "
           "f₃ from 7.56 gives a₂ = b₂ − Λ₂⁻¹f₃ and a₃ = A₃⁻¹(f₃ − d₃) (here at rest without gravity, "
           "b₂ = 0). Computed with listings 7.1.1 and 7.4.1 as corrected for applied loads (docs/errata.md, "
-          "chapter 7 items 2 and 3).", 7.11)
-def fig7_11():
-    fig, ax = new_figure(3.4, 2.6)
-    m = _chain(4)
+          "chapter 7 items 2 and 3).", 7.11,
+          height=2.6)
+def fig7_11(ax):
+    m, d, outline = _chain4(ax, Q4)
     z = np.zeros(4)
     F = np.zeros((4, 3))
-    d0 = kinematics(m, Q4, z)
-    tip = d0.origin[3] + 1.0 * np.array([np.cos(d0.pose[3, 2]), np.sin(d0.pose[3, 2])])
+    tip = d.origin[3] + 1.0 * np.array([np.cos(d.pose[3, 2]), np.sin(d.pose[3, 2])])
     F[3] = np.array([0.0, -1.0, -tip[0]])       # a downward unit force through the tip (4.27)
     sol = mobility_split(m, Q4, z, z, F)
-    d = kinematics(m, Q4, z, F)
     r_in = articulated_inertia(m, Q4, z, z, F)
     r_mob = articulated_mobility(m, Q4, z, z, F)
     f3 = sol.f[2]
@@ -259,7 +237,6 @@ def fig7_11():
     assert np.allclose(sol.a[1], r_mob.b[1] - r_mob.Lambda_inv[1] @ f3)
     assert np.allclose(r_in.A[2] @ sol.a[2], f3 - r_in.d[2])
     b2_zero = np.allclose(r_mob.b[1], 0.0)
-    arts = draw_model(m, d, ax, show_com=False)
     A3 = plot_conic(r_in.A[2], ax, role="inertia", text="$A_3$", text_offset=(10, -30))
     plot_line(F[3], ax, scale=0.5, anchor=tip, text="$F$", text_offset=(-14, -8))
     plot_line(f3, ax, role="reaction", scale=0.5, anchor=d.origin[2], text="$f_3$",
@@ -268,6 +245,5 @@ def fig7_11():
                text="$a_2 = -\\Lambda_2^{-1}f_3$" if b2_zero else "$a_2 = b_2 - \\Lambda_2^{-1}f_3$",
                text_offset=(10, -12))
     plot_point(sol.a[2], ax, role="accel", text="$a_3 = A_3^{-1}(f_3 - d_3)$", text_offset=(-40, 10))
-    fit_panel(ax, [*shape_points(*arts["shapes"]), *A3.get_xy(), tip, to_xy(sol.a[1]),
-                   to_xy(sol.a[2]), d.origin[0] - [0.0, 0.2]], margin=0.05)
-    return fig
+    fit_panel(ax, [*outline, *A3.get_xy(), tip, to_xy(sol.a[1]), to_xy(sol.a[2]),
+                   d.origin[0] - [0.0, 0.2]], margin=0.05)

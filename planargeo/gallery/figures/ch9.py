@@ -4,15 +4,12 @@ from __future__ import annotations
 import numpy as np
 
 from planargeo.mechanics.contacts import world_point
-from planargeo.mechanics.kinematics import kinematics
-from planargeo.scenes import build as build_scene
 from planargeo.draw.artists import plot_line
 from planargeo.draw.constructions import label
 from planargeo.draw.mechanism import draw_model
 from planargeo.draw.style import COLORS
-from planargeo.draw.layout import fit_view
-from planargeo.gallery.figures import new_figure, register
-from planargeo.draw.layout import fit_panel, shape_points
+from planargeo.draw.layout import fit_panel, fit_view, shape_points
+from planargeo.gallery.figures import register, scene_state
 
 
 def _contact_points(model, data):
@@ -27,29 +24,26 @@ def _tips(model, data):
 
 @register("fig9_1", "Fig. 9.1 — the rigid-body tree of scene 'tree': body 1 is the root (pinned), "
           "bodies 4, 7, 8 and 9 are the tips of the branches (parents (9.1): "
-          "−, 1, 2, 3, 1, 5, 6, 6, 1).", 9.01)
-def fig9_1():
-    res = build_scene("tree")
-    d = kinematics(res.model, res.state["q"], np.zeros(res.model.nq))
-    fig, ax = new_figure(3.4, 3.0)
+          "−, 1, 2, 3, 1, 5, 6, 6, 1).", 9.01,
+          height=3.0)
+def fig9_1(ax):
+    res, d = scene_state("tree")
     draw_model(res.model, d, ax, width=0.14, show_com=False, names=[str(k + 1) for k in range(9)])
     fit_view(ax, [*d.origin, *_tips(res.model, d)], margin=0.08)
-    return fig
 
 
 @register("fig9_2", "Fig. 9.2 — constrained tree (scene 'constrained-tree', gravity on): pin contacts "
           "(squares) close the loops 4–7 and 8–9 (G of 9.49), leaving 9 − 2·2 = 5 dof; the contact "
           "forces F = Bξ (9.70–9.71; arrows: F on body b, i.e. on 7 and 9) are computed with "
           "the tree's full stacked mobility Λ⁻¹ that (9.65)–(9.73) must use (the printed block-diagonal "
-          "Λ⁻¹ gets them 9 % wrong; docs/errata.md, chapter 9 item 6).", 9.02)
-def fig9_2():
+          "Λ⁻¹ gets them 9 % wrong; docs/errata.md, chapter 9 item 6).", 9.02,
+          height=3.0)
+def fig9_2(ax):
     from shapely.geometry import LineString, Point as SPoint
     from shapely.ops import unary_union
 
-    res = build_scene("constrained-tree")
+    res, d = scene_state("constrained-tree")
     m = res.model
-    d = kinematics(m, res.state["q"], np.asarray(res.state["qd"]))
-    fig, ax = new_figure(3.4, 3.0)
     arts = draw_model(m, d, ax, width=0.14, show_com=False, labels=False)
     bodies = unary_union(arts["shapes"])
     F = np.asarray(res.quantities["F"])
@@ -93,27 +87,28 @@ def fig9_2():
               ha="center", va="center")
     ax.text(0.02, 0.02, "\n".join(mags), transform=ax.transAxes, fontsize=7,
             color=COLORS["reaction"])
-    return fig
 
 
-def _slider_crank_base(ax, res):
-    m = res.model
-    d = kinematics(m, res.state["q"], np.asarray(res.state["qd"]))
-    arts = draw_model(m, d, ax, width=0.3, labels=False, show_com=True, pin_radius=0.1)
-    for i, body in enumerate(m.bodies):   # the piston's name right of its guide, the others left
-        right = i == 2
-        label(ax, d.com[i], body.name, offset=(18 if right else -9, 6 if i == 0 else 0), fontsize=7,
-              color="#1f3a4d", va="center", ha="left" if right else "right")
-    return d, shape_points(*arts["shapes"])
+def slider_crank(ax, **draw):
+    """The scene 'slider-crank' drawn at its state (``draw``: more options of ``draw_model``).
+
+    Returns the scene, its kinematics and the outline points of the drawn bodies.
+    """
+    res, d = scene_state("slider-crank")
+    arts = draw_model(res.model, d, ax, width=0.3, labels=False, show_com=True, pin_radius=0.1, **draw)
+    return res, d, shape_points(*arts["shapes"])
 
 
 @register("fig9_3", "Fig. 9.3 — slider-crank (scene 'slider-crank', thesis 9.6): relative rotations "
           "ψ, θ, φ with ψ + θ + φ = π/2; the state closes the loop at θ = 1.6063 (the printed 1.603 "
-          "and the signs of θ̇, φ̇ in 9.78–9.79 are corrected, docs/errata.md).", 9.03)
-def fig9_3():
-    res = build_scene("slider-crank")
-    fig, ax = new_figure(3.4, 3.4)
-    d, P = _slider_crank_base(ax, res)
+          "and the signs of θ̇, φ̇ in 9.78–9.79 are corrected, docs/errata.md).", 9.03,
+          height=3.4)
+def fig9_3(ax):
+    res, d, P = slider_crank(ax)
+    for i, body in enumerate(res.model.bodies):   # the piston's name right of its guide, the others left
+        right = i == 2
+        label(ax, d.com[i], body.name, offset=(18 if right else -9, 6 if i == 0 else 0), fontsize=7,
+              color="#1f3a4d", va="center", ha="left" if right else "right")
     q = res.state["q"]
     absang = np.cumsum(q)
     for i, (nm, val) in enumerate(zip(("ψ", "θ", "φ"), q)):
@@ -129,5 +124,4 @@ def fig9_3():
               f"{nm} = {val:.3f}", offset=((6, -12), (6, 2), (-62, 4))[i], fontsize=7,
               color=COLORS["twist"])
     fit_view(ax, np.vstack([P, P.min(axis=0) - [1.0, 0.4], P.max(axis=0) + [0.8, 0.2]]), margin=0.03)
-    return fig
 

@@ -3,31 +3,32 @@ from __future__ import annotations
 
 import numpy as np
 
+from shapely.ops import unary_union
+
 from planargeo.algorithms.articulated_inertia import articulated_inertia
 from planargeo.algorithms.rnea import newton_euler
 from planargeo.mechanics.contacts import world_point
-from planargeo.screws.inertia import Inertia, percussion_axis
-from planargeo.mechanics.kinematics import kinematics
+from planargeo.screws.inertia import Inertia, centre_of_mass, percussion_axis
+from planargeo.screws.twists import inertia_matrix
 from planargeo.geometry.projective import from_xy, to_xy
-from planargeo.scenes import build as build_scene
 from planargeo.draw.artists import plot_conic, plot_line, plot_point
-from planargeo.draw.mechanism import draw_body, draw_com, draw_joint_split, draw_model, link_polygon
-from planargeo.draw.layout import fit_view
-from planargeo.gallery.figures import new_figure, register
-from planargeo.draw.layout import shape_points
+from planargeo.draw.mechanism import draw_body, draw_joint_split, draw_model, link_polygon
+from planargeo.draw.layout import fit_view, shape_points
+from planargeo.gallery.figures import chain, register
+from planargeo.gallery.figures.ch3 import QD, QDD, Q
+from planargeo.gallery.figures.ch9 import slider_crank
 
 
 @register("extra_inertia_field", "Extra — the inertia as a point→line map (5.64–5.68): several "
           "acceleration poles a_k and their axes of percussion I a_k; the pole at the centre of mass "
           "maps to the line at infinity (a couple, corner glyph), a translation (ideal point, edge "
-          "arrow) to a line through the centre of mass.", 10.01)
-def extra_inertia_field():
-    fig, ax = new_figure(3.4, 2.8)
+          "arrow) to a line through the centre of mass.", 10.01,
+          height=2.8)
+def extra_inertia_field(ax):
     shape = link_polygon([-0.8, 0.0], [0.8, 0.0], 0.6)
     I = Inertia.from_polygon(shape).matrix
-    c = np.array([I[1, 2], -I[0, 2]]) / I[0, 0]
-    draw_body(shape, ax, alpha=0.2)
-    draw_com(c, ax)
+    c = centre_of_mass(I)
+    draw_body(shape, ax, alpha=0.2, com=c)
     plot_conic(I, ax, role="inertia")
     poles = [from_xy([-1.6, 0.9]), from_xy([1.3, -1.0]), from_xy([0.2, 1.3]), from_xy(c),
              np.array([1.0, 0.6, 0.0])]
@@ -42,21 +43,16 @@ def extra_inertia_field():
             anchor = foot + 1.3 * e
         plot_line(f, ax, role="wrench", scale=None, text=f"$Ia_{k}$", anchor=anchor, linewidth=1.2)
     fit_view(ax, [[-2.0, -1.4], [2.0, 1.6]], margin=0.02)
-    return fig
 
 
 @register("extra_joint_splits", "Extra — every joint force of a 3-link chain under gravity (RNEA) split "
           "into its active part T_iQ_i and its reaction R_iμ_i (6.38, 6.61) with T_i, U_i built on "
-          "the articulated inertia A_i (6.105); one panel per joint.", 10.02)
-def extra_joint_splits():
-    from shapely.ops import unary_union
-
-    from planargeo.gallery.figures.ch3 import QD, QDD, Q, _chain
-
-    m = _chain()
+          "the articulated inertia A_i (6.105); one panel per joint.", 10.02,
+          height=6.0, nrows=3)
+def extra_joint_splits(axs):
+    m = chain(3, gravity=(0.0, -9.81))
     w = newton_euler(m, Q, QD, QDD)
     r = articulated_inertia(m, Q, QD, w.tau)
-    fig, axs = new_figure(3.4, 6.0, nrows=3)
     for i, ax in enumerate(axs):
         arts = draw_model(m, w, ax, alpha=0.2, show_com=False)
         out, (Qi, mu, act, rea) = draw_joint_split(r.S[i], r.R[i], r.A[i], w.f[i], ax,
@@ -67,7 +63,6 @@ def extra_joint_splits():
                 fontsize=7, bbox=dict(fc="white", ec="none", pad=0.5))
         ends = [p for a in out.values() if a.get_arrow() is not None for p in a.get_arrow()]
         fit_view(ax, [*shape_points(*arts["shapes"]), *ends, [-0.3, -0.5]], margin=0.1)
-    return fig
 
 
 @register("extra_slider_crank", "Extra — slider-crank dynamics (scene 'slider-crank', 9.78–9.94): the "
@@ -75,13 +70,11 @@ def extra_joint_splits():
           "normal force through the contact point shifted by the contact couple; −F₃ acts on the "
           "piston, Definition 42), the closed-loop accelerations a₁, a₂ (poles; a₁ and the velocity "
           "pole v₁ at the crank's pivot) and a₃, v₃ (the piston translates: ideal "
-          "points, arrows at the edge).", 10.03)
-def extra_slider_crank():
-    res = build_scene("slider-crank")
+          "points, arrows at the edge).", 10.03,
+          height=3.6)
+def extra_slider_crank(ax):
+    res, d, outline = slider_crank(ax, alpha=0.25)
     m = res.model
-    d = kinematics(m, res.state["q"], np.asarray(res.state["qd"]))
-    fig, ax = new_figure(3.4, 3.6)
-    arts = draw_model(m, d, ax, width=0.3, show_com=True, pin_radius=0.1, alpha=0.25, labels=False)
     for i, body in enumerate(m.bodies):
         ax.annotate(body.name, xy=tuple(d.com[i]), xytext=(-10, 0), textcoords="offset points",
                     ha="right", va="center", fontsize=7, color="#1f3a4d")
@@ -97,10 +90,9 @@ def extra_slider_crank():
     v = np.asarray(res.quantities["v"])
     for k, off in ((0, (-22, -4)), (2, (8, -4))):     # v₂'s pole (the rod's ICR) lies far right
         plot_point(v[k], ax, role="twist", text=f"$v_{k + 1}$", glyph=False, text_offset=off)
-    pts = [shape_points(*arts["shapes"]), *[np.reshape(to_xy(x), (1, 2)) for x in a[:2]],
+    pts = [outline, *[np.reshape(to_xy(x), (1, 2)) for x in a[:2]],
            [pc + [1.6, 0.0], d.origin[0] - [1.2, 0.3]]]
     fit_view(ax, np.vstack(pts), margin=0.06)
-    return fig
 
 
 @register("extra_style_key", "Extra — the visual language used in every figure: twists (velocity "
@@ -108,11 +100,8 @@ def extra_slider_crank():
           "(translations, arrow at the view's edge), wrenches (orange lines with force arrows), "
           "reactions (green), momenta / active parts (purple), the line at infinity (a couple, "
           "corner glyph), inertias (dashed radius-of-gyration circle), constructions (grey dashed).",
-          0.5)
-def extra_style_key():
-    from planargeo.screws.twists import inertia_matrix
-
-    fig, ax = new_figure(3.4, 3.2)
+          0.5, height=3.2)
+def extra_style_key(ax):
     ax.set_xlim(0, 10)
     ax.set_ylim(-1.6, 7.6)
     rows = [
@@ -137,4 +126,3 @@ def extra_style_key():
     # bottom band: an ideal point (arrow at the view's lower edge, label above it) and a couple
     plot_point(np.array([-1.0, 0.0, 0.0]), ax, text="translation (ideal point)")
     plot_line(np.array([0.0, 0.0, 1.0]), ax, text="couple", corner="lower right")
-    return fig
