@@ -194,6 +194,14 @@ class _Base(martist.Artist):
     def get_children(self):
         return list(self._children)
 
+    def _add_arc_glyph(self, linewidth):
+        """Children ``_arc``, ``_head``: a rotation's arc arrow (:func:`_arc_glyph`), display space."""
+        self._arc = self._add_child(Line2D([0, 0], [0, 0], color=self._color, linewidth=linewidth))
+        self._arc.set_transform(IdentityTransform())
+        self._head = self._add_child(Polygon(np.zeros((3, 2)), closed=True, color=self._color,
+                                             linewidth=0))
+        self._head.set_transform(IdentityTransform())
+
     def set_text(self, text):
         """Set the text label drawn next to the glyph."""
         self._text.set_text("" if text is None else str(text))
@@ -303,11 +311,7 @@ class PointArtist(_Base):
                                               markersize=markersize or st["markersize"],
                                               color=self._color, markeredgecolor="white",
                                               markeredgewidth=0.6))
-        self._arc = self._add_child(Line2D([0, 0], [0, 0], color=self._color, linewidth=1.0))
-        self._arc.set_transform(IdentityTransform())
-        self._head = self._add_child(Polygon(np.zeros((3, 2)), closed=True, color=self._color,
-                                             linewidth=0))
-        self._head.set_transform(IdentityTransform())
+        self._add_arc_glyph(1.0)
         self._arrow = self._add_child(FancyArrowPatch((0, 0), (1, 1), arrowstyle="-|>",
                                                       mutation_scale=9, color=self._color,
                                                       linewidth=1.4, shrinkA=0, shrinkB=0,
@@ -460,11 +464,7 @@ class LineArtist(_Base):
         self._arrow = self._add_child(FancyArrowPatch((0, 0), (1, 1), arrowstyle="-|>",
                                                       mutation_scale=10, color=self._color,
                                                       linewidth=2.0, shrinkA=0, shrinkB=0))
-        self._arc = self._add_child(Line2D([0, 0], [0, 0], color=self._color, linewidth=1.4))
-        self._arc.set_transform(IdentityTransform())
-        self._head = self._add_child(Polygon(np.zeros((3, 2)), closed=True, color=self._color,
-                                             linewidth=0))
-        self._head.set_transform(IdentityTransform())
+        self._add_arc_glyph(1.4)
         self._text.set_color(self._color)
 
     def _on_axes(self, ax):

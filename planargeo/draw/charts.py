@@ -14,8 +14,9 @@ _DASHES = ["-", "--", "-.", ":", (0, (5, 1, 1, 1)), (0, (1, 1)), (0, (8, 2))]
 
 def _curves(ax, x, ys, labels, title):
     """One line per ``ys[k]`` over ``x``, the k-th colour and dash (readable in grey); the title."""
-    arts = [ax.plot(x, y, color=CURVE_COLORS[k % len(CURVE_COLORS)], linestyle=_DASHES[k % len(_DASHES)],
-                    lw=LINEWIDTHS["chart"], label=lab)[0] for k, (y, lab) in enumerate(zip(ys, labels))]
+    arts = [ax.plot(x, y, color=CURVE_COLORS[k % len(CURVE_COLORS)],
+                    linestyle=_DASHES[k % len(_DASHES)], lw=LINEWIDTHS["chart"], label=lab)[0]
+            for k, (y, lab) in enumerate(zip(ys, labels))]
     if title:
         ax.set_title(title)
     return arts

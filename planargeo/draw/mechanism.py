@@ -187,12 +187,12 @@ def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None, ga
     --------
     >>> import matplotlib; matplotlib.use("Agg")
     >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
     >>> from planargeo.mechanics.joints import revolute
     >>> from planargeo.screws.twists import inertia_matrix
     >>> j = revolute([0.0, 0.0])
     >>> A = inertia_matrix(2.0, [1.0, 0.0], 0.3)
     >>> f = np.array([0.0, 1.0, 2.0])                     # 1 N upwards on the line x = 2 (4.27)
-    >>> fig, ax = plt.subplots()
     >>> out, (Q, mu, TQ, Rmu) = draw_joint_split(j.s, j.R, A, f, ax, name="1", anchor=[0.0, 0.0])
     >>> bool(np.allclose(TQ + Rmu, f)), sorted(out)
     (True, ['active', 'f', 'reaction'])

@@ -137,7 +137,7 @@ def rc_context():
 
 
 def _entry(table: dict, key: str, what: str, overrides: dict) -> dict:
-    """A copy of ``table[key]`` updated by ``overrides``; an unknown key is an InputError naming ``what``."""
+    """``table[key]`` updated by ``overrides`` (a copy); an unknown key: InputError naming ``what``."""
     if key not in table:
         raise InputError(f"{what} must be one of {sorted(table)}, got {key!r}")
     return {**table[key], **overrides}

@@ -1,8 +1,9 @@
 """Registry of gallery figures (one function per thesis figure) and what they share.
 
-A figure module registers a drawing function ``draw(ax)`` with :func:`register`:
-the registered builder makes the figure (:func:`new_figure`), draws on its axes
-from computed quantities and returns it.  :func:`load_all` imports every module
+A figure module registers a drawing function ``figC_K(ax)`` with
+:func:`register`: its name is the SVG file stem, its docstring the caption; the
+registered builder makes the figure (:func:`new_figure`), draws on its axes from
+computed quantities and returns it.  :func:`load_all` imports every module
 of :data:`MODULES`; an import error propagates (a figure never silently drops
 out of the gallery).  :func:`chain` and :func:`scene_state` are the models and
 states several figures draw.
@@ -10,10 +11,12 @@ states several figures draw.
 from __future__ import annotations
 
 import importlib
+import inspect
 from dataclasses import dataclass
 from typing import Callable
 
 from planargeo.draw.style import COLUMN_WIDTH, setup_axes
+from planargeo.errors import PlanargeoError
 from planargeo.mechanics.kinematics import kinematics
 from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.scenes import build as build_scene
@@ -32,20 +35,32 @@ class FigureSpec:
 REGISTRY: dict[str, FigureSpec] = {}
 
 
-def register(name: str, caption: str, order: float, *, height: float = 2.8, **layout):
-    """Decorator: register ``draw(ax)`` as the figure ``name`` (the SVG file stem).
+def register(order: float, *, height: float = 2.8, **layout):
+    """Decorator: register ``draw(ax)`` as a figure, ``order`` its place in the gallery.
 
-    The figure's ``build() -> Figure`` makes a one-column figure ``height``
-    inches tall with :func:`new_figure` (``layout``: its keywords), calls
-    ``draw`` with its axes (an array of axes for several panels) and returns it.
+    The function's name is the figure's name (the SVG file stem) and its
+    docstring, its lines joined by spaces, the caption.  The figure's
+    ``build() -> Figure`` makes a one-column figure ``height`` inches tall with
+    :func:`new_figure` (``layout``: its keywords), calls ``draw`` with its axes
+    (an array of axes for several panels) and returns it.
+
+    Raises
+    ------
+    PlanargeoError
+        If ``draw`` has no docstring (``python -OO`` drops them): no caption.
     """
     def deco(draw):
+        if not draw.__doc__:
+            raise PlanargeoError(f"figure {draw.__name__} has no caption: captions are the figure "
+                                 f"functions' docstrings, which python -OO drops")
+
         def build():
             fig, ax = new_figure(height, **layout)
             draw(ax)
             return fig
 
-        REGISTRY[name] = FigureSpec(name, caption, build, order)
+        caption = " ".join(inspect.cleandoc(draw.__doc__).splitlines())
+        REGISTRY[draw.__name__] = FigureSpec(draw.__name__, caption, build, order)
         return draw
     return deco
 
@@ -100,6 +115,6 @@ def chain(n: int, *, base: str = "revolute", gravity=(0.0, 0.0), tip_com: float 
 
 
 def scene_state(name: str, **params):
-    """The scene ``name`` (:func:`planargeo.scenes.build`) and its model's kinematics at its state."""
+    """The scene ``name`` (:func:`planargeo.scenes.build`) and the kinematics at its state."""
     res = build_scene(name, **params)
     return res, kinematics(res.model, res.state["q"], res.state["qd"])

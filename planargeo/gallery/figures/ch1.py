@@ -33,10 +33,11 @@ def _arrow(ax, p, d, text, color, offset=(4, 4)):
     label(ax, q, text, color=color, offset=offset, fontsize=7)
 
 
-@register("fig1_2", "Fig. 1.2 — material acceleration of a disk spinning at constant ω: the body "
-          "point at P moves on a circle, so its acceleration v̇_P + ω × v_P = −ω² r is centripetal "
-          "(computed from the twist with X_P and crm).", 1.02, height=2.3)
+@register(1.02, height=2.3)
 def fig1_2(ax):
+    """Fig. 1.2 — material acceleration of a disk spinning at constant ω: the body point at P moves
+    on a circle, so its acceleration v̇_P + ω × v_P = −ω² r is centripetal (computed from the twist
+    with X_P and crm)."""
     v, vP = _disk(ax)
     a_spatial = np.zeros(3)                     # dv/dt = 0 for constant spin
     aP = (X_P(P) @ a_spatial)[:2] + (crm(v) @ np.append(vP, 0.0))[:2]  # ω × v_P
@@ -51,11 +52,12 @@ def fig1_2(ax):
             ls="--")
 
 
-@register("fig1_3", "Fig. 1.3 — spatial acceleration of the same disk is zero: the velocity of "
-          "whatever body point occupies the fixed spatial location P is the same at every instant "
-          "(grey dots: body points that are at P a moment before and after; each has velocity v_P "
-          "there, one arrow), so a = dv/dt = 0 (no acceleration pole).", 1.03, height=2.3)
+@register(1.03, height=2.3)
 def fig1_3(ax):
+    """Fig. 1.3 — spatial acceleration of the same disk is zero: the velocity of whatever body
+    point occupies the fixed spatial location P is the same at every instant (grey dots: body
+    points that are at P a moment before and after; each has velocity v_P there, one arrow), so
+    a = dv/dt = 0 (no acceleration pole)."""
     _, vP = _disk(ax)
     for k, dt in enumerate((-0.12, 0.0, 0.12)):
         # the body point that is at P at time dt had been elsewhere: its own velocity at P is still vP

@@ -19,10 +19,11 @@ QD = np.array([1.0, -0.8, 1.2])
 QDD = np.array([0.5, 1.0, -1.5])
 
 
-@register("fig3_1", "Fig. 3.1 — free-body diagram of body i = 2 of a chain under gravity: applied "
-          "g₂, internal f₂ from joint 2 and −f₃ from joint 3 (RNEA); they balance "
-          "f₂ − f₃ + g₂ = I₂a₂ − (v₂×)ᵀI₂v₂ (3.9).", 3.01, height=2.6)
+@register(3.01, height=2.6)
 def fig3_1(ax):
+    """Fig. 3.1 — free-body diagram of body i = 2 of a chain under gravity: applied g₂, internal f₂
+    from joint 2 and −f₃ from joint 3 (RNEA); they balance f₂ − f₃ + g₂ = I₂a₂ − (v₂×)ᵀI₂v₂
+    (3.9)."""
     m = chain(3, gravity=(0.0, -9.81))
     w = newton_euler(m, Q, QD, QDD)
     i = 1
@@ -38,11 +39,11 @@ def fig3_1(ax):
     fit_view(ax, [*w.origin, w.com[-1] * 2 - w.origin[-1]], margin=0.2)
 
 
-@register("fig3_2", "Fig. 3.2 — articulated body: bodies 2…n treated as one body with the "
-          "articulated inertia A₂ (3.20–3.27), so the internal force f₂ and the acceleration a₂ "
-          "relate by f₂ = A₂a₂ + d₂ (7.7; at rest, no gravity, joint torques from RNEA).", 3.02,
-          height=2.6)
+@register(3.02, height=2.6)
 def fig3_2(ax):
+    """Fig. 3.2 — articulated body: bodies 2…n treated as one body with the articulated inertia A₂
+    (3.20–3.27), so the internal force f₂ and the acceleration a₂ relate by f₂ = A₂a₂ + d₂ (7.7; at
+    rest, no gravity, joint torques from RNEA)."""
     m = chain(3)
     w = newton_euler(m, Q, np.zeros(3), QDD)
     r = articulated_inertia(m, Q, np.zeros(3), w.tau)   # the joint torques that realise QDD

@@ -16,10 +16,10 @@ from planargeo.draw.layout import fit_view
 from planargeo.gallery.figures import chain, register
 
 
-@register("fig4_1", "Fig. 4.1 — two rotations add to a rotation on the line through their poles: "
-          "ω₃ = ω₁ + ω₂ (4.11), P = Q₁ + β(Q₂ − Q₁) with β = ω₂/(ω₁ + ω₂) (4.12–4.13).", 4.01,
-          height=1.9)
+@register(4.01, height=1.9)
 def fig4_1(ax):
+    """Fig. 4.1 — two rotations add to a rotation on the line through their poles: ω₃ = ω₁ + ω₂
+    (4.11), P = Q₁ + β(Q₂ − Q₁) with β = ω₂/(ω₁ + ω₂) (4.12–4.13)."""
     v1 = 1.0 * unit_rotation([0.0, 0.0])
     v2 = 2.0 * unit_rotation([3.0, 0.0])
     out = draw_twist_sum(v1, v2, ax, labels=("$v_1$ (ω=1)", "$v_2$ (ω=2)", "$v_3$ (ω=3)"),
@@ -29,14 +29,14 @@ def fig4_1(ax):
     draw_dimension(ax, Q1, P, r"$\beta k$", offset=-0.55)
     draw_dimension(ax, Q1, Q2, "$k$", offset=-1.0)
     legend([("twist", "point", "twist (pole)"), ("twist", "sum-point", "sum of twists"),
-            ("construct", "line", "lever line")], ax, loc="lower right")
+            ("construct", "line", "lever line")], ax)
     fit_view(ax, [Q1, Q2, P, Q1 + [0, -1.1], Q2 + [2.2, 0.6]], margin=0.06)
 
 
-@register("fig4_2", "Fig. 4.2 — lever rule in statics: the reactions R₁, R₂ balancing a load F on a "
-          "simply supported beam, solved as wrenches (F + R₁ + R₂ = 0); β = R₂/(R₁ + R₂) (4.14–4.15).",
-          4.02, height=1.9)
+@register(4.02, height=1.9)
 def fig4_2(ax):
+    """Fig. 4.2 — lever rule in statics: the reactions R₁, R₂ balancing a load F on a simply
+    supported beam, solved as wrenches (F + R₁ + R₂ = 0); β = R₂/(R₁ + R₂) (4.14–4.15)."""
     L, xF, Fmag = 4.0, 1.0, 3.0
     F = join(from_xy([xF, 0.0]), from_xy([xF, -1.0])) * Fmag       # downward load through (xF, 0)
     B = np.column_stack([join(from_xy([0.0, 0.0]), from_xy([0.0, 1.0])),   # unit upward force at 0
@@ -63,10 +63,10 @@ def fig4_2(ax):
     fit_view(ax, [[-0.3, -1.4], [L + 0.3, 1.4]], margin=0.03)
 
 
-@register("fig4_3", "Fig. 4.3 — a rotation v₁ (ω) plus a translation v₂ (speed u, an ideal point, "
-          "arrow at the edge of the view) is a rotation about P = Q + ρn, ρ = u/ω (4.16).", 4.03,
-          height=2.4)
+@register(4.03, height=2.4)
 def fig4_3(ax):
+    """Fig. 4.3 — a rotation v₁ (ω) plus a translation v₂ (speed u, an ideal point, arrow at the
+    edge of the view) is a rotation about P = Q + ρn, ρ = u/ω (4.16)."""
     omega, u, lam = 1.0, 1.5, np.deg2rad(30)
     v1 = omega * unit_rotation([0.0, 0.0])
     v2 = u * unit_translation([np.cos(lam), np.sin(lam)])
@@ -82,12 +82,12 @@ def fig4_3(ax):
     fit_view(ax, [Q, P, Q - [1.2, 0.8], P + [1.2, 0.5]], margin=0.1)
 
 
-@register("fig4_4", "Fig. 4.4 — two crossing forces add by the parallelogram rule; f₃ passes through "
-          "the meet P = f₁ × f₂ of f₁ and f₂ (4.33–4.39). Erratum: the printed meet 4.35 with the "
-          "intercepts of 4.37 has the sign of one y-intercept wrong (both are −τᵢ/f_xi); P is "
-          "computed homogeneously, see docs/errata.md (4.37).", 4.04,
-          height=2.4)
+@register(4.04, height=2.4)
 def fig4_4(ax):
+    """Fig. 4.4 — two crossing forces add by the parallelogram rule; f₃ passes through the meet
+    P = f₁ × f₂ of f₁ and f₂ (4.33–4.39). Erratum: the printed meet 4.35 with the intercepts of
+    4.37 has the sign of one y-intercept wrong (both are −τᵢ/f_xi); P is computed homogeneously,
+    see docs/errata.md (4.37)."""
     f1 = join(from_xy([-1.0, 0.5]), from_xy([0.0, 1.0])) * 1.2
     f2 = join(from_xy([2.0, -1.0]), from_xy([1.6, 0.5])) * 1.0
     draw_wrench_sum(f1, f2, ax, scale=0.9)
@@ -95,10 +95,10 @@ def fig4_4(ax):
     fit_view(ax, [P, P + 0.9 * (f1 + f2)[:2], [-1.0, -1.0], P + [1.8, 1.5]], margin=0.12)
 
 
-@register("fig4_5", "Fig. 4.5 — parallel forces add like two rotations: f₃ lies between them by the "
-          "lever rule, F₃ = F₁ + F₂, d₃ = d₁ + β(d₂ − d₁), β = F₂/(F₁ + F₂) (4.40–4.45).", 4.05,
-          height=2.0)
+@register(4.05, height=2.0)
 def fig4_5(ax):
+    """Fig. 4.5 — parallel forces add like two rotations: f₃ lies between them by the lever rule,
+    F₃ = F₁ + F₂, d₃ = d₁ + β(d₂ − d₁), β = F₂/(F₁ + F₂) (4.40–4.45)."""
     f1 = join(from_xy([0.0, 0.0]), from_xy([0.0, -1.0])) * 2.0     # downward through x = 0
     f2 = join(from_xy([3.0, 0.0]), from_xy([3.0, -1.0])) * 1.0     # downward through x = 3
     out = draw_wrench_sum(f1, f2, ax, scale=0.4, anchors=([0, 0.45], [3, 0.45], [0, 0.15]),
@@ -114,14 +114,15 @@ def fig4_5(ax):
     fit_view(ax, [[-1.3, -1.9], [3.5, 1.0]], margin=0.05)
 
 
-@register("fig4_6", "Fig. 4.6 — a force f₁ plus a pure couple f₂ (the line at infinity, glyph in the "
-          "corner) is a parallel force at ρ = τ/F (4.46).", 4.06, height=2.0)
+@register(4.06, height=2.0)
 def fig4_6(ax):
+    """Fig. 4.6 — a force f₁ plus a pure couple f₂ (the line at infinity, glyph in the corner) is a
+    parallel force at ρ = τ/F (4.46)."""
     F, tau = 2.0, 1.5
     f1 = join(from_xy([0.0, 0.0]), from_xy([0.0, 1.0])) * F
     f2 = np.array([0.0, 0.0, tau])
-    draw_wrench_sum(f1, f2, ax, scale=0.4, labels=("$f_1$", "$f_2$ = couple τ", "$f_3 = f_1 + f_2$"),
-                    anchors=([0, 0], None, [0, 0]))
+    draw_wrench_sum(f1, f2, ax, scale=0.4, anchors=([0, 0], None, [0, 0]),
+                    labels=("$f_1$", "$f_2$ = couple τ", "$f_3 = f_1 + f_2$"))
     x3 = to_xy(meet(f1 + f2, [1.0, 0.0, 0.0]))
     draw_dimension(ax, [0, -0.7], [x3[0], -0.7], r"$\rho = \tau/F$")
     fit_view(ax, [[-1.2, -1.0], [x3[0] + 1.2, 1.0]], margin=0.05)
@@ -148,11 +149,11 @@ def chain47(ax, **draw):
     return w, draw_model(m, w, ax, **draw)
 
 
-@register("fig4_7", "Fig. 4.7 — velocity kinematics v_i = v_{i−1} + s_i q̇_i (4.47): the pole of v₃ "
-          "lies on the line joining the pole of v₂ and the joint, at β k with β = q̇/(q̇ + ω_{i−1}) "
-          "(4.48–4.49); computed with planargeo.mechanics.kinematics.", 4.07,
-          height=2.6)
+@register(4.07, height=2.6)
 def fig4_7(ax):
+    """Fig. 4.7 — velocity kinematics v_i = v_{i−1} + s_i q̇_i (4.47): the pole of v₃ lies on the
+    line joining the pole of v₂ and the joint, at β k with β = q̇/(q̇ + ω_{i−1}) (4.48–4.49);
+    computed with planargeo.mechanics.kinematics."""
     d, _ = chain47(ax, show_com=False)
     i = 2
     out = draw_velocity_step(d.v[i - 1], d.s(i)[:, 0], QD47[i], ax,
@@ -162,16 +163,16 @@ def fig4_7(ax):
     assert np.allclose(out["values"]["v"], d.v[i])
     out["v"].set_text_alignment("right")
     legend([("twist", "point", r"twists $v_2$, $s_3\dot q_3$"),
-            ("twist", "sum-point", r"$v_3 = v_2 + s_3\dot q_3$")], ax, loc="lower right")
+            ("twist", "sum-point", r"$v_3 = v_2 + s_3\dot q_3$")], ax)
     tip = d.pose[i, :2] + 0.8 * np.array([np.cos(d.pose[i, 2]), np.sin(d.pose[i, 2])])
     fit_view(ax, [to_xy(d.v[i - 1]), to_xy(d.v[i]), *d.origin, tip], margin=0.12)
 
 
-@register("fig4_8", "Fig. 4.8 — acceleration kinematics a_i = a_{i−1} + s_i q̈_i + v_i × s_i q̇_i "
-          "(4.52): the bias term is a translation (ideal point); s_i q̈_i plus the bias is a rotation "
-          "offset from the joint (4.54), and a_i lies on its line to a_{i−1}.", 4.08,
-          height=2.8)
+@register(4.08, height=2.8)
 def fig4_8(ax):
+    """Fig. 4.8 — acceleration kinematics a_i = a_{i−1} + s_i q̈_i + v_i × s_i q̇_i (4.52): the
+    bias term is a translation (ideal point); s_i q̈_i plus the bias is a rotation offset from the
+    joint (4.54), and a_i lies on its line to a_{i−1}."""
     w, _ = chain47(ax, show_com=False, labels=False)
     i = 2
     out = draw_acceleration_step(
@@ -188,11 +189,11 @@ def fig4_8(ax):
              margin=0.15)
 
 
-@register("fig4_9", "Fig. 4.9 — Newton–Euler for body 2 of a chain: f_net = I a + p (4.55–4.56); "
-          "I a is the axis of percussion of a, p the centripetal force through the centre of mass "
-          "toward the velocity pole, f_net = f₂ − f₃ the net joint force (RNEA, no gravity).", 4.09,
-          height=2.8)
+@register(4.09, height=2.8)
 def fig4_9(ax):
+    """Fig. 4.9 — Newton–Euler for body 2 of a chain: f_net = I a + p (4.55–4.56); I a is the axis
+    of percussion of a, p the centripetal force through the centre of mass toward the velocity
+    pole, f_net = f₂ − f₃ the net joint force (RNEA, no gravity)."""
     w, _ = chain47(ax, labels=False)
     i = 1
     out = draw_newton_euler(w.I[i], w.a[i], w.v[i], ax, scale=0.07,
@@ -203,17 +204,16 @@ def fig4_9(ax):
                                           (-30.0, 8.0)))
     assert np.allclose(out["values"]["f_net"], w.f[i] - w.f[i + 1])   # RNEA agrees (4.55)
     legend([("wrench", "line", "force"), ("wrench", "sum-line", "sum of forces"),
-            ("momentum", "line", "centripetal $p$"), ("inertia", "line", "inertia")], ax,
-           loc="lower right")
+            ("momentum", "line", "centripetal $p$"), ("inertia", "line", "inertia")], ax)
     c = w.com[i]
     fit_view(ax, [to_xy(w.v[i]), to_xy(w.a[i]), *w.origin, c, c + [1.6, 0.0]], margin=0.1)
 
 
-@register("fig4_10", "Fig. 4.10 — local frame of the planar examples: origin at the joint, x toward "
-          "the centre of mass at distance C; the inertia (4.58) drawn as its radius-of-gyration "
-          "circle r about the centre of mass.", 4.10,
-          height=1.9)
+@register(4.1, height=1.9)
 def fig4_10(ax):
+    """Fig. 4.10 — local frame of the planar examples: origin at the joint, x toward the centre of
+    mass at distance C; the inertia (4.58) drawn as its radius-of-gyration circle r about the
+    centre of mass."""
     mass, C, r = 1.0, 1.2, 0.45
     I = inertia_matrix(mass, [C, 0.0], mass * r * r)
     draw_link([0, 0], [2 * C, 0], ax, width=0.5)

@@ -65,10 +65,10 @@ def _coords(ax, alternative: bool):
     fit_view(ax, [[-0.6, -1.6], [2.8, 2.6]], margin=0.03)
 
 
-@register("fig5_1", "Fig. 5.1 — standard homogeneous coordinates: a point P = [1, r n] and a line "
-          "L = [r, −n] at distance r with unit normal n (5.1–5.16); both built with "
-          "projective.from_standard.", 5.01, height=2.7)
+@register(5.01, height=2.7)
 def fig5_1(ax):
+    """Fig. 5.1 — standard homogeneous coordinates: a point P = [1, r n] and a line L = [r, −n] at
+    distance r with unit normal n (5.1–5.16); both built with projective.from_standard."""
     _coords(ax, alternative=False)
 
 
@@ -76,11 +76,11 @@ def _ellipse():
     return conic_ellipse([0.0, 0.0], [1.6, 1.0], np.deg2rad(15))
 
 
-@register("fig5_2", "Fig. 5.2 — polar of an exterior point: the tangents from P touch the conic C at "
-          "two points whose join is L = C P (5.36); a point Q on C maps to its tangent M = C Q "
-          "(5.38–5.39). From conics.polar_construction_exterior.", 5.02,
-          height=2.6)
+@register(5.02, height=2.6)
 def fig5_2(ax):
+    """Fig. 5.2 — polar of an exterior point: the tangents from P touch the conic C at two points
+    whose join is L = C P (5.36); a point Q on C maps to its tangent M = C Q (5.38–5.39). From
+    conics.polar_construction_exterior."""
     C = _ellipse()
     p = from_xy([2.6, 1.3])
     draw_polar_exterior(C, p, ax)
@@ -94,11 +94,11 @@ def fig5_2(ax):
     fit_view(ax, [[-2.0, -1.6], [2.9, 1.6]], margin=0.05)
 
 
-@register("fig5_3", "Fig. 5.3 — polar of an interior point: two chords through P; the tangents at "
-          "each chord's ends meet at its pole R_i (Theorem 12); L = C P joins R₁ and R₂. From "
-          "conics.polar_construction_interior.", 5.03,
-          height=2.8)
+@register(5.03, height=2.8)
 def fig5_3(ax):
+    """Fig. 5.3 — polar of an interior point: two chords through P; the tangents at each chord's
+    ends meet at its pole R_i (Theorem 12); L = C P joins R₁ and R₂. From
+    conics.polar_construction_interior."""
     C = _ellipse()
     p = from_xy([1.0, 0.45])
     out = draw_polar_interior(C, p, ax, angles=(np.deg2rad(75), np.deg2rad(150)),
@@ -110,11 +110,11 @@ def fig5_3(ax):
     fit_view(ax, [R1, R2, [-1.8, -1.2], [1.8, 1.2]], margin=0.15)
 
 
-@register("fig5_4", "Fig. 5.4 — special decomposition P = u₁Q₁ + u₂Q₂ + u₃Q₃ (5.42) on Q₁ exterior "
-          "and Q₂, Q₃ its tangent contacts, so u_i come from single projections (5.44–5.45); the "
-          "dual lines M_i = C Q_i decompose L = C P with the same u_i (5.43, 5.46).", 5.04,
-          height=2.8)
+@register(5.04, height=2.8)
 def fig5_4(ax):
+    """Fig. 5.4 — special decomposition P = u₁Q₁ + u₂Q₂ + u₃Q₃ (5.42) on Q₁ exterior and Q₂, Q₃ its
+    tangent contacts, so u_i come from single projections (5.44–5.45); the dual lines M_i = C Q_i
+    decompose L = C P with the same u_i (5.43, 5.46)."""
     C = _ellipse()
     Q1, Q2, Q3 = special_base(C, from_xy([2.4, 1.6]))
     P = from_xy([0.4, -0.5])
@@ -143,27 +143,26 @@ def fig5_4(ax):
     fit_view(ax, [q1, [-1.9, -1.5], [1.9, 1.5]], margin=0.1)
 
 
-@register("fig5_5", "Fig. 5.5 — alternative homogeneous coordinates (5.47–5.56): P = [−r e; 1] "
-          "with e ⟂ n (5.49–5.50), L = [e; r] with e along the line (5.55): a twist about P and a "
-          "wrench along L.", 5.05, height=2.7)
+@register(5.05, height=2.7)
 def fig5_5(ax):
+    """Fig. 5.5 — alternative homogeneous coordinates (5.47–5.56): P = [−r e; 1] with e ⟂ n
+    (5.49–5.50), L = [e; r] with e along the line (5.55): a twist about P and a wrench along L."""
     _coords(ax, alternative=True)
 
 
 def _body(ax):
-    """The link of Figs 5.6-5.7, drawn with its centre of mass; returns its inertia (from the polygon)."""
+    """The link of Figs 5.6-5.7 drawn with its centre of mass; returns its inertia (from the shape)."""
     shape = link_polygon([-0.2, 0.0], [2.2, 0.0], 0.7)
     I = Inertia.from_polygon(shape, density=1.0)
     draw_body(shape, ax, com=I.com)
     return I
 
 
-@register("fig5_6", "Fig. 5.6 — the inertia maps an acceleration pole a to its axis of percussion "
-          "f = I a (5.64–5.68): at distance d from the centre of mass, the axis lies beyond it at "
-          "ρ²/d. Inertia from the body's polygon (Inertia.from_polygon), drawn as its "
-          "radius-of-gyration circle.", 5.06,
-          height=2.0)
+@register(5.06, height=2.0)
 def fig5_6(ax):
+    """Fig. 5.6 — the inertia maps an acceleration pole a to its axis of percussion f = I a
+    (5.64–5.68): at distance d from the centre of mass, the axis lies beyond it at ρ²/d. Inertia
+    from the body's polygon (Inertia.from_polygon), drawn as its radius-of-gyration circle."""
     I = _body(ax)
     c = np.asarray(I.com)
     a = from_xy(c - [1.5, 0.0])
@@ -176,11 +175,11 @@ def fig5_6(ax):
     fit_view(ax, [to_xy(a) - [0.3, 0], [2.6, -0.7], [2.6, 0.7]], margin=0.06)
 
 
-@register("fig5_7", "Fig. 5.7 — power relations: a powerless force f passes through the velocity "
-          "pole v (vᵀf = 0, 5.69), and a powerless acceleration a lies on the momentum line "
-          "p = I v (pᵀa = 0, 5.71–5.72).", 5.07,
-          height=2.4)
+@register(5.07, height=2.4)
 def fig5_7(ax):
+    """Fig. 5.7 — power relations: a powerless force f passes through the velocity pole v (vᵀf = 0,
+    5.69), and a powerless acceleration a lies on the momentum line p = I v (pᵀa = 0,
+    5.71–5.72)."""
     I = _body(ax)
     v = 1.2 * from_xy([0.6, -1.1])
     out = draw_power(v, I.matrix, ax, text_offsets=((-14.0, -16.0), (8.0, 4.0), (0.0, -14.0), None),

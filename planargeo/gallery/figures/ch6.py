@@ -43,12 +43,12 @@ def _view(ax, shape, pts, margin=0.1, *, panel=False):
     (fit_view if panel else fit_panel)(ax, P, margin=margin)
 
 
-@register("fig6_1", "Fig. 6.1 — basic decomposition at a pin joint: force space [T R₁ R₂] with "
-          "T = I s the axis of percussion of the joint (6.2–6.3) and two unit reactions through "
-          "the joint; their mapped accelerations I⁻¹T = s, I⁻¹R₁, I⁻¹R₂ (percussion poles). "
-          "Drawn by constructions.draw_decomposition.", 6.01,
-          height=2.6)
+@register(6.01, height=2.6)
 def fig6_1(ax):
+    """Fig. 6.1 — basic decomposition at a pin joint: force space [T R₁ R₂] with T = I s the axis
+    of percussion of the joint (6.2–6.3) and two unit reactions through the joint; their mapped
+    accelerations I⁻¹T = s, I⁻¹R₁, I⁻¹R₂ (percussion poles). Drawn by
+    constructions.draw_decomposition."""
     shape, I, j = _pinned_body(ax)
     out = draw_decomposition(
         j.s, j.R, I, ax, reactive="inverse",
@@ -67,12 +67,12 @@ def fig6_1(ax):
     _view(ax, shape, pts + [[pts[1][0] + 1.5, lo], [-0.7, pts[0][1] + 0.3]], margin=0.02)
 
 
-@register("fig6_2", "Fig. 6.2 — decoupled decomposition (6.36–6.48): the reactive accelerations "
-          "U = I⁻¹R(RᵀI⁻¹R)⁻¹ lie on the axis of percussion T, U₁ on R₂ and U₂ on R₁, so "
-          "RᵀU = 1 (6.47–6.48). Drawn with the inverse that the printed (6.33)–(6.34) miss (there RᵀU = (RᵀI⁻¹R)², not 1; "
-          "docs/errata.md, (6.33)–(6.34)). From constructions.draw_decomposition.", 6.02,
-          height=2.6)
+@register(6.02, height=2.6)
 def fig6_2(ax):
+    """Fig. 6.2 — decoupled decomposition (6.36–6.48): the reactive accelerations
+    U = I⁻¹R(RᵀI⁻¹R)⁻¹ lie on the axis of percussion T, U₁ on R₂ and U₂ on R₁, so RᵀU = 1
+    (6.47–6.48). Drawn with the inverse that the printed (6.33)–(6.34) miss (there RᵀU = (RᵀI⁻¹R)²,
+    not 1; docs/errata.md, (6.33)–(6.34)). From constructions.draw_decomposition."""
     shape, I, j = _pinned_body(ax)
     out = draw_decomposition(j.s, j.R, I, ax, text_offsets={
         "s": (-12, 5), "T": (5, -3), "R1": (-14, -13), "R2": (-14, -4), "U1": (6, 3),
@@ -87,7 +87,7 @@ def fig6_2(ax):
 
 
 def _split_panels(axs, kind):
-    """Figs 6.3-6.4: an acceleration (``kind`` "inertia") or a force split by the pin joint, A and B."""
+    """Figs 6.3-6.4: an acceleration (``kind`` "inertia") or a force split by the pin joint."""
     if kind == "inertia":
         q = from_xy([2.6, -0.4]) * 1.0          # an acceleration pole, unit α
         draw, names = draw_twist_split, {"a1": "$a_1 = s\\psi$", "a2": "$a_2 = U\\gamma$",
@@ -128,29 +128,27 @@ def _split_panels(axs, kind):
         _view(ax, shape, [xa, [-0.7, -0.95], [2.9, 1.95]], margin=0.02, panel=True)
 
 
-@register("fig6_3", "Fig. 6.3 — inertia decomposition I = T sᵀI + R UᵀI (6.75–6.76): an "
-          "acceleration a = sψ + Uγ; A) f₁ = I sψ accelerates the body about the joint (on T), "
-          "B) f₂ = I Uγ accelerates it along the reactive space (a force through the joint). "
-          "Drawn by constructions.draw_twist_split.", 6.03,
-          height=4.2, nrows=2)
+@register(6.03, height=4.2, nrows=2)
 def fig6_3(axs):
+    """Fig. 6.3 — inertia decomposition I = T sᵀI + R UᵀI (6.75–6.76): an acceleration a = sψ + Uγ;
+    A) f₁ = I sψ accelerates the body about the joint (on T), B) f₂ = I Uγ accelerates it along the
+    reactive space (a force through the joint). Drawn by constructions.draw_twist_split."""
     _split_panels(axs, "inertia")
 
 
-@register("fig6_4", "Fig. 6.4 — inverse inertia decomposition (6.77–6.81): a force f = TQ + Rμ; "
-          "A) the active part TQ produces a₁ = sTᵀI⁻¹f about the joint, B) the reaction Rμ "
-          "produces a₂ = URᵀI⁻¹f on the axis T. Drawn by constructions.draw_wrench_split.", 6.04,
-          height=4.2, nrows=2)
+@register(6.04, height=4.2, nrows=2)
 def fig6_4(axs):
+    """Fig. 6.4 — inverse inertia decomposition (6.77–6.81): a force f = TQ + Rμ; A) the active
+    part TQ produces a₁ = sTᵀI⁻¹f about the joint, B) the reaction Rμ produces a₂ = URᵀI⁻¹f on the
+    axis T. Drawn by constructions.draw_wrench_split."""
     _split_panels(axs, "inverse")
 
 
-@register("fig6_5", "Fig. 6.5 — projective kinematics (6.98–6.101): ψ_i = T_iᵀa_i and ψ_{i−1} = "
-          "T_iᵀa_{i−1} are the absolute accelerations along joint i, q̈_i = ψ_i − T_iᵀ(a_{i−1} + "
-          "κ_i); T_i from the body inertia of link 2 (RNEA state). Drawn by "
-          "constructions.draw_projective_step.", 6.05,
-          height=2.8)
+@register(6.05, height=2.8)
 def fig6_5(ax):
+    """Fig. 6.5 — projective kinematics (6.98–6.101): ψ_i = T_iᵀa_i and ψ_{i−1} = T_iᵀa_{i−1} are
+    the absolute accelerations along joint i, q̈_i = ψ_i − T_iᵀ(a_{i−1} + κ_i); T_i from the body
+    inertia of link 2 (RNEA state). Drawn by constructions.draw_projective_step."""
     w, arts = chain47(ax, show_com=False)
     i = 1
     P = np.vstack([shape_points(*arts["shapes"]), to_xy(w.a[i - 1]), to_xy(w.a[i])])
@@ -168,11 +166,11 @@ def fig6_5(ax):
             va="bottom")
 
 
-@register("fig6_6", "Fig. 6.6 — car cornering and accelerating (6.114–6.133, scene 'car'): the ICR "
-          "is the joint s, the tyre reactions R₁μ₁ (rear) and R₂μ₂ (front) act along the axles, "
-          "f_A drives the front wheels; a is the resulting acceleration pole.", 6.06,
-          height=3.0)
+@register(6.06, height=3.0)
 def fig6_6(ax):
+    """Fig. 6.6 — car cornering and accelerating (6.114–6.133, scene 'car'): the ICR is the joint
+    s, the tyre reactions R₁μ₁ (rear) and R₂μ₂ (front) act along the axles, f_A drives the front
+    wheels; a is the resulting acceleration pole."""
     res = build_scene("car")
     ex, qn = res.extra, res.quantities
     shape = res.model.bodies[0].shape

@@ -32,11 +32,11 @@ def _chain4(ax, q, base="revolute"):
     return m, d, shape_points(*arts["shapes"])
 
 
-@register("fig7_1", "Fig. 7.1 — articulated inertia A_i of a free-floating sub-chain (7.1–7.8): the "
-          "internal force f_i at joint i accelerates body i by a_i = A_i⁻¹ f_i (at rest), including "
-          "the bodies beyond; A₂ drawn as its (sign-flipped) conic about the effective centre.", 7.01,
-          height=2.6)
+@register(7.01, height=2.6)
 def fig7_1(ax):
+    """Fig. 7.1 — articulated inertia A_i of a free-floating sub-chain (7.1–7.8): the internal
+    force f_i at joint i accelerates body i by a_i = A_i⁻¹ f_i (at rest), including the bodies
+    beyond; A₂ drawn as its (sign-flipped) conic about the effective centre."""
     q = np.concatenate([[0.0, 0.0, 0.2], Q4[1:]])
     m, d, outline = _chain4(ax, q, base="plane")
     i = 1
@@ -53,11 +53,11 @@ def fig7_1(ax):
     fit_panel(ax, [*outline, to_xy(a), o - [1.0, 0.0]], margin=0.06)
 
 
-@register("fig7_2", "Fig. 7.2 — articulated mobility Λ_i⁻¹ of a constrained chain (7.28–7.38, "
-          "corrected sign of 7.38a, see docs/errata.md): the load −f_{i+1} on body i "
-          "accelerates it by a_i = −Λ_i⁻¹ f_{i+1} (at rest), including the bodies before it.", 7.02,
-          height=2.6)
+@register(7.02, height=2.6)
 def fig7_2(ax):
+    """Fig. 7.2 — articulated mobility Λ_i⁻¹ of a constrained chain (7.28–7.38, corrected sign of
+    7.38a, see docs/errata.md): the load −f_{i+1} on body i accelerates it by a_i = −Λ_i⁻¹ f_{i+1}
+    (at rest), including the bodies before it."""
     m, d, outline = _chain4(ax, Q4)
     i = 1
     o = d.origin[i + 1]
@@ -70,12 +70,11 @@ def fig7_2(ax):
     fit_panel(ax, [*outline, to_xy(a), d.origin[0] - [0.0, 0.15]], margin=0.06)
 
 
-@register("fig7_3", "Fig. 7.3 — two identical bodies at angle φ pushed by a horizontal force f₁ at "
-          "CJ₁ (scene 'two-body', 7.9–7.24): the articulated inertia A₁ (black) from the bodies' "
-          "inertias (grey); a₁ = A₁⁻¹f₁ is the acceleration pole of body 1 (below CJ₁); "
-          "m_x = {A₁}₁₁ (7.12).", 7.03,
-          height=2.9, ncols=2, gridspec_kw={"width_ratios": [2.3, 1.0]})
+@register(7.03, height=2.9, ncols=2, gridspec_kw={"width_ratios": [2.3, 1.0]})
 def fig7_3(axs):
+    """Fig. 7.3 — two identical bodies at angle φ pushed by a horizontal force f₁ at CJ₁ (scene
+    'two-body', 7.9–7.24): the articulated inertia A₁ (black) from the bodies' inertias (grey);
+    a₁ = A₁⁻¹f₁ is the acceleration pole of body 1 (below CJ₁); m_x = {A₁}₁₁ (7.12)."""
     from matplotlib.patches import Rectangle
 
     res, d = scene_state("two-body")
@@ -113,11 +112,11 @@ def fig7_3(axs):
                                    lw=0.6))
 
 
-@register("fig7_4", "Fig. 7.4 — effective horizontal mass m_x/m of the two-body example over φ for "
-          "several size ratios λ = L/ρ (7.22), computed with the articulated inertia recursion "
-          "(scene 'two-body'); the λ → ∞ limit is 1 + cos²φ (7.23).", 7.04,
-          height=2.4, margins=(0.16, 0.97, 0.18, 0.95))
+@register(7.04, height=2.4, margins=(0.16, 0.97, 0.18, 0.95))
 def fig7_4(ax):
+    """Fig. 7.4 — effective horizontal mass m_x/m of the two-body example over φ for several size
+    ratios λ = L/ρ (7.22), computed with the articulated inertia recursion (scene 'two-body'); the
+    λ → ∞ limit is 1 + cos²φ (7.23)."""
     phi = np.linspace(0, np.pi, 61)
     lams = (0.5, 1.0, 2.0, 4.0, 10.0)
     ys = [[build_scene("two-body", rho=1.0 / lam, phi=p).quantities["mx_over_m"] for p in phi]
@@ -129,11 +128,11 @@ def fig7_4(ax):
     ax.set_xticks([0, 45, 90, 135, 180])
 
 
-@register("fig7_5", "Fig. 7.5 — horizontal chain of n bodies (scene 'horizontal-chain', 7.25–7.27): "
-          "the articulated inertia A₁ of the first body grows with each body added; its effective "
-          "centre d₁ is marked for n = 1…4 (λ = 2 here).", 7.05,
-          height=1.8)
+@register(7.05, height=1.8)
 def fig7_5(ax):
+    """Fig. 7.5 — horizontal chain of n bodies (scene 'horizontal-chain', 7.25–7.27): the
+    articulated inertia A₁ of the first body grows with each body added; its effective centre d₁ is
+    marked for n = 1…4 (λ = 2 here)."""
     lam = 2.0
     res, d = scene_state("horizontal-chain", n=4, lam=lam)
     draw_model(res.model, d, ax, show_com=True, ground=False, labels=False)
@@ -157,7 +156,7 @@ LAM_CHART = (0.17, 0.97, 0.19, 0.95)
 
 
 def _lam_chart(ax, key, ylabel, caption_n=(2, 3, 4)):
-    """Figs 7.6-7.8: the first body's articulated-inertia quantity ``key`` of the horizontal chain over λ."""
+    """Figs 7.6-7.8: the quantity ``key`` of the first body's articulated inertia over λ."""
     lam = np.geomspace(0.1, 10.0, 49)
     ys = [[build_scene("horizontal-chain", n=n, lam=x).quantities[key] for x in lam]
           for n in caption_n]
@@ -165,34 +164,34 @@ def _lam_chart(ax, key, ylabel, caption_n=(2, 3, 4)):
                 xlabel="λ = L/ρ", ylabel=ylabel, logx=True)
 
 
-@register("fig7_6", "Fig. 7.6 — relative location d/L of the effective centre of the first body over "
-          "λ = L/ρ (7.26–7.27); n = 2 is the thesis's two-body system, n = 3, 4 added for comparison "
-          "(d/L = (λ²+12)/(2(λ²+8)) for n = 2, derived in docs/errata.md).", 7.06,
-          height=2.3, margins=LAM_CHART)
+@register(7.06, height=2.3, margins=LAM_CHART)
 def fig7_6(ax):
+    """Fig. 7.6 — relative location d/L of the effective centre of the first body over λ = L/ρ
+    (7.26–7.27); n = 2 is the thesis's two-body system, n = 3, 4 added for comparison
+    (d/L = (λ²+12)/(2(λ²+8)) for n = 2, derived in docs/errata.md)."""
     _lam_chart(ax, "d_over_L", "$d/L$")
 
 
-@register("fig7_7", "Fig. 7.7 — effective vertical mass m_y/m of the first body over λ (7.26); "
-          "m_y/m = (λ²+8)/(λ²+4) for n = 2. The thesis's claim that bodies beyond two change nothing "
-          "at λ = 2 holds for m_y (all curves meet at 3/2) but not for m_x (errata §5).", 7.07,
-          height=2.3, margins=LAM_CHART)
+@register(7.07, height=2.3, margins=LAM_CHART)
 def fig7_7(ax):
+    """Fig. 7.7 — effective vertical mass m_y/m of the first body over λ (7.26);
+    m_y/m = (λ²+8)/(λ²+4) for n = 2. The thesis's claim that bodies beyond two change nothing at
+    λ = 2 holds for m_y (all curves meet at 3/2) but not for m_x (errata §5)."""
     _lam_chart(ax, "my_over_m", "$m_y/m$")
 
 
-@register("fig7_8", "Fig. 7.8 — effective rotational inertia A_z/(mρ²) of the first body over λ "
-          "(7.26); 2(λ²+4)/(λ²+8) for n = 2; all n meet at 4/3 for λ = 2.", 7.08,
-          height=2.3, margins=LAM_CHART)
+@register(7.08, height=2.3, margins=LAM_CHART)
 def fig7_8(ax):
+    """Fig. 7.8 — effective rotational inertia A_z/(mρ²) of the first body over λ (7.26);
+    2(λ²+4)/(λ²+8) for n = 2; all n meet at 4/3 for λ = 2."""
     _lam_chart(ax, "Az_over_m_rho2", r"$A_z/(m\rho^2)$")
 
 
-@register("fig7_9", "Fig. 7.9 — articulated mobility example (scene 'mobility-example', 7.40–7.49): "
-          "CJ₁ pinned to the ground, a pure couple f₃ (line at infinity) on body 2; its acceleration "
-          "pole a₂ lies on the x axis at x/L = 1 + 2η²cosφ/(4 + 5η²) (corrected 7.38a).", 7.09,
-          height=2.2)
+@register(7.09, height=2.2)
 def fig7_9(ax):
+    """Fig. 7.9 — articulated mobility example (scene 'mobility-example', 7.40–7.49): CJ₁ pinned to
+    the ground, a pure couple f₃ (line at infinity) on body 2; its acceleration pole a₂ lies on the
+    x axis at x/L = 1 + 2η²cosφ/(4 + 5η²) (corrected 7.38a)."""
     res, d = scene_state("mobility-example")
     draw_model(res.model, d, ax)
     a2 = np.array(res.quantities["a2"])
@@ -204,11 +203,11 @@ def fig7_9(ax):
     fit_view(ax, [*d.origin, d.com[1] * 2 - d.origin[1], x, [0, -0.5]], margin=0.12)
 
 
-@register("fig7_10", "Fig. 7.10 — polar plot of the instant centre x/L of body 2 over φ for several "
-          "η = L/ρ (7.47–7.49), computed with the corrected articulated mobility (the printed sign "
-          "of 7.38a gives e.g. 1.613 instead of 1.236 at φ = 45°, η = 2; docs/errata.md).",
-          7.10, height=3.0, polar=[0.1, 0.1, 0.66, 0.8])
+@register(7.1, height=3.0, polar=[0.1, 0.1, 0.66, 0.8])
 def fig7_10(ax):
+    """Fig. 7.10 — polar plot of the instant centre x/L of body 2 over φ for several η = L/ρ
+    (7.47–7.49), computed with the corrected articulated mobility (the printed sign of 7.38a gives
+    e.g. 1.613 instead of 1.236 at φ = 45°, η = 2; docs/errata.md)."""
     phi = np.linspace(0, 2 * np.pi, 121)
     etas = (0.5, 1.0, 2.0, 4.0)
     rs = [[build_scene("mobility-example", rho=1.0 / eta, phi=p).quantities["x_over_L"] for p in phi]
@@ -216,14 +215,14 @@ def fig7_10(ax):
     polar_curves(phi, rs, [f"η = {e:g}" for e in etas], ax, rlabel="x/L")
 
 
-@register("fig7_11", "Fig. 7.11 — chain splitting (7.50–7.56): an external force F on the tip; the "
-          "chain is split at joint 3 into a constrained chain (bodies 1–2, articulated mobility "
-          "Λ₂⁻¹) and a free-floating chain (bodies 3–4, articulated inertia A₃); the internal force "
-          "f₃ from 7.56 gives a₂ = b₂ − Λ₂⁻¹f₃ and a₃ = A₃⁻¹(f₃ − d₃) (here at rest without gravity, "
-          "b₂ = 0). Computed with listings 7.1.1 and 7.4.1 as corrected for applied loads (docs/errata.md, "
-          "chapter 7 items 2 and 3).", 7.11,
-          height=2.6)
+@register(7.11, height=2.6)
 def fig7_11(ax):
+    """Fig. 7.11 — chain splitting (7.50–7.56): an external force F on the tip; the chain is split
+    at joint 3 into a constrained chain (bodies 1–2, articulated mobility Λ₂⁻¹) and a free-floating
+    chain (bodies 3–4, articulated inertia A₃); the internal force f₃ from 7.56 gives
+    a₂ = b₂ − Λ₂⁻¹f₃ and a₃ = A₃⁻¹(f₃ − d₃) (here at rest without gravity, b₂ = 0). Computed with
+    listings 7.1.1 and 7.4.1 as corrected for applied loads (docs/errata.md, chapter 7 items 2 and
+    3)."""
     m, d, outline = _chain4(ax, Q4)
     z = np.zeros(4)
     F = np.zeros((4, 3))

@@ -22,23 +22,22 @@ def _tips(model, data):
     return [data.pose[i, :2] + 2 * (data.com[i] - data.pose[i, :2]) for i in range(model.N)]
 
 
-@register("fig9_1", "Fig. 9.1 — the rigid-body tree of scene 'tree': body 1 is the root (pinned), "
-          "bodies 4, 7, 8 and 9 are the tips of the branches (parents (9.1): "
-          "−, 1, 2, 3, 1, 5, 6, 6, 1).", 9.01,
-          height=3.0)
+@register(9.01, height=3.0)
 def fig9_1(ax):
+    """Fig. 9.1 — the rigid-body tree of scene 'tree': body 1 is the root (pinned), bodies 4, 7, 8
+    and 9 are the tips of the branches (parents (9.1): −, 1, 2, 3, 1, 5, 6, 6, 1)."""
     res, d = scene_state("tree")
     draw_model(res.model, d, ax, width=0.14, show_com=False, names=[str(k + 1) for k in range(9)])
     fit_view(ax, [*d.origin, *_tips(res.model, d)], margin=0.08)
 
 
-@register("fig9_2", "Fig. 9.2 — constrained tree (scene 'constrained-tree', gravity on): pin contacts "
-          "(squares) close the loops 4–7 and 8–9 (G of 9.49), leaving 9 − 2·2 = 5 dof; the contact "
-          "forces F = Bξ (9.70–9.71; arrows: F on body b, i.e. on 7 and 9) are computed with "
-          "the tree's full stacked mobility Λ⁻¹ that (9.65)–(9.73) must use (the printed block-diagonal "
-          "Λ⁻¹ gets them 9 % wrong; docs/errata.md, chapter 9 item 6).", 9.02,
-          height=3.0)
+@register(9.02, height=3.0)
 def fig9_2(ax):
+    """Fig. 9.2 — constrained tree (scene 'constrained-tree', gravity on): pin contacts (squares)
+    close the loops 4–7 and 8–9 (G of 9.49), leaving 9 − 2·2 = 5 dof; the contact forces F = Bξ
+    (9.70–9.71; arrows: F on body b, i.e. on 7 and 9) are computed with the tree's full stacked
+    mobility Λ⁻¹ that (9.65)–(9.73) must use (the printed block-diagonal Λ⁻¹ gets them 9 % wrong;
+    docs/errata.md, chapter 9 item 6)."""
     from shapely.geometry import LineString, Point as SPoint
     from shapely.ops import unary_union
 
@@ -95,17 +94,18 @@ def slider_crank(ax, **draw):
     Returns the scene, its kinematics and the outline points of the drawn bodies.
     """
     res, d = scene_state("slider-crank")
-    arts = draw_model(res.model, d, ax, width=0.3, labels=False, show_com=True, pin_radius=0.1, **draw)
+    arts = draw_model(res.model, d, ax, width=0.3, labels=False, show_com=True, pin_radius=0.1,
+                      **draw)
     return res, d, shape_points(*arts["shapes"])
 
 
-@register("fig9_3", "Fig. 9.3 — slider-crank (scene 'slider-crank', thesis 9.6): relative rotations "
-          "ψ, θ, φ with ψ + θ + φ = π/2; the state closes the loop at θ = 1.6063 (the printed 1.603 "
-          "and the signs of θ̇, φ̇ in 9.78–9.79 are corrected, docs/errata.md).", 9.03,
-          height=3.4)
+@register(9.03, height=3.4)
 def fig9_3(ax):
+    """Fig. 9.3 — slider-crank (scene 'slider-crank', thesis 9.6): relative rotations ψ, θ, φ with
+    ψ + θ + φ = π/2; the state closes the loop at θ = 1.6063 (the printed 1.603 and the signs of
+    θ̇, φ̇ in 9.78–9.79 are corrected, docs/errata.md)."""
     res, d, P = slider_crank(ax)
-    for i, body in enumerate(res.model.bodies):   # the piston's name right of its guide, the others left
+    for i, body in enumerate(res.model.bodies):  # the piston's name right of its guide, others left
         right = i == 2
         label(ax, d.com[i], body.name, offset=(18 if right else -9, 6 if i == 0 else 0), fontsize=7,
               color="#1f3a4d", va="center", ha="left" if right else "right")

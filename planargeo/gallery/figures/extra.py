@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 import numpy as np
-
 from shapely.ops import unary_union
 
 from planargeo.algorithms.articulated_inertia import articulated_inertia
@@ -12,6 +11,7 @@ from planargeo.screws.inertia import Inertia, centre_of_mass, percussion_axis
 from planargeo.screws.twists import inertia_matrix
 from planargeo.geometry.projective import from_xy, to_xy
 from planargeo.draw.artists import plot_conic, plot_line, plot_point
+from planargeo.draw.constructions import label
 from planargeo.draw.mechanism import draw_body, draw_joint_split, draw_model, link_polygon
 from planargeo.draw.layout import fit_view, shape_points
 from planargeo.gallery.figures import chain, register
@@ -19,12 +19,12 @@ from planargeo.gallery.figures.ch3 import QD, QDD, Q
 from planargeo.gallery.figures.ch9 import slider_crank
 
 
-@register("extra_inertia_field", "Extra — the inertia as a point→line map (5.64–5.68): several "
-          "acceleration poles a_k and their axes of percussion I a_k; the pole at the centre of mass "
-          "maps to the line at infinity (a couple, corner glyph), a translation (ideal point, edge "
-          "arrow) to a line through the centre of mass.", 10.01,
-          height=2.8)
+@register(10.01, height=2.8)
 def extra_inertia_field(ax):
+    """Extra — the inertia as a point→line map (5.64–5.68): several acceleration poles a_k and
+    their axes of percussion I a_k; the pole at the centre of mass maps to the line at infinity (a
+    couple, corner glyph), a translation (ideal point, edge arrow) to a line through the centre of
+    mass."""
     shape = link_polygon([-0.8, 0.0], [0.8, 0.0], 0.6)
     I = Inertia.from_polygon(shape).matrix
     c = centre_of_mass(I)
@@ -38,18 +38,18 @@ def extra_inertia_field(ax):
         anchor = None
         if np.any(f[:2]):
             e = f[:2] / np.hypot(*f[:2])
-            foot = c + e * ((c - c) @ e) - np.array([-e[1], e[0]]) * (
+            foot = c - np.array([-e[1], e[0]]) * (
                 (f[2] + c[1] * f[0] - c[0] * f[1]) / np.hypot(*f[:2]))   # foot of c on f (4.27)
             anchor = foot + 1.3 * e
         plot_line(f, ax, role="wrench", scale=None, text=f"$Ia_{k}$", anchor=anchor, linewidth=1.2)
     fit_view(ax, [[-2.0, -1.4], [2.0, 1.6]], margin=0.02)
 
 
-@register("extra_joint_splits", "Extra — every joint force of a 3-link chain under gravity (RNEA) split "
-          "into its active part T_iQ_i and its reaction R_iμ_i (6.38, 6.61) with T_i, U_i built on "
-          "the articulated inertia A_i (6.105); one panel per joint.", 10.02,
-          height=6.0, nrows=3)
+@register(10.02, height=6.0, nrows=3)
 def extra_joint_splits(axs):
+    """Extra — every joint force of a 3-link chain under gravity (RNEA) split into its active part
+    T_iQ_i and its reaction R_iμ_i (6.38, 6.61) with T_i, U_i built on the articulated inertia A_i
+    (6.105); one panel per joint."""
     m = chain(3, gravity=(0.0, -9.81))
     w = newton_euler(m, Q, QD, QDD)
     r = articulated_inertia(m, Q, QD, w.tau)
@@ -65,19 +65,18 @@ def extra_joint_splits(axs):
         fit_view(ax, [*shape_points(*arts["shapes"]), *ends, [-0.3, -0.5]], margin=0.1)
 
 
-@register("extra_slider_crank", "Extra — slider-crank dynamics (scene 'slider-crank', 9.78–9.94): the "
-          "guide drawn from the model's slider contact, the contact force F₃ = Bξ (its line: the "
-          "normal force through the contact point shifted by the contact couple; −F₃ acts on the "
-          "piston, Definition 42), the closed-loop accelerations a₁, a₂ (poles; a₁ and the velocity "
-          "pole v₁ at the crank's pivot) and a₃, v₃ (the piston translates: ideal "
-          "points, arrows at the edge).", 10.03,
-          height=3.6)
+@register(10.03, height=3.6)
 def extra_slider_crank(ax):
+    """Extra — slider-crank dynamics (scene 'slider-crank', 9.78–9.94): the guide drawn from the
+    model's slider contact, the contact force F₃ = Bξ (its line: the normal force through the
+    contact point shifted by the contact couple; −F₃ acts on the piston, Definition 42), the
+    closed-loop accelerations a₁, a₂ (poles; a₁ and the velocity pole v₁ at the crank's pivot) and
+    a₃, v₃ (the piston translates: ideal points, arrows at the edge)."""
     res, d, outline = slider_crank(ax, alpha=0.25)
     m = res.model
     for i, body in enumerate(m.bodies):
-        ax.annotate(body.name, xy=tuple(d.com[i]), xytext=(-10, 0), textcoords="offset points",
-                    ha="right", va="center", fontsize=7, color="#1f3a4d")
+        label(ax, d.com[i], body.name, offset=(-10, 0), ha="right", va="center", fontsize=7,
+              color="#1f3a4d")
     (contact,) = m.contacts
     pc = world_point(d.pose, contact.a, contact.point_a)          # the slider's contact point
     a = np.asarray(res.quantities["a"])
@@ -95,13 +94,13 @@ def extra_slider_crank(ax):
     fit_view(ax, np.vstack(pts), margin=0.06)
 
 
-@register("extra_style_key", "Extra — the visual language used in every figure: twists (velocity "
-          "poles, blue, arc arrow = sense and size of ω), accelerations (vermillion), ideal points "
-          "(translations, arrow at the view's edge), wrenches (orange lines with force arrows), "
-          "reactions (green), momenta / active parts (purple), the line at infinity (a couple, "
-          "corner glyph), inertias (dashed radius-of-gyration circle), constructions (grey dashed).",
-          0.5, height=3.2)
+@register(0.5, height=3.2)
 def extra_style_key(ax):
+    """Extra — the visual language used in every figure: twists (velocity poles, blue, arc
+    arrow = sense and size of ω), accelerations (vermillion), ideal points (translations, arrow at
+    the view's edge), wrenches (orange lines with force arrows), reactions (green), momenta /
+    active parts (purple), the line at infinity (a couple, corner glyph), inertias (dashed
+    radius-of-gyration circle), constructions (grey dashed)."""
     ax.set_xlim(0, 10)
     ax.set_ylim(-1.6, 7.6)
     rows = [
