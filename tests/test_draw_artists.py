@@ -407,3 +407,64 @@ def test_line_label_offset_none_is_the_default(ax):
     # a point's None offset is automatic (clear of the glyph), a conic's is (6, -10)
     assert np.isfinite(plot_point([0.0, 0.0, 1.0], ax, text="P", text_offset=None)._text_offset).all()
     np.testing.assert_allclose(plot_conic(inertia_matrix(1.0, [0, 0], 1.0), ax)._text_offset, [6.0, -10.0])
+
+
+def test_plot_functions_default_to_the_current_axes():
+    """``ax=None`` means ``plt.gca()`` for every plot function and for the legend."""
+    from planargeo.draw.style import legend
+
+    fig = plt.figure()
+    try:
+        ax = fig.gca()
+        arts = [plot_point([0.0, 0.0, 1.0]), plot_line([1.0, 0.0, 0.0]),
+                plot_conic(np.diag([1.0, 1.0, -1.0])), plot_inertia(inertia_matrix(1.0, [0, 0], 0.5))]
+        assert all(a.axes is ax for a in arts)
+        leg = legend([("twist", "point", "a twist"), ("reaction", "sum-line", "a sum")])
+        assert ax.get_legend() is leg
+        assert [t.get_text() for t in leg.get_texts()] == ["a twist", "a sum"]
+        assert leg.get_lines()[1].get_linewidth() == 3.4       # a sum: the heavier line of SUM
+    finally:
+        plt.close(fig)
+
+
+def test_style_and_legend_name_the_bad_argument():
+    from planargeo.draw.style import legend, style, sum_style
+
+    with pytest.raises(InputError, match="role must be one of .* got 'force'"):
+        style("force")
+    with pytest.raises(InputError, match="kind must be one of \\['line', 'point'\\], got 'arc'"):
+        sum_style("arc")
+    fig, ax = plt.subplots()
+    try:
+        with pytest.raises(InputError, match="legend item kind .* got 'dot'"):
+            legend([("twist", "dot", "x")], ax)
+    finally:
+        plt.close(fig)
+    assert style("wrench", linewidth=3.0)["linewidth"] == 3.0 and style("wrench")["linewidth"] == 1.8
+
+
+def test_charts_curves_and_polar_axes():
+    """Each curve gets its own colour and dash; a polar chart needs a polar axes."""
+    from planargeo.draw.charts import CURVE_COLORS, plot_curves, polar_curves
+
+    fig, ax = plt.subplots()
+    try:
+        x = np.linspace(0.0, 1.0, 5)
+        lines = plot_curves(x, [x, x ** 2], ["x", "x²"], ax, ylim=(0.0, 2.0),
+                            legend=dict(ncol=2, loc="upper left"))
+        np.testing.assert_array_equal(lines[1].get_ydata(), x ** 2)
+        assert [ln.get_color() for ln in lines] == CURVE_COLORS[:2]
+        assert lines[0].get_linestyle() != lines[1].get_linestyle()
+        assert ax.get_ylim() == (0.0, 2.0) and ax.get_legend()._ncols == 2
+        with pytest.raises(InputError, match="ax must be a polar axes"):
+            polar_curves(x, [x], ["r"], ax)
+    finally:
+        plt.close(fig)
+    fig = plt.figure()
+    try:
+        pax = fig.add_subplot(projection="polar")
+        (ln,) = polar_curves(x, [1.0 + x], ["r"], rlabel="r/L")     # ax=None: the current (polar) axes
+        assert ln.axes is pax
+        np.testing.assert_array_equal(ln.get_xydata(), np.column_stack([x, 1.0 + x]))
+    finally:
+        plt.close(fig)

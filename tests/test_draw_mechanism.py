@@ -67,3 +67,32 @@ def test_prismatic_slider_follows_the_joint_axis_not_the_body_angle(ax):
     M = (rect.get_transform() - ax.transData).get_matrix()   # the block's own rotation
     ang = np.arctan2(M[1, 0], M[0, 0])
     assert ang == pytest.approx(0.5)
+
+
+def test_draw_body_marks_the_centre_of_mass(ax):
+    """``com=`` adds the quartered disc centred there (radius 0.07), after the body's patches."""
+    from matplotlib.patches import Wedge
+
+    from planargeo.draw.mechanism import draw_body, link_polygon
+
+    shape = link_polygon([0.0, 0.0], [2.0, 0.0], 0.4)
+    plain = draw_body(shape, ax)
+    assert not any(isinstance(p, Wedge) for p in plain)
+    marked = draw_body(shape, ax, com=(1.0, 0.0))
+    wedges = [p for p in marked if isinstance(p, Wedge)]
+    assert len(marked) == len(plain) + 4 and marked[-4:] == wedges
+    assert all(w.center == (1.0, 0.0) and w.r == 0.07 for w in wedges)
+    assert sorted((w.theta1, w.theta2) for w in wedges) == [(0, 90), (90, 180), (180, 270), (270, 360)]
+
+
+def test_draw_frame_axes_turned_by_angle(ax):
+    """The x arrow points along ``angle``, the y arrow 90° further; ``angle`` is keyword-only."""
+    from planargeo.draw.mechanism import draw_frame
+
+    x_arrow, _, y_arrow, _ = draw_frame([1.0, 2.0], ax, angle=np.pi / 6, length=2.0)
+    c, s = np.cos(np.pi / 6), np.sin(np.pi / 6)
+    np.testing.assert_allclose(x_arrow.xy, [1.0 + 2.0 * c, 2.0 + 2.0 * s], atol=1e-12)
+    np.testing.assert_allclose(y_arrow.xy, [1.0 - 2.0 * s, 2.0 + 2.0 * c], atol=1e-12)
+    np.testing.assert_allclose(x_arrow.xyann, [1.0, 2.0])
+    with pytest.raises(TypeError):
+        draw_frame([0.0, 0.0], 0.3, ax)                 # the old positional angle
