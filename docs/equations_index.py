@@ -4,8 +4,9 @@ Every implementing function cites its equations in its docstring, the way the co
 book: ``(thesis 3.31-3.42)``, ``(6.113b)``, ``thesis 7.54/7.56``.  This script reads the
 docstrings of ``planargeo/`` (by parsing, without importing anything), keeps the numbers that
 are equation labels of the thesis (``(3.31)`` in ``shared/thesis``; a range ``3.31-3.42`` is
-every label between), and writes one table row per equation.  ``tests/test_equations_index.py``
-checks that the committed file is what this script writes.
+every label between), and writes one table row per equation.  ``planargeo/gallery/`` is left
+out: its figure functions' docstrings are captions, citing what a figure illustrates.
+``tests/test_equations_index.py`` checks that the committed file is what this script writes.
 
 Run: ``python docs/equations_index.py`` (rewrites ``docs/equations.md``).
 """
@@ -74,6 +75,8 @@ def implementations(labels: list[str]) -> dict[str, list[str]]:
     """``{label: ["planargeo.module.function", ...]}`` over the public functions, classes and methods."""
     index = defaultdict(list)
     for path in sorted(PKG.rglob("*.py")):
+        if (PKG / "gallery") in path.parents:             # captions of figures, not implementations
+            continue
         parts = list(path.relative_to(ROOT).with_suffix("").parts)
         if parts[-1] == "__init__":
             parts.pop()
