@@ -1,6 +1,7 @@
 """Drawing: twists as points, wrenches as lines, inertias as conics (matplotlib).
 
-Math modules never import matplotlib; this package imports the math.
+Math modules never import matplotlib; this package imports the math.  Every drawing
+function takes what it draws first and ``ax=None`` next (None: the current axes).
 
 * :mod:`~planargeo.draw.artists`: ``PointArtist``, ``LineArtist``, ``ConicArtist`` and
   ``plot_point`` / ``plot_line`` / ``plot_conic`` / ``plot_inertia``;
@@ -11,8 +12,9 @@ Math modules never import matplotlib; this package imports the math.
 * :mod:`~planargeo.draw.mechanism`: bodies, pins, sliders, ground, ``draw_model``,
   ``draw_joint_split``;
 * :mod:`~planargeo.draw.charts`: curves over a parameter;
-* :mod:`~planargeo.draw.style`: the one visual language (Okabe-Ito roles, fixed rcParams);
-* :mod:`~planargeo.gallery.build`: ``planargeo gallery [--out DIR] [--check]``.
+* :mod:`~planargeo.draw.layout`: views fitted to computed points;
+* :mod:`~planargeo.draw.style`: the one visual language (Okabe-Ito roles, fixed rcParams,
+  ``legend``).
 """
 from planargeo.draw.artists import (ConicArtist, LineArtist, PointArtist, plot_conic, plot_inertia,  # noqa: F401
                       plot_line, plot_point)

@@ -1,4 +1,4 @@
-"""Layout helpers for the figures of chapters 6, 7, 9 and the extras (views fitted to computed points)."""
+"""Views fitted to computed points (and the figure height to their aspect) for the gallery figures."""
 from __future__ import annotations
 
 import numpy as np
