@@ -468,3 +468,22 @@ def test_charts_curves_and_polar_axes():
         np.testing.assert_array_equal(ln.get_xydata(), np.column_stack([x, 1.0 + x]))
     finally:
         plt.close(fig)
+
+
+@pytest.mark.parametrize("u, ha, va", [((1.0, 0.0), "left", "center"), ((0.0, -1.0), "center", "top"),
+                                       ((-0.6, 0.8), "right", "bottom")])
+def test_label_beside_extends_away_along_u(ax, u, ha, va):
+    """``set_text_beside(u, gap)``: the drawn label lies wholly on the ``u`` side of its anchor."""
+    from matplotlib.text import Text
+
+    art = plot_line([0.0, 1.0, 0.0], ax, scale=1.0, anchor=[0.0, 1.0], text="$F$", text_at="anchor")
+    art.set_text_beside(u, 6.0)
+    ax.figure.canvas.draw()
+    (text,) = [c for c in art.get_children() if isinstance(c, Text) and c.get_text() == "$F$"]
+    assert (text.get_horizontalalignment(), text.get_verticalalignment()) == (ha, va)
+    anchor = ax.transData.transform([0.0, 1.0])
+    pts = ax.figure.dpi / 72.0
+    np.testing.assert_allclose(text.get_position(), anchor + 6.0 * pts * np.asarray(u))
+    box = text.get_window_extent()
+    corners = np.array([[box.x0, box.y0], [box.x1, box.y1]]) - anchor
+    assert np.all(corners @ np.asarray(u) >= 6.0 * pts * 0.35 - 1e-9)   # beyond the anchor along u

@@ -224,6 +224,16 @@ class _Base(martist.Artist):
         self._text.set_verticalalignment(va)
         self.stale = True
 
+    def set_text_beside(self, u, gap=5.0):
+        """The label ``gap`` points from its reference point along the unit vector ``u``.
+
+        It is aligned to extend away from that point along ``u`` (e.g. ``u = (0, -1)``: below,
+        top-aligned), so that it stays clear of whatever lies the other way.
+        """
+        self.set_text_offset(gap * np.asarray(u, dtype=float))
+        self.set_text_alignment("left" if u[0] > 0.35 else "right" if u[0] < -0.35 else "center",
+                                "bottom" if u[1] > 0.35 else "top" if u[1] < -0.35 else "center")
+
     def set_figure(self, fig):
         super().set_figure(fig)
         for c in self._children:

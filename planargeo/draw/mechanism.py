@@ -253,10 +253,7 @@ def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None, ga
 
         side = 1.0 if label_room(1.0) >= label_room(-1.0) else -1.0
         placed.append(mid + side * n * 0.25 * L)
-        u = side * n
-        art.set_text_offset(gap * u)
-        art.set_text_alignment("left" if u[0] > 0.35 else "right" if u[0] < -0.35 else "center",
-                               "bottom" if u[1] > 0.35 else "top" if u[1] < -0.35 else "center")
+        art.set_text_beside(side * n, gap)
     return out, (Q, mu, active, react)
 
 

@@ -62,11 +62,9 @@ def fig9_2(ax):
         n = np.array([-e[1], e[0]])
         side = 1.0 if bodies.distance(SPoint(*(anchor + 0.2 * n))) >= \
             bodies.distance(SPoint(*(anchor - 0.2 * n))) else -1.0
-        u = side * n
         art = plot_line(f, ax, role="reaction", scale=sc, anchor=anchor, text=f"$F_{{{c.name}}}$",
-                        text_offset=5 * u, text_at="anchor")
-        art.set_text_alignment("left" if u[0] > 0.35 else "right" if u[0] < -0.35 else "center",
-                               "bottom" if u[1] > 0.35 else "top" if u[1] < -0.35 else "center")
+                        text_at="anchor")
+        art.set_text_beside(side * n, 5.0)
         P.append(np.array(art.get_arrow()))
         lines.append(f)
         mags.append(f"$|F_{{{c.name}}}|$ = {mag:.2f} N")
