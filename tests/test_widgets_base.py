@@ -87,8 +87,8 @@ def test_errors_become_messages_and_keep_the_last_drawing():
     t.controls["a"].value = 0.8
     assert t.readout_values["a"] == 0.8 and t.seg.get_xdata()[1] == 0.8
     t.controls["a"].value = 1.5                              # a PlanargeoError
-    assert t.message == "a must not exceed b" and t.seg.get_xdata()[1] == 0.8
-    assert t._msg_text.get_visible() and t.readout_values["a"] == 0.8
+    assert t.message == "a must not exceed b (refused: a = 1.5)" and t.seg.get_xdata()[1] == 0.8
+    assert t._msg_text.get_visible() and t.readout_values["a"] == 0.8 and t.values["a"] == 0.8
     t.controls["a"].value = -2.0                             # ZeroDivisionError in compute
     assert t.message.startswith("cannot compute this configuration")
     t.controls["a"].value = 0.0
@@ -208,12 +208,14 @@ def test_display_only_control_redraws_without_computing():
     assert t.n_computes == 3 and t.readout_values["changed"] == "b,show"
 
 
-def test_display_toggle_after_a_failed_compute_recomputes():
+def test_display_toggle_after_a_refused_value_redraws_the_shown_state():
     t = ToyOverlay(display="agg")
-    t.controls["a"].value = 1.5                                 # a > b: message, last drawing kept
+    t.controls["a"].value = 1.5                                 # a > b: refused, a back to 0.5
+    assert t.values == t.shown_values and t.values["a"] == 0.5
     n = t.n_computes
-    t.controls["show"].value = False                            # the shown state is not current
-    assert t.n_computes == n + 1 and t.message == "a must not exceed b"
+    t.controls["show"].value = False                            # the shown state is current
+    assert t.n_computes == n and t.message == "" and not t.seg.get_visible()
+    assert t.seg.get_xdata()[1] == 0.5
     t.controls["a"].value = 0.2
     assert t.message == "" and not t.seg.get_visible()
 
