@@ -35,12 +35,13 @@ MECHANISMS = ("ChainExplorer", "SliderCrankExplorer", "TreeExplorer")
 
 
 def calls_during(action) -> tuple[collections.Counter, set[tuple[str, ...]]]:
-    """Run ``action()``; return the entries ``{(module, function): n}`` into planargeo modules and the stacks.
+    """Run ``action()``; return the entries ``{(caller, module, function): n}`` into planargeo and the stacks.
 
     An entry is a call from outside the called function's module (calls
-    within a module are its own business).  A module stack lists the planargeo
-    modules from the outermost frame to the called function (other packages'
-    frames left out, repeats collapsed).
+    within a module are its own business); ``caller`` is the calling frame's
+    module.  A module stack lists the planargeo modules from the outermost
+    frame to the called function (other packages' frames left out, repeats
+    collapsed).
     """
     calls, stacks = collections.Counter(), set()
 
@@ -48,8 +49,9 @@ def calls_during(action) -> tuple[collections.Counter, set[tuple[str, ...]]]:
         module = frame.f_globals.get("__name__", "")
         if event != "call" or not module.startswith("planargeo"):
             return
-        if frame.f_back is None or frame.f_back.f_globals.get("__name__") != module:
-            calls[(module, frame.f_code.co_name)] += 1
+        caller = frame.f_back.f_globals.get("__name__", "") if frame.f_back is not None else ""
+        if caller != module:
+            calls[(caller, module, frame.f_code.co_name)] += 1
         chain, f = [], frame
         while f is not None:
             m = f.f_globals.get("__name__", "")
@@ -68,7 +70,7 @@ def calls_during(action) -> tuple[collections.Counter, set[tuple[str, ...]]]:
 
 def kinematics_passes(calls) -> int:
     """Kinematics passes among the entries: calls into the kinematics functions of ``mechanics.kinematics``."""
-    return sum(n for (module, fn), n in calls.items()
+    return sum(n for (_, module, fn), n in calls.items()
                if module == "planargeo.mechanics.kinematics" and "kinematics" in fn)
 
 
