@@ -2,12 +2,13 @@
 import subprocess
 import sys
 import textwrap
+from pathlib import Path
 
 import ipywidgets as W
 import pytest
 
 import planargeo.widgets as widgets
-from planargeo.errors import InputError, SceneError
+from planargeo.errors import InputError, OutputError, SceneError
 from planargeo.widgets.base import Explorer, Step, fmt
 
 NAMES = sorted(widgets.EXPLORERS)
@@ -282,3 +283,41 @@ def test_display_only_toggle_repaints_the_image():
     png = t.image.value
     t.controls["show"].value = False
     assert t.n_computes == 1 and t.image.value[:8] == b"\x89PNG\r\n\x1a\n" and t.image.value != png
+
+
+# ----------------------------------------------------------------- atomic export (issue 16, items 2 and 8)
+def test_export_to_a_full_device_is_an_output_error(tmp_path):
+    """``export_svg('/dev/full')`` raised a raw OSError; the Export button reports the same as text."""
+    t = Toy(display="agg")
+    with pytest.raises(OutputError, match="cannot write /dev/full"):
+        t.export_svg("/dev/full")
+    assert Path("/dev/full").is_char_device()                 # a device is never replaced by a file
+    t = Toy(display="agg", export_dir="/dev/full")
+    t.export_button.click()                                   # must not raise
+    assert "export failed: cannot write /dev/full" in t.export_label.value and t.last_export is None
+
+
+def test_export_failure_midway_leaves_the_old_file(tmp_path):
+    """A write cut short (a file-size limit, as a full disk would) keeps the old file whole."""
+    target = tmp_path / "view.svg"
+    old = b"<svg>" + b"x" * 66_000 + b"</svg>"
+    target.write_bytes(old)
+    code = textwrap.dedent(f"""
+        import resource, signal
+        from planargeo.errors import OutputError
+        from planargeo.widgets import ChainExplorer
+        ex = ChainExplorer(display="agg", links=10)
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)      # a write past the limit fails (EFBIG)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (4096, 4096))
+        try:
+            ex.export_svg({str(target)!r})
+        except OutputError as exc:
+            print("OutputError:", exc)
+    """)
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0 and r.stdout.startswith(f"OutputError: cannot write {target}"), r.stderr[-2000:]
+    assert target.read_bytes() == old
+    assert [p.name for p in tmp_path.iterdir()] == ["view.svg"]     # no temporary file left behind
+    # without the limit the same export replaces the file in one step
+    Toy(display="agg").export_svg(target)
+    assert target.read_bytes().lstrip().startswith(b"<?xml") and len(list(tmp_path.iterdir())) == 1

@@ -238,6 +238,10 @@ def check_control(name: str, widget, value):
     return value
 
 
+def _short(text: str) -> str:
+    return text if len(text) < 90 else text[:87] + "..."
+
+
 def _shown_as(name: str, value) -> str:
     """``name = value`` for a message (numbers short, text quoted)."""
     real = isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_))
@@ -650,7 +654,7 @@ class Explorer:
         except InputError as exc:
             if initial:
                 raise
-            self._refuse(str(exc))
+            self._refuse(str(exc), self.figure_message(exc))
             return
         rendered = False
         try:
@@ -701,13 +705,12 @@ class Explorer:
             except Exception as exc:  # noqa: BLE001
                 message += f"; redrawing the shown state failed ({type(exc).__name__}): {exc}"
         self._set_message(message)
-        self._show_figure_message(figure_text if figure_text is not None else message)
+        self._show_figure_message(_short(message) if figure_text is None else figure_text)
         self._safe_redraw()
 
     def figure_message(self, exc: Exception) -> str:
         """Short text drawn on the figure when an update is refused."""
-        text = self._reason(exc)
-        return text if len(text) < 90 else text[:87] + "..."
+        return _short(self._reason(exc))
 
     def _safe_redraw(self) -> None:
         try:
