@@ -321,3 +321,17 @@ def test_export_failure_midway_leaves_the_old_file(tmp_path):
     # without the limit the same export replaces the file in one step
     Toy(display="agg").export_svg(target)
     assert target.read_bytes().lstrip().startswith(b"<?xml") and len(list(tmp_path.iterdir())) == 1
+
+
+def test_export_path_that_names_no_file_is_an_input_error():
+    with pytest.raises(InputError, match="path must be a str or os.PathLike naming a file, got 3"):
+        Toy(display="agg").export_svg(3)
+
+
+def test_a_refused_set_inside_hold_refuses_the_batch_and_keeps_its_message():
+    t = Toy(display="agg")
+    with t.hold():
+        t.controls["a"].value = 0.2
+        t.set(b=float("nan"))
+    assert t.message == "b must be a number between -2 and 2, got nan"
+    assert t.values == t.shown_values and t.values["a"] == 0.5 and t.readout_values["a"] == 0.5

@@ -502,9 +502,10 @@ class Explorer:
             path = Path(d) / f"planargeo-{self.slug}-{os.getpid()}-{next(_export_counter)}.svg"
         try:
             path = Path(path)
+            special = path.exists() and not path.is_file()
         except TypeError:
-            raise InputError(f"path must be a str or os.PathLike, got {path!r}") from None
-        if path.exists() and not path.is_file():
+            raise InputError(f"path must be a str or os.PathLike naming a file, got {path!r}") from None
+        if special:
             raise OutputError(f"cannot write {path}: it exists and is not a regular file")
         buf = io.BytesIO()
         # no date and fixed element ids: the same view always gives the same file
@@ -699,6 +700,7 @@ class Explorer:
         """Report ``message`` and return controls, figure and readout to the shown state."""
         self._set_controls(self.shown_values)
         self._changed.clear()
+        self._pending = False
         if rerender:  # a render that failed midway may have moved some artists
             try:
                 self.render(self.state)
