@@ -200,3 +200,11 @@ def test_dragging_off_the_map_never_raises():
         assert "internal error" not in ex.message
         assert_one_state(ex)
     canvas.callbacks.process("button_release_event", MouseEvent("button_release_event", canvas, qx, qy))
+
+
+def test_initial_values_that_cannot_be_assembled_raise_the_scene_error():
+    """There is no shown state to fall back to: the constructor says why, by the scene's error."""
+    from planargeo.errors import SceneError
+
+    with pytest.raises(SceneError, match="rod too short"):
+        widgets.SliderCrankExplorer(display="agg", **{"rod length": 2.0, "crank angle (deg)": 0.0})

@@ -670,7 +670,10 @@ class Explorer:
                     self.n_computes += 1
                     state = self.compute(values, changed | set(follow))
                 rendered = True
-                readout = self.render(state)
+                readout = dict(self.render(state))
+                table = self._readout_html(readout)
+                message = (state.get("message", "") if isinstance(state, dict)
+                           else getattr(state, "message", ""))
         except Exception as exc:  # noqa: BLE001 - refused and reported, never raised
             if initial:
                 raise
@@ -680,11 +683,10 @@ class Explorer:
             return
         self.state = state
         self.shown_values = self.values
-        self.readout_values = dict(readout)
-        self.readout.value = self._readout_html(self.readout_values)
-        self._set_message(state.get("message", "") if isinstance(state, dict)
-                          else getattr(state, "message", ""))
-        self._show_figure_message(self._message)
+        self.readout_values = readout
+        self.readout.value = table
+        self._set_message(message)
+        self._show_figure_message(message)
         self.n_updates += 1
         self._safe_redraw()
 
