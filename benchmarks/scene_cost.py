@@ -53,6 +53,7 @@ if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
 from planargeo import scenes  # noqa: E402
+from planargeo.files import atomic_write  # noqa: E402
 from planargeo.algorithms.aba import articulated_body, forward_dynamics  # noqa: E402
 from planargeo.algorithms.articulated_inertia import articulated_inertia  # noqa: E402
 from planargeo.algorithms.articulated_mobility import articulated_mobility  # noqa: E402
@@ -436,7 +437,7 @@ def write_markdown(res: dict, path: Path) -> None:
             L.append(f"| {r['consumer']} | {r['skipped']} | {_us(r['full_us'])} | {_us(r['minimal_us'])} | "
                      f"{r['ratio']['best']:.2f} | {r['ratio']['median']:.2f} |")
     L += ["", "## Reading the numbers", ""] + res.get("notes", [])
-    path.write_text("\n".join(L) + "\n", encoding="utf-8")
+    atomic_write(path, "\n".join(L) + "\n")
 
 
 def _notes(res: dict) -> list:

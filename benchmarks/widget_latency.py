@@ -32,6 +32,8 @@ from pathlib import Path
 
 import numpy as np
 
+from planargeo.files import atomic_write_many
+
 ALL_CHAIN_OVERLAYS = {k: True for k in ("velocity poles", "acceleration poles", "bias terms",
                                           "internal forces", "T/U split", "articulated inertias")}
 
@@ -126,13 +128,11 @@ def main(argv=None):
             print(f"{label:56s} update {1e3 * u:7.1f} ms  bare {1e3 * b:7.1f} ms  ratio {u / b:5.2f}"
                   f"  computes {nc}")
     out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
     goal = next(r for r in rows if r["explorer"].startswith("chain, 10 links"))
     meta = {"date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
             "python": platform.python_version(), "machine": platform.machine(),
             "cpus": os.cpu_count(), "load": os.getloadavg()[0] if hasattr(os, "getloadavg") else None,
             "matplotlib": matplotlib.__version__, "repeat": args.repeat}
-    (out / "widget_latency.json").write_text(json.dumps({"meta": meta, "rows": rows, "display_only": toggles}, indent=1))
     lines = [
         "# Widget latency",
         "",
@@ -163,7 +163,9 @@ def main(argv=None):
     lines += ["", f"Display-only controls called `compute`: **{'never' if quiet else 'YES (a bug)'}**."]
     lines += ["", f"Goal (10-link chain, all overlays, ratio <= 1.3): **{'met' if ok else 'NOT met'}** "
                   f"({goal['ratio']:.2f}).", ""]
-    (out / "widget_latency.md").write_text("\n".join(lines))
+    atomic_write_many({out / "widget_latency.json": json.dumps({"meta": meta, "rows": rows,
+                                                                "display_only": toggles}, indent=1),
+                       out / "widget_latency.md": "\n".join(lines)})
     print(f"wrote {out / 'widget_latency.md'}")
     return 0 if ok and quiet else 1
 

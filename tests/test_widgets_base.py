@@ -2,12 +2,13 @@
 import subprocess
 import sys
 import textwrap
+from pathlib import Path
 
 import ipywidgets as W
 import pytest
 
 import planargeo.widgets as widgets
-from planargeo.errors import InputError, SceneError
+from planargeo.errors import InputError, OutputError, SceneError
 from planargeo.widgets.base import Explorer, Step, fmt
 
 NAMES = sorted(widgets.EXPLORERS)
@@ -87,8 +88,8 @@ def test_errors_become_messages_and_keep_the_last_drawing():
     t.controls["a"].value = 0.8
     assert t.readout_values["a"] == 0.8 and t.seg.get_xdata()[1] == 0.8
     t.controls["a"].value = 1.5                              # a PlanargeoError
-    assert t.message == "a must not exceed b" and t.seg.get_xdata()[1] == 0.8
-    assert t._msg_text.get_visible() and t.readout_values["a"] == 0.8
+    assert t.message == "a must not exceed b (refused: a = 1.5)" and t.seg.get_xdata()[1] == 0.8
+    assert t._msg_text.get_visible() and t.readout_values["a"] == 0.8 and t.values["a"] == 0.8
     t.controls["a"].value = -2.0                             # ZeroDivisionError in compute
     assert t.message.startswith("cannot compute this configuration")
     t.controls["a"].value = 0.0
@@ -208,12 +209,14 @@ def test_display_only_control_redraws_without_computing():
     assert t.n_computes == 3 and t.readout_values["changed"] == "b,show"
 
 
-def test_display_toggle_after_a_failed_compute_recomputes():
+def test_display_toggle_after_a_refused_value_redraws_the_shown_state():
     t = ToyOverlay(display="agg")
-    t.controls["a"].value = 1.5                                 # a > b: message, last drawing kept
+    t.controls["a"].value = 1.5                                 # a > b: refused, a back to 0.5
+    assert t.values == t.shown_values and t.values["a"] == 0.5
     n = t.n_computes
-    t.controls["show"].value = False                            # the shown state is not current
-    assert t.n_computes == n + 1 and t.message == "a must not exceed b"
+    t.controls["show"].value = False                            # the shown state is current
+    assert t.n_computes == n and t.message == "" and not t.seg.get_visible()
+    assert t.seg.get_xdata()[1] == 0.5
     t.controls["a"].value = 0.2
     assert t.message == "" and not t.seg.get_visible()
 
@@ -280,3 +283,55 @@ def test_display_only_toggle_repaints_the_image():
     png = t.image.value
     t.controls["show"].value = False
     assert t.n_computes == 1 and t.image.value[:8] == b"\x89PNG\r\n\x1a\n" and t.image.value != png
+
+
+# ----------------------------------------------------------------- atomic export (issue 16, items 2 and 8)
+def test_export_to_a_full_device_is_an_output_error(tmp_path):
+    """``export_svg('/dev/full')`` raised a raw OSError; the Export button reports the same as text."""
+    t = Toy(display="agg")
+    with pytest.raises(OutputError, match="cannot write /dev/full"):
+        t.export_svg("/dev/full")
+    assert Path("/dev/full").is_char_device()                 # a device is never replaced by a file
+    t = Toy(display="agg", export_dir="/dev/full")
+    t.export_button.click()                                   # must not raise
+    assert "export failed: cannot write /dev/full" in t.export_label.value and t.last_export is None
+
+
+def test_export_failure_midway_leaves_the_old_file(tmp_path):
+    """A write cut short (a file-size limit, as a full disk would) keeps the old file whole."""
+    target = tmp_path / "view.svg"
+    old = b"<svg>" + b"x" * 66_000 + b"</svg>"
+    target.write_bytes(old)
+    code = textwrap.dedent(f"""
+        import resource, signal
+        from planargeo.errors import OutputError
+        from planargeo.widgets import ChainExplorer
+        ex = ChainExplorer(display="agg", links=10)
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)      # a write past the limit fails (EFBIG)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (4096, 4096))
+        try:
+            ex.export_svg({str(target)!r})
+        except OutputError as exc:
+            print("OutputError:", exc)
+    """)
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0 and r.stdout.startswith(f"OutputError: cannot write {target}"), r.stderr[-2000:]
+    assert target.read_bytes() == old
+    assert [p.name for p in tmp_path.iterdir()] == ["view.svg"]     # no temporary file left behind
+    # without the limit the same export replaces the file in one step
+    Toy(display="agg").export_svg(target)
+    assert target.read_bytes().lstrip().startswith(b"<?xml") and len(list(tmp_path.iterdir())) == 1
+
+
+def test_export_path_that_names_no_file_is_an_input_error():
+    with pytest.raises(InputError, match="path must be a str or os.PathLike naming a file, got 3"):
+        Toy(display="agg").export_svg(3)
+
+
+def test_a_refused_set_inside_hold_refuses_the_batch_and_keeps_its_message():
+    t = Toy(display="agg")
+    with t.hold():
+        t.controls["a"].value = 0.2
+        t.set(b=float("nan"))
+    assert t.message == "b must be a number between -2 and 2, got nan"
+    assert t.values == t.shown_values and t.values["a"] == 0.5 and t.readout_values["a"] == 0.5

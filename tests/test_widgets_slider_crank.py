@@ -79,13 +79,15 @@ def test_dead_centre_and_impossible_configurations(ex):
     ex.set(**{"rod length": 2.29, "crank angle (deg)": 0.0})   # rod along the horizontal
     assert "singular" in ex.message
     assert "piston pin on the crank pivot" in ex.message       # folded: l = r at ψ = 0
+    assert ex.values == ex.shown_values                        # refused: both back to the shown state
+    ex.controls["crank angle (deg)"].value = 0.0
     good = dict(ex.readout_values)
     ex.controls["rod length"].value = 2.0                      # rod cannot reach
     assert "rod too short" in ex.message and "rod too short" in ex._msg_text.get_text()
-    assert ex.readout_values == good
-    ex.controls["rod length"].value = 5.0
+    assert ex.readout_values == good and ex.values["rod length"] == 5.0
+    ex.controls["rod length"].value = 4.0
     assert ex.message == ""
-    assert ex.readout_values["piston height h"] == pytest.approx(height(0.0, 5.0))
+    assert ex.readout_values["piston height h"] == pytest.approx(height(0.0, 4.0))
 
 
 def test_crank_moves_reuse_the_model_and_pole_toggles_only_redraw(ex):
@@ -141,4 +143,5 @@ def test_folded_dead_centre_reports_the_contact_matrix(ex):
     assert cond > 1e12
     with pytest.raises(SingularConfigurationError) as err:
         scenes.build("slider-crank", l=2.29, psi=math.pi)
-    assert str(err.value) == ex.message and err.value.cond > 1e12
+    assert ex.message == f"{err.value} (refused: crank angle (deg) = 180, rod length = 2.29)"
+    assert err.value.cond > 1e12

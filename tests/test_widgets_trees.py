@@ -115,30 +115,24 @@ def test_display_toggles_do_not_recompute(toggle):
     assert len(calls) == 1 and calls[0] == {"speed"}
 
 
-def test_a_speed_change_runs_one_solve_and_no_direct_solution(ex, monkeypatch):
-    import planargeo.algorithms.stacked as stacked
-    import planargeo.widgets.trees as mod
+def test_a_speed_change_runs_one_solve_and_no_direct_solution(ex):
+    from test_widgets_path import calls_during
 
-    calls = {"direct": 0, "model": 0, "loop": 0, "stacked": 0}
+    def run(*changes):
+        def action():
+            for k, v in changes:
+                ex.controls[k].value = v
+        calls, _ = calls_during(action)
+        return {name: sum(n for (caller, *called), n in calls.items() if called == [f"planargeo.{mod}", fn]
+                          and caller in ("planargeo.widgets.trees", "planargeo.scenes.trees"))
+                for name, mod, fn in (("direct", "algorithms.stacked", "tree_mobilities"),
+                                      ("model", "scenes.trees", "tree_model"),
+                                      ("loop", "algorithms.loops", "loop_solve"),
+                                      ("stacked", "algorithms.stacked", "stacked_solve"))}
 
-    def counting(name, fn):
-        def wrapper(*a, **k):
-            calls[name] += 1
-            return fn(*a, **k)
-        return wrapper
-
-    monkeypatch.setattr(stacked, "tree_mobilities", counting("direct", stacked.tree_mobilities))
-    monkeypatch.setattr(mod, "tree_model", counting("model", mod.tree_model))
-    monkeypatch.setattr(mod, "loop_solve", counting("loop", mod.loop_solve))
-    monkeypatch.setattr(mod, "stacked_solve", counting("stacked", mod.stacked_solve))
-    for s in (0.5, 1.0, 2.0):
-        ex.controls["speed"].value = s
-    assert calls == {"direct": 0, "model": 0, "loop": 3, "stacked": 0}
-    ex.controls["loops"].value = "open (Fig 9.1)"         # first time open: one scene build
-    direct = calls["direct"]
-    ex.controls["speed"].value = 0.7
-    ex.controls["loops"].value = "closed (Fig 9.2)"       # back: everything cached
-    ex.controls["loops"].value = "open (Fig 9.1)"
-    assert calls["direct"] == direct and calls["stacked"] == 3
-    ex.controls["mass"].value = 2.0                        # a new model, still no direct solution
-    assert calls["model"] == 2 and calls["direct"] == direct
+    assert run(("speed", 0.5), ("speed", 1.0), ("speed", 2.0)) == {"direct": 0, "model": 0, "loop": 3,
+                                                                 "stacked": 0}
+    run(("loops", "open (Fig 9.1)"))                       # first time open: one scene build
+    assert run(("speed", 0.7), ("loops", "closed (Fig 9.2)"), ("loops", "open (Fig 9.1)")) == {
+        "direct": 0, "model": 0, "loop": 1, "stacked": 2}   # everything cached
+    assert run(("mass", 2.0)) == {"direct": 0, "model": 1, "loop": 0, "stacked": 1}  # a new model

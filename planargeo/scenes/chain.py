@@ -31,7 +31,7 @@ from planargeo.algorithms.stacked import forward_dynamics_stacked
 from planargeo.mechanics.model import JOINT_DOFS, chain_model
 from planargeo.scenes import SceneResult, check_param, register
 
-__all__ = ["chain", "METHODS", "available_methods"]
+__all__ = ["chain", "chain_workspace", "METHODS", "available_methods"]
 
 #: method name -> forward dynamics function ``(model, q, qd, tau, f_ext=None) -> qdd``
 METHODS = {
@@ -52,6 +52,23 @@ def available_methods() -> dict:
     ['aba', 'projective', 'mobility_split', 'stacked', 'crba']
     """
     return dict(METHODS)
+
+
+def chain_workspace(model, q, qd, tau):
+    """One state of a chain solved by the articulated-body algorithm (thesis 3.6): its workspace.
+
+    What the scene keeps in ``extra["data"]`` and the chain explorer draws, one
+    kinematics pass per state: poles ``v``, ``a`` (4.5, 4.6), bias terms
+    ``kappa``, ``p``, articulated inertias ``A`` (3.38), joint forces ``f`` (3.13),
+    ``qdd`` (3.41).  See :func:`planargeo.algorithms.aba.articulated_body`.
+
+    Examples
+    --------
+    >>> w = chain_workspace(chain_model(1), [0.0], [0.0], [0.0])
+    >>> w.qdd                                   # a rod released horizontally: -1.5 g
+    array([-14.715])
+    """
+    return articulated_body(model, q, qd, tau)
 
 
 @register("chain")
@@ -97,7 +114,7 @@ def chain(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str = "revo
     qdd = {name: np.asarray(fn(model, q, qd, tau), dtype=float).tolist() for name, fn in METHODS.items()}
     vals = [np.asarray(v) for v in qdd.values()]
     disagreement = max(float(np.abs(v - vals[0]).max(initial=0.0)) for v in vals)
-    data = articulated_body(model, q, qd, tau)
+    data = chain_workspace(model, q, qd, tau)
     params = {"n": n_int, "mass": mass_v, "length": length_v, "joint": joint, "seed": seed, "gravity": g}
     state = {"q": q.tolist(), "qd": qd.tolist(), "tau": tau.tolist()}
     return SceneResult(

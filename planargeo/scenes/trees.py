@@ -34,7 +34,8 @@ import numpy as np
 
 from planargeo.scenes import SceneResult, check_param, register
 
-__all__ = ["tree", "constrained_tree", "tree_model", "FIG91_PARENTS", "FIG91_ANGLES"]
+__all__ = ["tree", "constrained_tree", "tree_model", "tree_solve", "tree_dof", "FIG91_PARENTS",
+           "FIG91_ANGLES"]
 
 #: Parents of Fig 9.1 (0-based; -1 is the ground).
 FIG91_PARENTS = (-1, 0, 1, 2, 0, 4, 5, 5, 0)
@@ -54,6 +55,38 @@ def tree_model(mass=1.0, length=1.0, g=9.81, contacts=()):
     joints = [Joint("revolute", (0.0 if p < 0 else L, 0.0, 0.0), name=f"joint{i + 1}")
               for i, p in enumerate(FIG91_PARENTS)]
     return Model(bodies, joints, FIG91_PARENTS, gravity=(0.0, -float(g)), contacts=contacts)
+
+
+def tree_solve(model, q, qd, tau=None):
+    """One solve of the tree: stacked (9.39-9.43) when open, the constrained algorithm (9.5) with contacts.
+
+    The trees explorer's step (on its cached model); ``tau`` defaults to zero.
+
+    Examples
+    --------
+    >>> closed = constrained_tree()
+    >>> sol = tree_solve(closed.model, closed.state["q"], closed.state["qd"])
+    >>> bool(np.allclose(sol.qdd, closed.quantities["qdd"]))
+    True
+    """
+    from planargeo.algorithms.loops import loop_solve
+    from planargeo.algorithms.stacked import stacked_solve
+
+    tau = np.zeros(model.nq) if tau is None else tau
+    return (loop_solve if model.contacts else stacked_solve)(model, q, qd, tau)
+
+
+def tree_dof(model, q) -> int:
+    """Degrees of freedom ``nq − rank J_c`` with the closure Jacobian ``J_c`` of the contacts (9.54, 9.60).
+
+    Examples
+    --------
+    >>> tree_dof(tree().model, _default_q()), tree_dof(constrained_tree().model, _default_q())
+    (9, 5)
+    """
+    from planargeo.simulate.loops import closure_jacobian
+
+    return model.nq - (int(np.linalg.matrix_rank(closure_jacobian(model, q))) if model.contacts else 0)
 
 
 def _default_q():

@@ -28,10 +28,14 @@ Two front ends are supported:
 The default, ``display="auto"``, picks ``"ipympl"`` when that backend is
 active and ``"image"`` otherwise.
 
-Errors never escape a callback.  Any :class:`~planargeo.errors.PlanargeoError`
-raised while computing (an impossible combination of slider values, a
-singular configuration...) is shown in the message area; the drawing and the
-readout keep their last good state and the explorer keeps working.
+One consistent state.  The controls, the figure and the readout always show
+the same state: the one last computed.  A value that cannot be shown is
+*refused*: a control set to NaN, out of its range, to ``None`` or to no option
+of its list, or a combination the scene cannot compute (an impossible or
+singular configuration, any :class:`~planargeo.errors.PlanargeoError`).  The
+message area names the refused control and the reason, the controls return
+to the shown values, and the figure and readout stay as they were.  No
+exception ever escapes a callback.
 
 Programmatic use (tests, notebooks)::
 
@@ -54,9 +58,9 @@ rotation is refused with a message, not an exception:
 ('opposite_rotations', 'at infinity')
 >>> ex.controls["size2"].value = 0.0
 >>> ex.message
-'v2 must be non-zero, got array([ 0., -0.,  0.])'
->>> ex.readout_values["case"]                 # the last good state is kept
-'opposite_rotations'
+'v2 must be non-zero, got array([ 0., -0.,  0.]) (refused: size2 = 0)'
+>>> ex.controls["size2"].value, ex.readout_values["case"]    # back to the shown state
+(-1.0, 'opposite_rotations')
 """
 from __future__ import annotations
 
@@ -64,6 +68,7 @@ import contextlib
 import html
 import io
 import itertools
+import numbers
 import os
 import time
 import warnings
@@ -74,10 +79,12 @@ import ipywidgets as W
 import matplotlib
 import numpy as np
 from matplotlib.figure import Figure
+from traitlets import validate
 
-from planargeo.errors import InputError, PlanargeoError
+from planargeo.errors import InputError, OutputError, PlanargeoError
+from planargeo.files import atomic_write
 
-__all__ = ["Explorer", "Step", "cached", "fmt"]
+__all__ = ["Explorer", "Step", "cached", "check_control", "fmt"]
 
 _DISPLAYS = ("auto", "ipympl", "image", "agg")
 _export_counter = itertools.count(1)
@@ -147,17 +154,98 @@ def _backend_is_ipympl() -> bool:
     return "ipympl" in name or name in ("widget", "module://ipympl.backend_nbagg")
 
 
+class FloatSlider(W.FloatSlider):
+    """A float slider that keeps a value outside its range, for the explorer to refuse by name.
+
+    (An ipywidgets slider silently moves such a value to the nearest end.)
+    """
+
+    @validate("value")
+    def _validate_value(self, proposal):
+        return proposal["value"]
+
+
+class IntSlider(W.IntSlider):
+    """An integer slider that keeps a value outside its range (see :class:`FloatSlider`)."""
+
+    @validate("value")
+    def _validate_value(self, proposal):
+        return proposal["value"]
+
+
 class Step:
-    """A float slider description: ``Step(lo, hi, step, value, label)``."""
+    """A slider description: ``Step(lo, hi, step, value, label, integer=False)``."""
 
-    def __init__(self, lo: float, hi: float, step: float, value: float, label: str = ""):
+    def __init__(self, lo: float, hi: float, step: float, value: float, label: str = "",
+                 integer: bool = False):
         self.lo, self.hi, self.step, self.value, self.label = lo, hi, step, value, label
+        self.integer = integer
 
-    def make(self, name: str) -> W.FloatSlider:
-        return W.FloatSlider(value=self.value, min=self.lo, max=self.hi, step=self.step,
-                             description=self.label or name, continuous_update=True,
-                             readout_format=".3g", style={"description_width": "initial"},
-                             layout=W.Layout(width="310px"))
+    def make(self, name: str) -> FloatSlider | IntSlider:
+        cls, shown = (IntSlider, "d") if self.integer else (FloatSlider, ".3g")
+        return cls(value=self.value, min=self.lo, max=self.hi, step=self.step,
+                   description=self.label or name, continuous_update=True, readout_format=shown,
+                   style={"description_width": "initial"}, layout=W.Layout(width="310px"))
+
+
+_SELECTIONS = (W.Dropdown, W.ToggleButtons, W.RadioButtons, W.Select)
+
+
+def check_control(name: str, widget, value):
+    """``value`` as control ``name`` holds it, or :class:`InputError` naming the control.
+
+    A slider takes a finite real number in its range (an integer slider an
+    integral one), a list (dropdown, toggle buttons) one of its options, a
+    checkbox ``True`` or ``False``, a text box a string.
+
+    Examples
+    --------
+    >>> check_control("angle", Step(-180, 180, 1.0, 0.0).make("angle"), 30)
+    30.0
+    >>> check_control("angle", Step(-180, 180, 1.0, 0.0).make("angle"), float("nan"))
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: angle must be a number between -180 and 180, got nan
+    >>> check_control("joints", W.Dropdown(options=("revolute", "prismatic")), None)
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: joints must be one of ['revolute', 'prismatic'], got None
+    """
+    if isinstance(widget, (W.FloatSlider, W.IntSlider)):
+        integer = isinstance(widget, W.IntSlider)
+        real = isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_))
+        x = float(value) if real else float("nan")
+        if not (widget.min <= x <= widget.max and (x.is_integer() or not integer)):
+            kind = "an integer" if integer else "a number"
+            raise InputError(f"{name} must be {kind} between {widget.min:g} and {widget.max:g}, "
+                             f"got {value!r}")
+        return int(x) if integer else x
+    if isinstance(widget, _SELECTIONS):
+        options = [o[1] if isinstance(o, tuple) else o for o in widget.options]
+        try:
+            found = value in options
+        except (TypeError, ValueError):  # an array compared with the options
+            found = False
+        if not found:
+            raise InputError(f"{name} must be one of {options}, got {value!r}")
+        return value
+    if isinstance(widget, W.Checkbox):
+        if not isinstance(value, (bool, np.bool_)):
+            raise InputError(f"{name} must be True or False, got {value!r}")
+        return bool(value)
+    if isinstance(widget, W.Text) and not isinstance(value, str):
+        raise InputError(f"{name} must be text, got {value!r}")
+    return value
+
+
+def _short(text: str) -> str:
+    return text if len(text) < 90 else text[:87] + "..."
+
+
+def _shown_as(name: str, value) -> str:
+    """``name = value`` for a message (numbers short, text quoted)."""
+    real = isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_))
+    return f"{name} = {value:g}" if real else f"{name} = {value!r}"
 
 
 class Explorer:
@@ -168,14 +256,21 @@ class Explorer:
     * :meth:`make_controls` -> ``{name: widget}`` (initial values are the defaults),
     * :meth:`setup_axes` (limits, labels) and :meth:`make_artists` (create every
       artist once, store them on ``self``),
-    * :meth:`compute` ``(values) -> state``: pure, may raise PlanargeoError,
+    * :meth:`compute` ``(values, changed) -> state``: may raise PlanargeoError,
     * :meth:`render` ``(state)``: update the artists in place and return the
       readout dictionary (it may derive overlay quantities from ``state`` and
-      store them there, so that they are computed once per state).
+      store them there, so that they are computed once per state),
+    * optionally :meth:`adjust` ``(values, changed)``: controls that follow
+      others (set with them, refused with them).
 
     Controls named in :attr:`display_controls` change the drawing only: a change
-    of those alone re-renders the last good state without calling
+    of those alone re-renders the shown state without calling
     :meth:`compute` (:attr:`n_computes` counts the calls).
+
+    Every update either shows a new state (controls, figure and readout all
+    of it) or is refused as a whole (module docstring): :attr:`shown_values`
+    are the control values of the state on show, equal to :attr:`values`
+    whenever no callback is running.
 
     Parameters
     ----------
@@ -188,6 +283,14 @@ class Explorer:
     **values
         Initial control values overriding the defaults (they also become the
         values *Reset* returns to).
+
+    Raises
+    ------
+    InputError
+        An unknown control or display, or an initial value the control does not
+        take (:func:`check_control`).
+    PlanargeoError
+        The initial values describe a state that cannot be computed.
     """
 
     #: Title shown above the explorer.
@@ -209,12 +312,13 @@ class Explorer:
         self.export_dir = Path(export_dir) if export_dir is not None else None
         self.readout_values: dict[str, Any] = {}
         self.state: Any = None
+        self.shown_values: dict[str, Any] = {}
         self.n_updates = 0
         self.n_computes = 0
-        self._state_ok = False
         self.last_export: Path | None = None
         self._message = ""
         self._hold = 0
+        self._quiet = 0
         self._pending = False
         self._changed: set[str] = set()
         self._busy = False
@@ -229,7 +333,7 @@ class Explorer:
             raise InputError(f"{type(self).__name__} has no control {unknown[0]!r} "
                              f"(controls: {', '.join(self.controls)})")
         for k, v in values.items():
-            self.controls[k].value = v
+            self.controls[k].value = check_control(k, self.controls[k], v)
         self.defaults = {k: w.value for k, w in self.controls.items()}
 
         # figure ----------------------------------------------------------------
@@ -251,8 +355,8 @@ class Explorer:
         self.export_button = W.Button(description="Export SVG", icon="download",
                                       tooltip="Write the current view to an SVG file")
         self.export_label = W.HTML()
-        self.reset_button.on_click(lambda _b: self.reset())
-        self.export_button.on_click(lambda _b: self._export_clicked())
+        self.reset_button.on_click(self.guarded(lambda _b: self.reset()))
+        self.export_button.on_click(self.guarded(lambda _b: self._export_clicked()))
         for name, w in self.controls.items():
             w.observe(self._make_observer(name), names="value")
         self.widget = self._layout()
@@ -275,6 +379,14 @@ class Explorer:
     def render(self, state: Any) -> dict[str, Any]:  # pragma: no cover - abstract
         raise NotImplementedError
 
+    def adjust(self, values: dict[str, Any], changed: set[str]) -> dict[str, Any]:
+        """Values of controls that follow the ``changed`` ones (default: none).
+
+        They are set with the change and refused with it; e.g. the screw-sum
+        explorer turns rotations into forces when it switches to wrenches.
+        """
+        return {}
+
     def extra_widgets(self) -> list:
         """Widgets shown below the controls (e.g. a Play button)."""
         return []
@@ -294,17 +406,13 @@ class Explorer:
         state = {"on": False}
 
         def press(ev):
-            try:
-                if ev.inaxes is not self.ax or ev.button not in (1, None):
-                    return
-                xy = target()
-                if xy is None or not np.all(np.isfinite(xy)):
-                    return
-                px = self.ax.transData.transform(np.asarray(xy, float))
-                if np.hypot(px[0] - ev.x, px[1] - ev.y) <= radius_px:
-                    state["on"] = True
-            except Exception as exc:  # noqa: BLE001
-                self._set_message(f"drag failed: {exc}")
+            if ev.inaxes is not self.ax or ev.button not in (1, None):
+                return
+            xy = target()
+            if xy is None or not np.all(np.isfinite(xy)):
+                return
+            px = self.ax.transData.transform(np.asarray(xy, float))
+            state["on"] = bool(np.hypot(px[0] - ev.x, px[1] - ev.y) <= radius_px)
 
         def move(ev):
             if not state["on"] or ev.inaxes is not self.ax or ev.xdata is None:
@@ -319,9 +427,9 @@ class Explorer:
 
         self._drag_state = state
         cids = getattr(self, "_mouse_cids", [])
-        cids += [self.fig.canvas.mpl_connect("button_press_event", press),
-                 self.fig.canvas.mpl_connect("motion_notify_event", move),
-                 self.fig.canvas.mpl_connect("button_release_event", release)]
+        cids += [self.fig.canvas.mpl_connect(event, self.guarded(fn)) for event, fn in
+                 (("button_press_event", press), ("motion_notify_event", move),
+                  ("button_release_event", release))]
         self._mouse_cids = cids
 
     # ---------------------------------------------------------------- public API
@@ -348,12 +456,24 @@ class Explorer:
                 self._update()
 
     def set(self, **values) -> "Explorer":
-        """Set several controls at once (one update); returns ``self``."""
+        """Set several controls at once (one update); returns ``self``.
+
+        Every value is checked first (:func:`check_control`): if one is refused,
+        none is set and the message names it.
+        """
+        problems = []
+        for k, v in values.items():
+            try:
+                if k not in self.controls:
+                    raise InputError(f"unknown control {k!r} (controls: {', '.join(self.controls)})")
+                values[k] = check_control(k, self.controls[k], v)
+            except InputError as exc:
+                problems.append(str(exc))
+        if problems:
+            self._refuse("; ".join(problems))
+            return self
         with self.hold():
             for k, v in values.items():
-                if k not in self.controls:
-                    self._set_message(f"unknown control {k!r}")
-                    continue
                 self.controls[k].value = v
         return self
 
@@ -365,19 +485,33 @@ class Explorer:
             self._pending = True
 
     def export_svg(self, path=None) -> Path:
-        """Write the current view to an SVG file and return its path.
+        """Write the current view to an SVG file, atomically, and return its path.
 
-        The file depends on the view only (no date, fixed element ids).
+        The view is rendered to memory first and the file replaced in one step
+        (:func:`planargeo.files.atomic_write`): a failure leaves an existing file
+        as it was.  The file depends on the view only (no date, fixed element ids).
+
+        Raises
+        ------
+        OutputError
+            The file cannot be written (no space, no permission, a folder or a
+            device such as ``/dev/full``, which is never replaced).
         """
         if path is None:
             d = self.export_dir or Path.cwd()
             path = Path(d) / f"planargeo-{self.slug}-{os.getpid()}-{next(_export_counter)}.svg"
-        path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
+        try:
+            path = Path(path)
+            special = path.exists() and not path.is_file()
+        except TypeError:
+            raise InputError(f"path must be a str or os.PathLike naming a file, got {path!r}") from None
+        if special:
+            raise OutputError(f"cannot write {path}: it exists and is not a regular file")
+        buf = io.BytesIO()
         # no date and fixed element ids: the same view always gives the same file
         with matplotlib.rc_context({"svg.hashsalt": "planargeo"}):
-            self.fig.savefig(path, format="svg", metadata={"Date": None})
-        self.last_export = path.resolve()
+            self.fig.savefig(buf, format="svg", metadata={"Date": None})
+        self.last_export = atomic_write(path, buf.getvalue()).resolve()
         return self.last_export
 
     def redraw(self) -> None:
@@ -390,6 +524,16 @@ class Explorer:
             buf = io.BytesIO()
             self.fig.savefig(buf, format="png", dpi=self.dpi)
             self.image.value = buf.getvalue()
+
+    def guarded(self, callback: Callable) -> Callable:
+        """``callback`` for a button or the mouse: an exception becomes a message, never escapes."""
+        def run(*args):
+            try:
+                return callback(*args)
+            except Exception as exc:  # noqa: BLE001 - a callback must never raise
+                self._set_message(f"internal error ({type(exc).__name__}): {exc}")
+
+        return run
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)
@@ -446,6 +590,8 @@ class Explorer:
 
     def _make_observer(self, name: str) -> Callable:
         def _observer(change):
+            if self._quiet:  # the explorer setting its own controls
+                return
             self._changed.add(name)
             if self._hold:
                 self._pending = True
@@ -453,6 +599,20 @@ class Explorer:
             self._update()
 
         return _observer
+
+    @contextlib.contextmanager
+    def _quietly(self):
+        """Set controls without triggering updates (the explorer's own changes)."""
+        self._quiet += 1
+        try:
+            yield
+        finally:
+            self._quiet -= 1
+
+    def _set_controls(self, values: dict[str, Any]) -> None:
+        with self._quietly():
+            for k, v in values.items():
+                self.controls[k].value = v
 
     def _set_message(self, text: str) -> None:
         self._message = text
@@ -467,57 +627,94 @@ class Explorer:
         self._msg_text.set_visible(bool(text))
 
     def _update(self, initial: bool = False) -> None:
-        """Recompute and redraw; never raises."""
+        """Show the state of the controls, or refuse it; never raises after construction."""
         if self._busy:  # a re-entrant change from inside render: fold it in
             self._pending = True
             return
         self._busy = True
         changed = set(self.controls) if initial else set(self._changed)
         self._changed.clear()
-        redraw_only = (not initial and bool(changed) and self._state_ok
-                       and changed <= set(self.display_controls))
         try:
-            try:
-                with warnings.catch_warnings():
-                    warnings.simplefilter("error", RuntimeWarning)
-                    if redraw_only:
-                        state = self.state
-                    else:
-                        self._state_ok = False
-                        self.n_computes += 1
-                        state = self.compute(self.values, changed)
-            except PlanargeoError as exc:
-                self._set_message(str(exc))
-                self._show_figure_message(self.figure_message(exc))
-                self._safe_redraw()
-                return
-            except (ArithmeticError, RuntimeWarning, np.linalg.LinAlgError, ValueError) as exc:
-                self._set_message(f"cannot compute this configuration: {exc}")
-                self._show_figure_message("cannot compute this configuration")
-                self._safe_redraw()
-                return
-            self.state = state
-            readout = self.render(state)
-            self._state_ok = True
-            self.readout_values = dict(readout)
-            self.readout.value = self._readout_html(self.readout_values)
-            self._set_message(getattr(state, "message", "") if not isinstance(state, dict)
-                              else state.get("message", ""))
-            self._show_figure_message(self._message)
-            self.n_updates += 1
-            self._safe_redraw()
-        except Exception as exc:  # noqa: BLE001 - a callback must never raise
-            self._set_message(f"internal error ({type(exc).__name__}): {exc}")
+            self._show(changed, initial)
         finally:
             self._busy = False
         if self._pending and not self._hold:
             self._pending = False
             self._update()
 
+    def _show(self, changed: set[str], initial: bool) -> None:
+        """Compute and render the controls' state, or refuse it (:meth:`_refuse`).
+
+        Only display controls changed (or none: a forced update): the shown
+        state is rendered again, without :meth:`compute`.
+        """
+        values = self.values
+        try:
+            for k in changed:
+                values[k] = check_control(k, self.controls[k], values[k])
+        except InputError as exc:
+            if initial:
+                raise
+            self._refuse(str(exc), self.figure_message(exc))
+            return
+        rendered = False
+        try:
+            follow = self.adjust(values, changed)
+            self._set_controls(follow)
+            values.update(follow)
+            with warnings.catch_warnings():
+                warnings.simplefilter("error", RuntimeWarning)
+                if changed <= set(self.display_controls) and not initial:
+                    state = self.state
+                else:
+                    self.n_computes += 1
+                    state = self.compute(values, changed | set(follow))
+                rendered = True
+                readout = dict(self.render(state))
+                table = self._readout_html(readout)
+                message = (state.get("message", "") if isinstance(state, dict)
+                           else getattr(state, "message", ""))
+        except Exception as exc:  # noqa: BLE001 - refused and reported, never raised
+            if initial:
+                raise
+            refused = ", ".join(_shown_as(k, w.value) for k, w in self.controls.items() if k in changed)
+            self._refuse(f"{self._reason(exc)} (refused: {refused})" if refused else self._reason(exc),
+                         self.figure_message(exc), rendered)
+            return
+        self.state = state
+        self.shown_values = self.values
+        self.readout_values = readout
+        self.readout.value = table
+        self._set_message(message)
+        self._show_figure_message(message)
+        self.n_updates += 1
+        self._safe_redraw()
+
+    @staticmethod
+    def _reason(exc: Exception) -> str:
+        if isinstance(exc, PlanargeoError):
+            return str(exc)
+        if isinstance(exc, (ArithmeticError, RuntimeWarning, np.linalg.LinAlgError, ValueError)):
+            return f"cannot compute this configuration: {exc}"
+        return f"internal error ({type(exc).__name__}): {exc}"
+
+    def _refuse(self, message: str, figure_text: str | None = None, rerender: bool = False) -> None:
+        """Report ``message`` and return controls, figure and readout to the shown state."""
+        self._set_controls(self.shown_values)
+        self._changed.clear()
+        self._pending = False
+        if rerender:  # a render that failed midway may have moved some artists
+            try:
+                self.render(self.state)
+            except Exception as exc:  # noqa: BLE001
+                message += f"; redrawing the shown state failed ({type(exc).__name__}): {exc}"
+        self._set_message(message)
+        self._show_figure_message(_short(message) if figure_text is None else figure_text)
+        self._safe_redraw()
+
     def figure_message(self, exc: Exception) -> str:
-        """Short text drawn on the figure when an update fails."""
-        text = str(exc)
-        return text if len(text) < 90 else text[:87] + "..."
+        """Short text drawn on the figure when an update is refused."""
+        return _short(self._reason(exc))
 
     def _safe_redraw(self) -> None:
         try:

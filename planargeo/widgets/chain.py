@@ -21,9 +21,15 @@ toggle overlays drawn with :mod:`planargeo.draw`:
 The overlay checkboxes change the drawing only: toggling one re-renders the
 last computed state (the split is derived from it once, when first shown).
 
+Each state is solved once, by the articulated-body algorithm through the
+scene (:func:`planargeo.scenes.chain.chain_workspace`: one kinematics pass);
+the energies are read off that workspace.
+
 *Simulate* integrates the motion ahead of time with
 :func:`planargeo.simulate.simulate` (with a progress bar), then *play*
-animates it; the readout shows the energy and its drift.
+animates it; the readout shows the energy and its drift.  The trajectory
+belongs to the shown state: a change of the initial state discards it (the
+frame returns to 0), a refused change keeps it.
 """
 from __future__ import annotations
 
@@ -33,14 +39,14 @@ import ipywidgets as W
 import numpy as np
 from matplotlib.lines import Line2D
 
-from planargeo.algorithms.aba import articulated_body
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
 from planargeo.draw.mechanism import draw_ground
 from planargeo.draw.style import COLORS, setup_axes
 from planargeo.errors import InputError, SingularConfigurationError
 from planargeo.mechanics.model import Body, Joint, Model
-from planargeo.simulate.integrate import energy
 from planargeo.mechanics.subspaces import percussion_space
+from planargeo.scenes.chain import chain_workspace
+from planargeo.screws.twists import kinetic_energy
 from planargeo.widgets.base import Explorer, Step
 
 __all__ = ["ChainExplorer", "chain_for", "parse_list"]
@@ -50,6 +56,9 @@ OVERLAYS = ("velocity poles", "acceleration poles", "bias terms", "internal forc
             "T/U split", "articulated inertias")
 JOINT_SETS = ("revolute", "prismatic", "alternating")
 TORQUE_ON = ("all joints", "first joint", "last joint")
+#: controls that set the initial state (a change discards the simulated trajectory)
+INITIAL = ("links", "joints", "angle", "bend", "slide", "speed", "torque", "torque on", "gravity",
+           "joint values (deg / m)", "joint speeds", "joint torques")
 
 
 def chain_for(n: int, joints: str = "revolute", gravity: bool = True, length: float = 1.0,
@@ -106,8 +115,13 @@ def parse_list(text: str, name: str) -> list[float]:
 
 
 def _energy(model: Model, data) -> tuple[float, float]:
-    """Kinetic and potential energy of an articulated-body workspace (single state)."""
-    T, V = energy(model, data.q, data.qd)
+    """Kinetic ``½ Σ vᵢᵀ Iᵢ vᵢ`` (thesis 1.9) and potential ``-Σ mᵢ g·cᵢ`` energy of one workspace.
+
+    Read off the state's own twists, inertias and centres of mass: no second
+    kinematics pass.
+    """
+    T = np.sum(kinetic_energy(data.I, data.v))
+    V = -model.arrays()["mass"] @ (data.com @ np.asarray(model.gravity))
     return float(T), float(V)
 
 
@@ -121,8 +135,7 @@ class ChainExplorer(Explorer):
 
     def make_controls(self):
         c = {
-            "links": W.IntSlider(value=4, min=1, max=NMAX, description="links",
-                                 style={"description_width": "initial"}, layout=W.Layout(width="310px")),
+            "links": Step(1, NMAX, 1, 4, "links", integer=True).make("links"),
             "joints": W.Dropdown(options=JOINT_SETS, value="revolute", description="joints"),
             "angle": Step(-180, 180, 1, -30, "angle (deg)").make("angle"),
             "bend": Step(-90, 90, 1, 20, "bend (deg)").make("bend"),
@@ -138,16 +151,15 @@ class ChainExplorer(Explorer):
         for name in OVERLAYS:
             c[name] = W.Checkbox(value=name in ("velocity poles", "internal forces"), description=name,
                                  indent=False)
-        c["frame"] = W.IntSlider(value=0, min=0, max=0, description="frame",
-                                 layout=W.Layout(width="310px"), disabled=True)
+        c["frame"] = Step(0, 0, 1, 0, "frame", integer=True).make("frame")
+        c["frame"].disabled = True
         return c
 
     def __init__(self, *, duration: float = 3.0, fps: int = 25, **kw):
         self.duration, self.fps = float(duration), int(fps)
         self._model_key = None
         self._model = None
-        self._traj = None  # (t, q, qd) computed by Play
-        self._e0 = None
+        self._traj = None  # (t, q, qd, e0) of the shown state, computed by Simulate
         super().__init__(**kw)
 
     # -- widgets ---------------------------------------------------------------
@@ -228,19 +240,20 @@ class ChainExplorer(Explorer):
             tau[i] = x
         return model, q, qd, tau
 
+    def adjust(self, values, changed):
+        """A new initial state starts at frame 0 (its trajectory is not simulated yet)."""
+        return {"frame": 0} if changed & set(INITIAL) and values["frame"] != 0 else {}
+
     def compute(self, v, changed):
-        if changed & {"links", "joints", "angle", "bend", "slide", "speed", "torque", "torque on",
-                      "gravity", "joint values (deg / m)", "joint speeds", "joint torques"}:
-            self._invalidate_trajectory()
+        traj = None if changed & set(INITIAL) else self._traj
         model, q, qd, tau = self.initial_state(v)
         t = 0.0
         frame = int(v["frame"])
-        if self._traj is not None and 0 < frame < len(self._traj[0]):
-            t, q, qd = self._traj[0][frame], self._traj[1][frame], self._traj[2][frame]
-        w = articulated_body(model, q, qd, tau)
-        st = {"model": model, "w": w, "t": t, "tau": tau}
-        ke, pe = _energy(model, w)
-        st["ke"], st["pe"] = ke, pe
+        if traj is not None and 0 < frame < len(traj[0]):
+            t, q, qd = traj[0][frame], traj[1][frame], traj[2][frame]
+        w = chain_workspace(model, q, qd, tau)
+        st = {"model": model, "w": w, "t": t, "tau": tau, "traj": traj}
+        st["ke"], st["pe"] = _energy(model, w)
         return st
 
     @staticmethod
@@ -310,30 +323,28 @@ class ChainExplorer(Explorer):
                         show = bool(split["active_on"][i])
                 if art.get_visible() != show:
                     art.set_visible(show)
-        self.time_text.set_text(f"t = {st['t']:.2f} s" if self._traj is not None else "")
+        self._show_trajectory(st["traj"])
+        self.time_text.set_text(f"t = {st['t']:.2f} s" if st["traj"] is not None else "")
         e = st["ke"] + st["pe"]
         out = {"links": n, "frame": int(v["frame"]), "t (s)": st["t"],
                "kinetic energy (J)": st["ke"], "potential energy (J)": st["pe"],
                "total energy (J)": e}
-        if self._e0 is not None:
-            out["energy drift (J)"] = e - self._e0
+        if st["traj"] is not None:
+            out["energy drift (J)"] = e - st["traj"][3]
         out["qdd[1]"] = float(w.qdd[0])
         out[f"qdd[{n}]"] = float(w.qdd[-1])
         out["|base force| (N)"] = float(np.hypot(*w.f[0, :2]))
         return out
 
     # -- simulation -----------------------------------------------------------------
-    def _invalidate_trajectory(self):
-        if self._traj is not None:
-            self._traj = None
-            self._e0 = None
-            fr = self.controls["frame"]
-            with self.hold():
-                fr.value = 0
-                fr.max = 0
-                fr.disabled = True
-            self.player.max = 0
-            self._changed.discard("frame")
+    def _show_trajectory(self, traj) -> None:
+        """Frame slider and player span the shown state's trajectory (none: frame 0 only)."""
+        self._traj = traj
+        last = 0 if traj is None else len(traj[0]) - 1
+        fr = self.controls["frame"]
+        if fr.max != last:
+            fr.max = self.player.max = last
+            fr.disabled = traj is None
 
     def simulate(self, duration: float | None = None) -> None:
         """Integrate from the current control state (progress bar), then enable the animation."""
@@ -343,21 +354,14 @@ class ChainExplorer(Explorer):
             self._set_message(f"simulation failed: {exc}")
 
     def _simulate(self, duration: float) -> None:
-        v = self.values
-        model, q0, qd0, tau = self.initial_state(v)
+        model, q0, qd0, tau = self.initial_state(self.values)
         nframes = max(2, int(round(duration * self.fps)) + 1)
         times = np.linspace(0.0, duration, nframes)
         self.progress.value = 0.0
         t, q, qd = _integrate(model, q0, qd0, tau, times, progress=self._progress)
-        self._traj = (t, q, qd)
-        data0 = articulated_body(model, q0, qd0, tau)
-        ke, pe = _energy(model, data0)
-        self._e0 = ke + pe
-        fr = self.controls["frame"]
-        fr.max = len(t) - 1
-        fr.disabled = False
-        self.player.max = len(t) - 1
+        self._traj = (t, q, qd, sum(_energy(model, chain_workspace(model, q0, qd0, tau))))
         self.progress.value = 1.0
+        self._changed.add("frame")       # show the trajectory's range (the frame is unchanged)
         self._update()
 
     def _progress(self, frac: float) -> None:

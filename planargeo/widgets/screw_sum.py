@@ -75,18 +75,14 @@ class ScrewSumExplorer(Explorer):
             c[f"angle{k}"] = Step(-180, 180, 5, ang, f"angle{k} (deg)").make(f"angle{k}")
         return c
 
-    def __init__(self, **kw):
-        super().__init__(**kw)
-        self.controls["add"].observe(self._mode_changed, names="value")
-
-    def _mode_changed(self, change):
+    def adjust(self, values, changed):
         """Keep the kinds consistent with the mode (twists: rotation/translation...)."""
+        if "add" not in changed:
+            return {}
         mapping = {"twists": {"force": "rotation", "couple": "translation"},
-                   "wrenches": {"rotation": "force", "translation": "couple"}}[change["new"]]
-        with self.hold():
-            for k in (1, 2):
-                w = self.controls[f"kind{k}"]
-                w.value = mapping.get(w.value, w.value)
+                   "wrenches": {"rotation": "force", "translation": "couple"}}[values["add"]]
+        return {f"kind{k}": mapping[values[f"kind{k}"]] for k in (1, 2)
+                if values[f"kind{k}"] in mapping}
 
     def setup_axes(self, ax):
         setup_axes(ax, (-4, 4, -4, 4), axis_off=False)

@@ -9,7 +9,8 @@ scale, gravity, link mass, loops open or closed, and the pole overlays.
 The explorer computes only what it draws: the pose, the unit speed pattern
 (projected onto the velocities the loops allow) and the degrees of freedom
 come from one build of the scene per loop setting, the model is kept per mass
-and gravity, and a change of speed runs a single solve (``stacked_solve`` for
+and gravity, and a change of speed runs a single solve through the scene
+(:func:`planargeo.scenes.trees.tree_solve`: ``stacked_solve`` for
 the open tree, ``loop_solve`` for the loops), never the scene's cross-check by
 the direct solution 9.48.  The overlay checkboxes only redraw.
 """
@@ -20,10 +21,7 @@ import numpy as np
 from matplotlib.lines import Line2D
 
 from planargeo import scenes
-from planargeo.algorithms.loops import loop_solve
-from planargeo.algorithms.stacked import stacked_solve
-from planargeo.scenes.trees import tree_model
-from planargeo.simulate.loops import closure_jacobian
+from planargeo.scenes.trees import tree_dof, tree_model, tree_solve
 from planargeo.draw.artists import LineArtist, PointArtist
 from planargeo.draw.mechanism import draw_ground
 from planargeo.draw.style import COLORS, setup_axes
@@ -88,12 +86,11 @@ class TreeExplorer(Explorer):
         are ``nq − rank J_c`` with the closure Jacobian ``J_c`` (9.54, 9.60).
         """
         if closed not in self._geometry:
-            res = scenes.build("constrained-tree" if closed else "tree", speed=1.0)
+            res = scenes.get("constrained-tree" if closed else "tree")(speed=1.0)
             model = res.model
             q = np.array(res.state["q"], dtype=float)
-            rank = np.linalg.matrix_rank(closure_jacobian(model, q)) if model.contacts else 0
             self._geometry[closed] = (tuple(model.contacts), q, np.array(res.state["qd"], dtype=float),
-                                      float(res.params["length"]), model.nq - int(rank))
+                                      float(res.params["length"]), tree_dof(model, q))
         return self._geometry[closed]
 
     def model_for(self, closed: bool, mass: float, g: float):
@@ -109,15 +106,12 @@ class TreeExplorer(Explorer):
         model = self.model_for(closed, float(v["mass"]), float(v["gravity"]))
         _c, q, unit, L, dof = self.geometry(closed)
         qd = float(v["speed"]) * unit
-        tau = np.zeros(model.nq)
-        st = {"closed": closed, "model": model, "q": q, "qd": qd, "length": L, "dof": dof}
+        sol = tree_solve(model, q, qd)                               # 9.5 closed, 9.39-9.43 open
+        st = {"closed": closed, "model": model, "q": q, "qd": qd, "length": L, "dof": dof, "sol": sol,
+              "a": sol.a.reshape(N, 3), "qdd": np.asarray(sol.qdd)}
         if closed:
-            sol = loop_solve(model, q, qd, tau)                      # 9.5
             st["F"] = sol.F.reshape(-1, 3)
             st["cond"] = float(sol.cond)
-        else:
-            sol = stacked_solve(model, q, qd, tau)                   # 9.39-9.43
-        st.update(sol=sol, a=sol.a.reshape(N, 3), qdd=np.asarray(sol.qdd))
         return st
 
     def render(self, st):
