@@ -55,7 +55,8 @@ from planargeo.geometry.conics import pole  # noqa: E402
 from planargeo.errors import DegenerateGeometryError, SingularConfigurationError, SingularInertiaError  # noqa: E402
 from planargeo.screws.inertia import percussion_axis, percussion_pole  # noqa: E402
 from planargeo.mechanics.model import Body, Joint, Model, chain_model, random_model  # noqa: E402
-from planargeo.geometry.projective import COND_LIMIT, from_xy, join, meet, signed_distance, to_xy  # noqa: E402
+from planargeo.errors import COND_LIMIT  # noqa: E402
+from planargeo.geometry.projective import from_xy, join, meet, signed_distance, to_xy  # noqa: E402
 from planargeo.scenes.chain import METHODS  # noqa: E402  (method name -> forward dynamics, one table)
 
 EPS, EPS_LD = ref.EPS, ref.EPS_LD

@@ -127,7 +127,7 @@ def test_a_speed_change_runs_one_solve_and_no_direct_solution(ex, monkeypatch):
             return fn(*a, **k)
         return wrapper
 
-    monkeypatch.setattr(stacked, "tree_mobilities", counting("direct", stacked.tree_mobilities))
+    monkeypatch.setattr(stacked, "mobility_recursion", counting("direct", stacked.mobility_recursion))
     monkeypatch.setattr(mod, "tree_model", counting("model", mod.tree_model))
     monkeypatch.setattr(mod, "loop_solve", counting("loop", mod.loop_solve))
     monkeypatch.setattr(mod, "stacked_solve", counting("stacked", mod.stacked_solve))

@@ -206,7 +206,7 @@ def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None, ga
     from planargeo.mechanics.subspaces import Decomposition
 
     ax = _ax(ax)
-    dec = Decomposition(s, R, A)
+    dec = Decomposition(A, s, R)
     Q, mu = dec.split_wrench(f)
     active = dec.T @ Q
     react = dec.R @ mu
