@@ -16,32 +16,31 @@ from planargeo.mechanics.joints import R_of
 from planargeo.mechanics.kinematics import kinematics
 from planargeo.mechanics.subspaces import T_of, U_of
 from planargeo.mechanics.model import Body, Joint, Model, random_model
-from planargeo.screws.twists import inertia_matrix
 from test_articulated_reference import dense_mobility, mass_matrix_cond, random_state, without_descendants
 
 ALL_KINDS = ("revolute", "prismatic", "revolute_prismatic", "plane", "fixed")
+
+
+def _matches_reference(model, q, qd, tau, f_ext):
+    r = articulated_mobility(model, q, qd, tau, f_ext)
+    for i in range(model.N):
+        Lam, b = dense_mobility(model, q, qd, tau, f_ext, i)
+        np.testing.assert_allclose(r.Lambda_inv[i], Lam, atol=1e-9 * (1 + np.abs(Lam).max()))
+        np.testing.assert_allclose(r.b[i], b, atol=1e-8 * (1 + np.abs(b).max()))
 
 
 @given(n=st.integers(1, 6), seed=st.integers(0, 10_000), loads=st.booleans())
 def test_Lambda_and_b_match_dense_truncated_chain(n, seed, loads):
     model = random_model(n, seed=seed)
     q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed), loads=loads)
-    r = articulated_mobility(model, q, qd, tau, f_ext)
-    for i in range(model.N):
-        Lam, b = dense_mobility(model, q, qd, tau, f_ext, i)
-        np.testing.assert_allclose(r.Lambda_inv[i], Lam, atol=1e-9 * (1 + np.abs(Lam).max()))
-        np.testing.assert_allclose(r.b[i], b, atol=1e-8 * (1 + np.abs(b).max()))
+    _matches_reference(model, q, qd, tau, f_ext)
 
 
 @pytest.mark.parametrize("seed", range(4))
 def test_multi_dof_joints(seed):
     model = random_model(5, seed=200 + seed, kinds=ALL_KINDS)
     q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
-    r = articulated_mobility(model, q, qd, tau, f_ext)
-    for i in range(model.N):
-        Lam, b = dense_mobility(model, q, qd, tau, f_ext, i)
-        np.testing.assert_allclose(r.Lambda_inv[i], Lam, atol=1e-9 * (1 + np.abs(Lam).max()))
-        np.testing.assert_allclose(r.b[i], b, atol=1e-8 * (1 + np.abs(b).max()))
+    _matches_reference(model, q, qd, tau, f_ext)
 
 
 @given(seed=st.integers(0, 10_000))
@@ -118,11 +117,7 @@ def test_trees_match_the_tree_with_descendants_cut_off(n, seed):
     # 9.45: body i's mobility with its descendants cut off, siblings' subtrees loaded on the parents
     model = random_model(n, seed=seed, tree=True)
     q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
-    r = articulated_mobility(model, q, qd, tau, f_ext)
-    for i in range(model.N):
-        Lam, b = dense_mobility(model, q, qd, tau, f_ext, i)
-        np.testing.assert_allclose(r.Lambda_inv[i], Lam, atol=1e-9 * (1 + np.abs(Lam).max()))
-        np.testing.assert_allclose(r.b[i], b, atol=1e-8 * (1 + np.abs(b).max()))
+    _matches_reference(model, q, qd, tau, f_ext)
 
 
 def test_singular_joint_of_a_tree_raises_with_cond():

@@ -7,7 +7,7 @@ from planargeo.algorithms.loops import (
     branch_matrix, constrained_dynamics_lagrange, forward_dynamics_loops, loop_solve)
 from planargeo.algorithms.stacked import blocks
 from planargeo.mechanics.contacts import (
-    Contact, contact_bias, contact_matrix, motion_space, reaction_space, residual,
+    B_of, Contact, contact_bias, contact_matrix, residual, z_of,
     stacked_contact_spaces, validate_contacts, world_point)
 from planargeo.errors import (
     DegenerateGeometryError, InputError, ShapeError, SingularConfigurationError)
@@ -76,7 +76,7 @@ def test_motion_and_reaction_spaces_are_dual(kind, seed):
     pose = rng.normal(size=(2, 3))
     c = Contact(kind, 1, 0, tuple(rng.normal(size=2)), tuple(rng.normal(size=2)),
                 direction=tuple(rng.normal(size=2)))
-    z, B = motion_space(c, pose), reaction_space(c, pose)
+    z, B = z_of(c, pose), B_of(c, pose)
     assert z.shape == (3, c.dofs) and B.shape == (3, 3 - c.dofs)
     assert np.allclose(z.T @ B, 0, atol=1e-12)                        # 9.60
     assert np.linalg.matrix_rank(np.hstack([z, B])) == 3
@@ -92,7 +92,7 @@ def test_residual_is_position_form_of_reaction_space(seed):
         P = tuple(world_point(pose, 0, r))
         c = Contact(kind, 0, -1, r, P, direction=tuple(rng.normal(size=2)), angle=float(pose[0, 2]))
         assert np.allclose(residual(c, pose), 0, atol=1e-12)
-        z = motion_space(c, pose)[:, 0]
+        z = z_of(c, pose)[:, 0]
         h = 1e-6
         # a twist [vx, vy, w] at the origin moves the body frame origin (x, y) with v + w × (x, y)
         x, y, th = pose[0]
@@ -118,7 +118,7 @@ def test_contact_validation_errors():
     with pytest.raises(InputError, match=r"contacts\[0\] must be a Contact"):
         validate_contacts(["pin"], 3)
     with pytest.raises(ShapeError, match="pose must have shape"):
-        motion_space(Contact("pin", 0), np.zeros(3))
+        z_of(Contact("pin", 0), np.zeros(3))
 
 
 def test_contact_bias_symmetric():

@@ -104,7 +104,7 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
     S : list of N (3, k_i) joint spaces.
     kappa, p : (N, 3) bias accelerations (2.19) and bias forces (3.11, gravity and loads included).
     tau : list of N (k_i,) joint torques ``Q_i``.
-    parents : sequence of N ints, default a chain.
+    parents : sequence of N ints (``-1`` the ground, parents before children), default a chain.
     points : (N, 2), optional
         A point of each joint, for the reaction bases ``R`` of prismatic joints
         (:func:`planargeo.mechanics.joints.R_of`); default the origin.

@@ -141,18 +141,10 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_poi
 
     Parameters
     ----------
-    I : (N, 3, 3) body inertias at the origin (point masses allowed while every ``s_i^T I_i s_i`` is invertible).
-    S : list of N (3, k_i) joint spaces.
-    kappa, p : (N, 3) bias accelerations (2.19) and bias forces (3.11, gravity and loads included).
-    tau : list of N (k_i,) joint torques ``Q_i``.
-    parents : sequence of N ints (parents before children), default a chain.
-    points : (N, 2), optional
-        A point of each joint, for the reaction bases ``R`` of prismatic joints
-        (:func:`planargeo.mechanics.joints.R_of`); default the origin.
-    joint_points : (N, 2), optional
-        Each joint's point (pivot; placement point of a prismatic joint: the joint
-        frame's origin), where the singularity rule of :data:`planargeo.errors.COND_LIMIT`
-        is measured; default the origin.  The model-level functions pass the joint frames' origins.
+    I, S, kappa, p, tau, parents, points, joint_points
+        One state, as for :func:`planargeo.algorithms.articulated_inertia.articulated_recursion`
+        (body inertias ``I``: point masses are fine while every ``s_i^T I_i s_i`` is invertible;
+        ``joint_points``: where the singularity rule is measured).
     articulated : ArticulatedInertias, optional
         :func:`planargeo.algorithms.articulated_inertia.articulated_recursion` of the same state,
         for the siblings of a tree (computed when needed and not given).
@@ -219,18 +211,9 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_poi
 def articulated_mobility(model, q, qd=None, tau=None, f_ext=None) -> ArticulatedMobilities:
     """Articulated mobilities ``Lambda_i^-1`` and bias accelerations ``b_i`` (thesis 7.4.1; trees 9.45).
 
-    Parameters
-    ----------
-    model : planargeo.mechanics.model.Model
-        A chain or tree hanging from the ground.
-    q, qd, tau : array_like (nq,)
-        State and joint torques (zero if omitted).
-    f_ext : array_like (N, 3), optional
-        World wrenches at the origin applied to each body (besides gravity).
-
-    Returns
-    -------
-    ArticulatedMobilities
+    One state of a chain or tree hanging from the ground, given as for
+    :func:`planargeo.algorithms.articulated_inertia.articulated_inertia`; returns an
+    :class:`ArticulatedMobilities` (:func:`mobility_recursion` on the state's kinematics).
 
     Examples
     --------

@@ -195,18 +195,8 @@ def _mobility_split_qdd(model, q, qd, tau, f_ext):
 def forward_dynamics_mobility_split(model, q, qd, tau, f_ext=None) -> np.ndarray:
     """Joint accelerations by articulated mobility + chain splitting (thesis 7.4.1, 7.54, 7.56, 6.110).
 
-    Parameters
-    ----------
-    model : planargeo.mechanics.model.Model
-        An unbranched chain whose first body hangs from the ground.
-    q, qd, tau : array_like (..., nq)
-        Leading batch dimensions are solved state by state.
-    f_ext : array_like (..., N, 3), optional
-        World wrenches at the origin applied to each body (besides gravity).
-
-    Returns
-    -------
-    ndarray (..., nq)
+    Arguments and result as :func:`planargeo.algorithms.projective.forward_dynamics_projective`;
+    the model must be an unbranched chain whose first body hangs from the ground.
 
     Raises
     ------

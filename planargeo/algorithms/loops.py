@@ -62,7 +62,7 @@ class LoopSolution:
     """All quantities of one constrained state (thesis 9.49-9.75; attributes named after the symbols).
 
     Reaction bases: ``xi`` are the components of the contact forces in the
-    contact reaction spaces ``B`` of :func:`planargeo.mechanics.contacts.reaction_space`
+    contact reaction spaces ``B`` of :func:`planargeo.mechanics.contacts.B_of`
     (``F = B ξ``, 9.70-9.71): for a pin, the unit forces along x and y through
     the contact point; for a slider, the unit force normal to the slide through
     the contact point on body ``a`` (the slide direction turned by -90°, as in

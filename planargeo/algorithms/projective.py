@@ -291,17 +291,9 @@ def _projective_qdd(model, q, qd, tau, f_ext):
 def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
     """Joint accelerations by the projective articulated equations (thesis 6.108-6.110).
 
-    Parameters
-    ----------
-    model : planargeo.mechanics.model.Model
-    q, qd, tau : array_like (..., nq)
-        Leading batch dimensions are solved state by state.
-    f_ext : array_like (..., N, 3), optional
-        World wrenches at the origin applied to each body (besides gravity).
-
-    Returns
-    -------
-    ndarray (..., nq)
+    The forward-dynamics signature of :mod:`planargeo.algorithms`: ``q``, ``qd``, ``tau``
+    of shape (..., nq) (leading batch dimensions solved state by state), ``f_ext`` (..., N, 3)
+    world wrenches at the origin on the bodies (besides gravity); returns ``q̈`` (..., nq).
 
     Raises
     ------

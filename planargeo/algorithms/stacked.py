@@ -47,7 +47,7 @@ from planargeo.algorithms.articulated_inertia import _data_arrays, _per_state, _
 from planargeo.algorithms.articulated_mobility import mobility_recursion
 
 __all__ = ["adjacency", "trunk", "blocks", "StackedSolution", "stacked_solve", "joint_conditions",
-           "articulation_matrix", "stacked_mobility", "direct_accelerations", "forward_dynamics_stacked"]
+           "articulation_matrix", "direct_accelerations", "forward_dynamics_stacked"]
 
 
 # ---------------------------------------------------------------------------
@@ -255,6 +255,7 @@ class StackedSolution:
     kappa, p, d : (3N,) bias accelerations, bias forces, articulated bias forces (9.32)
     articulated : ArticulatedInertias, the per-body quantities
         (:func:`planargeo.algorithms.articulated_inertia.articulated_recursion`, 7.7 = 9.27-9.28 corrected)
+    articulated_mobilities : ArticulatedMobilities, built on first access (7.38, 9.45; the input of 9.48)
     a : (3N,) body accelerations (9.39)
     f : (3N,) internal joint forces (9.41 with 9.17)
     qdd : (nq,) joint accelerations (9.43)
@@ -338,7 +339,7 @@ class StackedSolution:
 
         Examples
         --------
-        The unit link of :func:`stacked_mobility`: a unit couple turns it at 3 rad/s².
+        A unit link on a pin at the origin (``ρ² = 1/12``): a unit couple turns it at ``1/(m(ρ² + L²/4)) = 3`` rad/s² (7.42).
 
         >>> from planargeo.mechanics.model import chain_model
         >>> sol = stacked_solve(chain_model(1), [0.0], [0.0], [0.0])
@@ -436,27 +437,6 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     sol.data = data
     sol._args = args[1:]
     return sol
-
-
-def stacked_mobility(sol: StackedSolution) -> np.ndarray:
-    """Full stacked mobility ``Φ = L^T S T^T A^{-1} L`` of the tree (thesis 9.39, 9.65-9.73 corrected).
-
-    ``a = u - Φ w`` when wrenches ``-w`` are applied to the bodies (see
-    :attr:`StackedSolution.mobility` and ``docs/errata.md``).
-
-    Examples
-    --------
-    A single unit link on a pin at the origin (``ρ² = 1/12``): a unit couple
-    turns it at ``1/(m(ρ² + L²/4)) = 3`` rad/s² (thesis 7.42).
-
-    >>> from planargeo.mechanics.model import chain_model
-    >>> Phi = stacked_mobility(stacked_solve(chain_model(1), [0.0], [0.0], [0.0]))
-    >>> Phi.round(12) + 0.0
-    array([[0., 0., 0.],
-           [0., 0., 0.],
-           [0., 0., 3.]])
-    """
-    return sol.mobility
 
 
 # ---------------------------------------------------------------------------

@@ -151,6 +151,10 @@ def joint_scale(A, s, point):
     if s.ndim == 1:
         s = s[:, None]
     P = np.asarray(point, dtype=float)
+    if A.ndim == 2 and s.ndim == 2 and P.ndim == 1:      # one joint: the same arithmetic on Python floats
+        out = _joint_scale_one(A.tolist(), s.T.tolist(), *P.tolist())
+        if out is not None:
+            return out
     x, y = P[..., 0], P[..., 1]
     a00, a01, a02 = A[..., 0, 0], A[..., 0, 1], A[..., 0, 2]
     a11, a12, a22 = A[..., 1, 1], A[..., 1, 2], A[..., 2, 2]
@@ -174,6 +178,22 @@ def joint_scale(A, s, point):
     ss = np.sum(t0 * t0 + t1 * t1 + s2 * s2, axis=-1)
     out = (np.sqrt(F2) if F2 is not None else F) * ss
     return float(out) if np.ndim(out) == 0 else out
+
+
+def _joint_scale_one(A, cols, x, y):
+    """:func:`joint_scale` of one joint, ``A`` and the columns of ``s`` as lists; None where squares leave range."""
+    (a00, a01, a02), (_, a11, a12), (_, _, a22) = A
+    p02 = a02 + y * a00 - x * a01
+    p12 = a12 + y * a01 - x * a11
+    p22 = a22 + y * a02 - x * a12 + y * p02 - x * p12
+    F2 = a00 * a00 + a11 * a11 + p22 * p22 + 2.0 * (a01 * a01 + p02 * p02 + p12 * p12)
+    if not 1e-300 < F2 < 1e300:
+        return None
+    ss = 0.0
+    for s0, s1, s2 in cols:
+        t0, t1 = s0 - y * s2, s1 + x * s2
+        ss += t0 * t0 + t1 * t1 + s2 * s2
+    return math.sqrt(F2) * ss
 
 
 def singular_joint_error(i: int, cond: float) -> SingularConfigurationError:
@@ -290,6 +310,8 @@ def _solve(M: np.ndarray, b: np.ndarray, what: str = "a recursion matrix") -> np
     in the mobility recursion 7.38): that is reported as a SingularConfigurationError
     with ``cond = inf``, never as numpy's bare LinAlgError.
     """
+    if M.shape == (1, 1):
+        return b / M[0, 0]                  # the LU solve's numbers, without its overhead
     try:
         return np.linalg.solve(M, b)
     except np.linalg.LinAlgError:
@@ -299,8 +321,8 @@ def _solve(M: np.ndarray, b: np.ndarray, what: str = "a recursion matrix") -> np
 def _right_solve(X: np.ndarray, M: np.ndarray) -> np.ndarray:
     """``X M⁻¹`` for symmetric ``M`` (..., k, k), as ``(M⁻¹ Xᵀ)ᵀ``.
 
-    A single 1×1 ``M`` multiplies by ``1 / M``: the same numbers as the LU solve
-    (which scales by the reciprocal pivot), without its overhead.
+    A single 1×1 ``M`` multiplies by ``1 / M`` (within an ulp of the LU solve, without its
+    overhead).
     """
     if M.shape == (1, 1):
         return X * (1.0 / M[0, 0])
