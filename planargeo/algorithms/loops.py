@@ -114,7 +114,7 @@ class LoopSolution:
 
     @property
     def Lambda_inv(self) -> np.ndarray:
-        """The tree's full stacked mobility ``Λ^{-1}`` (3N×3N), built on first access (``tree.mobility``)."""
+        """The tree's full stacked mobility ``Λ^{-1}`` (3N×3N) of 9.65-9.73, built on first access (``tree.mobility``)."""
         return self.tree.mobility
 
 

@@ -305,7 +305,7 @@ class StackedSolution:
 
     @property
     def R(self) -> np.ndarray:
-        """Block-diagonal reaction spaces ``{{R_i}}`` (``S^T R = 0``; :func:`planargeo.mechanics.joints.R_of`: forces through the joints, couples)."""
+        """Block-diagonal reaction spaces ``{{R_i}}`` (``S^T R = 0``, thesis 9.20; :func:`planargeo.mechanics.joints.R_of`: forces through the joints, couples)."""
         return self._stack(self.articulated.R)
 
     @property

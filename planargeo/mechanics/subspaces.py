@@ -817,7 +817,7 @@ class Decomposition:
 
     @classmethod
     def from_joint(cls, A, joint, *, name: str = "A") -> "Decomposition":
-        """Build from a :class:`planargeo.mechanics.joints.JointSpace` (uses its ``s`` and ``R``)."""
+        """Build from a :class:`planargeo.mechanics.joints.JointSpace` (its ``s`` and ``R``, thesis 5.63, 6.1)."""
         return cls(A, joint.s, joint.R, name=name)
 
     def split_wrench(self, f) -> tuple[np.ndarray, np.ndarray]:
