@@ -55,7 +55,8 @@ from planargeo.geometry.conics import pole  # noqa: E402
 from planargeo.errors import DegenerateGeometryError, SingularConfigurationError, SingularInertiaError  # noqa: E402
 from planargeo.screws.inertia import percussion_axis, percussion_pole  # noqa: E402
 from planargeo.mechanics.model import Body, Joint, Model, chain_model, random_model  # noqa: E402
-from planargeo.geometry.projective import COND_LIMIT, from_xy, join, meet, signed_distance, to_xy  # noqa: E402
+from planargeo.errors import COND_LIMIT  # noqa: E402
+from planargeo.geometry.projective import from_xy, join, meet, signed_distance, to_xy  # noqa: E402
 from planargeo.scenes.chain import METHODS  # noqa: E402  (method name -> forward dynamics, one table)
 
 EPS, EPS_LD = ref.EPS, ref.EPS_LD
@@ -622,10 +623,11 @@ def geometry_markdown(g: dict) -> list:
           f"{_gstats(lp, 'err'):.0e} at cond {_gmed(lp, 'kappa'):.0e} |",
           f"| `pole(C, l)` | `DegenerateGeometryError` (`.cond`) | cond₂(C) > 1/rtol = 1e13 | "
           f"{_gstats(lc, 'err'):.0e} at cond {_gmed(lc, 'kappa'):.0e} |", "",
-          "**Finding.** `meet` and `join` refuse on the condition number κ = |a| |b| / |a × b| (three norms), as "
-          "`pole` does at 1e13: near-*parallel* lines and points and lines near infinity keep κ small "
-          f"(≤ {kmax:.0f} above) and are answered at full accuracy, ideal results included, while near-*coincident* "
-          "lines and nearly coincident points (κ ≈ 1/θ, R/δ) are answered to about ε·κ ≤ 2e-3 and refused beyond, "
+          "**Finding.** `meet` and `join` refuse on the condition number κ = |a| |b| / |a × b| (three norms), past "
+          "the package's one limit `COND_LIMIT` = 1e12 (`pole` at 1e13): near-*parallel* lines and points and lines "
+          f"near infinity keep κ small (≤ {kmax:.0f} above) and are answered at full accuracy, ideal results included, "
+          "while near-*coincident* lines and nearly coincident points (κ ≈ 1/θ, R/δ) are answered to about "
+          "ε·κ ≤ 2e-4 and refused beyond, "
           "instead of returning answers with no correct digit.", ""]
     return L
 
@@ -944,10 +946,10 @@ def plot_geometry(g: dict, ax, bx) -> None:
         a.set_xlim(1, 1e19)
         a.set_ylim(floor / 2, top)
         a.grid(True, which="major", alpha=0.3)
-    ax.axvline(1e12, color="C8", lw=0.8, ls=":")
-    ax.axvline(COND_LIMIT, color="C7", lw=0.8, ls=":")
-    ax.text(1.5, 1.4 * band, "raised, at their cond (dotted: pole, join, meet refuse past κ = 1e13; "
-            "percussion_pole past 1e12); join / meet shown without the limit",
+    ax.axvline(COND_LIMIT, color="C8", lw=0.8, ls=":")
+    ax.axvline(1e13, color="C7", lw=0.8, ls=":")
+    ax.text(1.5, 1.4 * band, "raised, at their cond (dotted: join, meet, percussion_pole refuse past κ = 1e12, "
+            "pole past 1e13); join / meet shown without the limit",
             fontsize=7, color="0.4")
     bx.text(1.5, 1.4 * band, "Euclidean reading lost (returned at infinity)", fontsize=7, color="0.4")
     ax.set_xlabel("κ (join / meet: |a||b|/|a×b|; axis: ‖|I||a|‖/‖Ia‖; pole: cond₂)")

@@ -20,7 +20,7 @@ imported on demand; importing ``planargeo`` never imports matplotlib.
 from __future__ import annotations
 
 from planargeo import errors
-from planargeo.errors import (DegenerateGeometryError, InputError, InvalidPolygonError, NonFiniteError,
+from planargeo.errors import (COND_LIMIT, DegenerateGeometryError, InputError, InvalidPolygonError, NonFiniteError,
                      PlanargeoError, SceneError, ShapeError, SingularConfigurationError,
                      SingularError, SingularInertiaError, TopologyError)
 from planargeo.geometry.projective import (from_standard, from_xy, incidence, is_ideal, join, meet, normalize,
@@ -33,8 +33,8 @@ from planargeo.screws.twists import (X_P, X_P_inv_T, Twist, Wrench, add_twists, 
                      crm, inertia_at, kappa, kinetic_energy, momentum, power, rot)
 from planargeo.screws.inertia import Inertia, percussion_axis, percussion_pole
 from planargeo.mechanics import joints
-from planargeo.mechanics.joints import fixed, plane, prismatic, revolute, revolute_prismatic, twin_prismatic
-from planargeo.mechanics.subspaces import Decomposition, percussion_space, reactive_acceleration_space
+from planargeo.mechanics.joints import R_of, fixed, plane, prismatic, revolute, revolute_prismatic, twin_prismatic
+from planargeo.mechanics.subspaces import Decomposition, T_of, U_of
 from planargeo.mechanics.model import Body, Joint, Model
 from planargeo import scenes
 
@@ -44,7 +44,7 @@ __all__ = [
     # errors
     "errors", "PlanargeoError", "InputError", "ShapeError", "NonFiniteError",
     "InvalidPolygonError", "TopologyError", "SceneError", "DegenerateGeometryError",
-    "SingularError", "SingularInertiaError", "SingularConfigurationError",
+    "SingularError", "SingularInertiaError", "SingularConfigurationError", "COND_LIMIT",
     # projective geometry
     "normalize", "is_ideal", "from_xy", "to_xy", "join", "meet", "incidence",
     "signed_distance", "pencil", "to_standard", "from_standard",
@@ -57,7 +57,7 @@ __all__ = [
     "Inertia", "percussion_axis", "percussion_pole",
     # joints and subspaces
     "joints", "revolute", "prismatic", "revolute_prismatic", "twin_prismatic", "plane", "fixed",
-    "Decomposition", "percussion_space", "reactive_acceleration_space",
+    "R_of", "T_of", "U_of", "Decomposition",
     # mechanisms
     "Body", "Joint", "Model", "scenes",
 ]

@@ -21,6 +21,8 @@ Hierarchy::
     └── SingularError (numpy.linalg.LinAlgError)  carries ``cond``
         ├── SingularInertiaError           an inertia that cannot be inverted
         └── SingularConfigurationError     s^T A s or B^T G Λ^-1 G^T B singular
+
+One condition limit, :data:`COND_LIMIT`, decides what is too near singular to answer.
 """
 from __future__ import annotations
 
@@ -38,7 +40,24 @@ __all__ = [
     "SingularError",
     "SingularInertiaError",
     "SingularConfigurationError",
+    "COND_LIMIT",
 ]
+
+#: The package's one condition limit: a result whose relative error can reach about ``ε κ``
+#: (``ε = 2.2e-16``, ``κ`` the condition number of the problem that produces it) is refused
+#: when ``κ > COND_LIMIT``, because past ``1e12`` fewer than about four of its digits
+#: (``ε κ ≈ 2e-4``) would be right.  The error raised carries ``κ`` as ``.cond``
+#: (``inf`` when exactly singular).  Where it applies, with the ``κ`` of each problem:
+#:
+#: * :func:`planargeo.geometry.projective.join` / ``meet``: ``κ = |a| |b| / |a × b|``
+#:   (:class:`DegenerateGeometryError`);
+#: * a joint's ``sᵀAs`` in every dynamics method: ``κ = ‖A_P‖_F ‖s_P‖_F² / σ_min(sᵀAs)``,
+#:   ``A`` and ``s`` at the joint's point ``P`` (:func:`planargeo.mechanics.subspaces.joint_cond`,
+#:   :class:`SingularConfigurationError`);
+#: * ``RᵀA⁻¹R`` (``κ = ‖R‖_F² / (σ_min(A) σ_min(RᵀA⁻¹R))``) and an inertia ``A`` to be
+#:   inverted (``κ = |λ|_max / |λ|_min``) in :mod:`planargeo.mechanics.subspaces`
+#:   (:class:`SingularConfigurationError`, :class:`SingularInertiaError`).
+COND_LIMIT = 1e12
 
 
 class PlanargeoError(Exception):

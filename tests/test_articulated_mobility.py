@@ -1,4 +1,8 @@
-"""Articulated mobility algorithm (thesis 7.4.1) against dense joint-space references."""
+"""Articulated mobility algorithm (thesis 7.4.1; trees 9.45) against independent references.
+
+References (``test_articulated_reference``): Pinocchio and the KKT solve in maximal coordinates
+for the chain (tree) with body ``i``'s descendants cut off; hand closed forms (7.42).
+"""
 from __future__ import annotations
 
 import numpy as np
@@ -7,35 +11,36 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from planargeo.algorithms.articulated_mobility import articulated_mobility, mobility_recursion
-from planargeo.errors import TopologyError
+from planargeo.errors import SingularConfigurationError
+from planargeo.mechanics.joints import R_of
 from planargeo.mechanics.kinematics import kinematics
+from planargeo.mechanics.subspaces import T_of, U_of
 from planargeo.mechanics.model import Body, Joint, Model, random_model
-from planargeo.screws.twists import inertia_matrix
-from test_articulated_reference import dense_mobility, random_state
+from test_articulated_reference import dense_mobility, mass_matrix_cond, random_state, without_descendants
 
 ALL_KINDS = ("revolute", "prismatic", "revolute_prismatic", "plane", "fixed")
+
+
+def _matches_reference(model, q, qd, tau, f_ext):
+    r = articulated_mobility(model, q, qd, tau, f_ext)
+    for i in range(model.N):
+        Lam, b = dense_mobility(model, q, qd, tau, f_ext, i)
+        np.testing.assert_allclose(r.Lambda_inv[i], Lam, atol=1e-9 * (1 + np.abs(Lam).max()))
+        np.testing.assert_allclose(r.b[i], b, atol=1e-8 * (1 + np.abs(b).max()))
 
 
 @given(n=st.integers(1, 6), seed=st.integers(0, 10_000), loads=st.booleans())
 def test_Lambda_and_b_match_dense_truncated_chain(n, seed, loads):
     model = random_model(n, seed=seed)
     q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed), loads=loads)
-    r = articulated_mobility(model, q, qd, tau, f_ext)
-    for i in range(model.N):
-        Lam, b = dense_mobility(model, q, qd, tau, f_ext, i)
-        np.testing.assert_allclose(r.Lambda_inv[i], Lam, atol=1e-9 * (1 + np.abs(Lam).max()))
-        np.testing.assert_allclose(r.b[i], b, atol=1e-8 * (1 + np.abs(b).max()))
+    _matches_reference(model, q, qd, tau, f_ext)
 
 
 @pytest.mark.parametrize("seed", range(4))
 def test_multi_dof_joints(seed):
     model = random_model(5, seed=200 + seed, kinds=ALL_KINDS)
     q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
-    r = articulated_mobility(model, q, qd, tau, f_ext)
-    for i in range(model.N):
-        Lam, b = dense_mobility(model, q, qd, tau, f_ext, i)
-        np.testing.assert_allclose(r.Lambda_inv[i], Lam, atol=1e-9 * (1 + np.abs(Lam).max()))
-        np.testing.assert_allclose(r.b[i], b, atol=1e-8 * (1 + np.abs(b).max()))
+    _matches_reference(model, q, qd, tau, f_ext)
 
 
 @given(seed=st.integers(0, 10_000))
@@ -54,19 +59,17 @@ def test_mobility_is_symmetric_positive_semidefinite_with_the_jacobian_rank(seed
 
 def _printed_mobility(I, S, kappa, p, tau):
     """Thesis 7.38a exactly as printed (minus sign before U R^T Lambda^-1)."""
-    from planargeo.algorithms.projective import percussion_subspace, reaction_space, reactive_subspace
-
     N = len(I)
     Lam = np.zeros((N, 3, 3))
     for i in range(N):
         s = S[i]
-        T = percussion_subspace(I[i], s)
-        U = reactive_subspace(I[i], reaction_space(s))
+        T = T_of(I[i], s)
+        U = U_of(I[i], R_of(s))
         G = s @ T.T @ np.linalg.inv(I[i])
         if i == 0:
             Lam[i] = G
         else:
-            P = U @ reaction_space(s).T
+            P = U @ R_of(s).T
             M = np.eye(3) + P @ Lam[i - 1] @ I[i]
             Lam[i] = np.linalg.solve(M, G - P @ Lam[i - 1])
     return Lam
@@ -109,29 +112,36 @@ def test_thesis_7_42_first_body_mobility():
     np.testing.assert_allclose(r.Lambda_inv[0], expected, atol=1e-14)
 
 
-def test_branched_model_is_rejected():
-    model = Model([Body(1.0, (0.5, 0.0), 0.1)] * 3, [Joint("revolute")] * 3, [-1, 0, 0])
-    with pytest.raises(TopologyError, match="unbranched chain"):
+@given(n=st.integers(2, 7), seed=st.integers(0, 10_000))
+def test_trees_match_the_tree_with_descendants_cut_off(n, seed):
+    # 9.45: body i's mobility with its descendants cut off, siblings' subtrees loaded on the parents
+    model = random_model(n, seed=seed, tree=True)
+    q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
+    _matches_reference(model, q, qd, tau, f_ext)
+
+
+def test_singular_joint_of_a_tree_raises_with_cond():
+    # 7.38 has one singularity check, for chains and trees alike: a point mass on its own pin (sᵀIs = 0)
+    model = Model([Body(1.0, (0.5, 0.0), 0.1), Body(1.0, (0.5, 0.0), 0.1), Body(1.0, (0.0, 0.0), 0.0)],
+                  [Joint("revolute"), Joint("revolute", (1.0, 0.0, 0.0)), Joint("revolute", (1.0, 0.0, 0.0))],
+                  [-1, 0, 0])
+    with pytest.raises(SingularConfigurationError, match="of joint 2 is singular") as e:
         articulated_mobility(model, np.zeros(3))
-    I = np.stack([inertia_matrix(1.0, [0.5, 0.0], 0.1)] * 2)
-    with pytest.raises(TopologyError, match="parents"):
-        mobility_recursion(I, [np.array([[0.0], [0.0], [1.0]])] * 2, np.zeros((2, 3)), np.zeros((2, 3)),
-                           [np.zeros(1)] * 2, parents=[-1, -1])
+    assert e.value.cond == np.inf
 
 
 @pytest.mark.parametrize("n, seed", [(50, 0), (50, 1), (200, 2)])
 def test_long_chains_match_dense_reference(n, seed):
     # issue 3: agreement with the independent dense reference up to N = 200, with a relative
     # tolerance scaled by the conditioning of the truncated chain's mass matrix
-    from planargeo.algorithms.crba import mass_matrix
-    from test_articulated_reference import EPS, truncated_chain
+    from test_articulated_reference import EPS
 
     model = random_model(n, seed=seed)
     q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
     r = articulated_mobility(model, q, qd, tau, f_ext)
     for i in (0, 1, n // 2, n - 2, n - 1):
         Lam, b = dense_mobility(model, q, qd, tau, f_ext, i)
-        sub = truncated_chain(model, i)
-        rtol = max(1e-12, 100 * EPS * np.linalg.cond(mass_matrix(sub, q[:sub.nq])))
+        sub = without_descendants(model, i)[0]
+        rtol = max(1e-12, 100 * EPS * mass_matrix_cond(sub, q[:sub.nq]))
         assert np.linalg.norm(r.Lambda_inv[i] - Lam) <= rtol * max(np.linalg.norm(Lam), 1.0)
         assert np.linalg.norm(r.b[i] - b) <= rtol * max(np.linalg.norm(b), 1.0)

@@ -12,7 +12,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from planargeo import errors
-from planargeo.mechanics.joints import (DOF, KINDS, JointSpace, fixed, motion_space, plane, prismatic,
+from planargeo.mechanics.joints import (DOF, KINDS, JointSpace, R_of, fixed, motion_space, plane, prismatic,
                               reaction_space, revolute, revolute_prismatic, twin_prismatic)
 from planargeo.screws.twists import X_P, X_P_inv_T
 
@@ -86,7 +86,7 @@ def test_twin_prismatic_subspace_identities():
     m, a, b, J = 2.0, 0.5, -1.5, 0.8
     I = np.array([[m, 0.0, -m * b], [0.0, m, m * a], [-m * b, m * a, J + m * (a * a + b * b)]])
     j = twin_prismatic()
-    dec = Decomposition.from_joint(j, I)
+    dec = Decomposition.from_joint(I, j)
     T_hand = np.array([[1.0, 0.0], [0.0, 1.0], [-b, a]])
     U_hand = np.array([[b], [-a], [1.0]])
     np.testing.assert_allclose(dec.T, T_hand, atol=1e-14)
@@ -242,32 +242,38 @@ def test_motion_space_matches_model_kinematics(kind, x, y, phi):
     np.testing.assert_allclose(motion_space(kind, (x, y), _dir(phi)), ref, atol=1e-12)
 
 
-# --------------------------------------------------------------------------- reaction_space_of (the algorithms' basis)
+# --------------------------------------------------------------------------- R_of (the algorithms' basis)
 @given(kinds, coord, coord, angle)
-def test_reaction_space_of_reads_the_joint_off_s(kind, x, y, lam):
+def test_R_of_reads_the_joint_off_s(kind, x, y, lam):
     # the algorithms only see s (and a point of the joint): they must get the same R as the joint
-    from planargeo.mechanics.joints import reaction_space_of
-
     j = JointSpace(kind, (x, y), _dir(lam))
-    np.testing.assert_allclose(reaction_space_of(j.s, (x, y)), j.R, atol=1e-12 * (1 + abs(x) + abs(y)))
+    np.testing.assert_allclose(R_of(j.s, (x, y)), j.R, atol=1e-12 * (1 + abs(x) + abs(y)))
 
 
-def test_reaction_space_of_hand_values_and_errors():
-    from planargeo.mechanics.joints import reaction_space_of
+@given(st.integers(0, 3), st.integers(0, 10_000))
+def test_R_of_a_random_motion_space_is_its_reciprocal_complement(k, seed):
+    # any s (not only a joint table's): R spans the wrenches reciprocal to s (sᵀR = 0, thesis 6.1)
+    s = np.random.default_rng(seed).normal(size=(3, k))
+    R = R_of(s)
+    assert R.shape == (3, 3 - k)
+    np.testing.assert_allclose(s.T @ R, 0.0, atol=1e-12 * (1 + np.abs(R).max(initial=0.0)))
+    assert np.linalg.matrix_rank(np.hstack([s, R])) == 3
 
+
+def test_R_of_hand_values_and_errors():
     # revolute at (2, 3): unit forces along x and y through it (thesis 7.16)
-    np.testing.assert_array_equal(reaction_space_of([[3.0], [-2.0], [1.0]]), [[1, 0], [0, 1], [-3, 2]])
+    np.testing.assert_array_equal(R_of([[3.0], [-2.0], [1.0]]), [[1, 0], [0, 1], [-3, 2]])
     # prismatic along x through (2, 3): the normal force through (2, 3) and the couple (5.63)
-    np.testing.assert_array_equal(reaction_space_of([[1.0], [0.0], [0.0]], (2.0, 3.0)), [[0, 0], [1, 0], [2, 1]])
+    np.testing.assert_array_equal(R_of([[1.0], [0.0], [0.0]], (2.0, 3.0)), [[0, 0], [1, 0], [2, 1]])
     # pin in a slot along x at (2, 3): the normal force through the pin; columns in either order
     s = np.array([[1.0, 3.0], [0.0, -2.0], [0.0, 1.0]])
-    np.testing.assert_array_equal(reaction_space_of(s), [[0], [1], [2]])
-    np.testing.assert_array_equal(reaction_space_of(s[:, ::-1]), [[0], [1], [2]])
+    np.testing.assert_array_equal(R_of(s), [[0], [1], [2]])
+    np.testing.assert_array_equal(R_of(s[:, ::-1]), [[0], [1], [2]])
     # two translations (twin prismatic, thesis 4.79): only a couple
-    np.testing.assert_array_equal(reaction_space_of(np.eye(3)[:, :2]), [[0], [0], [1]])
-    assert reaction_space_of(np.eye(3)).shape == (3, 0)
-    np.testing.assert_array_equal(reaction_space_of(np.zeros((3, 0)), (1.0, 0.0)), [[1, 0, 0], [0, 1, 0], [0, 1, 1]])
+    np.testing.assert_array_equal(R_of(np.eye(3)[:, :2]), [[0], [0], [1]])
+    assert R_of(np.eye(3)).shape == (3, 0)
+    np.testing.assert_array_equal(R_of(np.zeros((3, 0)), (1.0, 0.0)), [[1, 0, 0], [0, 1, 0], [0, 1, 1]])
     with pytest.raises(errors.ShapeError, match=r"s must have shape \(3, k\) with k <= 3, got shape \(2, 1\)"):
-        reaction_space_of(np.zeros((2, 1)))
+        R_of(np.zeros((2, 1)))
     with pytest.raises(errors.DegenerateGeometryError, match="direction must be non-zero"):
-        reaction_space_of(np.zeros((3, 1)))
+        R_of(np.zeros((3, 1)))

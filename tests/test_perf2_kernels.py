@@ -15,8 +15,8 @@ from planargeo.algorithms.projective import forward_dynamics_projective, project
 from planargeo.algorithms.stacked import articulation_matrix, forward_dynamics_stacked, stacked_solve
 from planargeo.mechanics.model import chain_model, random_model
 from planargeo.screws.twists import inertia_matrix
-from planargeo.mechanics.subspaces import (COND_LIMIT, _effective_mobility, _percussion_space, effective_mobility,
-                                 percussion_space)
+from planargeo.errors import COND_LIMIT
+from planargeo.mechanics.subspaces import T_of, _effective_mobility, _T, effective_mobility
 
 EPS = np.finfo(float).eps
 
@@ -29,22 +29,22 @@ def test_kernels_match_dense_closed_forms(m, cx, cy, J, x, y):
     s = np.array([[y], [-x], [1.0]])                       # revolute at (x, y)
     M = (s.T @ I @ s).item()
     tol = 1e-12 * (1 + np.abs(I).max()) * (1 + np.abs(s).max()) ** 2
-    np.testing.assert_allclose(_percussion_space(I, s), I @ s / M, atol=tol * (1 + 1 / M))
+    np.testing.assert_allclose(_T(I, s), I @ s / M, atol=tol * (1 + 1 / M))
     np.testing.assert_allclose(_effective_mobility(I, s), s @ s.T / M, atol=tol * (1 + 1 / M))
     # the public functions are the kernels behind validation: the same numbers
-    assert np.array_equal(percussion_space(s, I), _percussion_space(I, s))
-    assert np.array_equal(effective_mobility(s, I), _effective_mobility(I, s))
+    assert np.array_equal(T_of(I, s), _T(I, s))
+    assert np.array_equal(effective_mobility(I, s), _effective_mobility(I, s))
 
 
 def test_kernel_singularity_rule_1x1_and_kxk():
     A = np.diag([1.0, 1.0, 1e-15])
     with pytest.raises(errors.SingularConfigurationError, match="sᵀAs of joint 4 is singular") as e:
-        _percussion_space(A, np.array([[0.0], [0.0], [1.0]]), "sᵀAs of joint 4")
+        _T(A, np.array([[0.0], [0.0], [1.0]]), "sᵀAs of joint 4")
     assert e.value.cond > COND_LIMIT                     # ‖A‖_F ‖s‖² / |sᵀAs| = √2 · 1e15
     np.testing.assert_allclose(e.value.cond, np.sqrt(2.0) * 1e15, rtol=1e-12)
     s2 = np.array([[1.0, 0.0], [0.0, 0.0], [0.0, 1.0]])   # two columns, no inertia along the 2nd
     with pytest.raises(errors.SingularConfigurationError) as e:
-        _percussion_space(np.diag([1.0, 1.0, 0.0]), s2)
+        _T(np.diag([1.0, 1.0, 0.0]), s2)
     assert e.value.cond == np.inf
 
 

@@ -1,4 +1,9 @@
-"""Projective articulated equations (thesis 6.101-6.113) against the dense CRBA reference."""
+"""Projective articulated equations (thesis 6.101-6.113) against independent references.
+
+References (``test_articulated_reference``): Pinocchio's ``aba`` (revolute and prismatic
+joints), the KKT solve in maximal coordinates (every joint kind, body accelerations),
+Newton-Euler for the joint forces, hand-derived pendulum and slider cases.
+"""
 from __future__ import annotations
 
 import numpy as np
@@ -6,15 +11,17 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from planargeo.algorithms.crba import forward_dynamics_crba
 from planargeo.algorithms.projective import (
-    acceleration_propagator, force_propagator, forward_dynamics_projective, percussion_subspace,
-    projective_solve, projective_workspace, reaction_space, reactive_subspace)
-from planargeo.algorithms.rnea import newton_euler
-from planargeo.errors import SingularConfigurationError, SingularInertiaError
+    acceleration_propagator, force_propagator, forward_dynamics_projective, joint_accelerations, projective_solve,
+    projective_workspace)
+from planargeo.errors import SingularConfigurationError
+from planargeo.mechanics.joints import R_of
+from planargeo.mechanics.kinematics import kinematics
 from planargeo.mechanics.model import Body, Joint, Model, random_model
+from planargeo.mechanics.subspaces import T_of, U_of
 from planargeo.screws.twists import inertia_matrix
-from test_articulated_reference import random_state, rtol_for
+from test_articulated_reference import (kkt, newton_euler_forces, random_state, reference_accelerations,
+                                       reference_qdd, rtol_for)
 
 ALL_KINDS = ("revolute", "prismatic", "revolute_prismatic", "plane", "fixed")
 
@@ -25,18 +32,18 @@ def _close(x, ref, rtol):
 
 
 @given(n=st.integers(1, 8), seed=st.integers(0, 10_000), tree=st.booleans(), loads=st.booleans())
-def test_qdd_matches_crba_random_chains_and_trees(n, seed, tree, loads):
+def test_qdd_matches_reference_random_chains_and_trees(n, seed, tree, loads):
     model = random_model(n, seed=seed, tree=tree)
     q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed), loads=loads)
-    ref = forward_dynamics_crba(model, q, qd, tau, f_ext)
+    ref = reference_qdd(model, q, qd, tau, f_ext)
     _close(forward_dynamics_projective(model, q, qd, tau, f_ext), ref, rtol_for(model, q))
 
 
 @pytest.mark.parametrize("n", [50, 200])
-def test_qdd_matches_crba_long_chains(n):
+def test_qdd_matches_reference_long_chains(n):
     model = random_model(n, seed=n)
     q, qd, tau, f_ext = random_state(model, np.random.default_rng(n))
-    ref = forward_dynamics_crba(model, q, qd, tau, f_ext)
+    ref = reference_qdd(model, q, qd, tau, f_ext)
     _close(forward_dynamics_projective(model, q, qd, tau, f_ext), ref, rtol_for(model, q))
 
 
@@ -54,21 +61,21 @@ def large_tree(n, seed, shape):
 @pytest.mark.parametrize("n", [50, 200])
 @pytest.mark.parametrize("shape", ["uniform", "deep"])
 @pytest.mark.parametrize("seed", range(3))
-def test_qdd_matches_crba_large_random_trees(n, shape, seed):
+def test_qdd_matches_reference_large_random_trees(n, shape, seed):
     """Random trees of 50 and 200 bodies with external loads: relative error within 100 eps cond(H)
     (measured <= 0.03 eps cond(H); cond(H) up to 1e7 for the deep 200-body trees)."""
     model = large_tree(n, seed, shape)
     assert not model.is_chain and {j.kind for j in model.joints} == {"revolute", "prismatic"}
     q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
-    ref = forward_dynamics_crba(model, q, qd, tau, f_ext)
+    ref = reference_qdd(model, q, qd, tau, f_ext)
     _close(forward_dynamics_projective(model, q, qd, tau, f_ext), ref, rtol_for(model, q))
 
 
 @pytest.mark.parametrize("seed", range(6))
-def test_qdd_matches_crba_multi_dof_joints(seed):
+def test_qdd_matches_reference_multi_dof_joints(seed):
     model = random_model(6, seed=seed, kinds=ALL_KINDS, tree=bool(seed % 2))
     q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
-    ref = forward_dynamics_crba(model, q, qd, tau, f_ext)
+    ref = reference_qdd(model, q, qd, tau, f_ext)
     _close(forward_dynamics_projective(model, q, qd, tau, f_ext), ref, rtol_for(model, q))
 
 
@@ -77,10 +84,11 @@ def test_workspace_accelerations_and_forces_match_newton_euler(seed):
     model = random_model(6, seed=seed, tree=True, kinds=ALL_KINDS)
     q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
     ws = projective_workspace(model, q, qd, tau, f_ext)
-    w = newton_euler(model, q, qd, forward_dynamics_crba(model, q, qd, tau, f_ext), f_ext)
-    tol = 1e-8 * (1 + np.abs(w.f).max())
-    np.testing.assert_allclose(ws.a, w.a, atol=tol)
-    np.testing.assert_allclose(ws.f, w.f, atol=tol)
+    a = reference_accelerations(model, q, qd, tau, f_ext)                  # the KKT solve (multi-dof joints)
+    f = newton_euler_forces(model, q, qd, a, f_ext)
+    tol = 1e-8 * (1 + np.abs(f).max())
+    np.testing.assert_allclose(ws.a, a, atol=tol)
+    np.testing.assert_allclose(ws.f, f, atol=tol)
 
 
 @given(seed=st.integers(0, 10_000))
@@ -104,17 +112,18 @@ def test_propagators_6_113_reproduce_the_solution(seed):
     # with the true neighbour quantities, 6.113a/b give back a_i and f_i
     model = random_model(5, seed=seed, tree=True)
     q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
-    qdd = forward_dynamics_crba(model, q, qd, tau, f_ext)
-    w = newton_euler(model, q, qd, qdd, f_ext)
+    a = reference_accelerations(model, q, qd, tau, f_ext)                      # Pinocchio
+    f = newton_euler_forces(model, q, qd, a, f_ext)
+    w = kinematics(model, q, qd, f_ext)
     for i in range(model.N):
         kids = model.children(i)
-        f_next = sum((w.f[c] for c in kids), np.zeros(3))
+        f_next = sum((f[c] for c in kids), np.zeros(3))
         par = model.parents[i]
-        a_prev = w.a[par] if par >= 0 else np.zeros(3)
+        a_prev = a[par] if par >= 0 else np.zeros(3)
         args = (w.I[i], w.s(i), tau[model.q_slice(i)], w.p[i], f_next, a_prev, w.kappa[i])
-        tol = 1e-8 * (1 + np.abs(w.f).max())
-        np.testing.assert_allclose(acceleration_propagator(*args), w.a[i], atol=tol)
-        np.testing.assert_allclose(force_propagator(*args), w.f[i], atol=tol)
+        tol = 1e-8 * (1 + np.abs(f).max())
+        np.testing.assert_allclose(acceleration_propagator(*args), a[i], atol=tol)
+        np.testing.assert_allclose(force_propagator(*args), f[i], atol=tol)
 
 
 def test_relative_and_absolute_joint_acceleration_6_100():
@@ -124,27 +133,8 @@ def test_relative_and_absolute_joint_acceleration_6_100():
     ws = projective_workspace(model, q, qd, tau, f_ext)
     for i in range(model.N):
         a_prev = ws.a[i - 1] if i else np.zeros(3)
-        from planargeo.mechanics.kinematics import kinematics
         kap = kinematics(model, q, qd).kappa[i]
         np.testing.assert_allclose(ws.psi[i], ws.qdd[model.q_slice(i)] + ws.T[i].T @ (a_prev + kap), atol=1e-9)
-
-
-def test_reaction_space_is_null_space_of_s():
-    for s in ([[0.3], [-2.0], [1.0]], [[0.6], [0.8], [0.0]], [[1.0, 2.0], [0.0, -1.0], [0.0, 1.0]]):
-        s = np.array(s)
-        R = reaction_space(s)
-        assert R.shape == (3, 3 - s.shape[1])
-        np.testing.assert_allclose(s.T @ R, 0.0, atol=1e-15)
-        assert np.linalg.matrix_rank(np.hstack([s, R])) == 3
-    assert reaction_space(np.zeros((3, 0))).shape == (3, 3)
-    assert reaction_space(np.eye(3)).shape == (3, 0)
-
-
-def test_revolute_reaction_forces_pass_through_the_joint():
-    # each reaction wrench is a line through the joint point (5.69 incidence)
-    R = reaction_space([[2.0], [-3.0], [1.0]])       # joint at (3, 2)
-    np.testing.assert_allclose(np.array([2.0, -3.0, 1.0]) @ R, 0.0, atol=1e-15)
-    np.testing.assert_allclose(R[:2], np.eye(2))    # unit forces along x and y
 
 
 def test_thesis_7_41_U2_and_corrected_T2():
@@ -153,23 +143,14 @@ def test_thesis_7_41_U2_and_corrected_T2():
     D = L**2 + 4 * rho**2
     I2 = inertia_matrix(m, [L + L / 2 * c, L / 2 * s], m * rho**2)
     s2 = np.array([[0.0], [-L], [1.0]])
-    U2 = reactive_subspace(I2, reaction_space(s2))
+    U2 = U_of(I2, R_of(s2))
     np.testing.assert_allclose(U2, [[1, 0], [-2 * L**2 * s / D, 1 + 2 * L**2 * c / D],
                                     [2 * L * s / D, -2 * L * c / D]], atol=1e-14)
-    T2 = percussion_subspace(I2, s2).ravel()
+    T2 = T_of(I2, s2).ravel()
     # as printed in 7.41 the last entry is 1: that is T2 expressed at the joint (L, 0);
     # at the origin (the thesis's stated reference point, and s^T T = 1) it is 1 + 2 L^2 cos(phi) / D.
     np.testing.assert_allclose(T2, [-2 * L * s / D, 2 * L * c / D, 1 + 2 * L**2 * c / D], atol=1e-14)
     assert (s2.ravel() @ [-2 * L * s / D, 2 * L * c / D, 1.0]) != pytest.approx(1.0)
-
-
-def test_reactive_subspace_forms_agree_and_singular_inertia_is_reported():
-    I = inertia_matrix(2.0, [0.4, -0.3], 0.2)
-    s = np.array([[0.5], [0.1], [1.0]])
-    R = reaction_space(s)
-    np.testing.assert_allclose(reactive_subspace(I, R), reactive_subspace(I, R, s=s), atol=1e-13)
-    with pytest.raises(SingularInertiaError, match="A must be invertible"):
-        reactive_subspace(inertia_matrix(1.0, [1.0, 0.0], 0.0), R)
 
 
 def test_singular_joint_raises_with_cond_array_level():
@@ -212,7 +193,7 @@ def test_batched_states_are_solved_one_by_one():
     qd = rng.normal(size=(3, model.nq))
     tau = rng.normal(size=model.nq)
     f_ext = rng.normal(size=(2, 1, model.N, 3))
-    ref = forward_dynamics_crba(model, q, qd, tau, f_ext)
+    ref = np.array([[reference_qdd(model, q[b, k], qd[k], tau, f_ext[b, 0]) for k in range(3)] for b in range(2)])
     for fn in (forward_dynamics_projective, forward_dynamics_mobility_split):
         out = fn(model, q, qd, tau, f_ext)
         assert out.shape == (2, 3, model.nq)
@@ -261,15 +242,12 @@ def test_mu_of_a_slider_is_the_normal_force_through_the_slider_and_a_couple_by_h
 
 
 @pytest.mark.parametrize("seed", range(4))
-def test_mu_is_U_transpose_of_the_rnea_joint_force_in_the_joints_basis(seed):
-    from planargeo.algorithms.rnea import inverse_dynamics
+def test_mu_is_U_transpose_of_the_newton_euler_joint_force_in_the_joints_basis(seed):
     from planargeo.mechanics.joints import reaction_space as joint_R
-    from planargeo.mechanics.kinematics import kinematics
 
     model = random_model(6, seed=seed, kinds=ALL_KINDS, tree=bool(seed % 2))
     q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
-    qdd = forward_dynamics_crba(model, q, qd, tau, f_ext)
-    _, f_rnea = inverse_dynamics(model, q, qd, qdd, f_ext, return_forces=True)   # independent f_i
+    f_rnea = newton_euler_forces(model, q, qd, kkt(model, q, qd, tau, f_ext)["a"], f_ext)   # independent f_i
     ws = projective_workspace(model, q, qd, tau, f_ext)
     d = kinematics(model, q, qd)
     for i, joint in enumerate(model.joints):
@@ -303,3 +281,14 @@ def test_force_propagator_takes_T_checked_at_the_joint():
     np.testing.assert_allclose(f, [0.0, tau, X * tau + tau], rtol=1e-9, atol=1e-7)
     with pytest.raises(SingularConfigurationError):
         force_propagator(I, s, [tau], p, z, z, z)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_joint_accelerations_6_110_of_the_reference_motion(seed):
+    # q̈_i = T_iᵀ (a_i - a_λ(i) - κ_i) reads the reference's joint accelerations back from its body accelerations
+    model = random_model(6, seed=seed, tree=True, kinds=ALL_KINDS)
+    q, qd, tau, f_ext = random_state(model, np.random.default_rng(seed))
+    ref = kkt(model, q, qd, tau, f_ext)
+    T = projective_workspace(model, q, qd, tau, f_ext).T
+    qdd = joint_accelerations(T, ref["a"], kinematics(model, q, qd).kappa, model.parents)
+    np.testing.assert_allclose(qdd, ref["qdd"], atol=1e-9 * (1 + np.abs(ref["qdd"]).max()))

@@ -2,7 +2,7 @@
 
 Every recursive method (``aba``: single-state plan, batched plan, general array
 path; ``projective``; ``mobility_split``; ``stacked``) applies one rule
-(:data:`planargeo.mechanics.subspaces.COND_LIMIT`): with ``A`` and ``s`` at the joint's own
+(:data:`planargeo.errors.COND_LIMIT`): with ``A`` and ``s`` at the joint's own
 point ``P`` (its pivot), ``cond = ‖A_P‖_F ‖s_P‖² / σ_min(sᵀAs)`` and the joint is
 singular when ``cond > 1e12`` (``docs/simulation.md``, "One rule for singular joints");
 the rule does not change when the whole mechanism is moved.  The methods that form
@@ -36,7 +36,7 @@ from planargeo.algorithms.projective import forward_dynamics_projective
 from planargeo.algorithms.stacked import forward_dynamics_stacked
 from planargeo.errors import InputError, SingularConfigurationError
 from planargeo.mechanics.model import Body, Joint, Model
-from planargeo.mechanics.subspaces import COND_LIMIT
+from planargeo.errors import COND_LIMIT
 
 EPS = np.finfo(float).eps
 G = 9.81

@@ -1,18 +1,20 @@
-"""Stacked form of trees (thesis 9.1-9.2) against the dense CRBA reference."""
+"""Stacked form of trees (thesis 9.1-9.2) against independent references.
+
+References (``test_articulated_reference``): Pinocchio's ``aba`` and mobility (revolute and
+prismatic joints), the KKT solve in maximal coordinates (every joint kind), the thesis's printed
+matrices (9.1, 9.13) and the chain recursion 7.4.1 for the erratum on trees.
+"""
 import numpy as np
 import pytest
 from hypothesis import assume, given, strategies as st
 
-from planargeo.algorithms.crba import forward_dynamics_crba, mass_matrix
-from planargeo.algorithms.stacked import (
-    adjacency, blocks, direct_accelerations, forward_dynamics_stacked, reaction_basis,
-    stacked_solve, tree_mobilities, trunk)
-from planargeo.errors import (CyclicTopologyError, InputError, ShapeError, SingularConfigurationError,
+from planargeo.algorithms.articulated_mobility import mobility_recursion
+from planargeo.algorithms.stacked import adjacency, blocks, direct_accelerations, forward_dynamics_stacked, stacked_solve, trunk
+from planargeo.errors import (COND_LIMIT, CyclicTopologyError, InputError, ShapeError, SingularConfigurationError,
                              TopologyError)
 from planargeo.mechanics.kinematics import kinematics
-from planargeo.mechanics.joints import reaction_space as joint_reaction_space
 from planargeo.mechanics.model import Body, Joint, Model, chain_model, random_model
-from planargeo.mechanics.subspaces import COND_LIMIT
+from test_articulated_reference import mass_matrix_cond, mobility_matrix, reference_qdd
 
 FIG91 = [-1, 0, 1, 2, 0, 4, 5, 5, 0]  # Fig 9.1: parents of bodies 1..9 (0-based)
 
@@ -24,7 +26,7 @@ def _state(m, rng):
 
 def _tol(m, q, ref):
     # tolerance scaled by the conditioning of the mass matrix
-    return 1e-13 * np.linalg.cond(mass_matrix(m, q)) * max(1.0, np.abs(ref).max()) + 1e-12
+    return 1e-13 * mass_matrix_cond(m, q) * max(1.0, np.abs(ref).max()) + 1e-12
 
 
 # --------------------------------------------------------------------------- topology
@@ -109,23 +111,6 @@ def test_raw_cycle_in_unordered_parents_detected():
     assert np.array_equal(D, [[1, 1, 0], [0, 1, 0], [0, 1, 1]])
 
 
-@given(st.integers(0, 3))
-def test_reaction_basis_is_reciprocal_complement(k):
-    rng = np.random.default_rng(k)
-    s = rng.normal(size=(3, k))
-    R = reaction_basis(s)
-    assert R.shape == (3, 3 - k)
-    assert np.allclose(s.T @ R, 0, atol=1e-12)
-    assert np.linalg.matrix_rank(np.hstack([s, R])) == 3
-
-
-def test_reaction_basis_is_the_joints_basis_forces_through_the_joint():
-    # thesis 7.16: a revolute joint at (2, 3) reacts with unit forces along x and y through it
-    R = reaction_basis(np.array([[3.0], [-2.0], [1.0]]))
-    np.testing.assert_array_equal(R, [[1.0, 0.0], [0.0, 1.0], [-3.0, 2.0]])
-    np.testing.assert_array_equal(R, joint_reaction_space("revolute", (2.0, 3.0)))
-
-
 def test_stacked_R_U_blocks_equal_the_projective_ones():
     from planargeo.algorithms.projective import projective_workspace
 
@@ -144,11 +129,11 @@ def test_stacked_R_U_blocks_equal_the_projective_ones():
 
 # --------------------------------------------------------------------------- dynamics
 @given(st.integers(1, 12), st.booleans(), st.integers(0, 10_000))
-def test_stacked_matches_crba_random_trees(n, tree, seed):
+def test_stacked_matches_pinocchio_random_trees(n, tree, seed):
     rng = np.random.default_rng(seed)
     m = random_model(n, seed=seed, tree=tree)
     q, qd, tau, fe = _state(m, rng)
-    ref = forward_dynamics_crba(m, q, qd, tau, fe)
+    ref = reference_qdd(m, q, qd, tau, fe)
     tol = _tol(m, q, ref)
     assert np.abs(forward_dynamics_stacked(m, q, qd, tau, fe) - ref).max() < tol
     assert np.abs(forward_dynamics_stacked(m, q, qd, tau, fe, method="direct") - ref).max() < tol
@@ -159,9 +144,9 @@ def test_stacked_all_joint_kinds(n, seed):
     rng = np.random.default_rng(seed)
     m = random_model(n, seed=seed, tree=True,
                      kinds=("revolute", "prismatic", "revolute_prismatic", "plane", "fixed"))
-    assume(m.nq > 0)  # (the CRBA reference cannot take nq = 0)
+    assume(m.nq > 0)  # (no coordinates, nothing to compare)
     q, qd, tau, fe = _state(m, rng)
-    ref = forward_dynamics_crba(m, q, qd, tau, fe)
+    ref = reference_qdd(m, q, qd, tau, fe)
     tol = _tol(m, q, ref)
     assert np.abs(forward_dynamics_stacked(m, q, qd, tau, fe) - ref).max() < tol
     assert np.abs(forward_dynamics_stacked(m, q, qd, tau, fe, method="direct") - ref).max() < tol
@@ -172,7 +157,7 @@ def test_stacked_200_bodies(tree):
     rng = np.random.default_rng(200)
     m = random_model(200, seed=7, tree=tree)
     q, qd, tau, fe = _state(m, rng)
-    ref = forward_dynamics_crba(m, q, qd, tau, fe)
+    ref = reference_qdd(m, q, qd, tau, fe)
     tol = _tol(m, q, ref)
     assert np.abs(forward_dynamics_stacked(m, q, qd, tau, fe) - ref).max() < tol
     assert np.abs(forward_dynamics_stacked(m, q, qd, tau, fe, method="direct") - ref).max() < tol
@@ -181,15 +166,15 @@ def test_stacked_200_bodies(tree):
 @pytest.mark.parametrize("n", [50, 200])
 @pytest.mark.parametrize("shape", ["uniform", "deep"])
 @pytest.mark.parametrize("seed", range(3))
-def test_stacked_matches_crba_large_random_trees(n, shape, seed):
+def test_stacked_matches_pinocchio_large_random_trees(n, shape, seed):
     """Random trees of 50 and 200 bodies (revolute + prismatic, external loads), both stacked solutions
-    (9.39 and the direct 9.48) against CRBA within 100 eps cond(H) relative (measured <= 2.3 eps cond(H))."""
+    (9.39 and the direct 9.48) against Pinocchio within 100 eps cond(H) relative."""
     from test_articulated_reference import random_state, rtol_for
     from test_projective_dyn import large_tree
 
     m = large_tree(n, seed, shape)
     q, qd, tau, fe = random_state(m, np.random.default_rng(seed))
-    ref = forward_dynamics_crba(m, q, qd, tau, fe)
+    ref = reference_qdd(m, q, qd, tau, fe)
     rtol = rtol_for(m, q)
     scale = max(np.linalg.norm(ref), 1.0)
     for method in ("articulation", "direct"):
@@ -203,7 +188,8 @@ def test_batched_states():
     q, qd, tau = (rng.normal(size=(2, 3, m.nq)) for _ in range(3))
     out = forward_dynamics_stacked(m, q, qd, tau)
     assert out.shape == (2, 3, m.nq)
-    assert np.allclose(out, forward_dynamics_crba(m, q, qd, tau), atol=1e-10)
+    ref = [[reference_qdd(m, q[b, k], qd[b, k], tau[b, k]) for k in range(3)] for b in range(2)]
+    assert np.allclose(out, ref, atol=1e-10)
 
 
 def test_closed_form_pendulum():
@@ -212,15 +198,12 @@ def test_closed_form_pendulum():
 
 
 def test_mobility_is_jacobian_mass_inverse():
-    # Φ = L^T S T^T A^-1 L equals J H^-1 J^T (Jacobians of DYN-A's kinematics, H by CRBA)
+    # Φ = L^T S T^T A^-1 L equals J H^-1 J^T: the accelerations per unit wrench (Pinocchio)
     rng = np.random.default_rng(5)
     m = random_model(6, seed=5, tree=True)
     q, qd, tau, fe = _state(m, rng)
     sol = stacked_solve(m, q, qd, tau, fe)
-    d = kinematics(m, q, qd)
-    Jb = np.concatenate([d.jacobian(i) for i in range(m.N)], 0)
-    H = mass_matrix(m, q)
-    assert np.allclose(sol.mobility, Jb @ np.linalg.solve(H, Jb.T), atol=1e-10)
+    assert np.allclose(sol.mobility, mobility_matrix(m, q), atol=1e-10)
 
 
 def test_internal_forces_and_9_43():
@@ -248,7 +231,7 @@ def test_erratum_9_32_missing_kappa_term():
     q, qd, tau, _ = _state(m, rng)
     sol = stacked_solve(m, q, qd, tau)
     # the corrected d reproduces the recursive articulated bias forces (7.7b) ...
-    assert np.allclose(sol.d, np.concatenate(sol.articulated["d"]), atol=1e-10)
+    assert np.allclose(sol.d, sol.articulated.d.reshape(-1), atol=1e-10)
     # ... the printed one does not when the joints move (κ ≠ 0) ...
     assert np.abs(_printed_d(sol, tau) - sol.d).max() > 1e-3
     # ... and agrees when they are at rest (κ = 0): the missing term is C^T R U^T A κ
@@ -286,7 +269,7 @@ def test_erratum_9_44b_missing_inverse():
     assert np.allclose(sol.f, Dinv.T @ (sol.I @ sol.a + sol.p), atol=1e-9)           # corrected
     assert np.abs((np.eye(n) - sol.C.T) @ (sol.I @ sol.a + sol.p) - sol.f).max() > 1e-2  # printed
     # printed (9.48) gives wrong accelerations; corrected (9.48) gives the right ones
-    Lam, b = tree_mobilities(m, sol.data, tau, sol.articulated)
+    Lam, b = sol.articulated_mobilities.Lambda_inv, sol.articulated_mobilities.b
     assert np.allclose(direct_accelerations(sol, Lam, b), sol.a, atol=1e-9)
     Lb = np.zeros((n, n))
     for i, Li in enumerate(Lam):
@@ -301,9 +284,9 @@ def test_erratum_7_38a_sign_in_chain_mobility():
     m = chain_model(2, gravity=(0, 0))
     q, qd, tau = np.array([0.3, 0.7]), np.zeros(2), np.zeros(2)
     sol = stacked_solve(m, q, qd, tau)
-    Lam, _ = tree_mobilities(m, sol.data, tau, sol.articulated)
-    # Λ_2^{-1} is the mobility of the tip in the whole chain: block (2, 2) of Φ = J H^-1 J^T
-    assert np.allclose(Lam[1], sol.mobility[3:, 3:], atol=1e-12)
+    Lam = sol.articulated_mobilities.Lambda_inv
+    # Λ_2^{-1} is the mobility of the tip in the whole chain: block (2, 2) of Φ = J H^-1 J^T (Pinocchio)
+    assert np.allclose(Lam[1], mobility_matrix(m, q)[3:, 3:], atol=1e-12)
 
 
 # --------------------------------------------------------------------------- errors
@@ -336,7 +319,7 @@ def test_point_masses_need_no_inverse_inertia():
     m = Model(bodies, joints, [-1, 0, 1])
     rng = np.random.default_rng(8)
     q, qd, tau, fe = _state(m, rng)
-    ref = forward_dynamics_crba(m, q, qd, tau, fe)
+    ref = reference_qdd(m, q, qd, tau, fe)
     assert np.allclose(forward_dynamics_stacked(m, q, qd, tau, fe), ref, atol=1e-10)
     assert np.allclose(forward_dynamics_stacked(m, q, qd, tau, fe, method="direct"), ref, atol=1e-10)
 
@@ -348,9 +331,17 @@ def test_erratum_tree_mobilities_need_sibling_subtrees():
     m, q, qd = res.model, res.state["q"], res.state["qd"]
     tau = np.zeros(9)
     sol = stacked_solve(m, q, qd, tau)
-    ref = forward_dynamics_crba(m, q, qd, tau)
-    for siblings, ok in [(True, True), (False, False)]:
-        Lam, b = tree_mobilities(m, sol.data, tau, sol.articulated, siblings=siblings)
+    ref = reference_qdd(m, q, qd, tau)
+    d = sol.data
+    wrong = ([], [])
+    for i in range(9):
+        path = list(m.ancestors(i))                    # body i's root path: a chain, its siblings' subtrees ignored
+        r = mobility_recursion(d.I[path], [d.s(k) for k in path], d.kappa[path], d.p[path],
+                               [tau[m.q_slice(k)] for k in path], joint_points=d.origin[path])
+        wrong[0].append(r.Lambda_inv[-1])
+        wrong[1].append(r.b[-1])
+    right = (sol.articulated_mobilities.Lambda_inv, sol.articulated_mobilities.b)
+    for (Lam, b), ok in [(right, True), (wrong, False)]:
         a = direct_accelerations(sol, Lam, b)
         qdd = sol.T.T @ (a - sol.C @ a - sol.kappa)
         assert np.allclose(qdd, ref, atol=1e-9) == ok
@@ -381,10 +372,10 @@ def test_articulation_matrix_series_9_34_and_recursion_9_64():
     art = sol.articulated
     u = np.zeros((7, 3))
     for i in range(7):
-        s, A = art["s"][i], art["A"][i]
+        s, A = art.S[i], art.A[i]
         up = u[m.parents[i]] if m.parents[i] >= 0 else np.zeros(3)
         Qi = tau[m.q_slice(i)]
         R, U = sol.R[3 * i:3 * i + 3], sol.U[3 * i:3 * i + 3]
-        act = s @ np.linalg.solve(s.T @ A @ s, Qi - s.T @ art["d"][i]) if s.shape[1] else np.zeros(3)
+        act = s @ np.linalg.solve(s.T @ A @ s, Qi - s.T @ art.d[i]) if s.shape[1] else np.zeros(3)
         u[i] = act + U @ (R.T @ (up + sol.kappa[3 * i:3 * i + 3]))
     assert np.allclose(u.reshape(-1), sol.a, atol=1e-9)

@@ -3,11 +3,11 @@ import numpy as np
 import pytest
 
 from planargeo import scenes
-from planargeo.algorithms.crba import forward_dynamics_crba
 from planargeo.algorithms.loops import constrained_dynamics_lagrange
 from planargeo.errors import SceneError
 from planargeo.mechanics.kinematics import kinematics
 from planargeo.simulate.loops import closure_jacobian, closure_residual
+from test_articulated_reference import dense_mobility, reference_qdd
 
 
 def test_registered():
@@ -15,10 +15,10 @@ def test_registered():
 
 
 @pytest.mark.parametrize("speed, g", [(1.0, 9.81), (3.0, 0.0)])
-def test_tree_matches_crba(speed, g):
+def test_tree_matches_pinocchio(speed, g):
     res = scenes.build("tree", speed=speed, g=g)
     q, qd = res.state["q"], res.state["qd"]
-    ref = forward_dynamics_crba(res.model, q, qd, np.zeros(9))
+    ref = reference_qdd(res.model, q, qd, np.zeros(9))
     assert np.allclose(res.quantities["qdd"], ref, atol=1e-10)
     assert np.allclose(res.quantities["qdd_direct"], ref, atol=1e-10)
     assert np.array(res.quantities["C"]).sum() == 8
@@ -102,48 +102,16 @@ def test_tree_articulation_matrix_is_the_finite_series_on_independent_articulate
 
 
 def test_tree_mobilities_are_those_of_the_tree_with_descendants_cut_off():
-    """``Λ_i⁻¹`` and ``b_i`` of the direct solution 9.48, against the dense reference.
+    """``Λ_i⁻¹`` and ``b_i`` of the direct solution 9.48, against the reference.
 
-    Cut off body ``i``'s descendants: in the remaining tree ``Λ_i⁻¹ = J_i H⁻¹ J_iᵀ``
-    (``H`` its CRBA mass matrix, ``J_i`` body ``i``'s Jacobian) and ``b_i`` is body
-    ``i``'s acceleration when nothing else acts: the dense ``q̈ = H⁻¹(τ - C)`` of the cut
-    tree (CRBA) propagated along the root path, ``a_i = Σ_k (s_k q̈_k + κ_k)`` (3.42).
+    Cut off body ``i``'s descendants: in the remaining tree a wrench ``w`` on body ``i``
+    accelerates it by ``b_i + Λ_i⁻¹ w`` (7.28, 9.45), read off by Pinocchio
+    (``test_articulated_reference.dense_mobility``).
     """
-    from planargeo.algorithms.crba import mass_matrix
-    from planargeo.mechanics.model import Model
-
     res = scenes.build("tree", speed=1.5, g=9.81)
     Lam, b = np.array(res.quantities["Lambda_inv"]), np.array(res.quantities["b"])
     m, q, qd = res.model, np.array(res.state["q"]), np.array(res.state["qd"])
-    parents = _fig91_parents()
-
-    def descendants(i):
-        out = set()
-        for k in range(9):
-            j = k
-            while j >= 0:
-                if parents[j] == i:
-                    out.add(k)
-                    break
-                j = parents[j]
-        return out
-
     for i in range(9):
-        keep = [k for k in range(9) if k not in descendants(i)]
-        idx = {k: n for n, k in enumerate(keep)}
-        sub = Model([m.bodies[k] for k in keep], [m.joints[k] for k in keep],
-                    [idx[parents[k]] if parents[k] >= 0 else -1 for k in keep], gravity=m.gravity)
-        qs, qds = q[keep], qd[keep]
-        H = mass_matrix(sub, qs)
-        qdd = forward_dynamics_crba(sub, qs, qds, np.zeros(len(keep)))
-        d = kinematics(sub, qs, qds)
-        Ji = d.jacobian(idx[i])
-        np.testing.assert_allclose(Lam[i], Ji @ np.linalg.solve(H, Ji.T), atol=1e-12, err_msg=f"Lambda_inv {i}")
-        # body i's acceleration: along its root path, a = a_parent + s q̈ + κ (3.42; κ from the kinematics)
-        a, path, j = np.zeros(3), [], idx[i]
-        while j >= 0:
-            path.append(j)
-            j = sub.parents[j]
-        for j in reversed(path):
-            a = a + d.S[:, j] * qdd[j] + d.kappa[j]
-        np.testing.assert_allclose(b[i], a, atol=1e-11, err_msg=f"b {i}")
+        Lam_ref, b_ref = dense_mobility(m, q, qd, np.zeros(9), None, i)
+        np.testing.assert_allclose(Lam[i], Lam_ref, atol=1e-12, err_msg=f"Lambda_inv {i}")
+        np.testing.assert_allclose(b[i], b_ref, atol=1e-11, err_msg=f"b {i}")

@@ -123,9 +123,10 @@ def test_a_speed_change_runs_one_solve_and_no_direct_solution(ex):
             for k, v in changes:
                 ex.controls[k].value = v
         calls, _ = calls_during(action)
+        # "direct": the 9.48 cross-check (the tree's articulated mobilities), from whichever caller
         return {name: sum(n for (caller, *called), n in calls.items() if called == [f"planargeo.{mod}", fn]
-                          and caller in ("planargeo.widgets.trees", "planargeo.scenes.trees"))
-                for name, mod, fn in (("direct", "algorithms.stacked", "tree_mobilities"),
+                          and (name == "direct" or caller in ("planargeo.widgets.trees", "planargeo.scenes.trees")))
+                for name, mod, fn in (("direct", "algorithms.articulated_mobility", "mobility_recursion"),
                                       ("model", "scenes.trees", "tree_model"),
                                       ("loop", "algorithms.loops", "loop_solve"),
                                       ("stacked", "algorithms.stacked", "stacked_solve"))}

@@ -1,4 +1,4 @@
-"""Articulated inertia algorithm for a free-floating chain (thesis 7.1, 7.1.1).
+"""Articulated inertia algorithm for a free-floating chain or tree (thesis 7.1, 7.1.1).
 
 The articulated inertia ``A_i`` and bias force ``d_i`` relate the internal
 force of joint ``i`` to the acceleration of body ``i`` with everything beyond
@@ -6,7 +6,7 @@ it attached (7.1)::
 
     f_i = A_i a_i + d_i
 
-From the tip to the base (7.2, 7.7a, 7.7b, 7.8)::
+From the tips to the base (7.2, 7.7a, 7.7b, 7.8)::
 
     A_N = I_N,  d_N = p_N
     A_i = I_i + R_{i+1} U_{i+1}^T A_{i+1}
@@ -17,46 +17,86 @@ with ``p_i = -(v_i×)^T I_i v_i - g_i`` (3.11).  The algorithm listing of 7.1.1
 prints ``+ g_i`` in ``d_N`` and ``d_i``; the applied loads enter with a minus
 sign (3.11, 3.34), see ``docs/errata.md``.  On a tree each body
 sums the projected contributions of all its children.
+
+:func:`articulated_recursion` is the package's one copy of this recursion: the
+projective equations (6.108-6.110), chain splitting (7.6), the stacked tree
+(9.27-9.28, corrected) and the watched joint conditions all call it.  This module
+also holds the model glue those algorithms share (one state's kinematics as
+arrays; batches solved state by state).
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
 
-from planargeo.mechanics.subspaces import _percussion_space
-from planargeo.algorithms.projective import _state_arrays, reaction_space, reactive_subspace
+from planargeo.errors import COND_LIMIT, ShapeError
+from planargeo.mechanics.joints import R_of
+from planargeo.mechanics.kinematics import _kinematics_scalar, check_state
+from planargeo.mechanics.subspaces import _gram, _T, _U, singular_joint_error
 
 __all__ = ["ArticulatedInertias", "articulated_recursion", "articulated_inertia"]
 
+_EYE3 = np.eye(3)
+_EYE3.setflags(write=False)
 
-@dataclass
-class ArticulatedInertias:
-    """Result of the articulated inertia algorithm (per body ``i``; thesis 7.1.1, 7.7a-7.7b).
+
+class _Reactions:
+    """The reaction bases ``R_i`` (:func:`planargeo.mechanics.joints.R_of`) and the spaces ``U_i``
+    (6.37/6.99, inverse-free from ``T_i``) of a recursion's result, built on first access."""
+
+    @functools.cached_property
+    def R(self) -> list:
+        """Reaction spaces ``R_i`` (forces through the joint, couples; thesis 7.16, 5.63)."""
+        pts = np.zeros((len(self.S), 2)) if self.points is None else self.points
+        return [R_of(s, pt) for s, pt in zip(self.S, pts)]
+
+    @functools.cached_property
+    def U(self) -> list:
+        """Reactive acceleration spaces ``U_i = A_i⁻¹ R_i (R_iᵀ A_i⁻¹ R_i)⁻¹ = (1 - s_i T_iᵀ) R_i (R_iᵀR_i)⁻¹`` (6.99, 6.75)."""
+        return [_U(None, R, s, T) for R, s, T in zip(self.R, self.S, self.T)]
+
+
+@dataclass(eq=False)
+class ArticulatedInertias(_Reactions):
+    """Result of the articulated inertia algorithm (per body ``i``; thesis 7.1.1, 7.7a-7.8).
 
     Attributes
     ----------
     A : (N, 3, 3) articulated inertias (7.7a).
     d : (N, 3) articulated bias forces (7.7b).
-    T : list of (3, k_i) active force subspaces ``A_i s_i (s_i^T A_i s_i)^-1`` (6.105).
-    R : list of (3, 3-k_i) reaction spaces, the basis of :func:`planargeo.mechanics.joints.reaction_space_of`
-        (forces through the joint, couples; thesis 7.16, 5.63).
     S : list of (3, k_i) joint spaces.
+    T : list of (3, k_i) percussion spaces ``A_i s_i (s_i^T A_i s_i)^-1`` (6.105).
+    P : list of (3, 3) projectors ``R_i U_i^T = 1 - T_i s_i^T`` (7.8).
+    gram : list of ``(A_i s_i, s_i^T A_i s_i)`` (``None`` for a fixed joint), checked by the rule.
+    cond : (N,) the joints' condition numbers (:func:`planargeo.mechanics.subspaces.joint_cond`; 1 for a fixed joint).
+    points : (N, 2) or None, the points of the reaction bases of prismatic joints (the body frames' origins).
+    R, U : lists, built on first access: the reaction spaces (:func:`planargeo.mechanics.joints.R_of`)
+        and the reactive acceleration spaces (6.99).
     """
 
     A: np.ndarray
     d: np.ndarray
-    T: list
-    R: list
     S: list
+    T: list
+    P: list
+    gram: list
+    cond: np.ndarray
+    points: np.ndarray | None = None
 
-    def U(self, i: int) -> np.ndarray:
-        """Reactive acceleration subspace ``U_i = A_i^-1 R_i (R_i^T A_i^-1 R_i)^-1`` (6.99)."""
-        return reactive_subspace(self.A[i], self.R[i], s=self.S[i], T=self.T[i])
+
+def _chain(N):
+    return list(range(-1, N - 1))
 
 
-def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_points=None) -> ArticulatedInertias:
-    """Articulated inertias and bias forces on arrays (thesis 7.1.1: 7.2, 7.7a, 7.7b, 7.8).
+def _lists(S, tau):
+    return [np.asarray(x, dtype=float).reshape(3, -1) for x in S], [np.asarray(x, dtype=float).reshape(-1) for x in tau]
+
+
+def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_points=None, *,
+                          check: bool = True) -> ArticulatedInertias:
+    """Articulated inertias and bias forces on arrays, tips to base (thesis 7.1.1: 7.2, 7.7a, 7.7b, 7.8).
 
     Parameters
     ----------
@@ -64,14 +104,18 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
     S : list of N (3, k_i) joint spaces.
     kappa, p : (N, 3) bias accelerations (2.19) and bias forces (3.11, gravity and loads included).
     tau : list of N (k_i,) joint torques ``Q_i``.
-    parents : sequence of N ints, default a chain.
+    parents : sequence of N ints (``-1`` the ground, parents before children), default a chain.
     points : (N, 2), optional
         A point of each joint, for the reaction bases ``R`` of prismatic joints
-        (:func:`planargeo.mechanics.joints.reaction_space_of`); default the origin.
+        (:func:`planargeo.mechanics.joints.R_of`); default the origin.
     joint_points : (N, 2), optional
         Each joint's point (pivot; placement point of a prismatic joint: the joint
-        frame's origin), where the singularity rule of :data:`planargeo.mechanics.subspaces.COND_LIMIT`
+        frame's origin), where the singularity rule of :data:`planargeo.errors.COND_LIMIT`
         is measured; default the origin.  The model-level functions pass the joint frames' origins.
+    check : bool
+        Raise for a singular joint (default).  ``False`` never raises: every joint's
+        condition number is recorded in ``cond`` and an exactly singular joint
+        (``cond = inf``) is treated as locked for its parent (``T = 0``, ``R Uᵀ = 1``).
 
     Returns
     -------
@@ -80,7 +124,8 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
     Raises
     ------
     SingularConfigurationError
-        When some ``s_i^T A_i s_i`` is singular (e.g. a massless tip body).
+        When some ``s_i^T A_i s_i`` is singular (e.g. a massless tip body), by the rule
+        of :data:`planargeo.errors.COND_LIMIT` (``.cond``; message names the joint).
 
     Examples
     --------
@@ -96,41 +141,30 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
            [0. , 1.5, 1. ],
            [0. , 1. , 1. ]])
     """
-    I = np.asarray(I, dtype=float)
-    N = I.shape[0]
-    parents = list(range(-1, N - 1)) if parents is None else [int(x) for x in parents]
-    S = [np.asarray(x, dtype=float).reshape(3, -1) for x in S]
-    tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
-    A, d, T = _articulated(I, S, np.asarray(kappa, dtype=float), p, tau, parents, joint_points)
-    R = [reaction_space(S[i], (0.0, 0.0) if points is None else points[i]) for i in range(N)]
-    return ArticulatedInertias(A, d, T, R, S)
-
-
-def _articulated(I, S, kappa, p, tau, parents, jpoints=None):
-    """The recursion of :func:`articulated_recursion` on checked arrays: ``(A, d, T)`` (7.2, 7.7a, 7.7b, 7.8).
-
-    ``I`` (N, 3, 3), ``S`` / ``tau`` lists of (3, k_i) / (k_i,) float arrays,
-    ``kappa`` (N, 3), ``parents`` a list of ints.  The reaction bases are not
-    needed (``R U^T = 1 - T s^T``, 7.8) and not built.  ``jpoints`` (N, 2): the joints'
-    points, where the singularity rule is measured (default the origin).
-    """
-    N = I.shape[0]
-    A = I.copy()                                   # (7.2): A_N = I_N, children added below
-    d = np.asarray(p, dtype=float).copy()          # d_N = p_N
-    T = [None] * N
-    eye = np.eye(3)
+    A = np.array(I, dtype=float)                   # (7.2): A_N = I_N, children added below
+    N = A.shape[0]
+    parents = _chain(N) if parents is None else [int(x) for x in parents]
+    S, tau = _lists(S, tau)
+    kappa = np.asarray(kappa, dtype=float)
+    d = np.array(p, dtype=float)                   # d_N = p_N
+    T, P, gram = [None] * N, [None] * N, [None] * N
+    cond = np.ones(N)
     for i in reversed(range(N)):
         Ai = A[i] = 0.5 * (A[i] + A[i].T)          # symmetric by construction; remove round-off
         Si = S[i]
-        T[i] = Ti = _percussion_space(Ai, Si, f"sᵀAs of joint {i}",   # (6.105)
-                                      point=None if jpoints is None else jpoints[i])
+        if Si.shape[1]:
+            As, M, cond[i] = _gram(Ai, Si, None if joint_points is None else joint_points[i])
+            if check and not cond[i] <= COND_LIMIT:
+                raise singular_joint_error(i, cond[i])
+            gram[i] = (As, M)
+        locked = not np.isfinite(cond[i])          # only without check: sᵀAs exactly singular
+        T[i] = Ti = np.zeros((3, Si.shape[1])) if locked else _T(Ai, Si, gram=gram[i])   # (6.105)
+        P[i] = Pi = _EYE3 - Ti @ Si.T              # R_i U_i^T (7.8)
         j = parents[i]
-        if j < 0:
-            continue
-        P = eye - Ti @ Si.T                        # R_i U_i^T (7.8)
-        A[j] += P @ Ai                             # (7.7a)
-        d[j] += Ti @ tau[i] + P @ (Ai @ kappa[i] + d[i])   # (7.7b)
-    return A, d, T
+        if j >= 0:
+            A[j] += Pi @ Ai                        # (7.7a)
+            d[j] += Ti @ tau[i] + Pi @ (Ai @ kappa[i] + d[i])   # (7.7b)
+    return ArticulatedInertias(A, d, S, T, P, gram, cond, None if points is None else np.asarray(points, float))
 
 
 def articulated_inertia(model, q, qd=None, tau=None, f_ext=None) -> ArticulatedInertias:
@@ -157,5 +191,52 @@ def articulated_inertia(model, q, qd=None, tau=None, f_ext=None) -> ArticulatedI
     >>> float(articulated_inertia(chain_model(2), [0.0, 0.0]).A[0][0, 0])
     2.0
     """
-    d, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
-    return articulated_recursion(I, S, kappa, p, taus, parents, d.pose[:, :2], d.origin)
+    return articulated_recursion(*_state_arrays(model, q, qd, tau, f_ext)[1:])
+
+
+# ---------------------------------------------------------------------------
+# Model glue shared by the chapter 6-9 algorithms
+# ---------------------------------------------------------------------------
+def _state_arrays(model, q, qd, tau, f_ext, checked=False):
+    """Kinematics of one state as the recursions take it.
+
+    Returns ``(data, I, S, kappa, p, tau, parents, points, joint_points)``: the
+    :class:`~planargeo.mechanics.model.Data`, then the arguments of
+    :func:`articulated_recursion` in order (``S`` and ``tau`` as per-joint lists,
+    ``points`` the body frames' origins, ``joint_points`` the joint frames' origins).
+    ``checked``: the arguments come out of :func:`planargeo.mechanics.kinematics.check_state`
+    for one state already (as in :func:`_per_state`), so they are not validated again.
+    """
+    if not checked:
+        q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
+        if shape != ():
+            raise ShapeError(f"q must describe one state (shape (nq,)), got batch shape {shape}; "
+                             "loop over states or use planargeo.algorithms.aba for batches")
+    return _data_arrays(model, _kinematics_scalar(model, q, np.zeros(model.nq) if qd is None else qd, f_ext), tau)
+
+
+def _data_arrays(model, d, tau):
+    """:func:`_state_arrays` of the kinematics ``d`` of one state (``tau`` zero if None)."""
+    tau = np.zeros(model.nq) if tau is None else tau
+    offs = model.q_offsets
+    S = [d.S[:, offs[i]:offs[i + 1]] for i in range(model.N)]                  # d.s(i)
+    taus = [tau[offs[i]:offs[i + 1]] for i in range(model.N)]
+    return d, d.I, S, d.kappa, d.p, taus, list(model.parents), d.pose[:, :2], d.origin
+
+
+def _per_state(fn, model, q, qd, tau, f_ext):
+    """Apply the single-state solver ``fn(model, q, qd, tau, f_ext) -> (nq,)`` over batch dimensions.
+
+    The arguments are validated once (:func:`planargeo.mechanics.kinematics.check_state`);
+    ``fn`` receives one checked state at a time (``qd``, ``tau`` zero if omitted).
+    """
+    q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
+    nq, N = model.nq, model.N
+    q = np.broadcast_to(q, shape + (nq,))
+    qd = np.zeros(shape + (nq,)) if qd is None else np.broadcast_to(qd, shape + (nq,))
+    tau = np.zeros(shape + (nq,)) if tau is None else np.broadcast_to(tau, shape + (nq,))
+    fx = None if f_ext is None else np.broadcast_to(f_ext, shape + (N, 3))
+    out = np.empty(shape + (nq,))
+    for idx in np.ndindex(*shape):
+        out[idx] = fn(model, q[idx], qd[idx], tau[idx], None if fx is None else fx[idx])
+    return out

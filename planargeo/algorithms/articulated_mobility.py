@@ -1,12 +1,12 @@
-"""Articulated mobility algorithm for a constrained chain (thesis 7.4, 7.4.1).
+"""Articulated mobility algorithm for a constrained chain or tree (thesis 7.4, 7.4.1).
 
 The articulated mobility ``Lambda_i^-1`` and bias acceleration ``b_i`` relate
-the force of joint ``i+1`` to the acceleration of body ``i`` with the chain
+the force of joint ``i+1`` to the acceleration of body ``i`` with the bodies
 from the ground up to ``i`` attached (7.28)::
 
     a_i = -Lambda_i^-1 f_{i+1} + b_i
 
-From the base to the tip, with the body-inertia subspaces ``T_i = I_i s_i
+From the base to the tips, with the body-inertia subspaces ``T_i = I_i s_i
 (s_i^T I_i s_i)^-1``, ``U_i = I_i^-1 R_i (R_i^T I_i^-1 R_i)^-1`` (6.36, 6.37)::
 
     eta_i      = s_i T_i^T I_i^-1 (T_i Q_i - p_i)                                (7.35)
@@ -17,8 +17,20 @@ From the base to the tip, with the body-inertia subspaces ``T_i = I_i s_i
 
 The thesis prints a minus sign before ``U_i R_i^T Lambda_{i-1}^-1`` in 7.36
 and 7.38a, and its listing 7.4.1 drops the applied loads ``g_i`` from
-``p_i``; both are corrected here (``docs/errata.md``).  The
-algorithm needs an unbranched chain whose first body hangs from the ground.
+``p_i``; both are corrected here (``docs/errata.md``).
+
+On a tree (9.45-9.48) ``Lambda_i^-1``, ``b_i`` describe body ``i`` with its
+descendants cut off, which still carries the subtrees of its ancestors' other
+children: before 7.38 the parent ``j``'s mobility is loaded with the articulated
+inertias (7.7) of ``i``'s siblings ``k``, ``E = Σ R_k U_k^T A_k``,
+``e = Σ T_k Q_k + R_k U_k^T (A_k kappa_k + d_k)``::
+
+    Lambda_{i-1}^-1 -> (1 + Lambda_j^-1 E)^-1 Lambda_j^-1,
+    b_{i-1}         -> (1 + Lambda_j^-1 E)^-1 (b_j - Lambda_j^-1 e)
+
+(``docs/errata.md``, chapter 9, item 5).  A chain has no siblings and this is 7.4.1.
+:func:`mobility_recursion` is the package's one copy of the recursion (chain
+splitting 7.6 and the stacked direct solution 9.48 call it).
 """
 from __future__ import annotations
 
@@ -27,103 +39,42 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from planargeo.errors import SingularConfigurationError, TopologyError
-from planargeo.mechanics.subspaces import _checked_gram, _effective_mobility, _percussion_space, _reactive_from_T, _solve
-from planargeo.algorithms.projective import _state_arrays, reaction_space
+from planargeo.errors import SingularConfigurationError
+from planargeo.mechanics.subspaces import _checked_gram, _effective_mobility, _solve, _T
+from planargeo.algorithms.articulated_inertia import (_EYE3, ArticulatedInertias, _chain, _lists, _Reactions,
+                                                      _state_arrays, articulated_recursion)
 
-__all__ = ["ArticulatedMobilities", "mobility_recursion", "articulated_mobility"]
+__all__ = ["ArticulatedMobilities", "mobility_recursion", "articulated_mobility", "SOLVE_COND_LIMIT"]
 
 
-@dataclass
-class ArticulatedMobilities:
+@dataclass(eq=False)
+class ArticulatedMobilities(_Reactions):
     """Result of the articulated mobility algorithm (per body ``i``; thesis 7.4.1, 7.31, 7.38).
 
     Attributes
     ----------
     Lambda_inv : (N, 3, 3) articulated mobilities (7.31a, 7.38a); symmetric, positive semi-definite.
     b : (N, 3) articulated bias accelerations (7.31b, 7.38b).
-    T, U, R : lists of body-inertia subspaces (6.36, 6.37) and reaction spaces (the basis of
-        :func:`planargeo.mechanics.joints.reaction_space_of`: forces through the joint, couples; 7.16, 5.63).
+    S : list of (3, k_i) joint spaces.
+    T : list of body-inertia percussion spaces ``I_i s_i (s_i^T I_i s_i)^-1`` (6.36).
+    points : (N, 2) or None, the points of the reaction bases of prismatic joints (the body frames' origins).
+    R, U : lists, built on first access: the reaction spaces (:func:`planargeo.mechanics.joints.R_of`:
+        forces through the joint, couples; 7.16, 5.63) and the body-inertia ``U_i`` (6.37).
     """
 
     Lambda_inv: np.ndarray
     b: np.ndarray
+    S: list
     T: list
-    U: list
-    R: list
+    points: np.ndarray | None = None
 
 
-def _check_chain(parents, N):
-    if list(parents) != list(range(-1, N - 1)):
-        raise TopologyError(
-            f"parents must describe an unbranched chain [-1, 0, 1, ...] for the articulated "
-            f"mobility (thesis 7.4), got {list(parents)}")
-
-
-def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_points=None) -> ArticulatedMobilities:
-    """Articulated mobilities and bias accelerations on arrays (thesis 7.4.1).
-
-    Parameters
-    ----------
-    I : (N, 3, 3) body inertias at the origin (point masses allowed while every ``s_i^T I_i s_i`` is invertible).
-    S : list of N (3, k_i) joint spaces.
-    kappa, p : (N, 3) bias accelerations (2.19) and bias forces (3.11, gravity and loads included).
-    tau : list of N (k_i,) joint torques ``Q_i``.
-    parents : sequence of N ints; must be the chain ``[-1, 0, ..., N-2]`` (the default).
-    points : (N, 2), optional
-        A point of each joint, for the reaction bases ``R`` of prismatic joints
-        (:func:`planargeo.mechanics.joints.reaction_space_of`); default the origin.
-    joint_points : (N, 2), optional
-        Each joint's point (pivot; placement point of a prismatic joint: the joint
-        frame's origin), where the singularity rule of :data:`planargeo.mechanics.subspaces.COND_LIMIT`
-        is measured; default the origin.  The model-level functions pass the joint frames' origins.
-
-    Returns
-    -------
-    ArticulatedMobilities
-
-    Raises
-    ------
-    TopologyError
-        When ``parents`` is not an unbranched chain.
-    SingularConfigurationError
-        When ``s_i^T I_i s_i`` or ``1 + U_i R_i^T Lambda_{i-1}^-1 I_i`` is singular.
-
-    Examples
-    --------
-    Thesis 7.42 with ``m = L = 1``, ``rho = 1/2``: ``4 / (m (L^2 + 4 rho^2)) = 2``.
-
-    >>> from planargeo.screws.twists import inertia_matrix
-    >>> r = mobility_recursion([inertia_matrix(1.0, [0.5, 0.0], 0.25)], [np.array([[0.0], [0.0], [1.0]])],
-    ...                        np.zeros((1, 3)), np.zeros((1, 3)), [np.zeros(1)])
-    >>> r.Lambda_inv[0].round(12) + 0.0
-    array([[0., 0., 0.],
-           [0., 0., 0.],
-           [0., 0., 2.]])
-    """
-    I = np.asarray(I, dtype=float)
-    N = I.shape[0]
-    if parents is not None:
-        _check_chain(parents, N)
-    S = [np.asarray(x, dtype=float).reshape(3, -1) for x in S]
-    tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
-    kappa = np.asarray(kappa, dtype=float)
-    p = np.asarray(p, dtype=float)
-    Lam, b, T = _mobility(I, S, kappa, p, tau, joint_points)
-    R = [reaction_space(S[i], (0.0, 0.0) if points is None else points[i]) for i in range(N)]
-    U = [_reactive_from_T(R[i], S[i], T[i]) for i in range(N)]                     # (6.37), inverse-free
-    return ArticulatedMobilities(Lam, b, T, U, R)
-
-
-_EYE3 = np.eye(3)
-_EYE3.setflags(write=False)
-
-#: Backstop for the method's own 3×3 solves (``1 + U Rᵀ Λ⁻¹ I`` of 7.38, ``1 + Λ⁻¹ R Uᵀ A`` of 7.54):
-#: raise only when numerically singular (``cond ≥ 1/ε``).  Whether a configuration is singular is
-#: decided by the joints' rule (:data:`planargeo.mechanics.subspaces.COND_LIMIT`, checked on every ``sᵀIs``)
-#: as for every other method; these matrices inherit their conditioning from the joints' (measured
-#: up to ~30 × the joint's ``cond`` near the limit: a point-mass tip), so a tighter limit here
-#: would refuse states the other methods accept.
+#: Backstop for the method's own 3×3 solves (``1 + U Rᵀ Λ⁻¹ I`` of 7.38, the siblings' ``1 + Λ⁻¹ E``,
+#: ``1 + Λ⁻¹ R Uᵀ A`` of 7.54): raise only when numerically singular (``cond ≥ 1/ε``).  Whether a
+#: configuration is singular is decided by the joints' rule (:data:`planargeo.errors.COND_LIMIT`, checked
+#: on every ``sᵀIs``) as for every other method; these matrices inherit their conditioning from the
+#: joints' (measured up to ~30 × the joint's ``cond`` near the limit: a point-mass tip), so a tighter
+#: limit here would refuse states the other methods accept.
 SOLVE_COND_LIMIT = 1e16
 
 
@@ -153,51 +104,116 @@ def _cond(M) -> float:
     return c if c == c else math.inf
 
 
-def _mobility(I, S, kappa, p, tau, jpoints=None):
-    """The recursion of :func:`mobility_recursion` on checked arrays: ``(Lambda_inv, b, T)`` (7.31, 7.35, 7.38).
+def _check_solvable(M, what: str) -> None:
+    """Raise SingularConfigurationError (``.cond``) for the method's own 3×3 matrices past :data:`SOLVE_COND_LIMIT`."""
+    c = _cond(M)
+    if not c < SOLVE_COND_LIMIT:
+        raise SingularConfigurationError(f"{what} is singular", c)
 
-    ``U_i R_i^T = 1 - s_i T_i^T`` (the twist projectors of 6.75), so no reaction basis is built.
-    ``jpoints`` (N, 2): the joints' points, where the singularity rule is measured (default the origin).
+
+def _checked_solve(M, B, what: str):
+    """``M⁻¹ B`` after :func:`_check_solvable`."""
+    _check_solvable(M, what)
+    return _solve(M, B, what)
+
+
+def _siblings_loaded(art: ArticulatedInertias, tau, kappa, children, i, j, Lam_j, b_j):
+    """The parent's mobility with the articulated inertias of ``i``'s siblings attached (thesis 9.45, corrected).
+
+    ``(Λ_j⁻¹, b_j)`` unchanged when ``i`` has no siblings (a chain).
     """
-    N = I.shape[0]
-    Lam = np.zeros((N, 3, 3))
-    b = np.zeros((N, 3))
-    T = [None] * N
-    eye = _EYE3
-    for i in range(N):
-        Si, Ii = S[i], I[i]
-        what = f"sᵀIs of joint {i}"
-        gram = _checked_gram(Ii, Si, what, None if jpoints is None else jpoints[i])   # (I s, s^T I s), checked once
-        T[i] = Ti = _percussion_space(Ii, Si, what, gram)                  # (6.36)
-        G = _effective_mobility(Ii, Si, what, gram)     # s T^T I^-1 = s (s^T I s)^-1 s^T (6.93)
-        eta = G @ (Ti @ tau[i] - p[i])                  # (7.35)
-        P = eye - Si @ Ti.T                             # U R^T (6.75)
-        if i == 0:                                      # (7.31a, 7.31b): a_0 = 0
-            Lam[i] = G
-            b[i] = eta + P @ kappa[i]
-        else:
-            M = eye + P @ Lam[i - 1] @ Ii
-            c = _cond(M)
-            if not c < SOLVE_COND_LIMIT:
-                raise SingularConfigurationError(f"1 + U R^T Lambda^-1 I of body {i} is singular", c)
-            Lam[i] = _solve(M, G + P @ Lam[i - 1], f"1 + U R^T Lambda^-1 I of body {i}")  # (7.38a)
-            b[i] = _solve(M, eta - P @ (Lam[i - 1] @ p[i] - b[i - 1] - kappa[i]),
-                          f"1 + U R^T Lambda^-1 I of body {i}")  # (7.38b)
-        Lam[i] = 0.5 * (Lam[i] + Lam[i].T)              # symmetric by construction; remove round-off
-    return Lam, b, T
+    sib = [k for k in children[j] if k != i]
+    if not sib:
+        return Lam_j, b_j
+    E = np.zeros((3, 3))
+    e = np.zeros(3)
+    for k in sib:
+        E += art.P[k] @ art.A[k]                                               # R_k U_k^T A_k (7.7a)
+        e += art.T[k] @ tau[k] + art.P[k] @ (art.A[k] @ kappa[k] + art.d[k])   # (7.7b)
+    X = _EYE3 + Lam_j @ E
+    Mb = _checked_solve(X, np.column_stack([Lam_j, b_j - Lam_j @ e]), f"1 + Lambda^-1 E of body {j}")
+    return Mb[:, :3], Mb[:, 3]
 
 
-def articulated_mobility(model, q, qd=None, tau=None, f_ext=None) -> ArticulatedMobilities:
-    """Articulated mobilities ``Lambda_i^-1`` and bias accelerations ``b_i`` (thesis 7.4.1).
+def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_points=None, *,
+                       articulated: ArticulatedInertias | None = None) -> ArticulatedMobilities:
+    """Articulated mobilities and bias accelerations on arrays, base to tips (thesis 7.4.1: 7.31, 7.35, 7.38).
 
     Parameters
     ----------
-    model : planargeo.mechanics.model.Model
-        An unbranched chain (``model.is_chain``).
-    q, qd, tau : array_like (nq,)
-        State and joint torques (zero if omitted).
-    f_ext : array_like (N, 3), optional
-        World wrenches at the origin applied to each body (besides gravity).
+    I, S, kappa, p, tau, parents, points, joint_points
+        One state, as for :func:`planargeo.algorithms.articulated_inertia.articulated_recursion`
+        (body inertias ``I``: point masses are fine while every ``s_i^T I_i s_i`` is invertible;
+        ``joint_points``: where the singularity rule is measured).
+    articulated : ArticulatedInertias, optional
+        :func:`planargeo.algorithms.articulated_inertia.articulated_recursion` of the same state,
+        for the siblings of a tree (computed when needed and not given).
+
+    Returns
+    -------
+    ArticulatedMobilities
+
+    Raises
+    ------
+    SingularConfigurationError
+        When ``s_i^T I_i s_i`` (the joint rule) or ``1 + U_i R_i^T Lambda_{i-1}^-1 I_i``
+        (:data:`SOLVE_COND_LIMIT`) is singular.
+
+    Examples
+    --------
+    Thesis 7.42 with ``m = L = 1``, ``rho = 1/2``: ``4 / (m (L^2 + 4 rho^2)) = 2``.
+
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> r = mobility_recursion([inertia_matrix(1.0, [0.5, 0.0], 0.25)], [np.array([[0.0], [0.0], [1.0]])],
+    ...                        np.zeros((1, 3)), np.zeros((1, 3)), [np.zeros(1)])
+    >>> r.Lambda_inv[0].round(12) + 0.0
+    array([[0., 0., 0.],
+           [0., 0., 0.],
+           [0., 0., 2.]])
+    """
+    I = np.asarray(I, dtype=float)
+    N = I.shape[0]
+    parents = _chain(N) if parents is None else [int(x) for x in parents]
+    S, tau = _lists(S, tau)
+    kappa = np.asarray(kappa, dtype=float)
+    p = np.asarray(p, dtype=float)
+    children = [[] for _ in range(N)]
+    for i, j in enumerate(parents):
+        if j >= 0:
+            children[j].append(i)
+    if articulated is None and any(len(c) > 1 for c in children):
+        articulated = articulated_recursion(I, S, kappa, p, tau, parents, points, joint_points)
+    Lam = np.zeros((N, 3, 3))
+    b = np.zeros((N, 3))
+    T = [None] * N
+    for i in range(N):
+        Si, Ii = S[i], I[i]
+        gram = _checked_gram(Ii, Si, f"sᵀIs of joint {i}",
+                             None if joint_points is None else joint_points[i]) if Si.shape[1] else None
+        T[i] = Ti = _T(Ii, Si, gram=gram)                   # (6.36)
+        G = _effective_mobility(Ii, Si, gram=gram)          # s T^T I^-1 = s (s^T I s)^-1 s^T (6.93)
+        eta = G @ (Ti @ tau[i] - p[i])                      # (7.35)
+        P = _EYE3 - Si @ Ti.T                               # U R^T (6.75)
+        j = parents[i]
+        if j < 0:                                           # (7.31a, 7.31b): a_0 = 0
+            Lam[i] = G
+            b[i] = eta + P @ kappa[i]
+        else:
+            M, beta = _siblings_loaded(articulated, tau, kappa, children, i, j, Lam[j], b[j])
+            X = _EYE3 + P @ M @ Ii
+            Lb = _checked_solve(X, np.column_stack([G + P @ M, eta - P @ (M @ p[i] - beta - kappa[i])]),
+                                f"1 + U R^T Lambda^-1 I of body {i}")
+            Lam[i], b[i] = Lb[:, :3], Lb[:, 3]              # (7.38a, corrected; 7.38b)
+        Lam[i] = 0.5 * (Lam[i] + Lam[i].T)                  # symmetric by construction; remove round-off
+    return ArticulatedMobilities(Lam, b, S, T, None if points is None else np.asarray(points, float))
+
+
+def articulated_mobility(model, q, qd=None, tau=None, f_ext=None) -> ArticulatedMobilities:
+    """Articulated mobilities ``Lambda_i^-1`` and bias accelerations ``b_i`` (thesis 7.4.1; trees 9.45).
+
+    One state of a chain or tree hanging from the ground, given as for
+    :func:`planargeo.algorithms.articulated_inertia.articulated_inertia`; returns an
+    :class:`ArticulatedMobilities` (:func:`mobility_recursion` on the state's kinematics).
 
     Examples
     --------
@@ -211,6 +227,4 @@ def articulated_mobility(model, q, qd=None, tau=None, f_ext=None) -> Articulated
     >>> bool(np.allclose(r.Lambda_inv[1], r.Lambda_inv[1].T))
     True
     """
-    d, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
-    _check_chain(parents, len(S))
-    return mobility_recursion(I, S, kappa, p, taus, points=d.pose[:, :2], joint_points=d.origin)
+    return mobility_recursion(*_state_arrays(model, q, qd, tau, f_ext)[1:])

@@ -22,24 +22,25 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from planargeo.errors import SingularConfigurationError
-from planargeo.algorithms.articulated_inertia import _articulated
+from planargeo.errors import TopologyError
 from planargeo.mechanics.subspaces import _solve
-from planargeo.algorithms.articulated_mobility import _EYE3, SOLVE_COND_LIMIT, _check_chain, _cond, _mobility
-from planargeo.algorithms.projective import _per_state, _state_arrays, force_propagator
-
-_ZERO3 = np.zeros(3)
+from planargeo.algorithms.articulated_inertia import _EYE3, _per_state, _state_arrays, articulated_recursion
+from planargeo.algorithms.articulated_mobility import _check_solvable, mobility_recursion
+from planargeo.algorithms.projective import force_propagator, joint_accelerations
 
 __all__ = ["ChainSplit", "split_acceleration", "split_force", "chain_split",
            "mobility_split", "forward_dynamics_mobility_split"]
 
 
-def _C(Lam_i, K):
-    C = _EYE3 + Lam_i @ K
-    c = _cond(C)
-    if not c < SOLVE_COND_LIMIT:
-        raise SingularConfigurationError("1 + Lambda^-1 R U^T A of the split is singular", c)
-    return C
+def _split(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next):
+    """The arguments of 7.54 / 7.56 as float arrays, ``R U^T = 1 - T s^T`` (7.8) and ``C = 1 + Λ_i⁻¹ R Uᵀ A``."""
+    Lam_i, b_i, A_next, d_next, kappa_next = (np.asarray(x, dtype=float) for x in (Lam_i, b_i, A_next, d_next,
+                                                                                 kappa_next))
+    T_next = np.asarray(T_next, dtype=float).reshape(3, -1)
+    P = _EYE3 - T_next @ np.asarray(s_next, dtype=float).reshape(3, -1).T
+    C = _EYE3 + Lam_i @ (P @ A_next)
+    _check_solvable(C, "1 + Lambda^-1 R U^T A of the split")
+    return Lam_i, b_i, A_next, d_next, T_next, np.asarray(Q_next, dtype=float).reshape(-1), kappa_next, P, C
 
 
 def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) -> np.ndarray:
@@ -69,19 +70,10 @@ def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa
     >>> split_acceleration(Lam1, [0, 0, 1.0], A2, np.zeros(3), T2, s2, [0.0], np.zeros(3)).round(12)
     array([0. , 0. , 0.5])
     """
-    return _split_acceleration(np.asarray(Lam_i, dtype=float), np.asarray(b_i, dtype=float),
-                               np.asarray(A_next, dtype=float), np.asarray(d_next, dtype=float),
-                               np.asarray(T_next, dtype=float).reshape(3, -1),
-                               np.asarray(s_next, dtype=float).reshape(3, -1),
-                               np.asarray(Q_next, dtype=float).reshape(-1), np.asarray(kappa_next, dtype=float))
-
-
-def _split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next):
-    """7.54 on float arrays of the right shapes (the kernel of :func:`split_acceleration`)."""
-    P = _EYE3 - T_next @ s_next.T                         # R U^T (7.8)
-    K = P @ A_next
+    Lam_i, b_i, A_next, d_next, T_next, Q_next, kappa_next, P, C = _split(
+        Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next)
     rhs = b_i - Lam_i @ (T_next @ Q_next + P @ (A_next @ kappa_next + d_next))
-    return _solve(_C(Lam_i, K), rhs, "1 + Lambda^-1 R U^T A of the split")
+    return _solve(C, rhs, "1 + Lambda^-1 R U^T A of the split")
 
 
 def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) -> np.ndarray:
@@ -102,16 +94,10 @@ def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) 
     >>> f.round(12) + 0.0
     array([0. , 0.5, 0.5])
     """
-    Lam_i = np.asarray(Lam_i, dtype=float)
-    A_next = np.asarray(A_next, dtype=float)
-    s_next = np.asarray(s_next, dtype=float).reshape(3, -1)
-    T_next = np.asarray(T_next, dtype=float).reshape(3, -1)
-    P = np.eye(3) - T_next @ s_next.T                     # R U^T (7.8)
-    K = P @ A_next
-    rhs = (T_next @ np.asarray(Q_next, dtype=float).reshape(-1)
-           + P @ (A_next @ (np.asarray(b_i, dtype=float) + np.asarray(kappa_next, dtype=float))
-                  + np.asarray(d_next, dtype=float)))
-    return np.linalg.solve(_C(Lam_i, K).T, rhs)
+    Lam_i, b_i, A_next, d_next, T_next, Q_next, kappa_next, P, C = _split(
+        Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next)
+    rhs = T_next @ Q_next + P @ (A_next @ (b_i + kappa_next) + d_next)
+    return _solve(C.T, rhs, "1 + Lambda^-1 R U^T A of the split")
 
 
 @dataclass
@@ -132,14 +118,28 @@ class ChainSplit:
     qdd: np.ndarray
 
 
+def _check_chain(parents, N):
+    if parents is not None and list(parents) != list(range(-1, N - 1)):
+        raise TopologyError(
+            f"parents must describe an unbranched chain [-1, 0, 1, ...] for chain splitting "
+            f"(thesis 7.6), got {list(parents)}")
+
+
 def chain_split(I, S, kappa, p, tau, parents=None, joint_points=None) -> ChainSplit:
     """Solve a chain by chain splitting on arrays (thesis 7.6 algorithm).
 
     Steps: articulated inertias (7.1.1), articulated mobilities (7.4.1),
     then every ``a_i`` directly by 7.54, every ``f_{i+1}`` by 7.56, and the
-    joint accelerations by 6.110.  ``joint_points`` (N, 2): each joint's point, where the
-    singularity rule of :data:`planargeo.mechanics.subspaces.COND_LIMIT` is measured (default the origin;
-    :func:`mobility_split` passes the joint frames' origins).
+    joint accelerations by 6.110.  ``parents`` must be the chain ``[-1, 0, ..., N-2]``
+    (the default); ``joint_points`` (N, 2): each joint's point, where the singularity rule of :data:`planargeo.errors.COND_LIMIT`
+    is measured (default the origin; :func:`mobility_split` passes the joint frames' origins).
+
+    Raises
+    ------
+    TopologyError
+        When ``parents`` is not an unbranched chain.
+    SingularConfigurationError
+        When a joint-space matrix or a split matrix ``1 + Λ⁻¹ R Uᵀ A`` is singular.
 
     Examples
     --------
@@ -149,30 +149,25 @@ def chain_split(I, S, kappa, p, tau, parents=None, joint_points=None) -> ChainSp
     >>> chain_split(I, S, np.zeros((2, 3)), np.zeros((2, 3)), [np.ones(1), np.zeros(1)]).qdd.round(9)
     array([ 1.71428571, -4.28571429])
     """
-
-    I = np.asarray(I, dtype=float)
-    N = I.shape[0]
-    if parents is not None:
-        _check_chain(parents, N)
-    S = [np.asarray(x, dtype=float).reshape(3, -1) for x in S]
-    tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
+    N = len(S)
+    _check_chain(parents, N)
+    parents = list(range(-1, N - 1))
+    art = articulated_recursion(I, S, kappa, p, tau, parents, None, joint_points)      # (7.1.1)
+    mob = mobility_recursion(I, S, kappa, p, tau, parents, None, joint_points)        # (7.4.1)
+    S, T, A, d, tau = art.S, art.T, art.A, art.d, [np.asarray(x, dtype=float).reshape(-1) for x in tau]
     kappa = np.asarray(kappa, dtype=float)
-    p = np.asarray(p, dtype=float)
-    A, d, T = _articulated(I, S, kappa, p, tau, list(range(-1, N - 1)), joint_points)     # (7.1.1)
-    Lam, b, Tm = _mobility(I, S, kappa, p, tau, joint_points)                              # (7.4.1)
     a = np.zeros((N, 3))
     f = np.zeros((N, 3))
     for i in range(N - 1):
         j = i + 1
-        args = (Lam[i], b[i], A[j], d[j], T[j], S[j], tau[j], kappa[j])
+        args = (mob.Lambda_inv[i], mob.b[i], A[j], d[j], T[j], S[j], tau[j], kappa[j])
         a[i] = split_acceleration(*args)                # (7.54)
         f[j] = split_force(*args)                       # (7.56)
-    a[N - 1] = b[N - 1]                                 # f_{N+1} = 0 in (7.37)
-    if N:   # (6.113b) with a_0 = 0; T of sᵀIs from the mobility pass (checked at the joint's point)
-        f[0] = force_propagator(I[0], S[0], tau[0], p[0], f[1] if N > 1 else _ZERO3, _ZERO3, kappa[0], T=Tm[0])
-    qdd = [T[i].T @ (a[i] - (a[i - 1] if i else 0.0) - kappa[i]) for i in range(N)]  # (6.110)
-    qdd = np.concatenate(qdd) if qdd else np.zeros(0)
-    return ChainSplit(a, f, qdd)
+    if N:   # a_N = b_N (f_{N+1} = 0 in 7.37); f_1 by (6.113b) with a_0 = 0, T of sᵀIs from the mobility pass
+        a[N - 1] = mob.b[N - 1]
+        f[0] = force_propagator(I[0], S[0], tau[0], p[0], f[1] if N > 1 else np.zeros(3), np.zeros(3), kappa[0],
+                                T=mob.T[0])
+    return ChainSplit(a, f, joint_accelerations(T, a, kappa, parents))       # (6.110)
 
 
 def mobility_split(model, q, qd=None, tau=None, f_ext=None) -> ChainSplit:
@@ -185,26 +180,23 @@ def mobility_split(model, q, qd=None, tau=None, f_ext=None) -> ChainSplit:
     >>> r.qdd.round(9)
     array([ 1.71428571, -4.28571429])
     """
-    d, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
-    _check_chain(parents, len(S))
-    return chain_split(I, S, kappa, p, taus, joint_points=d.origin)
+    return _chain_split(_state_arrays(model, q, qd, tau, f_ext))
+
+
+def _chain_split(state):
+    _, I, S, kappa, p, taus, parents, _, joint_points = state
+    return chain_split(I, S, kappa, p, taus, parents, joint_points)
+
+
+def _mobility_split_qdd(model, q, qd, tau, f_ext):
+    return _chain_split(_state_arrays(model, q, qd, tau, f_ext, checked=True)).qdd
 
 
 def forward_dynamics_mobility_split(model, q, qd, tau, f_ext=None) -> np.ndarray:
     """Joint accelerations by articulated mobility + chain splitting (thesis 7.4.1, 7.54, 7.56, 6.110).
 
-    Parameters
-    ----------
-    model : planargeo.mechanics.model.Model
-        An unbranched chain whose first body hangs from the ground.
-    q, qd, tau : array_like (..., nq)
-        Leading batch dimensions are solved state by state.
-    f_ext : array_like (..., N, 3), optional
-        World wrenches at the origin applied to each body (besides gravity).
-
-    Returns
-    -------
-    ndarray (..., nq)
+    Arguments and result as :func:`planargeo.algorithms.projective.forward_dynamics_projective`;
+    the model must be an unbranched chain whose first body hangs from the ground.
 
     Raises
     ------
@@ -219,22 +211,5 @@ def forward_dynamics_mobility_split(model, q, qd, tau, f_ext=None) -> np.ndarray
     >>> forward_dynamics_mobility_split(chain_model(1), [0.0], [0.0], [0.0]).round(6)
     array([-14.715])
     """
+    _check_chain(model.parents, model.N)
     return _per_state(_mobility_split_qdd, model, q, qd, tau, f_ext)
-
-
-def _mobility_split_qdd(model, q, qd, tau, f_ext):
-    """``qdd`` of one state by 7.54 and 6.110 (the forces 7.56 of :func:`mobility_split` are not needed)."""
-    from planargeo.algorithms.articulated_inertia import _articulated
-
-    data, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext, checked=True)
-    _check_chain(parents, len(S))
-    N = len(S)
-    A, d, T = _articulated(I, S, kappa, p, taus, parents, data.origin)
-    Lam, b, _ = _mobility(I, S, kappa, p, taus, data.origin)
-    a = np.zeros((N, 3))
-    for i in range(N - 1):
-        j = i + 1
-        a[i] = _split_acceleration(Lam[i], b[i], A[j], d[j], T[j], S[j], taus[j], kappa[j])   # (7.54)
-    a[N - 1] = b[N - 1]                                 # f_{N+1} = 0 in (7.37)
-    qdd = [T[i].T @ (a[i] - (a[i - 1] if i else 0.0) - kappa[i]) for i in range(N)]  # (6.110)
-    return np.concatenate(qdd) if qdd else np.zeros(0)

@@ -35,6 +35,7 @@ from planargeo.mechanics.contacts import contact_matrix, stacked_contact_spaces,
 from planargeo.errors import InputError, ShapeError, SingularConfigurationError
 from planargeo.mechanics.kinematics import check_state, kinematics
 from planargeo.mechanics.model import Model
+from planargeo.algorithms.articulated_inertia import _per_state
 from planargeo.algorithms.stacked import blocks, stacked_solve, trunk, adjacency
 
 __all__ = ["LoopSolution", "loop_solve", "loop_condition", "forward_dynamics_loops", "constrained_dynamics_lagrange",
@@ -61,7 +62,7 @@ class LoopSolution:
     """All quantities of one constrained state (thesis 9.49-9.75; attributes named after the symbols).
 
     Reaction bases: ``xi`` are the components of the contact forces in the
-    contact reaction spaces ``B`` of :func:`planargeo.mechanics.contacts.reaction_space`
+    contact reaction spaces ``B`` of :func:`planargeo.mechanics.contacts.B_of`
     (``F = B ξ``, 9.70-9.71): for a pin, the unit forces along x and y through
     the contact point; for a slider, the unit force normal to the slide through
     the contact point on body ``a`` (the slide direction turned by -90°, as in
@@ -113,7 +114,7 @@ class LoopSolution:
 
     @property
     def Lambda_inv(self) -> np.ndarray:
-        """The tree's full stacked mobility ``Λ^{-1}`` (3N×3N), built on first access (``tree.mobility``)."""
+        """The tree's full stacked mobility ``Λ^{-1}`` (3N×3N) of 9.65-9.73, built on first access (``tree.mobility``)."""
         return self.tree.mobility
 
 
@@ -344,17 +345,8 @@ def forward_dynamics_loops(model: Model, q, qd, tau, f_ext=None, contacts=None, 
     >>> forward_dynamics_loops(chain_model(1), [0.0], [0.0], [0.0]).round(3)    # no contacts: a tree
     array([-14.715])
     """
-    q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
-    nq = model.nq
-    q = np.broadcast_to(q, shape + (nq,))
-    qd = np.zeros(shape + (nq,)) if qd is None else np.broadcast_to(qd, shape + (nq,))
-    tau = np.zeros(shape + (nq,)) if tau is None else np.broadcast_to(tau, shape + (nq,))
-    fe = None if f_ext is None else np.broadcast_to(f_ext, shape + (model.N, 3))
-    out = np.empty(shape + (nq,))
-    for idx in np.ndindex(*shape):
-        out[idx] = loop_solve(model, q[idx], qd[idx], tau[idx], None if fe is None else fe[idx],
-                              contacts, prescribed=prescribed).qdd
-    return out
+    return _per_state(lambda m, *state: loop_solve(m, *state, contacts, prescribed=prescribed).qdd,
+                      model, q, qd, tau, f_ext)
 
 
 # ---------------------------------------------------------------------------

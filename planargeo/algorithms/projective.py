@@ -30,7 +30,7 @@ body ``i``'s parent (zero for the ground), so trees are handled as well as
 chains.
 
 Reaction basis (the meaning of ``mu``): every ``R_i`` is
-:func:`planargeo.mechanics.joints.reaction_space_of`, the package's one definition
+:func:`planargeo.mechanics.joints.R_of`, the package's one definition
 (:func:`planargeo.mechanics.joints.reaction_space`, thesis 4.8, 5.63, 7.16): for a
 revolute joint at ``(x, y)`` the unit forces along x and y through the joint;
 for a prismatic joint along ``e`` the unit force along ``e⊥`` (``e`` turned by
@@ -39,8 +39,8 @@ revolute-prismatic joint the unit force along ``e⊥`` through the pin.  So with
 no joint force (``Q = 0``) ``mu`` is the joint's reaction force in those
 components; in general ``f = T Q + R mu`` first sets apart the force ``T Q`` on
 the axis of percussion (6.38).  ``T`` and ``U`` come from
-:func:`planargeo.mechanics.subspaces.percussion_space` and
-:func:`planargeo.mechanics.subspaces.reactive_acceleration_space` (one implementation,
+:func:`planargeo.mechanics.subspaces.T_of` and
+:func:`planargeo.mechanics.subspaces.U_of` (one implementation,
 one singularity rule); ``qdd`` does not depend on the basis.
 """
 from __future__ import annotations
@@ -49,119 +49,40 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from planargeo.mechanics.joints import reaction_space_of
-from planargeo.mechanics.subspaces import _reactive_from_T, _solve, effective_mobility, percussion_space, reactive_acceleration_space
+from planargeo.mechanics.subspaces import _effective_mobility, _solve, T_of
+from planargeo.algorithms.articulated_inertia import _per_state, _state_arrays, articulated_recursion
 
-__all__ = [
-    "reaction_space", "percussion_subspace", "reactive_subspace",
-    "acceleration_propagator", "force_propagator",
-    "ProjectiveWorkspace", "projective_solve", "projective_workspace",
-    "forward_dynamics_projective",
-]
-
-
-# ---------------------------------------------------------------------------
-# Subspaces (thesis 6.1, 6.30/6.105, 6.33/6.99): thin wrappers of the one
-# implementation each, in planargeo.mechanics.joints and planargeo.mechanics.subspaces
-# ---------------------------------------------------------------------------
-def reaction_space(s, point=(0.0, 0.0)) -> np.ndarray:
-    """Reaction space ``R`` of the joint with motion space ``s`` (thesis 6.1, 7.16, 5.63).
-
-    The same basis everywhere: this is :func:`planargeo.mechanics.joints.reaction_space_of`
-    (which reads kind, pivot and direction off ``s`` and calls
-    :func:`planargeo.mechanics.joints.reaction_space`).  Revolute: unit forces along x
-    and y through the pivot; prismatic: the unit force along ``e⊥`` through
-    ``point`` (on the slide) and the unit couple; revolute-prismatic: the unit
-    force along ``e⊥`` through the pivot.
-
-    Examples
-    --------
-    >>> reaction_space([[0.0], [-2.0], [1.0]])          # revolute at (2, 0), thesis 7.16
-    array([[1., 0.],
-           [0., 1.],
-           [0., 2.]])
-    >>> reaction_space([[1.0], [0.0], [0.0]], (2.0, 3.0))   # prismatic along x through (2, 3)
-    array([[0., 0.],
-           [1., 0.],
-           [2., 1.]])
-    """
-    return reaction_space_of(s, point)
-
-
-def percussion_subspace(A, s, *, what: str = "sᵀAs") -> np.ndarray:
-    """Active force subspace ``T = A s (sᵀAs)⁻¹`` (thesis 6.30, 6.105; 6.36 with ``I``).
-
-    Alias of :func:`planargeo.mechanics.subspaces.percussion_space` with the arguments
-    in the order ``(A, s)``; the singularity rule and message are that
-    function's (:class:`~planargeo.errors.SingularConfigurationError` with ``.cond``).
-
-    Examples
-    --------
-    Thesis 7.40 (m = 1, L = 1, rho = 1/2: ``2L/(L^2 + 4 rho^2) = 1``):
-
-    >>> from planargeo.screws.twists import inertia_matrix
-    >>> percussion_subspace(inertia_matrix(1.0, [0.5, 0.0], 0.25), [[0.0], [0.0], [1.0]]).ravel()
-    array([0., 1., 1.])
-    """
-    return percussion_space(np.asarray(s, dtype=float).reshape(3, -1), A, what=what)
-
-
-def reactive_subspace(A, R, *, s=None, T=None, what: str | None = None) -> np.ndarray:
-    """Reactive acceleration subspace ``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹`` (thesis 6.45, 6.99, 6.37).
-
-    Alias of :func:`planargeo.mechanics.subspaces.reactive_acceleration_space` with the
-    arguments in the order ``(A, R)``.  With ``s`` (and optionally ``T``) the
-    inverse-free form ``U = (1 - s Tᵀ) R (RᵀR)⁻¹`` is used (point masses have
-    a singular ``A``).  Thesis 6.33 misprints the inverse; see
-    ``docs/errata.md``.
-
-    Examples
-    --------
-    Thesis 7.40 (m = 1, L = 1, rho = 1/2):
-
-    >>> from planargeo.screws.twists import inertia_matrix
-    >>> U = reactive_subspace(inertia_matrix(1.0, [0.5, 0.0], 0.25), reaction_space([[0.0], [0.0], [1.0]]))
-    >>> np.round(U, 12) + 0.0
-    array([[ 1.,  0.],
-           [ 0.,  1.],
-           [ 0., -1.]])
-    """
-    R = np.asarray(R, dtype=float).reshape(3, -1)
-    if s is not None:
-        s = np.asarray(s, dtype=float).reshape(3, -1)
-    if T is not None:
-        T = np.asarray(T, dtype=float).reshape(3, -1)
-    return reactive_acceleration_space(R, A, s=s, T=T, what=what)
-
-
-def _active_mobility(A, s, what):
-    """``s (sᵀAs)⁻¹ sᵀ`` = ``s Tᵀ A⁻¹`` (thesis 6.93, 7.31a): :func:`planargeo.mechanics.subspaces.effective_mobility`."""
-    return effective_mobility(s, A, what=what)
-
-
-def _joint_solve(A, s, rhs):
-    """``(sᵀAs)⁻¹ rhs``; call after ``T`` was built, so singularity has been checked (one rule)."""
-    k = s.shape[1]
-    if k == 0:
-        return np.zeros(0)
-    return _solve(s.T @ A @ s, rhs)
+__all__ = ["acceleration_propagator", "force_propagator", "joint_accelerations",
+           "ProjectiveWorkspace", "projective_solve", "projective_workspace", "forward_dynamics_projective"]
 
 
 # ---------------------------------------------------------------------------
 # Propagators (thesis 6.113)
 # ---------------------------------------------------------------------------
-def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, R=None) -> np.ndarray:
+def _propagator_args(I, s, Q, T):
+    I = np.asarray(I, dtype=float)
+    s = np.asarray(s, dtype=float).reshape(3, -1)
+    T = T_of(I, s) if T is None else np.asarray(T, dtype=float).reshape(3, -1)
+    return I, s, np.asarray(Q, dtype=float).reshape(-1), T
+
+
+def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.ndarray:
     """Acceleration of a body from its neighbours' loads (thesis 6.113a).
 
     ``a_i = s_i T_i^T I_i^-1 (T_i Q_i - p_i - f_{i+1}) + U_i R_i^T (a_{i-1} + kappa_i)``
-    with ``T_i``, ``U_i`` built on the body inertia (6.36, 6.37).
+    with ``T_i``, ``U_i`` built on the body inertia (6.36, 6.37); ``s T^T I^-1 = s (s^T I s)^-1 s^T``
+    (6.93) and ``U R^T = 1 - s T^T`` (6.75), whatever the reaction basis.
 
     Parameters
     ----------
     I : (3, 3) body inertia; s : (3, k) joint space; Q : (k,) joint torque;
     p : (3,) bias force (3.11); f_next : (3,) internal force of the child
     joints (sum); a_prev : (3,) parent acceleration; kappa : (3,) bias
-    acceleration (2.19); R : (3, 3-k) reaction space (default :func:`reaction_space`).
+    acceleration (2.19).
+    T : (3, k), optional
+        The percussion space ``I s (sᵀIs)⁻¹`` if already formed (and checked, e.g. by
+        the singularity rule at the joint's own point); by default it is formed here
+        (:func:`planargeo.mechanics.subspaces.T_of`, the rule measured at the origin).
 
     Examples
     --------
@@ -173,25 +94,18 @@ def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, R=None) -> np.nda
     ...                         [0.0, -1.0, -1.0], np.zeros(3), np.zeros(3), np.zeros(3))
     array([0., 0., 1.])
     """
-    I = np.asarray(I, dtype=float)
-    s = np.asarray(s, dtype=float).reshape(3, -1)
-    R = reaction_space(s) if R is None else np.asarray(R, dtype=float).reshape(3, -1)
-    T = percussion_subspace(I, s)
-    U = reactive_subspace(I, R, s=s, T=T)
-    Q = np.asarray(Q, dtype=float).reshape(-1)
+    I, s, Q, T = _propagator_args(I, s, Q, T)
+    base = np.asarray(a_prev, dtype=float) + np.asarray(kappa, dtype=float)
     rhs = T @ Q - np.asarray(p, dtype=float) - np.asarray(f_next, dtype=float)
-    return _active_mobility(I, s, "sᵀIs") @ rhs + U @ (R.T @ (np.asarray(a_prev, dtype=float) + np.asarray(kappa, dtype=float)))
+    return _effective_mobility(I, s, gram=(I @ s, s.T @ I @ s)) @ rhs + base - s @ (T.T @ base)
 
 
-def force_propagator(I, s, Q, p, f_next, a_prev, kappa, R=None, *, T=None) -> np.ndarray:
+def force_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.ndarray:
     """Internal force of a body's joint from its neighbours (thesis 6.113b).
 
     ``f_i = T_i Q_i + R_i U_i^T (I_i (a_{i-1} + kappa_i) + p_i + f_{i+1})``
-    with ``T_i``, ``U_i`` built on the body inertia (6.36, 6.37).
-
-    ``T``: the percussion subspace ``I s (sᵀIs)⁻¹`` if already formed (and checked, e.g. by
-    the singularity rule at the joint's own point, as :func:`reactive_subspace` takes it);
-    by default it is formed here, with the rule measured at the origin of the coordinates.
+    with ``T_i``, ``U_i`` built on the body inertia (6.36, 6.37) and ``R U^T = 1 - T s^T``
+    (7.8), whatever the reaction basis.  Parameters as :func:`acceleration_propagator`.
 
     Examples
     --------
@@ -204,63 +118,32 @@ def force_propagator(I, s, Q, p, f_next, a_prev, kappa, R=None, *, T=None) -> np
     >>> np.round(f, 12) + 0.0
     array([0., 0., 0.])
     """
-    I = np.asarray(I, dtype=float)
-    s = np.asarray(s, dtype=float).reshape(3, -1)
-    R = reaction_space(s) if R is None else np.asarray(R, dtype=float).reshape(3, -1)
-    T = percussion_subspace(I, s) if T is None else np.asarray(T, dtype=float).reshape(3, -1)
-    U = reactive_subspace(I, R, s=s, T=T)
-    Q = np.asarray(Q, dtype=float).reshape(-1)
-    base = I @ (np.asarray(a_prev, dtype=float) + np.asarray(kappa, dtype=float))
-    return T @ Q + R @ (U.T @ (base + np.asarray(p, dtype=float) + np.asarray(f_next, dtype=float)))
+    I, s, Q, T = _propagator_args(I, s, Q, T)
+    load = I @ (np.asarray(a_prev, dtype=float) + np.asarray(kappa, dtype=float)) + np.asarray(p, dtype=float) \
+        + np.asarray(f_next, dtype=float)
+    return T @ Q + load - T @ (s.T @ load)
 
 
-# ---------------------------------------------------------------------------
-# Model glue
-# ---------------------------------------------------------------------------
-def _state_arrays(model, q, qd, tau, f_ext, checked=False):
-    """Kinematics of one state: (data, I, S list, kappa, p, parents, tau list).
+def joint_accelerations(T, a, kappa, parents) -> np.ndarray:
+    """Joint accelerations ``qdd_i = T_i^T (a_i - a_{λ(i)} - kappa_i)`` (thesis 6.110), all joints.
 
-    ``checked``: the arguments come out of :func:`planargeo.mechanics.kinematics.check_state`
-    for one state already (as in :func:`_per_state`), so they are not validated again.
+    Parameters
+    ----------
+    T : list of N (3, k_i) percussion spaces (6.105, or 6.36: ``sᵀT = 1`` is all that is used).
+    a, kappa : (N, 3) body and bias accelerations; ``a_{λ(i)}`` is the parent's (zero for the ground).
+    parents : sequence of N ints.
+
+    Returns
+    -------
+    ndarray (nq,)
+
+    Examples
+    --------
+    >>> joint_accelerations([np.array([[0.0], [0.0], [1.0]])], np.array([[0.0, 0.0, 2.0]]), np.zeros((1, 3)), [-1])
+    array([2.])
     """
-    from planargeo.mechanics.kinematics import _kinematics_scalar, check_state
-
-    if not checked:
-        q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
-        if shape != ():
-            raise _batch_error(shape)
-    if tau is None:
-        tau = np.zeros(model.nq)
-    d = _kinematics_scalar(model, q, np.zeros(model.nq) if qd is None else qd, f_ext)   # kinematics()
-    offs, N = model.q_offsets, model.N
-    S = [d.S[:, offs[i]:offs[i + 1]] for i in range(N)]            # d.s(i)
-    taus = [tau[offs[i]:offs[i + 1]] for i in range(N)]
-    return d, d.I, S, d.kappa, d.p, list(model.parents), taus
-
-
-def _batch_error(shape):
-    from planargeo.errors import ShapeError
-
-    return ShapeError(f"q must describe one state (shape (nq,)), got batch shape {shape}; "
-                      "loop over states or use planargeo.algorithms.aba for batches")
-
-
-def _per_state(fn, model, q, qd, tau, f_ext):
-    """Apply the single-state solver ``fn(model, q, qd, tau, f_ext) -> (nq,)`` over batch dimensions."""
-    from planargeo.mechanics.kinematics import check_state
-
-    q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
-    if shape == ():
-        return fn(model, q, qd, tau, f_ext)
-    nq, N = model.nq, model.N
-    q = np.broadcast_to(q, shape + (nq,))
-    qd = np.zeros(shape + (nq,)) if qd is None else np.broadcast_to(qd, shape + (nq,))
-    tau = np.zeros(shape + (nq,)) if tau is None else np.broadcast_to(tau, shape + (nq,))
-    fx = None if f_ext is None else np.broadcast_to(f_ext, shape + (N, 3))
-    out = np.empty(shape + (nq,))
-    for idx in np.ndindex(*shape):
-        out[idx] = fn(model, q[idx], qd[idx], tau[idx], None if fx is None else fx[idx])
-    return out
+    qdd = [Ti.T @ (a[i] - (a[j] if j >= 0 else 0.0) - kappa[i]) for i, (Ti, j) in enumerate(zip(T, parents))]
+    return np.concatenate(qdd) if qdd else np.zeros(0)
 
 
 # ---------------------------------------------------------------------------
@@ -271,7 +154,7 @@ class ProjectiveWorkspace:
     """Everything the projective solution computes, per body ``i`` (thesis 6.99-6.110; lists of arrays).
 
     ``mu[i]`` are components in ``R[i]``, the basis of
-    :func:`planargeo.mechanics.joints.reaction_space_of` (unit forces through the joint, couples).
+    :func:`planargeo.mechanics.joints.R_of` (unit forces through the joint, couples).
 
     Attributes
     ----------
@@ -303,6 +186,25 @@ class ProjectiveWorkspace:
     qdd: np.ndarray
 
 
+def _accelerations(art, kappa, tau, parents):
+    """``psi_i`` (6.107) and ``a_i`` (6.108), base to tips, from the articulated quantities.
+
+    ``psi = T^T A^-1 (T Q - d) = (s^T A s)^-1 (Q - s^T d)`` and ``U R^T = 1 - s T^T`` (6.75):
+    neither ``A^-1`` nor a reaction basis is needed.
+    """
+    N = len(art.S)
+    a = np.zeros((N, 3))
+    psi = [None] * N
+    for i in range(N):
+        j = parents[i]
+        base = (a[j] if j >= 0 else 0.0) + kappa[i]
+        Si, Ti = art.S[i], art.T[i]
+        rhs = tau[i] - Si.T @ art.d[i]
+        psi[i] = _solve(art.gram[i][1], rhs) if Si.shape[1] else rhs          # (6.107)
+        a[i] = Si @ psi[i] + base - Si @ (Ti.T @ base)                         # (6.108)
+    return psi, a
+
+
 def projective_solve(I, S, kappa, p, tau, parents=None, points=None, joint_points=None) -> ProjectiveWorkspace:
     """Projective articulated equations of motion on arrays (thesis 6.101-6.110).
 
@@ -312,23 +214,28 @@ def projective_solve(I, S, kappa, p, tau, parents=None, points=None, joint_point
     S : list of N arrays (3, k_i): joint spaces.
     kappa, p : (N, 3) bias accelerations (2.19) and bias forces (3.11).
     tau : list of N arrays (k_i,): joint torques ``Q_i``.
-    parents : sequence of N ints (``-1`` ground), default a chain.
+    parents : sequence of N ints (``-1`` ground, parents before children), default a chain.
     points : (N, 2), optional
-        A point of each joint for the reaction bases (:func:`planargeo.mechanics.joints.reaction_space_of`:
+        A point of each joint for the reaction bases (:func:`planargeo.mechanics.joints.R_of`:
         used by prismatic joints, whose reaction force passes through it); default the origin.
         :func:`projective_workspace` passes each body's frame origin.
     joint_points : (N, 2), optional
         Each joint's point (pivot; placement point of a prismatic joint: the joint
-        frame's origin), where the singularity rule of :data:`planargeo.mechanics.subspaces.COND_LIMIT`
+        frame's origin), where the singularity rule of :data:`planargeo.errors.COND_LIMIT`
         is measured; default the origin.  The model-level functions pass the joint frames' origins.
 
     Returns
     -------
     ProjectiveWorkspace
         ``mu[i]`` are the reaction components in the basis ``R[i]`` of
-        :func:`planargeo.mechanics.joints.reaction_space_of` (forces along x and y through
+        :func:`planargeo.mechanics.joints.R_of` (forces along x and y through
         a revolute joint; force along ``e⊥`` through the slider and a couple
         for a prismatic joint), so that ``f[i] = T[i] Q[i] + R[i] mu[i]``.
+
+    Raises
+    ------
+    SingularConfigurationError
+        When some ``s_i^T A_i s_i`` is singular (the rule of :data:`planargeo.errors.COND_LIMIT`).
 
     Examples
     --------
@@ -340,34 +247,22 @@ def projective_solve(I, S, kappa, p, tau, parents=None, points=None, joint_point
     >>> ws.qdd, ws.a[0]
     (array([1.]), array([0., 0., 1.]))
     """
-    from planargeo.algorithms.articulated_inertia import articulated_recursion
-
-    I = np.asarray(I, dtype=float)
-    N = I.shape[0]
+    art = articulated_recursion(I, S, kappa, p, tau, parents, points, joint_points)
+    N = len(art.S)
     parents = list(range(-1, N - 1)) if parents is None else [int(x) for x in parents]
-    S = [np.asarray(x, dtype=float).reshape(3, -1) for x in S]
-    tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
     kappa = np.asarray(kappa, dtype=float)
-    p = np.asarray(p, dtype=float)
-    rec = articulated_recursion(I, S, kappa, p, tau, parents, points, joint_points)
-    A, d, T, R = rec.A, rec.d, rec.T, rec.R
-    U = [_reactive_from_T(R[i], S[i], T[i]) for i in range(N)]   # (6.99), inverse-free (6.75)
-    a = np.zeros((N, 3))
+    tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
+    psi, a = _accelerations(art, kappa, tau, parents)
+    A, d, T, R, U = art.A, art.d, art.T, art.R, art.U
     f = np.zeros((N, 3))
-    mu, psi, gamma, qdd = [None] * N, [None] * N, [None] * N, []
+    mu, gamma = [None] * N, [None] * N
     for i in range(N):
         j = parents[i]
-        a_prev = a[j] if j >= 0 else np.zeros(3)
-        base = a_prev + kappa[i]
-        gamma[i] = R[i].T @ base                                     # (6.101)
-        # (6.107) with T^T A^-1 = (s^T A s)^-1 s^T: psi = (s^T A s)^-1 (Q - s^T d)
-        psi[i] = _joint_solve(A[i], S[i], tau[i] - S[i].T @ d[i])
-        a[i] = S[i] @ psi[i] + U[i] @ gamma[i]                       # (6.108)
-        mu[i] = U[i].T @ A[i] @ U[i] @ gamma[i] + U[i].T @ d[i]       # (6.106a)
-        f[i] = T[i] @ tau[i] + R[i] @ mu[i]                          # (6.109)
-        qdd.append(T[i].T @ (a[i] - base))                           # (6.110)
-    qdd = np.concatenate(qdd) if qdd else np.zeros(0)
-    return ProjectiveWorkspace(S, R, T, U, A, d, list(tau), mu, psi, gamma, a, f, qdd)
+        gamma[i] = R[i].T @ ((a[j] if j >= 0 else 0.0) + kappa[i])     # (6.101)
+        mu[i] = U[i].T @ A[i] @ U[i] @ gamma[i] + U[i].T @ d[i]         # (6.106a)
+        f[i] = T[i] @ tau[i] + R[i] @ mu[i]                             # (6.109)
+    return ProjectiveWorkspace(art.S, R, T, U, A, d, tau, mu, psi, gamma, a, f,
+                               joint_accelerations(T, a, kappa, parents))          # (6.110)
 
 
 def projective_workspace(model, q, qd=None, tau=None, f_ext=None) -> ProjectiveWorkspace:
@@ -383,50 +278,22 @@ def projective_workspace(model, q, qd=None, tau=None, f_ext=None) -> ProjectiveW
     >>> [round(float(x), 12) for x in ws.qdd]
     [1.714285714286, -4.285714285714]
     """
-    d, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext)
-    return projective_solve(I, S, kappa, p, taus, parents, d.pose[:, :2], d.origin)
+    return projective_solve(*_state_arrays(model, q, qd, tau, f_ext)[1:])
 
 
 def _projective_qdd(model, q, qd, tau, f_ext):
-    """``qdd`` of one state by 6.107, 6.108, 6.110, without the reaction bases.
-
-    The reactive part of 6.108 needs only the projector ``U_i R_i^T = 1 - s_i T_i^T``
-    (the twist projectors of 6.75), which is the same for every reaction basis,
-    so ``R_i``, ``U_i``, ``gamma_i``, ``mu_i`` and ``f_i`` (the drawing workspace
-    of :func:`projective_workspace`) are not built.
-    """
-    from planargeo.algorithms.articulated_inertia import _articulated
-
-    data, I, S, kappa, p, parents, taus = _state_arrays(model, q, qd, tau, f_ext, checked=True)
-    A, d, T = _articulated(I, S, kappa, p, taus, parents, data.origin)
-    N = len(S)
-    a = np.zeros((N, 3))
-    qdd = []
-    zero = np.zeros(3)
-    for i in range(N):
-        j = parents[i]
-        base = (a[j] if j >= 0 else zero) + kappa[i]
-        Si, Ti = S[i], T[i]
-        psi = _joint_solve(A[i], Si, taus[i] - Si.T @ d[i])             # (6.107)
-        a[i] = Si @ psi + (base - Si @ (Ti.T @ base))                   # (6.108), U R^T = 1 - s T^T
-        qdd.append(Ti.T @ (a[i] - base))                                # (6.110)
-    return np.concatenate(qdd) if qdd else np.zeros(0)
+    """``qdd`` of one checked state by 6.107, 6.108, 6.110, without the reaction components."""
+    _, I, S, kappa, p, taus, parents, points, jpoints = _state_arrays(model, q, qd, tau, f_ext, checked=True)
+    art = articulated_recursion(I, S, kappa, p, taus, parents, points, jpoints)
+    return joint_accelerations(art.T, _accelerations(art, kappa, taus, parents)[1], kappa, parents)
 
 
 def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
     """Joint accelerations by the projective articulated equations (thesis 6.108-6.110).
 
-    Parameters
-    ----------
-    model : planargeo.mechanics.model.Model
-    q, qd, tau : array_like (..., nq)
-        Leading batch dimensions are solved state by state.
-    f_ext : array_like (..., N, 3), optional
-        World wrenches at the origin applied to each body (besides gravity).
-
-    Returns
-    -------
-    ndarray (..., nq)
+    The forward-dynamics signature of :mod:`planargeo.algorithms`: ``q``, ``qd``, ``tau``
+    of shape (..., nq) (leading batch dimensions solved state by state), ``f_ext`` (..., N, 3)
+    world wrenches at the origin on the bodies (besides gravity); returns ``q̈`` (..., nq).
 
     Raises
     ------

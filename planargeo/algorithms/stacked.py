@@ -39,17 +39,15 @@ import functools
 import numpy as np
 
 from planargeo._validate import as_array
-from planargeo.errors import ShapeError, TopologyError
-from planargeo.mechanics.joints import reaction_space_of
+from planargeo.errors import InputError, ShapeError, TopologyError
 from planargeo.mechanics.kinematics import _kinematics_scalar, check_state
-from planargeo.mechanics.subspaces import (_checked_gram, _effective_mobility, _percussion_space, joint_scale,
-                         reactive_acceleration_space)
+from planargeo.mechanics.subspaces import _effective_mobility
 from planargeo.mechanics.model import Model, _cycle_error, _find_cycle
+from planargeo.algorithms.articulated_inertia import _data_arrays, _per_state, _state_arrays, articulated_recursion
+from planargeo.algorithms.articulated_mobility import mobility_recursion
 
-__all__ = ["adjacency", "trunk", "blocks", "reaction_basis", "quake_space", "StackedSolution", "stacked_solve",
-           "joint_conditions",
-           "articulated_quantities", "articulation_matrix", "stacked_mobility",
-           "tree_mobilities", "direct_accelerations", "forward_dynamics_stacked"]
+__all__ = ["adjacency", "trunk", "blocks", "StackedSolution", "stacked_solve", "joint_conditions",
+           "articulation_matrix", "direct_accelerations", "forward_dynamics_stacked"]
 
 
 # ---------------------------------------------------------------------------
@@ -160,104 +158,15 @@ def blocks(X, k: int = 3) -> np.ndarray:
     return np.kron(np.asarray(X, dtype=float), np.eye(k))
 
 
-def reaction_basis(s, point=(0.0, 0.0)) -> np.ndarray:
-    """Reaction space ``R`` of a joint with motion space ``s`` (``sᵀR = 0``; thesis 6.1, 7.16, 5.63).
-
-    Kept for compatibility: this is :func:`planargeo.mechanics.joints.reaction_space_of`,
-    the package's one reaction basis (forces through the joint, couples), not
-    an orthonormal basis.
-
-    Examples
-    --------
-    >>> reaction_basis(np.array([[3.0], [-2.0], [1.0]]))     # revolute at (2, 3): forces through it (7.16)
-    array([[ 1.,  0.],
-           [ 0.,  1.],
-           [-3.,  2.]])
-    """
-    return reaction_space_of(s, point)
-
-
-# ---------------------------------------------------------------------------
-# articulated quantities
-# ---------------------------------------------------------------------------
-def articulated_quantities(model: Model, data, tau):
-    """Articulated inertias, bias forces and the subspaces ``T``, ``R U^T`` of every body (thesis 7.7a, 7.7b, 9.27-9.28).
-
-    Recursion from the tips to the root (thesis 7.7a/7.7b, stacked 9.27/9.28
-    corrected, see ``docs/errata.md``): ``A = I + C^T R U^T A C`` and
-    ``d = p + C^T T Q + C^T R U^T (A κ + d)``, with ``T = A S (S^T A S)^{-1}``
-    (9.19, 6.105; built by :func:`planargeo.mechanics.subspaces.percussion_space`) and
-    ``R U^T = 1 - T s^T`` (7.8), which needs neither a reaction basis nor ``A^{-1}``
-    (``A`` may be singular for point masses).
-
-    Parameters
-    ----------
-    model : Model
-    data : Data
-        Kinematics of the state (:func:`planargeo.mechanics.kinematics.kinematics`).
-    tau : array_like (nq,)
-        Joint forces ``Q``.
-
-    Returns
-    -------
-    dict
-        Per-body lists ``A`` (3×3), ``d`` (3,), ``s`` (3×k), ``T`` (3×k),
-        ``P = R U^T`` (3×3), ``points`` (the body frame origins, used for
-        the reaction bases of :func:`quake_space`) and ``joint_points`` (N, 2) (the
-        joint frames' origins, where the singularity rule of
-        :data:`planargeo.mechanics.subspaces.COND_LIMIT` is measured), ``gram``: per body
-        ``(A s, sᵀAs)`` already checked by that rule (``None`` for a fixed joint).
-
-    Raises
-    ------
-    SingularConfigurationError
-        When some ``s^T A s`` is singular (``.cond``; message names the joint).
-
-    Examples
-    --------
-    Two unit slender links in line on pins: the first body feels twice the
-    mass along the chain (thesis 7.20, ``m_x = 2m``).
-
-    >>> from planargeo.mechanics.model import chain_model
-    >>> from planargeo.mechanics.kinematics import kinematics
-    >>> m = chain_model(2)
-    >>> art = articulated_quantities(m, kinematics(m, [0.0, 0.0]), np.zeros(2))
-    >>> float(art["A"][0][0, 0]), bool(np.allclose(art["P"][1] @ art["T"][1], 0))
-    (2.0, True)
-    """
-    N = model.N
-    I, p, kap = data.I, data.p, data.kappa
-    A = [I[i].copy() for i in range(N)]
-    d = [p[i].copy() for i in range(N)]
-    offs = model.q_offsets
-    S = data.S
-    s = [S[..., :, offs[i]:offs[i + 1]] for i in range(N)]          # data.s(i)
-    T, P, G = [None] * N, [None] * N, [None] * N
-    eye3 = np.eye(3)
-    jp = np.asarray(data.origin)                   # the joints' points: where the singularity rule is measured
-    for i in range(N - 1, -1, -1):
-        Ai = A[i] = 0.5 * (A[i] + A[i].T)          # symmetric by construction; remove round-off
-        if s[i].shape[-1]:   # (A s, sᵀAs) formed and checked once: for T here and the mobility in solve
-            G[i] = _checked_gram(Ai, s[i], f"sᵀAs of joint {i}", point=jp[i])
-        T[i] = _percussion_space(Ai, s[i], gram=G[i])                        # (9.19, 6.105)
-        P[i] = eye3 - T[i] @ s[i].T                                         # R U^T (7.8)
-        j = model.parents[i]
-        if j >= 0:
-            Qi = tau[offs[i]:offs[i + 1]]
-            A[j] = A[j] + P[i] @ Ai
-            d[j] = d[j] + T[i] @ Qi + P[i] @ (Ai @ kap[i] + d[i])
-    return {"A": A, "d": d, "s": s, "T": T, "P": P, "points": list(np.asarray(data.pose)[:, :2]),
-            "joint_points": jp, "gram": G}
-
-
 def joint_conditions(model: Model, q) -> np.ndarray:
     """Scale-free condition number of every joint's ``sᵀAs`` at ``q`` (thesis 7.7a, 6.105; the singular case of 3.6).
 
     ``cond_i = ‖A_i‖ ‖s_i‖² / σ_min(s_iᵀ A_i s_i)`` (Frobenius norms; ``A_i`` and
     ``s_i`` at the joint's point, :func:`planargeo.mechanics.subspaces.joint_scale`), the
-    package's singularity rule (:data:`planargeo.mechanics.subspaces.COND_LIMIT` ``= 1e12``;
+    package's singularity rule (:data:`planargeo.errors.COND_LIMIT` ``= 1e12``;
     invariant under moving the whole mechanism), with ``A_i`` the articulated inertias of the
-    tree (``A = I + C^T R U^T A C``).  Unlike the forward dynamics it never
+    tree (``A = I + C^T R U^T A C``, :func:`planargeo.algorithms.articulated_inertia.articulated_recursion`
+    with ``check=False``).  Unlike the forward dynamics it never
     raises: a singular joint gets ``inf`` (and is treated as locked for its
     parent).  ``A`` does not depend on ``q̇``.  Joints with no coordinates
     (``"fixed"``) get ``1.0``.  Used to watch a simulation for singular
@@ -278,52 +187,7 @@ def joint_conditions(model: Model, q) -> np.ndarray:
     >>> float(joint_conditions(m, [0.0, 0.0])[0])
     inf
     """
-    q = np.asarray(q, dtype=float)
-    data = _kinematics_scalar(model, q, np.zeros(model.nq), None)
-    N = model.N
-    A = [data.I[i].copy() for i in range(N)]
-    offs = model.q_offsets
-    out = np.ones(N)
-    eye3 = np.eye(3)
-    for i in range(N - 1, -1, -1):
-        Ai = A[i] = 0.5 * (A[i] + A[i].T)
-        si = data.S[:, offs[i]:offs[i + 1]]
-        P = eye3
-        if si.shape[1]:
-            M = si.T @ Ai @ si
-            M = 0.5 * (M + M.T)
-            smin = float(np.abs(np.linalg.eigvalsh(M)).min()) if M.shape[0] > 1 else abs(float(M[0, 0]))
-            scale = joint_scale(Ai, si, data.origin[i])              # ‖A_P‖ ‖s_P‖² at the joint's point
-            out[i] = scale / smin if smin > 0 else np.inf
-            if np.isfinite(out[i]):
-                P = eye3 - Ai @ si @ np.linalg.solve(M, si.T)        # R U^T = 1 - T s^T (7.8)
-        j = model.parents[i]
-        if j >= 0:
-            A[j] = A[j] + P @ Ai
-    return out
-
-
-def quake_space(s, T, R=None, point=(0.0, 0.0)):
-    """Reaction basis ``R`` and quake space ``U`` of one joint (thesis 9.20, 6.99; 6.33 corrected).
-
-    ``R`` is :func:`planargeo.mechanics.joints.reaction_space_of` (forces through the
-    joint, couples; ``point`` places the force of a prismatic joint) unless
-    given, and ``U = A^{-1} R (R^T A^{-1} R)^{-1}`` comes from
-    :func:`planargeo.mechanics.subspaces.reactive_acceleration_space` in its inverse-free
-    form ``(1 - s T^T) R (R^T R)^{-1}`` (6.75), so ``A`` is not needed.
-
-    Examples
-    --------
-    Thesis 7.40 (``m = L = 1``, ``ρ = 1/2``: ``T = [0, 1, 1]``), pin at the origin:
-
-    >>> R, U = quake_space(np.array([[0.0], [0.0], [1.0]]), np.array([[0.0], [1.0], [1.0]]))
-    >>> U + 0.0
-    array([[ 1.,  0.],
-           [ 0.,  1.],
-           [ 0., -1.]])
-    """
-    R = reaction_space_of(s, point) if R is None else np.asarray(R, dtype=float)
-    return R, reactive_acceleration_space(R, s=s, T=T)
+    return articulated_recursion(*_state_arrays(model, q, None, None, None)[1:], check=False).cond
 
 
 def _blockdiag(mats, rows, cols):
@@ -376,7 +240,7 @@ def articulation_matrix(C3, P) -> np.ndarray:
 class StackedSolution:
     """All stacked quantities of one state (thesis 9.17-9.43; attributes named after the symbols).
 
-    Reaction basis: ``R`` holds each joint's :func:`planargeo.mechanics.joints.reaction_space_of`
+    Reaction basis: ``R`` holds each joint's :func:`planargeo.mechanics.joints.R_of`
     (unit forces through the joint, couples; thesis 7.16, 5.63), the same as
     :mod:`planargeo.algorithms.projective`, so ``U^T f`` gives the same ``μ``.
 
@@ -389,6 +253,9 @@ class StackedSolution:
     I, A : (3N, 3N) block-diagonal inertias and articulated inertias
     L : (3N, 3N) articulation matrix (9.31)
     kappa, p, d : (3N,) bias accelerations, bias forces, articulated bias forces (9.32)
+    articulated : ArticulatedInertias, the per-body quantities
+        (:func:`planargeo.algorithms.articulated_inertia.articulated_recursion`, 7.7 = 9.27-9.28 corrected)
+    articulated_mobilities : ArticulatedMobilities, built on first access (7.38, 9.45; the input of 9.48)
     a : (3N,) body accelerations (9.39)
     f : (3N,) internal joint forces (9.41 with 9.17)
     qdd : (nq,) joint accelerations (9.43)
@@ -415,30 +282,36 @@ class StackedSolution:
         return f"StackedSolution(N={self.N}, nq={len(self.qdd)})"
 
     @property
+    def articulated_mobilities(self):
+        """The tree's articulated mobilities ``Λ_i⁻¹``, ``b_i`` (7.38 with the siblings loaded, 9.45 corrected).
+
+        :func:`planargeo.algorithms.articulated_mobility.mobility_recursion` of this state (an
+        ``ArticulatedMobilities``), built on first access; the input of :func:`direct_accelerations`.
+        """
+        if not hasattr(self, "_mobilities"):
+            self._mobilities = mobility_recursion(*self._args, articulated=self.articulated)
+        return self._mobilities
+
+    @property
     def L(self) -> np.ndarray:
         """Articulation matrix ``L = (1 - C^T R U^T)^{-1}`` (9.31; :func:`articulation_matrix`, built on first access)."""
         if not hasattr(self, "_L"):
             self._L = articulation_matrix(self.C, self.P)
         return self._L
 
-    def _RU(self):
-        if not hasattr(self, "_ru"):
-            art = self.articulated
-            pairs = [quake_space(si, Ti, point=pt) for si, Ti, pt in zip(art["s"], art["T"], art["points"])]
-            kr = [3 - si.shape[1] for si in art["s"]]
-            three = [3] * self.N
-            self._ru = (_blockdiag([p[0] for p in pairs], three, kr), _blockdiag([p[1] for p in pairs], three, kr))
-        return self._ru
+    def _stack(self, blocks) -> np.ndarray:
+        kr = [3 - si.shape[1] for si in self.articulated.S]
+        return _blockdiag(blocks, [3] * self.N, kr)
 
     @property
     def R(self) -> np.ndarray:
-        """Block-diagonal reaction spaces ``{{R_i}}`` (``S^T R = 0``; :func:`planargeo.mechanics.joints.reaction_space_of`: forces through the joints, couples)."""
-        return self._RU()[0]
+        """Block-diagonal reaction spaces ``{{R_i}}`` (``S^T R = 0``, thesis 9.20; :func:`planargeo.mechanics.joints.R_of`: forces through the joints, couples)."""
+        return self._stack(self.articulated.R)
 
     @property
     def U(self) -> np.ndarray:
-        """Block-diagonal quake spaces ``{{U_i}}`` (9.20), ``U R^T = 1 - S T^T``."""
-        return self._RU()[1]
+        """Block-diagonal quake spaces ``{{U_i}}`` (9.20, 6.99), ``U R^T = 1 - S T^T``."""
+        return self._stack(self.articulated.U)
 
     @property
     def mobility(self) -> np.ndarray:
@@ -466,7 +339,7 @@ class StackedSolution:
 
         Examples
         --------
-        The unit link of :func:`stacked_mobility`: a unit couple turns it at 3 rad/s².
+        A unit link on a pin at the origin (``ρ² = 1/12``): a unit couple turns it at ``1/(m(ρ² + L²/4)) = 3`` rad/s² (7.42).
 
         >>> from planargeo.mechanics.model import chain_model
         >>> sol = stacked_solve(chain_model(1), [0.0], [0.0], [0.0])
@@ -474,7 +347,7 @@ class StackedSolution:
         array([0., 0., 3.])
         """
         X = np.asarray(X, dtype=float)
-        N, P, par = self.N, self.articulated["P"], self.parents
+        N, P, par = self.N, self.articulated.P, self.parents
         Y = X.reshape(N, 3, -1).copy()
         for i in range(N - 1, 0, -1):                  # Y = L X: children before parents
             j = par[i]
@@ -521,38 +394,37 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     N, nq = model.N, model.nq
     if data is None:
         data = _kinematics_scalar(model, q, np.zeros(nq) if qd is None else qd, f_ext)   # kinematics(), checked
-    art = articulated_quantities(model, data, tau)
-    ks = [si.shape[1] for si in art["s"]]
+    args = _data_arrays(model, data, tau)
+    art = articulated_recursion(*args[1:])          # 7.7a/7.7b = 9.27/9.28 corrected, 7.8
+    ks = [si.shape[1] for si in art.S]
     three = [3] * N
     sol = StackedSolution()
     sol.N = N
     sol.C, sol.Dinv = _topology(tuple(model.parents))
-    sol.S = _blockdiag(art["s"], three, ks)
-    sol.T = _blockdiag(art["T"], three, ks)
-    sol.P = _blockdiag(art["P"], three, three)
+    sol.S = _blockdiag(art.S, three, ks)
+    sol.T = _blockdiag(art.T, three, ks)
+    sol.P = _blockdiag(art.P, three, three)
     sol.I = _blockdiag(list(data.I), three, three)
-    sol.A = _blockdiag(art["A"], three, three)
+    sol.A = _blockdiag(art.A, three, three)
     sol.kappa = data.kappa.reshape(-1)
     sol.p = data.p.reshape(-1)
-    Q = np.asarray(tau, dtype=float)
+    Q = np.concatenate(args[5]) if N else np.zeros(0)
     C, T, P, A = sol.C, sol.T, sol.P, sol.A
     # L = (1 - C^T R U^T)^-1 (9.31) is applied by solves with the unit upper triangular
     # 1 - C^T P (parents before children); sol.L itself is built on first access.
     Linv = np.eye(3 * N)                           # 1 - C^T P: block (λ(i), i) is -P_i
     for i, j in enumerate(model.parents):
         if j >= 0:
-            Linv[3 * j:3 * j + 3, 3 * i:3 * i + 3] = -art["P"][i]
+            Linv[3 * j:3 * j + 3, 3 * i:3 * i + 3] = -art.P[i]
     # (9.32) corrected: d = L (p + C^T T Q + C^T R U^T A κ)
     sol.d = _unit_upper_solve(Linv, sol.p + C.T @ (T @ Q) + C.T @ (P @ (A @ sol.kappa)))
     # (9.39): a = L^T [S T^T A^-1 (T Q - d) + U R^T κ]
     # S T^T A^-1 = S (S^T A S)^-1 S^T: no inverse of A needed
     if N and all(k == 1 for k in ks):              # one-dof joints: all bodies in one call (sᵀAs checked above)
-        G = art["gram"]
-        mobs = _effective_mobility(np.stack(art["A"]), np.stack(art["s"]),
-                                   gram=(np.stack([g[0] for g in G]), np.stack([g[1] for g in G])))
+        mobs = _effective_mobility(art.A, np.stack(art.S),
+                                   gram=(np.stack([g[0] for g in art.gram]), np.stack([g[1] for g in art.gram])))
     else:
-        mobs = [_effective_mobility(Ai, si, gram=g)
-                for si, Ai, g in zip(art["s"], art["A"], art["gram"])]
+        mobs = [_effective_mobility(Ai, si, gram=g) for si, Ai, g in zip(art.S, art.A, art.gram)]
     sol.StTAinv = _blockdiag(mobs, three, three)
     sol.mobs = np.reshape(mobs, (N, 3, 3))         # its 3×3 blocks (mobility_times)
     sol.parents = tuple(model.parents)
@@ -563,119 +435,13 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     sol.qdd = T.T @ (sol.a - C @ sol.a - sol.kappa)
     sol.articulated = art
     sol.data = data
+    sol._args = args[1:]
     return sol
-
-
-def stacked_mobility(sol: StackedSolution) -> np.ndarray:
-    """Full stacked mobility ``Φ = L^T S T^T A^{-1} L`` of the tree (thesis 9.39, 9.65-9.73 corrected).
-
-    ``a = u - Φ w`` when wrenches ``-w`` are applied to the bodies (see
-    :attr:`StackedSolution.mobility` and ``docs/errata.md``).
-
-    Examples
-    --------
-    A single unit link on a pin at the origin (``ρ² = 1/12``): a unit couple
-    turns it at ``1/(m(ρ² + L²/4)) = 3`` rad/s² (thesis 7.42).
-
-    >>> from planargeo.mechanics.model import chain_model
-    >>> Phi = stacked_mobility(stacked_solve(chain_model(1), [0.0], [0.0], [0.0]))
-    >>> Phi.round(12) + 0.0
-    array([[0., 0., 0.],
-           [0., 0., 0.],
-           [0., 0., 3.]])
-    """
-    return sol.mobility
 
 
 # ---------------------------------------------------------------------------
 # direct solution (9.2)
 # ---------------------------------------------------------------------------
-def tree_mobilities(model: Model, data, tau, art=None, *, siblings: bool = True):
-    """Articulated mobilities ``Λ_i^{-1}`` and bias accelerations ``b_i`` of a tree (thesis 7.37-7.38, corrected).
-
-    ``a_i = b_i - Λ_i^{-1} Σ_{c child of i} f_c`` (7.37) where ``Λ_i^{-1}``
-    and ``b_i`` describe body ``i`` in the tree with ``i``'s descendants cut
-    off.  Root to tips: the parent ``j``'s mobility is first loaded with the
-    articulated inertias of ``i``'s siblings ``k``
-    (``E = Σ R_k U_k^T A_k``, ``e = Σ T_k Q_k + R_k U_k^T (A_k κ_k + d_k)``):
-    ``M = (1 + Λ_j^{-1} E)^{-1} Λ_j^{-1}``, ``β = (1 + Λ_j^{-1} E)^{-1} (b_j - Λ_j^{-1} e)``;
-    then (7.38 with the sign of the ``Λ`` term corrected)
-    ``Λ_i^{-1} = X^{-1} (s_i T_i^T I_i^{-1} + U_i R_i^T M)``,
-    ``b_i = X^{-1} (η_i - U_i R_i^T (M p_i - β - κ_i))``,
-    ``X = 1 + U_i R_i^T M I_i``, with ``T_i``, ``U_i`` from the body inertia ``I_i``.
-    For a chain ``E = e = 0`` and this is 7.4.1.  ``siblings=False`` drops
-    ``E``, ``e`` (the chain recursion applied along each root path, as 7.4.1
-    would be read for a tree): wrong for trees, kept to pin the erratum.
-
-    Parameters
-    ----------
-    model : Model
-    data : Data
-        Kinematics of the state.
-    tau : array_like (nq,)
-    art : dict, optional
-        :func:`articulated_quantities` of the state (computed if omitted).
-    siblings : bool
-        Load the parent with the siblings' articulated inertias (default; right for trees).
-
-    Returns
-    -------
-    (Lambda_inv, b) : lists of (3, 3) and (3,) arrays
-
-    Examples
-    --------
-    Thesis 7.42 (``m = L = 1``, ``ρ² = 1/12``, pin at the origin): the single
-    link's mobility about its pivot is ``1/(m(ρ² + L²/4)) = 3``.
-
-    >>> from planargeo.mechanics.model import chain_model
-    >>> from planargeo.mechanics.kinematics import kinematics
-    >>> m = chain_model(1, gravity=(0.0, 0.0))
-    >>> Lam, b = tree_mobilities(m, kinematics(m, [0.0]), np.zeros(1))
-    >>> Lam[0].round(12) + 0.0, b[0] + 0.0
-    (array([[0., 0., 0.],
-           [0., 0., 0.],
-           [0., 0., 3.]]), array([0., 0., 0.]))
-    """
-    N = model.N
-    if art is None:
-        art = articulated_quantities(model, data, tau)
-    I, p, kap = data.I, data.p, data.kappa
-    Lam = [None] * N
-    b = [None] * N
-    one = np.eye(3)
-    for i in range(N):
-        j = model.parents[i]
-        if j < 0:
-            M = np.zeros((3, 3))
-            beta = np.zeros(3)
-        else:
-            E = np.zeros((3, 3))
-            e = np.zeros(3)
-            for k in model.children(j):
-                if k == i or not siblings:
-                    continue
-                E += art["P"][k] @ art["A"][k]
-                e += art["T"][k] @ tau[model.q_slice(k)] + art["P"][k] @ (art["A"][k] @ kap[k] + art["d"][k])
-            Y = np.linalg.inv(one + Lam[j] @ E)
-            M = Y @ Lam[j]
-            beta = Y @ (b[j] - Lam[j] @ e)
-        si = art["s"][i]
-        Ii = I[i]
-        Qi = tau[model.q_slice(i)]
-        # s T^T I^-1 = s (s^T I s)^-1 s^T and U R^T = 1 - s T^T: no inverse of I
-        # (point masses have a singular I); η = s T^T I^-1 (T Q - p)   (7.35)
-        Pi = data.origin[i]                                             # the joint's point (the rule)
-        g = _checked_gram(Ii, si, f"sᵀIs of joint {i}", point=Pi) if si.shape[-1] else None   # formed once
-        Ti = _percussion_space(Ii, si, gram=g)                                  # (6.36)
-        mob_i = _effective_mobility(Ii, si, gram=g)                             # (6.93)
-        eta = mob_i @ (Ti @ Qi - p[i])
-        URt = one - si @ Ti.T
-        X = one + URt @ M @ Ii
-        Lam[i] = np.linalg.solve(X, mob_i + URt @ M)
-        b[i] = np.linalg.solve(X, eta - URt @ (M @ p[i] - beta - kap[i]))
-    return Lam, b
-
-
 def direct_accelerations(sol: StackedSolution, Lambda_inv, b) -> np.ndarray:
     """Direct solution of the body accelerations (thesis 9.48, corrected).
 
@@ -684,14 +450,16 @@ def direct_accelerations(sol: StackedSolution, Lambda_inv, b) -> np.ndarray:
 
         a = (1 + Λ^{-1} C^T Δ^{-T} I)^{-1} (b - Λ^{-1} C^T Δ^{-T} p)
 
-    ``Λ^{-1} = {{Λ_i^{-1}}}`` block diagonal and ``b = {b_i}`` from :func:`tree_mobilities`.
+    ``Λ^{-1} = {{Λ_i^{-1}}}`` block diagonal and ``b = {b_i}`` the articulated mobilities of
+    the tree (:attr:`StackedSolution.articulated_mobilities`, 7.38 with the siblings loaded:
+    ``docs/errata.md``, chapter 9, item 5).
 
     Parameters
     ----------
     sol : StackedSolution
         The state (:func:`stacked_solve`), for ``C``, ``Δ^{-1}``, ``I``, ``p``.
-    Lambda_inv, b : lists of (3, 3) and (3,)
-        From :func:`tree_mobilities`.
+    Lambda_inv, b : (N, 3, 3) and (N, 3)
+        E.g. ``sol.articulated_mobilities.Lambda_inv`` and ``.b``.
 
     Returns
     -------
@@ -702,7 +470,8 @@ def direct_accelerations(sol: StackedSolution, Lambda_inv, b) -> np.ndarray:
     >>> from planargeo.mechanics.model import chain_model
     >>> m = chain_model(2, gravity=(0.0, 0.0))
     >>> sol = stacked_solve(m, [0.0, 0.0], [0.0, 0.0], [1.0, 0.0])
-    >>> a = direct_accelerations(sol, *tree_mobilities(m, sol.data, np.array([1.0, 0.0])))
+    >>> mob = sol.articulated_mobilities
+    >>> a = direct_accelerations(sol, mob.Lambda_inv, mob.b)
     >>> bool(np.allclose(a, sol.a))
     True
     """
@@ -739,23 +508,15 @@ def forward_dynamics_stacked(model: Model, q, qd, tau, f_ext=None, *, method: st
     >>> forward_dynamics_stacked(m, [0.0, 0.0], [0.0, 0.0], [1.0, 0.0], method="direct").round(6)
     array([ 1.714286, -4.285714])
     """
-    from planargeo.errors import InputError
-
     if method not in ("articulation", "direct"):
         raise InputError(f"method must be 'articulation' or 'direct', got {method!r}")
-    q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
-    nq = model.nq
-    qd = np.zeros(shape + (nq,)) if qd is None else np.broadcast_to(qd, shape + (nq,))
-    tau = np.zeros(shape + (nq,)) if tau is None else np.broadcast_to(tau, shape + (nq,))
-    q = np.broadcast_to(q, shape + (nq,))
-    fe = None if f_ext is None else np.broadcast_to(f_ext, shape + (model.N, 3))
-    out = np.empty(shape + (nq,))
-    for idx in np.ndindex(*shape):
-        sol = stacked_solve(model, q[idx], qd[idx], tau[idx], None if fe is None else fe[idx])
-        if method == "articulation":
-            out[idx] = sol.qdd
-        else:
-            Lam, b = tree_mobilities(model, sol.data, tau[idx], sol.articulated)
-            a = direct_accelerations(sol, Lam, b)
-            out[idx] = sol.T.T @ (a - sol.C @ a - sol.kappa)
-    return out
+    return _per_state(functools.partial(_stacked_qdd, direct=method == "direct"), model, q, qd, tau, f_ext)
+
+
+def _stacked_qdd(model, q, qd, tau, f_ext, *, direct):
+    sol = stacked_solve(model, q, qd, tau, f_ext)
+    if not direct:
+        return sol.qdd
+    mob = sol.articulated_mobilities
+    a = direct_accelerations(sol, mob.Lambda_inv, mob.b)
+    return sol.T.T @ (a - sol.C @ a - sol.kappa)                   # (9.43)

@@ -428,7 +428,7 @@ def _decomposition(s, R, A):
     """``(s, R, A, T, U)`` of a joint completed by an inertia (thesis 6.36–6.37, 6.45)."""
     from planargeo.mechanics.subspaces import Decomposition
 
-    dec = Decomposition(s, R, A)
+    dec = Decomposition(A, s, R)
     return dec.s, dec.R, dec.A, dec.T, dec.U
 
 
@@ -620,7 +620,7 @@ def draw_twist_split(s, R, A, a, ax=None, *, parts=(1, 2),
     ax = _ax(ax)
     from planargeo.mechanics.subspaces import Decomposition
 
-    dec = Decomposition(s, R, A)
+    dec = Decomposition(A, s, R)
     T, U, A = dec.T, dec.U, dec.A
     psi, gamma = dec.split_twist(_vec(a, "a"))          # (Tᵀa, Rᵀa), 6.44
     a1, a2 = dec.s @ psi, U @ gamma
@@ -664,7 +664,7 @@ def draw_wrench_split(s, R, A, f, ax=None, *, parts=(1, 2),
     ax = _ax(ax)
     from planargeo.mechanics.subspaces import Decomposition
 
-    dec = Decomposition(s, R, A)
+    dec = Decomposition(A, s, R)
     T, U, A = dec.T, dec.U, dec.A
     Q, mu = dec.split_wrench(_vec(f, "f"))              # (sᵀf, Uᵀf), 6.38
     f1, f2 = T @ Q, dec.R @ mu

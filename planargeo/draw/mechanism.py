@@ -204,7 +204,7 @@ def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None, ga
     from planargeo.mechanics.subspaces import Decomposition
 
     ax = get_ax(ax)
-    dec = Decomposition(s, R, A)
+    dec = Decomposition(A, s, R)
     Q, mu = dec.split_wrench(f)
     active = dec.T @ Q
     react = dec.R @ mu
@@ -279,11 +279,11 @@ def slider_guide(contact, pose, body_shape=None, *, clearance=0.04, margin=None)
     >>> e.round(12), n.round(12), round(hw, 6), (round(s0, 6), round(s1, 6))
     (array([0., 1.]), array([-1.,  0.]), 0.19, (1.55, 3.45))
     """
-    from planargeo.mechanics.contacts import motion_space, world_point
+    from planargeo.mechanics.contacts import world_point, z_of
     from planargeo.draw.layout import shape_points
 
     pose = np.asarray(pose, float)
-    e = np.asarray(motion_space(contact, pose)[:2, 0], float)    # the world sliding direction (9.83)
+    e = np.asarray(z_of(contact, pose)[:2, 0], float)    # the world sliding direction (9.83)
     n = np.array([-e[1], e[0]])
     p0 = np.asarray(world_point(pose, contact.b, contact.point_b), float)
     pa = np.asarray(world_point(pose, contact.a, contact.point_a), float)

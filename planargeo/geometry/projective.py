@@ -21,10 +21,9 @@ finite point, which is the honest answer for the numbers given.
 :func:`join` and :func:`meet` refuse near-coincident inputs: their condition
 number ``κ = |a| |b| / |a × b|`` (one over the sine of the angle between the
 two 3-vectors) bounds the relative error of the result by about ``ε κ``, and
-past :data:`COND_LIMIT` (``1e13``, the same limit as
-:func:`planargeo.geometry.conics.pole`) they raise :class:`DegenerateGeometryError`
-carrying ``.cond`` instead of returning a line or point with fewer than about
-three correct digits.  Parallel lines and distinct ideal points are well
+past the package's one condition limit :data:`planargeo.errors.COND_LIMIT` (``1e12``)
+they raise :class:`DegenerateGeometryError` carrying ``.cond`` instead of returning a
+line or point with fewer than about four correct digits.  Parallel lines and distinct ideal points are well
 conditioned: their meet (an ideal point) and join (the line at infinity) are
 ordinary results.
 
@@ -38,10 +37,10 @@ import math
 import numpy as np
 
 from planargeo._validate import as_array, as_vec3, as_xy
-from planargeo.errors import DegenerateGeometryError, InputError
+from planargeo.errors import COND_LIMIT, DegenerateGeometryError, InputError
 
 __all__ = [
-    "T_STD", "LINE_AT_INFINITY", "COND_LIMIT",
+    "T_STD", "LINE_AT_INFINITY",
     "normalize", "normalize_point", "normalize_line",
     "is_ideal", "is_at_infinity",
     "from_xy", "from_direction", "to_xy", "direction", "line_direction",
@@ -59,15 +58,6 @@ T_STD.setflags(write=False)
 #: The line at infinity ``[0, 0, 1]`` (a pure couple).
 LINE_AT_INFINITY = np.array([0.0, 0.0, 1.0])
 LINE_AT_INFINITY.setflags(write=False)
-
-#: Largest condition number ``κ = |a| |b| / |a × b|`` that :func:`join` and
-#: :func:`meet` accept.  Their relative error is at most about ``ε κ``
-#: (measured in ``benchmarks/results/breakdown.md`` §(f): the error follows
-#: ``ε κ`` up to κ ≈ 1e16), so at the limit ``ε κ ≈ 2e-3``: past it fewer than
-#: about three digits would be right, and the answer is refused.  The same
-#: limit as ``rtol = 1e-13`` of :func:`planargeo.geometry.conics.pole`.
-COND_LIMIT = 1e13
-
 
 def _first_index(mask: np.ndarray) -> str:
     """Human-readable position of the first True in ``mask`` ('' for a scalar)."""
@@ -458,7 +448,7 @@ def join(p, q, cond_limit: float = COND_LIMIT) -> np.ndarray:
     p, q : array_like, shape (..., 3)
     cond_limit : float, optional
         Largest accepted condition number ``κ = |p| |q| / |p × q|``
-        (:func:`cross_cond`), :data:`COND_LIMIT` = ``1e13`` by default.  The
+        (:func:`cross_cond`), :data:`planargeo.errors.COND_LIMIT` = ``1e12`` by default.  The
         returned line's relative error is at most about ``ε κ``; for finite
         points ``δ`` apart at distance ``R ≳ 1`` from the origin ``κ ≈ R / δ``
         and the line misses them by about ``ε R² / δ``.
@@ -485,7 +475,7 @@ def join(p, q, cond_limit: float = COND_LIMIT) -> np.ndarray:
     >>> join(from_xy([0.0, 0.0]), from_xy([0.0, 1e-14]))     # 1e-14 apart: κ = 1e14
     Traceback (most recent call last):
     ...
-    planargeo.errors.DegenerateGeometryError: join(p, q): p and q are nearly the same point: condition number 1e+14 exceeds cond_limit = 1e+13 (relative error up to about ε κ = 0.02)
+    planargeo.errors.DegenerateGeometryError: join(p, q): p and q are nearly the same point: condition number 1e+14 exceeds cond_limit = 1e+12 (relative error up to about ε κ = 0.02)
     >>> join(from_xy([0.0, 0.0]), from_xy([0.0, 1e-14]), cond_limit=np.inf)   # accepted: the y axis
     array([0.e+00, 1.e-14, 0.e+00])
     """
@@ -508,7 +498,7 @@ def meet(l, m, cond_limit: float = COND_LIMIT) -> np.ndarray:
     l, m : array_like, shape (..., 3)
     cond_limit : float, optional
         Largest accepted condition number ``κ = |l| |m| / |l × m|``
-        (:func:`cross_cond`), :data:`COND_LIMIT` = ``1e13`` by default.  The
+        (:func:`cross_cond`), :data:`planargeo.errors.COND_LIMIT` = ``1e12`` by default.  The
         returned point's relative error is at most about ``ε κ``; for two
         lines through a point near the origin at an angle ``θ``, ``κ ≈ 1/θ``.
 
@@ -532,7 +522,7 @@ def meet(l, m, cond_limit: float = COND_LIMIT) -> np.ndarray:
     >>> meet([0.3, -1.7, 0.9], [0.9, -5.1, 2.7])  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    planargeo.errors.DegenerateGeometryError: meet(l, m): l and m are nearly the same line: condition number ... exceeds cond_limit = 1e+13 ...
+    planargeo.errors.DegenerateGeometryError: meet(l, m): l and m are nearly the same line: condition number ... exceeds cond_limit = 1e+12 ...
 
     (``[0.9, -5.1, 2.7]`` is ``3 l`` rounded: the same line to the eye, a
     different float line, whose "meet" with ``l`` would be an arbitrary point.)

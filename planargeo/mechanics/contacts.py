@@ -37,9 +37,9 @@ Examples
 --------
 >>> c = Contact("pin", 1, -1, point_a=(1.0, 0.0), point_b=(2.0, 0.0))
 >>> pose = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]])     # body 1 at (1, 0)
->>> motion_space(c, pose)[:, 0]        # rotation about (2, 0): the point [0, -2, 1]
+>>> z_of(c, pose)[:, 0]        # rotation about (2, 0): the point [0, -2, 1]
 array([ 0., -2.,  1.])
->>> motion_space(c, pose).T @ reaction_space(c, pose)
+>>> z_of(c, pose).T @ B_of(c, pose)
 array([[0., 0.]])
 >>> residual(c, pose)
 array([0., 0.])
@@ -54,7 +54,7 @@ from planargeo._validate import as_array, as_scalar, as_xy
 from planargeo.errors import DegenerateGeometryError, InputError, ShapeError
 
 __all__ = ["Contact", "CONTACT_DOFS", "contact_matrix", "validate_contacts", "world_point",
-           "motion_space", "reaction_space", "residual", "contact_bias", "stacked_contact_spaces"]
+           "z_of", "B_of", "residual", "contact_bias", "stacked_contact_spaces"]
 
 #: Number of relative degrees of freedom ``k`` each contact kind allows (columns of ``z``).
 CONTACT_DOFS = {"pin": 1, "slider": 1, "weld": 0}
@@ -230,7 +230,7 @@ def _slider_dir(contact, pose):
     return c * dx - s * dy, s * dx + c * dy
 
 
-def motion_space(contact: Contact, pose) -> np.ndarray:
+def z_of(contact: Contact, pose) -> np.ndarray:
     """Contact motion space ``z`` (3×k unit twists at the origin; thesis 9.54, 9.83).
 
     Pin: the rotation ``[y, -x, 1]`` about the world contact point (taken on
@@ -240,7 +240,7 @@ def motion_space(contact: Contact, pose) -> np.ndarray:
     Examples
     --------
     >>> c = Contact("slider", 0, -1, direction=(0.0, 1.0), angle=np.pi / 2)
-    >>> motion_space(c, np.array([[0.0, 5.925, np.pi / 2]]))     # thesis 9.83
+    >>> z_of(c, np.array([[0.0, 5.925, np.pi / 2]]))     # thesis 9.83
     array([[0.],
            [1.],
            [0.]])
@@ -259,7 +259,7 @@ def motion_space(contact: Contact, pose) -> np.ndarray:
     return z
 
 
-def reaction_space(contact: Contact, pose) -> np.ndarray:
+def B_of(contact: Contact, pose) -> np.ndarray:
     """Contact reaction space ``B`` (3×(3-k) wrenches at the origin, ``z^T B = 0``; 9.59-9.60, 9.87).
 
     Pin: the unit forces along x and y through the contact point; slider: the
@@ -277,7 +277,7 @@ def reaction_space(contact: Contact, pose) -> np.ndarray:
     Examples
     --------
     >>> c = Contact("slider", 0, -1, point_a=(0.5, 0.0), direction=(0.0, 1.0), angle=np.pi / 2)
-    >>> reaction_space(c, np.array([[0.0, 5.425, np.pi / 2]])).round(12)   # thesis 9.87
+    >>> B_of(c, np.array([[0.0, 5.425, np.pi / 2]])).round(12)   # thesis 9.87
     array([[ 1.   ,  0.   ],
            [ 0.   ,  0.   ],
            [-5.925,  1.   ]])
@@ -368,26 +368,8 @@ def stacked_contact_spaces(contacts, pose):
     B = np.zeros((3 * m, kb))
     iz = ib = 0
     for k, c in enumerate(cs):
-        # same formulas as motion_space / reaction_space, without re-validation
-        xa, ya, tha = pose[c.a]
-        ca, sa = np.cos(tha), np.sin(tha)
-        px = xa + ca * c.point_a[0] - sa * c.point_a[1]
-        py = ya + sa * c.point_a[0] + ca * c.point_a[1]
-        r = 3 * k
-        if c.kind == "pin":
-            z[r:r + 3, iz] = (py, -px, 1.0)
-            B[r:r + 3, ib] = (1.0, 0.0, -py)
-            B[r:r + 3, ib + 1] = (0.0, 1.0, px)
-        elif c.kind == "slider":
-            thb = pose[c.b, 2] if c.b >= 0 else 0.0
-            cb, sb = np.cos(thb), np.sin(thb)
-            dx = cb * c.direction[0] - sb * c.direction[1]
-            dy = sb * c.direction[0] + cb * c.direction[1]
-            z[r:r + 3, iz] = (dx, dy, 0.0)
-            B[r:r + 3, ib] = (dy, -dx, px * (-dx) - py * dy)
-            B[r:r + 3, ib + 1] = (0.0, 0.0, 1.0)
-        else:
-            B[r:r + 3, ib:ib + 3] = np.eye(3)
+        z[3 * k:3 * k + 3, iz:iz + c.dofs] = z_of(c, pose)
+        B[3 * k:3 * k + 3, ib:ib + c.nc] = B_of(c, pose)
         iz += c.dofs
         ib += c.nc
     return z, B

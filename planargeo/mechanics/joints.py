@@ -36,7 +36,9 @@ The ``revolute_prismatic`` columns follow the thesis's order (4.74):
 translation first, then rotation.
 
 :class:`JointSpace` is a small frozen object for one joint; :func:`motion_space`
-and :func:`reaction_space` are the vectorised array functions behind it.
+and :func:`reaction_space` are the vectorised array functions behind it, and
+:func:`R_of` gives ``R`` of a joint known only by its motion space ``s`` (as the
+algorithms know it).
 
 Note: thesis 4.8.4 calls its 2-dof "twin prismatic" joint (translations x
 and y, 4.79) a *plane joint*; here that joint is ``twin_prismatic``
@@ -56,7 +58,7 @@ from planargeo._validate import as_xy
 from planargeo.errors import InputError, ShapeError
 from planargeo.screws.twists import unit_rotation, unit_translation
 
-__all__ = ["KINDS", "DOF", "motion_space", "reaction_space", "reaction_space_of", "JointSpace",
+__all__ = ["KINDS", "DOF", "motion_space", "reaction_space", "R_of", "JointSpace",
            "revolute", "prismatic", "revolute_prismatic", "twin_prismatic", "plane", "fixed"]
 
 #: Joint kinds understood by :func:`motion_space` / :func:`reaction_space`.
@@ -201,13 +203,13 @@ def reaction_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
     return np.stack([_force_through(p, ex), _force_through(p, ey), couple], axis=-1)
 
 
-def reaction_space_of(s, point=(0.0, 0.0)) -> np.ndarray:
-    """The reaction space :func:`reaction_space` of the joint whose motion space is ``s`` (thesis 4.8, 5.63, 7.16).
+def R_of(s, point=(0.0, 0.0)) -> np.ndarray:
+    """Reaction space ``R`` (``sᵀR = 0``) of the joint whose motion space is ``s`` (thesis 6.1, 5.63, 7.16).
 
     The algorithms (:mod:`planargeo.algorithms.projective`, ``stacked``,
     ``articulated_*``) know a joint only by its motion space ``s`` at the
     current state; this reads the kind, pivot and slide direction off ``s``
-    and returns ``reaction_space(kind, point, direction)``, so that every
+    and returns :func:`reaction_space` ``(kind, point, direction)``, so that every
     reaction component ``μ = Uᵀ f`` in the package is measured in the same,
     thesis-meaningful basis (module table):
 
@@ -237,13 +239,18 @@ def reaction_space_of(s, point=(0.0, 0.0)) -> np.ndarray:
     -------
     ndarray, shape (3, 3 - k)
 
+    Raises
+    ------
+    ShapeError
+        ``s`` is not ``(3, k)`` with ``k <= 3``.
+
     Examples
     --------
-    >>> reaction_space_of([[3.0], [-2.0], [1.0]])             # revolute at (2, 3): thesis 7.16
+    >>> R_of([[3.0], [-2.0], [1.0]])             # revolute at (2, 3): thesis 7.16
     array([[ 1.,  0.],
            [ 0.,  1.],
            [-3.,  2.]])
-    >>> reaction_space_of([[1.0], [0.0], [0.0]], (2.0, 3.0))  # prismatic along x at (2, 3): 5.63
+    >>> R_of([[1.0], [0.0], [0.0]], (2.0, 3.0))  # prismatic along x at (2, 3): 5.63
     array([[0., 0.],
            [1., 0.],
            [2., 1.]])

@@ -4,14 +4,21 @@ A joint's motion space ``s`` (3×k) and reaction space ``R`` (3×(3-k)),
 ``sᵀR = 0``, are completed with the help of an inertia ``A`` (a rigid body
 inertia ``I`` or an articulated inertia) into
 
-* the *percussion space*            ``T = A s (sᵀ A s)⁻¹``          (6.30, 6.36, 6.39)
-* the *reactive-acceleration space* ``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹``      (6.37, 6.45; 6.33 misprinted)
+* the *percussion space*            ``T = A s (sᵀ A s)⁻¹``  :func:`T_of`   (6.30, 6.36, 6.39, 6.105)
+* the *reactive-acceleration space* ``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹``  :func:`U_of`   (6.37, 6.45, 6.99; 6.33 misprinted)
 
 with ``sᵀT = 1``, ``RᵀU = 1`` and ``TᵀU = 0`` (6.22, 6.23, 6.46).  Any wrench
 splits as ``f = T Q + R μ`` (6.38) and any acceleration as ``a = s ψ + U γ``
 (6.44), the components being read off by the projections (6.61–6.62)::
 
     Q = sᵀ f      μ = Uᵀ f      ψ = Tᵀ a      γ = Rᵀ a
+
+``R`` itself is :func:`planargeo.mechanics.joints.R_of` (from a joint's ``s``) or
+:func:`planargeo.mechanics.joints.reaction_space` (from its kind).
+
+**Argument order** (one for the whole package): the inertia first, then the
+spaces (``s`` before ``R``), then the wrench or twist: ``T_of(A, s)``,
+``U_of(A, R)``, ``Decomposition(A, s, R)``, ``effective_mobility(I, s)``.
 
 All functions broadcast over leading dimensions: spaces are ``(..., 3, k)``,
 inertias ``(..., 3, 3)``, wrenches / twists ``(..., 3)``.  A space may also be
@@ -20,11 +27,17 @@ everything goes through :func:`numpy.linalg.solve` on the small ``k×k``
 matrices ``sᵀAs`` / ``RᵀA⁻¹R`` (and on ``A`` itself for ``A⁻¹R``); a single
 1×1 ``sᵀAs`` is applied as the LU solve does it, by its reciprocal.
 
-The public functions validate their arguments and call private, unchecked
-kernels (``_percussion_space(A, s)``, ``_effective_mobility(A, s)``,
-``_reactive_from_T(R, s, T)``) that the chain algorithms call per body; the
-singularity rule (:func:`_gram`: ``‖A‖ ‖s‖² / |λ|_min(sᵀAs)`` with Frobenius
-norms, no eigen-solve of ``A``) lives in the kernels, so it is the same everywhere.
+The public functions validate their arguments and call one unchecked kernel
+per quantity (``_T(A, s)``, ``_U(A, R)``, ``_effective_mobility(A, s)``), which the
+chain algorithms call per body on inertias built from checked bodies.  The
+singularity rule (:func:`_gram`, :func:`joint_cond`) lives in the kernels, so it is
+the same everywhere: a joint's ``sᵀAs`` is singular when its condition number
+``‖A‖_F ‖s‖_F² / σ_min(sᵀAs)`` exceeds the package's one limit,
+:data:`planargeo.errors.COND_LIMIT` (``1e12``).  The chain algorithms measure it with
+``A`` and ``s`` at the joint's own point ``P`` (:func:`joint_scale`; invariant under
+moving the whole mechanism: a pendulum pinned 1 km from the origin is as regular as
+one pinned at it); the public functions of this module, which know no joint point,
+at the origin of the coordinates they are given.
 
 Inertia arguments of the public functions must be symmetric
 (:class:`~planargeo.errors.InputError`) and positive semi-definite: an
@@ -32,13 +45,11 @@ eigenvalue below ``-1e-10 max|eigenvalue|`` raises
 :class:`~planargeo.errors.SingularInertiaError` naming the argument.  Singular
 (semi-definite) inertias — point masses, articulated inertias projected across
 a joint — are legitimate wherever only ``sᵀAs`` is inverted
-(:func:`percussion_space`, :func:`joint_space_inertia`,
-:func:`effective_mobility`, :func:`reactive_acceleration_space` with ``s``);
-the functions that need ``A⁻¹`` (:func:`reactive_acceleration_space` without
+(:func:`T_of`, :func:`joint_space_inertia`, :func:`effective_mobility`,
+:func:`U_of` with ``s``); the functions that need ``A⁻¹`` (:func:`U_of` without
 ``s``, :func:`reaction_space_inverse_inertia`, :func:`effective_base_inertia`,
 :func:`inertia_decomposition`, :func:`inverse_inertia_decomposition`,
-:class:`Decomposition` with ``k < 3``) need it positive definite.  The private
-kernels do not check (their callers build ``A`` from checked bodies).
+:class:`Decomposition` with ``k < 3``) need it positive definite.
 
 Errors: a singular ``sᵀAs`` or ``RᵀA⁻¹R`` raises
 :class:`~planargeo.errors.SingularConfigurationError`; a singular ``A`` where
@@ -52,47 +63,32 @@ import math
 import numpy as np
 
 from planargeo._validate import as_array, check_positive_semidefinite
-from planargeo.errors import InputError, ShapeError, SingularConfigurationError, SingularInertiaError
+from planargeo.errors import COND_LIMIT, InputError, ShapeError, SingularConfigurationError, SingularInertiaError
 
 __all__ = [
-    "percussion_space", "reactive_acceleration_space",
+    "T_of", "U_of",
     "active_force", "reaction_force", "active_acceleration", "reactive_acceleration",
     "wrench_projectors", "twist_projectors",
     "joint_space_inertia", "reaction_space_inverse_inertia",
     "inertia_decomposition", "inverse_inertia_decomposition",
     "effective_mobility", "effective_base_inertia",
-    "Decomposition", "COND_LIMIT", "joint_cond", "joint_scale", "singular_joint_error",
+    "Decomposition", "joint_cond", "joint_scale", "singular_joint_error",
 ]
 
-#: Largest (scale-free) condition number accepted for ``sᵀAs``, ``RᵀA⁻¹R`` and ``A``.
-#:
-#: The package's one singularity rule for a joint (every forward-dynamics method:
-#: ``aba``, ``projective``, ``mobility_split``, ``stacked``; the simulation's
-#: watched ``joint_conditions``): with ``A_P`` the joint's articulated inertia and
-#: ``s_P`` its motion space, both **at the joint's own point** ``P`` (its world
-#: position in this state: the pivot of a revolute joint, the placement point — the
-#: joint frame's origin — of a prismatic or multi-dof joint), moved there from the
-#: origin by ``s_P = X s``, ``A_P = X⁻ᵀ A X⁻¹`` (:func:`joint_scale`),
-#:
-#:     cond = ‖A_P‖_F ‖s_P‖_F² / σ_min(sᵀAs)        (σ_min = |sᵀAs| for one dof)
-#:
-#: (:func:`joint_cond`; ``sᵀAs`` itself is the same at every point), and the joint
-#: is singular when ``cond > COND_LIMIT`` (``inf`` when ``σ_min = 0``).  Measured at
-#: ``P``, the rule is invariant under translating and rotating the whole mechanism
-#: (``‖·‖_F`` is invariant under the rotation, ``A_P`` and ``s_P`` do not depend on
-#: where ``P`` is): a pendulum pinned 1 km from the origin is as regular as one
-#: pinned at it.  ``‖A_P‖ ‖s_P‖²`` is the size of the products that cancel when
-#: ``sᵀAs`` is formed at ``P``.  The public subspace functions of this module, which
-#: know no joint point, measure it at the origin of the coordinates they are given.
-COND_LIMIT = 1e12
-#: ``COND_LIMIT²``: the rule without a square root, ``σ_min² COND_LIMIT² > ‖A‖_F² ‖s‖⁴``
-#: (the form the compiled ABA plans test; it accepts exactly the states ``cond <= COND_LIMIT`` accepts,
-#: up to rounding of the last bit at the threshold itself)
+#: ``COND_LIMIT²``: the joint rule without a square root, ``σ_min² COND_LIMIT² > ‖A‖_F² ‖s‖⁴``
+#: (for code that tests the squared scale; it accepts exactly the states ``cond <= COND_LIMIT``
+#: accepts, up to rounding of the last bit at the threshold itself)
 COND_LIMIT2 = COND_LIMIT * COND_LIMIT
 
 
 def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
-    """The scale-free condition number of a joint's ``sᵀAs`` (the rule of :data:`COND_LIMIT`), as a float.
+    """The scale-free condition number of a joint's ``sᵀAs`` (the rule of :data:`planargeo.errors.COND_LIMIT`), as a float.
+
+    ``cond = ‖A_P‖_F ‖s_P‖_F² / σ_min(sᵀAs)`` with the joint's articulated inertia
+    ``A_P`` and motion space ``s_P`` at its own point ``P`` (:func:`joint_scale`;
+    ``sᵀAs`` itself is the same at every point); the joint is singular when
+    ``cond > COND_LIMIT``.  ``‖A_P‖ ‖s_P‖²`` is the size of the products that cancel
+    when ``sᵀAs`` is formed at ``P``.
 
     Parameters
     ----------
@@ -123,7 +119,7 @@ def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
 
 
 def joint_scale(A, s, point):
-    """``‖A_P‖_F ‖s_P‖_F²``: the scale of the rule of :data:`COND_LIMIT` at the joint's point ``P``.
+    """``‖A_P‖_F ‖s_P‖_F²``: the scale of the rule of :func:`joint_cond` at the joint's point ``P``.
 
     ``A`` (..., 3, 3) and ``s`` (..., 3, k) are given at the origin and moved to
     ``P = (x, y)`` (..., 2): twists by ``X = [[1, 0, -y], [0, 1, x], [0, 0, 1]]``
@@ -155,6 +151,10 @@ def joint_scale(A, s, point):
     if s.ndim == 1:
         s = s[:, None]
     P = np.asarray(point, dtype=float)
+    if A.ndim == 2 and s.ndim == 2 and P.ndim == 1:      # one joint: the same arithmetic on Python floats
+        out = _joint_scale_one(A.tolist(), s.T.tolist(), *P.tolist())
+        if out is not None:
+            return out
     x, y = P[..., 0], P[..., 1]
     a00, a01, a02 = A[..., 0, 0], A[..., 0, 1], A[..., 0, 2]
     a11, a12, a22 = A[..., 1, 1], A[..., 1, 2], A[..., 2, 2]
@@ -178,6 +178,22 @@ def joint_scale(A, s, point):
     ss = np.sum(t0 * t0 + t1 * t1 + s2 * s2, axis=-1)
     out = (np.sqrt(F2) if F2 is not None else F) * ss
     return float(out) if np.ndim(out) == 0 else out
+
+
+def _joint_scale_one(A, cols, x, y):
+    """:func:`joint_scale` of one joint, ``A`` and the columns of ``s`` as lists; None where squares leave range."""
+    (a00, a01, a02), (_, a11, a12), (_, _, a22) = A
+    p02 = a02 + y * a00 - x * a01
+    p12 = a12 + y * a01 - x * a11
+    p22 = a22 + y * a02 - x * a12 + y * p02 - x * p12
+    F2 = a00 * a00 + a11 * a11 + p22 * p22 + 2.0 * (a01 * a01 + p02 * p02 + p12 * p12)
+    if not 1e-300 < F2 < 1e300:
+        return None
+    ss = 0.0
+    for s0, s1, s2 in cols:
+        t0, t1 = s0 - y * s2, s1 + x * s2
+        ss += t0 * t0 + t1 * t1 + s2 * s2
+    return math.sqrt(F2) * ss
 
 
 def singular_joint_error(i: int, cond: float) -> SingularConfigurationError:
@@ -215,7 +231,7 @@ def _inertia_eig(A, name: str):
     return a, (w.max(axis=-1), w.min(axis=-1))
 
 
-def _T(x: np.ndarray) -> np.ndarray:
+def _tr(x: np.ndarray) -> np.ndarray:
     return np.swapaxes(x, -1, -2)
 
 
@@ -230,26 +246,58 @@ def _fro2(x: np.ndarray) -> np.ndarray:
     return np.einsum("...ij,...ij->...", x, x)
 
 
-def _check_cond(smin: np.ndarray, scale: np.ndarray, error, message: str) -> None:
-    """Raise ``error(message, cond)`` where ``cond = scale / smin`` exceeds :data:`COND_LIMIT`.
+def _norm(A: np.ndarray):
+    """Cheap norm ``‖A‖`` of each matrix in a stack: the Frobenius norm (a float for one matrix).
 
-    ``smin`` is the smallest singular value of the matrix to be inverted and
-    ``scale`` what its norm would be for a well-conditioned problem (e.g.
-    ``‖A‖ ‖s‖²`` for ``sᵀAs``), so that a 1×1 ``sᵀAs`` that is tiny compared
-    with the inertia is caught too.
+    Within a factor ``√3`` of the 2-norm of a 3×3 matrix, and no eigen-solve:
+    the scale of the singularity rule (:func:`_gram`).
     """
-    smin, scale = np.broadcast_arrays(np.asarray(smin, dtype=float), np.asarray(scale, dtype=float))
-    cond = np.full(smin.shape, np.inf)
-    np.divide(scale, smin, out=cond, where=smin > 0)
+    if A.ndim == 2:
+        return math.sqrt(float(np.vdot(A, A)))
+    return np.sqrt(_fro2(A))
+
+
+def _check(cond, error, message: str) -> None:
+    """Raise ``error(message, cond)`` where ``cond`` exceeds :data:`planargeo.errors.COND_LIMIT` (NaN too)."""
+    if isinstance(cond, float):
+        if not cond <= COND_LIMIT:
+            raise error(message, cond)
+        return
     bad = ~(cond <= COND_LIMIT)
     if np.any(bad):
         raise error(message, float(np.max(np.where(bad, cond, 0.0))))
 
 
+def _weighted_gram(X: np.ndarray, AX: np.ndarray, A_norm, scale=None):
+    """``M = Xᵀ (A X)`` (symmetrised) and its scale-free condition number ``‖A‖ ‖X‖² / σ_min(M)``.
+
+    ``σ_min`` is ``|M|`` for a 1×1 ``M``, else from the small ``k×k`` matrix itself;
+    ``scale`` replaces ``‖A‖ ‖X‖²`` where known (the joint's point, :func:`joint_scale`).
+    One joint of one dof runs on Python floats (``M`` is its own transpose); ``cond``
+    is ``inf`` where ``σ_min = 0``.
+    """
+    if X.shape == (3, 1) and AX.ndim == 2:
+        M = X.T @ AX
+        smin = abs(float(M[0, 0]))     # the rule of joint_cond, without squaring the scale (no overflow)
+        scale = A_norm * float(np.vdot(X, X)) if scale is None else float(scale)
+        return M, (scale / smin if smin > 0 else math.inf)
+    M = _tr(X) @ AX
+    k = M.shape[-1]
+    M = 0.5 * (M + _tr(M))
+    smin = np.abs(M[..., 0, 0]) if k == 1 else _abs_eig(M)[1]
+    smin, scale = np.broadcast_arrays(np.asarray(smin, dtype=float),
+                                      np.asarray(A_norm * _fro2(X) if scale is None else scale, dtype=float))
+    cond = np.full(smin.shape, np.inf)
+    np.divide(scale, smin, out=cond, where=smin > 0)
+    return M, cond
+
+
 def _solve_A(A: np.ndarray, B: np.ndarray, name: str, eig=None) -> np.ndarray:
-    """``A⁻¹ B`` by a solve, raising SingularInertiaError (with cond) for a singular ``A``."""
+    """``A⁻¹ B`` by a solve, raising SingularInertiaError (with cond ``|λ|max / |λ|min``) for a singular ``A``."""
     hi, lo = _abs_eig(A) if eig is None else eig
-    _check_cond(lo, hi, SingularInertiaError, f"{name} must be invertible")
+    cond = np.full(np.shape(lo), np.inf)
+    np.divide(hi, lo, out=cond, where=lo > 0)
+    _check(cond, SingularInertiaError, f"{name} must be invertible")
     shape = np.broadcast_shapes(A.shape[:-2], B.shape[:-2])
     return np.linalg.solve(np.broadcast_to(A, shape + A.shape[-2:]), np.broadcast_to(B, shape + B.shape[-2:]))
 
@@ -262,6 +310,8 @@ def _solve(M: np.ndarray, b: np.ndarray, what: str = "a recursion matrix") -> np
     in the mobility recursion 7.38): that is reported as a SingularConfigurationError
     with ``cond = inf``, never as numpy's bare LinAlgError.
     """
+    if M.shape == (1, 1):
+        return b / M[0, 0]                  # the LU solve's numbers, without its overhead
     try:
         return np.linalg.solve(M, b)
     except np.linalg.LinAlgError:
@@ -271,125 +321,29 @@ def _solve(M: np.ndarray, b: np.ndarray, what: str = "a recursion matrix") -> np
 def _right_solve(X: np.ndarray, M: np.ndarray) -> np.ndarray:
     """``X M⁻¹`` for symmetric ``M`` (..., k, k), as ``(M⁻¹ Xᵀ)ᵀ``.
 
-    A single 1×1 ``M`` multiplies by ``1 / M``: the same numbers as the LU solve
-    (which scales by the reciprocal pivot), without its overhead.
+    A single 1×1 ``M`` multiplies by ``1 / M`` (within an ulp of the LU solve, without its
+    overhead).
     """
     if M.shape == (1, 1):
         return X * (1.0 / M[0, 0])
-    Xt = _T(X)
+    Xt = _tr(X)
     if M.shape[:-2] == Xt.shape[:-2]:
-        return _T(np.linalg.solve(M, Xt))
+        return _tr(np.linalg.solve(M, Xt))
     shape = np.broadcast_shapes(M.shape[:-2], Xt.shape[:-2])
-    return _T(np.linalg.solve(np.broadcast_to(M, shape + M.shape[-2:]),
-                              np.broadcast_to(Xt, shape + Xt.shape[-2:])))
-
-
-def _norm(A: np.ndarray):
-    """Cheap norm ``‖A‖`` of each matrix in a stack: the Frobenius norm (a float for one matrix).
-
-    Within a factor ``√3`` of the 2-norm of a 3×3 matrix, and no eigen-solve:
-    the scale of the singularity rule (:func:`_gram`).
-    """
-    if A.ndim == 2:
-        return math.sqrt(float(np.vdot(A, A)))
-    return np.sqrt(_fro2(A))
-
-
-def _gram(s: np.ndarray, As: np.ndarray, A_scale, sname: str, what: str, scale=None) -> np.ndarray:
-    """``M = sᵀ (A s)``, symmetrised, checked for singularity relative to ``‖A‖ ‖s‖²``.
-
-    The package's one singularity rule for joint-space matrices: the scale-free
-    condition number ``‖A‖ ‖s‖² / σ_min(M)`` (Frobenius norms; ``σ_min`` is
-    ``|M|`` for a 1×1 ``M``, else from the small ``k×k`` matrix itself) must not
-    exceed :data:`COND_LIMIT`.  ``scale``: ``‖A_P‖ ‖s_P‖²`` at the joint's point
-    (:func:`joint_scale`) when known, else ``A_scale ‖s‖²`` (at the origin of the coordinates).
-    """
-    if s.shape == (3, 1) and As.ndim == 2:     # one joint, one dof: Python floats (M is its own transpose)
-        M = s.T @ As
-        smin = abs(float(M[0, 0]))     # the rule of joint_cond, without squaring the scale (no overflow)
-        scale = A_scale * float(np.vdot(s, s)) if scale is None else float(scale)
-        cond = scale / smin if smin > 0 else math.inf
-        if not cond <= COND_LIMIT:
-            raise SingularConfigurationError(
-                f"{what} is singular: the inertia has (almost) nothing along {sname}", float(cond))
-        return M
-    M = _T(s) @ As
-    k = M.shape[-1]
-    if k == 0:
-        return M
-    M = 0.5 * (M + _T(M))
-    smin = np.abs(M[..., 0, 0]) if k == 1 else _abs_eig(M)[1]
-    _check_cond(smin, A_scale * _fro2(s) if scale is None else scale, SingularConfigurationError,
-                f"{what} is singular: the inertia has (almost) nothing along {sname}")
-    return M
+    return _tr(np.linalg.solve(np.broadcast_to(M, shape + M.shape[-2:]),
+                               np.broadcast_to(Xt, shape + Xt.shape[-2:])))
 
 
 def _check_complementary(s: np.ndarray, R: np.ndarray) -> None:
     k, r = s.shape[-1], R.shape[-1]
     if k + r != 3:
         raise ShapeError(f"s and R must have 3 columns together, got s with {k} and R with {r}")
-    sR = _T(s) @ R
+    sR = _tr(s) @ R
     if sR.size:
         tol = 1e-9 * max(1.0, float(np.max(np.abs(s), initial=0.0)) * float(np.max(np.abs(R), initial=0.0)))
         worst = float(np.max(np.abs(sR)))
         if worst > tol:
             raise InputError(f"R must be reciprocal to s (sᵀR = 0, thesis 6.1), got max |sᵀR| = {worst:.3g}")
-
-
-def _checked_gram(A: np.ndarray, s: np.ndarray, what: str, point=None) -> tuple[np.ndarray, np.ndarray]:
-    """``(A s, sᵀ A s)`` with ``sᵀAs`` checked by the singularity rule of :func:`_gram`.
-
-    ``point``: the joint's point ``P`` (..., 2), where the rule of :data:`COND_LIMIT`
-    is measured (:func:`joint_scale`); default the origin of the coordinates.
-    """
-    As = A @ s
-    scale = None if point is None else joint_scale(A, s, point)
-    return As, _gram(s, As, _norm(A), "s", what, scale)
-
-
-def _percussion_space(A: np.ndarray, s: np.ndarray, what: str = "sᵀAs", gram=None, point=None) -> np.ndarray:
-    """``T = A s (sᵀ A s)⁻¹`` (6.30, 6.39) on float arrays already checked (the unchecked kernel).
-
-    ``A`` (..., 3, 3) symmetric, ``s`` (..., 3, k).  Shared by
-    :func:`percussion_space` and the chain algorithms; raises
-    :class:`~planargeo.errors.SingularConfigurationError` (the rule of :func:`_gram`).
-    ``gram``: ``_checked_gram(A, s, what, point)`` if already formed; ``point``: the
-    joint's point, where the rule is measured (default the origin of the coordinates).
-    """
-    if s.shape[-1] == 0:
-        return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 0))
-    As, M = _checked_gram(A, s, what, point) if gram is None else gram
-    return _right_solve(As, M)
-
-
-def _effective_mobility(A: np.ndarray, s: np.ndarray, what: str = "sᵀIs", gram=None, point=None) -> np.ndarray:
-    """``s (sᵀ A s)⁻¹ sᵀ`` (6.93) on float arrays already checked (the unchecked kernel).
-
-    ``gram``: ``_checked_gram(A, s, what, point)`` if already formed (e.g. for :func:`_percussion_space`);
-    ``point``: the joint's point, where the rule is measured (default the origin of the coordinates).
-    """
-    if s.shape[-1] == 0:
-        return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 3))
-    _, M = _checked_gram(A, s, what, point) if gram is None else gram
-    return _right_solve(s, M) @ _T(s)
-
-
-def _reactive(R: np.ndarray, A: np.ndarray, name: str, eig=None, what=None) -> np.ndarray:
-    if R.shape[-1] == 0:
-        return np.zeros(np.broadcast_shapes(R.shape[:-2], A.shape[:-2]) + (3, 0))
-    eig = _abs_eig(A) if eig is None else eig
-    AiR = _solve_A(A, R, name, eig)
-    with np.errstate(divide="ignore"):
-        Ainv_norm = 1.0 / eig[1]          # ‖A⁻¹‖ = 1 / σ_min(A); finite here (A checked invertible)
-    return _right_solve(AiR, _gram(R, AiR, Ainv_norm, "R", what or f"Rᵀ{name}⁻¹R"))
-
-
-def _reactive_from_T(R: np.ndarray, s: np.ndarray, T: np.ndarray) -> np.ndarray:
-    """Inverse-free ``U = (1 - s Tᵀ) R (RᵀR)⁻¹`` (from ``T sᵀ + R Uᵀ = 1``, 6.75, and ``RᵀU = 1``)."""
-    if R.shape[-1] == 0:
-        return np.zeros(np.broadcast_shapes(R.shape[:-2], T.shape[:-2]) + (3, 0))
-    P = np.eye(3) - s @ _T(T)
-    return _right_solve(P @ R, _T(R) @ R)
 
 
 def _vec(x, name: str) -> np.ndarray:
@@ -398,12 +352,80 @@ def _vec(x, name: str) -> np.ndarray:
 
 def _tmul(X: np.ndarray, v: np.ndarray) -> np.ndarray:
     """``Xᵀ v`` for stacks: X (..., 3, k), v (..., 3) -> (..., k)."""
-    return (_T(X) @ v[..., None])[..., 0]
+    return (_tr(X) @ v[..., None])[..., 0]
 
 
-# ----------------------------------------------------------------------------- subspaces
-def percussion_space(s, A, *, what: str | None = None) -> np.ndarray:
-    """Percussion (active-force) space ``T = A s (sᵀ A s)⁻¹`` (thesis 6.30, 6.36, 6.39).
+# ----------------------------------------------------------------------------- kernels (unchecked arguments)
+def _gram(A: np.ndarray, s: np.ndarray, point=None):
+    """``(A s, sᵀ A s, cond)``: the joint-space inertia (6.67) and its condition number (:func:`joint_cond`).
+
+    ``point``: the joint's point ``P`` (..., 2), where the rule is measured
+    (:func:`joint_scale`); default the origin of the coordinates.  Never raises: the
+    callers decide (:func:`_checked_gram` raises, ``joint_conditions`` records).
+    """
+    As = A @ s
+    M, cond = _weighted_gram(s, As, _norm(A), None if point is None else joint_scale(A, s, point))
+    return As, M, cond
+
+
+def _checked_gram(A: np.ndarray, s: np.ndarray, what: str, point=None) -> tuple[np.ndarray, np.ndarray]:
+    """``(A s, sᵀ A s)`` of :func:`_gram`, raising SingularConfigurationError (``.cond``) past the limit.
+
+    ``what`` names ``sᵀAs`` in the message, e.g. ``"sᵀAs of joint 3"``.
+    """
+    As, M, cond = _gram(A, s, point)
+    _check(cond, SingularConfigurationError, f"{what} is singular: the inertia has (almost) nothing along s")
+    return As, M
+
+
+def _T(A: np.ndarray, s: np.ndarray, what: str = "sᵀAs", gram=None, point=None) -> np.ndarray:
+    """``T = A s (sᵀ A s)⁻¹`` (6.30, 6.36, 6.39, 6.105): the kernel of :func:`T_of`.
+
+    ``gram``: ``_checked_gram(A, s, what, point)`` if already formed; ``point``: the
+    joint's point, where the singularity rule is measured (default the origin).
+    """
+    if s.shape[-1] == 0:
+        return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 0))
+    As, M = _checked_gram(A, s, what, point) if gram is None else gram
+    return _right_solve(As, M)
+
+
+def _effective_mobility(A: np.ndarray, s: np.ndarray, what: str = "sᵀIs", gram=None, point=None) -> np.ndarray:
+    """``s Tᵀ A⁻¹ = s (sᵀ A s)⁻¹ sᵀ`` (6.93, 7.31a): the kernel of :func:`effective_mobility`.
+
+    ``gram``, ``point``: as for :func:`_T`.
+    """
+    if s.shape[-1] == 0:
+        return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 3))
+    _, M = _checked_gram(A, s, what, point) if gram is None else gram
+    return _right_solve(s, M) @ _tr(s)
+
+
+def _U(A, R: np.ndarray, s=None, T=None, *, name: str = "A", eig=None, what=None) -> np.ndarray:
+    """``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹`` (6.37, 6.45, 6.99): the kernel of :func:`U_of`.
+
+    With ``s`` and ``T = T(A, s)`` the inverse-free ``U = (1 - s Tᵀ) R (RᵀR)⁻¹``
+    (from ``T sᵀ + R Uᵀ = 1``, 6.75, and ``RᵀU = 1``): ``A`` is not used, and may be
+    singular.  Otherwise ``A`` must be invertible (``eig``: its ``(max, min)``
+    |eigenvalue| if known); ``name`` names it in the messages.
+    """
+    if R.shape[-1] == 0:
+        return np.zeros(np.broadcast_shapes(R.shape[:-2], (T if s is not None else A).shape[:-2]) + (3, 0))
+    if s is not None:
+        return _right_solve((np.eye(3) - s @ _tr(T)) @ R, _tr(R) @ R)
+    eig = _abs_eig(A) if eig is None else eig
+    AiR = _solve_A(A, R, name, eig)
+    with np.errstate(divide="ignore"):
+        Ainv_norm = 1.0 / eig[1]          # ‖A⁻¹‖ = 1 / σ_min(A); finite here (A checked invertible)
+    M, cond = _weighted_gram(R, AiR, Ainv_norm)
+    _check(cond, SingularConfigurationError,
+           f"{what or f'Rᵀ{name}⁻¹R'} is singular: the inertia has (almost) nothing along R")
+    return _right_solve(AiR, M)
+
+
+# ----------------------------------------------------------------------------- T and U
+def T_of(A, s, *, what: str | None = None) -> np.ndarray:
+    """Percussion (active-force) space ``T = A s (sᵀ A s)⁻¹`` (thesis 6.30, 6.36, 6.39, 6.105).
 
     The weighted pseudo-inverse of ``s`` (6.26): ``sᵀT = 1`` (6.32) and
     ``TᵀU = 0`` (6.46).  For a revolute joint its single column is the axis of
@@ -412,15 +434,14 @@ def percussion_space(s, A, *, what: str | None = None) -> np.ndarray:
 
     Parameters
     ----------
-    s : array_like, shape (..., 3, k) or (3,)
-        Motion space (unit twists at the origin).
     A : array_like, shape (..., 3, 3)
         Rigid-body or articulated inertia: symmetric positive semi-definite
         (singular is fine, e.g. a point mass, as long as ``sᵀAs`` is not).
-
+    s : array_like, shape (..., 3, k) or (3,)
+        Motion space (unit twists at the origin).
     what : str, optional
         How ``sᵀAs`` is named in the error message (default ``"sᵀAs"``), e.g.
-        ``"sᵀAs of joint 3"`` in the chain algorithms.
+        ``"sᵀAs of joint 3"``.
 
     Returns
     -------
@@ -435,11 +456,8 @@ def percussion_space(s, A, *, what: str | None = None) -> np.ndarray:
     SingularConfigurationError
         If ``sᵀAs`` is singular (``A`` has no inertia along ``s``): its
         scale-free condition number ``‖A‖ ‖s‖² / |λ|_min(sᵀAs)`` (``.cond``;
-        Frobenius norms, no eigen-solve of ``A``)
-        exceeds :data:`COND_LIMIT`.  This is the package's one singularity
-        rule for joint-space matrices, here measured at the origin of the given
-        coordinates (the chain algorithms measure it at each joint's point,
-        :func:`joint_scale`).
+        Frobenius norms, no eigen-solve of ``A``), here measured at the origin of
+        the given coordinates, exceeds :data:`planargeo.errors.COND_LIMIT`.
 
     Examples
     --------
@@ -447,20 +465,20 @@ def percussion_space(s, A, *, what: str | None = None) -> np.ndarray:
 
     >>> from planargeo.screws.twists import inertia_matrix
     >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.5)
-    >>> percussion_space([0.0, 0.0, 1.0], I)      # force along y at x = 1/0.8 = d + ρ²/d (5.67)
+    >>> T_of(I, [0.0, 0.0, 1.0])      # force along y at x = 1/0.8 = d + ρ²/d (5.67)
     array([[0. ],
            [0.8],
            [1. ]])
-    >>> percussion_space([0.0, 0.0, 1.0], np.diag([1.0, 1.0, -1.0]))
+    >>> T_of(np.diag([1.0, 1.0, -1.0]), [0.0, 0.0, 1.0])
     Traceback (most recent call last):
     ...
     planargeo.errors.SingularInertiaError: A must be positive semi-definite, got smallest eigenvalue -1 (condition number inf)
     """
-    return _percussion_space(_inertia(A, "A"), _space(s, "s"), what or "sᵀAs")
+    return _T(_inertia(A, "A"), _space(s, "s"), what or "sᵀAs")
 
 
-def reactive_acceleration_space(R, A=None, *, s=None, T=None, what: str | None = None) -> np.ndarray:
-    """Reactive-acceleration space ``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹`` (thesis 6.37, 6.45; 6.33 corrected).
+def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
+    """Reactive-acceleration space ``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹`` (thesis 6.37, 6.45, 6.99; 6.33 corrected).
 
     The weighted pseudo-inverse of ``R``: ``RᵀU = 1`` (6.35), ``TᵀU = 0`` (6.46).
     Thesis 6.33 prints ``A⁻¹R (RᵀA⁻¹R)`` without the inverse (see
@@ -468,19 +486,16 @@ def reactive_acceleration_space(R, A=None, *, s=None, T=None, what: str | None =
 
     Parameters
     ----------
-    R : array_like, shape (..., 3, r) or (3,)
-        Reaction space (unit wrenches at the origin).
     A : array_like, shape (..., 3, 3)
         Rigid-body or articulated inertia: symmetric positive semi-definite,
-        and positive definite (invertible) unless ``s`` is given; may be
-        omitted when both ``s`` and ``T`` are given.
+        and positive definite (invertible) unless ``s`` is given.
+    R : array_like, shape (..., 3, r) or (3,)
+        Reaction space (unit wrenches at the origin).
     s : array_like, shape (..., 3, 3 - r), optional
         The joint's motion space (``sᵀR = 0``).  When given, the inverse-free
         equivalent ``U = (1 - s Tᵀ) R (RᵀR)⁻¹`` is used (from ``T sᵀ + R Uᵀ = 1``,
         6.75 / 7.8, and ``RᵀU = 1``): only ``sᵀAs`` must be invertible, so
         point-mass bodies (singular ``A``) are fine.
-    T : array_like, shape (..., 3, 3 - r), optional
-        ``percussion_space(s, A)`` if already computed (only with ``s``).
     what : str, optional
         Name of the matrix in the singularity message.
 
@@ -491,7 +506,7 @@ def reactive_acceleration_space(R, A=None, *, s=None, T=None, what: str | None =
     Raises
     ------
     InputError
-        ``A`` is not symmetric.
+        ``A`` is not symmetric, or ``sᵀR ≠ 0``.
     SingularInertiaError
         ``A`` has a negative eigenvalue, or is singular and ``s`` is not given
         (``"A must be invertible"``, with ``.cond``).
@@ -503,7 +518,7 @@ def reactive_acceleration_space(R, A=None, *, s=None, T=None, what: str | None =
     A free unit disc (``m = 1``, ``J = 1`` at the origin) held by a slider along x:
     the reactive accelerations are pure sliding across (y) and pure spin.
 
-    >>> reactive_acceleration_space([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]], np.eye(3))
+    >>> U_of(np.eye(3), [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])
     array([[0., 0.],
            [1., 0.],
            [0., 1.]])
@@ -514,28 +529,19 @@ def reactive_acceleration_space(R, A=None, *, s=None, T=None, what: str | None =
     >>> from planargeo.screws.twists import inertia_matrix
     >>> from planargeo.mechanics.joints import revolute
     >>> j = revolute((0.0, 0.0))
-    >>> reactive_acceleration_space(j.R, inertia_matrix(1.0, [1.0, 0.0], 0.0), s=j.s) + 0.0
+    >>> U_of(inertia_matrix(1.0, [1.0, 0.0], 0.0), j.R, j.s) + 0.0
     array([[ 1.,  0.],
            [ 0.,  1.],
            [ 0., -1.]])
     """
     R = _space(R, "R")
     if s is None:
-        if T is not None:
-            raise InputError("T must be given together with s")
-        if A is None:
-            raise InputError("A must be given unless s and T are")
         A, eig = _inertia_eig(A, "A")
-        return _reactive(R, A, "A", eig, what=what)
+        return _U(A, R, eig=eig, what=what)
     s = _space(s, "s")
     _check_complementary(s, R)
-    if T is None:
-        if A is None:
-            raise InputError("A must be given unless s and T are")
-        T = _percussion_space(_inertia(A, "A"), s, what or "sᵀAs")
-    else:
-        T = _space(T, "T")
-    return _reactive_from_T(R, s, T)
+    A = _inertia(A, "A")
+    return _U(A, R, s, _T(A, s, what or "sᵀAs"))
 
 
 # ----------------------------------------------------------------------------- projections
@@ -584,7 +590,7 @@ def reactive_acceleration(R, a) -> np.ndarray:
 
 
 # ----------------------------------------------------------------------------- projectors
-def wrench_projectors(s, R, A) -> tuple[np.ndarray, np.ndarray]:
+def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     """The complementary wrench projectors ``(T sᵀ, R Uᵀ)``, summing to 1 (thesis 6.75).
 
     ``T sᵀ f`` is the active part ``T Q`` of a wrench, ``R Uᵀ f`` its reaction
@@ -592,17 +598,17 @@ def wrench_projectors(s, R, A) -> tuple[np.ndarray, np.ndarray]:
 
     Examples
     --------
-    >>> P_act, P_rea = wrench_projectors([0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]], np.eye(3))
+    >>> P_act, P_rea = wrench_projectors(np.eye(3), [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
     >>> P_act + P_rea
     array([[1., 0., 0.],
            [0., 1., 0.],
            [0., 0., 1.]])
     """
-    d = Decomposition(s, R, A)
-    return d.T @ _T(d.s), d.R @ _T(d.U)
+    d = Decomposition(A, s, R)
+    return d.T @ _tr(d.s), d.R @ _tr(d.U)
 
 
-def twist_projectors(s, R, A) -> tuple[np.ndarray, np.ndarray]:
+def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     """The complementary twist projectors ``(s Tᵀ, U Rᵀ)``, summing to 1 (dual of thesis 6.75).
 
     ``s Tᵀ a = s ψ`` is the joint part of an acceleration, ``U Rᵀ a = U γ``
@@ -610,18 +616,18 @@ def twist_projectors(s, R, A) -> tuple[np.ndarray, np.ndarray]:
 
     Examples
     --------
-    >>> P_joint, P_react = twist_projectors([0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]], np.eye(3))
+    >>> P_joint, P_react = twist_projectors(np.eye(3), [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
     >>> P_joint
     array([[0., 0., 0.],
            [0., 0., 0.],
            [0., 0., 1.]])
     """
-    d = Decomposition(s, R, A)
-    return d.s @ _T(d.T), d.U @ _T(d.R)
+    d = Decomposition(A, s, R)
+    return d.s @ _tr(d.T), d.U @ _tr(d.R)
 
 
 # ----------------------------------------------------------------------------- inertias
-def joint_space_inertia(s, I) -> np.ndarray:
+def joint_space_inertia(I, s) -> np.ndarray:
     """Joint-space inertia ``sᵀ I s`` (thesis 6.67, 6.74c): ``Q = (sᵀIs) ψ``.
 
     ``I`` must be symmetric (:class:`~planargeo.errors.InputError`) and positive
@@ -631,15 +637,15 @@ def joint_space_inertia(s, I) -> np.ndarray:
     Examples
     --------
     >>> from planargeo.screws.twists import inertia_matrix
-    >>> joint_space_inertia([0.0, 0.0, 1.0], inertia_matrix(2.0, [1.0, 0.0], 0.5))   # m (ρ² + d²)
+    >>> joint_space_inertia(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0])   # m (ρ² + d²)
     array([[2.5]])
     """
-    s = _space(s, "s")
     I = _inertia(I, "I")
-    return _T(s) @ I @ s
+    s = _space(s, "s")
+    return _tr(s) @ I @ s
 
 
-def reaction_space_inverse_inertia(R, I) -> np.ndarray:
+def reaction_space_inverse_inertia(I, R) -> np.ndarray:
     """Reaction-space inverse inertia ``Rᵀ I⁻¹ R`` (thesis 6.71): ``γ = (RᵀI⁻¹R) μ``.
 
     Computed with a solve, not an explicit inverse.  ``I`` must be symmetric
@@ -649,15 +655,15 @@ def reaction_space_inverse_inertia(R, I) -> np.ndarray:
 
     Examples
     --------
-    >>> reaction_space_inverse_inertia([[1.0], [0.0], [0.0]], np.diag([2.0, 2.0, 1.0]))
+    >>> reaction_space_inverse_inertia(np.diag([2.0, 2.0, 1.0]), [[1.0], [0.0], [0.0]])
     array([[0.5]])
     """
-    R = _space(R, "R")
     I, eig = _inertia_eig(I, "I")
-    return _T(R) @ _solve_A(I, R, "I", eig)
+    R = _space(R, "R")
+    return _tr(R) @ _solve_A(I, R, "I", eig)
 
 
-def inertia_decomposition(s, R, I) -> tuple[np.ndarray, np.ndarray]:
+def inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     """Split an inertia as ``I = T sᵀ I + R Uᵀ I`` (thesis 6.76).
 
     ``T sᵀ I a`` is the force accelerating the joint's moving part, ``R Uᵀ I a``
@@ -674,15 +680,15 @@ def inertia_decomposition(s, R, I) -> tuple[np.ndarray, np.ndarray]:
     --------
     >>> from planargeo.screws.twists import inertia_matrix
     >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.5)
-    >>> Ia, Ib = inertia_decomposition([0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]], I)
+    >>> Ia, Ib = inertia_decomposition(I, [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
     >>> np.allclose(Ia + Ib, I)
     True
     """
-    d = Decomposition(s, R, I, name="I")
-    return d.T @ _T(d.s) @ d.A, d.R @ _T(d.U) @ d.A
+    d = Decomposition(I, s, R, name="I")
+    return d.T @ _tr(d.s) @ d.A, d.R @ _tr(d.U) @ d.A
 
 
-def inverse_inertia_decomposition(s, R, I) -> tuple[np.ndarray, np.ndarray]:
+def inverse_inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     """Split an inverse inertia as ``I⁻¹ = s Tᵀ I⁻¹ + U Rᵀ I⁻¹`` (thesis 6.79–6.81).
 
     ``s Tᵀ I⁻¹ f`` is the motion of the joint produced by a wrench ``f`` (the
@@ -693,19 +699,19 @@ def inverse_inertia_decomposition(s, R, I) -> tuple[np.ndarray, np.ndarray]:
 
     Examples
     --------
-    >>> Ma, Mb = inverse_inertia_decomposition([0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]],
-    ...                                        np.diag([2.0, 2.0, 4.0]))
+    >>> Ma, Mb = inverse_inertia_decomposition(np.diag([2.0, 2.0, 4.0]), [0.0, 0.0, 1.0],
+    ...                                        [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
     >>> Ma + Mb
     array([[0.5 , 0.  , 0.  ],
            [0.  , 0.5 , 0.  ],
            [0.  , 0.  , 0.25]])
     """
-    d = Decomposition(s, R, I, name="I")
+    d = Decomposition(I, s, R, name="I")
     IiR = _solve_A(d.A, d.R, "I")
-    return _effective_mobility(d.A, d.s, "sᵀIs"), d.U @ _T(IiR)
+    return _effective_mobility(d.A, d.s, "sᵀIs"), d.U @ _tr(IiR)
 
 
-def effective_mobility(s, I, *, what: str | None = None) -> np.ndarray:
+def effective_mobility(I, s, *, what: str | None = None) -> np.ndarray:
     """Effective inverse inertia of a joint-constrained body ``s Tᵀ I⁻¹ = s (sᵀIs)⁻¹ sᵀ`` (thesis 6.93).
 
     A body at rest held by the joint and loaded by a wrench ``f`` accelerates
@@ -719,7 +725,7 @@ def effective_mobility(s, I, *, what: str | None = None) -> np.ndarray:
     Examples
     --------
     >>> from planargeo.screws.twists import inertia_matrix
-    >>> effective_mobility([0.0, 0.0, 1.0], inertia_matrix(2.0, [1.0, 0.0], 0.5))
+    >>> effective_mobility(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0])
     array([[0. , 0. , 0. ],
            [0. , 0. , 0. ],
            [0. , 0. , 0.4]])
@@ -727,7 +733,7 @@ def effective_mobility(s, I, *, what: str | None = None) -> np.ndarray:
     return _effective_mobility(_inertia(I, "I"), _space(s, "s"), what or "sᵀIs")
 
 
-def effective_base_inertia(R, I) -> np.ndarray:
+def effective_base_inertia(I, R) -> np.ndarray:
     """Effective inertia of the joint base ``R Uᵀ I = R (RᵀI⁻¹R)⁻¹ Rᵀ`` (thesis 6.97).
 
     The reaction force needed to give the joint base the acceleration ``a``
@@ -739,16 +745,16 @@ def effective_base_inertia(R, I) -> np.ndarray:
 
     Examples
     --------
-    >>> effective_base_inertia([[0.0], [0.0], [1.0]], np.diag([2.0, 2.0, 4.0]))   # only a couple: J
+    >>> effective_base_inertia(np.diag([2.0, 2.0, 4.0]), [[0.0], [0.0], [1.0]])   # only a couple: J
     array([[0., 0., 0.],
            [0., 0., 0.],
            [0., 0., 4.]])
     """
-    R = _space(R, "R")
     I, eig = _inertia_eig(I, "I")
-    IiR = _solve_A(I, R, "I", eig)
-    M = _gram(R, IiR, 1.0 / eig[1], "R", "RᵀI⁻¹R")
-    return _right_solve(R, M) @ _T(R)
+    R = _space(R, "R")
+    M, cond = _weighted_gram(R, _solve_A(I, R, "I", eig), 1.0 / eig[1])
+    _check(cond, SingularConfigurationError, "RᵀI⁻¹R is singular: the inertia has (almost) nothing along R")
+    return _right_solve(R, M) @ _tr(R)
 
 
 # ----------------------------------------------------------------------------- class
@@ -757,13 +763,13 @@ class Decomposition:
 
     Parameters
     ----------
+    A : array_like, shape (..., 3, 3)
+        Body or articulated inertia: symmetric positive semi-definite, and
+        positive definite (invertible) when ``k < 3`` (``U`` needs ``A⁻¹``).
     s : array_like, shape (..., 3, k) or (3,)
         Motion space.
     R : array_like, shape (..., 3, 3 - k)
         Reaction space, ``sᵀR = 0`` (checked).
-    A : array_like, shape (..., 3, 3)
-        Body or articulated inertia: symmetric positive semi-definite, and
-        positive definite (invertible) when ``k < 3`` (``U`` needs ``A⁻¹``).
     name : str
         Name used for ``A`` in error messages.
 
@@ -779,18 +785,18 @@ class Decomposition:
 
     Attributes
     ----------
-    s, R, A : ndarray
+    A, s, R : ndarray
     T : ndarray, shape (..., 3, k)
-        Percussion space (6.39).
+        Percussion space (6.39, :func:`T_of`).
     U : ndarray, shape (..., 3, 3 - k)
-        Reactive-acceleration space (6.45).
+        Reactive-acceleration space (6.45, :func:`U_of`).
 
     Examples
     --------
     >>> from planargeo.mechanics.joints import revolute
     >>> from planargeo.screws.twists import inertia_matrix
     >>> j = revolute((0.0, 0.0))
-    >>> dec = Decomposition.from_joint(j, inertia_matrix(2.0, [1.0, 0.0], 0.5))
+    >>> dec = Decomposition.from_joint(inertia_matrix(2.0, [1.0, 0.0], 0.5), j)
     >>> Q, mu = dec.split_wrench([0.0, 1.0, 2.0])
     >>> Q, mu
     (array([2.]), array([ 0. , -0.6]))
@@ -798,21 +804,21 @@ class Decomposition:
     array([0., 1., 2.])
     """
 
-    __slots__ = ("s", "R", "A", "T", "U")
+    __slots__ = ("A", "s", "R", "T", "U")
 
-    def __init__(self, s, R, A, *, name: str = "A"):
+    def __init__(self, A, s, R, *, name: str = "A"):
+        A, eig = _inertia_eig(A, name)
         s = _space(s, "s")
         R = _space(R, "R")
-        A, eig = _inertia_eig(A, name)
         _check_complementary(s, R)
-        self.s, self.R, self.A = s, R, A
-        self.T = _percussion_space(A, s, f"sᵀ{name}s")
-        self.U = _reactive(R, A, name, eig)
+        self.A, self.s, self.R = A, s, R
+        self.T = _T(A, s, f"sᵀ{name}s")
+        self.U = _U(A, R, name=name, eig=eig)
 
     @classmethod
-    def from_joint(cls, joint, A, *, name: str = "A") -> "Decomposition":
-        """Build from a :class:`planargeo.mechanics.joints.JointSpace` (uses its ``s`` and ``R``)."""
-        return cls(joint.s, joint.R, A, name=name)
+    def from_joint(cls, A, joint, *, name: str = "A") -> "Decomposition":
+        """Build from a :class:`planargeo.mechanics.joints.JointSpace` (its ``s`` and ``R``, thesis 5.63, 6.1)."""
+        return cls(A, joint.s, joint.R, name=name)
 
     def split_wrench(self, f) -> tuple[np.ndarray, np.ndarray]:
         """``(Q, μ) = (sᵀf, Uᵀf)`` so that ``f = T Q + R μ`` (thesis 6.38, 6.61).
@@ -828,7 +834,7 @@ class Decomposition:
 
         >>> from planargeo.mechanics.joints import revolute
         >>> from planargeo.screws.twists import inertia_matrix
-        >>> dec = Decomposition.from_joint(revolute((0.0, 0.0)), inertia_matrix(2.0, [1.0, 0.0], 0.5))
+        >>> dec = Decomposition.from_joint(inertia_matrix(2.0, [1.0, 0.0], 0.5), revolute((0.0, 0.0)))
         >>> dec.split_wrench([0.0, 0.0, 1.0])
         (array([1.]), array([ 0. , -0.8]))
         """
@@ -846,7 +852,7 @@ class Decomposition:
 
         >>> from planargeo.mechanics.joints import revolute
         >>> from planargeo.screws.twists import inertia_matrix
-        >>> dec = Decomposition.from_joint(revolute((0.0, 0.0)), inertia_matrix(2.0, [1.0, 0.0], 0.5))
+        >>> dec = Decomposition.from_joint(inertia_matrix(2.0, [1.0, 0.0], 0.5), revolute((0.0, 0.0)))
         >>> dec.T.ravel()
         array([0. , 0.8, 1. ])
         >>> dec.join_wrench([1.0], [0.0, -0.8]) + 0.0
@@ -869,7 +875,7 @@ class Decomposition:
 
         >>> from planargeo.mechanics.joints import revolute
         >>> from planargeo.screws.twists import inertia_matrix
-        >>> dec = Decomposition.from_joint(revolute((0.0, 0.0)), inertia_matrix(2.0, [1.0, 0.0], 0.5))
+        >>> dec = Decomposition.from_joint(inertia_matrix(2.0, [1.0, 0.0], 0.5), revolute((0.0, 0.0)))
         >>> dec.split_twist([0.0, 1.0, 0.0])
         (array([0.8]), array([0., 1.]))
         """
@@ -888,7 +894,7 @@ class Decomposition:
 
         >>> from planargeo.mechanics.joints import revolute
         >>> from planargeo.screws.twists import inertia_matrix
-        >>> dec = Decomposition.from_joint(revolute((0.0, 0.0)), inertia_matrix(2.0, [1.0, 0.0], 0.5))
+        >>> dec = Decomposition.from_joint(inertia_matrix(2.0, [1.0, 0.0], 0.5), revolute((0.0, 0.0)))
         >>> dec.U[:, 1]
         array([ 0. ,  1. , -0.8])
         >>> dec.join_twist([0.8], [0.0, 1.0]) + 0.0

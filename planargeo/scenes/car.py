@@ -153,7 +153,7 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
     p = crf(v) @ (I @ v)                                                      # (6.118)-(6.119)
     f_A = F_A * _force_through(front, front_rolling)                         # (6.120)
 
-    dec = Decomposition(s, R, I, name="I")                                    # T (6.124), U (6.126)
+    dec = Decomposition(I, s, R, name="I")                                    # T (6.124), U (6.126)
     T, U = dec.T, dec.U
     gamma = R.T @ kappa                                                       # (6.128)
     Q = np.zeros(1)                                                           # unpowered joint

@@ -101,7 +101,7 @@ def _tolist(x):
 @register("tree")
 def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float = 1.0) -> SceneResult:
     """The open tree of Fig 9.1 in the default pose, joint speeds ``speed × pattern``, no torques."""
-    from planargeo.algorithms.stacked import adjacency, direct_accelerations, stacked_solve, tree_mobilities, trunk
+    from planargeo.algorithms.stacked import adjacency, direct_accelerations, stacked_solve, trunk
 
     speed = check_param("speed", speed)
     model = tree_model(mass, length, g)
@@ -109,7 +109,7 @@ def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float =
     qd = speed * _QD_PATTERN
     tau = np.zeros(9)
     sol = stacked_solve(model, q, qd, tau)
-    Lam, b = tree_mobilities(model, sol.data, tau, sol.articulated)
+    Lam, b = sol.articulated_mobilities.Lambda_inv, sol.articulated_mobilities.b
     a_direct = direct_accelerations(sol, Lam, b)
     qdd_direct = sol.T.T @ (a_direct - sol.C @ a_direct - sol.kappa)
     C = adjacency(model.parents)

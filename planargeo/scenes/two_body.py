@@ -96,7 +96,7 @@ def two_body(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: float = np.p
         "mx_over_m": float(A1[0, 0] / m),
         "lam": L / rho,
         "A2": _plain(r.A[1]),
-        "U2": _plain(r.U(1)),
+        "U2": _plain(r.U[1]),
         "T2": _plain(r.T[1][:, 0]),
         "s": [_plain(r.S[0][:, 0]), _plain(r.S[1][:, 0])],
         "R": [_plain(r.R[0]), _plain(r.R[1])],

@@ -44,7 +44,7 @@ from planargeo.draw.mechanism import draw_ground
 from planargeo.draw.style import COLORS, setup_axes
 from planargeo.errors import InputError, SingularConfigurationError
 from planargeo.mechanics.model import Body, Joint, Model
-from planargeo.mechanics.subspaces import percussion_space
+from planargeo.mechanics.subspaces import T_of
 from planargeo.scenes.chain import chain_workspace
 from planargeo.screws.twists import kinetic_energy
 from planargeo.widgets.base import Explorer, Step
@@ -269,7 +269,7 @@ class ChainExplorer(Explorer):
         if "split" not in st:
             model, w = st["model"], st["w"]
             s = w.S.T.reshape(model.N, 3, 1)  # one-dof joints: column i is s_i
-            T = percussion_space(s, w.A)[..., 0]
+            T = T_of(w.A, s)[..., 0]
             Q = np.einsum("ij,ij->i", s[..., 0], w.f)
             active = T * Q[:, None]
             psi = np.einsum("ij,ij->i", T, w.a)
