@@ -22,7 +22,8 @@ from planargeo.screws.inertia import centre_of_mass, percussion_axis
 from planargeo.geometry.projective import from_direction, from_xy, join, meet, to_xy
 from planargeo.screws.twists import bias_force, kappa
 from planargeo.draw.artists import _mat, _vec, plot_conic, plot_line, plot_point
-from planargeo.draw.style import COLORS, style, sum_style
+from planargeo.draw.style import COLORS, get_ax, style, sum_style
+from planargeo.mechanics.subspaces import Decomposition
 
 __all__ = [
     "line_conic_points", "tangent_points", "label",
@@ -31,14 +32,6 @@ __all__ = [
     "draw_tangent", "draw_percussion", "draw_power", "draw_segment", "draw_dimension",
     "draw_decomposition", "draw_twist_split", "draw_wrench_split", "draw_projective_step",
 ]
-
-
-def _ax(ax):
-    if ax is None:
-        import matplotlib.pyplot as plt
-
-        ax = plt.gca()
-    return ax
 
 
 def label(ax, xy, text, *, offset=(5, 5), color=None, ha="left", va="bottom", **kw):
@@ -121,7 +114,7 @@ def draw_twist_sum(v1, v2, ax=None, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v
     array([2., 0.])
     >>> plt.close("all")
     """
-    ax = _ax(ax)
+    ax = get_ax(ax)
     v1, v2 = _vec(v1, "v1"), _vec(v2, "v2")
     v3 = v1 + v2
     out = {}
@@ -149,7 +142,7 @@ def draw_wrench_sum(f1, f2, ax=None, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + 
     colour, heavier line (:func:`~planargeo.draw.style.sum_style`).
     Returns ``{"f1", "f2", "f3", "meet", ...}``.
     """
-    ax = _ax(ax)
+    ax = get_ax(ax)
     f1, f2 = _vec(f1, "f1"), _vec(f2, "f2")
     f3 = f1 + f2
     out = {}
@@ -192,7 +185,7 @@ def draw_velocity_step(v_prev, s, qd, ax=None, *,
     "v", "lever"}`` (plus ``"k"``) and ``"values"``: the arrays
     ``{"joint": s q̇, "v": v_i}``.
     """
-    ax = _ax(ax)
+    ax = get_ax(ax)
     v_prev = _vec(v_prev, "v_prev")
     u = _vec(s, "s") * float(qd)
     art = draw_twist_sum(v_prev, u, ax, labels=names, text_offsets=text_offsets)
@@ -219,7 +212,7 @@ def draw_acceleration_step(a_prev, v_prev, s, qd, qdd, ax=None, *,
     Returns the artists ``{"a_prev", "joint", "bias", "joint_total", "a",
     "lever", "joint_lever"}`` and ``"values"`` (the arrays of the same names).
     """
-    ax = _ax(ax)
+    ax = get_ax(ax)
     a_prev, v_prev, s = _vec(a_prev, "a_prev"), _vec(v_prev, "v_prev"), _vec(s, "s")
     rel = s * float(qdd)
     bias = kappa(v_prev, s, float(qd))
@@ -254,7 +247,7 @@ def draw_newton_euler(I, a, v, ax=None, *, scale=None, names=("$v$", "$a$", "$Ia
     Returns the artists ``{"inertia", "v", "a", "Ia", "p", "f_net"}`` and
     ``"values"`` (the arrays ``Ia``, ``p``, ``f_net``).
     """
-    ax = _ax(ax)
+    ax = get_ax(ax)
     I, a, v = _mat(I, "inertia"), _vec(a, "a"), _vec(v, "v")
     Ia = I @ a
     p = bias_force(I, v)
@@ -285,7 +278,7 @@ def draw_newton_euler(I, a, v, ax=None, *, scale=None, names=("$v$", "$a$", "$Ia
 # --------------------------------------------------------------------------- pole / polar
 def draw_tangent(C, q, ax=None, *, text=None):
     """The tangent ``C q`` at a point ``q`` of the conic (5.38–5.39)."""
-    ax = _ax(ax)
+    ax = get_ax(ax)
     C, q = _mat(C, "C"), _vec(q, "q")
     return {"q": plot_point(q, ax, role="twist", glyph=False, text=text),
             "tangent": plot_line(polar(C, q), ax, role="construct", scale=None)}
@@ -293,7 +286,7 @@ def draw_tangent(C, q, ax=None, *, text=None):
 
 def draw_polar_exterior(C, p, ax=None, *, names=("$P$", "$L = CP$"), L_anchor=None):
     """Polar of an exterior point (thesis 5.36, Fig. 5.2): tangents from ``p``; ``L`` joins their contacts."""
-    ax = _ax(ax)
+    ax = get_ax(ax)
     C, p = _mat(C, "C"), _vec(p, "p")
     K = polar_construction_exterior(C, p)
     out = {"conic": plot_conic(C, ax, text="$C$"),
@@ -317,7 +310,7 @@ def draw_polar_interior(C, p, ax=None, *, angles=(0.35, 1.9), names=("$P$", "$L 
     ``L_anchor`` places ``L``'s label; ``text_offsets`` are for ``P``, ``L``,
     ``R_1``, ``R_2`` (points, None: automatic).
     """
-    ax = _ax(ax)
+    ax = get_ax(ax)
     C, p = _mat(C, "C"), _vec(p, "p")
     pxy = to_xy(p)
     lines = np.stack([join(p, from_xy(pxy + [np.cos(t), np.sin(t)])) for t in angles])
@@ -347,7 +340,7 @@ def draw_percussion(I, a, ax=None, *, names=("$a$", "$f = Ia$"), dims=True, scal
     ``ρ²/d`` (centre of mass to the axis) along the line through both.
     ``f_anchor`` places the axis's label (and arrow, with ``scale``) along it.
     """
-    ax = _ax(ax)
+    ax = get_ax(ax)
     I, a = _mat(I, "inertia"), _vec(a, "a")
     f = percussion_axis(I, a)
     c = centre_of_mass(I)
@@ -387,7 +380,7 @@ def draw_power(v, I, ax=None, *, f_angle=0.6, a_distance=1.6,
     Returns the artists ``{"inertia", "v", "p", "f", "a"}`` and ``"values"``
     (the arrays ``p``, ``f``, ``a``).
     """
-    ax = _ax(ax)
+    ax = get_ax(ax)
     v, I = _vec(v, "v"), _mat(I, "inertia")
     p = I @ v
     c = centre_of_mass(I)
@@ -426,8 +419,6 @@ def draw_power(v, I, ax=None, *, f_angle=0.6, a_distance=1.6,
 # --------------------------------------------------------------------------- T/U decompositions
 def _decomposition(s, R, A):
     """``(s, R, A, T, U)`` of a joint completed by an inertia (thesis 6.36–6.37, 6.45)."""
-    from planargeo.mechanics.subspaces import Decomposition
-
     dec = Decomposition(A, s, R)
     return dec.s, dec.R, dec.A, dec.T, dec.U
 
@@ -499,7 +490,7 @@ def draw_decomposition(s, R, A, ax=None, *, reactive="U", labels=None, anchors=N
         from planargeo.errors import InputError
 
         raise InputError(f"reactive must be 'U' or 'inverse', got {reactive!r}")
-    ax = _ax(ax)
+    ax = get_ax(ax)
     s, R, A, T, U = _decomposition(s, R, A)
     AiR = np.linalg.solve(A, R)
     k, r = s.shape[1], R.shape[1]
@@ -539,7 +530,9 @@ def _arrow_scale(f, scale, arrow_length):
 
 
 def _draw_split(parts, show, T, ax, names, text_offsets, scale, arrow_length, show_T, T_anchor):
-    out = {}
+    """Draw the axis ``T`` and the chosen parts ``(a_k, f_k)``; return the artists and ``"values"``."""
+    show, ax = _parts_arg(show), get_ax(ax)
+    out = {"values": parts}
     offs = dict(text_offsets or {})
     if show_T:
         for j in range(T.shape[1]):
@@ -616,10 +609,6 @@ def draw_twist_split(s, R, A, a, ax=None, *, parts=(1, 2),
     True
     >>> plt.close("all")
     """
-    show = _parts_arg(parts)
-    ax = _ax(ax)
-    from planargeo.mechanics.subspaces import Decomposition
-
     dec = Decomposition(A, s, R)
     T, U, A = dec.T, dec.U, dec.A
     psi, gamma = dec.split_twist(_vec(a, "a"))          # (Tᵀa, Rᵀa), 6.44
@@ -628,9 +617,7 @@ def draw_twist_split(s, R, A, a, ax=None, *, parts=(1, 2),
             "f1": A @ a1, "f2": A @ a2}
     nm = {"a1": r"$a_1 = s\psi$", "a2": r"$a_2 = U\gamma$", "f1": "$f_1 = Aa_1$",
           "f2": "$f_2 = Aa_2$", **(names or {})}
-    out = _draw_split(vals, show, T, ax, nm, text_offsets, scale, arrow_length, show_T, T_anchor)
-    out["values"] = vals
-    return out
+    return _draw_split(vals, parts, T, ax, nm, text_offsets, scale, arrow_length, show_T, T_anchor)
 
 
 def draw_wrench_split(s, R, A, f, ax=None, *, parts=(1, 2),
@@ -660,10 +647,6 @@ def draw_wrench_split(s, R, A, f, ax=None, *, parts=(1, 2),
     (True, 2.0)
     >>> plt.close("all")
     """
-    show = _parts_arg(parts)
-    ax = _ax(ax)
-    from planargeo.mechanics.subspaces import Decomposition
-
     dec = Decomposition(A, s, R)
     T, U, A = dec.T, dec.U, dec.A
     Q, mu = dec.split_wrench(_vec(f, "f"))              # (sᵀf, Uᵀf), 6.38
@@ -672,9 +655,7 @@ def draw_wrench_split(s, R, A, f, ax=None, *, parts=(1, 2),
             "a1": np.linalg.solve(A, f1), "a2": np.linalg.solve(A, f2)}
     nm = {"a1": "$a_1 = A^{-1}f_1$", "a2": "$a_2 = A^{-1}f_2$", "f1": "$f_1 = TQ$",
           "f2": r"$f_2 = R\mu$", **(names or {})}
-    out = _draw_split(vals, show, T, ax, nm, text_offsets, scale, arrow_length, show_T, T_anchor)
-    out["values"] = vals
-    return out
+    return _draw_split(vals, parts, T, ax, nm, text_offsets, scale, arrow_length, show_T, T_anchor)
 
 
 def draw_projective_step(s, R, A, a_prev, a, kappa, ax=None, *,
@@ -704,7 +685,7 @@ def draw_projective_step(s, R, A, a_prev, a, kappa, ax=None, *,
     [2.0]
     >>> plt.close("all")
     """
-    ax = _ax(ax)
+    ax = get_ax(ax)
     s, R, A, T, _ = _decomposition(s, R, A)
     a_prev, a, kap = _vec(a_prev, "a_prev"), _vec(a, "a"), _vec(kappa, "kappa")
     psi, psi_prev = T.T @ a, T.T @ a_prev

@@ -81,6 +81,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from traitlets import validate
 
+from planargeo.draw.style import setup_axes
 from planargeo.errors import InputError, OutputError, PlanargeoError
 from planargeo.files import atomic_write
 
@@ -367,8 +368,14 @@ class Explorer:
     def make_controls(self) -> dict[str, W.ValueWidget]:  # pragma: no cover - abstract
         raise NotImplementedError
 
+    #: the initial view ``(x0, x1, y0, y1)`` of the equal-aspect axes (None: autoscale), and a light grid
+    limits: tuple[float, float, float, float] | None = None
+    grid: bool = True
+
     def setup_axes(self, ax) -> None:
-        ax.set_aspect("equal")
+        setup_axes(ax, self.limits, axis_off=False)
+        if self.grid:
+            ax.grid(True, lw=0.3, alpha=0.5)
 
     def make_artists(self, ax) -> None:  # pragma: no cover - abstract
         raise NotImplementedError

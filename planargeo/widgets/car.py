@@ -17,7 +17,7 @@ from matplotlib.patches import Polygon as MplPolygon
 
 from planargeo import scenes
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
-from planargeo.draw.style import COLORS, setup_axes
+from planargeo.draw.style import COLORS
 from planargeo.errors import SceneError
 from planargeo.widgets.base import Explorer, Step
 
@@ -30,6 +30,7 @@ class CarExplorer(Explorer):
     title = "Car cornering: tyre forces by projective dynamics"
     slug = "car"
     figsize = (6.0, 5.4)
+    limits = (-2, 12, -5, 8)
 
     def __init__(self, **kw):
         # the scene function itself (scenes.build checks parameter names on every call)
@@ -45,10 +46,6 @@ class CarExplorer(Explorer):
             "radius of gyration (m)": Step(0.3, 3.0, 0.05, 1.2, "radius of gyration (m)").make("rho"),
             "mass (kg)": Step(400, 3000, 50, 1200, "mass (kg)").make("m"),
         }
-
-    def setup_axes(self, ax):
-        setup_axes(ax, (-2, 12, -5, 8), axis_off=False)
-        ax.grid(True, lw=0.3, alpha=0.5)
 
     def make_artists(self, ax):
         self.body = MplPolygon(np.zeros((4, 2)), closed=True, fc=COLORS["body"], ec="black",

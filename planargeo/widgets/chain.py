@@ -41,7 +41,7 @@ from matplotlib.lines import Line2D
 
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
 from planargeo.draw.mechanism import draw_ground
-from planargeo.draw.style import COLORS, setup_axes
+from planargeo.draw.style import COLORS
 from planargeo.errors import InputError, SingularConfigurationError
 from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.mechanics.subspaces import T_of
@@ -131,6 +131,8 @@ class ChainExplorer(Explorer):
     title = "Chain: poles, forces and articulated inertias"
     slug = "chain"
     figsize = (6.4, 5.6)
+    limits = (-4.5, 4.5, -4.5, 4.5)
+    grid = False
     display_controls = OVERLAYS
 
     def make_controls(self):
@@ -176,9 +178,6 @@ class ChainExplorer(Explorer):
         return [W.HBox([self.play_button, self.progress]), self.player]
 
     # -- figure ------------------------------------------------------------------
-    def setup_axes(self, ax):
-        setup_axes(ax, (-4.5, 4.5, -4.5, 4.5), axis_off=False)
-
     def make_artists(self, ax):
         self.links_line = Line2D([], [], color=COLORS["ground"], lw=2.5, marker="o", ms=4,
                                  mfc="white", zorder=5)

@@ -35,7 +35,7 @@ from shapely.geometry import Point as SPoint
 from shapely.geometry import Polygon, box
 
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
-from planargeo.draw.style import COLORS, setup_axes
+from planargeo.draw.style import COLORS
 from planargeo.errors import InvalidPolygonError
 from planargeo.screws.inertia import Inertia, percussion_axis, percussion_pole
 from planargeo.geometry.projective import from_xy
@@ -87,6 +87,7 @@ class PercussionExplorer(Explorer):
     title = "Inertia and percussion: the sweet spot"
     slug = "percussion"
     figsize = (6.0, 4.8)
+    limits = (-0.9, 1.6, -0.9, 0.9)
     display_controls = ("angular accel. α",)
 
     def __init__(self, **kw):
@@ -107,10 +108,6 @@ class PercussionExplorer(Explorer):
             "mass (kg)": Step(0.1, 5.0, 0.05, 1.0, "mass (kg)").make("mass"),
             "angular accel. α": Step(-50, 50, 0.5, 10.0, "angular accel. α").make("alpha"),
         }
-
-    def setup_axes(self, ax):
-        setup_axes(ax, (-0.9, 1.6, -0.9, 0.9), axis_off=False)
-        ax.grid(True, lw=0.3, alpha=0.5)
 
     def make_artists(self, ax):
         self.body = MplPolygon(np.zeros((3, 2)), closed=True, fc=COLORS["body"], ec="black",

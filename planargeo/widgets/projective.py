@@ -29,7 +29,6 @@ from planargeo.geometry.conics import (centre, classify, conic_circle, conic_ell
                       conic_parabola, polar, polar_construction_interior, pole,
                       tangents_from_point)
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
-from planargeo.draw.style import setup_axes
 from planargeo.errors import DegenerateGeometryError
 from planargeo.geometry.projective import from_xy
 from planargeo.widgets.base import Explorer, Step
@@ -82,6 +81,7 @@ class ProjectiveExplorer(Explorer):
     title = "Projective playground: poles, polars and constructions"
     slug = "projective"
     figsize = (5.6, 5.4)
+    limits = (-4, 4, -4, 4)
     display_controls = ("construction", "line and its pole")
 
     def make_controls(self):
@@ -101,10 +101,6 @@ class ProjectiveExplorer(Explorer):
             "line and its pole": W.Checkbox(value=True, description="line and its pole",
                                             indent=False),
         }
-
-    def setup_axes(self, ax):
-        setup_axes(ax, (-4, 4, -4, 4), axis_off=False)
-        ax.grid(True, lw=0.3, alpha=0.5)
 
     def make_artists(self, ax):
         z = np.array([0.0, 0.0, 1.0])

@@ -22,7 +22,6 @@ import ipywidgets as W
 import numpy as np
 
 from planargeo.draw.artists import LineArtist, PointArtist
-from planargeo.draw.style import setup_axes
 from planargeo.screws.twists import Twist, Wrench, add_twists, add_wrenches
 from planargeo.widgets.base import Explorer, Step
 
@@ -62,6 +61,7 @@ class ScrewSumExplorer(Explorer):
     title = "Twist and wrench addition"
     slug = "screw-sum"
     figsize = (5.6, 5.0)
+    limits = (-4, 4, -4, 4)
 
     def make_controls(self):
         kinds = W.ToggleButtons(options=("twists", "wrenches"), value="twists", description="add")
@@ -83,10 +83,6 @@ class ScrewSumExplorer(Explorer):
                    "wrenches": {"rotation": "force", "translation": "couple"}}[values["add"]]
         return {f"kind{k}": mapping[values[f"kind{k}"]] for k in (1, 2)
                 if values[f"kind{k}"] in mapping}
-
-    def setup_axes(self, ax):
-        setup_axes(ax, (-4, 4, -4, 4), axis_off=False)
-        ax.grid(True, lw=0.3, alpha=0.5)
 
     def make_artists(self, ax):
         z = np.array([0.0, 0.0, 1.0])
@@ -147,10 +143,7 @@ class ScrewSumExplorer(Explorer):
             else:
                 self.join.set_line(c.line)
             out.update({"case": c.case, "ω1": c.omega1, "ω2": c.omega2, "ω1+ω2": c.omega3,
-                        "β": "—" if c.beta is None else c.beta,
-                        "ρ": "—" if c.rho is None else c.rho,
                         "pole of sum": _xy_or_ideal(c.P)})
-            out["sum"] = tuple(float(x) for x in c.sum.array)
         else:
             self.l1.set_line(c.f1.array)
             self.l2.set_line(c.f2.array)
@@ -168,8 +161,7 @@ class ScrewSumExplorer(Explorer):
             else:
                 self.meet.set_point(c.P)
             out.update({"case": c.case, "F1": c.F1, "F2": c.F2, "|F1+F2|": c.F3,
-                        "β": "—" if c.beta is None else c.beta,
-                        "ρ": "—" if c.rho is None else c.rho,
                         "meet of lines": _meet_label(c)})
-            out["sum"] = tuple(float(x) for x in c.sum.array)
+        out.update({"β": "—" if c.beta is None else c.beta, "ρ": "—" if c.rho is None else c.rho,
+                    "sum": tuple(float(x) for x in c.sum.array)})
         return out

@@ -31,7 +31,7 @@ from planargeo import scenes
 from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_solve
 from planargeo.draw.artists import LineArtist, PointArtist
 from planargeo.draw.mechanism import draw_ground
-from planargeo.draw.style import COLORS, setup_axes
+from planargeo.draw.style import COLORS
 from planargeo.widgets.base import Explorer, Step, cached
 
 __all__ = ["SliderCrankExplorer"]
@@ -46,6 +46,7 @@ class SliderCrankExplorer(Explorer):
     title = "Slider-crank: a closed loop"
     slug = "slider-crank"
     figsize = (5.4, 6.0)
+    limits = (-4.5, 4.5, -3.5, 9.0)
     display_controls = ("velocity poles", "acceleration poles")
 
     def __init__(self, **kw):
@@ -71,10 +72,6 @@ class SliderCrankExplorer(Explorer):
             "acceleration poles": W.Checkbox(value=True, description="acceleration poles",
                                              indent=False),
         }
-
-    def setup_axes(self, ax):
-        setup_axes(ax, (-4.5, 4.5, -3.5, 9.0), axis_off=False)
-        ax.grid(True, lw=0.3, alpha=0.5)
 
     def make_artists(self, ax):
         self.guide = Line2D([-0.35, -0.35, np.nan, 0.35, 0.35], [-20, 20, np.nan, -20, 20],

@@ -24,7 +24,7 @@ from planargeo import scenes
 from planargeo.scenes.trees import tree_dof, tree_model, tree_solve
 from planargeo.draw.artists import LineArtist, PointArtist
 from planargeo.draw.mechanism import draw_ground
-from planargeo.draw.style import COLORS, setup_axes
+from planargeo.draw.style import COLORS
 from planargeo.widgets.base import Explorer, Step, cached
 
 __all__ = ["TreeExplorer"]
@@ -38,6 +38,7 @@ class TreeExplorer(Explorer):
     title = "Trees and loops: Fig 9.2 and its contact forces"
     slug = "trees"
     figsize = (5.6, 5.6)
+    limits = (-2.8, 2.8, -0.6, 5.0)
     display_controls = ("velocity poles", "acceleration poles", "contact forces")
 
     def __init__(self, **kw):
@@ -57,10 +58,6 @@ class TreeExplorer(Explorer):
                                              indent=False),
             "contact forces": W.Checkbox(value=True, description="contact forces", indent=False),
         }
-
-    def setup_axes(self, ax):
-        setup_axes(ax, (-2.8, 2.8, -0.6, 5.0), axis_off=False)
-        ax.grid(True, lw=0.3, alpha=0.5)
 
     def make_artists(self, ax):
         self.links = Line2D([], [], color=COLORS["ground"], lw=2.5, solid_capstyle="round", zorder=5)
