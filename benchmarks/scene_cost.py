@@ -268,7 +268,7 @@ def cases() -> list:
              lambda: scenes.build("slider-crank", psi=0.7), lambda: sc_ex.compute(v_sc, set()),
              read_full=slider_crank_explorer_reads, read_minimal=slider_crank_compute_reads, exact=False),
         Case("scene", "tree", "tree explorer, loops open: its compute step vs the scene",
-             "the direct solution 9.48 (`tree_mobilities`, `qdd_direct`: the report's cross-check), C, Δ⁻¹, "
+             "the direct solution 9.48 (`mobility_recursion`, `qdd_direct`: the report's cross-check), C, Δ⁻¹, "
              "the model rebuild: the explorer runs one stacked solve on a cached model",
              lambda: scenes.build("tree", speed=0.7), lambda: tr_ex.compute(v_open, set()),
              read_full=tree_scene_reads, read_minimal=tree_compute_reads, exact=False, rtol=1e-12),
@@ -323,7 +323,7 @@ def cases() -> list:
 #: (group, scene, consumer, what the lighter side skips) of :func:`explorer_cases`, in order
 EXPLORER_LABELS = (
     ("explorer", "chain", "chain explorer (10 links): compute step with the T/U split drawn vs not",
-     "the per-joint T/U split (`tu_split`, `percussion_space`): derived in `render` only when shown"),
+     "the per-joint T/U split (`tu_split`, `T_of`): derived in `render` only when shown"),
     ("explorer", "chain", "chain explorer (10 links, default overlays): compute step",
      "the ABA workspace (`articulated_body`, vectorised path): q̈ by the compiled plan and one Newton–Euler "
      "pass give every drawn and read number unless the articulated inertias or the T/U split are shown "
