@@ -176,5 +176,8 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     array([[-14.715],
            [  0.   ]])
     """
-    out = evaluate(model, False, q, qd, tau, f_ext)
-    return out if out is not None else articulated_body(model, q, qd, tau, f_ext).qdd
+    return evaluate(model, False, q, qd, tau, f_ext, _general)
+
+
+def _general(model, q, qd, tau, f_ext):
+    return articulated_body(model, q, qd, tau, f_ext).qdd

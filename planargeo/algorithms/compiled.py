@@ -4,16 +4,16 @@
 them on the first call for a model the kernels cover (joints all revolute, prismatic or
 fixed), and numba compiles each kernel on its first use (then loads it from its cache).
 
-A call takes one of three roads, all giving the same numbers:
+A call (:func:`evaluate`) takes one of three roads, all giving the same numbers:
 
 * one state given as float64 arrays of the right shapes goes straight to the kernel,
   which checks that it is finite (:func:`is_plain_state`);
 * anything else (lists, other dtypes, batches, broadcasting) is validated by
   :func:`planargeo.mechanics.kinematics.check_state` and handed over as C-contiguous
-  float64 rows (:func:`evaluate`);
-* a kernel that declines (non-finite input or result, a singular joint) returns ``None``,
-  and the caller runs the general array recursion, which raises the package's named
-  error (or answers, where the kernel's quick test was only cautious).
+  float64 rows;
+* where a kernel declines (non-finite input or result, a singular joint), the general
+  array recursion runs instead, and raises the package's named error (or answers,
+  where the kernel's quick test was only cautious).
 
 :func:`check_finite` is the last step of every general path: finite input that gives a
 non-finite result raises :class:`~planargeo.errors.NumericOverflowError`.
@@ -63,35 +63,46 @@ def is_plain_state(model, x, y, z, f_ext) -> bool:
             and (f_ext is None or (type(f_ext) is np.ndarray and f_ext.dtype is _F64 and f_ext.shape == (model.N, 3))))
 
 
-def evaluate(model, inverse: bool, q, qd, z, f_ext):
-    """Forward (``z = τ``) or inverse (``inverse=True``, ``z = q̈``) dynamics by the compiled kernels.
+def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
+    """Forward (``z = τ``) or inverse (``inverse=True``, ``z = q̈``) dynamics: the kernels, else ``general``.
 
-    Returns ``q̈`` or ``τ`` (..., nq), or None where the kernels do not cover the model or
-    decline the state: the caller then runs its general recursion.  Arguments that
-    :func:`is_plain_state` does not accept are validated by
+    ``general(model, q, qd, z, f_ext)`` is the caller's general recursion, run for a model
+    the kernels do not cover, or where they decline a state: on a declined state of a
+    batch alone first, so that the batch raises that state's error, as it would alone.
+    Arguments that :func:`is_plain_state` does not accept are validated by
     :func:`~planargeo.mechanics.kinematics.check_state` and handed over as C-contiguous
     float64 rows.
+
+    Returns
+    -------
+    ndarray (..., nq)
+        ``q̈`` or ``τ``.
     """
     compiled = kernels_for(model)
     if compiled is None:
-        return None
+        return general(model, q, qd, z, f_ext)
     kernels, tables = compiled
     one = kernels.inverse_dynamics_one if inverse else kernels.forward_dynamics_one
     if is_plain_state(model, q, qd, z, f_ext):
-        return one(*tables, q, qd, z, f_ext)
+        out = one(*tables, q, qd, z, f_ext)
+        return out if out is not None else general(model, q, qd, z, f_ext)
     if inverse:
         q, qd, _, f_ext, z, shape = check_state(model, q, qd, None, f_ext, qdd=z)
     else:
         q, qd, z, f_ext, _, shape = check_state(model, q, qd, z, f_ext)
     nq, N = model.nq, model.N
     if shape == ():
-        return one(*tables, *(np.ascontiguousarray(a) for a in (q, qd, z)),
-                   None if f_ext is None else np.ascontiguousarray(f_ext))
+        out = one(*tables, *(np.ascontiguousarray(a) for a in (q, qd, z)),
+                  None if f_ext is None else np.ascontiguousarray(f_ext))
+        return out if out is not None else general(model, q, qd, z, f_ext)
     B = math.prod(shape)
     rows = [np.ascontiguousarray(np.broadcast_to(a, shape + (nq,)).reshape(B, nq)) for a in (q, qd, z)]
     fe = None if f_ext is None else np.ascontiguousarray(np.broadcast_to(f_ext, shape + (N, 3)).reshape(B, N, 3))
-    out = (kernels.inverse_dynamics_many if inverse else kernels.forward_dynamics_many)(*tables, *rows, fe)
-    return None if out is None else out.reshape(shape + (nq,))
+    out, declined = (kernels.inverse_dynamics_many if inverse else kernels.forward_dynamics_many)(*tables, *rows, fe)
+    if declined < 0:
+        return out.reshape(shape + (nq,))
+    general(model, *(r[declined] for r in rows), None if fe is None else fe[declined])   # raises, as it would alone
+    return general(model, q, qd, z, f_ext)       # or the kernel was only cautious: the batch by the general path
 
 
 def check_finite(result, what: str, **inputs):

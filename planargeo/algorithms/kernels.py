@@ -30,6 +30,7 @@ import math
 import threading
 from collections import namedtuple
 
+import numba
 import numpy as np
 from numba import njit, prange
 
@@ -75,7 +76,7 @@ def tables(model):
     return kind, parent, body, np.array(model.gravity, dtype=float)
 
 
-@jit
+@inline
 def workspace(N):
     """Fresh arrays for one state of an ``N``-body model (see :data:`Workspace`)."""
     return Workspace(np.empty((N, 4)), np.empty((N, 2)), np.empty((N, 3)), np.empty((N, 3)), np.empty((N, 3)),
@@ -290,43 +291,59 @@ def inverse_dynamics_one(kind, parent, body, gravity, q, qd, qdd, fext):
 
 
 @njit(cache=True, nogil=True, error_model="numpy", parallel=True)
-def _many(state, model, x, y, z, fext, out):
-    """``state`` on every row of the (B, nq) arrays ``x, y, z`` into ``out`` (``fext`` (B, N, 3) or None).
+def _blocks(inverse, model, x, y, z, fext, out):
+    """One state kernel on every row of the (B, nq) arrays ``x, y, z`` into ``out`` (``fext`` (B, N, 3) or None).
 
-    The states go in blocks of :data:`BLOCK`, one workspace per block, the blocks shared
-    among numba's threads.  Returns whether every state succeeded.
+    ``inverse``: :func:`newton_euler_state` (``z = q̈``), else :func:`articulated_body_state`
+    (``z = τ``).  The states go in blocks of :data:`BLOCK`, one workspace per block,
+    the blocks shared among numba's threads.  Returns the index of the
+    first state declined, or -1.
     """
     B = x.shape[0]
     nblocks = (B + BLOCK - 1) // BLOCK
-    ok = np.ones(nblocks, dtype=np.bool_)
+    declined = np.full(nblocks, B)
     for blk in prange(nblocks):
         w = workspace(model[0].shape[0])
         for b in range(blk * BLOCK, min(B, (blk + 1) * BLOCK)):
-            if fext is None:
-                good = state(model, x[b], y[b], z[b], None, w, out[b])
+            f = None if fext is None else fext[b]
+            if inverse:
+                good = newton_euler_state(model, x[b], y[b], z[b], f, w, out[b])
             else:
-                good = state(model, x[b], y[b], z[b], fext[b], w, out[b])
+                good = articulated_body_state(model, x[b], y[b], z[b], f, w, out[b])
             if not good:
-                ok[blk] = False
+                declined[blk] = b
                 break
-    return ok.all()
+    first = declined.min() if nblocks else B
+    return first if first < B else -1
 
 
-#: numba's default threading layer ("workqueue") must not run two parallel kernels at once
+#: batches of fewer states run on one thread: waking the others costs more than they save (and, on a
+#: machine busy with other work, may cost milliseconds)
+PARALLEL_STATES = 4 * BLOCK
+#: numba's threading layers must not run two parallel kernels at once from two Python threads
 _PARALLEL = threading.Lock()
 
 
-def forward_dynamics_many(kind, parent, body, gravity, q, qd, tau, fext):
-    """``q̈`` (B, nq) of B states (C-contiguous float64 (B, nq), ``fext`` (B, N, 3) or None), or None: see the module."""
-    qdd = np.empty(q.shape)
+def _many(inverse, kind, parent, body, gravity, x, y, z, fext):
+    out = np.empty(x.shape)
     with _PARALLEL:
-        ok = _many(articulated_body_state, (kind, parent, body, gravity), q, qd, tau, fext, qdd)
-    return qdd if ok else None
+        threads = numba.get_num_threads()
+        numba.set_num_threads(threads if x.shape[0] >= PARALLEL_STATES else 1)
+        try:
+            return out, _blocks(inverse, (kind, parent, body, gravity), x, y, z, fext, out)
+        finally:
+            numba.set_num_threads(threads)
+
+
+def forward_dynamics_many(kind, parent, body, gravity, q, qd, tau, fext):
+    """``(q̈, declined)`` of B states (C-contiguous float64 (B, nq), ``fext`` (B, N, 3) or None).
+
+    ``q̈`` (B, nq) is valid when ``declined`` is -1, else ``declined`` is the first state the
+    kernel declined (see the module).
+    """
+    return _many(False, kind, parent, body, gravity, q, qd, tau, fext)
 
 
 def inverse_dynamics_many(kind, parent, body, gravity, q, qd, qdd, fext):
-    """``τ`` (B, nq) of B states (C-contiguous float64 (B, nq), ``fext`` (B, N, 3) or None), or None: see the module."""
-    tau = np.empty(q.shape)
-    with _PARALLEL:
-        ok = _many(newton_euler_state, (kind, parent, body, gravity), q, qd, qdd, fext, tau)
-    return tau if ok else None
+    """``(τ, declined)`` of B states (C-contiguous float64 (B, nq), ``fext`` (B, N, 3) or None), as above."""
+    return _many(True, kind, parent, body, gravity, q, qd, qdd, fext)

@@ -125,8 +125,11 @@ def inverse_dynamics(model: Model, q, qd, qdd, f_ext=None, *, return_forces: boo
     array([[4.905],
            [0.   ]])
     """
-    out = None if return_forces else evaluate(model, True, q, qd, qdd, f_ext)
-    if out is not None:
-        return out
-    w = newton_euler(model, q, qd, qdd, f_ext)
-    return (w.tau, w.f) if return_forces else w.tau
+    if return_forces:
+        w = newton_euler(model, q, qd, qdd, f_ext)
+        return w.tau, w.f
+    return evaluate(model, True, q, qd, qdd, f_ext, _general)
+
+
+def _general(model, q, qd, qdd, f_ext):
+    return newton_euler(model, q, qd, qdd, f_ext).tau
