@@ -7,13 +7,14 @@ fixed), and numba compiles each kernel on its first use (then loads it from its 
 A call (:func:`evaluate`) takes one of three roads, all giving the same numbers:
 
 * one state given as float64 arrays of the right shapes goes straight to the kernel,
-  which checks that it is finite (:func:`is_plain_state`);
+  which checks that it is finite;
 * anything else (lists, other dtypes, batches, broadcasting) is validated by
   :func:`planargeo.mechanics.kinematics.check_state` and handed over as C-contiguous
   float64 rows;
-* where a kernel declines (non-finite input or result, a singular joint), the general
-  array recursion runs instead, and raises the package's named error (or answers,
-  where the kernel's quick test was only cautious).
+* a state the kernel does not finish raises: a singular joint (the kernel measures
+  the rule of :data:`~planargeo.mechanics.subspaces.COND_LIMIT` at the joint's point)
+  :class:`~planargeo.errors.SingularConfigurationError`, a non-finite input or result
+  the error the general array recursion raises for it, naming the argument.
 
 :func:`check_finite` is the last step of every general path: finite input that gives a
 non-finite result raises :class:`~planargeo.errors.NumericOverflowError`.
@@ -21,24 +22,31 @@ non-finite result raises :class:`~planargeo.errors.NumericOverflowError`.
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 
 from planargeo.errors import NumericOverflowError
 from planargeo.mechanics.kinematics import check_state
+from planargeo.mechanics.subspaces import singular_joint_error
 
-__all__ = ["kernels_for", "is_plain_state", "evaluate", "check_finite"]
+__all__ = ["Compiled", "kernels_for", "evaluate", "check_finite"]
 
 _F64 = np.dtype(np.float64)
 
 
+#: What :func:`kernels_for` returns: the kernels module, the model's tables, and the shapes of
+#: one state ``(nq,)`` and of one set of external wrenches ``(N, 3)``
+Compiled = namedtuple("Compiled", "kernels tables state wrenches")
+
+
 def kernels_for(model):
-    """``(kernels module, model tables)`` if the compiled kernels cover ``model``, else None (cached on the model).
+    """The :data:`Compiled` kernels of ``model`` if they cover it, else None (cached on the model).
 
     Examples
     --------
     >>> from planargeo.mechanics.model import Body, Joint, Model, chain_model
-    >>> kernels_for(chain_model(2))[1][0]             # joint codes: revolute
+    >>> kernels_for(chain_model(2)).tables[0]            # joint codes: revolute
     array([1, 1])
     >>> kernels_for(Model([Body(1.0)], [Joint("plane")], [-1])) is None
     True
@@ -48,28 +56,20 @@ def kernels_for(model):
         from planargeo.algorithms import kernels     # numba: imported on first use
 
         tables = kernels.tables(model)
-        cache["kernels"] = None if tables is None else (kernels, tables)
+        cache["kernels"] = None if tables is None else Compiled(kernels, tables, (model.nq,), (model.N, 3))
     return cache["kernels"]
-
-
-def is_plain_state(model, x, y, z, f_ext) -> bool:
-    """Whether ``x, y, z`` are float64 arrays (nq,) and ``f_ext`` None or one (N, 3).
-
-    Such a state needs no conversion: the kernel itself checks that it is finite (a
-    non-contiguous or read-only array is passed as it is: numba compiles for its layout).
-    """
-    return (type(x) is type(y) is type(z) is np.ndarray and x.dtype is y.dtype is z.dtype is _F64
-            and x.shape == y.shape == z.shape == (model.nq,)
-            and (f_ext is None or (type(f_ext) is np.ndarray and f_ext.dtype is _F64 and f_ext.shape == (model.N, 3))))
 
 
 def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
     """Forward (``z = τ``) or inverse (``inverse=True``, ``z = q̈``) dynamics: the kernels, else ``general``.
 
     ``general(model, q, qd, z, f_ext)`` is the caller's general recursion, run for a model
-    the kernels do not cover, or where they decline a state: on a declined state of a
-    batch alone first, so that the batch raises that state's error, as it would alone.
-    Arguments that :func:`is_plain_state` does not accept are validated by
+    the kernels do not cover.  A state a kernel does not finish raises: a singular joint
+    the kernel's :class:`~planargeo.errors.SingularConfigurationError`, anything else the
+    error ``general`` raises for it (a batch: for its first such state, as it would alone).
+    One state given as float64 arrays of the right shapes goes to the kernel as it is (the
+    kernel checks that it is finite; a non-contiguous or read-only array is passed as it
+    is: numba compiles for its layout); anything else is validated by
     :func:`~planargeo.mechanics.kinematics.check_state` and handed over as C-contiguous
     float64 rows.
 
@@ -78,31 +78,50 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
     ndarray (..., nq)
         ``q̈`` or ``τ``.
     """
-    compiled = kernels_for(model)
-    if compiled is None:
+    c = model._arrays.get("kernels", False)
+    if c is False:
+        c = kernels_for(model)
+    if c is None:
         return general(model, q, qd, z, f_ext)
-    kernels, tables = compiled
+    kernels, tables = c.kernels, c.tables
     one = kernels.inverse_dynamics_one if inverse else kernels.forward_dynamics_one
-    if is_plain_state(model, q, qd, z, f_ext):
+    if (type(q) is type(qd) is type(z) is np.ndarray and q.dtype is qd.dtype is z.dtype is _F64
+            and q.shape == qd.shape == z.shape == c.state
+            and (f_ext is None or (type(f_ext) is np.ndarray and f_ext.dtype is _F64 and f_ext.shape == c.wrenches))):
         out = one(*tables, q, qd, z, f_ext)
-        return out if out is not None else general(model, q, qd, z, f_ext)
+        return out if out is not None else _failed(kernels, tables, model, inverse, q, qd, z, f_ext, general)
     if inverse:
         q, qd, _, f_ext, z, shape = check_state(model, q, qd, None, f_ext, qdd=z)
     else:
         q, qd, z, f_ext, _, shape = check_state(model, q, qd, z, f_ext)
     nq, N = model.nq, model.N
-    if shape == ():
-        out = one(*tables, *(np.ascontiguousarray(a) for a in (q, qd, z)),
-                  None if f_ext is None else np.ascontiguousarray(f_ext))
-        return out if out is not None else general(model, q, qd, z, f_ext)
     B = math.prod(shape)
-    rows = [np.ascontiguousarray(np.broadcast_to(a, shape + (nq,)).reshape(B, nq)) for a in (q, qd, z)]
-    fe = None if f_ext is None else np.ascontiguousarray(np.broadcast_to(f_ext, shape + (N, 3)).reshape(B, N, 3))
+    rows = [_rows(a, shape + (nq,), (B, nq)) for a in (q, qd, z)]
+    fe = None if f_ext is None else _rows(f_ext, shape + (N, 3), (B, N, 3))
+    if shape == ():
+        out = one(*tables, *(r[0] for r in rows), None if fe is None else fe[0])
+        return out if out is not None else _failed(kernels, tables, model, inverse, q, qd, z, f_ext, general)
     out, declined = (kernels.inverse_dynamics_many if inverse else kernels.forward_dynamics_many)(*tables, *rows, fe)
     if declined < 0:
         return out.reshape(shape + (nq,))
-    general(model, *(r[declined] for r in rows), None if fe is None else fe[declined])   # raises, as it would alone
-    return general(model, q, qd, z, f_ext)       # or the kernel was only cautious: the batch by the general path
+    _failed(kernels, tables, model, inverse, *(r[declined] for r in rows), None if fe is None else fe[declined],
+            general)
+    return general(model, q, qd, z, f_ext)       # not reached: the state raises, as it would alone
+
+
+def _rows(a, full, flat):
+    """``a`` broadcast to ``full``, as a writeable C-contiguous float64 array of shape ``flat`` (numba's one type)."""
+    return np.require(np.broadcast_to(a, full).reshape(flat), dtype=np.float64, requirements="CW")
+
+
+def _failed(kernels, tables, model, inverse, q, qd, z, f_ext, general):
+    """Raise the error of a state the kernel did not finish (validated arrays (nq,), ``f_ext`` (N, 3) or None)."""
+    if not inverse:
+        joint, cond = kernels.singular_joint(*tables, *(_rows(a, (model.nq,), (model.nq,)) for a in (q, qd, z)),
+                                             None if f_ext is None else _rows(f_ext, (model.N, 3), (model.N, 3)))
+        if joint >= 0:
+            raise singular_joint_error(joint, cond)
+    return general(model, q, qd, z, f_ext)    # raises the named error (not finite, overflow)
 
 
 def check_finite(result, what: str, **inputs):

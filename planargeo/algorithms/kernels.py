@@ -7,18 +7,24 @@ the bodies, on arrays allocated once per call (:func:`workspace`), compiled by n
 (``@njit(cache=True)``: compiled on first use, then loaded from numba's cache).  Run
 with ``NUMBA_DISABLE_JIT=1`` they are ordinary Python, to step through in a debugger.
 
-Everything is at the world origin (the thesis's absolute formulation, as in
-:func:`planargeo.algorithms.aba.articulated_body`): a revolute joint at ``(x, y)`` is the
-twist ``s = [y, -x, 1]``, a prismatic joint along ``(c, s)`` is ``s = [c, s, 0]``, a
-fixed joint has no column.  Trees are handled by summing every child into its parent
-(3.38-3.39 with ``i+1`` read as "each child of ``i``").
+**Each body at its joint.**  The equations of 3.6 hold at any reference point, as long as
+the quantities they combine are taken at the same one.  Here body ``i``'s twist,
+inertia, forces and accelerations are taken at its joint's point ``o_i`` (world axes),
+where its joint is simplest: a revolute joint is ``s = [0, 0, 1]``, a prismatic joint
+along ``(c, s)`` is ``s = [c, s, 0]``, a fixed joint has no column.  Between a body and
+its parent, twists and accelerations move out by ``r_i = o_i - o_λ`` (``X_P``, thesis
+4.8) and wrenches and inertias move in (4.24, 1.68): the parent's step then reads the
+child's articulated inertia and bias force at its own point.  Only these offsets, never
+world positions, enter the dynamics, so a mechanism far from the origin is computed as
+accurately as one at it; and the singularity rule of
+:data:`planargeo.mechanics.subspaces.COND_LIMIT`, measured at the joint's point, reads
+``A_i`` and ``s_i`` as they are.  Trees sum every child into its parent (3.38-3.39 with
+``i+1`` read as "each child of ``i``").
 
-A kernel returns ``False`` (an entry point ``None``) instead of a result when the state
-needs the general path: an input that is not finite, a result that overflows, or a joint
-that the singularity rule of :data:`planargeo.mechanics.subspaces.COND_LIMIT` refuses or
-cannot judge cheaply.  The general path (``articulated_body``, ``newton_euler``) then
-raises the package's error naming the problem, or answers where this quick test was only
-cautious, so both paths give the same answers and the same errors.
+A state kernel returns ``-1`` when it succeeded, the index of a joint the singularity
+rule refuses (its condition number left in ``w.Dinv``), or ``-2`` when an input or the
+result is not finite: the caller then runs the general path, which raises the package's
+error naming the argument.
 
 Model tables (:func:`tables`): ``kind`` (N,) joint codes, ``parent`` (N,), ``body``
 (N, 8) ``[px, py, cos θ, sin θ, m, cx, cy, J]`` (joint placement in the parent's frame,
@@ -34,26 +40,29 @@ import numba
 import numpy as np
 from numba import njit, prange
 
-from planargeo.mechanics.subspaces import COND_LIMIT2
+from planargeo.mechanics.subspaces import COND_LIMIT, COND_LIMIT2
 
-__all__ = ["FIXED", "REVOLUTE", "PRISMATIC", "BLOCK", "tables", "workspace", "articulated_body_state",
-           "newton_euler_state", "forward_dynamics_one", "forward_dynamics_many", "inverse_dynamics_one",
-           "inverse_dynamics_many"]
+__all__ = ["FIXED", "REVOLUTE", "PRISMATIC", "BLOCK", "OK", "NOT_FINITE", "tables", "workspace",
+           "kinematics_state", "articulated_body_state", "newton_euler_state", "forward_dynamics_one",
+           "forward_dynamics_many", "inverse_dynamics_one", "inverse_dynamics_many", "singular_joint"]
 
 FIXED, REVOLUTE, PRISMATIC = 0, 1, 2
 _CODES = {"fixed": FIXED, "revolute": REVOLUTE, "prismatic": PRISMATIC}
+#: what a state kernel returns when it succeeded, and when an input or the result is not finite
+OK, NOT_FINITE = -1, -2
 #: states per block of a batch: one workspace per block, the blocks shared among numba's threads
 BLOCK = 256
 
 jit = njit(cache=True, nogil=True, error_model="numpy")
 inline = njit(cache=True, nogil=True, error_model="numpy", inline="always")
 
-#: Per-state arrays, one row per body: ``pose`` (x, y, cos θ, sin θ) of the body frame,
-#: ``origin`` the joint's point, ``s`` the joint twist, ``v`` (3.32), ``kappa`` (3.33), ``I``
-#: the inertia at the origin (then the articulated inertia ``A``), ``p`` the bias force (3.34;
-#: then ``d``, or the joint force ``f``), ``U = A s``, ``Dinv = (sᵀAs)⁻¹``, ``u = τ - sᵀ(Aκ + d)``,
-#: ``a`` the acceleration (3.42, 2.18).
-Workspace = namedtuple("Workspace", "pose origin s v kappa I p U Dinv u a")
+#: Per-state arrays, one row per body, all at the body's joint point ``o_i`` (world axes):
+#: ``origin`` ``o_i`` in the world, ``r`` the offset ``o_i - o_λ`` from the parent's point,
+#: ``frame`` the body frame (its origin less ``o_i``, then cos θ, sin θ), ``s`` the joint twist,
+#: ``v`` (3.32), ``kappa`` (3.33), ``I`` the inertia (then the articulated inertia ``A``),
+#: ``p`` the bias force (3.34; then ``d``, or the joint force ``f``), ``U = A s``,
+#: ``Dinv = (sᵀAs)⁻¹``, ``u = τ - sᵀ(Aκ + d)``, ``a`` the acceleration (3.42, 2.18).
+Workspace = namedtuple("Workspace", "origin r frame s v kappa I p U Dinv u a")
 
 
 def tables(model):
@@ -79,9 +88,9 @@ def tables(model):
 @inline
 def workspace(N):
     """Fresh arrays for one state of an ``N``-body model (see :data:`Workspace`)."""
-    return Workspace(np.empty((N, 4)), np.empty((N, 2)), np.empty((N, 3)), np.empty((N, 3)), np.empty((N, 3)),
-                     np.empty((N, 3, 3)), np.empty((N, 3)), np.empty((N, 3)), np.empty(N), np.empty(N),
-                     np.empty((N, 3)))
+    return Workspace(np.empty((N, 2)), np.empty((N, 2)), np.empty((N, 4)), np.empty((N, 3)), np.empty((N, 3)),
+                     np.empty((N, 3)), np.empty((N, 3, 3)), np.empty((N, 3)), np.empty((N, 3)), np.empty(N),
+                     np.empty(N), np.empty((N, 3)))
 
 
 @inline
@@ -96,10 +105,11 @@ def _finite(x):
 
 @jit
 def kinematics_state(model, q, qd, fext, w):
-    """Poses, joint twists, velocities, bias terms and inertias of every body, base to tip (thesis 3.31-3.34).
+    """Joint points, joint twists, velocities, bias terms and inertias of every body, base to tip (thesis 3.31-3.34).
 
-    Fills ``w.pose, w.origin, w.s, w.v, w.kappa, w.I, w.p`` for the state ``q, qd``
-    (``fext``: (N, 3) external wrenches at the origin, or None).
+    Fills ``w.origin, w.r, w.frame, w.s, w.v, w.kappa, w.I, w.p`` for the state ``q, qd``
+    (``fext``: (N, 3) external wrenches at the world origin, or None), each body at its
+    joint's point.
     """
     kind, parent, body, gravity = model
     k = 0                                           # the next joint coordinate
@@ -107,43 +117,45 @@ def kinematics_state(model, q, qd, fext, w):
         px, py, cp, sp = body[i, 0], body[i, 1], body[i, 2], body[i, 3]
         m, bx, by, J = body[i, 4], body[i, 5], body[i, 6], body[i, 7]
         lam = parent[i]
-        if lam < 0:                                 # v_0 = 0 (3.31): the ground
-            ox, oy, c, s = px, py, cp, sp
+        if lam < 0:                                 # v_0 = 0 (3.31): the ground, at the world origin
+            rx, ry, c, s = px, py, cp, sp
+            ox, oy = px, py
             vx = vy = w_ = 0.0
-        else:                                       # the joint frame, placed in the parent's frame
-            x, y, cl, sl = w.pose[lam, 0], w.pose[lam, 1], w.pose[lam, 2], w.pose[lam, 3]
-            ox, oy = x + cl * px - sl * py, y + sl * px + cl * py
+        else:                                       # the joint's point, placed in the parent's frame
+            fx, fy, cl, sl = w.frame[lam, 0], w.frame[lam, 1], w.frame[lam, 2], w.frame[lam, 3]
+            rx, ry = fx + cl * px - sl * py, fy + sl * px + cl * py
             c, s = cl * cp - sl * sp, sl * cp + cl * sp
-            vx, vy, w_ = w.v[lam, 0], w.v[lam, 1], w.v[lam, 2]
-        qdi = 0.0
-        if kind[i] == REVOLUTE:                     # s = [y, -x, 1]: the joint's point (4.10)
+            ox, oy = w.origin[lam, 0] + rx, w.origin[lam, 1] + ry
+            w_ = w.v[lam, 2]                        # v_λ moved out to o_i (4.8)
+            vx, vy = w.v[lam, 0] - ry * w_, w.v[lam, 1] + rx * w_
+        w.origin[i, 0], w.origin[i, 1], w.r[i, 0], w.r[i, 1] = ox, oy, rx, ry
+        qdi = fx = fy = 0.0                         # (fx, fy): the body frame's origin less o_i
+        if kind[i] == REVOLUTE:                     # s = [0, 0, 1]: a rotation about o_i (4.10)
             qi, qdi = q[k], qd[k]
-            w.s[i, 0], w.s[i, 1], w.s[i, 2] = oy, -ox, 1.0
+            w.s[i, 0], w.s[i, 1], w.s[i, 2] = 0.0, 0.0, 1.0
             cq, sq = math.cos(qi), math.sin(qi)
-            x, y, c, s = ox, oy, c * cq - s * sq, s * cq + c * sq
+            c, s = c * cq - s * sq, s * cq + c * sq
             k += 1
-        elif kind[i] == PRISMATIC:                  # s = [c, s, 0]: the direction of sliding, at infinity
+        elif kind[i] == PRISMATIC:                  # s = [c, s, 0]: the direction of sliding, a point at infinity
             qi, qdi = q[k], qd[k]
             w.s[i, 0], w.s[i, 1], w.s[i, 2] = c, s, 0.0
-            x, y = ox + qi * c, oy + qi * s
+            fx, fy = qi * c, qi * s
             k += 1
         else:                                       # fixed: no motion
             w.s[i, 0] = w.s[i, 1] = w.s[i, 2] = 0.0
-            x, y = ox, oy
-        w.pose[i, 0], w.pose[i, 1], w.pose[i, 2], w.pose[i, 3] = x, y, c, s
-        w.origin[i, 0], w.origin[i, 1] = ox, oy
+        w.frame[i, 0], w.frame[i, 1], w.frame[i, 2], w.frame[i, 3] = fx, fy, c, s
         # v_i = v_λ + s_i q̇_i (3.32);  κ_i = v_i × s_i q̇_i = v_λ × s_i q̇_i (3.33, 2.16)
         s0, s1, s2 = w.s[i, 0] * qdi, w.s[i, 1] * qdi, w.s[i, 2] * qdi
         w.kappa[i, 0], w.kappa[i, 1], w.kappa[i, 2] = -w_ * s1 + vy * s2, w_ * s0 - vx * s2, 0.0
         vx, vy, w_ = vx + s0, vy + s1, w_ + s2
         w.v[i, 0], w.v[i, 1], w.v[i, 2] = vx, vy, w_
-        # I_i at the origin, from the centre of mass (cx, cy) (4.58)
-        cx, cy = x + c * bx - s * by, y + s * bx + c * by
+        # I_i from the centre of mass (cx, cy) relative to o_i (4.58)
+        cx, cy = fx + c * bx - s * by, fy + s * bx + c * by
         I = w.I
         I[i, 0, 0], I[i, 0, 1], I[i, 0, 2] = m, 0.0, -m * cy
         I[i, 1, 0], I[i, 1, 1], I[i, 1, 2] = 0.0, m, m * cx
         I[i, 2, 0], I[i, 2, 1], I[i, 2, 2] = -m * cy, m * cx, J + m * (cx * cx + cy * cy)
-        # p_i = -(v_i×)ᵀ I_i v_i - g_i (3.34): g_i gravity at the centre of mass, plus f_ext
+        # p_i = -(v_i×)ᵀ I_i v_i - g_i (3.34): g_i gravity at the centre of mass, plus f_ext moved to o_i (4.24)
         h0, h1 = m * vx - m * cy * w_, m * vy + m * cx * w_          # the momentum I_i v_i (its moment unused)
         gx, gy = m * gravity[0], m * gravity[1]
         w.p[i, 0] = -w_ * h1 - gx
@@ -152,24 +164,36 @@ def kinematics_state(model, q, qd, fext, w):
         if fext is not None:
             w.p[i, 0] -= fext[i, 0]
             w.p[i, 1] -= fext[i, 1]
-            w.p[i, 2] -= fext[i, 2]
+            w.p[i, 2] -= fext[i, 2] + oy * fext[i, 0] - ox * fext[i, 1]
+
+
+@jit
+def joint_cond(A, s, D):
+    """``‖A‖_F ‖s‖² / |D|``: the condition number of the rule of ``COND_LIMIT`` for ``A``, ``s`` at the joint's point.
+
+    Scale-safe (inertias of 1e-170 or 1e160 have squares out of the float range);
+    ``inf`` when ``D = sᵀAs`` is 0, NaN when ``A`` or ``D`` is not finite.
+    """
+    big = 0.0
+    for j in range(3):
+        for k in range(3):
+            big = max(big, abs(A[j, k]))
+    if not (math.isfinite(big) and math.isfinite(D)):
+        return math.nan
+    if big == 0.0 or D == 0.0:
+        return math.inf
+    F2 = 0.0
+    for j in range(3):
+        for k in range(3):
+            F2 += (A[j, k] / big) ** 2
+    return big * math.sqrt(F2) * (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]) / abs(D)
 
 
 @inline
-def _regular(A, s, D, x, y):
-    """Whether the joint ``(s, D = sᵀAs)`` at its point ``(x, y)`` passes the rule of ``COND_LIMIT``.
-
-    ``cond = ‖A_P‖_F ‖s_P‖² / |D| ≤ COND_LIMIT`` with ``A`` and ``s`` moved to the joint's
-    point ``P`` (as :func:`planargeo.mechanics.subspaces.joint_scale` does), tested squared.
-    False also where the squares leave the float range (extreme masses): the general path
-    judges those scale-safely.
-    """
-    p02 = A[0, 2] + y * A[0, 0] - x * A[0, 1]
-    p12 = A[1, 2] + y * A[0, 1] - x * A[1, 1]
-    p22 = A[2, 2] + y * A[0, 2] - x * A[1, 2] + y * p02 - x * p12
-    F2 = A[0, 0] * A[0, 0] + A[1, 1] * A[1, 1] + p22 * p22 + 2.0 * (A[0, 1] * A[0, 1] + p02 * p02 + p12 * p12)
-    t0, t1 = s[0] - y * s[2], s[1] + x * s[2]
-    ss = t0 * t0 + t1 * t1 + s[2] * s[2]
+def _clearly_regular(A, s, D):
+    """The rule of ``COND_LIMIT`` squared, where the squares are in range: ``‖A‖_F² ‖s‖⁴ < D² COND_LIMIT²``."""
+    F2 = A[0, 0] ** 2 + A[1, 1] ** 2 + A[2, 2] ** 2 + 2.0 * (A[0, 1] ** 2 + A[0, 2] ** 2 + A[1, 2] ** 2)
+    ss = s[0] * s[0] + s[1] * s[1] + s[2] * s[2]
     return 1e-300 < F2 < 1e300 and F2 * ss * ss < D * D * COND_LIMIT2
 
 
@@ -177,14 +201,14 @@ def _regular(A, s, D, x, y):
 def articulated_body_state(model, q, qd, tau, fext, w, qdd):
     """The recursive algorithm (thesis 3.6, 3.31-3.42) for one state: writes ``q̈`` into ``qdd``.
 
-    Returns False, leaving ``qdd`` undefined, when the general path must decide
-    (an input not finite, a joint the singularity rule refuses, a result not finite).
+    Returns :data:`OK`, :data:`NOT_FINITE`, or the index of the first joint (tip to base)
+    the singularity rule refuses, its condition number left in ``w.Dinv``.
     """
     if not (_finite(q) and _finite(qd) and _finite(tau) and (fext is None or _finite(fext))):
-        return False
+        return NOT_FINITE
     kinematics_state(model, q, qd, fext, w)                       # 2. kinematics (3.31-3.34)
     kind, parent = model[0], model[1]
-    s, kappa, U, Dinv, u, a = w.s, w.kappa, w.U, w.Dinv, w.u, w.a
+    r, s, kappa, U, Dinv, u, a = w.r, w.s, w.kappa, w.U, w.Dinv, w.u, w.a
     A, d = w.I, w.p           # A_i, d_i start as I_i, p_i (3.35, 3.36) and collect the children in place
     # 3. articulated inertias and bias forces, tip to base (3.37-3.39)
     k = q.shape[0]
@@ -192,102 +216,129 @@ def articulated_body_state(model, q, qd, tau, fext, w, qdd):
         c0 = A[i, 0, 0] * kappa[i, 0] + A[i, 0, 1] * kappa[i, 1] + A[i, 0, 2] * kappa[i, 2] + d[i, 0]   # c = A κ + d
         c1 = A[i, 1, 0] * kappa[i, 0] + A[i, 1, 1] * kappa[i, 1] + A[i, 1, 2] * kappa[i, 2] + d[i, 1]
         c2 = A[i, 2, 0] * kappa[i, 0] + A[i, 2, 1] * kappa[i, 1] + A[i, 2, 2] * kappa[i, 2] + d[i, 2]
+        B00, B01, B02 = A[i, 0, 0], A[i, 0, 1], A[i, 0, 2]   # B: what the parent receives, at o_i
+        B11, B12, B22 = A[i, 1, 1], A[i, 1, 2], A[i, 2, 2]
+        if kind[i] != FIXED:                                # a weld passes on A_i and c whole
+            k -= 1
+            for j in range(3):                              # U = A_i s_i, D = s_iᵀ A_i s_i
+                U[i, j] = A[i, j, 0] * s[i, 0] + A[i, j, 1] * s[i, 1] + A[i, j, 2] * s[i, 2]
+            D = s[i, 0] * U[i, 0] + s[i, 1] * U[i, 1] + s[i, 2] * U[i, 2]
+            if not _clearly_regular(A[i], s[i], D):                 # else the exact, scale-safe rule
+                cond = joint_cond(A[i], s[i], D)
+                if math.isnan(cond):                                # the inertia is out of the float range
+                    return NOT_FINITE
+                if not cond <= COND_LIMIT:
+                    Dinv[i] = cond
+                    return i
+            Dinv[i] = 1.0 / D
+            u[i] = tau[k] - (s[i, 0] * c0 + s[i, 1] * c1 + s[i, 2] * c2)   # u = τ_i - s_iᵀ (A_i κ_i + d_i)
+            # s⁺ = D⁻¹ Uᵀ (3.37): (1 - s s⁺)ᵀ A_i = A_i - W Uᵀ (3.38) and
+            # (s⁺)ᵀ τ_i + (1 - s s⁺)ᵀ (A_i κ_i + d_i) = c + W u (3.39), with W = U D⁻¹
+            W0, W1, W2 = U[i, 0] * Dinv[i], U[i, 1] * Dinv[i], U[i, 2] * Dinv[i]
+            B00, B01, B02 = B00 - W0 * U[i, 0], B01 - W0 * U[i, 1], B02 - W0 * U[i, 2]
+            B11, B12, B22 = B11 - W1 * U[i, 1], B12 - W1 * U[i, 2], B22 - W2 * U[i, 2]
+            c0, c1, c2 = c0 + W0 * u[i], c1 + W1 * u[i], c2 + W2 * u[i]
         lam = parent[i]
-        if kind[i] == FIXED:                                # a weld passes everything on: A_λ += A_i, d_λ += c
-            if lam >= 0:
-                for r in range(3):
-                    for j in range(3):
-                        A[lam, r, j] += A[i, r, j]
-                d[lam, 0] += c0
-                d[lam, 1] += c1
-                d[lam, 2] += c2
-            continue
-        k -= 1
-        for r in range(3):                                  # U = A_i s_i, D = s_iᵀ A_i s_i
-            U[i, r] = A[i, r, 0] * s[i, 0] + A[i, r, 1] * s[i, 1] + A[i, r, 2] * s[i, 2]
-        D = s[i, 0] * U[i, 0] + s[i, 1] * U[i, 1] + s[i, 2] * U[i, 2]
-        if not _regular(A[i], s[i], D, w.origin[i, 0], w.origin[i, 1]):
-            return False
-        Dinv[i] = 1.0 / D
-        u[i] = tau[k] - (s[i, 0] * c0 + s[i, 1] * c1 + s[i, 2] * c2)       # u = τ_i - s_iᵀ (A_i κ_i + d_i)
-        if lam >= 0:
-            # s⁺ = D⁻¹ Uᵀ (3.37): A_λ += (1 - s s⁺)ᵀ A_i = A_i - U D⁻¹ Uᵀ (3.38),
-            # d_λ += (s⁺)ᵀ τ_i + (1 - s s⁺)ᵀ (A_i κ_i + d_i) = c + U D⁻¹ u (3.39)
-            W0, W1, W2 = U[i, 0] * Dinv[i], U[i, 1] * Dinv[i], U[i, 2] * Dinv[i]     # W = U D⁻¹
-            for j in range(3):
-                A[lam, 0, j] += A[i, 0, j] - W0 * U[i, j]
-                A[lam, 1, j] += A[i, 1, j] - W1 * U[i, j]
-                A[lam, 2, j] += A[i, 2, j] - W2 * U[i, j]
-            d[lam, 0] += c0 + W0 * u[i]
-            d[lam, 1] += c1 + W1 * u[i]
-            d[lam, 2] += c2 + W2 * u[i]
+        if lam >= 0:             # moved in by r = o_i - o_λ: wrenches (4.24), inertias X_rᵀ B X_r (1.68)
+            rx, ry = r[i, 0], r[i, 1]
+            M02, M12 = B02 - ry * B00 + rx * B01, B12 - ry * B01 + rx * B11
+            M22 = B22 - ry * B02 + rx * B12 - ry * M02 + rx * M12
+            A[lam, 0, 0] += B00
+            A[lam, 0, 1] += B01
+            A[lam, 1, 0] += B01
+            A[lam, 1, 1] += B11
+            A[lam, 0, 2] += M02
+            A[lam, 2, 0] += M02
+            A[lam, 1, 2] += M12
+            A[lam, 2, 1] += M12
+            A[lam, 2, 2] += M22
+            d[lam, 0] += c0
+            d[lam, 1] += c1
+            d[lam, 2] += c2 - ry * c0 + rx * c1
     # 4. joint accelerations, base to tip (3.40-3.42)
     for i in range(len(kind)):
         lam = parent[i]
         a0 = a1 = a2 = 0.0                                  # a_0 = 0 (3.40)
-        if lam >= 0:
-            a0, a1, a2 = a[lam, 0], a[lam, 1], a[lam, 2]
+        if lam >= 0:                                        # a_λ moved out to o_i (4.8)
+            a2 = a[lam, 2]
+            a0, a1 = a[lam, 0] - r[i, 1] * a2, a[lam, 1] + r[i, 0] * a2
         if kind[i] != FIXED:                                # q̈_i = D⁻¹ (u - Uᵀ a_λ) (3.41)
             qi = (u[i] - (U[i, 0] * a0 + U[i, 1] * a1 + U[i, 2] * a2)) * Dinv[i]
             qdd[k] = qi
             k += 1
             a0, a1, a2 = a0 + s[i, 0] * qi, a1 + s[i, 1] * qi, a2 + s[i, 2] * qi
         a[i, 0], a[i, 1], a[i, 2] = a0 + kappa[i, 0], a1 + kappa[i, 1], a2 + kappa[i, 2]   # (3.42)
-    return _finite(qdd)
+    return OK if _finite(qdd) else NOT_FINITE
 
 
 @jit
 def newton_euler_state(model, q, qd, qdd, fext, w, tau):
     """Inverse dynamics (thesis 2.18, 3.10, 3.5) for one state: writes ``τ`` into ``tau``.
 
-    Returns False, leaving ``tau`` undefined, when an input or the result is not finite.
+    Returns :data:`OK`, or :data:`NOT_FINITE` when an input or the result is not finite.
     """
     if not (_finite(q) and _finite(qd) and _finite(qdd) and (fext is None or _finite(fext))):
-        return False
+        return NOT_FINITE
     kinematics_state(model, q, qd, fext, w)
     kind, parent = model[0], model[1]
-    s, kappa, I, a = w.s, w.kappa, w.I, w.a
+    r, s, kappa, I, a = w.r, w.s, w.kappa, w.I, w.a
     f = w.p                   # f_i = I_i a_i + p_i + Σ f_children (3.10), collected in place of p_i
     k = 0
     for i in range(len(kind)):                              # a_i = a_λ + s_i q̈_i + κ_i (2.18), a_0 = 0
         lam = parent[i]
         a0 = a1 = a2 = 0.0
-        if lam >= 0:
-            a0, a1, a2 = a[lam, 0], a[lam, 1], a[lam, 2]
+        if lam >= 0:                                        # a_λ moved out to o_i (4.8)
+            a2 = a[lam, 2]
+            a0, a1 = a[lam, 0] - r[i, 1] * a2, a[lam, 1] + r[i, 0] * a2
         if kind[i] != FIXED:
             a0, a1, a2 = a0 + s[i, 0] * qdd[k], a1 + s[i, 1] * qdd[k], a2 + s[i, 2] * qdd[k]
             k += 1
         a0, a1, a2 = a0 + kappa[i, 0], a1 + kappa[i, 1], a2 + kappa[i, 2]
         a[i, 0], a[i, 1], a[i, 2] = a0, a1, a2
-        for r in range(3):
-            f[i, r] += I[i, r, 0] * a0 + I[i, r, 1] * a1 + I[i, r, 2] * a2
+        for j in range(3):
+            f[i, j] += I[i, j, 0] * a0 + I[i, j, 1] * a1 + I[i, j, 2] * a2
     for i in range(len(kind) - 1, -1, -1):                  # tip to base: τ_i = s_iᵀ f_i (3.5)
-        lam = parent[i]
-        if lam >= 0:
-            f[lam, 0] += f[i, 0]
-            f[lam, 1] += f[i, 1]
-            f[lam, 2] += f[i, 2]
         if kind[i] != FIXED:
             k -= 1
             tau[k] = s[i, 0] * f[i, 0] + s[i, 1] * f[i, 1] + s[i, 2] * f[i, 2]
-    return _finite(tau)
+        lam = parent[i]
+        if lam >= 0:                                        # f_i moved in to o_λ (4.24)
+            f[lam, 0] += f[i, 0]
+            f[lam, 1] += f[i, 1]
+            f[lam, 2] += f[i, 2] - r[i, 1] * f[i, 0] + r[i, 0] * f[i, 1]
+    return OK if _finite(tau) else NOT_FINITE
 
 
 # -- entry points: the model's tables as separate arrays (cheaper to pass), then one state or a batch ----------------
 @jit
 def forward_dynamics_one(kind, parent, body, gravity, q, qd, tau, fext):
-    """``q̈`` (nq,) of one state (float64 arrays (nq,), ``fext`` (N, 3) or None), or None: see the module."""
+    """``q̈`` (nq,) of one state (float64 arrays (nq,), ``fext`` (N, 3) or None), or None if not :data:`OK`."""
     qdd = np.empty(q.shape[0])
-    ok = articulated_body_state((kind, parent, body, gravity), q, qd, tau, fext, workspace(kind.shape[0]), qdd)
-    return qdd if ok else None
+    status = articulated_body_state((kind, parent, body, gravity), q, qd, tau, fext, workspace(kind.shape[0]), qdd)
+    return qdd if status == OK else None
 
 
 @jit
 def inverse_dynamics_one(kind, parent, body, gravity, q, qd, qdd, fext):
-    """``τ`` (nq,) of one state (float64 arrays (nq,), ``fext`` (N, 3) or None), or None: see the module."""
+    """``τ`` (nq,) of one state (float64 arrays (nq,), ``fext`` (N, 3) or None), or None if not :data:`OK`."""
     tau = np.empty(q.shape[0])
-    ok = newton_euler_state((kind, parent, body, gravity), q, qd, qdd, fext, workspace(kind.shape[0]), tau)
-    return tau if ok else None
+    status = newton_euler_state((kind, parent, body, gravity), q, qd, qdd, fext, workspace(kind.shape[0]), tau)
+    return tau if status == OK else None
+
+
+@jit
+def singular_joint(kind, parent, body, gravity, q, qd, tau, fext):
+    """``(joint, cond)`` of the first joint of the state the singularity rule refuses, or ``(-1, 0.0)``."""
+    w = workspace(kind.shape[0])
+    status = articulated_body_state((kind, parent, body, gravity), q, qd, tau, fext, w, np.empty(q.shape[0]))
+    return (status, w.Dinv[status]) if status >= 0 else (-1, 0.0)
+
+
+@inline
+def _state(inverse, model, x, y, z, fext, w, out):
+    if inverse:
+        return newton_euler_state(model, x, y, z, fext, w, out)
+    return articulated_body_state(model, x, y, z, fext, w, out)
 
 
 @njit(cache=True, nogil=True, error_model="numpy", parallel=True)
@@ -296,8 +347,8 @@ def _blocks(inverse, model, x, y, z, fext, out):
 
     ``inverse``: :func:`newton_euler_state` (``z = q̈``), else :func:`articulated_body_state`
     (``z = τ``).  The states go in blocks of :data:`BLOCK`, one workspace per block,
-    the blocks shared among numba's threads.  Returns the index of the
-    first state declined, or -1.
+    the blocks shared among numba's threads.  Returns the index of the first state
+    that did not succeed, or -1.
     """
     B = x.shape[0]
     nblocks = (B + BLOCK - 1) // BLOCK
@@ -305,12 +356,11 @@ def _blocks(inverse, model, x, y, z, fext, out):
     for blk in prange(nblocks):
         w = workspace(model[0].shape[0])
         for b in range(blk * BLOCK, min(B, (blk + 1) * BLOCK)):
-            f = None if fext is None else fext[b]
-            if inverse:
-                good = newton_euler_state(model, x[b], y[b], z[b], f, w, out[b])
+            if fext is None:
+                status = _state(inverse, model, x[b], y[b], z[b], None, w, out[b])
             else:
-                good = articulated_body_state(model, x[b], y[b], z[b], f, w, out[b])
-            if not good:
+                status = _state(inverse, model, x[b], y[b], z[b], fext[b], w, out[b])
+            if status != OK:
                 declined[blk] = b
                 break
     first = declined.min() if nblocks else B
@@ -338,8 +388,8 @@ def _many(inverse, kind, parent, body, gravity, x, y, z, fext):
 def forward_dynamics_many(kind, parent, body, gravity, q, qd, tau, fext):
     """``(q̈, declined)`` of B states (C-contiguous float64 (B, nq), ``fext`` (B, N, 3) or None).
 
-    ``q̈`` (B, nq) is valid when ``declined`` is -1, else ``declined`` is the first state the
-    kernel declined (see the module).
+    ``q̈`` (B, nq) is valid when ``declined`` is -1, else ``declined`` is the first state
+    that did not succeed (see the module).
     """
     return _many(False, kind, parent, body, gravity, q, qd, tau, fext)
 
