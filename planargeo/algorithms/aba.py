@@ -23,14 +23,14 @@ articulated bias force ``d_i`` (after its children have been added):
 The recursion is written twice, once per audience, and the tests hold the two
 to each other and to independent references (Pinocchio, Lagrange's equations):
 
-* :func:`articulated_body` on arrays: any joint kind (3×k joint spaces), batches
-  broadcast over leading dimensions, and the whole workspace (``A``, ``d``,
+* :func:`articulated_body` on arrays, as above: any joint kind (3×k joint spaces),
+  batches broadcast over leading dimensions, and the whole workspace (``A``, ``d``,
   ``a``, ``f``, ``D``, ``U``, ``u``...) returned for drawings and reports;
 * :func:`planargeo.algorithms.kernels.articulated_body_state`: one state of a model of
-  revolute, prismatic and fixed joints as plain loops over the bodies, compiled by
-  numba.  :func:`forward_dynamics` runs it for such models (a batch in blocks of
-  states shared among threads) and :func:`articulated_body` for the others, and
-  wherever the kernel declines (see :mod:`planargeo.algorithms.compiled`).
+  revolute, prismatic and fixed joints as plain loops over the bodies, each body at
+  its joint's point, compiled by numba.  :func:`forward_dynamics` runs it for such
+  models (a batch in blocks of states shared among threads) and
+  :func:`articulated_body` for the others (see :mod:`planargeo.algorithms.compiled`).
 """
 from __future__ import annotations
 

@@ -5,8 +5,9 @@ The joint-space equations of motion are ``H(q) q̈ + C(q, q̇) = τ`` with
 * ``H = Σ_i J_iᵀ I_i J_i`` (``J_i`` the body Jacobian of thesis Remark 8),
   computed by the composite-rigid-body recursion: with the composite inertia
   ``Ic_i = I_i + Σ_{children c} Ic_c`` (all at the origin, so plain sums),
-  ``H[j, i] = s_jᵀ Ic_i s_i`` for every joint ``j`` on the path from the ground
-  to body ``i`` (and ``i`` itself), and ``H[i, j]`` its transpose;
+  ``H[r, c] = s_rᵀ Ic_{body(c)} s_c`` for every coordinate ``r`` whose joint is on
+  the path from the ground to the body of coordinate ``c``, and ``H[c, r]`` its
+  transpose;
 * ``C = RNEA(q, q̇, 0, f_ext)`` (bias forces, gravity and external loads).
 
 :func:`forward_dynamics_crba` solves ``H q̈ = τ - C`` densely; it is the
@@ -20,7 +21,7 @@ from planargeo.algorithms.compiled import check_finite
 from planargeo.errors import InputError, SingularConfigurationError
 from planargeo.mechanics.kinematics import check_state, kinematics
 from planargeo.mechanics.model import Model
-from planargeo.algorithms.rnea import inverse_dynamics
+from planargeo.algorithms.rnea import newton_euler
 
 __all__ = ["mass_matrix", "bias_forces", "forward_dynamics_crba", "SINGULAR_RCOND"]
 
@@ -84,13 +85,11 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
             for i in range(model.N - 1, -1, -1):       # composite inertias, tip to base
                 if model.parents[i] >= 0:
                     Ic[..., model.parents[i], :, :] += Ic[..., i, :, :]
-            H = np.zeros(shape + (model.nq, model.nq))
-            for i in range(model.N):
-                cols = model.q_slice(i)
-                path = model.ancestor_mask()[i]          # the coordinates of the joints from the ground to body i
-                block = np.swapaxes(data.S[..., :, path], -1, -2) @ (Ic[..., i, :, :] @ data.s(i))   # s_jᵀ Ic_i s_i
-                H[..., path, cols] = block
-                H[..., cols, path] = np.swapaxes(block, -1, -2)
+            body = np.repeat(np.arange(model.N), [j.dofs for j in model.joints])   # the body of each coordinate
+            path = model.ancestor_mask()[body].T        # path[r, c]: joint of r on the path to body(c)
+            F = np.einsum("...cij,...jc->...ic", Ic[..., body, :, :], data.S)   # Ic_{body(c)} s_c
+            SF = np.swapaxes(data.S, -1, -2) @ F                               # s_rᵀ Ic_{body(c)} s_c
+            H = np.where(path, SF, np.where(path.T, np.swapaxes(SF, -1, -2), 0.0))
     return check_finite(H, "H", q=q)
 
 
@@ -98,7 +97,9 @@ def bias_forces(model: Model, q, qd, f_ext=None) -> np.ndarray:
     """Bias forces ``C(q, q̇) = τ(q, q̇, q̈ = 0)``: velocity terms, gravity, loads (thesis 3.5, 3.10, 3.11).
 
     The joint forces that keep every joint from accelerating, by inverse
-    dynamics with ``q̈ = 0`` (so ``p_i`` of 3.11 and ``κ_i`` of 2.19 enter).
+    dynamics with ``q̈ = 0`` (so ``p_i`` of 3.11 and ``κ_i`` of 2.19 enter), on the
+    array recursion :func:`~planargeo.algorithms.rnea.newton_euler` (the dense reference
+    shares no code with the compiled kernels).
 
     Parameters
     ----------
@@ -123,7 +124,7 @@ def bias_forces(model: Model, q, qd, f_ext=None) -> np.ndarray:
     array([0.])
     """
     q, qd, _, f_ext, _, shape = check_state(model, q, qd, None, f_ext)
-    return inverse_dynamics(model, q, qd, np.zeros(shape + (model.nq,)), f_ext)
+    return newton_euler(model, q, qd, np.zeros(shape + (model.nq,)), f_ext).tau
 
 
 def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:

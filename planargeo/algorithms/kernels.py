@@ -22,7 +22,7 @@ accurately as one at it; and the singularity rule of
 ``i+1`` read as "each child of ``i``").
 
 A state kernel returns ``-1`` when it succeeded, the index of a joint the singularity
-rule refuses (its condition number left in ``w.Dinv``), or ``-2`` when an input or the
+rule refuses (its condition number left in ``w.D``), or ``-2`` when an input or the
 result is not finite: the caller then runs the general path, which raises the package's
 error naming the argument.
 
@@ -61,8 +61,8 @@ inline = njit(cache=True, nogil=True, error_model="numpy", inline="always")
 #: ``frame`` the body frame (its origin less ``o_i``, then cos θ, sin θ), ``s`` the joint twist,
 #: ``v`` (3.32), ``kappa`` (3.33), ``I`` the inertia (then the articulated inertia ``A``),
 #: ``p`` the bias force (3.34; then ``d``, or the joint force ``f``), ``U = A s``,
-#: ``Dinv = (sᵀAs)⁻¹``, ``u = τ - sᵀ(Aκ + d)``, ``a`` the acceleration (3.42, 2.18).
-Workspace = namedtuple("Workspace", "origin r frame s v kappa I p U Dinv u a")
+#: ``D = sᵀAs``, ``u = τ - sᵀ(Aκ + d)``, ``a`` the acceleration (3.42, 2.18).
+Workspace = namedtuple("Workspace", "origin r frame s v kappa I p U D u a")
 
 
 def tables(model):
@@ -122,14 +122,14 @@ def kinematics_state(model, q, qd, fext, w):
             ox, oy = px, py
             vx = vy = w_ = 0.0
         else:                                       # the joint's point, placed in the parent's frame
-            fx, fy, cl, sl = w.frame[lam, 0], w.frame[lam, 1], w.frame[lam, 2], w.frame[lam, 3]
-            rx, ry = fx + cl * px - sl * py, fy + sl * px + cl * py
+            lx, ly, cl, sl = w.frame[lam, 0], w.frame[lam, 1], w.frame[lam, 2], w.frame[lam, 3]
+            rx, ry = lx + cl * px - sl * py, ly + sl * px + cl * py
             c, s = cl * cp - sl * sp, sl * cp + cl * sp
             ox, oy = w.origin[lam, 0] + rx, w.origin[lam, 1] + ry
             w_ = w.v[lam, 2]                        # v_λ moved out to o_i (4.8)
             vx, vy = w.v[lam, 0] - ry * w_, w.v[lam, 1] + rx * w_
         w.origin[i, 0], w.origin[i, 1], w.r[i, 0], w.r[i, 1] = ox, oy, rx, ry
-        qdi = fx = fy = 0.0                         # (fx, fy): the body frame's origin less o_i
+        qdi = ex = ey = 0.0                         # (ex, ey): the body frame's origin less o_i
         if kind[i] == REVOLUTE:                     # s = [0, 0, 1]: a rotation about o_i (4.10)
             qi, qdi = q[k], qd[k]
             w.s[i, 0], w.s[i, 1], w.s[i, 2] = 0.0, 0.0, 1.0
@@ -139,18 +139,18 @@ def kinematics_state(model, q, qd, fext, w):
         elif kind[i] == PRISMATIC:                  # s = [c, s, 0]: the direction of sliding, a point at infinity
             qi, qdi = q[k], qd[k]
             w.s[i, 0], w.s[i, 1], w.s[i, 2] = c, s, 0.0
-            fx, fy = qi * c, qi * s
+            ex, ey = qi * c, qi * s
             k += 1
         else:                                       # fixed: no motion
             w.s[i, 0] = w.s[i, 1] = w.s[i, 2] = 0.0
-        w.frame[i, 0], w.frame[i, 1], w.frame[i, 2], w.frame[i, 3] = fx, fy, c, s
+        w.frame[i, 0], w.frame[i, 1], w.frame[i, 2], w.frame[i, 3] = ex, ey, c, s
         # v_i = v_λ + s_i q̇_i (3.32);  κ_i = v_i × s_i q̇_i = v_λ × s_i q̇_i (3.33, 2.16)
         s0, s1, s2 = w.s[i, 0] * qdi, w.s[i, 1] * qdi, w.s[i, 2] * qdi
         w.kappa[i, 0], w.kappa[i, 1], w.kappa[i, 2] = -w_ * s1 + vy * s2, w_ * s0 - vx * s2, 0.0
         vx, vy, w_ = vx + s0, vy + s1, w_ + s2
         w.v[i, 0], w.v[i, 1], w.v[i, 2] = vx, vy, w_
         # I_i from the centre of mass (cx, cy) relative to o_i (4.58)
-        cx, cy = fx + c * bx - s * by, fy + s * bx + c * by
+        cx, cy = ex + c * bx - s * by, ey + s * bx + c * by
         I = w.I
         I[i, 0, 0], I[i, 0, 1], I[i, 0, 2] = m, 0.0, -m * cy
         I[i, 1, 0], I[i, 1, 1], I[i, 1, 2] = 0.0, m, m * cx
@@ -202,13 +202,13 @@ def articulated_body_state(model, q, qd, tau, fext, w, qdd):
     """The recursive algorithm (thesis 3.6, 3.31-3.42) for one state: writes ``q̈`` into ``qdd``.
 
     Returns :data:`OK`, :data:`NOT_FINITE`, or the index of the first joint (tip to base)
-    the singularity rule refuses, its condition number left in ``w.Dinv``.
+    the singularity rule refuses, its condition number left in ``w.D``.
     """
     if not (_finite(q) and _finite(qd) and _finite(tau) and (fext is None or _finite(fext))):
         return NOT_FINITE
     kinematics_state(model, q, qd, fext, w)                       # 2. kinematics (3.31-3.34)
     kind, parent = model[0], model[1]
-    r, s, kappa, U, Dinv, u, a = w.r, w.s, w.kappa, w.U, w.Dinv, w.u, w.a
+    r, s, kappa, U, u, a = w.r, w.s, w.kappa, w.U, w.u, w.a
     A, d = w.I, w.p           # A_i, d_i start as I_i, p_i (3.35, 3.36) and collect the children in place
     # 3. articulated inertias and bias forces, tip to base (3.37-3.39)
     k = q.shape[0]
@@ -228,15 +228,16 @@ def articulated_body_state(model, q, qd, tau, fext, w, qdd):
                 if math.isnan(cond):                                # the inertia is out of the float range
                     return NOT_FINITE
                 if not cond <= COND_LIMIT:
-                    Dinv[i] = cond
+                    w.D[i] = cond
                     return i
-            Dinv[i] = 1.0 / D
+            w.D[i] = D
             u[i] = tau[k] - (s[i, 0] * c0 + s[i, 1] * c1 + s[i, 2] * c2)   # u = τ_i - s_iᵀ (A_i κ_i + d_i)
-            # s⁺ = D⁻¹ Uᵀ (3.37): (1 - s s⁺)ᵀ A_i = A_i - W Uᵀ (3.38) and
-            # (s⁺)ᵀ τ_i + (1 - s s⁺)ᵀ (A_i κ_i + d_i) = c + W u (3.39), with W = U D⁻¹
-            W0, W1, W2 = U[i, 0] * Dinv[i], U[i, 1] * Dinv[i], U[i, 2] * Dinv[i]
-            B00, B01, B02 = B00 - W0 * U[i, 0], B01 - W0 * U[i, 1], B02 - W0 * U[i, 2]
-            B11, B12, B22 = B11 - W1 * U[i, 1], B12 - W1 * U[i, 2], B22 - W2 * U[i, 2]
+            # s⁺ = D⁻¹ Uᵀ (3.37): (1 - s s⁺)ᵀ A_i = A_i - U Wᵀ (3.38) and
+            # (s⁺)ᵀ τ_i + (1 - s s⁺)ᵀ (A_i κ_i + d_i) = c + W u (3.39), with W = U / D; so formed, the
+            # part along s is exactly 0 where s is a unit axis (a revolute joint: W_2 = U_2 / D = 1)
+            W0, W1, W2 = U[i, 0] / D, U[i, 1] / D, U[i, 2] / D
+            B00, B01, B02 = B00 - U[i, 0] * W0, B01 - U[i, 0] * W1, B02 - U[i, 0] * W2
+            B11, B12, B22 = B11 - U[i, 1] * W1, B12 - U[i, 1] * W2, B22 - U[i, 2] * W2
             c0, c1, c2 = c0 + W0 * u[i], c1 + W1 * u[i], c2 + W2 * u[i]
         lam = parent[i]
         if lam >= 0:             # moved in by r = o_i - o_λ: wrenches (4.24), inertias X_rᵀ B X_r (1.68)
@@ -263,7 +264,7 @@ def articulated_body_state(model, q, qd, tau, fext, w, qdd):
             a2 = a[lam, 2]
             a0, a1 = a[lam, 0] - r[i, 1] * a2, a[lam, 1] + r[i, 0] * a2
         if kind[i] != FIXED:                                # q̈_i = D⁻¹ (u - Uᵀ a_λ) (3.41)
-            qi = (u[i] - (U[i, 0] * a0 + U[i, 1] * a1 + U[i, 2] * a2)) * Dinv[i]
+            qi = (u[i] - (U[i, 0] * a0 + U[i, 1] * a1 + U[i, 2] * a2)) / w.D[i]
             qdd[k] = qi
             k += 1
             a0, a1, a2 = a0 + s[i, 0] * qi, a1 + s[i, 1] * qi, a2 + s[i, 2] * qi
@@ -331,7 +332,7 @@ def singular_joint(kind, parent, body, gravity, q, qd, tau, fext):
     """``(joint, cond)`` of the first joint of the state the singularity rule refuses, or ``(-1, 0.0)``."""
     w = workspace(kind.shape[0])
     status = articulated_body_state((kind, parent, body, gravity), q, qd, tau, fext, w, np.empty(q.shape[0]))
-    return (status, w.Dinv[status]) if status >= 0 else (-1, 0.0)
+    return (status, w.D[status]) if status >= 0 else (-1, 0.0)
 
 
 @inline

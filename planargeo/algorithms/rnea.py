@@ -102,10 +102,8 @@ def inverse_dynamics(model: Model, q, qd, qdd, f_ext=None, *, return_forces: boo
 
     Raises
     ------
-    ShapeError, NonFiniteError, InputError
-        Arguments of the wrong shape, not finite, or complex.
-    NumericOverflowError
-        If finite input gives a ``τ`` that is not finite (e.g. ``q̈`` near 1e308).
+    ShapeError, NonFiniteError, InputError, NumericOverflowError
+        As :func:`newton_euler`.
 
     Examples
     --------
