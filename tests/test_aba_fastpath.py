@@ -105,8 +105,9 @@ BATCH_MODELS = {
 
 
 @pytest.mark.parametrize("name", list(BATCH_MODELS))
-@pytest.mark.parametrize("shape", [(40,), (5, 9), (2 * kernels.BLOCK + 3,)])
+@pytest.mark.parametrize("shape", [(40,), (5, 9), (2 * kernels.BLOCK + 3,), (kernels.PARALLEL_STATES + 5,)])
 def test_batches_equal_single_states(name, shape):
+    """Blocks of states, on one thread and (from PARALLEL_STATES on) on all of numba's threads."""
     m = BATCH_MODELS[name]()
     q, qd, tau, f_ext = _state(m, 1, shape)
     for f in (None, f_ext):

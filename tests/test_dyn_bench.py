@@ -141,7 +141,7 @@ def test_without_peers_fast_methods_share_the_rounds(tmp_path, monkeypatch):
     monkeypatch.setattr(bench, "_peers", lambda m: {})
     monkeypatch.setattr(bench, "_versions", lambda: {"Python": "x", "Pinocchio": "not installed",
                                                      "MuJoCo": "not installed"})
-    rows = bench.run_single((2,), budget=2e-4, rounds=2)
+    rows = bench.run_single((2,), budget=0.01, rounds=2)     # every method shares the rounds, even on a busy machine
     r = rows[0]
     assert not set(bench.PEERS) & set(r["times"])
     assert "aba" not in r.get("alone", []) and "crba" not in r.get("alone", [])

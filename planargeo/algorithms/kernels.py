@@ -36,7 +36,6 @@ import math
 import threading
 from collections import namedtuple
 
-import numba
 import numpy as np
 from numba import njit, prange
 
@@ -335,41 +334,42 @@ def singular_joint(kind, parent, body, gravity, q, qd, tau, fext):
     return (status, w.D[status]) if status >= 0 else (-1, 0.0)
 
 
-@inline
-def _state(inverse, model, x, y, z, fext, w, out):
-    if inverse:
-        return newton_euler_state(model, x, y, z, fext, w, out)
-    return articulated_body_state(model, x, y, z, fext, w, out)
+@jit
+def _block(inverse, model, x, y, z, fext, out, lo, hi):
+    """One state kernel on the rows ``lo:hi`` of the (B, nq) arrays ``x, y, z`` into ``out``, one workspace.
+
+    ``inverse``: :func:`newton_euler_state` (``z = q̈``), else :func:`articulated_body_state`
+    (``z = τ``); ``fext`` (B, N, 3) or None.  Returns the first state that did not
+    succeed, or ``hi``.
+    """
+    w = workspace(model[0].shape[0])
+    for b in range(lo, hi):
+        f = fext[b] if fext is not None else None
+        if inverse:
+            status = newton_euler_state(model, x[b], y[b], z[b], f, w, out[b])
+        else:
+            status = articulated_body_state(model, x[b], y[b], z[b], f, w, out[b])
+        if status != OK:
+            return b
+    return hi
 
 
 @njit(cache=True, nogil=True, error_model="numpy", parallel=True)
 def _blocks(inverse, model, x, y, z, fext, out):
-    """One state kernel on every row of the (B, nq) arrays ``x, y, z`` into ``out`` (``fext`` (B, N, 3) or None).
-
-    ``inverse``: :func:`newton_euler_state` (``z = q̈``), else :func:`articulated_body_state`
-    (``z = τ``).  The states go in blocks of :data:`BLOCK`, one workspace per block,
-    the blocks shared among numba's threads.  Returns the index of the first state
-    that did not succeed, or -1.
-    """
+    """:func:`_block` on blocks of :data:`BLOCK` states shared among numba's threads: the first failed state, or B."""
     B = x.shape[0]
     nblocks = (B + BLOCK - 1) // BLOCK
-    declined = np.full(nblocks, B)
+    first = np.full(nblocks, B)
     for blk in prange(nblocks):
-        w = workspace(model[0].shape[0])
-        for b in range(blk * BLOCK, min(B, (blk + 1) * BLOCK)):
-            if fext is None:
-                status = _state(inverse, model, x[b], y[b], z[b], None, w, out[b])
-            else:
-                status = _state(inverse, model, x[b], y[b], z[b], fext[b], w, out[b])
-            if status != OK:
-                declined[blk] = b
-                break
-    first = declined.min() if nblocks else B
-    return first if first < B else -1
+        hi = min(B, (blk + 1) * BLOCK)
+        b = _block(inverse, model, x, y, z, fext, out, blk * BLOCK, hi)
+        if b < hi:
+            first[blk] = b
+    return first.min() if nblocks else B
 
 
-#: batches of fewer states run on one thread: waking the others costs more than they save (and, on a
-#: machine busy with other work, may cost milliseconds)
+#: batches of fewer states run on the calling thread alone: waking numba's threads costs more than they save
+#: (and, on a machine busy with other work, may cost milliseconds)
 PARALLEL_STATES = 4 * BLOCK
 #: numba's threading layers must not run two parallel kernels at once from two Python threads
 _PARALLEL = threading.Lock()
@@ -377,13 +377,13 @@ _PARALLEL = threading.Lock()
 
 def _many(inverse, kind, parent, body, gravity, x, y, z, fext):
     out = np.empty(x.shape)
-    with _PARALLEL:
-        threads = numba.get_num_threads()
-        numba.set_num_threads(threads if x.shape[0] >= PARALLEL_STATES else 1)
-        try:
-            return out, _blocks(inverse, (kind, parent, body, gravity), x, y, z, fext, out)
-        finally:
-            numba.set_num_threads(threads)
+    B, model = x.shape[0], (kind, parent, body, gravity)
+    if B < PARALLEL_STATES:
+        first = _block(inverse, model, x, y, z, fext, out, 0, B)
+    else:
+        with _PARALLEL:
+            first = _blocks(inverse, model, x, y, z, fext, out)
+    return out, (first if first < B else -1)
 
 
 def forward_dynamics_many(kind, parent, body, gravity, q, qd, tau, fext):
