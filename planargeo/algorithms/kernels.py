@@ -94,11 +94,22 @@ def workspace(N):
 
 @inline
 def _finite(x):
-    """Whether every entry of the array ``x`` is finite."""
-    y = x.ravel()
-    for k in range(y.shape[0]):
-        if not math.isfinite(y[k]):
+    """Whether every entry of the vector ``x`` is finite."""
+    for k in range(x.shape[0]):
+        if not math.isfinite(x[k]):
             return False
+    return True
+
+
+@inline
+def _finite_inputs(x, y, z, fext):
+    """Whether the vectors ``x, y, z`` and the (N, 3) wrenches ``fext`` (or None) are finite."""
+    if not (_finite(x) and _finite(y) and _finite(z)):
+        return False
+    if fext is not None:
+        for i in range(fext.shape[0]):
+            if not (math.isfinite(fext[i, 0]) and math.isfinite(fext[i, 1]) and math.isfinite(fext[i, 2])):
+                return False
     return True
 
 
@@ -203,7 +214,7 @@ def articulated_body_state(model, q, qd, tau, fext, w, qdd):
     Returns :data:`OK`, :data:`NOT_FINITE`, or the index of the first joint (tip to base)
     the singularity rule refuses, its condition number left in ``w.D``.
     """
-    if not (_finite(q) and _finite(qd) and _finite(tau) and (fext is None or _finite(fext))):
+    if not _finite_inputs(q, qd, tau, fext):
         return NOT_FINITE
     kinematics_state(model, q, qd, fext, w)                       # 2. kinematics (3.31-3.34)
     kind, parent = model[0], model[1]
@@ -277,7 +288,7 @@ def newton_euler_state(model, q, qd, qdd, fext, w, tau):
 
     Returns :data:`OK`, or :data:`NOT_FINITE` when an input or the result is not finite.
     """
-    if not (_finite(q) and _finite(qd) and _finite(qdd) and (fext is None or _finite(fext))):
+    if not _finite_inputs(q, qd, qdd, fext):
         return NOT_FINITE
     kinematics_state(model, q, qd, fext, w)
     kind, parent = model[0], model[1]
