@@ -597,7 +597,7 @@ numba = "numba" in sys.modules
 import numpy as np
 from planargeo.algorithms.aba import forward_dynamics
 from planargeo.mechanics.model import chain_model
-m, q, Q = chain_model(10), np.zeros(10), np.zeros((100, 10))
+m, q, Q = chain_model(10), np.zeros(10), np.zeros((10000, 10))
 t2 = time.perf_counter()
 forward_dynamics(m, q, q, q)
 t3 = time.perf_counter()
@@ -609,8 +609,8 @@ print(t1 - t0, t3 - t2, t4 - t3, numba)
 STARTUP_ROWS = (("import", "`import planargeo` (fresh process)", 0.5),
                 ("first_compile", "first `forward_dynamics` call in a fresh process, compiling (empty numba cache)", 2.0),
                 ("first_cached", "first `forward_dynamics` call in a fresh process, from numba's cache", 0.3),
-                ("batch_compile", "first batch call after it, compiling the batch kernel", None),
-                ("batch_cached", "first batch call after it, from numba's cache", None))
+                ("batch_compile", "first batch call (10⁴ states) after it, compiling the batch kernel", None),
+                ("batch_cached", "first batch call (10⁴ states) after it, from numba's cache", None))
 
 
 def _startup_run(cache: str) -> list:

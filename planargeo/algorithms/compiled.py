@@ -90,10 +90,10 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
             and (f_ext is None or (type(f_ext) is np.ndarray and f_ext.dtype is _F64 and f_ext.shape == c.wrenches))):
         out = one(*tables, q, qd, z, f_ext)
         return out if out is not None else _failed(kernels, tables, model, inverse, q, qd, z, f_ext, general)
-    if inverse:
-        q, qd, _, f_ext, z, shape = check_state(model, q, qd, None, f_ext, qdd=z)
+    if inverse:                         # the kernels test for NaN and infinity themselves
+        q, qd, _, f_ext, z, shape = check_state(model, q, qd, None, f_ext, qdd=z, finite=False)
     else:
-        q, qd, z, f_ext, _, shape = check_state(model, q, qd, z, f_ext)
+        q, qd, z, f_ext, _, shape = check_state(model, q, qd, z, f_ext, finite=False)
     nq, N = model.nq, model.N
     B = math.prod(shape)
     rows = [_rows(a, shape + (nq,), (B, nq)) for a in (q, qd, z)]
@@ -111,7 +111,8 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
 
 def _rows(a, full, flat):
     """``a`` broadcast to ``full``, as a writeable C-contiguous float64 array of shape ``flat`` (numba's one type)."""
-    return np.require(np.broadcast_to(a, full).reshape(flat), dtype=np.float64, requirements="CW")
+    a = np.ascontiguousarray((a if a.shape == full else np.broadcast_to(a, full)).reshape(flat), dtype=np.float64)
+    return a if a.flags.writeable else a.copy()
 
 
 def _failed(kernels, tables, model, inverse, q, qd, z, f_ext, general):

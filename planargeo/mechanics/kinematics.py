@@ -77,7 +77,7 @@ def _real(x, name: str) -> None:
         raise InputError(f"{name} must be real, got complex values")
 
 
-def _as_state(x, name: str, nq: int) -> np.ndarray:
+def _as_state(x, name: str, nq: int, finite: bool = True) -> np.ndarray:
     if type(x) is np.ndarray and x.dtype == np.float64:
         a = x
     else:
@@ -85,12 +85,12 @@ def _as_state(x, name: str, nq: int) -> np.ndarray:
         a = as_array(x, name, finite=False)
     if a.ndim == 0 or a.shape[-1] != nq:
         raise ShapeError(f"{name} must have shape (..., {nq}), got shape {a.shape}")
-    if not np.isfinite(a).all():
+    if finite and not np.isfinite(a).all():
         raise NonFiniteError(f"{name} must be finite, got non-finite values in {a!r}")
     return a
 
 
-def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None):
+def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None, finite: bool = True):
     """Validate and broadcast a state; returns ``(q, qd, tau, f_ext, qdd, batch_shape)``.
 
     ``q``, ``qd``, ``tau``, ``qdd`` have shape ``(..., nq)``; ``f_ext`` has
@@ -98,7 +98,8 @@ def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None):
     ``None``.  Every method of the package validates its state here, so they all
     treat missing values alike: ``qd``, ``tau`` or ``qdd`` given as ``None`` are
     zeros (returned as float64 zeros of shape ``(nq,)``); ``f_ext`` ``None`` is no
-    external load (returned as ``None``).
+    external load (returned as ``None``).  ``finite=False`` leaves out the test for NaN
+    and infinity (for a caller that makes it itself, as the compiled kernels do).
 
     Raises
     ------
@@ -126,14 +127,14 @@ def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None):
     planargeo.errors.InputError: q must be real, got complex values
     """
     nq, N = model.nq, model.N
-    q = _as_state(q, "q", nq)
+    q = _as_state(q, "q", nq, finite)
     shape = q.shape[:-1]
     out = []
     for name, x in (("qd", qd), ("tau", tau), ("qdd", qdd)):
         if x is None:
             out.append(np.zeros(nq))
             continue
-        a = _as_state(x, name, nq)
+        a = _as_state(x, name, nq, finite)
         if a.ndim > 1 or shape:
             try:
                 shape = np.broadcast_shapes(shape, a.shape[:-1])
@@ -143,7 +144,7 @@ def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None):
         out.append(a)
     if f_ext is not None:
         _real(f_ext, "f_ext")
-        f_ext = as_array(f_ext, "f_ext", (N, 3))
+        f_ext = as_array(f_ext, "f_ext", (N, 3), finite=finite)
         if f_ext.ndim > 2 or shape:
             try:
                 shape = np.broadcast_shapes(shape, f_ext.shape[:-2])
