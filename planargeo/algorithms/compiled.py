@@ -106,7 +106,7 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
         return out.reshape(shape + (nq,))
     _failed(kernels, tables, model, inverse, *(r[declined] for r in rows), None if fe is None else fe[declined],
             general)
-    return general(model, q, qd, z, f_ext)       # not reached: the state raises, as it would alone
+    return general(model, q, qd, z, f_ext)       # the general recursion answered that state: the batch by it
 
 
 def _rows(a, full, flat):
