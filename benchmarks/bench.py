@@ -3,10 +3,12 @@
 Every planargeo forward dynamics method (ABA, projective, mobility/chain
 splitting, stacked, dense CRBA) against Pinocchio's ``pin.aba`` and MuJoCo's
 ``mj_forward`` on identical models (:func:`to_pinocchio`, :func:`to_mujoco`),
-for chains of ``N`` = 1 ... 200 links.  Written to ``--out`` (default
-``benchmarks/results``), plus one summary document (default
-``benchmarks/RESULTS.md``, the folder above ``--out``) and copies of the SVG
-charts in ``--gallery`` (default ``gallery/benchmarks``):
+for chains of ``N`` = 1 ... 200 links.  Written to ``--out`` (required), plus one
+summary document (``--summary``, default ``RESULTS.md`` in ``--out``) and copies of
+the SVG charts in ``--gallery`` (default: none).  Nothing outside ``--out`` is
+written unless named: ``make bench`` passes ``--out benchmarks/results --summary
+benchmarks/RESULTS.md --gallery gallery/benchmarks`` to rewrite the committed files.
+Every file is written atomically (:func:`planargeo.files.atomic_write`):
 
 ``single_state``
     One state of a uniform chain of ``N`` links: time per call of every method
@@ -14,19 +16,25 @@ charts in ``--gallery`` (default ``gallery/benchmarks``):
     which is robust to machine speed and load.
 ``accuracy``, ``work_precision``, ``speed_accuracy``
     Error of every method and peer against an independent extended-precision
-    reference (``reference_system`` of ``planargeo/_reference.py``: exact
+    reference (``reference_system`` of ``benchmarks/reference.py``: exact
     rational arithmetic for small N, ``np.longdouble`` beyond), with its time
     per call: one point (time, error) per method and N.
 ``batch``
-    Throughput for 1, 100 and 10000 states (N = 10): our vectorised ABA (one
-    call), our ABA called state by state, ``pin.aba`` and ``mj_forward`` in a
-    Python loop, and the batched dense CRBA, measured interleaved.
+    Throughput for 1, 100 and 10000 states (N = 10): our ABA on the batch (one
+    call: the compiled kernel on blocks of states shared among threads), our ABA
+    called state by state, ``pin.aba`` and ``mj_forward`` in a Python loop, and the
+    batched dense CRBA, measured interleaved in wall-clock time (the batch kernel
+    runs on several threads).
+``startup``
+    ``import planargeo``, and the first ``forward_dynamics`` call in a fresh process:
+    compiling the kernels (an empty numba cache), then loading them from the cache.
 ``scaling``
     Time per call against N on log axes with O(N) and O(N³) guides, and
     ``t(200)/t(50)`` per method.
 
-Timings are in *thread CPU time* (``time.thread_time``: time the process
-spends descheduled on a busy machine does not count).  The headline ratios are
+Single-call timings are in *thread CPU time* (``time.thread_time``: time the
+process spends descheduled on a busy machine does not count); batch timings in
+wall-clock time (``time.perf_counter``), since the batch kernel uses several threads.  The headline ratios are
 measured by interleaving: every method, ``pin.aba`` and ``mj_forward`` (the peers
 that are installed) alternate in short blocks over many rounds, and the tables give the ratio of the best
 blocks and the median of the per-round ratios (both see the same machine state).
@@ -42,10 +50,10 @@ from __future__ import annotations
 import argparse
 import datetime as _dt
 import importlib
+import io
 import json
 import os
 import platform
-import shutil
 import subprocess
 import sys
 import time
@@ -56,9 +64,10 @@ import numpy as np
 
 # the reference lives in the package (not in the tests) so the accuracy columns exist for an installed package too
 from reference import reference_with_info, rel_err
+from planargeo.files import atomic_write, atomic_write_many
 from planargeo.mechanics.model import chain_model
 
-__all__ = ["add_arguments", "main", "time_call", "time_interleaved", "to_pinocchio", "to_mujoco",
+__all__ = ["add_arguments", "main", "time_call", "time_interleaved", "to_pinocchio", "pinocchio_forward", "to_mujoco",
            "to_mujoco_xml", "mujoco_dofs", "mujoco_forward", "reference_qdd"]
 
 SINGLE_SIZES = (1, 2, 5, 10, 20, 50, 100, 200)
@@ -70,7 +79,6 @@ PEERS = ("pinocchio", "mujoco")
 SCRIPTS = {"breakdown": "breakdown.py", "widgets": "widget_latency.py", "integrators": "integrators.py",
            "scenes": "scene_cost.py"}
 GROUPS = ("dynamics",) + tuple(SCRIPTS)
-DEFAULT_GALLERY = "gallery/benchmarks"
 #: the exact (rational) reference up to this many coordinates, longdouble beyond (exact costs ~N^3 Fractions)
 EXACT_MAX = 5
 #: other result files linked from RESULTS.md (written by the scripts of the other groups)
@@ -99,9 +107,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="chain sizes N for the single-state tables (default: "
                              f"{','.join(map(str, SINGLE_SIZES))}; with --quick {','.join(map(str, QUICK_SIZES))})")
     parser.add_argument("--summary", default=None,
-                        help="the summary document (default: RESULTS.md in the folder above --out)")
-    parser.add_argument("--gallery", default=DEFAULT_GALLERY,
-                        help="folder for copies of the SVG charts ('' for none; default: %(default)s)")
+                        help="the summary document (default: RESULTS.md in --out)")
+    parser.add_argument("--gallery", default="",
+                        help="folder for copies of the SVG charts (default: none; make bench: gallery/benchmarks)")
     parser.add_argument("--only", choices=GROUPS, action="append",
                         help="run only these groups (repeatable; default: all). 'dynamics' is this module; "
                              "'breakdown' runs benchmarks/breakdown.py (accuracy study), 'widgets' "
@@ -134,7 +142,7 @@ def _time_method(fn, budget: float, timer=time.thread_time):
     ``calls`` is None for the normal path, else the number of single calls timed.
     """
     fn()
-    fn()                      # warm-up: plans are compiled on first or second use
+    fn()                      # warm-up: the kernels are compiled (or loaded) on first use
     t0 = timer()
     fn()
     t1 = timer() - t0
@@ -168,24 +176,90 @@ def ratio_stats(times: dict, num: str, den: str) -> dict:
 
 
 # --------------------------------------------------------------------------- peers
+#: Pinocchio's joints for each joint kind, applied in turn (a multi-dof joint is a composite joint)
+_PIN_AXES = {"revolute": ("RZ",), "prismatic": ("PX",), "revolute_prismatic": ("PX", "RZ"),
+             "twin_prismatic": ("PX", "PY"), "plane": ("PX", "PY", "RZ"), "fixed": ()}
+
+
+def _pin_joints(model) -> list:
+    """The Pinocchio joint id carrying each body: its own joint's, or its nearest moving ancestor's (0: the ground)."""
+    ids, n = [], 0
+    for j, p in zip(model.joints, model.parents):
+        if j.kind != "fixed":
+            n += 1
+            ids.append(n)
+        else:
+            ids.append(0 if p < 0 else ids[p])
+    return ids
+
+
 def to_pinocchio(model):
-    """The same revolute/prismatic mechanism as a Pinocchio model (None if pinocchio is missing)."""
+    """The same planar mechanism as a Pinocchio model (None if pinocchio is missing).
+
+    Planar joints become Pinocchio's ``RZ`` (revolute about z) and ``PX``/``PY``
+    (prismatic along the joint frame's x/y), each placed by ``(px, py, θ)`` in its
+    parent's frame; a multi-dof joint is a composite joint of these in the order of
+    :class:`~planargeo.mechanics.model.Joint` (``plane``: PX, PY, RZ); a fixed joint
+    adds its body to the joint that carries its parent.  Each body's inertia is given
+    about its centre of mass (only ``izz`` matters in the plane); gravity is set
+    explicitly.  Pinocchio numbers its coordinates in the order the joints are added,
+    which is planargeo's.
+    """
     try:
         import pinocchio as pin
     except ImportError:  # pragma: no cover
         return None
     pm = pin.Model()
-    ids = []
+    frames = []                   # per body: its frame in the frame of the Pinocchio joint carrying it
     for i, (b, j, p) in enumerate(zip(model.bodies, model.joints, model.parents)):
         px, py, th = j.placement
         R = np.array([[np.cos(th), -np.sin(th), 0.0], [np.sin(th), np.cos(th), 0.0], [0.0, 0.0, 1.0]])
-        jm = {"revolute": pin.JointModelRZ, "prismatic": pin.JointModelPX}[j.kind]()
-        jid = pm.addJoint(0 if p < 0 else ids[p], jm, pin.SE3(R, np.array([px, py, 0.0])), f"joint{i}")
-        I3 = np.diag([1.0, 1.0, b.inertia])
-        pm.appendBodyToJoint(jid, pin.Inertia(b.mass, np.array([b.com[0], b.com[1], 0.0]), I3), pin.SE3.Identity())
-        ids.append(jid)
+        placement = (pin.SE3.Identity() if p < 0 else frames[p]) * pin.SE3(R, np.array([px, py, 0.0]))
+        if j.kind == "fixed":
+            jid, frame = _pin_joints(model)[i], placement
+        else:
+            axes = [getattr(pin, f"JointModel{a}")() for a in _PIN_AXES[j.kind]]
+            jm = axes[0]
+            if len(axes) > 1:
+                jm = pin.JointModelComposite()
+                for a in axes:
+                    jm.addJoint(a)
+            parent = 0 if p < 0 else _pin_joints(model)[p]
+            jid, frame = pm.addJoint(parent, jm, placement, f"joint{i}"), pin.SE3.Identity()
+        I3 = np.diag([1.0, 1.0, b.inertia])  # out-of-plane entries are irrelevant in the plane
+        pm.appendBodyToJoint(jid, pin.Inertia(b.mass, np.array([b.com[0], b.com[1], 0.0]), I3), frame)
+        frames.append(frame)
     pm.gravity = pin.Motion(np.array([model.gravity[0], model.gravity[1], 0.0, 0.0, 0.0, 0.0]))
     return pm
+
+
+def pinocchio_forward(model, q, qd, tau, f_ext=None):
+    """``q̈`` (..., nq) by Pinocchio's ``aba`` on :func:`to_pinocchio`'s model: the independent reference of the tests.
+
+    ``f_ext`` (..., N, 3), world wrenches at the origin, enter as the generalized forces
+    ``Jᵀ f`` with ``J`` Pinocchio's joint Jacobians in the world frame (rows vx, vy, ωz).
+    Leading dimensions are looped over.
+    """
+    import pinocchio as pin
+
+    pm = to_pinocchio(model)
+    pd = pm.createData()
+    joints = _pin_joints(model)
+    q, qd, tau = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (q, qd, tau)))
+    shape = q.shape[:-1] if f_ext is None else np.broadcast_shapes(q.shape[:-1], np.shape(f_ext)[:-2])
+    out = np.empty(shape + (model.nq,))
+    for k in np.ndindex(shape):
+        qk, qdk, tk = (np.broadcast_to(x, shape + (model.nq,))[k] for x in (q, qd, tau))
+        force = np.array(tk, dtype=float)
+        if f_ext is not None:
+            fk = np.broadcast_to(f_ext, shape + (model.N, 3))[k]
+            pin.computeJointJacobians(pm, pd, qk)
+            for i, jid in enumerate(joints):
+                if jid:
+                    J = pin.getJointJacobian(pm, pd, jid, pin.ReferenceFrame.WORLD)[[0, 1, 5]]
+                    force += J.T @ fk[i]
+        out[k] = pin.aba(pm, pd, qk, qdk, force)
+    return out
 
 
 def _import(name):
@@ -373,7 +447,7 @@ def _interleaved(m, budget, seed, rounds=40, label="", extra=None):
             fns[name] = (lambda fn=fn: fn(m, q, qd, tau))
     for name, (_, make) in _peers(m).items():
         fns[name] = make(q, qd, tau)
-    for f in fns.values():       # warm-up (the plan is compiled on first or second use)
+    for f in fns.values():       # warm-up (the kernels are compiled or loaded on first use)
         f()
         f()
     _progress(f"[single] N={m.nq} interleaved {'/'.join(fns)} {label}...")
@@ -467,10 +541,11 @@ def run_single(sizes, budget, rounds=40):
 
 
 def run_batch(batch_sizes, budget, N=10, rounds=7):
-    """Time per batch of B states (N-link chain) of our vectorised ABA and CRBA, our ABA state by state, and the peers looped.
+    """Time per batch of B states (N-link chain) of our ABA and CRBA on the batch, our ABA state by state, and the peers looped.
 
-    All five are measured interleaved (:func:`time_interleaved`); ``ratio``
-    maps each peer to the stats of ``aba (vectorised) / peer (loop)``.
+    All five are measured interleaved (:func:`time_interleaved`) in wall-clock time (the
+    batch kernel runs on several threads); ``ratio`` maps each peer to the stats of
+    ``aba (batch) / peer (loop)``.
     """
     from planargeo.algorithms.aba import forward_dynamics
     from planargeo.algorithms.crba import forward_dynamics_crba
@@ -480,14 +555,14 @@ def run_batch(batch_sizes, budget, N=10, rounds=7):
     rows = []
     for B in batch_sizes:
         q, qd, tau = _state(N, seed=B, batch=(B,))
-        fns = {"aba (vectorised)": lambda: forward_dynamics(m, q, qd, tau)}
+        fns = {"aba (batch)": lambda: forward_dynamics(m, q, qd, tau)}
 
         def loop_ours():
             for k in range(B):
                 forward_dynamics(m, q[k], qd[k], tau[k])
 
         fns["aba (state by state)"] = loop_ours
-        fns["crba (vectorised)"] = lambda: forward_dynamics_crba(m, q, qd, tau)
+        fns["crba (batch)"] = lambda: forward_dynamics_crba(m, q, qd, tau)
         outs = {}
         for name, (call, make) in peers.items():
             calls = [make(q[k], qd[k], tau[k]) for k in range(B)]   # bound per state, outside the timing
@@ -499,15 +574,83 @@ def run_batch(batch_sizes, budget, N=10, rounds=7):
             fns[f"{name} (loop)"] = loop
             outs[name] = np.array([call(q[k], qd[k], tau[k]) for k in range(B)])
         _progress(f"[batch] B={B} (N={N}) interleaved: {', '.join(fns)} ...")
-        t = time_interleaved(fns, budget=budget * len(fns), rounds=rounds)
+        for f in fns.values():   # warm-up (the kernels are compiled or loaded on first use)
+            f()
+        t = time_interleaved(fns, budget=budget * len(fns), rounds=rounds, timer=time.perf_counter)
         row = {"B": B, "times": {k: float(min(v)) for k, v in t.items()},
-               "ratio": {p: ratio_stats(t, "aba (vectorised)", f"{p} (loop)") for p in peers}}
-        # agreement of the vectorised call with the dense reference and the peers
+               "ratio": {p: ratio_stats(t, "aba (batch)", f"{p} (loop)") for p in peers}}
+        # agreement of the batch call with the dense reference and the peers
         a, b = forward_dynamics(m, q, qd, tau), forward_dynamics_crba(m, q, qd, tau)
         row["err"] = rel_err(a, b)
         row["err_peer"] = {p: rel_err(a, o) for p, o in outs.items()}
         rows.append(row)
     return rows
+
+
+# --------------------------------------------------------------------------- startup
+_STARTUP = """
+import sys, time
+t0 = time.perf_counter()
+import planargeo
+t1 = time.perf_counter()
+numba = "numba" in sys.modules
+import numpy as np
+from planargeo.algorithms.aba import forward_dynamics
+from planargeo.mechanics.model import chain_model
+m, q, Q = chain_model(10), np.zeros(10), np.zeros((10000, 10))
+t2 = time.perf_counter()
+forward_dynamics(m, q, q, q)
+t3 = time.perf_counter()
+forward_dynamics(m, Q, Q, Q)
+t4 = time.perf_counter()
+print(t1 - t0, t3 - t2, t4 - t3, numba)
+"""
+#: (key, description, goal in seconds or None) of the startup rows of the headline
+STARTUP_ROWS = (("import", "`import planargeo` (fresh process)", 0.5),
+                ("first_compile", "first `forward_dynamics` call in a fresh process, compiling (empty numba cache)", 2.0),
+                ("first_cached", "first `forward_dynamics` call in a fresh process, from numba's cache", 0.3),
+                ("batch_compile", "first batch call (10⁴ states) after it, compiling the batch kernel", None),
+                ("batch_cached", "first batch call (10⁴ states) after it, from numba's cache", None))
+
+
+def _startup_run(cache: str) -> list:
+    env = dict(os.environ, NUMBA_CACHE_DIR=cache)
+    out = subprocess.run([sys.executable, "-c", _STARTUP], capture_output=True, text=True, env=env, check=True,
+                         cwd=str(Path(__file__).resolve().parents[1]))
+    *times, numba = out.stdout.split()
+    return [float(t) for t in times] + [numba == "True"]
+
+
+def run_startup(repeat: int = 3) -> dict:
+    """Seconds (wall clock, fresh processes) for ``import planargeo`` and the first calls, compiling and cached.
+
+    Each repeat compiles into a new empty numba cache (``NUMBA_CACHE_DIR``), then runs
+    again from that cache; best of ``repeat``.  ``import_loads_numba``: whether
+    ``import planargeo`` imported numba (it should not).
+    """
+    import tempfile
+
+    runs = []
+    for _ in range(repeat):
+        with tempfile.TemporaryDirectory(prefix="planargeo-numba-") as cache:
+            _progress("[startup] a fresh process compiling the kernels, then one loading them from the cache ...")
+            runs.append((_startup_run(cache), _startup_run(cache)))
+    best = lambda k, c: min(r[c][k] for r in runs)  # noqa: E731
+    return {"import": min(min(r[0][0], r[1][0]) for r in runs), "first_compile": best(1, 0),
+            "first_cached": best(1, 1), "batch_compile": best(2, 0), "batch_cached": best(2, 1),
+            "import_loads_numba": any(r[0][3] or r[1][3] for r in runs)}
+
+
+def _threads() -> int:
+    import numba
+
+    return numba.get_num_threads()
+
+
+def _block() -> int:
+    from planargeo.algorithms import kernels
+
+    return kernels.BLOCK
 
 
 # --------------------------------------------------------------------------- tables
@@ -565,10 +708,10 @@ def _single_tables(rows) -> list:
         if "ratio_mj_pin" in rows[0]:
             cols += ["mj_forward / pin.aba (median)"]
         lines += ["`aba` (`planargeo.algorithms.aba.forward_dynamics`, one state as float64 arrays: the compiled "
-                  f"plan) and {_peer_text(peers)} alternate in short blocks over many rounds (thread CPU "
-                  "time). *best*: ratio of the best blocks; *median*: median of the per-round ratios. `chain_model` has zero placement angles and y offsets, "
-                  "folded out of the plan; `random_model(N)` (random placements, coms, revolute and prismatic "
-                  "joints) has none.\n",
+                  f"kernel) and {_peer_text(peers)} alternate in short blocks over many rounds (thread CPU "
+                  "time). *best*: ratio of the best blocks; *median*: median of the per-round ratios. `chain_model(N)`: "
+                  "unit links along x; `random_model(N)`: random placements, coms, revolute and prismatic joints "
+                  "(the kernel does the same work for both).\n",
                   "| " + " | ".join(cols) + " |", "|" + "---:|" * len(cols)]
         for r in rows:
             cells = [str(r["N"])] + [_fmt_us(r["times"][p]) for p in peers] + [_fmt_us(r["times"]["aba"])]
@@ -628,7 +771,7 @@ def write_single(rows, out: Path) -> str:
         lines += ["## All methods\n"]
     lines += _time_table(rows)
     text = "\n".join(lines) + "\n"
-    (out / "single_state.md").write_text(text, encoding="utf-8")
+    atomic_write(out / "single_state.md", text)
     return text
 
 
@@ -663,7 +806,7 @@ def write_accuracy(rows, out: Path) -> str:
     names = list(rows[0]["err_crba"])
     lines = [_header("Speed against accuracy"),
              "Largest relative error max|q̈ − q̈_ref| / max|q̈_ref| of every method and peer against the "
-             "independent reference of the breakdown study (`reference_system` in `planargeo/_reference.py`: "
+             "independent reference of the breakdown study (`reference_system` in `benchmarks/reference.py`: "
              f"the joint-space equations from world-frame Jacobians, solved exactly for N ≤ {EXACT_MAX} and in "
              "`np.longdouble` beyond, `ld ±` its own error estimated by reversing the elimination order; errors "
              "marked `≲` are below 3× that estimate, not resolved), against the dense CRBA solve (`H q̈ = τ − C`) "
@@ -680,14 +823,14 @@ def write_accuracy(rows, out: Path) -> str:
                          f"{_err(r['err_ref'].get(n), spread)} | {_err(r['err_crba'].get(n))} | "
                          f"{_err(r['err_pin'].get(n))} |")
     text = "\n".join(lines) + "\n"
-    (out / "accuracy.md").write_text(text, encoding="utf-8")
+    atomic_write(out / "accuracy.md", text)
     return text
 
 
 def _batch_table(rows) -> list:
     names = list(rows[0]["times"])
     peers = list(rows[0].get("ratio", {}))
-    cols = ["B"] + [f"{n} µs/state" for n in names] + [f"vectorised / {_peer_label(p)} loop" for p in peers]
+    cols = ["B"] + [f"{n} µs/state" for n in names] + [f"batch / {_peer_label(p)} loop" for p in peers]
     cols += ["error vs CRBA"] + [f"error vs {_peer_label(p)}" for p in peers]
     lines = ["| " + " | ".join(cols) + " |", "|" + "---:|" * len(cols)]
     for r in rows:
@@ -701,13 +844,14 @@ def _batch_table(rows) -> list:
 
 def write_batch(rows, out: Path) -> str:
     lines = [_header("Batch throughput, chain of N = 10 links"),
-             "Time per state (µs) for a batch of B random states; `aba (vectorised)` is one call of "
-             "`forward_dynamics` on arrays of shape (B, 10); the peers are called state by state from a Python "
+             "Time per state (µs, wall clock) for a batch of B random states; `aba (batch)` is one call of "
+             f"`forward_dynamics` on arrays of shape (B, 10): the compiled kernel on blocks of {_block()} states "
+             f"shared among numba's threads ({_threads()} here); the peers are called state by state from a Python "
              "loop. All columns measured interleaved; ratios: median of per-round ratios (and of the best "
              "blocks).\n"]
     lines += _batch_table(rows)
     text = "\n".join(lines) + "\n"
-    (out / "batch.md").write_text(text, encoding="utf-8")
+    atomic_write(out / "batch.md", text)
     return text
 
 
@@ -751,9 +895,13 @@ def _scaling_table(rows) -> list:
 
 
 # --------------------------------------------------------------------------- RESULTS.md
-def headline(single, batch) -> dict:
-    """The headline numbers: ``{"batch": {peer: stats}, "B": B, "single": {peer: stats}, "single_random": ..., "scaling": ...}``."""
-    h = {}
+def headline(single, batch, startup=None) -> dict:
+    """The headline numbers.
+
+    ``{"batch": {peer: stats}, "B": B, "single": {peer: stats}, "single_random": ...,
+    "single_200": ..., "scaling": ..., "startup": ...}`` (N = 10 unless said).
+    """
+    h = {"startup": startup or {}}
     if batch:
         big = max(batch, key=lambda r: r["B"])
         h["B"], h["batch"] = big["B"], big.get("ratio", {})
@@ -764,6 +912,9 @@ def headline(single, batch) -> dict:
                               if k in r10}
         if "ratio_mj_pin" in r10:
             h["mujoco/pinocchio"] = r10["ratio_mj_pin"]
+    r200 = next((r for r in single if r["N"] == 200), None)
+    if r200 is not None and "ratio" in r200:
+        h["single_200"] = r200["ratio"]
     h["scaling_pair"] = scaling_pair(single)
     h["scaling"] = scaling_ratios(single)
     return h
@@ -773,27 +924,34 @@ def _goal(x, goal):
     return f"≤ {goal:g}× ({'met' if x <= goal else 'not met'})"
 
 
-def write_results(single, batch, out: Path, summary: Path, charts: bool = True, quick: bool = False) -> str:
+def write_results(single, batch, out: Path, summary: Path, charts: bool = True, quick: bool = False,
+                  startup=None) -> str:
     """The summary document ``summary`` (RESULTS.md): headline ratios, tables, links to charts and other results."""
     out, summary = Path(out), Path(summary)
     rel = Path(os.path.relpath(out, summary.parent)).as_posix()
-    h = headline(single, batch)
+    h = headline(single, batch, startup)
     L = [_header("Benchmark results: planargeo forward dynamics against Pinocchio and MuJoCo").rstrip(), ""]
     if quick:
         L += ["**Quick run** (`--quick`: fewer sizes, short budgets, smaller batches): numbers are rough.", ""]
     L += ["## Headline", "",
           "| quantity | measured (median of interleaved rounds; best blocks) | goal |", "|---|---|---|"]
     for p, st in h.get("batch", {}).items():
-        L.append(f"| batched FD, N = 10, B = {h['B']}: one vectorised `forward_dynamics` call / {_peer_label(p)} "
-                 f"looped, per state | **{_x(st['median'])}** ({_x(st['best'])}) | "
+        L.append(f"| batch, N = 10, B = {h['B']}: one `forward_dynamics` call / {_peer_label(p)} "
+                 f"looped, per state (wall clock, {_threads()} threads) | **{_x(st['median'])}** ({_x(st['best'])}) | "
                  + (_goal(st["median"], 0.10) if p == "pinocchio" else "—") + " |")
     for p, st in h.get("single", {}).items():
         rnd = h["single_random"].get(p)
         L.append(f"| single call, N = 10: `aba` / {_peer_label(p)}, `chain_model` | **{_x(st['median'])}** "
-                 f"({_x(st['best'])}) | " + (_goal(st["median"], 2.0) if p == "pinocchio" else "—") + " |")
+                 f"({_x(st['best'])}) | " + (_goal(st["median"], 1.0) if p == "pinocchio" else "—") + " |")
         if rnd:
             L.append(f"| single call, N = 10: `aba` / {_peer_label(p)}, `random_model` | {_x(rnd['median'])} "
-                     f"({_x(rnd['best'])}) | — |")
+                     f"({_x(rnd['best'])}); {rnd['median'] / st['median']:.2f}× the chain's | "
+                     + (_goal(rnd["median"] / st["median"], 1.5) + " of the chain's" if p == "pinocchio" else "—")
+                     + " |")
+    if "single_200" in h:
+        st = h["single_200"]
+        L.append(f"| single call, N = 200: `aba` / pin.aba, `chain_model` | **{_x(st['median'])}** ({_x(st['best'])}) "
+                 f"| {_goal(st['median'], 0.5)} |")
     if "mujoco/pinocchio" in h:
         st = h["mujoco/pinocchio"]
         L.append(f"| single call, N = 10: mj_forward / pin.aba (the peers against each other) | {_x(st['median'])} "
@@ -802,6 +960,11 @@ def write_results(single, batch, out: Path, summary: Path, charts: bool = True, 
         a, b = h["scaling_pair"]
         L.append(f"| t({b}) / t({a}) (O(N): {b / a:g}, O(N³): {(b / a) ** 3:g}) | "
                  + ", ".join(f"{_peer_label(n)} {x:.1f}" for n, x in h["scaling"].items()) + " | — |")
+    for key, what, goal in STARTUP_ROWS:
+        if key in h["startup"]:
+            L.append(f"| {what} | {h['startup'][key]:.2f} s | " + (f"≤ {goal:g} s ({'met' if h['startup'][key] <= goal else 'not met'})" if goal else "—") + " |")
+    if h["startup"]:
+        L.append(f"| `import planargeo` imports numba | {h['startup']['import_loads_numba']} | no |")
     L += ["", "Ratios below 1 mean planargeo is faster. All ratios come from one run on one machine, so they are "
           "comparable with each other; absolute times are not comparable across runs.", ""]
     if charts:
@@ -820,14 +983,14 @@ def write_results(single, batch, out: Path, summary: Path, charts: bool = True, 
     L += _time_table(single)
     L += ["## Accuracy: error against the extended-precision reference", "",
           "max|q̈ − q̈_ref| / max|q̈_ref| for the states above. Reference: `reference_system` of "
-          "`planargeo/_reference.py` (the breakdown study's independent reference: the joint-space equations "
+          "`benchmarks/reference.py` (the breakdown study's independent reference: the joint-space equations "
           f"written from world-frame Jacobians, solved in exact rational arithmetic for N ≤ {EXACT_MAX}, in "
           "`np.longdouble` beyond; `ld ±e`: its own error estimated by reversing the elimination order; `≲`: "
           "below 3× that, not resolved). Errors against the dense solve and against Pinocchio: "
           f"[accuracy.md]({rel}/accuracy.md).", ""]
     L += _accuracy_table(single)
     L += ["## Batched sweeps (N = 10)", "",
-          "Time per state for B random states: one vectorised planargeo call against the peers called state by "
+          "Time per state (wall clock) for B random states: one planargeo call on the batch against the peers called state by "
           "state from a Python loop (all measured interleaved).", ""]
     L += _batch_table(batch) if batch else ["(not run)", ""]
     L += ["## Scaling", ""] + _scaling_table(single)
@@ -837,16 +1000,18 @@ def write_results(single, batch, out: Path, summary: Path, charts: bool = True, 
                         ("batch.md", "batch throughput")) + OTHER_RESULTS:
         L.append(f"* [{fname}]({rel}/{fname}): {what}")
     L += ["", "## How it is measured", "",
-          "`planargeo bench` (`make bench`; `--quick` for a rough run under a minute). Thread CPU time "
-          "(`time.thread_time`), BLAS single-threaded. `aba`, `pin.aba` and `mj_forward` are interleaved in short "
-          "blocks; the batched columns too. Models are identical: `to_pinocchio` and `to_mujoco` "
-          "(`planargeo/bench.py`) build the same mechanism (MuJoCo: explicit `<inertial>`, contacts disabled, "
+          "`planargeo bench` (`make bench`; `--quick` for a rough run under a minute). Single calls in thread CPU "
+          "time (`time.thread_time`), batches in wall-clock time (the batch kernel runs on numba's threads), BLAS "
+          "single-threaded. `aba`, `pin.aba` and `mj_forward` are interleaved in short blocks; the batched columns "
+          "too. The startup rows are wall-clock times of fresh processes (best of 3): the first call compiles the "
+          "kernels into an empty numba cache (`NUMBA_CACHE_DIR`), then a second process loads them from it. "
+          "Models are identical: `to_pinocchio` and `to_mujoco` "
+          "(`benchmarks/bench.py`) build the same mechanism (MuJoCo: explicit `<inertial>`, contacts disabled, "
           "gravity set explicitly, armature and damping zero, no geoms); the peers' q̈ are in the accuracy table. "
           "`mj_forward` is timed with setting `qpos`, `qvel`, `qfrc_applied` from the state, as `pin.aba` takes "
           "q, q̇, τ as arguments. Raw numbers: " + f"[dynamics.json]({rel}/dynamics.json).", ""]
     text = "\n".join(L)
-    summary.parent.mkdir(parents=True, exist_ok=True)
-    summary.write_text(text, encoding="utf-8")
+    atomic_write(summary, text)
     return text
 
 
@@ -870,10 +1035,12 @@ def _save(fig, out: Path, name: str, rect=(0, 0, 1, 1)):
     for a in fig.axes:
         a.minorticks_off()
     fig.tight_layout(rect=rect)
+    svg, png = io.BytesIO(), io.BytesIO()
     with plt.rc_context({"svg.hashsalt": "planargeo"}):      # deterministic ids: identical bytes on a rerun
-        fig.savefig(out / f"{name}.svg", metadata={"Date": None})
-    fig.savefig(out / f"{name}.png", dpi=110)
+        fig.savefig(svg, format="svg", metadata={"Date": None})
+    fig.savefig(png, format="png", dpi=110)
     plt.close(fig)
+    atomic_write_many({out / f"{name}.svg": svg.getvalue(), out / f"{name}.png": png.getvalue()})
 
 
 def _errors(r):
@@ -997,15 +1164,10 @@ def write_charts(single, batch, out: Path) -> None:
 
 def copy_to_gallery(out: Path, gallery: Path, names=None) -> list:
     """Copy the SVG charts of ``out`` (``names``, default every ``*.svg``) into ``gallery``; return the copied names."""
-    gallery = Path(gallery)
-    gallery.mkdir(parents=True, exist_ok=True)
     paths = [Path(out) / f"{n}.svg" for n in names] if names else sorted(Path(out).glob("*.svg"))
-    done = []
-    for p in paths:
-        if p.exists():
-            shutil.copyfile(p, gallery / p.name)
-            done.append(p.name)
-    return done
+    paths = [p for p in paths if p.exists()]
+    atomic_write_many({Path(gallery) / p.name: p.read_bytes() for p in paths})
+    return [p.name for p in paths]
 
 
 def _jsonable(x):
@@ -1028,47 +1190,53 @@ def _single_threaded_argv(args):
     """argv to re-run this benchmark with single-threaded BLAS, or None if it already is."""
     if all(os.environ.get(v) == "1" for v in _THREAD_VARS):
         return None
-    argv = [sys.executable, "-m", "planargeo.bench", "--out", str(args.out)]
+    argv = [sys.executable, str(Path(__file__).with_name("run.py")), "--out", str(args.out)]
     argv += ["--sizes", str(args.sizes)] if getattr(args, "sizes", None) else []
     argv += ["--quick"] * bool(args.quick) + ["--no-charts"] * bool(args.no_charts)
     for group in getattr(args, "only", None) or ():
         argv += ["--only", group]
     if getattr(args, "summary", None):
         argv += ["--summary", str(args.summary)]
-    if getattr(args, "gallery", DEFAULT_GALLERY) != DEFAULT_GALLERY:
+    if getattr(args, "gallery", ""):
         argv += ["--gallery", str(args.gallery)]
     return argv
 
 
 def run_dynamics(args, out: Path):
-    """The dynamics group: single-state, accuracy and batch tables, raw JSON and charts; returns ``(single, batch)``."""
+    """The dynamics group: startup, single-state, accuracy and batch tables, raw JSON and charts.
+
+    Returns ``(single, batch, startup)``.
+    """
     sizes = (tuple(int(s) for s in str(args.sizes).split(",") if s.strip()) if args.sizes
              else (QUICK_SIZES if args.quick else SINGLE_SIZES))
     budget = 0.04 if args.quick else 0.5
     rounds = 12 if args.quick else 40
     batches = QUICK_BATCH_SIZES if args.quick else BATCH_SIZES
+    startup = run_startup(1 if args.quick else 3)
     single = run_single(sizes, budget, rounds=rounds)
     print(write_single(single, out))
     print(write_accuracy(single, out))
     batch = run_batch(batches, budget, rounds=3 if args.quick else 9)
     print(write_batch(batch, out))
-    (out / "dynamics.json").write_text(json.dumps(_jsonable({"versions": _versions(), "quick": bool(args.quick),
-                                                             "single": single, "batch": batch}), indent=1),
-                                       encoding="utf-8")
+    atomic_write(out / "dynamics.json", json.dumps(_jsonable({"versions": _versions(), "quick": bool(args.quick),
+                                                              "single": single, "batch": batch,
+                                                              "startup": startup}), indent=1))
     if not args.no_charts:
         _progress("[charts] scaling, work_precision, speed_accuracy, single_state, batch ...")
         write_charts(single, batch, out)
         print(f"charts written to {out}/" + ", ".join(f"{c}.svg" for c in CHARTS) + " (+ .png)")
-    return single, batch
+    return single, batch, startup
 
 
-def _summarise(args, out: Path, single, batch) -> None:
-    summary = Path(args.summary) if getattr(args, "summary", None) else out.parent / "RESULTS.md"
-    write_results(single, batch, out, summary, charts=not args.no_charts, quick=args.quick)
+def _summarise(args, out: Path, single, batch, startup) -> None:
+    summary = Path(args.summary) if getattr(args, "summary", None) else out / "RESULTS.md"
+    write_results(single, batch, out, summary, charts=not args.no_charts, quick=args.quick, startup=startup)
     _progress(f"[results] {summary}")
-    h = headline(single, batch)
+    h = headline(single, batch, startup)
+    for key, what, _ in STARTUP_ROWS:
+        _progress(f"[headline] {what}: {startup[key]:.2f} s")
     for p, st in h.get("batch", {}).items():
-        _progress(f"[headline] batched N=10 B={h['B']}: vectorised / {_peer_label(p)} loop {_x(st['median'])}")
+        _progress(f"[headline] batch N=10 B={h['B']}: aba / {_peer_label(p)} loop {_x(st['median'])}")
     for p, st in h.get("single", {}).items():
         _progress(f"[headline] single N=10: aba / {_peer_label(p)} {_x(st['median'])}")
     if h["scaling"]:
@@ -1118,7 +1286,7 @@ def main(args) -> int:
         rc |= code
     if dynamics is not None:     # last, so that it links the other groups' fresh results
         _summarise(args, out, *dynamics)
-    if not args.no_charts and getattr(args, "gallery", DEFAULT_GALLERY):
+    if not args.no_charts and getattr(args, "gallery", ""):
         copied = copy_to_gallery(out, Path(args.gallery))
         if copied:
             _progress(f"[gallery] copied {len(copied)} SVG charts to {args.gallery}/")

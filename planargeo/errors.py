@@ -16,7 +16,8 @@ Hierarchy::
     │   ├── NonFiniteError                 NaN or inf where numbers are needed
     │   ├── InvalidPolygonError            shapely geometry not a valid area
     │   ├── TopologyError                  parent array not a tree (e.g. a cycle)
-    │   └── SceneError                     scene parameters that cannot be built
+    │   ├── SceneError                     scene parameters that cannot be built
+    │   └── NumericOverflowError           finite input whose result does not fit in a float
     ├── DegenerateGeometryError (ValueError)  e.g. the join of two coincident points
     └── SingularError (numpy.linalg.LinAlgError)  carries ``cond``
         ├── SingularInertiaError           an inertia that cannot be inverted
@@ -36,6 +37,7 @@ __all__ = [
     "InvalidPolygonError",
     "TopologyError",
     "SceneError",
+    "NumericOverflowError",
     "DegenerateGeometryError",
     "SingularError",
     "SingularInertiaError",
@@ -86,6 +88,13 @@ class TopologyError(InputError):
 
 class SceneError(InputError):
     """Scene parameters describe a mechanism that cannot be built or assembled."""
+
+
+class NumericOverflowError(InputError):
+    """Finite input whose result does not fit in a float (e.g. speeds of 1e160: the dynamics square them).
+
+    Raised instead of returning inf or NaN; the message names the largest input.
+    """
 
 
 class DegenerateGeometryError(PlanargeoError, ValueError):

@@ -255,7 +255,7 @@ def _error(msg: str, code: int) -> int:
 def main(args: argparse.Namespace) -> int:
     """Run ``planargeo report``; returns the exit status."""
     from planargeo import scenes
-    from planargeo.errors import InputError, PlanargeoError
+    from planargeo.errors import InputError, NumericOverflowError, PlanargeoError
 
     if args.list:
         listing = {}
@@ -284,6 +284,8 @@ def main(args: argparse.Namespace) -> int:
     try:
         # overflow and invalid arithmetic are reported once, below, not as numpy warnings
         res = _build_quietly(scenes, args.scene, params)
+    except NumericOverflowError as exc:        # finite parameters, results out of range: name those that lead there
+        return _error(_non_finite_message(scenes, args.scene, [], params, str(exc).splitlines()[0]), 1)
     except (PlanargeoError, ValueError, TypeError, ArithmeticError, np.linalg.LinAlgError) as exc:
         msg = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
         return _error(msg, 1)
@@ -342,10 +344,10 @@ def _culprits(scenes, name: str, params: dict[str, Any]) -> list[str]:
     return out
 
 
-def _non_finite_message(scenes, scene: str, bad: list[str], params: dict[str, Any]) -> str:
-    """One line: which results are not finite and which given parameter(s) led there."""
+def _non_finite_message(scenes, scene: str, bad: list[str], params: dict[str, Any], overflow: str = "") -> str:
+    """One line: which results are not finite (or the ``overflow`` error) and which given parameter(s) led there."""
     names = ", ".join(b.split(".", 1)[1] for b in bad[:8]) + (", ..." if len(bad) > 8 else "")
-    head = f"scene '{scene}' gives non-finite results ({names})"
+    head = f"scene '{scene}': {overflow}" if overflow else f"scene '{scene}' gives non-finite results ({names})"
     if not params:
         return f"{head} with the default parameters"
     culprits = _culprits(scenes, scene, params) or list(params)

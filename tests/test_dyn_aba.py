@@ -1,8 +1,9 @@
 """Recursive forward dynamics (thesis 3.6) against independent references.
 
-References: the dense solve H qdd = tau - C (CRBA), hand-derived closed forms
-(Lagrange's equations for single and double pendulums, a free body, a slider),
-and the inverse dynamics round trip.  Pinocchio lives in test_pinocchio.py.
+References: Pinocchio's ``aba`` on the same mechanism (``bench.pinocchio_forward``:
+composite joints for the multi-dof kinds, external wrenches as ``Jᵀ f``), hand-derived
+closed forms (Lagrange's equations for single and double pendulums, a free body, a
+slider), and the inverse dynamics round trip.  More Pinocchio checks in test_pinocchio.py.
 """
 import numpy as np
 import pytest
@@ -10,10 +11,13 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from planargeo.algorithms.aba import articulated_body, forward_dynamics
-from planargeo.algorithms.crba import bias_forces, forward_dynamics_crba, mass_matrix
+from planargeo.algorithms.crba import forward_dynamics_crba, mass_matrix
 from planargeo.algorithms.rnea import inverse_dynamics, newton_euler
 from planargeo.errors import SingularConfigurationError
 from planargeo.mechanics.model import JOINT_DOFS, Body, Joint, Model, chain_model, random_model
+
+pytest.importorskip("pinocchio")
+from bench import pinocchio_forward  # noqa: E402  (benchmarks/bench.py: the Pinocchio reference)
 
 ALL_KINDS = tuple(JOINT_DOFS)
 G = 9.81
@@ -33,29 +37,29 @@ def _assert_close_cond(a, b, H):
     assert err <= 1e-14 * cond + 1e-12, f"error {err:.3g} with cond(H) {cond:.3g}"
 
 
-# -- ABA vs dense CRBA ---------------------------------------------------------
+# -- ABA vs Pinocchio ---------------------------------------------------------
 @pytest.mark.parametrize("N", [1, 2, 5, 20, 50, 200])
 @pytest.mark.parametrize("tree", [False, True])
-def test_aba_matches_crba_revolute_prismatic(N, tree):
+def test_aba_matches_pinocchio_revolute_prismatic(N, tree):
     m = random_model(N, seed=N, kinds=("revolute", "prismatic"), tree=tree)
     rng = np.random.default_rng(N)
     q, qd, tau, f_ext = _random_state(m, rng, (3,))
     H = mass_matrix(m, q)
-    _assert_close_cond(forward_dynamics(m, q, qd, tau, f_ext), forward_dynamics_crba(m, q, qd, tau, f_ext), H)
-    # without external loads, single states (the scalar path)
+    _assert_close_cond(forward_dynamics(m, q, qd, tau, f_ext), pinocchio_forward(m, q, qd, tau, f_ext), H)
+    # without external loads, single states
     for k in range(3):
-        _assert_close_cond(forward_dynamics(m, q[k], qd[k], tau[k]), forward_dynamics_crba(m, q[k], qd[k], tau[k]), H[k])
+        _assert_close_cond(forward_dynamics(m, q[k], qd[k], tau[k]), pinocchio_forward(m, q[k], qd[k], tau[k]), H[k])
 
 
 @pytest.mark.parametrize("N", [1, 3, 12])
 @pytest.mark.parametrize("tree", [False, True])
-def test_aba_matches_crba_all_joint_kinds(N, tree):
+def test_aba_matches_pinocchio_all_joint_kinds(N, tree):
     m = random_model(N, seed=100 + N, kinds=ALL_KINDS, tree=tree)
     if m.nq == 0:
         pytest.skip("all joints fixed")
     rng = np.random.default_rng(N)
     q, qd, tau, f_ext = _random_state(m, rng, (4,))
-    _assert_close_cond(forward_dynamics(m, q, qd, tau, f_ext), forward_dynamics_crba(m, q, qd, tau, f_ext),
+    _assert_close_cond(forward_dynamics(m, q, qd, tau, f_ext), pinocchio_forward(m, q, qd, tau, f_ext),
                        mass_matrix(m, q))
 
 
@@ -85,7 +89,7 @@ def test_mass_matrix_two_ways():
 
 
 @given(n=st.integers(1, 6), seed=st.integers(0, 2**31), tree=st.booleans(), allkinds=st.booleans())
-def test_property_aba_equals_crba_and_rnea_roundtrip(n, seed, tree, allkinds):
+def test_property_aba_equals_pinocchio_and_rnea_roundtrip(n, seed, tree, allkinds):
     m = random_model(n, seed=seed, kinds=ALL_KINDS if allkinds else ("revolute", "prismatic"), tree=tree)
     rng = np.random.default_rng(seed)
     q, qd, tau, f_ext = _random_state(m, rng)
@@ -93,7 +97,7 @@ def test_property_aba_equals_crba_and_rnea_roundtrip(n, seed, tree, allkinds):
         return
     qdd = forward_dynamics(m, q, qd, tau, f_ext)
     H = mass_matrix(m, q)
-    _assert_close_cond(qdd, forward_dynamics_crba(m, q, qd, tau, f_ext), H)
+    _assert_close_cond(qdd, pinocchio_forward(m, q, qd, tau, f_ext), H)
     # RNEA(ABA(tau)) == tau
     back = inverse_dynamics(m, q, qd, qdd, f_ext)
     assert np.abs(back - tau).max() <= 1e-12 * np.linalg.cond(H) * max(1.0, np.abs(tau).max())
@@ -108,11 +112,15 @@ def test_rnea_roundtrip_large_tree_batch():
 
 
 def test_rnea_equals_h_qdd_plus_c():
+    """τ = H q̈ + C, with H and C from Pinocchio's forward dynamics: q̈ = ABA(τ) is linear in τ."""
     m = random_model(7, seed=6, kinds=ALL_KINDS, tree=True)
     rng = np.random.default_rng(6)
     q, qd, qdd, _ = _random_state(m, rng)
+    z = np.zeros(m.nq)
+    free = pinocchio_forward(m, q, qd, z)                                          # -H⁻¹ C
+    Hinv = np.array([pinocchio_forward(m, q, qd, e) - free for e in np.eye(m.nq)]).T
     tau = inverse_dynamics(m, q, qd, qdd)
-    np.testing.assert_allclose(tau, mass_matrix(m, q) @ qdd + bias_forces(m, q, qd), atol=1e-11)
+    np.testing.assert_allclose(Hinv @ tau + free, qdd, atol=1e-10)
 
 
 # -- hand-derived closed forms ------------------------------------------------
@@ -122,7 +130,7 @@ def test_single_pendulum_closed_form(q, qd, tau, mass, L):
     """Uniform rod on a pivot: (m L²/3) θ̈ = τ - m g (L/2) cos θ (θ from +x, gravity -y)."""
     m = chain_model(1, mass=mass, length=L)
     expected = (tau - mass * G * L / 2 * np.cos(q)) / (mass * L * L / 3)
-    for fd in (forward_dynamics, forward_dynamics_crba):
+    for fd in (forward_dynamics, forward_dynamics_crba):        # both methods against the closed form
         np.testing.assert_allclose(fd(m, [q], [qd], [tau]), [expected], rtol=1e-13)
 
 
@@ -229,17 +237,17 @@ def test_singular_point_mass_on_its_pivot():
 
 
 @pytest.mark.parametrize("tree", [False, True])
-def test_large_batch_component_path(tree):
-    """Batches above SMALL_BATCH go through the component-wise vectorised path (with f_ext, broadcasting)."""
+def test_batches_with_loads_and_broadcasting(tree):
+    """A (3, 4) batch of states, with f_ext, and qd / f_ext broadcast from one state."""
     m = random_model(12, seed=21, kinds=("revolute", "prismatic", "fixed"), tree=tree)
     rng = np.random.default_rng(21)
     q, qd, tau, f_ext = _random_state(m, rng, (3, 4))
     got = forward_dynamics(m, q, qd, tau, f_ext)
     assert got.shape == (3, 4, m.nq)
-    _assert_close_cond(got, forward_dynamics_crba(m, q, qd, tau, f_ext), mass_matrix(m, q))
+    _assert_close_cond(got, pinocchio_forward(m, q, qd, tau, f_ext), mass_matrix(m, q))
     # broadcasting a single qd / f_ext against the batch
     got2 = forward_dynamics(m, q, qd[0, 0], tau, f_ext[0, 0])
-    ref2 = forward_dynamics_crba(m, q, np.broadcast_to(qd[0, 0], q.shape), tau, np.broadcast_to(f_ext[0, 0], (3, 4, m.N, 3)))
+    ref2 = pinocchio_forward(m, q, np.broadcast_to(qd[0, 0], q.shape), tau, np.broadcast_to(f_ext[0, 0], (3, 4, m.N, 3)))
     _assert_close_cond(got2, ref2, mass_matrix(m, q))
 
 

@@ -105,6 +105,9 @@ def test_structure_helpers():
     assert m.q_slice(1) == slice(1, 4) and m.q_slice(2) == slice(4, 4)
     assert m.children(0) == (1, 2) and m.children(-1) == (0,)
     assert m.ancestors(3) == (0, 1, 3)
+    # coordinates moving each body: those of the joints on its path from the ground, by hand
+    assert m.ancestor_mask().astype(int).tolist() == [[1, 0, 0, 0, 0], [1, 1, 1, 1, 0], [1, 0, 0, 0, 0],
+                                                      [1, 1, 1, 1, 1]]
     assert not m.is_chain and chain_model(3).is_chain
     with pytest.raises(InputError, match="i must be a body index"):
         m.q_slice(7)
@@ -122,6 +125,16 @@ def test_check_state_errors():
         check_state(m, [0.0, 0.0], f_ext=np.zeros((3, 3)))
     with pytest.raises(ShapeError, match="does not broadcast"):
         check_state(m, np.zeros((3, 2)), np.zeros((4, 2)))
+    with pytest.raises(InputError, match="f_ext must be real"):
+        check_state(m, [0.0, 0.0], f_ext=np.zeros((2, 3), dtype=complex))
+
+
+def test_check_state_none_is_zeros():
+    """Every method validates its state here: qd, tau, qdd None are zeros, f_ext None is no load."""
+    q, qd, tau, f_ext, qdd, shape = check_state(chain_model(2), [[0.0, 1.0]] * 3)
+    for x in (qd, tau, qdd):
+        assert x.dtype == np.float64 and np.array_equal(x, [0.0, 0.0])
+    assert f_ext is None and shape == (3,)
 
 
 # -- kinematics ---------------------------------------------------------------

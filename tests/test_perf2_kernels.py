@@ -1,7 +1,8 @@
 """The unchecked kernels and qdd-only fast paths behind the teaching algorithms (PERF-2).
 
 References are independent: dense inverses / numpy's own condition numbers,
-the dense CRBA solve, and the full workspaces (which build the reaction bases).
+Pinocchio's ``aba`` (``bench.pinocchio_forward``), and the full workspaces (which
+build the reaction bases).
 """
 import numpy as np
 import pytest
@@ -10,13 +11,15 @@ from hypothesis import given, strategies as st
 from planargeo import errors
 from planargeo.algorithms.articulated_mobility import _cond
 from planargeo.algorithms.chain_splitting import forward_dynamics_mobility_split, mobility_split
-from planargeo.algorithms.crba import forward_dynamics_crba
 from planargeo.algorithms.projective import forward_dynamics_projective, projective_workspace
 from planargeo.algorithms.stacked import articulation_matrix, forward_dynamics_stacked, stacked_solve
 from planargeo.mechanics.model import chain_model, random_model
 from planargeo.screws.twists import inertia_matrix
 from planargeo.errors import COND_LIMIT
 from planargeo.mechanics.subspaces import T_of, _effective_mobility, _T, effective_mobility
+
+pytest.importorskip("pinocchio")
+from bench import pinocchio_forward  # noqa: E402
 
 EPS = np.finfo(float).eps
 
@@ -63,10 +66,10 @@ def test_cheap_cond_singular_is_inf():
 
 
 @pytest.mark.parametrize("model", [chain_model(7), random_model(9, seed=4)], ids=["chain", "random"])
-def test_qdd_paths_agree_with_dense_reference_and_workspaces(model):
+def test_qdd_paths_agree_with_pinocchio_and_workspaces(model):
     rng = np.random.default_rng(11)
     q, qd, tau = rng.standard_normal((3, model.nq))
-    ref = forward_dynamics_crba(model, q, qd, tau)
+    ref = pinocchio_forward(model, q, qd, tau)
     tol = 1e-9 * (1 + np.abs(ref).max())
     fast = {"projective": forward_dynamics_projective(model, q, qd, tau),
             "stacked": forward_dynamics_stacked(model, q, qd, tau)}

@@ -1,8 +1,8 @@
 """Cross-check against Pinocchio (an independent rigid-body library).
 
-Planar models are embedded in 3-D: revolute joints become ``JointModelRZ``,
-prismatic joints ``JointModelPX`` of a frame rotated about z; the body
-inertia is given about the centre of mass (``pin.Inertia(m, com3, I3)``);
+Planar models are embedded in 3-D by ``bench.to_pinocchio``: revolute joints become
+``JointModelRZ``, prismatic joints ``JointModelPX`` of a frame rotated about z; the
+body inertia is given about the centre of mass (``pin.Inertia(m, com3, I3)``);
 gravity is set explicitly.
 """
 import numpy as np
@@ -14,22 +14,7 @@ from planargeo.algorithms.aba import forward_dynamics  # noqa: E402
 from planargeo.algorithms.crba import mass_matrix  # noqa: E402
 from planargeo.algorithms.rnea import inverse_dynamics  # noqa: E402
 from planargeo.mechanics.model import chain_model, random_model  # noqa: E402
-
-
-def to_pinocchio(model):
-    """The same mechanism as a Pinocchio model (revolute / prismatic joints only)."""
-    pm = pin.Model()
-    ids = []
-    for i, (b, j, p) in enumerate(zip(model.bodies, model.joints, model.parents)):
-        px, py, th = j.placement
-        R = np.array([[np.cos(th), -np.sin(th), 0.0], [np.sin(th), np.cos(th), 0.0], [0.0, 0.0, 1.0]])
-        jm = {"revolute": pin.JointModelRZ, "prismatic": pin.JointModelPX}[j.kind]()
-        jid = pm.addJoint(0 if p < 0 else ids[p], jm, pin.SE3(R, np.array([px, py, 0.0])), f"joint{i}")
-        I3 = np.diag([1.0, 1.0, b.inertia])  # out-of-plane entries are irrelevant in the plane
-        pm.appendBodyToJoint(jid, pin.Inertia(b.mass, np.array([b.com[0], b.com[1], 0.0]), I3), pin.SE3.Identity())
-        ids.append(jid)
-    pm.gravity = pin.Motion(np.array([model.gravity[0], model.gravity[1], 0.0, 0.0, 0.0, 0.0]))
-    return pm
+from bench import to_pinocchio  # noqa: E402
 
 
 def test_uniform_chain_defaults():

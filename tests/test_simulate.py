@@ -46,6 +46,21 @@ def test_energy_by_hand():
     assert float(V) == pytest.approx(9.81 * (0.5 + 1.5), rel=1e-14)
 
 
+def test_energy_of_given_kinematics_is_not_recomputed():
+    """energy(data=...) uses the frame's kinematics as they are: a unit rod spinning at ω has T = ω²/6."""
+    from planargeo.mechanics.kinematics import kinematics
+
+    m = chain_model(1)
+    d = kinematics(m, [np.pi / 2], [3.0])
+    assert [float(x) for x in energy(m, data=d)] == [float(x) for x in energy(m, [np.pi / 2], [3.0])]
+    d.v = d.v * 2.0                                   # the caller's numbers, not a fresh computation
+    assert float(energy(m, data=d)[0]) == pytest.approx(4 * 9 / 6, rel=1e-14)
+    with pytest.raises(InputError, match="not both"):
+        energy(m, [0.0], [0.0], data=d)
+    with pytest.raises(InputError, match="not both"):
+        energy(chain_model(2), data=d)
+
+
 def test_dop853_conserves_energy_free_chain():
     """Documented tolerance (docs/simulation.md, chain-dop853): DOP853 at rtol 1e-10 keeps the relative
     energy drift of the free 3-link chain below 1e-9 over 5 s (measured 4.2e-11)."""

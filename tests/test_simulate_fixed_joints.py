@@ -38,10 +38,9 @@ def test_crba_mixed_fixed_and_revolute_closed_form(kinds):
     np.testing.assert_allclose(qdd, [ref], rtol=1e-13)
 
 
-def test_simulate_model_without_coordinates():
-    from planargeo.algorithms.crba import forward_dynamics_crba as fwd
-
-    r = simulate(welded(), [], [], 0.5, method="RK4", dt=0.1, forward=fwd)
+@pytest.mark.parametrize("forward", [None, forward_dynamics_crba], ids=["aba", "crba"])
+def test_simulate_model_without_coordinates(forward):
+    r = simulate(welded(), [], [], 0.5, method="RK4", dt=0.1, forward=forward)
     assert r.status == "ok" and r.q.shape == (6, 0) and np.all(r.energy == 0.0)
-    r = simulate(welded(), [], [], 0.5, forward=fwd)
+    r = simulate(welded(), [], [], 0.5, forward=forward)
     assert r.status == "ok" and r.t[-1] == 0.5

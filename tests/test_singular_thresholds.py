@@ -43,7 +43,7 @@ G = 9.81
 
 
 def _batched(m, q, qd, tau):
-    # 40 copies: above SMALL_BATCH, so the batched plan (with its block-wise test) runs
+    # 40 copies: a batch
     k = 40
     return forward_dynamics(m, np.tile(q, (k, 1)), np.tile(qd, (k, 1)), np.tile(tau, (k, 1)))[k // 2]
 
@@ -431,11 +431,8 @@ def test_extreme_masses_accepted_by_every_aba_path(n, mass):
     Hand closed form: a horizontal chain of point masses at rest, released, is in free fall
     at the first instant (every vertical acceleration is compatible with the links), so mass
     ``k`` (at ``x = k + 1``) has ``Σ_{j≤k} (k + 1 - j) q̈_j = -g``: ``q̈ = [-g, g, 0, 0, ...]``,
-    whatever the mass.  ``n = 401`` exceeds ``MAX_PLAN_BODIES``: the general component loop
-    (:func:`_aba_components`), whose cheap squared test fails for both extreme masses.
+    whatever the mass.
     """
-    from planargeo.algorithms.aba import MAX_PLAN_BODIES
-    assert n <= 64 or n > MAX_PLAN_BODIES
     m = _point_mass_chain(n, mass)
     g = 9.81
     want = np.zeros(n)

@@ -5,7 +5,9 @@ The joint-space equations of motion are ``H(q) q̈ + C(q, q̇) = τ`` with
 * ``H = Σ_i J_iᵀ I_i J_i`` (``J_i`` the body Jacobian of thesis Remark 8),
   computed by the composite-rigid-body recursion: with the composite inertia
   ``Ic_i = I_i + Σ_{children c} Ic_c`` (all at the origin, so plain sums),
-  ``H[i, j] = s_iᵀ Ic_i s_j`` for every ancestor ``j`` of ``i`` (and ``i`` itself);
+  ``H[r, c] = s_rᵀ Ic_{body(c)} s_c`` for every coordinate ``r`` whose joint is on
+  the path from the ground to the body of coordinate ``c``, and ``H[c, r]`` its
+  transpose;
 * ``C = RNEA(q, q̇, 0, f_ext)`` (bias forces, gravity and external loads).
 
 :func:`forward_dynamics_crba` solves ``H q̈ = τ - C`` densely; it is the
@@ -15,10 +17,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo.errors import SingularConfigurationError
+from planargeo.algorithms.compiled import check_finite
+from planargeo.errors import InputError, SingularConfigurationError
 from planargeo.mechanics.kinematics import check_state, kinematics
 from planargeo.mechanics.model import Model
-from planargeo.algorithms.rnea import inverse_dynamics
+from planargeo.algorithms.rnea import newton_euler
 
 __all__ = ["mass_matrix", "bias_forces", "forward_dynamics_crba", "SINGULAR_RCOND"]
 
@@ -46,6 +49,13 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
     ndarray (..., nq, nq)
         Symmetric positive definite (for bodies with mass).
 
+    Raises
+    ------
+    InputError
+        An unknown ``method``, or ``q`` of the wrong shape, not finite, or complex.
+    NumericOverflowError
+        If ``H`` is not finite for finite ``q`` (coordinates out of the float range).
+
     Examples
     --------
     Double pendulum of unit uniform links at q = 0, by hand:
@@ -62,43 +72,34 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
     array([[ 4., -1.],
            [-1.,  2.]])
     """
+    if method not in ("crba", "jacobian"):
+        raise InputError(f"method must be 'crba' or 'jacobian', got {method!r}")
     q, _, _, _, _, shape = check_state(model, q)
     data = kinematics(model, q)
-    if method == "jacobian":
-        J = data.J
-        return np.einsum("...nki,...nkl,...nlj->...ij", J, data.I, J)
-    if method != "crba":
-        from planargeo.errors import InputError
-
-        raise InputError(f"method must be 'crba' or 'jacobian', got {method!r}")
-    Ic = data.I.copy()
-    for i in range(model.N - 1, -1, -1):       # composite inertias, tip to base
-        par = model.parents[i]
-        if par >= 0:
-            Ic[..., par, :, :] += Ic[..., i, :, :]
-    cols = _column_tables(model)
-    body = cols["body"]
-    F = np.einsum("...cij,...jc->...ic", Ic[..., body, :, :], data.S)   # Ic_{b(c)} s_c
-    SF = np.swapaxes(data.S, -1, -2) @ F                                # s_r^T Ic_{b(c)} s_c
-    # H[r, c] = s_r^T Ic_{b(c)} s_c when joint(r) is on the path to body(c), and symmetric
-    return np.where(cols["anc"], SF, np.where(cols["anc"].T, np.swapaxes(SF, -1, -2), 0.0))
-
-
-def _column_tables(model: Model) -> dict:
-    cache = model._arrays
-    if "crba_cols" not in cache:
-        body = np.repeat(np.arange(model.N), [j.dofs for j in model.joints])
-        mask = model.arrays()["ancestor_mask"]            # (N, nq): joint col on path to body
-        anc = mask[body].T                                  # anc[r, c]: col r on the path to body(c)
-        cache["crba_cols"] = {"body": body, "anc": anc}
-    return cache["crba_cols"]
+    with np.errstate(over="ignore", invalid="ignore"):     # out of the float range: check_finite says so
+        if method == "jacobian":
+            J = data.J
+            H = np.einsum("...nki,...nkl,...nlj->...ij", J, data.I, J)
+        else:
+            Ic = data.I.copy()
+            for i in range(model.N - 1, -1, -1):       # composite inertias, tip to base
+                if model.parents[i] >= 0:
+                    Ic[..., model.parents[i], :, :] += Ic[..., i, :, :]
+            body = np.repeat(np.arange(model.N), [j.dofs for j in model.joints])   # the body of each coordinate
+            path = model.ancestor_mask()[body].T        # path[r, c]: joint of r on the path to body(c)
+            F = np.einsum("...cij,...jc->...ic", Ic[..., body, :, :], data.S)   # Ic_{body(c)} s_c
+            SF = np.swapaxes(data.S, -1, -2) @ F                               # s_rᵀ Ic_{body(c)} s_c
+            H = np.where(path, SF, np.where(path.T, np.swapaxes(SF, -1, -2), 0.0))
+    return check_finite(H, "H", q=q)
 
 
 def bias_forces(model: Model, q, qd, f_ext=None) -> np.ndarray:
     """Bias forces ``C(q, q̇) = τ(q, q̇, q̈ = 0)``: velocity terms, gravity, loads (thesis 3.5, 3.10, 3.11).
 
     The joint forces that keep every joint from accelerating, by inverse
-    dynamics with ``q̈ = 0`` (so ``p_i`` of 3.11 and ``κ_i`` of 2.19 enter).
+    dynamics with ``q̈ = 0`` (so ``p_i`` of 3.11 and ``κ_i`` of 2.19 enter), on the
+    array recursion :func:`~planargeo.algorithms.rnea.newton_euler` (the dense reference
+    shares no code with the compiled kernels).
 
     Parameters
     ----------
@@ -123,7 +124,7 @@ def bias_forces(model: Model, q, qd, f_ext=None) -> np.ndarray:
     array([0.])
     """
     q, qd, _, f_ext, _, shape = check_state(model, q, qd, None, f_ext)
-    return inverse_dynamics(model, q, qd, np.zeros(shape + (model.nq,)), f_ext)
+    return newton_euler(model, q, qd, np.zeros(shape + (model.nq,)), f_ext).tau
 
 
 def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
@@ -136,6 +137,7 @@ def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     ----------
     model : Model
     q, qd, tau : array_like (..., nq)
+        ``qd`` or ``tau`` None: zeros.
     f_ext : array_like (..., N, 3), optional
 
     Returns
@@ -144,6 +146,8 @@ def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
 
     Raises
     ------
+    NumericOverflowError
+        If finite input gives a result that is not finite (e.g. speeds of 1e160).
     SingularConfigurationError
         If ``H`` is numerically singular: ``λ_min(H) ≤ SINGULAR_RCOND λ_max(H)``
         (``.cond = λ_max / λ_min``).  The dense reference keeps this rule of its
@@ -170,7 +174,8 @@ def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     H = mass_matrix(model, q)
     H = np.broadcast_to(H, shape + H.shape[-2:])
     C = bias_forces(model, q, qd, f_ext)
-    rhs = np.broadcast_to(tau, shape + (model.nq,)) - C
+    with np.errstate(over="ignore", invalid="ignore"):
+        rhs = check_finite(np.broadcast_to(tau, shape + (model.nq,)) - C, "τ - C", tau=tau, C=C)
     if model.nq == 0:                      # nothing to solve (and no condition number to take)
         return np.zeros(shape + (0,))
     w = np.linalg.eigvalsh(H)
@@ -180,4 +185,6 @@ def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
         with np.errstate(divide="ignore", invalid="ignore"):
             cond = np.where(lo > 0, hi / np.where(lo > 0, lo, 1.0), np.inf)
         raise SingularConfigurationError("mass matrix H is singular", float(np.max(np.where(bad, cond, 0))))
-    return np.linalg.solve(H, rhs[..., None])[..., 0]
+    with np.errstate(over="ignore", invalid="ignore"):
+        qdd = np.linalg.solve(H, rhs[..., None])[..., 0]
+    return check_finite(qdd, "q̈", q=q, qd=qd, tau=tau, f_ext=f_ext)

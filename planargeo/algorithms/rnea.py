@@ -7,19 +7,26 @@ force is the force needed to move it plus everything carried by its children,
     ``f_i = I_i a_i + p_i + Σ_{c: λ(c) = i} f_c``       (3.10 for a tree)
 
 and the joint torque is its projection ``τ_i = s_iᵀ f_i`` (3.5).
+
+As for forward dynamics (:mod:`planargeo.algorithms.aba`), the recursion is written
+twice: :func:`newton_euler` on arrays (any joint kind, batches, the whole workspace),
+and :func:`planargeo.algorithms.kernels.newton_euler_state`, compiled, which
+:func:`inverse_dynamics` runs for models of revolute, prismatic and fixed joints.
 """
 from __future__ import annotations
 
 import numpy as np
 
+from planargeo.algorithms.compiled import check_finite, evaluate
 from planargeo.mechanics.kinematics import check_state, kinematics
 from planargeo.mechanics.model import Data, Model
 
 __all__ = ["inverse_dynamics", "newton_euler"]
 
 
+@np.errstate(over="ignore", invalid="ignore")   # out of the float range: check_finite says so by name
 def newton_euler(model: Model, q, qd, qdd, f_ext=None) -> Data:
-    """Recursive Newton-Euler pass; returns the workspace with ``a``, ``f``, ``tau``.
+    """Recursive Newton-Euler pass (thesis 2.18, 3.10, 3.5); returns the workspace with ``a``, ``f``, ``tau``.
 
     Parameters
     ----------
@@ -34,6 +41,13 @@ def newton_euler(model: Model, q, qd, qdd, f_ext=None) -> Data:
         Kinematics fields plus ``qdd``, ``a`` (..., N, 3) accelerations (2.18),
         ``f`` (..., N, 3) joint forces (the load joint ``i`` transmits from the
         parent to body ``i``, 3.10) and ``tau`` (..., nq) (3.5).
+
+    Raises
+    ------
+    ShapeError, NonFiniteError, InputError
+        Arguments of the wrong shape, not finite, or complex.
+    NumericOverflowError
+        If finite input gives a ``τ`` that is not finite (e.g. ``q̈`` near 1e308).
 
     Examples
     --------
@@ -62,6 +76,7 @@ def newton_euler(model: Model, q, qd, qdd, f_ext=None) -> Data:
             f[..., par, :] += f[..., i, :]
         tau[..., model.q_slice(i)] = np.einsum("...ij,...i->...j", data.s(i), f[..., i, :])
     data.qdd, data.a, data.f, data.tau = qdd, a, f, tau
+    check_finite(tau, "τ", q=q, qd=qd, qdd=qdd, f_ext=f_ext)
     return data
 
 
@@ -75,6 +90,7 @@ def inverse_dynamics(model: Model, q, qd, qdd, f_ext=None, *, return_forces: boo
     ----------
     model : Model
     q, qd, qdd : array_like (..., nq)
+        ``qd`` or ``qdd`` None: zeros.
     f_ext : array_like (..., N, 3), optional
     return_forces : bool
         Also return the joint forces ``f`` (..., N, 3) (world wrenches at the origin).
@@ -83,6 +99,11 @@ def inverse_dynamics(model: Model, q, qd, qdd, f_ext=None, *, return_forces: boo
     -------
     tau : ndarray (..., nq)
     f : ndarray (..., N, 3), only if ``return_forces``
+
+    Raises
+    ------
+    ShapeError, NonFiniteError, InputError, NumericOverflowError
+        As :func:`newton_euler`.
 
     Examples
     --------
@@ -102,5 +123,11 @@ def inverse_dynamics(model: Model, q, qd, qdd, f_ext=None, *, return_forces: boo
     array([[4.905],
            [0.   ]])
     """
-    w = newton_euler(model, q, qd, qdd, f_ext)
-    return (w.tau, w.f) if return_forces else w.tau
+    if return_forces:
+        w = newton_euler(model, q, qd, qdd, f_ext)
+        return w.tau, w.f
+    return evaluate(model, True, q, qd, qdd, f_ext, _general)
+
+
+def _general(model, q, qd, qdd, f_ext):
+    return newton_euler(model, q, qd, qdd, f_ext).tau

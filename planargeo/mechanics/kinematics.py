@@ -29,7 +29,7 @@ import math
 import numpy as np
 
 from planargeo._validate import as_array
-from planargeo.errors import NonFiniteError, ShapeError
+from planargeo.errors import InputError, NonFiniteError, NumericOverflowError, ShapeError
 from planargeo.mechanics.model import Data, Model
 
 __all__ = ["kinematics", "check_state", "cross_motion", "cross_force", "joint_axes"]
@@ -67,45 +67,74 @@ def cross_force(v: np.ndarray, f: np.ndarray) -> np.ndarray:
     return out
 
 
-def _as_state(x, name: str, nq: int) -> np.ndarray:
+def _real(x, name: str) -> None:
+    """Refuse complex input (numpy would drop the imaginary part with only a warning)."""
+    try:
+        complex_ = np.iscomplexobj(x)
+    except (TypeError, ValueError):      # not an array at all: as_array says what is wrong
+        return
+    if complex_:
+        raise InputError(f"{name} must be real, got complex values")
+
+
+def _as_state(x, name: str, nq: int, finite: bool = True) -> np.ndarray:
     if type(x) is np.ndarray and x.dtype == np.float64:
         a = x
     else:
+        _real(x, name)
         a = as_array(x, name, finite=False)
     if a.ndim == 0 or a.shape[-1] != nq:
         raise ShapeError(f"{name} must have shape (..., {nq}), got shape {a.shape}")
-    if not np.isfinite(a).all():
+    if finite and not np.isfinite(a).all():
         raise NonFiniteError(f"{name} must be finite, got non-finite values in {a!r}")
     return a
 
 
-def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None):
+def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None, finite: bool = True):
     """Validate and broadcast a state; returns ``(q, qd, tau, f_ext, qdd, batch_shape)``.
 
     ``q``, ``qd``, ``tau``, ``qdd`` have shape ``(..., nq)``; ``f_ext`` has
     shape ``(..., N, 3)`` (world wrenches at the origin, one per body) or is
-    ``None``.  Missing arguments are returned as ``None``.  Raises
-    :class:`ShapeError` / :class:`NonFiniteError` naming the argument.
+    ``None``.  Every method of the package validates its state here, so they all
+    treat missing values alike: ``qd``, ``tau`` or ``qdd`` given as ``None`` are
+    zeros (returned as float64 zeros of shape ``(nq,)``); ``f_ext`` ``None`` is no
+    external load (returned as ``None``).  ``finite=False`` leaves out the test for NaN
+    and infinity (for a caller that makes it itself, as the compiled kernels do).
+
+    Raises
+    ------
+    ShapeError
+        An argument's last axis is not ``nq`` (``(N, 3)`` for ``f_ext``), or the batch shapes do not broadcast.
+    NonFiniteError
+        An argument holds NaN or infinity.
+    InputError
+        An argument is not numeric, or is complex.
 
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
     >>> check_state(chain_model(2), [0.0, 0.0], [[1.0, 2.0]] * 4)[-1]
     (4,)
+    >>> check_state(chain_model(2), [0.0, 0.0])[1:3]            # qd, tau: None is zeros
+    (array([0., 0.]), array([0., 0.]))
     >>> check_state(chain_model(2), [0.0])
     Traceback (most recent call last):
     ...
     planargeo.errors.ShapeError: q must have shape (..., 2), got shape (1,)
+    >>> check_state(chain_model(2), [0.0, 1j])
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: q must be real, got complex values
     """
     nq, N = model.nq, model.N
-    q = _as_state(q, "q", nq)
+    q = _as_state(q, "q", nq, finite)
     shape = q.shape[:-1]
     out = []
     for name, x in (("qd", qd), ("tau", tau), ("qdd", qdd)):
         if x is None:
-            out.append(None)
+            out.append(np.zeros(nq))
             continue
-        a = _as_state(x, name, nq)
+        a = _as_state(x, name, nq, finite)
         if a.ndim > 1 or shape:
             try:
                 shape = np.broadcast_shapes(shape, a.shape[:-1])
@@ -114,7 +143,8 @@ def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None):
                     f"{name} of shape {a.shape} does not broadcast with q of shape {q.shape}") from None
         out.append(a)
     if f_ext is not None:
-        f_ext = as_array(f_ext, "f_ext", (N, 3))
+        _real(f_ext, "f_ext")
+        f_ext = as_array(f_ext, "f_ext", (N, 3), finite=finite)
         if f_ext.ndim > 2 or shape:
             try:
                 shape = np.broadcast_shapes(shape, f_ext.shape[:-2])
@@ -174,7 +204,7 @@ def joint_axes(kind: str, ox, oy, phi, qi):
 
 
 def kinematics(model: Model, q, qd=None, f_ext=None) -> Data:
-    """World-frame kinematics and bias terms of every body (thesis 3.6 step 2).
+    """World-frame kinematics and bias terms of every body (thesis 3.6 step 2, 3.31-3.34).
 
     Parameters
     ----------
@@ -192,6 +222,13 @@ def kinematics(model: Model, q, qd=None, f_ext=None) -> Data:
     Data
         With ``pose, com, origin, S, I, v, kappa, g, p`` (see :class:`~planargeo.mechanics.model.Data`).
 
+    Raises
+    ------
+    ShapeError, NonFiniteError, InputError
+        Arguments of the wrong shape, not finite, or complex (:func:`check_state`).
+    NumericOverflowError
+        If finite input gives fields that are not finite (e.g. speeds of 1e160).
+
     Examples
     --------
     A unit link turning at 1 rad/s about the origin, at q = 0:
@@ -204,10 +241,15 @@ def kinematics(model: Model, q, qd=None, f_ext=None) -> Data:
     array([-0.5,  0. ,  0. ])
     """
     q, qd, _, f_ext, _, shape = check_state(model, q, qd, None, f_ext)
-    if shape == ():
-        return _kinematics_scalar(model, q, np.zeros(model.nq) if qd is None else qd, f_ext)
-    q = np.broadcast_to(q, shape + (model.nq,))
-    qd = np.zeros(shape + (model.nq,)) if qd is None else np.broadcast_to(qd, shape + (model.nq,))
+    with np.errstate(over="ignore", invalid="ignore"):      # out of the float range: _data says so by name
+        if shape == ():
+            return _kinematics_scalar(model, q, qd, f_ext)
+        return _kinematics_batch(model, np.broadcast_to(q, shape + (model.nq,)),
+                                 np.broadcast_to(qd, shape + (model.nq,)), f_ext, shape)
+
+
+def _kinematics_batch(model: Model, q, qd, f_ext, shape) -> Data:
+    """:func:`kinematics` for a batch (``q``, ``qd`` checked and broadcast to ``shape + (nq,)``)."""
     arr = model.arrays()
     N, nq = model.N, model.nq
     gx, gy = model.gravity
@@ -262,11 +304,25 @@ def kinematics(model: Model, q, qd=None, f_ext=None) -> Data:
         g[..., i, 1] = m * gy
         g[..., i, 2] = m * (cx * gy - cy * gx)
 
+    return _data(model, q, qd, f_ext, pose, com, origin, S, I, v, kappa, g)
+
+
+def _data(model: Model, q, qd, f_ext, pose, com, origin, S, I, v, kappa, g) -> Data:
+    """The :class:`Data` of :func:`kinematics`, with ``g`` plus ``f_ext`` and ``p = -(v×)ᵀ I v - g`` (3.11, 3.34).
+
+    Raises :class:`~planargeo.errors.NumericOverflowError` if a field is not finite (finite
+    input out of the float range, e.g. speeds of 1e160: ``p`` squares them).
+    """
     if f_ext is not None:
         g = g + f_ext
-    Iv = np.einsum("...ij,...j->...i", I, v)
-    p = cross_force(v, Iv) - g
-
+    with np.errstate(over="ignore", invalid="ignore"):
+        p = cross_force(v, np.einsum("...ij,...j->...i", I, v)) - g
+    for name, x in (("pose", pose), ("I", I), ("v", v), ("kappa", kappa), ("p", p)):
+        if not np.isfinite(x).all():
+            big = max(("q", q), ("qd", qd), ("f_ext", f_ext if f_ext is not None else q),
+                      key=lambda a: np.max(np.abs(a[1]), initial=0.0))
+            raise NumericOverflowError(f"kinematics overflow: {name} is not finite for these finite inputs "
+                                       f"({big[0]} reaches {np.max(np.abs(big[1])):.3g})")
     d = Data(model)
     d.q, d.qd = q, qd
     d.pose, d.com, d.origin, d.S = pose, com, origin, S
@@ -335,17 +391,5 @@ def _kinematics_scalar(model: Model, q: np.ndarray, qd: np.ndarray, f_ext) -> Da
         com.append((cx, cy))
         Il.append(((m, 0.0, -m * cy), (0.0, m, m * cx), (-m * cy, m * cx, J + m * (cx * cx + cy * cy))))
         g.append((m * gx, m * gy, m * (cx * gy - cy * gx)))
-    d = Data(model)
-    d.q, d.qd = q, qd
-    d.pose, d.com, d.origin = np.array(pose), np.array(com), np.array(origin)
-    d.S = np.array(S).reshape(3, nq)
-    d.I = np.array(Il)
-    d.v, d.kappa = np.array(v), np.array(kappa)
-    gg = np.array(g)
-    if f_ext is not None:
-        gg = gg + f_ext
-    d.g = gg
-    Iv = np.einsum("...ij,...j->...i", d.I, d.v)
-    d.p = cross_force(d.v, Iv) - gg
-    d.f_ext = f_ext
-    return d
+    return _data(model, q, qd, f_ext, np.array(pose), np.array(com), np.array(origin), np.array(S).reshape(3, nq),
+                 np.array(Il), np.array(v), np.array(kappa), np.array(g))

@@ -47,6 +47,7 @@ slice(1, 2, None)
 from __future__ import annotations
 
 import math
+import operator
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -55,7 +56,7 @@ import numpy as np
 from planargeo._validate import as_array, as_scalar, as_xy
 from planargeo.errors import CyclicTopologyError, InputError, ShapeError, TopologyError
 
-__all__ = ["Body", "Joint", "Model", "Data", "JOINT_DOFS", "chain_model", "random_model"]
+__all__ = ["Body", "Joint", "Model", "Data", "JOINT_DOFS", "MAX_BODIES", "chain_model", "random_model"]
 
 #: Number of degrees of freedom of each joint kind.
 JOINT_DOFS: dict[str, int] = {
@@ -354,7 +355,7 @@ class Model:
 
     # -- cached numeric arrays (used by the algorithms) -------------------
     def arrays(self) -> dict:
-        """Read-only numeric arrays of the model (cached): masses, coms, inertias, placements..."""
+        """Read-only numeric arrays of the model (cached): masses, coms, inertias, placements, parents."""
         a = self._arrays
         if "mass" not in a:
             a["mass"] = np.array([b.mass for b in self.bodies])
@@ -362,14 +363,30 @@ class Model:
             a["J"] = np.array([b.inertia for b in self.bodies])
             a["placement"] = np.array([j.placement for j in self.joints]).reshape(self.N, 3)
             a["parents"] = np.array(self.parents, dtype=int)
-            mask = np.zeros((self.N, self.nq), dtype=bool)
-            for i in range(self.N):
-                for k in self.ancestors(i):
-                    mask[i, self.q_slice(k)] = True
-            a["ancestor_mask"] = mask
-            for k in ("mass", "com", "J", "placement", "parents", "ancestor_mask"):
+            for k in ("mass", "com", "J", "placement", "parents"):
                 a[k].setflags(write=False)
         return a
+
+    def ancestor_mask(self) -> np.ndarray:
+        """``mask[i, c]``: whether coordinate ``c`` moves body ``i`` (its joint is on the path to ``i``); cached, read-only.
+
+        Examples
+        --------
+        >>> chain_model(3).ancestor_mask().astype(int)
+        array([[1, 0, 0],
+               [1, 1, 0],
+               [1, 1, 1]])
+        """
+        a = self._arrays
+        if "ancestor_mask" not in a:
+            mask = np.zeros((self.N, self.nq), dtype=bool)
+            for i, p in enumerate(self.parents):
+                if p >= 0:
+                    mask[i] = mask[p]
+                mask[i, self.q_slice(i)] = True
+            mask.setflags(write=False)
+            a["ancestor_mask"] = mask
+        return a["ancestor_mask"]
 
     def with_gravity(self, gravity) -> "Model":
         """A copy with another gravity vector."""
@@ -417,14 +434,12 @@ class Data:
 
     def jacobian(self, i: int) -> np.ndarray:
         """Body ``i``'s Jacobian (..., 3, nq): ``v_i = J_i qd`` (thesis Remark 8)."""
-        mask = self.model.arrays()["ancestor_mask"][i]
-        return self.S * mask
+        return self.S * self.model.ancestor_mask()[i]
 
     @property
     def J(self) -> np.ndarray:
         """All body Jacobians, shape (..., N, 3, nq)."""
-        mask = self.model.arrays()["ancestor_mask"]
-        return self.S[..., None, :, :] * mask[:, None, :]
+        return self.S[..., None, :, :] * self.model.ancestor_mask()[:, None, :]
 
     def __repr__(self) -> str:
         keys = [k for k in vars(self) if k != "model"]
@@ -434,38 +449,90 @@ class Data:
 # ---------------------------------------------------------------------------
 # Builders (used by scenes and tests)
 # ---------------------------------------------------------------------------
+#: The builders (:func:`chain_model`, :func:`random_model`) make at most this many bodies unless
+#: ``allow_large=True``: a request for millions of bodies is refused at once, not after minutes
+#: (10 000 links take about 0.4 s to build and 0.2 s per batch-free ``kinematics`` call).
+MAX_BODIES = 10_000
+
+
+def _body_count(n, allow_large: bool) -> int:
+    """``n`` as a number of bodies: an integer (not a bool) from 1 to :data:`MAX_BODIES` (any with ``allow_large``)."""
+    if isinstance(n, bool):
+        raise InputError(f"n must be an integer, got the bool {n!r}")
+    try:
+        n = operator.index(n)
+    except TypeError:
+        raise InputError(f"n must be an integer, got {n!r}") from None
+    if n < 1:
+        raise InputError(f"n must be a positive integer, got {n}")
+    if n > MAX_BODIES and not allow_large:
+        raise InputError(f"n must be at most MAX_BODIES = {MAX_BODIES} bodies, got {n} "
+                         "(pass allow_large=True for a bigger model, if memory and time allow)")
+    return n
+
+
 def chain_model(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str = "revolute",
-                gravity=(0.0, -9.81)) -> Model:
+                gravity=(0.0, -9.81), *, allow_large: bool = False) -> Model:
     """An unbranched chain of ``n`` uniform slender links.
 
     Link ``i`` has mass ``mass``, length ``length``, centre of mass at mid-link
     and inertia ``mass length² / 12`` about it; joint 1 sits at the origin and
     joint ``i`` at the tip of link ``i-1``; at ``q = 0`` the links lie along +x.
 
+    Parameters
+    ----------
+    n : int
+        Number of links, 1 to :data:`MAX_BODIES` (more with ``allow_large=True``).
+    mass, length : float
+        Positive and finite; ``mass length²`` must be finite too.
+    joint : str
+        The kind of every joint (see :class:`Joint`).
+    gravity : (gx, gy)
+    allow_large : bool
+        Allow more than :data:`MAX_BODIES` links.
+
+    Returns
+    -------
+    Model
+
+    Raises
+    ------
+    InputError
+        ``n`` not an integer (floats and bools included), below 1 or above the limit;
+        ``mass`` or ``length`` not positive, or so large that the link inertia overflows.
+
     Examples
     --------
     >>> m = chain_model(3, joint="prismatic")
     >>> [j.kind for j in m.joints], m.joints[1].placement
     (['prismatic', 'prismatic', 'prismatic'], (1.0, 0.0, 0.0))
+    >>> chain_model(1.5)
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: n must be an integer, got 1.5
     """
-    n = int(n)
-    if n < 1:
-        raise InputError(f"n must be a positive integer, got {n}")
+    n = _body_count(n, allow_large)
     L = as_scalar(length, "length")
     if not L > 0:
         raise InputError(f"length must be positive, got {L!r}")
     m = as_scalar(mass, "mass")
-    bodies = [Body(m, (L / 2, 0.0), m * L * L / 12, name=f"link{i + 1}") for i in range(n)]
+    if not m > 0:
+        raise InputError(f"mass must be positive, got {m!r}")
+    J = m * L * L / 12
+    if not math.isfinite(J):
+        raise InputError(f"length {L!r} is too large for mass {m!r}: the link inertia mass length² / 12 overflows")
+    bodies = [Body(m, (L / 2, 0.0), J, name=f"link{i + 1}") for i in range(n)]
     joints = [Joint(joint, (0.0 if i == 0 else L, 0.0, 0.0), name=f"joint{i + 1}") for i in range(n)]
     return Model(bodies, joints, list(range(-1, n - 1)), gravity)
 
 
 def random_model(n: int, seed=None, *, kinds=("revolute", "prismatic"), tree: bool = False,
-                 gravity=(0.0, -9.81)) -> Model:
+                 gravity=(0.0, -9.81), allow_large: bool = False) -> Model:
     """A random model for tests: ``n`` bodies, joint kinds drawn from ``kinds``.
 
     With ``tree=True`` each body's parent is drawn uniformly among the earlier
-    bodies and the ground; otherwise the model is a chain.
+    bodies and the ground; otherwise the model is a chain.  ``n`` is limited as in
+    :func:`chain_model`.
 
     Examples
     --------
@@ -473,6 +540,7 @@ def random_model(n: int, seed=None, *, kinds=("revolute", "prismatic"), tree: bo
     >>> m.N, all(p < i for i, p in enumerate(m.parents))
     (5, True)
     """
+    n = _body_count(n, allow_large)
     rng = np.random.default_rng(seed)
     bodies, joints, parents = [], [], []
     for i in range(n):

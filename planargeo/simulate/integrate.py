@@ -78,10 +78,20 @@ METHODS = ("RK23", "RK45", "DOP853", "Radau", "BDF", "LSODA", "RK4")
 MULTISTEP = ("BDF", "LSODA")
 
 
-def energy(model: Model, q, qd) -> tuple[np.ndarray, np.ndarray]:
+def energy(model: Model, q=None, qd=None, *, data=None) -> tuple[np.ndarray, np.ndarray]:
     """Kinetic and gravitational potential energy ``(T, V)`` (broadcast over ``q``).
 
     ``T = ½ Σ vᵢᵀ Iᵢ vᵢ`` (thesis 1.9), ``V = -Σ mᵢ g · cᵢ``.
+
+    Parameters
+    ----------
+    model : Model
+    q, qd : array_like (..., nq)
+        The state (``qd`` None: at rest); not with ``data``.
+    data : Data, optional
+        The kinematics of ``model`` already computed for the state (e.g. a widget's
+        frame, :func:`~planargeo.mechanics.kinematics.kinematics` or a dynamics
+        workspace): used as they are, not computed again.
 
     Examples
     --------
@@ -89,11 +99,17 @@ def energy(model: Model, q, qd) -> tuple[np.ndarray, np.ndarray]:
     >>> T, V = energy(chain_model(1), [np.pi / 2], [3.0])   # rod upright, spinning at 3 rad/s
     >>> float(T), float(V)                                  # ½ (1/3) 9, m g L/2
     (1.5, 4.905)
+    >>> d = kinematics(chain_model(1), [np.pi / 2], [3.0])
+    >>> [float(x) for x in energy(chain_model(1), data=d)]
+    [1.5, 4.905]
     """
-    d = kinematics(model, q, qd)
-    T = 0.5 * np.einsum("...ni,...nij,...nj->...", d.v, d.I, d.v)
+    if data is None:
+        data = kinematics(model, q, qd)
+    elif q is not None or qd is not None or (data.model is not model and data.model != model):
+        raise InputError("energy takes q, qd or the data of model's kinematics, not both")
+    T = 0.5 * np.einsum("...ni,...nij,...nj->...", data.v, data.I, data.v)
     m = model.arrays()["mass"]
-    V = -np.einsum("n,...nk,k->...", m, d.com, np.asarray(model.gravity))
+    V = -np.einsum("n,...nk,k->...", m, data.com, np.asarray(model.gravity))
     return T, V
 
 

@@ -1,0 +1,147 @@
+"""How the dynamics functions reach the compiled kernels (:mod:`planargeo.algorithms.kernels`).
+
+``import planargeo`` imports neither numba nor the kernels: :func:`kernels_for` imports
+them on the first call for a model the kernels cover (joints all revolute, prismatic or
+fixed), and numba compiles each kernel on its first use (then loads it from its cache).
+
+A call (:func:`evaluate`) takes one of three roads, all giving the same numbers:
+
+* one state given as float64 arrays of the right shapes goes straight to the kernel,
+  which checks that it is finite;
+* anything else (lists, other dtypes, batches, broadcasting) is validated by
+  :func:`planargeo.mechanics.kinematics.check_state` and handed over as C-contiguous
+  float64 rows;
+* a state the kernel does not finish raises: a singular joint (the kernel measures
+  the rule of :data:`~planargeo.mechanics.subspaces.COND_LIMIT` at the joint's point)
+  :class:`~planargeo.errors.SingularConfigurationError`, a non-finite input or result
+  the error the general array recursion raises for it, naming the argument.
+
+:func:`check_finite` is the last step of every general path: finite input that gives a
+non-finite result raises :class:`~planargeo.errors.NumericOverflowError`.
+"""
+from __future__ import annotations
+
+import math
+from collections import namedtuple
+
+import numpy as np
+
+from planargeo.errors import NumericOverflowError
+from planargeo.mechanics.kinematics import check_state
+from planargeo.mechanics.subspaces import singular_joint_error
+
+__all__ = ["Compiled", "kernels_for", "evaluate", "check_finite"]
+
+_F64 = np.dtype(np.float64)
+
+
+#: What :func:`kernels_for` returns: the kernels module, the model's tables, and the shapes of
+#: one state ``(nq,)`` and of one set of external wrenches ``(N, 3)``
+Compiled = namedtuple("Compiled", "kernels tables state wrenches")
+
+
+def kernels_for(model):
+    """The :data:`Compiled` kernels of ``model`` if they cover it, else None (cached on the model).
+
+    Examples
+    --------
+    >>> from planargeo.mechanics.model import Body, Joint, Model, chain_model
+    >>> kernels_for(chain_model(2)).tables[0]            # joint codes: revolute
+    array([1, 1])
+    >>> kernels_for(Model([Body(1.0)], [Joint("plane")], [-1])) is None
+    True
+    """
+    cache = model._arrays
+    if "kernels" not in cache:
+        from planargeo.algorithms import kernels     # numba: imported on first use
+
+        tables = kernels.tables(model)
+        cache["kernels"] = None if tables is None else Compiled(kernels, tables, (model.nq,), (model.N, 3))
+    return cache["kernels"]
+
+
+def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
+    """Forward (``z = τ``) or inverse (``inverse=True``, ``z = q̈``) dynamics: the kernels, else ``general``.
+
+    ``general(model, q, qd, z, f_ext)`` is the caller's general recursion, run for a model
+    the kernels do not cover.  A state a kernel does not finish raises: a singular joint
+    the kernel's :class:`~planargeo.errors.SingularConfigurationError`, anything else the
+    error ``general`` raises for it (a batch: for its first such state, as it would alone).
+    One state given as float64 arrays of the right shapes goes to the kernel as it is (the
+    kernel checks that it is finite; a non-contiguous or read-only array is passed as it
+    is: numba compiles for its layout); anything else is validated by
+    :func:`~planargeo.mechanics.kinematics.check_state` and handed over as C-contiguous
+    float64 rows.
+
+    Returns
+    -------
+    ndarray (..., nq)
+        ``q̈`` or ``τ``.
+    """
+    c = model._arrays.get("kernels", False)
+    if c is False:
+        c = kernels_for(model)
+    if c is None:
+        return general(model, q, qd, z, f_ext)
+    kernels, tables = c.kernels, c.tables
+    one = kernels.inverse_dynamics_one if inverse else kernels.forward_dynamics_one
+    if (type(q) is type(qd) is type(z) is np.ndarray and q.dtype is qd.dtype is z.dtype is _F64
+            and q.shape == qd.shape == z.shape == c.state
+            and (f_ext is None or (type(f_ext) is np.ndarray and f_ext.dtype is _F64 and f_ext.shape == c.wrenches))):
+        out = one(*tables, q, qd, z, f_ext)
+        return out if out is not None else _failed(kernels, tables, model, inverse, q, qd, z, f_ext, general)
+    if inverse:                         # the kernels test for NaN and infinity themselves
+        q, qd, _, f_ext, z, shape = check_state(model, q, qd, None, f_ext, qdd=z, finite=False)
+    else:
+        q, qd, z, f_ext, _, shape = check_state(model, q, qd, z, f_ext, finite=False)
+    nq, N = model.nq, model.N
+    B = math.prod(shape)
+    rows = [_rows(a, shape + (nq,), (B, nq)) for a in (q, qd, z)]
+    fe = None if f_ext is None else _rows(f_ext, shape + (N, 3), (B, N, 3))
+    if shape == ():
+        out = one(*tables, *(r[0] for r in rows), None if fe is None else fe[0])
+        return out if out is not None else _failed(kernels, tables, model, inverse, q, qd, z, f_ext, general)
+    out, declined = (kernels.inverse_dynamics_many if inverse else kernels.forward_dynamics_many)(*tables, *rows, fe)
+    if declined < 0:
+        return out.reshape(shape + (nq,))
+    _failed(kernels, tables, model, inverse, *(r[declined] for r in rows), None if fe is None else fe[declined],
+            general)
+    return general(model, q, qd, z, f_ext)       # the general recursion answered that state: the batch by it
+
+
+def _rows(a, full, flat):
+    """``a`` broadcast to ``full``, as a writeable C-contiguous float64 array of shape ``flat`` (numba's one type)."""
+    a = np.ascontiguousarray((a if a.shape == full else np.broadcast_to(a, full)).reshape(flat), dtype=np.float64)
+    return a if a.flags.writeable else a.copy()
+
+
+def _failed(kernels, tables, model, inverse, q, qd, z, f_ext, general):
+    """Raise the error of a state the kernel did not finish (validated arrays (nq,), ``f_ext`` (N, 3) or None)."""
+    if not inverse:
+        joint, cond = kernels.singular_joint(*tables, *(_rows(a, (model.nq,), (model.nq,)) for a in (q, qd, z)),
+                                             None if f_ext is None else _rows(f_ext, (model.N, 3), (model.N, 3)))
+        if joint >= 0:
+            raise singular_joint_error(joint, cond)
+    return general(model, q, qd, z, f_ext)    # raises the named error (not finite, overflow)
+
+
+def check_finite(result, what: str, **inputs):
+    """Return ``result``, or raise :class:`~planargeo.errors.NumericOverflowError` if it is not finite.
+
+    ``inputs`` are the (finite, validated) arguments it came from; the message names the
+    largest of them.
+
+    Examples
+    --------
+    >>> check_finite(np.array([np.inf]), "q̈", q=np.zeros(1), qd=np.full(1, 1e160))
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.NumericOverflowError: q̈ overflows for these finite inputs: qd reaches 1e+160 (q 0); the result does not fit in a float
+    """
+    if np.isfinite(result).all():
+        return result
+    size = {name: float(np.max(np.abs(a), initial=0.0)) for name, a in inputs.items() if a is not None}
+    big = max(size, key=size.get)
+    rest = ", ".join(f"{n} {v:.3g}" for n, v in size.items() if n != big)
+    raise NumericOverflowError(f"{what} overflows for these finite inputs: {big} reaches {size[big]:.3g}"
+                               + (f" ({rest})" if rest else "") + "; the result does not fit in a float")

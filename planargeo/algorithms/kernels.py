@@ -1,0 +1,411 @@
+"""The compiled recursions: ABA (thesis 3.31-3.42) and RNEA (2.18, 3.10, 3.5), one state at a time.
+
+These are the hot loops of :func:`planargeo.algorithms.aba.forward_dynamics` and
+:func:`planargeo.algorithms.rnea.inverse_dynamics` for models whose joints are all
+revolute, prismatic or fixed.  They are the equations of the thesis as plain loops over
+the bodies, on arrays allocated once per call (:func:`workspace`), compiled by numba
+(``@njit(cache=True)``: compiled on first use, then loaded from numba's cache).  Run
+with ``NUMBA_DISABLE_JIT=1`` they are ordinary Python, to step through in a debugger.
+
+**Each body at its joint.**  The equations of 3.6 hold at any reference point, as long as
+the quantities they combine are taken at the same one.  Here body ``i``'s twist,
+inertia, forces and accelerations are taken at its joint's point ``o_i`` (world axes),
+where its joint is simplest: a revolute joint is ``s = [0, 0, 1]``, a prismatic joint
+along ``(c, s)`` is ``s = [c, s, 0]``, a fixed joint has no column.  Between a body and
+its parent, twists and accelerations move out by ``r_i = o_i - o_λ`` (``X_P``, thesis
+4.8) and wrenches and inertias move in (4.24, 1.68): the parent's step then reads the
+child's articulated inertia and bias force at its own point.  Only these offsets, never
+world positions, enter the dynamics, so a mechanism far from the origin is computed as
+accurately as one at it; and the singularity rule of
+:data:`planargeo.mechanics.subspaces.COND_LIMIT`, measured at the joint's point, reads
+``A_i`` and ``s_i`` as they are.  Trees sum every child into its parent (3.38-3.39 with
+``i+1`` read as "each child of ``i``").
+
+A state kernel returns ``-1`` when it succeeded, the index of a joint the singularity
+rule refuses (its condition number left in ``w.D``), or ``-2`` when an input or the
+result is not finite: the caller then runs the general path, which raises the package's
+error naming the argument.
+
+Model tables (:func:`tables`): ``kind`` (N,) joint codes, ``parent`` (N,), ``body``
+(N, 8) ``[px, py, cos θ, sin θ, m, cx, cy, J]`` (joint placement in the parent's frame,
+mass, centre of mass in the body frame, inertia about it) and ``gravity`` (2,).
+"""
+from __future__ import annotations
+
+import math
+import threading
+from collections import namedtuple
+
+import numpy as np
+from numba import njit, prange
+
+from planargeo.mechanics.subspaces import COND_LIMIT, COND_LIMIT2
+
+__all__ = ["FIXED", "REVOLUTE", "PRISMATIC", "BLOCK", "OK", "NOT_FINITE", "tables", "workspace",
+           "kinematics_state", "articulated_body_state", "newton_euler_state", "forward_dynamics_one",
+           "forward_dynamics_many", "inverse_dynamics_one", "inverse_dynamics_many", "singular_joint"]
+
+FIXED, REVOLUTE, PRISMATIC = 0, 1, 2
+_CODES = {"fixed": FIXED, "revolute": REVOLUTE, "prismatic": PRISMATIC}
+#: what a state kernel returns when it succeeded, and when an input or the result is not finite
+OK, NOT_FINITE = -1, -2
+#: states per block of a batch: one workspace per block, the blocks shared among numba's threads
+BLOCK = 256
+
+jit = njit(cache=True, nogil=True, error_model="numpy")
+inline = njit(cache=True, nogil=True, error_model="numpy", inline="always")
+
+#: Per-state arrays, one row per body, all at the body's joint point ``o_i`` (world axes):
+#: ``origin`` ``o_i`` in the world, ``r`` the offset ``o_i - o_λ`` from the parent's point,
+#: ``frame`` the body frame (its origin less ``o_i``, then cos θ, sin θ), ``s`` the joint twist,
+#: ``v`` (3.32), ``kappa`` (3.33), ``I`` the inertia (then the articulated inertia ``A``),
+#: ``p`` the bias force (3.34; then ``d``, or the joint force ``f``), ``U = A s``,
+#: ``D = sᵀAs``, ``u = τ - sᵀ(Aκ + d)``, ``a`` the acceleration (3.42, 2.18).
+Workspace = namedtuple("Workspace", "origin r frame s v kappa I p U D u a")
+
+
+def tables(model):
+    """The model as the kernels' arrays ``(kind, parent, body, gravity)``, or None if a joint is of another kind.
+
+    Examples
+    --------
+    >>> from planargeo.mechanics.model import chain_model
+    >>> kind, parent, body, gravity = tables(chain_model(2))
+    >>> kind, parent, body[1]
+    (array([1, 1]), array([-1,  0]), array([1.        , 0.        , 1.        , 0.        , 1.        ,
+           0.5       , 0.        , 0.08333333]))
+    """
+    if not all(j.kind in _CODES for j in model.joints):
+        return None
+    kind = np.array([_CODES[j.kind] for j in model.joints], dtype=np.int64)
+    parent = np.array(model.parents, dtype=np.int64)
+    body = np.array([[j.placement[0], j.placement[1], math.cos(j.placement[2]), math.sin(j.placement[2]),
+                      b.mass, b.com[0], b.com[1], b.inertia] for b, j in zip(model.bodies, model.joints)])
+    return kind, parent, body, np.array(model.gravity, dtype=float)
+
+
+@inline
+def workspace(N):
+    """Fresh arrays for one state of an ``N``-body model (see :data:`Workspace`)."""
+    return Workspace(np.empty((N, 2)), np.empty((N, 2)), np.empty((N, 4)), np.empty((N, 3)), np.empty((N, 3)),
+                     np.empty((N, 3)), np.empty((N, 3, 3)), np.empty((N, 3)), np.empty((N, 3)), np.empty(N),
+                     np.empty(N), np.empty((N, 3)))
+
+
+@inline
+def _finite(x):
+    """Whether every entry of the vector ``x`` is finite."""
+    for k in range(x.shape[0]):
+        if not math.isfinite(x[k]):
+            return False
+    return True
+
+
+@inline
+def _finite_inputs(x, y, z, fext):
+    """Whether the vectors ``x, y, z`` and the (N, 3) wrenches ``fext`` (or None) are finite."""
+    if not (_finite(x) and _finite(y) and _finite(z)):
+        return False
+    if fext is not None:
+        for i in range(fext.shape[0]):
+            if not (math.isfinite(fext[i, 0]) and math.isfinite(fext[i, 1]) and math.isfinite(fext[i, 2])):
+                return False
+    return True
+
+
+@jit
+def kinematics_state(model, q, qd, fext, w):
+    """Joint points, joint twists, velocities, bias terms and inertias of every body, base to tip (thesis 3.31-3.34).
+
+    Fills ``w.origin, w.r, w.frame, w.s, w.v, w.kappa, w.I, w.p`` for the state ``q, qd``
+    (``fext``: (N, 3) external wrenches at the world origin, or None), each body at its
+    joint's point.
+    """
+    kind, parent, body, gravity = model
+    k = 0                                           # the next joint coordinate
+    for i in range(len(kind)):
+        px, py, cp, sp = body[i, 0], body[i, 1], body[i, 2], body[i, 3]
+        m, bx, by, J = body[i, 4], body[i, 5], body[i, 6], body[i, 7]
+        lam = parent[i]
+        if lam < 0:                                 # v_0 = 0 (3.31): the ground, at the world origin
+            rx, ry, c, s = px, py, cp, sp
+            ox, oy = px, py
+            vx = vy = w_ = 0.0
+        else:                                       # the joint's point, placed in the parent's frame
+            lx, ly, cl, sl = w.frame[lam, 0], w.frame[lam, 1], w.frame[lam, 2], w.frame[lam, 3]
+            rx, ry = lx + cl * px - sl * py, ly + sl * px + cl * py
+            c, s = cl * cp - sl * sp, sl * cp + cl * sp
+            ox, oy = w.origin[lam, 0] + rx, w.origin[lam, 1] + ry
+            w_ = w.v[lam, 2]                        # v_λ moved out to o_i (4.8)
+            vx, vy = w.v[lam, 0] - ry * w_, w.v[lam, 1] + rx * w_
+        w.origin[i, 0], w.origin[i, 1], w.r[i, 0], w.r[i, 1] = ox, oy, rx, ry
+        qdi = ex = ey = 0.0                         # (ex, ey): the body frame's origin less o_i
+        if kind[i] == REVOLUTE:                     # s = [0, 0, 1]: a rotation about o_i (4.10)
+            qi, qdi = q[k], qd[k]
+            w.s[i, 0], w.s[i, 1], w.s[i, 2] = 0.0, 0.0, 1.0
+            cq, sq = math.cos(qi), math.sin(qi)
+            c, s = c * cq - s * sq, s * cq + c * sq
+            k += 1
+        elif kind[i] == PRISMATIC:                  # s = [c, s, 0]: the direction of sliding, a point at infinity
+            qi, qdi = q[k], qd[k]
+            w.s[i, 0], w.s[i, 1], w.s[i, 2] = c, s, 0.0
+            ex, ey = qi * c, qi * s
+            k += 1
+        else:                                       # fixed: no motion
+            w.s[i, 0] = w.s[i, 1] = w.s[i, 2] = 0.0
+        w.frame[i, 0], w.frame[i, 1], w.frame[i, 2], w.frame[i, 3] = ex, ey, c, s
+        # v_i = v_λ + s_i q̇_i (3.32);  κ_i = v_i × s_i q̇_i = v_λ × s_i q̇_i (3.33, 2.16)
+        s0, s1, s2 = w.s[i, 0] * qdi, w.s[i, 1] * qdi, w.s[i, 2] * qdi
+        w.kappa[i, 0], w.kappa[i, 1], w.kappa[i, 2] = -w_ * s1 + vy * s2, w_ * s0 - vx * s2, 0.0
+        vx, vy, w_ = vx + s0, vy + s1, w_ + s2
+        w.v[i, 0], w.v[i, 1], w.v[i, 2] = vx, vy, w_
+        # I_i from the centre of mass (cx, cy) relative to o_i (4.58)
+        cx, cy = ex + c * bx - s * by, ey + s * bx + c * by
+        I = w.I
+        I[i, 0, 0], I[i, 0, 1], I[i, 0, 2] = m, 0.0, -m * cy
+        I[i, 1, 0], I[i, 1, 1], I[i, 1, 2] = 0.0, m, m * cx
+        I[i, 2, 0], I[i, 2, 1], I[i, 2, 2] = -m * cy, m * cx, J + m * (cx * cx + cy * cy)
+        # p_i = -(v_i×)ᵀ I_i v_i - g_i (3.34): g_i gravity at the centre of mass, plus f_ext moved to o_i (4.24)
+        h0, h1 = m * vx - m * cy * w_, m * vy + m * cx * w_          # the momentum I_i v_i (its moment unused)
+        gx, gy = m * gravity[0], m * gravity[1]
+        w.p[i, 0] = -w_ * h1 - gx
+        w.p[i, 1] = w_ * h0 - gy
+        w.p[i, 2] = vx * h1 - vy * h0 - (cx * gy - cy * gx)
+        if fext is not None:
+            w.p[i, 0] -= fext[i, 0]
+            w.p[i, 1] -= fext[i, 1]
+            w.p[i, 2] -= fext[i, 2] + oy * fext[i, 0] - ox * fext[i, 1]
+
+
+@jit
+def joint_cond(A, s, D):
+    """``‖A‖_F ‖s‖² / |D|``: the condition number of the rule of ``COND_LIMIT`` for ``A``, ``s`` at the joint's point.
+
+    Scale-safe (inertias of 1e-170 or 1e160 have squares out of the float range);
+    ``inf`` when ``D = sᵀAs`` is 0, NaN when ``A`` or ``D`` is not finite.
+    """
+    big = 0.0
+    for j in range(3):
+        for k in range(3):
+            big = max(big, abs(A[j, k]))
+    if not (math.isfinite(big) and math.isfinite(D)):
+        return math.nan
+    if big == 0.0 or D == 0.0:
+        return math.inf
+    F2 = 0.0
+    for j in range(3):
+        for k in range(3):
+            F2 += (A[j, k] / big) ** 2
+    return big * math.sqrt(F2) * (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]) / abs(D)
+
+
+@inline
+def _clearly_regular(A, s, D):
+    """The rule of ``COND_LIMIT`` squared, where the squares are in range: ``‖A‖_F² ‖s‖⁴ < D² COND_LIMIT²``."""
+    F2 = A[0, 0] ** 2 + A[1, 1] ** 2 + A[2, 2] ** 2 + 2.0 * (A[0, 1] ** 2 + A[0, 2] ** 2 + A[1, 2] ** 2)
+    ss = s[0] * s[0] + s[1] * s[1] + s[2] * s[2]
+    return 1e-300 < F2 < 1e300 and F2 * ss * ss < D * D * COND_LIMIT2
+
+
+@jit
+def articulated_body_state(model, q, qd, tau, fext, w, qdd):
+    """The recursive algorithm (thesis 3.6, 3.31-3.42) for one state: writes ``q̈`` into ``qdd``.
+
+    Returns :data:`OK`, :data:`NOT_FINITE`, or the index of the first joint (tip to base)
+    the singularity rule refuses, its condition number left in ``w.D``.
+    """
+    if not _finite_inputs(q, qd, tau, fext):
+        return NOT_FINITE
+    kinematics_state(model, q, qd, fext, w)                       # 2. kinematics (3.31-3.34)
+    kind, parent = model[0], model[1]
+    r, s, kappa, U, u, a = w.r, w.s, w.kappa, w.U, w.u, w.a
+    A, d = w.I, w.p           # A_i, d_i start as I_i, p_i (3.35, 3.36) and collect the children in place
+    # 3. articulated inertias and bias forces, tip to base (3.37-3.39)
+    k = q.shape[0]
+    for i in range(len(kind) - 1, -1, -1):
+        c0 = A[i, 0, 0] * kappa[i, 0] + A[i, 0, 1] * kappa[i, 1] + A[i, 0, 2] * kappa[i, 2] + d[i, 0]   # c = A κ + d
+        c1 = A[i, 1, 0] * kappa[i, 0] + A[i, 1, 1] * kappa[i, 1] + A[i, 1, 2] * kappa[i, 2] + d[i, 1]
+        c2 = A[i, 2, 0] * kappa[i, 0] + A[i, 2, 1] * kappa[i, 1] + A[i, 2, 2] * kappa[i, 2] + d[i, 2]
+        B00, B01, B02 = A[i, 0, 0], A[i, 0, 1], A[i, 0, 2]   # B: what the parent receives, at o_i
+        B11, B12, B22 = A[i, 1, 1], A[i, 1, 2], A[i, 2, 2]
+        if kind[i] != FIXED:                                # a weld passes on A_i and c whole
+            k -= 1
+            for j in range(3):                              # U = A_i s_i, D = s_iᵀ A_i s_i
+                U[i, j] = A[i, j, 0] * s[i, 0] + A[i, j, 1] * s[i, 1] + A[i, j, 2] * s[i, 2]
+            D = s[i, 0] * U[i, 0] + s[i, 1] * U[i, 1] + s[i, 2] * U[i, 2]
+            if not _clearly_regular(A[i], s[i], D):                 # else the exact, scale-safe rule
+                cond = joint_cond(A[i], s[i], D)
+                if math.isnan(cond):                                # the inertia is out of the float range
+                    return NOT_FINITE
+                if not cond <= COND_LIMIT:
+                    w.D[i] = cond
+                    return i
+            w.D[i] = D
+            u[i] = tau[k] - (s[i, 0] * c0 + s[i, 1] * c1 + s[i, 2] * c2)   # u = τ_i - s_iᵀ (A_i κ_i + d_i)
+            # s⁺ = D⁻¹ Uᵀ (3.37): (1 - s s⁺)ᵀ A_i = A_i - U Wᵀ (3.38) and
+            # (s⁺)ᵀ τ_i + (1 - s s⁺)ᵀ (A_i κ_i + d_i) = c + W u (3.39), with W = U / D; so formed, the
+            # part along s is exactly 0 where s is a unit axis (a revolute joint: W_2 = U_2 / D = 1)
+            W0, W1, W2 = U[i, 0] / D, U[i, 1] / D, U[i, 2] / D
+            B00, B01, B02 = B00 - U[i, 0] * W0, B01 - U[i, 0] * W1, B02 - U[i, 0] * W2
+            B11, B12, B22 = B11 - U[i, 1] * W1, B12 - U[i, 1] * W2, B22 - U[i, 2] * W2
+            c0, c1, c2 = c0 + W0 * u[i], c1 + W1 * u[i], c2 + W2 * u[i]
+        lam = parent[i]
+        if lam >= 0:             # moved in by r = o_i - o_λ: wrenches (4.24), inertias X_rᵀ B X_r (1.68)
+            rx, ry = r[i, 0], r[i, 1]
+            M02, M12 = B02 - ry * B00 + rx * B01, B12 - ry * B01 + rx * B11
+            M22 = B22 - ry * B02 + rx * B12 - ry * M02 + rx * M12
+            A[lam, 0, 0] += B00
+            A[lam, 0, 1] += B01
+            A[lam, 1, 0] += B01
+            A[lam, 1, 1] += B11
+            A[lam, 0, 2] += M02
+            A[lam, 2, 0] += M02
+            A[lam, 1, 2] += M12
+            A[lam, 2, 1] += M12
+            A[lam, 2, 2] += M22
+            d[lam, 0] += c0
+            d[lam, 1] += c1
+            d[lam, 2] += c2 - ry * c0 + rx * c1
+    # 4. joint accelerations, base to tip (3.40-3.42)
+    for i in range(len(kind)):
+        lam = parent[i]
+        a0 = a1 = a2 = 0.0                                  # a_0 = 0 (3.40)
+        if lam >= 0:                                        # a_λ moved out to o_i (4.8)
+            a2 = a[lam, 2]
+            a0, a1 = a[lam, 0] - r[i, 1] * a2, a[lam, 1] + r[i, 0] * a2
+        if kind[i] != FIXED:                                # q̈_i = D⁻¹ (u - Uᵀ a_λ) (3.41)
+            qi = (u[i] - (U[i, 0] * a0 + U[i, 1] * a1 + U[i, 2] * a2)) / w.D[i]
+            qdd[k] = qi
+            k += 1
+            a0, a1, a2 = a0 + s[i, 0] * qi, a1 + s[i, 1] * qi, a2 + s[i, 2] * qi
+        a[i, 0], a[i, 1], a[i, 2] = a0 + kappa[i, 0], a1 + kappa[i, 1], a2 + kappa[i, 2]   # (3.42)
+    return OK if _finite(qdd) else NOT_FINITE
+
+
+@jit
+def newton_euler_state(model, q, qd, qdd, fext, w, tau):
+    """Inverse dynamics (thesis 2.18, 3.10, 3.5) for one state: writes ``τ`` into ``tau``.
+
+    Returns :data:`OK`, or :data:`NOT_FINITE` when an input or the result is not finite.
+    """
+    if not _finite_inputs(q, qd, qdd, fext):
+        return NOT_FINITE
+    kinematics_state(model, q, qd, fext, w)
+    kind, parent = model[0], model[1]
+    r, s, kappa, I, a = w.r, w.s, w.kappa, w.I, w.a
+    f = w.p                   # f_i = I_i a_i + p_i + Σ f_children (3.10), collected in place of p_i
+    k = 0
+    for i in range(len(kind)):                              # a_i = a_λ + s_i q̈_i + κ_i (2.18), a_0 = 0
+        lam = parent[i]
+        a0 = a1 = a2 = 0.0
+        if lam >= 0:                                        # a_λ moved out to o_i (4.8)
+            a2 = a[lam, 2]
+            a0, a1 = a[lam, 0] - r[i, 1] * a2, a[lam, 1] + r[i, 0] * a2
+        if kind[i] != FIXED:
+            a0, a1, a2 = a0 + s[i, 0] * qdd[k], a1 + s[i, 1] * qdd[k], a2 + s[i, 2] * qdd[k]
+            k += 1
+        a0, a1, a2 = a0 + kappa[i, 0], a1 + kappa[i, 1], a2 + kappa[i, 2]
+        a[i, 0], a[i, 1], a[i, 2] = a0, a1, a2
+        for j in range(3):
+            f[i, j] += I[i, j, 0] * a0 + I[i, j, 1] * a1 + I[i, j, 2] * a2
+    for i in range(len(kind) - 1, -1, -1):                  # tip to base: τ_i = s_iᵀ f_i (3.5)
+        if kind[i] != FIXED:
+            k -= 1
+            tau[k] = s[i, 0] * f[i, 0] + s[i, 1] * f[i, 1] + s[i, 2] * f[i, 2]
+        lam = parent[i]
+        if lam >= 0:                                        # f_i moved in to o_λ (4.24)
+            f[lam, 0] += f[i, 0]
+            f[lam, 1] += f[i, 1]
+            f[lam, 2] += f[i, 2] - r[i, 1] * f[i, 0] + r[i, 0] * f[i, 1]
+    return OK if _finite(tau) else NOT_FINITE
+
+
+# -- entry points: the model's tables as separate arrays (cheaper to pass), then one state or a batch ----------------
+@jit
+def forward_dynamics_one(kind, parent, body, gravity, q, qd, tau, fext):
+    """``q̈`` (nq,) of one state (float64 arrays (nq,), ``fext`` (N, 3) or None), or None if not :data:`OK`."""
+    qdd = np.empty(q.shape[0])
+    status = articulated_body_state((kind, parent, body, gravity), q, qd, tau, fext, workspace(kind.shape[0]), qdd)
+    return qdd if status == OK else None
+
+
+@jit
+def inverse_dynamics_one(kind, parent, body, gravity, q, qd, qdd, fext):
+    """``τ`` (nq,) of one state (float64 arrays (nq,), ``fext`` (N, 3) or None), or None if not :data:`OK`."""
+    tau = np.empty(q.shape[0])
+    status = newton_euler_state((kind, parent, body, gravity), q, qd, qdd, fext, workspace(kind.shape[0]), tau)
+    return tau if status == OK else None
+
+
+@jit
+def singular_joint(kind, parent, body, gravity, q, qd, tau, fext):
+    """``(joint, cond)`` of the first joint of the state the singularity rule refuses, or ``(-1, 0.0)``."""
+    w = workspace(kind.shape[0])
+    status = articulated_body_state((kind, parent, body, gravity), q, qd, tau, fext, w, np.empty(q.shape[0]))
+    return (status, w.D[status]) if status >= 0 else (-1, 0.0)
+
+
+@jit
+def _block(inverse, model, x, y, z, fext, out, lo, hi):
+    """One state kernel on the rows ``lo:hi`` of the (B, nq) arrays ``x, y, z`` into ``out``, one workspace.
+
+    ``inverse``: :func:`newton_euler_state` (``z = q̈``), else :func:`articulated_body_state`
+    (``z = τ``); ``fext`` (B, N, 3) or None.  Returns the first state that did not
+    succeed, or ``hi``.
+    """
+    w = workspace(model[0].shape[0])
+    for b in range(lo, hi):
+        f = fext[b] if fext is not None else None
+        if inverse:
+            status = newton_euler_state(model, x[b], y[b], z[b], f, w, out[b])
+        else:
+            status = articulated_body_state(model, x[b], y[b], z[b], f, w, out[b])
+        if status != OK:
+            return b
+    return hi
+
+
+@njit(cache=True, nogil=True, error_model="numpy", parallel=True)
+def _blocks(inverse, model, x, y, z, fext, out):
+    """:func:`_block` on blocks of :data:`BLOCK` states shared among numba's threads: the first failed state, or B."""
+    B = x.shape[0]
+    nblocks = (B + BLOCK - 1) // BLOCK
+    first = np.full(nblocks, B)
+    for blk in prange(nblocks):
+        hi = min(B, (blk + 1) * BLOCK)
+        b = _block(inverse, model, x, y, z, fext, out, blk * BLOCK, hi)
+        if b < hi:
+            first[blk] = b
+    return first.min() if nblocks else B
+
+
+#: batches of fewer states run on the calling thread alone: waking numba's threads costs more than they save
+#: (and, on a machine busy with other work, may cost milliseconds)
+PARALLEL_STATES = 4 * BLOCK
+#: numba's threading layers must not run two parallel kernels at once from two Python threads
+_PARALLEL = threading.Lock()
+
+
+def _many(inverse, kind, parent, body, gravity, x, y, z, fext):
+    out = np.empty(x.shape)
+    B, model = x.shape[0], (kind, parent, body, gravity)
+    if B < PARALLEL_STATES:
+        first = _block(inverse, model, x, y, z, fext, out, 0, B)
+    else:
+        with _PARALLEL:
+            first = _blocks(inverse, model, x, y, z, fext, out)
+    return out, (first if first < B else -1)
+
+
+def forward_dynamics_many(kind, parent, body, gravity, q, qd, tau, fext):
+    """``(q̈, declined)`` of B states (C-contiguous float64 (B, nq), ``fext`` (B, N, 3) or None).
+
+    ``q̈`` (B, nq) is valid when ``declined`` is -1, else ``declined`` is the first state
+    that did not succeed (see the module).
+    """
+    return _many(False, kind, parent, body, gravity, q, qd, tau, fext)
+
+
+def inverse_dynamics_many(kind, parent, body, gravity, q, qd, qdd, fext):
+    """``(τ, declined)`` of B states (C-contiguous float64 (B, nq), ``fext`` (B, N, 3) or None), as above."""
+    return _many(True, kind, parent, body, gravity, q, qd, qdd, fext)
