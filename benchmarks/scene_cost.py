@@ -179,7 +179,7 @@ def chain_explorer_rnea_compute(ex, v) -> dict:
     """The chain explorer's compute step without the ABA workspace (prototype).
 
     Unless the articulated inertias or the T/U split are shown, nothing drawn or read
-    needs ``A``: q̈ by the compiled plan (:func:`forward_dynamics`) and one Newton–Euler
+    needs ``A``: q̈ by the compiled kernel (:func:`forward_dynamics`) and one Newton–Euler
     pass (:func:`newton_euler`) give ``v``, ``κ``, ``p``, ``a``, ``f`` and the energies.
     """
     from planargeo.algorithms.rnea import newton_euler
@@ -325,7 +325,7 @@ EXPLORER_LABELS = (
     ("explorer", "chain", "chain explorer (10 links): compute step with the T/U split drawn vs not",
      "the per-joint T/U split (`tu_split`, `T_of`): derived in `render` only when shown"),
     ("explorer", "chain", "chain explorer (10 links, default overlays): compute step",
-     "the ABA workspace (`articulated_body`, vectorised path): q̈ by the compiled plan and one Newton–Euler "
+     "the ABA workspace (`articulated_body`, vectorised path): q̈ by the compiled kernel and one Newton–Euler "
      "pass give every drawn and read number unless the articulated inertias or the T/U split are shown "
      "(prototype)"),
 )
@@ -469,7 +469,7 @@ def _notes(res: dict) -> list:
         "without it.",
         f"* **chain explorer**: it derives the T/U split only when it is shown (with it, its compute step takes "
         f"{1 / ch_tu['ratio']['median']:.2f}× the time without), but it always builds the full ABA "
-        f"workspace; for the default overlays the compiled plan plus one Newton–Euler pass would do in "
+        f"workspace; for the default overlays the compiled kernel plus one Newton–Euler pass would do in "
         f"{ch_rnea['ratio']['median']:.2f}× the time ({_us(ch_rnea['saved_us'])} µs per change).",
         f"* **`scenes.build`** checks parameter names with `inspect.signature` on every call: calling the scene "
         f"function directly takes {build['ratio']['median']:.2f}× the time ({_us(build['saved_us'])} µs per change).",

@@ -70,7 +70,7 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
         Arguments of the wrong shape, not finite, or complex (:func:`~planargeo.mechanics.kinematics.check_state`).
     SingularConfigurationError
         If some ``s_i^T A_i s_i`` is singular (e.g. a point mass on a revolute
-        joint at its own position), by the rule of :data:`planargeo.mechanics.subspaces.COND_LIMIT`
+        joint at its own position), by the rule of :data:`planargeo.errors.COND_LIMIT`
         (measured at the joint's point).
     NumericOverflowError
         If finite input gives a ``q̈`` that is not finite (e.g. speeds of 1e160).
@@ -158,7 +158,7 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
         Arguments of the wrong shape, not finite, or complex.
     SingularConfigurationError
         If some ``s_i^T A_i s_i`` is singular by the package's one rule
-        (:data:`planargeo.mechanics.subspaces.COND_LIMIT`: ``‖A_P‖_F ‖s_P‖² / σ_min(sᵀAs) > 1e12``
+        (:data:`planargeo.errors.COND_LIMIT`: ``‖A_P‖_F ‖s_P‖² / σ_min(sᵀAs) > 1e12``
         at the joint's point ``P``, invariant under moving the whole mechanism), with
         that ``.cond``, for the same states the other recursive methods refuse.
     NumericOverflowError

@@ -12,7 +12,7 @@ A call (:func:`evaluate`) takes one of three roads, all giving the same numbers:
   :func:`planargeo.mechanics.kinematics.check_state` and handed over as C-contiguous
   float64 rows;
 * a state the kernel does not finish raises: a singular joint (the kernel measures
-  the rule of :data:`~planargeo.mechanics.subspaces.COND_LIMIT` at the joint's point)
+  the rule of :data:`~planargeo.errors.COND_LIMIT` at the joint's point)
   :class:`~planargeo.errors.SingularConfigurationError`, a non-finite input or result
   the error the general array recursion raises for it, naming the argument.
 

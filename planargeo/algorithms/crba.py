@@ -151,7 +151,7 @@ def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     SingularConfigurationError
         If ``H`` is numerically singular: ``λ_min(H) ≤ SINGULAR_RCOND λ_max(H)``
         (``.cond = λ_max / λ_min``).  The dense reference keeps this rule of its
-        own, not the joints' rule of :data:`planargeo.mechanics.subspaces.COND_LIMIT` that
+        own, not the joints' rule of :data:`planargeo.errors.COND_LIMIT` that
         the recursive methods share: a joint whose ``sᵀAs`` vanishes need not
         make ``H`` ill-conditioned (a lone point-mass pendulum has ``H = m d²``,
         condition number 1), so ``crba`` may answer states they refuse

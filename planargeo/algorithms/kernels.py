@@ -17,7 +17,7 @@ its parent, twists and accelerations move out by ``r_i = o_i - o_λ`` (``X_P``, 
 child's articulated inertia and bias force at its own point.  Only these offsets, never
 world positions, enter the dynamics, so a mechanism far from the origin is computed as
 accurately as one at it; and the singularity rule of
-:data:`planargeo.mechanics.subspaces.COND_LIMIT`, measured at the joint's point, reads
+:data:`planargeo.errors.COND_LIMIT`, measured at the joint's point, reads
 ``A_i`` and ``s_i`` as they are.  Trees sum every child into its parent (3.38-3.39 with
 ``i+1`` read as "each child of ``i``").
 

@@ -27,7 +27,7 @@ Hooks (for closed loops and other constrained systems):
 
 ``condition(q, qd) -> float``
     A condition number watched at every recorded step (``"joints"``: the
-    joints' ``sᵀAs`` by the rule of :data:`planargeo.mechanics.subspaces.COND_LIMIT`, measured at each
+    joints' ``sᵀAs`` by the rule of :data:`planargeo.errors.COND_LIMIT`, measured at each
     joint's point, :func:`planargeo.algorithms.stacked.joint_conditions`;
     closed loops watch ``BᵀGΛ⁻¹GᵀB``, :func:`planargeo.simulate.loops.simulate_loops`).
 
