@@ -46,7 +46,7 @@ from planargeo.errors import InputError, SingularConfigurationError
 from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.mechanics.subspaces import T_of
 from planargeo.scenes.chain import chain_workspace
-from planargeo.screws.twists import kinetic_energy
+from planargeo.simulate.integrate import energy
 from planargeo.widgets.base import Explorer, Step
 
 __all__ = ["ChainExplorer", "chain_for", "parse_list"]
@@ -112,17 +112,6 @@ def parse_list(text: str, name: str) -> list[float]:
     if not all(math.isfinite(x) for x in out):
         raise InputError(f"{name} must be finite numbers, got {text!r}")
     return out
-
-
-def _energy(model: Model, data) -> tuple[float, float]:
-    """Kinetic ``½ Σ vᵢᵀ Iᵢ vᵢ`` (thesis 1.9) and potential ``-Σ mᵢ g·cᵢ`` energy of one workspace.
-
-    Read off the state's own twists, inertias and centres of mass: no second
-    kinematics pass.
-    """
-    T = np.sum(kinetic_energy(data.I, data.v))
-    V = -model.arrays()["mass"] @ (data.com @ np.asarray(model.gravity))
-    return float(T), float(V)
 
 
 class ChainExplorer(Explorer):
@@ -252,7 +241,7 @@ class ChainExplorer(Explorer):
             t, q, qd = traj[0][frame], traj[1][frame], traj[2][frame]
         w = chain_workspace(model, q, qd, tau)
         st = {"model": model, "w": w, "t": t, "tau": tau, "traj": traj}
-        st["ke"], st["pe"] = _energy(model, w)
+        st["ke"], st["pe"] = (float(e) for e in energy(model, data=w))
         return st
 
     @staticmethod
@@ -358,7 +347,7 @@ class ChainExplorer(Explorer):
         times = np.linspace(0.0, duration, nframes)
         self.progress.value = 0.0
         t, q, qd = _integrate(model, q0, qd0, tau, times, progress=self._progress)
-        self._traj = (t, q, qd, sum(_energy(model, chain_workspace(model, q0, qd0, tau))))
+        self._traj = (t, q, qd, float(sum(energy(model, data=chain_workspace(model, q0, qd0, tau)))))
         self.progress.value = 1.0
         self._changed.add("frame")       # show the trajectory's range (the frame is unchanged)
         self._update()
