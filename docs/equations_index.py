@@ -22,10 +22,12 @@ ROOT = Path(__file__).resolve().parents[1]
 PKG = ROOT / "planargeo"
 OUT = ROOT / "docs" / "equations.md"
 
-NUM = r"\d{1,2}\.\d{1,3}[a-z]?"
+NUM = r"(?<![\d.])\d{1,2}\.\d{1,3}[a-z]?(?![\d]|\.\d)"   # 7.38a, not the section 7.1.1
 #: a citation: "thesis", "eq."/"equation(s)" or an opening parenthesis, then numbers joined by
 #: ranges, commas, slashes or "and"
-CITE = re.compile(rf"(?:thesis|eqs?\.|equations?|\()\s*({NUM}(?:\s*(?:[-–,/]|and)\s*{NUM})*)")
+#: (a section number right after the prefix, "thesis 7.1.1: 7.2, 7.7a", is passed over)
+CITE = re.compile(rf"(?:thesis|eqs?\.|equations?|\()\s*(?:\d+(?:\.\d+){{2,}}[:,;]?\s*)?"
+                  rf"({NUM}(?:\s*(?:[-–,/]|and)\s*{NUM})*)")
 PAIR = re.compile(rf"({NUM})\s*[-–]\s*({NUM})|({NUM})")
 
 

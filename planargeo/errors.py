@@ -42,6 +42,8 @@ __all__ = [
     "SingularError",
     "SingularInertiaError",
     "SingularConfigurationError",
+    "CyclicTopologyError",
+    "OutputError",
     "COND_LIMIT",
 ]
 
@@ -59,6 +61,13 @@ __all__ = [
 #: * ``RᵀA⁻¹R`` (``κ = ‖R‖_F² / (σ_min(A) σ_min(RᵀA⁻¹R))``) and an inertia ``A`` to be
 #:   inverted (``κ = |λ|_max / |λ|_min``) in :mod:`planargeo.mechanics.subspaces`
 #:   (:class:`SingularConfigurationError`, :class:`SingularInertiaError`).
+#:
+#: Three guards measure other matrices and keep thresholds of their own (listed here, the one
+#: place to read them): the loop matrix ``BᵀGΛ⁻¹GᵀB`` of 9.5
+#: (:data:`planargeo.algorithms.loops.SINGULAR_COND`, ``1e10``: the slider-crank's refused states
+#: are defined by it), the backstop ``cond ≥ 1/ε`` of the mobility recursion's 3×3 solves
+#: (:data:`planargeo.algorithms.articulated_mobility.SOLVE_COND_LIMIT`) and the dense reference's
+#: ``rcond(H)`` (:data:`planargeo.algorithms.crba.SINGULAR_RCOND`).
 COND_LIMIT = 1e12
 
 

@@ -67,9 +67,9 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
     the kernels do not cover.  A state a kernel does not finish raises: a singular joint
     the kernel's :class:`~planargeo.errors.SingularConfigurationError`, anything else the
     error ``general`` raises for it (a batch: for its first such state, as it would alone).
-    One state given as float64 arrays of the right shapes goes to the kernel as it is (the
-    kernel checks that it is finite; a non-contiguous or read-only array is passed as it
-    is: numba compiles for its layout); anything else is validated by
+    One state given as C-contiguous, writeable float64 arrays of the right shapes goes to the
+    kernel as it is (the kernel checks that it is finite; numba's one array type, so no other
+    layout is ever compiled); anything else is validated by
     :func:`~planargeo.mechanics.kinematics.check_state` and handed over as C-contiguous
     float64 rows.
 
@@ -85,9 +85,8 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
         return general(model, q, qd, z, f_ext)
     kernels, tables = c.kernels, c.tables
     one = kernels.inverse_dynamics_one if inverse else kernels.forward_dynamics_one
-    if (type(q) is type(qd) is type(z) is np.ndarray and q.dtype is qd.dtype is z.dtype is _F64
-            and q.shape == qd.shape == z.shape == c.state
-            and (f_ext is None or (type(f_ext) is np.ndarray and f_ext.dtype is _F64 and f_ext.shape == c.wrenches))):
+    if (_plain(q) and _plain(qd) and _plain(z) and q.shape == qd.shape == z.shape == c.state
+            and (f_ext is None or (_plain(f_ext) and f_ext.shape == c.wrenches))):
         out = one(*tables, q, qd, z, f_ext)
         return out if out is not None else _failed(kernels, tables, model, inverse, q, qd, z, f_ext, general)
     if inverse:                         # the kernels test for NaN and infinity themselves
@@ -107,6 +106,11 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
     _failed(kernels, tables, model, inverse, *(r[declined] for r in rows), None if fe is None else fe[declined],
             general)
     return general(model, q, qd, z, f_ext)       # the general recursion answered that state: the batch by it
+
+
+def _plain(a) -> bool:
+    """A float64 ndarray the kernels take as it is: C-contiguous and writeable (numba's one array type)."""
+    return type(a) is np.ndarray and a.dtype is _F64 and a.flags.carray
 
 
 def _rows(a, full, flat):

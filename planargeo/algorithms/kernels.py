@@ -39,7 +39,8 @@ from collections import namedtuple
 import numpy as np
 from numba import njit, prange
 
-from planargeo.mechanics.subspaces import COND_LIMIT, COND_LIMIT2
+from planargeo.errors import COND_LIMIT
+from planargeo.mechanics.subspaces import COND_LIMIT2
 
 __all__ = ["FIXED", "REVOLUTE", "PRISMATIC", "BLOCK", "OK", "NOT_FINITE", "tables", "workspace",
            "kinematics_state", "articulated_body_state", "newton_euler_state", "forward_dynamics_one",

@@ -39,7 +39,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo.errors import SceneError, SingularConfigurationError
+from planargeo.errors import COND_LIMIT, SceneError, SingularConfigurationError
 from planargeo.scenes import SceneResult, check_param, register
 
 __all__ = ["slider_crank", "slider_crank_model", "slider_crank_solve", "slider_crank_state"]
@@ -97,7 +97,7 @@ def slider_crank_state(psi=0.4, psidot=20.0, r=2.29, l=5.00):
     sb = np.sin(beta)
     Jdep = np.array([[-l * sb, 0.0], [1.0, 1.0]])     # d(closure)/d(theta, phi)
     cond = np.linalg.cond(Jdep)
-    if not np.isfinite(cond) or cond > 1e12:
+    if not np.isfinite(cond) or cond > COND_LIMIT:
         raise SingularConfigurationError(
             "slider-crank loop closure is singular (rod along the horizontal): theta_dot undetermined", cond)
     wrod = -r * np.sin(psi) * psidot / (l * sb)         # psidot + thetadot
