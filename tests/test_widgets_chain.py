@@ -176,23 +176,25 @@ def _hand_two_link(q, qd, tau, g=G):
     """Two uniform unit links (m = 1, L = 1, J = 1/12) on revolute joints, by hand.
 
     Returns joint points p_i, unit twists s_i = [p_y, -p_x, 1], body accelerations
-    a_i = Σ_{j≤i} (s_j q̈_j + ṡ_j q̇_j) from the dense (CRBA) solution, and the
-    spatial inertias at the origin I = [[m, 0, -m c_y], [0, m, m c_x], [-m c_y, m c_x, J + m|c|²]].
+    a_i = Σ_{j≤i} (s_j q̈_j + ṡ_j q̇_j) from the double pendulum's Lagrange equations
+    H q̈ + h + G = τ (derived by hand below), and the spatial inertias at the origin
+    I = [[m, 0, -m c_y], [0, m, m c_x], [-m c_y, m c_x, J + m|c|²]].
     """
-    from planargeo.algorithms.crba import forward_dynamics_crba
-
     th1, th2 = q[0], q[0] + q[1]
     p = [np.zeros(2), np.array([math.cos(th1), math.sin(th1)])]
     c = [0.5 * p[1], p[1] + 0.5 * np.array([math.cos(th2), math.sin(th2)])]
     pdot = [np.zeros(2), qd[0] * np.array([-math.sin(th1), math.cos(th1)])]
     s = [np.array([pi[1], -pi[0], 1.0]) for pi in p]
     sdot = [np.array([pd[1], -pd[0], 0.0]) for pd in pdot]
-    from planargeo.mechanics.model import Body, Joint, Model
-
-    model = Model([Body(1.0, (0.5, 0.0), 1 / 12), Body(1.0, (0.5, 0.0), 1 / 12)],
-                  [Joint("revolute", (0.0, 0.0, 0.0)), Joint("revolute", (1.0, 0.0, 0.0))],
-                  [-1, 0], (0.0, -g))
-    qdd = forward_dynamics_crba(model, q, qd, tau)
+    # Lagrange, links of length L = 1, centre c = 1/2, I_o = J + m c² = 1/3 about their joints:
+    # T = ½ I_o q̇1² + ½ [I_o (q̇1 + q̇2)² + m L² q̇1² + 2 m L c cos q2 q̇1 (q̇1 + q̇2)],
+    # V = m g (c sin th1) + m g (L sin th1 + c sin th2)
+    Io, mLc = 1 / 12 + 0.25, 0.5
+    c2, s2 = math.cos(q[1]), math.sin(q[1])
+    H = np.array([[2 * Io + 1.0 + 2 * mLc * c2, Io + mLc * c2], [Io + mLc * c2, Io]])
+    h = np.array([-mLc * s2 * (2 * qd[0] * qd[1] + qd[1] ** 2), mLc * s2 * qd[0] ** 2])
+    G = g * np.array([1.5 * math.cos(th1) + 0.5 * math.cos(th2), 0.5 * math.cos(th2)])
+    qdd = np.linalg.solve(H, np.asarray(tau, float) - h - G)
     a1 = s[0] * qdd[0] + sdot[0] * qd[0]
     a2 = a1 + s[1] * qdd[1] + sdot[1] * qd[1]
     I = [np.array([[1.0, 0.0, -ci[1]], [0.0, 1.0, ci[0]], [-ci[1], ci[0], 1 / 12 + ci @ ci]]) for ci in c]

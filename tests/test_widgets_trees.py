@@ -5,7 +5,6 @@ import numpy as np
 import pytest
 
 from planargeo import scenes
-from planargeo.algorithms.crba import forward_dynamics_crba
 from planargeo.algorithms.loops import constrained_dynamics_lagrange
 from planargeo.widgets.trees import TreeExplorer
 
@@ -59,10 +58,12 @@ def test_contact_forces_match_lagrange_reference(ex, speed, mass, g):
     assert ex.readout_values["max |qdd|"] == pytest.approx(np.abs(ref["qdd"]).max(), rel=1e-9)
 
 
-def test_open_tree_matches_crba(ex):
+def test_open_tree_matches_pinocchio(ex):
+    from bench import pinocchio_forward
+
     ex.set(loops="open (Fig 9.1)", speed=1.2, mass=1.5)
     res = scenes.build("tree", speed=1.2, mass=1.5)
-    ref = forward_dynamics_crba(res.model, res.state["q"], res.state["qd"], np.zeros(9))
+    ref = pinocchio_forward(res.model, res.state["q"], res.state["qd"], np.zeros(9))
     assert ex.readout_values["qdd[1] (root)"] == pytest.approx(ref[0], abs=1e-10)
     assert ex.readout_values["max |qdd|"] == pytest.approx(np.abs(ref).max(), rel=1e-10)
 
