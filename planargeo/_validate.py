@@ -21,14 +21,36 @@ PSD_RTOL = 1e-10
 def as_array(x, name: str, tail: tuple[int, ...] = (), *, finite: bool = True) -> np.ndarray:
     """Return ``x`` as a float array whose trailing dimensions are ``tail``.
 
-    Leading (batch) dimensions are free.  Raises :class:`ShapeError` naming
-    ``name`` if the trailing shape is wrong, and :class:`NonFiniteError` if a
-    value is NaN or infinite (unless ``finite=False``).
+    Leading (batch) dimensions are free.  Raises :class:`InputError` for
+    complex values (never silently dropping the imaginary part) and for
+    anything that is not numbers, :class:`ShapeError` naming ``name`` if the
+    trailing shape is wrong, and :class:`NonFiniteError` if a value is NaN or
+    infinite (unless ``finite=False``).
+
+    Examples
+    --------
+    >>> as_array([1, 2], "x")
+    array([1., 2.])
+    >>> as_array("1.5", "x")
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: x must be numeric, got '1.5'
+    >>> as_array(np.array([1 + 2j]), "x")
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: x must be real, got complex values
     """
     try:
-        a = np.asarray(x, dtype=float)
+        a = np.asarray(x)
+        kind = a.dtype.kind
+        if kind in "USV" or (kind == "O" and any(v is None for v in a.flat)):
+            raise TypeError            # numpy would read "1.5" as 1.5 and None as NaN
+        if kind != "c":
+            a = a.astype(float, copy=False)
     except (TypeError, ValueError) as exc:
         raise InputError(f"{name} must be numeric, got {x!r}") from exc
+    if kind == "c":
+        raise InputError(f"{name} must be real, got complex values")
     nt = len(tail)
     if a.ndim < nt or (nt and a.shape[-nt:] != tuple(tail)):
         want = "(..., " + ", ".join(map(str, tail)) + ")" if nt else "a scalar array"

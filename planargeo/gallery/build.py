@@ -137,7 +137,7 @@ def _owned(out: Path) -> set[str] | None:
         text = (out / MANIFEST).read_text(encoding="utf-8")
     except FileNotFoundError:
         return None
-    except (OSError, UnicodeDecodeError) as e:
+    except (OSError, UnicodeError) as e:
         raise OutputError(f"cannot read the gallery manifest {out / MANIFEST}: {e}") from e
     return {n for n in text.splitlines()
             if n and not n.startswith("#") and "/" not in n and n not in (".", "..")} - {MANIFEST}
@@ -150,14 +150,19 @@ def _claim(out: Path, names, force: bool) -> set[str]:
     Raises :class:`OutputError` for a missing parent, a file in the way, or a
     folder holding other files (unless ``force``).
     """
-    if not out.parent.is_dir():
-        raise OutputError(f"--out {out}: the parent folder {out.parent} does not exist")
-    if out.exists() and not out.is_dir():
-        raise OutputError(f"--out {out} is a file, not a folder")
-    if not out.exists():
-        return set()
-    owned = _owned(out)
-    others = {p.name for p in out.iterdir()} - (owned or set()) - {MANIFEST, "benchmarks"}
+    try:
+        if not out.parent.is_dir():
+            raise OutputError(f"--out {out}: the parent folder {out.parent} does not exist")
+        if out.exists() and not out.is_dir():
+            raise OutputError(f"--out {out} is a file, not a folder")
+        if not out.exists():
+            return set()
+        owned = _owned(out)
+        others = {p.name for p in out.iterdir()} - (owned or set()) - {MANIFEST, "benchmarks"}
+    except OutputError:
+        raise
+    except OSError as e:                    # a name too long, no permission to look...
+        raise OutputError(f"--out {out}: {e.strerror or e}") from e
     clash = sorted(others & set(names))
     if not force and (clash or (owned is None and others)):
         what = f"files the gallery did not write ({', '.join(clash[:3])}{', ...' if len(clash) > 3 else ''})" \
