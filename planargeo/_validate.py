@@ -6,12 +6,15 @@ reported uniformly, naming the argument.
 """
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
-from planargeo.errors import InputError, NonFiniteError, ShapeError, SingularInertiaError
+from planargeo.errors import InputError, NonFiniteError, NumericOverflowError, ShapeError, SingularInertiaError
 
 __all__ = ["as_array", "as_vec3", "as_mat3", "as_xy", "as_scalar", "check_symmetric",
-           "check_positive_definite", "check_positive_semidefinite", "check_positive", "PSD_RTOL"]
+           "check_positive_definite", "check_positive_semidefinite", "check_positive", "PSD_RTOL",
+           "batch_shape", "check_overflow", "overflow_checked"]
 
 #: Relative tolerance of :func:`check_positive_semidefinite`: an eigenvalue below
 #: ``-PSD_RTOL * max|eigenvalue|`` is a genuinely negative direction, not rounding.
@@ -75,9 +78,9 @@ def as_xy(x, name: str) -> np.ndarray:
     return as_array(x, name, (2,))
 
 
-def as_scalar(x, name: str) -> float:
-    """Return ``x`` as a finite Python float."""
-    a = as_array(x, name)
+def as_scalar(x, name: str, *, finite: bool = True) -> float:
+    """Return ``x`` as a Python float (finite unless ``finite=False``)."""
+    a = as_array(x, name, finite=finite)
     if a.ndim != 0:
         raise ShapeError(f"{name} must be a scalar, got shape {a.shape}")
     return float(a)
@@ -160,3 +163,65 @@ def check_positive_definite(m: np.ndarray, name: str, rtol: float = 1e-12) -> np
         raise SingularInertiaError(
             f"{name} must be positive definite, got smallest eigenvalue {float(np.min(lo)):.3g}", c)
     return m
+
+
+def batch_shape(**arrays) -> tuple[int, ...]:
+    """The common batch shape of named arrays ``name=(array, core_ndim)``, or a :class:`ShapeError`.
+
+    Examples
+    --------
+    >>> batch_shape(p=(np.zeros((2, 3)), 1), q=(np.zeros(3), 1))
+    (2,)
+    >>> batch_shape(p=(np.zeros((2, 3)), 1), q=(np.zeros((4, 3)), 1))
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.ShapeError: the batch shapes do not broadcast: p (2,), q (4,)
+    """
+    shapes = {k: np.shape(a)[:np.ndim(a) - nd] for k, (a, nd) in arrays.items()}
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        given = ", ".join(f"{k} {v}" for k, v in shapes.items())
+        raise ShapeError(f"the batch shapes do not broadcast: {given}") from None
+
+
+def check_overflow(out, what: str, culprits: str, ok=None):
+    """Return ``out`` (an array or a tuple of arrays) if finite, else raise :class:`NumericOverflowError`.
+
+    For functions whose arguments were checked finite: a NaN or infinity in the
+    result can only come from overflow.  ``ok`` (broadcasting against an array
+    result) marks the entries that are non-finite by design (e.g. the
+    coordinates of a point at infinity).
+
+    Examples
+    --------
+    >>> check_overflow(np.array([1.0, np.inf]), "to_xy(p)", "p", ok=np.array([False, True]))
+    array([ 1., inf])
+    >>> check_overflow(np.array(np.inf), "incidence(p, l)", "p or l")
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.NumericOverflowError: incidence(p, l): the result overflows double precision (p or l too large)
+    """
+    for o in (out if isinstance(out, tuple) else (out,)):
+        bad = ~np.isfinite(o)
+        if ok is not None:
+            bad &= ~np.asarray(ok, bool)
+        if np.any(bad):
+            raise NumericOverflowError(f"{what}: the result overflows double precision ({culprits} too large)")
+    return out
+
+
+def overflow_checked(culprits: str):
+    """Decorator: run the function with numpy's overflow warnings off, then :func:`check_overflow` its result.
+
+    Only for functions whose every result is finite for finite arguments (they validate
+    their arguments with :func:`as_array`).
+    """
+    def deco(fn):
+        @functools.wraps(fn)
+        def wrapper(*args, **kwargs):
+            with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+                out = fn(*args, **kwargs)
+            return check_overflow(out, f"{fn.__name__}", culprits)
+        return wrapper
+    return deco

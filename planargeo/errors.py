@@ -16,7 +16,9 @@ Hierarchy::
     │   ├── NonFiniteError                 NaN or inf where numbers are needed
     │   ├── InvalidPolygonError            shapely geometry not a valid area
     │   ├── TopologyError                  parent array not a tree (e.g. a cycle)
-    │   └── SceneError                     scene parameters that cannot be built
+    │   ├── SceneError                     scene parameters that cannot be built
+    │   ├── NumericOverflowError (OverflowError)  a result beyond double precision's range
+    │   └── SizeLimitError                 a job too big for memory or time (with an opt-in)
     ├── DegenerateGeometryError (ValueError)  e.g. the join of two coincident points
     └── SingularError (numpy.linalg.LinAlgError)  carries ``cond``
         ├── SingularInertiaError           an inertia that cannot be inverted
@@ -34,6 +36,8 @@ __all__ = [
     "InvalidPolygonError",
     "TopologyError",
     "SceneError",
+    "NumericOverflowError",
+    "SizeLimitError",
     "DegenerateGeometryError",
     "SingularError",
     "SingularInertiaError",
@@ -67,6 +71,22 @@ class TopologyError(InputError):
 
 class SceneError(InputError):
     """Scene parameters describe a mechanism that cannot be built or assembled."""
+
+
+class NumericOverflowError(InputError, OverflowError):
+    """Finite arguments whose result lies beyond double precision's range (about 1.8e308).
+
+    Raised instead of returning ``inf`` or ``NaN``; the message names the argument(s) too large
+    (or too small).  Where only an intermediate step would overflow, the functions rescale
+    instead and return the finite result.
+    """
+
+
+class SizeLimitError(InputError):
+    """A request too big to serve in memory or time (a model of 10⁷ bodies, 10³⁰⁰ steps).
+
+    The message states the limit and the argument that lifts it for a deliberate big job.
+    """
 
 
 class DegenerateGeometryError(PlanargeoError, ValueError):
