@@ -14,7 +14,7 @@ from planargeo.errors import InputError, NonFiniteError, NumericOverflowError, S
 
 __all__ = ["as_array", "as_vec3", "as_mat3", "as_xy", "as_scalar", "check_symmetric",
            "check_positive_definite", "check_positive_semidefinite", "check_positive", "PSD_RTOL",
-           "batch_shape", "check_overflow", "overflow_checked"]
+           "batch_shape", "check_overflow", "overflow_checked", "check_tolerance", "rescaled"]
 
 #: Relative tolerance of :func:`check_positive_semidefinite`: an eigenvalue below
 #: ``-PSD_RTOL * max|eigenvalue|`` is a genuinely negative direction, not rounding.
@@ -84,6 +84,24 @@ def as_scalar(x, name: str, *, finite: bool = True) -> float:
     if a.ndim != 0:
         raise ShapeError(f"{name} must be a scalar, got shape {a.shape}")
     return float(a)
+
+
+def check_tolerance(x, name: str = "rtol") -> float:
+    """A tolerance: a finite non-negative float (a negative one would accept nothing, or everything).
+
+    Examples
+    --------
+    >>> check_tolerance(1e-9)
+    1e-09
+    >>> check_tolerance(-1.0)
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: rtol must be a non-negative number, got -1.0
+    """
+    v = as_scalar(x, name)
+    if v < 0:
+        raise InputError(f"{name} must be a non-negative number, got {v!r}")
+    return v
 
 
 def check_positive(x, name: str, *, strict: bool = True) -> np.ndarray:
@@ -225,3 +243,39 @@ def overflow_checked(culprits: str):
             return check_overflow(out, f"{fn.__name__}", culprits)
         return wrapper
     return deco
+
+
+def rescaled(fn, args, degrees, core, out_core: int, what: str, culprits: str):
+    """``fn(*args)`` for ``fn`` homogeneous of degree ``degrees[i]`` in ``args[i]``, finite when it can be.
+
+    The plain evaluation is returned when finite (every ordinary case, bit for bit).  Otherwise
+    each argument (each of its ``core[i]``-dimensional elements) is scaled by a power of two to
+    a largest entry near 1, ``fn`` is evaluated on those, and the result is scaled back exactly
+    by ``2^(Σ degrees[i] e[i])``: an intermediate overflow gives way to the true result, and a
+    true result beyond double precision raises :class:`NumericOverflowError` naming ``culprits``.
+
+    Examples
+    --------
+    >>> I = np.diag([1e200, 1e200, 1e200]); v = np.array([1e150, 0.0, 1e150])
+    >>> rescaled(lambda I, v: v @ I @ v, (I, v), (1, 2), (2, 1), 0, "vIv", "I or v")   # 2e500 overflows
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.NumericOverflowError: vIv: the result overflows double precision (I or v too large)
+    >>> float(rescaled(lambda a: np.sqrt(a @ a), (np.array([1e200, 1e200]),), (1,), (1,), 0,
+    ...                "|a|", "a"))       # a @ a overflows, |a| does not
+    1.4142135623730951e+200
+    """
+    with np.errstate(all="ignore"):
+        out = fn(*args)
+    if all(np.all(np.isfinite(o)) for o in (out if isinstance(out, tuple) else (out,))):
+        return out
+    scaled, total = [], 0
+    for a, c, d in zip(args, core, degrees):
+        e = np.frexp(np.abs(a).max(axis=tuple(range(-c, 0)), keepdims=True) if c else np.abs(a))[1]
+        scaled.append(np.ldexp(a, -e))
+        total = total + d * (e.reshape(e.shape[:e.ndim - c]) if c else e)
+    with np.errstate(all="ignore"):
+        out = fn(*scaled)
+        total = np.asarray(total).reshape(np.shape(total) + (1,) * out_core)
+        out = tuple(np.ldexp(o, total) for o in out) if isinstance(out, tuple) else np.ldexp(out, total)
+    return check_overflow(out, what, culprits)

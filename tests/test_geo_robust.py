@@ -137,3 +137,70 @@ def test_join_is_scale_invariant_over_the_whole_range(p, ep, q, eq):
         return
     got = P.normalize_line(P.join(p * 10.0 ** ep, q * 10.0 ** eq))
     np.testing.assert_allclose(got, ref, rtol=1e-12, atol=1e-12 * np.abs(ref).max())
+
+
+# --------------------------------------------------------------------------- conics
+def test_tangents_from_a_point_to_a_degenerate_conic_are_refused():
+    """diag(1, 0, 0) is the double line y = 0 ([y, -x, w]: y² = 0); from the ideal point in direction x its
+    polar is that line itself, which lies on the conic: the tangents were NaN points, now a named error."""
+    with pytest.raises(DegenerateGeometryError, match="lies on the degenerate conic"):
+        C.tangents_from_point(np.diag([1.0, 0.0, 0.0]), [7.8, 0.7, 0.0])
+    # the point conic x² + y² = 0 (the origin): from an ideal point the only contact is the vertex
+    with pytest.raises(DegenerateGeometryError, match="vertex of the degenerate conic"):
+        C.tangents_from_point(np.diag([1.0, 1.0, 0.0]), [0.58, 1.0, 0.0])
+    # a line on a line pair has every point in common with it
+    with pytest.raises(DegenerateGeometryError, match="lies on the degenerate conic"):
+        C.line_conic_intersections(np.diag([1.0, -1.0, 0.0]), [1.0, 1.0, 0.0])
+    with pytest.raises(DegenerateGeometryError, match="l is the zero vector"):
+        C.line_conic_intersections(C.conic_circle([0.0, 0.0], 1.0), [0.0, 0.0, 0.0])
+
+
+def test_polar_and_pole_of_an_inertia_keep_their_scale_near_the_range_limits():
+    """polar(I, a) = I a is a wrench and pole(I, f) = I⁻¹ f an acceleration: the scale matters, so a
+    rescaled evaluation must scale back exactly.  For I = diag(1e200, 1e200, 1e200) and a = [1e100, 0, 1e100]
+    the plain I a is fine; I = 1e300 I₃ and a = 1e-200 [1, 2, 3] multiply to 1e100 [1, 2, 3]."""
+    I = 1e300 * np.eye(3)
+    np.testing.assert_allclose(C.polar(I, 1e-200 * np.array([1.0, 2.0, 3.0])), 1e100 * np.array([1.0, 2.0, 3.0]),
+                               rtol=1e-15)
+    np.testing.assert_allclose(C.pole(I, 1e100 * np.array([1.0, 2.0, 3.0])), 1e-200 * np.array([1.0, 2.0, 3.0]),
+                               rtol=1e-15)
+    # p C p for the unit circle and the ideal point [1e300, 0, 0]: 1e600, beyond double precision
+    with pytest.raises(NumericOverflowError, match="conic_residual"):
+        C.conic_residual(np.diag([1.0, 1.0, -1.0]), [1e300, 0.0, 0.0])
+
+
+def test_centre_of_a_huge_conic():
+    """The circle of radius 1e150 about (1e150, 0) scaled by 1e-300 (entries from 1e-300 to 1e0) has its
+    centre at (1e150, 0); the same circle's matrix times 1e300 too (C[0] × C[1] overflowed to NaN)."""
+    K = C.conic_circle([1e100, 2e100], 1e100)
+    for scale in (1.0, 1e-200, 1e100):
+        np.testing.assert_allclose(P.to_xy(C.centre(K * scale)), [1e100, 2e100], rtol=1e-15)
+
+
+def test_conic_constructors_beyond_range_are_named():
+    with pytest.raises(NumericOverflowError, match="conic_circle"):
+        C.conic_circle([0.0, 0.0], 1e200)                 # r² = 1e400
+    with pytest.raises(NumericOverflowError, match="conic_parabola"):
+        C.conic_parabola([0.0, 0.0], 5e-324)              # 1/(4f) overflows
+    with pytest.raises(InputError, match="imaginary must be True or False"):
+        C.conic_circle([0.0, 0.0], 1.0, imaginary=[])
+
+
+@pytest.mark.parametrize("call", [
+    lambda: C.pole(np.eye(3), [1.0, 0.0, 0.0], rtol=-1.0),
+    lambda: C.classify(np.eye(3), rtol={"a": 1}),
+    lambda: C.affine_frame(C.conic_parabola([0.0, 0.0], 1.0), rtol=-np.inf),
+    lambda: C.decompose_point([1.0, 2.0, 3.0], [1.0, 0, 0], [0, 1.0, 0], [1.0, 1.0, 1.0], rtol="x"),
+])
+def test_tolerances_are_validated(call):
+    """A negative, infinite or non-numeric rtol leaked TypeError / LinAlgError."""
+    with pytest.raises(InputError, match="rtol must be"):
+        call()
+
+
+def test_a_base_that_is_not_special_is_refused():
+    """Q1 on the conic: Q1 C Q1 = 0 divided by zero (inf and a numpy warning)."""
+    K = C.conic_circle([0.0, 0.0], 1.0)
+    on = P.from_xy([1.0, 0.0])
+    with pytest.raises(DegenerateGeometryError, match="Q1 C Q1 = 0"):
+        C.decompose_point_special(K, [0.0, 0.0, 1.0], on, P.from_xy([0.0, 1.0]), P.from_xy([0.0, -1.0]))

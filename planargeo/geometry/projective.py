@@ -117,14 +117,15 @@ _TINY, _HUGE = 1e-150, 1e150          # squared norms of vectors in this range n
 _TINY2, _HUGE2 = _TINY * _TINY, _HUGE * _HUGE   # the same bounds on the squared norms
 
 
-def _fit(a: np.ndarray) -> np.ndarray:
-    """``a`` with each vector whose largest |component| lies outside ``(_TINY, _HUGE)`` scaled by a power of two.
+def _fit(a: np.ndarray, core: int = 1, tiny: float = _TINY, huge: float = _HUGE) -> np.ndarray:
+    """``a`` with each vector (``core=2``: matrix) whose largest |entry| lies outside ``(tiny, huge)``
+    scaled by a power of two to a largest entry in ``[0.5, 1)``.
 
     Scaling by ``2^-e`` is exact, so a homogeneous vector keeps its meaning and its digits;
     vectors already in range (every ordinary one) are returned unchanged.
     """
-    m = np.abs(a).max(axis=-1, keepdims=True)
-    ok = ((m > _TINY) & (m < _HUGE)) | (m == 0)
+    m = np.abs(a).max(axis=tuple(range(-core, 0)), keepdims=True)
+    ok = ((m > tiny) & (m < huge)) | (m == 0)
     if np.all(ok):
         return a
     return np.where(ok, a, np.ldexp(a, -np.frexp(m)[1]))

@@ -65,8 +65,22 @@ def _always(args, kwargs, out) -> bool:
     return True
 
 
+def _nan_where_not_real(args, kwargs, out) -> bool:
+    """``line_conic_intersections``: NaN rows exactly where ``real`` is False (documented)."""
+    X, real = out
+    X = np.asarray(X).reshape(np.shape(real) + (2, 3))
+    return bool(np.all(np.isnan(X[~np.asarray(real)])) and np.all(np.isfinite(X[np.asarray(real)])))
+
+
+def _asked_for_nan(args, kwargs, out) -> bool:
+    """``on_interior="nan"`` / ``on_miss="nan"``: NaN elements were asked for."""
+    return "nan" in (kwargs.get("on_interior"), kwargs.get("on_miss"))
+
+
 #: Entry points whose documentation promises non-finite values for some finite input.
 NONFINITE_OK = {
+    "line_conic_intersections": _nan_where_not_real, "tangents_from_point": _asked_for_nan,
+    "polar_construction_exterior": _asked_for_nan, "polar_construction_interior": _asked_for_nan,
     "to_xy": _any_ideal, "signed_distance": _any_ideal, "line_direction": _any_ideal,
     "foot_point": _any_ideal, "direction": _always, "pole_xy": _any_ideal,
     "wrench_axis": _any_ideal, "cross_cond": lambda a, k, out: bool(np.all(np.isinf(out) | np.isfinite(out))),
