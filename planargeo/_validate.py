@@ -173,7 +173,7 @@ def check_positive_definite(m: np.ndarray, name: str, rtol: float = 1e-12) -> np
     check_symmetric(m, name)
     w = np.linalg.eigvalsh(m)
     lo, hi = w[..., 0], w[..., -1]
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         cond = np.where(lo > 0, hi / np.where(lo > 0, lo, 1.0), np.inf)
     bad = lo <= rtol * np.maximum(np.abs(hi), np.finfo(float).tiny)
     if np.any(bad):
