@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import resource
 import sys
 import time
 import warnings
@@ -51,7 +52,11 @@ def main(argv=None) -> int:
     ap.add_argument("--seed", type=int, default=None)
     ap.add_argument("--only", nargs="*", default=None, help="entry points whose name contains one of these")
     ap.add_argument("--group", nargs="*", default=None)
+    ap.add_argument("--memory", type=float, default=4.0,
+                    help="address-space limit in GB (a runaway allocation is a MemoryError, not a swapped machine)")
     args = ap.parse_args(argv)
+    limit = int(args.memory * 2**30)
+    resource.setrlimit(resource.RLIMIT_AS, (limit, resource.getrlimit(resource.RLIMIT_AS)[1]))
     warnings.simplefilter("default")
     targets = all_targets()
     if args.only:
