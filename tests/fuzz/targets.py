@@ -305,7 +305,7 @@ def simulate_targets() -> list[Target]:
 
 def loops_targets() -> list[Target]:
     from planargeo import scenes
-    from planargeo.simulate.loops import simulate_loops
+    from planargeo.simulate.loops import baumgarte, closure_residual, project_state, simulate_loops
 
     sc = scenes.build("slider-crank")
     model = sc.model
@@ -320,7 +320,15 @@ def loops_targets() -> list[Target]:
                 alpha=S.scalars, beta=S.scalars, tol=S.tolerances, trigger=S.tolerances)
     strat = st.tuples(vec, vecd, T_END).flatmap(
         lambda a: st.fixed_dictionaries({}, optional=opts).map(lambda kw: (a, kw)))
-    return [Target("simulate_loops", run, strat, group="simulate", timeout=20.0)]
+    closure = st.tuples(vec, vecd).flatmap(lambda a: st.fixed_dictionaries(
+        {}, optional={"fixed": st.one_of(st.lists(S.ints, max_size=3), S.junk), "tol": S.tolerances,
+                      "max_iter": S.ints}).map(lambda kw: ((model,) + a, kw)))
+    return [Target("simulate_loops", run, strat, group="simulate", timeout=20.0),
+            Target("loops.project_state", project_state, closure, group="simulate"),
+            Target("loops.closure_residual", closure_residual, vec.map(lambda q: ((model, q), {})), group="simulate"),
+            Target("loops.baumgarte", lambda **kw: baumgarte(model, **kw)(0.0, q0, qd0, np.zeros(model.nq)),
+                   st.fixed_dictionaries({}, optional={"alpha": S.scalars, "beta": S.scalars}).map(lambda kw: ((), kw)),
+                   group="simulate")]
 
 
 # --------------------------------------------------------------------------- command line
