@@ -565,7 +565,8 @@ def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 
     s = np.einsum("...i,...i->...", Lj, _mv(C, p))
     Lj = np.where((s < 0)[..., None], -Lj, Lj)
     P = np.broadcast_to(p, Lj.shape)
-    return _checked(ExteriorConstruction(_npoint(P), T, X, _nline(Lj)), "polar_construction_exterior")
+    return _checked(ExteriorConstruction(_npoint(P), T, X, _nline(Lj)), "polar_construction_exterior",
+                    on_interior == "nan")
 
 
 def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: float = 1e-9) -> InteriorConstruction:
@@ -629,7 +630,12 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
         i = int(np.argwhere(~distinct)[0][-1])
         raise InputError(f"lines[{i}] does not cut C in two distinct real points "
                          "(p is not interior, or the line is tangent)")
-    T = _nline(_mv(C[..., None, None, :, :], X))
+    CX = _mv(C[..., None, None, :, :], X)
+    vertex = distinct[..., None] & np.all(CX == 0, axis=-1)
+    if np.any(vertex):
+        raise DegenerateGeometryError(f"a chord point is the vertex of the degenerate conic C"
+                                      f"{_first_index(np.any(vertex, axis=(-2, -1)))}, where the tangent is undefined")
+    T = _nline(CX)
     poles = _unit(_cross(_unit(T[..., 0, :]), _unit(T[..., 1, :])))
     polar_ = _cross(poles[..., 0, :], poles[..., 1, :])
     bad = np.all(polar_ == 0, axis=-1) & np.all(distinct, axis=-1)
@@ -639,13 +645,13 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
     polar_ = np.where((s < 0)[..., None], -polar_, polar_)
     P = np.broadcast_to(p, polar_.shape)
     return _checked(InteriorConstruction(_npoint(P), _nline(lines), _npoint(X), T, _npoint(poles), _nline(polar_)),
-                    "polar_construction_interior")
+                    "polar_construction_interior", on_miss == "nan")
 
 
-def _checked(construction, what: str):
-    """The construction, unless an element overflowed (±inf; NaN marks what ``on_miss="nan"`` left out)."""
+def _checked(construction, what: str, nan_asked: bool):
+    """The construction, unless an element is not finite (NaN only where ``"nan"`` was asked for)."""
     for x in vars(construction).values():
-        check_overflow(x, what, "an element's coordinates", ok=np.isnan(x))
+        check_overflow(x, what, "an element's coordinates", ok=np.isnan(x) if nan_asked else None)
     return construction
 
 

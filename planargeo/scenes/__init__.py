@@ -317,7 +317,7 @@ def check_param(name: str, value: Any, kind: str = "float", *, positive: bool = 
         raise InputError(f"kind must be 'float', 'int' or 'choice', got {kind!r}")
     if isinstance(value, (bool, np.bool_, str, bytes)) or value is None:
         raise SceneError(f"{name} must be numeric, got {value!r}")
-    if np.iscomplexobj(value):
+    if isinstance(value, (complex, np.complexfloating)) or getattr(value, "dtype", None) == complex:
         raise SceneError(f"{name} must be real, got {value!r}")
     try:
         a = np.asarray(value, dtype=float)

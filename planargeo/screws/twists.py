@@ -131,6 +131,7 @@ def X_frame(theta, point) -> np.ndarray:
     >>> np.round(X_frame(np.pi / 2, [2.0, 0.0]) @ [0.0, 0.0, 1.0], 12) + 0.0   # X_P gives [0, 2, 1], then turned
     array([-2.,  0.,  1.])
     """
+    _batches(theta=(theta, 0), point=(point, 1))
     return rot(theta) @ X_P(point)
 
 
@@ -147,6 +148,7 @@ def X_frame_inv_T(theta, point) -> np.ndarray:
     >>> np.round(X_frame_inv_T(np.pi / 2, [0.0, 1.0]) @ [1.0, 0.0, 0.0], 12) + 0.0   # X_P⁻ᵀ gives [1, 0, 1]
     array([0., 1., 1.])
     """
+    _batches(theta=(theta, 0), point=(point, 1))
     return rot(theta) @ X_P_inv_T(point)
 
 
@@ -167,6 +169,7 @@ def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
     array([1., 1.])
     """
     c = as_xy(about, "about")
+    _batches(theta=(theta, 0), about=(c, 1))
     return X_P(-c) @ rot(theta) @ X_P(c)
 
 
@@ -287,7 +290,7 @@ def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
     m = check_positive(mass, "mass")
     c = as_xy(com, "com")
     J = check_positive(inertia_about_com, "inertia_about_com", strict=False)
-    shape = np.broadcast_shapes(m.shape, c.shape[:-1], J.shape)
+    shape = batch_shape(mass=(m, 0), com=(c, 1), inertia_about_com=(J, 0))
     out = np.zeros(shape + (3, 3))
     cx, cy = c[..., 0], c[..., 1]
     out[..., 0, 0] = m
@@ -493,7 +496,9 @@ def inertia_at(inertia, point) -> np.ndarray:
            [0. , 2. , 0. ],
            [0. , 0. , 0.5]])
     """
-    return _congruence(X_P_inv_T(point), _inertia_psd(inertia))
+    I = _inertia_psd(inertia)
+    _batches(inertia=(I, 2), point=(point, 1))
+    return _congruence(X_P_inv_T(point), I)
 
 
 def _congruence(W: np.ndarray, I: np.ndarray) -> np.ndarray:
@@ -534,7 +539,9 @@ def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
            [ 0. ,  2. ,  0. ],
            [-2. ,  0. ,  2.5]])
     """
-    return _congruence(X_frame_inv_T(theta, point), _inertia_psd(inertia))
+    I = _inertia_psd(inertia)
+    _batches(inertia=(I, 2), theta=(theta, 0), point=(point, 1))
+    return _congruence(X_frame_inv_T(theta, point), I)
 
 
 @overflow_checked("inertia, theta or about")
@@ -576,6 +583,7 @@ def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
 def _inertia_rotated(I: np.ndarray, theta, about) -> np.ndarray:
     """:func:`inertia_rotated` without the inertia check (the unchecked kernel)."""
     c = as_xy(about, "about")
+    _batches(inertia=(I, 2), theta=(theta, 0), about=(c, 1))
     return _congruence(X_P_inv_T(-c) @ rot(theta) @ X_P_inv_T(c), I)
 
 
@@ -598,6 +606,7 @@ def momentum(inertia, twist) -> np.ndarray:
     """
     I = _inertia_psd(inertia)
     v = as_vec3(twist, "twist")
+    batch_shape(inertia=(I, 2), twist=(v, 1))
     return np.einsum("...ij,...j->...i", I, v)
 
 
@@ -670,7 +679,7 @@ def kappa(twist, s, qd) -> np.ndarray:
     else:
         from planargeo.errors import ShapeError
         raise ShapeError(f"s must have shape (..., 3) or (..., 3, k), got shape {S.shape}")
-    shape = np.broadcast_shapes(v.shape[:-1], U.shape[:-2])
+    shape = batch_shape(twist=(v, 1), **{"s q̇": (U, 2)})
     out = np.zeros(shape + (3,))
     carrier = np.broadcast_to(v, shape + (3,))         # v + Σ_{l<j} s_l q̇_l
     for j in range(U.shape[-1]):
@@ -712,15 +721,22 @@ def bias_force(inertia, twist, g=None) -> np.ndarray:
     """
     I = _inertia_psd(inertia)
     v = as_vec3(twist, "twist")
+    g = None if g is None else as_vec3(g, "g")
+    batch_shape(inertia=(I, 2), twist=(v, 1), g=(np.zeros(3) if g is None else g, 1))
     out = np.einsum("...ij,...jk,...k->...i", crf(v), I, v)
     if g is not None:
-        out = out - as_vec3(g, "g")
+        out = out - g
     return out
 
 
 # ---------------------------------------------------------------------------
 # Thin classes
 # ---------------------------------------------------------------------------
+
+def _batches(**named) -> tuple:
+    """:func:`planargeo._validate.batch_shape` of arguments not yet converted (as real arrays, named)."""
+    return batch_shape(**{k: (as_array(x, k), nd) for k, (x, nd) in named.items()})
+
 
 def _is_number(x) -> bool:
     return isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, bool)
@@ -805,8 +821,10 @@ class _Screw:
         """
         if about is None:
             M = rot(theta)
+            _batches(theta=(theta, 0), twist_or_wrench=(self._array, 1))
         else:
             c = as_xy(about, "about")
+            _batches(theta=(theta, 0), about=(c, 1), twist_or_wrench=(self._array, 1))
             if isinstance(self, Wrench):
                 M = X_P_inv_T(-c) @ rot(theta) @ X_P_inv_T(c)
             else:

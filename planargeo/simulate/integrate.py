@@ -311,6 +311,8 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     (True, 51)
     """
     t_end, dt, rtol, atol, max_step, max_steps = _options(method, t_end, dt, rtol, atol, max_step, max_steps)
+    if qd0 is None:
+        raise InputError(f"qd0 must be the initial joint speeds, shape ({model.nq},), got None")
     q0, qd0, _, _, _, shape = check_state(model, q0, qd0)
     if shape != ():
         raise InputError(f"q0 and qd0 must be single states of shape ({model.nq},), got batch shape {shape}")

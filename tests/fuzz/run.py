@@ -2,15 +2,20 @@
 
 Usage::
 
-    python tests/fuzz/run.py [--calls N] [--seed S] [--only SUBSTRING ...] [--group GROUP ...]
+    python tests/fuzz/run.py [--calls N | --per-target N] [--seed S | --derandomize]
+                             [--only SUBSTRING ...] [--group GROUP ...] [--json FILE]
 
 ``--calls`` is the total number of generated calls (default 12000), shared among the targets
-by weight.  Exit status 1 when any call was a defect (foreign exception, non-finite result
-from finite input, hang, inconsistent explorer), with the first example of each.
+by weight; ``--per-target`` gives each target that many instead (times its weight, at least
+5).  ``--derandomize`` draws the same examples every run (the fast profile of ``make test``).
+Exit status 1 when any call was a defect (foreign exception, non-finite result from finite
+input, hang, inconsistent explorer), with the first example of each; ``--json`` also writes
+``{entry point: {"group", "counts", "examples", "seconds"}}``.
 """
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import resource
 import sys
@@ -49,7 +54,10 @@ def table(rows: list[tuple[str, str, Tally]]) -> str:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--calls", type=int, default=12000)
+    ap.add_argument("--per-target", type=int, default=None)
     ap.add_argument("--seed", type=int, default=None)
+    ap.add_argument("--derandomize", action="store_true")
+    ap.add_argument("--json", default=None, help="also write the tallies to this file")
     ap.add_argument("--only", nargs="*", default=None, help="entry points whose name contains one of these")
     ap.add_argument("--group", nargs="*", default=None)
     ap.add_argument("--memory", type=float, default=4.0,
@@ -67,12 +75,16 @@ def main(argv=None) -> int:
     t0 = time.perf_counter()
     rows = []
     for t in targets:
-        n = max(5, round(args.calls * t.weight / total_w))
-        tally = run_target(t, n, seed=args.seed)
+        share = args.per_target * t.weight if args.per_target else args.calls * t.weight / total_w
+        tally = run_target(t, max(5, round(share)), seed=args.seed, derandomize=args.derandomize)
         rows.append((t.name, t.group, tally))
         print(f"  {t.name}: {tally.calls} calls, {tally.defects} defects, {tally.seconds:.1f} s",
               file=sys.stderr, flush=True)
     print(table(rows))
+    if args.json:
+        Path(args.json).write_text(json.dumps({name: {"group": group, "counts": dict(t.counts),
+                                                      "examples": t.examples, "seconds": t.seconds}
+                                               for name, group, t in rows}, indent=1))
     bad = [(name, t) for name, _, t in rows if t.defects]
     for name, t in bad:
         for outcome, example in t.examples.items():
