@@ -7,7 +7,8 @@ command line, the explorers, file output) are written out here.
 
 >>> groups = {t.group for t in all_targets()}
 >>> sorted(groups)  # doctest: +NORMALIZE_WHITESPACE
-['cli', 'explorers', 'files', 'geometry', 'kernels', 'mechanics', 'scenes', 'screws', 'simulate']
+['algorithms', 'cli', 'explorers', 'files', 'geometry', 'kernels', 'mechanics', 'scenes', 'screws',
+ 'simulate']
 """
 from __future__ import annotations
 
