@@ -196,6 +196,9 @@ def batch_shape(**arrays) -> tuple[int, ...]:
     planargeo.errors.ShapeError: the batch shapes do not broadcast: p (2,), q (4,)
     """
     shapes = {k: np.shape(a)[:np.ndim(a) - nd] for k, (a, nd) in arrays.items()}
+    first = next(iter(shapes.values()))
+    if all(s == first for s in shapes.values()):     # the common case: nothing to broadcast
+        return first
     try:
         return np.broadcast_shapes(*shapes.values())
     except ValueError:
@@ -222,6 +225,8 @@ def check_overflow(out, what: str, culprits: str, ok=None):
     """
     for o in (out if isinstance(out, tuple) else (out,)):
         bad = ~np.isfinite(o)
+        if not bad.any():
+            continue
         if ok is not None:
             bad &= ~np.asarray(ok, bool)
         if np.any(bad):
@@ -267,7 +272,7 @@ def rescaled(fn, args, degrees, core, out_core: int, what: str, culprits: str):
     """
     with np.errstate(all="ignore"):
         out = fn(*args)
-    if all(np.all(np.isfinite(o)) for o in (out if isinstance(out, tuple) else (out,))):
+    if np.isfinite(out).all() if not isinstance(out, tuple) else all(np.isfinite(o).all() for o in out):
         return out
     scaled, total = [], 0
     for a, c, d in zip(args, core, degrees):

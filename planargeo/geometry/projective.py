@@ -124,6 +124,9 @@ def _fit(a: np.ndarray, core: int = 1, tiny: float = _TINY, huge: float = _HUGE)
     Scaling by ``2^-e`` is exact, so a homogeneous vector keeps its meaning and its digits;
     vectors already in range (every ordinary one) are returned unchanged.
     """
+    if a.ndim == core == 1:                   # one vector: plain floats are faster
+        m = max(map(abs, a.tolist()), default=0.0)
+        return a if tiny < m < huge or m == 0 or m != m else np.ldexp(a, -math.frexp(m)[1])
     m = np.abs(a).max(axis=tuple(range(-core, 0)), keepdims=True)
     ok = ((m > tiny) & (m < huge)) | (m == 0)
     if np.all(ok):
@@ -137,6 +140,11 @@ def _fit_line(l: np.ndarray) -> np.ndarray:
     Exact, so distances and directions keep every digit; ``tz`` overflows to ``inf`` only for a
     line farther from the origin than double precision reaches.
     """
+    if l.ndim == 1:                           # one line: plain floats are faster
+        fx, fy, tz = l.tolist()
+        m = max(abs(fx), abs(fy)) or abs(tz)
+        if _TINY < m < _HUGE or m == 0:
+            return l
     f = np.maximum(np.abs(l[..., 0]), np.abs(l[..., 1]))
     m = np.where(f != 0, f, np.abs(l[..., 2]))[..., None]
     if np.all(((m > _TINY) & (m < _HUGE)) | (m == 0)):
@@ -146,6 +154,8 @@ def _fit_line(l: np.ndarray) -> np.ndarray:
 
 
 def _refuse_zero(x: np.ndarray, name: str, what: str) -> None:
+    if x.ndim == 1 and any(x.tolist()):      # one vector, not zero: the common case, quickly
+        return
     zero = np.all(x == 0, axis=-1)
     if np.any(zero):
         raise DegenerateGeometryError(f"{name} is the zero vector{_first_index(zero)}, which is no {what}")
