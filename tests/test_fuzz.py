@@ -43,6 +43,7 @@ KNOWN = {
     **{f"{name}.set": "widgets: TraitError out of set() for None / a dict / a NaN checkbox"
        for name in ("ProjectiveExplorer", "PercussionExplorer", "ScrewSumExplorer", "ChainExplorer",
                     "CarExplorer", "SliderCrankExplorer", "TreeExplorer")},
+    "Explorer.export_svg": "widgets: a raw OSError (a folder, /dev/full) instead of OutputError (issue 16 item 8)",
 }
 
 

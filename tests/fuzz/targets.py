@@ -514,7 +514,15 @@ def explorer_target(cls_name: str) -> Target:
 def explorer_targets() -> list[Target]:
     from planargeo import widgets
 
-    return [explorer_target(n) for n in widgets.EXPLORERS]
+    holder = {}
+
+    def export(path):
+        holder.setdefault("ex", widgets.ScrewSumExplorer(display="agg"))
+        return holder["ex"].export_svg(path)
+
+    return [explorer_target(n) for n in widgets.EXPLORERS] + [
+        Target("Explorer.export_svg", export, _paths().map(lambda p: ((p,), {})), group="explorers",
+               check=_no_stray_temporaries, timeout=30.0, weight=0.3)]
 
 
 def all_targets() -> list[Target]:
