@@ -12,12 +12,14 @@ command line, the explorers, file output) are written out here.
 """
 from __future__ import annotations
 
+import atexit
 import contextlib
 import importlib
 import inspect
 import io
 import itertools
 import math
+import shutil
 import tempfile
 from pathlib import Path
 
@@ -341,6 +343,7 @@ def tmpdir() -> Path:
     global _TMP
     if _TMP is None:
         _TMP = Path(tempfile.mkdtemp(prefix="planargeo-fuzz-"))
+        atexit.register(shutil.rmtree, _TMP, ignore_errors=True)
         (_TMP / "afile").write_text("x")
         (_TMP / "full").mkdir()
         (_TMP / "full" / "mine.txt").write_text("keep")
@@ -406,7 +409,8 @@ def cli_targets() -> list[Target]:
                             ["frobnicate"], ["report", "--set"], ["report", "chain", "--set", "n"],
                             ["bench", "--suite", "/nonexistent"], ["gallery", "--only", "no_such_figure"],
                             ["--version"], ["report", "chain", "--bogus"]])
-    gallery = _paths().map(lambda p: ["gallery", "--out", "" if p is None else p, "--only", "fig1_2"])
+    gallery = _paths().filter(lambda p: isinstance(p, (str, Path))).map(   # never a path relative to the cwd
+        lambda p: ["gallery", "--out", p, "--only", "fig1_2"])
     return [
         Target("planargeo report", cli_main, st.one_of(report, report, report, misc).map(lambda a: ((a,), {})),
                group="cli", check=_cli_check, timeout=20.0),
@@ -517,7 +521,7 @@ def explorer_targets() -> list[Target]:
     holder = {}
 
     def export(path):
-        holder.setdefault("ex", widgets.ScrewSumExplorer(display="agg"))
+        holder.setdefault("ex", widgets.ScrewSumExplorer(display="agg", export_dir=tmpdir()))   # path=None
         return holder["ex"].export_svg(path)
 
     return [explorer_target(n) for n in widgets.EXPLORERS] + [
