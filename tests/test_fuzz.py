@@ -49,10 +49,11 @@ KNOWN = {
 
 @pytest.fixture(scope="module")
 def tallies(tmp_path_factory):
-    out = tmp_path_factory.mktemp("fuzz") / "tallies.json"
+    work = tmp_path_factory.mktemp("fuzz")
+    out = work / "tallies.json"
     env = dict(os.environ, MPLBACKEND="Agg")
     r = subprocess.run([sys.executable, str(RUN), "--per-target", "20", "--derandomize", "--json", str(out)],
-                       capture_output=True, text=True, timeout=900, env=env)
+                       capture_output=True, text=True, timeout=900, env=env, cwd=work)
     assert out.exists(), r.stderr[-3000:]
     return json.loads(out.read_text())
 
