@@ -1,18 +1,26 @@
 # planargeo: two commands do all set-up on a fresh machine.
 #   make lab    create .venv if missing, install planargeo with its extras, start JupyterLab
+#               (on 127.0.0.1 only, with a fresh random token: see LAB_FLAGS)
 #   make test   create/update .venv, install everything the tests need, run the whole suite
+#   make fuzz   at least 10^4 generated calls against the public API, a table of outcomes
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed-stamp
 ROOT_FLAG := $(if $(filter 0,$(shell id -u)),--allow-root,)
 PYTEST_ARGS ?=
+FUZZ_ARGS ?=
+# JupyterLab listens on the loopback interface only and asks for a token: a fresh random one per
+# start (printed in the URL), so no configuration file can switch it off or open the port.
+LAB_FLAGS = --ServerApp.ip=127.0.0.1 --ServerApp.allow_remote_access=False \
+            --IdentityProvider.token=$$($(BIN)/python -c 'import secrets; print(secrets.token_hex(24))')
 
-.PHONY: lab test install gallery bench clean help browser
+.PHONY: lab test fuzz install gallery bench clean help browser
 
 help:
-	@echo "make lab    - set up .venv and start JupyterLab on notebooks/00-tour.ipynb"
+	@echo "make lab    - set up .venv and start JupyterLab on notebooks/00-tour.ipynb (localhost, token)"
 	@echo "make test   - set up .venv and run the whole test suite"
+	@echo "make fuzz   - 10^4+ generated calls with hostile arguments, a table of outcomes"
 	@echo "make gallery- regenerate gallery/*.svg"
 	@echo "make bench  - run the benchmarks and rewrite benchmarks/results"
 
@@ -27,7 +35,7 @@ $(STAMP): pyproject.toml | $(BIN)/python
 install: $(STAMP)
 
 lab: $(STAMP)
-	$(BIN)/jupyter lab $(ROOT_FLAG) notebooks/00-tour.ipynb
+	$(BIN)/jupyter lab $(ROOT_FLAG) $(LAB_FLAGS) notebooks/00-tour.ipynb
 
 # Debian's chromium drives the real-browser test (Playwright's own download does not work here).
 browser:
@@ -39,6 +47,9 @@ browser:
 
 test: $(STAMP) browser
 	MPLBACKEND=Agg $(BIN)/python -m pytest -n 2 --nbmake tests planargeo notebooks $(PYTEST_ARGS)
+
+fuzz: $(STAMP)
+	MPLBACKEND=Agg $(BIN)/python tests/fuzz/run.py --calls 12000 $(FUZZ_ARGS)
 
 gallery: $(STAMP)
 	MPLBACKEND=Agg $(BIN)/planargeo gallery

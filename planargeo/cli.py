@@ -2,7 +2,10 @@
 
 Each subcommand lives in its own module exposing ``add_arguments(parser)`` and
 ``main(args) -> int``; modules are imported only when their command runs, so
-``planargeo --help`` stays fast.
+``planargeo --help`` stays fast.  A :class:`~planargeo.errors.PlanargeoError`
+out of a subcommand (e.g. an :class:`~planargeo.errors.OutputError` for a
+folder that cannot be written) is printed as one line and exits with status 1;
+Ctrl-C exits with status 130 and one line, never a traceback.
 """
 from __future__ import annotations
 
@@ -62,7 +65,16 @@ def main(argv: list[str] | None = None) -> int:
     sub = argparse.ArgumentParser(prog=f"planargeo {name}", description=cmds[name][1])
     mod.add_arguments(sub)
     args = sub.parse_args(argv[1:])
-    return int(mod.main(args) or 0)
+    from planargeo.errors import PlanargeoError
+
+    try:
+        return int(mod.main(args) or 0)
+    except PlanargeoError as exc:
+        print(f"planargeo {name}: error: {(str(exc).splitlines() or [type(exc).__name__])[0]}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        print(f"planargeo {name}: interrupted", file=sys.stderr)
+        return 130
 
 
 if __name__ == "__main__":  # pragma: no cover

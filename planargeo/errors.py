@@ -17,7 +17,8 @@ Hierarchy::
     │   ├── InvalidPolygonError            shapely geometry not a valid area
     │   ├── TopologyError                  parent array not a tree (e.g. a cycle)
     │   ├── SceneError                     scene parameters that cannot be built
-    │   └── NumericOverflowError           finite input whose result does not fit in a float
+    │   ├── NumericOverflowError (OverflowError)  a result beyond double precision's range
+    │   └── SizeLimitError                 a job too big for memory or time (with an opt-in)
     ├── DegenerateGeometryError (ValueError)  e.g. the join of two coincident points
     └── SingularError (numpy.linalg.LinAlgError)  carries ``cond``
         ├── SingularInertiaError           an inertia that cannot be inverted
@@ -38,6 +39,7 @@ __all__ = [
     "TopologyError",
     "SceneError",
     "NumericOverflowError",
+    "SizeLimitError",
     "DegenerateGeometryError",
     "SingularError",
     "SingularInertiaError",
@@ -99,10 +101,19 @@ class SceneError(InputError):
     """Scene parameters describe a mechanism that cannot be built or assembled."""
 
 
-class NumericOverflowError(InputError):
-    """Finite input whose result does not fit in a float (e.g. speeds of 1e160: the dynamics square them).
+class NumericOverflowError(InputError, OverflowError):
+    """Finite arguments whose result lies beyond double precision's range (about 1.8e308).
 
-    Raised instead of returning inf or NaN; the message names the largest input.
+    Raised instead of returning ``inf`` or ``NaN``; the message names the argument(s) too large
+    (or too small).  Where only an intermediate step would overflow, the functions rescale
+    instead and return the finite result.
+    """
+
+
+class SizeLimitError(InputError):
+    """A request too big to serve in memory or time (a model of 10⁷ bodies, 10³⁰⁰ steps).
+
+    The message states the limit and the argument that lifts it for a deliberate big job.
     """
 
 

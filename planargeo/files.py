@@ -13,7 +13,7 @@ import os
 import tempfile
 from pathlib import Path
 
-from planargeo.errors import OutputError
+from planargeo.errors import InputError, OutputError
 
 __all__ = ["atomic_write", "atomic_write_many"]
 
@@ -56,7 +56,8 @@ def atomic_write(path, data) -> Path:
     ------
     OutputError
         If the folder cannot be created or the file cannot be written (full device, no
-        permission, the path is a folder); the previous file, if any, is unchanged.
+        permission, the path is a folder or a device such as ``/dev/full``, which is never
+        replaced); the previous file, if any, is unchanged.
 
     Examples
     --------
@@ -82,20 +83,20 @@ def atomic_write_many(files) -> list[Path]:
 
     Raises
     ------
+    InputError
+        A path that names no file (empty, a NUL byte) or data that is not bytes or str.
     OutputError
-        If any file cannot be staged; then no target has been touched.
+        If any file cannot be staged (see :func:`atomic_write`); then no target has been touched.
     """
     mode = _umask_mode()
     staged: list[tuple[str, Path]] = []
     try:
-        for path, data in files.items():
-            path = Path(path)
-            if isinstance(data, str):
-                data = data.encode("utf-8")
+        for path, data in dict(files).items():
+            path, data = _checked(path, data)
             try:
                 path.parent.mkdir(parents=True, exist_ok=True)
-                if path.is_dir():
-                    raise IsADirectoryError(f"{path} is a folder")
+                if path.exists() and not path.is_file():   # a folder, a device (/dev/full), a pipe
+                    raise IsADirectoryError(0, "it exists and is not a regular file")
                 staged.append((_stage(path, data, mode), path))
             except OSError as e:
                 raise OutputError(f"cannot write {path}: {e.strerror or e}") from e
@@ -107,3 +108,18 @@ def atomic_write_many(files) -> list[Path]:
         for tmp, _ in staged:
             if os.path.exists(tmp):
                 os.unlink(tmp)
+
+
+def _checked(path, data) -> tuple[Path, bytes]:
+    """``(Path(path), bytes)``, or :class:`InputError` naming what is wrong."""
+    if isinstance(data, str):
+        data = data.encode("utf-8")
+    if not isinstance(data, (bytes, bytearray, memoryview)):
+        raise InputError(f"data for {path!r} must be bytes or str, got {type(data).__name__}")
+    try:
+        path = Path(path)
+    except TypeError:
+        raise InputError(f"path must be a str or os.PathLike, got {path!r}") from None
+    if "\0" in str(path) or not path.name:
+        raise InputError(f"path must name a file, got {str(path)!r}")
+    return path, bytes(data)

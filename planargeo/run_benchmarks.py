@@ -4,7 +4,9 @@ The suite (``benchmarks/`` beside the package in a source checkout, or ``--suite
 of the installed package: this command only finds it and runs ``benchmarks/run.py`` in a fresh
 process.  Results go to ``--out`` (default: a new temporary folder, printed at the end), never
 to the committed ``benchmarks/results``, ``benchmarks/RESULTS.md`` or ``gallery/`` files:
-only ``make bench`` rewrites those.
+only ``make bench`` rewrites those.  An ``--out`` folder must be new, empty or an earlier
+result (it holds ``RESULTS.md``); a folder of other files is refused unless ``--force``, so a
+run never overwrites files it did not write.
 """
 from __future__ import annotations
 
@@ -14,9 +16,9 @@ import sys
 import tempfile
 from pathlib import Path
 
-from planargeo.errors import InputError
+from planargeo.errors import InputError, OutputError
 
-__all__ = ["add_arguments", "main", "find_suite"]
+__all__ = ["add_arguments", "main", "find_suite", "out_folder"]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -28,6 +30,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--only", action="append", default=None,
                         help="run only this group (repeatable): dynamics, breakdown, widgets, integrators, scenes")
     parser.add_argument("--no-charts", action="store_true", help="tables only")
+    parser.add_argument("--force", action="store_true",
+                        help="write into an --out folder that holds files other than an earlier result")
 
 
 def find_suite(suite: str | None = None) -> Path:
@@ -56,13 +60,47 @@ def find_suite(suite: str | None = None) -> Path:
                      "(the benchmarks ship with the source checkout, not the installed package)")
 
 
+def out_folder(out: str | None, force: bool = False) -> Path:
+    """The folder the results go to: ``out`` (checked) or a new temporary folder.
+
+    Raises
+    ------
+    OutputError
+        ``out`` has no existing parent, is a file, or holds files that are not an earlier result
+        (no ``RESULTS.md``) and ``force`` is not given.
+
+    Examples
+    --------
+    >>> out_folder("/dev/full")
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.OutputError: --out /dev/full is not a folder
+    """
+    if out is None:
+        return Path(tempfile.mkdtemp(prefix="planargeo-bench-"))
+    p = Path(out)
+    try:
+        if not p.parent.is_dir():
+            raise OutputError(f"--out {p}: the parent folder {p.parent} does not exist")
+        if p.exists() and not p.is_dir():
+            raise OutputError(f"--out {p} is not a folder")
+        if p.is_dir() and any(p.iterdir()) and not (p / "RESULTS.md").is_file() and not force:
+            raise OutputError(f"--out {p} holds files that are not a benchmark result: choose another folder, "
+                              "or pass --force to write there anyway")
+    except OutputError:
+        raise
+    except OSError as e:
+        raise OutputError(f"--out {p}: {e.strerror or e}") from e
+    return p
+
+
 def main(args: argparse.Namespace) -> int:
     try:
         suite = find_suite(args.suite)
     except InputError as e:
         print(f"planargeo bench: error: {e}", file=sys.stderr)
         return 2
-    out = Path(args.out) if args.out else Path(tempfile.mkdtemp(prefix="planargeo-bench-"))
+    out = out_folder(args.out, args.force)
     cmd = [sys.executable, str(suite / "run.py"), "--out", str(out.resolve()),
            "--summary", str(out.resolve() / "RESULTS.md"), "--gallery", ""]
     if args.quick:

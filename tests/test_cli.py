@@ -77,3 +77,18 @@ def test_check_param_unknown_kind_is_a_package_input_error():
     with pytest.raises(InputError, match=r"^kind must be 'float', 'int' or 'choice', got 'complex'$") as e:
         check_param("x", 1, "complex")
     assert not isinstance(e.value, SceneError)     # a scene-module mistake, not a bad user parameter
+
+
+def test_bench_out_never_overwrites_other_files(tmp_path):
+    """`planargeo bench --out` into a folder of the user's files is refused (one line, status 1) before
+    anything runs; a file, /dev/full or a missing parent too."""
+    (tmp_path / "notes.md").write_text("mine")
+    (tmp_path / "afile").write_text("x")
+    for out, words in ((tmp_path, "not a benchmark result"), (tmp_path / "afile", "not a folder"),
+                       ("/dev/full", "not a folder"), (tmp_path / "no" / "such", "does not exist")):
+        r = subprocess.run([sys.executable, "-m", "planargeo.cli", "bench", "--out", str(out), "--only", "nothing"],
+                           capture_output=True, text=True, timeout=120, cwd=Path(__file__).resolve().parents[1])
+        assert r.returncode == 1 and "Traceback" not in r.stderr, r.stderr
+        assert r.stderr.strip().splitlines() == [r.stderr.strip()] and words in r.stderr, r.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["afile", "notes.md"]
+    assert (tmp_path / "notes.md").read_text() == "mine"

@@ -307,25 +307,26 @@ def test_large_but_finite_speed_still_reports():
     assert np.isfinite(np.array(obj["quantities"]["qdd"])).all()
 
 
-def test_non_finite_in_process(monkeypatch, capsys):
-    """A scene returning NaN (any scene, any quantity): one line naming the quantity and the parameter."""
-    from planargeo import scenes
-    from planargeo.scenes import SceneResult
-
-    real = scenes.build
-
-    def build(name, **params):
-        res = real(name, **params)
-        q = dict(res.quantities, m_x=float("nan") if params.get("phi") == 1.0 else res.quantities["m_x"])
-        return SceneResult(res.name, res.params, res.model, res.state, q, res.extra)
-
-    monkeypatch.setattr(scenes, "build", build)
+def test_non_finite_in_process(capsys):
+    """The tree spun at 1e300 (issue 16.4: inf/NaN quantities): one line naming the quantities and the
+    parameter that did it (mass=2.0, given too, is fine on its own and not named)."""
     p = argparse.ArgumentParser()
     report.add_arguments(p)
     for fmt in (["--json"], []):
-        code = report.main(p.parse_args(["two-body", "--set", "phi=1.0", "--set", "m=2.0", *fmt]))
+        code = report.main(p.parse_args(["tree", "--set", "speed=1e300", "--set", "mass=2.0", *fmt]))
         out = capsys.readouterr()
         assert code == 1 and out.out == ""
-        assert out.err.splitlines() == ["planargeo report: error: scene 'two-body' gives non-finite results (m_x) "
-                                        "with phi=1.0 (beyond what double precision can evaluate)"]
-    assert report.main(p.parse_args(["two-body", "--set", "phi=0.5", "--json"])) == 0
+        assert out.err.splitlines() == ["planargeo report: error: scene 'tree' gives non-finite results "
+                                        "(b, qdd, qdd_direct, a, f) with speed=1e+300 (beyond what double "
+                                        "precision can evaluate)"]
+    assert report.main(p.parse_args(["tree", "--set", "speed=2.0", "--json"])) == 0
+
+def test_a_size_past_the_limit_fails_fast_and_allow_big_lifts_it():
+    """`planargeo report chain --set n=1000000` was still running after 30 s (issue 16.7)."""
+    r = cli("chain", "--set", "n=1000000")
+    assert r.returncode == 1 and r.stdout == ""
+    assert r.stderr.splitlines() == [
+        "planargeo report: error: n = 1000000 is past the limit of 200 for scene 'chain' (n = 200 takes about "
+        "0.5 s; the cost grows as n³); pass allow_big=True (planargeo report --allow-big) to build it anyway"]
+    obj = report_json("horizontal-chain", "--set", "n=2001", "--allow-big")
+    assert obj["params"]["n"] == 2001 and len(obj["state"]["q"]) == 2001

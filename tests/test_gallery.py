@@ -44,7 +44,7 @@ def test_repository_gallery_is_current():
 def test_two_runs_identical_bytes(tmp_path, small_registry):
     a = gallery.generate(tmp_path / "a")
     b = gallery.generate(tmp_path / "b")
-    assert a.keys() == b.keys() == {f"{n}.svg" for n in SUBSET} | {"README.md"}
+    assert a.keys() == b.keys() == {f"{n}.svg" for n in SUBSET} | {"README.md", gallery.MANIFEST}
     for k in a:
         assert a[k] == b[k], k
         assert (tmp_path / "a" / k).read_bytes() == a[k]
@@ -65,17 +65,17 @@ def test_check_reports_stale_missing_extra(tmp_path, small_registry, capsys):
     assert gallery.main(_args(out=str(out), check=True)) == 1
     err = capsys.readouterr().err
     assert "stale: fig4_3.svg" in err and "missing: fig5_6.svg" in err and "extra: old.svg" in err
-    # regenerating repairs everything and removes the extra file
+    # regenerating repairs everything but keeps old.svg, which the gallery did not write
     assert gallery.main(_args(out=str(out))) == 0
-    assert gallery.check(out) == []
-    assert not (out / "old.svg").exists()
+    assert gallery.check(out) == ["extra: old.svg"]
+    assert (out / "old.svg").read_text() == "<svg/>"
 
 
 def test_no_temporary_files_left(tmp_path, small_registry):
     out = tmp_path / "g"
     gallery.generate(out)
     assert sorted(p.name for p in out.iterdir()) == sorted(
-        [f"{n}.svg" for n in SUBSET] + ["README.md"])
+        [f"{n}.svg" for n in SUBSET] + ["README.md", gallery.MANIFEST])
 
 
 def test_readme_indexes_every_figure_with_caption(tmp_path, small_registry):
@@ -156,3 +156,111 @@ def test_load_all_fails_loudly_on_a_broken_module(monkeypatch):
     monkeypatch.setattr(figures, "MODULES", figures.MODULES + ("no_such_chapter",))
     with pytest.raises(ModuleNotFoundError, match="no_such_chapter"):
         figures.load_all()
+
+
+# --------------------------------------------------------------------------- never lose a user's file (issue 16.1, 16.8)
+def _cli(*args, limit=None):
+    """``planargeo gallery ARGS`` in a fresh process, optionally under a file-size limit (RLIMIT_FSIZE)."""
+    import subprocess
+    import sys
+
+    pre = ("import resource, signal; signal.signal(signal.SIGXFSZ, signal.SIG_IGN); "
+           f"resource.setrlimit(resource.RLIMIT_FSIZE, ({limit}, {limit})); ") if limit else ""
+    code = pre + f"import sys; from planargeo.cli import main; sys.exit(main({['gallery', *args]!r}))"
+    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+
+
+def _one_line_error(r, *words):
+    assert r.returncode == 1, (r.returncode, r.stderr)
+    assert "Traceback" not in r.stderr
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("planargeo gallery: error: "), r.stderr
+    for w in words:
+        assert w in lines[0], (w, lines[0])
+
+
+def test_foreign_folder_is_refused_and_untouched(tmp_path, small_registry, capsys):
+    """A folder holding my.svg and README.md is not the gallery's: nothing is deleted or overwritten."""
+    from planargeo.errors import OutputError
+
+    (tmp_path / "my.svg").write_text("<svg>mine</svg>")
+    (tmp_path / "README.md").write_text("my notes")
+    with pytest.raises(OutputError, match="--force"):
+        gallery.generate(tmp_path)
+    from planargeo.cli import main
+
+    assert main(["gallery", "--out", str(tmp_path)]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "README.md" in err[0] and "did not write" in err[0]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["README.md", "my.svg"]
+    assert (tmp_path / "README.md").read_text() == "my notes"
+    # a folder with other files only (no clash) is refused too: it is not empty and has no manifest
+    (tmp_path / "README.md").unlink()
+    with pytest.raises(OutputError, match="not empty"):
+        gallery.generate(tmp_path)
+    # --force writes the gallery there; it still deletes nothing it did not write
+    (tmp_path / "README.md").write_text("my notes")
+    assert gallery.main(_args(out=str(tmp_path), force=True)) == 0
+    assert (tmp_path / "my.svg").read_text() == "<svg>mine</svg>"
+    assert (tmp_path / "README.md").read_text().startswith("# planargeo gallery")
+    gallery.generate(tmp_path)       # now the gallery's folder: no --force needed
+    assert (tmp_path / "my.svg").read_text() == "<svg>mine</svg>"
+
+
+def test_only_its_own_stale_files_are_deleted(tmp_path, small_registry):
+    """A figure the gallery wrote and no longer renders goes; a file of the user's of the same kind stays."""
+    out = tmp_path / "g"
+    gallery.generate(out)
+    (out / "user.svg").write_text("<svg/>")
+    gallery.generate(out, only=["fig4_3"])                # --only keeps the manifest's other entries
+    assert (out / gallery.MANIFEST).read_text().splitlines()[1:] == ["README.md", "fig4_3.svg", "fig5_6.svg"]
+    small_registry.pop("fig5_6")                          # the registry drops a figure
+    gallery.generate(out)
+    assert not (out / "fig5_6.svg").exists()
+    assert (out / "user.svg").read_text() == "<svg/>"
+    # a user's file named like a new figure is not overwritten without --force
+    (out / "fig5_6.svg").write_text("<svg>user</svg>")
+    small_registry["fig5_6"] = load_all()["fig5_6"]
+    from planargeo.errors import OutputError
+
+    with pytest.raises(OutputError, match="fig5_6.svg"):
+        gallery.generate(out)
+    assert (out / "fig5_6.svg").read_text() == "<svg>user</svg>"
+
+
+def test_files_get_normal_permissions(tmp_path, small_registry):
+    import os
+
+    mask = os.umask(0o022)
+    try:
+        gallery.generate(tmp_path / "g")
+    finally:
+        os.umask(mask)
+    modes = {p.name: p.stat().st_mode & 0o777 for p in (tmp_path / "g").iterdir()}
+    assert set(modes.values()) == {0o644}, modes
+
+
+def test_out_missing_parent_file_or_device_is_one_line(tmp_path):
+    (tmp_path / "afile").write_text("x")
+    _one_line_error(_cli("--out", str(tmp_path / "no" / "such"), "--only", "fig1_2"), "does not exist")
+    _one_line_error(_cli("--out", str(tmp_path / "afile"), "--only", "fig1_2"), "is a file")
+    _one_line_error(_cli("--out", "/dev/full", "--only", "fig1_2"), "is a file")
+    assert (tmp_path / "afile").read_text() == "x"
+    assert not (tmp_path / "no").exists()
+
+
+def test_full_device_midway_leaves_the_old_gallery_intact(tmp_path):
+    """Under a file-size limit between the two figures' sizes the first one stages and the second fails:
+    neither is replaced (all-or-nothing) and no temporary file is left."""
+    out = tmp_path / "g"
+    assert _cli("--out", str(out), "--only", "fig1_2", "fig4_3").returncode == 0
+    sizes = {n: (out / f"{n}.svg").stat().st_size for n in ("fig1_2", "fig4_3")}
+    assert sizes["fig1_2"] < 18000 < sizes["fig4_3"]
+    for n in sizes:                                     # mark the old files
+        (out / f"{n}.svg").write_text(f"<svg>old {n}</svg>")
+    before = sorted(p.name for p in out.iterdir())
+    r = _cli("--out", str(out), "--only", "fig1_2", "fig4_3", limit=18000)
+    _one_line_error(r, "fig4_3.svg")
+    for n in sizes:
+        assert (out / f"{n}.svg").read_text() == f"<svg>old {n}</svg>"
+    assert sorted(p.name for p in out.iterdir()) == before

@@ -152,3 +152,28 @@ def test_watch_can_be_switched_off(crank):
     assert r.cond is None and r.events == []
     r = simulate_loops(m, q, qd, 0.02, rtol=1e-8)
     assert r.cond.max() < 100 and r.events == []                    # the thesis's crank is regular (cond ≈ 6)
+
+
+# --------------------------------------------------------------------------- issue 16: arguments refused by name
+def test_loop_arguments_are_validated():
+    """Complex q0 lost its imaginary part with a numpy warning; alpha='x' and prescribed=[0] leaked TypeErrors;
+    a Baumgarte rate of 1e300 gave NaN accelerations."""
+    from planargeo.errors import NumericOverflowError, ShapeError
+    from planargeo.simulate.loops import baumgarte
+
+    m = slider_crank_model()
+    q, qd = slider_crank_state()
+    with pytest.raises(InputError, match="q0 must be real"):
+        simulate_loops(m, q + 1j, qd, 0.01)
+    with pytest.raises(ShapeError, match=r"qd0 must have shape \(3,\)"):
+        simulate_loops(m, q, [qd, qd], 0.01)
+    with pytest.raises(InputError, match="alpha must be numeric"):
+        simulate_loops(m, q, qd, 0.01, alpha="x")
+    with pytest.raises(InputError, match="prescribed must be a dict"):
+        simulate_loops(m, q, qd, 0.01, prescribed=[0])
+    with pytest.raises(InputError, match="tol must be a non-negative number"):
+        project_state(m, q, qd, tol=-1.0)
+    with pytest.raises(InputError, match="fixed must be indices into q"):
+        project_state(m, q, qd, fixed=[7])
+    with pytest.raises(NumericOverflowError, match="baumgarte"):
+        baumgarte(m, beta=1e300)(0.0, q + [0.0, 1e-3, 0.0], qd, np.zeros(3))

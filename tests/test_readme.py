@@ -92,3 +92,73 @@ def test_first_look_values_against_hand_computations():
     assert axis.incidence(ns["pg"].Point.from_xy(1.25, 0.0)) == pytest.approx(0.0, abs=1e-14)
     assert axis.incidence(ns["pg"].Point.from_xy(1.25, 7.0)) == pytest.approx(0.0, abs=1e-13)
     assert abs(axis.incidence(ns["pg"].Point.from_xy(1.0, 0.0))) > 0.1
+
+
+# --------------------------------------------------------------------------- make lab (issue 16: servers)
+def _listening_addresses(port: int) -> set[str]:
+    """Local addresses (hex, as in /proc/net/tcp*) of the sockets listening on ``port``."""
+    out = set()
+    for table in ("/proc/net/tcp", "/proc/net/tcp6"):
+        try:
+            rows = Path(table).read_text().splitlines()[1:]
+        except OSError:
+            continue
+        for row in rows:
+            local, state = row.split()[1], row.split()[3]
+            addr, p = local.rsplit(":", 1)
+            if int(p, 16) == port and state == "0A":      # 0A: LISTEN
+                out.add(addr)
+    return out
+
+
+@pytest.mark.slow
+def test_make_lab_listens_on_localhost_only_with_a_token(tmp_path):
+    """The README's promise: `make lab` serves on 127.0.0.1 only and refuses requests without the token.
+
+    The command is the one `make -n lab` prints (with a free port and no browser added)."""
+    import json
+    import os
+    import socket
+    import subprocess
+    import sys
+    import time
+    import urllib.error
+    import urllib.request
+
+    root = README.parent
+    assert "127.0.0.1" in README.read_text() and "token" in README.read_text()
+    dry = subprocess.run(["make", "-n", "lab", f"BIN={Path(sys.executable).parent}", "STAMP=Makefile"],
+                         cwd=root, capture_output=True, text=True, timeout=60)
+    line = next(x for x in dry.stdout.splitlines() if " lab " in x and "jupyter" in x)
+    assert "--ServerApp.ip=127.0.0.1" in line and "--IdentityProvider.token=" in line
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    env = dict(os.environ, JUPYTER_CONFIG_DIR=str(tmp_path / "cfg"),
+               JUPYTER_RUNTIME_DIR=str(tmp_path / "rt"), JUPYTER_DATA_DIR=str(tmp_path / "data"))
+    log = tmp_path / "lab.log"
+    with log.open("w") as out:
+        proc = subprocess.Popen(["bash", "-c", f"exec {line} --ServerApp.port={port} --ServerApp.port_retries=0 "
+                                               "--no-browser"], cwd=root, env=env, stdout=out, stderr=out)
+    try:
+        token, deadline = None, time.monotonic() + 120
+        while token is None and time.monotonic() < deadline:      # the server's own record of its token
+            assert proc.poll() is None, log.read_text()
+            for info in (tmp_path / "rt").glob("jpserver-*.json"):
+                try:
+                    data = json.loads(info.read_text())
+                except ValueError:                                   # being written
+                    continue
+                token = data.get("token") if data.get("port") == port else None
+            time.sleep(0.2)
+        assert token and len(token) == 48, log.read_text()
+        url = f"http://127.0.0.1:{port}/api/status"
+        with pytest.raises(urllib.error.HTTPError) as refused:
+            urllib.request.urlopen(url, timeout=10)
+        assert refused.value.code == 403
+        with urllib.request.urlopen(f"{url}?token={token}", timeout=10) as ok:
+            assert ok.status == 200
+        assert _listening_addresses(port) == {"0100007F"}        # 127.0.0.1, and nothing else
+    finally:
+        proc.terminate()
+        proc.wait(timeout=30)

@@ -84,3 +84,53 @@ def test_check_param_conversions():
         check_param("x", -1, nonnegative=True)
     with pytest.raises(InputError, match="^kind must be 'float', 'int' or 'choice', got 'complex'$"):
         check_param("x", 1, "complex")
+
+
+# --------------------------------------------------------------------------- issue 16: beyond double precision, sizes
+@pytest.mark.parametrize("scene, params, was", [
+    ("horizontal-chain", {"lam": 1e300}, "ZeroDivisionError"),     # rho = L / lam: rho² underflows to 0
+    ("car", {"rho": 1e300}, "OverflowError"),
+    ("tree", {"speed": 1e300}, "inf/NaN quantities"),
+    ("slider-crank", {"psidot": 1e200}, "NaN quantities"),
+])
+def test_beyond_double_precision_is_a_named_scene_error(scene, params, was):
+    """Finite parameters the scene cannot evaluate raise SceneRangeError naming them (it was: {was})."""
+    from planargeo.errors import NumericOverflowError
+
+    (k, v), = params.items()
+    with pytest.raises(scenes.SceneRangeError, match=rf"^scene '{scene}' .* with {k}={re.escape(f'{v:g}')} "
+                                                     r"\(beyond what double precision can evaluate\)$") as e:
+        scenes.build(scene, **params, **({"mass": 2.0} if scene == "tree" else {}))   # mass is not named
+    assert isinstance(e.value, NumericOverflowError) and isinstance(e.value, SceneError)
+
+
+def test_sizes_past_the_limit_fail_fast_with_an_opt_in():
+    """scenes.build('chain', n=1e300) hung; now the limit is stated (and lifted with allow_big=True)."""
+    from planargeo.errors import SizeLimitError
+
+    assert scenes.limits("chain") == {"n": 200} and scenes.limits("horizontal-chain") == {"n": 2000}
+    for n in (1e300, 10**7, 201):
+        with pytest.raises(SizeLimitError, match=r"past the limit of 200 for scene 'chain'.*allow_big=True"):
+            scenes.build("chain", n=n)
+    with pytest.raises(SceneError, match="n must be a positive integer"):
+        scenes.build("chain", n=2.5, allow_big=True)
+    r = scenes.build("horizontal-chain", n=2001, allow_big=True)
+    assert r.params["n"] == 2001 and len(r.state["q"]) == 2001
+    # the closed form of the module docstring: d/L = (λ² + 12) / (2 (λ² + 8)) = 2/3 at λ = 2, for any n
+    assert r.quantities["d_over_L"] == pytest.approx(2 / 3, rel=1e-12)
+
+
+def test_integer_parameters_are_recorded_as_integers():
+    """horizontal-chain accepted n=3.0 and reported n: 3.0."""
+    r = scenes.build("horizontal-chain", n=3.0)
+    assert r.params["n"] == 3 and type(r.params["n"]) is int
+    for bad in (True, 2.5, "3"):
+        with pytest.raises(SceneError, match="n must be a positive integer"):
+            scenes.build("horizontal-chain", n=bad)
+
+
+def test_huge_integers_and_complex_are_refused():
+    with pytest.raises(NonFiniteError, match="beyond double precision"):
+        check_param("m", 10**400)
+    with pytest.raises(SceneError, match="must be real"):
+        check_param("m", 1 + 2j)

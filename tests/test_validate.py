@@ -1,8 +1,12 @@
 """Shared argument validation: every failure is a package exception naming the argument."""
+import warnings
+
 import numpy as np
 import pytest
 
+import planargeo as pg
 from planargeo import errors
+from planargeo.mechanics.contacts import Contact
 from planargeo._validate import (as_array, as_mat3, as_scalar, as_vec3, check_positive,
                                  check_positive_definite)
 
@@ -114,3 +118,26 @@ def test_positive_semidefinite_check():
         check_positive_semidefinite(1e-20 * np.diag([1.0, 1.0, -1.0]), "A")
     m, w = check_positive_semidefinite(np.diag([3.0, 1.0, 2.0]), "A", eig=True)
     np.testing.assert_array_equal(w, [1.0, 2.0, 3.0])
+
+
+# --------------------------------------------------------------------------- issue 16.6: complex, strings, None
+@pytest.mark.parametrize("make", [
+    lambda: as_array(np.array([1.0, 2.0 + 1e-9j]), "q"),
+    lambda: pg.revolute(np.array([1.0, 1j])),
+    lambda: pg.prismatic(np.array([1.0 + 0j, 0.0])),
+    lambda: Contact("pin", 0, point_a=np.array([1.0 + 2j, 0.0])),
+    lambda: pg.Point(np.array([0.0, 0.0, 1.0 + 1j])),
+])
+def test_complex_is_refused_not_truncated(make):
+    """Complex arrays lost their imaginary part with only numpy's ComplexWarning (Point, Contact, joints)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")                    # no ComplexWarning on the way
+        with pytest.raises(errors.InputError, match="must be real, got complex values"):
+            make()
+
+
+@pytest.mark.parametrize("bad", ["1.5", None, [None, 1.0], b"ab"])
+def test_strings_and_none_are_not_numbers(bad):
+    """numpy reads "1.5" as 1.5 and None as NaN; the package says what it got."""
+    with pytest.raises(errors.InputError, match="x must be numeric"):
+        as_array(bad, "x")

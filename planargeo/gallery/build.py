@@ -3,9 +3,20 @@
 Each registered figure (see :mod:`planargeo.gallery.figures`) is rendered to
 ``<out>/<name>.svg`` inside the package's fixed style (fonts, sizes,
 ``svg.hashsalt``, no date metadata), so two runs give identical bytes, and
-``<out>/README.md`` indexes the figures with their captions.  Files are written
-atomically (temporary file, then :func:`os.replace`).  ``--check`` renders into
-a temporary folder and exits 1 listing stale, missing or extra files.
+``<out>/README.md`` indexes the figures with their captions.  ``--check`` renders
+into a temporary folder and exits 1 listing stale, missing or extra files.
+
+A run never loses a file it did not write.  ``<out>/.planargeo-gallery`` (the
+manifest) lists the files the gallery wrote there; a run deletes or overwrites
+only those.  It refuses a non-empty folder without a manifest, and a file of the
+same name as one of its figures that the manifest does not list, unless given
+``--force`` (which overwrites such files but still deletes nothing it did not
+write).  All files of a run are written together by
+:func:`planargeo.files.atomic_write_many` (each staged beside its target, then
+moved in), with the usual permissions, so a failure (a full device, a file-size
+limit) leaves the previous gallery intact.  The folder itself may be created; its
+parent must exist.  Problems raise :class:`~planargeo.errors.OutputError`, which
+``planargeo gallery`` prints as one line (exit status 1).
 
 The README also indexes the benchmark charts that ``planargeo bench`` copies
 into ``<out>/benchmarks/`` (one line each, from :data:`BENCHMARK_CAPTIONS`);
@@ -15,10 +26,12 @@ README against the charts present in the checked folder.
 from __future__ import annotations
 
 import io
-import os
 import sys
 import tempfile
 from pathlib import Path
+
+from planargeo.errors import InputError, OutputError
+from planargeo.files import atomic_write_many
 
 DEFAULT_OUT = Path(__file__).resolve().parents[2] / "gallery"
 
@@ -46,6 +59,9 @@ def add_arguments(parser):
                         help="render to a temporary folder and fail if OUT differs")
     parser.add_argument("--only", nargs="*", default=None, metavar="NAME",
                         help="render only these figures (no README, no extra-file check)")
+    parser.add_argument("--force", action="store_true",
+                        help="write into a folder holding files the gallery did not write, overwriting "
+                             "those with a figure's name (nothing is ever deleted but the gallery's own files)")
 
 
 def render_svg(spec) -> bytes:
@@ -106,24 +122,82 @@ def readme(specs, benchmarks=()) -> str:
     return "\n".join(lines)
 
 
-def _atomic_write(path: Path, data: bytes):
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+#: The manifest: the names of the files the gallery wrote into its folder, one a line.
+MANIFEST = ".planargeo-gallery"
+_MANIFEST_HEAD = "# files written by `planargeo gallery`; it overwrites or deletes only these\n"
+
+
+def _manifest(names) -> bytes:
+    return (_MANIFEST_HEAD + "".join(f"{n}\n" for n in sorted(names))).encode()
+
+
+def _owned(out: Path) -> set[str] | None:
+    """The files the manifest of ``out`` lists (None: ``out`` has no manifest)."""
     try:
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(data)
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
+        text = (out / MANIFEST).read_text(encoding="utf-8")
+    except FileNotFoundError:
+        return None
+    except (OSError, UnicodeError) as e:
+        raise OutputError(f"cannot read the gallery manifest {out / MANIFEST}: {e}") from e
+    return {n for n in text.splitlines()
+            if n and not n.startswith("#") and "/" not in n and n not in (".", "..")} - {MANIFEST}
+
+
+def _claim(out: Path, names, force: bool) -> set[str]:
+    """Check that writing ``names`` into ``out`` loses no file the gallery did not write.
+
+    Returns the files the gallery wrote there before (from the manifest).
+    Raises :class:`OutputError` for a missing parent, a file in the way, or a
+    folder holding other files (unless ``force``).
+    """
+    try:
+        if not out.parent.is_dir():
+            raise OutputError(f"--out {out}: the parent folder {out.parent} does not exist")
+        if out.exists() and not out.is_dir():
+            raise OutputError(f"--out {out} is a file, not a folder")
+        if not out.exists():
+            return set()
+        owned = _owned(out)
+        others = {p.name for p in out.iterdir()} - (owned or set()) - {MANIFEST, "benchmarks"}
+    except OutputError:
         raise
+    except OSError as e:                    # a name too long, no permission to look...
+        raise OutputError(f"--out {out}: {e.strerror or e}") from e
+    clash = sorted(others & set(names))
+    if not force and (clash or (owned is None and others)):
+        what = f"files the gallery did not write ({', '.join(clash[:3])}{', ...' if len(clash) > 3 else ''})" \
+            if clash else f"no {MANIFEST} manifest and is not empty"
+        raise OutputError(f"--out {out} holds {what}: choose another folder, or pass --force to write "
+                          "there anyway (nothing but the gallery's own files is ever deleted)")
+    return owned or set()
 
 
-def generate(out, only=None, *, benchmarks=None) -> dict[str, bytes]:
+def generate(out, only=None, *, benchmarks=None, force: bool = False) -> dict[str, bytes]:
     """Render the gallery into ``out``; return ``{filename: bytes}`` written.
 
-    ``benchmarks``: the folder whose benchmark charts the README indexes
-    (default ``out/benchmarks``).
+    Parameters
+    ----------
+    out : str or os.PathLike
+        The gallery folder (created if missing; its parent must exist).
+    only : list of str, optional
+        Render only these figures (no README; no stale file removed).
+    benchmarks : path, optional
+        The folder whose benchmark charts the README indexes (default ``out/benchmarks``).
+    force : bool
+        Write into a folder holding files the gallery did not write (module docstring).
+
+    Returns
+    -------
+    dict
+        ``{filename: bytes}`` of every file written, the manifest included.
+
+    Raises
+    ------
+    InputError
+        ``only`` names an unknown figure.
+    OutputError
+        ``out`` cannot be written, or holds files the gallery did not write
+        (without ``force``); nothing has been changed then.
     """
     from planargeo.gallery.figures import load_all
 
@@ -131,27 +205,27 @@ def generate(out, only=None, *, benchmarks=None) -> dict[str, bytes]:
     if only:
         unknown = sorted(set(only) - set(specs))
         if unknown:
-            from planargeo.errors import InputError
-
             raise InputError(f"only names unknown figures: {unknown}")
         specs = {k: v for k, v in specs.items() if k in only}
     out = Path(out)
+    names = [f"{name}.svg" for name in specs] + ([] if only else ["README.md"])
+    previous = _claim(out, names, force)
     files = {f"{name}.svg": render_svg(spec) for name, spec in specs.items()}
     if not only:
         bench = out / "benchmarks" if benchmarks is None else Path(benchmarks)
         files["README.md"] = readme(specs, benchmark_charts(bench)).encode()
-    for fname, data in files.items():
-        _atomic_write(out / fname, data)
-    if not only:  # a full run also removes figures no longer in the registry
-        for fname in _managed(out) - set(files):
-            (out / fname).unlink()
+    files[MANIFEST] = _manifest(set(files) | (previous if only else set()))
+    atomic_write_many({out / fname: data for fname, data in files.items()})
+    if not only:  # a full run also removes the figures it wrote before that are no longer in the registry
+        for fname in previous - set(files):
+            (out / fname).unlink(missing_ok=True)
     return files
 
 
 def _managed(folder: Path) -> set[str]:
     if not folder.is_dir():
         return set()
-    return {p.name for p in folder.iterdir() if p.suffix == ".svg" or p.name == "README.md"}
+    return {p.name for p in folder.iterdir() if p.suffix == ".svg" or p.name in ("README.md", MANIFEST)}
 
 
 def check(out) -> list[str]:
@@ -182,6 +256,6 @@ def main(args) -> int:
             return 1
         print(f"gallery in {args.out} is up to date")
         return 0
-    files = generate(args.out, args.only)
+    files = generate(args.out, args.only, force=args.force)
     print(f"wrote {len(files)} files to {args.out}")
     return 0

@@ -10,7 +10,15 @@ points, yet maps every real point (acceleration) to a real line (force).
 Every function broadcasts over leading dimensions unless said otherwise
 (matrices ``(..., 3, 3)``, vectors ``(..., 3)``).  Tolerances appear only
 where a decision is genuinely numerical (rank, "is a parabola", "is on the
-conic"); they are relative and exposed as ``rtol`` arguments.
+conic"); they are relative and exposed as ``rtol`` arguments (finite, >= 0).
+
+Finite in, finite out: the conic's matrix and the points and lines are scaled
+by powers of two where a product could overflow (exact: the geometry does not
+depend on the scale, and where the result's scale matters, as for
+:func:`polar` and :func:`pole` of an inertia, it is scaled back exactly); a
+result beyond double precision raises
+:class:`~planargeo.errors.NumericOverflowError`, and a construction that a
+degenerate conic leaves undefined raises :class:`DegenerateGeometryError`.
 """
 from __future__ import annotations
 
@@ -18,9 +26,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from planargeo._validate import as_array, as_mat3, as_vec3, as_xy, check_positive, check_symmetric
+from planargeo._validate import (as_array, as_mat3, as_vec3, as_xy, batch_shape, check_overflow, check_positive,
+                                 check_symmetric, check_tolerance, overflow_checked, rescaled)
 from planargeo.errors import DegenerateGeometryError, InputError, ShapeError
-from planargeo.geometry.projective import T_STD, _cross, _first_index
+from planargeo.geometry.projective import T_STD, _cross, _first_index, _fit, _refuse_zero
 
 __all__ = [
     "polar", "pole", "conic_residual", "is_on_conic", "ConicType", "classify", "centre",
@@ -58,9 +67,15 @@ def _cond(M) -> np.ndarray:
     return out
 
 
+def _fitq(x, core: int = 1) -> np.ndarray:
+    """:func:`~planargeo.geometry.projective._fit` for quadratic forms: entries within ``(1e-90, 1e90)``."""
+    return _fit(x, core, 1e-90, 1e90)
+
+
 def _check_invertible(M, name: str, what: str, rtol: float) -> None:
-    cond = _cond(M)
-    bad = ~(cond * rtol < 1.0)
+    cond = _cond(_fitq(M, 2))
+    with np.errstate(invalid="ignore"):        # inf · 0: singular whatever the tolerance
+        bad = ~(cond * check_tolerance(rtol) < 1.0)
     if np.any(bad):
         c = float(np.max(np.where(bad, cond, 0.0)))
         err = DegenerateGeometryError(f"{name} is {what}{_first_index(bad)} "
@@ -71,8 +86,9 @@ def _check_invertible(M, name: str, what: str, rtol: float) -> None:
 
 def _unit(v):
     """Scale homogeneous vectors to unit length (zero and NaN rows pass through silently)."""
-    n = np.linalg.norm(v / np.maximum(np.abs(v).max(axis=-1, keepdims=True), np.finfo(float).tiny),
-                       axis=-1) * np.abs(v).max(axis=-1)
+    with np.errstate(invalid="ignore"):
+        v = _fit(v, tiny=0.5, huge=1.0)            # exact: largest component in [0.5, 1), so |v| cannot overflow
+    n = np.linalg.norm(v, axis=-1)
     out = np.full(v.shape, np.nan)
     np.divide(v, n[..., None], out=out, where=(n != 0)[..., None])
     return np.where(np.isnan(n)[..., None] | (n != 0)[..., None], out, v)
@@ -85,7 +101,8 @@ def _npoint(p):
     w = p[..., 2]
     den = np.where(w != 0, w, n)
     out = np.full(p.shape, np.nan)
-    np.divide(p, den[..., None], out=out, where=(den != 0)[..., None])
+    with np.errstate(over="ignore"):           # a point beyond range: inf, for the caller's check_overflow
+        np.divide(p, den[..., None], out=out, where=(den != 0)[..., None])
     return out + 0.0
 
 
@@ -94,7 +111,8 @@ def _nline(l):
     f = np.hypot(l[..., 0], l[..., 1])
     den = np.where(f != 0, f, np.abs(l[..., 2]))
     out = np.full(l.shape, np.nan)
-    np.divide(l, den[..., None], out=out, where=(den != 0)[..., None])
+    with np.errstate(over="ignore"):
+        np.divide(l, den[..., None], out=out, where=(den != 0)[..., None])
     return out + 0.0
 
 
@@ -119,7 +137,8 @@ def polar(C, p) -> np.ndarray:
     """
     C = _conic(C)
     p = as_vec3(p, "p")
-    return _mv(C, p)
+    batch_shape(C=(C, 2), p=(p, 1))
+    return rescaled(_mv, (C, p), (1, 1), (2, 1), 1, "polar(C, p)", "C or p")
 
 
 def pole(C, l, rtol: float = 1e-13) -> np.ndarray:
@@ -142,9 +161,14 @@ def pole(C, l, rtol: float = 1e-13) -> np.ndarray:
     """
     C = _conic(C)
     l = as_vec3(l, "l")
+    batch_shape(C=(C, 2), l=(l, 1))
     _check_invertible(C, "C", "singular (a degenerate conic), so poles are not unique", rtol)
-    C, l = np.broadcast_arrays(C, l[..., None, :])
-    return np.linalg.solve(C, l[..., 0, :][..., None])[..., 0]
+
+    def solve(C, l):
+        C, l = np.broadcast_arrays(C, l[..., None, :])
+        return np.linalg.solve(C, l[..., 0, :][..., None])[..., 0]
+
+    return rescaled(solve, (C, l), (-1, 1), (2, 1), 1, "pole(C, l)", "l, or C⁻¹,")
 
 
 def conic_residual(C, p) -> np.ndarray:
@@ -157,7 +181,8 @@ def conic_residual(C, p) -> np.ndarray:
     """
     C = _conic(C)
     p = as_vec3(p, "p")
-    return _quad(p, C, p)
+    batch_shape(C=(C, 2), p=(p, 1))
+    return rescaled(lambda C, p: _quad(p, C, p), (C, p), (1, 2), (2, 1), 0, "conic_residual(C, p)", "C or p")
 
 
 def is_on_conic(C, p, rtol: float = 1e-9) -> np.ndarray:
@@ -171,10 +196,12 @@ def is_on_conic(C, p, rtol: float = 1e-9) -> np.ndarray:
     >>> bool(is_on_conic(conic_circle([1.0, 1.0], 1.0), [1.0, -2.0, 1.0]))   # (2, 1)
     True
     """
-    C = _conic(C)
+    C = _fitq(_conic(C), 2)                  # the test does not depend on C's scale
     p = _unit(as_vec3(p, "p"))
+    batch_shape(C=(C, 2), p=(p, 1))
     r = np.abs(_quad(p, C, p))
-    return r <= rtol * np.linalg.norm(C, axis=(-2, -1))
+    with np.errstate(over="ignore"):        # a tolerance near 1.8e308 accepts everything
+        return r <= check_tolerance(rtol) * np.linalg.norm(C, axis=(-2, -1))
 
 
 # --------------------------------------------------------------------------- classification
@@ -268,7 +295,8 @@ def classify(C, rtol: float = 1e-10):
     >>> str(classify(conic_parabola([0.0, 0.0], 1.0)))
     'real parabola'
     """
-    C = _conic(C)
+    C = _fitq(_conic(C), 2)                  # the kind does not depend on C's scale
+    rtol = check_tolerance(rtol)
     S = T_STD @ C @ T_STD
     if S.ndim == 2:
         return _classify1(S, rtol)
@@ -303,13 +331,13 @@ def centre(C) -> np.ndarray:
     >>> centre(conic_parabola([0.0, 0.0], 1.0))    # axis along y: ideal point
     array([1., 0., 0.])
     """
-    C = _conic(C)
-    z = _cross(C[..., 0, :], C[..., 1, :])
+    C = _fitq(_conic(C), 2)                  # the centre does not depend on C's scale
+    z = _cross(_fitq(C[..., 0, :]), _fitq(C[..., 1, :]))
     bad = np.all(z == 0, axis=-1)
     if np.any(bad):
         raise DegenerateGeometryError(f"C has no unique centre{_first_index(bad)} "
                                       "(a double line or a pair of parallel lines)")
-    return _npoint(z)
+    return check_overflow(_npoint(z), "centre(C)", "the centre's coordinates")
 
 
 # --------------------------------------------------------------------------- intersections, tangents
@@ -322,6 +350,10 @@ def _intersections(C, l, rtol):
     a = _unit(_cross(l, eye[(k + 1) % 3]))
     b = _unit(_cross(l, eye[(k + 2) % 3]))
     A, B, G = _quad(a, C, a), _quad(a, C, b), _quad(b, C, b)
+    on = np.maximum(np.maximum(np.abs(A), np.abs(B)), np.abs(G)) <= rtol * np.linalg.norm(C, axis=(-2, -1))
+    if np.any(on):
+        raise DegenerateGeometryError(f"the line lies on the degenerate conic C{_first_index(on)}: "
+                                      "every one of its points is an intersection")
     D = B * B - A * G
     scale = B * B + np.abs(A * G)
     D = np.where((D < 0) & (D >= -rtol * scale), 0.0, D)
@@ -360,10 +392,12 @@ def line_conic_intersections(C, l, rtol: float = 1e-9):
     >>> bool(real), sorted(X[:, 1].round(12).tolist())    # x axis meets the unit circle at x = ±1
     (True, [-1.0, 1.0])
     """
-    C = _conic(C)
+    C = _fitq(_conic(C), 2)
     l = as_vec3(l, "l")
-    X, real = _intersections(C, l, rtol)
-    return _npoint(X), real
+    batch_shape(C=(C, 2), l=(l, 1))
+    _refuse_zero(l, "l", "line")
+    X, real = _intersections(C, _unit(l), check_tolerance(rtol))
+    return check_overflow(_npoint(X), "line_conic_intersections(C, l)", "the points'", ok=~real[..., None, None]), real
 
 
 def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
@@ -400,19 +434,27 @@ def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
     """
     if on_interior not in ("raise", "nan"):
         raise InputError(f"on_interior must be 'raise' or 'nan', got {on_interior!r}")
-    C = _conic(C)
-    p = as_vec3(p, "p")
+    C = _fitq(_conic(C), 2)                  # tangents and contacts do not depend on the scales
+    p = _fitq(as_vec3(p, "p"))
+    batch_shape(C=(C, 2), p=(p, 1))
+    _refuse_zero(p, "p", "point")
     L = _mv(C, p)
     bad = np.all(L == 0, axis=-1)
     if np.any(bad):
         raise DegenerateGeometryError(f"p is the vertex of the degenerate conic C{_first_index(bad)}: "
                                       "its polar is undefined")
-    X, real = _intersections(C, _unit(L), rtol)
+    X, real = _intersections(C, _unit(L), check_tolerance(rtol))
     if on_interior == "raise" and not np.all(real):
         raise InputError(f"p has no real tangents to C{_first_index(~real)}: it lies inside the conic "
                          "(or C is imaginary); use on_interior='nan' to get NaN instead")
     T = _mv(C[..., None, :, :], X)
-    return _nline(T), _npoint(X)
+    vertex = real[..., None] & np.all(T == 0, axis=-1)
+    if np.any(vertex):
+        raise DegenerateGeometryError(f"a contact point is the vertex of the degenerate conic C"
+                                      f"{_first_index(np.any(vertex, axis=-1))}, where the tangent is undefined")
+    nan = ~real[..., None, None]
+    return (check_overflow(_nline(T), "tangents_from_point(C, p)", "the tangents' distance", ok=nan),
+            check_overflow(_npoint(X), "tangents_from_point(C, p)", "the contact points'", ok=nan))
 
 
 @dataclass(frozen=True)
@@ -512,8 +554,8 @@ def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 
     >>> K.polar                                  # x = 1/2, as C p
     array([ 0. , -1. , -0.5])
     """
-    C = _conic(C)
-    p = as_vec3(p, "p")
+    C = _fitq(_conic(C), 2)
+    p = _fitq(as_vec3(p, "p"))
     T, X = tangents_from_point(C, p, on_interior=on_interior, rtol=rtol)
     Xu = _unit(X)
     Lj = _cross(Xu[..., 0, :], Xu[..., 1, :])
@@ -523,7 +565,8 @@ def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 
     s = np.einsum("...i,...i->...", Lj, _mv(C, p))
     Lj = np.where((s < 0)[..., None], -Lj, Lj)
     P = np.broadcast_to(p, Lj.shape)
-    return ExteriorConstruction(_npoint(P), T, X, _nline(Lj))
+    return _checked(ExteriorConstruction(_npoint(P), T, X, _nline(Lj)), "polar_construction_exterior",
+                    on_interior == "nan")
 
 
 def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: float = 1e-9) -> InteriorConstruction:
@@ -561,8 +604,10 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
     """
     if on_miss not in ("raise", "nan"):
         raise InputError(f"on_miss must be 'raise' or 'nan', got {on_miss!r}")
-    C = _conic(C)
-    p = as_vec3(p, "p")
+    C = _fitq(_conic(C), 2)
+    p = _fitq(as_vec3(p, "p"))
+    rtol = check_tolerance(rtol)
+    batch_shape(C=(C, 2), p=(p, 1))
     if lines is None:
         k = np.argmax(np.abs(p), axis=-1)
         eye = np.eye(3)
@@ -570,7 +615,8 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
         if np.any(np.all(p == 0, axis=-1)):
             raise DegenerateGeometryError("p is the zero vector, which is no point")
     else:
-        lines = as_array(lines, "lines", (2, 3))
+        lines = _fitq(as_array(lines, "lines", (2, 3)))
+        batch_shape(p=(p, 1), lines=(lines, 2))
         inc = np.abs(np.einsum("...i,...ki->...k", p, lines))
         scale = np.linalg.norm(lines, axis=-1) * np.linalg.norm(p, axis=-1)[..., None]
         off = inc > rtol * scale
@@ -584,7 +630,12 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
         i = int(np.argwhere(~distinct)[0][-1])
         raise InputError(f"lines[{i}] does not cut C in two distinct real points "
                          "(p is not interior, or the line is tangent)")
-    T = _nline(_mv(C[..., None, None, :, :], X))
+    CX = _mv(C[..., None, None, :, :], X)
+    vertex = distinct[..., None] & np.all(CX == 0, axis=-1)
+    if np.any(vertex):
+        raise DegenerateGeometryError(f"a chord point is the vertex of the degenerate conic C"
+                                      f"{_first_index(np.any(vertex, axis=(-2, -1)))}, where the tangent is undefined")
+    T = _nline(CX)
     poles = _unit(_cross(_unit(T[..., 0, :]), _unit(T[..., 1, :])))
     polar_ = _cross(poles[..., 0, :], poles[..., 1, :])
     bad = np.all(polar_ == 0, axis=-1) & np.all(distinct, axis=-1)
@@ -593,7 +644,15 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
     s = np.einsum("...i,...i->...", polar_, _mv(C, p))
     polar_ = np.where((s < 0)[..., None], -polar_, polar_)
     P = np.broadcast_to(p, polar_.shape)
-    return InteriorConstruction(_npoint(P), _nline(lines), _npoint(X), T, _npoint(poles), _nline(polar_))
+    return _checked(InteriorConstruction(_npoint(P), _nline(lines), _npoint(X), T, _npoint(poles), _nline(polar_)),
+                    "polar_construction_interior", on_miss == "nan")
+
+
+def _checked(construction, what: str, nan_asked: bool):
+    """The construction, unless an element is not finite (NaN only where ``"nan"`` was asked for)."""
+    for x in vars(construction).values():
+        check_overflow(x, what, "an element's coordinates", ok=np.isnan(x) if nan_asked else None)
+    return construction
 
 
 # --------------------------------------------------------------------------- duality
@@ -620,7 +679,15 @@ def correlation(C, Q, L, rtol: float = 1e-13):
     return pole(C, L, rtol=rtol), polar(C, Q)
 
 
+def _base(Q1, Q2, Q3) -> np.ndarray:
+    """The matrix ``[Q1, Q2, Q3]`` (columns) of three points, broadcast over their batches."""
+    Q = [as_vec3(Q1, "Q1"), as_vec3(Q2, "Q2"), as_vec3(Q3, "Q3")]
+    batch_shape(Q1=(Q[0], 1), Q2=(Q[1], 1), Q3=(Q[2], 1))
+    return np.stack(np.broadcast_arrays(*Q), axis=-1)
+
+
 def _solve_basis(Mcols, v, name: str, rtol: float):
+    batch_shape(**{name: (Mcols, 2), "the decomposed element": (v, 1)})
     _check_invertible(Mcols, name, "singular: the three base elements are dependent (no basis)", rtol)
     Mcols, v = np.broadcast_arrays(Mcols, v[..., None, :])
     return np.linalg.solve(Mcols, v[..., 0, :][..., None])[..., 0]
@@ -640,7 +707,7 @@ def decompose_point(P, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     array([-2., -1.,  3.])
     """
     P = as_vec3(P, "P")
-    Q = np.stack(np.broadcast_arrays(as_vec3(Q1, "Q1"), as_vec3(Q2, "Q2"), as_vec3(Q3, "Q3")), axis=-1)
+    Q = _base(Q1, Q2, Q3)
     return _solve_basis(Q, P, "[Q1, Q2, Q3]", rtol)
 
 
@@ -658,7 +725,7 @@ def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     """
     C = _conic(C)
     L = as_vec3(L, "L")
-    Q = np.stack(np.broadcast_arrays(as_vec3(Q1, "Q1"), as_vec3(Q2, "Q2"), as_vec3(Q3, "Q3")), axis=-1)
+    Q = _base(Q1, Q2, Q3)
     return _solve_basis(C @ Q, L, "[C Q1, C Q2, C Q3]", rtol)
 
 
@@ -710,12 +777,10 @@ def decompose_point_special(C, P, Q1, Q2, Q3) -> np.ndarray:
     """
     C = _conic(C)
     P, Q1, Q2, Q3 = (as_vec3(x, n) for x, n in ((P, "P"), (Q1, "Q1"), (Q2, "Q2"), (Q3, "Q3")))
+    batch_shape(C=(C, 2), P=(P, 1), Q1=(Q1, 1), Q2=(Q2, 1), Q3=(Q3, 1))
     CP = _mv(C, P)
-    return np.stack([
-        np.einsum("...i,...i->...", Q1, CP) / _quad(Q1, C, Q1),
-        np.einsum("...i,...i->...", Q3, CP) / _quad(Q3, C, Q2),
-        np.einsum("...i,...i->...", Q2, CP) / _quad(Q2, C, Q3),
-    ], axis=-1)
+    return _special(np.einsum("...i,...i->...", Q1, CP), np.einsum("...i,...i->...", Q3, CP),
+                    np.einsum("...i,...i->...", Q2, CP), C, Q1, Q2, Q3, "decompose_point_special")
 
 
 def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
@@ -735,9 +800,22 @@ def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
     """
     C = _conic(C)
     L, Q1, Q2, Q3 = (as_vec3(x, n) for x, n in ((L, "L"), (Q1, "Q1"), (Q2, "Q2"), (Q3, "Q3")))
+    batch_shape(C=(C, 2), L=(L, 1), Q1=(Q1, 1), Q2=(Q2, 1), Q3=(Q3, 1))
     dot = lambda a, b: np.einsum("...i,...i->...", a, b)  # noqa: E731
-    return np.stack([dot(Q1, L) / _quad(Q1, C, Q1), dot(Q3, L) / _quad(Q3, C, Q2),
-                     dot(Q2, L) / _quad(Q2, C, Q3)], axis=-1)
+    return _special(dot(Q1, L), dot(Q3, L), dot(Q2, L), C, Q1, Q2, Q3, "decompose_line_special")
+
+
+def _special(n1, n2, n3, C, Q1, Q2, Q3, what: str) -> np.ndarray:
+    """``[n1 / Q1CQ1, n2 / Q3CQ2, n3 / Q2CQ3]`` (5.44-5.46), refusing a base that is not special."""
+    with np.errstate(all="ignore"):
+        den = [_quad(Q1, C, Q1), _quad(Q3, C, Q2), _quad(Q2, C, Q3)]
+        zero = [np.any(d == 0) for d in den]
+        if any(zero):
+            name = ("Q1 C Q1", "Q3 C Q2", "Q2 C Q3")[zero.index(True)]
+            raise DegenerateGeometryError(f"{what}: {name} = 0, so Q1, Q2, Q3 are not a special base of C "
+                                          "(see special_base)")
+        u = np.stack([n1 / den[0], n2 / den[1], n3 / den[2]], axis=-1)
+    return check_overflow(u, what, "the components")
 
 
 # --------------------------------------------------------------------------- drawing support
@@ -768,6 +846,10 @@ def drawable_conic(C) -> np.ndarray:
            [ 0.,  0., -8.]])
     """
     C = _conic(C)
+    return rescaled(_drawable, (C,), (1,), (2,), 2, "drawable_conic(C)", "C")
+
+
+def _drawable(C):
     ev = np.linalg.eigvalsh(C)
     pos = np.all(ev > 0, axis=-1)
     neg = np.all(ev < 0, axis=-1)
@@ -856,9 +938,16 @@ def affine_frame(C, rtol: float = 1e-10) -> AffineFrame:
     array([[3., 0.],
            [0., 1.]])
     """
-    C = _conic(C)
+    C = _fitq(_conic(C), 2)                  # the frame does not depend on C's scale
     if C.shape != (3, 3):
         raise ShapeError(f"C must have shape (3, 3) for affine_frame, got shape {C.shape}")
+    with np.errstate(all="ignore"):
+        frame = _affine_frame(C, check_tolerance(rtol))
+    check_overflow((frame.A, frame.t), "affine_frame(C)", "the conic's size or distance")
+    return frame
+
+
+def _affine_frame(C, rtol):
     ct = _classify1(T_STD @ C @ T_STD, rtol)
     if ct.reality == "degenerate":
         raise DegenerateGeometryError(f"C is a degenerate conic ({ct.kind}): it has no affine frame")
@@ -886,6 +975,7 @@ def affine_frame(C, rtol: float = 1e-10) -> AffineFrame:
     return AffineFrame("hyperbola", V * np.sqrt(np.abs(k / lam)), t)
 
 
+@overflow_checked("A or t")
 def conic_from_affine(kind: str, A, t) -> np.ndarray:
     """The conic image of the unit curve ``kind`` under ``x = A u + t`` (inverse of :func:`affine_frame`).
 
@@ -899,16 +989,16 @@ def conic_from_affine(kind: str, A, t) -> np.ndarray:
            [ 0.,  1.,  0.],
            [ 0.,  0., -1.]])
     """
-    if kind not in _UNIT_STD:
+    if not isinstance(kind, str) or kind not in _UNIT_STD:
         raise InputError(f"kind must be 'ellipse', 'hyperbola' or 'parabola', got {kind!r}")
     A = as_array(A, "A", (2, 2))
     t = as_xy(t, "t")
     _check_invertible(A, "A", "singular", 1e-13)
-    M = np.zeros(np.broadcast_shapes(A.shape[:-2], t.shape[:-1]) + (3, 3))
-    M[..., 0, 0] = 1.0
-    M[..., 1:, 0] = t
-    M[..., 1:, 1:] = A
-    Minv = np.linalg.inv(M)
+    Ainv = np.linalg.inv(A)
+    Minv = np.zeros(batch_shape(A=(A, 2), t=(t, 1)) + (3, 3))     # [[1, 0], [t, A]]⁻¹ = [[1, 0], [-A⁻¹t, A⁻¹]]
+    Minv[..., 0, 0] = 1.0
+    Minv[..., 1:, 0] = -np.einsum("...ij,...j->...i", Ainv, t)
+    Minv[..., 1:, 1:] = Ainv
     S = np.swapaxes(Minv, -1, -2) @ _UNIT_STD[kind] @ Minv
     C = T_STD @ S @ T_STD
     return 0.5 * (C + np.swapaxes(C, -1, -2))
@@ -919,6 +1009,7 @@ def _rot(angle):
     return np.stack([np.stack([c, -s], -1), np.stack([s, c], -1)], -2)
 
 
+@overflow_checked("centre or radius")
 def conic_circle(centre, radius, imaginary: bool = False) -> np.ndarray:
     """Circle ``|x - c|² = r²`` (or the imaginary circle ``|x - c|² = -r²``).
 
@@ -939,6 +1030,8 @@ def conic_circle(centre, radius, imaginary: bool = False) -> np.ndarray:
     """
     c = as_xy(centre, "centre")
     r = check_positive(radius, "radius")
+    if not isinstance(imaginary, (bool, np.bool_)):
+        raise InputError(f"imaginary must be True or False, got {imaginary!r}")
     r2 = np.where(imaginary, -1.0, 1.0) * r * r
     shape = np.broadcast_shapes(c.shape[:-1], r.shape)
     C = np.zeros(shape + (3, 3))
@@ -949,6 +1042,7 @@ def conic_circle(centre, radius, imaginary: bool = False) -> np.ndarray:
     return C
 
 
+@overflow_checked("centre or axes")
 def conic_ellipse(centre, axes, angle=0.0) -> np.ndarray:
     """Ellipse with semi-axes ``axes = (a, b)``, the first turned by ``angle`` from +x.
 
@@ -963,6 +1057,7 @@ def conic_ellipse(centre, axes, angle=0.0) -> np.ndarray:
     return conic_from_affine("ellipse", A, centre)
 
 
+@overflow_checked("centre or axes")
 def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
     """Hyperbola ``x'²/a² - y'²/b² = 1`` in the frame at ``centre`` turned by ``angle``.
 
@@ -977,6 +1072,7 @@ def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
     return conic_from_affine("hyperbola", A, centre)
 
 
+@overflow_checked("vertex or focal_length")
 def conic_parabola(vertex, focal_length, angle=0.0) -> np.ndarray:
     """Parabola ``y' = x'² / (4 f)`` in the frame at ``vertex`` turned by ``angle`` (opens to +y').
 
@@ -989,11 +1085,14 @@ def conic_parabola(vertex, focal_length, angle=0.0) -> np.ndarray:
     """
     f = check_positive(focal_length, "focal_length")
     angle = as_array(angle, "angle")
-    scale = np.stack([np.ones_like(f), 1.0 / (4.0 * f)], axis=-1)
+    with np.errstate(over="ignore"):
+        scale = check_overflow(np.stack([np.ones_like(f), 1.0 / (4.0 * f)], axis=-1), "conic_parabola",
+                               "1 / focal_length")
     A = _rot(angle) * scale[..., None, :]
     return conic_from_affine("parabola", A, vertex)
 
 
+@overflow_checked("a coefficient")
 def conic_from_coefficients(a, b, c, d, e, f) -> np.ndarray:
     """Conic ``a x² + b xy + c y² + d x + e y + f = 0`` (thesis 5.35 in standard coordinates).
 

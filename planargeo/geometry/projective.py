@@ -28,7 +28,19 @@ conditioned: their meet (an ideal point) and join (the line at infinity) are
 ordinary results.
 
 Every function broadcasts over leading dimensions: homogeneous vectors are
-``(..., 3)``, Euclidean points and directions ``(..., 2)``.
+``(..., 3)``, Euclidean points and directions ``(..., 2)``; batch shapes that do
+not broadcast raise :class:`~planargeo.errors.ShapeError`.
+
+Finite in, finite out.  Homogeneous coordinates may be scaled freely, so a
+vector whose components could over- or underflow in a product (largest
+component outside ``[1e-150, 1e150]``) is first rescaled by a power of two
+(exactly: :func:`_fit`), and e.g. the join of two points near ``1e300`` is an
+ordinary line.  A result that is itself beyond double precision (the
+Euclidean coordinates of a point ``1e400`` away) raises
+:class:`~planargeo.errors.NumericOverflowError`; the zero vector, which is no
+point and no line, raises :class:`DegenerateGeometryError`.  The NaN and
+``±inf`` that points and lines at infinity give (:func:`to_xy`,
+:func:`signed_distance`...) are documented values, not errors.
 """
 from __future__ import annotations
 
@@ -36,7 +48,7 @@ import math
 
 import numpy as np
 
-from planargeo._validate import as_array, as_vec3, as_xy
+from planargeo._validate import as_array, as_scalar, as_vec3, as_xy, batch_shape, check_overflow
 from planargeo.errors import COND_LIMIT, DegenerateGeometryError, InputError
 
 __all__ = [
@@ -83,11 +95,60 @@ def _cross(a, b):
 
 
 def _safe_div(num, den):
-    """``num / den`` where ``den != 0``, NaN elsewhere, without warnings."""
+    """``num / den`` where ``den != 0``, NaN elsewhere, without warnings (overflow gives ±inf)."""
     num, den = np.broadcast_arrays(np.asarray(num, float), np.asarray(den, float))
     out = np.full(num.shape, np.nan)
-    np.divide(num, den, out=out, where=den != 0)
+    with np.errstate(over="ignore"):
+        np.divide(num, den, out=out, where=den != 0)
     return out
+
+
+_TINY, _HUGE = 1e-150, 1e150          # squared norms of vectors in this range neither over- nor underflow
+_TINY2, _HUGE2 = _TINY * _TINY, _HUGE * _HUGE   # the same bounds on the squared norms
+
+
+def _fit(a: np.ndarray, core: int = 1, tiny: float = _TINY, huge: float = _HUGE) -> np.ndarray:
+    """``a`` with each vector (``core=2``: matrix) whose largest |entry| lies outside ``(tiny, huge)``
+    scaled by a power of two to a largest entry in ``[0.5, 1)``.
+
+    Scaling by ``2^-e`` is exact, so a homogeneous vector keeps its meaning and its digits;
+    vectors already in range (every ordinary one) are returned unchanged.
+    """
+    if a.ndim == core == 1:                   # one vector: plain floats are faster
+        m = max(map(abs, a.tolist()), default=0.0)
+        return a if tiny < m < huge or m == 0 or m != m else np.ldexp(a, -math.frexp(m)[1])
+    m = np.abs(a).max(axis=tuple(range(-core, 0)), keepdims=True)
+    ok = ((m > tiny) & (m < huge)) | (m == 0)
+    if np.all(ok):
+        return a
+    return np.where(ok, a, np.ldexp(a, -np.frexp(m)[1]))
+
+
+def _fit_line(l: np.ndarray) -> np.ndarray:
+    """Lines scaled by a power of two to a force ``|(fx, fy)|`` near 1 (the line at infinity: ``|tz|`` near 1).
+
+    Exact, so distances and directions keep every digit; ``tz`` overflows to ``inf`` only for a
+    line farther from the origin than double precision reaches.
+    """
+    if l.ndim == 1:                           # one line: plain floats are faster
+        fx, fy, tz = l.tolist()
+        m = max(abs(fx), abs(fy)) or abs(tz)
+        if _TINY < m < _HUGE or m == 0:
+            return l
+    f = np.maximum(np.abs(l[..., 0]), np.abs(l[..., 1]))
+    m = np.where(f != 0, f, np.abs(l[..., 2]))[..., None]
+    if np.all(((m > _TINY) & (m < _HUGE)) | (m == 0)):
+        return l
+    with np.errstate(over="ignore"):
+        return np.ldexp(l, -np.frexp(m)[1])
+
+
+def _refuse_zero(x: np.ndarray, name: str, what: str) -> None:
+    if x.ndim == 1 and any(x.tolist()):      # one vector, not zero: the common case, quickly
+        return
+    zero = np.all(x == 0, axis=-1)
+    if np.any(zero):
+        raise DegenerateGeometryError(f"{name} is the zero vector{_first_index(zero)}, which is no {what}")
 
 
 # --------------------------------------------------------------------------- normalisation
@@ -110,6 +171,8 @@ def normalize_point(p) -> np.ndarray:
     ------
     DegenerateGeometryError
         If some ``p`` is the zero vector (which is no point).
+    NumericOverflowError
+        If a finite point is farther from the origin than double precision reaches.
 
     Examples
     --------
@@ -117,15 +180,16 @@ def normalize_point(p) -> np.ndarray:
     array([ 2., -1.,  1.])
     >>> normalize_point([0.0, 3.0, 0.0])      # a point at infinity
     array([0., 1., 0.])
+    >>> normalize_point([1e300, 0.0, 0.0])    # no overflow in |p|
+    array([1., 0., 0.])
     """
     p = as_vec3(p, "p")
+    _refuse_zero(p, "p", "point")
+    p = _fit(p)
     w = p[..., 2]
-    n = np.linalg.norm(p, axis=-1)
-    zero = n == 0
-    if np.any(zero):
-        raise DegenerateGeometryError(f"p is the zero vector{_first_index(zero)}, which is no point")
-    den = np.where(w != 0, w, n)
-    return p / den[..., None]
+    den = np.where(w != 0, w, np.linalg.norm(p, axis=-1))
+    with np.errstate(over="ignore"):
+        return check_overflow(p / den[..., None], "normalize_point(p)", "p's coordinates")
 
 
 def normalize_line(l) -> np.ndarray:
@@ -150,6 +214,8 @@ def normalize_line(l) -> np.ndarray:
     ------
     DegenerateGeometryError
         If some ``l`` is the zero vector (which is no line).
+    NumericOverflowError
+        If a finite line is farther from the origin than double precision reaches.
 
     Examples
     --------
@@ -159,13 +225,12 @@ def normalize_line(l) -> np.ndarray:
     array([ 0.,  0., -1.])
     """
     l = as_vec3(l, "l")
+    _refuse_zero(l, "l", "line")
+    l = _fit_line(l)
     f = np.hypot(l[..., 0], l[..., 1])
-    t = np.abs(l[..., 2])
-    zero = (f == 0) & (t == 0)
-    if np.any(zero):
-        raise DegenerateGeometryError(f"l is the zero vector{_first_index(zero)}, which is no line")
-    den = np.where(f != 0, f, t)
-    return l / den[..., None]
+    den = np.where(f != 0, f, np.abs(l[..., 2]))
+    with np.errstate(over="ignore"):
+        return check_overflow(l / den[..., None], "normalize_line(l)", "l's distance from the origin")
 
 
 def normalize(x, kind: str | None = None) -> np.ndarray:
@@ -286,16 +351,29 @@ def to_xy(p) -> np.ndarray:
     -------
     ndarray, shape (..., 2)
 
+    Raises
+    ------
+    DegenerateGeometryError
+        ``p`` is the zero vector (no point).
+    NumericOverflowError
+        A finite point beyond double precision's range (e.g. ``[1e300, 0, 1e-300]``).
+
     Examples
     --------
     >>> to_xy([4.0, -2.0, 2.0])
     array([1., 2.])
     >>> to_xy([1.0, 0.0, 0.0])
     array([nan, nan])
+    >>> to_xy([0.0, 0.0, 0.0])
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.DegenerateGeometryError: p is the zero vector, which is no point
     """
     p = as_vec3(p, "p")
+    _refuse_zero(p, "p", "point")
     w = p[..., 2]
-    return np.stack([_safe_div(-p[..., 1], w), _safe_div(p[..., 0], w)], axis=-1)
+    xy = np.stack([_safe_div(-p[..., 1], w), _safe_div(p[..., 0], w)], axis=-1)
+    return check_overflow(xy, "to_xy(p)", "p's coordinates", ok=(w == 0)[..., None])
 
 
 def direction(p) -> np.ndarray:
@@ -312,6 +390,8 @@ def direction(p) -> np.ndarray:
     array([nan, nan])
     """
     p = as_vec3(p, "p")
+    _refuse_zero(p, "p", "point")
+    p = _fit(p)
     n = np.hypot(p[..., 0], p[..., 1])
     den = np.where(p[..., 2] == 0, n, 0.0)
     return np.stack([_safe_div(-p[..., 1], den), _safe_div(p[..., 0], den)], axis=-1)
@@ -328,8 +408,10 @@ def line_direction(l) -> np.ndarray:
     array([ 0., -1.])
     """
     l = as_vec3(l, "l")
-    n = np.hypot(l[..., 0], l[..., 1])
-    return np.stack([_safe_div(l[..., 0], n), _safe_div(l[..., 1], n)], axis=-1)
+    _refuse_zero(l, "l", "line")
+    f = _fit(l[..., :2])
+    n = np.hypot(f[..., 0], f[..., 1])
+    return np.stack([_safe_div(f[..., 0], n), _safe_div(f[..., 1], n)], axis=-1)
 
 
 def foot_point(l) -> np.ndarray:
@@ -343,10 +425,15 @@ def foot_point(l) -> np.ndarray:
     array([2., 0.])
     """
     l = as_vec3(l, "l")
+    _refuse_zero(l, "l", "line")
+    at_infinity = (l[..., 0] == 0) & (l[..., 1] == 0)
+    l = _fit_line(l)
     f2 = l[..., 0] ** 2 + l[..., 1] ** 2
-    x = _safe_div(l[..., 2] * l[..., 1], f2)
-    y = _safe_div(0.0 - l[..., 2] * l[..., 0], f2)
-    return np.stack([y + 0.0, 0.0 - x, np.where(f2 != 0, 1.0, np.nan)], axis=-1)
+    with np.errstate(over="ignore", invalid="ignore"):     # tz = inf: a line beyond range, reported below
+        x = _safe_div(l[..., 2] * l[..., 1], f2)
+        y = _safe_div(0.0 - l[..., 2] * l[..., 0], f2)
+    foot = np.stack([y + 0.0, 0.0 - x, np.where(f2 != 0, 1.0, np.nan)], axis=-1)
+    return check_overflow(foot, "foot_point(l)", "l's distance from the origin", ok=at_infinity[..., None])
 
 
 # --------------------------------------------------------------------------- join / meet
@@ -367,12 +454,10 @@ def cross_cond(a, b) -> np.ndarray:
     >>> float(cross_cond([1.0, 2.0, 3.0], [-2.0, -4.0, -6.0]))     # the same point
     inf
     """
-    a, b = np.broadcast_arrays(np.asarray(a, float), np.asarray(b, float))
+    a, b = as_vec3(a, "a"), as_vec3(b, "b")
+    batch_shape(a=(a, 1), b=(b, 1))
+    a, b = np.broadcast_arrays(_fit(a), _fit(b))
     return _cross_cond(a, b, _cross(a, b))
-
-
-_TINY, _HUGE = 1e-150, 1e150          # squared norms of vectors in this range neither over- nor underflow
-_TINY2, _HUGE2 = _TINY * _TINY, _HUGE * _HUGE   # the same bounds on the squared norms
 
 
 def _cross_cond(a, b, c) -> np.ndarray:
@@ -395,24 +480,36 @@ def _cross_cond(a, b, c) -> np.ndarray:
     mc = np.abs(c).max(axis=-1)
     den = np.linalg.norm(_safe_div(c, mc[..., None]), axis=-1) * mc
     slow = np.full(den.shape, np.inf)
-    np.divide(num, den, out=slow, where=(den > 0) & ~np.isnan(num))
+    with np.errstate(over="ignore"):         # κ past the largest float is infinite for every purpose
+        np.divide(num, den, out=slow, where=(den > 0) & ~np.isnan(num))
     return np.where(ok, out, slow)
 
 
-def _check_cond(a, b, c, what: str, cond_limit: float) -> None:
-    """Raise for an exactly zero ``c = a × b`` or a condition number past ``cond_limit``."""
-    if c.shape == (3,) and a.shape == b.shape == (3,):
+def _checked_cross(a, b, names: str, what: str, cond_limit: float) -> np.ndarray:
+    """``a × b`` for :func:`join` and :func:`meet`, refused for an exactly zero or ill-conditioned product.
+
+    Vectors whose components could over- or underflow are rescaled first (:func:`_fit`).
+    """
+    if type(cond_limit) is not float or not cond_limit > 0:      # the default passes at no cost
+        cond_limit = as_scalar(cond_limit, "cond_limit", finite=False)
+        if not cond_limit > 0:
+            raise InputError(f"cond_limit must be positive, got {cond_limit!r}")
+    if a.shape == b.shape == (3,):
         # one pair (the common scalar call): the squared norms in plain float arithmetic; where they are
         # in range and κ passes (every ordinary case) return, else the array code below decides and reports
         a0, a1, a2 = a.tolist()
         b0, b1, b2 = b.tolist()
+        c = _cross(a, b)
         c0, c1, c2 = c.tolist()
         na2 = a0 * a0 + a1 * a1 + a2 * a2
         nb2 = b0 * b0 + b1 * b1 + b2 * b2
         nc2 = c0 * c0 + c1 * c1 + c2 * c2
         if (_TINY2 < na2 < _HUGE2 and _TINY2 < nb2 < _HUGE2 and _TINY2 < nc2 < _HUGE2
                 and math.sqrt(na2) * math.sqrt(nb2) / math.sqrt(nc2) <= cond_limit):
-            return
+            return c
+    batch_shape(**{names[0]: (a, 1), names[1]: (b, 1)})
+    a, b = _fit(a), _fit(b)
+    c = _cross(a, b)
     zero = np.all(c == 0, axis=-1)
     if np.any(zero):
         err = DegenerateGeometryError(
@@ -431,6 +528,7 @@ def _check_cond(a, b, c, what: str, cond_limit: float) -> None:
             f"{np.finfo(float).eps * k:.1g})")
         err.cond = k
         raise err
+    return c
 
 
 def join(p, q, cond_limit: float = COND_LIMIT) -> np.ndarray:
@@ -481,9 +579,7 @@ def join(p, q, cond_limit: float = COND_LIMIT) -> np.ndarray:
     """
     p = as_vec3(p, "p")
     q = as_vec3(q, "q")
-    l = _cross(p, q)
-    _check_cond(p, q, l, "join(p, q): p and q are {kind} point", cond_limit)
-    return l
+    return _checked_cross(p, q, "pq", "join(p, q): p and q are {kind} point", cond_limit)
 
 
 def meet(l, m, cond_limit: float = COND_LIMIT) -> np.ndarray:
@@ -529,9 +625,7 @@ def meet(l, m, cond_limit: float = COND_LIMIT) -> np.ndarray:
     """
     l = as_vec3(l, "l")
     m = as_vec3(m, "m")
-    p = _cross(l, m)
-    _check_cond(l, m, p, "meet(l, m): l and m are {kind} line", cond_limit)
-    return p
+    return _checked_cross(l, m, "lm", "meet(l, m): l and m are {kind} line", cond_limit)
 
 
 def incidence(p, l) -> np.ndarray:
@@ -546,7 +640,9 @@ def incidence(p, l) -> np.ndarray:
     """
     p = as_vec3(p, "p")
     l = as_vec3(l, "l")
-    return np.einsum("...i,...i->...", p, l)
+    batch_shape(p=(p, 1), l=(l, 1))
+    with np.errstate(over="ignore", invalid="ignore"):
+        return check_overflow(np.einsum("...i,...i->...", p, l), "incidence(p, l)", "p or l")
 
 
 def signed_distance(p, l) -> np.ndarray:
@@ -570,11 +666,18 @@ def signed_distance(p, l) -> np.ndarray:
     """
     p = as_vec3(p, "p")
     l = as_vec3(l, "l")
-    num = np.einsum("...i,...i->...", p, l)
-    den = p[..., 2] * np.hypot(l[..., 0], l[..., 1])
+    batch_shape(p=(p, 1), l=(l, 1))
+    _refuse_zero(p, "p", "point")
+    _refuse_zero(l, "l", "line")
+    ideal = (p[..., 2] == 0) | ((l[..., 0] == 0) & (l[..., 1] == 0))
+    p, l = _fit(p), _fit_line(l)
+    with np.errstate(invalid="ignore"):
+        num = np.einsum("...i,...i->...", p, l)
+    den = np.where(ideal, 0.0, p[..., 2] * np.hypot(l[..., 0], l[..., 1]))
     out = _safe_div(num, den)
-    inf = (den == 0) & (num != 0)
-    return np.where(inf, np.copysign(np.inf, num * np.where(p[..., 2] < 0, -1.0, 1.0)), out)
+    inf = ideal & (num != 0)
+    out = np.where(inf, np.copysign(np.inf, num * np.where(p[..., 2] < 0, -1.0, 1.0)), out)
+    return check_overflow(out, "signed_distance(p, l)", "the distance", ok=ideal)
 
 
 def pencil(l1, l2, beta) -> np.ndarray:
@@ -592,7 +695,9 @@ def pencil(l1, l2, beta) -> np.ndarray:
     l1 = as_vec3(l1, "l1")
     l2 = as_vec3(l2, "l2")
     beta = as_array(beta, "beta")
-    return l1 + beta[..., None] * (l2 - l1)
+    batch_shape(l1=(l1, 1), l2=(l2, 1), beta=(beta, 0))
+    with np.errstate(over="ignore", invalid="ignore"):
+        return check_overflow(l1 + beta[..., None] * (l2 - l1), "pencil(l1, l2, beta)", "l1, l2 or beta")
 
 
 def line_through_point_direction(p, d) -> np.ndarray:

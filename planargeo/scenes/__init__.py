@@ -13,15 +13,18 @@ from __future__ import annotations
 import importlib
 import importlib.util
 import inspect
+import math
+import warnings
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
 import numpy as np
 
-from planargeo.errors import InputError, NonFiniteError, SceneError, ShapeError
+from planargeo.errors import (InputError, NonFiniteError, NumericOverflowError, PlanargeoError, SceneError,
+                              ShapeError, SizeLimitError)
 
-__all__ = ["SceneResult", "register", "get", "names", "parameters", "build", "check_param",
-           "SceneNonFiniteError", "SceneShapeError"]
+__all__ = ["SceneResult", "register", "get", "names", "parameters", "limits", "build", "check_param",
+           "non_finite", "SceneNonFiniteError", "SceneShapeError", "SceneSizeError", "SceneRangeError"]
 
 
 class SceneNonFiniteError(SceneError, NonFiniteError):
@@ -30,6 +33,14 @@ class SceneNonFiniteError(SceneError, NonFiniteError):
 
 class SceneShapeError(SceneError, ShapeError):
     """A scalar scene parameter was given as an array (both a :class:`SceneError` and a :class:`ShapeError`)."""
+
+
+class SceneSizeError(SceneError, SizeLimitError):
+    """A size parameter past the scene's limit (both a :class:`SceneError` and a :class:`SizeLimitError`)."""
+
+
+class SceneRangeError(SceneError, NumericOverflowError):
+    """Finite parameters the scene cannot evaluate in double precision (overflow, a zero that underflowed)."""
 
 # Scene modules, imported on first use (a module that does not exist yet is skipped).
 _MODULES = [
@@ -43,6 +54,7 @@ _MODULES = [
 ]
 
 _REGISTRY: dict[str, Callable[..., "SceneResult"]] = {}
+_LIMITS: dict[str, dict[str, tuple[int, str]]] = {}
 _loaded = False
 
 
@@ -75,11 +87,17 @@ class SceneResult:
     extra: dict[str, Any] = field(default_factory=dict)
 
 
-def register(name: str):
-    """Decorator registering a scene function under ``name``."""
+def register(name: str, limits: dict[str, tuple[int, str]] | None = None):
+    """Decorator registering a scene function under ``name``.
+
+    ``limits`` maps a size parameter (a positive integer such as a number of links) to its
+    largest value and what that costs, e.g. ``{"n": (200, "about 0.5 s")}``: :func:`build`
+    refuses larger values unless asked with ``allow_big=True``.
+    """
 
     def deco(fn):
         _REGISTRY[name] = fn
+        _LIMITS[name] = dict(limits or {})
         fn.scene_name = name
         return fn
 
@@ -117,14 +135,108 @@ def parameters(name: str) -> dict[str, Any]:
     return {k: p.default for k, p in sig.parameters.items()}
 
 
-def build(name: str, **params) -> SceneResult:
-    """Build scene ``name`` with ``params``; unknown parameters raise :class:`SceneError`."""
+def limits(name: str) -> dict[str, int]:
+    """The scene's size limits ``{parameter: largest value}`` (see :func:`build`).
+
+    >>> limits("chain")
+    {'n': 200}
+    """
+    get(name)
+    return {k: v for k, (v, _) in _LIMITS[name].items()}
+
+
+def build(name: str, *, allow_big: bool = False, **params) -> SceneResult:
+    """Build scene ``name`` with ``params``.
+
+    Parameters
+    ----------
+    name : str
+    allow_big : bool
+        Lift the size limits (:func:`limits`), for a deliberate big job.
+    **params
+        The scene's parameters (:func:`parameters`).
+
+    Raises
+    ------
+    SceneError
+        An unknown parameter, or a value the scene refuses (its own checks).
+    SceneSizeError
+        A size parameter past its limit (a chain of 10⁶ links) without ``allow_big``: the
+        message states the limit and what the limit costs, instead of running for hours.
+
+    Examples
+    --------
+    >>> build("chain", n=10**6)
+    Traceback (most recent call last):
+    ...
+    planargeo.scenes.SceneSizeError: n = 1000000 is past the limit of 200 for scene 'chain' (n = 200 takes about 0.5 s; the cost grows as n³); pass allow_big=True (planargeo report --allow-big) to build it anyway
+    """
     fn = get(name)
     known = parameters(name)
     unknown = sorted(set(params) - set(known))
     if unknown:
         raise SceneError(f"scene {name!r} has no parameter {unknown[0]!r} (parameters: {', '.join(known)})")
-    return fn(**params)
+    for k, (limit, cost) in _LIMITS[name].items():
+        if k in params:
+            v = check_param(k, params[k], "int", positive=True)
+            if v > limit and not allow_big:
+                raise SceneSizeError(f"{k} = {v} is past the limit of {limit} for scene {name!r} ({cost}); "
+                                     "pass allow_big=True (planargeo report --allow-big) to build it anyway")
+    problem = _evaluate(fn, params)
+    if isinstance(problem, SceneResult):
+        return problem
+    culprits = [k for k in params if isinstance(_evaluate(fn, {j: v for j, v in params.items() if j != k}),
+                                                    SceneResult)] or list(params)
+    given = ", ".join(f"{k}={_fmt(params[k])}" for k in culprits)
+    raise SceneRangeError(f"scene {name!r} {problem} " + (f"with {given} " if params else "with the default "
+                          "parameters ") + "(beyond what double precision can evaluate)")
+
+
+#: The numerical failures of a scene evaluated beyond double precision (package errors pass through).
+_NUMERICAL = (ArithmeticError, np.linalg.LinAlgError)
+
+
+def _evaluate(fn, params) -> SceneResult | str:
+    """``fn(**params)`` without numpy's warnings; a string saying what went wrong if not finite."""
+    try:
+        with warnings.catch_warnings(), np.errstate(all="ignore"):
+            warnings.simplefilter("ignore", RuntimeWarning)
+            res = fn(**params)
+    except PlanargeoError as exc:
+        if not isinstance(exc, NumericOverflowError):
+            raise
+        return f"overflows ({exc})"
+    except _NUMERICAL as exc:
+        return f"fails ({type(exc).__name__}: {exc})"
+    bad = non_finite(res)
+    if bad:
+        return ("gives non-finite results (" + ", ".join(b.split(".", 1)[1] for b in bad[:8])
+                + (", ...)" if len(bad) > 8 else ")"))
+    return res
+
+
+def _fmt(v) -> str:
+    return f"{v:g}" if isinstance(v, float) else str(v)
+
+
+def non_finite(result: SceneResult) -> list[str]:
+    """Names (``section.key``) of the parameters, state and quantities of ``result`` holding NaN or infinity.
+
+    Examples
+    --------
+    >>> non_finite(SceneResult("x", {"a": 1.0}, state={"q": [0.0, float("inf")]},
+    ...                        quantities={"M": [[1.0, float("nan")]], "h": 2.0}))
+    ['state.q', 'quantities.M']
+    """
+    def bad(v) -> bool:
+        if isinstance(v, dict):
+            return any(bad(w) for w in v.values())
+        if isinstance(v, (list, tuple, np.ndarray)):
+            return any(bad(w) for w in v)
+        return isinstance(v, (float, np.floating)) and not math.isfinite(v)
+
+    return [f"{section}.{k}" for section in ("params", "state", "quantities")
+            for k, v in (getattr(result, section) or {}).items() if bad(v)]
 
 
 def check_param(name: str, value: Any, kind: str = "float", *, positive: bool = False,
@@ -205,8 +317,12 @@ def check_param(name: str, value: Any, kind: str = "float", *, positive: bool = 
         raise InputError(f"kind must be 'float', 'int' or 'choice', got {kind!r}")
     if isinstance(value, (bool, np.bool_, str, bytes)) or value is None:
         raise SceneError(f"{name} must be numeric, got {value!r}")
+    if isinstance(value, (complex, np.complexfloating)) or getattr(value, "dtype", None) == complex:
+        raise SceneError(f"{name} must be real, got {value!r}")
     try:
         a = np.asarray(value, dtype=float)
+    except OverflowError:
+        raise SceneNonFiniteError(f"{name} must be finite, got an integer beyond double precision's range") from None
     except (TypeError, ValueError):
         raise SceneError(f"{name} must be numeric, got {value!r}") from None
     if a.ndim != 0:

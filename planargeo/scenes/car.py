@@ -120,7 +120,6 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
     >>> bare.quantities["mu"] == res.quantities["mu"], "tyres" in bare.extra
     (True, False)
     """
-    params = dict(m=m, rho=rho, L=L, d=d, eps=eps, omega=omega, F_A=F_A)
     m = check_param("m", m, positive=True)
     rho = check_param("rho", rho, positive=True)
     L = check_param("L", L, positive=True)
@@ -128,6 +127,7 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
     eps = check_param("eps", eps)
     omega = check_param("omega", omega)
     F_A = check_param("F_A", F_A)
+    params = dict(m=m, rho=rho, L=L, d=d, eps=eps, omega=omega, F_A=F_A)
     if not isinstance(outlines, (bool, np.bool_)):
         raise SceneError(f"outlines must be True or False, got {outlines!r}")
 

@@ -71,7 +71,7 @@ def chain_workspace(model, q, qd, tau):
     return articulated_body(model, q, qd, tau)
 
 
-@register("chain")
+@register("chain", limits={"n": (200, "n = 200 takes about 0.5 s; the cost grows as n³")})
 def chain(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str = "revolute", seed=None,
           gravity: float = -9.81) -> SceneResult:
     """A chain of ``n`` uniform links hanging from the origin.

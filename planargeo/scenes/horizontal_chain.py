@@ -61,7 +61,7 @@ def effective_centre(A) -> tuple[float, float, float, float]:
     return float(d), float(A[0, 0]), float(A[1, 1]), float(A[2, 2] - A[1, 2] ** 2 / A[1, 1])
 
 
-@register("horizontal-chain")
+@register("horizontal-chain", limits={"n": (2000, "n = 2000 takes about 1 s; the cost grows as n²")})
 def horizontal_chain(n: int = 4, lam: float = 2.0) -> SceneResult:
     """Effective centre and inertia of the first body of a horizontal chain (thesis 7.3, 7.25-7.27).
 
@@ -87,9 +87,9 @@ def horizontal_chain(n: int = 4, lam: float = 2.0) -> SceneResult:
     """
     from planargeo.algorithms.articulated_inertia import articulated_inertia
 
-    params = dict(n=n, lam=lam)
     n = check_param("n", n, "int", positive=True)
     lam = check_param("lam", lam, positive=True)
+    params = dict(n=n, lam=lam)
     m, L = 1.0, 1.0
     rho = L / lam
     model = horizontal_chain_model(n, m, rho, L)

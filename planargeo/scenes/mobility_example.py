@@ -61,10 +61,10 @@ def mobility_example(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: floa
     1.333333333333
     """
     from planargeo.algorithms.articulated_mobility import articulated_mobility
-    params = dict(m=m, rho=rho, L=L, phi=phi, tau=tau)
     m, rho, L = (check_param(k, v, positive=True) for k, v in (("m", m), ("rho", rho), ("L", L)))
     phi = check_param("phi", phi)
     tau = check_param("tau", tau, nonzero=True)   # a zero couple has no instant centre
+    params = dict(m=m, rho=rho, L=L, phi=phi, tau=tau)
     model = two_body_model(m, rho, L)
     q = np.array([0.0, phi])
     r = articulated_mobility(model, q)

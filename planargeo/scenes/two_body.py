@@ -83,9 +83,9 @@ def two_body(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: float = np.p
     """
     from planargeo.algorithms.articulated_inertia import articulated_inertia
 
-    params = dict(m=m, rho=rho, L=L, phi=phi)
     m, rho, L = positive(m, "m"), positive(rho, "rho"), positive(L, "L")
     phi = finite(phi, "phi")
+    params = dict(m=m, rho=rho, L=L, phi=phi)
     model = two_body_model(m, rho, L)
     q = np.array([0.0, phi])
     r = articulated_inertia(model, q)

@@ -14,8 +14,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo._validate import (as_array, as_mat3, as_scalar, as_vec3, as_xy, check_positive_definite,
-                        check_positive_semidefinite)
+from planargeo._validate import (as_array, as_mat3, as_scalar, as_vec3, as_xy, batch_shape, check_overflow,
+                                 check_positive_definite, check_positive_semidefinite, overflow_checked, rescaled)
 from planargeo.errors import InputError, InvalidPolygonError, SingularInertiaError
 from planargeo.screws.twists import _congruence, _inertia_rotated, _kinetic_energy, X_P_inv_T, inertia_matrix
 
@@ -115,6 +115,7 @@ def _with_mass(inertia, name: str = "inertia") -> np.ndarray:
     return I
 
 
+@overflow_checked("1 / mass")
 def centre_of_mass(inertia) -> np.ndarray:
     """Centre of mass ``c = (I[1, 2], -I[0, 2]) / m`` (thesis 1.66, 4.58).
 
@@ -138,6 +139,7 @@ def centre_of_mass(inertia) -> np.ndarray:
     return np.stack([I[..., 1, 2] / m, (0.0 - I[..., 0, 2]) / m], axis=-1)
 
 
+@overflow_checked("inertia")
 def rotational_inertia(inertia) -> np.ndarray:
     """Rotational inertia ``J = m ρ²`` about the centre of mass (parallel axis theorem, thesis 1.68, 4.58).
 
@@ -154,6 +156,7 @@ def rotational_inertia(inertia) -> np.ndarray:
     return np.asarray(I[..., 2, 2] - I[..., 0, 0] * np.einsum("...i,...i->...", c, c))
 
 
+@overflow_checked("inertia")
 def radius_of_gyration(inertia) -> np.ndarray:
     """Radius of gyration ``ρ = sqrt(J / m)`` (thesis 4.58, 5.64).
 
@@ -169,6 +172,7 @@ def radius_of_gyration(inertia) -> np.ndarray:
     return np.asarray(np.sqrt(np.maximum(rotational_inertia(I) / I[..., 0, 0], 0.0)))
 
 
+@overflow_checked("1 / inertia")
 def mobility(inertia) -> np.ndarray:
     """Mobility ``I⁻¹`` (the dual conic; thesis 8.3.5), computed with ``solve``.
 
@@ -242,7 +246,9 @@ def percussion_axis(inertia, point) -> np.ndarray:
     """
     I = _psd(inertia)
     a = _vec(point, "point")
-    return np.einsum("...ij,...j->...i", I, a)
+    batch_shape(inertia=(I, 2), point=(a, 1))
+    return rescaled(lambda I, a: np.einsum("...ij,...j->...i", I, a), (I, a), (1, 1), (2, 1), 1,
+                    "percussion_axis(inertia, point)", "inertia or point")
 
 
 def percussion_pole(inertia, line) -> np.ndarray:
@@ -267,7 +273,9 @@ def percussion_pole(inertia, line) -> np.ndarray:
     """
     I = _pd(inertia)
     f = _vec(line, "line")
-    return _solve(I, f[..., None])[..., 0]
+    batch_shape(inertia=(I, 2), line=(f, 1))
+    return rescaled(lambda I, f: _solve(I, f[..., None])[..., 0], (I, f), (-1, 1), (2, 1), 1,
+                    "percussion_pole(inertia, line)", "line, or the inverse inertia,")
 
 
 def drawable_conic(inertia) -> np.ndarray:
@@ -460,7 +468,8 @@ class Inertia:
             raise InputError("give exactly one of radius_of_gyration or inertia")
         if inertia is None:
             rho = _positive(radius_of_gyration, "radius_of_gyration")
-            J = m * rho * rho
+            with np.errstate(over="ignore"):
+                J = check_overflow(m * rho * rho, "Inertia.from_mass", "mass or radius_of_gyration")
         else:
             J = _positive(inertia, "inertia")
         return cls(inertia_matrix(m, c, J))

@@ -8,6 +8,11 @@ broadcasts over leading dimensions: vectors are ``(..., 3)``, matrices
 A twist *is* a point in the package's homogeneous coordinates (its pole, the
 instant centre; thesis 5.51), a wrench *is* a line (its polar, the line of
 action; thesis 5.56).  See :mod:`planargeo.geometry.projective`.
+
+Finite in, finite out: a result beyond double precision's range raises
+:class:`~planargeo.errors.NumericOverflowError` naming the arguments; powers,
+energies and magnitudes whose plain evaluation overflows only in an
+intermediate step are evaluated rescaled (:func:`planargeo._validate.rescaled`).
 """
 from __future__ import annotations
 
@@ -15,8 +20,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from planargeo._validate import as_array, as_mat3, as_vec3, as_xy, check_positive, check_positive_semidefinite
-from planargeo.geometry.projective import normalize_line, normalize_point, to_xy
+from planargeo._validate import (as_array, as_mat3, as_vec3, as_xy, batch_shape, check_overflow, check_positive,
+                                 check_positive_semidefinite, check_tolerance, overflow_checked, rescaled)
+from planargeo.errors import NumericOverflowError
+from planargeo.geometry.projective import _fit, normalize_line, normalize_point, to_xy
 
 __all__ = [
     "X_P", "X_P_inv_T", "rot", "X_frame", "X_frame_inv_T", "rotation_about", "crm", "crf",
@@ -94,6 +101,7 @@ def rot(theta) -> np.ndarray:
     return out
 
 
+@overflow_checked("theta or point")
 def X_frame(theta, point) -> np.ndarray:
     """General planar twist transform: translation to ``point``, then rotation by ``theta`` (thesis 1.56, 4.7).
 
@@ -123,9 +131,11 @@ def X_frame(theta, point) -> np.ndarray:
     >>> np.round(X_frame(np.pi / 2, [2.0, 0.0]) @ [0.0, 0.0, 1.0], 12) + 0.0   # X_P gives [0, 2, 1], then turned
     array([-2.,  0.,  1.])
     """
+    _batches(theta=(theta, 0), point=(point, 1))
     return rot(theta) @ X_P(point)
 
 
+@overflow_checked("theta or point")
 def X_frame_inv_T(theta, point) -> np.ndarray:
     """Wrench transform matching :func:`X_frame`: ``X⁻ᵀ = rot(θ) X_P⁻ᵀ`` (thesis 1.58, 4.24).
 
@@ -138,9 +148,11 @@ def X_frame_inv_T(theta, point) -> np.ndarray:
     >>> np.round(X_frame_inv_T(np.pi / 2, [0.0, 1.0]) @ [1.0, 0.0, 0.0], 12) + 0.0   # X_P⁻ᵀ gives [1, 0, 1]
     array([0., 1., 1.])
     """
+    _batches(theta=(theta, 0), point=(point, 1))
     return rot(theta) @ X_P_inv_T(point)
 
 
+@overflow_checked("theta or about")
 def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
     """Twist map of a rigid rotation by ``theta`` about the point ``about`` (active; thesis 4.8, 1.56).
 
@@ -157,6 +169,7 @@ def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
     array([1., 1.])
     """
     c = as_xy(about, "about")
+    _batches(theta=(theta, 0), about=(c, 1))
     return X_P(-c) @ rot(theta) @ X_P(c)
 
 
@@ -230,13 +243,14 @@ def unit_translation(direction) -> np.ndarray:
     """
     from planargeo.errors import DegenerateGeometryError
 
-    d = as_xy(direction, "direction")
+    d = _fit(as_xy(direction, "direction"))       # exact rescaling: |d| cannot overflow
     n = np.hypot(d[..., 0], d[..., 1])
     if np.any(n == 0):
         raise DegenerateGeometryError("direction must be non-zero, got a zero vector")
     return np.stack([d[..., 0] / n, d[..., 1] / n, np.zeros(n.shape)], axis=-1)
 
 
+@overflow_checked("mass, com or inertia_about_com")
 def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
     """Planar spatial inertia at the origin (thesis 1.68 projected; 4.58, 5.64).
 
@@ -276,7 +290,7 @@ def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
     m = check_positive(mass, "mass")
     c = as_xy(com, "com")
     J = check_positive(inertia_about_com, "inertia_about_com", strict=False)
-    shape = np.broadcast_shapes(m.shape, c.shape[:-1], J.shape)
+    shape = batch_shape(mass=(m, 0), com=(c, 1), inertia_about_com=(J, 0))
     out = np.zeros(shape + (3, 3))
     cx, cy = c[..., 0], c[..., 1]
     out[..., 0, 0] = m
@@ -297,7 +311,12 @@ def power(twist, wrench) -> np.ndarray:
     """
     v = as_vec3(twist, "twist")
     f = as_vec3(wrench, "wrench")
-    return np.asarray(np.einsum("...i,...i->...", v, f))
+    batch_shape(twist=(v, 1), wrench=(f, 1))
+    return np.asarray(rescaled(_dot, (v, f), (1, 1), (1, 1), 0, "power(twist, wrench)", "twist or wrench"))
+
+
+def _dot(a, b):
+    return np.einsum("...i,...i->...", a, b)
 
 
 def kinetic_energy(inertia, twist) -> np.ndarray:
@@ -333,7 +352,9 @@ def kinetic_energy(inertia, twist) -> np.ndarray:
 
 def _kinetic_energy(I: np.ndarray, v: np.ndarray) -> np.ndarray:
     """``½ vᵀ I v`` on arrays already checked (the unchecked kernel)."""
-    return np.asarray(0.5 * np.einsum("...i,...ij,...j->...", v, I, v))
+    batch_shape(inertia=(I, 2), twist=(v, 1))
+    return np.asarray(rescaled(lambda I, v: 0.5 * np.einsum("...i,...ij,...j->...", v, I, v), (I, v), (1, 2),
+                               (2, 1), 0, "kinetic_energy(inertia, twist)", "inertia or twist"))
 
 
 def _inertia_psd(inertia, name: str = "inertia") -> np.ndarray:
@@ -386,7 +407,8 @@ def wrench_magnitude(wrench) -> np.ndarray:
     array(5.)
     """
     f = as_vec3(wrench, "wrench")
-    return np.asarray(np.hypot(f[..., 0], f[..., 1]))
+    return np.asarray(rescaled(lambda f: np.hypot(f[..., 0], f[..., 1]), (f,), (1,), (1,), 0,
+                               "wrench_magnitude(wrench)", "wrench"))
 
 
 def wrench_axis(wrench):
@@ -413,14 +435,17 @@ def wrench_axis(wrench):
     array(-inf)
     """
     f = as_vec3(wrench, "wrench")
-    F = np.hypot(f[..., 0], f[..., 1])
-    ok = F > 0
-    safe = np.where(ok, F, 1.0)
-    e = np.where(ok[..., None], f[..., :2] / safe[..., None], np.nan)
-    n = np.where(ok[..., None], np.stack([f[..., 1], -f[..., 0]], axis=-1) / safe[..., None], np.nan)
+    ok = np.any(f[..., :2] != 0, axis=-1)
+    g = _fit(f[..., :2])                       # e and n do not depend on the force's scale
+    G = np.hypot(g[..., 0], g[..., 1])
+    safe = np.where(ok, G, 1.0)
+    e = np.where(ok[..., None], g / safe[..., None], np.nan)
+    n = np.where(ok[..., None], np.stack([g[..., 1], -g[..., 0]], axis=-1) / safe[..., None], np.nan)
     tau = f[..., 2]
     far = np.where(tau != 0, np.copysign(np.inf, tau), np.nan)
-    d = np.where(ok, tau / safe, far)
+    with np.errstate(over="ignore"):
+        d = np.where(ok, tau / np.where(ok, np.hypot(f[..., 0], f[..., 1]), 1.0), far)
+    check_overflow(d, "wrench_axis(wrench)", "the distance tz / F", ok=~ok)
     return e, np.asarray(d), n
 
 
@@ -435,17 +460,20 @@ def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
     >>> bool(reciprocal(unit_rotation([1.0, 0.0]), [0.0, 1.0, 1.0]))   # the line x = 1
     True
     """
-    v = as_vec3(twist, "twist")
-    f = as_vec3(wrench, "wrench")
+    v = _fit(as_vec3(twist, "twist"))          # the test does not depend on the scales (exact rescaling)
+    f = _fit(as_vec3(wrench, "wrench"))
+    batch_shape(twist=(v, 1), wrench=(f, 1))
     P = np.einsum("...i,...i->...", v, f)
     scale = np.linalg.norm(v, axis=-1) * np.linalg.norm(f, axis=-1)
-    return np.asarray(np.abs(P) <= rtol * scale)
+    with np.errstate(over="ignore"):
+        return np.asarray(np.abs(P) <= check_tolerance(rtol) * scale)
 
 
 # ---------------------------------------------------------------------------
 # Inertia frame change, momentum and bias terms (thesis 1.68, 2.19, 3.11, 5.72)
 # ---------------------------------------------------------------------------
 
+@overflow_checked("inertia or point")
 def inertia_at(inertia, point) -> np.ndarray:
     """Inertia expressed at ``point`` (thesis 1.68, parallel axis theorem).
 
@@ -468,7 +496,9 @@ def inertia_at(inertia, point) -> np.ndarray:
            [0. , 2. , 0. ],
            [0. , 0. , 0.5]])
     """
-    return _congruence(X_P_inv_T(point), _inertia_psd(inertia))
+    I = _inertia_psd(inertia)
+    _batches(inertia=(I, 2), point=(point, 1))
+    return _congruence(X_P_inv_T(point), I)
 
 
 def _congruence(W: np.ndarray, I: np.ndarray) -> np.ndarray:
@@ -476,6 +506,7 @@ def _congruence(W: np.ndarray, I: np.ndarray) -> np.ndarray:
     return W @ I @ np.swapaxes(W, -1, -2)
 
 
+@overflow_checked("inertia, theta or point")
 def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
     """Inertia in the frame of :func:`X_frame`: ``I_B = X⁻ᵀ I X⁻¹`` (thesis 1.68).
 
@@ -508,9 +539,12 @@ def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
            [ 0. ,  2. ,  0. ],
            [-2. ,  0. ,  2.5]])
     """
-    return _congruence(X_frame_inv_T(theta, point), _inertia_psd(inertia))
+    I = _inertia_psd(inertia)
+    _batches(inertia=(I, 2), theta=(theta, 0), point=(point, 1))
+    return _congruence(X_frame_inv_T(theta, point), I)
 
 
+@overflow_checked("inertia, theta or about")
 def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
     """Inertia of the body turned by ``theta`` about ``about`` (thesis 1.68 with :func:`rotation_about`).
 
@@ -549,9 +583,11 @@ def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
 def _inertia_rotated(I: np.ndarray, theta, about) -> np.ndarray:
     """:func:`inertia_rotated` without the inertia check (the unchecked kernel)."""
     c = as_xy(about, "about")
+    _batches(inertia=(I, 2), theta=(theta, 0), about=(c, 1))
     return _congruence(X_P_inv_T(-c) @ rot(theta) @ X_P_inv_T(c), I)
 
 
+@overflow_checked("inertia or twist")
 def momentum(inertia, twist) -> np.ndarray:
     """Momentum wrench ``p = I v`` (thesis 1.65, 5.72).
 
@@ -570,9 +606,11 @@ def momentum(inertia, twist) -> np.ndarray:
     """
     I = _inertia_psd(inertia)
     v = as_vec3(twist, "twist")
+    batch_shape(inertia=(I, 2), twist=(v, 1))
     return np.einsum("...ij,...j->...i", I, v)
 
 
+@overflow_checked("twist, s or qd")
 def kappa(twist, s, qd) -> np.ndarray:
     """Bias (convective) acceleration ``κ = ṡ q̇`` of a joint with sequential screws (thesis 2.19, 4.61).
 
@@ -641,7 +679,7 @@ def kappa(twist, s, qd) -> np.ndarray:
     else:
         from planargeo.errors import ShapeError
         raise ShapeError(f"s must have shape (..., 3) or (..., 3, k), got shape {S.shape}")
-    shape = np.broadcast_shapes(v.shape[:-1], U.shape[:-2])
+    shape = batch_shape(twist=(v, 1), **{"s q̇": (U, 2)})
     out = np.zeros(shape + (3,))
     carrier = np.broadcast_to(v, shape + (3,))         # v + Σ_{l<j} s_l q̇_l
     for j in range(U.shape[-1]):
@@ -653,6 +691,7 @@ def kappa(twist, s, qd) -> np.ndarray:
     return out
 
 
+@overflow_checked("inertia, twist or g")
 def bias_force(inertia, twist, g=None) -> np.ndarray:
     """Bias force ``p = -(v×)ᵀ I v - g`` (thesis 3.11, 4.56, 4.62).
 
@@ -682,15 +721,22 @@ def bias_force(inertia, twist, g=None) -> np.ndarray:
     """
     I = _inertia_psd(inertia)
     v = as_vec3(twist, "twist")
+    g = None if g is None else as_vec3(g, "g")
+    batch_shape(inertia=(I, 2), twist=(v, 1), g=(np.zeros(3) if g is None else g, 1))
     out = np.einsum("...ij,...jk,...k->...i", crf(v), I, v)
     if g is not None:
-        out = out - as_vec3(g, "g")
+        out = out - g
     return out
 
 
 # ---------------------------------------------------------------------------
 # Thin classes
 # ---------------------------------------------------------------------------
+
+def _batches(**named) -> tuple:
+    """:func:`planargeo._validate.batch_shape` of arguments not yet converted (as real arrays, named)."""
+    return batch_shape(**{k: (as_array(x, k), nd) for k, (x, nd) in named.items()})
+
 
 def _is_number(x) -> bool:
     return isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, bool)
@@ -726,15 +772,20 @@ class _Screw:
         body = np.array2string(self._array, separator=", ", precision=6, suppress_small=True)
         return f"{type(self).__name__}({body})"
 
+    def _new(self, array, op: str):
+        return type(self)(check_overflow(array, f"{type(self).__name__} {op}", "a coordinate"))
+
     def __add__(self, other):
         if type(other) is not type(self):
             return NotImplemented
-        return type(self)(self._array + other._array)
+        with np.errstate(over="ignore", invalid="ignore"):
+            return self._new(self._array + other._array, "+")
 
     def __sub__(self, other):
         if type(other) is not type(self):
             return NotImplemented
-        return type(self)(self._array - other._array)
+        with np.errstate(over="ignore", invalid="ignore"):
+            return self._new(self._array - other._array, "-")
 
     def __neg__(self):
         return type(self)(-self._array)
@@ -742,7 +793,8 @@ class _Screw:
     def __mul__(self, k):
         if not _is_number(k) and not (isinstance(k, np.ndarray) and k.ndim == 0):
             return NotImplemented
-        return type(self)(self._array * float(k))
+        with np.errstate(over="ignore", invalid="ignore"):
+            return self._new(self._array * float(k), "*")
 
     __rmul__ = __mul__
 
@@ -769,13 +821,16 @@ class _Screw:
         """
         if about is None:
             M = rot(theta)
+            _batches(theta=(theta, 0), twist_or_wrench=(self._array, 1))
         else:
             c = as_xy(about, "about")
+            _batches(theta=(theta, 0), about=(c, 1), twist_or_wrench=(self._array, 1))
             if isinstance(self, Wrench):
                 M = X_P_inv_T(-c) @ rot(theta) @ X_P_inv_T(c)
             else:
                 M = X_P(-c) @ rot(theta) @ X_P(c)
-        return type(self)(np.einsum("...ij,...j->...i", M, self._array))
+        with np.errstate(over="ignore", invalid="ignore"):
+            return self._new(np.einsum("...ij,...j->...i", M, self._array), "rotated")
 
 
 class Twist(_Screw):
@@ -811,7 +866,8 @@ class Twist(_Screw):
         Twist([ 0., -2.,  2.])
         """
         w = as_array(omega, "omega")
-        return cls(unit_rotation(point) * w[..., None])
+        with np.errstate(over="ignore"):
+            return cls(check_overflow(unit_rotation(point) * w[..., None], "Twist.rotation", "point or omega"))
 
     @classmethod
     def translation(cls, velocity) -> "Twist":
@@ -874,7 +930,8 @@ class Twist(_Screw):
         >>> Twist.rotation([0.0, 0.0], 1.0).at([2.0, 0.0])   # the point (2, 0) moves up at 2
         Twist([0., 2., 1.])
         """
-        return Twist(np.einsum("...ij,...j->...i", X_P(point), self._array))
+        with np.errstate(over="ignore", invalid="ignore"):
+            return self._new(np.einsum("...ij,...j->...i", X_P(point), self._array), "at")
 
     def power(self, wrench) -> np.ndarray:
         """Power ``vᵀf`` (thesis 5.73).
@@ -939,7 +996,9 @@ class Wrench(_Screw):
         """
         p = as_xy(point, "point")
         f = as_xy(force, "force")
-        tau = p[..., 0] * f[..., 1] - p[..., 1] * f[..., 0]
+        batch_shape(point=(p, 1), force=(f, 1))
+        with np.errstate(over="ignore", invalid="ignore"):
+            tau = check_overflow(p[..., 0] * f[..., 1] - p[..., 1] * f[..., 0], "Wrench.force", "point or force")
         fx, fy, tau = np.broadcast_arrays(f[..., 0], f[..., 1], tau)
         return cls(np.stack([fx, fy, tau], axis=-1))
 
@@ -1020,7 +1079,8 @@ class Wrench(_Screw):
         >>> Wrench.force([2.0, 0.0], [0.0, 1.0]).at([2.0, 0.0])   # no moment about a point of the line
         Wrench([0., 1., 0.])
         """
-        return Wrench(np.einsum("...ij,...j->...i", X_P_inv_T(point), self._array))
+        with np.errstate(over="ignore", invalid="ignore"):
+            return self._new(np.einsum("...ij,...j->...i", X_P_inv_T(point), self._array), "at")
 
     def power(self, twist) -> np.ndarray:
         """Power ``vᵀf`` (thesis 5.73).
@@ -1169,7 +1229,12 @@ def add_twists(v1, v2, rtol: float = 1e-12) -> TwistSum:
     """
     a = _single(v1, Twist, "v1")
     b = _single(v2, Twist, "v2")
-    s = a + b
+    with np.errstate(over="ignore", invalid="ignore"):
+        return _finite_sum(_add_twists(a, b, check_tolerance(rtol)), "add_twists", "v1 or v2")
+
+
+def _add_twists(a, b, rtol) -> TwistSum:
+    s = check_overflow(a + b, "add_twists", "v1 + v2")
     w1, w2, w3 = float(a[2]), float(b[2]), float(s[2])
     beta = rho = None
     if w1 != 0 and w2 != 0:
@@ -1183,8 +1248,8 @@ def add_twists(v1, v2, rtol: float = 1e-12) -> TwistSum:
         rho = float(np.hypot(t[0], t[1])) / w
     else:
         case = "translations" if np.any(s) else "zero"
-    line = np.cross(a, b)
-    if np.linalg.norm(line) <= rtol * np.linalg.norm(a) * np.linalg.norm(b):
+    line = np.cross(_fit(a), _fit(b))          # the join of the poles: scale-free, rescaled exactly
+    if np.linalg.norm(line) <= rtol * np.linalg.norm(_fit(a)) * np.linalg.norm(_fit(b)):
         line = np.zeros(3)
     return TwistSum(
         v1=Twist(a), v2=Twist(b), sum=Twist(s), case=case,
@@ -1283,11 +1348,16 @@ def add_wrenches(f1, f2, rtol: float = 1e-12) -> WrenchSum:
     """
     a = _single(f1, Wrench, "f1")
     b = _single(f2, Wrench, "f2")
-    s = a + b
+    with np.errstate(over="ignore", invalid="ignore"):
+        return _finite_sum(_add_wrenches(a, b, check_tolerance(rtol)), "add_wrenches", "f1 or f2")
+
+
+def _add_wrenches(a, b, rtol) -> WrenchSum:
+    s = check_overflow(a + b, "add_wrenches", "f1 + f2")
     F1, F2 = float(np.hypot(a[0], a[1])), float(np.hypot(b[0], b[1]))
     F3 = float(np.hypot(s[0], s[1]))
     beta = d1 = d2 = d3 = rho = None
-    meet = np.cross(a, b)
+    meet = np.cross(_fit(a), _fit(b))          # the meet of the lines: scale-free, rescaled exactly
     if F1 > 0 and F2 > 0:
         cr = a[0] * b[1] - a[1] * b[0]
         if abs(cr) <= rtol * F1 * F2:
@@ -1318,3 +1388,13 @@ def add_wrenches(f1, f2, rtol: float = 1e-12) -> WrenchSum:
         P=normalize_point(meet) if np.any(meet) else None,
         F1=F1, F2=F2, F3=F3, beta=beta, d1=d1, d2=d2, d3=d3, rho=rho,
     )
+
+
+def _finite_sum(c, what: str, culprits: str):
+    """The construction ``c`` if every number in it is finite (``beta = inf`` of opposite rotations aside)."""
+    for k, v in vars(c).items():
+        if v is None or isinstance(v, str) or (k == "beta" and c.case == "opposite_rotations"):
+            continue
+        if not np.all(np.isfinite(getattr(v, "array", v))):
+            raise NumericOverflowError(f"{what}: {k} overflows double precision ({culprits} too large)")
+    return c

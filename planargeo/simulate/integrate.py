@@ -46,6 +46,15 @@ Singular configurations are events, recorded as data in ``result.events``
   the error's.  The integration then stops cleanly: the result holds the
   trajectory up to the last good step, ``status == "singular"`` and a ``message``.
 
+Sizes: a run needs at most ``max_steps`` steps (default :data:`MAX_STEPS`, a
+million: minutes, not years).  Where the count is known before starting (RK4's
+``t_end / dt``, the output grid of ``dt``, ``t_end / max_step``) a larger one
+raises :class:`~planargeo.errors.SizeLimitError` at once; an adaptive run whose
+first 100 steps extrapolate past ``max_steps`` raises it too; one that reaches
+``max_steps`` anyway stops cleanly with ``status == "limit"``, keeping what was
+computed.  Ctrl-C (``KeyboardInterrupt``) also stops cleanly: ``status ==
+"interrupted"``, the trajectory up to the last accepted step.
+
 Examples
 --------
 >>> from planargeo.mechanics.model import chain_model
@@ -63,14 +72,19 @@ from typing import Any, Callable
 import numpy as np
 
 from planargeo._validate import as_array, as_scalar
-from planargeo.errors import InputError, SingularConfigurationError
+from planargeo.errors import InputError, SingularConfigurationError, SizeLimitError
 from planargeo.mechanics.kinematics import check_state, kinematics
 from planargeo.mechanics.model import Model
 
 __all__ = ["simulate", "SimulationResult", "energy", "progress_enabled", "near_singular_events", "METHODS",
-           "MULTISTEP"]
+           "MULTISTEP", "MAX_STEPS"]
 
 METHODS = ("RK23", "RK45", "DOP853", "Radau", "BDF", "LSODA", "RK4")
+
+#: Default largest number of steps of a run (``max_steps`` of :func:`simulate`).
+MAX_STEPS = 1_000_000
+#: Accepted steps after which an adaptive run checks its extrapolated step count.
+_PROBE = 100
 
 
 #: The multistep methods: a restart (after a projection that moved the state) begins again at
@@ -129,8 +143,9 @@ class SimulationResult:
     events : list of dict
         Singular and near-singular events (module docstring).
     status : str
-        ``"ok"``, ``"singular"`` (a singular configuration stopped the run) or
-        ``"failed"`` (the integrator gave up).
+        ``"ok"``, ``"singular"`` (a singular configuration stopped the run),
+        ``"failed"`` (the integrator gave up), ``"limit"`` (``max_steps`` reached) or
+        ``"interrupted"`` (Ctrl-C); the trajectory holds what was computed.
     message : str
     method : str
     nfev : int
@@ -226,7 +241,8 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
              forward: Callable | None = None, stabilize: Callable | None = None,
              project: Callable | None = None, residual: Callable | None = None,
              energy_fn: Callable | None = None, condition: Callable | str | None = None,
-             cond_event: float = 1e6, progress: bool | None = None) -> SimulationResult:
+             cond_event: float = 1e6, progress: bool | None = None,
+             max_steps: int = MAX_STEPS) -> SimulationResult:
     """Integrate ``q̈ = forward(q, q̇, τ)`` from ``(q0, qd0)`` over ``[0, t_end]`` (thesis 3.41-3.42, 2.9 in time).
 
     The state ``y = (q, q̇)`` obeys ``ẏ = (q̇, q̈)`` with ``q̈`` from the
@@ -252,13 +268,14 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         fixed-step classical RK4 (:data:`METHODS`).  Every method records
         the same diagnostics at every accepted step (or output time).
     rtol, atol : float
-        Tolerances of the adaptive methods.
+        Tolerances of the adaptive methods: ``rtol`` at least ``100 ε`` (2.2e-14, scipy's
+        floor), ``atol >= 0``, both finite.
     dt : float, optional
         Step of ``"RK4"`` (required there); for the adaptive methods, if given,
         the output is sampled every ``dt`` (dense output) instead of at every
         accepted step.
     max_step : float
-        Largest step of the adaptive methods.
+        Largest step of the adaptive methods (> 0; ``inf`` by default).
     forward, stabilize, project, residual, energy_fn : callables, optional
         Hooks, see the module docstring.
     condition : callable ``(q, qd) -> float``, ``"joints"`` or None
@@ -271,6 +288,9 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         Show a tqdm progress bar (``tqdm.auto``); ``None`` (default) decides
         automatically: on when stderr is a terminal or inside a Jupyter/IPython
         kernel (:func:`progress_enabled`).
+    max_steps : int
+        Largest number of steps (module docstring; :data:`MAX_STEPS` by default): raise it
+        explicitly for a deliberate long run.
 
     Returns
     -------
@@ -281,8 +301,11 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     Raises
     ------
     InputError
-        Unknown ``method``, ``t_end`` or ``dt`` not positive, a batch of
-        states, ``"RK4"`` without ``dt``.
+        Unknown ``method``; ``t_end``, ``dt``, ``max_step``, ``rtol``, ``atol`` not
+        finite and positive (``max_step`` may be ``inf``, ``atol`` zero); a batch of
+        states; ``"RK4"`` without ``dt``.
+    SizeLimitError
+        A run that needs more than ``max_steps`` steps (module docstring).
 
     Examples
     --------
@@ -303,20 +326,12 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     >>> bool(np.abs(r.q[:, 0] - 0.3).max() < 1e-12), len(r.t)
     (True, 51)
     """
-    if method not in METHODS:
-        raise InputError(f"method must be one of {list(METHODS)}, got {method!r}")
+    t_end, dt, rtol, atol, max_step, max_steps = _options(method, t_end, dt, rtol, atol, max_step, max_steps)
+    if qd0 is None:
+        raise InputError(f"qd0 must be the initial joint speeds, shape ({model.nq},), got None")
     q0, qd0, _, _, _, shape = check_state(model, q0, qd0)
     if shape != ():
         raise InputError(f"q0 and qd0 must be single states of shape ({model.nq},), got batch shape {shape}")
-    t_end = as_scalar(t_end, "t_end")
-    if not t_end > 0:
-        raise InputError(f"t_end must be positive, got {t_end!r}")
-    if dt is not None:
-        dt = as_scalar(dt, "dt")
-        if not dt > 0:
-            raise InputError(f"dt must be positive, got {dt!r}")
-    elif method == "RK4":
-        raise InputError("dt must be given for method 'RK4'")
     if forward is None:
         from planargeo.algorithms.aba import forward_dynamics as forward
     nq = model.nq
@@ -379,7 +394,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     t = 0.0
     try:
         if method == "RK4":
-            nsteps = max(1, int(math.ceil(t_end / dt - 1e-9)))
+            nsteps = max(1, math.ceil(t_end / dt - 1e-9))      # at most max_steps (_options)
             h = t_end / nsteps
             for k in range(nsteps):
                 k1 = rhs(t, y)
@@ -410,9 +425,14 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
                 if not grid or grid[-1] < t_end * (1 - 1e-12):
                     grid.append(t_end)
                 grid[-1] = min(grid[-1], t_end)
-            gi = 0
+            gi = steps = 0
             while solver.status == "running":
+                stop = _step_budget(steps, t, t_end, max_steps, method)
+                if stop:
+                    status, message = "limit", stop
+                    break
                 msg = solver.step()
+                steps += 1
                 if solver.status == "failed":
                     status, message = "failed", f"{method} failed at t = {solver.t:.6g}: {msg}"
                     break
@@ -444,6 +464,10 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         status = "singular"
         message = f"stopped at t = {t:.6g}: singular configuration: {exc}"
         singular = {"kind": "singular", "t": getattr(exc, "t", t), "cond": exc.cond, "message": str(exc)}
+    except KeyboardInterrupt:
+        status, message = "interrupted", f"interrupted at t = {t:.6g}: the trajectory holds what was computed"
+        n = min(len(ts), len(ys), len(cs))  # a step interrupted while being recorded
+        del ts[n:], ys[n:], cs[n:]
     finally:
         if bar is not None:
             bar.close()
@@ -467,6 +491,54 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     return SimulationResult(t=tt, q=qs, qd=qds, kinetic=Ts, potential=Vs, energy=Ts + Vs,
                             residual=res, status=status, message=message, method=method, nfev=nfev,
                             cond=conds, events=events)
+
+
+def _options(method, t_end, dt, rtol, atol, max_step, max_steps):
+    """The validated integrator options ``(t_end, dt, rtol, atol, max_step, max_steps)`` of :func:`simulate`."""
+    if not isinstance(method, str) or method not in METHODS:
+        raise InputError(f"method must be one of {list(METHODS)}, got {method!r}")
+    if isinstance(max_steps, (bool, np.bool_)) or not isinstance(max_steps, (int, np.integer)) or max_steps < 1:
+        raise InputError(f"max_steps must be a positive integer, got {max_steps!r}")
+    t_end = _positive(t_end, "t_end")
+    if dt is not None:
+        dt = _positive(dt, "dt")
+    elif method == "RK4":
+        raise InputError("dt must be given for method 'RK4'")
+    rtol = as_scalar(rtol, "rtol")
+    if not rtol >= 100 * np.finfo(float).eps:
+        raise InputError(f"rtol must be at least 100 ε = 2.2e-14 (scipy's floor), got {rtol!r}")
+    atol = as_scalar(atol, "atol")
+    if not atol >= 0:
+        raise InputError(f"atol must be non-negative, got {atol!r}")
+    max_step = _positive(max_step, "max_step", finite=False)
+    with np.errstate(over="ignore"):
+        needs = {"t_end / dt": t_end / dt if dt is not None else 0.0,
+                 "t_end / max_step": t_end / max_step if method != "RK4" else 0.0}
+    for what, n in needs.items():
+        if n > max_steps:
+            raise SizeLimitError(f"t_end = {t_end:g} needs {what} = {n:.3g} steps, past max_steps = {max_steps}; "
+                                 "pass a larger max_steps for a deliberate long run")
+    return t_end, dt, rtol, atol, max_step, int(max_steps)
+
+
+def _positive(x, name: str, finite: bool = True) -> float:
+    v = as_scalar(x, name, finite=finite)
+    if not v > 0:
+        raise InputError(f"{name} must be positive, got {v!r}")
+    return v
+
+
+def _step_budget(k: int, t: float, t_end: float, max_steps: int, method: str) -> str:
+    """The message of a run stopped after ``k`` steps at ``t`` by ``max_steps`` ("" to go on); raises when
+    the first :data:`_PROBE` steps extrapolate past ten times ``max_steps`` (fail fast)."""
+    if k >= max_steps:
+        return (f"stopped at t = {t:.6g}: max_steps = {max_steps} steps taken; pass a larger max_steps "
+                "for a deliberate long run")
+    if k == _PROBE and t > 0 and t_end / t * k > 10 * max_steps:
+        raise SizeLimitError(f"{method} would need about {t_end / t * k:.3g} steps to reach t_end = {t_end:g} "
+                             f"(extrapolated from the first {k}), past max_steps = {max_steps}; pass a larger "
+                             "max_steps for a deliberate long run")
+    return ""
 
 
 def near_singular_events(t, cond, threshold: float) -> list[dict]:

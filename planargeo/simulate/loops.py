@@ -55,10 +55,11 @@ import numpy as np
 from planargeo.algorithms.loops import loop_condition, loop_solve
 from planargeo.algorithms.stacked import blocks
 from planargeo.mechanics.contacts import contact_matrix, residual as contact_residual, stacked_contact_spaces, validate_contacts
-from planargeo.errors import InputError
+from planargeo._validate import as_array, as_scalar, check_overflow, check_tolerance
+from planargeo.errors import InputError, ShapeError
 from planargeo.mechanics.kinematics import kinematics
 from planargeo.mechanics.model import Model
-from planargeo.simulate.integrate import MULTISTEP, SimulationResult, simulate
+from planargeo.simulate.integrate import MAX_STEPS, MULTISTEP, SimulationResult, simulate
 
 __all__ = ["simulate_loops", "closure_residual", "closure_jacobian", "project_state", "baumgarte",
            "STABILIZATIONS"]
@@ -68,6 +69,31 @@ STABILIZATIONS = ("projection", "baumgarte", "both", "none")
 
 def _cs(model, contacts):
     return validate_contacts(model.contacts if contacts is None else contacts, model.N)
+
+
+def _state(model, x, name: str) -> np.ndarray:
+    """One state vector ``(nq,)`` of ``model`` (a fresh float array), or a named error."""
+    a = as_array(x, name, (model.nq,))
+    if a.ndim != 1:
+        raise ShapeError(f"{name} must have shape ({model.nq},), got shape {a.shape}")
+    return np.array(a)
+
+
+def _free(model, fixed) -> np.ndarray:
+    """The coordinates not in ``fixed`` (indices into ``q``, checked)."""
+    idx = list(fixed) if isinstance(fixed, (list, tuple, range, np.ndarray)) else None
+    if idx is None or not all(isinstance(i, (int, np.integer)) and not isinstance(i, bool) and 0 <= i < model.nq
+                              for i in idx):
+        raise InputError(f"fixed must be indices into q in 0..{model.nq - 1}, got {fixed!r}")
+    return np.setdiff1d(np.arange(model.nq), np.asarray(idx, dtype=int))
+
+
+def _rate(x, name: str) -> float:
+    """A Baumgarte rate (1/s): finite and non-negative."""
+    v = as_scalar(x, name)
+    if v < 0:
+        raise InputError(f"{name} must be non-negative, got {v!r}")
+    return v
 
 
 def closure_residual(model: Model, q, contacts=None) -> np.ndarray:
@@ -148,12 +174,14 @@ def project_state(model: Model, q, qd, contacts=None, *, fixed=(), tol: float = 
     >>> bool(np.abs(closure_residual(m, q2)).max() < 1e-12), float(q2[0]) == float(q[0])
     (True, True)
     """
-    q = np.array(q, dtype=float)
-    qd = np.array(qd, dtype=float)
+    q, qd = _state(model, q, "q"), _state(model, qd, "qd")
+    tol = check_tolerance(tol, "tol")
+    if isinstance(max_iter, bool) or not isinstance(max_iter, (int, np.integer)) or max_iter < 1:
+        raise InputError(f"max_iter must be a positive integer, got {max_iter!r}")
     cs = _cs(model, contacts)
+    free = _free(model, fixed)
     if not cs:
         return q, qd
-    free = np.setdiff1d(np.arange(model.nq), np.asarray(fixed, dtype=int))
     for _ in range(max_iter):
         phi = closure_residual(model, q, cs)
         if np.abs(phi).max() < tol:
@@ -188,14 +216,17 @@ def baumgarte(model: Model, contacts=None, alpha: float = 5.0, beta: float = 5.0
     True
     """
     cs = _cs(model, contacts)
-    free = np.setdiff1d(np.arange(model.nq), np.asarray(fixed, dtype=int))
+    free = _free(model, fixed)
+    alpha, beta = _rate(alpha, "alpha"), _rate(beta, "beta")
 
     def stabilize(t, q, qd, qdd):
         if not cs:
             return qdd
         phi = closure_residual(model, q, cs)
         J = closure_jacobian(model, q, cs)
-        return qdd - _weighted_correction(model, q, J, 2 * alpha * (J @ qd) + beta * beta * phi, free)
+        with np.errstate(over="ignore", invalid="ignore"):
+            out = qdd - _weighted_correction(model, q, J, 2 * alpha * (J @ qd) + beta * beta * phi, free)
+        return check_overflow(out, "baumgarte", "alpha or beta")
 
     return stabilize
 
@@ -205,7 +236,7 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
                    max_step: float = math.inf, stabilization: str = "projection", alpha: float = 5.0,
                    beta: float = 5.0, prescribed=None, tol: float = 1e-12, trigger: float = 1e-10,
                    project_initial: bool = True, watch: bool = True, cond_event: float = 1e6,
-                   progress: bool | None = None) -> SimulationResult:
+                   progress: bool | None = None, max_steps: int = MAX_STEPS) -> SimulationResult:
     """Integrate a closed-loop mechanism with stabilised loop closures (thesis 9.5, 9.65-9.75 in time).
 
     The accelerations come from the constrained algorithm (open-loop ``u``
@@ -256,6 +287,8 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
         Threshold of the near-singular events.
     progress : bool or None
         Progress bar (:func:`planargeo.simulate.progress_enabled`).
+    max_steps : int
+        Step limit of :func:`planargeo.simulate.simulate` (raise it for a deliberate long run).
 
     Returns
     -------
@@ -279,13 +312,15 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
         raise InputError(f"stabilization={stabilization!r} cannot be used with method {method!r}: each projection "
                          "restarts a multistep method at order 1 with a tiny step; use stabilization='baumgarte' "
                          "(or 'none') with it, or a one-step method (DOP853, RK45, RK23, Radau, RK4)")
-    for name, val in (("alpha", alpha), ("beta", beta)):
-        if not (np.isfinite(val) and val >= 0):
-            raise InputError(f"{name} must be non-negative, got {val!r}")
+    alpha, beta = _rate(alpha, "alpha"), _rate(beta, "beta")
+    tol, trigger = check_tolerance(tol, "tol"), check_tolerance(trigger, "trigger")
+    q0, qd0 = _state(model, q0, "q0"), _state(model, qd0, "qd0")
     cs = _cs(model, contacts)
     fixed = []
+    if prescribed is not None and not isinstance(prescribed, dict):
+        raise InputError(f"prescribed must be a dict {{joint: qdd}} or None, got {prescribed!r}")
     if prescribed:
-        for i in dict(prescribed):
+        for i in prescribed:
             if not (isinstance(i, (int, np.integer)) and 0 <= i < model.N):
                 raise InputError(f"prescribed keys must be joint indices in 0..{model.N - 1}, got {i!r}")
             fixed.extend(range(model.q_slice(i).start, model.q_slice(i).stop))
@@ -327,7 +362,8 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
                    max_step=max_step, forward=forward,
                    stabilize=baumgarte(model, cs, alpha, beta, fixed=fixed) if use_baum else None,
                    project=project if use_proj else None, residual=resid,
-                   condition=condition if watch else None, cond_event=cond_event, progress=progress)
+                   condition=condition if watch else None, cond_event=cond_event, progress=progress,
+                   max_steps=max_steps)
     npos = sum(c.nc for c in cs)
     R = res.residual if res.residual is not None else np.zeros((len(res.t), 0))
     res.extra["n_position"] = npos
