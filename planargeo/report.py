@@ -257,7 +257,7 @@ def _error(msg: str, code: int) -> int:
 def main(args: argparse.Namespace) -> int:
     """Run ``planargeo report``; returns the exit status."""
     from planargeo import scenes
-    from planargeo.errors import InputError, NumericOverflowError, PlanargeoError
+    from planargeo.errors import InputError, PlanargeoError
 
     if args.list:
         listing = {}

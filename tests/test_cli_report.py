@@ -284,9 +284,9 @@ def test_errors_exit_nonzero_with_one_line_and_no_traceback(args, msg):
 # ---------------------------------------------------------------------------
 # non-finite results: exit 1, one line naming the parameter, no NaN tokens, no warnings
 # ---------------------------------------------------------------------------
-NONFINITE_MSG = (r"planargeo report: error: scene 'slider-crank': kinematics overflow: kappa is not finite for these "
-                 r"finite inputs \(qd reaches 1.\d*e\+200\) with psidot=1e\+200 \(beyond what double precision can "
-                 r"evaluate\)")
+NONFINITE_MSG = (r"planargeo report: error: scene 'slider-crank' overflows \(kinematics overflow: kappa is not finite "
+                 r"for these finite inputs \(qd reaches 1.\d*e\+200\)\) with psidot=1e\+200 \(beyond what double "
+                 r"precision can evaluate\)")
 
 
 @pytest.mark.parametrize("fmt", [["--json"], []])
@@ -316,9 +316,9 @@ def test_non_finite_in_process(capsys):
         code = report.main(p.parse_args(["tree", "--set", "speed=1e300", "--set", "mass=2.0", *fmt]))
         out = capsys.readouterr()
         assert code == 1 and out.out == ""
-        assert out.err.splitlines() == ["planargeo report: error: scene 'tree' gives non-finite results "
-                                        "(b, qdd, qdd_direct, a, f) with speed=1e+300 (beyond what double "
-                                        "precision can evaluate)"]
+        assert out.err.splitlines() == ["planargeo report: error: scene 'tree' overflows (kinematics overflow: "
+                                        "kappa is not finite for these finite inputs (qd reaches 1e+300)) with "
+                                        "speed=1e+300 (beyond what double precision can evaluate)"]
     assert report.main(p.parse_args(["tree", "--set", "speed=2.0", "--json"])) == 0
 
 def test_a_size_past_the_limit_fails_fast_and_allow_big_lifts_it():

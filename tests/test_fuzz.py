@@ -20,31 +20,7 @@ RUN = Path(__file__).resolve().parent / "fuzz" / "run.py"
 BAD = ("foreign", "non-finite", "hang", "inconsistent")
 
 #: Entry points with defects found by the fast profile that other modules must fix (owner: what).
-KNOWN = {
-    # mechanics/joints.py, subspaces.py ("names"): overflow warnings, complex and None accepted
-    "joints.reaction_space_of": "mechanics: overflow warning in reaction_space_of for 1e200 spaces",
-    "subspaces.reactive_acceleration_space": "mechanics: overflow warning for 1e300 inputs",
-    "subspaces.active_acceleration": "mechanics: overflow warning in matmul",
-    "subspaces.reactive_acceleration": "mechanics: overflow warning in matmul",
-    "subspaces.wrench_projectors": "mechanics: invalid-value warning for a zero motion space",
-    "subspaces.twist_projectors": "mechanics: invalid-value warning for a zero motion space",
-    "subspaces.inertia_decomposition": "mechanics: invalid-value warning for a zero motion space",
-    "subspaces.inverse_inertia_decomposition": "mechanics: invalid-value warning for a zero motion space",
-    "subspaces.joint_cond": "mechanics: inf for zeros, TypeError for None",
-    "subspaces.joint_scale": "mechanics: complex accepted with a ComplexWarning",
-    "subspaces.singular_joint_error": "mechanics: TypeError for cond=None",
-    # algorithms/crba.py, mechanics/kinematics.py, model.py ("kernels"): issue 16 items 4-7
-    "mass_matrix": "kernels: overflow warning and NaN for q near 1e200",
-    "bias_forces": "kernels: overflow warning for qd near 1e160",
-    "kinematics": "kernels: overflow warning for qd near 1e160",
-    "chain_model": "kernels: hangs on n = 10**30, TypeError for bad n",
-    "random_model": "kernels: hangs on huge n, TypeError for n = 3.0",
-    # widgets ("widgets"): explorer.set with a wrong type lets traitlets' TraitError out (issue 16 item 3)
-    **{f"{name}.set": "widgets: TraitError out of set() for None / a dict / a NaN checkbox"
-       for name in ("ProjectiveExplorer", "PercussionExplorer", "ScrewSumExplorer", "ChainExplorer",
-                    "CarExplorer", "SliderCrankExplorer", "TreeExplorer")},
-    "Explorer.export_svg": "widgets: a raw OSError (a folder, /dev/full) instead of OutputError (issue 16 item 8)",
-}
+KNOWN: dict[str, str] = {}
 
 
 @pytest.fixture(scope="module")

@@ -55,7 +55,8 @@ def calls_during(action) -> tuple[collections.Counter, set[tuple[str, ...]]]:
         chain, f = [], frame
         while f is not None:
             m = f.f_globals.get("__name__", "")
-            if m.startswith("planargeo") and (not chain or chain[-1] != m):
+            # a decorator's wrapper (planargeo._validate's errstate/overflow guards) is not a layer step
+            if m.startswith("planargeo") and m != "planargeo._validate" and (not chain or chain[-1] != m):
                 chain.append(m)
             f = f.f_back
         stacks.add(tuple(reversed(chain)))

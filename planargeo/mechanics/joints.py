@@ -54,7 +54,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo._validate import as_xy
+from planargeo._validate import as_xy, overflow_checked
 from planargeo.errors import InputError, ShapeError
 from planargeo.screws.twists import unit_rotation, unit_translation
 
@@ -203,6 +203,7 @@ def reaction_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
     return np.stack([_force_through(p, ex), _force_through(p, ey), couple], axis=-1)
 
 
+@overflow_checked("s")
 def R_of(s, point=(0.0, 0.0)) -> np.ndarray:
     """Reaction space ``R`` (``sᵀR = 0``) of the joint whose motion space is ``s`` (thesis 6.1, 5.63, 7.16).
 
@@ -258,6 +259,7 @@ def R_of(s, point=(0.0, 0.0)) -> np.ndarray:
     from planargeo._validate import as_array
 
     a = as_array(s, "s")
+    point = as_xy(point, "point")
     if a.ndim == 1 and a.shape == (3,):
         a = a[:, None]
     if a.ndim != 2 or a.shape[0] != 3 or a.shape[1] > 3:

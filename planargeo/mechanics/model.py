@@ -541,6 +541,9 @@ def random_model(n: int, seed=None, *, kinds=("revolute", "prismatic"), tree: bo
     (5, True)
     """
     n = _body_count(n, allow_large)
+    if not (seed is None or isinstance(seed, np.random.Generator)
+            or (isinstance(seed, (int, np.integer)) and not isinstance(seed, bool) and seed >= 0)):
+        raise InputError(f"seed must be None, a non-negative int or a numpy Generator, got {seed!r}")
     rng = np.random.default_rng(seed)
     bodies, joints, parents = [], [], []
     for i in range(n):

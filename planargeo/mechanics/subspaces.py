@@ -62,8 +62,9 @@ import math
 
 import numpy as np
 
-from planargeo._validate import as_array, check_positive_semidefinite
-from planargeo.errors import COND_LIMIT, InputError, ShapeError, SingularConfigurationError, SingularInertiaError
+from planargeo._validate import as_array, as_scalar, check_overflow, check_positive_semidefinite, overflow_checked
+from planargeo.errors import (COND_LIMIT, InputError, NonFiniteError, NumericOverflowError, ShapeError,
+                              SingularConfigurationError, SingularError, SingularInertiaError)
 
 __all__ = [
     "T_of", "U_of",
@@ -114,8 +115,12 @@ def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
     >>> joint_cond(0.0, 2.0, 1.0)
     inf
     """
-    smin = abs(float(smin))
-    return math.sqrt(float(A_norm2)) * float(s_norm2) / smin if smin > 0 else math.inf
+    smin, A_norm2, s_norm2 = (as_scalar(x, name) for x, name in
+                              ((smin, "smin"), (A_norm2, "A_norm2"), (s_norm2, "s_norm2")))
+    if A_norm2 < 0 or s_norm2 < 0:
+        raise InputError(f"A_norm2 and s_norm2 are squared norms (>= 0), got {A_norm2!r}, {s_norm2!r}")
+    with np.errstate(over="ignore"):
+        return math.sqrt(A_norm2) * s_norm2 / abs(smin) if smin != 0 else math.inf
 
 
 def joint_scale(A, s, point):
@@ -146,11 +151,15 @@ def joint_scale(A, s, point):
     >>> round(float(np.sqrt(2 + 2 * 0.25 + 0.0625)), 12)
     1.600781059358
     """
+    if any(np.iscomplexobj(x) for x in (A, s, point)):
+        raise InputError("joint_scale takes real A, s and point, got a complex array")
     A = np.asarray(A, dtype=float)
     s = np.asarray(s, dtype=float)
     if s.ndim == 1:
         s = s[:, None]
     P = np.asarray(point, dtype=float)
+    if not (np.isfinite(A).all() and np.isfinite(s).all() and np.isfinite(P).all()):
+        raise NonFiniteError("joint_scale takes finite A, s and point")
     if A.ndim == 2 and s.ndim == 2 and P.ndim == 1:      # one joint: the same arithmetic on Python floats
         out = _joint_scale_one(A.tolist(), s.T.tolist(), *P.tolist())
         if out is not None:
@@ -174,9 +183,10 @@ def joint_scale(A, s, point):
         F = mx * np.sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + 2.0 * (r[3] * r[3] + r[4] * r[4] + r[5] * r[5]))
     x, y = x[..., None], y[..., None]
     s0, s1, s2 = s[..., 0, :], s[..., 1, :], s[..., 2, :]
-    t0, t1 = s0 - y * s2, s1 + x * s2
-    ss = np.sum(t0 * t0 + t1 * t1 + s2 * s2, axis=-1)
-    out = (np.sqrt(F2) if F2 is not None else F) * ss
+    with np.errstate(over="ignore", invalid="ignore"):
+        t0, t1 = s0 - y * s2, s1 + x * s2
+        ss = np.sum(t0 * t0 + t1 * t1 + s2 * s2, axis=-1)
+        out = check_overflow((np.sqrt(F2) if F2 is not None else F) * ss, "joint_scale", "A or s")
     return float(out) if np.ndim(out) == 0 else out
 
 
@@ -193,7 +203,8 @@ def _joint_scale_one(A, cols, x, y):
     for s0, s1, s2 in cols:
         t0, t1 = s0 - y * s2, s1 + x * s2
         ss += t0 * t0 + t1 * t1 + s2 * s2
-    return math.sqrt(F2) * ss
+    out = math.sqrt(F2) * ss
+    return out if out < math.inf else None
 
 
 def singular_joint_error(i: int, cond: float) -> SingularConfigurationError:
@@ -202,11 +213,23 @@ def singular_joint_error(i: int, cond: float) -> SingularConfigurationError:
     >>> str(singular_joint_error(3, 2e12))
     'sᵀAs of joint 3 is singular: the inertia has (almost) nothing along s (condition number 2e+12)'
     """
+    if isinstance(i, bool) or not isinstance(i, (int, np.integer)):
+        raise InputError(f"i must be a joint index (an int), got {i!r}")
+    cond = as_scalar(cond, "cond", finite=False)
     return SingularConfigurationError(
-        f"sᵀAs of joint {i} is singular: the inertia has (almost) nothing along s", float(cond))
+        f"sᵀAs of joint {i} is singular: the inertia has (almost) nothing along s", cond)
 
 
 # ----------------------------------------------------------------------------- helpers
+def _what(what, default: str) -> str:
+    """The name an error message gives the matrix (``what``, a string, or ``default``)."""
+    if what is None:
+        return default
+    if not isinstance(what, str):
+        raise InputError(f"what must be a string naming the matrix, got {what!r}")
+    return what
+
+
 def _space(x, name: str) -> np.ndarray:
     """Validate a subspace: (..., 3, k) float array; a (3,) vector is one column."""
     a = as_array(x, name)
@@ -474,9 +497,10 @@ def T_of(A, s, *, what: str | None = None) -> np.ndarray:
     ...
     planargeo.errors.SingularInertiaError: A must be positive semi-definite, got smallest eigenvalue -1 (condition number inf)
     """
-    return _T(_inertia(A, "A"), _space(s, "s"), what or "sᵀAs")
+    return _T(_inertia(A, "A"), _space(s, "s"), _what(what, "sᵀAs"))
 
 
+@overflow_checked("A or R")
 def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
     """Reactive-acceleration space ``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹`` (thesis 6.37, 6.45, 6.99; 6.33 corrected).
 
@@ -535,13 +559,23 @@ def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
            [ 0., -1.]])
     """
     R = _space(R, "R")
-    if s is None:
-        A, eig = _inertia_eig(A, "A")
-        return _U(A, R, eig=eig, what=what)
+    try:
+        if s is None:
+            A, eig = _inertia_eig(A, "A")
+            return _U(A, R, eig=eig, what=_what(what, None))
+    except np.linalg.LinAlgError as e:          # LAPACK on entries near the float range
+        if isinstance(e, SingularError):
+            raise
+        raise NumericOverflowError(f"U_of: A or R too large to decompose ({e})") from None
     s = _space(s, "s")
     _check_complementary(s, R)
     A = _inertia(A, "A")
-    return _U(A, R, s, _T(A, s, what or "sᵀAs"))
+    try:
+        return _U(A, R, s, _T(A, s, _what(what, "sᵀAs")))
+    except np.linalg.LinAlgError as e:          # LAPACK on entries near the float range
+        if isinstance(e, SingularError):
+            raise
+        raise NumericOverflowError(f"U_of: A or R too large to decompose ({e})") from None
 
 
 # ----------------------------------------------------------------------------- projections
@@ -567,6 +601,7 @@ def reaction_force(U, f) -> np.ndarray:
     return _tmul(_space(U, "U"), _vec(f, "f"))
 
 
+@overflow_checked("T or a")
 def active_acceleration(T, a) -> np.ndarray:
     """Active (absolute joint) acceleration ``ψ = Tᵀ a`` (thesis 6.62b, 6.57).
 
@@ -578,6 +613,7 @@ def active_acceleration(T, a) -> np.ndarray:
     return _tmul(_space(T, "T"), _vec(a, "a"))
 
 
+@overflow_checked("R or a")
 def reactive_acceleration(R, a) -> np.ndarray:
     """Reactive-acceleration components ``γ = Rᵀ a`` (thesis 6.62a, 6.60).
 
@@ -730,7 +766,7 @@ def effective_mobility(I, s, *, what: str | None = None) -> np.ndarray:
            [0. , 0. , 0. ],
            [0. , 0. , 0.4]])
     """
-    return _effective_mobility(_inertia(I, "I"), _space(s, "s"), what or "sᵀIs")
+    return _effective_mobility(_inertia(I, "I"), _space(s, "s"), _what(what, "sᵀIs"))
 
 
 def effective_base_inertia(I, R) -> np.ndarray:

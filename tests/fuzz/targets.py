@@ -87,6 +87,7 @@ NONFINITE_OK = {
     "to_xy": _any_ideal, "signed_distance": _any_ideal, "line_direction": _any_ideal,
     "foot_point": _any_ideal, "direction": _always, "pole_xy": _any_ideal,
     "wrench_axis": _any_ideal, "cross_cond": lambda a, k, out: bool(np.all(np.isinf(out) | np.isfinite(out))),
+    "joint_cond": lambda a, k, out: bool(np.all(np.isinf(out) | np.isfinite(out))),   # inf: exactly singular
 }
 
 
