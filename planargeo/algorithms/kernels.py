@@ -43,7 +43,7 @@ from planargeo.errors import COND_LIMIT
 from planargeo.mechanics.subspaces import COND_LIMIT2
 
 __all__ = ["FIXED", "REVOLUTE", "PRISMATIC", "BLOCK", "OK", "NOT_FINITE", "tables", "workspace",
-           "kinematics_state", "articulated_body_state", "newton_euler_state", "forward_dynamics_one",
+           "kinematics_state", "articulated_body_state", "columns", "articulated_body_block", "newton_euler_state", "forward_dynamics_one",
            "forward_dynamics_many", "inverse_dynamics_one", "inverse_dynamics_many", "singular_joint"]
 
 FIXED, REVOLUTE, PRISMATIC = 0, 1, 2
@@ -356,9 +356,8 @@ Columns = namedtuple("Columns", "x y z out origin r frame s sq v kappa A d U D u
 
 
 @inline
-def columns(N, nq):
-    """Fresh :data:`Columns` for one block of an ``N``-body model, the ground row at rest at the origin."""
-    L = BLOCK
+def columns(N, nq, L):
+    """Fresh :data:`Columns` for blocks of up to ``L`` states of an ``N``-body model, the ground row at rest."""
     w = Columns(np.empty((nq, L)), np.empty((nq, L)), np.empty((nq, L)), np.empty((nq, L)),
                 np.zeros((N + 1, 2, L)), np.empty((N, 2, L)), np.zeros((N + 1, 4, L)), np.empty((N, 3, L)),
                 np.empty((3, L)), np.zeros((N + 1, 3, L)), np.empty((N, 3, L)), np.empty((N + 1, 6, L)),
@@ -546,7 +545,7 @@ def _range(inverse, model, x, y, z, fext, out, lo, hi):
     """
     if inverse:
         return _block(inverse, model, x, y, z, fext, out, lo, hi)
-    w = columns(model[0].shape[0], x.shape[1])
+    w = columns(model[0].shape[0], x.shape[1], min(BLOCK, hi - lo))
     for start in range(lo, hi, BLOCK):
         stop = min(hi, start + BLOCK)
         if not articulated_body_block(model, x, y, z, fext, start, stop, w, out):
