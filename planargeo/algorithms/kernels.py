@@ -33,12 +33,12 @@ mass, centre of mass in the body frame, inertia about it) and ``gravity`` (2,).
 from __future__ import annotations
 
 import math
-import os
 import threading
 from collections import namedtuple
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
-from numba import get_num_threads, njit, prange
+from numba import get_num_threads, njit
 
 from planargeo.errors import COND_LIMIT
 from planargeo.mechanics.subspaces import COND_LIMIT2
@@ -51,7 +51,7 @@ FIXED, REVOLUTE, PRISMATIC = 0, 1, 2
 _CODES = {"fixed": FIXED, "revolute": REVOLUTE, "prismatic": PRISMATIC}
 #: what a state kernel returns when it succeeded, and when an input or the result is not finite
 OK, NOT_FINITE = -1, -2
-#: states per block of a batch: one workspace per block, the blocks shared among numba's threads
+#: states per block of a batch (:func:`articulated_body_block`); large batches are shared among threads in runs of blocks
 BLOCK = 256
 
 jit = njit(cache=True, nogil=True, error_model="numpy")
@@ -556,42 +556,36 @@ def _range(inverse, model, x, y, z, fext, out, lo, hi):
     return hi
 
 
-@njit(cache=True, nogil=True, error_model="numpy", parallel=True)
-def _blocks(inverse, model, x, y, z, fext, out, nruns):
-    """:func:`_range` on ``nruns`` runs of blocks of :data:`BLOCK` states shared among numba's threads: the first
-    failed state, or B.  Each run allocates its arrays once (large arrays freed in several threads at once cost
-    more than the kernel)."""
-    B = x.shape[0]
-    nblocks = (B + BLOCK - 1) // BLOCK
-    first = np.full(nruns, B)
-    for run in prange(nruns):
-        lo, hi = run * nblocks // nruns * BLOCK, min(B, (run + 1) * nblocks // nruns * BLOCK)
-        b = _range(inverse, model, x, y, z, fext, out, lo, hi)
-        if b < hi:
-            first[run] = b
-    return first.min() if nruns else B
-
-
-#: OpenMP threads that wait for work sleep rather than spin (unless the user chose): on a machine busy with
-#: other work, spinning threads take the cores the working ones need (N = 10, 10⁴ states, 2 cores, one busy:
-#: 1.1 µs/state spinning, 0.45 passive, as on one thread).  Read when numba first starts its threads.
-os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
-#: batches of fewer states run on the calling thread alone: waking numba's threads costs more than they save
-#: (and, on a machine busy with other work, may cost milliseconds)
+#: batches of fewer states run on the calling thread alone: handing them to threads costs more than it saves
 PARALLEL_STATES = 4 * BLOCK
-#: numba's threading layers must not run two parallel kernels at once from two Python threads
-_PARALLEL = threading.Lock()
+_POOL = []
+_POOL_LOCK = threading.Lock()
+
+
+def _pool():
+    """The threads that share a large batch (as many as numba's, ``NUMBA_NUM_THREADS``), started on first use."""
+    with _POOL_LOCK:
+        if not _POOL:
+            _POOL.append(ThreadPoolExecutor(get_num_threads(), thread_name_prefix="planargeo-kernels"))
+    return _POOL[0]
 
 
 def _many(inverse, kind, parent, body, gravity, x, y, z, fext):
+    """:func:`_range` on the B states, in one run per thread of whole blocks (the kernels release the GIL).
+
+    Python's threads, which sleep while they wait, rather than numba's OpenMP ones, which spin: on a
+    machine busy with other work the spinning cost 3× the time of one thread (N = 10, 10⁴ states, 2 cores).
+    """
     out = np.empty(x.shape)
     B, model = x.shape[0], (kind, parent, body, gravity)
-    if B < PARALLEL_STATES:
-        first = _range(inverse, model, x, y, z, fext, out, 0, B)
+    nblocks = (B + BLOCK - 1) // BLOCK
+    n = 1 if B < PARALLEL_STATES else min(get_num_threads(), nblocks)
+    runs = [(r * nblocks // n * BLOCK, min(B, (r + 1) * nblocks // n * BLOCK)) for r in range(n)]
+    if n == 1:
+        firsts = [_range(inverse, model, x, y, z, fext, out, 0, B)]
     else:
-        with _PARALLEL:
-            first = _blocks(inverse, model, x, y, z, fext, out, min((B + BLOCK - 1) // BLOCK, 4 * get_num_threads()))
-    return out, (first if first < B else -1)
+        firsts = list(_pool().map(lambda run: _range(inverse, model, x, y, z, fext, out, *run), runs))
+    return out, next((b for b, (lo, hi) in zip(firsts, runs) if b < hi), -1)
 
 
 def forward_dynamics_many(kind, parent, body, gravity, q, qd, tau, fext):
