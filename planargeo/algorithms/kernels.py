@@ -544,7 +544,7 @@ def _range(inverse, model, x, y, z, fext, out, lo, hi):
     """The states ``lo:hi``: forward dynamics a block of :data:`BLOCK` at a time by :func:`articulated_body_block`
     (a block it does not finish, state by state), inverse dynamics by :func:`_block`.  The first failed state, or ``hi``.
     """
-    if inverse:
+    if inverse or hi - lo == 1:                     # (one state: its columns would cost more than the kernel)
         return _block(inverse, model, x, y, z, fext, out, lo, hi)
     w = columns(model[0].shape[0], x.shape[1], min(BLOCK, hi - lo))
     for start in range(lo, hi, BLOCK):
@@ -578,13 +578,13 @@ def _many(inverse, kind, parent, body, gravity, x, y, z, fext):
     """
     out = np.empty(x.shape)
     B, model = x.shape[0], (kind, parent, body, gravity)
+    if B < PARALLEL_STATES:
+        first = _range(inverse, model, x, y, z, fext, out, 0, B)
+        return out, (first if first < B else -1)
     nblocks = (B + BLOCK - 1) // BLOCK
-    n = 1 if B < PARALLEL_STATES else min(get_num_threads(), nblocks)
+    n = min(get_num_threads(), nblocks)
     runs = [(r * nblocks // n * BLOCK, min(B, (r + 1) * nblocks // n * BLOCK)) for r in range(n)]
-    if n == 1:
-        firsts = [_range(inverse, model, x, y, z, fext, out, 0, B)]
-    else:
-        firsts = list(_pool().map(lambda run: _range(inverse, model, x, y, z, fext, out, *run), runs))
+    firsts = list(_pool().map(lambda run: _range(inverse, model, x, y, z, fext, out, *run), runs))
     return out, next((b for b, (lo, hi) in zip(firsts, runs) if b < hi), -1)
 
 
