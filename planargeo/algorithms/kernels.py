@@ -1,4 +1,4 @@
-"""The compiled recursions: ABA (thesis 3.31-3.42) and RNEA (2.18, 3.10, 3.5), one state at a time.
+"""The compiled recursions: ABA (thesis 3.31-3.42) and RNEA (2.18, 3.10, 3.5), one state at a time or a block.
 
 These are the hot loops of :func:`planargeo.algorithms.aba.forward_dynamics` and
 :func:`planargeo.algorithms.rnea.inverse_dynamics` for models whose joints are all
@@ -20,6 +20,12 @@ accurately as one at it; and the singularity rule of
 :data:`planargeo.errors.COND_LIMIT`, measured at the joint's point, reads
 ``A_i`` and ``s_i`` as they are.  Trees sum every child into its parent (3.38-3.39 with
 ``i+1`` read as "each child of ``i``").
+
+**Batches.**  :func:`articulated_body_block` runs the ABA on blocks of :data:`BLOCK` states
+with the states innermost (each per-body step a loop over the block's states, which the
+compiler vectorises, and the states' independent chains overlap), giving each state the
+numbers :func:`articulated_body_state` gives it; a block it does not finish is run state by
+state.  Large batches are shared among threads, whole blocks at a time.
 
 A state kernel returns ``-1`` when it succeeded, the index of a joint the singularity
 rule refuses (its condition number left in ``w.D``), or ``-2`` when an input or the
