@@ -71,7 +71,7 @@ _USES_DIRECTION = ("prismatic", "revolute_prismatic", "twin_prismatic", "plane")
 
 
 def _check_kind(kind) -> str:
-    if kind not in DOF:
+    if not isinstance(kind, str) or kind not in DOF:
         raise InputError(f"kind must be one of {', '.join(map(repr, KINDS))}, got {kind!r}")
     return kind
 

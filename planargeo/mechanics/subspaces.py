@@ -63,7 +63,7 @@ import math
 import numpy as np
 
 from planargeo._validate import as_array, as_scalar, check_overflow, check_positive_semidefinite, overflow_checked
-from planargeo.errors import (COND_LIMIT, InputError, NonFiniteError, NumericOverflowError, ShapeError,
+from planargeo.errors import (COND_LIMIT, InputError, NumericOverflowError, ShapeError,
                               SingularConfigurationError, SingularError, SingularInertiaError)
 
 __all__ = [
@@ -151,15 +151,12 @@ def joint_scale(A, s, point):
     >>> round(float(np.sqrt(2 + 2 * 0.25 + 0.0625)), 12)
     1.600781059358
     """
-    if any(np.iscomplexobj(x) for x in (A, s, point)):
-        raise InputError("joint_scale takes real A, s and point, got a complex array")
-    A = np.asarray(A, dtype=float)
-    s = np.asarray(s, dtype=float)
+    A, P = as_array(A, "A", (3, 3)), as_array(point, "point", (2,))
+    s = as_array(s, "s")
     if s.ndim == 1:
         s = s[:, None]
-    P = np.asarray(point, dtype=float)
-    if not (np.isfinite(A).all() and np.isfinite(s).all() and np.isfinite(P).all()):
-        raise NonFiniteError("joint_scale takes finite A, s and point")
+    if s.ndim < 2 or s.shape[-2] != 3:
+        raise ShapeError(f"s must have shape (..., 3, k), got shape {s.shape}")
     if A.ndim == 2 and s.ndim == 2 and P.ndim == 1:      # one joint: the same arithmetic on Python floats
         out = _joint_scale_one(A.tolist(), s.T.tolist(), *P.tolist())
         if out is not None:
@@ -579,6 +576,7 @@ def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
 
 
 # ----------------------------------------------------------------------------- projections
+@overflow_checked("s or f")
 def active_force(s, f) -> np.ndarray:
     """Active (joint) force ``Q = sᵀ f`` (thesis 6.61a, 6.51).
 
@@ -681,6 +679,7 @@ def joint_space_inertia(I, s) -> np.ndarray:
     return _tr(s) @ I @ s
 
 
+@overflow_checked("I or R")
 def reaction_space_inverse_inertia(I, R) -> np.ndarray:
     """Reaction-space inverse inertia ``Rᵀ I⁻¹ R`` (thesis 6.71): ``γ = (RᵀI⁻¹R) μ``.
 
@@ -747,6 +746,7 @@ def inverse_inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     return _effective_mobility(d.A, d.s, "sᵀIs"), d.U @ _tr(IiR)
 
 
+@overflow_checked("I or s")
 def effective_mobility(I, s, *, what: str | None = None) -> np.ndarray:
     """Effective inverse inertia of a joint-constrained body ``s Tᵀ I⁻¹ = s (sᵀIs)⁻¹ sᵀ`` (thesis 6.93).
 

@@ -512,6 +512,8 @@ class Explorer:
             special = path.exists() and not path.is_file()
         except TypeError:
             raise InputError(f"path must be a str or os.PathLike naming a file, got {path!r}") from None
+        except OSError as e:                             # e.g. a name too long for the file system
+            raise OutputError(f"cannot write {path}: {e.strerror or e}") from None
         if special:
             raise OutputError(f"cannot write {path}: it exists and is not a regular file")
         buf = io.BytesIO()
