@@ -10,7 +10,8 @@ import functools
 
 import numpy as np
 
-from planargeo.errors import InputError, NonFiniteError, NumericOverflowError, ShapeError, SingularInertiaError
+from planargeo.errors import (InputError, NonFiniteError, NumericOverflowError, PlanargeoError, ShapeError,
+                              SingularInertiaError)
 
 __all__ = ["as_array", "as_vec3", "as_mat3", "as_xy", "as_scalar", "check_symmetric",
            "check_positive_definite", "check_positive_semidefinite", "check_positive", "PSD_RTOL",
@@ -237,14 +238,21 @@ def check_overflow(out, what: str, culprits: str, ok=None):
 def overflow_checked(culprits: str):
     """Decorator: run the function with numpy's overflow warnings off, then :func:`check_overflow` its result.
 
+    A LAPACK failure (not converging on entries near the float range) is reported the same way.
+
     Only for functions whose every result is finite for finite arguments (they validate
     their arguments with :func:`as_array`).
     """
     def deco(fn):
         @functools.wraps(fn)
         def wrapper(*args, **kwargs):
-            with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-                out = fn(*args, **kwargs)
+            try:
+                with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+                    out = fn(*args, **kwargs)
+            except np.linalg.LinAlgError as e:     # LAPACK on finite entries near the float range
+                if isinstance(e, PlanargeoError):
+                    raise
+                raise NumericOverflowError(f"{fn.__name__}: {culprits} too large to decompose ({e})") from None
             return check_overflow(out, f"{fn.__name__}", culprits)
         return wrapper
     return deco

@@ -729,6 +729,7 @@ def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     return _solve_basis(C @ Q, L, "[C Q1, C Q2, C Q3]", rtol)
 
 
+@overflow_checked("C or Q1")
 def special_base(C, Q1, rtol: float = 1e-9):
     """The special base of Fig. 5.4: ``Q1`` exterior, ``Q2, Q3`` its tangent contact points.
 

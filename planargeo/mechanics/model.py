@@ -541,7 +541,10 @@ def random_model(n: int, seed=None, *, kinds=("revolute", "prismatic"), tree: bo
     (5, True)
     """
     n = _body_count(n, allow_large)
-    if isinstance(kinds, str) or not kinds or not all(isinstance(k, str) and k in JOINT_DOFS for k in kinds):
+    if not isinstance(tree, bool):
+        raise InputError(f"tree must be True or False, got {tree!r}")
+    if (not isinstance(kinds, (list, tuple)) or not kinds
+            or not all(isinstance(k, str) and k in JOINT_DOFS for k in kinds)):
         raise InputError(f"kinds must be a non-empty sequence of joint kinds ({', '.join(JOINT_DOFS)}), got {kinds!r}")
     if not (seed is None or isinstance(seed, np.random.Generator)
             or (isinstance(seed, (int, np.integer)) and not isinstance(seed, bool) and seed >= 0)):

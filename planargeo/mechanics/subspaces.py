@@ -63,8 +63,8 @@ import math
 import numpy as np
 
 from planargeo._validate import as_array, as_scalar, check_overflow, check_positive_semidefinite, overflow_checked
-from planargeo.errors import (COND_LIMIT, InputError, NumericOverflowError, ShapeError,
-                              SingularConfigurationError, SingularError, SingularInertiaError)
+from planargeo.errors import (COND_LIMIT, InputError, ShapeError,
+                              SingularConfigurationError, SingularInertiaError)
 
 __all__ = [
     "T_of", "U_of",
@@ -164,10 +164,10 @@ def joint_scale(A, s, point):
     x, y = P[..., 0], P[..., 1]
     a00, a01, a02 = A[..., 0, 0], A[..., 0, 1], A[..., 0, 2]
     a11, a12, a22 = A[..., 1, 1], A[..., 1, 2], A[..., 2, 2]
-    p02 = a02 + y * a00 - x * a01
-    p12 = a12 + y * a01 - x * a11
-    p22 = a22 + y * a02 - x * a12 + y * p02 - x * p12
-    with np.errstate(over="ignore", under="ignore"):
+    with np.errstate(over="ignore", under="ignore", invalid="ignore"):   # out of range: check_overflow below
+        p02 = a02 + y * a00 - x * a01
+        p12 = a12 + y * a01 - x * a11
+        p22 = a22 + y * a02 - x * a12 + y * p02 - x * p12
         F2 = a00 * a00 + a11 * a11 + p22 * p22 + 2.0 * (a01 * a01 + p02 * p02 + p12 * p12)
     if not np.all((F2 < 1e300) & (F2 > 1e-300)):
         # squares overflowed or underflowed (masses like 1e160 or 1e-170): the norm is homogeneous,
@@ -175,9 +175,10 @@ def joint_scale(A, s, point):
         e = [np.abs(v) for v in np.broadcast_arrays(a00, a11, p22, a01, p02, p12)]
         mx = np.maximum.reduce(e)
         safe = np.where(mx > 0, mx, 1.0)
-        r = [v / safe for v in e]
-        F2 = None
-        F = mx * np.sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + 2.0 * (r[3] * r[3] + r[4] * r[4] + r[5] * r[5]))
+        with np.errstate(invalid="ignore", under="ignore"):    # inf / inf: check_overflow below names it
+            r = [v / safe for v in e]
+            F2 = None
+            F = mx * np.sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + 2.0 * (r[3] * r[3] + r[4] * r[4] + r[5] * r[5]))
     x, y = x[..., None], y[..., None]
     s0, s1, s2 = s[..., 0, :], s[..., 1, :], s[..., 2, :]
     with np.errstate(over="ignore", invalid="ignore"):
@@ -444,6 +445,7 @@ def _U(A, R: np.ndarray, s=None, T=None, *, name: str = "A", eig=None, what=None
 
 
 # ----------------------------------------------------------------------------- T and U
+@overflow_checked("A or s")
 def T_of(A, s, *, what: str | None = None) -> np.ndarray:
     """Percussion (active-force) space ``T = A s (sᵀ A s)⁻¹`` (thesis 6.30, 6.36, 6.39, 6.105).
 
@@ -556,23 +558,13 @@ def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
            [ 0., -1.]])
     """
     R = _space(R, "R")
-    try:
-        if s is None:
-            A, eig = _inertia_eig(A, "A")
-            return _U(A, R, eig=eig, what=_what(what, None))
-    except np.linalg.LinAlgError as e:          # LAPACK on entries near the float range
-        if isinstance(e, SingularError):
-            raise
-        raise NumericOverflowError(f"U_of: A or R too large to decompose ({e})") from None
+    if s is None:
+        A, eig = _inertia_eig(A, "A")
+        return _U(A, R, eig=eig, what=_what(what, None))
     s = _space(s, "s")
     _check_complementary(s, R)
     A = _inertia(A, "A")
-    try:
-        return _U(A, R, s, _T(A, s, _what(what, "sᵀAs")))
-    except np.linalg.LinAlgError as e:          # LAPACK on entries near the float range
-        if isinstance(e, SingularError):
-            raise
-        raise NumericOverflowError(f"U_of: A or R too large to decompose ({e})") from None
+    return _U(A, R, s, _T(A, s, _what(what, "sᵀAs")))
 
 
 # ----------------------------------------------------------------------------- projections
@@ -588,6 +580,7 @@ def active_force(s, f) -> np.ndarray:
     return _tmul(_space(s, "s"), _vec(f, "f"))
 
 
+@overflow_checked("U or f")
 def reaction_force(U, f) -> np.ndarray:
     """Reaction-force components ``μ = Uᵀ f`` (thesis 6.61b, 6.54).
 
@@ -624,6 +617,7 @@ def reactive_acceleration(R, a) -> np.ndarray:
 
 
 # ----------------------------------------------------------------------------- projectors
+@overflow_checked("A or s or R")
 def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     """The complementary wrench projectors ``(T sᵀ, R Uᵀ)``, summing to 1 (thesis 6.75).
 
@@ -642,6 +636,7 @@ def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     return d.T @ _tr(d.s), d.R @ _tr(d.U)
 
 
+@overflow_checked("A or s or R")
 def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     """The complementary twist projectors ``(s Tᵀ, U Rᵀ)``, summing to 1 (dual of thesis 6.75).
 
@@ -661,6 +656,7 @@ def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 
 
 # ----------------------------------------------------------------------------- inertias
+@overflow_checked("I or s")
 def joint_space_inertia(I, s) -> np.ndarray:
     """Joint-space inertia ``sᵀ I s`` (thesis 6.67, 6.74c): ``Q = (sᵀIs) ψ``.
 
@@ -698,6 +694,7 @@ def reaction_space_inverse_inertia(I, R) -> np.ndarray:
     return _tr(R) @ _solve_A(I, R, "I", eig)
 
 
+@overflow_checked("I or s or R")
 def inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     """Split an inertia as ``I = T sᵀ I + R Uᵀ I`` (thesis 6.76).
 
@@ -723,6 +720,7 @@ def inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     return d.T @ _tr(d.s) @ d.A, d.R @ _tr(d.U) @ d.A
 
 
+@overflow_checked("I or s or R")
 def inverse_inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     """Split an inverse inertia as ``I⁻¹ = s Tᵀ I⁻¹ + U Rᵀ I⁻¹`` (thesis 6.79–6.81).
 
@@ -769,6 +767,7 @@ def effective_mobility(I, s, *, what: str | None = None) -> np.ndarray:
     return _effective_mobility(_inertia(I, "I"), _space(s, "s"), _what(what, "sᵀIs"))
 
 
+@overflow_checked("I or R")
 def effective_base_inertia(I, R) -> np.ndarray:
     """Effective inertia of the joint base ``R Uᵀ I = R (RᵀI⁻¹R)⁻¹ Rᵀ`` (thesis 6.97).
 
@@ -788,6 +787,8 @@ def effective_base_inertia(I, R) -> np.ndarray:
     """
     I, eig = _inertia_eig(I, "I")
     R = _space(R, "R")
+    if R.shape[-1] == 0:                                # no reaction (a plane joint): nothing is transmitted
+        return np.zeros(np.broadcast_shapes(I.shape, R.shape[:-2] + (3, 3)))
     M, cond = _weighted_gram(R, _solve_A(I, R, "I", eig), 1.0 / eig[1])
     _check(cond, SingularConfigurationError, "RᵀI⁻¹R is singular: the inertia has (almost) nothing along R")
     return _right_solve(R, M) @ _tr(R)
