@@ -1034,7 +1034,7 @@ def conic_circle(centre, radius, imaginary: bool = False) -> np.ndarray:
     if not isinstance(imaginary, (bool, np.bool_)):
         raise InputError(f"imaginary must be True or False, got {imaginary!r}")
     r2 = np.where(imaginary, -1.0, 1.0) * r * r
-    shape = np.broadcast_shapes(c.shape[:-1], r.shape)
+    shape = batch_shape(centre=(c, 1), radius=(r, 0))
     C = np.zeros(shape + (3, 3))
     C[..., 0, 0] = C[..., 1, 1] = 1.0
     C[..., 0, 2] = C[..., 2, 0] = -c[..., 1]

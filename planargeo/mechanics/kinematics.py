@@ -386,6 +386,8 @@ def _kinematics_scalar(model: Model, q: np.ndarray, qd: np.ndarray, f_ext) -> Da
         kappa.append((k0, k1, 0.0))
         m, J = float(arr["mass"][i]), float(arr["J"][i])
         cbx, cby = model.bodies[i].com
+        if not math.isfinite(th):                          # the joint angles sum past the float range
+            raise NumericOverflowError(f"kinematics: body {i}'s angle overflows double precision (q too large)")
         ct, st = cos(th), sin(th)
         cx, cy = x + ct * cbx - st * cby, y + st * cbx + ct * cby
         com.append((cx, cy))

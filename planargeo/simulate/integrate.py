@@ -534,7 +534,7 @@ def _step_budget(k: int, t: float, t_end: float, max_steps: int, method: str) ->
     if k >= max_steps:
         return (f"stopped at t = {t:.6g}: max_steps = {max_steps} steps taken; pass a larger max_steps "
                 "for a deliberate long run")
-    if k == _PROBE and t > 0 and t_end / t * k > 10 * max_steps:
+    if k == _PROBE and t > 0 and t_end / (10 * max_steps) > t / k:      # t_end / t · k > 10 max_steps, overflow-free
         raise SizeLimitError(f"{method} would need about {t_end / t * k:.3g} steps to reach t_end = {t_end:g} "
                              f"(extrapolated from the first {k}), past max_steps = {max_steps}; pass a larger "
                              "max_steps for a deliberate long run")

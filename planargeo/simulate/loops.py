@@ -55,7 +55,7 @@ import numpy as np
 from planargeo.algorithms.loops import loop_condition, loop_solve
 from planargeo.algorithms.stacked import blocks
 from planargeo.mechanics.contacts import contact_matrix, residual as contact_residual, stacked_contact_spaces, validate_contacts
-from planargeo._validate import as_array, as_scalar, check_overflow, check_tolerance
+from planargeo._validate import as_array, as_scalar, check_overflow, check_tolerance, overflow_checked
 from planargeo.errors import InputError, ShapeError
 from planargeo.mechanics.kinematics import kinematics
 from planargeo.mechanics.model import Model
@@ -155,6 +155,7 @@ def _weighted_correction(model, q, J, rhs, free):
     return out
 
 
+@overflow_checked("q or qd")
 def project_state(model: Model, q, qd, contacts=None, *, fixed=(), tol: float = 1e-12, max_iter: int = 25):
     """Project ``(q, q̇)`` onto the constraint manifold, positions then velocities (thesis 9.54, 9.58, 9.60).
 
