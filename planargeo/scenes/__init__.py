@@ -51,6 +51,8 @@ _MODULES = [
     "planargeo.scenes.mobility_example",
     "planargeo.scenes.slider_crank",
     "planargeo.scenes.trees",
+    "planargeo.scenes.subspace",
+    "planargeo.scenes.impulse",
 ]
 
 _REGISTRY: dict[str, Callable[..., "SceneResult"]] = {}

@@ -1,0 +1,192 @@
+"""A body at rest struck by a short blow: velocity change, reaction impulse, apparent mass (thesis 5.4, 6.3.2).
+
+A blow is a force so short that nothing moves while it acts: only its time
+integral, the *impulse* ``ĵ`` (a wrench ``[Jx, Jy, Jz]``, units N·s), matters.
+Integrating the equations of motion of a body at rest (6.63) over the blow
+gives ``I Δv = ĵ + ĵ_R`` with ``ĵ_R`` the reaction impulse of the support.
+
+* **Free body** (no support): ``Δv = I⁻¹ ĵ``, the *percussion pole* of the
+  blow's line (5.64–5.68 read backwards): the body starts turning about the
+  point whose axis of percussion is the line of the blow.
+* **Held by a joint** ``s`` (a grip pivot, a door hinge): the joint allows only
+  ``Δv = s ψ̂``, and as in 6.93 (applied-wrench sign, see ``docs/errata.md``)
+  ``Δv = s (sᵀIs)⁻¹ sᵀ ĵ``; the support answers with
+  ``ĵ_R = I Δv − ĵ = −R Uᵀ ĵ`` (6.38, 6.61b): zero exactly when the blow lies in
+  the percussion space ``T`` — for a pivot, on its axis of percussion, which
+  crosses the line pivot–centre of mass at the *centre of percussion*
+  ``l = d + ρ²/d`` from the pivot (5.67).
+
+The *apparent mass* along a line (figure 3.3) is the impulse per unit velocity
+change of the struck point along the line: ``m_app = 1 / (uᵀ M u)`` with ``u``
+the unit-force wrench on the line and ``M`` the body's mobility (``I⁻¹`` free,
+the effective mobility ``s (sᵀIs)⁻¹ sᵀ`` of 6.93 when held).  A blow along a
+line through the pivot moves nothing: its apparent mass is infinite.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo._validate import as_vec3, as_xy
+from planargeo.errors import DegenerateGeometryError, ShapeError
+from planargeo.mechanics.subspaces import effective_mobility
+from planargeo.screws.inertia import centre_of_mass, mobility, radius_of_gyration
+
+__all__ = ["impulse_response", "apparent_mass", "centre_of_percussion"]
+
+
+def _unit_force(line) -> np.ndarray:
+    """``line`` scaled to a unit force (``fx² + fy² = 1``); the line at infinity is refused."""
+    u = as_vec3(line, "line")
+    if u.shape != (3,):
+        raise ShapeError(f"line must have shape (3,), got {u.shape}")
+    F = math.hypot(float(u[0]), float(u[1]))
+    if not F > 0:
+        raise DegenerateGeometryError(
+            f"line must be a force line, not the line at infinity (a couple has no apparent mass), got {u!r}")
+    return u / F
+
+
+def impulse_response(I, impulse, s=None) -> tuple[np.ndarray, np.ndarray]:
+    """Velocity change and reaction impulse of a body at rest struck by ``impulse`` (thesis 6.63, 6.93, 6.38).
+
+    Parameters
+    ----------
+    I : array_like, shape (3, 3)
+        The body's inertia at the origin (symmetric; positive definite when
+        ``s`` is None).
+    impulse : array_like, shape (3,)
+        The blow's impulse wrench ``ĵ = [Jx, Jy, Jz]`` (N·s; its line is the
+        line of the blow).
+    s : array_like, shape (3, k) or (3,), optional
+        Motion space of the support (a pivot ``[y, -x, 1]``); None: a free body.
+
+    Returns
+    -------
+    dv : ndarray, shape (3,)
+        The velocity twist just after the blow (its pole is the velocity pole).
+    reaction : ndarray, shape (3,)
+        The support's reaction impulse ``I Δv − ĵ`` (zero for a free body).
+
+    Raises
+    ------
+    InputError
+        ``I`` not symmetric, or a non-finite or wrongly shaped argument.
+    SingularInertiaError
+        ``I`` not positive semi-definite, or singular for a free body.
+    SingularConfigurationError
+        ``sᵀIs`` singular (e.g. a point mass pinned at its own place).
+
+    Examples
+    --------
+    A uniform rod (m = 3, L = 2, along x from the pivot at the origin) struck
+    across at x = 1 by a unit impulse: ``ω = J d / (m L²/3) = 0.25`` and the pivot
+    pulls back by ``J (3d/(2L) − 1) = −0.25``.
+
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> I = inertia_matrix(3.0, [1.0, 0.0], 1.0)
+    >>> dv, jr = impulse_response(I, [0.0, 1.0, 1.0], [0.0, 0.0, 1.0])
+    >>> dv + 0.0, jr + 0.0
+    (array([0.  , 0.  , 0.25]), array([ 0.  , -0.25,  0.  ]))
+    """
+    j = as_vec3(impulse, "impulse")
+    if s is None:
+        M = mobility(I)
+        dv = M @ j
+        return dv, np.zeros(3)
+    M = effective_mobility(I, s)
+    dv = M @ j
+    reaction = np.asarray(I, dtype=float) @ dv - j
+    return dv, reaction
+
+
+def apparent_mass(I, line, s=None) -> float:
+    """Apparent mass of a body at rest along a force line (thesis figure 3.3, 6.93).
+
+    ``m_app = 1 / (uᵀ M u)``: the impulse along ``line`` per unit velocity change
+    of the body's point on the line, measured along the line.
+
+    Parameters
+    ----------
+    I : array_like, shape (3, 3)
+        The body's inertia at the origin.
+    line : array_like, shape (3,)
+        The line (any non-zero multiple of a force wrench on it).
+    s : array_like, shape (3, k) or (3,), optional
+        Motion space of the support; None: a free body.
+
+    Returns
+    -------
+    float
+        The apparent mass (kg); ``math.inf`` when the support takes the whole
+        blow (a line through a pivot).
+
+    Raises
+    ------
+    DegenerateGeometryError
+        ``line`` is the line at infinity (a couple).
+    InputError, SingularInertiaError, SingularConfigurationError
+        As for :func:`impulse_response`.
+
+    Examples
+    --------
+    A uniform rod (m = 3, L = 2) pivoted at one end, struck across at its tip:
+    ``J_P / L² = (m L²/3) / L² = m/3 = 1``; free, ``1 / (1/m + (L/2)²/J_c) = m/4``.
+
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> I = inertia_matrix(3.0, [1.0, 0.0], 1.0)
+    >>> round(apparent_mass(I, [0.0, 1.0, 2.0], [0.0, 0.0, 1.0]), 12), round(apparent_mass(I, [0.0, 1.0, 2.0]), 12)
+    (1.0, 0.75)
+    """
+    u = _unit_force(line)
+    M = mobility(I) if s is None else effective_mobility(I, s)
+    w = float(u @ M @ u)
+    scale = float(np.max(np.abs(M))) * float(u @ u)
+    if w <= 1e-14 * scale:
+        return math.inf
+    return 1.0 / w
+
+
+def centre_of_percussion(I, pivot) -> np.ndarray:
+    """The centre of percussion of a pivot: where its axis of percussion crosses the line pivot–centre of mass (5.67).
+
+    At ``l = d + ρ²/d`` from the pivot, on the far side of the centre of mass
+    (``d``: pivot to centre of mass, ``ρ``: radius of gyration).  A blow there,
+    across that line, leaves the pivot without any reaction impulse.
+
+    Parameters
+    ----------
+    I : array_like, shape (3, 3)
+        A rigid-body inertia (mass > 0) at the origin.
+    pivot : array_like, shape (2,)
+        The pivot ``(x, y)``.
+
+    Returns
+    -------
+    ndarray, shape (2,)
+
+    Raises
+    ------
+    DegenerateGeometryError
+        The pivot is at the centre of mass (the axis is the line at infinity).
+    InputError, SingularInertiaError
+        ``I`` not a valid inertia.
+
+    Examples
+    --------
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> centre_of_percussion(inertia_matrix(3.0, [1.0, 0.0], 1.0), (0.0, 0.0))   # 2L/3 for a rod of L = 2
+    array([1.33333333, 0.        ])
+    """
+    P = as_xy(pivot, "pivot")
+    if P.shape != (2,):
+        raise ShapeError(f"pivot must have shape (2,), got {P.shape}")
+    c = np.asarray(centre_of_mass(I), dtype=float)          # raises for a massless "inertia"
+    rho = float(radius_of_gyration(I))
+    d = c - P
+    dd = float(d @ d)
+    if not dd > 1e-24 * max(1.0, float(P @ P), float(c @ c)):
+        raise DegenerateGeometryError(f"pivot must differ from the centre of mass {tuple(map(float, c))}, "
+                                      f"got {tuple(map(float, P))} (its axis of percussion is the line at infinity)")
+    return P + d * (1.0 + rho * rho / dd)                   # l = d + ρ²/d along the line P c (5.67)

@@ -1,0 +1,223 @@
+"""Scene ``subspace``: the subspace decomposition of one body at a joint (thesis 6.1–6.4, 6.63–6.97).
+
+One rigid body at rest (mass ``m``, centre of mass ``(cx, cy)``, radius of
+gyration ``rho``) is held by one joint and loaded by one applied force ``f``
+(magnitude ``F`` on the line through ``(ax, ay)`` at angle ``force_angle_deg``).
+The joint is a ``revolute`` pivot, a ``prismatic`` slider, a
+``revolute_prismatic`` pin in a slot, or the 2-dof ``twin_prismatic`` plane
+joint of thesis 4.79 (translations along and across ``joint_angle_deg``).
+
+Everything the chapter names is computed with :mod:`planargeo.mechanics.subspaces`:
+
+* the motion space ``s`` and reaction space ``R`` (``sᵀR = 0``, 6.1),
+* ``T = I s (sᵀIs)⁻¹`` (6.36) and ``U = I⁻¹R (RᵀI⁻¹R)⁻¹`` (6.37, 6.33 corrected),
+* the wrench split ``f = T Q + R μ`` with ``Q = sᵀf``, ``μ = Uᵀf`` (6.38, 6.61),
+* the twist split of the free body's acceleration ``I⁻¹f = s ψ + U γ`` with
+  ``ψ = Tᵀ I⁻¹ f``, ``γ = Rᵀ I⁻¹ f`` (6.44, 6.62, 6.80–6.81): ``s ψ`` is the
+  acceleration of the body held by the (unpowered) joint (6.93 with the
+  applied-wrench sign, ``docs/errata.md``), ``U γ`` the motion the joint's base
+  would need,
+* the joint-space inertia ``sᵀIs`` (6.67) and the reaction-space inverse
+  inertia ``RᵀI⁻¹R`` (6.71),
+* the joint's reaction on the body ``I a − f = −R μ``,
+* the power relations as residuals that must vanish: ``sᵀT − 1``, ``RᵀU − 1``,
+  ``TᵀU``, ``T sᵀ + R Uᵀ − 1``, ``sᵀR``, and the powers ``(sψ)ᵀ(Rμ)`` (the
+  reaction does no work on the allowed motion) and ``(Uγ)ᵀ(TQ)``.
+
+For a 2-dof joint the two columns of ``s`` span a line of poles (every instant
+centre the joint allows), which is the reaction line ``R``; the two columns of
+``T`` are two lines through one point, ``U`` (``TᵀU = 0``): the active forces
+form the pencil of lines through ``U``.  Both are reported (``s_line``,
+``T_pencil``).
+
+Examples
+--------
+>>> from planargeo import scenes
+>>> r = scenes.build("subspace", joint="revolute", px=0.0, py=0.0, m=2.0, cx=1.0, cy=0.0, rho=0.5)
+>>> r.quantities["T"]                          # the pivot's axis of percussion, x = d + ρ²/d (5.67)
+[[0.0], [0.8], [1.0]]
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo.errors import DegenerateGeometryError
+from planargeo.mechanics.joints import reaction_space, motion_space
+from planargeo.mechanics.subspaces import (Decomposition, joint_space_inertia,
+                                           reaction_space_inverse_inertia)
+from planargeo.scenes import SceneResult, check_param, register
+from planargeo.screws.twists import inertia_matrix
+
+__all__ = ["subspace", "JOINT_KINDS", "subspace_state", "unit_direction"]
+
+#: The joints the scene offers (the package's kind names; ``twin_prismatic`` is thesis 4.79's plane joint).
+JOINT_KINDS = ("revolute", "prismatic", "revolute_prismatic", "twin_prismatic")
+
+
+def _plain(x):
+    return (np.asarray(x, dtype=float) + 0.0).tolist()
+
+
+def unit_direction(deg: float) -> np.ndarray:
+    """The unit vector at ``deg`` degrees from +x, exact at multiples of 90° (no ``6e-17`` for a zero).
+
+    Parameters
+    ----------
+    deg : float
+        The angle in degrees.
+
+    Returns
+    -------
+    ndarray, shape (2,)
+
+    Examples
+    --------
+    >>> unit_direction(90.0), unit_direction(-180.0)
+    (array([0., 1.]), array([-1.,  0.]))
+    """
+    q = float(deg) / 90.0
+    if q.is_integer():
+        return np.array([(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)][int(q) % 4])
+    a = math.radians(deg)
+    return np.array([math.cos(a), math.sin(a)])
+
+
+def _span_line(X: np.ndarray) -> np.ndarray | None:
+    """The line joining the two columns of a (3, 2) space (the points it spans), normalised; None if k != 2."""
+    if X.shape[-1] != 2:
+        return None
+    line = np.cross(X[:, 0], X[:, 1])
+    n = float(np.linalg.norm(line))
+    return line / n if n > 0 else None
+
+
+def subspace_state(joint: str, point, direction, I, force) -> dict:
+    """Every quantity of the single-body decomposition, as numpy arrays (thesis 6.1–6.4, 6.63–6.97).
+
+    Parameters
+    ----------
+    joint : {"revolute", "prismatic", "revolute_prismatic", "twin_prismatic"}
+        The joint kind.
+    point : array_like, shape (2,)
+        The joint's point (pivot, point on the slide).
+    direction : array_like, shape (2,)
+        The joint's direction (slide; frame x axis of the plane joint).
+    I : array_like, shape (3, 3)
+        The body's inertia at the origin (positive definite).
+    force : array_like, shape (3,)
+        The applied wrench ``f``.
+
+    Returns
+    -------
+    dict
+        ``s, R, T, U, I, f, Q, mu, TQ, Rmu, psi, gamma, a_free, s_psi, U_gamma,
+        reaction, sIs, RIR, s_line, T_pencil, residuals`` (see the module docstring).
+
+    Raises
+    ------
+    InputError
+        An unknown joint kind, or non-finite input.
+    DegenerateGeometryError
+        A zero joint direction, or a zero applied force (a line needs a force).
+    SingularInertiaError, SingularConfigurationError
+        ``I`` not positive definite, or ``sᵀIs`` / ``RᵀI⁻¹R`` singular.
+    """
+    f = np.asarray(force, dtype=float)
+    if not (f[0] != 0.0 or f[1] != 0.0):
+        raise DegenerateGeometryError(f"the applied force must be non-zero to have a line, got f = {tuple(f)}")
+    s = motion_space(joint, point, direction)
+    R = reaction_space(joint, point, direction)
+    dec = Decomposition(I, s, R, name="I")
+    T, U = dec.T, dec.U
+    Q, mu = dec.split_wrench(f)
+    a_free = np.linalg.solve(dec.A, f)
+    psi, gamma = dec.split_twist(a_free)
+    TQ, Rmu = T @ Q, R @ mu
+    s_psi, U_gamma = s @ psi, U @ gamma
+    k = s.shape[1]
+    eye_k, eye_r = np.eye(k), np.eye(3 - k)
+    residuals = {
+        "sᵀT − 1": float(np.max(np.abs(s.T @ T - eye_k))),
+        "RᵀU − 1": float(np.max(np.abs(R.T @ U - eye_r))),
+        "TᵀU": float(np.max(np.abs(T.T @ U), initial=0.0)),
+        "T sᵀ + R Uᵀ − 1": float(np.max(np.abs(T @ s.T + R @ U.T - np.eye(3)))),
+        "sᵀR": float(np.max(np.abs(s.T @ R), initial=0.0)),
+        "(sψ)ᵀ(Rμ)": float(s_psi @ Rmu),
+        "(Uγ)ᵀ(TQ)": float(U_gamma @ TQ),
+        "Rᵀ(sψ)": float(np.max(np.abs(R.T @ s_psi), initial=0.0)),
+    }
+    return {"joint": joint, "s": s, "R": R, "T": T, "U": U, "I": dec.A, "f": f, "Q": Q, "mu": mu,
+            "TQ": TQ, "Rmu": Rmu, "psi": psi, "gamma": gamma, "a_free": a_free, "s_psi": s_psi,
+            "U_gamma": U_gamma, "reaction": -Rmu, "sIs": joint_space_inertia(dec.A, s),
+            "RIR": reaction_space_inverse_inertia(dec.A, R), "s_line": _span_line(s),
+            "T_pencil": _span_line(T), "residuals": residuals}
+
+
+@register("subspace")
+def subspace(joint: str = "revolute", px: float = 0.0, py: float = 0.0, joint_angle_deg: float = 0.0,
+             m: float = 2.0, cx: float = 1.0, cy: float = 0.0, rho: float = 0.5,
+             ax: float = 1.6, ay: float = 0.0, force_angle_deg: float = 90.0, F: float = 1.0) -> SceneResult:
+    """One body at a joint, loaded by one force: ``s, R, T, U`` and every split of chapter 6.
+
+    Parameters
+    ----------
+    joint : {"revolute", "prismatic", "revolute_prismatic", "twin_prismatic"}
+        The joint (``twin_prismatic`` is the plane joint of thesis 4.79).  Default ``"revolute"``.
+    px, py : float
+        The joint's point [m].  Default the origin.
+    joint_angle_deg : float
+        The joint's direction (slide; the plane joint's x axis) [deg].  Default 0.
+    m : float
+        Mass [kg] (> 0).  Default 2.
+    cx, cy : float
+        Centre of mass [m].  Default (1, 0).
+    rho : float
+        Radius of gyration about the centre of mass [m] (> 0).  Default 0.5.
+    ax, ay : float
+        A point of the applied force's line [m].  Default (1.6, 0).
+    force_angle_deg : float
+        Direction of the applied force [deg].  Default 90 (along +y).
+    F : float
+        Magnitude of the applied force [N] (non-zero; negative reverses it).  Default 1.
+
+    Returns
+    -------
+    SceneResult
+        ``quantities``: ``s``, ``R``, ``T``, ``U`` (3×k, 3×(3−k)), ``I``, ``f``,
+        ``Q``, ``mu``, ``TQ``, ``Rmu``, ``psi``, ``gamma``, ``a_free`` (= I⁻¹f),
+        ``s_psi`` (the held body's acceleration), ``U_gamma``, ``reaction``
+        (the joint's wrench on the body, ``−Rμ``), ``sIs``, ``RIR``, ``s_line``
+        and ``T_pencil`` (2-dof joints: the line of poles of ``s`` and the
+        common point of the ``T`` lines; None otherwise) and ``residuals``
+        (the power relations, each must vanish).
+
+    Raises
+    ------
+    SceneError
+        A parameter out of range (named).
+    DegenerateGeometryError
+        ``F = 0`` (no line of action).
+
+    Examples
+    --------
+    >>> r = subspace(joint="twin_prismatic")       # thesis 4.79: T are forces through the centre of mass
+    >>> r.quantities["T"]
+    [[1.0, 0.0], [0.0, 1.0], [0.0, 1.0]]
+    """
+    joint = check_param("joint", joint, "choice", choices=JOINT_KINDS)
+    px, py, ja = check_param("px", px), check_param("py", py), check_param("joint_angle_deg", joint_angle_deg)
+    m, rho = check_param("m", m, positive=True), check_param("rho", rho, positive=True)
+    cx, cy = check_param("cx", cx), check_param("cy", cy)
+    ax, ay = check_param("ax", ax), check_param("ay", ay)
+    fa, F = check_param("force_angle_deg", force_angle_deg), check_param("F", F, nonzero=True)
+    params = dict(joint=joint, px=px, py=py, joint_angle_deg=ja, m=m, cx=cx, cy=cy, rho=rho, ax=ax, ay=ay,
+                  force_angle_deg=fa, F=F)
+    I = inertia_matrix(m, (cx, cy), m * rho * rho)
+    e = F * unit_direction(fa)
+    f = np.array([e[0], e[1], ax * e[1] - ay * e[0]])           # the force e through (ax, ay) (5.56)
+    st = subspace_state(joint, (px, py), unit_direction(ja), I, f)
+    q = {k: (None if v is None else (dict(v) if isinstance(v, dict) else _plain(v)))
+         for k, v in st.items() if k != "joint"}
+    return SceneResult("subspace", params, None, {"v": [0.0, 0.0, 0.0]}, q, extra={"state": st})
