@@ -1,0 +1,123 @@
+"""Impulses on a body at rest (planargeo.mechanics.impulse, scene ``impulse``) against closed forms and momentum.
+
+References: a uniform rod (and the door, a rod of width w) pivoted at one end, by hand:
+``J_P = m (4L² + w²)/12``, ``ω = J d / J_P``, reaction ``J (m d L / (2 J_P) − 1)`` (``J (3d/(2L) − 1)`` as
+``w → 0``), centre of percussion ``2L/3 + w²/(6L)``, apparent masses ``J_P / d²`` (held) and
+``1 / (1/m + (d − L/2)²/J_c)`` (free); for the bat, the impulse–momentum balance with the mass,
+centre and moment of its outline integrated here by the shoelace formulas.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from planargeo import scenes
+from planargeo.errors import DegenerateGeometryError, SceneError, SingularConfigurationError
+from planargeo.mechanics.impulse import apparent_mass, centre_of_percussion, impulse_response
+from planargeo.scenes.impulse import BODIES
+
+L, W = 0.9, 0.04                         # the door
+
+
+def door_closed_forms(m, d, J=1.0):
+    Jc = m * (L * L + W * W) / 12
+    JP = Jc + m * (L / 2) ** 2
+    omega = J * d / JP
+    return dict(Jc=Jc, JP=JP, omega=omega, reaction=J * (m * d * L / (2 * JP) - 1),
+                cop=2 * L / 3 + W * W / (6 * L), held=JP / d ** 2 if d else math.inf,
+                free=1.0 / (1.0 / m + (d - L / 2) ** 2 / Jc))
+
+
+@pytest.mark.parametrize("m", [0.5, 3.0, 20.0])
+@pytest.mark.parametrize("d", [0.1, 0.3, 0.6, 0.6002962962962963, 0.85])
+def test_door_struck_across_against_the_rod_closed_forms(m, d):
+    q = scenes.build("impulse", body="door", m=m, x=d, angle_deg=90.0, J=1.0).quantities
+    ref = door_closed_forms(m, d)
+    assert q["omega"] == pytest.approx(ref["omega"], rel=1e-12)
+    assert q["reaction_across"] == pytest.approx(ref["reaction"], rel=1e-10, abs=1e-13)
+    assert q["reaction_along"] == pytest.approx(0.0, abs=1e-13)
+    assert q["centre_of_percussion"] == pytest.approx([ref["cop"], 0.0], rel=1e-12, abs=1e-15)
+    assert q["apparent_mass_held"] == pytest.approx(ref["held"], rel=1e-12)
+    assert q["apparent_mass_free"] == pytest.approx(ref["free"], rel=1e-12)
+    assert q["pole"] == [0.0, 0.0]                        # held: it turns about the hinge
+    assert q["kinetic_energy"] == pytest.approx(0.5 * ref["JP"] * ref["omega"] ** 2, rel=1e-12)
+
+
+def test_thin_rod_limit_3d_over_2L():
+    """w → 0: reaction J (3d/(2L) − 1), zero at d = 2L/3 (the brief's hand derivation)."""
+    m, d = 2.0, 0.3
+    ref = door_closed_forms(m, d)
+    assert ref["reaction"] == pytest.approx(3 * d / (2 * L) - 1, rel=2e-3)
+    q = scenes.build("impulse", body="door", m=m, x=ref["cop"]).quantities
+    assert abs(q["reaction_across"]) < 1e-13 and np.allclose(q["reaction"], 0.0, atol=1e-13)
+    assert q["pole_if_free"] == pytest.approx([0.0, 0.0], abs=1e-12)   # free, it would turn about the hinge
+
+
+def test_oblique_blow_reaction_along_the_door_takes_the_whole_along_component():
+    m, d, a = 2.0, 0.5, 30.0
+    q = scenes.build("impulse", body="door", m=m, x=d, angle_deg=a, J=2.0).quantities
+    ref = door_closed_forms(m, d, J=2.0 * math.sin(math.radians(a)))
+    assert q["reaction_along"] == pytest.approx(-2.0 * math.cos(math.radians(a)), rel=1e-12)
+    assert q["reaction_across"] == pytest.approx(ref["reaction"], rel=1e-10)
+
+
+def shoelace(poly):
+    """Area, centroid, polar moment about the centroid of a simple polygon (unit density)."""
+    p = np.asarray(poly, float)
+    x, y = p[:, 0], p[:, 1]
+    x1, y1 = np.roll(x, -1), np.roll(y, -1)
+    cr = x * y1 - x1 * y
+    A = cr.sum() / 2
+    cx = ((x + x1) * cr).sum() / (6 * A)
+    cy = ((y + y1) * cr).sum() / (6 * A)
+    Ixx = ((y * y + y * y1 + y1 * y1) * cr).sum() / 12
+    Iyy = ((x * x + x * x1 + x1 * x1) * cr).sum() / 12
+    return A, np.array([cx, cy]), Ixx + Iyy - A * (cx * cx + cy * cy)
+
+
+@pytest.mark.parametrize("support", ["held", "free"])
+@pytest.mark.parametrize("x, y, a, J", [(0.55, 0.0, 90.0, 1.0), (0.7, 0.02, 60.0, 3.0), (0.2, -0.1, 170.0, 0.4),
+                                         (-0.05, 0.0, 45.0, 1.0)])
+def test_bat_impulse_momentum_balance(support, x, y, a, J):
+    """m Δv_c = ĵ + ĵ_R and J_c Δω = moments about c of the blow and of the grip's reaction (at the grip)."""
+    m = 0.9
+    A, c, Jc = shoelace(BODIES["bat"])
+    Jc *= m / A
+    q = scenes.build("impulse", body="bat", support=support, m=m, x=x, y=y, angle_deg=a, J=J).quantities
+    e = J * np.array([math.cos(math.radians(a)), math.sin(math.radians(a))])
+    R = np.array(q["reaction_force"])
+    np.testing.assert_allclose(q["com"], c, atol=1e-12)
+    np.testing.assert_allclose(m * np.array(q["v_com"]), e + R, atol=1e-12 * J)
+    moment = (x - c[0]) * e[1] - (y - c[1]) * e[0] + (0 - c[0]) * R[1] - (0 - c[1]) * R[0]
+    assert Jc * q["omega"] == pytest.approx(moment, abs=1e-12 * J)
+    assert q["reaction"][2] == pytest.approx(0.0, abs=1e-12 * J)         # the reaction acts through the grip
+    if support == "free":
+        assert R @ R == 0.0 and q["pole"] == q["pole_if_free"]
+        assert q["apparent_mass"] == q["apparent_mass_free"]
+    else:
+        np.testing.assert_allclose(q["v_grip"], 0.0, atol=1e-15)
+
+
+def test_blow_through_the_grip_has_infinite_apparent_mass_when_held():
+    q = scenes.build("impulse", x=0.0, y=0.0, angle_deg=30.0).quantities
+    assert q["apparent_mass_held"] is None and q["omega"] == 0.0
+    np.testing.assert_allclose(q["reaction_force"], [-math.cos(math.pi / 6), -0.5], atol=1e-15)
+    I = np.array(q["I"])
+    assert apparent_mass(I, q["impulse"], [0.0, 0.0, 1.0]) == math.inf
+
+
+def test_functions_refuse_bad_input_by_name():
+    from planargeo.screws.twists import inertia_matrix
+    I = inertia_matrix(3.0, [1.0, 0.0], 1.0)
+    with pytest.raises(DegenerateGeometryError, match="line must be a force line"):
+        apparent_mass(I, [0.0, 0.0, 1.0])
+    with pytest.raises(DegenerateGeometryError, match="pivot must differ from the centre of mass"):
+        centre_of_percussion(I, (1.0, 0.0))
+    with pytest.raises(SingularConfigurationError):
+        impulse_response(inertia_matrix(1.0, [1.0, 0.0], 0.0), [0.0, 1.0, 0.0], [0.0, -1.0, 1.0])
+    with pytest.raises(SceneError, match="^J must be non-zero"):
+        scenes.build("impulse", J=0.0)
+    with pytest.raises(SceneError, match="^body must be 'bat' or 'door'"):
+        scenes.build("impulse", body="club")
