@@ -29,6 +29,8 @@ EXPLORERS = {
     "CarExplorer": "car",
     "SliderCrankExplorer": "slider_crank",
     "TreeExplorer": "trees",
+    "SubspaceExplorer": "subspace",
+    "ImpulseExplorer": "impulse",
 }
 __all__ += list(EXPLORERS)
 

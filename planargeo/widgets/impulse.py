@@ -1,0 +1,291 @@
+"""Impulse explorer: a bat or a door at rest struck by a short blow (thesis 5.4, 5.7, figure 3.3).
+
+A bat held at its grip (or a door, seen from above, held by its hinge) is at
+rest; a short blow of impulse ``ĵ`` strikes it along a line you drag (by a
+point and by the arrow's tip).  Shown live:
+
+* the velocity pole just after the blow (held: the grip ``P`` itself; free:
+  the percussion pole ``I⁻¹ĵ`` of the blow's line, 5.64–5.68),
+* where the body would turn about if nothing held it (``pole if free``),
+* the reaction impulse ``ĵ_R`` of the grip or hinge (the "sting"): zero when
+  the line is the grip's axis of percussion, through the *centre of
+  percussion* at ``l = d + ρ²/d`` from the grip (5.67) — then the free pole is
+  the grip,
+* the apparent mass along the line of the blow (figure 3.3): impulse per unit
+  velocity change of the struck point along the line, held and free.
+
+*Play* runs the motion after the blow (the body turning about its velocity
+pole; the time ``t`` is a slider too).  The numbers come from the scene
+:func:`planargeo.scenes.impulse.impulse` (:mod:`planargeo.mechanics.impulse`).
+
+Examples
+--------
+>>> from planargeo.widgets import ImpulseExplorer
+>>> ex = ImpulseExplorer(display="agg", body="door")
+>>> cop = ex.readout_values["centre of percussion (5.67)"]
+>>> round(cop[0], 6)                                # 2L/3 + w²/(6L) for the 0.9 m × 0.04 m door
+0.600296
+>>> abs(ex.set(**{"strike x": cop[0]}).readout_values["reaction impulse ĵ_R, across"]) < 1e-12
+True
+"""
+from __future__ import annotations
+
+import math
+
+import ipywidgets as W
+import numpy as np
+from matplotlib.lines import Line2D
+from matplotlib.patches import Polygon as MplPolygon
+
+from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
+from planargeo.draw.style import COLORS
+from planargeo.errors import DegenerateGeometryError
+from planargeo.scenes.impulse import BODIES, impulse
+from planargeo.scenes.subspace import unit_direction
+from planargeo.screws.inertia import percussion_axis
+from planargeo.widgets.base import Explorer, Handle, Step
+
+__all__ = ["ImpulseExplorer"]
+
+#: data length of the blow's arrow per N·s
+ARROW = 0.25
+#: longest time after the blow that Play runs (s)
+T_MAX = 0.5
+
+
+def _xy_or(p, other="at infinity"):
+    return other if p is None else tuple(p)
+
+
+class ImpulseExplorer(Explorer):
+    """A body at rest struck by a blow: velocity pole, reaction impulse, apparent mass (thesis 5.4, 6.93).
+
+    Parameters
+    ----------
+    **kw
+        As for :class:`planargeo.widgets.base.Explorer` (``display``, ``figsize``,
+        ``export_dir`` and initial control values).
+
+    Raises
+    ------
+    InputError
+        An unknown control or a value it does not take.
+    PlanargeoError
+        Initial values that describe no state (e.g. ``J = 0``).
+    """
+
+    title = "Impulse and the centre of percussion: a bat or a door struck at rest"
+    slug = "impulse"
+    figsize = (6.4, 4.6)
+    limits = (-0.45, 1.2, -0.6, 0.6)
+    display_controls = ("t",)
+    scale = 1.0
+
+    def make_controls(self):
+        """The controls: body, support, mass, the blow (point, angle, impulse) and the time after it.
+
+        Returns
+        -------
+        dict
+        """
+        return {
+            "body": W.Dropdown(options=(("bat (grip)", "bat"), ("door (hinge, top view)", "door")),
+                               value="bat", description="body"),
+            "support": W.ToggleButtons(options=(("held at grip / hinge", "held"), ("free", "free")),
+                                       value="held", description="support", style={"button_width": "auto"}),
+            "m": Step(0.1, 30.0, 0.05, 0.9, "mass m (kg)").make("m"),
+            "strike x": Step(-0.4, 1.15, 0.005, 0.55, "blow point x (m)").make("strike x"),
+            "strike y": Step(-0.55, 0.55, 0.005, 0.0, "blow point y (m)").make("strike y"),
+            "strike angle": Step(-180, 180, 1.0, 90.0, "blow angle (deg)").make("strike angle"),
+            "J": Step(-5.0, 5.0, 0.05, 1.0, "impulse J (N·s)").make("J"),
+            "t": Step(0.0, T_MAX, 0.01, 0.0, "time after the blow t (s)").make("t"),
+        }
+
+    def make_artists(self, ax):
+        """Create every artist once.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+        """
+        z, zl = np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0])
+        self.ghost = MplPolygon(np.zeros((3, 2)), closed=True, fc="none", ec=COLORS["construct"], ls="--",
+                                lw=0.8, zorder=1)
+        ax.add_patch(self.ghost)
+        self.body = MplPolygon(np.zeros((3, 2)), closed=True, fc=COLORS["body"], ec="black", alpha=0.6,
+                               zorder=2, label="body")
+        ax.add_patch(self.body)
+        self.conic = ax.add_artist(ConicArtist(np.eye(3), role="inertia", text="I (ρ)", text_offset=(-6.0, 4.0)))
+        self.conic.set_text_alignment("right", "bottom")
+        self.grip = ax.add_artist(PointArtist(z, role="twist", glyph=False, color=COLORS["ground"],
+                                              marker="s", markersize=8))
+        self.grip.set_text_beside((-0.7, 0.7))
+        self.com = ax.add_artist(PointArtist(z, role="twist", glyph=False, text="c", color="black", marker="+",
+                                             markersize=9))
+        self.com.set_text_beside((0.0, 1.0))
+        self.axis = ax.add_artist(LineArtist(zl, role="construct", scale=None, text="axis of percussion of P",
+                                             text_at="anchor"))
+        self.cop = ax.add_line(Line2D([], [], marker="*", ms=13, color=COLORS["wrench"], mec="black", ls="none",
+                                      zorder=6, label="centre of percussion"))
+        self.blow = ax.add_artist(LineArtist(zl, role="wrench", scale=ARROW, text="ĵ (blow)"))
+        self.reaction = ax.add_artist(LineArtist(zl, role="reaction", scale=ARROW, text="ĵ_R (grip)",
+                                                 linewidth=1.2))
+        self.pole = ax.add_artist(PointArtist(z, role="twist", glyph_scale=3.0, text="v (pole)"))
+        self.pole.set_text_beside((0.7, -0.7))
+        self.free_pole = ax.add_artist(PointArtist(z, role="twist", glyph=False, color=COLORS["construct"],
+                                                   text="pole if free"))
+        self.free_pole.set_text_beside((0.0, 1.0))
+
+    # ------------------------------------------------------------------ handles and Play
+    def handles(self):
+        """Draggable handles: the blow's point and its arrow tip.
+
+        Returns
+        -------
+        list of Handle
+        """
+        return [Handle("blow point", lambda: (self.values["strike x"], self.values["strike y"]),
+                       lambda x, y: {"strike x": x, "strike y": y}),
+                Handle("blow tip", self._tip_where, self._drag_tip)]
+
+    def _tip_where(self):
+        v = self.values
+        e = unit_direction(v["strike angle"]) * (ARROW * v["J"] / 2)
+        return (v["strike x"] + e[0], v["strike y"] + e[1])
+
+    def _drag_tip(self, x, y):
+        v = self.values
+        d = np.array([x - v["strike x"], y - v["strike y"]])
+        n = float(np.hypot(*d))
+        if not n > 1e-9:
+            raise DegenerateGeometryError("J must be non-zero: the arrow's tip is on the blow point (no blow)")
+        return {"strike angle": math.degrees(math.atan2(d[1], d[0])), "J": 2 * n / ARROW}
+
+    def play_step(self, values, dt):
+        """The next frame of the motion after the blow: ``t + dt`` (None at the end).
+
+        Parameters
+        ----------
+        values : dict
+            The shown control values.
+        dt : float
+            Time step (s).
+
+        Returns
+        -------
+        dict or None
+        """
+        t = float(values["t"]) + float(dt)
+        return None if t > T_MAX + 1e-12 else {"t": min(t, T_MAX)}
+
+    # ------------------------------------------------------------------ state
+    def compute(self, v, changed):
+        """The scene :func:`~planargeo.scenes.impulse.impulse` of the controls.
+
+        Parameters
+        ----------
+        v : dict
+            Control values.
+        changed : set of str
+            The controls that changed.
+
+        Returns
+        -------
+        SceneResult
+
+        Raises
+        ------
+        PlanargeoError
+            A blow without a line (``J = 0``).
+        """
+        return impulse(body=v["body"], support=v["support"], m=float(v["m"]), x=float(v["strike x"]),
+                       y=float(v["strike y"]), angle_deg=float(v["strike angle"]), J=float(v["J"]))
+
+    def render(self, r):
+        """Update the artists and return the readout.
+
+        Parameters
+        ----------
+        r : SceneResult
+            A state of :meth:`compute`.
+
+        Returns
+        -------
+        dict
+        """
+        q, ex = r.quantities, r.extra
+        held = r.params["support"] == "held"
+        t = float(self.values["t"])
+        outline = ex["outline"]
+        dv = ex["dv"]
+        # the body t seconds after the blow: turned by ω t about the pole (or shifted, a translation)
+        if dv[2] != 0:
+            P = np.array([-dv[1], dv[0]]) / dv[2]
+            th = dv[2] * t
+            c, s = math.cos(th), math.sin(th)
+            moved = (outline - P) @ np.array([[c, s], [-s, c]]) + P
+        else:
+            moved = outline + t * dv[:2]
+        self.body.set_xy(moved)
+        self.ghost.set_xy(outline)
+        self.ghost.set_visible(t > 0)
+        I = ex["I"]
+        com = np.array(q["com"])
+        self.conic.set_conic(I)
+        self.com.set_point([com[1], -com[0], 1.0])
+        self.grip.set_point([0.0, 0.0, 1.0])
+        self.grip.set_text("P (grip)" if r.params["body"] == "bat" else "P (hinge)")
+        self.axis.set_line(percussion_axis(I, [0.0, 0.0, 1.0]))
+        cop = q["centre_of_percussion"]
+        self.axis.set_anchor((cop[0], cop[1] - 0.4))
+        self.cop.set_data([cop[0]], [cop[1]])
+        self.blow.set_line(ex["impulse"])
+        self.blow.set_anchor((r.params["x"], r.params["y"]))
+        jr = ex["reaction"]
+        self.reaction.set_visible(held and bool(np.hypot(jr[0], jr[1]) > 1e-12 * abs(r.params["J"])))
+        if self.reaction.get_visible():
+            self.reaction.set_line(jr)
+            u = jr[:2] / float(np.hypot(jr[0], jr[1]))
+            self.reaction.set_anchor(-0.15 * u)            # the arrow ends near P, pushing on the body there
+        moving = bool(np.any(dv != 0))
+        self.pole.set_visible(moving)
+        if moving:
+            self.pole.set_point(dv)
+        free = ex["dv_free"]
+        near = free[2] != 0 and math.hypot(free[0] / free[2], free[1] / free[2]) < 0.04   # at the grip (drawn)
+        self.free_pole.set_visible(bool(held and not near))
+        if self.free_pole.get_visible():
+            self.free_pole.set_point(free)
+        if held and near:
+            self.grip.set_text(("P (grip)" if r.params["body"] == "bat" else "P (hinge)") + " ≈ pole if free")
+        return self._readout(r, held)
+
+    def _readout(self, r, held):
+        q = r.quantities
+        rf = np.array(q["reaction_force"])
+        d = float(np.hypot(*q["com"]))
+        out = {
+            "ω after the blow": q["omega"],
+            "velocity of c": tuple(q["v_com"]),
+            "velocity pole": _xy_or(q["pole"], "at infinity (a translation)" if any(q["dv"]) else "at rest"),
+            "pole if free (I⁻¹ĵ)": _xy_or(q["pole_if_free"], "at infinity (a translation)"),
+            "reaction impulse ĵ_R, across": q["reaction_across"],
+            "reaction impulse ĵ_R, along": q["reaction_along"],
+            "|ĵ_R|": float(np.hypot(*rf)),
+            "centre of percussion (5.67)": tuple(q["centre_of_percussion"]),
+            "l = d + ρ²/d": d + q["rho"] ** 2 / d,
+            "apparent mass along ĵ": math.inf if q["apparent_mass"] is None else q["apparent_mass"],
+            "apparent mass, held": math.inf if q["apparent_mass_held"] is None else q["apparent_mass_held"],
+            "apparent mass, free": q["apparent_mass_free"],
+            "mass m": r.params["m"],
+            "radius of gyration ρ": q["rho"],
+            "kinetic energy": q["kinetic_energy"],
+            "t": float(self.values["t"]),
+        }
+        self.units = {"ω after the blow": "rad/s", "velocity of c": "m/s", "velocity pole": "m",
+                      "pole if free (I⁻¹ĵ)": "m", "reaction impulse ĵ_R, across": "N·s",
+                      "reaction impulse ĵ_R, along": "N·s", "|ĵ_R|": "N·s", "centre of percussion (5.67)": "m",
+                      "l = d + ρ²/d": "m", "apparent mass along ĵ": "kg", "apparent mass, held": "kg",
+                      "apparent mass, free": "kg", "mass m": "kg", "radius of gyration ρ": "m",
+                      "kinetic energy": "J", "t": "s"}
+        return out

@@ -1,0 +1,410 @@
+"""Subspace decomposition explorer: one body, one joint, one force (thesis 6.1–6.4, 6.63–6.97, figures 6.1–6.5).
+
+A body at rest (mass ``m``, radius of gyration ``ρ``, centre of mass ``c``) is
+held by a joint — a revolute pivot, a prismatic slider, a pin in a slot
+(revolute + prismatic) or the plane joint of 4.79 (two translations) — and
+loaded by a force ``f``.  Drag the joint, its direction, the force's point and
+its arrow tip; everything of chapter 6 follows live:
+
+* the motion space ``s`` (points: poles of the allowed motions) and the
+  reaction space ``R`` (lines through them, ``sᵀR = 0``),
+* ``T = I s (sᵀIs)⁻¹`` (lines: the axes of percussion of ``s``) and
+  ``U = I⁻¹R (RᵀI⁻¹R)⁻¹`` (points on them, ``TᵀU = 0``),
+* *wrench split* ``f = T Q + R μ`` (6.38): ``T Q`` accelerates the body along
+  the joint, ``R μ`` goes into the joint (which pushes back with ``−R μ``),
+* *twist split* of the free body's acceleration ``I⁻¹f = s ψ + U γ`` (6.44,
+  6.80–6.81): ``s ψ`` is how the held body accelerates, ``U γ`` the motion
+  the joint's base would need,
+* the joint-space inertia ``sᵀIs`` (6.67) and the power relations
+  (``sᵀT = 1``, ``RᵀU = 1``, ``TᵀU = 0``, ``T sᵀ + R Uᵀ = 1``, zero powers) as
+  residuals that must read 0.
+
+For the 2-dof joints the two points of ``s`` span a *line of poles* — every
+instant centre the joint allows — which is the reaction line ``R`` itself; the
+two lines of ``T`` meet at the one point ``U``: the active forces are the
+pencil of lines through ``U``.
+
+The numbers come from :func:`planargeo.scenes.subspace.subspace_state`.
+
+Examples
+--------
+>>> from planargeo.widgets import SubspaceExplorer
+>>> ex = SubspaceExplorer(display="agg")
+>>> ex.readout_values["Q = sᵀf"]                   # the moment of f about the pivot, 1 N × 1.6 m
+1.6
+>>> ex.set(joint="twin_prismatic").readout_values["U (meet of T₁, T₂)"]   # the centre of mass
+(1.0, 0.0)
+"""
+from __future__ import annotations
+
+import math
+
+import ipywidgets as W
+import numpy as np
+from matplotlib.lines import Line2D
+from matplotlib.patches import Polygon as MplPolygon
+
+from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
+from planargeo.draw.style import COLORS
+from planargeo.errors import DegenerateGeometryError
+from planargeo.scenes.subspace import subspace_state, unit_direction
+from planargeo.screws.twists import inertia_matrix
+from planargeo.widgets.base import Explorer, Handle, Step
+
+__all__ = ["SubspaceExplorer", "JOINT_OPTIONS"]
+
+#: The joint dropdown: (label, kind).
+JOINT_OPTIONS = (("revolute", "revolute"), ("prismatic", "prismatic"),
+                 ("revolute + prismatic", "revolute_prismatic"), ("plane joint (4.79)", "twin_prismatic"))
+_LABEL = dict((k, lab) for lab, k in JOINT_OPTIONS)
+SHOW_OPTIONS = (("f = TQ + Rμ", "wrench"), ("I⁻¹f = sψ + Uγ", "twist"), ("s, R, T, U", "spaces"))
+#: the body: a bar along x with its centre of mass at (1, 0)
+COM = (1.0, 0.0)
+_BAR = np.array([(-0.3, -0.12), (2.3, -0.12), (2.3, 0.12), (-0.3, 0.12)])
+#: data length of the force arrow per newton, and of the direction handle
+ARROW = 0.5
+DIR_HANDLE = 0.7
+_SUB = "₁₂"
+
+
+def _xy(p):
+    """``(x, y)`` of a homogeneous point, or ``"at infinity"``."""
+    if p[2] == 0:
+        return "at infinity"
+    return (float(-p[1] / p[2]) + 0.0, float(p[0] / p[2]) + 0.0)
+
+
+def _along(line, ref, t: float):
+    """The point ``t`` along ``line`` (a force line) from the foot of ``ref`` on it; ``ref`` for a couple."""
+    fx, fy, tz = (float(x) for x in line)
+    F = math.hypot(fx, fy)
+    ref = np.asarray(ref, dtype=float)
+    if F == 0:
+        return ref
+    d = np.array([fx, fy]) / F
+    p0 = np.array([fy * tz, -fx * tz]) / (F * F)            # foot of the origin (4.27)
+    return p0 + d * ((ref - p0) @ d + t)
+
+
+#: where each kind of point puts its label (a unit direction from the point): distinct, so that
+#: coinciding points (s and sψ of a pure rotation about the pin, U and Uγ...) keep legible labels
+_BESIDE = {"s": (-0.7, 0.7), "U": (0.7, -0.7), "a_free": (0.7, 0.7), "s_psi": (-0.7, -0.7),
+           "U_gamma": (-1.0, 0.0), "c": (0.0, 1.0)}
+
+
+def _kind_units(s_col) -> tuple[str, str]:
+    """(joint force unit, joint acceleration unit) of a motion-space column: a rotation or a translation."""
+    return ("N·m", "rad/s²") if s_col[2] != 0 else ("N", "m/s²")
+
+
+def _reaction_units(R_col) -> tuple[str, str]:
+    """(reaction unit, reactive-acceleration unit) of a reaction column: a force or a couple."""
+    return ("N", "m/s²") if (R_col[0] != 0 or R_col[1] != 0) else ("N·m", "rad/s²")
+
+
+class SubspaceExplorer(Explorer):
+    """Subspaces ``s, R, T, U`` of one joint and the splits of one force (thesis 6.1–6.4, 6.63–6.97).
+
+    Parameters
+    ----------
+    **kw
+        As for :class:`planargeo.widgets.base.Explorer` (``display``, ``figsize``,
+        ``export_dir`` and initial control values).
+
+    Raises
+    ------
+    InputError
+        An unknown control or a value it does not take.
+    PlanargeoError
+        Initial values that describe no state (e.g. ``F = 0``).
+    """
+
+    title = "Subspaces of a joint: s, R, T, U and the splits of a force (thesis 6.1–6.4)"
+    slug = "subspace"
+    figsize = (6.4, 5.0)
+    limits = (-1.5, 3.5, -2.0, 2.0)
+    display_controls = ("show",)
+    scale = 1.0
+
+    def make_controls(self):
+        """The controls: joint kind and pose, body, force, what to show.
+
+        Returns
+        -------
+        dict
+        """
+        return {
+            "joint": W.Dropdown(options=JOINT_OPTIONS, value="revolute", description="joint"),
+            "joint x": Step(-1.4, 3.4, 0.01, 0.0, "joint x (m)").make("joint x"),
+            "joint y": Step(-1.9, 1.9, 0.01, 0.0, "joint y (m)").make("joint y"),
+            "joint angle": Step(-180, 180, 1.0, 0.0, "joint angle (deg)").make("joint angle"),
+            "force x": Step(-1.4, 3.4, 0.01, 1.6, "force point x (m)").make("force x"),
+            "force y": Step(-1.9, 1.9, 0.01, 0.0, "force point y (m)").make("force y"),
+            "force angle": Step(-180, 180, 1.0, 90.0, "force angle (deg)").make("force angle"),
+            "F": Step(-4.0, 4.0, 0.05, 1.0, "force F (N)").make("F"),
+            "m": Step(0.2, 10.0, 0.1, 2.0, "mass m (kg)").make("m"),
+            "rho": Step(0.05, 1.5, 0.01, 0.5, "radius of gyration ρ (m)").make("rho"),
+            "show": W.ToggleButtons(options=SHOW_OPTIONS, value="wrench", description="show",
+                                    style={"button_width": "auto"}),
+        }
+
+    # ------------------------------------------------------------------ artists
+    def make_artists(self, ax):
+        """Create every artist once (body, joint, s, R, T, U, f and its parts).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+        """
+        z, zl = np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0])
+        self.body = MplPolygon(_BAR, closed=True, fc=COLORS["body"], ec="black", alpha=0.45, zorder=1,
+                               label="body")
+        ax.add_patch(self.body)
+        self.track = ax.add_line(Line2D([], [], color=COLORS["ground"], lw=5, alpha=0.35, zorder=1,
+                                        solid_capstyle="butt", label="joint"))
+        self.pin = ax.add_line(Line2D([], [], marker="o", ms=9, mfc="white", mec=COLORS["ground"], mew=2,
+                                      ls="none", zorder=6))
+        self.dir_handle = ax.add_line(Line2D([], [], marker="D", ms=6, color=COLORS["ground"], ls="none",
+                                             zorder=6))
+        self.com = ax.add_artist(PointArtist(z, role="twist", glyph=False, text="c", color="black",
+                                             marker="+", markersize=9))
+        self.com.set_text_beside(_BESIDE["c"])
+        self.conic = ax.add_artist(ConicArtist(np.eye(3), role="inertia", text="I"))
+        self.s_art = [ax.add_artist(PointArtist(z, role="twist", glyph=False, markersize=8))
+                      for _ in range(2)]
+        self._labels, self._besides = {}, {}
+        for a in self.s_art:
+            self._besides[a] = _BESIDE["s"]
+        self.R_art = [ax.add_artist(LineArtist(zl, role="reaction", scale=None, linewidth=1.0,
+                                               corner="upper left")) for _ in range(2)]
+        self.T_art = [ax.add_artist(LineArtist(zl, role="wrench", scale=None, linewidth=1.0,
+                                               linestyle=(0, (6, 3)), corner="lower left")) for _ in range(2)]
+        self.U_art = [ax.add_artist(PointArtist(z, role="accel", glyph=False, markersize=7)) for _ in range(2)]
+        for a in self.U_art:
+            self._besides[a] = _BESIDE["U"]
+        self.f_art = ax.add_artist(LineArtist(zl, role="wrench", scale=ARROW, text="f", text_at="tip"))
+        self.TQ_art = ax.add_artist(LineArtist(zl, role="wrench", scale=ARROW, text="TQ", linewidth=2.6,
+                                               corner="lower right"))
+        self.Rmu_art = ax.add_artist(LineArtist(zl, role="reaction", scale=ARROW, text="Rμ", linewidth=2.6,
+                                                corner="upper right"))
+        self.afree_art = ax.add_artist(PointArtist(z, role="accel", glyph_scale=2.0, text="I⁻¹f"))
+        self.spsi_art = ax.add_artist(PointArtist(z, role="accel", glyph_scale=2.0, text="sψ"))
+        self.Ug_art = ax.add_artist(PointArtist(z, role="accel", glyph_scale=2.0, text="Uγ",
+                                                color=COLORS["momentum"]))
+        for a, key in ((self.afree_art, "a_free"), (self.spsi_art, "s_psi"), (self.Ug_art, "U_gamma")):
+            self._besides[a] = _BESIDE[key]
+
+    # ------------------------------------------------------------------ handles
+    def handles(self):
+        """Draggable handles: the joint, its direction, the force's point and its arrow tip.
+
+        Returns
+        -------
+        list of Handle
+        """
+        return [Handle("joint", self._joint_where, lambda x, y: {"joint x": x, "joint y": y}),
+                Handle("joint direction", self._dir_where, self._drag_dir),
+                Handle("force point", lambda: (self.values["force x"], self.values["force y"]),
+                       lambda x, y: {"force x": x, "force y": y}),
+                Handle("force tip", self._tip_where, self._drag_tip)]
+
+    def _joint_where(self):
+        v = self.values
+        return (v["joint x"], v["joint y"])
+
+    def _dir_where(self):
+        v = self.values
+        if v["joint"] == "revolute":
+            return None
+        e = unit_direction(v["joint angle"])
+        return (v["joint x"] + DIR_HANDLE * e[0], v["joint y"] + DIR_HANDLE * e[1])
+
+    def _drag_dir(self, x, y):
+        v = self.values
+        d = np.array([x - v["joint x"], y - v["joint y"]])
+        if not np.hypot(*d) > 1e-9:
+            raise DegenerateGeometryError("joint direction must be non-zero: the direction handle is on the joint")
+        return {"joint angle": math.degrees(math.atan2(d[1], d[0]))}
+
+    def _tip_where(self):
+        v = self.values
+        e = unit_direction(v["force angle"]) * (ARROW * v["F"] / 2)
+        return (v["force x"] + e[0], v["force y"] + e[1])
+
+    def _drag_tip(self, x, y):
+        v = self.values
+        d = np.array([x - v["force x"], y - v["force y"]])
+        n = float(np.hypot(*d))
+        if not n > 1e-9:
+            raise DegenerateGeometryError("F must be non-zero: the force tip is on the force point (no line)")
+        return {"force angle": math.degrees(math.atan2(d[1], d[0])), "F": 2 * n / ARROW}
+
+    # ------------------------------------------------------------------ state
+    def compute(self, v, changed):
+        """The decomposition of the controls' state (:func:`~planargeo.scenes.subspace.subspace_state`).
+
+        Parameters
+        ----------
+        v : dict
+            Control values.
+        changed : set of str
+            The controls that changed.
+
+        Returns
+        -------
+        dict
+
+        Raises
+        ------
+        PlanargeoError
+            A state without a decomposition (zero force or direction, singular inertia).
+        """
+        m, rho = float(v["m"]), float(v["rho"])
+        I = inertia_matrix(m, COM, m * rho * rho)
+        e = float(v["F"]) * unit_direction(v["force angle"])
+        a = (float(v["force x"]), float(v["force y"]))
+        f = np.array([e[0], e[1], a[0] * e[1] - a[1] * e[0]])
+        st = subspace_state(v["joint"], (v["joint x"], v["joint y"]), unit_direction(v["joint angle"]), I, f)
+        st["point"], st["direction"], st["force point"] = (np.array([v["joint x"], v["joint y"]]),
+                                                           unit_direction(v["joint angle"]), np.array(a))
+        return st
+
+    def render(self, st):
+        """Update the artists and return the readout.
+
+        Parameters
+        ----------
+        st : dict
+            A state of :meth:`compute`.
+
+        Returns
+        -------
+        dict
+        """
+        show = self.values["show"]
+        s, R, T, U = st["s"], st["R"], st["T"], st["U"]
+        k = s.shape[1]
+        p, e, fp = st["point"], st["direction"], st["force point"]
+        # the joint
+        kind = st["joint"]
+        if kind == "revolute":
+            self.track.set_data([], [])
+            self.dir_handle.set_data([], [])
+        else:
+            ends = np.array([p - 0.9 * e, p + 0.9 * e]) if kind != "twin_prismatic" else \
+                np.array([p - 0.5 * e, p + 0.5 * e, p, p - 0.5 * np.array([-e[1], e[0]]),
+                          p + 0.5 * np.array([-e[1], e[0]])])
+            self.track.set_data(ends[:, 0], ends[:, 1])
+            h = p + DIR_HANDLE * e
+            self.dir_handle.set_data([h[0]], [h[1]])
+        pin = kind in ("revolute", "revolute_prismatic")
+        self.pin.set_data(([p[0]], [p[1]]) if pin else ([], []))
+        self.com.set_point([COM[1], -COM[0], 1.0])
+        self.conic.set_conic(st["I"])
+        self.conic.set_text(f"I (ρ = {self.values['rho']:.2f} m)")
+        # subspaces
+        twin = kind == "twin_prismatic"
+        for i, art in enumerate(self.s_art):
+            art.set_visible(i < k)
+            if i < k:
+                art.set_point(s[:, i])
+                self._labels[art] = ("s" if k == 1 else f"s{_SUB[i]}") + (", sψ" if k == 1 and show == "twist" else "")
+        for i, art in enumerate(self.R_art):
+            on = i < 3 - k and show in ("wrench", "spaces")
+            art.set_visible(on)
+            if on:
+                art.set_line(R[:, i])
+                name = "R" if 3 - k == 1 else f"R{_SUB[i]}"
+                if k == 2:
+                    name += " = poles of s" if not twin else " (couple): s all translations"
+                art.set_text(name)
+                art.set_anchor(_along(R[:, i], p, 1.2 if i == 0 else -1.2))
+        for i, art in enumerate(self.T_art):
+            on = i < k and show in ("wrench", "spaces")
+            art.set_visible(on)
+            if on:
+                art.set_line(T[:, i])
+                art.set_text("T" if k == 1 else f"T{_SUB[i]}")
+                art.set_anchor(_along(T[:, i], _xy(U[:, 0]) if k == 2 and U[2, 0] != 0 else COM, 1.3 if i == 0 else -1.3))
+        for i, art in enumerate(self.U_art):
+            on = i < 3 - k and show in ("twist", "spaces")
+            art.set_visible(on)
+            if on:
+                art.set_point(U[:, i])
+                self._labels[art] = "U" + ("" if 3 - k == 1 else _SUB[i]) + (" (T₁ ∩ T₂)" if k == 2 else "")
+        # the force and its splits
+        self.f_art.set_line(st["f"])
+        self.f_art.set_anchor(fp)
+        wrench, twist = show == "wrench", show == "twist"
+        self.TQ_art.set_visible(wrench and np.any(st["TQ"] != 0))
+        self.Rmu_art.set_visible(wrench and np.any(st["Rmu"] != 0))
+        if wrench:
+            self.TQ_art.set_line(st["TQ"])
+            self.TQ_art.set_anchor(fp + np.array([0.3, -0.4]))
+            self.Rmu_art.set_line(st["Rmu"])
+            self.Rmu_art.set_anchor(p + np.array([-0.4, 0.5]))
+        for art, key in ((self.afree_art, "a_free"), (self.spsi_art, "s_psi"), (self.Ug_art, "U_gamma")):
+            on = twist and np.any(st[key] != 0) and not (key == "s_psi" and k == 1)
+            art.set_visible(bool(on))
+            if on:
+                art.set_point(st[key])
+                self._labels[art] = {"a_free": "I⁻¹f", "s_psi": "sψ", "U_gamma": "Uγ"}[key]
+        self._merge_coinciding([*self.s_art, *self.U_art, self.afree_art, self.spsi_art, self.Ug_art])
+        return self._readout(st, k)
+
+    def _merge_coinciding(self, arts):
+        """Points drawn at one place (s and sψ of a rotation about the pin, U and Uγ...) get one joint label."""
+        shown = []
+        labels, besides = self._labels, self._besides
+        for a in arts:
+            if not a.get_visible():
+                continue
+            p = a.get_point()
+            n = float(np.linalg.norm(p))
+            for b in shown:
+                q = b.get_point()
+                if np.linalg.norm(np.cross(p, q)) <= 1e-9 * n * float(np.linalg.norm(q)):
+                    labels[b] = f"{labels[b]}, {labels[a]}"
+                    a.set_visible(False)
+                    break
+            else:
+                shown.append(a)
+        for a in shown:
+            a.set_text(labels[a])
+            p = a.get_point()
+            if p[2] == 0:                # at infinity: the label on the inner side of the edge arrow
+                d = np.array([-p[1], p[0]]) / float(np.hypot(p[0], p[1]))
+                a.set_text_beside(-d)
+            else:
+                a.set_text_beside(besides[a])
+
+    def _readout(self, st, k):
+        s, R = st["s"], st["R"]
+        out = {"joint": _LABEL[st["joint"]], "k (degrees of freedom)": k}
+        units = {"k (degrees of freedom)": "—"}
+        for i in range(k):
+            fu, au = _kind_units(s[:, i])
+            sub = _SUB[i] if k > 1 else ""
+            out[f"Q{sub} = s{sub}ᵀf"], units[f"Q{sub} = s{sub}ᵀf"] = float(st["Q"][i]), fu
+            out[f"ψ{sub} = T{sub}ᵀI⁻¹f"], units[f"ψ{sub} = T{sub}ᵀI⁻¹f"] = float(st["psi"][i]), au
+        for j in range(3 - k):
+            fu, au = _reaction_units(R[:, j])
+            sub = _SUB[j] if 3 - k > 1 else ""
+            out[f"μ{sub} = U{sub}ᵀf"], units[f"μ{sub} = U{sub}ᵀf"] = float(st["mu"][j]), fu
+            out[f"γ{sub} = R{sub}ᵀI⁻¹f"], units[f"γ{sub} = R{sub}ᵀI⁻¹f"] = float(st["gamma"][j]), au
+        sIs = st["sIs"]
+        out["sᵀIs (6.67)"] = float(sIs[0, 0]) if k == 1 else tuple(np.ravel(sIs))
+        units["sᵀIs (6.67)"] = ("kg·m²" if s[2, 0] != 0 else "kg") if k == 1 else "kg, kg·m, kg·m²"
+        out["pole of sψ (held body)"] = _xy(st["s_psi"]) if np.any(st["s_psi"] != 0) else "at rest"
+        units["pole of sψ (held body)"] = "m"
+        reaction = st["reaction"]
+        out["joint's push −Rμ, |force|"] = float(np.hypot(reaction[0], reaction[1]))
+        units["joint's push −Rμ, |force|"] = "N"
+        if k == 2:
+            out["U (meet of T₁, T₂)"] = _xy(st["U"][:, 0])
+            units["U (meet of T₁, T₂)"] = "m"
+        for name, val in st["residuals"].items():
+            out[f"{name} (must be 0)"] = val
+            units[f"{name} (must be 0)"] = "—"
+        self.units = units
+        return out
