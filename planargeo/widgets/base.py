@@ -504,9 +504,9 @@ class Explorer:
         self.export_png_button.on_click(self.guarded(lambda _b: self._export_clicked("png")))
         self.export_gif_button.on_click(self.guarded(lambda _b: self._export_clicked("gif")))
         self.has_play = type(self).play_step is not Explorer.play_step
-        self.player = self.play_speed = self.play_loop = None
+        self.play_control = self.play_speed = self.play_loop = None
         if self.has_play:
-            self.player = W.Play(value=0, min=0, max=10 ** 9, step=1,
+            self.play_control = W.Play(value=0, min=0, max=10 ** 9, step=1,
                                  interval=int(round(1000 / self.play_fps)), description="play",
                                  show_repeat=False)
             self.play_speed = W.Dropdown(options=[("¼×", 0.25), ("½×", 0.5), ("1×", 1.0),
@@ -514,8 +514,8 @@ class Explorer:
                                          description="speed", layout=W.Layout(width="150px"))
             self.play_loop = W.Checkbox(value=True, description="loop", indent=False,
                                         layout=W.Layout(width="80px"))
-            self.player.observe(self.guarded(self._play_tick), names="value")
-            self.player.observe(self.guarded(self._play_toggled), names="playing")
+            self.play_control.observe(self.guarded(self._play_tick), names="value")
+            self.play_control.observe(self.guarded(self._play_toggled), names="playing")
         for name, w in self.controls.items():
             w.observe(self._make_observer(name), names="value")
         self.widget = self._layout()
@@ -800,7 +800,7 @@ class Explorer:
             self._play_origin = dict(self.shown_values)
 
     def _play_tick(self, change) -> None:
-        if not self.player.playing:
+        if not self.play_control.playing:
             return
         if self._frame():
             return
@@ -808,7 +808,7 @@ class Explorer:
                 not self._message:
             self.set(**self._play_origin)  # start again
             return
-        self.player.playing = False
+        self.play_control.playing = False
 
     # ------------------------------------------------------------------- export
     def _export_path(self, path, ext: str) -> Path:
@@ -1075,7 +1075,7 @@ class Explorer:
         buttons = W.HBox([self.reset_button, W.HTML("<span style='padding:0 4px'>export</span>"),
                           self.export_button, self.export_png_button]
                          + ([self.export_gif_button] if self.has_play else []))
-        play = ([W.HBox([self.player, self.play_speed, self.play_loop])] if self.has_play else [])
+        play = ([W.HBox([self.play_control, self.play_speed, self.play_loop])] if self.has_play else [])
         controls = W.VBox(list(self.controls.values()) + play + self.extra_widgets()
                           + [buttons, self.export_label],
                           layout=W.Layout(width="330px", min_width="330px", overflow="visible"))
