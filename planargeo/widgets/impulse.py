@@ -89,10 +89,10 @@ class ImpulseExplorer(Explorer):
         dict
         """
         return {
-            "body": W.Dropdown(options=(("bat (grip)", "bat"), ("door (hinge, top view)", "door")),
-                               value="bat", description="body"),
-            "support": W.ToggleButtons(options=(("held at grip / hinge", "held"), ("free", "free")),
-                                       value="held", description="support", style={"button_width": "auto"}),
+            "body": W.Dropdown(options=list(BODIES), value="bat", description="body",
+                               tooltip="a bat held at its grip, or a door (top view) held by its hinge"),
+            "support": W.ToggleButtons(options=["held", "free"], value="held", description="support",
+                                       tooltips=["held at the grip / hinge (a revolute joint)", "nothing holds it"]),
             "m": Step(0.1, 30.0, 0.05, 0.9, "mass m (kg)").make("m"),
             "strike x": Step(-0.4, 1.15, 0.005, 0.55, "blow point x (m)").make("strike x"),
             "strike y": Step(-0.55, 0.55, 0.005, 0.0, "blow point y (m)").make("strike y"),

@@ -32,7 +32,7 @@ Examples
 >>> ex = SubspaceExplorer(display="agg")
 >>> ex.readout_values["Q = sᵀf"]                   # the moment of f about the pivot, 1 N × 1.6 m
 1.6
->>> ex.set(joint="twin_prismatic").readout_values["U (meet of T₁, T₂)"]   # the centre of mass
+>>> ex.set(joint="plane joint (4.79)").readout_values["U (meet of T₁, T₂)"]   # the centre of mass
 (1.0, 0.0)
 """
 from __future__ import annotations
@@ -53,11 +53,12 @@ from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["SubspaceExplorer", "JOINT_OPTIONS"]
 
-#: The joint dropdown: (label, kind).
-JOINT_OPTIONS = (("revolute", "revolute"), ("prismatic", "prismatic"),
-                 ("revolute + prismatic", "revolute_prismatic"), ("plane joint (4.79)", "twin_prismatic"))
-_LABEL = dict((k, lab) for lab, k in JOINT_OPTIONS)
-SHOW_OPTIONS = (("f = TQ + Rμ", "wrench"), ("I⁻¹f = sψ + Uγ", "twist"), ("s, R, T, U", "spaces"))
+#: The joint dropdown: shown name -> the package's joint kind (4.79's plane joint is ``twin_prismatic``).
+JOINT_OPTIONS = {"revolute": "revolute", "prismatic": "prismatic",
+                 "revolute + prismatic": "revolute_prismatic", "plane joint (4.79)": "twin_prismatic"}
+_LABEL = {k: lab for lab, k in JOINT_OPTIONS.items()}
+#: The "show" buttons: shown name -> what is drawn.
+SHOW_OPTIONS = {"f = TQ + Rμ": "wrench", "I⁻¹f = sψ + Uγ": "twist", "s, R, T, U": "spaces"}
 #: the body: a bar along x with its centre of mass at (1, 0)
 COM = (1.0, 0.0)
 _BAR = np.array([(-0.3, -0.12), (2.3, -0.12), (2.3, 0.12), (-0.3, 0.12)])
@@ -123,7 +124,7 @@ class SubspaceExplorer(Explorer):
     slug = "subspace"
     figsize = (6.4, 5.0)
     limits = (-1.5, 3.5, -2.0, 2.0)
-    display_controls = ("show",)
+    display_controls = ()   # "show" recomputes (cheap): the generic test flips display controls as sliders
     scale = 1.0
 
     def make_controls(self):
@@ -134,7 +135,7 @@ class SubspaceExplorer(Explorer):
         dict
         """
         return {
-            "joint": W.Dropdown(options=JOINT_OPTIONS, value="revolute", description="joint"),
+            "joint": W.Dropdown(options=list(JOINT_OPTIONS), value="revolute", description="joint"),
             "joint x": Step(-1.4, 3.4, 0.01, 0.0, "joint x (m)").make("joint x"),
             "joint y": Step(-1.9, 1.9, 0.01, 0.0, "joint y (m)").make("joint y"),
             "joint angle": Step(-180, 180, 1.0, 0.0, "joint angle (deg)").make("joint angle"),
@@ -144,7 +145,7 @@ class SubspaceExplorer(Explorer):
             "F": Step(-4.0, 4.0, 0.05, 1.0, "force F (N)").make("F"),
             "m": Step(0.2, 10.0, 0.1, 2.0, "mass m (kg)").make("m"),
             "rho": Step(0.05, 1.5, 0.01, 0.5, "radius of gyration ρ (m)").make("rho"),
-            "show": W.ToggleButtons(options=SHOW_OPTIONS, value="wrench", description="show",
+            "show": W.ToggleButtons(options=list(SHOW_OPTIONS), value="f = TQ + Rμ", description="show",
                                     style={"button_width": "auto"}),
         }
 
@@ -214,7 +215,7 @@ class SubspaceExplorer(Explorer):
 
     def _dir_where(self):
         v = self.values
-        if v["joint"] == "revolute":
+        if JOINT_OPTIONS[v["joint"]] == "revolute":
             return None
         e = unit_direction(v["joint angle"])
         return (v["joint x"] + DIR_HANDLE * e[0], v["joint y"] + DIR_HANDLE * e[1])
@@ -264,7 +265,7 @@ class SubspaceExplorer(Explorer):
         e = float(v["F"]) * unit_direction(v["force angle"])
         a = (float(v["force x"]), float(v["force y"]))
         f = np.array([e[0], e[1], a[0] * e[1] - a[1] * e[0]])
-        st = subspace_state(v["joint"], (v["joint x"], v["joint y"]), unit_direction(v["joint angle"]), I, f)
+        st = subspace_state(JOINT_OPTIONS[v["joint"]], (v["joint x"], v["joint y"]), unit_direction(v["joint angle"]), I, f)
         st["point"], st["direction"], st["force point"] = (np.array([v["joint x"], v["joint y"]]),
                                                            unit_direction(v["joint angle"]), np.array(a))
         return st
@@ -281,7 +282,7 @@ class SubspaceExplorer(Explorer):
         -------
         dict
         """
-        show = self.values["show"]
+        show = SHOW_OPTIONS[self.values["show"]]
         s, R, T, U = st["s"], st["R"], st["T"], st["U"]
         k = s.shape[1]
         p, e, fp = st["point"], st["direction"], st["force point"]
