@@ -16,9 +16,9 @@ ordinary: put ``P`` at infinity (a direction) and its polar is a diameter, a
 line through the centre; the line at infinity has the centre as its pole.
 
 Under ``%matplotlib widget`` drag with the mouse (or call :meth:`Explorer.drag`):
-the point ``P``, the line ``M`` by its point nearest the origin (``M (point)``,
-a parallel move) or by a second point on it (``M (direction)``, a turn about the
-first), and the ``pole of M`` (``M`` becomes the polar of the dragged point).
+the point ``P``, the line ``M`` by a point on it (``M (point)``, first its point
+nearest the origin: a parallel move) or by a second point on it (``M (direction)``,
+a turn about the first), and the ``pole of M`` (``M`` becomes the polar of the dragged point).
 The *construction* and *line and its pole* checkboxes only redraw (nothing is
 recomputed).
 
@@ -156,18 +156,25 @@ class ProjectiveExplorer(Explorer):
         t = math.radians(ang)
         e = np.array([math.cos(t), math.sin(t)])
         foot = off * np.array([-e[1], e[0]])
-        return foot, foot + 1.5 * e
+        pivot = getattr(self, "_M_pivot", None)  # the point M turns about: kept while on M
+        M = st["M"]
+        if pivot is None or abs(M[2] + pivot[1] * M[0] - pivot[0] * M[1]) > 1e-9 * max(
+                1.0, float(np.abs(pivot).max())):
+            pivot = foot
+        self._M_pivot = pivot
+        return pivot, pivot + 1.5 * e
 
     def _drag_M_point(self, x, y):
         ang = self.values["line angle (deg)"]
         t = math.radians(ang)
+        self._M_pivot = np.array([x, y], dtype=float)
         return {"line offset": -math.sin(t) * x + math.cos(t) * y}
 
     def _drag_M_direction(self, x, y):
         pts = self._M_points()
         if pts is None:
             raise DegenerateGeometryError("M is not shown as a finite line")
-        foot = pts[0]
+        foot = pts[0]  # the pivot: M turns about it
         d = np.array([x, y]) - foot
         if np.hypot(*d) < 1e-9:
             raise DegenerateGeometryError("the direction point is on the turning point")
