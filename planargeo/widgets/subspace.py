@@ -51,7 +51,7 @@ from planargeo.scenes.subspace import subspace_state, unit_direction
 from planargeo.screws.twists import inertia_matrix
 from planargeo.widgets.base import Explorer, Handle, Step
 
-__all__ = ["SubspaceExplorer", "JOINT_OPTIONS", "SHOW_OPTIONS", "declutter_labels"]
+__all__ = ["SubspaceExplorer", "JOINT_OPTIONS", "SHOW_OPTIONS"]
 
 #: The joint dropdown: shown name -> the package's joint kind (4.79's plane joint is ``twin_prismatic``).
 JOINT_OPTIONS = {"revolute": "revolute", "prismatic": "prismatic",
@@ -91,92 +91,6 @@ def _along(line, ref, t: float):
 #: coinciding points (s and sψ of a pure rotation about the pin, U and Uγ...) keep legible labels
 _BESIDE = {"s": (-0.7, 0.7), "U": (0.7, -0.7), "a_free": (0.7, 0.7), "s_psi": (-0.7, -0.7),
            "U_gamma": (-1.0, 0.0), "c": (0.0, 1.0)}
-
-
-#: label directions tried, in order, for a label that overlaps another or leaves the axes
-_TRY = ((0.7, 0.7), (-0.7, 0.7), (0.7, -0.7), (-0.7, -0.7), (0.0, 1.0), (0.0, -1.0), (1.0, 0.0), (-1.0, 0.0))
-_GAP = 5.0
-
-
-def _align(u) -> tuple[float, float]:
-    """Fractions of the width and height left of / below the text position, as ``set_text_beside(u)`` aligns."""
-    fx = 0.0 if u[0] > 0.35 else 1.0 if u[0] < -0.35 else 0.5
-    fy = 0.0 if u[1] > 0.35 else 1.0 if u[1] < -0.35 else 0.5
-    return fx, fy
-
-
-def declutter_labels(ax, movable: dict) -> list[str]:
-    """Turn labels around their anchors until no two overlap and none leaves the axes.
-
-    Every artist of ``movable`` has its label beside its anchor in direction ``u``
-    (:meth:`set_text_beside`, gap 5 pt) when called.  The labelled artists alone are drawn
-    once (cheap: no ticks, no full figure) to measure the labels; then, greedily, a label
-    that overlaps another text of these artists or leaves the axes takes the first of eight
-    directions around its anchor that is clear.
-
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes
-        The axes holding the artists (labels must stay inside it).
-    movable : dict
-        Label text -> ``(artist, u)``: a visible PointArtist, LineArtist or ConicArtist of
-        ``ax`` and the direction ``u`` its label has now.
-
-    Returns
-    -------
-    list of str
-        The labels that found no clear place (left where they were).
-    """
-    from matplotlib.text import Text
-
-    from planargeo.draw.layout import TOL_PX
-
-    renderer = ax.figure.canvas.get_renderer()
-    px = renderer.points_to_pixels(1.0)
-    boxes, labels = [], {}
-    for name, (art, u) in movable.items():
-        art.draw(renderer)                       # places its texts (drawn again by the real draw)
-    for art in {id(a): a for a, _ in movable.values()}.values():
-        for c in art.get_children():
-            if isinstance(c, Text) and c.get_visible() and c.get_text().strip():
-                bb = c.get_window_extent(renderer)
-                if abs(bb.x0) < 1e7 and abs(bb.y0) < 1e7:
-                    boxes.append([c.get_text(), bb.x0, bb.y0, bb.x1, bb.y1])
-                    if c.get_text() in movable:
-                        labels[c.get_text()] = len(boxes) - 1
-    frame = ax.bbox
-
-    def clash(i, b) -> bool:
-        _, x0, y0, x1, y1 = b
-        if x0 < frame.x0 - TOL_PX or y0 < frame.y0 - TOL_PX or x1 > frame.x1 + TOL_PX or y1 > frame.y1 + TOL_PX:
-            return True
-        for j, o in enumerate(boxes):
-            if j != i and min(x1, o[3]) - max(x0, o[1]) > TOL_PX and min(y1, o[4]) - max(y0, o[2]) > TOL_PX:
-                return True
-        return False
-
-    stuck = []
-    for name, i in labels.items():
-        b = boxes[i]
-        if not clash(i, b):
-            continue
-        art, u = movable[name]
-        w, h = b[3] - b[1], b[4] - b[2]
-        fx, fy = _align(u)
-        ax_x = b[1] + fx * w - _GAP * u[0] * px            # the anchor (display), from the drawn box
-        ax_y = b[2] + fy * h - _GAP * u[1] * px
-        for v in _TRY:
-            gx, gy = _align(v)
-            x0 = ax_x + _GAP * v[0] * px - gx * w
-            y0 = ax_y + _GAP * v[1] * px - gy * h
-            cand = [name, x0, y0, x0 + w, y0 + h]
-            if not clash(i, cand):
-                boxes[i] = cand
-                art.set_text_beside(v, gap=_GAP)
-                break
-        else:
-            stuck.append(name)
-    return stuck
 
 
 def _kind_units(s_col) -> tuple[str, str]:
@@ -258,7 +172,7 @@ class SubspaceExplorer(Explorer):
         self.com.set_text_beside(_BESIDE["c"])
         self.conic = ax.add_artist(ConicArtist(np.eye(3), role="inertia", text="I", text_offset=(-6.0, 4.0)))
         self.conic.set_text_alignment("right", "bottom")
-        self.s_art = [ax.add_artist(PointArtist(z, role="twist", glyph=False, markersize=8))
+        self.s_art = [ax.add_artist(PointArtist(z, role="twist", glyph=False, markersize=8, glyph_scale=0.5))
                       for _ in range(2)]
         self._labels, self._besides = {}, {}
         for a in self.s_art:
@@ -267,7 +181,7 @@ class SubspaceExplorer(Explorer):
                                                corner="upper left")) for _ in range(2)]
         self.T_art = [ax.add_artist(LineArtist(zl, role="wrench", scale=None, linewidth=1.0,
                                                linestyle=(0, (6, 3)), corner="lower left")) for _ in range(2)]
-        self.U_art = [ax.add_artist(PointArtist(z, role="accel", glyph=False, markersize=7)) for _ in range(2)]
+        self.U_art = [ax.add_artist(PointArtist(z, role="accel", glyph=False, markersize=7, glyph_scale=0.5)) for _ in range(2)]
         for a in self.U_art:
             self._besides[a] = _BESIDE["U"]
         self.f_art = ax.add_artist(LineArtist(zl, role="wrench", scale=ARROW, text="f", text_at="tip"))
@@ -275,9 +189,9 @@ class SubspaceExplorer(Explorer):
                                                corner="lower right"))
         self.Rmu_art = ax.add_artist(LineArtist(zl, role="reaction", scale=ARROW, text="Rμ", linewidth=2.6,
                                                 corner="upper right"))
-        self.afree_art = ax.add_artist(PointArtist(z, role="accel", glyph_scale=2.0, text="I⁻¹f"))
-        self.spsi_art = ax.add_artist(PointArtist(z, role="accel", glyph_scale=2.0, text="sψ"))
-        self.Ug_art = ax.add_artist(PointArtist(z, role="accel", glyph_scale=2.0, text="Uγ",
+        self.afree_art = ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.5, text="I⁻¹f"))
+        self.spsi_art = ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.5, text="sψ"))
+        self.Ug_art = ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.5, text="Uγ",
                                                 color=COLORS["momentum"]))
         for a, key in ((self.afree_art, "a_free"), (self.spsi_art, "s_psi"), (self.Ug_art, "U_gamma")):
             self._besides[a] = _BESIDE[key]
@@ -442,27 +356,11 @@ class SubspaceExplorer(Explorer):
                 art.set_point(st[key])
                 self._labels[art] = {"a_free": "I⁻¹f", "s_psi": "sψ", "U_gamma": "Uγ"}[key]
         self._merge_coinciding([*self.s_art, *self.U_art, self.afree_art, self.spsi_art, self.Ug_art])
-        self._place_labels()
         return self._readout(st, k)
-
-    def _place_labels(self):
-        """Every label from its default side, then turned off any other (:func:`declutter_labels`)."""
-        sides = {self.com: _BESIDE["c"], self.conic: (-0.7, 0.7)}
-        for a in (*self.R_art, *self.T_art, self.f_art, self.TQ_art, self.Rmu_art):
-            sides[a] = (0.7, 0.7)
-        for a in (*self.s_art, *self.U_art, self.afree_art, self.spsi_art, self.Ug_art):
-            sides[a] = self._side.get(a, (0.7, 0.7))
-        movable = {}
-        for a, u in sides.items():
-            if a.get_visible() and self._text.get(a):
-                a.set_text_beside(u, gap=_GAP)
-                movable[self._text[a]] = (a, u)
-        declutter_labels(self.ax, movable)
 
     def _merge_coinciding(self, arts):
         """Points drawn at one place (s and sψ of a rotation about the pin, U and Uγ...) get one joint label."""
         shown = []
-        self._side = {}
         labels, besides = self._labels, self._besides
         for a in arts:
             if not a.get_visible():
@@ -477,15 +375,16 @@ class SubspaceExplorer(Explorer):
                     break
             else:
                 shown.append(a)
+        (x0, x1), (y0, y1) = self.ax.get_xlim(), self.ax.get_ylim()
         for a in shown:
             a.set_text(labels[a])
             self._text[a] = labels[a]
             p = a.get_point()
-            if p[2] == 0:                # at infinity: the label on the inner side of the edge arrow
-                d = np.array([-p[1], p[0]]) / float(np.hypot(p[0], p[1]))
-                self._side[a] = tuple(-d)
-            else:
-                self._side[a] = besides[a]
+            inside = p[2] != 0 and x0 <= -p[1] / p[2] <= x1 and y0 <= p[0] / p[2] <= y1
+            if inside:
+                a.set_text_beside(besides[a])
+            else:                        # an edge arrow (off the view, at infinity): its label inside
+                a.set_text_offset(None)
 
     def _readout(self, st, k):
         s, R = st["s"], st["R"]
