@@ -74,9 +74,13 @@ def _finite_or_none(v: float) -> float | None:
     return v if math.isfinite(v) else None
 
 
-def _pole(tw) -> list | None:
-    """The pole ``(x, y)`` of a twist, None for a translation (or no motion)."""
-    if tw[2] == 0.0:
+def _pole(tw, size: float = 1.0) -> list | None:
+    """The pole ``(x, y)`` of a twist, None for a translation (or no motion).
+
+    A turn at round-off level (``|ω| size ≤ 1e-12 |v|``, ``size`` the body's length: a blow
+    through the centre of mass computed with a centroid off by an ulp) is a translation.
+    """
+    if abs(tw[2]) * size <= 1e-12 * math.hypot(tw[0], tw[1]):
         return None
     return [float(-tw[1] / tw[2]) + 0.0, float(tw[0] / tw[2]) + 0.0]
 
@@ -146,16 +150,17 @@ def impulse(body: str = "bat", support: str = "held", m: float = 0.9, x: float =
     s = motion_space("revolute", (0.0, 0.0))
     dv, reaction = impulse_response(I, j, s if support == "held" else None)
     dv_free, _ = impulse_response(I, j, None)
+    size = float(np.ptp(np.array(BODIES[body]), axis=0).max())
     n = c / float(np.hypot(*c))                                  # along grip -> centre of mass
     t = np.array([-n[1], n[0]])                                  # across
     rf = reaction[:2]
     v_grip = dv[:2]                                              # velocity of the origin (the grip)
     q = {
         "I": _plain(I), "com": _plain(c), "rho": rho, "impulse": _plain(j), "dv": _plain(dv),
-        "omega": float(dv[2]), "pole": _pole(dv), "v_com": _plain(dv[:2] + dv[2] * np.array([-c[1], c[0]])),
+        "omega": float(dv[2]), "pole": _pole(dv, size), "v_com": _plain(dv[:2] + dv[2] * np.array([-c[1], c[0]])),
         "reaction": _plain(reaction), "reaction_force": _plain(rf),
         "reaction_across": float(rf @ t), "reaction_along": float(rf @ n),
-        "pole_if_free": _pole(dv_free),
+        "pole_if_free": _pole(dv_free, size),
         "centre_of_percussion": _plain(centre_of_percussion(I, (0.0, 0.0))),
         "apparent_mass_held": _finite_or_none(apparent_mass(I, j, s)),
         "apparent_mass_free": _finite_or_none(apparent_mass(I, j)),
