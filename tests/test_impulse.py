@@ -121,3 +121,16 @@ def test_functions_refuse_bad_input_by_name():
         scenes.build("impulse", J=0.0)
     with pytest.raises(SceneError, match="^body must be 'bat' or 'door'"):
         scenes.build("impulse", body="club")
+
+
+@pytest.mark.parametrize("theta", np.linspace(0.0, math.pi, 7))
+def test_apparent_mass_of_an_articulated_inertia_figure_3_3(theta):
+    """Figure 3.3 in the plane: a slider (m) in a slot along x of a disc (m), both centred at the origin and
+    free.  By hand its articulated inertia is diag(m, 2m, J_S + J_B) (the slot passes the disc's y-force and
+    couple on); the apparent mass through the centre is 1 / (cos²θ/m + sin²θ/(2m)): m along, 2m across."""
+    m, JS, JB = 1.5, 0.02, 0.3
+    A = np.diag([m, 2 * m, JS + JB])
+    line = [math.cos(theta), math.sin(theta), 0.0]
+    ref = 1.0 / (math.cos(theta) ** 2 / m + math.sin(theta) ** 2 / (2 * m))
+    assert apparent_mass(A, line) == pytest.approx(ref, rel=1e-12)
+    assert apparent_mass(A, np.multiply(line, -3.0)) == pytest.approx(ref, rel=1e-12)   # any multiple
