@@ -32,8 +32,8 @@ def legible(ex):
 
 def residuals_print_as_zero(ex):
     for name in RESIDUALS:
-        assert ex.readout_strings[f"{name} (must be 0)"] == "0", (name, ex.readout_strings)
-        assert abs(ex.readout_values[f"{name} (must be 0)"]) < 1e-12
+        assert ex.readout_strings[f"{name} →0"] == "0", (name, ex.readout_strings)
+        assert abs(ex.readout_values[f"{name} →0"]) < 1e-12
 
 
 @pytest.fixture

@@ -412,7 +412,7 @@ class SubspaceExplorer(Explorer):
             out["U (meet of T₁, T₂)"] = _xy(st["U"][:, 0])
             units["U (meet of T₁, T₂)"] = "m"
         for name, val in st["residuals"].items():
-            out[f"{name} (must be 0)"] = val
-            units[f"{name} (must be 0)"] = "—"
+            out[f"{name} →0"] = val
+            units[f"{name} →0"] = "—"
         self.units = units
         return out
