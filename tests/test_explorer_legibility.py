@@ -40,7 +40,7 @@ def test_default_state_is_legible(name):
     assert legibility_problems(ex.fig) == []
 
 
-@pytest.mark.parametrize("name", _params())
+@pytest.mark.parametrize("name", sorted(widgets.EXPLORERS))
 def test_figure_fills_the_notebook_column(name):
     ex = getattr(widgets, name)(display="agg")
     w, h = ex.figure_px
