@@ -531,10 +531,12 @@ class Explorer:
         self._legend = None
 
         # widgets ---------------------------------------------------------------
-        self.readout = W.HTML(layout=W.Layout(width="300px", overflow="hidden"))
+        fig_w = f"{self.figure_px[0]}px"
+        self.readout = W.HTML(layout=W.Layout(width=fig_w, max_width="100%", overflow="hidden"))
         self.readout_strings: dict[str, str] = {}
-        self.message_box = W.HTML(layout=W.Layout(width="300px", height="4.2em", min_height="4.2em",
-                                                  max_height="4.2em", overflow="auto"))
+        self.message_box = W.HTML(layout=W.Layout(width=fig_w, max_width="100%", height="2.8em",
+                                                  min_height="2.8em", max_height="2.8em",
+                                                  overflow="auto"))
         self.reset_button = W.Button(description="Reset", icon="undo",
                                      tooltip="Return every control to its default",
                                      layout=W.Layout(width="auto"))
@@ -547,7 +549,7 @@ class Explorer:
         self.export_gif_button = W.Button(description="GIF", icon="film",
                                           tooltip="Export an animation as GIF (a download link)",
                                           layout=W.Layout(width="auto"))
-        self.export_label = W.HTML(layout=W.Layout(width="310px", min_height="1.6em"))
+        self.export_label = W.HTML(layout=W.Layout(width="310px", height="1.8em", overflow="hidden"))
         self.reset_button.on_click(self.guarded(lambda _b: self.reset()))
         self.export_button.on_click(self.guarded(lambda _b: self._export_clicked("svg")))
         self.export_png_button.on_click(self.guarded(lambda _b: self._export_clicked("png")))
@@ -1253,10 +1255,13 @@ class Explorer:
         controls = W.VBox(list(self.controls.values()) + play + self.extra_widgets()
                           + [buttons, self.export_label],
                           layout=W.Layout(width="330px", min_width="330px", overflow="visible"))
-        right = W.VBox([self.message_box, W.HTML("<b>Readout</b>"), self.readout],
-                       layout=W.Layout(width="310px", min_width="310px"))
+        # controls on the left; on the right a reserved message line, the figure and the readout
+        # under it: fixed widths and heights above the readout, so nothing moves when a message
+        # appears or the readout changes (the readout only grows downwards, with nothing below)
+        right = W.VBox([self.message_box, fig_widget, self.readout],
+                       layout=W.Layout(align_items="flex-start", overflow="visible"))
         head = W.HTML(f"<h4 style='margin:2px'>{html.escape(self.title)}</h4>")
-        body = W.HBox([controls, fig_widget, right],
+        body = W.HBox([controls, right],
                       layout=W.Layout(flex_flow="row wrap", align_items="flex-start"))
         root = W.VBox([head, body])
         root.add_class("planargeo-explorer")
@@ -1521,8 +1526,8 @@ class Explorer:
                 f"white-space:nowrap'>{text}</td>"
                 f"<td style='padding-left:3px;line-height:1.25;white-space:nowrap;color:#555'>"
                 f"{html.escape(unit)}</td></tr>")
-        return (f"<table class='planargeo-readout' style='font-size:12px;table-layout:auto;"
-                f"border-collapse:collapse'>{''.join(rows)}</table>")
+        return (f"<b>Readout</b><table class='planargeo-readout' style='font-size:12px;"
+                f"table-layout:auto;border-collapse:collapse'>{''.join(rows)}</table>")
 
     def _export_bytes(self, kind: str) -> bytes:
         if kind == "svg":
@@ -1545,8 +1550,9 @@ class Explorer:
                 data, name, saved = self._export_bytes(kind), f"planargeo-{self.slug}.{kind}", ""
             href = f"data:{mime};base64,{base64.b64encode(data).decode('ascii')}"
             self.export_label.value = (
-                f"{saved}<a download='{html.escape(name)}' href='{href}' "
-                f"class='planargeo-download' style='font-weight:bold'>⬇ {html.escape(name)}</a>")
+                f"<div style='white-space:nowrap;overflow:hidden;text-overflow:ellipsis'>"
+                f"<a download='{html.escape(name)}' href='{href}' class='planargeo-download' "
+                f"style='font-weight:bold'>⬇ {html.escape(name)}</a> {saved}</div>")
         except Exception as exc:  # noqa: BLE001
             self.export_label.value = (f"<span style='color:#b00020'>export failed: "
                                        f"{html.escape(str(exc))}</span>")
