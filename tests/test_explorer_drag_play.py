@@ -171,6 +171,7 @@ def test_speed_scales_the_time_step():
 
 def test_play_widget_ticks_and_loops():
     ex = Dot(display="agg", x=0.9)
+    ex.play_control.interval = 60_000                 # frames always faster: no tick dropped
     ex.play_control.playing = True
     ex.play_control.value += 1
     assert ex.values["x"] == pytest.approx(0.95)
@@ -181,6 +182,16 @@ def test_play_widget_ticks_and_loops():
     for _ in range(3):
         ex.play_control.value += 1
     assert not ex.play_control.playing
+
+
+def test_ticks_queued_behind_a_slow_frame_are_dropped():
+    ex = Dot(display="agg")
+    ex.play_control.interval = 1                      # every frame (a redraw) is slower than 1 ms
+    ex.play_control.playing = True
+    ex.play_control.value += 1
+    x = ex.values["x"]
+    ex.play_control.value += 1                        # arrives at once: a backlog tick, dropped
+    assert ex.values["x"] == x == pytest.approx(1.0 / ex.play_fps)
 
 
 def test_no_play_without_play_step():
