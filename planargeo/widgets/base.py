@@ -512,6 +512,8 @@ class Explorer:
         self._echo: dict[str, list] = {}
         self._shadow: dict[str, tuple[float, float]] = {}
         self._drag_active: Handle | None = None
+        self._drag_pending: tuple[float, float] | None = None
+        self._last_drag = (0.0, 0.0)
         self._extra_handles: list[Handle] = []
         self._exporting = False
         self._play_origin: dict[str, Any] | None = None
@@ -1306,16 +1308,35 @@ class Explorer:
                 best, dmin = h, d
         self._drag_active = best
 
+    #: a mouse move arriving within this many seconds of the end of a drag step that took longer
+    #: than :attr:`DRAG_BACKLOG_COST` was queued behind it: it is kept and applied with the next
+    #: move or the release, not drawn on its own (so the figure keeps up with the mouse)
+    DRAG_BACKLOG_GAP = 0.008
+    DRAG_BACKLOG_COST = 0.03
+
     def _on_move(self, ev) -> None:
         h = self._drag_active
         if h is None or ev.inaxes is not self.ax or ev.xdata is None:
             return
         x, y = ev.xdata, ev.ydata
-        if np.isfinite(x) and np.isfinite(y):
-            self._drag_to(h, float(x), float(y))
+        if not (np.isfinite(x) and np.isfinite(y)):
+            return
+        now = time.monotonic()
+        last_end, last_cost = self._last_drag
+        if last_cost > self.DRAG_BACKLOG_COST and now - last_end < self.DRAG_BACKLOG_GAP:
+            self._drag_pending = (float(x), float(y))
+            self._last_drag = (now, last_cost)
+            return
+        self._drag_pending = None
+        self._drag_to(h, float(x), float(y))
+        self._last_drag = (time.monotonic(), time.monotonic() - now)
 
     def _on_release(self, ev) -> None:
-        self._drag_active = None
+        h, pending = self._drag_active, self._drag_pending
+        self._drag_active, self._drag_pending = None, None
+        if h is not None and pending is not None:  # the last position, queued behind a slow step
+            self._drag_to(h, *pending)
+        self._last_drag = (0.0, 0.0)
 
     def _make_observer(self, name: str) -> Callable:
         widget = self.controls[name]
