@@ -1189,7 +1189,8 @@ class Explorer:
             self.fig.canvas.draw()
         else:
             buf = io.BytesIO()
-            self.fig.savefig(buf, format="png", dpi=self.dpi)
+            # fast PNG compression: the image goes to the page once, its encoding is on every update
+            self.fig.savefig(buf, format="png", dpi=self.dpi, pil_kwargs={"compress_level": 1})
             self.image.value = buf.getvalue()
 
     def guarded(self, callback: Callable) -> Callable:
