@@ -1576,7 +1576,7 @@ class Explorer:
             self.readout_strings[str(k)] = f"{text} {unit}" if unit else text
             rows.append(
                 f"<tr><td style='padding-right:6px;line-height:1.25;white-space:nowrap;"
-                f"overflow:hidden;text-overflow:ellipsis;max-width:120px' title='{html.escape(str(k))}'>"
+                f"overflow:hidden;text-overflow:ellipsis;max-width:300px' title='{html.escape(str(k))}'>"
                 f"{html.escape(str(k))}</td>"
                 f"<td style='text-align:right;font-family:monospace;line-height:1.25;"
                 f"white-space:nowrap'>{text}</td>"
