@@ -244,6 +244,7 @@ class ImpulseExplorer(Explorer):
         jr = ex["reaction"]
         self.reaction.set_visible(held and bool(np.hypot(jr[0], jr[1]) > 1e-12 * abs(r.params["J"])))
         if self.reaction.get_visible():
+            self.reaction.set_text("ĵ_R (grip)" if r.params["body"] == "bat" else "ĵ_R (hinge)")
             self.reaction.set_line(jr)
             u = jr[:2] / float(np.hypot(jr[0], jr[1]))
             self.reaction.set_anchor(-0.15 * u)            # the arrow ends near P, pushing on the body there
