@@ -210,16 +210,30 @@ def _signature_params(func, skip_first: bool) -> list[str]:
     return [p.name for p in params if p.name not in ("self", "cls")]
 
 
+class Malformed(Exception):
+    """numpydoc could not parse the docstring (e.g. a section given twice)."""
+
+
 def _parse(doc: str | None):
     if not doc or not doc.strip():
         return None
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        return numpydoc_docscrape.NumpyDocString(doc)
+        try:
+            return numpydoc_docscrape.NumpyDocString(doc)
+        except ValueError as exc:
+            raise Malformed(str(exc).split("\n")[0]) from None
 
 
 def problems(qualname: str, obj, kind: str) -> list[str]:
     """What the docstring of one public object lacks (an empty list: nothing)."""
+    try:
+        return _problems(qualname, obj, kind)
+    except Malformed as exc:
+        return [f"numpydoc cannot parse it: {exc}"]
+
+
+def _problems(qualname: str, obj, kind: str) -> list[str]:
     if kind == "class":
         return _class_problems(obj)
     func = _unwrap(obj)
