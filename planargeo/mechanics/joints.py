@@ -314,6 +314,13 @@ class JointSpace:
     dof : int
         ``k``.
 
+    Raises
+    ------
+    InputError
+        For an unknown ``kind``.
+    ShapeError
+        If ``point`` or ``direction`` does not have shape (2,).
+
     Examples
     --------
     >>> j = prismatic(direction=(0.0, 1.0), point=(1.0, 0.0))
@@ -439,6 +446,16 @@ def revolute(point=(0.0, 0.0)) -> JointSpace:
     One joint: ``point`` of shape ``(2,)`` (like every joint constructor;
     :func:`motion_space` / :func:`reaction_space` broadcast).
 
+    Parameters
+    ----------
+    point : array_like, shape (2,), optional
+        A point of the joint (m); default the origin.
+
+    Returns
+    -------
+    JointSpace
+        ``s = [y, -x, 1]``, ``R`` = unit forces along x and y through the point.
+
     Examples
     --------
     >>> revolute((0.0, 0.0)).s.ravel()          # thesis 4.64
@@ -452,6 +469,18 @@ def prismatic(direction=(1.0, 0.0), point=(0.0, 0.0)) -> JointSpace:
 
     One joint: ``direction`` and ``point`` of shape ``(2,)``.
 
+    Parameters
+    ----------
+    direction : array_like, shape (2,), optional
+        Sliding direction (non-zero); default +x.
+    point : array_like, shape (2,), optional
+        A point of the joint (m); default the origin.
+
+    Returns
+    -------
+    JointSpace
+        ``s = [dx, dy, 0]`` (unit), ``R`` = the normal force through the point and a couple.
+
     Examples
     --------
     >>> np.round(prismatic((1.0, 1.0)).s.ravel(), 4)
@@ -464,6 +493,18 @@ def revolute_prismatic(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Two-dof pin-in-slot joint: slide along ``direction``, turn about ``point`` (thesis 4.74).
 
     One joint: ``point`` and ``direction`` of shape ``(2,)``.
+
+    Parameters
+    ----------
+    point : array_like, shape (2,), optional
+        A point of the joint (m); default the origin.
+    direction : array_like, shape (2,), optional
+        Sliding direction (non-zero); default +x.
+
+    Returns
+    -------
+    JointSpace
+        Two columns of ``s`` (slide, turn), one of ``R`` (the normal force through the point).
 
     Examples
     --------
@@ -490,6 +531,18 @@ def twin_prismatic(direction=(1.0, 0.0), point=(0.0, 0.0)) -> JointSpace:
     In a model it is the joint kind ``"twin_prismatic"`` of :class:`planargeo.mechanics.model.Joint`
     (two dofs, slid by ``(q[0], q[1])`` along ``e`` and ``e⊥``, not rotated; the same
     columns as :func:`planargeo.mechanics.kinematics.joint_axes`).
+
+    Parameters
+    ----------
+    direction : array_like, shape (2,), optional
+        Sliding direction (non-zero); default +x.
+    point : array_like, shape (2,), optional
+        A point of the joint (m); default the origin.
+
+    Returns
+    -------
+    JointSpace
+        ``s = [e, e⊥]``, ``R = [0, 0, 1]``.
 
     Examples
     --------
@@ -519,6 +572,18 @@ def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     and ``direction`` of shape ``(2,)``.  Thesis 4.8.4's 2-dof "plane joint"
     (4.79, no rotation) is :func:`twin_prismatic`.
 
+    Parameters
+    ----------
+    point : array_like, shape (2,), optional
+        A point of the joint (m); default the origin.
+    direction : array_like, shape (2,), optional
+        Sliding direction (non-zero); default +x.
+
+    Returns
+    -------
+    JointSpace
+        Three columns of ``s``, empty ``R``.
+
     Examples
     --------
     >>> plane().s
@@ -535,6 +600,16 @@ def fixed(point=(0.0, 0.0)) -> JointSpace:
     """Weld (0-dof) at ``point``: ``s`` is empty, ``R`` = forces through ``point`` along x, y and a couple (thesis 6.10).
 
     One joint: ``point`` of shape ``(2,)``.
+
+    Parameters
+    ----------
+    point : array_like, shape (2,), optional
+        A point of the joint (m); default the origin.
+
+    Returns
+    -------
+    JointSpace
+        Empty ``s``, three columns of ``R``.
 
     Examples
     --------
