@@ -75,14 +75,29 @@ def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.
 
     Parameters
     ----------
-    I : (3, 3) body inertia; s : (3, k) joint space; Q : (k,) joint torque;
-    p : (3,) bias force (3.11); f_next : (3,) internal force of the child
-    joints (sum); a_prev : (3,) parent acceleration; kappa : (3,) bias
-    acceleration (2.19).
-    T : (3, k), optional
+    I : array_like, shape (3, 3)
+        Body inertia at the origin.
+    s : array_like, shape (3, k)
+        Joint motion space.
+    Q : array_like, shape (k,)
+        Joint force/torque.
+    p : array_like, shape (3,)
+        Bias force of the body (3.11), gravity included.
+    f_next : array_like, shape (3,)
+        Internal force of the child joints (their sum).
+    a_prev : array_like, shape (3,)
+        Acceleration of the parent body.
+    kappa : array_like, shape (3,)
+        Bias acceleration of the joint (2.19).
+    T : array_like, shape (3, k), optional
         The percussion space ``I s (sᵀIs)⁻¹`` if already formed (and checked, e.g. by
         the singularity rule at the joint's own point); by default it is formed here
         (:func:`planargeo.mechanics.subspaces.T_of`, the rule measured at the origin).
+
+    Returns
+    -------
+    numpy.ndarray, shape (3,)
+        ``a_i``.
 
     Examples
     --------
@@ -106,6 +121,16 @@ def force_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.ndarray
     ``f_i = T_i Q_i + R_i U_i^T (I_i (a_{i-1} + kappa_i) + p_i + f_{i+1})``
     with ``T_i``, ``U_i`` built on the body inertia (6.36, 6.37) and ``R U^T = 1 - T s^T``
     (7.8), whatever the reaction basis.  Parameters as :func:`acceleration_propagator`.
+
+    Parameters
+    ----------
+    I, s, Q, p, f_next, a_prev, kappa, T : array_like
+        As in :func:`acceleration_propagator`.
+
+    Returns
+    -------
+    numpy.ndarray, shape (3,)
+        ``f_i``.
 
     Examples
     --------
@@ -271,6 +296,24 @@ def projective_workspace(model, q, qd=None, tau=None, f_ext=None) -> ProjectiveW
     Returns the per-joint subspaces ``T, U``, components ``Q, mu, psi,
     gamma``, body accelerations ``a_i`` and internal forces ``f_i`` (for drawings).
 
+    Parameters
+    ----------
+    model : Model
+        The mechanism.
+    q : array_like, shape (nq,)
+        Joint coordinates.
+    qd : array_like, shape (nq,), optional
+        Joint velocities (zero).
+    tau : array_like, shape (nq,), optional
+        Joint forces (zero).
+    f_ext : array_like, shape (N, 3), optional
+        External world wrenches.
+
+    Returns
+    -------
+    ProjectiveWorkspace
+        The per-joint quantities.
+
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
@@ -294,6 +337,24 @@ def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
     The forward-dynamics signature of :mod:`planargeo.algorithms`: ``q``, ``qd``, ``tau``
     of shape (..., nq) (leading batch dimensions solved state by state), ``f_ext`` (..., N, 3)
     world wrenches at the origin on the bodies (besides gravity); returns ``q̈`` (..., nq).
+
+    Parameters
+    ----------
+    model : Model
+        The mechanism.
+    q : array_like, shape (..., nq)
+        Joint coordinates.
+    qd : array_like, shape (..., nq)
+        Joint velocities.
+    tau : array_like, shape (..., nq)
+        Joint forces/torques (N, N·m).
+    f_ext : array_like, shape (..., N, 3), optional
+        External world wrenches at the origin on the bodies (besides gravity).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., nq)
+        ``q̈``.
 
     Raises
     ------
