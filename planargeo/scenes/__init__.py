@@ -93,6 +93,18 @@ def register(name: str, limits: dict[str, tuple[int, str]] | None = None):
     ``limits`` maps a size parameter (a positive integer such as a number of links) to its
     largest value and what that costs, e.g. ``{"n": (200, "about 0.5 s")}``: :func:`build`
     refuses larger values unless asked with ``allow_big=True``.
+
+    Parameters
+    ----------
+    name : str
+        The scene's name.
+    limits : dict, optional
+        ``{parameter: (largest value, cost)}``.
+
+    Returns
+    -------
+    callable
+        The decorator; it returns the scene function unchanged.
     """
 
     def deco(fn):
@@ -115,13 +127,35 @@ def _load() -> None:
 
 
 def names() -> list[str]:
-    """Registered scene names."""
+    """Registered scene names.
+
+    Returns
+    -------
+    list of str
+        In registration order.
+    """
     _load()
     return list(_REGISTRY)
 
 
 def get(name: str) -> Callable[..., SceneResult]:
-    """The scene function registered as ``name``; :class:`SceneError` if unknown."""
+    """The scene function registered as ``name``; :class:`SceneError` if unknown.
+
+    Parameters
+    ----------
+    name : str
+        A registered scene name (see :func:`names`).
+
+    Returns
+    -------
+    callable
+        The scene function.
+
+    Raises
+    ------
+    SceneError
+        If ``name`` is not registered.
+    """
     _load()
     try:
         return _REGISTRY[name]
@@ -130,13 +164,37 @@ def get(name: str) -> Callable[..., SceneResult]:
 
 
 def parameters(name: str) -> dict[str, Any]:
-    """The scene's parameters and their defaults."""
+    """The scene's parameters and their defaults.
+
+    Parameters
+    ----------
+    name : str
+        A registered scene name (see :func:`names`).
+
+    Returns
+    -------
+    dict
+        ``{parameter: default}``.
+    """
     sig = inspect.signature(get(name))
     return {k: p.default for k, p in sig.parameters.items()}
 
 
 def limits(name: str) -> dict[str, int]:
     """The scene's size limits ``{parameter: largest value}`` (see :func:`build`).
+
+    Parameters
+    ----------
+    name : str
+        A registered scene name (see :func:`names`).
+
+    Returns
+    -------
+    dict of str to int
+        ``{parameter: largest value}``; empty for a scene without limits.
+
+    Examples
+    --------
 
     >>> limits("chain")
     {'n': 200}
@@ -155,6 +213,11 @@ def build(name: str, *, allow_big: bool = False, **params) -> SceneResult:
         Lift the size limits (:func:`limits`), for a deliberate big job.
     **params
         The scene's parameters (:func:`parameters`).
+
+    Returns
+    -------
+    SceneResult
+        The scene's parameters, model, state, solved quantities and extras.
 
     Raises
     ------
@@ -221,6 +284,16 @@ def _fmt(v) -> str:
 
 def non_finite(result: SceneResult) -> list[str]:
     """Names (``section.key``) of the parameters, state and quantities of ``result`` holding NaN or infinity.
+
+    Parameters
+    ----------
+    result : SceneResult
+        A built scene.
+
+    Returns
+    -------
+    list of str
+        The offending names; empty when all is finite.
 
     Examples
     --------
