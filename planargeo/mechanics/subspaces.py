@@ -638,7 +638,7 @@ def reaction_force(U, f) -> np.ndarray:
     Parameters
     ----------
     U : array_like, shape (..., 3, 3-k)
-        The joint's ``U`` (6.20).
+        The joint's ``U = I⁻¹R (RᵀI⁻¹R)⁻¹`` (:func:`U_of`, 6.37).
     f : array_like, shape (..., 3)
         Wrench.
 
@@ -662,7 +662,7 @@ def active_acceleration(T, a) -> np.ndarray:
     Parameters
     ----------
     T : array_like, shape (..., 3, k)
-        The joint's ``T`` (6.12).
+        The joint's ``T = I s (sᵀIs)⁻¹`` (:func:`T_of`, 6.36).
     a : array_like, shape (..., 3)
         Acceleration twist.
 
