@@ -18,18 +18,18 @@ twists ordered ``[vx, vy, wz]`` and wrenches ``[fx, fy, tz]``.
 
 The reaction bases are chosen to be meaningful, as in thesis 4.8 / 5.63:
 
-============================  ==========================  =============================================
-kind (dof)                    ``s`` columns               ``R`` columns
-============================  ==========================  =============================================
-``revolute`` (1)              rotation about ``p``        unit forces through ``p`` along x, along y
-``prismatic`` (1)             translation along ``e``     unit force through ``p`` along ``e⊥``, couple
-``revolute_prismatic`` (2)    translation ``e``,          unit force through ``p`` along ``e⊥``
+============================  ==============================  =============================================
+kind (dof)                    ``s`` columns                   ``R`` columns
+============================  ==============================  =============================================
+``revolute`` (1)              rotation about ``p``            unit forces through ``p`` along x, along y
+``prismatic`` (1)             translation along ``e``         unit force through ``p`` along ``e⊥``, couple
+``revolute_prismatic`` (2)    translation ``e``,              unit force through ``p`` along ``e⊥``
                               rotation about ``p``
-``twin_prismatic`` (2)        translations ``e``, ``e⊥``  unit couple (the line at infinity)
-``plane`` (3)                 translations ``e``, ``e⊥``, (none)
+``twin_prismatic`` (2)        translations ``e``, ``e⊥``      unit couple (the line at infinity)
+``plane`` (3)                 translations ``e``, ``e⊥``,     (none)
                               rotation about ``p``
-``fixed`` (0)                 (none)                      unit forces through ``p`` along x, y, couple
-============================  ==========================  =============================================
+``fixed`` (0)                 (none)                          unit forces through ``p`` along x, y, couple
+============================  ==============================  =============================================
 
 (``e⊥ = (-e_y, e_x)``, the direction ``e`` turned by +90°, as in thesis 5.63.)
 The ``revolute_prismatic`` columns follow the thesis's order (4.74):
