@@ -351,13 +351,14 @@ def api(out: Path) -> set[Path]:
         for k, modname in enumerate(api_modules(package)):
             if k or package is None:
                 lines += [f"## `{modname}`", ""]
-            lines += ["```{eval-rst}", f".. automodule:: {modname}", "```", ""]
+            lines += ["```{eval-rst}", f".. automodule:: {modname}", ""]     # one block per module
             for name, obj in _public(modname):
                 base = inspect.unwrap(getattr(obj, "py_func", obj))
                 if inspect.isclass(base):
-                    lines += ["```{eval-rst}", f".. autoclass:: {modname}.{name}", "   :members:", "```", ""]
+                    lines += [f".. autoclass:: {modname}.{name}", "   :members:", ""]
                 else:
-                    lines += ["```{eval-rst}", f".. autofunction:: {modname}.{name}", "```", ""]
+                    lines += [f".. autofunction:: {modname}.{name}", ""]
+            lines += ["```", ""]
         _write(out / "api" / f"{page}.md", "\n".join(lines))
         written.add(out / "api" / f"{page}.md")
         index.append(page)
