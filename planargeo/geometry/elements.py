@@ -121,6 +121,11 @@ class Point:
         ------
         ShapeError
             If the pair given alone does not have shape (2,).
+
+        Examples
+        --------
+        >>> Point.from_xy(1, 2), Point.from_xy((1, 2))
+        (Point(x=1, y=2), Point(x=1, y=2))
         """
         xy = x if y is None else (x, y)
         a = as_array(xy, "xy", (2,))
@@ -146,6 +151,12 @@ class Point:
         ------
         ShapeError
             If ``direction`` does not have shape (2,).
+
+        Examples
+        --------
+        >>> P = Point.at_infinity((1, 0))       # the translation along y
+        >>> P, P.array
+        (Point(at infinity, direction=(1, 0)), array([ 0., -1.,  0.]))
         """
         d = as_array(direction, "direction", (2,))
         if d.shape != (2,):
@@ -180,6 +191,11 @@ class Point:
         -------
         Point
             A new, normalised Point.
+
+        Examples
+        --------
+        >>> Point([2.0, -4.0, 2.0]).normalized().array     # the point (2, 1)
+        array([ 1., -2.,  1.])
         """
         return Point(_p.normalize_point(self._a))
 
@@ -258,6 +274,11 @@ class Point:
         -------
         float
             Signed distance (m); ``±inf``/``nan`` for ideal elements.
+
+        Examples
+        --------
+        >>> Point.from_xy(3, 4).distance_to(Line.from_point_direction((0, 1), (1, 0)))   # y = 1
+        3.0
         """
         return float(_p.signed_distance(self._a, _as_line_array(line, "line")))
 
@@ -328,6 +349,11 @@ class Line:
         -------
         Line
             The line ``p ^ q``, directed from ``p`` towards ``q``.
+
+        Examples
+        --------
+        >>> Line.through(Point.from_xy(0, 0), Point.from_xy(2, 2))
+        Line(through=(0, 0), direction=(0.707107, 0.707107))
         """
         return cls(_p.join(_as_point_array(p, "p"), _as_point_array(q, "q")))
 
@@ -339,6 +365,11 @@ class Line:
         -------
         Line
             ``Line([0, 0, 1])``.
+
+        Examples
+        --------
+        >>> Line.at_infinity().array
+        array([0., 0., 1.])
         """
         return cls(_p.LINE_AT_INFINITY)
 
@@ -362,6 +393,12 @@ class Line:
         ------
         ShapeError
             If ``point`` given as coordinates does not have shape (2,).
+
+        Examples
+        --------
+        >>> L = Line.from_point_direction((1, 0), (0, 3))    # x = 1: a force of 3 N along +y
+        >>> L, L.array
+        (Line(through=(1, 0), direction=(0, 1)), array([0., 3., 3.]))
         """
         if isinstance(point, Point):
             pa = point.array
@@ -399,6 +436,11 @@ class Line:
         -------
         Line
             A new, normalised Line.
+
+        Examples
+        --------
+        >>> Line([0.0, 3.0, 3.0]).normalized().array
+        array([0., 1., 1.])
         """
         return Line(_p.normalize_line(self._a))
 
@@ -564,6 +606,11 @@ class Conic:
         -------
         Conic
             See :func:`planargeo.geometry.conics.conic_circle`.
+
+        Examples
+        --------
+        >>> Conic.circle((1, 2), 3), Conic.circle((0, 0), 1, imaginary=True)
+        (Conic(real circle, centre=(1, 2)), Conic(imaginary circle, centre=(0, 0)))
         """
         return cls(_c.conic_circle(centre, radius, imaginary=imaginary))
 
@@ -584,6 +631,11 @@ class Conic:
         -------
         Conic
             See :func:`planargeo.geometry.conics.conic_ellipse`.
+
+        Examples
+        --------
+        >>> Conic.ellipse((1, 2), (3, 1)).affine_frame().t
+        array([1., 2.])
         """
         return cls(_c.conic_ellipse(centre, axes, angle))
 
@@ -604,6 +656,11 @@ class Conic:
         -------
         Conic
             See :func:`planargeo.geometry.conics.conic_hyperbola`.
+
+        Examples
+        --------
+        >>> Conic.hyperbola((0, 0), (1, 2))
+        Conic(real hyperbola, centre=(0, 0))
         """
         return cls(_c.conic_hyperbola(centre, axes, angle))
 
@@ -624,6 +681,12 @@ class Conic:
         -------
         Conic
             See :func:`planargeo.geometry.conics.conic_parabola`.
+
+        Examples
+        --------
+        >>> P = Conic.parabola((0, 0), 0.25)                  # y = x²
+        >>> P, P.contains(Point.from_xy(2, 4))
+        (Conic(real parabola, vertex=(0, 0), axis=(0, 1)), True)
         """
         return cls(_c.conic_parabola(vertex, focal_length, angle))
 
@@ -640,6 +703,11 @@ class Conic:
         -------
         Conic
             The conic.
+
+        Examples
+        --------
+        >>> Conic.from_coefficients(1, 0, 1, 0, 0, -4)      # x² + y² = 4
+        Conic(real circle, centre=(0, 0))
         """
         return cls(_c.conic_from_coefficients(a, b, c, d, e, f))
 
@@ -806,6 +874,13 @@ class Conic:
         -------
         AffineFrame
             See :func:`planargeo.geometry.conics.affine_frame`.
+
+        Examples
+        --------
+        >>> F = Conic.ellipse((1, 2), (3, 1)).affine_frame()
+        >>> F.kind, F.t, np.abs(F.A).round(12)
+        ('ellipse', array([1., 2.]), array([[3., 0.],
+               [0., 1.]]))
         """
         return _c.affine_frame(self._m)
 

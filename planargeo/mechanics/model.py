@@ -132,6 +132,13 @@ class Body:
         -------
         numpy.ndarray, shape (3, 3)
             ``inertia_matrix(mass, com, inertia)``.
+
+        Examples
+        --------
+        >>> Body(2.0, (1.0, 0.0), 0.5).spatial_inertia()      # J + m |c|² = 0.5 + 2
+        array([[2. , 0. , 0. ],
+               [0. , 2. , 2. ],
+               [0. , 2. , 2.5]])
         """
         from planargeo.screws.twists import inertia_matrix
 
@@ -347,6 +354,11 @@ class Model:
         ------
         InputError
             If ``i`` is not a body index.
+
+        Examples
+        --------
+        >>> chain_model(3).q_slice(1)
+        slice(1, 2, None)
         """
         if not -self.N <= i < self.N:
             raise InputError(f"i must be a body index in 0..{self.N - 1}, got {i}")
@@ -365,6 +377,12 @@ class Model:
         -------
         tuple of int
             The children's indices, in order.
+
+        Examples
+        --------
+        >>> m = chain_model(3)
+        >>> m.children(-1), m.children(0), m.children(2)
+        ((0,), (1,), ())
         """
         return tuple(k for k, p in enumerate(self.parents) if p == i)
 
@@ -380,6 +398,11 @@ class Model:
         -------
         tuple of int
             The path, root first, ``i`` last.
+
+        Examples
+        --------
+        >>> chain_model(3).ancestors(2)
+        (0, 1, 2)
         """
         path = []
         while i != -1:
@@ -405,6 +428,11 @@ class Model:
         -------
         dict of str to numpy.ndarray
             The cached arrays (read-only).
+
+        Examples
+        --------
+        >>> sorted(chain_model(3).arrays())
+        ['J', 'com', 'mass', 'parents', 'placement']
         """
         a = self._arrays
         if "mass" not in a:
@@ -455,6 +483,11 @@ class Model:
         -------
         Model
             The copy.
+
+        Examples
+        --------
+        >>> chain_model(3).with_gravity((0.0, 0.0)).gravity
+        (0.0, 0.0)
         """
         return Model(self.bodies, self.joints, self.parents, gravity, self.contacts)
 
@@ -506,6 +539,12 @@ class Data:
         -------
         numpy.ndarray, shape (..., 3, k)
             The joint's world motion space.
+
+        Examples
+        --------
+        >>> from planargeo.mechanics.kinematics import kinematics
+        >>> kinematics(chain_model(3), [0.0, 0.0, 0.0]).s(1)[:, 0]     # a pin at (1, 0): the point [0, -1, 1]
+        array([ 0., -1.,  1.])
         """
         return self.S[..., :, self.model.q_slice(i)]
 
@@ -521,6 +560,14 @@ class Data:
         -------
         numpy.ndarray, shape (..., 3, nq)
             Columns of the joints on the path to ``i``, zero elsewhere.
+
+        Examples
+        --------
+        >>> from planargeo.mechanics.kinematics import kinematics
+        >>> kinematics(chain_model(3), [0.0, 0.0, 0.0]).jacobian(1) + 0.0    # joint 2 does not move body 1
+        array([[ 0.,  0.,  0.],
+               [ 0., -1.,  0.],
+               [ 1.,  1.,  0.]])
         """
         return self.S * self.model.ancestor_mask()[i]
 

@@ -133,6 +133,11 @@ def names() -> list[str]:
     -------
     list of str
         In registration order.
+
+    Examples
+    --------
+    >>> "slider-crank" in names(), "no-such-scene" in names()
+    (True, False)
     """
     _load()
     return list(_REGISTRY)
@@ -155,6 +160,11 @@ def get(name: str) -> Callable[..., SceneResult]:
     ------
     SceneError
         If ``name`` is not registered.
+
+    Examples
+    --------
+    >>> get("two-body").__name__
+    'two_body'
     """
     _load()
     try:
@@ -175,6 +185,11 @@ def parameters(name: str) -> dict[str, Any]:
     -------
     dict
         ``{parameter: default}``.
+
+    Examples
+    --------
+    >>> parameters("two-body")
+    {'m': 1.0, 'rho': 0.5, 'L': 1.0, 'phi': 0.7853981633974483}
     """
     sig = inspect.signature(get(name))
     return {k: p.default for k, p in sig.parameters.items()}
