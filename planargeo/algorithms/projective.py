@@ -155,8 +155,11 @@ def joint_accelerations(T, a, kappa, parents) -> np.ndarray:
     Parameters
     ----------
     T : list of N (3, k_i) percussion spaces (6.105, or 6.36: ``sᵀT = 1`` is all that is used).
+        Each joint's percussion space ``T_i`` (3, k_i).
     a, kappa : (N, 3) body and bias accelerations; ``a_{λ(i)}`` is the parent's (zero for the ground).
+        Body accelerations and joint bias accelerations (3,) each.
     parents : sequence of N ints.
+        Parent of each body (-1: the ground).
 
     Returns
     -------
@@ -194,6 +197,7 @@ class ProjectiveWorkspace:
     a, f : (N, 3)
         Body accelerations (6.108) and internal joint forces (6.109).
     qdd : (nq,) joint accelerations (6.110).
+        Joint accelerations (6.110).
     """
 
     s: list
@@ -236,10 +240,15 @@ def projective_solve(I, S, kappa, p, tau, parents=None, points=None, joint_point
     Parameters
     ----------
     I : (N, 3, 3) body inertias at the origin.
+        Body inertias at the origin (3, 3) each.
     S : list of N arrays (3, k_i): joint spaces.
+        Joint motion spaces (3, k_i) each.
     kappa, p : (N, 3) bias accelerations (2.19) and bias forces (3.11).
+        Bias accelerations (2.19) and bias forces (3.11, gravity included) of the bodies.
     tau : list of N arrays (k_i,): joint torques ``Q_i``.
+        Joint forces, one array (k_i,) per joint.
     parents : sequence of N ints (``-1`` ground, parents before children), default a chain.
+        Parent of each body (-1: the ground).
     points : (N, 2), optional
         A point of each joint for the reaction bases (:func:`planargeo.mechanics.joints.R_of`:
         used by prismatic joints, whose reaction force passes through it); default the origin.

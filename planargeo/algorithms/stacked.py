@@ -440,7 +440,9 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     Parameters
     ----------
     model : Model
+        A tree (or chain) without contacts.
     q, qd, tau : array_like (nq,)
+        One state: joint coordinates, velocities and forces.
     f_ext : array_like (N, 3), optional
         World wrenches at the origin applied to each body.
     data : Data, optional
@@ -566,7 +568,9 @@ def forward_dynamics_stacked(model: Model, q, qd, tau, f_ext=None, *, method: st
     Parameters
     ----------
     model : Model
+        A tree (or chain) without contacts.
     q, qd, tau : array_like (..., nq)
+        Joint coordinates, velocities and forces.
     f_ext : array_like (..., N, 3), optional
         World wrenches at the origin applied to each body (besides gravity).
     method : {"articulation", "direct"}

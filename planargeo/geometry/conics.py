@@ -127,7 +127,9 @@ def polar(C, p) -> np.ndarray:
     Parameters
     ----------
     C : array_like, shape (..., 3, 3), symmetric
+        Symmetric conic matrix.
     p : array_like, shape (..., 3)
+        Homogeneous points.
 
     Returns
     -------
@@ -266,6 +268,7 @@ class ConicType:
     is_circle : bool
         An ellipse (real or imaginary) whose quadratic part is isotropic.
     rank : int
+        Rank of the matrix: 3 for a proper conic, 2 a line pair, 1 a double line.
 
     Examples
     --------
@@ -325,7 +328,9 @@ def classify(C, rtol: float = 1e-10):
     Parameters
     ----------
     C : array_like, shape (3, 3) or (..., 3, 3)
+        Symmetric conic matrix.
     rtol : float
+        Relative tolerance below which an eigenvalue counts as zero.
 
     Returns
     -------
@@ -474,7 +479,9 @@ def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
     Parameters
     ----------
     C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix.
     p : array_like, shape (..., 3)
+        Homogeneous point.
     on_interior : {"raise", "nan"}
         What to do for a point with no real tangents (interior to ``C``, or any
         point when ``C`` is imaginary): raise :class:`InputError`, or return
@@ -670,7 +677,9 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
     Parameters
     ----------
     C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix.
     p : array_like, shape (..., 3)
+        Homogeneous point, interior to the conic (or any point with secants).
     lines : array_like, shape (..., 2, 3), optional
         Two distinct lines through ``p``.  Default: two of the vertical line,
         the horizontal line and the line to the origin through ``p`` (the
@@ -1085,7 +1094,9 @@ class AffineFrame:
     kind : str
         ``"ellipse"``, ``"hyperbola"`` or ``"parabola"``.
     A : ndarray (2, 2)
+        Linear part: images of the unit curve's axes (m).
     t : ndarray (2,)
+        Centre (ellipse, hyperbola) or vertex (parabola) (m).
 
     Examples
     --------

@@ -162,6 +162,7 @@ def normalize_point(p) -> np.ndarray:
     Parameters
     ----------
     p : array_like, shape (..., 3)
+        Homogeneous points (non-zero).
 
     Returns
     -------
@@ -205,6 +206,7 @@ def normalize_line(l) -> np.ndarray:
     Parameters
     ----------
     l : array_like, shape (..., 3)
+        Homogeneous lines (non-zero).
 
     Returns
     -------
@@ -330,6 +332,7 @@ def from_xy(xy) -> np.ndarray:
     Parameters
     ----------
     xy : array_like, shape (..., 2)
+        Euclidean points ``(x, y)`` (m).
 
     Returns
     -------
@@ -394,6 +397,7 @@ def to_xy(p) -> np.ndarray:
     Parameters
     ----------
     p : array_like, shape (..., 3)
+        Homogeneous points.
 
     Returns
     -------
@@ -633,6 +637,7 @@ def join(p, q, cond_limit: float = COND_LIMIT) -> np.ndarray:
     Parameters
     ----------
     p, q : array_like, shape (..., 3)
+        Homogeneous points (broadcast together).
     cond_limit : float, optional
         Largest accepted condition number ``κ = |p| |q| / |p × q|``
         (:func:`cross_cond`), :data:`planargeo.errors.COND_LIMIT` = ``1e12`` by default.  The
@@ -681,6 +686,7 @@ def meet(l, m, cond_limit: float = COND_LIMIT) -> np.ndarray:
     Parameters
     ----------
     l, m : array_like, shape (..., 3)
+        Homogeneous lines (broadcast together).
     cond_limit : float, optional
         Largest accepted condition number ``κ = |l| |m| / |l × m|``
         (:func:`cross_cond`), :data:`planargeo.errors.COND_LIMIT` = ``1e12`` by default.  The

@@ -74,6 +74,7 @@ class Contact:
     Parameters
     ----------
     kind : {"pin", "slider", "weld"}
+        Pin (1 dof: rotation), slider (1 dof: translation) or weld (0 dof).
     a : int
         Body index (``>= 0``), the ``+1`` column of ``G`` (Definition 42).
     b : int
@@ -87,6 +88,7 @@ class Contact:
     angle : float
         Slider and weld: the relative angle ``theta_a - theta_b`` kept by the contact.
     name : str
+        A label for drawings and messages.
 
     Examples
     --------

@@ -103,6 +103,7 @@ def motion_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
     Parameters
     ----------
     kind : {"revolute", "prismatic", "revolute_prismatic", "twin_prismatic", "plane", "fixed"}
+        Joint kind (:data:`KINDS`).
     point : array_like, shape (..., 2)
         The joint's pivot (revolute), a point on the slide (prismatic), the
         joint frame's origin (plane, twin prismatic: its ``s`` and ``R`` do
@@ -303,6 +304,7 @@ class JointSpace:
     Attributes
     ----------
     kind : str
+        Joint kind: revolute, prismatic, revolute_prismatic, twin_prismatic, plane or fixed.
     point : ndarray, shape (2,)
         Pivot / point on the slide / joint-frame origin / weld point.
     direction : ndarray, shape (2,) or None

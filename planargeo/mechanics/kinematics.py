@@ -276,6 +276,7 @@ def kinematics(model: Model, q, qd=None, f_ext=None) -> Data:
     Parameters
     ----------
     model : Model
+        The mechanism (bodies, joints, parents, gravity).
     q : array_like (..., nq)
         Joint coordinates.
     qd : array_like (..., nq), optional

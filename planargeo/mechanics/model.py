@@ -92,6 +92,7 @@ class Body:
     shape : shapely geometry or None
         Outline in the body frame, for drawings only.
     name : str
+        A label for drawings and messages.
 
     Examples
     --------
@@ -158,6 +159,7 @@ class Joint:
         Pose of the joint frame in the parent body's frame (world frame when
         the parent is the ground).
     name : str
+        A label for drawings and messages.
 
     Examples
     --------
@@ -268,6 +270,7 @@ class Model:
     Parameters
     ----------
     bodies : sequence of Body
+        The bodies, in an order where each parent comes before its children.
     joints : sequence of Joint
         ``joints[i]`` connects body ``i`` to ``parents[i]``.
     parents : sequence of int
@@ -502,7 +505,9 @@ class Data:
     Attributes
     ----------
     model : Model
+        The mechanism the state belongs to.
     q, qd : ndarray (..., nq)
+        Joint coordinates and velocities of the state.
     pose : ndarray (..., N, 3)
         World pose ``(x, y, theta)`` of each body frame.
     com : ndarray (..., N, 2)
@@ -623,6 +628,7 @@ def chain_model(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str =
     joint : str
         The kind of every joint (see :class:`Joint`).
     gravity : (gx, gy)
+        Gravitational acceleration ``(gx, gy)`` (m/s²).
     allow_large : bool
         Allow more than :data:`MAX_BODIES` links.
 

@@ -1011,6 +1011,7 @@ class Decomposition:
     Attributes
     ----------
     A, s, R : ndarray
+        Inertia (3, 3), joint motion space (3, k) and reaction space (3, 3-k), at the origin; batches broadcast.
     T : ndarray, shape (..., 3, k)
         Percussion space (6.39, :func:`T_of`).
     U : ndarray, shape (..., 3, 3 - k)

@@ -224,6 +224,7 @@ def build(name: str, *, allow_big: bool = False, **params) -> SceneResult:
     Parameters
     ----------
     name : str
+        A registered scene (:func:`names`).
     allow_big : bool
         Lift the size limits (:func:`limits`), for a deliberate big job.
     **params

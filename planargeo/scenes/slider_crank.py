@@ -55,7 +55,7 @@ def slider_crank_model(m1=0.40, m2=0.15, m3=0.30, r=2.29, l=5.00, t=0.5, g=9.81)
     r, l : float, optional
         Crank and connecting-rod lengths (m).
     t : float, optional
-        Slider offset (m).
+        Distance from the piston's joint to its centre of mass and slider contact (m).
     g : float, optional
         Gravity along -y (m/s²).
 
@@ -211,9 +211,15 @@ def slider_crank(psi: float = 0.4, psidot: float = 20.0, m1: float = 0.40, m2: f
 
     Parameters
     ----------
-    psi, psidot : crank angle and speed
-    m1, m2, m3, r, l, t : masses and lengths (thesis 9.6)
-    g : gravity along -y
+    psi, psidot : float
+        Crank angle ψ (rad) and crank speed ψ̇ (rad/s).
+    m1, m2, m3 : float
+        Masses of the crank, the connecting rod and the slider (kg).
+    r, l, t : float
+        Crank length, connecting-rod length, and the distance from the piston's joint to its
+        centre of mass and slider contact (thesis 9.6; m).
+    g : float
+        Gravity along -y (m/s²).
     drive : {"free", "constant-speed"}
         ``"free"``: no crank torque; ``"constant-speed"``: the crank is driven at
         constant speed (``ψ̈ = 0``), the torque needed is ``tau_drive``.

@@ -289,7 +289,9 @@ def percussion_axis(inertia, point) -> np.ndarray:
     Parameters
     ----------
     inertia : array_like (..., 3, 3) or Inertia
+        Symmetric positive definite inertia at the origin.
     point : array_like (..., 3) or Point/Twist
+        Homogeneous acceleration pole(s).
 
     Returns
     -------

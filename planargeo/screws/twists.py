@@ -43,6 +43,7 @@ def X_P(point) -> np.ndarray:
     Parameters
     ----------
     point : array_like, shape (..., 2)
+        Reference point ``(x, y)`` (m).
 
     Returns
     -------
@@ -140,7 +141,9 @@ def X_frame(theta, point) -> np.ndarray:
     Parameters
     ----------
     theta : array_like (...)
+        Angle of the new frame (rad).
     point : array_like (..., 2)
+        Origin of the new frame ``(x, y)`` (m).
 
     Returns
     -------
@@ -355,6 +358,7 @@ def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
     mass : array_like (...)
         ``m > 0``.
     com : array_like (..., 2)
+        Centre of mass ``(cx, cy)`` (m).
     inertia_about_com : array_like (...)
         ``J >= 0`` (``J = 0`` is a point mass: a singular, positive
         semi-definite inertia).
@@ -701,7 +705,9 @@ def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
     inertia : array_like (..., 3, 3)
         Symmetric positive semi-definite (rigid-body or articulated) inertia.
     theta : array_like (...)
+        Angle of the new frame (rad).
     point : array_like (..., 2)
+        Origin of the new frame (m).
 
     Returns
     -------
@@ -745,6 +751,7 @@ def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
     inertia : array_like (..., 3, 3)
         Symmetric positive semi-definite (rigid-body or articulated) inertia.
     theta : array_like (...)
+        Angle of the rotation (rad), counter-clockwise.
     about : array_like (..., 2), optional
         Centre of the rotation (default the origin).
 
@@ -909,7 +916,9 @@ def bias_force(inertia, twist, g=None) -> np.ndarray:
     Parameters
     ----------
     inertia : array_like (..., 3, 3)
+        Inertia at the origin.
     twist : array_like (..., 3)
+        Velocity twist of the body.
     g : array_like (..., 3), optional
         External wrench (gravity, loads) at the origin; default zero.
 
@@ -1484,6 +1493,7 @@ class TwistSum:
     Attributes
     ----------
     v1, v2, sum : Twist
+        The two twists and their sum.
     case : str
         ``"rotations"`` (4.11-4.13), ``"opposite_rotations"`` (``ω1 = -ω2``:
         a translation perpendicular to ``Q1Q2``, ``beta = inf``),
@@ -1604,6 +1614,7 @@ class WrenchSum:
     Attributes
     ----------
     f1, f2, sum : Wrench
+        The two wrenches and their sum.
     case : str
         ``"concurrent"`` (4.4.1: two forces meeting at ``P``),
         ``"parallel"`` (4.4.2: lever rule, ``P`` ideal),

@@ -100,6 +100,7 @@ def energy(model: Model, q=None, qd=None, *, data=None) -> tuple[np.ndarray, np.
     Parameters
     ----------
     model : Model
+        The mechanism (bodies, joints, parents, gravity).
     q, qd : array_like (..., nq)
         The state (``qd`` None: at rest); not with ``data``.
     data : Data, optional
