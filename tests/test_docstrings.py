@@ -6,7 +6,8 @@ What counts as public
     ``__all__``: the functions and classes it defines whose names do not start with ``_``),
     each checked once, in the module that defines it (a re-export is not checked twice), and
     the public methods, class/static methods and properties each of those classes defines
-    itself (inherited members are checked in the class that defines them).  Constants,
+    itself (inherited members are checked in the class that defines them; members a base class
+    generates for its subclasses, like matplotlib's ``Artist.set``, are the base's).  Constants,
     submodules, ``namedtuple`` types and exception classes without a constructor of their own
     are not functions or classes with a signature to document and are left out.
 
@@ -122,11 +123,20 @@ def module_objects(modname: str) -> list[tuple[str, object]]:
     return out
 
 
+def _written_here(func, cls) -> bool:
+    """Whether ``func`` was written in ``cls``'s module (not generated for it by a base
+    class, like the ``set`` method matplotlib's ``Artist`` adds to every subclass)."""
+    return getattr(func, "__module__", None) == cls.__module__
+
+
 def class_members(qualname: str, cls) -> list[tuple[str, object, str]]:
     """``(name, function, kind)`` for the public members ``cls`` defines itself."""
     out = []
     for name, raw in vars(cls).items():
         if name.startswith("_"):
+            continue
+        func = raw.fget if isinstance(raw, property) else getattr(raw, "__func__", getattr(raw, "func", raw))
+        if callable(func) and not _written_here(func, cls):
             continue
         if isinstance(raw, property):
             if raw.fget is not None:
