@@ -14,7 +14,8 @@ imports (autodoc) and the gallery registry (captions):
   tables and charts; installation and the README's two commands.
 
 Generated sources go to ``docs/_gen/`` (git-ignored, rewritten on every build by
-:mod:`site_sources`, beside this file).
+:mod:`site_sources`, beside this file), with a local MathJax so that the equations of the
+lessons and the docstrings show offline and from ``file://``.
 """
 from __future__ import annotations
 
@@ -72,7 +73,18 @@ numpydoc_validation_checks: set[str] = set()   # tests/test_docstrings.py checks
 # --- output ------------------------------------------------------------------------------------
 html_theme = "furo"
 html_title = f"planargeo {release}"
-html_static_path: list[str] = []
+# Equations: a local MathJax 3 (TeX to SVG, no web fonts: works from file:// and offline), copied
+# by site_sources.mathjax from the django-static-mathjax package; without it, MathJax from the web.
+if (HERE / "_gen" / "_static" / "mathjax" / "tex-svg.js").exists():
+    html_static_path = ["_gen/_static"]
+    mathjax_path = "mathjax/tex-svg.js"
+    mathjax3_config = {
+        "tex": {"inlineMath": [["\\(", "\\)"]], "displayMath": [["\\[", "\\]"]]},
+        "options": {"processHtmlClass": "tex2jax_process|mathjax_process|math|output_area"},
+        "svg": {"fontCache": "global"},
+    }
+else:
+    html_static_path: list[str] = []
 html_show_sourcelink = False
 
 

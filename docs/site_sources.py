@@ -8,6 +8,7 @@
   ``planargeo gallery`` renders), the SVG committed in ``gallery/``;
 * ``benchmarks/``: ``benchmarks/RESULTS.md`` with its tables and charts (``benchmarks/results``);
 * ``scenes.md``: ``docs/scenes.md`` with its links into ``benchmarks/results`` pointed at the copy;
+* ``_static/mathjax``: a local MathJax (:func:`mathjax`), so equations show offline;
 * ``api/``: one page per subpackage, each module's docstring and its public functions and
   classes (``__all__``, or the names it defines when it has none), each documented once,
   where it is defined.
@@ -368,6 +369,40 @@ def api(out: Path) -> set[Path]:
     return written
 
 
+def mathjax(out: Path) -> set[Path]:
+    """Copy a local MathJax into the site, so its equations show without a network.
+
+    MathJax 3's single-file TeX-to-SVG component (``es5/tex-svg.js``: SVG output needs no web
+    fonts, so it works from ``file://`` too) and the TeX extensions it may load, from the
+    ``django-static-mathjax`` package (plain MathJax 3.2.2 static files; a dev dependency), go
+    to ``_static/mathjax``.  Without that package nothing is copied and the site loads
+    MathJax from its usual web address.
+
+    Parameters
+    ----------
+    out : pathlib.Path
+        The generated-sources folder.
+
+    Returns
+    -------
+    set of pathlib.Path
+        The files written (empty without the package).
+    """
+    try:
+        import mathjax as _mathjax_files
+    except ImportError:
+        return set()
+    src = Path(_mathjax_files.__file__).parent / "static" / "mathjax" / "es5"
+    if not (src / "tex-svg.js").exists():
+        return set()
+    written = set()
+    for f in [src / "tex-svg.js", *sorted((src / "input" / "tex" / "extensions").rglob("*.js"))]:
+        dst = out / "_static" / "mathjax" / f.relative_to(src)
+        _copy(f, dst)
+        written.add(dst)
+    return written
+
+
 def generate(root: Path, out: Path) -> None:
     """Write every generated source of the site into ``out``.
 
@@ -389,6 +424,7 @@ def generate(root: Path, out: Path) -> None:
     written |= benchmarks(root, out)
     written |= scenes_page(root, out)
     written |= api(out)
+    written |= mathjax(out)
     _sync(out, written)
 
 

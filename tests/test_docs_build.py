@@ -85,3 +85,12 @@ def test_benchmark_results_and_charts_are_on_the_site(tmp_path):
                                          ("extra_style_key", "extra")])
 def test_figure_numbers_are_read_from_names(name, number):
     assert site_sources.figure_number(name) == number
+
+
+def test_the_site_carries_its_own_mathjax(tmp_path):
+    """Equations show offline and from file:// (MathJax 3, TeX to SVG: no web fonts)."""
+    pytest.importorskip("mathjax", reason="django-static-mathjax (a dev dependency) is not installed")
+    written = site_sources.mathjax(tmp_path)
+    js = tmp_path / "_static" / "mathjax" / "tex-svg.js"
+    assert js in written and js.stat().st_size > 500_000
+    assert (tmp_path / "_static" / "mathjax" / "input" / "tex" / "extensions" / "ams.js") in written
