@@ -56,8 +56,11 @@ fuzz: $(STAMP)
 
 # The site: lessons (stored outputs), gallery, API reference, equations, errata, benchmarks.
 # Warnings are errors; every warning is listed before it fails (--keep-going).
+# Then docs/check_site.py opens it in headless chromium (file://, no network): every figure and
+# equation of the index, the gallery, an API page and every lesson must show.
 docs: $(STAMP)
 	MPLBACKEND=Agg $(BIN)/python -m sphinx -W --keep-going -q -b html docs docs/_build/html
+	MPLBACKEND=Agg $(BIN)/python docs/check_site.py docs/_build/html
 	@echo "site: docs/_build/html/index.html"
 
 gallery: $(STAMP)

@@ -44,7 +44,7 @@ extensions = [
 ]
 
 root_doc = "index"
-exclude_patterns = ["_build", "equations_index.py", "thesis_equation_labels.txt", "site_sources.py",
+exclude_patterns = ["_build", "equations_index.py", "thesis_equation_labels.txt", "site_sources.py", "check_site.py",
                     "scenes.md", "**/.ipynb_checkpoints"]
 source_suffix = {".md": "myst-nb", ".ipynb": "myst-nb"}
 
