@@ -117,7 +117,7 @@ def main(argv: list[str]) -> int:
     int
         Exit status: 0 when the site shows everything (or no browser is available), 1 otherwise.
     """
-    site = Path(argv[0]) if argv else HERE / "_build" / "html"
+    site = (Path(argv[0]) if argv else HERE / "_build" / "html").resolve()
     try:
         import playwright.sync_api  # noqa: F401
     except ImportError:
