@@ -3,6 +3,7 @@
 #               (on 127.0.0.1 only, with a fresh random token: see LAB_FLAGS)
 #   make test   create/update .venv, install everything the tests need, run the whole suite
 #   make fuzz   at least 10^4 generated calls against the public API, a table of outcomes
+#   make docs   the documentation site in docs/_build/html (Sphinx; warnings are errors)
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
@@ -15,7 +16,7 @@ FUZZ_ARGS ?=
 LAB_FLAGS = --ServerApp.ip=127.0.0.1 --ServerApp.allow_remote_access=False \
             --IdentityProvider.token=$$($(BIN)/python -c 'import secrets; print(secrets.token_hex(24))')
 
-.PHONY: lab test fuzz install gallery bench clean help browser
+.PHONY: lab test fuzz install gallery bench clean help browser docs
 
 help:
 	@echo "make lab    - set up .venv and start JupyterLab on notebooks/00-tour.ipynb (localhost, token)"
@@ -23,6 +24,7 @@ help:
 	@echo "make fuzz   - 10^4+ generated calls with hostile arguments, a table of outcomes"
 	@echo "make gallery- regenerate gallery/*.svg"
 	@echo "make bench  - run the benchmarks and rewrite benchmarks/results"
+	@echo "make docs   - build the documentation site into docs/_build/html"
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -47,9 +49,19 @@ browser:
 
 test: $(STAMP) browser
 	MPLBACKEND=Agg $(BIN)/python -m pytest -n 2 --nbmake tests planargeo notebooks $(PYTEST_ARGS)
+	$(MAKE) --no-print-directory docs
 
 fuzz: $(STAMP)
 	MPLBACKEND=Agg $(BIN)/python tests/fuzz/run.py --calls 12000 $(FUZZ_ARGS)
+
+# The site: lessons (stored outputs), gallery, API reference, equations, errata, benchmarks.
+# Warnings are errors; every warning is listed before it fails (--keep-going).
+# Then docs/check_site.py opens it in headless chromium (file://, no network): every figure and
+# equation of the index, the gallery, an API page and every lesson must show.
+docs: $(STAMP)
+	MPLBACKEND=Agg $(BIN)/python -m sphinx -W --keep-going -q -b html docs docs/_build/html
+	MPLBACKEND=Agg $(BIN)/python docs/check_site.py docs/_build/html
+	@echo "site: docs/_build/html/index.html"
 
 gallery: $(STAMP)
 	MPLBACKEND=Agg $(BIN)/planargeo gallery
@@ -58,4 +70,4 @@ bench: $(STAMP)
 	MPLBACKEND=Agg $(BIN)/python benchmarks/run.py --out benchmarks/results --summary benchmarks/RESULTS.md --gallery gallery/benchmarks
 
 clean:
-	rm -rf $(VENV) build *.egg-info
+	rm -rf $(VENV) build *.egg-info docs/_build docs/_gen

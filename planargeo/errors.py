@@ -127,6 +127,13 @@ class DegenerateGeometryError(PlanargeoError, ValueError):
 class SingularError(PlanargeoError, np.linalg.LinAlgError):
     """A matrix that must be inverted is singular (or numerically so).
 
+    Parameters
+    ----------
+    message : str
+        What is singular; the condition number is appended.
+    cond : float, optional
+        The condition number found.
+
     Attributes
     ----------
     cond : float
@@ -152,6 +159,15 @@ class CyclicTopologyError(TopologyError):
     The cycle's indicator vector ``e`` satisfies ``eᵀ (1 - C) = 0`` exactly
     (every body on the cycle is the parent of exactly one other one), so the
     trunk ``Δ^{-1} = (1 - C)^{-1}`` does not exist.
+
+    Parameters
+    ----------
+    message : str
+        What is cyclic; the condition number is appended.
+    cond : float, optional
+        Condition number of ``1 - C``.
+    cycle : tuple of int, optional
+        The bodies on the cycle.
 
     Attributes
     ----------

@@ -47,6 +47,7 @@ def atomic_write(path, data) -> Path:
     path : str or os.PathLike
         The target file; its folder is created if missing.
     data : bytes or str
+        The file's whole content (text is written as UTF-8).
 
     Returns
     -------
@@ -75,6 +76,7 @@ def atomic_write_many(files) -> list[Path]:
     Parameters
     ----------
     files : mapping of path -> bytes or str
+        ``{path: data}``: every file of the batch and its content.
 
     Returns
     -------

@@ -22,6 +22,13 @@ __all__ = ["add_arguments", "main", "find_suite", "out_folder"]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """Add ``planargeo bench``'s options (``--suite``, ``--out``, ``--quick``, ``--only``, ``--no-charts``, ``--force``) to ``parser``.
+
+    Parameters
+    ----------
+    parser : argparse.ArgumentParser
+        The subcommand's parser.
+    """
     parser.add_argument("--suite", default=None,
                         help="the benchmarks folder (default: ./benchmarks, else the one beside the package)")
     parser.add_argument("--out", default=None,
@@ -63,6 +70,18 @@ def find_suite(suite: str | None = None) -> Path:
 def out_folder(out: str | None, force: bool = False) -> Path:
     """The folder the results go to: ``out`` (checked) or a new temporary folder.
 
+    Parameters
+    ----------
+    out : str or None
+        The ``--out`` folder, or None for a new temporary folder.
+    force : bool, optional
+        Accept a folder holding other files.
+
+    Returns
+    -------
+    pathlib.Path
+        The folder (created if needed).
+
     Raises
     ------
     OutputError
@@ -95,6 +114,18 @@ def out_folder(out: str | None, force: bool = False) -> Path:
 
 
 def main(args: argparse.Namespace) -> int:
+    """Run ``planargeo bench``: the benchmark suite in a subprocess, results into ``--out``.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        Parsed options of :func:`add_arguments`.
+
+    Returns
+    -------
+    int
+        Exit status: the suite's, or 2 when no suite is found.
+    """
     try:
         suite = find_suite(args.suite)
     except InputError as e:

@@ -51,7 +51,9 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
     Parameters
     ----------
     model : Model
+        The mechanism (bodies, joints, parents, gravity).
     q, qd, tau : array_like (..., nq)
+        One state: joint coordinates, velocities and forces.
     f_ext : array_like (..., N, 3), optional
         External wrenches at the origin on each body.
 
@@ -141,6 +143,7 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     Parameters
     ----------
     model : Model
+        The mechanism (bodies, joints, parents, gravity).
     q, qd, tau : array_like (..., nq)
         Joint coordinates, speeds and forces/torques; leading dimensions are a
         batch evaluated in one call.  ``qd`` or ``tau`` None: zeros.

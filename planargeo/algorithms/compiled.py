@@ -43,6 +43,16 @@ Compiled = namedtuple("Compiled", "kernels tables state wrenches")
 def kernels_for(model):
     """The :data:`Compiled` kernels of ``model`` if they cover it, else None (cached on the model).
 
+    Parameters
+    ----------
+    model : Model
+        The mechanism.
+
+    Returns
+    -------
+    Compiled or None
+        The kernels module, tables and shapes; None for a model with other joint kinds.
+
     Examples
     --------
     >>> from planargeo.mechanics.model import Body, Joint, Model, chain_model
@@ -72,6 +82,21 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
     layout is ever compiled); anything else is validated by
     :func:`~planargeo.mechanics.kinematics.check_state` and handed over as C-contiguous
     float64 rows.
+
+    Parameters
+    ----------
+    model : Model
+        The mechanism.
+    inverse : bool
+        Inverse dynamics (``z = q̈``) instead of forward (``z = τ``).
+    q, qd : array_like, shape (..., nq)
+        Joint positions and velocities.
+    z : array_like, shape (..., nq)
+        Joint forces (forward) or accelerations (inverse).
+    f_ext : array_like, shape (..., N, 3) or None
+        External world wrenches.
+    general : callable
+        ``general(model, q, qd, z, f_ext)``, the general recursion.
 
     Returns
     -------
@@ -134,6 +159,25 @@ def check_finite(result, what: str, **inputs):
 
     ``inputs`` are the (finite, validated) arguments it came from; the message names the
     largest of them.
+
+    Parameters
+    ----------
+    result : numpy.ndarray
+        The computed result.
+    what : str
+        Its name in the message.
+    **inputs : numpy.ndarray
+        The arguments it came from, by name.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``result`` itself.
+
+    Raises
+    ------
+    NumericOverflowError
+        If ``result`` holds NaN or infinity.
 
     Examples
     --------

@@ -40,7 +40,9 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
     Parameters
     ----------
     model : Model
+        The mechanism (bodies, joints, parents, gravity).
     q : array_like (..., nq)
+        Joint coordinates.
     method : {"crba", "jacobian"}
         Composite-rigid-body recursion, or the direct sum ``Σ J_iᵀ I_i J_i``.
 
@@ -104,7 +106,9 @@ def bias_forces(model: Model, q, qd, f_ext=None) -> np.ndarray:
     Parameters
     ----------
     model : Model
+        The mechanism (bodies, joints, parents, gravity).
     q, qd : array_like (..., nq)
+        Joint coordinates and velocities.
     f_ext : array_like (..., N, 3), optional
         External world wrenches at the origin on each body.
 
@@ -136,9 +140,11 @@ def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     Parameters
     ----------
     model : Model
+        The mechanism (bodies, joints, parents, gravity).
     q, qd, tau : array_like (..., nq)
         ``qd`` or ``tau`` None: zeros.
     f_ext : array_like (..., N, 3), optional
+        External world wrenches at the origin, one per body (besides gravity).
 
     Returns
     -------

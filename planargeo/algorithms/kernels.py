@@ -75,6 +75,16 @@ Workspace = namedtuple("Workspace", "origin r frame s v kappa I p U D u a")
 def tables(model):
     """The model as the kernels' arrays ``(kind, parent, body, gravity)``, or None if a joint is of another kind.
 
+    Parameters
+    ----------
+    model : Model
+        The mechanism.
+
+    Returns
+    -------
+    tuple or None
+        ``(kind, parent, body, gravity)``, or None.
+
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
@@ -94,7 +104,18 @@ def tables(model):
 
 @inline
 def workspace(N):
-    """Fresh arrays for one state of an ``N``-body model (see :data:`Workspace`)."""
+    """Fresh arrays for one state of an ``N``-body model (see :data:`Workspace`).
+
+    Parameters
+    ----------
+    N : int
+        Number of bodies.
+
+    Returns
+    -------
+    Workspace
+        Uninitialised arrays, one row per body.
+    """
     return Workspace(np.empty((N, 2)), np.empty((N, 2)), np.empty((N, 4)), np.empty((N, 3)), np.empty((N, 3)),
                      np.empty((N, 3)), np.empty((N, 3, 3)), np.empty((N, 3)), np.empty((N, 3)), np.empty(N),
                      np.empty(N), np.empty((N, 3)))
@@ -128,6 +149,17 @@ def kinematics_state(model, q, qd, fext, w):
     Fills ``w.origin, w.r, w.frame, w.s, w.v, w.kappa, w.I, w.p`` for the state ``q, qd``
     (``fext``: (N, 3) external wrenches at the world origin, or None), each body at its
     joint's point.
+
+    Parameters
+    ----------
+    model : tuple
+        The model's :func:`tables` ``(kind, parent, body, gravity)``.
+    q, qd : numpy.ndarray, shape (nq,)
+        Joint positions and velocities (float64).
+    fext : numpy.ndarray, shape (N, 3) or None
+        External world wrenches at the origin.
+    w : Workspace
+        Scratch arrays from :func:`workspace`, filled in place.
     """
     kind, parent, body, gravity = model
     k = 0                                           # the next joint coordinate
@@ -221,6 +253,26 @@ def articulated_body_state(model, q, qd, tau, fext, w, qdd):
 
     Returns :data:`OK`, :data:`NOT_FINITE`, or the index of the first joint (tip to base)
     the singularity rule refuses, its condition number left in ``w.D``.
+
+    Parameters
+    ----------
+    model : tuple
+        The model's :func:`tables`.
+    q, qd : numpy.ndarray, shape (nq,)
+        Joint positions and velocities (float64).
+    tau : numpy.ndarray, shape (nq,)
+        Joint forces.
+    fext : numpy.ndarray, shape (N, 3) or None
+        External world wrenches at the origin.
+    w : Workspace
+        Scratch arrays from :func:`workspace`, filled in place.
+    qdd : numpy.ndarray, shape (nq,)
+        Output: joint accelerations.
+
+    Returns
+    -------
+    int
+        :data:`OK`, :data:`NOT_FINITE`, or the index of a singular joint.
     """
     if not _finite_inputs(q, qd, tau, fext):
         return NOT_FINITE
@@ -295,6 +347,26 @@ def newton_euler_state(model, q, qd, qdd, fext, w, tau):
     """Inverse dynamics (thesis 2.18, 3.10, 3.5) for one state: writes ``τ`` into ``tau``.
 
     Returns :data:`OK`, or :data:`NOT_FINITE` when an input or the result is not finite.
+
+    Parameters
+    ----------
+    model : tuple
+        The model's :func:`tables`.
+    q, qd : numpy.ndarray, shape (nq,)
+        Joint positions and velocities (float64).
+    qdd : numpy.ndarray, shape (nq,)
+        Joint accelerations.
+    fext : numpy.ndarray, shape (N, 3) or None
+        External world wrenches at the origin.
+    w : Workspace
+        Scratch arrays from :func:`workspace`, filled in place.
+    tau : numpy.ndarray, shape (nq,)
+        Output: joint forces.
+
+    Returns
+    -------
+    int
+        :data:`OK` or :data:`NOT_FINITE`.
     """
     if not _finite_inputs(q, qd, qdd, fext):
         return NOT_FINITE
@@ -331,7 +403,28 @@ def newton_euler_state(model, q, qd, qdd, fext, w, tau):
 # -- entry points: the model's tables as separate arrays (cheaper to pass), then one state or a batch ----------------
 @jit
 def forward_dynamics_one(kind, parent, body, gravity, q, qd, tau, fext):
-    """``q̈`` (nq,) of one state (float64 arrays (nq,), ``fext`` (N, 3) or None), or None if not :data:`OK`."""
+    """``q̈`` (nq,) of one state (float64 arrays (nq,), ``fext`` (N, 3) or None), or None if not :data:`OK`.
+
+    Parameters
+    ----------
+    kind, parent : numpy.ndarray of int, shape (N,)
+        Joint kind codes and parent indices (:func:`tables`).
+    body : numpy.ndarray, shape (N, 8)
+        Per body: joint placement ``(x, y, cos φ, sin φ)``, mass, centre of mass, inertia (:func:`tables`).
+    gravity : numpy.ndarray, shape (2,)
+        Gravity (m/s²).
+    q, qd : numpy.ndarray, shape (nq,)
+        Joint positions and velocities (float64).
+    tau : numpy.ndarray, shape (nq,)
+        Joint forces.
+    fext : numpy.ndarray, shape (N, 3) or None
+        External world wrenches at the origin.
+
+    Returns
+    -------
+    numpy.ndarray, shape (nq,) or None
+        ``q̈``, or None.
+    """
     qdd = np.empty(q.shape[0])
     status = articulated_body_state((kind, parent, body, gravity), q, qd, tau, fext, workspace(kind.shape[0]), qdd)
     return qdd if status == OK else None
@@ -339,7 +432,28 @@ def forward_dynamics_one(kind, parent, body, gravity, q, qd, tau, fext):
 
 @jit
 def inverse_dynamics_one(kind, parent, body, gravity, q, qd, qdd, fext):
-    """``τ`` (nq,) of one state (float64 arrays (nq,), ``fext`` (N, 3) or None), or None if not :data:`OK`."""
+    """``τ`` (nq,) of one state (float64 arrays (nq,), ``fext`` (N, 3) or None), or None if not :data:`OK`.
+
+    Parameters
+    ----------
+    kind, parent : numpy.ndarray of int, shape (N,)
+        Joint kind codes and parent indices (:func:`tables`).
+    body : numpy.ndarray, shape (N, 8)
+        Per body: joint placement ``(x, y, cos φ, sin φ)``, mass, centre of mass, inertia (:func:`tables`).
+    gravity : numpy.ndarray, shape (2,)
+        Gravity (m/s²).
+    q, qd : numpy.ndarray, shape (nq,)
+        Joint positions and velocities (float64).
+    qdd : numpy.ndarray, shape (nq,)
+        Joint accelerations.
+    fext : numpy.ndarray, shape (N, 3) or None
+        External world wrenches at the origin.
+
+    Returns
+    -------
+    numpy.ndarray, shape (nq,) or None
+        ``τ``, or None.
+    """
     tau = np.empty(q.shape[0])
     status = newton_euler_state((kind, parent, body, gravity), q, qd, qdd, fext, workspace(kind.shape[0]), tau)
     return tau if status == OK else None
@@ -347,7 +461,28 @@ def inverse_dynamics_one(kind, parent, body, gravity, q, qd, qdd, fext):
 
 @jit
 def singular_joint(kind, parent, body, gravity, q, qd, tau, fext):
-    """``(joint, cond)`` of the first joint of the state the singularity rule refuses, or ``(-1, 0.0)``."""
+    """``(joint, cond)`` of the first joint of the state the singularity rule refuses, or ``(-1, 0.0)``.
+
+    Parameters
+    ----------
+    kind, parent : numpy.ndarray of int, shape (N,)
+        Joint kind codes and parent indices (:func:`tables`).
+    body : numpy.ndarray, shape (N, 8)
+        Per body: joint placement ``(x, y, cos φ, sin φ)``, mass, centre of mass, inertia (:func:`tables`).
+    gravity : numpy.ndarray, shape (2,)
+        Gravity (m/s²).
+    q, qd : numpy.ndarray, shape (nq,)
+        Joint positions and velocities (float64).
+    tau : numpy.ndarray, shape (nq,)
+        Joint forces.
+    fext : numpy.ndarray, shape (N, 3) or None
+        External world wrenches at the origin.
+
+    Returns
+    -------
+    tuple
+        ``(joint, cond)``.
+    """
     w = workspace(kind.shape[0])
     status = articulated_body_state((kind, parent, body, gravity), q, qd, tau, fext, w, np.empty(q.shape[0]))
     return (status, w.D[status]) if status >= 0 else (-1, 0.0)
@@ -364,7 +499,22 @@ Columns = namedtuple("Columns", "x y z out origin r frame s sq v kappa A d U D u
 
 @inline
 def columns(N, nq, L):
-    """Fresh :data:`Columns` for blocks of up to ``L`` states of an ``N``-body model, the ground row at rest."""
+    """Fresh :data:`Columns` for blocks of up to ``L`` states of an ``N``-body model, the ground row at rest.
+
+    Parameters
+    ----------
+    N : int
+        Number of bodies.
+    nq : int
+        Number of coordinates.
+    L : int
+        Block length (states).
+
+    Returns
+    -------
+    Columns
+        Scratch arrays.
+    """
     w = Columns(np.empty((nq, L)), np.empty((nq, L)), np.empty((nq, L)), np.empty((nq, L)),
                 np.zeros((N + 1, 2, L)), np.empty((N, 2, L)), np.zeros((N + 1, 4, L)), np.empty((N, 3, L)),
                 np.empty((3, L)), np.zeros((N + 1, 3, L)), np.empty((N, 3, L)), np.empty((N + 1, 6, L)),
@@ -383,6 +533,28 @@ def articulated_body_block(model, q, qd, tau, fext, lo, hi, w, qdd):
     True when every state succeeded; False when a state is not finite or not clearly
     regular (``_clearly_regular``): the caller then runs :func:`articulated_body_state`
     on the block, which tells.
+
+    Parameters
+    ----------
+    model : tuple
+        The model's :func:`tables`.
+    q, qd : numpy.ndarray, shape (B, nq)
+        Joint positions and velocities of B states (C-contiguous float64).
+    tau : numpy.ndarray, shape (B, nq)
+        Joint forces.
+    fext : numpy.ndarray, shape (B, N, 3) or None
+        External world wrenches at the origin.
+    lo, hi : int
+        The block's states ``lo:hi``.
+    w : Columns
+        Scratch arrays from :func:`columns`.
+    qdd : numpy.ndarray, shape (B, nq)
+        Output: joint accelerations.
+
+    Returns
+    -------
+    bool
+        Whether every state of the block succeeded.
     """
     kind, parent, body, gravity = model
     n, N = hi - lo, kind.shape[0]
@@ -599,10 +771,51 @@ def forward_dynamics_many(kind, parent, body, gravity, q, qd, tau, fext):
 
     ``q̈`` (B, nq) is valid when ``declined`` is -1, else ``declined`` is the first state
     that did not succeed (see the module).
+
+    Parameters
+    ----------
+    kind, parent : numpy.ndarray of int, shape (N,)
+        Joint kind codes and parent indices (:func:`tables`).
+    body : numpy.ndarray, shape (N, 8)
+        Per body: joint placement ``(x, y, cos φ, sin φ)``, mass, centre of mass, inertia (:func:`tables`).
+    gravity : numpy.ndarray, shape (2,)
+        Gravity (m/s²).
+    q, qd : numpy.ndarray, shape (B, nq)
+        Joint positions and velocities of B states (C-contiguous float64).
+    tau : numpy.ndarray, shape (B, nq)
+        Joint forces.
+    fext : numpy.ndarray, shape (B, N, 3) or None
+        External world wrenches at the origin.
+
+    Returns
+    -------
+    tuple
+        ``(q̈, declined)``.
     """
     return _many(False, kind, parent, body, gravity, q, qd, tau, fext)
 
 
 def inverse_dynamics_many(kind, parent, body, gravity, q, qd, qdd, fext):
-    """``(τ, declined)`` of B states (C-contiguous float64 (B, nq), ``fext`` (B, N, 3) or None), as above."""
+    """``(τ, declined)`` of B states (C-contiguous float64 (B, nq), ``fext`` (B, N, 3) or None), as above.
+
+    Parameters
+    ----------
+    kind, parent : numpy.ndarray of int, shape (N,)
+        Joint kind codes and parent indices (:func:`tables`).
+    body : numpy.ndarray, shape (N, 8)
+        Per body: joint placement ``(x, y, cos φ, sin φ)``, mass, centre of mass, inertia (:func:`tables`).
+    gravity : numpy.ndarray, shape (2,)
+        Gravity (m/s²).
+    q, qd : numpy.ndarray, shape (B, nq)
+        Joint positions and velocities of B states (C-contiguous float64).
+    qdd : numpy.ndarray, shape (B, nq)
+        Joint accelerations.
+    fext : numpy.ndarray, shape (B, N, 3) or None
+        External world wrenches at the origin.
+
+    Returns
+    -------
+    tuple
+        ``(τ, declined)``.
+    """
     return _many(True, kind, parent, body, gravity, q, qd, qdd, fext)

@@ -75,14 +75,29 @@ def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.
 
     Parameters
     ----------
-    I : (3, 3) body inertia; s : (3, k) joint space; Q : (k,) joint torque;
-    p : (3,) bias force (3.11); f_next : (3,) internal force of the child
-    joints (sum); a_prev : (3,) parent acceleration; kappa : (3,) bias
-    acceleration (2.19).
-    T : (3, k), optional
+    I : array_like, shape (3, 3)
+        Body inertia at the origin.
+    s : array_like, shape (3, k)
+        Joint motion space.
+    Q : array_like, shape (k,)
+        Joint force/torque.
+    p : array_like, shape (3,)
+        Bias force of the body (3.11), gravity included.
+    f_next : array_like, shape (3,)
+        Internal force of the child joints (their sum).
+    a_prev : array_like, shape (3,)
+        Acceleration of the parent body.
+    kappa : array_like, shape (3,)
+        Bias acceleration of the joint (2.19).
+    T : array_like, shape (3, k), optional
         The percussion space ``I s (sᵀIs)⁻¹`` if already formed (and checked, e.g. by
         the singularity rule at the joint's own point); by default it is formed here
         (:func:`planargeo.mechanics.subspaces.T_of`, the rule measured at the origin).
+
+    Returns
+    -------
+    numpy.ndarray, shape (3,)
+        ``a_i``.
 
     Examples
     --------
@@ -107,6 +122,16 @@ def force_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.ndarray
     with ``T_i``, ``U_i`` built on the body inertia (6.36, 6.37) and ``R U^T = 1 - T s^T``
     (7.8), whatever the reaction basis.  Parameters as :func:`acceleration_propagator`.
 
+    Parameters
+    ----------
+    I, s, Q, p, f_next, a_prev, kappa, T : array_like
+        As in :func:`acceleration_propagator`.
+
+    Returns
+    -------
+    numpy.ndarray, shape (3,)
+        ``f_i``.
+
     Examples
     --------
     The pinned point mass of :func:`acceleration_propagator`, at rest with the
@@ -130,8 +155,11 @@ def joint_accelerations(T, a, kappa, parents) -> np.ndarray:
     Parameters
     ----------
     T : list of N (3, k_i) percussion spaces (6.105, or 6.36: ``sᵀT = 1`` is all that is used).
+        Each joint's percussion space ``T_i`` (3, k_i).
     a, kappa : (N, 3) body and bias accelerations; ``a_{λ(i)}`` is the parent's (zero for the ground).
+        Body accelerations and joint bias accelerations (3,) each.
     parents : sequence of N ints.
+        Parent of each body (-1: the ground).
 
     Returns
     -------
@@ -169,6 +197,7 @@ class ProjectiveWorkspace:
     a, f : (N, 3)
         Body accelerations (6.108) and internal joint forces (6.109).
     qdd : (nq,) joint accelerations (6.110).
+        Joint accelerations (6.110).
     """
 
     s: list
@@ -211,10 +240,15 @@ def projective_solve(I, S, kappa, p, tau, parents=None, points=None, joint_point
     Parameters
     ----------
     I : (N, 3, 3) body inertias at the origin.
+        Body inertias at the origin (3, 3) each.
     S : list of N arrays (3, k_i): joint spaces.
+        Joint motion spaces (3, k_i) each.
     kappa, p : (N, 3) bias accelerations (2.19) and bias forces (3.11).
+        Bias accelerations (2.19) and bias forces (3.11, gravity included) of the bodies.
     tau : list of N arrays (k_i,): joint torques ``Q_i``.
+        Joint forces, one array (k_i,) per joint.
     parents : sequence of N ints (``-1`` ground, parents before children), default a chain.
+        Parent of each body (-1: the ground).
     points : (N, 2), optional
         A point of each joint for the reaction bases (:func:`planargeo.mechanics.joints.R_of`:
         used by prismatic joints, whose reaction force passes through it); default the origin.
@@ -271,6 +305,24 @@ def projective_workspace(model, q, qd=None, tau=None, f_ext=None) -> ProjectiveW
     Returns the per-joint subspaces ``T, U``, components ``Q, mu, psi,
     gamma``, body accelerations ``a_i`` and internal forces ``f_i`` (for drawings).
 
+    Parameters
+    ----------
+    model : Model
+        The mechanism.
+    q : array_like, shape (nq,)
+        Joint coordinates.
+    qd : array_like, shape (nq,), optional
+        Joint velocities (zero).
+    tau : array_like, shape (nq,), optional
+        Joint forces (zero).
+    f_ext : array_like, shape (N, 3), optional
+        External world wrenches.
+
+    Returns
+    -------
+    ProjectiveWorkspace
+        The per-joint quantities.
+
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
@@ -294,6 +346,24 @@ def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
     The forward-dynamics signature of :mod:`planargeo.algorithms`: ``q``, ``qd``, ``tau``
     of shape (..., nq) (leading batch dimensions solved state by state), ``f_ext`` (..., N, 3)
     world wrenches at the origin on the bodies (besides gravity); returns ``q̈`` (..., nq).
+
+    Parameters
+    ----------
+    model : Model
+        The mechanism.
+    q : array_like, shape (..., nq)
+        Joint coordinates.
+    qd : array_like, shape (..., nq)
+        Joint velocities.
+    tau : array_like, shape (..., nq)
+        Joint forces/torques (N, N·m).
+    f_ext : array_like, shape (..., N, 3), optional
+        External world wrenches at the origin on the bodies (besides gravity).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., nq)
+        ``q̈``.
 
     Raises
     ------

@@ -31,7 +31,9 @@ def newton_euler(model: Model, q, qd, qdd, f_ext=None) -> Data:
     Parameters
     ----------
     model : Model
+        The mechanism (bodies, joints, parents, gravity).
     q, qd, qdd : array_like (..., nq)
+        One state: joint coordinates, velocities and accelerations.
     f_ext : array_like (..., N, 3), optional
         External world wrenches at the origin on each body.
 
@@ -89,9 +91,11 @@ def inverse_dynamics(model: Model, q, qd, qdd, f_ext=None, *, return_forces: boo
     Parameters
     ----------
     model : Model
+        The mechanism (bodies, joints, parents, gravity).
     q, qd, qdd : array_like (..., nq)
         ``qd`` or ``qdd`` None: zeros.
     f_ext : array_like (..., N, 3), optional
+        External world wrenches at the origin, one per body (besides gravity).
     return_forces : bool
         Also return the joint forces ``f`` (..., N, 3) (world wrenches at the origin).
 

@@ -60,6 +60,23 @@ def adjacency(parents) -> np.ndarray:
     (``parents[i] = j``; ``-1`` is the ground and gives a zero row).  The
     parents need not be ordered; cycles are detected by :func:`trunk`.
 
+    Parameters
+    ----------
+    parents : sequence of int
+        Parent of each body (``-1``: the ground).
+
+    Returns
+    -------
+    numpy.ndarray, shape (n, n)
+        ``C``.
+
+    Raises
+    ------
+    TopologyError
+        If ``parents`` is not a sequence of valid indices.
+    CyclicTopologyError
+        If a body is its own parent.
+
     Examples
     --------
     >>> adjacency([-1, 0, 1]).astype(int)                 # a serial chain (9.2)
@@ -94,6 +111,16 @@ def trunk(C) -> np.ndarray:
     Computed as the finite series ``1 + C + C² + ... + C^{n-1}``, exact because
     a tree's adjacency matrix is nilpotent (``C^n = 0``).  Row ``i`` has ones
     in the columns of the bodies between body ``i`` and the root.
+
+    Parameters
+    ----------
+    C : array_like, shape (n, n)
+        Adjacency matrix of a tree.
+
+    Returns
+    -------
+    numpy.ndarray, shape (n, n)
+        ``(1 - C)⁻¹``.
 
     Raises
     ------
@@ -150,6 +177,18 @@ def _topology(parents: tuple) -> tuple[np.ndarray, np.ndarray]:
 def blocks(X, k: int = 3) -> np.ndarray:
     """Expand an ``n × m`` 0/±1 topology matrix into ``3n × 3m`` blocks (``X ⊗ 1_3``; thesis 9.9, 9.14).
 
+    Parameters
+    ----------
+    X : array_like, shape (n, m)
+        Topology matrix.
+    k : int, optional
+        Block size.
+
+    Returns
+    -------
+    numpy.ndarray, shape (k n, k m)
+        ``X ⊗ 1_k``.
+
     Examples
     --------
     >>> blocks(np.array([[0, 1]])).shape
@@ -171,6 +210,18 @@ def joint_conditions(model: Model, q) -> np.ndarray:
     parent).  ``A`` does not depend on ``q̇``.  Joints with no coordinates
     (``"fixed"``) get ``1.0``.  Used to watch a simulation for singular
     configurations (:func:`planargeo.simulate.simulate`, ``condition="joints"``).
+
+    Parameters
+    ----------
+    model : Model
+        The mechanism.
+    q : array_like, shape (nq,)
+        Joint coordinates.
+
+    Returns
+    -------
+    numpy.ndarray, shape (N,)
+        ``cond_i``; ``inf`` for a singular joint.
 
     Examples
     --------
@@ -223,6 +274,18 @@ def articulation_matrix(C3, P) -> np.ndarray:
     ``C3`` is the block adjacency (3n×3n) and ``P = {{R_i U_i^T}}`` the
     block-diagonal projector (``R U^T = 1 - T S^T``, 7.8).  ``C^T P`` is
     nilpotent, so the series (9.34) is finite; a direct solve is used.
+
+    Parameters
+    ----------
+    C3 : numpy.ndarray, shape (3n, 3n)
+        Block adjacency.
+    P : numpy.ndarray, shape (3n, 3n)
+        Block-diagonal ``{R_i U_iᵀ}``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (3n, 3n)
+        ``L``.
 
     Examples
     --------
@@ -337,6 +400,16 @@ class StackedSolution:
         products of :attr:`mobility`.  This is what the loop solver needs:
         the contact columns ``Λ⁻¹ Gᵀ`` (9.65-9.73).
 
+        Parameters
+        ----------
+        X : array_like, shape (3N, k) or (3N,)
+            Stacked wrenches.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``Φ X``, the shape of ``X``.
+
         Examples
         --------
         A unit link on a pin at the origin (``ρ² = 1/12``): a unit couple turns it at ``1/(m(ρ² + L²/4)) = 3`` rad/s² (7.42).
@@ -367,7 +440,9 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     Parameters
     ----------
     model : Model
+        A tree (or chain) without contacts.
     q, qd, tau : array_like (nq,)
+        One state: joint coordinates, velocities and forces.
     f_ext : array_like (N, 3), optional
         World wrenches at the origin applied to each body.
     data : Data, optional
@@ -380,6 +455,11 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
         ``d = L (p + C^T T Q + C^T R U^T A κ)`` (9.32 corrected),
         ``f = T Q + R U^T (A (C a + κ) + d)`` (9.41/9.17),
         ``q̈ = T^T (Δ a - κ)`` (9.43).
+
+    Raises
+    ------
+    ShapeError
+        If the state is a batch.
 
     Examples
     --------
@@ -488,7 +568,9 @@ def forward_dynamics_stacked(model: Model, q, qd, tau, f_ext=None, *, method: st
     Parameters
     ----------
     model : Model
+        A tree (or chain) without contacts.
     q, qd, tau : array_like (..., nq)
+        Joint coordinates, velocities and forces.
     f_ext : array_like (..., N, 3), optional
         World wrenches at the origin applied to each body (besides gravity).
     method : {"articulation", "direct"}
@@ -498,6 +580,11 @@ def forward_dynamics_stacked(model: Model, q, qd, tau, f_ext=None, *, method: st
     Returns
     -------
     qdd : ndarray (..., nq)
+
+    Raises
+    ------
+    InputError
+        For an unknown ``method``.
 
     Examples
     --------

@@ -53,6 +53,13 @@ BENCHMARK_CAPTIONS = {
 
 
 def add_arguments(parser):
+    """Add ``planargeo gallery``'s options (``--out``, ``--check``, ``--only``, ``--force``) to ``parser``.
+
+    Parameters
+    ----------
+    parser : argparse.ArgumentParser
+        The subcommand's parser.
+    """
     parser.add_argument("--out", default=str(DEFAULT_OUT),
                         help="output folder (default: the repository's gallery/)")
     parser.add_argument("--check", action="store_true",
@@ -65,7 +72,18 @@ def add_arguments(parser):
 
 
 def render_svg(spec) -> bytes:
-    """Render one figure spec to SVG bytes (deterministic)."""
+    """Render one figure spec to SVG bytes (deterministic).
+
+    Parameters
+    ----------
+    spec : FigureSpec
+        A registered figure.
+
+    Returns
+    -------
+    bytes
+        The SVG file's content, the same on every run.
+    """
     import matplotlib
 
     matplotlib.use("Agg")
@@ -84,7 +102,18 @@ def render_svg(spec) -> bytes:
 
 
 def benchmark_charts(folder) -> list[str]:
-    """Sorted stems of the SVG charts in ``folder`` (empty if it does not exist)."""
+    """Sorted stems of the SVG charts in ``folder`` (empty if it does not exist).
+
+    Parameters
+    ----------
+    folder : str or pathlib.Path
+        The gallery's ``benchmarks/`` folder.
+
+    Returns
+    -------
+    list of str
+        File stems, sorted.
+    """
     folder = Path(folder)
     if not folder.is_dir():
         return []
@@ -92,6 +121,20 @@ def benchmark_charts(folder) -> list[str]:
 
 
 def readme(specs, benchmarks=()) -> str:
+    """The gallery's ``README.md``: every figure with its caption, then the benchmark charts.
+
+    Parameters
+    ----------
+    specs : dict of str to FigureSpec
+        The registered figures, in gallery order (:func:`planargeo.gallery.figures.load_all`).
+    benchmarks : sequence of str, optional
+        Stems of the benchmark charts to index (:func:`benchmark_charts`).
+
+    Returns
+    -------
+    str
+        The Markdown text.
+    """
     lines = [
         "# planargeo gallery",
         "",
@@ -229,7 +272,18 @@ def _managed(folder: Path) -> set[str]:
 
 
 def check(out) -> list[str]:
-    """Problems of ``out`` against a fresh render (empty list: up to date)."""
+    """Problems of ``out`` against a fresh render (empty list: up to date).
+
+    Parameters
+    ----------
+    out : str or pathlib.Path
+        The gallery folder to verify.
+
+    Returns
+    -------
+    list of str
+        ``"missing: …"``, ``"stale: …"`` or ``"extra: …"`` lines.
+    """
     out = Path(out)
     with tempfile.TemporaryDirectory() as tmp:
         fresh = generate(tmp, benchmarks=out / "benchmarks")
@@ -246,6 +300,18 @@ def check(out) -> list[str]:
 
 
 def main(args) -> int:
+    """Run ``planargeo gallery``: regenerate the gallery, or with ``--check`` verify it.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        Parsed options of :func:`add_arguments`.
+
+    Returns
+    -------
+    int
+        Exit status: 0, or 1 when ``--check`` found problems.
+    """
     if args.check:
         problems = check(args.out)
         for p in problems:

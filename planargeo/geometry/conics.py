@@ -127,7 +127,14 @@ def polar(C, p) -> np.ndarray:
     Parameters
     ----------
     C : array_like, shape (..., 3, 3), symmetric
+        Symmetric conic matrix.
     p : array_like, shape (..., 3)
+        Homogeneous points.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        The polar line ``C p`` (not normalised: for an inertia it is the wrench).
 
     Examples
     --------
@@ -147,6 +154,20 @@ def pole(C, l, rtol: float = 1e-13) -> np.ndarray:
     Solved with ``numpy.linalg.solve`` (no explicit inverse), so the scale is
     exact: for an inertia ``I`` and a force ``f``, ``pole(I, f)`` is the
     acceleration ``I⁻¹ f``.  The line at infinity maps to the centre.
+
+    Parameters
+    ----------
+    C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    l : array_like, shape (..., 3)
+        Homogeneous line (for an inertia: a wrench).
+    rtol : float, optional
+        ``C`` counts as singular when its condition number exceeds ``1/rtol``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        The pole ``C⁻¹ l`` (not normalised: for an inertia, the acceleration).
 
     Raises
     ------
@@ -174,6 +195,18 @@ def pole(C, l, rtol: float = 1e-13) -> np.ndarray:
 def conic_residual(C, p) -> np.ndarray:
     """The quadratic form ``p @ C @ p`` (thesis 5.38); zero on the conic.
 
+    Parameters
+    ----------
+    C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    p : array_like, shape (..., 3)
+        Homogeneous points.
+
+    Returns
+    -------
+    numpy.ndarray, shape (...)
+        ``p @ C @ p`` (for an inertia and a twist: twice the kinetic energy, J).
+
     Examples
     --------
     >>> float(conic_residual(conic_circle([0.0, 0.0], 2.0), [0.0, -2.0, 1.0]))  # (2, 0)
@@ -190,6 +223,20 @@ def is_on_conic(C, p, rtol: float = 1e-9) -> np.ndarray:
 
     ``p`` is scaled to unit length first, so far (near-ideal) points are
     handled without overflow.
+
+    Parameters
+    ----------
+    C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    p : array_like, shape (..., 3)
+        Homogeneous points.
+    rtol : float, optional
+        Relative tolerance of the test.
+
+    Returns
+    -------
+    numpy.ndarray of bool, shape (...)
+        ``True`` where ``p`` lies on ``C`` within ``rtol``.
 
     Examples
     --------
@@ -221,6 +268,7 @@ class ConicType:
     is_circle : bool
         An ellipse (real or imaginary) whose quadratic part is isotropic.
     rank : int
+        Rank of the matrix: 3 for a proper conic, 2 a line pair, 1 a double line.
 
     Examples
     --------
@@ -280,7 +328,9 @@ def classify(C, rtol: float = 1e-10):
     Parameters
     ----------
     C : array_like, shape (3, 3) or (..., 3, 3)
+        Symmetric conic matrix.
     rtol : float
+        Relative tolerance below which an eigenvalue counts as zero.
 
     Returns
     -------
@@ -317,6 +367,16 @@ def centre(C) -> np.ndarray:
     a rotated parabola built in floating point has a tiny determinant and so a
     very far finite centre on its axis.
     For a line pair it is the vertex.  For an inertia it is the centre of mass.
+
+    Parameters
+    ----------
+    C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        The centre, normalised (weight 1, or unit ``(a, b)`` when ideal).
 
     Raises
     ------
@@ -379,6 +439,15 @@ def line_conic_intersections(C, l, rtol: float = 1e-9):
     ``rtol`` times its scale counts as zero (a tangent).  Points at infinity
     (e.g. on the asymptotes of a hyperbola) are ordinary results.
 
+    Parameters
+    ----------
+    C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    l : array_like, shape (..., 3)
+        Homogeneous line.
+    rtol : float, optional
+        Relative tolerance below which a negative discriminant counts as zero.
+
     Returns
     -------
     points : ndarray, shape (..., 2, 3)
@@ -410,7 +479,9 @@ def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
     Parameters
     ----------
     C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix.
     p : array_like, shape (..., 3)
+        Homogeneous point.
     on_interior : {"raise", "nan"}
         What to do for a point with no real tangents (interior to ``C``, or any
         point when ``C`` is imaginary): raise :class:`InputError`, or return
@@ -424,6 +495,14 @@ def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
         Normalised tangent lines.
     points : ndarray, shape (..., 2, 3)
         Normalised contact points (row ``i`` is where ``lines[i]`` touches).
+
+    Raises
+    ------
+    InputError
+        ``on_interior`` not ``"raise"``/``"nan"``, or (with ``"raise"``) a point that has no real
+        tangents.
+    DegenerateGeometryError
+        ``p`` (or a contact point) is the vertex of a degenerate conic.
 
     Examples
     --------
@@ -548,6 +627,23 @@ def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 
     coincide and the polar is the tangent there.  Interior points: see
     ``on_interior`` of :func:`tangents_from_point`.
 
+    Parameters
+    ----------
+    C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    p : array_like, shape (..., 3)
+        Homogeneous point, exterior to (or on) the conic.
+    on_interior : {"raise", "nan"}, optional
+        What to do for a point with no real tangents (see :func:`tangents_from_point`).
+    rtol : float, optional
+        Tolerance for "on the conic".
+
+    Returns
+    -------
+    ExteriorConstruction
+        The point, its two tangents, their contact points and the polar (the join of the
+        contacts).
+
     Examples
     --------
     >>> K = polar_construction_exterior(conic_circle([0.0, 0.0], 1.0), [0.0, -2.0, 1.0])
@@ -581,7 +677,9 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
     Parameters
     ----------
     C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix.
     p : array_like, shape (..., 3)
+        Homogeneous point, interior to the conic (or any point with secants).
     lines : array_like, shape (..., 2, 3), optional
         Two distinct lines through ``p``.  Default: two of the vertical line,
         the horizontal line and the line to the origin through ``p`` (the
@@ -595,6 +693,21 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
         :class:`InputError` naming ``lines[i]``), and a line whose intersection
         discriminant is within ``rtol`` of zero is a tangent (as in
         :func:`line_conic_intersections`).
+
+    Returns
+    -------
+    InteriorConstruction
+        The point, the two chords, their end points, the tangents there, their meets (the
+        poles of the chords) and the polar (the join of the two poles).
+
+    Raises
+    ------
+    InputError
+        ``on_miss`` not ``"raise"``/``"nan"``; a given line not through ``p``; (with
+        ``"raise"``) a line that does not cut ``C`` in two real points.
+    DegenerateGeometryError
+        ``p`` is the zero vector, the two lines coincide, or a chord point is the vertex of a
+        degenerate conic.
 
     Examples
     --------
@@ -664,6 +777,17 @@ def correlation(C, Q, L, rtol: float = 1e-13):
     polar ``M = C Q``.  More strongly, linear forms are invariant (5.40-5.41):
     ``P @ M == Q @ L`` for symmetric ``C``.
 
+    Parameters
+    ----------
+    C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    Q : array_like, shape (..., 3)
+        A point.
+    L : array_like, shape (..., 3)
+        A line (through ``Q`` for the theorem's incidence statement).
+    rtol : float, optional
+        Singularity tolerance of the pole (see :func:`pole`).
+
     Returns
     -------
     P : ndarray, shape (..., 3)
@@ -696,6 +820,20 @@ def _solve_basis(Mcols, v, name: str, rtol: float):
 def decompose_point(P, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     """Components ``u`` of ``P = u1 Q1 + u2 Q2 + u3 Q3`` (thesis 5.42).
 
+    Parameters
+    ----------
+    P : array_like, shape (..., 3)
+        The point to decompose.
+    Q1, Q2, Q3 : array_like, shape (..., 3)
+        Three non-collinear base points.
+    rtol : float, optional
+        The base counts as singular when its condition number exceeds ``1/rtol``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        The components ``u``.
+
     Raises
     ------
     DegenerateGeometryError
@@ -717,6 +855,27 @@ def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     For ``L = C P`` these are the components of ``P`` on ``Q1, Q2, Q3``
     (same proportionality ratios).
 
+    Parameters
+    ----------
+    C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    L : array_like, shape (..., 3)
+        The line to decompose.
+    Q1, Q2, Q3 : array_like, shape (..., 3)
+        Three non-collinear base points; the base lines are their polars ``C Qi``.
+    rtol : float, optional
+        The base counts as singular when its condition number exceeds ``1/rtol``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        The components ``u``.
+
+    Raises
+    ------
+    DegenerateGeometryError
+        If the base lines ``C Qi`` are concurrent (no basis).
+
     Examples
     --------
     >>> C = np.diag([1.0, 2.0, 4.0])
@@ -735,6 +894,15 @@ def special_base(C, Q1, rtol: float = 1e-9):
 
     Then ``Q2 C Q2 = Q3 C Q3 = 0`` and ``Q1 C Q2 = Q1 C Q3 = 0`` (the
     tangents at ``Q2, Q3`` pass through ``Q1``).
+
+    Parameters
+    ----------
+    C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    Q1 : array_like, shape (..., 3)
+        A point exterior to the real conic ``C``.
+    rtol : float, optional
+        Tolerance for "on the conic" of the tangent construction.
 
     Returns
     -------
@@ -768,6 +936,25 @@ def decompose_point_special(C, P, Q1, Q2, Q3) -> np.ndarray:
     ``u3 = Q2 C P / Q2 C Q3``.  Only valid for a base from
     :func:`special_base` (the decoupling needs ``Qi C Qj = 0`` as stated).
 
+    Parameters
+    ----------
+    C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    P : array_like, shape (..., 3)
+        The point to decompose.
+    Q1, Q2, Q3 : array_like, shape (..., 3)
+        A special base of ``C`` (from :func:`special_base`).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        The components ``(u1, u2, u3)``.
+
+    Raises
+    ------
+    DegenerateGeometryError
+        If a denominator is zero (the points are not a special base of ``C``).
+
     Examples
     --------
     >>> C = conic_circle([0.0, 0.0], 1.0)
@@ -790,6 +977,25 @@ def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
     Since ``Mi^T C⁻¹ = Qi^T`` and ``Mi^T C⁻¹ Mj = Qi C Qj``, (5.46) needs no
     inverse: ``u1 = Q1·L / Q1 C Q1``, ``u2 = Q3·L / Q3 C Q2``,
     ``u3 = Q2·L / Q2 C Q3``.
+
+    Parameters
+    ----------
+    C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    L : array_like, shape (..., 3)
+        The line to decompose.
+    Q1, Q2, Q3 : array_like, shape (..., 3)
+        A special base of ``C`` (from :func:`special_base`).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        The components ``(u1, u2, u3)`` on ``C Q1, C Q2, C Q3``.
+
+    Raises
+    ------
+    DegenerateGeometryError
+        If a denominator is zero (the points are not a special base of ``C``).
 
     Examples
     --------
@@ -839,6 +1045,16 @@ def drawable_conic(C) -> np.ndarray:
 
     Real (and degenerate) conics are returned unchanged.
 
+    Parameters
+    ----------
+    C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        ``C'`` for imaginary conics, ``C`` itself otherwise.
+
     Examples
     --------
     >>> drawable_conic(np.diag([2.0, 2.0, 8.0]))   # inertia m = 2, J = 8 at the origin: radius 2
@@ -878,7 +1094,9 @@ class AffineFrame:
     kind : str
         ``"ellipse"``, ``"hyperbola"`` or ``"parabola"``.
     A : ndarray (2, 2)
+        Linear part: images of the unit curve's axes (m).
     t : ndarray (2,)
+        Centre (ellipse, hyperbola) or vertex (parabola) (m).
 
     Examples
     --------
@@ -922,6 +1140,11 @@ def affine_frame(C, rtol: float = 1e-10) -> AffineFrame:
         A single conic.
     rtol : float
         Classification tolerance (see :func:`classify`).
+
+    Returns
+    -------
+    AffineFrame
+        ``kind`` (``"ellipse"``, ``"hyperbola"`` or ``"parabola"``), ``A`` (2, 2) and ``t`` (2,).
 
     Raises
     ------
@@ -983,6 +1206,25 @@ def conic_from_affine(kind: str, A, t) -> np.ndarray:
     In standard coordinates the map is ``X = M U`` with ``M = [[1, 0], [t, A]]``,
     so ``S = M⁻ᵀ S_unit M⁻¹``; the result is ``T S T`` (5.47).
 
+    Parameters
+    ----------
+    kind : {"ellipse", "hyperbola", "parabola"}
+        The unit curve: ``u² + v² = 1``, ``u² - v² = 1`` or ``v = u²``.
+    A : array_like, shape (..., 2, 2)
+        Linear part of the map (columns: images of the unit axes).
+    t : array_like, shape (..., 2)
+        Translation (centre or vertex, m).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        The symmetric conic matrix in the package's coordinates.
+
+    Raises
+    ------
+    InputError
+        If ``kind`` is not one of the three names.
+
     Examples
     --------
     >>> conic_from_affine("ellipse", np.eye(2), [0.0, 0.0])    # the unit circle
@@ -1022,6 +1264,25 @@ def conic_circle(centre, radius, imaginary: bool = False) -> np.ndarray:
 
     The imaginary circle with ``r² = J/m`` is ``inertia_matrix(m, c, J) / m``.
 
+    Parameters
+    ----------
+    centre : array_like, shape (..., 2)
+        Centre ``c`` (m).
+    radius : array_like, shape (...)
+        Radius ``r`` (m).
+    imaginary : bool, optional
+        Build the imaginary circle ``|x - c|² = -r²`` instead.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        The conic matrix above.
+
+    Raises
+    ------
+    InputError
+        If ``imaginary`` is not a bool.
+
     Examples
     --------
     >>> conic_circle([1.0, 2.0], 3.0)
@@ -1047,6 +1308,20 @@ def conic_circle(centre, radius, imaginary: bool = False) -> np.ndarray:
 def conic_ellipse(centre, axes, angle=0.0) -> np.ndarray:
     """Ellipse with semi-axes ``axes = (a, b)``, the first turned by ``angle`` from +x.
 
+    Parameters
+    ----------
+    centre : array_like, shape (2,)
+        Centre (m).
+    axes : array_like, shape (2,)
+        Semi-axes ``(a, b)`` (m).
+    angle : float, optional
+        Angle of the first semi-axis from +x (rad).
+
+    Returns
+    -------
+    numpy.ndarray, shape (3, 3)
+        The conic matrix.
+
     Examples
     --------
     >>> str(classify(conic_ellipse([0.0, 0.0], [2.0, 1.0], 0.3)))
@@ -1062,6 +1337,20 @@ def conic_ellipse(centre, axes, angle=0.0) -> np.ndarray:
 def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
     """Hyperbola ``x'²/a² - y'²/b² = 1`` in the frame at ``centre`` turned by ``angle``.
 
+    Parameters
+    ----------
+    centre : array_like, shape (2,)
+        Centre (m).
+    axes : array_like, shape (2,)
+        Transverse and conjugate semi-axes ``(a, b)`` (m).
+    angle : float, optional
+        Angle of the transverse axis from +x (rad).
+
+    Returns
+    -------
+    numpy.ndarray, shape (3, 3)
+        The conic matrix.
+
     Examples
     --------
     >>> str(classify(conic_hyperbola([0.0, 0.0], [1.0, 1.0])))
@@ -1076,6 +1365,20 @@ def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
 @overflow_checked("vertex or focal_length")
 def conic_parabola(vertex, focal_length, angle=0.0) -> np.ndarray:
     """Parabola ``y' = x'² / (4 f)`` in the frame at ``vertex`` turned by ``angle`` (opens to +y').
+
+    Parameters
+    ----------
+    vertex : array_like, shape (2,)
+        Vertex (m).
+    focal_length : float
+        Distance ``f`` from the vertex to the focus (m).
+    angle : float, optional
+        Rotation of the parabola's frame from the axes (rad).
+
+    Returns
+    -------
+    numpy.ndarray, shape (3, 3)
+        The conic matrix.
 
     Examples
     --------
@@ -1096,6 +1399,16 @@ def conic_parabola(vertex, focal_length, angle=0.0) -> np.ndarray:
 @overflow_checked("a coefficient")
 def conic_from_coefficients(a, b, c, d, e, f) -> np.ndarray:
     """Conic ``a x² + b xy + c y² + d x + e y + f = 0`` (thesis 5.35 in standard coordinates).
+
+    Parameters
+    ----------
+    a, b, c, d, e, f : array_like
+        Coefficients of the implicit equation (broadcast together).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        The symmetric conic matrix in the package's coordinates.
 
     Examples
     --------

@@ -74,6 +74,13 @@ class Point:
         ``(..., 3)`` raises :class:`~planargeo.errors.ShapeError`; the functions
         of :mod:`planargeo.geometry.projective` broadcast.
 
+    Raises
+    ------
+    ShapeError
+        If ``array`` does not have shape (3,).
+    DegenerateGeometryError
+        If ``array`` is the zero vector.
+
     Examples
     --------
     >>> Point.from_xy(1, 2)
@@ -96,7 +103,30 @@ class Point:
     # constructors
     @classmethod
     def from_xy(cls, x, y=None) -> "Point":
-        """The finite point ``(x, y)``; accepts ``from_xy(x, y)`` or ``from_xy((x, y))``."""
+        """The finite point ``(x, y)``; accepts ``from_xy(x, y)`` or ``from_xy((x, y))``.
+
+        Parameters
+        ----------
+        x : float or array_like, shape (2,)
+            The x coordinate (m), or the pair ``(x, y)`` when ``y`` is omitted.
+        y : float, optional
+            The y coordinate (m).
+
+        Returns
+        -------
+        Point
+            The point ``[y, -x, 1]``.
+
+        Raises
+        ------
+        ShapeError
+            If the pair given alone does not have shape (2,).
+
+        Examples
+        --------
+        >>> Point.from_xy(1, 2), Point.from_xy((1, 2))
+        (Point(x=1, y=2), Point(x=1, y=2))
+        """
         xy = x if y is None else (x, y)
         a = as_array(xy, "xy", (2,))
         if a.shape != (2,):
@@ -105,7 +135,29 @@ class Point:
 
     @classmethod
     def at_infinity(cls, direction) -> "Point":
-        """The point at infinity in ``direction`` (a translation perpendicular to it)."""
+        """The point at infinity in ``direction`` (a translation perpendicular to it).
+
+        Parameters
+        ----------
+        direction : array_like, shape (2,)
+            A non-zero direction.
+
+        Returns
+        -------
+        Point
+            The ideal point ``[dy, -dx, 0]``.
+
+        Raises
+        ------
+        ShapeError
+            If ``direction`` does not have shape (2,).
+
+        Examples
+        --------
+        >>> P = Point.at_infinity((1, 0))       # the translation along y
+        >>> P, P.array
+        (Point(at infinity, direction=(1, 0)), array([ 0., -1.,  0.]))
+        """
         d = as_array(direction, "direction", (2,))
         if d.shape != (2,):
             raise ShapeError(f"direction must have shape (2,), got shape {d.shape}")
@@ -133,7 +185,18 @@ class Point:
         return _p.direction(self._a)
 
     def normalized(self) -> "Point":
-        """The same point with ``w = 1`` (or unit length at infinity)."""
+        """The same point with ``w = 1`` (or unit length at infinity).
+
+        Returns
+        -------
+        Point
+            A new, normalised Point.
+
+        Examples
+        --------
+        >>> Point([2.0, -4.0, 2.0]).normalized().array     # the point (2, 1)
+        array([ 1., -2.,  1.])
+        """
         return Point(_p.normalize_point(self._a))
 
     # geometry
@@ -143,6 +206,16 @@ class Point:
         Joining with a point at infinity gives the line through this point in
         that direction; two coincident points raise
         :class:`~planargeo.errors.DegenerateGeometryError`.
+
+        Parameters
+        ----------
+        other : Point or array_like, shape (3,)
+            The second point.
+
+        Returns
+        -------
+        Line
+            The joining line.
 
         Examples
         --------
@@ -164,6 +237,16 @@ class Point:
         For a twist and a wrench it is the power ``v·f``.  Its value depends on
         the scale of both arrays; for a distance use :meth:`distance_to`.
 
+        Parameters
+        ----------
+        line : Line or array_like, shape (3,)
+            A Line or homogeneous line array.
+
+        Returns
+        -------
+        float
+            ``p @ l``.
+
         Examples
         --------
         >>> y1 = Line.from_point_direction((0, 1), (1, 0))            # the line y = 1
@@ -180,7 +263,23 @@ class Point:
         return NotImplemented
 
     def distance_to(self, line) -> float:
-        """Signed distance to ``line``, positive on its left (thesis 5.23)."""
+        """Signed distance to ``line``, positive on its left (thesis 5.23).
+
+        Parameters
+        ----------
+        line : Line or array_like, shape (3,)
+            A Line or homogeneous line array.
+
+        Returns
+        -------
+        float
+            Signed distance (m); ``±inf``/``nan`` for ideal elements.
+
+        Examples
+        --------
+        >>> Point.from_xy(3, 4).distance_to(Line.from_point_direction((0, 1), (1, 0)))   # y = 1
+        3.0
+        """
         return float(_p.signed_distance(self._a, _as_line_array(line, "line")))
 
     def __eq__(self, other):
@@ -211,6 +310,13 @@ class Line:
         :class:`~planargeo.errors.ShapeError`; the functions of
         :mod:`planargeo.geometry.projective` broadcast.
 
+    Raises
+    ------
+    ShapeError
+        If ``array`` does not have shape (3,).
+    DegenerateGeometryError
+        If ``array`` is the zero vector.
+
     Examples
     --------
     >>> Line.through(Point.from_xy(0, 1), Point.from_xy(2, 1))
@@ -232,17 +338,68 @@ class Line:
 
     @classmethod
     def through(cls, p, q) -> "Line":
-        """The line from ``p`` to ``q`` (Points or homogeneous arrays; thesis 5.32)."""
+        """The line from ``p`` to ``q`` (Points or homogeneous arrays; thesis 5.32).
+
+        Parameters
+        ----------
+        p, q : Point or array_like, shape (3,)
+            Two distinct points.
+
+        Returns
+        -------
+        Line
+            The line ``p ^ q``, directed from ``p`` towards ``q``.
+
+        Examples
+        --------
+        >>> Line.through(Point.from_xy(0, 0), Point.from_xy(2, 2))
+        Line(through=(0, 0), direction=(0.707107, 0.707107))
+        """
         return cls(_p.join(_as_point_array(p, "p"), _as_point_array(q, "q")))
 
     @classmethod
     def at_infinity(cls) -> "Line":
-        """The line at infinity ``[0, 0, 1]`` (thesis 5.16)."""
+        """The line at infinity ``[0, 0, 1]`` (thesis 5.16).
+
+        Returns
+        -------
+        Line
+            ``Line([0, 0, 1])``.
+
+        Examples
+        --------
+        >>> Line.at_infinity().array
+        array([0., 0., 1.])
+        """
         return cls(_p.LINE_AT_INFINITY)
 
     @classmethod
     def from_point_direction(cls, point, direction) -> "Line":
-        """The line through ``point`` (a Point, or Euclidean ``(x, y)``) along ``direction``."""
+        """The line through ``point`` (a Point, or Euclidean ``(x, y)``) along ``direction``.
+
+        Parameters
+        ----------
+        point : Point or array_like, shape (2,)
+            A Point or Euclidean coordinates ``(x, y)`` (m).
+        direction : array_like, shape (2,)
+            Direction of the line (non-zero).
+
+        Returns
+        -------
+        Line
+            The line, directed along ``direction``.
+
+        Raises
+        ------
+        ShapeError
+            If ``point`` given as coordinates does not have shape (2,).
+
+        Examples
+        --------
+        >>> L = Line.from_point_direction((1, 0), (0, 3))    # x = 1: a force of 3 N along +y
+        >>> L, L.array
+        (Line(through=(1, 0), direction=(0, 1)), array([0., 3., 3.]))
+        """
         if isinstance(point, Point):
             pa = point.array
         else:
@@ -273,7 +430,18 @@ class Line:
         return None if self.is_at_infinity else Point(_p.foot_point(self._a))
 
     def normalized(self) -> "Line":
-        """The same line with unit force (or ``tz = ±1`` at infinity)."""
+        """The same line with unit force (or ``tz = ±1`` at infinity).
+
+        Returns
+        -------
+        Line
+            A new, normalised Line.
+
+        Examples
+        --------
+        >>> Line([0.0, 3.0, 3.0]).normalized().array
+        array([0., 1., 1.])
+        """
         return Line(_p.normalize_line(self._a))
 
     def meet(self, other) -> Point:
@@ -281,6 +449,16 @@ class Line:
 
         Parallel lines meet at infinity (no error); the same line twice raises
         :class:`~planargeo.errors.DegenerateGeometryError`.
+
+        Parameters
+        ----------
+        other : Line or array_like, shape (3,)
+            The second line.
+
+        Returns
+        -------
+        Point
+            The common point (ideal for parallel lines).
 
         Examples
         --------
@@ -299,6 +477,16 @@ class Line:
 
     def incidence(self, point) -> float:
         """The form ``p @ l`` (thesis 5.23): zero exactly when ``point`` lies on this line.
+
+        Parameters
+        ----------
+        point : Point or array_like, shape (3,)
+            A Point or homogeneous point array.
+
+        Returns
+        -------
+        float
+            ``p @ l``.
 
         Examples
         --------
@@ -320,6 +508,16 @@ class Line:
         "Left" is seen looking along the line's direction ``(fx, fy)``.  A point
         at infinity has no finite distance: the result is NaN (documented, no
         warning).
+
+        Parameters
+        ----------
+        point : Point or array_like, shape (3,)
+            A Point or homogeneous point array.
+
+        Returns
+        -------
+        float
+            Signed distance (m), NaN for a point at infinity.
 
         Examples
         --------
@@ -358,6 +556,13 @@ class Conic:
         :class:`~planargeo.errors.ShapeError`; the functions of
         :mod:`planargeo.geometry.conics` broadcast.
 
+    Raises
+    ------
+    ShapeError
+        If ``matrix`` does not have shape (3, 3).
+    DegenerateGeometryError
+        If ``matrix`` is zero.
+
     Examples
     --------
     >>> C = Conic.circle((0, 0), 1)
@@ -386,27 +591,124 @@ class Conic:
 
     @classmethod
     def circle(cls, centre, radius, imaginary: bool = False) -> "Conic":
-        """Circle of ``radius`` about ``centre`` (imaginary: ``|x - c|² = -r²``)."""
+        """Circle of ``radius`` about ``centre`` (imaginary: ``|x - c|² = -r²``).
+
+        Parameters
+        ----------
+        centre : array_like, shape (2,)
+            Centre (m).
+        radius : float
+            Radius (m).
+        imaginary : bool, optional
+            Build the imaginary circle instead.
+
+        Returns
+        -------
+        Conic
+            See :func:`planargeo.geometry.conics.conic_circle`.
+
+        Examples
+        --------
+        >>> Conic.circle((1, 2), 3), Conic.circle((0, 0), 1, imaginary=True)
+        (Conic(real circle, centre=(1, 2)), Conic(imaginary circle, centre=(0, 0)))
+        """
         return cls(_c.conic_circle(centre, radius, imaginary=imaginary))
 
     @classmethod
     def ellipse(cls, centre, axes, angle=0.0) -> "Conic":
-        """Ellipse with semi-axes ``axes``, the first turned by ``angle``."""
+        """Ellipse with semi-axes ``axes``, the first turned by ``angle``.
+
+        Parameters
+        ----------
+        centre : array_like, shape (2,)
+            Centre (m).
+        axes : array_like, shape (2,)
+            Semi-axes ``(a, b)`` (m).
+        angle : float, optional
+            Angle of the first semi-axis from +x (rad).
+
+        Returns
+        -------
+        Conic
+            See :func:`planargeo.geometry.conics.conic_ellipse`.
+
+        Examples
+        --------
+        >>> Conic.ellipse((1, 2), (3, 1)).affine_frame().t
+        array([1., 2.])
+        """
         return cls(_c.conic_ellipse(centre, axes, angle))
 
     @classmethod
     def hyperbola(cls, centre, axes, angle=0.0) -> "Conic":
-        """Hyperbola ``x'²/a² - y'²/b² = 1`` in the frame at ``centre`` turned by ``angle``."""
+        """Hyperbola ``x'²/a² - y'²/b² = 1`` in the frame at ``centre`` turned by ``angle``.
+
+        Parameters
+        ----------
+        centre : array_like, shape (2,)
+            Centre (m).
+        axes : array_like, shape (2,)
+            Transverse and conjugate semi-axes ``(a, b)`` (m).
+        angle : float, optional
+            Angle of the transverse axis from +x (rad).
+
+        Returns
+        -------
+        Conic
+            See :func:`planargeo.geometry.conics.conic_hyperbola`.
+
+        Examples
+        --------
+        >>> Conic.hyperbola((0, 0), (1, 2))
+        Conic(real hyperbola, centre=(0, 0))
+        """
         return cls(_c.conic_hyperbola(centre, axes, angle))
 
     @classmethod
     def parabola(cls, vertex, focal_length, angle=0.0) -> "Conic":
-        """Parabola ``y' = x'²/(4 f)`` at ``vertex`` turned by ``angle``."""
+        """Parabola ``y' = x'²/(4 f)`` at ``vertex`` turned by ``angle``.
+
+        Parameters
+        ----------
+        vertex : array_like, shape (2,)
+            Vertex (m).
+        focal_length : float
+            Vertex-to-focus distance ``f`` (m).
+        angle : float, optional
+            Rotation of the parabola's frame (rad).
+
+        Returns
+        -------
+        Conic
+            See :func:`planargeo.geometry.conics.conic_parabola`.
+
+        Examples
+        --------
+        >>> P = Conic.parabola((0, 0), 0.25)                  # y = x²
+        >>> P, P.contains(Point.from_xy(2, 4))
+        (Conic(real parabola, vertex=(0, 0), axis=(0, 1)), True)
+        """
         return cls(_c.conic_parabola(vertex, focal_length, angle))
 
     @classmethod
     def from_coefficients(cls, a, b, c, d, e, f) -> "Conic":
-        """Conic ``a x² + b xy + c y² + d x + e y + f = 0``."""
+        """Conic ``a x² + b xy + c y² + d x + e y + f = 0``.
+
+        Parameters
+        ----------
+        a, b, c, d, e, f : float
+            Coefficients of the implicit equation.
+
+        Returns
+        -------
+        Conic
+            The conic.
+
+        Examples
+        --------
+        >>> Conic.from_coefficients(1, 0, 1, 0, 0, -4)      # x² + y² = 4
+        Conic(real circle, centre=(0, 0))
+        """
         return cls(_c.conic_from_coefficients(a, b, c, d, e, f))
 
     @property
@@ -420,6 +722,16 @@ class Conic:
         For an inertia conic this is the axis of percussion of an acceleration
         pole (5.64).  A point at infinity maps to a diameter (a line through
         the centre).
+
+        Parameters
+        ----------
+        point : Point or array_like, shape (3,)
+            A Point or homogeneous point array.
+
+        Returns
+        -------
+        Line
+            The polar ``C p``.
 
         Examples
         --------
@@ -438,6 +750,16 @@ class Conic:
         a point at infinity.  A degenerate (singular) conic raises
         :class:`~planargeo.errors.DegenerateGeometryError`.
 
+        Parameters
+        ----------
+        line : Line or array_like, shape (3,)
+            A Line or homogeneous line array.
+
+        Returns
+        -------
+        Point
+            The pole ``C⁻¹ l``.
+
         Examples
         --------
         >>> C = Conic.circle((0, 0), 1)
@@ -450,6 +772,16 @@ class Conic:
 
     def classify(self, rtol: float = 1e-10) -> _c.ConicType:
         """Real / imaginary / degenerate and kind (thesis 5.2.2; see :func:`planargeo.geometry.conics.classify`).
+
+        Parameters
+        ----------
+        rtol : float, optional
+            Relative tolerance for zero eigenvalues and circles.
+
+        Returns
+        -------
+        ConicType
+            Reality, kind, whether a circle, and rank.
 
         Examples
         --------
@@ -484,6 +816,18 @@ class Conic:
         Points at infinity are ordinary: a hyperbola contains the ideal points
         of its asymptotes.
 
+        Parameters
+        ----------
+        point : Point or array_like, shape (3,)
+            A Point or homogeneous point array.
+        rtol : float, optional
+            Relative tolerance of the test.
+
+        Returns
+        -------
+        bool
+            Whether the point lies on the conic.
+
         Examples
         --------
         >>> C = Conic.circle((0, 0), 1)
@@ -502,6 +846,16 @@ class Conic:
         5.2.2, 5.39).  Raises :class:`~planargeo.errors.InputError` for an
         interior point (see :func:`planargeo.geometry.conics.tangents_from_point`).
 
+        Parameters
+        ----------
+        point : Point or array_like, shape (3,)
+            A Point or homogeneous point array.
+
+        Returns
+        -------
+        tuple
+            ``((Line, Line), (Point, Point))``: the tangents and their contact points.
+
         Examples
         --------
         >>> (t1, t2), (x1, x2) = Conic.circle((0, 0), 1).tangents_from(Point.from_xy(2, 0))
@@ -514,7 +868,20 @@ class Conic:
         return (Line(L[0]), Line(L[1])), (Point(X[0]), Point(X[1]))
 
     def affine_frame(self) -> _c.AffineFrame:
-        """``x = A u + t`` mapping the unit curve onto this real conic."""
+        """``x = A u + t`` mapping the unit curve onto this real conic.
+
+        Returns
+        -------
+        AffineFrame
+            See :func:`planargeo.geometry.conics.affine_frame`.
+
+        Examples
+        --------
+        >>> F = Conic.ellipse((1, 2), (3, 1)).affine_frame()
+        >>> F.kind, F.t, np.abs(F.A).round(12)
+        ('ellipse', array([1., 2.]), array([[3., 0.],
+               [0., 1.]]))
+        """
         return _c.affine_frame(self._m)
 
     def drawable(self) -> "Conic":
@@ -524,6 +891,11 @@ class Conic:
         centre of mass: the polar of a point with respect to it is the point
         reflection, through the centre, of the polar with respect to the
         inertia.  See :func:`planargeo.geometry.conics.drawable_conic`.
+
+        Returns
+        -------
+        Conic
+            The real partner, or ``self`` for a real conic.
 
         Examples
         --------

@@ -162,6 +162,7 @@ def normalize_point(p) -> np.ndarray:
     Parameters
     ----------
     p : array_like, shape (..., 3)
+        Homogeneous points (non-zero).
 
     Returns
     -------
@@ -205,6 +206,7 @@ def normalize_line(l) -> np.ndarray:
     Parameters
     ----------
     l : array_like, shape (..., 3)
+        Homogeneous lines (non-zero).
 
     Returns
     -------
@@ -241,6 +243,19 @@ def normalize(x, kind: str | None = None) -> np.ndarray:
     depending on how it is read (a twist or a wrench), and the two are scaled
     differently (weight ``w = 1`` versus unit force), so there is no default.
 
+    Parameters
+    ----------
+    x : array_like, shape (..., 3)
+        Homogeneous points or lines (any non-zero multiples).
+    kind : {"point", "line"}
+        How to read ``x``: as points (scaled to weight ``w = 1``, ideal points to a unit
+        ``(a, b)``) or as lines (scaled to a unit force ``(fx, fy)``).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        The base coordinates, same shape as ``x``.
+
     Raises
     ------
     InputError
@@ -269,6 +284,16 @@ def normalize(x, kind: str | None = None) -> np.ndarray:
 def is_ideal(p) -> np.ndarray:
     """True for points at infinity: weight ``w = p[..., 2]`` exactly zero (thesis 5.5).
 
+    Parameters
+    ----------
+    p : array_like, shape (..., 3)
+        Homogeneous points ``[a, b, w]``.
+
+    Returns
+    -------
+    numpy.ndarray of bool, shape (...)
+        ``True`` where ``w == 0``.
+
     Examples
     --------
     >>> is_ideal([[1.0, 0.0, 0.0], [1.0, 0.0, 1.0]])
@@ -280,6 +305,16 @@ def is_ideal(p) -> np.ndarray:
 
 def is_at_infinity(l) -> np.ndarray:
     """True for the line at infinity: force ``(fx, fy)`` exactly zero (thesis 5.16).
+
+    Parameters
+    ----------
+    l : array_like, shape (..., 3)
+        Homogeneous lines ``[fx, fy, tz]``.
+
+    Returns
+    -------
+    numpy.ndarray of bool, shape (...)
+        ``True`` where ``fx == fy == 0``.
 
     Examples
     --------
@@ -297,6 +332,12 @@ def from_xy(xy) -> np.ndarray:
     Parameters
     ----------
     xy : array_like, shape (..., 2)
+        Euclidean points ``(x, y)`` (m).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        ``[y, -x, 1]`` for each Euclidean point ``(x, y)`` (m).
 
     Examples
     --------
@@ -316,6 +357,16 @@ def from_direction(d) -> np.ndarray:
 
     It is the unit translation twist perpendicular to ``d`` (the translation
     velocity is ``(dy, -dx)``); :func:`direction` returns ``d / |d|``.
+
+    Parameters
+    ----------
+    d : array_like, shape (..., 2)
+        A Euclidean direction (any non-zero length).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        ``[dy, -dx, 0]``, not rescaled.
 
     Raises
     ------
@@ -346,6 +397,7 @@ def to_xy(p) -> np.ndarray:
     Parameters
     ----------
     p : array_like, shape (..., 3)
+        Homogeneous points.
 
     Returns
     -------
@@ -382,6 +434,16 @@ def direction(p) -> np.ndarray:
     The translation velocity of the twist is ``(a, b)``, perpendicular to this
     direction.  Finite points (``w != 0``) give ``(nan, nan)`` silently.
 
+    Parameters
+    ----------
+    p : array_like, shape (..., 3)
+        Homogeneous points; only ideal ones (``w = 0``) have a direction.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 2)
+        Unit directions; ``(nan, nan)`` for finite points.
+
     Examples
     --------
     >>> direction([1.0, 0.0, 0.0])
@@ -402,6 +464,16 @@ def line_direction(l) -> np.ndarray:
 
     The line at infinity gives ``(nan, nan)`` silently.
 
+    Parameters
+    ----------
+    l : array_like, shape (..., 3)
+        Homogeneous lines ``[fx, fy, tz]``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 2)
+        Unit direction of each line; ``(nan, nan)`` for the line at infinity.
+
     Examples
     --------
     >>> line_direction([0.0, -3.0, 1.0])
@@ -418,6 +490,17 @@ def foot_point(l) -> np.ndarray:
     """The point of a line nearest to the origin, as a homogeneous point.
 
     For the line at infinity this is ``nan`` (it has no finite point).
+
+    Parameters
+    ----------
+    l : array_like, shape (..., 3)
+        Homogeneous lines.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        The foot of the perpendicular from the origin, at weight 1 (``nan`` for the
+        line at infinity).
 
     Examples
     --------
@@ -446,6 +529,16 @@ def cross_cond(a, b) -> np.ndarray:
     The relative error of the computed ``a × b`` is at most about ``ε κ``.
     Vectors whose norms could over- or underflow are first rescaled to unit
     largest component, so any finite non-zero inputs give the right κ.
+
+    Parameters
+    ----------
+    a, b : array_like, shape (..., 3)
+        Two homogeneous points, or two homogeneous lines (broadcast together).
+
+    Returns
+    -------
+    numpy.ndarray, shape (...)
+        ``κ >= 1``; ``inf`` when ``a`` and ``b`` are dependent.
 
     Examples
     --------
@@ -544,6 +637,7 @@ def join(p, q, cond_limit: float = COND_LIMIT) -> np.ndarray:
     Parameters
     ----------
     p, q : array_like, shape (..., 3)
+        Homogeneous points (broadcast together).
     cond_limit : float, optional
         Largest accepted condition number ``κ = |p| |q| / |p × q|``
         (:func:`cross_cond`), :data:`planargeo.errors.COND_LIMIT` = ``1e12`` by default.  The
@@ -592,6 +686,7 @@ def meet(l, m, cond_limit: float = COND_LIMIT) -> np.ndarray:
     Parameters
     ----------
     l, m : array_like, shape (..., 3)
+        Homogeneous lines (broadcast together).
     cond_limit : float, optional
         Largest accepted condition number ``κ = |l| |m| / |l × m|``
         (:func:`cross_cond`), :data:`planargeo.errors.COND_LIMIT` = ``1e12`` by default.  The
@@ -633,6 +728,18 @@ def incidence(p, l) -> np.ndarray:
 
     It is also the power of twist ``p`` against wrench ``l`` (5.69).
 
+    Parameters
+    ----------
+    p : array_like, shape (..., 3)
+        Homogeneous points (twists).
+    l : array_like, shape (..., 3)
+        Homogeneous lines (wrenches), broadcast against ``p``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (...)
+        ``p @ l`` (W, when ``p`` is a twist and ``l`` a wrench).
+
     Examples
     --------
     >>> float(incidence(from_xy([3.0, 0.0]), [1.0, 0.0, 0.0]))
@@ -656,6 +763,19 @@ def signed_distance(p, l) -> np.ndarray:
     result is ``±inf`` (sign of ``p @ l`` divided by the weight's sign), or
     ``nan`` when ``p @ l`` is exactly zero too (an ideal point on the line).
     No warning is issued.
+
+    Parameters
+    ----------
+    p : array_like, shape (..., 3)
+        Homogeneous points.
+    l : array_like, shape (..., 3)
+        Homogeneous lines, broadcast against ``p``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (...)
+        Signed distance (m): positive to the left of ``l``; ``±inf`` or ``nan`` for
+        ideal elements as described above.
 
     Examples
     --------
@@ -687,6 +807,18 @@ def pencil(l1, l2, beta) -> np.ndarray:
     gives the range of points on ``join(p1, p2)`` when applied to points
     (5.9).  ``beta`` broadcasts against the leading dimensions.
 
+    Parameters
+    ----------
+    l1, l2 : array_like, shape (..., 3)
+        Two lines (or two points) spanning the pencil (or the range).
+    beta : array_like, shape (...)
+        Parameter of the member: ``0`` gives ``l1``, ``1`` gives ``l2``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        The member ``l1 + beta (l2 - l1)``.
+
     Examples
     --------
     >>> pencil([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], 0.5)   # the diagonal through the origin
@@ -706,6 +838,23 @@ def line_through_point_direction(p, d) -> np.ndarray:
     For ``p`` at weight 1 the result is the wrench with force ``d`` acting
     through ``p``.  For ``p`` at infinity it is the line at infinity (or a
     :class:`DegenerateGeometryError` if ``p`` lies in direction ``d``).
+
+    Parameters
+    ----------
+    p : array_like, shape (..., 3)
+        Homogeneous point the line passes through.
+    d : array_like, shape (..., 2)
+        Euclidean direction of the line (non-zero).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        The line ``join(p, ideal point of d)``.
+
+    Raises
+    ------
+    DegenerateGeometryError
+        If ``d`` is the zero vector, or ``p`` is the ideal point in direction ``d``.
 
     Examples
     --------
@@ -729,6 +878,16 @@ def to_standard(x) -> np.ndarray:
     ``(x, y)`` becomes ``[1, x, y]``; a line becomes ``[r, -cos λ, -sin λ]``
     (5.14a) times the force magnitude.
 
+    Parameters
+    ----------
+    x : array_like, shape (..., 3)
+        Points or lines in the package's (screw) coordinates.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        The same elements in standard homogeneous coordinates.
+
     Examples
     --------
     >>> to_standard(from_xy([1.0, 2.0]))
@@ -741,6 +900,16 @@ def to_standard(x) -> np.ndarray:
 def from_standard(x) -> np.ndarray:
     """Alternative (screw) coordinates of standard homogeneous points or lines (thesis 5.47).
 
+    Parameters
+    ----------
+    x : array_like, shape (..., 3)
+        Points ``[w, x, y]`` or lines in standard homogeneous coordinates.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        The same elements in the package's (screw) coordinates.
+
     Examples
     --------
     >>> from_standard([1.0, 1.0, 2.0])      # the point (1, 2)
@@ -752,6 +921,16 @@ def from_standard(x) -> np.ndarray:
 
 def conic_to_standard(C) -> np.ndarray:
     """A conic's matrix in standard coordinates, ``T C T`` (thesis 5.35, 5.47).
+
+    Parameters
+    ----------
+    C : array_like, shape (..., 3, 3)
+        Symmetric conic matrix in the package's coordinates.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        ``T C T`` with ``T`` of (5.47).
 
     Examples
     --------
@@ -766,6 +945,16 @@ def conic_to_standard(C) -> np.ndarray:
 
 def conic_from_standard(S) -> np.ndarray:
     """A conic's matrix in the package's coordinates from standard coordinates, ``T S T``.
+
+    Parameters
+    ----------
+    S : array_like, shape (..., 3, 3)
+        Symmetric conic matrix in standard coordinates.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        ``T S T`` with ``T`` of (5.47).
 
     Examples
     --------

@@ -74,6 +74,7 @@ class Contact:
     Parameters
     ----------
     kind : {"pin", "slider", "weld"}
+        Pin (1 dof: rotation), slider (1 dof: translation) or weld (0 dof).
     a : int
         Body index (``>= 0``), the ``+1`` column of ``G`` (Definition 42).
     b : int
@@ -87,6 +88,7 @@ class Contact:
     angle : float
         Slider and weld: the relative angle ``theta_a - theta_b`` kept by the contact.
     name : str
+        A label for drawings and messages.
 
     Examples
     --------
@@ -149,6 +151,23 @@ def validate_contacts(contacts, n_bodies: int) -> tuple[Contact, ...]:
     Raises :class:`~planargeo.errors.InputError` naming the contact for a
     non-:class:`Contact` entry or a body index out of range.
 
+    Parameters
+    ----------
+    contacts : iterable
+        Candidate contacts.
+    n_bodies : int
+        Number of bodies of the model.
+
+    Returns
+    -------
+    tuple of Contact
+        The contacts, checked.
+
+    Raises
+    ------
+    InputError
+        For an entry that is not a Contact or names a body out of range.
+
     Examples
     --------
     >>> validate_contacts([Contact("pin", 3, -1)], 2)
@@ -173,6 +192,18 @@ def contact_matrix(contacts, n_bodies: int) -> np.ndarray:
     Row ``k`` has ``+1`` in column ``a`` and ``-1`` in column ``b`` of contact
     ``k`` (no entry for the ground).
 
+    Parameters
+    ----------
+    contacts : sequence of Contact
+        The model's contacts (loop closures).
+    n_bodies : int
+        Number of bodies of the model.
+
+    Returns
+    -------
+    numpy.ndarray, shape (m, n_bodies)
+        ``G``, entries 0 and ±1.
+
     Examples
     --------
     >>> contact_matrix([Contact("pin", 3, 6), Contact("pin", 7, 8)], 9).astype(int)   # Fig 9.2
@@ -196,6 +227,20 @@ def _pose_of(pose, i):
 
 def world_point(pose, body: int, point) -> np.ndarray:
     """World coordinates of ``point`` given in ``body``'s frame (``body = -1``: world; the pose of 2.1-2.9).
+
+    Parameters
+    ----------
+    pose : array_like, shape (..., N, 3)
+        World poses ``(x, y, θ)`` of the N bodies (m, rad).
+    body : int
+        Body index, or ``-1`` for the world frame.
+    point : array_like, shape (2,)
+        The point in the body's frame (m).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 2)
+        World coordinates (m).
 
     Examples
     --------
@@ -237,6 +282,18 @@ def z_of(contact: Contact, pose) -> np.ndarray:
     body a); slider: the translation ``[dx, dy, 0]`` along the world sliding
     direction; weld: an empty (3, 0) array.
 
+    Parameters
+    ----------
+    contact : Contact
+        One contact.
+    pose : array_like, shape (..., N, 3)
+        World poses ``(x, y, θ)`` of the N bodies (m, rad).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, k)
+        Unit twists of the contact's freedoms (k = 1 pin or slider, 0 weld).
+
     Examples
     --------
     >>> c = Contact("slider", 0, -1, direction=(0.0, 1.0), angle=np.pi / 2)
@@ -274,6 +331,18 @@ def B_of(contact: Contact, pose) -> np.ndarray:
     contact's by **-90°**, as printed in the slider-crank example 9.87, so that
     ``ξ`` compares directly with 9.90 (the thesis uses both orientations).
 
+    Parameters
+    ----------
+    contact : Contact
+        One contact.
+    pose : array_like, shape (..., N, 3)
+        World poses ``(x, y, θ)`` of the N bodies (m, rad).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3-k)
+        Unit wrenches of the contact's reactions.
+
     Examples
     --------
     >>> c = Contact("slider", 0, -1, point_a=(0.5, 0.0), direction=(0.0, 1.0), angle=np.pi / 2)
@@ -307,6 +376,18 @@ def residual(contact: Contact, pose) -> np.ndarray:
     the point difference and the angle error (3).  Angle errors are wrapped
     to ``(-π, π]``.
 
+    Parameters
+    ----------
+    contact : Contact
+        One contact.
+    pose : array_like, shape (..., N, 3)
+        World poses ``(x, y, θ)`` of the N bodies (m, rad).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3-k)
+        Closure errors (m, rad).
+
     Examples
     --------
     >>> c = Contact("slider", 0, -1, direction=(0.0, 1.0))
@@ -336,6 +417,16 @@ def contact_bias(v_a, v_b) -> np.ndarray:
     ``v_a × (v_a - v_b) = v_b × (v_a - v_b)`` (a twist crossed with itself
     vanishes), so ``ν`` does not depend on which body carries ``z``.
 
+    Parameters
+    ----------
+    v_a, v_b : array_like, shape (..., 3)
+        World twists of the contact's two bodies (zero for the ground).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        ``ν = v_a × (v_a - v_b)``.
+
     Examples
     --------
     >>> contact_bias([0.0, 0.0, 2.0], [0.0, 0.0, 0.0])   # a pin at the origin: no bias
@@ -350,6 +441,23 @@ def contact_bias(v_a, v_b) -> np.ndarray:
 
 def stacked_contact_spaces(contacts, pose):
     """Block-diagonal ``z = {{z_k}}`` (3m×Σk) and ``B = {{B_k}}`` (3m×Σ(3-k)) for all contacts (thesis 9.54, 9.60).
+
+    Parameters
+    ----------
+    contacts : sequence of Contact
+        The model's contacts (loop closures).
+    pose : array_like, shape (..., N, 3)
+        World poses ``(x, y, θ)`` of the N bodies (m, rad).
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        ``(z, B)``, shapes (..., 3m, Σk) and (..., 3m, Σ(3-k)).
+
+    Raises
+    ------
+    ShapeError
+        If ``pose`` is not ``(..., N, 3)``.
 
     Examples
     --------

@@ -18,18 +18,18 @@ twists ordered ``[vx, vy, wz]`` and wrenches ``[fx, fy, tz]``.
 
 The reaction bases are chosen to be meaningful, as in thesis 4.8 / 5.63:
 
-============================  ==========================  =============================================
-kind (dof)                    ``s`` columns               ``R`` columns
-============================  ==========================  =============================================
-``revolute`` (1)              rotation about ``p``        unit forces through ``p`` along x, along y
-``prismatic`` (1)             translation along ``e``     unit force through ``p`` along ``e⊥``, couple
-``revolute_prismatic`` (2)    translation ``e``,          unit force through ``p`` along ``e⊥``
+============================  ==============================  =============================================
+kind (dof)                    ``s`` columns                   ``R`` columns
+============================  ==============================  =============================================
+``revolute`` (1)              rotation about ``p``            unit forces through ``p`` along x, along y
+``prismatic`` (1)             translation along ``e``         unit force through ``p`` along ``e⊥``, couple
+``revolute_prismatic`` (2)    translation ``e``,              unit force through ``p`` along ``e⊥``
                               rotation about ``p``
-``twin_prismatic`` (2)        translations ``e``, ``e⊥``  unit couple (the line at infinity)
-``plane`` (3)                 translations ``e``, ``e⊥``, (none)
+``twin_prismatic`` (2)        translations ``e``, ``e⊥``      unit couple (the line at infinity)
+``plane`` (3)                 translations ``e``, ``e⊥``,     (none)
                               rotation about ``p``
-``fixed`` (0)                 (none)                      unit forces through ``p`` along x, y, couple
-============================  ==========================  =============================================
+``fixed`` (0)                 (none)                          unit forces through ``p`` along x, y, couple
+============================  ==============================  =============================================
 
 (``e⊥ = (-e_y, e_x)``, the direction ``e`` turned by +90°, as in thesis 5.63.)
 The ``revolute_prismatic`` columns follow the thesis's order (4.74):
@@ -103,6 +103,7 @@ def motion_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
     Parameters
     ----------
     kind : {"revolute", "prismatic", "revolute_prismatic", "twin_prismatic", "plane", "fixed"}
+        Joint kind (:data:`KINDS`).
     point : array_like, shape (..., 2)
         The joint's pivot (revolute), a point on the slide (prismatic), the
         joint frame's origin (plane, twin prismatic: its ``s`` and ``R`` do
@@ -303,6 +304,7 @@ class JointSpace:
     Attributes
     ----------
     kind : str
+        Joint kind: revolute, prismatic, revolute_prismatic, twin_prismatic, plane or fixed.
     point : ndarray, shape (2,)
         Pivot / point on the slide / joint-frame origin / weld point.
     direction : ndarray, shape (2,) or None
@@ -313,6 +315,13 @@ class JointSpace:
         Reaction space, unit wrenches at the origin, ``s.T @ R == 0``.
     dof : int
         ``k``.
+
+    Raises
+    ------
+    InputError
+        For an unknown ``kind``.
+    ShapeError
+        If ``point`` or ``direction`` does not have shape (2,).
 
     Examples
     --------
@@ -439,6 +448,16 @@ def revolute(point=(0.0, 0.0)) -> JointSpace:
     One joint: ``point`` of shape ``(2,)`` (like every joint constructor;
     :func:`motion_space` / :func:`reaction_space` broadcast).
 
+    Parameters
+    ----------
+    point : array_like, shape (2,), optional
+        A point of the joint (m); default the origin.
+
+    Returns
+    -------
+    JointSpace
+        ``s = [y, -x, 1]``, ``R`` = unit forces along x and y through the point.
+
     Examples
     --------
     >>> revolute((0.0, 0.0)).s.ravel()          # thesis 4.64
@@ -452,6 +471,18 @@ def prismatic(direction=(1.0, 0.0), point=(0.0, 0.0)) -> JointSpace:
 
     One joint: ``direction`` and ``point`` of shape ``(2,)``.
 
+    Parameters
+    ----------
+    direction : array_like, shape (2,), optional
+        Sliding direction (non-zero); default +x.
+    point : array_like, shape (2,), optional
+        A point of the joint (m); default the origin.
+
+    Returns
+    -------
+    JointSpace
+        ``s = [dx, dy, 0]`` (unit), ``R`` = the normal force through the point and a couple.
+
     Examples
     --------
     >>> np.round(prismatic((1.0, 1.0)).s.ravel(), 4)
@@ -464,6 +495,18 @@ def revolute_prismatic(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Two-dof pin-in-slot joint: slide along ``direction``, turn about ``point`` (thesis 4.74).
 
     One joint: ``point`` and ``direction`` of shape ``(2,)``.
+
+    Parameters
+    ----------
+    point : array_like, shape (2,), optional
+        A point of the joint (m); default the origin.
+    direction : array_like, shape (2,), optional
+        Sliding direction (non-zero); default +x.
+
+    Returns
+    -------
+    JointSpace
+        Two columns of ``s`` (slide, turn), one of ``R`` (the normal force through the point).
 
     Examples
     --------
@@ -490,6 +533,18 @@ def twin_prismatic(direction=(1.0, 0.0), point=(0.0, 0.0)) -> JointSpace:
     In a model it is the joint kind ``"twin_prismatic"`` of :class:`planargeo.mechanics.model.Joint`
     (two dofs, slid by ``(q[0], q[1])`` along ``e`` and ``e⊥``, not rotated; the same
     columns as :func:`planargeo.mechanics.kinematics.joint_axes`).
+
+    Parameters
+    ----------
+    direction : array_like, shape (2,), optional
+        Sliding direction (non-zero); default +x.
+    point : array_like, shape (2,), optional
+        A point of the joint (m); default the origin.
+
+    Returns
+    -------
+    JointSpace
+        ``s = [e, e⊥]``, ``R = [0, 0, 1]``.
 
     Examples
     --------
@@ -519,6 +574,18 @@ def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     and ``direction`` of shape ``(2,)``.  Thesis 4.8.4's 2-dof "plane joint"
     (4.79, no rotation) is :func:`twin_prismatic`.
 
+    Parameters
+    ----------
+    point : array_like, shape (2,), optional
+        A point of the joint (m); default the origin.
+    direction : array_like, shape (2,), optional
+        Sliding direction (non-zero); default +x.
+
+    Returns
+    -------
+    JointSpace
+        Three columns of ``s``, empty ``R``.
+
     Examples
     --------
     >>> plane().s
@@ -535,6 +602,16 @@ def fixed(point=(0.0, 0.0)) -> JointSpace:
     """Weld (0-dof) at ``point``: ``s`` is empty, ``R`` = forces through ``point`` along x, y and a couple (thesis 6.10).
 
     One joint: ``point`` of shape ``(2,)``.
+
+    Parameters
+    ----------
+    point : array_like, shape (2,), optional
+        A point of the joint (m); default the origin.
+
+    Returns
+    -------
+    JointSpace
+        Empty ``s``, three columns of ``R``.
 
     Examples
     --------

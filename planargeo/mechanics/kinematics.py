@@ -38,6 +38,18 @@ __all__ = ["kinematics", "check_state", "cross_motion", "cross_force", "joint_ax
 def cross_motion(v: np.ndarray, u: np.ndarray) -> np.ndarray:
     """``v × u`` for twists (thesis 2.16 projected; same as ``crm(v) @ u``).
 
+    Parameters
+    ----------
+    v : numpy.ndarray, shape (..., 3)
+        Twist.
+    u : numpy.ndarray, shape (..., 3)
+        Twist carried by ``v``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        ``v × u``.
+
     Examples
     --------
     >>> cross_motion(np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]))
@@ -53,6 +65,18 @@ def cross_motion(v: np.ndarray, u: np.ndarray) -> np.ndarray:
 
 def cross_force(v: np.ndarray, f: np.ndarray) -> np.ndarray:
     """``v ×* f = -(v×)^T f`` for a twist ``v`` and a wrench ``f`` (thesis 3.8, 3.11).
+
+    Parameters
+    ----------
+    v : numpy.ndarray, shape (..., 3)
+        Twist.
+    f : numpy.ndarray, shape (..., 3)
+        Wrench carried by ``v``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        ``v ×* f``.
 
     Examples
     --------
@@ -100,6 +124,28 @@ def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None, fin
     zeros (returned as float64 zeros of shape ``(nq,)``); ``f_ext`` ``None`` is no
     external load (returned as ``None``).  ``finite=False`` leaves out the test for NaN
     and infinity (for a caller that makes it itself, as the compiled kernels do).
+
+    Parameters
+    ----------
+    model : Model
+        The mechanism.
+    q : array_like, shape (..., nq)
+        Joint coordinates (m or rad each).
+    qd : array_like, shape (..., nq), optional
+        Joint velocities; None is zero.
+    tau : array_like, shape (..., nq), optional
+        Joint forces/torques (N or N·m); None is zero.
+    f_ext : array_like, shape (..., N, 3), optional
+        External world wrenches at the origin, one per body.
+    qdd : array_like, shape (..., nq), optional
+        Joint accelerations; None is zero.
+    finite : bool, optional
+        Check for NaN and infinity (default True).
+
+    Returns
+    -------
+    tuple
+        ``(q, qd, tau, f_ext, qdd, batch_shape)`` as float64 arrays (``f_ext`` may be None).
 
     Raises
     ------
@@ -167,6 +213,27 @@ def joint_axes(kind: str, ox, oy, phi, qi):
     arrays (..., 3): the unit twists at the origin (4.10, 5.51, 5.62; the
     twin prismatic joint's two translations are 4.79 turned by ``phi``).
 
+    Parameters
+    ----------
+    kind : str
+        Joint kind (see :data:`planargeo.mechanics.model.JOINT_DOFS`).
+    ox, oy : array_like, shape (...)
+        World position of the joint frame (m).
+    phi : array_like, shape (...)
+        World angle of the joint frame (rad).
+    qi : numpy.ndarray, shape (..., k)
+        The joint's coordinates.
+
+    Returns
+    -------
+    tuple
+        ``(cols, (x, y, theta))``: k twists (..., 3) and the body's world pose.
+
+    Raises
+    ------
+    AssertionError
+        For an unknown kind (never reached: :class:`~planargeo.mechanics.model.Joint` validates kinds).
+
     Examples
     --------
     >>> cols, pose = joint_axes("twin_prismatic", 1.0, 2.0, np.pi / 2, np.array([0.5, 0.25]))
@@ -209,6 +276,7 @@ def kinematics(model: Model, q, qd=None, f_ext=None) -> Data:
     Parameters
     ----------
     model : Model
+        The mechanism (bodies, joints, parents, gravity).
     q : array_like (..., nq)
         Joint coordinates.
     qd : array_like (..., nq), optional

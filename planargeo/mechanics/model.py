@@ -92,6 +92,7 @@ class Body:
     shape : shapely geometry or None
         Outline in the body frame, for drawings only.
     name : str
+        A label for drawings and messages.
 
     Examples
     --------
@@ -126,7 +127,20 @@ class Body:
             raise InputError(f"name must be a string, got {self.name!r}")
 
     def spatial_inertia(self) -> np.ndarray:
-        """The 3×3 inertia at the body-frame origin (thesis 4.58, 5.64)."""
+        """The 3×3 inertia at the body-frame origin (thesis 4.58, 5.64).
+
+        Returns
+        -------
+        numpy.ndarray, shape (3, 3)
+            ``inertia_matrix(mass, com, inertia)``.
+
+        Examples
+        --------
+        >>> Body(2.0, (1.0, 0.0), 0.5).spatial_inertia()      # J + m |c|² = 0.5 + 2
+        array([[2. , 0. , 0. ],
+               [0. , 2. , 2. ],
+               [0. , 2. , 2.5]])
+        """
         from planargeo.screws.twists import inertia_matrix
 
         return inertia_matrix(self.mass, self.com, self.inertia)
@@ -145,6 +159,7 @@ class Joint:
         Pose of the joint frame in the parent body's frame (world frame when
         the parent is the ground).
     name : str
+        A label for drawings and messages.
 
     Examples
     --------
@@ -255,6 +270,7 @@ class Model:
     Parameters
     ----------
     bodies : sequence of Body
+        The bodies, in an order where each parent comes before its children.
     joints : sequence of Joint
         ``joints[i]`` connects body ``i`` to ``parents[i]``.
     parents : sequence of int
@@ -325,18 +341,72 @@ class Model:
 
     # -- structure -------------------------------------------------------
     def q_slice(self, i: int) -> slice:
-        """Slice of ``q`` holding joint ``i``'s coordinates."""
+        """Slice of ``q`` holding joint ``i``'s coordinates.
+
+        Parameters
+        ----------
+        i : int
+            Body (joint) index.
+
+        Returns
+        -------
+        slice
+            Its coordinates in ``q``.
+
+        Raises
+        ------
+        InputError
+            If ``i`` is not a body index.
+
+        Examples
+        --------
+        >>> chain_model(3).q_slice(1)
+        slice(1, 2, None)
+        """
         if not -self.N <= i < self.N:
             raise InputError(f"i must be a body index in 0..{self.N - 1}, got {i}")
         i %= self.N
         return slice(self.q_offsets[i], self.q_offsets[i + 1])
 
     def children(self, i: int) -> tuple[int, ...]:
-        """Bodies whose parent is ``i`` (``-1``: bodies on the ground)."""
+        """Bodies whose parent is ``i`` (``-1``: bodies on the ground).
+
+        Parameters
+        ----------
+        i : int
+            Body index, or ``-1`` for the ground.
+
+        Returns
+        -------
+        tuple of int
+            The children's indices, in order.
+
+        Examples
+        --------
+        >>> m = chain_model(3)
+        >>> m.children(-1), m.children(0), m.children(2)
+        ((0,), (1,), ())
+        """
         return tuple(k for k, p in enumerate(self.parents) if p == i)
 
     def ancestors(self, i: int) -> tuple[int, ...]:
-        """Bodies on the path from the ground to ``i`` (inclusive), root first."""
+        """Bodies on the path from the ground to ``i`` (inclusive), root first.
+
+        Parameters
+        ----------
+        i : int
+            Body index.
+
+        Returns
+        -------
+        tuple of int
+            The path, root first, ``i`` last.
+
+        Examples
+        --------
+        >>> chain_model(3).ancestors(2)
+        (0, 1, 2)
+        """
         path = []
         while i != -1:
             path.append(i)
@@ -355,7 +425,18 @@ class Model:
 
     # -- cached numeric arrays (used by the algorithms) -------------------
     def arrays(self) -> dict:
-        """Read-only numeric arrays of the model (cached): masses, coms, inertias, placements, parents."""
+        """Read-only numeric arrays of the model (cached): masses, coms, inertias, placements, parents.
+
+        Returns
+        -------
+        dict of str to numpy.ndarray
+            The cached arrays (read-only).
+
+        Examples
+        --------
+        >>> sorted(chain_model(3).arrays())
+        ['J', 'com', 'mass', 'parents', 'placement']
+        """
         a = self._arrays
         if "mass" not in a:
             a["mass"] = np.array([b.mass for b in self.bodies])
@@ -369,6 +450,11 @@ class Model:
 
     def ancestor_mask(self) -> np.ndarray:
         """``mask[i, c]``: whether coordinate ``c`` moves body ``i`` (its joint is on the path to ``i``); cached, read-only.
+
+        Returns
+        -------
+        numpy.ndarray of bool, shape (N, nq)
+            The mask.
 
         Examples
         --------
@@ -389,7 +475,23 @@ class Model:
         return a["ancestor_mask"]
 
     def with_gravity(self, gravity) -> "Model":
-        """A copy with another gravity vector."""
+        """A copy with another gravity vector.
+
+        Parameters
+        ----------
+        gravity : array_like, shape (2,)
+            Gravitational acceleration ``(gx, gy)`` (m/s²).
+
+        Returns
+        -------
+        Model
+            The copy.
+
+        Examples
+        --------
+        >>> chain_model(3).with_gravity((0.0, 0.0)).gravity
+        (0.0, 0.0)
+        """
         return Model(self.bodies, self.joints, self.parents, gravity, self.contacts)
 
 
@@ -403,7 +505,9 @@ class Data:
     Attributes
     ----------
     model : Model
+        The mechanism the state belongs to.
     q, qd : ndarray (..., nq)
+        Joint coordinates and velocities of the state.
     pose : ndarray (..., N, 3)
         World pose ``(x, y, theta)`` of each body frame.
     com : ndarray (..., N, 2)
@@ -429,11 +533,47 @@ class Data:
         self.model = model
 
     def s(self, i: int) -> np.ndarray:
-        """Joint ``i``'s world-frame motion space, shape (..., 3, k)."""
+        """Joint ``i``'s world-frame motion space, shape (..., 3, k).
+
+        Parameters
+        ----------
+        i : int
+            Body (joint) index.
+
+        Returns
+        -------
+        numpy.ndarray, shape (..., 3, k)
+            The joint's world motion space.
+
+        Examples
+        --------
+        >>> from planargeo.mechanics.kinematics import kinematics
+        >>> kinematics(chain_model(3), [0.0, 0.0, 0.0]).s(1)[:, 0]     # a pin at (1, 0): the point [0, -1, 1]
+        array([ 0., -1.,  1.])
+        """
         return self.S[..., :, self.model.q_slice(i)]
 
     def jacobian(self, i: int) -> np.ndarray:
-        """Body ``i``'s Jacobian (..., 3, nq): ``v_i = J_i qd`` (thesis Remark 8)."""
+        """Body ``i``'s Jacobian (..., 3, nq): ``v_i = J_i qd`` (thesis Remark 8).
+
+        Parameters
+        ----------
+        i : int
+            Body index.
+
+        Returns
+        -------
+        numpy.ndarray, shape (..., 3, nq)
+            Columns of the joints on the path to ``i``, zero elsewhere.
+
+        Examples
+        --------
+        >>> from planargeo.mechanics.kinematics import kinematics
+        >>> kinematics(chain_model(3), [0.0, 0.0, 0.0]).jacobian(1) + 0.0    # joint 2 does not move body 1
+        array([[ 0.,  0.,  0.],
+               [ 0., -1.,  0.],
+               [ 1.,  1.,  0.]])
+        """
         return self.S * self.model.ancestor_mask()[i]
 
     @property
@@ -488,6 +628,7 @@ def chain_model(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str =
     joint : str
         The kind of every joint (see :class:`Joint`).
     gravity : (gx, gy)
+        Gravitational acceleration ``(gx, gy)`` (m/s²).
     allow_large : bool
         Allow more than :data:`MAX_BODIES` links.
 
@@ -533,6 +674,31 @@ def random_model(n: int, seed=None, *, kinds=("revolute", "prismatic"), tree: bo
     With ``tree=True`` each body's parent is drawn uniformly among the earlier
     bodies and the ground; otherwise the model is a chain.  ``n`` is limited as in
     :func:`chain_model`.
+
+    Parameters
+    ----------
+    n : int
+        Number of bodies (``1 <= n <= MAX_BODIES`` unless ``allow_large``).
+    seed : int or numpy.random.Generator, optional
+        Random seed (non-negative) or generator.
+    kinds : sequence of str, optional
+        Joint kinds to draw from.
+    tree : bool, optional
+        Draw a tree instead of a chain.
+    gravity : array_like, shape (2,), optional
+        Gravity (m/s²).
+    allow_large : bool, optional
+        Lift the ``MAX_BODIES`` limit.
+
+    Returns
+    -------
+    Model
+        Bodies of mass 0.5-2 kg with random centres, inertias and joint placements.
+
+    Raises
+    ------
+    InputError
+        For a bad ``n``, ``tree``, ``kinds`` or ``seed``.
 
     Examples
     --------

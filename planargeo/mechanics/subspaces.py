@@ -105,6 +105,11 @@ def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
     float
         ``‖A‖_F ‖s‖² / σ_min``; ``inf`` when ``σ_min = 0``.
 
+    Raises
+    ------
+    InputError
+        If a squared norm is negative.
+
     Examples
     --------
     A unit point mass at distance ``d = 1e-6`` from its pivot ``P``:
@@ -135,6 +140,20 @@ def joint_scale(A, s, point):
     Scale-safe: where the squares of the entries would overflow or underflow (masses
     like ``1e160`` or ``1e-170``), the norm is taken of ``A_P`` divided by its largest
     entry and scaled back (the rule is scale invariant).
+
+    Parameters
+    ----------
+    A : array_like, shape (..., 3, 3)
+        Articulated inertia at the origin.
+    s : array_like, shape (..., 3, k)
+        Joint motion space (k unit twists as columns).
+    point : array_like, shape (..., 2)
+        The joint's point ``P`` (m).
+
+    Raises
+    ------
+    ShapeError
+        If ``s`` is not ``(..., 3, k)``.
 
     Returns
     -------
@@ -207,6 +226,26 @@ def _joint_scale_one(A, cols, x, y):
 
 def singular_joint_error(i: int, cond: float) -> SingularConfigurationError:
     """The error every method raises for a singular joint ``i`` (message and ``.cond`` shared).
+
+    Parameters
+    ----------
+    i : int
+        Joint index.
+    cond : float
+        Its condition number.
+
+    Returns
+    -------
+    SingularConfigurationError
+        The error (not raised).
+
+    Raises
+    ------
+    InputError
+        If ``i`` is not an int.
+
+    Examples
+    --------
 
     >>> str(singular_joint_error(3, 2e12))
     'sᵀAs of joint 3 is singular: the inertia has (almost) nothing along s (condition number 2e+12)'
@@ -572,6 +611,18 @@ def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
 def active_force(s, f) -> np.ndarray:
     """Active (joint) force ``Q = sᵀ f`` (thesis 6.61a, 6.51).
 
+    Parameters
+    ----------
+    s : array_like, shape (..., 3, k)
+        Joint motion space (k unit twists as columns).
+    f : array_like, shape (..., 3)
+        Wrench.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., k)
+        ``Q = sᵀ f``.
+
     Examples
     --------
     >>> active_force([0.0, 0.0, 1.0], [1.0, 2.0, 3.0])   # the moment about the pivot
@@ -583,6 +634,18 @@ def active_force(s, f) -> np.ndarray:
 @overflow_checked("U or f")
 def reaction_force(U, f) -> np.ndarray:
     """Reaction-force components ``μ = Uᵀ f`` (thesis 6.61b, 6.54).
+
+    Parameters
+    ----------
+    U : array_like, shape (..., 3, 3-k)
+        The joint's ``U = I⁻¹R (RᵀI⁻¹R)⁻¹`` (:func:`U_of`, 6.37).
+    f : array_like, shape (..., 3)
+        Wrench.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3-k)
+        ``μ = Uᵀ f``.
 
     Examples
     --------
@@ -596,6 +659,18 @@ def reaction_force(U, f) -> np.ndarray:
 def active_acceleration(T, a) -> np.ndarray:
     """Active (absolute joint) acceleration ``ψ = Tᵀ a`` (thesis 6.62b, 6.57).
 
+    Parameters
+    ----------
+    T : array_like, shape (..., 3, k)
+        The joint's ``T = I s (sᵀIs)⁻¹`` (:func:`T_of`, 6.36).
+    a : array_like, shape (..., 3)
+        Acceleration twist.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., k)
+        ``ψ = Tᵀ a``.
+
     Examples
     --------
     >>> active_acceleration([0.0, 0.8, 1.0], [0.0, 0.0, 2.0])
@@ -607,6 +682,18 @@ def active_acceleration(T, a) -> np.ndarray:
 @overflow_checked("R or a")
 def reactive_acceleration(R, a) -> np.ndarray:
     """Reactive-acceleration components ``γ = Rᵀ a`` (thesis 6.62a, 6.60).
+
+    Parameters
+    ----------
+    R : array_like, shape (..., 3, 3-k)
+        Joint reaction space (wrenches reciprocal to ``s``).
+    a : array_like, shape (..., 3)
+        Acceleration twist.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3-k)
+        ``γ = Rᵀ a``.
 
     Examples
     --------
@@ -623,6 +710,20 @@ def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 
     ``T sᵀ f`` is the active part ``T Q`` of a wrench, ``R Uᵀ f`` its reaction
     part ``R μ`` (6.38, 6.61).
+
+    Parameters
+    ----------
+    A : array_like, shape (..., 3, 3)
+        Symmetric positive definite (articulated) inertia at the origin.
+    s : array_like, shape (..., 3, k)
+        Joint motion space (k unit twists as columns).
+    R : array_like, shape (..., 3, 3-k)
+        Joint reaction space (wrenches reciprocal to ``s``).
+
+    Returns
+    -------
+    tuple of numpy.ndarray, each shape (..., 3, 3)
+        ``(T sᵀ, R Uᵀ)``.
 
     Examples
     --------
@@ -642,6 +743,20 @@ def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 
     ``s Tᵀ a = s ψ`` is the joint part of an acceleration, ``U Rᵀ a = U γ``
     its reactive part (6.44, 6.62; ``U Rᵀ`` is the projection of 6.108).
+
+    Parameters
+    ----------
+    A : array_like, shape (..., 3, 3)
+        Symmetric positive definite (articulated) inertia at the origin.
+    s : array_like, shape (..., 3, k)
+        Joint motion space (k unit twists as columns).
+    R : array_like, shape (..., 3, 3-k)
+        Joint reaction space (wrenches reciprocal to ``s``).
+
+    Returns
+    -------
+    tuple of numpy.ndarray, each shape (..., 3, 3)
+        ``(s Tᵀ, U Rᵀ)``.
 
     Examples
     --------
@@ -664,6 +779,18 @@ def joint_space_inertia(I, s) -> np.ndarray:
     semi-definite (:class:`~planargeo.errors.SingularInertiaError` naming ``I``);
     it may be singular.
 
+    Parameters
+    ----------
+    I : array_like, shape (..., 3, 3)
+        Symmetric inertia (rigid or articulated) at the origin.
+    s : array_like, shape (..., 3, k)
+        Joint motion space (k unit twists as columns).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., k, k)
+        ``sᵀ I s``.
+
     Examples
     --------
     >>> from planargeo.screws.twists import inertia_matrix
@@ -684,6 +811,18 @@ def reaction_space_inverse_inertia(I, R) -> np.ndarray:
     eigenvalue or a singular ``I`` raises
     :class:`~planargeo.errors.SingularInertiaError` naming ``I``.
 
+    Parameters
+    ----------
+    I : array_like, shape (..., 3, 3)
+        Symmetric inertia (rigid or articulated) at the origin.
+    R : array_like, shape (..., 3, 3-k)
+        Joint reaction space (wrenches reciprocal to ``s``).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3-k, 3-k)
+        ``Rᵀ I⁻¹ R``.
+
     Examples
     --------
     >>> reaction_space_inverse_inertia(np.diag([2.0, 2.0, 1.0]), [[1.0], [0.0], [0.0]])
@@ -703,6 +842,15 @@ def inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     effective inertia of the joint base (6.97), see :func:`effective_base_inertia`.
     ``I`` must be symmetric positive definite (``U`` needs ``I⁻¹``) unless
     the joint is free (``k = 3``); errors as for :class:`Decomposition`.
+
+    Parameters
+    ----------
+    I : array_like, shape (..., 3, 3)
+        Symmetric inertia (rigid or articulated) at the origin.
+    s : array_like, shape (..., 3, k)
+        Joint motion space (k unit twists as columns).
+    R : array_like, shape (..., 3, 3-k)
+        Joint reaction space (wrenches reciprocal to ``s``).
 
     Returns
     -------
@@ -730,6 +878,20 @@ def inverse_inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     ``s Tᵀ I⁻¹ = s (sᵀIs)⁻¹ sᵀ`` and ``U Rᵀ I⁻¹ = I⁻¹R (RᵀI⁻¹R)⁻¹ RᵀI⁻¹``.
     ``I`` must be symmetric positive definite; errors as for :class:`Decomposition`.
 
+    Parameters
+    ----------
+    I : array_like, shape (..., 3, 3)
+        Symmetric inertia (rigid or articulated) at the origin.
+    s : array_like, shape (..., 3, k)
+        Joint motion space (k unit twists as columns).
+    R : array_like, shape (..., 3, 3-k)
+        Joint reaction space (wrenches reciprocal to ``s``).
+
+    Returns
+    -------
+    tuple of numpy.ndarray, each shape (..., 3, 3)
+        ``(s Tᵀ I⁻¹, U Rᵀ I⁻¹)``.
+
     Examples
     --------
     >>> Ma, Mb = inverse_inertia_decomposition(np.diag([2.0, 2.0, 4.0]), [0.0, 0.0, 1.0],
@@ -756,6 +918,20 @@ def effective_mobility(I, s, *, what: str | None = None) -> np.ndarray:
     semi-definite (:class:`~planargeo.errors.SingularInertiaError` naming ``I``);
     singular ``sᵀIs`` raises :class:`~planargeo.errors.SingularConfigurationError`.
 
+    Parameters
+    ----------
+    I : array_like, shape (..., 3, 3)
+        Symmetric inertia (rigid or articulated) at the origin.
+    s : array_like, shape (..., 3, k)
+        Joint motion space (k unit twists as columns).
+    what : str, optional
+        Name of ``sᵀIs`` in the singularity error's message.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        ``s (sᵀIs)⁻¹ sᵀ``.
+
     Examples
     --------
     >>> from planargeo.screws.twists import inertia_matrix
@@ -777,6 +953,18 @@ def effective_base_inertia(I, R) -> np.ndarray:
     ``I`` must be symmetric positive definite
     (:class:`~planargeo.errors.InputError` / :class:`~planargeo.errors.SingularInertiaError`
     naming ``I``).
+
+    Parameters
+    ----------
+    I : array_like, shape (..., 3, 3)
+        Symmetric inertia (rigid or articulated) at the origin.
+    R : array_like, shape (..., 3, 3-k)
+        Joint reaction space (wrenches reciprocal to ``s``).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        ``R (RᵀI⁻¹R)⁻¹ Rᵀ`` (zero for an empty ``R``).
 
     Examples
     --------
@@ -823,6 +1011,7 @@ class Decomposition:
     Attributes
     ----------
     A, s, R : ndarray
+        Inertia (3, 3), joint motion space (3, k) and reaction space (3, 3-k), at the origin; batches broadcast.
     T : ndarray, shape (..., 3, k)
         Percussion space (6.39, :func:`T_of`).
     U : ndarray, shape (..., 3, 3 - k)
@@ -854,11 +1043,36 @@ class Decomposition:
 
     @classmethod
     def from_joint(cls, A, joint, *, name: str = "A") -> "Decomposition":
-        """Build from a :class:`planargeo.mechanics.joints.JointSpace` (its ``s`` and ``R``, thesis 5.63, 6.1)."""
+        """Build from a :class:`planargeo.mechanics.joints.JointSpace` (its ``s`` and ``R``, thesis 5.63, 6.1).
+
+        Parameters
+        ----------
+        A : array_like, shape (..., 3, 3)
+            Symmetric positive definite (articulated) inertia at the origin.
+        joint : JointSpace
+            The joint.
+        name : str, optional
+            Name of ``A`` in error messages.
+
+        Returns
+        -------
+        Decomposition
+            ``Decomposition(A, joint.s, joint.R)``.
+        """
         return cls(A, joint.s, joint.R, name=name)
 
     def split_wrench(self, f) -> tuple[np.ndarray, np.ndarray]:
         """``(Q, μ) = (sᵀf, Uᵀf)`` so that ``f = T Q + R μ`` (thesis 6.38, 6.61).
+
+        Parameters
+        ----------
+        f : array_like, shape (..., 3)
+            Wrench.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            ``Q`` (..., k) and ``μ`` (..., 3-k).
 
         Examples
         --------
@@ -881,6 +1095,18 @@ class Decomposition:
     def join_wrench(self, Q, mu) -> np.ndarray:
         """``f = T Q + R μ`` (thesis 6.38).
 
+        Parameters
+        ----------
+        Q : numpy.ndarray, shape (..., k)
+            Active force.
+        mu : numpy.ndarray, shape (..., 3-k)
+            Reaction components.
+
+        Returns
+        -------
+        numpy.ndarray, shape (..., 3)
+            ``f``.
+
         Examples
         --------
         The pendulum of :meth:`split_wrench`: ``T = [0, 0.8, 1]`` (the wrench
@@ -902,6 +1128,16 @@ class Decomposition:
     def split_twist(self, a) -> tuple[np.ndarray, np.ndarray]:
         """``(ψ, γ) = (Tᵀa, Rᵀa)`` so that ``a = s ψ + U γ`` (thesis 6.44, 6.62).
 
+        Parameters
+        ----------
+        a : array_like, shape (..., 3)
+            Acceleration twist.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            ``ψ`` (..., k) and ``γ`` (..., 3-k).
+
         Examples
         --------
         The pendulum of :meth:`split_wrench` translated upwards at unit
@@ -921,6 +1157,18 @@ class Decomposition:
 
     def join_twist(self, psi, gamma) -> np.ndarray:
         """``a = s ψ + U γ`` (thesis 6.44).
+
+        Parameters
+        ----------
+        psi : numpy.ndarray, shape (..., k)
+            Joint accelerations.
+        gamma : numpy.ndarray, shape (..., 3-k)
+            Reactive components.
+
+        Returns
+        -------
+        numpy.ndarray, shape (..., 3)
+            ``a``.
 
         Examples
         --------

@@ -95,6 +95,18 @@ def register(name: str, limits: dict[str, tuple[int, str]] | None = None):
     ``limits`` maps a size parameter (a positive integer such as a number of links) to its
     largest value and what that costs, e.g. ``{"n": (200, "about 0.5 s")}``: :func:`build`
     refuses larger values unless asked with ``allow_big=True``.
+
+    Parameters
+    ----------
+    name : str
+        The scene's name.
+    limits : dict, optional
+        ``{parameter: (largest value, cost)}``.
+
+    Returns
+    -------
+    callable
+        The decorator; it returns the scene function unchanged.
     """
 
     def deco(fn):
@@ -117,13 +129,45 @@ def _load() -> None:
 
 
 def names() -> list[str]:
-    """Registered scene names."""
+    """Registered scene names.
+
+    Returns
+    -------
+    list of str
+        In registration order.
+
+    Examples
+    --------
+    >>> "slider-crank" in names(), "no-such-scene" in names()
+    (True, False)
+    """
     _load()
     return list(_REGISTRY)
 
 
 def get(name: str) -> Callable[..., SceneResult]:
-    """The scene function registered as ``name``; :class:`SceneError` if unknown."""
+    """The scene function registered as ``name``; :class:`SceneError` if unknown.
+
+    Parameters
+    ----------
+    name : str
+        A registered scene name (see :func:`names`).
+
+    Returns
+    -------
+    callable
+        The scene function.
+
+    Raises
+    ------
+    SceneError
+        If ``name`` is not registered.
+
+    Examples
+    --------
+    >>> get("two-body").__name__
+    'two_body'
+    """
     _load()
     try:
         return _REGISTRY[name]
@@ -132,13 +176,42 @@ def get(name: str) -> Callable[..., SceneResult]:
 
 
 def parameters(name: str) -> dict[str, Any]:
-    """The scene's parameters and their defaults."""
+    """The scene's parameters and their defaults.
+
+    Parameters
+    ----------
+    name : str
+        A registered scene name (see :func:`names`).
+
+    Returns
+    -------
+    dict
+        ``{parameter: default}``.
+
+    Examples
+    --------
+    >>> parameters("two-body")
+    {'m': 1.0, 'rho': 0.5, 'L': 1.0, 'phi': 0.7853981633974483}
+    """
     sig = inspect.signature(get(name))
     return {k: p.default for k, p in sig.parameters.items()}
 
 
 def limits(name: str) -> dict[str, int]:
     """The scene's size limits ``{parameter: largest value}`` (see :func:`build`).
+
+    Parameters
+    ----------
+    name : str
+        A registered scene name (see :func:`names`).
+
+    Returns
+    -------
+    dict of str to int
+        ``{parameter: largest value}``; empty for a scene without limits.
+
+    Examples
+    --------
 
     >>> limits("chain")
     {'n': 200}
@@ -153,10 +226,16 @@ def build(name: str, *, allow_big: bool = False, **params) -> SceneResult:
     Parameters
     ----------
     name : str
+        A registered scene (:func:`names`).
     allow_big : bool
         Lift the size limits (:func:`limits`), for a deliberate big job.
     **params
         The scene's parameters (:func:`parameters`).
+
+    Returns
+    -------
+    SceneResult
+        The scene's parameters, model, state, solved quantities and extras.
 
     Raises
     ------
@@ -223,6 +302,16 @@ def _fmt(v) -> str:
 
 def non_finite(result: SceneResult) -> list[str]:
     """Names (``section.key``) of the parameters, state and quantities of ``result`` holding NaN or infinity.
+
+    Parameters
+    ----------
+    result : SceneResult
+        A built scene.
+
+    Returns
+    -------
+    list of str
+        The offending names; empty when all is finite.
 
     Examples
     --------

@@ -109,6 +109,11 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
         ``q = [0]``, ``qd = [ω]``, ``tau = [0]`` and ``f_ext = [f_A]``, so any
         forward-dynamics function reproduces ``omega_dot``.
 
+    Raises
+    ------
+    SceneError
+        For a parameter out of range (e.g. ``outlines`` not a bool).
+
     Examples
     --------
     >>> res = car()

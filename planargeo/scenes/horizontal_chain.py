@@ -39,7 +39,24 @@ __all__ = ["horizontal_chain", "horizontal_chain_model", "effective_centre"]
 
 
 def horizontal_chain_model(n: int, m: float, rho: float, L: float) -> Model:
-    """``n`` identical bodies in line along +x on revolute joints ``L`` apart, no gravity."""
+    """``n`` identical bodies in line along +x on revolute joints ``L`` apart, no gravity.
+
+    Parameters
+    ----------
+    n : int
+        Number of bodies.
+    m : float
+        Mass of each body (kg).
+    rho : float
+        Radius of gyration of each body (m).
+    L : float
+        Joint spacing (m).
+
+    Returns
+    -------
+    Model
+        The chain, without gravity.
+    """
     bodies = [Body(m, (L / 2, 0.0), m * rho * rho, name=f"body {i + 1}") for i in range(n)]
     joints = [Joint("revolute", (0.0 if i == 0 else L, 0.0, 0.0), name=f"CJ{i + 1}") for i in range(n)]
     return Model(bodies, joints, list(range(-1, n - 1)), gravity=(0.0, 0.0))
@@ -49,6 +66,16 @@ def effective_centre(A) -> tuple[float, float, float, float]:
     """``(d, m_x, m_y, A_z)`` of an inertia symmetric about the x axis (thesis 7.26).
 
     ``d`` is where the inertia becomes diagonal on the x axis.
+
+    Parameters
+    ----------
+    A : array_like, shape (3, 3)
+        An inertia symmetric about the x axis.
+
+    Returns
+    -------
+    tuple of float
+        ``(d, m_x, m_y, A_z)``: the centre on the x axis (m), the two masses (kg) and the rotational inertia there (kg·m²).
 
     Examples
     --------

@@ -46,7 +46,24 @@ __all__ = ["slider_crank", "slider_crank_model", "slider_crank_solve", "slider_c
 
 
 def slider_crank_model(m1=0.40, m2=0.15, m3=0.30, r=2.29, l=5.00, t=0.5, g=9.81):
-    """The slider-crank :class:`~planargeo.mechanics.model.Model` (tree + one slider contact) of thesis 9.6."""
+    """The slider-crank :class:`~planargeo.mechanics.model.Model` (tree + one slider contact) of thesis 9.6.
+
+    Parameters
+    ----------
+    m1, m2, m3 : float, optional
+        Masses of crank, connecting rod and slider (kg).
+    r, l : float, optional
+        Crank and connecting-rod lengths (m).
+    t : float, optional
+        Distance from the piston's joint to its centre of mass and slider contact (m).
+    g : float, optional
+        Gravity along -y (m/s²).
+
+    Returns
+    -------
+    Model
+        Three bodies in a chain closed by a slider contact.
+    """
     from planargeo.mechanics.contacts import Contact
     from planargeo.mechanics.model import Body, Joint, Model
 
@@ -68,6 +85,20 @@ def slider_crank_model(m1=0.40, m2=0.15, m3=0.30, r=2.29, l=5.00, t=0.5, g=9.81)
 
 def slider_crank_state(psi=0.4, psidot=20.0, r=2.29, l=5.00):
     """Joint coordinates and rates closing the loop (assembly branch ``sin(ψ+θ) ≥ 0``).
+
+    Parameters
+    ----------
+    psi : float, optional
+        Crank angle ψ (rad).
+    psidot : float, optional
+        Crank speed (rad/s).
+    r, l : float, optional
+        Crank and connecting-rod lengths (m).
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        ``(q, qd)``, each shape (3,).
 
     Raises
     ------
@@ -180,12 +211,23 @@ def slider_crank(psi: float = 0.4, psidot: float = 20.0, m1: float = 0.40, m2: f
 
     Parameters
     ----------
-    psi, psidot : crank angle and speed
-    m1, m2, m3, r, l, t : masses and lengths (thesis 9.6)
-    g : gravity along -y
+    psi, psidot : float
+        Crank angle ψ (rad) and crank speed ψ̇ (rad/s).
+    m1, m2, m3 : float
+        Masses of the crank, the connecting rod and the slider (kg).
+    r, l, t : float
+        Crank length, connecting-rod length, and the distance from the piston's joint to its
+        centre of mass and slider contact (thesis 9.6; m).
+    g : float
+        Gravity along -y (m/s²).
     drive : {"free", "constant-speed"}
         ``"free"``: no crank torque; ``"constant-speed"``: the crank is driven at
         constant speed (``ψ̈ = 0``), the torque needed is ``tau_drive``.
+
+    Returns
+    -------
+    SceneResult
+        Parameters, model, state (q, qd, tau), the solved accelerations and contact forces, and drawing extras.
     """
     psi, psidot = check_param("psi", psi), check_param("psidot", psidot)
     drive = check_param("drive", drive, "choice", choices=("free", "constant-speed"))

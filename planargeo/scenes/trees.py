@@ -45,7 +45,24 @@ _QD_PATTERN = np.array([1.0, -0.5, 0.3, 0.2, -0.4, 0.6, -0.3, 0.5, 0.1])
 
 
 def tree_model(mass=1.0, length=1.0, g=9.81, contacts=()):
-    """The nine-link tree of Fig 9.1 (optionally with contacts)."""
+    """The nine-link tree of Fig 9.1 (optionally with contacts).
+
+    Parameters
+    ----------
+    mass : float, optional
+        Mass of each link (kg).
+    length : float, optional
+        Length of each link (m).
+    g : float, optional
+        Gravity along -y (m/s²).
+    contacts : sequence of Contact, optional
+        Loop closures to add.
+
+    Returns
+    -------
+    Model
+        Nine links with the parents of Fig 9.1.
+    """
     from planargeo.mechanics.model import Body, Joint, Model
 
     mass, length = check_param("mass", mass, positive=True), check_param("length", length, positive=True)
@@ -61,6 +78,20 @@ def tree_solve(model, q, qd, tau=None):
     """One solve of the tree: stacked (9.39-9.43) when open, the constrained algorithm (9.5) with contacts.
 
     The trees explorer's step (on its cached model); ``tau`` defaults to zero.
+
+    Parameters
+    ----------
+    model : Model
+        A tree, with or without contacts.
+    q, qd : array_like, shape (nq,)
+        One state.
+    tau : array_like, shape (nq,), optional
+        Joint torques (zero).
+
+    Returns
+    -------
+    StackedSolution or LoopSolution
+        The solve.
 
     Examples
     --------
@@ -78,6 +109,18 @@ def tree_solve(model, q, qd, tau=None):
 
 def tree_dof(model, q) -> int:
     """Degrees of freedom ``nq − rank J_c`` with the closure Jacobian ``J_c`` of the contacts (9.54, 9.60).
+
+    Parameters
+    ----------
+    model : Model
+        A tree, with or without contacts.
+    q : array_like, shape (nq,)
+        Joint coordinates.
+
+    Returns
+    -------
+    int
+        The degrees of freedom.
 
     Examples
     --------
@@ -100,7 +143,24 @@ def _tolist(x):
 
 @register("tree")
 def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float = 1.0) -> SceneResult:
-    """The open tree of Fig 9.1 in the default pose, joint speeds ``speed × pattern``, no torques."""
+    """The open tree of Fig 9.1 in the default pose, joint speeds ``speed × pattern``, no torques.
+
+    Parameters
+    ----------
+    mass : float, optional
+        Mass of each link (kg).
+    length : float, optional
+        Length of each link (m).
+    g : float, optional
+        Gravity along -y (m/s²).
+    speed : float, optional
+        Scale of the joint-speed pattern (rad/s).
+
+    Returns
+    -------
+    SceneResult
+        Parameters, model, state and the stacked solution's quantities.
+    """
     from planargeo.algorithms.stacked import adjacency, direct_accelerations, stacked_solve, trunk
 
     speed = check_param("speed", speed)
@@ -128,6 +188,22 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
 
     The joint speeds are ``speed × pattern`` projected onto the velocities the
     loops allow (least-squares correction).
+
+    Parameters
+    ----------
+    mass : float, optional
+        Mass of each link (kg).
+    length : float, optional
+        Length of each link (m).
+    g : float, optional
+        Gravity along -y (m/s²).
+    speed : float, optional
+        Scale of the joint-speed pattern (rad/s).
+
+    Returns
+    -------
+    SceneResult
+        Parameters, model, state and the constrained solution's quantities.
     """
     from planargeo.algorithms.loops import loop_solve
     from planargeo.algorithms.stacked import blocks

@@ -28,7 +28,20 @@ __all__ = ["two_body", "positive"]
 
 
 def positive(value, name: str) -> float:
-    """``value`` as a float; :class:`SceneError` unless finite and > 0 (:func:`check_param`)."""
+    """``value`` as a float; :class:`SceneError` unless finite and > 0 (:func:`check_param`).
+
+    Parameters
+    ----------
+    value : object
+        The parameter's value.
+    name : str
+        The parameter's name.
+
+    Returns
+    -------
+    float
+        The value.
+    """
     return check_param(name, value, positive=True)
 
 

@@ -93,6 +93,16 @@ def mass(inertia) -> np.ndarray:
     Only meaningful for the rigid-body form 4.58 (not checked here; it is by
     :class:`Inertia`); an articulated inertia has no mass.
 
+    Parameters
+    ----------
+    inertia : array_like, shape (..., 3, 3)
+        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+
+    Returns
+    -------
+    numpy.ndarray, shape (...)
+        Mass (kg).
+
     Examples
     --------
     >>> mass(inertia_matrix(2.0, [1.0, 0.0], 0.5))
@@ -125,6 +135,21 @@ def centre_of_mass(inertia) -> np.ndarray:
     Raises :class:`~planargeo.errors.InputError` if the mass ``inertia[0, 0]``
     is zero or negative (there is no centre of mass to divide out).
 
+    Parameters
+    ----------
+    inertia : array_like, shape (..., 3, 3)
+        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 2)
+        Centre of mass (m).
+
+    Raises
+    ------
+    InputError
+        If the mass ``inertia[..., 0, 0]`` is not positive.
+
     Examples
     --------
     >>> centre_of_mass(inertia_matrix(2.0, [1.0, -3.0], 0.5))
@@ -146,6 +171,21 @@ def rotational_inertia(inertia) -> np.ndarray:
     Raises :class:`~planargeo.errors.InputError` if the mass ``inertia[0, 0]``
     is zero or negative.
 
+    Parameters
+    ----------
+    inertia : array_like, shape (..., 3, 3)
+        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+
+    Returns
+    -------
+    numpy.ndarray, shape (...)
+        ``J`` (kg·m²).
+
+    Raises
+    ------
+    InputError
+        If the mass ``inertia[..., 0, 0]`` is not positive.
+
     Examples
     --------
     >>> rotational_inertia(inertia_matrix(2.0, [1.0, -3.0], 0.5))
@@ -163,6 +203,21 @@ def radius_of_gyration(inertia) -> np.ndarray:
     Raises :class:`~planargeo.errors.InputError` if the mass ``inertia[0, 0]``
     is zero or negative.
 
+    Parameters
+    ----------
+    inertia : array_like, shape (..., 3, 3)
+        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+
+    Returns
+    -------
+    numpy.ndarray, shape (...)
+        ``ρ`` (m).
+
+    Raises
+    ------
+    InputError
+        If the mass ``inertia[..., 0, 0]`` is not positive.
+
     Examples
     --------
     >>> radius_of_gyration(inertia_matrix(2.0, [1.0, 0.0], 0.5))
@@ -179,6 +234,23 @@ def mobility(inertia) -> np.ndarray:
     Raises :class:`~planargeo.errors.SingularInertiaError` for a singular or
     indefinite inertia (carrying ``.cond``), :class:`~planargeo.errors.InputError` for a
     non-symmetric one.
+
+    Parameters
+    ----------
+    inertia : array_like, shape (..., 3, 3)
+        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        ``I⁻¹``.
+
+    Raises
+    ------
+    SingularInertiaError
+        Singular or indefinite ``inertia``.
+    InputError
+        Non-symmetric ``inertia``.
 
     Examples
     --------
@@ -217,7 +289,9 @@ def percussion_axis(inertia, point) -> np.ndarray:
     Parameters
     ----------
     inertia : array_like (..., 3, 3) or Inertia
+        Symmetric positive definite inertia at the origin.
     point : array_like (..., 3) or Point/Twist
+        Homogeneous acceleration pole(s).
 
     Returns
     -------
@@ -256,6 +330,18 @@ def percussion_pole(inertia, line) -> np.ndarray:
 
     A line through the centre of mass gives a pole at infinity (the body
     translates); the line at infinity (a couple) gives the centre of mass.
+
+    Parameters
+    ----------
+    inertia : array_like, shape (..., 3, 3)
+        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+    line : array_like, shape (..., 3)
+        Homogeneous line (a wrench).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        The acceleration ``I⁻¹ f`` (its pole, not normalised).
 
     Raises
     ------
@@ -296,6 +382,11 @@ def drawable_conic(inertia) -> np.ndarray:
     ``c``, ``I ∝ Rᵀ C`` (in the centre frame ``R = diag(-1, -1, 1)`` and
     ``R C = -I``).
 
+    Parameters
+    ----------
+    inertia : array_like, shape (..., 3, 3)
+        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+
     Returns
     -------
     ndarray (..., 3, 3)
@@ -330,6 +421,13 @@ def polygon_moments(geometry, name: str = "geometry"):
     clockwise after ``shapely.geometry.polygon.orient``), so holes and
     (disjoint) unions of a ``MultiPolygon`` work.  Coordinates are shifted to
     the centre of the bounding box first for accuracy.
+
+    Parameters
+    ----------
+    geometry : shapely.geometry.Polygon or MultiPolygon
+        The area (m).
+    name : str, optional
+        Name used in error messages.
 
     Returns
     -------
@@ -412,6 +510,11 @@ class Inertia:
     :mod:`planargeo.screws.inertia`, :mod:`planargeo.screws.twists` and
     :mod:`planargeo.mechanics.subspaces` accepts.
 
+    Parameters
+    ----------
+    matrix : array_like, shape (..., 3, 3)
+        Symmetric positive definite matrix of the rigid-body form (4.58).
+
     Raises
     ------
     InputError
@@ -455,6 +558,28 @@ class Inertia:
         Give exactly one of ``radius_of_gyration`` (``ρ > 0``) or ``inertia``
         (``J > 0`` about the centre of mass; ``J = m ρ²``).
 
+        Parameters
+        ----------
+        mass : float or array_like, shape (...)
+            Mass ``m > 0`` (kg).
+        com : array_like, shape (..., 2)
+            Centre of mass ``c`` (m).
+        radius_of_gyration : float or array_like, optional
+            ``ρ > 0`` (m).
+        inertia : float or array_like, optional
+            ``J > 0`` about the centre of mass (kg·m²).
+
+        Returns
+        -------
+        Inertia
+            ``inertia_matrix(m, c, J)`` wrapped.
+
+        Raises
+        ------
+        InputError
+            If not exactly one of ``radius_of_gyration`` and ``inertia`` is given, or a value
+            is not positive.
+
         Examples
         --------
         >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).matrix
@@ -482,6 +607,25 @@ class Inertia:
         ``density × ∫|x - c|² dA``; holes and disjoint unions work (see
         :func:`polygon_moments`).
 
+        Parameters
+        ----------
+        geometry : shapely.geometry.Polygon or MultiPolygon
+            The lamina's shape (m).
+        density : float, optional
+            Mass per unit area (kg/m²), positive.
+
+        Returns
+        -------
+        Inertia
+            The lamina's inertia at the origin.
+
+        Raises
+        ------
+        InputError
+            If ``density`` is not positive, or shapely is missing.
+        InvalidPolygonError
+            If the geometry is not a valid polygon of positive area and polar moment.
+
         Examples
         --------
         >>> from shapely.geometry import box
@@ -500,6 +644,21 @@ class Inertia:
     @classmethod
     def composite(cls, parts) -> "Inertia":
         """Inertia of rigidly joined parts: the sum of their matrices (thesis 1.65 is linear).
+
+        Parameters
+        ----------
+        parts : iterable of Inertia
+            The bodies joined rigidly (at least one).
+
+        Returns
+        -------
+        Inertia
+            The sum of the parts' matrices.
+
+        Raises
+        ------
+        InputError
+            If ``parts`` is empty.
 
         Examples
         --------
@@ -591,6 +750,16 @@ class Inertia:
 
         The result's ``com`` is then relative to ``point``.
 
+        Parameters
+        ----------
+        point : array_like, shape (2,)
+            New reference point (m).
+
+        Returns
+        -------
+        Inertia
+            The inertia at ``point``.
+
         Examples
         --------
         >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).at([1.0, 0.0])
@@ -608,6 +777,18 @@ class Inertia:
         instead; :func:`planargeo.screws.inertia_transform` is the passive
         change to a translated and rotated frame.)
 
+        Parameters
+        ----------
+        theta : float
+            Angle (rad), counter-clockwise.
+        about : array_like, shape (2,), optional
+            Centre of the rotation (m).
+
+        Returns
+        -------
+        Inertia
+            The turned body's inertia.
+
         Examples
         --------
         >>> Inertia.from_mass(2.0, [2.0, 0.0], inertia=0.5).rotated(np.pi / 2, about=[1.0, 0.0])
@@ -617,6 +798,16 @@ class Inertia:
 
     def kinetic_energy(self, twist) -> np.ndarray:
         """``½ vᵀ I v`` (thesis 1.9).
+
+        Parameters
+        ----------
+        twist : Twist or array_like, shape (..., 3)
+            Twist ``[vx, vy, ω]`` (m/s, rad/s).
+
+        Returns
+        -------
+        numpy.ndarray, shape (...)
+            Kinetic energy (J).
 
         Examples
         --------
@@ -628,6 +819,16 @@ class Inertia:
     def momentum(self, twist) -> np.ndarray:
         """Momentum wrench ``I v`` (thesis 5.72).
 
+        Parameters
+        ----------
+        twist : Twist or array_like, shape (..., 3)
+            Twist ``[vx, vy, ω]`` (m/s, rad/s).
+
+        Returns
+        -------
+        numpy.ndarray, shape (..., 3)
+            Momentum wrench ``[px, py, Lz]`` (kg·m/s, kg·m²/s).
+
         Examples
         --------
         >>> Inertia.from_mass(2.0, [0.0, 1.0], inertia=0.5).momentum([1.0, 0.0, 0.0])   # m u along y = 1
@@ -638,6 +839,16 @@ class Inertia:
     def percussion_axis_array(self, point) -> np.ndarray:
         """:func:`percussion_axis` as an array.
 
+        Parameters
+        ----------
+        point : array_like, shape (..., 3)
+            Homogeneous acceleration pole.
+
+        Returns
+        -------
+        numpy.ndarray, shape (..., 3)
+            The axis of percussion ``I a``.
+
         Examples
         --------
         >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_axis_array([0.0, 0.0, 1.0])
@@ -647,6 +858,16 @@ class Inertia:
 
     def percussion_axis(self, point):
         """Axis of percussion of ``point`` as a :class:`planargeo.geometry.Line` (thesis 5.67).
+
+        Parameters
+        ----------
+        point : array_like, shape (3,)
+            Homogeneous acceleration pole.
+
+        Returns
+        -------
+        Line
+            The axis of percussion ``I a``.
 
         Examples
         --------
@@ -659,6 +880,16 @@ class Inertia:
     def percussion_pole_array(self, line) -> np.ndarray:
         """:func:`percussion_pole` as an array.
 
+        Parameters
+        ----------
+        line : array_like, shape (..., 3)
+            Homogeneous line (an impulse's line of action).
+
+        Returns
+        -------
+        numpy.ndarray, shape (..., 3)
+            The pole ``I⁻¹ f``.
+
         Examples
         --------
         >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_pole_array([0.0, 2.0, 2.5])
@@ -668,6 +899,16 @@ class Inertia:
 
     def percussion_pole(self, line):
         """Pole whose axis of percussion is ``line``, as a :class:`planargeo.geometry.Point`.
+
+        Parameters
+        ----------
+        line : array_like, shape (3,)
+            Homogeneous line (an impulse's line of action).
+
+        Returns
+        -------
+        Point
+            The pole ``I⁻¹ f``.
 
         Examples
         --------
@@ -679,6 +920,11 @@ class Inertia:
 
     def drawable_conic_matrix(self) -> np.ndarray:
         """:func:`drawable_conic` as an array.
+
+        Returns
+        -------
+        numpy.ndarray, shape (..., 3, 3)
+            The radius-of-gyration circle's matrix.
 
         Examples
         --------
@@ -692,6 +938,11 @@ class Inertia:
     def drawable_conic(self):
         """The radius-of-gyration circle as a :class:`planargeo.geometry.Conic` (thesis 10.2.3).
 
+        Returns
+        -------
+        Conic
+            The real circle of radius ``ρ`` about the centre of mass.
+
         Examples
         --------
         >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).drawable_conic().matrix[2, 2]   # -m ρ²
@@ -702,6 +953,11 @@ class Inertia:
 
     def conic(self):
         """The inertia itself as a (imaginary) :class:`planargeo.geometry.Conic` (thesis 5.4).
+
+        Returns
+        -------
+        Conic
+            The imaginary conic of the inertia matrix.
 
         Examples
         --------

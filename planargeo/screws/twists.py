@@ -43,6 +43,7 @@ def X_P(point) -> np.ndarray:
     Parameters
     ----------
     point : array_like, shape (..., 2)
+        Reference point ``(x, y)`` (m).
 
     Returns
     -------
@@ -67,6 +68,16 @@ def X_P_inv_T(point) -> np.ndarray:
     ``X_P_inv_T(p) @ f`` is the wrench ``f`` (given at the origin) expressed
     at ``p``; it equals ``inv(X_P(p)).T``.
 
+    Parameters
+    ----------
+    point : array_like, shape (..., 2)
+        Reference point ``(x, y)`` (m).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        ``X_P(point)⁻ᵀ``.
+
     Examples
     --------
     >>> X_P_inv_T([0.0, 1.0]) @ [1.0, 0.0, 0.0]   # force along x through the origin, moment about (0, 1)
@@ -84,6 +95,16 @@ def rot(theta) -> np.ndarray:
     """Rotation of screw coordinates by ``theta`` about the reference point.
 
     The same matrix rotates twists and wrenches (it is orthogonal).
+
+    Parameters
+    ----------
+    theta : array_like, shape (...)
+        Angle (rad).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        The rotation matrix.
 
     Examples
     --------
@@ -120,7 +141,9 @@ def X_frame(theta, point) -> np.ndarray:
     Parameters
     ----------
     theta : array_like (...)
+        Angle of the new frame (rad).
     point : array_like (..., 2)
+        Origin of the new frame ``(x, y)`` (m).
 
     Returns
     -------
@@ -143,6 +166,18 @@ def X_frame_inv_T(theta, point) -> np.ndarray:
     expressed at ``p`` and rotated by ``θ``; power is preserved:
     ``(X v)ᵀ (X⁻ᵀ f) = vᵀ f``.
 
+    Parameters
+    ----------
+    theta : array_like, shape (...)
+        Angle of the new frame (rad).
+    point : array_like, shape (..., 2)
+        Reference point ``(x, y)`` (m).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        ``rot(θ) X_P⁻ᵀ(p)``.
+
     Examples
     --------
     >>> np.round(X_frame_inv_T(np.pi / 2, [0.0, 1.0]) @ [1.0, 0.0, 0.0], 12) + 0.0   # X_P⁻ᵀ gives [1, 0, 1]
@@ -161,6 +196,18 @@ def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
     turned by ``theta`` about ``c`` (its pole turns about ``c``); wrenches are
     carried by ``inv(M).T`` (= ``X_P⁻ᵀ(-c) rot(θ) X_P⁻ᵀ(c)``) and inertias by
     :func:`inertia_rotated`.  With ``about = (0, 0)`` this is :func:`rot`.
+
+    Parameters
+    ----------
+    theta : array_like, shape (...)
+        Angle (rad).
+    about : array_like, shape (..., 2), optional
+        Centre ``c`` of the rotation (m).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        ``M`` acting on twists.
 
     Examples
     --------
@@ -182,6 +229,16 @@ def crm(v) -> np.ndarray:
         [[0, -w,  vy],
          [w,  0, -vx],
          [0,  0,   0]]
+
+    Parameters
+    ----------
+    v : array_like, shape (..., 3)
+        Twist ``[vx, vy, ω]``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        The matrix of ``v×``.
 
     Examples
     --------
@@ -207,6 +264,16 @@ def crf(v) -> np.ndarray:
          [ w,    0,   0],
          [-vy,  vx,   0]]
 
+    Parameters
+    ----------
+    v : array_like, shape (..., 3)
+        Twist ``[vx, vy, ω]``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        The matrix of ``v×*``.
+
     Examples
     --------
     >>> crf([0.0, 0.0, 1.0]) @ [1.0, 0.0, 0.0]   # a force along x, rotated at unit rate about the origin
@@ -222,6 +289,16 @@ def unit_rotation(point) -> np.ndarray:
 
     For ``point = (x, y)`` this is ``[y, -x, 1]``: the homogeneous point itself.
 
+    Parameters
+    ----------
+    point : array_like, shape (..., 2)
+        The pole ``(x, y)`` (m).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        ``[y, -x, 1]``.
+
     Examples
     --------
     >>> unit_rotation([1.0, 2.0])
@@ -235,6 +312,21 @@ def unit_translation(direction) -> np.ndarray:
     """Unit twist of a translation along ``direction`` (a point at infinity, thesis 5.62).
 
     The direction is normalised; a zero direction raises :class:`~planargeo.errors.DegenerateGeometryError`.
+
+    Parameters
+    ----------
+    direction : array_like, shape (..., 2)
+        Direction of the velocity (non-zero).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        ``[dx, dy, 0] / |d|``.
+
+    Raises
+    ------
+    DegenerateGeometryError
+        If ``direction`` is the zero vector.
 
     Examples
     --------
@@ -266,9 +358,15 @@ def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
     mass : array_like (...)
         ``m > 0``.
     com : array_like (..., 2)
+        Centre of mass ``(cx, cy)`` (m).
     inertia_about_com : array_like (...)
         ``J >= 0`` (``J = 0`` is a point mass: a singular, positive
         semi-definite inertia).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        The inertia matrix shown above.
 
     Raises
     ------
@@ -304,6 +402,18 @@ def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
 def power(twist, wrench) -> np.ndarray:
     """Power ``vᵀf`` of a wrench on a twist (thesis 5.73); zero means incidence.
 
+    Parameters
+    ----------
+    twist : Twist or array_like, shape (..., 3)
+        Twist ``[vx, vy, ω]`` (m/s, rad/s).
+    wrench : Wrench or array_like, shape (..., 3)
+        Wrench ``[fx, fy, τz]`` (N, N·m).
+
+    Returns
+    -------
+    numpy.ndarray, shape (...)
+        Power (W).
+
     Examples
     --------
     >>> power([0.0, 0.0, 1.0], [1.0, 0.0, 0.0])  # force through the pole: no power
@@ -321,6 +431,18 @@ def _dot(a, b):
 
 def kinetic_energy(inertia, twist) -> np.ndarray:
     """Kinetic energy ``½ vᵀ I v`` (thesis 1.9), invariant under frame changes.
+
+    Parameters
+    ----------
+    inertia : array_like, shape (..., 3, 3)
+        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+    twist : Twist or array_like, shape (..., 3)
+        Twist ``[vx, vy, ω]`` (m/s, rad/s).
+
+    Returns
+    -------
+    numpy.ndarray, shape (...)
+        Kinetic energy (J).
 
     Examples
     --------
@@ -369,6 +491,16 @@ def _inertia_psd(inertia, name: str = "inertia") -> np.ndarray:
 def twist_magnitude(twist) -> np.ndarray:
     """Magnitude ``ω_z`` of a planar twist (thesis 4.6), signed; 0 for a translation.
 
+    Parameters
+    ----------
+    twist : Twist or array_like, shape (..., 3)
+        Twist ``[vx, vy, ω]`` (m/s, rad/s).
+
+    Returns
+    -------
+    numpy.ndarray, shape (...)
+        ``ω_z`` (rad/s).
+
     Examples
     --------
     >>> twist_magnitude([1.0, -2.0, 3.0])
@@ -386,6 +518,16 @@ def pole_xy(twist) -> np.ndarray:
     (``ω = 0``) has its pole at infinity: NaN is returned (no warning); use
     the homogeneous array itself.
 
+    Parameters
+    ----------
+    twist : Twist or array_like, shape (..., 3)
+        Twist ``[vx, vy, ω]`` (m/s, rad/s).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 2)
+        The pole (m); NaN for translations.
+
     Examples
     --------
     >>> pole_xy([2.0, -1.0, 1.0])
@@ -400,6 +542,16 @@ def wrench_magnitude(wrench) -> np.ndarray:
     """Magnitude ``F = sqrt(f_x² + f_y²)`` of a planar wrench (thesis 4.22, 4.29).
 
     A pure couple has ``F = 0`` (its strength is the moment ``τ_z``).
+
+    Parameters
+    ----------
+    wrench : Wrench or array_like, shape (..., 3)
+        Wrench ``[fx, fy, τz]`` (N, N·m).
+
+    Returns
+    -------
+    numpy.ndarray, shape (...)
+        ``F`` (N).
 
     Examples
     --------
@@ -418,6 +570,11 @@ def wrench_axis(wrench):
     the point of the line nearest the origin is ``n d`` (4.30).  For a pure
     couple (line at infinity) ``e`` and ``n`` are NaN and ``d`` is ``±inf``
     (sign of ``τ_z``); for the zero wrench everything is NaN.  No warnings.
+
+    Parameters
+    ----------
+    wrench : Wrench or array_like, shape (..., 3)
+        Wrench ``[fx, fy, τz]`` (N, N·m).
 
     Returns
     -------
@@ -455,6 +612,20 @@ def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
     Geometrically the pole of the twist lies on the line of the wrench.  The
     test is ``|vᵀf| <= rtol * |v| |f|``.
 
+    Parameters
+    ----------
+    twist : Twist or array_like, shape (..., 3)
+        Twist ``[vx, vy, ω]`` (m/s, rad/s).
+    wrench : Wrench or array_like, shape (..., 3)
+        Wrench ``[fx, fy, τz]`` (N, N·m).
+    rtol : float, optional
+        Relative tolerance of the zero-power test ``|vᵀf| <= rtol |v| |f|``.
+
+    Returns
+    -------
+    numpy.ndarray of bool, shape (...)
+        Whether the pair is reciprocal.
+
     Examples
     --------
     >>> bool(reciprocal(unit_rotation([1.0, 0.0]), [0.0, 1.0, 1.0]))   # the line x = 1
@@ -483,6 +654,18 @@ def inertia_at(inertia, point) -> np.ndarray:
     ``X_P⁻ᵀ`` (4.24).  Consequently ``inertia_at(inertia_matrix(m, c, J), P)
     == inertia_matrix(m, c - P, J)``.  For a rotation as well see
     :func:`inertia_transform` (passive) and :func:`inertia_rotated` (active).
+
+    Parameters
+    ----------
+    inertia : array_like, shape (..., 3, 3)
+        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+    point : array_like, shape (..., 2)
+        Reference point ``(x, y)`` (m).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        ``X_P⁻ᵀ I X_P⁻¹``.
 
     Raises
     ------
@@ -522,7 +705,14 @@ def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
     inertia : array_like (..., 3, 3)
         Symmetric positive semi-definite (rigid-body or articulated) inertia.
     theta : array_like (...)
+        Angle of the new frame (rad).
     point : array_like (..., 2)
+        Origin of the new frame (m).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        ``I_B``.
 
     Raises
     ------
@@ -561,8 +751,14 @@ def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
     inertia : array_like (..., 3, 3)
         Symmetric positive semi-definite (rigid-body or articulated) inertia.
     theta : array_like (...)
+        Angle of the rotation (rad), counter-clockwise.
     about : array_like (..., 2), optional
         Centre of the rotation (default the origin).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        ``I'``.
 
     Raises
     ------
@@ -593,6 +789,18 @@ def momentum(inertia, twist) -> np.ndarray:
 
     Its line passes through the centre of mass (thesis 1.60) and ``pᵀa`` is the
     power of the inertial force on ``a`` (5.74).
+
+    Parameters
+    ----------
+    inertia : array_like, shape (..., 3, 3)
+        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+    twist : Twist or array_like, shape (..., 3)
+        Twist ``[vx, vy, ω]`` (m/s, rad/s).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        Momentum wrench (kg·m/s, kg·m²/s).
 
     Examples
     --------
@@ -652,6 +860,11 @@ def kappa(twist, s, qd) -> np.ndarray:
         line joining the poles of ``v`` and ``s`` (thesis 4.53):
         ``ω q̇ (S - V)`` for normalised poles ``V`` of ``v`` and ``S`` of ``s``.
 
+    Raises
+    ------
+    ShapeError
+        If ``s`` is not ``(..., 3)`` or ``(..., 3, k)``, or ``qd`` does not match its columns.
+
     Examples
     --------
     Revolute joint, thesis 4.66-4.67 (``v_{i-1} = (1, 2, 0.5)``, ``θ̇ = 3``):
@@ -703,9 +916,16 @@ def bias_force(inertia, twist, g=None) -> np.ndarray:
     Parameters
     ----------
     inertia : array_like (..., 3, 3)
+        Inertia at the origin.
     twist : array_like (..., 3)
+        Velocity twist of the body.
     g : array_like (..., 3), optional
         External wrench (gravity, loads) at the origin; default zero.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+        The bias wrench (N, N·m).
 
     Examples
     --------
@@ -860,6 +1080,18 @@ class Twist(_Screw):
     def rotation(cls, point, omega=1.0) -> "Twist":
         """Rotation at rate ``omega`` (counter-clockwise positive) about ``point`` (thesis 4.10, 5.51).
 
+        Parameters
+        ----------
+        point : array_like, shape (..., 2)
+            The pole (m).
+        omega : float or array_like, optional
+            Angular velocity (rad/s), counter-clockwise positive.
+
+        Returns
+        -------
+        Twist
+            ``omega * [y, -x, 1]``.
+
         Examples
         --------
         >>> Twist.rotation([1.0, 0.0], 2.0)      # ω [y, -x, 1]
@@ -872,6 +1104,16 @@ class Twist(_Screw):
     @classmethod
     def translation(cls, velocity) -> "Twist":
         """Pure translation with linear velocity ``velocity = (vx, vy)`` (a point at infinity).
+
+        Parameters
+        ----------
+        velocity : array_like, shape (..., 2)
+            Linear velocity ``(vx, vy)`` (m/s).
+
+        Returns
+        -------
+        Twist
+            ``[vx, vy, 0]``.
 
         Examples
         --------
@@ -908,6 +1150,13 @@ class Twist(_Screw):
     def pole(self):
         """The pole as a :class:`planargeo.geometry.Point` (the array itself, thesis 5.51).
 
+        Raises
+        ------
+        ShapeError
+            If this is a batch of twists.
+        DegenerateGeometryError
+            If the twist is zero.
+
         Examples
         --------
         >>> Twist.rotation([1.0, 2.0], 3.0).pole
@@ -925,6 +1174,16 @@ class Twist(_Screw):
     def at(self, point) -> "Twist":
         """The same motion expressed at ``point``: ``X_P v`` (thesis 4.8).
 
+        Parameters
+        ----------
+        point : array_like, shape (..., 2)
+            New reference point (m).
+
+        Returns
+        -------
+        Twist
+            ``X_P v``.
+
         Examples
         --------
         >>> Twist.rotation([0.0, 0.0], 1.0).at([2.0, 0.0])   # the point (2, 0) moves up at 2
@@ -936,6 +1195,16 @@ class Twist(_Screw):
     def power(self, wrench) -> np.ndarray:
         """Power ``vᵀf`` (thesis 5.73).
 
+        Parameters
+        ----------
+        wrench : Wrench or array_like, shape (..., 3)
+            Wrench ``[fx, fy, τz]`` (N, N·m).
+
+        Returns
+        -------
+        numpy.ndarray, shape (...)
+            Power (W).
+
         Examples
         --------
         >>> float(Twist.translation([2.0, 0.0]).power(Wrench.force([0.0, 5.0], [3.0, 0.0])))   # 2 · 3
@@ -945,6 +1214,18 @@ class Twist(_Screw):
 
     def reciprocal(self, wrench, rtol: float = 1e-12) -> np.ndarray:
         """True where ``wrench`` does no power on this twist (pole on the line).
+
+        Parameters
+        ----------
+        wrench : Wrench or array_like, shape (..., 3)
+            Wrench ``[fx, fy, τz]`` (N, N·m).
+        rtol : float, optional
+            Relative tolerance of the zero-power test ``|vᵀf| <= rtol |v| |f|``.
+
+        Returns
+        -------
+        numpy.ndarray of bool, shape (...)
+            Whether the power is zero within ``rtol``.
 
         Examples
         --------
@@ -989,6 +1270,18 @@ class Wrench(_Screw):
 
         The moment at the origin is ``x fy - y fx`` (so that 4.27 holds at ``point``).
 
+        Parameters
+        ----------
+        point : array_like, shape (..., 2)
+            A point of the line of action (m).
+        force : array_like, shape (..., 2)
+            Force ``(fx, fy)`` (N).
+
+        Returns
+        -------
+        Wrench
+            ``[fx, fy, x fy - y fx]``.
+
         Examples
         --------
         >>> Wrench.force([2.0, 0.0], [0.0, 1.0])     # upward force along x = 2: moment 2 at the origin
@@ -1005,6 +1298,16 @@ class Wrench(_Screw):
     @classmethod
     def couple(cls, tau) -> "Wrench":
         """Pure couple of moment ``tau`` (counter-clockwise positive): the line at infinity.
+
+        Parameters
+        ----------
+        tau : float or array_like, shape (...)
+            Moment (N·m), counter-clockwise positive.
+
+        Returns
+        -------
+        Wrench
+            ``[0, 0, tau]``.
 
         Examples
         --------
@@ -1055,6 +1358,13 @@ class Wrench(_Screw):
     def line(self):
         """The line of action (polar) as a :class:`planargeo.geometry.Line` (thesis 5.56).
 
+        Raises
+        ------
+        ShapeError
+            If this is a batch of wrenches.
+        DegenerateGeometryError
+            If the wrench is zero.
+
         Examples
         --------
         >>> Wrench.force([2.0, 0.0], [0.0, 1.0]).line.array
@@ -1074,6 +1384,16 @@ class Wrench(_Screw):
     def at(self, point) -> "Wrench":
         """The same load expressed at ``point``: ``X_P⁻ᵀ f`` (thesis 4.24, 4.26).
 
+        Parameters
+        ----------
+        point : array_like, shape (..., 2)
+            New reference point (m).
+
+        Returns
+        -------
+        Wrench
+            ``X_P⁻ᵀ f``.
+
         Examples
         --------
         >>> Wrench.force([2.0, 0.0], [0.0, 1.0]).at([2.0, 0.0])   # no moment about a point of the line
@@ -1085,6 +1405,16 @@ class Wrench(_Screw):
     def power(self, twist) -> np.ndarray:
         """Power ``vᵀf`` (thesis 5.73).
 
+        Parameters
+        ----------
+        twist : Twist or array_like, shape (..., 3)
+            Twist ``[vx, vy, ω]`` (m/s, rad/s).
+
+        Returns
+        -------
+        numpy.ndarray, shape (...)
+            Power (W).
+
         Examples
         --------
         >>> float(Wrench.couple(2.0).power(Twist.rotation([5.0, 5.0], 3.0)))   # τ ω
@@ -1094,6 +1424,18 @@ class Wrench(_Screw):
 
     def reciprocal(self, twist, rtol: float = 1e-12) -> np.ndarray:
         """True where this wrench does no power on ``twist``.
+
+        Parameters
+        ----------
+        twist : Twist or array_like, shape (..., 3)
+            Twist ``[vx, vy, ω]`` (m/s, rad/s).
+        rtol : float, optional
+            Relative tolerance of the zero-power test ``|vᵀf| <= rtol |v| |f|``.
+
+        Returns
+        -------
+        numpy.ndarray of bool, shape (...)
+            Whether the power is zero within ``rtol``.
 
         Examples
         --------
@@ -1151,6 +1493,7 @@ class TwistSum:
     Attributes
     ----------
     v1, v2, sum : Twist
+        The two twists and their sum.
     case : str
         ``"rotations"`` (4.11-4.13), ``"opposite_rotations"`` (``ω1 = -ω2``:
         a translation perpendicular to ``Q1Q2``, ``beta = inf``),
@@ -1271,6 +1614,7 @@ class WrenchSum:
     Attributes
     ----------
     f1, f2, sum : Wrench
+        The two wrenches and their sum.
     case : str
         ``"concurrent"`` (4.4.1: two forces meeting at ``P``),
         ``"parallel"`` (4.4.2: lever rule, ``P`` ideal),
@@ -1336,6 +1680,18 @@ def add_wrenches(f1, f2, rtol: float = 1e-12) -> WrenchSum:
 
     Note: thesis 4.37 is misprinted (see ``docs/errata.md``); the meet
     point here is the exact ``L1 × L2``.
+
+    Parameters
+    ----------
+    f1, f2 : Wrench or array_like, shape (3,)
+        Non-zero wrenches at the origin.
+    rtol : float, optional
+        Tolerance of the parallel test.
+
+    Returns
+    -------
+    WrenchSum
+        The sum and the construction that draws it (case, meet point, lines).
 
     Examples
     --------

@@ -100,12 +100,23 @@ def energy(model: Model, q=None, qd=None, *, data=None) -> tuple[np.ndarray, np.
     Parameters
     ----------
     model : Model
+        The mechanism (bodies, joints, parents, gravity).
     q, qd : array_like (..., nq)
         The state (``qd`` None: at rest); not with ``data``.
     data : Data, optional
         The kinematics of ``model`` already computed for the state (e.g. a widget's
         frame, :func:`~planargeo.mechanics.kinematics.kinematics` or a dynamics
         workspace): used as they are, not computed again.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        ``(T, V)``, each shape (...) (J).
+
+    Raises
+    ------
+    InputError
+        If both a state and ``data`` are given.
 
     Examples
     --------
@@ -150,6 +161,8 @@ class SimulationResult:
     method : str
     nfev : int
         Number of dynamics evaluations.
+    extra : dict
+        Method-specific extras (e.g. contact forces of a loop simulation).
     """
 
     t: np.ndarray
@@ -169,6 +182,8 @@ class SimulationResult:
 
     @property
     def success(self) -> bool:
+        """Whether the run finished normally (``status == "ok"``).
+        """
         return self.status == "ok"
 
     def energy_drift(self) -> float:
@@ -176,6 +191,11 @@ class SimulationResult:
 
         The kinetic energy in the denominator keeps the measure meaningful when
         the total energy happens to be near zero.
+
+        Returns
+        -------
+        float
+            The relative drift (dimensionless).
         """
         scale = max(abs(float(self.energy[0])), float(np.max(self.kinetic)), np.finfo(float).tiny)
         return float(np.max(np.abs(self.energy - self.energy[0])) / scale)
@@ -208,6 +228,18 @@ def progress_enabled(progress: bool | None = None, stream=None) -> bool:
     Jupyter/IPython kernel, where stderr is not a terminal but the bar
     (``tqdm.auto``: a notebook widget when ipywidgets is installed, text
     otherwise) is still seen.
+
+    Parameters
+    ----------
+    progress : bool or None, optional
+        ``True``/``False`` to force, None for auto.
+    stream : file, optional
+        Where the bar goes (default ``sys.stderr``).
+
+    Returns
+    -------
+    bool
+        Whether to show the bar.
 
     Examples
     --------
@@ -547,6 +579,20 @@ def near_singular_events(t, cond, threshold: float) -> list[dict]:
     Each is ``{"kind", "t", "cond", "t_start", "t_end"}`` with the peak's time
     and value and the first/last times above the threshold (``nan`` counts as
     above: a condition number that could not be computed).
+
+    Parameters
+    ----------
+    t : array_like, shape (T,)
+        Times (s).
+    cond : array_like, shape (T,)
+        Condition numbers.
+    threshold : float
+        The level above which a step is near-singular.
+
+    Returns
+    -------
+    list of dict
+        The events, in time order.
 
     Examples
     --------

@@ -26,6 +26,19 @@ MODULES = ("ch1", "ch3", "ch4", "ch5", "ch6", "ch7", "ch9", "extra")
 
 @dataclass(frozen=True)
 class FigureSpec:
+    """One registered gallery figure.
+
+    Attributes
+    ----------
+    name : str
+        The figure's name, also its SVG file's stem (``fig5_6``).
+    caption : str
+        The caption: the drawing function's docstring, lines joined.
+    build : callable
+        ``build() -> matplotlib.figure.Figure``, a new figure drawn.
+    order : float
+        Its place in the gallery (the thesis figure number, ``5.06`` for Fig. 5.6).
+    """
     name: str
     caption: str
     build: Callable
@@ -43,6 +56,20 @@ def register(order: float, *, height: float = 2.8, **layout):
     ``build() -> Figure`` makes a one-column figure ``height`` inches tall with
     :func:`new_figure` (``layout``: its keywords), calls ``draw`` with its axes
     (an array of axes for several panels) and returns it.
+
+    Parameters
+    ----------
+    order : float
+        Place in the gallery (thesis figure number, e.g. ``4.07``).
+    height : float, optional
+        Figure height (inches).
+    **layout : 
+        Keywords of :func:`new_figure` (``nrows``, ``ncols``, ``margins``, ``polar``).
+
+    Returns
+    -------
+    callable
+        The decorator; it returns the drawing function unchanged.
 
     Raises
     ------
@@ -69,6 +96,11 @@ def load_all() -> dict[str, FigureSpec]:
     """Import every figure module; return the registry sorted by thesis order.
 
     Any import error propagates: a broken figure module fails the gallery loudly.
+
+    Returns
+    -------
+    dict of str to FigureSpec
+        Every figure, in gallery order.
     """
     for mod in MODULES:
         importlib.import_module(f"{__name__}.{mod}")
@@ -83,6 +115,24 @@ def new_figure(height=2.8, *, nrows=1, ncols=1, margins=None, polar=None, **kw):
     those figure fractions; with ``polar = [left, bottom, width, height]`` one
     polar axes there.  ``kw`` go to :func:`matplotlib.pyplot.subplots`.
     Returns ``(fig, ax)``, or ``(fig, axs)`` (flat) for several panels.
+
+    Parameters
+    ----------
+    height : float, optional
+        Height (inches); the width is one column.
+    nrows, ncols : int, optional
+        Panel grid.
+    margins : tuple of 4 float, optional
+        ``(left, right, bottom, top)`` figure fractions for chart axes.
+    polar : sequence of 4 float, optional
+        ``[left, bottom, width, height]`` of one polar axes.
+    **kw : 
+        More keywords for :func:`matplotlib.pyplot.subplots`.
+
+    Returns
+    -------
+    tuple
+        ``(fig, ax)`` or ``(fig, axs)``.
     """
     import matplotlib.pyplot as plt
 
@@ -106,6 +156,22 @@ def chain(n: int, *, base: str = "revolute", gravity=(0.0, 0.0), tip_com: float 
     Joint 1 (kind ``base``) sits at the origin, joint ``i`` (revolute) 1 along
     link ``i − 1``; the last link's centre of mass is at ``tip_com`` (it is
     drawn ``2 tip_com`` long).
+
+    Parameters
+    ----------
+    n : int
+        Number of links.
+    base : str, optional
+        Kind of joint 1.
+    gravity : array_like, shape (2,), optional
+        Gravity (m/s²).
+    tip_com : float, optional
+        Centre of mass of the last link along it (m).
+
+    Returns
+    -------
+    Model
+        The chain.
     """
     bodies = [Body(1.0, (0.5 if i < n - 1 else tip_com, 0.0), 1.0 / 12, name=str(i + 1))
               for i in range(n)]
@@ -115,6 +181,19 @@ def chain(n: int, *, base: str = "revolute", gravity=(0.0, 0.0), tip_com: float 
 
 
 def scene_state(name: str, **params):
-    """The scene ``name`` (:func:`planargeo.scenes.build`) and the kinematics at its state."""
+    """The scene ``name`` (:func:`planargeo.scenes.build`) and the kinematics at its state.
+
+    Parameters
+    ----------
+    name : str
+        Scene name.
+    **params : 
+        Scene parameters.
+
+    Returns
+    -------
+    tuple
+        ``(SceneResult, Data)``.
+    """
     res = build_scene(name, **params)
     return res, kinematics(res.model, res.state["q"], res.state["qd"])

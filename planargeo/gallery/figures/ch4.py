@@ -143,6 +143,18 @@ def chain47(ax, **draw):
     """The chain of Figs 4.7-4.9 and 6.5 drawn at ``Q47`` (``draw``: options of ``draw_model``).
 
     Returns its RNEA state at ``(Q47, QD47, QDD47)`` (4.47-4.56) and the drawn artists.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        Where to draw.
+    **draw : 
+        Options of :func:`planargeo.draw.mechanism.draw_model`.
+
+    Returns
+    -------
+    tuple
+        ``(workspace, artists)``.
     """
     m = _chain3()
     w = newton_euler(m, Q47, QD47, QDD47)

@@ -90,6 +90,18 @@ def slider_crank(ax, **draw):
     """The scene 'slider-crank' drawn at its state (``draw``: more options of ``draw_model``).
 
     Returns the scene, its kinematics and the outline points of the drawn bodies.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        Where to draw.
+    **draw : 
+        More options of :func:`planargeo.draw.mechanism.draw_model`.
+
+    Returns
+    -------
+    tuple
+        ``(SceneResult, Data, outline points)``.
     """
     res, d = scene_state("slider-crank")
     arts = draw_model(res.model, d, ax, width=0.3, labels=False, show_com=True, pin_radius=0.1,
