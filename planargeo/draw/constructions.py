@@ -23,6 +23,7 @@ from planargeo.geometry.projective import from_direction, from_xy, join, meet, t
 from planargeo.screws.twists import bias_force, kappa
 from planargeo.draw.artists import _mat, _vec, plot_conic, plot_line, plot_point
 from planargeo.draw.style import COLORS, get_ax, style, sum_style
+from planargeo.errors import InputError
 from planargeo.mechanics.subspaces import Decomposition
 
 __all__ = [
@@ -34,33 +35,147 @@ __all__ = [
 ]
 
 
-def label(ax, xy, text, *, offset=(5, 5), color=None, ha="left", va="bottom", **kw):
-    """A text label at data point ``xy`` shifted by ``offset`` points."""
-    return ax.annotate(text, xy=tuple(np.asarray(xy, float)), xytext=offset,
-                       textcoords="offset points", color=color or COLORS["text"],
-                       ha=ha, va=va, fontsize=kw.pop("fontsize", 8), **kw)
+def _is_axes(x) -> bool:
+    """True for a matplotlib axes (the former first argument of :func:`label`, :func:`draw_segment`
+    and :func:`draw_dimension`)."""
+    return hasattr(x, "transData") and hasattr(x, "annotate")
 
 
-def draw_segment(ax, p, q, role="construct", **kw):
-    """A finite segment between two Euclidean points in a role's style."""
+def _former_order(args: tuple, n: int, name: str, ax):
+    """``(ax, args)`` of a call in the former order ``name(ax, *args)``; ``args`` unchanged otherwise.
+
+    The former order put ``ax`` first; every drawing function now takes what
+    it draws first and ``ax=None`` as a keyword.  Calls in the former order
+    keep working (the gallery's figures use it) and are read as the new one.
+    """
+    if not args or not _is_axes(args[0]):
+        return ax, args
+    if ax is not None:
+        raise InputError(f"{name}: ax given twice (first argument and ax=)")
+    if len(args) < n + 1:
+        raise InputError(f"{name} needs {n} arguments besides ax, got {len(args) - 1}")
+    return args[0], args[1:]
+
+
+def label(*args, ax=None, offset=(5, 5), color=None, ha="left", va="bottom", **kw):
+    """A text label at data point ``xy`` shifted by ``offset`` points: ``label(xy, text, ax=None)``.
+
+    Parameters
+    ----------
+    xy : array_like (2,)
+        Euclidean data point the label refers to.
+    text : str
+        The label (matplotlib mathtext allowed).
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+        The former call ``label(ax, xy, text)`` is still read correctly.
+    offset : (float, float)
+        Shift of the text in points.
+    color, ha, va, **kw
+        Text colour (default the text colour of the style), alignment and
+        further :meth:`~matplotlib.axes.Axes.annotate` keywords (``fontsize``
+        defaults to 8 pt, 11 px at 100 dpi).
+
+    Returns
+    -------
+    matplotlib.text.Annotation
+
+    Raises
+    ------
+    InputError
+        Not two arguments ``xy, text`` (besides a leading axes).
+
+    Examples
+    --------
+    >>> import matplotlib; matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> label((1.0, 2.0), "$P$", ax=ax).get_text()
+    '$P$'
+    >>> plt.close(fig)
+    """
+    ax, args = _former_order(args, 2, "label", ax)
+    if len(args) != 2:
+        raise InputError(f"label takes (xy, text), got {len(args)} positional arguments")
+    xy, text = args
+    return get_ax(ax).annotate(text, xy=tuple(np.asarray(xy, float)), xytext=offset,
+                               textcoords="offset points", color=color or COLORS["text"],
+                               ha=ha, va=va, fontsize=kw.pop("fontsize", 8), **kw)
+
+
+def draw_segment(*args, ax=None, role="construct", **kw):
+    """A finite segment between two Euclidean points in a role's style: ``draw_segment(p, q, ax=None)``.
+
+    Parameters
+    ----------
+    p, q : array_like (2,)
+        The end points.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes).  The former call
+        ``draw_segment(ax, p, q[, role])`` is still read correctly.
+    role : str
+        Style role (:func:`~planargeo.draw.style.style`), default ``"construct"``.
+    **kw
+        Line properties overriding the role's.
+
+    Returns
+    -------
+    matplotlib.lines.Line2D
+
+    Raises
+    ------
+    InputError
+        Not two end points, or an unknown role.
+    """
+    ax, args = _former_order(args, 2, "draw_segment", ax)
+    if len(args) == 3:                      # the former positional role
+        args, role = args[:2], args[2]
+    if len(args) != 2:
+        raise InputError(f"draw_segment takes (p, q), got {len(args)} positional arguments")
+    p, q = args
     st = {k: v for k, v in style(role).items() if k in ("color", "linewidth", "linestyle")}
     st.update(kw)
-    (ln,) = ax.plot([p[0], q[0]], [p[1], q[1]], **st)
+    (ln,) = get_ax(ax).plot([p[0], q[0]], [p[1], q[1]], **st)
     return ln
 
 
-def draw_dimension(ax, p, q, text, *, offset=0.0, color=None, fontsize=7, at=0.5):
-    """A dimension arrow ``<->`` between Euclidean points ``p`` and ``q``, labelled ``text``.
+def draw_dimension(*args, ax=None, offset=0.0, color=None, fontsize=7, at=0.5):
+    """A dimension arrow ``<->`` between ``p`` and ``q``, labelled: ``draw_dimension(p, q, text, ax=None)``.
 
     The arrow is shifted by ``offset`` (data units) to the left of ``p → q``;
     the label sits at fraction ``at`` along it, on the same side.
+
+    Parameters
+    ----------
+    p, q : array_like (2,)
+        Distinct Euclidean points.
+    text : str
+        The dimension's label.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes).  The former call
+        ``draw_dimension(ax, p, q, text)`` is still read correctly.
+    offset, color, fontsize, at
+        Placement and look (see above).
+
+    Returns
+    -------
+    (Annotation, Annotation)
+        The arrow and its label.
+
+    Raises
+    ------
+    InputError
+        ``p`` and ``q`` coincide, or not three arguments ``p, q, text``.
     """
+    ax, args = _former_order(args, 3, "draw_dimension", ax)
+    if len(args) != 3:
+        raise InputError(f"draw_dimension takes (p, q, text), got {len(args)} positional arguments")
+    p, q, text = args
+    ax = get_ax(ax)
     p, q = np.asarray(p, float), np.asarray(q, float)
     d = q - p
     L = np.hypot(*d)
     if L == 0.0:
-        from planargeo.errors import InputError
-
         raise InputError("draw_dimension: p and q must be distinct points")
     n = np.array([-d[1], d[0]]) / L
     p2, q2 = p + offset * n, q + offset * n
@@ -165,7 +280,7 @@ def draw_wrench_sum(f1, f2, ax=None, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + 
         if parallelogram:
             a, b = Pxy + scale * f1[:2], Pxy + scale * f2[:2]
             c = Pxy + scale * f3[:2]
-            out["parallelogram"] = [draw_segment(ax, a, c), draw_segment(ax, b, c)]
+            out["parallelogram"] = [draw_segment(a, c, ax=ax), draw_segment(b, c, ax=ax)]
     return out
 
 
@@ -192,7 +307,7 @@ def draw_velocity_step(v_prev, s, qd, ax=None, *,
     out = {"v_prev": art["v1"], "joint": art["v2"], "v": art["v3"], "lever": art["lever"],
            "values": {"joint": u, "v": v_prev + u}}
     if dims and v_prev[2] != 0.0 and u[2] != 0.0:
-        out["k"] = draw_dimension(ax, to_xy(v_prev), to_xy(u), "$k$", offset=dim_offset)
+        out["k"] = draw_dimension(to_xy(v_prev), to_xy(u), "$k$", ax=ax, offset=dim_offset)
     return out
 
 
@@ -351,9 +466,9 @@ def draw_percussion(I, a, ax=None, *, names=("$a$", "$f = Ia$"), dims=True, scal
     axy = to_xy(a)
     if dims and a[2] != 0.0 and np.any(f[:2]):
         foot = to_xy(meet(f, join(a, from_xy(c))))
-        out["dims"] = [draw_dimension(ax, axy, c, "$d$", offset=0.0),
-                       draw_dimension(ax, c, foot, r"$\rho^2/d$", offset=0.0)]
-        out["lever"] = draw_segment(ax, axy, foot)
+        out["dims"] = [draw_dimension(axy, c, "$d$", ax=ax, offset=0.0),
+                       draw_dimension(c, foot, r"$\rho^2/d$", ax=ax, offset=0.0)]
+        out["lever"] = draw_segment(axy, foot, ax=ax)
     return out
 
 
