@@ -74,7 +74,7 @@ CASES = {
     "translations": ("two translations: the sum is a translation", "4.10"),
     "zero_sum": ("the sum is zero", "4.6"),
     "same_line": ("forces on one line: the sum acts on it too", "4.4.1"),
-    "parallel_forces": ("parallel forces: the lines meet at infinity (lever rule)", "4.43"),
+    "parallel_forces": ("parallel forces: the lines meet at infinity, lever rule", "4.43"),
     "couple_from_forces": ("equal and opposite parallel forces: a pure couple", "4.4.2"),
     "concurrent": ("concurrent forces: the sum passes through their meet", "4.4.1"),
     "force_couple": ("force plus couple: the line shifts by τ/F", "4.46"),
