@@ -13,8 +13,8 @@ kind               what is constructed                                          
 =================  ============================================================  ============
 ``twist_sum``      ``v₃ = v₁ + v₂``: the pole on the line of the poles           4.11–4.16
 ``wrench_sum``     ``f₃ = f₁ + f₂``: the line through the meet of the lines      4.33–4.46
-``velocity``       ``v_i = v_{i−1} + s_i q̇_i`` across a revolute joint          4.47–4.49
-``acceleration``   ``a_i = a_{i−1} + s_i q̈_i + v_i × s_i q̇_i``                  4.52–4.54
+``velocity``       ``vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ`` across a revolute joint          4.47–4.49
+``acceleration``   ``aᵢ = aᵢ₋₁ + sᵢ q̈ᵢ + vᵢ × sᵢ q̇ᵢ``                  4.52–4.54
 ``newton_euler``   ``f_net = I a + p`` and the joint torque as ``ρ = τ/F``       4.55–4.57
 =================  ============================================================  ============
 
@@ -299,25 +299,25 @@ def _velocity(xv=-1.5, yv=1.0, w=1.0, xj=1.0, yj=0.0, qd=1.5) -> Construction:
     v = v_prev + u
     k = math.hypot(xj - xv, yj - yv)
     case = twists_case(v_prev, u)
-    steps = [ConstructionStep("previous", "v_{i−1}: the pole of the previous body", "4.47",
+    steps = [ConstructionStep("previous", "vᵢ₋₁: the pole of the previous body", "4.47",
                               (_pt("v_prev", v_prev, "twist", "$v_{i-1}$"),)),
-             ConstructionStep("joint", "s_i q̇_i: the joint's relative rotation, its pole at the "
+             ConstructionStep("joint", "sᵢ q̇ᵢ: the joint's relative rotation, its pole at the "
                               "joint", "2.1", (_pt("joint", u, "twist", r"$s_i\dot q_i$"),))]
     if k == 0:
-        steps.append(ConstructionStep("lever", "the joint is at the pole of v_{i−1}: k_i = 0", "4.48"))
+        steps.append(ConstructionStep("lever", "the joint is at the pole of vᵢ₋₁: kᵢ = 0", "4.48"))
     else:
-        steps.append(ConstructionStep("lever", f"k_i = {_num(k)}: the line from v_{{i−1}} to the "
+        steps.append(ConstructionStep("lever", f"kᵢ = {_num(k)}: the line from vᵢ₋₁ to the "
                                       "joint", "4.48", (_ln("lever", join(v_prev, s), "construct"),)))
     beta = qd / (qd + w) if qd + w != 0 else float("inf")
     if np.any(v):
-        title = (f"v_i on it at β_i k_i, β_i = q̇_i/(q̇_i + ω_{{i−1}}) = {_num(beta)}; "
-                 f"ω_i = {_num(v[2])}")
+        title = (f"vᵢ on it at βᵢ kᵢ, βᵢ = q̇ᵢ/(q̇ᵢ + ωᵢ₋₁) = {_num(beta)}; "
+                 f"ωᵢ = {_num(v[2])}")
         steps.append(ConstructionStep("sum", title, "4.48–4.49",
                                       (_pt("v", v, "twist", "$v_i$", True),)))
     else:
-        steps.append(ConstructionStep("sum", "v_i = 0: the body is at rest", "4.47"))
-    values = {"ω_{i−1}": w, "q̇_i": qd, "ω_i": float(v[2]), "k_i": k, "β_i": beta,
-              "pole of v_i": "none" if not np.any(v) else _xy_or_inf(v)}
+        steps.append(ConstructionStep("sum", "vᵢ = 0: the body is at rest", "4.47"))
+    values = {"ωᵢ₋₁": w, "q̇ᵢ": qd, "ωᵢ": float(v[2]), "kᵢ": k, "βᵢ": beta,
+              "pole of vᵢ": "none" if not np.any(v) else _xy_or_inf(v)}
     return Construction("velocity", "Velocity kinematics", tuple(steps), values, case.text)
 
 
@@ -329,47 +329,51 @@ def _acceleration(xv=-1.5, yv=1.0, w=1.0, xa=-1.0, ya=-1.0, alpha=0.5, xj=1.0, y
     s = unit_rotation([xj, yj])
     v = v_prev + s * qd
     rel = s * qdd
-    kap = kappa(v_prev, s, qd)                  # = v_i × s_i q̇_i (4.52)
+    kap = kappa(v_prev, s, qd)                  # = vᵢ × sᵢ q̇ᵢ (4.52)
     combo = rel + kap
     a = a_prev + combo
     k = math.hypot(xj - xv, yj - yv)
-    steps = [ConstructionStep("previous", "a_{i−1}: the acceleration pole of the previous body",
+    steps = [ConstructionStep("previous", "aᵢ₋₁: the acceleration pole of the previous body",
                               "4.52", (_pt("a_prev", a_prev, "accel", "$a_{i-1}$"),) if np.any(a_prev)
                               else ()),
-             ConstructionStep("velocity", "v_i = v_{i−1} + s_i q̇_i: the velocity pole", "4.47",
+             ConstructionStep("velocity", "vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ: the velocity pole", "4.47",
                               (_pt("v", v, "twist", "$v_i$"),) if np.any(v) else ()),
-             ConstructionStep("joint", "s_i q̈_i: the relative acceleration about the joint", "4.52",
+             ConstructionStep("joint", "sᵢ q̈ᵢ: the relative acceleration about the joint", "4.52",
                               (_pt("rel", rel, "accel", r"$s_i\ddot q_i$"),) if qdd != 0 else ())]
     kn = float(np.hypot(kap[0], kap[1]))
-    steps.append(ConstructionStep("bias", f"κ_i = v_i × s_i q̇_i: a translation along the line to "
-                                  f"the joint, |κ_i| = ω_{{i−1}} q̇_i k_i = {_num(kn)}", "4.53",
+    steps.append(ConstructionStep("bias", f"κᵢ = vᵢ × sᵢ q̇ᵢ: a translation along the line to "
+                                  f"the joint, |κᵢ| = ωᵢ₋₁ q̇ᵢ kᵢ = {_num(kn)}", "4.53",
                                   (_pt("kappa", kap, "accel", r"$\kappa_i$"),) if kn else ()))
-    if np.any(combo):
-        rho = kn / qdd if qdd != 0 else float("inf")
+    if qdd == 0 and np.any(combo):
+        rho = float("inf")
+        steps.append(ConstructionStep("combined", "q̈ᵢ = 0: sᵢ q̈ᵢ + κᵢ is κᵢ itself, a translation "
+                                      "(ρᵢ = ∞)", "4.54"))
+    elif np.any(combo):
+        rho = kn / qdd
         els = [_pt("combo", combo, "accel", r"$s_i\ddot q_i + \kappa_i$")]
         if qdd != 0 and kn:
             els.append(_ln("joint_lever", np.cross(rel, kap), "construct"))
-        steps.append(ConstructionStep("combined", f"s_i q̈_i + κ_i: a rotation ρ_i = ω_{{i−1}} q̇_i k_i"
-                                      f"/q̈_i = {_num(rho)} from the joint", "4.54", tuple(els)))
+        steps.append(ConstructionStep("combined", f"sᵢ q̈ᵢ + κᵢ: a rotation ρᵢ = ωᵢ₋₁ q̇ᵢ kᵢ"
+                                      f"/q̈ᵢ = {_num(rho)} from the joint", "4.54", tuple(els)))
     else:
         rho = float("nan")
-        steps.append(ConstructionStep("combined", "s_i q̈_i + κ_i = 0: the joint adds nothing", "4.54"))
+        steps.append(ConstructionStep("combined", "sᵢ q̈ᵢ + κᵢ = 0: the joint adds nothing", "4.54"))
     els = []
     if np.any(a_prev) and np.any(combo) and np.linalg.norm(np.cross(a_prev, combo)) > 0:
         els.append(_ln("lever", np.cross(a_prev, combo), "construct"))
     if np.any(a):
         els.append(_pt("a", a, "accel", "$a_i$", True))
-    steps.append(ConstructionStep("sum", "a_i = a_{i−1} + (s_i q̈_i + κ_i): on the line joining "
+    steps.append(ConstructionStep("sum", "aᵢ = aᵢ₋₁ + (sᵢ q̈ᵢ + κᵢ): on the line joining "
                                   "their poles", "4.52", tuple(els)))
-    values = {"ω_{i−1}": w, "q̇_i": qd, "q̈_i": qdd, "k_i": k, "|κ_i|": kn, "ρ_i": rho,
-              "pole of a_i": "none" if not np.any(a) else _xy_or_inf(a),
-              "a_i": tuple(float(x) for x in a)}
+    values = {"ωᵢ₋₁": w, "q̇ᵢ": qd, "q̈ᵢ": qdd, "kᵢ": k, "|κᵢ|": kn, "ρᵢ": rho,
+              "pole of aᵢ": "none" if not np.any(a) else _xy_or_inf(a),
+              "aᵢ": tuple(float(x) for x in a)}
     case = twists_case(a_prev, combo) if np.any(a_prev) and np.any(combo) else twists_case(a, a)
     return Construction("acceleration", "Acceleration kinematics", tuple(steps), values, case.text)
 
 
 # --------------------------------------------------------------------------- Newton–Euler (4.7)
-def _newton_euler(m=1.0, xc=0.5, yc=0.0, r=0.4, xv=-1.0, yv=1.5, w=1.0, xa=1.5, ya=1.0, alpha=1.0,
+def _newton_euler(m=1.0, xc=0.5, yc=0.0, r=0.4, xv=0.5, yv=2.0, w=1.5, xa=2.0, ya=-1.0, alpha=1.5,
                   xj=-0.5, yj=0.0) -> Construction:
     if not m > 0:
         raise InputError(f"m must be positive, got {m!r}")
@@ -491,7 +495,7 @@ def construct(kind: str, **params) -> Construction:
     Examples
     --------
     >>> c = construct("velocity", xv=0.0, yv=0.0, w=1.0, xj=3.0, yj=0.0, qd=2.0)
-    >>> c.values["pole of v_i"]                     # β k = 2/3 · 3 along the lever (4.48)
+    >>> c.values["pole of vᵢ"]                     # β k = 2/3 · 3 along the lever (4.48)
     (2.0, 0.0)
     >>> construct("twist_sum", w2=0.0, u2=0.0)
     Traceback (most recent call last):

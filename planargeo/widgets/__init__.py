@@ -64,6 +64,7 @@ EXPLORERS = {
     "CarExplorer": "car",
     "SliderCrankExplorer": "slider_crank",
     "TreeExplorer": "trees",
+    "ConstructionExplorer": "construction",
 }
 __all__ += list(EXPLORERS)
 
