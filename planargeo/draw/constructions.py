@@ -191,13 +191,49 @@ def draw_dimension(*args, ax=None, offset=0.0, color=None, fontsize=7, at=0.5):
 # --------------------------------------------------------------------------- conic helpers
 def line_conic_points(C, L) -> list[np.ndarray]:
     """Real common points of line ``L`` and conic ``C`` (0 or 2 homogeneous points; GEO's
-    :func:`planargeo.geometry.conics.line_conic_intersections`)."""
+    :func:`planargeo.geometry.conics.line_conic_intersections`).
+
+    Parameters
+    ----------
+    C : array_like (3, 3)
+        A conic.
+    L : array_like (3,)
+        A line.
+
+    Returns
+    -------
+    list of ndarray (3,)
+        The two real common points, or an empty list when the line misses the conic.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
+    """
     X, real = line_conic_intersections(_mat(C, "C"), _vec(L, "L"))
     return [X[0], X[1]] if bool(real) else []
 
 
 def tangent_points(C, p) -> list[np.ndarray]:
-    """Points where the tangents from ``p`` touch ``C``: the conic meets the polar ``C p`` (5.36)."""
+    """Points where the tangents from ``p`` touch ``C``: the conic meets the polar ``C p`` (5.36).
+
+    Parameters
+    ----------
+    C : array_like (3, 3)
+        A conic.
+    p : array_like (3,)
+        A point (exterior for real contacts).
+
+    Returns
+    -------
+    list of ndarray (3,)
+        The two contact points, or an empty list for an interior point.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
+    """
     C = _mat(C, "C")
     return line_conic_points(C, polar(C, _vec(p, "p")))
 
@@ -217,6 +253,33 @@ def draw_twist_sum(v1, v2, ax=None, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v
     :func:`~planargeo.draw.style.sum_style` (larger diamond).  Coincident poles
     (``v2`` a multiple of ``v1``) have no lever line: its artist then draws
     nothing.  Returns the artists ``{"v1", "v2", "v3", "lever"}``.
+
+    Parameters
+    ----------
+    v1, v2 : array_like (3,)
+        The twists (points).
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    labels : (str, str, str)
+        Labels of ``v1``, ``v2`` and the sum.
+    lever : bool
+        Draw the line joining the poles.
+    glyph_scale : float
+        Rotation glyph size (points per unit rate).
+    role : str
+        Style role of the three points.
+    text_offsets : (offset, offset, offset)
+        Label offsets in points (None: automatic).
+
+    Returns
+    -------
+    dict
+        The artists ``{"v1", "v2", "v3", "lever"}``.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
 
     Examples
     --------
@@ -256,6 +319,37 @@ def draw_wrench_sum(f1, f2, ax=None, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + 
     at ``ρ = τ/F`` (4.46).  The sum is a wrench like its terms: same ``role``
     colour, heavier line (:func:`~planargeo.draw.style.sum_style`).
     Returns ``{"f1", "f2", "f3", "meet", ...}``.
+    
+
+    Parameters
+    ----------
+    f1, f2 : array_like (3,)
+        The wrenches (lines).
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    labels : (str, str, str)
+        Labels of ``f1``, ``f2`` and the sum.
+    scale : float
+        Force arrow length per unit force (data units).
+    anchors : (xy, xy, xy)
+        Where each arrow sits (None: automatic; the parallelogram's corners when drawn).
+    parallelogram : bool
+        Draw the force parallelogram at the meet of crossing lines.
+    text_offsets : (offset, offset, offset)
+        Label offsets in points.
+    role : str
+        Style role of the three lines.
+
+    Returns
+    -------
+    dict
+        The artists ``{"f1", "f2", "f3"}`` and, for crossing lines, ``"meet"`` and
+        ``"parallelogram"``.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
     """
     ax = get_ax(ax)
     f1, f2 = _vec(f1, "f1"), _vec(f2, "f2")
@@ -299,6 +393,34 @@ def draw_velocity_step(v_prev, s, qd, ax=None, *,
     Returns the artists of :func:`draw_twist_sum` keyed ``{"v_prev", "joint",
     "v", "lever"}`` (plus ``"k"``) and ``"values"``: the arrays
     ``{"joint": s q̇, "v": v_i}``.
+    
+
+    Parameters
+    ----------
+    v_prev : array_like (3,)
+        The previous body's twist ``v_{i-1}``.
+    s : array_like (3,)
+        The joint's unit twist ``s_i``.
+    qd : float
+        The joint speed ``q̇_i``.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    names : (str, str, str)
+        Labels of ``v_{i-1}``, ``s_i q̇_i`` and ``v_i``.
+    text_offsets : (offset, offset, offset)
+        Label offsets in points.
+    dims, dim_offset
+        Dimension the distance ``k`` (offset to the left of the lever, data units).
+
+    Returns
+    -------
+    dict
+        See above.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
     """
     ax = get_ax(ax)
     v_prev = _vec(v_prev, "v_prev")
@@ -326,6 +448,32 @@ def draw_acceleration_step(a_prev, v_prev, s, qd, qdd, ax=None, *,
 
     Returns the artists ``{"a_prev", "joint", "bias", "joint_total", "a",
     "lever", "joint_lever"}`` and ``"values"`` (the arrays of the same names).
+    
+
+    Parameters
+    ----------
+    a_prev, v_prev : array_like (3,)
+        The previous body's acceleration and velocity twists.
+    s : array_like (3,)
+        The joint's unit twist.
+    qd, qdd : float
+        Joint speed and acceleration.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    names : tuple of 5 str
+        Labels of the five points.
+    text_offsets : tuple of 5 offsets
+        Label offsets in points.
+
+    Returns
+    -------
+    dict
+        See above.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
     """
     ax = get_ax(ax)
     a_prev, v_prev, s = _vec(a_prev, "a_prev"), _vec(v_prev, "v_prev"), _vec(s, "s")
@@ -361,6 +509,36 @@ def draw_newton_euler(I, a, v, ax=None, *, scale=None, names=("$v$", "$a$", "$Ia
 
     Returns the artists ``{"inertia", "v", "a", "Ia", "p", "f_net"}`` and
     ``"values"`` (the arrays ``Ia``, ``p``, ``f_net``).
+    
+
+    Parameters
+    ----------
+    I : array_like (3, 3)
+        The body's inertia.
+    a, v : array_like (3,)
+        Its acceleration and velocity twists.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    scale : float, optional
+        Force arrow length per unit force (None: no arrows).
+    names : tuple of 5 str
+        Labels of ``v``, ``a``, ``Ia``, ``p`` and ``f_net``.
+    positions : (float, float, float)
+        Where the arrows of ``Ia``, ``p`` and ``f_net`` sit (see above).
+    text_offsets : tuple of 5 offsets
+        Label offsets in points.
+    inertia : bool
+        Draw the inertia's circle of gyration.
+
+    Returns
+    -------
+    dict
+        See above.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
     """
     ax = get_ax(ax)
     I, a, v = _mat(I, "inertia"), _vec(a, "a"), _vec(v, "v")
@@ -392,7 +570,29 @@ def draw_newton_euler(I, a, v, ax=None, *, scale=None, names=("$v$", "$a$", "$Ia
 
 # --------------------------------------------------------------------------- pole / polar
 def draw_tangent(C, q, ax=None, *, text=None):
-    """The tangent ``C q`` at a point ``q`` of the conic (5.38–5.39)."""
+    """The tangent ``C q`` at a point ``q`` of the conic (5.38–5.39).
+
+    Parameters
+    ----------
+    C : array_like (3, 3)
+        A conic.
+    q : array_like (3,)
+        A point of the conic.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    text : str, optional
+        Label of the point.
+
+    Returns
+    -------
+    dict
+        The artists ``{"q", "tangent"}``.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
+    """
     ax = get_ax(ax)
     C, q = _mat(C, "C"), _vec(q, "q")
     return {"q": plot_point(q, ax, role="twist", glyph=False, text=text),
@@ -400,7 +600,32 @@ def draw_tangent(C, q, ax=None, *, text=None):
 
 
 def draw_polar_exterior(C, p, ax=None, *, names=("$P$", "$L = CP$"), L_anchor=None):
-    """Polar of an exterior point (thesis 5.36, Fig. 5.2): tangents from ``p``; ``L`` joins their contacts."""
+    """Polar of an exterior point (thesis 5.36, Fig. 5.2): tangents from ``p``; ``L`` joins their contacts.
+
+    Parameters
+    ----------
+    C : array_like (3, 3)
+        A real conic.
+    p : array_like (3,)
+        An exterior point.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    names : (str, str)
+        Labels of the point and its polar.
+    L_anchor : (x, y), optional
+        Where the polar's label sits.
+
+    Returns
+    -------
+    dict
+        The artists ``{"conic", "P", "L", "tangents", "touch_marks"}`` and
+        ``"construction"`` (:class:`~planargeo.geometry.conics.ExteriorConstruction`).
+
+    Raises
+    ------
+    InputError
+        An interior point (no real tangents).
+    """
     ax = get_ax(ax)
     C, p = _mat(C, "C"), _vec(p, "p")
     K = polar_construction_exterior(C, p)
@@ -424,6 +649,36 @@ def draw_polar_interior(C, p, ax=None, *, angles=(0.35, 1.9), names=("$P$", "$L 
     its chord (Theorem 12), which is why ``L`` passes through both.
     ``L_anchor`` places ``L``'s label; ``text_offsets`` are for ``P``, ``L``,
     ``R_1``, ``R_2`` (points, None: automatic).
+    
+
+    Parameters
+    ----------
+    C : array_like (3, 3)
+        A real conic.
+    p : array_like (3,)
+        An interior point.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    angles : (float, float)
+        Directions (radians) of the two chords through ``p``.
+    names : (str, str)
+        Labels of the point and its polar.
+    L_anchor : (x, y), optional
+        Where the polar's label sits.
+    text_offsets : tuple of 4 offsets
+        Label offsets of ``P``, ``L``, ``R_1``, ``R_2``.
+
+    Returns
+    -------
+    dict
+        The artists ``{"conic", "P", "chords", "R1", "R2", "L"}`` and
+        ``"construction"`` (:class:`~planargeo.geometry.conics.InteriorConstruction`).
+
+    Raises
+    ------
+    PlanargeoError
+        A chord that misses the conic (named by
+        :func:`~planargeo.geometry.conics.polar_construction_interior`).
     """
     ax = get_ax(ax)
     C, p = _mat(C, "C"), _vec(p, "p")
@@ -454,6 +709,36 @@ def draw_percussion(I, a, ax=None, *, names=("$a$", "$f = Ia$"), dims=True, scal
     axis; with ``dims`` the distances ``d`` (pole to centre of mass) and
     ``ρ²/d`` (centre of mass to the axis) along the line through both.
     ``f_anchor`` places the axis's label (and arrow, with ``scale``) along it.
+    
+
+    Parameters
+    ----------
+    I : array_like (3, 3)
+        The inertia.
+    a : array_like (3,)
+        The acceleration pole.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    names : (str, str)
+        Labels of the pole and the axis.
+    dims : bool
+        Dimension ``d`` and ``ρ²/d``.
+    scale : float, optional
+        Force arrow length per unit force (None: no arrow).
+    f_anchor : (x, y), optional
+        Where the axis's label (and arrow) sits.
+    text_offsets : (offset, offset)
+        Label offsets in points.
+
+    Returns
+    -------
+    dict
+        The artists ``{"inertia", "a", "f"}`` and, with ``dims``, ``"dims"`` and ``"lever"``.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
     """
     ax = get_ax(ax)
     I, a = _mat(I, "inertia"), _vec(a, "a")
@@ -494,6 +779,32 @@ def draw_power(v, I, ax=None, *, f_angle=0.6, a_distance=1.6,
 
     Returns the artists ``{"inertia", "v", "p", "f", "a"}`` and ``"values"``
     (the arrays ``p``, ``f``, ``a``).
+    
+
+    Parameters
+    ----------
+    v : array_like (3,)
+        The velocity twist.
+    I : array_like (3, 3)
+        The inertia.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    f_angle, a_distance, f_label_at, p_label_at : float
+        Placement (see above).
+    names : tuple of 4 str
+        Labels of ``v``, ``p``, ``f`` and ``a``.
+    text_offsets : tuple of 4 offsets
+        Label offsets in points.
+
+    Returns
+    -------
+    dict
+        See above.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
     """
     ax = get_ax(ax)
     v, I = _vec(v, "v"), _mat(I, "inertia")
@@ -580,6 +891,14 @@ def draw_decomposition(s, R, A, ax=None, *, reactive="U", labels=None, anchors=N
         The artists keyed as above (one column: ``"s"``, ``"T"``; several:
         ``"s1"``, ``"T1"``...), and ``"values"``: the arrays ``{"T", "U",
         "AiR"}`` (``AiR = A⁻¹R``).
+
+    Raises
+    ------
+    InputError
+        ``reactive`` is neither "U" nor "inverse".
+    PlanargeoError
+        Spaces or an inertia the decomposition refuses (named by
+        :class:`~planargeo.mechanics.subspaces.Decomposition`).
 
     Examples
     --------
@@ -745,8 +1064,19 @@ def draw_wrench_split(s, R, A, f, ax=None, *, parts=(1, 2),
     joint, ``a₁ = A⁻¹f₁ = s TᵀA⁻¹f``; the reaction ``f₂ = Rμ`` passes through
     the joint and produces ``a₂ = A⁻¹f₂ = U RᵀA⁻¹f`` on ``T`` (6.80–6.81).
 
-    Parameters and returns as :func:`draw_twist_split` (``f`` instead of
-    ``a``); ``"values"``: ``{"T", "U", "Q", "mu", "f1", "f2", "a1", "a2"}``.
+    Parameters
+    ----------
+    s, R, A, parts, names, text_offsets, scale, arrow_length, show_T, T_anchor
+        As :func:`draw_twist_split`.
+    f : array_like (3,)
+        The force to split.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes).
+
+    Returns
+    -------
+    dict
+        As :func:`draw_twist_split`; ``"values"``: ``{"T", "U", "Q", "mu", "f1", "f2", "a1", "a2"}``.
 
     Examples
     --------
@@ -786,6 +1116,35 @@ def draw_projective_step(s, R, A, a_prev, a, kappa, ax=None, *,
 
     Returns the artists ``{"T", "s", "a_prev", "a"}`` (first columns for a
     multi-dof joint) and ``"values"``: ``{"T", "psi", "psi_prev", "qdd"}``.
+
+    Parameters
+    ----------
+    s, R : array_like (3, k), (3, 3-k)
+        Motion and reaction spaces of joint ``i``.
+    A : array_like (3, 3)
+        The body inertia.
+    a_prev, a : array_like (3,)
+        Accelerations of the parent and of the body.
+    kappa : array_like (3,)
+        The joint's bias acceleration ``κ_i``.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    names : tuple of 4 str
+        Labels of ``T_i``, ``s_i``, ``a_{i-1}``, ``a_i``.
+    text_offsets : tuple of 4 offsets
+        Label offsets in points.
+    T_anchor : (x, y), optional
+        Where ``T_i``'s label sits.
+
+    Returns
+    -------
+    dict
+        See above.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
 
     Examples
     --------

@@ -108,6 +108,12 @@ class ScrewSumExplorer(Explorer):
              "case": "—", "special case": "—", "sum": "—"}
 
     def make_controls(self):
+        """The mode ``add`` and, per screw, its kind, point, size and direction.
+
+        Returns
+        -------
+        dict
+        """
         kinds = W.ToggleButtons(options=("twists", "wrenches"), value="twists", description="add")
         c = {"add": kinds}
         for k, (x, y, mag, ang) in ((1, (-1.5, 0.0, 1.0, 0.0)), (2, (1.5, 0.5, 2.0, 90.0))):
@@ -120,7 +126,20 @@ class ScrewSumExplorer(Explorer):
         return c
 
     def adjust(self, values, changed):
-        """Keep the kinds consistent with the mode (twists: rotation/translation...)."""
+        """Keep the kinds consistent with the mode (twists: rotation/translation...).
+
+        Parameters
+        ----------
+        values : dict
+            The control values.
+        changed : set
+            The controls that changed.
+
+        Returns
+        -------
+        dict
+            Kinds that follow a change of ``add``.
+        """
         if "add" not in changed:
             return {}
         mapping = {"twists": {"force": "rotation", "couple": "translation"},
@@ -129,6 +148,12 @@ class ScrewSumExplorer(Explorer):
                 if values[f"kind{k}"] in mapping}
 
     def make_artists(self, ax):
+        """The poles, the lever line, the force lines and their meet, made once.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+        """
         z = np.array([0.0, 0.0, 1.0])
         zl = np.array([1.0, 0.0, 0.0])
         self.q1 = ax.add_artist(PointArtist(z, role="twist", text="$v_1$"))
@@ -158,6 +183,25 @@ class ScrewSumExplorer(Explorer):
         return Wrench.couple(m)
 
     def compute(self, v, changed):
+        """The sum's construction (:func:`~planargeo.screws.twists.add_twists` or ``add_wrenches``).
+
+        Parameters
+        ----------
+        v : dict
+            The control values.
+        changed : set
+            The controls that changed.
+
+        Returns
+        -------
+        dict
+            ``{"mode", "c"}``.
+
+        Raises
+        ------
+        PlanargeoError
+            A zero screw (named), or a sum beyond double precision.
+        """
         mode = v["add"]
         s1, s2 = self._screw(v, 1), self._screw(v, 2)
         if mode == "twists":
@@ -169,6 +213,17 @@ class ScrewSumExplorer(Explorer):
         return {"mode": mode, "c": add_wrenches(s1, s2)}
 
     def render(self, st):
+        """Update the artists and return the readout (numbers with units, the special case).
+
+        Parameters
+        ----------
+        st : dict
+            The computed state.
+
+        Returns
+        -------
+        dict
+        """
         c = st["c"]
         tw = st["mode"] == "twists"
         for a in (self.q1, self.q2, self.p3, self.join):
