@@ -2,6 +2,7 @@
 
 What is drawn comes first; ``ax`` is a parameter with default ``None`` (the
 current axes, :func:`planargeo.draw.style.get_ax`), never the first parameter.
+A function whose only parameter is ``ax`` (``legend_handles(ax=None)``) is fine.
 The test inspects every public function of every module of ``planargeo.draw``
 (names in the module's ``__all__``, or, without one, every public function
 defined there): one that has an ``ax`` parameter, or whose name says it draws
@@ -65,8 +66,8 @@ def ax_problem(f) -> str | None:
         return "has no ax parameter"
     p = ax[0]
     positional = [q for q in params if q.kind in (q.POSITIONAL_ONLY, q.POSITIONAL_OR_KEYWORD)]
-    if positional and positional[0].name == "ax":
-        return "takes ax as its first parameter"
+    if positional and positional[0].name == "ax" and len(positional) > 1:
+        return "takes ax as its first parameter"       # (ax alone, e.g. legend_handles(ax=None), is fine)
     if p.kind is p.POSITIONAL_ONLY:
         return "takes ax positionally only"
     if p.default is not None:
@@ -87,7 +88,10 @@ def test_the_rule_itself():
     def nodefault(x, ax):
         pass
 
-    assert ax_problem(good) is None and ax_problem(kwonly) is None
+    def alone(ax=None):
+        pass
+
+    assert ax_problem(good) is None and ax_problem(kwonly) is None and ax_problem(alone) is None
     assert ax_problem(first) == "takes ax as its first parameter"
     assert ax_problem(nodefault) == "ax has default <class 'inspect._empty'>, not None"
     assert ax_problem(lambda x: 0) == "has no ax parameter"
