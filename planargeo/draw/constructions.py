@@ -62,6 +62,8 @@ def label(*args, ax=None, offset=(5, 5), color=None, ha="left", va="bottom", **k
 
     Parameters
     ----------
+    *args
+        ``xy, text`` (below); the former order ``ax, xy, text`` is read too.
     xy : array_like (2,)
         Euclidean data point the label refers to.
     text : str
@@ -108,6 +110,8 @@ def draw_segment(*args, ax=None, role="construct", **kw):
 
     Parameters
     ----------
+    *args
+        ``p, q`` (below); the former order ``ax, p, q[, role]`` is read too.
     p, q : array_like (2,)
         The end points.
     ax : matplotlib.axes.Axes, optional
@@ -147,6 +151,8 @@ def draw_dimension(*args, ax=None, offset=0.0, color=None, fontsize=7, at=0.5):
 
     Parameters
     ----------
+    *args
+        ``p, q, text`` (below); the former order ``ax, p, q, text`` is read too.
     p, q : array_like (2,)
         Distinct Euclidean points.
     text : str
@@ -878,6 +884,8 @@ def draw_decomposition(s, R, A, ax=None, *, reactive="U", labels=None, anchors=N
         Motion and reaction spaces of the joint (``sᵀR = 0``).
     A : array_like (3, 3)
         The (rigid or articulated) inertia, positive definite.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes).
     reactive : {"U", "inverse"}
         Which accelerations to mark for the reactions (see above).
     labels, anchors, text_offsets : dict, optional
@@ -1010,6 +1018,8 @@ def draw_twist_split(s, R, A, a, ax=None, *, parts=(1, 2),
         As in :func:`draw_decomposition`.
     a : array_like (3,)
         The acceleration to split.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes).
     parts : sequence of {1, 2}
         Which parts to draw (e.g. one per panel); the values hold both.
     names, text_offsets : dict, optional

@@ -42,7 +42,7 @@ from planargeo.files import atomic_write
 from planargeo.scenes.construction import CONSTRUCTIONS, construct, parameters
 from planargeo.widgets.base import Explorer, Handle, Step
 
-__all__ = ["ConstructionExplorer", "StepLayer"]
+__all__ = ["ConstructionExplorer"]
 
 #: the parameters' sliders: name pattern -> (lo, hi, step, unit)
 _RANGES = {
