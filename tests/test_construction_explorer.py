@@ -199,3 +199,32 @@ def test_registered():
     assert EXPLORERS["ConstructionExplorer"] == "construction"
     with pytest.raises(InputError, match="construction must be one of"):
         ConstructionExplorer("nothing", display="agg")
+
+
+def test_a_pole_dragged_through_infinity(tmp_path):
+    """10.2.4: the handle h crosses the horizon |h| = R = 2; v₂ = k [h_y, −h_x, 1 − |h|/R].
+
+    By hand, with h = (t, 0) and k = 1.5: v₂ = 1.5 [0, −t, 1 − t/2], a rotation about
+    (t / (1 − t/2), 0) — (6, 0) at t = 1.5, off to +∞ as t → 2, the translation (0, -3) at
+    t = 2 exactly, back from −∞ beyond (−42, 0) at t = 2.1.  The sum with v₁ (ω 1 about
+    (−1.5, −1)) moves continuously, and nothing is refused on the way.
+    """
+    e = ConstructionExplorer("through_infinity", display="agg")
+    poles, sums = [], []
+    for t in (1.5, 1.9, 2.0, 2.1, 2.5):
+        e.drag("h", e.handle_position("h"), (t, 0.0), steps=1)
+        assert e.message == "" and legibility_problems(e.fig) == []
+        poles.append(e.readout_values["pole of v2"])
+        sums.append(np.array(e.readout_values["v3"]))
+    assert poles[0] == pytest.approx((6.0, 0.0)) and poles[1][0] == pytest.approx(38.0)
+    assert poles[2] == "at infinity" and poles[3][0] == pytest.approx(-42.0)
+    v1 = np.array([-1.0, 1.5, 1.0])                          # ω [y, −x, 1] about (−1.5, −1)
+    for t, s in zip((1.5, 1.9, 2.0, 2.1, 2.5), sums):
+        assert s == pytest.approx(v1 + 1.5 * np.array([0.0, -t, 1 - t / 2]))
+    names = []
+    for t in (1.9, 2.0, 2.1):
+        e.drag("h", e.handle_position("h"), (t, 0.0), steps=1)
+        names.append(e.readout_values["v₂"].split(":")[0])
+    assert names == ["rotation about a finite pole (4.10)", "pure translation",
+                     "rotation about a finite pole (4.10)"]
+    assert [s.equation for s in e.state["c"].steps][0] == "10.2.4"

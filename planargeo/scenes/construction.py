@@ -16,6 +16,7 @@ kind               what is constructed                                          
 ``velocity``       ``vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ`` across a revolute joint          4.47–4.49
 ``acceleration``   ``aᵢ = aᵢ₋₁ + sᵢ q̈ᵢ + vᵢ × sᵢ q̇ᵢ``                  4.52–4.54
 ``newton_euler``   ``f_net = I a + p`` and the joint torque as ``ρ = τ/F``       4.55–4.57
+``through_inf…``  a pole dragged through infinity (``through_infinity``)       10.2.4
 =================  ============================================================  ============
 
 Special cases are ordinary values (thesis 10.2.4): a sum whose pole is at
@@ -41,7 +42,8 @@ import numpy as np
 from planargeo.errors import InputError
 from planargeo.geometry.projective import from_xy, join, to_xy
 from planargeo.screws.inertia import centre_of_mass
-from planargeo.screws.special import pair_case, twists_case, wrench_case, wrenches_case
+from planargeo.screws.special import (horizon_point, pair_case, twist_case, twists_case, wrench_case,
+                                      wrenches_case)
 from planargeo.screws.twists import (add_twists, add_wrenches, bias_force, inertia_matrix, kappa,
                                      unit_rotation)
 
@@ -430,6 +432,42 @@ def _newton_euler(m=1.0, xc=0.5, yc=0.0, r=0.4, xv=0.5, yv=2.0, w=1.5, xa=2.0, y
     return Construction("newton_euler", "Newton–Euler balance of one body", tuple(steps), values, case)
 
 
+# --------------------------------------------------------------------------- 10.2.4
+#: radius of the horizon of :func:`_through_infinity` (the line at infinity in the disc model)
+HORIZON = 2.0
+
+
+def _through_infinity(x1=-1.5, y1=-1.0, w1=1.0, hx=1.0, hy=0.5, k=1.5) -> Construction:
+    v1 = _nonzero(w1 * unit_rotation([x1, y1]), "v1", "twist")
+    v2 = k * horizon_point([hx, hy], (0.0, 0.0), HORIZON)
+    v2 = _nonzero(v2, "v2", "twist")
+    c = add_twists(v1, v2)
+    horizon = np.diag([1.0, 1.0, -HORIZON ** 2])           # the circle |x| = R (5.35)
+    w = 1.0 - np.hypot(hx, hy) / HORIZON
+    case2 = twist_case(v2)
+    steps = [ConstructionStep("horizon", f"the horizon |h| = {_num(HORIZON)}: a handle h on it means "
+                              "a point at infinity (opposite rim points are one)", "10.2.4",
+                              (Element("horizon", "conic", horizon, "conic", "horizon"),
+                               _pt("v1", v1, "twist", "$v_1$"))),
+             ConstructionStep("v2", f"v₂ = k [h_y, −h_x, 1 − |h|/R], weight {_num(w)}: "
+                              f"{case2.text.rsplit(' (', 1)[0]}", "10.2.4, 4.10",
+                              (_pt("h", from_xy([hx, hy]), "construct", "$h$"),
+                               _pt("v2", v2, "twist", "$v_2$")))]
+    els = []
+    if c.line is not None:
+        els.append(_ln("lever", c.line, "construct"))
+    if c.P is not None:
+        els.append(_pt("v3", c.sum.array, "twist", "$v_3 = v_1 + v_2$", True))
+    case = twists_case(v1, v2)
+    steps.append(ConstructionStep("sum", f"v₃ = v₁ + v₂ moves on smoothly: {case.text.rsplit(' (', 1)[0]}",
+                                  case.equation, tuple(els)))
+    values = {"weight of v₂": w, "v₂": case2.text, "pole of v2": _xy_or_inf(v2),
+              "pole of v3": "none" if c.P is None else _xy_or_inf(c.P),
+              "v3": tuple(float(x) for x in c.sum.array)}
+    return Construction("through_infinity", "A pole through infinity", tuple(steps), values,
+                        case.text)
+
+
 #: kind -> (title, builder); the builder's keyword defaults are the parameters.
 CONSTRUCTIONS: dict[str, tuple[str, Callable[..., Construction]]] = {
     "twist_sum": ("Twist addition (4.2)", _twist_sum),
@@ -437,6 +475,7 @@ CONSTRUCTIONS: dict[str, tuple[str, Callable[..., Construction]]] = {
     "velocity": ("Velocity kinematics (4.5)", _velocity),
     "acceleration": ("Acceleration kinematics (4.6)", _acceleration),
     "newton_euler": ("Equations of motion, Newton–Euler balance (4.7, Fig. 4.9)", _newton_euler),
+    "through_infinity": ("A pole dragged through infinity (10.2.4)", _through_infinity),
 }
 
 

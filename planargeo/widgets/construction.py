@@ -52,6 +52,7 @@ _RANGES = {
     "u": (-3.0, 3.0, 0.05, "m/s"), "angle": (-180.0, 180.0, 5.0, "deg"),
     "F": (-3.0, 3.0, 0.05, "N"), "tau": (-3.0, 3.0, 0.05, "N·m"),
     "m": (0.1, 5.0, 0.1, "kg"), "r": (0.05, 2.0, 0.05, "m"),
+    "h": (-3.0, 3.0, 0.05, "m"), "k": (0.1, 3.0, 0.05, "—"),
 }
 
 #: draggable points per construction: (handle name, x parameter, y parameter)
@@ -62,6 +63,7 @@ _POINTS = {
     "acceleration": [("v_prev", "xv", "yv"), ("a_prev", "xa", "ya"), ("joint", "xj", "yj")],
     "newton_euler": [("centre of mass", "xc", "yc"), ("v", "xv", "yv"), ("a", "xa", "ya"),
                      ("joint", "xj", "yj")],
+    "through_infinity": [("v1", "x1", "y1"), ("h", "hx", "hy")],
 }
 #: direction handles: (handle name, x, y, angle parameter, size parameter)
 _DIRECTIONS = {
@@ -76,7 +78,8 @@ _UNITS = {"ω₁": "rad/s", "ω₂": "rad/s", "ω₃ = ω₁ + ω₂": "rad/s", 
           "pole of vᵢ": "m", "q̈ᵢ": "rad/s²", "|κᵢ|": "m/s²", "ρᵢ": "m", "pole of aᵢ": "m",
           "aᵢ": "—", "m": "kg", "|Ia|": "N", "|p|": "N", "F_net": "N", "τ": "N·m",
           "ρ = τ/F": "m", "f_net": "—", "power of f_net on v": "W", "step": "—",
-          "construction step": "—", "equation": "—", "special case": "—"}
+          "construction step": "—", "equation": "—", "special case": "—",
+          "weight of v₂": "—", "v₂": "—", "pole of v2": "m", "v3": "—"}
 
 ARM = 1.0
 FADED = 0.4
@@ -85,7 +88,7 @@ FADED = 0.4
 def _range(name: str):
     for key in sorted(_RANGES, key=len, reverse=True):
         if name.startswith(key) and (name[len(key):].isdigit() or name[len(key):] in ("", "v", "a",
-                                                                                          "j", "c")):
+                                                                                          "j", "c", "x", "y")):
             return _RANGES[key]
     return (-3.0, 3.0, 0.05, "—")
 
@@ -331,11 +334,9 @@ class ConstructionExplorer(Explorer):
                 self._placed.append((xy, u))
                 art.set_text_beside(u, 7.0 + glyph)
                 art.set_text(e.label or None)
-            elif xy is None:       # ideal: the artist's own arrow and label at the edge
+            else:                  # ideal or out of view: the artist's own arrow and label at the edge
                 art.set_text(e.label or None)
                 art.set_text_offset(None)
-            else:                  # a finite pole outside the view: its label would leave the axes;
-                art.set_text(None)  # the readout gives where it is
         elif e.kind == "line":
             art.set_line(e.value)
             if e.label and np.any(e.value[:2]):
