@@ -228,3 +228,15 @@ def test_a_pole_dragged_through_infinity(tmp_path):
     assert names == ["rotation about a finite pole (4.10)", "pure translation",
                      "rotation about a finite pole (4.10)"]
     assert [s.equation for s in e.state["c"].steps][0] == "10.2.4"
+
+
+def test_earlier_steps_faded_shown_or_hidden(ex):
+    n = ex.n_computes
+    ex.set(step=2, earlier="hidden")
+    assert [layer.get_visible() for layer in ex.layers] == [False, True, False]
+    ex.set(earlier="shown")
+    assert [layer.get_visible() for layer in ex.layers] == [True, True, False]
+    assert ex.element_artists["0:Q1"].get_alpha() == 1.0
+    ex.set(earlier="faded")
+    assert ex.element_artists["0:Q1"].get_alpha() < 1.0
+    assert ex.n_computes == n

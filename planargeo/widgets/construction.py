@@ -1,8 +1,8 @@
 """Chapter 4's constructions one step at a time, like a construction protocol (thesis 4.2–4.7).
 
 A *step* slider draws the construction up to that step; the caption above the
-figure names the step and its equation, earlier steps stay (faded), later
-ones are hidden.  Every input (poles, rates, force lines, the joint, the
+figure names the step and its equation, earlier steps stay (faded, at full
+strength or hidden: the *earlier steps* buttons), later ones are hidden.  Every input (poles, rates, force lines, the joint, the
 centre of mass) has a slider and, where it is a point, a drag handle:
 dragging redoes the whole construction.  The steps come from
 :func:`planargeo.scenes.construction.construct`; this module only draws them.
@@ -32,6 +32,7 @@ from pathlib import Path
 import matplotlib
 import matplotlib.artist as martist
 import numpy as np
+import ipywidgets as W
 from matplotlib.lines import Line2D
 from matplotlib.text import Text
 
@@ -199,7 +200,7 @@ class ConstructionExplorer(Explorer):
     slug = "construction"
     figsize = (5.6, 5.6)
     limits = (-4.0, 4.0, -4.0, 4.0)
-    display_controls = ("step",)
+    display_controls = ("step", "earlier")
     scale = 3.0
 
     def __init__(self, construction: str = "twist_sum", **kwargs):
@@ -215,13 +216,16 @@ class ConstructionExplorer(Explorer):
 
     # ------------------------------------------------------------------ explorer
     def make_controls(self):
-        """The step slider and one slider per parameter of the construction.
+        """The step slider, how earlier steps look, and one slider per parameter of the construction.
 
         Returns
         -------
         dict
         """
-        c = {"step": Step(1, self.n_steps, 1, self.n_steps, "step", integer=True).make("step")}
+        c = {"step": Step(1, self.n_steps, 1, self.n_steps, "step", integer=True).make("step"),
+             "earlier": W.ToggleButtons(options=("faded", "shown", "hidden"), value="faded",
+                                        description="earlier steps",
+                                        style={"description_width": "initial"})}
         for name, default in self.params.items():
             lo, hi, st, unit = _range(name)
             label = name if unit == "—" else f"{name} ({unit})"
@@ -406,8 +410,9 @@ class ConstructionExplorer(Explorer):
         for i, step in enumerate(c.steps[:self.n_steps]):
             layer = self.layers[i]
             layer.set_gid(f"step-{i + 1}-{step.id}")
-            layer.set_visible(i < shown)
-            alpha = 1.0 if (self._all_steps or i == shown - 1) else FADED
+            earlier = "shown" if self._all_steps else self.values["earlier"]
+            layer.set_visible(i < shown and (earlier != "hidden" or i == shown - 1))
+            alpha = 1.0 if (earlier == "shown" or i == shown - 1) else FADED
             for e in step.elements:
                 art = self._artist(i, e)
                 used.add(f"{i}:{e.name}")
