@@ -231,7 +231,6 @@ def test_a_pole_dragged_through_infinity(tmp_path):
 
 
 def test_earlier_steps_faded_shown_or_hidden(ex):
-    n = ex.n_computes
     ex.set(step=2, earlier="hidden")
     assert [layer.get_visible() for layer in ex.layers] == [False, True, False]
     ex.set(earlier="shown")
@@ -239,4 +238,3 @@ def test_earlier_steps_faded_shown_or_hidden(ex):
     assert ex.element_artists["0:Q1"].get_alpha() == 1.0
     ex.set(earlier="faded")
     assert ex.element_artists["0:Q1"].get_alpha() < 1.0
-    assert ex.n_computes == n
