@@ -242,7 +242,11 @@ class ConstructionExplorer(Explorer):
         """
         from planargeo.draw.style import setup_axes
 
+        from matplotlib.ticker import MultipleLocator
+
         setup_axes(ax, self.limits, grid=True, axis_off=False)
+        for axis in (ax.xaxis, ax.yaxis):      # ticks every 2 m: drawing ticks is half a redraw
+            axis.set_major_locator(MultipleLocator(2.0))
         ax.grid(True, lw=0.4, alpha=0.4)
         ax.figure.subplots_adjust(top=0.86)
 

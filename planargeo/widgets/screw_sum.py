@@ -147,6 +147,19 @@ class ScrewSumExplorer(Explorer):
         return {f"kind{k}": mapping[values[f"kind{k}"]] for k in (1, 2)
                 if values[f"kind{k}"] in mapping}
 
+    def setup_axes(self, ax):
+        """The base's axes, with ticks every 2 m (drawing ticks was half of a redraw).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+        """
+        from matplotlib.ticker import MultipleLocator
+
+        super().setup_axes(ax)
+        for axis in (ax.xaxis, ax.yaxis):
+            axis.set_major_locator(MultipleLocator(2.0))
+
     def make_artists(self, ax):
         """The poles, the lever line, the force lines and their meet, made once.
 
