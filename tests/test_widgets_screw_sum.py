@@ -98,3 +98,95 @@ def test_meet_of_forces_on_one_line_is_not_at_infinity(ex):
     # crossing lines meet at a finite point: the x-axis and the vertical through x = 1.5
     ex.set(y2=0.0, angle2=90.0, size2=1.0)
     assert ex.readout_values["meet of lines"] == pytest.approx((1.5, 0.0))
+
+
+# ---------------------------------------------------------------- an instrument (issue 13, 14 item 7)
+from planargeo.draw.layout import legibility_problems  # noqa: E402
+
+STATES = [{}, dict(size2=-1.0), dict(kind2="translation"), dict(x2=-1.5, y2=0.0),
+          dict(x1=-1.0, y1=0.5, x2=2.0, y2=-1.0, size2=3.0),
+          dict(x1=0.5, size1=2.0, kind2="translation", size2=3.0, angle2=0.0),
+          dict(kind1="translation", kind2="translation"), dict(x1=-3, y1=3, x2=3, y2=-3, size2=1.0),
+          dict(add="wrenches"), dict(add="wrenches", angle2=0.0), dict(add="wrenches", kind2="couple"),
+          dict(add="wrenches", angle1=90.0, size2=-1.0, x2=3.0)]
+
+
+@pytest.mark.parametrize("state", STATES, ids=[str(s) for s in STATES])
+def test_every_state_is_legible(ex, state):
+    ex.set(**state)
+    assert ex.message == ""
+    assert legibility_problems(ex.fig) == []
+
+
+def test_units_and_special_case_in_the_readout(ex):
+    assert ex.units["ω1"] == "rad/s" and ex.units["pole of sum"] == "m"
+    assert ex.units["F1"] == "N" and ex.units["ρ"] == "m"
+    html = ex.readout.value
+    assert "rad/s" in html
+    assert ex.readout_values["special case"].startswith("two rotations")
+    ex.set(size2=-1.0)
+    assert ex.readout_values["special case"] == "opposite rotations: the sum is a translation (4.13)"
+
+
+def test_drag_a_pole_moves_the_sum_by_the_lever_rule(ex):
+    ex.set(x1=0.0, y1=0.0, size1=1.0, size2=3.0)
+    ex.drag("v2", ex.handle_position("v2"), (2.0, 2.0), steps=5)
+    assert ex.values["x2"] == pytest.approx(2.0) and ex.values["y2"] == pytest.approx(2.0)
+    # P = (1 · (0, 0) + 3 · (2, 2)) / 4 (4.12), with no snapping to the 0.05 slider grid on the way
+    assert ex.readout_values["pole of sum"] == pytest.approx((1.5, 1.5))
+    ex.drag("v2", (2.0, 2.0), (2.013, 2.0), steps=1)
+    assert ex.values["x2"] == pytest.approx(2.013)
+
+
+def test_drag_a_pole_onto_the_other(ex):
+    ex.drag("v2", ex.handle_position("v2"), ex.handle_position("v1"), steps=4)
+    assert ex.message == ""
+    assert ex.readout_values["special case"].startswith("coincident poles")
+
+
+def test_force_lines_by_point_and_by_direction(ex):
+    ex.set(add="wrenches", x1=0.0, y1=0.0, angle1=0.0, size1=1.0, x2=2.0, y2=1.0, angle2=90.0)
+    assert ex.handle_position("f2 direction") == pytest.approx((2.0, 2.0))
+    assert ex.handle_position("v2") is None                 # not a rotation now
+    # turn f2 by its arrow tip through the direction of f1: the meet runs off to infinity and
+    # comes back from the other side, no refusal on the way (10.2.4)
+    cases = []
+    for tip in [(3.0, 1.5), (3.0, 1.1), (3.0, 1.0), (3.0, 0.9), (3.0, 0.5)]:
+        ex.drag("f2 direction", ex.handle_position("f2 direction"), tip, steps=1)
+        assert ex.message == ""
+        cases.append(ex.readout_values["case"])
+    assert cases == ["concurrent", "concurrent", "parallel", "concurrent", "concurrent"]
+    # the meet of y = 0 with the line through (2, 1) along (1, -0.5): (4, 0), by hand
+    assert ex.readout_values["meet of lines"] == pytest.approx((4.0, 0.0))
+    ex.drag("f1", ex.handle_position("f1"), (0.0, 1.0), steps=2)       # f1 now on y = 1
+    assert ex.readout_values["meet of lines"] == pytest.approx((2.0, 1.0))
+
+
+def test_direction_handle_on_its_point_is_refused_with_the_reason(ex):
+    ex.set(add="wrenches")
+    good = dict(ex.values)
+    ex.drag("f1 direction", ex.handle_position("f1 direction"),
+            (good["x1"], good["y1"]), steps=1)
+    assert "no direction" in ex.message
+    assert ex.values == good
+
+
+def test_sliding_a_rate_through_the_opposite_passes_through_a_translation(ex):
+    """ω2 from -0.8 to -1.2 with ω1 = 1: the sum's pole leaves to infinity and comes back (4.13)."""
+    ex.set(x1=0.0, y1=0.0, size1=1.0, x2=2.0, y2=0.0)
+    poles = []
+    for w2 in (-0.8, -0.9, -1.0, -1.1, -1.2):
+        ex.set(size2=w2)
+        assert ex.message == ""
+        poles.append(ex.readout_values["pole of sum"])
+    # P = ω2 Q2 / (1 + ω2) on the x axis: -8, -18, ∞, 22, 12
+    assert poles[2] == "at infinity"
+    assert [p[0] for p in poles[:2] + poles[3:]] == pytest.approx([-8.0, -18.0, 22.0, 12.0])
+
+
+def test_round_off_prints_as_zero(ex):
+    ex.set(add="wrenches", kind2="force", x1=0.0, y1=0.0, angle1=90.0, size1=1.0,
+           x2=2.0, y2=0.0, angle2=90.0, size2=-1.0)
+    # cos 90° = 6e-17: the couple's force part is round-off and shows as 0
+    html = ex.readout.value
+    assert "e-17" not in html and "e-16" not in html

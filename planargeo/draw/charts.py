@@ -26,7 +26,29 @@ def plot_curves(x, ys, labels, ax=None, *, xlabel="", ylabel="", title=None, log
                 legend=None):
     """Several curves ``ys[k]`` over ``x`` with distinct colour and dash (readable in grey).
 
-    ``legend``: keyword arguments of the legend (default: best place, no frame).
+    Parameters
+    ----------
+    x : array_like (n,)
+        The parameter.
+    ys : sequence of array_like (n,)
+        One curve per entry.
+    labels : sequence of str
+        The curves' names (the legend shows them when any is non-empty).
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    xlabel, ylabel, title : str
+        Axis labels and title.
+    logx : bool
+        Logarithmic x axis.
+    ylim : (float, float), optional
+        The y limits.
+    legend : dict, optional
+        Keyword arguments of the legend (default: best place, no frame).
+
+    Returns
+    -------
+    list of matplotlib.lines.Line2D
+        The curves.
 
     Examples
     --------
@@ -57,6 +79,25 @@ def polar_curves(theta, rs, labels, ax=None, *, title=None, rlabel=""):
 
     The radial tick labels run along 100°; ``rlabel`` goes in the axes' upper-left
     corner (outside the circle) so that it never sits on a tick label.
+
+    Parameters
+    ----------
+    theta : array_like (n,)
+        Angles (radians).
+    rs : sequence of array_like (n,)
+        One radius curve per entry.
+    labels : sequence of str
+        The curves' names.
+    ax : matplotlib.axes.Axes, optional
+        A polar axes (default: the current axes).
+    title : str, optional
+    rlabel : str
+        What the radius measures.
+
+    Returns
+    -------
+    list of matplotlib.lines.Line2D
+        The curves.
 
     Raises
     ------

@@ -23,6 +23,7 @@ from planargeo.geometry.projective import from_direction, from_xy, join, meet, t
 from planargeo.screws.twists import bias_force, kappa
 from planargeo.draw.artists import _mat, _vec, plot_conic, plot_line, plot_point
 from planargeo.draw.style import COLORS, get_ax, style, sum_style
+from planargeo.errors import InputError
 from planargeo.mechanics.subspaces import Decomposition
 
 __all__ = [
@@ -34,33 +35,153 @@ __all__ = [
 ]
 
 
-def label(ax, xy, text, *, offset=(5, 5), color=None, ha="left", va="bottom", **kw):
-    """A text label at data point ``xy`` shifted by ``offset`` points."""
-    return ax.annotate(text, xy=tuple(np.asarray(xy, float)), xytext=offset,
-                       textcoords="offset points", color=color or COLORS["text"],
-                       ha=ha, va=va, fontsize=kw.pop("fontsize", 8), **kw)
+def _is_axes(x) -> bool:
+    """True for a matplotlib axes (the former first argument of :func:`label`, :func:`draw_segment`
+    and :func:`draw_dimension`)."""
+    return hasattr(x, "transData") and hasattr(x, "annotate")
 
 
-def draw_segment(ax, p, q, role="construct", **kw):
-    """A finite segment between two Euclidean points in a role's style."""
+def _former_order(args: tuple, n: int, name: str, ax):
+    """``(ax, args)`` of a call in the former order ``name(ax, *args)``; ``args`` unchanged otherwise.
+
+    The former order put ``ax`` first; every drawing function now takes what
+    it draws first and ``ax=None`` as a keyword.  Calls in the former order
+    keep working (the gallery's figures use it) and are read as the new one.
+    """
+    if not args or not _is_axes(args[0]):
+        return ax, args
+    if ax is not None:
+        raise InputError(f"{name}: ax given twice (first argument and ax=)")
+    if len(args) < n + 1:
+        raise InputError(f"{name} needs {n} arguments besides ax, got {len(args) - 1}")
+    return args[0], args[1:]
+
+
+def label(*args, ax=None, offset=(5, 5), color=None, ha="left", va="bottom", **kw):
+    """A text label at data point ``xy`` shifted by ``offset`` points: ``label(xy, text, ax=None)``.
+
+    Parameters
+    ----------
+    *args
+        ``xy, text`` (below); the former order ``ax, xy, text`` is read too.
+    xy : array_like (2,)
+        Euclidean data point the label refers to.
+    text : str
+        The label (matplotlib mathtext allowed).
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+        The former call ``label(ax, xy, text)`` is still read correctly.
+    offset : (float, float)
+        Shift of the text in points.
+    color, ha, va, **kw
+        Text colour (default the text colour of the style), alignment and
+        further :meth:`~matplotlib.axes.Axes.annotate` keywords (``fontsize``
+        defaults to 8 pt, 11 px at 100 dpi).
+
+    Returns
+    -------
+    matplotlib.text.Annotation
+
+    Raises
+    ------
+    InputError
+        Not two arguments ``xy, text`` (besides a leading axes).
+
+    Examples
+    --------
+    >>> import matplotlib; matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> label((1.0, 2.0), "$P$", ax=ax).get_text()
+    '$P$'
+    >>> plt.close(fig)
+    """
+    ax, args = _former_order(args, 2, "label", ax)
+    if len(args) != 2:
+        raise InputError(f"label takes (xy, text), got {len(args)} positional arguments")
+    xy, text = args
+    return get_ax(ax).annotate(text, xy=tuple(np.asarray(xy, float)), xytext=offset,
+                               textcoords="offset points", color=color or COLORS["text"],
+                               ha=ha, va=va, fontsize=kw.pop("fontsize", 8), **kw)
+
+
+def draw_segment(*args, ax=None, role="construct", **kw):
+    """A finite segment between two Euclidean points in a role's style: ``draw_segment(p, q, ax=None)``.
+
+    Parameters
+    ----------
+    *args
+        ``p, q`` (below); the former order ``ax, p, q[, role]`` is read too.
+    p, q : array_like (2,)
+        The end points.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes).  The former call
+        ``draw_segment(ax, p, q[, role])`` is still read correctly.
+    role : str
+        Style role (:func:`~planargeo.draw.style.style`), default ``"construct"``.
+    **kw
+        Line properties overriding the role's.
+
+    Returns
+    -------
+    matplotlib.lines.Line2D
+
+    Raises
+    ------
+    InputError
+        Not two end points, or an unknown role.
+    """
+    ax, args = _former_order(args, 2, "draw_segment", ax)
+    if len(args) == 3:                      # the former positional role
+        args, role = args[:2], args[2]
+    if len(args) != 2:
+        raise InputError(f"draw_segment takes (p, q), got {len(args)} positional arguments")
+    p, q = args
     st = {k: v for k, v in style(role).items() if k in ("color", "linewidth", "linestyle")}
     st.update(kw)
-    (ln,) = ax.plot([p[0], q[0]], [p[1], q[1]], **st)
+    (ln,) = get_ax(ax).plot([p[0], q[0]], [p[1], q[1]], **st)
     return ln
 
 
-def draw_dimension(ax, p, q, text, *, offset=0.0, color=None, fontsize=7, at=0.5):
-    """A dimension arrow ``<->`` between Euclidean points ``p`` and ``q``, labelled ``text``.
+def draw_dimension(*args, ax=None, offset=0.0, color=None, fontsize=7, at=0.5):
+    """A dimension arrow ``<->`` between ``p`` and ``q``, labelled: ``draw_dimension(p, q, text, ax=None)``.
 
     The arrow is shifted by ``offset`` (data units) to the left of ``p → q``;
     the label sits at fraction ``at`` along it, on the same side.
+
+    Parameters
+    ----------
+    *args
+        ``p, q, text`` (below); the former order ``ax, p, q, text`` is read too.
+    p, q : array_like (2,)
+        Distinct Euclidean points.
+    text : str
+        The dimension's label.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes).  The former call
+        ``draw_dimension(ax, p, q, text)`` is still read correctly.
+    offset, color, fontsize, at
+        Placement and look (see above).
+
+    Returns
+    -------
+    (Annotation, Annotation)
+        The arrow and its label.
+
+    Raises
+    ------
+    InputError
+        ``p`` and ``q`` coincide, or not three arguments ``p, q, text``.
     """
+    ax, args = _former_order(args, 3, "draw_dimension", ax)
+    if len(args) != 3:
+        raise InputError(f"draw_dimension takes (p, q, text), got {len(args)} positional arguments")
+    p, q, text = args
+    ax = get_ax(ax)
     p, q = np.asarray(p, float), np.asarray(q, float)
     d = q - p
     L = np.hypot(*d)
     if L == 0.0:
-        from planargeo.errors import InputError
-
         raise InputError("draw_dimension: p and q must be distinct points")
     n = np.array([-d[1], d[0]]) / L
     p2, q2 = p + offset * n, q + offset * n
@@ -76,13 +197,49 @@ def draw_dimension(ax, p, q, text, *, offset=0.0, color=None, fontsize=7, at=0.5
 # --------------------------------------------------------------------------- conic helpers
 def line_conic_points(C, L) -> list[np.ndarray]:
     """Real common points of line ``L`` and conic ``C`` (0 or 2 homogeneous points; GEO's
-    :func:`planargeo.geometry.conics.line_conic_intersections`)."""
+    :func:`planargeo.geometry.conics.line_conic_intersections`).
+
+    Parameters
+    ----------
+    C : array_like (3, 3)
+        A conic.
+    L : array_like (3,)
+        A line.
+
+    Returns
+    -------
+    list of ndarray (3,)
+        The two real common points, or an empty list when the line misses the conic.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
+    """
     X, real = line_conic_intersections(_mat(C, "C"), _vec(L, "L"))
     return [X[0], X[1]] if bool(real) else []
 
 
 def tangent_points(C, p) -> list[np.ndarray]:
-    """Points where the tangents from ``p`` touch ``C``: the conic meets the polar ``C p`` (5.36)."""
+    """Points where the tangents from ``p`` touch ``C``: the conic meets the polar ``C p`` (5.36).
+
+    Parameters
+    ----------
+    C : array_like (3, 3)
+        A conic.
+    p : array_like (3,)
+        A point (exterior for real contacts).
+
+    Returns
+    -------
+    list of ndarray (3,)
+        The two contact points, or an empty list for an interior point.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
+    """
     C = _mat(C, "C")
     return line_conic_points(C, polar(C, _vec(p, "p")))
 
@@ -102,6 +259,33 @@ def draw_twist_sum(v1, v2, ax=None, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v
     :func:`~planargeo.draw.style.sum_style` (larger diamond).  Coincident poles
     (``v2`` a multiple of ``v1``) have no lever line: its artist then draws
     nothing.  Returns the artists ``{"v1", "v2", "v3", "lever"}``.
+
+    Parameters
+    ----------
+    v1, v2 : array_like (3,)
+        The twists (points).
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    labels : (str, str, str)
+        Labels of ``v1``, ``v2`` and the sum.
+    lever : bool
+        Draw the line joining the poles.
+    glyph_scale : float
+        Rotation glyph size (points per unit rate).
+    role : str
+        Style role of the three points.
+    text_offsets : (offset, offset, offset)
+        Label offsets in points (None: automatic).
+
+    Returns
+    -------
+    dict
+        The artists ``{"v1", "v2", "v3", "lever"}``.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
 
     Examples
     --------
@@ -141,6 +325,37 @@ def draw_wrench_sum(f1, f2, ax=None, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + 
     at ``ρ = τ/F`` (4.46).  The sum is a wrench like its terms: same ``role``
     colour, heavier line (:func:`~planargeo.draw.style.sum_style`).
     Returns ``{"f1", "f2", "f3", "meet", ...}``.
+    
+
+    Parameters
+    ----------
+    f1, f2 : array_like (3,)
+        The wrenches (lines).
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    labels : (str, str, str)
+        Labels of ``f1``, ``f2`` and the sum.
+    scale : float
+        Force arrow length per unit force (data units).
+    anchors : (xy, xy, xy)
+        Where each arrow sits (None: automatic; the parallelogram's corners when drawn).
+    parallelogram : bool
+        Draw the force parallelogram at the meet of crossing lines.
+    text_offsets : (offset, offset, offset)
+        Label offsets in points.
+    role : str
+        Style role of the three lines.
+
+    Returns
+    -------
+    dict
+        The artists ``{"f1", "f2", "f3"}`` and, for crossing lines, ``"meet"`` and
+        ``"parallelogram"``.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
     """
     ax = get_ax(ax)
     f1, f2 = _vec(f1, "f1"), _vec(f2, "f2")
@@ -165,7 +380,7 @@ def draw_wrench_sum(f1, f2, ax=None, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + 
         if parallelogram:
             a, b = Pxy + scale * f1[:2], Pxy + scale * f2[:2]
             c = Pxy + scale * f3[:2]
-            out["parallelogram"] = [draw_segment(ax, a, c), draw_segment(ax, b, c)]
+            out["parallelogram"] = [draw_segment(a, c, ax=ax), draw_segment(b, c, ax=ax)]
     return out
 
 
@@ -184,6 +399,34 @@ def draw_velocity_step(v_prev, s, qd, ax=None, *,
     Returns the artists of :func:`draw_twist_sum` keyed ``{"v_prev", "joint",
     "v", "lever"}`` (plus ``"k"``) and ``"values"``: the arrays
     ``{"joint": s q̇, "v": v_i}``.
+    
+
+    Parameters
+    ----------
+    v_prev : array_like (3,)
+        The previous body's twist ``v_{i-1}``.
+    s : array_like (3,)
+        The joint's unit twist ``s_i``.
+    qd : float
+        The joint speed ``q̇_i``.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    names : (str, str, str)
+        Labels of ``v_{i-1}``, ``s_i q̇_i`` and ``v_i``.
+    text_offsets : (offset, offset, offset)
+        Label offsets in points.
+    dims, dim_offset
+        Dimension the distance ``k`` (offset to the left of the lever, data units).
+
+    Returns
+    -------
+    dict
+        See above.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
     """
     ax = get_ax(ax)
     v_prev = _vec(v_prev, "v_prev")
@@ -192,7 +435,7 @@ def draw_velocity_step(v_prev, s, qd, ax=None, *,
     out = {"v_prev": art["v1"], "joint": art["v2"], "v": art["v3"], "lever": art["lever"],
            "values": {"joint": u, "v": v_prev + u}}
     if dims and v_prev[2] != 0.0 and u[2] != 0.0:
-        out["k"] = draw_dimension(ax, to_xy(v_prev), to_xy(u), "$k$", offset=dim_offset)
+        out["k"] = draw_dimension(to_xy(v_prev), to_xy(u), "$k$", ax=ax, offset=dim_offset)
     return out
 
 
@@ -211,6 +454,32 @@ def draw_acceleration_step(a_prev, v_prev, s, qd, qdd, ax=None, *,
 
     Returns the artists ``{"a_prev", "joint", "bias", "joint_total", "a",
     "lever", "joint_lever"}`` and ``"values"`` (the arrays of the same names).
+    
+
+    Parameters
+    ----------
+    a_prev, v_prev : array_like (3,)
+        The previous body's acceleration and velocity twists.
+    s : array_like (3,)
+        The joint's unit twist.
+    qd, qdd : float
+        Joint speed and acceleration.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    names : tuple of 5 str
+        Labels of the five points.
+    text_offsets : tuple of 5 offsets
+        Label offsets in points.
+
+    Returns
+    -------
+    dict
+        See above.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
     """
     ax = get_ax(ax)
     a_prev, v_prev, s = _vec(a_prev, "a_prev"), _vec(v_prev, "v_prev"), _vec(s, "s")
@@ -246,6 +515,36 @@ def draw_newton_euler(I, a, v, ax=None, *, scale=None, names=("$v$", "$a$", "$Ia
 
     Returns the artists ``{"inertia", "v", "a", "Ia", "p", "f_net"}`` and
     ``"values"`` (the arrays ``Ia``, ``p``, ``f_net``).
+    
+
+    Parameters
+    ----------
+    I : array_like (3, 3)
+        The body's inertia.
+    a, v : array_like (3,)
+        Its acceleration and velocity twists.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    scale : float, optional
+        Force arrow length per unit force (None: no arrows).
+    names : tuple of 5 str
+        Labels of ``v``, ``a``, ``Ia``, ``p`` and ``f_net``.
+    positions : (float, float, float)
+        Where the arrows of ``Ia``, ``p`` and ``f_net`` sit (see above).
+    text_offsets : tuple of 5 offsets
+        Label offsets in points.
+    inertia : bool
+        Draw the inertia's circle of gyration.
+
+    Returns
+    -------
+    dict
+        See above.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
     """
     ax = get_ax(ax)
     I, a, v = _mat(I, "inertia"), _vec(a, "a"), _vec(v, "v")
@@ -277,7 +576,29 @@ def draw_newton_euler(I, a, v, ax=None, *, scale=None, names=("$v$", "$a$", "$Ia
 
 # --------------------------------------------------------------------------- pole / polar
 def draw_tangent(C, q, ax=None, *, text=None):
-    """The tangent ``C q`` at a point ``q`` of the conic (5.38–5.39)."""
+    """The tangent ``C q`` at a point ``q`` of the conic (5.38–5.39).
+
+    Parameters
+    ----------
+    C : array_like (3, 3)
+        A conic.
+    q : array_like (3,)
+        A point of the conic.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    text : str, optional
+        Label of the point.
+
+    Returns
+    -------
+    dict
+        The artists ``{"q", "tangent"}``.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
+    """
     ax = get_ax(ax)
     C, q = _mat(C, "C"), _vec(q, "q")
     return {"q": plot_point(q, ax, role="twist", glyph=False, text=text),
@@ -285,7 +606,32 @@ def draw_tangent(C, q, ax=None, *, text=None):
 
 
 def draw_polar_exterior(C, p, ax=None, *, names=("$P$", "$L = CP$"), L_anchor=None):
-    """Polar of an exterior point (thesis 5.36, Fig. 5.2): tangents from ``p``; ``L`` joins their contacts."""
+    """Polar of an exterior point (thesis 5.36, Fig. 5.2): tangents from ``p``; ``L`` joins their contacts.
+
+    Parameters
+    ----------
+    C : array_like (3, 3)
+        A real conic.
+    p : array_like (3,)
+        An exterior point.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    names : (str, str)
+        Labels of the point and its polar.
+    L_anchor : (x, y), optional
+        Where the polar's label sits.
+
+    Returns
+    -------
+    dict
+        The artists ``{"conic", "P", "L", "tangents", "touch_marks"}`` and
+        ``"construction"`` (:class:`~planargeo.geometry.conics.ExteriorConstruction`).
+
+    Raises
+    ------
+    InputError
+        An interior point (no real tangents).
+    """
     ax = get_ax(ax)
     C, p = _mat(C, "C"), _vec(p, "p")
     K = polar_construction_exterior(C, p)
@@ -309,6 +655,36 @@ def draw_polar_interior(C, p, ax=None, *, angles=(0.35, 1.9), names=("$P$", "$L 
     its chord (Theorem 12), which is why ``L`` passes through both.
     ``L_anchor`` places ``L``'s label; ``text_offsets`` are for ``P``, ``L``,
     ``R_1``, ``R_2`` (points, None: automatic).
+    
+
+    Parameters
+    ----------
+    C : array_like (3, 3)
+        A real conic.
+    p : array_like (3,)
+        An interior point.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    angles : (float, float)
+        Directions (radians) of the two chords through ``p``.
+    names : (str, str)
+        Labels of the point and its polar.
+    L_anchor : (x, y), optional
+        Where the polar's label sits.
+    text_offsets : tuple of 4 offsets
+        Label offsets of ``P``, ``L``, ``R_1``, ``R_2``.
+
+    Returns
+    -------
+    dict
+        The artists ``{"conic", "P", "chords", "R1", "R2", "L"}`` and
+        ``"construction"`` (:class:`~planargeo.geometry.conics.InteriorConstruction`).
+
+    Raises
+    ------
+    PlanargeoError
+        A chord that misses the conic (named by
+        :func:`~planargeo.geometry.conics.polar_construction_interior`).
     """
     ax = get_ax(ax)
     C, p = _mat(C, "C"), _vec(p, "p")
@@ -339,6 +715,36 @@ def draw_percussion(I, a, ax=None, *, names=("$a$", "$f = Ia$"), dims=True, scal
     axis; with ``dims`` the distances ``d`` (pole to centre of mass) and
     ``ρ²/d`` (centre of mass to the axis) along the line through both.
     ``f_anchor`` places the axis's label (and arrow, with ``scale``) along it.
+    
+
+    Parameters
+    ----------
+    I : array_like (3, 3)
+        The inertia.
+    a : array_like (3,)
+        The acceleration pole.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    names : (str, str)
+        Labels of the pole and the axis.
+    dims : bool
+        Dimension ``d`` and ``ρ²/d``.
+    scale : float, optional
+        Force arrow length per unit force (None: no arrow).
+    f_anchor : (x, y), optional
+        Where the axis's label (and arrow) sits.
+    text_offsets : (offset, offset)
+        Label offsets in points.
+
+    Returns
+    -------
+    dict
+        The artists ``{"inertia", "a", "f"}`` and, with ``dims``, ``"dims"`` and ``"lever"``.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
     """
     ax = get_ax(ax)
     I, a = _mat(I, "inertia"), _vec(a, "a")
@@ -351,9 +757,9 @@ def draw_percussion(I, a, ax=None, *, names=("$a$", "$f = Ia$"), dims=True, scal
     axy = to_xy(a)
     if dims and a[2] != 0.0 and np.any(f[:2]):
         foot = to_xy(meet(f, join(a, from_xy(c))))
-        out["dims"] = [draw_dimension(ax, axy, c, "$d$", offset=0.0),
-                       draw_dimension(ax, c, foot, r"$\rho^2/d$", offset=0.0)]
-        out["lever"] = draw_segment(ax, axy, foot)
+        out["dims"] = [draw_dimension(axy, c, "$d$", ax=ax, offset=0.0),
+                       draw_dimension(c, foot, r"$\rho^2/d$", ax=ax, offset=0.0)]
+        out["lever"] = draw_segment(axy, foot, ax=ax)
     return out
 
 
@@ -379,6 +785,32 @@ def draw_power(v, I, ax=None, *, f_angle=0.6, a_distance=1.6,
 
     Returns the artists ``{"inertia", "v", "p", "f", "a"}`` and ``"values"``
     (the arrays ``p``, ``f``, ``a``).
+    
+
+    Parameters
+    ----------
+    v : array_like (3,)
+        The velocity twist.
+    I : array_like (3, 3)
+        The inertia.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    f_angle, a_distance, f_label_at, p_label_at : float
+        Placement (see above).
+    names : tuple of 4 str
+        Labels of ``v``, ``p``, ``f`` and ``a``.
+    text_offsets : tuple of 4 offsets
+        Label offsets in points.
+
+    Returns
+    -------
+    dict
+        See above.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
     """
     ax = get_ax(ax)
     v, I = _vec(v, "v"), _mat(I, "inertia")
@@ -452,6 +884,8 @@ def draw_decomposition(s, R, A, ax=None, *, reactive="U", labels=None, anchors=N
         Motion and reaction spaces of the joint (``sᵀR = 0``).
     A : array_like (3, 3)
         The (rigid or articulated) inertia, positive definite.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes).
     reactive : {"U", "inverse"}
         Which accelerations to mark for the reactions (see above).
     labels, anchors, text_offsets : dict, optional
@@ -465,6 +899,14 @@ def draw_decomposition(s, R, A, ax=None, *, reactive="U", labels=None, anchors=N
         The artists keyed as above (one column: ``"s"``, ``"T"``; several:
         ``"s1"``, ``"T1"``...), and ``"values"``: the arrays ``{"T", "U",
         "AiR"}`` (``AiR = A⁻¹R``).
+
+    Raises
+    ------
+    InputError
+        ``reactive`` is neither "U" nor "inverse".
+    PlanargeoError
+        Spaces or an inertia the decomposition refuses (named by
+        :class:`~planargeo.mechanics.subspaces.Decomposition`).
 
     Examples
     --------
@@ -576,6 +1018,8 @@ def draw_twist_split(s, R, A, a, ax=None, *, parts=(1, 2),
         As in :func:`draw_decomposition`.
     a : array_like (3,)
         The acceleration to split.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes).
     parts : sequence of {1, 2}
         Which parts to draw (e.g. one per panel); the values hold both.
     names, text_offsets : dict, optional
@@ -630,8 +1074,19 @@ def draw_wrench_split(s, R, A, f, ax=None, *, parts=(1, 2),
     joint, ``a₁ = A⁻¹f₁ = s TᵀA⁻¹f``; the reaction ``f₂ = Rμ`` passes through
     the joint and produces ``a₂ = A⁻¹f₂ = U RᵀA⁻¹f`` on ``T`` (6.80–6.81).
 
-    Parameters and returns as :func:`draw_twist_split` (``f`` instead of
-    ``a``); ``"values"``: ``{"T", "U", "Q", "mu", "f1", "f2", "a1", "a2"}``.
+    Parameters
+    ----------
+    s, R, A, parts, names, text_offsets, scale, arrow_length, show_T, T_anchor
+        As :func:`draw_twist_split`.
+    f : array_like (3,)
+        The force to split.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes).
+
+    Returns
+    -------
+    dict
+        As :func:`draw_twist_split`; ``"values"``: ``{"T", "U", "Q", "mu", "f1", "f2", "a1", "a2"}``.
 
     Examples
     --------
@@ -671,6 +1126,35 @@ def draw_projective_step(s, R, A, a_prev, a, kappa, ax=None, *,
 
     Returns the artists ``{"T", "s", "a_prev", "a"}`` (first columns for a
     multi-dof joint) and ``"values"``: ``{"T", "psi", "psi_prev", "qdd"}``.
+
+    Parameters
+    ----------
+    s, R : array_like (3, k), (3, 3-k)
+        Motion and reaction spaces of joint ``i``.
+    A : array_like (3, 3)
+        The body inertia.
+    a_prev, a : array_like (3,)
+        Accelerations of the parent and of the body.
+    kappa : array_like (3,)
+        The joint's bias acceleration ``κ_i``.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+    names : tuple of 4 str
+        Labels of ``T_i``, ``s_i``, ``a_{i-1}``, ``a_i``.
+    text_offsets : tuple of 4 offsets
+        Label offsets in points.
+    T_anchor : (x, y), optional
+        Where ``T_i``'s label sits.
+
+    Returns
+    -------
+    dict
+        See above.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
 
     Examples
     --------

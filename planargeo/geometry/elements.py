@@ -290,6 +290,19 @@ class Point:
     def __array__(self, dtype=None, copy=None):
         return np.array(self._a, dtype=dtype)
 
+    def _repr_svg_(self) -> str:
+        """A small drawing of the point for notebooks (a dot, or an arrow to a point at infinity).
+
+        Drawn by :func:`planargeo.geometry.svg.point_svg` without matplotlib.
+
+        Returns
+        -------
+        str
+            An SVG document.
+        """
+        from planargeo.geometry.svg import point_svg
+
+        return point_svg(self._a, label="P")
     def __repr__(self) -> str:
         if self.is_ideal:
             d = self.direction
@@ -537,6 +550,19 @@ class Line:
     def __array__(self, dtype=None, copy=None):
         return np.array(self._a, dtype=dtype)
 
+    def _repr_svg_(self) -> str:
+        """A small drawing of the line for notebooks (the directed line, or a dashed frame for the line at infinity).
+
+        Drawn by :func:`planargeo.geometry.svg.line_svg` without matplotlib.
+
+        Returns
+        -------
+        str
+            An SVG document.
+        """
+        from planargeo.geometry.svg import line_svg
+
+        return line_svg(self._a, label="l")
     def __repr__(self) -> str:
         if self.is_at_infinity:
             return "Line(at infinity)"
@@ -915,6 +941,19 @@ class Conic:
     def __array__(self, dtype=None, copy=None):
         return np.array(self._m, dtype=dtype)
 
+    def _repr_svg_(self) -> str:
+        """A small drawing of the conic for notebooks (an imaginary conic through its real partner, thesis 10.2.3).
+
+        Drawn by :func:`planargeo.geometry.svg.conic_svg` without matplotlib.
+
+        Returns
+        -------
+        str
+            An SVG document.
+        """
+        from planargeo.geometry.svg import conic_svg
+
+        return conic_svg(self._m, label="C")
     def __repr__(self) -> str:
         t = self.classify()
         name = str(t)

@@ -732,6 +732,21 @@ class Inertia:
                     f"radius_of_gyration={float(self.radius_of_gyration):.6g})")
         return f"Inertia(batch of shape {self._matrix.shape[:-2]})"
 
+    def _repr_svg_(self) -> "str | None":
+        """A small drawing of the inertia for notebooks (its circle of gyration, the real partner of thesis 10.2.3).
+
+        Drawn by :func:`planargeo.geometry.svg.inertia_svg` without matplotlib.
+
+        Returns
+        -------
+        str
+            An SVG document; None for a batch (the text repr is shown).
+        """
+        if self._matrix.ndim != 2:
+            return None
+        from planargeo.geometry.svg import inertia_svg
+
+        return inertia_svg(self._matrix, label="I")
     def __add__(self, other):
         if not isinstance(other, Inertia):
             return NotImplemented

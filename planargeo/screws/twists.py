@@ -1234,6 +1234,21 @@ class Twist(_Screw):
         """
         return reciprocal(self._array, _wrench_array(wrench), rtol)
 
+    def _repr_svg_(self) -> "str | None":
+        """A small drawing of the twist for notebooks (its pole with the sense of rotation, or a translation arrow).
+
+        Drawn by :func:`planargeo.geometry.svg.twist_svg` without matplotlib.
+
+        Returns
+        -------
+        str
+            An SVG document; None for a batch (the text repr is shown).
+        """
+        if self._array.ndim != 1:
+            return None
+        from planargeo.geometry.svg import twist_svg
+
+        return twist_svg(self._array, label="v")
     def __matmul__(self, other):
         if isinstance(other, Wrench):
             return power(self._array, other.array)
@@ -1444,6 +1459,21 @@ class Wrench(_Screw):
         """
         return reciprocal(_twist_array(twist), self._array, rtol)
 
+    def _repr_svg_(self) -> "str | None":
+        """A small drawing of the wrench for notebooks (its line of action with the force arrow, or a couple at infinity).
+
+        Drawn by :func:`planargeo.geometry.svg.wrench_svg` without matplotlib.
+
+        Returns
+        -------
+        str
+            An SVG document; None for a batch (the text repr is shown).
+        """
+        if self._array.ndim != 1:
+            return None
+        from planargeo.geometry.svg import wrench_svg
+
+        return wrench_svg(self._array, label="f")
     def __matmul__(self, other):
         if isinstance(other, Twist):
             return power(other.array, self._array)

@@ -66,6 +66,7 @@ EXPLORERS = {
     "TreeExplorer": "trees",
     "SubspaceExplorer": "subspace",
     "ImpulseExplorer": "impulse",
+    "ConstructionExplorer": "construction",
 }
 __all__ += list(EXPLORERS)
 

@@ -1,0 +1,86 @@
+"""Figures 1.1 and 1.4 (planar): the velocity field of a twist and the moment field of a wrench.
+
+The thesis's spatial figures show helical fields; in the plane the pitch is
+zero, and what remains is the tangential part: every body point moves
+perpendicular to its line to the pole (1.3 with ``ρ = 0``), and the moment of
+a force about a point grows with the point's distance from the line of action
+(1.43 with ``ρ = 0``).  Both are computed point by point with the frame changes
+``X_P`` (4.8) and ``X_P⁻ᵀ`` (4.24), not from the closed forms they illustrate
+(those are asserted).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from planargeo.draw.artists import plot_line, plot_point
+from planargeo.draw.constructions import label
+from planargeo.draw.layout import fit_view
+from planargeo.draw.style import COLORS
+from planargeo.gallery.figures import register
+from planargeo.screws.twists import X_P, X_P_inv_T, Twist, Wrench
+
+#: the twist of Fig. 1.1: ω = 1.2 about (0.4, 0.2)
+POLE, OMEGA = np.array([0.4, 0.2]), 1.2
+#: the wrench of Fig. 1.4: 1 N along the direction 25° through (0, -0.3)
+LINE_POINT, ANGLE = np.array([0.0, -0.3]), np.radians(25.0)
+
+
+def _grid(n=7, half=1.5):
+    t = np.linspace(-half, half, n)
+    return np.array([[x, y] for y in t for x in t])
+
+
+@register(1.01, height=2.9)
+def fig1_1(ax):
+    """Fig. 1.1 — the velocity field of a planar twist v (ω = 1.2 about the pole): the velocity of
+    the body point at each P, the linear part of X_P v (4.8), is perpendicular to the line from
+    the pole to P and grows with the distance r as ω r (1.3 with pitch 0: the helical field of the
+    spatial case without its axial part); at the pole it vanishes."""
+    v = Twist.rotation(POLE, OMEGA).array
+    P = _grid()
+    V = np.array([(X_P(p) @ v)[:2] for p in P])
+    r = P - POLE
+    assert np.allclose(np.einsum("ij,ij->i", V, r), 0.0)                       # perpendicular
+    assert np.allclose(np.hypot(*V.T), OMEGA * np.hypot(*r.T))                  # |v_P| = ω r
+    s = 0.17
+    ax.quiver(P[:, 0], P[:, 1], s * V[:, 0], s * V[:, 1], angles="xy", scale_units="xy", scale=1,
+              color=COLORS["twist"], width=0.006, headwidth=3.5, headlength=4, alpha=0.85)
+    plot_point(v, ax, text="pole of $v$", text_offset=(-40, -22))
+    k = 12                                           # one point named: P = (1, -1) and its v_P
+    Q = P[k]
+    ax.plot(*Q, "o", color="#222222", ms=3)
+    label(Q, "$P$", ax=ax, offset=(-5, -3), ha="right", va="top")
+    label(Q + s * V[k], r"$v_P = \omega\, r$", ax=ax, offset=(0, -6), va="top",
+          color=COLORS["twist"])
+    ax.plot([POLE[0], Q[0]], [POLE[1], Q[1]], color=COLORS["construct"], lw=0.8, ls="--")
+    label((POLE + Q) / 2, "$r$", ax=ax, offset=(4, -10), color=COLORS["construct"])
+    fit_view(ax, [[-1.75, -1.75], [1.75, 1.75]], margin=0.0)
+
+
+@register(1.04, height=2.9)
+def fig1_4(ax):
+    """Fig. 1.4 — the moment field of a planar force f (1 N along its line of action): the moment
+    τ_P about each point P, the last component of X_P⁻ᵀ f (4.24), is the force times P's signed
+    distance from the line (1.43 with pitch 0), so its level lines run parallel to the line of
+    action, zero on it, counter-clockwise on its left and clockwise on its right."""
+    e = np.array([np.cos(ANGLE), np.sin(ANGLE)])
+    f = Wrench.force(LINE_POINT, e).array
+    t = np.linspace(-2.6, 2.6, 105)
+    X, Y = np.meshgrid(t, t)
+    tau = np.array([(X_P_inv_T(p) @ f)[2] for p in np.stack([X.ravel(), Y.ravel()], -1)])
+    tau = tau.reshape(X.shape)
+    # the closed form: τ_P = F · (signed distance of P, positive on the left of f)
+    n_ = np.array([-e[1], e[0]])
+    assert np.allclose(tau, (X - LINE_POINT[0]) * n_[0] + (Y - LINE_POINT[1]) * n_[1])
+    levels = np.arange(-1.5, 1.51, 0.5)
+    ax.contour(X, Y, tau, levels=levels, colors=[COLORS["momentum"]], linewidths=0.8,
+               linestyles=["--" if v < 0 else ":" if v > 0 else "-" for v in levels])
+    for lv, t_along, text in ((1.0, -1.2, "τ = 1"), (-1.0, 1.2, "τ = −1")):
+        p = LINE_POINT + lv * n_ + t_along * e      # on the level line τ = lv
+        ax.text(*p, text, fontsize=8, color=COLORS["momentum"], ha="center", va="center",
+                bbox=dict(fc="white", ec="none", pad=0.5))
+    for p, text in (((-0.75, 1.5), "τ > 0: counter-clockwise"), ((0.85, -1.55), "τ < 0: clockwise")):
+        ax.text(*p, text, fontsize=8, color=COLORS["momentum"], ha="center", va="center",
+                bbox=dict(fc="white", ec="none", pad=0.5))
+    plot_line(f, ax, role="wrench", scale=0.9, anchor=LINE_POINT + 0.4 * e, text="$f$")
+    fit_view(ax, [[-1.75, -1.75], [1.75, 1.75]], margin=0.0)

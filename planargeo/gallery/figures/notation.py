@@ -1,0 +1,110 @@
+"""Figures 2.1 (chain notation) and 3.3 (apparent mass of an articulated body)."""
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.patches import Circle, Rectangle
+
+from planargeo.draw.artists import plot_point
+from planargeo.draw.constructions import label
+from planargeo.draw.layout import fit_view
+from planargeo.draw.mechanism import draw_frame, draw_model
+from planargeo.draw.style import COLORS
+from planargeo.gallery.figures import chain, register
+from planargeo.mechanics.kinematics import kinematics
+from planargeo.screws.twists import inertia_matrix
+
+
+@register(2.01, height=2.5)
+def fig2_1(ax):
+    """Fig. 2.1 — notation of a chain: body i is joined to its parent i − 1 by joint i, whose
+    unit twist s_i (here a revolute: its pole is the joint) carries the relative motion s_i q̇_i
+    (2.1); each body has its local frame (black arrows) at its joint, turned with the body."""
+    m = chain(3)
+    q = np.array([0.5, -0.6, 0.7])
+    d = kinematics(m, q, np.zeros(3))
+    names = ["$i-1$", "$i$", "$i+1$"]
+    draw_model(m, d, ax, alpha=0.25, names=[f"body {n}" for n in names], show_com=False)
+    pose = np.asarray(d.pose)
+    for i in range(3):             # body i's frame at joint i, turned with the body
+        draw_frame(pose[i, :2], ax, angle=pose[i, 2], length=0.3, labels=("", ""))
+    s = np.asarray(d.s(1))[:, 0]                  # joint i's unit twist: its pole is the joint
+    assert np.allclose([-s[1] / s[2], s[0] / s[2]], pose[1, :2])
+    plot_point(s, ax, role="twist", glyph=True, text="joint $i$: $s_i\\dot q_i$",
+               text_offset=(-12, 12))
+    label(pose[2, :2], "joint $i+1$", ax=ax, offset=(8, -16))
+    label(pose[0, :2], "joint $i-1$", ax=ax, offset=(10, -18))
+    tip = 2 * np.asarray(d.com)[2] - pose[2, :2]
+    fit_view(ax, [pose[0, :2] - [0.35, 0.45], tip + [0.25, 0.2], pose[1, :2] + [0.0, 0.5]],
+             margin=0.06)
+
+
+def apparent_mass(m: float = 1.0):
+    """The articulated inertia of Fig. 3.3 and the apparent mass along each force direction.
+
+    A disc of mass ``m`` (the thesis's sphere) slides freely along x on a slider of mass
+    ``m`` (the cylinder) at the origin.  Seen from the slider, the disc adds its inertia
+    projected across the prismatic joint ``s = [1, 0, 0]``:
+    ``A = I_c + I_s − I_s s (sᵀ I_s s)⁻¹ sᵀ I_s`` (3.20–3.27).  A force along ``e`` through
+    the centre gives the acceleration ``A⁻¹ f``; the apparent mass is ``1 / (eᵀ A⁻¹ e)``.
+
+    Parameters
+    ----------
+    m : float
+        Mass of each body.
+
+    Returns
+    -------
+    A : ndarray (3, 3)
+        The articulated inertia at the slider.
+    mass_along : callable
+        ``mass_along(theta)``: the apparent mass for a force at angle ``theta``.
+
+    Examples
+    --------
+    >>> A, along = apparent_mass(2.0)
+    >>> float(along(0.0)), float(along(np.pi / 2))          # m along the slot, 2m across (3.14)
+    (2.0, 4.0)
+    """
+    Ic = inertia_matrix(m, [0.0, 0.0], 0.05 * m)       # the cylinder
+    Is = inertia_matrix(m, [0.0, 0.0], 0.4 * m)        # the sphere (disc)
+    s = np.array([1.0, 0.0, 0.0])
+    Iss = Is @ s
+    A = Ic + Is - np.outer(Iss, Iss) / (s @ Iss)
+    Ainv = np.linalg.inv(A)
+
+    def along(theta):
+        e = np.array([np.cos(theta), np.sin(theta), 0.0])
+        return 1.0 / (e @ Ainv @ e)
+
+    return A, along
+
+
+@register(3.03, height=2.6)
+def fig3_3(ax):
+    """Fig. 3.3 — apparent mass of an articulated body: a disc of mass m slides in a slot along x
+    on a slider of mass m; a force on the slider along the slot moves the slider alone (apparent
+    mass m), across it both bodies (2m), as the articulated inertia A = diag(m, 2m, ·) of (3.14)
+    says; the dashed curve is the apparent mass 1/(eᵀA⁻¹e) for every force direction e."""
+    m = 1.0
+    A, along = apparent_mass(m)
+    assert np.isclose(along(0.0), m) and np.isclose(along(np.pi / 2), 2 * m)    # 3.14
+    assert np.allclose(A[:2, :2], np.diag([m, 2 * m]))
+    R = 1.0
+    ax.add_patch(Circle((0, 0), R, fc=COLORS["body"], alpha=0.3, ec="#1f3a4d", lw=1.0))
+    ax.add_patch(Rectangle((-R, -0.16), 2 * R, 0.32, fc="white", ec="#1f3a4d", lw=0.8))
+    ax.add_patch(Rectangle((-0.3, -0.13), 0.6, 0.26, fc=COLORS["momentum"], alpha=0.6,
+                           ec="#1f3a4d", lw=0.8))
+    label((0.62, 0.62), "sphere $m$", ax=ax, offset=(4, 4))
+    label((-0.3, -0.13), "cylinder $m$", ax=ax, offset=(-6, -14), ha="right")
+    th = np.linspace(0, 2 * np.pi, 181)
+    r = 0.75 * np.array([along(t) for t in th])
+    ax.plot(r * np.cos(th), r * np.sin(th), color=COLORS["wrench"], lw=1.0, ls="--")
+    label((0.0, -1.5), "apparent mass", ax=ax, offset=(0, -2), ha="center", va="top",
+          color=COLORS["wrench"])
+    for d, txt, off in (((1.0, 0.0), "$F_x$: mass $m$", (4, 4)),
+                        ((0.0, 1.0), "$F_y$: mass $2m$", (5, 0))):
+        tip = 0.35 * np.array(d) + 0.9 * np.array(d) * (1.0 if d[0] else 1.2)
+        ax.annotate("", xy=tuple(tip), xytext=tuple(0.3 * np.array(d)),
+                    arrowprops=dict(arrowstyle="-|>", color=COLORS["wrench"], lw=1.6))
+        label(tip, txt, ax=ax, offset=off, color=COLORS["wrench"])
+    fit_view(ax, [[-1.6, -1.7], [2.3, 1.7]], margin=0.02)

@@ -1,0 +1,555 @@
+"""Chapter 4's constructions as step-by-step protocols (thesis 4.2–4.7, 4.10–4.57).
+
+A *construction* takes a few numbers (poles, rates, forces, a joint, an inertia)
+and returns the ordered steps by which the thesis builds its figure: each step
+names what it adds, the equation it uses, and the elements it draws (points,
+lines, segments, a conic) in the package's homogeneous coordinates, plus the
+numbers a reader checks by hand.  Nothing here draws: the
+:class:`~planargeo.widgets.construction.ConstructionExplorer` shows one step at a
+time, the tests compare the numbers with hand derivations.
+
+=================  ============================================================  ============
+kind               what is constructed                                           thesis
+=================  ============================================================  ============
+``twist_sum``      ``v₃ = v₁ + v₂``: the pole on the line of the poles           4.11–4.16
+``wrench_sum``     ``f₃ = f₁ + f₂``: the line through the meet of the lines      4.33–4.46
+``velocity``       ``vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ`` across a revolute joint          4.47–4.49
+``acceleration``   ``aᵢ = aᵢ₋₁ + sᵢ q̈ᵢ + vᵢ × sᵢ q̇ᵢ``                  4.52–4.54
+``newton_euler``   ``f_net = I a + p`` and the joint torque as ``ρ = τ/F``       4.55–4.57
+``through_inf…``  a pole dragged through infinity (``through_infinity``)       10.2.4
+=================  ============================================================  ============
+
+Special cases are ordinary values (thesis 10.2.4): a sum whose pole is at
+infinity, parallel force lines meeting at infinity, a couple on the line at
+infinity; the step's caption names the case (:mod:`planargeo.screws.special`).
+
+Examples
+--------
+>>> c = construct("twist_sum", x1=0.0, y1=0.0, w1=1.0, x2=4.0, y2=0.0, w2=3.0)
+>>> [s.id for s in c.steps]
+['poles', 'lever', 'sum']
+>>> c.values["pole of v3"], c.values["β"]           # 3/4 of the way from Q₁ to Q₂ (4.12)
+((3.0, 0.0), 0.75)
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+import numpy as np
+
+from planargeo.errors import InputError
+from planargeo.geometry.projective import from_xy, join, to_xy
+from planargeo.screws.inertia import centre_of_mass
+from planargeo.screws.special import (horizon_point, pair_case, twist_case, twists_case, wrench_case,
+                                      wrenches_case)
+from planargeo.screws.twists import (add_twists, add_wrenches, bias_force, inertia_matrix, kappa,
+                                     unit_rotation)
+
+__all__ = ["Element", "ConstructionStep", "Construction", "CONSTRUCTIONS", "construct",
+           "parameters"]
+
+
+@dataclass(frozen=True)
+class Element:
+    """One drawn element of a step.
+
+    Attributes
+    ----------
+    name : str
+        Identifier, unique within a construction (e.g. ``"Q1"``).
+    kind : {"point", "line", "segment", "conic"}
+        A homogeneous point (3,), a homogeneous line (3,), a Euclidean segment
+        (2, 2) or a conic (3, 3).
+    value : ndarray
+    role : str
+        Style role (:mod:`planargeo.draw.style`), e.g. ``"twist"``, ``"wrench"``.
+    label : str
+        The thesis symbol (matplotlib mathtext), "" for none.
+    emphasis : bool
+        A sum (drawn heavier).
+    """
+
+    name: str
+    kind: str
+    value: np.ndarray
+    role: str
+    label: str = ""
+    emphasis: bool = False
+
+
+@dataclass(frozen=True)
+class ConstructionStep:
+    """One step of a construction protocol.
+
+    Attributes
+    ----------
+    id : str
+        Short identifier (also the SVG layer id, prefixed ``step-``).
+    title : str
+        What the step constructs, with its numbers (unicode, one line).
+    equation : str
+        The thesis equation(s) used, e.g. ``"4.12–4.13"``.
+    elements : tuple of Element
+        What the step adds to the drawing (possibly nothing: a step that only
+        computes a number).
+    """
+
+    id: str
+    title: str
+    equation: str
+    elements: tuple = ()
+
+    @property
+    def caption(self) -> str:
+        """``title (equation)``: the caption shown with the step.
+
+        Returns
+        -------
+        str
+        """
+        return f"{self.title} ({self.equation})"
+
+
+@dataclass(frozen=True)
+class Construction:
+    """The steps of one construction and its numbers.
+
+    Attributes
+    ----------
+    kind : str
+        A key of :data:`CONSTRUCTIONS`.
+    title : str
+    steps : tuple of ConstructionStep
+    values : dict
+        Numbers for the readout (hand-checkable), keyed by thesis symbol.
+    case : str
+        The special case reached (:mod:`planargeo.screws.special`), readable.
+    params : dict
+        The parameters used.
+    """
+
+    kind: str
+    title: str
+    steps: tuple
+    values: dict
+    case: str
+    params: dict = field(default_factory=dict)
+
+    def elements(self, upto: int | None = None) -> list[Element]:
+        """The elements of steps ``1 … upto`` (all steps when None).
+
+        Parameters
+        ----------
+        upto : int, optional
+
+        Returns
+        -------
+        list of Element
+        """
+        steps = self.steps if upto is None else self.steps[:upto]
+        return [e for s in steps for e in s.elements]
+
+
+def _pt(name, p, role, label="", emphasis=False) -> Element:
+    return Element(name, "point", np.asarray(p, float), role, label, emphasis)
+
+
+def _ln(name, l, role, label="", emphasis=False) -> Element:
+    return Element(name, "line", np.asarray(l, float), role, label, emphasis)
+
+
+def _seg(name, p, q, role="construct", label="") -> Element:
+    return Element(name, "segment", np.array([p, q], float), role, label)
+
+
+def _xy_or_inf(p) -> Any:
+    p = np.asarray(p, float)
+    return "at infinity" if p[2] == 0 else tuple(float(v) for v in to_xy(p))
+
+
+def _num(x) -> str:
+    x = float(x)
+    if not math.isfinite(x):
+        return "∞"
+    s = f"{x:.3g}"
+    return "0" if s in ("-0", "0", "-0.0") or abs(x) < 1e-12 else s
+
+
+def _nonzero(v: np.ndarray, name: str, what: str) -> np.ndarray:
+    if not np.any(v):
+        raise InputError(f"{name} must be non-zero: with these values it is the zero {what} "
+                         f"(no {'pole' if what == 'twist' else 'line'})")
+    return v
+
+
+def _direction(angle_deg: float) -> np.ndarray:
+    a = math.radians(angle_deg)
+    c, s = math.cos(a), math.sin(a)
+    # exact axes: cos(90°) is 6e-17, which would tilt a vertical force by round-off
+    return np.array([0.0 if abs(c) < 1e-15 else c, 0.0 if abs(s) < 1e-15 else s])
+
+
+# --------------------------------------------------------------------------- twist sum (4.2)
+def _twist_sum(x1=-1.5, y1=0.0, w1=1.0, u1=0.0, angle1=0.0,
+               x2=1.5, y2=0.5, w2=2.0, u2=0.0, angle2=90.0) -> Construction:
+    def twist(x, y, w, u, ang, k):
+        v = w * unit_rotation([x, y]) + np.append(u * _direction(ang), 0.0)
+        return _nonzero(v, f"v{k}", "twist")
+
+    v1, v2 = twist(x1, y1, w1, u1, angle1, 1), twist(x2, y2, w2, u2, angle2, 2)
+    c = add_twists(v1, v2)
+    case = twists_case(v1, v2)
+    steps = [ConstructionStep("poles", "Q₁, Q₂: the poles of v₁ and v₂", "4.10",
+                              (_pt("Q1", v1, "twist", "$v_1$"), _pt("Q2", v2, "twist", "$v_2$")))]
+    if c.line is None:
+        steps.append(ConstructionStep("lever", "Q₁ = Q₂: one pole, every line through it is a lever",
+                                      "4.11"))
+    else:
+        steps.append(ConstructionStep("lever", "Q₁Q₂ = Q₁ × Q₂: the line through both poles", "5.32",
+                                      (_ln("Q1Q2", c.line, "construct"),)))
+    if c.case == "rotations":
+        title = f"v₃ on Q₁Q₂ at β = ω₂/(ω₁+ω₂) = {_num(c.beta)}"
+        eq = "4.11–4.13"
+    elif c.case == "opposite_rotations":
+        title = "ω₁ + ω₂ = 0: v₃ is a translation, its pole at infinity"
+        eq = "4.13"
+    elif c.case == "rotation_translation":
+        title = f"v₃ = the rotation shifted by ρ = u/ω = {_num(c.rho)}"
+        eq = "4.16"
+    else:
+        title, eq = "two translations: v₃ is a translation", "4.10"
+    if case.name == "coincident_poles":
+        title, eq = "same pole: v₃ turns about it at ω₁ + ω₂", "4.11"
+    sum_el = (_pt("v3", c.sum.array, "twist", "$v_3 = v_1 + v_2$", True),) if c.P is not None else ()
+    if c.P is None:
+        title, eq = "v₁ + v₂ = 0: the zero twist has no pole", "4.6"
+    steps.append(ConstructionStep("sum", title, eq, sum_el))
+    values = {"ω₁": c.omega1, "ω₂": c.omega2, "ω₃ = ω₁ + ω₂": c.omega3,
+              "β": "—" if c.beta is None else c.beta, "ρ": "—" if c.rho is None else c.rho,
+              "pole of v3": "none" if c.P is None else _xy_or_inf(c.P)}
+    return Construction("twist_sum", "Twist addition", tuple(steps), values, case.text)
+
+
+# --------------------------------------------------------------------------- wrench sum (4.4)
+def _wrench_sum(x1=-1.5, y1=-0.5, F1=1.0, angle1=60.0, tau1=0.0,
+                x2=1.5, y2=0.0, F2=1.5, angle2=120.0, tau2=0.0) -> Construction:
+    def wrench(x, y, F, ang, tau, k):
+        d = F * _direction(ang)
+        f = np.array([d[0], d[1], x * d[1] - y * d[0] + tau])
+        return _nonzero(f, f"f{k}", "wrench")
+
+    f1, f2 = wrench(x1, y1, F1, angle1, tau1, 1), wrench(x2, y2, F2, angle2, tau2, 2)
+    c = add_wrenches(f1, f2)
+    case = wrenches_case(f1, f2)
+    steps = [ConstructionStep("lines", "L₁, L₂: the lines of action of f₁ and f₂", "4.27",
+                              (_ln("f1", f1, "wrench", "$f_1$"), _ln("f2", f2, "wrench", "$f_2$")))]
+    if c.P is None:
+        steps.append(ConstructionStep("meet", "two couples: no finite line to meet", "4.46"))
+    elif case.name == "same_line":
+        steps.append(ConstructionStep("meet", "L₁ = L₂: the forces share their line", "4.4.1"))
+    elif c.P[2] == 0:
+        steps.append(ConstructionStep("meet", "L₁ ∥ L₂: they meet at infinity", "5.34",
+                                      (_pt("P", c.P, "accel", ""),)))
+    elif c.case == "force_couple":
+        steps.append(ConstructionStep("meet", "a couple is the line at infinity: L₁ × L∞ is "
+                                      "the force's direction", "5.34"))
+    else:
+        steps.append(ConstructionStep("meet", "P = L₁ × L₂: where the lines meet", "5.34",
+                                      (_pt("P", c.P, "accel", "$P$"),)))
+    if c.case == "concurrent":
+        P = to_xy(c.P)
+        a, b, s = P + f1[:2], P + f2[:2], P + f1[:2] + f2[:2]
+        par = (_seg("par1", P, a, "wrench"), _seg("par2", P, b, "wrench"),
+               _seg("par3", a, s), _seg("par4", b, s), _seg("diag", P, s, "wrench"))
+        steps.append(ConstructionStep("parallelogram", f"the force parallelogram at P: "
+                                      f"|f₁ + f₂| = {_num(c.F3)}", "4.39", par))
+    elif c.case == "parallel":
+        steps.append(ConstructionStep("lever", f"lever rule: β = F₂/(F₁+F₂) = {_num(c.beta)}, "
+                                      f"d₃ = d₁ + β(d₂ − d₁) = {_num(c.d3)}", "4.43–4.45"))
+    elif c.case == "force_couple":
+        force = f1 if np.any(f1[:2]) else f2
+        anchor = np.array([x1, y1]) if force is f1 else np.array([x2, y2])
+        e = force[:2] / np.hypot(*force[:2])
+        n = np.array([e[1], -e[0]])
+        steps.append(ConstructionStep("shift", f"the force shifted by ρ = τ/F = {_num(c.rho)}",
+                                      "4.46", (_seg("rho", anchor, anchor + c.rho * n, "construct",
+                                                    r"$\rho$"),)))
+    elif c.case == "couple":
+        steps.append(ConstructionStep("couple", "equal and opposite parallel forces: a couple "
+                                      f"τ = {_num(c.sum.array[2])}", "4.4.2"))
+    else:
+        steps.append(ConstructionStep("check", case.text.rsplit(" (", 1)[0], case.equation))
+    if c.L3 is None:
+        steps.append(ConstructionStep("sum", "f₁ + f₂ = 0: no load", "4.21"))
+    else:
+        steps.append(ConstructionStep("sum", "f₃ = f₁ + f₂: its line passes through P", "4.33",
+                                      (_ln("f3", c.sum.array, "wrench", "$f_3 = f_1 + f_2$", True),)))
+    values = {"F₁": c.F1, "F₂": c.F2, "F₃": c.F3, "β": "—" if c.beta is None else c.beta,
+              "ρ": "—" if c.rho is None else c.rho,
+              "meet P": "none" if c.P is None else _xy_or_inf(c.P),
+              "f3": tuple(float(v) for v in c.sum.array)}
+    return Construction("wrench_sum", "Wrench addition", tuple(steps), values, case.text)
+
+
+# --------------------------------------------------------------------------- velocity (4.5)
+def _velocity(xv=-1.5, yv=1.0, w=1.0, xj=1.0, yj=0.0, qd=1.5) -> Construction:
+    v_prev = _nonzero(w * unit_rotation([xv, yv]), "v_prev", "twist")
+    s = unit_rotation([xj, yj])
+    u = _nonzero(s * qd, "s q̇", "twist")
+    v = v_prev + u
+    k = math.hypot(xj - xv, yj - yv)
+    case = twists_case(v_prev, u)
+    steps = [ConstructionStep("previous", "vᵢ₋₁: the pole of the previous body", "4.47",
+                              (_pt("v_prev", v_prev, "twist", "$v_{i-1}$"),)),
+             ConstructionStep("joint", "sᵢ q̇ᵢ: the joint's relative rotation, its pole at the "
+                              "joint", "2.1", (_pt("joint", u, "twist", r"$s_i\dot q_i$"),))]
+    if k == 0:
+        steps.append(ConstructionStep("lever", "the joint is at the pole of vᵢ₋₁: kᵢ = 0", "4.48"))
+    else:
+        steps.append(ConstructionStep("lever", f"kᵢ = {_num(k)}: the line from vᵢ₋₁ to the "
+                                      "joint", "4.48", (_ln("lever", join(v_prev, s), "construct"),)))
+    beta = qd / (qd + w) if qd + w != 0 else float("inf")
+    if np.any(v):
+        title = (f"vᵢ on it at βᵢ kᵢ, βᵢ = q̇ᵢ/(q̇ᵢ + ωᵢ₋₁) = {_num(beta)}; "
+                 f"ωᵢ = {_num(v[2])}")
+        steps.append(ConstructionStep("sum", title, "4.48–4.49",
+                                      (_pt("v", v, "twist", "$v_i$", True),)))
+    else:
+        steps.append(ConstructionStep("sum", "vᵢ = 0: the body is at rest", "4.47"))
+    values = {"ωᵢ₋₁": w, "q̇ᵢ": qd, "ωᵢ": float(v[2]), "kᵢ": k, "βᵢ": beta,
+              "pole of vᵢ": "none" if not np.any(v) else _xy_or_inf(v)}
+    return Construction("velocity", "Velocity kinematics", tuple(steps), values, case.text)
+
+
+# --------------------------------------------------------------------------- acceleration (4.6)
+def _acceleration(xv=-1.5, yv=1.0, w=1.0, xa=-1.0, ya=-1.0, alpha=0.5, xj=1.0, yj=0.0, qd=1.5,
+                  qdd=2.0) -> Construction:
+    v_prev = w * unit_rotation([xv, yv])
+    a_prev = alpha * unit_rotation([xa, ya])
+    s = unit_rotation([xj, yj])
+    v = v_prev + s * qd
+    rel = s * qdd
+    kap = kappa(v_prev, s, qd)                  # = vᵢ × sᵢ q̇ᵢ (4.52)
+    combo = rel + kap
+    a = a_prev + combo
+    k = math.hypot(xj - xv, yj - yv)
+    steps = [ConstructionStep("previous", "aᵢ₋₁: the acceleration pole of the previous body",
+                              "4.52", (_pt("a_prev", a_prev, "accel", "$a_{i-1}$"),) if np.any(a_prev)
+                              else ()),
+             ConstructionStep("velocity", "vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ: the velocity pole", "4.47",
+                              (_pt("v", v, "twist", "$v_i$"),) if np.any(v) else ()),
+             ConstructionStep("joint", "sᵢ q̈ᵢ: the relative acceleration about the joint", "4.52",
+                              (_pt("rel", rel, "accel", r"$s_i\ddot q_i$"),) if qdd != 0 else ())]
+    kn = float(np.hypot(kap[0], kap[1]))
+    steps.append(ConstructionStep("bias", f"κᵢ = vᵢ × sᵢ q̇ᵢ: a translation along the line to "
+                                  f"the joint, |κᵢ| = ωᵢ₋₁ q̇ᵢ kᵢ = {_num(kn)}", "4.53",
+                                  (_pt("kappa", kap, "accel", r"$\kappa_i$"),) if kn else ()))
+    if qdd == 0 and np.any(combo):
+        rho = float("inf")
+        steps.append(ConstructionStep("combined", "q̈ᵢ = 0: sᵢ q̈ᵢ + κᵢ is κᵢ itself, a translation "
+                                      "(ρᵢ = ∞)", "4.54"))
+    elif np.any(combo):
+        rho = kn / qdd
+        els = [_pt("combo", combo, "accel", r"$s_i\ddot q_i + \kappa_i$")]
+        if qdd != 0 and kn:
+            els.append(_ln("joint_lever", np.cross(rel, kap), "construct"))
+        steps.append(ConstructionStep("combined", f"sᵢ q̈ᵢ + κᵢ: a rotation ρᵢ = ωᵢ₋₁ q̇ᵢ kᵢ"
+                                      f"/q̈ᵢ = {_num(rho)} from the joint", "4.54", tuple(els)))
+    else:
+        rho = float("nan")
+        steps.append(ConstructionStep("combined", "sᵢ q̈ᵢ + κᵢ = 0: the joint adds nothing", "4.54"))
+    els = []
+    if np.any(a_prev) and np.any(combo) and np.linalg.norm(np.cross(a_prev, combo)) > 0:
+        els.append(_ln("lever", np.cross(a_prev, combo), "construct"))
+    if np.any(a):
+        els.append(_pt("a", a, "accel", "$a_i$", True))
+    steps.append(ConstructionStep("sum", "aᵢ = aᵢ₋₁ + (sᵢ q̈ᵢ + κᵢ): on the line joining "
+                                  "their poles", "4.52", tuple(els)))
+    values = {"ωᵢ₋₁": w, "q̇ᵢ": qd, "q̈ᵢ": qdd, "kᵢ": k, "|κᵢ|": kn, "ρᵢ": rho,
+              "pole of aᵢ": "none" if not np.any(a) else _xy_or_inf(a),
+              "aᵢ": tuple(float(x) for x in a)}
+    case = twists_case(a_prev, combo) if np.any(a_prev) and np.any(combo) else twists_case(a, a)
+    return Construction("acceleration", "Acceleration kinematics", tuple(steps), values, case.text)
+
+
+# --------------------------------------------------------------------------- Newton–Euler (4.7)
+def _newton_euler(m=1.0, xc=0.5, yc=0.0, r=0.4, xv=0.5, yv=2.0, w=1.5, xa=2.0, ya=-1.0, alpha=1.5,
+                  xj=-0.5, yj=0.0) -> Construction:
+    if not m > 0:
+        raise InputError(f"m must be positive, got {m!r}")
+    if not r > 0:
+        raise InputError(f"r must be positive, got {r!r}")
+    I = inertia_matrix(m, [xc, yc], m * r * r)
+    v = w * unit_rotation([xv, yv])
+    a = alpha * unit_rotation([xa, ya])
+    Ia = I @ a
+    p = bias_force(I, v)
+    f = Ia + p
+    J = np.array([xj, yj])
+    tau = float(f[2] - (xj * f[1] - yj * f[0]))     # moment of f about the joint (4.24)
+    F = float(np.hypot(f[0], f[1]))
+    steps = [ConstructionStep("inertia", "I: the inertia, drawn as its circle of gyration ρ_g = "
+                              f"{_num(r)} about the centre of mass", "4.58, 10.2.3",
+                              (Element("I", "conic", I, "inertia", "$I$"),)),
+             ConstructionStep("motion", "v, a: the velocity and acceleration poles", "4.47, 4.52",
+                              tuple(e for e in (_pt("v", v, "twist", "$v$") if np.any(v) else None,
+                                                _pt("a", a, "accel", "$a$") if np.any(a) else None)
+                                    if e is not None))]
+    steps.append(ConstructionStep("Ia", "I a: the axis of percussion of a", "5.64",
+                                  (_ln("Ia", Ia, "wrench", "$Ia$"),) if np.any(Ia) else ()))
+    c = centre_of_mass(I)
+    l = math.hypot(xv - c[0], yv - c[1])
+    steps.append(ConstructionStep("p", f"p = −(v×)ᵀIv: through the centre of mass toward v, "
+                                  f"|p| = m l ω² = {_num(m * l * w * w)}", "4.56",
+                                  (_ln("p", p, "momentum", "$p$"),) if np.any(p) else ()))
+    if not np.any(f):
+        steps.append(ConstructionStep("fnet", "f_net = 0: the body needs no force", "4.55"))
+        rho = float("nan")
+    else:
+        steps.append(ConstructionStep("fnet", "f_net = I a + p", "4.55",
+                                      (_ln("fnet", f, "wrench", r"$f^{net}$", True),)))
+        els = [_pt("J", from_xy(J), "reaction", "joint")]
+        if F == 0:
+            rho = float("inf")
+            title = f"f_net is a couple: τ = {_num(tau)}, ρ = ∞"
+        else:
+            rho = tau / F
+            foot = J + rho * np.array([f[1], -f[0]]) / F     # ρ along n = (fy, −fx)/F (4.32)
+            if rho != 0:
+                els.append(_seg("rho", J, foot, "construct", r"$\rho$"))
+            title = (f"ρ = τ/F_net = {_num(rho)}: the joint torque τ = {_num(tau)} is the net force's "
+                     "moment about the joint" if rho != 0 else
+                     "ρ = 0: f_net passes through the joint (τ = 0, an unpowered joint)")
+        steps.append(ConstructionStep("rho", title, "4.57", tuple(els)))
+    values = {"m": m, "|Ia|": float(np.hypot(*Ia[:2])), "|p|": float(np.hypot(*p[:2])),
+              "F_net": F, "τ": tau, "ρ = τ/F": rho, "f_net": tuple(float(x) for x in f),
+              "power of f_net on v": float(v @ f)}
+    case = wrench_case(f).text if np.any(f) else "zero net force"
+    if np.any(v) and np.any(f):
+        case += "; " + pair_case(v, f).text
+    return Construction("newton_euler", "Newton–Euler balance of one body", tuple(steps), values, case)
+
+
+# --------------------------------------------------------------------------- 10.2.4
+#: radius of the horizon of :func:`_through_infinity` (the line at infinity in the disc model)
+HORIZON = 2.0
+
+
+def _through_infinity(x1=-1.5, y1=-1.0, w1=1.0, hx=1.0, hy=0.5, k=1.5) -> Construction:
+    v1 = _nonzero(w1 * unit_rotation([x1, y1]), "v1", "twist")
+    v2 = k * horizon_point([hx, hy], (0.0, 0.0), HORIZON)
+    v2 = _nonzero(v2, "v2", "twist")
+    c = add_twists(v1, v2)
+    horizon = np.diag([1.0, 1.0, -HORIZON ** 2])           # the circle |x| = R (5.35)
+    w = 1.0 - np.hypot(hx, hy) / HORIZON
+    case2 = twist_case(v2)
+    steps = [ConstructionStep("horizon", f"the horizon |h| = {_num(HORIZON)}: a handle h on it means "
+                              "a point at infinity (opposite rim points are one)", "10.2.4",
+                              (Element("horizon", "conic", horizon, "conic", "horizon"),
+                               _pt("v1", v1, "twist", "$v_1$"))),
+             ConstructionStep("v2", f"v₂ = k [h_y, −h_x, 1 − |h|/R], weight {_num(w)}: "
+                              f"{case2.text.rsplit(' (', 1)[0]}", "10.2.4, 4.10",
+                              (_pt("h", from_xy([hx, hy]), "construct", "$h$"),
+                               _pt("v2", v2, "twist", "$v_2$")))]
+    els = []
+    if c.line is not None:
+        els.append(_ln("lever", c.line, "construct"))
+    if c.P is not None:
+        els.append(_pt("v3", c.sum.array, "twist", "$v_3 = v_1 + v_2$", True))
+    case = twists_case(v1, v2)
+    steps.append(ConstructionStep("sum", f"v₃ = v₁ + v₂ moves on smoothly: {case.text.rsplit(' (', 1)[0]}",
+                                  case.equation, tuple(els)))
+    values = {"weight of v₂": w, "v₂": case2.text, "pole of v2": _xy_or_inf(v2),
+              "pole of v3": "none" if c.P is None else _xy_or_inf(c.P),
+              "v3": tuple(float(x) for x in c.sum.array)}
+    return Construction("through_infinity", "A pole through infinity", tuple(steps), values,
+                        case.text)
+
+
+#: kind -> (title, builder); the builder's keyword defaults are the parameters.
+CONSTRUCTIONS: dict[str, tuple[str, Callable[..., Construction]]] = {
+    "twist_sum": ("Twist addition (4.2)", _twist_sum),
+    "wrench_sum": ("Wrench addition (4.4)", _wrench_sum),
+    "velocity": ("Velocity kinematics (4.5)", _velocity),
+    "acceleration": ("Acceleration kinematics (4.6)", _acceleration),
+    "newton_euler": ("Equations of motion, Newton–Euler balance (4.7, Fig. 4.9)", _newton_euler),
+    "through_infinity": ("A pole dragged through infinity (10.2.4)", _through_infinity),
+}
+
+
+def parameters(kind: str) -> dict[str, float]:
+    """The parameters of construction ``kind`` and their defaults.
+
+    Parameters
+    ----------
+    kind : str
+        A key of :data:`CONSTRUCTIONS`.
+
+    Returns
+    -------
+    dict
+
+    Raises
+    ------
+    InputError
+        An unknown kind.
+
+    Examples
+    --------
+    >>> list(parameters("velocity"))
+    ['xv', 'yv', 'w', 'xj', 'yj', 'qd']
+    """
+    import inspect
+
+    if kind not in CONSTRUCTIONS:
+        raise InputError(f"kind must be one of {list(CONSTRUCTIONS)}, got {kind!r}")
+    sig = inspect.signature(CONSTRUCTIONS[kind][1])
+    return {n: p.default for n, p in sig.parameters.items()}
+
+
+def construct(kind: str, **params) -> Construction:
+    """Build construction ``kind`` with ``params`` (the rest at their defaults).
+
+    Parameters
+    ----------
+    kind : str
+        A key of :data:`CONSTRUCTIONS`.
+    **params : float
+        Parameters (:func:`parameters`); angles in degrees.
+
+    Returns
+    -------
+    Construction
+
+    Raises
+    ------
+    InputError
+        An unknown kind or parameter, a non-finite value, or inputs that make
+        a zero twist or wrench (which has no pole or line), named.
+    PlanargeoError
+        Any other value the geometry refuses (named by the function that refused).
+
+    Examples
+    --------
+    >>> c = construct("velocity", xv=0.0, yv=0.0, w=1.0, xj=3.0, yj=0.0, qd=2.0)
+    >>> c.values["pole of vᵢ"]                     # β k = 2/3 · 3 along the lever (4.48)
+    (2.0, 0.0)
+    >>> construct("twist_sum", w2=0.0, u2=0.0)
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: v2 must be non-zero: with these values it is the zero twist (no pole)
+    """
+    defaults = parameters(kind)
+    unknown = sorted(set(params) - set(defaults))
+    if unknown:
+        raise InputError(f"{kind} has no parameter {unknown[0]!r} (parameters: {', '.join(defaults)})")
+    for k, v in params.items():
+        if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)) \
+                or not math.isfinite(float(v)):
+            raise InputError(f"{k} must be a finite number, got {v!r}")
+    clean = {k: float(v) for k, v in params.items()}
+    c = CONSTRUCTIONS[kind][1](**clean)
+    return Construction(c.kind, c.title, c.steps, c.values, c.case, {**defaults, **clean})
+

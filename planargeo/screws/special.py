@@ -1,0 +1,437 @@
+"""Special cases of twists, wrenches and their pairs, named (thesis 4.2, 4.4, 5.69, 10.2.4).
+
+A twist is a point and a wrench a line (5.51, 5.56), so the special cases of
+mechanics are the special positions of projective geometry (thesis 10.2.4):
+
+=====================  ==============================================  ==========
+name                   geometry                                        thesis
+=====================  ==============================================  ==========
+``zero_twist``         no point (no motion)                            4.6
+``pure_translation``   the pole is at infinity (``ω = 0``)             4.10, 4.16
+``pure_rotation``      a finite pole                                   4.10
+``zero_wrench``        no line (no load)                               4.21
+``pure_couple``        the line at infinity (``F = 0``)                4.46
+``pure_force``         a finite line of action                         4.27
+``workless``           the pole lies on the line: ``v·f = 0``, the     5.69, 10.2.4
+                       twist and wrench are reciprocal screws
+``coincident_poles``   two twists with one pole (their sum too)        4.11
+``opposite_rotations`` ``ω₁ + ω₂ = 0``: the sum is a translation       4.13
+``same_line``          two forces on one line (their sum too)          4.4.1
+``parallel_forces``    the lines meet at infinity (lever rule)         4.43
+``couple_from_forces`` equal opposite parallel forces: a couple        4.4.2
+=====================  ==============================================  ==========
+
+Every test is made on the homogeneous coordinates themselves, never by
+dividing by a weight: an ideal point or the line at infinity is an ordinary
+value, so dragging a pole or a line towards infinity passes *through* the
+ideal element (a translation, a couple) without a jump or an error.  Round-off
+counts as zero: a quantity is zero when it is at most ``rtol`` (default
+``1e-12``, the tolerance of :func:`~planargeo.screws.twists.add_twists`) times
+the size of what it is computed from.
+
+:func:`horizon_point` and :func:`horizon_handle` give a drag handle that can
+reach infinity: the projective plane seen as a disc whose rim is the line at
+infinity (opposite rim points are one ideal point); a handle moved across the
+rim takes its point smoothly through infinity and back from the other side.
+
+Examples
+--------
+>>> from planargeo.screws.twists import Twist, Wrench
+>>> twist_case(Twist.translation([1.0, 0.0])).name
+'pure_translation'
+>>> pair_case(Twist.rotation([1.0, 0.0]), Wrench.force([1.0, 5.0], [0.0, 1.0])).name   # pole on x = 1
+'workless'
+>>> twists_case(Twist.rotation([0.0, 0.0], 2.0), Twist.rotation([3.0, 0.0], -2.0)).text
+'opposite rotations: the sum is a translation (4.13)'
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from planargeo._validate import as_vec3, as_xy, check_positive, check_tolerance
+from planargeo.errors import ShapeError
+from planargeo.geometry.projective import _fit
+
+__all__ = ["SpecialCase", "CASES", "twist_case", "wrench_case", "pair_case", "twists_case",
+           "wrenches_case", "horizon_point", "horizon_handle"]
+
+#: name -> (readable text, thesis equation)
+CASES = {
+    "zero_twist": ("zero twist: no motion, no pole", "4.6"),
+    "pure_translation": ("pure translation: the pole is at infinity", "4.10"),
+    "pure_rotation": ("rotation about a finite pole", "4.10"),
+    "zero_wrench": ("zero wrench: no load, no line", "4.21"),
+    "pure_couple": ("pure couple: the line at infinity", "4.46"),
+    "pure_force": ("force on a finite line", "4.27"),
+    "workless": ("workless: the pole lies on the line, v·f = 0 (reciprocal screws)", "5.69"),
+    "power": ("the force does work on the motion: v·f ≠ 0", "5.73"),
+    "coincident_poles": ("coincident poles: the sum has the same pole", "4.11"),
+    "opposite_rotations": ("opposite rotations: the sum is a translation", "4.13"),
+    "rotations": ("two rotations: the sum's pole divides Q₁Q₂ by the lever rule", "4.12"),
+    "rotation_translation": ("rotation plus translation: the pole shifts by u/ω", "4.16"),
+    "translations": ("two translations: the sum is a translation", "4.10"),
+    "zero_sum": ("the sum is zero", "4.6"),
+    "same_line": ("forces on one line: the sum acts on it too", "4.4.1"),
+    "parallel_forces": ("parallel forces: the lines meet at infinity, lever rule", "4.43"),
+    "couple_from_forces": ("equal and opposite parallel forces: a pure couple", "4.4.2"),
+    "concurrent": ("concurrent forces: the sum passes through their meet", "4.4.1"),
+    "force_couple": ("force plus couple: the line shifts by τ/F", "4.46"),
+    "couples": ("two couples: the sum is a couple", "4.46"),
+}
+
+
+@dataclass(frozen=True)
+class SpecialCase:
+    """A named case: ``name`` (a key of :data:`CASES`), ``text`` and the thesis ``equation``.
+
+    ``text`` ends with the equation in parentheses; ``str(case)`` is the text, for a readout.
+
+    Attributes
+    ----------
+    name : str
+    text : str
+    equation : str
+    """
+
+    name: str
+    text: str
+    equation: str
+
+    def __str__(self) -> str:
+        return self.text
+
+
+def _case(name: str) -> SpecialCase:
+    text, eq = CASES[name]
+    return SpecialCase(name, f"{text} ({eq})", eq)
+
+
+def _single(x, name: str) -> np.ndarray:
+    a = as_vec3(getattr(x, "array", x), name)
+    if a.shape != (3,):
+        raise ShapeError(f"{name} must have shape (3,), got shape {a.shape}")
+    return _fit(a + 0.0)            # rescaled exactly (a power of two): no overflow in products
+
+
+def _raw(x, name: str) -> np.ndarray:
+    a = as_vec3(getattr(x, "array", x), name)
+    if a.shape != (3,):
+        raise ShapeError(f"{name} must have shape (3,), got shape {a.shape}")
+    return a + 0.0
+
+
+def _small(x: float, scale: float, rtol: float) -> bool:
+    return abs(x) <= rtol * scale
+
+
+def twist_case(v, rtol: float = 1e-12) -> SpecialCase:
+    """Name the case of one twist: ``zero_twist``, ``pure_translation`` or ``pure_rotation``.
+
+    A translation is ``ω = 0`` relative to ``|v|`` (round-off counts as zero):
+    its pole is the point at infinity ``[vx, vy, 0]``.
+
+    Parameters
+    ----------
+    v : Twist or array_like (3,)
+    rtol : float
+        Relative size below which a component counts as zero.
+
+    Returns
+    -------
+    SpecialCase
+
+    Raises
+    ------
+    ShapeError
+        ``v`` is not one (3,) twist.
+    InputError
+        A negative or non-finite ``rtol``.
+
+    Examples
+    --------
+    >>> twist_case([0.0, 0.0, 0.0]).name, twist_case([1.0, 2.0, 1e-17]).name
+    ('zero_twist', 'pure_translation')
+    """
+    a, rtol = _single(v, "v"), check_tolerance(rtol)
+    n = float(np.linalg.norm(a))
+    if n == 0:
+        return _case("zero_twist")
+    return _case("pure_translation" if _small(a[2], n, rtol) else "pure_rotation")
+
+
+def wrench_case(f, rtol: float = 1e-12) -> SpecialCase:
+    """Name the case of one wrench: ``zero_wrench``, ``pure_couple`` or ``pure_force``.
+
+    A couple is ``F = 0`` relative to ``|f|``: its line is the line at infinity.
+
+    Parameters
+    ----------
+    f : Wrench or array_like (3,)
+    rtol : float
+        Relative size below which a component counts as zero.
+
+    Returns
+    -------
+    SpecialCase
+
+    Raises
+    ------
+    ShapeError
+        ``f`` is not one (3,) wrench.
+    InputError
+        A negative or non-finite ``rtol``.
+
+    Examples
+    --------
+    >>> wrench_case([0.0, 0.0, -2.0]).name, wrench_case([0.0, 1.0, 2.0]).name
+    ('pure_couple', 'pure_force')
+    """
+    a, rtol = _single(f, "f"), check_tolerance(rtol)
+    n = float(np.linalg.norm(a))
+    if n == 0:
+        return _case("zero_wrench")
+    return _case("pure_couple" if _small(np.hypot(a[0], a[1]), n, rtol) else "pure_force")
+
+
+def pair_case(v, f, rtol: float = 1e-12) -> SpecialCase:
+    """Name the relation of a twist and a wrench: ``workless`` (reciprocal) or ``power``.
+
+    ``v·f = 0`` is incidence of the pole and the line (thesis 5.24, 5.69): a
+    force through the pole, a couple on a translation, or any load on no motion
+    does no work.  The test is scale-free: ``|v·f| ≤ rtol |v| |f|``.  A zero
+    twist or wrench is named by :func:`twist_case` / :func:`wrench_case`.
+
+    Parameters
+    ----------
+    v : Twist or array_like (3,)
+    f : Wrench or array_like (3,)
+    rtol : float
+        Relative size below which the power counts as zero.
+
+    Returns
+    -------
+    SpecialCase
+
+    Raises
+    ------
+    ShapeError
+        Not one (3,) twist and one (3,) wrench.
+    InputError
+        A negative or non-finite ``rtol``.
+
+    Examples
+    --------
+    >>> pair_case([0.0, 1.0, 0.0], [0.0, 0.0, 3.0]).name     # a couple on a translation
+    'workless'
+    >>> pair_case([0.0, 0.0, 1.0], [0.0, 1.0, 2.0]).name     # spin about O, a force on x = 2
+    'power'
+    """
+    a, b, rtol = _single(v, "v"), _single(f, "f"), check_tolerance(rtol)
+    if not np.any(a):
+        return _case("zero_twist")
+    if not np.any(b):
+        return _case("zero_wrench")
+    return _case("workless" if _small(a @ b, np.linalg.norm(a) * np.linalg.norm(b), rtol) else "power")
+
+
+def twists_case(v1, v2, rtol: float = 1e-12) -> SpecialCase:
+    """Name the case of the sum of two twists (thesis 4.11–4.16).
+
+    In order: ``zero_sum``; ``coincident_poles`` (``v1 × v2 = 0``: one point,
+    the sum's pole is the same); ``opposite_rotations`` (``ω1 + ω2 = 0`` with
+    both ω non-zero: the pole of the sum is at infinity); ``translations``;
+    ``rotation_translation``; ``rotations``.
+
+    Parameters
+    ----------
+    v1, v2 : Twist or array_like (3,)
+    rtol : float
+        Relative size below which a quantity counts as zero.
+
+    Returns
+    -------
+    SpecialCase
+
+    Raises
+    ------
+    ShapeError
+        Not two (3,) twists.
+    InputError
+        A negative or non-finite ``rtol``.
+
+    Examples
+    --------
+    >>> twists_case([1.0, 0.0, 1.0], [2.0, 0.0, 2.0]).name      # one pole (0, 1), twice the rate
+    'coincident_poles'
+    """
+    A, B, rtol = _raw(v1, "v1"), _raw(v2, "v2"), check_tolerance(rtol)
+    s = A + B
+    big = max(np.linalg.norm(A), np.linalg.norm(B))
+    if _small(np.linalg.norm(s), big, rtol):
+        return _case("zero_sum")
+    a, b = _fit(A + 0.0), _fit(B + 0.0)
+    if np.any(a) and np.any(b) and _small(np.linalg.norm(np.cross(a, b)),
+                                          np.linalg.norm(a) * np.linalg.norm(b), rtol):
+        return _case("coincident_poles")
+    r1 = bool(np.any(A)) and not _small(A[2], np.linalg.norm(A), rtol)
+    r2 = bool(np.any(B)) and not _small(B[2], np.linalg.norm(B), rtol)
+    if r1 and r2:
+        return _case("opposite_rotations" if _small(s[2], big, rtol) else "rotations")
+    if r1 or r2:
+        return _case("rotation_translation")
+    return _case("translations")
+
+
+def wrenches_case(f1, f2, rtol: float = 1e-12) -> SpecialCase:
+    """Name the case of the sum of two wrenches (thesis 4.33–4.46).
+
+    In order: ``zero_sum``; ``same_line`` (two forces with ``f1 × f2 = 0``);
+    ``couples``; ``force_couple``; ``couple_from_forces`` (parallel forces whose
+    forces cancel); ``parallel_forces`` (the lines meet at infinity);
+    ``concurrent``.
+
+    Parameters
+    ----------
+    f1, f2 : Wrench or array_like (3,)
+    rtol : float
+        Relative size below which a quantity counts as zero.
+
+    Returns
+    -------
+    SpecialCase
+
+    Raises
+    ------
+    ShapeError
+        Not two (3,) wrenches.
+    InputError
+        A negative or non-finite ``rtol``.
+
+    Examples
+    --------
+    >>> wrenches_case([0.0, 1.0, 0.0], [0.0, -1.0, 2.0]).name   # up on x = 0, down on x = 2
+    'couple_from_forces'
+    """
+    A, B, rtol = _raw(f1, "f1"), _raw(f2, "f2"), check_tolerance(rtol)
+    s = A + B
+    big = max(np.linalg.norm(A), np.linalg.norm(B))
+    if _small(np.linalg.norm(s), big, rtol):
+        return _case("zero_sum")
+    F1, F2 = float(np.hypot(A[0], A[1])), float(np.hypot(B[0], B[1]))
+    c1 = not np.any(A) or _small(F1, np.linalg.norm(A), rtol)
+    c2 = not np.any(B) or _small(F2, np.linalg.norm(B), rtol)
+    if c1 and c2:
+        return _case("couples")
+    if c1 or c2:
+        return _case("force_couple")
+    a, b = _fit(A + 0.0), _fit(B + 0.0)
+    if _small(np.linalg.norm(np.cross(a, b)), np.linalg.norm(a) * np.linalg.norm(b), rtol):
+        return _case("same_line")
+    if _small(A[0] * B[1] - A[1] * B[0], F1 * F2, rtol):
+        return _case("couple_from_forces" if _small(np.hypot(s[0], s[1]), max(F1, F2), rtol)
+                     else "parallel_forces")
+    return _case("concurrent")
+
+
+def horizon_point(handle, centre=(0.0, 0.0), radius=1.0) -> np.ndarray:
+    """The homogeneous point a drag handle at ``handle`` means, in the disc model (thesis 10.2.4).
+
+    The plane is seen from ``centre``: a handle at offset ``d`` from the centre
+    means the point ``[cy w + dy, -(cx w + dx), w]`` with weight
+    ``w = 1 − |d|/radius``.  Inside the circle of ``radius`` (the horizon) that
+    is the finite point ``centre + d/w``, which runs off to infinity as the
+    handle nears the horizon; on the horizon it is the ideal point in direction
+    ``d`` (a translation, ``w = 0`` exactly); beyond it ``w < 0`` and the point
+    comes back from the opposite side.  The coordinates are continuous in the
+    handle's position: the passage through infinity has no jump and needs no
+    special case.
+
+    Parameters
+    ----------
+    handle : array_like (..., 2)
+        Handle positions.
+    centre : array_like (2,)
+        Centre of the disc.
+    radius : float
+        Radius of the horizon (> 0).
+
+    Returns
+    -------
+    ndarray (..., 3)
+        Homogeneous points ``[y, -x, w]`` (a twist of that pole, unit rate when
+        ``w = 1``).
+
+    Raises
+    ------
+    InputError
+        A radius that is not positive, or non-finite positions.
+
+    Examples
+    --------
+    >>> horizon_point([0.5, 0.0])          # halfway to the horizon: the point (1, 0)
+    array([ 0. , -0.5,  0.5])
+    >>> horizon_point([1.0, 0.0])          # on the horizon: the ideal point in direction (1, 0)
+    array([ 0., -1.,  0.])
+    """
+    h = as_xy(handle, "handle")
+    c = as_xy(centre, "centre")
+    R = float(check_positive(radius, "radius"))
+    d = h - c
+    w = 1.0 - np.hypot(d[..., 0], d[..., 1]) / R
+    return np.stack([c[..., 1] * w + d[..., 1], -(c[..., 0] * w + d[..., 0]), w], axis=-1)
+
+
+def horizon_handle(p, centre=(0.0, 0.0), radius=1.0) -> np.ndarray:
+    """Where the drag handle of :func:`horizon_point` sits for the point ``p`` (its inverse).
+
+    Of the handle positions that mean ``p`` the one inside or on the horizon is
+    returned: ``d = e / (1 + |e|/radius)`` for the finite point ``centre + e``,
+    and ``radius`` times the unit direction for an ideal point.  A handle
+    dragged across the horizon is thus shown again just inside it on the
+    opposite side (opposite rim points are one ideal point).
+
+    Parameters
+    ----------
+    p : array_like (3,)
+        A homogeneous point (not zero).
+    centre : array_like (2,)
+    radius : float
+
+    Returns
+    -------
+    ndarray (2,)
+
+    Raises
+    ------
+    InputError
+        A radius that is not positive.
+    ShapeError
+        ``p`` is not one (3,) point.
+    DegenerateGeometryError
+        ``p`` is the zero vector.
+
+    Examples
+    --------
+    >>> horizon_handle([0.0, -1.0, 1.0])             # the point (1, 0): halfway to the horizon
+    array([0.5, 0. ])
+    >>> horizon_handle([0.0, 1.0, 0.0])              # the ideal point in direction (-1, 0)
+    array([-1.,  0.])
+    """
+    from planargeo.errors import DegenerateGeometryError
+
+    a = _single(p, "p")
+    if not np.any(a):
+        raise DegenerateGeometryError("p is the zero vector, which is no point")
+    c = as_xy(centre, "centre")
+    R = float(check_positive(radius, "radius"))
+    if a[2] < 0:
+        a = -a
+    # with the point c + e (homogeneous [..., w]): offset of the point from the centre, times w
+    ew = np.array([-a[1] - c[0] * a[2], a[0] - c[1] * a[2]])       # = w e
+    n = float(np.hypot(*ew))
+    if n == 0:
+        return c.copy()
+    # d = e / (1 + |e|/R) = w e / (w + |w e|/R)
+    return c + ew / (a[2] + n / R)
