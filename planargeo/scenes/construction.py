@@ -13,10 +13,10 @@ kind               what is constructed                                          
 =================  ============================================================  ============
 ``twist_sum``      ``v₃ = v₁ + v₂``: the pole on the line of the poles           4.11–4.16
 ``wrench_sum``     ``f₃ = f₁ + f₂``: the line through the meet of the lines      4.33–4.46
-``velocity``       ``vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ`` across a revolute joint          4.47–4.49
-``acceleration``   ``aᵢ = aᵢ₋₁ + sᵢ q̈ᵢ + vᵢ × sᵢ q̇ᵢ``                  4.52–4.54
+``velocity``       ``vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ`` across a revolute joint                 4.47–4.49
+``acceleration``   ``aᵢ = aᵢ₋₁ + sᵢ q̈ᵢ + vᵢ × sᵢ q̇ᵢ``                            4.52–4.54
 ``newton_euler``   ``f_net = I a + p`` and the joint torque as ``ρ = τ/F``       4.55–4.57
-``through_inf…``  a pole dragged through infinity (``through_infinity``)       10.2.4
+``through_inf…``   a pole dragged through infinity (``through_infinity``)        10.2.4
 =================  ============================================================  ============
 
 Special cases are ordinary values (thesis 10.2.4): a sum whose pole is at

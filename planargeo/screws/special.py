@@ -3,23 +3,23 @@
 A twist is a point and a wrench a line (5.51, 5.56), so the special cases of
 mechanics are the special positions of projective geometry (thesis 10.2.4):
 
-=====================  ==============================================  ==========
-name                   geometry                                        thesis
-=====================  ==============================================  ==========
-``zero_twist``         no point (no motion)                            4.6
-``pure_translation``   the pole is at infinity (``ω = 0``)             4.10, 4.16
-``pure_rotation``      a finite pole                                   4.10
-``zero_wrench``        no line (no load)                               4.21
-``pure_couple``        the line at infinity (``F = 0``)                4.46
-``pure_force``         a finite line of action                         4.27
-``workless``           the pole lies on the line: ``v·f = 0``, the     5.69, 10.2.4
-                       twist and wrench are reciprocal screws
-``coincident_poles``   two twists with one pole (their sum too)        4.11
-``opposite_rotations`` ``ω₁ + ω₂ = 0``: the sum is a translation       4.13
-``same_line``          two forces on one line (their sum too)          4.4.1
-``parallel_forces``    the lines meet at infinity (lever rule)         4.43
-``couple_from_forces`` equal opposite parallel forces: a couple        4.4.2
-=====================  ==============================================  ==========
+=======================  ==============================================  ==========
+name                     geometry                                        thesis
+=======================  ==============================================  ==========
+``zero_twist``           no point (no motion)                            4.6
+``pure_translation``     the pole is at infinity (``ω = 0``)             4.10, 4.16
+``pure_rotation``        a finite pole                                   4.10
+``zero_wrench``          no line (no load)                               4.21
+``pure_couple``          the line at infinity (``F = 0``)                4.46
+``pure_force``           a finite line of action                         4.27
+``workless``             the pole lies on the line: ``v·f = 0``, the     5.69, 10.2.4
+                         twist and wrench are reciprocal screws
+``coincident_poles``     two twists with one pole (their sum too)        4.11
+``opposite_rotations``   ``ω₁ + ω₂ = 0``: the sum is a translation       4.13
+``same_line``            two forces on one line (their sum too)          4.4.1
+``parallel_forces``      the lines meet at infinity (lever rule)         4.43
+``couple_from_forces``   equal opposite parallel forces: a couple        4.4.2
+=======================  ==============================================  ==========
 
 Every test is made on the homogeneous coordinates themselves, never by
 dividing by a weight: an ideal point or the line at infinity is an ordinary
