@@ -1,0 +1,132 @@
+"""What the lessons (notebooks/01-…-12-…) say, checked here against independent values.
+
+The notebooks show numbers beside the values they should have; the checks that used to be ``assert``
+statements in the notebooks live here, each against a value computed another way (by hand, a closed
+form re-derived in the comment, Newton–Euler written out, a finite difference, Lagrange multipliers).
+The first part checks the lessons' form: at least 1,200 words of prose, at least three exercises,
+each with a solution in a collapsible ``<details>`` block, "What you will learn" and a summary.
+"""
+import json
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+LESSONS = sorted(p for p in (ROOT / "notebooks").glob("[01][0-9]-*.ipynb") if p.name != "00-tour.ipynb")
+
+
+# --------------------------------------------------------------------------------------- the form
+def markdown(path) -> str:
+    nb = json.loads(path.read_text(encoding="utf-8"))
+    return "\n\n".join("".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "markdown")
+
+
+def prose_words(md: str) -> int:
+    """Words of prose: markdown without code blocks, display equations and HTML tags."""
+    md = re.sub(r"```.*?```", " ", md, flags=re.S)
+    md = re.sub(r"\$\$.*?\$\$", " ", md, flags=re.S)
+    md = re.sub(r"<[^>]+>", " ", md)
+    return sum(1 for w in md.split() if re.search(r"[A-Za-z0-9]", w))
+
+
+def exercises(md: str) -> list[tuple[str, bool]]:
+    """``[(number, has a solution)]``: each **Exercise N** followed by a <details> block before the next."""
+    parts = re.split(r"\*\*Exercise (\d+)", md)
+    return [(parts[i], "<details>" in parts[i + 1] and "</details>" in parts[i + 1]
+             and "Solution" in parts[i + 1]) for i in range(1, len(parts), 2)]
+
+
+def lesson_table():
+    """(name, prose words, exercises, with solutions) per lesson: the closing note's table."""
+    rows = []
+    for p in LESSONS:
+        md = markdown(p)
+        ex = exercises(md)
+        rows.append((p.name, prose_words(md), len(ex), sum(ok for _, ok in ex)))
+    return rows
+
+
+def test_twelve_lessons():
+    assert len(LESSONS) == 12, [p.name for p in LESSONS]
+
+
+@pytest.mark.parametrize("path", LESSONS, ids=lambda p: p.name)
+def test_lesson_form(path):
+    md = markdown(path)
+    assert "What you will learn" in md and "## Summary" in md
+    assert prose_words(md) >= 1200, prose_words(md)
+    ex = exercises(md)
+    assert len(ex) >= 3 and all(ok for _, ok in ex), ex
+    assert [n for n, _ in ex] == [str(k) for k in range(1, len(ex) + 1)]
+    assert "Explorer" in "".join("".join(c["source"]) for c in json.loads(path.read_text())["cells"]
+                                 if c["cell_type"] == "code"), "an explorer to play with"
+
+
+def test_the_word_counter_counts_prose_only():
+    md = "Two words\n\n```python\nx = 1 + 2 + 3\n```\n$$ a + b = c $$ <details><summary>Solution</summary>three more words</details>"
+    assert prose_words(md) == 6
+    assert exercises("**Exercise 1** a <details><summary>Solution</summary>x</details> **Exercise 2** b") == \
+        [("1", True), ("2", False)]
+
+
+# ------------------------------------------------------------------ lesson 1: screws as points and lines
+def test_lesson1_twist_is_its_pole():
+    import planargeo as pg
+    v = pg.Twist.rotation((1.0, 2.0), omega=3.0)
+    # by hand: v_O = ω k × (O − P) = 3 k × (−1, −2) = 3 (2, −1)
+    np.testing.assert_allclose(v.array, [6.0, -3.0, 3.0], atol=1e-15)
+    np.testing.assert_allclose(v.pole.xy, [1.0, 2.0], atol=1e-15)
+    # exercise 1: both twists have the pole (1, 2)
+    for arr in ([4.0, -2.0, 2.0], [-6.0, 3.0, -3.0]):
+        vx, vy, w = arr
+        np.testing.assert_allclose(pg.Twist(arr).pole.xy, [-vy / w, vx / w])
+        np.testing.assert_allclose(pg.Twist(arr).pole.xy, [1.0, 2.0])
+    # a translation is an ideal point
+    assert pg.Twist.translation((0.0, 2.0)).array[2] == 0
+
+
+def test_lesson1_power_is_incidence():
+    import planargeo as pg
+    v = pg.Twist.rotation((1.0, 2.0), omega=3.0)
+    f = pg.Wrench.force((1.0, 2.0), (0.5, -1.0))
+    fx, fy, tz = f.array
+    assert math.isclose(tz + 2.0 * fx - 1.0 * fy, 0.0, abs_tol=1e-12)        # (1, 2) on the line (4.27)
+    assert abs(float(v @ f)) < 1e-12
+    g = pg.Wrench.force((0.0, 0.0), (0.0, 1.0))
+    # ω × moment about the pole: 3 × ((0 − 1)·1 − (0 − 2)·0)
+    assert math.isclose(float(v @ g), -3.0)
+    # exercise 4: the best unit force through O is perpendicular to OP, power 3√5
+    e = np.array([2.0, -1.0]) / math.sqrt(5)
+    assert math.isclose(float(v @ pg.Wrench.force((0.0, 0.0), e)), 3 * math.sqrt(5))
+    angles = np.linspace(0, 2 * np.pi, 721)
+    best = max(float(v @ pg.Wrench.force((0.0, 0.0), (math.cos(a), math.sin(a)))) for a in angles)
+    assert best <= 3 * math.sqrt(5) + 1e-12
+
+
+def test_lesson1_sums():
+    import planargeo as pg
+    s = pg.add_twists(pg.Twist.rotation((0.0, 0.0), 1.0), pg.Twist.rotation((3.0, 0.0), 2.0))
+    np.testing.assert_allclose(pg.to_xy(s.P), [(1 * 0 + 2 * 3) / 3, 0.0])     # lever rule by hand
+    assert s.omega3 == 3.0 and math.isclose(s.beta, 2 / 3)
+    w = pg.add_wrenches(pg.Wrench.force((0.0, 0.0), (1.0, 0.0)), pg.Wrench.couple(2.0))
+    # 4.27 for [1, 0, 2]: 2 + y = 0
+    assert w.sum.line.incidence(pg.Point.from_xy(5.0, -2.0)) == pytest.approx(0.0, abs=1e-12)
+    assert w.rho == 2.0
+    # exercise 3: (1, 0) through O plus (−1, 0) through (0, 2) is a couple of 2
+    c = pg.Wrench.force((0.0, 0.0), (1.0, 0.0)) + pg.Wrench.force((0.0, 2.0), (-1.0, 0.0))
+    np.testing.assert_allclose(c.array, [0.0, 0.0, 2.0], atol=1e-15)
+
+
+def test_lesson1_screw_sum_explorer():
+    from planargeo.widgets import ScrewSumExplorer
+    ex = ScrewSumExplorer(display="agg")
+    # 1 rad/s about (−1.5, 0) plus 2 rad/s about (1.5, 0.5): weighted mean of the poles
+    np.testing.assert_allclose(ex.readout_values["pole of sum"], (0.5, 1 / 3))
+    np.testing.assert_allclose(ex.readout_values["sum"], 3.0 * np.array([1 / 3, -0.5, 1.0]))
+    ex.set(x1=-1.0, y1=0.0, size1=1.0, x2=2.0, y2=0.0, size2=2.0)
+    np.testing.assert_allclose(ex.readout_values["pole of sum"], ((1 * -1.0 + 2 * 2.0) / 3, 0.0))
+    ex.set(size2=-1.0)                                    # exercise 2: opposite rotations
+    assert ex.readout_values["pole of sum"] == "at infinity"
