@@ -130,3 +130,76 @@ def test_lesson1_screw_sum_explorer():
     np.testing.assert_allclose(ex.readout_values["pole of sum"], ((1 * -1.0 + 2 * 2.0) / 3, 0.0))
     ex.set(size2=-1.0)                                    # exercise 2: opposite rotations
     assert ex.readout_values["pole of sum"] == "at infinity"
+
+
+# ---------------------------------------------------- lesson 2: kinematics and equations of motion drawn
+def _arm():
+    from planargeo.algorithms.rnea import newton_euler
+    from planargeo.widgets.chain import chain_for
+    return newton_euler(chain_for(2, gravity=False), np.zeros(2), np.array([1.0, 2.0]), np.zeros(2))
+
+
+def test_lesson2_arm_velocities_by_the_lever_rule():
+    import planargeo as pg
+    w = _arm()
+    np.testing.assert_allclose(pg.to_xy(w.v[0]), [0.0, 0.0], atol=1e-15)
+    # 4.48: β = q̇2/(q̇2 + ω1) = 2/3 of k = 1; ω2 = 3
+    np.testing.assert_allclose(pg.to_xy(w.v[1]), [2 / 3, 0.0], atol=1e-15)
+    assert w.v[1][2] == 3.0
+    # exercise 1: a pole at 0.8 means q̇2 = 4: the joint point moves at 1 m/s both ways
+    beta = 0.8
+    qd2 = beta * 1.0 / (1 - beta)
+    assert math.isclose((1.0 + qd2) * (1 - beta), 1.0)
+
+
+def test_lesson2_bias_and_material_acceleration():
+    w = _arm()
+    np.testing.assert_allclose(w.kappa[1], [2.0, 0.0, 0.0], atol=1e-14)    # size ω1 q̇2 k2 = 2 (4.53)
+    np.testing.assert_allclose(w.a[1], w.kappa[1], atol=1e-14)             # q̈ = 0, a1 = 0
+    # the tip's acceleration by finite differences of its position along the motion
+    def tip(t):
+        th1 = 1.0 * t
+        th2 = th1 + 2.0 * t
+        return np.array([math.cos(th1) + math.cos(th2), math.sin(th1) + math.sin(th2)])
+    h = 1e-4
+    acc_fd = (tip(h) - 2 * tip(0.0) + tip(-h)) / h**2
+    a, v = w.a[1], w.v[1]
+    r = np.array([2.0, 0.0])
+    v_tip = np.array([v[0] - v[2] * r[1], v[1] + v[2] * r[0]])
+    material = np.array([a[0] - a[2] * r[1], a[1] + a[2] * r[0]]) + v[2] * np.array([-v_tip[1], v_tip[0]])
+    np.testing.assert_allclose(material, acc_fd, atol=1e-5)
+    np.testing.assert_allclose(acc_fd, [-10.0, 0.0], atol=1e-5)
+
+
+def test_lesson2_centripetal_force():
+    import planargeo as pg
+    w = _arm()
+    p2 = pg.bias_force(w.I[1], w.v[1])
+    np.testing.assert_allclose(p2, [-(1.5 - 2 / 3) * 9.0, 0.0, 0.0], atol=1e-13)   # m l ω², toward the pole
+
+
+def test_lesson2_pendulum_in_the_explorer():
+    from planargeo.widgets import ChainExplorer
+    ex = ChainExplorer(display="agg", links=1, angle=-30, speed=1.0)
+    ro = ex.readout_values
+    q = math.radians(-30)
+    assert math.isclose(ro["kinetic energy (J)"], 0.5 * (1 / 3) * 1.0**2)              # ½ (m L²/3) q̇²
+    assert math.isclose(ro["potential energy (J)"], 9.81 * 0.5 * math.sin(q))          # m g y_c
+    alpha = -9.81 * 0.5 * math.cos(q) / (1 / 3)
+    assert math.isclose(ro["qdd[1]"], alpha)                                           # moment / inertia
+    # exercise 4: the pin force from Newton for the centre of mass
+    r = 0.5 * np.array([math.cos(q), math.sin(q)])
+    a_cg = alpha * np.array([-r[1], r[0]]) - 1.0 * r
+    pin = a_cg - np.array([0.0, -9.81])
+    assert math.isclose(ro["|base force| (N)"], math.hypot(*pin), rel_tol=1e-9)
+    np.testing.assert_allclose(pin, [-3.619, 4.542], atol=1e-3)
+
+
+def test_lesson2_arm_in_the_explorer():
+    import planargeo as pg
+    from planargeo.widgets import ChainExplorer
+    ex = ChainExplorer(display="agg", links=2, gravity=False,
+                       **{"joint values (deg / m)": "0, 0", "joint speeds": "1, 2"})
+    np.testing.assert_allclose(pg.to_xy(ex.state["w"].v[1]), [2 / 3, 0.0], atol=1e-12)
+    ex.set(**{"joint speeds": "1, -1"})                 # exercise 2: link 2 translates
+    assert abs(ex.state["w"].v[1][2]) < 1e-15
