@@ -203,3 +203,62 @@ def test_lesson2_arm_in_the_explorer():
     np.testing.assert_allclose(pg.to_xy(ex.state["w"].v[1]), [2 / 3, 0.0], atol=1e-12)
     ex.set(**{"joint speeds": "1, -1"})                 # exercise 2: link 2 translates
     assert abs(ex.state["w"].v[1][2]) < 1e-15
+
+
+# ------------------------------------------------------------ lesson 3: projective geometry and conics
+def test_lesson3_join_and_meet_by_hand():
+    import planargeo as pg
+    l = pg.join(pg.from_xy([0.0, 0.0]), pg.from_xy([2.0, 1.0]))
+    m = pg.join(pg.from_xy([0.0, 1.0]), pg.from_xy([1.0, 1.0]))
+    np.testing.assert_allclose(pg.to_xy(pg.meet(l, m)), [2.0, 1.0])
+    # exercise 4 in standard coordinates [1, x, y], by hand
+    L = np.cross([1.0, 0, 0], [1.0, 2.0, 1.0])
+    np.testing.assert_allclose(L, [0.0, -1.0, 2.0])
+    X = np.cross(L, [-1.0, 0.0, 1.0])
+    np.testing.assert_allclose(X / X[0], [1.0, 2.0, 1.0])
+    assert pg.meet(m, pg.join(pg.from_xy([0.0, 3.0]), pg.from_xy([5.0, 3.0])))[2] == 0
+
+
+def test_lesson3_polar_of_a_circle_is_the_inversion():
+    import planargeo as pg
+    from planargeo.geometry.conics import conic_circle
+    r, d = 1.5, 3.0
+    C = conic_circle([0.0, 0.0], r)
+    P = pg.from_xy([d, 0.0])
+    L = pg.polar(C, P)
+    assert abs(pg.from_xy([r**2 / d, 7.0]) @ L) < 1e-12 and abs(pg.from_xy([r**2 / d, -2.0]) @ L) < 1e-12
+    # contact points: where the circle meets x = r²/d, y = ±√(r² − x²)
+    _, X = pg.tangents_from_point(C, P)
+    ys = sorted(pg.to_xy(Xk)[1] for Xk in X)
+    np.testing.assert_allclose(ys, [-math.sqrt(r**2 - (r**2 / d)**2), math.sqrt(r**2 - (r**2 / d)**2)])
+    # exercise 2: a point on the circle maps to its tangent (x = 1.5)
+    T = pg.polar(C, pg.from_xy([r, 0.0]))
+    assert abs(pg.from_xy([r, 5.0]) @ T) < 1e-12
+
+
+def test_lesson3_ideal_elements_and_decomposition():
+    import planargeo as pg
+    from planargeo.geometry.conics import conic_ellipse
+    E = conic_ellipse([1.0, -0.5], [2.0, 1.0], 0.4)
+    c = pg.centre(E)
+    np.testing.assert_allclose(pg.to_xy(c), [1.0, -0.5], atol=1e-12)
+    for direction in ([1.0, 0.0], [0.3, 2.0]):
+        ideal = np.array([direction[1], -direction[0], 0.0])
+        assert abs(pg.polar(E, ideal) @ c) < 1e-12
+    p_inf = pg.pole(E, [0.0, 0.0, 1.0])
+    np.testing.assert_allclose(p_inf / p_inf[2], c / c[2])
+    u = pg.decompose_point([1.0, 2.0, 3.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 1.0])
+    np.testing.assert_allclose(u, [-2.0, -1.0, 3.0])                       # by hand
+    lam = math.radians(30)                                                 # exercise 3 (5.62-5.63)
+    s = np.array([math.cos(lam), math.sin(lam), 0.0])
+    R = np.array([[-math.sin(lam), 0.0], [math.cos(lam), 0.0], [0.0, 1.0]])
+    np.testing.assert_allclose(s @ R, 0.0, atol=1e-16)
+
+
+def test_lesson3_projective_explorer():
+    from planargeo.widgets import ProjectiveExplorer
+    ex = ProjectiveExplorer(display="agg")
+    ex.set(**{"conic": "circle", "a": 1.5, "P x": 3.0, "P y": 0.0})
+    ro = ex.readout_values
+    assert math.isclose(ro["polar of P: distance to origin"], 1.5**2 / 3.0)
+    assert math.isclose(ro["P·M"], ro["pole(M)·polar(P)"], rel_tol=1e-12)
