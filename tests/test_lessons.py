@@ -262,3 +262,67 @@ def test_lesson3_projective_explorer():
     ro = ex.readout_values
     assert math.isclose(ro["polar of P: distance to origin"], 1.5**2 / 3.0)
     assert math.isclose(ro["P·M"], ro["pole(M)·polar(P)"], rel_tol=1e-12)
+
+
+# ---------------------------------------------------- lesson 4: inertia as a conic, axis of percussion
+def test_lesson4_axis_of_percussion_from_newton():
+    import planargeo as pg
+    m, rho, d, alpha = 2.0, 0.5, 1.0, 3.0
+    body = pg.Inertia.from_mass(m, com=(d, 0.0), radius_of_gyration=rho)
+    f = body.percussion_axis_array(alpha * pg.from_xy([0.0, 0.0]))
+    # Newton: the centre of mass accelerates at d α along y; moment about the pivot J_pivot α
+    np.testing.assert_allclose(f[:2], [0.0, m * d * alpha], atol=1e-14)
+    assert math.isclose(f[2], m * (rho**2 + d**2) * alpha)
+    assert math.isclose(f[2] / f[1], d + rho**2 / d)                       # 5.67
+    c = body.percussion_axis_array(pg.from_xy([d, 0.0]))                    # pole at c: a couple
+    np.testing.assert_allclose(c[:2], 0.0, atol=1e-14)
+    assert c[2] != 0
+    t = body.percussion_axis_array([1.0, 0.0, 0.0])                         # translation along x
+    assert abs(pg.from_xy([d, 0.0]) @ t) < 1e-14                            # through the centre of mass
+
+
+def test_lesson4_door_and_bat():
+    import planargeo as pg
+    W = 0.9
+    door = pg.Inertia.from_mass(10.0, com=(W / 2, 0.0), radius_of_gyration=W / math.sqrt(12))
+    axis = door.percussion_axis(pg.Point.from_xy(0.0, 0.0))
+    assert axis.incidence(pg.Point.from_xy(2 * W / 3, 3.0)) == pytest.approx(0.0, abs=1e-13)
+    # exercise 2: door 12 kg + handle 3 kg at the free edge; l = J_hinge / (m d) by hand = 0.7
+    from planargeo.screws.twists import inertia_matrix
+    both = inertia_matrix(12.0, (W / 2, 0.0), 12.0 * W**2 / 12) + inertia_matrix(3.0, (W, 0.0), 0.0)
+    ax2 = pg.percussion_axis(both, pg.from_xy([0.0, 0.0]))
+    assert math.isclose(ax2[2] / ax2[1], (12 * W**2 / 3 + 3 * W**2) / (15 * 0.54))
+    assert math.isclose(ax2[2] / ax2[1], 0.7)
+
+
+def test_lesson4_power_relations():
+    import planargeo as pg
+    body = pg.Inertia.from_mass(2.0, com=(1.0, 0.0), radius_of_gyration=0.5)
+    v = pg.from_xy([0.0, 0.0])
+    h = body.matrix @ v
+    a = pg.from_xy([1.25, 0.7])
+    assert abs(h @ a) < 1e-14 and abs(v @ (body.matrix @ a)) < 1e-14
+    # 5.71 in general: vᵀ(I a + p) = (I v)ᵀ a for any v, a
+    rng = np.random.default_rng(4)
+    for _ in range(5):
+        vv, aa = rng.normal(size=3), rng.normal(size=3)
+        p = pg.bias_force(body.matrix, vv)
+        assert math.isclose(vv @ (body.matrix @ aa + p), (body.matrix @ vv) @ aa, rel_tol=1e-12, abs_tol=1e-12)
+
+
+def test_lesson4_percussion_explorer():
+    from planargeo.widgets import PercussionExplorer
+    bat = PercussionExplorer(display="agg", shape="uniform rod")
+    rho2 = (1 + 0.08**2) / 12
+    ro = bat.readout_values
+    assert math.isclose(ro["radius of gyration ρ"], math.sqrt(rho2), rel_tol=1e-9)
+    np.testing.assert_allclose(ro["sweet spot of the grip"], (0.5 + rho2 / 0.5, 0.0))
+    assert math.isclose(ro["force for α: m d α (5.66)"], 1.0 * 0.5 * 10.0, rel_tol=1e-9)
+    bat = PercussionExplorer(display="agg", shape="uniform rod", drive="impact")
+    bat.controls["impact at"].value = 0.5 + rho2 / 0.5
+    assert bat.readout_values["pole distance from grip"] < 1e-9
+    # exercise 1: the pole whose axis passes through x = 1 is at 0.5 − 2ρ²
+    bat = PercussionExplorer(display="agg", shape="uniform rod")
+    bat.set(**{"pole x": 0.33, "pole y": 0.0})
+    d = 0.5 - 0.33
+    assert math.isclose(bat.readout_values["l = d + ρ²/d (5.67)"], d + rho2 / d, rel_tol=1e-9)
