@@ -326,3 +326,56 @@ def test_lesson4_percussion_explorer():
     bat.set(**{"pole x": 0.33, "pole y": 0.0})
     d = 0.5 - 0.33
     assert math.isclose(bat.readout_values["l = d + ρ²/d (5.67)"], d + rho2 / d, rel_tol=1e-9)
+
+
+# ------------------------------------------------------------------ lesson 5: subspace decompositions
+def _pinned():
+    import planargeo as pg
+    from planargeo.screws.twists import inertia_matrix
+    m, d, J = 2.0, 1.0, 0.5
+    pin = pg.revolute((0.0, 0.0))
+    return m, d, J, pin, pg.Decomposition.from_joint(inertia_matrix(m, [d, 0.0], J), pin)
+
+
+def test_lesson5_T_and_U_by_hand():
+    m, d, J, pin, dec = _pinned()
+    np.testing.assert_allclose(dec.T.ravel(), [0.0, 1 / (d + (J / m) / d), 1.0])     # axis of percussion, unit moment
+    np.testing.assert_allclose(dec.U.T, [[1.0, 0.0, 0.0], [0.0, 1.0, -m * d / (J + m * d**2)]])
+    np.testing.assert_allclose(pin.s.T @ dec.T, 1.0)
+    np.testing.assert_allclose(pin.R.T @ dec.U, np.eye(2), atol=1e-15)
+    np.testing.assert_allclose(dec.T.T @ dec.U, 0.0, atol=1e-15)
+
+
+def test_lesson5_pin_reaction_against_newton_euler():
+    m, d, J, pin, dec = _pinned()
+    for l in (0.6, 1.25, 2.0):
+        Q, mu = dec.split_wrench(np.array([0.0, 1.0, l]))
+        alpha = l / (J + m * d**2)
+        assert math.isclose(Q[0], l)
+        np.testing.assert_allclose(-mu, [0.0, m * alpha * d - 1.0], atol=1e-14)
+    # exercise 1: horizontal unit force along y = 0.5
+    Q, mu = dec.split_wrench(np.array([1.0, 0.0, -0.5]))
+    alpha = -0.5 / (J + m * d**2)
+    pin_force = m * np.array([0.0, alpha * d]) - np.array([1.0, 0.0])
+    assert math.isclose(Q[0], -0.5)
+    np.testing.assert_allclose(-mu, pin_force, atol=1e-14)
+
+
+def test_lesson5_prismatic_T_is_the_slide_through_the_centre_of_mass():
+    import planargeo as pg
+    from planargeo.screws.twists import inertia_matrix
+    cx, cy = 0.7, -0.3
+    dec = pg.Decomposition.from_joint(inertia_matrix(3.0, [cx, cy], 0.2), pg.prismatic((1.0, 0.0), (0.0, 0.0)))
+    T = dec.T.ravel()
+    np.testing.assert_allclose(T / T[0], [1.0, 0.0, -cy], atol=1e-14)
+    assert abs(pg.from_xy([cx, cy]) @ T) < 1e-14
+
+
+def test_lesson5_chain_reactions_through_their_joints():
+    from planargeo.widgets import ChainExplorer
+    ch = ChainExplorer(display="agg", links=3, speed=0.0, **{"T/U split": True, "velocity poles": False})
+    w = ch.state["w"]
+    for i in range(3):
+        x, y = w.origin[i]
+        r_line = ch.r_art[i].get_line()
+        assert abs(np.dot([y, -x, 1.0], r_line)) < 1e-9 * (1 + abs(r_line).max())
