@@ -379,3 +379,58 @@ def test_lesson5_chain_reactions_through_their_joints():
         x, y = w.origin[i]
         r_line = ch.r_art[i].get_line()
         assert abs(np.dot([y, -x, 1.0], r_line)) < 1e-9 * (1 + abs(r_line).max())
+
+
+# ---------------------------------------------------------- lesson 6: the planar example 6.9 (the car)
+def _car_newton_euler(m, rho, L, d, eps, V, FA):
+    """(ω̇, rear, front) from Newton–Euler at the centre of gravity (plain vectors, no screws)."""
+    w = V / d
+    c = np.array([d, (1 - eps) * L]); rear, front = np.array([d, 0.0]), np.array([d, L])
+    e1, e2 = np.array([1.0, 0.0]), np.array([d, L]) / math.hypot(d, L)
+    roll = np.array([-L, d]) / math.hypot(d, L)
+    cross = lambda r, f: r[0] * f[1] - r[1] * f[0]
+    kc = np.array([-c[1], c[0]])
+    A = np.array([[m * kc[0], -e1[0], -e2[0]], [m * kc[1], -e1[1], -e2[1]],
+                  [m * rho**2, -cross(rear - c, e1), -cross(front - c, e2)]])
+    b = np.array([m * w * w * c[0] + FA * roll[0], m * w * w * c[1] + FA * roll[1], FA * cross(front - c, roll)])
+    return np.linalg.solve(A, b)
+
+
+def test_lesson6_car_numbers_against_newton_euler():
+    from planargeo import scenes
+    res = scenes.build("car")
+    p, q = res.params, res.quantities
+    wd, mu1, mu2 = _car_newton_euler(p["m"], p["rho"], p["L"], p["d"], p["eps"], p["omega"] * p["d"], p["F_A"])
+    assert math.isclose(q["omega_dot"], wd, rel_tol=1e-9)
+    np.testing.assert_allclose(q["mu"], [mu1, mu2], rtol=1e-9)
+    # the rounded values the lesson quotes
+    assert round(wd, 4) == 0.2077 and round(mu1, 1) == -1102.4 and round(mu2, 1) == -1089.3
+
+
+def test_lesson6_exercises():
+    m, rho, L, d, eps, w = 1200.0, 1.2, 2.6, 8.0, 0.45, 0.5
+    ne = lambda FA, rho=rho: _car_newton_euler(m, rho, L, d, eps, w * d, FA)
+    # exercise 3: at ρ² = ε(1−ε)L² the rear force does not depend on the drive force
+    rho_star = math.sqrt(eps * (1 - eps) * L**2)
+    assert math.isclose(rho_star, 1.2935, abs_tol=1e-4)
+    assert abs(ne(5000.0, rho_star)[1] - ne(2000.0, rho_star)[1]) < 1e-8
+    assert abs(ne(5000.0, 1.30)[1] - ne(2000.0, 1.30)[1]) < 3.0
+    assert abs(ne(5000.0, 1.2)[1] - ne(2000.0, 1.2)[1]) > 30.0
+    # exercise 4: braking
+    np.testing.assert_allclose(ne(-2000.0)[1:], [-1057.6, -1686.6], atol=0.1)
+
+
+def test_lesson6_car_explorer():
+    from planargeo.widgets import CarExplorer
+    car = CarExplorer(display="agg")
+    ro = car.readout_values
+    assert math.isclose(ro["yaw rate ω (rad/s)"], 4.0 / 8.0)
+    assert math.isclose(ro["steering angle (deg)"], math.degrees(math.atan(2.6 / 8.0)))
+    assert math.isclose(ro["lateral accel. at CG (g)"], 0.5**2 * math.hypot(8.0, 0.55 * 2.6) / 9.81)
+    for FA in (2000.0, 5000.0):
+        car.controls["drive force (N)"].value = FA
+        wd, mu1, mu2 = _car_newton_euler(1200.0, 1.2, 2.6, 8.0, 0.45, 4.0, FA)
+        ro = car.readout_values
+        assert math.isclose(ro["yaw acceleration ω̇ (rad/s²)"], wd, rel_tol=1e-9)
+        assert math.isclose(ro["rear tyre force (N)"], mu1, rel_tol=1e-9)
+        assert math.isclose(ro["front tyre force (N)"], mu2, rel_tol=1e-9)
