@@ -434,3 +434,76 @@ def test_lesson6_car_explorer():
         assert math.isclose(ro["yaw acceleration ω̇ (rad/s²)"], wd, rel_tol=1e-9)
         assert math.isclose(ro["rear tyre force (N)"], mu1, rel_tol=1e-9)
         assert math.isclose(ro["front tyre force (N)"], mu2, rel_tol=1e-9)
+
+
+# ------------------------------------------------------------------------ lesson 7: articulated inertias
+def _A1_dense(m, rho, L, phi):
+    """Body 1 free (plane joint), body 2 pinned at (L, 0): inverse of force-on-1 -> acceleration-of-1."""
+    import planargeo as pg
+    from planargeo.algorithms.crba import forward_dynamics_crba
+    from planargeo.mechanics.kinematics import kinematics
+    bodies = [pg.Body(m, (L / 2, 0.0), m * rho**2), pg.Body(m, (L / 2, 0.0), m * rho**2)]
+    model = pg.Model(bodies, [pg.Joint("plane"), pg.Joint("revolute", (L, 0.0, 0.0))], [-1, 0], gravity=(0.0, 0.0))
+    q = np.array([0.0, 0.0, 0.0, phi])
+    S1 = kinematics(model, q).s(0)
+    mob = np.zeros((3, 3))
+    for k in range(3):
+        f_ext = np.zeros((2, 3)); f_ext[0, k] = 1.0
+        mob[:, k] = S1 @ forward_dynamics_crba(model, q, np.zeros(4), np.zeros(4), f_ext)[:3]
+    return np.linalg.inv(mob)
+
+
+def _straight_chain(n, lam, m=1.0, L=1.0):
+    """(d/L, m_x/m, m_y/m, A_z/(m ρ²)) by the pin-mass argument of lesson 7."""
+    rho = L / lam
+    my, Az, d = m, m * rho**2, L / 2
+    for _ in range(n - 1):
+        m_pin = my * Az / (Az + my * d**2)
+        my_new = m + m_pin
+        d_new = (m * L / 2 + m_pin * L) / my_new
+        Az = m * rho**2 + m * (L / 2 - d_new)**2 + m_pin * (L - d_new)**2
+        my, d = my_new, d_new
+    return d / L, float(n), my / m, Az / (m * rho**2)
+
+
+def test_lesson7_two_bodies_closed_form_and_dense():
+    from planargeo import scenes
+    mx = lambda phi, lam: (8 + lam**2 * (1 + math.cos(phi)**2)) / (lam**2 + 4)
+    for phi in (0.0, math.pi / 4, math.pi / 2, 2.0):
+        for m, rho, L in ((1.0, 0.5, 1.0), (3.0, 0.2, 1.5)):
+            sc = scenes.build("two-body", m=m, rho=rho, L=L, phi=phi).quantities
+            assert math.isclose(sc["mx_over_m"], mx(phi, L / rho), rel_tol=1e-9)
+            np.testing.assert_allclose(sc["A1"], _A1_dense(m, rho, L, phi), rtol=1e-8, atol=1e-10)
+    assert math.isclose(mx(math.pi / 4, 2.0), 1.75)
+    assert math.isclose(mx(math.pi / 2, 2.0), 1.5) and math.isclose(mx(math.pi / 2, 1e6), 1.0, rel_tol=1e-9)
+
+
+def test_lesson7_horizontal_chain_table():
+    from planargeo import scenes
+    for lam in (1.0, 2.0, 4.0, 5.0):
+        assert math.isclose(_straight_chain(2, lam)[0], (lam**2 + 12) / (2 * (lam**2 + 8)))
+        assert math.isclose(_straight_chain(2, lam)[2], (lam**2 + 8) / (lam**2 + 4))
+        assert math.isclose(_straight_chain(2, lam)[3], 2 * (lam**2 + 4) / (lam**2 + 8))
+        for n in (1, 2, 3, 4):
+            r = scenes.build("horizontal-chain", n=n, lam=lam).quantities
+            got = (r["d_over_L"], r["mx_over_m"], r["my_over_m"], r["Az_over_m_rho2"])
+            np.testing.assert_allclose(got, _straight_chain(n, lam), rtol=1e-10)
+    for n in (2, 3, 4):                           # λ = 2: d, m_y, A_z fixed; m_x = n m
+        np.testing.assert_allclose(_straight_chain(n, 2.0), (2 / 3, n, 1.5, 4 / 3))
+
+
+def test_lesson7_exercises():
+    # exercise 1: body 2 felt at its pin across the chain, λ = 2: m/2
+    m, L = 1.0, 1.0
+    A, e = m * (L / 2)**2, L / 2
+    assert math.isclose(m * A / (A + m * e**2), 0.5)
+    # exercise 4: a rectangle's λ ≤ √12
+    for h in (0.0, 0.1, 0.5):
+        assert L / math.sqrt((L**2 + h**2) / 12) <= math.sqrt(12) + 1e-12
+
+
+def test_lesson7_chain_explorer_tip():
+    from planargeo.widgets import ChainExplorer
+    ch = ChainExplorer(display="agg", links=5, speed=0.5, **{"articulated inertias": True, "acceleration poles": True})
+    w = ch.state["w"]
+    np.testing.assert_allclose(w.A[-1], w.I[-1])
