@@ -507,3 +507,49 @@ def test_lesson7_chain_explorer_tip():
     ch = ChainExplorer(display="agg", links=5, speed=0.5, **{"articulated inertias": True, "acceleration poles": True})
     w = ch.state["w"]
     np.testing.assert_allclose(w.A[-1], w.I[-1])
+
+
+# --------------------------------------------------------- lesson 8: mobility and chain splitting
+def test_lesson8_mobility_example_against_the_joint_space_inertia():
+    from planargeo import scenes
+    from planargeo.screws.twists import inertia_matrix
+    res = scenes.build("mobility-example")
+    q = res.quantities
+    m, rho, L, phi = (res.params[k] for k in ("m", "rho", "L", "phi"))
+    s1, s2 = np.array([0.0, 0.0, 1.0]), np.array([0.0, -L, 1.0])
+    I1 = inertia_matrix(m, [L / 2, 0.0], m * rho**2)
+    I2 = inertia_matrix(m, [L + L / 2 * math.cos(phi), L / 2 * math.sin(phi)], m * rho**2)
+    J1, J2 = np.column_stack([s1, np.zeros(3)]), np.column_stack([s1, s2])
+    H = J1.T @ I1 @ J1 + J2.T @ I2 @ J2
+    np.testing.assert_allclose(q["Lambda1_inv"], np.diag([0.0, 0.0, 4 / (m * (L**2 + 4 * rho**2))]), atol=1e-15)
+    np.testing.assert_allclose(q["Lambda2_inv"], J2 @ np.linalg.solve(H, J2.T), atol=1e-12)
+    eta = L / rho
+    assert math.isclose(q["x_over_L"], 1 + 2 * eta**2 * math.cos(phi) / (4 + 5 * eta**2))
+    assert round(q["x_over_L"], 4) == 1.2357
+    # exercise 2
+    assert math.isclose(scenes.build("mobility-example", phi=math.pi / 2).quantities["x_over_L"], 1.0)
+    assert math.isclose(scenes.build("mobility-example", phi=0.0).quantities["x_over_L"], 4 / 3)
+
+
+def test_lesson8_push_at_the_tip_by_hand():
+    from planargeo.algorithms.chain_splitting import mobility_split
+    from planargeo.widgets.chain import chain_for
+    q, z = np.array([0.0, math.pi / 2]), np.zeros(2)
+    F = np.zeros((2, 3)); F[1] = [1.0, 0.0, -1.0]
+    split = mobility_split(chain_for(2, gravity=False), q, z, z, F)
+    lc, Ic, c2 = 0.5, 1 / 12, math.cos(q[1])          # the textbook two-link joint-space inertia
+    H = np.array([[lc**2 + Ic + (1 + lc**2 + 2 * lc * c2) + Ic, lc**2 + lc * c2 + Ic], [lc**2 + lc * c2 + Ic, lc**2 + Ic]])
+    np.testing.assert_allclose(H, [[5 / 3, 1 / 3], [1 / 3, 1 / 3]])
+    np.testing.assert_allclose(split.qdd, np.linalg.solve(H, [-1.0, -1.0]), atol=1e-12)
+    np.testing.assert_allclose(split.f[1], [0.5, 0.0, 0.0], atol=1e-12)
+    # exercise 4: a wall at the tip takes the whole push: tip x acceleration −q̈1 − q̈2 = 0 at λ = −1
+    qdd = np.linalg.solve(H, [-(1 - 1.0), -(1 - 1.0)])
+    assert np.allclose(qdd, 0.0)
+
+
+def test_lesson8_chain_explorer_matches_splitting():
+    from planargeo.algorithms.chain_splitting import mobility_split
+    from planargeo.widgets import ChainExplorer
+    ch = ChainExplorer(display="agg", links=4, **{"internal forces": True, "acceleration poles": True})
+    cs = mobility_split(*ch.initial_state(ch.values))
+    np.testing.assert_allclose(ch.state["w"].qdd, cs.qdd, rtol=1e-9, atol=1e-9)
