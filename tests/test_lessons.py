@@ -553,3 +553,33 @@ def test_lesson8_chain_explorer_matches_splitting():
     ch = ChainExplorer(display="agg", links=4, **{"internal forces": True, "acceleration poles": True})
     cs = mobility_split(*ch.initial_state(ch.values))
     np.testing.assert_allclose(ch.state["w"].qdd, cs.qdd, rtol=1e-9, atol=1e-9)
+
+
+# ------------------------------------------------------------------------------ lesson 9: car cornering
+def test_lesson9_friction_demand_and_limits():
+    from planargeo import scenes
+    G, m, eps, d, L = 9.81, 1200.0, 0.45, 8.0, 2.6
+    for V in (2.0, 4.0, 7.0):
+        w = V / d
+        q = scenes.build("car", omega=w, F_A=0.0, outlines=False).quantities
+        # coasting: demand = centripetal acceleration of each axle in g (independent of ε)
+        assert math.isclose(-q["mu"][0] / (eps * m * G), d * w**2 / G, rel_tol=1e-9)
+        assert math.isclose(-q["mu"][1] / ((1 - eps) * m * G), math.hypot(d, L) * w**2 / G, rel_tol=1e-9)
+    # the same with another ε: exercise 3
+    q = scenes.build("car", omega=0.5, F_A=0.0, eps=0.6, outlines=False).quantities
+    assert math.isclose(-q["mu"][0] / (0.6 * m * G), d * 0.25 / G, rel_tol=1e-9)
+    # exercise 2: the speed limits at μ_f = 0.9
+    assert round(d * math.sqrt(0.9 * G / math.hypot(d, L)), 2) == 8.20
+    assert round(d * math.sqrt(0.9 * G / d), 2) == 8.40
+    assert round(40 * math.sqrt(0.9 * G / math.hypot(40, L)), 2) == 18.77
+
+
+def test_lesson9_car_explorer_lateral_acceleration():
+    from planargeo.widgets import CarExplorer
+    car = CarExplorer(display="agg")
+    car.set(**{"speed (m/s)": 6.0})
+    c = math.hypot(8.0, 0.55 * 2.6)
+    assert math.isclose(car.readout_values["lateral accel. at CG (g)"], (6.0 / 8.0)**2 * c / 9.81, rel_tol=1e-9)
+    # exercise 1: 0.5 g at V = d √(0.5 g / |c|)
+    V = 8.0 * math.sqrt(0.5 * 9.81 / c)
+    assert 6.0 < V < 6.5 and round(V, 2) == 6.21
