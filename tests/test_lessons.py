@@ -583,3 +583,70 @@ def test_lesson9_car_explorer_lateral_acceleration():
     # exercise 1: 0.5 g at V = d √(0.5 g / |c|)
     V = 8.0 * math.sqrt(0.5 * 9.81 / c)
     assert 6.0 < V < 6.5 and round(V, 2) == 6.22
+
+
+# -------------------------------------------------------------------------------------- lesson 10: trees
+def test_lesson10_adjacency_trunk_and_nilpotency():
+    from planargeo import scenes
+    q = scenes.build("tree").quantities
+    C, Dinv = np.array(q["C"]), np.array(q["Dinv"])
+    parents = (-1, 0, 1, 2, 0, 4, 5, 5, 0)
+    expected = np.zeros((9, 9))
+    for i, p in enumerate(parents):
+        if p >= 0:
+            expected[i, p] = 1
+    np.testing.assert_array_equal(C, expected)
+    # the trunk matrix by walking each path to the root by hand
+    trunk = np.zeros((9, 9))
+    for i in range(9):
+        j = i
+        while j >= 0:
+            trunk[i, j] = 1
+            j = parents[j]
+    np.testing.assert_array_equal(Dinv, trunk)
+    assert np.linalg.matrix_power(C, 3).any() and not np.linalg.matrix_power(C, 4).any()   # exercise 2
+
+
+def test_lesson10_held_still_joints_carry_their_subtrees():
+    from planargeo import scenes
+    from planargeo.algorithms.rnea import newton_euler
+    tree = scenes.build("tree")
+    held = newton_euler(tree.model, np.array(tree.state["q"]), np.zeros(9), np.zeros(9))
+    subtree = [9, 3, 2, 1, 4, 3, 1, 1, 1]                                   # counted on Fig 9.1
+    np.testing.assert_allclose(held.f[:, 1], 9.81 * np.array(subtree), rtol=1e-12)
+    np.testing.assert_allclose(held.f[:, 0], 0.0, atol=1e-12)
+    # exercise 4: torque = Σ over the subtree of m g (x_c − x_joint), from the joint angles by hand
+    parents = (-1, 0, 1, 2, 0, 4, 5, 5, 0)
+    q = np.array(tree.state["q"])
+    th, start = np.zeros(9), np.zeros((9, 2))
+    for i, p in enumerate(parents):                     # parents come before children
+        th[i] = q[i] + (th[p] if p >= 0 else 0.0)
+        start[i] = start[p] + [math.cos(th[p]), math.sin(th[p])] if p >= 0 else 0.0
+    com = start + 0.5 * np.column_stack([np.cos(th), np.sin(th)])
+    def in_subtree(k, i):
+        while k >= 0:
+            if k == i:
+                return True
+            k = parents[k]
+        return False
+    hand = [sum(9.81 * (com[k, 0] - start[i, 0]) for k in range(9) if in_subtree(k, i)) for i in range(9)]
+    np.testing.assert_allclose(held.tau, hand, atol=1e-12)
+    assert np.argmax(np.abs(held.tau)) == 4 and round(float(held.tau[4]), 1) == 17.3
+
+
+def test_lesson10_stacked_and_direct_against_pinocchio():
+    pin = pytest.importorskip("pinocchio")
+    from bench import to_pinocchio
+    from planargeo import scenes
+    tree = scenes.build("tree")
+    q, qd, tau = (np.array(tree.state[k]) for k in ("q", "qd", "tau"))
+    pm = to_pinocchio(tree.model)
+    ref = pin.aba(pm, pm.createData(), q, qd, tau)
+    np.testing.assert_allclose(tree.quantities["qdd"], ref, rtol=1e-10, atol=1e-10 * abs(ref).max())
+    np.testing.assert_allclose(tree.quantities["qdd_direct"], ref, rtol=1e-10, atol=1e-10 * abs(ref).max())
+
+
+def test_lesson10_tree_explorer_open():
+    from planargeo.widgets import TreeExplorer
+    te = TreeExplorer(display="agg", **{"loops": "open (Fig 9.1)"})
+    assert te.readout_values["degrees of freedom"] == 9 and "contact 4-7: |force| (N)" not in te.readout_values
