@@ -650,3 +650,153 @@ def test_lesson10_tree_explorer_open():
     from planargeo.widgets import TreeExplorer
     te = TreeExplorer(display="agg", **{"loops": "open (Fig 9.1)"})
     assert te.readout_values["degrees of freedom"] == 9 and "contact 4-7: |force| (N)" not in te.readout_values
+
+
+# --------------------------------------------------------------- lesson 11: loops and the slider-crank
+PARENTS_9_1 = (-1, 0, 1, 2, 0, 4, 5, 5, 0)
+
+
+def _path(i):
+    out = []
+    while i >= 0:
+        out.append(i)
+        i = PARENTS_9_1[i]
+    return out
+
+
+def test_lesson11_constrained_tree_at_rest_pins_hold():
+    from planargeo import scenes
+    ct = scenes.build("constrained-tree", speed=0.0)
+    a = np.asarray(ct.quantities["a"]).reshape(9, 3)
+    F = np.asarray(ct.quantities["F"]).reshape(-1, 3)
+    pose = ct.extra["solution"].data.pose
+    tips = pose[:, :2] + np.column_stack([np.cos(pose[:, 2]), np.sin(pose[:, 2])])
+    acc = lambda tw, p: np.array([tw[0] - tw[2] * p[1], tw[1] + tw[2] * p[0]])
+    for k, (i, j) in enumerate(((3, 6), (7, 8))):
+        np.testing.assert_allclose(tips[i], tips[j], atol=1e-12)
+        np.testing.assert_allclose(acc(a[i], tips[i]), acc(a[j], tips[j]), atol=1e-9)
+        x, y = tips[i]
+        assert abs(np.dot([y, -x, 1.0], F[k])) < 1e-9 * (1 + abs(F[k]).max())     # a line through the pin
+
+
+def test_lesson11_constrained_tree_against_lagrange_multipliers():
+    from planargeo import scenes
+    from planargeo.algorithms.crba import bias_forces, mass_matrix
+    from planargeo.widgets import TreeExplorer
+    ct = scenes.build("constrained-tree")
+    q, qd, tau = (np.array(ct.state[k]) for k in ("q", "qd", "tau"))
+    L = ct.params["length"]
+    absolute = lambda x: np.array([sum(x[k] for k in _path(i)) for i in range(9)])
+    e = lambda t: np.array([math.cos(t), math.sin(t)])
+    e_perp = lambda t: np.array([-math.sin(t), math.cos(t)])
+    th, thd = absolute(q), absolute(qd)
+    tip = lambda i, th=th: sum(L * e(th[k]) for k in _path(i))
+
+    def tip_jacobian(i):
+        Jt = np.zeros((2, 9))
+        for k in _path(i):
+            for j in _path(k):
+                Jt[:, j] += L * e_perp(th[k])
+        return Jt
+
+    pins = ((3, 6), (7, 8))
+    J = np.vstack([tip_jacobian(i) - tip_jacobian(j) for i, j in pins])
+    quad = lambda i: -sum(L * thd[k]**2 * e(th[k]) for k in _path(i))
+    gamma = np.concatenate([quad(i) - quad(j) for i, j in pins])
+    gap = lambda x: np.concatenate([tip(a, absolute(x)) - tip(b, absolute(x)) for a, b in pins])
+    J_fd = np.column_stack([(gap(q + 1e-6 * dq) - gap(q - 1e-6 * dq)) / 2e-6 for dq in np.eye(9)])
+    np.testing.assert_allclose(J, J_fd, atol=1e-8)
+    np.testing.assert_allclose(gap(q), 0.0, atol=1e-12)
+    H, C = mass_matrix(ct.model, q), bias_forces(ct.model, q, qd)
+    x = np.linalg.solve(np.block([[H, -J.T], [J, np.zeros((4, 4))]]), np.concatenate([tau - C, -gamma]))
+    qdd_ref, lam = x[:9], x[9:].reshape(2, 2)
+    F = np.asarray(ct.quantities["F"]).reshape(-1, 3)
+    np.testing.assert_allclose(ct.quantities["qdd"], qdd_ref, atol=1e-10 * abs(qdd_ref).max())
+    for k, (i, j) in enumerate(pins):
+        px, py = tip(i)
+        fx, fy = -lam[k]
+        np.testing.assert_allclose(F[k], [fx, fy, px * fy - py * fx], atol=1e-10 * abs(lam).max())
+    te = TreeExplorer(display="agg")
+    ro = te.readout_values
+    for k, name in enumerate(("4-7", "8-9")):
+        assert math.isclose(ro[f"contact {name}: |force| (N)"], math.hypot(*lam[k]), rel_tol=1e-9)
+    assert math.isclose(ro["qdd[1] (root)"], qdd_ref[0], rel_tol=1e-9, abs_tol=1e-12)
+    assert ro["degrees of freedom"] == 9 - 4
+
+
+R_SC, L_SC, T_SC = 2.29, 5.0, 0.5
+M_SC = (0.40, 0.15, 0.30)
+
+
+def _h(p, l=L_SC):
+    return R_SC * math.sin(p) + math.sqrt(l**2 - (R_SC * math.cos(p))**2) + T_SC
+
+
+def _sc_geometry(p):
+    pin = np.array([R_SC * math.cos(p), R_SC * math.sin(p)])
+    wrist = np.array([0.0, _h(p) - T_SC])
+    return [0.25 * pin, 0.5 * (pin + wrist), wrist + [0.0, T_SC]], [p, math.atan2(*(wrist - pin)[::-1])]
+
+
+def _gen_mass(p, e=1e-5):
+    Iz = (0.1464 * M_SC[0] * R_SC**2, 0.0866 * M_SC[1] * L_SC**2)     # the thesis's data (9.6)
+    (c0, b0), (c1, b1) = _sc_geometry(p - e), _sc_geometry(p + e)
+    dc = [(y - x) / (2 * e) for x, y in zip(c0, c1)]
+    db = [(y - x) / (2 * e) for x, y in zip(b0, b1)]
+    return sum(m * v @ v for m, v in zip(M_SC, dc)) + Iz[0] * db[0]**2 + Iz[1] * db[1]**2
+
+
+def _psi_dd(p, w, g):
+    V = lambda x: g * sum(m * c[1] for m, c in zip(M_SC, _sc_geometry(x)[0]))
+    d = 1e-4
+    Mp, Vp = (_gen_mass(p + d) - _gen_mass(p - d)) / (2 * d), (V(p + d) - V(p - d)) / (2 * d)
+    return -(0.5 * Mp * w**2 + Vp) / _gen_mass(p)
+
+
+def test_lesson11_slider_crank_state_and_kinematics():
+    from planargeo import scenes
+    Q = scenes.build("slider-crank").quantities
+    psi = 0.4
+    beta = math.acos(-R_SC * math.cos(psi) / L_SC)
+    np.testing.assert_allclose(Q["q"], [psi, beta - psi, math.pi / 2 - beta], atol=1e-12)
+    rate = -R_SC * math.sin(psi) * 20.0 / (L_SC * math.sin(beta))
+    np.testing.assert_allclose(Q["qd"], [20.0, rate - 20.0, -rate], atol=1e-10)
+    assert round(beta, 5) == 2.00628 and round(Q["q"][2], 5) == -0.43548      # exercise 2
+    assert math.isclose(Q["h"], _h(psi)) and round(Q["h"], 3) == 5.925
+    dh = R_SC * math.cos(psi) + R_SC**2 * math.sin(psi) * math.cos(psi) / math.sqrt(L_SC**2 - (R_SC * math.cos(psi))**2)
+    assert math.isclose(Q["v"][2][1], 20.0 * dh, rel_tol=1e-9) and round(Q["v"][2][1], 3) == 50.483
+    # the closed loop piston acceleration is a vertical translation; the contact force lies in B3
+    assert abs(Q["a3"][0]) < 1e-9 and abs(Q["a3"][2]) < 1e-9
+    B3 = np.array(Q["B3"])
+    np.testing.assert_allclose(B3 @ np.array(Q["xi"]), Q["F3"], atol=1e-12)
+    np.testing.assert_allclose(B3, [[1.0, 0.0], [0.0, 0.0], [-_h(psi), 1.0]])
+
+
+def test_lesson11_slider_crank_against_a_one_coordinate_lagrangian():
+    from planargeo import scenes
+    Q = scenes.build("slider-crank").quantities                          # gravity 9.81, free crank
+    assert math.isclose(Q["qdd"][0], _psi_dd(0.4, 20.0, 9.81), rel_tol=1e-5)
+    free = scenes.build("slider-crank", g=0.0).quantities
+    assert math.isclose(free["qdd"][0], _psi_dd(0.4, 20.0, 0.0), rel_tol=1e-5)
+    e = 1e-4                                                              # driven at constant speed: h'' ψ̇²
+    driven = scenes.build("slider-crank", drive="constant-speed", psi=0.4, psidot=20.0).quantities
+    hpp = (_h(0.4 + e) - 2 * _h(0.4) + _h(0.4 - e)) / e**2
+    assert math.isclose(driven["a"][2][1], hpp * 400.0, rel_tol=1e-4)
+
+
+def test_lesson11_slider_crank_explorer():
+    from planargeo.widgets import SliderCrankExplorer
+    sc = SliderCrankExplorer(display="agg")
+    ro = sc.readout_values
+    psi0, w0 = math.radians(ro["crank angle (deg)"]), sc.values["crank speed"]
+    assert math.isclose(ro["ψ̈ crank"], _psi_dd(psi0, w0, 9.81), rel_tol=1e-5)
+    assert math.isclose(ro["piston height h"], _h(psi0), rel_tol=1e-12)
+    sc.controls["crank angle (deg)"].value = 90.0                         # exercise 3
+    assert "dead centre" in sc.message
+    sc.set(**{"rod length": 2.0, "crank angle (deg)": 0.0})                # exercise 4
+    assert "rod too short" in sc.message
+    sc.reset()
+    assert sc.message == ""
+    sc.set(**{"crank angle (deg)": 180.0})
+    sc.set(**{"rod length": 2.29})                                         # l = r: the folded dead centre
+    assert "singular" in sc.message and sc.values["rod length"] == 5.0    # refused, the last good state kept
