@@ -800,3 +800,148 @@ def test_lesson11_slider_crank_explorer():
     sc.set(**{"crank angle (deg)": 180.0})
     sc.set(**{"rod length": 2.29})                                         # l = r: the folded dead centre
     assert "singular" in sc.message and sc.values["rod length"] == 5.0    # refused, the last good state kept
+
+
+# ------------------------------------------------------------------- lesson 12: speed against accuracy
+EPS = np.finfo(float).eps
+
+
+def test_lesson12_methods_agree_and_integrators_converge():
+    from planargeo import scenes
+    from planargeo.mechanics.model import chain_model
+    from planargeo.scenes.chain import available_methods
+    from planargeo.simulate.integrate import simulate
+    methods = available_methods()
+    for n in (1, 5, 20):
+        res = scenes.build("chain", n=n, seed=n)
+        assert set(res.quantities["qdd"]) == set(methods), res.quantities.get("failed")
+        assert res.quantities["max_disagreement"] < 1e-7 * max(1.0, max(abs(x) for x in res.quantities["qdd"]["crba"]))
+    model = chain_model(3)
+    q0, qd0 = np.array([0.3, -0.2, 0.1]), np.zeros(3)
+    drift = {h: simulate(model, q0, qd0, 1.0, method="RK4", dt=h).energy_drift() for h in (0.004, 0.002)}
+    assert 8 < drift[0.004] / drift[0.002] < 32                              # fourth order: 16
+    assert simulate(model, q0, qd0, 1.0, method="DOP853", rtol=1e-10, atol=1e-12).energy_drift() < 1e-8
+
+
+def test_lesson12_geometry_refuses_on_kappa_not_on_distance():
+    from fractions import Fraction
+    from planargeo.errors import COND_LIMIT, DegenerateGeometryError
+    from planargeo.geometry.projective import from_xy, line_through_point_direction, meet
+    line = lambda p, a: line_through_point_direction(from_xy(p), (math.cos(a), math.sin(a)))
+
+    def exact_meet(l, m):
+        l, m = [Fraction(float(x)) for x in l], [Fraction(float(x)) for x in m]
+        return [l[1] * m[2] - l[2] * m[1], l[2] * m[0] - l[0] * m[2], l[0] * m[1] - l[1] * m[0]]
+
+    def kappa(l, m):
+        x = exact_meet(l, m)
+        return float(np.linalg.norm(l) * np.linalg.norm(m)) / math.sqrt(float(sum(v * v for v in x)))
+
+    def rel_err(x, ref):
+        d = [Fraction(float(a)) - b for a, b in zip(x, ref)]
+        return math.sqrt(float(sum(v * v for v in d)) / float(sum(v * v for v in ref)))
+
+    P, a = (0.3, 0.2), 0.7
+    Q = (P[0] - math.sin(a), P[1] + math.cos(a))
+    for theta in (1e-2, 1e-6, 1e-10, 1e-14):
+        l, m = line(P, a), line(Q, a + theta)                              # near-parallel: exact to rounding
+        assert kappa(l, m) < 10 and rel_err(meet(l, m), exact_meet(l, m)) < 4 * EPS
+        l2, m2 = line(P, a), line(P, a + theta)                            # near-coincident: κ ~ 1/θ
+        k = kappa(l2, m2)
+        assert 0.1 < k * theta < 10
+        if k <= COND_LIMIT:
+            assert rel_err(meet(l2, m2), exact_meet(l2, m2)) < 4 * EPS * k
+        else:
+            with pytest.raises(DegenerateGeometryError) as exc:
+                meet(l2, m2)
+            assert exc.value.cond > COND_LIMIT
+    p = meet(line(P, a), line(Q, a))                                        # exactly parallel: ideal, silently
+    assert p[2] == 0
+
+
+def test_lesson12_dynamics_breakdown_against_the_exact_reference():
+    from reference import reference_with_info
+    from planargeo.errors import SingularConfigurationError
+    from planargeo.mechanics.model import Body, Joint, Model
+    from planargeo.scenes.chain import available_methods
+    methods = available_methods()
+
+    def serial_chain(masses, coms, inertias):
+        bodies = [Body(float(m), (float(c), 0.0), float(J)) for m, c, J in zip(masses, coms, inertias)]
+        joints = [Joint("revolute", (0.0 if i == 0 else 1.0, 0.0, 0.0)) for i in range(len(bodies))]
+        return Model(bodies, joints, list(range(-1, len(bodies) - 1)))
+
+    def errors(model, q, qd, tau):
+        ref, _, cond = reference_with_info(model, q, qd, tau, mode="exact")
+        out = {}
+        for name, f in methods.items():
+            try:
+                out[name] = float(np.max(np.abs(f(model, q, qd, tau) - ref)) / np.max(np.abs(ref)))
+            except SingularConfigurationError as exc:
+                out[name] = exc
+        return cond, out
+
+    rng = np.random.default_rng(1)
+    q8, qd8, tau8 = rng.uniform(-1, 1, (3, 8))
+    rows = {}
+    for light in ("tip", "base"):
+        masses = np.geomspace(1.0, 1e-12, 8)[:: 1 if light == "tip" else -1]
+        rows[light] = errors(serial_chain(masses, [0.5] * 8, masses / 12), q8, qd8, tau8 * masses)
+    for light, (cond, out) in rows.items():
+        assert cond > 1e11
+        assert all(isinstance(v, float) and v <= 4 * EPS * cond for v in out.values())
+        assert out["aba"] < 1e-11
+    assert max(rows["tip"][1].values()) < 1e-12                             # light tip: nothing breaks
+    assert rows["base"][1]["crba"] > 1e-8 and rows["base"][1]["crba"] > 100 * rows["base"][1]["aba"]
+    q, qd, tau = rng.uniform(-1, 1, (3, 8))                                 # a joint with no inertia: refusals
+    for d, all_refuse in ((1e-2, False), (1e-7, True)):
+        cond, out = errors(serial_chain([1.0] * 8, [0.5] * 7 + [d], [1 / 12] * 7 + [0.0]), q, qd, tau)
+        refused = [isinstance(v, SingularConfigurationError) for v in out.values()]
+        assert all(refused) if all_refuse else not any(refused)
+        for v in out.values():
+            if isinstance(v, SingularConfigurationError):
+                assert v.cond > 1e12
+
+
+def test_lesson12_folding_slider_crank_and_peers():
+    pin = pytest.importorskip("pinocchio")
+    from bench import to_pinocchio
+    from reference import slider_crank_reference
+    from planargeo.algorithms.crba import mass_matrix
+    from planargeo.algorithms.loops import SINGULAR_COND, constrained_dynamics_lagrange, loop_solve
+    from planargeo.errors import SingularConfigurationError
+    from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
+    from planargeo.widgets import ChainExplorer
+    r = 2.29
+    for delta, solvable in ((1e-9, True), (1e-11, False)):
+        l = r * (1 + delta)
+        model = slider_crank_model(l=l)
+        q, qd = slider_crank_state(0.0, 20.0, r, l)
+        x = slider_crank_reference(model, q, qd, np.zeros(3), r, l, mode="exact")
+        lag = constrained_dynamics_lagrange(model, q, qd, np.zeros(3))["qdd"]
+        assert np.max(np.abs(lag - x)) / np.max(np.abs(x)) < 1e-14            # maximal coordinates: fine
+        if solvable:
+            sol = loop_solve(model, q, qd, np.zeros(3))
+            assert 0.1 < sol.cond * delta < 10 and sol.cond <= SINGULAR_COND
+        else:
+            with pytest.raises(SingularConfigurationError) as exc:
+                loop_solve(model, q, qd, np.zeros(3))
+            assert exc.value.cond > SINGULAR_COND
+    chain = ChainExplorer(display="agg", links=6, speed=0.8, torque=1.5, **{"articulated inertias": True})
+    m6, q6, qd6, tau6 = chain.initial_state(chain.values)
+    pm6 = to_pinocchio(m6)
+    qdd_pin = pin.aba(pm6, pm6.createData(), q6, qd6, tau6)
+    assert math.isclose(chain.readout_values["qdd[1]"], qdd_pin[0], rel_tol=1e-10, abs_tol=1e-12)
+    assert math.isclose(chain.readout_values["kinetic energy (J)"], 0.5 * qd6 @ mass_matrix(m6, q6) @ qd6, rel_tol=1e-10)
+
+
+def test_lesson12_committed_benchmark_claims():
+    """The story lesson 12 tells from benchmarks/results/dynamics.json."""
+    res = json.loads((ROOT / "benchmarks" / "results" / "dynamics.json").read_text())
+    single = {row["N"]: row for row in res["single"]}
+    for N, row in single.items():
+        assert all(err <= 4 * EPS * row["ref"]["cond"] + 1e-14 for err in row["err_ref"].values()), N
+    batch = {row["B"]: row for row in res["batch"]}[10000]
+    assert batch["err_peer"]["pinocchio"] < 1e-12 and set(single) >= {1, 10, 100}
+    assert single[10]["ratio"]["median"] < 1.5 and single[200]["ratio"]["median"] < 1
+    assert batch["ratio"]["pinocchio"]["median"] < 1 and batch["ratio"]["mujoco"]["median"] < 1
