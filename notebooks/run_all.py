@@ -37,6 +37,7 @@ import io
 import json
 import os
 import re
+import resource
 import sys
 import time
 from pathlib import Path
@@ -124,7 +125,8 @@ def execute(path: Path, timeout: int = TIMEOUT):
     nb : nbformat.NotebookNode
         The executed notebook (the file is not written).
     seconds : float
-        Wall time of the run, kernel start included.
+        Wall time of the run, kernel start included (see :func:`kernel_cpu_seconds` for the CPU time,
+        which does not depend on how busy the machine is).
     skipped : dict
         cell index -> name of the missing explorer, for cells not executed.
     """
@@ -158,6 +160,17 @@ def execute(path: Path, timeout: int = TIMEOUT):
     for cell in nb.cells:
         cell.get("metadata", {}).pop("execution", None)
     return nb, seconds, skipped
+
+
+def kernel_cpu_seconds() -> float:
+    """CPU time (user + system) of the finished child processes so far: the kernels this process ran.
+
+    Returns
+    -------
+    float
+    """
+    ru = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return ru.ru_utime + ru.ru_stime
 
 
 # ------------------------------------------------------------------------------- normalised outputs
@@ -312,10 +325,13 @@ def main(argv=None) -> int:
     ap.add_argument("prefixes", nargs="*", help="only notebooks whose names start with these")
     ap.add_argument("--check", action="store_true", help="compare with the stored outputs, write nothing")
     args = ap.parse_args(argv)
-    total, status = 0.0, 0
+    total, total_cpu, status = 0.0, 0.0, 0
     for path in notebook_paths(args.prefixes):
+        cpu0 = kernel_cpu_seconds()
         nb, seconds, skipped = execute(path)
+        cpu = kernel_cpu_seconds() - cpu0
         total += seconds
+        total_cpu += cpu
         note = "".join(f"; cell {i} not run ({name} missing)" for i, name in skipped.items())
         if args.check:
             diff = differences(nbformat.read(path, as_version=4), nb)
@@ -323,8 +339,8 @@ def main(argv=None) -> int:
             note += "".join(f"\n    {d}" for d in diff) or "; outputs as stored"
         else:
             write(nb, path)
-        print(f"{path.name:48s} {seconds:6.1f} s{note}", flush=True)
-    print(f"{'total':48s} {total:6.1f} s")
+        print(f"{path.name:48s} {seconds:6.1f} s wall {cpu:6.1f} s CPU{note}", flush=True)
+    print(f"{'total':48s} {total:6.1f} s wall {total_cpu:6.1f} s CPU (kernels)")
     return status
 
 

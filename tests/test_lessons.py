@@ -28,7 +28,7 @@ def prose_words(md: str) -> int:
     """Words of prose: markdown without code blocks, display equations and HTML tags."""
     md = re.sub(r"```.*?```", " ", md, flags=re.S)
     md = re.sub(r"\$\$.*?\$\$", " ", md, flags=re.S)
-    md = re.sub(r"<[^>]+>", " ", md)
+    md = re.sub(r"</?(details|summary)[^>]*>", " ", md)
     return sum(1 for w in md.split() if re.search(r"[A-Za-z0-9]", w))
 
 
