@@ -9,10 +9,12 @@ What makes a run deterministic:
 
 * each notebook runs in a fresh kernel (``python3``, the interpreter running this script) in the
   ``notebooks/`` folder, with ``PYTHONHASHSEED=0`` and ``SOURCE_DATE_EPOCH=0``;
-* figures are inline PNG (``MPLBACKEND`` is removed from the kernel's environment, so IPython's
-  inline backend is used; ``PLANARGEO_WIDGET_BACKEND=image`` asks
-  ``planargeo.widgets.use_widget_backend()`` to stay inline: an ipympl canvas would store no
-  picture); the notebooks seed every random generator they use;
+* figures are inline PNG: ``MPLBACKEND`` is removed from the kernel's environment, so IPython's
+  inline backend is used, and the recording kernel runs as a reader's kernel without the widget
+  front end would: before the first cell a silent set-up (not stored in the notebook, not in the
+  history) marks ``ipympl`` unavailable, so ``planargeo.widgets.use_widget_backend()`` falls back to
+  inline images (an ipympl canvas stores no picture); ``PLANARGEO_WIDGET_BACKEND=image`` is set too,
+  for a ``use_widget_backend`` that reads it; the notebooks seed every random generator they use;
 * no timings, dates or widget state are stored: ``record_timing`` is off, widget state is not
   saved, the kernelspec metadata is fixed.
 
@@ -47,6 +49,8 @@ NEEDS_TAG = "needs-merge"
 VARIES_TAG = "output-varies"
 KERNELSPEC = {"display_name": "Python 3 (ipykernel)", "language": "python", "name": "python3"}
 TIMEOUT = 300
+#: run silently before the first cell of a recording (see the module docstring): no widget front end
+RECORDING_SETUP = "import sys\nsys.modules['ipympl'] = None\ndel sys"
 
 
 def notebook_paths(prefixes=()) -> list[Path]:
@@ -144,6 +148,8 @@ def execute(path: Path, timeout: int = TIMEOUT):
                                 store_widget_state=False, allow_errors=False,
                                 resources={"metadata": {"path": str(path.parent)}})
         with client.setup_kernel():
+            setup = nbformat.v4.new_code_cell(RECORDING_SETUP)
+            client.execute_cell(setup, -1, store_history=False)
             for index, cell in enumerate(nb.cells):
                 if cell.cell_type != "code":
                     continue
