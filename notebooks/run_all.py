@@ -148,8 +148,11 @@ def execute(path: Path, timeout: int = TIMEOUT):
                                 store_widget_state=False, allow_errors=False,
                                 resources={"metadata": {"path": str(path.parent)}})
         with client.setup_kernel():
-            setup = nbformat.v4.new_code_cell(RECORDING_SETUP)
-            client.execute_cell(setup, -1, store_history=False)
+            nb.cells.append(nbformat.v4.new_code_cell(RECORDING_SETUP))   # run, then removed again
+            try:
+                client.execute_cell(nb.cells[-1], len(nb.cells) - 1, store_history=False)
+            finally:
+                nb.cells.pop()
             for index, cell in enumerate(nb.cells):
                 if cell.cell_type != "code":
                     continue
@@ -271,6 +274,9 @@ def differences(stored, fresh, *, pixel_tol: float = 2e-3) -> list[str]:
     if len(stored.cells) != len(fresh.cells):
         return [f"{len(stored.cells)} stored cells, {len(fresh.cells)} fresh"]
     for i, (a, b) in enumerate(zip(stored.cells, fresh.cells)):
+        if (a.cell_type, a.source) != (b.cell_type, b.source):
+            problems.append(f"cell {i}: the cell itself differs (a run must not change the notebook's cells)")
+            continue
         if a.cell_type != "code":
             continue
         na, nb_ = normalised(a), normalised(b)
