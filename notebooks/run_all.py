@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import argparse
 import base64
+import copy
 import importlib
 import io
 import json
@@ -168,7 +169,33 @@ def execute(path: Path, timeout: int = TIMEOUT):
     nb.metadata["kernelspec"] = dict(KERNELSPEC)
     for cell in nb.cells:
         cell.get("metadata", {}).pop("execution", None)
+        if cell.cell_type == "code":
+            cell.outputs = coalesce_streams(cell.outputs)
     return nb, seconds, skipped
+
+
+def coalesce_streams(outputs) -> list:
+    """Merge consecutive stream outputs of the same stream (how the kernel chunks them varies).
+
+    Parameters
+    ----------
+    outputs : list
+        A code cell's outputs.
+
+    Returns
+    -------
+    list
+        The outputs with each run of ``stdout`` (or ``stderr``) pieces joined into one.
+    """
+    out = []
+    for o in outputs:
+        if (o.get("output_type") == "stream" and out and out[-1].get("output_type") == "stream"
+                and out[-1].get("name") == o.get("name")):
+            prev = out[-1]
+            prev["text"] = "".join(prev["text"]) + "".join(o["text"])
+        else:
+            out.append(o)
+    return out
 
 
 def kernel_cpu_seconds() -> float:
@@ -229,7 +256,7 @@ def normalised(cell) -> list:
     """
     varies = VARIES_TAG in cell.get("metadata", {}).get("tags", [])
     out = []
-    for o in cell.get("outputs", []):
+    for o in coalesce_streams(copy.deepcopy(cell.get("outputs", []))):
         kind = o["output_type"]
         if kind == "stream":
             out.append((kind, o["name"], None if varies else _text(o["text"])))
