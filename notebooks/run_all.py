@@ -29,11 +29,13 @@ Usage::
     python notebooks/run_all.py              # every notebook, outputs stored in place
     python notebooks/run_all.py 03 05        # only notebooks whose names start with these
     python notebooks/run_all.py --check      # run, compare with the stored outputs, write nothing
+    python notebooks/run_all.py -j 2         # two notebooks at a time (each in its own kernel)
 """
 from __future__ import annotations
 
 import argparse
 import base64
+import concurrent.futures
 import copy
 import importlib
 import io
@@ -140,30 +142,23 @@ def execute(path: Path, timeout: int = TIMEOUT):
 
     nb = nbformat.read(path, as_version=4)
     skipped = missing_names(nb)
-    saved_env = dict(os.environ)
-    os.environ.clear()
-    os.environ.update(kernel_environment())              # the kernel inherits this process's env
     t0 = time.perf_counter()
-    try:
-        client = NotebookClient(nb, timeout=timeout, kernel_name="python3", record_timing=False,
-                                store_widget_state=False, allow_errors=False,
-                                resources={"metadata": {"path": str(path.parent)}})
-        with client.setup_kernel():
-            nb.cells.append(nbformat.v4.new_code_cell(RECORDING_SETUP))   # run, then removed again
-            try:
-                client.execute_cell(nb.cells[-1], len(nb.cells) - 1, store_history=False)
-            finally:
-                nb.cells.pop()
-            for index, cell in enumerate(nb.cells):
-                if cell.cell_type != "code":
-                    continue
-                if index in skipped:
-                    cell.outputs, cell.execution_count = [], None
-                    continue
-                client.execute_cell(cell, index)
-    finally:
-        os.environ.clear()
-        os.environ.update(saved_env)
+    client = NotebookClient(nb, timeout=timeout, kernel_name="python3", record_timing=False,
+                            store_widget_state=False, allow_errors=False,
+                            resources={"metadata": {"path": str(path.parent)}})
+    with client.setup_kernel(env=kernel_environment()):   # the kernel's own environment (thread-safe)
+        nb.cells.append(nbformat.v4.new_code_cell(RECORDING_SETUP))   # run, then removed again
+        try:
+            client.execute_cell(nb.cells[-1], len(nb.cells) - 1, store_history=False)
+        finally:
+            nb.cells.pop()
+        for index, cell in enumerate(nb.cells):
+            if cell.cell_type != "code":
+                continue
+            if index in skipped:
+                cell.outputs, cell.execution_count = [], None
+                continue
+            client.execute_cell(cell, index)
     seconds = time.perf_counter() - t0
     nb.metadata.pop("widgets", None)
     nb.metadata["kernelspec"] = dict(KERNELSPEC)
@@ -363,23 +358,29 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("prefixes", nargs="*", help="only notebooks whose names start with these")
     ap.add_argument("--check", action="store_true", help="compare with the stored outputs, write nothing")
+    ap.add_argument("--jobs", "-j", type=int, default=1, help="notebooks run at once (default 1)")
     args = ap.parse_args(argv)
     total, total_cpu, status = 0.0, 0.0, 0
-    for path in notebook_paths(args.prefixes):
-        cpu0 = kernel_cpu_seconds()
-        nb, seconds, skipped = execute(path)
-        cpu = kernel_cpu_seconds() - cpu0
-        total += seconds
-        total_cpu += cpu
-        note = "".join(f"; cell {i} not run ({name} missing)" for i, name in skipped.items())
-        if args.check:
-            diff = differences(nbformat.read(path, as_version=4), nb)
-            status |= bool(diff)
-            note += "".join(f"\n    {d}" for d in diff) or "; outputs as stored"
-        else:
-            write(nb, path)
-        print(f"{path.name:48s} {seconds:6.1f} s wall {cpu:6.1f} s CPU{note}", flush=True)
-    print(f"{'total':48s} {total:6.1f} s wall {total_cpu:6.1f} s CPU (kernels)")
+    paths = notebook_paths(args.prefixes)
+    cpu_start, wall_start = kernel_cpu_seconds(), time.perf_counter()
+    with concurrent.futures.ThreadPoolExecutor(max(1, args.jobs)) as pool:
+        runs = pool.map(execute, paths)
+        for path, (nb, seconds, skipped) in zip(paths, runs):
+            cpu = kernel_cpu_seconds() - cpu_start - total_cpu if args.jobs == 1 else float("nan")
+            total += seconds
+            total_cpu += 0.0 if cpu != cpu else cpu
+            note = "".join(f"; cell {i} not run ({name} missing)" for i, name in skipped.items())
+            if args.check:
+                diff = differences(nbformat.read(path, as_version=4), nb)
+                status |= bool(diff)
+                note += "".join(f"\n    {d}" for d in diff) or "; outputs as stored"
+            else:
+                write(nb, path)
+            cpu_text = f"{cpu:6.1f} s CPU" if cpu == cpu else "     (CPU: see total)"
+            print(f"{path.name:48s} {seconds:6.1f} s wall {cpu_text}{note}", flush=True)
+    total_cpu = kernel_cpu_seconds() - cpu_start
+    print(f"{'total (sum of the runs)':48s} {total:6.1f} s wall {total_cpu:6.1f} s CPU (kernels); "
+          f"elapsed {time.perf_counter() - wall_start:.1f} s with {args.jobs} job(s)")
     return status
 
 
