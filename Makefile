@@ -59,7 +59,7 @@ gallery: $(STAMP)
 # fresh run. NOTEBOOKS_ARGS: e.g. `03 05` (only those lessons) or `--check` (compare, write nothing).
 NOTEBOOKS_ARGS ?=
 notebooks: $(STAMP)
-	PYTHONPATH=$(CURDIR) $(BIN)/python notebooks/run_all.py $(NOTEBOOKS_ARGS)
+	PYTHONPATH=$(CURDIR) $(BIN)/python notebooks/run_all.py -j 2 $(NOTEBOOKS_ARGS)
 
 bench: $(STAMP)
 	MPLBACKEND=Agg $(BIN)/python benchmarks/run.py --out benchmarks/results --summary benchmarks/RESULTS.md --gallery gallery/benchmarks
