@@ -16,7 +16,7 @@ FUZZ_ARGS ?=
 LAB_FLAGS = --ServerApp.ip=127.0.0.1 --ServerApp.allow_remote_access=False \
             --IdentityProvider.token=$$($(BIN)/python -c 'import secrets; print(secrets.token_hex(24))')
 
-.PHONY: lab test fuzz install gallery bench clean help browser docs
+.PHONY: lab test fuzz install gallery bench clean help browser docs notebooks
 
 help:
 	@echo "make lab    - set up .venv and start JupyterLab on notebooks/00-tour.ipynb (localhost, token)"
@@ -25,6 +25,7 @@ help:
 	@echo "make gallery- regenerate gallery/*.svg"
 	@echo "make bench  - run the benchmarks and rewrite benchmarks/results"
 	@echo "make docs   - build the documentation site into docs/_build/html"
+	@echo "make notebooks - run every notebook deterministically and store its outputs in place"
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -65,6 +66,12 @@ docs: $(STAMP)
 
 gallery: $(STAMP)
 	MPLBACKEND=Agg $(BIN)/planargeo gallery
+
+# The lessons are committed with their outputs; tests/test_notebook_outputs.py checks them against a
+# fresh run. NOTEBOOKS_ARGS: e.g. `03 05` (only those lessons) or `--check` (compare, write nothing).
+NOTEBOOKS_ARGS ?=
+notebooks: $(STAMP)
+	PYTHONPATH=$(CURDIR) $(BIN)/python notebooks/run_all.py -j 2 $(NOTEBOOKS_ARGS)
 
 bench: $(STAMP)
 	MPLBACKEND=Agg $(BIN)/python benchmarks/run.py --out benchmarks/results --summary benchmarks/RESULTS.md --gallery gallery/benchmarks
