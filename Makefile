@@ -49,7 +49,7 @@ browser:
 	  else echo "chromium not found and cannot be installed: the browser test will be skipped"; fi; }
 
 test: $(STAMP) browser
-	MPLBACKEND=Agg $(BIN)/python -m pytest -n 2 --nbmake tests planargeo notebooks $(PYTEST_ARGS)
+	MPLBACKEND=Agg $(BIN)/python -m pytest -n 2 tests planargeo $(PYTEST_ARGS)
 	$(MAKE) --no-print-directory docs
 
 fuzz: $(STAMP)
