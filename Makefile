@@ -4,6 +4,8 @@
 #   make test   create/update .venv, install everything the tests need, run the whole suite
 #   make fuzz   at least 10^4 generated calls against the public API, a table of outcomes
 #   make docs   the documentation site in docs/_build/html (Sphinx; warnings are errors)
+#   make app    every explorer as a web page without code (Voila on app/planargeo-app.ipynb, 127.0.0.1)
+#   make screens  regenerate docs/screens/*.png (each explorer in its default state, in the app)
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
@@ -16,7 +18,7 @@ FUZZ_ARGS ?=
 LAB_FLAGS = --ServerApp.ip=127.0.0.1 --ServerApp.allow_remote_access=False \
             --IdentityProvider.token=$$($(BIN)/python -c 'import secrets; print(secrets.token_hex(24))')
 
-.PHONY: lab test fuzz install gallery bench clean help browser docs notebooks
+.PHONY: lab test fuzz install gallery bench clean help browser docs notebooks app screens
 
 help:
 	@echo "make lab    - set up .venv and start JupyterLab on notebooks/00-tour.ipynb (localhost, token)"
@@ -26,6 +28,8 @@ help:
 	@echo "make bench  - run the benchmarks and rewrite benchmarks/results"
 	@echo "make docs   - build the documentation site into docs/_build/html"
 	@echo "make notebooks - run every notebook deterministically and store its outputs in place"
+	@echo "make app    - serve every explorer as a web page (Voila, 127.0.0.1:8866)"
+	@echo "make screens- regenerate docs/screens/*.png from the app in headless chromium"
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -40,13 +44,23 @@ install: $(STAMP)
 lab: $(STAMP)
 	$(BIN)/jupyter lab $(ROOT_FLAG) $(LAB_FLAGS) notebooks/00-tour.ipynb
 
-# Debian's chromium drives the real-browser test (Playwright's own download does not work here).
+# Debian's chromium drives the real-browser test (Playwright's own download does not work here);
+# Debian's ffmpeg writes the explorers' MP4 exports (GIF needs only pillow).
 browser:
-	@command -v chromium >/dev/null 2>&1 || { \
+	@missing=""; command -v chromium >/dev/null 2>&1 || missing="chromium"; \
+	command -v ffmpeg >/dev/null 2>&1 || missing="$$missing ffmpeg"; \
+	if [ -n "$$missing" ]; then \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
-	    echo "installing Debian's chromium for the browser test"; \
-	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null; \
-	  else echo "chromium not found and cannot be installed: the browser test will be skipped"; fi; }
+	    echo "installing Debian's$$missing"; \
+	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null; \
+	  else echo "not found and cannot be installed:$$missing (browser test / MP4 export will be skipped)"; fi; fi
+
+# Voila runs the app notebook and shows only its outputs; 127.0.0.1 only.
+app: $(STAMP)
+	$(BIN)/voila app/planargeo-app.ipynb --Voila.ip=127.0.0.1 --port=8866 --theme=light --no-browser
+
+screens: $(STAMP) browser
+	MPLBACKEND=Agg PLANARGEO_UPDATE_SCREENS=1 $(BIN)/python -m pytest -p no:randomly tests/browser/test_app.py -q
 
 test: $(STAMP) browser
 	MPLBACKEND=Agg $(BIN)/python -m pytest -n 2 tests planargeo $(PYTEST_ARGS)
