@@ -146,6 +146,11 @@ class LoopSolution:
         raise InputError(f"name must be a joint or contact name or a symbol of the loop's reactions "
                          f"({', '.join(r.symbol for r in self.reactions)}), got {name!r}")
 
+    @property
+    def Lambda_inv(self) -> np.ndarray:
+        """The tree's full stacked mobility ``Λ^{-1}`` (3N×3N) of 9.65-9.73, built on first access (``tree.mobility``)."""
+        return self.tree.mobility
+
 
 @dataclass(frozen=True)
 class Reaction:
@@ -269,11 +274,6 @@ def _reactions(model, cs, data, f, F) -> list:
         out.append(Reaction(f"F_{k + 1}", c.name, c.kind, c.a, c.b, P, w,
                             float(w[2] + P[1] * w[0] - P[0] * w[1])))
     return out
-
-    @property
-    def Lambda_inv(self) -> np.ndarray:
-        """The tree's full stacked mobility ``Λ^{-1}`` (3N×3N) of 9.65-9.73, built on first access (``tree.mobility``)."""
-        return self.tree.mobility
 
 
 @functools.lru_cache(maxsize=256)

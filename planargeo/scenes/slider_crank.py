@@ -25,7 +25,12 @@ which is the state behind the printed twists (9.80).
 Quantities (global origin, thesis ordering): ``q``, ``qd``, ``v`` (3 twists),
 ``u`` (open-loop accelerations, 9.82), ``Lambda3_inv`` (9.81), ``h`` (9.86),
 ``z3``, ``B3`` (9.87), ``xi`` (9.90), ``F3`` (9.92), ``a3`` (9.94), ``a``
-(all bodies), ``qdd``, ``tau_drive`` (crank torque needed by the drive).
+(all bodies), ``qdd``, ``tau_drive`` (crank torque needed by the drive), and every pin and
+bearing force of the loop (9.61): ``f`` (the joint wrenches ``f_1`` crank pivot, ``f_2`` crank
+pin, ``f_3`` wrist pin, each on its body from its parent, N, N, N·m at the origin), ``mu``
+(``μ_i = U_iᵀ f_i``, 6.61b), ``pin_forces`` (``f_1..f_3`` and ``F_1``, the slider bearing's
+``-F₃`` on the piston) and ``reaction_moments`` (each about its own pin or contact point:
+the drive torque at ``f_1``, zero at the free pins, the bearing's couple at ``F_1``).
 
 Examples
 --------
@@ -203,6 +208,10 @@ def slider_crank(psi: float = 0.4, psidot: float = 20.0, m1: float = 0.40, m2: f
         "a3": _tolist(sol.a[6:9]), "a": _tolist(sol.a.reshape(3, 3)),
         "qdd": _tolist(sol.qdd), "tau_drive": _tolist(sol.tau_drive),
         "cond": float(sol.cond),
+        # every pin and bearing force of the loop (9.61): f_i on body i from its parent, -F_1 on the piston
+        "f": _tolist(sol.f.reshape(3, 3)), "mu": _tolist(sol.mu),
+        "pin_forces": {r.symbol: _tolist(r.wrench) for r in sol.reactions},
+        "reaction_moments": {r.symbol: float(r.moment) for r in sol.reactions},
     }
     params = dict(psi=psi, psidot=psidot, m1=m1, m2=m2, m3=m3, r=r, l=l, t=t, g=g, drive=drive)
     return SceneResult("slider-crank", params, model,

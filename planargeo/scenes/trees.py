@@ -151,7 +151,9 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
     sol = loop_solve(model, q, qd, tau)
     quantities = {"G": _tolist(sol.G), "Upsilon": _tolist(sol.Upsilon), "qdd": _tolist(sol.qdd),
                   "a": _tolist(sol.a.reshape(9, 3)), "u": _tolist(sol.u.reshape(9, 3)),
-                  "F": _tolist(sol.F.reshape(-1, 3)), "xi": _tolist(sol.xi), "cond": float(sol.cond)}
+                  "F": _tolist(sol.F.reshape(-1, 3)), "xi": _tolist(sol.xi), "cond": float(sol.cond),
+                  # every pin force of the closed tree (9.61): f_i on body i from its parent through joint i
+                  "f": _tolist(sol.f.reshape(9, 3)), "mu": _tolist(sol.mu.reshape(9, 2))}
     return SceneResult("constrained-tree", dict(mass=mass, length=length, g=g, speed=speed), model,
                        state={"q": _tolist(q), "qd": _tolist(qd), "tau": _tolist(tau)},
                        quantities=quantities, extra={"solution": sol})
