@@ -123,6 +123,20 @@ class LoopSolution:
     def __repr__(self):
         return f"LoopSolution(N={self.tree.N}, contacts={self.G.shape[0]}, cond={self.cond:.3g})"
 
+    @property
+    def mu(self) -> np.ndarray:
+        """Reaction magnitudes ``μ_i = U_iᵀ f_i`` (6.61b) of every joint in its basis ``R_i``, built on first access."""
+        if not hasattr(self, "_mu"):
+            self._mu = self.tree.U.T @ self.f
+        return self._mu
+
+    @property
+    def reactions(self) -> list:
+        """Every pin and bearing force of the loop, a :class:`Reaction` per tree joint then per contact."""
+        if not hasattr(self, "_reactions"):
+            self._reactions = _reactions(self._model, self.contacts, self.data, self.f, self.F)
+        return self._reactions
+
     def reaction(self, name: str) -> "Reaction":
         """The :class:`Reaction` named ``name`` (a joint's or contact's name, or its symbol ``f_1``, ``F_1``).
 
@@ -464,10 +478,8 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
     sol.data = data
     # 6. every pin and bearing force of the loop (9.61): Δᵀ f = I a + p + Gᵀ F, solved for f
     sol.f = joint_wrenches(model.parents, tree.I, a, tree.p, G3.T @ sol.F)
-    S, Ut = tree.S, tree.U
-    sol.Q = S.T @ sol.f
-    sol.mu = Ut.T @ sol.f
-    sol.reactions = _reactions(model, cs, data, sol.f, sol.F)
+    sol.Q = tree.S.T @ sol.f
+    sol._model = model                 # for mu and reactions, built on first access
     return sol
 
 
