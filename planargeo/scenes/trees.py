@@ -34,8 +34,8 @@ import numpy as np
 
 from planargeo.scenes import SceneResult, check_param, register
 
-__all__ = ["tree", "constrained_tree", "tree_model", "tree_solve", "tree_dof", "FIG91_PARENTS",
-           "FIG91_ANGLES"]
+__all__ = ["tree", "constrained_tree", "tree_model", "tree_solve", "tree_dof", "tree_pose", "tree_advance",
+           "FIG91_PARENTS", "FIG91_ANGLES"]
 
 #: Parents of Fig 9.1 (0-based; -1 is the ground).
 FIG91_PARENTS = (-1, 0, 1, 2, 0, 4, 5, 5, 0)
@@ -157,3 +157,106 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
     return SceneResult("constrained-tree", dict(mass=mass, length=length, g=g, speed=speed), model,
                        state={"q": _tolist(q), "qd": _tolist(qd), "tau": _tolist(tau)},
                        quantities=quantities, extra={"solution": sol})
+
+
+def tree_pose(model, root_angle, speed=1.0, q_start=None):
+    """A state of the (constrained) tree with body 1 at ``root_angle``: the loops closed, the speed pattern projected.
+
+    Positions: ``q_start`` (default: the pose of Fig 9.1/9.2) with joint 1 set to
+    ``root_angle`` and the other joints moved by Gauss-Newton until the pins
+    close (:func:`planargeo.simulate.loops.project_state` with joint 1 fixed,
+    9.54 in positions).  Velocities: ``speed`` times the scene's joint-speed
+    pattern, minus its part that breaks the loops (least squares, as the
+    ``"constrained-tree"`` scene), so at ``root_angle = 90°`` and the default
+    pose this is the scene's state.
+
+    Parameters
+    ----------
+    model : Model
+        :func:`tree_model`, with or without the pins of Fig 9.2.
+    root_angle : float
+        Absolute angle of body 1 (rad).
+    speed : float
+        Scale of the joint-speed pattern (rad/s).
+    q_start : array_like (9,), optional
+        Where to start the closure (the last pose shown, for a continuous drag).
+
+    Returns
+    -------
+    q, qd : ndarray (9,)
+
+    Raises
+    ------
+    SceneError
+        If the loops cannot be closed with body 1 at that angle (the pins out of reach).
+
+    Examples
+    --------
+    >>> closed = constrained_tree()
+    >>> q, qd = tree_pose(closed.model, np.pi / 2)
+    >>> bool(np.allclose(q, closed.state["q"])), bool(np.allclose(qd, closed.state["qd"]))
+    (True, True)
+    """
+    from planargeo.errors import SceneError
+    from planargeo.simulate.loops import closure_jacobian, closure_residual, project_state
+
+    root_angle, speed = check_param("root_angle", root_angle), check_param("speed", speed)
+    q = _default_q() if q_start is None else np.array(q_start, dtype=float)
+    q[0] = root_angle
+    qd = speed * _QD_PATTERN
+    if model.contacts:
+        q, _ = project_state(model, q, np.zeros(9), fixed=[0], tol=1e-13, max_iter=50)
+        if not np.abs(closure_residual(model, q)).max() < 1e-9:
+            raise SceneError(f"the loops of Fig 9.2 cannot close with body 1 at {np.degrees(root_angle):.4g}°: "
+                             "the pins are out of reach")
+        Jc = closure_jacobian(model, q)
+        qd = qd - np.linalg.pinv(Jc) @ (Jc @ qd)
+    return q, qd
+
+
+def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10):
+    """Integrate the tree (loops closed by its contacts, if any) over ``dt`` seconds (9.5 with :func:`simulate_loops`).
+
+    Parameters
+    ----------
+    model : Model
+        :func:`tree_model`.
+    q, qd : array_like (9,)
+        The state at the start (on the loops).
+    dt : float
+        Duration (s), > 0.
+    rtol, atol : float
+        Integrator tolerances (DOP853).
+
+    Returns
+    -------
+    dict
+        ``q``, ``qd`` at the end, ``position_residual``, ``velocity_residual`` (largest closure
+        drift during the step, m and m/s), ``events`` (near-singular configurations passed),
+        ``nfev``, ``status``.
+
+    Raises
+    ------
+    SceneError
+        If ``dt`` is not positive.
+    PlanargeoError
+        If the integration stops (a singular configuration: its message).
+
+    Examples
+    --------
+    >>> closed = constrained_tree()
+    >>> out = tree_advance(closed.model, closed.state["q"], closed.state["qd"], 0.01)
+    >>> out["status"], bool(out["position_residual"] < 1e-9)
+    ('ok', True)
+    """
+    from planargeo.errors import PlanargeoError
+    from planargeo.simulate.loops import simulate_loops
+
+    dt = check_param("dt", dt, positive=True)
+    res = simulate_loops(model, q, qd, dt, rtol=rtol, atol=atol, progress=False)
+    if res.status != "ok":
+        raise PlanargeoError(f"the simulation stopped at t = {res.t[-1]:.4g} s: {res.message}")
+    return {"q": np.array(res.q[-1], dtype=float), "qd": np.array(res.qd[-1], dtype=float),
+            "position_residual": float(np.max(res.extra["position_residual"], initial=0.0)),
+            "velocity_residual": float(np.max(res.extra["velocity_residual"], initial=0.0)),
+            "events": list(res.events), "nfev": int(res.nfev), "status": res.status}
