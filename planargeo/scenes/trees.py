@@ -159,12 +159,13 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
                        quantities=quantities, extra={"solution": sol})
 
 
-def tree_pose(model, root_angle, speed=1.0, q_start=None):
+def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
     """A state of the (constrained) tree with body 1 at ``root_angle``: the loops closed, the speed pattern projected.
 
     Positions: ``q_start`` (default: the pose of Fig 9.1/9.2) with joint 1 set to
-    ``root_angle`` and the other joints moved by Gauss-Newton until the pins
-    close (:func:`planargeo.simulate.loops.project_state` with joint 1 fixed,
+    ``root_angle`` (and body 2 to the absolute angle ``angle2`` if given) and the
+    other joints moved by Gauss-Newton until the pins close
+    (:func:`planargeo.simulate.loops.project_state` with those joints fixed,
     9.54 in positions).  Velocities: ``speed`` times the scene's joint-speed
     pattern, minus its part that breaks the loops (least squares, as the
     ``"constrained-tree"`` scene), so at ``root_angle = 90°`` and the default
@@ -180,6 +181,8 @@ def tree_pose(model, root_angle, speed=1.0, q_start=None):
         Scale of the joint-speed pattern (rad/s).
     q_start : array_like (9,), optional
         Where to start the closure (the last pose shown, for a continuous drag).
+    angle2 : float, optional
+        Absolute angle of body 2 (rad); None: body 2 keeps its angle relative to body 1.
 
     Returns
     -------
@@ -203,12 +206,17 @@ def tree_pose(model, root_angle, speed=1.0, q_start=None):
     root_angle, speed = check_param("root_angle", root_angle), check_param("speed", speed)
     q = _default_q() if q_start is None else np.array(q_start, dtype=float)
     q[0] = root_angle
+    fixed = [0]
+    if angle2 is not None:
+        q[1] = check_param("angle2", angle2) - root_angle
+        fixed = [0, 1]
     qd = speed * _QD_PATTERN
     if model.contacts:
-        q, _ = project_state(model, q, np.zeros(9), fixed=[0], tol=1e-13, max_iter=50)
+        q, _ = project_state(model, q, np.zeros(9), fixed=fixed, tol=1e-13, max_iter=50)
         if not np.abs(closure_residual(model, q)).max() < 1e-9:
-            raise SceneError(f"the loops of Fig 9.2 cannot close with body 1 at {np.degrees(root_angle):.4g}°: "
-                             "the pins are out of reach")
+            where = f"body 1 at {np.degrees(root_angle):.4g}°" + (
+                "" if angle2 is None else f" and body 2 at {np.degrees(angle2):.4g}°")
+            raise SceneError(f"the loops of Fig 9.2 cannot close with {where}: the pins are out of reach")
         Jc = closure_jacobian(model, q)
         qd = qd - np.linalg.pinv(Jc) @ (Jc @ qd)
     return q, qd
