@@ -59,6 +59,8 @@ def _symbol(sym: str) -> str:
 class ReactionGlyph:
     """One reaction drawn at its joint: a stretch of its line of action, the force arrow, a label.
 
+    Attributes ``wrench`` and ``point`` hold what is drawn, ``foot`` where the arrow sits.
+
     The arrow (``scale`` data units per newton) is centred on the foot of the
     joint on the line of action (the joint itself for a free pin, whose line
     passes through it); the line of action is drawn ``reach`` data units either
@@ -88,6 +90,8 @@ class ReactionGlyph:
         self.text = ax.annotate(label, (0.0, 0.0), xytext=(6, 6), textcoords="offset points", fontsize=LABEL_PT,
                                 color=color, zorder=12, annotation_clip=False)
         self.foot = np.zeros(2)
+        self.point = np.zeros(2)
+        self.wrench = np.zeros(3)
         self.visible = True
 
     def update(self, point, wrench, scale: float) -> None:
@@ -103,6 +107,8 @@ class ReactionGlyph:
             Arrow length per newton (data units).
         """
         p = np.asarray(point, dtype=float)
+        self.wrench = np.array(wrench, dtype=float)
+        self.point = p
         fx, fy, tz = (float(x) for x in wrench)
         F = math.hypot(fx, fy)
         if F == 0.0:
@@ -190,6 +196,29 @@ def place_labels(ax, items, obstacles=(), fontsize: float = LABEL_PT) -> None:
         text.set_horizontalalignment(ha)
         text.set_verticalalignment(va)
         taken.append(bb)
+
+
+def wrap_message(text: str, width: int = 38) -> str:
+    """``text`` broken into lines of at most ``width`` characters, so that a figure message stays in the axes.
+
+    Parameters
+    ----------
+    text : str
+    width : int
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> print(wrap_message("singular configuration: the rod lies along the horizontal"))
+    singular configuration: the rod lies
+    along the horizontal
+    """
+    import textwrap
+
+    return "\n".join(textwrap.wrap(text, width)) or text
 
 
 def _pin_box(ax, xy, r_px: float = 6.0):
@@ -524,11 +553,13 @@ class SliderCrankExplorer(Explorer):
         """
         text = str(exc)
         if "rod too short" in text:
-            return "rod too short: it cannot reach the slider at this crank angle"
-        if "cannot reach height" in text:
-            return "the piston cannot reach that height"
-        if "piston pin on the crank pivot" in text:
-            return "singular configuration: folded dead centre, the piston pin is on the crank pivot"
-        if "singular" in text:
-            return "singular configuration: the rod lies along the horizontal"
-        return super().figure_message(exc)
+            short = "rod too short: it cannot reach the slider at this crank angle"
+        elif "cannot reach height" in text:
+            short = "the piston cannot reach that height"
+        elif "piston pin on the crank pivot" in text:
+            short = "singular configuration: folded dead centre, the piston pin is on the crank pivot"
+        elif "singular" in text:
+            short = "singular configuration: the rod lies along the horizontal"
+        else:
+            short = super().figure_message(exc)
+        return wrap_message(short)
