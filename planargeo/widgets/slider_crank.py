@@ -88,7 +88,7 @@ class ReactionGlyph:
         ax.add_line(self.link)
         ax.add_patch(self.arrow)
         self.text = ax.annotate(label, (0.0, 0.0), xytext=(6, 6), textcoords="offset points", fontsize=LABEL_PT,
-                                color=color, zorder=12, annotation_clip=False)
+                                color=color, zorder=12, annotation_clip=True)
         self.foot = np.zeros(2)
         self.point = np.zeros(2)
         self.wrench = np.zeros(3)
@@ -146,8 +146,9 @@ def place_labels(ax, items, obstacles=(), fontsize: float = LABEL_PT) -> None:
     ``items`` are ``(text, anchor)`` pairs: a matplotlib ``Annotation`` (offset in
     points from its ``xy``) and the data point it labels.  Candidate places are
     tried around the anchor (8 directions, 7 then 16 then 28 points away); the
-    first free one wins, else the least crowded.  Text boxes are estimated
-    from the font size (no drawing needed).
+    first free one wins, else the least crowded (slid into the axes if need be).
+    Text boxes are estimated from the font size (no drawing needed).  A label
+    whose point is out of view is skipped (its annotation is clipped).
 
     Parameters
     ----------
@@ -168,6 +169,8 @@ def place_labels(ax, items, obstacles=(), fontsize: float = LABEL_PT) -> None:
         if not text.get_visible() or not text.get_text():
             continue
         a = ax.transData.transform(np.asarray(anchor, dtype=float))
+        if not (box.x0 <= a[0] <= box.x1 and box.y0 <= a[1] <= box.y1):
+            continue                          # an annotation whose point is out of view is not drawn
         n = len(text.get_text())
         w, h = (0.62 * n * fontsize + 3) * ppt, 1.25 * fontsize * ppt
         best, best_bad = None, math.inf
@@ -192,6 +195,12 @@ def place_labels(ax, items, obstacles=(), fontsize: float = LABEL_PT) -> None:
             if best_bad == 0:
                 break
         off, ha, va, bb = best
+        # still out of the axes (a crowded edge): slide it in
+        dx = max(0.0, box.x0 + 2 - bb[0]) - max(0.0, bb[2] - (box.x1 - 2))
+        dy = max(0.0, box.y0 + 2 - bb[1]) - max(0.0, bb[3] - (box.y1 - 2))
+        if dx or dy:
+            off = off + np.array([dx, dy]) / ppt
+            bb = (bb[0] + dx, bb[1] + dy, bb[2] + dx, bb[3] + dy)
         text.set_position((float(off[0]), float(off[1])))
         text.set_horizontalalignment(ha)
         text.set_verticalalignment(va)
@@ -329,7 +338,7 @@ class SliderCrankExplorer(Explorer):
                                 label="piston 3")
         ax.add_patch(self.piston)
         kw = dict(fontsize=LABEL_PT, color="#303030", zorder=12, textcoords="offset points", xytext=(6, 6),
-                  annotation_clip=False)
+                  annotation_clip=True)
         self.body_labels = [ax.annotate(s, (0.0, 0.0), **kw) for s in ("1", "2", "3")]
         self.joint_labels = [ax.annotate(s, (0.0, 0.0), **kw) for s in ("ψ", "θ", "φ")]
         self.glyphs = {s: ReactionGlyph(ax, _symbol(s)) for s in ("f_1", "f_2", "f_3", "F_1")}

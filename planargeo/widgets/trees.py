@@ -31,7 +31,7 @@ from planargeo import scenes
 from planargeo.draw.artists import PointArtist
 from planargeo.draw.mechanism import draw_ground
 from planargeo.draw.style import COLORS
-from planargeo.errors import InputError
+from planargeo.errors import InputError, SceneError
 from planargeo.scenes.trees import FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_solve
 from planargeo.simulate.integrate import energy
 from planargeo.widgets.base import Explorer, Handle, Step, cached
@@ -43,6 +43,8 @@ N = 9
 #: controls that set the state at t = 0 (a change starts the time again)
 INITIAL = ("speed", "loops", "gravity", "mass", "body 1 angle (deg)", "body 2 angle (deg)")
 _FADED = 0.25
+#: largest turn (rad) of a joint the loop closure may make in one drag step (more: another assembly branch)
+MAX_JUMP = 1.0
 
 
 class TreeExplorer(Explorer):
@@ -132,7 +134,7 @@ class TreeExplorer(Explorer):
             ax.add_line(a)
         draw_ground((0.0, 0.0), ax, width=0.9, zorder=1)
         kw = dict(fontsize=LABEL_PT, color="#404040", zorder=12, textcoords="offset points", xytext=(4, 4),
-                  annotation_clip=False)
+                  annotation_clip=True)
         self.labels = [ax.annotate(str(i + 1), (0.0, 0.0), **kw) for i in range(N)]
         self.glyphs = {}
         for i in range(N):
@@ -197,19 +199,29 @@ class TreeExplorer(Explorer):
                 return tuple(self.state["tips"][i])
             return where
 
+        def near(deg, ref):
+            """``deg`` turned by whole turns to lie nearest ``ref`` (both in degrees)."""
+            return deg + 360.0 * round((ref - deg) / 360.0)
+
+        def current():
+            """Absolute angles (°) of bodies 1 and 2 as shown (Play moves them away from the controls)."""
+            th = np.degrees(self.state["sol"].data.pose[:2, 2])
+            return float(th[0]), float(th[1])
+
         def drag1(x, y):
             if math.hypot(x, y) < 1e-9:
                 raise InputError("the tip of body 1 cannot be dragged onto its pivot: no angle there")
-            return {"body 1 angle (deg)": math.degrees(math.atan2(y, x))}
+            a1, a2 = current()
+            new = near(math.degrees(math.atan2(y, x)), a1)
+            return {"body 1 angle (deg)": (new + 180.0) % 360.0 - 180.0, "body 2 angle (deg)": a2}
 
         def drag2(x, y):
             base = self.state["tips"][0]
             if math.hypot(x - base[0], y - base[1]) < 1e-9:
                 raise InputError("the tip of body 2 cannot be dragged onto its joint: no angle there")
-            a = math.degrees(math.atan2(y - base[1], x - base[0]))
-            a1 = float(self.values["body 1 angle (deg)"])
-            a += 360.0 * round((a1 + 45.0 - a) / 360.0)          # the turn nearest the Fig 9.1 pose
-            return {"body 2 angle (deg)": a}
+            a1, a2 = current()
+            new = near(math.degrees(math.atan2(y - base[1], x - base[0])), a2)
+            return {"body 1 angle (deg)": (a1 + 180.0) % 360.0 - 180.0, "body 2 angle (deg)": new}
 
         return [Handle("tip of body 1", tip(0), drag1), Handle("tip of body 2", tip(1), drag2)]
 
@@ -292,6 +304,12 @@ class TreeExplorer(Explorer):
             start = (self.state["q"] if self.state is not None and dragged and self.state["closed"] == closed
                      else None)
             q0, qd0 = tree_pose(model, math.radians(key[4]), key[3], q_start=start, angle2=math.radians(key[5]))
+            if start is not None:
+                jump = np.abs(np.remainder(q0[2:] - start[2:] + np.pi, 2 * np.pi) - np.pi)
+                if jump.max() > MAX_JUMP:
+                    k = int(np.argmax(jump)) + 3
+                    raise SceneError(f"the loops would jump to another assembly: joint {k} would turn by "
+                                     f"{np.degrees(jump.max()):.0f}° in one step (drag in smaller steps)")
             traj = {0.0: (q0, qd0, None)}
             E0 = float(sum(energy(model, q0, qd0)))
             self._traj, self._traj_key, self._E0, self._events = traj, key, E0, []
