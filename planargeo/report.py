@@ -332,6 +332,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def parse_value(text: str) -> Any:
     """Read a command-line value as int, float, bool, None, JSON list or string.
 
+    Parameters
+    ----------
+    text : str
+        The value as typed.
+
+    Returns
+    -------
+    int, float, bool, None, list or str
+
     Examples
     --------
     >>> parse_value("-4"), parse_value("1e-3"), parse_value("[1, 2.5]"), parse_value("FALSE")
@@ -362,8 +371,22 @@ def parse_value(text: str) -> Any:
 def parse_sets(sets: list[str], defaults: dict[str, Any] | None = None) -> dict[str, Any]:
     """``["a=1", "b=x"]`` -> ``{"a": 1, "b": "x"}``; ints become floats where the default is a float.
 
-    Raises :class:`~planargeo.errors.InputError` for an item without ``=`` or
-    with an empty name (``planargeo report`` exits with status 2 on it).
+    Parameters
+    ----------
+    sets : list of str
+        The ``--set`` items.
+    defaults : dict, optional
+        The scene's parameters with their defaults.
+
+    Returns
+    -------
+    dict
+
+    Raises
+    ------
+    InputError
+        For an item without ``=`` or with an empty name (``planargeo report`` exits
+        with status 2 on it).
 
     Examples
     --------

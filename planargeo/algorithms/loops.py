@@ -49,6 +49,18 @@ SINGULAR_COND = 1e10
 def branch_matrix(G, parents) -> np.ndarray:
     """Branch matrix ``Υ = G Δ^{-1}`` (thesis 9.50, 9.51).
 
+    Parameters
+    ----------
+    G : array_like (m, N)
+        Contact matrix (9.49): ``+1`` on body ``a``, ``-1`` on body ``b`` of each contact.
+    parents : sequence of int (N,)
+        Parent of each body (-1: the ground).
+
+    Returns
+    -------
+    ndarray (m, N)
+        ``Υ``: the two branches of each loop from their common ancestor, ``+1`` and ``-1``.
+
     Examples
     --------
     >>> G = np.zeros((2, 9)); G[0, 3], G[0, 6], G[1, 7], G[1, 8] = 1, -1, 1, -1     # 9.49
@@ -492,6 +504,22 @@ def loop_condition(model: Model, q, contacts=None, *, prescribed=None) -> float:
     when it is the open tree's ``sᵀAs`` that is singular.  Used to watch a
     closed-loop simulation for dead centres (:func:`planargeo.simulate.loops.simulate_loops`).
 
+    Parameters
+    ----------
+    model : Model
+        The spanning tree.
+    q : array_like (nq,)
+        Joint coordinates.
+    contacts : sequence of Contact, optional
+        Default ``model.contacts``.
+    prescribed : dict, optional
+        Driven joints, as in :func:`loop_solve`.
+
+    Returns
+    -------
+    float
+        The condition number (``inf`` when exactly singular).
+
     Examples
     --------
     The folded slider-crank (``l = r``) at ``ψ = 0`` is singular; the thesis's is not:
@@ -514,6 +542,20 @@ def forward_dynamics_loops(model: Model, q, qd, tau, f_ext=None, contacts=None, 
 
     Same signature as the tree algorithms plus ``contacts`` (default
     ``model.contacts``); batches over leading dimensions of ``q``.
+
+    Parameters
+    ----------
+    model : Model
+    q, qd, tau : array_like (..., nq)
+    f_ext : array_like (..., N, 3), optional
+    contacts : sequence of Contact, optional
+    prescribed : dict, optional
+        Driven joints (:func:`loop_solve`).
+
+    Returns
+    -------
+    ndarray (..., nq)
+        Joint accelerations ``q̈`` (9.75).
 
     Examples
     --------
@@ -554,11 +596,31 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
     ``s (s^T s)^{-1} τ`` on body and parent.  Only the poses and velocities of
     :func:`planargeo.mechanics.kinematics.kinematics` are shared with the stacked code.
 
+    Parameters
+    ----------
+    model : Model
+    q, qd, tau : array_like (nq,)
+        One state.
+    f_ext : array_like (N, 3), optional
+    contacts : sequence of Contact, optional
+    prescribed : dict, optional
+        Driven revolute joints ``{joint: qdd}``.
+
     Returns
     -------
-    dict with ``a`` (N, 3) spatial accelerations at the origin, ``qdd`` (nq,)
-    (least squares from ``Δ a - κ = S q̈``), ``F`` (m, 3) contact forces in
-    the thesis's sign (``-F`` acts on body ``a``), ``tau_drive`` (nq,).
+    dict
+        ``a`` (N, 3) spatial accelerations at the origin, ``qdd`` (nq,)
+        (least squares from ``Δ a - κ = S q̈``), ``F`` (m, 3) contact forces in
+        the thesis's sign (``-F`` acts on body ``a``), ``tau_drive`` (nq,),
+        ``lambda`` and ``Phi`` (the multipliers and the constraint Jacobian, tree
+        joints first: ``n_tree_constraints`` rows).
+
+    Raises
+    ------
+    ShapeError
+        For a batch of states.
+    InputError
+        For a prescribed joint that is not revolute.
 
     Examples
     --------

@@ -58,7 +58,22 @@ DEAD_CENTRE_TOL = 0.02
 
 
 def slider_crank_model(m1=0.40, m2=0.15, m3=0.30, r=2.29, l=5.00, t=0.5, g=9.81):
-    """The slider-crank :class:`~planargeo.mechanics.model.Model` (tree + one slider contact) of thesis 9.6."""
+    """The slider-crank :class:`~planargeo.mechanics.model.Model` (tree + one slider contact) of thesis 9.6.
+
+    Parameters
+    ----------
+    m1, m2, m3 : float
+        Masses of crank, rod and piston (kg).
+    r, l, t : float
+        Crank, rod and piston lengths (m).
+    g : float
+        Gravity along -y (m/s²).
+
+    Returns
+    -------
+    Model
+        Three bodies on revolute joints ``ψ``, ``θ``, ``φ`` and the piston's slider contact.
+    """
     from planargeo.mechanics.contacts import Contact
     from planargeo.mechanics.model import Body, Joint, Model
 
@@ -80,6 +95,17 @@ def slider_crank_model(m1=0.40, m2=0.15, m3=0.30, r=2.29, l=5.00, t=0.5, g=9.81)
 
 def slider_crank_state(psi=0.4, psidot=20.0, r=2.29, l=5.00):
     """Joint coordinates and rates closing the loop (assembly branch ``sin(ψ+θ) ≥ 0``).
+
+    Parameters
+    ----------
+    psi, psidot : float
+        Crank angle (rad) and speed (rad/s).
+    r, l : float
+        Crank and rod lengths (m).
+
+    Returns
+    -------
+    q, qd : ndarray (3,)
 
     Raises
     ------
@@ -198,6 +224,11 @@ def slider_crank(psi: float = 0.4, psidot: float = 20.0, m1: float = 0.40, m2: f
     drive : {"free", "constant-speed"}
         ``"free"``: no crank torque; ``"constant-speed"``: the crank is driven at
         constant speed (``ψ̈ = 0``), the torque needed is ``tau_drive``.
+
+    Returns
+    -------
+    SceneResult
+        ``quantities`` as listed in the module docstring (every pin and bearing force included).
     """
     psi, psidot = check_param("psi", psi), check_param("psidot", psidot)
     drive = check_param("drive", drive, "choice", choices=("free", "constant-speed"))

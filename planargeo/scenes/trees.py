@@ -45,7 +45,21 @@ _QD_PATTERN = np.array([1.0, -0.5, 0.3, 0.2, -0.4, 0.6, -0.3, 0.5, 0.1])
 
 
 def tree_model(mass=1.0, length=1.0, g=9.81, contacts=()):
-    """The nine-link tree of Fig 9.1 (optionally with contacts)."""
+    """The nine-link tree of Fig 9.1 (optionally with contacts).
+
+    Parameters
+    ----------
+    mass, length : float
+        Mass (kg) and length (m) of each uniform link.
+    g : float
+        Gravity along -y (m/s²).
+    contacts : sequence of Contact
+        Contacts closing loops (Fig 9.2's pins).
+
+    Returns
+    -------
+    Model
+    """
     from planargeo.mechanics.model import Body, Joint, Model
 
     mass, length = check_param("mass", mass, positive=True), check_param("length", length, positive=True)
@@ -61,6 +75,16 @@ def tree_solve(model, q, qd, tau=None):
     """One solve of the tree: stacked (9.39-9.43) when open, the constrained algorithm (9.5) with contacts.
 
     The trees explorer's step (on its cached model); ``tau`` defaults to zero.
+
+    Parameters
+    ----------
+    model : Model
+    q, qd : array_like (9,)
+    tau : array_like (9,), optional
+
+    Returns
+    -------
+    LoopSolution or StackedSolution
 
     Examples
     --------
@@ -78,6 +102,15 @@ def tree_solve(model, q, qd, tau=None):
 
 def tree_dof(model, q) -> int:
     """Degrees of freedom ``nq − rank J_c`` with the closure Jacobian ``J_c`` of the contacts (9.54, 9.60).
+
+    Parameters
+    ----------
+    model : Model
+    q : array_like (9,)
+
+    Returns
+    -------
+    int
 
     Examples
     --------
@@ -100,7 +133,19 @@ def _tolist(x):
 
 @register("tree")
 def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float = 1.0) -> SceneResult:
-    """The open tree of Fig 9.1 in the default pose, joint speeds ``speed × pattern``, no torques."""
+    """The open tree of Fig 9.1 in the default pose, joint speeds ``speed × pattern``, no torques.
+
+    Parameters
+    ----------
+    mass, length, g : float
+        Link mass (kg), link length (m), gravity (m/s²).
+    speed : float
+        Scale of the joint-speed pattern.
+
+    Returns
+    -------
+    SceneResult
+    """
     from planargeo.algorithms.stacked import adjacency, direct_accelerations, stacked_solve, trunk
 
     speed = check_param("speed", speed)
@@ -128,6 +173,18 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
 
     The joint speeds are ``speed × pattern`` projected onto the velocities the
     loops allow (least-squares correction).
+
+    Parameters
+    ----------
+    mass, length, g : float
+        Link mass (kg), link length (m), gravity (m/s²).
+    speed : float
+        Scale of the joint-speed pattern.
+
+    Returns
+    -------
+    SceneResult
+        With every pin force of the closed tree (``f``, ``mu``, 9.61) and the contact forces ``F``.
     """
     from planargeo.algorithms.loops import loop_solve
     from planargeo.algorithms.stacked import blocks
