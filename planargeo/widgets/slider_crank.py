@@ -35,9 +35,9 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import FancyArrowPatch, Rectangle
 
 from planargeo import scenes
-from planargeo.draw.artists import PointArtist
+from planargeo.draw.artists import PointArtist, point_xy
 from planargeo.draw.mechanism import draw_ground
-from planargeo.draw.style import COLORS
+from planargeo.draw.style import COLORS, OKABE_ITO
 from planargeo.errors import InputError, SceneError
 from planargeo.scenes.slider_crank import (DEAD_CENTRE_TOL, dead_centre_at, slider_crank_advance,
                                            slider_crank_model, slider_crank_solve)
@@ -48,6 +48,8 @@ __all__ = ["SliderCrankExplorer"]
 
 #: Font size (points) of the labels drawn on the figure (12.5 px at the explorers' 100 dpi).
 LABEL_PT = 9.0
+#: Colour of contact (loop-closing) forces, apart from the joints' reaction green (Okabe-Ito purple).
+CONTACT_COLOR = OKABE_ITO["purple"]
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
@@ -143,35 +145,47 @@ class ReactionGlyph:
 def place_labels(ax, items, obstacles=(), fontsize: float = LABEL_PT) -> None:
     """Put each label next to its anchor where it overlaps no other label or obstacle and stays in the axes.
 
-    ``items`` are ``(text, anchor)`` pairs: a matplotlib ``Annotation`` (offset in
-    points from its ``xy``) and the data point it labels.  Candidate places are
-    tried around the anchor (8 directions, 7 then 16 then 28 points away); the
-    first free one wins, else the least crowded (slid into the axes if need be).
-    Text boxes are estimated from the font size (no drawing needed).  A label
-    whose point is out of view is skipped (its annotation is clipped).
+    ``items`` are ``(label, anchor)`` or ``(label, anchor, text)``: a matplotlib
+    ``Annotation`` (offset in points from its ``xy``) or a
+    :class:`~planargeo.draw.artists.PointArtist` (its label's offset and alignment;
+    give its ``text``), and the data point it labels.  Candidate places are tried
+    around the anchor (8 directions, 7 then 16 then 28 points away); the first
+    free one wins, else the least crowded (slid into the axes if need be).  Text
+    boxes are estimated from the font size (no drawing needed).  A label whose
+    point is out of view is skipped (an annotation is clipped; a point artist's
+    label is emptied until its point is back in view).
 
     Parameters
     ----------
     ax : matplotlib.axes.Axes
-    items : sequence of (Annotation, (x, y))
+    items : sequence of tuples
         Labels in order of priority.
     obstacles : sequence of (x0, y0, x1, y1)
         Display-coordinate boxes to keep clear (pins, other texts).
     fontsize : float
-        Font size (points) of the labels.
+        Font size (points) used to estimate the label boxes.
     """
     fig = ax.figure
     ppt = fig.dpi / 72.0
     box = ax.bbox
     taken = [tuple(o) for o in obstacles]
     dirs = [(1, 1), (-1, 1), (1, -1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1)]
-    for text, anchor in items:
-        if not text.get_visible() or not text.get_text():
+    for item in items:
+        obj, anchor = item[0], item[1]
+        annotation = hasattr(obj, "xyann")
+        label = obj.get_text() if annotation else (item[2] if len(item) > 2 else "")
+        if not annotation and anchor is None:
+            obj.set_text(label)               # an ideal point: the artist labels its direction at the edge
+            continue
+        if not obj.get_visible() or not label or anchor is None:
             continue
         a = ax.transData.transform(np.asarray(anchor, dtype=float))
-        if not (box.x0 <= a[0] <= box.x1 and box.y0 <= a[1] <= box.y1):
-            continue                          # an annotation whose point is out of view is not drawn
-        n = len(text.get_text())
+        inside = bool(np.all(np.isfinite(a))) and box.x0 <= a[0] <= box.x1 and box.y0 <= a[1] <= box.y1
+        if not annotation:
+            obj.set_text(label if inside else "")
+        if not inside:
+            continue                          # out of view: not labelled here
+        n = len(label)
         w, h = (0.62 * n * fontsize + 3) * ppt, 1.25 * fontsize * ppt
         best, best_bad = None, math.inf
         for dist in (7.0, 16.0, 28.0):
@@ -201,9 +215,13 @@ def place_labels(ax, items, obstacles=(), fontsize: float = LABEL_PT) -> None:
         if dx or dy:
             off = off + np.array([dx, dy]) / ppt
             bb = (bb[0] + dx, bb[1] + dy, bb[2] + dx, bb[3] + dy)
-        text.set_position((float(off[0]), float(off[1])))
-        text.set_horizontalalignment(ha)
-        text.set_verticalalignment(va)
+        if annotation:
+            obj.set_position((float(off[0]), float(off[1])))
+            obj.set_horizontalalignment(ha)
+            obj.set_verticalalignment(va)
+        else:
+            obj.set_text_offset((float(off[0]), float(off[1])))
+            obj.set_text_alignment(ha, va)
         taken.append(bb)
 
 
@@ -341,15 +359,14 @@ class SliderCrankExplorer(Explorer):
                   annotation_clip=True)
         self.body_labels = [ax.annotate(s, (0.0, 0.0), **kw) for s in ("1", "2", "3")]
         self.joint_labels = [ax.annotate(s, (0.0, 0.0), **kw) for s in ("ψ", "θ", "φ")]
-        self.glyphs = {s: ReactionGlyph(ax, _symbol(s)) for s in ("f_1", "f_2", "f_3", "F_1")}
+        self.glyphs = {s: ReactionGlyph(ax, _symbol(s)) for s in ("f_1", "f_2", "f_3")}
+        self.glyphs["F_1"] = ReactionGlyph(ax, "F₃", color=CONTACT_COLOR)
         self.glyphs["F_1"].text.set_text("F₃")          # the thesis calls the slider's force F₃ (9.84)
         z = np.array([0.0, 0.0, 1.0])
         self.v_art = [ax.add_artist(PointArtist(z, role="twist", glyph_scale=0.5, text=f"v{i + 1}"))
                       for i in range(3)]
         self.a_art = [ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.05, text=f"a{i + 1}"))
                       for i in range(3)]
-        for a in self.v_art + self.a_art:
-            a._text.set_fontsize(LABEL_PT)
         self.banner = ax.text(0.98, 0.98, "", transform=ax.transAxes, ha="right", va="top", fontsize=LABEL_PT + 1,
                               color="#7a3d00", zorder=20, fontweight="bold")
 
@@ -502,7 +519,7 @@ class SliderCrankExplorer(Explorer):
         vals = self.values
         reactions = {x.symbol: x for x in sol.reactions}
         fmax = max(x.force for x in reactions.values())
-        scale = 1.6 / fmax if fmax > 0 else 0.0
+        scale = 2.4 / fmax if fmax > 0 else 0.0          # the largest force: a 2.4 m arrow
         show_f = bool(vals["reaction forces"])
         for sym, g in self.glyphs.items():
             x = reactions[sym]
@@ -523,6 +540,9 @@ class SliderCrankExplorer(Explorer):
         obstacles = [_pin_box(ax, p) for p in (np.zeros(2), pin, wrist)]
         items = [(g.text, g.foot) for g in self.glyphs.values()]
         items += [(lab, lab.xy) for lab in self.joint_labels] + [(lab, lab.xy) for lab in self.body_labels]
+        for name, arts, pts in (("v", self.v_art, vel), ("a", self.a_art, acc)):
+            for i, art in enumerate(arts):
+                items.append((art, point_xy(pts[i]), f"{name}{i + 1}"))
         place_labels(ax, items, obstacles)
         run = st["run"]
         recent = run["passed_at"] is not None and run["t"] - run["passed_at"] < 0.02

@@ -28,14 +28,14 @@ import numpy as np
 from matplotlib.lines import Line2D
 
 from planargeo import scenes
-from planargeo.draw.artists import PointArtist
+from planargeo.draw.artists import PointArtist, point_xy
 from planargeo.draw.mechanism import draw_ground
 from planargeo.draw.style import COLORS
 from planargeo.errors import InputError, SceneError
 from planargeo.scenes.trees import FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_solve
 from planargeo.simulate.integrate import energy
 from planargeo.widgets.base import Explorer, Handle, Step, cached
-from planargeo.widgets.slider_crank import LABEL_PT, ReactionGlyph, _pin_box, _symbol, place_labels
+from planargeo.widgets.slider_crank import CONTACT_COLOR, LABEL_PT, ReactionGlyph, _pin_box, _symbol, place_labels
 
 __all__ = ["TreeExplorer"]
 
@@ -140,10 +140,12 @@ class TreeExplorer(Explorer):
         for i in range(N):
             self.glyphs[f"f_{i + 1}"] = ReactionGlyph(ax, _symbol(f"f_{i + 1}"), reach=0.45)
         for k in range(2):
-            self.glyphs[f"F_{k + 1}"] = ReactionGlyph(ax, _symbol(f"F_{k + 1}"), color=COLORS["accel"], reach=0.45)
+            self.glyphs[f"F_{k + 1}"] = ReactionGlyph(ax, _symbol(f"F_{k + 1}"), color=CONTACT_COLOR, reach=0.45)
         z = np.array([0.0, 0.0, 1.0])
-        self.v_art = [ax.add_artist(PointArtist(z, role="twist", glyph_scale=3.0)) for _ in range(N)]
-        self.a_art = [ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.3)) for _ in range(N)]
+        self.v_art = [ax.add_artist(PointArtist(z, role="twist", glyph_scale=3.0, text=f"v{i + 1}"))
+                      for i in range(N)]
+        self.a_art = [ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.3, text=f"a{i + 1}"))
+                      for i in range(N)]
 
     def geometry(self, closed: bool):
         """Contacts, link length and degrees of freedom ``nq − rank J_c`` (9.54, 9.60) of a loop setting (cached).
@@ -397,6 +399,9 @@ class TreeExplorer(Explorer):
         obstacles = [_pin_box(ax, p, 4.0) for p in pose[:, :2]]
         items = [(g.text, g.foot) for g in self.glyphs.values() if g.visible]
         items += [(t, t.xy) for t in self.labels]
+        for name, arts, pts in (("v", self.v_art, d.v), ("a", self.a_art, st["a"])):
+            for i, art in enumerate(arts):
+                items.append((art, point_xy(pts[i]), f"{name}{i + 1}"))
         place_labels(ax, items, obstacles)
         E0 = st["E0"]
         out = {"t": st["t"], "speed": vals["speed"], "loops": "closed" if closed else "open",
