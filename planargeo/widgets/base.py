@@ -87,6 +87,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from traitlets import validate
 
+from planargeo.draw.artists import place_labels
 from planargeo.draw.style import EXPLORER_DPI, EXPLORER_MIN_WIDTH_PX, EXPLORER_TICK_PT, setup_axes
 from planargeo.errors import InputError, OutputError, PlanargeoError
 from planargeo.files import atomic_write
@@ -155,6 +156,20 @@ def cached(cache: dict, key, make: Callable[[], Any]) -> Any:
     Explorers keep models or integrated shapes per parameter tuple with this, so
     a slider sweep over many values cannot grow a cache without bound.
 
+    Parameters
+    ----------
+    cache : dict
+        The explorer's cache.
+    key : hashable
+        The parameters the entry depends on.
+    make : callable
+        Builds the entry when it is missing.
+
+    Returns
+    -------
+    Any
+        The cached entry.
+
     Examples
     --------
     >>> store = {}
@@ -197,7 +212,21 @@ class IntSlider(W.IntSlider):
 
 
 class Step:
-    """A slider description: ``Step(lo, hi, step, value, label, integer=False)``."""
+    """A slider description: ``Step(lo, hi, step, value, label, integer=False)``.
+
+    Parameters
+    ----------
+    lo, hi : float
+        Range of the slider.
+    step : float
+        Slider step (made finer by :meth:`make` when ``value`` is not on its grid).
+    value : float
+        Default value.
+    label : str
+        Description shown beside the slider.
+    integer : bool
+        An integer slider.
+    """
 
     def __init__(self, lo: float, hi: float, step: float, value: float, label: str = "",
                  integer: bool = False):
@@ -232,6 +261,25 @@ def check_control(name: str, widget, value):
     A slider takes a finite real number in its range (an integer slider an
     integral one), a list (dropdown, toggle buttons) one of its options, a
     checkbox ``True`` or ``False``, a text box a string.
+
+    Parameters
+    ----------
+    name : str
+        The control's name (for the message).
+    widget : ipywidgets.ValueWidget
+        The control.
+    value : Any
+        The value to check.
+
+    Returns
+    -------
+    Any
+        The value as the control holds it (a float for a float slider, an int for an integer one).
+
+    Raises
+    ------
+    InputError
+        The control does not take the value.
 
     Examples
     --------
@@ -471,6 +519,7 @@ class Explorer:
         # figure ----------------------------------------------------------------
         self.fig, self.ax = self._make_figure(figsize or self.figsize)
         self.setup_axes(self.ax)
+        place_labels(self.ax)  # labels avoid each other and stay inside the axes
         self.make_artists(self.ax)
         self._msg_text = self.ax.text(0.5, 0.5, "", transform=self.ax.transAxes, ha="center",
                                       va="center", fontsize=11, color="#b00020", zorder=100,
@@ -525,6 +574,18 @@ class Explorer:
 
     # ---------------------------------------------------------------- subclass API
     def make_controls(self) -> dict[str, W.ValueWidget]:  # pragma: no cover - abstract
+        """The explorer's controls (subclasses).
+
+        Returns
+        -------
+        dict
+            ``{name: widget}``; each widget's initial value is the default.
+
+        Raises
+        ------
+        NotImplementedError
+            In the base class.
+        """
         raise NotImplementedError
 
     #: the initial view ``(x0, x1, y0, y1)`` of the equal-aspect axes (None: autoscale), and a light grid
@@ -532,17 +593,74 @@ class Explorer:
     grid: bool = True
 
     def setup_axes(self, ax) -> None:
+        """Equal-aspect axes with :attr:`limits` and a light grid (subclasses may change).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+            The explorer's axes.
+        """
         setup_axes(ax, self.limits, axis_off=False)
         if self.grid:
             ax.grid(True, lw=0.3, alpha=0.5)
 
     def make_artists(self, ax) -> None:  # pragma: no cover - abstract
+        """Create every artist once and keep it on ``self`` (subclasses).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+            The explorer's axes.
+
+        Raises
+        ------
+        NotImplementedError
+            In the base class.
+        """
         raise NotImplementedError
 
     def compute(self, values: dict[str, Any], changed: set[str]) -> Any:  # pragma: no cover
+        """The scene's numbers for the control ``values`` (subclasses).
+
+        Parameters
+        ----------
+        values : dict
+            Every control's value.
+        changed : set of str
+            The controls that changed since the shown state (all of them at first).
+
+        Returns
+        -------
+        Any
+            The state :meth:`render` draws.
+
+        Raises
+        ------
+        PlanargeoError
+            The values describe a state that cannot be shown (the update is refused).
+        NotImplementedError
+            In the base class.
+        """
         raise NotImplementedError
 
     def render(self, state: Any) -> dict[str, Any]:  # pragma: no cover - abstract
+        """Update the artists in place for ``state`` and return the readout (subclasses).
+
+        Parameters
+        ----------
+        state : Any
+            What :meth:`compute` returned.
+
+        Returns
+        -------
+        dict
+            Readout entries ``{name: value}`` (names starting with ``_`` are not shown).
+
+        Raises
+        ------
+        NotImplementedError
+            In the base class.
+        """
         raise NotImplementedError
 
     def adjust(self, values: dict[str, Any], changed: set[str]) -> dict[str, Any]:
@@ -550,11 +668,29 @@ class Explorer:
 
         They are set with the change and refused with it; e.g. the screw-sum
         explorer turns rotations into forces when it switches to wrenches.
+
+        Parameters
+        ----------
+        values : dict
+            Every control's value.
+        changed : set of str
+            The controls that changed.
+
+        Returns
+        -------
+        dict
+            ``{name: value}`` of the controls that follow.
         """
         return {}
 
     def extra_widgets(self) -> list:
-        """Widgets shown below the controls (e.g. a Play button)."""
+        """Widgets shown below the controls (e.g. a Play button).
+
+        Returns
+        -------
+        list
+            Widgets (default: none).
+        """
         return []
 
     def connect_mouse(self) -> None:
@@ -626,7 +762,13 @@ class Explorer:
 
     @contextlib.contextmanager
     def hold(self):
-        """Change several controls with a single update at the end."""
+        """Change several controls with a single update at the end.
+
+        Yields
+        ------
+        Explorer
+            ``self``.
+        """
         self._hold += 1
         try:
             yield self
@@ -641,6 +783,21 @@ class Explorer:
 
         Every value is checked first (:func:`check_control`): if one is refused,
         none is set and the message names it.
+
+        Parameters
+        ----------
+        **values
+            ``name=value`` for each control to set.
+
+        Returns
+        -------
+        Explorer
+            ``self``.
+
+        Raises
+        ------
+        InputError
+            Never raised out of it: a bad name or value is refused and shown in :attr:`message`.
         """
         problems = []
         for k, v in values.items():
@@ -998,7 +1155,18 @@ class Explorer:
             self.image.value = buf.getvalue()
 
     def guarded(self, callback: Callable) -> Callable:
-        """``callback`` for a button or the mouse: an exception becomes a message, never escapes."""
+        """``callback`` for a button or the mouse: an exception becomes a message, never escapes.
+
+        Parameters
+        ----------
+        callback : callable
+            The function to guard.
+
+        Returns
+        -------
+        callable
+            A function that calls ``callback`` and shows any exception as the message.
+        """
         def run(*args):
             try:
                 return callback(*args)
@@ -1022,7 +1190,13 @@ class Explorer:
         return bundle
 
     def show(self):
-        """Display the explorer (in a notebook) and return it."""
+        """Display the explorer (in a notebook) and return it.
+
+        Returns
+        -------
+        Explorer
+            ``self``.
+        """
         from IPython.display import display
 
         display(self.widget)
@@ -1307,7 +1481,17 @@ class Explorer:
         self._safe_redraw()
 
     def figure_message(self, exc: Exception) -> str:
-        """Short text drawn on the figure when an update is refused."""
+        """Short text drawn on the figure when an update is refused.
+
+        Parameters
+        ----------
+        exc : Exception
+            Why the update was refused.
+
+        Returns
+        -------
+        str
+        """
         return _short(self._reason(exc))
 
     def _safe_redraw(self) -> None:
@@ -1385,7 +1569,22 @@ class Explorer:
 
     # -------------------------------------------------------------- benchmarking
     def time_update(self, name: str, values: list, repeat: int = 1) -> list[float]:
-        """Seconds from setting ``controls[name]`` to the redrawn figure, per value."""
+        """Seconds from setting ``controls[name]`` to the redrawn figure, per value.
+
+        Parameters
+        ----------
+        name : str
+            The control to set.
+        values : list
+            Values to set in turn.
+        repeat : int
+            How many times to go through ``values``.
+
+        Returns
+        -------
+        list of float
+            Seconds per update.
+        """
         out = []
         for _ in range(repeat):
             for v in values:
