@@ -106,7 +106,7 @@ def test_play_free_crank_follows_the_reference_and_keeps_energy(ex):
     t = ex.readout_values["t"]
     assert t == pytest.approx(n * ex.play_dt * ex.time_scale)
     psi, psidot = _reference_psi(0.4, 20.0, t)
-    shown = math.radians(ex.readout_values["crank angle ψ"])
+    shown = math.radians(ex.readout_values["crank angle (deg)"])
     assert math.remainder(shown - psi, 2 * math.pi) == pytest.approx(0.0, abs=1e-6)
     assert ex.values["crank speed"] == pytest.approx(psidot, abs=1e-5)
     assert abs(ex.readout_values["energy drift ΔE/E₀"]) < 1e-7
@@ -146,7 +146,7 @@ def test_play_driven_crank_keeps_its_speed_and_reports_the_drive(ex):
     assert ex.values["crank speed"] == pytest.approx(15.0, abs=1e-9)
     assert ex.readout_values["ψ̈ crank"] == 0.0
     assert "driven" in ex.readout_values["energy drift ΔE/E₀"]
-    readout_matches_hand(ex, math.radians(ex.readout_values["crank angle ψ"]), 15.0, "constant-speed")
+    readout_matches_hand(ex, math.radians(ex.readout_values["crank angle (deg)"]), 15.0, "constant-speed")
 
 
 def test_drag_the_crank_pin(ex):
@@ -187,6 +187,6 @@ def test_a_short_rod_is_refused_and_the_last_state_kept(ex):
     assert "rod too short" in ex.message
     psi = math.radians(ex.values["crank angle (deg)"])
     assert ex.values == ex.shown_values and ref.R * math.cos(psi) <= 1.5
-    assert ex.readout_values["crank angle ψ"] == pytest.approx(ex.values["crank angle (deg)"])
+    assert ex.readout_values["crank angle (deg)"] == pytest.approx(ex.values["crank angle (deg)"])
     np.testing.assert_allclose(ex.crank.get_xydata()[1], ref.R * np.array([math.cos(psi), math.sin(psi)]))
     legible(ex)

@@ -287,7 +287,7 @@ class SliderCrankExplorer(Explorer):
     time_scale = 0.1
     #: relative tolerance of the Play integration (DOP853; energy drift ~1e-8 per crank turn)
     play_rtol = 1e-7
-    units = {"crank angle ψ": "°", "rod angle θ": "°", "piston angle φ": "°", "piston height h": "m",
+    units = {"crank angle (deg)": "°", "rod angle θ": "°", "piston angle φ": "°", "piston height h": "m",
              "piston speed": "m/s", "piston acceleration": "m/s²", "ψ̈ crank": "rad/s²",
              "|f₁| crank pivot": "N", "|f₂| crank pin": "N", "|f₃| wrist pin": "N", "|F₃| slider bearing": "N",
              "bearing couple": "N·m", "drive torque Q₁": "N·m", "energy E": "J", "energy drift ΔE/E₀": "—",
@@ -553,7 +553,7 @@ class SliderCrankExplorer(Explorer):
         driven = st["drive"] == "constant-speed"
         drift = float("nan") if driven else (st["E"] - E0) / abs(E0) if E0 else 0.0
         out = {
-            "crank angle ψ": math.degrees(qq[0]), "rod angle θ": math.degrees(qq[1]),
+            "crank angle (deg)": math.degrees(qq[0]), "rod angle θ": math.degrees(qq[1]),
             "piston angle φ": math.degrees(qq[2]),
             "piston height h": st["h"], "piston speed": vel[2][1], "piston acceleration": acc[2][1],
             "ψ̈ crank": qdd[0],

@@ -76,8 +76,8 @@ class TreeExplorer(Explorer):
     display_controls = ("velocity poles", "acceleration poles", "reaction forces")
     scale = 1.0
     units = {"t": "s", "speed": "rad/s", "degrees of freedom": "—", "condition number": "—",
-             "energy E": "J", "energy drift ΔE/E₀": "—", "closure drift |φ|": "m", "q̈₁ (root)": "rad/s²",
-             "max |q̈|": "rad/s²", "largest pin force": "N", "near-singular": "—", "focus": "—"}
+             "energy E": "J", "energy drift ΔE/E₀": "—", "closure drift |φ|": "m", "qdd[1] (root)": "rad/s²",
+             "max |qdd|": "rad/s²", "largest pin force": "N", "near-singular": "—", "focus": "—"}
 
     def __init__(self, **kw):
         self._geometry: dict = {}   # closed -> (contacts, length, dof)
@@ -410,7 +410,7 @@ class TreeExplorer(Explorer):
                "closure drift |φ|": st["drift"]}
         if closed:
             for k, c in enumerate(model.contacts):
-                out[f"contact {c.name}: |F{k + 1}| (N)"] = reactions[_symbol(f"F_{k + 1}")].force
+                out[f"contact {c.name}: |force| (N)"] = reactions[_symbol(f"F_{k + 1}")].force
             out["condition number"] = st["cond"]
         out["largest pin force"] = max(reactions[_symbol(f"f_{i + 1}")].force for i in range(N))
         if focus in reactions:
@@ -419,8 +419,8 @@ class TreeExplorer(Explorer):
             out[f"|{focus}| (N)"] = x.force
             out[f"{focus} moment about its joint (N·m)"] = x.moment
         qdd = st["qdd"]
-        out["q̈₁ (root)"] = qdd[0]
-        out["max |q̈|"] = float(np.max(np.abs(qdd)))
+        out["qdd[1] (root)"] = qdd[0]
+        out["max |qdd|"] = float(np.max(np.abs(qdd)))
         ev = st["events"]
         out["near-singular"] = f"{ev[-1][1]} at t = {ev[-1][0]:.3f} s" if ev else "—"
         return out
