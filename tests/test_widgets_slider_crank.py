@@ -32,7 +32,12 @@ def gen_mass(psi, l, h=1e-5):
 
 @pytest.fixture
 def ex():
-    return SliderCrankExplorer(display="agg")
+    """The explorer; the state each test leaves it in must be legible (issue #13)."""
+    from planargeo.draw.layout import legibility_problems
+
+    e = SliderCrankExplorer(display="agg")
+    yield e
+    assert legibility_problems(e.fig) == []
 
 
 def test_thesis_state(ex):

@@ -22,7 +22,12 @@ def pin_points(ex):
 
 @pytest.fixture
 def ex():
-    return TreeExplorer(display="agg", speed=0.0)
+    """The explorer; the state each test leaves it in must be legible (issue #13)."""
+    from planargeo.draw.layout import legibility_problems
+
+    e = TreeExplorer(display="agg", speed=0.0)
+    yield e
+    assert legibility_problems(e.fig) == []
 
 
 def test_loops_close_at_rest(ex):

@@ -327,7 +327,7 @@ class SliderCrankExplorer(Explorer):
         return {
             "crank angle (deg)": Step(-180, 180, 1, math.degrees(0.4),
                                       "crank angle ψ (°)").make("crank angle (deg)"),
-            "crank speed": Step(-60, 60, 0.5, 20.0, "crank speed ψ̇ (rad/s)").make("crank speed"),
+            "crank speed": Step(-100, 100, 0.5, 20.0, "crank speed ψ̇ (rad/s)").make("crank speed"),
             "drive": W.ToggleButtons(options=("free", "constant-speed"), value="free", description="crank"),
             "rod length": Step(1.0, 8.0, 0.01, 5.0, "rod length l (m)").make("rod length"),
             "gravity": Step(0.0, 20.0, 0.01, 9.81, "g (m/s²)").make("gravity"),
