@@ -46,6 +46,29 @@ Programmatic use (tests, notebooks)::
         ex.controls["a"].value = 1.0
         ex.controls["b"].value = 2.0
 
+What the base adds to every explorer (issue 13):
+
+* **Readout with units**: :attr:`Explorer.units` names each entry's unit; numbers
+  below ``zero_tol * scale`` (round-off at the scene's size) print as ``0``.
+* **Handles**: :meth:`Explorer.handles` lists :class:`Handle` objects; under
+  ipympl a press within :attr:`Explorer.handle_radius_px` of one drags it, one
+  update per mouse move, with no snapping to the sliders' grid and no echo of
+  the sliders (a browser slider rounds a value to its step and sends it back:
+  that copy is ignored).  :meth:`Explorer.drag` does the same without a mouse.
+* **Play**: an explorer that defines :meth:`Explorer.play_step` gets a Play
+  control with speed and loop; :meth:`Explorer.advance` steps it from Python.
+* **Focus and key**: :meth:`Explorer.focus_options` adds a ``"focus"`` dropdown;
+  every explorer has a ``"key"`` checkbox that shows a legend of the labelled
+  artists.  Both are display controls.
+* **Export**: :meth:`Explorer.export_svg`, :meth:`Explorer.export_png`,
+  :meth:`Explorer.export_animation` (GIF, or MP4 with ffmpeg) write files
+  atomically; the buttons put a download link in the page.
+* **Layout**: controls on the left; on the right a reserved message line, the
+  figure at its native size (at least 560 px wide, shrinking with a narrow output
+  area) and the readout under it, so that nothing moves as values change.
+  Labels of the drawing avoid each other and stay inside the axes
+  (:func:`planargeo.draw.artists.place_labels`).
+
 Examples
 --------
 Two equal and opposite rotations add up to a translation (thesis 4.2); a zero
@@ -512,9 +535,12 @@ class Explorer:
         self._echo: dict[str, list] = {}
         self._shadow: dict[str, tuple[float, float]] = {}
         self._drag_active: Handle | None = None
+        self._drag_pending: tuple[float, float] | None = None
+        self._last_drag = (0.0, 0.0)
         self._extra_handles: list[Handle] = []
         self._exporting = False
         self._play_origin: dict[str, Any] | None = None
+        self._last_tick = (0.0, 0.0)
 
         # figure ----------------------------------------------------------------
         self.fig, self.ax = self._make_figure(figsize or self.figsize)
@@ -531,10 +557,12 @@ class Explorer:
         self._legend = None
 
         # widgets ---------------------------------------------------------------
-        self.readout = W.HTML(layout=W.Layout(width="300px", overflow="hidden"))
+        fig_w = f"{self.figure_px[0]}px"
+        self.readout = W.HTML(layout=W.Layout(width=fig_w, max_width="100%", overflow="hidden"))
         self.readout_strings: dict[str, str] = {}
-        self.message_box = W.HTML(layout=W.Layout(width="300px", height="4.2em", min_height="4.2em",
-                                                  max_height="4.2em", overflow="auto"))
+        self.message_box = W.HTML(layout=W.Layout(width=fig_w, max_width="100%", height="2.8em",
+                                                  min_height="2.8em", max_height="2.8em",
+                                                  overflow="auto"))
         self.reset_button = W.Button(description="Reset", icon="undo",
                                      tooltip="Return every control to its default",
                                      layout=W.Layout(width="auto"))
@@ -547,7 +575,7 @@ class Explorer:
         self.export_gif_button = W.Button(description="GIF", icon="film",
                                           tooltip="Export an animation as GIF (a download link)",
                                           layout=W.Layout(width="auto"))
-        self.export_label = W.HTML(layout=W.Layout(width="310px", min_height="1.6em"))
+        self.export_label = W.HTML(layout=W.Layout(width="310px", height="1.8em", overflow="hidden"))
         self.reset_button.on_click(self.guarded(lambda _b: self.reset()))
         self.export_button.on_click(self.guarded(lambda _b: self._export_clicked("svg")))
         self.export_png_button.on_click(self.guarded(lambda _b: self._export_clicked("png")))
@@ -959,7 +987,17 @@ class Explorer:
     def _play_tick(self, change) -> None:
         if not self.play_control.playing:
             return
-        if self._frame():
+        # a frame slower than the Play interval makes ticks queue up in the kernel: drop the ones
+        # that arrive right after such a frame, so that Play stays in time and stops when asked
+        interval = self.play_control.interval / 1000.0
+        now = time.monotonic()
+        last_end, last_cost = self._last_tick
+        if last_cost > interval and now - last_end < max(0.5 * interval, 0.01):
+            return
+        t0 = time.monotonic()
+        ok = self._frame()
+        self._last_tick = (time.monotonic(), time.monotonic() - t0)
+        if ok:
             return
         if self.play_loop is not None and self.play_loop.value and self._play_origin and \
                 not self._message:
@@ -1253,10 +1291,13 @@ class Explorer:
         controls = W.VBox(list(self.controls.values()) + play + self.extra_widgets()
                           + [buttons, self.export_label],
                           layout=W.Layout(width="330px", min_width="330px", overflow="visible"))
-        right = W.VBox([self.message_box, W.HTML("<b>Readout</b>"), self.readout],
-                       layout=W.Layout(width="310px", min_width="310px"))
+        # controls on the left; on the right a reserved message line, the figure and the readout
+        # under it: fixed widths and heights above the readout, so nothing moves when a message
+        # appears or the readout changes (the readout only grows downwards, with nothing below)
+        right = W.VBox([self.message_box, fig_widget, self.readout],
+                       layout=W.Layout(align_items="flex-start", overflow="visible"))
         head = W.HTML(f"<h4 style='margin:2px'>{html.escape(self.title)}</h4>")
-        body = W.HBox([controls, fig_widget, right],
+        body = W.HBox([controls, right],
                       layout=W.Layout(flex_flow="row wrap", align_items="flex-start"))
         root = W.VBox([head, body])
         root.add_class("planargeo-explorer")
@@ -1290,16 +1331,35 @@ class Explorer:
                 best, dmin = h, d
         self._drag_active = best
 
+    #: a mouse move arriving within this many seconds of the end of a drag step that took longer
+    #: than :attr:`DRAG_BACKLOG_COST` was queued behind it: it is kept and applied with the next
+    #: move or the release, not drawn on its own (so the figure keeps up with the mouse)
+    DRAG_BACKLOG_GAP = 0.008
+    DRAG_BACKLOG_COST = 0.03
+
     def _on_move(self, ev) -> None:
         h = self._drag_active
         if h is None or ev.inaxes is not self.ax or ev.xdata is None:
             return
         x, y = ev.xdata, ev.ydata
-        if np.isfinite(x) and np.isfinite(y):
-            self._drag_to(h, float(x), float(y))
+        if not (np.isfinite(x) and np.isfinite(y)):
+            return
+        now = time.monotonic()
+        last_end, last_cost = self._last_drag
+        if last_cost > self.DRAG_BACKLOG_COST and now - last_end < self.DRAG_BACKLOG_GAP:
+            self._drag_pending = (float(x), float(y))
+            self._last_drag = (now, last_cost)
+            return
+        self._drag_pending = None
+        self._drag_to(h, float(x), float(y))
+        self._last_drag = (time.monotonic(), time.monotonic() - now)
 
     def _on_release(self, ev) -> None:
-        self._drag_active = None
+        h, pending = self._drag_active, self._drag_pending
+        self._drag_active, self._drag_pending = None, None
+        if h is not None and pending is not None:  # the last position, queued behind a slow step
+            self._drag_to(h, *pending)
+        self._last_drag = (0.0, 0.0)
 
     def _make_observer(self, name: str) -> Callable:
         widget = self.controls[name]
@@ -1521,8 +1581,8 @@ class Explorer:
                 f"white-space:nowrap'>{text}</td>"
                 f"<td style='padding-left:3px;line-height:1.25;white-space:nowrap;color:#555'>"
                 f"{html.escape(unit)}</td></tr>")
-        return (f"<table class='planargeo-readout' style='font-size:12px;table-layout:auto;"
-                f"border-collapse:collapse'>{''.join(rows)}</table>")
+        return (f"<b>Readout</b><table class='planargeo-readout' style='font-size:12px;"
+                f"table-layout:auto;border-collapse:collapse'>{''.join(rows)}</table>")
 
     def _export_bytes(self, kind: str) -> bytes:
         if kind == "svg":
@@ -1545,8 +1605,9 @@ class Explorer:
                 data, name, saved = self._export_bytes(kind), f"planargeo-{self.slug}.{kind}", ""
             href = f"data:{mime};base64,{base64.b64encode(data).decode('ascii')}"
             self.export_label.value = (
-                f"{saved}<a download='{html.escape(name)}' href='{href}' "
-                f"class='planargeo-download' style='font-weight:bold'>⬇ {html.escape(name)}</a>")
+                f"<div style='white-space:nowrap;overflow:hidden;text-overflow:ellipsis'>"
+                f"<a download='{html.escape(name)}' href='{href}' class='planargeo-download' "
+                f"style='font-weight:bold'>⬇ {html.escape(name)}</a> {saved}</div>")
         except Exception as exc:  # noqa: BLE001
             self.export_label.value = (f"<span style='color:#b00020'>export failed: "
                                        f"{html.escape(str(exc))}</span>")
