@@ -77,12 +77,14 @@ class ReactionGlyph:
     color : str, optional
     reach : float
         Half-length of the drawn line of action (data units).
+    legend : str, optional
+        Entry in the explorer's key (one per kind of force, not per glyph).
     """
 
-    def __init__(self, ax, label: str, color: str | None = None, reach: float = 1.2):
+    def __init__(self, ax, label: str, color: str | None = None, reach: float = 1.2, legend: str | None = None):
         color = color or COLORS["reaction"]
         self.reach = float(reach)
-        self.line = Line2D([], [], color=color, lw=1.0, ls="--", zorder=8, label=f"{label}: line of action")
+        self.line = Line2D([], [], color=color, lw=1.0, ls="--", zorder=8, label=legend or "_nolegend_")
         self.link = Line2D([], [], color=color, lw=0.8, ls=":", zorder=8)
         self.arrow = FancyArrowPatch((0, 0), (0, 0), arrowstyle="-|>", mutation_scale=11, color=color, lw=2.0,
                                      shrinkA=0, shrinkB=0, zorder=9)
@@ -359,8 +361,9 @@ class SliderCrankExplorer(Explorer):
                   annotation_clip=True)
         self.body_labels = [ax.annotate(s, (0.0, 0.0), **kw) for s in ("1", "2", "3")]
         self.joint_labels = [ax.annotate(s, (0.0, 0.0), **kw) for s in ("ψ", "θ", "φ")]
-        self.glyphs = {s: ReactionGlyph(ax, _symbol(s)) for s in ("f_1", "f_2", "f_3")}
-        self.glyphs["F_1"] = ReactionGlyph(ax, "F₃", color=CONTACT_COLOR)
+        self.glyphs = {s: ReactionGlyph(ax, _symbol(s), legend="pin force f_i (9.61)" if s == "f_1" else None)
+                       for s in ("f_1", "f_2", "f_3")}
+        self.glyphs["F_1"] = ReactionGlyph(ax, "F₃", color=CONTACT_COLOR, legend="bearing force F₃ (9.71)")
         self.glyphs["F_1"].text.set_text("F₃")          # the thesis calls the slider's force F₃ (9.84)
         z = np.array([0.0, 0.0, 1.0])
         self.v_art = [ax.add_artist(PointArtist(z, role="twist", glyph_scale=0.5, text=f"v{i + 1}"))

@@ -138,9 +138,11 @@ class TreeExplorer(Explorer):
         self.labels = [ax.annotate(str(i + 1), (0.0, 0.0), **kw) for i in range(N)]
         self.glyphs = {}
         for i in range(N):
-            self.glyphs[f"f_{i + 1}"] = ReactionGlyph(ax, _symbol(f"f_{i + 1}"), reach=0.45)
+            self.glyphs[f"f_{i + 1}"] = ReactionGlyph(ax, _symbol(f"f_{i + 1}"), reach=0.45,
+                                                      legend="pin force f_i (9.61)" if i == 0 else None)
         for k in range(2):
-            self.glyphs[f"F_{k + 1}"] = ReactionGlyph(ax, _symbol(f"F_{k + 1}"), color=CONTACT_COLOR, reach=0.45)
+            self.glyphs[f"F_{k + 1}"] = ReactionGlyph(ax, _symbol(f"F_{k + 1}"), color=CONTACT_COLOR, reach=0.45,
+                                                      legend="contact force F_k (9.71)" if k == 0 else None)
         z = np.array([0.0, 0.0, 1.0])
         self.v_art = [ax.add_artist(PointArtist(z, role="twist", glyph_scale=3.0, text=f"v{i + 1}"))
                       for i in range(N)]
