@@ -48,6 +48,7 @@ from planargeo.errors import COND_LIMIT, SceneError, SingularConfigurationError
 from planargeo.scenes import SceneResult, check_param, register
 
 __all__ = ["slider_crank", "slider_crank_model", "slider_crank_solve", "slider_crank_state", "slider_crank_advance",
+           "slider_crank_reactions",
            "dead_centre_at", "dead_centres_passed", "DEAD_CENTRES", "DEAD_CENTRE_TOL"]
 
 #: The crank angles ``ψ`` (rad) at which crank and rod lie in line with the slide (the y axis through the
@@ -386,3 +387,26 @@ def slider_crank_advance(model, psi, psidot, dt, r=2.29, l=5.00, drive="free", *
             "velocity_residual": float(np.max(res.extra["velocity_residual"], initial=0.0)),
             "dead_centres": dead_centres_passed(psi, psi1), "events": list(res.events), "nfev": int(res.nfev),
             "status": res.status}
+
+
+def slider_crank_reactions(sol) -> dict:
+    """Every pin and bearing force of a solved slider-crank, by symbol (thesis 9.61, 9.71).
+
+    Parameters
+    ----------
+    sol : LoopSolution
+        From :func:`slider_crank_solve`.
+
+    Returns
+    -------
+    dict
+        ``{"f_1": Reaction, "f_2": ..., "f_3": ..., "F_1": ...}``
+        (:class:`planargeo.algorithms.loops.Reaction`: ``point``, ``wrench``, ``moment``...).
+
+    Examples
+    --------
+    >>> _q, _qd, sol, _h = slider_crank_solve(slider_crank_model(), 0.4, 20.0, 2.29, 5.0, 0.5)
+    >>> sorted(slider_crank_reactions(sol)), round(slider_crank_reactions(sol)["F_1"].moment, 3)
+    (['F_1', 'f_1', 'f_2', 'f_3'], -11.961)
+    """
+    return {r.symbol: r for r in sol.reactions}

@@ -35,6 +35,7 @@ import numpy as np
 from planargeo.scenes import SceneResult, check_param, register
 
 __all__ = ["tree", "constrained_tree", "tree_model", "tree_solve", "tree_dof", "tree_pose", "tree_advance",
+           "tree_reactions",
            "FIG91_PARENTS", "FIG91_ANGLES"]
 
 #: Parents of Fig 9.1 (0-based; -1 is the ground).
@@ -325,3 +326,42 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10):
             "position_residual": float(np.max(res.extra["position_residual"], initial=0.0)),
             "velocity_residual": float(np.max(res.extra["velocity_residual"], initial=0.0)),
             "events": list(res.events), "nfev": int(res.nfev), "status": res.status}
+
+
+def tree_reactions(model, sol) -> list:
+    """Every pin force of the tree: a :class:`~planargeo.algorithms.loops.Reaction` per joint, then per contact.
+
+    The joints' wrenches ``f`` on each body from its parent (9.61 with the loops
+    closed, 9.41 for the open tree) and the contacts' ``-F`` on body ``a`` (9.71).
+
+    Parameters
+    ----------
+    model : Model
+    sol : LoopSolution or StackedSolution
+        From :func:`tree_solve` on ``model``.
+
+    Returns
+    -------
+    list of Reaction
+
+    Examples
+    --------
+    >>> closed = constrained_tree()
+    >>> [r.symbol for r in tree_reactions(closed.model, closed.extra["solution"])][-3:]
+    ['f_9', 'F_1', 'F_2']
+    >>> open_ = tree()
+    >>> len(tree_reactions(open_.model, open_.extra["solution"]))
+    9
+    """
+    from planargeo.algorithms.loops import Reaction
+
+    if hasattr(sol, "reactions"):
+        return list(sol.reactions)
+    out = []
+    fw = np.asarray(sol.f, dtype=float).reshape(model.N, 3)
+    for i, jt in enumerate(model.joints):
+        P = sol.data.pose[i, :2].astype(float)
+        w = fw[i].copy()
+        out.append(Reaction(f"f_{i + 1}", jt.name, jt.kind, i, model.parents[i], P, w,
+                            float(w[2] + P[1] * w[0] - P[0] * w[1])))
+    return out

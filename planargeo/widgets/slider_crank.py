@@ -40,7 +40,7 @@ from planargeo.draw.mechanism import draw_ground
 from planargeo.draw.style import COLORS, OKABE_ITO
 from planargeo.errors import InputError, SceneError
 from planargeo.scenes.slider_crank import (DEAD_CENTRE_TOL, dead_centre_at, slider_crank_advance,
-                                           slider_crank_model, slider_crank_solve)
+                                           slider_crank_model, slider_crank_reactions, slider_crank_solve)
 from planargeo.simulate.integrate import energy
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
@@ -53,8 +53,17 @@ CONTACT_COLOR = OKABE_ITO["purple"]
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
-def _symbol(sym: str) -> str:
-    """``"f_2"`` -> ``"f₂"``: a reaction's symbol as drawn."""
+def symbol_text(sym: str) -> str:
+    """``"f_2"`` -> ``"f₂"``: a reaction's symbol as drawn.
+
+    Parameters
+    ----------
+    sym : str
+
+    Returns
+    -------
+    str
+    """
     return sym.replace("_", "").translate(_SUB)
 
 
@@ -250,7 +259,19 @@ def wrap_message(text: str, width: int = 38) -> str:
     return "\n".join(textwrap.wrap(text, width)) or text
 
 
-def _pin_box(ax, xy, r_px: float = 6.0):
+def pin_box(ax, xy, r_px: float = 6.0):
+    """Display-coordinate box ``(x0, y0, x1, y1)`` of ``r_px`` pixels around the data point ``xy``.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    xy : (float, float)
+    r_px : float
+
+    Returns
+    -------
+    tuple of float
+    """
     x, y = ax.transData.transform(np.asarray(xy, dtype=float))
     return (x - r_px, y - r_px, x + r_px, y + r_px)
 
@@ -361,7 +382,7 @@ class SliderCrankExplorer(Explorer):
                   annotation_clip=True)
         self.body_labels = [ax.annotate(s, (0.0, 0.0), **kw) for s in ("1", "2", "3")]
         self.joint_labels = [ax.annotate(s, (0.0, 0.0), **kw) for s in ("ψ", "θ", "φ")]
-        self.glyphs = {s: ReactionGlyph(ax, _symbol(s), legend="pin force f_i (9.61)" if s == "f_1" else None)
+        self.glyphs = {s: ReactionGlyph(ax, symbol_text(s), legend="pin force f_i (9.61)" if s == "f_1" else None)
                        for s in ("f_1", "f_2", "f_3")}
         self.glyphs["F_1"] = ReactionGlyph(ax, "F₃", color=CONTACT_COLOR, legend="bearing force F₃ (9.71)")
         self.glyphs["F_1"].text.set_text("F₃")          # the thesis calls the slider's force F₃ (9.84)
@@ -469,7 +490,8 @@ class SliderCrankExplorer(Explorer):
         q, qd, sol, h = slider_crank_solve(model, psi, float(v["crank speed"]), r, l, t, v["drive"])
         T, V = energy(model, data=sol.data)
         E = float(T + V)
-        st = {"sol": sol, "q": q, "qd": qd, "r": r, "l": l, "t": t, "h": h, "v": sol.data.v,
+        st = {"sol": sol, "reactions": slider_crank_reactions(sol), "q": q, "qd": qd, "r": r, "l": l, "t": t, "h": h,
+              "v": sol.data.v,
               "a": sol.a.reshape(3, 3), "F3": np.asarray(sol.F, dtype=float), "E": E, "message": "",
               "drive": v["drive"]}
         pending, self._frame_pending = self._frame_pending, None
@@ -520,8 +542,9 @@ class SliderCrankExplorer(Explorer):
         self.piston.set_xy((wrist[0] - 0.3, wrist[1]))
         self.piston.set_height(2 * t)
         vals = self.values
-        reactions = {x.symbol: x for x in sol.reactions}
-        fmax = max(x.force for x in reactions.values())
+        reactions = st["reactions"]
+        force = {k: float(np.hypot(x.wrench[0], x.wrench[1])) for k, x in reactions.items()}
+        fmax = max(force.values())
         scale = 2.4 / fmax if fmax > 0 else 0.0          # the largest force: a 2.4 m arrow
         show_f = bool(vals["reaction forces"])
         for sym, g in self.glyphs.items():
@@ -540,7 +563,7 @@ class SliderCrankExplorer(Explorer):
             lab.xy = tuple(m)
         for lab, p in zip(self.joint_labels, (np.zeros(2), pin, wrist)):
             lab.xy = tuple(p)
-        obstacles = [_pin_box(ax, p) for p in (np.zeros(2), pin, wrist)]
+        obstacles = [pin_box(ax, p) for p in (np.zeros(2), pin, wrist)]
         items = [(g.text, g.foot) for g in self.glyphs.values()]
         items += [(lab, lab.xy) for lab in self.joint_labels] + [(lab, lab.xy) for lab in self.body_labels]
         for name, arts, pts in (("v", self.v_art, vel), ("a", self.a_art, acc)):
@@ -560,8 +583,8 @@ class SliderCrankExplorer(Explorer):
             "piston angle φ": math.degrees(qq[2]),
             "piston height h": st["h"], "piston speed": vel[2][1], "piston acceleration": acc[2][1],
             "ψ̈ crank": qdd[0],
-            "|f₁| crank pivot": reactions["f_1"].force, "|f₂| crank pin": reactions["f_2"].force,
-            "|f₃| wrist pin": reactions["f_3"].force, "|F₃| slider bearing": reactions["F_1"].force,
+            "|f₁| crank pivot": force["f_1"], "|f₂| crank pin": force["f_2"],
+            "|f₃| wrist pin": force["f_3"], "|F₃| slider bearing": force["F_1"],
             "bearing couple": reactions["F_1"].moment, "drive torque Q₁": sol.tau_drive[0],
             "energy E": st["E"],
             "energy drift ΔE/E₀": drift if not driven else "— (driven: the drive does work)",

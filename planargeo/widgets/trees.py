@@ -32,10 +32,11 @@ from planargeo.draw.artists import PointArtist, point_xy
 from planargeo.draw.mechanism import draw_ground
 from planargeo.draw.style import COLORS
 from planargeo.errors import InputError, SceneError
-from planargeo.scenes.trees import FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_solve
+from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_reactions,
+                                    tree_solve)
 from planargeo.simulate.integrate import energy
 from planargeo.widgets.base import Explorer, Handle, Step, cached
-from planargeo.widgets.slider_crank import CONTACT_COLOR, LABEL_PT, ReactionGlyph, _pin_box, _symbol, place_labels
+from planargeo.widgets.slider_crank import CONTACT_COLOR, LABEL_PT, ReactionGlyph, pin_box, place_labels, symbol_text
 
 __all__ = ["TreeExplorer"]
 
@@ -84,6 +85,7 @@ class TreeExplorer(Explorer):
         self._models: dict = {}     # (closed, mass, g) -> Model
         self._traj: dict = {}       # t -> (q, qd, info) of the run shown
         self._traj_key = None
+        self._poses: dict = {}      # (closed, body 1 angle, body 2 angle) -> (q at t = 0, unit speeds)
         self._E0 = None
         self._events: list = []
         super().__init__(**kw)
@@ -118,7 +120,7 @@ class TreeExplorer(Explorer):
         -------
         list of str
         """
-        return [_symbol(f"f_{i + 1}") for i in range(N)] + ["F₁", "F₂"]
+        return [symbol_text(f"f_{i + 1}") for i in range(N)] + ["F₁", "F₂"]
 
     def make_artists(self, ax):
         """Links, joints, pins, the reaction glyphs, poles and body labels (built once).
@@ -138,10 +140,10 @@ class TreeExplorer(Explorer):
         self.labels = [ax.annotate(str(i + 1), (0.0, 0.0), **kw) for i in range(N)]
         self.glyphs = {}
         for i in range(N):
-            self.glyphs[f"f_{i + 1}"] = ReactionGlyph(ax, _symbol(f"f_{i + 1}"), reach=0.45,
+            self.glyphs[f"f_{i + 1}"] = ReactionGlyph(ax, symbol_text(f"f_{i + 1}"), reach=0.45,
                                                       legend="pin force f_i (9.61)" if i == 0 else None)
         for k in range(2):
-            self.glyphs[f"F_{k + 1}"] = ReactionGlyph(ax, _symbol(f"F_{k + 1}"), color=CONTACT_COLOR, reach=0.45,
+            self.glyphs[f"F_{k + 1}"] = ReactionGlyph(ax, symbol_text(f"F_{k + 1}"), color=CONTACT_COLOR, reach=0.45,
                                                       legend="contact force F_k (9.71)" if k == 0 else None)
         z = np.array([0.0, 0.0, 1.0])
         self.v_art = [ax.add_artist(PointArtist(z, role="twist", glyph_scale=3.0, text=f"v{i + 1}"))
@@ -262,19 +264,24 @@ class TreeExplorer(Explorer):
         t = float(values["t (s)"]) + float(dt)
         return None if t > self.controls["t (s)"].max else {"t (s)": t}
 
-    def _state_at(self, model, t: float):
-        """``(q, qd, info)`` at scene time ``t`` of the run shown, integrating from the latest time before it."""
-        if t in self._traj:
-            return self._traj[t]
-        t0 = max((s for s in self._traj if s <= t), default=0.0)
-        q0, qd0, _ = self._traj[t0]
+    @staticmethod
+    def _state_at(model, t: float, traj: dict, events: list):
+        """``(q, qd, info)`` at scene time ``t`` of the run ``traj`` (updated in place, with ``events``).
+
+        Integrates from the latest time before ``t`` kept in ``traj`` (a few are kept).
+        """
+        if t in traj:
+            return traj[t]
+        t0 = max((s for s in traj if s <= t), default=0.0)
+        q0, qd0, _ = traj[t0]
         out = tree_advance(model, q0, qd0, t - t0)
         item = (out["q"], out["qd"], out)
         for e in out["events"]:
-            self._events.append((t0 + float(e.get("t", 0.0)), e.get("kind", "near-singular")))
-        keep = sorted(self._traj)[-3:]
-        self._traj = {s: self._traj[s] for s in set(keep) | {0.0}}
-        self._traj[t] = item
+            events.append((t0 + float(e.get("t", 0.0)), e.get("kind", "near-singular")))
+        for s in sorted(traj)[:-3]:
+            if s != 0.0:
+                del traj[s]
+        traj[t] = item
         return item
 
     def compute(self, v, changed):
@@ -301,36 +308,45 @@ class TreeExplorer(Explorer):
         closed = v["loops"].startswith("closed")
         model = self.model_for(closed, float(v["mass"]), float(v["gravity"]))
         _c, L, dof = self.geometry(closed)
-        key = (closed, float(v["mass"]), float(v["gravity"]), float(v["speed"]), float(v["body 1 angle (deg)"]),
-               float(v["body 2 angle (deg)"]))
+        a1, a2, speed = float(v["body 1 angle (deg)"]), float(v["body 2 angle (deg)"]), float(v["speed"])
+        # the pose at t = 0 depends on the loops and the two angles only (kept); the speeds are linear in speed
+        pose_key = (closed, a1, a2)
+        shown_angles = None if self._traj_key is None else self._traj_key[4:]
+        dragged = (self.state is not None and self.state["closed"] == closed and shown_angles != (a1, a2)
+                   and set(changed) <= {"body 1 angle (deg)", "body 2 angle (deg)", "t (s)"})
+        start = self.state["q"] if dragged else None
+        pose = self._poses.get(pose_key)
+        if pose is None:
+            pose = tree_pose(model, math.radians(a1), 1.0, q_start=start, angle2=math.radians(a2))
+        if start is not None:
+            jump = np.abs(np.remainder(pose[0][2:] - start[2:] + np.pi, 2 * np.pi) - np.pi)
+            if jump.max() > MAX_JUMP:
+                k = int(np.argmax(jump)) + 3
+                raise SceneError(f"the loops would jump to another assembly: joint {k} would turn by "
+                                 f"{np.degrees(jump.max()):.0f}° in one step (drag in smaller steps)")
+        key = (closed, float(v["mass"]), float(v["gravity"]), speed, a1, a2)
         if key != self._traj_key:
-            dragged = set(changed) <= {"body 1 angle (deg)", "body 2 angle (deg)", "t (s)"}
-            start = (self.state["q"] if self.state is not None and dragged and self.state["closed"] == closed
-                     else None)
-            q0, qd0 = tree_pose(model, math.radians(key[4]), key[3], q_start=start, angle2=math.radians(key[5]))
-            if start is not None:
-                jump = np.abs(np.remainder(q0[2:] - start[2:] + np.pi, 2 * np.pi) - np.pi)
-                if jump.max() > MAX_JUMP:
-                    k = int(np.argmax(jump)) + 3
-                    raise SceneError(f"the loops would jump to another assembly: joint {k} would turn by "
-                                     f"{np.degrees(jump.max()):.0f}° in one step (drag in smaller steps)")
-            traj = {0.0: (q0, qd0, None)}
-            E0 = float(sum(energy(model, q0, qd0)))
-            self._traj, self._traj_key, self._E0, self._events = traj, key, E0, []
-        q, qd, info = self._state_at(model, float(v["t (s)"]))
+            traj, events, E0 = {0.0: (pose[0], speed * pose[1], None)}, [], None
+        else:
+            traj, events, E0 = dict(self._traj), list(self._events), self._E0
+        t = float(v["t (s)"])
+        q, qd, info = self._state_at(model, t, traj, events)
         sol = tree_solve(model, q, qd)                               # 9.5 closed, 9.39-9.43 open
-        pose = sol.data.pose
-        tips = pose[:, :2] + L * np.column_stack([np.cos(pose[:, 2]), np.sin(pose[:, 2])])
+        E = float(sum(energy(model, data=sol.data)))
+        if E0 is None:
+            E0 = E if t == 0.0 else float(sum(energy(model, *traj[0.0][:2])))
+        pose_now = sol.data.pose
+        tips = pose_now[:, :2] + L * np.column_stack([np.cos(pose_now[:, 2]), np.sin(pose_now[:, 2])])
         st = {"closed": closed, "model": model, "q": q, "qd": qd, "length": L, "dof": dof, "sol": sol,
-              "a": sol.a.reshape(N, 3), "qdd": np.asarray(sol.qdd), "tips": tips, "t": float(v["t (s)"]),
-              "E": float(sum(energy(model, data=sol.data))), "E0": self._E0,
-              "drift": 0.0 if info is None else info["position_residual"], "events": list(self._events)}
+              "a": sol.a.reshape(N, 3), "qdd": np.asarray(sol.qdd), "tips": tips, "t": t, "E": E, "E0": E0,
+              "drift": 0.0 if info is None else info["position_residual"], "events": list(events),
+              "reactions": tree_reactions(model, sol)}
         if closed:
             st["F"] = sol.F.reshape(-1, 3)
             st["cond"] = float(sol.cond)
-            st["reactions"] = sol.reactions
-        else:
-            st["reactions"] = _open_reactions(model, sol)
+        # the state is good: keep its pose and run
+        cached(self._poses, pose_key, lambda: pose)
+        self._traj, self._traj_key, self._E0, self._events = traj, key, E0, events
         return st
 
     def render(self, st):
@@ -352,7 +368,7 @@ class TreeExplorer(Explorer):
         pose, tips = d.pose, st["tips"]
         vals = self.values
         focus = vals.get("focus", "all")
-        reactions = {_symbol(x.symbol): x for x in st["reactions"]}
+        reactions = {symbol_text(x.symbol): x for x in st["reactions"]}
         if closed:        # the thesis names the contact forces F₁, F₂ (9.49 order)
             pass
         # view: the whole mechanism, or zoomed on the focused joint
@@ -371,23 +387,24 @@ class TreeExplorer(Explorer):
         self.joints.set_data(pose[:, 0], pose[:, 1])
         for i, t in enumerate(self.labels):
             t.xy = tuple(0.5 * (pose[i, :2] + tips[i]))
-        fmax = max((x.force for x in reactions.values()), default=0.0)
+        force = {k: float(np.hypot(x.wrench[0], x.wrench[1])) for k, x in reactions.items()}
+        fmax = max(force.values(), default=0.0)
         scale = 0.9 / fmax if fmax > 0 else 0.0
         show = bool(vals["reaction forces"])
         for sym, g in self.glyphs.items():
-            x = reactions.get(_symbol(sym))
+            x = reactions.get(symbol_text(sym))
             if x is None:
                 g.set_visible(False)
                 continue
             g.update(x.point, x.wrench, scale)
             g.set_visible(show)
-            on = focus in ("all", _symbol(sym))
+            on = focus in ("all", symbol_text(sym))
             alpha = 1.0 if on else _FADED
             for a in (g.line, g.link, g.arrow):
                 a.set_alpha(alpha)
-            g.arrow.set_linewidth(3.0 if focus == _symbol(sym) else 2.0)
+            g.arrow.set_linewidth(3.0 if focus == symbol_text(sym) else 2.0)
             g.text.set_visible(show and on)
-            g.text.set_fontweight("bold" if focus == _symbol(sym) else "normal")
+            g.text.set_fontweight("bold" if focus == symbol_text(sym) else "normal")
         for i in range(N):
             self.v_art[i].set_visible(bool(vals["velocity poles"]))
             self.v_art[i].set_point(d.v[i])
@@ -398,7 +415,7 @@ class TreeExplorer(Explorer):
             self.pins.set_data(pins[:, 0], pins[:, 1])
         else:
             self.pins.set_data([], [])
-        obstacles = [_pin_box(ax, p, 4.0) for p in pose[:, :2]]
+        obstacles = [pin_box(ax, p, 4.0) for p in pose[:, :2]]
         items = [(g.text, g.foot) for g in self.glyphs.values() if g.visible]
         items += [(t, t.xy) for t in self.labels]
         for name, arts, pts in (("v", self.v_art, d.v), ("a", self.a_art, st["a"])):
@@ -412,13 +429,13 @@ class TreeExplorer(Explorer):
                "closure drift |φ|": st["drift"]}
         if closed:
             for k, c in enumerate(model.contacts):
-                out[f"contact {c.name}: |force| (N)"] = reactions[_symbol(f"F_{k + 1}")].force
+                out[f"contact {c.name}: |force| (N)"] = force[symbol_text(f"F_{k + 1}")]
             out["condition number"] = st["cond"]
-        out["largest pin force"] = max(reactions[_symbol(f"f_{i + 1}")].force for i in range(N))
+        out["largest pin force"] = max(force[symbol_text(f"f_{i + 1}")] for i in range(N))
         if focus in reactions:
             x = reactions[focus]
             out["focus"] = focus
-            out[f"|{focus}| (N)"] = x.force
+            out[f"|{focus}| (N)"] = force[focus]
             out[f"{focus} moment about its joint (N·m)"] = x.moment
         qdd = st["qdd"]
         out["qdd[1] (root)"] = qdd[0]
@@ -427,16 +444,3 @@ class TreeExplorer(Explorer):
         out["near-singular"] = f"{ev[-1][1]} at t = {ev[-1][0]:.3f} s" if ev else "—"
         return out
 
-
-def _open_reactions(model, sol):
-    """The :class:`~planargeo.algorithms.loops.Reaction` of each joint of the open tree (9.41: ``f`` of the stacked solve)."""
-    from planargeo.algorithms.loops import Reaction
-
-    out = []
-    fw = sol.f.reshape(N, 3)
-    for i, jt in enumerate(model.joints):
-        P = sol.data.pose[i, :2].astype(float)
-        w = fw[i].copy()
-        out.append(Reaction(f"f_{i + 1}", jt.name, jt.kind, i, model.parents[i], P, w,
-                            float(w[2] + P[1] * w[0] - P[0] * w[1])))
-    return out
