@@ -132,11 +132,12 @@ QUANTITY_INFO: dict[str, dict[str, tuple[str, str, str, str]]] = {
         "cond": ("condition number of the contact matrix", "κ(BᵀGΛ⁻¹GᵀB)", "9.70-9.72", "—"),
         "f": ("joint wrenches f₁ crank pivot, f₂ crank pin, f₃ wrist pin (on each body from its parent)",
               "f", "9.61", WRENCH),
-        "mu": ("pin reactions in each joint's basis R_i", "μ = Uᵀ f", "6.61b, 6.104", "N"),
+        "mu": ("reaction magnitudes of each joint in its basis R_i (f = T Q + R μ; a free pin: its force along "
+               "x and y)", "μ = Uᵀ f", "6.38, 6.61b", "N"),
         "pin_forces": ("every pin and bearing force: f₁-f₃ and the slider bearing's -F₃ on the piston",
                        "f_i, -F₃", "9.61, 9.71", WRENCH),
         "reaction_moments": ("moment of each reaction about its own pin or contact point (drive torque, "
-                             "0 at a free pin, the bearing's couple)", "sᵀf", "6.38", "N·m"),
+                             "0 at a free pin, the bearing's couple)", "τ_o + y f_x − x f_y", "4.27", "N·m"),
     },
     "tree": {
         "C": ("adjacency matrix of Fig 9.1", "C", "9.1", "—"),
@@ -159,7 +160,8 @@ QUANTITY_INFO: dict[str, dict[str, tuple[str, str, str, str]]] = {
         "xi": ("contact force components in B", "ξ", "9.70", "N"),
         "cond": ("condition number of the contact matrix", "κ(BᵀGΛ⁻¹GᵀB)", "9.70-9.72", "—"),
         "f": ("joint wrenches of the closed tree (on each body from its parent)", "f", "9.61", WRENCH),
-        "mu": ("pin forces in each joint's basis R_i", "μ = Uᵀ f", "6.61b, 6.104", "N"),
+        "mu": ("pin forces of each joint in its basis R_i (no joint torques here: the force along x and y)",
+               "μ = Uᵀ f", "6.38, 6.61b", "N"),
     },
 }
 
