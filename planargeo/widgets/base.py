@@ -1189,7 +1189,8 @@ class Explorer:
             self.fig.canvas.draw()
         else:
             buf = io.BytesIO()
-            self.fig.savefig(buf, format="png", dpi=self.dpi)
+            # fast PNG compression: the image goes to the page once, its encoding is on every update
+            self.fig.savefig(buf, format="png", dpi=self.dpi, pil_kwargs={"compress_level": 1})
             self.image.value = buf.getvalue()
 
     def guarded(self, callback: Callable) -> Callable:
@@ -1575,7 +1576,7 @@ class Explorer:
             self.readout_strings[str(k)] = f"{text} {unit}" if unit else text
             rows.append(
                 f"<tr><td style='padding-right:6px;line-height:1.25;white-space:nowrap;"
-                f"overflow:hidden;text-overflow:ellipsis;max-width:120px' title='{html.escape(str(k))}'>"
+                f"overflow:hidden;text-overflow:ellipsis;max-width:300px' title='{html.escape(str(k))}'>"
                 f"{html.escape(str(k))}</td>"
                 f"<td style='text-align:right;font-family:monospace;line-height:1.25;"
                 f"white-space:nowrap'>{text}</td>"
