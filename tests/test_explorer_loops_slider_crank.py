@@ -190,3 +190,10 @@ def test_a_short_rod_is_refused_and_the_last_state_kept(ex):
     assert ex.readout_values["crank angle (deg)"] == pytest.approx(ex.values["crank angle (deg)"])
     np.testing.assert_allclose(ex.crank.get_xydata()[1], ref.R * np.array([math.cos(psi), math.sin(psi)]))
     legible(ex)
+
+
+def test_play_with_every_overlay_stays_legible(ex):
+    ex.set(**{"velocity poles": True, "acceleration poles": True, "key": True})
+    for _ in range(6):
+        legible(ex.advance(2))
+    assert all(a.get_visible() for a in ex.v_art + ex.a_art)
