@@ -113,6 +113,9 @@ def test_play_overlays_with_poles_stay_legible(ex):
     for _ in range(3):
         ex.advance(1)
         legible(ex)
+    ex.set(key=True)                         # the key covers the upper left: labels keep clear of it
+    for _ in range(3):
+        legible(ex.advance(2))
 
 
 def test_focus_on_one_reaction(ex):

@@ -153,14 +153,14 @@ class ReactionGlyph:
             a.set_visible(self.visible)
 
 
-def place_labels(ax, items, obstacles=(), fontsize: float = LABEL_PT) -> None:
+def place_labels(ax, items, obstacles=(), fontsize: float = LABEL_PT, covered=()) -> None:
     """Put each label next to its anchor where it overlaps no other label or obstacle and stays in the axes.
 
     ``items`` are ``(label, anchor)`` or ``(label, anchor, text)``: a matplotlib
     ``Annotation`` (offset in points from its ``xy``) or a
     :class:`~planargeo.draw.artists.PointArtist` (its label's offset and alignment;
     give its ``text``), and the data point it labels.  Candidate places are tried
-    around the anchor (8 directions, 7 then 16 then 28 points away); the first
+    around the anchor (8 directions, 7, 16, 28, 42 then 58 points away); the first
     free one wins, else the least crowded (slid into the axes if need be).  Text
     boxes are estimated from the font size (no drawing needed).  A label whose
     point is out of view is skipped (an annotation is clipped; a point artist's
@@ -175,16 +175,24 @@ def place_labels(ax, items, obstacles=(), fontsize: float = LABEL_PT) -> None:
         Display-coordinate boxes to keep clear (pins, other texts).
     fontsize : float
         Font size (points) used to estimate the label boxes.
+    covered : sequence of (x0, y0, x1, y1)
+        Display boxes drawn over the plot (the key): a label whose point lies under one is
+        not shown (its point is hidden too), and the box is kept clear of the others.
     """
     fig = ax.figure
     ppt = fig.dpi / 72.0
     box = ax.bbox
-    taken = [tuple(o) for o in obstacles]
+    taken = [tuple(o) for o in obstacles] + [tuple(o) for o in covered]
     dirs = [(1, 1), (-1, 1), (1, -1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1)]
     for item in items:
         obj, anchor = item[0], item[1]
         annotation = hasattr(obj, "xyann")
-        label = obj.get_text() if annotation else (item[2] if len(item) > 2 else "")
+        if annotation:                        # its own text, kept while it is blanked under the key
+            if not hasattr(obj, "_planargeo_label") or obj.get_text():
+                obj._planargeo_label = obj.get_text()
+            label = obj._planargeo_label
+        else:
+            label = item[2] if len(item) > 2 else ""
         if not annotation and anchor is None:
             obj.set_text(label)               # an ideal point: the artist labels its direction at the edge
             continue
@@ -192,14 +200,14 @@ def place_labels(ax, items, obstacles=(), fontsize: float = LABEL_PT) -> None:
             continue
         a = ax.transData.transform(np.asarray(anchor, dtype=float))
         inside = bool(np.all(np.isfinite(a))) and box.x0 <= a[0] <= box.x1 and box.y0 <= a[1] <= box.y1
-        if not annotation:
-            obj.set_text(label if inside else "")
-        if not inside:
-            continue                          # out of view: not labelled here
+        under = inside and any(c[0] <= a[0] <= c[2] and c[1] <= a[1] <= c[3] for c in covered)
+        obj.set_text("" if under or (not inside and not annotation) else label)
+        if not inside or under:
+            continue                          # out of view, or under the key: not labelled here
         n = len(label)
         w, h = (0.62 * n * fontsize + 3) * ppt, 1.25 * fontsize * ppt
         best, best_bad = None, math.inf
-        for dist in (7.0, 16.0, 28.0):
+        for dist in (7.0, 16.0, 28.0, 42.0, 58.0):
             for ux, uy in dirs:
                 u = np.array([ux, uy], dtype=float) / math.hypot(ux, uy)
                 off = dist * u
@@ -208,7 +216,7 @@ def place_labels(ax, items, obstacles=(), fontsize: float = LABEL_PT) -> None:
                 va = "bottom" if u[1] > 0.35 else "top" if u[1] < -0.35 else "center"
                 x0 = cx if ha == "left" else cx - w if ha == "right" else cx - w / 2
                 y0 = cy if va == "bottom" else cy - h if va == "top" else cy - h / 2
-                bb = (x0 - 1, y0 - 1, x0 + w + 1, y0 + h + 1)
+                bb = (x0 - 2.5, y0 - 2.5, x0 + w + 2.5, y0 + h + 2.5)
                 bad = sum(max(0.0, min(bb[2], o[2]) - max(bb[0], o[0])) * max(0.0, min(bb[3], o[3]) - max(bb[1], o[1]))
                           for o in taken)
                 if bb[0] < box.x0 + 2 or bb[2] > box.x1 - 2 or bb[1] < box.y0 + 2 or bb[3] > box.y1 - 2:
@@ -257,6 +265,37 @@ def wrap_message(text: str, width: int = 38) -> str:
     import textwrap
 
     return "\n".join(textwrap.wrap(text, width)) or text
+
+
+def key_box(ax, on: bool, fontsize: float = 8.5):
+    """Estimated display box of the explorer's key (legend, upper left) when it is ``on``, for labels to avoid.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    on : bool
+        Whether the "key" control is on.
+    fontsize : float
+        The key's font size (points).
+
+    Returns
+    -------
+    list of tuple
+        ``[(x0, y0, x1, y1)]`` in display coordinates, or ``[]`` when the key is off or empty.
+    """
+    if not on:
+        return []
+    from planargeo.draw.artists import legend_handles
+
+    labels = [h.get_label() for h in legend_handles(ax)]
+    if not labels:
+        return []
+    ppt = ax.figure.dpi / 72.0
+    box = ax.bbox
+    w = (0.62 * max(len(s) for s in labels) + 3.2) * fontsize * ppt
+    h = (len(labels) * 1.75 + 0.8) * fontsize * ppt
+    pad = 0.3 * fontsize * ppt
+    return [(box.x0, box.y1 - h - pad, box.x0 + w + pad, box.y1)]
 
 
 def pin_box(ax, xy, r_px: float = 6.0):
@@ -569,7 +608,7 @@ class SliderCrankExplorer(Explorer):
         for name, arts, pts in (("v", self.v_art, vel), ("a", self.a_art, acc)):
             for i, art in enumerate(arts):
                 items.append((art, point_xy(pts[i]), f"{name}{i + 1}"))
-        place_labels(ax, items, obstacles)
+        place_labels(ax, items, obstacles, covered=key_box(ax, bool(vals.get("key"))))
         run = st["run"]
         recent = run["passed_at"] is not None and run["t"] - run["passed_at"] < 0.02
         conf = st["configuration"]

@@ -36,7 +36,8 @@ from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_m
                                     tree_solve)
 from planargeo.simulate.integrate import energy
 from planargeo.widgets.base import Explorer, Handle, Step, cached
-from planargeo.widgets.slider_crank import CONTACT_COLOR, LABEL_PT, ReactionGlyph, pin_box, place_labels, symbol_text
+from planargeo.widgets.slider_crank import (CONTACT_COLOR, LABEL_PT, ReactionGlyph, key_box, pin_box, place_labels,
+                                            symbol_text)
 
 __all__ = ["TreeExplorer"]
 
@@ -421,7 +422,7 @@ class TreeExplorer(Explorer):
         for name, arts, pts in (("v", self.v_art, d.v), ("a", self.a_art, st["a"])):
             for i, art in enumerate(arts):
                 items.append((art, point_xy(pts[i]), f"{name}{i + 1}"))
-        place_labels(ax, items, obstacles)
+        place_labels(ax, items, obstacles, covered=key_box(ax, bool(vals.get("key"))))
         E0 = st["E0"]
         out = {"t": st["t"], "speed": vals["speed"], "loops": "closed" if closed else "open",
                "degrees of freedom": st["dof"], "energy E": st["E"],
