@@ -5,6 +5,14 @@ Usage::
     planargeo report SCENE [--set NAME=VALUE ...] [--json] [--allow-big]
     planargeo report --list [--json]
 
+``--list`` prints every scene with its parameters and, for each quantity it reports, a
+description, the thesis symbol and equation, and the unit (:data:`QUANTITY_INFO`; a scene
+module may add its own as a module attribute ``QUANTITY_INFO = {scene: {key: (description,
+symbol, equation, unit)}}``).  The table prints each quantity's unit after its value, and
+values whose magnitude is below :data:`ZERO_TOL` times the scene's scale for that unit (the
+largest magnitude among the scene's quantities in the same unit) as ``0.0``: round-off such
+as ``4.7e-11`` where the exact value is 0.  ``--json`` keeps every value at full precision.
+
 Values given with ``--set`` are read as ``int``, ``float`` (``1e-3``, ``nan``,
 ``inf``), ``bool`` (``true``/``false``), ``none``, a JSON list (``[1, 2]``) or
 else kept as a string; an integer given for a parameter whose default is a
@@ -33,11 +41,287 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["add_arguments", "main", "parse_value", "parse_sets", "to_plain", "format_table"]
+__all__ = ["add_arguments", "main", "parse_value", "parse_sets", "to_plain", "format_table", "quantity_info",
+           "round_off", "format_listing", "QUANTITY_INFO", "ZERO_TOL"]
+
+#: Values below ``ZERO_TOL`` times the scene's scale for their unit print as 0 in the table.
+ZERO_TOL = 1e-9
+
+#: Units of screw arrays (components ``[x, y, z]`` at the global origin).
+TWIST = "m/s, m/s, rad/s"
+ACCEL = "m/s², m/s², rad/s²"
+WRENCH = "N, N, N·m"
+INERTIA = "kg, kg·m, kg·m²"
+MOBILITY = "1/kg, 1/(kg·m), 1/(kg·m²)"
+BASIS = "—"
+
+#: ``scene -> quantity -> (description, thesis symbol, thesis equation, unit)`` of every quantity
+#: ``planargeo report`` prints (``—``: dimensionless; screw arrays at the global origin).
+QUANTITY_INFO: dict[str, dict[str, tuple[str, str, str, str]]] = {
+    "chain": {
+        "q": ("joint coordinates", "q", "2.1", "rad or m"),
+        "qd": ("joint rates", "q̇", "2.3", "rad/s or m/s"),
+        "tau": ("joint torques or forces", "Q", "3.13", "N·m or N"),
+        "qdd": ("joint accelerations by each of five methods (ABA, projective, mobility + splitting, "
+                "stacked, CRBA)", "q̈", "3.6, 6.108-6.113, 7.56, 9.43, 3.21", "rad/s² or m/s²"),
+        "max_disagreement": ("largest difference between the methods' q̈", "max |Δq̈|", "—",
+                             "rad/s² or m/s²"),
+    },
+    "car": {
+        "omega_dot": ("angular acceleration of the car about the instant centre", "ω̇ = ψ", "6.131", "rad/s²"),
+        "mu": ("lateral tyre forces [rear, front] along R₁, R₂ (negative: towards the ICR)", "μ", "6.133", "N"),
+        "T": ("percussion space of the ICR joint", "T", "6.125", BASIS),
+        "U": ("quake space of the ICR joint", "U", "6.127", BASIS),
+        "s": ("motion space: unit rotation about the ICR", "s", "6.114", BASIS),
+        "R": ("reaction space: unit forces along the rear and front axles", "R", "6.114", BASIS),
+        "I": ("inertia of the car at the ICR", "I", "6.117", INERTIA),
+        "v": ("velocity twist", "v", "6.115", TWIST),
+        "kappa": ("bias acceleration", "κ", "6.116", ACCEL),
+        "p": ("bias force", "p", "6.119", WRENCH),
+        "f_A": ("drive force at the front tyre", "f_A", "6.120", WRENCH),
+        "gamma": ("reactive acceleration components", "γ = Rᵀκ", "6.129", "m/s²"),
+        "a": ("acceleration twist", "a", "6.44", ACCEL),
+        "f": ("total tyre wrench (the joint force)", "f", "6.122", WRENCH),
+        "V": ("speed of the rear contact", "V = ω d", "6.115", "m/s"),
+    },
+    "two-body": {
+        "A1": ("articulated inertia of body 1 at joint CJ₁", "A₁", "7.19", INERTIA),
+        "m_x": ("effective mass along x", "m_x", "7.12", "kg"),
+        "mx_over_m": ("effective mass along x per body mass", "m_x / m", "7.22", "—"),
+        "lam": ("length over radius of gyration", "λ = L/ρ", "7.21", "—"),
+        "A2": ("articulated inertia of body 2 (= its rigid inertia)", "A₂ = I₂", "7.14, 7.17", INERTIA),
+        "U2": ("quake space of joint 2", "U₂", "7.18", BASIS),
+        "T2": ("percussion space of joint 2", "T₂", "6.30", BASIS),
+        "s": ("joint motion spaces s₁, s₂", "s", "7.15", BASIS),
+        "R": ("joint reaction spaces R₁, R₂", "R", "7.16", BASIS),
+    },
+    "horizontal-chain": {
+        "d_over_L": ("effective centre of gravity of body 1 per link length", "d / L", "7.26, 7.27", "—"),
+        "mx_over_m": ("effective mass along x per body mass", "m_x / m", "7.26", "—"),
+        "my_over_m": ("effective mass along y per body mass", "m_y / m", "7.26", "—"),
+        "Az_over_m_rho2": ("effective rotational inertia per m ρ²", "A_z / (m ρ²)", "7.26", "—"),
+        "A1": ("articulated inertia of body 1 at the origin", "A₁", "7.1.1", INERTIA),
+    },
+    "mobility-example": {
+        "Lambda1_inv": ("articulated mobility of body 1", "Λ₁⁻¹", "7.42", MOBILITY),
+        "Lambda2_inv": ("articulated mobility of body 2", "Λ₂⁻¹", "7.43", MOBILITY),
+        "f3": ("pure couple on body 2 from the fictitious joint 3", "f₃", "7.44", WRENCH),
+        "a2": ("acceleration of body 2", "a₂ = -Λ₂⁻¹ f₃", "7.45, 7.46", ACCEL),
+        "x_over_L": ("acceleration pole of body 2 per link length", "x / L", "7.47, 7.48", "—"),
+        "eta": ("length over radius of gyration", "η = L/ρ", "7.49", "—"),
+        "T1": ("percussion space of joint 1", "T₁", "7.40", BASIS),
+        "U1": ("quake space of joint 1", "U₁", "7.40", BASIS),
+        "T2": ("percussion space of joint 2", "T₂", "7.41", BASIS),
+        "U2": ("quake space of joint 2", "U₂", "7.41", BASIS),
+    },
+    "slider-crank": {
+        "q": ("joint angles crank, rod, piston", "q = (ψ, θ, φ)", "9.78", "rad"),
+        "qd": ("joint rates", "q̇", "9.79", "rad/s"),
+        "v": ("velocity twists of the three bodies", "v₁, v₂, v₃", "9.80", TWIST),
+        "u": ("open-loop accelerations (loop cut at the slider)", "u", "9.63, 9.82", ACCEL),
+        "Lambda3_inv": ("articulated mobility of the piston in the tree", "Λ₃⁻¹", "9.81", MOBILITY),
+        "h": ("height of the piston's centre of mass", "h", "9.85, 9.86", "m"),
+        "z3": ("contact motion space of the slider", "z₃", "9.83", BASIS),
+        "B3": ("contact reaction space of the slider", "B₃", "9.87", BASIS),
+        "xi": ("contact force components in B₃ (force, couple)", "ξ₃", "9.89, 9.90", "N, N·m"),
+        "F3": ("contact force of the slider (-F₃ acts on the piston)", "F₃ = B₃ ξ₃", "9.91, 9.92", WRENCH),
+        "a3": ("closed-loop acceleration of the piston", "a₃", "9.93, 9.94", ACCEL),
+        "a": ("closed-loop accelerations of the three bodies", "a", "9.73", ACCEL),
+        "qdd": ("joint accelerations", "q̈", "9.75", "rad/s²"),
+        "tau_drive": ("joint torques the drive needs (constant-speed crank)", "Q", "9.75", "N·m"),
+        "cond": ("condition number of the contact matrix", "κ(BᵀGΛ⁻¹GᵀB)", "9.70-9.72", "—"),
+        "f": ("joint wrenches f₁ crank pivot, f₂ crank pin, f₃ wrist pin (on each body from its parent)",
+              "f", "9.61", WRENCH),
+        "mu": ("reaction magnitudes of each joint in its basis R_i (f = T Q + R μ; a free pin: its force along "
+               "x and y)", "μ = Uᵀ f", "6.38, 6.61b", "N"),
+        "pin_forces": ("every pin and bearing force: f₁-f₃ and the slider bearing's -F₃ on the piston",
+                       "f_i, -F₃", "9.61, 9.71", WRENCH),
+        "reaction_moments": ("moment of each reaction about its own pin or contact point (drive torque, "
+                             "0 at a free pin, the bearing's couple)", "τ_o + y f_x − x f_y", "4.27", "N·m"),
+    },
+    "tree": {
+        "C": ("adjacency matrix of Fig 9.1", "C", "9.1", "—"),
+        "Dinv": ("trunk matrix", "Δ⁻¹", "9.12, 9.13", "—"),
+        "L": ("articulation matrix (1 - Cᵀ R Uᵀ)⁻¹", "L", "9.31", "—"),
+        "Lambda_inv": ("articulated mobilities of the nine bodies", "Λ_i⁻¹", "7.37, 9.45", MOBILITY),
+        "b": ("bias accelerations of the direct solution", "b_i", "9.45", ACCEL),
+        "qdd": ("joint accelerations", "q̈", "9.39, 9.43", "rad/s²"),
+        "qdd_direct": ("joint accelerations by the direct solution", "q̈", "9.48", "rad/s²"),
+        "a": ("body accelerations", "a", "9.39", ACCEL),
+        "f": ("joint wrenches (on each body from its parent)", "f", "9.41", WRENCH),
+    },
+    "constrained-tree": {
+        "G": ("contact matrix", "G", "9.49", "—"),
+        "Upsilon": ("branch matrix", "Υ = GΔ⁻¹", "9.50, 9.51", "—"),
+        "qdd": ("closed-loop joint accelerations", "q̈", "9.75", "rad/s²"),
+        "a": ("closed-loop body accelerations", "a", "9.73", ACCEL),
+        "u": ("open-loop accelerations", "u", "9.63", ACCEL),
+        "F": ("contact forces of the pins 4-7 and 8-9 (-F acts on body a)", "F", "9.71", WRENCH),
+        "xi": ("contact force components in B", "ξ", "9.70", "N"),
+        "cond": ("condition number of the contact matrix", "κ(BᵀGΛ⁻¹GᵀB)", "9.70-9.72", "—"),
+        "f": ("joint wrenches of the closed tree (on each body from its parent)", "f", "9.61", WRENCH),
+        "mu": ("pin forces of each joint in its basis R_i (no joint torques here: the force along x and y)",
+               "μ = Uᵀ f", "6.38, 6.61b", "N"),
+    },
+}
+
+
+def quantity_info(scene: str) -> dict[str, dict[str, str]]:
+    """Description, thesis symbol, equation and unit of each quantity ``planargeo report`` prints for ``scene``.
+
+    From :data:`QUANTITY_INFO`, completed by the scene module's own ``QUANTITY_INFO``
+    attribute if it has one (``{scene: {key: (description, symbol, equation, unit)}}``).
+
+    Parameters
+    ----------
+    scene : str
+        A registered scene name (:func:`planargeo.scenes.names`).
+
+    Returns
+    -------
+    dict
+        ``{key: {"description", "symbol", "equation", "unit"}}`` (empty for a scene nobody described).
+
+    Raises
+    ------
+    SceneError
+        If no scene has that name.
+
+    Examples
+    --------
+    >>> quantity_info("slider-crank")["f"]["unit"], quantity_info("slider-crank")["f"]["equation"]
+    ('N, N, N·m', '9.61')
+    """
+    import sys
+
+    from planargeo import scenes
+
+    fn = scenes.get(scene)
+    table = dict(QUANTITY_INFO.get(scene, {}))
+    own = getattr(sys.modules.get(getattr(fn, "__module__", ""), None), "QUANTITY_INFO", None)
+    if isinstance(own, dict) and own is not QUANTITY_INFO and isinstance(own.get(scene), dict):
+        table.update(own[scene])
+    keys = ("description", "symbol", "equation", "unit")
+    return {k: dict(zip(keys, v)) for k, v in table.items()}
+
+
+def _magnitude(v: Any) -> float:
+    """Largest finite magnitude in a plain value (numbers, nested lists and dicts), 0 if none."""
+    if isinstance(v, bool) or v is None or isinstance(v, str):
+        return 0.0
+    if isinstance(v, (int, float)):
+        return abs(float(v)) if math.isfinite(v) else 0.0
+    if isinstance(v, dict):
+        return max((_magnitude(x) for x in v.values()), default=0.0)
+    if isinstance(v, list):
+        return max((_magnitude(x) for x in v), default=0.0)
+    return 0.0
+
+
+def _zeroed(v: Any, limit: float) -> Any:
+    if isinstance(v, bool) or v is None or isinstance(v, str):
+        return v
+    if isinstance(v, float):
+        return 0.0 if abs(v) < limit or v == 0 else v
+    if isinstance(v, dict):
+        return {k: _zeroed(x, limit) for k, x in v.items()}
+    if isinstance(v, list):
+        return [_zeroed(x, limit) for x in v]
+    return v
+
+
+def round_off(quantities: dict, info: dict | None = None, tol: float = ZERO_TOL) -> dict:
+    """Plain quantities with round-off shown as 0: magnitudes below ``tol`` × the scene's scale for their unit.
+
+    The scale of a unit is the largest magnitude among the quantities of that
+    unit (from ``info``, :func:`quantity_info`); a quantity without a unit is
+    its own group.  Integers, booleans and text are kept.
+
+    Parameters
+    ----------
+    quantities : dict
+        Plain values (:func:`to_plain`).
+    info : dict, optional
+        ``{key: {"unit": ...}}`` as :func:`quantity_info` returns.
+    tol : float
+        Relative threshold (default :data:`ZERO_TOL`).
+
+    Returns
+    -------
+    dict
+        A copy with the small floats (and ``-0.0``) replaced by ``0.0``.
+
+    Raises
+    ------
+    InputError
+        If ``tol`` is negative or not finite.
+
+    Examples
+    --------
+    >>> round_off({"a": [3.98e-12, -5.7, 1e-12], "b": 2.5e-11}, {"a": {"unit": "m/s²"}, "b": {"unit": "m/s²"}})
+    {'a': [0.0, -5.7, 0.0], 'b': 0.0}
+    """
+    from planargeo.errors import InputError
+
+    if not (isinstance(tol, (int, float)) and math.isfinite(tol) and tol >= 0):
+        raise InputError(f"tol must be a finite non-negative number, got {tol!r}")
+    info = info or {}
+    unit_of = {k: (info.get(k) or {}).get("unit") or f"\0{k}" for k in quantities}
+    scale: dict[str, float] = {}
+    for k, v in quantities.items():
+        scale[unit_of[k]] = max(scale.get(unit_of[k], 0.0), _magnitude(v))
+    return {k: _zeroed(v, tol * scale[unit_of[k]]) for k, v in quantities.items()}
+
+
+def _width(text: str) -> int:
+    """Columns ``text`` takes in a terminal: combining marks (the dot of ``q̇``) take none."""
+    import unicodedata
+
+    return sum(0 if unicodedata.combining(ch) else 1 for ch in text)
+
+
+def format_listing(listing: dict, infos: dict) -> str:
+    """Text of ``planargeo report --list``: each scene's parameters, then its quantities with symbol, equation, unit.
+
+    Parameters
+    ----------
+    listing : dict
+        ``{scene: {parameter: default}}``.
+    infos : dict
+        ``{scene: quantity_info(scene)}``.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> print(format_listing({"x": {"a": 1.5}}, {"x": {"h": {"description": "height", "symbol": "h",
+    ...                                                      "equation": "9.85", "unit": "m"}}}))
+    x: a=1.5
+      h  h  (9.85)  m  height
+    """
+    out = []
+    for name, params in listing.items():
+        ps = ", ".join(f"{k}={_fmt_number(v) if not isinstance(v, str) else v}" for k, v in params.items())
+        out.append(f"{name}: {ps}" if ps else name)
+        rows = [(k, d.get("symbol", ""), f"({d.get('equation', '')})", d.get("unit", ""), d.get("description", ""))
+                for k, d in infos.get(name, {}).items()]
+        if rows:
+            widths = [max(_width(r[c]) for r in rows) for c in range(4)]
+            out += ["  " + "  ".join(r[c] + " " * (widths[c] - _width(r[c])) for c in range(4)) + "  " + r[4]
+                    for r in rows]
+    return "\n".join(out)
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    """Register the ``report`` command's arguments on ``parser``."""
+    """Register the ``report`` command's arguments on ``parser``.
+
+    Parameters
+    ----------
+    parser : argparse.ArgumentParser
+        The parser of ``planargeo report``.
+    """
     parser.add_argument("scene", nargs="?", help="scene name (see --list)")
     parser.add_argument("--set", dest="sets", action="append", default=[], metavar="NAME=VALUE",
                         help="set a scene parameter (repeatable)")
@@ -49,6 +333,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def parse_value(text: str) -> Any:
     """Read a command-line value as int, float, bool, None, JSON list or string.
+
+    Parameters
+    ----------
+    text : str
+        The value as typed.
+
+    Returns
+    -------
+    int, float, bool, None, list or str
 
     Examples
     --------
@@ -80,8 +373,22 @@ def parse_value(text: str) -> Any:
 def parse_sets(sets: list[str], defaults: dict[str, Any] | None = None) -> dict[str, Any]:
     """``["a=1", "b=x"]`` -> ``{"a": 1, "b": "x"}``; ints become floats where the default is a float.
 
-    Raises :class:`~planargeo.errors.InputError` for an item without ``=`` or
-    with an empty name (``planargeo report`` exits with status 2 on it).
+    Parameters
+    ----------
+    sets : list of str
+        The ``--set`` items.
+    defaults : dict, optional
+        The scene's parameters with their defaults.
+
+    Returns
+    -------
+    dict
+
+    Raises
+    ------
+    InputError
+        For an item without ``=`` or with an empty name (``planargeo report`` exits
+        with status 2 on it).
 
     Examples
     --------
@@ -108,7 +415,18 @@ def parse_sets(sets: list[str], defaults: dict[str, Any] | None = None) -> dict[
 
 
 def to_plain(x: Any) -> Any:
-    """Plain JSON-able Python values: numbers, strings, bools, None, lists and dicts."""
+    """Plain JSON-able Python values: numbers, strings, bools, None, lists and dicts.
+
+    Parameters
+    ----------
+    x : any
+        Nested dicts, lists, tuples, numpy arrays and scalars.
+
+    Returns
+    -------
+    any
+        The same structure with numpy values turned into Python ones (anything else as ``str``).
+    """
     if isinstance(x, dict):
         return {str(k): to_plain(v) for k, v in x.items()}
     if isinstance(x, (list, tuple)):
@@ -132,6 +450,8 @@ def _fmt_number(v: Any) -> str:
     if isinstance(v, int):
         return str(v)
     if isinstance(v, float):
+        if v == 0:
+            return "0.0"                       # also -0.0
         if math.isfinite(v) and v == int(v) and abs(v) < 1e12:
             return f"{v:.1f}"
         return f"{v:.6g}"
@@ -216,8 +536,20 @@ def _fmt_value(v: Any, indent: int) -> list[str]:
     return [_fmt_number(v)]
 
 
-def format_table(result: dict) -> str:
+def format_table(result: dict, info: dict | None = None) -> str:
     """Readable text of a plain report ``{"scene", "params", "state", "quantities"}``.
+
+    Parameters
+    ----------
+    result : dict
+        The plain report (values as :func:`to_plain` gives them).
+    info : dict, optional
+        :func:`quantity_info` of the scene: each quantity's unit is printed after its
+        first line (none for dimensionless ``—`` quantities).
+
+    Returns
+    -------
+    str
 
     Examples
     --------
@@ -244,6 +576,9 @@ def format_table(result: dict) -> str:
         width = max(len(str(k)) for k in items)
         for k, v in items.items():
             lines = _fmt_value(v, 0)
+            unit = ((info or {}).get(k) or {}).get("unit", "") if key == "quantities" else ""
+            if unit and unit != "—":
+                lines[0] = f"{lines[0]}  {unit}"
             out.append(f"  {str(k).ljust(width)}  {lines[0]}")
             out.extend(" " * (width + 4) + line for line in lines[1:])
     return "\n".join(out)
@@ -255,23 +590,33 @@ def _error(msg: str, code: int) -> int:
 
 
 def main(args: argparse.Namespace) -> int:
-    """Run ``planargeo report``; returns the exit status."""
+    """Run ``planargeo report``; returns the exit status.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        Parsed arguments (:func:`add_arguments`).
+
+    Returns
+    -------
+    int
+        0 on success, 1 for a scene error, 2 for a usage error (one line on stderr).
+    """
     from planargeo import scenes
     from planargeo.errors import InputError, PlanargeoError
 
     if args.list:
-        listing = {}
+        listing, infos = {}, {}
         for name in scenes.names():
             try:
                 listing[name] = to_plain(scenes.parameters(name))
+                infos[name] = quantity_info(name)
             except PlanargeoError as exc:  # pragma: no cover - a broken scene module
                 return _error(str(exc).splitlines()[0], 1)
         if args.json:
-            print(json.dumps({"scenes": listing}))
+            print(json.dumps({"scenes": listing, "quantities": infos}))
         else:
-            for name, params in listing.items():
-                ps = ", ".join(f"{k}={_fmt_number(v) if not isinstance(v, str) else v}" for k, v in params.items())
-                print(f"{name}: {ps}" if ps else name)
+            print(format_listing(listing, infos))
         return 0
     if not args.scene:
         return _error("a scene name is required (planargeo report --list shows them)", 2)
@@ -289,5 +634,10 @@ def main(args: argparse.Namespace) -> int:
         return _error(str(exc).splitlines()[0] if str(exc) else type(exc).__name__, 1)
     report = {"scene": res.name, "params": to_plain(res.params), "state": to_plain(res.state),
               "quantities": to_plain(res.quantities)}
-    print(json.dumps(report, allow_nan=False) if args.json else format_table(report))
+    if args.json:                              # full precision
+        print(json.dumps(report, allow_nan=False))
+        return 0
+    info = quantity_info(res.name)
+    report["quantities"] = round_off(report["quantities"], info)
+    print(format_table(report, info))
     return 0

@@ -240,3 +240,41 @@ def test_registry():
     assert res.name == "slider-crank" and res.params["psi"] == 0.5
     assert scenes.parameters("slider-crank")["psidot"] == 20.0
     assert set(["q", "qd", "v", "u", "Lambda3_inv", "h", "xi", "F3", "a3", "qdd"]) <= set(res.quantities)
+
+
+# --------------------------------------------------------------------------- Play helpers (#14 item 4)
+def test_dead_centres_passed_in_order_both_ways_and_over_turns():
+    from planargeo.scenes.slider_crank import dead_centre_at, dead_centres_passed
+
+    names = [n for n, _ in dead_centres_passed(0.0, 4 * np.pi)]
+    assert names == ["top dead centre", "bottom dead centre"] * 2
+    back = dead_centres_passed(2.0, -2.0)
+    assert [n for n, _ in back] == ["top dead centre", "bottom dead centre"]
+    assert back[0][1] == pytest.approx(np.pi / 2) and back[1][1] == pytest.approx(-np.pi / 2)
+    # an end exactly on a dead centre counts once: at the end of one frame, not the start of the next
+    assert dead_centres_passed(1.0, np.pi / 2) == [("top dead centre", np.pi / 2)]
+    assert dead_centres_passed(np.pi / 2, 2.0) == []
+    assert dead_centres_passed(0.3, 0.3) == [] and dead_centre_at(0.3) == ""
+    assert dead_centre_at(-np.pi / 2) == "bottom dead centre"
+
+
+def test_advance_matches_the_one_coordinate_reference_and_refuses_bad_steps():
+    from scipy.integrate import solve_ivp
+
+    import _slider_crank_reference as ref
+    from planargeo.errors import SceneError
+    from planargeo.scenes.slider_crank import slider_crank_advance, slider_crank_model
+
+    m = slider_crank_model()
+    out = slider_crank_advance(m, 0.4, 20.0, 0.03)
+    sol = solve_ivp(lambda _t, y: [y[1], ref.reference(y[0], y[1])["qdd"][0]], (0.0, 0.03), [0.4, 20.0],
+                    method="DOP853", rtol=1e-11, atol=1e-12)
+    assert out["psi"] == pytest.approx(sol.y[0, -1], abs=1e-7)
+    assert out["psidot"] == pytest.approx(sol.y[1, -1], abs=1e-6)
+    assert out["position_residual"] < 1e-9 and out["status"] == "ok"
+    driven = slider_crank_advance(m, 0.4, 20.0, 0.03, drive="constant-speed")
+    assert driven["psidot"] == 20.0 and driven["psi"] == pytest.approx(0.4 + 0.6, abs=1e-12)
+    with pytest.raises(SceneError, match="dt must be positive"):
+        slider_crank_advance(m, 0.4, 20.0, 0.0)
+    with pytest.raises(SceneError, match="drive"):
+        slider_crank_advance(m, 0.4, 20.0, 0.01, drive="sideways")

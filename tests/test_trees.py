@@ -115,3 +115,31 @@ def test_tree_mobilities_are_those_of_the_tree_with_descendants_cut_off():
         Lam_ref, b_ref = dense_mobility(m, q, qd, np.zeros(9), None, i)
         np.testing.assert_allclose(Lam[i], Lam_ref, atol=1e-12, err_msg=f"Lambda_inv {i}")
         np.testing.assert_allclose(b[i], b_ref, atol=1e-11, err_msg=f"b {i}")
+
+
+# --------------------------------------------------------------------------- Play helpers (#14 item 4)
+def test_tree_pose_closes_the_loops_and_keeps_the_fixed_angles():
+    from planargeo.scenes.trees import constrained_tree, tree_pose
+    from planargeo.simulate.loops import closure_jacobian, closure_residual
+
+    m = constrained_tree().model
+    q, qd = tree_pose(m, np.radians(80.0), 0.5, angle2=np.radians(150.0))
+    assert q[0] == pytest.approx(np.radians(80.0)) and q[0] + q[1] == pytest.approx(np.radians(150.0))
+    assert np.abs(closure_residual(m, q)).max() < 1e-12
+    assert np.abs(closure_jacobian(m, q) @ qd).max() < 1e-12
+
+
+def test_tree_advance_keeps_energy_and_loops():
+    from planargeo.errors import SceneError
+    from planargeo.scenes.trees import constrained_tree, tree_advance
+    from planargeo.simulate.integrate import energy
+    from planargeo.simulate.loops import closure_residual
+
+    ct = constrained_tree()
+    m, q, qd = ct.model, np.array(ct.state["q"]), np.array(ct.state["qd"])
+    out = tree_advance(m, q, qd, 0.1)
+    E0, E1 = sum(energy(m, q, qd)), sum(energy(m, out["q"], out["qd"]))
+    assert abs(E1 - E0) < 1e-8 * abs(E0)
+    assert np.abs(closure_residual(m, out["q"])).max() < 1e-9
+    with pytest.raises(SceneError, match="dt must be positive"):
+        tree_advance(m, q, qd, -1.0)

@@ -22,7 +22,12 @@ def pin_points(ex):
 
 @pytest.fixture
 def ex():
-    return TreeExplorer(display="agg", speed=0.0)
+    """The explorer; the state each test leaves it in must be legible (issue #13)."""
+    from planargeo.draw.layout import legibility_problems
+
+    e = TreeExplorer(display="agg", speed=0.0)
+    yield e
+    assert legibility_problems(e.fig) == []
 
 
 def test_loops_close_at_rest(ex):
@@ -52,8 +57,8 @@ def test_contact_forces_match_lagrange_reference(ex, speed, mass, g):
     for k, name in enumerate(("4-7", "8-9")):
         shown = ex.readout_values[f"contact {name}: |force| (N)"]
         assert shown == pytest.approx(np.hypot(F[k, 0], F[k, 1]), rel=1e-9, abs=1e-9)
-        # the drawn line is the reference wrench (same line, same sense and size)
-        assert ex.F_art[k].get_line() == pytest.approx(F[k], rel=1e-9, abs=1e-9)
+        # the drawn wrench is the reference's, acting on body a: -F (9.61; same line, size)
+        assert ex.glyphs[f"F_{k + 1}"].wrench == pytest.approx(-F[k], rel=1e-9, abs=1e-9)
     assert ex.readout_values["qdd[1] (root)"] == pytest.approx(ref["qdd"][0], abs=1e-9)
     assert ex.readout_values["max |qdd|"] == pytest.approx(np.abs(ref["qdd"]).max(), rel=1e-9)
 
@@ -71,9 +76,9 @@ def test_open_tree_matches_pinocchio(ex):
 def test_contact_forces_pass_through_the_pins(ex):
     tips = pin_points(ex)
     for k, i in enumerate((3, 7)):
-        F = ex.F_art[k].get_line()
+        F = ex.glyphs[f"F_{k + 1}"].wrench
         x, y = tips[i]
-        assert ex.F_art[k].get_visible()
+        assert ex.glyphs[f"F_{k + 1}"].arrow.get_visible()
         assert np.dot([y, -x, 1.0], F) == pytest.approx(0.0, abs=1e-9 * (1 + np.abs(F).max()))
     ex.fig.canvas.draw()
 
@@ -81,7 +86,7 @@ def test_contact_forces_pass_through_the_pins(ex):
 def test_opening_the_loops_changes_the_motion(ex):
     closed = dict(ex.readout_values)
     ex.controls["loops"].value = "open (Fig 9.1)"
-    assert not any(a.get_visible() for a in ex.F_art)
+    assert not any(ex.glyphs[f"F_{k}"].arrow.get_visible() for k in (1, 2))
     a = ex.state["a"]
     tips = pin_points(ex)
     assert not np.allclose(point_accel(a[3], tips[3]), point_accel(a[6], tips[6]))   # tips drift apart
@@ -95,7 +100,7 @@ def test_overlays_and_speed(ex):
     ex.fig.canvas.draw()
 
 
-@pytest.mark.parametrize("toggle", ["velocity poles", "acceleration poles", "contact forces"])
+@pytest.mark.parametrize("toggle", ["velocity poles", "acceleration poles", "reaction forces"])
 def test_display_toggles_do_not_recompute(toggle):
     ex = TreeExplorer(display="agg", speed=1.0)
     calls = []
@@ -106,7 +111,8 @@ def test_display_toggles_do_not_recompute(toggle):
     ex.controls[toggle].value = before
     ex.controls[toggle].value = not before
     assert calls == [] and ex.n_updates == 4
-    arts = {"velocity poles": ex.v_art, "acceleration poles": ex.a_art, "contact forces": ex.F_art}[toggle]
+    arts = {"velocity poles": ex.v_art, "acceleration poles": ex.a_art,
+            "reaction forces": [g.arrow for g in ex.glyphs.values()]}[toggle]
     assert all(a.get_visible() == (not before) for a in arts)
     # the artists still show the state: the velocity poles are the joint-speed twists
     if toggle == "velocity poles":

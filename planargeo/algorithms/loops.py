@@ -28,17 +28,18 @@ body; tree joints and contacts alike as analytic constraints), solved densely.
 from __future__ import annotations
 
 import functools
+from dataclasses import dataclass
 
 import numpy as np
 
-from planargeo.mechanics.contacts import contact_matrix, stacked_contact_spaces, validate_contacts
+from planargeo.mechanics.contacts import contact_matrix, stacked_contact_spaces, validate_contacts, world_point
 from planargeo.errors import InputError, ShapeError, SingularConfigurationError
 from planargeo.mechanics.kinematics import check_state, kinematics
 from planargeo.mechanics.model import Model
 from planargeo.algorithms.articulated_inertia import _per_state
 from planargeo.algorithms.stacked import blocks, stacked_solve, trunk, adjacency
 
-__all__ = ["LoopSolution", "loop_solve", "loop_condition", "forward_dynamics_loops", "constrained_dynamics_lagrange",
+__all__ = ["LoopSolution", "Reaction", "loop_solve", "joint_wrenches", "loop_condition", "forward_dynamics_loops", "constrained_dynamics_lagrange",
            "branch_matrix", "SINGULAR_COND"]
 
 #: ``B^T G Λ^{-1} G^T B`` is declared singular above this condition number.
@@ -47,6 +48,18 @@ SINGULAR_COND = 1e10
 
 def branch_matrix(G, parents) -> np.ndarray:
     """Branch matrix ``Υ = G Δ^{-1}`` (thesis 9.50, 9.51).
+
+    Parameters
+    ----------
+    G : array_like (m, N)
+        Contact matrix (9.49): ``+1`` on body ``a``, ``-1`` on body ``b`` of each contact.
+    parents : sequence of int (N,)
+        Parent of each body (-1: the ground).
+
+    Returns
+    -------
+    ndarray (m, N)
+        ``Υ``: the two branches of each loop from their common ancestor, ``+1`` and ``-1``.
 
     Examples
     --------
@@ -91,6 +104,16 @@ class LoopSolution:
     Gamma : (3m, 3m) (9.72); xi : reaction magnitudes in the basis ``B`` (9.70); F : (3m,) contact forces (9.71)
     a : (3N,) closed-loop accelerations (9.73); qdd : (nq,) (9.75)
     tau_drive : (nq,) joint torques including the drives (prescribed joints)
+    f : (3N,) joint wrenches of the closed loop, ``Δᵀ f = I a + p + Gᵀ F`` (9.61) solved for ``f``:
+        ``f_i`` is the wrench ``[fx, fy, τ_o]`` (N, N, N·m; moment about the global origin) that the
+        parent (or the ground) exerts on body ``i`` through joint ``i``: the pin or bearing force,
+        plus the joint's drive (:func:`joint_wrenches`)
+    Q : (nq,) ``Q_i = s_iᵀ f_i`` (6.38): the part of ``f_i`` that works through the joint (the joint
+        torque, N·m, or force, N); equals ``tau_drive``
+    mu : (3N - nq,) reaction magnitudes ``μ_i = U_iᵀ f_i`` of every joint in its reaction basis
+        ``R_i`` (6.61b, 6.104; for a revolute joint with ``Q_i = 0``: the pin force along x and y, N)
+    reactions : list of :class:`Reaction`, every pin and bearing force of the loop: one per tree
+        joint (``f_i``, at the joint) then one per contact (``F_k``, at its point on body ``a``)
 
     Examples
     --------
@@ -113,9 +136,170 @@ class LoopSolution:
         return f"LoopSolution(N={self.tree.N}, contacts={self.G.shape[0]}, cond={self.cond:.3g})"
 
     @property
+    def mu(self) -> np.ndarray:
+        """Reaction magnitudes ``μ_i = U_iᵀ f_i`` (6.61b) of every joint in its basis ``R_i``, built on first access."""
+        if not hasattr(self, "_mu"):
+            self._mu = self.tree.U.T @ self.f
+        return self._mu
+
+    @property
+    def reactions(self) -> list:
+        """Every pin and bearing force of the loop, a :class:`Reaction` per tree joint then per contact."""
+        if not hasattr(self, "_reactions"):
+            self._reactions = _reactions(self._model, self.contacts, self.data, self.f, self.F)
+        return self._reactions
+
+    def reaction(self, name: str) -> "Reaction":
+        """The :class:`Reaction` named ``name`` (a joint's or contact's name, or its symbol ``f_1``, ``F_1``).
+
+        Parameters
+        ----------
+        name : str
+            A joint or contact name of the model, or a symbol of :attr:`reactions`.
+
+        Returns
+        -------
+        Reaction
+
+        Raises
+        ------
+        InputError
+            If no reaction has that name or symbol.
+        """
+        for r in self.reactions:
+            if name in (r.name, r.symbol):
+                return r
+        raise InputError(f"name must be a joint or contact name or a symbol of the loop's reactions "
+                         f"({', '.join(r.symbol for r in self.reactions)}), got {name!r}")
+
+    @property
     def Lambda_inv(self) -> np.ndarray:
         """The tree's full stacked mobility ``Λ^{-1}`` (3N×3N) of 9.65-9.73, built on first access (``tree.mobility``)."""
         return self.tree.mobility
+
+
+@dataclass(frozen=True)
+class Reaction:
+    """One pin or bearing force of a closed loop (thesis 9.61 for the joints, 9.59/9.71 for the contacts).
+
+    Attributes
+    ----------
+    symbol : str
+        ``"f_i"`` for tree joint ``i`` (1-based, the thesis's numbering), ``"F_k"`` for contact ``k``.
+    name : str
+        The joint's or contact's name in the model (may be empty).
+    kind : str
+        The joint kind (``"revolute"``, ``"prismatic"``...) or the contact kind (``"pin"``, ``"slider"``,
+        ``"weld"``).
+    body : int
+        The body the wrench acts on (0-based): body ``i`` for joint ``i``, body ``a`` of a contact.
+    other : int
+        The body that exerts it (0-based; -1 the ground): the joint's parent, the contact's body ``b``.
+    point : ndarray (2,)
+        Where it acts: the joint's position, the contact point on body ``a`` (m).
+    wrench : ndarray (3,)
+        ``[fx, fy, τ_o]`` (N, N, N·m, moment about the global origin) acting **on** ``body``: ``f_i`` for a
+        joint, ``-F_k`` for a contact (the thesis's ``F`` acts with ``-`` on body ``a``, 9.61).
+    moment : float
+        Moment of ``wrench`` about ``point`` (N·m): the drive torque of a revolute joint, zero for a free
+        pin (to rounding), the couple a slider's bearing carries.
+    """
+
+    symbol: str
+    name: str
+    kind: str
+    body: int
+    other: int
+    point: np.ndarray
+    wrench: np.ndarray
+    moment: float
+
+    @property
+    def force(self) -> float:
+        """Magnitude ``|(fx, fy)|`` of the force (N)."""
+        return float(np.hypot(self.wrench[0], self.wrench[1]))
+
+
+def joint_wrenches(parents, I, a, p, GtF=None) -> np.ndarray:
+    """Joint wrenches from ``Δᵀ f = I a + p + Gᵀ F`` (thesis 9.61; 9.14 without contacts), by one inward sweep.
+
+    ``(Δᵀ f)_i = f_i - Σ_{children c} f_c``, so ``f_i`` is body ``i``'s own
+    ``I_i a_i + p_i + (GᵀF)_i`` plus the wrenches its children draw from it,
+    children first (``O(N)``; ``Δ^{-T}`` is never formed).
+
+    Parameters
+    ----------
+    parents : sequence of int (N,)
+        Parent of each body (-1: the ground), parents before children.
+    I : array_like (3N, 3N)
+        Stacked (block-diagonal) body inertias at the origin.
+    a : array_like (3N,)
+        Body accelerations (the closed-loop ``a`` of 9.73).
+    p : array_like (3N,)
+        Bias forces ``p = v×* I v - g`` (3.11, 3.34; ``g`` gravity plus applied wrenches).
+    GtF : array_like (3N,), optional
+        ``Gᵀ F``, the net contact wrenches of 9.61 (``-GᵀF`` acts on the bodies).
+
+    Returns
+    -------
+    ndarray (3N,)
+        ``f``: ``f_i`` is the wrench (at the origin) that the parent exerts on body ``i`` through joint ``i``.
+
+    Raises
+    ------
+    ShapeError
+        If the sizes do not agree with ``parents``.
+
+    Examples
+    --------
+    A unit link hanging straight down at rest from a pin at the origin (``a = 0``,
+    ``p = -g``): the pin holds up its weight, ``f = p``, a force of 9.81 N up through the pin.
+
+    >>> joint_wrenches([-1], np.eye(3), np.zeros(3), np.array([0.0, 9.81, 0.0]))
+    array([0.  , 9.81, 0.  ])
+
+    Two bodies: the root's joint also carries what its child draws from it.
+
+    >>> joint_wrenches([-1, 0], np.eye(6), np.zeros(6), np.array([0.0, 1.0, 0.0, 0.0, 2.0, 0.0]))
+    array([0., 3., 0., 0., 2., 0.])
+    """
+    N = len(parents)
+    I = np.asarray(I, dtype=float)
+    a, p = np.asarray(a, dtype=float), np.asarray(p, dtype=float)
+    if I.shape != (3 * N, 3 * N) or a.shape != (3 * N,) or p.shape != (3 * N,):
+        raise ShapeError(f"I, a and p must have shapes ({3 * N}, {3 * N}), ({3 * N},), ({3 * N},) for "
+                         f"{N} bodies, got {I.shape}, {a.shape}, {p.shape}")
+    rhs = I @ a + p
+    if GtF is not None:
+        GtF = np.asarray(GtF, dtype=float)
+        if GtF.shape != (3 * N,):
+            raise ShapeError(f"GtF must have shape ({3 * N},), got {GtF.shape}")
+        rhs = rhs + GtF
+    f = rhs.reshape(N, 3).copy()
+    for i in range(N - 1, -1, -1):               # children before parents
+        j = parents[i]
+        if j >= 0:
+            f[j] += f[i]
+    return f.reshape(-1)
+
+
+def _reactions(model, cs, data, f, F) -> list:
+    """The :class:`Reaction` list of one solved state: tree joints (``f_i``), then contacts (``-F_k`` on body a)."""
+    out = []
+    N = model.N
+    fw = f.reshape(N, 3)
+    for i, jt in enumerate(model.joints):
+        P = data.pose[i, :2].astype(float)
+        w = fw[i].copy()
+        out.append(Reaction(f"f_{i + 1}", jt.name, jt.kind, i, model.parents[i], P, w,
+                            float(w[2] + P[1] * w[0] - P[0] * w[1])))
+    Fw = F.reshape(-1, 3)
+    for k, c in enumerate(cs):
+        P = np.asarray(world_point(data.pose, c.a, c.point_a), dtype=float)
+        w = -Fw[k]
+        out.append(Reaction(f"F_{k + 1}", c.name, c.kind, c.a, c.b, P, w,
+                            float(w[2] + P[1] * w[0] - P[0] * w[1])))
+    return out
 
 
 @functools.lru_cache(maxsize=256)
@@ -304,6 +488,10 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
         off += k
     sol.tau_drive = tau_drive
     sol.data = data
+    # 6. every pin and bearing force of the loop (9.61): Δᵀ f = I a + p + Gᵀ F, solved for f
+    sol.f = joint_wrenches(model.parents, tree.I, a, tree.p, G3.T @ sol.F)
+    sol.Q = tree.S.T @ sol.f
+    sol._model = model                 # for mu and reactions, built on first access
     return sol
 
 
@@ -315,6 +503,22 @@ def loop_condition(model: Model, q, contacts=None, *, prescribed=None) -> float:
     returns the condition number found (``inf`` when exactly singular), also
     when it is the open tree's ``sᵀAs`` that is singular.  Used to watch a
     closed-loop simulation for dead centres (:func:`planargeo.simulate.loops.simulate_loops`).
+
+    Parameters
+    ----------
+    model : Model
+        The spanning tree.
+    q : array_like (nq,)
+        Joint coordinates.
+    contacts : sequence of Contact, optional
+        Default ``model.contacts``.
+    prescribed : dict, optional
+        Driven joints, as in :func:`loop_solve`.
+
+    Returns
+    -------
+    float
+        The condition number (``inf`` when exactly singular).
 
     Examples
     --------
@@ -338,6 +542,20 @@ def forward_dynamics_loops(model: Model, q, qd, tau, f_ext=None, contacts=None, 
 
     Same signature as the tree algorithms plus ``contacts`` (default
     ``model.contacts``); batches over leading dimensions of ``q``.
+
+    Parameters
+    ----------
+    model : Model
+    q, qd, tau : array_like (..., nq)
+    f_ext : array_like (..., N, 3), optional
+    contacts : sequence of Contact, optional
+    prescribed : dict, optional
+        Driven joints (:func:`loop_solve`).
+
+    Returns
+    -------
+    ndarray (..., nq)
+        Joint accelerations ``q̈`` (9.75).
 
     Examples
     --------
@@ -378,11 +596,31 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
     ``s (s^T s)^{-1} τ`` on body and parent.  Only the poses and velocities of
     :func:`planargeo.mechanics.kinematics.kinematics` are shared with the stacked code.
 
+    Parameters
+    ----------
+    model : Model
+    q, qd, tau : array_like (nq,)
+        One state.
+    f_ext : array_like (N, 3), optional
+    contacts : sequence of Contact, optional
+    prescribed : dict, optional
+        Driven revolute joints ``{joint: qdd}``.
+
     Returns
     -------
-    dict with ``a`` (N, 3) spatial accelerations at the origin, ``qdd`` (nq,)
-    (least squares from ``Δ a - κ = S q̈``), ``F`` (m, 3) contact forces in
-    the thesis's sign (``-F`` acts on body ``a``), ``tau_drive`` (nq,).
+    dict
+        ``a`` (N, 3) spatial accelerations at the origin, ``qdd`` (nq,)
+        (least squares from ``Δ a - κ = S q̈``), ``F`` (m, 3) contact forces in
+        the thesis's sign (``-F`` acts on body ``a``), ``tau_drive`` (nq,),
+        ``lambda`` and ``Phi`` (the multipliers and the constraint Jacobian, tree
+        joints first: ``n_tree_constraints`` rows).
+
+    Raises
+    ------
+    ShapeError
+        For a batch of states.
+    InputError
+        For a prescribed joint that is not revolute.
 
     Examples
     --------

@@ -25,7 +25,12 @@ which is the state behind the printed twists (9.80).
 Quantities (global origin, thesis ordering): ``q``, ``qd``, ``v`` (3 twists),
 ``u`` (open-loop accelerations, 9.82), ``Lambda3_inv`` (9.81), ``h`` (9.86),
 ``z3``, ``B3`` (9.87), ``xi`` (9.90), ``F3`` (9.92), ``a3`` (9.94), ``a``
-(all bodies), ``qdd``, ``tau_drive`` (crank torque needed by the drive).
+(all bodies), ``qdd``, ``tau_drive`` (crank torque needed by the drive), and every pin and
+bearing force of the loop (9.61): ``f`` (the joint wrenches ``f_1`` crank pivot, ``f_2`` crank
+pin, ``f_3`` wrist pin, each on its body from its parent, N, N, N·m at the origin), ``mu``
+(``μ_i = U_iᵀ f_i``, 6.61b), ``pin_forces`` (``f_1..f_3`` and ``F_1``, the slider bearing's
+``-F₃`` on the piston) and ``reaction_moments`` (each about its own pin or contact point:
+the drive torque at ``f_1``, zero at the free pins, the bearing's couple at ``F_1``).
 
 Examples
 --------
@@ -42,7 +47,15 @@ import numpy as np
 from planargeo.errors import COND_LIMIT, SceneError, SingularConfigurationError
 from planargeo.scenes import SceneResult, check_param, register
 
-__all__ = ["slider_crank", "slider_crank_model", "slider_crank_solve", "slider_crank_state"]
+__all__ = ["slider_crank", "slider_crank_model", "slider_crank_solve", "slider_crank_state", "slider_crank_advance",
+           "slider_crank_reactions",
+           "dead_centre_at", "dead_centres_passed", "DEAD_CENTRES", "DEAD_CENTRE_TOL"]
+
+#: The crank angles ``ψ`` (rad) at which crank and rod lie in line with the slide (the y axis through the
+#: crank pivot, Fig 9.3): the toggle positions, where a force on the piston cannot turn the crank.
+DEAD_CENTRES = {"top dead centre": np.pi / 2, "bottom dead centre": -np.pi / 2}
+#: ``|cos ψ|`` below which the crank is said to be at a dead centre.
+DEAD_CENTRE_TOL = 0.02
 
 
 def slider_crank_model(m1=0.40, m2=0.15, m3=0.30, r=2.29, l=5.00, t=0.5, g=9.81):
@@ -227,7 +240,7 @@ def slider_crank(psi: float = 0.4, psidot: float = 20.0, m1: float = 0.40, m2: f
     Returns
     -------
     SceneResult
-        Parameters, model, state (q, qd, tau), the solved accelerations and contact forces, and drawing extras.
+        ``quantities`` as listed in the module docstring (every pin and bearing force included).
     """
     psi, psidot = check_param("psi", psi), check_param("psidot", psidot)
     drive = check_param("drive", drive, "choice", choices=("free", "constant-speed"))
@@ -245,8 +258,166 @@ def slider_crank(psi: float = 0.4, psidot: float = 20.0, m1: float = 0.40, m2: f
         "a3": _tolist(sol.a[6:9]), "a": _tolist(sol.a.reshape(3, 3)),
         "qdd": _tolist(sol.qdd), "tau_drive": _tolist(sol.tau_drive),
         "cond": float(sol.cond),
+        # every pin and bearing force of the loop (9.61): f_i on body i from its parent, -F_1 on the piston
+        "f": _tolist(sol.f.reshape(3, 3)), "mu": _tolist(sol.mu),
+        "pin_forces": {r.symbol: _tolist(r.wrench) for r in sol.reactions},
+        "reaction_moments": {r.symbol: float(r.moment) for r in sol.reactions},
     }
     params = dict(psi=psi, psidot=psidot, m1=m1, m2=m2, m3=m3, r=r, l=l, t=t, g=g, drive=drive)
     return SceneResult("slider-crank", params, model,
                        state={"q": _tolist(q), "qd": _tolist(qd), "tau": _tolist(tau)},
                        quantities=quantities, extra={"solution": sol})
+
+
+def dead_centre_at(psi, tol: float = DEAD_CENTRE_TOL) -> str:
+    """The name of the dead centre the crank is at (``|cos ψ| < tol``), or ``""``.
+
+    At ``ψ = 90°`` crank and rod are stretched in line and the piston is highest
+    (top dead centre); at ``ψ = -90°`` they are folded and it is lowest (bottom
+    dead centre).  Both are toggle positions: the piston's force passes through
+    the crank pivot and gives no torque.
+
+    Parameters
+    ----------
+    psi : float
+        Crank angle (rad), any turn.
+    tol : float
+        Threshold on ``|cos ψ|``.
+
+    Returns
+    -------
+    str
+        ``"top dead centre"``, ``"bottom dead centre"`` or ``""``.
+
+    Examples
+    --------
+    >>> dead_centre_at(np.pi / 2 + 2 * np.pi), dead_centre_at(-np.pi / 2 + 0.01), dead_centre_at(0.4)
+    ('top dead centre', 'bottom dead centre', '')
+    """
+    psi = float(psi)
+    if abs(np.cos(psi)) >= tol:
+        return ""
+    return "top dead centre" if np.sin(psi) > 0 else "bottom dead centre"
+
+
+def dead_centres_passed(psi0, psi1) -> list:
+    """The dead centres the crank passes turning from ``psi0`` to ``psi1`` (unwrapped angles), in the order passed.
+
+    A dead centre exactly at ``psi1`` counts as passed, one at ``psi0`` does not
+    (so consecutive frames never report one twice).
+
+    Parameters
+    ----------
+    psi0, psi1 : float
+        Crank angles (rad) before and after, not wrapped (``psi1 - psi0`` is the turn).
+
+    Returns
+    -------
+    list of (str, float)
+        Name (:data:`DEAD_CENTRES`) and the unwrapped angle at which it was passed.
+
+    Examples
+    --------
+    >>> [n for n, _ in dead_centres_passed(0.4, 0.4 + 2 * np.pi)]
+    ['top dead centre', 'bottom dead centre']
+    >>> dead_centres_passed(2.0, 1.0)
+    [('top dead centre', 1.5707963267948966)]
+    """
+    a, b = float(psi0), float(psi1)
+    lo, hi = min(a, b), max(a, b)
+    found = []
+    for name, c in DEAD_CENTRES.items():
+        k = np.ceil((lo - c) / (2 * np.pi))
+        while c + 2 * np.pi * k <= hi:
+            x = c + 2 * np.pi * k
+            if (b > a and a < x <= b) or (b < a and b <= x < a):
+                found.append((name, float(x)))
+            k += 1
+    return sorted(found, key=lambda nx: nx[1], reverse=b < a)
+
+
+def slider_crank_advance(model, psi, psidot, dt, r=2.29, l=5.00, drive="free", *, rtol=1e-8, atol=1e-10):
+    """Integrate the slider-crank over ``dt`` seconds from crank state ``(ψ, ψ̇)`` with :func:`simulate_loops`.
+
+    The loop is closed at ``(ψ, ψ̇)`` (:func:`slider_crank_state`), integrated
+    by the constrained algorithm (9.5) with the closures projected
+    (:func:`planargeo.simulate.loops.simulate_loops`), free or with the crank
+    driven at constant speed.  Play in the slider-crank explorer is one call per frame.
+
+    Parameters
+    ----------
+    model : Model
+        :func:`slider_crank_model` with the same ``r``, ``l``.
+    psi, psidot : float
+        Crank angle (rad) and speed (rad/s) at the start.
+    dt : float
+        Duration (s), > 0.
+    r, l : float
+        Crank and rod lengths.
+    drive : {"free", "constant-speed"}
+    rtol, atol : float
+        Integrator tolerances (DOP853).
+
+    Returns
+    -------
+    dict
+        ``psi``, ``psidot`` at the end (``psi`` unwrapped), ``position_residual`` and
+        ``velocity_residual`` (largest closure drift ``|φ|``, ``|J_c q̇|`` during the step, m and m/s),
+        ``dead_centres`` (:func:`dead_centres_passed`), ``events`` (the simulation's near-singular
+        events), ``nfev`` (dynamics evaluations), ``status``.
+
+    Raises
+    ------
+    SceneError
+        If ``dt`` is not positive, or the rod cannot reach the piston line.
+    SingularConfigurationError
+        If the start is a singular configuration.
+    PlanargeoError
+        If the integration stops at a singular configuration (its message).
+
+    Examples
+    --------
+    >>> m = slider_crank_model()
+    >>> out = slider_crank_advance(m, 0.4, 20.0, 0.01)
+    >>> out["status"], bool(out["position_residual"] < 1e-9), bool(0.5 < out["psi"] < 0.7)
+    ('ok', True, True)
+    """
+    from planargeo.errors import PlanargeoError
+    from planargeo.simulate.loops import simulate_loops
+
+    dt = check_param("dt", dt, positive=True)
+    drive = check_param("drive", drive, "choice", choices=("free", "constant-speed"))
+    q, qd = slider_crank_state(psi, psidot, r, l)
+    res = simulate_loops(model, q, qd, dt, rtol=rtol, atol=atol, progress=False,
+                         prescribed={0: 0.0} if drive == "constant-speed" else None)
+    if res.status != "ok":
+        raise PlanargeoError(f"the simulation stopped at t = {res.t[-1]:.4g} s: {res.message}")
+    psi1, psidot1 = float(res.q[-1][0]), float(res.qd[-1][0])
+    return {"psi": psi1, "psidot": psidot1,
+            "position_residual": float(np.max(res.extra["position_residual"], initial=0.0)),
+            "velocity_residual": float(np.max(res.extra["velocity_residual"], initial=0.0)),
+            "dead_centres": dead_centres_passed(psi, psi1), "events": list(res.events), "nfev": int(res.nfev),
+            "status": res.status}
+
+
+def slider_crank_reactions(sol) -> dict:
+    """Every pin and bearing force of a solved slider-crank, by symbol (thesis 9.61, 9.71).
+
+    Parameters
+    ----------
+    sol : LoopSolution
+        From :func:`slider_crank_solve`.
+
+    Returns
+    -------
+    dict
+        ``{"f_1": Reaction, "f_2": ..., "f_3": ..., "F_1": ...}``
+        (:class:`planargeo.algorithms.loops.Reaction`: ``point``, ``wrench``, ``moment``...).
+
+    Examples
+    --------
+    >>> _q, _qd, sol, _h = slider_crank_solve(slider_crank_model(), 0.4, 20.0, 2.29, 5.0, 0.5)
+    >>> sorted(slider_crank_reactions(sol)), round(slider_crank_reactions(sol)["F_1"].moment, 3)
+    (['F_1', 'f_1', 'f_2', 'f_3'], -11.961)
+    """
+    return {r.symbol: r for r in sol.reactions}

@@ -34,8 +34,9 @@ import numpy as np
 
 from planargeo.scenes import SceneResult, check_param, register
 
-__all__ = ["tree", "constrained_tree", "tree_model", "tree_solve", "tree_dof", "FIG91_PARENTS",
-           "FIG91_ANGLES"]
+__all__ = ["tree", "constrained_tree", "tree_model", "tree_solve", "tree_dof", "tree_pose", "tree_advance",
+           "tree_reactions",
+           "FIG91_PARENTS", "FIG91_ANGLES"]
 
 #: Parents of Fig 9.1 (0-based; -1 is the ground).
 FIG91_PARENTS = (-1, 0, 1, 2, 0, 4, 5, 5, 0)
@@ -227,7 +228,159 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
     sol = loop_solve(model, q, qd, tau)
     quantities = {"G": _tolist(sol.G), "Upsilon": _tolist(sol.Upsilon), "qdd": _tolist(sol.qdd),
                   "a": _tolist(sol.a.reshape(9, 3)), "u": _tolist(sol.u.reshape(9, 3)),
-                  "F": _tolist(sol.F.reshape(-1, 3)), "xi": _tolist(sol.xi), "cond": float(sol.cond)}
+                  "F": _tolist(sol.F.reshape(-1, 3)), "xi": _tolist(sol.xi), "cond": float(sol.cond),
+                  # every pin force of the closed tree (9.61): f_i on body i from its parent through joint i
+                  "f": _tolist(sol.f.reshape(9, 3)), "mu": _tolist(sol.mu.reshape(9, 2))}
     return SceneResult("constrained-tree", dict(mass=mass, length=length, g=g, speed=speed), model,
                        state={"q": _tolist(q), "qd": _tolist(qd), "tau": _tolist(tau)},
                        quantities=quantities, extra={"solution": sol})
+
+
+def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
+    """A state of the (constrained) tree with body 1 at ``root_angle``: the loops closed, the speed pattern projected.
+
+    Positions: ``q_start`` (default: the pose of Fig 9.1/9.2) with joint 1 set to
+    ``root_angle`` (and body 2 to the absolute angle ``angle2`` if given) and the
+    other joints moved by Gauss-Newton until the pins close
+    (:func:`planargeo.simulate.loops.project_state` with those joints fixed,
+    9.54 in positions).  Velocities: ``speed`` times the scene's joint-speed
+    pattern, minus its part that breaks the loops (least squares, as the
+    ``"constrained-tree"`` scene), so at ``root_angle = 90°`` and the default
+    pose this is the scene's state.
+
+    Parameters
+    ----------
+    model : Model
+        :func:`tree_model`, with or without the pins of Fig 9.2.
+    root_angle : float
+        Absolute angle of body 1 (rad).
+    speed : float
+        Scale of the joint-speed pattern (rad/s).
+    q_start : array_like (9,), optional
+        Where to start the closure (the last pose shown, for a continuous drag).
+    angle2 : float, optional
+        Absolute angle of body 2 (rad); None: body 2 keeps its angle relative to body 1.
+
+    Returns
+    -------
+    q, qd : ndarray (9,)
+
+    Raises
+    ------
+    SceneError
+        If the loops cannot be closed with body 1 at that angle (the pins out of reach).
+
+    Examples
+    --------
+    >>> closed = constrained_tree()
+    >>> q, qd = tree_pose(closed.model, np.pi / 2)
+    >>> bool(np.allclose(q, closed.state["q"])), bool(np.allclose(qd, closed.state["qd"]))
+    (True, True)
+    """
+    from planargeo.errors import SceneError
+    from planargeo.simulate.loops import closure_jacobian, closure_residual, project_state
+
+    root_angle, speed = check_param("root_angle", root_angle), check_param("speed", speed)
+    q = _default_q() if q_start is None else np.array(q_start, dtype=float)
+    q[0] = root_angle
+    fixed = [0]
+    if angle2 is not None:
+        q[1] = check_param("angle2", angle2) - root_angle
+        fixed = [0, 1]
+    qd = speed * _QD_PATTERN
+    if model.contacts:
+        q, _ = project_state(model, q, np.zeros(9), fixed=fixed, tol=1e-13, max_iter=50)
+        if not np.abs(closure_residual(model, q)).max() < 1e-9:
+            where = f"body 1 at {np.degrees(root_angle):.4g}°" + (
+                "" if angle2 is None else f" and body 2 at {np.degrees(angle2):.4g}°")
+            raise SceneError(f"the loops of Fig 9.2 cannot close with {where}: the pins are out of reach")
+        Jc = closure_jacobian(model, q)
+        qd = qd - np.linalg.pinv(Jc) @ (Jc @ qd)
+    return q, qd
+
+
+def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10):
+    """Integrate the tree (loops closed by its contacts, if any) over ``dt`` seconds (9.5 with :func:`simulate_loops`).
+
+    Parameters
+    ----------
+    model : Model
+        :func:`tree_model`.
+    q, qd : array_like (9,)
+        The state at the start (on the loops).
+    dt : float
+        Duration (s), > 0.
+    rtol, atol : float
+        Integrator tolerances (DOP853).
+
+    Returns
+    -------
+    dict
+        ``q``, ``qd`` at the end, ``position_residual``, ``velocity_residual`` (largest closure
+        drift during the step, m and m/s), ``events`` (near-singular configurations passed),
+        ``nfev``, ``status``.
+
+    Raises
+    ------
+    SceneError
+        If ``dt`` is not positive.
+    PlanargeoError
+        If the integration stops (a singular configuration: its message).
+
+    Examples
+    --------
+    >>> closed = constrained_tree()
+    >>> out = tree_advance(closed.model, closed.state["q"], closed.state["qd"], 0.01)
+    >>> out["status"], bool(out["position_residual"] < 1e-9)
+    ('ok', True)
+    """
+    from planargeo.errors import PlanargeoError
+    from planargeo.simulate.loops import simulate_loops
+
+    dt = check_param("dt", dt, positive=True)
+    res = simulate_loops(model, q, qd, dt, rtol=rtol, atol=atol, progress=False)
+    if res.status != "ok":
+        raise PlanargeoError(f"the simulation stopped at t = {res.t[-1]:.4g} s: {res.message}")
+    return {"q": np.array(res.q[-1], dtype=float), "qd": np.array(res.qd[-1], dtype=float),
+            "position_residual": float(np.max(res.extra["position_residual"], initial=0.0)),
+            "velocity_residual": float(np.max(res.extra["velocity_residual"], initial=0.0)),
+            "events": list(res.events), "nfev": int(res.nfev), "status": res.status}
+
+
+def tree_reactions(model, sol) -> list:
+    """Every pin force of the tree: a :class:`~planargeo.algorithms.loops.Reaction` per joint, then per contact.
+
+    The joints' wrenches ``f`` on each body from its parent (9.61 with the loops
+    closed, 9.41 for the open tree) and the contacts' ``-F`` on body ``a`` (9.71).
+
+    Parameters
+    ----------
+    model : Model
+    sol : LoopSolution or StackedSolution
+        From :func:`tree_solve` on ``model``.
+
+    Returns
+    -------
+    list of Reaction
+
+    Examples
+    --------
+    >>> closed = constrained_tree()
+    >>> [r.symbol for r in tree_reactions(closed.model, closed.extra["solution"])][-3:]
+    ['f_9', 'F_1', 'F_2']
+    >>> open_ = tree()
+    >>> len(tree_reactions(open_.model, open_.extra["solution"]))
+    9
+    """
+    from planargeo.algorithms.loops import Reaction
+
+    if hasattr(sol, "reactions"):
+        return list(sol.reactions)
+    out = []
+    fw = np.asarray(sol.f, dtype=float).reshape(model.N, 3)
+    for i, jt in enumerate(model.joints):
+        P = sol.data.pose[i, :2].astype(float)
+        w = fw[i].copy()
+        out.append(Reaction(f"f_{i + 1}", jt.name, jt.kind, i, model.parents[i], P, w,
+                            float(w[2] + P[1] * w[0] - P[0] * w[1])))
+    return out

@@ -103,6 +103,18 @@ def closure_residual(model: Model, q, contacts=None) -> np.ndarray:
     (9.54): the relative pose of the two contact frames, resolved along the
     reaction space ``B`` (9.59-9.60), so ``φ̇ = Bᵀ G v``.
 
+    Parameters
+    ----------
+    model : Model
+    q : array_like (nq,)
+    contacts : sequence of Contact, optional
+        Default ``model.contacts``.
+
+    Returns
+    -------
+    ndarray
+        One residual per constrained contact direction (m, rad).
+
     Examples
     --------
     >>> from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
@@ -122,6 +134,16 @@ def closure_jacobian(model: Model, q, contacts=None) -> np.ndarray:
 
     ``J`` stacks the body Jacobians (Remark 8); ``Bᵀ G J q̇ = Bᵀ z θ̇ = 0``
     on the manifold because ``zᵀ B = 0`` (9.60).
+
+    Parameters
+    ----------
+    model : Model
+    q : array_like (nq,)
+    contacts : sequence of Contact, optional
+
+    Returns
+    -------
+    ndarray (nc, nq)
 
     Examples
     --------
@@ -167,6 +189,27 @@ def project_state(model: Model, q, qd, contacts=None, *, fixed=(), tol: float = 
     Velocities: mass-weighted projection onto ``J_c q̇ = 0``.  Coordinates in
     ``fixed`` (indices into ``q``, e.g. driven joints) are left unchanged.
 
+    Parameters
+    ----------
+    model : Model
+    q, qd : array_like (nq,)
+    contacts : sequence of Contact, optional
+    fixed : sequence of int
+        Coordinates the projection must not change.
+    tol : float
+        Position tolerance.
+    max_iter : int
+        Gauss-Newton iterations at most.
+
+    Returns
+    -------
+    q, qd : ndarray (nq,)
+
+    Raises
+    ------
+    InputError
+        For a bad ``tol``, ``max_iter`` or ``fixed``.
+
     Examples
     --------
     >>> from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
@@ -200,6 +243,20 @@ def baumgarte(model: Model, contacts=None, alpha: float = 5.0, beta: float = 5.0
     The accelerations from the loop algorithm satisfy ``φ̈ = 0`` (the contact
     acceleration condition 9.68-9.69); the hook adds the mass-weighted
     correction ``-H^{-1} J_c^T (J_c H^{-1} J_c^T)^{-1} (2α J_c q̇ + β² φ)``.
+
+    Parameters
+    ----------
+    model : Model
+    contacts : sequence of Contact, optional
+    alpha, beta : float
+        Damping and stiffness rates (1/s), non-negative.
+    fixed : sequence of int
+        Coordinates left unchanged (driven joints).
+
+    Returns
+    -------
+    callable
+        ``stabilize(t, q, qd, qdd) -> qdd`` for :func:`planargeo.simulate.simulate`.
 
     Examples
     --------
@@ -249,6 +306,8 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
     ----------
     model : Model
         Spanning tree; ``model.contacts`` closes the loops unless ``contacts`` is given.
+    contacts : sequence of Contact, optional
+        The contacts closing the loops (default ``model.contacts``).
     q0, qd0 : array_like (nq,)
         Initial state (projected onto the constraint manifold first when
         ``project_initial``; with ``stabilization="none"`` it is used as given).
@@ -298,6 +357,12 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
         ``extra["position_residual"]`` and ``extra["velocity_residual"]`` their
         maxima per step, ``extra["n_position"]`` the number of position residuals;
         ``cond`` and ``events`` the watched condition number and the singular events.
+
+    Raises
+    ------
+    InputError
+        An unknown ``stabilization``, a projection with a multistep method, negative
+        ``alpha``/``beta``, bad tolerances, or ``prescribed`` not a dict of joint indices.
 
     Examples
     --------

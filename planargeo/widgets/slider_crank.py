@@ -1,22 +1,29 @@
-"""Slider-crank explorer: a closed kinematic loop (thesis 9.4-9.6, Fig 9.3).
+"""Slider-crank explorer: a closed kinematic loop and every force inside it (thesis 9.3-9.6, 9.61, Fig 9.3).
 
-The crank angle and speed set the state; the loop closure gives the rod and
-piston angles.  The constrained algorithm (scene ``"slider-crank"``,
-:func:`planargeo.algorithms.loops.loop_solve`) gives the contact force
-``F3 = B3 ξ3`` of the slider (a line: the wrench that keeps the piston on its
-guide) and the closed-loop accelerations (points), with the crank free or
-driven at constant speed.
+The crank angle ``ψ`` and speed ``ψ̇`` set the state; the loop closure gives the
+rod and piston angles ``θ``, ``φ``.  The constrained algorithm
+(:func:`planargeo.scenes.slider_crank.slider_crank_solve`, the scene's own solve)
+gives the closed-loop accelerations and **every pin and bearing force of the
+loop** (9.61, :attr:`planargeo.algorithms.loops.LoopSolution.reactions`): ``f₁``
+at the crank pivot, ``f₂`` at the crank pin, ``f₃`` at the wrist pin (each the
+wrench on a body from its parent) and ``F₃`` at the slider bearing (``-F₃`` on
+the piston, 9.71).  Each is drawn as its line of action through its joint with
+an arrow of the force and a label, placed clear of the other labels; the
+readout gives their magnitudes (N), the bearing's couple and the drive torque.
 
-A dead-centre position (crank in line with the slider) is flagged on the
-figure; a configuration that cannot be assembled (rod too short) or whose loop
-closure is singular (rod along the horizontal when ``l = r``) shows a message
-and keeps the last good drawing.  The loop is closed and solved by
-:func:`planargeo.scenes.slider_crank.slider_crank_solve`, the scene's own solve
-(so the widget reports the folded dead centre, ``l = r`` at ``ψ = 180°``, as the
-scene does).
+*Play* integrates the mechanism with :func:`planargeo.simulate.loops.simulate_loops`
+(one :func:`~planargeo.scenes.slider_crank.slider_crank_advance` per frame),
+free or with the crank driven at constant speed, in slow motion
+(:attr:`SliderCrankExplorer.time_scale` scene seconds per second at speed 1×);
+the overlays follow every frame, the readout shows the energy and its drift
+since Play started (free crank) and the closure drift ``|φ|`` of the last
+frame, and names the dead centres (toggle positions: crank and rod in line) as
+the crank passes them.
 
-The model is kept per rod length and gravity (a crank move only re-solves the
-loop), and the pole checkboxes only redraw.
+Handles: drag the crank pin (sets ``ψ``) or the piston (sets its height; the
+crank keeps its side).  A configuration that cannot be assembled (rod too
+short, piston out of reach) or whose loop closure is singular is refused: the
+last good state stays and the message names the reason.
 """
 from __future__ import annotations
 
@@ -25,137 +32,628 @@ import math
 import ipywidgets as W
 import numpy as np
 from matplotlib.lines import Line2D
-from matplotlib.patches import Rectangle
+from matplotlib.patches import FancyArrowPatch, Rectangle
 
 from planargeo import scenes
-from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_solve
-from planargeo.draw.artists import LineArtist, PointArtist
+from planargeo.draw.artists import PointArtist, point_xy
 from planargeo.draw.mechanism import draw_ground
-from planargeo.draw.style import COLORS
-from planargeo.widgets.base import Explorer, Step, cached
+from planargeo.draw.style import COLORS, OKABE_ITO
+from planargeo.errors import InputError, SceneError
+from planargeo.scenes.slider_crank import (DEAD_CENTRE_TOL, dead_centre_at, slider_crank_advance,
+                                           slider_crank_model, slider_crank_reactions, slider_crank_solve)
+from planargeo.simulate.integrate import energy
+from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["SliderCrankExplorer"]
 
-#: |cos ψ| below which the crank is said to be at a dead centre
-DEAD_CENTRE_TOL = 0.02
+#: Font size (points) of the labels drawn on the figure (12.5 px at the explorers' 100 dpi).
+LABEL_PT = 9.0
+#: Colour of contact (loop-closing) forces, apart from the joints' reaction green (Okabe-Ito purple).
+CONTACT_COLOR = OKABE_ITO["purple"]
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def symbol_text(sym: str) -> str:
+    """``"f_2"`` -> ``"f₂"``: a reaction's symbol as drawn.
+
+    Parameters
+    ----------
+    sym : str
+
+    Returns
+    -------
+    str
+    """
+    return sym.replace("_", "").translate(_SUB)
+
+
+class ReactionGlyph:
+    """One reaction drawn at its joint: a stretch of its line of action, the force arrow, a label.
+
+    Attributes ``wrench`` and ``point`` hold what is drawn, ``foot`` where the arrow sits.
+
+    The arrow (``scale`` data units per newton) is centred on the foot of the
+    joint on the line of action (the joint itself for a free pin, whose line
+    passes through it); the line of action is drawn ``reach`` data units either
+    side.  A dotted connector joins the joint to that foot when the reaction has
+    a moment about the joint (a drive torque, a bearing's couple).
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    label : str
+        The thesis symbol drawn next to the arrow.
+    color : str, optional
+    reach : float
+        Half-length of the drawn line of action (data units).
+    legend : str, optional
+        Entry in the explorer's key (one per kind of force, not per glyph).
+    """
+
+    def __init__(self, ax, label: str, color: str | None = None, reach: float = 1.2, legend: str | None = None):
+        color = color or COLORS["reaction"]
+        self.reach = float(reach)
+        self.line = Line2D([], [], color=color, lw=1.0, ls="--", zorder=8, label=legend or "_nolegend_")
+        self.link = Line2D([], [], color=color, lw=0.8, ls=":", zorder=8)
+        self.arrow = FancyArrowPatch((0, 0), (0, 0), arrowstyle="-|>", mutation_scale=11, color=color, lw=2.0,
+                                     shrinkA=0, shrinkB=0, zorder=9)
+        ax.add_line(self.line)
+        ax.add_line(self.link)
+        ax.add_patch(self.arrow)
+        self.text = ax.annotate(label, (0.0, 0.0), xytext=(6, 6), textcoords="offset points", fontsize=LABEL_PT,
+                                color=color, zorder=12, annotation_clip=True)
+        self.foot = np.zeros(2)
+        self.point = np.zeros(2)
+        self.wrench = np.zeros(3)
+        self.visible = True
+
+    def update(self, point, wrench, scale: float) -> None:
+        """Place the glyph for the reaction ``wrench`` (``[fx, fy, τ_o]``, N) at joint ``point``.
+
+        Parameters
+        ----------
+        point : (float, float)
+            The joint (data coordinates).
+        wrench : array_like (3,)
+            The reaction wrench at the origin.
+        scale : float
+            Arrow length per newton (data units).
+        """
+        p = np.asarray(point, dtype=float)
+        self.wrench = np.array(wrench, dtype=float)
+        self.point = p
+        fx, fy, tz = (float(x) for x in wrench)
+        F = math.hypot(fx, fy)
+        if F == 0.0:
+            self.foot = p
+            for a in (self.line, self.link):
+                a.set_data([], [])
+            self.arrow.set_positions(tuple(p), tuple(p))
+            self.text.xy = tuple(p)
+            return
+        e = np.array([fx, fy]) / F
+        # the line tz + y fx - x fy = 0 (4.27): foot of p on it
+        m_p = tz + p[1] * fx - p[0] * fy                  # moment about p (the line's value at p)
+        foot = p - (m_p / F) * np.array([-e[1], e[0]])    # the gradient of the line's value is (-fy, fx)
+        self.foot = foot
+        ends = np.array([foot - self.reach * e, foot + self.reach * e])
+        self.line.set_data(ends[:, 0], ends[:, 1])
+        if np.hypot(*(foot - p)) > 1e-9:
+            self.link.set_data([p[0], foot[0]], [p[1], foot[1]])
+        else:
+            self.link.set_data([], [])
+        half = 0.5 * scale * F * e
+        self.arrow.set_positions(tuple(foot - half), tuple(foot + half))
+        self.text.xy = tuple(foot)
+
+    def set_visible(self, on: bool) -> None:
+        """Show or hide the glyph (line, connector, arrow and label)."""
+        self.visible = bool(on)
+        for a in (self.line, self.link, self.arrow, self.text):
+            a.set_visible(self.visible)
+
+
+def place_labels(ax, items, obstacles=(), fontsize: float = LABEL_PT, covered=()) -> None:
+    """Put each label next to its anchor where it overlaps no other label or obstacle and stays in the axes.
+
+    ``items`` are ``(label, anchor)`` or ``(label, anchor, text)``: a matplotlib
+    ``Annotation`` (offset in points from its ``xy``) or a
+    :class:`~planargeo.draw.artists.PointArtist` (its label's offset and alignment;
+    give its ``text``), and the data point it labels.  Candidate places are tried
+    around the anchor (8 directions, 7, 16, 28, 42 then 58 points away); the first
+    free one wins, else the least crowded (slid into the axes if need be).  Text
+    boxes are estimated from the font size (no drawing needed).  A label whose
+    point is out of view is skipped (an annotation is clipped; a point artist's
+    label is emptied until its point is back in view).
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    items : sequence of tuples
+        Labels in order of priority.
+    obstacles : sequence of (x0, y0, x1, y1)
+        Display-coordinate boxes to keep clear (pins, other texts).
+    fontsize : float
+        Font size (points) used to estimate the label boxes.
+    covered : sequence of (x0, y0, x1, y1)
+        Display boxes drawn over the plot (the key): a label whose point lies under one is
+        not shown (its point is hidden too), and the box is kept clear of the others.
+    """
+    fig = ax.figure
+    ppt = fig.dpi / 72.0
+    box = ax.bbox
+    taken = [tuple(o) for o in obstacles] + [tuple(o) for o in covered]
+    dirs = [(1, 1), (-1, 1), (1, -1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1)]
+    for item in items:
+        obj, anchor = item[0], item[1]
+        annotation = hasattr(obj, "xyann")
+        if annotation:                        # its own text, kept while it is blanked under the key
+            if not hasattr(obj, "_planargeo_label") or obj.get_text():
+                obj._planargeo_label = obj.get_text()
+            label = obj._planargeo_label
+        else:
+            label = item[2] if len(item) > 2 else ""
+        if not annotation and anchor is None:
+            obj.set_text(label)               # an ideal point: the artist labels its direction at the edge
+            continue
+        if not obj.get_visible() or not label or anchor is None:
+            continue
+        a = ax.transData.transform(np.asarray(anchor, dtype=float))
+        inside = bool(np.all(np.isfinite(a))) and box.x0 <= a[0] <= box.x1 and box.y0 <= a[1] <= box.y1
+        under = inside and any(c[0] <= a[0] <= c[2] and c[1] <= a[1] <= c[3] for c in covered)
+        obj.set_text("" if under or (not inside and not annotation) else label)
+        if not inside or under:
+            continue                          # out of view, or under the key: not labelled here
+        n = len(label)
+        w, h = (0.62 * n * fontsize + 3) * ppt, 1.25 * fontsize * ppt
+        best, best_bad = None, math.inf
+        for dist in (7.0, 16.0, 28.0, 42.0, 58.0):
+            for ux, uy in dirs:
+                u = np.array([ux, uy], dtype=float) / math.hypot(ux, uy)
+                off = dist * u
+                cx, cy = a + off * ppt
+                ha = "left" if u[0] > 0.35 else "right" if u[0] < -0.35 else "center"
+                va = "bottom" if u[1] > 0.35 else "top" if u[1] < -0.35 else "center"
+                x0 = cx if ha == "left" else cx - w if ha == "right" else cx - w / 2
+                y0 = cy if va == "bottom" else cy - h if va == "top" else cy - h / 2
+                bb = (x0 - 2.5, y0 - 2.5, x0 + w + 2.5, y0 + h + 2.5)
+                bad = sum(max(0.0, min(bb[2], o[2]) - max(bb[0], o[0])) * max(0.0, min(bb[3], o[3]) - max(bb[1], o[1]))
+                          for o in taken)
+                if bb[0] < box.x0 + 2 or bb[2] > box.x1 - 2 or bb[1] < box.y0 + 2 or bb[3] > box.y1 - 2:
+                    bad += 1e9
+                if bad < best_bad:
+                    best, best_bad = (off, ha, va, bb), bad
+                if bad == 0:
+                    break
+            if best_bad == 0:
+                break
+        off, ha, va, bb = best
+        # still out of the axes (a crowded edge): slide it in
+        dx = max(0.0, box.x0 + 2 - bb[0]) - max(0.0, bb[2] - (box.x1 - 2))
+        dy = max(0.0, box.y0 + 2 - bb[1]) - max(0.0, bb[3] - (box.y1 - 2))
+        if dx or dy:
+            off = off + np.array([dx, dy]) / ppt
+            bb = (bb[0] + dx, bb[1] + dy, bb[2] + dx, bb[3] + dy)
+        if annotation:
+            obj.set_position((float(off[0]), float(off[1])))
+            obj.set_horizontalalignment(ha)
+            obj.set_verticalalignment(va)
+        else:
+            obj.set_text_offset((float(off[0]), float(off[1])))
+            obj.set_text_alignment(ha, va)
+        taken.append(bb)
+
+
+def wrap_message(text: str, width: int = 38) -> str:
+    """``text`` broken into lines of at most ``width`` characters, so that a figure message stays in the axes.
+
+    Parameters
+    ----------
+    text : str
+    width : int
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> print(wrap_message("singular configuration: the rod lies along the horizontal"))
+    singular configuration: the rod lies
+    along the horizontal
+    """
+    import textwrap
+
+    return "\n".join(textwrap.wrap(text, width)) or text
+
+
+def key_box(ax, on: bool, fontsize: float = 8.5):
+    """Estimated display box of the explorer's key (legend, upper left) when it is ``on``, for labels to avoid.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    on : bool
+        Whether the "key" control is on.
+    fontsize : float
+        The key's font size (points).
+
+    Returns
+    -------
+    list of tuple
+        ``[(x0, y0, x1, y1)]`` in display coordinates, or ``[]`` when the key is off or empty.
+    """
+    if not on:
+        return []
+    from planargeo.draw.artists import legend_handles
+
+    labels = [h.get_label() for h in legend_handles(ax)]
+    if not labels:
+        return []
+    ppt = ax.figure.dpi / 72.0
+    box = ax.bbox
+    w = (0.62 * max(len(s) for s in labels) + 3.2) * fontsize * ppt
+    h = (len(labels) * 1.75 + 0.8) * fontsize * ppt
+    pad = 0.3 * fontsize * ppt
+    return [(box.x0, box.y1 - h - pad, box.x0 + w + pad, box.y1)]
+
+
+def pin_box(ax, xy, r_px: float = 6.0):
+    """Display-coordinate box ``(x0, y0, x1, y1)`` of ``r_px`` pixels around the data point ``xy``.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    xy : (float, float)
+    r_px : float
+
+    Returns
+    -------
+    tuple of float
+    """
+    x, y = ax.transData.transform(np.asarray(xy, dtype=float))
+    return (x - r_px, y - r_px, x + r_px, y + r_px)
 
 
 class SliderCrankExplorer(Explorer):
-    """Slider-crank of thesis 9.6: contact force line and closed-loop accelerations."""
+    """Slider-crank of thesis 9.6: every pin and bearing force (9.61), Play through ``simulate_loops``.
 
-    title = "Slider-crank: a closed loop"
+    Parameters
+    ----------
+    **kw
+        Passed to :class:`~planargeo.widgets.base.Explorer` (``display``, initial control values...).
+
+    Raises
+    ------
+    InputError
+        An unknown control or a bad initial value (:class:`~planargeo.widgets.base.Explorer`).
+    PlanargeoError
+        The initial values describe a configuration that cannot be assembled.
+
+    Examples
+    --------
+    >>> ex = SliderCrankExplorer(display="agg")
+    >>> round(ex.readout_values["piston height h"], 3), ex.units["piston height h"]
+    (5.925, 'm')
+    >>> _ = ex.advance(3)                                 # three Play frames of the free crank
+    >>> abs(ex.readout_values["energy drift ΔE/E₀"]) < 1e-6
+    True
+    """
+
+    title = "Slider-crank: a closed loop and its pin and bearing forces"
     slug = "slider-crank"
-    figsize = (5.4, 6.0)
+    figsize = (5.6, 6.2)
     limits = (-4.5, 4.5, -3.5, 9.0)
-    display_controls = ("velocity poles", "acceleration poles")
+    display_controls = ("reaction forces", "velocity poles", "acceleration poles")
+    #: scene seconds per second of Play at speed 1× (slow motion: the crank turns at ~20 rad/s)
+    time_scale = 0.1
+    #: relative tolerance of the Play integration (DOP853; energy drift ~1e-8 per crank turn)
+    play_rtol = 1e-7
+    units = {"crank angle (deg)": "°", "rod angle θ": "°", "piston angle φ": "°", "piston height h": "m",
+             "piston speed": "m/s", "piston acceleration": "m/s²", "ψ̈ crank": "rad/s²",
+             "|f₁| crank pivot": "N", "|f₂| crank pin": "N", "|f₃| wrist pin": "N", "|F₃| slider bearing": "N",
+             "bearing couple": "N·m", "drive torque Q₁": "N·m", "energy E": "J", "energy drift ΔE/E₀": "—",
+             "closure drift |φ|": "m", "t": "s", "dead centre": "—", "configuration": "—",
+             "last dead centre passed": "—"}
 
     def __init__(self, **kw):
         p = scenes.parameters("slider-crank")     # the thesis 9.6 masses and lengths
         self.params = {k: p[k] for k in ("m1", "m2", "m3", "r", "t")}
+        self.scale = float(p["l"])
         self._models: dict = {}
+        self._frame_pending = None                # values a Play frame asked for, and what it measured
+        self._run = {"t": 0.0, "E0": None, "drift": 0.0, "last": "", "passed_at": None}
         super().__init__(**kw)
 
     def model_for(self, l: float, g: float):
-        """The slider-crank model for rod length ``l`` and gravity ``g`` (kept per pair)."""
+        """The slider-crank model for rod length ``l`` and gravity ``g`` (kept per pair).
+
+        Parameters
+        ----------
+        l, g : float
+            Rod length (m) and gravity (m/s²).
+
+        Returns
+        -------
+        Model
+        """
         return cached(self._models, (l, g), lambda: slider_crank_model(l=l, g=g, **self.params))
 
     def make_controls(self):
+        """The controls: crank angle and speed, drive, rod length, gravity and the overlays.
+
+        Returns
+        -------
+        dict
+        """
         return {
             "crank angle (deg)": Step(-180, 180, 1, math.degrees(0.4),
-                                      "crank angle (deg)").make("crank angle (deg)"),
-            "crank speed": Step(-40, 40, 0.5, 20.0, "crank speed (rad/s)").make("crank speed"),
-            "drive": W.ToggleButtons(options=("free", "constant-speed"), value="free",
-                                     description="crank"),
-            "rod length": Step(1.0, 8.0, 0.01, 5.0, "rod length l").make("rod length"),
-            "gravity": Step(0.0, 20.0, 0.1, 9.81, "g").make("gravity"),
+                                      "crank angle ψ (°)").make("crank angle (deg)"),
+            "crank speed": Step(-100, 100, 0.5, 20.0, "crank speed ψ̇ (rad/s)").make("crank speed"),
+            "drive": W.ToggleButtons(options=("free", "constant-speed"), value="free", description="crank"),
+            "rod length": Step(1.0, 8.0, 0.01, 5.0, "rod length l (m)").make("rod length"),
+            "gravity": Step(0.0, 20.0, 0.01, 9.81, "g (m/s²)").make("gravity"),
+            "reaction forces": W.Checkbox(value=True, description="pin and bearing forces", indent=False),
             "velocity poles": W.Checkbox(value=False, description="velocity poles", indent=False),
-            "acceleration poles": W.Checkbox(value=True, description="acceleration poles",
-                                             indent=False),
+            "acceleration poles": W.Checkbox(value=False, description="acceleration poles", indent=False),
         }
 
     def make_artists(self, ax):
+        """Guide, ground, links, piston, reaction glyphs, poles and labels (built once).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+        """
         self.guide = Line2D([-0.35, -0.35, np.nan, 0.35, 0.35], [-20, 20, np.nan, -20, 20],
                             color=COLORS["ground"], lw=1.0, ls="--", zorder=1)
         ax.add_line(self.guide)
         draw_ground((0.0, -0.15), ax, width=0.9, zorder=1)
-        self.crank = Line2D([], [], color=COLORS["ground"], lw=4, solid_capstyle="round", zorder=5)
-        self.rod = Line2D([], [], color=COLORS["body"], lw=3, solid_capstyle="round", zorder=5)
+        self.crank = Line2D([], [], color=COLORS["ground"], lw=4, solid_capstyle="round", zorder=5, label="crank 1")
+        self.rod = Line2D([], [], color=COLORS["body"], lw=3, solid_capstyle="round", zorder=5, label="rod 2")
         self.pins = Line2D([], [], ls="none", marker="o", ms=5, mfc="white", mec="black", zorder=6)
         for a in (self.crank, self.rod, self.pins):
             ax.add_line(a)
-        self.piston = Rectangle((-0.3, 0), 0.6, 1.0, fc=COLORS["body"], ec="black", alpha=0.6,
-                                zorder=4)
+        self.piston = Rectangle((-0.3, 0), 0.6, 1.0, fc=COLORS["body"], ec="black", alpha=0.6, zorder=4,
+                                label="piston 3")
         ax.add_patch(self.piston)
+        kw = dict(fontsize=LABEL_PT, color="#303030", zorder=12, textcoords="offset points", xytext=(6, 6),
+                  annotation_clip=True)
+        self.body_labels = [ax.annotate(s, (0.0, 0.0), **kw) for s in ("1", "2", "3")]
+        self.joint_labels = [ax.annotate(s, (0.0, 0.0), **kw) for s in ("ψ", "θ", "φ")]
+        self.glyphs = {s: ReactionGlyph(ax, symbol_text(s), legend="pin force f_i (9.61)" if s == "f_1" else None)
+                       for s in ("f_1", "f_2", "f_3")}
+        self.glyphs["F_1"] = ReactionGlyph(ax, "F₃", color=CONTACT_COLOR, legend="bearing force F₃ (9.71)")
+        self.glyphs["F_1"].text.set_text("F₃")          # the thesis calls the slider's force F₃ (9.84)
         z = np.array([0.0, 0.0, 1.0])
-        self.contact = ax.add_artist(LineArtist([1.0, 0.0, 0.0], role="reaction", scale=0.02,
-                                                text="F3", corner="lower left"))
         self.v_art = [ax.add_artist(PointArtist(z, role="twist", glyph_scale=0.5, text=f"v{i + 1}"))
                       for i in range(3)]
         self.a_art = [ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.05, text=f"a{i + 1}"))
                       for i in range(3)]
+        self.banner = ax.text(0.98, 0.98, "", transform=ax.transAxes, ha="right", va="top", fontsize=LABEL_PT + 1,
+                              color="#7a3d00", zorder=20, fontweight="bold")
 
+    # ----------------------------------------------------------------- handles
+    def handles(self):
+        """Drag the crank pin (sets ψ) or the piston (sets its height, the crank keeps its side).
+
+        Returns
+        -------
+        list of Handle
+        """
+        def pin():
+            return None if self.state is None else tuple(self.state["sol"].data.pose[1, :2])
+
+        def piston():
+            return None if self.state is None else tuple(self.state["sol"].data.pose[2, :2])
+
+        def drag_pin(x, y):
+            if math.hypot(x, y) < 1e-9:
+                raise InputError("the crank pin cannot be dragged onto the crank pivot: no crank angle there")
+            return {"crank angle (deg)": math.degrees(math.atan2(y, x))}
+
+        def drag_piston(x, y):
+            r, l = self.params["r"], float(self.values["rod length"])
+            if abs(y) < 1e-9:
+                raise SceneError("the wrist pin cannot be on the crank pivot's level here (the rod would lie "
+                                 "along the slide's normal)")
+            # crank pin p on |p| = r and |p - (0, y)| = l
+            py = (r * r - l * l + y * y) / (2 * y)
+            if abs(py) > r:
+                raise SceneError(f"the piston cannot reach height {y:.4g} m: the wrist pin must stay between "
+                                 f"{abs(l - r):.4g} and {l + r:.4g} m from the crank pivot")
+            side = 1.0 if math.cos(math.radians(self.values["crank angle (deg)"])) >= 0 else -1.0
+            px = side * math.sqrt(max(r * r - py * py, 0.0))
+            return {"crank angle (deg)": math.degrees(math.atan2(py, px))}
+
+        return [Handle("crank pin", pin, drag_pin), Handle("piston", piston, drag_piston)]
+
+    # -------------------------------------------------------------------- Play
+    def play_step(self, values, dt):
+        """One Play frame: ``dt × time_scale`` scene seconds through ``simulate_loops``.
+
+        Parameters
+        ----------
+        values : dict
+            The shown control values.
+        dt : float
+            Seconds of Play (the base's ``speed / play_fps``).
+
+        Returns
+        -------
+        dict
+            The new crank angle (wrapped to ±180°) and speed.
+
+        Raises
+        ------
+        PlanargeoError
+            If the integration stops at a singular configuration (Play stops with its message).
+        """
+        self._frame_pending = None
+        l, g = float(values["rod length"]), float(values["gravity"])
+        h = float(dt) * self.time_scale
+        psi = math.radians(values["crank angle (deg)"])
+        out = slider_crank_advance(self.model_for(l, g), psi, float(values["crank speed"]), h,
+                                   self.params["r"], l, values["drive"], rtol=self.play_rtol,
+                                   atol=self.play_rtol * 1e-2)
+        deg = (math.degrees(out["psi"]) + 180.0) % 360.0 - 180.0
+        new = {"crank angle (deg)": deg, "crank speed": out["psidot"]}
+        self._frame_pending = (new, h, out)
+        return new
+
+    # ------------------------------------------------------------------ state
     def compute(self, v, changed):
+        """Close the loop at the crank state and solve it (9.5), with every reaction (9.61).
+
+        Parameters
+        ----------
+        v : dict
+            Control values.
+        changed : set of str
+            Controls changed since the last state.
+
+        Returns
+        -------
+        dict
+            The state drawn by :meth:`render`.
+
+        Raises
+        ------
+        SceneError, SingularConfigurationError
+            A configuration that cannot be assembled, or a singular loop closure.
+        """
         psi = math.radians(v["crank angle (deg)"])
         l, g = float(v["rod length"]), float(v["gravity"])
         r, t = self.params["r"], self.params["t"]
         model = self.model_for(l, g)
         q, qd, sol, h = slider_crank_solve(model, psi, float(v["crank speed"]), r, l, t, v["drive"])
-        st = {"sol": sol, "q": q, "qd": qd, "r": r, "l": l, "t": t, "h": h,
-              "v": sol.data.v, "a": sol.a.reshape(3, 3), "F3": np.asarray(sol.F, dtype=float),
-              "message": ""}
-        if abs(math.cos(psi)) < DEAD_CENTRE_TOL:
-            st["message"] = ("dead centre: the crank is in line with the slider, so a force on the "
-                             "piston cannot turn the crank here")
+        T, V = energy(model, data=sol.data)
+        E = float(T + V)
+        st = {"sol": sol, "reactions": slider_crank_reactions(sol), "q": q, "qd": qd, "r": r, "l": l, "t": t, "h": h,
+              "v": sol.data.v,
+              "a": sol.a.reshape(3, 3), "F3": np.asarray(sol.F, dtype=float), "E": E, "message": "",
+              "drive": v["drive"]}
+        pending, self._frame_pending = self._frame_pending, None
+        run = self._run
+        frame = (pending is not None and all(v[k] == x for k, x in pending[0].items())
+                 and run["E0"] is not None)
+        if frame:
+            _new, hstep, out = pending
+            run = dict(run, t=run["t"] + hstep, drift=max(out["position_residual"], 0.0))
+            if out["dead_centres"]:
+                run["last"], run["passed_at"] = out["dead_centres"][-1][0], run["t"]
+        else:
+            run = {"t": 0.0, "E0": E, "drift": 0.0, "last": "", "passed_at": None}
+        st["run"] = run
+        st["frame"] = frame
+        name = dead_centre_at(psi, DEAD_CENTRE_TOL)
+        st["configuration"] = name
+        if name and not frame:
+            st["message"] = (f"dead centre ({name}): the crank is in line with the rod and the slider, so a "
+                             "force on the piston cannot turn the crank here")
+        self._run = run
         return st
 
     def render(self, st):
+        """Move the links, piston, reaction glyphs, poles and labels; return the readout.
+
+        Parameters
+        ----------
+        st : dict
+            A state of :meth:`compute`.
+
+        Returns
+        -------
+        dict
+        """
+        ax = self.ax
         sol = st["sol"]
         d = sol.data
         r, l, t = st["r"], st["l"], st["t"]
         pose = d.pose
-        pin = pose[1, :2]
-        wrist = pose[2, :2]
+        pin, wrist = pose[1, :2], pose[2, :2]
+        top = max(9.0, r + l + 2 * t + 1.0)
+        if ax.get_ylim()[1] != top:
+            ax.set_ylim(-r - 1.2, top)
         self.crank.set_data([0.0, pin[0]], [0.0, pin[1]])
         self.rod.set_data([pin[0], wrist[0]], [pin[1], wrist[1]])
         self.pins.set_data([0.0, pin[0], wrist[0]], [0.0, pin[1], wrist[1]])
         self.piston.set_xy((wrist[0] - 0.3, wrist[1]))
         self.piston.set_height(2 * t)
-        F = st["F3"]
-        if np.any(F):
-            self.contact.set_line(F)
-            self.contact.set_anchor(d.com[2])
-            self.contact.set_visible(True)
-        else:
-            self.contact.set_visible(False)
         vals = self.values
+        reactions = st["reactions"]
+        force = {k: float(np.hypot(x.wrench[0], x.wrench[1])) for k, x in reactions.items()}
+        fmax = max(force.values())
+        scale = 2.4 / fmax if fmax > 0 else 0.0          # the largest force: a 2.4 m arrow
+        show_f = bool(vals["reaction forces"])
+        for sym, g in self.glyphs.items():
+            x = reactions[sym]
+            g.update(x.point, x.wrench, scale)
+            g.set_visible(show_f)
         vel, acc = st["v"], st["a"]
         for i in range(3):
             self.v_art[i].set_visible(bool(vals["velocity poles"]))
             self.v_art[i].set_point(vel[i])
             self.a_art[i].set_visible(bool(vals["acceleration poles"]))
             self.a_art[i].set_point(acc[i])
-        top = max(9.0, r + l + 2 * t + 1.0)
-        if self.ax.get_ylim()[1] != top:
-            self.ax.set_ylim(-r - 1.2, top)
+        # labels: bodies at their middles, joints at the pins, reactions at their arrows
+        mids = [0.5 * pin, 0.5 * (pin + wrist), wrist + np.array([0.0, t])]
+        for lab, m in zip(self.body_labels, mids):
+            lab.xy = tuple(m)
+        for lab, p in zip(self.joint_labels, (np.zeros(2), pin, wrist)):
+            lab.xy = tuple(p)
+        obstacles = [pin_box(ax, p) for p in (np.zeros(2), pin, wrist)]
+        items = [(g.text, g.foot) for g in self.glyphs.values()]
+        items += [(lab, lab.xy) for lab in self.joint_labels] + [(lab, lab.xy) for lab in self.body_labels]
+        for name, arts, pts in (("v", self.v_art, vel), ("a", self.a_art, acc)):
+            for i, art in enumerate(arts):
+                items.append((art, point_xy(pts[i]), f"{name}{i + 1}"))
+        place_labels(ax, items, obstacles, covered=key_box(ax, bool(vals.get("key"))))
+        run = st["run"]
+        recent = run["passed_at"] is not None and run["t"] - run["passed_at"] < 0.02
+        conf = st["configuration"]
+        self.banner.set_text(f"passing {run['last']}" if recent else (f"at {conf}" if conf else ""))
         qq, qdd = st["q"], sol.qdd
-        return {
-            "crank angle (deg)": vals["crank angle (deg)"],
-            "θ (rod, rad)": qq[1], "φ (piston, rad)": qq[2],
-            "piston height h": st["h"],
-            "piston speed": vel[2][1],
-            "piston acceleration": acc[2][1],
+        E0 = run["E0"]
+        driven = st["drive"] == "constant-speed"
+        drift = float("nan") if driven else (st["E"] - E0) / abs(E0) if E0 else 0.0
+        out = {
+            "crank angle (deg)": math.degrees(qq[0]), "rod angle θ": math.degrees(qq[1]),
+            "piston angle φ": math.degrees(qq[2]),
+            "piston height h": st["h"], "piston speed": vel[2][1], "piston acceleration": acc[2][1],
             "ψ̈ crank": qdd[0],
-            "contact force Fx": F[0], "contact moment (origin)": F[2],
-            "drive torque": sol.tau_drive[0],
-            "dead centre": abs(math.cos(qq[0])) < DEAD_CENTRE_TOL,
+            "|f₁| crank pivot": force["f_1"], "|f₂| crank pin": force["f_2"],
+            "|f₃| wrist pin": force["f_3"], "|F₃| slider bearing": force["F_1"],
+            "bearing couple": reactions["F_1"].moment, "drive torque Q₁": sol.tau_drive[0],
+            "energy E": st["E"],
+            "energy drift ΔE/E₀": drift if not driven else "— (driven: the drive does work)",
+            "closure drift |φ|": run["drift"], "t": run["t"],
+            "dead centre": bool(conf), "configuration": conf or "—",
+            "last dead centre passed": (f"{run['last']} at t = {run['passed_at']:.3f} s" if run["last"] else "—"),
         }
+        return out
 
     def figure_message(self, exc):
+        """Short text on the figure for a refused state (rod too short, singular closure...).
+
+        Parameters
+        ----------
+        exc : Exception
+            Why the state was refused.
+
+        Returns
+        -------
+        str
+        """
         text = str(exc)
         if "rod too short" in text:
-            return "rod too short: it cannot reach the slider at this crank angle"
-        if "piston pin on the crank pivot" in text:
-            return "singular configuration: folded dead centre, the piston pin is on the crank pivot"
-        if "singular" in text:
-            return "singular configuration: the rod lies along the horizontal"
-        return super().figure_message(exc)
+            short = "rod too short: it cannot reach the slider at this crank angle"
+        elif "cannot reach height" in text:
+            short = "the piston cannot reach that height"
+        elif "piston pin on the crank pivot" in text:
+            short = "singular configuration: folded dead centre, the piston pin is on the crank pivot"
+        elif "singular" in text:
+            short = "singular configuration: the rod lies along the horizontal"
+        else:
+            short = super().figure_message(exc)
+        return wrap_message(short)

@@ -1,122 +1,385 @@
-"""Trees and loops explorer: the nine-link system of thesis Fig 9.1 / 9.2.
+"""Trees and loops explorer: the nine-link system of thesis Fig 9.1 / 9.2 and every force inside its loops.
 
 Open the two loops and the nine links form a tree (Fig 9.1, solved in stacked
-form, 9.1-9.2); close them with pins between the tips of bodies 4 and 7 and
-of bodies 8 and 9 (Fig 9.2) and the constrained algorithm (9.4-9.5) adds the
-contact forces, drawn as lines through the pins.  Controls: joint speed
-scale, gravity, link mass, loops open or closed, and the pole overlays.
+form, 9.1-9.2); close them with pins between the tips of bodies 4 and 7 and of
+bodies 8 and 9 (Fig 9.2) and the constrained algorithm (9.4-9.5) adds the
+contact forces ``F₁``, ``F₂``.  Every pin force of the mechanism is drawn at its
+joint, updated every frame: the nine joint wrenches ``f₁ … f₉`` (9.61: the wrench
+on body ``i`` from its parent, 9.41 for the open tree) and the contact forces.
+A *focus* on one of them draws it bold and labelled, fades the others and
+zooms to its joint.
 
-The explorer computes only what it draws: the pose, the unit speed pattern
-(projected onto the velocities the loops allow) and the degrees of freedom
-come from one build of the scene per loop setting, the model is kept per mass
-and gravity, and a change of speed runs a single solve through the scene
-(:func:`planargeo.scenes.trees.tree_solve`: ``stacked_solve`` for
-the open tree, ``loop_solve`` for the loops), never the scene's cross-check by
-the direct solution 9.48.  The overlay checkboxes only redraw.
+*Play* integrates the mechanism through :func:`planargeo.simulate.loops.simulate_loops`
+(:func:`planargeo.scenes.trees.tree_advance`, one call per frame, the scene time
+``t`` a control of its own); the readout shows the energy and its drift since
+``t = 0``, the closure drift ``|φ|`` and the near-singular configurations met.
+
+Handles: drag the tip of body 1 (its angle about the pivot) or the tip of body 2
+(its angle); the loops are closed again around the dragged bodies
+(:func:`planargeo.scenes.trees.tree_pose`).  A pose whose loops cannot close is
+refused: the last good state stays and the message names the reason.
 """
 from __future__ import annotations
+
+import math
 
 import ipywidgets as W
 import numpy as np
 from matplotlib.lines import Line2D
 
 from planargeo import scenes
-from planargeo.scenes.trees import tree_dof, tree_model, tree_solve
-from planargeo.draw.artists import LineArtist, PointArtist
+from planargeo.draw.artists import PointArtist, point_xy
 from planargeo.draw.mechanism import draw_ground
 from planargeo.draw.style import COLORS
-from planargeo.widgets.base import Explorer, Step, cached
+from planargeo.errors import InputError, SceneError
+from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_reactions,
+                                    tree_solve)
+from planargeo.simulate.integrate import energy
+from planargeo.widgets.base import Explorer, Handle, Step, cached
+from planargeo.widgets.slider_crank import (CONTACT_COLOR, LABEL_PT, ReactionGlyph, key_box, pin_box, place_labels,
+                                            symbol_text)
 
 __all__ = ["TreeExplorer"]
 
 N = 9
+#: controls that set the state at t = 0 (a change starts the time again)
+INITIAL = ("speed", "loops", "gravity", "mass", "body 1 angle (deg)", "body 2 angle (deg)")
+_FADED = 0.25
+#: largest turn (rad) of a joint the loop closure may make in one drag step (more: another assembly branch)
+MAX_JUMP = 1.0
 
 
 class TreeExplorer(Explorer):
-    """The tree of Fig 9.1 and the constrained tree of Fig 9.2 with its contact forces."""
+    """The tree of Fig 9.1 and the constrained tree of Fig 9.2 with every pin and contact force, and Play.
 
-    title = "Trees and loops: Fig 9.2 and its contact forces"
+    Parameters
+    ----------
+    **kw
+        Passed to :class:`~planargeo.widgets.base.Explorer`.
+
+    Raises
+    ------
+    InputError
+        An unknown control or a bad initial value.
+    PlanargeoError
+        The initial values describe a pose whose loops cannot close.
+
+    Examples
+    --------
+    >>> ex = TreeExplorer(display="agg")
+    >>> ex.readout_values["degrees of freedom"], len(ex.glyphs)
+    (5, 11)
+    """
+
+    title = "Trees and loops: Fig 9.2, its pin and contact forces"
     slug = "trees"
     figsize = (5.6, 5.6)
     limits = (-2.8, 2.8, -0.6, 5.0)
-    display_controls = ("velocity poles", "acceleration poles", "contact forces")
+    display_controls = ("velocity poles", "acceleration poles", "reaction forces")
+    scale = 1.0
+    units = {"t": "s", "speed": "rad/s", "degrees of freedom": "—", "condition number": "—",
+             "energy E": "J", "energy drift ΔE/E₀": "—", "closure drift |φ|": "m", "qdd[1] (root)": "rad/s²",
+             "max |qdd|": "rad/s²", "largest pin force": "N", "near-singular": "—", "focus": "—"}
 
     def __init__(self, **kw):
-        self._geometry: dict = {}   # closed -> (contacts, q, unit speed pattern, length, dof)
+        self._geometry: dict = {}   # closed -> (contacts, length, dof)
         self._models: dict = {}     # (closed, mass, g) -> Model
+        self._traj: dict = {}       # t -> (q, qd, info) of the run shown
+        self._traj_key = None
+        self._poses: dict = {}      # (closed, body 1 angle, body 2 angle) -> (q at t = 0, unit speeds)
+        self._E0 = None
+        self._events: list = []
         super().__init__(**kw)
 
     def make_controls(self):
+        """The controls: speed, loops, gravity, mass, the two dragged angles, the time and the overlays.
+
+        Returns
+        -------
+        dict
+        """
+        t = Step(0.0, 600.0, 0.01, 0.0, "t (s)").make("t (s)")
+        t.disabled = True                     # set by Play
         return {
-            "speed": Step(-3, 3, 0.05, 1.0, "speed").make("speed"),
-            "loops": W.ToggleButtons(options=("closed (Fig 9.2)", "open (Fig 9.1)"),
-                                     value="closed (Fig 9.2)", description="loops"),
-            "gravity": Step(0, 20, 0.1, 9.81, "g").make("gravity"),
-            "mass": Step(0.1, 5, 0.1, 1.0, "link mass").make("mass"),
+            "speed": Step(-3, 3, 0.05, 1.0, "speed (rad/s)").make("speed"),
+            "loops": W.ToggleButtons(options=("closed (Fig 9.2)", "open (Fig 9.1)"), value="closed (Fig 9.2)",
+                                     description="loops"),
+            "gravity": Step(0, 20, 0.01, 9.81, "g (m/s²)").make("gravity"),
+            "mass": Step(0.1, 5, 0.1, 1.0, "link mass (kg)").make("mass"),
+            "body 1 angle (deg)": Step(-180, 180, 1, FIG91_ANGLES[0], "body 1 angle (°)").make("body 1 angle (deg)"),
+            "body 2 angle (deg)": Step(-180, 360, 1, FIG91_ANGLES[1], "body 2 angle (°)").make("body 2 angle (deg)"),
+            "t (s)": t,
             "velocity poles": W.Checkbox(value=False, description="velocity poles", indent=False),
-            "acceleration poles": W.Checkbox(value=False, description="acceleration poles",
-                                             indent=False),
-            "contact forces": W.Checkbox(value=True, description="contact forces", indent=False),
+            "acceleration poles": W.Checkbox(value=False, description="acceleration poles", indent=False),
+            "reaction forces": W.Checkbox(value=True, description="pin and contact forces", indent=False),
         }
 
+    def focus_options(self):
+        """The reactions one can focus on: the joints ``f₁ … f₉`` and the contacts ``F₁``, ``F₂``.
+
+        Returns
+        -------
+        list of str
+        """
+        return [symbol_text(f"f_{i + 1}") for i in range(N)] + ["F₁", "F₂"]
+
     def make_artists(self, ax):
+        """Links, joints, pins, the reaction glyphs, poles and body labels (built once).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+        """
         self.links = Line2D([], [], color=COLORS["ground"], lw=2.5, solid_capstyle="round", zorder=5)
         self.joints = Line2D([], [], ls="none", marker="o", ms=4, mfc="white", mec="black", zorder=6)
-        self.pins = Line2D([], [], ls="none", marker="o", ms=8, mfc="none", mec=COLORS["reaction"],
-                           mew=2, zorder=6)
+        self.pins = Line2D([], [], ls="none", marker="o", ms=8, mfc="none", mec=COLORS["reaction"], mew=2, zorder=6)
         for a in (self.links, self.joints, self.pins):
             ax.add_line(a)
         draw_ground((0.0, 0.0), ax, width=0.9, zorder=1)
-        self.labels = [ax.text(0, 0, str(i + 1), fontsize=7, color="#404040", zorder=7)
-                       for i in range(N)]
+        kw = dict(fontsize=LABEL_PT, color="#404040", zorder=12, textcoords="offset points", xytext=(4, 4),
+                  annotation_clip=True)
+        self.labels = [ax.annotate(str(i + 1), (0.0, 0.0), **kw) for i in range(N)]
+        self.glyphs = {}
+        for i in range(N):
+            self.glyphs[f"f_{i + 1}"] = ReactionGlyph(ax, symbol_text(f"f_{i + 1}"), reach=0.45,
+                                                      legend="pin force f_i (9.61)" if i == 0 else None)
+        for k in range(2):
+            self.glyphs[f"F_{k + 1}"] = ReactionGlyph(ax, symbol_text(f"F_{k + 1}"), color=CONTACT_COLOR, reach=0.45,
+                                                      legend="contact force F_k (9.71)" if k == 0 else None)
         z = np.array([0.0, 0.0, 1.0])
-        self.v_art = [ax.add_artist(PointArtist(z, role="twist", glyph_scale=3.0)) for _ in range(N)]
-        self.a_art = [ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.3)) for _ in range(N)]
-        self.F_art = [ax.add_artist(LineArtist([1.0, 0, 0], role="reaction", scale=0.15,
-                                               text=f"F{k + 1}")) for k in range(2)]
+        self.v_art = [ax.add_artist(PointArtist(z, role="twist", glyph_scale=3.0, text=f"v{i + 1}"))
+                      for i in range(N)]
+        self.a_art = [ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.3, text=f"a{i + 1}"))
+                      for i in range(N)]
 
     def geometry(self, closed: bool):
-        """Contacts, pose ``q``, unit speed pattern, link length and degrees of freedom (cached).
+        """Contacts, link length and degrees of freedom ``nq − rank J_c`` (9.54, 9.60) of a loop setting (cached).
 
-        Taken once from the scene (``speed = 1``): the pattern projected onto the
-        loops' allowed velocities is linear in the speed.  The degrees of freedom
-        are ``nq − rank J_c`` with the closure Jacobian ``J_c`` (9.54, 9.60).
+        Parameters
+        ----------
+        closed : bool
+            The loops of Fig 9.2 closed.
+
+        Returns
+        -------
+        tuple
+            ``(contacts, length, dof)``.
         """
         if closed not in self._geometry:
             res = scenes.get("constrained-tree" if closed else "tree")(speed=1.0)
-            model = res.model
             q = np.array(res.state["q"], dtype=float)
-            self._geometry[closed] = (tuple(model.contacts), q, np.array(res.state["qd"], dtype=float),
-                                      float(res.params["length"]), tree_dof(model, q))
+            self._geometry[closed] = (tuple(res.model.contacts), float(res.params["length"]),
+                                      tree_dof(res.model, q))
         return self._geometry[closed]
 
     def model_for(self, closed: bool, mass: float, g: float):
-        """The nine-link model (with the pins when ``closed``), kept per (mass, g)."""
+        """The nine-link model (with the pins when ``closed``), kept per (mass, g).
+
+        Parameters
+        ----------
+        closed : bool
+        mass, g : float
+            Link mass (kg) and gravity (m/s²).
+
+        Returns
+        -------
+        Model
+        """
         def build():
-            contacts, _q, _u, L, _dof = self.geometry(closed)
+            contacts, L, _dof = self.geometry(closed)
             return tree_model(mass, L, g, contacts)
 
         return cached(self._models, (closed, mass, g), build)
 
+    # ---------------------------------------------------------------- handles
+    def handles(self):
+        """Drag the tip of body 1 (its angle) or the tip of body 2 (its angle); the loops close again.
+
+        Returns
+        -------
+        list of Handle
+        """
+        def tip(i):
+            def where():
+                if self.state is None:
+                    return None
+                return tuple(self.state["tips"][i])
+            return where
+
+        def near(deg, ref):
+            """``deg`` turned by whole turns to lie nearest ``ref`` (both in degrees)."""
+            return deg + 360.0 * round((ref - deg) / 360.0)
+
+        def current():
+            """Absolute angles (°) of bodies 1 and 2 as shown (Play moves them away from the controls)."""
+            th = np.degrees(self.state["sol"].data.pose[:2, 2])
+            return float(th[0]), float(th[1])
+
+        def drag1(x, y):
+            if math.hypot(x, y) < 1e-9:
+                raise InputError("the tip of body 1 cannot be dragged onto its pivot: no angle there")
+            a1, a2 = current()
+            new = near(math.degrees(math.atan2(y, x)), a1)
+            return {"body 1 angle (deg)": (new + 180.0) % 360.0 - 180.0, "body 2 angle (deg)": a2}
+
+        def drag2(x, y):
+            base = self.state["tips"][0]
+            if math.hypot(x - base[0], y - base[1]) < 1e-9:
+                raise InputError("the tip of body 2 cannot be dragged onto its joint: no angle there")
+            a1, a2 = current()
+            new = near(math.degrees(math.atan2(y - base[1], x - base[0])), a2)
+            return {"body 1 angle (deg)": (a1 + 180.0) % 360.0 - 180.0, "body 2 angle (deg)": new}
+
+        return [Handle("tip of body 1", tip(0), drag1), Handle("tip of body 2", tip(1), drag2)]
+
+    # ------------------------------------------------------------------- Play
+    def adjust(self, values, changed):
+        """A change of the initial state starts the time again (``t = 0``).
+
+        Parameters
+        ----------
+        values : dict
+        changed : set of str
+
+        Returns
+        -------
+        dict
+        """
+        if set(changed) & set(INITIAL) and values["t (s)"] != 0.0:
+            return {"t (s)": 0.0}
+        return {}
+
+    def play_step(self, values, dt):
+        """One Play frame: the scene time advances by ``dt`` (the integration runs in :meth:`compute`).
+
+        Parameters
+        ----------
+        values : dict
+        dt : float
+
+        Returns
+        -------
+        dict or None
+            The next time, None at the end of the time slider.
+        """
+        t = float(values["t (s)"]) + float(dt)
+        return None if t > self.controls["t (s)"].max else {"t (s)": t}
+
+    @staticmethod
+    def _state_at(model, t: float, traj: dict, events: list):
+        """``(q, qd, info)`` at scene time ``t`` of the run ``traj`` (updated in place, with ``events``).
+
+        Integrates from the latest time before ``t`` kept in ``traj`` (a few are kept).
+        """
+        if t in traj:
+            return traj[t]
+        t0 = max((s for s in traj if s <= t), default=0.0)
+        q0, qd0, _ = traj[t0]
+        out = tree_advance(model, q0, qd0, t - t0)
+        item = (out["q"], out["qd"], out)
+        for e in out["events"]:
+            events.append((t0 + float(e.get("t", 0.0)), e.get("kind", "near-singular")))
+        for s in sorted(traj)[:-3]:
+            if s != 0.0:
+                del traj[s]
+        traj[t] = item
+        return item
+
     def compute(self, v, changed):
+        """The state at time ``t`` of the run from the initial controls; one solve (9.5 or 9.39-9.43) with reactions.
+
+        Parameters
+        ----------
+        v : dict
+            Control values.
+        changed : set of str
+            Controls changed since the last state.
+
+        Returns
+        -------
+        dict
+
+        Raises
+        ------
+        SceneError
+            A pose whose loops cannot close.
+        PlanargeoError
+            The integration stopped (a singular configuration).
+        """
         closed = v["loops"].startswith("closed")
         model = self.model_for(closed, float(v["mass"]), float(v["gravity"]))
-        _c, q, unit, L, dof = self.geometry(closed)
-        qd = float(v["speed"]) * unit
+        _c, L, dof = self.geometry(closed)
+        a1, a2, speed = float(v["body 1 angle (deg)"]), float(v["body 2 angle (deg)"]), float(v["speed"])
+        # the pose at t = 0 depends on the loops and the two angles only (kept); the speeds are linear in speed
+        pose_key = (closed, a1, a2)
+        shown_angles = None if self._traj_key is None else self._traj_key[4:]
+        dragged = (self.state is not None and self.state["closed"] == closed and shown_angles != (a1, a2)
+                   and set(changed) <= {"body 1 angle (deg)", "body 2 angle (deg)", "t (s)"})
+        start = self.state["q"] if dragged else None
+        pose = self._poses.get(pose_key)
+        if pose is None:
+            pose = tree_pose(model, math.radians(a1), 1.0, q_start=start, angle2=math.radians(a2))
+        if start is not None:
+            jump = np.abs(np.remainder(pose[0][2:] - start[2:] + np.pi, 2 * np.pi) - np.pi)
+            if jump.max() > MAX_JUMP:
+                k = int(np.argmax(jump)) + 3
+                raise SceneError(f"the loops would jump to another assembly: joint {k} would turn by "
+                                 f"{np.degrees(jump.max()):.0f}° in one step (drag in smaller steps)")
+        key = (closed, float(v["mass"]), float(v["gravity"]), speed, a1, a2)
+        if key != self._traj_key:
+            traj, events, E0 = {0.0: (pose[0], speed * pose[1], None)}, [], None
+        else:
+            traj, events, E0 = dict(self._traj), list(self._events), self._E0
+        t = float(v["t (s)"])
+        q, qd, info = self._state_at(model, t, traj, events)
         sol = tree_solve(model, q, qd)                               # 9.5 closed, 9.39-9.43 open
+        E = float(sum(energy(model, data=sol.data)))
+        if E0 is None:
+            E0 = E if t == 0.0 else float(sum(energy(model, *traj[0.0][:2])))
+        pose_now = sol.data.pose
+        tips = pose_now[:, :2] + L * np.column_stack([np.cos(pose_now[:, 2]), np.sin(pose_now[:, 2])])
         st = {"closed": closed, "model": model, "q": q, "qd": qd, "length": L, "dof": dof, "sol": sol,
-              "a": sol.a.reshape(N, 3), "qdd": np.asarray(sol.qdd)}
+              "a": sol.a.reshape(N, 3), "qdd": np.asarray(sol.qdd), "tips": tips, "t": t, "E": E, "E0": E0,
+              "drift": 0.0 if info is None else info["position_residual"], "events": list(events),
+              "reactions": tree_reactions(model, sol)}
         if closed:
             st["F"] = sol.F.reshape(-1, 3)
             st["cond"] = float(sol.cond)
+        # the state is good: keep its pose and run
+        cached(self._poses, pose_key, lambda: pose)
+        self._traj, self._traj_key, self._E0, self._events = traj, key, E0, events
         return st
 
     def render(self, st):
+        """Move links, pins, reaction glyphs (focus: one bold, the rest faded, zoomed), poles, labels.
+
+        Parameters
+        ----------
+        st : dict
+            A state of :meth:`compute`.
+
+        Returns
+        -------
+        dict
+            The readout.
+        """
+        ax = self.ax
         closed, model = st["closed"], st["model"]
         d = st["sol"].data
-        L = st["length"]
-        pose = d.pose
-        tips = pose[:, :2] + L * np.column_stack([np.cos(pose[:, 2]), np.sin(pose[:, 2])])
+        pose, tips = d.pose, st["tips"]
+        vals = self.values
+        focus = vals.get("focus", "all")
+        reactions = {symbol_text(x.symbol): x for x in st["reactions"]}
+        if closed:        # the thesis names the contact forces F₁, F₂ (9.49 order)
+            pass
+        # view: the whole mechanism, or zoomed on the focused joint
+        if focus in reactions:
+            c = reactions[focus].point
+            ax.set_xlim(c[0] - 1.6, c[0] + 1.6)
+            ax.set_ylim(c[1] - 1.6, c[1] + 1.6)
+        else:
+            ax.set_xlim(*self.limits[:2])
+            ax.set_ylim(*self.limits[2:])
         xs, ys = [], []
         for i in range(N):
             xs += [pose[i, 0], tips[i, 0], np.nan]
@@ -124,35 +387,61 @@ class TreeExplorer(Explorer):
         self.links.set_data(xs, ys)
         self.joints.set_data(pose[:, 0], pose[:, 1])
         for i, t in enumerate(self.labels):
-            mid = 0.5 * (pose[i, :2] + tips[i])
-            t.set_position((mid[0] + 0.05, mid[1] + 0.05))
-        vals = self.values
-        a = st["a"]
+            t.xy = tuple(0.5 * (pose[i, :2] + tips[i]))
+        force = {k: float(np.hypot(x.wrench[0], x.wrench[1])) for k, x in reactions.items()}
+        fmax = max(force.values(), default=0.0)
+        scale = 0.9 / fmax if fmax > 0 else 0.0
+        show = bool(vals["reaction forces"])
+        for sym, g in self.glyphs.items():
+            x = reactions.get(symbol_text(sym))
+            if x is None:
+                g.set_visible(False)
+                continue
+            g.update(x.point, x.wrench, scale)
+            g.set_visible(show)
+            on = focus in ("all", symbol_text(sym))
+            alpha = 1.0 if on else _FADED
+            for a in (g.line, g.link, g.arrow):
+                a.set_alpha(alpha)
+            g.arrow.set_linewidth(3.0 if focus == symbol_text(sym) else 2.0)
+            g.text.set_visible(show and on)
+            g.text.set_fontweight("bold" if focus == symbol_text(sym) else "normal")
         for i in range(N):
             self.v_art[i].set_visible(bool(vals["velocity poles"]))
             self.v_art[i].set_point(d.v[i])
             self.a_art[i].set_visible(bool(vals["acceleration poles"]))
-            self.a_art[i].set_point(a[i])
-        out = {"speed": vals["speed"], "loops": "closed" if closed else "open",
-               "degrees of freedom": st["dof"]}
+            self.a_art[i].set_point(st["a"][i])
         if closed:
-            F = st["F"]
-            pins = []
-            for k, c in enumerate(model.contacts):
-                p = tips[c.a]
-                pins.append(p)
-                self.F_art[k].set_line(F[k])
-                self.F_art[k].set_anchor(p)
-                self.F_art[k].set_visible(bool(vals["contact forces"]) and bool(np.any(F[k])))
-                out[f"contact {c.name}: |force| (N)"] = float(np.hypot(F[k, 0], F[k, 1]))
-            pins = np.array(pins)
+            pins = np.array([x.point for x in st["reactions"] if x.symbol.startswith("F")])
             self.pins.set_data(pins[:, 0], pins[:, 1])
-            out["condition number"] = st["cond"]
         else:
-            for art in self.F_art:
-                art.set_visible(False)
             self.pins.set_data([], [])
+        obstacles = [pin_box(ax, p, 4.0) for p in pose[:, :2]]
+        items = [(g.text, g.foot) for g in self.glyphs.values() if g.visible]
+        items += [(t, t.xy) for t in self.labels]
+        for name, arts, pts in (("v", self.v_art, d.v), ("a", self.a_art, st["a"])):
+            for i, art in enumerate(arts):
+                items.append((art, point_xy(pts[i]), f"{name}{i + 1}"))
+        place_labels(ax, items, obstacles, covered=key_box(ax, bool(vals.get("key"))))
+        E0 = st["E0"]
+        out = {"t": st["t"], "speed": vals["speed"], "loops": "closed" if closed else "open",
+               "degrees of freedom": st["dof"], "energy E": st["E"],
+               "energy drift ΔE/E₀": (st["E"] - E0) / abs(E0) if E0 else 0.0,
+               "closure drift |φ|": st["drift"]}
+        if closed:
+            for k, c in enumerate(model.contacts):
+                out[f"contact {c.name}: |force| (N)"] = force[symbol_text(f"F_{k + 1}")]
+            out["condition number"] = st["cond"]
+        out["largest pin force"] = max(force[symbol_text(f"f_{i + 1}")] for i in range(N))
+        if focus in reactions:
+            x = reactions[focus]
+            out["focus"] = focus
+            out[f"|{focus}| (N)"] = force[focus]
+            out[f"{focus} moment about its joint (N·m)"] = x.moment
         qdd = st["qdd"]
         out["qdd[1] (root)"] = qdd[0]
         out["max |qdd|"] = float(np.max(np.abs(qdd)))
+        ev = st["events"]
+        out["near-singular"] = f"{ev[-1][1]} at t = {ev[-1][0]:.3f} s" if ev else "—"
         return out
+

@@ -1,0 +1,199 @@
+"""SliderCrankExplorer (#14 item 4): pin and bearing forces at their joints against a hand Newton–Euler
+reference, Play through simulate_loops against a one-coordinate integration, dead centres by name,
+drags (refused ones keep the last good state), units, round-off as 0, legibility of every state visited."""
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+import _slider_crank_reference as ref
+from planargeo.draw.layout import legibility_problems
+from planargeo.widgets.slider_crank import SliderCrankExplorer
+
+G = 9.81
+
+
+def legible(ex):
+    """Every state a test visits must be legible (issue #13)."""
+    problems = legibility_problems(ex.fig)
+    assert problems == [], problems
+    return ex
+
+
+@pytest.fixture
+def ex():
+    return legible(SliderCrankExplorer(display="agg"))
+
+
+def hand_reactions(psi, psidot, drive="free"):
+    """Pin forces f₁, f₂, f₃ and the bearing force by Newton–Euler on each body, from the piston inwards.
+
+    The accelerations come from the reference's own multiplier solve (plain trigonometry); the bearing's
+    force is its multiplier ξ (9.90): ``-F₃ = -B₃ ξ`` acts on the piston, so ``f₃ = m₃ (c̈₃ - g) + F₃``,
+    ``f₂ = f₃ + m₂ (c̈₂ - g)``, ``f₁ = f₂ + m₁ (c̈₁ - g)`` (forces only)."""
+    r = ref.reference(psi, psidot, drive=drive)
+    q, qd, qdd = r["q"], r["qd"], r["qdd"]
+    segs = ref._segments(ref.R, ref.L, ref.T)
+    cdd = []
+    for key in ("c1", "c2", "c3"):
+        Jc = ref.complex_step_jacobian(lambda x: ref._point(segs[key], x), q)
+        cdd.append(Jc @ qdd + ref._point_bias(segs[key], q, qd))
+    g = np.array([0.0, -G])
+    F3 = r["F3"][:2]
+    f3 = ref.M[2] * (cdd[2] - g) + F3
+    f2 = f3 + ref.M[1] * (cdd[1] - g)
+    f1 = f2 + ref.M[0] * (cdd[0] - g)
+    return {"f_1": f1, "f_2": f2, "f_3": f3, "F_1": -F3}, r
+
+
+def readout_matches_hand(ex, psi, psidot, drive="free"):
+    hand, r = hand_reactions(psi, psidot, drive)
+    scale = max(np.abs(v).max() for v in hand.values())
+    for sym, key in (("f_1", "|f₁| crank pivot"), ("f_2", "|f₂| crank pin"), ("f_3", "|f₃| wrist pin"),
+                     ("F_1", "|F₃| slider bearing")):
+        assert ex.readout_values[key] == pytest.approx(np.hypot(*hand[sym]), abs=1e-10 * scale), key
+        # the drawn arrow is that force, at its joint
+        np.testing.assert_allclose(ex.glyphs[sym].wrench[:2], hand[sym], atol=1e-10 * scale, err_msg=sym)
+    assert ex.readout_values["drive torque Q₁"] == pytest.approx(r["tau_drive"][0], abs=1e-10 * scale)
+    return scale
+
+
+@pytest.mark.parametrize("deg, speed, drive", [(math.degrees(0.4), 20.0, "free"), (-60.0, 12.0, "free"),
+                                               (135.0, -8.0, "constant-speed"), (10.0, 30.0, "constant-speed")])
+def test_pin_and_bearing_forces_match_hand_newton_euler(ex, deg, speed, drive):
+    legible(ex.set(**{"crank angle (deg)": deg, "crank speed": speed, "drive": drive}))
+    readout_matches_hand(ex, math.radians(deg), speed, drive)
+
+
+def test_every_force_is_labelled_with_its_thesis_symbol_and_drawn_at_its_joint(ex):
+    assert {g.text.get_text() for g in ex.glyphs.values()} == {"f₁", "f₂", "f₃", "F₃"}
+    sol = ex.state["sol"]
+    pose = sol.data.pose
+    # free pins: the line of action passes through the pin, the arrow sits on it
+    for sym, P in (("f_1", (0.0, 0.0)), ("f_2", pose[1, :2]), ("f_3", pose[2, :2])):
+        np.testing.assert_allclose(ex.glyphs[sym].foot, P, atol=1e-9)
+    # the bearing carries a couple: its line is offset from the contact point by couple / force
+    g = ex.glyphs["F_1"]
+    assert np.hypot(*(g.foot - g.point)) == pytest.approx(abs(sol.reaction("F_1").moment) / sol.reaction("F_1").force)
+    assert ex.readout_values["bearing couple"] == pytest.approx(sol.reaction("F_1").moment)
+    labels = [t.get_text() for t in ex.body_labels + ex.joint_labels]
+    assert labels == ["1", "2", "3", "ψ", "θ", "φ"]
+    ex.set(**{"reaction forces": False})
+    assert not any(g.text.get_visible() or g.arrow.get_visible() for g in ex.glyphs.values())
+    legible(ex)
+
+
+def test_units_on_every_readout_value(ex):
+    assert set(ex.readout_values) <= set(ex.units)
+    assert ex.readout_strings["piston height h"].endswith(" m")
+    assert ex.readout_strings["|f₂| crank pin"].endswith(" N")
+
+
+def _reference_psi(psi0, psidot0, t_end):
+    """ψ(t) of the free crank by the reference's one-coordinate dynamics (the multiplier solve), tight tolerances."""
+    def rhs(_t, y):
+        return [y[1], ref.reference(y[0], y[1])["qdd"][0]]
+
+    sol = solve_ivp(rhs, (0.0, t_end), [psi0, psidot0], method="DOP853", rtol=1e-11, atol=1e-12)
+    return sol.y[0, -1], sol.y[1, -1]
+
+
+def test_play_free_crank_follows_the_reference_and_keeps_energy(ex):
+    n = 12
+    ex.advance(n)
+    legible(ex)
+    t = ex.readout_values["t"]
+    assert t == pytest.approx(n * ex.play_dt * ex.time_scale)
+    psi, psidot = _reference_psi(0.4, 20.0, t)
+    shown = math.radians(ex.readout_values["crank angle (deg)"])
+    assert math.remainder(shown - psi, 2 * math.pi) == pytest.approx(0.0, abs=1e-6)
+    assert ex.values["crank speed"] == pytest.approx(psidot, abs=1e-5)
+    assert abs(ex.readout_values["energy drift ΔE/E₀"]) < 1e-7
+    assert ex.readout_values["closure drift |φ|"] < 1e-9
+    assert ex.readout_strings["closure drift |φ|"] == "0 m"           # round-off shown as 0
+    # and the forces of the frame shown are the hand Newton–Euler forces of that state
+    readout_matches_hand(ex, shown, ex.values["crank speed"])
+
+
+def test_play_names_the_dead_centres_as_the_crank_passes(ex):
+    ex.set(**{"crank angle (deg)": 85.0, "crank speed": 40.0})
+    assert ex.readout_values["last dead centre passed"] == "—"
+    seen, banners = [], set()
+    for _ in range(60):
+        ex.advance(1)
+        seen.append(ex.readout_values["last dead centre passed"])
+        banners.add(ex.banner.get_text())
+        legible(ex)
+        if seen[-1].startswith("bottom"):
+            break
+    names = [s.split(" at ")[0] for s in seen if s != "—"]
+    assert names[0] == "top dead centre" and names[-1] == "bottom dead centre"
+    assert "passing top dead centre" in banners and "passing bottom dead centre" in banners
+    assert ex.message == ""                          # passing is reported, not an error
+
+
+def test_dead_centre_shown_at_rest_by_name(ex):
+    ex.set(**{"crank angle (deg)": -90.0})
+    assert ex.readout_values["configuration"] == "bottom dead centre"
+    assert ex.banner.get_text() == "at bottom dead centre" and "bottom dead centre" in ex.message
+
+
+def test_play_driven_crank_keeps_its_speed_and_reports_the_drive(ex):
+    ex.set(drive="constant-speed", **{"crank speed": 15.0})
+    ex.advance(8)
+    legible(ex)
+    assert ex.values["crank speed"] == pytest.approx(15.0, abs=1e-9)
+    assert ex.readout_values["ψ̈ crank"] == 0.0
+    assert "driven" in ex.readout_values["energy drift ΔE/E₀"]
+    readout_matches_hand(ex, math.radians(ex.readout_values["crank angle (deg)"]), 15.0, "constant-speed")
+
+
+def test_drag_the_crank_pin(ex):
+    start = tuple(ex.state["sol"].data.pose[1, :2])
+    ex.drag("crank pin", start, (-1.0, 2.0), steps=6)
+    legible(ex)
+    assert ex.message == ""
+    assert ex.values["crank angle (deg)"] == pytest.approx(math.degrees(math.atan2(2.0, -1.0)))
+    assert ex.readout_values["t"] == 0.0                               # a new initial state
+    readout_matches_hand(ex, math.atan2(2.0, -1.0), 20.0)
+
+
+def test_drag_the_piston_and_a_refused_drag(ex):
+    wrist = tuple(ex.state["sol"].data.pose[2, :2])
+    ex.drag("piston", wrist, (0.0, 4.0), steps=4)
+    legible(ex)
+    pin = ex.state["sol"].data.pose[1, :2]
+    assert ex.state["sol"].data.pose[2, 1] == pytest.approx(4.0, abs=1e-9)
+    assert np.hypot(*pin) == pytest.approx(ref.R) and pin[0] > 0          # the crank kept its side
+    shown = dict(ex.values)
+    ex.drag("piston", (0.0, 4.0), (0.0, 8.5), steps=1)                      # beyond l + r = 7.29
+    legible(ex)
+    assert "cannot reach height" in ex.message and "drag of piston refused" in ex.message
+    assert ex.values == shown and ex.state["sol"].data.pose[2, 1] == pytest.approx(4.0, abs=1e-9)
+
+
+def test_a_short_rod_is_refused_and_the_last_state_kept(ex):
+    ex.set(**{"rod length": 1.5, "crank angle (deg)": 80.0})
+    legible(ex)
+    assert ex.message == ""
+    shown = dict(ex.values)
+    ex.drag("crank pin", tuple(ex.state["sol"].data.pose[1, :2]), (2.29, 0.0), steps=1)
+    assert "rod too short" in ex.message and ex.values == shown
+    legible(ex)
+    # a drag that gets there in steps keeps the last step that could be assembled: controls, figure and
+    # readout show that one state
+    ex.drag("crank pin", tuple(ex.state["sol"].data.pose[1, :2]), (2.29, 0.0), steps=4)
+    assert "rod too short" in ex.message
+    psi = math.radians(ex.values["crank angle (deg)"])
+    assert ex.values == ex.shown_values and ref.R * math.cos(psi) <= 1.5
+    assert ex.readout_values["crank angle (deg)"] == pytest.approx(ex.values["crank angle (deg)"])
+    np.testing.assert_allclose(ex.crank.get_xydata()[1], ref.R * np.array([math.cos(psi), math.sin(psi)]))
+    legible(ex)
+
+
+def test_play_with_every_overlay_stays_legible(ex):
+    ex.set(**{"velocity poles": True, "acceleration poles": True, "key": True})
+    for _ in range(6):
+        legible(ex.advance(2))
+    assert all(a.get_visible() for a in ex.v_art + ex.a_art)

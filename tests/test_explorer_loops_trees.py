@@ -1,0 +1,175 @@
+"""TreeExplorer (#14 item 4): every pin force of Fig 9.2 at its joint against the Lagrange multipliers of
+maximal coordinates (closed) and Pinocchio's joint forces (open), Play through simulate_loops against an
+integration of the maximal-coordinate reference, focus, drags (refused ones keep the last good state),
+legibility of every state visited."""
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+from planargeo.algorithms.loops import constrained_dynamics_lagrange
+from planargeo.draw.layout import legibility_problems
+from planargeo.simulate.loops import closure_residual
+from planargeo.widgets.trees import TreeExplorer
+
+
+def legible(ex):
+    problems = legibility_problems(ex.fig)
+    assert problems == [], problems
+    return ex
+
+
+@pytest.fixture
+def ex():
+    return legible(TreeExplorer(display="agg"))
+
+
+def _lagrange_joint_wrenches(model, q, qd):
+    """Each revolute joint's constraint force on its body (Φ_iᵀ λ_i of the maximal-coordinate KKT solve),
+    as a wrench at the origin; and the contact forces F."""
+    r = constrained_dynamics_lagrange(model, q, qd, np.zeros(9))
+    Phi, lam = r["Phi"], r["lambda"]
+    from planargeo.mechanics.kinematics import kinematics
+
+    com = kinematics(model, q).com
+    out = []
+    for i in range(9):                      # two rows (point coincidence) per revolute joint, in joint order
+        gen = Phi[2 * i:2 * i + 2].T @ lam[2 * i:2 * i + 2]
+        fx, fy, mc = gen[3 * i:3 * i + 3]
+        out.append([fx, fy, mc + com[i, 0] * fy - com[i, 1] * fx])
+    return np.array(out), np.asarray(r["F"]).reshape(-1, 3)
+
+
+def check_drawn_forces(ex):
+    q, qd = ex.state["q"], ex.state["qd"]
+    f, F = _lagrange_joint_wrenches(ex.state["model"], q, qd)
+    scale = max(1.0, np.abs(f).max())
+    for i in range(9):
+        np.testing.assert_allclose(ex.glyphs[f"f_{i + 1}"].wrench, f[i], atol=1e-9 * scale, err_msg=f"f_{i + 1}")
+    for k in range(2):
+        np.testing.assert_allclose(ex.glyphs[f"F_{k + 1}"].wrench, -F[k], atol=1e-9 * scale)
+    assert ex.readout_values["largest pin force"] == pytest.approx(np.hypot(f[:, 0], f[:, 1]).max(), rel=1e-9)
+    return scale
+
+
+def test_every_pin_force_drawn_labelled_and_equal_to_the_multipliers(ex):
+    labels = {g.text.get_text() for g in ex.glyphs.values()}
+    assert labels == {"f₁", "f₂", "f₃", "f₄", "f₅", "f₆", "f₇", "f₈", "f₉", "F₁", "F₂"}
+    assert all(g.text.get_visible() and g.arrow.get_visible() for g in ex.glyphs.values())
+    check_drawn_forces(ex)
+    # free pins: every joint's line of action passes through its joint (no joint torques here)
+    pose = ex.state["sol"].data.pose
+    for i in range(9):
+        np.testing.assert_allclose(ex.glyphs[f"f_{i + 1}"].foot, pose[i, :2], atol=1e-9)
+    assert [t.get_text() for t in ex.labels] == [str(i) for i in range(1, 10)]
+    assert set(ex.readout_values) <= set(ex.units) | {k for k in ex.readout_values if "(N)" in k or k == "loops"}
+
+
+def test_open_tree_pin_forces_match_pinocchio(ex):
+    pin = pytest.importorskip("pinocchio")
+    from bench import to_pinocchio
+
+    ex.set(loops="open (Fig 9.1)", speed=1.2, mass=1.5)
+    legible(ex)
+    model, q, qd = ex.state["model"], ex.state["q"], ex.state["qd"]
+    pm = to_pinocchio(model)
+    pd = pm.createData()
+    pin.rnea(pm, pd, q, qd, ex.state["qdd"])
+    pin.forwardKinematics(pm, pd, q, qd, ex.state["qdd"])
+    scale = max(1.0, max(np.abs(g.wrench).max() for g in ex.glyphs.values() if g.visible))
+    for i in range(9):
+        fi, oMi = pd.f[i + 1], pd.oMi[i + 1]
+        F = oMi.rotation @ fi.linear
+        p = oMi.translation
+        tz = (oMi.rotation @ fi.angular)[2] + p[0] * F[1] - p[1] * F[0]
+        np.testing.assert_allclose(ex.glyphs[f"f_{i + 1}"].wrench, [F[0], F[1], tz], atol=1e-10 * scale)
+    assert not ex.glyphs["F_1"].visible and not ex.glyphs["F_2"].visible
+
+
+def _reference_run(model, q0, qd0, t_end):
+    """q(t_end) by integrating the maximal-coordinate Lagrange reference (q̈ of the dense KKT solve)."""
+    def rhs(_t, y):
+        return np.concatenate([y[9:], constrained_dynamics_lagrange(model, y[:9], y[9:], np.zeros(9))["qdd"]])
+
+    sol = solve_ivp(rhs, (0.0, t_end), np.concatenate([q0, qd0]), method="DOP853", rtol=1e-10, atol=1e-12)
+    return sol.y[:9, -1]
+
+
+def test_play_follows_the_reference_keeps_energy_and_the_loops(ex):
+    q0, qd0 = ex.state["q"].copy(), ex.state["qd"].copy()
+    ex.advance(6)
+    legible(ex)
+    t = ex.readout_values["t"]
+    assert t == pytest.approx(6 * ex.play_dt)
+    q_ref = _reference_run(ex.state["model"], q0, qd0, t)
+    np.testing.assert_allclose(ex.state["q"], q_ref, atol=2e-6)
+    assert abs(ex.readout_values["energy drift ΔE/E₀"]) < 1e-7
+    assert ex.readout_values["closure drift |φ|"] < 1e-9
+    assert np.abs(closure_residual(ex.state["model"], ex.state["q"])).max() < 1e-9
+    check_drawn_forces(ex)                   # the overlays are those of the frame shown
+
+
+def test_play_overlays_with_poles_stay_legible(ex):
+    ex.set(**{"velocity poles": True, "acceleration poles": True})
+    for _ in range(3):
+        ex.advance(1)
+        legible(ex)
+    ex.set(key=True)                         # the key covers the upper left: labels keep clear of it
+    for _ in range(3):
+        legible(ex.advance(2))
+
+
+def test_focus_on_one_reaction(ex):
+    assert ex.controls["focus"].options[:2] == ("all", "f₁")
+    ex.set(focus="f₅")
+    legible(ex)
+    g = ex.glyphs["f_5"]
+    assert g.text.get_visible() and g.text.get_fontweight() == "bold"
+    assert sum(x.text.get_visible() for x in ex.glyphs.values()) == 1
+    assert all(x.arrow.get_alpha() < 1 for k, x in ex.glyphs.items() if k != "f_5")
+    x0, x1 = ex.ax.get_xlim()
+    assert x1 - x0 == pytest.approx(3.2) and (x0 + x1) / 2 == pytest.approx(g.point[0])
+    assert ex.readout_values["|f₅| (N)"] == pytest.approx(np.hypot(*g.wrench[:2]))
+    ex.set(focus="all")
+    assert ex.ax.get_xlim() == pytest.approx(ex.limits[:2])
+    legible(ex)
+
+
+def test_drag_the_tip_of_body_2_closes_the_loops_again(ex):
+    ex.advance(2)
+    start = tuple(ex.state["tips"][1])
+    base = ex.state["tips"][0]
+    target = (base[0] - 0.2, base[1] + 0.95)
+    ex.drag("tip of body 2", start, target, steps=5)
+    legible(ex)
+    assert ex.message == ""
+    assert ex.values["t (s)"] == 0.0 and ex.readout_values["t"] == 0.0       # a new initial state
+    a2 = np.degrees(np.arctan2(target[1] - base[1], target[0] - base[0]))
+    assert ex.state["sol"].data.pose[1, 2] == pytest.approx(np.radians(a2))
+    assert np.abs(closure_residual(ex.state["model"], ex.state["q"])).max() < 1e-9
+    check_drawn_forces(ex)
+
+
+def test_refused_drags_keep_the_last_good_state(ex):
+    """A jump to another assembly of the loops in one step, and a drag onto the joint, are refused by name."""
+    shown = dict(ex.values)
+    base = ex.state["tips"][0]
+    ex.drag("tip of body 2", tuple(ex.state["tips"][1]), (base[0] + 0.3, base[1] - 1.0), steps=1)
+    legible(ex)
+    assert "jump to another assembly" in ex.message and "refused" in ex.message
+    assert ex.values == shown
+    check_drawn_forces(ex)
+    ex.drag("tip of body 2", tuple(ex.state["tips"][1]), tuple(base), steps=1)
+    assert "cannot be dragged onto its joint" in ex.message and ex.values == shown
+    legible(ex)
+    # the same place reached in small steps is a legitimate, continuous pose
+    ex.drag("tip of body 2", tuple(ex.state["tips"][1]), (base[0] + 0.3, base[1] - 1.0), steps=30)
+    assert np.abs(closure_residual(ex.state["model"], ex.state["q"])).max() < 1e-9
+    legible(ex)
+
+
+def test_drag_the_tip_of_body_1_turns_the_pivot(ex):
+    ex.drag("tip of body 1", tuple(ex.state["tips"][0]), (-0.5, 0.8), steps=8)
+    legible(ex)
+    assert ex.message == ""
+    assert ex.values["body 1 angle (deg)"] == pytest.approx(np.degrees(np.arctan2(0.8, -0.5)))
+    check_drawn_forces(ex)
