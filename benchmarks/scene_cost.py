@@ -246,6 +246,8 @@ def cases() -> list:
     qn, qdn, taun = np.random.default_rng(3).normal(size=(3, N))
     mn = chain_model(N)
     from planargeo.widgets import SliderCrankExplorer, TreeExplorer
+    from planargeo.scenes import impulse as impulse_scene, subspace as subspace_scene
+    from planargeo.screws.twists import inertia_matrix
 
     sc_ex, tr_ex = SliderCrankExplorer(display="agg"), TreeExplorer(display="agg")
     v_sc = dict(sc_ex.values, **{"crank angle (deg)": math.degrees(0.7)})
@@ -262,6 +264,19 @@ def cases() -> list:
              "(the default) and the explorer skips",
              lambda: car_scene.car(omega=0.6), lambda: car_scene.car(omega=0.6, outlines=False),
              read_full=_car_reads, read_minimal=_car_reads),
+        Case("scene", "subspace", "subspace explorer: its compute step (`subspace_state`) vs the scene",
+             "the report's plain lists of every quantity (the explorer keeps the numpy arrays)",
+             lambda: scenes.build("subspace", joint="revolute_prismatic", joint_angle_deg=30.0),
+             lambda: subspace_scene.subspace_state("revolute_prismatic", (0.0, 0.0),
+                                                   subspace_scene.unit_direction(30.0),
+                                                   inertia_matrix(2.0, (1.0, 0.0), 0.5), [0.0, 1.0, 1.6]),
+             read_full=lambda r: {k: r.quantities[k] for k in ("T", "U", "Q", "mu", "psi", "gamma")},
+             read_minimal=lambda st: {k: st[k] for k in ("T", "U", "Q", "mu", "psi", "gamma")}),
+        Case("scene", "impulse", "impulse explorer: the scene function vs `scenes.build`",
+             "`inspect.signature` of the scene (the explorer calls the function)",
+             lambda: scenes.build("impulse", body="door", x=0.3), lambda: impulse_scene.impulse(body="door", x=0.3),
+             read_full=lambda r: {k: r.quantities[k] for k in ("dv", "reaction", "apparent_mass")},
+             read_minimal=lambda r: {k: r.quantities[k] for k in ("dv", "reaction", "apparent_mass")}),
         Case("scene", "slider-crank", "slider-crank explorer: its compute step vs the scene",
              "the scene's model rebuild and report quantities (the explorer caches the model and calls "
              "`loop_solve`, which forms only the contact columns of Λ⁻¹)",

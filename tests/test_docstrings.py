@@ -55,10 +55,6 @@ import planargeo
 PENDING: set[str] = {
     "planargeo.widgets",
     "planargeo.draw",
-    "planargeo.report",
-    "planargeo.cli",
-    "planargeo.algorithms.loops",
-    "planargeo.simulate.loops",
     "planargeo.algorithms.articulated_mobility",
     "planargeo.algorithms.chain_splitting",
 }
