@@ -279,15 +279,22 @@ def legend(items, ax=None, *, loc="lower right", **kw):
     return get_ax(ax).legend(handles=handles, **opts)
 
 
-def setup_axes(ax, limits=None, *, grid=False, axis_off=True):
+def _is_axes(x) -> bool:
+    """True for a matplotlib axes (how the former ax-first calls are recognised)."""
+    return hasattr(x, "transData") and hasattr(x, "annotate")
+
+
+def setup_axes(limits=None, ax=None, *, grid=False, axis_off=True):
     """Equal-aspect geometric axes with optional ``limits = (x0, x1, y0, y1)``.
+
+    The former call ``setup_axes(ax, limits)`` (axes first) is still read correctly.
 
     Parameters
     ----------
-    ax : matplotlib.axes.Axes
-        The axes.
     limits : (float, float, float, float), optional
         ``(x0, x1, y0, y1)``.
+    ax : matplotlib.axes.Axes, optional
+        The axes (default: the current axes, :func:`get_ax`).
     grid : bool
         Draw a grid.
     axis_off : bool
@@ -296,8 +303,18 @@ def setup_axes(ax, limits=None, *, grid=False, axis_off=True):
     Returns
     -------
     matplotlib.axes.Axes
-        ``ax``.
+        The axes set up.
+
+    Raises
+    ------
+    InputError
+        Axes given twice (first argument and ``ax``).
     """
+    if _is_axes(limits):                    # the former order setup_axes(ax, limits)
+        if _is_axes(ax):
+            raise InputError("setup_axes: ax given twice (first argument and ax=)")
+        limits, ax = ax, limits
+    ax = get_ax(ax)
     ax.set_aspect("equal", adjustable="box")
     if limits is not None:
         ax.set_xlim(limits[0], limits[1])

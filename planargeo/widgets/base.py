@@ -628,7 +628,7 @@ class Explorer:
         ax : matplotlib.axes.Axes
             The explorer's axes.
         """
-        setup_axes(ax, self.limits, axis_off=False)
+        setup_axes(self.limits, ax=ax, axis_off=False)
         if self.grid:
             ax.grid(True, lw=0.3, alpha=0.5)
 

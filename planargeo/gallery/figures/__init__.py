@@ -143,7 +143,7 @@ def new_figure(height=2.8, *, nrows=1, ncols=1, margins=None, polar=None, **kw):
     if margins is None:
         fig.subplots_adjust(left=0.02, right=0.98, bottom=0.02, top=0.98, wspace=0.05, hspace=0.05)
         for ax in axs.flat:
-            setup_axes(ax)
+            setup_axes(ax=ax)
     else:
         left, right, bottom, top = margins
         fig.subplots_adjust(left=left, right=right, bottom=bottom, top=top)

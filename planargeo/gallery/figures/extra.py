@@ -42,7 +42,7 @@ def extra_inertia_field(ax):
                 (f[2] + c[1] * f[0] - c[0] * f[1]) / np.hypot(*f[:2]))   # foot of c on f (4.27)
             anchor = foot + 1.3 * e
         plot_line(f, ax, role="wrench", scale=None, text=f"$Ia_{k}$", anchor=anchor, linewidth=1.2)
-    fit_view(ax, [[-2.0, -1.4], [2.0, 1.6]], margin=0.02)
+    fit_view([[-2.0, -1.4], [2.0, 1.6]], margin=0.02, ax=ax)
 
 
 @register(10.02, height=6.0, nrows=3)
@@ -62,7 +62,7 @@ def extra_joint_splits(axs):
         ax.text(0.02, 0.02, f"joint {i + 1}: Q = τ = {Qi[0]:.2f}", transform=ax.transAxes,
                 fontsize=7, bbox=dict(fc="white", ec="none", pad=0.5))
         ends = [p for a in out.values() if a.get_arrow() is not None for p in a.get_arrow()]
-        fit_view(ax, [*shape_points(*arts["shapes"]), *ends, [-0.3, -0.5]], margin=0.1)
+        fit_view([*shape_points(*arts["shapes"]), *ends, [-0.3, -0.5]], margin=0.1, ax=ax)
 
 
 @register(10.03, height=3.6)
@@ -75,8 +75,8 @@ def extra_slider_crank(ax):
     res, d, outline = slider_crank(ax, alpha=0.25)
     m = res.model
     for i, body in enumerate(m.bodies):
-        label(ax, d.com[i], body.name, offset=(-10, 0), ha="right", va="center", fontsize=7,
-              color="#1f3a4d")
+        label(d.com[i], body.name, offset=(-10, 0), ha="right", va="center", fontsize=7,
+              color="#1f3a4d", ax=ax)
     (contact,) = m.contacts
     pc = world_point(d.pose, contact.a, contact.point_a)          # the slider's contact point
     a = np.asarray(res.quantities["a"])
@@ -91,7 +91,7 @@ def extra_slider_crank(ax):
         plot_point(v[k], ax, role="twist", text=f"$v_{k + 1}$", glyph=False, text_offset=off)
     pts = [outline, *[np.reshape(to_xy(x), (1, 2)) for x in a[:2]],
            [pc + [1.6, 0.0], d.origin[0] - [1.2, 0.3]]]
-    fit_view(ax, np.vstack(pts), margin=0.06)
+    fit_view(np.vstack(pts), margin=0.06, ax=ax)
 
 
 @register(0.5, height=3.2)

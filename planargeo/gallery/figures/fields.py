@@ -54,7 +54,7 @@ def fig1_1(ax):
           color=COLORS["twist"])
     ax.plot([POLE[0], Q[0]], [POLE[1], Q[1]], color=COLORS["construct"], lw=0.8, ls="--")
     label((POLE + Q) / 2, "$r$", ax=ax, offset=(4, -10), color=COLORS["construct"])
-    fit_view(ax, [[-1.75, -1.75], [1.75, 1.75]], margin=0.0)
+    fit_view([[-1.75, -1.75], [1.75, 1.75]], margin=0.0, ax=ax)
 
 
 @register(1.04, height=2.9)
@@ -83,4 +83,4 @@ def fig1_4(ax):
         ax.text(*p, text, fontsize=8, color=COLORS["momentum"], ha="center", va="center",
                 bbox=dict(fc="white", ec="none", pad=0.5))
     plot_line(f, ax, role="wrench", scale=0.9, anchor=LINE_POINT + 0.4 * e, text="$f$")
-    fit_view(ax, [[-1.75, -1.75], [1.75, 1.75]], margin=0.0)
+    fit_view([[-1.75, -1.75], [1.75, 1.75]], margin=0.0, ax=ax)
