@@ -1,7 +1,7 @@
 """Charts (curves over a parameter) in the package style: Figs 7.4, 7.6-7.8, 7.10."""
 from __future__ import annotations
 
-from planargeo.draw.style import OKABE_ITO, LINEWIDTHS, get_ax
+from planargeo.draw.style import LABEL_PT, OKABE_ITO, LINEWIDTHS, get_ax
 from planargeo.errors import InputError
 
 __all__ = ["CURVE_COLORS", "plot_curves", "polar_curves"]
@@ -110,7 +110,7 @@ def polar_curves(theta, rs, labels, ax=None, *, title=None, rlabel=""):
     arts = _curves(ax, theta, rs, labels, title)
     ax.set_rlabel_position(100)
     if rlabel:  # in the empty upper-left corner, clear of the radial tick labels along 100°
-        ax.text(-0.08, 1.04, f"radius: {rlabel}", transform=ax.transAxes, fontsize=7,
+        ax.text(-0.08, 1.04, f"radius: {rlabel}", transform=ax.transAxes, fontsize=LABEL_PT,
                 ha="left", va="top")
-    ax.legend(loc="upper left", bbox_to_anchor=(0.92, 1.12), frameon=False, fontsize=6.5)
+    ax.legend(loc="upper left", bbox_to_anchor=(0.92, 1.12), frameon=False, fontsize=LABEL_PT)
     return arts

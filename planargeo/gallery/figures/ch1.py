@@ -7,7 +7,7 @@ from matplotlib.patches import Circle
 from planargeo.screws.twists import X_P, crm, unit_rotation
 from planargeo.draw.artists import plot_point
 from planargeo.draw.constructions import label
-from planargeo.draw.style import COLORS
+from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.draw.layout import fit_view
 from planargeo.gallery.figures import register
 
@@ -30,7 +30,7 @@ def _arrow(ax, p, d, text, color, offset=(4, 4)):
     q = np.asarray(p) + np.asarray(d)
     ax.annotate("", xy=tuple(q), xytext=tuple(p),
                 arrowprops=dict(arrowstyle="-|>", color=color, lw=1.4, shrinkA=0, shrinkB=0))
-    label(q, text, color=color, offset=offset, fontsize=7, ax=ax)
+    label(q, text, color=color, offset=offset, fontsize=LABEL_PT, ax=ax)
 
 
 @register(1.02, height=2.3)
@@ -66,7 +66,7 @@ def fig1_3(ax):
         ax.plot(*Pk, "o", color="#999999" if k != 1 else "#222222", ms=3)
     ax.annotate("", xy=tuple(P + 0.2 * vP), xytext=tuple(P),
                 arrowprops=dict(arrowstyle="-|>", color=COLORS["twist"], lw=1.4))
-    label(P + 0.2 * vP, "$v_P$ (constant at $P$)", color=COLORS["twist"], fontsize=7, ax=ax)
-    label(P, "$P$ (fixed in space)", offset=(4, -11), fontsize=7, ax=ax)
+    label(P + 0.2 * vP, "$v_P$ (constant at $P$)", color=COLORS["twist"], fontsize=LABEL_PT, ax=ax)
+    label(P, "$P$ (fixed in space)", offset=(4, -11), fontsize=LABEL_PT, ax=ax)
     ax.text(0.98, 0.04, "spatial acceleration $a = \\dot v = 0$", transform=ax.transAxes,
-            ha="right", fontsize=7, color=COLORS["accel"])
+            ha="right", fontsize=LABEL_PT, color=COLORS["accel"])

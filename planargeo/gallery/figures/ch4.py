@@ -11,7 +11,7 @@ from planargeo.draw.artists import plot_conic, plot_line
 from planargeo.draw.constructions import (draw_acceleration_step, draw_dimension, draw_newton_euler,
                              draw_twist_sum, draw_velocity_step, draw_wrench_sum, label)
 from planargeo.draw.mechanism import draw_com, draw_frame, draw_ground, draw_link, draw_model, draw_pin
-from planargeo.draw.style import COLORS, legend
+from planargeo.draw.style import COLORS, LABEL_PT, legend
 from planargeo.draw.layout import fit_view
 from planargeo.gallery.figures import chain, register
 
@@ -59,7 +59,7 @@ def fig4_2(ax):
     beta = r[1] / (r[0] + r[1])
     draw_dimension([0, 0.45], [beta * L, 0.45], r"$\beta L$", ax=ax)
     ax.text(0.6, 0.97, rf"$\beta = R_2/(R_1 + R_2)$ = {beta:.2g}", transform=ax.transAxes,
-            ha="center", va="top", fontsize=7)
+            ha="center", va="top", fontsize=LABEL_PT)
     fit_view([[-0.3, -1.4], [L + 0.3, 1.4]], margin=0.03, ax=ax)
 
 

@@ -11,7 +11,7 @@ from planargeo.draw.artists import plot_conic, plot_line, plot_point
 from planargeo.draw.constructions import (line_conic_points, draw_percussion, draw_polar_exterior,
                              draw_polar_interior, draw_power, draw_segment, label)
 from planargeo.draw.mechanism import draw_body, link_polygon
-from planargeo.draw.style import COLORS
+from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.draw.layout import fit_view
 from planargeo.gallery.figures import register
 
@@ -54,12 +54,12 @@ def _coords(ax, alternative: bool):
         _vec_arrow(ax, Pxy, 0.7 * eP, r"$\vec e$", color=COLORS["twist"])
         _vec_arrow(ax, foot, 0.7 * eL, r"$\vec e$", color=COLORS["wrench"])
         ax.text(0.98, 0.02, r"$P=[-r\vec e;\,1]$ (5.49),  $L=[\vec e;\,r]$ (5.55)",
-                transform=ax.transAxes, fontsize=7, ha="right", va="bottom")
+                transform=ax.transAxes, fontsize=LABEL_PT, ha="right", va="bottom")
     else:
         _vec_arrow(ax, [0, 0], 0.7 * nP, r"$\vec n$", color=COLORS["twist"], offset=(-12, -2))
         _vec_arrow(ax, [0, 0], 0.7 * nL, r"$\vec n$", color=COLORS["wrench"], offset=(-4, -16))
         ax.text(0.98, 0.02, r"$P=[1;\,r\vec n]$,  $L=[r;\,-\vec n]$ (5.4, 5.14)",
-                transform=ax.transAxes, fontsize=7, ha="right", va="bottom")
+                transform=ax.transAxes, fontsize=LABEL_PT, ha="right", va="bottom")
     label(0.72 * Pxy, "$r$", offset=(-10, 2), ax=ax)      # beyond the unit-vector arrows
     label(0.72 * foot, "$r$", offset=(0, 4), ax=ax)
     fit_view([[-0.6, -1.6], [2.8, 2.6]], margin=0.03, ax=ax)
@@ -139,7 +139,7 @@ def fig5_4(ax):
     plot_line(polar(C, P), ax, scale=None, text="$L = CP$", anchor=[1.0, -1.2],
               text_offset=(8.0, -12.0))
     txt = ", ".join(f"$u_{k + 1}$={v:.2f}" for k, v in enumerate(u / (u @ [Q1[2], Q2[2], Q3[2]])))
-    ax.text(0.02, 0.98, txt, transform=ax.transAxes, fontsize=7, ha="left", va="top")
+    ax.text(0.02, 0.98, txt, transform=ax.transAxes, fontsize=LABEL_PT, ha="left", va="top")
     fit_view([q1, [-1.9, -1.5], [1.9, 1.5]], margin=0.1, ax=ax)
 
 

@@ -13,6 +13,7 @@ from planargeo.draw.constructions import (draw_decomposition, draw_projective_st
                              draw_wrench_split)
 from planargeo.draw.mechanism import draw_body, draw_com, draw_pin, link_polygon
 from planargeo.draw.layout import fit_panel, fit_view, shape_points
+from planargeo.draw.style import LABEL_PT
 from planargeo.gallery.figures import register
 from planargeo.gallery.figures.ch4 import QDD47, chain47
 
@@ -162,7 +163,7 @@ def fig6_5(ax):
     assert np.isclose(qdd, QDD47[i])
     fit_panel(np.vstack([P, lo - [0.0, 0.45]]), margin=0.04, ax=ax)
     ax.text(0.98, 0.02, f"$\\psi_2$ = {psi_i:.3g},  $\\psi_1$ = {psi_prev:.3g},  "
-            f"$\\ddot q_2$ = {qdd:.3g}", transform=ax.transAxes, fontsize=7, ha="right",
+            f"$\\ddot q_2$ = {qdd:.3g}", transform=ax.transAxes, fontsize=LABEL_PT, ha="right",
             va="bottom")
 
 
@@ -202,5 +203,5 @@ def fig6_6(ax):
     fit_panel(np.vstack([P, [lo[0] - 0.6, lo[1] - 0.9], [hi[0] + 0.8, hi[1] + 0.5]]),
               margin=0.02, ax=ax)
     ax.text(0.02, 0.98, f"$\\dot\\omega$ = {qn['omega_dot']:.3f} rad/s²", transform=ax.transAxes,
-            fontsize=7, va="top")
+            fontsize=LABEL_PT, va="top")
 

@@ -13,7 +13,7 @@ from planargeo.draw.artists import plot_conic, plot_line, plot_point
 from planargeo.draw.charts import plot_curves, polar_curves
 from planargeo.draw.constructions import draw_dimension, label
 from planargeo.draw.mechanism import draw_model
-from planargeo.draw.style import COLORS
+from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.draw.layout import fit_panel, fit_view, shape_points
 from planargeo.gallery.figures import chain, register, scene_state
 
@@ -94,7 +94,7 @@ def fig7_3(axs):
         plot_line([0.0, 1.0, 0.0], ax, role="construct", scale=None)    # x = 0 through CJ₁
         P = np.vstack([shape_points(*arts["shapes"]), *[c.get_xy() for c in cs]])
         if detail:
-            label([0, 0], "$CJ_1$", offset=(-22, -14), fontsize=7, ax=ax)
+            label([0, 0], "$CJ_1$", offset=(-22, -14), fontsize=LABEL_PT, ax=ax)
             # A₁'s label outside every circle: at its lower-right point (the bodies' grey
             # circles lie left and above), pushed outward
             xy = cs[-1].get_xy()
@@ -102,7 +102,7 @@ def fig7_3(axs):
                   va="top", ax=ax)
             ax.text(0.98, 0.02, f"φ = {np.rad2deg(res.params['phi']):.0f}°, "
                     f"λ = {res.quantities['lam']:g}:\n$m_x/m$ = {res.quantities['mx_over_m']:.3f}",
-                    transform=ax.transAxes, fontsize=7, ha="right")
+                    transform=ax.transAxes, fontsize=LABEL_PT, ha="right")
             fit_view(np.vstack([P, P.min(axis=0) - [0.3, 0.7]]), margin=0.03, ax=ax)
         else:
             plot_point(a1, ax, role="accel", text=f"$a_1$\n({ax1[0]:.2f}, {ax1[1]:.2f})",
@@ -124,7 +124,7 @@ def fig7_4(ax):
     ys.append(1 + np.cos(phi) ** 2)
     plot_curves(np.rad2deg(phi), ys, [f"λ = {lam:g}" for lam in lams] + ["λ → ∞"], ax,
                 xlabel="φ [deg]", ylabel="$m_x/m$", ylim=(0.9, 2.45),
-                legend=dict(ncol=3, loc="upper center", fontsize=6.5))
+                legend=dict(ncol=3, loc="upper center", fontsize=LABEL_PT))
     ax.set_xticks([0, 45, 90, 135, 180])
 
 
@@ -147,7 +147,7 @@ def fig7_5(ax):
         y = -0.5 - 0.2 * k
         ax.plot([dn, dn], [y, -0.3], color=COLORS["accel"], lw=0.8)
         label([dn, y], f"$d_1$ = {dn:.3f} L (n = {', '.join(map(str, ns))})", offset=(2, -2),
-              fontsize=6.5, va="top", color=COLORS["accel"], ax=ax)
+              fontsize=LABEL_PT, va="top", color=COLORS["accel"], ax=ax)
     fit_view([[-0.3, -1.1], [4.2, 0.7]], margin=0.02, ax=ax)
 
 

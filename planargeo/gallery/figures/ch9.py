@@ -7,7 +7,7 @@ from planargeo.mechanics.contacts import world_point
 from planargeo.draw.artists import plot_line
 from planargeo.draw.constructions import label
 from planargeo.draw.mechanism import draw_model
-from planargeo.draw.style import COLORS
+from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.draw.layout import fit_panel, fit_view, shape_points
 from planargeo.gallery.figures import register, scene_state
 
@@ -80,9 +80,9 @@ def fig9_2(ax):
             return min(abs(f[2] + q[1] * f[0] - q[0] * f[1]) / np.hypot(*f[:2]) for f in lines)
 
         u = n if line_dist(cxy + 0.25 * n) >= line_dist(cxy - 0.25 * n) else -n
-        label(cxy, str(i + 1), offset=tuple(9 * u), fontsize=7, color="#1f3a4d",
+        label(cxy, str(i + 1), offset=tuple(9 * u), fontsize=LABEL_PT, color="#1f3a4d",
               ha="center", va="center", ax=ax)
-    ax.text(0.02, 0.02, "\n".join(mags), transform=ax.transAxes, fontsize=7,
+    ax.text(0.02, 0.02, "\n".join(mags), transform=ax.transAxes, fontsize=LABEL_PT,
             color=COLORS["reaction"])
 
 
@@ -117,7 +117,7 @@ def fig9_3(ax):
     res, d, P = slider_crank(ax)
     for i, body in enumerate(res.model.bodies):  # the piston's name right of its guide, others left
         right = i == 2
-        label(d.com[i], body.name, offset=(18 if right else -9, 6 if i == 0 else 0), fontsize=7,
+        label(d.com[i], body.name, offset=(18 if right else -9, 6 if i == 0 else 0), fontsize=LABEL_PT,
               color="#1f3a4d", va="center", ha="left" if right else "right", ax=ax)
     q = res.state["q"]
     absang = np.cumsum(q)
@@ -131,7 +131,7 @@ def fig9_3(ax):
                 color=COLORS["construct"], lw=0.6, ls="--")
         mid = t[len(t) // 2]
         label(o + rr * np.array([np.cos(mid), np.sin(mid)]),
-              f"{nm} = {val:.3f}", offset=((6, -12), (6, 2), (-62, 4))[i], fontsize=7,
+              f"{nm} = {val:.3f}", offset=((6, -12), (6, 2), (-62, 4))[i], fontsize=LABEL_PT,
               color=COLORS["twist"], ax=ax)
     fit_view(np.vstack([P, P.min(axis=0) - [1.0, 0.4], P.max(axis=0) + [0.8, 0.2]]), margin=0.03, ax=ax)
 
