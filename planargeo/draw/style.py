@@ -3,20 +3,20 @@
 Colours come from the Okabe-Ito palette (colour-blind safe).  Each kind of
 object has one role, used in every figure:
 
-=============  ==========================  ==================================
-role           object                      look
-=============  ==========================  ==================================
-``twist``      a velocity twist (a point)  blue marker + rotation glyph
-``accel``      an acceleration (a point)   vermillion marker + glyph
-``wrench``     a wrench (a line)           orange line with force arrow
-``reaction``   a reaction / internal force bluish-green line
-``momentum``   a momentum wrench           reddish-purple line
-``inertia``    an inertia (conic)          black dashed conic + centre dot
-``conic``      a real conic                black solid curve
-``construct``  construction lines          grey thin dashed
-``body``       a rigid body outline        sky-blue fill, dark outline
-``ground``     ground / fixed frame        dark grey hatching
-=============  ==========================  ==================================
+=============  ==============================  ==================================
+role           object                          look
+=============  ==============================  ==================================
+``twist``      a velocity twist (a point)      blue marker + rotation glyph
+``accel``      an acceleration (a point)       vermillion marker + glyph
+``wrench``     a wrench (a line)               orange line with force arrow
+``reaction``   a reaction / internal force     bluish-green line
+``momentum``   a momentum wrench               reddish-purple line
+``inertia``    an inertia (conic)              black dashed conic + centre dot
+``conic``      a real conic                    black solid curve
+``construct``  construction lines              grey thin dashed
+``body``       a rigid body outline            sky-blue fill, dark outline
+``ground``     ground / fixed frame            dark grey hatching
+=============  ==============================  ==================================
 
 A sum keeps the role of its terms (a sum of twists is a twist, a sum of
 wrenches is a wrench): ``v₃ = v₁ + v₂`` or ``f₃ = f₁ + f₂`` is drawn in the
