@@ -93,3 +93,18 @@ def test_the_one_text_size_is_legible():
     for key in ("font.size", "axes.labelsize", "legend.fontsize", "xtick.labelsize", "ytick.labelsize",
                 "axes.titlesize"):
         assert RC[key] >= LABEL_PT and RC[key] * 100 / 72 >= MIN_TEXT_PX, key
+
+
+@pytest.mark.parametrize("name", _params())
+def test_the_explorers_legibility_check_passes(name):
+    """The check explorers are held to (planargeo.draw.layout.legibility_problems, at the SVG's natural
+    size): text >= 11 px, no overlap, every label inside its axes and the figure."""
+    from planargeo.draw.layout import legibility_problems
+
+    with rc_context():
+        fig = SPECS[name].build()
+        try:
+            problems = legibility_problems(fig)
+        finally:
+            plt.close(fig)
+    assert problems == [], f"{name}: {problems}"

@@ -30,7 +30,7 @@ def _axes_cross(ax, size=2.6):
         ax.annotate("", xy=tuple(np.array(d) * size), xytext=tuple(-np.array(d) * 0.3),
                     arrowprops=dict(arrowstyle="-|>", color="#555555", lw=0.7, mutation_scale=7))
     label([size, 0], "$x$", offset=(2, -10), color="#555555", ax=ax)
-    label([0, size], "$y$", offset=(-10, 0), color="#555555", ax=ax)
+    label([0, size], "$y$", offset=(-10, 0), va="top", color="#555555", ax=ax)
 
 
 def _coords(ax, alternative: bool):
@@ -185,4 +185,4 @@ def fig5_7(ax):
     out = draw_power(v, I.matrix, ax, text_offsets=((-14.0, -16.0), (8.0, 4.0), (0.0, -14.0), None),
                      p_label_at=-2.3, f_label_at=-1.0)
     out["v"].set_text_alignment("right")
-    fit_view([[-0.6, -1.5], [2.6, 1.2], out["a"].get_xy(), to_xy(v)], margin=0.08, ax=ax)
+    fit_view([[-0.6, -1.5], [2.6, 1.45], out["a"].get_xy(), to_xy(v)], margin=0.08, ax=ax)
