@@ -97,7 +97,7 @@ _HEADING = re.compile(r"^(\S.*)\n(-{3,}|={3,})$", re.M)
 #: people and to be fixed in their own files (then delete the entry): planargeo.draw.style's
 #: table has a cell ("a reaction / internal force") wider than its column.  A table that no
 #: longer has that layout is left alone.
-DOC_FIXES = {"planargeo.draw.style": (15, 43, 2)}     # {module: (column start, next column start, widen by)}
+DOC_FIXES: dict = {}     # {module: (column start, next column start, widen by)}
 
 
 def _widen_column(text: str, start: int, nxt: int, by: int) -> str:

@@ -16,17 +16,14 @@ import importlib
 import inspect
 import pkgutil
 
+import numpy as np
 import pytest
 
 import planargeo.draw
 
-#: Functions that still take ``ax`` first, in files other helpers own (issue 13): their
-#: entries are expected to fail until those files change (non-strict: they pass once fixed).
-KNOWN = {
-    "planargeo.draw.style.setup_axes": "owner base (draw/style.py): setup_axes(ax, limits) takes ax first",
-    "planargeo.draw.layout.fit_view": "owner base (draw/layout.py): fit_view(ax, points) takes ax first",
-    "planargeo.draw.layout.fit_panel": "owner base (draw/layout.py): fit_panel(ax, points) takes ax first",
-}
+#: Functions that still take ``ax`` first (none left: setup_axes, fit_view and fit_panel moved it
+#: to a keyword in issue 13 and still read the former order, see the last test).
+KNOWN: dict[str, str] = {}
 EXEMPT = {"planargeo.draw.style.get_ax"}
 
 
@@ -133,3 +130,46 @@ def test_former_order_still_draws_where_the_new_order_draws():
         assert label((0, 0), "cur").axes is ax            # ax=None: the current axes
     finally:
         plt.close(fig)
+
+
+def test_former_order_of_setup_axes_fit_view_fit_panel_still_works():
+    """setup_axes / fit_view / fit_panel moved ax to a keyword; the old ax-first calls still work."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from planargeo.draw.layout import fit_panel, fit_view
+    from planargeo.draw.style import setup_axes
+    from planargeo.errors import InputError
+
+    fig, (a, b) = plt.subplots(1, 2)
+    try:
+        assert setup_axes((0, 2, 0, 1), ax=a) is a and a.get_xlim() == (0, 2)
+        assert setup_axes(b, (0, 2, 0, 1), grid=True, axis_off=False) is b and b.get_xlim() == (0, 2)
+        P = [[0.0, 0.0], [4.0, 1.0]]
+        fit_view(P, ax=a, margin=0.1)
+        fit_view(b, P, margin=0.1)
+        assert np.allclose(a.get_xlim(), b.get_xlim()) and np.allclose(a.get_ylim(), b.get_ylim())
+        b.set_xlim(0, 1)
+        fit_view(P, 0.1, ax=b)
+        assert np.allclose(a.get_xlim(), b.get_xlim())
+        plt.sca(b)
+        assert fit_view(P, margin=0.3) is b
+        with pytest.raises(InputError, match="ax given twice"):
+            fit_view(a, P, ax=b)
+        with pytest.raises(InputError, match="margin given twice"):
+            fit_view(P, 0.1, ax=a, margin=0.2)
+        with pytest.raises(InputError, match="ax given twice"):
+            setup_axes(a, ax=b)
+    finally:
+        plt.close(fig)
+    got = []
+    for call in (lambda ax: fit_panel(P, ax=ax, margin=0.05), lambda ax: fit_panel(ax, P, margin=0.05)):
+        fig, ax = plt.subplots(figsize=(3.4, 2.8))
+        try:
+            call(ax)
+            got.append([*fig.get_size_inches(), *ax.get_xlim(), *ax.get_ylim()])
+        finally:
+            plt.close(fig)
+    assert np.allclose(got[0], got[1]) and got[0][1] < 2.8      # the height followed the points

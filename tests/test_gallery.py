@@ -96,7 +96,7 @@ def test_only_unknown_name(tmp_path):
 
 #: Every planar figure issue 4 asks for (1.2, 1.3, 3.1, 3.2, 4.1–4.10, 5.1–5.7, 6.1–6.6,
 #: 7.1–7.11, 9.1–9.3), written out from the issue, not from the registry.
-THESIS_FIGURES = (["fig1_2", "fig1_3", "fig3_1", "fig3_2"]
+THESIS_FIGURES = (["fig1_1", "fig1_2", "fig1_3", "fig1_4", "fig2_1", "fig3_1", "fig3_2", "fig3_3"]
                   + [f"fig4_{k}" for k in range(1, 11)] + [f"fig5_{k}" for k in range(1, 8)]
                   + [f"fig6_{k}" for k in range(1, 7)] + [f"fig7_{k}" for k in range(1, 12)]
                   + [f"fig9_{k}" for k in range(1, 4)])
@@ -110,7 +110,7 @@ def test_registry_covers_every_thesis_figure_and_the_extras():
     specs = load_all()
     missing = [n for n in THESIS_FIGURES + list(EXTRAS) if n not in specs]
     assert missing == []
-    assert len(THESIS_FIGURES) == 4 + 10 + 7 + 6 + 11 + 3
+    assert len(THESIS_FIGURES) == 8 + 10 + 7 + 6 + 11 + 3
     for n in THESIS_FIGURES:   # each caption names its thesis figure
         ch, k = n[3:].split("_")
         assert specs[n].caption.startswith(f"Fig. {ch}.{k} "), n

@@ -1,10 +1,12 @@
-"""Legibility of every gallery figure: no label cut off, no two labels on top of each other.
+"""Legibility of every gallery figure: text large enough, no label cut off, no two on top of each other.
 
 Each registered figure is built in the gallery's style and drawn on Agg.  The
 texts that are actually drawn (recorded at draw time, so labels of artists
 that skip them, ticks outside the view and empty texts do not count) must lie
 inside the figure, and no two of them may overlap by more than ``TOL`` pixels
-in both directions (at the gallery's 100 dpi: 0.7 pt).
+in both directions (at the gallery's 100 dpi: 0.7 pt), and every one must be at least
+``MIN_TEXT_PX`` (11 px) high at the SVG's natural size (the figure's 100 dpi:
+``fontsize × dpi / 72``), the size explorers are held to too (issue 13).
 """
 from __future__ import annotations
 
@@ -18,7 +20,7 @@ import pytest  # noqa: E402
 from matplotlib.text import Text  # noqa: E402
 
 from planargeo.gallery.figures import load_all  # noqa: E402
-from planargeo.draw.style import rc_context  # noqa: E402
+from planargeo.draw.style import LABEL_PT, MIN_TEXT_PX, rc_context  # noqa: E402
 
 TOL = 1.0  # pixels
 
@@ -33,7 +35,7 @@ def _drawn_texts(fig, monkeypatch):
     def record(self, renderer):
         orig(self, renderer)
         if self.get_visible() and self.get_text():
-            drawn.append((self.get_text(), self.get_window_extent(renderer)))
+            drawn.append((self.get_text(), self.get_window_extent(renderer), self.get_fontsize()))
 
     monkeypatch.setattr(Text, "draw", record)
     fig.canvas.draw()
@@ -63,11 +65,15 @@ def test_labels_inside_and_apart(name, monkeypatch):
     with rc_context():
         fig = SPECS[name].build()
         try:
-            texts = _drawn_texts(fig, monkeypatch)
+            drawn = _drawn_texts(fig, monkeypatch)
             W, H = fig.bbox.width, fig.bbox.height
+            px_per_pt = fig.dpi / 72.0
         finally:
             plt.close(fig)
-    assert texts, f"{name}: no text drawn"
+    assert drawn, f"{name}: no text drawn"
+    small = [(t, round(size * px_per_pt, 1)) for t, _, size in drawn if size * px_per_pt < MIN_TEXT_PX]
+    assert not small, f"{name}: texts smaller than {MIN_TEXT_PX:g} px at the SVG's natural size: {small}"
+    texts = [(t, bb) for t, bb, _ in drawn]
     outside = [(t, [round(v, 1) for v in bb.extents]) for t, bb in texts
                if bb.x0 < -TOL or bb.y0 < -TOL or bb.x1 > W + TOL or bb.y1 > H + TOL]
     assert not outside, f"{name}: texts cut off by the figure edge ({W:g}x{H:g} px): {outside}"
@@ -77,3 +83,28 @@ def test_labels_inside_and_apart(name, monkeypatch):
         if dx > TOL and dy > TOL:
             clashes.append((ta, tb, round(dx, 1), round(dy, 1)))
     assert not clashes, f"{name}: overlapping texts (text, text, dx px, dy px): {clashes}"
+
+
+def test_the_one_text_size_is_legible():
+    """The style's text size is at least MIN_TEXT_PX at the gallery's (and explorers') 100 dpi."""
+    from planargeo.draw.style import EXPLORER_DPI, RC
+
+    assert RC["savefig.dpi"] == RC["figure.dpi"] == EXPLORER_DPI == 100
+    for key in ("font.size", "axes.labelsize", "legend.fontsize", "xtick.labelsize", "ytick.labelsize",
+                "axes.titlesize"):
+        assert RC[key] >= LABEL_PT and RC[key] * 100 / 72 >= MIN_TEXT_PX, key
+
+
+@pytest.mark.parametrize("name", _params())
+def test_the_explorers_legibility_check_passes(name):
+    """The check explorers are held to (planargeo.draw.layout.legibility_problems, at the SVG's natural
+    size): text >= 11 px, no overlap, every label inside its axes and the figure."""
+    from planargeo.draw.layout import legibility_problems
+
+    with rc_context():
+        fig = SPECS[name].build()
+        try:
+            problems = legibility_problems(fig)
+        finally:
+            plt.close(fig)
+    assert problems == [], f"{name}: {problems}"

@@ -232,20 +232,57 @@ def test_display_controls_must_name_controls():
         Bad(display="agg")
 
 
+def _change_and_restore(w, check) -> bool:
+    """Give control ``w`` another value, call ``check()``, give it back its own; False if it has no other.
+
+    A choice (Dropdown, ToggleButtons, RadioButtons: anything with ``options``)
+    moves to another option by its ``index``; a Checkbox or ToggleButton flips;
+    a slider goes to its max (its min when already there).
+    """
+    if hasattr(w, "options") and hasattr(w, "index"):
+        if len(w.options) < 2:
+            return False
+        old = w.index
+        w.index = (old + 1) % len(w.options)
+        check()
+        w.index = old
+        return True
+    old = w.value
+    if isinstance(old, bool):
+        w.value = not old
+    else:
+        w.value = w.max if old != w.max else w.min
+    check()
+    w.value = old
+    return True
+
+
+def test_change_and_restore_handles_every_kind_of_display_control():
+    kinds = [W.Checkbox(value=False), W.ToggleButton(value=True), W.Dropdown(options=["all", "1", "2"]),
+             W.ToggleButtons(options=[("a", 1), ("b", 2)]), W.RadioButtons(options=["x", "y"]),
+             W.FloatSlider(value=0.5, min=0.0, max=1.0), W.IntSlider(value=3, min=0, max=3)]
+    for w in kinds:
+        before, seen = w.value, []
+        assert _change_and_restore(w, lambda: seen.append(w.value))
+        assert seen and seen[0] != before and w.value == before
+    assert not _change_and_restore(W.Dropdown(options=["only"]), lambda: None)
+
+
 @pytest.mark.parametrize("name", [n for n in NAMES if getattr(widgets, n).display_controls])
 def test_every_display_control_skips_the_compute(name):
     ex = getattr(widgets, name)(display="agg")
     calls = []
     real = ex.compute
     ex.compute = lambda v, changed: calls.append(set(changed)) or real(v, changed)
+    changed = 0
     for cname in ex.display_controls:
         w = ex.controls[cname]
-        old = w.value
-        w.value = (not old) if isinstance(w, W.Checkbox) else (w.max if old != w.max else w.min)
-        assert ex.message == "", (cname, ex.message)
-        w.value = old
+        if not _change_and_restore(w, lambda: ex.message == "" or pytest.fail(f"{cname}: {ex.message}")):
+            continue
+        changed += 1
+    assert changed >= 1
     assert calls == []
-    assert ex.n_updates == 1 + 2 * len(ex.display_controls)
+    assert ex.n_updates == 1 + 2 * changed
     ex.fig.canvas.draw()
     # every other control still recomputes
     physics = next(k for k, w in ex.controls.items()

@@ -33,7 +33,7 @@ from matplotlib.transforms import Affine2D, IdentityTransform
 
 from planargeo._validate import as_array, as_vec3
 from planargeo.errors import InputError
-from planargeo.draw.style import get_ax, style as _style
+from planargeo.draw.style import LABEL_PT, get_ax, style as _style
 
 __all__ = [
     "PointArtist", "LineArtist", "ConicArtist",
@@ -185,7 +185,7 @@ def _arc_glyph(center, radius, ccw: bool, npts: int = 40, pts: float = 1.0):
 
 
 def _text_props(color):
-    return dict(color=color, fontsize=8, ha="center", va="center")
+    return dict(color=color, fontsize=LABEL_PT, ha="center", va="center")
 
 
 # --------------------------------------------------------------------------- label placement
@@ -309,7 +309,7 @@ class _Base(martist.Artist):
         self.set_zorder(zorder)
         self.set_in_layout(False)
         self._children = []
-        self._text = Text(0, 0, "" if text is None else str(text), fontsize=8, va="bottom")
+        self._text = Text(0, 0, "" if text is None else str(text), fontsize=LABEL_PT, va="bottom")
         self._text.set_transform(IdentityTransform())
         self._text_offset = np.asarray(text_offset, dtype=float)
         self._ha, self._va = "left", "bottom"
@@ -486,7 +486,7 @@ class PointArtist(_Base):
                                                       mutation_scale=9, color=self._color,
                                                       linewidth=1.4, shrinkA=0, shrinkB=0,
                                                       transform=IdentityTransform()))
-        self._inf = self._add_child(Text(0, 0, "∞", color=self._color, fontsize=8,
+        self._inf = self._add_child(Text(0, 0, "∞", color=self._color, fontsize=LABEL_PT,
                                          ha="center", va="center"))
         self._inf.set_transform(IdentityTransform())
         self._text.set_color(self._color)

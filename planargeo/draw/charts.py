@@ -1,7 +1,7 @@
 """Charts (curves over a parameter) in the package style: Figs 7.4, 7.6-7.8, 7.10."""
 from __future__ import annotations
 
-from planargeo.draw.style import OKABE_ITO, LINEWIDTHS, get_ax
+from planargeo.draw.style import LABEL_PT, OKABE_ITO, LINEWIDTHS, get_ax
 from planargeo.errors import InputError
 
 __all__ = ["CURVE_COLORS", "plot_curves", "polar_curves"]
@@ -78,7 +78,8 @@ def polar_curves(theta, rs, labels, ax=None, *, title=None, rlabel=""):
     """Polar curves ``rs[k](theta)`` on the polar axes ``ax``; ``rlabel`` names the radius.
 
     The radial tick labels run along 100°; ``rlabel`` goes in the axes' upper-left
-    corner (outside the circle) so that it never sits on a tick label.
+    corner (outside the circle) so that it never sits on a tick label, and the key
+    to the right of the circle; both are the figure's texts, around the round panel.
 
     Parameters
     ----------
@@ -109,8 +110,10 @@ def polar_curves(theta, rs, labels, ax=None, *, title=None, rlabel=""):
         raise InputError(f"ax must be a polar axes (projection='polar'), got a {ax.name!r} axes")
     arts = _curves(ax, theta, rs, labels, title)
     ax.set_rlabel_position(100)
+    # the note and the key belong to the figure, around the round panel (not inside the axes)
     if rlabel:  # in the empty upper-left corner, clear of the radial tick labels along 100°
-        ax.text(-0.08, 1.04, f"radius: {rlabel}", transform=ax.transAxes, fontsize=7,
-                ha="left", va="top")
-    ax.legend(loc="upper left", bbox_to_anchor=(0.92, 1.12), frameon=False, fontsize=6.5)
+        ax.figure.text(-0.08, 1.04, f"radius: {rlabel}", transform=ax.transAxes, fontsize=LABEL_PT,
+                       ha="left", va="top")
+    ax.figure.legend(handles=arts, loc="upper left", bbox_to_anchor=(0.92, 1.12),
+                     bbox_transform=ax.transAxes, frameon=False, fontsize=LABEL_PT)
     return arts

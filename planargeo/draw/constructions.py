@@ -22,7 +22,7 @@ from planargeo.screws.inertia import centre_of_mass, percussion_axis
 from planargeo.geometry.projective import from_direction, from_xy, join, meet, to_xy
 from planargeo.screws.twists import bias_force, kappa
 from planargeo.draw.artists import _mat, _vec, plot_conic, plot_line, plot_point
-from planargeo.draw.style import COLORS, get_ax, style, sum_style
+from planargeo.draw.style import COLORS, LABEL_PT, get_ax, style, sum_style
 from planargeo.errors import InputError
 from planargeo.mechanics.subspaces import Decomposition
 
@@ -76,7 +76,7 @@ def label(*args, ax=None, offset=(5, 5), color=None, ha="left", va="bottom", **k
     color, ha, va, **kw
         Text colour (default the text colour of the style), alignment and
         further :meth:`~matplotlib.axes.Axes.annotate` keywords (``fontsize``
-        defaults to 8 pt, 11 px at 100 dpi).
+        defaults to :data:`~planargeo.draw.style.LABEL_PT`).
 
     Returns
     -------
@@ -102,7 +102,7 @@ def label(*args, ax=None, offset=(5, 5), color=None, ha="left", va="bottom", **k
     xy, text = args
     return get_ax(ax).annotate(text, xy=tuple(np.asarray(xy, float)), xytext=offset,
                                textcoords="offset points", color=color or COLORS["text"],
-                               ha=ha, va=va, fontsize=kw.pop("fontsize", 8), **kw)
+                               ha=ha, va=va, fontsize=kw.pop("fontsize", LABEL_PT), **kw)
 
 
 def draw_segment(*args, ax=None, role="construct", **kw):
@@ -143,7 +143,7 @@ def draw_segment(*args, ax=None, role="construct", **kw):
     return ln
 
 
-def draw_dimension(*args, ax=None, offset=0.0, color=None, fontsize=7, at=0.5):
+def draw_dimension(*args, ax=None, offset=0.0, color=None, fontsize=LABEL_PT, at=0.5):
     """A dimension arrow ``<->`` between ``p`` and ``q``, labelled: ``draw_dimension(p, q, text, ax=None)``.
 
     The arrow is shifted by ``offset`` (data units) to the left of ``p → q``;

@@ -11,7 +11,8 @@ import itertools
 
 import numpy as np
 
-from planargeo.draw.style import MIN_TEXT_PX
+from planargeo.draw.style import MIN_TEXT_PX, _is_axes, get_ax
+from planargeo.errors import InputError
 
 __all__ = ["shape_points", "fit_panel", "fit_view", "legibility_problems", "drawn_texts"]
 
@@ -39,29 +40,57 @@ def shape_points(*shapes) -> np.ndarray:
     return np.vstack(out)
 
 
-def fit_panel(ax, points, margin=0.08, *, hmin=1.5, hmax=4.6):
+def _former_order(name, points, rest, ax, margin):
+    """``(ax, points, margin)`` of ``name(points[, margin], ax=...)`` or the former ``name(ax, points[, margin])``."""
+    if _is_axes(points):                    # the former order: axes first
+        if ax is not None:
+            raise InputError(f"{name}: ax given twice (first argument and ax=)")
+        if not rest:
+            raise InputError(f"{name} needs points besides the axes")
+        ax, points, rest = points, rest[0], rest[1:]
+    if len(rest) > 1:
+        raise InputError(f"{name} takes (points[, margin]), got {1 + len(rest)} positional arguments")
+    if rest:
+        if margin is not None:
+            raise InputError(f"{name}: margin given twice (positionally and margin=)")
+        margin = rest[0]
+    return get_ax(ax), points, margin
+
+
+def fit_panel(points, *args, ax=None, margin=None, hmin=1.5, hmax=4.6):
     """Fit a single-panel figure to ``points``: the figure height follows the points' aspect.
 
     The width stays; the height becomes ``width × (extent_y / extent_x)`` (clamped to
     ``[hmin, hmax]`` inches), so that the drawing fills the panel instead of
     leaving a band empty; then :func:`fit_view`.
 
+    The former call ``fit_panel(ax, points[, margin])`` (axes first) is still read correctly.
+
     Parameters
     ----------
-    ax : matplotlib.axes.Axes
-        The panel.
     points : array_like (n, 2)
         Points to keep in view.
-    margin : float
-        Margin, a fraction of the larger extent.
+    *args
+        ``margin`` positionally (and, in the former order, ``points`` after the axes).
+    ax : matplotlib.axes.Axes, optional
+        The panel (default: the current axes).
+    margin : float, optional
+        Margin, a fraction of the larger extent (default 0.08).
     hmin, hmax : float
         Bounds of the figure height (inches).
 
     Returns
     -------
     matplotlib.axes.Axes
-        ``ax``.
+        The panel.
+
+    Raises
+    ------
+    InputError
+        Axes or margin given twice, or too many positional arguments.
     """
+    ax, points, margin = _former_order("fit_panel", points, args, ax, margin)
+    margin = 0.08 if margin is None else margin
     P = np.asarray(points, float).reshape(-1, 2)
     P = P[np.all(np.isfinite(P), axis=1)]
     ext = P.max(axis=0) - P.min(axis=0) + 2 * margin * np.max(P.max(axis=0) - P.min(axis=0))
@@ -70,32 +99,43 @@ def fit_panel(ax, points, margin=0.08, *, hmin=1.5, hmax=4.6):
     bb = ax.get_position(original=True)
     h = float(np.clip(fw * bb.width * ext[1] / ext[0] / bb.height, hmin, hmax))
     fig.set_size_inches(fw, h)
-    fit_view(ax, P, margin=margin)
+    fit_view(P, ax=ax, margin=margin)
     return ax
 
 
-def fit_view(ax, points, margin=0.25, *, aspect=None):
+def fit_view(points, *args, ax=None, margin=None, aspect=None):
     """Set limits to the bounding box of the finite ``points`` (Euclidean, (n, 2)) plus a margin.
 
     ``margin`` is a fraction of the larger extent; with ``aspect`` (height /
     width of the panel) the box is widened so that equal-aspect drawing fills it.
 
+    The former call ``fit_view(ax, points[, margin])`` (axes first) is still read correctly.
+
     Parameters
     ----------
-    ax : matplotlib.axes.Axes
-        The panel.
     points : array_like (n, 2)
         Points to keep in view.
-    margin : float
-        Margin, a fraction of the larger extent.
+    *args
+        ``margin`` positionally (and, in the former order, ``points`` after the axes).
+    ax : matplotlib.axes.Axes, optional
+        The panel (default: the current axes).
+    margin : float, optional
+        Margin, a fraction of the larger extent (default 0.25).
     aspect : float, optional
         Height / width of the panel (default: the axes').
 
     Returns
     -------
     matplotlib.axes.Axes
-        ``ax``.
+        The panel.
+
+    Raises
+    ------
+    InputError
+        Axes or margin given twice, or too many positional arguments.
     """
+    ax, points, margin = _former_order("fit_view", points, args, ax, margin)
+    margin = 0.25 if margin is None else margin
     P = np.asarray(points, float).reshape(-1, 2)
     P = P[np.all(np.isfinite(P), axis=1)]
     if len(P) > 2:  # ignore far outliers (poles of near-translations)

@@ -3,20 +3,20 @@
 Colours come from the Okabe-Ito palette (colour-blind safe).  Each kind of
 object has one role, used in every figure:
 
-=============  ==========================  ==================================
-role           object                      look
-=============  ==========================  ==================================
-``twist``      a velocity twist (a point)  blue marker + rotation glyph
-``accel``      an acceleration (a point)   vermillion marker + glyph
-``wrench``     a wrench (a line)           orange line with force arrow
-``reaction``   a reaction / internal force bluish-green line
-``momentum``   a momentum wrench           reddish-purple line
-``inertia``    an inertia (conic)          black dashed conic + centre dot
-``conic``      a real conic                black solid curve
-``construct``  construction lines          grey thin dashed
-``body``       a rigid body outline        sky-blue fill, dark outline
-``ground``     ground / fixed frame        dark grey hatching
-=============  ==========================  ==================================
+=============  ==============================  ==================================
+role           object                          look
+=============  ==============================  ==================================
+``twist``      a velocity twist (a point)      blue marker + rotation glyph
+``accel``      an acceleration (a point)       vermillion marker + glyph
+``wrench``     a wrench (a line)               orange line with force arrow
+``reaction``   a reaction / internal force     bluish-green line
+``momentum``   a momentum wrench               reddish-purple line
+``inertia``    an inertia (conic)              black dashed conic + centre dot
+``conic``      a real conic                    black solid curve
+``construct``  construction lines              grey thin dashed
+``body``       a rigid body outline            sky-blue fill, dark outline
+``ground``     ground / fixed frame            dark grey hatching
+=============  ==============================  ==================================
 
 A sum keeps the role of its terms (a sum of twists is a twist, a sum of
 wrenches is a wrench): ``v₃ = v₁ + v₂`` or ``f₃ = f₁ + f₂`` is drawn in the
@@ -93,15 +93,29 @@ SUM = {
     "point": dict(marker="D", markersize=6.5),
 }
 
-#: Fixed rcParams: fonts, sizes and SVG determinism (column width ≈ 3.4 in).
+#: Smallest text on screen, in pixels at the displayed size (explorers, gallery, legibility checks).
+MIN_TEXT_PX = 11.0
+#: The one text size of every planargeo drawing, explorers and gallery alike (points): labels,
+#: tick labels, legends, dimension and chart texts.  At the figures' 100 dpi (explorers shown
+#: at native size, gallery SVGs at their natural size) it is 11.1 px high, :data:`MIN_TEXT_PX`.
+LABEL_PT = 8.0
+#: Titles (points), a little larger than :data:`LABEL_PT`.
+TITLE_PT = 8.5
+#: Explorers: resolution (figure pixels per inch; shown at native size), the narrowest
+#: figure (pixels; the notebook column), tick-label size (points, :data:`LABEL_PT`).
+EXPLORER_DPI = 100
+EXPLORER_MIN_WIDTH_PX = 560
+EXPLORER_TICK_PT = LABEL_PT
+
+#: Fixed rcParams: fonts, sizes (all :data:`LABEL_PT`) and SVG determinism (column width ≈ 3.4 in).
 RC = {
     "font.family": "DejaVu Sans",
-    "font.size": 8.0,
-    "axes.titlesize": 8.5,
-    "axes.labelsize": 8.0,
-    "legend.fontsize": 7.0,
-    "xtick.labelsize": 7.0,
-    "ytick.labelsize": 7.0,
+    "font.size": LABEL_PT,
+    "axes.titlesize": TITLE_PT,
+    "axes.labelsize": LABEL_PT,
+    "legend.fontsize": LABEL_PT,
+    "xtick.labelsize": LABEL_PT,
+    "ytick.labelsize": LABEL_PT,
     "lines.linewidth": 1.3,
     "legend.frameon": False,
     "figure.dpi": 100,
@@ -112,16 +126,6 @@ RC = {
     "path.simplify": False,
     "axes.prop_cycle": None,  # filled in below
 }
-
-#: Smallest text on screen, in pixels at the displayed size (explorers and legibility checks).
-MIN_TEXT_PX = 11.0
-#: Explorers: resolution (figure pixels per inch; shown at native size), the narrowest
-#: figure (pixels; the notebook column), tick-label and label sizes (points: at 100 dpi
-#: 8 pt is 11.1 px).
-EXPLORER_DPI = 100
-EXPLORER_MIN_WIDTH_PX = 560
-EXPLORER_TICK_PT = 8.5
-LABEL_PT = 8.5
 
 #: Column width (inches) and default figure size.
 COLUMN_WIDTH = 3.4
@@ -274,20 +278,27 @@ def legend(items, ax=None, *, loc="lower right", **kw):
         else:
             raise InputError(f"legend item kind must be point, line, sum-point or sum-line, "
                              f"got {kind!r}")
-    opts = dict(loc=loc, fontsize=6.5, handlelength=1.8, borderaxespad=0.2, labelspacing=0.3)
+    opts = dict(loc=loc, fontsize=LABEL_PT, handlelength=1.8, borderaxespad=0.2, labelspacing=0.3)
     opts.update(kw)
     return get_ax(ax).legend(handles=handles, **opts)
 
 
-def setup_axes(ax, limits=None, *, grid=False, axis_off=True):
+def _is_axes(x) -> bool:
+    """True for a matplotlib axes (how the former ax-first calls are recognised)."""
+    return hasattr(x, "transData") and hasattr(x, "annotate")
+
+
+def setup_axes(limits=None, ax=None, *, grid=False, axis_off=True):
     """Equal-aspect geometric axes with optional ``limits = (x0, x1, y0, y1)``.
+
+    The former call ``setup_axes(ax, limits)`` (axes first) is still read correctly.
 
     Parameters
     ----------
-    ax : matplotlib.axes.Axes
-        The axes.
     limits : (float, float, float, float), optional
         ``(x0, x1, y0, y1)``.
+    ax : matplotlib.axes.Axes, optional
+        The axes (default: the current axes, :func:`get_ax`).
     grid : bool
         Draw a grid.
     axis_off : bool
@@ -296,8 +307,18 @@ def setup_axes(ax, limits=None, *, grid=False, axis_off=True):
     Returns
     -------
     matplotlib.axes.Axes
-        ``ax``.
+        The axes set up.
+
+    Raises
+    ------
+    InputError
+        Axes given twice (first argument and ``ax``).
     """
+    if _is_axes(limits):                    # the former order setup_axes(ax, limits)
+        if _is_axes(ax):
+            raise InputError("setup_axes: ax given twice (first argument and ax=)")
+        limits, ax = ax, limits
+    ax = get_ax(ax)
     ax.set_aspect("equal", adjustable="box")
     if limits is not None:
         ax.set_xlim(limits[0], limits[1])

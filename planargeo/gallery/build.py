@@ -145,8 +145,8 @@ def readme(specs, benchmarks=()) -> str:
         "(radius of gyration about the centre of mass), constructions grey dashed",
         "(see `extra_style_key`).  Every figure is computed from planargeo's math modules and",
         "scenes; captions name the thesis figure and equations, and say where a printed result",
-        "was corrected (details in docs/errata.md).  Not drawn: the spatial (3-D) figures 1.1,",
-        "1.4, 2.1, 3.3 and 8.1-8.4.",
+        "was corrected (details in docs/errata.md).  Not drawn: the spatial (3-D) figures",
+        "8.1-8.4.",
         "",
         f"{len(specs)} figures: "
         + ", ".join(f"[{n}](#{n.lower()})" for n in specs) + ".",

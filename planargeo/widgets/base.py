@@ -111,7 +111,7 @@ from matplotlib.figure import Figure
 from traitlets import validate
 
 from planargeo.draw.artists import place_labels
-from planargeo.draw.style import EXPLORER_DPI, EXPLORER_MIN_WIDTH_PX, EXPLORER_TICK_PT, setup_axes
+from planargeo.draw.style import EXPLORER_DPI, EXPLORER_MIN_WIDTH_PX, EXPLORER_TICK_PT, LABEL_PT, setup_axes
 from planargeo.errors import InputError, OutputError, PlanargeoError
 from planargeo.files import atomic_write
 
@@ -628,7 +628,7 @@ class Explorer:
         ax : matplotlib.axes.Axes
             The explorer's axes.
         """
-        setup_axes(ax, self.limits, axis_off=False)
+        setup_axes(self.limits, ax=ax, axis_off=False)
         if self.grid:
             ax.grid(True, lw=0.3, alpha=0.5)
 
@@ -1625,7 +1625,7 @@ class Explorer:
 
         handles = legend_handles(self.ax)
         if handles:
-            self._legend = self.ax.legend(handles=handles, loc="upper left", fontsize=8.5,
+            self._legend = self.ax.legend(handles=handles, loc="upper left", fontsize=LABEL_PT,
                                           framealpha=0.9, handlelength=1.6, borderaxespad=0.3)
             self._legend.set_zorder(50)
 

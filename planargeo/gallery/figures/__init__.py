@@ -15,7 +15,7 @@ import inspect
 from dataclasses import dataclass
 from typing import Callable
 
-from planargeo.draw.style import COLUMN_WIDTH, setup_axes
+from planargeo.draw.style import COLUMN_WIDTH, LABEL_PT, setup_axes
 from planargeo.errors import PlanargeoError
 from planargeo.mechanics.kinematics import kinematics
 from planargeo.mechanics.model import Body, Joint, Model
@@ -84,12 +84,43 @@ def register(order: float, *, height: float = 2.8, **layout):
         def build():
             fig, ax = new_figure(height, **layout)
             draw(ax)
+            legible_text(fig)
             return fig
 
         caption = " ".join(inspect.cleandoc(draw.__doc__).splitlines())
         REGISTRY[draw.__name__] = FigureSpec(draw.__name__, caption, build, order)
         return draw
     return deco
+
+
+def legible_text(fig, min_pt: float = LABEL_PT):
+    """Raise every text of ``fig`` smaller than ``min_pt`` points to ``min_pt`` (one text size).
+
+    The gallery's figures draw with :mod:`planargeo.draw`, whose texts are
+    :data:`~planargeo.draw.style.LABEL_PT`; this catches a text drawn smaller
+    (a helper's own default), so that no text of the gallery is below
+    :data:`~planargeo.draw.style.MIN_TEXT_PX` at the SVG's natural size.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        A drawn figure.
+    min_pt : float, optional
+        Smallest font size (points).
+
+    Returns
+    -------
+    int
+        How many texts were enlarged.
+    """
+    from matplotlib.text import Text
+
+    n = 0
+    for t in fig.findobj(Text):
+        if t.get_fontsize() < min_pt:
+            t.set_fontsize(min_pt)
+            n += 1
+    return n
 
 
 def load_all() -> dict[str, FigureSpec]:
@@ -143,7 +174,7 @@ def new_figure(height=2.8, *, nrows=1, ncols=1, margins=None, polar=None, **kw):
     if margins is None:
         fig.subplots_adjust(left=0.02, right=0.98, bottom=0.02, top=0.98, wspace=0.05, hspace=0.05)
         for ax in axs.flat:
-            setup_axes(ax)
+            setup_axes(ax=ax)
     else:
         left, right, bottom, top = margins
         fig.subplots_adjust(left=left, right=right, bottom=bottom, top=top)

@@ -7,7 +7,7 @@ from matplotlib.patches import Circle
 from planargeo.screws.twists import X_P, crm, unit_rotation
 from planargeo.draw.artists import plot_point
 from planargeo.draw.constructions import label
-from planargeo.draw.style import COLORS
+from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.draw.layout import fit_view
 from planargeo.gallery.figures import register
 
@@ -22,7 +22,7 @@ def _disk(ax):
     ax.add_patch(Circle((0, 0), R_DISK, fc=COLORS["body"], alpha=0.35, ec="#1f3a4d", lw=1.0))
     v = OMEGA * unit_rotation([0.0, 0.0])     # constant spin about O
     plot_point(v, ax, text="$v$ (ω = const)", text_offset=(-34, -26))
-    fit_view(ax, [[-1.1, -1.1], [1.6, 1.1]], margin=0.03)
+    fit_view([[-1.1, -1.1], [1.6, 1.1]], margin=0.03, ax=ax)
     return v, (X_P(P) @ v)[:2]
 
 
@@ -30,7 +30,7 @@ def _arrow(ax, p, d, text, color, offset=(4, 4)):
     q = np.asarray(p) + np.asarray(d)
     ax.annotate("", xy=tuple(q), xytext=tuple(p),
                 arrowprops=dict(arrowstyle="-|>", color=color, lw=1.4, shrinkA=0, shrinkB=0))
-    label(ax, q, text, color=color, offset=offset, fontsize=7)
+    label(q, text, color=color, offset=offset, fontsize=LABEL_PT, ax=ax)
 
 
 @register(1.02, height=2.3)
@@ -43,7 +43,7 @@ def fig1_2(ax):
     aP = (X_P(P) @ a_spatial)[:2] + (crm(v) @ np.append(vP, 0.0))[:2]  # ω × v_P
     assert np.allclose(aP, -OMEGA ** 2 * P)
     ax.plot(*P, "o", color="#222222", ms=3.5)
-    label(ax, P, "$P$", offset=(4, -10))
+    label(P, "$P$", offset=(4, -10), ax=ax)
     s = 0.2
     _arrow(ax, P, s * vP, "$v_P$", COLORS["twist"])
     _arrow(ax, P, s * aP, r"$-\omega^2 r$", COLORS["accel"], offset=(-4, -12))
@@ -66,7 +66,7 @@ def fig1_3(ax):
         ax.plot(*Pk, "o", color="#999999" if k != 1 else "#222222", ms=3)
     ax.annotate("", xy=tuple(P + 0.2 * vP), xytext=tuple(P),
                 arrowprops=dict(arrowstyle="-|>", color=COLORS["twist"], lw=1.4))
-    label(ax, P + 0.2 * vP, "$v_P$ (constant at $P$)", color=COLORS["twist"], fontsize=7)
-    label(ax, P, "$P$ (fixed in space)", offset=(4, -11), fontsize=7)
+    label(P + 0.2 * vP, "$v_P$ (constant at $P$)", color=COLORS["twist"], fontsize=LABEL_PT, ax=ax)
+    label(P, "$P$ (fixed in space)", offset=(4, -11), fontsize=LABEL_PT, ax=ax)
     ax.text(0.98, 0.04, "spatial acceleration $a = \\dot v = 0$", transform=ax.transAxes,
-            ha="right", fontsize=7, color=COLORS["accel"])
+            ha="right", fontsize=LABEL_PT, color=COLORS["accel"])

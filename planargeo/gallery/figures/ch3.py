@@ -36,7 +36,7 @@ def fig3_1(ax):
     plot_line(w.f[i], ax, role="reaction", scale=sc, anchor=w.origin[i], text="$f_2$")
     plot_line(-w.f[i + 1], ax, role="reaction", scale=sc, anchor=w.origin[i + 1], text="$-f_3$")
     plot_line(g, ax, scale=sc, anchor=w.com[i], text="$g_2$")
-    fit_view(ax, [*w.origin, w.com[-1] * 2 - w.origin[-1]], margin=0.2)
+    fit_view([*w.origin, w.com[-1] * 2 - w.origin[-1]], margin=0.2, ax=ax)
 
 
 @register(3.02, height=2.6)
@@ -57,4 +57,4 @@ def fig3_2(ax):
     plot_conic(r.A[i], ax, role="inertia", text="$A_2$")
     plot_line(w.f[i], ax, role="reaction", scale=0.25, anchor=w.origin[i], text="$f_2$")
     plot_point(w.a[i], ax, role="accel", text="$a_2$")
-    fit_view(ax, [*w.origin, tip, to_xy(w.a[i])], margin=0.15)
+    fit_view([*w.origin, tip, to_xy(w.a[i])], margin=0.15, ax=ax)

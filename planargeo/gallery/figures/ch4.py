@@ -11,7 +11,7 @@ from planargeo.draw.artists import plot_conic, plot_line
 from planargeo.draw.constructions import (draw_acceleration_step, draw_dimension, draw_newton_euler,
                              draw_twist_sum, draw_velocity_step, draw_wrench_sum, label)
 from planargeo.draw.mechanism import draw_com, draw_frame, draw_ground, draw_link, draw_model, draw_pin
-from planargeo.draw.style import COLORS, legend
+from planargeo.draw.style import COLORS, LABEL_PT, legend
 from planargeo.draw.layout import fit_view
 from planargeo.gallery.figures import chain, register
 
@@ -26,11 +26,11 @@ def fig4_1(ax):
                          text_offsets=(None, None, (0.0, 19.0)))
     out["v3"].set_text_alignment("center")
     P, Q1, Q2 = to_xy(v1 + v2), to_xy(v1), to_xy(v2)
-    draw_dimension(ax, Q1, P, r"$\beta k$", offset=-0.55)
-    draw_dimension(ax, Q1, Q2, "$k$", offset=-1.0)
+    draw_dimension(Q1, P, r"$\beta k$", offset=-0.55, ax=ax)
+    draw_dimension(Q1, Q2, "$k$", offset=-1.0, ax=ax)
     legend([("twist", "point", "twist (pole)"), ("twist", "sum-point", "sum of twists"),
             ("construct", "line", "lever line")], ax)
-    fit_view(ax, [Q1, Q2, P, Q1 + [0, -1.1], Q2 + [2.2, 0.6]], margin=0.06)
+    fit_view([Q1, Q2, P, Q1 + [0, -1.1], Q2 + [2.2, 0.6]], margin=0.06, ax=ax)
 
 
 @register(4.02, height=1.9)
@@ -57,10 +57,10 @@ def fig4_2(ax):
     plot_line(R2, ax, role="reaction", scale=sc, anchor=[L, -0.75], text=f"$R_2$ = {r[1]:.3g}",
               text_offset=(-6, -6)).set_text_alignment("right")
     beta = r[1] / (r[0] + r[1])
-    draw_dimension(ax, [0, 0.45], [beta * L, 0.45], r"$\beta L$")
+    draw_dimension([0, 0.45], [beta * L, 0.45], r"$\beta L$", ax=ax)
     ax.text(0.6, 0.97, rf"$\beta = R_2/(R_1 + R_2)$ = {beta:.2g}", transform=ax.transAxes,
-            ha="center", va="top", fontsize=7)
-    fit_view(ax, [[-0.3, -1.4], [L + 0.3, 1.4]], margin=0.03)
+            ha="center", va="top", fontsize=LABEL_PT)
+    fit_view([[-0.3, -1.4], [L + 0.3, 1.4]], margin=0.03, ax=ax)
 
 
 @register(4.03, height=2.4)
@@ -74,12 +74,12 @@ def fig4_3(ax):
                                        "$v_3 = v_1 + v_2$"),
                    text_offsets=((12.0, -18.0), (14.0, -4.0), (12.0, -14.0)))
     P, Q = to_xy(v1 + v2), to_xy(v1)
-    draw_dimension(ax, Q, P, r"$\rho = u/\omega$", offset=0.25)
+    draw_dimension(Q, P, r"$\rho = u/\omega$", offset=0.25, ax=ax)
     e = np.array([np.cos(lam), np.sin(lam)])
     ax.annotate("", xy=tuple(Q + 0.8 * e), xytext=tuple(Q),
                 arrowprops=dict(arrowstyle="-|>", color=COLORS["twist"], lw=1))
-    label(ax, Q + 0.8 * e, "$e$", color=COLORS["twist"])
-    fit_view(ax, [Q, P, Q - [1.2, 0.8], P + [1.2, 0.5]], margin=0.1)
+    label(Q + 0.8 * e, "$e$", color=COLORS["twist"], ax=ax)
+    fit_view([Q, P, Q - [1.2, 0.8], P + [1.2, 0.5]], margin=0.1, ax=ax)
 
 
 @register(4.04, height=2.4)
@@ -92,7 +92,7 @@ def fig4_4(ax):
     f2 = join(from_xy([2.0, -1.0]), from_xy([1.6, 0.5])) * 1.0
     draw_wrench_sum(f1, f2, ax, scale=0.9)
     P = to_xy(meet(f1, f2))
-    fit_view(ax, [P, P + 0.9 * (f1 + f2)[:2], [-1.0, -1.0], P + [1.8, 1.5]], margin=0.12)
+    fit_view([P, P + 0.9 * (f1 + f2)[:2], [-1.0, -1.0], P + [1.8, 1.5]], margin=0.12, ax=ax)
 
 
 @register(4.05, height=2.0)
@@ -109,9 +109,9 @@ def fig4_5(ax):
     lever = join(from_xy([0.0, 0.0]), from_xy([1.0, 0.0]))
     plot_line(lever, ax, role="construct", scale=None)
     x3 = to_xy(meet(f1 + f2, lever))
-    draw_dimension(ax, [0, -1.1], [x3[0], -1.1], r"$\beta d$")
-    draw_dimension(ax, [0, -1.6], [3, -1.6], r"$d = d_2-d_1$", at=0.68)
-    fit_view(ax, [[-1.3, -1.9], [3.5, 1.0]], margin=0.05)
+    draw_dimension([0, -1.1], [x3[0], -1.1], r"$\beta d$", ax=ax)
+    draw_dimension([0, -1.6], [3, -1.6], r"$d = d_2-d_1$", at=0.68, ax=ax)
+    fit_view([[-1.3, -1.9], [3.5, 1.0]], margin=0.05, ax=ax)
 
 
 @register(4.06, height=2.0)
@@ -124,8 +124,8 @@ def fig4_6(ax):
     draw_wrench_sum(f1, f2, ax, scale=0.4, anchors=([0, 0], None, [0, 0]),
                     labels=("$f_1$", "$f_2$ = couple τ", "$f_3 = f_1 + f_2$"))
     x3 = to_xy(meet(f1 + f2, [1.0, 0.0, 0.0]))
-    draw_dimension(ax, [0, -0.7], [x3[0], -0.7], r"$\rho = \tau/F$")
-    fit_view(ax, [[-1.2, -1.0], [x3[0] + 1.2, 1.0]], margin=0.05)
+    draw_dimension([0, -0.7], [x3[0], -0.7], r"$\rho = \tau/F$", ax=ax)
+    fit_view([[-1.2, -1.0], [x3[0] + 1.2, 1.0]], margin=0.05, ax=ax)
 
 
 #: The state of the chain of Figs 4.7-4.9 and 6.5.
@@ -177,7 +177,7 @@ def fig4_7(ax):
     legend([("twist", "point", r"twists $v_2$, $s_3\dot q_3$"),
             ("twist", "sum-point", r"$v_3 = v_2 + s_3\dot q_3$")], ax)
     tip = d.pose[i, :2] + 0.8 * np.array([np.cos(d.pose[i, 2]), np.sin(d.pose[i, 2])])
-    fit_view(ax, [to_xy(d.v[i - 1]), to_xy(d.v[i]), *d.origin, tip], margin=0.12)
+    fit_view([to_xy(d.v[i - 1]), to_xy(d.v[i]), *d.origin, tip], margin=0.12, ax=ax)
 
 
 @register(4.08, height=2.8)
@@ -197,8 +197,8 @@ def fig4_8(ax):
     assert np.allclose(out["values"]["a"], w.a[i])
     assert np.allclose(out["values"]["bias"], w.kappa[i])
     vals = out["values"]
-    fit_view(ax, [to_xy(vals[k]) for k in ("a_prev", "joint", "joint_total", "a")] + [*w.origin],
-             margin=0.15)
+    fit_view([to_xy(vals[k]) for k in ("a_prev", "joint", "joint_total", "a")] + [*w.origin],
+             margin=0.15, ax=ax)
 
 
 @register(4.09, height=2.8)
@@ -218,7 +218,7 @@ def fig4_9(ax):
     legend([("wrench", "line", "force"), ("wrench", "sum-line", "sum of forces"),
             ("momentum", "line", "centripetal $p$"), ("inertia", "line", "inertia")], ax)
     c = w.com[i]
-    fit_view(ax, [to_xy(w.v[i]), to_xy(w.a[i]), *w.origin, c, c + [1.6, 0.0]], margin=0.1)
+    fit_view([to_xy(w.v[i]), to_xy(w.a[i]), *w.origin, c, c + [1.6, 0.0]], margin=0.1, ax=ax)
 
 
 @register(4.1, height=1.9)
@@ -233,7 +233,7 @@ def fig4_10(ax):
     draw_frame([0, 0], ax, length=0.55)
     draw_com([C, 0], ax)
     plot_conic(I, ax, role="inertia", mark_center=False)
-    draw_dimension(ax, [0, -0.55], [C, -0.55], "$C_i$")
-    draw_dimension(ax, [C, 0], [C + r * np.cos(0.8), r * np.sin(0.8)], "$r_i$")
-    fit_view(ax, [[-0.4, -0.8], [2 * C + 0.4, 0.8]], margin=0.02)
+    draw_dimension([0, -0.55], [C, -0.55], "$C_i$", ax=ax)
+    draw_dimension([C, 0], [C + r * np.cos(0.8), r * np.sin(0.8)], "$r_i$", ax=ax)
+    fit_view([[-0.4, -0.8], [2 * C + 0.4, 0.8]], margin=0.02, ax=ax)
 

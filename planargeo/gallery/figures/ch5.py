@@ -11,7 +11,7 @@ from planargeo.draw.artists import plot_conic, plot_line, plot_point
 from planargeo.draw.constructions import (line_conic_points, draw_percussion, draw_polar_exterior,
                              draw_polar_interior, draw_power, draw_segment, label)
 from planargeo.draw.mechanism import draw_body, link_polygon
-from planargeo.draw.style import COLORS
+from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.draw.layout import fit_view
 from planargeo.gallery.figures import register
 
@@ -22,15 +22,15 @@ def _vec_arrow(ax, p, d, text, color="#222222", **kw):
     ax.annotate("", xy=tuple(q), xytext=tuple(p),
                 arrowprops=dict(arrowstyle="-|>", color=color, lw=1.0, shrinkA=0, shrinkB=0,
                                 mutation_scale=9))
-    label(ax, q, text, color=color, **kw)
+    label(q, text, color=color, **kw, ax=ax)
 
 
 def _axes_cross(ax, size=2.6):
     for d in ([1, 0], [0, 1]):
         ax.annotate("", xy=tuple(np.array(d) * size), xytext=tuple(-np.array(d) * 0.3),
                     arrowprops=dict(arrowstyle="-|>", color="#555555", lw=0.7, mutation_scale=7))
-    label(ax, [size, 0], "$x$", offset=(2, -10), color="#555555")
-    label(ax, [0, size], "$y$", offset=(-10, 0), color="#555555")
+    label([size, 0], "$x$", offset=(2, -10), color="#555555", ax=ax)
+    label([0, size], "$y$", offset=(-10, 0), va="top", color="#555555", ax=ax)
 
 
 def _coords(ax, alternative: bool):
@@ -45,8 +45,8 @@ def _coords(ax, alternative: bool):
     plot_point(P, ax, glyph=False, text="$P$")
     plot_line(L, ax, scale=None, text="$L$", anchor=[2.5, -1.0])
     foot = rL * np.array([np.cos(lamL), np.sin(lamL)])
-    draw_segment(ax, [0, 0], Pxy)
-    draw_segment(ax, [0, 0], foot)
+    draw_segment([0, 0], Pxy, ax=ax)
+    draw_segment([0, 0], foot, ax=ax)
     nP, nL = Pxy / rP, foot / rL
     if alternative:
         eP = np.array([-nP[1], nP[0]])          # (5.50)
@@ -54,15 +54,15 @@ def _coords(ax, alternative: bool):
         _vec_arrow(ax, Pxy, 0.7 * eP, r"$\vec e$", color=COLORS["twist"])
         _vec_arrow(ax, foot, 0.7 * eL, r"$\vec e$", color=COLORS["wrench"])
         ax.text(0.98, 0.02, r"$P=[-r\vec e;\,1]$ (5.49),  $L=[\vec e;\,r]$ (5.55)",
-                transform=ax.transAxes, fontsize=7, ha="right", va="bottom")
+                transform=ax.transAxes, fontsize=LABEL_PT, ha="right", va="bottom")
     else:
         _vec_arrow(ax, [0, 0], 0.7 * nP, r"$\vec n$", color=COLORS["twist"], offset=(-12, -2))
         _vec_arrow(ax, [0, 0], 0.7 * nL, r"$\vec n$", color=COLORS["wrench"], offset=(-4, -16))
         ax.text(0.98, 0.02, r"$P=[1;\,r\vec n]$,  $L=[r;\,-\vec n]$ (5.4, 5.14)",
-                transform=ax.transAxes, fontsize=7, ha="right", va="bottom")
-    label(ax, 0.72 * Pxy, "$r$", offset=(-10, 2))      # beyond the unit-vector arrows
-    label(ax, 0.72 * foot, "$r$", offset=(0, 4))
-    fit_view(ax, [[-0.6, -1.6], [2.8, 2.6]], margin=0.03)
+                transform=ax.transAxes, fontsize=LABEL_PT, ha="right", va="bottom")
+    label(0.72 * Pxy, "$r$", offset=(-10, 2), ax=ax)      # beyond the unit-vector arrows
+    label(0.72 * foot, "$r$", offset=(0, 4), ax=ax)
+    fit_view([[-0.6, -1.6], [2.8, 2.6]], margin=0.03, ax=ax)
 
 
 @register(5.01, height=2.7)
@@ -91,7 +91,7 @@ def fig5_2(ax):
     plot_point(q, ax, glyph=False, role="accel", text="$Q$", text_offset=(-12, -12))
     plot_line(polar(C, q), ax, role="construct", scale=None, text="$M = CQ$",
               anchor=to_xy(q) + [-0.6, 0.6], color=COLORS["accel"])
-    fit_view(ax, [[-2.0, -1.6], [2.9, 1.6]], margin=0.05)
+    fit_view([[-2.0, -1.6], [2.9, 1.6]], margin=0.05, ax=ax)
 
 
 @register(5.03, height=2.8)
@@ -107,7 +107,7 @@ def fig5_3(ax):
     R1, R2 = to_xy(K.poles[0]), to_xy(K.poles[1])
     out["L"].set_anchor((R1 + R2) / 2)           # L's label between R1 and R2, right of L
     out["R2"].set_text_alignment("right")        # R2's label left of L
-    fit_view(ax, [R1, R2, [-1.8, -1.2], [1.8, 1.2]], margin=0.15)
+    fit_view([R1, R2, [-1.8, -1.2], [1.8, 1.2]], margin=0.15, ax=ax)
 
 
 @register(5.04, height=2.8)
@@ -139,8 +139,8 @@ def fig5_4(ax):
     plot_line(polar(C, P), ax, scale=None, text="$L = CP$", anchor=[1.0, -1.2],
               text_offset=(8.0, -12.0))
     txt = ", ".join(f"$u_{k + 1}$={v:.2f}" for k, v in enumerate(u / (u @ [Q1[2], Q2[2], Q3[2]])))
-    ax.text(0.02, 0.98, txt, transform=ax.transAxes, fontsize=7, ha="left", va="top")
-    fit_view(ax, [q1, [-1.9, -1.5], [1.9, 1.5]], margin=0.1)
+    ax.text(0.02, 0.98, txt, transform=ax.transAxes, fontsize=LABEL_PT, ha="left", va="top")
+    fit_view([q1, [-1.9, -1.5], [1.9, 1.5]], margin=0.1, ax=ax)
 
 
 @register(5.05, height=2.7)
@@ -172,7 +172,7 @@ def fig5_6(ax):
     assert np.isclose(x_axis[0] - c[0], rho ** 2 / d)
     # the axis's label near the top of the view, right of the line and outside the circle
     draw_percussion(I.matrix, a, ax, f_anchor=[x_axis[0], c[1] + 0.8], text_offsets=(None, (5.0, 0.0)))
-    fit_view(ax, [to_xy(a) - [0.3, 0], [2.6, -0.7], [2.6, 0.7]], margin=0.06)
+    fit_view([to_xy(a) - [0.3, 0], [2.6, -0.7], [2.6, 0.7]], margin=0.06, ax=ax)
 
 
 @register(5.07, height=2.4)
@@ -185,4 +185,4 @@ def fig5_7(ax):
     out = draw_power(v, I.matrix, ax, text_offsets=((-14.0, -16.0), (8.0, 4.0), (0.0, -14.0), None),
                      p_label_at=-2.3, f_label_at=-1.0)
     out["v"].set_text_alignment("right")
-    fit_view(ax, [[-0.6, -1.5], [2.6, 1.2], out["a"].get_xy(), to_xy(v)], margin=0.08)
+    fit_view([[-0.6, -1.5], [2.6, 1.45], out["a"].get_xy(), to_xy(v)], margin=0.08, ax=ax)

@@ -13,6 +13,7 @@ from planargeo.draw.constructions import (draw_decomposition, draw_projective_st
                              draw_wrench_split)
 from planargeo.draw.mechanism import draw_body, draw_com, draw_pin, link_polygon
 from planargeo.draw.layout import fit_panel, fit_view, shape_points
+from planargeo.draw.style import LABEL_PT
 from planargeo.gallery.figures import register
 from planargeo.gallery.figures.ch4 import QDD47, chain47
 
@@ -40,7 +41,7 @@ def _on_line(L, y):
 def _view(ax, shape, pts, margin=0.1, *, panel=False):
     """Fit the view to the body and the computed points (single panel: the figure height too)."""
     P = np.vstack([shape_points(shape), np.reshape(pts, (-1, 2))])
-    (fit_view if panel else fit_panel)(ax, P, margin=margin)
+    (fit_view if panel else fit_panel)(P, ax=ax, margin=margin)
 
 
 @register(6.01, height=2.6)
@@ -160,9 +161,9 @@ def fig6_5(ax):
     v = out["values"]
     psi_i, psi_prev, qdd = v["psi"][0], v["psi_prev"][0], v["qdd"][0]
     assert np.isclose(qdd, QDD47[i])
-    fit_panel(ax, np.vstack([P, lo - [0.0, 0.45]]), margin=0.04)
+    fit_panel(np.vstack([P, lo - [0.0, 0.45]]), margin=0.04, ax=ax)
     ax.text(0.98, 0.02, f"$\\psi_2$ = {psi_i:.3g},  $\\psi_1$ = {psi_prev:.3g},  "
-            f"$\\ddot q_2$ = {qdd:.3g}", transform=ax.transAxes, fontsize=7, ha="right",
+            f"$\\ddot q_2$ = {qdd:.3g}", transform=ax.transAxes, fontsize=LABEL_PT, ha="right",
             va="bottom")
 
 
@@ -199,8 +200,8 @@ def fig6_6(ax):
     plot_line(T, ax, role="momentum", scale=None, text="$T$", anchor=_on_line(T, lo[1] - 0.5),
               text_offset=(-12, 0))
     plot_point(qn["a"], ax, role="accel", text="$a$", text_offset=(-14, 8))
-    fit_panel(ax, np.vstack([P, [lo[0] - 0.6, lo[1] - 0.9], [hi[0] + 0.8, hi[1] + 0.5]]),
-              margin=0.02)
+    fit_panel(np.vstack([P, [lo[0] - 0.6, lo[1] - 0.9], [hi[0] + 0.8, hi[1] + 0.5]]),
+              margin=0.02, ax=ax)
     ax.text(0.02, 0.98, f"$\\dot\\omega$ = {qn['omega_dot']:.3f} rad/s²", transform=ax.transAxes,
-            fontsize=7, va="top")
+            fontsize=LABEL_PT, va="top")
 

@@ -13,7 +13,7 @@ from planargeo.draw.artists import plot_conic, plot_line, plot_point
 from planargeo.draw.charts import plot_curves, polar_curves
 from planargeo.draw.constructions import draw_dimension, label
 from planargeo.draw.mechanism import draw_model
-from planargeo.draw.style import COLORS
+from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.draw.layout import fit_panel, fit_view, shape_points
 from planargeo.gallery.figures import chain, register, scene_state
 
@@ -50,7 +50,7 @@ def fig7_1(ax):
               text_offset=(-4, -16))
     plot_point(a, ax, role="accel", text="$a_2 = A_2^{-1}f_2$", glyph_scale=2.0,
                text_offset=(10, 10))
-    fit_panel(ax, [*outline, to_xy(a), o - [1.0, 0.0]], margin=0.06)
+    fit_panel([*outline, to_xy(a), o - [1.0, 0.0]], margin=0.06, ax=ax)
 
 
 @register(7.02, height=2.6)
@@ -67,7 +67,7 @@ def fig7_2(ax):
     plot_line(-f_next, ax, role="reaction", scale=0.6, anchor=o, text="$-f_3$", text_at="anchor",
               text_offset=(-10, 4)).set_text_alignment("right", "bottom")
     plot_point(a, ax, role="accel", text="$a_2 = -\\Lambda_2^{-1}f_3$")
-    fit_panel(ax, [*outline, to_xy(a), d.origin[0] - [0.0, 0.15]], margin=0.06)
+    fit_panel([*outline, to_xy(a), d.origin[0] - [0.0, 0.15]], margin=0.06, ax=ax)
 
 
 @register(7.03, height=2.9, ncols=2, gridspec_kw={"width_ratios": [2.3, 1.0]})
@@ -94,20 +94,20 @@ def fig7_3(axs):
         plot_line([0.0, 1.0, 0.0], ax, role="construct", scale=None)    # x = 0 through CJ₁
         P = np.vstack([shape_points(*arts["shapes"]), *[c.get_xy() for c in cs]])
         if detail:
-            label(ax, [0, 0], "$CJ_1$", offset=(-22, -14), fontsize=7)
+            label([0, 0], "$CJ_1$", offset=(-22, -14), fontsize=LABEL_PT, ax=ax)
             # A₁'s label outside every circle: at its lower-right point (the bodies' grey
             # circles lie left and above), pushed outward
             xy = cs[-1].get_xy()
-            label(ax, xy[np.argmax(xy[:, 0] - xy[:, 1])], "$A_1$", offset=(2, -2), ha="left",
-                  va="top")
+            label(xy[np.argmax(xy[:, 0] - xy[:, 1])], "$A_1$", offset=(2, -2), ha="left",
+                  va="top", ax=ax)
             ax.text(0.98, 0.02, f"φ = {np.rad2deg(res.params['phi']):.0f}°, "
                     f"λ = {res.quantities['lam']:g}:\n$m_x/m$ = {res.quantities['mx_over_m']:.3f}",
-                    transform=ax.transAxes, fontsize=7, ha="right")
-            fit_view(ax, np.vstack([P, P.min(axis=0) - [0.3, 0.7]]), margin=0.03)
+                    transform=ax.transAxes, fontsize=LABEL_PT, ha="right")
+            fit_view(np.vstack([P, P.min(axis=0) - [0.3, 0.7]]), margin=0.03, ax=ax)
         else:
             plot_point(a1, ax, role="accel", text=f"$a_1$\n({ax1[0]:.2f}, {ax1[1]:.2f})",
                        text_offset=(6, 4))
-            fit_view(ax, np.vstack([P, ax1, ax1 + [1.6, -0.3]]), margin=0.03)
+            fit_view(np.vstack([P, ax1, ax1 + [1.6, -0.3]]), margin=0.03, ax=ax)
             ax.add_patch(Rectangle((0, 0), 1, 1, transform=ax.transAxes, fill=False, ec="#bbbbbb",
                                    lw=0.6))
 
@@ -124,7 +124,7 @@ def fig7_4(ax):
     ys.append(1 + np.cos(phi) ** 2)
     plot_curves(np.rad2deg(phi), ys, [f"λ = {lam:g}" for lam in lams] + ["λ → ∞"], ax,
                 xlabel="φ [deg]", ylabel="$m_x/m$", ylim=(0.9, 2.45),
-                legend=dict(ncol=3, loc="upper center", fontsize=6.5))
+                legend=dict(ncol=3, loc="upper center", fontsize=LABEL_PT))
     ax.set_xticks([0, 45, 90, 135, 180])
 
 
@@ -146,9 +146,9 @@ def fig7_5(ax):
     for k, (dn, ns) in enumerate(sorted(groups.items())):
         y = -0.5 - 0.2 * k
         ax.plot([dn, dn], [y, -0.3], color=COLORS["accel"], lw=0.8)
-        label(ax, [dn, y], f"$d_1$ = {dn:.3f} L (n = {', '.join(map(str, ns))})", offset=(2, -2),
-              fontsize=6.5, va="top", color=COLORS["accel"])
-    fit_view(ax, [[-0.3, -1.1], [4.2, 0.7]], margin=0.02)
+        label([dn, y], f"$d_1$ = {dn:.3f} L (n = {', '.join(map(str, ns))})", offset=(2, -2),
+              fontsize=LABEL_PT, va="top", color=COLORS["accel"], ax=ax)
+    fit_view([[-0.3, -1.1], [4.2, 0.7]], margin=0.02, ax=ax)
 
 
 #: The margins of the λ charts, Figs 7.6-7.8.
@@ -199,8 +199,8 @@ def fig7_9(ax):
               corner="upper left")
     plot_point(a2, ax, role="accel", text="$a_2$")
     x = to_xy(a2)
-    draw_dimension(ax, [0, -0.35], [x[0], -0.35], f"$x$ = {res.quantities['x_over_L']:.3f} L")
-    fit_view(ax, [*d.origin, d.com[1] * 2 - d.origin[1], x, [0, -0.5]], margin=0.12)
+    draw_dimension([0, -0.35], [x[0], -0.35], f"$x$ = {res.quantities['x_over_L']:.3f} L", ax=ax)
+    fit_view([*d.origin, d.com[1] * 2 - d.origin[1], x, [0, -0.5]], margin=0.12, ax=ax)
 
 
 @register(7.1, height=3.0, polar=[0.1, 0.1, 0.66, 0.8])
@@ -244,5 +244,5 @@ def fig7_11(ax):
                text="$a_2 = -\\Lambda_2^{-1}f_3$" if b2_zero else "$a_2 = b_2 - \\Lambda_2^{-1}f_3$",
                text_offset=(10, -12))
     plot_point(sol.a[2], ax, role="accel", text="$a_3 = A_3^{-1}(f_3 - d_3)$", text_offset=(-40, 10))
-    fit_panel(ax, [*outline, *A3.get_xy(), tip, to_xy(sol.a[1]), to_xy(sol.a[2]),
-                   d.origin[0] - [0.0, 0.2]], margin=0.05)
+    fit_panel([*outline, *A3.get_xy(), tip, to_xy(sol.a[1]), to_xy(sol.a[2]),
+                   d.origin[0] - [0.0, 0.2]], margin=0.05, ax=ax)

@@ -7,7 +7,7 @@ from planargeo.mechanics.contacts import world_point
 from planargeo.draw.artists import plot_line
 from planargeo.draw.constructions import label
 from planargeo.draw.mechanism import draw_model
-from planargeo.draw.style import COLORS
+from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.draw.layout import fit_panel, fit_view, shape_points
 from planargeo.gallery.figures import register, scene_state
 
@@ -28,7 +28,7 @@ def fig9_1(ax):
     and 9 are the tips of the branches (parents (9.1): −, 1, 2, 3, 1, 5, 6, 6, 1)."""
     res, d = scene_state("tree")
     draw_model(res.model, d, ax, width=0.14, show_com=False, names=[str(k + 1) for k in range(9)])
-    fit_view(ax, [*d.origin, *_tips(res.model, d)], margin=0.08)
+    fit_view([*d.origin, *_tips(res.model, d)], margin=0.08, ax=ax)
 
 
 @register(9.02, height=3.0)
@@ -68,7 +68,7 @@ def fig9_2(ax):
         P.append(np.array(art.get_arrow()))
         lines.append(f)
         mags.append(f"$|F_{{{c.name}}}|$ = {mag:.2f} N")
-    fit_panel(ax, np.vstack(P), margin=0.06)
+    fit_panel(np.vstack(P), margin=0.06, ax=ax)
     # body numbers beside their links, on the side away from the contact-force lines
     for i, shape in enumerate(arts["shapes"]):
         cxy = np.array(shape.centroid.coords[0])
@@ -80,9 +80,9 @@ def fig9_2(ax):
             return min(abs(f[2] + q[1] * f[0] - q[0] * f[1]) / np.hypot(*f[:2]) for f in lines)
 
         u = n if line_dist(cxy + 0.25 * n) >= line_dist(cxy - 0.25 * n) else -n
-        label(ax, cxy, str(i + 1), offset=tuple(9 * u), fontsize=7, color="#1f3a4d",
-              ha="center", va="center")
-    ax.text(0.02, 0.02, "\n".join(mags), transform=ax.transAxes, fontsize=7,
+        label(cxy, str(i + 1), offset=tuple(9 * u), fontsize=LABEL_PT, color="#1f3a4d",
+              ha="center", va="center", ax=ax)
+    ax.text(0.02, 0.02, "\n".join(mags), transform=ax.transAxes, fontsize=LABEL_PT,
             color=COLORS["reaction"])
 
 
@@ -117,8 +117,8 @@ def fig9_3(ax):
     res, d, P = slider_crank(ax)
     for i, body in enumerate(res.model.bodies):  # the piston's name right of its guide, others left
         right = i == 2
-        label(ax, d.com[i], body.name, offset=(18 if right else -9, 6 if i == 0 else 0), fontsize=7,
-              color="#1f3a4d", va="center", ha="left" if right else "right")
+        label(d.com[i], body.name, offset=(18 if right else -9, 6 if i == 0 else 0), fontsize=LABEL_PT,
+              color="#1f3a4d", va="center", ha="left" if right else "right", ax=ax)
     q = res.state["q"]
     absang = np.cumsum(q)
     for i, (nm, val) in enumerate(zip(("ψ", "θ", "φ"), q)):
@@ -130,8 +130,8 @@ def fig9_3(ax):
         ax.plot([o[0], o[0] + 0.9 * np.cos(base)], [o[1], o[1] + 0.9 * np.sin(base)],
                 color=COLORS["construct"], lw=0.6, ls="--")
         mid = t[len(t) // 2]
-        label(ax, o + rr * np.array([np.cos(mid), np.sin(mid)]),
-              f"{nm} = {val:.3f}", offset=((6, -12), (6, 2), (-62, 4))[i], fontsize=7,
-              color=COLORS["twist"])
-    fit_view(ax, np.vstack([P, P.min(axis=0) - [1.0, 0.4], P.max(axis=0) + [0.8, 0.2]]), margin=0.03)
+        label(o + rr * np.array([np.cos(mid), np.sin(mid)]),
+              f"{nm} = {val:.3f}", offset=((6, -12), (6, 2), (-62, 4))[i], fontsize=LABEL_PT,
+              color=COLORS["twist"], ax=ax)
+    fit_view(np.vstack([P, P.min(axis=0) - [1.0, 0.4], P.max(axis=0) + [0.8, 0.2]]), margin=0.03, ax=ax)
 

@@ -14,6 +14,7 @@ from planargeo.draw.artists import plot_conic, plot_line, plot_point
 from planargeo.draw.constructions import label
 from planargeo.draw.mechanism import draw_body, draw_joint_split, draw_model, link_polygon
 from planargeo.draw.layout import fit_view, shape_points
+from planargeo.draw.style import LABEL_PT
 from planargeo.gallery.figures import chain, register
 from planargeo.gallery.figures.ch3 import QD, QDD, Q
 from planargeo.gallery.figures.ch9 import slider_crank
@@ -42,7 +43,7 @@ def extra_inertia_field(ax):
                 (f[2] + c[1] * f[0] - c[0] * f[1]) / np.hypot(*f[:2]))   # foot of c on f (4.27)
             anchor = foot + 1.3 * e
         plot_line(f, ax, role="wrench", scale=None, text=f"$Ia_{k}$", anchor=anchor, linewidth=1.2)
-    fit_view(ax, [[-2.0, -1.4], [2.0, 1.6]], margin=0.02)
+    fit_view([[-2.0, -1.4], [2.0, 1.6]], margin=0.02, ax=ax)
 
 
 @register(10.02, height=6.0, nrows=3)
@@ -60,9 +61,9 @@ def extra_joint_splits(axs):
                                                    avoid=unary_union(arts["shapes"]))
         assert np.allclose(act + rea, w.f[i]) and np.allclose(Qi, w.tau[i])
         ax.text(0.02, 0.02, f"joint {i + 1}: Q = τ = {Qi[0]:.2f}", transform=ax.transAxes,
-                fontsize=7, bbox=dict(fc="white", ec="none", pad=0.5))
+                fontsize=LABEL_PT, bbox=dict(fc="white", ec="none", pad=0.5))
         ends = [p for a in out.values() if a.get_arrow() is not None for p in a.get_arrow()]
-        fit_view(ax, [*shape_points(*arts["shapes"]), *ends, [-0.3, -0.5]], margin=0.1)
+        fit_view([*shape_points(*arts["shapes"]), *ends, [-0.3, -0.5]], margin=0.1, ax=ax)
 
 
 @register(10.03, height=3.6)
@@ -75,8 +76,8 @@ def extra_slider_crank(ax):
     res, d, outline = slider_crank(ax, alpha=0.25)
     m = res.model
     for i, body in enumerate(m.bodies):
-        label(ax, d.com[i], body.name, offset=(-10, 0), ha="right", va="center", fontsize=7,
-              color="#1f3a4d")
+        label(d.com[i], body.name, offset=(-10, 0), ha="right", va="center", fontsize=LABEL_PT,
+              color="#1f3a4d", ax=ax)
     (contact,) = m.contacts
     pc = world_point(d.pose, contact.a, contact.point_a)          # the slider's contact point
     a = np.asarray(res.quantities["a"])
@@ -87,11 +88,11 @@ def extra_slider_crank(ax):
     for k, off in enumerate([(10, -14), (10, 4), (-22, -4)]):
         plot_point(a[k], ax, role="accel", text=f"$a_{k + 1}$", glyph_scale=0.05, text_offset=off)
     v = np.asarray(res.quantities["v"])
-    for k, off in ((0, (-22, -4)), (2, (8, -4))):     # v₂'s pole (the rod's ICR) lies far right
+    for k, off in ((0, (-22, -8)), (2, (8, -4))):     # v₂'s pole (the rod's ICR) lies far right
         plot_point(v[k], ax, role="twist", text=f"$v_{k + 1}$", glyph=False, text_offset=off)
     pts = [outline, *[np.reshape(to_xy(x), (1, 2)) for x in a[:2]],
            [pc + [1.6, 0.0], d.origin[0] - [1.2, 0.3]]]
-    fit_view(ax, np.vstack(pts), margin=0.06)
+    fit_view(np.vstack(pts), margin=0.06, ax=ax)
 
 
 @register(0.5, height=3.2)
@@ -120,7 +121,7 @@ def extra_style_key(ax):
     for k, (txt, make) in enumerate(rows):
         y = 7.0 - 1.05 * k
         make(y)
-        ax.text(2.4, y, txt, va="center", fontsize=7.5,
+        ax.text(2.4, y, txt, va="center", fontsize=LABEL_PT,
                 bbox=dict(fc="white", ec="none", pad=0.5))
     # bottom band: an ideal point (arrow at the view's lower edge, label above it) and a couple
     plot_point(np.array([-1.0, 0.0, 0.0]), ax, text="translation (ideal point)")

@@ -15,7 +15,7 @@ import numpy as np
 from planargeo.draw.artists import plot_line, plot_point
 from planargeo.draw.constructions import label
 from planargeo.draw.layout import fit_view
-from planargeo.draw.style import COLORS
+from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.gallery.figures import register
 from planargeo.screws.twists import X_P, X_P_inv_T, Twist, Wrench
 
@@ -54,7 +54,7 @@ def fig1_1(ax):
           color=COLORS["twist"])
     ax.plot([POLE[0], Q[0]], [POLE[1], Q[1]], color=COLORS["construct"], lw=0.8, ls="--")
     label((POLE + Q) / 2, "$r$", ax=ax, offset=(4, -10), color=COLORS["construct"])
-    fit_view(ax, [[-1.75, -1.75], [1.75, 1.75]], margin=0.0)
+    fit_view([[-1.75, -1.75], [1.75, 1.75]], margin=0.0, ax=ax)
 
 
 @register(1.04, height=2.9)
@@ -77,10 +77,10 @@ def fig1_4(ax):
                linestyles=["--" if v < 0 else ":" if v > 0 else "-" for v in levels])
     for lv, t_along, text in ((1.0, -1.2, "τ = 1"), (-1.0, 1.2, "τ = −1")):
         p = LINE_POINT + lv * n_ + t_along * e      # on the level line τ = lv
-        ax.text(*p, text, fontsize=8, color=COLORS["momentum"], ha="center", va="center",
+        ax.text(*p, text, fontsize=LABEL_PT, color=COLORS["momentum"], ha="center", va="center",
                 bbox=dict(fc="white", ec="none", pad=0.5))
     for p, text in (((-0.75, 1.5), "τ > 0: counter-clockwise"), ((0.85, -1.55), "τ < 0: clockwise")):
-        ax.text(*p, text, fontsize=8, color=COLORS["momentum"], ha="center", va="center",
+        ax.text(*p, text, fontsize=LABEL_PT, color=COLORS["momentum"], ha="center", va="center",
                 bbox=dict(fc="white", ec="none", pad=0.5))
     plot_line(f, ax, role="wrench", scale=0.9, anchor=LINE_POINT + 0.4 * e, text="$f$")
-    fit_view(ax, [[-1.75, -1.75], [1.75, 1.75]], margin=0.0)
+    fit_view([[-1.75, -1.75], [1.75, 1.75]], margin=0.0, ax=ax)

@@ -34,8 +34,8 @@ def fig2_1(ax):
     label(pose[2, :2], "joint $i+1$", ax=ax, offset=(8, -16))
     label(pose[0, :2], "joint $i-1$", ax=ax, offset=(10, -18))
     tip = 2 * np.asarray(d.com)[2] - pose[2, :2]
-    fit_view(ax, [pose[0, :2] - [0.35, 0.45], tip + [0.25, 0.2], pose[1, :2] + [0.0, 0.5]],
-             margin=0.06)
+    fit_view([pose[0, :2] - [0.35, 0.45], tip + [0.25, 0.2], pose[1, :2] + [0.0, 0.5]],
+             margin=0.06, ax=ax)
 
 
 def apparent_mass(m: float = 1.0):
@@ -107,4 +107,4 @@ def fig3_3(ax):
         ax.annotate("", xy=tuple(tip), xytext=tuple(0.3 * np.array(d)),
                     arrowprops=dict(arrowstyle="-|>", color=COLORS["wrench"], lw=1.6))
         label(tip, txt, ax=ax, offset=off, color=COLORS["wrench"])
-    fit_view(ax, [[-1.6, -1.7], [2.3, 1.7]], margin=0.02)
+    fit_view([[-1.6, -1.7], [2.3, 1.7]], margin=0.02, ax=ax)

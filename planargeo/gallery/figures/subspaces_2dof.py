@@ -56,4 +56,4 @@ def fig6_2dof(ax):
     plot_point(U, ax, role="accel", glyph=False, text="$U$")
     a = st["s_psi"]
     plot_point(a, ax, role="accel", text=r"$s\psi$")
-    fit_view(ax, [(-1.2, -1.0), (2.3, 1.3), Uxy], margin=0.05)
+    fit_view([(-1.2, -1.0), (2.3, 1.3), Uxy], margin=0.05, ax=ax)
