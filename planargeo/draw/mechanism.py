@@ -16,7 +16,7 @@ from planargeo.draw.style import COLORS, LINEWIDTHS, get_ax
 
 __all__ = ["link_polygon", "draw_body", "draw_link", "draw_pin", "draw_ground", "draw_slider",
            "draw_frame", "draw_com", "draw_joint_split", "transform_shape", "draw_contact",
-           "slider_guide", "draw_model"]
+           "slider_guide", "draw_model", "LabelPlacer"]
 
 
 def link_polygon(p, q, width=0.25):
@@ -403,3 +403,169 @@ def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pi
             out["contacts"] += draw_contact(c, pose, ax, body_shape=out["shapes"][c.a],
                                             size=1.6 * pin_radius)
     return out
+
+
+#: candidate label spots around an anchor: (direction x, direction y) in units of the clearance
+_SPOTS = ((1, 1), (-1, 1), (1, -1), (-1, -1), (1.3, 0), (-1.3, 0), (0, 1.3), (0, -1.3))
+_SPOTS_ARR = np.array(_SPOTS, dtype=float)
+
+
+class LabelPlacer:
+    """A fixed pool of labels placed beside their anchors without overlapping each other.
+
+    The labels are ``Annotation`` texts (data anchor, offset in points) created
+    once; :meth:`place` shows the requested ones where they fit and hides the
+    rest of the pool, so that an explorer can label every element on each
+    frame without creating artists.  A label is tried at eight spots around its
+    anchor (up right first); a spot is taken only when the label's box lies
+    inside the axes (with ``margin_px``) and clear of the labels placed before it
+    and of the ``obstacles``.  Requests are placed in the order given (put the
+    most important first); a label that fits nowhere is not shown.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes, optional
+        Axes to label (default: the current axes).
+    size : int
+        Number of labels in the pool.
+    fontsize : float
+        Font size in points (11 px on screen at 90 dpi needs 8.8 pt or more).
+    zorder : float
+        Drawing order of the labels (above the drawing).
+    margin_px : float
+        Free pixels kept between labels and between a label and the axes edge.
+
+    Examples
+    --------
+    >>> import matplotlib; matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> _ = ax.set_xlim(0, 4), ax.set_ylim(0, 4)
+    >>> labels = LabelPlacer(ax, size=4)
+    >>> labels.place([("P", (1.0, 1.0)), ("Q", (1.0, 1.0)), ("R", (9.0, 9.0))])
+    [True, True, False]
+    >>> [t.get_text() for t in labels.texts if t.get_visible()]
+    ['P', 'Q']
+    >>> plt.close(fig)
+    """
+
+    def __init__(self, ax=None, *, size: int = 64, fontsize: float = 10.0, zorder: float = 30,
+                 margin_px: float = 2.0):
+        self.ax = get_ax(ax)
+        self.fontsize = float(fontsize)
+        self.margin_px = float(margin_px)
+        self.texts = []
+        for _ in range(int(size)):
+            t = self.ax.annotate("", xy=(0.0, 0.0), xytext=(0.0, 0.0), textcoords="offset points",
+                                 fontsize=self.fontsize, zorder=zorder, annotation_clip=False)
+            t.set_visible(False)
+            self.texts.append(t)
+        self._sizes: dict = {}
+        #: display boxes ``(x0, y0, x1, y1)`` of the labels shown by the last :meth:`place`
+        self.boxes: list[tuple[float, float, float, float]] = []
+
+    def _size_pt(self, text: str, bold: bool) -> tuple[float, float, float]:
+        """Width, height and descent of ``text`` in points (measured once per text)."""
+        key = (text, bold)
+        if key not in self._sizes:
+            from matplotlib.font_manager import FontProperties
+
+            canvas = self.ax.figure.canvas
+            renderer = canvas.get_renderer() if hasattr(canvas, "get_renderer") else None
+            prop = FontProperties(size=self.fontsize, weight="bold" if bold else "normal")
+            if renderer is None:                              # no renderer: a generous estimate
+                w, h, d = 0.62 * self.fontsize * len(text), 1.25 * self.fontsize, 0.25 * self.fontsize
+            else:
+                k = 72.0 / renderer.dpi
+                math = text.count("$") >= 2 and text.count("$") % 2 == 0
+                w, h, d = (k * v for v in renderer.get_text_width_height_descent(text, prop, ismath=math))
+                # a line of text is at least as tall as "lp" (matplotlib's text layout)
+                h = max(h, k * renderer.get_text_width_height_descent("lp", prop, ismath=False)[1])
+            self._sizes[key] = (w, h, d)
+        return self._sizes[key]
+
+    def place(self, requests, obstacles=()) -> list[bool]:
+        """Show the labels of ``requests`` where they fit; returns which ones are shown.
+
+        Parameters
+        ----------
+        requests : iterable of tuple
+            ``(text, (x, y))`` or ``(text, (x, y), options)`` with the anchor in
+            data coordinates and ``options`` a dict of: ``color``, ``bold``
+            (bool), ``alpha``, ``clear`` (points kept free around the anchor,
+            e.g. a rotation glyph's radius; default 5).
+        obstacles : iterable of (x0, y0, x1, y1)
+            Display (pixel) boxes no label may cover (a scale bar, a title).
+
+        Returns
+        -------
+        list of bool
+            For each request, whether its label is shown.
+
+        Raises
+        ------
+        InputError
+            More requests fit than the pool holds labels for (make the pool larger).
+        """
+        from planargeo.errors import InputError
+
+        ax = self.ax
+        bb = ax.bbox
+        m = self.margin_px
+        lo_x, lo_y, hi_x, hi_y = bb.x0 + m, bb.y0 + m, bb.x1 - m, bb.y1 - m
+        px = ax.figure.dpi / 72.0
+        placed = np.full((len(self.texts) + 64, 4), np.nan)      # boxes taken (display), grown below
+        obstacles = [tuple(o) for o in obstacles]
+        placed[:len(obstacles)] = obstacles if obstacles else placed[:0]
+        n_placed = len(obstacles)
+        self.boxes = []
+        shown, k = [], 0
+        reqs = [r if len(r) == 3 else (r[0], r[1], {}) for r in requests]
+        anchors = np.array([r[1] for r in reqs], dtype=float).reshape(-1, 2)
+        disp = ax.transData.transform(anchors) if len(reqs) else anchors
+        for (text, xy, opt), (dx, dy) in zip(reqs, disp):
+            ok = False
+            if np.isfinite(dx) and np.isfinite(dy) and text and lo_x <= dx <= hi_x and lo_y <= dy <= hi_y:
+                bold = bool(opt.get("bold", False))
+                w, h, d = (v * px for v in self._size_pt(text, bold))
+                c = float(opt.get("clear", 5.0)) * px
+                P = placed[:n_placed]
+                U = _SPOTS_ARR
+                ox, oy = U[:, 0] * c, U[:, 1] * c
+                x0 = dx + ox - np.where(U[:, 0] < 0, w, np.where(U[:, 0] == 0, w / 2, 0.0))
+                y0 = dy + oy - np.where(U[:, 1] < 0, h, np.where(U[:, 1] == 0, h / 2, 0.0))
+                fits = (x0 >= lo_x) & (y0 >= lo_y) & (x0 + w <= hi_x) & (y0 + h <= hi_y)
+                if n_placed:
+                    hit = ((x0[:, None] < P[None, :, 2] + m) & (P[None, :, 0] < x0[:, None] + w + m)
+                           & (y0[:, None] < P[None, :, 3] + m) & (P[None, :, 1] < y0[:, None] + h + m))
+                    fits &= ~hit.any(axis=1)
+                free = np.flatnonzero(fits)
+                if len(free):
+                    j = int(free[0])
+                    ux, uy = U[j]
+                    box = (float(x0[j]), float(y0[j]), float(x0[j] + w), float(y0[j] + h))
+                    ox, oy = float(ox[j]), float(oy[j])
+                    if k >= len(self.texts):
+                        raise InputError(f"requests must fit the pool of {len(self.texts)} labels")
+                    t = self.texts[k]
+                    k += 1
+                    t.set_text(text)
+                    t.xy = (float(xy[0]), float(xy[1]))
+                    t.set_position((ox / px, oy / px))
+                    t.set_horizontalalignment("right" if ux < 0 else "center" if ux == 0 else "left")
+                    t.set_verticalalignment("top" if uy < 0 else "center" if uy == 0 else "bottom")
+                    t.set_color(opt.get("color", "black"))
+                    t.set_fontweight("bold" if bold else "normal")
+                    t.set_alpha(opt.get("alpha"))
+                    t.set_visible(True)
+                    if n_placed == len(placed):
+                        placed = np.vstack([placed, np.full_like(placed, np.nan)])
+                    placed[n_placed] = box
+                    n_placed += 1
+                    self.boxes.append(box)
+                    ok = True
+            shown.append(ok)
+        for t in self.texts[k:]:
+            if t.get_visible():
+                t.set_visible(False)
+        return shown
