@@ -408,6 +408,8 @@ def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pi
 #: candidate label spots around an anchor: (direction x, direction y) in units of the clearance
 _SPOTS = ((1, 1), (-1, 1), (1, -1), (-1, -1), (1.3, 0), (-1.3, 0), (0, 1.3), (0, -1.3))
 _SPOTS_ARR = np.array(_SPOTS, dtype=float)
+#: a bold label is also this much larger (mathtext ignores the font weight)
+BOLD_SCALE = 1.2
 
 
 class LabelPlacer:
@@ -472,7 +474,8 @@ class LabelPlacer:
 
             canvas = self.ax.figure.canvas
             renderer = canvas.get_renderer() if hasattr(canvas, "get_renderer") else None
-            prop = FontProperties(size=self.fontsize, weight="bold" if bold else "normal")
+            prop = FontProperties(size=self.fontsize * (BOLD_SCALE if bold else 1.0),
+                                  weight="bold" if bold else "normal")
             if renderer is None:                              # no renderer: a generous estimate
                 w, h, d = 0.62 * self.fontsize * len(text), 1.25 * self.fontsize, 0.25 * self.fontsize
             else:
@@ -492,7 +495,7 @@ class LabelPlacer:
         requests : iterable of tuple
             ``(text, (x, y))`` or ``(text, (x, y), options)`` with the anchor in
             data coordinates and ``options`` a dict of: ``color``, ``bold``
-            (bool), ``alpha``, ``clear`` (points kept free around the anchor,
+            (bool: bold and 1.2 times larger), ``alpha``, ``clear`` (points kept free around the anchor,
             e.g. a rotation glyph's radius; default 5).
         obstacles : iterable of (x0, y0, x1, y1)
             Display (pixel) boxes no label may cover (a scale bar, a title).
@@ -556,6 +559,7 @@ class LabelPlacer:
                     t.set_verticalalignment("top" if uy < 0 else "center" if uy == 0 else "bottom")
                     t.set_color(opt.get("color", "black"))
                     t.set_fontweight("bold" if bold else "normal")
+                    t.set_fontsize(self.fontsize * (BOLD_SCALE if bold else 1.0))
                     t.set_alpha(opt.get("alpha"))
                     t.set_visible(True)
                     if n_placed == len(placed):

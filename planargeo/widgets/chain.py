@@ -47,7 +47,7 @@ from matplotlib.lines import Line2D
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist, clip_line, conic_geometry
 from planargeo.draw.layout import fit_view
 from planargeo.draw.mechanism import LabelPlacer
-from planargeo.draw.style import COLORS
+from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.errors import InputError, SingularConfigurationError
 from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.mechanics.subspaces import T_of
@@ -68,6 +68,9 @@ INITIAL = ("links", "joints", "angle", "bend", "slide", "speed", "torque", "torq
            "base x (m)", "base y (m)", LIST_Q, "joint speeds", "joint torques")
 #: slide range of a prismatic joint (m), the slide slider's
 SLIDE = (-0.5, 1.0)
+#: the ground under the base: a line and its hatching (NaN-separated strokes), relative to the base
+_GROUND = np.vstack([[[-0.4, -0.1], [0.4, -0.1], [np.nan, np.nan]]]
+                    + [[[x, -0.1], [x - 0.1, -0.2], [np.nan, np.nan]] for x in np.linspace(-0.35, 0.4, 6)])
 #: opacity of the elements outside the focus
 FADED = 0.18
 #: mathtext of each overlay symbol (thesis notation)
@@ -78,6 +81,13 @@ _TEX = {"f": "f", "v": "v", "a": "a", "TQ": "TQ", "Rμ": r"R\mu", "sψ": r"s\psi
 def _sym(symbol: str, i: int) -> str:
     """``symbol`` with the subscript ``i`` as mathtext (``$f_{3}$``; cheaper to draw than plain text)."""
     return f"${_TEX[symbol]}_{{{i}}}$"
+
+
+def _fade(art, alpha) -> None:
+    """Set the opacity of one of :mod:`planargeo.draw.artists`' artists and of its parts."""
+    art.set_alpha(alpha)
+    for child in art.get_children():
+        child.set_alpha(alpha)
 
 
 def chain_for(n: int, joints: str = "revolute", gravity: bool = True, length: float = 1.0,
@@ -316,7 +326,7 @@ class ChainExplorer(Explorer):
                                   va="bottom", ha="left", zorder=20)
         self.time_text = ax.text(0.02, 0.97, "", transform=ax.transAxes, va="top", fontsize=10,
                                  zorder=20)
-        self.labels = LabelPlacer(ax, size=12 * NMAX, fontsize=10.0)
+        self.labels = LabelPlacer(ax, size=12 * NMAX, fontsize=LABEL_PT + 1.5)
         self._shown_labels = []
 
     # -- model / state -------------------------------------------------------------
@@ -700,8 +710,12 @@ class ChainExplorer(Explorer):
         chain[2::2] = ends
         self.links_line.set_data(chain[:, 0], chain[:, 1])
         bx, by = w.origin[0]
-        self.ground.set_data([bx - 0.4, bx + 0.4], [by - 0.1, by - 0.1])
-        fscale = 0.5 / max(1.0, float(np.max(np.abs(w.f[:, :2]))))
+        self.ground.set_data(bx + _GROUND[:, 0], by + _GROUND[:, 1])
+        if focus is not None and focus[0] == "joint":    # the focused joint's force 0.6 m long
+            big = [w.f[focus[1]]] + ([split["reaction"][focus[1]]] if split else [])
+            fscale = 0.6 / max(1e-9, max(float(np.hypot(*b[:2])) for b in big))
+        else:
+            fscale = 0.5 / max(1.0, float(np.max(np.abs(w.f[:, :2]))))
         data = {"f": w.f, "v": w.v, "a": w.a, "TQ": split.get("active"), "Rμ": split.get("reaction"),
                 "sψ": split.get("motion"), "Uγ": split.get("reactive"), "κ": w.kappa, "p": w.p,
                 "A": w.A}
@@ -726,7 +740,7 @@ class ChainExplorer(Explorer):
                     fade = focus is not None and not (focus == (per, i))
                     alpha = FADED if fade else None
                     if art.get_alpha() != alpha:
-                        art.set_alpha(alpha)
+                        _fade(art, alpha)
                 if art.get_visible() != show:
                     art.set_visible(show)
         # the view (all: the chain's reach; focus: the focused element) and the focus marks
