@@ -487,6 +487,22 @@ class ChainExplorer(Explorer):
             }
         return st["split"]
 
+    def figure_message(self, exc: Exception) -> str:
+        """The refusal drawn on the figure, wrapped to stay inside the axes.
+
+        Parameters
+        ----------
+        exc : Exception
+            Why the update was refused.
+
+        Returns
+        -------
+        str
+        """
+        import textwrap
+
+        return textwrap.fill(super().figure_message(exc), 40)
+
     # -- focus, handles, play ------------------------------------------------------
     def focus_options(self) -> list[str]:
         """Bodies and joints the focus can pick: ``link1``..., ``joint1``... (all 20).
