@@ -132,13 +132,25 @@ class CarExplorer(Explorer):
         }
 
     def setup_axes(self, ax):
-        """Equal-aspect axes without ticks (a 5 m scale bar instead)."""
+        """Equal-aspect axes without ticks (a scale bar instead).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+            The explorer's axes.
+        """
         from planargeo.draw.style import setup_axes
 
         setup_axes(ax, self.limits, axis_off=True)
 
     def make_artists(self, ax):
-        """Create every artist once: body, tyres, axles, poles, forces, inertia, labels."""
+        """Create every artist once: body, tyres, axles, poles, forces, inertia, labels.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+            The explorer's axes.
+        """
         self.body = MplPolygon(np.zeros((4, 2)), closed=True, fc=COLORS["body"], ec="black",
                                alpha=0.5, zorder=2)
         ax.add_patch(self.body)

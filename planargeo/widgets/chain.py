@@ -260,13 +260,25 @@ class ChainExplorer(Explorer):
 
     # -- figure ------------------------------------------------------------------
     def setup_axes(self, ax):
-        """Equal-aspect axes without ticks (a 1 m scale bar instead: cheaper and clearer)."""
+        """Equal-aspect axes without ticks (a 1 m scale bar instead: cheaper and clearer).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+            The explorer's axes.
+        """
         from planargeo.draw.style import setup_axes
 
         setup_axes(ax, self.limits, axis_off=True)
 
     def make_artists(self, ax):
-        """Create every artist once: links, base, the overlay pools, focus marks and labels."""
+        """Create every artist once: links, base, the overlay pools, focus marks and labels.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+            The explorer's axes.
+        """
         self.links_line = Line2D([], [], color=COLORS["ground"], lw=2.5, marker="o", ms=4,
                                  mfc="white", zorder=5)
         ax.add_line(self.links_line)
