@@ -87,6 +87,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from traitlets import validate
 
+from planargeo.draw.artists import place_labels
 from planargeo.draw.style import EXPLORER_DPI, EXPLORER_MIN_WIDTH_PX, EXPLORER_TICK_PT, setup_axes
 from planargeo.errors import InputError, OutputError, PlanargeoError
 from planargeo.files import atomic_write
@@ -471,6 +472,7 @@ class Explorer:
         # figure ----------------------------------------------------------------
         self.fig, self.ax = self._make_figure(figsize or self.figsize)
         self.setup_axes(self.ax)
+        place_labels(self.ax)  # labels avoid each other and stay inside the axes
         self.make_artists(self.ax)
         self._msg_text = self.ax.text(0.5, 0.5, "", transform=self.ax.transAxes, ha="center",
                                       va="center", fontsize=11, color="#b00020", zorder=100,
