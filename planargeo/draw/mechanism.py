@@ -503,15 +503,9 @@ class LabelPlacer:
         Returns
         -------
         list of bool
-            For each request, whether its label is shown.
-
-        Raises
-        ------
-        InputError
-            More requests fit than the pool holds labels for (make the pool larger).
+            For each request, whether its label is shown (once the pool is used
+            up, the remaining requests are not).
         """
-        from planargeo.errors import InputError
-
         ax = self.ax
         bb = ax.bbox
         m = self.margin_px
@@ -528,7 +522,8 @@ class LabelPlacer:
         disp = ax.transData.transform(anchors) if len(reqs) else anchors
         for (text, xy, opt), (dx, dy) in zip(reqs, disp):
             ok = False
-            if np.isfinite(dx) and np.isfinite(dy) and text and lo_x <= dx <= hi_x and lo_y <= dy <= hi_y:
+            if k < len(self.texts) and np.isfinite(dx) and np.isfinite(dy) and text \
+                    and lo_x <= dx <= hi_x and lo_y <= dy <= hi_y:
                 bold = bool(opt.get("bold", False))
                 w, h, d = (v * px for v in self._size_pt(text, bold))
                 c = float(opt.get("clear", 5.0)) * px
@@ -548,8 +543,6 @@ class LabelPlacer:
                     ux, uy = U[j]
                     box = (float(x0[j]), float(y0[j]), float(x0[j] + w), float(y0[j] + h))
                     ox, oy = float(ox[j]), float(oy[j])
-                    if k >= len(self.texts):
-                        raise InputError(f"requests must fit the pool of {len(self.texts)} labels")
                     t = self.texts[k]
                     k += 1
                     t.set_text(text)
