@@ -487,7 +487,7 @@ class LabelPlacer:
             self._sizes[key] = (w, h, d)
         return self._sizes[key]
 
-    def place(self, requests, obstacles=()) -> list[bool]:
+    def place(self, requests, obstacles=(), limit: int | None = None) -> list[bool]:
         """Show the labels of ``requests`` where they fit; returns which ones are shown.
 
         Parameters
@@ -499,6 +499,8 @@ class LabelPlacer:
             e.g. a rotation glyph's radius; default 5).
         obstacles : iterable of (x0, y0, x1, y1)
             Display (pixel) boxes no label may cover (a scale bar, a title).
+        limit : int, optional
+            Show at most this many labels (each costs drawing time).
 
         Returns
         -------
@@ -517,12 +519,13 @@ class LabelPlacer:
         n_placed = len(obstacles)
         self.boxes = []
         shown, k = [], 0
+        cap = len(self.texts) if limit is None else min(int(limit), len(self.texts))
         reqs = [r if len(r) == 3 else (r[0], r[1], {}) for r in requests]
         anchors = np.array([r[1] for r in reqs], dtype=float).reshape(-1, 2)
         disp = ax.transData.transform(anchors) if len(reqs) else anchors
         for (text, xy, opt), (dx, dy) in zip(reqs, disp):
             ok = False
-            if k < len(self.texts) and np.isfinite(dx) and np.isfinite(dy) and text \
+            if k < cap and np.isfinite(dx) and np.isfinite(dy) and text \
                     and lo_x <= dx <= hi_x and lo_y <= dy <= hi_y:
                 bold = bool(opt.get("bold", False))
                 w, h, d = (v * px for v in self._size_pt(text, bold))

@@ -71,6 +71,10 @@ SLIDE = (-0.5, 1.0)
 #: the ground under the base: a line and its hatching (NaN-separated strokes), relative to the base
 _GROUND = np.vstack([[[-0.4, -0.1], [0.4, -0.1], [np.nan, np.nan]]]
                     + [[[x, -0.1], [x - 0.1, -0.2], [np.nan, np.nan]] for x in np.linspace(-0.35, 0.4, 6)])
+#: labels shown at most without a focus (each costs ~0.3 ms to draw; the focus labels the rest)
+MAX_LABELS = 24
+#: overlay artists made at the start, per overlay (more when a longer chain is shown)
+POOL0 = 4
 #: opacity of the elements outside the focus
 FADED = 0.18
 #: mathtext of each overlay symbol (thesis notation)
@@ -294,10 +298,13 @@ class ChainExplorer(Explorer):
         z = np.array([0.0, 0.0, 1.0])
         zl = np.array([1.0, 0.0, 0.0])
 
+        self._factories = []
+
         def pool(factory):
-            out = [ax.add_artist(factory(i)) for i in range(NMAX)]
-            for a in out:
-                a.set_visible(False)
+            # a pool of artists per overlay, grown (never shrunk) to the longest chain shown:
+            # invisible artists still cost a draw call each
+            out = []
+            self._factories.append((out, factory))
             return out
 
         self.v_art = pool(lambda i: PointArtist(z, role="twist", glyph_scale=4.0))
@@ -314,7 +321,8 @@ class ChainExplorer(Explorer):
         self.ugam_art = pool(lambda i: PointArtist(z, role="accel", glyph=False, markersize=5,
                                                    color=COLORS["reaction"]))
         self.A_art = pool(lambda i: ConicArtist(np.eye(3), role="inertia", linewidth=0.8))
-        self._scaled = set(self.f_art + self.r_art)
+        self._scaled = set()
+        self._grow(POOL0)
         # label colour and the glyph clearance (points) of each layer's labels
         self._layers = [
             # artists, overlay, symbol, kind, per ("link" or "joint"), colour, clearance
@@ -338,8 +346,17 @@ class ChainExplorer(Explorer):
                                   va="bottom", ha="left", zorder=20)
         self.time_text = ax.text(0.02, 0.97, "", transform=ax.transAxes, va="top", fontsize=10,
                                  zorder=20)
-        self.labels = LabelPlacer(ax, size=12 * NMAX, fontsize=LABEL_PT + 1.5)
+        self.labels = LabelPlacer(ax, size=MAX_LABELS + 16, fontsize=LABEL_PT + 1.5)
         self._shown_labels = []
+
+    def _grow(self, n: int) -> None:
+        """Make every overlay pool hold at least ``n`` artists (new ones hidden)."""
+        for out, factory in self._factories:
+            while len(out) < n:
+                art = self.ax.add_artist(factory(len(out)))
+                art.set_visible(False)
+                out.append(art)
+        self._scaled = set(self.f_art + self.r_art)
 
     # -- model / state -------------------------------------------------------------
     def model_for(self, v) -> Model:
@@ -729,6 +746,8 @@ class ChainExplorer(Explorer):
         model, w = st["model"], st["w"]
         n = model.N
         v = self.values
+        if n > len(self.v_art):
+            self._grow(n)
         focus = self._focus(n)
         split = self.tu_split(st) if v["T/U split"] else {}
         ends = self._ends(w)
@@ -809,10 +828,10 @@ class ChainExplorer(Explorer):
         w = st["w"]
         anchors = {"joint": w.pose[:, :2], "link": w.com}
         reqs, later = [], []
-        for arts, flag, sym, kind, per, color, clear in self._layers:
-            if not self.values[flag]:
-                continue
-            for i in range(n):
+        for i in range(n):                 # round-robin over the layers: every kind gets labels early
+            for arts, flag, sym, kind, per, color, clear in self._layers:
+                if not self.values[flag]:
+                    continue
                 art = arts[i]
                 if not art.get_visible():
                     continue
@@ -833,8 +852,9 @@ class ChainExplorer(Explorer):
             mid = w.pose[i, :2] if kind == "joint" else 0.5 * (w.pose[i, :2] + self._ends(w)[i])
             reqs.insert(0, (f"{kind} {i + 1}", mid, {"bold": True, "clear": 9.0}))
         obstacles = [self._text_box(t) for t in (self.scale_text, self.time_text) if t.get_text()]
-        self._shown_labels = [r[0] for r, ok in zip(reqs + later, self.labels.place(reqs + later, obstacles))
-                              if ok]
+        limit = None if focus is not None else MAX_LABELS
+        shown = self.labels.place(reqs + later, obstacles, limit=limit)
+        self._shown_labels = [r[0] for r, ok in zip(reqs + later, shown) if ok]
 
     def _text_box(self, text):
         """Display box of a text of the figure (an obstacle for the labels)."""
