@@ -20,7 +20,19 @@ __all__ = ["link_polygon", "draw_body", "draw_link", "draw_pin", "draw_ground", 
 
 
 def link_polygon(p, q, width=0.25):
-    """A rounded link (stadium) between Euclidean points ``p`` and ``q`` as a shapely polygon."""
+    """A rounded link (stadium) between Euclidean points ``p`` and ``q`` as a shapely polygon.
+
+    Parameters
+    ----------
+    p, q : (float, float)
+        The link's end points (a single point gives a disc).
+    width : float
+        Width of the link (the diameter of its rounded ends).
+
+    Returns
+    -------
+    shapely.geometry.Polygon
+    """
     from shapely.geometry import LineString, Point as SPoint
 
     p, q = tuple(map(float, p)), tuple(map(float, q))
@@ -29,7 +41,20 @@ def link_polygon(p, q, width=0.25):
 
 
 def transform_shape(shape, pose):
-    """A shapely shape given in a body frame, moved to world by ``pose = (x, y, θ)``."""
+    """A shapely shape given in a body frame, moved to world by ``pose = (x, y, θ)``.
+
+    Parameters
+    ----------
+    shape : shapely geometry
+        The shape in the body frame.
+    pose : (float, float, float)
+        The body frame's origin and angle (radians) in the world.
+
+    Returns
+    -------
+    shapely geometry
+        The shape in world coordinates.
+    """
     from shapely import affinity
 
     x, y, th = (float(v) for v in pose)
@@ -41,6 +66,27 @@ def draw_body(shape, ax=None, *, color=None, alpha=0.35, edgecolor="#1f3a4d", zo
     """Fill a shapely polygon (or multipolygon) in world coordinates; returns the patches.
 
     With ``com`` (x, y) the centre-of-mass symbol (:func:`draw_com`) marks it.
+
+    Parameters
+    ----------
+    shape : shapely Polygon or MultiPolygon
+        The body in world coordinates (holes drawn white).
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    color, edgecolor : color, optional
+        Fill (default: the body colour of :mod:`planargeo.draw.style`) and outline colours.
+    alpha : float
+        Opacity of the fill.
+    zorder : float
+        Drawing order.
+    label : str, optional
+        Text drawn at a point inside the shape.
+    com : (float, float), optional
+        Centre of mass to mark.
+
+    Returns
+    -------
+    list of matplotlib.artist.Artist
     """
     ax = get_ax(ax)
     geoms = getattr(shape, "geoms", [shape])
@@ -66,12 +112,44 @@ def draw_body(shape, ax=None, *, color=None, alpha=0.35, edgecolor="#1f3a4d", zo
 
 
 def draw_link(p, q, ax=None, *, width=0.25, **kw):
-    """A default rounded link between two Euclidean points."""
+    """A default rounded link between two Euclidean points.
+
+    Parameters
+    ----------
+    p, q : (float, float)
+        The link's end points.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    width : float
+        Width of the link.
+    **kw
+        Options of :func:`draw_body`.
+
+    Returns
+    -------
+    list of matplotlib.artist.Artist
+    """
     return draw_body(link_polygon(p, q, width), ax, **kw)
 
 
 def draw_pin(xy, ax=None, *, radius=0.06, zorder=6):
-    """A revolute joint: white disc with a dark rim."""
+    """A revolute joint: white disc with a dark rim.
+
+    Parameters
+    ----------
+    xy : (float, float)
+        The joint.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    radius : float
+        Radius of the disc (data units).
+    zorder : float
+        Drawing order.
+
+    Returns
+    -------
+    matplotlib.patches.Circle
+    """
     ax = get_ax(ax)
     c = Circle(tuple(map(float, xy)), radius, facecolor="white", edgecolor="#222222",
                linewidth=1.0, zorder=zorder)
@@ -80,7 +158,29 @@ def draw_pin(xy, ax=None, *, radius=0.06, zorder=6):
 
 
 def draw_ground(xy, ax=None, *, width=0.8, angle=0.0, depth=0.12, n=7, zorder=1):
-    """A ground line with hatching below it (``angle`` of the line in radians)."""
+    """A ground line with hatching below it (``angle`` of the line in radians).
+
+    Parameters
+    ----------
+    xy : (float, float)
+        Middle of the ground line.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    width : float
+        Length of the line.
+    angle : float
+        Direction of the line (radians); the hatching is on its right-hand side.
+    depth : float
+        Length of the hatching strokes.
+    n : int
+        Number of hatching strokes.
+    zorder : float
+        Drawing order.
+
+    Returns
+    -------
+    list of matplotlib.lines.Line2D
+    """
     ax = get_ax(ax)
     xy = np.asarray(xy, float)
     e = np.array([np.cos(angle), np.sin(angle)])
@@ -95,7 +195,27 @@ def draw_ground(xy, ax=None, *, width=0.8, angle=0.0, depth=0.12, n=7, zorder=1)
 
 
 def draw_slider(xy, direction, ax=None, *, size=(0.35, 0.2), track=1.6, zorder=3):
-    """A prismatic joint: a block on a track along ``direction`` (the track is hatched ground)."""
+    """A prismatic joint: a block on a track along ``direction`` (the track is hatched ground).
+
+    Parameters
+    ----------
+    xy : (float, float)
+        Centre of the block.
+    direction : (float, float)
+        Direction of sliding.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    size : (float, float)
+        Length and height of the block.
+    track : float
+        Length of the track.
+    zorder : float
+        Drawing order of the block.
+
+    Returns
+    -------
+    list of matplotlib.artist.Artist
+    """
     ax = get_ax(ax)
     xy = np.asarray(xy, float)
     d = np.asarray(direction, float)
@@ -113,7 +233,27 @@ def draw_slider(xy, direction, ax=None, *, size=(0.35, 0.2), track=1.6, zorder=3
 
 
 def draw_frame(origin, ax=None, *, angle=0.0, length=0.5, labels=("$x$", "$y$"), color="#222222"):
-    """Coordinate axes arrows at ``origin`` rotated by ``angle``."""
+    """Coordinate axes arrows at ``origin`` rotated by ``angle``.
+
+    Parameters
+    ----------
+    origin : (float, float)
+        Origin of the frame.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    angle : float
+        Direction of the first axis (radians).
+    length : float
+        Length of the arrows.
+    labels : (str, str)
+        Labels of the two axes ("" for none).
+    color : color
+        Colour of the arrows and labels.
+
+    Returns
+    -------
+    list of matplotlib.artist.Artist
+    """
     ax = get_ax(ax)
     o = np.asarray(origin, float)
     out = []
@@ -130,7 +270,23 @@ def draw_frame(origin, ax=None, *, angle=0.0, length=0.5, labels=("$x$", "$y$"),
 
 
 def draw_com(xy, ax=None, *, radius=0.07, zorder=6):
-    """The centre-of-mass symbol (quartered disc)."""
+    """The centre-of-mass symbol (quartered disc).
+
+    Parameters
+    ----------
+    xy : (float, float)
+        The centre of mass.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    radius : float
+        Radius of the symbol (data units).
+    zorder : float
+        Drawing order.
+
+    Returns
+    -------
+    list of matplotlib.patches.Wedge
+    """
     from matplotlib.patches import Wedge
 
     ax = get_ax(ax)
@@ -181,7 +337,37 @@ def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None, ga
     along its line to the nearest place where it stays ``clearance`` (data
     units) away from ``avoid`` and from the arrows placed before it.  The arrow
     ends are ``out[k].get_arrow()`` (to fit a view to them).
-    Returns the artists and the split ``(Q, μ, TQ, Rμ)``.
+
+    Parameters
+    ----------
+    s : array_like (3, k)
+        The joint's motion space.
+    R : array_like (3, 3 - k)
+        Its reaction space.
+    A : array_like (3, 3)
+        The (articulated) inertia of the split.
+    f : array_like (3,)
+        The joint force.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    name : str
+        Subscript of the labels (``f_name``, ``TQ_name``, ``Rμ_name``).
+    scale : float
+        Arrow length per unit force (data units).
+    anchor : (float, float), optional
+        Where the arrows sit along their lines (the foot of this point).
+    gap : float
+        Distance of a label from its arrow (points).
+    avoid : shapely geometry, optional
+        What the arrows keep ``clearance`` away from (e.g. the drawn bodies).
+    clearance : float
+        Free distance around ``avoid`` and earlier arrows (data units).
+
+    Returns
+    -------
+    tuple
+        ``({"f", "active", "reaction"}: LineArtist, (Q, μ, TQ, Rμ))``: the
+        artists and the split.
 
     Examples
     --------
@@ -266,9 +452,25 @@ def slider_guide(contact, pose, body_shape=None, *, clearance=0.04, margin=None)
     in world coordinates: its half-width across the guide), and span body a's
     extent along the guide plus ``margin`` (default: the body's width) at each end.
 
-    Returns ``(p0, e, n, half_width, (s0, s1))``: a point on the guide line, its
-    unit direction, the unit normal (``e`` turned by +90°), the half distance
-    between the walls and the wall span ``p0 + e s`` for ``s`` in ``[s0, s1]``.
+    Parameters
+    ----------
+    contact : planargeo.mechanics.contacts.Contact
+        A slider contact.
+    pose : array_like (N, 3)
+        The bodies' poses.
+    body_shape : shapely geometry, optional
+        Body a as drawn, in world coordinates.
+    clearance : float
+        Gap between the body and each wall.
+    margin : float, optional
+        Wall length beyond the body at each end (default: the body's width).
+
+    Returns
+    -------
+    tuple
+        ``(p0, e, n, half_width, (s0, s1))``: a point on the guide line, its
+        unit direction, the unit normal (``e`` turned by +90°), the half distance
+        between the walls and the wall span ``p0 + e s`` for ``s`` in ``[s0, s1]``.
 
     Examples
     --------
@@ -311,7 +513,26 @@ def draw_contact(contact, pose, ax=None, *, body_shape=None, size=0.08, clearanc
       when the guide is the ground) and a dot at the contact point on body a;
     * ``"weld"``: a filled dark square at the contact point.
 
-    Returns the list of artists.
+    Parameters
+    ----------
+    contact : planargeo.mechanics.contacts.Contact
+        The contact.
+    pose : array_like (N, 3)
+        The bodies' poses.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    body_shape : shapely geometry, optional
+        Body a as drawn (sets a slider's guide walls).
+    size : float
+        Size of the contact's mark (data units).
+    clearance : float
+        Gap between body a and a slider's walls.
+    zorder : float
+        Drawing order of the mark.
+
+    Returns
+    -------
+    list of matplotlib.artist.Artist
     """
     from planargeo.mechanics.contacts import world_point
 
@@ -357,8 +578,37 @@ def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pi
     column of ``s_i``); joints on the ground get hatching.  With ``contacts``
     every contact of ``model.contacts`` is drawn by :func:`draw_contact`
     (slider guides from the contact and the state).
-    Returns a dict of lists of artists (``"bodies"``, ``"joints"``, ``"com"``,
-    ``"contacts"``) and the bodies' world shapes under ``"shapes"``.
+
+    Parameters
+    ----------
+    model : planargeo.mechanics.model.Model
+        The mechanism.
+    data : planargeo.mechanics.model.Data
+        Its kinematics at the state to draw.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    width : float
+        Width of the default rounded links.
+    labels : bool
+        Label the bodies (their names, or their numbers).
+    ground : bool
+        Hatch the ground under joints on the ground.
+    pin_radius : float
+        Radius of the pins (sets the size of the other joint marks).
+    show_com : bool
+        Mark each body's centre of mass.
+    alpha : float
+        Opacity of the bodies' fill.
+    names : list of str, optional
+        Body labels (instead of the model's names).
+    contacts : bool
+        Draw the model's contacts.
+
+    Returns
+    -------
+    dict
+        Lists of artists under ``"bodies"``, ``"joints"``, ``"com"``,
+        ``"contacts"``, and the bodies' world shapes under ``"shapes"``.
     """
     from shapely.ops import unary_union
 
