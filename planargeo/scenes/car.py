@@ -109,6 +109,12 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
         ``q = [0]``, ``qd = [ω]``, ``tau = [0]`` and ``f_ext = [f_A]``, so any
         forward-dynamics function reproduces ``omega_dot``.
 
+    Raises
+    ------
+    SceneError
+        A parameter that is not a finite number (``m``, ``rho``, ``L`` not
+        positive), or ``outlines`` not a boolean.
+
     Examples
     --------
     >>> res = car()

@@ -46,6 +46,11 @@ METHODS = {
 def available_methods() -> dict:
     """``{name: function}`` for the five forward dynamics methods (a copy of :data:`METHODS`).
 
+    Returns
+    -------
+    dict
+        Method name -> ``forward_dynamics(model, q, qd, tau, f_ext=None)``.
+
     Examples
     --------
     >>> list(available_methods())
@@ -61,6 +66,18 @@ def chain_workspace(model, q, qd, tau):
     kinematics pass per state: poles ``v``, ``a`` (4.5, 4.6), bias terms
     ``kappa``, ``p``, articulated inertias ``A`` (3.38), joint forces ``f`` (3.13),
     ``qdd`` (3.41).  See :func:`planargeo.algorithms.aba.articulated_body`.
+
+    Parameters
+    ----------
+    model : Model
+        The chain.
+    q, qd, tau : array_like (nq,)
+        Joint values, speeds and forces.
+
+    Returns
+    -------
+    Data
+        The ABA workspace (poses, poles, forces, articulated inertias, ``qdd``).
 
     Examples
     --------
