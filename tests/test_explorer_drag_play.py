@@ -66,6 +66,7 @@ def test_drag_is_one_update_per_move_and_not_snapped():
 
 def test_mouse_drag_under_the_canvas_events():
     ex = Dot(display="agg")
+    ex.DRAG_BACKLOG_COST = math.inf                  # every move is drawn (no backlog handling)
     ex.fig.canvas.draw()
     _event(ex, "button_press_event", (0.0, 0.0), button=1)
     n = ex.n_updates
@@ -76,6 +77,20 @@ def test_mouse_drag_under_the_canvas_events():
     _event(ex, "motion_notify_event", (1.0, 1.0))                    # released: nothing moves
     assert ex.n_updates == n + 5
     assert ex.values["x"] == pytest.approx(0.513, abs=0.01)
+
+
+def test_moves_queued_behind_a_slow_step_are_folded_into_the_next():
+    ex = Dot(display="agg")
+    ex.DRAG_BACKLOG_COST, ex.DRAG_BACKLOG_GAP = 0.0, 10.0   # every step is "slow", every move "queued"
+    ex.fig.canvas.draw()
+    _event(ex, "button_press_event", (0.0, 0.0), button=1)
+    n = ex.n_updates
+    _event(ex, "motion_notify_event", (0.2, 0.0))
+    _event(ex, "motion_notify_event", (0.4, 0.0))            # queued: kept, not drawn
+    _event(ex, "motion_notify_event", (0.613, 0.1))
+    assert ex.n_updates == n + 1 and ex.values["x"] == pytest.approx(0.2, abs=0.01)
+    _event(ex, "button_release_event", (0.613, 0.1), button=1)  # the last position is applied
+    assert ex.n_updates == n + 2 and ex.values["x"] == pytest.approx(0.613, abs=0.01)
 
 
 def test_press_far_from_every_handle_drags_nothing():
@@ -171,6 +186,7 @@ def test_speed_scales_the_time_step():
 
 def test_play_widget_ticks_and_loops():
     ex = Dot(display="agg", x=0.9)
+    ex.play_control.interval = 60_000                 # frames always faster: no tick dropped
     ex.play_control.playing = True
     ex.play_control.value += 1
     assert ex.values["x"] == pytest.approx(0.95)
@@ -181,6 +197,16 @@ def test_play_widget_ticks_and_loops():
     for _ in range(3):
         ex.play_control.value += 1
     assert not ex.play_control.playing
+
+
+def test_ticks_queued_behind_a_slow_frame_are_dropped():
+    ex = Dot(display="agg")
+    ex.play_control.interval = 1                      # every frame (a redraw) is slower than 1 ms
+    ex.play_control.playing = True
+    ex.play_control.value += 1
+    x = ex.values["x"]
+    ex.play_control.value += 1                        # arrives at once: a backlog tick, dropped
+    assert ex.values["x"] == x == pytest.approx(1.0 / ex.play_fps)
 
 
 def test_no_play_without_play_step():

@@ -40,7 +40,7 @@ def test_default_state_is_legible(name):
     assert legibility_problems(ex.fig) == []
 
 
-@pytest.mark.parametrize("name", _params())
+@pytest.mark.parametrize("name", sorted(widgets.EXPLORERS))
 def test_figure_fills_the_notebook_column(name):
     ex = getattr(widgets, name)(display="agg")
     w, h = ex.figure_px
@@ -79,10 +79,10 @@ def test_a_default_off_the_grid_gets_a_finer_step():
 
 def test_layout_is_stable():
     ex = widgets.ProjectiveExplorer(display="image")
-    assert ex.readout.layout.width == "300px"
+    assert ex.readout.layout.width == f"{ex.figure_px[0]}px"
     assert ex.message_box.layout.height == ex.message_box.layout.max_height  # a reserved line
     ex.set(**{"P at infinity": True, "P x": 0.0, "P y": 0.0})                  # refused
-    assert ex.message and ex.message_box.layout.height == "4.2em"
+    assert ex.message and ex.message_box.layout.height == "2.8em"
 
 
 # -------------------------------------------------------------- states the explorer tests visit

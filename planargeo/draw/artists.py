@@ -74,6 +74,15 @@ def _mat(x, name: str) -> np.ndarray:
 def point_xy(p) -> np.ndarray | None:
     """Euclidean ``(x, y)`` of a homogeneous point, or None for an ideal point.
 
+    Parameters
+    ----------
+    p : array_like (3,)
+        Homogeneous point ``[y, -x, 1]`` (times a weight).
+
+    Returns
+    -------
+    numpy.ndarray or None
+
     Examples
     --------
     >>> point_xy([2.0, -1.0, 1.0])
@@ -98,6 +107,17 @@ def clip_line(line, box) -> np.ndarray | None:
     ``box = (x0, x1, y0, y1)``.  Returns None if the line misses the box or is
     the line at infinity.  The points satisfy ``tz + y fx - x fy = 0`` (4.27)
     and lie on the boundary of the box.
+
+    Parameters
+    ----------
+    line : array_like (3,)
+        ``[fx, fy, tz]``.
+    box : (float, float, float, float)
+        ``(x0, x1, y0, y1)``.
+
+    Returns
+    -------
+    numpy.ndarray or None
 
     Examples
     --------
@@ -295,6 +315,21 @@ class _Base(martist.Artist):
         self._ha, self._va = "left", "bottom"
         self._add_child(self._text)
 
+    def set(self, **kwargs):
+        """Set several properties at once, as :meth:`matplotlib.artist.Artist.set` does.
+
+        Parameters
+        ----------
+        **kwargs
+            ``property=value`` for each ``set_property`` method (e.g. ``visible=False``).
+
+        Returns
+        -------
+        list
+            What each setter returned.
+        """
+        return martist.Artist.set(self, **kwargs)
+
     def _add_child(self, child):
         self._children.append(child)
         return child
@@ -426,6 +461,11 @@ class PointArtist(_Base):
         Label offset from the pole; default: clear of the glyph, up and right.
     marker, markersize : optional
         Override the role's marker (e.g. :data:`planargeo.draw.style.SUM` for a sum).
+
+    color : color, optional
+        Override the role's colour.
+    zorder : float
+        Drawing order.
     """
 
     def __init__(self, point, *, role="twist", glyph_scale=6.0, glyph=True, text=None,
@@ -456,22 +496,45 @@ class PointArtist(_Base):
 
     # API
     def set_point(self, point):
-        """Store a new homogeneous point; geometry is recomputed at draw time."""
+        """Store a new homogeneous point; geometry is recomputed at draw time.
+
+        Parameters
+        ----------
+        point : array_like (3,) or object with ``.array``
+            ``[vx, vy, w]``.
+        """
         self._p = _vec(point, "point")
         self.stale = True
 
     set_twist = set_point
 
     def set_glyph_scale(self, glyph_scale):
-        """Rotation-glyph radius in points per unit ``|w|`` (clamped to [4, 16])."""
+        """Rotation-glyph radius in points per unit ``|w|`` (clamped to [4, 16]).
+
+        Parameters
+        ----------
+        glyph_scale : float
+            Points per unit ``|w|``.
+        """
         self._glyph_scale = float(glyph_scale)
         self.stale = True
 
     def get_point(self) -> np.ndarray:
+        """The stored homogeneous point.
+
+        Returns
+        -------
+        numpy.ndarray
+        """
         return self._p.copy()
 
     def get_xy(self):
-        """Euclidean pole, or None for an ideal point."""
+        """Euclidean pole, or None for an ideal point.
+
+        Returns
+        -------
+        numpy.ndarray or None
+        """
         return point_xy(self._p)
 
     def _update_geometry(self, renderer):
@@ -591,6 +654,18 @@ class LineArtist(_Base):
         Where the label's ``text_offset`` (points) starts: the arrow's tip
         (default) or its middle, the anchor (a label beside the arrow, which
         stays in view whenever the arrow's middle does).
+
+    text : str, optional
+        Label drawn next to the arrow (or the line).
+    color, linewidth, linestyle : optional
+        Override the role's style.
+    zorder : float
+        Drawing order.
+
+    Raises
+    ------
+    InputError
+        An unknown role or ``text_at``, or a line that is not three finite numbers.
     """
 
     default_text_offset = (6.0, 6.0)
@@ -627,23 +702,45 @@ class LineArtist(_Base):
         self._arrow.set_transform(ax.transData)
 
     def set_line(self, line):
-        """Store a new homogeneous line; clipping happens at draw time."""
+        """Store a new homogeneous line; clipping happens at draw time.
+
+        Parameters
+        ----------
+        line : array_like (3,) or object with ``.array``
+            ``[fx, fy, tz]``.
+        """
         self._l = _vec(line, "line")
         self.stale = True
 
     set_wrench = set_line
 
     def set_scale(self, scale):
-        """Force-arrow length in data units per unit force (None: no arrow)."""
+        """Force-arrow length in data units per unit force (None: no arrow).
+
+        Parameters
+        ----------
+        scale : float or None
+        """
         self._scale = None if scale is None else float(scale)
         self.stale = True
 
     def set_anchor(self, anchor):
-        """Where along the line the arrow sits (projected onto the line); None: view centre."""
+        """Where along the line the arrow sits (projected onto the line); None: view centre.
+
+        Parameters
+        ----------
+        anchor : (float, float) or None
+        """
         self._anchor = None if anchor is None else np.asarray(anchor, dtype=float)
         self.stale = True
 
     def get_line(self) -> np.ndarray:
+        """The stored homogeneous line.
+
+        Returns
+        -------
+        numpy.ndarray
+        """
         return self._l.copy()
 
     def get_arrow(self):
@@ -653,6 +750,11 @@ class LineArtist(_Base):
         when it sits at the view centre's foot (no ``anchor``: known only at draw
         time).  With an anchor it needs no axes, so a figure can fit its view to
         the arrow ends before drawing.
+
+        Returns
+        -------
+        tuple of numpy.ndarray or None
+            ``(tail, tip)``.
         """
         fx, fy, _ = self._l
         if self._scale is None or self._anchor is None or (fx == 0.0 and fy == 0.0):
@@ -677,7 +779,12 @@ class LineArtist(_Base):
         return anchor, anchor - half, anchor + half
 
     def get_segment(self):
-        """The clipped endpoints ``(2, 2)`` in the current view (None if not visible)."""
+        """The clipped endpoints ``(2, 2)`` in the current view (None if not visible).
+
+        Returns
+        -------
+        numpy.ndarray or None
+        """
         if self.axes is None:
             return None
         return clip_line(self._l, _view(self.axes))
@@ -788,7 +895,16 @@ UNIT_PATHS = _unit_paths()
 
 
 def euclidean_conic(C) -> np.ndarray:
-    """The conic's matrix acting on Euclidean ``[x, y, 1]`` (``Mᵀ C M``)."""
+    """The conic's matrix acting on Euclidean ``[x, y, 1]`` (``Mᵀ C M``).
+
+    Parameters
+    ----------
+    C : array_like (3, 3)
+
+    Returns
+    -------
+    numpy.ndarray
+    """
     return _M.T @ np.asarray(C, dtype=float) @ _M
 
 
@@ -809,6 +925,17 @@ def conic_geometry(C, *, rtol: float = 1e-9) -> dict:
 
     The class tests use a relative tolerance ``rtol``: this is drawing, not
     arithmetic.
+
+    Parameters
+    ----------
+    C : array_like (3, 3)
+        Symmetric conic matrix (package coordinates).
+    rtol : float
+        Relative tolerance of the class tests.
+
+    Returns
+    -------
+    dict
 
     Examples
     --------
@@ -911,6 +1038,15 @@ class ConicArtist(_Base):
     role : {"conic", "inertia", "construct"}
     mark_center : bool
         Mark the centre (always for imaginary conics).
+
+    text : str, optional
+        Label drawn at the curve.
+    text_offset : (dx, dy) points, optional
+        Label offset (default ``(6, -10)``).
+    color, linewidth : optional
+        Override the role's style.
+    zorder : float
+        Drawing order.
     """
 
     default_text_offset = (6.0, -10.0)
@@ -941,6 +1077,10 @@ class ConicArtist(_Base):
 
         Only the affine transform (or, for a degenerate conic, the lines) changes;
         the unit path is set once per conic class.
+
+        Parameters
+        ----------
+        conic : array_like (3, 3) or object with ``.matrix`` / ``.array``
         """
         self._C = _mat(conic, "conic")
         self._geom = None
@@ -973,6 +1113,12 @@ class ConicArtist(_Base):
             art.set_transform(ax.transData)
 
     def get_conic(self) -> np.ndarray:
+        """The stored conic matrix.
+
+        Returns
+        -------
+        numpy.ndarray
+        """
         return self._C.copy()
 
     @property
@@ -986,7 +1132,13 @@ class ConicArtist(_Base):
         return bool(self._geometry().get("imaginary"))
 
     def get_xy(self) -> np.ndarray:
-        """Euclidean points of the drawn curve (data coordinates, NaN between branches)."""
+        """Euclidean points of the drawn curve (data coordinates, NaN between branches).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``(n, 2)``.
+        """
         g = self._geometry()
         if "affine" not in g:
             return np.zeros((0, 2))
@@ -1075,21 +1227,77 @@ def legend_handles(ax=None) -> list:
 
 # --------------------------------------------------------------------------- plot functions
 def plot_point(point, ax=None, **kw) -> PointArtist:
-    """Add a :class:`PointArtist` to ``ax`` (default: current axes) and return it."""
+    """Add a :class:`PointArtist` to ``ax`` (default: current axes) and return it.
+
+    Parameters
+    ----------
+    point : array_like or planargeo object
+        What to draw.
+    ax : matplotlib.axes.Axes, optional
+        Default: the current axes.
+    **kw
+        Keyword arguments of :class:`PointArtist`.
+
+    Returns
+    -------
+    PointArtist
+    """
     return get_ax(ax).add_artist(PointArtist(point, **kw))
 
 
 def plot_line(line, ax=None, **kw) -> LineArtist:
-    """Add a :class:`LineArtist` to ``ax`` (default: current axes) and return it."""
+    """Add a :class:`LineArtist` to ``ax`` (default: current axes) and return it.
+
+    Parameters
+    ----------
+    line : array_like or planargeo object
+        What to draw.
+    ax : matplotlib.axes.Axes, optional
+        Default: the current axes.
+    **kw
+        Keyword arguments of :class:`LineArtist`.
+
+    Returns
+    -------
+    LineArtist
+    """
     return get_ax(ax).add_artist(LineArtist(line, **kw))
 
 
 def plot_conic(conic, ax=None, **kw) -> ConicArtist:
-    """Add a :class:`ConicArtist` to ``ax`` (default: current axes) and return it."""
+    """Add a :class:`ConicArtist` to ``ax`` (default: current axes) and return it.
+
+    Parameters
+    ----------
+    conic : array_like or planargeo object
+        What to draw.
+    ax : matplotlib.axes.Axes, optional
+        Default: the current axes.
+    **kw
+        Keyword arguments of :class:`ConicArtist`.
+
+    Returns
+    -------
+    ConicArtist
+    """
     return get_ax(ax).add_artist(ConicArtist(conic, **kw))
 
 
 def plot_inertia(inertia, ax=None, **kw) -> ConicArtist:
-    """Draw an inertia as its radius-of-gyration circle (dashed) with the centre of mass."""
+    """Draw an inertia as its radius-of-gyration circle (dashed) with the centre of mass.
+
+    Parameters
+    ----------
+    inertia : array_like or planargeo object
+        What to draw.
+    ax : matplotlib.axes.Axes, optional
+        Default: the current axes.
+    **kw
+        Keyword arguments of :class:`ConicArtist`.
+
+    Returns
+    -------
+    ConicArtist
+    """
     kw.setdefault("role", "inertia")
     return plot_conic(inertia, ax, **kw)

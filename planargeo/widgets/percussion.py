@@ -61,6 +61,20 @@ def parse_polygon(text: str) -> Polygon:
 
     Raises :class:`~planargeo.errors.InvalidPolygonError` naming ``polygon``.
 
+    Parameters
+    ----------
+    text : str
+        Vertices ``"x, y; x, y; ..."``.
+
+    Returns
+    -------
+    shapely.geometry.Polygon
+
+    Raises
+    ------
+    InvalidPolygonError
+        Fewer than three vertices, unreadable numbers, or a self-intersecting outline.
+
     Examples
     --------
     >>> parse_polygon("0, 0; 2, 0; 0, 1").area
@@ -84,7 +98,13 @@ def parse_polygon(text: str) -> Polygon:
 
 
 class PercussionExplorer(Explorer):
-    """Acceleration pole and axis of percussion of a body at rest (thesis 5.4)."""
+    """Acceleration pole and axis of percussion of a body at rest (thesis 5.4).
+
+    Parameters
+    ----------
+    **kw
+        Keyword arguments of :class:`~planargeo.widgets.base.Explorer` (``display``, control values...).
+    """
 
     title = "Inertia and percussion: the sweet spot"
     slug = "percussion"
@@ -103,6 +123,13 @@ class PercussionExplorer(Explorer):
         super().__init__(**kw)
 
     def make_controls(self):
+        """The controls (see the module docstring).
+
+        Returns
+        -------
+        dict
+            ``{name: widget}``.
+        """
         return {
             "pole x": Step(-1.5, 2.0, 0.01, 0.0, "pole x").make("pole x"),
             "pole y": Step(-1.2, 1.2, 0.01, 0.0, "pole y").make("pole y"),
@@ -118,6 +145,13 @@ class PercussionExplorer(Explorer):
         }
 
     def make_artists(self, ax):
+        """Create the artists once (updated in place by :meth:`render`).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+            The explorer's axes.
+        """
         self.body = MplPolygon(np.zeros((3, 2)), closed=True, fc=COLORS["body"], ec="black",
                                alpha=0.6, zorder=2)
         ax.add_patch(self.body)
@@ -218,6 +252,25 @@ class PercussionExplorer(Explorer):
         return shape, Inertia.from_polygon(shape)
 
     def compute(self, v, changed):
+        """The state for the control values ``v``.
+
+        Parameters
+        ----------
+        v : dict
+            Every control's value.
+        changed : set of str
+            The controls that changed.
+
+        Returns
+        -------
+        dict
+            The state drawn by :meth:`render`.
+
+        Raises
+        ------
+        PlanargeoError
+            A state that cannot be shown (refused by the base).
+        """
         shape, I0 = self._shape_inertia(v)
         m = float(v["mass (kg)"])
         # uniform lamina of mass m: the unit-density inertia scaled by m / area (1.65 is linear)
@@ -235,6 +288,18 @@ class PercussionExplorer(Explorer):
         return {"shape": shape, "I": I, "c": c, "a": a, "f": line}
 
     def render(self, st):
+        """Update the artists for the state ``st``; return the readout.
+
+        Parameters
+        ----------
+        st : dict
+            What :meth:`compute` returned.
+
+        Returns
+        -------
+        dict
+            Readout entries.
+        """
         I, c, a, f = st["I"], st["c"], st["a"], st["f"]
         shape = st["shape"]
         self.body.set_xy(np.asarray(shape.exterior.coords))

@@ -51,6 +51,20 @@ CONICS = ("circle", "ellipse", "hyperbola", "parabola", "inertia (imaginary circ
 def make_conic(kind: str, a: float, b: float, tilt_deg: float) -> np.ndarray:
     """The playground's conic: centred at the origin (parabola: vertex), turned by ``tilt``.
 
+    Parameters
+    ----------
+    kind : str
+        One of :data:`CONICS`.
+    a, b : float
+        Semi-axes (circle: radius ``a``; parabola: ``a / 4`` is the focal distance).
+    tilt_deg : float
+        Turn of the axes in degrees.
+
+    Returns
+    -------
+    numpy.ndarray
+        The conic's (3, 3) matrix.
+
     Examples
     --------
     >>> from planargeo.geometry.conics import classify
@@ -111,6 +125,13 @@ class ProjectiveExplorer(Explorer):
              "pole(M)·polar(P)": "—"}
 
     def make_controls(self):
+        """The controls (see the module docstring).
+
+        Returns
+        -------
+        dict
+            ``{name: widget}``.
+        """
         return {
             "P x": Step(-4, 4, 0.05, 2.0, "P x").make("P x"),
             "P y": Step(-4, 4, 0.05, 1.5, "P y").make("P y"),
@@ -129,6 +150,13 @@ class ProjectiveExplorer(Explorer):
         }
 
     def make_artists(self, ax):
+        """Create the artists once (updated in place by :meth:`render`).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+            The explorer's axes.
+        """
         z = np.array([0.0, 0.0, 1.0])
         zl = np.array([1.0, 0.0, 0.0])
         self.conic_art = ax.add_artist(ConicArtist(np.eye(3), role="conic", text="C"))
@@ -222,6 +250,25 @@ class ProjectiveExplorer(Explorer):
         ]
 
     def compute(self, v, changed):
+        """The state for the control values ``v``.
+
+        Parameters
+        ----------
+        v : dict
+            Every control's value.
+        changed : set of str
+            The controls that changed.
+
+        Returns
+        -------
+        dict
+            The state drawn by :meth:`render`.
+
+        Raises
+        ------
+        PlanargeoError
+            A state that cannot be shown (refused by the base).
+        """
         C = make_conic(v["conic"], v["a"], v["b"], v["tilt (deg)"])
         if v["P at infinity"]:
             # the ideal point in the direction (dx, dy): [dy, -dx, 0] (conventions: direction (-b, a))
@@ -259,6 +306,18 @@ class ProjectiveExplorer(Explorer):
         return st
 
     def render(self, st):
+        """Update the artists for the state ``st``; return the readout.
+
+        Parameters
+        ----------
+        st : dict
+            What :meth:`compute` returned.
+
+        Returns
+        -------
+        dict
+            Readout entries.
+        """
         v = self.values
         self.conic_art.set_conic(st["C"])
         self.P_art.set_point(st["P"])
