@@ -15,6 +15,7 @@ from planargeo.draw.layout import legibility_problems
 from planargeo.widgets.chain import OVERLAYS, ChainExplorer
 
 ALL = {k: True for k in OVERLAYS}
+NO_BIAS = {**ALL, "bias terms": False}
 
 
 def _abs_angles(ex):
@@ -111,7 +112,7 @@ def test_play_conserves_energy_and_matches_pinocchio():
     pytest.importorskip("pinocchio")
     from bench import pinocchio_forward
 
-    ex = ChainExplorer(display="agg", links=4, speed=1.0, torque=0.0, fps=25, **ALL)
+    ex = ChainExplorer(display="agg", links=4, speed=1.0, torque=0.0, fps=25, **NO_BIAS)
     e0 = ex.readout_values["total energy (J)"]
     xy0 = ex.links_line.get_xydata().copy()
     es = []
@@ -129,7 +130,7 @@ def test_play_conserves_energy_and_matches_pinocchio():
     assert ex.readout_values["qdd[1]"] == pytest.approx(ref[0], rel=1e-9, abs=1e-9)
     # the overlays follow the frame: the drawn velocity pole is the frame's
     assert ex.v_art[0].get_point() == pytest.approx(w.v[0])
-    assert legibility_problems(ex.fig) == [] or all("∞" in p for p in legibility_problems(ex.fig))
+    assert legibility_problems(ex.fig) == []
 
 
 def test_play_replays_stored_frames_stops_at_the_end_and_restarts_on_a_new_state():
@@ -189,3 +190,15 @@ def test_units_and_round_off():
     assert ex.units["kinetic energy (J)"] == "J" and ex.units["|base force| (N)"] == "N"
     assert ex.readout_strings["kinetic energy (J)"] == "0 J"
     assert ex.readout_strings["qdd[1]"].split()[0] == "0"
+
+
+@pytest.mark.parametrize("links", [
+    1, 2, 4,
+    pytest.param(10, marks=pytest.mark.xfail(
+        strict=False, reason="draw/artists.py (owner: base): the '∞' mark of an ideal point (the bias "
+                             "accelerations κ_i are translations) can sit outside the axes near a corner")),
+])
+def test_bias_terms_are_labelled_and_legible(links):
+    ex = ChainExplorer(display="agg", links=links, speed=1.5, **{"bias terms": True})
+    assert any(s.startswith("$p_") for s in ex._shown_labels)
+    assert legibility_problems(ex.fig) == []

@@ -348,6 +348,7 @@ class ChainExplorer(Explorer):
                                  zorder=20)
         self.labels = LabelPlacer(ax, size=MAX_LABELS + 16, fontsize=LABEL_PT + 1.5)
         self._shown_labels = []
+        self._edge_text = {}          # artists whose own label marks their edge arrow (focus)
 
     def _grow(self, n: int) -> None:
         """Make every overlay pool hold at least ``n`` artists (new ones hidden)."""
@@ -828,6 +829,7 @@ class ChainExplorer(Explorer):
         w = st["w"]
         anchors = {"joint": w.pose[:, :2], "link": w.com}
         reqs, later = [], []
+        edge = {}
         for i in range(n):                 # round-robin over the layers: every kind gets labels early
             for arts, flag, sym, kind, per, color, clear in self._layers:
                 if not self.values[flag]:
@@ -839,6 +841,9 @@ class ChainExplorer(Explorer):
                 if focus is not None and not focused:
                     continue                               # faded: no label
                 xy = self._label_anchor(art, kind, box, anchors[per][i])
+                if kind == "point" and focused and xy is None:
+                    # a focused pole off the view (or at infinity): the artist labels its edge arrow
+                    edge[art] = _sym(sym, i + 1)
                 if xy is None:
                     continue
                 c = clear
@@ -852,6 +857,10 @@ class ChainExplorer(Explorer):
             mid = w.pose[i, :2] if kind == "joint" else 0.5 * (w.pose[i, :2] + self._ends(w)[i])
             reqs.insert(0, (f"{kind} {i + 1}", mid, {"bold": True, "clear": 9.0}))
         obstacles = [self._text_box(t) for t in (self.scale_text, self.time_text) if t.get_text()]
+        for art in set(self._edge_text) | set(edge):
+            if self._edge_text.get(art) != edge.get(art):
+                art.set_text(edge.get(art, ""))
+        self._edge_text = edge
         limit = None if focus is not None else MAX_LABELS
         shown = self.labels.place(reqs + later, obstacles, limit=limit)
         self._shown_labels = [r[0] for r, ok in zip(reqs + later, shown) if ok]
