@@ -545,7 +545,8 @@ class ChainExplorer(Explorer):
 
     def _focus(self, n: int):
         """``("link" | "joint", index)`` of the focus, or None (all; or beyond the chain)."""
-        name = str(self.values.get("focus", "all"))
+        focus = self.controls.get("focus")
+        name = "all" if focus is None else str(focus.value)
         for kind in ("link", "joint"):
             if name.startswith(kind) and name[len(kind):].isdigit():
                 i = int(name[len(kind):]) - 1
@@ -827,12 +828,13 @@ class ChainExplorer(Explorer):
         """Place the labels: the focused element's first (bold), then every other where it fits."""
         n = st["model"].N
         w = st["w"]
+        v = {flag: self.controls[flag].value for flag in OVERLAYS}
         anchors = {"joint": w.pose[:, :2], "link": w.com}
         reqs, later = [], []
         edge = {}
         for i in range(n):                 # round-robin over the layers: every kind gets labels early
             for arts, flag, sym, kind, per, color, clear in self._layers:
-                if not self.values[flag]:
+                if not v[flag]:
                     continue
                 art = arts[i]
                 if not art.get_visible():
