@@ -119,7 +119,7 @@ def test_play_conserves_energy_and_matches_pinocchio():
     for k in range(1, 13):
         ex.advance(1)
         assert ex.message == "" and ex.values["frame"] == k
-        assert ex.readout_values["t (s)"] == pytest.approx(k / 25)
+        assert ex.readout_values["t (s)"] == pytest.approx(k / 25)         # 1× speed: 1 / fps a frame
         es.append(ex.readout_values["total energy (J)"])
         assert ex.readout_values["energy drift (J)"] == pytest.approx(es[-1] - e0)
     assert not np.allclose(ex.links_line.get_xydata(), xy0)                   # it moved
@@ -142,7 +142,13 @@ def test_play_replays_stored_frames_stops_at_the_end_and_restarts_on_a_new_state
     ex.advance(1)
     ex.controls["frame"].value = 1
     assert ex.state["w"].q == pytest.approx(q1, abs=0.0)
-    ex.controls["speed"].value = 0.0                  # a new initial state: trajectory dropped
+    ex.play_speed.value = 0.25                        # slow motion: frames a quarter as far apart
+    ex.controls["frame"].value = 4
+    ex.controls["speed"].value = 0.5                  # a new initial state: trajectory dropped
+    assert ex.values["frame"] == 0 and ex.controls["frame"].max == 0
+    ex.advance(2)
+    assert ex.readout_values["t (s)"] == pytest.approx(2 * 0.25 / 20)
+    ex.controls["speed"].value = 0.0
     assert ex.values["frame"] == 0 and ex.controls["frame"].max == 0
     assert "energy drift (J)" not in ex.readout_values
 

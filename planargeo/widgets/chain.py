@@ -198,7 +198,8 @@ class ChainExplorer(Explorer):
     duration : float
         Seconds of motion Play integrates before it stops (or loops).
     fps : int
-        Frames per simulated second (the frame spacing is ``1 / fps``).
+        Frames per second of Play (at speed 1×, each frame is ``1 / fps`` s of
+        motion) and of :meth:`simulate`.
     **kw
         :class:`~planargeo.widgets.base.Explorer` options and initial control values.
 
@@ -252,6 +253,7 @@ class ChainExplorer(Explorer):
 
     def __init__(self, *, duration: float = 10.0, fps: int = 25, **kw):
         self.duration, self.fps = float(duration), int(fps)
+        self.play_fps = self.fps             # Play at 1×: one frame of 1 / fps s per tick
         self._model_key = None
         self._model = None
         self._traj = None  # the shown state's trajectory: dict t, q, qd (lists), e0, tau
@@ -616,18 +618,20 @@ class ChainExplorer(Explorer):
         return drag
 
     def play_step(self, values: dict, dt: float):
-        """One Play frame: the motion integrated ``dt`` further (frames of ``1 / fps`` s).
+        """One Play frame: the motion integrated ``dt`` seconds further.
 
         The trajectory of the shown initial state is kept on the explorer and
-        extended one frame at a time with :func:`planargeo.simulate.simulate`
-        (DOP853, ``rtol = 1e-8``); frames already computed are replayed.
+        extended frame by frame with :func:`planargeo.simulate.simulate`
+        (DOP853, ``rtol = 1e-8``) over exactly ``dt`` (so Play's speed control
+        gives slow motion too); frames already computed are replayed (the first
+        stored frame at least ``dt`` later).
 
         Parameters
         ----------
         values : dict
             The control values shown.
         dt : float
-            Seconds of motion per Play tick (rounded to whole frames, at least one).
+            Seconds of motion per Play frame.
 
         Returns
         -------
@@ -639,34 +643,35 @@ class ChainExplorer(Explorer):
         SingularConfigurationError
             The integrator stopped (a singular configuration).
         """
-        steps = max(1, int(round(float(dt) * self.fps)))
-        last = int(round(self.duration * self.fps))
-        frame = int(values["frame"])
-        if frame >= last:
-            return None
-        target = min(frame + steps, last)
+        from planargeo.simulate.integrate import simulate
+
         if self._traj is None:
             model, q0, qd0, tau = self.initial_state(values)
             self._traj = {"t": [0.0], "q": [np.array(q0, float)], "qd": [np.array(qd0, float)],
                           "tau": tau, "model": model, "e0": self.state["ke"] + self.state["pe"]}
         traj = self._traj
-        h = 1.0 / self.fps
-        from planargeo.simulate.integrate import simulate
-
-        while len(traj["t"]) <= target:
-            r = simulate(traj["model"], traj["q"][-1], traj["qd"][-1], h, tau=traj["tau"],
-                         progress=False)
+        times = traj["t"]
+        frame = min(int(values["frame"]), len(times) - 1)
+        if times[frame] >= self.duration - 1e-9:
+            return None
+        goal = min(times[frame] + float(dt), self.duration)
+        for j in range(frame + 1, len(times)):               # a stored frame: replayed
+            if times[j] >= goal - 1e-9:
+                return {"frame": j}
+        while times[-1] < goal - 1e-9:
+            r = simulate(traj["model"], traj["q"][-1], traj["qd"][-1], goal - times[-1],
+                         tau=traj["tau"], progress=False)
             if r.status != "ok":
-                raise SingularConfigurationError(f"simulation stopped at t = {traj['t'][-1]:.3g} s: "
+                raise SingularConfigurationError(f"simulation stopped at t = {times[-1]:.3g} s: "
                                                  f"{r.message}")
-            traj["t"].append(len(traj["t"]) * h)
+            times.append(goal)
             traj["q"].append(np.array(r.q[-1]))
             traj["qd"].append(np.array(r.qd[-1]))
         fr = self.controls["frame"]
-        if fr.max < len(traj["t"]) - 1:
-            fr.max = len(traj["t"]) - 1
+        if fr.max < len(times) - 1:
+            fr.max = len(times) - 1
             fr.disabled = False
-        return {"frame": target}
+        return {"frame": len(times) - 1}
 
     def simulate(self, duration: float | None = None) -> None:
         """Integrate the motion from the current state ahead of time (the frames Play and ``frame`` show).
@@ -679,12 +684,14 @@ class ChainExplorer(Explorer):
         try:
             d = self.duration if duration is None else float(duration)
             frame = self.values["frame"]
-            want = int(round(d * self.fps))
-            if self._traj is not None and len(self._traj["t"]) - 1 >= want:
-                return
             old, self.duration = self.duration, max(self.duration, d)
             try:
-                self.play_step(dict(self.values, frame=0), want / self.fps)
+                vals = dict(self.values, frame=0)
+                while True:                                  # frames 1 / fps apart up to d
+                    new = self.play_step(vals, 1.0 / self.fps)
+                    if new is None or self._traj["t"][new["frame"]] >= d - 1e-9:
+                        break
+                    vals["frame"] = new["frame"]
             finally:
                 self.duration = old
             self._changed.add("frame")       # show the trajectory's range (the frame is unchanged)
