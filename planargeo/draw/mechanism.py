@@ -657,7 +657,6 @@ def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pi
 
 #: candidate label spots around an anchor: (direction x, direction y) in units of the clearance
 _SPOTS = ((1, 1), (-1, 1), (1, -1), (-1, -1), (1.3, 0), (-1.3, 0), (0, 1.3), (0, -1.3))
-_SPOTS_ARR = np.array(_SPOTS, dtype=float)
 #: a bold label is also this much larger (mathtext ignores the font weight)
 BOLD_SCALE = 1.2
 
@@ -755,8 +754,9 @@ class LabelPlacer:
         Returns
         -------
         list of bool
-            For each request, whether its label is shown (once the pool is used
-            up, the remaining requests are not).
+            For each request, whether its label is shown (once the pool or
+            ``limit`` is used up, the remaining requests are not; a generator of
+            requests is then no longer consumed, and the list is that much shorter).
         """
         ax = self.ax
         bb = ax.bbox
@@ -770,32 +770,34 @@ class LabelPlacer:
         self.boxes = []
         shown, k = [], 0
         cap = len(self.texts) if limit is None else min(int(limit), len(self.texts))
-        reqs = [r if len(r) == 3 else (r[0], r[1], {}) for r in requests]
-        anchors = np.array([r[1] for r in reqs], dtype=float).reshape(-1, 2)
-        disp = ax.transData.transform(anchors) if len(reqs) else anchors
-        for (text, xy, opt), (dx, dy) in zip(reqs, disp):
+        lazy = not isinstance(requests, (list, tuple))
+        to_disp = ax.transData.transform
+        for r in requests:
+            if k >= cap and lazy:             # a generator is consumed only until the pool is full
+                break
+            text, xy, opt = r if len(r) == 3 else (r[0], r[1], {})
             ok = False
+            dx, dy = (to_disp(np.array([xy], dtype=float))[0] if k < cap else (np.nan, np.nan))
             if k < cap and np.isfinite(dx) and np.isfinite(dy) and text \
                     and lo_x <= dx <= hi_x and lo_y <= dy <= hi_y:
                 bold = bool(opt.get("bold", False))
                 w, h, d = (v * px for v in self._size_pt(text, bold))
                 c = float(opt.get("clear", 5.0)) * px
                 P = placed[:n_placed]
-                U = _SPOTS_ARR
-                ox, oy = U[:, 0] * c, U[:, 1] * c
-                x0 = dx + ox - np.where(U[:, 0] < 0, w, np.where(U[:, 0] == 0, w / 2, 0.0))
-                y0 = dy + oy - np.where(U[:, 1] < 0, h, np.where(U[:, 1] == 0, h / 2, 0.0))
-                fits = (x0 >= lo_x) & (y0 >= lo_y) & (x0 + w <= hi_x) & (y0 + h <= hi_y)
-                if n_placed:
-                    hit = ((x0[:, None] < P[None, :, 2] + m) & (P[None, :, 0] < x0[:, None] + w + m)
-                           & (y0[:, None] < P[None, :, 3] + m) & (P[None, :, 1] < y0[:, None] + h + m))
-                    fits &= ~hit.any(axis=1)
-                free = np.flatnonzero(fits)
-                if len(free):
-                    j = int(free[0])
-                    ux, uy = U[j]
-                    box = (float(x0[j]), float(y0[j]), float(x0[j] + w), float(y0[j] + h))
-                    ox, oy = float(ox[j]), float(oy[j])
+                found = None
+                for ux, uy in _SPOTS:                   # the first free spot, up right first
+                    ox, oy = ux * c, uy * c
+                    x0 = dx + ox - (w if ux < 0 else w / 2 if ux == 0 else 0.0)
+                    y0 = dy + oy - (h if uy < 0 else h / 2 if uy == 0 else 0.0)
+                    if x0 < lo_x or y0 < lo_y or x0 + w > hi_x or y0 + h > hi_y:
+                        continue
+                    if n_placed and ((x0 < P[:, 2] + m) & (P[:, 0] < x0 + w + m)
+                                     & (y0 < P[:, 3] + m) & (P[:, 1] < y0 + h + m)).any():
+                        continue
+                    found = (ux, uy, ox, oy, (x0, y0, x0 + w, y0 + h))
+                    break
+                if found is not None:
+                    ux, uy, ox, oy, box = found
                     t = self.texts[k]
                     k += 1
                     t.set_text(text)

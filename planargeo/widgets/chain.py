@@ -837,42 +837,46 @@ class ChainExplorer(Explorer):
         w = st["w"]
         v = {flag: self.controls[flag].value for flag in OVERLAYS}
         anchors = {"joint": w.pose[:, :2], "link": w.com}
-        reqs, later = [], []
         edge = {}
-        for i in range(n):                 # round-robin over the layers: every kind gets labels early
-            for arts, flag, sym, kind, per, color, clear in self._layers:
-                if not v[flag]:
-                    continue
-                art = arts[i]
-                if not art.get_visible():
-                    continue
-                focused = focus == (per, i)
-                if focus is not None and not focused:
-                    continue                               # faded: no label
-                xy = self._label_anchor(art, kind, box, anchors[per][i])
-                if kind == "point" and focused and xy is None:
-                    # a focused pole off the view (or at infinity): the artist labels its edge arrow
-                    edge[art] = _sym(sym, i + 1)
-                if xy is None:
-                    continue
-                c = clear
-                if kind == "point" and arts in (self.v_art, self.a_art):
-                    gs = 4.0 if arts is self.v_art else 1.0
-                    c = float(np.clip(gs * abs(art.get_point()[2]), 4.0, 16.0)) + 3.0
-                req = (_sym(sym, i + 1), xy, {"color": color, "clear": c, "bold": focused})
-                (reqs if focused else later).append(req)
-        if focus is not None:
+
+        def requests(focused_only: bool):
+            """Label requests, round-robin over the layers (every kind is labelled early)."""
+            for i in range(n):
+                for arts, flag, sym, kind, per, color, clear in self._layers:
+                    if not v[flag]:
+                        continue
+                    art = arts[i]
+                    if not art.get_visible():
+                        continue
+                    focused = focus == (per, i)
+                    if focused_only != focused:
+                        continue                           # with a focus, the rest is faded: no label
+                    xy = self._label_anchor(art, kind, box, anchors[per][i])
+                    if kind == "point" and focused and xy is None:
+                        # a focused pole off the view (or at infinity): its edge arrow is labelled
+                        edge[art] = _sym(sym, i + 1)
+                    if xy is None:
+                        continue
+                    c = clear
+                    if kind == "point" and arts in (self.v_art, self.a_art):
+                        gs = 4.0 if arts is self.v_art else 1.0
+                        c = float(np.clip(gs * abs(art.get_point()[2]), 4.0, 16.0)) + 3.0
+                    yield (_sym(sym, i + 1), xy, {"color": color, "clear": c, "bold": focused})
+
+        obstacles = [self._text_box(t) for t in (self.scale_text, self.time_text) if t.get_text()]
+        if focus is not None:                  # the focused element's labels (few): all of them
             kind, i = focus
             mid = w.pose[i, :2] if kind == "joint" else 0.5 * (w.pose[i, :2] + self._ends(w)[i])
-            reqs.insert(0, (f"{kind} {i + 1}", mid, {"bold": True, "clear": 9.0}))
-        obstacles = [self._text_box(t) for t in (self.scale_text, self.time_text) if t.get_text()]
+            reqs = [(f"{kind} {i + 1}", mid, {"bold": True, "clear": 9.0}), *requests(True)]
+            limit = None
+        else:                                  # everything: as many as MAX_LABELS, lazily
+            reqs, limit = requests(False), MAX_LABELS
+        shown = self.labels.place(reqs, obstacles, limit=limit)
         for art in set(self._edge_text) | set(edge):
             if self._edge_text.get(art) != edge.get(art):
                 art.set_text(edge.get(art, ""))
         self._edge_text = edge
-        limit = None if focus is not None else MAX_LABELS
-        shown = self.labels.place(reqs + later, obstacles, limit=limit)
-        self._shown_labels = [r[0] for r, ok in zip(reqs + later, shown) if ok]
+        self._shown_labels = [t.get_text() for t, _ in zip(self.labels.texts, range(sum(shown)))]
 
     def _text_box(self, text):
         """Display box of a text of the figure (an obstacle for the labels)."""
