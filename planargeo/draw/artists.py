@@ -609,6 +609,10 @@ class PointArtist(_Base):
         out.append(self._arrow)
         if infinite:
             self._inf.set_position(_pyxy(base - t * (L / 2 + 7 * pts)))
+            self._inf.set_horizontalalignment("center")
+            self._inf.set_verticalalignment("center")
+            if _board(self.axes) is not None:  # inside the axes, clear of other labels
+                _settle(self._inf, base - t * (L / 2 + 7 * pts), 7 * pts, renderer, self.axes)
             out.append(self._inf)
         if self._text.get_text() and not self._auto_offset:  # as asked, from the arrow's middle
             self._text.set_position(_pyxy(base + self._text_offset * pts))

@@ -46,6 +46,29 @@ Programmatic use (tests, notebooks)::
         ex.controls["a"].value = 1.0
         ex.controls["b"].value = 2.0
 
+What the base adds to every explorer (issue 13):
+
+* **Readout with units**: :attr:`Explorer.units` names each entry's unit; numbers
+  below ``zero_tol * scale`` (round-off at the scene's size) print as ``0``.
+* **Handles**: :meth:`Explorer.handles` lists :class:`Handle` objects; under
+  ipympl a press within :attr:`Explorer.handle_radius_px` of one drags it, one
+  update per mouse move, with no snapping to the sliders' grid and no echo of
+  the sliders (a browser slider rounds a value to its step and sends it back:
+  that copy is ignored).  :meth:`Explorer.drag` does the same without a mouse.
+* **Play**: an explorer that defines :meth:`Explorer.play_step` gets a Play
+  control with speed and loop; :meth:`Explorer.advance` steps it from Python.
+* **Focus and key**: :meth:`Explorer.focus_options` adds a ``"focus"`` dropdown;
+  every explorer has a ``"key"`` checkbox that shows a legend of the labelled
+  artists.  Both are display controls.
+* **Export**: :meth:`Explorer.export_svg`, :meth:`Explorer.export_png`,
+  :meth:`Explorer.export_animation` (GIF, or MP4 with ffmpeg) write files
+  atomically; the buttons put a download link in the page.
+* **Layout**: controls on the left; on the right a reserved message line, the
+  figure at its native size (at least 560 px wide, shrinking with a narrow output
+  area) and the readout under it, so that nothing moves as values change.
+  Labels of the drawing avoid each other and stay inside the axes
+  (:func:`planargeo.draw.artists.place_labels`).
+
 Examples
 --------
 Two equal and opposite rotations add up to a translation (thesis 4.2); a zero
@@ -1166,7 +1189,8 @@ class Explorer:
             self.fig.canvas.draw()
         else:
             buf = io.BytesIO()
-            self.fig.savefig(buf, format="png", dpi=self.dpi)
+            # fast PNG compression: the image goes to the page once, its encoding is on every update
+            self.fig.savefig(buf, format="png", dpi=self.dpi, pil_kwargs={"compress_level": 1})
             self.image.value = buf.getvalue()
 
     def guarded(self, callback: Callable) -> Callable:
@@ -1552,7 +1576,7 @@ class Explorer:
             self.readout_strings[str(k)] = f"{text} {unit}" if unit else text
             rows.append(
                 f"<tr><td style='padding-right:6px;line-height:1.25;white-space:nowrap;"
-                f"overflow:hidden;text-overflow:ellipsis;max-width:120px' title='{html.escape(str(k))}'>"
+                f"overflow:hidden;text-overflow:ellipsis;max-width:300px' title='{html.escape(str(k))}'>"
                 f"{html.escape(str(k))}</td>"
                 f"<td style='text-align:right;font-family:monospace;line-height:1.25;"
                 f"white-space:nowrap'>{text}</td>"
