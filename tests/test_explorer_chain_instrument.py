@@ -112,7 +112,7 @@ def test_play_conserves_energy_and_matches_pinocchio():
     pytest.importorskip("pinocchio")
     from bench import pinocchio_forward
 
-    ex = ChainExplorer(display="agg", links=4, speed=1.0, torque=0.0, fps=25, **NO_BIAS)
+    ex = ChainExplorer(display="agg", links=4, speed=1.0, torque=0.0, fps=25, **ALL)
     e0 = ex.readout_values["total energy (J)"]
     xy0 = ex.links_line.get_xydata().copy()
     es = []
@@ -154,7 +154,7 @@ def test_play_replays_stored_frames_stops_at_the_end_and_restarts_on_a_new_state
 
 
 def test_focus_options_fade_label_and_zoom():
-    ex = ChainExplorer(display="agg", links=10, torque=2.0, **{**ALL, "bias terms": False})
+    ex = ChainExplorer(display="agg", links=10, torque=2.0, **ALL)
     assert ex.focus_options()[:2] == ["link1", "link2"] and "joint10" in ex.focus_options()
     full = ex.ax.get_xlim()
     assert legibility_problems(ex.fig) == []
@@ -181,9 +181,9 @@ def test_focus_options_fade_label_and_zoom():
 
 
 @pytest.mark.parametrize("links", [1, 4, 10, 20])
-def test_labels_legible_with_all_overlays_but_bias(links):
+def test_labels_legible_with_all_overlays(links):
     """Every label placed clear of the others and inside the axes, at >= 11 px."""
-    ex = ChainExplorer(display="agg", links=links, torque=1.0, **{**ALL, "bias terms": False})
+    ex = ChainExplorer(display="agg", links=links, torque=1.0, **ALL)
     assert legibility_problems(ex.fig) == []
     assert len(ex._shown_labels) >= min(links, 10)
     for k in (5, -45.0):
@@ -198,12 +198,7 @@ def test_units_and_round_off():
     assert ex.readout_strings["qdd[1]"].split()[0] == "0"
 
 
-@pytest.mark.parametrize("links", [
-    1, 2, 4,
-    pytest.param(10, marks=pytest.mark.xfail(
-        strict=False, reason="draw/artists.py (owner: base): the '∞' mark of an ideal point (the bias "
-                             "accelerations κ_i are translations) can sit outside the axes near a corner")),
-])
+@pytest.mark.parametrize("links", [1, 2, 4, 10, 20])
 def test_bias_terms_are_labelled_and_legible(links):
     ex = ChainExplorer(display="agg", links=links, speed=1.5, **{"bias terms": True})
     assert any(s.startswith("$p_") for s in ex._shown_labels)

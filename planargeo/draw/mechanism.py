@@ -16,7 +16,7 @@ from planargeo.draw.style import COLORS, LINEWIDTHS, get_ax
 
 __all__ = ["link_polygon", "draw_body", "draw_link", "draw_pin", "draw_ground", "draw_slider",
            "draw_frame", "draw_com", "draw_joint_split", "transform_shape", "draw_contact",
-           "slider_guide", "draw_model", "LabelPlacer"]
+           "slider_guide", "draw_model", "LabelPlacer", "ScaleBar"]
 
 
 def link_polygon(p, q, width=0.25):
@@ -821,3 +821,72 @@ class LabelPlacer:
             if t.get_visible():
                 t.set_visible(False)
         return shown
+
+
+class ScaleBar:
+    """A length scale drawn in the figure margin under an equal-aspect axes (not over the drawing).
+
+    A bar of a round length (1, 2, 5 × 10ᵏ data units, about a tenth of the
+    view's width or as asked) under the axes' lower left corner, with its
+    length beside it.  Outside the axes, it never meets a label or an edge
+    arrow of the drawing.  Call :meth:`update` after the view changes.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes, optional
+        The axes to measure (default: the current axes).
+    unit : str
+        Unit of the data coordinates, printed after the length.
+    fontsize : float
+        Font size of the length (points).
+
+    Examples
+    --------
+    >>> import matplotlib; matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> _ = ax.set_xlim(0, 20), ax.set_ylim(0, 20)
+    >>> bar = ScaleBar(ax)
+    >>> bar.update(), bar.text.get_text()
+    (2.0, '2 m')
+    >>> plt.close(fig)
+    """
+
+    def __init__(self, ax=None, *, unit: str = "m", fontsize: float = 10.0):
+        from matplotlib.lines import Line2D
+
+        self.ax = get_ax(ax)
+        fig = self.ax.figure
+        self.unit = unit
+        self.bar = Line2D([0.0, 0.0], [0.0, 0.0], color="black", lw=2.0, transform=fig.transFigure)
+        fig.add_artist(self.bar)
+        self.text = fig.text(0.0, 0.0, "", fontsize=fontsize, ha="left", va="center")
+
+    def update(self, length: float | None = None) -> float:
+        """Fit the bar to the current view; returns its length (data units).
+
+        Parameters
+        ----------
+        length : float, optional
+            The length to show (default: a round length near a tenth of the view's width).
+
+        Returns
+        -------
+        float
+        """
+        ax = self.ax
+        ax.apply_aspect()
+        x0, x1 = ax.get_xlim()
+        width = abs(x1 - x0)
+        if length is None:
+            k = 10.0 ** np.floor(np.log10(width / 10.0))
+            length = float(next(m * k for m in (1.0, 2.0, 5.0, 10.0) if m * k >= width / 10.0))
+        pos = ax.get_position()
+        fig = ax.figure
+        h = fig.bbox.height
+        y = pos.y0 - 14.0 / h                                 # 14 px under the axes
+        frac = length / width * pos.width
+        self.bar.set_data([pos.x0, pos.x0 + frac], [y, y])
+        self.text.set_position((pos.x0 + frac + 5.0 / fig.bbox.width, y))
+        self.text.set_text(f"{length:g} {self.unit}")
+        return length

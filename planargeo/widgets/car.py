@@ -38,7 +38,7 @@ from matplotlib.patches import Polygon as MplPolygon
 
 from planargeo import scenes
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist, clip_line, conic_geometry
-from planargeo.draw.mechanism import LabelPlacer
+from planargeo.draw.mechanism import LabelPlacer, ScaleBar
 from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.errors import InputError, SceneError
 from planargeo.simulate.integrate import energy
@@ -180,11 +180,7 @@ class CarExplorer(Explorer):
                          (self.front, "tyre force R₂μ₂ (front)"), (self.drive, "drive force f_A"),
                          (self.bias, "bias force p"), (self.T_line, "active force line T")):
             art.set_label(key)
-        self.scale_bar = Line2D([0.03, 0.03], [0.04, 0.04], color="black", lw=2.0,
-                                transform=ax.transAxes, zorder=20)
-        ax.add_line(self.scale_bar)
-        self.scale_text = ax.text(0.03, 0.055, "5 m", transform=ax.transAxes, fontsize=LABEL_PT + 1.5,
-                                  va="bottom", ha="left", zorder=20)
+        self.scale_bar = ScaleBar(ax, fontsize=LABEL_PT + 1.5)          # in the margin, under the axes
         self.labels = LabelPlacer(ax, size=16, fontsize=LABEL_PT + 1.5)
         self._shown_labels = []
 
@@ -419,10 +415,7 @@ class CarExplorer(Explorer):
             self.ax.set_xlim(*box[:2])
             self.ax.set_ylim(*box[2:])
         self.ax.apply_aspect()
-        width = box[1] - box[0]
-        bar = next(b for b in (1.0, 2.0, 5.0, 10.0, 20.0, 50.0) if b >= width / 12)
-        self.scale_bar.set_xdata([0.03, 0.03 + bar / width])
-        self.scale_text.set_text(f"{bar:g} m")
+        self.scale_bar.update()
         self._label(st, box, cg, icr)
         run = st["run"]
         mu = q["mu"]
@@ -460,6 +453,5 @@ class CarExplorer(Explorer):
         g = conic_geometry(self.inertia.get_conic())
         if "affine" in g:
             reqs.append((r"$I$", (g["affine"] @ [0.7071, -0.7071, 1.0])[:2], {"clear": 4.0}))
-        bb = self.scale_text.get_window_extent(self.fig.canvas.get_renderer())
-        shown = self.labels.place(reqs, [(bb.x0, bb.y0, bb.x1, bb.y1)])
+        shown = self.labels.place(reqs)
         self._shown_labels = [r[0] for r, ok in zip(reqs, shown) if ok]

@@ -46,7 +46,7 @@ from matplotlib.lines import Line2D
 
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist, clip_line, conic_geometry
 from planargeo.draw.layout import fit_view
-from planargeo.draw.mechanism import LabelPlacer
+from planargeo.draw.mechanism import LabelPlacer, ScaleBar
 from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.errors import InputError, SingularConfigurationError
 from planargeo.mechanics.model import Body, Joint, Model
@@ -341,13 +341,8 @@ class ChainExplorer(Explorer):
         ]
         for arts, _flag, sym, *_ in self._layers:     # a key entry per layer (the base's legend)
             arts[0].set_label(f"${_TEX[sym]}_i$")
-        self.scale_bar = Line2D([0.03, 0.03], [0.04, 0.04], color="black", lw=2.0,
-                                transform=ax.transAxes, zorder=20)
-        ax.add_line(self.scale_bar)
-        self.scale_text = ax.text(0.03, 0.055, "1 m", transform=ax.transAxes, fontsize=10,
-                                  va="bottom", ha="left", zorder=20)
-        self.time_text = ax.text(0.02, 0.97, "", transform=ax.transAxes, va="top", fontsize=10,
-                                 zorder=20)
+        self.scale_bar = ScaleBar(ax, fontsize=LABEL_PT + 1.5)          # in the margin, under the axes
+        self.time_text = self.fig.text(0.0, 0.0, "", va="center", ha="right", fontsize=LABEL_PT + 1.5)
         self.labels = LabelPlacer(ax, size=MAX_LABELS + 16, fontsize=LABEL_PT + 1.5)
         self._shown_labels = []
         self._edge_text = {}          # artists whose own label marks their edge arrow (focus)
@@ -815,8 +810,9 @@ class ChainExplorer(Explorer):
             self.focus_joint.set_markersize(14 if focus[0] == "joint" else 8)
         # a 1 m scale bar (in axes fraction of the view's width)
         width = box[1] - box[0]
-        self.scale_bar.set_xdata([0.03, 0.03 + 1.0 / width])
-        self.scale_text.set_text("1 m")
+        self.scale_bar.update(1.0)
+        pos = self.ax.get_position()                       # the time: in the margin, lower right
+        self.time_text.set_position((pos.x1, pos.y0 - 14.0 / self.fig.bbox.height))
         self._label(st, focus, box)
         self._show_trajectory(st["traj"])
         self.time_text.set_text(f"t = {st['t']:.2f} s" if st["traj"] is not None else "")
@@ -863,7 +859,7 @@ class ChainExplorer(Explorer):
                         c = float(np.clip(gs * abs(art.get_point()[2]), 4.0, 16.0)) + 3.0
                     yield (_sym(sym, i + 1), xy, {"color": color, "clear": c, "bold": focused})
 
-        obstacles = [self._text_box(t) for t in (self.scale_text, self.time_text) if t.get_text()]
+        obstacles = []
         if focus is not None:                  # the focused element's labels (few): all of them
             kind, i = focus
             mid = w.pose[i, :2] if kind == "joint" else 0.5 * (w.pose[i, :2] + self._ends(w)[i])
@@ -877,11 +873,6 @@ class ChainExplorer(Explorer):
                 art.set_text(edge.get(art, ""))
         self._edge_text = edge
         self._shown_labels = [t.get_text() for t, _ in zip(self.labels.texts, range(sum(shown)))]
-
-    def _text_box(self, text):
-        """Display box of a text of the figure (an obstacle for the labels)."""
-        bb = text.get_window_extent(self.fig.canvas.get_renderer())
-        return (bb.x0, bb.y0, bb.x1, bb.y1)
 
     @staticmethod
     def _label_anchor(art, kind, box, near=None):
