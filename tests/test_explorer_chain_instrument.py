@@ -15,7 +15,6 @@ from planargeo.draw.layout import legibility_problems
 from planargeo.widgets.chain import OVERLAYS, ChainExplorer
 
 ALL = {k: True for k in OVERLAYS}
-NO_BIAS = {**ALL, "bias terms": False}
 
 
 def _abs_angles(ex):

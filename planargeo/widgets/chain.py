@@ -45,7 +45,6 @@ import numpy as np
 from matplotlib.lines import Line2D
 
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist, clip_line, conic_geometry
-from planargeo.draw.layout import fit_view
 from planargeo.draw.mechanism import LabelPlacer, ScaleBar
 from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.errors import InputError, SingularConfigurationError
@@ -808,9 +807,7 @@ class ChainExplorer(Explorer):
             self.focus_joint.set_data([w.pose[i, 0]], [w.pose[i, 1]])
             self.focus_line.set_linewidth(8.0 if focus[0] == "link" else 3.0)
             self.focus_joint.set_markersize(14 if focus[0] == "joint" else 8)
-        # a 1 m scale bar (in axes fraction of the view's width)
-        width = box[1] - box[0]
-        self.scale_bar.update(1.0)
+        self.scale_bar.update(1.0)                         # a 1 m scale bar under the axes
         pos = self.ax.get_position()                       # the time: in the margin, lower right
         self.time_text.set_position((pos.x1, pos.y0 - 14.0 / self.fig.bbox.height))
         self._label(st, focus, box)
