@@ -120,7 +120,7 @@ def test_play_conserves_energy_and_matches_pinocchio():
         assert ex.message == "" and ex.values["frame"] == k
         assert ex.readout_values["t (s)"] == pytest.approx(k / 25)         # 1× speed: 1 / fps a frame
         es.append(ex.readout_values["total energy (J)"])
-        assert ex.readout_values["energy drift (J)"] == pytest.approx(es[-1] - e0)
+        assert ex.readout_values["energy drift (J)"] == pytest.approx(es[-1] - e0)  # no joint forces
     assert not np.allclose(ex.links_line.get_xydata(), xy0)                   # it moved
     assert np.abs(np.array(es) - e0).max() <= 1e-6 * max(1.0, abs(e0))
     w = ex.state["w"]
@@ -202,3 +202,17 @@ def test_bias_terms_are_labelled_and_legible(links):
     ex = ChainExplorer(display="agg", links=links, speed=1.5, **{"bias terms": True})
     assert any(s.startswith("$p_") for s in ex._shown_labels)
     assert legibility_problems(ex.fig) == []
+
+
+def test_play_energy_drift_counts_the_work_of_the_joint_forces():
+    """With constant joint torques the energy changes by their work τ·(q - q₀); the drift stays ~0."""
+    ex = ChainExplorer(display="agg", links=3, speed=0.5, torque=2.0, fps=25)
+    e0 = ex.readout_values["total energy (J)"]
+    q0 = ex.state["w"].q.copy()
+    ex.advance(25)
+    r = ex.readout_values
+    work = 2.0 * float(np.sum(ex.state["w"].q - q0))                 # by hand: τ = 2 on every joint
+    assert abs(work) > 1.0                                           # the torques did work
+    assert r["work of the joint forces (J)"] == pytest.approx(work, rel=1e-12)
+    assert r["total energy (J)"] - e0 == pytest.approx(work, abs=1e-6 * max(1.0, abs(e0)))
+    assert abs(r["energy drift (J)"]) <= 1e-6 * max(1.0, abs(e0))

@@ -29,8 +29,10 @@ By hand: drag the end of link ``i`` to set joint ``i`` (its angle, or its
 slide for a prismatic joint), keeping the others; drag the base to move the
 whole chain.  Play integrates the motion frame by frame with
 :func:`planargeo.simulate.simulate` (the ``frame`` slider replays the frames
-computed so far); the readout shows the energy and its drift from the first
-frame (the chain is a tree: it has no constraint to drift from).
+computed so far); the readout shows the energy, the work of the (constant)
+joint forces since the first frame and the energy drift ``E − E₀ − W`` (zero
+but for the integration error; the chain is a tree: it has no constraint to
+drift from).
 
 Each state is solved once, by the articulated-body algorithm through the
 scene (:func:`planargeo.scenes.chain.chain_workspace`: one kinematics pass);
@@ -217,6 +219,7 @@ class ChainExplorer(Explorer):
     scale = 1.0
     units = {"links": "—", "frame": "—", "t (s)": "s", "kinetic energy (J)": "J",
              "potential energy (J)": "J", "total energy (J)": "J", "energy drift (J)": "J",
+             "work of the joint forces (J)": "J",
              "|base force| (N)": "N", **{f"qdd[{i}]": "rad/s² or m/s²" for i in range(1, NMAX + 1)}}
 
     def make_controls(self):
@@ -817,8 +820,10 @@ class ChainExplorer(Explorer):
         out = {"links": n, "frame": int(v["frame"]), "t (s)": st["t"],
                "kinetic energy (J)": st["ke"], "potential energy (J)": st["pe"],
                "total energy (J)": e}
-        if st["traj"] is not None:
-            out["energy drift (J)"] = e - st["traj"]["e0"]
+        if st["traj"] is not None:             # the joint forces are constant: work τ·(q - q₀)
+            work = float(np.dot(st["tau"], w.q - st["traj"]["q"][0]))
+            out["work of the joint forces (J)"] = work
+            out["energy drift (J)"] = e - st["traj"]["e0"] - work
         out["qdd[1]"] = float(w.qdd[0])
         out[f"qdd[{n}]"] = float(w.qdd[-1])
         out["|base force| (N)"] = float(np.hypot(*w.f[0, :2]))
