@@ -194,7 +194,9 @@ def test_units_and_round_off():
     ex = ChainExplorer(display="agg", links=1, speed=0.0, angle=-90.0, gravity=False)
     assert ex.units["kinetic energy (J)"] == "J" and ex.units["|base force| (N)"] == "N"
     assert ex.readout_strings["kinetic energy (J)"] == "0 J"
-    assert ex.readout_strings["qdd[1]"].split()[0] == "0"
+    assert ex.readout_strings["qdd[1]"] == "0 rad/s²"
+    ex.set(joints="alternating", links=2)
+    assert ex.readout_strings["qdd[2]"].endswith(" m/s²") and ex.readout_strings["qdd[1]"].endswith(" rad/s²")
 
 
 @pytest.mark.parametrize("links", [1, 2, 4, 10, 20])

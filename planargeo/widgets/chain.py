@@ -72,6 +72,8 @@ SLIDE = (-0.5, 1.0)
 #: the ground under the base: a line and its hatching (NaN-separated strokes), relative to the base
 _GROUND = np.vstack([[[-0.4, -0.1], [0.4, -0.1], [np.nan, np.nan]]]
                     + [[[x, -0.1], [x - 0.1, -0.2], [np.nan, np.nan]] for x in np.linspace(-0.35, 0.4, 6)])
+#: unit of a joint's acceleration by joint kind
+QDD_UNIT = {"revolute": "rad/s²", "prismatic": "m/s²"}
 #: labels shown at most without a focus (each costs ~0.3 ms to draw; the focus labels the rest)
 MAX_LABELS = 24
 #: overlay artists made at the start, per overlay (more when a longer chain is shown)
@@ -220,7 +222,7 @@ class ChainExplorer(Explorer):
     units = {"links": "—", "frame": "—", "t (s)": "s", "kinetic energy (J)": "J",
              "potential energy (J)": "J", "total energy (J)": "J", "energy drift (J)": "J",
              "work of the joint forces (J)": "J",
-             "|base force| (N)": "N", **{f"qdd[{i}]": "rad/s² or m/s²" for i in range(1, NMAX + 1)}}
+             "|base force| (N)": "N"}
 
     def make_controls(self):
         """The controls: chain, state, load, base, per-joint lists, overlays and the frame.
@@ -826,6 +828,9 @@ class ChainExplorer(Explorer):
             out["energy drift (J)"] = e - st["traj"]["e0"] - work
         out["qdd[1]"] = float(w.qdd[0])
         out[f"qdd[{n}]"] = float(w.qdd[-1])
+        # a joint's acceleration: angular (revolute) or linear (prismatic)
+        self.units = {**type(self).units, **{f"qdd[{k + 1}]": QDD_UNIT[model.joints[k].kind]
+                                             for k in (0, n - 1)}}
         out["|base force| (N)"] = float(np.hypot(*w.f[0, :2]))
         return out
 
