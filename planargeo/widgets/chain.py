@@ -40,6 +40,7 @@ the energies are read off that workspace.
 """
 from __future__ import annotations
 
+import itertools
 import math
 
 import ipywidgets as W
@@ -872,8 +873,8 @@ class ChainExplorer(Explorer):
             mid = w.pose[i, :2] if kind == "joint" else 0.5 * (w.pose[i, :2] + self._ends(w)[i])
             reqs = [(f"{kind} {i + 1}", mid, {"bold": True, "clear": 9.0}), *requests(True)]
             limit = None
-        else:                                  # everything: as many as MAX_LABELS, lazily
-            reqs, limit = requests(False), MAX_LABELS
+        else:                                  # everything: as many as MAX_LABELS (from the first few)
+            reqs, limit = list(itertools.islice(requests(False), 3 * MAX_LABELS)), MAX_LABELS
         shown = self.labels.place(reqs, obstacles, limit=limit)
         for art in set(self._edge_text) | set(edge):
             if self._edge_text.get(art) != edge.get(art):
