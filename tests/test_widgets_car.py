@@ -49,11 +49,16 @@ def test_tyre_forces_match_newton_euler(ex, vals):
     assert r["yaw acceleration ω̇ (rad/s²)"] == pytest.approx(wd, rel=1e-9, abs=1e-12)
     assert r["rear tyre force (N)"] == pytest.approx(mu1, rel=1e-9, abs=1e-9)
     assert r["front tyre force (N)"] == pytest.approx(mu2, rel=1e-9, abs=1e-9)
-    # drawn tyre lines: the rear force acts along the rear axle through the rear contact
-    rl = ex.rear.get_line()
+    # drawn tyre lines: the rear force acts along the rear axle through the rear contact, which the
+    # drawing puts at the origin (the ICR at (-d, 0)); the front force through the front contact
+    # (0, L), along the front axle, towards or away from the ICR
+    rl, fl = ex.rear.get_line(), ex.front.get_line()
     d = v["turn radius (m)"]
     assert rl[:2] == pytest.approx([mu1, 0.0], abs=1e-9)
-    assert np.dot([0.0, -d, 1.0], rl) == pytest.approx(0.0, abs=1e-6)
+    assert np.dot([0.0, 0.0, 1.0], rl) == pytest.approx(0.0, abs=1e-6)       # point (0, 0): [y, -x, 1]
+    assert fl[:2] == pytest.approx(mu2 * np.array([d, L]) / math.hypot(d, L), abs=1e-9)
+    for x, y in ((0.0, L), (-d, 0.0)):                                        # front contact, ICR
+        assert np.dot([y, -x, 1.0], fl) == pytest.approx(0.0, abs=1e-6 * (1 + abs(mu2)))
     ex.fig.canvas.draw()
 
 

@@ -16,11 +16,23 @@ from planargeo.draw.style import COLORS, LINEWIDTHS, get_ax
 
 __all__ = ["link_polygon", "draw_body", "draw_link", "draw_pin", "draw_ground", "draw_slider",
            "draw_frame", "draw_com", "draw_joint_split", "transform_shape", "draw_contact",
-           "slider_guide", "draw_model"]
+           "slider_guide", "draw_model", "LabelPlacer", "ScaleBar"]
 
 
 def link_polygon(p, q, width=0.25):
-    """A rounded link (stadium) between Euclidean points ``p`` and ``q`` as a shapely polygon."""
+    """A rounded link (stadium) between Euclidean points ``p`` and ``q`` as a shapely polygon.
+
+    Parameters
+    ----------
+    p, q : (float, float)
+        The link's end points (a single point gives a disc).
+    width : float
+        Width of the link (the diameter of its rounded ends).
+
+    Returns
+    -------
+    shapely.geometry.Polygon
+    """
     from shapely.geometry import LineString, Point as SPoint
 
     p, q = tuple(map(float, p)), tuple(map(float, q))
@@ -29,7 +41,20 @@ def link_polygon(p, q, width=0.25):
 
 
 def transform_shape(shape, pose):
-    """A shapely shape given in a body frame, moved to world by ``pose = (x, y, θ)``."""
+    """A shapely shape given in a body frame, moved to world by ``pose = (x, y, θ)``.
+
+    Parameters
+    ----------
+    shape : shapely geometry
+        The shape in the body frame.
+    pose : (float, float, float)
+        The body frame's origin and angle (radians) in the world.
+
+    Returns
+    -------
+    shapely geometry
+        The shape in world coordinates.
+    """
     from shapely import affinity
 
     x, y, th = (float(v) for v in pose)
@@ -41,6 +66,27 @@ def draw_body(shape, ax=None, *, color=None, alpha=0.35, edgecolor="#1f3a4d", zo
     """Fill a shapely polygon (or multipolygon) in world coordinates; returns the patches.
 
     With ``com`` (x, y) the centre-of-mass symbol (:func:`draw_com`) marks it.
+
+    Parameters
+    ----------
+    shape : shapely Polygon or MultiPolygon
+        The body in world coordinates (holes drawn white).
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    color, edgecolor : color, optional
+        Fill (default: the body colour of :mod:`planargeo.draw.style`) and outline colours.
+    alpha : float
+        Opacity of the fill.
+    zorder : float
+        Drawing order.
+    label : str, optional
+        Text drawn at a point inside the shape.
+    com : (float, float), optional
+        Centre of mass to mark.
+
+    Returns
+    -------
+    list of matplotlib.artist.Artist
     """
     ax = get_ax(ax)
     geoms = getattr(shape, "geoms", [shape])
@@ -66,12 +112,44 @@ def draw_body(shape, ax=None, *, color=None, alpha=0.35, edgecolor="#1f3a4d", zo
 
 
 def draw_link(p, q, ax=None, *, width=0.25, **kw):
-    """A default rounded link between two Euclidean points."""
+    """A default rounded link between two Euclidean points.
+
+    Parameters
+    ----------
+    p, q : (float, float)
+        The link's end points.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    width : float
+        Width of the link.
+    **kw
+        Options of :func:`draw_body`.
+
+    Returns
+    -------
+    list of matplotlib.artist.Artist
+    """
     return draw_body(link_polygon(p, q, width), ax, **kw)
 
 
 def draw_pin(xy, ax=None, *, radius=0.06, zorder=6):
-    """A revolute joint: white disc with a dark rim."""
+    """A revolute joint: white disc with a dark rim.
+
+    Parameters
+    ----------
+    xy : (float, float)
+        The joint.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    radius : float
+        Radius of the disc (data units).
+    zorder : float
+        Drawing order.
+
+    Returns
+    -------
+    matplotlib.patches.Circle
+    """
     ax = get_ax(ax)
     c = Circle(tuple(map(float, xy)), radius, facecolor="white", edgecolor="#222222",
                linewidth=1.0, zorder=zorder)
@@ -80,7 +158,29 @@ def draw_pin(xy, ax=None, *, radius=0.06, zorder=6):
 
 
 def draw_ground(xy, ax=None, *, width=0.8, angle=0.0, depth=0.12, n=7, zorder=1):
-    """A ground line with hatching below it (``angle`` of the line in radians)."""
+    """A ground line with hatching below it (``angle`` of the line in radians).
+
+    Parameters
+    ----------
+    xy : (float, float)
+        Middle of the ground line.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    width : float
+        Length of the line.
+    angle : float
+        Direction of the line (radians); the hatching is on its right-hand side.
+    depth : float
+        Length of the hatching strokes.
+    n : int
+        Number of hatching strokes.
+    zorder : float
+        Drawing order.
+
+    Returns
+    -------
+    list of matplotlib.lines.Line2D
+    """
     ax = get_ax(ax)
     xy = np.asarray(xy, float)
     e = np.array([np.cos(angle), np.sin(angle)])
@@ -95,7 +195,27 @@ def draw_ground(xy, ax=None, *, width=0.8, angle=0.0, depth=0.12, n=7, zorder=1)
 
 
 def draw_slider(xy, direction, ax=None, *, size=(0.35, 0.2), track=1.6, zorder=3):
-    """A prismatic joint: a block on a track along ``direction`` (the track is hatched ground)."""
+    """A prismatic joint: a block on a track along ``direction`` (the track is hatched ground).
+
+    Parameters
+    ----------
+    xy : (float, float)
+        Centre of the block.
+    direction : (float, float)
+        Direction of sliding.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    size : (float, float)
+        Length and height of the block.
+    track : float
+        Length of the track.
+    zorder : float
+        Drawing order of the block.
+
+    Returns
+    -------
+    list of matplotlib.artist.Artist
+    """
     ax = get_ax(ax)
     xy = np.asarray(xy, float)
     d = np.asarray(direction, float)
@@ -113,7 +233,27 @@ def draw_slider(xy, direction, ax=None, *, size=(0.35, 0.2), track=1.6, zorder=3
 
 
 def draw_frame(origin, ax=None, *, angle=0.0, length=0.5, labels=("$x$", "$y$"), color="#222222"):
-    """Coordinate axes arrows at ``origin`` rotated by ``angle``."""
+    """Coordinate axes arrows at ``origin`` rotated by ``angle``.
+
+    Parameters
+    ----------
+    origin : (float, float)
+        Origin of the frame.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    angle : float
+        Direction of the first axis (radians).
+    length : float
+        Length of the arrows.
+    labels : (str, str)
+        Labels of the two axes ("" for none).
+    color : color
+        Colour of the arrows and labels.
+
+    Returns
+    -------
+    list of matplotlib.artist.Artist
+    """
     ax = get_ax(ax)
     o = np.asarray(origin, float)
     out = []
@@ -130,7 +270,23 @@ def draw_frame(origin, ax=None, *, angle=0.0, length=0.5, labels=("$x$", "$y$"),
 
 
 def draw_com(xy, ax=None, *, radius=0.07, zorder=6):
-    """The centre-of-mass symbol (quartered disc)."""
+    """The centre-of-mass symbol (quartered disc).
+
+    Parameters
+    ----------
+    xy : (float, float)
+        The centre of mass.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    radius : float
+        Radius of the symbol (data units).
+    zorder : float
+        Drawing order.
+
+    Returns
+    -------
+    list of matplotlib.patches.Wedge
+    """
     from matplotlib.patches import Wedge
 
     ax = get_ax(ax)
@@ -181,7 +337,37 @@ def draw_joint_split(s, R, A, f, ax=None, *, name="", scale=1.0, anchor=None, ga
     along its line to the nearest place where it stays ``clearance`` (data
     units) away from ``avoid`` and from the arrows placed before it.  The arrow
     ends are ``out[k].get_arrow()`` (to fit a view to them).
-    Returns the artists and the split ``(Q, μ, TQ, Rμ)``.
+
+    Parameters
+    ----------
+    s : array_like (3, k)
+        The joint's motion space.
+    R : array_like (3, 3 - k)
+        Its reaction space.
+    A : array_like (3, 3)
+        The (articulated) inertia of the split.
+    f : array_like (3,)
+        The joint force.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    name : str
+        Subscript of the labels (``f_name``, ``TQ_name``, ``Rμ_name``).
+    scale : float
+        Arrow length per unit force (data units).
+    anchor : (float, float), optional
+        Where the arrows sit along their lines (the foot of this point).
+    gap : float
+        Distance of a label from its arrow (points).
+    avoid : shapely geometry, optional
+        What the arrows keep ``clearance`` away from (e.g. the drawn bodies).
+    clearance : float
+        Free distance around ``avoid`` and earlier arrows (data units).
+
+    Returns
+    -------
+    tuple
+        ``({"f", "active", "reaction"}: LineArtist, (Q, μ, TQ, Rμ))``: the
+        artists and the split.
 
     Examples
     --------
@@ -266,9 +452,25 @@ def slider_guide(contact, pose, body_shape=None, *, clearance=0.04, margin=None)
     in world coordinates: its half-width across the guide), and span body a's
     extent along the guide plus ``margin`` (default: the body's width) at each end.
 
-    Returns ``(p0, e, n, half_width, (s0, s1))``: a point on the guide line, its
-    unit direction, the unit normal (``e`` turned by +90°), the half distance
-    between the walls and the wall span ``p0 + e s`` for ``s`` in ``[s0, s1]``.
+    Parameters
+    ----------
+    contact : planargeo.mechanics.contacts.Contact
+        A slider contact.
+    pose : array_like (N, 3)
+        The bodies' poses.
+    body_shape : shapely geometry, optional
+        Body a as drawn, in world coordinates.
+    clearance : float
+        Gap between the body and each wall.
+    margin : float, optional
+        Wall length beyond the body at each end (default: the body's width).
+
+    Returns
+    -------
+    tuple
+        ``(p0, e, n, half_width, (s0, s1))``: a point on the guide line, its
+        unit direction, the unit normal (``e`` turned by +90°), the half distance
+        between the walls and the wall span ``p0 + e s`` for ``s`` in ``[s0, s1]``.
 
     Examples
     --------
@@ -311,7 +513,26 @@ def draw_contact(contact, pose, ax=None, *, body_shape=None, size=0.08, clearanc
       when the guide is the ground) and a dot at the contact point on body a;
     * ``"weld"``: a filled dark square at the contact point.
 
-    Returns the list of artists.
+    Parameters
+    ----------
+    contact : planargeo.mechanics.contacts.Contact
+        The contact.
+    pose : array_like (N, 3)
+        The bodies' poses.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    body_shape : shapely geometry, optional
+        Body a as drawn (sets a slider's guide walls).
+    size : float
+        Size of the contact's mark (data units).
+    clearance : float
+        Gap between body a and a slider's walls.
+    zorder : float
+        Drawing order of the mark.
+
+    Returns
+    -------
+    list of matplotlib.artist.Artist
     """
     from planargeo.mechanics.contacts import world_point
 
@@ -357,8 +578,37 @@ def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pi
     column of ``s_i``); joints on the ground get hatching.  With ``contacts``
     every contact of ``model.contacts`` is drawn by :func:`draw_contact`
     (slider guides from the contact and the state).
-    Returns a dict of lists of artists (``"bodies"``, ``"joints"``, ``"com"``,
-    ``"contacts"``) and the bodies' world shapes under ``"shapes"``.
+
+    Parameters
+    ----------
+    model : planargeo.mechanics.model.Model
+        The mechanism.
+    data : planargeo.mechanics.model.Data
+        Its kinematics at the state to draw.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (default: the current axes).
+    width : float
+        Width of the default rounded links.
+    labels : bool
+        Label the bodies (their names, or their numbers).
+    ground : bool
+        Hatch the ground under joints on the ground.
+    pin_radius : float
+        Radius of the pins (sets the size of the other joint marks).
+    show_com : bool
+        Mark each body's centre of mass.
+    alpha : float
+        Opacity of the bodies' fill.
+    names : list of str, optional
+        Body labels (instead of the model's names).
+    contacts : bool
+        Draw the model's contacts.
+
+    Returns
+    -------
+    dict
+        Lists of artists under ``"bodies"``, ``"joints"``, ``"com"``,
+        ``"contacts"``, and the bodies' world shapes under ``"shapes"``.
     """
     from shapely.ops import unary_union
 
@@ -403,3 +653,240 @@ def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pi
             out["contacts"] += draw_contact(c, pose, ax, body_shape=out["shapes"][c.a],
                                             size=1.6 * pin_radius)
     return out
+
+
+#: candidate label spots around an anchor: (direction x, direction y) in units of the clearance
+_SPOTS = ((1, 1), (-1, 1), (1, -1), (-1, -1), (1.3, 0), (-1.3, 0), (0, 1.3), (0, -1.3))
+#: a bold label is also this much larger (mathtext ignores the font weight)
+BOLD_SCALE = 1.2
+
+
+class LabelPlacer:
+    """A fixed pool of labels placed beside their anchors without overlapping each other.
+
+    The labels are ``Annotation`` texts (data anchor, offset in points) created
+    once; :meth:`place` shows the requested ones where they fit and hides the
+    rest of the pool, so that an explorer can label every element on each
+    frame without creating artists.  A label is tried at eight spots around its
+    anchor (up right first); a spot is taken only when the label's box lies
+    inside the axes (with ``margin_px``) and clear of the labels placed before it
+    and of the ``obstacles``.  Requests are placed in the order given (put the
+    most important first); a label that fits nowhere is not shown.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes, optional
+        Axes to label (default: the current axes).
+    size : int
+        Number of labels in the pool.
+    fontsize : float
+        Font size in points (11 px on screen at 90 dpi needs 8.8 pt or more).
+    zorder : float
+        Drawing order of the labels (above the drawing).
+    margin_px : float
+        Free pixels kept between labels and between a label and the axes edge.
+
+    Examples
+    --------
+    >>> import matplotlib; matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> _ = ax.set_xlim(0, 4), ax.set_ylim(0, 4)
+    >>> labels = LabelPlacer(ax, size=4)
+    >>> labels.place([("P", (1.0, 1.0)), ("Q", (1.0, 1.0)), ("R", (9.0, 9.0))])
+    [True, True, False]
+    >>> [t.get_text() for t in labels.texts if t.get_visible()]
+    ['P', 'Q']
+    >>> plt.close(fig)
+    """
+
+    def __init__(self, ax=None, *, size: int = 64, fontsize: float = 10.0, zorder: float = 30,
+                 margin_px: float = 2.0):
+        self.ax = get_ax(ax)
+        self.fontsize = float(fontsize)
+        self.margin_px = float(margin_px)
+        self.texts = []
+        for _ in range(int(size)):
+            t = self.ax.annotate("", xy=(0.0, 0.0), xytext=(0.0, 0.0), textcoords="offset points",
+                                 fontsize=self.fontsize, zorder=zorder, annotation_clip=False)
+            t.set_visible(False)
+            self.texts.append(t)
+        self._sizes: dict = {}
+        #: display boxes ``(x0, y0, x1, y1)`` of the labels shown by the last :meth:`place`
+        self.boxes: list[tuple[float, float, float, float]] = []
+
+    def _size_pt(self, text: str, bold: bool) -> tuple[float, float, float]:
+        """Width, height and descent of ``text`` in points (measured once per text)."""
+        key = (text, bold)
+        if key not in self._sizes:
+            from matplotlib.font_manager import FontProperties
+
+            canvas = self.ax.figure.canvas
+            renderer = canvas.get_renderer() if hasattr(canvas, "get_renderer") else None
+            prop = FontProperties(size=self.fontsize * (BOLD_SCALE if bold else 1.0),
+                                  weight="bold" if bold else "normal")
+            if renderer is None:                              # no renderer: a generous estimate
+                w, h, d = 0.62 * self.fontsize * len(text), 1.25 * self.fontsize, 0.25 * self.fontsize
+            else:
+                k = 72.0 / renderer.dpi
+                math = text.count("$") >= 2 and text.count("$") % 2 == 0
+                w, h, d = (k * v for v in renderer.get_text_width_height_descent(text, prop, ismath=math))
+                # a line of text is at least as tall as "lp" (matplotlib's text layout)
+                h = max(h, k * renderer.get_text_width_height_descent("lp", prop, ismath=False)[1])
+            self._sizes[key] = (w, h, d)
+        return self._sizes[key]
+
+    def place(self, requests, obstacles=(), limit: int | None = None) -> list[bool]:
+        """Show the labels of ``requests`` where they fit; returns which ones are shown.
+
+        Parameters
+        ----------
+        requests : iterable of tuple
+            ``(text, (x, y))`` or ``(text, (x, y), options)`` with the anchor in
+            data coordinates and ``options`` a dict of: ``color``, ``bold``
+            (bool: bold and 1.2 times larger), ``alpha``, ``clear`` (points kept free around the anchor,
+            e.g. a rotation glyph's radius; default 5).
+        obstacles : iterable of (x0, y0, x1, y1)
+            Display (pixel) boxes no label may cover (a scale bar, a title).
+        limit : int, optional
+            Show at most this many labels (each costs drawing time).
+
+        Returns
+        -------
+        list of bool
+            For each request, whether its label is shown (once the pool or
+            ``limit`` is used up, the remaining requests are not; a generator of
+            requests is then no longer consumed, and the list is that much shorter).
+        """
+        ax = self.ax
+        bb = ax.bbox
+        m = self.margin_px
+        lo_x, lo_y, hi_x, hi_y = bb.x0 + m, bb.y0 + m, bb.x1 - m, bb.y1 - m
+        px = ax.figure.dpi / 72.0
+        placed = np.full((len(self.texts) + 64, 4), np.nan)      # boxes taken (display), grown below
+        obstacles = [tuple(o) for o in obstacles]
+        placed[:len(obstacles)] = obstacles if obstacles else placed[:0]
+        n_placed = len(obstacles)
+        self.boxes = []
+        shown, k = [], 0
+        cap = len(self.texts) if limit is None else min(int(limit), len(self.texts))
+        lazy = not isinstance(requests, (list, tuple))
+        to_disp = ax.transData.transform
+        for r in requests:
+            if k >= cap and lazy:             # a generator is consumed only until the pool is full
+                break
+            text, xy, opt = r if len(r) == 3 else (r[0], r[1], {})
+            ok = False
+            dx, dy = (to_disp(np.array([xy], dtype=float))[0] if k < cap else (np.nan, np.nan))
+            if k < cap and np.isfinite(dx) and np.isfinite(dy) and text \
+                    and lo_x <= dx <= hi_x and lo_y <= dy <= hi_y:
+                bold = bool(opt.get("bold", False))
+                w, h, d = (v * px for v in self._size_pt(text, bold))
+                c = float(opt.get("clear", 5.0)) * px
+                P = placed[:n_placed]
+                found = None
+                for ux, uy in _SPOTS:                   # the first free spot, up right first
+                    ox, oy = ux * c, uy * c
+                    x0 = dx + ox - (w if ux < 0 else w / 2 if ux == 0 else 0.0)
+                    y0 = dy + oy - (h if uy < 0 else h / 2 if uy == 0 else 0.0)
+                    if x0 < lo_x or y0 < lo_y or x0 + w > hi_x or y0 + h > hi_y:
+                        continue
+                    if n_placed and ((x0 < P[:, 2] + m) & (P[:, 0] < x0 + w + m)
+                                     & (y0 < P[:, 3] + m) & (P[:, 1] < y0 + h + m)).any():
+                        continue
+                    found = (ux, uy, ox, oy, (x0, y0, x0 + w, y0 + h))
+                    break
+                if found is not None:
+                    ux, uy, ox, oy, box = found
+                    t = self.texts[k]
+                    k += 1
+                    t.set_text(text)
+                    t.xy = (float(xy[0]), float(xy[1]))
+                    t.set_position((ox / px, oy / px))
+                    t.set_horizontalalignment("right" if ux < 0 else "center" if ux == 0 else "left")
+                    t.set_verticalalignment("top" if uy < 0 else "center" if uy == 0 else "bottom")
+                    t.set_color(opt.get("color", "black"))
+                    t.set_fontweight("bold" if bold else "normal")
+                    t.set_fontsize(self.fontsize * (BOLD_SCALE if bold else 1.0))
+                    t.set_alpha(opt.get("alpha"))
+                    t.set_visible(True)
+                    if n_placed == len(placed):
+                        placed = np.vstack([placed, np.full_like(placed, np.nan)])
+                    placed[n_placed] = box
+                    n_placed += 1
+                    self.boxes.append(box)
+                    ok = True
+            shown.append(ok)
+        for t in self.texts[k:]:
+            if t.get_visible():
+                t.set_visible(False)
+        return shown
+
+
+class ScaleBar:
+    """A length scale drawn in the figure margin under an equal-aspect axes (not over the drawing).
+
+    A bar of a round length (1, 2, 5 × 10ᵏ data units, about a tenth of the
+    view's width or as asked) under the axes' lower left corner, with its
+    length beside it.  Outside the axes, it never meets a label or an edge
+    arrow of the drawing.  Call :meth:`update` after the view changes.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes, optional
+        The axes to measure (default: the current axes).
+    unit : str
+        Unit of the data coordinates, printed after the length.
+    fontsize : float
+        Font size of the length (points).
+
+    Examples
+    --------
+    >>> import matplotlib; matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> _ = ax.set_xlim(0, 20), ax.set_ylim(0, 20)
+    >>> bar = ScaleBar(ax)
+    >>> bar.update(), bar.text.get_text()
+    (2.0, '2 m')
+    >>> plt.close(fig)
+    """
+
+    def __init__(self, ax=None, *, unit: str = "m", fontsize: float = 10.0):
+        from matplotlib.lines import Line2D
+
+        self.ax = get_ax(ax)
+        fig = self.ax.figure
+        self.unit = unit
+        self.bar = Line2D([0.0, 0.0], [0.0, 0.0], color="black", lw=2.0, transform=fig.transFigure)
+        fig.add_artist(self.bar)
+        self.text = fig.text(0.0, 0.0, "", fontsize=fontsize, ha="left", va="center")
+
+    def update(self, length: float | None = None) -> float:
+        """Fit the bar to the current view; returns its length (data units).
+
+        Parameters
+        ----------
+        length : float, optional
+            The length to show (default: a round length near a tenth of the view's width).
+
+        Returns
+        -------
+        float
+        """
+        ax = self.ax
+        ax.apply_aspect()
+        x0, x1 = ax.get_xlim()
+        width = abs(x1 - x0)
+        if length is None:
+            k = 10.0 ** np.floor(np.log10(width / 10.0))
+            length = float(next(m * k for m in (1.0, 2.0, 5.0, 10.0) if m * k >= width / 10.0))
+        pos = ax.get_position()
+        fig = ax.figure
+        h = fig.bbox.height
+        y = pos.y0 - 14.0 / h                                 # 14 px under the axes
+        frac = length / width * pos.width
+        self.bar.set_data([pos.x0, pos.x0 + frac], [y, y])
+        self.text.set_position((pos.x0 + frac + 5.0 / fig.bbox.width, y))
+        self.text.set_text(f"{length:g} {self.unit}")
+        return length

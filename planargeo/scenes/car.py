@@ -112,7 +112,8 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
     Raises
     ------
     SceneError
-        For a parameter out of range (e.g. ``outlines`` not a bool).
+        A parameter that is not a finite number (``m``, ``rho``, ``L`` not
+        positive), or ``outlines`` not a boolean.
 
     Examples
     --------

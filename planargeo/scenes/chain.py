@@ -48,8 +48,8 @@ def available_methods() -> dict:
 
     Returns
     -------
-    dict of str to callable
-        Forward-dynamics functions ``f(model, q, qd, tau)``.
+    dict
+        Method name -> ``forward_dynamics(model, q, qd, tau, f_ext=None)``.
 
     Examples
     --------
@@ -71,13 +71,13 @@ def chain_workspace(model, q, qd, tau):
     ----------
     model : Model
         The chain.
-    q, qd, tau : array_like, shape (nq,)
-        One state.
+    q, qd, tau : array_like (nq,)
+        Joint values, speeds and forces.
 
     Returns
     -------
-    Workspace
-        The articulated-body workspace of :func:`planargeo.algorithms.aba.articulated_body`.
+    Data
+        The ABA workspace (poses, poles, forces, articulated inertias, ``qdd``).
 
     Examples
     --------

@@ -4,50 +4,153 @@ The car turns about its instant centre of rotation (ICR) with the steering
 fixed; the two lateral tyre forces are the reactions of that "revolute joint"
 and follow from the projective decomposition ``f = T Q + R μ`` (scene
 ``"car"``).  Controls: speed, turn radius, drive force, position of the
-centre of gravity and radius of gyration.  The tyre forces are drawn as lines
-(through the tyre contacts, along the axles) and listed in the readout.
+centre of gravity, radius of gyration, mass, and the heading (how far the car
+has turned about the ICR).  Every element is labelled with its thesis symbol:
+the joint ``s`` at the ICR (the velocity pole of ``v = s ω``, 6.115), the
+acceleration ``a = s ω̇`` (pole also at the ICR), the centre of gravity
+``G``, the inertia ``I`` (6.117) as its conic, the tyre forces ``R₁μ₁``
+(rear) and ``R₂μ₂`` (front) (6.114, 6.133), the drive force ``f_A`` (6.120),
+the bias force ``p`` (6.119, the centrifugal force through the ICR) and the
+active-force line ``T`` (6.125, the percussion axis of the joint).
+
+By hand: drag the centre of gravity ``G`` along the car (sets ``ε``), the
+front tyre's trailing edge (sets the steering, hence the turn radius ``d``:
+the ICR is where the front axle meets the rear axle line) and the tip of the
+drive-force arrow (sets ``F_A``).
+
+Play drives the car round the corner with the steering fixed: the drive
+force gives the constant yaw acceleration ``ω̇`` of 6.131 (the centrifugal
+bias passes through the ICR, so ``ω̇`` does not depend on ``ω``), the car
+turns by ``Δθ = ω Δt + ω̇ Δt²/2`` and its speed becomes ``(ω + ω̇ Δt) d``;
+the tyre forces follow (6.133: they grow with ``ω²``).  Play stops when the
+speed leaves the speed slider's range (braking to a stop, or top speed).  The
+readout shows the kinetic energy (:func:`planargeo.simulate.energy`), the work
+of the drive force and their difference (the energy drift) over the run.
 """
 from __future__ import annotations
 
 import math
+import textwrap
 
 import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.patches import Polygon as MplPolygon
 
 from planargeo import scenes
-from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
-from planargeo.draw.style import COLORS
-from planargeo.errors import SceneError
-from planargeo.widgets.base import Explorer, Step
+from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist, clip_line, conic_geometry
+from planargeo.draw.mechanism import LabelPlacer, ScaleBar
+from planargeo.draw.style import COLORS, LABEL_PT
+from planargeo.errors import InputError, SceneError
+from planargeo.simulate.integrate import energy
+from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["CarExplorer"]
 
+#: metres of arrow per newton for the tyre, drive and bias forces
+FORCE_SCALE = 1e-3
+#: half track and overhangs of the drawn body, half length of a drawn tyre (m)
+HALF_TRACK, OVERHANG, TYRE = 0.8, 0.7, 0.35
+SPEED, RADIUS, DRIVE, EPS = "speed (m/s)", "turn radius (m)", "drive force (N)", "COM behind front (ε)"
+HEADING = "heading (deg)"
+
+
+def _moves(theta: float, d: float):
+    """The drawing's placement of the scene: turned by ``theta`` about the ICR, rear tyre at the origin.
+
+    A scene point ``p`` is drawn at ``R p + t`` with ``R`` the rotation by
+    ``theta`` and ``t = (-d, 0)`` (at ``theta = 0`` the rear contact ``(d, 0)``
+    is drawn at the origin and stays there when ``d`` changes: drags map the
+    mouse to the car absolutely).  Twists (and points, in the package's
+    coordinates) map by ``V = [[R, -J t], [0, 1]]`` (``J`` the quarter turn),
+    wrenches (and lines) by ``W = V⁻ᵀ``, inertias (and conics) by ``W I Wᵀ``.
+
+    Returns
+    -------
+    tuple
+        ``(R, t, V, W)``.
+    """
+    c, s = math.cos(theta), math.sin(theta)
+    R = np.array([[c, -s], [s, c]])
+    t = np.array([-float(d), 0.0])
+    V = np.eye(3)
+    V[:2, :2] = R
+    V[:2, 2] = -np.array([-t[1], t[0]])
+    return R, t, V, np.linalg.inv(V).T
+
+
+#: half sizes of the view's quarter (m): the view jumps only when the turn radius crosses one
+_VIEW_D = (3.0, 5.0, 8.0, 12.0, 18.0, 27.0, 40.0, 60.0)
+
 
 class CarExplorer(Explorer):
-    """Tyre forces of a car cornering and accelerating (thesis 6.9)."""
+    """Tyre forces of a car cornering and accelerating (thesis 6.9), dragged and driven round the turn.
+
+    Parameters
+    ----------
+    **kw
+        :class:`~planargeo.widgets.base.Explorer` options and initial control values.
+
+    Raises
+    ------
+    InputError
+        An unknown control or a value it does not take.
+    """
 
     title = "Car cornering: tyre forces by projective dynamics"
     slug = "car"
-    figsize = (6.0, 5.4)
-    limits = (-2, 12, -5, 8)
+    figsize = (6.0, 5.6)
+    limits = (-21, 5, -13, 13)
+    grid = False
+    scale = 1.0
+    units = {SPEED: "m/s", HEADING: "deg", "yaw rate ω (rad/s)": "rad/s",
+             "yaw acceleration ω̇ (rad/s²)": "rad/s²", "rear tyre force (N)": "N",
+             "front tyre force (N)": "N", "steering angle (deg)": "deg", "lateral accel. at CG (g)": "g",
+             "kinetic energy (J)": "J", "work of the drive (J)": "J", "energy drift (J)": "J"}
 
     def __init__(self, **kw):
         # the scene function itself (scenes.build checks parameter names on every call)
         self._scene = scenes.get("car")
+        self._run = None          # the Play run shown: kinetic energy at its start, drive work so far
         super().__init__(**kw)
 
     def make_controls(self):
+        """The controls: speed, turn radius, drive force, centre of gravity, gyration, mass, heading.
+
+        Returns
+        -------
+        dict
+            ``{name: widget}``.
+        """
         return {
-            "speed (m/s)": Step(0.0, 30.0, 0.5, 4.0, "speed (m/s)").make("speed"),
-            "turn radius (m)": Step(2.0, 60.0, 0.5, 8.0, "turn radius (m)").make("radius"),
-            "drive force (N)": Step(-6000, 6000, 100, 2000, "drive force (N)").make("drive"),
-            "COM behind front (ε)": Step(0.0, 1.0, 0.01, 0.45, "COM behind front (ε)").make("eps"),
+            SPEED: Step(0.0, 30.0, 0.5, 4.0, SPEED).make("speed"),
+            RADIUS: Step(2.0, 60.0, 0.5, 8.0, RADIUS).make("radius"),
+            DRIVE: Step(-6000, 6000, 100, 2000, DRIVE).make("drive"),
+            EPS: Step(0.0, 1.0, 0.01, 0.45, EPS).make("eps"),
             "radius of gyration (m)": Step(0.3, 3.0, 0.05, 1.2, "radius of gyration (m)").make("rho"),
             "mass (kg)": Step(400, 3000, 50, 1200, "mass (kg)").make("m"),
+            HEADING: Step(0.0, 360.0, 1.0, 0.0, HEADING).make("heading"),
         }
 
+    def setup_axes(self, ax):
+        """Equal-aspect axes without ticks (a scale bar instead).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+            The explorer's axes.
+        """
+        from planargeo.draw.style import setup_axes
+
+        setup_axes(ax, self.limits, axis_off=True)
+
     def make_artists(self, ax):
+        """Create every artist once: body, tyres, axles, poles, forces, inertia, labels.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+            The explorer's axes.
+        """
         self.body = MplPolygon(np.zeros((4, 2)), closed=True, fc=COLORS["body"], ec="black",
                                alpha=0.5, zorder=2)
         ax.add_patch(self.body)
@@ -57,68 +160,298 @@ class CarExplorer(Explorer):
             ax.add_line(w)
         self.axles = Line2D([], [], color=COLORS["construct"], lw=0.8, ls="--", zorder=1)
         ax.add_line(self.axles)
+        self.path = Line2D([], [], color=COLORS["construct"], lw=0.8, ls=":", zorder=1)
+        ax.add_line(self.path)
         z = np.array([0.0, 0.0, 1.0])
-        self.icr = ax.add_artist(PointArtist(z, role="twist", text="ICR"))
-        self.accel = ax.add_artist(PointArtist(z, role="accel", glyph=False, text="a"))
-        self.cg = Line2D([], [], marker="o", ms=7, mfc="white", mec="black", ls="none", zorder=6)
+        self.icr = ax.add_artist(PointArtist(z, role="twist"))
+        self.accel = ax.add_artist(PointArtist(z, role="accel", glyph_scale=3.0))
+        self.cg = Line2D([], [], marker="o", ms=8, mfc="white", mec="black", mew=1.5, ls="none",
+                         zorder=6, label="centre of gravity G")
         ax.add_line(self.cg)
         self.inertia = ax.add_artist(ConicArtist(np.eye(3), role="inertia"))
-        self.rear = ax.add_artist(LineArtist([1.0, 0, 0], role="reaction", scale=1e-3, text="rear"))
-        self.front = ax.add_artist(LineArtist([1.0, 0, 0], role="reaction", scale=1e-3, text="front"))
-        self.drive = ax.add_artist(LineArtist([1.0, 0, 0], role="wrench", scale=1e-3, text="drive"))
+        self.rear = ax.add_artist(LineArtist([1.0, 0, 0], role="reaction", scale=FORCE_SCALE))
+        self.front = ax.add_artist(LineArtist([1.0, 0, 0], role="reaction", scale=FORCE_SCALE))
+        self.drive = ax.add_artist(LineArtist([1.0, 0, 0], role="wrench", scale=FORCE_SCALE))
+        self.bias = ax.add_artist(LineArtist([1.0, 0, 0], role="momentum", scale=FORCE_SCALE,
+                                             linewidth=1.0))
+        self.T_line = ax.add_artist(LineArtist([1.0, 0, 0], role="construct", scale=None))
+        for art, key in ((self.icr, "ICR: velocity pole v = sω"), (self.accel, "acceleration pole a"),
+                         (self.inertia, "inertia I"), (self.rear, "tyre force R₁μ₁ (rear)"),
+                         (self.front, "tyre force R₂μ₂ (front)"), (self.drive, "drive force f_A"),
+                         (self.bias, "bias force p"), (self.T_line, "active force line T")):
+            art.set_label(key)
+        self.scale_bar = ScaleBar(ax, fontsize=LABEL_PT + 1.5)          # in the margin, under the axes
+        self.labels = LabelPlacer(ax, size=16, fontsize=LABEL_PT + 1.5)
+        self._shown_labels = []
 
+    # -- physics -------------------------------------------------------------------
     def compute(self, v, changed):
-        d = float(v["turn radius (m)"])
-        V = float(v["speed (m/s)"])
+        """The scene at the control values (the car at heading 0), its energy and the Play run.
+
+        Parameters
+        ----------
+        v : dict
+            Control values.
+        changed : set of str
+            Controls that changed.
+
+        Returns
+        -------
+        dict
+            ``res`` (the scene), ``ke`` (kinetic energy), ``run`` (the Play run's
+            start energy and drive work).
+
+        Raises
+        ------
+        SceneError
+            A turn radius that is not positive.
+        """
+        d = float(v[RADIUS])
+        V = float(v[SPEED])
         if d <= 0:
             raise SceneError(f"turn radius must be positive, got {d}")
         res = self._scene(m=float(v["mass (kg)"]), rho=float(v["radius of gyration (m)"]),
-                          d=d, eps=float(v["COM behind front (ε)"]), omega=V / d,
-                          F_A=float(v["drive force (N)"]),
+                          d=d, eps=float(v[EPS]), omega=V / d, F_A=float(v[DRIVE]),
                           outlines=False)   # the outlines are drawn by gallery Fig 6.6, not here
-        return {"res": res}
+        ke = float(energy(res.model, [0.0], [V / d])[0])
+        run = self._run
+        if run is None or run.get("expect") != v:          # not the frame Play asked for: a new run
+            run = {"ke0": ke, "work": 0.0}
+        return {"res": res, "ke": ke, "run": run}
 
+    def play_step(self, values: dict, dt: float):
+        """One Play frame: the car drives ``dt`` seconds further round the turn.
+
+        With the steering fixed, ``ω̇`` (6.131) is constant, so the step is exact:
+        ``ω ← ω + ω̇ dt``, heading ``θ ← θ + ω dt + ω̇ dt²/2``; the drive's work
+        is its moment about the ICR times the angle turned.
+
+        Parameters
+        ----------
+        values : dict
+            The control values shown.
+        dt : float
+            Seconds per frame.
+
+        Returns
+        -------
+        dict or None
+            New speed and heading, or None when the speed would leave its
+            slider's range (stopped, or top speed).
+        """
+        st = self.state
+        res = st["res"]
+        d = res.params["d"]
+        w0 = res.params["omega"]
+        wd = res.quantities["omega_dot"]
+        w1 = w0 + wd * dt
+        sp = self.controls[SPEED]
+        if not sp.min <= w1 * d <= sp.max:
+            return None
+        turn = w0 * dt + 0.5 * wd * dt * dt
+        new = {SPEED: w1 * d, HEADING: (float(values[HEADING]) + math.degrees(turn)) % 360.0}
+        tz = float(res.quantities["f_A"][2])                 # the drive's moment about the ICR
+        run = st["run"]
+        self._run = {"ke0": run["ke0"], "work": run["work"] + tz * turn,
+                     "expect": {**{k: w.value for k, w in self.controls.items()}, **new}}
+        return new
+
+    # -- handles ---------------------------------------------------------------------
+    def _car_frame(self):
+        """``(R, t, res)`` of the state shown: the drawing's placement (:func:`_moves`) and the scene."""
+        res = self.state["res"]
+        th = math.radians(float(self.shown_values.get(HEADING, self.values[HEADING])))
+        R, t, _V, _W = _moves(th, res.params["d"])
+        return R, t, res
+
+    def _to_scene(self, x, y):
+        R, t, res = self._car_frame()
+        return R.T @ (np.array([x, y], float) - t), res
+
+    def _drawn(self, p):
+        R, t, _res = self._car_frame()
+        return tuple(float(c) for c in R @ np.asarray(p, float) + t)
+
+    def handles(self) -> list:
+        """Draggable handles: the centre of gravity, the steering, the ICR and the drive arrow's tip.
+
+        * ``centre of gravity``: along the car (sets ε; it stays on the centre line);
+        * ``steering``: the front tyre's leading edge; the wheel points at the
+          mouse, the ICR moves to where its axle meets the rear axle line
+          (sets the turn radius ``d = L / tan δ``);
+        * ``ICR``: along the rear axle line (sets ``d``);
+        * ``drive``: the tip of the ``f_A`` arrow, along the front wheel (sets ``F_A``).
+
+        Returns
+        -------
+        list of Handle
+        """
+        return [Handle("centre of gravity", self._cg_where, self._cg_drag),
+                Handle("steering", self._steer_where, self._steer_drag),
+                Handle("ICR", self._icr_where, self._icr_drag),
+                Handle("drive", self._drive_where, self._drive_drag)]
+
+    def _cg_where(self):
+        return self._drawn(self.state["res"].extra["cg"])
+
+    def _cg_drag(self, x, y):
+        p, res = self._to_scene(x, y)
+        eps = 1.0 - float(p[1]) / res.params["L"]
+        if not 0.0 <= eps <= 1.0:
+            raise InputError(f"the centre of gravity must lie between the axles (ε from 0 to 1), "
+                             f"the drag asks for ε = {eps:.3g}")
+        return {EPS: eps}
+
+    def _steer_where(self):
+        x = self.state["res"].extra
+        return self._drawn(x["front_contact"] + TYRE * x["front_rolling"])
+
+    def _steer_drag(self, x, y):
+        R, t, res = self._car_frame()
+        front = np.array(self._drawn(res.extra["front_contact"]))
+        r = R.T @ (np.array([x, y], float) - front)          # the wheel's direction, car frame
+        delta = math.atan2(-r[0], r[1])                       # steering angle, to the left
+        if not 0.0 < delta < math.pi / 2:
+            raise InputError(f"the steering angle must turn the car left, between 0 and 90°, got "
+                             f"{math.degrees(delta):.3g}° (straight ahead the ICR is at infinity)")
+        return {RADIUS: res.params["L"] / math.tan(delta)}
+
+    def _icr_where(self):
+        return self._drawn((0.0, 0.0))
+
+    def _icr_drag(self, x, y):
+        R, t, res = self._car_frame()
+        rear = np.array(self._drawn(res.extra["rear_contact"]))
+        d = -float((np.array([x, y], float) - rear) @ (R @ [1.0, 0.0]))
+        if d <= 0.0:
+            raise InputError(f"the ICR must lie left of the rear tyre on its axle line (a left turn), "
+                             f"the drag puts it {-d:.3g} m to its right")
+        return {RADIUS: d}
+
+    def _drive_where(self):
+        res = self.state["res"]
+        x = res.extra
+        return self._drawn(x["front_contact"] + FORCE_SCALE * res.params["F_A"] * x["front_rolling"])
+
+    def _drive_drag(self, x, y):
+        p, res = self._to_scene(x, y)
+        ex = res.extra
+        return {DRIVE: float((p - ex["front_contact"]) @ ex["front_rolling"]) / FORCE_SCALE}
+
+    def figure_message(self, exc: Exception) -> str:
+        """The refusal drawn on the figure, wrapped to stay inside the axes.
+
+        Parameters
+        ----------
+        exc : Exception
+            Why the update was refused.
+
+        Returns
+        -------
+        str
+        """
+        return textwrap.fill(super().figure_message(exc), 40)
+
+    # -- drawing -----------------------------------------------------------------------
     def render(self, st):
+        """Update the drawing (turned by the heading about the ICR) and return the readout.
+
+        Parameters
+        ----------
+        st : dict
+            A state of :meth:`compute`.
+
+        Returns
+        -------
+        dict
+            The readout values.
+        """
         res = st["res"]
         q, x, p = res.quantities, res.extra, res.params
         L, d = p["L"], p["d"]
-        rear, front, cg = x["rear_contact"], x["front_contact"], x["cg"]
-        hw = 0.8  # half track, drawing only
-        self.body.set_xy(np.array([[d - hw, -0.7], [d + hw, -0.7], [d + hw, L + 0.7],
-                                   [d - hw, L + 0.7]]))
-        self.wheels[0].set_data([d, d], [-0.35, 0.35])
-        roll = x["front_rolling"]
-        self.wheels[1].set_data([d - 0.35 * roll[0], d + 0.35 * roll[0]],
-                                [L - 0.35 * roll[1], L + 0.35 * roll[1]])
-        self.axles.set_data([0.0, rear[0], np.nan, 0.0, front[0]], [0.0, rear[1], np.nan, 0.0, front[1]])
-        self.icr.set_point(q["v"])
-        self.accel.set_point(q["a"])
+        th = math.radians(float(self.values[HEADING]))
+        R, tr, V, W = _moves(th, d)
+        rear, front, cg = (R @ x[k] + tr for k in ("rear_contact", "front_contact", "cg"))
+        icr = tr.copy()
+        roll = R @ x["front_rolling"]
+        heading = R @ [0.0, 1.0]
+        body = np.array([[d - HALF_TRACK, -OVERHANG], [d + HALF_TRACK, -OVERHANG],
+                         [d + HALF_TRACK, L + OVERHANG], [d - HALF_TRACK, L + OVERHANG]])
+        self.body.set_xy(body @ R.T + tr)
+        self.wheels[0].set_data(*np.column_stack([rear - TYRE * heading, rear + TYRE * heading]))
+        self.wheels[1].set_data(*np.column_stack([front - TYRE * roll, front + TYRE * roll]))
+        self.axles.set_data([icr[0], rear[0], np.nan, icr[0], front[0]],
+                            [icr[1], rear[1], np.nan, icr[1], front[1]])
+        t = np.linspace(0.0, 2 * np.pi, 121)
+        r_cg = float(np.hypot(*x["cg"]))
+        self.path.set_data(icr[0] + r_cg * np.cos(t), icr[1] + r_cg * np.sin(t))   # G's circle
+        a = V @ q["a"]
+        self.icr.set_point(V @ q["v"])
+        self.accel.set_point(a)
+        self.accel.set_visible(bool(np.any(a)))
         self.cg.set_data([cg[0]], [cg[1]])
-        self.inertia.set_conic(q["I"])
+        self.inertia.set_conic(W @ np.asarray(q["I"]) @ W.T)
         tw = x["tyre_wrenches"]
-        self.rear.set_line(tw[:, 0])
+        self.rear.set_line(W @ tw[:, 0])
         self.rear.set_anchor(rear)
-        self.front.set_line(tw[:, 1])
+        self.front.set_line(W @ tw[:, 1])
         self.front.set_anchor(front)
         fA = np.asarray(q["f_A"])
         self.drive.set_visible(bool(np.any(fA)))
-        if np.any(fA):
-            self.drive.set_line(fA)
-            self.drive.set_anchor(front)
-        # view: the ICR and the car
-        x0, x1 = min(-2.0, d - 4), max(d + 4, 4.0)
-        span = x1 - x0
-        lims = (x0, x1, L / 2 - 0.55 * span, L / 2 + 0.55 * span)
-        if tuple(self.ax.get_xlim()) != lims[:2]:
-            self.ax.set_xlim(*lims[:2])
-            self.ax.set_ylim(*lims[2:])
+        if np.any(fA):                       # the arrow starts at the front contact
+            self.drive.set_line(W @ fA)
+            self.drive.set_anchor(front + 0.5 * FORCE_SCALE * p["F_A"] * roll)
+        pb = np.asarray(q["p"])
+        self.bias.set_visible(bool(np.any(pb[:2])))
+        if np.any(pb[:2]):
+            self.bias.set_line(W @ pb)
+            self.bias.set_anchor(cg + 0.5 * FORCE_SCALE * R @ pb[:2])
+        self.T_line.set_line(W @ np.asarray(q["T"]))
+        # the view: G's circle about the ICR (fixed while the car turns), the rear tyre at the
+        # origin; its size changes only when d crosses one of _VIEW_D
+        D = next((v for v in _VIEW_D if v >= d), _VIEW_D[-1])
+        box = (-2 * D - 5.0, 5.0, -D - 5.0, D + 5.0)
+        if tuple(self.ax.get_xlim()) != box[:2] or tuple(self.ax.get_ylim()) != box[2:]:
+            self.ax.set_xlim(*box[:2])
+            self.ax.set_ylim(*box[2:])
+        self.ax.apply_aspect()
+        self.scale_bar.update()
+        self._label(st, box, cg, icr)
+        run = st["run"]
         mu = q["mu"]
         return {
-            "speed (m/s)": self.values["speed (m/s)"],
+            SPEED: self.values[SPEED],
+            HEADING: self.values[HEADING],
             "yaw rate ω (rad/s)": p["omega"],
             "yaw acceleration ω̇ (rad/s²)": q["omega_dot"],
             "rear tyre force (N)": mu[0],
             "front tyre force (N)": mu[1],
             "steering angle (deg)": math.degrees(x["steer"]),
-            "lateral accel. at CG (g)": p["omega"] ** 2 * float(np.hypot(*cg)) / 9.81,
+            "lateral accel. at CG (g)": p["omega"] ** 2 * float(np.hypot(*x["cg"])) / 9.81,
+            "kinetic energy (J)": st["ke"],
+            "work of the drive (J)": run["work"],
+            "energy drift (J)": st["ke"] - run["ke0"] - run["work"],
         }
+
+    def _label(self, st, box, cg, icr) -> None:
+        """Label every element with its thesis symbol where it fits."""
+        reqs = [(r"$G$", cg, {"clear": 6.0})]
+        if self.accel.get_visible():
+            reqs.append((r"$a$", icr, {"color": COLORS["accel"], "clear": 12.0}))
+        reqs.append((r"$v = s\omega$ (ICR)", icr, {"color": COLORS["twist"], "clear": 12.0}))
+        for art, text, color in ((self.rear, r"$R_1\mu_1$", COLORS["reaction"]),
+                                 (self.front, r"$R_2\mu_2$", COLORS["reaction"]),
+                                 (self.drive, r"$f_A$", COLORS["wrench"]),
+                                 (self.bias, r"$p$", COLORS["momentum"])):
+            if art.get_visible():
+                seg = art.get_arrow()
+                if seg is not None:
+                    reqs.append((text, 0.5 * (seg[0] + seg[1]), {"color": color, "clear": 5.0}))
+        seg = clip_line(self.T_line.get_line(), box)
+        if seg is not None:
+            reqs.append((r"$T$", seg[0] + 0.15 * (seg[1] - seg[0]), {"color": COLORS["construct"]}))
+        g = conic_geometry(self.inertia.get_conic())
+        if "affine" in g:
+            reqs.append((r"$I$", (g["affine"] @ [0.7071, -0.7071, 1.0])[:2], {"clear": 4.0}))
+        shown = self.labels.place(reqs)
+        self._shown_labels = [r[0] for r, ok in zip(reqs, shown) if ok]

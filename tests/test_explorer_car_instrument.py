@@ -1,0 +1,125 @@
+"""CarExplorer as an instrument (issue 13): labels, drags, Play round the turn, energy.
+
+Independent references: the turn radius from the steering angle by the
+Ackermann-free geometry of Fig 6.6 (``d = L / tan δ``, the ICR where the front
+axle meets the rear axle line), ``ε`` from where the centre of gravity is
+dragged, the yaw motion under a constant moment by hand (``ω̇ = M / J`` with
+``J = m (ρ² + |c|²)`` about the ICR and ``M = √(d² + L²) F_A``, 6.120), the tyre
+forces of each Play frame from an independent Newton-Euler solve
+(tests/test_widgets_car.py), the kinetic energy against the drive's work.
+"""
+import math
+
+import numpy as np
+import pytest
+
+from planargeo.draw.layout import legibility_problems
+from planargeo.widgets.car import CarExplorer
+from test_widgets_car import newton_euler
+
+L = 2.6
+EPS, RADIUS, DRIVE, SPEED, HEADING = ("COM behind front (ε)", "turn radius (m)", "drive force (N)",
+                                      "speed (m/s)", "heading (deg)")
+
+
+@pytest.fixture
+def ex():
+    return CarExplorer(display="agg")
+
+
+def test_every_element_labelled_and_legible(ex):
+    for sym in ("$G$", "$a$", r"$v = s\omega$ (ICR)", r"$R_1\mu_1$", r"$R_2\mu_2$", "$f_A$", "$p$",
+                "$T$", "$I$"):
+        assert sym in ex._shown_labels, sym
+    assert legibility_problems(ex.fig) == []
+    assert ex.units["rear tyre force (N)"] == "N" and ex.readout_strings["rear tyre force (N)"].endswith(" N")
+
+
+def test_drag_centre_of_gravity_sets_eps(ex):
+    start = ex.handles()[0].where()
+    assert start == pytest.approx((0.0, (1 - 0.45) * L))          # the rear tyre is drawn at the origin
+    ex.drag("centre of gravity", start, (0.3, 0.8), steps=4)        # sideways is ignored (centre line)
+    assert ex.message == "" and ex.values[EPS] == pytest.approx(1 - 0.8 / L)
+    assert ex.handles()[0].where() == pytest.approx((0.0, 0.8))
+    ex.drag("centre of gravity", (0.0, 0.8), (0.0, 3.5), steps=1)   # ahead of the front axle
+    assert "between the axles" in ex.message and ex.values[EPS] == pytest.approx(1 - 0.8 / L)
+    assert legibility_problems(ex.fig) == []
+
+
+@pytest.mark.parametrize("delta_deg", [10.0, 30.0, 50.0])
+def test_steering_drag_moves_the_icr_to_l_over_tan_delta(ex, delta_deg):
+    delta = math.radians(delta_deg)
+    front = np.array([0.0, L])
+    wheel = np.array([-math.sin(delta), math.cos(delta)])          # turned left by δ
+    ex.drag("steering", ex.handles()[1].where(), front + 0.6 * wheel, steps=5)
+    assert ex.message == ""
+    d = L / math.tan(delta)
+    assert ex.values[RADIUS] == pytest.approx(d, rel=1e-9)
+    assert ex.readout_values["steering angle (deg)"] == pytest.approx(delta_deg)
+    assert ex.handles()[2].where() == pytest.approx((-d, 0.0))     # the ICR moved, the car did not
+    assert legibility_problems(ex.fig) == []
+
+
+def test_steering_right_or_straight_is_refused(ex):
+    shown = dict(ex.readout_values)
+    ex.drag("steering", ex.handles()[1].where(), (0.5, L + 0.5), steps=1)
+    assert "steering angle must turn the car left" in ex.message and ex.readout_values == shown
+    assert legibility_problems(ex.fig) == []
+
+
+def test_icr_drag_sets_the_radius(ex):
+    ex.drag("ICR", ex.handles()[2].where(), (-15.0, 0.4), steps=3)
+    assert ex.message == "" and ex.values[RADIUS] == pytest.approx(15.0)
+    ex.drag("ICR", (-15.0, 0.0), (1.0, 0.0), steps=1)
+    assert "left of the rear tyre" in ex.message and ex.values[RADIUS] == pytest.approx(15.0)
+
+
+def test_drive_drag_sets_the_force_along_the_front_wheel(ex):
+    d = 8.0
+    roll = np.array([-L, d]) / math.hypot(d, L)
+    tip = np.array(ex.handles()[3].where())
+    assert tip == pytest.approx(np.array([0.0, L]) + 2.0 * roll)    # 2000 N at 1 mm/N
+    ex.drag("drive", tip, np.array([0.0, L]) - 1.5 * roll + 0.2 * np.array([roll[1], -roll[0]]), steps=4)
+    assert ex.message == "" and ex.values[DRIVE] == pytest.approx(-1500.0)
+
+
+def test_play_drives_round_the_turn_exactly_and_conserves_energy():
+    ex = CarExplorer(display="agg", **{DRIVE: 1500.0, SPEED: 5.0})
+    m, rho, d, eps = 1200.0, 1.2, 8.0, 0.45
+    J = m * (rho ** 2 + d ** 2 + ((1 - eps) * L) ** 2)              # about the ICR (6.117)
+    M = math.hypot(d, L) * 1500.0                                   # the drive's moment (6.120)
+    wd = M / J
+    w0 = 5.0 / d
+    dt = ex.play_dt
+    for k in range(1, 31):
+        ex.advance(1)
+        t = k * dt
+        assert ex.message == ""
+        assert ex.values[SPEED] == pytest.approx((w0 + wd * t) * d, rel=1e-9)
+        assert ex.values[HEADING] == pytest.approx(math.degrees(w0 * t + 0.5 * wd * t * t) % 360, abs=1e-7)
+        r = ex.readout_values
+        assert r["yaw acceleration ω̇ (rad/s²)"] == pytest.approx(wd, rel=1e-9)
+        assert r["kinetic energy (J)"] == pytest.approx(0.5 * J * (w0 + wd * t) ** 2, rel=1e-9)
+        assert r["energy drift (J)"] == pytest.approx(0.0, abs=1e-9 * r["kinetic energy (J)"])
+    # the tyre forces follow the speed (Newton-Euler at the frame's speed)
+    _, mu1, mu2 = newton_euler(m, rho, d, eps, ex.values[SPEED], 1500.0)
+    assert [r["rear tyre force (N)"], r["front tyre force (N)"]] == pytest.approx([mu1, mu2], rel=1e-9)
+    # the drawing turned about the ICR (-d, 0) by the heading: the rear contact and its force line
+    th = math.radians(ex.values[HEADING])
+    rear = np.array([-d + d * math.cos(th), d * math.sin(th)])
+    assert np.array(ex.wheels[0].get_xydata()).mean(axis=0) == pytest.approx(rear)
+    x, y = rear
+    assert np.dot([y, -x, 1.0], ex.rear.get_line()) == pytest.approx(0.0, abs=1e-6 * abs(mu1))
+    assert legibility_problems(ex.fig) == []
+
+
+def test_play_stops_at_rest_when_braking_and_a_user_change_starts_a_new_run():
+    ex = CarExplorer(display="agg", **{DRIVE: -6000.0, SPEED: 1.0})
+    ex.advance(200)
+    assert ex.values[SPEED] > 0 and ex.values[SPEED] < 1.0 and ex.message == ""
+    n = ex.n_updates
+    ex.advance(5)                                  # the next frame would go backwards: Play ended
+    assert ex.n_updates == n
+    ex.controls[SPEED].value = 6.0                 # a new run: its energy counts from here
+    assert ex.readout_values["work of the drive (J)"] == 0.0
+    assert ex.readout_values["energy drift (J)"] == 0.0
