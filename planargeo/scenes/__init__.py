@@ -51,6 +51,8 @@ _MODULES = [
     "planargeo.scenes.mobility_example",
     "planargeo.scenes.slider_crank",
     "planargeo.scenes.trees",
+    "planargeo.scenes.articulated",
+    "planargeo.scenes.splitting",
 ]
 
 _REGISTRY: dict[str, Callable[..., "SceneResult"]] = {}

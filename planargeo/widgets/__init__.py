@@ -29,6 +29,8 @@ EXPLORERS = {
     "CarExplorer": "car",
     "SliderCrankExplorer": "slider_crank",
     "TreeExplorer": "trees",
+    "ArticulatedExplorer": "articulated",
+    "SplittingExplorer": "splitting",
 }
 __all__ += list(EXPLORERS)
 
