@@ -136,7 +136,7 @@ def test_reset_button():
     assert t.defaults["a"] == -1.0
     t.set(a=0.2, b=0.4)
     t.reset_button.click()
-    assert t.values == {"a": -1.0, "b": 1.0} and t.readout_values["a"] == -1.0
+    assert t.values == {"a": -1.0, "b": 1.0, "key": False} and t.readout_values["a"] == -1.0
 
 
 def test_image_display_renders_png():

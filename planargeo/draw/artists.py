@@ -38,7 +38,7 @@ from planargeo.draw.style import get_ax, style as _style
 __all__ = [
     "PointArtist", "LineArtist", "ConicArtist",
     "point_xy", "clip_line", "conic_geometry", "euclidean_conic",
-    "plot_point", "plot_line", "plot_conic", "plot_inertia",
+    "plot_point", "plot_line", "plot_conic", "plot_inertia", "legend_handles",
 ]
 
 #: A finite pole farther than FAR view diagonals from the view is drawn like an ideal point
@@ -830,6 +830,59 @@ class ConicArtist(_Base):
             self._center.set_data([g["point"][0]], [g["point"][1]])
             out.append(self._center)
         return out
+
+
+# --------------------------------------------------------------------------- legend
+def _proxy(a, label):
+    """A Line2D standing for one of this module's artists in a legend."""
+    if isinstance(a, PointArtist):
+        m = a._marker
+        return Line2D([], [], linestyle="none", marker=m.get_marker(), markersize=m.get_markersize(),
+                      color=a._color, markeredgecolor="white", label=label)
+    line = a._line if isinstance(a, LineArtist) else a._curve
+    return Line2D([], [], color=a._color, linewidth=line.get_linewidth(),
+                  linestyle=line.get_linestyle(), label=label)
+
+
+def legend_handles(ax=None) -> list:
+    """Legend entries of the visible, labelled artists of ``ax`` (this module's by proxy).
+
+    An artist of this module is listed under its label (``set_label``) or, without
+    one, its text; other artists (lines, patches, collections) under their label.
+    Labels starting with ``_`` and empty ones are left out; a label is listed once.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes, optional
+        Default: the current axes.
+
+    Returns
+    -------
+    list of matplotlib.artist.Artist
+        Handles for ``ax.legend(handles=...)``.
+    """
+    from matplotlib.collections import Collection
+    from matplotlib.patches import Patch
+
+    ax = get_ax(ax)
+    out, seen = [], set()
+    for a in ax.get_children():
+        if not a.get_visible():
+            continue
+        label = a.get_label() or ""
+        if isinstance(a, _Base):
+            label = label or a._text.get_text()
+            if not label or label.startswith("_") or label in seen:
+                continue
+            out.append(_proxy(a, label))
+        elif isinstance(a, (Line2D, Patch, Collection)) and a is not ax.patch:
+            if not label or label.startswith("_") or label in seen:
+                continue
+            out.append(a)
+        else:
+            continue
+        seen.add(label)
+    return out
 
 
 # --------------------------------------------------------------------------- plot functions

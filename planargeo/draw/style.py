@@ -113,6 +113,16 @@ RC = {
     "axes.prop_cycle": None,  # filled in below
 }
 
+#: Smallest text on screen, in pixels at the displayed size (explorers and legibility checks).
+MIN_TEXT_PX = 11.0
+#: Explorers: resolution (figure pixels per inch; shown at native size), the narrowest
+#: figure (pixels; the notebook column), tick-label and label sizes (points: at 100 dpi
+#: 8 pt is 11.1 px).
+EXPLORER_DPI = 100
+EXPLORER_MIN_WIDTH_PX = 560
+EXPLORER_TICK_PT = 8.5
+LABEL_PT = 8.5
+
 #: Column width (inches) and default figure size.
 COLUMN_WIDTH = 3.4
 FIGSIZE = (COLUMN_WIDTH, 2.8)

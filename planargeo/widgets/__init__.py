@@ -16,9 +16,44 @@ from __future__ import annotations
 
 import importlib
 
-from planargeo.widgets.base import Explorer, fmt
+from planargeo.widgets.base import Explorer, Handle, fmt
 
-__all__ = ["Explorer", "fmt", "EXPLORERS"]
+__all__ = ["Explorer", "Handle", "fmt", "EXPLORERS", "use_widget_backend"]
+
+
+def use_widget_backend() -> str:
+    """Turn on ``%matplotlib widget`` (ipympl) in a kernel where it works; else stay inline.
+
+    Notebooks call this first: explorers then draw on an interactive canvas
+    (drag the handles with the mouse).  Without a kernel, or where ipympl is
+    missing or fails, nothing changes and explorers render images.
+
+    Returns
+    -------
+    str
+        ``"ipympl"`` when the widget backend is on, ``"image"`` otherwise.
+    """
+    try:
+        from IPython import get_ipython
+    except ImportError:
+        return "image"
+    ip = get_ipython()
+    if ip is None or getattr(ip, "kernel", None) is None:
+        return "image"
+    try:
+        import ipympl  # noqa: F401
+
+        ip.run_line_magic("matplotlib", "widget")
+    except Exception:  # noqa: BLE001 - fall back silently to the inline backend
+        try:
+            ip.run_line_magic("matplotlib", "inline")
+        except Exception:  # noqa: BLE001
+            pass
+        return "image"
+    import matplotlib
+
+    return "ipympl" if "ipympl" in matplotlib.get_backend().lower() or \
+        "widget" in matplotlib.get_backend().lower() else "image"
 
 #: public name -> submodule defining it
 EXPLORERS = {

@@ -64,14 +64,20 @@ rotation is refused with a message, not an exception:
 """
 from __future__ import annotations
 
+import base64
 import contextlib
 import html
 import io
 import itertools
+import math
 import numbers
 import os
+import shutil
+import subprocess
+import tempfile
 import time
 import warnings
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Callable
 
@@ -81,23 +87,39 @@ import numpy as np
 from matplotlib.figure import Figure
 from traitlets import validate
 
-from planargeo.draw.style import setup_axes
+from planargeo.draw.style import EXPLORER_DPI, EXPLORER_MIN_WIDTH_PX, EXPLORER_TICK_PT, setup_axes
 from planargeo.errors import InputError, OutputError, PlanargeoError
 from planargeo.files import atomic_write
 
-__all__ = ["Explorer", "Step", "cached", "check_control", "fmt"]
+__all__ = ["Explorer", "Handle", "Step", "cached", "check_control", "fmt"]
 
 _DISPLAYS = ("auto", "ipympl", "image", "agg")
 _export_counter = itertools.count(1)
 
 
-def fmt(x: Any, digits: int = 4) -> str:
+def fmt(x: Any, digits: int = 4, zero: float = 0.0) -> str:
     """Readable text for a readout value (numbers rounded, ideal values named).
+
+    Parameters
+    ----------
+    x : Any
+        A number, a tuple / array of numbers, a boolean or any object (shown as text).
+    digits : int
+        Significant digits of a number.
+    zero : float
+        Numbers whose magnitude is at most ``zero`` print as ``0`` (round-off).
+
+    Returns
+    -------
+    str
+        HTML-safe text.
 
     Examples
     --------
     >>> fmt(0.123456), fmt(float("inf")), fmt((1.0, -2.5)), fmt(True)
     ('0.1235', '∞', '(1, -2.5)', 'yes')
+    >>> fmt(-1.2e-16, zero=1e-9), fmt((1.0, 3e-12), zero=1e-9)
+    ('0', '(1, 0)')
     """
     if isinstance(x, (bool, np.bool_)):
         return "yes" if x else "no"
@@ -106,7 +128,7 @@ def fmt(x: Any, digits: int = 4) -> str:
     if isinstance(x, (float, np.floating)):
         if not np.isfinite(x):
             return "∞" if x > 0 else ("−∞" if x < 0 else "—")
-        if x == 0:
+        if x == 0 or abs(x) <= zero:
             return "0"
         if abs(x) >= 1e5 or abs(x) < 1e-3:
             return f"{x:.{digits - 1}e}"
@@ -119,7 +141,7 @@ def fmt(x: Any, digits: int = 4) -> str:
             a = np.where(np.isfinite(f) & (np.abs(f) <= 1e-12 * big), 0.0, f)
         except (TypeError, ValueError):
             pass
-        return "(" + ", ".join(fmt(v, digits) for v in a) + ")"
+        return "(" + ", ".join(fmt(v, digits, zero) for v in a) + ")"
     return html.escape(str(x))
 
 
@@ -183,8 +205,20 @@ class Step:
         self.integer = integer
 
     def make(self, name: str) -> FloatSlider | IntSlider:
-        cls, shown = (IntSlider, "d") if self.integer else (FloatSlider, ".3g")
-        return cls(value=self.value, min=self.lo, max=self.hi, step=self.step,
+        """The slider widget (a default off the grid makes the step finer: it must be shown exactly).
+
+        Parameters
+        ----------
+        name : str
+            Description used when the step has no label.
+
+        Returns
+        -------
+        FloatSlider or IntSlider
+        """
+        step = self.step if self.integer else _representable_step(self.value, self.lo, self.step)
+        cls, shown = (IntSlider, "d") if self.integer else (FloatSlider, f".{_decimals(step)}f")
+        return cls(value=self.value, min=self.lo, max=self.hi, step=step,
                    description=self.label or name, continuous_update=True, readout_format=shown,
                    style={"description_width": "initial"}, layout=W.Layout(width="310px"))
 
@@ -237,6 +271,73 @@ def check_control(name: str, widget, value):
     if isinstance(widget, W.Text) and not isinstance(value, str):
         raise InputError(f"{name} must be text, got {value!r}")
     return value
+
+
+@dataclass
+class Handle:
+    """A point of the figure the mouse can drag (under ipympl) and tests can drag (:meth:`Explorer.drag`).
+
+    Parameters
+    ----------
+    name : str
+        Name of the handle (unique within an explorer), used by :meth:`Explorer.drag`.
+    where : callable () -> (x, y) or None
+        The handle's current data position; None when it cannot be dragged now.
+    drag : callable (x, y) -> dict
+        The control values that a drag to the data point ``(x, y)`` means.  It may
+        raise a :class:`~planargeo.errors.PlanargeoError`: the drag step is refused,
+        the last good state stays, and the message names the reason.
+
+    Examples
+    --------
+    >>> h = Handle("P", lambda: (0.0, 0.0), lambda x, y: {"P x": x, "P y": y})
+    >>> h.drag(1.0, 2.0)
+    {'P x': 1.0, 'P y': 2.0}
+    """
+
+    name: str
+    where: Callable[[], Any]
+    drag: Callable[[float, float], dict]
+
+
+def _grid_ok(value: float, lo: float, step: float) -> bool:
+    """True when ``value`` lies on the slider grid ``lo + k step`` (what the front end shows)."""
+    if not step or step <= 0:
+        return True
+    k = (value - lo) / step
+    return abs(k - round(k)) <= 1e-6
+
+
+def _on_grid(value: float, lo: float, step: float) -> float:
+    """``value`` rounded to the grid ``lo + k step`` (as a slider in the browser rounds it)."""
+    if not step or step <= 0:
+        return value
+    return lo + round((value - lo) / step) * step
+
+
+def _representable_step(value: float, lo: float, step: float) -> float:
+    """The slider step, made finer (÷2, ÷5, ÷10, ... ÷1000) until its grid holds ``value``."""
+    for f in (1, 2, 5, 10, 20, 50, 100, 1000):
+        if _grid_ok(value, lo, step / f):
+            return step / f
+    return float(step)
+
+
+def _decimals(step: float) -> int:
+    """Decimal places that show every value of a slider grid of this step."""
+    if not step or step <= 0:
+        return 3
+    d = 0
+    while d < 6 and abs(step * 10 ** d - round(step * 10 ** d)) > 1e-9:
+        d += 1
+    return d
+
+
+def _same(a, b) -> bool:
+    try:
+        return bool(a == b) or (a != a and b != b)
+    except Exception:  # noqa: BLE001 - arrays and other odd values
+        return a is b
 
 
 def _short(text: str) -> str:
@@ -300,9 +401,19 @@ class Explorer:
     slug: str = "explorer"
     #: Figure size (inches) and resolution of the rendered image.
     figsize: tuple[float, float] = (6.0, 5.0)
-    dpi: int = 90
+    dpi: int = EXPLORER_DPI
     #: Controls that only change what is drawn (no recompute when only they change).
+    #: The base adds ``"key"`` (legend) and, with :meth:`focus_options`, ``"focus"``.
     display_controls: tuple[str, ...] = ()
+    #: Unit of each readout entry (shown beside the value; "—": dimensionless, nothing shown).
+    units: dict[str, str] = {}
+    #: Scene length scale: readout numbers below ``zero_tol * scale`` print as 0 (round-off).
+    scale: float = 1.0
+    zero_tol: float = 1e-9
+    #: Frames per second of Play and of exported animations (``dt = speed / play_fps``).
+    play_fps: int = 20
+    #: Pixel radius within which a mouse press picks a handle.
+    handle_radius_px: float = 12.0
 
     def __init__(self, *, display: str = "auto", figsize=None, export_dir=None, **values):
         if display not in _DISPLAYS:
@@ -329,13 +440,33 @@ class Explorer:
         bad = sorted(set(self.display_controls) - set(self.controls))
         if bad:  # a programming error in the subclass, not user input
             raise InputError(f"{type(self).__name__}.display_controls names no control {bad[0]!r}")
+        extra = ["key"]
+        focus = list(self.focus_options())
+        if focus and "focus" not in self.controls:
+            self.controls["focus"] = W.Dropdown(options=["all", *focus], value="all",
+                                                description="focus",
+                                                layout=W.Layout(width="310px"))
+            extra.append("focus")
+        if "key" not in self.controls:
+            self.controls["key"] = W.Checkbox(value=False, description="key (legend)", indent=False)
+        self.display_controls = tuple(self.display_controls) + tuple(
+            k for k in extra if k not in self.display_controls)
         unknown = sorted(set(values) - set(self.controls))
         if unknown:
             raise InputError(f"{type(self).__name__} has no control {unknown[0]!r} "
                              f"(controls: {', '.join(self.controls)})")
         for k, v in values.items():
             self.controls[k].value = check_control(k, self.controls[k], v)
+        for w in self.controls.values():  # a value the slider's grid cannot show: a finer step
+            if isinstance(w, W.FloatSlider) and w.step and not _grid_ok(w.value, w.min, w.step):
+                w.step = _representable_step(w.value, w.min, w.step)
         self.defaults = {k: w.value for k, w in self.controls.items()}
+        self._echo: dict[str, list] = {}
+        self._shadow: dict[str, tuple[float, float]] = {}
+        self._drag_active: Handle | None = None
+        self._extra_handles: list[Handle] = []
+        self._exporting = False
+        self._play_origin: dict[str, Any] | None = None
 
         # figure ----------------------------------------------------------------
         self.fig, self.ax = self._make_figure(figsize or self.figsize)
@@ -347,21 +478,49 @@ class Explorer:
                                       bbox=dict(boxstyle="round", fc="white", ec="#b00020",
                                                 alpha=0.9),
                                       visible=False)
+        self._msg_text._planargeo_overlay = True  # a deliberate box over the figure (legibility)
+        self._legend = None
 
         # widgets ---------------------------------------------------------------
-        self.readout = W.HTML(layout=W.Layout(width="230px"))
-        self.message_box = W.HTML(layout=W.Layout(min_height="1.5em"))
+        self.readout = W.HTML(layout=W.Layout(width="300px", overflow="hidden"))
+        self.readout_strings: dict[str, str] = {}
+        self.message_box = W.HTML(layout=W.Layout(width="300px", height="4.2em", min_height="4.2em",
+                                                  max_height="4.2em", overflow="auto"))
         self.reset_button = W.Button(description="Reset", icon="undo",
-                                     tooltip="Return every control to its default")
-        self.export_button = W.Button(description="Export SVG", icon="download",
-                                      tooltip="Write the current view to an SVG file")
-        self.export_label = W.HTML()
+                                     tooltip="Return every control to its default",
+                                     layout=W.Layout(width="auto"))
+        self.export_button = W.Button(description="SVG", icon="download",
+                                      tooltip="Export the current view as SVG (a download link)",
+                                      layout=W.Layout(width="auto"))
+        self.export_png_button = W.Button(description="PNG", icon="download",
+                                          tooltip="Export the current view as PNG (a download link)",
+                                          layout=W.Layout(width="auto"))
+        self.export_gif_button = W.Button(description="GIF", icon="film",
+                                          tooltip="Export an animation as GIF (a download link)",
+                                          layout=W.Layout(width="auto"))
+        self.export_label = W.HTML(layout=W.Layout(width="310px", min_height="1.6em"))
         self.reset_button.on_click(self.guarded(lambda _b: self.reset()))
-        self.export_button.on_click(self.guarded(lambda _b: self._export_clicked()))
+        self.export_button.on_click(self.guarded(lambda _b: self._export_clicked("svg")))
+        self.export_png_button.on_click(self.guarded(lambda _b: self._export_clicked("png")))
+        self.export_gif_button.on_click(self.guarded(lambda _b: self._export_clicked("gif")))
+        self.has_play = type(self).play_step is not Explorer.play_step
+        self.play_control = self.play_speed = self.play_loop = None
+        if self.has_play:
+            self.play_control = W.Play(value=0, min=0, max=10 ** 9, step=1,
+                                 interval=int(round(1000 / self.play_fps)), description="play",
+                                 show_repeat=False)
+            self.play_speed = W.Dropdown(options=[("¼×", 0.25), ("½×", 0.5), ("1×", 1.0),
+                                                  ("2×", 2.0), ("4×", 4.0)], value=1.0,
+                                         description="speed", layout=W.Layout(width="150px"))
+            self.play_loop = W.Checkbox(value=True, description="loop", indent=False,
+                                        layout=W.Layout(width="80px"))
+            self.play_control.observe(self.guarded(self._play_tick), names="value")
+            self.play_control.observe(self.guarded(self._play_toggled), names="playing")
         for name, w in self.controls.items():
             w.observe(self._make_observer(name), names="value")
         self.widget = self._layout()
         self.connect_mouse()
+        self._connect_handles()
         self._update(initial=True)
 
     # ---------------------------------------------------------------- subclass API
@@ -399,51 +558,66 @@ class Explorer:
         return []
 
     def connect_mouse(self) -> None:
-        """Connect mouse handlers (subclasses; only useful under ipympl)."""
+        """Connect extra mouse handlers (subclasses; :meth:`handles` covers dragging)."""
+
+    def handles(self) -> list[Handle]:
+        """The draggable handles of the figure (default: none).
+
+        Returns
+        -------
+        list of Handle
+        """
+        return []
+
+    def play_step(self, values: dict[str, Any], dt: float) -> dict[str, Any] | None:
+        """Control values of the next Play frame after ``values``, ``dt`` seconds on (None: stop).
+
+        An explorer that overrides this gets Play (with speed and loop) and
+        animation export; the default has no Play.
+
+        Parameters
+        ----------
+        values : dict
+            The shown control values.
+        dt : float
+            Time step (seconds of the scene).
+
+        Returns
+        -------
+        dict or None
+        """
+        return None
+
+    def focus_options(self) -> list[str]:
+        """Names of bodies or joints to focus on (default: none, no "focus" control).
+
+        Returns
+        -------
+        list of str
+        """
+        return []
 
     def connect_drag(self, x_control: str, y_control: str, target: Callable[[], Any],
-                     radius_px: float = 12.0) -> None:
-        """Let the mouse drag the point ``target()`` (data ``(x, y)``) on the figure.
+                     radius_px: float | None = None) -> None:
+        """Let the mouse drag the point ``target()`` (data ``(x, y)``) by setting two controls.
 
-        A press within ``radius_px`` pixels of the point starts a drag; motion
-        sets the two controls (clamped to their ranges, one update per move);
-        release ends it.  Works wherever the canvas emits mouse events
-        (``%matplotlib widget``); harmless elsewhere.
+        Kept for compatibility: it adds a :class:`Handle` named ``"x_control,y_control"``.
+
+        Parameters
+        ----------
+        x_control, y_control : str
+            The controls that take the dragged point's x and y.
+        target : callable () -> (x, y) or None
+            The point's current position.
+        radius_px : float, optional
+            Pick radius in pixels (default :attr:`handle_radius_px`).
         """
-        state = {"on": False}
-
-        def press(ev):
-            if ev.inaxes is not self.ax or ev.button not in (1, None):
-                return
-            xy = target()
-            if xy is None or not np.all(np.isfinite(xy)):
-                return
-            px = self.ax.transData.transform(np.asarray(xy, float))
-            state["on"] = bool(np.hypot(px[0] - ev.x, px[1] - ev.y) <= radius_px)
-
-        def move(ev):
-            if not state["on"] or ev.inaxes is not self.ax or ev.xdata is None:
-                return
-            cx, cy = self.controls[x_control], self.controls[y_control]
-            x = float(np.clip(ev.xdata, cx.min, cx.max))
-            y = float(np.clip(ev.ydata, cy.min, cy.max))
-            self.set(**{x_control: x, y_control: y})
-
-        def release(ev):
-            state["on"] = False
-
-        self._drag_state = state
-        cids = getattr(self, "_mouse_cids", [])
-        cids += [self.fig.canvas.mpl_connect(event, self.guarded(fn)) for event, fn in
-                 (("button_press_event", press), ("motion_notify_event", move),
-                  ("button_release_event", release))]
-        self._mouse_cids = cids
+        if radius_px is not None:
+            self.handle_radius_px = float(radius_px)
+        self._extra_handles.append(Handle(f"{x_control},{y_control}", target,
+                                          lambda x, y: {x_control: x, y_control: y}))
 
     # ---------------------------------------------------------------- public API
-    @property
-    def values(self) -> dict[str, Any]:
-        """Current value of every control."""
-        return {k: w.value for k, w in self.controls.items()}
 
     @property
     def message(self) -> str:
@@ -491,22 +665,156 @@ class Explorer:
                 self.controls[k].value = v
             self._pending = True
 
-    def export_svg(self, path=None) -> Path:
-        """Write the current view to an SVG file, atomically, and return its path.
+    def all_handles(self) -> list[Handle]:
+        """:meth:`handles` and those added by :meth:`connect_drag`.
 
-        The view is rendered to memory first and the file replaced in one step
-        (:func:`planargeo.files.atomic_write`): a failure leaves an existing file
-        as it was.  The file depends on the view only (no date, fixed element ids).
+        Returns
+        -------
+        list of Handle
+        """
+        return list(self.handles()) + list(self._extra_handles)
+
+    def _handle(self, name: str) -> Handle:
+        found = {h.name: h for h in self.all_handles()}
+        if name not in found:
+            raise InputError(f"name must name a handle of {type(self).__name__} "
+                             f"(handles: {', '.join(found) or 'none'}), got {name!r}")
+        return found[name]
+
+    def drag(self, name: str, start, end, steps: int = 10) -> "Explorer":
+        """Drag handle ``name`` from data point ``start`` to ``end`` in ``steps`` moves.
+
+        Works in every display mode, as the mouse does under ipympl: each move is
+        one update (or one refusal, which keeps the last good state and names the
+        reason in :attr:`message`); values are not snapped to the sliders' grid.
+        The handle follows the pointer: move ``k`` asks ``drag`` of the point
+        ``start + (end - start) k / steps``.
+
+        Parameters
+        ----------
+        name : str
+            A handle's name (:meth:`handles`).
+        start, end : (float, float)
+            Data points where the drag starts and ends.
+        steps : int
+            Number of moves (updates).
+
+        Returns
+        -------
+        Explorer
+            ``self``.
 
         Raises
         ------
-        OutputError
-            The file cannot be written (no space, no permission, a folder or a
-            device such as ``/dev/full``, which is never replaced).
+        InputError
+            No handle of that name, the handle cannot be dragged now, a start or
+            end that is not two finite numbers, or ``steps`` not a positive integer.
         """
+        h = self._handle(name)
+        if not isinstance(steps, numbers.Integral) or isinstance(steps, bool) or steps < 1:
+            raise InputError(f"steps must be a positive integer, got {steps!r}")
+        try:
+            a = np.asarray(start, dtype=float).reshape(2)
+            b = np.asarray(end, dtype=float).reshape(2)
+        except (TypeError, ValueError):
+            raise InputError(f"start and end must be points (x, y), got {start!r}, {end!r}") from None
+        if not (np.all(np.isfinite(a)) and np.all(np.isfinite(b))):
+            raise InputError(f"start and end must be finite, got {start!r}, {end!r}")
+        if h.where() is None:
+            raise InputError(f"handle {name!r} cannot be dragged in this state")
+        for k in range(1, steps + 1):
+            p = a + (b - a) * (k / steps)
+            self._drag_to(h, float(p[0]), float(p[1]))
+        return self
+
+    def _drag_to(self, h: Handle, x: float, y: float) -> bool:
+        """One drag move: the handle's control values as one update (clamped to the sliders)."""
+        try:
+            vals = dict(h.drag(x, y))
+        except Exception as exc:  # noqa: BLE001 - a refused drag step, never raised
+            self._refuse(f"drag of {h.name} refused: {self._reason(exc)}", self.figure_message(exc))
+            return False
+        for k, v in vals.items():
+            w = self.controls.get(k)
+            real = isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_))
+            if isinstance(w, (W.FloatSlider, W.IntSlider)) and real and math.isfinite(v):
+                v = min(max(float(v), w.min), w.max)
+                vals[k] = int(round(v)) if isinstance(w, W.IntSlider) else v
+        before = self.n_updates
+        self.set(**vals)
+        return self.n_updates > before
+
+    def advance(self, n_frames: int = 1) -> "Explorer":
+        """Step Play ``n_frames`` frames without a front end (one update per frame).
+
+        Each frame applies :meth:`play_step` of the shown values with
+        ``dt = speed / play_fps``; a None ends the run (with *loop* on, Play
+        itself starts again from where it started), a refused frame ends it too.
+
+        Parameters
+        ----------
+        n_frames : int
+            Number of frames.
+
+        Returns
+        -------
+        Explorer
+            ``self``.
+
+        Raises
+        ------
+        InputError
+            The explorer has no Play (no :meth:`play_step`), or ``n_frames`` is not
+            a non-negative integer.
+        """
+        if not self.has_play:
+            raise InputError(f"{type(self).__name__} has no Play (it does not define play_step)")
+        if not isinstance(n_frames, numbers.Integral) or isinstance(n_frames, bool) or n_frames < 0:
+            raise InputError(f"n_frames must be a non-negative integer, got {n_frames!r}")
+        for _ in range(int(n_frames)):
+            if not self._frame():
+                break
+        return self
+
+    @property
+    def play_dt(self) -> float:
+        """Scene seconds per Play frame: ``speed / play_fps``."""
+        speed = self.play_speed.value if self.play_speed is not None else 1.0
+        return float(speed) / float(self.play_fps)
+
+    def _frame(self) -> bool:
+        """One Play frame; False when Play ends (None from play_step, or a refused frame)."""
+        try:
+            new = self.play_step(dict(self.shown_values or self.values), self.play_dt)
+        except Exception as exc:  # noqa: BLE001
+            self._refuse(f"play stopped: {self._reason(exc)}", self.figure_message(exc))
+            return False
+        if new is None:
+            return False
+        before = self.n_updates
+        self.set(**new)
+        return self.n_updates > before
+
+    def _play_toggled(self, change) -> None:
+        if change["new"]:
+            self._play_origin = dict(self.shown_values)
+
+    def _play_tick(self, change) -> None:
+        if not self.play_control.playing:
+            return
+        if self._frame():
+            return
+        if self.play_loop is not None and self.play_loop.value and self._play_origin and \
+                not self._message:
+            self.set(**self._play_origin)  # start again
+            return
+        self.play_control.playing = False
+
+    # ------------------------------------------------------------------- export
+    def _export_path(self, path, ext: str) -> Path:
         if path is None:
             d = self.export_dir or Path.cwd()
-            path = Path(d) / f"planargeo-{self.slug}-{os.getpid()}-{next(_export_counter)}.svg"
+            path = Path(d) / f"planargeo-{self.slug}-{os.getpid()}-{next(_export_counter)}.{ext}"
         try:
             path = Path(path)
             special = path.exists() and not path.is_file()
@@ -516,12 +824,167 @@ class Explorer:
             raise OutputError(f"cannot write {path}: {e.strerror or e}") from None
         if special:
             raise OutputError(f"cannot write {path}: it exists and is not a regular file")
+        return path
+
+    def _svg_bytes(self) -> bytes:
         buf = io.BytesIO()
         # no date and fixed element ids: the same view always gives the same file
         with matplotlib.rc_context({"svg.hashsalt": "planargeo"}):
             self.fig.savefig(buf, format="svg", metadata={"Date": None})
-        self.last_export = atomic_write(path, buf.getvalue()).resolve()
+        return buf.getvalue()
+
+    def _png_bytes(self, dpi: float | None = None) -> bytes:
+        buf = io.BytesIO()
+        self.fig.savefig(buf, format="png", dpi=dpi or self.dpi, metadata={"Software": None})
+        return buf.getvalue()
+
+    def export_svg(self, path=None) -> Path:
+        """Write the current view to an SVG file, atomically, and return its path.
+
+        The view is rendered to memory first and the file replaced in one step
+        (:func:`planargeo.files.atomic_write`): a failure leaves an existing file
+        as it was.  The file depends on the view only (no date, fixed element ids).
+
+        Parameters
+        ----------
+        path : str or os.PathLike, optional
+            The file; default ``planargeo-<slug>-<pid>-<n>.svg`` in ``export_dir``
+            (or the current folder).
+
+        Returns
+        -------
+        pathlib.Path
+            The file written (absolute).
+
+        Raises
+        ------
+        InputError
+            ``path`` names no file.
+        OutputError
+            The file cannot be written (no space, no permission, a folder or a
+            device such as ``/dev/full``, which is never replaced).
+        """
+        path = self._export_path(path, "svg")
+        self.last_export = atomic_write(path, self._svg_bytes()).resolve()
         return self.last_export
+
+    def export_png(self, path=None) -> Path:
+        """Write the current view to a PNG file (at the figure's size), atomically.
+
+        Parameters
+        ----------
+        path : str or os.PathLike, optional
+            The file; default ``planargeo-<slug>-<pid>-<n>.png`` in ``export_dir``.
+
+        Returns
+        -------
+        pathlib.Path
+            The file written (absolute).
+
+        Raises
+        ------
+        InputError
+            ``path`` names no file.
+        OutputError
+            The file cannot be written.
+        """
+        path = self._export_path(path, "png")
+        self.last_export = atomic_write(path, self._png_bytes()).resolve()
+        return self.last_export
+
+    def _frames_rgb(self, frames: int) -> list[np.ndarray]:
+        """RGB images of ``frames`` Play frames from the shown state (which is restored after)."""
+        start = dict(self.shown_values)
+        state, readout = self.state, dict(self.readout_values)
+        out = []
+        self._exporting = True
+        try:
+            for k in range(frames):
+                if k and not self._frame():
+                    break
+                self.fig.canvas.draw()
+                out.append(np.asarray(self.fig.canvas.buffer_rgba())[..., :3].copy())
+        finally:
+            self._exporting = False
+            self.set(**start)
+            if self.values == start and self._message == "":
+                self._safe_redraw()
+            else:  # pragma: no cover - the start state is always showable
+                self.state, self.readout_values = state, readout
+        return out
+
+    def export_animation(self, path=None, *, format: str = "gif", frames: int = 60,
+                         fps: int = 20) -> Path:
+        """Write ``frames`` Play frames from the shown state as a GIF or MP4 file, atomically.
+
+        The explorer returns to the shown state afterwards.  GIF uses pillow;
+        MP4 needs the ``ffmpeg`` program (Debian's ``ffmpeg`` package).
+
+        Parameters
+        ----------
+        path : str or os.PathLike, optional
+            The file; default ``planargeo-<slug>-<pid>-<n>.<format>`` in ``export_dir``.
+        format : {"gif", "mp4"}
+            File format.
+        frames : int
+            Number of frames (fewer if Play ends first).
+        fps : int
+            Frames per second of the file.
+
+        Returns
+        -------
+        pathlib.Path
+            The file written (absolute).
+
+        Raises
+        ------
+        InputError
+            No Play in this explorer, an unknown format, or frames / fps not positive integers.
+        OutputError
+            The file cannot be written, or MP4 without ffmpeg.
+        """
+        data = self._animation_bytes(format, frames, fps)
+        path = self._export_path(path, format)
+        self.last_export = atomic_write(path, data).resolve()
+        return self.last_export
+
+    def _animation_bytes(self, format: str, frames: int, fps: int) -> bytes:
+        if format not in ("gif", "mp4"):
+            raise InputError(f"format must be 'gif' or 'mp4', got {format!r}")
+        for nm, v in (("frames", frames), ("fps", fps)):
+            if not isinstance(v, numbers.Integral) or isinstance(v, bool) or v < 1:
+                raise InputError(f"{nm} must be a positive integer, got {v!r}")
+        if not self.has_play:
+            raise InputError(f"{type(self).__name__} has no animation (it does not define play_step)")
+        ffmpeg = shutil.which("ffmpeg")
+        if format == "mp4" and ffmpeg is None:
+            raise OutputError("mp4 export needs the ffmpeg program, which is not installed "
+                              "(install Debian's ffmpeg, or use format='gif')")
+        imgs = self._frames_rgb(int(frames))
+        if format == "gif":
+            from PIL import Image
+
+            pics = [Image.fromarray(a).quantize(colors=128, method=Image.Quantize.MEDIANCUT)
+                    for a in imgs]
+            buf = io.BytesIO()
+            pics[0].save(buf, format="GIF", save_all=True, append_images=pics[1:],
+                         duration=max(1, int(round(1000 / fps))), loop=0)
+            return buf.getvalue()
+        h, w = imgs[0].shape[:2]
+        with tempfile.TemporaryDirectory() as d:
+            out = Path(d) / "movie.mp4"
+            cmd = [ffmpeg, "-loglevel", "error", "-y", "-f", "rawvideo", "-pix_fmt", "rgb24",
+                   "-s", f"{w}x{h}", "-r", str(fps), "-i", "-",
+                   "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p",
+                   "-vcodec", "libx264", str(out)]
+            try:
+                r = subprocess.run(cmd, input=b"".join(a.tobytes() for a in imgs),
+                                   capture_output=True, timeout=300)
+            except (OSError, subprocess.SubprocessError) as e:
+                raise OutputError(f"ffmpeg failed: {e}") from None
+            if r.returncode != 0 or not out.exists():
+                raise OutputError(f"ffmpeg failed: {r.stderr.decode(errors='replace')[-300:]}")
+            return out.read_bytes()
 
     def redraw(self) -> None:
         """Draw the figure and refresh the front end."""
@@ -545,7 +1008,18 @@ class Explorer:
         return run
 
     def _repr_mimebundle_(self, **kwargs):
-        return self.widget._repr_mimebundle_(**kwargs)
+        """The widget view, plus a static PNG of the figure (shown where widgets are not, e.g. GitHub)."""
+        bundle = self.widget._repr_mimebundle_(**kwargs)
+        if isinstance(bundle, tuple):  # (data, metadata)
+            data = bundle[0]
+        else:
+            data = bundle
+        if isinstance(data, dict):
+            try:
+                data["image/png"] = base64.b64encode(self._png_bytes()).decode("ascii")
+            except Exception:  # noqa: BLE001 - the picture is a courtesy, never an error
+                pass
+        return bundle
 
     def show(self):
         """Display the explorer (in a notebook) and return it."""
@@ -556,49 +1030,110 @@ class Explorer:
 
     # ---------------------------------------------------------------- internals
     def _make_figure(self, figsize):
+        w, h = (float(v) for v in figsize)
+        min_w = EXPLORER_MIN_WIDTH_PX / self.dpi
+        if w < min_w:  # at least the notebook column's width, same aspect
+            w, h = min_w, h * min_w / w
         if self.display_mode == "ipympl":
             import matplotlib.pyplot as plt
 
             with plt.ioff():
-                fig = plt.figure(figsize=figsize, dpi=self.dpi)
+                fig = plt.figure(figsize=(w, h), dpi=self.dpi)
             fig.canvas.header_visible = False
             fig.canvas.footer_visible = False
-            fig.canvas.toolbar_position = "bottom"
+            fig.canvas.toolbar_visible = True      # its own column, never over the axes
+            fig.canvas.toolbar_position = "left"
             fig.canvas.resizable = False
         else:
             from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-            fig = Figure(figsize=figsize, dpi=self.dpi)
+            fig = Figure(figsize=(w, h), dpi=self.dpi)
             FigureCanvasAgg(fig)
         ax = fig.add_subplot(1, 1, 1)
-        fig.subplots_adjust(left=0.08, right=0.98, bottom=0.07, top=0.95)
+        ax.tick_params(labelsize=EXPLORER_TICK_PT)
+        fig.subplots_adjust(left=0.09, right=0.98, bottom=0.07, top=0.97)
         return fig, ax
 
+    @property
+    def figure_px(self) -> tuple[int, int]:
+        """Native size of the figure in pixels (as shown at 100 % zoom)."""
+        w, h = self.fig.get_size_inches() * self.dpi
+        return int(round(w)), int(round(h))
+
     def _layout(self):
+        wpx, _ = self.figure_px
         if self.display_mode == "ipympl":
             fig_widget = self.fig.canvas
         elif self.display_mode == "image":
-            self.image = W.Image(format="png", layout=W.Layout(width="400px", height="auto"))
+            # shown at its native size (text sizes as designed), shrinking with a narrow output area
+            self.image = W.Image(format="png", layout=W.Layout(width=f"{wpx}px", height="auto",
+                                                               max_width="100%"))
             fig_widget = self.image
         else:
             self.image = None
             fig_widget = W.HTML("<i>(figure drawn off-screen)</i>")
-        buttons = W.HBox([self.reset_button, self.export_button])
-        controls = W.VBox(list(self.controls.values()) + self.extra_widgets() + [buttons,
-                                                                                self.export_label],
-                          layout=W.Layout(min_width="320px", overflow="visible"))
-        right = W.VBox([W.HTML("<b>Readout</b>"), self.readout, self.message_box])
+        buttons = W.HBox([self.reset_button, W.HTML("<span style='padding:0 4px'>export</span>"),
+                          self.export_button, self.export_png_button]
+                         + ([self.export_gif_button] if self.has_play else []))
+        play = ([W.HBox([self.play_control, self.play_speed, self.play_loop])] if self.has_play else [])
+        controls = W.VBox(list(self.controls.values()) + play + self.extra_widgets()
+                          + [buttons, self.export_label],
+                          layout=W.Layout(width="330px", min_width="330px", overflow="visible"))
+        right = W.VBox([self.message_box, W.HTML("<b>Readout</b>"), self.readout],
+                       layout=W.Layout(width="310px", min_width="310px"))
         head = W.HTML(f"<h4 style='margin:2px'>{html.escape(self.title)}</h4>")
         body = W.HBox([controls, fig_widget, right],
                       layout=W.Layout(flex_flow="row wrap", align_items="flex-start"))
         root = W.VBox([head, body])
         root.add_class("planargeo-explorer")
         self.readout.add_class("planargeo-readout")
+        self.message_box.add_class("planargeo-message")
         fig_widget.add_class("planargeo-figure")
         return root
 
+    # ------------------------------------------------------------------ mouse
+    def _connect_handles(self) -> None:
+        canvas = self.fig.canvas
+        self._mouse_cids = getattr(self, "_mouse_cids", []) + [
+            canvas.mpl_connect(ev, self.guarded(fn)) for ev, fn in (
+                ("button_press_event", self._on_press), ("motion_notify_event", self._on_move),
+                ("button_release_event", self._on_release))]
+
+    def _on_press(self, ev) -> None:
+        if ev.inaxes is not self.ax or ev.button not in (1, None):
+            return
+        tb = getattr(self.fig.canvas, "toolbar", None)
+        if tb is not None and str(getattr(tb, "mode", "")):  # pan / zoom in use
+            return
+        best, dmin = None, float(self.handle_radius_px)
+        for h in self.all_handles():
+            xy = h.where()
+            if xy is None or not np.all(np.isfinite(np.asarray(xy, float))):
+                continue
+            px = self.ax.transData.transform(np.asarray(xy, float))
+            d = float(np.hypot(px[0] - ev.x, px[1] - ev.y))
+            if d <= dmin:
+                best, dmin = h, d
+        self._drag_active = best
+
+    def _on_move(self, ev) -> None:
+        h = self._drag_active
+        if h is None or ev.inaxes is not self.ax or ev.xdata is None:
+            return
+        x, y = ev.xdata, ev.ydata
+        if np.isfinite(x) and np.isfinite(y):
+            self._drag_to(h, float(x), float(y))
+
+    def _on_release(self, ev) -> None:
+        self._drag_active = None
+
     def _make_observer(self, name: str) -> Callable:
+        widget = self.controls[name]
+        slider = isinstance(widget, W.FloatSlider)
+
         def _observer(change):
+            if slider and self._screen_echo(name, widget, change):
+                return
             if self._quiet:  # the explorer setting its own controls
                 return
             self._changed.add(name)
@@ -608,6 +1143,50 @@ class Explorer:
             self._update()
 
         return _observer
+
+    #: seconds during which the browser's rounded copy of a set value counts as its echo
+    ECHO_SECONDS = 2.0
+
+    def _screen_echo(self, name: str, widget, change) -> bool:
+        """True for a slider's echo: ignore it (no update, no snapping to the grid).
+
+        A browser slider rounds a value the explorer set (a drag, a Play frame)
+        to its step and sends it back; such a message (one from the front end,
+        i.e. inside ipywidgets' ``set_state``) equal to the rounded copy of a
+        value set in the last :attr:`ECHO_SECONDS` is not a user's change.
+        """
+        new, old = change["new"], change["old"]
+        now = time.monotonic()
+        from_front = "value" in (getattr(widget, "_property_lock", None) or {})
+        recent = [r for r in self._echo.get(name, []) if now - r[0] <= self.ECHO_SECONDS]
+        if from_front and isinstance(new, numbers.Real) and any(
+                abs(float(new) - r[2]) <= 1e-9 * max(1.0, abs(r[2])) for r in recent):
+            sh = self._shadow.get(name)
+            exact = sh[0] if sh is not None and old == sh[1] else old
+            self._shadow[name] = (exact, new)
+            self._echo[name] = recent
+            return True
+        self._shadow.pop(name, None)
+        if not from_front and isinstance(new, float) and math.isfinite(new) and \
+                not _grid_ok(new, widget.min, widget.step):
+            recent.append((now, new, _on_grid(new, widget.min, widget.step)))
+            self._echo[name] = recent[-16:]
+        return False
+
+    @property
+    def values(self) -> dict[str, Any]:
+        """Current value of every control (a dragged value, not the slider's rounded echo of it).
+
+        Returns
+        -------
+        dict
+        """
+        out = {}
+        for k, w in self.controls.items():
+            v = w.value
+            sh = self._shadow.get(k)
+            out[k] = sh[0] if sh is not None and v == sh[1] else v
+        return out
 
     @contextlib.contextmanager
     def _quietly(self):
@@ -693,6 +1272,7 @@ class Explorer:
         self.state = state
         self.shown_values = self.values
         self.readout_values = readout
+        self._draw_key()
         self.readout.value = table
         self._set_message(message)
         self._show_figure_message(message)
@@ -709,7 +1289,12 @@ class Explorer:
 
     def _refuse(self, message: str, figure_text: str | None = None, rerender: bool = False) -> None:
         """Report ``message`` and return controls, figure and readout to the shown state."""
+        reverted = [k for k, v in self.shown_values.items()
+                    if k in self.controls and not _same(self.controls[k].value, v)]
         self._set_controls(self.shown_values)
+        for k in reverted:  # tell the browser even while it is sending this very control
+            with contextlib.suppress(Exception):
+                self.controls[k].send_state("value")
         self._changed.clear()
         self._pending = False
         if rerender:  # a render that failed midway may have moved some artists
@@ -726,25 +1311,77 @@ class Explorer:
         return _short(self._reason(exc))
 
     def _safe_redraw(self) -> None:
+        if self._exporting:  # frames of an animation are drawn by the exporter
+            return
         try:
             self.redraw()
         except Exception as exc:  # noqa: BLE001
             self._message = self._message or f"drawing failed ({type(exc).__name__}): {exc}"
 
     def _readout_html(self, values: dict[str, Any]) -> str:
-        rows = "".join(
-            f"<tr><td style='padding-right:6px;line-height:1.2'>{html.escape(str(k))}</td>"
-            f"<td style='text-align:right;font-family:monospace;line-height:1.2'>{fmt(v)}</td></tr>"
-            for k, v in values.items() if not str(k).startswith("_"))
-        return f"<table class='planargeo-readout' style='font-size:12px'>{rows}</table>"
+        zero = float(self.zero_tol) * float(self.scale)
+        self.readout_strings = {}
+        rows = []
+        for k, v in values.items():
+            if str(k).startswith("_"):
+                continue
+            unit = self.units.get(k, "")
+            unit = "" if unit in ("—", "-") else unit
+            text = fmt(v, zero=zero)
+            self.readout_strings[str(k)] = f"{text} {unit}" if unit else text
+            rows.append(
+                f"<tr><td style='padding-right:6px;line-height:1.25;white-space:nowrap;"
+                f"overflow:hidden;text-overflow:ellipsis;max-width:120px' title='{html.escape(str(k))}'>"
+                f"{html.escape(str(k))}</td>"
+                f"<td style='text-align:right;font-family:monospace;line-height:1.25;"
+                f"white-space:nowrap'>{text}</td>"
+                f"<td style='padding-left:3px;line-height:1.25;white-space:nowrap;color:#555'>"
+                f"{html.escape(unit)}</td></tr>")
+        return (f"<table class='planargeo-readout' style='font-size:12px;table-layout:auto;"
+                f"border-collapse:collapse'>{''.join(rows)}</table>")
 
-    def _export_clicked(self) -> None:
+    def _export_bytes(self, kind: str) -> bytes:
+        if kind == "svg":
+            return self._svg_bytes()
+        if kind == "png":
+            return self._png_bytes()
+        return self._animation_bytes(kind, 60, self.play_fps)
+
+    def _export_clicked(self, kind: str = "svg") -> None:
+        """Export button: a download link in the page (and the file in ``export_dir`` if set)."""
+        mime = {"svg": "image/svg+xml", "png": "image/png", "gif": "image/gif",
+                "mp4": "video/mp4"}[kind]
         try:
-            p = self.export_svg()
-            self.export_label.value = f"saved <code>{html.escape(str(p))}</code>"
+            if self.export_dir is not None:
+                p = {"svg": self.export_svg, "png": self.export_png}.get(
+                    kind, lambda: self.export_animation(format=kind, fps=self.play_fps))()
+                data, name = p.read_bytes(), p.name
+                saved = f"saved <code>{html.escape(str(p))}</code> "
+            else:
+                data, name, saved = self._export_bytes(kind), f"planargeo-{self.slug}.{kind}", ""
+            href = f"data:{mime};base64,{base64.b64encode(data).decode('ascii')}"
+            self.export_label.value = (
+                f"{saved}<a download='{html.escape(name)}' href='{href}' "
+                f"class='planargeo-download' style='font-weight:bold'>⬇ {html.escape(name)}</a>")
         except Exception as exc:  # noqa: BLE001
             self.export_label.value = (f"<span style='color:#b00020'>export failed: "
                                        f"{html.escape(str(exc))}</span>")
+
+    def _draw_key(self) -> None:
+        """The legend of labelled artists when the "key" control is on (removed when off)."""
+        if self._legend is not None:
+            with contextlib.suppress(Exception):
+                self._legend.remove()
+            self._legend = None
+        if not self.controls["key"].value:
+            return
+        from planargeo.draw.artists import legend_handles
+
+        handles = legend_handles(self.ax)
+        if handles:
+            self._legend = self.ax.legend(handles=handles, loc="upper left", fontsize=8.5,
+                                          framealpha=0.9, handlelength=1.6, borderaxespad=0.3)
+            self._legend.set_zorder(50)
 
     # -------------------------------------------------------------- benchmarking
     def time_update(self, name: str, values: list, repeat: int = 1) -> list[float]:
