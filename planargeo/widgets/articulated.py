@@ -50,6 +50,8 @@ NMAX = 8
 T_MAX = 20.0
 _LABELS = {"m_x": "$m_x$", "m_y": "$m_y$", "A_z": "$A_z$", "m_xy": "$m_{xy}$", "c_x": "$c_x$", "c_y": "$c_y$"}
 _ART = OKABE_ITO["purple"]
+#: controls that define the chain or its swing: a change restarts the swing at t = 0
+_CHAIN = ("bodies n", "λ = L/ρ", "bend φ (deg)", "base θ₁ (deg)", "g (m/s²)", "damping c")
 
 
 def bend_for_tip(xy, n: int, base: float, L: float = 1.0) -> float:
@@ -185,9 +187,7 @@ class ArticulatedExplorer(Explorer):
         n = int(values["bodies n"])
         if values["body k"] > n:
             out["body k"] = n
-        moving = {"time (s)", "rigid inertias", "percussion axes", "pole x", "pole y", "outboard bodies",
-                  "body k", "damping c", "g (m/s²)"}
-        if changed - moving and values["time (s)"] != 0.0:
+        if changed & set(_CHAIN) and values["time (s)"] != 0.0:
             out["time (s)"] = 0.0
         return out
 

@@ -151,6 +151,7 @@ class SplittingExplorer(Explorer):
         ax : matplotlib.axes.Axes
         """
         super().setup_axes(ax)
+        ax.set_position([0.1, 0.12, 0.86, 0.83])
         ax.set_xlabel("x (m)")
         ax.set_ylabel("y (m)")
 
@@ -175,7 +176,9 @@ class SplittingExplorer(Explorer):
         self.poles = [ax.add_artist(PointArtist([0.0, 0.0, 1.0], role="accel", glyph=False, markersize=6))
                       for _ in range(NMAX)]
         self.centre = ax.add_artist(PointArtist([0.0, 0.0, 1.0], role="twist", glyph=False, marker="D",
-                                                markersize=6, text="centre of $\\Lambda_i^{-1}$"))
+                                                markersize=6, text="centre of $\\Lambda_i^{-1}$",
+                                                text_offset=(6.0, -8.0)))
+        self.centre.set_text_alignment("left", "top")         # below: the pole a_i may sit on it (body 1)
 
     def _model(self, n, rho, g):
         return cached(self._models, (n, rho, g), lambda: bent_chain_model(n, rho, 1.0, 1.0, g))
