@@ -35,14 +35,15 @@ import ipywidgets as W
 import numpy as np
 from matplotlib.lines import Line2D
 
-from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
+from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist, clip_line
 from planargeo.draw.layout import fit_view
 from planargeo.draw.style import COLORS, OKABE_ITO
 from planargeo.geometry.conics import drawable_conic
 from planargeo.scenes.articulated import COMPONENTS, articulated_state, bent_chain_model, joint_points
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
-__all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip"]
+__all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip", "place_labels", "label_artist", "curve_candidates",
+           "line_candidates", "point_candidates"]
 
 #: Most bodies the explorer shows.
 NMAX = 8
@@ -102,6 +103,156 @@ def bend_for_tip(xy, n: int, base: float, L: float = 1.0) -> float:
         else:
             lo = a
     return float(0.5 * (lo + hi))
+
+
+def place_labels(ax, items, fontsize: float = 11.0) -> list:
+    """Place labels next to their anchors without overlaps (greedy, in order of priority).
+
+    Each item is ``(annotation, candidates)``: an annotation made by :func:`label_artist` and a
+    list of ``((x, y) data anchor, (dx, dy) offset in points)`` tried in turn; the first
+    position whose text lies inside the axes and clear of the labels placed before wins (else
+    the one that overlaps least).  Hidden annotations are skipped.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        The axes (its limits already set).
+    items : list of (Annotation, list)
+        Labels in order of priority.
+    fontsize : float
+        Unused; kept for callers that size the labels.
+
+    Returns
+    -------
+    list of matplotlib.transforms.Bbox
+        The placed labels' boxes (display pixels).
+    """
+    renderer = ax.figure.canvas.get_renderer()
+    frame = ax.get_window_extent(renderer)
+    placed = []
+    for ann, cands in items:
+        if not ann.get_visible() or not ann.get_text() or not cands:
+            continue
+        best, best_cost = None, math.inf
+        for xy, off in cands:
+            if not np.all(np.isfinite(xy)):
+                continue
+            ann.xy = (float(xy[0]), float(xy[1]))
+            ann.set_position((float(off[0]), float(off[1])))
+            ann.set_horizontalalignment("left" if off[0] > 1 else "right" if off[0] < -1 else "center")
+            ann.set_verticalalignment("bottom" if off[1] > 1 else "top" if off[1] < -1 else "center")
+            bb = ann.get_window_extent(renderer)
+            out = (max(0.0, frame.x0 + 2 - bb.x0) + max(0.0, bb.x1 - frame.x1 + 2)
+                   + max(0.0, frame.y0 + 2 - bb.y0) + max(0.0, bb.y1 - frame.y1 + 2))
+            cost = 1e3 * out + sum(max(0.0, min(bb.x1, o.x1) - max(bb.x0, o.x0) + 2)
+                                   * max(0.0, min(bb.y1, o.y1) - max(bb.y0, o.y0) + 2) for o in placed)
+            if cost < best_cost:
+                best, best_cost = (xy, off), cost
+            if cost == 0:
+                break
+        if best is None:
+            ann.set_visible(False)
+            continue
+        xy, off = best
+        ann.xy = (float(xy[0]), float(xy[1]))
+        ann.set_position((float(off[0]), float(off[1])))
+        ann.set_horizontalalignment("left" if off[0] > 1 else "right" if off[0] < -1 else "center")
+        ann.set_verticalalignment("bottom" if off[1] > 1 else "top" if off[1] < -1 else "center")
+        placed.append(ann.get_window_extent(renderer))
+    return placed
+
+
+def label_artist(ax, text: str = "", color: str = "black", fontsize: float = 11.0):
+    """An annotation (text offset in points from a data point) for :func:`place_labels`.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    text : str
+    color : str
+    fontsize : float
+
+    Returns
+    -------
+    matplotlib.text.Annotation
+    """
+    return ax.annotate(text, xy=(0.0, 0.0), xytext=(0.0, 0.0), textcoords="offset points", color=color,
+                       fontsize=fontsize, zorder=20, annotation_clip=False)
+
+
+def curve_candidates(xy, offset: float = 4.0) -> list:
+    """Label positions around a closed curve: its right, top, left and bottom points, offset outward.
+
+    Parameters
+    ----------
+    xy : (m, 2) points of the curve (NaN allowed)
+    offset : float
+        Distance from the curve in points.
+
+    Returns
+    -------
+    list of ((x, y), (dx, dy))
+    """
+    P = np.asarray(xy, dtype=float)
+    P = P[np.all(np.isfinite(P), axis=1)]
+    if not len(P):
+        return []
+    out = []
+    for k, d in ((int(np.argmax(P[:, 0] + P[:, 1])), (offset, offset)), (int(np.argmax(P[:, 1])), (0.0, offset)),
+                 (int(np.argmax(P[:, 0])), (offset, 0.0)), (int(np.argmin(P[:, 0] - P[:, 1])), (-offset, offset)),
+                 (int(np.argmin(P[:, 1])), (0.0, -offset)), (int(np.argmin(P[:, 0])), (-offset, 0.0)),
+                 (int(np.argmin(P[:, 0] + P[:, 1])), (-offset, -offset)),
+                 (int(np.argmax(P[:, 0] - P[:, 1])), (offset, -offset))):
+        out.append((P[k], d))
+    return out
+
+
+def line_candidates(line, box, fracs=(0.1, 0.9, 0.3, 0.7, 0.5), offset: float = 5.0) -> list:
+    """Label positions along a line inside ``box`` (x0, x1, y0, y1), on either side of it.
+
+    Parameters
+    ----------
+    line : (3,) homogeneous line
+    box : (x0, x1, y0, y1)
+    fracs : fractions along the visible segment, in order of preference
+    offset : float
+        Distance from the line in points.
+
+    Returns
+    -------
+    list of ((x, y), (dx, dy))
+    """
+    seg = clip_line(line, box)
+    if seg is None:
+        return []
+    seg = seg[np.argsort(seg[:, 0])]
+    n = np.array([-line[1], line[0]], dtype=float)          # the line's normal (direction (fx, fy))
+    n = n / max(np.hypot(*n), 1e-300)
+    if n[1] < 0:
+        n = -n
+    out = []
+    for f in fracs:
+        p = seg[0] + f * (seg[1] - seg[0])
+        out += [(p, tuple(offset * n)), (p, tuple(-offset * n))]
+    return out
+
+
+def point_candidates(xy, offset: float = 6.0) -> list:
+    """Label positions around a point (up-right first).
+
+    Parameters
+    ----------
+    xy : (x, y)
+    offset : float
+        Distance in points.
+
+    Returns
+    -------
+    list of ((x, y), (dx, dy))
+    """
+    p = np.asarray(xy, dtype=float)
+    return [(p, (offset * a, offset * b)) for a, b in ((1, 1), (1, -1), (-1, 1), (-1, -1), (0, 1.4), (0, -1.4),
+                                                      (1.4, 0), (-1.4, 0))]
 
 
 class ArticulatedExplorer(Explorer):
@@ -200,7 +351,7 @@ class ArticulatedExplorer(Explorer):
         ax : matplotlib.axes.Axes
         """
         super().setup_axes(ax)
-        ax.set_position([0.06, 0.09, 0.56, 0.86])
+        ax.set_position([0.085, 0.1, 0.53, 0.85])
         ax.set_xlabel("x (m)")
         ax.set_ylabel("y (m)")
         self.chart = ax.figure.add_axes([0.71, 0.12, 0.27, 0.78])
@@ -225,13 +376,15 @@ class ArticulatedExplorer(Explorer):
                       for _ in range(NMAX)]
         self.art = [ax.add_artist(ConicArtist(e, role="inertia", color=_ART, linewidth=1.3))
                     for _ in range(NMAX)]
-        self.pole_art = ax.add_artist(PointArtist([0.0, 0.0, 1.0], role="accel", text="$a$", glyph=False,
-                                                  markersize=8))
-        self.axis_A = ax.add_artist(LineArtist([0.0, 1.0, 0.0], role="wrench", scale=None, text="$A_k a$"))
-        self.axis_I = ax.add_artist(LineArtist([0.0, 1.0, 0.0], role="momentum", scale=None, text="$I_k a$",
+        self.pole_art = ax.add_artist(PointArtist([0.0, 0.0, 1.0], role="accel", glyph=False, markersize=8))
+        self.axis_A = ax.add_artist(LineArtist([0.0, 1.0, 0.0], role="wrench", scale=None))
+        self.axis_I = ax.add_artist(LineArtist([0.0, 1.0, 0.0], role="momentum", scale=None,
                                                linestyle=(0, (6, 3))))
-        self.polar = ax.add_artist(LineArtist([0.0, 1.0, 0.0], role="construct", scale=None,
-                                              text="polar of $a$ (real conic)"))
+        self.polar = ax.add_artist(LineArtist([0.0, 1.0, 0.0], role="construct", scale=None))
+        # labels, placed clear of each other at every update (place_labels)
+        self.lab = {name: label_artist(ax, "", color) for name, color in (
+            ("a", COLORS["accel"]), ("A", _ART), ("I", "#6a6a6a"), ("Aa", COLORS["wrench"]),
+            ("Ia", COLORS["momentum"]), ("polar", COLORS["construct"]))}
         self.curves = [self.chart.plot([], [], marker="o", ms=3, lw=1.5, label=_LABELS[c])[0] for c in COMPONENTS]
         self.err_curve = self.chart.plot([], [], color="black", lw=1.2, ls=":", marker="s", ms=3,
                                          label="error")[0]
@@ -410,17 +563,13 @@ class ArticulatedExplorer(Explorer):
             focus = i == k
             self.art[i].set_alpha(1.0 if focus else 0.35)
             self.rigid[i].set_alpha(0.9 if focus else 0.3)
-            self.art[i].set_text(f"$A_{{{i + 1}}}$" if focus else None)
-            self.rigid[i].set_text(f"$I_{{{i + 1}}}$" if focus and show_rigid else None)
         a = st["pole"]
         self.pole_art.set_point(a)
         axes_on = bool(v["percussion axes"])
         for art in (self.axis_A, self.axis_I, self.polar):
             art.set_visible(axes_on)
         self.axis_A.set_line(st["axis"][k])
-        self.axis_A.set_text(f"$A_{{{k + 1}}} a$")
         self.axis_I.set_line(st["axis_rigid"][k])
-        self.axis_I.set_text(f"$I_{{{k + 1}}} a$")
         self.axis_I.set_visible(axes_on and show_rigid)
         self.polar.set_line(drawable_conic(st["A"][k]) @ a)            # 10.2.3: reflection of A_k a through the centre
         # chart: the focused body's components against the recursion steps, each over its full value
@@ -442,8 +591,34 @@ class ArticulatedExplorer(Explorer):
         self.chart.set_ylim(lo - 0.05, hi + 0.1)
         self.chart.set_xticks(range(len(comps)))
         # the view: chain, centres, pole
-        view = np.vstack([pts, st["centre"], st["centre_rigid"], [[v["pole x"], v["pole y"]]]])
-        fit_view(self.ax, view, margin=0.12)
+        view = [pts, st["centre"], st["centre_rigid"], [[v["pole x"], v["pole y"]]]]
+        view += [c.get_xy() for c in self.art[:n]]               # the drawn conics stay in view
+        if show_rigid:
+            view += [c.get_xy() for c in self.rigid[:n]]
+        fit_view(self.ax, np.vstack(view), margin=0.1)
+        # labels: thesis symbols next to the focused body's elements, clear of each other
+        x0, x1 = self.ax.get_xlim()
+        y0, y1 = self.ax.get_ylim()
+        box = (x0, x1, y0, y1)
+        lab = self.lab
+        lab["a"].set_text("$a$")
+        lab["A"].set_text(f"$A_{{{k + 1}}}$")
+        lab["I"].set_text(f"$I_{{{k + 1}}}$")
+        lab["Aa"].set_text(f"$A_{{{k + 1}}}\\,a$")
+        lab["Ia"].set_text(f"$I_{{{k + 1}}}\\,a$")
+        lab["polar"].set_text("polar of $a$ (real conic)")
+        lab["I"].set_visible(show_rigid)
+        lab["Ia"].set_visible(axes_on and show_rigid)
+        for name in ("Aa", "polar"):
+            lab[name].set_visible(axes_on)
+        place_labels(self.ax, [
+            (lab["a"], point_candidates((v["pole x"], v["pole y"]))),
+            (lab["A"], curve_candidates(self.art[k].get_xy())),
+            (lab["I"], curve_candidates(self.rigid[k].get_xy())),
+            (lab["Aa"], line_candidates(st["axis"][k], box)),
+            (lab["Ia"], line_candidates(st["axis_rigid"][k], box, fracs=(0.9, 0.1, 0.7, 0.3, 0.5))),
+            (lab["polar"], line_candidates(self.polar.get_line(), box, fracs=(0.5, 0.3, 0.7, 0.1, 0.9))),
+        ])
         # readout
         Ak = st["A"][k]
         from planargeo.scenes.articulated import inertia_at
