@@ -111,7 +111,8 @@ def place_labels(ax, items, fontsize: float = 11.0) -> list:
     Each item is ``(annotation, candidates)``: an annotation made by :func:`label_artist` and a
     list of ``((x, y) data anchor, (dx, dy) offset in points)`` tried in turn; the first
     position whose text lies inside the axes and clear of the labels placed before wins (else
-    the one that overlaps least).  Hidden annotations are skipped.
+    the one that overlaps least).  Hidden annotations are skipped; an annotation whose anchors
+    all lie outside the view is hidden.
 
     Parameters
     ----------
@@ -129,9 +130,14 @@ def place_labels(ax, items, fontsize: float = 11.0) -> list:
     """
     renderer = ax.figure.canvas.get_renderer()
     frame = ax.get_window_extent(renderer)
+    (x0, x1), (y0, y1) = sorted(ax.get_xlim()), sorted(ax.get_ylim())
     placed = []
     for ann, cands in items:
-        if not ann.get_visible() or not ann.get_text() or not cands:
+        cands = [(xy, off) for xy, off in cands if np.all(np.isfinite(xy))
+                 and x0 <= xy[0] <= x1 and y0 <= xy[1] <= y1]       # a label only for what is in view
+        if not cands:
+            ann.set_visible(False)
+        if not ann.get_visible() or not ann.get_text():
             continue
         best, best_cost = None, math.inf
         for xy, off in cands:
@@ -238,7 +244,7 @@ def line_candidates(line, box, fracs=(0.1, 0.9, 0.3, 0.7, 0.5), offset: float = 
 
 
 def point_candidates(xy, offset: float = 6.0) -> list:
-    """Label positions around a point (up-right first).
+    """Label positions around a point (up-right first; then farther out, for crowded places).
 
     Parameters
     ----------
@@ -251,8 +257,8 @@ def point_candidates(xy, offset: float = 6.0) -> list:
     list of ((x, y), (dx, dy))
     """
     p = np.asarray(xy, dtype=float)
-    return [(p, (offset * a, offset * b)) for a, b in ((1, 1), (1, -1), (-1, 1), (-1, -1), (0, 1.4), (0, -1.4),
-                                                      (1.4, 0), (-1.4, 0))]
+    return [(p, (r * offset * a, r * offset * b)) for r in (1.0, 2.5, 4.0)
+            for a, b in ((1, 1), (1, -1), (-1, 1), (-1, -1), (0, 1.4), (0, -1.4), (1.4, 0), (-1.4, 0))]
 
 
 class ArticulatedExplorer(Explorer):

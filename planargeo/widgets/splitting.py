@@ -36,7 +36,8 @@ from planargeo.draw.layout import fit_view
 from planargeo.draw.style import COLORS, OKABE_ITO
 from planargeo.scenes.articulated import bent_chain_model
 from planargeo.scenes.splitting import splitting_state, twist_pole
-from planargeo.widgets.articulated import bend_for_tip
+from planargeo.widgets.articulated import (bend_for_tip, label_artist, line_candidates, place_labels,
+                                           point_candidates)
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["SplittingExplorer", "NMAX", "x_over_L_7_48"]
@@ -170,15 +171,16 @@ class SplittingExplorer(Explorer):
                                          zorder=3))
         self.cut = ax.add_line(Line2D([], [], marker="o", ms=15, mfc="none", mec="#b00020", mew=2.2, ls="none",
                                       zorder=5, label="split joint"))
-        self.force = ax.add_artist(LineArtist([0.0, 1.0, 0.0], role="reaction", scale=0.5, text="$f_{i+1}$"))
-        self.couple = ax.add_artist(LineArtist([0.0, 0.0, 1.0], role="wrench", text="$-f_{n+1}$ on the tip",
-                                               corner="upper left"))
+        self.force = ax.add_artist(LineArtist([0.0, 1.0, 0.0], role="reaction", scale=0.5))
+        self.couple = ax.add_artist(LineArtist([0.0, 0.0, 1.0], role="wrench", corner="upper left"))
         self.poles = [ax.add_artist(PointArtist([0.0, 0.0, 1.0], role="accel", glyph=False, markersize=6))
                       for _ in range(NMAX)]
         self.centre = ax.add_artist(PointArtist([0.0, 0.0, 1.0], role="twist", glyph=False, marker="D",
-                                                markersize=6, text="centre of $\\Lambda_i^{-1}$",
-                                                text_offset=(6.0, -8.0)))
-        self.centre.set_text_alignment("left", "top")         # below: the pole a_i may sit on it (body 1)
+                                                markersize=6))
+        # labels, placed clear of each other at every update
+        self.lab = {name: label_artist(ax, "", color) for name, color in (
+            ("a_i", _LOWER), ("a_j", _UPPER), ("f", COLORS["reaction"]), ("centre", COLORS["twist"]),
+            ("cut", "#b00020"), ("couple", COLORS["wrench"]))}
 
     def _model(self, n, rho, g):
         return cached(self._models, (n, rho, g), lambda: bent_chain_model(n, rho, 1.0, 1.0, g))
@@ -264,31 +266,53 @@ class SplittingExplorer(Explorer):
         self.force.set_anchor(pts[i])
         fxy = math.hypot(f[0], f[1])
         self.force.set_scale(0.6 / fxy if fxy > 0 else None)
-        self.force.set_text(f"$f_{{{i + 1}}}$")
         self.couple.set_line(-st["f_tip"])
-        self.couple.set_text(f"$-f_{{{n + 1}}}$ on the tip")
         view = [pts]
-        for b in range(NMAX):
-            art = self.poles[b]
-            on = b < n
-            art.set_visible(on)
-            if not on:
-                continue
-            art.set_point(st["a"][b])
-            lower = b < i
-            art._marker.set_color(_LOWER if lower else _UPPER)
-            near = b in (i - 1, i)
-            art.set_text(f"$a_{{{b + 1}}}$" if near else None)
-            p = twist_pole(st["a"][b])
-            if p is not None and near:
-                view.append([p])
+        poles = [twist_pole(a) for a in st["a"]]
+        for b in (i - 1, i):                                   # the two bodies at the split stay in view
+            if poles[b] is not None:
+                view.append([poles[b]])
         c = st["centres"][i - 1]
-        self.centre.set_visible(bool(self.values["mobility centres"]) and bool(np.all(np.isfinite(c))))
-        if np.all(np.isfinite(c)):
-            self.centre.set_point([c[1], -c[0], 1.0])
-            self.centre.set_text(f"centre of $\\Lambda_{{{i}}}^{{-1}}$")
+        show_c = bool(self.values["mobility centres"]) and bool(np.all(np.isfinite(c)))
+        if show_c:
             view.append([c])
         fit_view(self.ax, np.vstack(view), margin=0.15)
+        (x0, x1), (y0, y1) = self.ax.get_xlim(), self.ax.get_ylim()
+        for b in range(NMAX):
+            art = self.poles[b]
+            p = poles[b] if b < n else None
+            near = b in (i - 1, i)
+            inside = p is not None and x0 <= p[0] <= x1 and y0 <= p[1] <= y1
+            art.set_visible(b < n and (near or inside))         # the others only where they are in view
+            if b < n:
+                art.set_point(st["a"][b])
+                art._marker.set_color(_LOWER if b < i else _UPPER)
+        if poles[i - 1] is None and poles[i] is None:          # both translate: one arrow says it (∞)
+            u, w = st["a"][i - 1][:2], st["a"][i][:2]
+            if abs(u[0] * w[1] - u[1] * w[0]) <= 0.2 * np.hypot(*u) * np.hypot(*w):
+                self.poles[i].set_visible(False)
+        self.centre.set_visible(show_c)
+        if show_c:
+            self.centre.set_point([c[1], -c[0], 1.0])
+        lab = self.lab
+        lab["a_i"].set_text(f"$a_{{{i}}}$")
+        lab["a_j"].set_text(f"$a_{{{i + 1}}}$")
+        lab["f"].set_text(f"$f_{{{i + 1}}}$")
+        lab["centre"].set_text(f"centre of $\\Lambda_{{{i}}}^{{-1}}$")
+        lab["cut"].set_text("split")
+        lab["couple"].set_text(f"$-f_{{{n + 1}}}$ on the tip")
+        for key in lab:
+            lab[key].set_visible(True)
+        lab["centre"].set_visible(show_c)
+        corner = (x0 + 1e-9 * (x1 - x0), y1 - 1e-9 * (y1 - y0))      # beside the couple's glyph (upper left)
+        place_labels(self.ax, [
+            (lab["couple"], [(corner, (30.0, -10.0)), (corner, (30.0, -30.0))]),
+            (lab["cut"], point_candidates(pts[i], offset=9.0)),
+            (lab["a_i"], [] if poles[i - 1] is None else point_candidates(poles[i - 1])),
+            (lab["a_j"], [] if poles[i] is None else point_candidates(poles[i])),
+            (lab["f"], line_candidates(f, (x0, x1, y0, y1))),
+            (lab["centre"], point_candidates(c) if show_c else []),
+        ])
         Lam = st["Lambda_inv"][i - 1]
         out = {
             "split at joint": i + 1,
