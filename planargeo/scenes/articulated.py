@@ -6,7 +6,7 @@ bends the chain by ``phi``.  At rest, without gravity.  For every body the scene
 
 * its rigid inertia ``I_i`` and its articulated inertia ``A_i`` (7.7a), the latter with only
   ``outboard`` bodies beyond ``i`` included (the truncated recursion of 10.2.2;
-  ``outboard = -1``: all of them);
+  ``outboard = None``: all of them);
 * the effective centre of ``A_i``: the centre of the conic, ``A_i⁻¹ [0, 0, 1]`` (the pole of
   the line at infinity: a couple on body ``i`` turns it about this point, 7.26);
 * the axes of percussion ``I_i a`` and ``A_i a`` of a chosen acceleration pole ``a``
@@ -30,7 +30,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo.errors import SceneError
 from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.scenes import SceneResult, check_param, register
 from planargeo.scenes.two_body import _plain
@@ -149,7 +148,7 @@ def _components(A) -> list[float]:
 
 
 @register("articulated", limits={"n": (40, "n = 40 takes about 0.1 s; the chart grows as n²")})
-def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int = -1,
+def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int | None = None,
                 pole_x: float = 0.0, pole_y: float = -0.6) -> SceneResult:
     """Rigid and articulated inertias of a bent chain, their axes of percussion and convergence (7.1-7.3, 10.2.2).
 
@@ -161,9 +160,9 @@ def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int = 
         Size ratio ``lambda = L / rho`` (> 0, 7.21).  Default 3.
     phi : float
         Bend at every joint after the first [rad].  Default 0.4.
-    outboard : int
-        Bodies beyond each body included in its articulated inertia (>= 0), or ``-1``
-        for all of them (the full recursion).  Default -1.
+    outboard : int or None
+        Bodies beyond each body included in its articulated inertia (>= 0), or None
+        for all of them (the full recursion).  Default None.
     pole_x, pole_y : float
         The acceleration pole ``a`` whose axes of percussion are given [m].
 
@@ -195,16 +194,14 @@ def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int = 
     n = check_param("n", n, "int", positive=True)
     lam = check_param("lam", lam, positive=True)
     phi = check_param("phi", phi)
-    outboard = check_param("outboard", outboard, "int")
-    if outboard < -1:
-        raise SceneError(f"outboard must be -1 (all bodies) or a non-negative integer, got {outboard!r}")
+    outboard = check_param("outboard", outboard, "int", nonnegative=True, optional=True)
     pole_x, pole_y = check_param("pole_x", pole_x), check_param("pole_y", pole_y)
     params = dict(n=n, lam=lam, phi=phi, outboard=outboard, pole_x=pole_x, pole_y=pole_y)
     L, m = 1.0, 1.0
     rho = L / lam
     model = bent_chain_model(n, rho, L, m)
     q = np.array([0.0] + [phi] * (n - 1))
-    st = articulated_state(model, q, outboard=None if outboard < 0 else outboard, pole=(pole_x, pole_y), L=L)
+    st = articulated_state(model, q, outboard=outboard, pole=(pole_x, pole_y), L=L)
     d, mx, my, Az = effective_centre(st["A_full"][0])
     quantities = {k: _plain(st[k]) for k in ("joints", "I", "A", "A_full", "centre_rigid", "centre", "pole",
                                              "axis_rigid", "axis", "truncation_error")}
