@@ -1,4 +1,4 @@
-"""Scene ``articulated``: rigid and articulated inertias along a chain as conics (thesis 7.1-7.3, 10.2.2, 10.2.3).
+"""Scene ``articulated``: rigid and articulated inertias along a chain as conics (thesis sections 7.1-7.3, 10.2.2, 10.2.3; 7.7a, 7.26).
 
 ``n`` identical bodies (mass ``m = 1``, joints ``L = 1`` apart, centre of mass half-way,
 radius of gyration ``rho = L / lam``) hang from joint 1 at the origin; every further joint
@@ -150,7 +150,7 @@ def _components(A) -> list[float]:
 @register("articulated", limits={"n": (40, "n = 40 takes about 0.1 s; the chart grows as n²")})
 def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int | None = None,
                 pole_x: float = 0.0, pole_y: float = -0.6) -> SceneResult:
-    """Rigid and articulated inertias of a bent chain, their axes of percussion and convergence (7.1-7.3, 10.2.2).
+    """Rigid and articulated inertias of a bent chain, their axes of percussion and convergence (7.7a, 7.26, 5.64-5.68).
 
     Parameters
     ----------

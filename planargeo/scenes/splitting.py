@@ -1,4 +1,4 @@
-"""Scene ``splitting``: a constrained chain's articulated mobilities and chain splitting (thesis 7.4-7.6).
+"""Scene ``splitting``: a constrained chain's articulated mobilities and chain splitting (thesis sections 7.4-7.6: 7.28-7.56).
 
 ``n`` identical bodies (mass ``m``, radius of gyration ``rho``, joints ``L`` apart, centre of
 mass half-way) hang from the ground at joint ``CJ_1`` (the origin); every further joint bends
@@ -137,7 +137,7 @@ def splitting_state(model, q, split: int, tau: float, *, L: float = 1.0) -> dict
 @register("splitting", limits={"n": (200, "n = 200 takes about 0.2 s")})
 def splitting(n: int = 2, m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: float = np.pi / 4,
               tau: float = 1.0, split: int = 1, g: float = 0.0) -> SceneResult:
-    """A couple on the tip of a pinned chain, solved by articulated mobility and chain splitting (7.4-7.6).
+    """A couple on the tip of a pinned chain, solved by articulated mobility and chain splitting (7.38, 7.54, 7.56).
 
     Parameters
     ----------

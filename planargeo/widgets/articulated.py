@@ -1,4 +1,4 @@
-"""Articulated inertias along a chain, drawn as conics (thesis 7.1-7.3, 10.2.2, 10.2.3).
+"""Articulated inertias along a chain, drawn as conics (thesis sections 7.1-7.3, 10.2.2, 10.2.3).
 
 A chain of ``n`` identical bodies (mass 1, joints ``L = 1`` apart, radius of gyration
 ``ρ = L / λ``) hangs from the ground; every joint after the first bends it by ``φ``.
@@ -105,7 +105,7 @@ def bend_for_tip(xy, n: int, base: float, L: float = 1.0) -> float:
     return float(0.5 * (lo + hi))
 
 
-def place_labels(ax, items, fontsize: float = 11.0) -> list:
+def place_labels(ax, items) -> list:
     """Place labels next to their anchors without overlaps (greedy, in order of priority).
 
     Each item is ``(annotation, candidates)``: an annotation made by :func:`label_artist` and a
@@ -120,8 +120,6 @@ def place_labels(ax, items, fontsize: float = 11.0) -> list:
         The axes (its limits already set).
     items : list of (Annotation, list)
         Labels in order of priority.
-    fontsize : float
-        Unused; kept for callers that size the labels.
 
     Returns
     -------

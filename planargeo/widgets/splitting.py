@@ -1,4 +1,4 @@
-"""Constrained chain: articulated mobility and chain splitting (thesis 7.4-7.6, corrected 7.38a).
+"""Constrained chain: articulated mobility and chain splitting (thesis sections 7.4-7.6, corrected 7.38a).
 
 A chain of ``n`` identical bodies (mass 1, joints ``L = 1`` apart, radius of gyration ``ρ``)
 is pinned to the ground at ``CJ_1``; every further joint bends it by ``φ``.  At rest, a pure
