@@ -161,7 +161,10 @@ def test_ipympl_canvas_is_the_figure_widget():
         ex = ProjectiveExplorer()
         assert ex.display_mode == "ipympl"
         assert isinstance(ex.fig.canvas, W.DOMWidget)
-        assert any(ex.fig.canvas is c for c in ex.widget.children[1].children)
+        def inside(w):
+            return w is ex.fig.canvas or any(inside(c) for c in getattr(w, "children", ()))
+        assert inside(ex.widget)
+        assert ex.fig.canvas.toolbar_position == "left" and ex.fig.canvas.toolbar_visible is True
         ex.controls["P x"].value = 1.0
         assert ex.message == "" and ex.readout_values["P x"] == 1.0
         import planargeo.widgets as widgets

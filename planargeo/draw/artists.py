@@ -38,7 +38,7 @@ from planargeo.draw.style import get_ax, style as _style
 __all__ = [
     "PointArtist", "LineArtist", "ConicArtist",
     "point_xy", "clip_line", "conic_geometry", "euclidean_conic",
-    "plot_point", "plot_line", "plot_conic", "plot_inertia", "legend_handles",
+    "plot_point", "plot_line", "plot_conic", "plot_inertia", "legend_handles", "place_labels",
 ]
 
 #: A finite pole farther than FAR view diagonals from the view is drawn like an ideal point
@@ -74,6 +74,15 @@ def _mat(x, name: str) -> np.ndarray:
 def point_xy(p) -> np.ndarray | None:
     """Euclidean ``(x, y)`` of a homogeneous point, or None for an ideal point.
 
+    Parameters
+    ----------
+    p : array_like (3,)
+        Homogeneous point ``[y, -x, 1]`` (times a weight).
+
+    Returns
+    -------
+    numpy.ndarray or None
+
     Examples
     --------
     >>> point_xy([2.0, -1.0, 1.0])
@@ -98,6 +107,17 @@ def clip_line(line, box) -> np.ndarray | None:
     ``box = (x0, x1, y0, y1)``.  Returns None if the line misses the box or is
     the line at infinity.  The points satisfy ``tz + y fx - x fy = 0`` (4.27)
     and lie on the boundary of the box.
+
+    Parameters
+    ----------
+    line : array_like (3,)
+        ``[fx, fy, tz]``.
+    box : (float, float, float, float)
+        ``(x0, x1, y0, y1)``.
+
+    Returns
+    -------
+    numpy.ndarray or None
 
     Examples
     --------
@@ -168,6 +188,114 @@ def _text_props(color):
     return dict(color=color, fontsize=8, ha="center", va="center")
 
 
+# --------------------------------------------------------------------------- label placement
+class _LabelBoard(martist.Artist):
+    """Invisible first artist of an axes: at each draw it forgets the label boxes placed so far.
+
+    Labels of this module's artists on an axes with a board (:func:`place_labels`)
+    avoid the boxes of the labels drawn before them and stay inside the axes.
+    """
+
+    def __init__(self):
+        super().__init__()
+        self.set_zorder(-1e9)
+        self.set_in_layout(False)
+        self.boxes: list = []
+
+    @martist.allow_rasterization
+    def draw(self, renderer):
+        self.boxes = []
+        self.stale = False
+
+
+def place_labels(ax=None):
+    """Turn on automatic label placement on ``ax``: labels avoid each other and stay inside.
+
+    Each label of a :class:`PointArtist`, :class:`LineArtist` or :class:`ConicArtist`
+    is first tried where it would go; if it overlaps a label drawn before it or
+    leaves the axes, a few other places around its anchor are tried, and the
+    label is finally moved inside the axes.  Explorers turn this on; figures
+    whose labels are placed by hand (the gallery) leave it off.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes, optional
+        Default: the current axes.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        ``ax``.
+    """
+    ax = get_ax(ax)
+    if _board(ax) is None:
+        ax._planargeo_board = _LabelBoard()
+        ax.add_artist(ax._planargeo_board)
+    return ax
+
+
+def _board(ax):
+    return getattr(ax, "_planargeo_board", None) if ax is not None else None
+
+
+#: directions (unit vectors) tried for a label that collides, in order
+_TRY = [(0.7071, 0.7071), (0.7071, -0.7071), (-0.7071, 0.7071), (-0.7071, -0.7071),
+        (1.0, 0.0), (-1.0, 0.0), (0.0, 1.0), (0.0, -1.0)]
+
+
+def _overlap_area(a, b) -> float:
+    dx = min(a.x1, b.x1) - max(a.x0, b.x0)
+    dy = min(a.y1, b.y1) - max(a.y0, b.y0)
+    return dx * dy if dx > 0.5 and dy > 0.5 else 0.0
+
+
+def _settle(text, anchor, gap_px, renderer, ax):
+    """Move ``text`` (display space) off the labels already placed and into the axes; register it."""
+    board = _board(ax)
+    if board is None:
+        return
+    box = ax.bbox
+
+    def cost(bb):
+        out = sum(_overlap_area(bb, o) for o in board.boxes)
+        dx = max(box.x0 - bb.x0, 0) + max(bb.x1 - box.x1, 0)
+        dy = max(box.y0 - bb.y0, 0) + max(bb.y1 - box.y1, 0)
+        return out + 50.0 * (dx + dy)
+
+    bb = text.get_window_extent(renderer)
+    best = (cost(bb), text.get_position(), text.get_horizontalalignment(),
+            text.get_verticalalignment())
+    if best[0] > 0 and anchor is not None:
+        anchor = np.asarray(anchor, dtype=float)
+        for scale in (1.0, 2.2):
+            for u in _TRY:
+                text.set_position(_pyxy(anchor + scale * gap_px * np.asarray(u)))
+                text.set_horizontalalignment("left" if u[0] > 0.35 else "right" if u[0] < -0.35
+                                             else "center")
+                text.set_verticalalignment("bottom" if u[1] > 0.35 else "top" if u[1] < -0.35
+                                           else "center")
+                c = cost(text.get_window_extent(renderer))
+                if c < best[0]:
+                    best = (c, text.get_position(), text.get_horizontalalignment(),
+                            text.get_verticalalignment())
+                if c == 0:
+                    break
+            if best[0] == 0:
+                break
+    text.set_position(best[1])
+    text.set_horizontalalignment(best[2])
+    text.set_verticalalignment(best[3])
+    bb = text.get_window_extent(renderer)
+    # finally inside the axes (a label never leaves them)
+    shift = np.array([max(box.x0 + 1 - bb.x0, 0) - max(bb.x1 - box.x1 + 1, 0),
+                      max(box.y0 + 1 - bb.y0, 0) - max(bb.y1 - box.y1 + 1, 0)])
+    if np.any(shift):
+        x, y = text.get_position()
+        text.set_position(_pyxy((x + shift[0], y + shift[1])))
+        bb = text.get_window_extent(renderer)
+    board.boxes.append(bb)
+
+
 class _Base(martist.Artist):
     """Common plumbing: fixed children drawn in data or display space."""
 
@@ -186,6 +314,21 @@ class _Base(martist.Artist):
         self._text_offset = np.asarray(text_offset, dtype=float)
         self._ha, self._va = "left", "bottom"
         self._add_child(self._text)
+
+    def set(self, **kwargs):
+        """Set several properties at once, as :meth:`matplotlib.artist.Artist.set` does.
+
+        Parameters
+        ----------
+        **kwargs
+            ``property=value`` for each ``set_property`` method (e.g. ``visible=False``).
+
+        Returns
+        -------
+        list
+            What each setter returned.
+        """
+        return martist.Artist.set(self, **kwargs)
 
     def _add_child(self, child):
         self._children.append(child)
@@ -269,6 +412,9 @@ class _Base(martist.Artist):
         if not self.get_visible() or self.axes is None:
             self.stale = False
             return
+        if _board(self.axes) is not None:  # alignment moved by the last label placement
+            self._text.set_horizontalalignment(self._ha)
+            self._text.set_verticalalignment(self._va)
         self._prepare_children()
         drawn = self._update_geometry(renderer)
         renderer.open_group(type(self).__name__, gid=self.get_gid())
@@ -281,7 +427,16 @@ class _Base(martist.Artist):
             return []
         off = self._text_offset * renderer.points_to_pixels(1.0)
         self._text.set_position(_pyxy(np.asarray(anchor_disp) + off))
+        self._settle_text(anchor_disp, renderer, float(np.hypot(*off)))
         return [self._text]
+
+    def _settle_text(self, anchor_disp, renderer, gap_px=None):
+        """With :func:`place_labels` on: the label off others' and inside the axes."""
+        if _board(self.axes) is None or not self._text.get_text():
+            return
+        pts = renderer.points_to_pixels(1.0)
+        gap = max(gap_px or 0.0, 6.0 * pts)
+        _settle(self._text, anchor_disp, gap, renderer, self.axes)
 
 
 # --------------------------------------------------------------------------- points
@@ -306,6 +461,11 @@ class PointArtist(_Base):
         Label offset from the pole; default: clear of the glyph, up and right.
     marker, markersize : optional
         Override the role's marker (e.g. :data:`planargeo.draw.style.SUM` for a sum).
+
+    color : color, optional
+        Override the role's colour.
+    zorder : float
+        Drawing order.
     """
 
     def __init__(self, point, *, role="twist", glyph_scale=6.0, glyph=True, text=None,
@@ -336,22 +496,45 @@ class PointArtist(_Base):
 
     # API
     def set_point(self, point):
-        """Store a new homogeneous point; geometry is recomputed at draw time."""
+        """Store a new homogeneous point; geometry is recomputed at draw time.
+
+        Parameters
+        ----------
+        point : array_like (3,) or object with ``.array``
+            ``[vx, vy, w]``.
+        """
         self._p = _vec(point, "point")
         self.stale = True
 
     set_twist = set_point
 
     def set_glyph_scale(self, glyph_scale):
-        """Rotation-glyph radius in points per unit ``|w|`` (clamped to [4, 16])."""
+        """Rotation-glyph radius in points per unit ``|w|`` (clamped to [4, 16]).
+
+        Parameters
+        ----------
+        glyph_scale : float
+            Points per unit ``|w|``.
+        """
         self._glyph_scale = float(glyph_scale)
         self.stale = True
 
     def get_point(self) -> np.ndarray:
+        """The stored homogeneous point.
+
+        Returns
+        -------
+        numpy.ndarray
+        """
         return self._p.copy()
 
     def get_xy(self):
-        """Euclidean pole, or None for an ideal point."""
+        """Euclidean pole, or None for an ideal point.
+
+        Returns
+        -------
+        numpy.ndarray or None
+        """
         return point_xy(self._p)
 
     def _update_geometry(self, renderer):
@@ -374,9 +557,16 @@ class PointArtist(_Base):
             if near:
                 xy = point_xy(p)
         if xy is not None:
+            disp = ax.transData.transform(xy)
+            bb = ax.bbox
+            if not (bb.x0 - 1 <= disp[0] <= bb.x1 + 1 and bb.y0 - 1 <= disp[1] <= bb.y1 + 1):
+                # outside the view: an arrow at the edge pointing to it, labelled inside
+                cd = np.array([(bb.x0 + bb.x1) / 2, (bb.y0 + bb.y1) / 2])
+                n = disp - cd
+                n /= np.hypot(*n)
+                return self._edge_arrow(n, n, 16.0 * pts, pts, renderer, infinite=False)
             self._marker.set_data([xy[0]], [xy[1]])
             out.append(self._marker)
-            disp = ax.transData.transform(xy)
             if self._glyph:
                 r = float(np.clip(self._glyph_scale * abs(p[2]), 4.0, 16.0)) * pts
                 arc, head = _arc_glyph(disp, r, ccw=p[2] > 0, pts=pts)
@@ -401,17 +591,34 @@ class PointArtist(_Base):
         n /= np.hypot(*n)
         t = lin @ np.array([a, b])  # display direction of the velocity (a, b)
         t /= np.hypot(*t)
+        L = float(np.clip(self._glyph_scale * np.hypot(a, b), 12.0, 40.0)) * pts
+        return self._edge_arrow(n, t, L, pts, renderer, infinite=True)
+
+    def _edge_arrow(self, n, t, L, pts, renderer, *, infinite):
+        """An arrow (along ``t``, ``L`` px long) at the view's edge in direction ``n``, labelled.
+
+        ``infinite``: an ideal point (marked ∞); else a finite point outside the view.
+        """
+        bb = self.axes.bbox
+        cd = np.array([(bb.x0 + bb.x1) / 2, (bb.y0 + bb.y1) / 2])
         half = np.array([bb.width, bb.height]) / 2
         s = min(half[k] / abs(n[k]) for k in range(2) if n[k] != 0.0)
-        L = float(np.clip(self._glyph_scale * np.hypot(a, b), 12.0, 40.0)) * pts
         base = cd + n * (s - 14 * pts)
+        out = []
         self._arrow.set_positions(tuple(base - t * L / 2), tuple(base + t * L / 2))
-        self._inf.set_position(_pyxy(base - t * (L / 2 + 7 * pts)))
-        out += [self._arrow, self._inf]
+        out.append(self._arrow)
+        if infinite:
+            self._inf.set_position(_pyxy(base - t * (L / 2 + 7 * pts)))
+            self._inf.set_horizontalalignment("center")
+            self._inf.set_verticalalignment("center")
+            if _board(self.axes) is not None:  # inside the axes, clear of other labels
+                _settle(self._inf, base - t * (L / 2 + 7 * pts), 7 * pts, renderer, self.axes)
+            out.append(self._inf)
         if self._text.get_text() and not self._auto_offset:  # as asked, from the arrow's middle
             self._text.set_position(_pyxy(base + self._text_offset * pts))
             self._text.set_horizontalalignment(self._ha)
             self._text.set_verticalalignment(self._va)
+            self._settle_text(base, renderer)
             out.append(self._text)
         elif self._text.get_text():
             # inside the view from the arrow, aligned so that it extends away from the edge
@@ -420,6 +627,7 @@ class PointArtist(_Base):
                 "right" if n[0] > 0.5 else "left" if n[0] < -0.5 else "center")
             self._text.set_verticalalignment(
                 "top" if n[1] > 0.5 else "bottom" if n[1] < -0.5 else "center")
+            self._settle_text(base - n * 10 * pts, renderer)
             out.append(self._text)
         return out
 
@@ -450,6 +658,18 @@ class LineArtist(_Base):
         Where the label's ``text_offset`` (points) starts: the arrow's tip
         (default) or its middle, the anchor (a label beside the arrow, which
         stays in view whenever the arrow's middle does).
+
+    text : str, optional
+        Label drawn next to the arrow (or the line).
+    color, linewidth, linestyle : optional
+        Override the role's style.
+    zorder : float
+        Drawing order.
+
+    Raises
+    ------
+    InputError
+        An unknown role or ``text_at``, or a line that is not three finite numbers.
     """
 
     default_text_offset = (6.0, 6.0)
@@ -475,6 +695,10 @@ class LineArtist(_Base):
                                                       mutation_scale=10, color=self._color,
                                                       linewidth=2.0, shrinkA=0, shrinkB=0))
         self._add_arc_glyph(1.4)
+        self._edge = self._add_child(FancyArrowPatch((0, 0), (1, 1), arrowstyle="-|>",
+                                                     mutation_scale=9, color=self._color,
+                                                     linewidth=1.4, shrinkA=0, shrinkB=0,
+                                                     linestyle="--", transform=IdentityTransform()))
         self._text.set_color(self._color)
 
     def _on_axes(self, ax):
@@ -482,23 +706,45 @@ class LineArtist(_Base):
         self._arrow.set_transform(ax.transData)
 
     def set_line(self, line):
-        """Store a new homogeneous line; clipping happens at draw time."""
+        """Store a new homogeneous line; clipping happens at draw time.
+
+        Parameters
+        ----------
+        line : array_like (3,) or object with ``.array``
+            ``[fx, fy, tz]``.
+        """
         self._l = _vec(line, "line")
         self.stale = True
 
     set_wrench = set_line
 
     def set_scale(self, scale):
-        """Force-arrow length in data units per unit force (None: no arrow)."""
+        """Force-arrow length in data units per unit force (None: no arrow).
+
+        Parameters
+        ----------
+        scale : float or None
+        """
         self._scale = None if scale is None else float(scale)
         self.stale = True
 
     def set_anchor(self, anchor):
-        """Where along the line the arrow sits (projected onto the line); None: view centre."""
+        """Where along the line the arrow sits (projected onto the line); None: view centre.
+
+        Parameters
+        ----------
+        anchor : (float, float) or None
+        """
         self._anchor = None if anchor is None else np.asarray(anchor, dtype=float)
         self.stale = True
 
     def get_line(self) -> np.ndarray:
+        """The stored homogeneous line.
+
+        Returns
+        -------
+        numpy.ndarray
+        """
         return self._l.copy()
 
     def get_arrow(self):
@@ -508,6 +754,11 @@ class LineArtist(_Base):
         when it sits at the view centre's foot (no ``anchor``: known only at draw
         time).  With an anchor it needs no axes, so a figure can fit its view to
         the arrow ends before drawing.
+
+        Returns
+        -------
+        tuple of numpy.ndarray or None
+            ``(tail, tip)``.
         """
         fx, fy, _ = self._l
         if self._scale is None or self._anchor is None or (fx == 0.0 and fy == 0.0):
@@ -532,7 +783,12 @@ class LineArtist(_Base):
         return anchor, anchor - half, anchor + half
 
     def get_segment(self):
-        """The clipped endpoints ``(2, 2)`` in the current view (None if not visible)."""
+        """The clipped endpoints ``(2, 2)`` in the current view (None if not visible).
+
+        Returns
+        -------
+        numpy.ndarray or None
+        """
         if self.axes is None:
             return None
         return clip_line(self._l, _view(self.axes))
@@ -561,11 +817,12 @@ class LineArtist(_Base):
                 self._text.set_position(_pyxy((cx - r - 4 * pts, cy) if right else (cx + r + 4 * pts, cy)))
                 self._text.set_horizontalalignment("right" if right else "left")
                 self._text.set_verticalalignment("center")
+                self._settle_text((cx, cy), renderer, r + 4 * pts)
                 out.append(self._text)
             return out
         seg = clip_line(self._l, _view(ax))
         if seg is None:
-            return []
+            return self._off_view(renderer, pts)
         self._line.set_data(seg[:, 0], seg[:, 1])
         out.append(self._line)
         near = self._anchor
@@ -577,7 +834,49 @@ class LineArtist(_Base):
             self._arrow.set_positions(tuple(tail), tuple(tip))
             out.append(self._arrow)
         at = anchor if self._text_at == "anchor" else tip
+        if _board(ax) is not None:  # a label point out of view: the nearest point well inside
+            x0, x1, y0, y1 = _view(ax)
+            if not (x0 <= at[0] <= x1 and y0 <= at[1] <= y1):
+                a, b = seg
+                d = b - a
+                k = float(np.clip((np.asarray(at) - a) @ d / max(d @ d, 1e-300), 0.15, 0.85))
+                at = a + k * d
         out += self._place_text(ax.transData.transform(at), renderer)
+        return out
+
+    def _off_view(self, renderer, pts):
+        """A line that misses the view: a dashed arrow at the edge pointing to it, labelled."""
+        ax = self.axes
+        fx, fy, tz = self._l
+        box = _view(ax)
+        c = np.array([(box[0] + box[1]) / 2, (box[2] + box[3]) / 2])
+        F2 = fx * fx + fy * fy
+        # foot of the perpendicular from the view centre on the line tz + y fx - x fy = 0
+        dist = (tz + c[1] * fx - c[0] * fy) / F2
+        foot = c - dist * np.array([-fy, fx])
+        if not np.all(np.isfinite(foot)):
+            return []
+        bb = ax.bbox
+        cd = np.array([(bb.x0 + bb.x1) / 2, (bb.y0 + bb.y1) / 2])
+        with np.errstate(over="ignore", invalid="ignore"):
+            n = ax.transData.transform(foot) - cd
+        if not np.all(np.isfinite(n)) or not np.any(n):
+            return []
+        n /= np.hypot(*n)
+        half = np.array([bb.width, bb.height]) / 2
+        s = min(half[k] / abs(n[k]) for k in range(2) if n[k] != 0.0)
+        base = cd + n * (s - 12 * pts)
+        L = 16 * pts
+        self._edge.set_positions(tuple(base - n * L / 2), tuple(base + n * L / 2))
+        out = [self._edge]
+        if self._text.get_text():
+            self._text.set_position(_pyxy(base - n * (L / 2 + 3 * pts)))
+            self._text.set_horizontalalignment(
+                "right" if n[0] > 0.5 else "left" if n[0] < -0.5 else "center")
+            self._text.set_verticalalignment(
+                "top" if n[1] > 0.5 else "bottom" if n[1] < -0.5 else "center")
+            self._settle_text(base - n * (L / 2), renderer)
+            out.append(self._text)
         return out
 
 
@@ -600,7 +899,16 @@ UNIT_PATHS = _unit_paths()
 
 
 def euclidean_conic(C) -> np.ndarray:
-    """The conic's matrix acting on Euclidean ``[x, y, 1]`` (``Mᵀ C M``)."""
+    """The conic's matrix acting on Euclidean ``[x, y, 1]`` (``Mᵀ C M``).
+
+    Parameters
+    ----------
+    C : array_like (3, 3)
+
+    Returns
+    -------
+    numpy.ndarray
+    """
     return _M.T @ np.asarray(C, dtype=float) @ _M
 
 
@@ -621,6 +929,17 @@ def conic_geometry(C, *, rtol: float = 1e-9) -> dict:
 
     The class tests use a relative tolerance ``rtol``: this is drawing, not
     arithmetic.
+
+    Parameters
+    ----------
+    C : array_like (3, 3)
+        Symmetric conic matrix (package coordinates).
+    rtol : float
+        Relative tolerance of the class tests.
+
+    Returns
+    -------
+    dict
 
     Examples
     --------
@@ -723,6 +1042,15 @@ class ConicArtist(_Base):
     role : {"conic", "inertia", "construct"}
     mark_center : bool
         Mark the centre (always for imaginary conics).
+
+    text : str, optional
+        Label drawn at the curve.
+    text_offset : (dx, dy) points, optional
+        Label offset (default ``(6, -10)``).
+    color, linewidth : optional
+        Override the role's style.
+    zorder : float
+        Drawing order.
     """
 
     default_text_offset = (6.0, -10.0)
@@ -753,6 +1081,10 @@ class ConicArtist(_Base):
 
         Only the affine transform (or, for a degenerate conic, the lines) changes;
         the unit path is set once per conic class.
+
+        Parameters
+        ----------
+        conic : array_like (3, 3) or object with ``.matrix`` / ``.array``
         """
         self._C = _mat(conic, "conic")
         self._geom = None
@@ -785,6 +1117,12 @@ class ConicArtist(_Base):
             art.set_transform(ax.transData)
 
     def get_conic(self) -> np.ndarray:
+        """The stored conic matrix.
+
+        Returns
+        -------
+        numpy.ndarray
+        """
         return self._C.copy()
 
     @property
@@ -798,7 +1136,13 @@ class ConicArtist(_Base):
         return bool(self._geometry().get("imaginary"))
 
     def get_xy(self) -> np.ndarray:
-        """Euclidean points of the drawn curve (data coordinates, NaN between branches)."""
+        """Euclidean points of the drawn curve (data coordinates, NaN between branches).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``(n, 2)``.
+        """
         g = self._geometry()
         if "affine" not in g:
             return np.zeros((0, 2))
@@ -887,21 +1231,77 @@ def legend_handles(ax=None) -> list:
 
 # --------------------------------------------------------------------------- plot functions
 def plot_point(point, ax=None, **kw) -> PointArtist:
-    """Add a :class:`PointArtist` to ``ax`` (default: current axes) and return it."""
+    """Add a :class:`PointArtist` to ``ax`` (default: current axes) and return it.
+
+    Parameters
+    ----------
+    point : array_like or planargeo object
+        What to draw.
+    ax : matplotlib.axes.Axes, optional
+        Default: the current axes.
+    **kw
+        Keyword arguments of :class:`PointArtist`.
+
+    Returns
+    -------
+    PointArtist
+    """
     return get_ax(ax).add_artist(PointArtist(point, **kw))
 
 
 def plot_line(line, ax=None, **kw) -> LineArtist:
-    """Add a :class:`LineArtist` to ``ax`` (default: current axes) and return it."""
+    """Add a :class:`LineArtist` to ``ax`` (default: current axes) and return it.
+
+    Parameters
+    ----------
+    line : array_like or planargeo object
+        What to draw.
+    ax : matplotlib.axes.Axes, optional
+        Default: the current axes.
+    **kw
+        Keyword arguments of :class:`LineArtist`.
+
+    Returns
+    -------
+    LineArtist
+    """
     return get_ax(ax).add_artist(LineArtist(line, **kw))
 
 
 def plot_conic(conic, ax=None, **kw) -> ConicArtist:
-    """Add a :class:`ConicArtist` to ``ax`` (default: current axes) and return it."""
+    """Add a :class:`ConicArtist` to ``ax`` (default: current axes) and return it.
+
+    Parameters
+    ----------
+    conic : array_like or planargeo object
+        What to draw.
+    ax : matplotlib.axes.Axes, optional
+        Default: the current axes.
+    **kw
+        Keyword arguments of :class:`ConicArtist`.
+
+    Returns
+    -------
+    ConicArtist
+    """
     return get_ax(ax).add_artist(ConicArtist(conic, **kw))
 
 
 def plot_inertia(inertia, ax=None, **kw) -> ConicArtist:
-    """Draw an inertia as its radius-of-gyration circle (dashed) with the centre of mass."""
+    """Draw an inertia as its radius-of-gyration circle (dashed) with the centre of mass.
+
+    Parameters
+    ----------
+    inertia : array_like or planargeo object
+        What to draw.
+    ax : matplotlib.axes.Axes, optional
+        Default: the current axes.
+    **kw
+        Keyword arguments of :class:`ConicArtist`.
+
+    Returns
+    -------
+    ConicArtist
+    """
     kw.setdefault("role", "inertia")
     return plot_conic(inertia, ax, **kw)

@@ -20,7 +20,18 @@ TOL_PX = 1.0
 
 
 def shape_points(*shapes) -> np.ndarray:
-    """Exterior vertices (n, 2) of shapely shapes (polygons or multipolygons), for view fitting."""
+    """Exterior vertices (n, 2) of shapely shapes (polygons or multipolygons), for view fitting.
+
+    Parameters
+    ----------
+    *shapes : shapely geometries
+        Polygons or multipolygons.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``(n, 2)``.
+    """
     out = [np.zeros((0, 2))]
     for s in shapes:
         for g in getattr(s, "geoms", [s]):
@@ -34,6 +45,22 @@ def fit_panel(ax, points, margin=0.08, *, hmin=1.5, hmax=4.6):
     The width stays; the height becomes ``width × (extent_y / extent_x)`` (clamped to
     ``[hmin, hmax]`` inches), so that the drawing fills the panel instead of
     leaving a band empty; then :func:`fit_view`.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        The panel.
+    points : array_like (n, 2)
+        Points to keep in view.
+    margin : float
+        Margin, a fraction of the larger extent.
+    hmin, hmax : float
+        Bounds of the figure height (inches).
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        ``ax``.
     """
     P = np.asarray(points, float).reshape(-1, 2)
     P = P[np.all(np.isfinite(P), axis=1)]
@@ -52,6 +79,22 @@ def fit_view(ax, points, margin=0.25, *, aspect=None):
 
     ``margin`` is a fraction of the larger extent; with ``aspect`` (height /
     width of the panel) the box is widened so that equal-aspect drawing fills it.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        The panel.
+    points : array_like (n, 2)
+        Points to keep in view.
+    margin : float
+        Margin, a fraction of the larger extent.
+    aspect : float, optional
+        Height / width of the panel (default: the axes').
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        ``ax``.
     """
     P = np.asarray(points, float).reshape(-1, 2)
     P = P[np.all(np.isfinite(P), axis=1)]

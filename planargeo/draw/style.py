@@ -139,7 +139,12 @@ def _rc() -> dict:
 
 @contextlib.contextmanager
 def rc_context():
-    """Context with the package's fixed fonts, sizes and SVG settings."""
+    """Context with the package's fixed fonts, sizes and SVG settings.
+
+    Yields
+    ------
+    None
+    """
     import matplotlib as mpl
 
     with mpl.rc_context(_rc()):
@@ -156,6 +161,22 @@ def _entry(table: dict, key: str, what: str, overrides: dict) -> dict:
 def style(role: str, **overrides) -> dict:
     """Keyword arguments for ``role`` (see :data:`STYLES`), updated by ``overrides``.
 
+    Parameters
+    ----------
+    role : str
+        A key of :data:`STYLES`.
+    **overrides
+        Keyword arguments replacing the role's.
+
+    Returns
+    -------
+    dict
+
+    Raises
+    ------
+    InputError
+        An unknown role.
+
     Examples
     --------
     >>> style("wrench", linewidth=3)["linewidth"]
@@ -168,6 +189,22 @@ def style(role: str, **overrides) -> dict:
 
 def sum_style(kind: str, **overrides) -> dict:
     """Keyword arguments that mark a sum (``kind`` "line" or "point"), see :data:`SUM`.
+
+    Parameters
+    ----------
+    kind : {"line", "point"}
+        What the sum is drawn as.
+    **overrides
+        Keyword arguments replacing the defaults.
+
+    Returns
+    -------
+    dict
+
+    Raises
+    ------
+    InputError
+        An unknown kind.
 
     Examples
     --------
@@ -184,6 +221,26 @@ def legend(items, ax=None, *, loc="lower right", **kw):
 
     ``items`` are ``(role, kind, text)`` with ``kind`` one of "point", "line",
     "sum-point", "sum-line"; line roles use their style's dash pattern.
+
+    Parameters
+    ----------
+    items : iterable of (str, str, str)
+        ``(role, kind, text)``.
+    ax : matplotlib.axes.Axes, optional
+        Default: the current axes.
+    loc : str
+        Legend location.
+    **kw
+        Keyword arguments of :meth:`matplotlib.axes.Axes.legend`.
+
+    Returns
+    -------
+    matplotlib.legend.Legend
+
+    Raises
+    ------
+    InputError
+        An unknown kind or role.
 
     Examples
     --------
@@ -223,7 +280,24 @@ def legend(items, ax=None, *, loc="lower right", **kw):
 
 
 def setup_axes(ax, limits=None, *, grid=False, axis_off=True):
-    """Equal-aspect geometric axes with optional ``limits = (x0, x1, y0, y1)``."""
+    """Equal-aspect geometric axes with optional ``limits = (x0, x1, y0, y1)``.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        The axes.
+    limits : (float, float, float, float), optional
+        ``(x0, x1, y0, y1)``.
+    grid : bool
+        Draw a grid.
+    axis_off : bool
+        Hide ticks and spines.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        ``ax``.
+    """
     ax.set_aspect("equal", adjustable="box")
     if limits is not None:
         ax.set_xlim(limits[0], limits[1])
@@ -238,7 +312,16 @@ def setup_axes(ax, limits=None, *, grid=False, axis_off=True):
 
 
 def get_ax(ax=None):
-    """``ax``, or the current axes when None: how every drawing function treats its ``ax=None``."""
+    """``ax``, or the current axes when None: how every drawing function treats its ``ax=None``.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes, optional
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+    """
     if ax is None:
         import matplotlib.pyplot as plt
 

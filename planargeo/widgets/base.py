@@ -46,6 +46,29 @@ Programmatic use (tests, notebooks)::
         ex.controls["a"].value = 1.0
         ex.controls["b"].value = 2.0
 
+What the base adds to every explorer (issue 13):
+
+* **Readout with units**: :attr:`Explorer.units` names each entry's unit; numbers
+  below ``zero_tol * scale`` (round-off at the scene's size) print as ``0``.
+* **Handles**: :meth:`Explorer.handles` lists :class:`Handle` objects; under
+  ipympl a press within :attr:`Explorer.handle_radius_px` of one drags it, one
+  update per mouse move, with no snapping to the sliders' grid and no echo of
+  the sliders (a browser slider rounds a value to its step and sends it back:
+  that copy is ignored).  :meth:`Explorer.drag` does the same without a mouse.
+* **Play**: an explorer that defines :meth:`Explorer.play_step` gets a Play
+  control with speed and loop; :meth:`Explorer.advance` steps it from Python.
+* **Focus and key**: :meth:`Explorer.focus_options` adds a ``"focus"`` dropdown;
+  every explorer has a ``"key"`` checkbox that shows a legend of the labelled
+  artists.  Both are display controls.
+* **Export**: :meth:`Explorer.export_svg`, :meth:`Explorer.export_png`,
+  :meth:`Explorer.export_animation` (GIF, or MP4 with ffmpeg) write files
+  atomically; the buttons put a download link in the page.
+* **Layout**: controls on the left; on the right a reserved message line, the
+  figure at its native size (at least 560 px wide, shrinking with a narrow output
+  area) and the readout under it, so that nothing moves as values change.
+  Labels of the drawing avoid each other and stay inside the axes
+  (:func:`planargeo.draw.artists.place_labels`).
+
 Examples
 --------
 Two equal and opposite rotations add up to a translation (thesis 4.2); a zero
@@ -87,6 +110,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from traitlets import validate
 
+from planargeo.draw.artists import place_labels
 from planargeo.draw.style import EXPLORER_DPI, EXPLORER_MIN_WIDTH_PX, EXPLORER_TICK_PT, setup_axes
 from planargeo.errors import InputError, OutputError, PlanargeoError
 from planargeo.files import atomic_write
@@ -155,6 +179,20 @@ def cached(cache: dict, key, make: Callable[[], Any]) -> Any:
     Explorers keep models or integrated shapes per parameter tuple with this, so
     a slider sweep over many values cannot grow a cache without bound.
 
+    Parameters
+    ----------
+    cache : dict
+        The explorer's cache.
+    key : hashable
+        The parameters the entry depends on.
+    make : callable
+        Builds the entry when it is missing.
+
+    Returns
+    -------
+    Any
+        The cached entry.
+
     Examples
     --------
     >>> store = {}
@@ -197,7 +235,21 @@ class IntSlider(W.IntSlider):
 
 
 class Step:
-    """A slider description: ``Step(lo, hi, step, value, label, integer=False)``."""
+    """A slider description: ``Step(lo, hi, step, value, label, integer=False)``.
+
+    Parameters
+    ----------
+    lo, hi : float
+        Range of the slider.
+    step : float
+        Slider step (made finer by :meth:`make` when ``value`` is not on its grid).
+    value : float
+        Default value.
+    label : str
+        Description shown beside the slider.
+    integer : bool
+        An integer slider.
+    """
 
     def __init__(self, lo: float, hi: float, step: float, value: float, label: str = "",
                  integer: bool = False):
@@ -232,6 +284,25 @@ def check_control(name: str, widget, value):
     A slider takes a finite real number in its range (an integer slider an
     integral one), a list (dropdown, toggle buttons) one of its options, a
     checkbox ``True`` or ``False``, a text box a string.
+
+    Parameters
+    ----------
+    name : str
+        The control's name (for the message).
+    widget : ipywidgets.ValueWidget
+        The control.
+    value : Any
+        The value to check.
+
+    Returns
+    -------
+    Any
+        The value as the control holds it (a float for a float slider, an int for an integer one).
+
+    Raises
+    ------
+    InputError
+        The control does not take the value.
 
     Examples
     --------
@@ -464,13 +535,17 @@ class Explorer:
         self._echo: dict[str, list] = {}
         self._shadow: dict[str, tuple[float, float]] = {}
         self._drag_active: Handle | None = None
+        self._drag_pending: tuple[float, float] | None = None
+        self._last_drag = (0.0, 0.0)
         self._extra_handles: list[Handle] = []
         self._exporting = False
         self._play_origin: dict[str, Any] | None = None
+        self._last_tick = (0.0, 0.0)
 
         # figure ----------------------------------------------------------------
         self.fig, self.ax = self._make_figure(figsize or self.figsize)
         self.setup_axes(self.ax)
+        place_labels(self.ax)  # labels avoid each other and stay inside the axes
         self.make_artists(self.ax)
         self._msg_text = self.ax.text(0.5, 0.5, "", transform=self.ax.transAxes, ha="center",
                                       va="center", fontsize=11, color="#b00020", zorder=100,
@@ -482,10 +557,12 @@ class Explorer:
         self._legend = None
 
         # widgets ---------------------------------------------------------------
-        self.readout = W.HTML(layout=W.Layout(width="300px", overflow="hidden"))
+        fig_w = f"{self.figure_px[0]}px"
+        self.readout = W.HTML(layout=W.Layout(width=fig_w, max_width="100%", overflow="hidden"))
         self.readout_strings: dict[str, str] = {}
-        self.message_box = W.HTML(layout=W.Layout(width="300px", height="4.2em", min_height="4.2em",
-                                                  max_height="4.2em", overflow="auto"))
+        self.message_box = W.HTML(layout=W.Layout(width=fig_w, max_width="100%", height="2.8em",
+                                                  min_height="2.8em", max_height="2.8em",
+                                                  overflow="auto"))
         self.reset_button = W.Button(description="Reset", icon="undo",
                                      tooltip="Return every control to its default",
                                      layout=W.Layout(width="auto"))
@@ -498,7 +575,7 @@ class Explorer:
         self.export_gif_button = W.Button(description="GIF", icon="film",
                                           tooltip="Export an animation as GIF (a download link)",
                                           layout=W.Layout(width="auto"))
-        self.export_label = W.HTML(layout=W.Layout(width="310px", min_height="1.6em"))
+        self.export_label = W.HTML(layout=W.Layout(width="310px", height="1.8em", overflow="hidden"))
         self.reset_button.on_click(self.guarded(lambda _b: self.reset()))
         self.export_button.on_click(self.guarded(lambda _b: self._export_clicked("svg")))
         self.export_png_button.on_click(self.guarded(lambda _b: self._export_clicked("png")))
@@ -525,6 +602,18 @@ class Explorer:
 
     # ---------------------------------------------------------------- subclass API
     def make_controls(self) -> dict[str, W.ValueWidget]:  # pragma: no cover - abstract
+        """The explorer's controls (subclasses).
+
+        Returns
+        -------
+        dict
+            ``{name: widget}``; each widget's initial value is the default.
+
+        Raises
+        ------
+        NotImplementedError
+            In the base class.
+        """
         raise NotImplementedError
 
     #: the initial view ``(x0, x1, y0, y1)`` of the equal-aspect axes (None: autoscale), and a light grid
@@ -532,17 +621,74 @@ class Explorer:
     grid: bool = True
 
     def setup_axes(self, ax) -> None:
+        """Equal-aspect axes with :attr:`limits` and a light grid (subclasses may change).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+            The explorer's axes.
+        """
         setup_axes(ax, self.limits, axis_off=False)
         if self.grid:
             ax.grid(True, lw=0.3, alpha=0.5)
 
     def make_artists(self, ax) -> None:  # pragma: no cover - abstract
+        """Create every artist once and keep it on ``self`` (subclasses).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+            The explorer's axes.
+
+        Raises
+        ------
+        NotImplementedError
+            In the base class.
+        """
         raise NotImplementedError
 
     def compute(self, values: dict[str, Any], changed: set[str]) -> Any:  # pragma: no cover
+        """The scene's numbers for the control ``values`` (subclasses).
+
+        Parameters
+        ----------
+        values : dict
+            Every control's value.
+        changed : set of str
+            The controls that changed since the shown state (all of them at first).
+
+        Returns
+        -------
+        Any
+            The state :meth:`render` draws.
+
+        Raises
+        ------
+        PlanargeoError
+            The values describe a state that cannot be shown (the update is refused).
+        NotImplementedError
+            In the base class.
+        """
         raise NotImplementedError
 
     def render(self, state: Any) -> dict[str, Any]:  # pragma: no cover - abstract
+        """Update the artists in place for ``state`` and return the readout (subclasses).
+
+        Parameters
+        ----------
+        state : Any
+            What :meth:`compute` returned.
+
+        Returns
+        -------
+        dict
+            Readout entries ``{name: value}`` (names starting with ``_`` are not shown).
+
+        Raises
+        ------
+        NotImplementedError
+            In the base class.
+        """
         raise NotImplementedError
 
     def adjust(self, values: dict[str, Any], changed: set[str]) -> dict[str, Any]:
@@ -550,11 +696,29 @@ class Explorer:
 
         They are set with the change and refused with it; e.g. the screw-sum
         explorer turns rotations into forces when it switches to wrenches.
+
+        Parameters
+        ----------
+        values : dict
+            Every control's value.
+        changed : set of str
+            The controls that changed.
+
+        Returns
+        -------
+        dict
+            ``{name: value}`` of the controls that follow.
         """
         return {}
 
     def extra_widgets(self) -> list:
-        """Widgets shown below the controls (e.g. a Play button)."""
+        """Widgets shown below the controls (e.g. a Play button).
+
+        Returns
+        -------
+        list
+            Widgets (default: none).
+        """
         return []
 
     def connect_mouse(self) -> None:
@@ -626,7 +790,13 @@ class Explorer:
 
     @contextlib.contextmanager
     def hold(self):
-        """Change several controls with a single update at the end."""
+        """Change several controls with a single update at the end.
+
+        Yields
+        ------
+        Explorer
+            ``self``.
+        """
         self._hold += 1
         try:
             yield self
@@ -641,6 +811,21 @@ class Explorer:
 
         Every value is checked first (:func:`check_control`): if one is refused,
         none is set and the message names it.
+
+        Parameters
+        ----------
+        **values
+            ``name=value`` for each control to set.
+
+        Returns
+        -------
+        Explorer
+            ``self``.
+
+        Raises
+        ------
+        InputError
+            Never raised out of it: a bad name or value is refused and shown in :attr:`message`.
         """
         problems = []
         for k, v in values.items():
@@ -802,7 +987,17 @@ class Explorer:
     def _play_tick(self, change) -> None:
         if not self.play_control.playing:
             return
-        if self._frame():
+        # a frame slower than the Play interval makes ticks queue up in the kernel: drop the ones
+        # that arrive right after such a frame, so that Play stays in time and stops when asked
+        interval = self.play_control.interval / 1000.0
+        now = time.monotonic()
+        last_end, last_cost = self._last_tick
+        if last_cost > interval and now - last_end < max(0.5 * interval, 0.01):
+            return
+        t0 = time.monotonic()
+        ok = self._frame()
+        self._last_tick = (time.monotonic(), time.monotonic() - t0)
+        if ok:
             return
         if self.play_loop is not None and self.play_loop.value and self._play_origin and \
                 not self._message:
@@ -994,11 +1189,23 @@ class Explorer:
             self.fig.canvas.draw()
         else:
             buf = io.BytesIO()
-            self.fig.savefig(buf, format="png", dpi=self.dpi)
+            # fast PNG compression: the image goes to the page once, its encoding is on every update
+            self.fig.savefig(buf, format="png", dpi=self.dpi, pil_kwargs={"compress_level": 1})
             self.image.value = buf.getvalue()
 
     def guarded(self, callback: Callable) -> Callable:
-        """``callback`` for a button or the mouse: an exception becomes a message, never escapes."""
+        """``callback`` for a button or the mouse: an exception becomes a message, never escapes.
+
+        Parameters
+        ----------
+        callback : callable
+            The function to guard.
+
+        Returns
+        -------
+        callable
+            A function that calls ``callback`` and shows any exception as the message.
+        """
         def run(*args):
             try:
                 return callback(*args)
@@ -1022,7 +1229,13 @@ class Explorer:
         return bundle
 
     def show(self):
-        """Display the explorer (in a notebook) and return it."""
+        """Display the explorer (in a notebook) and return it.
+
+        Returns
+        -------
+        Explorer
+            ``self``.
+        """
         from IPython.display import display
 
         display(self.widget)
@@ -1079,10 +1292,13 @@ class Explorer:
         controls = W.VBox(list(self.controls.values()) + play + self.extra_widgets()
                           + [buttons, self.export_label],
                           layout=W.Layout(width="330px", min_width="330px", overflow="visible"))
-        right = W.VBox([self.message_box, W.HTML("<b>Readout</b>"), self.readout],
-                       layout=W.Layout(width="310px", min_width="310px"))
+        # controls on the left; on the right a reserved message line, the figure and the readout
+        # under it: fixed widths and heights above the readout, so nothing moves when a message
+        # appears or the readout changes (the readout only grows downwards, with nothing below)
+        right = W.VBox([self.message_box, fig_widget, self.readout],
+                       layout=W.Layout(align_items="flex-start", overflow="visible"))
         head = W.HTML(f"<h4 style='margin:2px'>{html.escape(self.title)}</h4>")
-        body = W.HBox([controls, fig_widget, right],
+        body = W.HBox([controls, right],
                       layout=W.Layout(flex_flow="row wrap", align_items="flex-start"))
         root = W.VBox([head, body])
         root.add_class("planargeo-explorer")
@@ -1116,16 +1332,35 @@ class Explorer:
                 best, dmin = h, d
         self._drag_active = best
 
+    #: a mouse move arriving within this many seconds of the end of a drag step that took longer
+    #: than :attr:`DRAG_BACKLOG_COST` was queued behind it: it is kept and applied with the next
+    #: move or the release, not drawn on its own (so the figure keeps up with the mouse)
+    DRAG_BACKLOG_GAP = 0.008
+    DRAG_BACKLOG_COST = 0.03
+
     def _on_move(self, ev) -> None:
         h = self._drag_active
         if h is None or ev.inaxes is not self.ax or ev.xdata is None:
             return
         x, y = ev.xdata, ev.ydata
-        if np.isfinite(x) and np.isfinite(y):
-            self._drag_to(h, float(x), float(y))
+        if not (np.isfinite(x) and np.isfinite(y)):
+            return
+        now = time.monotonic()
+        last_end, last_cost = self._last_drag
+        if last_cost > self.DRAG_BACKLOG_COST and now - last_end < self.DRAG_BACKLOG_GAP:
+            self._drag_pending = (float(x), float(y))
+            self._last_drag = (now, last_cost)
+            return
+        self._drag_pending = None
+        self._drag_to(h, float(x), float(y))
+        self._last_drag = (time.monotonic(), time.monotonic() - now)
 
     def _on_release(self, ev) -> None:
-        self._drag_active = None
+        h, pending = self._drag_active, self._drag_pending
+        self._drag_active, self._drag_pending = None, None
+        if h is not None and pending is not None:  # the last position, queued behind a slow step
+            self._drag_to(h, *pending)
+        self._last_drag = (0.0, 0.0)
 
     def _make_observer(self, name: str) -> Callable:
         widget = self.controls[name]
@@ -1307,7 +1542,17 @@ class Explorer:
         self._safe_redraw()
 
     def figure_message(self, exc: Exception) -> str:
-        """Short text drawn on the figure when an update is refused."""
+        """Short text drawn on the figure when an update is refused.
+
+        Parameters
+        ----------
+        exc : Exception
+            Why the update was refused.
+
+        Returns
+        -------
+        str
+        """
         return _short(self._reason(exc))
 
     def _safe_redraw(self) -> None:
@@ -1331,14 +1576,14 @@ class Explorer:
             self.readout_strings[str(k)] = f"{text} {unit}" if unit else text
             rows.append(
                 f"<tr><td style='padding-right:6px;line-height:1.25;white-space:nowrap;"
-                f"overflow:hidden;text-overflow:ellipsis;max-width:120px' title='{html.escape(str(k))}'>"
+                f"overflow:hidden;text-overflow:ellipsis;max-width:300px' title='{html.escape(str(k))}'>"
                 f"{html.escape(str(k))}</td>"
                 f"<td style='text-align:right;font-family:monospace;line-height:1.25;"
                 f"white-space:nowrap'>{text}</td>"
                 f"<td style='padding-left:3px;line-height:1.25;white-space:nowrap;color:#555'>"
                 f"{html.escape(unit)}</td></tr>")
-        return (f"<table class='planargeo-readout' style='font-size:12px;table-layout:auto;"
-                f"border-collapse:collapse'>{''.join(rows)}</table>")
+        return (f"<b>Readout</b><table class='planargeo-readout' style='font-size:12px;"
+                f"table-layout:auto;border-collapse:collapse'>{''.join(rows)}</table>")
 
     def _export_bytes(self, kind: str) -> bytes:
         if kind == "svg":
@@ -1361,8 +1606,9 @@ class Explorer:
                 data, name, saved = self._export_bytes(kind), f"planargeo-{self.slug}.{kind}", ""
             href = f"data:{mime};base64,{base64.b64encode(data).decode('ascii')}"
             self.export_label.value = (
-                f"{saved}<a download='{html.escape(name)}' href='{href}' "
-                f"class='planargeo-download' style='font-weight:bold'>⬇ {html.escape(name)}</a>")
+                f"<div style='white-space:nowrap;overflow:hidden;text-overflow:ellipsis'>"
+                f"<a download='{html.escape(name)}' href='{href}' class='planargeo-download' "
+                f"style='font-weight:bold'>⬇ {html.escape(name)}</a> {saved}</div>")
         except Exception as exc:  # noqa: BLE001
             self.export_label.value = (f"<span style='color:#b00020'>export failed: "
                                        f"{html.escape(str(exc))}</span>")
@@ -1385,7 +1631,22 @@ class Explorer:
 
     # -------------------------------------------------------------- benchmarking
     def time_update(self, name: str, values: list, repeat: int = 1) -> list[float]:
-        """Seconds from setting ``controls[name]`` to the redrawn figure, per value."""
+        """Seconds from setting ``controls[name]`` to the redrawn figure, per value.
+
+        Parameters
+        ----------
+        name : str
+            The control to set.
+        values : list
+            Values to set in turn.
+        repeat : int
+            How many times to go through ``values``.
+
+        Returns
+        -------
+        list of float
+            Seconds per update.
+        """
         out = []
         for _ in range(repeat):
             for v in values:

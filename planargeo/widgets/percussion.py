@@ -11,7 +11,9 @@ Two ways to play:
 
 ``drive = "acceleration pole"``
     move the pole (sliders, or drag it under ``%matplotlib widget``); the axis
-    of percussion follows;
+    of percussion follows; or drag the axis itself, by its point on the line
+    from the pole through ``c`` (a parallel move) or by a second point on it
+    (a turn), and the pole follows (``a = I⁻¹ f``);
 ``drive = "impact"``
     strike the body with a force across its long axis at a chosen place; the
     pole of the resulting acceleration follows (``a = I⁻¹ f``).  Strike at
@@ -36,10 +38,10 @@ from shapely.geometry import Polygon, box
 
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
 from planargeo.draw.style import COLORS
-from planargeo.errors import InvalidPolygonError
+from planargeo.errors import DegenerateGeometryError, InputError, InvalidPolygonError
 from planargeo.screws.inertia import Inertia, percussion_axis, percussion_pole
 from planargeo.geometry.projective import from_xy
-from planargeo.widgets.base import Explorer, Step, cached
+from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["PercussionExplorer", "PRESETS", "parse_polygon"]
 
@@ -58,6 +60,20 @@ def parse_polygon(text: str) -> Polygon:
     """A shapely polygon from ``"x, y; x, y; ..."`` (at least three vertices).
 
     Raises :class:`~planargeo.errors.InvalidPolygonError` naming ``polygon``.
+
+    Parameters
+    ----------
+    text : str
+        Vertices ``"x, y; x, y; ..."``.
+
+    Returns
+    -------
+    shapely.geometry.Polygon
+
+    Raises
+    ------
+    InvalidPolygonError
+        Fewer than three vertices, unreadable numbers, or a self-intersecting outline.
 
     Examples
     --------
@@ -82,19 +98,38 @@ def parse_polygon(text: str) -> Polygon:
 
 
 class PercussionExplorer(Explorer):
-    """Acceleration pole and axis of percussion of a body at rest (thesis 5.4)."""
+    """Acceleration pole and axis of percussion of a body at rest (thesis 5.4).
+
+    Parameters
+    ----------
+    **kw
+        Keyword arguments of :class:`~planargeo.widgets.base.Explorer` (``display``, control values...).
+    """
 
     title = "Inertia and percussion: the sweet spot"
     slug = "percussion"
     figsize = (6.0, 4.8)
     limits = (-0.9, 1.6, -0.9, 0.9)
     display_controls = ("angular accel. α",)
+    scale = 1.0
+    units = {"pole x": "m", "pole y": "m", "mass m": "kg", "radius of gyration ρ": "m",
+             "centre of mass": "m", "pole": "m", "d = |pole − c|": "m", "r = ρ²/d (5.68)": "m",
+             "l = d + ρ²/d (5.67)": "m", "force for α: m d α (5.66)": "N",
+             "centre of percussion": "m", "sweet spot of the grip": "m", "impact at": "m",
+             "pole distance from grip": "m"}
 
     def __init__(self, **kw):
         self._inertias: dict = {}   # shape key -> (shape, unit-density Inertia)
         super().__init__(**kw)
 
     def make_controls(self):
+        """The controls (see the module docstring).
+
+        Returns
+        -------
+        dict
+            ``{name: widget}``.
+        """
         return {
             "pole x": Step(-1.5, 2.0, 0.01, 0.0, "pole x").make("pole x"),
             "pole y": Step(-1.2, 1.2, 0.01, 0.0, "pole y").make("pole y"),
@@ -110,6 +145,13 @@ class PercussionExplorer(Explorer):
         }
 
     def make_artists(self, ax):
+        """Create the artists once (updated in place by :meth:`render`).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+            The explorer's axes.
+        """
         self.body = MplPolygon(np.zeros((3, 2)), closed=True, fc=COLORS["body"], ec="black",
                                alpha=0.6, zorder=2)
         ax.add_patch(self.body)
@@ -123,11 +165,78 @@ class PercussionExplorer(Explorer):
                                                  text="axis of percussion f = I a"))
         self.join_art = ax.add_artist(LineArtist([1.0, 0.0, 0.0], role="construct", scale=None))
         self.spot = Line2D([], [], marker="*", ms=12, color=COLORS["wrench"], mec="black",
-                           ls="none", zorder=6)
+                           ls="none", zorder=6, label="centre of percussion")
         ax.add_line(self.spot)
+        self.spot_label = ax.add_artist(PointArtist(z, role="accel", glyph=False, markersize=0.1,
+                                                    color=COLORS["wrench"], text="centre of percussion"))
+        self.com_art = ax.add_artist(PointArtist(z, role="twist", glyph=False, markersize=5,
+                                                 color="black", text="c"))
+        self.com_art.set_label("centre of mass c")
+        self.grip_label = ax.add_artist(PointArtist(z, role="twist", glyph=False, markersize=0.1,
+                                                    color=COLORS["ground"], text="grip"))
+        self.grip_label.set_text_beside((-0.7071, -0.7071), 7.0)
+        self.gyration.set_label("gyration circle ρ (I)")
+        self.pole_art.set_label("acceleration pole a")
+        self.axis_art.set_label("axis of percussion f = I a")
 
-    def connect_mouse(self):
-        self.connect_drag("pole x", "pole y", lambda: (self.values["pole x"], self.values["pole y"]))
+    # -- handles -------------------------------------------------------------------
+    def _axis_points(self):
+        """(point on the axis nearest ``c``, a second point on it), or None (no finite axis)."""
+        st = self.state
+        if st is None:
+            return None
+        f, c = st["f"], st["c"]
+        F = math.hypot(f[0], f[1])
+        if F == 0.0:
+            return None
+        e = np.array([f[0], f[1]]) / F
+        dist = (f[2] + c[1] * f[0] - c[0] * f[1]) / (F * F)
+        foot = c - dist * np.array([-f[1], f[0]])
+        return foot, foot + 0.35 * e
+
+    def _pole_for_axis(self, f):
+        """Control values whose acceleration pole has ``f`` as its axis (``a = I⁻¹ f``)."""
+        a = percussion_pole(self.state["I"].matrix, f)
+        if a[2] == 0 or abs(a[2]) <= 1e-12 * float(np.abs(a).max()):
+            raise DegenerateGeometryError("an axis through the centre of mass has its pole at "
+                                          "infinity (a pure translation)")
+        x, y = float(-a[1] / a[2]), float(a[0] / a[2])
+        for name, v in (("pole x", x), ("pole y", y)):
+            w = self.controls[name]
+            if not w.min <= v <= w.max:
+                raise InputError(f"{name} must stay between {w.min:g} and {w.max:g}: this axis "
+                                 f"needs {v:.3g}")
+        return {"pole x": x, "pole y": y}
+
+    def _drag_axis_point(self, x, y):
+        f = self.state["f"]
+        return self._pole_for_axis(np.array([f[0], f[1], -(y * f[0] - x * f[1])]))
+
+    def _drag_axis_direction(self, x, y):
+        foot = self._axis_points()[0]
+        d = np.array([x, y]) - foot
+        if math.hypot(*d) < 1e-9:
+            raise DegenerateGeometryError("the direction point is on the turning point")
+        return self._pole_for_axis(np.array([d[0], d[1], -(foot[1] * d[0] - foot[0] * d[1])]))
+
+    def handles(self):
+        """``a`` (the pole), ``axis (point)``, ``axis (direction)`` (pole drive) or ``impact``.
+
+        Returns
+        -------
+        list of Handle
+        """
+        pole_drive = lambda: self.state is not None and self.values["drive"] == "acceleration pole"
+        axis = lambda k: (tuple(self._axis_points()[k]) if pole_drive() and self._axis_points()
+                          is not None else None)
+        return [
+            Handle("a", lambda: (self.values["pole x"], self.values["pole y"]) if pole_drive()
+                   else None, lambda x, y: {"pole x": x, "pole y": y}),
+            Handle("axis (point)", lambda: axis(0), self._drag_axis_point),
+            Handle("axis (direction)", lambda: axis(1), self._drag_axis_direction),
+            Handle("impact", lambda: None if pole_drive() or self.state is None
+                   else (self.values["impact at"], 0.0), lambda x, y: {"impact at": x}),
+        ]
 
     def _shape(self, v):
         return self._shape_inertia(v)[0]
@@ -143,6 +252,25 @@ class PercussionExplorer(Explorer):
         return shape, Inertia.from_polygon(shape)
 
     def compute(self, v, changed):
+        """The state for the control values ``v``.
+
+        Parameters
+        ----------
+        v : dict
+            Every control's value.
+        changed : set of str
+            The controls that changed.
+
+        Returns
+        -------
+        dict
+            The state drawn by :meth:`render`.
+
+        Raises
+        ------
+        PlanargeoError
+            A state that cannot be shown (refused by the base).
+        """
         shape, I0 = self._shape_inertia(v)
         m = float(v["mass (kg)"])
         # uniform lamina of mass m: the unit-density inertia scaled by m / area (1.65 is linear)
@@ -160,12 +288,25 @@ class PercussionExplorer(Explorer):
         return {"shape": shape, "I": I, "c": c, "a": a, "f": line}
 
     def render(self, st):
+        """Update the artists for the state ``st``; return the readout.
+
+        Parameters
+        ----------
+        st : dict
+            What :meth:`compute` returned.
+
+        Returns
+        -------
+        dict
+            Readout entries.
+        """
         I, c, a, f = st["I"], st["c"], st["a"], st["f"]
         shape = st["shape"]
         self.body.set_xy(np.asarray(shape.exterior.coords))
         self.gyration.set_conic(I.matrix)
         self.pole_art.set_point(a)
         self.axis_art.set_line(f)
+        self.com_art.set_point(from_xy(c))
         rho = float(I.radius_of_gyration)
         m = float(I.mass)
         out = {"pole x": self.values["pole x"], "pole y": self.values["pole y"],
@@ -205,6 +346,10 @@ class PercussionExplorer(Explorer):
                 self.spot.set_data([grip_spot[0]], [grip_spot[1]])
             out["impact at"] = self.values["impact at"]
             out["pole distance from grip"] = "at infinity" if P is None else float(np.hypot(*P))
+        sx, sy = self.spot.get_data()
+        self.spot_label.set_visible(len(sx) > 0)
+        if len(sx):
+            self.spot_label.set_point(from_xy([sx[0], sy[0]]))
         self._fit_view(shape)
         return out
 

@@ -15,8 +15,18 @@ distance-like number ``P·M`` equals ``pole(M)·polar(P)``.  Ideal elements are
 ordinary: put ``P`` at infinity (a direction) and its polar is a diameter, a
 line through the centre; the line at infinity has the centre as its pole.
 
-Under ``%matplotlib widget`` drag ``P`` with the mouse.  The *construction*
-and *line and its pole* checkboxes only redraw (nothing is recomputed).
+Under ``%matplotlib widget`` drag with the mouse (or call :meth:`Explorer.drag`):
+the point ``P``, the line ``M`` by a point on it (``M (point)``, first its point
+nearest the origin: a parallel move) or by a second point on it (``M (direction)``,
+a turn about the first), and the ``pole of M`` (``M`` becomes the polar of the dragged point).
+The *construction* and *line and its pole* checkboxes only redraw (nothing is
+recomputed).
+
+Examples
+--------
+>>> ex = ProjectiveExplorer(display="agg")
+>>> ex.drag("P", (2.0, 1.5), (0.5, 0.25), steps=3).values["P x"]
+0.5
 """
 from __future__ import annotations
 
@@ -29,9 +39,9 @@ from planargeo.geometry.conics import (centre, classify, conic_circle, conic_ell
                       conic_parabola, polar, polar_construction_interior, pole,
                       tangents_from_point)
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
-from planargeo.errors import DegenerateGeometryError
+from planargeo.errors import DegenerateGeometryError, InputError
 from planargeo.geometry.projective import from_xy
-from planargeo.widgets.base import Explorer, Step
+from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["ProjectiveExplorer", "CONICS", "make_conic"]
 
@@ -40,6 +50,20 @@ CONICS = ("circle", "ellipse", "hyperbola", "parabola", "inertia (imaginary circ
 
 def make_conic(kind: str, a: float, b: float, tilt_deg: float) -> np.ndarray:
     """The playground's conic: centred at the origin (parabola: vertex), turned by ``tilt``.
+
+    Parameters
+    ----------
+    kind : str
+        One of :data:`CONICS`.
+    a, b : float
+        Semi-axes (circle: radius ``a``; parabola: ``a / 4`` is the focal distance).
+    tilt_deg : float
+        Turn of the axes in degrees.
+
+    Returns
+    -------
+    numpy.ndarray
+        The conic's (3, 3) matrix.
 
     Examples
     --------
@@ -68,6 +92,18 @@ def _line(angle_deg: float, offset: float) -> np.ndarray:
     return np.array([e[0], e[1], foot[0] * e[1] - foot[1] * e[0]])
 
 
+def _angle_offset(M) -> tuple[float, float]:
+    """``(angle in degrees, offset)`` of the finite line ``M`` (inverse of :func:`_line`)."""
+    fx, fy, tz = (float(v) for v in M)
+    F = math.hypot(fx, fy)
+    if F == 0.0:
+        raise DegenerateGeometryError("the line is the line at infinity: no angle and offset")
+    e = np.array([fx, fy]) / F
+    # a point (x, y) of the line: tz + y fx - x fy = 0; offset = -e_y x + e_x y = tz/F ... sign:
+    # the foot offset * (-e_y, e_x) satisfies tz + offset (e_x fx + e_y fy) = 0 -> offset = -tz / F
+    return math.degrees(math.atan2(e[1], e[0])), -tz / F
+
+
 def _xy(p):
     p = np.asarray(p, float)
     if p[2] == 0:
@@ -83,8 +119,19 @@ class ProjectiveExplorer(Explorer):
     figsize = (5.6, 5.4)
     limits = (-4, 4, -4, 4)
     display_controls = ("construction", "line and its pole")
+    scale = 4.0
+    units = {"P x": "m", "P y": "m", "P": "m", "polar of P: distance to origin": "m",
+             "pole of M": "m", "centre": "m", "conic": "—", "P is": "—", "P·M": "—",
+             "pole(M)·polar(P)": "—"}
 
     def make_controls(self):
+        """The controls (see the module docstring).
+
+        Returns
+        -------
+        dict
+            ``{name: widget}``.
+        """
         return {
             "P x": Step(-4, 4, 0.05, 2.0, "P x").make("P x"),
             "P y": Step(-4, 4, 0.05, 1.5, "P y").make("P y"),
@@ -103,9 +150,17 @@ class ProjectiveExplorer(Explorer):
         }
 
     def make_artists(self, ax):
+        """Create the artists once (updated in place by :meth:`render`).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+            The explorer's axes.
+        """
         z = np.array([0.0, 0.0, 1.0])
         zl = np.array([1.0, 0.0, 0.0])
         self.conic_art = ax.add_artist(ConicArtist(np.eye(3), role="conic", text="C"))
+        self.conic_art.set_label("conic C")
         self.P_art = ax.add_artist(PointArtist(z, role="twist", glyph=False, text="P", markersize=7))
         self.polar_art = ax.add_artist(LineArtist(zl, role="wrench", scale=None, text="polar of P"))
         self.M_art = ax.add_artist(LineArtist(zl, role="momentum", scale=None, text="M"))
@@ -116,11 +171,104 @@ class ProjectiveExplorer(Explorer):
                           for _ in range(2)]
         self.cpts_art = [ax.add_artist(PointArtist(z, role="twist", glyph=False, markersize=4,
                                                    color="#7F7F7F")) for _ in range(6)]
+        for k, a in enumerate(self.tan_art):
+            a.set_label("_tangent" if k else "tangents (5.2.2)")
 
-    def connect_mouse(self):
-        self.connect_drag("P x", "P y", lambda: (self.values["P x"], self.values["P y"]))
+    # -- handles -------------------------------------------------------------------
+    def _M_points(self):
+        """(foot, second point) of the finite line M: its point nearest the origin, one unit on."""
+        st = self.state
+        if st is None or self.values["M at infinity"] or not self.values["line and its pole"]:
+            return None
+        ang, off = _angle_offset(st["M"])
+        t = math.radians(ang)
+        e = np.array([math.cos(t), math.sin(t)])
+        foot = off * np.array([-e[1], e[0]])
+        pivot = getattr(self, "_M_pivot", None)  # the point M turns about: kept while on M
+        M = st["M"]
+        if pivot is None or abs(M[2] + pivot[1] * M[0] - pivot[0] * M[1]) > 1e-9 * max(
+                1.0, float(np.abs(pivot).max())):
+            pivot = foot
+        self._M_pivot = pivot
+        return pivot, pivot + 1.5 * e
+
+    def _drag_M_point(self, x, y):
+        ang = self.values["line angle (deg)"]
+        t = math.radians(ang)
+        self._M_pivot = np.array([x, y], dtype=float)
+        return {"line offset": -math.sin(t) * x + math.cos(t) * y}
+
+    def _drag_M_direction(self, x, y):
+        pts = self._M_points()
+        if pts is None:
+            raise DegenerateGeometryError("M is not shown as a finite line")
+        foot = pts[0]  # the pivot: M turns about it
+        d = np.array([x, y]) - foot
+        if np.hypot(*d) < 1e-9:
+            raise DegenerateGeometryError("the direction point is on the turning point")
+        ang = math.degrees(math.atan2(d[1], d[0]))
+        t = math.radians(ang)
+        return {"line angle (deg)": ang, "line offset": -math.sin(t) * foot[0] + math.cos(t) * foot[1]}
+
+    def _drag_pole_of_M(self, x, y):
+        C = self.state["C"]
+        M = polar(C, from_xy([x, y]))
+        if math.hypot(M[0], M[1]) <= 1e-12 * float(np.abs(M).max()):
+            raise DegenerateGeometryError("the polar of this point is the line at infinity (the centre)")
+        ang, off = _angle_offset(M)
+        lo, hi = self.controls["line offset"].min, self.controls["line offset"].max
+        if not lo <= off <= hi:
+            raise InputError(f"line offset must stay between {lo:g} and {hi:g}: the polar of "
+                             f"({x:.3g}, {y:.3g}) is {off:.3g} from the origin")
+        return {"line angle (deg)": ang, "line offset": off}
+
+    def handles(self):
+        """``P``, ``M (point)``, ``M (direction)``, ``pole of M``.
+
+        Returns
+        -------
+        list of Handle
+        """
+        def P_where():
+            v = self.values
+            return None if v["P at infinity"] else (v["P x"], v["P y"])
+
+        def pole_where():
+            st = self.state
+            if st is None or self._M_points() is None:
+                return None
+            p = st["poleM"]
+            return None if p[2] == 0 else (float(-p[1] / p[2]), float(p[0] / p[2]))
+
+        return [
+            Handle("P", P_where, lambda x, y: {"P x": x, "P y": y}),
+            Handle("M (point)", lambda: None if self._M_points() is None else
+                   tuple(self._M_points()[0]), self._drag_M_point),
+            Handle("M (direction)", lambda: None if self._M_points() is None else
+                   tuple(self._M_points()[1]), self._drag_M_direction),
+            Handle("pole of M", pole_where, self._drag_pole_of_M),
+        ]
 
     def compute(self, v, changed):
+        """The state for the control values ``v``.
+
+        Parameters
+        ----------
+        v : dict
+            Every control's value.
+        changed : set of str
+            The controls that changed.
+
+        Returns
+        -------
+        dict
+            The state drawn by :meth:`render`.
+
+        Raises
+        ------
+        PlanargeoError
+            A state that cannot be shown (refused by the base).
+        """
         C = make_conic(v["conic"], v["a"], v["b"], v["tilt (deg)"])
         if v["P at infinity"]:
             # the ideal point in the direction (dx, dy): [dy, -dx, 0] (conventions: direction (-b, a))
@@ -158,6 +306,18 @@ class ProjectiveExplorer(Explorer):
         return st
 
     def render(self, st):
+        """Update the artists for the state ``st``; return the readout.
+
+        Parameters
+        ----------
+        st : dict
+            What :meth:`compute` returned.
+
+        Returns
+        -------
+        dict
+            Readout entries.
+        """
         v = self.values
         self.conic_art.set_conic(st["C"])
         self.P_art.set_point(st["P"])

@@ -1,0 +1,283 @@
+"""Dragging handles and Play (issue 13): one update per move, no echo, no snapping, refusals keep state.
+
+The mouse is driven through the canvas's own event callbacks (what ipympl feeds
+it); the browser's slider echo is driven through ``Widget.set_state``, the
+method ipywidgets calls for a message from the front end.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from matplotlib.backend_bases import MouseEvent
+
+from planargeo.errors import InputError, SceneError
+from planargeo.widgets import PercussionExplorer, ProjectiveExplorer
+from planargeo.widgets.base import Explorer, Handle, Step
+
+
+class Dot(Explorer):
+    """A dot at (x, y); x > 1.5 cannot be shown; Play moves it right by ``v dt``."""
+
+    limits = (-2, 2, -2, 2)
+    units = {"x": "m", "y": "m"}
+
+    def make_controls(self):
+        return {"x": Step(-2, 2, 0.1, 0.0, "x").make("x"), "y": Step(-2, 2, 0.1, 0.0, "y").make("y"),
+                "v": Step(-2, 2, 0.1, 1.0, "v").make("v")}
+
+    def make_artists(self, ax):
+        self.dot, = ax.plot([0], [0], "o")
+
+    def compute(self, v, changed):
+        if v["x"] > 1.5:
+            raise SceneError("x must not exceed 1.5")
+        return dict(v)
+
+    def render(self, st):
+        self.dot.set_data([st["x"]], [st["y"]])
+        return {"x": st["x"], "y": st["y"]}
+
+    def handles(self):
+        return [Handle("dot", lambda: (self.values["x"], self.values["y"]),
+                       lambda x, y: {"x": x, "y": y})]
+
+    def play_step(self, values, dt):
+        x = values["x"] + values["v"] * dt
+        return None if x > 1.0 else {"x": x}
+
+
+def _event(ex, kind, xy, button=None):
+    px, py = ex.ax.transData.transform(xy)
+    ex.fig.canvas.callbacks.process(kind, MouseEvent(kind, ex.fig.canvas, px, py, button=button))
+
+
+# ----------------------------------------------------------------------- drag
+def test_drag_is_one_update_per_move_and_not_snapped():
+    ex = Dot(display="agg")
+    n = ex.n_updates
+    ex.drag("dot", (0.0, 0.0), (0.737, -0.4213), steps=7)
+    assert ex.n_updates == n + 7 and ex.message == ""
+    assert ex.values["x"] == pytest.approx(0.737) and ex.values["y"] == pytest.approx(-0.4213)
+    assert ex.readout_values["x"] == pytest.approx(0.737)          # not on the 0.1 grid
+    assert ex.readout_strings["x"] == "0.737 m"
+
+
+def test_mouse_drag_under_the_canvas_events():
+    ex = Dot(display="agg")
+    ex.DRAG_BACKLOG_COST = math.inf                  # every move is drawn (no backlog handling)
+    ex.fig.canvas.draw()
+    _event(ex, "button_press_event", (0.0, 0.0), button=1)
+    n = ex.n_updates
+    for k in range(1, 6):
+        _event(ex, "motion_notify_event", (0.1 * k + 0.013, -0.05 * k))
+        assert ex.n_updates == n + k                                # one update per move
+    _event(ex, "button_release_event", (0.5, -0.25), button=1)
+    _event(ex, "motion_notify_event", (1.0, 1.0))                    # released: nothing moves
+    assert ex.n_updates == n + 5
+    assert ex.values["x"] == pytest.approx(0.513, abs=0.01)
+
+
+def test_moves_queued_behind_a_slow_step_are_folded_into_the_next():
+    ex = Dot(display="agg")
+    ex.DRAG_BACKLOG_COST, ex.DRAG_BACKLOG_GAP = 0.0, 10.0   # every step is "slow", every move "queued"
+    ex.fig.canvas.draw()
+    _event(ex, "button_press_event", (0.0, 0.0), button=1)
+    n = ex.n_updates
+    _event(ex, "motion_notify_event", (0.2, 0.0))
+    _event(ex, "motion_notify_event", (0.4, 0.0))            # queued: kept, not drawn
+    _event(ex, "motion_notify_event", (0.613, 0.1))
+    assert ex.n_updates == n + 1 and ex.values["x"] == pytest.approx(0.2, abs=0.01)
+    _event(ex, "button_release_event", (0.613, 0.1), button=1)  # the last position is applied
+    assert ex.n_updates == n + 2 and ex.values["x"] == pytest.approx(0.613, abs=0.01)
+
+
+def test_press_far_from_every_handle_drags_nothing():
+    ex = Dot(display="agg")
+    ex.fig.canvas.draw()
+    _event(ex, "button_press_event", (1.0, 1.0), button=1)
+    n = ex.n_updates
+    _event(ex, "motion_notify_event", (1.2, 1.2))
+    assert ex.n_updates == n and ex.values["x"] == 0.0
+
+
+def test_slider_echo_of_a_dragged_value_is_ignored():
+    ex = Dot(display="agg")
+    ex.drag("dot", (0.0, 0.0), (0.737, 0.0), steps=1)
+    n = ex.n_updates
+    ex.controls["x"].set_state({"value": 0.7})       # the browser's slider rounds to its step
+    assert ex.n_updates == n and ex.values["x"] == pytest.approx(0.737)
+    assert ex.shown_values["x"] == pytest.approx(0.737)
+    ex.controls["x"].set_state({"value": 0.2})       # a real move of the slider
+    assert ex.n_updates == n + 1 and ex.values["x"] == pytest.approx(0.2)
+
+
+def test_python_set_to_a_rounded_value_is_not_an_echo():
+    ex = Dot(display="agg")
+    ex.drag("dot", (0.0, 0.0), (0.737, 0.0), steps=1)
+    ex.controls["x"].value = 0.7
+    assert ex.values["x"] == 0.7 and ex.readout_values["x"] == 0.7
+
+
+def test_refused_drag_step_keeps_the_last_good_state():
+    ex = Dot(display="agg")
+    ex.drag("dot", (0.0, 0.0), (1.2, 0.0), steps=1)
+    ex.drag("dot", (1.2, 0.0), (1.8, 0.0), steps=1)
+    assert "x must not exceed 1.5" in ex.message
+    assert ex.values["x"] == pytest.approx(1.2) and ex.readout_values["x"] == pytest.approx(1.2)
+    assert ex.values == ex.shown_values
+
+
+def test_drag_past_the_slider_range_stops_at_its_end():
+    ex = Dot(display="agg")
+    ex.drag("dot", (0.0, 0.0), (0.0, 5.0), steps=2)
+    assert ex.values["y"] == 2.0 and ex.message == ""
+
+
+def test_handle_that_raises_refuses_the_step_by_name():
+    class Bad(Dot):
+        def handles(self):
+            def drag(x, y):
+                raise SceneError("no such place")
+            return [Handle("bad", lambda: (0.0, 0.0), drag)]
+
+    ex = Bad(display="agg")
+    ex.drag("bad", (0, 0), (1, 1), steps=2)
+    assert "bad" in ex.message and "no such place" in ex.message and ex.values["x"] == 0.0
+
+
+def test_drag_bad_arguments_are_input_errors():
+    ex = Dot(display="agg")
+    with pytest.raises(InputError, match="name must name a handle"):
+        ex.drag("nope", (0, 0), (1, 1))
+    with pytest.raises(InputError, match="steps"):
+        ex.drag("dot", (0, 0), (1, 1), steps=0)
+    with pytest.raises(InputError, match="finite"):
+        ex.drag("dot", (0, 0), (math.nan, 1))
+
+
+def test_refused_value_from_the_browser_returns_the_control():
+    """The crank at -180 while the figure shows 90 must not happen: the refused value reverts."""
+    ex = Dot(display="agg")
+    ex.controls["x"].set_state({"value": 1.9})
+    assert "x must not exceed 1.5" in ex.message
+    assert ex.controls["x"].value == 0.0 and ex.readout_values["x"] == 0.0
+
+
+# ----------------------------------------------------------------------- play
+def test_advance_is_one_update_per_frame_and_stops_on_none():
+    ex = Dot(display="agg")
+    assert ex.has_play and ex.play_control is not None
+    n = ex.n_updates
+    ex.advance(4)
+    assert ex.n_updates == n + 4
+    assert ex.values["x"] == pytest.approx(4 * 1.0 / ex.play_fps)
+    ex.advance(100)                                   # stops before x > 1
+    assert 1.0 - 1.0 / ex.play_fps - 1e-9 <= ex.values["x"] <= 1.0
+
+
+def test_speed_scales_the_time_step():
+    ex = Dot(display="agg")
+    ex.play_speed.value = 2.0
+    ex.advance(1)
+    assert ex.values["x"] == pytest.approx(2.0 / ex.play_fps)
+
+
+def test_play_widget_ticks_and_loops():
+    ex = Dot(display="agg", x=0.9)
+    ex.play_control.interval = 60_000                 # frames always faster: no tick dropped
+    ex.play_control.playing = True
+    ex.play_control.value += 1
+    assert ex.values["x"] == pytest.approx(0.95)
+    ex.play_control.value += 1
+    ex.play_control.value += 1                        # 1.05 > 1: back to the start (loop on)
+    assert ex.values["x"] == pytest.approx(0.9) and ex.play_control.playing
+    ex.play_loop.value = False
+    for _ in range(3):
+        ex.play_control.value += 1
+    assert not ex.play_control.playing
+
+
+def test_ticks_queued_behind_a_slow_frame_are_dropped():
+    ex = Dot(display="agg")
+    ex.play_control.interval = 1                      # every frame (a redraw) is slower than 1 ms
+    ex.play_control.playing = True
+    ex.play_control.value += 1
+    x = ex.values["x"]
+    ex.play_control.value += 1                        # arrives at once: a backlog tick, dropped
+    assert ex.values["x"] == x == pytest.approx(1.0 / ex.play_fps)
+
+
+def test_no_play_without_play_step():
+    ex = ProjectiveExplorer(display="agg")
+    assert not ex.has_play and ex.play_control is None
+    with pytest.raises(InputError, match="has no Play"):
+        ex.advance(1)
+
+
+# ----------------------------------------------------------------------- the two owned explorers
+def _h(ex, name):
+    return {h.name: h for h in ex.handles()}[name]
+
+
+def test_projective_drag_P_moves_the_polar():
+    ex = ProjectiveExplorer(display="agg")
+    ex.drag("P", _h(ex, "P").where(), (0.613, -1.237), steps=4)
+    P = np.array([-1.237, -0.613, 1.0])                 # [y, -x, 1]
+    C = ex.state["C"]
+    pol = ex.polar_art.get_line()
+    assert np.allclose(np.cross(pol, C @ P), 0.0, atol=1e-12)
+    assert ex.values["P x"] == pytest.approx(0.613)
+
+
+def test_projective_drag_M_by_direction_turns_it_through_the_drag_point():
+    ex = ProjectiveExplorer(display="agg")
+    foot = np.array(_h(ex, "M (point)").where())
+    ex.drag("M (direction)", _h(ex, "M (direction)").where(), (2.0, 3.0), steps=3)
+    M = ex.M_art.get_line()
+    on = lambda x, y: M[2] + y * M[0] - x * M[1]      # 4.27
+    assert on(2.0, 3.0) == pytest.approx(0.0, abs=1e-9)
+    assert on(*foot) == pytest.approx(0.0, abs=1e-9)
+
+
+def test_projective_drag_pole_of_M_makes_M_its_polar():
+    ex = ProjectiveExplorer(display="agg")
+    ex.drag("pole of M", _h(ex, "pole of M").where(), (0.5, 0.7), steps=3)
+    assert ex.readout_values["pole of M"] == pytest.approx((0.5, 0.7))
+    # independent: the polar of (0.5, 0.7) is C p, and it is M
+    C = ex.state["C"]
+    assert np.allclose(np.cross(C @ np.array([0.7, -0.5, 1.0]), ex.M_art.get_line()), 0.0, atol=1e-12)
+
+
+def test_projective_pole_of_M_at_the_centre_is_refused():
+    ex = ProjectiveExplorer(display="agg")
+    before = dict(ex.values)
+    ex.drag("pole of M", _h(ex, "pole of M").where(), (0.0, 0.0), steps=1)
+    assert "line at infinity" in ex.message and ex.values == before
+
+
+def test_percussion_drag_axis_through_a_point_gives_its_pole():
+    ex = PercussionExplorer(display="agg", shape="uniform rod")
+    ex.drag("axis (point)", _h(ex, "axis (point)").where(), (0.8, 0.0), steps=2)
+    # uniform rod: c = (0.5, 0), ρ² = (1 + 0.08²)/12; an axis x = 0.8 has its pole on the axis
+    # of the rod at d = ρ²/0.3 on the other side of c (5.68)
+    rho2 = (1.0 + 0.08 ** 2) / 12.0
+    assert ex.values["pole x"] == pytest.approx(0.5 - rho2 / 0.3, abs=1e-9)
+    assert ex.values["pole y"] == pytest.approx(0.0, abs=1e-9)
+
+
+def test_percussion_axis_through_the_centre_is_refused():
+    ex = PercussionExplorer(display="agg", shape="uniform rod")
+    before = dict(ex.values)
+    ex.drag("axis (point)", _h(ex, "axis (point)").where(), (0.5, 0.0), steps=1)
+    assert "infinity" in ex.message and ex.values == before
+
+
+def test_percussion_impact_handle_only_in_impact_drive():
+    ex = PercussionExplorer(display="agg")
+    assert _h(ex, "impact").where() is None
+    ex.set(drive="impact")
+    assert _h(ex, "a").where() is None
+    ex.drag("impact", (0.5, 0.0), (0.62, 0.3), steps=2)
+    assert ex.values["impact at"] == pytest.approx(0.62)
