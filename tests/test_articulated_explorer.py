@@ -81,7 +81,7 @@ def test_thesis_7_3_effective_centre_and_truncation(lam):
 
 
 def test_percussion_axis_and_its_point_reflection():
-    ex = ArticulatedExplorer(display="agg", **{"body k": 2, "pole x": 2.5, "pole y": -1.2})
+    ex = ArticulatedExplorer(display="agg", **{"focus": "body 2", "pole x": 2.5, "pole y": -1.2})
     k = 1
     A = _reference_A(4, 3.0, 25.0, 0.0, k)
     a = np.array([-1.2, -2.5, 1.0])                                       # the pole (2.5, -1.2) as [y, -x, 1]
@@ -100,7 +100,7 @@ def test_percussion_axis_and_its_point_reflection():
 
 
 def test_chart_components_and_error_per_step():
-    ex = ArticulatedExplorer(display="agg", **{"bodies n": 6, "body k": 2})
+    ex = ArticulatedExplorer(display="agg", **{"bodies n": 6, "focus": "body 2"})
     errs = ex.err_curve.get_ydata()
     assert len(errs) == 5 and errs[-1] == 0.0 and np.all(np.diff(errs) < 0)
     full = _reference_A(6, 3.0, 25.0, 0.0, 1)
@@ -122,8 +122,9 @@ def test_drags_pole_tip_and_first_body():
     ex.drag("first body", (1.0, 0.0), (0.0, 1.0), steps=4)
     assert ex.values["base θ₁ (deg)"] == pytest.approx(90.0, abs=1e-9)
     _legible(ex)
+    ex.set(**{"focus": "body 2"})
     ex.set(**{"bodies n": 1})
-    assert ex.values["body k"] == 1
+    assert ex.values["focus"] == "body 1"
     with pytest.raises(Exception, match="cannot be dragged"):
         ex.drag("tip", (1.0, 0.0), (0.0, 1.0))
     _legible(ex)

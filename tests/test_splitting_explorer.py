@@ -154,3 +154,15 @@ def test_display_control_and_exports(tmp_path):
     assert ex.export_svg(tmp_path / "s.svg").stat().st_size > 1000
     assert ex.export_png(tmp_path / "s.png").stat().st_size > 1000
     assert not ex.has_play                                    # a single instant: nothing moves
+
+
+def test_focus_fades_the_other_side():
+    ex = SplittingExplorer(display="agg", **{"bodies n": 4, "split at joint": 3})
+    n = ex.n_computes
+    ex.set(focus="free-floating part")
+    assert ex.n_computes == n                                   # display only
+    assert ex.lower.get_alpha() < ex.upper.get_alpha()
+    _legible(ex)
+    ex.set(focus="constrained part")
+    assert ex.lower.get_alpha() > ex.upper.get_alpha()
+    _legible(ex)

@@ -312,7 +312,6 @@ class ArticulatedExplorer(Explorer):
             "bend φ (deg)": Step(-180.0, 180.0, 0.5, 25.0, "bend φ (deg)").make("phi"),
             "base θ₁ (deg)": Step(-180.0, 180.0, 0.5, 0.0, "base θ₁ (deg)").make("base"),
             "outboard bodies": Step(0, NMAX - 1, 1, NMAX - 1, "outboard bodies", integer=True).make("outboard"),
-            "body k": Step(1, NMAX, 1, 1, "body k (focus)", integer=True).make("body"),
             "pole x": Step(-4.0, 6.0, 0.01, 0.0, "pole a: x (m)").make("pole x"),
             "pole y": Step(-5.0, 5.0, 0.01, -0.8, "pole a: y (m)").make("pole y"),
             "g (m/s²)": Step(0.0, 9.81, 0.01, 9.81, "g (m/s²) for Play").make("g"),
@@ -323,7 +322,7 @@ class ArticulatedExplorer(Explorer):
         }
 
     def adjust(self, values, changed):
-        """The focused body stays on the chain; a change of the chain restarts the swing at ``t = 0``.
+        """The focus stays on the chain; a change of the chain restarts the swing at ``t = 0``.
 
         Parameters
         ----------
@@ -335,13 +334,14 @@ class ArticulatedExplorer(Explorer):
         Returns
         -------
         dict
-            Controls that follow: ``body k`` (at most ``n``) and ``time (s)`` (0 after a change
+            Controls that follow: ``focus`` (a body of the chain) and ``time (s)`` (0 after a change
             of anything but the time or the overlays).
         """
         out = {}
         n = int(values["bodies n"])
-        if values["body k"] > n:
-            out["body k"] = n
+        focus = values.get("focus", "all")
+        if focus != "all" and int(focus.split()[1]) > n:
+            out["focus"] = f"body {n}"
         if changed & set(_CHAIN) and values["time (s)"] != 0.0:
             out["time (s)"] = 0.0
         return out
@@ -431,6 +431,16 @@ class ArticulatedExplorer(Explorer):
 
         return [Handle("pole a", pole_where, pole_drag), Handle("tip", tip_where, tip_drag),
                 Handle("first body", base_where, base_drag)]
+
+    def focus_options(self):
+        """The bodies to focus on: the focused body's conics, axes and chart are shown, the rest fade.
+
+        Returns
+        -------
+        list of str
+            ``"body 1"`` ... ``"body 8"`` (the base adds ``"all"``: body 1 labelled, nothing faded).
+        """
+        return [f"body {i}" for i in range(1, NMAX + 1)]
 
     def _joints(self):
         st = self.state
@@ -528,7 +538,7 @@ class ArticulatedExplorer(Explorer):
         outboard = None if out_k >= n - 1 else out_k
         st = articulated_state(self._model(n, lam), q, outboard=outboard,
                                pole=(float(v["pole x"]), float(v["pole y"])))
-        st.update(n=n, lam=lam, q=q, outboard=out_k, k=min(int(v["body k"]), n) - 1, t=t)
+        st.update(n=n, lam=lam, q=q, outboard=out_k, t=t)
         if swing is not None:
             from planargeo.simulate.integrate import energy
 
@@ -551,7 +561,9 @@ class ArticulatedExplorer(Explorer):
             Readout values (units in :attr:`units`).
         """
         v = self.values
-        n, k = st["n"], st["k"]
+        n = st["n"]
+        focus = v.get("focus", "all")
+        k = 0 if focus == "all" else min(int(focus.split()[1]), n) - 1     # labels and chart: body 1 for "all"
         pts = st["joints"]
         self.links.set_data(pts[:, 0], pts[:, 1])
         self.pins.set_data(pts[:-1, 0], pts[:-1, 1])
@@ -564,9 +576,9 @@ class ArticulatedExplorer(Explorer):
                 continue
             self.art[i].set_conic(st["A"][i])
             self.rigid[i].set_conic(st["I"][i])
-            focus = i == k
-            self.art[i].set_alpha(1.0 if focus else 0.35)
-            self.rigid[i].set_alpha(0.9 if focus else 0.3)
+            bold = focus == "all" or i == k
+            _fade(self.art[i], 1.0 if bold else 0.3)
+            _fade(self.rigid[i], 0.9 if bold else 0.25)
         a = st["pole"]
         self.pole_art.set_point(a)
         axes_on = bool(v["percussion axes"])
@@ -655,6 +667,14 @@ class ArticulatedExplorer(Explorer):
             out.update({"time": st["t"], "energy T + V": E, "dissipated W": Wd, "T + V + W": E + Wd,
                         "initial energy": E0})
         return out
+
+
+def _fade(artist, alpha):
+    """Set the opacity of a composite artist and of its children."""
+    artist.set_alpha(alpha)
+    for c in artist.get_children():
+        c.set_alpha(alpha)
+    artist.stale = True
 
 
 def _rotate_back(A, theta):

@@ -182,6 +182,16 @@ class SplittingExplorer(Explorer):
             ("a_i", _LOWER), ("a_j", _UPPER), ("f", COLORS["reaction"]), ("centre", COLORS["twist"]),
             ("cut", "#b00020"), ("couple", COLORS["wrench"]))}
 
+    def focus_options(self):
+        """Focus on one side of the split: the other side's links and poles fade.
+
+        Returns
+        -------
+        list of str
+            ``"constrained part"`` (bodies ``1..i``) and ``"free-floating part"`` (``i+1..n``).
+        """
+        return ["constrained part", "free-floating part"]
+
     def _model(self, n, rho, g):
         return cached(self._models, (n, rho, g), lambda: bent_chain_model(n, rho, 1.0, 1.0, g))
 
@@ -287,6 +297,15 @@ class SplittingExplorer(Explorer):
             if b < n:
                 art.set_point(st["a"][b])
                 art._marker.set_color(_LOWER if b < i else _UPPER)
+        focus = self.values.get("focus", "all")
+        low, up = (1.0, 1.0) if focus == "all" else (1.0, 0.2) if focus == "constrained part" else (0.2, 1.0)
+        self.lower.set_alpha(0.55 * low)
+        self.upper.set_alpha(0.55 * up)
+        for b in range(n):
+            alpha = low if b < i else up
+            self.poles[b].set_alpha(alpha)
+            for child in self.poles[b].get_children():
+                child.set_alpha(alpha)
         if poles[i - 1] is None and poles[i] is None:          # both translate: one arrow says it (∞)
             u, w = st["a"][i - 1][:2], st["a"][i][:2]
             if abs(u[0] * w[1] - u[1] * w[0]) <= 0.2 * np.hypot(*u) * np.hypot(*w):
