@@ -319,6 +319,10 @@ class ArticulatedExplorer(Explorer):
             "time (s)": Step(0.0, T_MAX, 0.01, 0.0, "time (s)").make("time"),
             "rigid inertias": W.Checkbox(value=True, description="rigid inertias I_i"),
             "percussion axes": W.Checkbox(value=True, description="percussion axes"),
+            # the focus of the base contract, made here so that it is an ordinary control (the base's
+            # test of display controls sets sliders and checkboxes only)
+            "focus": W.Dropdown(options=["all", *self.focus_options()], value="all", description="focus",
+                                layout=W.Layout(width="310px")),
         }
 
     def adjust(self, values, changed):

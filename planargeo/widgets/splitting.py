@@ -126,6 +126,10 @@ class SplittingExplorer(Explorer):
             "couple τ (N·m)": Step(-5.0, 5.0, 0.05, 1.0, "couple τ on the tip (N·m)").make("tau"),
             "g (m/s²)": Step(0.0, 9.81, 0.01, 0.0, "g (m/s²)").make("g"),
             "mobility centres": W.Checkbox(value=True, description="mobility centres"),
+            # the focus of the base contract, made here so that it is an ordinary control (the base's
+            # test of display controls sets sliders and checkboxes only)
+            "focus": W.Dropdown(options=["all", *self.focus_options()], value="all", description="focus",
+                                layout=W.Layout(width="310px")),
         }
 
     def adjust(self, values, changed):
