@@ -21,7 +21,7 @@ from planargeo.mechanics.kinematics import kinematics
 from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.scenes import build as build_scene
 
-MODULES = ("ch1", "ch3", "ch4", "ch5", "ch6", "ch7", "ch9", "extra")
+MODULES = ("ch1", "ch3", "ch4", "ch5", "ch6", "ch7", "ch9", "extra", "ch10")
 
 
 @dataclass(frozen=True)
