@@ -167,3 +167,17 @@ def test_long_chains_and_trees_match_dense_reference(n, seed, tree):
         rtol = max(1e-12, 100 * EPS * mass_matrix_cond(sub, q_sub))
         assert np.linalg.norm(r.A[i] - A_ref) <= rtol * np.linalg.norm(A_ref)
         assert np.linalg.norm(r.d[i] - d_ref) <= rtol * max(np.linalg.norm(d_ref), 1.0)
+
+
+@pytest.mark.parametrize("phi", [0.0, np.pi])
+def test_figure_7_4_effective_mass_is_flat_in_lambda_when_in_line(phi):
+    # Figure 7.4 / 7.22: "the effective mass ratio decreases as the size ratio λ increases" holds only
+    # for cos²φ < 1; in line (φ = 0 or π) m_x = 2m for every λ (docs/errata.md, chapter 7 explorers, 1)
+    from planargeo import scenes
+
+    values = [scenes.build("two-body", rho=1.0 / lam, L=1.0, phi=phi).quantities["mx_over_m"]
+              for lam in (0.1, 1.0, 2.0, 5.0, 50.0)]
+    np.testing.assert_allclose(values, 2.0, rtol=1e-12)
+    bent = [scenes.build("two-body", rho=1.0 / lam, L=1.0, phi=0.7).quantities["mx_over_m"]
+            for lam in (0.1, 1.0, 2.0, 5.0, 50.0)]
+    assert np.all(np.diff(bent) < 0)                               # strictly decreasing once bent

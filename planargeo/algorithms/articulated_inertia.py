@@ -31,12 +31,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from planargeo.errors import COND_LIMIT, ShapeError
+from planargeo.errors import COND_LIMIT, InputError, ShapeError
 from planargeo.mechanics.joints import R_of
 from planargeo.mechanics.kinematics import _kinematics_scalar, check_state
 from planargeo.mechanics.subspaces import _gram, _T, _U, singular_joint_error
 
-__all__ = ["ArticulatedInertias", "articulated_recursion", "articulated_inertia"]
+__all__ = ["ArticulatedInertias", "articulated_recursion", "articulated_inertia", "truncation_error"]
 
 _EYE3 = np.eye(3)
 _EYE3.setflags(write=False)
@@ -72,6 +72,8 @@ class ArticulatedInertias(_Reactions):
     gram : list of ``(A_i s_i, s_i^T A_i s_i)`` (``None`` for a fixed joint), checked by the rule.
     cond : (N,) the joints' condition numbers (:func:`planargeo.mechanics.subspaces.joint_cond`; 1 for a fixed joint).
     points : (N, 2) or None, the points of the reaction bases of prismatic joints (the body frames' origins).
+    steps : int or None, the truncation of the recursion (``None``: the full recursion; ``k``: every
+        ``A_i``, ``d_i`` holds only the bodies at most ``k`` joints outboard of ``i``, thesis 10.2.2).
     R, U : lists, built on first access: the reaction spaces (:func:`planargeo.mechanics.joints.R_of`)
         and the reactive acceleration spaces (6.99).
     """
@@ -84,6 +86,7 @@ class ArticulatedInertias(_Reactions):
     gram: list
     cond: np.ndarray
     points: np.ndarray | None = None
+    steps: int | None = None
 
 
 def _chain(N):
@@ -95,7 +98,7 @@ def _lists(S, tau):
 
 
 def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_points=None, *,
-                          check: bool = True) -> ArticulatedInertias:
+                          check: bool = True, steps: int | None = None) -> ArticulatedInertias:
     """Articulated inertias and bias forces on arrays, tips to base (thesis 7.1.1: 7.2, 7.7a, 7.7b, 7.8).
 
     Parameters
@@ -116,6 +119,15 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
         Raise for a singular joint (default).  ``False`` never raises: every joint's
         condition number is recorded in ``cond`` and an exactly singular joint
         (``cond = inf``) is treated as locked for its parent (``T = 0``, ``R Uᵀ = 1``).
+    steps : int, optional
+        Truncate the recursion (thesis 10.2.2, "three iterations are almost as precise as
+        six"): ``A_i``, ``d_i`` then hold body ``i`` and only the bodies at most ``steps``
+        joints outboard of it, as if the chain ended there (``0``: ``A_i = I_i``,
+        ``d_i = p_i``).  Computed as ``steps`` Jacobi sweeps of 7.7a/7.7b over all bodies
+        at once (one batched step per sweep instead of one step per body), so for long
+        chains a few steps cost less than the full recursion.  ``None`` (default) or a
+        value at least the depth of the tree gives the full recursion.  The error
+        against the full recursion is :func:`truncation_error`.
 
     Returns
     -------
@@ -126,6 +138,8 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
     SingularConfigurationError
         When some ``s_i^T A_i s_i`` is singular (e.g. a massless tip body), by the rule
         of :data:`planargeo.errors.COND_LIMIT` (``.cond``; message names the joint).
+    InputError
+        ``steps`` is not ``None`` or a non-negative integer.
 
     Examples
     --------
@@ -147,6 +161,9 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
     S, tau = _lists(S, tau)
     kappa = np.asarray(kappa, dtype=float)
     d = np.array(p, dtype=float)                   # d_N = p_N
+    steps = _check_steps(steps)
+    if steps is not None and steps < _depth(parents):
+        return _truncated(A, d, S, kappa, tau, parents, points, joint_points, check, steps)
     T, P, gram = [None] * N, [None] * N, [None] * N
     cond = np.ones(N)
     for i in reversed(range(N)):
@@ -164,10 +181,139 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
         if j >= 0:
             A[j] += Pi @ Ai                        # (7.7a)
             d[j] += Ti @ tau[i] + Pi @ (Ai @ kappa[i] + d[i])   # (7.7b)
-    return ArticulatedInertias(A, d, S, T, P, gram, cond, None if points is None else np.asarray(points, float))
+    return ArticulatedInertias(A, d, S, T, P, gram, cond, None if points is None else np.asarray(points, float),
+                               steps)
 
 
-def articulated_inertia(model, q, qd=None, tau=None, f_ext=None) -> ArticulatedInertias:
+def _check_steps(steps):
+    """``steps`` as an int (or None); InputError naming ``steps`` otherwise."""
+    if steps is None:
+        return None
+    if isinstance(steps, (bool, np.bool_)) or not isinstance(steps, (int, np.integer)) or steps < 0:
+        raise InputError(f"steps must be None or a non-negative integer, got {steps!r}")
+    return int(steps)
+
+
+def _depth(parents) -> int:
+    """Largest number of joints between a body and its deepest descendant (0 for a single body)."""
+    level = [0] * len(parents)
+    for i in reversed(range(len(parents))):
+        j = parents[i]
+        if j >= 0:
+            level[j] = max(level[j], level[i] + 1)
+    return max(level, default=0)
+
+
+def _sweep(A, S, groups, joint_points):
+    """``T_i``, ``R_i U_iᵀ`` (7.8), gram and cond of every joint at once, by groups of equal dof count."""
+    N = A.shape[0]
+    T = np.zeros((N, 3, 3))                        # padded to 3 columns; only k_i used
+    P = np.broadcast_to(_EYE3, (N, 3, 3)).copy()
+    grams = [None] * N
+    cond = np.ones(N)
+    for k, idx, Sg in groups:
+        pts = None if joint_points is None else np.asarray(joint_points, float)[idx]
+        As, M, c = _gram(A[idx], Sg, pts)
+        c = np.broadcast_to(np.asarray(c, dtype=float), (len(idx),))
+        cond[idx] = c
+        ok = np.isfinite(c)
+        Tg = np.zeros((len(idx), 3, k))
+        if np.any(ok):
+            Tg[ok] = np.swapaxes(np.linalg.solve(M[ok], np.swapaxes(As[ok], -1, -2)), -1, -2)   # A s (sᵀAs)⁻¹
+        T[idx, :, :k] = Tg
+        P[idx] = _EYE3 - Tg @ np.swapaxes(Sg, -1, -2)
+        for n, i in enumerate(idx):
+            grams[i] = (As[n], M[n])
+    return T, P, grams, cond
+
+
+def _truncated(I, p, S, kappa, tau, parents, points, joint_points, check, steps) -> ArticulatedInertias:
+    """7.7a/7.7b truncated after ``steps`` bodies outboard, as Jacobi sweeps over all bodies (thesis 10.2.2)."""
+    N = I.shape[0]
+    par = np.asarray(parents, dtype=int)
+    kids = np.flatnonzero(par >= 0)
+    groups = []
+    for k in sorted({s.shape[1] for s in S} - {0}):
+        idx = np.array([i for i in range(N) if S[i].shape[1] == k], dtype=int)
+        groups.append((k, idx, np.stack([S[i] for i in idx])))
+    Tq = np.zeros((N, 3))                          # T_i Q_i comes after T_i is known
+    A, d = I.copy(), p.copy()
+    for _ in range(steps + 1):
+        A = 0.5 * (A + np.swapaxes(A, -1, -2))
+        T, P, grams, cond = _sweep(A, S, groups, joint_points)
+        if _ == steps:
+            break
+        for i in range(N):
+            Tq[i] = T[i, :, :S[i].shape[1]] @ tau[i]
+        PA = P[kids] @ A[kids]
+        pd = Tq[kids] + np.einsum("nij,nj->ni", P[kids], np.einsum("nij,nj->ni", A[kids], kappa[kids]) + d[kids])
+        A_new, d_new = I.copy(), p.copy()
+        np.add.at(A_new, par[kids], PA)            # (7.7a) from the previous sweep's outboard inertias
+        np.add.at(d_new, par[kids], pd)            # (7.7b)
+        A, d = A_new, d_new
+    if check:
+        for i in range(N):
+            if S[i].shape[1] and not cond[i] <= COND_LIMIT:
+                raise singular_joint_error(i, cond[i])
+    Ts = [T[i, :, :S[i].shape[1]] for i in range(N)]
+    return ArticulatedInertias(A, d, S, Ts, list(P), grams, cond,
+                               None if points is None else np.asarray(points, float), steps)
+
+
+def truncation_error(model, q, qd=None, tau=None, f_ext=None, *, steps: int) -> dict:
+    """Error of the truncated articulated recursion against the full one (thesis 10.2.2).
+
+    Parameters
+    ----------
+    model : planargeo.mechanics.model.Model
+    q, qd, tau, f_ext
+        One state, as for :func:`articulated_inertia`.
+    steps : int
+        Bodies outboard kept by the truncated recursion (``articulated_recursion(..., steps=steps)``).
+
+    Returns
+    -------
+    dict
+        ``"A"``: (N,) relative errors ``‖A_i^(k) - A_i‖_F / ‖A_i‖_F``; ``"d"``: (N,)
+        errors of the bias forces ``max|d_i^(k) - d_i| / max_j max|d_j|`` (0 when every
+        ``d_j`` is 0); ``"entries"``: (N, 3, 3) ``|A_i^(k) - A_i| / ‖A_i‖_F`` entry by entry;
+        ``"max_A"``, ``"max_d"``: the largest of ``"A"`` and ``"d"``; ``"truncated"``,
+        ``"full"``: both :class:`ArticulatedInertias`.
+
+    Raises
+    ------
+    InputError
+        ``steps`` is not a non-negative integer.
+    SingularConfigurationError
+        A joint is singular in either recursion.
+
+    Examples
+    --------
+    Thesis 7.3 at ``lambda = L / rho = 2``: one outboard body already gives the first body's
+    effective centre, ``m_y`` and ``A_z`` of any longer chain; only ``m_x = n m`` still grows.
+
+    >>> from planargeo.scenes.horizontal_chain import horizontal_chain_model
+    >>> e = truncation_error(horizontal_chain_model(6, 1.0, 0.5, 1.0), np.zeros(6), steps=3)
+    >>> round(float(e["A"][0]), 4), float(e["max_A"]) == float(e["A"][0])
+    (0.3114, True)
+    >>> float(e["entries"][0][2, 2])                    # A_z about the joint: exact after one step
+    0.0
+    """
+    if steps is None:
+        raise InputError("steps must be a non-negative integer, got None")
+    st = _state_arrays(model, q, qd, tau, f_ext)[1:]
+    full = articulated_recursion(*st)
+    trunc = articulated_recursion(*st, steps=steps)
+    nA = np.sqrt(np.einsum("nij,nij->n", full.A, full.A))
+    eA = np.sqrt(np.einsum("nij,nij->n", trunc.A - full.A, trunc.A - full.A)) / nA
+    dscale = float(np.abs(full.d).max(initial=0.0))
+    ed = np.abs(trunc.d - full.d).max(axis=1) / dscale if dscale > 0 else np.zeros(model.N)
+    ent = np.abs(trunc.A - full.A) / nA[:, None, None]
+    return {"A": eA, "d": ed, "entries": ent, "max_A": float(eA.max(initial=0.0)), "max_d": float(ed.max(initial=0.0)),
+            "truncated": trunc, "full": full}
+
+
+def articulated_inertia(model, q, qd=None, tau=None, f_ext=None, *, steps: int | None = None) -> ArticulatedInertias:
     """Articulated inertias ``A_i`` and bias forces ``d_i`` of every body (thesis 7.1.1).
 
     Parameters
@@ -177,10 +323,19 @@ def articulated_inertia(model, q, qd=None, tau=None, f_ext=None) -> ArticulatedI
         State and joint torques (zero if omitted).
     f_ext : array_like (N, 3), optional
         World wrenches at the origin applied to each body (besides gravity).
+    steps : int, optional
+        Truncate the recursion after ``steps`` outboard bodies (:func:`articulated_recursion`).
 
     Returns
     -------
     ArticulatedInertias
+
+    Raises
+    ------
+    InputError
+        A state of the wrong shape, or a bad ``steps``.
+    SingularConfigurationError
+        A singular joint (:func:`articulated_recursion`).
 
     Examples
     --------
@@ -191,7 +346,7 @@ def articulated_inertia(model, q, qd=None, tau=None, f_ext=None) -> ArticulatedI
     >>> float(articulated_inertia(chain_model(2), [0.0, 0.0]).A[0][0, 0])
     2.0
     """
-    return articulated_recursion(*_state_arrays(model, q, qd, tau, f_ext)[1:])
+    return articulated_recursion(*_state_arrays(model, q, qd, tau, f_ext)[1:], steps=steps)
 
 
 # ---------------------------------------------------------------------------

@@ -53,6 +53,8 @@ _MODULES = [
     "planargeo.scenes.trees",
     "planargeo.scenes.subspace",
     "planargeo.scenes.impulse",
+    "planargeo.scenes.articulated",
+    "planargeo.scenes.splitting",
 ]
 
 _REGISTRY: dict[str, Callable[..., "SceneResult"]] = {}

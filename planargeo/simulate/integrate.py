@@ -72,7 +72,7 @@ from typing import Any, Callable
 import numpy as np
 
 from planargeo._validate import as_array, as_scalar
-from planargeo.errors import InputError, SingularConfigurationError, SizeLimitError
+from planargeo.errors import InputError, ShapeError, SingularConfigurationError, SizeLimitError
 from planargeo.mechanics.kinematics import check_state, kinematics
 from planargeo.mechanics.model import Model
 
@@ -151,6 +151,10 @@ class SimulationResult:
         Constraint residuals (when a ``residual`` hook was given).
     cond : ndarray (T,) or None
         The watched condition number per recorded step (when ``condition`` was given).
+    dissipated : ndarray (T,) or None
+        Energy removed by the joints' viscous damping since ``t = 0``,
+        ``∫ Σ c_j q̇_j² dt`` (when ``damping`` was given): integrated with the motion, so that
+        ``energy + dissipated`` stays at ``energy[0]`` within the integrator's tolerance.
     events : list of dict
         Singular and near-singular events (module docstring).
     status : str
@@ -179,18 +183,24 @@ class SimulationResult:
     extra: dict[str, Any] = field(default_factory=dict)
     cond: np.ndarray | None = None
     events: list = field(default_factory=list)
+    dissipated: np.ndarray | None = None
 
     @property
     def success(self) -> bool:
-        """Whether the run finished normally (``status == "ok"``).
+        """``True`` when the run reached ``t_end`` (``status == "ok"``).
+
+        Returns
+        -------
+        bool
         """
         return self.status == "ok"
 
     def energy_drift(self) -> float:
-        """``max |E(t) - E(0)| / max(|E(0)|, max T(t))``: relative drift of the total energy.
+        """``max |E(t) + W(t) - E(0)| / max(|E(0)|, max T(t))``: relative drift of the energy balance.
 
-        The kinetic energy in the denominator keeps the measure meaningful when
-        the total energy happens to be near zero.
+        ``E = T + V`` the total energy and ``W`` the energy the joints' damping dissipated
+        (:attr:`dissipated`; zero without damping).  The kinetic energy in the denominator
+        keeps the measure meaningful when the total energy happens to be near zero.
 
         Returns
         -------
@@ -198,7 +208,8 @@ class SimulationResult:
             The relative drift (dimensionless).
         """
         scale = max(abs(float(self.energy[0])), float(np.max(self.kinetic)), np.finfo(float).tiny)
-        return float(np.max(np.abs(self.energy - self.energy[0])) / scale)
+        total = self.energy if self.dissipated is None else self.energy + self.dissipated
+        return float(np.max(np.abs(total - self.energy[0])) / scale)
 
 
 def _in_ipython_kernel() -> bool:
@@ -274,7 +285,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
              project: Callable | None = None, residual: Callable | None = None,
              energy_fn: Callable | None = None, condition: Callable | str | None = None,
              cond_event: float = 1e6, progress: bool | None = None,
-             max_steps: int = MAX_STEPS) -> SimulationResult:
+             max_steps: int = MAX_STEPS, damping=None) -> SimulationResult:
     """Integrate ``q̈ = forward(q, q̇, τ)`` from ``(q0, qd0)`` over ``[0, t_end]`` (thesis 3.41-3.42, 2.9 in time).
 
     The state ``y = (q, q̇)`` obeys ``ẏ = (q̇, q̈)`` with ``q̈`` from the
@@ -323,6 +334,13 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     max_steps : int
         Largest number of steps (module docstring; :data:`MAX_STEPS` by default): raise it
         explicitly for a deliberate long run.
+    damping : float or array_like (nq,), optional
+        Viscous damping coefficients ``c_j >= 0`` of the joints (one per joint coordinate;
+        a number: the same for all): the joint force ``τ_j - c_j q̇_j`` replaces ``τ_j``
+        (N·m·s/rad for a revolute coordinate, N·s/m for a prismatic one).  The dissipated
+        energy ``W(t) = ∫ Σ c_j q̇_j² dt`` is integrated with the motion and recorded in
+        ``result.dissipated``; ``energy + dissipated`` is the initial energy (for a
+        free mechanism) within the integrator's tolerance.
 
     Returns
     -------
@@ -335,7 +353,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     InputError
         Unknown ``method``; ``t_end``, ``dt``, ``max_step``, ``rtol``, ``atol`` not
         finite and positive (``max_step`` may be ``inf``, ``atol`` zero); a batch of
-        states; ``"RK4"`` without ``dt``.
+        states; ``"RK4"`` without ``dt``; ``damping`` negative, not finite or of the wrong shape.
     SizeLimitError
         A run that needs more than ``max_steps`` steps (module docstring).
 
@@ -357,6 +375,12 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     >>> r = simulate(chain_model(1), [0.3], [0.0], 0.5, tau=hold, method="RK4", dt=0.01)
     >>> bool(np.abs(r.q[:, 0] - 0.3).max() < 1e-12), len(r.t)
     (True, 51)
+
+    With damping at the pivot the energy it removes is ``dissipated``:
+
+    >>> r = simulate(chain_model(1), [0.0], [0.0], 2.0, damping=0.5)
+    >>> bool(r.dissipated[-1] > 0), bool(r.energy_drift() < 1e-7)
+    (True, True)
     """
     t_end, dt, rtol, atol, max_step, max_steps = _options(method, t_end, dt, rtol, atol, max_step, max_steps)
     if qd0 is None:
@@ -367,6 +391,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     if forward is None:
         from planargeo.algorithms.aba import forward_dynamics as forward
     nq = model.nq
+    damp = None if damping is None else _damping(damping, nq)
     tau_c = None if callable(tau) else (np.zeros(nq) if tau is None else as_array(tau, "tau", (nq,)))
     fext_c = None if callable(f_ext) else (None if f_ext is None else as_array(f_ext, "f_ext", (model.N, 3)))
     if condition == "joints":
@@ -383,6 +408,8 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         nonlocal nfev
         nfev += 1
         ta = tau(t, q, qd) if tau_c is None else tau_c
+        if damp is not None:
+            ta = ta - damp * qd                  # viscous joint damping, τ = -c q̇
         fe = f_ext(t, q, qd) if callable(f_ext) else fext_c
         try:
             a = forward(model, q, qd, ta, fe)
@@ -394,7 +421,15 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         return a
 
     def rhs(t, y):
-        return np.concatenate([y[nq:], qdd_of(t, y[:nq], y[nq:])])
+        qd = y[nq:2 * nq]
+        if damp is None:
+            return np.concatenate([qd, qdd_of(t, y[:nq], qd)])
+        return np.concatenate([qd, qdd_of(t, y[:nq], qd), [float(np.dot(damp * qd, qd))]])   # Ẇ = Σ c q̇²
+
+    def projected(y):
+        """``y`` with ``(q, q̇)`` pulled back by ``project`` (the dissipated energy kept)."""
+        qp, qdp = project(y[:nq], y[nq:2 * nq])
+        return np.concatenate([qp, qdp, y[2 * nq:]])
 
     if energy_fn is None:
         def energy_fn(q, qd):
@@ -407,7 +442,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
 
     def watch(y):
         # at record time: a hook may reuse the value of the dynamics evaluation at this very state
-        return float(condition(y[:nq], y[nq:])) if condition is not None else math.nan
+        return float(condition(y[:nq], y[nq:2 * nq])) if condition is not None else math.nan
 
     def record(t, y):
         y = np.array(y, dtype=float)
@@ -416,10 +451,9 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         ys.append(y)
         cs.append(c)
 
-    y = np.concatenate([q0, qd0]).astype(float)
+    y = np.concatenate([q0, qd0] + ([] if damp is None else [[0.0]])).astype(float)
     if project is not None:
-        qp, qdp = project(y[:nq], y[nq:])
-        y = np.concatenate([qp, qdp])
+        y = projected(y)
     record(0.0, y)
     status, message, singular = "ok", "", None
     bar = _progress(progress, t_end)
@@ -436,8 +470,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
                 y = y + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
                 t = (k + 1) * h
                 if project is not None:
-                    qp, qdp = project(y[:nq], y[nq:])
-                    y = np.concatenate([qp, qdp])
+                    y = projected(y)
                 record(t, y)
                 if bar is not None:
                     bar.update(h)
@@ -474,7 +507,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
                     while gi < len(grid) and (grid[gi] <= t_new or solver.status == "finished"):
                         yo = dense(grid[gi])
                         if project is not None:  # outputs between projections, pulled back too
-                            yo = np.concatenate(project(yo[:nq], yo[nq:]))
+                            yo = projected(yo)
                         record(grid[gi], yo)
                         gi += 1
                 else:
@@ -483,8 +516,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
                     bar.update(t_new - t)
                 t = t_new
                 if project is not None:
-                    qp, qdp = project(solver.y[:nq], solver.y[nq:])
-                    yp = np.concatenate([qp, qdp])
+                    yp = projected(solver.y)
                     if dt is None:
                         if not np.array_equal(yp, ys[-1]):
                             cs[-1] = watch(yp)
@@ -505,7 +537,8 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
             bar.close()
 
     Y = np.array(ys)
-    qs, qds = Y[:, :nq], Y[:, nq:]
+    qs, qds = Y[:, :nq], Y[:, nq:2 * nq]
+    dissipated = None if damp is None else Y[:, 2 * nq].copy()
     Ts, Vs = np.empty(len(ts)), np.empty(len(ts))
     for k in range(len(ts)):
         Ts[k], Vs[k] = energy_fn(qs[k], qds[k])
@@ -522,7 +555,20 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         events.append(singular)
     return SimulationResult(t=tt, q=qs, qd=qds, kinetic=Ts, potential=Vs, energy=Ts + Vs,
                             residual=res, status=status, message=message, method=method, nfev=nfev,
-                            cond=conds, events=events)
+                            cond=conds, events=events, dissipated=dissipated)
+
+
+def _damping(damping, nq: int) -> np.ndarray:
+    """The damping coefficients as an (nq,) array of finite non-negative numbers (InputError naming ``damping``)."""
+    c = np.asarray(as_array(damping, "damping"), dtype=float)
+    if c.ndim == 0:
+        c = np.full(nq, float(c))
+    if c.shape != (nq,):
+        raise ShapeError(f"damping must be a number or one coefficient per joint coordinate, shape ({nq},), "
+                         f"got shape {c.shape}")
+    if not np.all(c >= 0):
+        raise InputError(f"damping coefficients must be non-negative, got {c.tolist()}")
+    return c
 
 
 def _options(method, t_end, dt, rtol, atol, max_step, max_steps):

@@ -67,6 +67,8 @@ EXPLORERS = {
     "SubspaceExplorer": "subspace",
     "ImpulseExplorer": "impulse",
     "ConstructionExplorer": "construction",
+    "ArticulatedExplorer": "articulated",
+    "SplittingExplorer": "splitting",
 }
 __all__ += list(EXPLORERS)
 

@@ -21,7 +21,8 @@ from planargeo.mechanics.kinematics import kinematics
 from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.scenes import build as build_scene
 
-MODULES = ("ch1", "ch3", "ch4", "ch5", "ch6", "ch7", "ch9", "extra", "fields", "notation", "subspaces_2dof")
+MODULES = ("ch1", "ch3", "ch4", "ch5", "ch6", "ch7", "ch9", "ch10", "extra", "fields", "notation",
+           "subspaces_2dof")
 
 
 @dataclass(frozen=True)

@@ -1,0 +1,159 @@
+"""Truncated articulated recursion (thesis 10.2.2): speed against accuracy.
+
+Run ``python benchmarks/truncated.py --out DIR [--quick]``.
+
+"Three iterations are almost as precise as six" (10.2.2): ``articulated_recursion(...,
+steps=k)`` keeps, for every body, only the ``k`` bodies outboard, computed as ``k`` batched
+Jacobi sweeps of 7.7a/7.7b over all bodies at once instead of one Python step per body.  For
+chains of ``N`` bodies this script times the full recursion and the truncated one for several
+``k`` (thread CPU time, best of interleaved rounds) and measures the error of the truncation
+against the full recursion:
+
+* ``‖A_1^(k) − A_1‖_F / ‖A_1‖_F`` of the base body (the one with the most bodies outboard),
+  and the largest over all bodies;
+* the relative error of the effective quantities of 7.26 of the first body (the effective
+  centre ``d`` and ``m_y``, ``A_z`` there): the thesis's claim is about these, while ``m_x``
+  of a straight chain grows by ``m`` with every body (so the matrix error stays large).
+
+Chains: ``chain_model(N)`` (uniform slender links, ``λ = L/ρ = √12``) at a random
+configuration with random speeds, and the horizontal chain of 7.3 at ``λ = 2`` (where one step
+is exact for ``d``, ``m_y``, ``A_z``), ``3`` and ``4.9``.
+
+Writes ``truncated.md`` and the chart ``truncated.png`` / ``truncated.svg`` (error against
+the time relative to the full recursion, one curve per ``N``) into ``--out``.
+"""
+from __future__ import annotations
+
+import argparse
+import io
+import os
+import sys
+import time
+import timeit
+from pathlib import Path
+
+for _v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):   # as planargeo bench
+    os.environ.setdefault(_v, "1")
+os.environ.setdefault("MPLBACKEND", "Agg")
+
+import numpy as np  # noqa: E402
+
+from planargeo.algorithms.articulated_inertia import _state_arrays, articulated_recursion  # noqa: E402
+from planargeo.files import atomic_write  # noqa: E402
+from planargeo.mechanics.model import chain_model  # noqa: E402
+from planargeo.scenes.horizontal_chain import effective_centre, horizontal_chain_model  # noqa: E402
+
+STEPS = (0, 1, 2, 3, 4, 6, 8, 12)
+
+
+def best_time(fn, budget: float = 0.3, rounds: int = 7) -> float:
+    """Seconds per call: the best of ``rounds`` blocks (thread CPU time)."""
+    t = timeit.Timer(fn, timer=time.thread_time)
+    n = 1
+    while True:                      # calls per block for about budget / rounds seconds
+        dt = t.timeit(number=n)
+        if dt >= budget / rounds / 4 or n >= 1 << 20:
+            break
+        n *= 2
+    return min(t.timeit(number=n) / n for _ in range(rounds))
+
+
+def study(state, steps, *, effective: bool) -> list[dict]:
+    """Rows ``{k, time, ratio, err_base, err_max, err_d, err_my, err_Az}`` for every ``k`` (``None``: full)."""
+    full = articulated_recursion(*state)
+    t_full = best_time(lambda: articulated_recursion(*state))
+    nA = np.linalg.norm(full.A, axis=(1, 2))
+    ef = np.array(effective_centre(full.A[0])) if effective else None
+    rows = [{"k": "full", "time": t_full, "ratio": 1.0, "err_base": 0.0, "err_max": 0.0,
+             "err_d": 0.0, "err_my": 0.0, "err_Az": 0.0}]
+    for k in steps:
+        r = articulated_recursion(*state, steps=k)
+        t = best_time(lambda: articulated_recursion(*state, steps=k))
+        e = np.linalg.norm(r.A - full.A, axis=(1, 2)) / nA
+        row = {"k": k, "time": t, "ratio": t / t_full, "err_base": float(e[0]), "err_max": float(e.max())}
+        if effective:
+            ek = np.abs(np.array(effective_centre(r.A[0])) - ef) / np.abs(ef)
+            row.update(err_d=float(ek[0]), err_my=float(ek[2]), err_Az=float(ek[3]))
+        else:
+            row.update(err_d=float("nan"), err_my=float("nan"), err_Az=float("nan"))
+        rows.append(row)
+    return rows
+
+
+def _md_table(title: str, rows: list[dict]) -> str:
+    out = [f"### {title}", "",
+           "| steps k | time (ms) | time / full | ‖ΔA₁‖/‖A₁‖ | max_i ‖ΔA_i‖/‖A_i‖ | d | m_y | A_z |",
+           "|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    def e(x):
+        return "—" if x != x else f"{x:.1e}"
+
+    for r in rows:
+        out.append(f"| {r['k']} | {1e3 * r['time']:.3f} | {r['ratio']:.2f} | {r['err_base']:.2e} | "
+                   f"{r['err_max']:.2e} | {e(r['err_d'])} | {e(r['err_my'])} | {e(r['err_Az'])} |")
+    return "\n".join(out) + "\n"
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--out", required=True, help="output folder")
+    p.add_argument("--quick", action="store_true", help="fewer sizes (a few seconds)")
+    p.add_argument("--no-charts", action="store_true", help="tables only")
+    args = p.parse_args(argv)
+    out = Path(args.out)
+    sizes = (10, 50, 200) if args.quick else (10, 50, 200, 1000)
+    rng = np.random.default_rng(0)
+    parts = ["# Truncated articulated recursion: speed against accuracy (thesis 10.2.2)", "",
+             "Generated by `python benchmarks/truncated.py`; times are thread CPU time, best of 7 blocks, "
+             f"one BLAS thread; Python {sys.version.split()[0]}, NumPy {np.__version__}.", "",
+             "`steps = k` keeps the k bodies outboard of every body (k batched sweeps over all bodies); "
+             "`full` is the recursion of 7.1.1 (one Python step per body).  Errors are relative to the full "
+             "recursion; d, m_y, A_z are the effective quantities of the first body (7.26, meaningful for "
+             "the straight chains of 7.3).", ""]
+    curves = {}
+    for N in sizes:
+        model = chain_model(N, allow_large=True)
+        q, qd = rng.uniform(-1, 1, N), rng.normal(size=N)
+        state = _state_arrays(model, q, qd, np.zeros(N), None)[1:]
+        rows = study(state, [k for k in STEPS if k < N - 1], effective=False)
+        curves[N] = rows
+        parts.append(_md_table(f"chain_model({N}), random configuration and speeds", rows))
+        print(f"[truncated] N = {N}: full {1e3 * rows[0]['time']:.3f} ms", file=sys.stderr, flush=True)
+    for lam in (2.0, 3.0, 4.9):
+        N = 50 if args.quick else 200
+        model = horizontal_chain_model(N, 1.0, 1.0 / lam, 1.0)
+        state = _state_arrays(model, np.zeros(N), None, None, None)[1:]
+        parts.append(_md_table(f"horizontal chain of 7.3, N = {N}, λ = {lam}", study(state, [1, 2, 3, 6], effective=True)))
+    atomic_write(out / "truncated.md", "\n".join(parts))
+    if not args.no_charts:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        fig, ax = plt.subplots(figsize=(6.0, 4.0), dpi=100)
+        for N, rows in curves.items():
+            rs = [r for r in rows if r["k"] != "full"]
+            ax.plot([r["ratio"] for r in rs], [max(r["err_base"], 1e-17) for r in rs], marker="o", label=f"N = {N}")
+            for r in rs:
+                if r["k"] in (1, 3, 6):
+                    ax.annotate(f"k={r['k']}", (r["ratio"], max(r["err_base"], 1e-17)), textcoords="offset points",
+                                xytext=(4, 4), fontsize=8)
+        ax.axvline(1.0, color="grey", lw=0.8, ls="--")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("time / time of the full recursion")
+        ax.set_ylabel("‖A₁⁽ᵏ⁾ − A₁‖ / ‖A₁‖ (base body)")
+        ax.set_title("Truncated articulated recursion (10.2.2)")
+        ax.legend(fontsize=8)
+        ax.grid(True, which="both", lw=0.3, alpha=0.5)
+        fig.tight_layout()
+        for fmt in ("png", "svg"):
+            buf = io.BytesIO()
+            fig.savefig(buf, format=fmt, metadata={"Date": None} if fmt == "svg" else None)
+            atomic_write(out / f"truncated.{fmt}", buf.getvalue())
+        plt.close(fig)
+    print(f"[truncated] wrote {out / 'truncated.md'}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

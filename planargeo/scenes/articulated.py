@@ -1,0 +1,282 @@
+"""Scene ``articulated``: rigid and articulated inertias along a chain as conics (thesis sections 7.1-7.3, 10.2.2, 10.2.3; 7.7a, 7.26).
+
+``n`` identical bodies (mass ``m = 1``, joints ``L = 1`` apart, centre of mass half-way,
+radius of gyration ``rho = L / lam``) hang from joint 1 at the origin; every further joint
+bends the chain by ``phi``.  At rest, without gravity.  For every body the scene gives
+
+* its rigid inertia ``I_i`` and its articulated inertia ``A_i`` (7.7a), the latter with only
+  ``outboard`` bodies beyond ``i`` included (the truncated recursion of 10.2.2;
+  ``outboard = None``: all of them);
+* the effective centre of ``A_i``: the centre of the conic, ``A_i⁻¹ [0, 0, 1]`` (the pole of
+  the line at infinity: a couple on body ``i`` turns it about this point, 7.26);
+* the axes of percussion ``I_i a`` and ``A_i a`` of a chosen acceleration pole ``a``
+  (5.64-5.68): the force on body ``i`` that gives it that acceleration alone and with the
+  bodies outboard attached;
+* for every body, the articulated inertia's components (at the body's own joint) after
+  ``k = 0, 1, ...`` recursion steps and their error against the full recursion.
+
+Inertias are imaginary conics; they are drawn through the real conic with the sign of the
+homogeneous part flipped (10.2.3, :func:`planargeo.geometry.conics.drawable_conic`), whose
+polars are the point reflections of the inertia's through the centre.
+
+Examples
+--------
+>>> from planargeo import scenes
+>>> q = scenes.build("articulated", n=3, lam=2.0, phi=0.0).quantities
+>>> round(q["effective_7_26"]["d_over_L"], 12)          # 7.27 at lambda = 2: 2/3 for any n
+0.666666666667
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from planargeo.mechanics.model import Body, Joint, Model
+from planargeo.scenes import SceneResult, check_param, register
+from planargeo.scenes.two_body import _plain
+
+__all__ = ["articulated", "articulated_state", "bent_chain_model", "joint_points", "inertia_at", "conic_centre", "COMPONENTS"]
+
+#: the six independent components of a planar inertia, in the order of the convergence chart
+COMPONENTS = ("m_x", "m_y", "A_z", "m_xy", "c_x", "c_y")
+
+
+def bent_chain_model(n: int, rho: float, L: float = 1.0, m: float = 1.0, g: float = 0.0) -> Model:
+    """``n`` identical bodies on revolute joints ``L`` apart along each body's x axis, no gravity.
+
+    Parameters
+    ----------
+    n : int
+        Number of bodies (>= 1).
+    rho, L, m : float
+        Radius of gyration, length and mass of each body (> 0).
+    g : float
+        Gravity along -y [m/s²] (default 0).
+
+    Returns
+    -------
+    Model
+
+    Examples
+    --------
+    >>> bent_chain_model(2, 0.5).N
+    2
+    """
+    bodies = [Body(m, (L / 2, 0.0), m * rho * rho, name=f"body {i + 1}") for i in range(n)]
+    joints = [Joint("revolute", (0.0 if i == 0 else L, 0.0, 0.0), name=f"CJ{i + 1}") for i in range(n)]
+    return Model(bodies, joints, list(range(-1, n - 1)), gravity=(0.0, -float(g)))
+
+
+def joint_points(q, L: float = 1.0) -> np.ndarray:
+    """Joint positions ``(n + 1, 2)`` of the chain with relative angles ``q`` (the last: the tip's end).
+
+    Parameters
+    ----------
+    q : array_like (n,)
+        Relative joint angles [rad].
+    L : float
+        Distance between joints.
+
+    Returns
+    -------
+    ndarray (n + 1, 2)
+
+    Examples
+    --------
+    >>> joint_points([0.0, np.pi / 2]).round(12) + 0.0
+    array([[0., 0.],
+           [1., 0.],
+           [1., 1.]])
+    """
+    th = np.cumsum(np.asarray(q, dtype=float))
+    steps = L * np.column_stack([np.cos(th), np.sin(th)])
+    return np.vstack([[0.0, 0.0], np.cumsum(steps, axis=0)])
+
+
+def inertia_at(A, point) -> np.ndarray:
+    """An inertia given at the origin, expressed at ``point = (x, y)``: ``X⁻ᵀ A X⁻¹`` (thesis 1.68, 4.58).
+
+    ``X = [[1, 0, -y], [0, 1, x], [0, 0, 1]]`` moves twists to the point (4.8).
+
+    Parameters
+    ----------
+    A : array_like (3, 3)
+    point : (float, float)
+
+    Returns
+    -------
+    ndarray (3, 3)
+
+    Examples
+    --------
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> inertia_at(inertia_matrix(2.0, [1.0, 0.0], 0.5), (1.0, 0.0)).round(12) + 0.0   # at the centre of mass
+    array([[2. , 0. , 0. ],
+           [0. , 2. , 0. ],
+           [0. , 0. , 0.5]])
+    """
+    x, y = (float(v) for v in point)
+    Xi = np.array([[1.0, 0.0, y], [0.0, 1.0, -x], [0.0, 0.0, 1.0]])     # X⁻¹
+    return Xi.T @ np.asarray(A, dtype=float) @ Xi
+
+
+def conic_centre(A) -> np.ndarray:
+    """Centre ``(x, y)`` of an inertia conic: its pole of the line at infinity, ``A⁻¹ [0, 0, 1]``.
+
+    For a body's inertia the centre of mass; for an articulated inertia the effective centre
+    (7.26): a couple turns the body about it.
+
+    Parameters
+    ----------
+    A : array_like (3, 3), positive definite
+
+    Returns
+    -------
+    ndarray (2,)
+
+    Examples
+    --------
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> conic_centre(inertia_matrix(2.0, [1.0, -0.5], 0.5))
+    array([ 1. , -0.5])
+    """
+    P = np.linalg.solve(np.asarray(A, dtype=float), [0.0, 0.0, 1.0])
+    return np.array([-P[1] / P[2], P[0] / P[2]])
+
+
+def _components(A) -> list[float]:
+    return [float(A[0, 0]), float(A[1, 1]), float(A[2, 2]), float(A[0, 1]), float(A[0, 2]), float(A[1, 2])]
+
+
+@register("articulated", limits={"n": (40, "n = 40 takes about 0.1 s; the chart grows as n²")})
+def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int | None = None,
+                pole_x: float = 0.0, pole_y: float = -0.6) -> SceneResult:
+    """Rigid and articulated inertias of a bent chain, their axes of percussion and convergence (7.7a, 7.26, 5.64-5.68).
+
+    Parameters
+    ----------
+    n : int
+        Number of bodies (>= 1).  Default 4.
+    lam : float
+        Size ratio ``lambda = L / rho`` (> 0, 7.21).  Default 3.
+    phi : float
+        Bend at every joint after the first [rad].  Default 0.4.
+    outboard : int or None
+        Bodies beyond each body included in its articulated inertia (>= 0), or None
+        for all of them (the full recursion).  Default None.
+    pole_x, pole_y : float
+        The acceleration pole ``a`` whose axes of percussion are given [m].
+
+    Returns
+    -------
+    SceneResult
+        ``quantities``: ``joints`` (n+1, 2), ``I``, ``A``, ``A_full`` (n, 3, 3) at the origin,
+        ``centre_rigid``, ``centre`` (n, 2) conic centres of ``I_i`` and ``A_i``,
+        ``axis_rigid``, ``axis`` (n, 3) the lines ``I_i a`` and ``A_i a``, ``pole`` (3,),
+        ``components`` (n lists of ``k = 0..n-1-i`` rows of :data:`COMPONENTS` of ``A_i`` at
+        joint ``i``), ``error`` (n lists: ``‖A_i^(k) - A_i‖_F / ‖A_i‖_F`` for the same ``k``),
+        ``truncation_error`` (n,) of the shown ``A``, ``effective_7_26``: ``d_over_L``,
+        ``mx_over_m``, ``my_over_m``, ``Az_over_m_rho2`` of body 1 (7.26; meaningful for
+        ``phi = 0``).  ``state``: ``q = [0, phi, ...]``.
+
+    Raises
+    ------
+    SceneError
+        A parameter out of range (named).
+
+    Examples
+    --------
+    >>> r = articulated(n=2, lam=2.0, phi=0.0, outboard=0)
+    >>> r.quantities["A"][0] == r.quantities["I"][0]       # no outboard body: the rigid inertia
+    True
+    """
+    from planargeo.scenes.horizontal_chain import effective_centre
+
+    n = check_param("n", n, "int", positive=True)
+    lam = check_param("lam", lam, positive=True)
+    phi = check_param("phi", phi)
+    outboard = check_param("outboard", outboard, "int", nonnegative=True, optional=True)
+    pole_x, pole_y = check_param("pole_x", pole_x), check_param("pole_y", pole_y)
+    params = dict(n=n, lam=lam, phi=phi, outboard=outboard, pole_x=pole_x, pole_y=pole_y)
+    L, m = 1.0, 1.0
+    rho = L / lam
+    model = bent_chain_model(n, rho, L, m)
+    q = np.array([0.0] + [phi] * (n - 1))
+    st = articulated_state(model, q, outboard=outboard, pole=(pole_x, pole_y), L=L)
+    d, mx, my, Az = effective_centre(st["A_full"][0])
+    quantities = {k: _plain(st[k]) for k in ("joints", "I", "A", "A_full", "centre_rigid", "centre", "pole",
+                                             "axis_rigid", "axis", "truncation_error")}
+    quantities["components"] = [_plain(c) for c in st["components"]]
+    quantities["error"] = [_plain(e) for e in st["error"]]
+    quantities["effective_7_26"] = {"d_over_L": d / L, "mx_over_m": mx / m, "my_over_m": my / m,
+                                    "Az_over_m_rho2": Az / (m * rho * rho)}
+    state = {"q": _plain(q), "qd": [0.0] * n, "tau": [0.0] * n}
+    return SceneResult("articulated", params, model, state, quantities,
+                       extra={"articulated": st["result"], "full": st["full"], "rho": rho, "L": L})
+
+
+def articulated_state(model, q, *, outboard: int | None = None, pole=(0.0, 0.0), L: float = 1.0) -> dict:
+    """Everything the scene and the explorer show of one configuration of a chain (arrays).
+
+    Parameters
+    ----------
+    model : Model
+        An unbranched chain of revolute joints ``L`` apart (:func:`bent_chain_model`).
+    q : array_like (n,)
+        Relative joint angles [rad]; the chain is taken at rest (inertias do not depend on speeds).
+    outboard : int or None
+        Truncation of the recursion (``None``: all bodies outboard).
+    pole : (float, float)
+        The acceleration pole ``a`` (a point) whose axes of percussion are wanted.
+    L : float
+        Distance between joints (for the joint positions).
+
+    Returns
+    -------
+    dict
+        ``joints``, ``I``, ``A``, ``A_full``, ``centre_rigid``, ``centre``, ``pole``, ``axis_rigid``,
+        ``axis``, ``truncation_error``, ``components`` (list of (k_i, 6) arrays), ``error`` (list of
+        (k_i,) arrays), ``result`` and ``full`` (:class:`~planargeo.algorithms.articulated_inertia.ArticulatedInertias`).
+
+    Raises
+    ------
+    SingularConfigurationError
+        A singular joint (never for bodies with mass and rotational inertia).
+
+    Examples
+    --------
+    >>> st = articulated_state(bent_chain_model(2, 0.5), [0.0, 0.0], outboard=0)
+    >>> bool(np.allclose(st["A"], st["I"]))
+    True
+    """
+    from planargeo.algorithms.articulated_inertia import articulated_inertia
+
+    q = np.asarray(q, dtype=float)
+    n = model.N
+    pts = joint_points(q, L)
+    full = articulated_inertia(model, q)
+    shown = full if outboard is None else articulated_inertia(model, q, steps=outboard)
+    I = np.asarray(_rigid(model, q), dtype=float)
+    a = np.array([pole[1], -pole[0], 1.0])
+    comps, errs = [[] for _ in range(n)], [[] for _ in range(n)]
+    nA = np.linalg.norm(full.A, axis=(1, 2))
+    for k in range(n):                                   # one truncated recursion per k, all bodies at once
+        Ak = full.A if k == n - 1 else articulated_inertia(model, q, steps=k).A
+        for i in range(n - k):                           # body i has n-1-i bodies outboard
+            comps[i].append(_components(inertia_at(Ak[i], pts[i])))
+            errs[i].append(float(np.linalg.norm(Ak[i] - full.A[i]) / nA[i]))
+    return {
+        "joints": pts, "I": I, "A": shown.A, "A_full": full.A,
+        "centre_rigid": np.array([conic_centre(x) for x in I]),
+        "centre": np.array([conic_centre(x) for x in shown.A]),
+        "pole": a, "axis_rigid": I @ a, "axis": shown.A @ a,
+        "truncation_error": np.linalg.norm(shown.A - full.A, axis=(1, 2)) / nA,
+        "components": [np.array(c) for c in comps], "error": [np.array(e) for e in errs],
+        "result": shown, "full": full,
+    }
+
+
+def _rigid(model, q):
+    """The bodies' inertias at the origin in the configuration ``q``."""
+    from planargeo.mechanics.kinematics import kinematics
+
+    return kinematics(model, q).I

@@ -1,0 +1,199 @@
+"""Scene ``splitting``: a constrained chain's articulated mobilities and chain splitting (thesis sections 7.4-7.6: 7.28-7.56).
+
+``n`` identical bodies (mass ``m``, radius of gyration ``rho``, joints ``L`` apart, centre of
+mass half-way) hang from the ground at joint ``CJ_1`` (the origin); every further joint bends
+the chain by ``phi``.  At rest; gravity ``g`` along ``-y`` (0: the thesis's example).  A pure
+couple ``f_{n+1} = [0, 0, tau]`` from a fictitious joint ``n+1`` acts on the tip (as
+``-f_{n+1}``, 3.1; 7.44).
+
+The chain is split at joint ``split + 1``: bodies ``1..split`` form the constrained chain with
+articulated mobility ``Lambda_i⁻¹``, ``b_i`` (7.4.1, corrected 7.38a), bodies
+``split+1..n`` the free-floating chain with articulated inertia ``A_{i+1}``, ``d_{i+1}``
+(7.1.1); the acceleration of body ``i = split`` and the force of joint ``i+1`` follow
+directly (7.54, 7.56), and the accelerations of all bodies by chain splitting at every joint.
+
+With ``n = 2`` this is example 7.5 (Figure 7.9): ``a_2 = -Lambda_2⁻¹ f_3`` (7.45) is a
+rotation about the point ``(x, 0)`` with (7.47; derived by hand, ``eta = L / rho``)::
+
+    x / L = 1 + 2 eta² cos(phi) / (4 + 5 eta²)
+
+Examples
+--------
+>>> from planargeo import scenes
+>>> q = scenes.build("splitting", phi=0.0).quantities
+>>> round(q["x_over_L"], 12)                 # 1 + 2*4/(4 + 20)
+1.333333333333
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from planargeo.errors import SceneError
+from planargeo.scenes import SceneResult, check_param, register
+from planargeo.scenes.articulated import bent_chain_model, joint_points
+from planargeo.scenes.two_body import _plain
+
+__all__ = ["splitting", "splitting_state", "twist_pole"]
+
+
+def twist_pole(a) -> np.ndarray | None:
+    """The pole ``(x, y)`` of a twist or acceleration ``a = [v_x, v_y, w]`` (None for a translation).
+
+    Parameters
+    ----------
+    a : array_like (3,)
+
+    Returns
+    -------
+    ndarray (2,) or None
+
+    Examples
+    --------
+    >>> twist_pole([0.0, -2.0, 2.0])
+    array([1., 0.])
+    """
+    a = np.asarray(a, dtype=float)
+    if abs(a[2]) <= 1e-12 * max(1.0, float(np.abs(a).max())):
+        return None
+    return np.array([-a[1] / a[2], a[0] / a[2]])
+
+
+def splitting_state(model, q, split: int, tau: float, *, L: float = 1.0) -> dict:
+    """Mobilities, split solution and chain-splitting accelerations of one state at rest (arrays).
+
+    Parameters
+    ----------
+    model : Model
+        An unbranched chain hanging from the ground (:func:`~planargeo.scenes.articulated.bent_chain_model`).
+    q : array_like (n,)
+        Relative joint angles [rad].
+    split : int
+        Split at joint ``split + 1``: the constrained part is bodies ``1..split`` (1 <= split < n).
+    tau : float
+        The couple ``f_{n+1} = [0, 0, tau]`` on the tip (applied as ``-f_{n+1}``).
+    L : float
+        Distance between joints (joint positions).
+
+    Returns
+    -------
+    dict
+        ``joints`` (n+1, 2); ``Lambda_inv`` (n, 3, 3), ``b`` (n, 3) with the couple applied
+        (the mobility of body ``i`` sees loads on bodies ``1..i`` only); ``Lambda_inv_free``,
+        ``b_free`` without it; ``A``, ``d`` (n, 3, 3), (n, 3) articulated inertias with the
+        couple; ``a_split`` (7.54) and ``f_split`` (7.56) at the split; ``a``, ``f``, ``qdd``
+        of the whole chain by chain splitting (7.6); ``a_tip_7_37`` = ``-Lambda_n⁻¹ f_{n+1} + b_n``
+        (7.37, 7.45); ``f_tip`` = ``f_{n+1}``; ``centres`` (n, 2 or NaN): the poles of
+        ``-Lambda_i⁻¹ [0, 0, 1]`` (where a couple on body ``i`` alone turns it, 7.5).
+
+    Raises
+    ------
+    SceneError
+        ``split`` out of range.
+    SingularConfigurationError
+        A singular joint or split matrix.
+
+    Examples
+    --------
+    >>> from planargeo.scenes.articulated import bent_chain_model
+    >>> st = splitting_state(bent_chain_model(2, 0.5), [0.0, 0.0], 1, 1.0)
+    >>> bool(np.allclose(st["a_split"], st["a"][0])), bool(np.allclose(st["a_tip_7_37"], st["a"][1]))
+    (True, True)
+    """
+    from planargeo.algorithms.articulated_inertia import articulated_inertia
+    from planargeo.algorithms.articulated_mobility import articulated_mobility
+    from planargeo.algorithms.chain_splitting import mobility_split, split_acceleration, split_force
+
+    n = model.N
+    if not 1 <= split < n:
+        raise SceneError(f"split must be between 1 and n - 1 = {n - 1}, got {split!r}")
+    q = np.asarray(q, dtype=float)
+    z = np.zeros(n)
+    f_tip = np.array([0.0, 0.0, float(tau)])
+    f_ext = np.zeros((n, 3))
+    f_ext[-1] = -f_tip                                   # joint n+1 pushes the tip with -f_{n+1} (3.1)
+    mob = articulated_mobility(model, q, z, z, f_ext)
+    free = articulated_mobility(model, q, z, z)
+    art = articulated_inertia(model, q, z, z, f_ext)
+    sol = mobility_split(model, q, z, z, f_ext)
+    i, j = split - 1, split                              # 0-based: body i below the split, i+1 above
+    from planargeo.mechanics.kinematics import kinematics
+    kappa = kinematics(model, q, z).kappa
+    args = (mob.Lambda_inv[i], mob.b[i], art.A[j], art.d[j], art.T[j], art.S[j], np.zeros(art.S[j].shape[1]),
+            kappa[j])
+    centres = []
+    for Lam in free.Lambda_inv:
+        c = twist_pole(-Lam @ [0.0, 0.0, 1.0])
+        centres.append(c if c is not None else np.full(2, np.nan))
+    return {
+        "joints": joint_points(q, L), "Lambda_inv": mob.Lambda_inv, "b": mob.b,
+        "Lambda_inv_free": free.Lambda_inv, "b_free": free.b, "A": art.A, "d": art.d,
+        "a_split": split_acceleration(*args), "f_split": split_force(*args),
+        "a": sol.a, "f": sol.f, "qdd": sol.qdd,
+        "a_tip_7_37": -free.Lambda_inv[-1] @ f_tip + free.b[-1], "f_tip": f_tip,
+        "centres": np.array(centres),
+    }
+
+
+@register("splitting", limits={"n": (200, "n = 200 takes about 0.2 s")})
+def splitting(n: int = 2, m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: float = np.pi / 4,
+              tau: float = 1.0, split: int = 1, g: float = 0.0) -> SceneResult:
+    """A couple on the tip of a pinned chain, solved by articulated mobility and chain splitting (7.38, 7.54, 7.56).
+
+    Parameters
+    ----------
+    n : int
+        Number of bodies (>= 2).  Default 2 (example 7.5).
+    m, rho, L : float
+        Mass, radius of gyration and length of each body (> 0).  Defaults 1, 0.5, 1.
+    phi : float
+        Bend at every joint after the first [rad].  Default ``pi / 4``.
+    tau : float
+        The couple ``f_{n+1} = [0, 0, tau]`` on the tip [N·m] (non-zero).  Default 1.
+    split : int
+        Split at joint ``split + 1`` (1 <= split <= n - 1).  Default 1.
+    g : float
+        Gravity along -y [m/s²] (>= 0).  Default 0.
+
+    Returns
+    -------
+    SceneResult
+        ``quantities``: the arrays of :func:`splitting_state` as lists, and for example 7.5
+        ``Lambda1_inv`` (7.42), ``Lambda2_inv`` (7.43), ``a_tip`` (``a_2`` of 7.46 for
+        ``n = 2``), ``x_over_L`` (7.47-7.48: ``-a_tip[1] / (L a_tip[2])``), ``eta``
+        (7.49).  ``state``: ``q = [0, phi, ...]``, at rest.
+
+    Raises
+    ------
+    SceneError
+        A parameter out of range (named).
+
+    Examples
+    --------
+    >>> r = splitting(phi=np.pi / 2)
+    >>> round(r.quantities["x_over_L"], 12)      # at 90 degrees: the joint of body 2
+    1.0
+    """
+    n = check_param("n", n, "int", positive=True)
+    if n < 2:
+        raise SceneError(f"n must be at least 2 (a chain to split), got {n}")
+    m, rho, L = (check_param(k, v, positive=True) for k, v in (("m", m), ("rho", rho), ("L", L)))
+    phi = check_param("phi", phi)
+    tau = check_param("tau", tau, nonzero=True)
+    split = check_param("split", split, "int", positive=True)
+    g = check_param("g", g, nonnegative=True)
+    params = dict(n=n, m=m, rho=rho, L=L, phi=phi, tau=tau, split=split, g=g)
+    model = bent_chain_model(n, rho, L, m, g)
+    q = np.array([0.0] + [phi] * (n - 1))
+    st = splitting_state(model, q, split, tau, L=L)
+    a_tip = st["a"][-1]
+    quantities = {k: _plain(st[k]) for k in ("joints", "Lambda_inv", "b", "A", "d", "a_split", "f_split",
+                                             "a", "f", "qdd", "a_tip_7_37", "f_tip")}
+    quantities.update({
+        "Lambda1_inv": _plain(st["Lambda_inv_free"][0]),
+        "Lambda2_inv": _plain(st["Lambda_inv_free"][1]),
+        "a_tip": _plain(a_tip),
+        "x_over_L": float(-a_tip[1] / (L * a_tip[2])),
+        "eta": L / rho,
+    })
+    state = {"q": _plain(q), "qd": [0.0] * n, "tau": [0.0] * n}
+    return SceneResult("splitting", params, model, state, quantities, extra={"state": st})

@@ -1,0 +1,362 @@
+"""Constrained chain: articulated mobility and chain splitting (thesis sections 7.4-7.6, corrected 7.38a).
+
+A chain of ``n`` identical bodies (mass 1, joints ``L = 1`` apart, radius of gyration ``ρ``)
+is pinned to the ground at ``CJ_1``; every further joint bends it by ``φ``.  At rest, a pure
+couple ``f_{n+1} = [0, 0, τ]`` acts on the tip from a fictitious joint ``n + 1`` (7.44);
+gravity ``g`` may be added.
+
+Pick the joint where the chain is split (slider, or drag the split marker along the chain):
+bodies ``1..i`` below it form the *constrained chain* with articulated mobility ``Λ_i⁻¹``
+and bias ``b_i`` (7.4.1 with the corrected sign of 7.38a, ``docs/errata.md``), bodies
+``i+1..n`` above it the *free-floating chain* with articulated inertia ``A_{i+1}``.  The
+explorer shows
+
+* the acceleration of body ``i`` straight from the split (7.54) and the force of the split
+  joint ``f_{i+1}`` (7.56), drawn as its line of action;
+* the accelerations of all bodies (chain splitting at every joint, 7.6) as acceleration
+  poles, the lower half and the upper half in two colours;
+* where a couple on body ``i`` alone would turn it (the pole of ``-Λ_i⁻¹ [0, 0, 1]``: the
+  effective centre of mass of body ``i`` in the constrained chain, 7.5);
+* with ``n = 2``, thesis example 7.5: ``Λ_2⁻¹`` (7.43), ``a_2 = -Λ_2⁻¹ f_3`` (7.46) and the
+  position ``x/L`` of its pole (7.47-7.48) beside the closed form
+  ``1 + 2η² cos φ / (4 + 5η²)``.
+
+The state is a single instant (accelerations at rest): nothing moves, so there is no Play.
+"""
+from __future__ import annotations
+
+import math
+
+import ipywidgets as W
+import numpy as np
+from matplotlib.lines import Line2D
+
+from planargeo.draw.artists import LineArtist, PointArtist
+from planargeo.draw.layout import fit_view
+from planargeo.draw.style import COLORS, OKABE_ITO
+from planargeo.scenes.articulated import bent_chain_model
+from planargeo.scenes.splitting import splitting_state, twist_pole
+from planargeo.widgets.articulated import (bend_for_tip, label_artist, line_candidates, place_labels,
+                                           point_candidates)
+from planargeo.widgets.base import Explorer, Handle, Step, cached
+
+__all__ = ["SplittingExplorer", "NMAX", "x_over_L_7_48"]
+
+#: Most bodies the explorer shows.
+NMAX = 8
+_LOWER, _UPPER = OKABE_ITO["blue"], OKABE_ITO["vermillion"]
+
+
+def x_over_L_7_48(rho: float, L: float, phi: float) -> float:
+    """Closed form of thesis 7.48: the pole of ``a_2`` of example 7.5 at ``x / L`` on ``y = 0``.
+
+    ``x / L = 1 + 2 η² cos φ / (4 + 5 η²)`` with ``η = L / ρ`` (7.49), derived by hand from the
+    2×2 joint-space inertia of the pinned pair (``H u = [1, 1]ᵀ`` for the couple on body 2).
+
+    Parameters
+    ----------
+    rho, L : float
+        Radius of gyration and length of each body (> 0).
+    phi : float
+        Angle of body 2 relative to body 1 [rad].
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> x_over_L_7_48(0.5, 1.0, 0.0)
+    1.3333333333333333
+    """
+    eta2 = (L / rho) ** 2
+    return 1.0 + 2.0 * eta2 * math.cos(phi) / (4.0 + 5.0 * eta2)
+
+
+class SplittingExplorer(Explorer):
+    """A pinned chain split at a chosen joint: mobilities, accelerations of both halves, the split force.
+
+    Parameters
+    ----------
+    **kw
+        As for :class:`planargeo.widgets.base.Explorer` (``display``, ``figsize``, initial
+        control values by name).
+
+    Examples
+    --------
+    Thesis example 7.5 (``ρ = L/2``, ``φ = 45°``): the couple turns body 2 about ``x = 1.2357 L``.
+
+    >>> ex = SplittingExplorer(display="agg")
+    >>> round(ex.readout_values["x/L of a_n's pole (7.48)"], 4), round(ex.readout_values["x/L closed form"], 4)
+    (1.2357, 1.2357)
+    """
+
+    title = "Constrained chain: articulated mobility and chain splitting"
+    slug = "splitting"
+    figsize = (7.6, 5.2)
+    display_controls = ("mobility centres",)
+    units = {
+        "split at joint": "—", "a_i (7.54)": "rad/s², m/s²", "a_i+1": "rad/s², m/s²",
+        "f_i+1 (7.56)": "N, N, N·m", "pole of a_i": "m", "pole of a_i+1": "m", "a_n (tip)": "rad/s², m/s²",
+        "x/L of a_n's pole (7.48)": "—", "x/L closed form": "—", "η = L/ρ (7.49)": "—",
+        "Λ_i⁻¹ row 1": "1/kg, 1/(kg·m)", "Λ_i⁻¹ row 2": "1/kg, 1/(kg·m)", "Λ_i⁻¹ row 3": "1/(kg·m), 1/(kg·m²)",
+        "b_i": "rad/s², m/s²", "q̈ (6.110)": "rad/s²",
+    }
+
+    def __init__(self, **kw):
+        self._models: dict = {}
+        super().__init__(**kw)
+
+    def __repr__(self) -> str:
+        return "SplittingExplorer(...)"
+
+    def make_controls(self):
+        """The explorer's controls.
+
+        Returns
+        -------
+        dict
+            ``{name: widget}``.
+        """
+        return {
+            "bodies n": Step(2, NMAX, 1, 2, "bodies n", integer=True).make("bodies n"),
+            "split at joint": Step(2, NMAX, 1, 2, "split at joint i+1", integer=True).make("split"),
+            "ρ (m)": Step(0.05, 2.0, 0.01, 0.5, "ρ (m), L = 1").make("rho"),
+            "bend φ (deg)": Step(-180.0, 180.0, 0.5, 45.0, "bend φ (deg)").make("phi"),
+            "couple τ (N·m)": Step(-5.0, 5.0, 0.05, 1.0, "couple τ on the tip (N·m)").make("tau"),
+            "g (m/s²)": Step(0.0, 9.81, 0.01, 0.0, "g (m/s²)").make("g"),
+            "mobility centres": W.Checkbox(value=True, description="mobility centres"),
+            # the focus of the base contract, made here so that it is an ordinary control (the base's
+            # test of display controls sets sliders and checkboxes only)
+            "focus": W.Dropdown(options=["all", *self.focus_options()], value="all", description="focus",
+                                layout=W.Layout(width="310px")),
+        }
+
+    def adjust(self, values, changed):
+        """The split joint stays on the chain (``2 <= i+1 <= n``).
+
+        Parameters
+        ----------
+        values : dict
+        changed : set of str
+
+        Returns
+        -------
+        dict
+            ``{"split at joint": n}`` when the chain became shorter than the split.
+        """
+        n = int(values["bodies n"])
+        return {"split at joint": n} if values["split at joint"] > n else {}
+
+    def setup_axes(self, ax):
+        """Equal-aspect axes with metre labels.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+        """
+        super().setup_axes(ax)
+        ax.set_position([0.1, 0.12, 0.86, 0.83])
+        ax.set_xlabel("x (m)")
+        ax.set_ylabel("y (m)")
+
+    def make_artists(self, ax):
+        """Create every artist once (both halves of the chain, pins, split marker, force, poles).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes
+        """
+        kw = dict(lw=7, alpha=0.55, solid_capstyle="round", zorder=1)
+        self.lower = ax.add_line(Line2D([], [], color=_LOWER, label="constrained chain 1..i", **kw))
+        self.upper = ax.add_line(Line2D([], [], color=_UPPER, label="free-floating chain i+1..n", **kw))
+        self.pins = ax.add_line(Line2D([], [], marker="o", ms=6, mfc="white", mec="black", ls="none", zorder=4))
+        self.ground = ax.add_line(Line2D([0.0], [0.0], marker="s", ms=9, color=COLORS["ground"], ls="none",
+                                         zorder=3))
+        self.cut = ax.add_line(Line2D([], [], marker="o", ms=15, mfc="none", mec="#b00020", mew=2.2, ls="none",
+                                      zorder=5, label="split joint"))
+        self.force = ax.add_artist(LineArtist([0.0, 1.0, 0.0], role="reaction", scale=0.5))
+        self.couple = ax.add_artist(LineArtist([0.0, 0.0, 1.0], role="wrench", corner="upper left"))
+        self.poles = [ax.add_artist(PointArtist([0.0, 0.0, 1.0], role="accel", glyph=False, markersize=6))
+                      for _ in range(NMAX)]
+        self.centre = ax.add_artist(PointArtist([0.0, 0.0, 1.0], role="twist", glyph=False, marker="D",
+                                                markersize=6))
+        # labels, placed clear of each other at every update
+        self.lab = {name: label_artist(ax, "", color) for name, color in (
+            ("a_i", _LOWER), ("a_j", _UPPER), ("f", COLORS["reaction"]), ("centre", COLORS["twist"]),
+            ("cut", "#b00020"), ("couple", COLORS["wrench"]))}
+
+    def focus_options(self):
+        """Focus on one side of the split: the other side's links and poles fade.
+
+        Returns
+        -------
+        list of str
+            ``"constrained part"`` (bodies ``1..i``) and ``"free-floating part"`` (``i+1..n``).
+        """
+        return ["constrained part", "free-floating part"]
+
+    def _model(self, n, rho, g):
+        return cached(self._models, (n, rho, g), lambda: bent_chain_model(n, rho, 1.0, 1.0, g))
+
+    def handles(self):
+        """Draggable handles: the split marker (snaps to the nearest joint) and the tip (bend ``φ``).
+
+        Returns
+        -------
+        list of Handle
+        """
+        def split_where():
+            st = self.state
+            return None if st is None else tuple(st["joints"][st["split"]])
+
+        def split_drag(x, y):
+            st = self.state
+            d = np.hypot(*(st["joints"][1:st["n"]] - [x, y]).T)
+            return {"split at joint": int(np.argmin(d)) + 2}
+
+        def tip_where():
+            st = self.state
+            return None if st is None else tuple(st["joints"][-1])
+
+        def tip_drag(x, y):
+            phi = bend_for_tip((x, y), int(self.values["bodies n"]), 0.0)
+            return {"bend φ (deg)": float(np.clip(math.degrees(phi), -180.0, 180.0))}
+
+        return [Handle("split", split_where, split_drag), Handle("tip", tip_where, tip_drag)]
+
+    def compute(self, v, changed):
+        """Mobilities, the split solution and every body's acceleration.
+
+        Parameters
+        ----------
+        v : dict
+            Control values.
+        changed : set of str
+
+        Returns
+        -------
+        dict
+            :func:`planargeo.scenes.splitting.splitting_state` plus ``n``, ``split``, ``rho``, ``phi``.
+
+        Raises
+        ------
+        PlanargeoError
+            A configuration that cannot be computed (e.g. a zero couple and no gravity has no
+            acceleration poles; singular joints).
+        """
+        n, split = int(v["bodies n"]), int(v["split at joint"]) - 1
+        rho, phi, tau = float(v["ρ (m)"]), math.radians(v["bend φ (deg)"]), float(v["couple τ (N·m)"])
+        if tau == 0.0 and float(v["g (m/s²)"]) == 0.0:
+            from planargeo.errors import InputError
+
+            raise InputError("couple τ must be non-zero without gravity: nothing would move")
+        q = np.array([0.0] + [phi] * (n - 1))
+        st = splitting_state(self._model(n, rho, float(v["g (m/s²)"])), q, split, tau)
+        st.update(n=n, split=split, rho=rho, phi=phi, tau=tau)
+        return st
+
+    def render(self, st):
+        """Update the artists in place and return the readout.
+
+        Parameters
+        ----------
+        st : dict
+            A state from :meth:`compute`.
+
+        Returns
+        -------
+        dict
+            Readout values (units in :attr:`units`).
+        """
+        n, i = st["n"], st["split"]                      # the split joint is i+1 (1-based): body i below it
+        pts = st["joints"]
+        self.lower.set_data(pts[:i + 1, 0], pts[:i + 1, 1])
+        self.upper.set_data(pts[i:, 0], pts[i:, 1])
+        self.pins.set_data(pts[:-1, 0], pts[:-1, 1])
+        self.cut.set_data([pts[i, 0]], [pts[i, 1]])
+        f = st["f_split"]
+        self.force.set_line(f)
+        self.force.set_anchor(pts[i])
+        fxy = math.hypot(f[0], f[1])
+        self.force.set_scale(0.6 / fxy if fxy > 0 else None)
+        self.couple.set_line(-st["f_tip"])
+        view = [pts]
+        poles = [twist_pole(a) for a in st["a"]]
+        for b in (i - 1, i):                                   # the two bodies at the split stay in view
+            if poles[b] is not None:
+                view.append([poles[b]])
+        c = st["centres"][i - 1]
+        show_c = bool(self.values["mobility centres"]) and bool(np.all(np.isfinite(c)))
+        if show_c:
+            view.append([c])
+        fit_view(self.ax, np.vstack(view), margin=0.15)
+        (x0, x1), (y0, y1) = self.ax.get_xlim(), self.ax.get_ylim()
+        for b in range(NMAX):
+            art = self.poles[b]
+            p = poles[b] if b < n else None
+            near = b in (i - 1, i)
+            inside = p is not None and x0 <= p[0] <= x1 and y0 <= p[1] <= y1
+            art.set_visible(b < n and (near or inside))         # the others only where they are in view
+            if b < n:
+                art.set_point(st["a"][b])
+                art._marker.set_color(_LOWER if b < i else _UPPER)
+        focus = self.values.get("focus", "all")
+        low, up = (1.0, 1.0) if focus == "all" else (1.0, 0.2) if focus == "constrained part" else (0.2, 1.0)
+        self.lower.set_alpha(0.55 * low)
+        self.upper.set_alpha(0.55 * up)
+        for b in range(n):
+            alpha = low if b < i else up
+            self.poles[b].set_alpha(alpha)
+            for child in self.poles[b].get_children():
+                child.set_alpha(alpha)
+        if poles[i - 1] is None and poles[i] is None:          # both translate: one arrow says it (∞)
+            u, w = st["a"][i - 1][:2], st["a"][i][:2]
+            if abs(u[0] * w[1] - u[1] * w[0]) <= 0.2 * np.hypot(*u) * np.hypot(*w):
+                self.poles[i].set_visible(False)
+        self.centre.set_visible(show_c)
+        if show_c:
+            self.centre.set_point([c[1], -c[0], 1.0])
+        lab = self.lab
+        lab["a_i"].set_text(f"$a_{{{i}}}$")
+        lab["a_j"].set_text(f"$a_{{{i + 1}}}$")
+        lab["f"].set_text(f"$f_{{{i + 1}}}$")
+        lab["centre"].set_text(f"centre of $\\Lambda_{{{i}}}^{{-1}}$")
+        lab["cut"].set_text("split")
+        lab["couple"].set_text(f"$-f_{{{n + 1}}}$ on the tip")
+        for key in lab:
+            lab[key].set_visible(True)
+        lab["centre"].set_visible(show_c)
+        corner = (x0 + 1e-9 * (x1 - x0), y1 - 1e-9 * (y1 - y0))      # beside the couple's glyph (upper left)
+        place_labels(self.ax, [
+            (lab["couple"], [(corner, (30.0, -10.0)), (corner, (30.0, -30.0))]),
+            (lab["cut"], point_candidates(pts[i], offset=9.0)),
+            (lab["a_i"], [] if poles[i - 1] is None else point_candidates(poles[i - 1])),
+            (lab["a_j"], [] if poles[i] is None else point_candidates(poles[i])),
+            (lab["f"], line_candidates(f, (x0, x1, y0, y1))),
+            (lab["centre"], point_candidates(c) if show_c else []),
+        ])
+        Lam = st["Lambda_inv"][i - 1]
+        out = {
+            "split at joint": i + 1,
+            "a_i (7.54)": tuple(st["a_split"]),
+            "a_i+1": tuple(st["a"][i]),
+            "f_i+1 (7.56)": tuple(f),
+            "pole of a_i": _pole_text(st["a"][i - 1]),
+            "pole of a_i+1": _pole_text(st["a"][i]),
+            "Λ_i⁻¹ row 1": tuple(Lam[0]), "Λ_i⁻¹ row 2": tuple(Lam[1]), "Λ_i⁻¹ row 3": tuple(Lam[2]),
+            "b_i": tuple(st["b"][i - 1]),
+            "a_n (tip)": tuple(st["a"][-1]),
+            "q̈ (6.110)": tuple(st["qdd"]),
+        }
+        a_n = st["a"][-1]
+        if n == 2 and float(self.values["g (m/s²)"]) == 0.0 and a_n[2] != 0:
+            out["x/L of a_n's pole (7.48)"] = float(-a_n[1] / a_n[2])
+            out["x/L closed form"] = x_over_L_7_48(st["rho"], 1.0, st["phi"])
+            out["η = L/ρ (7.49)"] = 1.0 / st["rho"]
+        return out
+
+
+def _pole_text(a):
+    p = twist_pole(a)
+    return "at infinity (translation)" if p is None else tuple(p)

@@ -1,0 +1,166 @@
+"""ArticulatedExplorer (thesis 7.1-7.3, 10.2.2, 10.2.3) against independent references.
+
+References: the dense free-floating Schur complement of each body's outboard chain
+(``dense_articulated``: Pinocchio / KKT) for ``A_k``, the same of the chain *cut* after the
+included outboard bodies for the truncated recursion, the hand closed forms 7.20 and 7.27,
+and for Play the energy balance ``T + V + W = E₀`` with ``W`` the dissipated energy.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from planargeo.draw.layout import legibility_problems
+from planargeo.mechanics.model import Model
+from planargeo.scenes.articulated import bent_chain_model, inertia_at
+from planargeo.widgets import ArticulatedExplorer
+from test_articulated_reference import dense_articulated
+
+
+def _legible(ex):
+    assert ex.message == ""
+    assert legibility_problems(ex.fig) == []
+
+
+def _reference_A(n, lam, phi_deg, base_deg, k, outboard=None):
+    """A_k (0-based k) at the origin: dense Schur complement of the chain cut after the included bodies."""
+    model = bent_chain_model(n, 1.0 / lam)
+    last = n if outboard is None else min(n, k + outboard + 1)
+    cut = Model(model.bodies[:last], model.joints[:last], list(model.parents[:last]), model.gravity)
+    q = np.array([math.radians(base_deg)] + [math.radians(phi_deg)] * (last - 1))
+    z = np.zeros(last)
+    return dense_articulated(cut, q, z, z, None, k)[0]
+
+
+def test_default_state_matches_the_dense_reference_and_is_legible():
+    ex = ArticulatedExplorer(display="agg")
+    _legible(ex)
+    st = ex.state
+    for k in range(4):
+        ref = _reference_A(4, 3.0, 25.0, 0.0, k)
+        np.testing.assert_allclose(st["A"][k], ref, atol=1e-10 * np.abs(ref).max())
+        np.testing.assert_allclose(ex.art[k].get_conic(), ref, atol=1e-10 * np.abs(ref).max())
+        assert ex.art[k].imaginary                              # drawn through its real partner (10.2.3)
+        # the drawn ellipse is centred on the effective centre A⁻¹ [0, 0, 1] (7.26)
+        P = np.linalg.solve(ref, [0.0, 0.0, 1.0])
+        xy = ex.art[k].get_xy()
+        np.testing.assert_allclose(np.nanmean(xy[:-1], axis=0), [-P[1] / P[2], P[0] / P[2]], atol=1e-9)
+    Aj = inertia_at(_reference_A(4, 3.0, 25.0, 0.0, 0), (0.0, 0.0))
+    assert ex.readout_values["A_z of A_k at its joint"] == pytest.approx(Aj[2, 2], rel=1e-10)
+
+
+@pytest.mark.parametrize("phi_deg", [0.0, 40.0, 90.0, 135.0])
+@pytest.mark.parametrize("lam", [0.8, 2.0, 5.0])
+def test_thesis_7_2_effective_mass_7_20(phi_deg, lam):
+    ex = ArticulatedExplorer(display="agg", **{"bodies n": 2, "λ = L/ρ": lam, "bend φ (deg)": phi_deg})
+    L, rho, c = 1.0, 1.0 / lam, math.cos(math.radians(phi_deg))
+    mx = (L**2 + 8 * rho**2 + L**2 * c**2) / (L**2 + 4 * rho**2)          # 7.20 with m = 1
+    assert ex.readout_values["m_x of A_k"] == pytest.approx(mx, rel=1e-12)
+    _legible(ex)
+
+
+@pytest.mark.parametrize("lam", [1.0, 2.0, 3.0])
+def test_thesis_7_3_effective_centre_and_truncation(lam):
+    ex = ArticulatedExplorer(display="agg", **{"bodies n": 5, "λ = L/ρ": lam, "bend φ (deg)": 0.0})
+    full = ex.readout_values["effective centre d/L (7.27)"]
+    ref = _reference_A(5, lam, 0.0, 0.0, 0)
+    assert full == pytest.approx(ref[1, 2] / ref[1, 1], rel=1e-10)      # 7.26: d = c / m_y on the axis
+    for k in range(4):
+        ex.set(**{"outboard bodies": k})
+        ref_k = _reference_A(5, lam, 0.0, 0.0, 0, outboard=k)
+        np.testing.assert_allclose(ex.state["A"][0], ref_k, atol=1e-10 * np.abs(ref_k).max())
+        err = np.linalg.norm(ref_k - ref) / np.linalg.norm(ref)
+        assert ex.readout_values["truncation error ‖A−A_full‖/‖A_full‖"] == pytest.approx(err, rel=1e-8)
+        assert ex.readout_values["outboard included"] == f"{k} of 4"
+        if lam == 2.0:                                                    # 7.27: 2/3 from the first step on
+            assert ex.readout_values["effective centre d/L (7.27)"] == pytest.approx(
+                2 / 3 if k > 0 else 0.5, rel=1e-12)
+        _legible(ex)
+
+
+def test_percussion_axis_and_its_point_reflection():
+    ex = ArticulatedExplorer(display="agg", **{"focus": "body 2", "pole x": 2.5, "pole y": -1.2})
+    k = 1
+    A = _reference_A(4, 3.0, 25.0, 0.0, k)
+    a = np.array([-1.2, -2.5, 1.0])                                       # the pole (2.5, -1.2) as [y, -x, 1]
+    axis = ex.axis_A.get_line()
+    np.testing.assert_allclose(np.cross(axis, A @ a), 0.0, atol=1e-10 * np.abs(A @ a).max() ** 2)
+    # 10.2.3: the polar of a w.r.t. the drawn real conic is the axis reflected through the centre
+    P = np.linalg.solve(A, [0.0, 0.0, 1.0])
+    c = np.array([-P[1] / P[2], P[0] / P[2]])
+    polar = ex.polar.get_line()
+    foot = np.array([axis[1], -axis[0]]) * axis[2] / (axis[0] ** 2 + axis[1] ** 2)   # two points of the axis
+    for X in (foot, foot + np.array([axis[0], axis[1]]) / math.hypot(axis[0], axis[1])):
+        assert abs(axis[2] + X[1] * axis[0] - X[0] * axis[1]) < 1e-9 * np.abs(axis).max()   # X on the axis
+        Y = 2 * c - X
+        assert abs(polar[2] + Y[1] * polar[0] - Y[0] * polar[1]) < 1e-9 * np.abs(polar).max()
+    _legible(ex)
+
+
+def test_chart_components_and_error_per_step():
+    ex = ArticulatedExplorer(display="agg", **{"bodies n": 6, "focus": "body 2"})
+    errs = ex.err_curve.get_ydata()
+    assert len(errs) == 5 and errs[-1] == 0.0 and np.all(np.diff(errs) < 0)
+    full = _reference_A(6, 3.0, 25.0, 0.0, 1)
+    for j, k in enumerate(range(5)):
+        ref = _reference_A(6, 3.0, 25.0, 0.0, 1, outboard=k)
+        assert errs[j] == pytest.approx(np.linalg.norm(ref - full) / np.linalg.norm(full), rel=1e-8, abs=1e-14)
+    for line in ex.curves:
+        if line.get_visible():
+            assert line.get_ydata()[-1] == pytest.approx(1.0)
+    _legible(ex)
+
+
+def test_drags_pole_tip_and_first_body():
+    ex = ArticulatedExplorer(display="agg", **{"bodies n": 2})
+    ex.drag("pole a", (0.0, -0.8), (1.2345, 0.6789), steps=3)
+    assert (ex.values["pole x"], ex.values["pole y"]) == pytest.approx((1.2345, 0.6789), abs=1e-12)   # no grid snap
+    ex.drag("tip", tuple(ex.state["joints"][-1]), (1.0, 1.0), steps=4)
+    assert ex.values["bend φ (deg)"] == pytest.approx(90.0, abs=1e-6)
+    ex.drag("first body", (1.0, 0.0), (0.0, 1.0), steps=4)
+    assert ex.values["base θ₁ (deg)"] == pytest.approx(90.0, abs=1e-9)
+    _legible(ex)
+    ex.set(**{"focus": "body 2"})
+    ex.set(**{"bodies n": 1})
+    assert ex.values["focus"] == "body 1"
+    with pytest.raises(Exception, match="cannot be dragged"):
+        ex.drag("tip", (1.0, 0.0), (0.0, 1.0))
+    _legible(ex)
+
+
+def test_play_swings_with_damping_and_keeps_the_energy_balance():
+    ex = ArticulatedExplorer(display="agg", **{"bodies n": 3, "damping c": 0.5})
+    ex.advance(12)
+    r = ex.readout_values
+    assert r["time"] == pytest.approx(12 * ex.play_dt)
+    assert r["dissipated W"] > 1e-3
+    scale = max(abs(r["initial energy"]), 1.0)
+    assert abs(r["T + V + W"] - r["initial energy"]) < 1e-7 * scale
+    _legible(ex)
+    # the conics follow the motion: A_1 is the reference at the swung configuration
+    q = ex.state["q"]
+    model = bent_chain_model(3, 1 / 3.0)
+    A_ref = dense_articulated(model, q, np.zeros(3), np.zeros(3), None, 0)[0]
+    np.testing.assert_allclose(ex.state["A"][0], A_ref, atol=1e-10 * np.abs(A_ref).max())
+    # without damping nothing is dissipated; a change of the chain restarts at t = 0
+    ex.set(**{"damping c": 0.0})
+    assert ex.values["time (s)"] == 0.0 and "time" not in ex.readout_values
+    ex.advance(5)
+    assert ex.readout_values["dissipated W"] == 0.0
+    assert abs(ex.readout_values["T + V + W"] - ex.readout_values["initial energy"]) < 1e-7 * scale
+
+
+def test_refusals_and_exports(tmp_path):
+    ex = ArticulatedExplorer(display="agg")
+    shown = dict(ex.readout_values)
+    ex.set(**{"bodies n": 0})
+    assert "bodies n must be an integer between 1 and 8" in ex.message
+    assert ex.readout_values == shown and ex.values["bodies n"] == 4
+    n = ex.n_computes
+    ex.set(**{"rigid inertias": False, "percussion axes": False})
+    assert ex.n_computes == n and not ex.rigid[0].get_visible() and not ex.axis_A.get_visible()
+    _legible(ex)
+    assert ex.export_svg(tmp_path / "a.svg").stat().st_size > 1000
+    assert ex.export_png(tmp_path / "a.png").stat().st_size > 1000
