@@ -247,6 +247,8 @@ def cases() -> list:
     mn = chain_model(N)
     from planargeo.widgets import SliderCrankExplorer, TreeExplorer
     from planargeo.scenes import impulse as impulse_scene, subspace as subspace_scene
+    from planargeo.scenes.articulated import articulated_state, bent_chain_model
+    from planargeo.scenes.splitting import splitting_state
     from planargeo.screws.twists import inertia_matrix
 
     sc_ex, tr_ex = SliderCrankExplorer(display="agg"), TreeExplorer(display="agg")
@@ -272,6 +274,16 @@ def cases() -> list:
                                                    inertia_matrix(2.0, (1.0, 0.0), 0.5), [0.0, 1.0, 1.6]),
              read_full=lambda r: {k: r.quantities[k] for k in ("T", "U", "Q", "mu", "psi", "gamma")},
              read_minimal=lambda st: {k: st[k] for k in ("T", "U", "Q", "mu", "psi", "gamma")}),
+        Case("scene", "articulated", "articulated explorer: `articulated_state` vs the scene",
+             "plain lists and the 7.26 ratios",
+             lambda: scenes.build("articulated", n=4, lam=3.0, phi=0.4),
+             lambda: articulated_state(bent_chain_model(4, 1 / 3.0), [0.0, 0.4, 0.4, 0.4], pole=(0.0, -0.6)),
+             read_full=lambda r: {"A": np.array(r.quantities["A"])}, read_minimal=lambda st: {"A": st["A"]}),
+        Case("scene", "splitting", "splitting explorer: `splitting_state` vs the scene",
+             "plain lists and the example 7.5 extras",
+             lambda: scenes.build("splitting"),
+             lambda: splitting_state(bent_chain_model(2, 0.5), [0.0, math.pi / 4], 1, 1.0),
+             read_full=lambda r: {"a": np.array(r.quantities["a"])}, read_minimal=lambda st: {"a": st["a"]}),
         Case("scene", "impulse", "impulse explorer: the scene function vs `scenes.build`",
              "`inspect.signature` of the scene (the explorer calls the function)",
              lambda: scenes.build("impulse", body="door", x=0.3), lambda: impulse_scene.impulse(body="door", x=0.3),

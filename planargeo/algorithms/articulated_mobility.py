@@ -215,6 +215,22 @@ def articulated_mobility(model, q, qd=None, tau=None, f_ext=None) -> Articulated
     :func:`planargeo.algorithms.articulated_inertia.articulated_inertia`; returns an
     :class:`ArticulatedMobilities` (:func:`mobility_recursion` on the state's kinematics).
 
+    Parameters
+    ----------
+    model : Model
+        A chain or tree hanging from the ground.
+    q : array_like, shape (nq,)
+        Joint coordinates.
+    qd, tau : array_like, shape (nq,), optional
+        Joint speeds and forces (zero).
+    f_ext : array_like, shape (N, 3), optional
+        External wrenches on the bodies (none).
+
+    Returns
+    -------
+    ArticulatedMobilities
+        ``Lambda_inv`` (N, 3, 3) and ``b`` (N, 3) of every body (7.38, 7.41).
+
     Examples
     --------
     The tip of a double pendulum of unit links, at rest without gravity:

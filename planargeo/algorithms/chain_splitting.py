@@ -54,7 +54,20 @@ def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa
         Articulated inertia and bias force of body ``i+1`` (7.7).
     T_next, s_next : (3, k)
         Active force subspace (6.105) and joint space of joint ``i+1``.
-    Q_next : (k,) torque of joint ``i+1``;  kappa_next : (3,) bias acceleration of body ``i+1``.
+    Q_next : (k,)
+        Force (torque) applied at joint ``i+1``.
+    kappa_next : (3,)
+        Bias (velocity-product) acceleration of body ``i+1`` (2.19).
+
+    Returns
+    -------
+    numpy.ndarray, shape (3,)
+        The acceleration ``a_i = [ax, ay, α]`` of body ``i`` (7.54).
+
+    Raises
+    ------
+    SingularConfigurationError
+        When the split matrix ``1 + Λ_i⁻¹ R Uᵀ A_{i+1}`` is singular.
 
     Examples
     --------
@@ -79,7 +92,28 @@ def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa
 def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) -> np.ndarray:
     """Internal force of joint ``i+1`` from the split chain (thesis 7.56).
 
-    Same parameters as :func:`split_acceleration`.
+    Parameters
+    ----------
+    Lam_i, b_i : (3, 3), (3,)
+        Articulated mobility and bias acceleration of body ``i`` (7.38).
+    A_next, d_next : (3, 3), (3,)
+        Articulated inertia and bias force of body ``i+1`` (7.7).
+    T_next, s_next : (3, k)
+        Active force subspace (6.105) and joint space of joint ``i+1``.
+    Q_next : (k,)
+        Force (torque) applied at joint ``i+1``.
+    kappa_next : (3,)
+        Bias (velocity-product) acceleration of body ``i+1`` (2.19).
+
+    Returns
+    -------
+    numpy.ndarray, shape (3,)
+        The wrench ``f_{i+1} = [fx, fy, τ]`` body ``i`` exerts on body ``i+1`` through the joint (7.56).
+
+    Raises
+    ------
+    SingularConfigurationError
+        When the split matrix ``1 + Λ_i⁻¹ R Uᵀ A_{i+1}`` is singular.
 
     Examples
     --------
@@ -134,6 +168,26 @@ def chain_split(I, S, kappa, p, tau, parents=None, joint_points=None) -> ChainSp
     (the default); ``joint_points`` (N, 2): each joint's point, where the singularity rule of :data:`planargeo.errors.COND_LIMIT`
     is measured (default the origin; :func:`mobility_split` passes the joint frames' origins).
 
+    Parameters
+    ----------
+    I : sequence of (3, 3) arrays
+        Rigid-body inertias in the common frame (5.58).
+    S : sequence of (3, k_i) arrays
+        Joint spaces ``s_i``.
+    kappa, p : (N, 3) arrays
+        Bias accelerations (2.19) and bias forces (3.11: velocity products, gravity, external) of the bodies.
+    tau : sequence of (k_i,) arrays
+        Joint forces.
+    parents : sequence of int, optional
+        Must be ``[-1, 0, ..., N-2]``.
+    joint_points : (N, 2) array, optional
+        Where each joint's conditioning is measured.
+
+    Returns
+    -------
+    ChainSplit
+        Body accelerations ``a``, joint forces ``f`` and joint accelerations ``qdd``.
+
     Raises
     ------
     TopologyError
@@ -173,6 +227,29 @@ def chain_split(I, S, kappa, p, tau, parents=None, joint_points=None) -> ChainSp
 def mobility_split(model, q, qd=None, tau=None, f_ext=None) -> ChainSplit:
     """Chain-splitting solution of one state of an unbranched chain (thesis 7.6).
 
+    Parameters
+    ----------
+    model : Model
+        An unbranched chain hanging from the ground.
+    q : array_like, shape (nq,)
+        Joint coordinates.
+    qd, tau : array_like, shape (nq,), optional
+        Joint speeds and forces (zero).
+    f_ext : array_like, shape (N, 3), optional
+        External wrenches on the bodies (none).
+
+    Returns
+    -------
+    ChainSplit
+        Body accelerations, joint forces (7.56) and joint accelerations.
+
+    Raises
+    ------
+    TopologyError
+        When the model is not an unbranched chain.
+    SingularConfigurationError
+        When a joint-space or split matrix is singular.
+
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
@@ -197,6 +274,20 @@ def forward_dynamics_mobility_split(model, q, qd, tau, f_ext=None) -> np.ndarray
 
     Arguments and result as :func:`planargeo.algorithms.projective.forward_dynamics_projective`;
     the model must be an unbranched chain whose first body hangs from the ground.
+
+    Parameters
+    ----------
+    model : Model
+        An unbranched chain.
+    q, qd, tau : array_like, shape (..., nq)
+        Joint coordinates, speeds and forces (leading dimensions: a batch of states).
+    f_ext : array_like, shape (..., N, 3), optional
+        External wrenches on the bodies.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., nq)
+        Joint accelerations.
 
     Raises
     ------

@@ -12,7 +12,7 @@ import numpy as np
 from matplotlib.patches import Circle, Polygon, Rectangle
 
 from planargeo.draw.artists import plot_line
-from planargeo.draw.style import COLORS, LINEWIDTHS, get_ax
+from planargeo.draw.style import COLORS, LABEL_PT, LINEWIDTHS, get_ax
 
 __all__ = ["link_polygon", "draw_body", "draw_link", "draw_pin", "draw_ground", "draw_slider",
            "draw_frame", "draw_com", "draw_joint_split", "transform_shape", "draw_contact",
@@ -104,7 +104,7 @@ def draw_body(shape, ax=None, *, color=None, alpha=0.35, edgecolor="#1f3a4d", zo
             out.append(h)
     if label is not None:
         c = shape.representative_point()
-        out.append(ax.text(c.x, c.y, label, ha="center", va="center", fontsize=7,
+        out.append(ax.text(c.x, c.y, label, ha="center", va="center", fontsize=LABEL_PT,
                            color="#1f3a4d", zorder=zorder + 0.5))
     if com is not None:
         out += draw_com(com, ax)
@@ -265,7 +265,7 @@ def draw_frame(origin, ax=None, *, angle=0.0, length=0.5, labels=("$x$", "$y$"),
                                                shrinkA=0, shrinkB=0, mutation_scale=8)))
         if lab:
             out.append(ax.annotate(lab, xy=tuple(tip), xytext=(3, 3), textcoords="offset points",
-                                   fontsize=7, color=color))
+                                   fontsize=LABEL_PT, color=color))
     return out
 
 
@@ -634,7 +634,7 @@ def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pi
             c = shape.centroid
             out["bodies"].append(ax.annotate(name, xy=(c.x, c.y), xytext=(0, -9),
                                              textcoords="offset points", ha="center",
-                                             fontsize=7, color="#1f3a4d"))
+                                             fontsize=LABEL_PT, color="#1f3a4d"))
         if show_com:
             out["com"] += draw_com(com[i], ax, radius=0.9 * pin_radius)
     for i, joint in enumerate(model.joints):
