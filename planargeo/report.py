@@ -207,7 +207,7 @@ QUANTITY_INFO: dict[str, dict[str, tuple[str, str, str, str]]] = {
         "apparent_mass_held": ("apparent mass along the line of the blow, body held", "m_app", "figure 3.3",
                                "kg"),
         "apparent_mass_free": ("apparent mass along the line of the blow, body free", "m_app", "figure 3.3", "kg"),
-        "kinetic_energy": ("kinetic energy just after the blow", "K", "§3 (K = ½ vᵀI v)", "J"),
+        "kinetic_energy": ("kinetic energy just after the blow", "K = ½ vᵀI v", "—", "J"),
         "v_grip": ("velocity of the grip or hinge just after the blow (zero when held)", "v_P", "6.63 (impulsive)", "m/s"),
         "apparent_mass": ("apparent mass along the line of the blow for the chosen support", "m_app",
                           "figure 3.3", "kg"),
