@@ -702,13 +702,21 @@ class ChainExplorer(Explorer):
 
     # -- drawing ---------------------------------------------------------------------
     def _view(self, st, focus) -> tuple[float, float, float, float]:
-        """The view: the whole chain's reach about the base, or fitted to the focused element."""
+        """The view: the whole chain's reach about the ground origin, or fitted to the focused element.
+
+        Centred on the fixed origin, not on the base: a view that followed the base would move
+        under the mouse while the base is dragged (and the drag would run away).  While any
+        handle is dragged the view stays as it is.
+        """
+        if getattr(self, "_drag_active", None) is not None:
+            x0, x1 = self.ax.get_xlim()
+            y0, y1 = self.ax.get_ylim()
+            return (x0, x1, y0, y1)
         model, w = st["model"], st["w"]
-        base = np.asarray(w.origin[0], float)
-        chain = np.vstack([w.pose[:, :2], self._ends(w)])
+        chain = np.vstack([np.asarray(w.origin[0], float)[None, :], w.pose[:, :2], self._ends(w)])
         if focus is None:
-            reach = max(model.N + 0.4, float(np.max(np.hypot(*(chain - base).T))) + 0.4)
-            return (base[0] - reach, base[0] + reach, base[1] - reach, base[1] + reach)
+            reach = max(model.N + 0.4, float(np.max(np.hypot(*chain.T))) + 0.4)
+            return (-reach, reach, -reach, reach)
         kind, i = focus
         pts = [w.pose[i, :2], self._ends(w)[i]]
         mid = 0.5 * (pts[0] + pts[1])

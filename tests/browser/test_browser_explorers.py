@@ -5,9 +5,10 @@ with two changes: each explorer is kept in a variable, and a last cell prints, f
 each explorer, where its first draggable handle sits on the figure (as fractions of
 the canvas) and whether it has Play.  Then, for every explorer, the browser
 
+* drags a handle on the ipympl canvas with real mouse events (to a drop point the
+  kernel found, on an off-screen twin of the explorer, to change the readout) and
+  sees the readout and the figure change;
 * moves a slider with the keyboard and sees the readout and the figure change;
-* drags a handle on the ipympl canvas with real mouse events and sees the readout
-  and the figure change;
 * presses Play (where the mechanism moves) and sees frames advance;
 * clicks *Export SVG* and receives a file that is an SVG document.
 
@@ -40,18 +41,44 @@ CELL = re.compile(r"^pw\.(\w+)\(\)$")
 PROBE = """\
 import json as _json
 from planargeo.widgets import Explorer as _Explorer
+
+
+def _drag_plan(ex):
+    # a handle in view and a drop point that changes the readout and the picture (off-screen twin)
+    x0, x1 = sorted(ex.ax.get_xlim()); y0, y1 = sorted(ex.ax.get_ylim())
+    inside = lambda p: p is not None and x0 < p[0] < x1 and y0 < p[1] < y1
+    twin = type(ex)(display="agg", **ex.values)
+    for hd in twin.handles():
+        p = hd.where()
+        if not inside(p):
+            continue
+        for fx, fy in ((0.12, 0), (-0.12, 0), (0, 0.12), (0, -0.12), (0.25, 0), (-0.25, 0), (0, 0.25), (0, -0.25)):
+            q = (p[0] + fx * (x1 - x0), p[1] + fy * (y1 - y0))
+            if not inside(q):
+                continue
+            fresh = type(ex)(display="agg", **ex.values)
+            before = dict(fresh.readout_values)
+            fresh.fig.canvas.draw()
+            picture = bytes(fresh.fig.canvas.buffer_rgba())
+            fresh.drag(hd.name, p, q, steps=8)
+            fresh.fig.canvas.draw()
+            if (not fresh.message and fresh.readout_values != before
+                    and bytes(fresh.fig.canvas.buffer_rgba()) != picture):
+                return hd.name, p, q
+    return None
+
+
 _probe = []
 for _k, _ex in enumerate(_explorers):
     _W, _H = _ex.fig.canvas.get_width_height()
     _ex.ax.apply_aspect()
-    _x0, _x1 = _ex.ax.get_xlim(); _y0, _y1 = _ex.ax.get_ylim()
+    _plan = _drag_plan(_ex)
     _h = None
-    for _hd in _ex.handles():
-        _p = _hd.where()
-        if _p is not None and min(_x0, _x1) < _p[0] < max(_x0, _x1) and min(_y0, _y1) < _p[1] < max(_y0, _y1):
-            _px, _py = _ex.ax.transData.transform(_p)
-            _h = {"name": _hd.name, "fx": float(_px / _W), "fy": float(1 - _py / _H)}
-            break
+    if _plan is not None:
+        _name, _p, _q = _plan
+        _fp = _ex.ax.transData.transform(_p); _fq = _ex.ax.transData.transform(_q)
+        _h = {"name": _name, "fx": float(_fp[0] / _W), "fy": float(1 - _fp[1] / _H),
+              "tx": float(_fq[0] / _W), "ty": float(1 - _fq[1] / _H)}
     _probe.append({"title": _ex.title, "slug": _ex.slug, "handle": _h,
                    "play": type(_ex).play_step is not _Explorer.play_step})
 print("PROBE " + _json.dumps(_probe))
@@ -137,28 +164,25 @@ def check_slider(page, explorer):
 
 
 def check_drag(page, explorer, handle):
+    """Drag the handle to the drop point the probe found (on an off-screen twin) to change the readout."""
     canvas = explorer.locator(".planargeo-figure canvas").first
     canvas.scroll_into_view_if_needed()
     time.sleep(0.5)
     box = canvas.bounding_box()
     x0 = box["x"] + handle["fx"] * box["width"]
     y0 = box["y"] + handle["fy"] * box["height"]
-    for dx, dy in ((25, 0), (-25, 0), (0, 25), (0, -25)):
-        before, png = _readout(page, explorer), _figure_png(explorer)
-        page.mouse.move(x0, y0)
-        page.mouse.down()
-        for k in range(1, 9):
-            page.mouse.move(x0 + dx * k / 8, y0 + dy * k / 8)
-            time.sleep(0.03)
-        page.mouse.up()
-        try:
-            _readout_changed(explorer, before, 8)
-        except AssertionError:
-            continue
-        time.sleep(0.8)
-        assert _changed(png, _figure_png(explorer)) > 0.001, "the readout changed but not the figure"
-        return
-    raise AssertionError(f"dragging handle {handle['name']!r} changed nothing")
+    x1 = box["x"] + handle["tx"] * box["width"]
+    y1 = box["y"] + handle["ty"] * box["height"]
+    before, png = _readout(page, explorer), _figure_png(explorer)
+    page.mouse.move(x0, y0)
+    page.mouse.down()
+    for k in range(1, 9):
+        page.mouse.move(x0 + (x1 - x0) * k / 8, y0 + (y1 - y0) * k / 8)
+        time.sleep(0.03)
+    page.mouse.up()
+    _readout_changed(explorer, before, 10)
+    time.sleep(0.8)
+    assert _changed(png, _figure_png(explorer)) > 0.001, "the readout changed but not the figure"
 
 
 def check_play(page, explorer):
@@ -216,11 +240,12 @@ def run_all(page, tmp: Path, screens: bool = False) -> list[str]:
         if screens:
             SCREENS.mkdir(parents=True, exist_ok=True)
             ex.screenshot(path=str(SCREENS / f"{info['slug']}.png"))
-        _try("slider", failures, title, lambda: check_slider(page, ex))
+        # the drag first: the probe found its handle and drop point in the default state
         if info["handle"] is None:
-            failures.append(f"{title}: no draggable handle in view")
+            failures.append(f"{title}: no handle in view whose drag changes the readout")
         else:
             _try("drag", failures, title, lambda: check_drag(page, ex, info["handle"]))
+        _try("slider", failures, title, lambda: check_slider(page, ex))
         if info["play"]:
             _try("play", failures, title, lambda: check_play(page, ex))
         _try("export", failures, title, lambda: check_export(page, ex, tmp))
