@@ -60,7 +60,7 @@ app: $(STAMP)
 	$(BIN)/voila app/planargeo-app.ipynb --Voila.ip=127.0.0.1 --port=8866 --theme=light --no-browser
 
 screens: $(STAMP) browser
-	MPLBACKEND=Agg PLANARGEO_UPDATE_SCREENS=1 $(BIN)/python -m pytest -p no:randomly tests/browser/test_app.py -q
+	MPLBACKEND=Agg PLANARGEO_UPDATE_SCREENS=1 $(BIN)/python -m pytest -p no:randomly -q tests/browser/test_browser_explorers.py -k in_the_app
 
 test: $(STAMP) browser
 	MPLBACKEND=Agg $(BIN)/python -m pytest -n 2 tests planargeo $(PYTEST_ARGS)

@@ -77,7 +77,7 @@ QUICK_BATCH_SIZES = (1, 100, 1000)
 PEERS = ("pinocchio", "mujoco")
 #: groups of ``--only``; all but ``dynamics`` run a script of ``benchmarks/``
 SCRIPTS = {"breakdown": "breakdown.py", "widgets": "widget_latency.py", "integrators": "integrators.py",
-           "scenes": "scene_cost.py"}
+           "scenes": "scene_cost.py", "truncated": "truncated.py", "browser": "browser_latency.py"}
 GROUPS = ("dynamics",) + tuple(SCRIPTS)
 #: the exact (rational) reference up to this many coordinates, longdouble beyond (exact costs ~N^3 Fractions)
 EXACT_MAX = 5
@@ -85,7 +85,9 @@ EXACT_MAX = 5
 OTHER_RESULTS = (("breakdown.md", "where each method breaks down (accuracy near singularities)"),
                  ("widget_latency.md", "widget latency: control change to redrawn figure"),
                  ("integrators.md", "integrators: work–precision of ODE solvers, energy and constraint drift"),
-                 ("scene_cost.md", "scene cost: what each scene computes and what modelling less saves"))
+                 ("scene_cost.md", "scene cost: what each scene computes and what modelling less saves"),
+                 ("truncated.md", "truncated articulated recursion: speed against accuracy (10.2.2)"),
+                 ("browser_latency.md", "browser latency: slider and drag to the new picture in the page"))
 CHARTS = ("scaling", "work_precision", "speed_accuracy", "single_state", "batch")
 
 _T0 = time.perf_counter()
@@ -114,7 +116,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="run only these groups (repeatable; default: all). 'dynamics' is this module; "
                              "'breakdown' runs benchmarks/breakdown.py (accuracy study), 'widgets' "
                              "benchmarks/widget_latency.py, 'integrators' benchmarks/integrators.py, "
-                             "'scenes' benchmarks/scene_cost.py (these need a source checkout)")
+                             "'scenes' benchmarks/scene_cost.py, 'truncated' benchmarks/truncated.py (truncated "
+                             "articulated recursion), 'browser' benchmarks/browser_latency.py (JupyterLab in "
+                             "headless chromium) (these need a source checkout)")
 
 
 # --------------------------------------------------------------------------- timing

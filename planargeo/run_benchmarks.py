@@ -35,7 +35,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="output folder (default: a new temporary folder)")
     parser.add_argument("--quick", action="store_true", help="fewer sizes and repeats (under a minute)")
     parser.add_argument("--only", action="append", default=None,
-                        help="run only this group (repeatable): dynamics, breakdown, widgets, integrators, scenes")
+                        help="run only this group (repeatable): dynamics, breakdown, widgets, integrators, scenes, "
+                             "truncated, browser")
     parser.add_argument("--no-charts", action="store_true", help="tables only")
     parser.add_argument("--force", action="store_true",
                         help="write into an --out folder that holds files other than an earlier result")
