@@ -81,7 +81,7 @@ def study(state, steps, *, effective: bool) -> list[dict]:
 
 
 def _md_table(title: str, rows: list[dict]) -> str:
-    out = [f"### {title}", "",
+    out = [f"## {title}", "",
            "| steps k | time (ms) | time / full | ‖ΔA₁‖/‖A₁‖ | max_i ‖ΔA_i‖/‖A_i‖ | d | m_y | A_z |",
            "|---:|---:|---:|---:|---:|---:|---:|---:|"]
     def e(x):
