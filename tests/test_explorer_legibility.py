@@ -19,10 +19,8 @@ from planargeo.draw.style import EXPLORER_MIN_WIDTH_PX
 from planargeo.errors import InputError
 from planargeo.widgets.base import Step, fmt
 
-#: explorers of other helpers known to fail, with the reason (the integrator removes these marks)
-KNOWN = {
-    "TreeExplorer": "trees.py draws the body numbers at fontsize 7 (9.7 px < 11 px): owner of trees.py",
-}
+#: explorers known to fail, with the reason (none: every explorer's default state is legible)
+KNOWN: dict[str, str] = {}
 
 
 def _params():
