@@ -25,11 +25,15 @@ from __future__ import annotations
 
 import numpy as np
 from matplotlib import artist as martist
+from matplotlib import cbook
+from matplotlib import colors as mcolors
+from matplotlib.backends.backend_agg import RendererAgg
 from matplotlib.lines import Line2D
+from matplotlib.markers import MarkerStyle
 from matplotlib.patches import FancyArrowPatch, Polygon
 from matplotlib.path import Path
 from matplotlib.text import Text
-from matplotlib.transforms import Affine2D, IdentityTransform
+from matplotlib.transforms import Affine2D, Bbox, IdentityTransform
 
 from planargeo._validate import as_array, as_vec3
 from planargeo.errors import InputError
@@ -238,6 +242,10 @@ def _board(ax):
     return getattr(ax, "_planargeo_board", None) if ax is not None else None
 
 
+#: where a label's box starts, in widths (heights) left of (below) its position, per alignment
+_HA = {"left": 0.0, "center": 0.5, "right": 1.0}
+_VA = {"bottom": 0.0, "center": 0.5, "top": 1.0, "baseline": 0.0, "center_baseline": 0.5}
+
 #: directions (unit vectors) tried for a label that collides, in order
 _TRY = [(0.7071, 0.7071), (0.7071, -0.7071), (-0.7071, 0.7071), (-0.7071, -0.7071),
         (1.0, 0.0), (-1.0, 0.0), (0.0, 1.0), (0.0, -1.0)]
@@ -267,6 +275,12 @@ def _settle(text, anchor, gap_px, renderer, ax):
             text.get_verticalalignment())
     if best[0] > 0 and anchor is not None:
         anchor = np.asarray(anchor, dtype=float)
+        # a one-line label's box at another place and alignment, by arithmetic (its size is fixed)
+        w, h = bb.width, bb.height
+        px, py = _pyxy(text.get_transform().transform(text.get_position()))
+        x0 = bb.x0 + w * _HA[best[2]] - px
+        y0 = bb.y0 + h * _VA[best[3]] - py
+        plain = text.get_rotation() == 0.0 and "\n" not in text.get_text() and best[3] != "baseline"
         for scale in (1.0, 2.2):
             for u in _TRY:
                 text.set_position(_pyxy(anchor + scale * gap_px * np.asarray(u)))
@@ -274,7 +288,13 @@ def _settle(text, anchor, gap_px, renderer, ax):
                                              else "center")
                 text.set_verticalalignment("bottom" if u[1] > 0.35 else "top" if u[1] < -0.35
                                            else "center")
-                c = cost(text.get_window_extent(renderer))
+                if plain:
+                    qx, qy = text.get_transform().transform(text.get_position())
+                    bx = qx + x0 - w * _HA[text.get_horizontalalignment()]
+                    by = qy + y0 - h * _VA[text.get_verticalalignment()]
+                    c = cost(Bbox.from_bounds(bx, by, w, h))
+                else:
+                    c = cost(text.get_window_extent(renderer))
                 if c < best[0]:
                     best = (c, text.get_position(), text.get_horizontalalignment(),
                             text.get_verticalalignment())
@@ -294,6 +314,140 @@ def _settle(text, anchor, gap_px, renderer, ax):
         text.set_position(_pyxy((x + shift[0], y + shift[1])))
         bb = text.get_window_extent(renderer)
     board.boxes.append(bb)
+
+
+# --------------------------------------------------------------------------- fast drawing
+def _gc(renderer, clip, rgba, linewidth, dashes=(0, None), cap="butt", join="round"):
+    gc = renderer.new_gc()
+    gc.set_clip_rectangle(clip)
+    gc.set_foreground(rgba, isRGBA=True)
+    gc.set_linewidth(linewidth)
+    gc.set_dashes(*dashes)
+    gc.set_capstyle(cap)
+    gc.set_joinstyle(join)
+    return gc
+
+
+def _draw_primitive(c, renderer, clip):
+    """Draw one child primitive straight through ``renderer`` (what its ``draw`` would draw).
+
+    The children of this module's artists are plain polylines, markers, filled
+    triangles and straight arrows whose style never changes between frames; drawing
+    them here skips Matplotlib's per-artist bookkeeping (path caches, transform
+    trees, property lookups), which is most of the cost of a frame with a hundred
+    artists.  Anything else is drawn by its own ``draw``.
+    """
+    kind = type(c)
+    if kind is Line2D:
+        _draw_line2d(c, renderer, clip)
+    elif kind is Polygon:
+        xy = c.get_transform().transform(c.get_xy())
+        gc = _gc(renderer, clip, mcolors.to_rgba(c.get_facecolor(), c.get_alpha()), 0.0)
+        renderer.draw_path(gc, Path(xy), IdentityTransform(),
+                           mcolors.to_rgba(c.get_facecolor(), c.get_alpha()))
+        gc.restore()
+    elif kind is FancyArrowPatch and c._posA_posB is not None:
+        _draw_arrow(c, renderer, clip)
+    else:
+        c.draw(renderer)
+
+
+def _draw_line2d(c, renderer, clip):
+    x, y = c.get_data()
+    if len(x) == 0:
+        return
+    xy = c.get_transform().transform(np.column_stack([np.asarray(x, float), np.asarray(y, float)]))
+    alpha = c.get_alpha()
+    if c.get_linestyle() not in ("None", "none", " ", ""):
+        dashed = c.is_dashed()
+        gc = _gc(renderer, clip, mcolors.to_rgba(c.get_color(), alpha),
+                 c.get_linewidth(), c._dash_pattern,
+                 c.get_dash_capstyle() if dashed else c.get_solid_capstyle(),
+                 c.get_dash_joinstyle() if dashed else c.get_solid_joinstyle())
+        renderer.draw_path(gc, Path(xy), IdentityTransform())
+        gc.restore()
+    if c.get_marker() not in ("None", "none", None, " ", "") and c.get_markersize() > 0:
+        m = _marker_style(c.get_marker())
+        gc = _gc(renderer, clip, mcolors.to_rgba(c.get_markeredgecolor(), alpha),
+                 c.get_markeredgewidth(), cap=m.get_capstyle(), join=m.get_joinstyle())
+        trans = m.get_transform().scale(renderer.points_to_pixels(c.get_markersize()))
+        face = c.get_markerfacecolor()
+        renderer.draw_markers(gc, m.get_path(), trans, Path(xy), IdentityTransform(),
+                              None if face in ("none", "None") else mcolors.to_rgba(face, alpha))
+        gc.restore()
+
+
+_MARKERS: dict = {}
+
+#: (text, font, alignment, dpi) -> baseline start of a one-line label relative to its position
+#: (display pixels) and whether it is mathtext: a label's layout is worked out once
+_TEXT_LAYOUT: dict = {}
+
+
+def _draw_text(t, renderer):
+    """Draw a label: with Agg, the glyphs at the baseline its layout gives (cached), else ``t.draw``.
+
+    What is drawn is what :meth:`matplotlib.text.Text.draw` draws for a
+    one-line, unrotated label without a box; the layout (alignment offsets,
+    mathtext or not) is computed once per text, font, alignment and dpi.
+    """
+    s = t.get_text()
+    if not s:
+        return
+    if (not isinstance(renderer, RendererAgg) or t.get_rotation() != 0.0 or "\n" in s
+            or t.get_wrap() or t.get_usetex() or t.get_bbox_patch() is not None
+            or t.get_path_effects()):
+        t.draw(renderer)
+        return
+    prop = t.get_fontproperties()
+    key = (s, hash(prop), t.get_horizontalalignment(), t.get_verticalalignment(), renderer.dpi)
+    lay = _TEXT_LAYOUT.get(key)
+    if lay is None:
+        try:
+            _, info, _ = t._get_layout(renderer)
+            (_line, _wh, dx, dy), = info
+        except Exception:  # noqa: BLE001 - any surprise: Matplotlib draws it
+            t.draw(renderer)
+            return
+        lay = _TEXT_LAYOUT[key] = (dx, dy, bool(cbook.is_math_text(s)))
+    x, y = t.get_transform().transform(t.get_position())
+    gc = renderer.new_gc()
+    gc.set_foreground(t.get_color())
+    gc.set_alpha(t.get_alpha())
+    gc.set_antialiased(t._antialiased)
+    text = s if lay[2] else s.replace(r"\$", "$")
+    renderer.draw_text(gc, x + lay[0], renderer.height - (y + lay[1]), text, prop, 0.0,
+                       ismath=lay[2], mtext=None)
+    gc.restore()
+
+
+def _marker_style(marker):
+    if marker not in _MARKERS:
+        _MARKERS[marker] = MarkerStyle(marker)
+    return _MARKERS[marker]
+
+
+def _draw_arrow(c, renderer, clip):
+    """A straight ``-|>`` arrow: the shaft and a filled head 0.4 × 0.4 mutation scales."""
+    (a, b) = c.get_transform().transform(np.asarray(c._posA_posB, dtype=float))
+    d = b - a
+    n = float(np.hypot(*d))
+    if not n > 0.0:
+        return
+    u = d / n
+    ms = c.get_mutation_scale() * renderer.points_to_pixels(1.0)
+    hl, hw = min(0.4 * ms, 0.8 * n), 0.2 * ms
+    lw = c.get_linewidth()
+    rgba = mcolors.to_rgba(c.get_edgecolor(), c.get_alpha())
+    base = b - u * hl
+    gc = _gc(renderer, clip, rgba, lw, c._dash_pattern, "butt", "miter")
+    renderer.draw_path(gc, Path(np.array([a, base + u * 0.5])), IdentityTransform())
+    gc.restore()
+    v = np.array([-u[1], u[0]])
+    gc = _gc(renderer, clip, rgba, lw, cap="butt", join="miter")
+    renderer.draw_path(gc, Path(np.array([b, base + v * hw, base - v * hw, b]), closed=True),
+                       IdentityTransform(), rgba)
+    gc.restore()
 
 
 class _Base(martist.Artist):
@@ -399,13 +553,16 @@ class _Base(martist.Artist):
         """Set data-space transforms once, when the artist meets its axes."""
 
     def _draw_children(self, renderer, children):
+        clip = self.axes.bbox
         for c in children:
+            if not c.get_visible():
+                continue
             if isinstance(c, Text):
                 x, y = c.get_position()
-                if not (abs(x) < 1e7 and abs(y) < 1e7):  # far off the canvas: nothing to show
-                    continue
-            if c.get_visible():
-                c.draw(renderer)
+                if abs(x) < 1e7 and abs(y) < 1e7:  # far off the canvas: nothing to show
+                    _draw_text(c, renderer)
+            else:
+                _draw_primitive(c, renderer, clip)
 
     @martist.allow_rasterization
     def draw(self, renderer):

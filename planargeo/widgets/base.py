@@ -114,6 +114,7 @@ from planargeo.draw.artists import place_labels
 from planargeo.draw.style import EXPLORER_DPI, EXPLORER_MIN_WIDTH_PX, EXPLORER_TICK_PT, LABEL_PT, setup_axes
 from planargeo.errors import InputError, OutputError, PlanargeoError
 from planargeo.files import atomic_write
+from planargeo.widgets.frames import Frames, live_canvas, live_png
 
 __all__ = ["Explorer", "Handle", "Step", "cached", "check_control", "fmt"]
 
@@ -544,6 +545,7 @@ class Explorer:
 
         # figure ----------------------------------------------------------------
         self.fig, self.ax = self._make_figure(figsize or self.figsize)
+        self.frames = Frames(self.fig)
         self.setup_axes(self.ax)
         place_labels(self.ax)  # labels avoid each other and stay inside the axes
         self.make_artists(self.ax)
@@ -1182,16 +1184,19 @@ class Explorer:
             return out.read_bytes()
 
     def redraw(self) -> None:
-        """Draw the figure and refresh the front end."""
+        """Draw the figure and send it to the page.
+
+        Only what can change is drawn (:class:`~planargeo.widgets.frames.Frames`:
+        the axes' background is kept while the view stays put), and the page gets
+        a light PNG (:func:`~planargeo.widgets.frames.live_png`) at once: in image
+        mode as the image's value, under ipympl through its canvas, without
+        ipympl's round trip through the page.
+        """
+        self.frames.draw()
         if self.display_mode == "ipympl":
-            self.fig.canvas.draw_idle()
-        elif self.display_mode == "agg":
-            self.fig.canvas.draw()
-        else:
-            buf = io.BytesIO()
-            # fast PNG compression: the image goes to the page once, its encoding is on every update
-            self.fig.savefig(buf, format="png", dpi=self.dpi, pil_kwargs={"compress_level": 1})
-            self.image.value = buf.getvalue()
+            self.fig.canvas.blit()
+        elif self.display_mode == "image":
+            self.image.value = live_png(np.asarray(self.fig.canvas.buffer_rgba()))
 
     def guarded(self, callback: Callable) -> Callable:
         """``callback`` for a button or the mouse: an exception becomes a message, never escapes.
@@ -1247,11 +1252,9 @@ class Explorer:
         min_w = EXPLORER_MIN_WIDTH_PX / self.dpi
         if w < min_w:  # at least the notebook column's width, same aspect
             w, h = min_w, h * min_w / w
+        fig = Figure(figsize=(w, h), dpi=self.dpi)
         if self.display_mode == "ipympl":
-            import matplotlib.pyplot as plt
-
-            with plt.ioff():
-                fig = plt.figure(figsize=(w, h), dpi=self.dpi)
+            live_canvas(fig)   # draws when the explorer says so, sends light PNGs
             fig.canvas.header_visible = False
             fig.canvas.footer_visible = False
             fig.canvas.toolbar_visible = True      # its own column, never over the axes
@@ -1260,7 +1263,6 @@ class Explorer:
         else:
             from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-            fig = Figure(figsize=(w, h), dpi=self.dpi)
             FigureCanvasAgg(fig)
         ax = fig.add_subplot(1, 1, 1)
         ax.tick_params(labelsize=EXPLORER_TICK_PT)
