@@ -328,6 +328,17 @@ def _gc(renderer, clip, rgba, linewidth, dashes=(0, None), cap="butt", join="rou
     return gc
 
 
+def _to_display(c, xy):
+    """``xy`` (n, 2) in ``c``'s coordinates to display pixels (an affine transform: one product)."""
+    tr = c.get_transform()
+    if isinstance(tr, IdentityTransform):
+        return xy
+    if tr.is_affine:
+        m = tr.get_matrix()
+        return xy @ m[:2, :2].T + m[:2, 2]
+    return tr.transform(xy)
+
+
 def _draw_primitive(c, renderer, clip):
     """Draw one child primitive straight through ``renderer`` (what its ``draw`` would draw).
 
@@ -341,10 +352,10 @@ def _draw_primitive(c, renderer, clip):
     if kind is Line2D:
         _draw_line2d(c, renderer, clip)
     elif kind is Polygon:
-        xy = c.get_transform().transform(c.get_xy())
-        gc = _gc(renderer, clip, mcolors.to_rgba(c.get_facecolor(), c.get_alpha()), 0.0)
-        renderer.draw_path(gc, Path(xy), IdentityTransform(),
-                           mcolors.to_rgba(c.get_facecolor(), c.get_alpha()))
+        xy = _to_display(c, np.asarray(c.get_xy(), dtype=float))
+        rgba = mcolors.to_rgba(c.get_facecolor(), c.get_alpha())
+        gc = _gc(renderer, clip, rgba, 0.0)
+        renderer.draw_path(gc, Path(xy), _IDENTITY, rgba)
         gc.restore()
     elif kind is FancyArrowPatch and c._posA_posB is not None:
         _draw_arrow(c, renderer, clip)
@@ -352,29 +363,48 @@ def _draw_primitive(c, renderer, clip):
         c.draw(renderer)
 
 
+_IDENTITY = IdentityTransform()
+_NO_MARKER = {"None", "none", None, " ", ""}
+_NO_LINE = {"None", "none", " ", ""}
+
+
 def _draw_line2d(c, renderer, clip):
     x, y = c.get_data()
-    if len(x) == 0:
+    n = len(x)
+    if n == 0:
         return
-    xy = c.get_transform().transform(np.column_stack([np.asarray(x, float), np.asarray(y, float)]))
+    xy = np.empty((n, 2))
+    xy[:, 0] = x
+    xy[:, 1] = y
+    xy = _to_display(c, xy)
     alpha = c.get_alpha()
-    if c.get_linestyle() not in ("None", "none", " ", ""):
+    if c.get_linestyle() not in _NO_LINE:
         dashed = c.is_dashed()
         gc = _gc(renderer, clip, mcolors.to_rgba(c.get_color(), alpha),
                  c.get_linewidth(), c._dash_pattern,
                  c.get_dash_capstyle() if dashed else c.get_solid_capstyle(),
                  c.get_dash_joinstyle() if dashed else c.get_solid_joinstyle())
-        renderer.draw_path(gc, Path(xy), IdentityTransform())
+        renderer.draw_path(gc, Path(xy, _interpolation_steps=1), _IDENTITY)
         gc.restore()
-    if c.get_marker() not in ("None", "none", None, " ", "") and c.get_markersize() > 0:
+    if c.get_marker() not in _NO_MARKER and c.get_markersize() > 0:
         m = _marker_style(c.get_marker())
         gc = _gc(renderer, clip, mcolors.to_rgba(c.get_markeredgecolor(), alpha),
                  c.get_markeredgewidth(), cap=m.get_capstyle(), join=m.get_joinstyle())
-        trans = m.get_transform().scale(renderer.points_to_pixels(c.get_markersize()))
+        trans = _marker_transform(m, renderer.points_to_pixels(c.get_markersize()))
         face = c.get_markerfacecolor()
-        renderer.draw_markers(gc, m.get_path(), trans, Path(xy), IdentityTransform(),
+        renderer.draw_markers(gc, m.get_path(), trans, Path(xy), _IDENTITY,
                               None if face in ("none", "None") else mcolors.to_rgba(face, alpha))
         gc.restore()
+
+
+_MARKER_TRANSFORMS: dict = {}
+
+
+def _marker_transform(m, size_px):
+    key = (id(m), size_px)
+    if key not in _MARKER_TRANSFORMS:
+        _MARKER_TRANSFORMS[key] = m.get_transform().frozen().scale(size_px)
+    return _MARKER_TRANSFORMS[key]
 
 
 _MARKERS: dict = {}

@@ -799,14 +799,29 @@ class Explorer:
         Explorer
             ``self``.
         """
-        self._hold += 1
-        try:
-            yield self
-        finally:
-            self._hold -= 1
-            if self._hold == 0 and self._pending:
-                self._pending = False
-                self._update()
+        with self._page_after():
+            self._hold += 1
+            try:
+                yield self
+            finally:
+                self._hold -= 1
+                if self._hold == 0 and self._pending:
+                    self._pending = False
+                    self._update()
+
+    @contextlib.contextmanager
+    def _page_after(self):
+        """The controls', readout's and message's new values reach the page after the figure.
+
+        The new picture is what the user waits for; the page's work on the other
+        widgets (sliders, the readout table) would otherwise compete with the
+        drawing of the frame for the processor.
+        """
+        widgets = [*self.controls.values(), self.readout, self.message_box]
+        with contextlib.ExitStack() as stack:
+            for w in widgets:
+                stack.enter_context(w.hold_sync())
+            yield
 
     def set(self, **values) -> "Explorer":
         """Set several controls at once (one update); returns ``self``.
@@ -1460,7 +1475,8 @@ class Explorer:
         changed = set(self.controls) if initial else set(self._changed)
         self._changed.clear()
         try:
-            self._show(changed, initial)
+            with self._page_after():
+                self._show(changed, initial)
         finally:
             self._busy = False
         if self._pending and not self._hold:

@@ -178,15 +178,25 @@ def live_png(rgba, changed=None) -> bytes:
     from PIL import Image
 
     rgb = np.ascontiguousarray(np.asarray(rgba)[..., :3])
-    q = Image.fromarray(rgb).quantize(255, method=Image.Quantize.FASTOCTREE, dither=Image.Dither.NONE)
+    h, w = rgb.shape[:2]
+    if changed is None:
+        q = Image.fromarray(rgb).quantize(255, method=Image.Quantize.FASTOCTREE,
+                                          dither=Image.Dither.NONE)
+        idx = None
+    else:  # only the changed pixels (a few per cent during a drag) are quantised
+        idx = np.full((h, w), 255, dtype=np.uint8)
+        sel = rgb[changed]
+        q = Image.fromarray(sel[None] if len(sel) else np.zeros((1, 1, 3), np.uint8)).quantize(
+            255, method=Image.Quantize.FASTOCTREE, dither=Image.Dither.NONE)
+        if len(sel):
+            idx[changed] = np.asarray(q)[0]
     used = np.array(q.getpalette()[:765], dtype=np.int64).reshape(-1, 3)
     pal = np.zeros((256, 3), dtype=np.int64)
     pal[:len(used)] = used
     pal[np.all(pal >= 250, axis=1)] = 255    # the background stays pure white
     kw = {}
-    if changed is not None:
-        idx = np.where(changed, np.asarray(q), 255).astype(np.uint8)
-        q = Image.frombytes("P", q.size, idx.tobytes())
+    if idx is not None:
+        q = Image.frombytes("P", (w, h), idx.tobytes())
         pal[255] = 0
         kw["transparency"] = 255
     q.putpalette(pal.astype(np.uint8).ravel().tolist())
