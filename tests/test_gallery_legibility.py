@@ -17,6 +17,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import pytest  # noqa: E402
+from matplotlib.backends.backend_agg import RendererAgg  # noqa: E402
 from matplotlib.text import Text  # noqa: E402
 
 from planargeo.gallery.figures import load_all  # noqa: E402
@@ -28,18 +29,34 @@ SPECS = load_all()
 
 
 def _drawn_texts(fig, monkeypatch):
-    """(text, window extent) of every non-empty Text drawn while rendering ``fig``."""
-    drawn = []
-    orig = Text.draw
+    """(text, window extent) of every non-empty Text drawn while rendering ``fig``.
+
+    A text is drawn either by its own ``draw`` or, for the labels of
+    :mod:`planargeo.draw.artists`, straight through the renderer (which is told
+    which Text it draws); both are observed, each text once.
+    """
+    drawn, seen = [], set()
+    orig, orig_agg = Text.draw, RendererAgg.draw_text
+
+    def note(t, renderer):
+        if id(t) not in seen and t.get_visible() and t.get_text():
+            seen.add(id(t))
+            drawn.append((t.get_text(), t.get_window_extent(renderer), t.get_fontsize()))
 
     def record(self, renderer):
         orig(self, renderer)
-        if self.get_visible() and self.get_text():
-            drawn.append((self.get_text(), self.get_window_extent(renderer), self.get_fontsize()))
+        note(self, renderer)
+
+    def record_agg(self, gc, x, y, s, prop, angle, ismath=False, mtext=None):
+        orig_agg(self, gc, x, y, s, prop, angle, ismath=ismath, mtext=mtext)
+        if mtext is not None:
+            note(mtext, self)
 
     monkeypatch.setattr(Text, "draw", record)
+    monkeypatch.setattr(RendererAgg, "draw_text", record_agg)
     fig.canvas.draw()
     monkeypatch.setattr(Text, "draw", orig)
+    monkeypatch.setattr(RendererAgg, "draw_text", orig_agg)
     return drawn
 
 

@@ -447,7 +447,7 @@ def _draw_text(t, renderer):
     gc.set_antialiased(t._antialiased)
     text = s if lay[2] else s.replace(r"\$", "$")
     renderer.draw_text(gc, x + lay[0], renderer.height - (y + lay[1]), text, prop, 0.0,
-                       ismath=lay[2], mtext=None)
+                       ismath=lay[2], mtext=t)
     gc.restore()
 
 

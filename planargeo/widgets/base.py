@@ -63,6 +63,11 @@ What the base adds to every explorer (issue 13):
 * **Export**: :meth:`Explorer.export_svg`, :meth:`Explorer.export_png`,
   :meth:`Explorer.export_animation` (GIF, or MP4 with ffmpeg) write files
   atomically; the buttons put a download link in the page.
+* **Fast frames** (:mod:`planargeo.widgets.frames`): each update draws only what
+  can change over a kept background (blitting), sends the page a 256-colour PNG
+  (under ipympl at once, only the changed pixels, without ipympl's round trip
+  through the page), and the controls' and readout's new values after the picture.
+  Exports and the stored picture are drawn whole, at full colour.
 * **Layout**: controls on the left; on the right a reserved message line, the
   figure at its native size (at least 560 px wide, shrinking with a narrow output
   area) and the readout under it, so that nothing moves as values change.
