@@ -257,6 +257,29 @@ def _overlap_area(a, b) -> float:
     return dx * dy if dx > 0.5 and dy > 0.5 else 0.0
 
 
+#: (text, font, dpi) -> (width, height) of a one-line label's box, in display pixels
+_TEXT_SIZE: dict = {}
+
+
+def _text_box(text, renderer):
+    """Display box of a label: a one-line, unrotated label's from its size (measured once) and
+    alignment, by arithmetic; any other text's from Matplotlib."""
+    s = text.get_text()
+    ha, va = text.get_horizontalalignment(), text.get_verticalalignment()
+    if (not s or text.get_rotation() != 0.0 or "\n" in s or text.get_wrap()
+            or ha not in _HA or va not in ("bottom", "center", "top")):
+        return text.get_window_extent(renderer)
+    key = (s, hash(text.get_fontproperties()), renderer.dpi)
+    wh = _TEXT_SIZE.get(key)
+    if wh is None:
+        bb = text.get_window_extent(renderer)
+        _TEXT_SIZE[key] = (bb.width, bb.height)
+        return bb
+    w, h = wh
+    x, y = text.get_transform().transform(text.get_position())
+    return Bbox.from_bounds(x - w * _HA[ha], y - h * _VA[va], w, h)
+
+
 def _settle(text, anchor, gap_px, renderer, ax):
     """Move ``text`` (display space) off the labels already placed and into the axes; register it."""
     board = _board(ax)
@@ -270,17 +293,11 @@ def _settle(text, anchor, gap_px, renderer, ax):
         dy = max(box.y0 - bb.y0, 0) + max(bb.y1 - box.y1, 0)
         return out + 50.0 * (dx + dy)
 
-    bb = text.get_window_extent(renderer)
+    bb = _text_box(text, renderer)
     best = (cost(bb), text.get_position(), text.get_horizontalalignment(),
             text.get_verticalalignment())
     if best[0] > 0 and anchor is not None:
         anchor = np.asarray(anchor, dtype=float)
-        # a one-line label's box at another place and alignment, by arithmetic (its size is fixed)
-        w, h = bb.width, bb.height
-        px, py = _pyxy(text.get_transform().transform(text.get_position()))
-        x0 = bb.x0 + w * _HA[best[2]] - px
-        y0 = bb.y0 + h * _VA[best[3]] - py
-        plain = text.get_rotation() == 0.0 and "\n" not in text.get_text() and best[3] != "baseline"
         for scale in (1.0, 2.2):
             for u in _TRY:
                 text.set_position(_pyxy(anchor + scale * gap_px * np.asarray(u)))
@@ -288,13 +305,7 @@ def _settle(text, anchor, gap_px, renderer, ax):
                                              else "center")
                 text.set_verticalalignment("bottom" if u[1] > 0.35 else "top" if u[1] < -0.35
                                            else "center")
-                if plain:
-                    qx, qy = text.get_transform().transform(text.get_position())
-                    bx = qx + x0 - w * _HA[text.get_horizontalalignment()]
-                    by = qy + y0 - h * _VA[text.get_verticalalignment()]
-                    c = cost(Bbox.from_bounds(bx, by, w, h))
-                else:
-                    c = cost(text.get_window_extent(renderer))
+                c = cost(_text_box(text, renderer))
                 if c < best[0]:
                     best = (c, text.get_position(), text.get_horizontalalignment(),
                             text.get_verticalalignment())
@@ -305,14 +316,14 @@ def _settle(text, anchor, gap_px, renderer, ax):
     text.set_position(best[1])
     text.set_horizontalalignment(best[2])
     text.set_verticalalignment(best[3])
-    bb = text.get_window_extent(renderer)
+    bb = _text_box(text, renderer)
     # finally inside the axes (a label never leaves them)
     shift = np.array([max(box.x0 + 1 - bb.x0, 0) - max(bb.x1 - box.x1 + 1, 0),
                       max(box.y0 + 1 - bb.y0, 0) - max(bb.y1 - box.y1 + 1, 0)])
     if np.any(shift):
         x, y = text.get_position()
         text.set_position(_pyxy((x + shift[0], y + shift[1])))
-        bb = text.get_window_extent(renderer)
+        bb = _text_box(text, renderer)
     board.boxes.append(bb)
 
 
