@@ -425,12 +425,13 @@ _MARKERS: dict = {}
 _TEXT_LAYOUT: dict = {}
 
 
-def _draw_text(t, renderer):
+def _draw_text(t, renderer, fallback=None):
     """Draw a label: with Agg, the glyphs at the baseline its layout gives (cached), else ``t.draw``.
 
     What is drawn is what :meth:`matplotlib.text.Text.draw` draws for a
     one-line, unrotated label without a box; the layout (alignment offsets,
     mathtext or not) is computed once per text, font, alignment and dpi.
+    ``fallback(renderer)`` draws any other text (default: ``t.draw``).
     """
     s = t.get_text()
     if not s:
@@ -438,7 +439,7 @@ def _draw_text(t, renderer):
     if (not isinstance(renderer, RendererAgg) or t.get_rotation() != 0.0 or "\n" in s
             or t.get_wrap() or t.get_usetex() or t.get_bbox_patch() is not None
             or t.get_path_effects()):
-        t.draw(renderer)
+        (fallback or t.draw)(renderer)
         return
     prop = t.get_fontproperties()
     key = (s, hash(prop), t.get_horizontalalignment(), t.get_verticalalignment(), renderer.dpi)
@@ -448,7 +449,7 @@ def _draw_text(t, renderer):
             _, info, _ = t._get_layout(renderer)
             (_line, _wh, dx, dy), = info
         except Exception:  # noqa: BLE001 - any surprise: Matplotlib draws it
-            t.draw(renderer)
+            (fallback or t.draw)(renderer)
             return
         lay = _TEXT_LAYOUT[key] = (dx, dy, bool(cbook.is_math_text(s)))
     x, y = t.get_transform().transform(t.get_position())

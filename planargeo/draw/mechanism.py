@@ -10,8 +10,9 @@ from __future__ import annotations
 
 import numpy as np
 from matplotlib.patches import Circle, Polygon, Rectangle
+from matplotlib.text import Annotation, Text
 
-from planargeo.draw.artists import plot_line
+from planargeo.draw.artists import _draw_text, plot_line
 from planargeo.draw.style import COLORS, LABEL_PT, LINEWIDTHS, get_ax
 
 __all__ = ["link_polygon", "draw_body", "draw_link", "draw_pin", "draw_ground", "draw_slider",
@@ -661,6 +662,21 @@ _SPOTS = ((1, 1), (-1, 1), (1, -1), (-1, -1), (1.3, 0), (-1.3, 0), (0, 1.3), (0,
 BOLD_SCALE = 1.2
 
 
+class _PlacedLabel(Annotation):
+    """A :class:`LabelPlacer` label: an annotation without arrow, its text drawn like the
+    artists' labels (:mod:`planargeo.draw.artists`: layout once, glyphs straight to Agg)."""
+
+    def draw(self, renderer):
+        if not self.get_visible():
+            return
+        if self.arrow_patch is not None or self.get_annotation_clip() is not False:
+            super().draw(renderer)
+            return
+        self.update_positions(renderer)
+        _draw_text(self, renderer, fallback=lambda r: Text.draw(self, r))
+        self.stale = False
+
+
 class LabelPlacer:
     """A fixed pool of labels placed beside their anchors without overlapping each other.
 
@@ -707,8 +723,9 @@ class LabelPlacer:
         self.margin_px = float(margin_px)
         self.texts = []
         for _ in range(int(size)):
-            t = self.ax.annotate("", xy=(0.0, 0.0), xytext=(0.0, 0.0), textcoords="offset points",
-                                 fontsize=self.fontsize, zorder=zorder, annotation_clip=False)
+            t = self.ax.add_artist(_PlacedLabel("", xy=(0.0, 0.0), xytext=(0.0, 0.0),
+                                                textcoords="offset points", fontsize=self.fontsize,
+                                                zorder=zorder, annotation_clip=False))
             t.set_visible(False)
             self.texts.append(t)
         self._sizes: dict = {}
