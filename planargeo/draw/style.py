@@ -96,11 +96,12 @@ SUM = {
 #: Smallest text on screen, in pixels at the displayed size (explorers, gallery, legibility checks).
 MIN_TEXT_PX = 11.0
 #: The one text size of every planargeo drawing, explorers and gallery alike (points): labels,
-#: tick labels, legends, dimension and chart texts.  At the figures' 100 dpi (explorers shown
-#: at native size, gallery SVGs at their natural size) it is 11.1 px high, :data:`MIN_TEXT_PX`.
-LABEL_PT = 8.0
+#: tick labels, legends, dimension and chart texts.  A gallery SVG at its natural size in a
+#: browser shows a point as 96/72 px, so 8.25 pt is 11.0 px there (:data:`MIN_TEXT_PX`); an
+#: explorer's picture (100 dpi, shown at native size) shows it at 11.5 px.
+LABEL_PT = 8.25
 #: Titles (points), a little larger than :data:`LABEL_PT`.
-TITLE_PT = 8.5
+TITLE_PT = 8.75
 #: Explorers: resolution (figure pixels per inch; shown at native size), the narrowest
 #: figure (pixels; the notebook column), tick-label size (points, :data:`LABEL_PT`).
 EXPLORER_DPI = 100
