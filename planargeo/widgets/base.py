@@ -1285,6 +1285,10 @@ class Explorer:
 
             FigureCanvasAgg(fig)
         ax = fig.add_subplot(1, 1, 1)
+        if self.display_mode == "ipympl":
+            # the toolbar's coordinate message goes to ipympl's footer, which is hidden: sending it
+            # on every mouse move would only load the page and the server during a drag
+            ax.format_coord = lambda x, y: ""
         ax.tick_params(labelsize=EXPLORER_TICK_PT)
         fig.subplots_adjust(left=0.09, right=0.98, bottom=0.07, top=0.97)
         return fig, ax
