@@ -85,8 +85,8 @@ def toggle_cases():
          lambda: ChainExplorer(display="agg", links=10, **ALL_CHAIN_OVERLAYS), "articulated inertias", flip),
         ("slider-crank: velocity poles", lambda: SliderCrankExplorer(display="agg"),
          "velocity poles", [True, False] * 6),
-        ("trees and loops: contact forces", lambda: TreeExplorer(display="agg"),
-         "contact forces", flip),
+        ("trees and loops: reaction forces", lambda: TreeExplorer(display="agg"),
+         "reaction forces", flip),
     ]
 
 

@@ -1309,6 +1309,15 @@ class ConicArtist(_Base):
 
     set_inertia = set_conic
 
+    def geometry(self) -> dict:
+        """How the stored conic is drawn: :func:`conic_geometry` of it, kept until the next ``set_conic``.
+
+        Returns
+        -------
+        dict
+        """
+        return self._geometry()
+
     def _on_axes(self, ax):
         self._curve.set_transform(self._affine + ax.transData)
         self._center.set_transform(ax.transData)

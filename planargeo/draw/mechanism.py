@@ -658,6 +658,10 @@ def draw_model(model, data, ax=None, *, width=0.18, labels=True, ground=True, pi
 
 #: candidate label spots around an anchor: (direction x, direction y) in units of the clearance
 _SPOTS = ((1, 1), (-1, 1), (1, -1), (-1, -1), (1.3, 0), (-1.3, 0), (0, 1.3), (0, -1.3))
+_SPOT_U = np.array(_SPOTS, dtype=float)
+#: where a spot's box starts, in label widths (heights) left of (below) the spot
+_SPOT_SHIFT = np.array([[1.0 if ux < 0 else 0.5 if ux == 0 else 0.0,
+                         1.0 if uy < 0 else 0.5 if uy == 0 else 0.0] for ux, uy in _SPOTS])
 #: a bold label is also this much larger (mathtext ignores the font weight)
 BOLD_SCALE = 1.2
 
@@ -801,18 +805,19 @@ class LabelPlacer:
                 w, h, d = (v * px for v in self._size_pt(text, bold))
                 c = float(opt.get("clear", 5.0)) * px
                 P = placed[:n_placed]
+                # the eight spots at once: inside the axes and clear of every box taken
+                ox, oy = _SPOT_U[:, 0] * c, _SPOT_U[:, 1] * c
+                x0 = dx + ox - w * _SPOT_SHIFT[:, 0]
+                y0 = dy + oy - h * _SPOT_SHIFT[:, 1]
+                free = (x0 >= lo_x) & (y0 >= lo_y) & (x0 + w <= hi_x) & (y0 + h <= hi_y)
+                if n_placed and free.any():
+                    free &= ~((x0[:, None] < P[:, 2] + m) & (P[:, 0] < x0[:, None] + w + m)
+                              & (y0[:, None] < P[:, 3] + m) & (P[:, 1] < y0[:, None] + h + m)).any(axis=1)
                 found = None
-                for ux, uy in _SPOTS:                   # the first free spot, up right first
-                    ox, oy = ux * c, uy * c
-                    x0 = dx + ox - (w if ux < 0 else w / 2 if ux == 0 else 0.0)
-                    y0 = dy + oy - (h if uy < 0 else h / 2 if uy == 0 else 0.0)
-                    if x0 < lo_x or y0 < lo_y or x0 + w > hi_x or y0 + h > hi_y:
-                        continue
-                    if n_placed and ((x0 < P[:, 2] + m) & (P[:, 0] < x0 + w + m)
-                                     & (y0 < P[:, 3] + m) & (P[:, 1] < y0 + h + m)).any():
-                        continue
-                    found = (ux, uy, ox, oy, (x0, y0, x0 + w, y0 + h))
-                    break
+                if free.any():                          # the first free spot, up right first
+                    j = int(np.argmax(free))
+                    found = (_SPOTS[j][0], _SPOTS[j][1], float(ox[j]), float(oy[j]),
+                             (float(x0[j]), float(y0[j]), float(x0[j] + w), float(y0[j] + h)))
                 if found is not None:
                     ux, uy, ox, oy, box = found
                     t = self.texts[k]

@@ -920,7 +920,7 @@ class ChainExplorer(Explorer):
                 p0 = np.array([fy * tz, -fx * tz]) / (fx * fx + fy * fy)
                 mid = p0 + e * ((np.asarray(near, float) - p0) @ e)
             return mid if inside(mid) else seg[0] + (seg[1] - seg[0]) / 3.0
-        g = conic_geometry(art.get_conic())
+        g = art.geometry()
         if "affine" not in g:
             return None
         xy = (g["affine"] @ [0.7071, 0.7071, 1.0])[:2]
