@@ -166,3 +166,26 @@ def test_focus_fades_the_other_side():
     ex.set(focus="constrained part")
     assert ex.lower.get_alpha() > ex.upper.get_alpha()
     _legible(ex)
+
+
+def test_every_pole_is_shown_and_labelled_in_or_out_of_view():
+    """A pole outside the view is a labelled arrow at the edge (issue 13), each with its symbol a_k."""
+    from matplotlib.text import Text
+
+    ex = SplittingExplorer(display="agg", **{"bodies n": 8, "split at joint": 6, "bend φ (deg)": 10.0})
+    assert ex.message == ""
+    (x0, x1), (y0, y1) = ex.ax.get_xlim(), ex.ax.get_ylim()
+    off = [b for b, a in enumerate(ex.poles[:8])
+           if a.get_xy() is None or not (x0 <= a.get_xy()[0] <= x1 and y0 <= a.get_xy()[1] <= y1)]
+    assert off and all(ex.poles[b].get_visible() for b in range(8))
+    assert not any(a.get_visible() for a in ex.poles[8:])
+    ex.fig.canvas.draw()
+    bb = ex.ax.get_window_extent()
+    shown = {t.get_text(): t.get_window_extent() for t in ex.fig.findobj(Text)
+             if t.get_visible() and t.get_text().startswith("$a_")}
+    for b in range(8):                                    # every pole's symbol is drawn, inside the axes
+        sym = f"$a_{{{b + 1}}}$"
+        assert sym in shown, sym
+        e = shown[sym]
+        assert bb.x0 <= e.x0 and e.x1 <= bb.x1 and bb.y0 <= e.y0 and e.y1 <= bb.y1, sym
+    _legible(ex)

@@ -546,6 +546,17 @@ class _Base(martist.Artist):
         self._text.set_text("" if text is None else str(text))
         self.stale = True
 
+    def set_text_props(self, **props):
+        """Set properties of the label (``fontsize``, ``color``...), as :meth:`matplotlib.text.Text.update`.
+
+        Parameters
+        ----------
+        **props
+            Text properties.
+        """
+        self._text.update(props)
+        self.stale = True
+
     def set_text_offset(self, offset):
         """Offset (dx, dy) in points of the label from its reference point (None: the default)."""
         if hasattr(self, "_auto_offset"):
@@ -706,6 +717,22 @@ class PointArtist(_Base):
         self.stale = True
 
     set_twist = set_point
+
+    def set_color(self, color):
+        """Draw the pole, its glyph, its edge arrow and its label in ``color``.
+
+        Parameters
+        ----------
+        color : color
+        """
+        self._color = color
+        self._marker.set_color(color)
+        self._arc.set_color(color)
+        self._head.set_color(color)
+        self._arrow.set_color(color)
+        self._inf.set_color(color)
+        self._text.set_color(color)
+        self.stale = True
 
     def set_glyph_scale(self, glyph_scale):
         """Rotation-glyph radius in points per unit ``|w|`` (clamped to [4, 16]).

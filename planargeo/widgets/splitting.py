@@ -40,6 +40,9 @@ from planargeo.widgets.articulated import (bend_for_tip, label_artist, line_cand
                                            point_candidates)
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
+#: size (points) of the poles' own labels: that of the placed labels (``label_artist``)
+LABEL_FONT = 11.0
+
 __all__ = ["SplittingExplorer", "NMAX", "x_over_L_7_48"]
 
 #: Most bodies the explorer shows.
@@ -294,13 +297,14 @@ class SplittingExplorer(Explorer):
         (x0, x1), (y0, y1) = self.ax.get_xlim(), self.ax.get_ylim()
         for b in range(NMAX):
             art = self.poles[b]
-            p = poles[b] if b < n else None
             near = b in (i - 1, i)
-            inside = p is not None and x0 <= p[0] <= x1 and y0 <= p[1] <= y1
-            art.set_visible(b < n and (near or inside))         # the others only where they are in view
+            art.set_visible(b < n)          # out of view: a labelled arrow at the edge points to it
+            # the two poles at the split are labelled by the placed labels, the others by their own
+            art.set_text("" if near else f"$a_{{{b + 1}}}$")
             if b < n:
                 art.set_point(st["a"][b])
-                art._marker.set_color(_LOWER if b < i else _UPPER)
+                art.set_color(_LOWER if b < i else _UPPER)
+                art.set_text_props(fontsize=LABEL_FONT)
         focus = self.values.get("focus", "all")
         low, up = (1.0, 1.0) if focus == "all" else (1.0, 0.2) if focus == "constrained part" else (0.2, 1.0)
         self.lower.set_alpha(0.55 * low)
