@@ -10,6 +10,10 @@ explorer with every overlay on (the heaviest explorer state the tests visit):
 * **drag step** under ipympl: the mouse holds the end of the last link and moves by
   3 px; the time from the move to the next paint of the canvas.
 
+The same three measurements on the projective playground (the lightest explorer), in
+the same run, give the floor of the machine: what messaging, the page's work and the
+smallest update cost, against which the chain's own cost reads.
+
 Times are taken in the page (``performance.now()``): a ``MutationObserver`` on the
 image and a wrapper of the canvas's ``drawImage`` record when a new picture lands.
 Each step waits for its picture before the next starts, so the numbers are
@@ -48,13 +52,18 @@ OVERLAYS = ("velocity poles", "acceleration poles", "bias terms", "internal forc
 EXPLORER = ("from planargeo.widgets import ChainExplorer\n"
             "ex = ChainExplorer(links=10, **{k: True for k in %r if k in ChainExplorer(display='agg').controls})\n"
             "ex" % (OVERLAYS,))
+#: the floor of this machine: the lightest explorer (a point, a line, a conic) through the same path
+LIGHT = "from planargeo.widgets import ProjectiveExplorer\nex = ProjectiveExplorer()\nex"
+#: (name, notebook code, slider to step, handle to drag: the first one that is in view)
+CASES = (("10-link chain, all overlays", EXPLORER, "angle", -1),
+         ("projective playground (floor)", LIGHT, "P x", 0))
 HANDLE = (
     "import json\n"
     "W, H = ex.fig.canvas.get_width_height()\n"
     "ex.ax.apply_aspect()\n"
     "hs = [h for h in ex.handles() if h.where() is not None]\n"
     "if hs:\n"
-    "    h = hs[-1]\n"
+    "    h = hs[%d]\n"
     "    px, py = ex.ax.transData.transform(h.where())\n"
     "    print('HANDLE ' + json.dumps({'name': h.name, 'fx': float(px / W), 'fy': float(1 - py / H)}))\n"
     "else:\n"
@@ -116,8 +125,8 @@ def _quiet(page, ms: float = 250.0) -> None:
         timeout=20_000, polling=50)
 
 
-def slider_steps(page, explorer, steps: int) -> list[float]:
-    slider = explorer.locator(".widget-slider").filter(has_text="angle").first
+def slider_steps(page, explorer, steps: int, name: str = "angle") -> list[float]:
+    slider = explorer.locator(".widget-slider").filter(has_text=name).first
     handle = slider.locator(".noUi-handle").first
     handle.scroll_into_view_if_needed()
     handle.focus()
@@ -216,35 +225,39 @@ def run(steps: int) -> dict:
         tmp = Path(tmp)
         root = tmp / "nb"
         root.mkdir()
-        _notebook(root / "image.ipynb", [EXPLORER])
-        _notebook(root / "ipympl.ipynb", ["%matplotlib widget", EXPLORER, HANDLE])
+        for k, (_, code, _, pick) in enumerate(CASES):
+            _notebook(root / f"image{k}.ipynb", [code])
+            _notebook(root / f"ipympl{k}.ipynb", ["%matplotlib widget", code, HANDLE % pick])
         lab = LabServer(root, tmp)
         browser = launch_chromium(p)
         try:
-            page = browser.new_page(viewport={"width": 1500, "height": 1100})
-            page.add_init_script(INIT)
-            explorer = _open(page, lab, "image.ipynb")
-            time.sleep(1.0)
-            results["slider → new image (image mode)"] = summary(slider_steps(page, explorer, steps))
-            page.close()
+            for k, (case, _, slider, _) in enumerate(CASES):
+                page = browser.new_page(viewport={"width": 1500, "height": 1100})
+                page.add_init_script(INIT)
+                explorer = _open(page, lab, f"image{k}.ipynb")
+                time.sleep(1.0)
+                results[f"{case}: slider → new image (image mode)"] = summary(
+                    slider_steps(page, explorer, steps, slider))
+                page.close()
 
-            page = browser.new_page(viewport={"width": 1500, "height": 1100})
-            page.add_init_script(INIT)
-            explorer = _open(page, lab, "ipympl.ipynb")
-            out = page.locator(".jp-OutputArea-output", has_text="HANDLE").first
-            out.wait_for(timeout=60_000)
-            handle = json.loads(out.inner_text().split("HANDLE", 1)[1].strip())
-            page.wait_for_function("document.querySelector('.planargeo-figure canvas') &&"
-                                   " document.querySelector('.planargeo-figure canvas').width > 50",
-                                   timeout=60_000)
-            time.sleep(1.0)
-            results["slider → new canvas (ipympl)"] = summary(slider_steps(page, explorer, steps))
-            if handle is None:
-                print("the chain explorer has no draggable handle: drag step not measured")
-            else:
-                results[f"drag step, 3 px, handle {handle['name']!r} (ipympl)"] = summary(
-                    drag_steps(page, explorer, handle, steps))
-            page.close()
+                page = browser.new_page(viewport={"width": 1500, "height": 1100})
+                page.add_init_script(INIT)
+                explorer = _open(page, lab, f"ipympl{k}.ipynb")
+                out = page.locator(".jp-OutputArea-output", has_text="HANDLE").first
+                out.wait_for(timeout=60_000)
+                handle = json.loads(out.inner_text().split("HANDLE", 1)[1].strip())
+                page.wait_for_function("document.querySelector('.planargeo-figure canvas') &&"
+                                       " document.querySelector('.planargeo-figure canvas').width > 50",
+                                       timeout=60_000)
+                time.sleep(1.0)
+                results[f"{case}: slider → new canvas (ipympl)"] = summary(
+                    slider_steps(page, explorer, steps, slider))
+                if handle is None:
+                    print(f"{case}: no draggable handle in view: drag step not measured")
+                else:
+                    results[f"{case}: drag step, 3 px, handle {handle['name']!r} (ipympl)"] = summary(
+                        drag_steps(page, explorer, handle, steps))
+                page.close()
         finally:
             browser.close()
             lab.stop()
@@ -269,6 +282,8 @@ def main(argv=None) -> int:
              "End-to-end, in JupyterLab in headless chromium (page clock), for the 10-link chain explorer",
              "with every overlay on: from a key press on a slider, or a 3-px mouse move dragging the last",
              "link's end, to the new picture in the page. Goals: slider ≤ 100 ms, drag step ≤ 60 ms (medians).",
+             "The projective playground (one point, one line, one conic) measured the same way in the same",
+             "run is the floor of this machine: messaging, the page's work and the lightest update.",
              "", "| measurement | median (ms) | 10 % | 90 % | steps |", "|---|---:|---:|---:|---:|"]
     for k, r in res.items():
         lines.append(f"| {k} | {r['median_ms']:.0f} | {r['p10_ms']:.0f} | {r['p90_ms']:.0f} | {r['n']} |")
