@@ -328,6 +328,11 @@ def _settle(text, anchor, gap_px, renderer, ax):
 
 
 # --------------------------------------------------------------------------- fast drawing
+_IDENTITY = IdentityTransform()
+_NO_MARKER = {"None", "none", None, " ", ""}
+_NO_LINE = {"None", "none", " ", ""}
+
+
 def _gc(renderer, clip, rgba, linewidth, dashes=(0, None), cap="butt", join="round"):
     gc = renderer.new_gc()
     gc.set_clip_rectangle(clip)
@@ -374,11 +379,6 @@ def _draw_primitive(c, renderer, clip):
         c.draw(renderer)
 
 
-_IDENTITY = IdentityTransform()
-_NO_MARKER = {"None", "none", None, " ", ""}
-_NO_LINE = {"None", "none", " ", ""}
-
-
 def _draw_line2d(c, renderer, clip):
     x, y = c.get_data()
     n = len(x)
@@ -408,17 +408,23 @@ def _draw_line2d(c, renderer, clip):
         gc.restore()
 
 
+#: marker styles and their transforms at a size (pixels), made once
+_MARKERS: dict = {}
 _MARKER_TRANSFORMS: dict = {}
 
 
+def _marker_style(marker):
+    if marker not in _MARKERS:
+        _MARKERS[marker] = MarkerStyle(marker)
+    return _MARKERS[marker]
+
+
 def _marker_transform(m, size_px):
-    key = (id(m), size_px)
+    key = (id(m), size_px)            # the styles live in _MARKERS: their ids are stable
     if key not in _MARKER_TRANSFORMS:
         _MARKER_TRANSFORMS[key] = m.get_transform().frozen().scale(size_px)
     return _MARKER_TRANSFORMS[key]
 
-
-_MARKERS: dict = {}
 
 #: (text, font, alignment, dpi) -> baseline start of a one-line label relative to its position
 #: (display pixels) and whether it is mathtext: a label's layout is worked out once
@@ -456,17 +462,11 @@ def _draw_text(t, renderer, fallback=None):
     gc = renderer.new_gc()
     gc.set_foreground(t.get_color())
     gc.set_alpha(t.get_alpha())
-    gc.set_antialiased(t._antialiased)
+    gc.set_antialiased(t.get_antialiased())
     text = s if lay[2] else s.replace(r"\$", "$")
     renderer.draw_text(gc, x + lay[0], renderer.height - (y + lay[1]), text, prop, 0.0,
                        ismath=lay[2], mtext=t)
     gc.restore()
-
-
-def _marker_style(marker):
-    if marker not in _MARKERS:
-        _MARKERS[marker] = MarkerStyle(marker)
-    return _MARKERS[marker]
 
 
 def _draw_arrow(c, renderer, clip):
@@ -483,12 +483,12 @@ def _draw_arrow(c, renderer, clip):
     rgba = mcolors.to_rgba(c.get_edgecolor(), c.get_alpha())
     base = b - u * hl
     gc = _gc(renderer, clip, rgba, lw, c._dash_pattern, "butt", "miter")
-    renderer.draw_path(gc, Path(np.array([a, base + u * 0.5])), IdentityTransform())
+    renderer.draw_path(gc, Path(np.array([a, base + u * 0.5])), _IDENTITY)
     gc.restore()
     v = np.array([-u[1], u[0]])
     gc = _gc(renderer, clip, rgba, lw, cap="butt", join="miter")
     renderer.draw_path(gc, Path(np.array([b, base + v * hw, base - v * hw, b]), closed=True),
-                       IdentityTransform(), rgba)
+                       _IDENTITY, rgba)
     gc.restore()
 
 

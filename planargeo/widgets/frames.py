@@ -38,6 +38,7 @@ True
 from __future__ import annotations
 
 import base64
+import functools
 import io
 
 import numpy as np
@@ -220,7 +221,18 @@ def live_canvas(fig):
     -------
     ipympl.backend_nbagg.Canvas
     """
-    from ipympl.backend_nbagg import Canvas, FigureManager
+    from ipympl.backend_nbagg import FigureManager
+
+    canvas = _live_canvas_class()(fig)
+    FigureManager(canvas, 1)
+    return canvas
+
+
+@functools.lru_cache(maxsize=None)
+def _live_canvas_class():
+    """ipympl's canvas whose frames are :func:`live_png` pictures (made on first use: ipympl is
+    imported only where it is the front end)."""
+    from ipympl.backend_nbagg import Canvas
 
     class LiveCanvas(Canvas):
         """ipympl's canvas, whose frames are :func:`live_png` pictures."""
@@ -249,6 +261,4 @@ def live_canvas(fig):
                 self._data_url = "data:image/png;base64," + base64.b64encode(live_png(rgba)).decode("ascii")
             self.send({"data": '{"type": "binary"}'}, buffers=[data])
 
-    canvas = LiveCanvas(fig)
-    FigureManager(canvas, 1)
-    return canvas
+    return LiveCanvas
