@@ -14,6 +14,16 @@ Point(x=1, y=2)
 >>> float(v @ f)
 0.0
 
+The main jobs are one attribute away, loaded on first use (so ``import planargeo``
+imports neither numba nor scipy): :func:`forward_dynamics` (the articulated-body
+algorithm, thesis 3.6), :func:`inverse_dynamics` (recursive Newton-Euler, 3.9),
+:func:`simulate` (time integration), :func:`chain_model` (a chain of uniform links)
+and the named scenes, :func:`scene` (build one) and :mod:`scenes` (the registry).
+
+>>> model = pg.chain_model(1)                # a uniform rod pinned at one end
+>>> pg.forward_dynamics(model, [0.0], [0.0], [0.0])    # released horizontally: -3g/(2L)
+array([-14.715])
+
 Drawing (:mod:`planargeo.draw`) and widgets (:mod:`planargeo.widgets`) are
 imported on demand; importing ``planargeo`` never imports matplotlib.
 """
@@ -35,8 +45,8 @@ from planargeo.screws.inertia import Inertia, percussion_axis, percussion_pole
 from planargeo.mechanics import joints
 from planargeo.mechanics.joints import R_of, fixed, plane, prismatic, revolute, revolute_prismatic, twin_prismatic
 from planargeo.mechanics.subspaces import Decomposition, T_of, U_of
-from planargeo.mechanics.model import Body, Joint, Model
-from planargeo import scenes
+from planargeo.mechanics.model import Body, Joint, Model, chain_model
+import planargeo.simulate as simulate
 
 __version__ = "0.1.0"
 
@@ -59,5 +69,62 @@ __all__ = [
     "joints", "revolute", "prismatic", "revolute_prismatic", "twin_prismatic", "plane", "fixed",
     "R_of", "T_of", "U_of", "Decomposition",
     # mechanisms
-    "Body", "Joint", "Model", "scenes",
+    "Body", "Joint", "Model", "chain_model",
+    # the main jobs, loaded on first use (module __getattr__ below)
+    "forward_dynamics", "inverse_dynamics", "simulate", "scene", "scenes",
 ]
+
+#: Public names loaded on first use: name -> (module, attribute; None for the module itself).
+_LAZY = {
+    "forward_dynamics": ("planargeo.algorithms.aba", "forward_dynamics"),
+    "inverse_dynamics": ("planargeo.algorithms.rnea", "inverse_dynamics"),
+    "scene": ("planargeo.scenes", "build"),
+    "scenes": ("planargeo.scenes", None),
+}
+
+
+def __getattr__(name: str):
+    """Load the main jobs on first use (PEP 562), so that ``import planargeo`` stays light."""
+    try:
+        module, attr = _LAZY[name]
+    except KeyError:
+        raise AttributeError(f"module 'planargeo' has no attribute {name!r}") from None
+    import importlib
+
+    mod = importlib.import_module(module)
+    value = mod if attr is None else getattr(mod, attr)
+    globals()[name] = value
+    return value
+
+
+class _CallableSubpackage(type(simulate)):
+    """The subpackage :mod:`planargeo.simulate`, callable as its main function.
+
+    ``pg.simulate(model, q0, qd0, t_end, ...)`` is
+    :func:`planargeo.simulate.integrate.simulate`, while ``planargeo.simulate.integrate`` and
+    ``planargeo.simulate.loops`` stay the subpackage's modules (one name, both meanings).
+    """
+
+    def __call__(self, *args, **kwargs):
+        """Integrate a mechanism's motion: :func:`planargeo.simulate.integrate.simulate`."""
+        return self._function()(*args, **kwargs)
+
+    @property
+    def __signature__(self):
+        import inspect
+
+        return inspect.signature(self._function())
+
+    @staticmethod
+    def _function():
+        from planargeo.simulate.integrate import simulate as function
+
+        return function
+
+
+simulate.__class__ = _CallableSubpackage
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))
+

@@ -1,9 +1,10 @@
 """README.md's ```python blocks run, and the results shown in their comments are what they return.
 
 A block is run statement by statement.  An expression statement whose trailing comment starts with
-a repr (``Point(...)``, ``Line(...)``, ...) must have exactly that repr; one whose comment starts
+a repr (``Point(...)``, ``Line(...)``, ``array(...)``, a tuple ...) must have exactly that repr; one whose comment starts
 with a number must have that value.  Independently of those comments, the "A first look" values
-are checked against hand computations (thesis 4.10 pole, power v·f, 5.67 axis of percussion).
+are checked against hand computations (thesis 4.10 pole, power v·f, 5.67 axis of percussion, and the
+accelerations of a double pendulum from its Lagrangian written out here).
 """
 import ast
 import io
@@ -15,7 +16,7 @@ import numpy as np
 import pytest
 
 README = Path(__file__).resolve().parents[1] / "README.md"
-REPR_START = re.compile(r"(Point|Line|Conic|Twist|Wrench|Inertia|JointSpace)\(")
+REPR_START = re.compile(r"(Point|Line|Conic|Twist|Wrench|Inertia|JointSpace|array)?\(")   # a repr, or a tuple
 NUMBER_START = re.compile(r"[-+]?\d+(\.\d*)?([eE][-+]?\d+)?(?=[\s:;,]|$)")
 
 
@@ -92,6 +93,29 @@ def test_first_look_values_against_hand_computations():
     assert axis.incidence(ns["pg"].Point.from_xy(1.25, 0.0)) == pytest.approx(0.0, abs=1e-14)
     assert axis.incidence(ns["pg"].Point.from_xy(1.25, 7.0)) == pytest.approx(0.0, abs=1e-13)
     assert abs(axis.incidence(ns["pg"].Point.from_xy(1.0, 0.0))) > 0.1
+
+    # the arm: two uniform links (m = 1, L = 1, centre at L/2, I = m L²/12), at rest, no joint torques.
+    # Lagrange: M(q₂) q̈ = -G(q), with
+    #   M₁₁ = 2 I + m c² + m (L² + c² + 2 L c cos q₂),  M₁₂ = I + m (c² + L c cos q₂),  M₂₂ = I + m c²,
+    #   G₁ = g (m c cos q₁ + m (L cos q₁ + c cos(q₁ + q₂))),  G₂ = g m c cos(q₁ + q₂).
+    g, m, L, c, inertia = 9.81, 1.0, 1.0, 0.5, 1.0 / 12
+
+    def lagrange(q):
+        q1, q2 = q[..., 0], q[..., 1]
+        M11 = 2 * inertia + m * c**2 + m * (L**2 + c**2 + 2 * L * c * np.cos(q2))
+        M12 = inertia + m * (c**2 + L * c * np.cos(q2))
+        M22 = inertia + m * c**2 + 0 * q2
+        G1 = g * (m * c * np.cos(q1) + m * (L * np.cos(q1) + c * np.cos(q1 + q2)))
+        G2 = g * m * c * np.cos(q1 + q2)
+        M = np.stack([np.stack([M11, M12], -1), np.stack([M12, M22], -1)], -2)
+        return np.linalg.solve(M, -np.stack([G1, G2], -1)[..., None])[..., 0]
+
+    straight = values["pg.forward_dynamics(arm, q=[0.0, 0.0], qd=[0.0, 0.0], tau=[0.0, 0.0])"]
+    np.testing.assert_allclose(straight, [-9 * g / 7, 12 * g / 7], rtol=1e-13)
+    np.testing.assert_allclose(lagrange(np.zeros(2)), [-9 * g / 7, 12 * g / 7], rtol=1e-13)
+    q, qdd = ns["q"], ns["qdd"]
+    assert q.shape == qdd.shape == (10_000, 2)
+    np.testing.assert_allclose(qdd, lagrange(q), rtol=1e-9, atol=1e-9 * g)
 
 
 # --------------------------------------------------------------------------- make lab (issue 16: servers)
