@@ -1,0 +1,27 @@
+# Voila's configuration for `make app` (loaded with --Voila.config_file_paths=app/config).
+# Command-line options win over this file, so the Makefile's variables set the numbers:
+#   APP_VISITORS  -> ClassroomKernelManager.max_kernels   (seats; 0: no limit)
+#   APP_IDLE      -> MappingKernelManager.cull_idle_timeout (seconds)
+# See docs/serving.md and benchmarks/results/classroom.md (where the default seat count comes from).
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from planargeo_classroom import ClassroomKernelManager, turn_away_when_full  # noqa: E402
+
+c = get_config()  # noqa: F821
+
+# one kernel per visitor, at most max_kernels of them; visitor max_kernels + 1 gets a clear page
+c.VoilaConfiguration.multi_kernel_manager_class = ClassroomKernelManager
+c.VoilaConfiguration.prelaunch_hook = turn_away_when_full
+c.ClassroomKernelManager.max_kernels = 8
+
+# a seat comes back after 15 minutes without any activity (no drag, slider, Play), even with the
+# page still open: the visitor then reloads the page to get a fresh one
+c.MappingKernelManager.cull_idle_timeout = 900
+c.MappingKernelManager.cull_interval = 60
+c.MappingKernelManager.cull_connected = True
+c.MappingKernelManager.cull_busy = False
+
+# never send a traceback to the page
+c.VoilaConfiguration.show_tracebacks = False
