@@ -1,5 +1,6 @@
 """ProjectiveExplorer: poles, polars and constructions against closed forms for circles."""
 import math
+import re
 
 import numpy as np
 import pytest
@@ -111,7 +112,7 @@ def test_ideal_point_maps_to_a_diameter_and_line_at_infinity_to_the_centre(ex):
     assert pol[2] == pytest.approx(0.0, abs=1e-12)                  # through the origin
     assert np.dot(pol[:2], [1.0, 1.0]) == pytest.approx(0.0, abs=1e-12)  # ⟂ to the direction (circle)
     assert ex.readout_values["pole of M"] == pytest.approx((0.0, 0.0), abs=1e-12)
-    assert ex.readout_values["P"] == "at infinity" and "at infinity" in ex.readout_values["P is"]
+    assert ex.readout_values["P"] == "at infinity (direction (0.7071, 0.7071))" and "at infinity" in ex.readout_values["P is"]
     # the two tangents in that direction are parallel and touch the circle at ±r along the normal
     shown = [a for a in ex.cpts_art if a.get_visible()]
     assert len(shown) == 2
@@ -142,3 +143,45 @@ def test_construction_toggle_only_redraws_and_shows_the_current_point(ex):
         assert np.dot(X - [-2.5, 1.5], X) == pytest.approx(0.0, abs=1e-9)
     ex.controls["line and its pole"].value = False
     assert ex.n_computes == n + 1 and not ex.M_art.get_visible() and not ex.Mpole_art.get_visible()
+
+
+# ---------------------------------------------------------------- issue 22: ideal points and units
+def test_pole_of_the_line_at_infinity_for_a_parabola_is_at_infinity():
+    """Parabola, M = line at infinity: its pole is the centre, the ideal point of the axis (5.37).
+
+    A parabola touches the line at infinity at one point, the direction of its axis:
+    the ideal point Q = [dy, −dx, 0] with QᵀCQ = 0 (5.38); the pole C⁻¹[0, 0, 1] is that point.  Computed in floating point
+    its weight was 1e-17 and the readout said (3.1e16, −8.5e16) m.
+    """
+    for tilt in (20.0, 0.0, -37.0):
+        ex = ProjectiveExplorer(display="agg", conic="parabola", **{"M at infinity": True,
+                                                                    "tilt (deg)": tilt})
+        assert ex.message == ""
+        text = ex.readout_values["pole of M"]
+        assert isinstance(text, str) and text.startswith("at infinity (direction (")
+        d = np.array([float(v) for v in re.findall(r"-?[\d.]+(?:e-?\d+)?", text)])
+        C = ex.state["C"]
+        Q = np.array([d[1], -d[0], 0.0])
+        assert abs(Q @ C @ Q) < 1e-3 * np.abs(C).max()                   # on the conic, at infinity
+        assert ex.state["poleM"][2] == 0.0                                # an ordinary ideal value
+        assert ex.readout_values["centre"] == text
+        assert "m" not in ex.readout_strings["pole of M"].split(")")[-1]  # no unit after words
+
+
+def test_a_far_but_finite_pole_stays_finite():
+    """A line one slider step from the centre of a circle has its pole far away, but finite."""
+    ex = ProjectiveExplorer(display="agg", conic="circle", a=1.5,
+                            **{"line angle (deg)": 90.0, "line offset": 0.05})
+    # the line x = -0.05: its pole w.r.t. x² + y² = r² is (-r²/0.05, 0) (5.37)
+    assert ex.readout_values["pole of M"] == pytest.approx((-1.5 ** 2 / 0.05, 0.0))
+
+
+def test_sliders_and_rows_have_units():
+    ex = ProjectiveExplorer(display="agg")
+    for name in ("P x", "P y", "a", "b", "line offset"):
+        assert ex.controls[name].description.endswith("(m)"), name
+    for k, v in ex.readout_values.items():
+        if isinstance(v, (float, tuple)):
+            assert ex.units.get(k, "") not in ("", "—"), k
+    for k in ex.readout_values:
+        assert k in ex.explain(), k

@@ -40,8 +40,9 @@ from planargeo.geometry.conics import (centre, classify, conic_circle, conic_ell
                       tangents_from_point)
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
 from planargeo.errors import DegenerateGeometryError, InputError
-from planargeo.geometry.projective import from_xy
+from planargeo.geometry.projective import from_xy, is_at_infinity, is_ideal
 from planargeo.widgets.base import Explorer, Handle, Step
+from planargeo.widgets._points import point_value
 
 __all__ = ["ProjectiveExplorer", "CONICS", "make_conic"]
 
@@ -96,7 +97,7 @@ def _angle_offset(M) -> tuple[float, float]:
     """``(angle in degrees, offset)`` of the finite line ``M`` (inverse of :func:`_line`)."""
     fx, fy, tz = (float(v) for v in M)
     F = math.hypot(fx, fy)
-    if F == 0.0:
+    if is_at_infinity(np.array([fx, fy, tz])):
         raise DegenerateGeometryError("the line is the line at infinity: no angle and offset")
     e = np.array([fx, fy]) / F
     # a point (x, y) of the line: tz + y fx - x fy = 0; offset = -e_y x + e_x y = tz/F ... sign:
@@ -105,10 +106,49 @@ def _angle_offset(M) -> tuple[float, float]:
 
 
 def _xy(p):
-    p = np.asarray(p, float)
-    if p[2] == 0:
-        return "at infinity"
-    return (float(-p[1] / p[2]), float(p[0] / p[2]))
+    """Readout value of a homogeneous point: ``(x, y)`` numbers, or the words "at infinity (direction …)".
+
+    Ideal-ness is decided by the package's exact test
+    (:func:`~planargeo.geometry.projective.is_ideal`); a computed point that is ideal
+    within its rounding was made exactly ideal where it was computed (:func:`_settle`).
+    """
+    return point_value(p)
+
+
+#: a computed homogeneous result counts as ideal when its weight is within this many rounding
+#: units (times the conic's condition number) of zero: see :func:`_settle`
+ROUNDING_UNITS = 64.0
+
+
+def _settle(x, C, operand, kind: str) -> np.ndarray:
+    """``x`` (a pole ``C⁻¹ M`` or a polar ``C P`` computed in floating point), exactly ideal when it is so within rounding.
+
+    A pole is ideal when its weight ``w`` is 0, a polar is the line at infinity
+    when its force ``(fx, fy)`` is 0 (5.37, 5.36).  Computed in floating point,
+    an exactly ideal result comes out with a weight of rounding size instead: the
+    pole of the line at infinity for a parabola (whose centre is at infinity) has
+    ``w ≈ 1e-17`` and would read as a point 10¹⁶ m away.  The decision is made on
+    the computed value against the error the computation can carry, not on an
+    input: ``solve`` is backward stable, so the computed pole is the exact pole of
+    a conic within ``ε‖C‖`` of ``C``, and its weight is uncertain by about
+    ``ε cond(C) ‖x‖`` (for ``C P``: ``ε ‖C‖ ‖P‖``).  A weight within
+    :data:`ROUNDING_UNITS` of that uncertainty cannot be told from 0 by any
+    computation in double precision, so it *is* 0 and is set exactly (the result
+    is then an ordinary ideal element, tested with ``is_ideal`` /
+    ``is_at_infinity``).  A genuinely far pole (a line one slider step from the
+    centre) has a weight 10¹⁰ times larger than this and stays finite.
+    """
+    x = np.array(x, dtype=float)
+    eps = np.finfo(float).eps
+    if kind == "pole":
+        err = ROUNDING_UNITS * eps * float(np.linalg.cond(C)) * float(np.linalg.norm(x))
+        if x[2] != 0 and abs(x[2]) <= err:
+            x[2] = 0.0
+    else:
+        err = ROUNDING_UNITS * eps * float(np.linalg.norm(C, 2)) * float(np.linalg.norm(operand))
+        if np.any(x[:2]) and float(np.hypot(x[0], x[1])) <= err:
+            x[0] = x[1] = 0.0
+    return x
 
 
 class ProjectiveExplorer(Explorer):
@@ -121,8 +161,8 @@ class ProjectiveExplorer(Explorer):
     display_controls = ("construction", "line and its pole")
     scale = 4.0
     units = {"P x": "m", "P y": "m", "P": "m", "polar of P: distance to origin": "m",
-             "pole of M": "m", "centre": "m", "conic": "—", "P is": "—", "P·M": "—",
-             "pole(M)·polar(P)": "—"}
+             "pole of M": "m", "centre": "m", "conic": "—", "P is": "—", "P·M": "m",
+             "pole(M)·polar(P)": "m"}
 
     def make_controls(self):
         """The controls (see the module docstring).
@@ -133,13 +173,13 @@ class ProjectiveExplorer(Explorer):
             ``{name: widget}``.
         """
         return {
-            "P x": Step(-4, 4, 0.05, 2.0, "P x").make("P x"),
-            "P y": Step(-4, 4, 0.05, 1.5, "P y").make("P y"),
+            "P x": Step(-4, 4, 0.05, 2.0, "P x (m)").make("P x"),
+            "P y": Step(-4, 4, 0.05, 1.5, "P y (m)").make("P y"),
             "line angle (deg)": Step(-180, 180, 1, 100, "line angle (deg)").make("angle"),
-            "line offset": Step(-4, 4, 0.05, 0.5, "line offset").make("offset"),
+            "line offset": Step(-4, 4, 0.05, 0.5, "line offset (m)").make("offset"),
             "conic": W.Dropdown(options=CONICS, value="ellipse", description="conic"),
-            "a": Step(0.2, 3, 0.05, 1.5, "a").make("a"),
-            "b": Step(0.2, 3, 0.05, 1.0, "b").make("b"),
+            "a": Step(0.2, 3, 0.05, 1.5, "semi-axis a (m)").make("a"),
+            "b": Step(0.2, 3, 0.05, 1.0, "semi-axis b (m)").make("b"),
             "tilt (deg)": Step(-90, 90, 1, 20, "tilt (deg)").make("tilt"),
             "P at infinity": W.Checkbox(value=False, indent=False,
                                         description="P at infinity (direction P x, P y)"),
@@ -173,6 +213,60 @@ class ProjectiveExplorer(Explorer):
                                                    color="#7F7F7F")) for _ in range(6)]
         for k, a in enumerate(self.tan_art):
             a.set_label("_tangent" if k else "tangents (5.2.2)")
+
+    def explain(self):
+        """What every symbol on screen means, with its thesis equation.
+
+        Returns
+        -------
+        dict
+            ``{symbol or readout name: one-line meaning}``.
+        """
+        return {
+            "C": "the conic: the symmetric 3×3 matrix C of a curve QᵀCQ = 0 (5.35, 5.38)",
+            "conic": "the kind of conic C: real (a curve) or imaginary (an inertia, no real points) (5.35)",
+            "P": "the movable point P in homogeneous coordinates [y, −x, 1] (5.49)",
+            "P x": "x of P, or of its direction when P is at infinity (5.49)",
+            "P y": "y of P, or of its direction when P is at infinity (5.49)",
+            "P is": "where P lies: outside, on or inside the conic, which fixes the construction (5.2.2)",
+            "polar of P": "the line L = C P that the conic maps P to (5.36)",
+            "polar of P: distance to origin": "distance |r| of the polar C P from the origin, "
+                                              "line [e, r] with |e| = 1 (5.55)",
+            "M": "the movable line M = [e, r]: direction e at signed distance r (5.55)",
+            "pole of M": "the point C⁻¹ M that the conic maps M to (5.37)",
+            "tangents (5.2.2)": "tangents to the conic that build the polar by hand (5.2.2, Fig 5.2–5.3)",
+            "P·M": "the linear form t = PᵀM: the signed distance of P from M (5.40)",
+            "pole(M)·polar(P)": "the same number from the images, t = (C⁻¹M)ᵀ(C P) (5.41)",
+            "centre": "the centre C⁻¹ [0, 0, 1]: the pole of the line at infinity (5.37)",
+            "a": "the semi-axis a (circle and inertia: the radius; parabola: 4 × focal distance)",
+            "b": "the second semi-axis b of the ellipse or hyperbola",
+        }
+
+    def disabled(self, values):
+        """Controls that change nothing in the state ``values`` (with the reason).
+
+        Parameters
+        ----------
+        values : dict
+            Control values.
+
+        Returns
+        -------
+        dict
+            ``{control: reason}``.
+        """
+        out = {}
+        kind = values["conic"]
+        if kind in ("circle", "parabola", "inertia (imaginary circle)"):
+            out["b"] = f"a {kind.split(' ')[0]} has one size: a"
+        if kind in ("circle", "inertia (imaginary circle)"):
+            out["tilt (deg)"] = "a circle looks the same turned"
+        if values["M at infinity"]:
+            out["line angle (deg)"] = out["line offset"] = "M is the line at infinity"
+        if not values["line and its pole"]:
+            for k in ("line angle (deg)", "line offset", "M at infinity"):
+                out.setdefault(k, "the line M is hidden (line and its pole)")
+        return out
 
     # -- handles -------------------------------------------------------------------
     def _M_points(self):
@@ -238,7 +332,7 @@ class ProjectiveExplorer(Explorer):
             if st is None or self._M_points() is None:
                 return None
             p = st["poleM"]
-            return None if p[2] == 0 else (float(-p[1] / p[2]), float(p[0] / p[2]))
+            return None if is_ideal(p) else (float(-p[1] / p[2]), float(p[0] / p[2]))
 
         return [
             Handle("P", P_where, lambda x, y: {"P x": x, "P y": y}),
@@ -280,13 +374,13 @@ class ProjectiveExplorer(Explorer):
         M = np.array([0.0, 0.0, 1.0]) if v["M at infinity"] else _line(v["line angle (deg)"],
                                                                        v["line offset"])
         ctype = classify(C)
-        polarP = polar(C, P)
-        poleM = pole(C, M)
+        polarP = _settle(polar(C, P), C, P, "polar")
+        poleM = _settle(pole(C, M), C, M, "pole")
         st = {"C": C, "P": P, "M": M, "type": ctype, "polar": polarP, "poleM": poleM,
               "where": "—", "tangents": None, "contacts": None, "interior": None}
         if ctype.reality == "real":
             res = float(P @ C @ P)
-            if P[2] == 0 and abs(res) <= 1e-12 * float(np.abs(C).max()) * float(P @ P):
+            if is_ideal(P) and abs(res) <= 1e-12 * float(np.abs(C).max()) * float(P @ P):
                 # an ideal point on the conic (asymptote / parabola axis direction)
                 st["where"] = "on the conic (at infinity)"
                 return st
@@ -294,9 +388,9 @@ class ProjectiveExplorer(Explorer):
             if np.all(np.isfinite(T)):
                 st["tangents"], st["contacts"] = T, X
                 st["where"] = "on the conic" if abs(res) <= 1e-9 * np.abs(C).max() else "outside"
-                if P[2] == 0:
+                if is_ideal(P):
                     st["where"] += " (at infinity)"
-            elif P[2] == 0:
+            elif is_ideal(P):
                 st["where"] = "inside (at infinity)"
             else:
                 st["where"] = "inside"
@@ -358,13 +452,14 @@ class ProjectiveExplorer(Explorer):
             "P": _xy(P),
             "conic": str(st["type"]),
             "P is": st["where"],
-            "polar of P: distance to origin": "line at infinity" if F == 0 else abs(pol[2]) / F,
+            "polar of P: distance to origin": ("line at infinity" if is_at_infinity(pol)
+                                               else abs(pol[2]) / F),
             "pole of M": _xy(pm),
             "P·M": float(P @ M),
             "pole(M)·polar(P)": float(pm @ pol),
         }
-        if st["type"].kind == "parabola":
-            out["centre"] = "at infinity"
+        if st["type"].kind == "parabola":   # its centre is the ideal point of its axis
+            out["centre"] = _xy(_settle(pole(st["C"], [0.0, 0.0, 1.0]), st["C"], [0.0, 0.0, 1.0], "pole"))
         else:
             out["centre"] = _xy(centre(st["C"]))
         return out
