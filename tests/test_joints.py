@@ -28,7 +28,7 @@ def _dir(lam):
 # --------------------------------------------------------------------------- thesis values
 @pytest.mark.parametrize("lam", [0.0, 0.3, 2.0, -1.2])
 def test_prismatic_matches_thesis_5_62_5_63(lam):
-    j = prismatic(_dir(lam))
+    j = prismatic(direction=_dir(lam))
     c, s = np.cos(lam), np.sin(lam)
     np.testing.assert_allclose(j.s, [[c], [s], [0.0]], atol=1e-15)                   # (5.62), (4.69)
     np.testing.assert_allclose(j.R, [[-s, 0.0], [c, 0.0], [0.0, 1.0]], atol=1e-15)  # (5.63)
@@ -62,7 +62,7 @@ def test_twin_prismatic_matches_thesis_4_79():
 def test_twin_prismatic_rotated_and_placed(x, y, lam):
     """Frame x axis at angle λ: s = [(c, s, 0), (-s, c, 0)] (4.79 turned by λ); R is the couple wherever it is."""
     c, s = np.cos(lam), np.sin(lam)
-    j = twin_prismatic(_dir(lam), (x, y))
+    j = twin_prismatic(point=(x, y), direction=_dir(lam))
     np.testing.assert_allclose(j.s, [[c, -s], [s, c], [0.0, 0.0]], atol=1e-15)
     np.testing.assert_array_equal(j.R, [[0.0], [0.0], [1.0]])
     np.testing.assert_allclose(j.s.T @ j.R, 0.0, atol=0.0)                     # exact: translations are ideal
@@ -98,8 +98,8 @@ def test_twin_prismatic_subspace_identities():
 
 
 def test_dof_and_shapes():
-    for j, k in [(revolute((1, 2)), 1), (prismatic((1, 1), (3, 0)), 1),
-                 (revolute_prismatic((1, 2), (0, 1)), 2), (twin_prismatic((0, 1), (1, 2)), 2),
+    for j, k in [(revolute((1, 2)), 1), (prismatic(point=(3, 0), direction=(1, 1)), 1),
+                 (revolute_prismatic((1, 2), (0, 1)), 2), (twin_prismatic(point=(1, 2), direction=(0, 1)), 2),
                  (plane(), 3), (fixed((4, 5)), 0)]:
         assert j.dof == k == DOF[j.kind]
         assert j.s.shape == (3, k) and j.R.shape == (3, 3 - k)
@@ -131,7 +131,7 @@ def test_revolute_seen_from_its_pivot(x, y):
 @given(coord, coord, angle)
 def test_prismatic_and_slot_seen_from_the_joint(x, y, lam):
     e = _dir(lam)
-    for j in (prismatic(e, (x, y)), revolute_prismatic((x, y), e)):
+    for j in (prismatic(point=(x, y), direction=e), revolute_prismatic((x, y), e)):
         force = X_P_inv_T((x, y)) @ j.R[:, 0]                 # at the joint point
         np.testing.assert_allclose(force, [-e[1], e[0], 0.0], atol=1e-12)  # perpendicular force through it
     j = revolute_prismatic((x, y), e)
@@ -164,7 +164,7 @@ def test_vectorised_helpers_match_objects(rng):
 
 
 def test_direction_is_normalised_and_ignored_when_unused():
-    np.testing.assert_allclose(prismatic((0.0, 5.0)).direction, [0.0, 1.0])
+    np.testing.assert_allclose(prismatic(direction=(0.0, 5.0)).direction, [0.0, 1.0])
     assert revolute((1.0, 1.0)).direction is None
     # a revolute joint does not look at direction at all
     np.testing.assert_array_equal(motion_space("revolute", (1.0, 0.0), (0.0, 0.0)), [[0.0], [-1.0], [1.0]])
@@ -180,16 +180,16 @@ def test_frozen_and_read_only():
 
 
 def test_equality_hash_repr():
-    assert prismatic((2.0, 0.0), (1.0, 1.0)) == prismatic((1.0, 0.0), (1.0, 1.0))
+    assert prismatic(point=(1.0, 1.0), direction=(2.0, 0.0)) == prismatic(point=(1.0, 1.0), direction=(1.0, 0.0))
     assert revolute((1.0, 2.0)) != revolute((1.0, 2.5))
     assert revolute() != fixed()
     assert len({revolute((1, 2)), revolute((1.0, 2.0))}) == 1
     assert repr(revolute((1, 2))) == "JointSpace('revolute', point=(1.0, 2.0))"
-    assert repr(prismatic((0, 2))) == "JointSpace('prismatic', point=(0.0, 0.0), direction=(0.0, 1.0))"
+    assert repr(prismatic(direction=(0, 2))) == "JointSpace('prismatic', point=(0.0, 0.0), direction=(0.0, 1.0))"
 
 
 # --------------------------------------------------------------------------- bad input
-@pytest.mark.parametrize("make", [lambda: prismatic((0.0, 0.0)),
+@pytest.mark.parametrize("make", [lambda: prismatic(direction=(0.0, 0.0)),
                                   lambda: revolute_prismatic((1.0, 1.0), (0.0, 0.0)),
                                   lambda: motion_space("prismatic", (0, 0), [[1, 0], [0, 0]]),
                                   lambda: reaction_space("revolute_prismatic", (0, 0), (0, 0))])
@@ -204,16 +204,16 @@ def test_bad_shapes():
     with pytest.raises(errors.ShapeError, match=r"point must have shape \(2,\), got shape \(2, 2\)"):
         revolute([[1.0, 2.0], [3.0, 4.0]])
     with pytest.raises(errors.ShapeError, match=r"direction must have shape \(\.\.\., 2\)"):
-        prismatic((1.0, 0.0, 0.0))
+        prismatic(direction=(1.0, 0.0, 0.0))
     with pytest.raises(errors.ShapeError, match=r"direction must have shape \(2,\), got shape \(1, 2\)"):
-        prismatic([[1.0, 0.0]])
+        prismatic(direction=[[1.0, 0.0]])
 
 
 def test_non_finite_and_bad_kind():
     with pytest.raises(errors.NonFiniteError, match="point must be finite"):
         revolute((np.nan, 0.0))
     with pytest.raises(errors.NonFiniteError, match="direction must be finite"):
-        prismatic((np.inf, 0.0))
+        prismatic(direction=(np.inf, 0.0))
     with pytest.raises(errors.InputError, match="kind must be one of 'revolute'.*got 'hinge'"):
         JointSpace("hinge")
     with pytest.raises(errors.InputError, match="kind must be one of"):
@@ -277,3 +277,27 @@ def test_R_of_hand_values_and_errors():
         R_of(np.zeros((2, 1)))
     with pytest.raises(errors.DegenerateGeometryError, match="direction must be non-zero"):
         R_of(np.zeros((3, 1)))
+
+
+@pytest.mark.parametrize("make", [prismatic, twin_prismatic])
+def test_old_positional_order_fails_clearly(make):
+    """Issue 24: the point first for every joint; the old ``(direction, point)`` calls raise, never mean another joint."""
+    for args in [((1.0, 1.0),), ((1.0, 0.0), (0.0, 3.0))]:
+        with pytest.raises(errors.InputError, match=rf"{make.__name__} takes point= and direction= by name"):
+            make(*args)
+
+
+def test_every_constructor_takes_the_point_first():
+    """Every joint constructor's first parameter is ``point``, and ``direction`` (where taken) comes after it."""
+    import inspect
+
+    for make in (revolute, prismatic, revolute_prismatic, twin_prismatic, plane, fixed):
+        names = list(inspect.signature(make).parameters)
+        assert names[0] == "point", make.__name__
+        assert names[1:] in ([], ["direction"]), make.__name__
+    # the point is where the slider's normal force acts: the reaction of a slider along +y through (3, 0)
+    # is the force along x through (3, 0), i.e. the line y = 0 seen from the slide's normal (R = [1, 0, ...])
+    j = prismatic(point=(3.0, 0.0), direction=(0.0, 1.0))
+    np.testing.assert_allclose(j.point, [3.0, 0.0])
+    np.testing.assert_allclose(j.direction, [0.0, 1.0])
+    assert j == JointSpace("prismatic", (3.0, 0.0), (0.0, 1.0))

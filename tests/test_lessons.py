@@ -365,7 +365,7 @@ def test_lesson5_prismatic_T_is_the_slide_through_the_centre_of_mass():
     import planargeo as pg
     from planargeo.screws.twists import inertia_matrix
     cx, cy = 0.7, -0.3
-    dec = pg.Decomposition.from_joint(inertia_matrix(3.0, [cx, cy], 0.2), pg.prismatic((1.0, 0.0), (0.0, 0.0)))
+    dec = pg.Decomposition.from_joint(inertia_matrix(3.0, [cx, cy], 0.2), pg.prismatic(direction=(1.0, 0.0)))
     T = dec.T.ravel()
     np.testing.assert_allclose(T / T[0], [1.0, 0.0, -cy], atol=1e-14)
     assert abs(pg.from_xy([cx, cy]) @ T) < 1e-14

@@ -181,7 +181,7 @@ def test_prismatic_at_centre_of_mass():
     m, J, lam = 3.0, 2.0, 0.4
     e = np.array([np.cos(lam), np.sin(lam)])
     I = np.diag([m, m, J])
-    j = prismatic(e)
+    j = prismatic(direction=e)
     np.testing.assert_allclose(T_of(I, j.s)[:, 0], [e[0], e[1], 0.0], atol=1e-15)
     np.testing.assert_allclose(U_of(I, j.R), j.R, atol=1e-15)
 

@@ -124,7 +124,7 @@ def test_positive_semidefinite_check():
 @pytest.mark.parametrize("make", [
     lambda: as_array(np.array([1.0, 2.0 + 1e-9j]), "q"),
     lambda: pg.revolute(np.array([1.0, 1j])),
-    lambda: pg.prismatic(np.array([1.0 + 0j, 0.0])),
+    lambda: pg.prismatic(direction=np.array([1.0 + 0j, 0.0])),
     lambda: Contact("pin", 0, point_a=np.array([1.0 + 2j, 0.0])),
     lambda: pg.Point(np.array([0.0, 0.0, 1.0 + 1j])),
 ])

@@ -52,6 +52,8 @@ first two of ``plane``).
 """
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from planargeo._validate import as_xy, overflow_checked
@@ -301,6 +303,17 @@ class JointSpace:
     (a batch raises :class:`~planargeo.errors.ShapeError`).  For many joints
     at once use :func:`motion_space` / :func:`reaction_space`, which broadcast.
 
+    Parameters
+    ----------
+    kind : str
+        One of :data:`KINDS`.
+    point : array_like, shape (2,), optional
+        The joint's point (m): pivot, point on the slide, joint-frame origin or weld point;
+        default the origin.
+    direction : array_like, shape (2,), optional
+        Slide direction (non-zero; prismatic kinds, twin prismatic, plane), default +x;
+        ignored by the revolute and fixed joints.
+
     Attributes
     ----------
     kind : str
@@ -325,7 +338,7 @@ class JointSpace:
 
     Examples
     --------
-    >>> j = prismatic(direction=(0.0, 1.0), point=(1.0, 0.0))
+    >>> j = prismatic(point=(1.0, 0.0), direction=(0.0, 1.0))
     >>> j
     JointSpace('prismatic', point=(1.0, 0.0), direction=(0.0, 1.0))
     >>> j.s.T @ j.R
@@ -373,7 +386,7 @@ class JointSpace:
 
         Examples
         --------
-        >>> prismatic((0.0, 1.0), point=(3.0, 0.0)).point
+        >>> prismatic(point=(3.0, 0.0), direction=(0.0, 1.0)).point
         array([3., 0.])
         """
         return self._point
@@ -384,7 +397,7 @@ class JointSpace:
 
         Examples
         --------
-        >>> prismatic((3.0, 4.0)).direction
+        >>> prismatic(direction=(3.0, 4.0)).direction
         array([0.6, 0.8])
         >>> revolute().direction is None
         True
@@ -442,6 +455,19 @@ class JointSpace:
         return hash((self._kind, tuple(self._point), d))
 
 
+def _by_name(constructor):
+    """``constructor`` (keyword-only arguments) refusing positional ones with a clear :class:`InputError`."""
+    @functools.wraps(constructor)
+    def named_only(*args, **kwargs):
+        if args:
+            n = len(args)
+            raise InputError(f"{constructor.__name__} takes point= and direction= by name, e.g. "
+                             f"{constructor.__name__}(point=(0, 0), direction=(1, 0)); got {n} positional "
+                             f"argument{'s' if n > 1 else ''}")
+        return constructor(**kwargs)
+    return named_only
+
+
 def revolute(point=(0.0, 0.0)) -> JointSpace:
     """Revolute (pin) joint about ``point`` (thesis 4.64): ``s`` = the point ``[y, -x, 1]``.
 
@@ -466,17 +492,20 @@ def revolute(point=(0.0, 0.0)) -> JointSpace:
     return JointSpace("revolute", point)
 
 
-def prismatic(direction=(1.0, 0.0), point=(0.0, 0.0)) -> JointSpace:
-    """Prismatic (slider) joint along ``direction`` through ``point`` (thesis 4.69, 5.62, 5.63).
+@_by_name
+def prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
+    """Prismatic (slider) joint through ``point`` along ``direction`` (thesis 4.69, 5.62, 5.63).
 
-    One joint: ``direction`` and ``point`` of shape ``(2,)``.
+    One joint: ``point`` and ``direction`` of shape ``(2,)``, given by name (the point first, as
+    for every joint; a positional call raises :class:`~planargeo.errors.InputError`, since the
+    order was once ``(direction, point)``).
 
     Parameters
     ----------
-    direction : array_like, shape (2,), optional
-        Sliding direction (non-zero); default +x.
     point : array_like, shape (2,), optional
         A point of the joint (m); default the origin.
+    direction : array_like, shape (2,), optional
+        Sliding direction (non-zero); default +x.
 
     Returns
     -------
@@ -485,8 +514,12 @@ def prismatic(direction=(1.0, 0.0), point=(0.0, 0.0)) -> JointSpace:
 
     Examples
     --------
-    >>> np.round(prismatic((1.0, 1.0)).s.ravel(), 4)
+    >>> np.round(prismatic(direction=(1.0, 1.0)).s.ravel(), 4)
     array([0.7071, 0.7071, 0.    ])
+    >>> prismatic((1.0, 1.0))
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: prismatic takes point= and direction= by name, e.g. prismatic(point=(0, 0), direction=(1, 0)); got 1 positional argument
     """
     return JointSpace("prismatic", point, direction)
 
@@ -518,7 +551,8 @@ def revolute_prismatic(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     return JointSpace("revolute_prismatic", point, direction)
 
 
-def twin_prismatic(direction=(1.0, 0.0), point=(0.0, 0.0)) -> JointSpace:
+@_by_name
+def twin_prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Two-dof twin prismatic joint, thesis 4.8.4's "plane joint" (4.79): slides along ``direction`` and its normal.
 
     ``s = [e, e⊥]`` (two unit translations, ``e⊥`` the direction turned by
@@ -527,8 +561,7 @@ def twin_prismatic(direction=(1.0, 0.0), point=(0.0, 0.0)) -> JointSpace:
     ``R = [0, 0, 1]``, the line at infinity, reciprocal to every translation
     (the ideal points lie on the line at infinity).  ``point`` (the joint
     frame's origin) does not change ``s`` or ``R``; it is kept for drawing.
-    The argument order follows :func:`prismatic`.  One joint: ``direction``
-    and ``point`` of shape ``(2,)``.
+    Like :func:`prismatic`, it takes ``point`` and ``direction`` (shape ``(2,)``) by name.
 
     In a model it is the joint kind ``"twin_prismatic"`` of :class:`planargeo.mechanics.model.Joint`
     (two dofs, slid by ``(q[0], q[1])`` along ``e`` and ``e⊥``, not rotated; the same
@@ -536,10 +569,10 @@ def twin_prismatic(direction=(1.0, 0.0), point=(0.0, 0.0)) -> JointSpace:
 
     Parameters
     ----------
-    direction : array_like, shape (2,), optional
-        Sliding direction (non-zero); default +x.
     point : array_like, shape (2,), optional
         A point of the joint (m); default the origin.
+    direction : array_like, shape (2,), optional
+        Sliding direction (non-zero); default +x.
 
     Returns
     -------
@@ -557,7 +590,7 @@ def twin_prismatic(direction=(1.0, 0.0), point=(0.0, 0.0)) -> JointSpace:
     array([[0.],
            [0.],
            [1.]])
-    >>> twin_prismatic((0.0, 2.0)).s              # e = y, e⊥ = -x
+    >>> twin_prismatic(direction=(0.0, 2.0)).s    # e = y, e⊥ = -x
     array([[ 0., -1.],
            [ 1.,  0.],
            [ 0.,  0.]])
