@@ -6,16 +6,24 @@ the target with :func:`os.replace` (atomic on POSIX and Windows).  A set of file
 together goes through :func:`atomic_write_many`: all are written to temporary files first and
 only then moved in, so a failure leaves the old set intact.  Files get the usual permissions
 (``0o666`` less the process umask), not the ``0o600`` of :func:`tempfile.mkstemp`.
+
+A command that writes into a folder the user names (``planargeo gallery --out``, ``planargeo bench
+--out``) records what it wrote in a *manifest* in that folder: one line per file, the SHA-256 of
+the bytes written and the file's name (the format of ``sha256sum``).  It later overwrites or
+deletes a file only if the file still holds those bytes (:func:`owned_files`); a file the user
+has changed, or put there under the same name, is the user's.
 """
 from __future__ import annotations
 
+import hashlib
 import os
+import re
 import tempfile
 from pathlib import Path
 
 from planargeo.errors import InputError, OutputError
 
-__all__ = ["atomic_write", "atomic_write_many"]
+__all__ = ["atomic_write", "atomic_write_many", "digest", "read_manifest", "manifest_bytes", "owned_files"]
 
 
 def _umask_mode() -> int:
@@ -125,3 +133,171 @@ def _checked(path, data) -> tuple[Path, bytes]:
     if "\0" in str(path) or not path.name:
         raise InputError(f"path must name a file, got {str(path)!r}")
     return path, bytes(data)
+
+
+# --------------------------------------------------------------------------- manifests
+_LINE = re.compile(r"^([0-9a-f]{64})  (.+)$")
+
+
+def digest(data) -> str:
+    """The SHA-256 of ``data`` (bytes or str, UTF-8) as 64 hexadecimal digits.
+
+    Parameters
+    ----------
+    data : bytes or str
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> digest(b"abc")[:16]
+    'ba7816bf8f01cfea'
+    """
+    if isinstance(data, str):
+        data = data.encode("utf-8")
+    return hashlib.sha256(data).hexdigest()
+
+
+def _file_digest(path: Path) -> str | None:
+    """The SHA-256 of the regular file ``path``; None if there is none (or it cannot be read)."""
+    try:
+        if not path.is_file():
+            return None
+        h = hashlib.sha256()
+        with open(path, "rb") as fh:
+            for block in iter(lambda: fh.read(1 << 20), b""):
+                h.update(block)
+        return h.hexdigest()
+    except OSError:
+        return None
+
+
+def _safe_name(name: str) -> bool:
+    """A relative name inside the folder: no absolute path, no ``..``, no empty part, no NUL."""
+    parts = name.split("/")
+    return bool(name) and "\0" not in name and not name.startswith("/") and all(p not in ("", ".", "..") for p in parts)
+
+
+def read_manifest(path) -> dict[str, str | None] | None:
+    """The entries of the manifest file ``path``: ``{name: sha256}`` (None if there is no such file).
+
+    Lines are ``<sha256>  <name>`` (two spaces, as ``sha256sum`` writes them); a line holding only
+    a name (a manifest written before hashes were kept) gives ``{name: None}``.  Lines starting
+    with ``#`` and names that leave the folder (absolute, ``..``) are ignored.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The manifest file.
+
+    Returns
+    -------
+    dict or None
+
+    Raises
+    ------
+    OutputError
+        The manifest exists but cannot be read.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> m = pathlib.Path(tempfile.mkdtemp()) / "manifest"
+    >>> _ = m.write_bytes(manifest_bytes("# head", {"a.svg": digest(b"a")}) + b"old.svg\\n")
+    >>> sorted(read_manifest(m).items())[1]
+    ('old.svg', None)
+    """
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        return None
+    except (OSError, UnicodeError) as e:
+        raise OutputError(f"cannot read the manifest {path}: {getattr(e, 'strerror', None) or e}") from e
+    entries: dict[str, str | None] = {}
+    for line in text.splitlines():
+        if not line.strip() or line.startswith("#"):
+            continue
+        m = _LINE.match(line)
+        name, h = (m.group(2), m.group(1)) if m else (line, None)
+        if _safe_name(name) and name != path.name:
+            entries[name] = h
+    return entries
+
+
+def manifest_bytes(head: str, entries) -> bytes:
+    """The manifest's content: the comment ``head``, then one ``<sha256>  <name>`` line per file, sorted.
+
+    Parameters
+    ----------
+    head : str
+        A comment (``# ...``) saying which command wrote the files.
+    entries : mapping of str -> str or None
+        ``{name: sha256}`` (see :func:`digest`); None keeps an old entry without a hash (a bare name).
+
+    Returns
+    -------
+    bytes
+
+    Examples
+    --------
+    >>> manifest_bytes("# mine", {"b": "0" * 64}).decode().splitlines()[1][62:]
+    '00  b'
+    """
+    head = head.rstrip("\n") + "\n"
+    return (head + "".join(f"{h}  {n}\n" if h else f"{n}\n"
+                           for n, h in sorted(dict(entries).items()))).encode("utf-8")
+
+
+def owned_files(folder, entries, new=None) -> tuple[dict[str, str], list[str]]:
+    """Which files a manifest lists are still the package's own: ``(own, changed)``.
+
+    A listed file is still the package's if its current SHA-256 equals the recorded one; for an
+    entry without a hash (an old manifest), only if its bytes equal ``new[name]``, what would be
+    written now.  Any other listed file that exists is the user's (``changed``); listed files that
+    no longer exist are dropped.
+
+    Parameters
+    ----------
+    folder : str or os.PathLike
+        The folder the manifest describes.
+    entries : mapping of str -> str or None
+        From :func:`read_manifest`.
+    new : mapping of str -> bytes, optional
+        What is about to be written, by name.
+
+    Returns
+    -------
+    own : dict of str -> str
+        ``{name: sha256}`` of the files that may be overwritten or deleted.
+    changed : list of str
+        Listed files that are now the user's, sorted.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> d = pathlib.Path(tempfile.mkdtemp())
+    >>> _ = (d / "a.svg").write_bytes(b"mine")
+    >>> owned_files(d, {"a.svg": digest(b"what was written")})
+    ({}, ['a.svg'])
+    >>> owned_files(d, {"a.svg": None}, new={"a.svg": b"mine"})[0] == {"a.svg": digest(b"mine")}
+    True
+    """
+    folder = Path(folder)
+    new = dict(new or {})
+    own: dict[str, str] = {}
+    changed: list[str] = []
+    for name, recorded in dict(entries).items():
+        path = folder / name
+        if not (path.exists() or path.is_symlink()):
+            continue
+        now = None if path.is_symlink() else _file_digest(path)
+        if recorded is None and name in new:
+            recorded = digest(new[name])
+        if now is not None and now == recorded:
+            own[name] = now
+        else:
+            changed.append(name)
+    return own, sorted(changed)

@@ -10,6 +10,7 @@ matplotlib.use("Agg")
 import pytest  # noqa: E402
 
 from planargeo.gallery import build as gallery  # noqa: E402
+from planargeo.files import read_manifest  # noqa: E402
 from planargeo.gallery.figures import REGISTRY, load_all  # noqa: E402
 
 SUBSET = ("fig4_3", "fig5_6")
@@ -65,8 +66,14 @@ def test_check_reports_stale_missing_extra(tmp_path, small_registry, capsys):
     assert gallery.main(_args(out=str(out), check=True)) == 1
     err = capsys.readouterr().err
     assert "stale: fig4_3.svg" in err and "missing: fig5_6.svg" in err and "extra: old.svg" in err
-    # regenerating repairs everything but keeps old.svg, which the gallery did not write
-    assert gallery.main(_args(out=str(out))) == 0
+    # fig4_3.svg no longer holds what the gallery wrote: it is the user's, so only --force replaces it
+    from planargeo.errors import OutputError
+
+    with pytest.raises(OutputError, match=r"did not write, or that changed since it wrote them \(fig4_3.svg\)"):
+        gallery.main(_args(out=str(out)))
+    assert (out / "fig4_3.svg").read_bytes() == b"<svg/>"
+    # with --force, regenerating repairs everything but keeps old.svg, which the gallery did not write
+    assert gallery.main(_args(out=str(out), force=True)) == 0
     assert gallery.check(out) == ["extra: old.svg"]
     assert (out / "old.svg").read_text() == "<svg/>"
 
@@ -213,7 +220,7 @@ def test_only_its_own_stale_files_are_deleted(tmp_path, small_registry):
     gallery.generate(out)
     (out / "user.svg").write_text("<svg/>")
     gallery.generate(out, only=["fig4_3"])                # --only keeps the manifest's other entries
-    assert (out / gallery.MANIFEST).read_text().splitlines()[1:] == ["README.md", "fig4_3.svg", "fig5_6.svg"]
+    assert sorted(read_manifest(out / gallery.MANIFEST)) == ["README.md", "fig4_3.svg", "fig5_6.svg"]
     small_registry.pop("fig5_6")                          # the registry drops a figure
     gallery.generate(out)
     assert not (out / "fig5_6.svg").exists()
@@ -256,11 +263,108 @@ def test_full_device_midway_leaves_the_old_gallery_intact(tmp_path):
     assert _cli("--out", str(out), "--only", "fig1_2", "fig4_3").returncode == 0
     sizes = {n: (out / f"{n}.svg").stat().st_size for n in ("fig1_2", "fig4_3")}
     assert sizes["fig1_2"] < 18000 < sizes["fig4_3"]
-    for n in sizes:                                     # mark the old files
+    for n in sizes:                                     # mark the old files (now the user's: --force below)
         (out / f"{n}.svg").write_text(f"<svg>old {n}</svg>")
     before = sorted(p.name for p in out.iterdir())
-    r = _cli("--out", str(out), "--only", "fig1_2", "fig4_3", limit=18000)
+    r = _cli("--out", str(out), "--only", "fig1_2", "fig4_3", "--force", limit=18000)
     _one_line_error(r, "fig4_3.svg")
     for n in sizes:
         assert (out / f"{n}.svg").read_text() == f"<svg>old {n}</svg>"
     assert sorted(p.name for p in out.iterdir()) == before
+
+
+# --------------------------------------------------------------------------- the manifest keeps hashes (issue 23.4)
+def _sha256(path) -> str:
+    import hashlib
+
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def test_manifest_records_the_sha256_of_every_file_written(tmp_path, small_registry):
+    out = tmp_path / "g"
+    gallery.generate(out)
+    lines = [ln for ln in (out / gallery.MANIFEST).read_text().splitlines() if not ln.startswith("#")]
+    names = sorted(f"{n}.svg" for n in SUBSET) + ["README.md"]
+    assert sorted(lines) == sorted(f"{_sha256(out / n)}  {n}" for n in names)   # sha256sum's format
+
+
+def test_a_users_file_under_a_listed_name_is_kept(tmp_path, small_registry, capsys):
+    """The manifest lists fig5_6.svg; the user has since put their own file by that name there. When the
+    registry drops the figure, the next run keeps the user's file, says so in one line and stops listing it."""
+    from planargeo.cli import main
+
+    out = tmp_path / "g"
+    gallery.generate(out)
+    (out / "fig5_6.svg").write_text("<svg>my own figure</svg>")
+    small_registry.pop("fig5_6")
+    assert main(["gallery", "--out", str(out)]) == 0
+    assert (out / "fig5_6.svg").read_text() == "<svg>my own figure</svg>"
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "fig5_6.svg" in err[0] and "yours" in err[0], err
+    assert "fig5_6.svg" not in read_manifest(out / gallery.MANIFEST)
+    assert main(["gallery", "--out", str(out)]) == 0                   # and it stays the user's
+    assert (out / "fig5_6.svg").read_text() == "<svg>my own figure</svg>"
+    # an unchanged file the gallery wrote and no longer renders is still deleted
+    small_registry.pop("fig4_3")
+    assert main(["gallery", "--out", str(out)]) == 0
+    assert not (out / "fig4_3.svg").exists()
+
+
+def test_an_old_manifest_without_hashes_is_migrated_safely(tmp_path, small_registry):
+    """Bare names (no hash): a file counts as the gallery's only if identical to what would be written."""
+    from planargeo.errors import OutputError
+
+    out = tmp_path / "g"
+    fresh = gallery.generate(tmp_path / "fresh")
+    out.mkdir()
+    for n in ("fig4_3.svg", "fig5_6.svg", "README.md"):
+        (out / n).write_bytes(fresh[n])
+    (out / "old_figure.svg").write_text("<svg>the user's, under a name the old gallery listed</svg>")
+    old_manifest = "# files written by `planargeo gallery`; it overwrites or deletes only these\n" \
+                   "README.md\nfig4_3.svg\nfig5_6.svg\nold_figure.svg\n"
+    (out / gallery.MANIFEST).write_text(old_manifest)
+    notes = []
+    gallery.generate(out, say=notes.append)
+    assert (out / "old_figure.svg").read_text().startswith("<svg>the user's")
+    assert len(notes) == 1 and "old_figure.svg" in notes[0]
+    m = read_manifest(out / gallery.MANIFEST)
+    assert m == {n: _sha256(out / n) for n in ("README.md", "fig4_3.svg", "fig5_6.svg")}
+    # an unhashed entry whose bytes differ from the new render is the user's: refused, untouched
+    (out / gallery.MANIFEST).write_text(old_manifest)
+    (out / "fig5_6.svg").write_text("<svg>edited by hand</svg>")
+    with pytest.raises(OutputError, match="fig5_6.svg"):
+        gallery.generate(out)
+    assert (out / "fig5_6.svg").read_text() == "<svg>edited by hand</svg>"
+    # --only keeps the unhashed entries of the figures it does not render
+    gallery.generate(out, only=["fig4_3"])
+    assert read_manifest(out / gallery.MANIFEST)["fig5_6.svg"] is None
+
+
+# --------------------------------------------------------------------------- an unwritable target (issue 23.3)
+def test_unwritable_targets_get_one_line_naming_the_folder(tmp_path):
+    """/proc/nope (mkdir fails), inside /proc (no file can be created): one line naming the folder, exit 1."""
+    for out, words in (("/proc/nope", "cannot create the folder"), ("/proc", "cannot write in the folder")):
+        r = _cli("--out", out, "--only", "fig1_2")
+        _one_line_error(r, f"--out {out}", words)
+        assert "wrote" not in r.stdout
+
+
+def test_read_only_file_system_is_one_line(tmp_path):
+    import sys
+
+    from _readonly_fs import run_readonly
+
+    code = "import sys; from planargeo.cli import main; sys.exit(main(sys.argv[1:]))"
+    ro = tmp_path / "ro"
+    ro.mkdir()
+    for out in (ro / "new", ro):                         # a new folder in it, and the folder itself
+        r = run_readonly(ro, [sys.executable, "-c", code, "gallery", "--out", str(out), "--only", "fig1_2"], empty=True)
+        _one_line_error(r, f"--out {out}", "Read-only file system")
+        assert r.stdout == ""
+    # an existing gallery on a read-only file system: the same, and its files are unchanged
+    g = tmp_path / "g"
+    assert _cli("--out", str(g), "--only", "fig1_2").returncode == 0
+    before = {p.name: p.read_bytes() for p in g.iterdir()}
+    r = run_readonly(g, [sys.executable, "-c", code, "gallery", "--out", str(g), "--only", "fig1_2", "fig4_3"])
+    _one_line_error(r, f"--out {g}", "Read-only file system")
+    assert {p.name: p.read_bytes() for p in g.iterdir()} == before

@@ -7,15 +7,22 @@ Each registered figure (see :mod:`planargeo.gallery.figures`) is rendered to
 into a temporary folder and exits 1 listing stale, missing or extra files.
 
 A run never loses a file it did not write.  ``<out>/.planargeo-gallery`` (the
-manifest) lists the files the gallery wrote there; a run deletes or overwrites
-only those.  It refuses a non-empty folder without a manifest, and a file of the
-same name as one of its figures that the manifest does not list, unless given
-``--force`` (which overwrites such files but still deletes nothing it did not
-write).  All files of a run are written together by
+manifest) lists the files the gallery wrote there, each with the SHA-256 of the
+bytes written; a run deletes or overwrites only those that still hold those
+bytes (:func:`planargeo.files.owned_files`).  A listed file that has changed
+since, or that the user has put there under the same name, is the user's: a run
+leaves it and says so in one line.  A manifest from before hashes were kept
+lists bare names; such a file counts as the gallery's only if it is identical
+to what would be written now.  A run refuses a non-empty folder without a
+manifest, and a user's file of the same name as one of its figures, unless
+given ``--force`` (which overwrites such files but still deletes nothing it did
+not write).  All files of a run are written together by
 :func:`planargeo.files.atomic_write_many` (each staged beside its target, then
 moved in), with the usual permissions, so a failure (a full device, a file-size
-limit) leaves the previous gallery intact.  The folder itself may be created; its
-parent must exist.  Problems raise :class:`~planargeo.errors.OutputError`, which
+limit) leaves the previous gallery intact.  The folder itself may be created
+(before anything is rendered); its parent must exist.  Problems (a missing
+parent, a file in the way, a folder that cannot be created or written, a
+read-only file system) raise :class:`~planargeo.errors.OutputError`, which
 ``planargeo gallery`` prints as one line (exit status 1).
 
 The README also indexes the benchmark charts that ``planargeo bench`` copies
@@ -26,12 +33,13 @@ README against the charts present in the checked folder.
 from __future__ import annotations
 
 import io
+import os
 import sys
 import tempfile
 from pathlib import Path
 
 from planargeo.errors import InputError, OutputError
-from planargeo.files import atomic_write_many
+from planargeo.files import atomic_write_many, digest, manifest_bytes, owned_files, read_manifest
 
 DEFAULT_OUT = Path(__file__).resolve().parents[2] / "gallery"
 
@@ -165,57 +173,82 @@ def readme(specs, benchmarks=()) -> str:
     return "\n".join(lines)
 
 
-#: The manifest: the names of the files the gallery wrote into its folder, one a line.
+#: The manifest: the SHA-256 and name of each file the gallery wrote into its folder, one a line.
 MANIFEST = ".planargeo-gallery"
-_MANIFEST_HEAD = "# files written by `planargeo gallery`; it overwrites or deletes only these\n"
+_MANIFEST_HEAD = ("# files written by `planargeo gallery` (SHA-256, name); it overwrites or deletes only these,\n"
+                  "# and only while they still hold what it wrote")
 
 
-def _manifest(names) -> bytes:
-    return (_MANIFEST_HEAD + "".join(f"{n}\n" for n in sorted(names))).encode()
+def _say(line: str) -> None:
+    print(f"planargeo gallery: {line}", file=sys.stderr)
 
 
-def _owned(out: Path) -> set[str] | None:
-    """The files the manifest of ``out`` lists (None: ``out`` has no manifest)."""
-    try:
-        text = (out / MANIFEST).read_text(encoding="utf-8")
-    except FileNotFoundError:
-        return None
-    except (OSError, UnicodeError) as e:
-        raise OutputError(f"cannot read the gallery manifest {out / MANIFEST}: {e}") from e
-    return {n for n in text.splitlines()
-            if n and not n.startswith("#") and "/" not in n and n not in (".", "..")} - {MANIFEST}
+def _folder(out: Path) -> bool:
+    """Make sure ``out`` is a folder the gallery can write into; return True if this call created it.
 
-
-def _claim(out: Path, names, force: bool) -> set[str]:
-    """Check that writing ``names`` into ``out`` loses no file the gallery did not write.
-
-    Returns the files the gallery wrote there before (from the manifest).
-    Raises :class:`OutputError` for a missing parent, a file in the way, or a
-    folder holding other files (unless ``force``).
+    Raises :class:`OutputError` (one line naming the folder and the problem) for a missing
+    parent, a file in the way, a folder that cannot be created or written into.
     """
     try:
-        if not out.parent.is_dir():
-            raise OutputError(f"--out {out}: the parent folder {out.parent} does not exist")
-        if out.exists() and not out.is_dir():
-            raise OutputError(f"--out {out} is a file, not a folder")
-        if not out.exists():
-            return set()
-        owned = _owned(out)
-        others = {p.name for p in out.iterdir()} - (owned or set()) - {MANIFEST, "benchmarks"}
+        if out.exists() or out.is_symlink():
+            if not out.is_dir():
+                raise OutputError(f"--out {out} is a file, not a folder")
+            created = False
+        else:
+            if not out.parent.is_dir():
+                raise OutputError(f"--out {out}: the parent folder {out.parent} does not exist")
+            try:
+                out.mkdir()
+            except OSError as e:
+                raise OutputError(f"--out {out}: cannot create the folder: {e.strerror or e}") from e
+            created = True
+        try:                                 # root may write anywhere but a read-only file system or /proc
+            fd, probe = tempfile.mkstemp(dir=out, prefix=".planargeo-probe-")
+            os.close(fd)
+            os.unlink(probe)
+        except OSError as e:
+            if created:
+                out.rmdir()
+            raise OutputError(f"--out {out}: cannot write in the folder: {e.strerror or e}") from e
     except OutputError:
         raise
     except OSError as e:                    # a name too long, no permission to look...
         raise OutputError(f"--out {out}: {e.strerror or e}") from e
+    return created
+
+
+def _claim(out: Path, names, force: bool, new=None) -> tuple[dict, dict, list]:
+    """Check that writing ``names`` into ``out`` loses no file the gallery did not write.
+
+    ``new`` (``{name: bytes}``, once rendered) settles the entries of an old manifest without
+    hashes; before that they are left undecided.  Returns ``(own, undecided, changed)``: the
+    files still holding what the gallery wrote (``{name: sha256}``, which it may overwrite or
+    delete), the old entries not yet settled (``{name: None}``), and the listed files that are
+    the user's now.  Raises :class:`OutputError` for a folder holding other files and no
+    manifest, or a user's file named like one to be written (unless ``force``).
+    """
+    try:
+        entries = read_manifest(out / MANIFEST)
+        listed = {n: h for n, h in (entries or {}).items() if "/" not in n}
+        own, changed = owned_files(out, listed, new)
+        undecided = {n: None for n in changed if listed[n] is None and new is None}
+        changed = [n for n in changed if n not in undecided]
+        others = {p.name for p in out.iterdir()} - set(own) - set(undecided) - {MANIFEST, "benchmarks"}
+    except OutputError as e:
+        raise OutputError(f"--out {out}: {e}") from e
+    except OSError as e:                    # no permission to look...
+        raise OutputError(f"--out {out}: {e.strerror or e}") from e
     clash = sorted(others & set(names))
-    if not force and (clash or (owned is None and others)):
-        what = f"files the gallery did not write ({', '.join(clash[:3])}{', ...' if len(clash) > 3 else ''})" \
-            if clash else f"no {MANIFEST} manifest and is not empty"
+    if not force and (clash or (entries is None and others)):
+        what = (f"files the gallery did not write, or that changed since it wrote them "
+                f"({', '.join(clash[:3])}{', ...' if len(clash) > 3 else ''})") if clash else \
+            f"no {MANIFEST} manifest and is not empty"
         raise OutputError(f"--out {out} holds {what}: choose another folder, or pass --force to write "
                           "there anyway (nothing but the gallery's own files is ever deleted)")
-    return owned or set()
+    return own, undecided, changed
 
 
-def generate(out, only=None, *, benchmarks=None, force: bool = False) -> dict[str, bytes]:
+def generate(out, only=None, *, benchmarks=None, force: bool = False, say=_say) -> dict[str, bytes]:
     """Render the gallery into ``out``; return ``{filename: bytes}`` written.
 
     Parameters
@@ -228,6 +261,9 @@ def generate(out, only=None, *, benchmarks=None, force: bool = False) -> dict[st
         The folder whose benchmark charts the README indexes (default ``out/benchmarks``).
     force : bool
         Write into a folder holding files the gallery did not write (module docstring).
+    say : callable, optional
+        Receives the one-line note about files the gallery wrote once but leaves because they
+        have changed since (default: printed on stderr).
 
     Returns
     -------
@@ -252,16 +288,31 @@ def generate(out, only=None, *, benchmarks=None, force: bool = False) -> dict[st
         specs = {k: v for k, v in specs.items() if k in only}
     out = Path(out)
     names = [f"{name}.svg" for name in specs] + ([] if only else ["README.md"])
-    previous = _claim(out, names, force)
-    files = {f"{name}.svg": render_svg(spec) for name, spec in specs.items()}
-    if not only:
-        bench = out / "benchmarks" if benchmarks is None else Path(benchmarks)
-        files["README.md"] = readme(specs, benchmark_charts(bench)).encode()
-    files[MANIFEST] = _manifest(set(files) | (previous if only else set()))
-    atomic_write_many({out / fname: data for fname, data in files.items()})
+    created = _folder(out)
+    try:
+        _claim(out, names, force)                       # refuse early, before the slow rendering
+        files = {f"{name}.svg": render_svg(spec) for name, spec in specs.items()}
+        if not only:
+            bench = out / "benchmarks" if benchmarks is None else Path(benchmarks)
+            files["README.md"] = readme(specs, benchmark_charts(bench)).encode()
+        own, _, changed = _claim(out, names, force, new=files)
+        if only:       # the entries of the figures not rendered now stay as they were (an old one: undecided)
+            _, undecided, _ = _claim(out, names, force)
+            keep = {**{n: h for n, h in own.items() if n not in files}, **undecided}
+        else:
+            keep = {}
+        files[MANIFEST] = manifest_bytes(_MANIFEST_HEAD, {**keep, **{n: digest(d) for n, d in files.items()}})
+        atomic_write_many({out / fname: data for fname, data in files.items()})
+    except BaseException:
+        if created and not any(out.iterdir()):
+            out.rmdir()
+        raise
     if not only:  # a full run also removes the figures it wrote before that are no longer in the registry
-        for fname in previous - set(files):
+        for fname in sorted(set(own) - set(files)):
             (out / fname).unlink(missing_ok=True)
+        left = [n for n in changed if n not in files]
+        if left and say is not None:
+            say(f"left {', '.join(left)} in {out}: no longer what the gallery wrote there, so yours (not deleted)")
     return files
 
 
@@ -282,7 +333,8 @@ def check(out) -> list[str]:
     Returns
     -------
     list of str
-        ``"missing: …"``, ``"stale: …"`` or ``"extra: …"`` lines.
+        ``"missing: …"``, ``"stale: …"`` or ``"extra: …"`` lines.  The manifest, which holds
+        the other files' hashes, is reported stale only when they are all current.
     """
     out = Path(out)
     with tempfile.TemporaryDirectory() as tmp:
@@ -296,6 +348,8 @@ def check(out) -> list[str]:
             problems.append(f"stale: {fname}")
     for fname in sorted(have - set(fresh)):
         problems.append(f"extra: {fname}")
+    if any(not p.endswith(f": {MANIFEST}") for p in problems):     # its hashes follow the other files:
+        problems = [p for p in problems if p != f"stale: {MANIFEST}"]   # stale whenever one of them is
     return problems
 
 
