@@ -1058,7 +1058,20 @@ class Twist(_Screw):
 
     A twist *is* its pole in homogeneous coordinates (thesis 5.51): ``.pole``
     returns that point.  The zero twist (no motion) is a legal value but has
-    no pole.
+    no pole.  Build one from its coordinates, or by name with :meth:`rotation`
+    and :meth:`translation`.
+
+    Parameters
+    ----------
+    array : array_like, shape (..., 3), or Twist
+        The coordinates ``[vx, vy, ω]`` at the origin: the velocity of the point at the
+        origin (m/s) and the angular velocity (rad/s, counter-clockwise positive); leading
+        dimensions are a batch of twists.  Stored as a read-only copy.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError, InputError
+        ``array`` without a last axis of 3, not finite, or not real numbers.
 
     Examples
     --------
@@ -1264,6 +1277,19 @@ class Wrench(_Screw):
     Magnitude choice: ``.magnitude`` is ``F = |f|`` (thesis 4.22) also for a
     pure couple, where it is 0; a couple's strength is its moment ``.moment``
     (``τz``, the same at every point).  ``.distance`` of a couple is ``±inf``.
+    Build one from its coordinates, or by name with :meth:`force` and :meth:`couple`.
+
+    Parameters
+    ----------
+    array : array_like, shape (..., 3), or Wrench
+        The coordinates ``[fx, fy, τz]`` at the origin: the force (N) and its moment about
+        the origin (N m, counter-clockwise positive); leading dimensions are a batch of
+        wrenches.  Stored as a read-only copy.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError, InputError
+        ``array`` without a last axis of 3, not finite, or not real numbers.
 
     Examples
     --------
