@@ -21,7 +21,7 @@ def test_single_pendulum_matches_closed_form(ex):
         ex.controls["angle"].value = deg
         th = math.radians(deg)
         assert ex.message == ""
-        assert ex.readout_values["qdd[1]"] == pytest.approx(-1.5 * G * math.cos(th), rel=1e-9)
+        assert ex.readout_values["q̈₁"] == pytest.approx(-1.5 * G * math.cos(th), rel=1e-9)
         assert ex.readout_values["potential energy (J)"] == pytest.approx(G * 0.5 * math.sin(th), abs=1e-12)
         # the tip of the drawn link is at (cos, sin)
         x, y = ex.links_line.get_data()
@@ -39,7 +39,7 @@ def test_speed_sets_kinetic_energy_and_velocity_pole(ex):
 def test_torque_enters_the_acceleration(ex):
     ex.controls["angle"].value = -90.0       # hanging: gravity gives no torque
     ex.controls["torque"].value = 2.0
-    assert ex.readout_values["qdd[1]"] == pytest.approx(2.0 / (1 / 3), rel=1e-9)
+    assert ex.readout_values["q̈₁"] == pytest.approx(2.0 / (1 / 3), rel=1e-9)
 
 
 def test_links_and_overlays(ex):
@@ -47,7 +47,7 @@ def test_links_and_overlays(ex):
         ex.controls["links"].value = 6
         for k in ("acceleration poles", "bias terms", "T/U split", "articulated inertias"):
             ex.controls[k].value = True
-    assert ex.readout_values["links"] == 6 and "qdd[6]" in ex.readout_values
+    assert ex.readout_values["links"] == 6 and "q̈₆" in ex.readout_values
     assert sum(a.get_visible() for a in ex.A_art) == 6
     assert sum(a.get_visible() for a in ex.f_art) == 6
     # the active + reaction parts add up to the joint force (6.38)
@@ -71,7 +71,7 @@ def test_joint_sets(ex):
     for js in ("prismatic", "alternating", "revolute"):
         ex.set(joints=js, links=5)
         assert ex.message == ""
-        assert len([k for k in ex.readout_values if k.startswith("qdd")]) == 2
+        assert len([k for k in ex.readout_values if k.startswith("q̈")]) == 2
 
 
 def test_error_keeps_last_drawing(ex, monkeypatch):
@@ -90,22 +90,21 @@ def test_error_keeps_last_drawing(ex, monkeypatch):
     monkeypatch.undo()
     ex.controls["angle"].value = 30.0            # and it keeps working
     assert ex.message == ""
-    assert ex.readout_values["qdd[1]"] == pytest.approx(-1.5 * G * math.cos(math.radians(30)))
+    assert ex.readout_values["q̈₁"] == pytest.approx(-1.5 * G * math.cos(math.radians(30)))
 
 
 def test_simulation_conserves_energy_and_animates():
     ex = ChainExplorer(display="agg", links=3, speed=0.5, torque=0.0, fps=20)
     e0 = ex.readout_values["total energy (J)"]
-    ex.simulate(0.5)
+    assert ex.simulate(0.5) == pytest.approx(0.5)
     assert ex.message == ""
-    assert ex.controls["frame"].max == 10
-    ex.controls["frame"].value = 10
+    ex.controls["time (s)"].value = 0.5
     assert ex.readout_values["t (s)"] == pytest.approx(0.5)
     assert ex.readout_values["energy drift (J)"] == pytest.approx(0.0, abs=1e-6 * max(1.0, abs(e0)))
     assert ex.readout_values["total energy (J)"] == pytest.approx(e0, abs=1e-6 * max(1.0, abs(e0)))
-    # changing the initial state discards the trajectory
+    # changing the initial state starts again at t = 0
     ex.controls["speed"].value = 0.0
-    assert ex.controls["frame"].max == 0 and ex.readout_values["t (s)"] == 0.0
+    assert ex.values["time (s)"] == 0.0 and ex.readout_values["t (s)"] == 0.0
 
 
 def test_reset_and_export(tmp_path):
@@ -142,13 +141,13 @@ def test_active_part_hidden_without_torque_shown_with_it():
 
 def test_torque_on_one_joint_only():
     ex = ChainExplorer(display="agg", links=3, speed=0.0, torque=0.0, gravity=False)
-    assert ex.readout_values["qdd[1]"] == pytest.approx(0.0, abs=1e-12)
+    assert ex.readout_values["q̈₁"] == pytest.approx(0.0, abs=1e-12)
     ex.set(torque=2.0, **{"torque on": "last joint"})
     # only the tip joint is driven; at rest without gravity the only external load is the
     # base pin, which carries no moment about the origin (τ1 = 0): Σ (I_i a_i)_z = 0
     w = ex.state["w"]
     assert np.array(w.tau) == pytest.approx([0.0, 0.0, 2.0])
-    assert ex.readout_values["qdd[3]"] > 0
+    assert ex.readout_values["q̈₃"] > 0
     moment = sum((w.I[i] @ w.a[i])[2] for i in range(3))
     assert moment == pytest.approx(0.0, abs=1e-9)
     ex.controls["torque on"].value = "first joint"
@@ -208,7 +207,7 @@ def test_acceleration_split_matches_hand_formulas():
                           "joint speeds": "1.3, -0.6", "joint torques": "2, -1", "T/U split": True})
     assert ex.message == ""
     p, s, a, I, qdd = _hand_two_link(q, qd, tau)
-    assert ex.readout_values["qdd[1]"] == pytest.approx(qdd[0], rel=1e-9)
+    assert ex.readout_values["q̈₁"] == pytest.approx(qdd[0], rel=1e-9)
     # articulated inertias (3.38): the last body is rigid; the first adds the second projected
     A2 = I[1]
     A1 = I[0] + A2 - np.outer(A2 @ s[1], A2 @ s[1]) / (s[1] @ A2 @ s[1])
@@ -269,18 +268,17 @@ def test_overlay_toggles_do_not_recompute_and_draw_the_state(overlay):
     ex.fig.canvas.draw()
 
 
-def test_play_drives_the_frame():
+def test_play_drives_the_time():
     ex = ChainExplorer(display="agg", links=2, speed=1.0, torque=0.0, fps=10)
-    ex.simulate(0.4)
-    assert ex.player.max == ex.controls["frame"].max == 4
     qs = []
-    for k in range(5):                       # what the Play widget does while it runs
-        ex.player.value = k
-        assert ex.controls["frame"].value == k
+    for k in range(5):                       # what Play does while it runs: the time 0.1 s further
+        if k:
+            ex.advance(1)
+        assert ex.values["time (s)"] == pytest.approx(0.1 * k)
         assert ex.readout_values["t (s)"] == pytest.approx(0.1 * k)
         qs.append(ex.links_line.get_xydata().copy())
     assert not np.allclose(qs[0], qs[-1])                      # the links moved
-    ex.controls["frame"].value = 2                           # and the slider moves the player
-    assert ex.player.value == 2
-    ex.controls["speed"].value = 0.0                         # a new initial state: no animation
-    assert ex.player.max == 0 and ex.player.value == 0
+    ex.player.value = 0.2                                      # the slider: the same state as Play's
+    np.testing.assert_allclose(ex.links_line.get_xydata(), qs[2], rtol=0, atol=1e-12)
+    ex.controls["speed"].value = 0.0                         # a new initial state: back to t = 0
+    assert ex.player.value == 0

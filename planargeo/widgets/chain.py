@@ -27,12 +27,14 @@ bold, the rest faded, and the view zooms to them.
 
 By hand: drag the end of link ``i`` to set joint ``i`` (its angle, or its
 slide for a prismatic joint), keeping the others; drag the base to move the
-whole chain.  Play integrates the motion frame by frame with
-:func:`planargeo.simulate.simulate` (the ``frame`` slider replays the frames
-computed so far); the readout shows the energy, the work of the (constant)
-joint forces since the first frame and the energy drift ``E − E₀ − W`` (zero
-but for the integration error; the chain is a tree: it has no constraint to
-drift from).
+whole chain.  The ``time (s)`` slider shows the motion at time ``t`` from the
+state the other controls set; Play moves it on at real time.  The motion is
+integrated once per initial state in chunks of :data:`CHUNK` seconds
+(DOP853, dense output), so the state at ``t`` depends on ``t`` alone, not on
+the frames shown before.  The readout shows the energy, the work of the
+(constant) joint forces since ``t = 0`` and the energy drift ``E − E₀ − W``
+(zero but for the integration error; the chain is a tree: it has no
+constraint to drift from).
 
 Each state is solved once, by the articulated-body algorithm through the
 scene (:func:`planargeo.scenes.chain.chain_workspace`: one kinematics pass);
@@ -50,12 +52,13 @@ from matplotlib.lines import Line2D
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist, clip_line, conic_geometry
 from planargeo.draw.mechanism import LabelPlacer, ScaleBar
 from planargeo.draw.style import COLORS, LABEL_PT
-from planargeo.errors import InputError, SingularConfigurationError
+from planargeo.errors import InputError, SizeLimitError
 from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.mechanics.subspaces import T_of
 from planargeo.scenes.chain import chain_workspace
 from planargeo.simulate.integrate import energy
-from planargeo.widgets.base import Explorer, Handle, Step
+from planargeo.widgets._motion import Motion
+from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["ChainExplorer", "chain_for", "parse_list"]
 
@@ -68,6 +71,17 @@ LIST_Q = "joint values (deg / m)"
 #: controls that set the initial state (a change discards the simulated trajectory)
 INITIAL = ("links", "joints", "angle", "bend", "slide", "speed", "torque", "torque on", "gravity",
            "base x (m)", "base y (m)", LIST_Q, "joint speeds", "joint torques")
+#: the time control
+TIME = "time (s)"
+#: seconds of motion integrated per chunk (the state at t is read from its chunk's interpolant)
+CHUNK = 1.0
+#: longest time range an explorer takes (its ``duration``, s)
+DURATION_MAX = 3600.0
+#: largest magnitude of a typed joint speed (rad/s or m/s) and of a typed joint force (N·m or N)
+SPEED_LIMIT = 100.0
+TORQUE_LIMIT = 1e4
+#: largest magnitude of a typed revolute joint angle (deg)
+ANGLE_LIMIT = 3600.0
 #: slide range of a prismatic joint (m), the slide slider's
 SLIDE = (-0.5, 1.0)
 #: the ground under the base: a line and its hatching (NaN-separated strokes), relative to the base
@@ -84,6 +98,12 @@ FADED = 0.18
 #: mathtext of each overlay symbol (thesis notation)
 _TEX = {"f": "f", "v": "v", "a": "a", "TQ": "TQ", "Rμ": r"R\mu", "sψ": r"s\psi", "Uγ": r"U\gamma",
         "κ": r"\kappa", "p": "p", "A": "A"}
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def sub(i: int) -> str:
+    """``i`` as Unicode subscript digits (``sub(12) == "₁₂"``)."""
+    return str(i).translate(_SUB)
 
 
 def _sym(symbol: str, i: int) -> str:
@@ -189,6 +209,12 @@ def parse_list(text: str, name: str) -> list[float]:
     return out
 
 
+def _check_typed(field: str, i: int, x: float, limit: float, unit: str) -> None:
+    """Refuse a typed per-joint number beyond ``limit`` in magnitude, naming the field, joint and limit."""
+    if not abs(x) <= limit:
+        raise InputError(f"{field}: joint {i + 1} takes at most {limit:g}{unit} in magnitude, got {x:g}")
+
+
 def _num(x: float) -> str:
     """A list entry: short, and exact enough to round-trip a dragged value (10 digits)."""
     return f"{x:.10g}"
@@ -200,17 +226,18 @@ class ChainExplorer(Explorer):
     Parameters
     ----------
     duration : float
-        Seconds of motion Play integrates before it stops (or loops).
+        Range of the ``time (s)`` slider: Play stops (or loops) there; at most
+        :data:`DURATION_MAX` s.
     fps : int
-        Frames per second of Play (at speed 1×, each frame is ``1 / fps`` s of
-        motion) and of :meth:`simulate`.
+        Frames per second of Play (at speed 1×, a frame is ``1 / fps`` s of
+        motion), 1 to 100.
     **kw
         :class:`~planargeo.widgets.base.Explorer` options and initial control values.
 
     Raises
     ------
     InputError
-        An unknown control or a value it does not take.
+        An unknown control or a value it does not take; a duration or fps out of range.
     """
 
     title = "Chain: poles, forces and articulated inertias"
@@ -220,13 +247,13 @@ class ChainExplorer(Explorer):
     grid = False
     display_controls = OVERLAYS
     scale = 1.0
-    units = {"links": "—", "frame": "—", "t (s)": "s", "kinetic energy (J)": "J",
+    units = {"links": "—", "t (s)": "s", "kinetic energy (J)": "J",
              "potential energy (J)": "J", "total energy (J)": "J", "energy drift (J)": "J",
              "work of the joint forces (J)": "J",
              "|base force| (N)": "N"}
 
     def make_controls(self):
-        """The controls: chain, state, load, base, per-joint lists, overlays and the frame.
+        """The controls: chain, state, load, base, per-joint lists, overlays and the time.
 
         Returns
         -------
@@ -252,22 +279,28 @@ class ChainExplorer(Explorer):
         for name in OVERLAYS:
             c[name] = W.Checkbox(value=name in ("velocity poles", "internal forces"), description=name,
                                  indent=False)
-        c["frame"] = Step(0, 0, 1, 0, "frame", integer=True).make("frame")
-        c["frame"].disabled = True
+        c[TIME] = Step(0.0, self.duration, 0.01, 0.0, "time t (s)").make(TIME)
         return c
 
-    def __init__(self, *, duration: float = 10.0, fps: int = 25, **kw):
-        self.duration, self.fps = float(duration), int(fps)
-        self.play_fps = self.fps             # Play at 1×: one frame of 1 / fps s per tick
+    def __init__(self, *, duration: float = 120.0, fps: int = 25, **kw):
+        d = float(duration) if isinstance(duration, (int, float)) and not isinstance(duration, bool) \
+            else math.nan
+        if not 0.0 < d <= DURATION_MAX:
+            raise InputError(f"duration must be a number of seconds above 0 and at most {DURATION_MAX:g}, "
+                             f"got {duration!r}")
+        if isinstance(fps, bool) or not isinstance(fps, int) or not 1 <= fps <= 100:
+            raise InputError(f"fps must be an integer from 1 to 100, got {fps!r}")
+        self.duration, self.fps = d, int(fps)
+        self.play_fps = self.fps             # Play at 1×: a frame of 1 / fps s per tick
         self._model_key = None
         self._model = None
-        self._traj = None  # the shown state's trajectory: dict t, q, qd (lists), e0, tau
+        self._motions: dict = {}             # initial state -> its Motion (kept: Play, the time slider)
         super().__init__(**kw)
 
     @property
     def player(self):
-        """The frame slider (what the former Play widget was linked to; Play is now the base's)."""
-        return self.controls["frame"]
+        """The time slider (what Play moves)."""
+        return self.controls[TIME]
 
     # -- figure ------------------------------------------------------------------
     def setup_axes(self, ax):
@@ -412,18 +445,29 @@ class ChainExplorer(Explorer):
         tau[sel] = float(v["torque"])
         # per-joint values typed as lists override the patterns, joint by joint
         for i, x in enumerate(parse_list(v[LIST_Q], "joint values")[:model.nq]):
-            q[i] = math.radians(x) if model.joints[i].kind == "revolute" else x
+            if model.joints[i].kind == "revolute":
+                _check_typed(LIST_Q, i, x, ANGLE_LIMIT, "°")
+                q[i] = math.radians(x)
+            else:
+                if not SLIDE[0] <= x <= SLIDE[1]:
+                    raise InputError(f"{LIST_Q}: joint {i + 1} (prismatic) slides between {SLIDE[0]:g} and "
+                                     f"{SLIDE[1]:g} m, got {x:g}")
+                q[i] = x
         for i, x in enumerate(parse_list(v["joint speeds"], "joint speeds")[:model.nq]):
+            _check_typed("joint speeds", i, x, SPEED_LIMIT,
+                         " rad/s" if model.joints[i].kind == "revolute" else " m/s")
             qd[i] = x
         for i, x in enumerate(parse_list(v["joint torques"], "joint torques")[:model.nq]):
+            _check_typed("joint torques", i, x, TORQUE_LIMIT,
+                         " N·m" if model.joints[i].kind == "revolute" else " N")
             tau[i] = x
         return model, q, qd, tau
 
     def adjust(self, values, changed):
-        """Controls that follow a change: the frame, and the per-joint list against the sliders.
+        """Controls that follow a change: the time, and the per-joint list against the sliders.
 
-        A new initial state starts at frame 0 (its trajectory is not simulated
-        yet).  While joint values are typed (or dragged) per joint, the
+        A new initial state starts at ``t = 0`` (unless the time is set with
+        it).  While joint values are typed (or dragged) per joint, the
         ``angle`` slider still moves joint 1 (the list's first entry follows it),
         and ``bend`` / ``slide`` return every joint to the common pattern (the
         list is emptied), so that no slider is ever dead.
@@ -441,8 +485,8 @@ class ChainExplorer(Explorer):
             Values of the controls that follow.
         """
         out = {}
-        if changed & set(INITIAL) and values["frame"] != 0:
-            out["frame"] = 0
+        if changed & set(INITIAL) and TIME not in changed and values[TIME] != 0:
+            out[TIME] = 0.0
         text = values[LIST_Q]
         if text.strip() and LIST_Q not in changed:
             if changed & {"bend", "slide"}:
@@ -453,35 +497,61 @@ class ChainExplorer(Explorer):
                 out[LIST_Q] = ", ".join(items)
         return out
 
+    def motion_for(self, model, q0, qd0, tau) -> Motion:
+        """The motion from ``(q0, qd0)`` under the constant joint forces ``tau`` (kept per initial state).
+
+        Parameters
+        ----------
+        model : Model
+        q0, qd0, tau : ndarray
+
+        Returns
+        -------
+        Motion
+            ``y = (q, q̇)`` at any time (:class:`planargeo.widgets._motion.Motion`).
+        """
+        from planargeo.algorithms.aba import forward_dynamics
+
+        n = model.nq
+        key = (self._model_key, tuple(q0), tuple(qd0), tuple(tau))
+
+        def rhs(_t, y):
+            return np.concatenate([y[n:], forward_dynamics(model, y[:n], y[n:], tau)])
+
+        return cached(self._motions, key, lambda: Motion(rhs, np.concatenate([q0, qd0]), CHUNK))
+
     def compute(self, v, changed):
-        """The state of the controls: the chain solved by the ABA, at the frame shown.
+        """The state of the controls: the chain solved by the ABA at the time ``t`` shown.
 
         Parameters
         ----------
         v : dict
             Control values.
         changed : set of str
-            Controls that changed (an initial-state change discards the trajectory).
+            Controls that changed.
 
         Returns
         -------
         dict
-            ``model``, ``w`` (the ABA workspace), ``t``, ``tau``, ``traj``, ``ke``, ``pe``.
+            ``model``, ``w`` (the ABA workspace), ``t``, ``tau``, ``q0``, ``e0``, ``ke``, ``pe``.
 
         Raises
         ------
         InputError
-            A per-joint list that is not a list of numbers.
+            A per-joint list that is not a list of numbers, or a number beyond its limit.
+        SingularConfigurationError
+            The motion could not be integrated up to ``t``.
         """
-        traj = None if changed & set(INITIAL) else self._traj
-        model, q, qd, tau = self.initial_state(v)
-        t = 0.0
-        frame = int(v["frame"])
-        if traj is not None and 0 < frame < len(traj["t"]):
-            t, q, qd = traj["t"][frame], traj["q"][frame], traj["qd"][frame]
+        model, q0, qd0, tau = self.initial_state(v)
+        t = float(v[TIME])
+        q, qd = q0, qd0
+        if t > 0.0:
+            y = self.motion_for(model, q0, qd0, tau).at(t)
+            q, qd = y[:model.nq], y[model.nq:]
         w = chain_workspace(model, q, qd, tau)
-        st = {"model": model, "w": w, "t": t, "tau": tau, "traj": traj}
+        st = {"model": model, "w": w, "t": t, "tau": tau, "q0": q0}
         st["ke"], st["pe"] = (float(e) for e in energy(model, data=w))
+        st["e0"] = float(sum(energy(model, q0, qd0))) if t > 0.0 else st["ke"] + st["pe"]
         return st
 
     @staticmethod
@@ -537,13 +607,89 @@ class ChainExplorer(Explorer):
 
     # -- focus, handles, play ------------------------------------------------------
     def focus_options(self) -> list[str]:
-        """Bodies and joints the focus can pick: ``link1``..., ``joint1``... (all 20).
+        """Links and joints the focus can pick: ``link1``..``linkN``, ``joint1``..``jointN`` of the shown chain.
 
         Returns
         -------
         list of str
         """
-        return [f"link{i}" for i in range(1, NMAX + 1)] + [f"joint{i}" for i in range(1, NMAX + 1)]
+        w = getattr(self, "controls", {}).get("links")
+        n = int(w.value) if w is not None else 4
+        return [f"link{i}" for i in range(1, n + 1)] + [f"joint{i}" for i in range(1, n + 1)]
+
+    def disabled(self, values: dict) -> dict:
+        """Controls that would change nothing in the state ``values`` describe, each with the reason.
+
+        Parameters
+        ----------
+        values : dict
+            Control values.
+
+        Returns
+        -------
+        dict
+            ``{control: reason}``.
+        """
+        n, kinds = int(values["links"]), values["joints"]
+        kind = ["revolute" if kinds == "revolute" or (kinds == "alternating" and i % 2 == 0) else "prismatic"
+                for i in range(n)]
+
+        def typed(name):
+            try:
+                return len(parse_list(values[name], name))
+            except InputError:
+                return 0
+
+        out = {}
+        if "prismatic" not in kind:
+            out["slide"] = "only prismatic joints slide: every joint is revolute (choose prismatic or alternating)"
+        if kind[0] != "revolute":
+            out["angle"] = "the first joint is prismatic: it has no angle (its slide is set by 'slide')"
+        if "revolute" not in kind[1:]:
+            out["bend"] = ("'bend' sets the revolute joints after the first: this chain has none "
+                           "(add links or choose revolute or alternating)")
+        if typed("joint speeds") >= n:
+            out["speed"] = "every joint's speed is typed in 'joint speeds' (empty it to use the slider)"
+        if typed("joint torques") >= n:
+            out["torque"] = "every joint's force is typed in 'joint torques' (empty it to use the slider)"
+            out["torque on"] = out["torque"]
+        elif float(values["torque"]) == 0.0:
+            out["torque on"] = "the torque is 0: there is nothing to put on the joints"
+        elif n == 1:
+            out["torque on"] = "one link: its joint is the first, the last and all joints"
+        return out
+
+    def explain(self) -> dict:
+        """Every symbol and readout name on screen with its one-line meaning and thesis equation.
+
+        Returns
+        -------
+        dict
+            ``{symbol or readout name: meaning}``.
+        """
+        return {
+            "vᵢ": "velocity pole of link i: the point it turns about (twist of link i, eq. 4.5)",
+            "aᵢ": "acceleration pole of link i: the point with no acceleration (eq. 4.6)",
+            "κᵢ": "bias acceleration of link i: its acceleration from the joint speeds alone (eq. 3.33)",
+            "pᵢ": "bias force of link i: the line of its velocity-product force (eq. 3.11)",
+            "fᵢ": "force of joint i on link i, as its line of action: fᵢ = Aᵢ aᵢ + dᵢ (eq. 3.13)",
+            "TQᵢ": "active part of fᵢ, along the axis of percussion of joint i's motion (eq. 6.38, 6.104)",
+            "Rμᵢ": "reaction part of fᵢ: the force the joint takes without doing work (eq. 6.38)",
+            "sψᵢ": "part of aᵢ along joint i's motion space, ψᵢ = Tᵢᵀ aᵢ (eq. 6.44, 6.100)",
+            "Uγᵢ": "reactive part of aᵢ, in the quake space Uᵢ (eq. 6.44, 6.45, 6.101)",
+            "Aᵢ": "articulated inertia of link i with the links beyond it, drawn as a conic (eq. 3.38)",
+            "q̈ᵢ": "acceleration of joint i: angular (rad/s²) or along the slide (m/s²) (eq. 3.41)",
+            "i": "index of a link and of the joint at its inner end (joint i carries link i)",
+            "t": "time since the state the controls set (s)",
+            "links": "number of links in the chain",
+            "t (s)": "time since the state the controls set",
+            "kinetic energy (J)": "½ Σ vᵢᵀ Iᵢ vᵢ over the links (eq. 1.9)",
+            "potential energy (J)": "Σ mᵢ g yᵢ over the links (centres of mass)",
+            "total energy (J)": "E = kinetic + potential energy",
+            "work of the joint forces (J)": "W = τ·(q − q₀): work of the constant joint forces since t = 0",
+            "energy drift (J)": "E − E₀ − W: zero but for the integration error (the chain has no constraint)",
+            "|base force| (N)": "size of the force f₁ the base puts on link 1 (eq. 3.13)",
+        }
 
     def _focus(self, n: int):
         """``("link" | "joint", index)`` of the focus, or None (all; or beyond the chain)."""
@@ -602,7 +748,7 @@ class ChainExplorer(Explorer):
                 parent = th - q[i]
                 new = math.atan2(dy, dx) - parent
                 new = math.atan2(math.sin(new), math.cos(new))        # (-π, π]
-                if i == 0 and not self.values[LIST_Q].strip() and not self.values["frame"]:
+                if i == 0 and not self.values[LIST_Q].strip() and not self.values[TIME]:
                     return {"angle": math.degrees(new)}
                 q[i] = new
             else:
@@ -618,104 +764,93 @@ class ChainExplorer(Explorer):
         return drag
 
     def play_step(self, values: dict, dt: float):
-        """One Play frame: the motion integrated ``dt`` seconds further.
+        """One Play step: the time ``dt`` seconds on (the motion itself is read in :meth:`compute`).
 
-        The trajectory of the shown initial state is kept on the explorer and
-        extended frame by frame with :func:`planargeo.simulate.simulate`
-        (DOP853, ``rtol = 1e-8``) over exactly ``dt`` (so Play's speed control
-        gives slow motion too); frames already computed are replayed (the first
-        stored frame at least ``dt`` later).
+        The state at a time depends on that time alone (module docstring), so
+        any ``dt`` is exact: Play at any speed, the slider and a fresh explorer
+        show the same state at the same ``t``.
 
         Parameters
         ----------
         values : dict
             The control values shown.
         dt : float
-            Seconds of motion per Play frame.
+            Seconds of motion of the step (> 0).
 
         Returns
         -------
         dict or None
-            ``{"frame": k}``, or None once ``duration`` seconds are shown.
-
-        Raises
-        ------
-        SingularConfigurationError
-            The integrator stopped (a singular configuration).
+            ``{"time (s)": t + dt}`` (at most the end of the range), or None at its end.
         """
-        from planargeo.simulate.integrate import simulate
-
-        if self._traj is None:
-            model, q0, qd0, tau = self.initial_state(values)
-            self._traj = {"t": [0.0], "q": [np.array(q0, float)], "qd": [np.array(qd0, float)],
-                          "tau": tau, "model": model, "e0": self.state["ke"] + self.state["pe"]}
-        traj = self._traj
-        times = traj["t"]
-        frame = min(int(values["frame"]), len(times) - 1)
-        if times[frame] >= self.duration - 1e-9:
+        t = float(values[TIME])
+        end = float(self.controls[TIME].max)
+        if t >= end:
             return None
-        goal = min(times[frame] + float(dt), self.duration)
-        for j in range(frame + 1, len(times)):               # a stored frame: replayed
-            if times[j] >= goal - 1e-9:
-                return {"frame": j}
-        while times[-1] < goal - 1e-9:
-            r = simulate(traj["model"], traj["q"][-1], traj["qd"][-1], goal - times[-1],
-                         tau=traj["tau"], progress=False)
-            if r.status != "ok":
-                raise SingularConfigurationError(f"simulation stopped at t = {times[-1]:.3g} s: "
-                                                 f"{r.message}")
-            times.append(goal)
-            traj["q"].append(np.array(r.q[-1]))
-            traj["qd"].append(np.array(r.qd[-1]))
-        fr = self.controls["frame"]
-        if fr.max < len(times) - 1:
-            fr.max = len(times) - 1
-            fr.disabled = False
-        return {"frame": len(times) - 1}
+        return {TIME: min(t + float(dt), end)}
 
-    def simulate(self, duration: float | None = None) -> None:
-        """Integrate the motion from the current state ahead of time (the frames Play and ``frame`` show).
+    def simulate(self, duration: float | None = None, *, allow_long: bool = False) -> float:
+        """Integrate the motion of the shown initial state ahead of time (what Play and the time slider show).
 
         Parameters
         ----------
         duration : float, optional
-            Seconds to integrate (default: the explorer's ``duration``).
+            Seconds of motion from ``t = 0`` (default: the explorer's ``duration``,
+            the time slider's range).  At least one frame (``1 / fps``) and at
+            most the explorer's ``duration`` unless ``allow_long``.
+        allow_long : bool
+            Integrate beyond the explorer's ``duration`` (any finite duration;
+            Ctrl-C stops it and keeps what was computed).
+
+        Returns
+        -------
+        float
+            The time up to which the motion is now computed (s).
+
+        Raises
+        ------
+        InputError
+            A duration that is not a finite number of at least one frame.
+        SizeLimitError
+            A duration beyond the explorer's ``duration`` without ``allow_long``.
         """
+        d = self.duration if duration is None else duration
+        if isinstance(d, bool) or not isinstance(d, (int, float, np.integer, np.floating)) or \
+                not math.isfinite(float(d)) or not float(d) > 0.0:
+            raise InputError(f"duration must be a positive finite number of seconds, got {duration!r}")
+        d = float(d)
+        if d < 1.0 / self.fps:
+            raise InputError(f"duration must be at least one frame (1/fps = {1.0 / self.fps:g} s), "
+                             f"got {duration!r}")
+        if d > self.duration and not allow_long:
+            raise SizeLimitError(f"duration must be at most {self.duration:g} s (the explorer's duration, "
+                                 f"the time slider's range), got {d:g}; pass allow_long=True to integrate "
+                                 f"further (Ctrl-C stops it and keeps what was computed)")
+        model, q0, qd0, tau = self.initial_state(self.shown_values or self.values)
+        motion = self.motion_for(model, q0, qd0, tau)
         try:
-            d = self.duration if duration is None else float(duration)
-            frame = self.values["frame"]
-            old, self.duration = self.duration, max(self.duration, d)
-            try:
-                vals = dict(self.values, frame=0)
-                while True:                                  # frames 1 / fps apart up to d
-                    new = self.play_step(vals, 1.0 / self.fps)
-                    if new is None or self._traj["t"][new["frame"]] >= d - 1e-9:
-                        break
-                    vals["frame"] = new["frame"]
-            finally:
-                self.duration = old
-            self._changed.add("frame")       # show the trajectory's range (the frame is unchanged)
-            self.controls["frame"].value = frame
-            self._update()
-        except Exception as exc:  # noqa: BLE001 - a button callback must never raise
-            self._set_message(f"simulation failed: {exc}")
+            motion.extend(d)
+        except KeyboardInterrupt:
+            self._set_message(f"simulation stopped by Ctrl-C: the motion up to t = {motion.reached:g} s "
+                              f"is kept")
+        except Exception as exc:  # noqa: BLE001 - shown, like any refused update
+            self._set_message(f"simulation stopped at t = {motion.reached:g} s: {self._reason(exc)}")
+        return min(motion.reached, d)
 
     # -- drawing ---------------------------------------------------------------------
     def _view(self, st, focus) -> tuple[float, float, float, float]:
         """The view: the whole chain's reach about the ground origin, or fitted to the focused element.
 
         Centred on the fixed origin, not on the base: a view that followed the base would move
-        under the mouse while the base is dragged (and the drag would run away).  While any
-        handle is dragged the view stays as it is.
+        under the mouse while the base is dragged (and the drag would run away).  The reach is
+        rounded up to half metres, so that it changes in steps, not under every move of a drag.
+        The view depends on the state alone: after a drag it is what a fresh explorer with the
+        same values shows.
         """
-        if getattr(self, "_drag_active", None) is not None:
-            x0, x1 = self.ax.get_xlim()
-            y0, y1 = self.ax.get_ylim()
-            return (x0, x1, y0, y1)
         model, w = st["model"], st["w"]
         chain = np.vstack([np.asarray(w.origin[0], float)[None, :], w.pose[:, :2], self._ends(w)])
         if focus is None:
             reach = max(model.N + 0.4, float(np.max(np.hypot(*chain.T))) + 0.4)
+            reach = math.ceil(2.0 * reach - 1e-9) / 2.0
             return (-reach, reach, -reach, reach)
         kind, i = focus
         pts = [w.pose[i, :2], self._ends(w)[i]]
@@ -825,20 +960,17 @@ class ChainExplorer(Explorer):
         pos = self.ax.get_position()                       # the time: in the margin, lower right
         self.time_text.set_position((pos.x1, pos.y0 - 14.0 / self.fig.bbox.height))
         self._label(st, focus, box)
-        self._show_trajectory(st["traj"])
-        self.time_text.set_text(f"t = {st['t']:.2f} s" if st["traj"] is not None else "")
+        self.time_text.set_text(f"t = {st['t']:.2f} s")
         e = st["ke"] + st["pe"]
-        out = {"links": n, "frame": int(v["frame"]), "t (s)": st["t"],
+        work = float(np.dot(st["tau"], w.q - st["q0"]))     # constant joint forces: work τ·(q − q₀)
+        out = {"links": n, "t (s)": st["t"],
                "kinetic energy (J)": st["ke"], "potential energy (J)": st["pe"],
-               "total energy (J)": e}
-        if st["traj"] is not None:             # the joint forces are constant: work τ·(q - q₀)
-            work = float(np.dot(st["tau"], w.q - st["traj"]["q"][0]))
-            out["work of the joint forces (J)"] = work
-            out["energy drift (J)"] = e - st["traj"]["e0"] - work
-        out["qdd[1]"] = float(w.qdd[0])
-        out[f"qdd[{n}]"] = float(w.qdd[-1])
+               "total energy (J)": e, "work of the joint forces (J)": work,
+               "energy drift (J)": e - st["e0"] - work}
+        out["q̈₁"] = float(w.qdd[0])
+        out[f"q̈{sub(n)}"] = float(w.qdd[-1])
         # a joint's acceleration: angular (revolute) or linear (prismatic)
-        self.units = {**type(self).units, **{f"qdd[{k + 1}]": QDD_UNIT[model.joints[k].kind]
+        self.units = {**type(self).units, **{f"q̈{sub(k + 1)}": QDD_UNIT[model.joints[k].kind]
                                              for k in (0, n - 1)}}
         out["|base force| (N)"] = float(np.hypot(*w.f[0, :2]))
         return out
@@ -925,13 +1057,3 @@ class ChainExplorer(Explorer):
             return None
         xy = (g["affine"] @ [0.7071, 0.7071, 1.0])[:2]
         return xy if inside(xy) else None
-
-    # -- simulation -----------------------------------------------------------------
-    def _show_trajectory(self, traj) -> None:
-        """The frame slider spans the shown state's trajectory (none: frame 0 only)."""
-        self._traj = traj
-        last = 0 if traj is None else len(traj["t"]) - 1
-        fr = self.controls["frame"]
-        if fr.max != last:
-            fr.max = last
-        fr.disabled = traj is None
