@@ -1,8 +1,18 @@
 """ScrewSumExplorer: the drawn sum follows hand-derived constructions (thesis 4.2, 4.4)."""
+import re
+
 import numpy as np
 import pytest
 
 from planargeo.widgets.screw_sum import ScrewSumExplorer
+
+
+def along(text, d):
+    """True when ``text`` reads a point at infinity in the direction ``±d``."""
+    if not text.startswith("at infinity (direction ("):
+        return False
+    got = np.array([float(v) for v in re.findall(r"-?[\d.]+", text)])
+    return abs(got[0] * d[1] - got[1] * d[0]) < 1e-3 and abs(np.hypot(*got) - 1) < 1e-3
 
 
 def xy(p):
@@ -19,7 +29,7 @@ def test_two_rotations_lever_rule(ex):
     ex.set(x1=-1.0, y1=0.5, size1=1.0, x2=2.0, y2=-1.0, size2=3.0)
     # pole of the sum = weighted mean of the poles (velocity zero there)
     P = (1.0 * np.array([-1.0, 0.5]) + 3.0 * np.array([2.0, -1.0])) / 4.0
-    assert ex.readout_values["case"] == "rotations"
+    assert ex.readout_values["case"] == "two rotations (4.12)"
     assert ex.readout_values["β"] == pytest.approx(0.75)
     assert ex.readout_values["pole of sum"] == pytest.approx(tuple(P))
     assert xy(ex.p3.get_point()) == pytest.approx(P)
@@ -29,8 +39,8 @@ def test_two_rotations_lever_rule(ex):
 
 def test_opposite_rotations_give_a_translation(ex):
     ex.set(x1=0.0, y1=0.0, size1=1.0, x2=2.0, y2=0.0, size2=-1.0)
-    assert ex.readout_values["case"] == "opposite_rotations"
-    assert ex.readout_values["pole of sum"] == "at infinity"
+    assert ex.readout_values["case"] == "opposite rotations (4.13)"
+    assert along(ex.readout_values["pole of sum"], (1, 0))    # ⟂ to the velocity (0, 2)
     # velocity of the sum at the origin: rotation about (2, 0) with ω=-1 gives (0, 2)
     assert ex.readout_values["sum"] == pytest.approx((0.0, 2.0, 0.0))
     assert ex.p3.get_point()[2] == 0.0 and ex.p3.get_visible()
@@ -48,27 +58,27 @@ def test_wrenches_concurrent_parallel_couple(ex):
     ex.set(add="wrenches")
     assert ex.values["kind1"] == "force" and ex.values["kind2"] == "force"
     ex.set(x1=-1.0, y1=0.0, size1=1.0, angle1=0.0, x2=2.0, y2=1.0, size2=2.0, angle2=90.0)
-    assert ex.readout_values["case"] == "concurrent"
+    assert ex.readout_values["case"] == "concurrent forces (4.4.1)"
     assert ex.readout_values["meet of lines"] == pytest.approx((2.0, 0.0))
     L3 = ex.l3.get_line()
     assert L3[:2] == pytest.approx([1.0, 2.0])
     assert np.dot([0.0, -2.0, 1.0], L3) == pytest.approx(0.0, abs=1e-12)  # passes through (2, 0)
     # parallel forces, lever rule: 1 N at x=-1 and 3 N at x=3, both along +y -> line x = 2
     ex.set(angle1=90.0, size2=3.0, x2=3.0)
-    assert ex.readout_values["case"] == "parallel"
+    assert ex.readout_values["case"] == "parallel forces (4.43)"
     L3 = ex.l3.get_line()
     assert L3[:2] == pytest.approx([0.0, 4.0])
     assert L3[2] / L3[1] == pytest.approx(2.0)        # tz + y fx - x fy = 0  ->  x = tz / fy
     # equal and opposite: moments x fy about the origin, -1 * 1 + 3 * (-1) = -4
     ex.set(size2=-1.0)
-    assert ex.readout_values["case"] == "couple"
+    assert ex.readout_values["case"] == "equal and opposite parallel forces (4.4.2)"
     assert ex.readout_values["sum"] == pytest.approx((0.0, 0.0, -4.0))
     ex.fig.canvas.draw()
 
 
 def test_force_plus_couple(ex):
     ex.set(add="wrenches", kind2="couple", x1=0.0, y1=0.0, angle1=0.0, size1=2.0, size2=1.0)
-    assert ex.readout_values["case"] == "force_couple"
+    assert ex.readout_values["case"] == "force plus couple (4.46)"
     assert ex.readout_values["ρ"] == pytest.approx(0.5)
 
 
@@ -86,15 +96,15 @@ def test_meet_of_forces_on_one_line_is_not_at_infinity(ex):
     # two forces along the x-axis: their lines coincide, so they meet at every point of it
     ex.set(add="wrenches", kind1="force", kind2="force", x1=0.0, y1=0.0, angle1=0.0, size1=1.0,
            x2=1.5, y2=0.0, angle2=0.0, size2=-1.0)
-    assert ex.readout_values["case"] == "zero"
+    assert ex.readout_values["case"] == "the sum is zero (4.6)"
     assert ex.readout_values["meet of lines"] == "every point of their common line"
     ex.set(size2=-2.0)                                 # unequal: a force on the same line
-    assert ex.readout_values["case"] == "parallel"
+    assert ex.readout_values["case"] == "forces on one line (4.4.1)"
     assert ex.readout_values["meet of lines"] == "every point of their common line"
     assert ex.readout_values["sum"] == pytest.approx((-1.0, 0.0, 0.0), abs=1e-12)
     # distinct parallel lines (y = 0 and y = 1) do meet at infinity
     ex.set(y2=1.0)
-    assert ex.readout_values["meet of lines"] == "at infinity"
+    assert along(ex.readout_values["meet of lines"], (1, 0))
     # crossing lines meet at a finite point: the x-axis and the vertical through x = 1.5
     ex.set(y2=0.0, angle2=90.0, size2=1.0)
     assert ex.readout_values["meet of lines"] == pytest.approx((1.5, 0.0))
@@ -119,13 +129,13 @@ def test_every_state_is_legible(ex, state):
 
 
 def test_units_and_special_case_in_the_readout(ex):
-    assert ex.units["ω1"] == "rad/s" and ex.units["pole of sum"] == "m"
-    assert ex.units["F1"] == "N" and ex.units["ρ"] == "m"
+    assert ex.units["ω₁"] == "rad/s" and ex.units["pole of sum"] == "m"
+    assert ex.units["F₁"] == "N" and ex.units["ρ"] == "m"
     html = ex.readout.value
     assert "rad/s" in html
-    assert ex.readout_values["special case"].startswith("two rotations")
+    assert ex.readout_values["case"] == "two rotations (4.12)"
     ex.set(size2=-1.0)
-    assert ex.readout_values["special case"] == "opposite rotations: the sum is a translation (4.13)"
+    assert ex.readout_values["case"] == "opposite rotations (4.13)"
 
 
 def test_drag_a_pole_moves_the_sum_by_the_lever_rule(ex):
@@ -141,7 +151,7 @@ def test_drag_a_pole_moves_the_sum_by_the_lever_rule(ex):
 def test_drag_a_pole_onto_the_other(ex):
     ex.drag("v2", ex.handle_position("v2"), ex.handle_position("v1"), steps=4)
     assert ex.message == ""
-    assert ex.readout_values["special case"].startswith("coincident poles")
+    assert ex.readout_values["case"] == "coincident poles (4.11)"
 
 
 def test_force_lines_by_point_and_by_direction(ex):
@@ -155,7 +165,7 @@ def test_force_lines_by_point_and_by_direction(ex):
         ex.drag("f2 direction", ex.handle_position("f2 direction"), tip, steps=1)
         assert ex.message == ""
         cases.append(ex.readout_values["case"])
-    assert cases == ["concurrent", "concurrent", "parallel", "concurrent", "concurrent"]
+    assert cases == ["concurrent forces (4.4.1)"] * 2 + ["parallel forces (4.43)"] + ["concurrent forces (4.4.1)"] * 2
     # the meet of y = 0 with the line through (2, 1) along (1, -0.5): (4, 0), by hand
     assert ex.readout_values["meet of lines"] == pytest.approx((4.0, 0.0))
     ex.drag("f1", ex.handle_position("f1"), (0.0, 1.0), steps=2)       # f1 now on y = 1
@@ -180,7 +190,7 @@ def test_sliding_a_rate_through_the_opposite_passes_through_a_translation(ex):
         assert ex.message == ""
         poles.append(ex.readout_values["pole of sum"])
     # P = ω2 Q2 / (1 + ω2) on the x axis: -8, -18, ∞, 22, 12
-    assert poles[2] == "at infinity"
+    assert along(poles[2], (1, 0))
     assert [p[0] for p in poles[:2] + poles[3:]] == pytest.approx([-8.0, -18.0, 22.0, 12.0])
 
 
@@ -190,3 +200,72 @@ def test_round_off_prints_as_zero(ex):
     # cos 90° = 6e-17: the couple's force part is round-off and shows as 0
     html = ex.readout.value
     assert "e-17" not in html and "e-16" not in html
+
+
+# ---------------------------------------------------------------- issue 22: kinds follow the mode
+def test_the_kinds_offered_follow_the_mode(ex):
+    assert tuple(ex.controls["kind1"].options) == ("rotation", "translation")
+    good = dict(ex.readout_values)
+    ex.set(kind1="force")                     # a force is no twist: refused, nothing drawn as one
+    assert "kind1" in ex.message and ex.values["kind1"] == "rotation" and ex.readout_values == good
+    ex.set(add="wrenches")
+    assert tuple(ex.controls["kind2"].options) == ("force", "couple")
+    assert ex.values["kind1"] == ex.values["kind2"] == "force"
+    # a couple of 1.5 N·m added to the force 1 N along +x through (−1.5, 0), whose moment about
+    # the origin is x fy − y fx = 0: the sum is [1, 0, 1.5] (4.46), a force shifted by ρ = τ/F
+    ex.set(kind2="couple", size2=1.5)
+    assert ex.message == ""
+    assert ex.readout_values["sum"] == pytest.approx((1.0, 0.0, 1.5))
+    assert ex.readout_values["ρ"] == pytest.approx(1.5)
+    ex.set(add="twists")                      # back: the couple becomes a translation, and says so
+    assert ex.values["kind2"] == "translation"
+    assert tuple(ex.controls["kind2"].options) == ("rotation", "translation")
+    with pytest.raises(Exception, match="kind1"):
+        ScrewSumExplorer(display="agg", kind1="couple")     # twists mode offers no couple
+
+
+def test_sliders_name_their_unit_and_the_readout_is_short(ex):
+    assert ex.controls["x1"].description == "x₁ (m)"
+    assert ex.controls["size1"].description == "ω₁ (rad/s)"
+    ex.set(kind2="translation")
+    assert ex.controls["size2"].description == "speed u₂ (m/s)"
+    ex.set(add="wrenches", kind2="couple")
+    assert ex.controls["size1"].description == "force F₁ (N)"
+    assert ex.controls["size2"].description == "moment τ₂ (N·m)"
+    for state in STATES:
+        ex.set(**{"add": "twists", **state})
+        for k, text in ex.readout_strings.items():
+            assert len(text) <= 36, (k, text)        # the readout column is never pushed off
+        assert ex.readout_strings["β"] in ("none", "0.6667") or float(ex.readout_strings["β"])
+
+
+def test_every_number_has_a_unit_and_every_row_a_meaning(ex):
+    for state in STATES:
+        ex.set(**{"add": "twists", **state})
+        meanings = ex.explain()
+        for k, v in ex.readout_values.items():
+            assert k in meanings
+            if isinstance(v, (float, tuple)) and k != "β":
+                assert ex.units.get(k) not in (None, "", "—"), k
+        units = ex.units["sum"]
+        assert units == (("m/s", "m/s", "rad/s") if ex.values["add"] == "twists" else ("N", "N", "N·m"))
+
+
+def test_a_fresh_explorer_from_the_values_shows_the_same(ex):
+    ex.set(add="wrenches", kind2="couple", size2=2.0)
+    ex.drag("f1", ex.handle_position("f1"), (0.5, 0.5), steps=2)
+    fresh = ScrewSumExplorer(display="agg", **ex.values)
+    assert fresh.readout_strings == ex.readout_strings
+    ex.reset()
+    assert ex.values == ScrewSumExplorer(display="agg").values and ex.message == ""
+
+
+def test_controls_a_kind_does_not_use_are_disabled_with_a_reason(ex):
+    off = ex.disabled(ex.values)
+    assert "angle1" in off and "direction" in off["angle1"]
+    ex.set(add="wrenches", kind1="couple")
+    off = ex.disabled(ex.values)
+    assert {"x1", "y1", "angle1"} <= set(off) and "x2" not in off
+    before = dict(ex.readout_values)
+    ex.set(x1=1.0, y1=-1.0, angle1=45.0)          # indeed they change nothing
+    assert ex.readout_values == before

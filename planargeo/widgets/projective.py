@@ -263,9 +263,8 @@ class ProjectiveExplorer(Explorer):
             out["tilt (deg)"] = "a circle looks the same turned"
         if values["M at infinity"]:
             out["line angle (deg)"] = out["line offset"] = "M is the line at infinity"
-        if not values["line and its pole"]:
-            for k in ("line angle (deg)", "line offset", "M at infinity"):
-                out.setdefault(k, "the line M is hidden (line and its pole)")
+        if kind == "inertia (imaginary circle)":
+            out["construction"] = "an imaginary conic has no real tangents to construct with"
         return out
 
     # -- handles -------------------------------------------------------------------

@@ -25,11 +25,11 @@ and ``f1 direction``, ``f2 direction`` by the tip of their arrow.
 Examples
 --------
 >>> ex = ScrewSumExplorer(display="agg", add="wrenches")
->>> ex.readout_values["special case"]
-'concurrent forces: the sum passes through their meet (4.4.1)'
+>>> ex.readout_values["case"], ex.controls["kind1"].options     # a wrench is a force or a couple
+('concurrent forces (4.4.1)', ('force', 'couple'))
 >>> _ = ex.drag("f2 direction", ex.handle_position("f2 direction"), (2.5, 0.5))  # turned parallel to f1
->>> ex.readout_values["special case"], ex.readout_values["meet of lines"], ex.message
-('parallel forces: the lines meet at infinity, lever rule (4.43)', 'at infinity', '')
+>>> ex.readout_values["case"], ex.readout_values["meet of lines"], ex.message
+('parallel forces (4.43)', 'at infinity (direction (1, 0))', '')
 """
 from __future__ import annotations
 
@@ -41,29 +41,44 @@ import numpy as np
 from planargeo.draw.artists import LineArtist, PointArtist
 from planargeo.draw.style import sum_style
 from planargeo.errors import InputError
+from planargeo.geometry.projective import is_at_infinity, is_ideal
 from planargeo.screws.special import twists_case, wrenches_case
 from planargeo.screws.twists import Twist, Wrench, add_twists, add_wrenches
+from planargeo.widgets._points import point_value
 from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["ScrewSumExplorer"]
 
 _TWIST_KINDS = ("rotation", "translation")
 _WRENCH_KINDS = ("force", "couple")
+#: the kinds each mode adds: a twist is a rotation or a translation, a wrench a force or a couple
+KINDS = {"twists": _TWIST_KINDS, "wrenches": _WRENCH_KINDS}
+#: a kind's counterpart in the other mode (a finite pole / line, or the ideal one)
+_OTHER = {"rotation": "force", "translation": "couple", "force": "rotation", "couple": "translation"}
+#: the size slider's label per kind (symbol and unit), k = screw 1 or 2
+_SIZE_LABEL = {"rotation": "ω{k} (rad/s)", "translation": "speed u{k} (m/s)",
+               "force": "force F{k} (N)", "couple": "moment τ{k} (N·m)"}
+_SUBSCRIPT = {1: "₁", 2: "₂"}
+#: the sum's components: a twist [vx, vy, ω] (the velocity of the origin's point and the rate),
+#: a wrench [fx, fy, τ] (the force and its moment about the origin)
+SUM_UNITS = {"twists": ("m/s", "m/s", "rad/s"), "wrenches": ("N", "N", "N·m")}
 
 
 def _xy_or_ideal(p):
     if p is None:
-        return "none"
-    if p[2] == 0:
-        return "at infinity"
-    return (float(-p[1] / p[2]), float(p[0] / p[2]))
+        return "none (the sum is zero)"
+    return point_value(p)
+
+
+def _short_case(case) -> str:
+    """The special case in a few words, with its equation: ``"opposite rotations (4.13)"``."""
+    return f"{case.text.split(':')[0].split(' (')[0]} ({case.equation})"
 
 
 def _same_line(a, b, rtol: float = 1e-9) -> bool:
     """Two forces (not couples) on one line: proportional wrenches ``a × b = 0`` (5.21)."""
     a, b = np.asarray(a, float), np.asarray(b, float)
-    Fa, Fb = np.hypot(a[0], a[1]), np.hypot(b[0], b[1])
-    if Fa == 0 or Fb == 0:
+    if bool(is_at_infinity(a)) or bool(is_at_infinity(b)):
         return False
     return bool(np.all(np.abs(np.cross(a, b)) <= rtol * np.linalg.norm(a) * np.linalg.norm(b)))
 
@@ -82,7 +97,8 @@ ARM = 1.0
 class ScrewSumExplorer(Explorer):
     """Add two twists (points) or two wrenches (lines) and watch the construction (thesis 4.2, 4.4).
 
-    Controls: ``add`` (twists or wrenches), and per screw ``k = 1, 2`` its kind,
+    Controls: ``add`` (twists or wrenches), and per screw ``k = 1, 2`` its kind
+    (the menu offers the kinds of the mode: rotation or translation, force or couple),
     point ``(xk, yk)`` [m], size (``ω`` [rad/s], speed [m/s], force [N] or
     moment [N·m]) and direction ``anglek`` [deg].  The readout gives the
     construction's numbers with units and the special case by name.
@@ -103,30 +119,77 @@ class ScrewSumExplorer(Explorer):
     figsize = (5.6, 5.0)
     limits = (-4, 4, -4, 4)
     scale = 3.0
-    units = {"x1": "m", "ω1": "rad/s", "ω2": "rad/s", "ω1+ω2": "rad/s", "pole of sum": "m",
-             "F1": "N", "F2": "N", "|F1+F2|": "N", "meet of lines": "m", "β": "—", "ρ": "m",
-             "case": "—", "special case": "—", "sum": "—"}
+
+    def __init__(self, **kwargs):
+        # the kinds offered follow the mode: the first mode decides the first options
+        mode = kwargs.get("add", "twists")
+        self._first_mode = mode if mode in KINDS else "twists"
+        super().__init__(**kwargs)
+        self.controls["add"].observe(self.guarded(lambda ch: self._offer_kinds(ch["new"])),
+                                     names="value")
+
+    @property
+    def units(self):
+        """Unit of each readout row (the sum's three components each its own)."""
+        return {"ω₁": "rad/s", "ω₂": "rad/s", "ω₃ = ω₁ + ω₂": "rad/s", "pole of sum": "m",
+                "F₁": "N", "F₂": "N", "|F₃| = |F₁ + F₂|": "N", "meet of lines": "m", "β": "—",
+                "ρ": "m", "case": "—",
+                "sum": SUM_UNITS.get(getattr(self, "_mode", None) or self._first_mode)}
 
     def make_controls(self):
-        """The mode ``add`` and, per screw, its kind, point, size and direction.
+        """The mode ``add`` and, per screw, its kind (of that mode), point, size and direction.
 
         Returns
         -------
         dict
         """
-        kinds = W.ToggleButtons(options=("twists", "wrenches"), value="twists", description="add")
+        kinds = W.ToggleButtons(options=("twists", "wrenches"), value=self._first_mode,
+                                description="add")
         c = {"add": kinds}
+        offered = KINDS[self._first_mode]
         for k, (x, y, mag, ang) in ((1, (-1.5, 0.0, 1.0, 0.0)), (2, (1.5, 0.5, 2.0, 90.0))):
-            c[f"kind{k}"] = W.Dropdown(options=_TWIST_KINDS + _WRENCH_KINDS, value="rotation",
-                                       description=f"screw {k}")
-            c[f"x{k}"] = Step(-3, 3, 0.05, x, f"x{k}").make(f"x{k}")
-            c[f"y{k}"] = Step(-3, 3, 0.05, y, f"y{k}").make(f"y{k}")
-            c[f"size{k}"] = Step(-3, 3, 0.05, mag, f"size{k}").make(f"size{k}")
-            c[f"angle{k}"] = Step(-180, 180, 5, ang, f"angle{k} (deg)").make(f"angle{k}")
+            sub = _SUBSCRIPT[k]
+            c[f"kind{k}"] = W.Dropdown(options=offered, value=offered[0], description=f"screw {k}")
+            c[f"x{k}"] = Step(-3, 3, 0.05, x, f"x{sub} (m)").make(f"x{k}")
+            c[f"y{k}"] = Step(-3, 3, 0.05, y, f"y{sub} (m)").make(f"y{k}")
+            c[f"size{k}"] = Step(-3, 3, 0.05, mag, _SIZE_LABEL[offered[0]].format(k=sub)).make(f"size{k}")
+            c[f"angle{k}"] = Step(-180, 180, 5, ang, f"angle{sub} (deg)").make(f"angle{k}")
         return c
 
+    def _offer_kinds(self, mode: str) -> None:
+        """Offer the kinds of ``mode`` in both screws' menus; a kind of the other mode becomes its counterpart."""
+        if mode not in KINDS:
+            return
+        offered = KINDS[mode]
+        with self._quietly():
+            for k in (1, 2):
+                w = self.controls[f"kind{k}"]
+                if tuple(w.options) == offered:
+                    continue
+                value = w.value if w.value in offered else _OTHER.get(w.value, offered[0])
+                w.options = offered
+                w.value = value
+
+    def set(self, **values):
+        """As :meth:`Explorer.set`; a change of ``add`` comes first, so that its kinds can be chosen with it.
+
+        Parameters
+        ----------
+        **values
+            ``name=value`` per control.
+
+        Returns
+        -------
+        ScrewSumExplorer
+        """
+        if "add" in values and len(values) > 1:
+            super().set(add=values.pop("add"))
+            if self.message:
+                return self
+        return super().set(**values)
+
     def adjust(self, values, changed):
-        """Keep the kinds consistent with the mode (twists: rotation/translation...).
+        """Kinds follow the mode: in twists mode a screw is a rotation or a translation, in wrenches a force or a couple.
 
         Parameters
         ----------
@@ -140,12 +203,66 @@ class ScrewSumExplorer(Explorer):
         dict
             Kinds that follow a change of ``add``.
         """
-        if "add" not in changed:
-            return {}
-        mapping = {"twists": {"force": "rotation", "couple": "translation"},
-                   "wrenches": {"rotation": "force", "translation": "couple"}}[values["add"]]
-        return {f"kind{k}": mapping[values[f"kind{k}"]] for k in (1, 2)
-                if values[f"kind{k}"] in mapping}
+        mode = values["add"]
+        self._offer_kinds(mode)
+        return {f"kind{k}": _OTHER[values[f"kind{k}"]] for k in (1, 2)
+                if values[f"kind{k}"] not in KINDS[mode]}
+
+    def disabled(self, values):
+        """Sliders a screw of its kind does not use, with the reason.
+
+        Parameters
+        ----------
+        values : dict
+
+        Returns
+        -------
+        dict
+        """
+        out = {}
+        for k in (1, 2):
+            kind = values[f"kind{k}"]
+            if kind == "rotation":
+                out[f"angle{k}"] = "a rotation has no direction: only its pole and ω"
+            elif kind == "translation":
+                out[f"x{k}"] = out[f"y{k}"] = ("a translation's pole is at infinity: only its "
+                                                "direction and speed count")
+            elif kind == "couple":
+                out[f"x{k}"] = out[f"y{k}"] = out[f"angle{k}"] = (
+                    "a couple is on the line at infinity: only its moment τ counts")
+        return out
+
+    def explain(self):
+        """Every symbol on screen, with its thesis equation.
+
+        Returns
+        -------
+        dict
+        """
+        return {
+            "v₁, v₂": "the two twists added: a rotation about a pole, or a translation (pole at "
+                      "infinity) (4.10)",
+            "v₃ = v₁ + v₂": "their sum, a twist whose pole lies on the line Q₁Q₂ of the poles (4.11)",
+            "f₁, f₂": "the two wrenches added: a force on its line, or a couple (the line at infinity) "
+                      "(4.27, 4.46)",
+            "f₃ = f₁ + f₂": "their sum, on a line through the meet P of the two lines (4.33)",
+            "P": "the meet P = L₁ × L₂ of the two force lines (5.34)",
+            "ω₁": "angular velocity of v₁ (4.10)", "ω₂": "angular velocity of v₂ (4.10)",
+            "ω₃ = ω₁ + ω₂": "angular velocity of the sum (4.11)",
+            "F₁": "the force f₁ (its magnitude, signed along its angle) (4.27)",
+            "F₂": "the force f₂ (its magnitude, signed along its angle) (4.27)",
+            "|F₃| = |F₁ + F₂|": "magnitude of the summed force (4.39)",
+            "β": "lever ratio: the sum's pole (or line) divides Q₁Q₂ at β = ω₂/(ω₁+ω₂) (4.12, 4.43)",
+            "ρ": "shift of a rotation by a translation, ρ = u/ω (4.16), or of a force by a couple, "
+                 "ρ = τ/F (4.46)",
+            "pole of sum": "the pole of v₃: where the sum does not move (4.12)",
+            "meet of lines": "where the two force lines meet: the sum's line passes there (4.4.1)",
+            "case": "the special case reached, by name and equation (10.2.4)",
+            "sum": "the sum's components: a twist [vx, vy, ω] (velocity of the origin's point, rate) "
+                   "or a wrench [fx, fy, τ] (force, moment about the origin) (4.10, 4.27)",
+            "u": "speed of a translation (4.10)", "τ": "moment of a couple (4.46)",
+            "x, y": "the point of a screw: a rotation's pole or a point of a force's line",
+        }
 
     def setup_axes(self, ax):
         """The base's axes, with ticks every 2 m (drawing ticks was half of a redraw).
@@ -213,16 +330,16 @@ class ScrewSumExplorer(Explorer):
         Raises
         ------
         PlanargeoError
-            A zero screw (named), or a sum beyond double precision.
+            A zero screw (named), a kind the mode does not add, or a sum beyond double precision.
         """
         mode = v["add"]
+        for k in (1, 2):
+            if v[f"kind{k}"] not in KINDS[mode]:
+                raise InputError(f"kind{k} must be one of {list(KINDS[mode])} when adding {mode}, "
+                                 f"got {v[f'kind{k}']!r}")
         s1, s2 = self._screw(v, 1), self._screw(v, 2)
         if mode == "twists":
-            if isinstance(s1, Wrench) or isinstance(s2, Wrench):
-                s1, s2 = Twist(s1.array), Twist(s2.array)
             return {"mode": mode, "c": add_twists(s1, s2)}
-        if isinstance(s1, Twist) or isinstance(s2, Twist):
-            s1, s2 = Wrench(s1.array), Wrench(s2.array)
         return {"mode": mode, "c": add_wrenches(s1, s2)}
 
     def render(self, st):
@@ -239,12 +356,18 @@ class ScrewSumExplorer(Explorer):
         """
         c = st["c"]
         tw = st["mode"] == "twists"
+        self._mode = st["mode"]
         for a in (self.q1, self.q2, self.p3, self.join):
             a.set_visible(tw)
         for a in (self.l1, self.l2, self.l3, self.meet):
             a.set_visible(not tw)
         v = self.values
-        out = {"x1": v["x1"]}
+        for k in (1, 2):   # the size slider names what it sets
+            w = self.controls[f"size{k}"]
+            label = _SIZE_LABEL.get(v[f"kind{k}"], "size{k}").format(k=_SUBSCRIPT[k])
+            if w.description != label:
+                w.description = label
+        out = {}
         if tw:
             self.q1.set_point(c.v1.array)
             self.q2.set_point(c.v2.array)
@@ -257,29 +380,29 @@ class ScrewSumExplorer(Explorer):
             else:
                 self.join.set_line(c.line)
             self._place_twist_labels(c)
-            out.update({"case": c.case, "ω1": c.omega1, "ω2": c.omega2, "ω1+ω2": c.omega3,
+            out.update({"ω₁": c.omega1, "ω₂": c.omega2, "ω₃ = ω₁ + ω₂": c.omega3,
                         "pole of sum": _xy_or_ideal(c.P),
-                        "special case": twists_case(c.v1, c.v2).text})
+                        "case": _short_case(twists_case(c.v1, c.v2))})
         else:
             self.l1.set_line(c.f1.array)
             self.l2.set_line(c.f2.array)
             self.l1.set_anchor((v["x1"], v["y1"]))
             self.l2.set_anchor((v["x2"], v["y2"]))
-            meet = _xy_or_ideal(c.P)
+            meet = _meet_label(c)
             self.l3.set_anchor(meet if isinstance(meet, tuple) else
                                (0.5 * (v["x1"] + v["x2"]), 0.5 * (v["y1"] + v["y2"])))
             if c.L3 is None:
                 self.l3.set_visible(False)
             else:
                 self.l3.set_line(c.sum.array)
-            if c.P is None or c.P[2] == 0:
+            if c.P is None or bool(is_ideal(c.P)):
                 self.meet.set_visible(False)
             else:
                 self.meet.set_point(c.P)
-            out.update({"case": c.case, "F1": c.F1, "F2": c.F2, "|F1+F2|": c.F3,
-                        "meet of lines": _meet_label(c),
-                        "special case": wrenches_case(c.f1, c.f2).text})
-        out.update({"β": "—" if c.beta is None else c.beta, "ρ": "—" if c.rho is None else c.rho,
+            out.update({"F₁": c.F1, "F₂": c.F2, "|F₃| = |F₁ + F₂|": c.F3,
+                        "meet of lines": meet, "case": _short_case(wrenches_case(c.f1, c.f2))})
+        out.update({"β": "none" if c.beta is None else c.beta,
+                    "ρ": "none" if c.rho is None else c.rho,
                     "sum": tuple(float(x) for x in c.sum.array)})
         return out
 
