@@ -58,7 +58,7 @@ def test_drag_is_one_update_per_move_and_not_snapped():
     ex = Dot(display="agg")
     n = ex.n_updates
     ex.drag("dot", (0.0, 0.0), (0.737, -0.4213), steps=7)
-    assert ex.n_updates == n + 7 and ex.message == ""
+    assert ex.n_updates == n + 7 + 1 and ex.message == ""      # 7 moves, and the release's redraw
     assert ex.values["x"] == pytest.approx(0.737) and ex.values["y"] == pytest.approx(-0.4213)
     assert ex.readout_values["x"] == pytest.approx(0.737)          # not on the 0.1 grid
     assert ex.readout_strings["x"] == "0.737 m"
@@ -73,9 +73,9 @@ def test_mouse_drag_under_the_canvas_events():
     for k in range(1, 6):
         _event(ex, "motion_notify_event", (0.1 * k + 0.013, -0.05 * k))
         assert ex.n_updates == n + k                                # one update per move
-    _event(ex, "button_release_event", (0.5, -0.25), button=1)
+    _event(ex, "button_release_event", (0.5, -0.25), button=1)    # redraws the shown state
     _event(ex, "motion_notify_event", (1.0, 1.0))                    # released: nothing moves
-    assert ex.n_updates == n + 5
+    assert ex.n_updates == n + 5 + 1
     assert ex.values["x"] == pytest.approx(0.513, abs=0.01)
 
 
@@ -90,7 +90,7 @@ def test_moves_queued_behind_a_slow_step_are_folded_into_the_next():
     _event(ex, "motion_notify_event", (0.613, 0.1))
     assert ex.n_updates == n + 1 and ex.values["x"] == pytest.approx(0.2, abs=0.01)
     _event(ex, "button_release_event", (0.613, 0.1), button=1)  # the last position is applied
-    assert ex.n_updates == n + 2 and ex.values["x"] == pytest.approx(0.613, abs=0.01)
+    assert ex.n_updates == n + 2 + 1 and ex.values["x"] == pytest.approx(0.613, abs=0.01)
 
 
 def test_press_far_from_every_handle_drags_nothing():
@@ -184,19 +184,75 @@ def test_speed_scales_the_time_step():
     assert ex.values["x"] == pytest.approx(2.0 / ex.play_fps)
 
 
+class FakeClock:
+    """A wall clock the test moves by hand."""
+
+    def __init__(self):
+        self.t = 100.0
+
+    def __call__(self):
+        return self.t
+
+
+def _playing(ex):
+    ex.wall_clock = FakeClock()
+    ex.play_control.playing = True
+    return ex.wall_clock
+
+
 def test_play_widget_ticks_and_loops():
     ex = Dot(display="agg", x=0.9)
-    ex.play_control.interval = 60_000                 # frames always faster: no tick dropped
-    ex.play_control.playing = True
-    ex.play_control.value += 1
+    clock = _playing(ex)
+    ex.play_control.value += 1                        # the first tick: one frame (1/play_fps s)
     assert ex.values["x"] == pytest.approx(0.95)
-    ex.play_control.value += 1
-    ex.play_control.value += 1                        # 1.05 > 1: back to the start (loop on)
+    clock.t += 0.02
+    ex.play_control.value += 1                        # 0.97
+    assert ex.values["x"] == pytest.approx(0.97)
+    clock.t += 0.05
+    ex.play_control.value += 1                        # 1.02 > 1: back to the start (loop on)
     assert ex.values["x"] == pytest.approx(0.9) and ex.play_control.playing
     ex.play_loop.value = False
-    for _ in range(3):
+    for _ in range(4):
+        clock.t += 0.05
         ex.play_control.value += 1
     assert not ex.play_control.playing
+
+
+class Counted(Dot):
+    """The dot, counting the calls of play_step and their time steps."""
+
+    def play_step(self, values, dt):
+        self.steps = getattr(self, "steps", []) + [dt]
+        return super().play_step(values, dt)
+
+
+@pytest.mark.parametrize("speed, scale", [(1.0, 1.0), (2.0, 1.0), (0.5, 0.1)])
+def test_play_runs_at_real_time_in_sub_steps(speed, scale):
+    """Simulated time = wall time × speed × time_scale, whatever the ticks; steps ≤ 1/play_fps."""
+    ex = Counted(display="agg", v=0.1)
+    ex.time_scale = scale
+    ex.play_speed.value = speed
+    clock = _playing(ex)
+    ex.play_control.value += 1                        # the first tick: one frame
+    x0 = ex.values["x"]
+    assert x0 == pytest.approx(0.1 * speed * scale / ex.play_fps)
+    ex.steps = []
+    n = ex.n_updates
+    clock.t += 0.37                                   # a slow frame: 0.37 s of wall time
+    ex.play_control.value += 1
+    assert ex.n_updates == n + 1                      # one picture
+    assert ex.values["x"] == pytest.approx(x0 + 0.1 * 0.37 * speed * scale)
+    assert sum(ex.steps) == pytest.approx(0.37 * speed * scale)
+    assert max(ex.steps) <= 1.0 / ex.play_fps + 1e-12
+    assert len(ex.steps) == math.ceil(0.37 * speed * scale * ex.play_fps - 1e-9)
+
+
+def test_the_time_scale_is_shown_beside_the_speed_menu():
+    class Slow(Dot):
+        time_scale = 0.1
+
+    assert Dot(display="agg").play_scale.value == ""
+    assert "0.1× real time" in Slow(display="agg").play_scale.value
 
 
 def test_ticks_queued_behind_a_slow_frame_are_dropped():
@@ -206,7 +262,47 @@ def test_ticks_queued_behind_a_slow_frame_are_dropped():
     ex.play_control.value += 1
     x = ex.values["x"]
     ex.play_control.value += 1                        # arrives at once: a backlog tick, dropped
-    assert ex.values["x"] == x == pytest.approx(1.0 / ex.play_fps)
+    assert ex.values["x"] == x and x == pytest.approx(1.0 / ex.play_fps, rel=0.2)
+
+
+def test_advance_bounds():
+    """Long or meaningless runs are refused by name, with the limit and the opt-in (issue 23)."""
+    ex = Dot(display="agg")
+    for bad in (0, -1, 1.5, math.nan, math.inf, True):
+        with pytest.raises(InputError, match="n_frames must be a positive integer"):
+            ex.advance(bad)
+    with pytest.raises(InputError, match=r"at most 10000 \(pass allow_long=True"):
+        ex.advance(10 ** 6)
+    for bad in (0.0, -1.0, math.nan, math.inf):
+        with pytest.raises(InputError, match="seconds must be a positive finite number"):
+            ex.advance(1, seconds=bad)
+    with pytest.raises(InputError, match=r"at most 3600 s \(pass allow_long=True"):
+        ex.advance(1, seconds=1e300)
+    assert ex.values["x"] == 0.0 and ex.message == ""
+
+
+def test_advance_seconds_is_sub_stepped_and_stop_keeps_what_was_computed():
+    ex = Counted(display="agg", v=0.1)
+    ex.advance(2, seconds=1.0)                        # two pictures, 20 steps of 0.05 s
+    assert ex.values["x"] == pytest.approx(0.1) and len(ex.steps) == 20
+    ex2 = Dot(display="agg", v=1.0)
+    ex2.advance(1, seconds=3.0)                       # stops at x ≤ 1: the last good state is shown
+    assert 0.95 - 1e-9 <= ex2.values["x"] <= 1.0 and ex2.readout_values["x"] == ex2.values["x"]
+
+
+def test_drag_goes_through_the_mouse_path():
+    """drag() presses, moves and releases like the mouse: a view held during a drag is fitted after."""
+    class Follow(Dot):
+        def render(self, st):
+            if self._drag_active is None:                   # held still while dragging
+                self.ax.set_xlim(st["x"] - 1, st["x"] + 1)
+            return super().render(st)
+
+    ex = Follow(display="agg")
+    ex.drag("dot", (0.0, 0.0), (1.2, 0.3), steps=3)
+    fresh = Follow(display="agg", **ex.values)
+    assert ex.ax.get_xlim() == pytest.approx(fresh.ax.get_xlim())
+    assert ex.ax.get_xlim() == pytest.approx((0.2, 2.2))
 
 
 def test_no_play_without_play_step():

@@ -100,6 +100,7 @@ import itertools
 import math
 import numbers
 import os
+import re
 import shutil
 import subprocess
 import tempfile
@@ -119,60 +120,14 @@ from planargeo.draw.artists import place_labels
 from planargeo.draw.style import EXPLORER_DPI, EXPLORER_MIN_WIDTH_PX, EXPLORER_TICK_PT, LABEL_PT, setup_axes
 from planargeo.errors import InputError, OutputError, PlanargeoError
 from planargeo.files import atomic_write
+from planargeo.widgets import play as _play
 from planargeo.widgets.frames import Frames, live_canvas, live_png
+from planargeo.widgets.readout import explain_html, fmt, point_text, value_text
 
-__all__ = ["Explorer", "Handle", "Step", "cached", "check_control", "fmt"]
+__all__ = ["Explorer", "Handle", "Step", "cached", "check_control", "fmt", "point_text", "TEXT_LIMIT"]
 
 _DISPLAYS = ("auto", "ipympl", "image", "agg")
 _export_counter = itertools.count(1)
-
-
-def fmt(x: Any, digits: int = 4, zero: float = 0.0) -> str:
-    """Readable text for a readout value (numbers rounded, ideal values named).
-
-    Parameters
-    ----------
-    x : Any
-        A number, a tuple / array of numbers, a boolean or any object (shown as text).
-    digits : int
-        Significant digits of a number.
-    zero : float
-        Numbers whose magnitude is at most ``zero`` print as ``0`` (round-off).
-
-    Returns
-    -------
-    str
-        HTML-safe text.
-
-    Examples
-    --------
-    >>> fmt(0.123456), fmt(float("inf")), fmt((1.0, -2.5)), fmt(True)
-    ('0.1235', '∞', '(1, -2.5)', 'yes')
-    >>> fmt(-1.2e-16, zero=1e-9), fmt((1.0, 3e-12), zero=1e-9)
-    ('0', '(1, 0)')
-    """
-    if isinstance(x, (bool, np.bool_)):
-        return "yes" if x else "no"
-    if isinstance(x, (int, np.integer)):
-        return str(int(x))
-    if isinstance(x, (float, np.floating)):
-        if not np.isfinite(x):
-            return "∞" if x > 0 else ("−∞" if x < 0 else "—")
-        if x == 0 or abs(x) <= zero:
-            return "0"
-        if abs(x) >= 1e5 or abs(x) < 1e-3:
-            return f"{x:.{digits - 1}e}"
-        return f"{x:.{digits}g}"
-    if isinstance(x, (tuple, list, np.ndarray)):
-        a = np.ravel(np.asarray(x, dtype=object))
-        try:  # components at rounding level relative to the largest are shown as 0
-            f = np.asarray(a, dtype=float)
-            big = np.max(np.abs(f[np.isfinite(f)]), initial=0.0)
-            a = np.where(np.isfinite(f) & (np.abs(f) <= 1e-12 * big), 0.0, f)
-        except (TypeError, ValueError):
-            pass
-        return "(" + ", ".join(fmt(v, digits, zero) for v in a) + ")"
-    return html.escape(str(x))
 
 
 #: entries an explorer's per-parameter cache holds before it is emptied
@@ -289,7 +244,8 @@ def check_control(name: str, widget, value):
 
     A slider takes a finite real number in its range (an integer slider an
     integral one), a list (dropdown, toggle buttons) one of its options, a
-    checkbox ``True`` or ``False``, a text box a string.
+    checkbox ``True`` or ``False``, a text box a string whose numbers are at most
+    :data:`TEXT_LIMIT` in magnitude (finite).
 
     Parameters
     ----------
@@ -322,6 +278,10 @@ def check_control(name: str, widget, value):
     Traceback (most recent call last):
     ...
     planargeo.errors.InputError: joints must be one of ['revolute', 'prismatic'], got None
+    >>> check_control("joint speeds", W.Text(), "1, 1e150")
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: joint speeds: numbers typed here must lie between -1e+06 and 1e+06, got 1e150
     """
     if isinstance(widget, (W.FloatSlider, W.IntSlider)):
         integer = isinstance(widget, W.IntSlider)
@@ -345,9 +305,22 @@ def check_control(name: str, widget, value):
         if not isinstance(value, (bool, np.bool_)):
             raise InputError(f"{name} must be True or False, got {value!r}")
         return bool(value)
-    if isinstance(widget, W.Text) and not isinstance(value, str):
-        raise InputError(f"{name} must be text, got {value!r}")
+    if isinstance(widget, W.Text):
+        if not isinstance(value, str):
+            raise InputError(f"{name} must be text, got {value!r}")
+        for tok in _NUMBER.findall(value):
+            x = float(tok)
+            if not abs(x) <= TEXT_LIMIT:
+                raise InputError(f"{name}: numbers typed here must lie between {-TEXT_LIMIT:g} and "
+                                 f"{TEXT_LIMIT:g}, got {tok}")
     return value
+
+
+#: the largest magnitude of a number typed into an explorer's text field (a larger one is refused
+#: by name before any computation, instead of overflowing inside it)
+TEXT_LIMIT = 1e6
+_NUMBER = re.compile(r"(?<![\w.])[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?(?![\w.])|"
+                     r"(?<![\w])[-+]?(?:inf(?:inity)?|nan)(?![\w])", re.IGNORECASE)
 
 
 @dataclass
@@ -415,6 +388,21 @@ def _same(a, b) -> bool:
         return bool(a == b) or (a != a and b != b)
     except Exception:  # noqa: BLE001 - arrays and other odd values
         return a is b
+
+
+def _value_and_unit(full: str, bare: str) -> tuple[str, str]:
+    """The readout's value and unit columns: a common unit goes in its own column (HTML-safe)."""
+    if full.startswith(bare) and full[len(bare):].startswith(" "):
+        return bare, full[len(bare) + 1:]
+    return full, ""
+
+
+def _numeric_failure(exc: Exception) -> bool:
+    """True for numpy's floating-point errors (overflow, invalid value) raised inside a computation."""
+    if isinstance(exc, (FloatingPointError, OverflowError)):
+        return True
+    text = str(exc)
+    return isinstance(exc, RuntimeWarning) and ("overflow" in text or "invalid value" in text)
 
 
 def _short(text: str) -> str:
@@ -491,6 +479,10 @@ class Explorer:
     play_fps: int = 20
     #: Pixel radius within which a mouse press picks a handle.
     handle_radius_px: float = 12.0
+    #: Simulated seconds per wall-clock second at Play speed "1×" (shown beside the speed menu when not 1).
+    time_scale: float = 1.0
+    #: The wall clock Play reads (seconds; a test may give the explorer its own).
+    wall_clock: Callable[[], float] = staticmethod(time.monotonic)
 
     def __init__(self, *, display: str = "auto", figsize=None, export_dir=None, **values):
         if display not in _DISPLAYS:
@@ -582,13 +574,21 @@ class Explorer:
         self.export_gif_button = W.Button(description="GIF", icon="film",
                                           tooltip="Export an animation as GIF (a download link)",
                                           layout=W.Layout(width="auto"))
+        self.export_mp4_button = W.Button(description="MP4", icon="film",
+                                          tooltip="Export an animation as MP4 (a download link)",
+                                          layout=W.Layout(width="auto"))
         self.export_label = W.HTML(layout=W.Layout(width="310px", height="1.8em", overflow="hidden"))
+        self.explain_box = W.HTML(layout=W.Layout(width=fig_w, max_width="100%"))
+        self.explain_box.add_class("planargeo-explain")
+        self._tooltips = {k: getattr(w, "tooltip", None) for k, w in self.controls.items()}
         self.reset_button.on_click(self.guarded(lambda _b: self.reset()))
         self.export_button.on_click(self.guarded(lambda _b: self._export_clicked("svg")))
         self.export_png_button.on_click(self.guarded(lambda _b: self._export_clicked("png")))
         self.export_gif_button.on_click(self.guarded(lambda _b: self._export_clicked("gif")))
+        self.export_mp4_button.on_click(self.guarded(lambda _b: self._export_clicked("mp4")))
         self.has_play = type(self).play_step is not Explorer.play_step
-        self.play_control = self.play_speed = self.play_loop = None
+        self.play_control = self.play_speed = self.play_loop = self.play_scale = None
+        self._clock: _play.PlayClock | None = None
         if self.has_play:
             self.play_control = W.Play(value=0, min=0, max=10 ** 9, step=1,
                                  interval=int(round(1000 / self.play_fps)), description="play",
@@ -598,6 +598,12 @@ class Explorer:
                                          description="speed", layout=W.Layout(width="150px"))
             self.play_loop = W.Checkbox(value=True, description="loop", indent=False,
                                         layout=W.Layout(width="80px"))
+            scale = float(self.time_scale)
+            self.play_scale = W.HTML(
+                "" if scale == 1.0 else
+                f"<span title='1× plays {scale:g} simulated seconds per second'>"
+                f"1× = {scale:g}× real time</span>")
+            self.play_speed.observe(self.guarded(lambda _c: self._restart_clock()), names="value")
             self.play_control.observe(self.guarded(self._play_tick), names="value")
             self.play_control.observe(self.guarded(self._play_toggled), names="playing")
         for name, w in self.controls.items():
@@ -759,8 +765,39 @@ class Explorer:
         """
         return None
 
+    def disabled(self, values: dict[str, Any]) -> dict[str, str]:
+        """Controls that would change nothing in the state of ``values``, with the reason (default: none).
+
+        After every shown update exactly these controls are disabled, each with
+        its reason as tooltip; the others are enabled again.
+
+        Parameters
+        ----------
+        values : dict
+            The shown control values.
+
+        Returns
+        -------
+        dict
+            ``{control name: reason}``, e.g. ``{"slide": "only prismatic joints slide"}``.
+        """
+        return {}
+
+    def explain(self) -> dict[str, str]:
+        """The meaning of every symbol on screen (readout names, labels), shown in "what is shown".
+
+        Returns
+        -------
+        dict
+            ``{symbol or readout name: one-line meaning with its thesis equation}`` (default: none).
+        """
+        return {}
+
     def focus_options(self) -> list[str]:
         """Names of bodies or joints to focus on (default: none, no "focus" control).
+
+        Read again after every shown update: the options may follow the values
+        (e.g. the number of bodies); a focus that no longer exists falls back to "all".
 
         Returns
         -------
@@ -929,9 +966,13 @@ class Explorer:
             raise InputError(f"start and end must be finite, got {start!r}, {end!r}")
         if h.where() is None:
             raise InputError(f"handle {name!r} cannot be dragged in this state")
-        for k in range(1, steps + 1):
-            p = a + (b - a) * (k / steps)
-            self._drag_to(h, float(p[0]), float(p[1]))
+        self._drag_active, self._drag_pending = h, None          # the mouse's press on the handle
+        try:
+            for k in range(1, steps + 1):                        # its moves
+                p = a + (b - a) * (k / steps)
+                self._drag_to(h, float(p[0]), float(p[1]))
+        finally:
+            self._release()                                      # and its release
         return self
 
     def _drag_to(self, h: Handle, x: float, y: float) -> bool:
@@ -951,17 +992,26 @@ class Explorer:
         self.set(**vals)
         return self.n_updates > before
 
-    def advance(self, n_frames: int = 1) -> "Explorer":
+    def advance(self, n_frames: int = 1, *, seconds: float | None = None,
+                allow_long: bool = False) -> "Explorer":
         """Step Play ``n_frames`` frames without a front end (one update per frame).
 
-        Each frame applies :meth:`play_step` of the shown values with
-        ``dt = speed / play_fps``; a None ends the run (with *loop* on, Play
-        itself starts again from where it started), a refused frame ends it too.
+        Each frame covers ``speed × time_scale / play_fps`` simulated seconds
+        (:attr:`play_dt`), or ``seconds / n_frames`` when ``seconds`` is given,
+        through :meth:`play_step` sub-steps of at most ``1 / play_fps`` seconds;
+        only the frame's end is drawn (as Play does when drawing is slower than
+        real time).  A None from ``play_step`` ends the run; so does a refused
+        step, which keeps what was computed before it and names the reason.
 
         Parameters
         ----------
         n_frames : int
-            Number of frames.
+            Number of frames, at most :data:`~planargeo.widgets.play.MAX_ADVANCE_FRAMES`.
+        seconds : float, optional
+            Simulated seconds the frames cover together, at most
+            :data:`~planargeo.widgets.play.MAX_ADVANCE_SECONDS`.
+        allow_long : bool
+            Opt in to more frames or seconds than the limits.
 
         Returns
         -------
@@ -971,54 +1021,96 @@ class Explorer:
         Raises
         ------
         InputError
-            The explorer has no Play (no :meth:`play_step`), or ``n_frames`` is not
-            a non-negative integer.
+            The explorer has no Play (no :meth:`play_step`), ``n_frames`` is not a
+            positive integer, ``seconds`` not a positive finite number, or either
+            is beyond its limit without ``allow_long``.
         """
         if not self.has_play:
             raise InputError(f"{type(self).__name__} has no Play (it does not define play_step)")
-        if not isinstance(n_frames, numbers.Integral) or isinstance(n_frames, bool) or n_frames < 0:
-            raise InputError(f"n_frames must be a non-negative integer, got {n_frames!r}")
-        for _ in range(int(n_frames)):
-            if not self._frame():
+        n = _play.check_count("n_frames", n_frames, _play.MAX_ADVANCE_FRAMES, allow_long)
+        if seconds is None:
+            per_frame = self.play_dt
+            _play.check_duration("n_frames × play_dt", n * per_frame, _play.MAX_ADVANCE_SECONDS,
+                                 allow_long)
+        else:
+            per_frame = _play.check_duration("seconds", seconds, _play.MAX_ADVANCE_SECONDS,
+                                             allow_long) / n
+        for _ in range(n):
+            if not self._frame(per_frame):
                 break
         return self
 
     @property
     def play_dt(self) -> float:
-        """Scene seconds per Play frame: ``speed / play_fps``."""
+        """Simulated seconds per Play frame: ``speed × time_scale / play_fps``."""
         speed = self.play_speed.value if self.play_speed is not None else 1.0
-        return float(speed) / float(self.play_fps)
+        return float(speed) * float(self.time_scale) / float(self.play_fps)
 
-    def _frame(self) -> bool:
-        """One Play frame; False when Play ends (None from play_step, or a refused frame)."""
-        try:
-            new = self.play_step(dict(self.shown_values or self.values), self.play_dt)
-        except Exception as exc:  # noqa: BLE001
-            self._refuse(f"play stopped: {self._reason(exc)}", self.figure_message(exc))
-            return False
-        if new is None:
-            return False
+    @property
+    def play_max_dt(self) -> float:
+        """The longest :meth:`play_step` sub-step: ``1 / play_fps`` simulated seconds."""
+        return 1.0 / float(self.play_fps)
+
+    def _frame(self, seconds: float | None = None) -> bool:
+        """One shown Play frame ``seconds`` on (default :attr:`play_dt`), in sub-steps.
+
+        False when Play ends: None from play_step, or a refused step (what was
+        computed before it is shown, with the reason).
+        """
+        seconds = self.play_dt if seconds is None else float(seconds)
+        start = dict(self.shown_values or self.values)
+        vals, ended, exc = _play.run_substeps(self.play_step, start, seconds, self.play_max_dt)
+        new = {k: v for k, v in vals.items() if k in self.controls and not _same(v, start.get(k))}
         before = self.n_updates
-        self.set(**new)
-        return self.n_updates > before
+        if new:
+            self.set(**new)
+        shown = self.n_updates > before
+        if exc is not None:
+            message = f"play stopped: {self._reason(exc)}"
+            if self.message:
+                message += f"; {self.message}"
+            self._refuse(message, self.figure_message(exc))
+            return False
+        if new and not shown:        # the new values were refused (the message says why)
+            return False
+        return not ended
+
+    def _restart_clock(self) -> None:
+        """Play's wall clock: started with Play (one frame due at once), its rate following the speed."""
+        rate = float(self.play_speed.value) * float(self.time_scale)
+        if self.play_control is None or not self.play_control.playing:
+            self._clock = None
+        elif self._clock is None:
+            self._clock = _play.PlayClock(rate, self.wall_clock, lead=1.0 / self.play_fps)
+        else:
+            self._clock.rate = rate
 
     def _play_toggled(self, change) -> None:
         if change["new"]:
             self._play_origin = dict(self.shown_values)
+        self._clock = None
+        self._restart_clock()
 
     def _play_tick(self, change) -> None:
         if not self.play_control.playing:
             return
-        # a frame slower than the Play interval makes ticks queue up in the kernel: drop the ones
-        # that arrive right after such a frame, so that Play stays in time and stops when asked
+        # the wall clock sets the simulated time: ticks that arrive while a slow frame was drawn
+        # are dropped, and the next one covers the time they would have (display frames dropped,
+        # no physics step skipped)
         interval = self.play_control.interval / 1000.0
-        now = time.monotonic()
+        now = self.wall_clock()
         last_end, last_cost = self._last_tick
         if last_cost > interval and now - last_end < max(0.5 * interval, 0.01):
             return
-        t0 = time.monotonic()
-        ok = self._frame()
-        self._last_tick = (time.monotonic(), time.monotonic() - t0)
+        if self._clock is None:
+            self._restart_clock()
+        seconds = self._clock.due()
+        if seconds <= 0:
+            return
+        t0 = self.wall_clock()
+        ok = self._frame(seconds)
+        t1 = self.wall_clock()
+        self._last_tick = (t1, t1 - t0)
         if ok:
             return
         if self.play_loop is not None and self.play_loop.value and self._play_origin and \
@@ -1109,15 +1201,16 @@ class Explorer:
         self.last_export = atomic_write(path, self._png_bytes()).resolve()
         return self.last_export
 
-    def _frames_rgb(self, frames: int) -> list[np.ndarray]:
-        """RGB images of ``frames`` Play frames from the shown state (which is restored after)."""
+    def _frames_rgb(self, frames: int, fps: int | None = None) -> list[np.ndarray]:
+        """RGB images of ``frames`` Play frames at ``fps`` in real time from the shown state (restored after)."""
+        seconds = self.play_dt * self.play_fps / float(fps or self.play_fps)
         start = dict(self.shown_values)
         state, readout = self.state, dict(self.readout_values)
         out = []
         self._exporting = True
         try:
             for k in range(frames):
-                if k and not self._frame():
+                if k and not self._frame(seconds):
                     break
                 self.fig.canvas.draw()
                 out.append(np.asarray(self.fig.canvas.buffer_rgba())[..., :3].copy())
@@ -1131,11 +1224,14 @@ class Explorer:
         return out
 
     def export_animation(self, path=None, *, format: str = "gif", frames: int = 60,
-                         fps: int = 20) -> Path:
+                         fps: int = 20, allow_long: bool = False) -> Path:
         """Write ``frames`` Play frames from the shown state as a GIF or MP4 file, atomically.
 
-        The explorer returns to the shown state afterwards.  GIF uses pillow;
-        MP4 needs the ``ffmpeg`` program (Debian's ``ffmpeg`` package).
+        The file plays in real time (× Play's speed and :attr:`time_scale`): frame
+        ``k`` shows the state ``k / fps`` of its seconds later.  The explorer
+        returns to the shown state afterwards; stopping (Ctrl-C) writes nothing
+        and leaves it there too.  GIF uses pillow; MP4 needs the ``ffmpeg``
+        program (Debian's ``ffmpeg`` package).
 
         Parameters
         ----------
@@ -1144,9 +1240,12 @@ class Explorer:
         format : {"gif", "mp4"}
             File format.
         frames : int
-            Number of frames (fewer if Play ends first).
+            Number of frames (fewer if Play ends first), at most
+            :data:`~planargeo.widgets.play.MAX_ANIMATION_FRAMES`.
         fps : int
             Frames per second of the file.
+        allow_long : bool
+            Opt in to more frames than the limit.
 
         Returns
         -------
@@ -1156,28 +1255,28 @@ class Explorer:
         Raises
         ------
         InputError
-            No Play in this explorer, an unknown format, or frames / fps not positive integers.
+            No Play in this explorer, an unknown format, frames / fps not positive
+            integers, or more frames than the limit without ``allow_long``.
         OutputError
             The file cannot be written, or MP4 without ffmpeg.
         """
-        data = self._animation_bytes(format, frames, fps)
+        data = self._animation_bytes(format, frames, fps, allow_long)
         path = self._export_path(path, format)
         self.last_export = atomic_write(path, data).resolve()
         return self.last_export
 
-    def _animation_bytes(self, format: str, frames: int, fps: int) -> bytes:
+    def _animation_bytes(self, format: str, frames: int, fps: int, allow_long: bool = False) -> bytes:
         if format not in ("gif", "mp4"):
             raise InputError(f"format must be 'gif' or 'mp4', got {format!r}")
-        for nm, v in (("frames", frames), ("fps", fps)):
-            if not isinstance(v, numbers.Integral) or isinstance(v, bool) or v < 1:
-                raise InputError(f"{nm} must be a positive integer, got {v!r}")
+        frames = _play.check_count("frames", frames, _play.MAX_ANIMATION_FRAMES, allow_long)
+        fps = _play.check_count("fps", fps, 1000)
         if not self.has_play:
             raise InputError(f"{type(self).__name__} has no animation (it does not define play_step)")
         ffmpeg = shutil.which("ffmpeg")
         if format == "mp4" and ffmpeg is None:
             raise OutputError("mp4 export needs the ffmpeg program, which is not installed "
                               "(install Debian's ffmpeg, or use format='gif')")
-        imgs = self._frames_rgb(int(frames))
+        imgs = self._frames_rgb(frames, fps)
         if format == "gif":
             from PIL import Image
 
@@ -1294,6 +1393,11 @@ class Explorer:
         return fig, ax
 
     @property
+    def has_mp4(self) -> bool:
+        """True when MP4 export works here (the ``ffmpeg`` program is installed)."""
+        return shutil.which("ffmpeg") is not None
+
+    @property
     def figure_px(self) -> tuple[int, int]:
         """Native size of the figure in pixels (as shown at 100 % zoom)."""
         w, h = self.fig.get_size_inches() * self.dpi
@@ -1313,15 +1417,17 @@ class Explorer:
             fig_widget = W.HTML("<i>(figure drawn off-screen)</i>")
         buttons = W.HBox([self.reset_button, W.HTML("<span style='padding:0 4px'>export</span>"),
                           self.export_button, self.export_png_button]
-                         + ([self.export_gif_button] if self.has_play else []))
-        play = ([W.HBox([self.play_control, self.play_speed, self.play_loop])] if self.has_play else [])
+                         + ([self.export_gif_button] if self.has_play else [])
+                         + ([self.export_mp4_button] if self.has_play and self.has_mp4 else []))
+        play = ([W.HBox([self.play_control, self.play_speed, self.play_scale, self.play_loop])]
+                if self.has_play else [])
         controls = W.VBox(list(self.controls.values()) + play + self.extra_widgets()
                           + [buttons, self.export_label],
                           layout=W.Layout(width="330px", min_width="330px", overflow="visible"))
         # controls on the left; on the right a reserved message line, the figure and the readout
         # under it: fixed widths and heights above the readout, so nothing moves when a message
         # appears or the readout changes (the readout only grows downwards, with nothing below)
-        right = W.VBox([self.message_box, fig_widget, self.readout],
+        right = W.VBox([self.message_box, fig_widget, self.readout, self.explain_box],
                        layout=W.Layout(align_items="flex-start", overflow="visible"))
         head = W.HTML(f"<h4 style='margin:2px'>{html.escape(self.title)}</h4>")
         body = W.HBox([controls, right],
@@ -1382,11 +1488,24 @@ class Explorer:
         self._last_drag = (time.monotonic(), time.monotonic() - now)
 
     def _on_release(self, ev) -> None:
+        self._release()
+
+    def _release(self) -> None:
+        """End of a drag (mouse or :meth:`drag`): the last queued move, then the shown state drawn
+        again as a fresh explorer would draw it (a view held still during the drag is fitted)."""
         h, pending = self._drag_active, self._drag_pending
-        self._drag_active, self._drag_pending = None, None
         if h is not None and pending is not None:  # the last position, queued behind a slow step
             self._drag_to(h, *pending)
+        self._drag_active, self._drag_pending = None, None
         self._last_drag = (0.0, 0.0)
+        if h is None or self.state is None:
+            return
+        message = self._message
+        self._update()                             # no control changed: a render of the shown state
+        if message and not self._message:          # a refused last step keeps its message
+            self._set_message(message)
+            self._show_figure_message(_short(message))
+            self._safe_redraw()
 
     def _make_observer(self, name: str) -> Callable:
         widget = self.controls[name]
@@ -1512,6 +1631,9 @@ class Explorer:
             follow = self.adjust(values, changed)
             self._set_controls(follow)
             values.update(follow)
+            focus = self._focus_follow(values)
+            self._set_controls(focus)
+            values.update(focus)
             with warnings.catch_warnings():
                 warnings.simplefilter("error", RuntimeWarning)
                 if changed <= set(self.display_controls) and not initial:
@@ -1528,8 +1650,15 @@ class Explorer:
             if initial:
                 raise
             refused = ", ".join(_shown_as(k, w.value) for k, w in self.controls.items() if k in changed)
-            self._refuse(f"{self._reason(exc)} (refused: {refused})" if refused else self._reason(exc),
-                         self.figure_message(exc), rendered)
+            reason = self._reason(exc)
+            if _numeric_failure(exc) and refused:
+                reason = (f"{refused} cannot be computed: a number left double precision's range "
+                          f"({exc}); choose a smaller magnitude")
+                figure = _short(reason)
+            else:
+                figure = self.figure_message(exc)
+            self._refuse(f"{reason} (refused: {refused})" if refused else reason, figure, rendered)
+            self._follow_shown()
             return
         self.state = state
         self.shown_values = self.values
@@ -1538,8 +1667,50 @@ class Explorer:
         self.readout.value = table
         self._set_message(message)
         self._show_figure_message(message)
+        self._follow_shown()
         self.n_updates += 1
         self._safe_redraw()
+
+    def _focus_follow(self, values: dict[str, Any]) -> dict[str, Any]:
+        """``{"focus": "all"}`` when the focus chosen no longer exists for ``values`` (else nothing)."""
+        w = self.controls.get("focus")
+        if w is None or not isinstance(w, W.Dropdown) or values.get("focus", "all") == "all":
+            return {}
+        try:
+            options = ["all", *self.focus_options()]
+        except Exception:  # noqa: BLE001 - options that cannot be listed: keep the choice
+            return {}
+        return {} if values["focus"] in options else {"focus": "all"}
+
+    def _follow_shown(self) -> None:
+        """Focus options, disabled controls and the "what is shown" panel, for the shown state."""
+        w = self.controls.get("focus")
+        if isinstance(w, W.Dropdown):
+            with contextlib.suppress(Exception):
+                options = ("all", *self.focus_options())
+                if tuple(w.options) != options:
+                    value = w.value if w.value in options else "all"
+                    with self._quietly():
+                        w.options = options
+                        w.value = value
+        try:
+            off = dict(self.disabled(dict(self.shown_values or self.values)))
+        except Exception as exc:  # noqa: BLE001 - a faulty rule disables nothing
+            off = {}
+            self._message = self._message or f"internal error in disabled(): {exc}"
+        for k, w in self.controls.items():
+            reason = off.get(k)
+            if bool(w.disabled) != (reason is not None):
+                w.disabled = reason is not None
+            tip = str(reason) if reason is not None else self._tooltips.get(k)
+            if hasattr(w, "tooltip") and w.tooltip != tip:
+                w.tooltip = tip
+        try:
+            text = explain_html(dict(self.explain()))
+        except Exception as exc:  # noqa: BLE001
+            text = f"<i>no explanation: {html.escape(str(exc))}</i>"
+        if self.explain_box.value != text:
+            self.explain_box.value = text
 
     @staticmethod
     def _reason(exc: Exception) -> str:
@@ -1597,10 +1768,9 @@ class Explorer:
         for k, v in values.items():
             if str(k).startswith("_"):
                 continue
-            unit = self.units.get(k, "")
-            unit = "" if unit in ("—", "-") else unit
-            text = fmt(v, zero=zero)
-            self.readout_strings[str(k)] = f"{text} {unit}" if unit else text
+            full = value_text(v, self.units.get(k, ""), zero=zero)
+            self.readout_strings[str(k)] = html.unescape(full)
+            text, unit = _value_and_unit(full, fmt(v, zero=zero))
             rows.append(
                 f"<tr><td style='padding-right:6px;line-height:1.25;white-space:nowrap;"
                 f"overflow:hidden;text-overflow:ellipsis;max-width:300px' title='{html.escape(str(k))}'>"
@@ -1608,7 +1778,7 @@ class Explorer:
                 f"<td style='text-align:right;font-family:monospace;line-height:1.25;"
                 f"white-space:nowrap'>{text}</td>"
                 f"<td style='padding-left:3px;line-height:1.25;white-space:nowrap;color:#555'>"
-                f"{html.escape(unit)}</td></tr>")
+                f"{unit}</td></tr>")
         return (f"<b>Readout</b><table class='planargeo-readout' style='font-size:12px;"
                 f"table-layout:auto;border-collapse:collapse'>{''.join(rows)}</table>")
 

@@ -1,0 +1,224 @@
+"""Readout text of the explorers: numbers with their units, points, and the "what is shown" panel.
+
+The rules every explorer's readout follows (issue 22):
+
+* a unit is written after a number only, never after a word ("at rest");
+* a vector's entry takes one unit per component (a tuple) or one common unit;
+* round-off (``|x| ≤ zero``) prints as ``0``;
+* a point at infinity reads "at infinity (direction (dx, dy))", decided by
+  :func:`planargeo.geometry.projective.is_ideal`, never by ``== 0``.
+
+Examples
+--------
+>>> value_text((1.0, -2.0, 0.5), ("m/s", "m/s", "rad/s"))
+'(1 m/s, -2 m/s, 0.5 rad/s)'
+>>> value_text("at rest", "m"), value_text(0.25, "m")
+('at rest', '0.25 m')
+>>> point_text([0.0, -2.0, 1.0]), point_text([1.0, 0.0, 0.0])
+('(2, 0) m', 'at infinity (direction (0, 1))')
+"""
+from __future__ import annotations
+
+import html
+import numbers
+from typing import Any
+
+import numpy as np
+
+from planargeo.geometry.projective import direction, is_ideal, to_xy
+
+__all__ = ["fmt", "point_text", "value_text", "split_units", "explain_html", "is_numeric"]
+
+#: units that mean "dimensionless": nothing is written
+NO_UNIT = ("", "—", "-")
+
+
+def fmt(x: Any, digits: int = 4, zero: float = 0.0) -> str:
+    """Readable text for a readout value (numbers rounded, ideal values named).
+
+    Parameters
+    ----------
+    x : Any
+        A number, a tuple / array of numbers, a boolean or any object (shown as text).
+    digits : int
+        Significant digits of a number.
+    zero : float
+        Numbers whose magnitude is at most ``zero`` print as ``0`` (round-off).
+
+    Returns
+    -------
+    str
+        HTML-safe text.
+
+    Examples
+    --------
+    >>> fmt(0.123456), fmt(float("inf")), fmt((1.0, -2.5)), fmt(True)
+    ('0.1235', '∞', '(1, -2.5)', 'yes')
+    >>> fmt(-1.2e-16, zero=1e-9), fmt((1.0, 3e-12), zero=1e-9)
+    ('0', '(1, 0)')
+    """
+    if isinstance(x, (bool, np.bool_)):
+        return "yes" if x else "no"
+    if isinstance(x, (int, np.integer)):
+        return str(int(x))
+    if isinstance(x, (float, np.floating)):
+        if not np.isfinite(x):
+            return "∞" if x > 0 else ("−∞" if x < 0 else "—")
+        if x == 0 or abs(x) <= zero:
+            return "0"
+        if abs(x) >= 1e5 or abs(x) < 1e-3:
+            return f"{x:.{digits - 1}e}"
+        return f"{x:.{digits}g}"
+    if isinstance(x, (tuple, list, np.ndarray)):
+        return "(" + ", ".join(fmt(v, digits, zero) for v in _components(x)) + ")"
+    return html.escape(str(x))
+
+
+def _components(x) -> list:
+    """The entries of a vector, those at rounding level relative to the largest set to 0."""
+    a = np.ravel(np.asarray(x, dtype=object))
+    try:
+        f = np.asarray(a, dtype=float)
+        big = np.max(np.abs(f[np.isfinite(f)]), initial=0.0)
+        return list(np.where(np.isfinite(f) & (np.abs(f) <= 1e-12 * big), 0.0, f))
+    except (TypeError, ValueError):
+        return list(a)
+
+
+def is_numeric(x: Any) -> bool:
+    """True for a real number (not a boolean) or a non-empty vector of them: what takes a unit.
+
+    Examples
+    --------
+    >>> is_numeric(2.0), is_numeric((1, 2)), is_numeric("at rest"), is_numeric(True)
+    (True, True, False, False)
+    """
+    if isinstance(x, (bool, np.bool_)):
+        return False
+    if isinstance(x, numbers.Real):
+        return True
+    if isinstance(x, (tuple, list, np.ndarray)):
+        a = np.ravel(np.asarray(x, dtype=object))
+        return len(a) > 0 and all(is_numeric(v) for v in a)
+    return False
+
+
+def split_units(unit, n: int) -> list[str]:
+    """One unit per component of an ``n``-vector from a unit string or a tuple of them.
+
+    Examples
+    --------
+    >>> split_units("m", 2), split_units(("m/s", "rad/s"), 2)
+    (['m', 'm'], ['m/s', 'rad/s'])
+    """
+    if isinstance(unit, (tuple, list)):
+        units = [("" if u in NO_UNIT else str(u)) for u in unit]
+        if len(units) != n:
+            raise ValueError(f"{len(units)} units given for a vector of {n} components")
+        return units
+    u = "" if unit in NO_UNIT or unit is None else str(unit)
+    return [u] * n
+
+
+def value_text(x: Any, unit: Any = "", zero: float = 0.0, digits: int = 4) -> str:
+    """The readout text of a value with its unit: the unit after numbers only.
+
+    Parameters
+    ----------
+    x : Any
+        The value (a number, a vector, a word...).
+    unit : str or tuple of str
+        One unit, or one per component of a vector ("" or "—": none).
+    zero : float
+        Round-off level (:func:`fmt`).
+    digits : int
+        Significant digits.
+
+    Returns
+    -------
+    str
+        HTML-safe text.
+
+    Examples
+    --------
+    >>> value_text((1.0, 2.0), "m"), value_text(3, "—"), value_text(True, "m")
+    ('(1, 2) m', '3', 'yes')
+    """
+    text = fmt(x, digits, zero)
+    if not is_numeric(x):
+        return text
+    if isinstance(x, (tuple, list, np.ndarray)):
+        comps = _components(x)
+        units = split_units(unit, len(comps))
+        if len(set(units)) == 1:
+            return f"{text} {html.escape(units[0])}" if units[0] else text
+        parts = [fmt(v, digits, zero) + (f" {html.escape(u)}" if u else "")
+                 for v, u in zip(comps, units)]
+        return "(" + ", ".join(parts) + ")"
+    u = split_units(unit, 1)[0]
+    return f"{text} {html.escape(u)}" if u else text
+
+
+def point_text(p, unit: str = "m", zero: float = 0.0, digits: int = 4) -> str:
+    """Readout text of a homogeneous point: ``"(x, y) m"`` or ``"at infinity (direction (dx, dy))"``.
+
+    Ideal points are told by :func:`planargeo.geometry.projective.is_ideal`
+    (weight exactly zero), never by a size threshold.
+
+    Parameters
+    ----------
+    p : array_like (3,)
+        Homogeneous point ``[a, b, w]`` (thesis 5.49).
+    unit : str
+        Unit of the coordinates.
+    zero : float
+        Round-off level of the coordinates.
+    digits : int
+        Significant digits.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> point_text([4.0, -2.0, 2.0])
+    '(1, 2) m'
+    >>> point_text([0.0, 1.0, 0.0])
+    'at infinity (direction (-1, 0))'
+    """
+    p = np.asarray(p, dtype=float).reshape(3)
+    if bool(is_ideal(p)):
+        return f"at infinity (direction {fmt(tuple(direction(p)), digits, 1e-12)})"
+    xy = to_xy(p)
+    text = fmt(tuple(xy), digits, zero)
+    return f"{text} {html.escape(unit)}" if unit not in NO_UNIT else text
+
+
+def explain_html(meanings: dict[str, str], title: str = "What is shown") -> str:
+    """A collapsible list of symbols and their meanings (the explorer's "what is shown" panel).
+
+    Parameters
+    ----------
+    meanings : dict
+        ``{symbol or readout name: one-line meaning}``.
+    title : str
+        The panel's heading.
+
+    Returns
+    -------
+    str
+        HTML (a ``<details>`` list; empty text when there is nothing to explain).
+
+    Examples
+    --------
+    >>> "<b>ω</b>" in explain_html({"ω": "angular velocity (thesis 2.3)"})
+    True
+    """
+    if not meanings:
+        return ""
+    items = "".join(f"<li style='margin:1px 0'><b>{html.escape(str(k))}</b>: {html.escape(str(v))}</li>"
+                    for k, v in meanings.items())
+    return (f"<details class='planargeo-explain'><summary style='cursor:pointer'><b>{html.escape(title)}"
+            f"</b> ({len(meanings)} symbols)</summary><ul style='margin:2px 0 2px 14px;padding:0;"
+            f"font-size:12px;line-height:1.3'>{items}</ul></details>")
