@@ -6,7 +6,8 @@ Usage::
     planargeo report --list [--json]
 
 ``--list`` prints every scene with its parameters and, for each quantity it reports, a
-description, the thesis symbol and equation, and the unit (:data:`QUANTITY_INFO`; a scene
+description, the thesis symbol and equation, and the unit (read from the data file
+``planargeo/data/quantities.toml``, :data:`QUANTITY_INFO`, :func:`quantity`; a scene
 module may add its own as a module attribute ``QUANTITY_INFO = {scene: {key: (description,
 symbol, equation, unit)}}``).  The table prints each quantity's unit after its value, and
 values whose magnitude is below :data:`ZERO_TOL` times the scene's scale for that unit (the
@@ -37,220 +38,98 @@ import argparse
 import json
 import math
 import sys
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
 __all__ = ["add_arguments", "main", "parse_value", "parse_sets", "to_plain", "format_table", "quantity_info",
-           "round_off", "format_listing", "QUANTITY_INFO", "ZERO_TOL"]
+           "quantity", "Quantity", "round_off", "format_listing", "QUANTITY_INFO", "QUANTITIES_FILE", "ZERO_TOL"]
 
 #: Values below ``ZERO_TOL`` times the scene's scale for their unit print as 0 in the table.
 ZERO_TOL = 1e-9
 
-#: Units of screw arrays (components ``[x, y, z]`` at the global origin).
-TWIST = "m/s, m/s, rad/s"
-ACCEL = "m/s², m/s², rad/s²"
-WRENCH = "N, N, N·m"
-INERTIA = "kg, kg·m, kg·m²"
-MOBILITY = "1/kg, 1/(kg·m), 1/(kg·m²)"
-BASIS = "—"
+#: Where the quantities' descriptions live: one data file, shipped with the package.
+QUANTITIES_FILE = "data/quantities.toml"
+
+
+class Quantity(NamedTuple):
+    """What one reported quantity is: its description, thesis symbol, thesis equation and unit.
+
+    A record of :func:`quantity`, read from the package's data file ``planargeo/data/quantities.toml``.
+
+    Attributes
+    ----------
+    description : str
+        What the quantity is, in words.
+    symbol : str
+        The thesis's symbol (``"—"``: none).
+    equation : str
+        The thesis's equation(s), section or figure (``"—"``: none).
+    unit : str
+        The unit (``"—"``: dimensionless, or a basis of unit screws); a screw array's units per
+        component ``[x, y, z]`` at the global origin, e.g. ``"N, N, N·m"`` for a wrench.
+    """
+
+    description: str
+    symbol: str
+    equation: str
+    unit: str
+
+
+def _read_quantities() -> dict[str, dict[str, Quantity]]:
+    import tomllib
+    from importlib.resources import files
+
+    data = tomllib.loads((files("planargeo") / QUANTITIES_FILE).read_text(encoding="utf-8"))
+    return {scene: {key: Quantity(**entry) for key, entry in table.items()} for scene, table in data.items()}
+
 
 #: ``scene -> quantity -> (description, thesis symbol, thesis equation, unit)`` of every quantity
-#: ``planargeo report`` prints (``—``: dimensionless; screw arrays at the global origin).
-QUANTITY_INFO: dict[str, dict[str, tuple[str, str, str, str]]] = {
-    "chain": {
-        "q": ("joint coordinates", "q", "2.1", "rad or m"),
-        "qd": ("joint rates", "q̇", "2.3", "rad/s or m/s"),
-        "tau": ("joint torques or forces", "Q", "3.13", "N·m or N"),
-        "qdd": ("joint accelerations by each of five methods (ABA, projective, mobility + splitting, "
-                "stacked, CRBA)", "q̈", "3.6, 6.108-6.113, 7.56, 9.43, 3.21", "rad/s² or m/s²"),
-        "max_disagreement": ("largest difference between the methods' q̈", "max |Δq̈|", "—",
-                             "rad/s² or m/s²"),
-    },
-    "car": {
-        "omega_dot": ("angular acceleration of the car about the instant centre", "ω̇ = ψ", "6.131", "rad/s²"),
-        "mu": ("lateral tyre forces [rear, front] along R₁, R₂ (negative: towards the ICR)", "μ", "6.133", "N"),
-        "T": ("percussion space of the ICR joint", "T", "6.125", BASIS),
-        "U": ("quake space of the ICR joint", "U", "6.127", BASIS),
-        "s": ("motion space: unit rotation about the ICR", "s", "6.114", BASIS),
-        "R": ("reaction space: unit forces along the rear and front axles", "R", "6.114", BASIS),
-        "I": ("inertia of the car at the ICR", "I", "6.117", INERTIA),
-        "v": ("velocity twist", "v", "6.115", TWIST),
-        "kappa": ("bias acceleration", "κ", "6.116", ACCEL),
-        "p": ("bias force", "p", "6.119", WRENCH),
-        "f_A": ("drive force at the front tyre", "f_A", "6.120", WRENCH),
-        "gamma": ("reactive acceleration components", "γ = Rᵀκ", "6.129", "m/s²"),
-        "a": ("acceleration twist", "a", "6.44", ACCEL),
-        "f": ("total tyre wrench (the joint force)", "f", "6.122", WRENCH),
-        "V": ("speed of the rear contact", "V = ω d", "6.115", "m/s"),
-    },
-    "two-body": {
-        "A1": ("articulated inertia of body 1 at joint CJ₁", "A₁", "7.19", INERTIA),
-        "m_x": ("effective mass along x", "m_x", "7.12", "kg"),
-        "mx_over_m": ("effective mass along x per body mass", "m_x / m", "7.22", "—"),
-        "lam": ("length over radius of gyration", "λ = L/ρ", "7.21", "—"),
-        "A2": ("articulated inertia of body 2 (= its rigid inertia)", "A₂ = I₂", "7.14, 7.17", INERTIA),
-        "U2": ("quake space of joint 2", "U₂", "7.18", BASIS),
-        "T2": ("percussion space of joint 2", "T₂", "6.30", BASIS),
-        "s": ("joint motion spaces s₁, s₂", "s", "7.15", BASIS),
-        "R": ("joint reaction spaces R₁, R₂", "R", "7.16", BASIS),
-    },
-    "horizontal-chain": {
-        "d_over_L": ("effective centre of gravity of body 1 per link length", "d / L", "7.26, 7.27", "—"),
-        "mx_over_m": ("effective mass along x per body mass", "m_x / m", "7.26", "—"),
-        "my_over_m": ("effective mass along y per body mass", "m_y / m", "7.26", "—"),
-        "Az_over_m_rho2": ("effective rotational inertia per m ρ²", "A_z / (m ρ²)", "7.26", "—"),
-        "A1": ("articulated inertia of body 1 at the origin", "A₁", "7.1.1", INERTIA),
-    },
-    "mobility-example": {
-        "Lambda1_inv": ("articulated mobility of body 1", "Λ₁⁻¹", "7.42", MOBILITY),
-        "Lambda2_inv": ("articulated mobility of body 2", "Λ₂⁻¹", "7.43", MOBILITY),
-        "f3": ("pure couple on body 2 from the fictitious joint 3", "f₃", "7.44", WRENCH),
-        "a2": ("acceleration of body 2", "a₂ = -Λ₂⁻¹ f₃", "7.45, 7.46", ACCEL),
-        "x_over_L": ("acceleration pole of body 2 per link length", "x / L", "7.47, 7.48", "—"),
-        "eta": ("length over radius of gyration", "η = L/ρ", "7.49", "—"),
-        "T1": ("percussion space of joint 1", "T₁", "7.40", BASIS),
-        "U1": ("quake space of joint 1", "U₁", "7.40", BASIS),
-        "T2": ("percussion space of joint 2", "T₂", "7.41", BASIS),
-        "U2": ("quake space of joint 2", "U₂", "7.41", BASIS),
-    },
-    "slider-crank": {
-        "q": ("joint angles crank, rod, piston", "q = (ψ, θ, φ)", "9.78", "rad"),
-        "qd": ("joint rates", "q̇", "9.79", "rad/s"),
-        "v": ("velocity twists of the three bodies", "v₁, v₂, v₃", "9.80", TWIST),
-        "u": ("open-loop accelerations (loop cut at the slider)", "u", "9.63, 9.82", ACCEL),
-        "Lambda3_inv": ("articulated mobility of the piston in the tree", "Λ₃⁻¹", "9.81", MOBILITY),
-        "h": ("height of the piston's centre of mass", "h", "9.85, 9.86", "m"),
-        "z3": ("contact motion space of the slider", "z₃", "9.83", BASIS),
-        "B3": ("contact reaction space of the slider", "B₃", "9.87", BASIS),
-        "xi": ("contact force components in B₃ (force, couple)", "ξ₃", "9.89, 9.90", "N, N·m"),
-        "F3": ("contact force of the slider (-F₃ acts on the piston)", "F₃ = B₃ ξ₃", "9.91, 9.92", WRENCH),
-        "a3": ("closed-loop acceleration of the piston", "a₃", "9.93, 9.94", ACCEL),
-        "a": ("closed-loop accelerations of the three bodies", "a", "9.73", ACCEL),
-        "qdd": ("joint accelerations", "q̈", "9.75", "rad/s²"),
-        "tau_drive": ("joint torques the drive needs (constant-speed crank)", "Q", "9.75", "N·m"),
-        "cond": ("condition number of the contact matrix", "κ(BᵀGΛ⁻¹GᵀB)", "9.70-9.72", "—"),
-        "f": ("joint wrenches f₁ crank pivot, f₂ crank pin, f₃ wrist pin (on each body from its parent)",
-              "f", "9.61", WRENCH),
-        "mu": ("reaction magnitudes of each joint in its basis R_i (f = T Q + R μ; a free pin: its force along "
-               "x and y)", "μ = Uᵀ f", "6.38, 6.61b", "N"),
-        "pin_forces": ("every pin and bearing force: f₁-f₃ and the slider bearing's -F₃ on the piston",
-                       "f_i, -F₃", "9.61, 9.71", WRENCH),
-        "reaction_moments": ("moment of each reaction about its own pin or contact point (drive torque, "
-                             "0 at a free pin, the bearing's couple)", "τ_o + y f_x − x f_y", "4.27", "N·m"),
-    },
-    "tree": {
-        "C": ("adjacency matrix of Fig 9.1", "C", "9.1", "—"),
-        "Dinv": ("trunk matrix", "Δ⁻¹", "9.12, 9.13", "—"),
-        "L": ("articulation matrix (1 - Cᵀ R Uᵀ)⁻¹", "L", "9.31", "—"),
-        "Lambda_inv": ("articulated mobilities of the nine bodies", "Λ_i⁻¹", "7.37, 9.45", MOBILITY),
-        "b": ("bias accelerations of the direct solution", "b_i", "9.45", ACCEL),
-        "qdd": ("joint accelerations", "q̈", "9.39, 9.43", "rad/s²"),
-        "qdd_direct": ("joint accelerations by the direct solution", "q̈", "9.48", "rad/s²"),
-        "a": ("body accelerations", "a", "9.39", ACCEL),
-        "f": ("joint wrenches (on each body from its parent)", "f", "9.41", WRENCH),
-    },
-    "constrained-tree": {
-        "G": ("contact matrix", "G", "9.49", "—"),
-        "Upsilon": ("branch matrix", "Υ = GΔ⁻¹", "9.50, 9.51", "—"),
-        "qdd": ("closed-loop joint accelerations", "q̈", "9.75", "rad/s²"),
-        "a": ("closed-loop body accelerations", "a", "9.73", ACCEL),
-        "u": ("open-loop accelerations", "u", "9.63", ACCEL),
-        "F": ("contact forces of the pins 4-7 and 8-9 (-F acts on body a)", "F", "9.71", WRENCH),
-        "xi": ("contact force components in B", "ξ", "9.70", "N"),
-        "cond": ("condition number of the contact matrix", "κ(BᵀGΛ⁻¹GᵀB)", "9.70-9.72", "—"),
-        "f": ("joint wrenches of the closed tree (on each body from its parent)", "f", "9.61", WRENCH),
-        "mu": ("pin forces of each joint in its basis R_i (no joint torques here: the force along x and y)",
-               "μ = Uᵀ f", "6.38, 6.61b", "N"),
-    },
-    "subspace": {
-        "s": ("motion space of the joint (columns: allowed twists)", "s", "6.1", BASIS),
-        "R": ("reaction space of the joint (columns: wrenches it can exert)", "R", "6.1", BASIS),
-        "T": ("active force subspace T = I s (sᵀIs)⁻¹", "T", "6.36", BASIS),
-        "U": ("constraint twist subspace U = I⁻¹R (RᵀI⁻¹R)⁻¹", "U", "6.37, 6.33 (corrected)", BASIS),
-        "I": ("rigid-body inertia of the body", "I", "5.64", INERTIA),
-        "f": ("applied wrench", "f", "6.38", WRENCH),
-        "Q": ("active part of the wrench, Q = sᵀf", "Q", "6.38", "N·m or N"),
-        "mu": ("reaction magnitudes, μ = Uᵀf", "μ", "6.61", "N or N·m"),
-        "TQ": ("active force T Q (the part the joint passes on)", "TQ", "6.38", WRENCH),
-        "Rmu": ("constraint force R μ (the part the joint takes)", "Rμ", "6.38", WRENCH),
-        "psi": ("joint-space acceleration, ψ = Tᵀ I⁻¹ f", "ψ", "6.44, 6.80", "rad/s² or m/s²"),
-        "gamma": ("reaction-space acceleration, γ = Rᵀ I⁻¹ f", "γ", "6.62, 6.81", "rad/s² or m/s²"),
-        "a_free": ("acceleration of the free body, I⁻¹ f", "I⁻¹f", "6.80", ACCEL),
-        "s_psi": ("acceleration of the body held by the joint, s ψ", "sψ", "6.93", ACCEL),
-        "U_gamma": ("acceleration the joint's base would need, U γ", "Uγ", "6.81", ACCEL),
-        "reaction": ("wrench of the joint on the body, I a − f = −R μ", "−Rμ", "6.93", WRENCH),
-        "sIs": ("joint-space inertia", "sᵀIs", "6.67", "kg·m² or kg"),
-        "RIR": ("reaction-space inverse inertia", "RᵀI⁻¹R", "6.71", "1/kg or 1/(kg·m²)"),
-        "s_line": ("for a 2-dof joint, the line of poles its motion space spans (else none)", "s", "6.1", "—"),
-        "T_pencil": ("for a 2-dof joint, the point U through which every active force passes (else none)",
-                     "T", "6.36", "—"),
-        "residuals": ("identities that must vanish: sᵀT − 1, RᵀU − 1, TᵀU, T sᵀ + R Uᵀ − 1, sᵀR and the powers "
-                      "(sψ)ᵀ(Rμ), (Uγ)ᵀ(TQ)", "—", "6.1, 6.38, 6.41", "—"),
-    },
-    "impulse": {
-        "I": ("rigid-body inertia of the struck body", "I", "5.64", INERTIA),
-        "com": ("centre of mass", "c", "5.64", "m"),
-        "rho": ("radius of gyration about the centre of mass", "ρ", "5.64", "m"),
-        "impulse": ("the blow, an impulsive wrench on its line", "ĵ", "§5.4", "N·s, N·s, N·m·s"),
-        "dv": ("twist just after the blow", "Δv", "6.63 (impulsive)", TWIST),
-        "omega": ("angular velocity just after the blow", "ω", "6.63 (impulsive)", "rad/s"),
-        "pole": ("velocity pole just after the blow (none for a translation)", "P", "§5.4", "m"),
-        "v_com": ("velocity of the centre of mass just after the blow", "v_c", "6.63 (impulsive)", "m/s"),
-        "reaction": ("reaction impulse of the grip or hinge on the body", "ĵ_R", "6.38", "N·s, N·s, N·m·s"),
-        "reaction_force": ("force part of the reaction impulse", "ĵ_R", "6.38", "N·s"),
-        "reaction_across": ("reaction impulse across the line grip – centre of mass (zero through the centre of "
-                            "percussion)", "ĵ_R⊥", "5.67", "N·s"),
-        "reaction_along": ("reaction impulse along the line grip – centre of mass", "ĵ_R∥", "5.67", "N·s"),
-        "pole_if_free": ("velocity pole the body would have if free, I⁻¹ĵ", "I⁻¹ĵ", "6.80", "m"),
-        "centre_of_percussion": ("centre of percussion for the grip, l = d + ρ²/d from it", "l", "5.67", "m"),
-        "apparent_mass_held": ("apparent mass along the line of the blow, body held", "m_app", "figure 3.3",
-                               "kg"),
-        "apparent_mass_free": ("apparent mass along the line of the blow, body free", "m_app", "figure 3.3", "kg"),
-        "kinetic_energy": ("kinetic energy just after the blow", "K = ½ vᵀI v", "—", "J"),
-        "v_grip": ("velocity of the grip or hinge just after the blow (zero when held)", "v_P", "6.63 (impulsive)", "m/s"),
-        "apparent_mass": ("apparent mass along the line of the blow for the chosen support", "m_app",
-                          "figure 3.3", "kg"),
-    },
-    "articulated": {
-        "joints": ("joint positions", "CJ_i", "—", "m"),
-        "I": ("rigid-body inertias of the bodies", "I_i", "5.64", INERTIA),
-        "A": ("articulated inertias with the chosen number of outboard bodies", "A_i", "7.7a, 10.2.2", INERTIA),
-        "A_full": ("articulated inertias of the full recursion", "A_i", "7.7a", INERTIA),
-        "centre_rigid": ("centres of the rigid-inertia conics (the centres of mass)", "c_i", "5.64", "m"),
-        "centre": ("effective centres A_i⁻¹[0, 0, 1] (where a couple turns body i)", "c_A", "7.26", "m"),
-        "pole": ("the chosen acceleration pole", "a", "§5.4", ACCEL),
-        "axis_rigid": ("axes of percussion I_i a of the pole", "I_i a", "6.63, 5.67", WRENCH),
-        "axis": ("axes of percussion A_i a of the pole", "A_i a", "6.63, 7.7a", WRENCH),
-        "truncation_error": ("relative error of A_i truncated against the full recursion", "—", "10.2.2", "—"),
-        "components": ("components of A_i at its joint after k = 0, 1, ... recursion steps", "A_i", "7.7a",
-                       INERTIA),
-        "error": ("error of those components against the full recursion", "—", "10.2.2", INERTIA),
-        "effective_7_26": ("effective centre and masses of body 1: d/L, m_x/m, m_y/m, A_z", "d, m_x, m_y, A_z",
-                           "7.26, 7.27", "—"),
-    },
-    "splitting": {
-        "joints": ("joint positions", "CJ_i", "—", "m"),
-        "Lambda_inv": ("articulated mobilities of the constrained chain", "Λ_i⁻¹", "7.38a (corrected)",
-                       MOBILITY),
-        "b": ("bias accelerations of the constrained chain", "b_i", "7.38b", ACCEL),
-        "A": ("articulated inertias of the free-floating part", "A_i", "7.7a", INERTIA),
-        "d": ("bias forces of the free-floating part", "d_i", "7.7b", WRENCH),
-        "a_split": ("acceleration of the body at the split", "a_i", "7.54", ACCEL),
-        "f_split": ("force of the joint at the split", "f_{i+1}", "7.56", WRENCH),
-        "a": ("accelerations of all bodies by chain splitting at every joint", "a_i", "7.54", ACCEL),
-        "f": ("joint forces by chain splitting", "f_i", "7.56", WRENCH),
-        "qdd": ("joint accelerations", "q̈", "6.110", "rad/s²"),
-        "a_tip_7_37": ("tip acceleration from its articulated mobility, −Λ_n⁻¹ f_{n+1} + b_n", "a_n", "7.37",
-                       ACCEL),
-        "f_tip": ("the couple from the fictitious joint n+1 on the tip", "f_{n+1}", "7.44", WRENCH),
-        "Lambda1_inv": ("articulated mobility of body 1 (example 7.5)", "Λ_1⁻¹", "7.42", MOBILITY),
-        "Lambda2_inv": ("articulated mobility of body 2 (example 7.5)", "Λ_2⁻¹", "7.43", MOBILITY),
-        "a_tip": ("acceleration of the tip body", "a_n", "7.45", ACCEL),
-        "x_over_L": ("where the tip turns: its pole's x over L (example 7.5)", "x/L", "7.47", "—"),
-        "eta": ("L / ρ", "η", "7.47", "—"),
-    },
-}
+#: ``planargeo report`` prints (``—``: dimensionless; screw arrays at the global origin), read from
+#: :data:`QUANTITIES_FILE` (each value a :class:`Quantity`, a tuple of those four strings).
+QUANTITY_INFO: dict[str, dict[str, Quantity]] = _read_quantities()
+
+
+def quantity(scene: str, key: str) -> Quantity:
+    """Description, thesis symbol, equation and unit of one quantity ``planargeo report`` prints.
+
+    The one source of these texts for the report, the documentation and the explorers' readouts
+    (:func:`quantity_info` gives a whole scene's).
+
+    Parameters
+    ----------
+    scene : str
+        A registered scene name (:func:`planargeo.scenes.names`).
+    key : str
+        The quantity's key in the scene's result (``SceneResult.quantities``).
+
+    Returns
+    -------
+    Quantity
+        ``(description, symbol, equation, unit)``.
+
+    Raises
+    ------
+    SceneError
+        If no scene has that name.
+    InputError
+        If the scene reports no quantity ``key`` (the message lists those it does).
+
+    Examples
+    --------
+    >>> q = quantity("slider-crank", "F3")
+    >>> q.symbol, q.equation, q.unit
+    ('F₃ = B₃ ξ₃', '9.91, 9.92', 'N, N, N·m')
+    >>> quantity("car", "omega_dot").unit
+    'rad/s²'
+    """
+    from planargeo.errors import InputError
+
+    table = quantity_info(scene)
+    if key not in table:
+        raise InputError(f"key must be a quantity of scene {scene!r} ({', '.join(table) or 'none described'}), "
+                         f"got {key!r}")
+    return Quantity(**table[key])
 
 
 def quantity_info(scene: str) -> dict[str, dict[str, str]]:
