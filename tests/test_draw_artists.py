@@ -388,6 +388,22 @@ def test_line_arrow_ends_and_label_at_anchor(ax):
         plot_line([0.0, 2.0, 3.0], ax, text_at="middle")
 
 
+@pytest.mark.parametrize("size", [1e-300, 1e-160, 1.0, 1e150, 1e300])
+def test_line_arrow_of_any_finite_force_is_computed(ax, size):
+    """Issue 23: a force of 1e-300 N (|f|² underflows) still has its line and arrow: the same line
+    x = 1.5 along +y as ``[0, 2, 3]`` scaled, the arrow ``scale |f|`` long at the anchor's foot."""
+    line = [0.0, 2.0 * size, 3.0 * size]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        art = plot_line(line, ax, scale=0.25 / size, anchor=[7.0, 1.0])
+        tail, tip = art.get_arrow()
+        ax.figure.canvas.draw()
+        np.testing.assert_allclose(tail, [1.5, 0.75], rtol=1e-12)
+        np.testing.assert_allclose(tip, [1.5, 1.25], rtol=1e-12)
+        ax.set_xlim(5, 6)                     # the line off the view: the edge arrow, no warning
+        ax.figure.canvas.draw()
+
+
 def test_line_label_offset_none_is_the_default(ax):
     # text_offset None (what the constructions pass for "automatic") means the (6, 6) pt default:
     # the label sits 6 pt right and 6 pt up of the arrow tip, not at a NaN offset (dropped)

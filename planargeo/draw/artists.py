@@ -23,6 +23,8 @@ fixed set of child primitives, so an artist can be updated thousands of times
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from matplotlib import artist as martist
 from matplotlib import cbook
@@ -998,14 +1000,16 @@ class LineArtist(_Base):
         The arrow is ``scale |f|`` long along the force ``(fx, fy)``, centred on
         the anchor; without a scale ``tail`` and ``tip`` are the anchor.
         """
-        fx, fy, tz = self._l
-        F = np.hypot(fx, fy)
-        e = np.array([fx, fy]) / F
-        p0 = np.array([fy * tz, -fx * tz]) / (F * F)     # foot of the origin (4.27)
+        fx, fy, tz = (float(v) for v in self._l)
+        s = max(abs(fx), abs(fy))                         # the same line, scaled: no under/overflow
+        ux, uy, uz = fx / s, fy / s, tz / s
+        G = math.hypot(ux, uy)                            # |f| / s, in [1, √2]
+        e = np.array([ux, uy]) / G
+        p0 = np.array([uy * uz, -ux * uz]) / (G * G)      # foot of the origin (4.27)
         anchor = p0 + e * ((np.asarray(near, dtype=float) - p0) @ e)
         if self._scale is None:
             return anchor, anchor, anchor
-        half = 0.5 * self._scale * F * e
+        half = (0.5 * self._scale * s) * G * e            # |f| = s G
         return anchor, anchor - half, anchor + half
 
     def get_segment(self):
@@ -1065,7 +1069,8 @@ class LineArtist(_Base):
             if not (x0 <= at[0] <= x1 and y0 <= at[1] <= y1):
                 a, b = seg
                 d = b - a
-                k = float(np.clip((np.asarray(at) - a) @ d / max(d @ d, 1e-300), 0.15, 0.85))
+                L = math.hypot(*d)
+                k = float(np.clip((np.asarray(at) - a) @ (d / L) / L, 0.15, 0.85)) if L > 0 else 0.5
                 at = a + k * d
         out += self._place_text(ax.transData.transform(at), renderer)
         return out
@@ -1076,7 +1081,9 @@ class LineArtist(_Base):
         fx, fy, tz = self._l
         box = _view(ax)
         c = np.array([(box[0] + box[1]) / 2, (box[2] + box[3]) / 2])
-        F2 = fx * fx + fy * fy
+        sc = max(abs(fx), abs(fy))                        # the same line, scaled: no under/overflow
+        fx, fy, tz = fx / sc, fy / sc, tz / sc
+        F2 = fx * fx + fy * fy                            # in [1, 2]
         # foot of the perpendicular from the view centre on the line tz + y fx - x fy = 0
         dist = (tz + c[1] * fx - c[0] * fy) / F2
         foot = c - dist * np.array([-fy, fx])
