@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
+import re
+
 import numpy as np
 import pytest
 
@@ -30,14 +32,14 @@ def element(c, name):
 # ------------------------------------------------------------------ the scene, by hand
 def test_twist_sum_lever_rule_and_special_cases():
     c = construct("twist_sum", x1=0.0, y1=0.0, w1=1.0, x2=4.0, y2=0.0, w2=3.0)
-    assert c.values["pole of v3"] == pytest.approx((3.0, 0.0)) and c.values["β"] == 0.75
+    assert c.values["pole of v₃"] == pytest.approx((3.0, 0.0)) and c.values["β"] == 0.75
     assert [s.equation for s in c.steps] == ["4.10", "5.32", "4.11–4.13"]
     c = construct("twist_sum", x1=0.0, y1=0.0, w1=1.0, x2=2.0, y2=0.0, w2=-1.0)
-    assert c.values["pole of v3"] == "at infinity" and c.steps[-1].equation == "4.13"
+    assert c.values["pole of v₃"] .startswith("at infinity (direction (") and c.steps[-1].equation == "4.13"
     assert c.case.startswith("opposite rotations")
     # ω = 2 about (0.5, 0) plus a translation 3 along x: P = Q + (u/ω) e⊥ = (0.5, 1.5) (4.16)
     c = construct("twist_sum", x1=0.5, y1=0.0, w1=2.0, w2=0.0, u2=3.0, angle2=0.0)
-    assert c.values["ρ"] == 1.5 and c.values["pole of v3"] == pytest.approx((0.5, 1.5))
+    assert c.values["ρ"] == 1.5 and c.values["pole of v₃"] == pytest.approx((0.5, 1.5))
     c = construct("twist_sum", x1=1.0, y1=1.0, x2=1.0, y2=1.0)
     assert c.case.startswith("coincident poles") and c.steps[1].elements == ()
 
@@ -46,7 +48,7 @@ def test_wrench_sum_concurrent_parallel_couple_shift():
     c = construct("wrench_sum", x1=-1.0, y1=0.0, F1=1.0, angle1=0.0, x2=2.0, y2=1.0, F2=2.0,
                   angle2=90.0)
     assert c.values["meet P"] == pytest.approx((2.0, 0.0))
-    assert c.values["f3"] == pytest.approx((1.0, 2.0, 4.0))      # moments 0 + 2·2 about O
+    assert c.values["f₃"] == pytest.approx((1.0, 2.0, 4.0))      # moments 0 + 2·2 about O
     assert [s.id for s in c.steps] == ["lines", "meet", "parallelogram", "sum"]
     # the parallelogram's diagonal from P is f1 + f2
     (p, q) = element(c, "diag")
@@ -56,14 +58,14 @@ def test_wrench_sum_concurrent_parallel_couple_shift():
                   angle2=90.0)
     f3 = element(c, "f3")
     assert c.values["β"] == 0.75 and f3[2] / f3[1] == pytest.approx(2.0)
-    assert c.values["meet P"] == "at infinity" and c.case.startswith("parallel forces")
+    assert c.values["meet P"] .startswith("at infinity (direction (") and c.case.startswith("parallel forces")
     # equal and opposite: a couple -1·1 + 3·(-1) = -4 (4.4.2), drawn on no finite line
     c = construct("wrench_sum", x1=-1.0, y1=0.0, F1=1.0, angle1=90.0, x2=3.0, y2=0.0, F2=-1.0,
                   angle2=90.0)
-    assert c.values["f3"] == pytest.approx((0.0, 0.0, -4.0)) and "couple" in c.case
+    assert c.values["f₃"] == pytest.approx((0.0, 0.0, -4.0)) and "couple" in c.case
     # 2 N along x through O plus a couple 1: shifted by ρ = τ/F = 0.5 onto y = -0.5 (4.46)
     c = construct("wrench_sum", x1=0.0, y1=0.0, F1=2.0, angle1=0.0, F2=0.0, tau2=1.0)
-    assert c.values["ρ"] == 0.5 and c.values["f3"] == pytest.approx((2.0, 0.0, 1.0))
+    assert c.values["ρ"] == 0.5 and c.values["f₃"] == pytest.approx((2.0, 0.0, 1.0))
     (p, q) = element(c, "rho")
     assert q == pytest.approx([0.0, -0.5])
 
@@ -105,7 +107,7 @@ def test_newton_euler_and_rho_by_hand():
     assert p == pytest.approx([0.0, 2.0, 0.0])
     assert f == pytest.approx([0.0, 1.0, 0.25])          # 1 N up along x = 0.25
     # the joint (-0.75, 0) is 1 to the left of the line x = 0.25: τ = 1, ρ = τ/F = 1 (4.57)
-    assert c.values["τ"] == pytest.approx(1.0) and c.values["ρ = τ/F"] == pytest.approx(1.0)
+    assert c.values["τ"] == pytest.approx(1.0) and c.values["ρ = τ/|fⁿᵉᵗ|"] == pytest.approx(1.0)
     (j, foot) = element(c, "rho")
     assert foot == pytest.approx([0.25, 0.0])
 
@@ -144,13 +146,13 @@ def test_step_slider_draws_one_step_more_without_recomputing(ex):
 
 def test_dragging_an_input_redoes_the_construction(ex):
     ex.drag("v2", ex.handle_position("v2"), (3.0, 1.0), steps=3)
-    assert ex.readout_values["pole of v3"] == pytest.approx((2.25, 0.75))
+    assert ex.readout_values["pole of v₃"] == pytest.approx((2.25, 0.75))
     w = ConstructionExplorer("wrench_sum", display="agg", x1=-1.0, y1=0.0, F1=1.0, angle1=0.0,
                              x2=2.0, y2=1.0, F2=2.0, angle2=90.0)
     assert w.handle_position("f2 direction") == pytest.approx((2.0, 2.0))
     w.drag("f2 direction", (2.0, 2.0), (3.0, 1.0), steps=4)          # turned parallel to f1
-    assert w.message == "" and w.readout_values["meet P"] == "at infinity"
-    assert w.readout_values["special case"].startswith("parallel forces")
+    assert w.message == "" and w.readout_values["meet P"] .startswith("at infinity (direction (")
+    assert w.readout_values["case"] == "parallel forces (4.43)"
 
 
 def test_a_refused_value_keeps_the_shown_construction(ex):
@@ -214,10 +216,10 @@ def test_a_pole_dragged_through_infinity(tmp_path):
     for t in (1.5, 1.9, 2.0, 2.1, 2.5):
         e.drag("h", e.handle_position("h"), (t, 0.0), steps=1)
         assert e.message == "" and legibility_problems(e.fig) == []
-        poles.append(e.readout_values["pole of v2"])
-        sums.append(np.array(e.readout_values["v3"]))
+        poles.append(e.readout_values["pole of v₂"])
+        sums.append(np.array(e.readout_values["v₃"]))
     assert poles[0] == pytest.approx((6.0, 0.0)) and poles[1][0] == pytest.approx(38.0)
-    assert poles[2] == "at infinity" and poles[3][0] == pytest.approx(-42.0)
+    assert poles[2].startswith("at infinity (direction (") and poles[3][0] == pytest.approx(-42.0)
     v1 = np.array([-1.0, 1.5, 1.0])                          # ω [y, −x, 1] about (−1.5, −1)
     for t, s in zip((1.5, 1.9, 2.0, 2.1, 2.5), sums):
         assert s == pytest.approx(v1 + 1.5 * np.array([0.0, -t, 1 - t / 2]))
@@ -238,3 +240,68 @@ def test_earlier_steps_faded_shown_or_hidden(ex):
     assert ex.element_artists["0:Q1"].get_alpha() == 1.0
     ex.set(earlier="faded")
     assert ex.element_artists["0:Q1"].get_alpha() < 1.0
+
+
+# ---------------------------------------------------------------- issue 22: every construction offered
+def test_the_menu_offers_every_construction_the_scene_knows():
+    e = ConstructionExplorer(display="agg")
+    offered = [v for _, v in e.controls["construction"].options]
+    assert offered == list(CONSTRUCTIONS)
+    for kind in CONSTRUCTIONS:
+        e.set(construction=kind)
+        assert e.message == "" and e.construction == kind
+        # the shown construction is the scene's, with that construction's defaults
+        assert e.state["c"].kind == kind and e.state["c"].params == parameters(kind)
+        assert e.values["step"] == e.n_steps == len(construct(kind).steps) == e.controls["step"].max
+        # the sliders it does not use are disabled with a reason (and hidden)
+        off = e.disabled(e.values)
+        for name in e.controls:
+            if name in {n for k in CONSTRUCTIONS for n in parameters(k)}:
+                assert (name in off) == (name not in parameters(kind)), (kind, name)
+        assert all(k in e.explain() for k in e.readout_values), kind
+
+
+def test_newton_euler_from_the_menu_matches_the_hand_derivation():
+    # the same body as test_newton_euler_and_rho_by_hand, reached through the menu
+    e = ConstructionExplorer(display="agg")
+    e.set(construction="newton_euler")
+    e.set(m=1.0, xc=0.0, yc=0.0, r=0.5, xv=0.0, yv=2.0, w=1.0, xa=1.0, ya=0.0, alpha=1.0,
+          xj=-0.75, yj=0.0)
+    assert e.message == ""
+    assert e.readout_values["fⁿᵉᵗ"] == pytest.approx((0.0, 1.0, 0.25))
+    assert e.readout_values["τ"] == pytest.approx(1.0)
+    assert e.readout_strings["fⁿᵉᵗ"] == "(0 N, 1 N, 0.25 N·m)"       # one unit per component
+
+
+def test_the_key_names_the_roles_on_screen():
+    e = ConstructionExplorer("newton_euler", display="agg", key=True)
+    from planargeo.draw.artists import legend_handles
+
+    labels = {h.get_label() for h in legend_handles(e.ax)}
+    assert {"velocity pole (a twist)", "acceleration pole", "force line (a wrench)",
+            "bias force p", "inertia I: circle of gyration"} <= labels
+    assert e._legend is not None and len(e._legend.get_texts()) == len(labels)
+    e.set(step=1)                      # only the inertia is drawn: the key says only that
+    assert {h.get_label() for h in legend_handles(e.ax)} == {"inertia I: circle of gyration"}
+
+
+def test_sliders_say_symbols_and_units_not_code_names():
+    e = ConstructionExplorer("acceleration", display="agg")
+    shown = {k: w.description for k, w in e.controls.items() if k in parameters("acceleration")}
+    assert shown["qdd"] == "q̈ᵢ (rad/s²)" and shown["alpha"] == "αᵢ₋₁ (rad/s²)"
+    for text in shown.values():
+        assert "_" not in text and "(" in text
+    for k, v in e.readout_values.items():
+        assert "_" not in k and not re.search(r"\b(qdd|qd|alpha|f_net|F_net)\b", k)
+
+
+def test_a_fresh_explorer_from_the_values_shows_the_same_after_a_history():
+    e = ConstructionExplorer(display="agg")
+    e.set(construction="wrench_sum")
+    e.drag("f1", e.handle_position("f1"), (0.5, 1.0), steps=2)
+    e.set(step=2, earlier="hidden")
+    fresh = ConstructionExplorer(display="agg", **e.values)
+    assert fresh.readout_strings == e.readout_strings and fresh.caption == e.caption
+    e.reset()
+    assert e.values == ConstructionExplorer(display="agg").values
+    assert e.construction == "twist_sum" and e.readout_values["step"] == "3/3"

@@ -15,7 +15,7 @@ kind               what is constructed                                          
 ``wrench_sum``     ``f₃ = f₁ + f₂``: the line through the meet of the lines      4.33–4.46
 ``velocity``       ``vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ`` across a revolute joint                 4.47–4.49
 ``acceleration``   ``aᵢ = aᵢ₋₁ + sᵢ q̈ᵢ + vᵢ × sᵢ q̇ᵢ``                            4.52–4.54
-``newton_euler``   ``f_net = I a + p`` and the joint torque as ``ρ = τ/F``       4.55–4.57
+``newton_euler``   ``fⁿᵉᵗ = I a + p`` and the joint torque as ``ρ = τ/|fⁿᵉᵗ|``   4.55–4.57
 ``through_inf…``   a pole dragged through infinity (``through_infinity``)        10.2.4
 =================  ============================================================  ============
 
@@ -28,7 +28,7 @@ Examples
 >>> c = construct("twist_sum", x1=0.0, y1=0.0, w1=1.0, x2=4.0, y2=0.0, w2=3.0)
 >>> [s.id for s in c.steps]
 ['poles', 'lever', 'sum']
->>> c.values["pole of v3"], c.values["β"]           # 3/4 of the way from Q₁ to Q₂ (4.12)
+>>> c.values["pole of v₃"], c.values["β"]           # 3/4 of the way from Q₁ to Q₂ (4.12)
 ((3.0, 0.0), 0.75)
 """
 from __future__ import annotations
@@ -40,7 +40,7 @@ from typing import Any, Callable
 import numpy as np
 
 from planargeo.errors import InputError
-from planargeo.geometry.projective import from_xy, join, to_xy
+from planargeo.geometry.projective import direction, from_xy, is_ideal, join, to_xy
 from planargeo.screws.inertia import centre_of_mass
 from planargeo.screws.special import (horizon_point, pair_case, twist_case, twists_case, wrench_case,
                                       wrenches_case)
@@ -165,8 +165,22 @@ def _seg(name, p, q, role="construct", label="") -> Element:
 
 
 def _xy_or_inf(p) -> Any:
+    """``(x, y)`` of a finite point; the words "at infinity (direction (dx, dy))" for an ideal one.
+
+    Ideal-ness is the package's exact test (:func:`~planargeo.geometry.projective.is_ideal`).
+    """
     p = np.asarray(p, float)
-    return "at infinity" if p[2] == 0 else tuple(float(v) for v in to_xy(p))
+    if bool(is_ideal(p)):
+        d = direction(p)
+        return f"at infinity (direction ({_num4(d[0])}, {_num4(d[1])}))"
+    return tuple(float(v) + 0.0 for v in to_xy(p))
+
+
+def _num4(x) -> str:
+    x = float(x) + 0.0
+    if abs(x) <= 1e-12:
+        return "0"
+    return f"{x:.4g}"
 
 
 def _num(x) -> str:
@@ -228,7 +242,7 @@ def _twist_sum(x1=-1.5, y1=0.0, w1=1.0, u1=0.0, angle1=0.0,
     steps.append(ConstructionStep("sum", title, eq, sum_el))
     values = {"ω₁": c.omega1, "ω₂": c.omega2, "ω₃ = ω₁ + ω₂": c.omega3,
               "β": "—" if c.beta is None else c.beta, "ρ": "—" if c.rho is None else c.rho,
-              "pole of v3": "none" if c.P is None else _xy_or_inf(c.P)}
+              "pole of v₃": "none" if c.P is None else _xy_or_inf(c.P)}
     return Construction("twist_sum", "Twist addition", tuple(steps), values, case.text)
 
 
@@ -249,7 +263,7 @@ def _wrench_sum(x1=-1.5, y1=-0.5, F1=1.0, angle1=60.0, tau1=0.0,
         steps.append(ConstructionStep("meet", "two couples: no finite line to meet", "4.46"))
     elif case.name == "same_line":
         steps.append(ConstructionStep("meet", "L₁ = L₂: the forces share their line", "4.4.1"))
-    elif c.P[2] == 0:
+    elif bool(is_ideal(c.P)):
         steps.append(ConstructionStep("meet", "L₁ ∥ L₂: they meet at infinity", "5.34",
                                       (_pt("P", c.P, "accel", ""),)))
     elif c.case == "force_couple":
@@ -289,7 +303,7 @@ def _wrench_sum(x1=-1.5, y1=-0.5, F1=1.0, angle1=60.0, tau1=0.0,
     values = {"F₁": c.F1, "F₂": c.F2, "F₃": c.F3, "β": "—" if c.beta is None else c.beta,
               "ρ": "—" if c.rho is None else c.rho,
               "meet P": "none" if c.P is None else _xy_or_inf(c.P),
-              "f3": tuple(float(v) for v in c.sum.array)}
+              "f₃": tuple(float(v) for v in c.sum.array)}
     return Construction("wrench_sum", "Wrench addition", tuple(steps), values, case.text)
 
 
@@ -390,8 +404,8 @@ def _newton_euler(m=1.0, xc=0.5, yc=0.0, r=0.4, xv=0.5, yv=2.0, w=1.5, xa=2.0, y
     J = np.array([xj, yj])
     tau = float(f[2] - (xj * f[1] - yj * f[0]))     # moment of f about the joint (4.24)
     F = float(np.hypot(f[0], f[1]))
-    steps = [ConstructionStep("inertia", "I: the inertia, drawn as its circle of gyration ρ_g = "
-                              f"{_num(r)} about the centre of mass", "4.58, 10.2.3",
+    steps = [ConstructionStep("inertia", "I: the inertia, drawn as its circle of gyration, radius "
+                              f"r = {_num(r)} about the centre of mass", "4.58, 10.2.3",
                               (Element("I", "conic", I, "inertia", "$I$"),)),
              ConstructionStep("motion", "v, a: the velocity and acceleration poles", "4.47, 4.52",
                               tuple(e for e in (_pt("v", v, "twist", "$v$") if np.any(v) else None,
@@ -405,27 +419,27 @@ def _newton_euler(m=1.0, xc=0.5, yc=0.0, r=0.4, xv=0.5, yv=2.0, w=1.5, xa=2.0, y
                                   f"|p| = m l ω² = {_num(m * l * w * w)}", "4.56",
                                   (_ln("p", p, "momentum", "$p$"),) if np.any(p) else ()))
     if not np.any(f):
-        steps.append(ConstructionStep("fnet", "f_net = 0: the body needs no force", "4.55"))
+        steps.append(ConstructionStep("fnet", "fⁿᵉᵗ = 0: the body needs no force", "4.55"))
         rho = float("nan")
     else:
-        steps.append(ConstructionStep("fnet", "f_net = I a + p", "4.55",
+        steps.append(ConstructionStep("fnet", "fⁿᵉᵗ = I a + p", "4.55",
                                       (_ln("fnet", f, "wrench", r"$f^{net}$", True),)))
         els = [_pt("J", from_xy(J), "reaction", "joint")]
         if F == 0:
             rho = float("inf")
-            title = f"f_net is a couple: τ = {_num(tau)}, ρ = ∞"
+            title = f"fⁿᵉᵗ is a couple: τ = {_num(tau)}, ρ = ∞"
         else:
             rho = tau / F
             foot = J + rho * np.array([f[1], -f[0]]) / F     # ρ along n = (fy, −fx)/F (4.32)
             if rho != 0:
                 els.append(_seg("rho", J, foot, "construct", r"$\rho$"))
-            title = (f"ρ = τ/F_net = {_num(rho)}: the joint torque τ = {_num(tau)} is the net force's "
+            title = (f"ρ = τ/|fⁿᵉᵗ| = {_num(rho)}: the joint torque τ = {_num(tau)} is the net force's "
                      "moment about the joint" if rho != 0 else
-                     "ρ = 0: f_net passes through the joint (τ = 0, an unpowered joint)")
+                     "ρ = 0: fⁿᵉᵗ passes through the joint (τ = 0, an unpowered joint)")
         steps.append(ConstructionStep("rho", title, "4.57", tuple(els)))
     values = {"m": m, "|Ia|": float(np.hypot(*Ia[:2])), "|p|": float(np.hypot(*p[:2])),
-              "F_net": F, "τ": tau, "ρ = τ/F": rho, "f_net": tuple(float(x) for x in f),
-              "power of f_net on v": float(v @ f)}
+              "|fⁿᵉᵗ|": F, "τ": tau, "ρ = τ/|fⁿᵉᵗ|": rho, "fⁿᵉᵗ": tuple(float(x) for x in f),
+              "power of fⁿᵉᵗ on v": float(v @ f)}
     case = wrench_case(f).text if np.any(f) else "zero net force"
     if np.any(v) and np.any(f):
         case += "; " + pair_case(v, f).text
@@ -461,9 +475,9 @@ def _through_infinity(x1=-1.5, y1=-1.0, w1=1.0, hx=1.0, hy=0.5, k=1.5) -> Constr
     case = twists_case(v1, v2)
     steps.append(ConstructionStep("sum", f"v₃ = v₁ + v₂ moves on smoothly: {case.text.rsplit(' (', 1)[0]}",
                                   case.equation, tuple(els)))
-    values = {"weight of v₂": w, "v₂": case2.text, "pole of v2": _xy_or_inf(v2),
-              "pole of v3": "none" if c.P is None else _xy_or_inf(c.P),
-              "v3": tuple(float(x) for x in c.sum.array)}
+    values = {"weight of v₂": w, "v₂": case2.text.split(":")[0], "pole of v₂": _xy_or_inf(v2),
+              "pole of v₃": "none" if c.P is None else _xy_or_inf(c.P),
+              "v₃": tuple(float(x) for x in c.sum.array)}
     return Construction("through_infinity", "A pole through infinity", tuple(steps), values,
                         case.text)
 
