@@ -4,25 +4,58 @@ The suite (``benchmarks/`` beside the package in a source checkout, or ``--suite
 of the installed package: this command only finds it and runs ``benchmarks/run.py`` in a fresh
 process.  Results go to ``--out`` (default: a new temporary folder, printed at the end), never
 to the committed ``benchmarks/results``, ``benchmarks/RESULTS.md`` or ``gallery/`` files:
-only ``make bench`` rewrites those.  An ``--out`` folder must be new, empty or an earlier
-result (it holds ``RESULTS.md``); a folder of other files is refused unless ``--force``, so a
-run never overwrites files it did not write.
+only ``make bench`` rewrites those.
+
+A run never loses a file it did not write.  ``--out`` must be a new folder (its parent must
+exist), an empty one, or one ``planargeo bench`` made itself: such a folder holds the manifest
+``.planargeo-bench``, the SHA-256 and name of every file the command wrote there (the format of
+:mod:`planargeo.files`, as the gallery keeps).  Any other folder is refused unless ``--force``.
+The suite writes into a fresh hidden folder inside ``--out``; its files are then moved in,
+replacing only files that still hold what ``planargeo bench`` wrote (a file the user has
+changed or put there under the same name is left, and named in one line) unless ``--force``.
+Nothing is ever deleted.  Ctrl-C stops the suite and keeps the results it has written.
+
+Problems (a missing parent, a file in the way, a folder that cannot be created or written, a
+read-only file system) raise :class:`~planargeo.errors.OutputError`, which ``planargeo bench``
+prints as one line naming the folder (exit status 1, no success line).
+
+``--sizes`` (chain sizes ``N`` of the single-state tables) is bounded: each ``N`` a whole number
+from 1 to :data:`MAX_SIZE` (``--large``: up to the model builders' ``MAX_BODIES``), at most
+:data:`MAX_SIZE_COUNT` of them; anything else is refused before the run starts.
 """
 from __future__ import annotations
 
 import argparse
+import math
+import shutil
 import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
-from planargeo.errors import InputError, OutputError
+from planargeo.errors import InputError, NonFiniteError, OutputError, SizeLimitError
+from planargeo.files import atomic_write_many, digest, manifest_bytes, owned_files, read_manifest
 
-__all__ = ["add_arguments", "main", "find_suite", "out_folder"]
+__all__ = ["add_arguments", "main", "find_suite", "out_folder", "parse_sizes", "MANIFEST", "MAX_SIZE",
+           "MAX_SIZE_COUNT"]
+
+#: The manifest ``planargeo bench`` keeps in its ``--out`` folder (SHA-256 and name of each file written).
+MANIFEST = ".planargeo-bench"
+_MANIFEST_HEAD = ("# files written by `planargeo bench` (SHA-256, name); it replaces only these, and only "
+                  "while they still hold what it wrote")
+#: The largest chain size ``N`` of ``--sizes`` without ``--large``: the dense methods' single-state
+#: timings grow like ``N³`` (``N = 200``, the default's largest, takes seconds; ``N = 500`` about a minute).
+MAX_SIZE = 500
+#: At most this many ``--sizes``.
+MAX_SIZE_COUNT = 32
+_STAGE = ".planargeo-bench-run-"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    """Add ``planargeo bench``'s options (``--suite``, ``--out``, ``--quick``, ``--only``, ``--no-charts``, ``--force``) to ``parser``.
+    """Add ``planargeo bench``'s options to ``parser``.
+
+    ``--suite``, ``--out``, ``--quick``, ``--only``, ``--no-charts``, ``--sizes``, ``--large`` and
+    ``--force``.
 
     Parameters
     ----------
@@ -32,14 +65,86 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--suite", default=None,
                         help="the benchmarks folder (default: ./benchmarks, else the one beside the package)")
     parser.add_argument("--out", default=None,
-                        help="output folder (default: a new temporary folder)")
+                        help="output folder: new, empty, or an earlier result of planargeo bench "
+                             "(default: a new temporary folder)")
     parser.add_argument("--quick", action="store_true", help="fewer sizes and repeats (under a minute)")
     parser.add_argument("--only", action="append", default=None,
                         help="run only this group (repeatable): dynamics, breakdown, widgets, integrators, scenes, "
                              "truncated, browser")
     parser.add_argument("--no-charts", action="store_true", help="tables only")
+    parser.add_argument("--sizes", default=None, metavar="N,N,...",
+                        help=f"chain sizes N of the single-state tables, each from 1 to {MAX_SIZE} "
+                             f"(--large: to 10000), at most {MAX_SIZE_COUNT} of them")
+    parser.add_argument("--large", action="store_true",
+                        help=f"allow --sizes past {MAX_SIZE} (a deliberate long run: timings grow like N³)")
     parser.add_argument("--force", action="store_true",
-                        help="write into an --out folder that holds files other than an earlier result")
+                        help="write into an --out folder that planargeo bench did not make, replacing files "
+                             "of the same name as its results (nothing is ever deleted)")
+
+
+def parse_sizes(text: str, large: bool = False) -> tuple[int, ...]:
+    """The chain sizes of ``--sizes``: comma-separated whole numbers, each within the limit.
+
+    Parameters
+    ----------
+    text : str
+        E.g. ``"1,10,50"``; ``1e3`` is read as 1000.
+    large : bool, optional
+        Lift the limit from :data:`MAX_SIZE` to the model builders' ``MAX_BODIES`` (``--large``).
+
+    Returns
+    -------
+    tuple of int
+
+    Raises
+    ------
+    NonFiniteError
+        A size is ``inf`` or ``nan``.
+    SizeLimitError
+        A size past the limit, or more than :data:`MAX_SIZE_COUNT` sizes (the message says how to
+        lift the limit, where it can be).
+    InputError
+        A size that is not a positive whole number, or no size at all.
+
+    Examples
+    --------
+    >>> parse_sizes("1, 10,50")
+    (1, 10, 50)
+    >>> parse_sizes("1e6")
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.SizeLimitError: --sizes: N = 1e6 is past the limit of 500 bodies (single-state timings grow like N³); pass --large for a deliberate long run (up to 10000)
+    >>> parse_sizes("0")
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: --sizes: N must be a positive whole number, got 0
+    """
+    from planargeo.mechanics.model import MAX_BODIES
+
+    parts = [s.strip() for s in str(text).split(",")]
+    if not any(parts):
+        raise InputError(f"--sizes names no size, got {text!r}")
+    if len(parts) > MAX_SIZE_COUNT:
+        raise SizeLimitError(f"--sizes: {len(parts)} sizes, past the limit of {MAX_SIZE_COUNT}; "
+                             "run the benchmark again for more")
+    sizes = []
+    for s in parts:
+        try:
+            v = float(s)
+        except ValueError:
+            raise InputError(f"--sizes: N must be a positive whole number, got {s!r}") from None
+        if not math.isfinite(v):
+            raise NonFiniteError(f"--sizes: N must be finite, got {s}")
+        if not (v >= 1 and v == int(v)):
+            raise InputError(f"--sizes: N must be a positive whole number, got {s}")
+        if v > MAX_SIZE and not large:
+            raise SizeLimitError(f"--sizes: N = {s} is past the limit of {MAX_SIZE} bodies (single-state timings "
+                                 f"grow like N³); pass --large for a deliberate long run (up to {MAX_BODIES})")
+        if v > MAX_BODIES:
+            raise SizeLimitError(f"--sizes: N = {s} is past {MAX_BODIES} bodies, the model builders' limit "
+                                 "(MAX_BODIES), even with --large")
+        sizes.append(int(v))
+    return tuple(sizes)
 
 
 def find_suite(suite: str | None = None) -> Path:
@@ -68,26 +173,69 @@ def find_suite(suite: str | None = None) -> Path:
                      "(the benchmarks ship with the source checkout, not the installed package)")
 
 
+def _prepare(out: str | None, force: bool) -> tuple[Path, bool]:
+    """``(folder, created)``: the ``--out`` folder, checked and created if new (see :func:`out_folder`)."""
+    if out is None:
+        try:
+            return Path(tempfile.mkdtemp(prefix="planargeo-bench-")), True
+        except OSError as e:
+            raise OutputError(f"cannot create a temporary folder: {e.strerror or e}") from e
+    p = Path(out)
+    try:
+        if p.exists() or p.is_symlink():
+            if not p.is_dir():
+                raise OutputError(f"--out {p} is not a folder")
+            if read_manifest(p / MANIFEST) is None and any(p.iterdir()) and not force:
+                raise OutputError(f"--out {p} holds files that are not a benchmark result of planargeo bench "
+                                  f"(it has no {MANIFEST} manifest): choose another folder, or pass --force "
+                                  "to write there anyway (nothing is deleted)")
+            return p, False
+        if not p.parent.is_dir():
+            raise OutputError(f"--out {p}: the parent folder {p.parent} does not exist")
+        try:
+            p.mkdir()
+        except OSError as e:
+            raise OutputError(f"--out {p}: cannot create the folder: {e.strerror or e}") from e
+        return p, True
+    except OutputError as e:
+        if str(e).startswith("cannot read the manifest"):
+            raise OutputError(f"--out {p}: {e}") from e
+        raise
+    except OSError as e:                  # a name too long, no permission to look...
+        raise OutputError(f"--out {p}: {e.strerror or e}") from e
+
+
+def _stage(out: Path, created: bool) -> Path:
+    """A fresh hidden folder inside ``out`` for the suite to write into (proves ``out`` writable)."""
+    try:
+        return Path(tempfile.mkdtemp(dir=out, prefix=_STAGE))
+    except OSError as e:
+        if created:
+            shutil.rmtree(out, ignore_errors=True)
+        raise OutputError(f"--out {out}: cannot write in the folder: {e.strerror or e}") from e
+
+
 def out_folder(out: str | None, force: bool = False) -> Path:
-    """The folder the results go to: ``out`` (checked) or a new temporary folder.
+    """The folder the results go to: ``out`` (checked, created if new) or a new temporary folder.
 
     Parameters
     ----------
     out : str or None
         The ``--out`` folder, or None for a new temporary folder.
     force : bool, optional
-        Accept a folder holding other files.
+        Accept a folder holding files that are not a result of ``planargeo bench``.
 
     Returns
     -------
     pathlib.Path
-        The folder (created if needed).
+        The folder; it exists and files can be created in it.
 
     Raises
     ------
     OutputError
-        ``out`` has no existing parent, is a file, or holds files that are not an earlier result
-        (no ``RESULTS.md``) and ``force`` is not given.
+        ``out`` has no existing parent, is a file, cannot be created or written into (no
+        permission, a read-only file system, ``/proc``), or holds files and no manifest of
+        ``planargeo bench`` while ``force`` is not given.
 
     Examples
     --------
@@ -96,22 +244,51 @@ def out_folder(out: str | None, force: bool = False) -> Path:
     ...
     planargeo.errors.OutputError: --out /dev/full is not a folder
     """
-    if out is None:
-        return Path(tempfile.mkdtemp(prefix="planargeo-bench-"))
-    p = Path(out)
-    try:
-        if not p.parent.is_dir():
-            raise OutputError(f"--out {p}: the parent folder {p.parent} does not exist")
-        if p.exists() and not p.is_dir():
-            raise OutputError(f"--out {p} is not a folder")
-        if p.is_dir() and any(p.iterdir()) and not (p / "RESULTS.md").is_file() and not force:
-            raise OutputError(f"--out {p} holds files that are not a benchmark result: choose another folder, "
-                              "or pass --force to write there anyway")
-    except OutputError:
-        raise
-    except OSError as e:
-        raise OutputError(f"--out {p}: {e.strerror or e}") from e
+    p, created = _prepare(out, force)
+    shutil.rmtree(_stage(p, created))
     return p
+
+
+def _produced(stage: Path) -> dict[str, bytes]:
+    """``{relative name: bytes}`` of the regular files under ``stage``."""
+    return {p.relative_to(stage).as_posix(): p.read_bytes()
+            for p in sorted(stage.rglob("*")) if p.is_file() and not p.is_symlink()}
+
+
+def _move_in(stage: Path, out: Path, force: bool) -> tuple[list[str], list[str]]:
+    """Move the suite's files from ``stage`` into ``out``; return ``(written, left)``.
+
+    A file of ``out`` is replaced only if it still holds what ``planargeo bench`` wrote (or with
+    ``force``); the others are ``left``.  The manifest is rewritten with the files written.
+    """
+    new = _produced(stage)
+    try:
+        own, _changed = owned_files(out, read_manifest(out / MANIFEST) or {})
+        taken = {n for n in new if (out / n).exists() or (out / n).is_symlink()}
+    except OSError as e:
+        raise OutputError(f"--out {out}: {e.strerror or e}") from e
+    left = sorted(n for n in taken - set(own) if not force)
+    write = {n: d for n, d in new.items() if n not in left}
+    entries = {**own, **{n: digest(d) for n, d in write.items()}}
+    files = {out / n: d for n, d in write.items()}
+    files[out / MANIFEST] = manifest_bytes(_MANIFEST_HEAD, entries)
+    atomic_write_many(files)
+    return sorted(write), left
+
+
+def _run(cmd: list[str], cwd: str) -> tuple[int, bool]:
+    """``(exit status, interrupted)`` of the suite; on Ctrl-C the suite (which gets the signal too)
+    is given time to stop by itself, so that what it has written is kept."""
+    proc = subprocess.Popen(cmd, cwd=cwd)
+    try:
+        return proc.wait(), False
+    except KeyboardInterrupt:
+        try:
+            proc.wait(timeout=10)
+        except (subprocess.TimeoutExpired, KeyboardInterrupt):
+            proc.kill()
+            proc.wait()
+        return 130, True
 
 
 def main(args: argparse.Namespace) -> int:
@@ -125,22 +302,53 @@ def main(args: argparse.Namespace) -> int:
     Returns
     -------
     int
-        Exit status: the suite's, or 2 when no suite is found.
+        Exit status: 0, the suite's when it fails, 1 when a result was not written because a
+        file of the user's has its name, 2 when no suite is found, 130 after Ctrl-C (the results
+        written until then are kept).
+
+    Raises
+    ------
+    InputError
+        ``--sizes`` out of bounds (:func:`parse_sizes`).
+    OutputError
+        ``--out`` cannot be used (:func:`out_folder`).
     """
+    sizes = parse_sizes(args.sizes, getattr(args, "large", False)) if getattr(args, "sizes", None) is not None \
+        else None
     try:
         suite = find_suite(args.suite)
     except InputError as e:
         print(f"planargeo bench: error: {e}", file=sys.stderr)
         return 2
-    out = out_folder(args.out, args.force)
-    cmd = [sys.executable, str(suite / "run.py"), "--out", str(out.resolve()),
-           "--summary", str(out.resolve() / "RESULTS.md"), "--gallery", ""]
-    if args.quick:
-        cmd.append("--quick")
-    if args.no_charts:
-        cmd.append("--no-charts")
-    for group in args.only or ():
-        cmd += ["--only", group]
-    rc = subprocess.call(cmd, cwd=str(suite.parent))
+    out, created = _prepare(args.out, args.force)
+    stage = _stage(out, created)
+    try:
+        cmd = [sys.executable, str(suite / "run.py"), "--out", str(stage.resolve()),
+               "--summary", str(stage.resolve() / "RESULTS.md"), "--gallery", ""]
+        if args.quick:
+            cmd.append("--quick")
+        if args.no_charts:
+            cmd.append("--no-charts")
+        if sizes:
+            cmd += ["--sizes", ",".join(map(str, sizes))]
+        for group in args.only or ():
+            cmd += ["--only", group]
+        rc, interrupted = _run(cmd, str(suite.parent))
+        written, left = _move_in(stage, out, args.force)
+    finally:
+        shutil.rmtree(stage, ignore_errors=True)
+    if interrupted:
+        print(f"planargeo bench: interrupted; the {len(written)} result files written so far are in {out}",
+              file=sys.stderr)
+        return 130
+    if left:
+        print(f"planargeo bench: error: left {', '.join(left)} in {out} as {'it is' if len(left) == 1 else 'they are'}"
+              f" (not what planargeo bench wrote there, so yours); pass --force to replace "
+              f"{'it' if len(left) == 1 else 'them'}", file=sys.stderr)
+        return rc or 1
+    if rc:
+        print(f"planargeo bench: error: the benchmark suite failed (exit status {rc}); "
+              f"{len(written)} result files are in {out}", file=sys.stderr)
+        return rc
     print(f"planargeo bench: results in {out}")
-    return rc
+    return 0
