@@ -160,3 +160,39 @@ def test_angular_acceleration_only_redraws(ex, monkeypatch):
     ex.controls["pole x"].value = -0.3
     assert len(calls) == 1
     assert ex.readout_values["mass m"] == pytest.approx(2.0)
+
+
+# ---------------------------------------------------------------- issue 22: controls, units, symbols
+def test_controls_that_do_nothing_in_a_drive_are_disabled_with_the_reason(ex):
+    off = ex.disabled(ex.values)
+    assert "impact" in off["impact at"] and "pole x" not in off
+    before = dict(ex.readout_values)
+    ex.controls["impact at"].value = 0.9                 # indeed it changes nothing here
+    assert ex.readout_values == before
+    ex.set(drive="impact")
+    off = ex.disabled(ex.values)
+    assert "impact at" not in off and "pole x" in off and "pole y" in off
+    before = dict(ex.readout_values)
+    ex.set(**{"pole x": 1.0, "pole y": 0.5})             # the impact sets the pole here
+    assert ex.readout_values == before
+    assert "polygon" in off                              # a preset shape: the text is not read
+
+
+def test_sliders_and_rows_have_units_and_meanings(ex):
+    for name, unit in (("pole x", "(m)"), ("pole y", "(m)"), ("impact at", "(m)"),
+                       ("angular accel. α", "(rad/s²)")):
+        assert ex.controls[name].description.endswith(unit), name
+    for drive in ("acceleration pole", "impact"):
+        ex.set(drive=drive)
+        for k, v in ex.readout_values.items():
+            assert k in ex.explain(), k
+            if isinstance(v, (float, tuple)):
+                assert ex.units.get(k) not in (None, "", "—"), k
+
+
+def test_a_fresh_explorer_from_the_values_shows_the_same(ex):
+    ex.set(drive="impact")
+    ex.drag("impact", (0.5, 0.0), (0.7, 0.0), steps=2)
+    ex.set(**{"angular accel. α": -4.0})
+    fresh = PercussionExplorer(display="agg", **ex.values)
+    assert fresh.readout_strings == ex.readout_strings

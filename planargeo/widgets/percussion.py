@@ -40,7 +40,8 @@ from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
 from planargeo.draw.style import COLORS
 from planargeo.errors import DegenerateGeometryError, InputError, InvalidPolygonError
 from planargeo.screws.inertia import Inertia, percussion_axis, percussion_pole
-from planargeo.geometry.projective import from_xy
+from planargeo.geometry.projective import from_xy, is_ideal
+from planargeo.widgets._points import point_value
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["PercussionExplorer", "PRESETS", "parse_polygon"]
@@ -116,7 +117,7 @@ class PercussionExplorer(Explorer):
              "centre of mass": "m", "pole": "m", "d = |pole − c|": "m", "r = ρ²/d (5.68)": "m",
              "l = d + ρ²/d (5.67)": "m", "force for α: m d α (5.66)": "N",
              "centre of percussion": "m", "sweet spot of the grip": "m", "impact at": "m",
-             "pole distance from grip": "m"}
+             "pole distance from grip": "m", "angular accel. α": "rad/s²"}
 
     def __init__(self, **kw):
         self._inertias: dict = {}   # shape key -> (shape, unit-density Inertia)
@@ -131,9 +132,9 @@ class PercussionExplorer(Explorer):
             ``{name: widget}``.
         """
         return {
-            "pole x": Step(-1.5, 2.0, 0.01, 0.0, "pole x").make("pole x"),
-            "pole y": Step(-1.2, 1.2, 0.01, 0.0, "pole y").make("pole y"),
-            "impact at": Step(-0.5, 1.5, 0.005, 0.5, "impact at (x)").make("impact at"),
+            "pole x": Step(-1.5, 2.0, 0.01, 0.0, "pole of a: x (m)").make("pole x"),
+            "pole y": Step(-1.2, 1.2, 0.01, 0.0, "pole of a: y (m)").make("pole y"),
+            "impact at": Step(-0.5, 1.5, 0.005, 0.5, "impact at x (m)").make("impact at"),
             "drive": W.ToggleButtons(options=("acceleration pole", "impact"),
                                      value="acceleration pole", description="drive"),
             "shape": W.Dropdown(options=list(PRESETS), value="bat", description="shape"),
@@ -141,7 +142,7 @@ class PercussionExplorer(Explorer):
                               continuous_update=False,
                               tooltip="vertices 'x, y; x, y; ...' (used with shape = custom polygon)"),
             "mass (kg)": Step(0.1, 5.0, 0.05, 1.0, "mass (kg)").make("mass"),
-            "angular accel. α": Step(-50, 50, 0.5, 10.0, "angular accel. α").make("alpha"),
+            "angular accel. α": Step(-50, 50, 0.5, 10.0, "angular accel. α (rad/s²)").make("alpha"),
         }
 
     def make_artists(self, ax):
@@ -179,6 +180,60 @@ class PercussionExplorer(Explorer):
         self.pole_art.set_label("acceleration pole a")
         self.axis_art.set_label("axis of percussion f = I a")
 
+    def disabled(self, values):
+        """Controls that change nothing in the drive or shape chosen, with the reason.
+
+        Parameters
+        ----------
+        values : dict
+
+        Returns
+        -------
+        dict
+        """
+        out = {}
+        if values["drive"] == "impact":
+            reason = "the impact sets the pole here (a = I⁻¹f): choose drive = acceleration pole to move it"
+            out["pole x"] = out["pole y"] = reason
+        else:
+            out["impact at"] = "only the impact drive strikes the body: choose drive = impact"
+        if values["shape"] != "custom polygon":
+            out["polygon"] = "used with shape = custom polygon"
+        return out
+
+    def explain(self):
+        """Every symbol on screen, with its thesis equation.
+
+        Returns
+        -------
+        dict
+        """
+        return {
+            "a": "the acceleration pole: the point of the body with no acceleration (5.64)",
+            "pole x": "x of the acceleration pole a", "pole y": "y of the acceleration pole a",
+            "pole": "the acceleration pole a (5.64)",
+            "I": "the body's inertia, an imaginary conic, drawn as its circle of gyration (5.4, 1.65)",
+            "ρ": "radius of gyration about the centre of mass: J = m ρ² (1.65)",
+            "radius of gyration ρ": "ρ with J = m ρ² about the centre of mass (1.65)",
+            "c": "the centre of mass (1.65)", "centre of mass": "the centre of mass c (1.65)",
+            "mass m": "the body's mass (a uniform lamina of the shape)",
+            "axis of percussion f = I a": "the line of the force f = I a that gives the body the "
+                                          "acceleration pole a from rest (5.64)",
+            "d = |pole − c|": "distance from the pole to the centre of mass (5.66)",
+            "r = ρ²/d (5.68)": "distance from the centre of mass to the axis of percussion (5.68)",
+            "l = d + ρ²/d (5.67)": "distance from the pole to the axis of percussion (5.67)",
+            "angular accel. α": "the angular acceleration about the pole (5.66)",
+            "force for α: m d α (5.66)": "the force the axis of percussion carries for α (5.66)",
+            "centre of percussion": "where the axis of percussion crosses the line pole – centre "
+                                    "of mass (5.68)",
+            "sweet spot of the grip": "the centre of percussion for a turn about the grip: strike "
+                                      "there and the hands feel no sting (5.67)",
+            "grip": "the grip (the origin), where the hands hold the body",
+            "impact at": "where the blow across the long axis strikes (x along the body)",
+            "pole distance from grip": "distance of the resulting pole from the grip: 0 at the "
+                                       "sweet spot (5.67)",
+        }
+
     # -- handles -------------------------------------------------------------------
     def _axis_points(self):
         """(point on the axis nearest ``c``, a second point on it), or None (no finite axis)."""
@@ -197,7 +252,7 @@ class PercussionExplorer(Explorer):
     def _pole_for_axis(self, f):
         """Control values whose acceleration pole has ``f`` as its axis (``a = I⁻¹ f``)."""
         a = percussion_pole(self.state["I"].matrix, f)
-        if a[2] == 0 or abs(a[2]) <= 1e-12 * float(np.abs(a).max()):
+        if bool(is_ideal(a)) or abs(a[2]) <= 1e-12 * float(np.abs(a).max()):
             raise DegenerateGeometryError("an axis through the centre of mass has its pole at "
                                           "infinity (a pure translation)")
         x, y = float(-a[1] / a[2]), float(a[0] / a[2])
@@ -309,15 +364,16 @@ class PercussionExplorer(Explorer):
         self.com_art.set_point(from_xy(c))
         rho = float(I.radius_of_gyration)
         m = float(I.mass)
-        out = {"pole x": self.values["pole x"], "pole y": self.values["pole y"],
-               "mass m": m, "radius of gyration ρ": rho, "centre of mass": tuple(c)}
-        finite_pole = a[2] != 0
+        impact = self.values["drive"] == "impact"
+        out = {} if impact else {"pole x": self.values["pole x"], "pole y": self.values["pole y"]}
+        out.update({"mass m": m, "radius of gyration ρ": rho, "centre of mass": tuple(c)})
+        finite_pole = not bool(is_ideal(a))
         if finite_pole:
             P = np.array([-a[1] / a[2], a[0] / a[2]])
             d = float(np.hypot(*(P - c)))
         else:
             P, d = None, math.inf
-        out["pole"] = "at infinity" if P is None else tuple(P)
+        out["pole"] = point_value(a)
         out["d = |pole − c|"] = d
         # the construction line from the pole through the centre of mass
         if P is not None and d > 1e-9 * max(rho, 1e-300):
@@ -328,6 +384,7 @@ class PercussionExplorer(Explorer):
             self.spot.set_data([spot[0]], [spot[1]])
             out["r = ρ²/d (5.68)"] = r
             out["l = d + ρ²/d (5.67)"] = d + r
+            out["angular accel. α"] = float(self.values["angular accel. α"])
             out["force for α: m d α (5.66)"] = m * d * float(self.values["angular accel. α"])
             out["centre of percussion"] = tuple(spot)
         else:
