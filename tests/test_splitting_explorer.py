@@ -75,15 +75,15 @@ def test_thesis_example_7_5_in_the_readout():
     ex = SplittingExplorer(display="agg")                     # n = 2, rho = L/2, phi = 45°, tau = 1
     r = ex.readout_values
     a_ref, f_ref = kkt_pinned_chain(2, 0.5, math.pi / 4, 1.0)
-    np.testing.assert_allclose(r["a_n (tip)"], a_ref[1], atol=1e-12)                 # 7.46
+    np.testing.assert_allclose(r["aₙ (tip)"], a_ref[1], atol=1e-12)                 # 7.46
     x = -a_ref[1][1] / a_ref[1][2]
-    assert r["x/L of a_n's pole (7.48)"] == pytest.approx(x, rel=1e-12)             # 7.47-7.48
+    assert r["x/L of aₙ's pole (7.48)"] == pytest.approx(x, rel=1e-12)             # 7.47-7.48
     assert r["x/L closed form"] == pytest.approx(x, rel=1e-12)
     assert x == pytest.approx(1.2357022603955, rel=1e-12)      # errata: 1.613 with 7.38a as printed
-    np.testing.assert_allclose(r["f_i+1 (7.56)"], f_ref[1], atol=1e-12)
-    np.testing.assert_allclose(r["a_i (7.54)"], a_ref[0], atol=1e-12)
+    np.testing.assert_allclose(r["fᵢ₊₁ (7.56)"], f_ref[1], atol=1e-12)
+    np.testing.assert_allclose(r["aᵢ (7.54)"], a_ref[0], atol=1e-12)
     # 7.42: Lambda_1^-1 = diag(0, 0, 4 / (m (L^2 + 4 rho^2)))
-    np.testing.assert_allclose(np.array([r["Λ_i⁻¹ row 1"], r["Λ_i⁻¹ row 2"], r["Λ_i⁻¹ row 3"]]),
+    np.testing.assert_allclose(np.array([r["row 1 of Λᵢ⁻¹"], r["row 2 of Λᵢ⁻¹"], r["row 3 of Λᵢ⁻¹"]]),
                                np.diag([0.0, 0.0, 2.0]), atol=1e-12)
     _legible(ex)
 
@@ -107,11 +107,11 @@ def test_split_accelerations_and_force_against_kkt(n, split, g, tau):
     a_ref, f_ref = kkt_pinned_chain(n, 0.4, math.radians(35.0), tau, g)
     r = ex.readout_values
     scale = 1 + np.abs(a_ref).max()
-    np.testing.assert_allclose(r["a_i (7.54)"], a_ref[split - 1], atol=1e-10 * scale)   # below the split
-    np.testing.assert_allclose(r["a_i+1"], a_ref[split], atol=1e-10 * scale)            # above it
-    np.testing.assert_allclose(r["f_i+1 (7.56)"], f_ref[split], atol=1e-10 * (1 + np.abs(f_ref).max()))
+    np.testing.assert_allclose(r["aᵢ (7.54)"], a_ref[split - 1], atol=1e-10 * scale)   # below the split
+    np.testing.assert_allclose(r["aᵢ₊₁"], a_ref[split], atol=1e-10 * scale)            # above it
+    np.testing.assert_allclose(r["fᵢ₊₁ (7.56)"], f_ref[split], atol=1e-10 * (1 + np.abs(f_ref).max()))
     np.testing.assert_allclose(ex.state["a"], a_ref, atol=1e-10 * scale)
-    assert "x/L of a_n's pole (7.48)" not in r
+    assert "x/L of aₙ's pole (7.48)" not in r
     _legible(ex)
 
 

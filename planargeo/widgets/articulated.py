@@ -43,7 +43,7 @@ from planargeo.scenes.articulated import COMPONENTS, articulated_state, bent_cha
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip", "place_labels", "label_artist", "curve_candidates",
-           "line_candidates", "point_candidates"]
+           "line_candidates", "point_candidates", "fit_mechanism"]
 
 #: Most bodies the explorer shows.
 NMAX = 8
@@ -102,7 +102,65 @@ def bend_for_tip(xy, n: int, base: float, L: float = 1.0) -> float:
             hi = b
         else:
             lo = a
-    return float(0.5 * (lo + hi))
+    phi = 0.5 * (lo + hi)
+    # near its best the distance is flat to rounding (it grows as φ²): a round angle (1e-4°) that is
+    # as near counts as the answer, so that a drag along the straight chain gives φ = 0, not 2e-6°
+    rounded = math.radians(round(math.degrees(phi), 4))
+    if dist(rounded)[0] <= dist(phi)[0] + 1e-12 * (1.0 + float(np.hypot(*target))):
+        phi = rounded
+    return float(phi)
+
+
+def fit_mechanism(ax, mechanism, extra=(), margin: float = 0.15, reach: float = 3.0, least: float = 1.0):
+    """Fit the view to every point of the mechanism, and to the ``extra`` points near it.
+
+    Every finite point of ``mechanism`` stays in view, however many of them coincide (a folded
+    chain); an ``extra`` point (a pole, a centre) is kept when it lies within ``reach`` times the
+    mechanism's size of its middle (a farther one gets its edge arrow).  The view spans at least
+    ``least`` (the mechanism's own length scale).  Only the box's corners reach
+    :func:`planargeo.draw.layout.fit_view`, so no point of the mechanism is taken for an outlier.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    mechanism : array_like (m, 2)
+        Points that must be in view.
+    extra : array_like (k, 2)
+        Points kept in view when near the mechanism.
+    margin : float
+        Margin, a fraction of the box's larger side.
+    reach : float
+        How far (in mechanism sizes) an extra point may lie and still be kept in view.
+    least : float
+        Smallest span of the box (m).
+
+    Returns
+    -------
+    tuple
+        The limits ``(x0, x1, y0, y1)`` set.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> x0, x1, y0, y1 = fit_mechanism(ax, [[0, 0], [1, 0], [0, 0]], margin=0.0)
+    >>> x0 <= 0.0 and x1 >= 1.0 and x1 - x0 >= 1.0
+    True
+    """
+    M = np.asarray(mechanism, dtype=float).reshape(-1, 2)
+    M = M[np.all(np.isfinite(M), axis=1)]
+    lo, hi = M.min(axis=0), M.max(axis=0)
+    size = max(float(np.max(hi - lo)), least)
+    E = np.asarray(extra, dtype=float).reshape(-1, 2)
+    E = E[np.all(np.isfinite(E), axis=1)]
+    if len(E):
+        mid = 0.5 * (lo + hi)
+        E = E[np.hypot(*(E - mid).T) <= reach * size]
+        if len(E):
+            lo, hi = np.minimum(lo, E.min(axis=0)), np.maximum(hi, E.max(axis=0))
+    c, half = 0.5 * (lo + hi), 0.5 * np.maximum(hi - lo, least)
+    fit_view(ax, np.array([c - half, c + half]), margin=margin)
+    return (*ax.get_xlim(), *ax.get_ylim())
 
 
 def place_labels(ax, items) -> list:

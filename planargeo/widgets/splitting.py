@@ -32,13 +32,12 @@ import numpy as np
 from matplotlib.lines import Line2D
 
 from planargeo.draw.artists import LineArtist, PointArtist
-from planargeo.draw.layout import fit_view
 from planargeo.draw.style import COLORS, OKABE_ITO
 from planargeo.scenes.articulated import bent_chain_model
 from planargeo.scenes.splitting import splitting_state, twist_pole
-from planargeo.widgets.articulated import (bend_for_tip, label_artist, line_candidates, place_labels,
-                                           point_candidates)
-from planargeo.widgets.base import Explorer, Handle, Step, cached
+from planargeo.widgets.articulated import (bend_for_tip, fit_mechanism, label_artist, line_candidates,
+                                           place_labels, point_candidates)
+from planargeo.widgets.base import Explorer, Handle, Step, cached, point_text
 
 #: size (points) of the poles' own labels: that of the placed labels (``label_artist``)
 LABEL_FONT = 11.0
@@ -48,6 +47,8 @@ __all__ = ["SplittingExplorer", "NMAX", "x_over_L_7_48"]
 #: Most bodies the explorer shows.
 NMAX = 8
 _LOWER, _UPPER = OKABE_ITO["blue"], OKABE_ITO["vermillion"]
+#: units of an acceleration ``[a_x, a_y, α]``
+_ACC = ("m/s²", "m/s²", "rad/s²")
 
 
 def x_over_L_7_48(rho: float, L: float, phi: float) -> float:
@@ -90,7 +91,7 @@ class SplittingExplorer(Explorer):
     Thesis example 7.5 (``ρ = L/2``, ``φ = 45°``): the couple turns body 2 about ``x = 1.2357 L``.
 
     >>> ex = SplittingExplorer(display="agg")
-    >>> round(ex.readout_values["x/L of a_n's pole (7.48)"], 4), round(ex.readout_values["x/L closed form"], 4)
+    >>> round(ex.readout_values["x/L of aₙ's pole (7.48)"], 4), round(ex.readout_values["x/L closed form"], 4)
     (1.2357, 1.2357)
     """
 
@@ -98,12 +99,16 @@ class SplittingExplorer(Explorer):
     slug = "splitting"
     figsize = (7.6, 5.2)
     display_controls = ("mobility centres",)
+    #: lengths in metres (L = 1); a value below ``zero_tol × scale`` is round-off and reads 0 (the smallest
+    #: real values here, a 0.05 N·m couple on 8 bodies of ρ = 2 m, are above 1e-4)
+    scale = 1.0
+    zero_tol = 1e-6
     units = {
-        "split at joint": "—", "a_i (7.54)": "rad/s², m/s²", "a_i+1": "rad/s², m/s²",
-        "f_i+1 (7.56)": "N, N, N·m", "pole of a_i": "m", "pole of a_i+1": "m", "a_n (tip)": "rad/s², m/s²",
-        "x/L of a_n's pole (7.48)": "—", "x/L closed form": "—", "η = L/ρ (7.49)": "—",
-        "Λ_i⁻¹ row 1": "1/kg, 1/(kg·m)", "Λ_i⁻¹ row 2": "1/kg, 1/(kg·m)", "Λ_i⁻¹ row 3": "1/(kg·m), 1/(kg·m²)",
-        "b_i": "rad/s², m/s²", "q̈ (6.110)": "rad/s²",
+        "split at joint": "—", "aᵢ (7.54)": _ACC, "aᵢ₊₁": _ACC, "fᵢ₊₁ (7.56)": ("N", "N", "N·m"),
+        "aₙ (tip)": _ACC, "x/L of aₙ's pole (7.48)": "—", "x/L closed form": "—", "η = L/ρ (7.49)": "—",
+        "row 1 of Λᵢ⁻¹": ("1/kg", "1/kg", "1/(kg·m)"), "row 2 of Λᵢ⁻¹": ("1/kg", "1/kg", "1/(kg·m)"),
+        "row 3 of Λᵢ⁻¹": ("1/(kg·m)", "1/(kg·m)", "1/(kg·m²)"),
+        "bᵢ": _ACC, "q̈ (6.110)": "rad/s²",
     }
 
     def __init__(self, **kw):
@@ -136,7 +141,7 @@ class SplittingExplorer(Explorer):
         }
 
     def adjust(self, values, changed):
-        """The split joint stays on the chain (``2 <= i+1 <= n``).
+        """The split joint stays on the chain (``2 <= i+1 <= n``): the slider shows the joint used.
 
         Parameters
         ----------
@@ -150,6 +155,66 @@ class SplittingExplorer(Explorer):
         """
         n = int(values["bodies n"])
         return {"split at joint": n} if values["split at joint"] > n else {}
+
+    def disabled(self, values):
+        """Controls that would change nothing, with the reason.
+
+        Parameters
+        ----------
+        values : dict
+
+        Returns
+        -------
+        dict
+            ``{"split at joint": reason}`` for two bodies (the only joint to split at is joint 2).
+        """
+        if int(values["bodies n"]) == 2:
+            return {"split at joint": "two bodies: joint 2 is the only joint to split at (add bodies to move it)"}
+        return {}
+
+    def explain(self):
+        """Every symbol and readout name on screen: one-line meaning and thesis equation.
+
+        Returns
+        -------
+        dict
+        """
+        return {
+            "n": "number of bodies in the chain (mass 1 kg each, joints L = 1 m apart)",
+            "i": "the chain is split at joint i+1: bodies 1…i below it, i+1…n above it",
+            "j": "index of any body of the chain (its acceleration pole aⱼ)",
+            "ρ": "radius of gyration of each body (m)",
+            "L": "distance between joints, 1 m",
+            "φ": "bend: the angle of every body relative to the one before it (eq. 7.47)",
+            "τ": "size of the couple on the tip (N·m)",
+            "g": "gravity, along −y (m/s²)",
+            "−fₙ₊₁": "the couple on the tip, from a fictitious joint n+1 (eq. 7.44)",
+            "aⱼ": "acceleration of body j, drawn as its pole: the point with no acceleration (eq. 4.6)",
+            "aᵢ": "acceleration of body i, straight from the split (eq. 7.54)",
+            "aᵢ₊₁": "acceleration of body i+1, the first body of the free-floating chain (eq. 7.54)",
+            "aₙ": "acceleration of the tip body n (eq. 7.46 for n = 2)",
+            "fᵢ₊₁": "force of the split joint i+1 on body i+1, drawn as its line of action (eq. 7.56)",
+            "Λᵢ⁻¹": "articulated mobility of body i in the constrained chain 1…i (eq. 7.38a)",
+            "bᵢ": "bias acceleration of body i in the constrained chain: its acceleration with no force at joint i+1 (eq. 7.38a)",
+            "centre of Λᵢ⁻¹": "where a couple on body i alone turns it: the pole of −Λᵢ⁻¹ [0, 0, 1] (section 7.5)",
+            "split": "the joint i+1 where the chain is split",
+            "q̈": "joint accelerations of all joints, by chain splitting at every joint (eq. 6.110)",
+            "η": "size ratio η = L/ρ (eq. 7.49)",
+            "x/L": "where the pole of aₙ lies on the x axis, over L (eq. 7.47, 7.48)",
+            "split at joint": "the joint i+1 where the chain is split",
+            "aᵢ (7.54)": "acceleration of body i, straight from the split (eq. 7.54)",
+            "fᵢ₊₁ (7.56)": "force of the split joint on body i+1 (eq. 7.56)",
+            "pole of aᵢ": "the point of body i with no acceleration (eq. 4.6)",
+            "pole of aᵢ₊₁": "the point of body i+1 with no acceleration (eq. 4.6)",
+            "row 1 of Λᵢ⁻¹": "x acceleration of body i per unit force at it (eq. 7.38a)",
+            "row 2 of Λᵢ⁻¹": "y acceleration of body i per unit force at it (eq. 7.38a)",
+            "row 3 of Λᵢ⁻¹": "angular acceleration of body i per unit force at it (eq. 7.38a)",
+            "aₙ (tip)": "acceleration of the tip body (eq. 7.46 for n = 2)",
+            "q̈ (6.110)": "joint accelerations q̈₁…q̈ₙ by chain splitting (eq. 6.110)",
+            "x/L of aₙ's pole (7.48)": "pole of a₂ on the x axis over L, computed (n = 2, no gravity; eq. 7.48)",
+            "x/L closed form": "1 + 2η² cos φ / (4 + 5η²), by hand (eq. 7.48)",
+            "η = L/ρ (7.49)": "size ratio of the bodies (eq. 7.49)",
+        }
 
     def setup_axes(self, ax):
         """Equal-aspect axes with metre labels.
@@ -211,7 +276,9 @@ class SplittingExplorer(Explorer):
         """
         def split_where():
             st = self.state
-            return None if st is None else tuple(st["joints"][st["split"]])
+            if st is None or st["n"] < 3:             # two bodies: nowhere else to split (disabled)
+                return None
+            return tuple(st["joints"][st["split"]])
 
         def split_drag(x, y):
             st = self.state
@@ -284,16 +351,18 @@ class SplittingExplorer(Explorer):
         fxy = math.hypot(f[0], f[1])
         self.force.set_scale(0.6 / fxy if fxy > 0 else None)
         self.couple.set_line(-st["f_tip"])
-        view = [pts]
+        # the view: every joint and the split force's arrow; the poles at the split and the centre when near
+        mech = [pts] + ([[pts[i] + 0.6 * np.array(f[:2]) / fxy]] if fxy > 0 else [])
+        extra = []
         poles = [twist_pole(a) for a in st["a"]]
-        for b in (i - 1, i):                                   # the two bodies at the split stay in view
+        for b in (i - 1, i):                                   # the two bodies at the split
             if poles[b] is not None:
-                view.append([poles[b]])
+                extra.append([poles[b]])
         c = st["centres"][i - 1]
         show_c = bool(self.values["mobility centres"]) and bool(np.all(np.isfinite(c)))
         if show_c:
-            view.append([c])
-        fit_view(self.ax, np.vstack(view), margin=0.15)
+            extra.append([c])
+        fit_mechanism(self.ax, np.vstack(mech), np.vstack(extra) if extra else (), margin=0.15)
         (x0, x1), (y0, y1) = self.ax.get_xlim(), self.ax.get_ylim()
         for b in range(NMAX):
             art = self.poles[b]
@@ -343,24 +412,38 @@ class SplittingExplorer(Explorer):
         Lam = st["Lambda_inv"][i - 1]
         out = {
             "split at joint": i + 1,
-            "a_i (7.54)": tuple(st["a_split"]),
-            "a_i+1": tuple(st["a"][i]),
-            "f_i+1 (7.56)": tuple(f),
-            "pole of a_i": _pole_text(st["a"][i - 1]),
-            "pole of a_i+1": _pole_text(st["a"][i]),
-            "Λ_i⁻¹ row 1": tuple(Lam[0]), "Λ_i⁻¹ row 2": tuple(Lam[1]), "Λ_i⁻¹ row 3": tuple(Lam[2]),
-            "b_i": tuple(st["b"][i - 1]),
-            "a_n (tip)": tuple(st["a"][-1]),
-            "q̈ (6.110)": tuple(st["qdd"]),
+            "aᵢ (7.54)": _vec(st["a_split"]),
+            "aᵢ₊₁": _vec(st["a"][i]),
+            "fᵢ₊₁ (7.56)": _vec(f),
+            "pole of aᵢ": _pole_text(st["a"][i - 1]),
+            "pole of aᵢ₊₁": _pole_text(st["a"][i]),
+            "row 1 of Λᵢ⁻¹": _vec(Lam[0]), "row 2 of Λᵢ⁻¹": _vec(Lam[1]), "row 3 of Λᵢ⁻¹": _vec(Lam[2]),
+            "bᵢ": _vec(st["b"][i - 1]),
+            "aₙ (tip)": _vec(st["a"][-1]),
+            "q̈ (6.110)": _vec(st["qdd"]),
         }
         a_n = st["a"][-1]
         if n == 2 and float(self.values["g (m/s²)"]) == 0.0 and a_n[2] != 0:
-            out["x/L of a_n's pole (7.48)"] = float(-a_n[1] / a_n[2])
+            out["x/L of aₙ's pole (7.48)"] = float(-a_n[1] / a_n[2])
             out["x/L closed form"] = x_over_L_7_48(st["rho"], 1.0, st["phi"])
             out["η = L/ρ (7.49)"] = 1.0 / st["rho"]
         return out
 
 
-def _pole_text(a):
-    p = twist_pole(a)
-    return "at infinity (translation)" if p is None else tuple(p)
+def _vec(a) -> tuple:
+    """A vector as a tuple of plain floats (the readout's)."""
+    return tuple(float(x) for x in np.asarray(a, dtype=float))
+
+
+def _pole_text(a) -> str:
+    """The readout text of an acceleration's pole; a pure translation (as drawn: :func:`twist_pole`) is at infinity.
+
+    The acceleration ``[a_x, a_y, α]`` is the pole's homogeneous point (thesis 5.49); an ``α`` that
+    is round-off of the others (the drawing's own test) is the exact zero of a translation.
+    """
+    p = np.array(a, dtype=float)
+    if not np.any(np.abs(p) > SplittingExplorer.zero_tol * SplittingExplorer.scale):
+        return "none: no acceleration"
+    if twist_pole(p) is None:
+        p[2] = 0.0
+    return point_text(p, zero=SplittingExplorer.zero_tol * SplittingExplorer.scale)
