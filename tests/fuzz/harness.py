@@ -13,6 +13,7 @@ from __future__ import annotations
 import contextlib
 import dataclasses
 import math
+import re
 import signal
 import time
 import warnings
@@ -27,8 +28,30 @@ from planargeo.errors import PlanargeoError
 OK, PACKAGE, FOREIGN, NONFINITE, HANG, INCONSISTENT = (
     "ok", "package error", "foreign", "non-finite", "hang", "inconsistent")
 OUTCOMES = (OK, PACKAGE, FOREIGN, NONFINITE, HANG, INCONSISTENT)
-#: The outcomes that are defects.
-BAD = (FOREIGN, NONFINITE, HANG, INCONSISTENT)
+#: The outcomes that are defects (a call *failed*); ``ok`` is *computed*, ``package error`` *refused*.
+BAD = FAILED_OUTCOMES = (FOREIGN, NONFINITE, HANG, INCONSISTENT)
+
+#: Words of numpy, Python or the explorers' catch-all that must never reach a user.
+FOREIGN_WORDS = ("overflow encountered", "invalid value encountered", "divide by zero",
+                 "underflow encountered", "Traceback (most recent call last)", "internal error",
+                 "drawing failed")
+_TRACE = re.compile(r'File "[^"]+", line \d+')
+
+
+def foreign_text(text: str) -> str | None:
+    """The foreign phrase in a text shown to a user (numpy's words, a traceback), or None.
+
+    >>> foreign_text("cannot compute this configuration: overflow encountered in scalar multiply")
+    'overflow encountered'
+    >>> foreign_text("joint speeds must be finite numbers") is None
+    True
+    """
+    for w in FOREIGN_WORDS:
+        if w in text:
+            return w
+    if _TRACE.search(text):
+        return "a traceback"
+    return None
 
 
 #: numpy's default floating-point error handling (underflow to zero or a subnormal is no defect).
@@ -79,6 +102,10 @@ class Result:
     detail: str = ""
 
 
+#: Key of :attr:`Tally.examples` holding the first refusals (why calls were refused).
+REFUSALS = "refused"
+
+
 @dataclass
 class Tally:
     """Counts of one target's outcomes, the first example of each defect and the time spent."""
@@ -94,6 +121,24 @@ class Tally:
     @property
     def defects(self) -> int:
         return sum(self.counts[o] for o in BAD)
+
+    failed = defects
+
+    @property
+    def computed(self) -> int:
+        return self.counts[OK]
+
+    @property
+    def refused(self) -> int:
+        return self.counts[PACKAGE]
+
+
+def note_refusal(tally: Tally, r: Result, keep: int = 3) -> None:
+    """Keep the first ``keep`` distinct reasons of refusal (``run.py --refusals`` shows them)."""
+    if r.outcome == PACKAGE and r.detail:
+        seen = tally.examples.setdefault(REFUSALS, [])
+        if len(seen) < keep and r.detail not in seen:
+            seen.append(r.detail)
 
 
 @contextlib.contextmanager
@@ -171,16 +216,19 @@ def call_repr(name: str, args, kwargs) -> str:
     return f"{name}({', '.join(parts)})"
 
 
-def classify(target: Target, args, kwargs) -> Result:
-    """Call ``target.fn(*args, **kwargs)`` once and classify what happened."""
+def classify(target: Target, args, kwargs, timeout: float | None = None) -> Result:
+    """Call ``target.fn(*args, **kwargs)`` once and classify what happened (``timeout``: hang limit)."""
     try:
-        with time_limit(target.timeout), warnings.catch_warnings(), np.errstate(**NUMPY_ERRORS):
+        with time_limit(timeout or target.timeout), warnings.catch_warnings(), np.errstate(**NUMPY_ERRORS):
             warnings.simplefilter("error")
             out = target.fn(*args, **kwargs)
     except Hang as exc:
         return Result(HANG, str(exc))
-    except PlanargeoError:
-        return Result(PACKAGE)
+    except PlanargeoError as exc:
+        w = foreign_text(str(exc))
+        if w:
+            return Result(FOREIGN, f"{type(exc).__name__} in numpy's or Python's words ({w!r}): {str(exc)[:200]}")
+        return Result(PACKAGE, f"{type(exc).__name__}: {str(exc)[:160]}")
     except Exception as exc:  # noqa: BLE001 - the point: anything else is foreign
         return Result(FOREIGN, f"{type(exc).__module__}.{type(exc).__name__}: {str(exc)[:200]}")
     if target.check is not None:
@@ -194,8 +242,12 @@ def classify(target: Target, args, kwargs) -> Result:
 
 
 def run_target(target: Target, examples: int, *, seed: int | None = None, tally: Tally | None = None,
-               derandomize: bool = False) -> Tally:
-    """Draw ``examples`` argument sets from ``target.strategy`` and classify each call."""
+               derandomize: bool = False, timeout: float | None = None) -> Tally:
+    """Draw ``examples`` argument sets from ``target.strategy`` and classify each call.
+
+    ``timeout`` (seconds) overrides the target's hang limit; after a hang the target is not
+    called again (its remaining examples are skipped), which keeps a run bounded.
+    """
     from hypothesis import HealthCheck, Phase, given, settings
 
     tally = tally or Tally()
@@ -204,11 +256,14 @@ def run_target(target: Target, examples: int, *, seed: int | None = None, tally:
               phases=[Phase.generate], suppress_health_check=list(HealthCheck), print_blob=False)
     @given(target.strategy)
     def one(call):
+        if tally.counts[HANG]:
+            return
         args, kwargs = call
-        r = classify(target, args, kwargs)
+        r = classify(target, args, kwargs, timeout)
         tally.counts[r.outcome] += 1
         if r.outcome in BAD and r.outcome not in tally.examples:
             tally.examples[r.outcome] = f"{call_repr(target.name, args, kwargs)} -> {r.detail}"
+        note_refusal(tally, r)
 
     t0 = time.perf_counter()
     if seed is not None and not derandomize:

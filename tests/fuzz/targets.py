@@ -92,15 +92,29 @@ NONFINITE_OK = {
 
 
 def _signature_strategy(fn, overrides=None):
-    """``(args, kwargs)`` for ``fn``: its required arguments always, each optional one at times."""
+    """``(args, kwargs)`` for ``fn``: its required arguments always, each optional one at times.
+
+    Values from each argument's domain (:mod:`fuzz.strategies`), one hostile at times; where a
+    function takes both a joint's motion space ``s`` and its reaction space ``R``, valid calls
+    give the two of one joint (as the documentation asks).
+    """
     overrides = overrides or {}
     req, opt = {}, {}
     for name, p in inspect.signature(fn).parameters.items():
         if p.kind in (p.VAR_POSITIONAL, p.VAR_KEYWORD):
             continue
-        strat = overrides.get(name, S.BY_NAME.get(name, S.anything))
-        (req if p.default is p.empty else opt)[name] = strat
-    return st.fixed_dictionaries(req, optional=opt).map(lambda kw: ((), kw))
+        arg = overrides.get(name, S.BY_NAME.get(name, S.anything))
+        (req if p.default is p.empty else opt)[name] = arg
+    strat = S.call((), req, opt)
+    if "s" in {**req, **opt} and "R" in {**req, **opt} and "s" not in overrides:
+        def pair(t):
+            (args, kw), (s, R), keep = t
+            if keep or not all(isinstance(kw.get(k), np.ndarray) and np.all(np.isfinite(kw[k]))
+                               for k in ("s", "R")):
+                return args, kw
+            return args, dict(kw, s=s, R=R)
+        strat = st.tuples(strat, S.joint_pair, st.integers(0, 9).map(lambda k: k == 0)).map(pair)
+    return strat
 
 
 def signature_targets(module: str, group: str, overrides=None) -> list[Target]:
@@ -117,26 +131,48 @@ def signature_targets(module: str, group: str, overrides=None) -> list[Target]:
 
 
 #: Per-function argument overrides where a name means something else than usual.
+def _shapely(pts):
+    from shapely.geometry import Polygon
+
+    return Polygon(pts)
+
+
+def _polygon(k, r, x0, y0):
+    return [(x0 + r * math.cos(2 * math.pi * i / k + 0.3), y0 + r * math.sin(2 * math.pi * i / k + 0.3))
+            for i in range(k)]
+
+
 OVERRIDES = {
     "conic_from_coefficients": {k: S.scalars for k in "abcdef"},
-    "conic_from_affine": {"A": S.mat(2, 2), "t": S.xy},
-    "polygon_moments": {"geometry": st.one_of(
-        st.just([(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)]), st.lists(st.tuples(S.reals, S.reals), max_size=5),
-        S.junk)},
-    "kappa": {"qd": st.one_of(S.scalars, S.vec(2))},
-    "polar_construction_interior": {"lines": st.one_of(st.none(), S.lines, S.junk)},
-    "joint_cond": {k: S.scalars for k in ("smin", "A_norm2", "s_norm2")},
+    "conic_from_affine": {"A": S.mat(2, 2), "t": S.xy, "kind": S.choice("ellipse", "hyperbola", "parabola")},
+    "normalize": {"kind": S.choice("point", "line")},
+    "percussion_axis": {"point": S.points},
+    "polygon_moments": {"geometry": S.Arg(st.one_of(
+        st.just([(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)]),
+        st.builds(_polygon, st.integers(3, 9), st.sampled_from([1e-6, 0.01, 1.0, 100.0, 1e6]),
+                  S.ordinary, S.ordinary)).map(_shapely),
+        st.one_of(st.lists(st.tuples(S.reals, S.reals), max_size=2),
+                  st.just([(0.0, 0.0), (1.0, 1.0), (2.0, 2.0)]), st.just([(0, 0), (1, 1), (1, 0), (0, 1)]),
+                  st.just([(0.0, 0.0), (float("nan"), 1.0), (1.0, 0.0)]), S.junk))},
+    "kappa": {"s": S.Arg(st.just(np.array([[0.0], [0.0], [1.0]])), S.spaces.hostile),
+              "qd": S.Arg(st.one_of(S.finite, S.vec(1, nonzero=False).valid), S.scalars.hostile)},
+    "polar_construction_interior": {"lines": S.Arg(st.one_of(st.none(), S.lines.valid), S.junk)},
 }
 
 
 # --------------------------------------------------------------------------- the thin classes
-def _method(cls_factory, method, arg_strats, name, group):
-    """Target ``getattr(make(), method)(*args)`` with ``make`` a valid object."""
+def _method(cls_factory, method, args, name, group):
+    """Target ``getattr(make(), method)(*args)`` with ``make`` a valid object; ``args``: :class:`S.Arg` s."""
     def call(obj, *args):
         return getattr(obj, method)(*args)
 
-    strat = st.tuples(cls_factory, *arg_strats).map(lambda t: (t, {}))
+    strat = S.call((S.Arg(cls_factory, cls_factory), *args))
     return Target(name, call, strat, group=group, nonfinite_ok=_any_ideal)
+
+
+def _pos(*args):
+    """``(args, {})`` strategy of positional :class:`S.Arg` s."""
+    return S.call(tuple(args))
 
 
 def class_targets() -> list[Target]:
@@ -150,41 +186,44 @@ def class_targets() -> list[Target]:
                              pg.Conic(np.diag([1.0, 1.0, 0.0])), pg.Conic(np.diag([1.0, 0.0, 0.0]))])
     inertia = st.sampled_from([pg.Inertia.from_mass(1.0, (0.5, 0.0), 0.3), pg.Inertia.from_mass(2.0, (0.0, 0.0), 0.1)])
     twist = st.sampled_from([pg.Twist.rotation((1.0, 2.0), 3.0), pg.Twist.translation((1.0, 0.0))])
+    P = S.Arg(st.one_of(good_point, S.points.valid), S.points.hostile)
+    L = S.Arg(st.one_of(good_line, S.lines.valid), S.lines.hostile)
     G = "geometry"
     return [
-        Target("Point", pg.Point, st.tuples(S.points).map(lambda t: (t, {})), group=G),
-        Target("Point.from_xy", pg.Point.from_xy, st.tuples(S.scalars, S.scalars).map(lambda t: (t, {})), group=G),
-        Target("Point.at_infinity", pg.Point.at_infinity, st.tuples(S.xy).map(lambda t: (t, {})), group=G),
-        Target("Line", pg.Line, st.tuples(S.lines).map(lambda t: (t, {})), group=G),
-        Target("Line.from_point_direction", pg.Line.from_point_direction,
-               st.tuples(S.xy, S.xy).map(lambda t: (t, {})), group=G),
-        Target("Conic", pg.Conic, st.tuples(S.conics).map(lambda t: (t, {})), group=G),
-        Target("Conic.circle", pg.Conic.circle, st.tuples(S.xy, S.scalars).map(lambda t: (t, {})), group=G),
-        _method(good_point, "join", [st.one_of(good_point, S.points)], "Point.join", G),
-        _method(good_point, "distance_to", [st.one_of(good_line, S.lines)], "Point.distance_to", G),
-        _method(good_line, "meet", [st.one_of(good_line, S.lines)], "Line.meet", G),
-        _method(conic, "tangents_from", [st.one_of(good_point, S.points)], "Conic.tangents_from", G),
-        _method(conic, "pole", [st.one_of(good_line, S.lines)], "Conic.pole", G),
-        _method(conic, "polar", [st.one_of(good_point, S.points)], "Conic.polar", G),
+        Target("Point", pg.Point, _pos(S.points), group=G),
+        Target("Point.from_xy", pg.Point.from_xy, _pos(S.scalars, S.scalars), group=G),
+        Target("Point.at_infinity", pg.Point.at_infinity, _pos(S.direction), group=G),
+        Target("Line", pg.Line, _pos(S.lines), group=G),
+        Target("Line.from_point_direction", pg.Line.from_point_direction, _pos(S.xy, S.direction), group=G),
+        Target("Conic", pg.Conic, _pos(S.conics), group=G),
+        Target("Conic.circle", pg.Conic.circle, _pos(S.xy, S.positive()), group=G),
+        _method(good_point, "join", [P], "Point.join", G),
+        _method(good_point, "distance_to", [L], "Point.distance_to", G),
+        _method(good_line, "meet", [L], "Line.meet", G),
+        _method(conic, "tangents_from", [P], "Conic.tangents_from", G),
+        _method(conic, "pole", [L], "Conic.pole", G),
+        _method(conic, "polar", [P], "Conic.polar", G),
         _method(conic, "contains", [S.points], "Conic.contains", G),
-        Target("Twist.rotation", pg.Twist.rotation, st.tuples(S.xy, S.scalars).map(lambda t: (t, {})), group="screws"),
-        Target("Twist.translation", pg.Twist.translation, st.tuples(S.xy).map(lambda t: (t, {})), group="screws"),
-        Target("Wrench.force", pg.Wrench.force, st.tuples(S.xy, S.xy).map(lambda t: (t, {})), group="screws"),
-        Target("Wrench.couple", pg.Wrench.couple, st.tuples(S.scalars).map(lambda t: (t, {})), group="screws"),
-        Target("Inertia.from_mass", pg.Inertia.from_mass,
-               st.tuples(S.positive, S.xy, S.positive).map(lambda t: (t, {})), group="screws"),
-        Target("Inertia", pg.Inertia, st.tuples(S.inertias).map(lambda t: (t, {})), group="screws"),
+        Target("Twist.rotation", pg.Twist.rotation, _pos(S.xy, S.scalars), group="screws"),
+        Target("Twist.translation", pg.Twist.translation, _pos(S.direction), group="screws"),
+        Target("Wrench.force", pg.Wrench.force, _pos(S.xy, S.direction), group="screws"),
+        Target("Wrench.couple", pg.Wrench.couple, _pos(S.scalars), group="screws"),
+        Target("Inertia.from_mass", pg.Inertia.from_mass, _pos(S.positive(), S.xy, S.positive()), group="screws"),
+        Target("Inertia", pg.Inertia, _pos(S.inertias), group="screws"),
         _method(inertia, "percussion_axis", [S.points], "Inertia.percussion_axis", "screws"),
         _method(inertia, "percussion_pole", [S.lines], "Inertia.percussion_pole", "screws"),
         _method(inertia, "kinetic_energy", [S.points], "Inertia.kinetic_energy", "screws"),
         _method(twist, "power", [S.lines], "Twist.power", "screws"),
-        Target("add_twists", pg.add_twists, st.tuples(S.points, S.points).map(lambda t: (t, {})), group="screws"),
-        Target("add_wrenches", pg.add_wrenches, st.tuples(S.lines, S.lines).map(lambda t: (t, {})), group="screws"),
+        Target("add_twists", pg.add_twists, _pos(S.points, S.points), group="screws"),
+        Target("add_wrenches", pg.add_wrenches, _pos(S.lines, S.lines), group="screws"),
     ]
 
 
 # --------------------------------------------------------------------------- models, states, joints, contacts
 KINDS = ("revolute", "prismatic", "revolute_prismatic", "twin_prismatic", "plane", "fixed")
+#: Number of bodies: 1 up to the size limit (200 in chain_model without allow_large), ends included.
+N_BODIES = S.Arg(st.one_of(st.integers(1, 6), st.integers(1, 6), st.sampled_from([1, 2, 50, 199, 200])),
+                 S.ints.hostile)
 
 
 def _models():
@@ -198,17 +237,22 @@ def _models():
     return st.one_of(chains, chains, rand)
 
 
-def _state_vec(nq):
-    good = S._array((nq,), S.reals)
-    return st.one_of(good, good, good, good, st.just(np.zeros(nq)), st.just(None), S.vec(nq),
-                     st.integers(1, 3).flatmap(lambda k: S._array((k, nq), S.reals)))
+#: State entries: ordinary mostly, the ends of the float range at times.
+STATE_EL = st.one_of(*[S.ordinary] * 30, st.sampled_from(S.TINY), st.sampled_from(S.HUGE))
+
+
+def _state_vec(nq) -> S.Arg:
+    good = S._array((nq,), STATE_EL)
+    return S.Arg(st.one_of(good, good, good, st.just(np.zeros(nq))),
+                 st.one_of(S._array((nq,), S.nonfinite), st.just(None), S.hostile_vec(nq),
+                           st.integers(1, 3).flatmap(lambda k: S._array((k, nq + 1)))))
 
 
 def _dyn(name, fn, group="kernels", extra=("qd", "tau")):
     """``fn(model, q, *extra)`` on a model with a state of the right length (hostile variants included)."""
     def strat(model):
-        vecs = [_state_vec(model.nq) for _ in ("q",) + tuple(extra)]
-        return st.tuples(st.just(model), *vecs).map(lambda t: (t, {}))
+        return S.call((S.Arg(st.just(model), st.just(model)),) + tuple(
+            _state_vec(model.nq) for _ in ("q",) + tuple(extra)))
 
     return Target(name, fn, _models().flatmap(strat), group=group, timeout=10.0)
 
@@ -234,38 +278,49 @@ def kernel_targets() -> list[Target]:
         _dyn("forward_dynamics_projective", forward_dynamics_projective, group="algorithms"),
         _dyn("forward_dynamics_stacked", forward_dynamics_stacked, group="algorithms"),
         _dyn("forward_dynamics_mobility_split", forward_dynamics_mobility_split, group="algorithms"),
-        Target("chain_model", chain_model, st.fixed_dictionaries(
-            {"n": S.ints}, optional={"mass": S.positive, "length": S.positive,
-                                     "joint": S.choice(*KINDS), "gravity": S.vec(2)}).map(lambda kw: ((), kw)),
+        Target("chain_model", chain_model, S.call((), {"n": N_BODIES}, {
+            "mass": S.positive(), "length": S.positive(), "joint": S.choice(*KINDS), "gravity": S.xy}),
                group="kernels", timeout=10.0),
-        Target("random_model", random_model, st.fixed_dictionaries(
-            {"n": S.ints}, optional={"seed": S.ints, "tree": st.one_of(st.booleans(), S.junk),
-                                     "kinds": st.one_of(st.lists(S.choice(*KINDS), max_size=3).map(tuple), S.junk)}
-        ).map(lambda kw: ((), kw)), group="kernels", timeout=10.0),
+        Target("random_model", random_model, S.call((), {"n": N_BODIES}, {
+            "seed": S.Arg(st.one_of(st.none(), st.integers(0, 2**32 - 1)), S.ints.hostile),
+            "tree": S.Arg(st.booleans(), S.junk),
+            "kinds": S.Arg(st.lists(st.sampled_from(KINDS), min_size=1, max_size=3, unique=True).map(tuple),
+                           st.one_of(st.just(()), st.just(("glue",)), S.junk))}),
+               group="kernels", timeout=10.0),
     ]
 
 
 def mechanics_targets() -> list[Target]:
     from planargeo.mechanics.contacts import Contact
 
-    contact = st.fixed_dictionaries(
-        {"kind": S.choice("pin", "slider", "weld", "point"), "a": S.ints},
-        optional={"b": S.ints, "point_a": S.xy, "point_b": S.xy, "direction": S.xy, "angle": S.scalars})
-    return [Target("Contact", Contact, contact.map(lambda kw: ((), kw)), group="mechanics")]
+    contact = S.call((), {"kind": S.choice("pin", "slider", "weld"), "a": S.Arg(st.integers(0, 5), S.ints.hostile)},
+                     {"b": S.Arg(st.integers(-1, 5), S.ints.hostile), "point_a": S.xy, "point_b": S.xy,
+                      "direction": S.direction, "angle": S.scalars, "name": S.Arg(st.just("c"), st.just(3))})
+    return [Target("Contact", Contact, contact, group="mechanics")]
 
 
 # --------------------------------------------------------------------------- scenes
-def _param_strategy(default):
+def _param_strategy(default, limit=None) -> S.Arg:
+    """A scene parameter: near its default, same sign (a size up to its limit), or hostile."""
     if isinstance(default, bool):
-        return st.one_of(st.booleans(), S.junk, S.reals)
+        return S.Arg(st.booleans(), st.one_of(S.junk, S.reals))
     if isinstance(default, int):
-        return S.ints
+        hi = limit or max(2 * default, 3)
+        return S.Arg(st.one_of(st.integers(max(1, default // 2), max(default * 2, 2)),
+                               st.sampled_from([1, max(1, default - 1), default + 1, hi])),
+                     st.one_of(st.sampled_from([0, -1, 1.5, 10**30, 1e300, "3", None]),
+                               st.just(hi + 1) if limit else S.junk))
     if isinstance(default, float):
-        near = st.floats(min_value=-3 * abs(default) - 1, max_value=3 * abs(default) + 1)
-        return st.one_of(near, near, near, S.reals, S.junk, st.sampled_from([10**7, 10**400, 1e300]))
+        if default == 0.0:
+            good = st.one_of(st.floats(-1, 1), st.sampled_from([0.0, 1e-300, -1e-300]))
+        else:
+            sign = math.copysign(1.0, default)
+            good = st.one_of(st.floats(0.25, 4.0).map(lambda f: default * f), st.just(default),
+                             st.sampled_from([2.0, 10.0, 0.5]).map(lambda f: default * f))
+        return S.Arg(good, st.one_of(S.nonfinite, S.junk, st.sampled_from([10**400, 1e300, -1e300, -abs(default) - 1])))
     if isinstance(default, str):
-        return st.one_of(st.sampled_from([default, "revolute", "prismatic", "free", "constant-speed", ""]), S.junk)
-    return st.one_of(S.ints, S.junk)        # None defaults (seed)
+        return S.Arg(st.sampled_from([default]), st.one_of(st.sampled_from(["nope", ""]), S.junk))
+    return S.Arg(st.one_of(st.none(), st.integers(0, 10**6)), S.junk)        # None defaults (seed)
 
 
 def scene_targets() -> list[Target]:
@@ -273,23 +328,25 @@ def scene_targets() -> list[Target]:
 
     out = []
     for name in scenes.names():
-        params = scenes.parameters(name)
-        strat = st.fixed_dictionaries({}, optional={k: _param_strategy(v) for k, v in params.items()})
+        params, lim = scenes.parameters(name), scenes.limits(name)
+        strat = S.call((), {}, {k: _param_strategy(v, lim.get(k)) for k, v in params.items()})
         out.append(Target(f"scenes.build('{name}')", lambda _n=name, **kw: scenes.build(_n, **kw),
-                          strat.map(lambda kw: ((), kw)), group="scenes", timeout=15.0))
+                          strat, group="scenes", timeout=15.0))
     return out
 
 
 # --------------------------------------------------------------------------- simulate
 SIM_OPTIONS = {
     "method": S.choice("DOP853", "RK45", "RK23", "Radau", "BDF", "LSODA", "RK4"),
-    "rtol": st.one_of(st.sampled_from([1e-6, 1e-8]), S.scalars, st.just(-1.0)),
-    "atol": st.one_of(st.sampled_from([1e-8, 1e-10]), S.scalars),
-    "dt": st.one_of(st.sampled_from([None, 0.01, 0.05]), S.scalars, st.just(1e-300)),
-    "max_step": st.one_of(st.sampled_from([0.01, math.inf]), S.scalars, st.just(0.0)),
-    "cond_event": S.scalars,
+    "rtol": S.Arg(st.sampled_from([1e-6, 1e-8, 1e-10, 1e-3]), st.one_of(S.nonfinite, st.sampled_from([-1.0, 0.0]), S.junk)),
+    "atol": S.Arg(st.sampled_from([1e-8, 1e-10, 1e-12, 1e-6]), st.one_of(S.nonfinite, st.just(-1.0), S.junk)),
+    "dt": S.Arg(st.sampled_from([None, 0.01, 0.05, 0.002]), st.one_of(S.nonfinite, st.sampled_from([0.0, -0.1, 1e-300]), S.junk)),
+    "max_step": S.Arg(st.sampled_from([0.01, 0.1, math.inf]), st.one_of(st.sampled_from([0.0, -1.0, float("nan")]), S.junk)),
+    "cond_event": S.Arg(st.sampled_from([1e3, 1e6, 1e12]), st.one_of(S.nonfinite, st.just(-1.0), S.junk)),
 }
-T_END = st.one_of(st.floats(0.01, 0.3), st.floats(0.01, 0.3), st.floats(0.01, 0.3), S.scalars)
+#: Durations: short ones mostly (the run must be quick), tiny ones among them.
+T_END = S.Arg(st.one_of(st.floats(0.01, 0.3), st.floats(0.01, 0.3), st.sampled_from([1e-300, 5e-324, 1e-9, 0.5])),
+              st.one_of(S.nonfinite, st.sampled_from([0.0, -1.0, 1e300]), S.junk))
 
 
 def simulate_targets() -> list[Target]:
@@ -300,8 +357,8 @@ def simulate_targets() -> list[Target]:
         return simulate(model, q0, qd0, t_end, progress=False, **kw)
 
     def strat(model):
-        return st.tuples(st.just(model), _state_vec(model.nq), _state_vec(model.nq), T_END).flatmap(
-            lambda a: st.fixed_dictionaries({}, optional=SIM_OPTIONS).map(lambda kw: (a, kw)))
+        return S.call((S.Arg(st.just(model), st.just(model)), _state_vec(model.nq), _state_vec(model.nq), T_END),
+                      {}, SIM_OPTIONS)
 
     models = st.sampled_from([chain_model(1), chain_model(2), chain_model(2, joint="prismatic")])
     return [Target("simulate", run, models.flatmap(strat), group="simulate", timeout=20.0)]
@@ -318,21 +375,24 @@ def loops_targets() -> list[Target]:
         return simulate_loops(model, q0, qd0, t_end, progress=False, **kw)
 
     q0, qd0 = np.asarray(sc.state["q"], float), np.asarray(sc.state["qd"], float)
-    vec = st.one_of(st.just(q0), st.just(q0), _state_vec(model.nq))
-    vecd = st.one_of(st.just(qd0), st.just(qd0), _state_vec(model.nq))
+    near = S._array((model.nq,), st.floats(-0.05, 0.05))
+    vec = S.Arg(st.one_of(st.just(q0), near.map(lambda d: q0 + d), _state_vec(model.nq).valid),
+                _state_vec(model.nq).hostile)
+    vecd = S.Arg(st.one_of(st.just(qd0), near.map(lambda d: qd0 + 10 * d), _state_vec(model.nq).valid),
+                 _state_vec(model.nq).hostile)
+    gains = S.Arg(st.sampled_from([0.0, 1.0, 5.0, 50.0]), S.scalars.hostile)
     opts = dict(SIM_OPTIONS, stabilization=S.choice("projection", "baumgarte", "both", "none"),
-                alpha=S.scalars, beta=S.scalars, tol=S.tolerances, trigger=S.tolerances)
-    strat = st.tuples(vec, vecd, T_END).flatmap(
-        lambda a: st.fixed_dictionaries({}, optional=opts).map(lambda kw: (a, kw)))
-    closure = st.tuples(vec, vecd).flatmap(lambda a: st.fixed_dictionaries(
-        {}, optional={"fixed": st.one_of(st.lists(S.ints, max_size=3), S.junk), "tol": S.tolerances,
-                      "max_iter": S.ints}).map(lambda kw: ((model,) + a, kw)))
+                alpha=gains, beta=gains, tol=S.tolerances, trigger=S.tolerances)
+    strat = S.call((vec, vecd, T_END), {}, opts)
+    model_arg = S.Arg(st.just(model), st.just(model))
+    closure = S.call((model_arg, vec, vecd), {}, {
+        "fixed": S.Arg(st.lists(st.integers(0, model.nq - 1), max_size=1, unique=True), S.junk),
+        "tol": S.tolerances, "max_iter": S.Arg(st.integers(1, 50), S.ints.hostile)})
     return [Target("simulate_loops", run, strat, group="simulate", timeout=20.0),
             Target("loops.project_state", project_state, closure, group="simulate"),
-            Target("loops.closure_residual", closure_residual, vec.map(lambda q: ((model, q), {})), group="simulate"),
+            Target("loops.closure_residual", closure_residual, S.call((model_arg, vec)), group="simulate"),
             Target("loops.baumgarte", lambda **kw: baumgarte(model, **kw)(0.0, q0, qd0, np.zeros(model.nq)),
-                   st.fixed_dictionaries({}, optional={"alpha": S.scalars, "beta": S.scalars}).map(lambda kw: ((), kw)),
-                   group="simulate")]
+                   S.call((), {}, {"alpha": gains, "beta": gains}), group="simulate")]
 
 
 # --------------------------------------------------------------------------- command line
@@ -354,13 +414,14 @@ def tmpdir() -> Path:
 _counter = itertools.count()
 
 
-def _paths():
-    """Output paths inside the scratch folder, plus hostile ones that can never write elsewhere."""
+def _paths() -> S.Arg:
+    """Output paths: new ones inside the scratch folder, or hostile ones that can never write elsewhere."""
     fresh = st.builds(lambda: tmpdir() / f"out{next(_counter)}")
     named = st.sampled_from(["afile", "full", "full/mine.txt", "no/such/dir", "x" * 300, "a\0b", ".", ""]).map(
         lambda n: tmpdir() / n)
-    return st.one_of(fresh, fresh, named, st.sampled_from(["/dev/full", "/", "/proc/nonexistent/x"]),
-                     st.sampled_from([None, 3, b"\0"]))
+    return S.Arg(st.one_of(fresh, fresh.map(str)),
+                 st.one_of(named, st.sampled_from(["/dev/full", "/", "/proc/nonexistent/x"]),
+                           st.sampled_from([None, 3, b"\0"])))
 
 
 def cli_main(argv):
@@ -395,28 +456,43 @@ def cli_targets() -> list[Target]:
 
     names = scenes.names()
 
-    def set_item(name):
-        keys = list(scenes.parameters(name)) + ["nope", "", "n=2"]
-        vals = st.one_of(st.sampled_from(["1", "0", "-1", "2.5", "1e300", "1e-300", "nan", "inf", "-inf", "true",
-                                          "none", "[1, 2]", "[", "x", "", "1000000", "1e400", "3.5", "1j"]),
-                         st.floats(-10, 10).map(repr))
-        return st.tuples(st.sampled_from(keys), vals).map(lambda kv: ["--set", f"{kv[0]}={kv[1]}"])
+    def value_text(v) -> str:
+        return str(v).lower() if isinstance(v, bool) else ("none" if v is None else repr(v))
 
-    report = st.sampled_from(names + ["nope", ""]).flatmap(
-        lambda n: st.tuples(st.lists(set_item(n) if n in names else set_item(names[0]), max_size=3),
-                            st.booleans()).map(
-            lambda t: ["report", n] + [x for item in t[0] for x in item] + (["--json"] if t[1] else [])))
-    misc = st.sampled_from([["report", "--list"], ["report", "--list", "--json"], ["report"], [],
+    def set_items(name, hostile):
+        params, lim = scenes.parameters(name), scenes.limits(name)
+        if not params:
+            return st.just([])
+        good = st.sampled_from(list(params)).flatmap(lambda k: _param_strategy(params[k], lim.get(k)).valid.map(
+            lambda v: ["--set", f"{k}={value_text(v)}"]))
+        bad_val = st.sampled_from(["nan", "inf", "-inf", "none", "[1, 2]", "[", "x", "", "1e400", "1j", "1e300"])
+        bad = st.one_of(st.tuples(st.sampled_from(list(params)), bad_val),
+                        st.tuples(st.sampled_from(["nope", "", "n=2"]), st.just("1"))).map(
+            lambda kv: ["--set", f"{kv[0]}={kv[1]}"])
+        items = st.lists(good, max_size=3)
+        if hostile:
+            items = st.tuples(items, bad).map(lambda t: t[0] + [t[1]])
+        return items.map(lambda its: [x for it in its for x in it])
+
+    def report(hostile):
+        return st.tuples(st.sampled_from(names), st.booleans()).flatmap(
+            lambda t: set_items(t[0], hostile).map(
+                lambda sets: ["report", t[0], *sets] + (["--json"] if t[1] else [])))
+
+    misc = st.sampled_from([["report", "nope"], ["report", ""], ["report"], [],
                             ["frobnicate"], ["report", "--set"], ["report", "chain", "--set", "n"],
                             ["bench", "--suite", "/nonexistent"], ["gallery", "--only", "no_such_figure"],
-                            ["--version"], ["report", "chain", "--bogus"]])
-    gallery = _paths().filter(lambda p: isinstance(p, (str, Path))).map(   # never a path relative to the cwd
-        lambda p: ["gallery", "--out", p, "--only", "fig1_2"])
+                            ["report", "chain", "--bogus"]])
+    good_misc = st.sampled_from([["report", "--list"], ["report", "--list", "--json"], ["--version"]])
+    argv = S.Arg(st.one_of(report(False), report(False), report(False), good_misc),
+                 st.one_of(report(True), misc))
+    gallery = S.Arg(_paths().valid.map(lambda p: ["gallery", "--out", p, "--only", "fig1_2"]),
+                    _paths().hostile.filter(lambda p: isinstance(p, (str, Path))).map(   # never relative to the cwd
+                        lambda p: ["gallery", "--out", p, "--only", "fig1_2"]))
     return [
-        Target("planargeo report", cli_main, st.one_of(report, report, report, misc).map(lambda a: ((a,), {})),
-               group="cli", check=_cli_check, timeout=20.0),
-        Target("planargeo gallery --out", cli_main, gallery.map(lambda a: ((a,), {})), group="cli",
-               check=_cli_check, timeout=20.0, weight=0.2),
+        Target("planargeo report", cli_main, S.call((argv,)), group="cli", check=_cli_check, timeout=20.0),
+        Target("planargeo gallery --out", cli_main, S.call((gallery,)), group="cli",
+               check=_cli_check, timeout=20.0, weight=0.1),
     ]
 
 
@@ -429,93 +505,12 @@ def _no_stray_temporaries(args, kwargs, result):
 def file_targets() -> list[Target]:
     from planargeo.files import atomic_write
 
-    data = st.one_of(st.binary(max_size=64), st.text(max_size=32), S.junk)
-    return [Target("files.atomic_write", atomic_write, st.tuples(_paths(), data).map(lambda t: (t, {})),
+    data = S.Arg(st.one_of(st.binary(max_size=64), st.text(max_size=32)), S.junk)
+    return [Target("files.atomic_write", atomic_write, S.call((_paths(), data)),
                    group="files", check=_no_stray_temporaries)]
 
 
 # --------------------------------------------------------------------------- explorers
-def _control_value(w):
-    import ipywidgets as W
-
-    bad = st.one_of(S.nonfinite, S.junk, st.just(None))
-    if isinstance(w, W.FloatSlider):
-        inside = st.floats(w.min, w.max)
-        outside = st.sampled_from([w.min - 1.0, w.max + 1.0, 1e300, -1e300])
-        return st.one_of(inside, inside, inside, outside, bad)
-    if isinstance(w, W.IntSlider):
-        return st.one_of(st.integers(w.min, w.max), st.integers(w.min, w.max), st.sampled_from(
-            [w.min - 1, w.max + 1, 10**7, 1.5]), bad)
-    if isinstance(w, (W.Dropdown, W.ToggleButtons)):
-        return st.one_of(st.sampled_from(list(w.options)), st.sampled_from(list(w.options)), bad)
-    if isinstance(w, W.Checkbox):
-        return st.one_of(st.booleans(), bad)
-    if isinstance(w, W.Text):
-        return st.one_of(st.just(w.value), st.text(max_size=20), st.sampled_from(
-            ["1, 2", "nan", "1e300, 0", "0,0; 1,0; 0,1", "0,0; 0,0; 0,0", "", "1;2;3"]), bad)
-    return bad
-
-
-def fmt(x) -> str:
-    from planargeo.widgets import fmt
-
-    return fmt(x)
-
-
-def _readouts_agree(a: dict, b: dict) -> bool:
-    return a.keys() == b.keys() and all(fmt(a[k]) == fmt(b[k]) for k in a)
-
-
-def explorer_target(cls_name: str) -> Target:
-    """``explorer.set(**values)``; then controls, readout and message must agree.
-
-    Consistent means: no exception escaped, no "internal error" shown, no NaN in a readout
-    without a message, and a second explorer set to the first one's control values shows the
-    same readout (so the readout is that of the controls, not of an older state).
-    """
-    from planargeo import widgets
-
-    cls = getattr(widgets, cls_name)
-    holder = {}
-
-    def make():
-        if "ex" not in holder:
-            holder["ex"] = cls(display="agg")
-            holder["ref"] = cls(display="agg")
-        return holder["ex"], holder["ref"]
-
-    probe = cls(display="agg")
-    controls = {k: _control_value(w) for k, w in probe.controls.items()}
-    probe.fig.clf()
-
-    def call(**values):
-        ex, ref = make()
-        ex.set(**values)
-        return ex
-
-    def check(args, kwargs, ex):
-        _, ref = make()
-        if ex.message.startswith("internal error"):
-            return INCONSISTENT, f"message {ex.message!r}"
-        nan = [k for k, v in ex.readout_values.items()
-               if isinstance(v, (float, np.floating)) and math.isnan(v)]
-        if nan and not ex.message:
-            return INCONSISTENT, f"readout {nan[0]!r} is NaN with no message"
-        try:
-            ref.set(**ex.values)
-        except Exception as exc:  # noqa: BLE001
-            return INCONSISTENT, f"the controls hold {ex.values}, which raise {type(exc).__name__}: {exc} when set"
-        if not _readouts_agree(ex.readout_values, ref.readout_values):
-            diff = [k for k in ex.readout_values if fmt(ref.readout_values.get(k)) != fmt(ex.readout_values[k])]
-            return INCONSISTENT, (f"readout does not match the controls {ex.values} (e.g. {diff[:1]}), "
-                                  f"message {ex.message!r}")
-        return (PACKAGE, "") if ex.message else None
-
-    strat = st.lists(st.sampled_from(list(controls)), min_size=1, max_size=3, unique=True).flatmap(
-        lambda ks: st.fixed_dictionaries({k: controls[k] for k in ks})).map(lambda kw: ((), kw))
-    return Target(f"{cls_name}.set", call, strat, group="explorers", check=check, timeout=30.0, weight=0.3)
-
-
 def explorer_targets() -> list[Target]:
     from planargeo import widgets
 
@@ -525,9 +520,8 @@ def explorer_targets() -> list[Target]:
         holder.setdefault("ex", widgets.ScrewSumExplorer(display="agg", export_dir=tmpdir()))   # path=None
         return holder["ex"].export_svg(path)
 
-    return [explorer_target(n) for n in widgets.EXPLORERS] + [
-        Target("Explorer.export_svg", export, _paths().map(lambda p: ((p,), {})), group="explorers",
-               check=_no_stray_temporaries, timeout=30.0, weight=0.3)]
+    return [Target("Explorer.export_svg", export, S.call((_paths(),)), group="explorers",
+                   check=_no_stray_temporaries, timeout=30.0, weight=0.1)]
 
 
 def all_targets() -> list[Target]:
