@@ -144,7 +144,7 @@ def fit_mechanism(ax, mechanism, extra=(), margin: float = 0.15, reach: float = 
     >>> import matplotlib.pyplot as plt
     >>> fig, ax = plt.subplots()
     >>> x0, x1, y0, y1 = fit_mechanism(ax, [[0, 0], [1, 0], [0, 0]], margin=0.0)
-    >>> x0 <= 0.0 and x1 >= 1.0 and x1 - x0 >= 1.0
+    >>> bool(x0 <= 0.0 and x1 >= 1.0 and x1 - x0 >= 1.0)
     True
     """
     M = np.asarray(mechanism, dtype=float).reshape(-1, 2)
@@ -160,7 +160,7 @@ def fit_mechanism(ax, mechanism, extra=(), margin: float = 0.15, reach: float = 
             lo, hi = np.minimum(lo, E.min(axis=0)), np.maximum(hi, E.max(axis=0))
     c, half = 0.5 * (lo + hi), 0.5 * np.maximum(hi - lo, least)
     fit_view(ax, np.array([c - half, c + half]), margin=margin)
-    return (*ax.get_xlim(), *ax.get_ylim())
+    return tuple(float(x) for x in (*ax.get_xlim(), *ax.get_ylim()))
 
 
 def place_labels(ax, items) -> list:
