@@ -1447,6 +1447,11 @@ def legend_handles(ax=None) -> list:
     list of matplotlib.artist.Artist
         Handles for ``ax.legend(handles=...)``.
     """
+    return [(_proxy(a, label) if isinstance(a, _Base) else a) for a, label in _legend_entries(ax)]
+
+
+def _legend_entries(ax=None, first: bool = False) -> list:
+    """``(artist, label)`` of the visible, labelled artists (the first one only with ``first``)."""
     from matplotlib.collections import Collection
     from matplotlib.patches import Patch
 
@@ -1458,17 +1463,30 @@ def legend_handles(ax=None) -> list:
         label = a.get_label() or ""
         if isinstance(a, _Base):
             label = label or a._text.get_text()
-            if not label or label.startswith("_") or label in seen:
-                continue
-            out.append(_proxy(a, label))
-        elif isinstance(a, (Line2D, Patch, Collection)) and a is not ax.patch:
-            if not label or label.startswith("_") or label in seen:
-                continue
-            out.append(a)
-        else:
+        elif not isinstance(a, (Line2D, Patch, Collection)) or a is ax.patch:
             continue
+        if not label or label.startswith("_") or label in seen:
+            continue
+        out.append((a, label))
+        if first:
+            break
         seen.add(label)
     return out
+
+
+def has_legend_entries(ax=None) -> bool:
+    """True when :func:`legend_handles` would list something (a key has entries).
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes, optional
+        Default: the current axes.
+
+    Returns
+    -------
+    bool
+    """
+    return bool(_legend_entries(ax, first=True))
 
 
 # --------------------------------------------------------------------------- plot functions

@@ -116,7 +116,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from traitlets import validate
 
-from planargeo.draw.artists import place_labels
+from planargeo.draw.artists import has_legend_entries, place_labels
 from planargeo.draw.style import EXPLORER_DPI, EXPLORER_MIN_WIDTH_PX, EXPLORER_TICK_PT, LABEL_PT, setup_axes
 from planargeo.errors import InputError, OutputError, PlanargeoError
 from planargeo.files import atomic_write
@@ -745,6 +745,28 @@ class Explorer:
         list of Handle
         """
         return []
+
+    def mechanism_points(self) -> np.ndarray:
+        """Points ``(n, 2)`` the view must hold: by default the finite positions of the handles.
+
+        An explorer whose mechanism has more to keep in view (links, bodies) may
+        add them; the rule tests check that the view contains these points and
+        is never much smaller than :attr:`scale`.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``(n, 2)`` data points.
+        """
+        pts = []
+        for h in self.all_handles():
+            with contextlib.suppress(Exception):
+                xy = h.where()
+                if xy is not None:
+                    q = np.asarray(xy, dtype=float).reshape(2)
+                    if np.all(np.isfinite(q)):
+                        pts.append(q)
+        return np.array(pts, dtype=float).reshape(-1, 2)
 
     def play_step(self, values: dict[str, Any], dt: float) -> dict[str, Any] | None:
         """Control values of the next Play frame after ``values``, ``dt`` seconds on (None: stop).
@@ -1698,6 +1720,8 @@ class Explorer:
         except Exception as exc:  # noqa: BLE001 - a faulty rule disables nothing
             off = {}
             self._message = self._message or f"internal error in disabled(): {exc}"
+        if "key" not in off and not self.controls["key"].value and not has_legend_entries(self.ax):
+            off["key"] = "nothing drawn now has an entry in the key"
         for k, w in self.controls.items():
             reason = off.get(k)
             if bool(w.disabled) != (reason is not None):
