@@ -12,7 +12,7 @@ import pytest
 
 from planargeo.draw.layout import legibility_problems
 from planargeo.widgets import SubspaceExplorer
-from planargeo.widgets.subspace import COM, JOINT_OPTIONS, SHOW_OPTIONS
+from planargeo.widgets.subspace import CHECK_ROWS, CHECKS_HEADING, COM, JOINT_OPTIONS, SHOW_OPTIONS
 
 RESIDUALS = ["sᵀT − 1", "RᵀU − 1", "TᵀU", "T sᵀ + R Uᵀ − 1", "sᵀR", "(sψ)ᵀ(Rμ)", "(Uγ)ᵀ(TQ)", "Rᵀ(sψ)"]
 
@@ -31,9 +31,11 @@ def legible(ex):
 
 
 def residuals_print_as_zero(ex):
+    assert ex.readout_values[CHECKS_HEADING] == "each must read 0"
     for name in RESIDUALS:
-        assert ex.readout_strings[f"{name} →0"] == "0", (name, ex.readout_strings)
-        assert abs(ex.readout_values[f"{name} →0"]) < 1e-12
+        row = CHECK_ROWS[name][0]
+        assert ex.readout_strings[row].split()[0] == "0", (name, ex.readout_strings)
+        assert abs(ex.readout_values[row]) < 1e-12
 
 
 @pytest.fixture
@@ -104,7 +106,9 @@ def test_prismatic_slide_by_hand(ex):
     assert r["Q = sᵀf"] == pytest.approx(F @ e, rel=1e-12)                 # the force's part along the slide
     assert r["ψ = TᵀI⁻¹f"] == pytest.approx(F @ e / v["m"], rel=1e-12)     # m ẍ = F·e (Lagrange)
     assert r["sᵀIs (6.67)"] == pytest.approx(v["m"], rel=1e-12) and ex.units["sᵀIs (6.67)"] == "kg"
-    assert r["pole of sψ (held body)"] == "at infinity"                    # a translation
+    # a translation along the slide at 30°: its pole is at infinity, across the slide (5.49)
+    assert r["pole of sψ (held body)"] in ("at infinity (direction (-0.5, 0.866))",
+                                           "at infinity (direction (0.5, -0.866))")
     assert ex.units["Q = sᵀf"] == "N" and ex.units["μ₂ = U₂ᵀf"] == "N·m"
     legible(ex)
 
@@ -208,3 +212,42 @@ def test_revolute_has_no_direction_handle_and_exports(ex, tmp_path):
     assert ex.handles()[1].where() is None
     assert ex.export_svg(tmp_path / "s.svg").stat().st_size > 1000
     assert ex.export_png(tmp_path / "s.png").read_bytes()[:4] == b"\x89PNG"
+
+
+# ---------------------------------------------------------------- issue 22: checks named, symbols explained
+def test_identity_rows_are_labelled_as_checks_with_their_reason(ex):
+    names = list(ex.readout_values)
+    head = names.index(CHECKS_HEADING)
+    checks = names[head + 1:]
+    assert len(checks) == 8 and all(n.startswith("check ") and n.endswith("→ 0") for n in checks)
+    meanings = ex.explain()
+    for n in checks:                                     # each says why it must read 0, with an equation
+        assert "(6." in meanings[n], n
+    # the identities hold by independent arithmetic on s, R, T, U of the scene (6.1, 6.23, 6.22, 6.46)
+    st = ex.state
+    s, R, T, U = st["s"], st["R"], st["T"], st["U"]
+    assert np.allclose(s.T @ T, np.eye(1)) and np.allclose(R.T @ U, np.eye(2))
+    assert np.allclose(T.T @ U, 0.0) and np.allclose(s.T @ R, 0.0)
+
+
+@pytest.mark.parametrize("joint", list(JOINT_OPTIONS))
+def test_every_row_has_a_meaning_and_numbers_a_unit(ex, joint):
+    ex.set(joint=joint)
+    meanings = ex.explain()
+    for k, v in ex.readout_values.items():
+        assert k in meanings, k
+        assert "_" not in k, k
+        if isinstance(v, tuple) and all(isinstance(x, float) for x in v) and k != "sᵀIs (6.67)":
+            assert ex.units[k] not in ("", "—"), k
+    if JOINT_OPTIONS[joint] == "revolute_prismatic":
+        # one unit per entry of the 2×2 joint-space inertia: rotation–rotation kg·m², mixed kg·m
+        assert sorted(ex.units["sᵀIs (6.67)"]) == sorted(("kg", "kg·m", "kg·m", "kg·m²"))
+
+
+def test_a_revolute_joint_has_no_direction_to_turn(ex):
+    assert "revolute" in ex.disabled(ex.values)["joint angle"]
+    before = dict(ex.readout_values)
+    ex.set(**{"joint angle": 45.0})
+    assert ex.readout_values == before
+    ex.set(joint="prismatic")
+    assert "joint angle" not in ex.disabled(ex.values)

@@ -49,6 +49,8 @@ from planargeo.draw.style import COLORS
 from planargeo.errors import DegenerateGeometryError
 from planargeo.scenes.subspace import subspace_state, unit_direction
 from planargeo.screws.twists import inertia_matrix
+from planargeo.geometry.projective import is_at_infinity, is_ideal
+from planargeo.widgets._points import point_value
 from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["SubspaceExplorer", "JOINT_OPTIONS", "SHOW_OPTIONS"]
@@ -69,10 +71,31 @@ _SUB = "₁₂"
 
 
 def _xy(p):
-    """``(x, y)`` of a homogeneous point, or ``"at infinity"``."""
-    if p[2] == 0:
-        return "at infinity"
+    """``(x, y)`` of a finite homogeneous point (for placing labels; ideal points are not placed)."""
     return (float(-p[1] / p[2]) + 0.0, float(p[0] / p[2]) + 0.0)
+
+
+#: the heading row above the identity checks
+CHECKS_HEADING = "checks: thesis identities of s, R, T, U"
+#: residual of the scene -> (readout row, unit, why it must read 0)
+CHECK_ROWS = {
+    "sᵀT − 1": ("check sᵀT − 1 → 0", "—",
+                "T is scaled so that sᵀT = 1: the joint force Q = sᵀf reads T's share (6.23, 6.32)"),
+    "RᵀU − 1": ("check RᵀU − 1 → 0", "—",
+                "U is scaled so that RᵀU = 1: the reaction μ = Uᵀf reads R's share (6.22, 6.35)"),
+    "TᵀU": ("check TᵀU → 0", "—",
+            "TᵀU = 0, the dual of sᵀR = 0: active forces and reactive accelerations do not mix (6.46)"),
+    "T sᵀ + R Uᵀ − 1": ("check T sᵀ + R Uᵀ − 1 → 0", "—",
+                        "every force splits as f = T sᵀf + R Uᵀf, whole and once (6.38, 6.51, 6.54)"),
+    "sᵀR": ("check sᵀR → 0", "—",
+            "the reactions are the lines through the poles of the allowed motions: sᵀR = 0 (6.1)"),
+    "(sψ)ᵀ(Rμ)": ("check (sψ)ᵀ(Rμ) → 0", "N·m/s²",
+                  "the joint's reaction does no work on the motion it allows (6.40–6.43)"),
+    "(Uγ)ᵀ(TQ)": ("check (Uγ)ᵀ(TQ) → 0", "N·m/s²",
+                  "the active force does no work on the reactive acceleration, by TᵀU = 0 (6.46)"),
+    "Rᵀ(sψ)": ("check Rᵀ(sψ) → 0", "—",
+               "the held body's acceleration has no reactive part: Rᵀs ψ = 0 by sᵀR = 0 (6.58–6.60)"),
+}
 
 
 def _along(line, ref, t: float):
@@ -95,12 +118,12 @@ _BESIDE = {"s": (-0.7, 0.7), "U": (0.7, -0.7), "a_free": (0.7, 0.7), "s_psi": (-
 
 def _kind_units(s_col) -> tuple[str, str]:
     """(joint force unit, joint acceleration unit) of a motion-space column: a rotation or a translation."""
-    return ("N·m", "rad/s²") if s_col[2] != 0 else ("N", "m/s²")
+    return ("N", "m/s²") if bool(is_ideal(s_col)) else ("N·m", "rad/s²")
 
 
 def _reaction_units(R_col) -> tuple[str, str]:
     """(reaction unit, reactive-acceleration unit) of a reaction column: a force or a couple."""
-    return ("N", "m/s²") if (R_col[0] != 0 or R_col[1] != 0) else ("N·m", "rad/s²")
+    return ("N·m", "rad/s²") if bool(is_at_infinity(R_col)) else ("N", "m/s²")
 
 
 class SubspaceExplorer(Explorer):
@@ -195,6 +218,69 @@ class SubspaceExplorer(Explorer):
                                                 color=COLORS["momentum"]))
         for a, key in ((self.afree_art, "a_free"), (self.spsi_art, "s_psi"), (self.Ug_art, "U_gamma")):
             self._besides[a] = _BESIDE[key]
+
+    def disabled(self, values):
+        """Controls that change nothing for the joint chosen, with the reason.
+
+        Parameters
+        ----------
+        values : dict
+
+        Returns
+        -------
+        dict
+        """
+        if JOINT_OPTIONS[values["joint"]] == "revolute":
+            return {"joint angle": "a revolute joint has no direction: only its pivot counts"}
+        return {}
+
+    def explain(self):
+        """Every symbol on screen, with its thesis equation.
+
+        Returns
+        -------
+        dict
+        """
+        st = self.state
+        k = 1 if st is None else int(st["s"].shape[1])
+        out = {
+            "s": "motion space: the poles of the motions the joint allows (6.1, 6.8)",
+            "R": "reaction space: the lines of the forces the joint can take, sᵀR = 0 (6.1)",
+            "T": "T = I s (sᵀIs)⁻¹: the axes of percussion of s, the active forces (6.36)",
+            "U": "U = I⁻¹R (RᵀI⁻¹R)⁻¹: the reactive accelerations, points on T, TᵀU = 0 (6.37, 6.46)",
+            "f": "the applied force on the body (its line and size F) (5.56)",
+            "TQ": "the part of f that accelerates the body along the joint (6.38)",
+            "Rμ": "the part of f that goes into the joint (6.38)",
+            "I⁻¹f": "the acceleration the body would have if free (6.68)",
+            "sψ": "the acceleration of the body held by the joint (6.44, 6.93)",
+            "Uγ": "the acceleration the joint's base would need to let the body move freely (6.44)",
+            "c": "the centre of mass of the body", "body": "the body, a bar, at rest",
+            "joint": "the joint: a pivot, a slide, a pin in a slot or the plane joint (4.79)",
+            "I": "the body's inertia, drawn as its circle of gyration ρ about c (5.4)",
+            "k (degrees of freedom)": "how many independent motions the joint allows (6.8)",
+            "sᵀIs (6.67)": "joint-space inertia: what resists the joint's own acceleration (6.67)",
+            "pole of sψ (held body)": "the pole of the held body's acceleration (6.44)",
+            "joint's push −Rμ, |force|": "size of the force with which the joint pushes back (6.38)",
+            "U (meet of T₁, T₂)": "a 2-dof joint's two lines T meet in the one point U (6.46)",
+            CHECKS_HEADING: "identities s, R, T and U are built to satisfy: the rows below must "
+                            "read 0 up to round-off",
+        }
+        sub = (lambda i: _SUB[i]) if k > 1 else (lambda i: "")
+        rsub = (lambda j: _SUB[j]) if 3 - k > 1 else (lambda j: "")
+        for i in range(k):
+            out[f"Q{sub(i)} = s{sub(i)}ᵀf"] = "joint force: the power of f on the allowed motion (6.51)"
+            out[f"ψ{sub(i)} = T{sub(i)}ᵀI⁻¹f"] = "joint acceleration of the held body (6.57)"
+        for j in range(3 - k):
+            out[f"μ{rsub(j)} = U{rsub(j)}ᵀf"] = "reaction: how much of f the joint takes (6.54)"
+            out[f"γ{rsub(j)} = R{rsub(j)}ᵀI⁻¹f"] = "reactive acceleration component (6.60)"
+        for i in range(2):
+            out[f"s{_SUB[i]}"] = f"the {('first', 'second')[i]} allowed motion of a 2-dof joint (6.8)"
+            out[f"R{_SUB[i]}"] = f"the {('first', 'second')[i]} reaction of a 1-dof joint (6.10)"
+            out[f"T{_SUB[i]}"] = f"the axis of percussion of s{_SUB[i]} (6.36)"
+            out[f"U{_SUB[i]}"] = f"the reactive acceleration of R{_SUB[i]} (6.37)"
+        for row, _unit, why in CHECK_ROWS.values():
+            out[row] = why
+        return out
 
     # ------------------------------------------------------------------ handles
     def handles(self):
@@ -331,7 +417,7 @@ class SubspaceExplorer(Explorer):
                 art.set_line(T[:, i])
                 self._text[art] = "T" if k == 1 else f"T{_SUB[i]}"
                 art.set_text(self._text[art])
-                art.set_anchor(_along(T[:, i], _xy(U[:, 0]) if k == 2 and U[2, 0] != 0 else COM, 1.3 if i == 0 else -1.3))
+                art.set_anchor(_along(T[:, i], _xy(U[:, 0]) if k == 2 and not is_ideal(U[:, 0]) else COM, 1.3 if i == 0 else -1.3))
         for i, art in enumerate(self.U_art):
             on = i < 3 - k and show in ("twist", "spaces")
             art.set_visible(on)
@@ -380,7 +466,7 @@ class SubspaceExplorer(Explorer):
             a.set_text(labels[a])
             self._text[a] = labels[a]
             p = a.get_point()
-            inside = p[2] != 0 and x0 <= -p[1] / p[2] <= x1 and y0 <= p[0] / p[2] <= y1
+            inside = not is_ideal(p) and x0 <= -p[1] / p[2] <= x1 and y0 <= p[0] / p[2] <= y1
             if inside:
                 a.set_text_beside(besides[a])
             else:                        # an edge arrow (off the view, at infinity): its label inside
@@ -401,18 +487,27 @@ class SubspaceExplorer(Explorer):
             out[f"μ{sub} = U{sub}ᵀf"], units[f"μ{sub} = U{sub}ᵀf"] = float(st["mu"][j]), fu
             out[f"γ{sub} = R{sub}ᵀI⁻¹f"], units[f"γ{sub} = R{sub}ᵀI⁻¹f"] = float(st["gamma"][j]), au
         sIs = st["sIs"]
-        out["sᵀIs (6.67)"] = float(sIs[0, 0]) if k == 1 else tuple(np.ravel(sIs))
-        units["sᵀIs (6.67)"] = ("kg·m²" if s[2, 0] != 0 else "kg") if k == 1 else "kg, kg·m, kg·m²"
-        out["pole of sψ (held body)"] = _xy(st["s_psi"]) if np.any(st["s_psi"] != 0) else "at rest"
+        if k == 1:
+            out["sᵀIs (6.67)"] = float(sIs[0, 0])
+            units["sᵀIs (6.67)"] = "kg" if bool(is_ideal(s[:, 0])) else "kg·m²"
+        else:   # one unit per entry: rotation–rotation kg·m², rotation–translation kg·m, else kg
+            rot = [not bool(is_ideal(s[:, i])) for i in range(k)]
+            out["sᵀIs (6.67)"] = tuple(float(x) for x in np.ravel(sIs))
+            units["sᵀIs (6.67)"] = tuple({2: "kg·m²", 1: "kg·m", 0: "kg"}[rot[i] + rot[j]]
+                                         for i in range(k) for j in range(k))
+        out["pole of sψ (held body)"] = point_value(st["s_psi"]) if np.any(st["s_psi"] != 0) else "at rest"
         units["pole of sψ (held body)"] = "m"
         reaction = st["reaction"]
         out["joint's push −Rμ, |force|"] = float(np.hypot(reaction[0], reaction[1]))
         units["joint's push −Rμ, |force|"] = "N"
         if k == 2:
-            out["U (meet of T₁, T₂)"] = _xy(st["U"][:, 0])
+            out["U (meet of T₁, T₂)"] = point_value(st["U"][:, 0])
             units["U (meet of T₁, T₂)"] = "m"
+        out[CHECKS_HEADING] = "each must read 0"
+        units[CHECKS_HEADING] = "—"
         for name, val in st["residuals"].items():
-            out[f"{name} →0"] = val
-            units[f"{name} →0"] = "—"
+            row = CHECK_ROWS[name][0]
+            out[row] = val
+            units[row] = CHECK_ROWS[name][1]
         self.units = units
         return out
