@@ -37,6 +37,7 @@ $(BIN)/python:
 
 $(STAMP): pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e '.[dev]'
+	$(BIN)/python -m planargeo.algorithms.compiled --warm
 	@touch $(STAMP)
 
 install: $(STAMP)

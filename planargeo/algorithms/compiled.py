@@ -18,10 +18,25 @@ A call (:func:`evaluate`) takes one of three roads, all giving the same numbers:
 
 :func:`check_finite` is the last step of every general path: finite input that gives a
 non-finite result raises :class:`~planargeo.errors.NumericOverflowError`.
+
+**No wait on the compiler in a lesson.**  numba keeps what it compiled in its cache
+(``cache=True``: files beside ``kernels.py`` in ``__pycache__``, or under
+``NUMBA_CACHE_DIR``), and loads it in a fraction of a second.  That cache is not portable:
+numba writes machine code for this machine's processor and keys it to ``kernels.py``'s
+modification time, so it cannot ship inside the package or the repository.  The set-up
+(``make lab``, ``make test``: the Makefile's install step) therefore fills it on the machine
+itself with ``python -m planargeo.algorithms.compiled --warm`` (:func:`warm`: every signature
+the package calls, one state and batches, forward and inverse, with and without external
+wrenches).  When the cache is cold anyway (an install without the Makefile, or after an edit
+of ``kernels.py``), the first call says in one line on the terminal or notebook that it is
+compiling, instead of waiting silently.
 """
 from __future__ import annotations
 
 import math
+import os
+import sys
+import time
 from collections import namedtuple
 
 import numpy as np
@@ -30,7 +45,7 @@ from planargeo.errors import NumericOverflowError
 from planargeo.mechanics.kinematics import check_state
 from planargeo.mechanics.subspaces import singular_joint_error
 
-__all__ = ["Compiled", "kernels_for", "evaluate", "check_finite"]
+__all__ = ["Compiled", "kernels_for", "evaluate", "check_finite", "warm", "cache_is_warm", "main"]
 
 _F64 = np.dtype(np.float64)
 
@@ -66,6 +81,8 @@ def kernels_for(model):
         from planargeo.algorithms import kernels     # numba: imported on first use
 
         tables = kernels.tables(model)
+        if tables is not None:
+            _say_if_cold(kernels)
         cache["kernels"] = None if tables is None else Compiled(kernels, tables, (model.nq,), (model.N, 3))
     return cache["kernels"]
 
@@ -193,3 +210,145 @@ def check_finite(result, what: str, **inputs):
     rest = ", ".join(f"{n} {v:.3g}" for n, v in size.items() if n != big)
     raise NumericOverflowError(f"{what} overflows for these finite inputs: {big} reaches {size[big]:.3g}"
                                + (f" ({rest})" if rest else "") + "; the result does not fit in a float")
+
+
+#: The kernels the package calls from Python (the others are compiled into them).
+ENTRY_POINTS = ("forward_dynamics_one", "inverse_dynamics_one", "singular_joint", "_range")
+_told = []
+
+
+def cache_is_warm(kernels=None) -> bool:
+    """Whether numba's cache holds the entry points of :mod:`planargeo.algorithms.kernels` for its current source.
+
+    A heuristic on the cache's index files (one per kernel, rewritten by numba with every
+    compilation): present and not older than ``kernels.py``.  It does not compile anything.
+
+    Parameters
+    ----------
+    kernels : module, optional
+        :mod:`planargeo.algorithms.kernels` (imported if not given).
+
+    Returns
+    -------
+    bool
+        True if every entry point has an index newer than the source.
+
+    Examples
+    --------
+    >>> isinstance(cache_is_warm(), bool)
+    True
+    """
+    if kernels is None:
+        from planargeo.algorithms import kernels
+    try:
+        source = os.stat(kernels.__file__).st_mtime
+        for name in ENTRY_POINTS:
+            cache = getattr(kernels, name)._cache          # numba's FunctionCache (cache=True)
+            index = getattr(cache, "_index_path", None) or cache._cache_file._index_path   # numba ≥ 0.60
+            if os.stat(index).st_mtime < source:
+                return False
+    except (OSError, AttributeError):
+        return False
+    return True
+
+
+def _say_if_cold(kernels) -> None:
+    """Tell a person at a terminal or in a notebook, once, that the first call compiles (numba's cache is cold)."""
+    if _told:
+        return
+    _told.append(True)
+    interactive = "ipykernel" in sys.modules or getattr(sys.stderr, "isatty", lambda: False)()
+    if interactive and not cache_is_warm(kernels):
+        print("planargeo: compiling the dynamics kernels for this machine (once; about 10-30 s). "
+              "`python -m planargeo.algorithms.compiled --warm` (part of `make lab`) does it ahead of time.",
+              file=sys.stderr, flush=True)
+
+
+def warm(progress=None) -> list[tuple[str, float]]:
+    """Compile every kernel signature the package calls, so that numba's cache holds them (or load them from it).
+
+    The signatures :func:`evaluate` hands the kernels: one state and a batch, forward and
+    inverse dynamics, without and with external wrenches, and the singular-joint check
+    (the types do not depend on the model's size or joint kinds).
+
+    Parameters
+    ----------
+    progress : callable, optional
+        Called with one line of text before each step and after it (e.g. ``print``).
+
+    Returns
+    -------
+    list of (str, float)
+        Each step and the seconds it took (a fraction of a second each when the cache was warm).
+
+    Examples
+    --------
+    >>> [step for step, _ in warm()][:2]
+    ['forward dynamics, one state', 'forward dynamics, one state, external wrenches']
+    """
+    from planargeo.mechanics.model import Body, Joint, Model
+
+    model = Model([Body(1.0, (0.5, 0.0), 0.1), Body(1.0, (0.5, 0.0), 0.1), Body(0.5, (0.2, 0.0), 0.05)],
+                  [Joint("revolute"), Joint("prismatic", (1.0, 0.0, 0.0)), Joint("fixed", (1.0, 0.0, 0.0))],
+                  [-1, 0, 1])
+    k, tables = kernels_for(model)[:2]
+    nq, N, B = model.nq, model.N, 3
+    one, fe1 = np.zeros(nq), np.zeros((N, 3))
+    rows, feB = np.zeros((B, nq)), np.zeros((B, N, 3))
+    steps = []
+    for what, run in [
+            ("forward dynamics, one state", lambda: k.forward_dynamics_one(*tables, one, one, one, None)),
+            ("forward dynamics, one state, external wrenches",
+             lambda: k.forward_dynamics_one(*tables, one, one, one, fe1)),
+            ("inverse dynamics, one state", lambda: k.inverse_dynamics_one(*tables, one, one, one, None)),
+            ("inverse dynamics, one state, external wrenches",
+             lambda: k.inverse_dynamics_one(*tables, one, one, one, fe1)),
+            ("singular-joint check", lambda: k.singular_joint(*tables, one, one, one, None)),
+            ("singular-joint check, external wrenches", lambda: k.singular_joint(*tables, one, one, one, fe1)),
+            ("forward dynamics, batch", lambda: k.forward_dynamics_many(*tables, rows, rows, rows, None)),
+            ("forward dynamics, batch, external wrenches",
+             lambda: k.forward_dynamics_many(*tables, rows, rows, rows, feB)),
+            ("inverse dynamics, batch", lambda: k.inverse_dynamics_many(*tables, rows, rows, rows, None)),
+            ("inverse dynamics, batch, external wrenches",
+             lambda: k.inverse_dynamics_many(*tables, rows, rows, rows, feB))]:
+        if progress is not None:
+            progress(f"  {what} ...")
+        t = time.perf_counter()
+        run()
+        steps.append((what, time.perf_counter() - t))
+        if progress is not None:
+            progress(f"  {what}: {steps[-1][1]:.2f} s")
+    return steps
+
+
+def main(argv=None) -> int:
+    """``python -m planargeo.algorithms.compiled --warm``: fill numba's cache with every kernel (:func:`warm`).
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments (default ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        The exit status: 0, or 2 for arguments other than ``--warm``.
+    """
+    import argparse
+
+    parser = argparse.ArgumentParser(prog="python -m planargeo.algorithms.compiled",
+                                     description="Compile the dynamics kernels into numba's cache ahead of time.")
+    parser.add_argument("--warm", action="store_true", help="compile (or load) every kernel signature")
+    args = parser.parse_args(argv)
+    if not args.warm:
+        parser.print_usage(sys.stderr)
+        return 2
+    print("planargeo: compiling the dynamics kernels into numba's cache (once per install) ...", flush=True)
+    t = time.perf_counter()
+    warm(progress=lambda line: print(line, flush=True) if line.endswith(" s") else None)
+    print(f"planargeo: kernels ready in {time.perf_counter() - t:.1f} s", flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
