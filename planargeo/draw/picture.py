@@ -1,0 +1,526 @@
+"""A picture described once: plain elements that every renderer draws the same way.
+
+A :class:`Picture` is built from a scene's state in Python, with all of its
+geometry done here, once: poles placed or sent to the edge of the view when they
+are ideal, infinite lines clipped to the view, conics classified and sampled, the
+line at infinity drawn as a couple glyph, labels placed so that they avoid each
+other.  What comes out of :meth:`Picture.to_dict` is plain JSON: a view, a list
+of *elements* and a list of *handles*.  Two renderers draw it:
+
+* the page (``planargeo/widgets/canvas.js``, an anywidget ES module) for live use;
+* matplotlib (:func:`planargeo.draw.render.draw_picture`) for exports and stored
+  pictures.
+
+Every element has a stable ``id``, a ``role`` (its style, one table:
+:mod:`planargeo.draw.style`), its thesis ``symbol`` and a short description
+``desc`` (meaning, equation, value with unit), shown when the pointer rests on it.
+An element is drawn from *parts*, each a primitive in data coordinates:
+
+``{"p": "path", "xy": [[x, y], ...], "closed": bool}``
+    a polyline or polygon (stroke, and fill when the element has one);
+``{"p": "mark", "x": x, "y": y, "shape": "o" | "D" | "s", "size": px}``
+    a marker of fixed pixel size;
+``{"p": "glyph", "x": x, "y": y, "r": px, "ccw": bool}``
+    the 270° rotation arrow of a pole (:func:`planargeo.draw.geometry.arc_glyph`);
+``{"p": "arrow", "x": x, "y": y, "dx": px, "dy": px}``
+    an arrow of fixed pixel length from a data point (edge arrows, force senses);
+``{"p": "text", "x": x, "y": y, "dx": px, "dy": px, "text": str, "ha": .., "va": ..}``
+    a label at a data point, moved by a pixel offset.
+
+Pixel sizes are at the picture's ``size``; y of a pixel offset points up.
+
+Examples
+--------
+>>> pic = Picture((-2, 2, -2, 2), size=(300, 300))
+>>> pic.point("P", [1.0, 0.0, 1.0], role="twist", symbol="P", desc="a pole")  # pole (0, 1)
+>>> pic.line("f", [1.0, 0.0, 0.0], role="wrench", symbol="f", desc="a force along x")
+>>> d = pic.to_dict()
+>>> els = {e["id"]: e for e in d["elements"]}
+>>> els["f"]["parts"][0]["xy"]           # the x axis, clipped to the view
+[[-2.0, 0.0], [2.0, 0.0]]
+>>> [part["p"] for part in els["P"]["parts"]]   # marker, rotation glyph, label
+['mark', 'glyph', 'text']
+"""
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from planargeo.draw.geometry import clip_line, conic_curves, conic_geometry, point_xy
+from planargeo.draw.style import COLORS, LABEL_PT, LINEWIDTHS, STYLES
+from planargeo.errors import InputError
+
+__all__ = ["Picture", "PX_PER_PT", "FONT_PX", "nice_ticks"]
+
+#: Pixels per point of a picture (the explorers' 100 dpi).
+PX_PER_PT = 100.0 / 72.0
+#: Label text size in pixels (:data:`planargeo.draw.style.LABEL_PT` at 100 dpi: 11.5 px).
+FONT_PX = round(LABEL_PT * PX_PER_PT, 2)
+#: Estimated advance of one character, in font sizes (DejaVu Sans, mixed text).
+_CHAR_EM = 0.6
+#: A finite pole farther than this many view diagonals is drawn like an ideal point.
+FAR = 1e6
+
+
+def nice_ticks(lo: float, hi: float, n: int = 5) -> list[float]:
+    """About ``n`` round tick values (1, 2, 5 × 10ᵏ apart) between ``lo`` and ``hi``.
+
+    Parameters
+    ----------
+    lo, hi : float
+        The axis range.
+    n : int
+        Roughly how many ticks.
+
+    Returns
+    -------
+    list of float
+
+    Examples
+    --------
+    >>> nice_ticks(-4, 4)
+    [-4.0, -2.0, 0.0, 2.0, 4.0]
+    >>> nice_ticks(0.0, 1.0, 3)
+    [0.0, 0.5, 1.0]
+    """
+    span = hi - lo
+    if not span > 0 or not math.isfinite(span):
+        return []
+    raw = span / max(n - 1, 1)
+    mag = 10.0 ** math.floor(math.log10(raw))
+    # the 1-2-5 step whose tick count is nearest n
+    step = min((m * mag for m in (0.5, 1, 2, 5, 10)), key=lambda s: abs(span / s + 1 - n))
+    first = math.ceil(lo / step - 1e-9)
+    out = []
+    k = first
+    while k * step <= hi + 1e-9 * step:
+        out.append(round(k * step, 12) + 0.0)
+        k += 1
+    return out
+
+
+def _color(role: str, color: str | None) -> str:
+    return color or COLORS.get(role) or STYLES.get(role, {}).get("color") or COLORS["text"]
+
+
+def _dash(role: str):
+    ls = STYLES.get(role, {}).get("linestyle")
+    if isinstance(ls, tuple):
+        return [round(v * PX_PER_PT, 2) for v in ls[1]]
+    return None
+
+
+class Picture:
+    """A picture under construction: a view and its elements (module docstring).
+
+    Parameters
+    ----------
+    view : (float, float, float, float)
+        ``(x0, x1, y0, y1)``: what must be in view.  With ``equal=True`` (one scale
+        on both axes) the box is widened on one axis to the plot area's shape.
+    size : (int, int)
+        Width and height in pixels.
+    title : str
+        Shown above the picture.
+    equal : bool
+        One scale on both axes.
+    ticks : bool
+        Axes with ticks (and their labels) around the plot area.
+    margin : (left, right, top, bottom) pixels, optional
+        Room around the plot area (default: room for the tick labels and title).
+
+    Raises
+    ------
+    InputError
+        A view that is not a finite box with positive extent, or a size below 50 px.
+    """
+
+    def __init__(self, view, size=(560, 540), *, title: str = "", equal: bool = True,
+                 ticks: bool = True, margin=None):
+        x0, x1, y0, y1 = (float(v) for v in view)
+        if not all(map(math.isfinite, (x0, x1, y0, y1))) or not (x1 > x0 and y1 > y0):
+            raise InputError(f"view must be a finite box (x0 < x1, y0 < y1), got {tuple(view)}")
+        w, h = (int(round(float(s))) for s in size)
+        if w < 50 or h < 50:
+            raise InputError(f"size must be at least 50 × 50 pixels, got {tuple(size)}")
+        self.size = (w, h)
+        self.title = str(title)
+        self.ticks = bool(ticks)
+        if margin is None:
+            margin = (44, 12, 26 if title else 10, 30) if ticks else (6, 6, 24 if title else 6, 6)
+        self.margin = tuple(float(m) for m in margin)
+        ml, mr, mt, mb = self.margin
+        pw, ph = w - ml - mr, h - mt - mb
+        if equal:  # widen the box on one axis to the plot area's shape
+            k = min(pw / (x1 - x0), ph / (y1 - y0))
+            cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+            hx, hy = pw / k / 2, ph / k / 2
+            x0, x1, y0, y1 = cx - hx, cx + hx, cy - hy, cy + hy
+        self.box = (x0, x1, y0, y1)
+        self.kx, self.ky = pw / (x1 - x0), ph / (y1 - y0)  # pixels per data unit
+        self.elements: list[dict] = []
+        self.handles: list[dict] = []
+        self._ids: set[str] = set()
+
+    # ------------------------------------------------------------------ helpers
+    def to_px(self, xy) -> np.ndarray:
+        """Pixel coordinates (from the plot area's lower left, y up) of data points.
+
+        Parameters
+        ----------
+        xy : array_like (..., 2)
+
+        Returns
+        -------
+        numpy.ndarray
+        """
+        xy = np.asarray(xy, dtype=float)
+        return np.stack([(xy[..., 0] - self.box[0]) * self.kx,
+                         (xy[..., 1] - self.box[2]) * self.ky], axis=-1)
+
+    def _add(self, id: str, role: str, symbol: str, desc: str, parts: list, *, color: str,
+             width: float | None = None, dash=None, fill: str | None = None,
+             alpha: float = 1.0, z: int = 3) -> dict:
+        id = str(id)
+        if id in self._ids:
+            raise InputError(f"element id {id!r} is used twice in one picture")
+        self._ids.add(id)
+        el = {"id": id, "role": role, "symbol": symbol or "", "desc": desc or "",
+              "color": color, "width": round(width if width is not None else
+                                             LINEWIDTHS.get(role, 1.3) * PX_PER_PT, 2),
+              "dash": dash, "fill": fill, "alpha": alpha, "z": z, "parts": parts}
+        self.elements.append(el)
+        return el
+
+    def _label(self, text, x, y, dx, dy, ha="left", va="bottom"):
+        return {"p": "text", "x": x, "y": y, "dx": dx, "dy": dy, "text": text, "ha": ha, "va": va}
+
+    def _edge_arrow(self, n_px, t_px, length, text, infinite):
+        """Parts of an arrow at the view's edge in the pixel direction ``n_px`` (along ``t_px``)."""
+        ml, mr, mt, mb = self.margin
+        pw, ph = self.size[0] - ml - mr, self.size[1] - mt - mb
+        n = np.asarray(n_px, float) / math.hypot(*n_px)
+        t = np.asarray(t_px, float) / math.hypot(*t_px)
+        half = np.array([pw / 2, ph / 2])
+        s = min(half[k] / abs(n[k]) for k in range(2) if n[k] != 0.0)
+        base_px = half + n * (s - 16.0)  # from the plot area's lower left
+        tail_px = base_px - t * length / 2
+        x, y = self.box[0] + tail_px[0] / self.kx, self.box[2] + tail_px[1] / self.ky
+        parts = [{"p": "arrow", "x": x, "y": y, "dx": float(t[0] * length), "dy": float(t[1] * length)}]
+        lab_px = base_px - n * (length / 2 + 6)
+        lx, ly = self.box[0] + lab_px[0] / self.kx, self.box[2] + lab_px[1] / self.ky
+        ha = "right" if n[0] > 0.5 else "left" if n[0] < -0.5 else "center"
+        va = "top" if n[1] > 0.5 else "bottom" if n[1] < -0.5 else "center"
+        words = (text + " " if text else "") + ("at ∞" if infinite else "(off view)")
+        parts.append(self._label(words, lx, ly, 0.0, 0.0, ha, va))
+        return parts
+
+    # ------------------------------------------------------------------ elements
+    def point(self, id: str, p, *, role: str = "twist", symbol: str = "", desc: str = "",
+              label: str | None = None, glyph: bool = True, size: float | None = None,
+              shape: str | None = None, color: str | None = None, glyph_scale: float = 6.0):
+        """A homogeneous point (a twist's or an acceleration's pole) with its rotation glyph.
+
+        A finite pole in view is a marker, with a 270° arrow turning with the sign of
+        the weight (the rate of rotation, 4.10); a pole out of view is an arrow at the
+        view's edge pointing to it; an ideal point (a translation, weight 0) is an arrow
+        at the edge in the direction in which the point lies, along the translation.
+
+        Parameters
+        ----------
+        id : str
+            Stable name of the element.
+        p : array_like (3,)
+            ``[vx, vy, w]``.
+        role : str
+            Style role (:mod:`planargeo.draw.style`).
+        symbol, desc : str
+            Thesis symbol and a one-line description (meaning, equation, value).
+        label : str, optional
+            Text beside the pole (default: ``symbol``).
+        glyph : bool
+            Draw the rotation glyph.
+        size : float, optional
+            Marker size in pixels.
+        shape : {"o", "D", "s"}, optional
+            Marker shape.
+        color : str, optional
+            Colour instead of the role's.
+        glyph_scale : float
+            Glyph radius in pixels per unit ``|w|`` (clamped to [5, 22] px).
+        """
+        p = np.asarray(p, dtype=float)
+        color = _color(role, color)
+        text = symbol if label is None else label
+        st = STYLES.get(role, {})
+        size = float(size if size is not None else st.get("markersize", 5.0) * PX_PER_PT)
+        parts: list[dict] = []
+        xy = None
+        if p[2] != 0.0 and np.any(p):
+            x0, x1, y0, y1 = self.box
+            diag, c = math.hypot(x1 - x0, y1 - y0), ((x0 + x1) / 2, (y0 + y1) / 2)
+            with np.errstate(over="ignore"):
+                off = math.hypot(-p[1] - c[0] * p[2], p[0] - c[1] * p[2])
+            if off <= FAR * diag * abs(p[2]):
+                xy = point_xy(p)
+        if xy is not None:
+            x, y = float(xy[0]), float(xy[1])
+            q = self.to_px([x, y])
+            ml, mr, mt, mb = self.margin
+            pw, ph = self.size[0] - ml - mr, self.size[1] - mt - mb
+            if -1 <= q[0] <= pw + 1 and -1 <= q[1] <= ph + 1:
+                parts.append({"p": "mark", "x": x, "y": y, "shape": shape or st.get("marker", "o"),
+                              "size": size})
+                r = float(np.clip(glyph_scale * abs(p[2]), 4.0, 16.0)) * PX_PER_PT
+                if glyph:
+                    parts.append({"p": "glyph", "x": x, "y": y, "r": round(r, 2), "ccw": bool(p[2] > 0)})
+                if text:
+                    gap = (0.75 * r + 3.0) if glyph else size / 2 + 3.0
+                    parts.append(self._label(text, x, y, gap, gap))
+            else:
+                c = np.array([pw / 2, ph / 2])
+                parts += self._edge_arrow(q - c, q - c, 22.0, text, infinite=False)
+        elif np.any(p):
+            a, b = float(p[0]), float(p[1])
+            n = np.array([-b * self.kx, a * self.ky]) * (-1.0 if p[2] < 0 else 1.0)
+            t = np.array([a * self.kx, b * self.ky])
+            L = float(np.clip(glyph_scale * math.hypot(a, b), 12.0, 40.0)) * PX_PER_PT
+            parts += self._edge_arrow(n, t, L, text, infinite=True)
+        self._add(id, role, symbol, desc, parts, color=color, z=7)
+
+    def line(self, id: str, l, *, role: str = "wrench", symbol: str = "", desc: str = "",
+             label: str | None = None, anchor=None, arrow: bool = True, color: str | None = None,
+             width: float | None = None, dash=None):
+        """A homogeneous line (a wrench's line of action), clipped to the view.
+
+        The force's sense is an arrow of fixed length on the line, at ``anchor`` (its
+        point nearest the view's centre by default).  The line at infinity (a pure
+        couple, 4.27) is a couple glyph in the upper right corner.
+
+        Parameters
+        ----------
+        id : str
+            Stable name of the element.
+        l : array_like (3,)
+            ``[fx, fy, tz]``.
+        role : str
+            Style role.
+        symbol, desc : str
+            Thesis symbol and a one-line description.
+        label : str, optional
+            Text at the line (default: ``symbol``).
+        anchor : (float, float), optional
+            Where the sense arrow sits (projected onto the line).
+        arrow : bool
+            Draw the sense arrow.
+        color : str, optional
+            Colour instead of the role's.
+        width : float, optional
+            Line width in pixels.
+        dash : list of float, optional
+            Dash pattern in pixels (default: the role's).
+        """
+        l = np.asarray(l, dtype=float)
+        color = _color(role, color)
+        text = symbol if label is None else label
+        parts: list[dict] = []
+        seg = clip_line(l, self.box)
+        F = math.hypot(l[0], l[1])
+        if seg is not None:
+            parts.append({"p": "path", "xy": seg.tolist(), "closed": False})
+            e = np.array([l[0], l[1]]) / F
+            c = np.array([(self.box[0] + self.box[1]) / 2, (self.box[2] + self.box[3]) / 2])
+            a = c if anchor is None else np.asarray(anchor, float)
+            foot = seg[0] + e * float((a - seg[0]) @ e)
+            lo, hi = sorted(float((s - seg[0]) @ e) for s in seg)
+            t = float(np.clip((foot - seg[0]) @ e, lo + 0.1 * (hi - lo), hi - 0.1 * (hi - lo)))
+            foot = seg[0] + e * t
+            ep = np.array([e[0] * self.kx, e[1] * self.ky])
+            ep /= math.hypot(*ep)
+            if arrow:
+                parts.append({"p": "arrow", "x": float(foot[0]), "y": float(foot[1]),
+                              "dx": float(ep[0] * 24), "dy": float(ep[1] * 24)})
+            if text:
+                nrm = np.array([-ep[1], ep[0]])
+                parts.append(self._label(text, float(foot[0]), float(foot[1]),
+                                         float(nrm[0] * 8 + ep[0] * 12), float(nrm[1] * 8 + ep[1] * 12)))
+        elif F == 0.0 and l[2] != 0.0:
+            x0, x1, y0, y1 = self.box
+            x, y = x1 - 26 / self.kx, y1 - 26 / self.ky
+            parts.append({"p": "glyph", "x": x, "y": y, "r": 12.0, "ccw": bool(l[2] > 0)})
+            parts.append(self._label((text + ": " if text else "") + "couple (line at ∞)",
+                                     x, y, -18.0, 0.0, "right", "center"))
+        self._add(id, role, symbol, desc, parts, color=color, width=width,
+                  dash=dash if dash is not None else _dash(role))
+
+    def conic(self, id: str, C, *, role: str = "conic", symbol: str = "", desc: str = "",
+              label: str | None = None, mark_center: bool | None = None, color: str | None = None):
+        """A conic (an inertia's imaginary conic drawn by its real stand-in, dashed).
+
+        Parameters
+        ----------
+        id : str
+            Stable name of the element.
+        C : array_like (3, 3)
+            Symmetric conic matrix.
+        role : str
+            ``"conic"`` or ``"inertia"`` (dashed, centre marked).
+        symbol, desc : str
+            Thesis symbol and a one-line description.
+        label : str, optional
+            Text at the curve (default: ``symbol``).
+        mark_center : bool, optional
+            Mark the centre (default: for inertias and imaginary conics).
+        color : str, optional
+            Colour instead of the role's.
+        """
+        g = conic_geometry(C)
+        color = _color(role, color)
+        text = symbol if label is None else label
+        curves = conic_curves(C, self.box, g)
+        parts = [{"p": "path", "xy": c.tolist(), "closed": g["kind"] == "ellipse"} for c in curves]
+        imaginary = bool(g.get("imaginary"))
+        if "affine" in g:
+            mark = mark_center if mark_center is not None else (imaginary or role == "inertia")
+            if mark and g["kind"] != "parabola":
+                cx, cy = (float(v) for v in g["affine"][:2, 2])
+                parts.append({"p": "mark", "x": cx, "y": cy, "shape": "o", "size": 4.0})
+            if text:
+                top = g["affine"] @ [0.7071, 0.7071, 1.0]
+                parts.append(self._label(text, float(top[0]), float(top[1]), 4.0, 4.0))
+        elif g["kind"] == "point":
+            x, y = (float(v) for v in g["point"])
+            parts.append({"p": "mark", "x": x, "y": y, "shape": "o", "size": 5.0})
+        dash = _dash("inertia") if (imaginary or role == "inertia") else _dash(role)
+        self._add(id, role, symbol, desc, parts, color=color, dash=dash, z=2)
+
+    def path(self, id: str, xy, *, role: str = "body", symbol: str = "", desc: str = "",
+             closed: bool = False, fill: str | None = None, color: str | None = None,
+             width: float | None = None, dash=None, alpha: float = 1.0, label: str | None = None,
+             z: int = 1):
+        """A polyline or polygon in data coordinates (bodies, links, ground, charts).
+
+        Parameters
+        ----------
+        id : str
+            Stable name of the element.
+        xy : array_like (n, 2)
+            Vertices.
+        role : str
+            Style role.
+        symbol, desc : str
+            Thesis symbol and a one-line description.
+        closed : bool
+            A polygon.
+        fill : str, optional
+            Fill colour.
+        color : str, optional
+            Stroke colour (``"none"``: no stroke).
+        width : float, optional
+            Stroke width in pixels.
+        dash : list of float, optional
+            Dash pattern in pixels.
+        alpha : float
+            Opacity of the fill.
+        label : str, optional
+            Text at the first vertex.
+        z : int
+            Drawing order.
+        """
+        xy = np.asarray(xy, dtype=float).reshape(-1, 2)
+        parts = [{"p": "path", "xy": xy.tolist(), "closed": bool(closed)}]
+        if label:
+            parts.append(self._label(label, float(xy[0, 0]), float(xy[0, 1]), 4.0, 4.0))
+        self._add(id, role, symbol, desc, parts, color=_color(role, color), width=width,
+                  dash=dash, fill=fill, alpha=alpha, z=z)
+
+    def handle(self, id: str, xy, *, symbol: str = "", desc: str = ""):
+        """A point the user may drag (the page hit-tests it and moves it at once).
+
+        Parameters
+        ----------
+        id : str
+            The handle's name (the explorer's :class:`~planargeo.widgets.base.Handle`).
+        xy : (float, float)
+            Where it is.
+        symbol, desc : str
+            What dragging it changes.
+        """
+        x, y = (float(v) for v in xy)
+        if math.isfinite(x) and math.isfinite(y):
+            self.handles.append({"id": str(id), "x": x, "y": y, "symbol": symbol, "desc": desc})
+
+    # ------------------------------------------------------------------ output
+    def _place_labels(self) -> None:
+        """Move labels (among eight spots around their anchor) so that no two boxes overlap."""
+        ml, mr, mt, mb = self.margin
+        pw, ph = self.size[0] - ml - mr, self.size[1] - mt - mb
+        placed: list[tuple[float, float, float, float]] = []
+        for el in sorted(self.elements, key=lambda e: -e["z"]):
+            for part in el["parts"]:
+                if part["p"] != "text":
+                    continue
+                w = _CHAR_EM * FONT_PX * len(part["text"])
+                h = 1.25 * FONT_PX
+                q = self.to_px([part["x"], part["y"]])
+                dx, dy = part["dx"], part["dy"]
+                r = max(math.hypot(dx, dy), 6.0)
+                tries = [(dx, dy, part["ha"], part["va"])] + [
+                    (r * math.cos(a), r * math.sin(a),
+                     "left" if math.cos(a) > 0.3 else "right" if math.cos(a) < -0.3 else "center",
+                     "bottom" if math.sin(a) > 0.3 else "top" if math.sin(a) < -0.3 else "center")
+                    for a in np.deg2rad([45, 135, 225, 315, 0, 90, 180, 270])]
+                best, best_cost = tries[0], math.inf
+                for tx, ty, ha, va in tries:
+                    bx = q[0] + tx - (0 if ha == "left" else w if ha == "right" else w / 2)
+                    by = q[1] + ty - (0 if va == "bottom" else h if va == "top" else h / 2)
+                    box = (bx, by, bx + w, by + h)
+                    cost = sum(max(0.0, min(box[2], o[2]) - max(box[0], o[0])) *
+                               max(0.0, min(box[3], o[3]) - max(box[1], o[1])) for o in placed)
+                    cost += w * h * (max(0.0, -box[0]) + max(0.0, box[2] - pw) +
+                                     max(0.0, -box[1]) + max(0.0, box[3] - ph))
+                    if cost < best_cost - 1e-9:
+                        best, best_cost, best_box = (tx, ty, ha, va), cost, box
+                        if cost == 0.0:
+                            break
+                part["dx"], part["dy"], part["ha"], part["va"] = (round(best[0], 2), round(best[1], 2),
+                                                                  best[2], best[3])
+                placed.append(best_box)
+
+    def to_dict(self) -> dict[str, Any]:
+        """The picture as plain JSON data (labels placed, numbers rounded to 1e-4 of the view).
+
+        Returns
+        -------
+        dict
+            ``{"size", "margin", "box", "title", "ticks", "elements", "handles"}``.
+        """
+        self._place_labels()
+        span = max(self.box[1] - self.box[0], self.box[3] - self.box[2])
+        nd = max(0, 5 - int(math.floor(math.log10(span))))
+
+        def rnd(v):
+            if isinstance(v, float):
+                return round(v, nd) + 0.0
+            if isinstance(v, list):
+                return [rnd(u) for u in v]
+            return v
+
+        elements = []
+        for el in sorted(self.elements, key=lambda e: e["z"]):
+            parts = []
+            for part in el["parts"]:
+                part = dict(part)
+                for k in ("x", "y", "xy"):
+                    if k in part:
+                        part[k] = rnd(part[k])
+                parts.append(part)
+            elements.append({**el, "parts": parts})
+        ticks = ({"x": nice_ticks(self.box[0], self.box[1]), "y": nice_ticks(self.box[2], self.box[3])}
+                 if self.ticks else None)
+        return {"size": list(self.size), "margin": list(self.margin),
+                "box": [round(v, nd) + 0.0 for v in self.box], "title": self.title,
+                "ticks": ticks, "font_px": FONT_PX, "elements": elements,
+                "handles": [{**h, "x": rnd(h["x"]), "y": rnd(h["y"])} for h in self.handles]}

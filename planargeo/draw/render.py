@@ -1,0 +1,141 @@
+"""The matplotlib renderer of a :class:`~planargeo.draw.picture.Picture` (exports, stored pictures).
+
+It draws the picture's plain data through matplotlib's public API, with no geometry
+of its own: what the page shows live, this draws into SVG, PNG and the pictures
+stored in notebooks.  Pixel sizes of the picture become points at 100 dpi
+(:data:`~planargeo.draw.picture.PX_PER_PT`).
+
+Examples
+--------
+>>> from planargeo.draw.picture import Picture
+>>> pic = Picture((-1, 1, -1, 1), size=(200, 200))
+>>> pic.line("f", [1.0, 0.0, 0.0], symbol="f")
+>>> fig = figure(pic.to_dict())
+>>> fig.get_size_inches().tolist()
+[2.0, 2.0]
+"""
+from __future__ import annotations
+
+import io
+
+import numpy as np
+from matplotlib.figure import Figure
+from matplotlib.patches import Polygon
+
+from planargeo.draw.geometry import arc_glyph
+from planargeo.draw.picture import PX_PER_PT
+from planargeo.draw.style import LABEL_PT, TITLE_PT, rc_context
+
+__all__ = ["draw_picture", "figure", "picture_bytes"]
+
+_MARKERS = {"o": "o", "D": "D", "s": "s"}
+
+
+def draw_picture(pic: dict, ax) -> None:
+    """Draw the picture ``pic`` (:meth:`Picture.to_dict`) on the axes ``ax``.
+
+    Parameters
+    ----------
+    pic : dict
+        A picture's data.
+    ax : matplotlib.axes.Axes
+        Axes whose position already matches the picture's plot area.
+    """
+    x0, x1, y0, y1 = pic["box"]
+    w, h = pic["size"]
+    ml, mr, mt, mb = pic["margin"]
+    kx, ky = (w - ml - mr) / (x1 - x0), (h - mt - mb) / (y1 - y0)
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)
+    ax.set_aspect("auto")
+    if pic.get("ticks"):
+        ax.set_xticks(pic["ticks"]["x"])
+        ax.set_yticks(pic["ticks"]["y"])
+        ax.tick_params(labelsize=LABEL_PT)
+    else:
+        ax.set_axis_off()
+    if pic.get("title"):
+        ax.set_title(pic["title"], fontsize=TITLE_PT)
+    for el in pic["elements"]:
+        c, lw, z = el["color"], el["width"] / PX_PER_PT, el["z"]
+        dashes = None if not el.get("dash") else [v / PX_PER_PT / lw for v in el["dash"]]
+        for part in el["parts"]:
+            kind = part["p"]
+            if kind == "path":
+                xy = np.asarray(part["xy"], float).reshape(-1, 2)
+                if el.get("fill") or part["closed"]:
+                    ax.add_patch(Polygon(xy, closed=part["closed"], facecolor=el.get("fill") or "none",
+                                         edgecolor=c if c != "none" else "none", linewidth=lw,
+                                         alpha=el.get("alpha", 1.0), zorder=z, gid=el["id"]))
+                else:
+                    (ln,) = ax.plot(xy[:, 0], xy[:, 1], color=c, linewidth=lw, zorder=z, gid=el["id"],
+                                    solid_capstyle="butt")
+                    if dashes:
+                        ln.set_dashes(dashes)
+            elif kind == "mark":
+                ax.plot([part["x"]], [part["y"]], linestyle="none", marker=_MARKERS[part["shape"]],
+                        markersize=part["size"] / PX_PER_PT, color=c, markeredgecolor="white",
+                        markeredgewidth=0.6, zorder=z + 0.5, gid=el["id"])
+            elif kind == "glyph":
+                arc, head = arc_glyph(part["r"], part["ccw"])
+                ax.plot(part["x"] + arc[:, 0] / kx, part["y"] + arc[:, 1] / ky, color=c, linewidth=1.2,
+                        zorder=z, gid=el["id"])
+                ax.add_patch(Polygon(np.column_stack([part["x"] + head[:, 0] / kx,
+                                                      part["y"] + head[:, 1] / ky]),
+                                     closed=True, color=c, zorder=z, gid=el["id"]))
+            elif kind == "arrow":
+                tip = (part["x"] + part["dx"] / kx, part["y"] + part["dy"] / ky)
+                ax.annotate("", xy=tip, xytext=(part["x"], part["y"]), zorder=z + 0.5,
+                            arrowprops=dict(arrowstyle="-|>", color=c, linewidth=1.4,
+                                            mutation_scale=9, shrinkA=0, shrinkB=0))
+            elif kind == "text":
+                ax.annotate(part["text"], (part["x"], part["y"]),
+                            xytext=(part["dx"] / PX_PER_PT, part["dy"] / PX_PER_PT),
+                            textcoords="offset points", ha=part["ha"],
+                            va={"center": "center_baseline"}.get(part["va"], part["va"]),
+                            fontsize=LABEL_PT, color=c, zorder=z + 1, gid=el["id"] + ":label",
+                            annotation_clip=False)
+
+
+def figure(pic: dict) -> Figure:
+    """A new matplotlib figure holding the picture at its pixel size (100 dpi).
+
+    Parameters
+    ----------
+    pic : dict
+        A picture's data (:meth:`Picture.to_dict`).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    w, h = pic["size"]
+    ml, mr, mt, mb = pic["margin"]
+    with rc_context():
+        fig = Figure(figsize=(w / 100.0, h / 100.0), dpi=100)
+        ax = fig.add_axes((ml / w, mb / h, (w - ml - mr) / w, (h - mt - mb) / h))
+        draw_picture(pic, ax)
+    return fig
+
+
+def picture_bytes(pic: dict, format: str = "svg", dpi: float = 100) -> bytes:
+    """The picture as SVG or PNG bytes (drawn by matplotlib).
+
+    Parameters
+    ----------
+    pic : dict
+        A picture's data.
+    format : {"svg", "png"}
+        Output format.
+    dpi : float
+        Resolution of a PNG (100: the picture's pixel size).
+
+    Returns
+    -------
+    bytes
+    """
+    fig = figure(pic)
+    buf = io.BytesIO()
+    with rc_context():
+        fig.savefig(buf, format=format, dpi=dpi)
+    return buf.getvalue()
