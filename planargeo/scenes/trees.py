@@ -35,7 +35,7 @@ import numpy as np
 from planargeo.scenes import SceneResult, check_param, register
 
 __all__ = ["tree", "constrained_tree", "tree_model", "tree_solve", "tree_dof", "tree_pose", "tree_advance",
-           "tree_reactions",
+           "tree_reactions", "CROSS_COND", "CROSS_STEP",
            "FIG91_PARENTS", "FIG91_ANGLES"]
 
 #: Parents of Fig 9.1 (0-based; -1 is the ground).
@@ -239,11 +239,14 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
 def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
     """A state of the (constrained) tree with body 1 at ``root_angle``: the loops closed, the speed pattern projected.
 
-    Positions: ``q_start`` (default: the pose of Fig 9.1/9.2) with joint 1 set to
-    ``root_angle`` (and body 2 to the absolute angle ``angle2`` if given) and the
-    other joints moved by Gauss-Newton until the pins close
-    (:func:`planargeo.simulate.loops.project_state` with those joints fixed,
-    9.54 in positions).  Velocities: ``speed`` times the scene's joint-speed
+    Positions, without ``q_start`` (a rule on the two angles alone, so that one
+    pair of angles gives one pose): the pose of Fig 9.1/9.2 turned as a whole to
+    ``root_angle`` (its loops stay closed), then body 2 turned the shorter way to
+    the absolute angle ``angle2`` in steps of at most 10°, the other joints moved
+    after each step by Gauss-Newton until the pins close
+    (:func:`planargeo.simulate.loops.project_state` with joints 1 and 2 fixed,
+    9.54 in positions).  With ``q_start``: joint 1 (and 2) set in ``q_start``
+    and the loops closed from there in one go.  Velocities: ``speed`` times the scene's joint-speed
     pattern, minus its part that breaks the loops (least squares, as the
     ``"constrained-tree"`` scene), so at ``root_angle = 90°`` and the default
     pose this is the scene's state.
@@ -257,7 +260,7 @@ def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
     speed : float
         Scale of the joint-speed pattern (rad/s).
     q_start : array_like (9,), optional
-        Where to start the closure (the last pose shown, for a continuous drag).
+        Where to start the closure (default: the rule above).
     angle2 : float, optional
         Absolute angle of body 2 (rad); None: body 2 keeps its angle relative to body 1.
 
@@ -281,26 +284,65 @@ def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
     from planargeo.simulate.loops import closure_jacobian, closure_residual, project_state
 
     root_angle, speed = check_param("root_angle", root_angle), check_param("speed", speed)
-    q = _default_q() if q_start is None else np.array(q_start, dtype=float)
-    q[0] = root_angle
-    fixed = [0]
-    if angle2 is not None:
-        q[1] = check_param("angle2", angle2) - root_angle
-        fixed = [0, 1]
     qd = speed * _QD_PATTERN
+    if q_start is not None:
+        q = np.array(q_start, dtype=float)
+        q[0] = root_angle
+        fixed = [0]
+        if angle2 is not None:
+            q[1] = check_param("angle2", angle2) - root_angle
+            fixed = [0, 1]
+        path = [q[1]]
+    else:
+        # the Fig 9.2 pose turned as a whole (its loops stay closed), then body 2 turned the shorter
+        # way to angle2 in steps of at most 10° with the loops closed again after each step
+        q = _default_q()
+        q[0] = root_angle
+        fixed = [0]
+        path = [q[1]]
+        if angle2 is not None:
+            rel = check_param("angle2", angle2) - root_angle
+            turn = float(np.remainder(rel - q[1] + np.pi, 2 * np.pi) - np.pi)
+            n = int(np.ceil(abs(turn) / np.radians(10.0)))
+            path = [q[1] + turn * (k + 1) / n for k in range(n)] + [rel] if n else [rel]
+            fixed = [0, 1]
     if model.contacts:
-        q, _ = project_state(model, q, np.zeros(9), fixed=fixed, tol=1e-13, max_iter=50)
+        for a in path:
+            q[1] = a
+            q, _ = project_state(model, q, np.zeros(9), fixed=fixed, tol=1e-13, max_iter=50)
         if not np.abs(closure_residual(model, q)).max() < 1e-9:
             where = f"body 1 at {np.degrees(root_angle):.4g}°" + (
-                "" if angle2 is None else f" and body 2 at {np.degrees(angle2):.4g}°")
-            raise SceneError(f"the loops of Fig 9.2 cannot close with {where}: the pins are out of reach")
+                "" if angle2 is None else f", body 2 at {np.degrees(angle2):.4g}°")
+            raise SceneError(f"the loops cannot close with {where}: the pins are out of reach")
         Jc = closure_jacobian(model, q)
         qd = qd - np.linalg.pinv(Jc) @ (Jc @ qd)
+    else:
+        q[1] = path[-1]
     return q, qd
 
 
-def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10):
+#: condition number of ``BᵀGΛ⁻¹GᵀB`` below which :func:`tree_advance` integrates adaptively again
+#: after crossing a singular configuration
+CROSS_COND = 1e3
+#: fixed step (s) of the RK4 steps that cross a singular configuration
+CROSS_STEP = 1e-3
+_CROSS_FACTORS = (1.0, 0.77, 1.3, 0.5, 2.0, 0.31, 3.0, 0.2, 5.0)
+
+
+def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True):
     """Integrate the tree (loops closed by its contacts, if any) over ``dt`` seconds (9.5 with :func:`simulate_loops`).
+
+    The closed tree of Fig 9.2 has equal links, so its loop 5-6-8-9 is a
+    rhombus: it folds flat (all four links on one line) in the course of most
+    motions.  There ``BᵀGΛ⁻¹GᵀB`` (9.70) loses rank for an instant: the motion
+    goes on smoothly, but the adaptive integrator's steps shrink towards the
+    flat pose until the solver refuses it.  With ``cross`` such a stop is
+    stepped over: from the last state with condition number below
+    :data:`CROSS_COND` the motion is carried on by fixed RK4 steps of
+    :data:`CROSS_STEP` (which pass the flat pose between two evaluations; the
+    projection keeps the loops closed) until the condition number is below
+    :data:`CROSS_COND` again; then the adaptive integration goes on.  Each
+    crossing is an event ``{"kind": "singular pose passed", "t", "cond"}``.
 
     Parameters
     ----------
@@ -312,20 +354,22 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10):
         Duration (s), > 0.
     rtol, atol : float
         Integrator tolerances (DOP853).
+    cross : bool
+        Step over singular configurations (True) or stop there (False: the error).
 
     Returns
     -------
     dict
         ``q``, ``qd`` at the end, ``position_residual``, ``velocity_residual`` (largest closure
-        drift during the step, m and m/s), ``events`` (near-singular configurations passed),
-        ``nfev``, ``status``.
+        drift during the step, m and m/s), ``events`` (near-singular configurations met and
+        singular ones passed, ``t`` from the start of the step), ``crossings``, ``nfev``, ``status``.
 
     Raises
     ------
     SceneError
         If ``dt`` is not positive.
     PlanargeoError
-        If the integration stops (a singular configuration: its message).
+        If the integration stops (a singular configuration that could not be crossed: its message).
 
     Examples
     --------
@@ -338,13 +382,58 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10):
     from planargeo.simulate.loops import simulate_loops
 
     dt = check_param("dt", dt, positive=True)
-    res = simulate_loops(model, q, qd, dt, rtol=rtol, atol=atol, progress=False)
-    if res.status != "ok":
-        raise PlanargeoError(f"the simulation stopped at t = {res.t[-1]:.4g} s: {res.message}")
-    return {"q": np.array(res.q[-1], dtype=float), "qd": np.array(res.qd[-1], dtype=float),
-            "position_residual": float(np.max(res.extra["position_residual"], initial=0.0)),
-            "velocity_residual": float(np.max(res.extra["velocity_residual"], initial=0.0)),
-            "events": list(res.events), "nfev": int(res.nfev), "status": res.status}
+    q, qd = np.array(q, dtype=float), np.array(qd, dtype=float)
+    t0, pos, vel, events, nfev, crossings = 0.0, 0.0, 0.0, [], 0, 0
+
+    def take(res, upto, start):
+        nonlocal pos, vel, nfev
+        k = slice(0, upto + 1)
+        pos = max(pos, float(np.max(res.extra["position_residual"][k], initial=0.0)))
+        vel = max(vel, float(np.max(res.extra["velocity_residual"][k], initial=0.0)))
+        nfev += int(res.nfev)
+        for e in res.events:
+            if e.get("kind") != "singular" and float(e.get("t", 0.0)) <= float(res.t[upto]):
+                events.append(dict(e, t=start + float(e.get("t", 0.0))))
+
+    def stopped(res, start):
+        return PlanargeoError(f"the simulation stopped at t = {start + float(res.t[-1]):.4g} s from the start of "
+                              f"the step: {res.message}")
+
+    while dt - t0 > 1e-12 * max(1.0, dt):
+        res = simulate_loops(model, q, qd, dt - t0, rtol=rtol, atol=atol, progress=False)
+        if res.status == "ok":
+            take(res, len(res.t) - 1, t0)
+            q, qd, t0 = np.array(res.q[-1], dtype=float), np.array(res.qd[-1], dtype=float), dt
+            break
+        if res.status != "singular" or not cross:
+            raise stopped(res, t0)
+        cond = np.asarray(res.cond, dtype=float)
+        good = np.flatnonzero(cond < CROSS_COND)
+        k = int(good[-1]) if good.size else 0
+        take(res, k, t0)
+        t0 += float(res.t[k])
+        q, qd = np.array(res.q[k], dtype=float), np.array(res.qd[k], dtype=float)
+        # cross with fixed RK4 steps until the condition number is low again (0.25 s at most)
+        h, spent = CROSS_STEP, 0.0
+        while spent < 0.25 and dt - t0 > 1e-12 * max(1.0, dt):
+            for f in _CROSS_FACTORS:         # an evaluation landed on the flat pose itself: other steps
+                span = min(10 * h * f, dt - t0)
+                rk = simulate_loops(model, q, qd, span, method="RK4", dt=min(h * f, span), progress=False)
+                if rk.status == "ok":
+                    break
+            else:
+                raise stopped(rk, t0)
+            take(rk, len(rk.t) - 1, t0)
+            q, qd = np.array(rk.q[-1], dtype=float), np.array(rk.qd[-1], dtype=float)
+            t0 += float(rk.t[-1])
+            spent += float(rk.t[-1])
+            c = np.asarray(rk.cond, dtype=float)
+            if c.size and c[-1] < CROSS_COND:
+                break
+        crossings += 1
+        events.append({"kind": "singular pose passed", "t": t0, "cond": float(cond.max())})
+    return {"q": q, "qd": qd, "position_residual": pos, "velocity_residual": vel,
+            "events": sorted(events, key=lambda e: e["t"]), "crossings": crossings, "nfev": nfev, "status": "ok"}
 
 
 def tree_reactions(model, sol) -> list:

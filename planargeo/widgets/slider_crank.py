@@ -1,6 +1,7 @@
 """Slider-crank explorer: a closed kinematic loop and every force inside it (thesis 9.3-9.6, 9.61, Fig 9.3).
 
-The crank angle ``ψ`` and speed ``ψ̇`` set the state; the loop closure gives the
+The crank angle ``ψ`` and speed ``ψ̇`` at ``t = 0`` set the motion (the default
+23° is the thesis's 0.4 rad on the slider's 1° grid); the loop closure gives the
 rod and piston angles ``θ``, ``φ``.  The constrained algorithm
 (:func:`planargeo.scenes.slider_crank.slider_crank_solve`, the scene's own solve)
 gives the closed-loop accelerations and **every pin and bearing force of the
@@ -11,14 +12,16 @@ the piston, 9.71).  Each is drawn as its line of action through its joint with
 an arrow of the force and a label, placed clear of the other labels; the
 readout gives their magnitudes (N), the bearing's couple and the drive torque.
 
-*Play* integrates the mechanism with :func:`planargeo.simulate.loops.simulate_loops`
-(one :func:`~planargeo.scenes.slider_crank.slider_crank_advance` per frame),
-free or with the crank driven at constant speed, in slow motion
-(:attr:`SliderCrankExplorer.time_scale` scene seconds per second at speed 1×);
-the overlays follow every frame, the readout shows the energy and its drift
-since Play started (free crank) and the closure drift ``|φ|`` of the last
-frame, and names the dead centres (toggle positions: crank and rod in line) as
-the crank passes them.
+*Play* advances the scene time ``t``; the state at ``t`` is integrated from
+``t = 0`` with :func:`planargeo.simulate.loops.simulate_loops`
+(:func:`~planargeo.scenes.slider_crank.slider_crank_advance` from checkpoint to
+checkpoint, so the controls alone decide the state), free or with the crank
+driven at constant speed, in slow motion (:attr:`SliderCrankExplorer.time_scale`
+scene seconds per second at speed 1×, shown beside the speed menu); the
+overlays follow every frame, the readout shows the energy and its drift since
+``t = 0`` (free crank) and the closure drift (the largest gap the integration
+opened in the loop), and names the dead centres (toggle positions: crank and
+rod in line) as the crank passes them.
 
 Handles: drag the crank pin (sets ``ψ``) or the piston (sets its height; the
 crank keeps its side).  A configuration that cannot be assembled (rod too
@@ -51,6 +54,10 @@ LABEL_PT = 9.0
 #: Colour of contact (loop-closing) forces, apart from the joints' reaction green (Okabe-Ito purple).
 CONTACT_COLOR = OKABE_ITO["purple"]
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+#: controls that set the state at t = 0 (a change starts the time again)
+INITIAL = ("crank angle (deg)", "crank speed", "drive", "rod length", "gravity")
+#: scene seconds between the checkpoints of a run
+CHECKPOINT = 0.02
 
 
 def symbol_text(sym: str) -> str:
@@ -334,7 +341,7 @@ class SliderCrankExplorer(Explorer):
     --------
     >>> ex = SliderCrankExplorer(display="agg")
     >>> round(ex.readout_values["piston height h"], 3), ex.units["piston height h"]
-    (5.925, 'm')
+    (5.929, 'm')
     >>> _ = ex.advance(3)                                 # three Play frames of the free crank
     >>> abs(ex.readout_values["energy drift ΔE/E₀"]) < 1e-6
     True
@@ -345,24 +352,23 @@ class SliderCrankExplorer(Explorer):
     figsize = (5.6, 6.2)
     limits = (-4.5, 4.5, -3.5, 9.0)
     display_controls = ("reaction forces", "velocity poles", "acceleration poles")
-    #: scene seconds per second of Play at speed 1× (slow motion: the crank turns at ~20 rad/s)
+    #: scene seconds per second of Play at speed 1× (slow motion: the crank turns at ~20 rad/s; the base
+    #: shows the factor beside the speed menu)
     time_scale = 0.1
     #: relative tolerance of the Play integration (DOP853; energy drift ~1e-8 per crank turn)
     play_rtol = 1e-7
-    units = {"crank angle (deg)": "°", "rod angle θ": "°", "piston angle φ": "°", "piston height h": "m",
-             "piston speed": "m/s", "piston acceleration": "m/s²", "ψ̈ crank": "rad/s²",
+    units = {"t": "s", "crank angle ψ": "°", "crank speed ψ̇": "rad/s", "rod angle θ": "°", "piston angle φ": "°",
+             "piston height h": "m", "piston speed": "m/s", "piston acceleration": "m/s²", "ψ̈ crank": "rad/s²",
              "|f₁| crank pivot": "N", "|f₂| crank pin": "N", "|f₃| wrist pin": "N", "|F₃| slider bearing": "N",
              "bearing couple": "N·m", "drive torque Q₁": "N·m", "energy E": "J", "energy drift ΔE/E₀": "—",
-             "closure drift |φ|": "m", "t": "s", "dead centre": "—", "configuration": "—",
-             "last dead centre passed": "—"}
+             "closure drift": "m", "configuration": "—", "last dead centre passed": "—"}
 
     def __init__(self, **kw):
         p = scenes.parameters("slider-crank")     # the thesis 9.6 masses and lengths
         self.params = {k: p[k] for k in ("m1", "m2", "m3", "r", "t")}
         self.scale = float(p["l"])
         self._models: dict = {}
-        self._frame_pending = None                # values a Play frame asked for, and what it measured
-        self._run = {"t": 0.0, "E0": None, "drift": 0.0, "last": "", "passed_at": None}
+        self._runs: dict = {}                     # initial controls -> checkpoints of the run
         super().__init__(**kw)
 
     def model_for(self, l: float, g: float):
@@ -387,9 +393,10 @@ class SliderCrankExplorer(Explorer):
         dict
         """
         return {
-            "crank angle (deg)": Step(-180, 180, 1, math.degrees(0.4),
-                                      "crank angle ψ (°)").make("crank angle (deg)"),
-            "crank speed": Step(-100, 100, 0.5, 20.0, "crank speed ψ̇ (rad/s)").make("crank speed"),
+            "crank angle (deg)": Step(-180, 180, 1, 23.0,
+                                      "crank angle ψ at t = 0 (°)").make("crank angle (deg)"),
+            "crank speed": Step(-100, 100, 0.5, 20.0, "crank speed ψ̇ at t = 0 (rad/s)").make("crank speed"),
+            "t (s)": Step(0.0, 600.0, 0.001, 0.0, "t (s)").make("t (s)"),
             "drive": W.ToggleButtons(options=("free", "constant-speed"), value="free", description="crank"),
             "rod length": Step(1.0, 8.0, 0.01, 5.0, "rod length l (m)").make("rod length"),
             "gravity": Step(0.0, 20.0, 0.01, 9.81, "g (m/s²)").make("gravity"),
@@ -421,14 +428,14 @@ class SliderCrankExplorer(Explorer):
                   annotation_clip=True)
         self.body_labels = [ax.annotate(s, (0.0, 0.0), **kw) for s in ("1", "2", "3")]
         self.joint_labels = [ax.annotate(s, (0.0, 0.0), **kw) for s in ("ψ", "θ", "φ")]
-        self.glyphs = {s: ReactionGlyph(ax, symbol_text(s), legend="pin force f_i (9.61)" if s == "f_1" else None)
+        self.glyphs = {s: ReactionGlyph(ax, symbol_text(s), legend="pin force fᵢ (9.61)" if s == "f_1" else None)
                        for s in ("f_1", "f_2", "f_3")}
         self.glyphs["F_1"] = ReactionGlyph(ax, "F₃", color=CONTACT_COLOR, legend="bearing force F₃ (9.71)")
         self.glyphs["F_1"].text.set_text("F₃")          # the thesis calls the slider's force F₃ (9.84)
         z = np.array([0.0, 0.0, 1.0])
-        self.v_art = [ax.add_artist(PointArtist(z, role="twist", glyph_scale=0.5, text=f"v{i + 1}"))
+        self.v_art = [ax.add_artist(PointArtist(z, role="twist", glyph_scale=0.5, text=f"v{i + 1}".translate(_SUB)))
                       for i in range(3)]
-        self.a_art = [ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.05, text=f"a{i + 1}"))
+        self.a_art = [ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.05, text=f"a{i + 1}".translate(_SUB)))
                       for i in range(3)]
         self.banner = ax.text(0.98, 0.98, "", transform=ax.transAxes, ha="right", va="top", fontsize=LABEL_PT + 1,
                               color="#7a3d00", zorder=20, fontweight="bold")
@@ -462,48 +469,81 @@ class SliderCrankExplorer(Explorer):
             if abs(py) > r:
                 raise SceneError(f"the piston cannot reach height {y:.4g} m: the wrist pin must stay between "
                                  f"{abs(l - r):.4g} and {l + r:.4g} m from the crank pivot")
-            side = 1.0 if math.cos(math.radians(self.values["crank angle (deg)"])) >= 0 else -1.0
+            side = 1.0 if math.cos(float(self.state["q"][0])) >= 0 else -1.0    # the crank as shown
             px = side * math.sqrt(max(r * r - py * py, 0.0))
             return {"crank angle (deg)": math.degrees(math.atan2(py, px))}
 
         return [Handle("crank pin", pin, drag_pin), Handle("piston", piston, drag_piston)]
 
     # -------------------------------------------------------------------- Play
+    def adjust(self, values, changed):
+        """A change of the initial state starts the time again (``t = 0``), unless ``t`` is set with it.
+
+        Parameters
+        ----------
+        values : dict
+        changed : set of str
+
+        Returns
+        -------
+        dict
+        """
+        if set(changed) & set(INITIAL) and "t (s)" not in changed and values["t (s)"] != 0.0:
+            return {"t (s)": 0.0}
+        return {}
+
     def play_step(self, values, dt):
-        """One Play frame: ``dt × time_scale`` scene seconds through ``simulate_loops``.
+        """One Play step: the scene time advances by ``dt`` (the integration runs in :meth:`compute`).
 
         Parameters
         ----------
         values : dict
             The shown control values.
         dt : float
-            Seconds of Play (the base's ``speed / play_fps``).
+            Scene seconds (the base has applied :attr:`time_scale`), any value in ``(0, 1/play_fps]``.
 
         Returns
         -------
-        dict
-            The new crank angle (wrapped to ±180°) and speed.
-
-        Raises
-        ------
-        PlanargeoError
-            If the integration stops at a singular configuration (Play stops with its message).
+        dict or None
+            The next time, None at the end of the time slider.
         """
-        self._frame_pending = None
-        l, g = float(values["rod length"]), float(values["gravity"])
-        h = float(dt) * self.time_scale
-        psi = math.radians(values["crank angle (deg)"])
-        out = slider_crank_advance(self.model_for(l, g), psi, float(values["crank speed"]), h,
-                                   self.params["r"], l, values["drive"], rtol=self.play_rtol,
-                                   atol=self.play_rtol * 1e-2)
-        deg = (math.degrees(out["psi"]) + 180.0) % 360.0 - 180.0
-        new = {"crank angle (deg)": deg, "crank speed": out["psidot"]}
-        self._frame_pending = (new, h, out)
-        return new
+        t = float(values["t (s)"]) + float(dt)
+        return None if t > self.controls["t (s)"].max else {"t (s)": t}
 
     # ------------------------------------------------------------------ state
+    def _run_state(self, model, run, t, l, drive):
+        """``(psi, psidot, drift, passed)`` at scene time ``t`` of ``run`` (its checkpoints extended in place).
+
+        Integrated from checkpoint to checkpoint (``CHECKPOINT`` scene seconds apart),
+        then from the last one before ``t``: the same operations whatever the history.
+        """
+        r = self.params["r"]
+        ck = run["ck"]
+        k = int(math.floor(t / CHECKPOINT + 1e-9))
+
+        def step(psi, psidot, h, t0):
+            out = slider_crank_advance(model, psi, psidot, h, r, l, drive, rtol=self.play_rtol,
+                                       atol=self.play_rtol * 1e-2)
+            turn = out["psi"] - psi
+            passed = [(t0 + (h * (a - psi) / turn if turn else 0.0), name) for name, a in out["dead_centres"]]
+            return out["psi"], out["psidot"], out["position_residual"], passed
+
+        while len(ck) <= k:
+            n = len(ck) - 1
+            psi, psidot, res, passed = step(*ck[n], CHECKPOINT, n * CHECKPOINT)
+            ck.append((psi, psidot))
+            run["drift"].append(max(run["drift"][-1], res))
+            run["passed"] += passed
+        psi, psidot = ck[k]
+        drift, passed = run["drift"][k], [e for e in run["passed"] if e[0] <= k * CHECKPOINT]
+        rest = t - k * CHECKPOINT
+        if rest > 1e-12:
+            psi, psidot, res, more = step(psi, psidot, rest, k * CHECKPOINT)
+            drift, passed = max(drift, res), passed + more
+        return psi, psidot, drift, passed
+
     def compute(self, v, changed):
-        """Close the loop at the crank state and solve it (9.5), with every reaction (9.61).
+        """The state at time ``t`` of the run from the initial crank state; the loop closed and solved (9.5, 9.61).
 
         Parameters
         ----------
@@ -522,36 +562,32 @@ class SliderCrankExplorer(Explorer):
         SceneError, SingularConfigurationError
             A configuration that cannot be assembled, or a singular loop closure.
         """
-        psi = math.radians(v["crank angle (deg)"])
+        psi0 = math.radians(v["crank angle (deg)"])
         l, g = float(v["rod length"]), float(v["gravity"])
-        r, t = self.params["r"], self.params["t"]
+        r, thick = self.params["r"], self.params["t"]
         model = self.model_for(l, g)
-        q, qd, sol, h = slider_crank_solve(model, psi, float(v["crank speed"]), r, l, t, v["drive"])
-        T, V = energy(model, data=sol.data)
-        E = float(T + V)
-        st = {"sol": sol, "reactions": slider_crank_reactions(sol), "q": q, "qd": qd, "r": r, "l": l, "t": t, "h": h,
-              "v": sol.data.v,
-              "a": sol.a.reshape(3, 3), "F3": np.asarray(sol.F, dtype=float), "E": E, "message": "",
-              "drive": v["drive"]}
-        pending, self._frame_pending = self._frame_pending, None
-        run = self._run
-        frame = (pending is not None and all(v[k] == x for k, x in pending[0].items())
-                 and run["E0"] is not None)
-        if frame:
-            _new, hstep, out = pending
-            run = dict(run, t=run["t"] + hstep, drift=max(out["position_residual"], 0.0))
-            if out["dead_centres"]:
-                run["last"], run["passed_at"] = out["dead_centres"][-1][0], run["t"]
-        else:
-            run = {"t": 0.0, "E0": E, "drift": 0.0, "last": "", "passed_at": None}
-        st["run"] = run
-        st["frame"] = frame
+        drive = v["drive"]
+        key = (psi0, float(v["crank speed"]), drive, l, g)
+        run = self._runs.get(key)
+        if run is None:
+            q0, qd0, sol0, _h = slider_crank_solve(model, psi0, float(v["crank speed"]), r, l, thick, drive)
+            run = {"ck": [(psi0, float(v["crank speed"]))], "drift": [0.0], "passed": [],
+                   "E0": float(sum(energy(model, data=sol0.data)))}
+        t = float(v["t (s)"])
+        psi, psidot, drift, passed = self._run_state(model, run, t, l, drive)
+        q, qd, sol, h = slider_crank_solve(model, psi, psidot, r, l, thick, drive)
+        E = float(sum(energy(model, data=sol.data)))
+        st = {"sol": sol, "reactions": slider_crank_reactions(sol), "q": q, "qd": qd, "r": r, "l": l, "t": thick,
+              "h": h, "v": sol.data.v, "a": sol.a.reshape(3, 3), "F3": np.asarray(sol.F, dtype=float), "E": E,
+              "message": "", "drive": drive, "time": t, "E0": run["E0"], "drift": drift, "passed": passed}
         name = dead_centre_at(psi, DEAD_CENTRE_TOL)
         st["configuration"] = name
-        if name and not frame:
-            st["message"] = (f"dead centre ({name}): the crank is in line with the rod and the slider, so a "
-                             "force on the piston cannot turn the crank here")
-        self._run = run
+        if name and t == 0.0:
+            st["message"] = f"dead centre ({name}): a force on the piston cannot turn the crank here"
+        self._runs.pop(key, None)
+        self._runs[key] = run
+        while len(self._runs) > 2:
+            self._runs.pop(next(iter(self._runs)))
         return st
 
     def render(self, st):
@@ -607,18 +643,19 @@ class SliderCrankExplorer(Explorer):
         items += [(lab, lab.xy) for lab in self.joint_labels] + [(lab, lab.xy) for lab in self.body_labels]
         for name, arts, pts in (("v", self.v_art, vel), ("a", self.a_art, acc)):
             for i, art in enumerate(arts):
-                items.append((art, point_xy(pts[i]), f"{name}{i + 1}"))
+                items.append((art, point_xy(pts[i]), f"{name}{i + 1}".translate(_SUB)))
         place_labels(ax, items, obstacles, covered=key_box(ax, bool(vals.get("key"))))
-        run = st["run"]
-        recent = run["passed_at"] is not None and run["t"] - run["passed_at"] < 0.02
+        passed, now = st["passed"], st["time"]
+        recent = bool(passed) and now - passed[-1][0] < 0.02
         conf = st["configuration"]
-        self.banner.set_text(f"passing {run['last']}" if recent else (f"at {conf}" if conf else ""))
+        self.banner.set_text(f"passing {passed[-1][1]}" if recent else (f"at {conf}" if conf else ""))
         qq, qdd = st["q"], sol.qdd
-        E0 = run["E0"]
+        E0 = st["E0"]
         driven = st["drive"] == "constant-speed"
-        drift = float("nan") if driven else (st["E"] - E0) / abs(E0) if E0 else 0.0
+        drift = (st["E"] - E0) / abs(E0) if E0 else 0.0
         out = {
-            "crank angle (deg)": math.degrees(qq[0]), "rod angle θ": math.degrees(qq[1]),
+            "t": now, "crank angle ψ": (math.degrees(qq[0]) + 180.0) % 360.0 - 180.0,
+            "crank speed ψ̇": st["qd"][0], "rod angle θ": math.degrees(qq[1]),
             "piston angle φ": math.degrees(qq[2]),
             "piston height h": st["h"], "piston speed": vel[2][1], "piston acceleration": acc[2][1],
             "ψ̈ crank": qdd[0],
@@ -626,12 +663,64 @@ class SliderCrankExplorer(Explorer):
             "|f₃| wrist pin": force["f_3"], "|F₃| slider bearing": force["F_1"],
             "bearing couple": reactions["F_1"].moment, "drive torque Q₁": sol.tau_drive[0],
             "energy E": st["E"],
-            "energy drift ΔE/E₀": drift if not driven else "— (driven: the drive does work)",
-            "closure drift |φ|": run["drift"], "t": run["t"],
-            "dead centre": bool(conf), "configuration": conf or "—",
-            "last dead centre passed": (f"{run['last']} at t = {run['passed_at']:.3f} s" if run["last"] else "—"),
+            "energy drift ΔE/E₀": drift if not driven else "none stated: the drive does work",
+            "closure drift": st["drift"],
+            "configuration": conf or "between dead centres",
+            "last dead centre passed": (f"{passed[-1][1]} at t = {passed[-1][0]:.3f} s" if passed else "none yet"),
         }
         return out
+
+    def explain(self):
+        """Every symbol and readout name on screen, with its thesis equation.
+
+        Returns
+        -------
+        dict
+        """
+        return {
+            "t": "scene time since the start of the motion (Play advances it, 0.1 s per second at 1×)",
+            "ψ": "crank angle: the coordinate of joint 1 (9.6)",
+            "crank angle ψ": "crank angle now, wrapped to ±180° (9.6)",
+            "crank speed ψ̇": "crank speed now (9.6)",
+            "θ": "rod angle, given by closing the loop (9.6)",
+            "rod angle θ": "rod angle, given by closing the loop (9.6)",
+            "φ": "piston angle: the piston's joint coordinate (9.6)",
+            "piston angle φ": "piston angle: the piston's joint coordinate (9.6)",
+            "piston height h": "height of the wrist pin above the crank pivot",
+            "piston speed": "vertical speed of the piston (9.73)",
+            "piston acceleration": "vertical acceleration of the piston (9.73)",
+            "ψ̈ crank": "angular acceleration of the crank (9.75)",
+            "f₁": "pin force at the crank pivot, on the crank from the ground (9.61)",
+            "f₂": "pin force at the crank pin, on the rod from the crank (9.61)",
+            "f₃": "pin force at the wrist pin, on the piston from the rod (9.61)",
+            "F₃": "bearing force of the slide on the piston (9.71, 9.84)",
+            "|f₁| crank pivot": "size of f₁ (9.61)", "|f₂| crank pin": "size of f₂ (9.61)",
+            "|f₃| wrist pin": "size of f₃ (9.61)", "|F₃| slider bearing": "size of F₃ (9.71)",
+            "bearing couple": "moment the slide's bearing carries about the wrist pin (9.71)",
+            "drive torque Q₁": "torque the drive puts on the crank; 0 when free (6.38)",
+            "energy E": "kinetic plus potential energy (K = ½ vᵀ I v, section 1.9)",
+            "energy drift ΔE/E₀": "relative change of E since t = 0; 0 for the exact free motion",
+            "closure drift": "largest gap opened in the loop by the integration so far, position form of 9.54",
+            "configuration": "dead centre when the crank is in line with the rod (the loop cannot pass a force)",
+            "last dead centre passed": "the last dead centre the crank turned through, and when",
+            "1": "body 1, the crank", "2": "body 2, the rod", "3": "body 3, the piston",
+            "v₁ … v₃": "velocity poles: the point about which each body turns at this instant (section 4.5)",
+            "a₁ … a₃": "acceleration poles: the point of each body with no acceleration (section 4.6)",
+            "pole far away (↗ v₂)": "a pole beyond the view: the arrow points to it, its name beside",
+        }
+
+    def disabled(self, values):
+        """The time is set by Play.
+
+        Parameters
+        ----------
+        values : dict
+
+        Returns
+        -------
+        dict
+        """
+        return {"t (s)": "set by Play (a new initial state starts it at 0)"}
 
     def figure_message(self, exc):
         """Short text on the figure for a refused state (rod too short, singular closure...).

@@ -31,7 +31,7 @@ from planargeo import scenes
 from planargeo.draw.artists import PointArtist, point_xy
 from planargeo.draw.mechanism import draw_ground
 from planargeo.draw.style import COLORS
-from planargeo.errors import InputError, SceneError
+from planargeo.errors import InputError, PlanargeoError
 from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_reactions,
                                     tree_solve)
 from planargeo.simulate.integrate import energy
@@ -41,12 +41,21 @@ from planargeo.widgets.slider_crank import (CONTACT_COLOR, LABEL_PT, ReactionGly
 
 __all__ = ["TreeExplorer"]
 
+_SUB = "₀₁₂₃₄₅₆₇₈₉"
+
 N = 9
 #: controls that set the state at t = 0 (a change starts the time again)
 INITIAL = ("speed", "loops", "gravity", "mass", "body 1 angle (deg)", "body 2 angle (deg)")
 _FADED = 0.25
-#: largest turn (rad) of a joint the loop closure may make in one drag step (more: another assembly branch)
-MAX_JUMP = 1.0
+#: default gravity (m/s²) and speed (rad/s): the links coast without gravity, slowly enough for Play to keep
+#: up with real time; under gravity the nine links fall through a pose where a loop lies flat every
+#: fraction of a second (:func:`~planargeo.scenes.trees.tree_advance` steps over them, at about ten times
+#: the cost)
+DEFAULT_G, DEFAULT_SPEED = 0.0, 0.25
+#: relative tolerance of the Play integration (DOP853)
+PLAY_RTOL = 1e-7
+#: seconds between the checkpoints of a run (the state at t is integrated from the last one before t)
+CHECKPOINT = 0.05
 
 
 class TreeExplorer(Explorer):
@@ -78,17 +87,14 @@ class TreeExplorer(Explorer):
     display_controls = ("velocity poles", "acceleration poles", "reaction forces")
     scale = 1.0
     units = {"t": "s", "speed": "rad/s", "degrees of freedom": "—", "condition number": "—",
-             "energy E": "J", "energy drift ΔE/E₀": "—", "closure drift |φ|": "m", "qdd[1] (root)": "rad/s²",
-             "max |qdd|": "rad/s²", "largest pin force": "N", "near-singular": "—", "focus": "—"}
+             "energy E": "J", "energy drift ΔE/E₀": "—", "closure drift |φ|": "m", "q̈₁ (body 1)": "rad/s²",
+             "largest |q̈ᵢ|": "rad/s²", "largest pin force": "N", "singular poses": "—", "focus": "—"}
 
     def __init__(self, **kw):
         self._geometry: dict = {}   # closed -> (contacts, length, dof)
         self._models: dict = {}     # (closed, mass, g) -> Model
-        self._traj: dict = {}       # t -> (q, qd, info) of the run shown
-        self._traj_key = None
+        self._runs: dict = {}       # initial controls -> {"ck": checkpoints, "drift": ..., "events": ...}
         self._poses: dict = {}      # (closed, body 1 angle, body 2 angle) -> (q at t = 0, unit speeds)
-        self._E0 = None
-        self._events: list = []
         super().__init__(**kw)
 
     def make_controls(self):
@@ -101,10 +107,10 @@ class TreeExplorer(Explorer):
         t = Step(0.0, 600.0, 0.01, 0.0, "t (s)").make("t (s)")
         t.disabled = True                     # set by Play
         return {
-            "speed": Step(-3, 3, 0.05, 1.0, "speed (rad/s)").make("speed"),
+            "speed": Step(-3, 3, 0.05, DEFAULT_SPEED, "speed (rad/s)").make("speed"),
             "loops": W.ToggleButtons(options=("closed (Fig 9.2)", "open (Fig 9.1)"), value="closed (Fig 9.2)",
                                      description="loops"),
-            "gravity": Step(0, 20, 0.01, 9.81, "g (m/s²)").make("gravity"),
+            "gravity": Step(0, 20, 0.01, DEFAULT_G, "g (m/s²)").make("gravity"),
             "mass": Step(0.1, 5, 0.1, 1.0, "link mass (kg)").make("mass"),
             "body 1 angle (deg)": Step(-180, 180, 1, FIG91_ANGLES[0], "body 1 angle (°)").make("body 1 angle (deg)"),
             "body 2 angle (deg)": Step(-180, 360, 1, FIG91_ANGLES[1], "body 2 angle (°)").make("body 2 angle (deg)"),
@@ -115,13 +121,15 @@ class TreeExplorer(Explorer):
         }
 
     def focus_options(self):
-        """The reactions one can focus on: the joints ``f₁ … f₉`` and the contacts ``F₁``, ``F₂``.
+        """The reactions one can focus on: the joints ``f₁ … f₉`` and, loops closed, the contacts ``F₁``, ``F₂``.
 
         Returns
         -------
         list of str
         """
-        return [symbol_text(f"f_{i + 1}") for i in range(N)] + ["F₁", "F₂"]
+        loops = self.controls["loops"].value if "loops" in getattr(self, "controls", {}) else "closed"
+        closed = str(loops).startswith("closed")
+        return [symbol_text(f"f_{i + 1}") for i in range(N)] + (["F₁", "F₂"] if closed else [])
 
     def make_artists(self, ax):
         """Links, joints, pins, the reaction glyphs, poles and body labels (built once).
@@ -142,14 +150,14 @@ class TreeExplorer(Explorer):
         self.glyphs = {}
         for i in range(N):
             self.glyphs[f"f_{i + 1}"] = ReactionGlyph(ax, symbol_text(f"f_{i + 1}"), reach=0.45,
-                                                      legend="pin force f_i (9.61)" if i == 0 else None)
+                                                      legend="pin force fᵢ (9.61)" if i == 0 else None)
         for k in range(2):
             self.glyphs[f"F_{k + 1}"] = ReactionGlyph(ax, symbol_text(f"F_{k + 1}"), color=CONTACT_COLOR, reach=0.45,
-                                                      legend="contact force F_k (9.71)" if k == 0 else None)
+                                                      legend="contact force Fₖ (9.71)" if k == 0 else None)
         z = np.array([0.0, 0.0, 1.0])
-        self.v_art = [ax.add_artist(PointArtist(z, role="twist", glyph_scale=3.0, text=f"v{i + 1}"))
+        self.v_art = [ax.add_artist(PointArtist(z, role="twist", glyph_scale=3.0, text=f"v{_SUB[i + 1]}"))
                       for i in range(N)]
-        self.a_art = [ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.3, text=f"a{i + 1}"))
+        self.a_art = [ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.3, text=f"a{_SUB[i + 1]}"))
                       for i in range(N)]
 
     def geometry(self, closed: bool):
@@ -234,7 +242,7 @@ class TreeExplorer(Explorer):
 
     # ------------------------------------------------------------------- Play
     def adjust(self, values, changed):
-        """A change of the initial state starts the time again (``t = 0``).
+        """A change of the initial state starts the time again (``t = 0``), unless ``t`` is set with it.
 
         Parameters
         ----------
@@ -245,7 +253,7 @@ class TreeExplorer(Explorer):
         -------
         dict
         """
-        if set(changed) & set(INITIAL) and values["t (s)"] != 0.0:
+        if set(changed) & set(INITIAL) and "t (s)" not in changed and values["t (s)"] != 0.0:
             return {"t (s)": 0.0}
         return {}
 
@@ -265,28 +273,45 @@ class TreeExplorer(Explorer):
         t = float(values["t (s)"]) + float(dt)
         return None if t > self.controls["t (s)"].max else {"t (s)": t}
 
-    @staticmethod
-    def _state_at(model, t: float, traj: dict, events: list):
-        """``(q, qd, info)`` at scene time ``t`` of the run ``traj`` (updated in place, with ``events``).
+    def _run_state(self, model, run: dict, t: float):
+        """``(q, qd, drift, events)`` at scene time ``t`` of ``run`` (its checkpoints extended in place).
 
-        Integrates from the latest time before ``t`` kept in ``traj`` (a few are kept).
+        The run is integrated from checkpoint to checkpoint, ``k × CHECKPOINT`` seconds
+        apart, then from the last checkpoint before ``t`` to ``t``: the same operations
+        whatever the history, so that the controls alone decide the state.
         """
-        if t in traj:
-            return traj[t]
-        t0 = max((s for s in traj if s <= t), default=0.0)
-        q0, qd0, _ = traj[t0]
-        out = tree_advance(model, q0, qd0, t - t0)
-        item = (out["q"], out["qd"], out)
-        for e in out["events"]:
-            events.append((t0 + float(e.get("t", 0.0)), e.get("kind", "near-singular")))
-        for s in sorted(traj)[:-3]:
-            if s != 0.0:
-                del traj[s]
-        traj[t] = item
-        return item
+        ck = run["ck"]
+        k = int(math.floor(t / CHECKPOINT + 1e-9))
+        while len(ck) <= k:
+            n = len(ck) - 1
+            q0, qd0 = ck[n]
+            try:
+                out = tree_advance(model, q0, qd0, CHECKPOINT, rtol=PLAY_RTOL, atol=PLAY_RTOL * 1e-2)
+            except PlanargeoError as exc:
+                raise PlanargeoError(f"the loops locked at t ≈ {n * CHECKPOINT:.2f} s: {exc}") from exc
+            ck.append((out["q"], out["qd"]))
+            run["drift"].append(max(run["drift"][-1], out["position_residual"]))
+            run["events"] += [(n * CHECKPOINT + float(e["t"]), e["kind"]) for e in out["events"]]
+        q, qd = ck[k]
+        drift, events = run["drift"][k], [e for e in run["events"] if e[0] <= k * CHECKPOINT]
+        rest = t - k * CHECKPOINT
+        if rest > 1e-12:
+            try:
+                out = tree_advance(model, q, qd, rest, rtol=PLAY_RTOL, atol=PLAY_RTOL * 1e-2)
+            except PlanargeoError as exc:
+                raise PlanargeoError(f"the loops locked at t ≈ {k * CHECKPOINT:.2f} s: {exc}") from exc
+            q, qd = out["q"], out["qd"]
+            drift = max(drift, out["position_residual"])
+            events = events + [(k * CHECKPOINT + float(e["t"]), e["kind"]) for e in out["events"]]
+        return q, qd, drift, events
 
     def compute(self, v, changed):
         """The state at time ``t`` of the run from the initial controls; one solve (9.5 or 9.39-9.43) with reactions.
+
+        The pose at ``t = 0`` depends on the two angles alone (the rule of
+        :func:`~planargeo.scenes.trees.tree_pose`), and the run on the initial
+        controls alone (fixed checkpoints): the same controls give the same state
+        after any history.
 
         Parameters
         ----------
@@ -304,50 +329,40 @@ class TreeExplorer(Explorer):
         SceneError
             A pose whose loops cannot close.
         PlanargeoError
-            The integration stopped (a singular configuration).
+            The integration stopped (a singular configuration it could not pass).
         """
         closed = v["loops"].startswith("closed")
         model = self.model_for(closed, float(v["mass"]), float(v["gravity"]))
         _c, L, dof = self.geometry(closed)
         a1, a2, speed = float(v["body 1 angle (deg)"]), float(v["body 2 angle (deg)"]), float(v["speed"])
-        # the pose at t = 0 depends on the loops and the two angles only (kept); the speeds are linear in speed
         pose_key = (closed, a1, a2)
-        shown_angles = None if self._traj_key is None else self._traj_key[4:]
-        dragged = (self.state is not None and self.state["closed"] == closed and shown_angles != (a1, a2)
-                   and set(changed) <= {"body 1 angle (deg)", "body 2 angle (deg)", "t (s)"})
-        start = self.state["q"] if dragged else None
         pose = self._poses.get(pose_key)
         if pose is None:
-            pose = tree_pose(model, math.radians(a1), 1.0, q_start=start, angle2=math.radians(a2))
-        if start is not None:
-            jump = np.abs(np.remainder(pose[0][2:] - start[2:] + np.pi, 2 * np.pi) - np.pi)
-            if jump.max() > MAX_JUMP:
-                k = int(np.argmax(jump)) + 3
-                raise SceneError(f"the loops would jump to another assembly: joint {k} would turn by "
-                                 f"{np.degrees(jump.max()):.0f}° in one step (drag in smaller steps)")
+            pose = tree_pose(model, math.radians(a1), 1.0, angle2=math.radians(a2))
         key = (closed, float(v["mass"]), float(v["gravity"]), speed, a1, a2)
-        if key != self._traj_key:
-            traj, events, E0 = {0.0: (pose[0], speed * pose[1], None)}, [], None
-        else:
-            traj, events, E0 = dict(self._traj), list(self._events), self._E0
+        run = self._runs.get(key)
+        if run is None:
+            run = {"ck": [(pose[0], speed * pose[1])], "drift": [0.0], "events": []}
         t = float(v["t (s)"])
-        q, qd, info = self._state_at(model, t, traj, events)
+        q, qd, drift, events = self._run_state(model, run, t)
         sol = tree_solve(model, q, qd)                               # 9.5 closed, 9.39-9.43 open
         E = float(sum(energy(model, data=sol.data)))
-        if E0 is None:
-            E0 = E if t == 0.0 else float(sum(energy(model, *traj[0.0][:2])))
+        q0, qd0 = run["ck"][0]
+        E0 = float(sum(energy(model, q0, qd0)))
         pose_now = sol.data.pose
         tips = pose_now[:, :2] + L * np.column_stack([np.cos(pose_now[:, 2]), np.sin(pose_now[:, 2])])
         st = {"closed": closed, "model": model, "q": q, "qd": qd, "length": L, "dof": dof, "sol": sol,
               "a": sol.a.reshape(N, 3), "qdd": np.asarray(sol.qdd), "tips": tips, "t": t, "E": E, "E0": E0,
-              "drift": 0.0 if info is None else info["position_residual"], "events": list(events),
-              "reactions": tree_reactions(model, sol)}
+              "drift": drift, "events": list(events), "reactions": tree_reactions(model, sol)}
         if closed:
             st["F"] = sol.F.reshape(-1, 3)
             st["cond"] = float(sol.cond)
-        # the state is good: keep its pose and run
+        # the state is good: keep its pose and run (the last two runs)
         cached(self._poses, pose_key, lambda: pose)
-        self._traj, self._traj_key, self._E0, self._events = traj, key, E0, events
+        self._runs.pop(key, None)
+        self._runs[key] = run
+        while len(self._runs) > 2:
+            self._runs.pop(next(iter(self._runs)))
         return st
 
     def render(self, st):
@@ -421,7 +436,7 @@ class TreeExplorer(Explorer):
         items += [(t, t.xy) for t in self.labels]
         for name, arts, pts in (("v", self.v_art, d.v), ("a", self.a_art, st["a"])):
             for i, art in enumerate(arts):
-                items.append((art, point_xy(pts[i]), f"{name}{i + 1}"))
+                items.append((art, point_xy(pts[i]), f"{name}{_SUB[i + 1]}"))
         place_labels(ax, items, obstacles, covered=key_box(ax, bool(vals.get("key"))))
         E0 = st["E0"]
         out = {"t": st["t"], "speed": vals["speed"], "loops": "closed" if closed else "open",
@@ -430,18 +445,77 @@ class TreeExplorer(Explorer):
                "closure drift |φ|": st["drift"]}
         if closed:
             for k, c in enumerate(model.contacts):
-                out[f"contact {c.name}: |force| (N)"] = force[symbol_text(f"F_{k + 1}")]
+                out[f"|F{_SUB[k + 1]}| (pin {c.name})"] = force[symbol_text(f"F_{k + 1}")]
             out["condition number"] = st["cond"]
         out["largest pin force"] = max(force[symbol_text(f"f_{i + 1}")] for i in range(N))
         if focus in reactions:
             x = reactions[focus]
             out["focus"] = focus
-            out[f"|{focus}| (N)"] = force[focus]
-            out[f"{focus} moment about its joint (N·m)"] = x.moment
+            out[f"|{focus}|"] = force[focus]
+            out[f"moment of {focus} about its pin"] = x.moment
         qdd = st["qdd"]
-        out["qdd[1] (root)"] = qdd[0]
-        out["max |qdd|"] = float(np.max(np.abs(qdd)))
+        out["q̈₁ (body 1)"] = qdd[0]
+        out["largest |q̈ᵢ|"] = float(np.max(np.abs(qdd)))
         ev = st["events"]
-        out["near-singular"] = f"{ev[-1][1]} at t = {ev[-1][0]:.3f} s" if ev else "—"
+        out["singular poses"] = (f"{len(ev)}, the last at t = {ev[-1][0]:.2f} s" if ev else "none yet")
+        self.units = dict(self.units)
+        for k in out:
+            if k.startswith("|") or k == "largest pin force":
+                self.units[k] = "N"
+            elif k.startswith("moment of"):
+                self.units[k] = "N·m"
         return out
 
+    def explain(self):
+        """Every symbol and readout name on screen, with its thesis equation.
+
+        Returns
+        -------
+        dict
+        """
+        out = {
+            "t": "time since the start of the motion (Play advances it)",
+            "speed": "scale of the joint speeds at t = 0 (the pattern of the scene, made to fit the loops, 9.54)",
+            "loops": "closed: the pins of Fig 9.2 join the tips of bodies 4, 7 and 8, 9; open: the tree of Fig 9.1",
+            "degrees of freedom": "joint coordinates less the independent closure conditions, nq − rank J_c (9.54, 9.60)",
+            "energy E": "kinetic plus potential energy of the nine links (K = ½ vᵀ I v, section 1.9)",
+            "energy drift ΔE/E₀": "relative change of E since t = 0 (zero for the exact motion: no torques, no friction)",
+            "closure drift |φ|": "largest gap opened at a pin by the integration so far, position form of 9.54",
+            "condition number": "condition number of BᵀGΛ⁻¹GᵀB, the matrix solved for the contact forces (9.70)",
+            "largest pin force": "largest |fᵢ| of the nine joints (9.61)",
+            "focus": "the pin force drawn bold",
+            "q̈₁ (body 1)": "angular acceleration of joint 1, the pivot of body 1 (9.43, 9.75)",
+            "largest |q̈ᵢ|": "largest joint acceleration of the nine joints (9.43, 9.75)",
+            "singular poses": "poses passed where BᵀGΛ⁻¹GᵀB (9.70) loses rank: a loop lies flat on one line",
+            "1 … 9": "body numbers of Fig 9.1",
+            "v₁ … v₉": "velocity poles: the point about which each body turns at this instant (section 4.5)",
+            "a₁ … a₉": "acceleration poles: the point of each body with no acceleration (section 4.6)",
+        }
+        for i in range(N):
+            out[symbol_text(f"f_{i + 1}")] = (f"pin force of joint {i + 1}: the wrench on body {i + 1} from its "
+                                              "parent (9.61; 9.41 for the open tree)")
+        for k, name in enumerate(("4-7", "8-9")):
+            out[symbol_text(f"F_{k + 1}")] = f"contact force of the pin joining the tips of bodies {name} (9.71)"
+            out[f"|F{_SUB[k + 1]}| (pin {name})"] = f"size of the contact force F{_SUB[k + 1]} (9.71)"
+        for i in range(N):
+            f = symbol_text(f"f_{i + 1}")
+            out[f"|{f}|"] = f"size of the pin force {f} (9.61)"
+            out[f"moment of {f} about its pin"] = f"moment of {f} about its own pin: 0 for a free pin (9.61)"
+        for k in range(2):
+            F = symbol_text(f"F_{k + 1}")
+            out[f"|{F}|"] = f"size of the contact force {F} (9.71)"
+            out[f"moment of {F} about its pin"] = f"moment of {F} about its own pin: 0 for a free pin (9.71)"
+        return out
+
+    def disabled(self, values):
+        """The time is set by Play; the acceleration and velocity poles need a motion.
+
+        Parameters
+        ----------
+        values : dict
+
+        Returns
+        -------
+        dict
+        """
+        return {"t (s)": "set by Play (a new initial state starts it at 0)"}
