@@ -13,10 +13,11 @@ STAMP  := $(VENV)/.installed-stamp
 ROOT_FLAG := $(if $(filter 0,$(shell id -u)),--allow-root,)
 PYTEST_ARGS ?=
 FUZZ_ARGS ?=
-# JupyterLab listens on the loopback interface only and asks for a token: a fresh random one per
-# start (printed in the URL), so no configuration file can switch it off or open the port.
-LAB_FLAGS = --ServerApp.ip=127.0.0.1 --ServerApp.allow_remote_access=False \
-            --IdentityProvider.token=$$($(BIN)/python -c 'import secrets; print(secrets.token_hex(24))')
+# JupyterLab listens on the loopback interface only and asks for a token: scripts/lab.py makes a fresh
+# random one per start, puts address and token last on Jupyter's command line (so no configuration file
+# can switch them off or open the port) and prints the URL to paste, token included.  LAB_FLAGS: more
+# of Jupyter's options (e.g. --no-browser --ServerApp.port=9999); the address and token cannot be changed.
+LAB_FLAGS ?=
 
 .PHONY: lab test fuzz install gallery bench clean help browser docs notebooks app screens
 
@@ -43,7 +44,7 @@ $(STAMP): pyproject.toml | $(BIN)/python
 install: $(STAMP)
 
 lab: $(STAMP)
-	$(BIN)/jupyter lab $(ROOT_FLAG) $(LAB_FLAGS) notebooks/00-tour.ipynb
+	$(BIN)/python scripts/lab.py $(ROOT_FLAG) $(LAB_FLAGS) notebooks/00-tour.ipynb
 
 # Debian's chromium drives the real-browser test (Playwright's own download does not work here);
 # Debian's ffmpeg writes the explorers' MP4 exports (GIF needs only pillow).
