@@ -17,11 +17,13 @@ For every body the explorer draws
   the chart on the right plots each component of the focused body's ``A_k`` (at its own
   joint) against the number of recursion steps, with its error against the full recursion.
 
-*Play* lets the chain swing under gravity ``g`` from the configuration of the sliders,
-with viscous damping ``c`` at every joint (:func:`planargeo.simulate.simulate` with
-``damping=``); the conics follow the motion, and the readout shows the energy
-``T + V``, the energy the damping removed ``W`` and their sum, which stays at the
-initial energy within the integrator's tolerance.
+*Play* (or the time slider) lets the chain swing under gravity ``g`` from the configuration
+of the sliders, at rest, with viscous damping ``c`` at every joint; the conics follow the
+motion, and the readout shows the energy ``T + V``, the energy the damping removed ``W``
+and their sum, which stays at the initial energy within the integrator's tolerance.  The
+swing is integrated once per configuration in chunks of one second (DOP853, dense output:
+:class:`planargeo.widgets._motion.Motion`), so the state at a time depends on that time
+and the other controls alone, whatever Play's steps were.
 
 Handles (mouse under ``%matplotlib widget``, or :meth:`Explorer.drag` in scripts): the
 acceleration pole ``a``, the tip of the chain (sets the bend ``φ``) and the end of the
@@ -40,7 +42,8 @@ from planargeo.draw.layout import fit_view
 from planargeo.draw.style import COLORS, OKABE_ITO
 from planargeo.geometry.conics import drawable_conic
 from planargeo.scenes.articulated import COMPONENTS, articulated_state, bent_chain_model, joint_points
-from planargeo.widgets.base import Explorer, Handle, Step, cached
+from planargeo.widgets._motion import Motion
+from planargeo.widgets.base import Explorer, Handle, Step, cached, point_text
 
 __all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip", "place_labels", "label_artist", "curve_candidates",
            "line_candidates", "point_candidates", "fit_mechanism"]
@@ -48,8 +51,15 @@ __all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip", "place_labels", "label
 #: Most bodies the explorer shows.
 NMAX = 8
 #: Longest swing [s] (the range of the time slider).
-T_MAX = 20.0
-_LABELS = {"m_x": "$m_x$", "m_y": "$m_y$", "A_z": "$A_z$", "m_xy": "$m_{xy}$", "c_x": "$c_x$", "c_y": "$c_y$"}
+T_MAX = 120.0
+#: chart legend of each component of ``A_k`` at joint ``k`` (``A[0, 2]``, ``A[1, 2]``: ``A_xz``, ``A_yz``)
+_LABELS = {"m_x": "$m_x$", "m_y": "$m_y$", "A_z": "$A_z$", "m_xy": "$m_{xy}$", "c_x": "$A_{xz}$",
+           "c_y": "$A_{yz}$"}
+#: the readout's time control
+TIME = "time (s)"
+#: the readout row that shows the damping at rest (what c means: the power it takes when every joint turns
+#: at 1 rad/s)
+C_ROW = "damping power at 1 rad/s in every joint"
 _ART = OKABE_ITO["purple"]
 #: controls that define the chain or its swing: a change restarts the swing at t = 0
 _CHAIN = ("bodies n", "λ = L/ρ", "bend φ (deg)", "base θ₁ (deg)", "g (m/s²)", "damping c")
@@ -340,16 +350,17 @@ class ArticulatedExplorer(Explorer):
     figsize = (9.6, 5.0)
     display_controls = ("rigid inertias", "percussion axes")
     units = {
-        "bodies": "—", "outboard included": "—", "m_x of A_k": "kg", "m_y of A_k": "kg",
-        "A_z of A_k at its joint": "kg·m²", "effective centre of A_k": "m", "centre of mass of body k": "m",
-        "effective centre d/L (7.27)": "—", "truncation error ‖A−A_full‖/‖A_full‖": "—",
-        "pole a": "m", "distance pole–centre": "m", "axis A_k a: distance from centre": "m",
-        "time": "s", "energy T + V": "J", "dissipated W": "J", "T + V + W": "J", "initial energy": "J",
+        "bodies": "—", "outboard included": "—", "mₓ of Aₖ": "kg", "m_y of Aₖ": "kg",
+        "A_z of Aₖ at joint k": "kg·m²", "effective centre d/L (7.27)": "—",
+        "truncation error of Aₖ": "—", "distance from a to the centre": "m",
+        "axis Aₖa: distance from the centre": "m",
+        "t": "s", "energy T + V": "J", "dissipated W": "J", "T + V + W": "J", "initial energy E₀": "J",
+        C_ROW: "W",
     }
 
     def __init__(self, **kw):
         self._models: dict = {}
-        self._motion = None          # the swing: {"t", "q", "qd", "W", "E0", "key"} (Play)
+        self._motions: dict = {}     # the swing of each configuration (Motion of (q, q̇, W))
         super().__init__(**kw)
 
     def __repr__(self) -> str:
@@ -384,7 +395,12 @@ class ArticulatedExplorer(Explorer):
         }
 
     def adjust(self, values, changed):
-        """The focus stays on the chain; a change of the chain restarts the swing at ``t = 0``.
+        """Controls that follow: the outboard bodies stay on the chain, a new chain swings from ``t = 0``.
+
+        ``outboard bodies`` never exceeds the ``n − 1`` bodies outboard of body 1 (the slider
+        shows what the recursion uses); at its largest ("all of them") it stays at the largest
+        when ``n`` changes.  A change of the chain or its swing restarts the time at 0 unless the
+        time is set with it.  A focus on a body that is gone falls back to "all" (the base).
 
         Parameters
         ----------
@@ -396,17 +412,97 @@ class ArticulatedExplorer(Explorer):
         Returns
         -------
         dict
-            Controls that follow: ``focus`` (a body of the chain) and ``time (s)`` (0 after a change
-            of anything but the time or the overlays).
+            Controls that follow: ``outboard bodies`` and ``time (s)``.
         """
         out = {}
         n = int(values["bodies n"])
-        focus = values.get("focus", "all")
-        if focus != "all" and int(focus.split()[1]) > n:
-            out["focus"] = f"body {n}"
-        if changed & set(_CHAIN) and values["time (s)"] != 0.0:
-            out["time (s)"] = 0.0
+        k = int(values["outboard bodies"])
+        before = self.shown_values
+        if "bodies n" in changed and "outboard bodies" not in changed and before and \
+                k >= int(before["bodies n"]) - 1:
+            k = n - 1                                     # it was "all": it stays "all"
+        k = min(k, n - 1)
+        if k != values["outboard bodies"]:
+            out["outboard bodies"] = k
+        if changed & set(_CHAIN) and TIME not in changed and values[TIME] != 0.0:
+            out[TIME] = 0.0
         return out
+
+    def disabled(self, values):
+        """Controls that would change nothing in the state ``values`` describe, with the reason.
+
+        Parameters
+        ----------
+        values : dict
+
+        Returns
+        -------
+        dict
+            ``{control: reason}``.
+        """
+        out = {}
+        n = int(values["bodies n"])
+        if n == 1:
+            out["outboard bodies"] = "one body: there is no body outboard of it (add bodies)"
+            out["bend φ (deg)"] = "one body: the bend is the angle between bodies (add bodies)"
+        return out
+
+    def explain(self):
+        """Every symbol and readout name on screen: one-line meaning and thesis equation.
+
+        Returns
+        -------
+        dict
+        """
+        return {
+            "n": "number of bodies in the chain (1 kg each, joints L = 1 m apart)",
+            "i": "index of any body of the chain",
+            "k": "the focused body (body 1 when the focus is 'all'): its Aₖ, Iₖ, axes and chart are shown",
+            "L": "distance between joints, 1 m",
+            "ρ": "radius of gyration of each body, ρ = L/λ (m)",
+            "λ": "size ratio λ = L/ρ (eq. 7.21)",
+            "φ": "bend: the angle of every body relative to the one before it",
+            "θ₁": "angle of the first body from the x axis",
+            "g": "gravity along −y for the swing (m/s²)",
+            "c": "viscous damping at every joint: joint torque −c q̇ (N·m·s/rad)",
+            "t": "time of the swing since it started from rest (s)",
+            "Iᵢ": "rigid inertia of body i, drawn as a conic about its centre of mass (section 10.2.3)",
+            "Aᵢ": "articulated inertia of body i with the bodies outboard of it (eq. 7.7a), drawn as a conic",
+            "Aₖ": "articulated inertia of the focused body k (eq. 7.7a)",
+            "Iₖ": "rigid inertia of the focused body k",
+            "a": "the acceleration pole: the point about which body k is made to accelerate (eq. 4.6)",
+            "Aₖa": "axis of percussion: the force that gives body k the acceleration a with the outboard bodies attached (eq. 5.64-5.68)",
+            "Iₖa": "axis of percussion of body k alone (eq. 5.64-5.68)",
+            "polar of a": "polar of a with respect to the drawn real conic of Aₖ: Aₖa reflected through the centre (section 10.2.3)",
+            "mₓ": "entry xx of Aₖ at joint k: the mass felt pushing along x (eq. 7.26)",
+            "m_y": "entry yy of Aₖ at joint k: the mass felt pushing along y (eq. 7.26)",
+            "A_z": "entry zz of Aₖ at joint k: the rotational inertia about joint k (eq. 7.26)",
+            "m_xy": "entry xy of Aₖ at joint k (the chart)",
+            "A_xz": "entry xz of Aₖ at joint k (the chart)",
+            "A_yz": "entry yz of Aₖ at joint k (the chart)",
+            "error": "‖Aₖ after so many steps − Aₖ‖ / ‖Aₖ‖ (the chart; section 10.2.2)",
+            "E₀": "energy T + V of the chain at rest at t = 0",
+            "T": "kinetic energy of the chain (eq. 1.9)",
+            "V": "potential energy of the chain in gravity g",
+            "W": "energy the joint damping has removed since t = 0: ∫ c q̇ᵀq̇ dt",
+            "bodies": "number of bodies n",
+            "outboard included": "bodies outboard of k the recursion for Aₖ includes, of all there are (section 10.2.2)",
+            "mₓ of Aₖ": "mass felt pushing body k along x at its joint (eq. 7.26)",
+            "m_y of Aₖ": "mass felt pushing body k along y at its joint (eq. 7.26)",
+            "A_z of Aₖ at joint k": "rotational inertia of Aₖ about joint k (eq. 7.26)",
+            "effective centre of Aₖ": "the point where Aₖ has no coupling of force and turning: its conic's centre (eq. 7.26)",
+            "centre of mass of body k": "the centre of Iₖ",
+            "effective centre d/L (7.27)": "distance of body 1's effective centre from its joint, over L (straight chain; eq. 7.27)",
+            "truncation error of Aₖ": "‖Aₖ with the shown outboard bodies − Aₖ‖ / ‖Aₖ‖ (section 10.2.2)",
+            "pole a": "the acceleration pole a (draggable)",
+            "distance from a to the centre": "distance from the pole a to the effective centre of Aₖ",
+            "axis Aₖa: distance from the centre": "distance of the axis of percussion Aₖa from the effective centre (eq. 5.64-5.68)",
+            "energy T + V": "energy of the chain at time t",
+            "dissipated W": "energy the damping removed up to t",
+            "T + V + W": "stays E₀ but for the integration error",
+            "initial energy E₀": "energy at t = 0 (at rest: V alone)",
+            C_ROW: "n c × (1 rad/s)²: the power the damping takes when every joint turns at 1 rad/s",
+        }
 
     # ------------------------------------------------------------------ figure
     def setup_axes(self, ax):
@@ -500,37 +596,39 @@ class ArticulatedExplorer(Explorer):
         Returns
         -------
         list of str
-            ``"body 1"`` ... ``"body 8"`` (the base adds ``"all"``: body 1 labelled, nothing faded).
+            ``"body 1"`` ... ``"body n"`` (the base adds ``"all"``: body 1 labelled, nothing faded);
+            before the first state is shown, every body of the longest chain (so that a focus given
+            to the constructor with ``n`` is taken).
         """
-        return [f"body {i}" for i in range(1, NMAX + 1)]
+        w = getattr(self, "controls", {}).get("bodies n")
+        n = NMAX if w is None or getattr(self, "state", None) is None else int(w.value)
+        return [f"body {i}" for i in range(1, n + 1)]
 
     def _joints(self):
         st = self.state
         return None if st is None else st["joints"]
 
     def play_step(self, values, dt):
-        """Swing the chain by ``dt`` seconds under gravity with joint damping (Play).
+        """The time ``dt`` seconds on (Play); the swing itself is read in :meth:`compute`.
 
-        The integrator state ``(q, q̇, W)`` is kept on the explorer; a change of the chain
-        restarts from the sliders' configuration at rest.
+        The state at a time depends on that time alone (module docstring), so any ``dt`` is exact.
 
         Parameters
         ----------
         values : dict
             The shown control values.
         dt : float
-            Time step of one frame [s].
+            Seconds of the step (> 0).
 
         Returns
         -------
         dict or None
-            ``{"time (s)": t + dt}``; None at the end of the time range (Play stops).
+            ``{"time (s)": t + dt}`` (at most the end of the range); None at its end (Play stops).
         """
-        t = float(values["time (s)"])
-        if t + dt > T_MAX + 1e-12:
+        t = float(values[TIME])
+        if t >= T_MAX:
             return None
-        self._advance_motion(values, t + dt)
-        return {"time (s)": round(t + dt, 12)}
+        return {TIME: min(t + float(dt), T_MAX)}
 
     # ------------------------------------------------------------------ physics
     def _key(self, v):
@@ -544,28 +642,31 @@ class ArticulatedExplorer(Explorer):
         n = int(v["bodies n"])
         return np.array([math.radians(v["base θ₁ (deg)"])] + [math.radians(v["bend φ (deg)"])] * (n - 1))
 
-    def _advance_motion(self, v, t_new):
-        """Integrate the swing to ``t_new`` (from the kept state when it is earlier, else from rest)."""
-        from planargeo.simulate.integrate import energy, simulate
+    def motion(self, v) -> Motion:
+        """The swing of the configuration ``v`` from rest: ``y = (q, q̇, W)`` at any time (kept per configuration).
+
+        Parameters
+        ----------
+        v : dict
+            Control values.
+
+        Returns
+        -------
+        Motion
+        """
+        from planargeo.algorithms.aba import forward_dynamics
 
         key = self._key(v)
-        n = key[0]
+        n, c = key[0], key[5]
         model = self._model(n, key[1], key[4])
-        m = self._motion
-        if m is None or m["key"] != key or m["t"] > t_new + 1e-12:
-            q0 = self._q0(v)
-            T, V = energy(model, q0, np.zeros(n))
-            m = self._motion = {"t": 0.0, "q": q0, "qd": np.zeros(n), "W": 0.0, "E0": float(T + V), "key": key}
-        span = t_new - m["t"]
-        if span > 1e-12:
-            r = simulate(model, m["q"], m["qd"], span, method="DOP853", rtol=1e-9, atol=1e-11,
-                         damping=key[5], progress=False)
-            if r.status != "ok":
-                from planargeo.errors import SingularConfigurationError
 
-                raise SingularConfigurationError(r.message or "the swing could not be integrated", math.inf)
-            m.update(t=t_new, q=r.q[-1].copy(), qd=r.qd[-1].copy(), W=m["W"] + float(r.dissipated[-1]))
-        return m
+        def rhs(_t, y):
+            qd = y[n:2 * n]
+            qdd = forward_dynamics(model, y[:n], qd, -c * qd)
+            return np.concatenate([qd, qdd, [c * float(qd @ qd)]])
+
+        y0 = np.concatenate([self._q0(v), np.zeros(n), [0.0]])
+        return cached(self._motions, key, lambda: Motion(rhs, y0, chunk=1.0))
 
     def compute(self, v, changed):
         """The shown configuration's inertias, axes, convergence chart and (when swinging) energies.
@@ -587,25 +688,21 @@ class ArticulatedExplorer(Explorer):
         PlanargeoError
             A configuration that cannot be computed (kept out of view: the last good state stays).
         """
+        from planargeo.simulate.integrate import energy
+
         n, lam = int(v["bodies n"]), float(v["λ = L/ρ"])
-        t = float(v["time (s)"])
-        swing = None
-        if t > 0:
-            swing = self._advance_motion(v, t)
-            q = swing["q"]
-        else:
-            self._motion = None
-            q = self._q0(v)
+        t = float(v[TIME])
+        motion = self.motion(v)
+        y = motion.at(t)
+        q, qd, W = y[:n], y[n:2 * n], float(y[2 * n])
+        model_g = self._model(n, lam, float(v["g (m/s²)"]))
+        T, V = energy(model_g, q, qd)
+        E0 = float(sum(energy(model_g, self._q0(v), np.zeros(n))))
         out_k = int(v["outboard bodies"])
         outboard = None if out_k >= n - 1 else out_k
         st = articulated_state(self._model(n, lam), q, outboard=outboard,
                                pole=(float(v["pole x"]), float(v["pole y"])))
-        st.update(n=n, lam=lam, q=q, outboard=out_k, t=t)
-        if swing is not None:
-            from planargeo.simulate.integrate import energy
-
-            T, V = energy(self._model(n, lam, float(v["g (m/s²)"])), swing["q"], swing["qd"])
-            st["energy"] = (float(T + V), swing["W"], swing["E0"])
+        st.update(n=n, lam=lam, q=q, outboard=out_k, t=t, energy=(float(T + V), W, E0), c=float(v["damping c"]))
         return st
 
     # ------------------------------------------------------------------ drawing
@@ -673,7 +770,7 @@ class ArticulatedExplorer(Explorer):
         view += [c.get_xy() for c in self.art[:n]]               # the drawn conics stay in view
         if show_rigid:
             view += [c.get_xy() for c in self.rigid[:n]]
-        fit_view(self.ax, np.vstack(view), margin=0.1)
+        fit_mechanism(self.ax, np.vstack(view), margin=0.1)
         # labels: thesis symbols next to the focused body's elements, clear of each other
         x0, x1 = self.ax.get_xlim()
         y0, y1 = self.ax.get_ylim()
@@ -701,6 +798,7 @@ class ArticulatedExplorer(Explorer):
         Ak = st["A"][k]
         from planargeo.scenes.articulated import inertia_at
 
+        zero = float(self.zero_tol) * float(self.scale)
         Aj = inertia_at(Ak, pts[k])
         c = st["centre"][k]
         P = np.array([v["pole x"], v["pole y"]])
@@ -710,13 +808,14 @@ class ArticulatedExplorer(Explorer):
         out = {
             "bodies": n,
             "outboard included": f"{min(st['outboard'], n - 1 - k)} of {n - 1 - k}",
-            "m_x of A_k": float(Aj[0, 0]), "m_y of A_k": float(Aj[1, 1]),
-            "A_z of A_k at its joint": float(Aj[2, 2]),
-            "effective centre of A_k": tuple(c),
-            "centre of mass of body k": tuple(st["centre_rigid"][k]),
-            "truncation error ‖A−A_full‖/‖A_full‖": float(st["truncation_error"][k]),
-            "pole a": tuple(P), "distance pole–centre": dist,
-            "axis A_k a: distance from centre": float(axis_from_c),
+            "mₓ of Aₖ": float(Aj[0, 0]), "m_y of Aₖ": float(Aj[1, 1]),
+            "A_z of Aₖ at joint k": float(Aj[2, 2]),
+            "effective centre of Aₖ": point_text([c[1], -c[0], 1.0], zero=zero),
+            "centre of mass of body k": point_text([st["centre_rigid"][k][1], -st["centre_rigid"][k][0], 1.0],
+                                                   zero=zero),
+            "truncation error of Aₖ": float(st["truncation_error"][k]),
+            "pole a": point_text([P[1], -P[0], 1.0], zero=zero), "distance from a to the centre": dist,
+            "axis Aₖa: distance from the centre": float(axis_from_c),
         }
         if k == 0 and abs(math.remainder(float(v["bend φ (deg)"]), 360.0)) < 1e-12 and st["t"] == 0:
             from planargeo.scenes.horizontal_chain import effective_centre
@@ -724,10 +823,9 @@ class ArticulatedExplorer(Explorer):
             out["effective centre d/L (7.27)"] = effective_centre(
                 inertia_at(st["A"][0], (0.0, 0.0)) if v["base θ₁ (deg)"] == 0 else
                 _rotate_back(st["A"][0], math.radians(v["base θ₁ (deg)"])))[0]
-        if "energy" in st:
-            E, Wd, E0 = st["energy"]
-            out.update({"time": st["t"], "energy T + V": E, "dissipated W": Wd, "T + V + W": E + Wd,
-                        "initial energy": E0})
+        E, Wd, E0 = st["energy"]
+        out.update({"t": st["t"], "energy T + V": E, "dissipated W": Wd, "T + V + W": E + Wd,
+                    "initial energy E₀": E0, C_ROW: st["n"] * st["c"]})
         return out
 
 

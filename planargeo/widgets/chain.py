@@ -607,14 +607,18 @@ class ChainExplorer(Explorer):
 
     # -- focus, handles, play ------------------------------------------------------
     def focus_options(self) -> list[str]:
-        """Links and joints the focus can pick: ``link1``..``linkN``, ``joint1``..``jointN`` of the shown chain.
+        """Links and joints the focus can pick: ``link1``..``linkN``, ``joint1``..``jointN`` of the chain.
+
+        Before the first state is shown (while the constructor checks its
+        values) every link of the longest chain is listed, so that a focus
+        given with the number of links is taken.
 
         Returns
         -------
         list of str
         """
         w = getattr(self, "controls", {}).get("links")
-        n = int(w.value) if w is not None else 4
+        n = NMAX if w is None or getattr(self, "state", None) is None else int(w.value)
         return [f"link{i}" for i in range(1, n + 1)] + [f"joint{i}" for i in range(1, n + 1)]
 
     def disabled(self, values: dict) -> dict:
