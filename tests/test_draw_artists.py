@@ -503,3 +503,33 @@ def test_label_beside_extends_away_along_u(ax, u, ha, va):
     box = text.get_window_extent()
     corners = np.array([[box.x0, box.y0], [box.x1, box.y1]]) - anchor
     assert np.all(corners @ np.asarray(u) >= 6.0 * pts * 0.35 - 1e-9)   # beyond the anchor along u
+
+
+# --------------------------------------------------------------------------- fit_view (issue 22)
+def test_fit_view_keeps_a_folded_chain_and_its_size(ax):
+    """Most points coincide (a chain at bend ±180°) and round-off moves them by 1e-7: the view
+    still holds the tip, 1 m away (the former fit kept only the coincident points: ×1e-7 axes)."""
+    from planargeo.draw.layout import fit_view
+
+    rng = np.random.default_rng(3)
+    for _ in range(50):
+        base = rng.normal(0, 2, 2)
+        tip = base + rng.normal(0, 1, 2)
+        folded = np.vstack([base + rng.normal(0, 1e-7, (6, 2)), tip])
+        poles = base + rng.normal(0, 1e8, (2, 2))
+        for pts, kw in ((folded, {}), (np.vstack([folded, poles]), {"keep": folded}),
+                        (poles[:1], {"keep": folded, "min_span": 3.0})):
+            fit_view(pts, ax=ax, margin=0.1, **kw)
+            (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+            for p in folded:
+                assert x0 <= p[0] <= x1 and y0 <= p[1] <= y1
+            size = max(np.ptp(folded, axis=0).max(), kw.get("min_span", 0.0))
+            assert min(x1 - x0, y1 - y0) >= size
+            assert max(x1 - x0, y1 - y0) < 10 * size + 10      # the far poles are left out
+
+
+def test_fit_view_min_span_must_be_a_size(ax):
+    from planargeo.draw.layout import fit_view
+
+    with pytest.raises(InputError, match="min_span"):
+        fit_view([[0, 0], [1, 1]], ax=ax, min_span=float("nan"))

@@ -103,18 +103,27 @@ def fit_panel(points, *args, ax=None, margin=None, hmin=1.5, hmax=4.6):
     return ax
 
 
-def fit_view(points, *args, ax=None, margin=None, aspect=None):
+def fit_view(points, *args, ax=None, margin=None, aspect=None, keep=None, min_span=None):
     """Set limits to the bounding box of the finite ``points`` (Euclidean, (n, 2)) plus a margin.
 
     ``margin`` is a fraction of the larger extent; with ``aspect`` (height /
     width of the panel) the box is widened so that equal-aspect drawing fills it.
+
+    Far outliers among ``points`` (poles of near-translations) are left out:
+    points farther from the points' median than 20 times their median distance
+    from it.  Outliers are only ever taken from ``points``: the ``keep`` points
+    (the mechanism) are always in view, and they set the spread the outliers
+    are measured by; ``min_span`` is the smallest width and height of the view.
+    Without ``keep``, when the points kept would all but coincide (most points
+    of a folded chain), they count as one point and the spread is the distance
+    to the nearest other point: the view never keeps only the coincident points.
 
     The former call ``fit_view(ax, points[, margin])`` (axes first) is still read correctly.
 
     Parameters
     ----------
     points : array_like (n, 2)
-        Points to keep in view.
+        Points to keep in view (far outliers excepted).
     *args
         ``margin`` positionally (and, in the former order, ``points`` after the axes).
     ax : matplotlib.axes.Axes, optional
@@ -123,6 +132,10 @@ def fit_view(points, *args, ax=None, margin=None, aspect=None):
         Margin, a fraction of the larger extent (default 0.25).
     aspect : float, optional
         Height / width of the panel (default: the axes').
+    keep : array_like (m, 2), optional
+        Points always in view (the mechanism); never taken for outliers.
+    min_span : float, optional
+        The smallest width and height of the view, before the margin (e.g. the scene's size).
 
     Returns
     -------
@@ -132,17 +145,46 @@ def fit_view(points, *args, ax=None, margin=None, aspect=None):
     Raises
     ------
     InputError
-        Axes or margin given twice, or too many positional arguments.
+        Axes or margin given twice, too many positional arguments, or a
+        ``min_span`` that is not a non-negative finite number.
+
+    Examples
+    --------
+    A chain folded onto its base: most points coincide (up to round-off), the
+    tip is 1 m away.  The view holds the tip (it is no outlier):
+
+    >>> from matplotlib.figure import Figure
+    >>> ax = Figure(figsize=(4, 4)).add_subplot()
+    >>> folded = [[0, 0], [1e-7, 0], [2e-7, 0], [1e-7, 1e-7], [1.0, 0.0]]
+    >>> [float(x) for x in fit_view(folded, ax=ax, margin=0.0, aspect=1.0).get_xlim()]
+    [0.0, 1.0]
+
+    With the mechanism as ``keep``, a pole 1e8 m away is left out, the mechanism kept:
+
+    >>> [float(x) for x in fit_view([[1e8, 0.0], [0.5, 0.2]], ax=ax, margin=0.0, aspect=1.0,
+    ...                              keep=folded).get_xlim()]
+    [0.0, 1.0]
+    >>> x0, x1 = fit_view([[0, 0], [1e-7, 0]], ax=ax, margin=0.0, aspect=1.0, min_span=2.0).get_xlim()
+    >>> round(float(x1 - x0), 9)
+    2.0
     """
     ax, points, margin = _former_order("fit_view", points, args, ax, margin)
     margin = 0.25 if margin is None else margin
+    if min_span is not None and not (isinstance(min_span, (int, float, np.floating)) and
+                                     np.isfinite(min_span) and min_span >= 0):
+        raise InputError(f"min_span must be a non-negative finite number, got {min_span!r}")
     P = np.asarray(points, float).reshape(-1, 2)
     P = P[np.all(np.isfinite(P), axis=1)]
-    if len(P) > 2:  # ignore far outliers (poles of near-translations)
-        med = np.median(P, axis=0)
-        dist = np.hypot(*(P - med).T)
-        P = P[dist <= 20 * max(np.median(dist), 1e-9) + 1e-9] if np.median(dist) > 0 else P
+    K = np.zeros((0, 2)) if keep is None else np.asarray(keep, float).reshape(-1, 2)
+    K = K[np.all(np.isfinite(K), axis=1)]
+    P = _without_outliers(P, K, float(min_span or 0.0))
+    P = np.vstack([P, K])
+    if not len(P):
+        P = np.zeros((1, 2))
     lo, hi = P.min(axis=0), P.max(axis=0)
+    if min_span:                                        # at least min_span wide and high
+        c, half = (lo + hi) / 2, np.maximum((hi - lo) / 2, min_span / 2)
+        lo, hi = c - half, c + half
     size = max(float(np.max(hi - lo)), 1e-9)
     lo, hi = lo - margin * size, hi + margin * size
     if aspect is None:
@@ -158,6 +200,29 @@ def fit_view(points, *args, ax=None, margin=None, aspect=None):
     ax.set_xlim(c[0] - w / 2, c[0] + w / 2)
     ax.set_ylim(c[1] - h / 2, c[1] + h / 2)
     return ax
+
+
+def _without_outliers(P: np.ndarray, K: np.ndarray, min_span: float) -> np.ndarray:
+    """``P`` without its far outliers, measured against the mechanism ``K`` when given (fit_view)."""
+    ref = K if len(K) else P
+    if len(P) <= 2 and not len(K):
+        return P
+    med = np.median(ref, axis=0)
+    spread = float(np.median(np.hypot(*(ref - med).T))) if len(ref) else 0.0
+    if len(K):
+        spread = max(spread, float(np.max(np.ptp(K, axis=0))) / 2)
+    spread = max(spread, min_span / 2)
+    if spread <= 0:                                     # no spread to measure outliers by
+        return P
+    dist = np.hypot(*(P - med).T)
+    out = dist > 20 * spread + 1e-9
+    if not len(K) and not min_span and np.any(out) and not np.all(out):
+        # the points kept all but coincide (most points of a folded chain, up to round-off):
+        # they count as one point, and the spread is the distance to the nearest other one
+        near = float(np.min(dist[out]))
+        if float(np.max(np.ptp(P[~out], axis=0))) < 1e-4 * near:
+            out = dist > 20 * near + 1e-9
+    return P[~out]
 
 
 def drawn_texts(fig) -> list:
