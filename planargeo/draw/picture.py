@@ -52,7 +52,7 @@ from planargeo.draw.geometry import clip_line, conic_curves, conic_geometry, poi
 from planargeo.draw.style import COLORS, LABEL_PT, LINEWIDTHS, STYLES
 from planargeo.errors import InputError
 
-__all__ = ["Picture", "PX_PER_PT", "FONT_PX", "nice_ticks"]
+__all__ = ["Picture", "PX_PER_PT", "FONT_PX", "nice_ticks", "plain_text"]
 
 #: Pixels per point of a picture (the explorers' 100 dpi).
 PX_PER_PT = 100.0 / 72.0
@@ -99,6 +99,102 @@ def nice_ticks(lo: float, hi: float, n: int = 5) -> list[float]:
         out.append(round(k * step, 12) + 0.0)
         k += 1
     return out
+
+
+_GREEK = {
+    "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "varepsilon": "ε",
+    "zeta": "ζ", "eta": "η", "theta": "θ", "vartheta": "ϑ", "iota": "ι", "kappa": "κ",
+    "lambda": "λ", "mu": "μ", "nu": "ν", "xi": "ξ", "pi": "π", "rho": "ρ", "sigma": "σ",
+    "tau": "τ", "upsilon": "υ", "phi": "φ", "varphi": "φ", "chi": "χ", "psi": "ψ", "omega": "ω",
+    "Gamma": "Γ", "Delta": "Δ", "Theta": "Θ", "Lambda": "Λ", "Xi": "Ξ", "Pi": "Π", "Sigma": "Σ",
+    "Phi": "Φ", "Psi": "Ψ", "Omega": "Ω", "infty": "∞", "cdot": "·", "times": "×", "to": "→",
+    "rightarrow": "→", "leftarrow": "←", "approx": "≈", "leq": "≤", "geq": "≥", "neq": "≠",
+    "pm": "±", "prime": "′", "perp": "⊥", "parallel": "∥", "circ": "°", "ell": "ℓ",
+    "partial": "∂", "nabla": "∇", "sum": "Σ", ",": " ", ";": " ", "!": "", " ": " ", "quad": "  ",
+}
+_SUB = dict(zip("0123456789+-=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ"))
+_SUP = dict(zip("0123456789+-=()inT", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁱⁿᵀ"))
+_ACCENT = {"dot": "\u0307", "ddot": "\u0308", "hat": "\u0302", "bar": "\u0304", "tilde": "\u0303",
+           "vec": "\u20d7"}
+
+
+def _math_to_unicode(m: str) -> str:
+    out, i = [], 0
+
+    def group(j):
+        """(text of the group or single token at j, index after it)."""
+        if j < len(m) and m[j] == "{":
+            depth, k = 1, j + 1
+            while k < len(m) and depth:
+                depth += {"{": 1, "}": -1}.get(m[k], 0)
+                k += 1
+            return _math_to_unicode(m[j + 1:k - 1]), k
+        if j < len(m) and m[j] == "\\":
+            k = j + 1
+            while k < len(m) and m[k].isalpha():
+                k += 1
+            k = max(k, j + 2)
+            return _math_to_unicode(m[j:k]), k
+        return (m[j], j + 1) if j < len(m) else ("", j)
+
+    while i < len(m):
+        c = m[i]
+        if c == "\\":
+            k = i + 1
+            while k < len(m) and m[k].isalpha():
+                k += 1
+            name = m[i + 1:k] or m[i + 1:i + 2]
+            k = max(k, i + 2)
+            if name in _ACCENT:
+                body, k = group(k)
+                out.append((body[:1] + _ACCENT[name] + body[1:]) if body else "")
+            elif name in ("mathrm", "mathbf", "mathit", "text", "rm", "mathsf", "boldsymbol",
+                          "operatorname", "mathcal"):
+                body, k = group(k) if k < len(m) and m[k] == "{" else ("", k)
+                out.append(body)
+            elif name in ("left", "right", "big", "Big"):
+                pass
+            else:
+                out.append(_GREEK.get(name, name))
+            i = k
+        elif c in "_^":
+            body, k = group(i + 1)
+            table = _SUB if c == "_" else _SUP
+            out.append("".join(table[ch] for ch in body) if body and all(ch in table for ch in body)
+                       else body)
+            i = k
+        elif c in "{}":
+            i += 1
+        else:
+            out.append(c)
+            i += 1
+    return "".join(out)
+
+
+def plain_text(s: str) -> str:
+    """Text with matplotlib's ``$...$`` mathtext turned into Unicode (subscripts as subscripts).
+
+    Parameters
+    ----------
+    s : str
+        A label, e.g. ``"$v_{1}$"`` or ``"$R_2\\mu_2$"``.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> plain_text("$v_{1}$"), plain_text(r"$R_2\mu_2$"), plain_text(r"$\ddot{q}_3$"), plain_text("$s^T T$")
+    ('v₁', 'R₂μ₂', 'q̈₃', 'sᵀ T')
+    >>> plain_text(r"$v = s\omega$ (ICR)")
+    'v = sω (ICR)'
+    """
+    s = str(s)
+    if "$" not in s:
+        return s
+    parts = s.split("$")
+    return "".join(_math_to_unicode(p) if k % 2 else p for k, p in enumerate(parts))
 
 
 def _color(role: str, color: str | None) -> str:
@@ -187,7 +283,7 @@ class Picture:
         if id in self._ids:
             raise InputError(f"element id {id!r} is used twice in one picture")
         self._ids.add(id)
-        el = {"id": id, "role": role, "symbol": symbol or "", "desc": desc or "",
+        el = {"id": id, "role": role, "symbol": plain_text(symbol or ""), "desc": plain_text(desc or ""),
               "color": color, "width": round(width if width is not None else
                                              LINEWIDTHS.get(role, 1.3) * PX_PER_PT, 2),
               "dash": dash, "fill": fill, "alpha": alpha, "z": z, "parts": parts}
@@ -195,7 +291,8 @@ class Picture:
         return el
 
     def _label(self, text, x, y, dx, dy, ha="left", va="bottom"):
-        return {"p": "text", "x": x, "y": y, "dx": dx, "dy": dy, "text": text, "ha": ha, "va": va}
+        return {"p": "text", "x": x, "y": y, "dx": dx, "dy": dy, "text": plain_text(text), "ha": ha,
+                "va": va}
 
     def _edge_arrow(self, n_px, t_px, length, text, infinite):
         """Parts of an arrow at the view's edge in the pixel direction ``n_px`` (along ``t_px``)."""
@@ -430,11 +527,81 @@ class Picture:
             Drawing order.
         """
         xy = np.asarray(xy, dtype=float).reshape(-1, 2)
-        parts = [{"p": "path", "xy": xy.tolist(), "closed": bool(closed)}]
-        if label:
+        ok = np.all(np.isfinite(xy), axis=1)
+        if ok.all():
+            parts = [{"p": "path", "xy": xy.tolist(), "closed": bool(closed)}]
+        else:  # non-finite rows separate pieces (matplotlib's convention)
+            cuts = np.flatnonzero(~ok)
+            pieces = (q[np.all(np.isfinite(q), axis=1)] for q in np.split(xy, cuts))
+            parts = [{"p": "path", "xy": q.tolist(), "closed": bool(closed)} for q in pieces if len(q) > 1]
+        if label and ok[0]:
             parts.append(self._label(label, float(xy[0, 0]), float(xy[0, 1]), 4.0, 4.0))
         self._add(id, role, symbol, desc, parts, color=_color(role, color), width=width,
                   dash=dash, fill=fill, alpha=alpha, z=z)
+
+    def marks(self, id: str, xy, *, role: str = "body", symbol: str = "", desc: str = "",
+              shape: str = "o", size: float = 6.0, color: str | None = None, z: int = 4):
+        """Markers of one size at data points (pins, centres of mass, samples).
+
+        Parameters
+        ----------
+        id : str
+            Stable name of the element.
+        xy : array_like (n, 2)
+            Where the markers sit.
+        role : str
+            Style role.
+        symbol, desc : str
+            Thesis symbol and a one-line description.
+        shape : {"o", "D", "s"}
+            Marker shape.
+        size : float
+            Marker size in pixels.
+        color : str, optional
+            Colour instead of the role's.
+        z : int
+            Drawing order.
+        """
+        xy = np.asarray(xy, dtype=float).reshape(-1, 2)
+        parts = [{"p": "mark", "x": float(x), "y": float(y), "shape": shape, "size": float(size)}
+                 for x, y in xy if math.isfinite(x) and math.isfinite(y)]
+        self._add(id, role, symbol, desc, parts, color=_color(role, color), z=z)
+
+    def text(self, id: str, xy, text: str, *, role: str = "text", symbol: str = "", desc: str = "",
+             color: str | None = None, ha: str = "left", va: str = "bottom", dx: float = 0.0,
+             dy: float = 0.0, z: int = 8):
+        """A text at a data point, moved by a pixel offset (not moved by the label placer).
+
+        Parameters
+        ----------
+        id : str
+            Stable name of the element.
+        xy : (float, float)
+            Anchor in data coordinates.
+        text : str
+            The text.
+        role : str
+            Style role.
+        symbol, desc : str
+            Thesis symbol and a one-line description.
+        color : str, optional
+            Colour instead of the role's.
+        ha : {"left", "center", "right"}
+            Horizontal alignment at the anchor.
+        va : {"bottom", "center", "top"} (``"baseline"`` reads as bottom)
+            Vertical alignment at the anchor.
+        dx, dy : float
+            Offset in pixels (y up).
+        z : int
+            Drawing order.
+        """
+        x, y = (float(v) for v in xy)
+        if not (math.isfinite(x) and math.isfinite(y)):
+            return
+        va = {"baseline": "bottom", "center_baseline": "center"}.get(va, va)
+        part = self._label(str(text), x, y, float(dx), float(dy), ha, va)
+        part["fixed"] = True
+        self._add(id, role, symbol, desc, [part], color=_color(role, color), z=z)
 
     def handle(self, id: str, xy, *, symbol: str = "", desc: str = ""):
         """A point the user may drag (the page hit-tests it and moves it at once).
@@ -460,7 +627,7 @@ class Picture:
         placed: list[tuple[float, float, float, float]] = []
         for el in sorted(self.elements, key=lambda e: -e["z"]):
             for part in el["parts"]:
-                if part["p"] != "text":
+                if part["p"] != "text" or part.get("fixed"):
                     continue
                 w = _CHAR_EM * FONT_PX * len(part["text"])
                 h = 1.25 * FONT_PX
