@@ -69,7 +69,7 @@ test: $(STAMP) browser
 	$(MAKE) --no-print-directory docs
 
 fuzz: $(STAMP)
-	MPLBACKEND=Agg $(BIN)/python tests/fuzz/run.py --calls 12000 $(FUZZ_ARGS)
+	MPLBACKEND=Agg $(BIN)/python tests/fuzz/run.py --calls 8000 --seed 0 --time-limit 20 $(FUZZ_ARGS)
 
 # The site: lessons (stored outputs), gallery, API reference, equations, errata, benchmarks.
 # Warnings are errors; every warning is listed before it fails (--keep-going).

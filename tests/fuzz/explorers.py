@@ -245,7 +245,10 @@ class ExplorerFuzzer:
         self.stopped: set[str] = set()        # actions that hung once are not tried again
         self.ex = None
         self.log = log or (lambda s: None)
-        self.history: list[str] = []          # the actions since the explorer was made (reproducers)
+        #: the actions since the explorer was made: ``(text, replay(ex))`` (for reproducers)
+        self.history: list[tuple[str, Callable]] = []
+        self.minimize_budget = 30             # replays spent shortening reproducers, per fuzzer
+        self.minimize_seconds = 20.0          # and seconds
 
     # -- bookkeeping
     def _tally(self, action: str) -> Tally:
@@ -257,9 +260,67 @@ class ExplorerFuzzer:
         t.seconds += seconds
         note_refusal(t, Result(outcome, detail))
         if outcome in FAILED_OUTCOMES and outcome not in t.examples:
-            steps = "; ".join(self.history[-8:])
-            t.examples[outcome] = (f"ex = {self.name}(display='agg'); {steps} -> {detail}"
-                                   if action != "new" else detail)
+            if action == "new":
+                t.examples[outcome] = detail
+                return
+            steps = list(self.history)
+            if outcome != HANG:
+                steps = self._minimize(steps, fresh=(action == "fresh"))
+            text = "; ".join(x for x, _ in steps)
+            tail = f"; {self.name}(display='agg', **ex.values)" if action == "fresh" else ""
+            t.examples[outcome] = f"ex = {self.name}(display='agg'); {text}{tail} -> {detail}"
+
+    def _reproduces(self, steps, fresh: bool) -> bool:
+        """Replay ``steps`` on a new explorer: does it fail again (the invariant, or what it shows)?"""
+        import matplotlib.pyplot as plt
+
+        figs = []
+        try:
+            with time_limit(self.limit), np.errstate(**NUMPY_ERRORS), \
+                    warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                ex = self.cls(display="agg", export_dir=self.scratch)
+                figs.append(ex.fig)
+                for i, (_, fn) in enumerate(steps):
+                    try:
+                        fn(ex)
+                    except PlanargeoError:
+                        pass
+                    except Exception:  # noqa: BLE001
+                        return not fresh and i == len(steps) - 1
+                if not fresh:
+                    return _check_shown(ex) is not None or any(
+                        issubclass(w.category, RuntimeWarning) for w in caught)
+                try:
+                    ref = self.cls(display="agg", **dict(ex.values))
+                except Exception:  # noqa: BLE001
+                    return True
+                figs.append(ref.fig)
+                atol = float(getattr(ex, "zero_tol", 1e-9)) * float(getattr(ex, "scale", 1.0))
+                return readout_difference(ex.readout_values, ref.readout_values, atol) is not None
+        except BaseException:  # noqa: BLE001 - a hang or anything else: not this failure
+            return False
+        finally:
+            for f in figs:
+                plt.close(f)
+
+    def _minimize(self, steps, fresh: bool):
+        """A shorter list of steps that still fails (one step dropped at a time, within a budget)."""
+        if self.minimize_budget <= 0 or not self._reproduces(steps, fresh):
+            self.minimize_budget -= 1
+            return steps
+        i, t0 = 0, time.perf_counter()
+        while i < len(steps) and self.minimize_budget > 0 and \
+                time.perf_counter() - t0 < self.minimize_seconds:
+            if not fresh and i == len(steps) - 1:
+                break                                    # the failing action itself stays
+            trial = steps[:i] + steps[i + 1:]
+            self.minimize_budget -= 1
+            if self._reproduces(trial, fresh):
+                steps = trial
+            else:
+                i += 1
+        return steps
 
     def calls(self) -> int:
         return sum(t.calls for t in self.tallies.values())
@@ -276,17 +337,18 @@ class ExplorerFuzzer:
         self._record("new", OK, "", time.perf_counter() - t0)
 
     # -- one action
-    def _run(self, action: str, fn: Callable[[], Any], text: str,
+    def _run(self, action: str, fn: Callable[[Any], Any], text: str,
              check: Callable[[Any], tuple[str, str] | None] | None = None) -> None:
+        """Apply ``fn(ex)`` (the action ``text``) under the time limit and tally what became of it."""
         ex = self.ex
-        self.history.append(text)
+        self.history.append((text, fn))
         before = (ex.n_updates, ex.message)
         t0 = time.perf_counter()
         try:
             with time_limit(self.limit), np.errstate(**NUMPY_ERRORS), \
                     warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always")
-                out = fn()
+                out = fn(ex)
         except Hang as exc:
             self._record(action, HANG, str(exc), time.perf_counter() - t0)
             self.stopped.add(action)
@@ -352,10 +414,10 @@ class ExplorerFuzzer:
 
         if bad is None and len(vals) == 1 and rng.random() < 0.4:     # the page: one widget's value
             (n, v), = vals.items()
-            self._run("set", lambda: setattr(ex.controls[n], "value", v),
+            self._run("set", lambda e: setattr(e.controls[n], "value", v),
                       f"ex.controls[{n!r}].value = {v!r}")
             return
-        self._run("set", lambda: ex.set(**vals), f"ex.set(**{vals!r})", check=check)
+        self._run("set", lambda e: e.set(**dict(vals)), f"ex.set(**{vals!r})", check=check)
 
     def _view(self) -> tuple[float, float, float, float]:
         x0, x1 = self.ex.ax.get_xlim()
@@ -366,7 +428,7 @@ class ExplorerFuzzer:
         ex, rng = self.ex, self.rng
         hs = ex.all_handles()
         if not hs:
-            self._run("drag", lambda: ex.drag("nope", (0, 0), (1, 1)), "ex.drag('nope', (0, 0), (1, 1))")
+            self._run("drag", lambda e: e.drag("nope", (0, 0), (1, 1)), "ex.drag('nope', (0, 0), (1, 1))")
             return
         live = []
         for h in hs:
@@ -379,7 +441,7 @@ class ExplorerFuzzer:
         try:
             where = h.where()
         except Exception as exc:  # noqa: BLE001
-            self.history.append(f"[ex.all_handles() {h.name!r}].where()")
+            self.history.append((f"[ex.all_handles() {h.name!r}].where()", lambda e: None))
             self._record("drag", FOREIGN, f"handle {h.name!r}: where() raised {type(exc).__name__}: {exc}", 0.0)
             self.ex = None
             return
@@ -400,8 +462,10 @@ class ExplorerFuzzer:
             far = rng.choices([0.02, 0.2, 0.6, 3.0, 1e3, 1e6], weights=[20, 30, 25, 10, 8, 7])[0]
             ang = rng.uniform(0, 2 * math.pi)
             end = (start[0] + far * size * math.cos(ang), start[1] + far * size * math.sin(ang))
+        end = (float(end[0]), float(end[1]))
         steps = rng.choice([1, 1, 2, 3, 5])
-        self._run("drag", lambda: ex.drag(h.name, start, end, steps),
+        name = h.name
+        self._run("drag", lambda e: e.drag(name, start, end, steps),
                   f"ex.drag({h.name!r}, {start!r}, {end!r}, {steps})")
 
     def _advance(self) -> None:
@@ -413,19 +477,26 @@ class ExplorerFuzzer:
             ex.play_speed.value = sp
             pre = f"ex.play_speed.value = {sp!r}; "
         n = rng.choice([1, 1, 2, 3, 5])
-        self._run("advance", lambda: ex.advance(n), f"{pre}ex.advance({n})")
+        speed = ex.play_speed.value if ex.play_speed is not None else None
+
+        def advance(e):
+            if speed is not None:
+                e.play_speed.value = speed
+            return e.advance(n)
+
+        self._run("advance", advance, f"{pre}ex.advance({n})")
 
     def _reset(self) -> None:
         ex = self.ex
-        self._run("reset", lambda: ex.reset_button.click(), "ex.reset_button.click()")
+        self._run("reset", lambda e: e.reset_button.click(), "ex.reset_button.click()")
 
     def _export(self) -> None:
         ex, rng = self.ex, self.rng
         r = rng.random()
         if r < 0.5:
-            self._run("export", lambda: ex.export_button.click(), "ex.export_button.click()  # SVG")
+            self._run("export", lambda e: e.export_button.click(), "ex.export_button.click()")
         elif r < 0.85 or not ex.has_play:
-            self._run("export", lambda: ex.export_png_button.click(), "ex.export_png_button.click()")
+            self._run("export", lambda e: e.export_png_button.click(), "ex.export_png_button.click()")
         else:
             p = self.scratch / f"{self.name}-{rng.randrange(10**6)}.gif"
             k = rng.choice([2, 3, 4])
@@ -434,7 +505,7 @@ class ExplorerFuzzer:
                 return None if Path(path).is_file() and Path(path).stat().st_size > 0 else \
                     (FOREIGN, f"export_animation returned {path!r} but wrote nothing")
 
-            self._run("export", lambda: ex.export_animation(p, frames=k),
+            self._run("export", lambda e: e.export_animation(p, frames=k),
                       f"ex.export_animation({str(p)!r}, frames={k})", check=check)
         for f in self.scratch.glob("*"):       # keep the scratch folder small
             if f.is_file():
@@ -452,14 +523,13 @@ class ExplorerFuzzer:
                 return FOREIGN, f"simulate({d!r}) returned with no message (a duration outside the domain)"
             return None
 
-        self._run("simulate", lambda: ex.simulate(d), f"ex.simulate({d!r})", check=check)
+        self._run("simulate", lambda e: e.simulate(d), f"ex.simulate({d!r})", check=check)
 
     # -- the invariant
     def fresh(self) -> None:
         ex = self.ex
         values = dict(ex.values)
         text = f"{self.name}(display='agg', **ex.values)"
-        self.history.append(f"fresh = {text}")
         t0 = time.perf_counter()
         try:
             with time_limit(self.limit), np.errstate(**NUMPY_ERRORS), \

@@ -6,8 +6,8 @@ Usage::
                              [--explorer-share F] [--only SUBSTRING ...] [--group GROUP ...]
                              [--json FILE] [--memory GB]
 
-``--calls`` is the total number of calls (default 10000): a share ``--explorer-share`` (default
-0.3) goes to the explorers (:mod:`fuzz.explorers`: action sequences through the paths of the mouse
+``--calls`` is the total number of calls (default 8000): a share ``--explorer-share`` (default
+0.32) goes to the explorers (:mod:`fuzz.explorers`: action sequences through the paths of the mouse
 and the page, each followed by the one-state invariant; at the default, every explorer gets more than
 200 calls), the rest to the functions, classes, scenes, simulations, files and command line
 (:mod:`fuzz.targets`), shared by weight.  Arguments come from each parameter's documented domain,
@@ -38,7 +38,7 @@ os.environ.setdefault("MPLBACKEND", "Agg")
 from fuzz.harness import BAD, REFUSALS, Tally, run_target  # noqa: E402
 
 #: Default total number of calls (``make fuzz``: a few minutes on two cores).
-DEFAULT_CALLS = 10000
+DEFAULT_CALLS = 8000
 DEFAULT_TIME_LIMIT = 20.0
 
 
@@ -46,10 +46,8 @@ def table(rows: list[tuple[str, str, Tally]]) -> str:
     """Rows ``(entry point, group, tally)`` as a text table, with a total line.
 
     >>> t = Tally(); t.counts.update({"ok": 3, "package error": 1})
-    >>> print(table([("f", "g", t)]))   # doctest: +NORMALIZE_WHITESPACE
-    entry point  group  calls  computed  refused  failed  foreign  non-finite  hang  inconsistent  s
-    ...
-    TOTAL        1 entry points  4  3  1  0  0  0  0  0  0.0
+    >>> print(table([("f", "g", t)]).splitlines()[-1])   # doctest: +NORMALIZE_WHITESPACE
+    TOTAL        1 entry points      4         3        1       0        0           0     0             0  0.0
     """
     heads = ["entry point", "group", "calls", "computed", "refused", "failed", *BAD, "s"]
     data = [[name, group, str(t.calls), str(t.computed), str(t.refused), str(t.failed),
@@ -88,7 +86,7 @@ def main(argv=None) -> int:
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--time-limit", type=float, default=DEFAULT_TIME_LIMIT,
                     help="seconds after which one call counts as a hang (the entry point is then left)")
-    ap.add_argument("--explorer-share", type=float, default=0.3, help="share of the calls for the explorers")
+    ap.add_argument("--explorer-share", type=float, default=0.32, help="share of the calls for the explorers")
     ap.add_argument("--refusals", action="store_true", help="also print the first reasons of refusal per entry point")
     ap.add_argument("--json", default=None, help="also write the tallies to this file")
     ap.add_argument("--only", nargs="*", default=None, help="entry points whose name contains one of these")
