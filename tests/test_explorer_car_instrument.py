@@ -24,7 +24,7 @@ EPS, RADIUS, DRIVE, SPEED, HEADING = ("COM behind front (ε)", "turn radius (m)"
 
 @pytest.fixture
 def ex():
-    return CarExplorer(display="agg")
+    return CarExplorer(display="agg", **{DRIVE: 2000.0})          # the drive of Fig 6.6
 
 
 def test_every_element_labelled_and_legible(ex):
@@ -32,7 +32,7 @@ def test_every_element_labelled_and_legible(ex):
                 "$T$", "$I$"):
         assert sym in ex._shown_labels, sym
     assert legibility_problems(ex.fig) == []
-    assert ex.units["rear tyre force (N)"] == "N" and ex.readout_strings["rear tyre force (N)"].endswith(" N")
+    assert ex.units["rear tyre force μ₁"] == "N" and ex.readout_strings["rear tyre force μ₁"].endswith(" N")
 
 
 def test_drag_centre_of_gravity_sets_eps(ex):
@@ -52,10 +52,16 @@ def test_steering_drag_moves_the_icr_to_l_over_tan_delta(ex, delta_deg):
     front = np.array([0.0, L])
     wheel = np.array([-math.sin(delta), math.cos(delta)])          # turned left by δ
     ex.drag("steering", ex.handles()[1].where(), front + 0.6 * wheel, steps=5)
-    assert ex.message == ""
     d = L / math.tan(delta)
+    r_g = math.hypot(d, (1 - 0.45) * L)
+    acc = r_g * math.hypot((4.0 / d) ** 2, ex.readout_values["yaw acceleration ω̇"])
+    # a tight turn at 4 m/s asks more of the tyres than μ·g = 0.9 × 9.81: the car slides out (stated)
+    if acc < 0.9 * 9.81:
+        assert ex.message == ""
+    else:
+        assert ex.message.startswith("the car slides out") and ex.readout_values["tyres"].startswith("slide")
     assert ex.values[RADIUS] == pytest.approx(d, rel=1e-9)
-    assert ex.readout_values["steering angle (deg)"] == pytest.approx(delta_deg)
+    assert ex.readout_values["steering angle"] == pytest.approx(delta_deg)
     assert ex.handles()[2].where() == pytest.approx((-d, 0.0))     # the ICR moved, the car did not
     assert legibility_problems(ex.fig) == []
 
@@ -98,12 +104,13 @@ def test_play_drives_round_the_turn_exactly_and_conserves_energy():
         assert ex.values[SPEED] == pytest.approx((w0 + wd * t) * d, rel=1e-9)
         assert ex.values[HEADING] == pytest.approx(math.degrees(w0 * t + 0.5 * wd * t * t) % 360, abs=1e-7)
         r = ex.readout_values
-        assert r["yaw acceleration ω̇ (rad/s²)"] == pytest.approx(wd, rel=1e-9)
-        assert r["kinetic energy (J)"] == pytest.approx(0.5 * J * (w0 + wd * t) ** 2, rel=1e-9)
-        assert r["energy drift (J)"] == pytest.approx(0.0, abs=1e-9 * r["kinetic energy (J)"])
+        assert r["yaw acceleration ω̇"] == pytest.approx(wd, rel=1e-9)
+        assert r["kinetic energy K"] == pytest.approx(0.5 * J * (w0 + wd * t) ** 2, rel=1e-9)
+        assert r["rate of change of K"] == pytest.approx(r["drive power"], rel=1e-9)   # the tyres do no work
+        assert r["drive power"] == pytest.approx(M * (w0 + wd * t), rel=1e-9)
     # the tyre forces follow the speed (Newton-Euler at the frame's speed)
     _, mu1, mu2 = newton_euler(m, rho, d, eps, ex.values[SPEED], 1500.0)
-    assert [r["rear tyre force (N)"], r["front tyre force (N)"]] == pytest.approx([mu1, mu2], rel=1e-9)
+    assert [r["rear tyre force μ₁"], r["front tyre force μ₂"]] == pytest.approx([mu1, mu2], rel=1e-9)
     # the drawing turned about the ICR (-d, 0) by the heading: the rear contact and its force line
     th = math.radians(ex.values[HEADING])
     rear = np.array([-d + d * math.cos(th), d * math.sin(th)])
@@ -113,13 +120,10 @@ def test_play_drives_round_the_turn_exactly_and_conserves_energy():
     assert legibility_problems(ex.fig) == []
 
 
-def test_play_stops_at_rest_when_braking_and_a_user_change_starts_a_new_run():
+def test_play_stops_at_rest_when_braking_exactly_at_the_stop():
     ex = CarExplorer(display="agg", **{DRIVE: -6000.0, SPEED: 1.0})
     ex.advance(200)
-    assert ex.values[SPEED] > 0 and ex.values[SPEED] < 1.0 and ex.message == ""
+    assert ex.values[SPEED] == 0.0 and ex.message == ""
     n = ex.n_updates
-    ex.advance(5)                                  # the next frame would go backwards: Play ended
+    ex.advance(5)                                  # stopped: Play ended
     assert ex.n_updates == n
-    ex.controls[SPEED].value = 6.0                 # a new run: its energy counts from here
-    assert ex.readout_values["work of the drive (J)"] == 0.0
-    assert ex.readout_values["energy drift (J)"] == 0.0

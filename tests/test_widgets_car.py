@@ -30,7 +30,7 @@ def newton_euler(m, rho, d, eps, V, FA):
 
 @pytest.fixture
 def ex():
-    return CarExplorer(display="agg")
+    return CarExplorer(display="agg", **{"drive force (N)": 2000.0})     # the drive of Fig 6.6
 
 
 @pytest.mark.parametrize("vals", [
@@ -46,9 +46,9 @@ def test_tyre_forces_match_newton_euler(ex, vals):
                                 v["COM behind front (ε)"], v["speed (m/s)"], v["drive force (N)"])
     r = ex.readout_values
     assert ex.message == ""
-    assert r["yaw acceleration ω̇ (rad/s²)"] == pytest.approx(wd, rel=1e-9, abs=1e-12)
-    assert r["rear tyre force (N)"] == pytest.approx(mu1, rel=1e-9, abs=1e-9)
-    assert r["front tyre force (N)"] == pytest.approx(mu2, rel=1e-9, abs=1e-9)
+    assert r["yaw acceleration ω̇"] == pytest.approx(wd, rel=1e-9, abs=1e-12)
+    assert r["rear tyre force μ₁"] == pytest.approx(mu1, rel=1e-9, abs=1e-9)
+    assert r["front tyre force μ₂"] == pytest.approx(mu2, rel=1e-9, abs=1e-9)
     # drawn tyre lines: the rear force acts along the rear axle through the rear contact, which the
     # drawing puts at the origin (the ICR at (-d, 0)); the front force through the front contact
     # (0, L), along the front axle, towards or away from the ICR
@@ -64,7 +64,7 @@ def test_tyre_forces_match_newton_euler(ex, vals):
 
 def test_more_speed_more_tyre_force(ex):
     ex.set(**{"drive force (N)": 0.0})
-    f1 = ex.readout_values["rear tyre force (N)"]
+    f1 = ex.readout_values["rear tyre force μ₁"]
     ex.controls["speed (m/s)"].value = 8.0
-    assert abs(ex.readout_values["rear tyre force (N)"]) > abs(f1)
-    assert ex.readout_values["steering angle (deg)"] == pytest.approx(math.degrees(math.atan2(L, 8.0)))
+    assert abs(ex.readout_values["rear tyre force μ₁"]) > abs(f1)
+    assert ex.readout_values["steering angle"] == pytest.approx(math.degrees(math.atan2(L, 8.0)))

@@ -22,10 +22,14 @@ Play drives the car round the corner with the steering fixed: the drive
 force gives the constant yaw acceleration ``ω̇`` of 6.131 (the centrifugal
 bias passes through the ICR, so ``ω̇`` does not depend on ``ω``), the car
 turns by ``Δθ = ω Δt + ω̇ Δt²/2`` and its speed becomes ``(ω + ω̇ Δt) d``;
-the tyre forces follow (6.133: they grow with ``ω²``).  Play stops when the
-speed leaves the speed slider's range (braking to a stop, or top speed).  The
-readout shows the kinetic energy (:func:`planargeo.simulate.energy`), the work
-of the drive force and their difference (the energy drift) over the run.
+the tyre forces follow (6.133: they grow with ``ω²``).  The default drive is
+zero (the car goes round at constant speed).  Play ends at one of two stated
+events, each at its exact time: the car stops (a braking drive), or the
+acceleration of its centre of gravity reaches what the tyres hold, ``μ·g``
+(the friction control ``μ``): there the car slides out, and the message and
+the readout say so.  The readout shows the kinetic energy
+(:func:`planargeo.simulate.energy`), the drive's power and ``dK/dt``: equal,
+since the tyre forces do no work.
 """
 from __future__ import annotations
 
@@ -52,6 +56,9 @@ FORCE_SCALE = 1e-3
 HALF_TRACK, OVERHANG, TYRE = 0.8, 0.7, 0.35
 SPEED, RADIUS, DRIVE, EPS = "speed (m/s)", "turn radius (m)", "drive force (N)", "COM behind front (ε)"
 HEADING = "heading (deg)"
+FRICTION = "tyre friction μ"
+#: gravity (m/s²): the tyres hold a horizontal acceleration of at most μ·G_ROAD at the centre of gravity
+G_ROAD = 9.81
 
 
 def _moves(theta: float, d: float):
@@ -78,8 +85,65 @@ def _moves(theta: float, d: float):
     return R, t, V, np.linalg.inv(V).T
 
 
-#: half sizes of the view's quarter (m): the view jumps only when the turn radius crosses one
-_VIEW_D = (3.0, 5.0, 8.0, 12.0, 18.0, 27.0, 40.0, 60.0)
+def grip(res, mu: float):
+    """The acceleration of the centre of gravity and what the tyres hold, ``(r_G √(ω⁴ + ω̇²), μ·g)`` (m/s²).
+
+    Parameters
+    ----------
+    res : SceneResult
+        The scene ``"car"``.
+    mu : float
+        Tyre-road friction coefficient.
+
+    Returns
+    -------
+    tuple of float
+
+    Examples
+    --------
+    >>> from planargeo.scenes.car import car
+    >>> acc, limit = grip(car(omega=0.5, F_A=0.0, outlines=False), 0.9)
+    >>> round(acc, 3), round(limit, 3)                 # ω² r_G with r_G = √(8² + 1.43²)
+    (2.032, 8.829)
+    """
+    r_g = float(np.hypot(*res.extra["cg"]))
+    w, wd = float(res.params["omega"]), float(res.quantities["omega_dot"])
+    return r_g * float(np.hypot(w * w, wd)), float(mu) * G_ROAD
+
+
+#: margin (m) of the view around the car and the ICR
+VIEW_MARGIN = 1.0
+
+
+def view_box(d: float, L: float, theta: float):
+    """The view ``(x0, x1, y0, y1)`` (m, drawn coordinates) holding the car and the ICR at heading ``theta``.
+
+    In the car's frame the car and the ICR fill the rectangle ``x ∈ [0, d + HALF_TRACK]``,
+    ``y ∈ [-OVERHANG, L + OVERHANG]``; the view is the square about its centre (turned with
+    the car, :func:`_moves`) whose half side is the rectangle's half diagonal plus
+    :data:`VIEW_MARGIN`, rounded up to 0.5 m: it holds them at every heading.
+
+    Parameters
+    ----------
+    d, L : float
+        Turn radius and wheelbase (m).
+    theta : float
+        Heading (rad).
+
+    Returns
+    -------
+    tuple of float
+
+    Examples
+    --------
+    >>> [round(v, 2) for v in view_box(8.0, 2.6, 0.0)]
+    [-9.6, 2.4, -4.7, 7.3]
+    """
+    hx, hy = (d + HALF_TRACK) / 2, (L + 2 * OVERHANG) / 2
+    R, t, _V, _W = _moves(theta, d)
+    c = R @ np.array([hx, hy - OVERHANG]) + t
+    half = math.ceil(2 * (math.hypot(hx, hy) + VIEW_MARGIN)) / 2
+    return (float(c[0] - half), float(c[0] + half), float(c[1] - half), float(c[1] + half))
 
 
 class CarExplorer(Explorer):
@@ -102,15 +166,14 @@ class CarExplorer(Explorer):
     limits = (-21, 5, -13, 13)
     grid = False
     scale = 1.0
-    units = {SPEED: "m/s", HEADING: "deg", "yaw rate ω (rad/s)": "rad/s",
-             "yaw acceleration ω̇ (rad/s²)": "rad/s²", "rear tyre force (N)": "N",
-             "front tyre force (N)": "N", "steering angle (deg)": "deg", "lateral accel. at CG (g)": "g",
-             "kinetic energy (J)": "J", "work of the drive (J)": "J", "energy drift (J)": "J"}
+    units = {"speed V": "m/s", "heading θ": "°", "yaw rate ω": "rad/s", "yaw acceleration ω̇": "rad/s²",
+             "rear tyre force μ₁": "N", "front tyre force μ₂": "N", "steering angle": "°",
+             "acceleration of G": "m/s²", "friction limit μ·g": "m/s²", "kinetic energy K": "J",
+             "drive power": "W", "rate of change of K": "W", "tyres": "—"}
 
     def __init__(self, **kw):
         # the scene function itself (scenes.build checks parameter names on every call)
         self._scene = scenes.get("car")
-        self._run = None          # the Play run shown: kinetic energy at its start, drive work so far
         super().__init__(**kw)
 
     def make_controls(self):
@@ -124,7 +187,8 @@ class CarExplorer(Explorer):
         return {
             SPEED: Step(0.0, 30.0, 0.5, 4.0, SPEED).make("speed"),
             RADIUS: Step(2.0, 60.0, 0.5, 8.0, RADIUS).make("radius"),
-            DRIVE: Step(-6000, 6000, 100, 2000, DRIVE).make("drive"),
+            DRIVE: Step(-6000, 6000, 100, 0, DRIVE).make("drive"),
+            FRICTION: Step(0.1, 1.2, 0.05, 0.9, FRICTION).make("mu"),
             EPS: Step(0.0, 1.0, 0.01, 0.45, EPS).make("eps"),
             "radius of gyration (m)": Step(0.3, 3.0, 0.05, 1.2, "radius of gyration (m)").make("rho"),
             "mass (kg)": Step(400, 3000, 50, 1200, "mass (kg)").make("m"),
@@ -198,8 +262,9 @@ class CarExplorer(Explorer):
         Returns
         -------
         dict
-            ``res`` (the scene), ``ke`` (kinetic energy), ``run`` (the Play run's
-            start energy and drive work).
+            ``res`` (the scene), ``ke`` (kinetic energy), ``acc`` (the acceleration of
+            the centre of gravity) and ``limit`` (μ·g, what the tyres hold); past it
+            a ``message`` says that the car slides out.
 
         Raises
         ------
@@ -214,47 +279,56 @@ class CarExplorer(Explorer):
                           d=d, eps=float(v[EPS]), omega=V / d, F_A=float(v[DRIVE]),
                           outlines=False)   # the outlines are drawn by gallery Fig 6.6, not here
         ke = float(energy(res.model, [0.0], [V / d])[0])
-        run = self._run
-        if run is None or run.get("expect") != v:          # not the frame Play asked for: a new run
-            run = {"ke0": ke, "work": 0.0}
-        return {"res": res, "ke": ke, "run": run}
+        acc, limit = grip(res, float(v[FRICTION]))
+        st = {"res": res, "ke": ke, "acc": acc, "limit": limit, "message": ""}
+        if acc >= limit * (1 - 1e-9):
+            st["message"] = (f"the car slides out: G accelerates at {acc:.3g} m/s², "
+                             f"what the tyres hold at most (μ·g = {limit:.3g} m/s²)")
+        return st
 
     def play_step(self, values: dict, dt: float):
-        """One Play frame: the car drives ``dt`` seconds further round the turn.
+        """One Play step: the car drives ``dt`` seconds further round the turn (exact for any ``dt``).
 
         With the steering fixed, ``ω̇`` (6.131) is constant, so the step is exact:
-        ``ω ← ω + ω̇ dt``, heading ``θ ← θ + ω dt + ω̇ dt²/2``; the drive's work
-        is its moment about the ICR times the angle turned.
+        ``ω ← ω + ω̇ dt``, heading ``θ ← θ + ω dt + ω̇ dt²/2``.  Two events end
+        Play, each at its exact time within the step: the car stops (a braking
+        drive brings ``ω`` to 0), or the acceleration of the centre of gravity,
+        ``r_G √(ω⁴ + ω̇²)``, reaches what the tyres hold, ``μ·g``: there the car
+        slides out (the readout and the message say so).
 
         Parameters
         ----------
         values : dict
             The control values shown.
         dt : float
-            Seconds per frame.
+            Seconds (any value in ``(0, 1/play_fps]``).
 
         Returns
         -------
         dict or None
-            New speed and heading, or None when the speed would leave its
-            slider's range (stopped, or top speed).
+            New speed and heading, or None once the car has stopped or slides out.
         """
-        st = self.state
-        res = st["res"]
+        res = self._scene(m=float(values["mass (kg)"]), rho=float(values["radius of gyration (m)"]),
+                          d=float(values[RADIUS]), eps=float(values[EPS]),
+                          omega=float(values[SPEED]) / float(values[RADIUS]), F_A=float(values[DRIVE]),
+                          outlines=False)
         d = res.params["d"]
         w0 = res.params["omega"]
         wd = res.quantities["omega_dot"]
-        w1 = w0 + wd * dt
-        sp = self.controls[SPEED]
-        if not sp.min <= w1 * d <= sp.max:
-            return None
-        turn = w0 * dt + 0.5 * wd * dt * dt
-        new = {SPEED: w1 * d, HEADING: (float(values[HEADING]) + math.degrees(turn)) % 360.0}
-        tz = float(res.quantities["f_A"][2])                 # the drive's moment about the ICR
-        run = st["run"]
-        self._run = {"ke0": run["ke0"], "work": run["work"] + tz * turn,
-                     "expect": {**{k: w.value for k, w in self.controls.items()}, **new}}
-        return new
+        acc, limit = grip(res, float(values[FRICTION]))
+        if acc >= limit * (1 - 1e-12) or (w0 <= 0.0 and wd <= 0.0):
+            return None                                  # sliding out, or stopped
+        r_g = float(np.hypot(*res.extra["cg"]))
+        tau = float(dt)
+        if wd < 0.0:                                     # braking: stops at ω = 0
+            tau = min(tau, -w0 / wd)
+        w_lim2 = (limit / r_g) ** 2 - wd * wd            # ω² at which G reaches μ·g (ω̇ fixed)
+        if wd > 0.0 and w_lim2 > 0.0:
+            tau = min(tau, (math.sqrt(math.sqrt(w_lim2)) - w0) / wd)
+        tau = max(tau, 0.0)
+        w1 = max(w0 + wd * tau, 0.0)
+        turn = w0 * tau + 0.5 * wd * tau * tau
+        return {SPEED: w1 * d, HEADING: (float(values[HEADING]) + math.degrees(turn)) % 360.0}
 
     # -- handles ---------------------------------------------------------------------
     def _car_frame(self):
@@ -407,30 +481,68 @@ class CarExplorer(Explorer):
             self.bias.set_line(W @ pb)
             self.bias.set_anchor(cg + 0.5 * FORCE_SCALE * R @ pb[:2])
         self.T_line.set_line(W @ np.asarray(q["T"]))
-        # the view: G's circle about the ICR (fixed while the car turns), the rear tyre at the
-        # origin; its size changes only when d crosses one of _VIEW_D
-        D = next((v for v in _VIEW_D if v >= d), _VIEW_D[-1])
-        box = (-2 * D - 5.0, 5.0, -D - 5.0, D + 5.0)
+        # the view: the car and the ICR, centred between them and turning with the car (a size that
+        # holds them at every heading, so that the car fills a third of the view for d up to ~8 m)
+        box = view_box(d, L, th)
         if tuple(self.ax.get_xlim()) != box[:2] or tuple(self.ax.get_ylim()) != box[2:]:
             self.ax.set_xlim(*box[:2])
             self.ax.set_ylim(*box[2:])
         self.ax.apply_aspect()
         self.scale_bar.update()
         self._label(st, box, cg, icr)
-        run = st["run"]
         mu = q["mu"]
+        omega, wdot = p["omega"], q["omega_dot"]
+        inertia_icr = p["m"] * (p["rho"] ** 2 + float(np.hypot(*x["cg"])) ** 2)
+        power = float(q["f_A"][2]) * omega           # the drive's moment about the ICR times ω
+        out = {
+            "speed V": self.values[SPEED],
+            "heading θ": self.values[HEADING],
+            "yaw rate ω": omega,
+            "yaw acceleration ω̇": wdot,
+            "rear tyre force μ₁": mu[0],
+            "front tyre force μ₂": mu[1],
+            "steering angle": math.degrees(x["steer"]),
+            "acceleration of G": st["acc"],
+            "friction limit μ·g": st["limit"],
+            "tyres": ("slide: the car slides out" if st["acc"] >= st["limit"] * (1 - 1e-9)
+                      else f"hold ({100 * st['acc'] / st['limit']:.0f}% of μ·g used)"),
+            "kinetic energy K": st["ke"],
+            "drive power": power,
+            "rate of change of K": inertia_icr * omega * wdot,
+        }
+        return out
+
+    def explain(self):
+        """Every symbol and readout name on screen, with its thesis equation.
+
+        Returns
+        -------
+        dict
+        """
         return {
-            SPEED: self.values[SPEED],
-            HEADING: self.values[HEADING],
-            "yaw rate ω (rad/s)": p["omega"],
-            "yaw acceleration ω̇ (rad/s²)": q["omega_dot"],
-            "rear tyre force (N)": mu[0],
-            "front tyre force (N)": mu[1],
-            "steering angle (deg)": math.degrees(x["steer"]),
-            "lateral accel. at CG (g)": p["omega"] ** 2 * float(np.hypot(*x["cg"])) / 9.81,
-            "kinetic energy (J)": st["ke"],
-            "work of the drive (J)": run["work"],
-            "energy drift (J)": st["ke"] - run["ke0"] - run["work"],
+            "speed V": "speed of the rear tyre, V = ω d (6.115)",
+            "heading θ": "how far the car has turned about the ICR",
+            "yaw rate ω": "turning rate of the car about the ICR (6.115)",
+            "yaw acceleration ω̇": "its rate of change, from the drive force alone (6.131)",
+            "rear tyre force μ₁": "signed lateral force of the rear tyre along R₁, negative towards the ICR (6.133)",
+            "front tyre force μ₂": "signed lateral force of the front tyre along R₂ (6.133)",
+            "steering angle": "angle of the front wheels, whose axle meets the rear axle at the ICR (6.114)",
+            "acceleration of G": "acceleration of the centre of gravity, r_G √(ω⁴ + ω̇²)",
+            "friction limit μ·g": "the largest acceleration the tyres hold (friction coefficient μ times g)",
+            "tyres": "whether the tyres hold the car on its circle, and how much of μ·g it uses",
+            "kinetic energy K": "½ vᵀ I v of the car turning about the ICR (section 1.9)",
+            "drive power": "power of the drive force f_A: its moment about the ICR times ω (6.120)",
+            "rate of change of K": "dK/dt = I_ICR ω ω̇: equal to the drive power (the tyre forces do no work)",
+            "G": "centre of gravity of the car",
+            "v = sω (ICR)": "velocity pole: the instant centre of rotation, joint s of the model (6.114, 6.115)",
+            "a": "acceleration pole of a = s ω̇ (6.131)",
+            "R₁μ₁": "rear tyre force: reaction R₁ times its size μ₁ (6.114, 6.133)",
+            "R₂μ₂": "front tyre force: reaction R₂ times its size μ₂ (6.114, 6.133)",
+            "f_A": "drive force at the front tyre, along its rolling direction (6.120)",
+            "p": "bias force, the centrifugal force through the ICR (6.119)",
+            "T": "active force line: the percussion axis of the joint (6.125)",
+            "I": "inertia of the car drawn as its conic (6.117)",
+            FRICTION: "friction coefficient between tyre and road",
         }
 
     def _label(self, st, box, cg, icr) -> None:
