@@ -377,3 +377,16 @@ def test_percussion_impact_handle_only_in_impact_drive():
     assert _h(ex, "a").where() is None
     ex.drag("impact", (0.5, 0.0), (0.62, 0.3), steps=2)
     assert ex.values["impact at"] == pytest.approx(0.62)
+
+
+def test_ctrl_c_during_advance_keeps_what_was_computed():
+    class Interrupted(Dot):
+        def play_step(self, values, dt):
+            if values["x"] >= 0.3 - 1e-9:
+                raise KeyboardInterrupt
+            return super().play_step(values, dt)
+
+    ex = Interrupted(display="agg")
+    with pytest.raises(KeyboardInterrupt):
+        ex.advance(1, seconds=1.0)                    # one picture of 20 steps, stopped at the 7th
+    assert ex.values["x"] == pytest.approx(0.3) and ex.readout_values["x"] == ex.values["x"]

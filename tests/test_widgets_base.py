@@ -375,3 +375,129 @@ def test_a_refused_set_inside_hold_refuses_the_batch_and_keeps_its_message():
         t.set(b=float("nan"))
     assert t.message == "b must be a number between -2 and 2, got nan"
     assert t.values == t.shown_values and t.values["a"] == 0.5 and t.readout_values["a"] == 0.5
+
+
+# --------------------------------------------------------------------------- the shared API (issue 22)
+class Shape(Explorer):
+    """n dots on a circle; a "slide" control that only acts in prismatic mode; focus on a dot."""
+
+    limits = (-2, 2, -2, 2)
+    units = {"radius": "m", "centre": "m", "twist": ("m/s", "m/s", "rad/s"), "state": "m",
+             "pole": "m"}
+
+    def make_controls(self):
+        return {"n": Step(1, 6, 1, 4, "n", integer=True).make("n"),
+                "mode": W.Dropdown(options=["revolute", "prismatic"], value="revolute"),
+                "slide": Step(-1, 1, 0.1, 0.0, "slide").make("slide"),
+                "size": Step(0.1, 1e300, 0.1, 1.0, "size").make("size"),
+                "list": W.Text(value="", description="list")}
+
+    def focus_options(self):
+        return [f"dot {i + 1}" for i in range(int(self.values["n"]))]
+
+    def disabled(self, values):
+        return {} if values["mode"] == "prismatic" else {"slide": "only prismatic joints slide"}
+
+    def explain(self):
+        return {"radius": "the circle's radius (thesis 1.1)", "$\\omega_1$": "the first dot's rate"}
+
+    def make_artists(self, ax):
+        self.dots, = ax.plot([], [], "o")
+
+    def compute(self, v, changed):
+        import numpy as np
+
+        r = 1.0 + v["slide"] if v["mode"] == "prismatic" else 1.0
+        s = np.float64(v["size"]) * np.float64(1e10)          # overflows for a size beyond 1e298
+        return {"r": r, "n": v["n"], "s": float(s)}
+
+    def render(self, st):
+        return {"radius": st["r"], "centre": (0.0, 0.0), "twist": (1.0, 2.0, 0.5),
+                "state": "at rest", "pole": point_text([1.0, 0.0, 0.0]), "size": st["s"]}
+
+
+from planargeo.widgets.base import point_text  # noqa: E402
+
+
+def test_disabled_controls_carry_their_reason_as_tooltip():
+    ex = Shape(display="agg")
+    assert ex.controls["slide"].disabled and ex.controls["slide"].tooltip == "only prismatic joints slide"
+    ex.set(mode="prismatic")
+    assert not ex.controls["slide"].disabled and not ex.controls["slide"].tooltip
+    ex.set(slide=0.5)
+    assert ex.readout_values["radius"] == 1.5
+
+
+def test_the_key_is_disabled_when_nothing_has_an_entry():
+    ex = Shape(display="agg")
+    assert ex.controls["key"].disabled and "key" in ex.controls["key"].tooltip
+    ex.dots.set_label("dots")
+    ex.set(n=3)
+    assert not ex.controls["key"].disabled
+
+
+def test_explain_panel_lists_every_symbol_readably():
+    ex = Shape(display="agg")
+    assert "<details" in ex.explain_box.value and "ω₁" in ex.explain_box.value
+    assert "the circle&#x27;s radius (thesis 1.1)" in ex.explain_box.value
+    assert ex.explain_box in ex.widget.children[1].children[1].children
+
+
+def test_units_follow_numbers_only_one_per_component():
+    ex = Shape(display="agg")
+    s = ex.readout_strings
+    assert s["radius"] == "1 m" and s["centre"] == "(0, 0) m"
+    assert s["twist"] == "(1 m/s, 2 m/s, 0.5 rad/s)"
+    assert s["state"] == "at rest"                      # a word takes no unit
+    assert s["pole"] == "at infinity (direction (0, 1))"
+
+
+def test_point_text_tells_ideal_points_by_is_ideal():
+    assert point_text([0.0, -2.0, 1.0]) == "(2, 0) m"
+    assert point_text([1e-300, 0.0, 1e-300]) == "(0, 1) m"    # a tiny weight is still finite
+    assert point_text([3.0, 4.0, 0.0]).startswith("at infinity (direction (-0.8, 0.6")
+
+
+def test_focus_options_follow_the_values_and_fall_back_to_all():
+    ex = Shape(display="agg")
+    assert list(ex.controls["focus"].options) == ["all", "dot 1", "dot 2", "dot 3", "dot 4"]
+    ex.set(focus="dot 4")
+    ex.set(n=2)
+    assert ex.message == "" and ex.values["focus"] == "all"
+    assert list(ex.controls["focus"].options) == ["all", "dot 1", "dot 2"]
+    ex.set(focus="dot 2")
+    ex.set(n=5)
+    assert ex.values["focus"] == "dot 2" and len(ex.controls["focus"].options) == 6
+
+
+def test_over_range_numbers_are_refused_in_the_package_words():
+    ex = Shape(display="agg")
+    ex.set(list="1, 1e150")
+    assert ex.message.startswith("list: numbers typed here must lie between -1e+06 and 1e+06")
+    ex.set(size=1e299)                                  # in the slider's range, overflows inside
+    assert "size = 1e+299 cannot be computed" in ex.message and "overflow" in ex.message
+    assert ex.values["size"] == 1.0 and ex.readout_values["size"] == 1e10
+
+
+class Moving(Shape):
+    def play_step(self, values, dt):
+        return {"slide": min(1.0, values["slide"] + dt)}
+
+
+def test_export_animation_is_bounded_and_mp4_has_its_button(tmp_path):
+    import shutil
+
+    ex = Moving(display="agg", mode="prismatic")
+    for bad in (0, -1, 2.5, float("nan"), float("inf")):
+        with pytest.raises(InputError, match="frames must be a positive integer"):
+            ex.export_animation(tmp_path / "a.gif", frames=bad)
+    with pytest.raises(InputError, match=r"frames must be at most 1200 \(pass allow_long=True"):
+        ex.export_animation(tmp_path / "a.gif", frames=10 ** 6)
+    assert not (tmp_path / "a.gif").exists()
+    buttons = ex.widget.children[1].children[0].children[-2].children
+    assert (ex.export_mp4_button in buttons) == (shutil.which("ffmpeg") is not None)
+
+
+def test_a_focus_of_the_given_values_is_taken_at_construction():
+    ex = Shape(display="agg", n=6, focus="dot 6")
+    assert ex.values["focus"] == "dot 6" and ex.message == ""

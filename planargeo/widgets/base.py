@@ -503,6 +503,8 @@ class Explorer:
         self._pending = False
         self._changed: set[str] = set()
         self._busy = False
+        self._echo: dict[str, list] = {}
+        self._shadow: dict[str, tuple[float, float]] = {}
 
         # controls -------------------------------------------------------------
         self.controls: dict[str, W.ValueWidget] = dict(self.make_controls())
@@ -520,18 +522,21 @@ class Explorer:
             self.controls["key"] = W.Checkbox(value=False, description="key (legend)", indent=False)
         self.display_controls = tuple(self.display_controls) + tuple(
             k for k in extra if k not in self.display_controls)
+        self._base_focus = "focus" in extra      # the base's focus menu: its options follow the values
         unknown = sorted(set(values) - set(self.controls))
         if unknown:
             raise InputError(f"{type(self).__name__} has no control {unknown[0]!r} "
                              f"(controls: {', '.join(self.controls)})")
         for k, v in values.items():
-            self.controls[k].value = check_control(k, self.controls[k], v)
+            if k != "focus" or "focus" not in extra:
+                self.controls[k].value = check_control(k, self.controls[k], v)
+        if "focus" in values and "focus" in extra:  # the options of the values given, then the focus
+            self.controls["focus"].options = ("all", *self.focus_options())
+            self.controls["focus"].value = check_control("focus", self.controls["focus"], values["focus"])
         for w in self.controls.values():  # a value the slider's grid cannot show: a finer step
             if isinstance(w, W.FloatSlider) and w.step and not _grid_ok(w.value, w.min, w.step):
                 w.step = _representable_step(w.value, w.min, w.step)
         self.defaults = {k: w.value for k, w in self.controls.items()}
-        self._echo: dict[str, list] = {}
-        self._shadow: dict[str, tuple[float, float]] = {}
         self._drag_active: Handle | None = None
         self._drag_pending: tuple[float, float] | None = None
         self._last_drag = (0.0, 0.0)
@@ -1087,6 +1092,8 @@ class Explorer:
         if new:
             self.set(**new)
         shown = self.n_updates > before
+        if isinstance(exc, KeyboardInterrupt):      # Ctrl-C: what was computed is shown, then it stops
+            raise exc
         if exc is not None:
             message = f"play stopped: {self._reason(exc)}"
             if self.message:
@@ -1695,8 +1702,7 @@ class Explorer:
 
     def _focus_follow(self, values: dict[str, Any]) -> dict[str, Any]:
         """``{"focus": "all"}`` when the focus chosen no longer exists for ``values`` (else nothing)."""
-        w = self.controls.get("focus")
-        if w is None or not isinstance(w, W.Dropdown) or values.get("focus", "all") == "all":
+        if not self._base_focus or values.get("focus", "all") == "all":
             return {}
         try:
             options = ["all", *self.focus_options()]
@@ -1707,7 +1713,7 @@ class Explorer:
     def _follow_shown(self) -> None:
         """Focus options, disabled controls and the "what is shown" panel, for the shown state."""
         w = self.controls.get("focus")
-        if isinstance(w, W.Dropdown):
+        if self._base_focus:
             with contextlib.suppress(Exception):
                 options = ("all", *self.focus_options())
                 if tuple(w.options) != options:

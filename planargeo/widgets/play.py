@@ -163,14 +163,15 @@ def run_substeps(step: Callable[[dict, float], dict | None], values: dict, secon
     -------
     (dict, bool, Exception or None)
         The control values reached (what was computed is kept), whether the run
-        ended (``step`` returned None), and the exception that stopped it, if any.
+        ended (``step`` returned None), and the exception that stopped it, if any
+        (a ``KeyboardInterrupt`` too: the caller shows what was computed, then raises it).
     """
     vals = dict(values)
     for dt in substeps(seconds, max_dt):
         try:
             new = step(dict(vals), dt)
-        except Exception as exc:  # noqa: BLE001 - reported by the caller, what was computed is kept
-            return vals, True, exc
+        except (Exception, KeyboardInterrupt) as exc:  # noqa: BLE001 - the caller reports it (or
+            return vals, True, exc                     # raises Ctrl-C again): the steps done are kept
         if new is None:
             return vals, True, None
         vals.update(new)
