@@ -16,6 +16,8 @@ import signal
 import socket
 import subprocess
 import time
+import urllib.error
+import urllib.request
 from pathlib import Path
 
 import pytest
@@ -45,10 +47,12 @@ def lab_command() -> list[str]:
 class MakeLab:
     """`make lab`'s command, started headless on ``port`` with Jupyter's folders under ``tmp``."""
 
-    def __init__(self, tmp: Path, port: int):
+    def __init__(self, tmp: Path, port: int, config: dict | None = None):
         settings = tmp / "lab-settings" / "@jupyterlab" / "apputils-extension"
         for d in (tmp / "config", settings, tmp / "runtime", tmp / "workspaces", tmp / "data"):
             d.mkdir(parents=True, exist_ok=True)
+        if config is not None:
+            (tmp / "config" / "jupyter_server_config.json").write_text(json.dumps(config))
         (settings / "notification.jupyterlab-settings").write_text(
             json.dumps({"fetchNews": "false", "checkForUpdates": False}))
         env = {k: v for k, v in os.environ.items() if not k.startswith("JUPYTER")}
@@ -64,7 +68,7 @@ class MakeLab:
     def output(self) -> str:
         return self.log.read_text(errors="replace")
 
-    def url(self, timeout: float = 120) -> str:
+    def url(self, timeout: float = 240) -> str:
         """The last URL with a token the command printed (what a newcomer would copy)."""
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
@@ -109,7 +113,7 @@ def test_make_lab_prints_a_url_that_opens_jupyterlab(tmp_path):
     try:
         url = lab.url()
         out = lab.output()
-        assert "token=..." not in out                                     # no masked URL left to mislead
+        assert "token=..." not in out, out                                # no masked URL left to mislead
         token = re.fullmatch(URL.format(port=port), url).group(1)
         assert url.startswith(f"http://127.0.0.1:{port}/lab/tree/00-tour.ipynb?")
         # loopback only: the same port on another address of this machine is closed
@@ -126,8 +130,8 @@ def test_make_lab_prints_a_url_that_opens_jupyterlab(tmp_path):
             try:
                 page = browser.new_page()
                 page.goto(url, wait_until="domcontentloaded", timeout=60_000)
-                page.wait_for_selector("#jp-main-dock-panel", timeout=90_000)      # JupyterLab's shell
-                page.wait_for_selector(".jp-Notebook", timeout=90_000)             # the tour, open
+                page.wait_for_selector("#jp-main-dock-panel", timeout=180_000)     # JupyterLab's shell
+                page.wait_for_selector(".jp-Notebook", timeout=180_000)            # the tour, open
                 assert page.locator("input[name=password]").count() == 0
                 assert "00-tour.ipynb" in page.locator(".lm-DockPanel-tabBar .lm-TabBar-tabLabel").all_inner_texts()
                 page.close()
@@ -143,10 +147,19 @@ def test_make_lab_prints_a_url_that_opens_jupyterlab(tmp_path):
     assert rc == 0, lab.output()[-3000:]
     with socket.socket() as s:                                            # stopped: the port is closed
         assert s.connect_ex(("127.0.0.1", port)) != 0
-    # a fresh token at every start
-    again = MakeLab(tmp_path / "second", _free_port())
+    # a fresh token at every start, and a configuration file cannot switch it off or open the port
+    hostile = {"IdentityProvider": {"token": ""}, "ServerApp": {"token": "", "password": "", "ip": "0.0.0.0",
+                                                               "allow_remote_access": True}}
+    again = MakeLab(tmp_path / "second", _free_port(), config=hostile)
     try:
         token2 = re.fullmatch(URL.format(port=again.port), again.url()).group(1)
+        status = f"http://127.0.0.1:{again.port}/api/status"
+        with pytest.raises(urllib.error.HTTPError) as refused:
+            urllib.request.urlopen(status, timeout=10)
+        assert refused.value.code == 403
+        with urllib.request.urlopen(f"{status}?token={token2}", timeout=10) as ok:
+            assert ok.status == 200
+        assert "Serving notebooks" in again.output() and "0.0.0.0" not in again.output(), again.output()
     finally:
         again.stop()
     assert token2 != token
