@@ -94,6 +94,37 @@ def test_other_inputs_take_the_validated_road():
     assert _rel(forward_dynamics(m, q32, qd, tau, f_ext), _general(m, q32.astype(float), qd, tau, f_ext)) < 1e-12
 
 
+def test_one_state_kernels_compile_one_type_and_check_shapes():
+    """The one-state kernels are compiled for C-contiguous writeable float64 arrays only (without and with
+    external wrenches): other types go the validated road, compiling nothing; float64 arrays of the wrong
+    shape are refused by name, as the validated road refuses them."""
+    from planargeo.errors import ShapeError
+
+    m = random_model(3, seed=3, kinds=("revolute", "prismatic", "fixed"))
+    q, qd, tau, f_ext = _state(m, 3)
+    ref = forward_dynamics(m, q, qd, tau, f_ext)
+    forward_dynamics(m, q, qd, tau)
+    inverse_dynamics(m, q, qd, tau)
+    inverse_dynamics(m, q, qd, tau, f_ext)
+    before = [len(k.signatures) for k in (kernels.forward_dynamics_one, kernels.inverse_dynamics_one)]
+    ro = q.copy()
+    ro.setflags(write=False)
+    for args in [(q.astype(np.int64), qd, tau, f_ext), (ro, qd, tau, f_ext), (q, qd, tau, np.asfortranarray(f_ext)),
+                 (q, qd, tau.astype(np.float32), f_ext)]:
+        assert _rel(forward_dynamics(m, *args), _general(m, *(np.asarray(a, dtype=float) for a in args))) < 1e-12
+        inverse_dynamics(m, *args)
+    assert np.array_equal(forward_dynamics(m, ro, qd, tau, np.asfortranarray(f_ext)), ref)
+    assert [len(k.signatures) for k in (kernels.forward_dynamics_one, kernels.inverse_dynamics_one)] == before
+    assert before == [2, 2]
+    for bad, name in [((q[:-1], qd, tau, None), "q"), ((q, np.append(qd, 0.0), tau, None), "qd"),
+                      ((q, qd, tau[:-1], None), "tau"), ((q, qd, tau, f_ext[:-1]), "f_ext"),
+                      ((q, qd, tau, np.zeros((m.N, 2))), "f_ext")]:
+        with pytest.raises(ShapeError, match=name):
+            forward_dynamics(m, *bad)
+    with pytest.raises(ShapeError, match="qdd"):
+        inverse_dynamics(m, q, qd, tau[:-1])
+
+
 # -- batches: blocks of kernels.BLOCK states shared among threads -----------------------------------------------------
 BATCH_MODELS = {
     "chain10": lambda: chain_model(10),

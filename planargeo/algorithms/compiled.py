@@ -7,7 +7,9 @@ fixed), and numba compiles each kernel on its first use (then loads it from its 
 A call (:func:`evaluate`) takes one of three roads, all giving the same numbers:
 
 * one state given as float64 arrays of the right shapes goes straight to the kernel,
-  which checks that it is finite;
+  which checks that it is finite and of the model's shapes (the types are numba's to check:
+  the one-state kernels are compiled for C-contiguous, writeable float64 arrays once, then
+  refuse any other type instead of compiling it, and the call falls back to the next road);
 * anything else (lists, other dtypes, batches, broadcasting) is validated by
   :func:`planargeo.mechanics.kinematics.check_state` and handed over as C-contiguous
   float64 rows;
@@ -47,7 +49,7 @@ from planargeo.mechanics.subspaces import singular_joint_error
 
 __all__ = ["Compiled", "kernels_for", "evaluate", "check_finite", "warm", "cache_is_warm", "main"]
 
-_F64 = np.dtype(np.float64)
+_ARRAY = np.ndarray
 
 
 #: What :func:`kernels_for` returns: the kernels module, the model's tables, and the shapes of
@@ -83,6 +85,7 @@ def kernels_for(model):
         tables = kernels.tables(model)
         if tables is not None:
             _say_if_cold(kernels)
+            _one_state_types(kernels)
         cache["kernels"] = None if tables is None else Compiled(kernels, tables, (model.nq,), (model.N, 3))
     return cache["kernels"]
 
@@ -95,8 +98,8 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
     the kernel's :class:`~planargeo.errors.SingularConfigurationError`, anything else the
     error ``general`` raises for it (a batch: for its first such state, as it would alone).
     One state given as C-contiguous, writeable float64 arrays of the right shapes goes to the
-    kernel as it is (the kernel checks that it is finite; numba's one array type, so no other
-    layout is ever compiled); anything else is validated by
+    kernel as it is (numba checks the types, the kernel the shapes and that the state is finite;
+    numba's one array type, so no other layout is ever compiled); anything else is validated by
     :func:`~planargeo.mechanics.kinematics.check_state` and handed over as C-contiguous
     float64 rows.
 
@@ -127,10 +130,14 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
         return general(model, q, qd, z, f_ext)
     kernels, tables = c.kernels, c.tables
     one = kernels.inverse_dynamics_one if inverse else kernels.forward_dynamics_one
-    if (_plain(q) and _plain(qd) and _plain(z) and q.shape == qd.shape == z.shape == c.state
-            and (f_ext is None or (_plain(f_ext) and f_ext.shape == c.wrenches))):
-        out = one(*tables, q, qd, z, f_ext)
-        return out if out is not None else _failed(kernels, tables, model, inverse, q, qd, z, f_ext, general)
+    if (type(q) is _ARRAY and q.ndim == 1 and type(qd) is _ARRAY and type(z) is _ARRAY
+            and (f_ext is None or type(f_ext) is _ARRAY)):
+        try:                # numba checks the types (float64, C-contiguous, writeable), the kernel the shapes
+            out = one(*tables, q, qd, z, f_ext)
+        except TypeError:   # another type (ints, a read-only view, f_ext a list...): validated below
+            out = None
+        if out is not None:
+            return out
     if inverse:                         # the kernels test for NaN and infinity themselves
         q, qd, _, f_ext, z, shape = check_state(model, q, qd, None, f_ext, qdd=z, finite=False)
     else:
@@ -150,9 +157,29 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
     return general(model, q, qd, z, f_ext)       # the general recursion answered that state: the batch by it
 
 
-def _plain(a) -> bool:
-    """A float64 ndarray the kernels take as it is: C-contiguous and writeable (numba's one array type)."""
-    return type(a) is np.ndarray and a.dtype is _F64 and a.flags.carray
+_typed = []
+
+
+def _one_state_types(kernels) -> None:
+    """Compile (or load) the one-state kernels for their one array type, then let them compile nothing else.
+
+    A call with other types (a list, int64 or read-only arrays, a batch) raises numba's
+    ``TypeError`` at once, instead of compiling a new version for seconds: :func:`evaluate`
+    then validates the arguments and hands the kernels that one type.
+    """
+    if _typed:
+        return
+    from numba import types
+
+    i1, f1, f2 = (types.Array(types.int64, 1, "C"), types.Array(types.float64, 1, "C"),
+                  types.Array(types.float64, 2, "C"))
+    for kernel in (kernels.forward_dynamics_one, kernels.inverse_dynamics_one):
+        if not hasattr(kernel, "disable_compile"):          # NUMBA_DISABLE_JIT=1: plain Python functions
+            continue
+        for wrenches in (types.none, f2):
+            kernel.compile((i1, i1, f2, f1, f1, f1, f1, wrenches))
+        kernel.disable_compile()
+    _typed.append(True)
 
 
 def _rows(a, full, flat):

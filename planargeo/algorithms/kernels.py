@@ -401,9 +401,23 @@ def newton_euler_state(model, q, qd, qdd, fext, w, tau):
 
 
 # -- entry points: the model's tables as separate arrays (cheaper to pass), then one state or a batch ----------------
+@inline
+def _fits(kind, x, y, z, fext):
+    """Whether ``x, y, z`` have the model's ``nq`` rows and ``fext`` (or None) is (N, 3): the one-state shapes."""
+    nq = 0
+    for i in range(kind.shape[0]):
+        if kind[i] != FIXED:
+            nq += 1
+    if x.shape[0] != nq or y.shape[0] != nq or z.shape[0] != nq:
+        return False
+    return fext is None or (fext.shape[0] == kind.shape[0] and fext.shape[1] == 3)
+
+
 @jit
 def forward_dynamics_one(kind, parent, body, gravity, q, qd, tau, fext):
     """``q̈`` (nq,) of one state (float64 arrays (nq,), ``fext`` (N, 3) or None), or None if not :data:`OK`.
+
+    Arrays of other shapes give None too (the caller then validates them and names the problem).
 
     Parameters
     ----------
@@ -425,6 +439,8 @@ def forward_dynamics_one(kind, parent, body, gravity, q, qd, tau, fext):
     numpy.ndarray, shape (nq,) or None
         ``q̈``, or None.
     """
+    if not _fits(kind, q, qd, tau, fext):
+        return None
     qdd = np.empty(q.shape[0])
     status = articulated_body_state((kind, parent, body, gravity), q, qd, tau, fext, workspace(kind.shape[0]), qdd)
     return qdd if status == OK else None
@@ -433,6 +449,8 @@ def forward_dynamics_one(kind, parent, body, gravity, q, qd, tau, fext):
 @jit
 def inverse_dynamics_one(kind, parent, body, gravity, q, qd, qdd, fext):
     """``τ`` (nq,) of one state (float64 arrays (nq,), ``fext`` (N, 3) or None), or None if not :data:`OK`.
+
+    Arrays of other shapes give None too (the caller then validates them and names the problem).
 
     Parameters
     ----------
@@ -454,6 +472,8 @@ def inverse_dynamics_one(kind, parent, body, gravity, q, qd, qdd, fext):
     numpy.ndarray, shape (nq,) or None
         ``τ``, or None.
     """
+    if not _fits(kind, q, qd, qdd, fext):
+        return None
     tau = np.empty(q.shape[0])
     status = newton_euler_state((kind, parent, body, gravity), q, qd, qdd, fext, workspace(kind.shape[0]), tau)
     return tau if status == OK else None
