@@ -19,6 +19,7 @@ from matplotlib.artist import Artist
 from matplotlib.lines import Line2D
 from matplotlib.patches import FancyArrowPatch, Patch
 from matplotlib.text import Annotation, Text
+from matplotlib.ticker import NullLocator
 
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
 from planargeo.draw.picture import PX_PER_PT, Picture
@@ -82,8 +83,9 @@ def picture_from_axes(ax, *, explain: dict | None = None, title: str = "", view=
     if own_view:
         (x0, x1), (y0, y1) = sorted(ax.get_xlim()), sorted(ax.get_ylim())
         view = (x0, x1, y0, y1)
-    ticks = (ax.axison and ax.xaxis.get_visible() and len(ax.get_xticks()) > 0
-             and any(t.get_visible() and t.get_text() for t in ax.get_xticklabels()))
+    ticks = (ax.axison and ax.xaxis.get_visible()
+             and ax.xaxis.get_tick_params().get("labelbottom", True)
+             and not isinstance(ax.xaxis.get_major_locator(), NullLocator))
     pic = Picture(view, size=(W, H), title=title, equal=not own_view and ax.get_aspect() == 1.0,
                   ticks=bool(ticks), margin=margin)
     children = [(a, f"e{k}") for k, a in enumerate(ax.get_children())]

@@ -18,6 +18,8 @@ An element is drawn from *parts*, each a primitive in data coordinates:
 
 ``{"p": "path", "xy": [[x, y], ...], "closed": bool}``
     a polyline or polygon (stroke, and fill when the element has one);
+``{"p": "ellipse", "x": cx, "y": cy, "m": [a, b, c, d]}``
+    the unit circle under the affine map ``(x, y) + [[a, b], [c, d]] (cos t, sin t)``;
 ``{"p": "mark", "x": x, "y": y, "shape": "o" | "D" | "s", "size": px}``
     a marker of fixed pixel size;
 ``{"p": "glyph", "x": x, "y": y, "r": px, "ccw": bool}``
@@ -426,7 +428,7 @@ class Picture:
         seg = clip_line(l, self.box)
         F = math.hypot(l[0], l[1])
         if seg is not None:
-            parts.append({"p": "path", "xy": seg.tolist(), "closed": False})
+            parts.append({"p": "path", "xy": seg, "closed": False})
             e = np.array([l[0], l[1]]) / F
             c = np.array([(self.box[0] + self.box[1]) / 2, (self.box[2] + self.box[3]) / 2])
             a = c if anchor is None else np.asarray(anchor, float)
@@ -476,8 +478,12 @@ class Picture:
         g = conic_geometry(C)
         color = _color(role, color)
         text = symbol if label is None else label
-        curves = conic_curves(C, self.box, g)
-        parts = [{"p": "path", "xy": c.tolist(), "closed": g["kind"] == "ellipse"} for c in curves]
+        if g["kind"] == "ellipse":  # the unit circle under an affine map: six numbers
+            A = g["affine"]
+            parts = [{"p": "ellipse", "x": float(A[0, 2]), "y": float(A[1, 2]),
+                      "m": [float(A[0, 0]), float(A[0, 1]), float(A[1, 0]), float(A[1, 1])]}]
+        else:
+            parts = [{"p": "path", "xy": c, "closed": False} for c in conic_curves(C, self.box, g)]
         imaginary = bool(g.get("imaginary"))
         if "affine" in g:
             mark = mark_center if mark_center is not None else (imaginary or role == "inertia")
@@ -529,11 +535,11 @@ class Picture:
         xy = np.asarray(xy, dtype=float).reshape(-1, 2)
         ok = np.all(np.isfinite(xy), axis=1)
         if ok.all():
-            parts = [{"p": "path", "xy": xy.tolist(), "closed": bool(closed)}]
+            parts = [{"p": "path", "xy": xy, "closed": bool(closed)}]
         else:  # non-finite rows separate pieces (matplotlib's convention)
             cuts = np.flatnonzero(~ok)
             pieces = (q[np.all(np.isfinite(q), axis=1)] for q in np.split(xy, cuts))
-            parts = [{"p": "path", "xy": q.tolist(), "closed": bool(closed)} for q in pieces if len(q) > 1]
+            parts = [{"p": "path", "xy": q, "closed": bool(closed)} for q in pieces if len(q) > 1]
         if label and ok[0]:
             parts.append(self._label(label, float(xy[0, 0]), float(xy[0, 1]), 4.0, 4.0))
         self._add(id, role, symbol, desc, parts, color=_color(role, color), width=width,
@@ -669,10 +675,10 @@ class Picture:
         nd = max(0, 5 - int(math.floor(math.log10(span))))
 
         def rnd(v):
+            if isinstance(v, np.ndarray):
+                return (np.round(v, nd) + 0.0).tolist()
             if isinstance(v, float):
                 return round(v, nd) + 0.0
-            if isinstance(v, list):
-                return [rnd(u) for u in v]
             return v
 
         elements = []
@@ -683,6 +689,8 @@ class Picture:
                 for k in ("x", "y", "xy"):
                     if k in part:
                         part[k] = rnd(part[k])
+                if "m" in part:
+                    part["m"] = [round(v, nd + 2) + 0.0 for v in part["m"]]
                 parts.append(part)
             elements.append({**el, "parts": parts})
         ticks = ({"x": nice_ticks(self.box[0], self.box[1]), "y": nice_ticks(self.box[2], self.box[3])}

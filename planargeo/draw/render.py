@@ -72,6 +72,14 @@ def draw_picture(pic: dict, ax) -> None:
                                     solid_capstyle="butt")
                     if dashes:
                         ln.set_dashes(dashes)
+            elif kind == "ellipse":
+                t = np.linspace(0.0, 2 * np.pi, 97)
+                a, b, cc, d = part["m"]
+                (ln,) = ax.plot(part["x"] + a * np.cos(t) + b * np.sin(t),
+                                part["y"] + cc * np.cos(t) + d * np.sin(t), color=c, linewidth=lw,
+                                zorder=z, gid=el["id"])
+                if dashes:
+                    ln.set_dashes(dashes)
             elif kind == "mark":
                 ax.plot([part["x"]], [part["y"]], linestyle="none", marker=_MARKERS[part["shape"]],
                         markersize=part["size"] / PX_PER_PT, color=c, markeredgecolor="white",

@@ -23,7 +23,12 @@ Two front ends are supported:
     under the default inline backend the figure is rendered to PNG into an
     :class:`ipywidgets.Image` after every change;
 ``"agg"``
-    no display at all (tests, benchmarks): the figure is drawn on an Agg canvas.
+    no display at all (tests, benchmarks): the figure is drawn on an Agg canvas;
+``"page"``
+    the browser draws the picture (:mod:`planargeo.widgets.canvas`): the explorer's
+    state becomes a picture of plain elements (:mod:`planargeo.draw.picture`), the
+    page moves a dragged handle at once, zooms and pans, and asks the kernel for
+    one new picture at a time; no pixels travel.
 
 The default, ``display="auto"``, picks ``"ipympl"`` when that backend is
 active and ``"image"`` otherwise.
@@ -126,7 +131,7 @@ from planargeo.widgets.readout import explain_html, fmt, point_text, value_text
 
 __all__ = ["Explorer", "Handle", "Step", "cached", "check_control", "fmt", "point_text", "TEXT_LIMIT"]
 
-_DISPLAYS = ("auto", "ipympl", "image", "agg")
+_DISPLAYS = ("auto", "ipympl", "image", "agg", "page")
 _export_counter = itertools.count(1)
 
 
@@ -1340,11 +1345,52 @@ class Explorer:
         mode as the image's value, under ipympl through its canvas, without
         ipympl's round trip through the page.
         """
+        if self.display_mode == "page":
+            self.canvas.picture = self.picture()
+            return
         self.frames.draw()
         if self.display_mode == "ipympl":
             self.fig.canvas.blit()
         elif self.display_mode == "image":
             self.image.value = live_png(np.asarray(self.fig.canvas.buffer_rgba()))
+
+    def picture(self) -> dict:
+        """What the figure shows, as a picture's plain data (:mod:`planargeo.draw.picture`).
+
+        Read off the explorer's artists (:func:`planargeo.draw.from_axes.picture_from_axes`),
+        in the view the user zoomed or panned to in the page, if any; with the handles
+        that can be dragged now and every symbol's description (:meth:`explain`).
+
+        Returns
+        -------
+        dict
+        """
+        from planargeo.draw.from_axes import picture_from_axes
+
+        try:
+            explain = dict(self.explain())
+        except Exception:  # noqa: BLE001 - descriptions are a courtesy
+            explain = {}
+        handles = []
+        for h in self.all_handles():
+            try:
+                where = h.where()
+            except Exception:  # noqa: BLE001 - a handle that cannot say where it is: not shown
+                where = None
+            if where is not None:
+                handles.append((h.name, where, f"drag to change {h.name}"))
+        return picture_from_axes(self.ax, explain=explain, view=getattr(self, "_page_view", None),
+                                 handles=handles).to_dict()
+
+    def _page_drag(self, name: str, x: float, y: float) -> None:
+        """A drag request from the page: one update, or a refusal the page shows."""
+        if not self._drag_to(self._handle(name), x, y):
+            raise PlanargeoError(self.message or f"drag of {name} refused")
+
+    def _page_view_to(self, box) -> None:
+        """The user zoomed or panned in the page (None: back to the explorer's own view)."""
+        self._page_view = None if box is None else tuple(box)
+        self._safe_redraw()
 
     def guarded(self, callback: Callable) -> Callable:
         """``callback`` for a button or the mouse: an exception becomes a message, never escapes.
@@ -1441,6 +1487,13 @@ class Explorer:
             self.image = W.Image(format="png", layout=W.Layout(width=f"{wpx}px", height="auto",
                                                                max_width="100%"))
             fig_widget = self.image
+        elif self.display_mode == "page":
+            from planargeo.widgets.canvas import PictureCanvas
+
+            self.image = None
+            self._page_view = None
+            self.canvas = PictureCanvas(on_drag=self._page_drag, on_view=self._page_view_to)
+            fig_widget = self.canvas
         else:
             self.image = None
             fig_widget = W.HTML("<i>(figure drawn off-screen)</i>")

@@ -61,19 +61,30 @@ function render({ model, el }) {
   const circles = new Map();
   let drag = null, pan = null;
   let inflight = false, pending = null, seq = 0;
+  const handlePaints = [];
 
   const X = (x) => (x - box[0]) * kx;
   const Y = (y) => ph - (y - box[2]) * ky;
   const dataOf = (px, py) => [box[0] + px / kx, box[2] + (ph - py) / ky];
 
-  function send(msg) {
-    if (inflight) { pending = msg; return; }
+  // timings of each request, for benchmarks: input event, sent, acknowledged, picture painted
+  const stats = [];
+  let current = null;
+  function send(msg, tInput) {
+    if (inflight) { pending = msg; pending.tInput = tInput; return; }
     inflight = true;
     seq += 1;
-    model.send({ ...msg, seq });
+    const { tInput: _t, ...clean } = msg;
+    current = { seq, type: msg.type, tInput: tInput ?? msg.tInput ?? performance.now(), tSent: performance.now() };
+    stats.push(current);
+    if (stats.length > 1000) stats.shift();
+    model.send({ ...clean, seq });
   }
   model.on("msg:custom", (m) => {
     if (!m || m.type !== "ack") return;
+    if (current) current.tAck = performance.now();
+    const done = current;
+    requestAnimationFrame(() => { if (done) done.tPaint = performance.now(); });
     inflight = false;
     status.textContent = m.ok === false && m.message ? m.message : "";
     if (pending) { const p = pending; pending = null; send(p); }
@@ -94,6 +105,17 @@ function render({ model, el }) {
       if (elData.fill) a["fill-opacity"] = elData.alpha;
       if (elData.dash) a["stroke-dasharray"] = elData.dash.join(" ");
       mk("path", a, g);
+    } else if (k === "ellipse") {
+      // the unit circle under the picture's affine map (data units), sampled here
+      const [a, b, c, d] = part.m, n = 96;
+      let p = "";
+      for (let i = 0; i < n; i++) {
+        const t = (2 * Math.PI * i) / n, u = Math.cos(t), v = Math.sin(t);
+        p += (i ? "L" : "M") + X(part.x + a * u + b * v).toFixed(2) + " " + Y(part.y + c * u + d * v).toFixed(2);
+      }
+      const at = { d: p + "Z", fill: "none", stroke: elData.color, "stroke-width": elData.width };
+      if (elData.dash) at["stroke-dasharray"] = elData.dash.join(" ");
+      mk("path", at, g);
     } else if (k === "mark") {
       const x = X(part.x), y = Y(part.y), s = part.size / 2;
       if (part.shape === "D") {
@@ -128,7 +150,9 @@ function render({ model, el }) {
     }
   }
 
+  let nPaint = 0;
   function draw() {
+    nPaint += 1;
     pic = model.get("picture");
     svg.textContent = "";
     circles.clear();
@@ -223,8 +247,10 @@ function render({ model, el }) {
       const [px, py] = localPoint(ev);
       drag.circle.setAttribute("cx", px);
       drag.circle.setAttribute("cy", py);
+      const t = performance.now();
+      requestAnimationFrame(() => handlePaints.push(performance.now() - t));
       const [x, y] = dataOf(px, py);
-      send({ type: "drag", id: drag.id, x, y });
+      send({ type: "drag", id: drag.id, x, y }, t);
       return;
     }
     if (pan) {
@@ -294,7 +320,8 @@ function render({ model, el }) {
 
   model.on("change:picture", draw);
   draw();
-  el.__planargeo = { ping: () => send({ type: "ping" }), busy: () => inflight };
+  el.__planargeo = { ping: () => send({ type: "ping" }), busy: () => inflight, stats, handlePaints,
+                     painted: () => nPaint };
   return () => model.off("change:picture", draw);
 }
 
