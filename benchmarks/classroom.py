@@ -1,0 +1,572 @@
+"""A classroom's load: k visitors of ``make app`` at once, each dragging and pressing Play.
+
+The app (``app/planargeo-app.ipynb``) is served as ``make app`` serves it (Voila with
+``app/config/voila.py``, 127.0.0.1 only, a free port) but with no seat limit, and k
+visitors (k = 1, 5, 10, 20) open it at the same moment, each in its own browser
+context (own cookies, own page processes) of one headless Chromium.  Voila starts one kernel
+per visitor, which runs the whole app notebook (every explorer).  When every page shows
+all its explorers, all visitors at once
+
+1. drag the end of the last link of the chain explorer ("A chain in motion") by 3-px
+   mouse moves, each step waiting for its picture (``browser_latency.drag_steps``: the
+   time from the move to the next paint of the canvas, page clock);
+2. press Play on the same explorer and count the frames that reach the page in a fixed
+   time, then press Pause.
+
+Memory is read with psutil while every page is still open: each kernel's RSS and PSS
+(the kernels are the Voila server's child processes), the server's own RSS, the
+browser's PSS beyond that of the empty browser (every chromium process), and the drop of the
+machine's available memory, per visitor.
+
+The machine is **full** at the smallest k where one of these holds: the 90th
+percentile of the drag step exceeds 1 s; a visitor's page is not ready within the
+time limit or a tenth of the drag steps get no picture within 10 s; or the kernels'
+memory (PSS per visitor times k) would exceed 80 % of the machine's memory.  ``k_max``,
+the default seat count of ``make app``, is the largest measured k below full.
+
+Here the browsers run on the same machine as the kernels and take CPU from them; in
+a classroom they run on the visitors' own computers, so these latencies are an upper
+bound for a server with this CPU.
+
+Run::
+
+    .venv/bin/python benchmarks/classroom.py [--ks 1,5,10,20] [--steps 20] [--play 10] [--out benchmarks/results]
+    .venv/bin/python benchmarks/classroom.py --quick      # k = 1, 2; a few steps (about two minutes)
+"""
+from __future__ import annotations
+
+import argparse
+import datetime
+import json
+import math
+import os
+import platform
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from pathlib import Path
+
+import nbformat
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from browser_harness import CHROMIUM, CHROMIUM_ARGS, VoilaServer  # noqa: E402
+from browser_latency import INIT, drag_steps  # noqa: E402
+
+from planargeo.files import atomic_write_many  # noqa: E402
+
+REPO = Path(__file__).resolve().parents[1]
+APP = REPO / "app" / "planargeo-app.ipynb"
+APP_CONFIG = REPO / "app" / "config"
+CELL = re.compile(r"^pw\.(\w+)\(\)$")
+#: the explorer every visitor drags and plays
+EXPLORER = "ChainExplorer"
+#: "full": the drag step's 90th percentile above this (ms) ...
+FULL_P90_MS = 1000.0
+#: ... or more than this share of drag steps without a picture within 10 s ...
+FULL_MISSED = 0.10
+#: ... or the kernels would take more than this share of the machine's memory
+FULL_MEMORY = 0.80
+VIEWPORT = {"width": 1400, "height": 1000}
+#: stop a run when the machine's available memory falls below this (MiB)
+MEMORY_FLOOR_MB = 2048
+#: a k is tried only if k visitors (kernel and browser, as measured at the previous k) fit in
+#: the available memory less this margin (MiB)
+MEMORY_MARGIN_MB = 4096
+
+
+# --------------------------------------------------------------------------- the server
+def serve_app(tmp: Path, seats: int = 0, idle: float | None = None,
+              notebook: Path = APP) -> VoilaServer:
+    """Voila on ``notebook`` with the app's configuration (``app/config/voila.py``), 127.0.0.1 only.
+
+    Parameters
+    ----------
+    tmp : Path
+        Scratch folder (Voila's configuration folder, runtime files, log).
+    seats : int
+        ``ClassroomKernelManager.max_kernels`` (0: no limit), as ``make app APP_VISITORS=...``.
+    idle : float, optional
+        ``MappingKernelManager.cull_idle_timeout`` in seconds (default: the app's).
+    notebook : Path
+        The notebook served (default: the app).
+    """
+    cfg = tmp / "config"
+    cfg.mkdir(parents=True, exist_ok=True)
+    lines = ["c = get_config()  # noqa: F821",
+             f"load_subconfig('voila.py', path={str(APP_CONFIG)!r})  # noqa: F821",
+             f"c.ClassroomKernelManager.max_kernels = {int(seats)}"]
+    if idle is not None:
+        lines.append(f"c.MappingKernelManager.cull_idle_timeout = {float(idle)!r}")
+    (cfg / "voila.py").write_text("\n".join(lines) + "\n")
+    return VoilaServer(notebook, tmp)
+
+
+def app_explorers(notebook: Path = APP) -> list[str]:
+    """The explorers the app shows, in page order."""
+    nb = nbformat.read(notebook, as_version=4)
+    return [m.group(1) for c in nb.cells if c.cell_type == "code"
+            for m in [CELL.match(c.source.strip())] if m]
+
+
+def chain_handle() -> dict:
+    """Where the last link's end of the default chain explorer sits, as fractions of its canvas."""
+    from planargeo.widgets import ChainExplorer
+
+    ex = ChainExplorer(display="agg")
+    W, H = ex.fig.canvas.get_width_height()
+    ex.ax.apply_aspect()
+    x0, x1 = sorted(ex.ax.get_xlim())
+    y0, y1 = sorted(ex.ax.get_ylim())
+    hs = [h for h in ex.handles() if h.where() is not None
+          and x0 < h.where()[0] < x1 and y0 < h.where()[1] < y1]
+    h = hs[-1]
+    px, py = ex.ax.transData.transform(h.where())
+    return {"name": h.name, "fx": float(px / W), "fy": float(1 - py / H)}
+
+
+# --------------------------------------------------------------------------- the browser
+class SharedChromium:
+    """One headless Chromium (the harness's flags) that every visitor's thread drives over CDP.
+
+    Each visitor gets its own browser context (own cookies, own renderer processes) in
+    this one browser: a browser per visitor would cost this machine about twice the memory
+    (its own browser, GPU and utility processes) for nothing the server sees.
+    """
+
+    def __init__(self, tmp: Path):
+        (tmp / "chromium").mkdir(parents=True, exist_ok=True)
+        self.proc = subprocess.Popen([CHROMIUM, *CHROMIUM_ARGS, "--remote-debugging-port=0",
+                                      "--remote-debugging-address=127.0.0.1",
+                                      f"--user-data-dir={tmp / 'chromium'}", "about:blank"],
+                                     stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        t0 = time.monotonic()
+        for line in self.proc.stderr:
+            if "DevTools listening on " in line:
+                self.endpoint = line.split("DevTools listening on ", 1)[1].strip()
+                break
+            if time.monotonic() - t0 > 60:
+                break
+        else:
+            self.endpoint = None
+        if not getattr(self, "endpoint", None):
+            self.stop()
+            raise RuntimeError("chromium did not start its DevTools endpoint")
+        threading.Thread(target=lambda: [None for _ in self.proc.stderr], daemon=True).start()
+
+    def stop(self) -> None:
+        self.proc.terminate()
+        try:
+            self.proc.wait(timeout=15)
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+            self.proc.wait()
+
+
+# --------------------------------------------------------------------------- memory
+def _mb(n: float) -> float:
+    return n / 2**20
+
+
+def kernel_processes(server: VoilaServer) -> list:
+    import psutil
+
+    return [p for p in psutil.Process(server.proc.pid).children(recursive=True)
+            if "ipykernel" in " ".join(_cmdline(p))]
+
+
+def _cmdline(p) -> list[str]:
+    try:
+        return p.cmdline()
+    except Exception:
+        return []
+
+
+def browser_processes() -> list:
+    """Every chromium process started by this run (Playwright's drivers launched them)."""
+    import psutil
+
+    return [p for p in psutil.Process().children(recursive=True)
+            if "chrom" in (p.name() or "").lower()]
+
+
+def _memory(procs) -> tuple[float, float]:
+    """Summed RSS and PSS (MiB) of ``procs`` (those that vanished are skipped)."""
+    rss = pss = 0.0
+    for p in procs:
+        try:
+            m = p.memory_full_info()
+        except Exception:
+            continue
+        rss += m.rss
+        pss += getattr(m, "pss", m.rss)
+    return _mb(rss), _mb(pss)
+
+
+class Sampler(threading.Thread):
+    """Peak summed kernel RSS and lowest available memory, sampled every second.
+
+    If the machine's available memory falls below :data:`MEMORY_FLOOR_MB` (there is no
+    swap: the next step is the OOM killer), the browser is stopped, which ends the run
+    of this k, and ``aborted`` says so.
+    """
+
+    def __init__(self, server, chromium):
+        super().__init__(daemon=True)
+        self.server, self.chromium = server, chromium
+        self.stop, self.peak_kernel_rss, self.min_available = threading.Event(), 0.0, math.inf
+        self.aborted = False
+
+    def run(self):
+        import psutil
+
+        while not self.stop.wait(1.0):
+            try:
+                rss = sum(p.memory_info().rss for p in kernel_processes(self.server))
+            except Exception:
+                continue
+            self.peak_kernel_rss = max(self.peak_kernel_rss, _mb(rss))
+            self.min_available = min(self.min_available, _mb(psutil.virtual_memory().available))
+            if self.min_available < MEMORY_FLOOR_MB and not self.aborted:
+                self.aborted = True
+                print(f"[classroom] available memory {self.min_available:.0f} MiB: stopping the browser",
+                      file=sys.stderr, flush=True)
+                self.chromium.stop()
+
+
+# --------------------------------------------------------------------------- one visitor
+def _wait(what: str, fn, timeout: float, every: float = 0.5):
+    t0 = time.monotonic()
+    while time.monotonic() - t0 < timeout:
+        got = fn()
+        if got:
+            return got
+        time.sleep(every)
+    raise TimeoutError(f"{what} within {timeout:.0f} s")
+
+
+def visitor(i: int, url: str, cdp: str, plan: dict, barrier: threading.Barrier, rec: dict) -> None:
+    """One visitor: open the app, then (in step with the others) drag, play, and stay until released."""
+    from playwright.sync_api import sync_playwright
+
+    state: dict = {}
+
+    def load():
+        t0 = time.monotonic()
+        page = state["page"]
+        page.goto(url, wait_until="domcontentloaded", timeout=plan["load_timeout"] * 1000)
+        explorers = page.locator(".planargeo-explorer")
+        left = plan["load_timeout"] - (time.monotonic() - t0)
+        _wait(f"{plan['n_explorers']} explorers", lambda: explorers.count() >= plan["n_explorers"], left)
+        ex = explorers.nth(plan["index"])
+        ex.scroll_into_view_if_needed()
+        canvas = ex.locator(".planargeo-figure canvas").first
+        left = plan["load_timeout"] - (time.monotonic() - t0)
+        _wait("the chain's canvas", lambda: (canvas.bounding_box() or {}).get("width", 0) > 50, max(left, 5))
+        state["ex"] = ex
+        rec["ready_s"] = time.monotonic() - t0
+
+    def drag():
+        rec["drag_ms"] = drag_steps(state["page"], state["ex"], plan["handle"], plan["steps"])
+
+    def play():
+        page, ex = state["page"], state["ex"]
+        buttons = ex.locator(".widget-play button")
+        buttons.first.scroll_into_view_if_needed()
+        n0 = page.evaluate("window.__pgPaints.length")
+        buttons.first.click()
+        time.sleep(plan["play"])
+        n1 = page.evaluate("window.__pgPaints.length")
+        if buttons.count() > 1:
+            buttons.nth(1).click()          # pause
+        rec["play_fps"] = (n1 - n0) / plan["play"]   # pictures that reached the page per second
+
+    def stay():
+        pass                                 # every page open while the memory is read
+
+    try:
+        with sync_playwright() as p:
+            browser = p.chromium.connect_over_cdp(cdp, timeout=60_000)
+            context = browser.new_context(viewport=VIEWPORT)
+            try:
+                state["page"] = context.new_page()
+                state["page"].add_init_script(INIT)
+                for phase in (load, drag, play, stay):
+                    if "error" not in rec:
+                        try:
+                            phase()
+                        except Exception as exc:       # noqa: BLE001 - recorded, the run goes on
+                            rec["error"] = f"{phase.__name__}: {type(exc).__name__}: {str(exc)[:200]}"
+                    try:
+                        barrier.wait(timeout=plan["phase_timeout"])
+                    except threading.BrokenBarrierError:
+                        pass
+            finally:
+                context.close()
+    except Exception as exc:                  # noqa: BLE001 - e.g. chromium failed to start
+        rec.setdefault("error", f"browser: {type(exc).__name__}: {str(exc)[:200]}")
+
+
+# --------------------------------------------------------------------------- one k
+def run_k(k: int, steps: int, play: float, handle: dict, tmp: Path) -> dict:
+    import psutil
+
+    names = app_explorers()
+    avail0 = _mb(psutil.virtual_memory().available)
+    server = serve_app(tmp)
+    chromium = SharedChromium(tmp)
+    time.sleep(2.0)
+    b_base = _memory(browser_processes())[1]
+    sampler = Sampler(server, chromium)
+    sampler.start()
+    load_timeout = 120 + 30 * k
+    plan = {"handle": handle, "steps": steps, "play": play, "n_explorers": len(names),
+            "index": names.index(EXPLORER), "load_timeout": load_timeout,
+            "phase_timeout": load_timeout + 60 + steps * 30}
+    barrier = threading.Barrier(k + 1)
+    recs = [{} for _ in range(k)]
+    threads = [threading.Thread(target=visitor, args=(i, server.url + "/", chromium.endpoint, plan, barrier, recs[i]),
+                                daemon=True)
+               for i in range(k)]
+    t0 = time.monotonic()
+    load0 = os.getloadavg()[0]
+    try:
+        for t in threads:
+            t.start()
+        phases = {}
+        for name in ("load", "drag", "play"):
+            try:
+                barrier.wait(timeout=plan["phase_timeout"])
+            except threading.BrokenBarrierError:
+                pass
+            phases[name] = time.monotonic() - t0
+            print(f"  k={k}: {name} done at {phases[name]:.0f} s", file=sys.stderr, flush=True)
+        kernels = kernel_processes(server)
+        k_rss, k_pss = _memory(kernels)
+        s_rss, _ = _memory([psutil.Process(server.proc.pid)])
+        b_rss, b_pss = _memory(browser_processes())
+        avail1 = _mb(psutil.virtual_memory().available)
+        load1 = os.getloadavg()[0]
+        try:
+            barrier.wait(timeout=plan["phase_timeout"])
+        except threading.BrokenBarrierError:
+            pass
+        for t in threads:
+            t.join(timeout=60)
+    finally:
+        sampler.stop.set()
+        chromium.stop()
+        server.stop()
+    drags = [x for r in recs for x in r.get("drag_ms", [])]
+    got = sorted(x for x in drags if x is not None)
+    res = {"k": k, "served": sum("ready_s" in r for r in recs), "errors": [r["error"] for r in recs if "error" in r],
+           "kernels": len(kernels), "ready_s_median": _med([r.get("ready_s") for r in recs]),
+           "ready_s_max": max((r["ready_s"] for r in recs if "ready_s" in r), default=None),
+           "drag_steps": len(drags), "drag_missed": len(drags) - len(got),
+           "drag_median_ms": statistics.median(got) if got else None,
+           "drag_p90_ms": _quantile(got, 0.9), "play_fps_median": _med([r.get("play_fps") for r in recs]),
+           "kernel_rss_mb": k_rss / max(len(kernels), 1), "kernel_pss_mb": k_pss / max(len(kernels), 1),
+           "kernel_peak_rss_total_mb": sampler.peak_kernel_rss, "server_rss_mb": s_rss,
+           "browser_rss_mb": b_rss / k, "browser_pss_mb": (b_pss - b_base) / k, "browser_empty_pss_mb": b_base,
+           "available_drop_mb": (avail0 - avail1) / k, "available_min_mb": sampler.min_available,
+           "load_before": load0, "load_during": load1, "wall_s": time.monotonic() - t0, "phases_s": phases,
+           "aborted_for_memory": sampler.aborted}
+    return res
+
+
+def _med(xs):
+    xs = [x for x in xs if x is not None]
+    return statistics.median(xs) if xs else None
+
+
+def _quantile(xs: list[float], q: float) -> float | None:
+    """The ``q`` quantile of sorted ``xs`` (linear between order statistics)."""
+    if not xs:
+        return None
+    if len(xs) == 1:
+        return xs[0]
+    pos = q * (len(xs) - 1)
+    lo = int(pos)
+    hi = min(lo + 1, len(xs) - 1)
+    return xs[lo] + (xs[hi] - xs[lo]) * (pos - lo)
+
+
+def full_reason(r: dict, total_mb: float) -> str | None:
+    """Why the machine is full with ``r['k']`` visitors, or None if it is not."""
+    if r["served"] < r["k"]:
+        return f"{r['k'] - r['served']} of {r['k']} pages not ready"
+    if r["drag_steps"] and r["drag_missed"] > FULL_MISSED * r["drag_steps"]:
+        return f"{r['drag_missed']} of {r['drag_steps']} drag steps without a picture in 10 s"
+    if r["drag_p90_ms"] is None or r["drag_p90_ms"] > FULL_P90_MS:
+        return f"drag step p90 {r['drag_p90_ms'] or math.inf:.0f} ms > {FULL_P90_MS:.0f} ms"
+    if r["kernel_pss_mb"] * r["k"] > FULL_MEMORY * total_mb:
+        return f"kernels {r['kernel_pss_mb'] * r['k']:.0f} MiB > {FULL_MEMORY:.0%} of memory"
+    return None
+
+
+def verdict(results: list[dict], total_mb: float) -> dict:
+    """k_max (largest measured k below full), the first full k and why, and the memory bound."""
+    k_max, full = 0, None
+    for r in sorted(results, key=lambda r: r["k"]):
+        why = full_reason(r, total_mb)
+        if why is None and full is None:
+            k_max = r["k"]
+        elif why is not None and full is None:
+            full = {"k": r["k"], "why": why}
+    pss = [r["kernel_pss_mb"] for r in results if r["kernels"]]
+    k_memory = int(FULL_MEMORY * total_mb // max(pss)) if pss else None
+    return {"k_max": k_max, "full": full, "k_memory": k_memory,
+            "kernel_pss_mb": max(pss) if pss else None}
+
+
+# --------------------------------------------------------------------------- report
+def _f(x, fmt="{:.0f}"):
+    return "–" if x is None else fmt.format(x)
+
+
+def report(results: list[dict], meta: dict, v: dict, skipped: list[dict] = ()) -> str:
+    lines = ["# A classroom's load", "",
+             "`make app` served with no seat limit, k visitors opening it at the same moment, each in its own browser",
+             f"context of one headless Chromium on this machine ({meta['cpus']} CPUs, {meta['memory_gib']:.0f} GiB,"
+             " no swap);",
+             f"every visitor then drags the end of the chain explorer's last link ({meta['steps']} steps of 3 px,",
+             f"each waiting for its picture), then presses Play for {meta['play']:.0f} s. One kernel per visitor,",
+             "running the whole app (every explorer). Memory is read with every page still open.", "",
+             "| visitors k | pages ready | ready after (median / max, s) | drag step median (ms) | drag step p90 (ms) "
+             "| steps without picture | Play frames/s (median) | kernel RSS / PSS per visitor (MiB) "
+             "| browser PSS per visitor (MiB) | load (1 min) |",
+             "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for r in results:
+        lines.append(
+            f"| {r['k']} | {r['served']}/{r['k']} | {_f(r['ready_s_median'], '{:.1f}')} / {_f(r['ready_s_max'], '{:.1f}')} "
+            f"| {_f(r['drag_median_ms'])} | {_f(r['drag_p90_ms'])} | {r['drag_missed']}/{r['drag_steps']} "
+            f"| {_f(r['play_fps_median'], '{:.1f}')} | {_f(r['kernel_rss_mb'])} / {_f(r['kernel_pss_mb'])} "
+            f"| {_f(r['browser_pss_mb'])} | {r['load_during']:.1f} |")
+    for sk in skipped:
+        lines.append(f"| {sk['k']} | not tried: about {sk['needed_mb'] / 1024:.1f} GiB needed, "
+                     f"{sk['available_mb'] / 1024:.1f} GiB available | | | | | | | | |")
+    full = v["full"]
+    lines += ["", "## Reading", "",
+              f"* **Memory per visitor:** each kernel holds about {_f(v['kernel_pss_mb'])} MiB (PSS: its own pages "
+              "plus its share of the libraries it shares with the other kernels; RSS counts the shared pages in "
+              f"full). The Voila server itself took {_f(results[-1]['server_rss_mb'])} MiB. Memory alone would allow "
+              f"about {v['k_memory']} visitors ({FULL_MEMORY:.0%} of {meta['memory_gib']:.0f} GiB); the processor "
+              "is what runs out first.",
+              "* **Full:** " + (f"at k = {full['k']} ({full['why']})." if full else
+                                "not reached at the largest k measured.")
+              + f" Full means: drag step p90 > {FULL_P90_MS / 1000:.0f} s, a page not ready, more than "
+              f"{FULL_MISSED:.0%} of drag steps without a picture within 10 s, or kernels above "
+              f"{FULL_MEMORY:.0%} of memory.",
+              f"* **k_max = {v['k_max']}**: the largest measured k below full, the default seat count of "
+              "`make app` (`APP_VISITORS`); visitor k_max + 1 gets the page “The class is full” "
+              "(`app/config/planargeo_classroom.py`).",
+              "* The browsers ran on the same two cores as the kernels and took a large share of them; in a "
+              "classroom each visitor's browser runs on their own computer, so the same server does at least as "
+              "well as measured here. A server with more cores holds more visitors: every drag step and Play "
+              "frame is computed in the visitor's own kernel, one core each at a time.",
+              "* Opening the page is the heaviest moment: every kernel runs the whole app at once. Visitors "
+              "arriving a few at a time get their page sooner than in this all-at-once test.",
+              "", f"Machine: {meta['machine']}, {meta['cpus']} CPUs, {meta['memory_gib']:.1f} GiB, "
+              f"Python {meta['python']}, {meta['date']}{' (quick run)' if meta['quick'] else ''}. "
+              "Raw numbers: `classroom.json`; chart: `classroom.png`. "
+              "Re-run: `python benchmarks/classroom.py` (or `make bench`, group `classroom`).", ""]
+    return "\n".join(lines)
+
+
+def chart(results: list[dict], v: dict) -> bytes:
+    import io
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    ks = [r["k"] for r in results]
+    fig, (a, b) = plt.subplots(1, 2, figsize=(9, 3.6), dpi=100)
+    a.plot(ks, [r["drag_median_ms"] or math.nan for r in results], "o-", label="median")
+    a.plot(ks, [r["drag_p90_ms"] or math.nan for r in results], "s--", label="90th percentile")
+    a.axhline(FULL_P90_MS, color="0.5", lw=0.8)
+    a.text(ks[0], FULL_P90_MS * 1.08, "full: p90 > 1 s", fontsize=8, color="0.35")
+    a.set_yscale("log")
+    a.set_xlabel("visitors k")
+    a.set_ylabel("drag step (ms)")
+    a.set_title("Drag step: mouse move to new picture", fontsize=10)
+    a.legend(fontsize=8)
+    b.plot(ks, [r["kernel_pss_mb"] * r["k"] / 1024 for r in results], "o-", label="kernels (PSS)")
+    b.plot(ks, [r["browser_pss_mb"] * r["k"] / 1024 for r in results], "s--", label="browsers (PSS)")
+    b.set_xlabel("visitors k")
+    b.set_ylabel("memory (GiB)")
+    b.set_title("Memory, all visitors", fontsize=10)
+    b.legend(fontsize=8)
+    for ax in (a, b):
+        ax.axvline(v["k_max"], color="tab:green", lw=0.8)
+        ax.set_xticks(ks)
+    fig.tight_layout()
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png")
+    plt.close(fig)
+    return buf.getvalue()
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--ks", default=None, help="visitor counts, comma-separated (default 1,5,10,20; quick: 1,2)")
+    ap.add_argument("--steps", type=int, default=None, help="drag steps per visitor (default 20; quick: 8)")
+    ap.add_argument("--play", type=float, default=None, help="seconds of Play per visitor (default 10; quick: 3)")
+    ap.add_argument("--quick", action="store_true", help="k = 1, 2 and a few steps")
+    ap.add_argument("--out", default=str(Path(__file__).parent / "results"))
+    args = ap.parse_args(argv)
+    if not Path(CHROMIUM).exists():
+        print(f"{CHROMIUM} not found: install Debian's chromium (make browser); skipped")
+        return 0
+    import psutil
+
+    ks = [int(x) for x in (args.ks or ("1,2" if args.quick else "1,5,10,20")).split(",") if x.strip()]
+    if not ks or min(ks) < 1 or max(ks) > 40:
+        ap.error("--ks: visitor counts between 1 and 40")
+    steps = args.steps or (8 if args.quick else 20)
+    play = args.play or (3.0 if args.quick else 10.0)
+    total_mb = _mb(psutil.virtual_memory().total)
+    handle = chain_handle()
+    results, skipped = [], []
+    with tempfile.TemporaryDirectory() as tmp:
+        per_visitor = 800.0          # MiB, kernel and browser, until measured
+        for k in ks:
+            avail = _mb(psutil.virtual_memory().available)
+            if k * per_visitor > avail - MEMORY_MARGIN_MB:
+                print(f"[classroom] k = {k} not tried: about {k * per_visitor:.0f} MiB needed, "
+                      f"{avail:.0f} MiB available", file=sys.stderr, flush=True)
+                skipped.append({"k": k, "needed_mb": k * per_visitor, "available_mb": avail})
+                continue
+            print(f"[classroom] k = {k} ...", file=sys.stderr, flush=True)
+            r = run_k(k, steps, play, handle, Path(tmp) / f"k{k}")
+            results.append(r)
+            if r["kernels"]:
+                per_visitor = 1.1 * (r["kernel_pss_mb"] + r["browser_pss_mb"])
+            print(f"[classroom] k = {k}: ready {r['served']}/{k}, drag median {_f(r['drag_median_ms'])} ms, "
+                  f"p90 {_f(r['drag_p90_ms'])} ms, kernel PSS {_f(r['kernel_pss_mb'])} MiB, "
+                  f"browser PSS {_f(r['browser_pss_mb'])} MiB, errors {len(r['errors'])}", file=sys.stderr,
+                  flush=True)
+            if full_reason(r, total_mb) and r["served"] < r["k"] / 2:
+                print("[classroom] fewer than half the pages ready: larger k not tried", file=sys.stderr)
+                break
+    v = verdict(results, total_mb)
+    meta = {"date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+            "python": platform.python_version(), "machine": platform.machine(), "cpus": os.cpu_count(),
+            "memory_gib": total_mb / 1024, "steps": steps, "play": play, "quick": bool(args.quick),
+            "explorer": EXPLORER, "handle": handle}
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    md = report(results, meta, v, skipped)
+    atomic_write_many({out / "classroom.json": json.dumps({"meta": meta, "verdict": v, "results": results, "not_tried": skipped},
+                                                          indent=1, ensure_ascii=False) + "\n",
+                       out / "classroom.md": md,
+                       out / "classroom.png": chart(results, v)})
+    print(md)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
