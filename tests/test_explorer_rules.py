@@ -121,11 +121,11 @@ def _pixels(ex) -> str:
 class Snapshot:
     """What a student sees of the shown state: readout texts, the state's numbers, the picture."""
 
-    def __init__(self, ex):
+    def __init__(self, ex, pixels: bool = False):
         self.ex = ex
         self.readout = dict(ex.readout_strings)
         self.state = _numbers(ex.state)
-        self._pixels = None
+        self._pixels = _pixels(ex) if pixels else None      # drawn now, or when first needed
 
     @property
     def pixels(self):
@@ -223,7 +223,7 @@ def _view(ex) -> tuple[float, float, float, float]:
 def test_every_control_does_something(name):
     ex = make(name)
     assert ex.message == "", ex.message
-    base = Snapshot(ex)
+    base = Snapshot(ex, pixels=True)
     problems = []
     for k, w in list(ex.controls.items()):
         ex.reset()
