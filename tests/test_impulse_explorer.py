@@ -44,15 +44,18 @@ def test_dragging_the_blow_along_the_door_follows_the_rod_closed_forms(ex):
         ref = door(3.0, d)
         r = ex.readout_values
         assert r["ω after the blow"] == pytest.approx(ref["omega"], rel=1e-12)
-        assert r["reaction impulse ĵ_R, across"] == pytest.approx(ref["reaction"], rel=1e-10)
+        assert r["reaction impulse ĵᵣ, across"] == pytest.approx(ref["reaction"], rel=1e-10)
         assert r["apparent mass along ĵ"] == pytest.approx(ref["held"], rel=1e-12)
         assert r["apparent mass, free"] == pytest.approx(ref["free"], rel=1e-12)
-        assert r["velocity pole"] == pytest.approx((0.0, 0.0), abs=1e-15)
+        assert r["velocity pole"] == "(0, 0) m"
+        assert ex.state.quantities["pole"] == pytest.approx((0.0, 0.0), abs=1e-15)
         if ref["free_pole"] is None:                       # struck through c: a free body translates
-            assert r["pole if free (I⁻¹ĵ)"] == "at infinity (a translation)"
+            assert r["pole if free (I⁻¹ĵ)"].startswith("at infinity (direction")
         else:
-            assert r["pole if free (I⁻¹ĵ)"] == pytest.approx((ref["free_pole"], 0.0), rel=1e-12, abs=1e-15)
-        assert ex.units["reaction impulse ĵ_R, across"] == "N·s" and ex.units["apparent mass along ĵ"] == "kg"
+            assert ex.state.quantities["pole_if_free"] == pytest.approx((ref["free_pole"], 0.0), rel=1e-12,
+                                                                         abs=1e-15)
+            assert r["pole if free (I⁻¹ĵ)"] == f"({ref['free_pole']:.4g}, 0) m"
+        assert ex.units["reaction impulse ĵᵣ, across"] == "N·s" and ex.units["apparent mass along ĵ"] == "kg"
         legible(ex)
 
 
@@ -60,13 +63,14 @@ def test_at_the_centre_of_percussion_the_hinge_feels_nothing(ex):
     cop = door(3.0, 0.5)["cop"]
     assert ex.readout_values["centre of percussion (5.67)"] == pytest.approx((cop, 0.0), rel=1e-12, abs=1e-15)
     ex.drag("blow point", (0.55, 0.0), (cop, 0.0), steps=4)
-    assert ex.readout_strings["reaction impulse ĵ_R, across"] == "0 N·s"      # round-off shown as 0
-    assert ex.readout_strings["|ĵ_R|"] == "0 N·s"
-    assert ex.readout_values["pole if free (I⁻¹ĵ)"] == pytest.approx((0.0, 0.0), abs=1e-12)
+    assert ex.readout_strings["reaction impulse ĵᵣ, across"] == "0 N·s"      # round-off shown as 0
+    assert ex.readout_strings["|ĵᵣ|"] == "0 N·s"
+    assert ex.state.quantities["pole_if_free"] == pytest.approx((0.0, 0.0), abs=1e-12)
+    assert ex.readout_values["pole if free (I⁻¹ĵ)"] == "(0, 0) m"
     assert not ex.reaction.get_visible()
     legible(ex)
     ex.set(support="free")                                        # free, it turns about the hinge point
-    assert ex.readout_values["velocity pole"] == pytest.approx((0.0, 0.0), abs=1e-12)
+    assert ex.state.quantities["pole"] == pytest.approx((0.0, 0.0), abs=1e-12)
     legible(ex)
 
 
@@ -77,8 +81,8 @@ def test_blow_tip_drag_sets_angle_and_impulse_and_the_along_part_goes_into_the_h
     J = 2 * 0.2 / 0.25
     assert ex.values["J"] == pytest.approx(J, rel=1e-12)
     ref = door(3.0, 0.55, J=J * math.sin(math.radians(60.0)))
-    assert ex.readout_values["reaction impulse ĵ_R, across"] == pytest.approx(ref["reaction"], rel=1e-10)
-    assert ex.readout_values["reaction impulse ĵ_R, along"] == pytest.approx(-J * 0.5, rel=1e-12)
+    assert ex.readout_values["reaction impulse ĵᵣ, across"] == pytest.approx(ref["reaction"], rel=1e-10)
+    assert ex.readout_values["reaction impulse ĵᵣ, along"] == pytest.approx(-J * 0.5, rel=1e-12)
     legible(ex)
 
 
@@ -115,14 +119,14 @@ def test_bat_momentum_balance_from_the_readout(support):
     Jc *= m / A
     r = ex.readout_values
     e = 2.0 * np.array([math.cos(math.radians(75.0)), math.sin(math.radians(75.0))])
-    jr = np.array([r["reaction impulse ĵ_R, along"], r["reaction impulse ĵ_R, across"]])   # c lies on +x
+    jr = np.array([r["reaction impulse ĵᵣ, along"], r["reaction impulse ĵᵣ, across"]])   # c lies on +x
     np.testing.assert_allclose(m * np.array(r["velocity of c"]), e + jr, atol=1e-12)
     moment = (0.72 - c[0]) * e[1] - (0.02 - c[1]) * e[0] + (-c[0]) * jr[1] - (-c[1]) * jr[0]
     assert Jc * r["ω after the blow"] == pytest.approx(moment, abs=1e-12)
     assert r["kinetic energy"] == pytest.approx(0.5 * m * np.array(r["velocity of c"]) @ np.array(r["velocity of c"])
                                                 + 0.5 * Jc * r["ω after the blow"] ** 2, rel=1e-12)
     if support == "free":
-        assert r["|ĵ_R|"] == 0.0 and r["velocity pole"] == r["pole if free (I⁻¹ĵ)"]
+        assert r["|ĵᵣ|"] == 0.0 and r["velocity pole"] == r["pole if free (I⁻¹ĵ)"]
     legible(ex)
 
 
@@ -142,9 +146,35 @@ def test_play_turns_the_body_about_its_pole(ex):
     c, s = math.cos(w * t), math.sin(w * t)
     np.testing.assert_allclose(ex.body.get_xy()[:len(outline)], (outline - p) @ np.array([[c, s], [-s, c]]) + p,
                                atol=1e-12)
-    ex.advance(100)                                          # runs to the end and stops there
-    assert ex.values["t"] <= 0.5 + 1e-12
+    ex.advance(100)                                          # Play keeps turning it (exact at any t)
+    t = ex.values["t"]
+    assert t == pytest.approx(104 / ex.play_fps, rel=1e-12)
+    c, s = math.cos(w * t), math.sin(w * t)
+    np.testing.assert_allclose(ex.body.get_xy()[:len(outline)], (outline - p) @ np.array([[c, s], [-s, c]]) + p,
+                               atol=1e-9)
     legible(ex)
+
+
+def test_play_runs_a_minute_from_the_default_exactly_for_any_step():
+    from planargeo.widgets.impulse import ImpulseExplorer
+
+    ex = ImpulseExplorer(display="agg")
+    ex.advance(60, seconds=60.0)
+    assert ex.message == "" and ex.values["t"] == pytest.approx(60.0, rel=1e-12)
+    # sub-steps of any size add up exactly: one step of 0.0137 s from t = 1.0
+    assert ex.play_step(dict(ex.values, t=1.0), 0.0137) == {"t": 1.0137}
+    assert ex.play_step(dict(ex.values, t=60.0), 0.01) is None               # the end of the time slider
+
+
+def test_every_readout_row_and_label_is_explained_and_points_read_as_points():
+    from planargeo.widgets.impulse import ImpulseExplorer
+
+    ex = ImpulseExplorer(display="agg", support="free", **{"strike angle": 0.0})   # a blow along the bat
+    meaning = ex.explain()
+    for k in ex.readout_values:
+        assert k in meaning and "_" not in k, k
+    # a blow through the centre of mass along the bat: a translation, its pole at infinity
+    assert ex.readout_values["velocity pole"].startswith("at infinity (direction")
 
 
 def test_every_body_and_support_is_legible_and_exports(tmp_path):

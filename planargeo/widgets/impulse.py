@@ -7,7 +7,7 @@ point and by the arrow's tip).  Shown live:
 * the velocity pole just after the blow (held: the grip ``P`` itself; free:
   the percussion pole ``I⁻¹ĵ`` of the blow's line, 5.64–5.68),
 * where the body would turn about if nothing held it (``pole if free``),
-* the reaction impulse ``ĵ_R`` of the grip or hinge (the "sting"): zero when
+* the reaction impulse ``ĵᵣ`` of the grip or hinge (the "sting"): zero when
   the line is the grip's axis of percussion, through the *centre of
   percussion* at ``l = d + ρ²/d`` from the grip (5.67) — then the free pole is
   the grip,
@@ -25,7 +25,7 @@ Examples
 >>> cop = ex.readout_values["centre of percussion (5.67)"]
 >>> round(cop[0], 6)                                # 2L/3 + w²/(6L) for the 0.9 m × 0.04 m door
 0.600296
->>> abs(ex.set(**{"strike x": cop[0]}).readout_values["reaction impulse ĵ_R, across"]) < 1e-12
+>>> abs(ex.set(**{"strike x": cop[0]}).readout_values["reaction impulse ĵᵣ, across"]) < 1e-12
 True
 """
 from __future__ import annotations
@@ -43,18 +43,50 @@ from planargeo.errors import DegenerateGeometryError
 from planargeo.scenes.impulse import BODIES, impulse
 from planargeo.scenes.subspace import unit_direction
 from planargeo.screws.inertia import percussion_axis
-from planargeo.widgets.base import Explorer, Handle, Step
+from planargeo.widgets.base import Explorer, Handle, Step, point_text
 
 __all__ = ["ImpulseExplorer"]
 
 #: data length of the blow's arrow per N·s
 ARROW = 0.25
 #: longest time after the blow that Play runs (s)
-T_MAX = 0.5
+T_MAX = 60.0
 
 
-def _xy_or(p, other="at infinity"):
-    return other if p is None else tuple(p)
+def pole_text(tw, pole, rest: str = "at rest") -> str:
+    """Readout text of the pole of a twist ``[vx, vy, ω]``: ``"(x, y) m"``, ``"at infinity (direction …)"`` or ``rest``.
+
+    ``pole`` is the scene's pole of the twist (:mod:`planargeo.scenes.impulse`), None
+    for a translation: then the pole is the ideal point ``[vx, vy, 0]`` (thesis 4.10),
+    written by :func:`planargeo.widgets.readout.point_text`, which tells ideal points
+    by :func:`planargeo.geometry.projective.is_ideal`.
+
+    Parameters
+    ----------
+    tw : array_like (3,)
+        The twist.
+    pole : sequence of 2 float or None
+        Its pole as the scene gives it.
+    rest : str
+        Text for no motion at all.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> pole_text([0.0, 2.0, 1.0], [-2.0, 0.0]), pole_text([1.0, 0.0, 0.0], None)
+    ('(-2, 0) m', 'at infinity (direction (0, 1))')
+    >>> pole_text([0.0, 0.0, 0.0], None)
+    'at rest'
+    """
+    tw = np.asarray(tw, dtype=float)
+    if not np.any(tw):
+        return rest
+    if pole is None:
+        return point_text([tw[0], tw[1], 0.0], "m")
+    return point_text([pole[1], -pole[0], 1.0], "m", zero=1e-12)
 
 
 class ImpulseExplorer(Explorer):
@@ -128,7 +160,7 @@ class ImpulseExplorer(Explorer):
         self.cop = ax.add_line(Line2D([], [], marker="*", ms=13, color=COLORS["wrench"], mec="black", ls="none",
                                       zorder=6, label="centre of percussion"))
         self.blow = ax.add_artist(LineArtist(zl, role="wrench", scale=ARROW, text="ĵ (blow)"))
-        self.reaction = ax.add_artist(LineArtist(zl, role="reaction", scale=ARROW, text="ĵ_R (grip)",
+        self.reaction = ax.add_artist(LineArtist(zl, role="reaction", scale=ARROW, text="ĵᵣ (grip)",
                                                  linewidth=1.2))
         self.pole = ax.add_artist(PointArtist(z, role="twist", glyph_scale=3.0, text="v (pole)"))
         self.pole.set_text_beside((0.7, -0.7))
@@ -244,7 +276,7 @@ class ImpulseExplorer(Explorer):
         jr = ex["reaction"]
         self.reaction.set_visible(held and bool(np.hypot(jr[0], jr[1]) > 1e-12 * abs(r.params["J"])))
         if self.reaction.get_visible():
-            self.reaction.set_text("ĵ_R (grip)" if r.params["body"] == "bat" else "ĵ_R (hinge)")
+            self.reaction.set_text("ĵᵣ (grip)" if r.params["body"] == "bat" else "ĵᵣ (hinge)")
             self.reaction.set_line(jr)
             u = jr[:2] / float(np.hypot(jr[0], jr[1]))
             self.reaction.set_anchor(-0.15 * u)            # the arrow ends near P, pushing on the body there
@@ -268,11 +300,11 @@ class ImpulseExplorer(Explorer):
         out = {
             "ω after the blow": q["omega"],
             "velocity of c": tuple(q["v_com"]),
-            "velocity pole": _xy_or(q["pole"], "at infinity (a translation)" if any(q["dv"]) else "at rest"),
-            "pole if free (I⁻¹ĵ)": _xy_or(q["pole_if_free"], "at infinity (a translation)"),
-            "reaction impulse ĵ_R, across": q["reaction_across"],
-            "reaction impulse ĵ_R, along": q["reaction_along"],
-            "|ĵ_R|": float(np.hypot(*rf)),
+            "velocity pole": pole_text(r.extra["dv"], q["pole"]),
+            "pole if free (I⁻¹ĵ)": pole_text(r.extra["dv_free"], q["pole_if_free"]),
+            "reaction impulse ĵᵣ, across": q["reaction_across"],
+            "reaction impulse ĵᵣ, along": q["reaction_along"],
+            "|ĵᵣ|": float(np.hypot(*rf)),
             "centre of percussion (5.67)": tuple(q["centre_of_percussion"]),
             "l = d + ρ²/d": d + q["rho"] ** 2 / d,
             "apparent mass along ĵ": math.inf if q["apparent_mass"] is None else q["apparent_mass"],
@@ -283,10 +315,48 @@ class ImpulseExplorer(Explorer):
             "kinetic energy": q["kinetic_energy"],
             "t": float(self.values["t"]),
         }
-        self.units = {"ω after the blow": "rad/s", "velocity of c": "m/s", "velocity pole": "m",
-                      "pole if free (I⁻¹ĵ)": "m", "reaction impulse ĵ_R, across": "N·s",
-                      "reaction impulse ĵ_R, along": "N·s", "|ĵ_R|": "N·s", "centre of percussion (5.67)": "m",
+        self.units = {"ω after the blow": "rad/s", "velocity of c": "m/s", "velocity pole": "—",
+                      "pole if free (I⁻¹ĵ)": "—", "reaction impulse ĵᵣ, across": "N·s",
+                      "reaction impulse ĵᵣ, along": "N·s", "|ĵᵣ|": "N·s", "centre of percussion (5.67)": "m",
                       "l = d + ρ²/d": "m", "apparent mass along ĵ": "kg", "apparent mass, held": "kg",
                       "apparent mass, free": "kg", "mass m": "kg", "radius of gyration ρ": "m",
                       "kinetic energy": "J", "t": "s"}
         return out
+
+    def explain(self):
+        """Every symbol and readout name on screen, with its thesis equation.
+
+        Returns
+        -------
+        dict
+        """
+        return {
+            "ω after the blow": "angular velocity of the body just after the blow (5.64)",
+            "velocity of c": "velocity of the centre of mass just after the blow (5.64)",
+            "velocity pole": "the point the body turns about just after the blow (4.10)",
+            "pole if free (I⁻¹ĵ)": "where it would turn about if nothing held it: the pole of I⁻¹ĵ (5.64-5.68)",
+            "reaction impulse ĵᵣ, across": "impulse of the grip or hinge on the body, across the body (5.67)",
+            "reaction impulse ĵᵣ, along": "impulse of the grip or hinge on the body, along the body",
+            "|ĵᵣ|": "size of the reaction impulse: the sting felt at the grip (5.67)",
+            "centre of percussion (5.67)": "where a blow across the body leaves the grip without a reaction (5.67)",
+            "l = d + ρ²/d": "distance of the centre of percussion from the grip; d to the centre of mass (5.67)",
+            "apparent mass along ĵ": "impulse per unit change of the struck point's speed along the blow (Fig 3.3)",
+            "apparent mass, held": "the apparent mass with the grip or hinge holding the body (Fig 3.3)",
+            "apparent mass, free": "the apparent mass with nothing holding it (Fig 3.3)",
+            "mass m": "mass of the body",
+            "radius of gyration ρ": "J = m ρ² about the centre of mass (5.67)",
+            "kinetic energy": "½ vᵀ I v just after the blow (section 1.9)",
+            "t": "time after the blow (Play advances it)",
+            "I (ρ)": "the body's inertia drawn as its conic, of radius ρ about c (5.4)",
+            "c": "centre of mass",
+            "P (grip)": "the grip, where the bat is held (a revolute joint)",
+            "P (hinge)": "the hinge of the door (a revolute joint)",
+            "axis of percussion of P": "the line of blows that leave P without reaction (5.67)",
+            "centre of percussion": "the point of that line on the body's axis (5.67)",
+            "ĵ (blow)": "the blow: an impulse wrench along its line (5.64)",
+            "ĵᵣ (grip)": "the reaction impulse of the grip on the bat (5.67)",
+            "ĵᵣ (hinge)": "the reaction impulse of the hinge on the door (5.67)",
+            "v (pole)": "the velocity pole just after the blow (4.10)",
+            "pole if free": "the pole of I⁻¹ĵ, where the body would turn if free (5.64-5.68)",
+            "body": "the body after the blow, turned about its velocity pole",
+        }
