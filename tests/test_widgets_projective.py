@@ -185,3 +185,22 @@ def test_sliders_and_rows_have_units():
             assert ex.units.get(k, "") not in ("", "—"), k
     for k in ex.readout_values:
         assert k in ex.explain(), k
+
+
+def test_handles_are_where_they_can_be_grabbed():
+    """The fixed view holds P and M's handles (not a far pole of M); M's direction handle turns to
+    the side of its pivot that is in view, and dragging it still turns M through the pointer."""
+    ex = ProjectiveExplorer(display="agg", conic="circle", a=1.5,
+                            **{"line angle (deg)": 90.0, "line offset": 0.1})
+    assert ex.readout_values["pole of M"] == pytest.approx((-1.5 ** 2 / 0.1, 0.0))   # 22.5 m away
+    handles = {h.name: h for h in ex.handles()}
+    assert len(ex.mechanism_points()) == 3                                         # P, M's two
+    assert np.all(np.abs(ex.mechanism_points()) <= 4.0)
+    ex.set(**{"line angle (deg)": 0.0, "line offset": -3.5})                       # the line y = -3.5
+    pivot, tip = (np.array(handles[n].where()) for n in ("M (point)", "M (direction)"))
+    assert np.all(np.abs(tip) <= 4.0) and np.all(np.abs(pivot) <= 4.0)
+    ex.drag("M (direction)", tuple(tip), (tip[0], tip[1] + 0.5), steps=2)
+    M = ex.M_art.get_line()
+    on = lambda x, y: M[2] + y * M[0] - x * M[1]
+    assert on(*pivot) == pytest.approx(0.0, abs=1e-9)
+    assert on(tip[0], tip[1] + 0.5) == pytest.approx(0.0, abs=1e-9)

@@ -148,6 +148,7 @@ ROLE_KEY = {"twist": "velocity pole (a twist)", "accel": "acceleration pole",
 
 #: the meaning of every symbol each construction shows (figure labels and readout rows)
 _EXPLAIN_COMMON = {
+    "∞": "a point at infinity (a direction), drawn at the edge of the view as an arrow its way (5.5)",
     "step": "the step shown, of all the construction's steps",
     "equation": "the thesis equation the step uses",
     "case": "the special case reached, by name and equation (10.2.4)",
@@ -528,7 +529,10 @@ class ConstructionExplorer(Explorer):
         ax : matplotlib.axes.Axes
         """
         self._layers = [StepLayer(ax, f"step-{k + 1}") for k in range(self._max_steps)]
-        self.caption_text = ax.set_title("", fontsize=9, loc="left")
+        # the caption is the axes' title, set flush left (a title, not a label of the drawing)
+        self.caption_text = ax.set_title("", fontsize=9)
+        self.caption_text.set_horizontalalignment("left")
+        self.caption_text.set_x(0.0)
         self.role_keys = {}
         for role, text in ROLE_KEY.items():
             st = STYLES.get(role, STYLES["construct"])
@@ -641,6 +645,10 @@ class ConstructionExplorer(Explorer):
         else:
             art.set_conic(e.value)
         art.set_alpha(alpha)
+        # the artist hands its alpha to its parts only when it first meets its axes
+        # (planargeo.draw.artists._Base._prepare_children): a later fade is given to them here
+        for part in art.get_children():
+            part.set_alpha(alpha)
         art.set_visible(True)
 
     @staticmethod

@@ -209,6 +209,7 @@ class PercussionExplorer(Explorer):
         dict
         """
         return {
+            "∞": "a point at infinity (a direction), drawn at the edge of the view as an arrow its way (5.5)",
             "a": "the acceleration pole: the point of the body with no acceleration (5.64)",
             "pole x": "x of the acceleration pole a", "pole y": "y of the acceleration pole a",
             "pole": "the acceleration pole a (5.64)",

@@ -223,6 +223,7 @@ class ProjectiveExplorer(Explorer):
             ``{symbol or readout name: one-line meaning}``.
         """
         return {
+            "∞": "a point at infinity (a direction), drawn at the edge of the view as an arrow its way (5.5)",
             "C": "the conic: the symmetric 3×3 matrix C of a curve QᵀCQ = 0 (5.35, 5.38)",
             "conic": "the kind of conic C: real (a curve) or imaginary (an inertia, no real points) (5.35)",
             "P": "the movable point P in homogeneous coordinates [y, −x, 1] (5.49)",
@@ -280,10 +281,32 @@ class ProjectiveExplorer(Explorer):
         pivot = getattr(self, "_M_pivot", None)  # the point M turns about: kept while on M
         M = st["M"]
         if pivot is None or abs(M[2] + pivot[1] * M[0] - pivot[0] * M[1]) > 1e-9 * max(
-                1.0, float(np.abs(pivot).max())):
+                1.0, float(np.abs(pivot).max())) or not self._in_view(pivot):
             pivot = foot
         self._M_pivot = pivot
-        return pivot, pivot + 1.5 * e
+        # the direction handle: a point of M in view, ahead of the pivot if it can be (else behind)
+        for arm in (1.5, -1.5, 0.75, -0.75, 0.3, -0.3):
+            if self._in_view(pivot + arm * e):
+                break
+        self._M_arm = arm
+        return pivot, pivot + arm * e
+
+    def mechanism_points(self):
+        """What the fixed view must hold: ``P`` and the handles of ``M`` (not the pole of M, which
+        may lie anywhere in the plane: a line near the centre has its pole far away).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``(n, 2)`` points.
+        """
+        pts = [h.where() for h in self.handles() if h.name != "pole of M"]
+        return np.array([p for p in pts if p is not None], dtype=float).reshape(-1, 2)
+
+    def _in_view(self, xy) -> bool:
+        """True for a data point inside the (fixed) view: a handle there can be grabbed."""
+        x0, x1, y0, y1 = self.limits
+        return bool(x0 <= xy[0] <= x1 and y0 <= xy[1] <= y1)
 
     def _drag_M_point(self, x, y):
         ang = self.values["line angle (deg)"]
@@ -296,7 +319,7 @@ class ProjectiveExplorer(Explorer):
         if pts is None:
             raise DegenerateGeometryError("M is not shown as a finite line")
         foot = pts[0]  # the pivot: M turns about it
-        d = np.array([x, y]) - foot
+        d = (np.array([x, y]) - foot) * (1.0 if self._M_arm > 0 else -1.0)   # along M's direction
         if np.hypot(*d) < 1e-9:
             raise DegenerateGeometryError("the direction point is on the turning point")
         ang = math.degrees(math.atan2(d[1], d[0]))
@@ -331,7 +354,9 @@ class ProjectiveExplorer(Explorer):
             if st is None or self._M_points() is None:
                 return None
             p = st["poleM"]
-            return None if is_ideal(p) else (float(-p[1] / p[2]), float(p[0] / p[2]))
+            if is_ideal(p):
+                return None
+            return (float(-p[1] / p[2]), float(p[0] / p[2]))
 
         return [
             Handle("P", P_where, lambda x, y: {"P x": x, "P y": y}),

@@ -240,6 +240,7 @@ class ScrewSumExplorer(Explorer):
         dict
         """
         return {
+            "∞": "a point at infinity (a direction), drawn at the edge of the view as an arrow its way (5.5)",
             "v₁, v₂": "the two twists added: a rotation about a pole, or a translation (pole at "
                       "infinity) (4.10)",
             "v₃ = v₁ + v₂": "their sum, a twist whose pole lies on the line Q₁Q₂ of the poles (4.11)",

@@ -244,6 +244,7 @@ class SubspaceExplorer(Explorer):
         st = self.state
         k = 1 if st is None else int(st["s"].shape[1])
         out = {
+            "∞": "a point at infinity (a direction), drawn at the edge of the view as an arrow its way (5.5)",
             "s": "motion space: the poles of the motions the joint allows (6.1, 6.8)",
             "R": "reaction space: the lines of the forces the joint can take, sᵀR = 0 (6.1)",
             "T": "T = I s (sᵀIs)⁻¹: the axes of percussion of s, the active forces (6.36)",
@@ -390,7 +391,7 @@ class SubspaceExplorer(Explorer):
         self.com.set_point([COM[1], -COM[0], 1.0])
         self.conic.set_conic(st["I"])
         self._text = {self.com: "c", self.f_art: "f", self.TQ_art: "TQ", self.Rmu_art: "Rμ",
-                      self.conic: f"I (ρ = {self.values['rho']:.2f} m)"}
+                      self.conic: "I"}
         self.conic.set_text(self._text[self.conic])
         # subspaces
         twin = kind == "twin_prismatic"
@@ -441,8 +442,38 @@ class SubspaceExplorer(Explorer):
             if on:
                 art.set_point(st[key])
                 self._labels[art] = {"a_free": "I⁻¹f", "s_psi": "sψ", "U_gamma": "Uγ"}[key]
+        self._fit_view()
         self._merge_coinciding([*self.s_art, *self.U_art, self.afree_art, self.spsi_art, self.Ug_art])
         return self._readout(st, k)
+
+    #: room left round the handles when the view grows to hold them (m)
+    VIEW_MARGIN = 0.3
+
+    def _fit_view(self) -> None:
+        """The default view, grown to hold every handle (the joint, its direction, the force).
+
+        The view depends on the control values only (a fresh explorer with the same
+        values shows the same view): the default limits, widened to the handles
+        plus :data:`VIEW_MARGIN`, then to a span in each direction no smaller than
+        the handles' largest extent.
+        """
+        x0, x1, y0, y1 = self.limits
+        pts = self.mechanism_points()
+        if len(pts):
+            m = self.VIEW_MARGIN
+            x0, x1 = min(x0, pts[:, 0].min() - m), max(x1, pts[:, 0].max() + m)
+            y0, y1 = min(y0, pts[:, 1].min() - m), max(y1, pts[:, 1].max() + m)
+            size = float(np.max(np.ptp(pts, axis=0))) + 2 * m
+            for lo, hi, axis in ((x0, x1, "x"), (y0, y1, "y")):
+                if hi - lo < size:
+                    grow = (size - (hi - lo)) / 2
+                    if axis == "x":
+                        x0, x1 = lo - grow, hi + grow
+                    else:
+                        y0, y1 = lo - grow, hi + grow
+        if (x0, x1) != tuple(self.ax.get_xlim()) or (y0, y1) != tuple(self.ax.get_ylim()):
+            self.ax.set_xlim(x0, x1)
+            self.ax.set_ylim(y0, y1)
 
     def _merge_coinciding(self, arts):
         """Points drawn at one place (s and sψ of a rotation about the pin, U and Uγ...) get one joint label."""
