@@ -151,8 +151,10 @@ function render({ model, el }) {
   }
 
   let nPaint = 0;
+  const paintTimes = [];
   function draw() {
     nPaint += 1;
+    requestAnimationFrame(() => { paintTimes.push(performance.now()); if (paintTimes.length > 1000) paintTimes.shift(); });
     pic = model.get("picture");
     svg.textContent = "";
     circles.clear();
@@ -320,8 +322,8 @@ function render({ model, el }) {
 
   model.on("change:picture", draw);
   draw();
-  el.__planargeo = { ping: () => send({ type: "ping" }), busy: () => inflight, stats, handlePaints,
-                     painted: () => nPaint };
+  root.__planargeo = { ping: () => send({ type: "ping" }), busy: () => inflight, stats, handlePaints,
+                       paintTimes, painted: () => nPaint };
   return () => model.off("change:picture", draw);
 }
 
