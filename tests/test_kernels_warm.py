@@ -52,3 +52,16 @@ def test_warm_command_and_its_place_in_the_install_step():
     pip = next(i for i, x in enumerate(lines) if "pip install" in x and "-e" in x)
     warm = next(i for i, x in enumerate(lines) if "-m planargeo.algorithms.compiled --warm" in x)
     assert warm > pip                              # after the install, before the stamp
+
+
+def test_a_cold_cache_is_seen_without_compiling(tmp_path):
+    """With numba's cache in an empty folder the kernels are cold (the first call would compile): ``cache_is_warm``
+    says so without compiling anything (warm after ``--warm``: the first test)."""
+    import os
+
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path))
+    code = ("from planargeo.algorithms import compiled, kernels; "
+            "w = compiled.cache_is_warm(); print(w, sum(len(getattr(kernels, n).signatures) "
+            "for n in compiled.ENTRY_POINTS))")
+    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, timeout=300, check=True)
+    assert out.stdout.split() == ["False", "0"]
