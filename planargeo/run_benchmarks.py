@@ -261,8 +261,8 @@ def _move_in(stage: Path, out: Path, force: bool) -> tuple[list[str], list[str]]
     A file of ``out`` is replaced only if it still holds what ``planargeo bench`` wrote (or with
     ``force``); the others are ``left``.  The manifest is rewritten with the files written.
     """
-    new = _produced(stage)
     try:
+        new = _produced(stage)
         own, _changed = owned_files(out, read_manifest(out / MANIFEST) or {})
         taken = {n for n in new if (out / n).exists() or (out / n).is_symlink()}
     except OSError as e:
