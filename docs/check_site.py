@@ -7,16 +7,21 @@ no network), with Debian's chromium driven by playwright:
 * the gallery page shows every figure of ``gallery/`` (each image loaded);
 * every lesson shows every figure stored in its notebook (as many loaded images as the
   notebook holds image outputs) and every equation typeset by MathJax;
-* an API page's equations are typeset too.
+* an API page's equations are typeset too;
+* no page anywhere on the site shows raw TeX: no ``\\(`` or ``\\[`` outside the math that
+  MathJax typesets (the sidebar, titles, captions, text), read from the HTML files themselves
+  (:func:`raw_tex`; this needs no browser).
 
-Without chromium or playwright it says so and exits 0 (``make test`` installs both where it
+Without chromium or playwright the browser checks are skipped (it says so) (``make test`` installs both where it
 can); any problem is printed and the exit status is 1.
 
 Run: ``python docs/check_site.py [docs/_build/html]``.
 """
 from __future__ import annotations
 
+import html.parser
 import json
+import re
 import shutil
 import sys
 import time
@@ -39,6 +44,97 @@ _PROBE = """async () => {
           maths: maths.length,
           raw: maths.filter(m => !m.querySelector('mjx-container')).map(m => m.textContent.slice(0, 60))};
 }"""
+
+
+#: elements whose text is not shown as text, or is code: raw TeX there is not a reader's problem
+_SKIP_TAGS = {"script", "style", "pre", "code", "textarea", "svg", "math", "mjx-container"}
+_VOID = {"area", "base", "br", "col", "embed", "hr", "img", "input", "link", "meta", "source",
+         "track", "wbr"}
+_TEX = re.compile(r"\\[(\[]")
+
+
+class _TextOutsideMath(html.parser.HTMLParser):
+    """Collects the text of a page that is shown as text: outside math, code and scripts."""
+
+    def __init__(self):
+        super().__init__(convert_charrefs=True)
+        self.stack: list[tuple[str, bool]] = []   # open elements: (tag, inside a skipped one?)
+        self.found: list[str] = []
+
+    def _skipped(self) -> bool:
+        return bool(self.stack) and self.stack[-1][1]
+
+    def handle_starttag(self, tag, attrs):
+        if tag in _VOID:
+            return
+        classes = (dict(attrs).get("class") or "").split()
+        self.stack.append((tag, self._skipped() or tag in _SKIP_TAGS or "math" in classes))
+
+    def handle_startendtag(self, tag, attrs):
+        pass
+
+    def handle_endtag(self, tag):
+        for i in range(len(self.stack) - 1, -1, -1):     # close up to the matching element
+            if self.stack[i][0] == tag:
+                del self.stack[i:]
+                return
+
+    def handle_data(self, data):
+        m = _TEX.search(data)
+        if m and not self._skipped():
+            i = m.start()
+            self.found.append(" ".join(data[max(0, i - 30):i + 40].split()))
+
+
+def raw_tex(page: str) -> list[str]:
+    r"""Snippets of raw TeX a reader would see on an HTML page: ``\(`` or ``\[`` outside math.
+
+    Math that MathJax typesets sits in elements of class ``math``; code (``pre``, ``code``),
+    scripts and styles are not prose.  Everything else (the sidebar, the ``<title>``, links,
+    captions, paragraphs) must not show TeX delimiters.
+
+    Parameters
+    ----------
+    page : str
+        An HTML page.
+
+    Returns
+    -------
+    list of str
+        One snippet of text around each raw ``\(`` or ``\[`` (empty: none).
+
+    Examples
+    --------
+    >>> raw_tex(r'<p>Lesson 5: <span class="math notranslate nohighlight">\(s\)</span></p>')
+    []
+    >>> raw_tex(r'<a class="reference">Lesson 5: \(s\), \(R\)</a><pre>x = "\(a\)"</pre>')
+    ['Lesson 5: \\(s\\), \\(R\\)']
+    """
+    parser = _TextOutsideMath()
+    parser.feed(page)
+    parser.close()
+    return parser.found
+
+
+def raw_tex_problems(site: Path) -> list[str]:
+    """Every page of the built site with raw TeX outside math, one line per page.
+
+    Parameters
+    ----------
+    site : pathlib.Path
+        The built site.
+
+    Returns
+    -------
+    list of str
+    """
+    problems = []
+    for path in sorted(site.rglob("*.html")):
+        found = raw_tex(path.read_text(encoding="utf-8", errors="replace"))
+        if found:
+            problems.append(f"{path.relative_to(site)}: {len(found)} raw TeX outside math, "
+                            f"e.g. {found[0]!r}")
+    return problems
 
 
 def stored_images(notebook: Path) -> int:
@@ -118,23 +214,26 @@ def main(argv: list[str]) -> int:
         Exit status: 0 when the site shows everything (or no browser is available), 1 otherwise.
     """
     site = (Path(argv[0]) if argv else HERE / "_build" / "html").resolve()
+    tex = raw_tex_problems(site)              # no browser needed
+    for line in tex:
+        print(f"check_site: {line}", file=sys.stderr)
     try:
         import playwright.sync_api  # noqa: F401
     except ImportError:
         print("check_site: playwright is not installed; the site was not opened in a browser")
-        return 0
+        return 1 if tex else 0
     if not Path(CHROMIUM).exists():
         print("check_site: chromium not found; the site was not opened in a browser")
-        return 0
+        return 1 if tex else 0
     sys.path.insert(0, str(ROOT))
     t0 = time.perf_counter()
-    problems = check(site)
-    for line in problems:
+    problems = tex + check(site)
+    for line in problems[len(tex):]:
         print(f"check_site: {line}", file=sys.stderr)
     if problems:
         return 1
-    print(f"check_site: index, gallery, an API page and every lesson open in chromium with every "
-          f"figure and equation shown ({time.perf_counter() - t0:.1f} s)")
+    print(f"check_site: no raw TeX on any page; index, gallery, an API page and every lesson open in "
+          f"chromium with every figure and equation shown ({time.perf_counter() - t0:.1f} s)")
     return 0
 
 

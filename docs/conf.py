@@ -45,7 +45,7 @@ extensions = [
 
 root_doc = "index"
 exclude_patterns = ["_build", "equations_index.py", "thesis_equation_labels.txt", "site_sources.py", "check_site.py",
-                    "scenes.md", "**/.ipynb_checkpoints"]
+                    "plain_titles.py", "_static", "scenes.md", "**/.ipynb_checkpoints"]
 source_suffix = {".md": "myst-nb", ".ipynb": "myst-nb"}
 
 # --- lessons: stored outputs, never executed here -------------------------------------------
@@ -85,6 +85,9 @@ if (HERE / "_gen" / "_static" / "mathjax" / "tex-svg.js").exists():
     }
 else:
     html_static_path: list[str] = []
+# the site's own style (docs/_static): code outputs wrap, code scrolls, nothing runs out of its box
+html_static_path = [*html_static_path, "_static"]
+html_css_files = ["planargeo.css"]
 html_show_sourcelink = False
 
 
@@ -132,4 +135,9 @@ def _module_sections_to_rubrics(app, what, name, obj, options, lines):
 
 
 def setup(app):
+    from plain_titles import plain_titles   # docs/plain_titles.py
+
     app.connect("autodoc-process-docstring", _module_sections_to_rubrics, priority=400)
+    # after Sphinx has collected the titles (priority 500): their copies in the sidebar, the
+    # <title> and the prev / next links read Unicode, not raw TeX (the heading keeps its math)
+    app.connect("doctree-read", plain_titles, priority=900)

@@ -94,3 +94,60 @@ def test_the_site_carries_its_own_mathjax(tmp_path):
     js = tmp_path / "_static" / "mathjax" / "tex-svg.js"
     assert js in written and js.stat().st_size > 500_000
     assert (tmp_path / "_static" / "mathjax" / "input" / "tex" / "extensions" / "ams.js") in written
+
+
+# ---------------------------------------------------------------- issue 22: no raw TeX on the site
+_spec2 = importlib.util.spec_from_file_location("check_site", ROOT / "docs" / "check_site.py")
+check_site = importlib.util.module_from_spec(_spec2)
+_spec2.loader.exec_module(check_site)
+sys.path.insert(0, str(ROOT / "docs"))
+try:
+    import plain_titles
+finally:
+    sys.path.remove(str(ROOT / "docs"))
+
+
+def test_raw_tex_is_found_outside_math_only():
+    sidebar = ('<li class="toctree-l1"><a class="reference internal" href="05.html">Lesson 5 — '
+               'Subspace decompositions: \\(s\\), \\(R\\), \\(T\\) and \\(U\\)</a></li>')
+    found = check_site.raw_tex(sidebar)
+    assert len(found) == 1 and "decompositions: \\(s\\), \\(R\\)" in found[0]
+    page = ('<title>Lesson: \\(s\\)</title><h1>Lesson <span class="math notranslate nohighlight">'
+            '\\(s\\)</span></h1><div class="math notranslate nohighlight">\\[a = b\\]</div>'
+            '<pre>print("\\(x\\)")</pre><script>var t = "\\(y\\)";</script><p>done</p>')
+    assert check_site.raw_tex(page) == ["Lesson: \\(s\\)"]        # the <title> is text a reader sees
+    assert check_site.raw_tex(page.replace("<title>Lesson: \\(s\\)</title>", "")) == []
+
+
+def test_titles_lose_their_math_in_the_navigation_only():
+    from docutils import nodes
+
+    toc = nodes.bullet_list("", nodes.list_item("", nodes.paragraph(
+        "", "", nodes.Text("Lesson 5 — Subspace decompositions: "), nodes.math("", "s"),
+        nodes.Text(", "), nodes.math("", "R"), nodes.Text(", "), nodes.math("", "T"),
+        nodes.Text(" and "), nodes.math("", "U"))))
+    plain_titles.plain_math(toc)
+    assert not list(toc.findall(nodes.math))
+    assert toc.astext() == "Lesson 5 — Subspace decompositions: s, R, T and U"
+
+
+def test_the_built_site_shows_no_raw_tex():
+    """On the site as built (``make docs``): no page shows ``\\(`` outside math."""
+    site = ROOT / "docs" / "_build" / "html"
+    if not (site / "index.html").exists():
+        pytest.skip("the site is not built (make docs)")
+    assert check_site.raw_tex_problems(site) == []
+
+
+def test_code_outputs_wrap_or_scroll():
+    """The site's style keeps code and its printed output inside their boxes."""
+    import ast
+
+    css = (ROOT / "docs" / "_static" / "planargeo.css").read_text(encoding="utf-8")
+    assert re.search(r"div\.cell_output pre[^{]*\{[^}]*white-space:\s*pre-wrap", css, re.S)
+    assert re.search(r"div\.highlight pre[^{]*\{[^}]*overflow-x:\s*auto", css, re.S)
+    conf = ast.parse((ROOT / "docs" / "conf.py").read_text(encoding="utf-8"))
+    names = {t.id for node in ast.walk(conf) if isinstance(node, ast.Assign) for t in node.targets
+             if isinstance(t, ast.Name)}
+    assert {"html_css_files", "html_static_path"} <= names
+    assert "planargeo.css" in (ROOT / "docs" / "conf.py").read_text(encoding="utf-8")
