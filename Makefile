@@ -57,9 +57,23 @@ browser:
 	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null; \
 	  else echo "not found and cannot be installed:$$missing (browser test / MP4 export will be skipped)"; fi; fi
 
-# Voila runs the app notebook and shows only its outputs; 127.0.0.1 only.
+# Voila runs the app notebook and shows only its outputs, one kernel (Python process) per visitor;
+# app/config/voila.py sets the seat limit and idle culling (docs/serving.md).
+#   APP_IP        127.0.0.1 (this computer only); any other address (0.0.0.0: every network of this
+#                 computer, e.g. a classroom's) also turns on a fresh random token, printed in the URL
+#   APP_VISITORS  seats: visitor APP_VISITORS + 1 gets "The class is full" (0: no limit); the default
+#                 is k_max of benchmarks/results/classroom.md on a 2-core, 24 GiB machine
+#   APP_IDLE      seconds without activity (drag, slider, Play) after which a visitor's seat is freed
+#   APP_TOKEN     --token to ask for a token on 127.0.0.1 too
+APP_IP       ?= 127.0.0.1
+APP_PORT     ?= 8866
+APP_VISITORS ?= 8
+APP_IDLE     ?= 900
+APP_TOKEN    ?= $(if $(filter 127.0.0.1 localhost ::1,$(APP_IP)),,--token)
 app: $(STAMP)
-	$(BIN)/voila app/planargeo-app.ipynb --Voila.ip=127.0.0.1 --port=8866 --theme=light --no-browser
+	$(BIN)/voila app/planargeo-app.ipynb --Voila.ip=$(APP_IP) --port=$(APP_PORT) --theme=light --no-browser \
+	  $(APP_TOKEN) --Voila.config_file_paths=app/config \
+	  --ClassroomKernelManager.max_kernels=$(APP_VISITORS) --MappingKernelManager.cull_idle_timeout=$(APP_IDLE)
 
 screens: $(STAMP) browser
 	MPLBACKEND=Agg PLANARGEO_UPDATE_SCREENS=1 $(BIN)/python -m pytest -p no:randomly -q tests/browser/test_browser_explorers.py -k in_the_app

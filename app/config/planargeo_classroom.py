@@ -10,7 +10,8 @@ no limit of its own.  Two pieces, wired in by ``app/config/voila.py``:
   rendered: when every seat is taken it answers with :data:`FULL_PAGE` (HTTP 503,
   ``Retry-After``) and nothing is started; otherwise it takes a seat for that visitor.
 
-Seats come back when a visitor closes the page (Voila shuts the kernel down) or when
+Seats come back when a visitor closes the page (Voila's page asks for its kernel to be
+shut down; the hook sets the ``_xsrf`` cookie that request needs) or when
 the kernel is culled after ``MappingKernelManager.cull_idle_timeout`` seconds without
 activity (set in ``voila.py``; ``make app APP_IDLE=...``).
 """
@@ -108,6 +109,10 @@ def turn_away_when_full(req, notebook, cwd):
     km = req.kernel_manager
     admit = getattr(km, "admit", None)
     if admit is None or admit():
+        # Voila's page asks the server to shut its kernel down when the visitor leaves (a POST
+        # carrying the _xsrf cookie); Voila's notebook page never sets that cookie, so the POST is
+        # refused (403) and the seat stays taken until culled. Reading the token sets the cookie.
+        req.xsrf_token  # noqa: B018
         return notebook
     req.clear()
     req.set_status(503)
