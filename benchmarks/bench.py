@@ -77,7 +77,8 @@ QUICK_BATCH_SIZES = (1, 100, 1000)
 PEERS = ("pinocchio", "mujoco")
 #: groups of ``--only``; all but ``dynamics`` run a script of ``benchmarks/``
 SCRIPTS = {"breakdown": "breakdown.py", "widgets": "widget_latency.py", "integrators": "integrators.py",
-           "scenes": "scene_cost.py", "truncated": "truncated.py", "browser": "browser_latency.py"}
+           "scenes": "scene_cost.py", "truncated": "truncated.py", "browser": "browser_latency.py",
+           "classroom": "classroom.py"}
 GROUPS = ("dynamics",) + tuple(SCRIPTS)
 #: the exact (rational) reference up to this many coordinates, longdouble beyond (exact costs ~N^3 Fractions)
 EXACT_MAX = 5
@@ -87,7 +88,9 @@ OTHER_RESULTS = (("breakdown.md", "where each method breaks down (accuracy near 
                  ("integrators.md", "integrators: work–precision of ODE solvers, energy and constraint drift"),
                  ("scene_cost.md", "scene cost: what each scene computes and what modelling less saves"),
                  ("truncated.md", "truncated articulated recursion: speed against accuracy (10.2.2)"),
-                 ("browser_latency.md", "browser latency: slider and drag to the new picture in the page"))
+                 ("browser_latency.md", "browser latency: slider and drag to the new picture in the page"),
+                 ("classroom.md", "a classroom's load: k visitors of `make app`, memory per visitor, drag step "
+                                  "against k, the seat limit"))
 CHARTS = ("scaling", "work_precision", "speed_accuracy", "single_state", "batch")
 
 _T0 = time.perf_counter()
@@ -118,7 +121,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "benchmarks/widget_latency.py, 'integrators' benchmarks/integrators.py, "
                              "'scenes' benchmarks/scene_cost.py, 'truncated' benchmarks/truncated.py (truncated "
                              "articulated recursion), 'browser' benchmarks/browser_latency.py (JupyterLab in "
-                             "headless chromium) (these need a source checkout)")
+                             "headless chromium), 'classroom' benchmarks/classroom.py (k visitors of the app "
+                             "at once, in headless chromium) (these need a source checkout)")
 
 
 # --------------------------------------------------------------------------- timing
