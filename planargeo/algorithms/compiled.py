@@ -311,18 +311,23 @@ def warm(progress=None) -> list[tuple[str, float]]:
     Examples
     --------
     >>> [step for step, _ in warm()][:2]
-    ['forward dynamics, one state', 'forward dynamics, one state, external wrenches']
+    ['one-state kernels, forward and inverse', 'forward dynamics, one state']
     """
     from planargeo.mechanics.model import Body, Joint, Model
 
     model = Model([Body(1.0, (0.5, 0.0), 0.1), Body(1.0, (0.5, 0.0), 0.1), Body(0.5, (0.2, 0.0), 0.05)],
                   [Joint("revolute"), Joint("prismatic", (1.0, 0.0, 0.0)), Joint("fixed", (1.0, 0.0, 0.0))],
                   [-1, 0, 1])
-    k, tables = kernels_for(model)[:2]
+    if progress is not None:
+        progress("  one-state kernels, forward and inverse ...")
+    t = time.perf_counter()
+    k, tables = kernels_for(model)[:2]                  # compiles (or loads) the one-state kernels' one type
+    steps = [("one-state kernels, forward and inverse", time.perf_counter() - t)]
+    if progress is not None:
+        progress(f"  {steps[0][0]}: {steps[0][1]:.2f} s")
     nq, N, B = model.nq, model.N, 3
     one, fe1 = np.zeros(nq), np.zeros((N, 3))
     rows, feB = np.zeros((B, nq)), np.zeros((B, N, 3))
-    steps = []
     for what, run in [
             ("forward dynamics, one state", lambda: k.forward_dynamics_one(*tables, one, one, one, None)),
             ("forward dynamics, one state, external wrenches",
