@@ -281,7 +281,8 @@ def test_R_of_hand_values_and_errors():
 
 @pytest.mark.parametrize("make", [prismatic, twin_prismatic])
 def test_old_positional_order_fails_clearly(make):
-    """Issue 24: the point first for every joint; the old ``(direction, point)`` calls raise, never mean another joint."""
+    """Issue 24: the point first for every joint; the old ``(direction, point)`` calls raise, never mean
+    another joint."""
     for args in [((1.0, 1.0),), ((1.0, 0.0), (0.0, 3.0))]:
         with pytest.raises(errors.InputError, match=rf"{make.__name__} takes point= and direction= by name"):
             make(*args)

@@ -85,6 +85,7 @@ def test_simulate_is_also_the_subpackage():
     """``pg.simulate`` is callable and still the subpackage: its modules import as before, in any order."""
     code = ("import planargeo.simulate.loops as L, planargeo as pg, inspect; "
             "from planargeo.simulate import integrate; "
-            "print(L.__name__, pg.simulate.integrate is integrate, list(inspect.signature(pg.simulate).parameters)[:4])")
+            "print(L.__name__, pg.simulate.integrate is integrate, "
+            "list(inspect.signature(pg.simulate).parameters)[:4])")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "planargeo.simulate.loops True ['model', 'q0', 'qd0', 't_end']"
