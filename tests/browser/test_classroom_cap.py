@@ -17,7 +17,6 @@ import asyncio
 import json
 import re
 import time
-import urllib.error
 import urllib.request
 import uuid
 from pathlib import Path
@@ -132,3 +131,26 @@ def test_messages_from_the_page_cannot_execute_code(one_seat, tmp_path):
     assert "kernel_info_reply" in replies          # the channel works: allowed requests are answered
     assert "execute_reply" not in replies and "execute_input" not in replies
     assert not marker.exists()
+
+
+def test_make_app_passes_the_configuration_the_seats_and_a_token_off_loopback():
+    """``make app`` runs Voila with app/config (the seat limit tested above), and a token unless on 127.0.0.1."""
+    import shlex
+    import subprocess
+    import sys
+
+    root = Path(__file__).resolve().parents[2]
+
+    def dry(*extra):
+        out = subprocess.run(["make", "-s", "-n", "app", f"BIN={Path(sys.executable).parent}", "STAMP=Makefile",
+                              *extra], cwd=root, capture_output=True, text=True, check=True).stdout
+        return shlex.split(out.replace("\\\n", " "))
+
+    local = dry()
+    assert "--Voila.config_file_paths=app/config" in local
+    assert (root / "app" / "config" / "voila.py").is_file()
+    assert "--Voila.ip=127.0.0.1" in local and "--token" not in local
+    lan = dry("APP_IP=0.0.0.0", "APP_VISITORS=3", "APP_IDLE=60")
+    assert "--Voila.ip=0.0.0.0" in lan and "--token" in lan
+    assert "--ClassroomKernelManager.max_kernels=3" in lan
+    assert "--MappingKernelManager.cull_idle_timeout=60" in lan
