@@ -82,7 +82,7 @@ ARRIVAL_S = 2.0
 
 # --------------------------------------------------------------------------- the server
 def serve_app(tmp: Path, seats: int = 0, idle: float | None = None,
-              notebook: Path = APP) -> VoilaServer:
+              notebook: Path = APP, cull_interval: float | None = None) -> VoilaServer:
     """Voila on ``notebook`` with the app's configuration (``app/config/voila.py``), 127.0.0.1 only.
 
     Parameters
@@ -95,6 +95,8 @@ def serve_app(tmp: Path, seats: int = 0, idle: float | None = None,
         ``MappingKernelManager.cull_idle_timeout`` in seconds (default: the app's).
     notebook : Path
         The notebook served (default: the app).
+    cull_interval : float, optional
+        ``MappingKernelManager.cull_interval`` in seconds (default: the app's).
     """
     cfg = tmp / "config"
     cfg.mkdir(parents=True, exist_ok=True)
@@ -103,6 +105,8 @@ def serve_app(tmp: Path, seats: int = 0, idle: float | None = None,
              f"c.ClassroomKernelManager.max_kernels = {int(seats)}"]
     if idle is not None:
         lines.append(f"c.MappingKernelManager.cull_idle_timeout = {float(idle)!r}")
+    if cull_interval is not None:
+        lines.append(f"c.MappingKernelManager.cull_interval = {float(cull_interval)!r}")
     (cfg / "voila.py").write_text("\n".join(lines) + "\n")
     return VoilaServer(notebook, tmp)
 

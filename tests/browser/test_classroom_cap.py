@@ -17,6 +17,7 @@ import asyncio
 import json
 import re
 import time
+import urllib.error
 import urllib.request
 import uuid
 from pathlib import Path
@@ -31,6 +32,16 @@ pytestmark = pytest.mark.browser
 SLIDER = "import ipywidgets as w\nw.IntSlider(value=3, description='seat test')"
 
 
+def _seat_notebook(tmp_path) -> Path:
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_code_cell(SLIDER)]
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+    root = tmp_path / "nb"
+    root.mkdir()
+    nbformat.write(nb, root / "seat.ipynb")
+    return root / "seat.ipynb"
+
+
 @pytest.fixture()
 def one_seat(tmp_path):
     if not Path(CHROMIUM).exists():
@@ -38,15 +49,36 @@ def one_seat(tmp_path):
     pytest.importorskip("playwright.sync_api", reason="playwright is not installed")
     from classroom import serve_app
 
-    nb = nbformat.v4.new_notebook()
-    nb.cells = [nbformat.v4.new_code_cell(SLIDER)]
-    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
-    root = tmp_path / "nb"
-    root.mkdir()
-    nbformat.write(nb, root / "seat.ipynb")
-    server = serve_app(tmp_path, seats=1, notebook=root / "seat.ipynb")
+    server = serve_app(tmp_path, seats=1, notebook=_seat_notebook(tmp_path))
     try:
         yield server
+    finally:
+        server.stop()
+
+
+def _status(url: str) -> int:
+    try:
+        with urllib.request.urlopen(url, timeout=45) as r:
+            r.read()
+            return r.status
+    except urllib.error.HTTPError as e:
+        return e.code
+
+
+def test_an_idle_visitor_seat_is_culled_and_comes_back(tmp_path):
+    """With 1 seat and a 3-s idle time: visitor 1 in, visitor 2 turned away, then (culled) let in."""
+    from classroom import serve_app
+
+    server = serve_app(tmp_path, seats=1, idle=3, cull_interval=1, notebook=_seat_notebook(tmp_path))
+    try:
+        url = server.url + "/"
+        assert _status(url) == 200           # a kernel, the seat taken (no page keeps it busy)
+        assert _status(url) == 503
+        deadline = time.monotonic() + 30
+        while (got := _status(url)) == 503 and time.monotonic() < deadline:
+            time.sleep(1.0)
+        assert got == 200, "the idle kernel was not culled"
+        assert "Culling 'idle' kernel" in Path(server.log.name).read_text()
     finally:
         server.stop()
 
