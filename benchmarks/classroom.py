@@ -549,6 +549,8 @@ def chart(results: list[dict], v: dict) -> bytes:
     a.axhline(FULL_P90_MS, color="0.5", lw=0.8)
     a.text(ks[0], FULL_P90_MS * 1.08, "full: p90 > 1 s", fontsize=8, color="0.35")
     a.set_yscale("log")
+    top = max([FULL_P90_MS] + [r["drag_p90_ms"] or 0 for r in results])
+    a.set_ylim(top=top * 2)
     a.set_xlabel("visitors k")
     a.set_ylabel("drag step (ms)")
     a.set_title("Drag step: mouse move to new picture", fontsize=10)
@@ -561,6 +563,8 @@ def chart(results: list[dict], v: dict) -> bytes:
     b.legend(fontsize=8)
     for ax in (a, b):
         ax.axvline(v["k_max"], color="tab:green", lw=0.8)
+        ax.text(v["k_max"], 0.02, " measured k_max", color="tab:green", fontsize=8,
+                transform=ax.get_xaxis_transform())
         ax.set_xticks(ks)
     fig.tight_layout()
     buf = io.BytesIO()
