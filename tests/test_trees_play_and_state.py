@@ -42,8 +42,6 @@ def test_play_runs_a_minute_from_the_default_with_the_drifts_it_states():
     assert np.abs(closure_residual(m, q)).max() <= max(r["closure drift |φ|"], 1e-10)
     assert r["closure drift |φ|"] < 1e-9
     assert not r["singular poses"].startswith("none")         # the default motion passes flat loops
-    fresh = TreeExplorer(display="agg", **ex.values)
-    assert fresh.readout_values == r
 
 
 def test_one_state_per_set_of_controls_issue_23_item_6():

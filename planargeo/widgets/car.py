@@ -26,7 +26,7 @@ the tyre forces follow (6.133: they grow with ``ω²``).  The default drive is
 zero (the car goes round at constant speed).  Play ends at one of two stated
 events, each at its exact time: the car stops (a braking drive), or the
 acceleration of its centre of gravity reaches what the tyres hold, ``μ·g``
-(the friction control ``μ``): there the car slides out, and the message and
+(the friction control ``μ``): there the car slides out, and the figure and
 the readout say so.  The readout shows the kinetic energy
 (:func:`planargeo.simulate.energy`), the drive's power and ``dK/dt``: equal,
 since the tyre forces do no work.
@@ -57,6 +57,8 @@ HALF_TRACK, OVERHANG, TYRE = 0.8, 0.7, 0.35
 SPEED, RADIUS, DRIVE, EPS = "speed (m/s)", "turn radius (m)", "drive force (N)", "COM behind front (ε)"
 HEADING = "heading (deg)"
 FRICTION = "tyre friction μ"
+#: the figure's banner once the tyres reach their limit
+SLIDES = "the car slides out: its tyres reach μ·g"
 #: gravity (m/s²): the tyres hold a horizontal acceleration of at most μ·G_ROAD at the centre of gravity
 G_ROAD = 9.81
 
@@ -244,6 +246,8 @@ class CarExplorer(Explorer):
                          (self.front, "tyre force R₂μ₂ (front)"), (self.drive, "drive force f_A"),
                          (self.bias, "bias force p"), (self.T_line, "active force line T")):
             art.set_label(key)
+        self.banner = ax.text(0.02, 0.98, "", transform=ax.transAxes, ha="left", va="top", fontsize=LABEL_PT + 1.5,
+                              color="#7a3d00", fontweight="bold", zorder=20)
         self.scale_bar = ScaleBar(ax, fontsize=LABEL_PT + 1.5)          # in the margin, under the axes
         self.labels = LabelPlacer(ax, size=16, fontsize=LABEL_PT + 1.5)
         self._shown_labels = []
@@ -263,8 +267,8 @@ class CarExplorer(Explorer):
         -------
         dict
             ``res`` (the scene), ``ke`` (kinetic energy), ``acc`` (the acceleration of
-            the centre of gravity) and ``limit`` (μ·g, what the tyres hold); past it
-            a ``message`` says that the car slides out.
+            the centre of gravity), ``limit`` (μ·g, what the tyres hold) and ``slides``
+            (the limit reached: the car slides out, said on the figure and in the readout).
 
         Raises
         ------
@@ -280,11 +284,7 @@ class CarExplorer(Explorer):
                           outlines=False)   # the outlines are drawn by gallery Fig 6.6, not here
         ke = float(energy(res.model, [0.0], [V / d])[0])
         acc, limit = grip(res, float(v[FRICTION]))
-        st = {"res": res, "ke": ke, "acc": acc, "limit": limit, "message": ""}
-        if acc >= limit * (1 - 1e-9):
-            st["message"] = (f"the car slides out: G accelerates at {acc:.3g} m/s², "
-                             f"what the tyres hold at most (μ·g = {limit:.3g} m/s²)")
-        return st
+        return {"res": res, "ke": ke, "acc": acc, "limit": limit, "slides": acc >= limit * (1 - 1e-9)}
 
     def play_step(self, values: dict, dt: float):
         """One Play step: the car drives ``dt`` seconds further round the turn (exact for any ``dt``).
@@ -489,6 +489,7 @@ class CarExplorer(Explorer):
             self.ax.set_ylim(*box[2:])
         self.ax.apply_aspect()
         self.scale_bar.update()
+        self.banner.set_text(SLIDES if st["slides"] else "")
         self._label(st, box, cg, icr)
         mu = q["mu"]
         omega, wdot = p["omega"], q["omega_dot"]
@@ -504,7 +505,7 @@ class CarExplorer(Explorer):
             "steering angle": math.degrees(x["steer"]),
             "acceleration of G": st["acc"],
             "friction limit μ·g": st["limit"],
-            "tyres": ("slide: the car slides out" if st["acc"] >= st["limit"] * (1 - 1e-9)
+            "tyres": ("slide: the car slides out" if st["slides"]
                       else f"hold ({100 * st['acc'] / st['limit']:.0f}% of μ·g used)"),
             "kinetic energy K": st["ke"],
             "drive power": power,
@@ -530,6 +531,7 @@ class CarExplorer(Explorer):
             "acceleration of G": "acceleration of the centre of gravity, r_G √(ω⁴ + ω̇²)",
             "friction limit μ·g": "the largest acceleration the tyres hold (friction coefficient μ times g)",
             "tyres": "whether the tyres hold the car on its circle, and how much of μ·g it uses",
+            SLIDES: "the acceleration G needs reaches μ·g, what the tyres hold: the car slides out",
             "kinetic energy K": "½ vᵀ I v of the car turning about the ICR (section 1.9)",
             "drive power": "power of the drive force f_A: its moment about the ICR times ω (6.120)",
             "rate of change of K": "dK/dt = I_ICR ω ω̇: equal to the drive power (the tyre forces do no work)",

@@ -58,6 +58,8 @@ _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 INITIAL = ("crank angle (deg)", "crank speed", "drive", "rod length", "gravity")
 #: scene seconds between the checkpoints of a run
 CHECKPOINT = 0.02
+#: end of the time slider (s): Play runs a minute; the state at t costs an integration from 0 to t
+T_END = 60.0
 
 
 def symbol_text(sym: str) -> str:
@@ -396,7 +398,7 @@ class SliderCrankExplorer(Explorer):
             "crank angle (deg)": Step(-180, 180, 1, 23.0,
                                       "crank angle ψ at t = 0 (°)").make("crank angle (deg)"),
             "crank speed": Step(-100, 100, 0.5, 20.0, "crank speed ψ̇ at t = 0 (rad/s)").make("crank speed"),
-            "t (s)": Step(0.0, 600.0, 0.001, 0.0, "t (s)").make("t (s)"),
+            "t (s)": Step(0.0, T_END, 0.001, 0.0, "t (s)").make("t (s)"),
             "drive": W.ToggleButtons(options=("free", "constant-speed"), value="free", description="crank"),
             "rod length": Step(1.0, 8.0, 0.01, 5.0, "rod length l (m)").make("rod length"),
             "gravity": Step(0.0, 20.0, 0.01, 9.81, "g (m/s²)").make("gravity"),
@@ -636,7 +638,9 @@ class SliderCrankExplorer(Explorer):
         mids = [0.5 * pin, 0.5 * (pin + wrist), wrist + np.array([0.0, t])]
         for lab, m in zip(self.body_labels, mids):
             lab.xy = tuple(m)
-        for lab, p in zip(self.joint_labels, (np.zeros(2), pin, wrist)):
+        # the joint angles are labelled a little way along their links, not on the pins, where the pin
+        # forces' labels go: the labels spread out instead of piling up at the pins
+        for lab, p in zip(self.joint_labels, (0.3 * pin, pin + 0.2 * (wrist - pin), wrist + np.array([0.0, 1.4 * t]))):
             lab.xy = tuple(p)
         obstacles = [pin_box(ax, p) for p in (np.zeros(2), pin, wrist)]
         items = [(g.text, g.foot) for g in self.glyphs.values()]
@@ -704,9 +708,16 @@ class SliderCrankExplorer(Explorer):
             "configuration": "dead centre when the crank is in line with the rod (the loop cannot pass a force)",
             "last dead centre passed": "the last dead centre the crank turned through, and when",
             "1": "body 1, the crank", "2": "body 2, the rod", "3": "body 3, the piston",
-            "v₁ … v₃": "velocity poles: the point about which each body turns at this instant (section 4.5)",
-            "a₁ … a₃": "acceleration poles: the point of each body with no acceleration (section 4.6)",
-            "pole far away (↗ v₂)": "a pole beyond the view: the arrow points to it, its name beside",
+            "v₁": "velocity pole of the crank: the point it turns about now (section 4.5)",
+            "v₂": "velocity pole of the rod (section 4.5)",
+            "v₃": "velocity pole of the piston: at infinity, it slides (section 4.5)",
+            "a₁": "acceleration pole of the crank: its point without acceleration (section 4.6)",
+            "a₂": "acceleration pole of the rod (section 4.6)",
+            "a₃": "acceleration pole of the piston: at infinity, it slides (section 4.6)",
+            "at top dead centre": "the crank points up, in line with the rod: a push on the piston cannot turn it",
+            "at bottom dead centre": "the crank points down, in line with the rod",
+            "passing top dead centre": "the crank is turning through the top dead centre",
+            "passing bottom dead centre": "the crank is turning through the bottom dead centre",
         }
 
     def disabled(self, values):

@@ -9,14 +9,21 @@ on body ``i`` from its parent, 9.41 for the open tree) and the contact forces.
 A *focus* on one of them draws it bold and labelled, fades the others and
 zooms to its joint.
 
-*Play* integrates the mechanism through :func:`planargeo.simulate.loops.simulate_loops`
-(:func:`planargeo.scenes.trees.tree_advance`, one call per frame, the scene time
-``t`` a control of its own); the readout shows the energy and its drift since
-``t = 0``, the closure drift ``|φ|`` and the near-singular configurations met.
+*Play* advances the scene time ``t`` (a control of its own); the state at ``t``
+is integrated from ``t = 0`` with :func:`planargeo.scenes.trees.tree_advance`
+from checkpoint to checkpoint, so that the controls alone decide it.  With
+equal links the loop 5-6-8-9 is a rhombus that lies flat now and then; the
+motion is carried through those singular poses (counted in the readout).  The
+default lets the links coast without gravity (raise ``g`` to see them fall:
+the integration then costs about ten times more).  The readout shows the
+energy and its drift since ``t = 0`` and the closure drift ``|φ|`` (the largest
+gap the integration opened at a pin).
 
 Handles: drag the tip of body 1 (its angle about the pivot) or the tip of body 2
-(its angle); the loops are closed again around the dragged bodies
-(:func:`planargeo.scenes.trees.tree_pose`).  A pose whose loops cannot close is
+(its angle).  The pose at ``t = 0`` follows from the two angles alone
+(:func:`planargeo.scenes.trees.tree_pose`: the Fig 9.2 pose turned, then body 2
+turned to its angle with the loops closed step by step), so one pair of angles
+gives one pose whatever the history; a pose whose loops cannot close is
 refused: the last good state stays and the message names the reason.
 """
 from __future__ import annotations
@@ -56,6 +63,8 @@ DEFAULT_G, DEFAULT_SPEED = 0.0, 0.25
 PLAY_RTOL = 1e-7
 #: seconds between the checkpoints of a run (the state at t is integrated from the last one before t)
 CHECKPOINT = 0.05
+#: end of the time slider (s): Play runs a minute; the state at t costs an integration from 0 to t
+T_END = 60.0
 
 
 class TreeExplorer(Explorer):
@@ -104,7 +113,7 @@ class TreeExplorer(Explorer):
         -------
         dict
         """
-        t = Step(0.0, 600.0, 0.01, 0.0, "t (s)").make("t (s)")
+        t = Step(0.0, T_END, 0.01, 0.0, "t (s)").make("t (s)")
         t.disabled = True                     # set by Play
         return {
             "speed": Step(-3, 3, 0.05, DEFAULT_SPEED, "speed (rad/s)").make("speed"),
@@ -488,9 +497,10 @@ class TreeExplorer(Explorer):
             "largest |q̈ᵢ|": "largest joint acceleration of the nine joints (9.43, 9.75)",
             "singular poses": "poses passed where BᵀGΛ⁻¹GᵀB (9.70) loses rank: a loop lies flat on one line",
             "1 … 9": "body numbers of Fig 9.1",
-            "v₁ … v₉": "velocity poles: the point about which each body turns at this instant (section 4.5)",
-            "a₁ … a₉": "acceleration poles: the point of each body with no acceleration (section 4.6)",
         }
+        for i in range(N):
+            out[f"v{_SUB[i + 1]}"] = f"velocity pole of body {i + 1}: the point it turns about now (section 4.5)"
+            out[f"a{_SUB[i + 1]}"] = f"acceleration pole of body {i + 1}: its point without acceleration (4.6)"
         for i in range(N):
             out[symbol_text(f"f_{i + 1}")] = (f"pin force of joint {i + 1}: the wrench on body {i + 1} from its "
                                               "parent (9.61; 9.41 for the open tree)")
