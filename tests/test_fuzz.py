@@ -142,7 +142,7 @@ def _failed(tallies, outcome=None) -> dict:
 
 
 def test_clean_explorer_has_no_failure():
-    tallies = fuzz_explorers(40, seed=3, classes={"_Plain": _Plain})
+    tallies = fuzz_explorers(40, seed=3, hostile_share=0.4, classes={"_Plain": _Plain})
     assert sum(t.calls for t in tallies.values()) >= 40
     assert not _failed(tallies)
     assert tallies["_Plain.fresh"].counts[OK] >= 3

@@ -143,8 +143,25 @@ def note_refusal(tally: Tally, r: Result, keep: int = 3) -> None:
 
 @contextlib.contextmanager
 def time_limit(seconds: float):
-    """Raise :class:`Hang` in the main thread after ``seconds`` (SIGALRM; POSIX)."""
+    """Raise :class:`Hang` in the main thread after ``seconds`` (SIGALRM; POSIX).
+
+    An alarm raised where Python swallows exceptions (a garbage-collector callback) is raised
+    again every 0.5 s, and a block that ends after its alarm fired raises :class:`Hang` at its
+    end: a call past its limit is always a hang.
+
+    >>> import time
+    >>> try:
+    ...     with time_limit(0.05):
+    ...         time.sleep(1)
+    ... except Hang as e:
+    ...     print(e)
+    no answer within 0.05 s
+    """
+    fired = []
+
     def alarm(signum, frame):
+        fired.append(True)
+        signal.setitimer(signal.ITIMER_REAL, 0.5)
         raise Hang(f"no answer within {seconds:g} s")
 
     old = signal.signal(signal.SIGALRM, alarm)
@@ -154,6 +171,8 @@ def time_limit(seconds: float):
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, old)
+    if fired:
+        raise Hang(f"no answer within {seconds:g} s")
 
 
 def _numbers(x, depth=0, seen=None):
