@@ -251,3 +251,18 @@ def test_a_revolute_joint_has_no_direction_to_turn(ex):
     assert ex.readout_values == before
     ex.set(joint="prismatic")
     assert "joint angle" not in ex.disabled(ex.values)
+
+
+def test_the_view_holds_every_handle_and_depends_on_the_values_only(ex):
+    # a 4 N force at the right edge pointing right: its tip at x = 3.4 + 4 · ARROW / 2 = 4.4
+    ex.set(**{"force x": 3.4, "force y": 1.9, "force angle": 0.0, "F": 4.0})
+    tip = ex.handles()[3].where()
+    assert tip == pytest.approx((4.4, 1.9))
+    (x0, x1), (y0, y1) = ex.ax.get_xlim(), ex.ax.get_ylim()
+    for x, y in ex.mechanism_points():
+        assert x0 < x < x1 and y0 < y < y1
+    fresh = SubspaceExplorer(display="agg", **ex.values)
+    assert fresh.ax.get_xlim() == (x0, x1) and fresh.ax.get_ylim() == (y0, y1)
+    assert fresh.readout_strings == ex.readout_strings
+    ex.reset()
+    assert ex.ax.get_xlim() == SubspaceExplorer(display="agg").ax.get_xlim()
