@@ -508,6 +508,7 @@ class Explorer:
         self._pending = False
         self._changed: set[str] = set()
         self._busy = False
+        self._resetting = False
         self._echo: dict[str, list] = {}
         self._shadow: dict[str, tuple[float, float]] = {}
 
@@ -622,6 +623,7 @@ class Explorer:
         self.connect_mouse()
         self._connect_handles()
         self._update(initial=True)
+        self.defaults = dict(self.values)  # as first shown (controls that follow others included)
 
     # ---------------------------------------------------------------- subclass API
     def make_controls(self) -> dict[str, W.ValueWidget]:  # pragma: no cover - abstract
@@ -935,11 +937,20 @@ class Explorer:
         return self
 
     def reset(self) -> None:
-        """Return every control to its default (one update)."""
-        with self.hold():
-            for k, v in self.defaults.items():
-                self.controls[k].value = v
-            self._pending = True
+        """Return every control to its default (one update).
+
+        The defaults are the values first shown, so they are taken even where a
+        control's range follows another control (its range is that of the state
+        reached).
+        """
+        self._resetting = True
+        try:
+            with self.hold():
+                for k, v in self.defaults.items():
+                    self.controls[k].value = v
+                self._pending = True
+        finally:
+            self._resetting = False
 
     def all_handles(self) -> list[Handle]:
         """:meth:`handles` and those added by :meth:`connect_drag`.
@@ -1702,7 +1713,8 @@ class Explorer:
         values = self.values
         try:
             for k in changed:
-                values[k] = check_control(k, self.controls[k], values[k])
+                if not (self._resetting and _same(values[k], self.defaults.get(k))):
+                    values[k] = check_control(k, self.controls[k], values[k])
         except InputError as exc:
             if initial:
                 raise
