@@ -305,3 +305,13 @@ def test_a_fresh_explorer_from_the_values_shows_the_same_after_a_history():
     e.reset()
     assert e.values == ConstructionExplorer(display="agg").values
     assert e.construction == "twist_sum" and e.readout_values["step"] == "3/3"
+
+
+def test_earlier_steps_control_is_disabled_at_step_one(ex):
+    assert "earlier" not in ex.disabled(ex.values)
+    ex.set(step=1)
+    assert "step 1" in ex.disabled(ex.values)["earlier"]
+    before = dict(ex.readout_values)
+    shown = [layer.get_visible() for layer in ex.layers]
+    ex.set(earlier="hidden")                    # indeed nothing changes: one step is shown
+    assert ex.readout_values == before and [layer.get_visible() for layer in ex.layers] == shown

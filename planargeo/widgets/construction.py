@@ -486,8 +486,8 @@ class ConstructionExplorer(Explorer):
         used = set(parameters(kind))
         title = CONSTRUCTIONS[kind][0].split(" (")[0].lower()
         out = {k: f"{title} has no such input" for k in self._all_params if k not in used}
-        if len(self.layers) <= 1:
-            out["earlier"] = "a one-step construction has no earlier steps"
+        if int(values["step"]) <= 1:
+            out["earlier"] = "step 1 has no earlier steps: move the step slider on"
         return out
 
     def explain(self):
