@@ -23,5 +23,9 @@ c.MappingKernelManager.cull_interval = 60
 c.MappingKernelManager.cull_connected = True
 c.MappingKernelManager.cull_busy = False
 
+# when many visitors open the page at once, the kernels' outputs reach Voila late; with the default 4 s
+# Voila stops waiting ("Timeout waiting for IOPub output") and the page comes up without some explorers
+c.VoilaExecutor.iopub_timeout = 60
+
 # never send a traceback to the page
 c.VoilaConfiguration.show_tracebacks = False
