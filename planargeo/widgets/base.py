@@ -59,10 +59,30 @@ What the base adds to every explorer (issue 13):
   ipympl a press within :attr:`Explorer.handle_radius_px` of one drags it, one
   update per mouse move, with no snapping to the sliders' grid and no echo of
   the sliders (a browser slider rounds a value to its step and sends it back:
-  that copy is ignored).  :meth:`Explorer.drag` does the same without a mouse.
+  that copy is ignored).  :meth:`Explorer.drag` goes through the same press,
+  moves and release without a mouse; the release draws the shown state again
+  (a view held still during the drag is fitted as a fresh explorer fits it).
 * **Play**: an explorer that defines :meth:`Explorer.play_step` gets a Play
   control with speed and loop; :meth:`Explorer.advance` steps it from Python.
-* **Focus and key**: :meth:`Explorer.focus_options` adds a ``"focus"`` dropdown;
+  Play runs at true real time × speed × :attr:`Explorer.time_scale` (the factor
+  is shown beside the speed menu when it is not 1): the wall clock sets the
+  simulated time, reached through ``play_step`` sub-steps of at most
+  ``1 / play_fps`` s (:mod:`planargeo.widgets.play`); only display frames drop.
+  Runs are bounded: ``advance`` and ``export_animation`` refuse, by name, a
+  count or duration that is not positive and finite or is beyond the stated
+  limit (``allow_long=True`` opts in); Ctrl-C keeps what was computed.
+* **Controls that say why not**: :meth:`Explorer.disabled` names the controls
+  that would change nothing now, with the reason; they are disabled, the
+  reason is their tooltip (the key too, when nothing drawn has an entry).
+* **What is shown**: :meth:`Explorer.explain` gives the meaning of every symbol
+  on screen, listed in a collapsible panel under the readout.
+* **Readable numbers** (:mod:`planargeo.widgets.readout`): units only after
+  numbers, one per component of a vector (a tuple in :attr:`Explorer.units`);
+  :func:`point_text` for points (ideal ones by ``is_ideal``).  A number typed
+  into a text field beyond :data:`TEXT_LIMIT`, or one that overflows inside
+  the computation, is refused in the package's words, naming the control.
+* **Focus and key**: :meth:`Explorer.focus_options` adds a ``"focus"`` dropdown
+  (its options read again after every update: a focus gone falls back to "all");
   every explorer has a ``"key"`` checkbox that shows a legend of the labelled
   artists.  Both are display controls.
 * **Export**: :meth:`Explorer.export_svg`, :meth:`Explorer.export_png`,
@@ -1314,7 +1334,7 @@ class Explorer:
         if format not in ("gif", "mp4"):
             raise InputError(f"format must be 'gif' or 'mp4', got {format!r}")
         frames = _play.check_count("frames", frames, _play.MAX_ANIMATION_FRAMES, allow_long)
-        fps = _play.check_count("fps", fps, 1000)
+        fps = _play.check_count("fps", fps, 1000, allow_long=None)
         if not self.has_play:
             raise InputError(f"{type(self).__name__} has no animation (it does not define play_step)")
         ffmpeg = shutil.which("ffmpeg")

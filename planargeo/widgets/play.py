@@ -47,7 +47,7 @@ MAX_ADVANCE_SECONDS = 3600.0
 MAX_ANIMATION_FRAMES = 1200
 
 
-def check_count(name: str, value: Any, limit: int, allow_long: bool = False) -> int:
+def check_count(name: str, value: Any, limit: int, allow_long: bool | None = False) -> int:
     """``value`` as a positive integer at most ``limit`` (unless ``allow_long``), or a named error.
 
     Parameters
@@ -58,8 +58,8 @@ def check_count(name: str, value: Any, limit: int, allow_long: bool = False) -> 
         The count.
     limit : int
         The largest count without ``allow_long``.
-    allow_long : bool
-        Opt in to counts beyond ``limit``.
+    allow_long : bool or None
+        Opt in to counts beyond ``limit`` (None: no opt-in, ``limit`` is final).
 
     Returns
     -------
@@ -82,8 +82,8 @@ def check_count(name: str, value: Any, limit: int, allow_long: bool = False) -> 
     if not isinstance(value, numbers.Integral) or isinstance(value, bool) or value < 1:
         raise InputError(f"{name} must be a positive integer, got {value!r}")
     if value > limit and not allow_long:
-        raise InputError(f"{name} must be at most {limit} (pass allow_long=True for a longer run), "
-                         f"got {value!r}")
+        opt_in = "" if allow_long is None else " (pass allow_long=True for a longer run)"
+        raise InputError(f"{name} must be at most {limit}{opt_in}, got {value!r}")
     return int(value)
 
 
