@@ -210,6 +210,16 @@ def _dash(role: str):
     return None
 
 
+_SPOT_ANGLES = np.deg2rad([45, 135, 225, 315, 0, 90, 180, 270])
+_SPOT_DIR = np.column_stack([np.cos(_SPOT_ANGLES), np.sin(_SPOT_ANGLES)])
+_SPOT_HA = ["left" if c > 0.3 else "right" if c < -0.3 else "center" for c in _SPOT_DIR[:, 0]]
+_SPOT_VA = ["bottom" if c > 0.3 else "top" if c < -0.3 else "center" for c in _SPOT_DIR[:, 1]]
+_ALIGN_X = {"left": 0.0, "center": 0.5, "right": 1.0}
+_ALIGN_Y = {"bottom": 0.0, "center": 0.5, "top": 1.0}
+_SPOT_FX = np.array([_ALIGN_X[a] for a in _SPOT_HA])
+_SPOT_FY = np.array([_ALIGN_Y[a] for a in _SPOT_VA])
+
+
 class Picture:
     """A picture under construction: a view and its elements (module docstring).
 
@@ -280,7 +290,7 @@ class Picture:
 
     def _add(self, id: str, role: str, symbol: str, desc: str, parts: list, *, color: str,
              width: float | None = None, dash=None, fill: str | None = None,
-             alpha: float = 1.0, z: int = 3) -> dict:
+             alpha: float = 1.0, z: int = 3, opacity: float = 1.0) -> dict:
         id = str(id)
         if id in self._ids:
             raise InputError(f"element id {id!r} is used twice in one picture")
@@ -288,7 +298,7 @@ class Picture:
         el = {"id": id, "role": role, "symbol": plain_text(symbol or ""), "desc": plain_text(desc or ""),
               "color": color, "width": round(width if width is not None else
                                              LINEWIDTHS.get(role, 1.3) * PX_PER_PT, 2),
-              "dash": dash, "fill": fill, "alpha": alpha, "z": z, "parts": parts}
+              "dash": dash, "fill": fill, "alpha": alpha, "z": z, "opacity": opacity, "parts": parts}
         self.elements.append(el)
         return el
 
@@ -627,40 +637,49 @@ class Picture:
 
     # ------------------------------------------------------------------ output
     def _place_labels(self) -> None:
-        """Move labels (among eight spots around their anchor) so that no two boxes overlap."""
+        """Move labels (among nine spots around their anchor) so that no two boxes overlap.
+
+        Labels are placed in drawing order, topmost first; each takes its asked spot, or
+        the first of eight spots around its anchor that meets no placed label and stays
+        in the plot area.  A label with no free spot hides (its element keeps its
+        description, shown on hover).
+        """
         ml, mr, mt, mb = self.margin
         pw, ph = self.size[0] - ml - mr, self.size[1] - mt - mb
-        placed: list[tuple[float, float, float, float]] = []
+        placed = np.zeros((0, 4))
+        h = 1.25 * FONT_PX
         for el in sorted(self.elements, key=lambda e: -e["z"]):
             for part in el["parts"]:
-                if part["p"] != "text" or part.get("fixed"):
+                if part["p"] != "text" or part.get("fixed") or not part["text"]:
                     continue
                 w = _CHAR_EM * FONT_PX * len(part["text"])
-                h = 1.25 * FONT_PX
-                q = self.to_px([part["x"], part["y"]])
-                dx, dy = part["dx"], part["dy"]
-                r = max(math.hypot(dx, dy), 6.0)
-                tries = [(dx, dy, part["ha"], part["va"])] + [
-                    (r * math.cos(a), r * math.sin(a),
-                     "left" if math.cos(a) > 0.3 else "right" if math.cos(a) < -0.3 else "center",
-                     "bottom" if math.sin(a) > 0.3 else "top" if math.sin(a) < -0.3 else "center")
-                    for a in np.deg2rad([45, 135, 225, 315, 0, 90, 180, 270])]
-                best, best_cost = tries[0], math.inf
-                for tx, ty, ha, va in tries:
-                    bx = q[0] + tx - (0 if ha == "left" else w if ha == "right" else w / 2)
-                    by = q[1] + ty - (0 if va == "bottom" else h if va == "top" else h / 2)
-                    box = (bx, by, bx + w, by + h)
-                    cost = sum(max(0.0, min(box[2], o[2]) - max(box[0], o[0])) *
-                               max(0.0, min(box[3], o[3]) - max(box[1], o[1])) for o in placed)
-                    cost += w * h * (max(0.0, -box[0]) + max(0.0, box[2] - pw) +
-                                     max(0.0, -box[1]) + max(0.0, box[3] - ph))
-                    if cost < best_cost - 1e-9:
-                        best, best_cost, best_box = (tx, ty, ha, va), cost, box
-                        if cost == 0.0:
-                            break
-                part["dx"], part["dy"], part["ha"], part["va"] = (round(best[0], 2), round(best[1], 2),
-                                                                  best[2], best[3])
-                placed.append(best_box)
+                qx = (part["x"] - self.box[0]) * self.kx
+                qy = (part["y"] - self.box[2]) * self.ky
+                r = max(math.hypot(part["dx"], part["dy"]), 6.0)
+                dx = np.r_[part["dx"], r * _SPOT_DIR[:, 0]]
+                dy = np.r_[part["dy"], r * _SPOT_DIR[:, 1]]
+                fx = np.r_[_ALIGN_X[part["ha"]], _SPOT_FX]     # box's left edge, in box widths
+                fy = np.r_[_ALIGN_Y[part["va"]], _SPOT_FY]
+                x0 = qx + dx - fx * w
+                y0 = qy + dy - fy * h
+                out = (np.maximum(0.0, -x0) + np.maximum(0.0, x0 + w - pw)
+                       + np.maximum(0.0, -y0) + np.maximum(0.0, y0 + h - ph)) * w * h
+                if len(placed):
+                    ox = np.clip(np.minimum(x0[:, None] + w, placed[None, :, 2])
+                                 - np.maximum(x0[:, None], placed[None, :, 0]), 0.0, None)
+                    oy = np.clip(np.minimum(y0[:, None] + h, placed[None, :, 3])
+                                 - np.maximum(y0[:, None], placed[None, :, 1]), 0.0, None)
+                    cost = out + (ox * oy).sum(axis=1)
+                else:
+                    cost = out
+                k = int(np.argmax(cost == 0.0)) if np.any(cost == 0.0) else int(np.argmin(cost))
+                if k:
+                    part["dx"], part["dy"] = round(float(dx[k]), 2), round(float(dy[k]), 2)
+                    part["ha"], part["va"] = _SPOT_HA[k - 1], _SPOT_VA[k - 1]
+                if cost[k] > 0.0:   # no free place: the label hides (the element keeps its hover text)
+                    part["hidden"] = True
+                    continue
+                placed = np.vstack([placed, [x0[k], y0[k], x0[k] + w, y0[k] + h]])
 
     def to_dict(self) -> dict[str, Any]:
         """The picture as plain JSON data (labels placed, numbers rounded to 1e-4 of the view).

@@ -58,6 +58,7 @@ def draw_picture(pic: dict, ax) -> None:
         ax.set_title(pic["title"], fontsize=TITLE_PT)
     for el in pic["elements"]:
         c, lw, z = el["color"], el["width"] / PX_PER_PT, el["z"]
+        op = el.get("opacity", 1.0)
         dashes = None if not el.get("dash") else [v / PX_PER_PT / lw for v in el["dash"]]
         for part in el["parts"]:
             kind = part["p"]
@@ -66,10 +67,10 @@ def draw_picture(pic: dict, ax) -> None:
                 if el.get("fill") or part["closed"]:
                     ax.add_patch(Polygon(xy, closed=part["closed"], facecolor=el.get("fill") or "none",
                                          edgecolor=c if c != "none" else "none", linewidth=lw,
-                                         alpha=el.get("alpha", 1.0), zorder=z, gid=el["id"]))
+                                         alpha=el.get("alpha", 1.0) * op, zorder=z, gid=el["id"]))
                 else:
                     (ln,) = ax.plot(xy[:, 0], xy[:, 1], color=c, linewidth=lw, zorder=z, gid=el["id"],
-                                    solid_capstyle="butt")
+                                    solid_capstyle="butt", alpha=op)
                     if dashes:
                         ln.set_dashes(dashes)
             elif kind == "ellipse":
@@ -77,32 +78,32 @@ def draw_picture(pic: dict, ax) -> None:
                 a, b, cc, d = part["m"]
                 (ln,) = ax.plot(part["x"] + a * np.cos(t) + b * np.sin(t),
                                 part["y"] + cc * np.cos(t) + d * np.sin(t), color=c, linewidth=lw,
-                                zorder=z, gid=el["id"])
+                                zorder=z, gid=el["id"], alpha=op)
                 if dashes:
                     ln.set_dashes(dashes)
             elif kind == "mark":
                 ax.plot([part["x"]], [part["y"]], linestyle="none", marker=_MARKERS[part["shape"]],
                         markersize=part["size"] / PX_PER_PT, color=c, markeredgecolor="white",
-                        markeredgewidth=0.6, zorder=z + 0.5, gid=el["id"])
+                        markeredgewidth=0.6, zorder=z + 0.5, gid=el["id"], alpha=op)
             elif kind == "glyph":
                 arc, head = arc_glyph(part["r"], part["ccw"])
                 ax.plot(part["x"] + arc[:, 0] / kx, part["y"] + arc[:, 1] / ky, color=c, linewidth=1.2,
-                        zorder=z, gid=el["id"])
+                        zorder=z, gid=el["id"], alpha=op)
                 ax.add_patch(Polygon(np.column_stack([part["x"] + head[:, 0] / kx,
                                                       part["y"] + head[:, 1] / ky]),
-                                     closed=True, color=c, zorder=z, gid=el["id"]))
+                                     closed=True, color=c, zorder=z, gid=el["id"], alpha=op))
             elif kind == "arrow":
                 tip = (part["x"] + part["dx"] / kx, part["y"] + part["dy"] / ky)
                 ax.annotate("", xy=tip, xytext=(part["x"], part["y"]), zorder=z + 0.5,
-                            arrowprops=dict(arrowstyle="-|>", color=c, linewidth=1.4,
+                            arrowprops=dict(arrowstyle="-|>", color=c, linewidth=1.4, alpha=op,
                                             mutation_scale=9, shrinkA=0, shrinkB=0))
-            elif kind == "text":
+            elif kind == "text" and not part.get("hidden"):
                 ax.annotate(part["text"], (part["x"], part["y"]),
                             xytext=(part["dx"] / PX_PER_PT, part["dy"] / PX_PER_PT),
                             textcoords="offset points", ha=part["ha"],
                             va={"center": "center_baseline"}.get(part["va"], part["va"]),
                             fontsize=LABEL_PT, color=c, zorder=z + 1, gid=el["id"] + ":label",
-                            annotation_clip=False)
+                            annotation_clip=False, alpha=op)
 
 
 def figure(pic: dict) -> Figure:

@@ -141,6 +141,7 @@ function render({ model, el }) {
       mk("path", { d: `M${x2} ${y2}L${x2 - ux * h - uy * h * 0.35} ${y2 - uy * h + ux * h * 0.35}` +
                       `L${x2 - ux * h + uy * h * 0.35} ${y2 - uy * h - ux * h * 0.35}Z`, fill: elData.color }, g);
     } else if (k === "text") {
+      if (part.hidden) return;
       const t = mk("text", { x: X(part.x) + part.dx, y: Y(part.y) - part.dy, fill: elData.color,
                              "font-size": pic.font_px,
                              "text-anchor": { left: "start", right: "end", center: "middle" }[part.ha],
@@ -200,6 +201,7 @@ function render({ model, el }) {
     const inner = mk("g", { class: "pg-content" }, content);
     for (const e of pic.elements) {
       const g = mk("g", { "data-id": e.id, class: "pg-el" + (focusId && focusId !== e.id ? " pg-faded" : "") }, inner);
+      if (e.opacity !== undefined && e.opacity !== 1) g.setAttribute("opacity", e.opacity);
       for (const part of e.parts) drawPart(g, part, e);
     }
     mk("rect", { x: 0, y: 0, width: pw, height: ph, class: "pg-frame" }, plot);

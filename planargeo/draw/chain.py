@@ -1,0 +1,165 @@
+"""The picture of a chain's solved state, built natively (no matplotlib): links, poles, forces, inertias.
+
+What the chain explorer shows, from the articulated-body workspace of one state
+(:func:`planargeo.scenes.chain.chain_workspace`): the links and the ground under
+the base, and per body or joint, as the overlays ask,
+
+* the velocity poles ``vᵢ`` (4.5) and acceleration poles ``aᵢ`` (4.6), points;
+* the bias acceleration ``κᵢ`` (a point) and bias force ``pᵢ`` (a line);
+* the joint forces ``fᵢ = Aᵢ aᵢ + dᵢ`` (3.13), lines;
+* the T/U split of each joint: the force ``fᵢ = TᵢQᵢ + Rᵢμᵢ`` (6.38) into its active
+  part along the percussion axis and the reaction through the joint, and the
+  acceleration ``aᵢ = sᵢψᵢ + Uᵢγᵢ`` (6.44);
+* the articulated inertias ``Aᵢ`` (3.38), conics.
+
+Each element carries its symbol (``v₃``), what it is, its equation and its value,
+shown when the pointer rests on it.  A focus fades every element but one link's or
+one joint's.
+
+Examples
+--------
+>>> from planargeo.mechanics.model import chain_model
+>>> from planargeo.scenes.chain import chain_workspace
+>>> m = chain_model(3)
+>>> w = chain_workspace(m, [0.3, -0.2, 0.1], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0])
+>>> pic = chain_picture(w, overlays={"velocity poles": True}, view=(-3.5, 3.5, -3.5, 3.5))
+>>> d = pic.to_dict()
+>>> sorted(e["symbol"] for e in d["elements"] if e["role"] == "twist")
+['v₁', 'v₂', 'v₃']
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo.draw.geometry import point_xy
+from planargeo.draw.picture import Picture
+from planargeo.draw.style import COLORS
+
+__all__ = ["chain_picture", "OVERLAYS", "LAYERS"]
+
+OVERLAYS = ("velocity poles", "acceleration poles", "bias terms", "internal forces",
+            "T/U split", "articulated inertias")
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+#: (key of the data, overlay, symbol, kind, per body or joint, role, colour, meaning, equation, unit)
+LAYERS = (
+    ("f", "internal forces", "f", "line", "joint", "wrench", COLORS["wrench"],
+     "force the joint passes on to the body outboard", "3.13", "N"),
+    ("v", "velocity poles", "v", "point", "link", "twist", COLORS["twist"],
+     "velocity pole of the link (its instant centre)", "4.5", "rad/s"),
+    ("a", "acceleration poles", "a", "point", "link", "accel", COLORS["accel"],
+     "acceleration pole of the link", "4.6", "rad/s²"),
+    ("TQ", "T/U split", "TQ", "line", "joint", "wrench", COLORS["wrench"],
+     "active part of the joint force, along the percussion axis", "6.38", "N"),
+    ("Rμ", "T/U split", "Rμ", "line", "joint", "reaction", COLORS["reaction"],
+     "reaction part of the joint force, through the joint", "6.38", "N"),
+    ("sψ", "T/U split", "sψ", "point", "joint", "accel", COLORS["accel"],
+     "part of the acceleration along the joint's motion space", "6.44", "rad/s²"),
+    ("Uγ", "T/U split", "Uγ", "point", "joint", "accel", COLORS["reaction"],
+     "reactive part of the acceleration", "6.44", "rad/s²"),
+    ("κ", "bias terms", "κ", "point", "link", "accel", COLORS["momentum"],
+     "bias acceleration of the link", "3.38", "rad/s²"),
+    ("p", "bias terms", "p", "line", "link", "momentum", COLORS["momentum"],
+     "bias force of the link", "3.38", "N"),
+    ("A", "articulated inertias", "A", "conic", "link", "inertia", COLORS["inertia"],
+     "articulated inertia of the link, as a conic", "3.38", ""),
+)
+#: the ground under the base, relative to it (NaN-separated strokes)
+_GROUND = np.vstack([[[-0.4, -0.1], [0.4, -0.1], [np.nan, np.nan]]]
+                    + [[[x, -0.1], [x - 0.1, -0.2], [np.nan, np.nan]] for x in np.linspace(-0.35, 0.4, 6)])
+#: opacity of the elements outside the focus
+FADED = 0.18
+
+
+def _where(p) -> str:
+    xy = point_xy(p)
+    if xy is None:
+        return "at infinity"
+    return f"at ({xy[0]:.3g}, {xy[1]:.3g}) m"
+
+
+def _value(kind: str, x, unit: str) -> str:
+    if kind == "point":
+        return f"rate {x[2]:.3g} {unit}, {_where(x)}"
+    if kind == "line":
+        return f"|force| {math.hypot(x[0], x[1]):.3g} {unit}" + (
+            " (a couple)" if x[0] == 0.0 and x[1] == 0.0 else "")
+    return ""
+
+
+def chain_picture(w, *, overlays: dict, view, split: dict | None = None, focus=None,
+                  size=(560, 540), ends=None) -> Picture:
+    """The picture of one state of a chain (module docstring).
+
+    Parameters
+    ----------
+    w : Data
+        The state's articulated-body workspace (``origin``, ``pose``, ``com``, ``v``, ``a``,
+        ``kappa``, ``p``, ``f``, ``A``).
+    overlays : dict
+        ``{overlay name: shown}`` for the names of :data:`OVERLAYS`.
+    view : (x0, x1, y0, y1)
+        What must be in view.
+    split : dict, optional
+        The T/U split (``active``, ``reaction``, ``active_on``, ``motion``, ``reactive``),
+        needed when the "T/U split" overlay is on.
+    focus : ("link" | "joint", i), optional
+        The element kept bright; the rest is faded.
+    size : (int, int)
+        Pixels.
+    ends : array_like (N, 2), optional
+        The far ends of the links (default: the next joint, the last one reaching one
+        link length beyond its joint along the link).
+
+    Returns
+    -------
+    Picture
+    """
+    n = len(w.pose)
+    pic = Picture(view, size=size, ticks=False, margin=(6, 6, 6, 30))
+    if ends is None:
+        ends = np.vstack([w.pose[1:, :2], w.pose[-1:, :2] + (w.pose[-1, :2] - w.pose[-2, :2]
+                                                              if n > 1 else [1.0, 0.0])])
+    chain = np.empty((2 * n + 1, 2))
+    chain[0] = w.origin[0]
+    chain[1::2] = w.pose[:, :2]
+    chain[2::2] = ends
+    base = np.asarray(w.origin[0], float)
+    pic.path("ground", base + _GROUND, role="ground", color=COLORS["ground"], width=1.6,
+             desc="the ground: the base is pinned to it", z=4)
+    pic.path("links", chain, role="body", color=COLORS["ground"], width=3.4,
+             desc=f"the chain's {n} links", z=5)
+    pic.marks("joints", w.pose[:, :2], role="body", color=COLORS["ground"], size=6.0,
+              desc="the joints", z=6)
+    data = {"f": w.f, "v": w.v, "a": w.a, "κ": w.kappa, "p": w.p, "A": w.A}
+    if split:
+        data.update({"TQ": split["active"], "Rμ": split["reaction"], "sψ": split["motion"],
+                     "Uγ": split["reactive"]})
+    anchors = {"joint": w.pose[:, :2], "link": w.com}
+    for key, flag, sym, kind, per, role, color, meaning, eq, unit in LAYERS:
+        if not overlays.get(flag) or key not in data:
+            continue
+        arr = data[key]
+        for i in range(n):
+            if key == "TQ" and not split["active_on"][i]:
+                continue
+            symbol = sym + str(i + 1).translate(_SUB)
+            desc = f"{meaning} ({eq}): {_value(kind, arr[i], unit)}"
+            faded = focus is not None and focus != (per, i)
+            eid = f"{key}{i + 1}"
+            if kind == "point":
+                pic.point(eid, arr[i], role=role, color=color, symbol=symbol, desc=desc,
+                          glyph=key in ("v", "a"), glyph_scale=4.0 if key == "v" else 1.0,
+                          label="" if faded else None)
+            elif kind == "line":
+                pic.line(eid, arr[i], role=role, color=color, symbol=symbol, desc=desc,
+                         anchor=anchors[per][i], label="" if faded else None,
+                         dash=[1.5, 2.5] if key == "TQ" else None)
+            else:
+                pic.conic(eid, arr[i], role=role, color=color, symbol=symbol, desc=desc,
+                          label="" if faded else None)
+            if faded:
+                pic.elements[-1]["opacity"] = FADED
+    return pic
