@@ -107,13 +107,13 @@ rotation is refused with a message, not an exception:
 >>> from planargeo.widgets import ScrewSumExplorer
 >>> ex = ScrewSumExplorer(display="agg")
 >>> ex.controls["size2"].value = -1.0
->>> ex.readout_values["case"], ex.readout_values["pole of sum"]
-('opposite_rotations', 'at infinity')
+>>> ex.readout_values["pole of sum"].startswith("at infinity")
+True
 >>> ex.controls["size2"].value = 0.0
->>> ex.message
-'v2 must be non-zero, got array([ 0., -0.,  0.]) (refused: size2 = 0)'
->>> ex.controls["size2"].value, ex.readout_values["case"]    # back to the shown state
-(-1.0, 'opposite_rotations')
+>>> ex.message.endswith("(refused: size2 = 0)")
+True
+>>> ex.controls["size2"].value, ex.readout_values["pole of sum"].startswith("at infinity")  # as shown
+(-1.0, True)
 """
 from __future__ import annotations
 
