@@ -58,8 +58,9 @@ _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 INITIAL = ("crank angle (deg)", "crank speed", "drive", "rod length", "gravity")
 #: scene seconds between the checkpoints of a run
 CHECKPOINT = 0.02
-#: end of the time slider (s): Play runs a minute; the state at t costs an integration from 0 to t
-T_END = 60.0
+#: end of the time slider (scene seconds; 100 s of Play at 1×, then Play ends or loops): the state at t
+#: costs an integration from 0 to t, about 1800 dynamics evaluations per scene second
+T_END = 10.0
 
 
 def symbol_text(sym: str) -> str:
