@@ -580,6 +580,10 @@ def main(argv=None) -> int:
     ap.add_argument("--play", type=float, default=None, help="seconds of Play per visitor (default 10; quick: 3)")
     ap.add_argument("--quick", action="store_true", help="k = 1, 2 and a few steps")
     ap.add_argument("--out", default=str(Path(__file__).parent / "results"))
+    ap.add_argument("--merge", action="store_true",
+                    help="keep the other k of <out>/classroom.json (this run's k replace theirs)")
+    ap.add_argument("--margin", type=float, default=MEMORY_MARGIN_MB / 1024,
+                    help="GiB of available memory a k must leave free to be tried (default %(default)s)")
     ap.add_argument("--from-json", action="store_true",
                     help="rewrite classroom.md and classroom.png from <out>/classroom.json (no measurement)")
     args = ap.parse_args(argv)
@@ -605,9 +609,14 @@ def main(argv=None) -> int:
     results, skipped = [], []
     with tempfile.TemporaryDirectory() as tmp:
         per_visitor = 800.0          # MiB, kernel and browser, until measured
+        if args.merge and (out / "classroom.json").exists():
+            earlier = [r for r in json.loads((out / "classroom.json").read_text(encoding="utf-8"))["results"]
+                       if r.get("kernels")]
+            if earlier:
+                per_visitor = 1.1 * (earlier[-1]["kernel_pss_mb"] + earlier[-1]["browser_pss_mb"])
         for k in ks:
             avail = _mb(psutil.virtual_memory().available)
-            if k * per_visitor > avail - MEMORY_MARGIN_MB:
+            if k * per_visitor > avail - args.margin * 1024:
                 print(f"[classroom] k = {k} not tried: about {k * per_visitor:.0f} MiB needed, "
                       f"{avail:.0f} MiB available", file=sys.stderr, flush=True)
                 skipped.append({"k": k, "needed_mb": k * per_visitor, "available_mb": avail})
@@ -624,6 +633,12 @@ def main(argv=None) -> int:
             if full_reason(r, total_mb) and r["served"] < r["k"] / 2:
                 print("[classroom] fewer than half the pages ready: larger k not tried", file=sys.stderr)
                 break
+    if args.merge and (out / "classroom.json").exists():
+        old = json.loads((out / "classroom.json").read_text(encoding="utf-8"))
+        mine = {r["k"] for r in results}
+        results = sorted([r for r in old["results"] if r["k"] not in mine] + results, key=lambda r: r["k"])
+        done = {r["k"] for r in results}
+        skipped = [sk for sk in old.get("not_tried", []) + skipped if sk["k"] not in done]
     v = verdict(results, total_mb)
     meta = {"date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
             "python": platform.python_version(), "machine": platform.machine(), "cpus": os.cpu_count(),
