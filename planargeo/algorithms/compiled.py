@@ -8,8 +8,8 @@ A call (:func:`evaluate`) takes one of three roads, all giving the same numbers:
 
 * one state given as float64 arrays of the right shapes goes straight to the kernel,
   which checks that it is finite and of the model's shapes (the types are numba's to check:
-  the one-state kernels are compiled for C-contiguous, writeable float64 arrays once, then
-  refuse any other type instead of compiling it, and the call falls back to the next road);
+  the one-state kernels are compiled for C-contiguous, writeable float64 arrays only, and
+  refuse any other type instead of compiling it: the call falls back to the next road);
 * anything else (lists, other dtypes, batches, broadcasting) is validated by
   :func:`planargeo.mechanics.kinematics.check_state` and handed over as C-contiguous
   float64 rows;
@@ -85,7 +85,7 @@ def kernels_for(model):
         tables = kernels.tables(model)
         if tables is not None:
             _say_if_cold(kernels)
-            _one_state_types(kernels)
+            _closed(kernels)
         cache["kernels"] = None if tables is None else Compiled(kernels, tables, (model.nq,), (model.N, 3))
     return cache["kernels"]
 
@@ -134,7 +134,7 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
             and (f_ext is None or type(f_ext) is _ARRAY)):
         try:                # numba checks the types (float64, C-contiguous, writeable), the kernel the shapes
             out = one(*tables, q, qd, z, f_ext)
-        except TypeError:   # another type (ints, a read-only view, f_ext a list...): validated below
+        except TypeError:   # another type (ints, a read-only view, f_ext a list...), or the first call: validated
             out = None
         if out is not None:
             return out
@@ -147,6 +147,7 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
     rows = [_rows(a, shape + (nq,), (B, nq)) for a in (q, qd, z)]
     fe = None if f_ext is None else _rows(f_ext, shape + (N, 3), (B, N, 3))
     if shape == ():
+        _ready(kernels, inverse, fe is not None)
         out = one(*tables, *(r[0] for r in rows), None if fe is None else fe[0])
         return out if out is not None else _failed(kernels, tables, model, inverse, q, qd, z, f_ext, general)
     out, declined = (kernels.inverse_dynamics_many if inverse else kernels.forward_dynamics_many)(*tables, *rows, fe)
@@ -157,29 +158,38 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
     return general(model, q, qd, z, f_ext)       # the general recursion answered that state: the batch by it
 
 
-_typed = []
+_READY: set = set()
 
 
-def _one_state_types(kernels) -> None:
-    """Compile (or load) the one-state kernels for their one array type, then let them compile nothing else.
+def _closed(kernels) -> None:
+    """Let the one-state kernels compile nothing at call time (their one type is added by :func:`_ready`).
 
-    A call with other types (a list, int64 or read-only arrays, a batch) raises numba's
+    A call with another type (a list, int64 or read-only arrays, a batch) then raises numba's
     ``TypeError`` at once, instead of compiling a new version for seconds: :func:`evaluate`
-    then validates the arguments and hands the kernels that one type.
+    validates the arguments and hands the kernels that one type.
     """
-    if _typed:
-        return
-    from numba import types
-
-    i1, f1, f2 = (types.Array(types.int64, 1, "C"), types.Array(types.float64, 1, "C"),
-                  types.Array(types.float64, 2, "C"))
     for kernel in (kernels.forward_dynamics_one, kernels.inverse_dynamics_one):
-        if not hasattr(kernel, "disable_compile"):          # NUMBA_DISABLE_JIT=1: plain Python functions
-            continue
-        for wrenches in (types.none, f2):
-            kernel.compile((i1, i1, f2, f1, f1, f1, f1, wrenches))
-        kernel.disable_compile()
-    _typed.append(True)
+        if hasattr(kernel, "_can_compile"):             # (NUMBA_DISABLE_JIT=1: plain Python functions)
+            kernel._can_compile = False                 # numba's disable_compile(), allowed before any signature
+
+
+def _ready(kernels, inverse: bool, wrenches: bool) -> None:
+    """Compile (or load from the cache) the one type of a one-state kernel, with or without external wrenches."""
+    key = (inverse, wrenches)
+    if key in _READY:
+        return
+    kernel = kernels.inverse_dynamics_one if inverse else kernels.forward_dynamics_one
+    if hasattr(kernel, "_can_compile"):
+        from numba import types
+
+        i1, f1, f2 = (types.Array(types.int64, 1, "C"), types.Array(types.float64, 1, "C"),
+                      types.Array(types.float64, 2, "C"))
+        kernel._can_compile = True
+        try:
+            kernel.compile((i1, i1, f2, f1, f1, f1, f1, f2 if wrenches else types.none))
+        finally:
+            kernel._can_compile = False
+    _READY.add(key)
 
 
 def _rows(a, full, flat):
@@ -311,30 +321,23 @@ def warm(progress=None) -> list[tuple[str, float]]:
     Examples
     --------
     >>> [step for step, _ in warm()][:2]
-    ['one-state kernels, forward and inverse', 'forward dynamics, one state']
+    ['forward dynamics, one state', 'forward dynamics, one state, external wrenches']
     """
     from planargeo.mechanics.model import Body, Joint, Model
 
     model = Model([Body(1.0, (0.5, 0.0), 0.1), Body(1.0, (0.5, 0.0), 0.1), Body(0.5, (0.2, 0.0), 0.05)],
                   [Joint("revolute"), Joint("prismatic", (1.0, 0.0, 0.0)), Joint("fixed", (1.0, 0.0, 0.0))],
                   [-1, 0, 1])
-    if progress is not None:
-        progress("  one-state kernels, forward and inverse ...")
-    t = time.perf_counter()
-    k, tables = kernels_for(model)[:2]                  # compiles (or loads) the one-state kernels' one type
-    steps = [("one-state kernels, forward and inverse", time.perf_counter() - t)]
-    if progress is not None:
-        progress(f"  {steps[0][0]}: {steps[0][1]:.2f} s")
+    k, tables = kernels_for(model)[:2]
+    steps = []
     nq, N, B = model.nq, model.N, 3
     one, fe1 = np.zeros(nq), np.zeros((N, 3))
     rows, feB = np.zeros((B, nq)), np.zeros((B, N, 3))
     for what, run in [
-            ("forward dynamics, one state", lambda: k.forward_dynamics_one(*tables, one, one, one, None)),
-            ("forward dynamics, one state, external wrenches",
-             lambda: k.forward_dynamics_one(*tables, one, one, one, fe1)),
-            ("inverse dynamics, one state", lambda: k.inverse_dynamics_one(*tables, one, one, one, None)),
-            ("inverse dynamics, one state, external wrenches",
-             lambda: k.inverse_dynamics_one(*tables, one, one, one, fe1)),
+            ("forward dynamics, one state", lambda: _ready(k, False, False)),
+            ("forward dynamics, one state, external wrenches", lambda: _ready(k, False, True)),
+            ("inverse dynamics, one state", lambda: _ready(k, True, False)),
+            ("inverse dynamics, one state, external wrenches", lambda: _ready(k, True, True)),
             ("singular-joint check", lambda: k.singular_joint(*tables, one, one, one, None)),
             ("singular-joint check, external wrenches", lambda: k.singular_joint(*tables, one, one, one, fe1)),
             ("forward dynamics, batch", lambda: k.forward_dynamics_many(*tables, rows, rows, rows, None)),
