@@ -52,10 +52,7 @@ def test_image_is_shown_at_its_native_width_and_scales_down(name):
 
 
 #: explorers of other helpers whose defaults are off their slider grid (the integrator removes these)
-OFF_GRID = {
-    "SliderCrankExplorer": "slider_crank.py: crank angle default degrees(0.4) = 22.918... on a 1° grid "
-                           "(the browser shows and sends back 23): owner of slider_crank.py",
-}
+OFF_GRID: dict[str, str] = {}
 
 
 @pytest.mark.parametrize("name", [
