@@ -451,6 +451,64 @@ def _cli_check(args, kwargs, result):
     return (OK, "") if code == 0 else (PACKAGE, "")
 
 
+USER_TEXT = "the user's own notes\n"
+
+
+def _bench_out(kind: str) -> list[str]:
+    """``planargeo bench --out X`` where it must refuse at once: X holds the user's files, or cannot be made."""
+    if kind == "user folder":                       # a folder of the user's, with files of the results' names
+        d = tmpdir() / f"user{next(_counter)}"
+        d.mkdir()
+        for name in ("RESULTS.md", "batch.md", "notes.txt"):
+            (d / name).write_text(USER_TEXT)
+        out = str(d)
+    else:
+        out = {"under /proc": "/proc/nope", "under a file": str(tmpdir() / "afile" / "R"),
+               "a file": str(tmpdir() / "afile"), "/dev/full": "/dev/full"}[kind]
+    suite = Path(__file__).resolve().parents[2] / "benchmarks"
+    return ["bench", "--suite", str(suite), "--out", out, "--quick", "--only", "dynamics", "--no-charts"]
+
+
+def cli_process(argv, timeout: float = 15.0):
+    """``planargeo ARGV`` in a new process group: ``(status, stdout, stderr)``; past ``timeout`` the
+    whole group is killed and :class:`~fuzz.harness.Hang` raised (a benchmark run has children)."""
+    import os
+    import signal
+    import subprocess
+    import sys
+
+    from fuzz.harness import Hang
+
+    p = subprocess.Popen([sys.executable, "-m", "planargeo", *map(str, argv)], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True, start_new_session=True, cwd=tmpdir(),
+                         env=dict(os.environ, MPLBACKEND="Agg"))
+    try:
+        out, err = p.communicate(timeout=timeout)
+    except BaseException:
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(p.pid, signal.SIGKILL)
+        p.communicate()
+        raise Hang(f"no answer within {timeout:g} s (the process group was killed)") from None
+    return p.returncode, out, err
+
+
+def _bench_check(args, kwargs, result):
+    """Refused: a non-zero status, one line, no traceback, no success line, the user's files as they were."""
+    argv = args[0]
+    code, out, err = result
+    out_dir = Path(argv[argv.index("--out") + 1])
+    if out_dir.is_dir() and (out_dir / "notes.txt").exists():
+        changed = [f.name for f in out_dir.iterdir() if f.is_file() and f.read_text(errors="replace") != USER_TEXT]
+        if changed:
+            return FOREIGN, f"the user's files {changed} were replaced without --force (status {code})"
+    verdict = _cli_check(args, kwargs, result)
+    if verdict is not None and verdict[0] != PACKAGE:
+        return verdict
+    if code == 0:
+        return FOREIGN, f"status 0 (a success) writing into {out_dir}: {out.strip()[-200:]!r}"
+    return PACKAGE, ""
+
+
 def cli_targets() -> list[Target]:
     from planargeo import scenes
 
@@ -493,6 +551,10 @@ def cli_targets() -> list[Target]:
         Target("planargeo report", cli_main, S.call((argv,)), group="cli", check=_cli_check, timeout=20.0),
         Target("planargeo gallery --out", cli_main, S.call((gallery,)), group="cli",
                check=_cli_check, timeout=20.0, weight=0.1),
+        # only the refusals (a real benchmark run takes half a minute): each must come at once
+        Target("planargeo bench --out", cli_process, st.sampled_from(
+            ["user folder", "under /proc", "under a file", "a file", "/dev/full"]).map(
+            lambda k: ((_bench_out(k),), {})), group="cli", check=_bench_check, timeout=20.0, weight=0.1),
     ]
 
 
