@@ -108,7 +108,7 @@ def vec(n: int, elem=finite, *, nonzero: bool = True) -> Arg:
 
 def mat(rows: int, cols: int, elem=finite, *, symmetric: bool = False) -> Arg:
     base = valid_array((rows, cols)) if elem is finite else _array((rows, cols), elem)
-    good = base.map(lambda a: 0.5 * (a + a.T)) if symmetric and rows == cols else base
+    good = base.map(lambda a: 0.5 * a + 0.5 * a.T) if symmetric and rows == cols else base
     hostile = st.one_of(
         _array((rows, cols), reals).filter(lambda a: not np.all(np.isfinite(a))),
         good.map(lambda a: a + 1j),
