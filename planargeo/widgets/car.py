@@ -117,13 +117,14 @@ def grip(res, mu: float):
 VIEW_MARGIN = 1.0
 
 
-def view_box(d: float, L: float, theta: float):
-    """The view ``(x0, x1, y0, y1)`` (m, drawn coordinates) holding the car and the ICR at heading ``theta``.
+def view_box(d: float, L: float, theta: float, F_A: float = 0.0):
+    """The view ``(x0, x1, y0, y1)`` (m, drawn coordinates) holding the car, the ICR and the drive arrow.
 
-    In the car's frame the car and the ICR fill the rectangle ``x ∈ [0, d + HALF_TRACK]``,
-    ``y ∈ [-OVERHANG, L + OVERHANG]``; the view is the square about its centre (turned with
-    the car, :func:`_moves`) whose half side is the rectangle's half diagonal plus
-    :data:`VIEW_MARGIN`, rounded up to 0.5 m: it holds them at every heading.
+    In the car's frame (the ICR at the origin) the car, the ICR and the tip of the
+    drive arrow ``f_A`` fill a rectangle; the view is the square about its centre
+    (turned with the car, :func:`_moves`) whose half side is the rectangle's half
+    diagonal plus :data:`VIEW_MARGIN`, rounded up to 0.5 m: it holds them at every
+    heading, and the car fills a third of it for turns up to about 8 m.
 
     Parameters
     ----------
@@ -131,6 +132,8 @@ def view_box(d: float, L: float, theta: float):
         Turn radius and wheelbase (m).
     theta : float
         Heading (rad).
+    F_A : float
+        Drive force (N), drawn ``FORCE_SCALE`` m per N from the front tyre.
 
     Returns
     -------
@@ -141,9 +144,13 @@ def view_box(d: float, L: float, theta: float):
     >>> [round(v, 2) for v in view_box(8.0, 2.6, 0.0)]
     [-9.6, 2.4, -4.7, 7.3]
     """
-    hx, hy = (d + HALF_TRACK) / 2, (L + 2 * OVERHANG) / 2
+    hyp = math.hypot(d, L)
+    tip = np.array([d, L]) + FORCE_SCALE * F_A * np.array([-L, d]) / hyp
+    xs = [0.0, d - HALF_TRACK, d + HALF_TRACK, float(tip[0])]
+    ys = [0.0, -OVERHANG, L + OVERHANG, float(tip[1])]
+    hx, hy = (max(xs) - min(xs)) / 2, (max(ys) - min(ys)) / 2
     R, t, _V, _W = _moves(theta, d)
-    c = R @ np.array([hx, hy - OVERHANG]) + t
+    c = R @ np.array([min(xs) + hx, min(ys) + hy]) + t
     half = math.ceil(2 * (math.hypot(hx, hy) + VIEW_MARGIN)) / 2
     return (float(c[0] - half), float(c[0] + half), float(c[1] - half), float(c[1] + half))
 
@@ -483,7 +490,7 @@ class CarExplorer(Explorer):
         self.T_line.set_line(W @ np.asarray(q["T"]))
         # the view: the car and the ICR, centred between them and turning with the car (a size that
         # holds them at every heading, so that the car fills a third of the view for d up to ~8 m)
-        box = view_box(d, L, th)
+        box = view_box(d, L, th, p["F_A"])
         if tuple(self.ax.get_xlim()) != box[:2] or tuple(self.ax.get_ylim()) != box[2:]:
             self.ax.set_xlim(*box[:2])
             self.ax.set_ylim(*box[2:])

@@ -259,6 +259,15 @@ class ImpulseExplorer(Explorer):
         else:
             moved = outline + t * dv[:2]
         self.body.set_xy(moved)
+        # the view: the fixed frame, grown (never shrunk) to hold the blow's point and arrow tip
+        v = self.values
+        tip = np.array([v["strike x"], v["strike y"]]) + unit_direction(v["strike angle"]) * (ARROW * v["J"] / 2)
+        x0, x1, y0, y1 = self.limits
+        x0, x1 = min(x0, tip[0] - 0.1), max(x1, tip[0] + 0.1)
+        y0, y1 = min(y0, tip[1] - 0.1), max(y1, tip[1] + 0.1)
+        if tuple(self.ax.get_xlim()) != (x0, x1) or tuple(self.ax.get_ylim()) != (y0, y1):
+            self.ax.set_xlim(x0, x1)
+            self.ax.set_ylim(y0, y1)
         self.ghost.set_xy(outline)
         self.ghost.set_visible(t > 0)
         I = ex["I"]

@@ -6,8 +6,7 @@ bodies 8 and 9 (Fig 9.2) and the constrained algorithm (9.4-9.5) adds the
 contact forces ``F₁``, ``F₂``.  Every pin force of the mechanism is drawn at its
 joint, updated every frame: the nine joint wrenches ``f₁ … f₉`` (9.61: the wrench
 on body ``i`` from its parent, 9.41 for the open tree) and the contact forces.
-A *focus* on one of them draws it bold and labelled, fades the others and
-zooms to its joint.
+A *focus* on one of them draws it bold and labelled and fades the others.
 
 *Play* advances the scene time ``t`` (a control of its own); the state at ``t``
 is integrated from ``t = 0`` with :func:`planargeo.scenes.trees.tree_advance`
@@ -92,7 +91,7 @@ class TreeExplorer(Explorer):
     title = "Trees and loops: Fig 9.2, its pin and contact forces"
     slug = "trees"
     figsize = (5.6, 5.6)
-    limits = (-2.8, 2.8, -0.6, 5.0)
+    limits = (-4.3, 4.3, -4.3, 4.3)
     display_controls = ("velocity poles", "acceleration poles", "reaction forces")
     scale = 1.0
     units = {"t": "s", "speed": "rad/s", "degrees of freedom": "—", "condition number": "—",
@@ -249,6 +248,18 @@ class TreeExplorer(Explorer):
 
         return [Handle("tip of body 1", tip(0), drag1), Handle("tip of body 2", tip(1), drag2)]
 
+    def mechanism_points(self):
+        """Every joint and link tip of the pose shown (the view holds them).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``(18, 2)`` points.
+        """
+        if self.state is None:
+            return np.zeros((0, 2))
+        return np.vstack([self.state["sol"].data.pose[:, :2], self.state["tips"]])
+
     # ------------------------------------------------------------------- Play
     def adjust(self, values, changed):
         """A change of the initial state starts the time again (``t = 0``), unless ``t`` is set with it.
@@ -375,7 +386,7 @@ class TreeExplorer(Explorer):
         return st
 
     def render(self, st):
-        """Move links, pins, reaction glyphs (focus: one bold, the rest faded, zoomed), poles, labels.
+        """Move links, pins, reaction glyphs (focus: one bold, the rest faded), poles, labels.
 
         Parameters
         ----------
@@ -396,12 +407,8 @@ class TreeExplorer(Explorer):
         reactions = {symbol_text(x.symbol): x for x in st["reactions"]}
         if closed:        # the thesis names the contact forces F₁, F₂ (9.49 order)
             pass
-        # view: the whole mechanism, or zoomed on the focused joint
-        if focus in reactions:
-            c = reactions[focus].point
-            ax.set_xlim(c[0] - 1.6, c[0] + 1.6)
-            ax.set_ylim(c[1] - 1.6, c[1] + 1.6)
-        else:
+        # view: every pose the links can reach (body 1 and three more links from the pivot), fixed
+        if tuple(ax.get_xlim()) != self.limits[:2] or tuple(ax.get_ylim()) != self.limits[2:]:
             ax.set_xlim(*self.limits[:2])
             ax.set_ylim(*self.limits[2:])
         xs, ys = [], []
