@@ -320,7 +320,7 @@ def visitor(i: int, url: str, cdp: str, plan: dict, barrier: threading.Barrier, 
                         except Exception as exc:       # noqa: BLE001 - recorded, the run goes on
                             rec["error"] = f"{phase.__name__}: {type(exc).__name__}: {str(exc)[:200]}"
                     try:
-                        barrier.wait(timeout=plan["phase_timeout"])
+                        barrier.wait(timeout=3600)     # the main thread ends a phase that takes too long
                     except threading.BrokenBarrierError:
                         pass
             finally:
@@ -344,7 +344,8 @@ def run_k(k: int, steps: int, play: float, handle: dict, tmp: Path) -> dict:
     load_timeout = 180 + 40 * k
     plan = {"handle": handle, "steps": steps, "play": play, "n_explorers": len(names), "arrival": ARRIVAL_S,
             "index": names.index(EXPLORER), "load_timeout": load_timeout,
-            "phase_timeout": load_timeout + ARRIVAL_S * k + 60 + steps * 30}
+            "phase_timeout": {"load": load_timeout + ARRIVAL_S * k + 30, "drag": 60 + 15 * steps,
+                              "play": play + 120, "stay": 60}}
     barrier = threading.Barrier(k + 1)
     recs = [{} for _ in range(k)]
     threads = [threading.Thread(target=visitor, args=(i, server.url + "/", chromium.endpoint, plan, barrier, recs[i]),
@@ -358,7 +359,7 @@ def run_k(k: int, steps: int, play: float, handle: dict, tmp: Path) -> dict:
         phases, cpu = {}, {}
         for name in ("load", "drag", "play"):
             try:
-                barrier.wait(timeout=plan["phase_timeout"])
+                barrier.wait(timeout=plan["phase_timeout"][name])
             except threading.BrokenBarrierError:
                 pass
             phases[name] = time.monotonic() - t0
@@ -371,11 +372,12 @@ def run_k(k: int, steps: int, play: float, handle: dict, tmp: Path) -> dict:
         avail1 = _mb(psutil.virtual_memory().available)
         load1 = os.getloadavg()[0]
         try:
-            barrier.wait(timeout=plan["phase_timeout"])
+            barrier.wait(timeout=plan["phase_timeout"]["stay"])
         except threading.BrokenBarrierError:
             pass
+        end = time.monotonic() + 30
         for t in threads:
-            t.join(timeout=60)
+            t.join(timeout=max(end - time.monotonic(), 0.1))
     finally:
         sampler.stop.set()
         chromium.stop()
@@ -388,6 +390,7 @@ def run_k(k: int, steps: int, play: float, handle: dict, tmp: Path) -> dict:
            "drag_steps": len(drags), "drag_missed": len(drags) - len(got),
            "drag_median_ms": statistics.median(got) if got else None,
            "drag_p90_ms": _quantile(got, 0.9), "play_fps_median": _med([r.get("play_fps") for r in recs]),
+           "play_answered": sum("play_fps" in r for r in recs),
            "kernel_rss_mb": k_rss / max(len(kernels), 1), "kernel_pss_mb": k_pss / max(len(kernels), 1),
            "kernel_peak_rss_total_mb": sampler.peak_kernel_rss, "server_rss_mb": s_rss,
            "browser_rss_mb": b_rss / k, "browser_pss_mb": (b_pss - b_base) / k, "browser_empty_pss_mb": b_base,
@@ -451,6 +454,11 @@ def _f(x, fmt="{:.0f}"):
     return "–" if x is None else fmt.format(x)
 
 
+def _answered(r: dict) -> str:
+    n = r.get("play_answered", r["served"])
+    return "" if n >= r["served"] else f" ({r['served'] - n} pages did not answer)"
+
+
 def estimate(results: list[dict], cpus: int) -> dict:
     """Visitors a machine with ``cpus`` cores and nothing else to do holds, from the kernels' CPU cost.
 
@@ -494,7 +502,7 @@ def report(results: list[dict], meta: dict, v: dict, skipped: list[dict] = ()) -
         lines.append(
             f"| {r['k']} | {r['served']}/{r['k']} | {_f(r['ready_s_median'], '{:.0f}')} / {_f(r['ready_s_max'], '{:.0f}')} "
             f"| {_f(r['drag_median_ms'])} | {_f(r['drag_p90_ms'])} | {r['drag_missed']}/{r['drag_steps']} "
-            f"| {_f(r['play_fps_median'], '{:.1f}')} | {_f(r['kernel_rss_mb'])} / {_f(r['kernel_pss_mb'])} "
+            f"| {_f(r['play_fps_median'], '{:.1f}')}{_answered(r)} | {_f(r['kernel_rss_mb'])} / {_f(r['kernel_pss_mb'])} "
             f"| {_f(r['browser_pss_mb'])} | {cpu} | {r['load_before']:.1f} → {r['load_during']:.1f} |")
     for sk in skipped:
         lines.append(f"| {sk['k']} | not tried: about {sk['needed_mb'] / 1024:.1f} GiB needed, "
