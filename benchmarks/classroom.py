@@ -505,8 +505,9 @@ def report(results: list[dict], meta: dict, v: dict, skipped: list[dict] = ()) -
             f"| {_f(r['play_fps_median'], '{:.1f}')}{_answered(r)} | {_f(r['kernel_rss_mb'])} / {_f(r['kernel_pss_mb'])} "
             f"| {_f(r['browser_pss_mb'])} | {cpu} | {r['load_before']:.1f} → {r['load_during']:.1f} |")
     for sk in skipped:
-        lines.append(f"| {sk['k']} | not tried: about {sk['needed_mb'] / 1024:.1f} GiB needed, "
-                     f"{sk['available_mb'] / 1024:.1f} GiB available | | | | | | | | | |")
+        why = sk.get("why") or (f"about {sk['needed_mb'] / 1024:.1f} GiB needed, "
+                                f"{sk['available_mb'] / 1024:.1f} GiB available")
+        lines.append(f"| {sk['k']} | not tried: {why} | | | | | | | | | |")
     full = v["full"]
     lines += ["", "![drag step and memory against k](classroom.png)", "", "## Reading", "",
               f"* **Memory per visitor:** each kernel holds about {_f(v['kernel_pss_mb'])} MiB (PSS: its own pages "
