@@ -48,7 +48,7 @@ def test_default_state_matches_the_dense_reference_and_is_legible():
         xy = ex.art[k].get_xy()
         np.testing.assert_allclose(np.nanmean(xy[:-1], axis=0), [-P[1] / P[2], P[0] / P[2]], atol=1e-9)
     Aj = inertia_at(_reference_A(4, 3.0, 25.0, 0.0, 0), (0.0, 0.0))
-    assert ex.readout_values["A_z of Aₖ at joint k"] == pytest.approx(Aj[2, 2], rel=1e-10)
+    assert ex.readout_values["Aₖ: inertia about joint k"] == pytest.approx(Aj[2, 2], rel=1e-10)
 
 
 @pytest.mark.parametrize("phi_deg", [0.0, 40.0, 90.0, 135.0])
@@ -57,7 +57,7 @@ def test_thesis_7_2_effective_mass_7_20(phi_deg, lam):
     ex = ArticulatedExplorer(display="agg", **{"bodies n": 2, "λ = L/ρ": lam, "bend φ (deg)": phi_deg})
     L, rho, c = 1.0, 1.0 / lam, math.cos(math.radians(phi_deg))
     mx = (L**2 + 8 * rho**2 + L**2 * c**2) / (L**2 + 4 * rho**2)          # 7.20 with m = 1
-    assert ex.readout_values["mₓ of Aₖ"] == pytest.approx(mx, rel=1e-12)
+    assert ex.readout_values["Aₖ: mass along x"] == pytest.approx(mx, rel=1e-12)
     _legible(ex)
 
 

@@ -51,10 +51,9 @@ __all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip", "place_labels", "label
 #: Most bodies the explorer shows.
 NMAX = 8
 #: Longest swing [s] (the range of the time slider).
-T_MAX = 120.0
+T_MAX = 60.0
 #: chart legend of each component of ``A_k`` at joint ``k`` (``A[0, 2]``, ``A[1, 2]``: ``A_xz``, ``A_yz``)
-_LABELS = {"m_x": "$m_x$", "m_y": "$m_y$", "A_z": "$A_z$", "m_xy": "$m_{xy}$", "c_x": "$A_{xz}$",
-           "c_y": "$A_{yz}$"}
+_LABELS = {"m_x": "xx", "m_y": "yy", "A_z": "zz", "m_xy": "xy", "c_x": "xz", "c_y": "yz"}
 #: the readout's time control
 TIME = "time (s)"
 #: the readout row that shows the damping at rest (what c means: the power it takes when every joint turns
@@ -168,7 +167,7 @@ def fit_mechanism(ax, mechanism, extra=(), margin: float = 0.15, reach: float = 
         E = E[np.hypot(*(E - mid).T) <= reach * size]
         if len(E):
             lo, hi = np.minimum(lo, E.min(axis=0)), np.maximum(hi, E.max(axis=0))
-    c, half = 0.5 * (lo + hi), 0.5 * np.maximum(hi - lo, least)
+    c, half = 0.5 * (lo + hi), 0.5 * max(float(np.max(hi - lo)), least)    # a square: no side below the size
     fit_view(ax, np.array([c - half, c + half]), margin=margin)
     return tuple(float(x) for x in (*ax.get_xlim(), *ax.get_ylim()))
 
@@ -350,8 +349,8 @@ class ArticulatedExplorer(Explorer):
     figsize = (9.6, 5.0)
     display_controls = ("rigid inertias", "percussion axes")
     units = {
-        "bodies": "—", "outboard included": "—", "mₓ of Aₖ": "kg", "m_y of Aₖ": "kg",
-        "A_z of Aₖ at joint k": "kg·m²", "effective centre d/L (7.27)": "—",
+        "bodies": "—", "outboard included": "—", "Aₖ: mass along x": "kg", "Aₖ: mass along y": "kg",
+        "Aₖ: inertia about joint k": "kg·m²", "effective centre d/L (7.27)": "—",
         "truncation error of Aₖ": "—", "distance from a to the centre": "m",
         "axis Aₖa: distance from the centre": "m",
         "t": "s", "energy T + V": "J", "dissipated W": "J", "T + V + W": "J", "initial energy E₀": "J",
@@ -388,17 +387,13 @@ class ArticulatedExplorer(Explorer):
             "time (s)": Step(0.0, T_MAX, 0.01, 0.0, "time (s)").make("time"),
             "rigid inertias": W.Checkbox(value=True, description="rigid inertias I_i"),
             "percussion axes": W.Checkbox(value=True, description="percussion axes"),
-            # the focus of the base contract, made here so that it is an ordinary control (the base's
-            # test of display controls sets sliders and checkboxes only)
-            "focus": W.Dropdown(options=["all", *self.focus_options()], value="all", description="focus",
-                                layout=W.Layout(width="310px")),
         }
 
     def adjust(self, values, changed):
         """Controls that follow: the outboard bodies stay on the chain, a new chain swings from ``t = 0``.
 
-        ``outboard bodies`` never exceeds the ``n − 1`` bodies outboard of body 1 (the slider
-        shows what the recursion uses); at its largest ("all of them") it stays at the largest
+        ``outboard bodies`` never exceeds the ``n − 1`` bodies outboard of body 1 (its slider
+        spans 0 to ``n − 1`` once the state is shown); at its largest ("all of them") it stays at the largest
         when ``n`` changes.  A change of the chain or its swing restarts the time at 0 unless the
         time is set with it.  A focus on a body that is gone falls back to "all" (the base).
 
@@ -424,6 +419,10 @@ class ArticulatedExplorer(Explorer):
         k = min(k, n - 1)
         if k != values["outboard bodies"]:
             out["outboard bodies"] = k
+        w = self.controls["outboard bodies"]
+        if w.max < k:                          # widened here, narrowed to n − 1 once the state is shown
+            with self._quietly():
+                w.max = k
         if changed & set(_CHAIN) and TIME not in changed and values[TIME] != 0.0:
             out[TIME] = 0.0
         return out
@@ -454,6 +453,8 @@ class ArticulatedExplorer(Explorer):
         -------
         dict
         """
+        focus = str(self.values.get("focus", "all"))
+        kk = _sub(int(focus.split()[1]) if focus.startswith("body ") else 1)
         return {
             "n": "number of bodies in the chain (1 kg each, joints L = 1 m apart)",
             "i": "index of any body of the chain",
@@ -468,18 +469,21 @@ class ArticulatedExplorer(Explorer):
             "t": "time of the swing since it started from rest (s)",
             "Iᵢ": "rigid inertia of body i, drawn as a conic about its centre of mass (section 10.2.3)",
             "Aᵢ": "articulated inertia of body i with the bodies outboard of it (eq. 7.7a), drawn as a conic",
-            "Aₖ": "articulated inertia of the focused body k (eq. 7.7a)",
-            "Iₖ": "rigid inertia of the focused body k",
+            "Aₖ": f"articulated inertia of the focused body k (eq. 7.7a); in the figure: A{kk}",
+            "Iₖ": f"rigid inertia of the focused body k; in the figure: I{kk}",
             "a": "the acceleration pole: the point about which body k is made to accelerate (eq. 4.6)",
-            "Aₖa": "axis of percussion: the force that gives body k the acceleration a with the outboard bodies attached (eq. 5.64-5.68)",
-            "Iₖa": "axis of percussion of body k alone (eq. 5.64-5.68)",
-            "polar of a": "polar of a with respect to the drawn real conic of Aₖ: Aₖa reflected through the centre (section 10.2.3)",
-            "mₓ": "entry xx of Aₖ at joint k: the mass felt pushing along x (eq. 7.26)",
-            "m_y": "entry yy of Aₖ at joint k: the mass felt pushing along y (eq. 7.26)",
-            "A_z": "entry zz of Aₖ at joint k: the rotational inertia about joint k (eq. 7.26)",
-            "m_xy": "entry xy of Aₖ at joint k (the chart)",
-            "A_xz": "entry xz of Aₖ at joint k (the chart)",
-            "A_yz": "entry yz of Aₖ at joint k (the chart)",
+            "Aₖa": ("axis of percussion: the force that gives body k the acceleration a with the outboard bodies "
+                    f"attached (eq. 5.64-5.68); in the figure: A{kk} a"),
+            "Iₖa": f"axis of percussion of body k alone (eq. 5.64-5.68); in the figure: I{kk} a",
+            "polar of a (real conic)": ("polar of a with respect to the drawn real conic of Aₖ: Aₖa reflected "
+                                        "through the centre (section 10.2.3)"),
+            "entries of Aₖ at joint k / full value": "the chart: each entry of Aₖ (at joint k) after so many "
+                                                     "recursion steps, over its value with every outboard body",
+            "xx": "entry xx of Aₖ at joint k: the mass felt pushing along x (eq. 7.26)",
+            "yy": "entry yy of Aₖ at joint k: the mass felt pushing along y (eq. 7.26)",
+            "zz": "entry zz of Aₖ at joint k: the rotational inertia about joint k (eq. 7.26)",
+            "xy, xz, yz": "entries xy, xz, yz of Aₖ at joint k: the couplings between pushing and turning",
+            "recursion steps (outboard bodies)": "the chart's axis: how many outboard bodies the recursion for Aₖ includes (section 10.2.2)",
             "error": "‖Aₖ after so many steps − Aₖ‖ / ‖Aₖ‖ (the chart; section 10.2.2)",
             "E₀": "energy T + V of the chain at rest at t = 0",
             "T": "kinetic energy of the chain (eq. 1.9)",
@@ -487,9 +491,9 @@ class ArticulatedExplorer(Explorer):
             "W": "energy the joint damping has removed since t = 0: ∫ c q̇ᵀq̇ dt",
             "bodies": "number of bodies n",
             "outboard included": "bodies outboard of k the recursion for Aₖ includes, of all there are (section 10.2.2)",
-            "mₓ of Aₖ": "mass felt pushing body k along x at its joint (eq. 7.26)",
-            "m_y of Aₖ": "mass felt pushing body k along y at its joint (eq. 7.26)",
-            "A_z of Aₖ at joint k": "rotational inertia of Aₖ about joint k (eq. 7.26)",
+            "Aₖ: mass along x": "mass felt pushing body k along x at its joint: entry xx of Aₖ (eq. 7.26)",
+            "Aₖ: mass along y": "mass felt pushing body k along y at its joint: entry yy of Aₖ (eq. 7.26)",
+            "Aₖ: inertia about joint k": "rotational inertia of Aₖ about joint k: entry zz (eq. 7.26)",
             "effective centre of Aₖ": "the point where Aₖ has no coupling of force and turning: its conic's centre (eq. 7.26)",
             "centre of mass of body k": "the centre of Iₖ",
             "effective centre d/L (7.27)": "distance of body 1's effective centre from its joint, over L (straight chain; eq. 7.27)",
@@ -519,7 +523,7 @@ class ArticulatedExplorer(Explorer):
         self.chart = ax.figure.add_axes([0.71, 0.12, 0.27, 0.78])
         self.chart.grid(True, lw=0.3, alpha=0.5)
         self.chart.set_xlabel("recursion steps (outboard bodies)")
-        self.chart.set_title("$A_k$ at joint $k$ / full value", fontsize=11)
+        self.chart.set_title("entries of $A_k$ at joint $k$ / full value", fontsize=11)
 
     def make_artists(self, ax):
         """Create every artist once (links, pins, conics, axes, pole; chart lines).
@@ -794,6 +798,10 @@ class ArticulatedExplorer(Explorer):
             (lab["Ia"], line_candidates(st["axis_rigid"][k], box, fracs=(0.9, 0.1, 0.7, 0.3, 0.5))),
             (lab["polar"], line_candidates(self.polar.get_line(), box, fracs=(0.5, 0.3, 0.7, 0.1, 0.9))),
         ])
+        w = self.controls["outboard bodies"]          # the slider spans the bodies outboard of body 1
+        if w.max != n - 1:
+            with self._quietly():
+                w.max = n - 1
         # readout
         Ak = st["A"][k]
         from planargeo.scenes.articulated import inertia_at
@@ -808,8 +816,8 @@ class ArticulatedExplorer(Explorer):
         out = {
             "bodies": n,
             "outboard included": f"{min(st['outboard'], n - 1 - k)} of {n - 1 - k}",
-            "mₓ of Aₖ": float(Aj[0, 0]), "m_y of Aₖ": float(Aj[1, 1]),
-            "A_z of Aₖ at joint k": float(Aj[2, 2]),
+            "Aₖ: mass along x": float(Aj[0, 0]), "Aₖ: mass along y": float(Aj[1, 1]),
+            "Aₖ: inertia about joint k": float(Aj[2, 2]),
             "effective centre of Aₖ": point_text([c[1], -c[0], 1.0], zero=zero),
             "centre of mass of body k": point_text([st["centre_rigid"][k][1], -st["centre_rigid"][k][0], 1.0],
                                                    zero=zero),
@@ -827,6 +835,11 @@ class ArticulatedExplorer(Explorer):
         out.update({"t": st["t"], "energy T + V": E, "dissipated W": Wd, "T + V + W": E + Wd,
                     "initial energy E₀": E0, C_ROW: st["n"] * st["c"]})
         return out
+
+
+def _sub(i: int) -> str:
+    """``i`` in subscript digits."""
+    return str(i).translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
 
 
 def _fade(artist, alpha):

@@ -23,7 +23,7 @@ last computed state (the split is derived from it once, when first shown).
 Labels are placed where they fit (none overlaps another or leaves the axes);
 the *focus* control picks one link (its poles, bias terms and articulated
 inertia) or one joint (its force and T/U split): those are drawn labelled, in
-bold, the rest faded, and the view zooms to them.
+bold, the rest faded (the whole chain stays in view).
 
 By hand: drag the end of link ``i`` to set joint ``i`` (its angle, or its
 slide for a prismatic joint), keeping the others; drag the base to move the
@@ -49,7 +49,7 @@ import ipywidgets as W
 import numpy as np
 from matplotlib.lines import Line2D
 
-from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist, clip_line, conic_geometry
+from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist, clip_line
 from planargeo.draw.mechanism import LabelPlacer, ScaleBar
 from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.errors import InputError, SizeLimitError
@@ -282,7 +282,7 @@ class ChainExplorer(Explorer):
         c[TIME] = Step(0.0, self.duration, 0.01, 0.0, "time t (s)").make(TIME)
         return c
 
-    def __init__(self, *, duration: float = 120.0, fps: int = 25, **kw):
+    def __init__(self, *, duration: float = 60.0, fps: int = 25, **kw):
         d = float(duration) if isinstance(duration, (int, float)) and not isinstance(duration, bool) \
             else math.nan
         if not 0.0 < d <= DURATION_MAX:
@@ -518,7 +518,8 @@ class ChainExplorer(Explorer):
         def rhs(_t, y):
             return np.concatenate([y[n:], forward_dynamics(model, y[:n], y[n:], tau)])
 
-        return cached(self._motions, key, lambda: Motion(rhs, np.concatenate([q0, qd0]), CHUNK))
+        return cached(self._motions, key,
+                      lambda: Motion(rhs, np.concatenate([q0, qd0]), CHUNK, rtol=1e-8, atol=1e-10))
 
     def compute(self, v, changed):
         """The state of the controls: the chain solved by the ABA at the time ``t`` shown.
@@ -666,24 +667,38 @@ class ChainExplorer(Explorer):
     def explain(self) -> dict:
         """Every symbol and readout name on screen with its one-line meaning and thesis equation.
 
+        Each indexed symbol (``vᵢ``) lists the ones the figure can show for the chain shown
+        (``v₁ … vₙ``).
+
         Returns
         -------
         dict
             ``{symbol or readout name: meaning}``.
         """
-        return {
-            "vᵢ": "velocity pole of link i: the point it turns about (twist of link i, eq. 4.5)",
-            "aᵢ": "acceleration pole of link i: the point with no acceleration (eq. 4.6)",
-            "κᵢ": "bias acceleration of link i: its acceleration from the joint speeds alone (eq. 3.33)",
-            "pᵢ": "bias force of link i: the line of its velocity-product force (eq. 3.11)",
-            "fᵢ": "force of joint i on link i, as its line of action: fᵢ = Aᵢ aᵢ + dᵢ (eq. 3.13)",
-            "TQᵢ": "active part of fᵢ, along the axis of percussion of joint i's motion (eq. 6.38, 6.104)",
-            "Rμᵢ": "reaction part of fᵢ: the force the joint takes without doing work (eq. 6.38)",
-            "sψᵢ": "part of aᵢ along joint i's motion space, ψᵢ = Tᵢᵀ aᵢ (eq. 6.44, 6.100)",
-            "Uγᵢ": "reactive part of aᵢ, in the quake space Uᵢ (eq. 6.44, 6.45, 6.101)",
-            "Aᵢ": "articulated inertia of link i with the links beyond it, drawn as a conic (eq. 3.38)",
+        st = getattr(self, "state", None)
+        n = st["model"].N if st is not None else int(self.values["links"])
+
+        def here(sym):
+            return "; in the figure: " + ", ".join(f"{sym}{sub(i)}" for i in range(1, n + 1))
+
+        kind = {"revolute": "rad/s²", "prismatic": "m/s²"}
+        out = {
+            "vᵢ": "velocity pole of link i: the point it turns about (twist of link i, eq. 4.5)" + here("v"),
+            "aᵢ": "acceleration pole of link i: the point with no acceleration (eq. 4.6)" + here("a"),
+            "κᵢ": "bias acceleration of link i: its acceleration from the joint speeds alone (eq. 3.33)" + here("κ"),
+            "pᵢ": "bias force of link i: the line of its velocity-product force (eq. 3.11)" + here("p"),
+            "fᵢ": "force of joint i on link i, as its line of action: fᵢ = Aᵢ aᵢ + dᵢ (eq. 3.13)" + here("f"),
+            "TQᵢ": "active part of fᵢ, along the axis of percussion of joint i's motion (eq. 6.38, 6.104)"
+                   + here("TQ"),
+            "Rμᵢ": "reaction part of fᵢ: the force the joint takes without doing work (eq. 6.38)" + here("Rμ"),
+            "sψᵢ": "part of aᵢ along joint i's motion space, ψᵢ = Tᵢᵀ aᵢ (eq. 6.44, 6.100)" + here("sψ"),
+            "Uγᵢ": "reactive part of aᵢ, in the quake space Uᵢ (eq. 6.44, 6.45, 6.101)" + here("Uγ"),
+            "Aᵢ": "articulated inertia of link i with the links beyond it, drawn as a conic (eq. 3.38)" + here("A"),
             "q̈ᵢ": "acceleration of joint i: angular (rad/s²) or along the slide (m/s²) (eq. 3.41)",
             "i": "index of a link and of the joint at its inner end (joint i carries link i)",
+            "link i, joint i": "the focused link or joint (focus); in the figure: "
+                               + ", ".join(f"link {i}, joint {i}" for i in range(1, n + 1)),
+            "∞": "an arrow at the edge marked ∞ points to a pole out of view: far away, or at infinity",
             "t": "time since the state the controls set (s)",
             "links": "number of links in the chain",
             "t (s)": "time since the state the controls set",
@@ -694,6 +709,11 @@ class ChainExplorer(Explorer):
             "energy drift (J)": "E − E₀ − W: zero but for the integration error (the chain has no constraint)",
             "|base force| (N)": "size of the force f₁ the base puts on link 1 (eq. 3.13)",
         }
+        if st is not None:
+            for k in sorted({0, n - 1}):
+                j = st["model"].joints[k].kind
+                out[f"q̈{sub(k + 1)}"] = f"acceleration of joint {k + 1} ({j}, {kind[j]}; eq. 3.41)"
+        return out
 
     def _focus(self, n: int):
         """``("link" | "joint", index)`` of the focus, or None (all; or beyond the chain)."""
@@ -841,50 +861,21 @@ class ChainExplorer(Explorer):
         return min(motion.reached, d)
 
     # -- drawing ---------------------------------------------------------------------
-    def _view(self, st, focus) -> tuple[float, float, float, float]:
-        """The view: the whole chain's reach about the ground origin, or fitted to the focused element.
+    def _view(self, st, focus=None) -> tuple[float, float, float, float]:
+        """The view: the whole chain's reach about the ground origin (with or without a focus).
 
         Centred on the fixed origin, not on the base: a view that followed the base would move
         under the mouse while the base is dragged (and the drag would run away).  The reach is
         rounded up to half metres, so that it changes in steps, not under every move of a drag.
         The view depends on the state alone: after a drag it is what a fresh explorer with the
-        same values shows.
+        same values shows.  A focus fades the rest and labels the focused element; it does not
+        zoom (the whole chain stays in view).
         """
         model, w = st["model"], st["w"]
         chain = np.vstack([np.asarray(w.origin[0], float)[None, :], w.pose[:, :2], self._ends(w)])
-        if focus is None:
-            reach = max(model.N + 0.4, float(np.max(np.hypot(*chain.T))) + 0.4)
-            reach = math.ceil(2.0 * reach - 1e-9) / 2.0
-            return (-reach, reach, -reach, reach)
-        kind, i = focus
-        pts = [w.pose[i, :2], self._ends(w)[i]]
-        mid = 0.5 * (pts[0] + pts[1])
-        pts += [mid + (1.2, 1.2), mid - (1.2, 1.2)]          # at least a 2.4 m view
-        v = self.values
-        for arts, flag, _sym, kind_, per, *_ in self._layers:
-            if per != kind or not v[flag] or not arts[i].get_visible():
-                continue
-            if kind_ == "point":
-                xy = arts[i].get_xy()
-                if xy is not None:
-                    pts.append(xy)
-            elif kind_ == "line":
-                seg = arts[i].get_arrow()
-                if seg is not None:
-                    pts += list(seg)
-            else:
-                g = conic_geometry(arts[i].get_conic())
-                if "affine" in g and g["kind"] == "ellipse":
-                    aff = g["affine"]
-                    pts += [(aff @ [c, s, 1.0])[:2] for c, s in ((1, 0), (-1, 0), (0, 1), (0, -1))]
-        P = np.asarray(pts, float)
-        # poles far from the focused link do not pull the view away (they get an edge arrow)
-        P = P[np.hypot(*(P - mid).T) <= 4.0]
-        lo, hi = P.min(axis=0), P.max(axis=0)
-        m = 0.15 * float(np.max(hi - lo))
-        lo, hi = lo - m, hi + m
-        c, half = 0.5 * (lo + hi), 0.5 * float(np.max(hi - lo))
-        return (c[0] - half, c[0] + half, c[1] - half, c[1] + half)
+        reach = max(model.N + 0.4, float(np.max(np.hypot(*chain.T))) + 0.4)
+        reach = math.ceil(2.0 * reach - 1e-9) / 2.0
+        return (-reach, reach, -reach, reach)
 
     def render(self, st):
         """Update links, overlays, focus, labels and view to the state ``st``; return the readout.

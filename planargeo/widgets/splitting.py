@@ -141,7 +141,7 @@ class SplittingExplorer(Explorer):
         }
 
     def adjust(self, values, changed):
-        """The split joint stays on the chain (``2 <= i+1 <= n``): the slider shows the joint used.
+        """The split joint stays on the chain (``2 <= i+1 <= n``; its slider spans 2 to ``n`` once shown).
 
         Parameters
         ----------
@@ -179,6 +179,13 @@ class SplittingExplorer(Explorer):
         -------
         dict
         """
+        v = self.values
+        n = int(v["bodies n"])
+        i = min(int(v["split at joint"]), n) - 1
+
+        def sub(j):
+            return str(j).translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
+
         return {
             "n": "number of bodies in the chain (mass 1 kg each, joints L = 1 m apart)",
             "i": "the chain is split at joint i+1: bodies 1…i below it, i+1…n above it",
@@ -188,15 +195,16 @@ class SplittingExplorer(Explorer):
             "φ": "bend: the angle of every body relative to the one before it (eq. 7.47)",
             "τ": "size of the couple on the tip (N·m)",
             "g": "gravity, along −y (m/s²)",
-            "−fₙ₊₁": "the couple on the tip, from a fictitious joint n+1 (eq. 7.44)",
-            "aⱼ": "acceleration of body j, drawn as its pole: the point with no acceleration (eq. 4.6)",
+            "−fₙ₊₁ on the tip": f"the couple on the tip, from a fictitious joint n+1 (eq. 7.44); in the figure: -f{sub(n + 1)} on the tip",
+            "aⱼ": ("acceleration of body j, drawn as its pole: the point with no acceleration (eq. 4.6); in the figure: "
+                   + ", ".join(f"a{sub(j)}" for j in range(1, n + 1))),
             "aᵢ": "acceleration of body i, straight from the split (eq. 7.54)",
             "aᵢ₊₁": "acceleration of body i+1, the first body of the free-floating chain (eq. 7.54)",
             "aₙ": "acceleration of the tip body n (eq. 7.46 for n = 2)",
-            "fᵢ₊₁": "force of the split joint i+1 on body i+1, drawn as its line of action (eq. 7.56)",
+            "fᵢ₊₁": f"force of the split joint i+1 on body i+1, drawn as its line of action (eq. 7.56); in the figure: f{sub(i + 1)}",
             "Λᵢ⁻¹": "articulated mobility of body i in the constrained chain 1…i (eq. 7.38a)",
             "bᵢ": "bias acceleration of body i in the constrained chain: its acceleration with no force at joint i+1 (eq. 7.38a)",
-            "centre of Λᵢ⁻¹": "where a couple on body i alone turns it: the pole of −Λᵢ⁻¹ [0, 0, 1] (section 7.5)",
+            "centre of Λᵢ⁻¹": f"where a couple on body i alone turns it: the pole of −Λᵢ⁻¹ [0, 0, 1] (section 7.5); in the figure: centre of Λ{sub(i)}⁻¹",
             "split": "the joint i+1 where the chain is split",
             "q̈": "joint accelerations of all joints, by chain splitting at every joint (eq. 6.110)",
             "η": "size ratio η = L/ρ (eq. 7.49)",
@@ -409,6 +417,10 @@ class SplittingExplorer(Explorer):
             (lab["f"], line_candidates(f, (x0, x1, y0, y1))),
             (lab["centre"], point_candidates(c) if show_c else []),
         ])
+        w = self.controls["split at joint"]           # the split slider spans the chain's joints 2..n
+        if w.max != n:
+            with self._quietly():
+                w.max = n
         Lam = st["Lambda_inv"][i - 1]
         out = {
             "split at joint": i + 1,
