@@ -715,6 +715,7 @@ class SliderCrankExplorer(Explorer):
             "a₁": "acceleration pole of the crank: its point without acceleration (section 4.6)",
             "a₂": "acceleration pole of the rod (section 4.6)",
             "a₃": "acceleration pole of the piston: at infinity, it slides (section 4.6)",
+            "∞": "the pole named beside this arrow lies at infinity, in the arrow's direction (a translation, 4.10)",
             "at top dead centre": "the crank points up, in line with the rod: a push on the piston cannot turn it",
             "at bottom dead centre": "the crank points down, in line with the rod",
             "passing top dead centre": "the crank is turning through the top dead centre",

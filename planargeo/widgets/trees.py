@@ -503,6 +503,7 @@ class TreeExplorer(Explorer):
             "q̈₁ (body 1)": "angular acceleration of joint 1, the pivot of body 1 (9.43, 9.75)",
             "largest |q̈ᵢ|": "largest joint acceleration of the nine joints (9.43, 9.75)",
             "singular poses": "poses passed where BᵀGΛ⁻¹GᵀB (9.70) loses rank: a loop lies flat on one line",
+            "∞": "the pole named beside this arrow lies at infinity, in the arrow's direction (a translation, 4.10)",
             "1 … 9": "body numbers of Fig 9.1",
         }
         for i in range(N):
