@@ -10,7 +10,7 @@ artist's data costs microseconds.
 Each element's ``id`` is the artist's position among the axes' children (an
 explorer creates its artists once, so the position is stable), or its ``gid``
 when it has one; its ``symbol`` is its label text, and its description comes from
-the explorer's :meth:`~planargeo.widgets.base.Explorer.explain` table.
+the explorer's ``explain()`` table.
 """
 from __future__ import annotations
 

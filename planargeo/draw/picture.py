@@ -625,7 +625,7 @@ class Picture:
         Parameters
         ----------
         id : str
-            The handle's name (the explorer's :class:`~planargeo.widgets.base.Handle`).
+            The handle's name (the name of one of the explorer's handles).
         xy : (float, float)
             Where it is.
         symbol, desc : str
