@@ -174,12 +174,12 @@ def _math_to_unicode(m: str) -> str:
 
 
 def plain_text(s: str) -> str:
-    """Text with matplotlib's ``$...$`` mathtext turned into Unicode (subscripts as subscripts).
+    r"""Text with matplotlib's ``$...$`` mathtext turned into Unicode (subscripts as subscripts).
 
     Parameters
     ----------
     s : str
-        A label, e.g. ``"$v_{1}$"`` or ``"$R_2\\mu_2$"``.
+        A label, e.g. ``"$v_{1}$"`` or ``"$R_2\mu_2$"``.
 
     Returns
     -------

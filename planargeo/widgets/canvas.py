@@ -123,6 +123,13 @@ class PictureCanvas(anywidget.AnyWidget):
         -------
         (bool, str)
             Whether it was taken, and the reason when it was not.
+
+        Raises
+        ------
+        Exception
+            Whatever ``on_drag`` or ``on_view`` raise other than a
+            :class:`~planargeo.errors.PlanargeoError` (a refusal); the widget answers
+            such a request as not taken, and the exception goes no further.
         """
         try:
             if not isinstance(msg, dict):
