@@ -34,7 +34,7 @@ def test_play_runs_a_minute_from_the_default_with_the_drifts_it_states():
     E0 = sum(energy(ex.state["model"], ex.state["q"], ex.state["qd"]))
     ex.advance(60, seconds=60.0)
     r = ex.readout_values
-    assert ex.message == "" and ex.values["t (s)"] == pytest.approx(60.0)
+    assert ex.message == "" and float(ex.values["t (s)"]) == pytest.approx(60.0)
     m, q, qd = ex.state["model"], ex.state["q"], ex.state["qd"]
     E = sum(energy(m, q, qd))
     assert r["energy drift ΔE/E₀"] == pytest.approx((E - E0) / E0, rel=1e-9, abs=1e-15)
@@ -89,3 +89,19 @@ def test_every_readout_row_and_label_is_explained_without_code_names():
     ex.set(loops="open (Fig 9.1)")
     assert "F₁" not in ex.focus_options() and ex.values["focus"] == "all"
     assert set(ex.disabled(ex.values)) == {"t (s)"}
+
+
+def test_the_time_field_is_read_only_bounded_and_exact():
+    from planargeo.widgets.slider_crank import SliderCrankExplorer
+
+    for ex in (TreeExplorer(display="agg"), SliderCrankExplorer(display="agg")):
+        assert ex.controls["t (s)"].disabled and "Play" in ex.disabled(ex.values)["t (s)"]
+        ex.advance(3)
+        t = 3 * ex.play_dt
+        assert float(ex.values["t (s)"]) == pytest.approx(t, abs=1e-9) and ex.readout_values["t"] == float(
+            ex.values["t (s)"])
+        shown = dict(ex.values)
+        ex.set(**{"t (s)": "1e6"})                                  # beyond the end: refused by name
+        assert "t (s)" in ex.message and ex.values == shown
+        ex.set(**{"t (s)": "soon"})
+        assert "t (s)" in ex.message and ex.values == shown

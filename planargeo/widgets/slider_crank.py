@@ -63,6 +63,53 @@ CHECKPOINT = 0.02
 T_END = 10.0
 
 
+def time_text(t: float) -> str:
+    """The scene time ``t`` (s) as the read-only time field holds it: to the nanosecond, no trailing zeros.
+
+    Parameters
+    ----------
+    t : float
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> time_text(0.0), time_text(0.1 + 0.2), time_text(59.99999999999873)
+    ('0', '0.3', '60')
+    """
+    text = f"{round(float(t), 9):.9f}".rstrip("0").rstrip(".")
+    return "0" if text in ("", "-0") else text
+
+
+def time_value(text, limit: float) -> float:
+    """The scene time (s) of the time field's ``text``, or :class:`InputError` naming the field and its range.
+
+    Parameters
+    ----------
+    text : str or float
+    limit : float
+        The end of the time (s).
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> time_value("2.5", 10.0)
+    2.5
+    """
+    try:
+        t = float(text)
+    except (TypeError, ValueError):
+        raise InputError(f"t (s) must be a time in seconds, got {text!r}") from None
+    if not 0.0 <= t <= limit + 1e-9:
+        raise InputError(f"t (s) must lie between 0 and {limit:g} s, got {text!r}")
+    return t
+
+
 def symbol_text(sym: str) -> str:
     """``"f_2"`` -> ``"f₂"``: a reaction's symbol as drawn.
 
@@ -399,7 +446,8 @@ class SliderCrankExplorer(Explorer):
             "crank angle (deg)": Step(-180, 180, 1, 23.0,
                                       "crank angle ψ at t = 0 (°)").make("crank angle (deg)"),
             "crank speed": Step(-100, 100, 0.5, 20.0, "crank speed ψ̇ at t = 0 (rad/s)").make("crank speed"),
-            "t (s)": Step(0.0, T_END, 0.001, 0.0, "t (s)").make("t (s)"),
+            "t (s)": W.Text(value="0", description="t (s)", disabled=True,
+                            tooltip="set by Play (a new initial state starts it at 0)"),
             "drive": W.ToggleButtons(options=("free", "constant-speed"), value="free", description="crank"),
             "rod length": Step(1.0, 8.0, 0.01, 5.0, "rod length l (m)").make("rod length"),
             "gravity": Step(0.0, 20.0, 0.01, 9.81, "g (m/s²)").make("gravity"),
@@ -491,8 +539,8 @@ class SliderCrankExplorer(Explorer):
         -------
         dict
         """
-        if set(changed) & set(INITIAL) and "t (s)" not in changed and values["t (s)"] != 0.0:
-            return {"t (s)": 0.0}
+        if set(changed) & set(INITIAL) and "t (s)" not in changed and values["t (s)"] != "0":
+            return {"t (s)": "0"}
         return {}
 
     def play_step(self, values, dt):
@@ -510,8 +558,8 @@ class SliderCrankExplorer(Explorer):
         dict or None
             The next time, None at the end of the time slider.
         """
-        t = float(values["t (s)"]) + float(dt)
-        return None if t > self.controls["t (s)"].max else {"t (s)": t}
+        t = time_value(values["t (s)"], T_END) + float(dt)
+        return None if t > T_END + 1e-9 else {"t (s)": time_text(t)}
 
     # ------------------------------------------------------------------ state
     def _run_state(self, model, run, t, l, drive):
@@ -576,7 +624,7 @@ class SliderCrankExplorer(Explorer):
             q0, qd0, sol0, _h = slider_crank_solve(model, psi0, float(v["crank speed"]), r, l, thick, drive)
             run = {"ck": [(psi0, float(v["crank speed"]))], "drift": [0.0], "passed": [],
                    "E0": float(sum(energy(model, data=sol0.data)))}
-        t = float(v["t (s)"])
+        t = time_value(v["t (s)"], T_END)
         psi, psidot, drift, passed = self._run_state(model, run, t, l, drive)
         q, qd, sol, h = slider_crank_solve(model, psi, psidot, r, l, thick, drive)
         E = float(sum(energy(model, data=sol.data)))

@@ -43,7 +43,7 @@ from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_m
 from planargeo.simulate.integrate import energy
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 from planargeo.widgets.slider_crank import (CONTACT_COLOR, LABEL_PT, ReactionGlyph, key_box, pin_box, place_labels,
-                                            symbol_text)
+                                            symbol_text, time_text, time_value)
 
 __all__ = ["TreeExplorer"]
 
@@ -112,8 +112,8 @@ class TreeExplorer(Explorer):
         -------
         dict
         """
-        t = Step(0.0, T_END, 0.01, 0.0, "t (s)").make("t (s)")
-        t.disabled = True                     # set by Play
+        t = W.Text(value="0", description="t (s)", disabled=True,
+                   tooltip="set by Play (a new initial state starts it at 0)")
         return {
             "speed": Step(-3, 3, 0.05, DEFAULT_SPEED, "speed (rad/s)").make("speed"),
             "loops": W.ToggleButtons(options=("closed (Fig 9.2)", "open (Fig 9.1)"), value="closed (Fig 9.2)",
@@ -273,8 +273,8 @@ class TreeExplorer(Explorer):
         -------
         dict
         """
-        if set(changed) & set(INITIAL) and "t (s)" not in changed and values["t (s)"] != 0.0:
-            return {"t (s)": 0.0}
+        if set(changed) & set(INITIAL) and "t (s)" not in changed and values["t (s)"] != "0":
+            return {"t (s)": "0"}
         return {}
 
     def play_step(self, values, dt):
@@ -290,8 +290,8 @@ class TreeExplorer(Explorer):
         dict or None
             The next time, None at the end of the time slider.
         """
-        t = float(values["t (s)"]) + float(dt)
-        return None if t > self.controls["t (s)"].max else {"t (s)": t}
+        t = time_value(values["t (s)"], T_END) + float(dt)
+        return None if t > T_END + 1e-9 else {"t (s)": time_text(t)}
 
     def _run_state(self, model, run: dict, t: float):
         """``(q, qd, drift, events)`` at scene time ``t`` of ``run`` (its checkpoints extended in place).
@@ -363,7 +363,7 @@ class TreeExplorer(Explorer):
         run = self._runs.get(key)
         if run is None:
             run = {"ck": [(pose[0], speed * pose[1])], "drift": [0.0], "events": []}
-        t = float(v["t (s)"])
+        t = time_value(v["t (s)"], T_END)
         q, qd, drift, events = self._run_state(model, run, t)
         sol = tree_solve(model, q, qd)                               # 9.5 closed, 9.39-9.43 open
         E = float(sum(energy(model, data=sol.data)))
