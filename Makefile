@@ -62,7 +62,7 @@ browser:
 #   APP_IP        127.0.0.1 (this computer only); any other address (0.0.0.0: every network of this
 #                 computer, e.g. a classroom's) also turns on a fresh random token, printed in the URL
 #   APP_VISITORS  seats: visitor APP_VISITORS + 1 gets "The class is full" (0: no limit); the default
-#                 is k_max of benchmarks/results/classroom.md on a 2-core, 24 GiB machine
+#                 is chosen from benchmarks/results/classroom.md (2 cores, 24 GiB; docs/serving.md)
 #   APP_IDLE      seconds without activity (drag, slider, Play) after which a visitor's seat is freed
 #   APP_TOKEN     --token to ask for a token on 127.0.0.1 too
 APP_IP       ?= 127.0.0.1

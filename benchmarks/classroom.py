@@ -454,6 +454,12 @@ def _f(x, fmt="{:.0f}"):
     return "–" if x is None else fmt.format(x)
 
 
+def makefile_seats() -> str:
+    """``APP_VISITORS``'s default in the Makefile (the seat limit of ``make app``)."""
+    m = re.search(r"^APP_VISITORS\s*\?=\s*(\d+)", (REPO / "Makefile").read_text(encoding="utf-8"), re.M)
+    return m.group(1) if m else "?"
+
+
 def _answered(r: dict) -> str:
     n = r.get("play_answered", r["served"])
     return "" if n >= r["served"] else f" ({r['served'] - n} pages did not answer)"
@@ -530,12 +536,17 @@ def report(results: list[dict], meta: dict, v: dict, skipped: list[dict] = ()) -
             f"{est['cpu_open_s']:.1f} s of a core per visitor, a drag step {est['cpu_drag_step_ms']:.0f} ms, a "
             f"second of Play {est['cpu_play_per_s']:.2f} core-seconds. On {meta['cpus']} cores with nothing else to "
             f"do, k visitors dragging at once wait about k × {est['cpu_drag_step_ms']:.0f} ms / {meta['cpus']} per "
-            f"step, which reaches 1 s at k ≈ {est['k_drag']}; everyone's Play keeps every frame up to "
+            f"step, which reaches 1 s at k ≈ {est['k_drag']} (an upper bound: the Voila server's own work, one "
+            f"process for all visitors, is left out); everyone's Play keeps every frame up to "
             f"k ≈ {est['k_play']} (beyond, frames are dropped and the motion stays in real time); "
             f"k visitors arriving at once wait about k × {est['cpu_open_s'] / meta['cpus']:.1f} s for their page."]
-    lines += ["* **The seat limit:** `make app` admits `APP_VISITORS` visitors (default in the Makefile, chosen "
-              "from these numbers: see docs/serving.md); visitor `APP_VISITORS` + 1 gets the page “The class is "
-              "full” (HTTP 503) instead of slowing everyone down (`app/config/planargeo_classroom.py`).",
+    seats = makefile_seats()
+    lines += [f"* **The seat limit:** `make app` admits `APP_VISITORS` visitors (the Makefile's default: {seats}, "
+              f"below k = {full['k'] if full else '–'}, where this shared machine was full, and below the "
+              f"k ≈ {est.get('k_play', '–')} at which 2 cores doing nothing else start dropping Play frames); "
+              "visitor `APP_VISITORS` + 1 gets the page “The class is full” (HTTP 503) instead of slowing everyone "
+              "down (`app/config/planargeo_classroom.py`). How to choose it for another computer: "
+              "docs/serving.md.",
               "", f"Machine: {meta['machine']}, {meta['cpus']} CPUs, {meta['memory_gib']:.1f} GiB, "
               f"Python {meta['python']}, {meta['date']}{' (quick run)' if meta['quick'] else ''}. "
               "Raw numbers: `classroom.json`; chart: `classroom.png`. "
