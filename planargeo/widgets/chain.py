@@ -68,7 +68,7 @@ OVERLAYS = ("velocity poles", "acceleration poles", "bias terms", "internal forc
 JOINT_SETS = ("revolute", "prismatic", "alternating")
 TORQUE_ON = ("all joints", "first joint", "last joint")
 LIST_Q = "joint values (deg / m)"
-#: controls that set the initial state (a change discards the simulated trajectory)
+#: controls that set the initial state (a change starts the motion again at t = 0)
 INITIAL = ("links", "joints", "angle", "bend", "slide", "speed", "torque", "torque on", "gravity",
            "base x (m)", "base y (m)", LIST_Q, "joint speeds", "joint torques")
 #: the time control
