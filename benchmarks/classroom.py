@@ -2,8 +2,8 @@
 
 The app (``app/planargeo-app.ipynb``) is served as ``make app`` serves it (Voila with
 ``app/config/voila.py``, 127.0.0.1 only, a free port) but with no seat limit, and k
-visitors (k = 1, 5, 10, 20) open it at the same moment, each in its own browser
-context (own cookies, own page processes) of one headless Chromium.  Voila starts one kernel
+visitors (k = 1, 5, 10, 20) open it, arriving ``ARRIVAL_S`` = 2 s apart, each in its own
+browser context (own cookies, own page processes) of one headless Chromium.  Voila starts one kernel
 per visitor, which runs the whole app notebook (every explorer).  When every page shows
 all its explorers, all visitors at once
 
@@ -26,7 +26,11 @@ the default seat count of ``make app``, is the largest measured k below full.
 
 Here the browsers run on the same machine as the kernels and take CPU from them; in
 a classroom they run on the visitors' own computers, so these latencies are an upper
-bound for a server with this CPU.
+bound for a server with this CPU.  The kernels' CPU time per phase (opening, a drag
+step, a second of Play) gives an estimate for a machine that does nothing else
+(:func:`estimate`).  Memory and time are bounded: a k is tried only if it fits in the
+available memory, the browser is stopped if available memory falls under 2 GiB, and
+each phase has a time limit.
 
 Run::
 
