@@ -608,6 +608,17 @@ class ArticulatedExplorer(Explorer):
         n = NMAX if w is None or getattr(self, "state", None) is None else int(w.value)
         return [f"body {i}" for i in range(1, n + 1)]
 
+    def mechanism_points(self):
+        """Points the view must hold: every joint of the chain and the tip (the base's rule tests).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``(n + 1, 2)``.
+        """
+        st = self.state
+        return np.zeros((0, 2)) if st is None else np.asarray(st["joints"], dtype=float).reshape(-1, 2)
+
     def _joints(self):
         st = self.state
         return None if st is None else st["joints"]

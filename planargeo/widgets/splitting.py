@@ -303,6 +303,17 @@ class SplittingExplorer(Explorer):
 
         return [Handle("split", split_where, split_drag), Handle("tip", tip_where, tip_drag)]
 
+    def mechanism_points(self):
+        """Points the view must hold: every joint of the chain and the tip (the base's rule tests).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``(n + 1, 2)``.
+        """
+        st = self.state
+        return np.zeros((0, 2)) if st is None else np.asarray(st["joints"], dtype=float).reshape(-1, 2)
+
     def compute(self, v, changed):
         """Mobilities, the split solution and every body's acceleration.
 
