@@ -118,7 +118,7 @@ class VoilaServer(LabServer):
         Scratch folder for configuration and the log.
     """
 
-    def __init__(self, notebook: Path, tmp: Path):
+    def __init__(self, notebook: Path, tmp: Path, app_config: bool = True):
         self.root = notebook.parent
         self.port = _free_port()
         self.url = f"http://127.0.0.1:{self.port}"
@@ -129,17 +129,23 @@ class VoilaServer(LabServer):
                    MPLBACKEND="module://matplotlib_inline.backend_inline",
                    PYDEVD_DISABLE_FILE_VALIDATION="1")
         env.pop("JUPYTER_PLATFORM_DIRS", None)
-        cmd = voila_command(notebook, self.port)
+        cmd = voila_command(notebook, self.port, app_config=app_config)
         self.log = open(tmp / "voila.log", "w")
         self.proc = subprocess.Popen(cmd, env=env, stdout=self.log, stderr=subprocess.STDOUT,
                                      cwd=self.root)
         self._wait(path="/api/status", timeout=90.0)
 
 
-def voila_command(notebook: Path, port: int | None = None) -> list[str]:
-    """The command line ``make app`` runs: Voila on ``notebook``, 127.0.0.1 only, no browser."""
+def voila_command(notebook: Path, port: int | None = None, app_config: bool = True) -> list[str]:
+    """The command line ``make app`` runs: Voila on ``notebook``, 127.0.0.1 only, no browser.
+
+    With ``app_config``, the app's configuration (``app/config/voila.py``: seats, culling,
+    the offline page template); without it, the caller's own (``JUPYTER_CONFIG_DIR``).
+    """
     cmd = [str(Path(sys.executable).parent / "voila"), str(notebook), "--no-browser",
            "--Voila.ip=127.0.0.1", "--theme=light"]
+    if app_config:
+        cmd.append(f"--Voila.config_file_paths={Path(__file__).resolve().parents[1] / 'app' / 'config'}")
     if port is not None:
         cmd.append(f"--port={port}")
     return cmd

@@ -112,7 +112,7 @@ def serve_app(tmp: Path, seats: int = 0, idle: float | None = None,
     if cull_interval is not None:
         lines.append(f"c.MappingKernelManager.cull_interval = {float(cull_interval)!r}")
     (cfg / "voila.py").write_text("\n".join(lines) + "\n")
-    return VoilaServer(notebook, tmp)
+    return VoilaServer(notebook, tmp, app_config=False)   # its own config loads the app's
 
 
 def app_explorers(notebook: Path = APP) -> list[str]:

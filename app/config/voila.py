@@ -29,3 +29,9 @@ c.VoilaExecutor.iopub_timeout = 60
 
 # never send a traceback to the page
 c.VoilaConfiguration.show_tracebacks = False
+
+# the page loads nothing from outside the server: Voila's lab template without its CDN links
+# (app/share/jupyter/voila/templates/planargeo); template folders are looked up on JUPYTER_PATH
+_share = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "share", "jupyter")
+os.environ["JUPYTER_PATH"] = os.pathsep.join(p for p in (_share, os.environ.get("JUPYTER_PATH")) if p)
+c.VoilaConfiguration.template = "planargeo"
