@@ -177,7 +177,7 @@ class CarExplorer(Explorer):
     scale = 1.0
     units = {"speed V": "m/s", "heading θ": "°", "yaw rate ω": "rad/s", "yaw acceleration ω̇": "rad/s²",
              "rear tyre force μ₁": "N", "front tyre force μ₂": "N", "steering angle": "°",
-             "acceleration of G": "m/s²", "friction limit μ·g": "m/s²", "kinetic energy K": "J",
+             "lateral acceleration at G": "g", "acceleration of G": "m/s²", "friction limit μ·g": "m/s²", "kinetic energy K": "J",
              "drive power": "W", "rate of change of K": "W", "tyres": "—"}
 
     def __init__(self, **kw):
@@ -510,6 +510,7 @@ class CarExplorer(Explorer):
             "rear tyre force μ₁": mu[0],
             "front tyre force μ₂": mu[1],
             "steering angle": math.degrees(x["steer"]),
+            "lateral acceleration at G": omega ** 2 * float(np.hypot(*x["cg"])) / G_ROAD,
             "acceleration of G": st["acc"],
             "friction limit μ·g": st["limit"],
             "tyres": ("slide: the car slides out" if st["slides"]
@@ -535,6 +536,7 @@ class CarExplorer(Explorer):
             "rear tyre force μ₁": "signed lateral force of the rear tyre along R₁, negative towards the ICR (6.133)",
             "front tyre force μ₂": "signed lateral force of the front tyre along R₂ (6.133)",
             "steering angle": "angle of the front wheels, whose axle meets the rear axle at the ICR (6.114)",
+            "lateral acceleration at G": "its part towards the ICR, ω² r_G, in units of g = 9.81 m/s²",
             "acceleration of G": "acceleration of the centre of gravity, r_G √(ω⁴ + ω̇²)",
             "friction limit μ·g": "the largest acceleration the tyres hold (friction coefficient μ times g)",
             "tyres": "whether the tyres hold the car on its circle, and how much of μ·g it uses",
