@@ -83,6 +83,10 @@ def test_outboard_bodies_follow_n():
     ex.set(**{"bodies n": 3})
     assert (ex.values["outboard bodies"], w.max) == (2, 2)
     assert ex.readout_values["outboard included"] == "2 of 2"
+    ex.set(**{"bodies n": 6, "outboard bodies": 5})               # both at once: the new n's range
+    assert ex.message == "" and (ex.values["outboard bodies"], w.max) == (5, 5)
+    ex.set(**{"bodies n": 2, "outboard bodies": 5})               # beyond the new n: follows it
+    assert ex.message == "" and (ex.values["outboard bodies"], w.max) == (1, 1)
     ex.set(**{"bodies n": 1})
     assert "no body outboard" in ex.disabled(ex.values)["outboard bodies"]
 

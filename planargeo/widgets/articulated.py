@@ -608,6 +608,35 @@ class ArticulatedExplorer(Explorer):
         n = NMAX if w is None or getattr(self, "state", None) is None else int(w.value)
         return [f"body {i}" for i in range(1, n + 1)]
 
+    def set(self, **values):
+        """Set several controls at once (the base's :meth:`~planargeo.widgets.base.Explorer.set`).
+
+        With ``bodies n`` among them, ``outboard bodies`` takes any value its widest range allows
+        (checked against the new ``n`` by :meth:`adjust`); its slider spans the shown chain after.
+
+        Parameters
+        ----------
+        **values
+            ``name=value`` for each control to set.
+
+        Returns
+        -------
+        Explorer
+            ``self``.
+        """
+        if "bodies n" not in values:
+            return super().set(**values)
+        w = self.controls["outboard bodies"]
+        with self._quietly():
+            w.max = NMAX - 1
+        try:
+            return super().set(**values)
+        finally:
+            n = int((self.shown_values or self.values)["bodies n"])
+            if w.max != n - 1 and w.value <= n - 1:
+                with self._quietly():
+                    w.max = n - 1
+
     def mechanism_points(self):
         """Points the view must hold: every joint of the chain and the tip (the base's rule tests).
 

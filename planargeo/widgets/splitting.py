@@ -303,6 +303,35 @@ class SplittingExplorer(Explorer):
 
         return [Handle("split", split_where, split_drag), Handle("tip", tip_where, tip_drag)]
 
+    def set(self, **values):
+        """Set several controls at once (the base's :meth:`~planargeo.widgets.base.Explorer.set`).
+
+        With ``bodies n`` among them, ``split at joint`` takes any value its widest range allows
+        (checked against the new ``n`` by :meth:`adjust`); its slider spans the shown chain after.
+
+        Parameters
+        ----------
+        **values
+            ``name=value`` for each control to set.
+
+        Returns
+        -------
+        Explorer
+            ``self``.
+        """
+        if "bodies n" not in values:
+            return super().set(**values)
+        w = self.controls["split at joint"]
+        with self._quietly():
+            w.max = NMAX
+        try:
+            return super().set(**values)
+        finally:
+            n = int((self.shown_values or self.values)["bodies n"])
+            if w.max != n and w.value <= n:
+                with self._quietly():
+                    w.max = n
+
     def mechanism_points(self):
         """Points the view must hold: every joint of the chain and the tip (the base's rule tests).
 
