@@ -27,7 +27,7 @@ import hypothesis.strategies as st
 import numpy as np
 
 from fuzz import strategies as S
-from fuzz.harness import FOREIGN, INCONSISTENT, NONFINITE, OK, PACKAGE, Target
+from fuzz.harness import FOREIGN, NONFINITE, OK, PACKAGE, Target
 
 #: Modules fuzzed by signature, with their group.
 SIGNATURE_MODULES = {
