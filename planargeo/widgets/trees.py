@@ -367,8 +367,9 @@ class TreeExplorer(Explorer):
         q, qd, drift, events = self._run_state(model, run, t)
         sol = tree_solve(model, q, qd)                               # 9.5 closed, 9.39-9.43 open
         E = float(sum(energy(model, data=sol.data)))
-        q0, qd0 = run["ck"][0]
-        E0 = float(sum(energy(model, q0, qd0)))
+        if "E0" not in run:                                         # the energy at t = 0, once per run
+            run["E0"] = E if t == 0.0 else float(sum(energy(model, *run["ck"][0])))
+        E0 = run["E0"]
         pose_now = sol.data.pose
         tips = pose_now[:, :2] + L * np.column_stack([np.cos(pose_now[:, 2]), np.sin(pose_now[:, 2])])
         st = {"closed": closed, "model": model, "q": q, "qd": qd, "length": L, "dof": dof, "sol": sol,
