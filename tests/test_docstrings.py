@@ -52,7 +52,7 @@ import planargeo
 #: the same session (s11: widgets, drawing, report/cli, loops, articulated mobility, chain
 #: splitting).  Checked all the same: a failure there is an expected
 #: failure listing the names.  Empty this set when they are done.
-PENDING: set[str] = {"planargeo.widgets.play", "planargeo.widgets.readout"}    # s24: being written
+PENDING: set[str] = set()
 
 
 # ---------------------------------------------------------------------------------------------

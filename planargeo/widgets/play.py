@@ -204,7 +204,13 @@ class PlayClock:
         self.last = self.clock() - float(lead)
 
     def due(self) -> float:
-        """Simulated seconds since the last call (the gap capped at :data:`MAX_CATCHUP` wall seconds)."""
+        """Simulated seconds since the last call (the gap capped at :data:`MAX_CATCHUP` wall seconds).
+
+        Returns
+        -------
+        float
+            Wall seconds since the last call (at most :data:`MAX_CATCHUP`) times the rate.
+        """
         now = self.clock()
         gap = min(max(now - self.last, 0.0), MAX_CATCHUP)
         self.last = now

@@ -89,6 +89,15 @@ def _components(x) -> list:
 def is_numeric(x: Any) -> bool:
     """True for a real number (not a boolean) or a non-empty vector of them: what takes a unit.
 
+    Parameters
+    ----------
+    x : Any
+        A readout value.
+
+    Returns
+    -------
+    bool
+
     Examples
     --------
     >>> is_numeric(2.0), is_numeric((1, 2)), is_numeric("at rest"), is_numeric(True)
@@ -106,6 +115,23 @@ def is_numeric(x: Any) -> bool:
 
 def split_units(unit, n: int) -> list[str]:
     """One unit per component of an ``n``-vector from a unit string or a tuple of them.
+
+    Parameters
+    ----------
+    unit : str or tuple of str
+        One common unit, or one per component.
+    n : int
+        Number of components.
+
+    Returns
+    -------
+    list of str
+        ``n`` units ("" for none).
+
+    Raises
+    ------
+    ValueError
+        A tuple whose length is not ``n`` (a programming error in an explorer's units).
 
     Examples
     --------
