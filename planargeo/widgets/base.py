@@ -736,6 +736,58 @@ class Explorer:
         """
         raise NotImplementedError
 
+    def scene_picture(self, state: Any, view=None):
+        """The picture of ``state``, built natively (optional; default None).
+
+        An explorer that draws its state as a :class:`~planargeo.draw.picture.Picture`
+        returns it here; in the page (``display="page"``) it is then drawn without any
+        matplotlib artist: :meth:`readout` gives the numbers, and exports draw the same
+        picture through matplotlib (:mod:`planargeo.draw.render`).  None: the picture is
+        read off the explorer's artists.
+
+        Parameters
+        ----------
+        state : Any
+            What :meth:`compute` returned.
+        view : (x0, x1, y0, y1), optional
+            The view the user zoomed or panned to (None: the explorer's own).
+
+        Returns
+        -------
+        Picture or None
+        """
+        return None
+
+    def readout(self, state: Any) -> dict[str, Any]:
+        """The readout of ``state`` without drawing (explorers with :meth:`scene_picture`).
+
+        Parameters
+        ----------
+        state : Any
+            What :meth:`compute` returned.
+
+        Returns
+        -------
+        dict
+            Readout entries, as :meth:`render` returns them.
+
+        Raises
+        ------
+        NotImplementedError
+            An explorer that draws only through its artists.
+        """
+        raise NotImplementedError(f"{type(self).__name__} has no readout() apart from render()")
+
+    @property
+    def native_page(self) -> bool:
+        """True when the page draws this explorer's own picture (no matplotlib artist involved)."""
+        return (self.display_mode == "page" and type(self).scene_picture is not Explorer.scene_picture
+                and type(self).readout is not Explorer.readout)
+
+    def _render(self, state: Any) -> dict[str, Any]:
+        """The readout of ``state``; the artists are updated unless the page draws the picture."""
+        return self.readout(state) if self.native_page else self.render(state)
+
     def adjust(self, values: dict[str, Any], changed: set[str]) -> dict[str, Any]:
         """Values of controls that follow the ``changed`` ones (default: none).
 
@@ -1201,6 +1253,10 @@ class Explorer:
         return path
 
     def _svg_bytes(self) -> bytes:
+        if self.native_page:  # the page's own picture, drawn by matplotlib
+            from planargeo.draw.render import picture_bytes
+
+            return picture_bytes(self.picture(), "svg")
         buf = io.BytesIO()
         # no date and fixed element ids: the same view always gives the same file
         with matplotlib.rc_context({"svg.hashsalt": "planargeo"}):
@@ -1208,6 +1264,10 @@ class Explorer:
         return buf.getvalue()
 
     def _png_bytes(self, dpi: float | None = None) -> bytes:
+        if self.native_page:
+            from planargeo.draw.render import picture_bytes
+
+            return picture_bytes(self.picture(), "png", dpi=dpi or self.dpi)
         buf = io.BytesIO()
         self.fig.savefig(buf, format="png", dpi=dpi or self.dpi, metadata={"Software": None})
         return buf.getvalue()
@@ -1277,6 +1337,15 @@ class Explorer:
             for k in range(frames):
                 if k and not self._frame(seconds):
                     break
+                if self.native_page:
+                    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+                    from planargeo.draw.render import figure
+
+                    canvas = FigureCanvasAgg(figure(self.picture()))
+                    canvas.draw()
+                    out.append(np.asarray(canvas.buffer_rgba())[..., :3].copy())
+                    continue
                 self.fig.canvas.draw()
                 out.append(np.asarray(self.fig.canvas.buffer_rgba())[..., :3].copy())
         finally:
@@ -1398,10 +1467,6 @@ class Explorer:
         """
         from planargeo.draw.from_axes import picture_from_axes
 
-        try:
-            explain = dict(self.explain())
-        except Exception:  # noqa: BLE001 - descriptions are a courtesy
-            explain = {}
         handles = []
         for h in self.all_handles():
             try:
@@ -1410,8 +1475,17 @@ class Explorer:
                 where = None
             if where is not None:
                 handles.append((h.name, where, f"drag to change {h.name}"))
-        return picture_from_axes(self.ax, explain=explain, view=getattr(self, "_page_view", None),
-                                 handles=handles).to_dict()
+        view = getattr(self, "_page_view", None)
+        pic = self.scene_picture(self.state, view) if self.state is not None else None
+        if pic is None:
+            try:
+                explain = dict(self.explain())
+            except Exception:  # noqa: BLE001 - descriptions are a courtesy
+                explain = {}
+            return picture_from_axes(self.ax, explain=explain, view=view, handles=handles).to_dict()
+        for name, where, desc in handles:
+            pic.handle(name, where, symbol=name, desc=desc)
+        return pic.to_dict()
 
     def _page_drag(self, name: str, x: float, y: float) -> None:
         """A drag request from the page: one update, or a refusal the page shows."""
@@ -1756,7 +1830,7 @@ class Explorer:
                     self.n_computes += 1
                     state = self.compute(values, changed | set(follow))
                 rendered = True
-                readout = dict(self.render(state))
+                readout = dict(self._render(state))
                 table = self._readout_html(readout)
                 message = (state.get("message", "") if isinstance(state, dict)
                            else getattr(state, "message", ""))
@@ -1847,7 +1921,7 @@ class Explorer:
         self._pending = False
         if rerender:  # a render that failed midway may have moved some artists
             try:
-                self.render(self.state)
+                self._render(self.state)
             except Exception as exc:  # noqa: BLE001
                 message += f"; redrawing the shown state failed ({type(exc).__name__}): {exc}"
         self._set_message(message)
