@@ -129,7 +129,17 @@ def test_lesson1_screw_sum_explorer():
     ex.set(x1=-1.0, y1=0.0, size1=1.0, x2=2.0, y2=0.0, size2=2.0)
     np.testing.assert_allclose(ex.readout_values["pole of sum"], ((1 * -1.0 + 2 * 2.0) / 3, 0.0))
     ex.set(size2=-1.0)                                    # exercise 2: opposite rotations
-    assert ex.readout_values["pole of sum"] == "at infinity"
+    ro = ex.readout_values
+    assert ro["case"] == "opposite rotations (4.13)"
+    # by hand, [y, -x, 1] per unit rotation: 1·[0, 1, 1] − 1·[0, -2, 1] = [0, 3, 0], a translation up
+    sum_ = np.array(ro["sum"], dtype=float)
+    np.testing.assert_allclose(sum_, [0.0, 3.0, 0.0], atol=1e-12)
+    from planargeo.geometry.projective import is_ideal
+    assert is_ideal(sum_)
+    # its pole is the point at infinity along Q1Q2 (the x axis), perpendicular to the translation
+    assert ro["pole of sum"].startswith("at infinity (direction (")
+    dx, dy = (float(t) for t in ro["pole of sum"].split("direction (")[1].rstrip(")").split(","))
+    assert math.isclose(abs(dx), 1.0) and dy == 0.0
 
 
 # ---------------------------------------------------- lesson 2: kinematics and equations of motion drawn
@@ -186,7 +196,7 @@ def test_lesson2_pendulum_in_the_explorer():
     assert math.isclose(ro["kinetic energy (J)"], 0.5 * (1 / 3) * 1.0**2)              # ½ (m L²/3) q̇²
     assert math.isclose(ro["potential energy (J)"], 9.81 * 0.5 * math.sin(q))          # m g y_c
     alpha = -9.81 * 0.5 * math.cos(q) / (1 / 3)
-    assert math.isclose(ro["qdd[1]"], alpha)                                           # moment / inertia
+    assert math.isclose(ro["q̈₁"], alpha)                                              # moment / inertia
     # exercise 4: the pin force from Newton for the centre of mass
     r = 0.5 * np.array([math.cos(q), math.sin(q)])
     a_cg = alpha * np.array([-r[1], r[0]]) - 1.0 * r
@@ -424,16 +434,16 @@ def test_lesson6_car_explorer():
     from planargeo.widgets import CarExplorer
     car = CarExplorer(display="agg")
     ro = car.readout_values
-    assert math.isclose(ro["yaw rate ω (rad/s)"], 4.0 / 8.0)
-    assert math.isclose(ro["steering angle (deg)"], math.degrees(math.atan(2.6 / 8.0)))
-    assert math.isclose(ro["lateral accel. at CG (g)"], 0.5**2 * math.hypot(8.0, 0.55 * 2.6) / 9.81)
-    for FA in (2000.0, 5000.0):
+    assert math.isclose(ro["yaw rate ω"], 4.0 / 8.0)                                   # rad/s
+    assert math.isclose(ro["steering angle"], math.degrees(math.atan(2.6 / 8.0)))      # degrees
+    assert math.isclose(ro["lateral acceleration at G"], 0.5**2 * math.hypot(8.0, 0.55 * 2.6) / 9.81)   # in g
+    for FA in (0.0, 2000.0, 5000.0):                      # the explorer starts coasting (0 N); the lesson's 2000 N set here
         car.controls["drive force (N)"].value = FA
         wd, mu1, mu2 = _car_newton_euler(1200.0, 1.2, 2.6, 8.0, 0.45, 4.0, FA)
         ro = car.readout_values
-        assert math.isclose(ro["yaw acceleration ω̇ (rad/s²)"], wd, rel_tol=1e-9)
-        assert math.isclose(ro["rear tyre force (N)"], mu1, rel_tol=1e-9)
-        assert math.isclose(ro["front tyre force (N)"], mu2, rel_tol=1e-9)
+        assert math.isclose(ro["yaw acceleration ω̇"], wd, rel_tol=1e-9, abs_tol=1e-12)
+        assert math.isclose(ro["rear tyre force μ₁"], mu1, rel_tol=1e-9)
+        assert math.isclose(ro["front tyre force μ₂"], mu2, rel_tol=1e-9)
 
 
 # ------------------------------------------------------------------------ lesson 7: articulated inertias
@@ -579,7 +589,7 @@ def test_lesson9_car_explorer_lateral_acceleration():
     car = CarExplorer(display="agg")
     car.set(**{"speed (m/s)": 6.0})
     c = math.hypot(8.0, 0.55 * 2.6)
-    assert math.isclose(car.readout_values["lateral accel. at CG (g)"], (6.0 / 8.0)**2 * c / 9.81, rel_tol=1e-9)
+    assert math.isclose(car.readout_values["lateral acceleration at G"], (6.0 / 8.0)**2 * c / 9.81, rel_tol=1e-9)
     # exercise 1: 0.5 g at V = d √(0.5 g / |c|)
     V = 8.0 * math.sqrt(0.5 * 9.81 / c)
     assert 6.0 < V < 6.5 and round(V, 2) == 6.22
@@ -716,11 +726,11 @@ def test_lesson11_constrained_tree_against_lagrange_multipliers():
         px, py = tip(i)
         fx, fy = -lam[k]
         np.testing.assert_allclose(F[k], [fx, fy, px * fy - py * fx], atol=1e-10 * abs(lam).max())
-    te = TreeExplorer(display="agg")
+    te = TreeExplorer(display="agg", gravity=9.81, speed=1.0)     # the scene's state (the explorer starts at 0, 0.25)
     ro = te.readout_values
     for k, name in enumerate(("4-7", "8-9")):
-        assert math.isclose(ro[f"contact {name}: |force| (N)"], math.hypot(*lam[k]), rel_tol=1e-9)
-    assert math.isclose(ro["qdd[1] (root)"], qdd_ref[0], rel_tol=1e-9, abs_tol=1e-12)
+        assert math.isclose(ro[f"|F{'₁₂'[k]}| (pin {name})"], math.hypot(*lam[k]), rel_tol=1e-9)
+    assert math.isclose(ro["q̈₁ (body 1)"], qdd_ref[0], rel_tol=1e-9, abs_tol=1e-12)
     assert ro["degrees of freedom"] == 9 - 4
 
 
@@ -788,7 +798,8 @@ def test_lesson11_slider_crank_explorer():
     from planargeo.widgets import SliderCrankExplorer
     sc = SliderCrankExplorer(display="agg")
     ro = sc.readout_values
-    psi0, w0 = math.radians(ro["crank angle (deg)"]), sc.values["crank speed"]
+    psi0, w0 = math.radians(ro["crank angle ψ"]), sc.values["crank speed"]      # the default: 23°
+    assert ro["crank angle ψ"] == 23.0 and ro["crank speed ψ̇"] == w0
     assert math.isclose(ro["ψ̈ crank"], _psi_dd(psi0, w0, 9.81), rel_tol=1e-5)
     assert math.isclose(ro["piston height h"], _h(psi0), rel_tol=1e-12)
     sc.controls["crank angle (deg)"].value = 90.0                         # exercise 3
@@ -931,7 +942,7 @@ def test_lesson12_folding_slider_crank_and_peers():
     m6, q6, qd6, tau6 = chain.initial_state(chain.values)
     pm6 = to_pinocchio(m6)
     qdd_pin = pin.aba(pm6, pm6.createData(), q6, qd6, tau6)
-    assert math.isclose(chain.readout_values["qdd[1]"], qdd_pin[0], rel_tol=1e-10, abs_tol=1e-12)
+    assert math.isclose(chain.readout_values["q̈₁"], qdd_pin[0], rel_tol=1e-10, abs_tol=1e-12)
     assert math.isclose(chain.readout_values["kinetic energy (J)"], 0.5 * qd6 @ mass_matrix(m6, q6) @ qd6, rel_tol=1e-10)
 
 
