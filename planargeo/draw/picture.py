@@ -220,6 +220,10 @@ _SPOT_FX = np.array([_ALIGN_X[a] for a in _SPOT_HA])
 _SPOT_FY = np.array([_ALIGN_Y[a] for a in _SPOT_VA])
 
 
+#: element keys left out of the data when they hold these values
+_DEFAULTS = {"dash": None, "fill": None, "alpha": 1.0, "opacity": 1.0, "desc": "", "symbol": ""}
+
+
 class Picture:
     """A picture under construction: a view and its elements (module docstring).
 
@@ -711,7 +715,9 @@ class Picture:
                 if "m" in part:
                     part["m"] = [round(v, nd + 2) + 0.0 for v in part["m"]]
                 parts.append(part)
-            elements.append({**el, "parts": parts})
+            # keys at their defaults are left out (the renderers read them with defaults)
+            elements.append({k: v for k, v in {**el, "parts": parts}.items()
+                             if not (k in _DEFAULTS and v == _DEFAULTS[k])})
         ticks = ({"x": nice_ticks(self.box[0], self.box[1]), "y": nice_ticks(self.box[2], self.box[3])}
                  if self.ticks else None)
         return {"size": list(self.size), "margin": list(self.margin),

@@ -64,8 +64,8 @@ def draw_picture(pic: dict, ax) -> None:
             kind = part["p"]
             if kind == "path":
                 xy = np.asarray(part["xy"], float).reshape(-1, 2)
-                if el.get("fill") or part["closed"]:
-                    ax.add_patch(Polygon(xy, closed=part["closed"], facecolor=el.get("fill") or "none",
+                if el.get("fill") or part.get("closed"):
+                    ax.add_patch(Polygon(xy, closed=part.get("closed", False), facecolor=el.get("fill") or "none",
                                          edgecolor=c if c != "none" else "none", linewidth=lw,
                                          alpha=el.get("alpha", 1.0) * op, zorder=z, gid=el["id"]))
                 else:

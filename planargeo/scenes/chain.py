@@ -31,7 +31,7 @@ from planargeo.algorithms.stacked import forward_dynamics_stacked
 from planargeo.mechanics.model import JOINT_DOFS, chain_model
 from planargeo.scenes import SceneResult, check_param, register
 
-__all__ = ["chain", "chain_workspace", "METHODS", "available_methods"]
+__all__ = ["chain", "chain_workspace", "chain_accelerations", "METHODS", "available_methods"]
 
 #: method name -> forward dynamics function ``(model, q, qd, tau, f_ext=None) -> qdd``
 METHODS = {
@@ -86,6 +86,31 @@ def chain_workspace(model, q, qd, tau):
     array([-14.715])
     """
     return articulated_body(model, q, qd, tau)
+
+
+def chain_accelerations(model, q, qd, tau):
+    """The joint accelerations ``q̈`` of a chain at one state (articulated-body algorithm, 3.6).
+
+    What the explorers integrate in time; widgets reach the algorithms through the scenes.
+
+    Parameters
+    ----------
+    model : Model
+        The chain.
+    q, qd, tau : array_like (nq,)
+        Joint values, speeds and forces.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``q̈`` (nq,).
+
+    Examples
+    --------
+    >>> chain_accelerations(chain_model(1), [0.0], [0.0], [0.0])   # a rod released horizontally
+    array([-14.715])
+    """
+    return forward_dynamics(model, q, qd, tau)
 
 
 @register("chain", limits={"n": (200, "n = 200 takes about 0.5 s; the cost grows as n³")})

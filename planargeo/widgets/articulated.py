@@ -698,7 +698,7 @@ class ArticulatedExplorer(Explorer):
         -------
         Motion
         """
-        from planargeo.algorithms.aba import forward_dynamics
+        from planargeo.scenes.chain import chain_accelerations as forward_dynamics
 
         key = self._key(v)
         n, c = key[0], key[5]

@@ -741,7 +741,7 @@ class Explorer:
 
         An explorer that draws its state as a :class:`~planargeo.draw.picture.Picture`
         returns it here; in the page (``display="page"``) it is then drawn without any
-        matplotlib artist: :meth:`readout` gives the numbers, and exports draw the same
+        matplotlib artist: :meth:`readout_of` gives the numbers, and exports draw the same
         picture through matplotlib (:mod:`planargeo.draw.render`).  None: the picture is
         read off the explorer's artists.
 
@@ -758,7 +758,7 @@ class Explorer:
         """
         return None
 
-    def readout(self, state: Any) -> dict[str, Any]:
+    def readout_of(self, state: Any) -> dict[str, Any]:
         """The readout of ``state`` without drawing (explorers with :meth:`scene_picture`).
 
         Parameters
@@ -776,17 +776,17 @@ class Explorer:
         NotImplementedError
             An explorer that draws only through its artists.
         """
-        raise NotImplementedError(f"{type(self).__name__} has no readout() apart from render()")
+        raise NotImplementedError(f"{type(self).__name__} has no readout_of() apart from render()")
 
     @property
     def native_page(self) -> bool:
         """True when the page draws this explorer's own picture (no matplotlib artist involved)."""
         return (self.display_mode == "page" and type(self).scene_picture is not Explorer.scene_picture
-                and type(self).readout is not Explorer.readout)
+                and type(self).readout_of is not Explorer.readout_of)
 
     def _render(self, state: Any) -> dict[str, Any]:
         """The readout of ``state``; the artists are updated unless the page draws the picture."""
-        return self.readout(state) if self.native_page else self.render(state)
+        return self.readout_of(state) if self.native_page else self.render(state)
 
     def adjust(self, values: dict[str, Any], changed: set[str]) -> dict[str, Any]:
         """Values of controls that follow the ``changed`` ones (default: none).

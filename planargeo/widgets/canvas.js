@@ -102,7 +102,7 @@ function render({ model, el }) {
       const d = part.xy.map((q, i) => (i ? "L" : "M") + X(q[0]).toFixed(2) + " " + Y(q[1]).toFixed(2)).join("");
       const fill = elData.fill || "none";
       const a = { d: d + (part.closed ? "Z" : ""), fill, stroke: elData.color, "stroke-width": elData.width };
-      if (elData.fill) a["fill-opacity"] = elData.alpha;
+      if (elData.fill) a["fill-opacity"] = elData.alpha ?? 1;
       if (elData.dash) a["stroke-dasharray"] = elData.dash.join(" ");
       mk("path", a, g);
     } else if (k === "ellipse") {
@@ -239,7 +239,7 @@ function render({ model, el }) {
 
   function showTip(ev, e) {
     if (!e.symbol && !e.desc) { tip.style.display = "none"; return; }
-    tip.textContent = (e.symbol ? e.symbol + " \u2014 " : "") + e.desc;
+    tip.textContent = (e.symbol ? e.symbol + " \u2014 " : "") + (e.desc || "");
     const r = root.getBoundingClientRect();
     tip.style.left = Math.min(ev.clientX - r.left + 12, W - 220) + "px";
     tip.style.top = ev.clientY - r.top + 14 + "px";

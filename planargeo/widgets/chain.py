@@ -50,6 +50,7 @@ import numpy as np
 from matplotlib.lines import Line2D
 
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist, clip_line
+from planargeo.draw.chain import chain_picture
 from planargeo.draw.mechanism import LabelPlacer, ScaleBar
 from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.errors import InputError, SizeLimitError
@@ -510,7 +511,7 @@ class ChainExplorer(Explorer):
         Motion
             ``y = (q, q̇)`` at any time (:class:`planargeo.widgets._motion.Motion`).
         """
-        from planargeo.algorithms.aba import forward_dynamics
+        from planargeo.scenes.chain import chain_accelerations as forward_dynamics
 
         n = model.nq
         key = (self._model_key, tuple(q0), tuple(qd0), tuple(tau))
@@ -552,7 +553,12 @@ class ChainExplorer(Explorer):
         w = chain_workspace(model, q, qd, tau)
         st = {"model": model, "w": w, "t": t, "tau": tau, "q0": q0}
         st["ke"], st["pe"] = (float(e) for e in energy(model, data=w))
-        st["e0"] = float(sum(energy(model, q0, qd0))) if t > 0.0 else st["ke"] + st["pe"]
+        # the starting energy, kept per starting state: a frame at t > 0 costs one kinematics pass
+        e0s, key = self.__dict__.setdefault("_e0s", {}), (self._model_key, tuple(q0), tuple(qd0))
+        if t == 0.0:
+            e0s.pop(key, None)
+        st["e0"] = cached(e0s, key, lambda: st["ke"] + st["pe"] if t == 0.0
+                          else float(sum(energy(model, q0, qd0))))
         return st
 
     @staticmethod
@@ -956,6 +962,23 @@ class ChainExplorer(Explorer):
         self.time_text.set_position((pos.x1, pos.y0 - 14.0 / self.fig.bbox.height))
         self._label(st, focus, box)
         self.time_text.set_text(f"t = {st['t']:.2f} s")
+        return self.readout_of(st)
+
+    def readout_of(self, st):
+        """The readout of the state ``st`` (energies, work, drift, end accelerations, base force).
+
+        Parameters
+        ----------
+        st : dict
+            A state of :meth:`compute`.
+
+        Returns
+        -------
+        dict
+            The readout values.
+        """
+        model, w = st["model"], st["w"]
+        n = model.N
         e = st["ke"] + st["pe"]
         work = float(np.dot(st["tau"], w.q - st["q0"]))     # constant joint forces: work τ·(q − q₀)
         out = {"links": n, "t (s)": st["t"],
@@ -969,6 +992,27 @@ class ChainExplorer(Explorer):
                                              for k in (0, n - 1)}}
         out["|base force| (N)"] = float(np.hypot(*w.f[0, :2]))
         return out
+
+    def scene_picture(self, st, view=None):
+        """The state's picture built natively (:func:`planargeo.draw.chain.chain_picture`), for the page.
+
+        Parameters
+        ----------
+        st : dict
+            A state of :meth:`compute`.
+        view : (x0, x1, y0, y1), optional
+            The view the user zoomed or panned to (default: :meth:`_view`).
+
+        Returns
+        -------
+        Picture
+        """
+        v = self.values
+        w = st["w"]
+        overlays = {k: bool(v[k]) for k in OVERLAYS}
+        split = self.tu_split(st) if v["T/U split"] else None
+        return chain_picture(w, overlays=overlays, view=view or self._view(st), split=split,
+                             focus=self._focus(st["model"].N), size=self.figure_px, ends=self._ends(w))
 
     def _label(self, st, focus, box) -> None:
         """Place the labels: the focused element's first (bold), then every other where it fits."""
