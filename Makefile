@@ -2,7 +2,7 @@
 #   make lab    create .venv if missing, install planargeo with its extras, start JupyterLab
 #               (on 127.0.0.1 only, with a fresh random token: see LAB_FLAGS)
 #   make test   create/update .venv, install everything the tests need, run the whole suite
-#   make fuzz   at least 10^4 generated calls against the public API, a table of outcomes
+#   make fuzz   8000 generated calls from each parameter's domain (explorers through mouse and page paths)
 #   make docs   the documentation site in docs/_build/html (Sphinx; warnings are errors)
 #   make app    every explorer as a web page without code (Voila on app/planargeo-app.ipynb, 127.0.0.1)
 #   make screens  regenerate docs/screens/*.png (each explorer in its default state, in the app)
@@ -24,7 +24,7 @@ LAB_FLAGS ?=
 help:
 	@echo "make lab    - set up .venv and start JupyterLab on notebooks/00-tour.ipynb (localhost, token)"
 	@echo "make test   - set up .venv and run the whole test suite"
-	@echo "make fuzz   - 10^4+ generated calls with hostile arguments, a table of outcomes"
+	@echo "make fuzz   - 8000 generated calls from each parameter's domain, a table of outcomes"
 	@echo "make gallery- regenerate gallery/*.svg"
 	@echo "make bench  - run the benchmarks and rewrite benchmarks/results"
 	@echo "make docs   - build the documentation site into docs/_build/html"

@@ -78,7 +78,7 @@ PEERS = ("pinocchio", "mujoco")
 #: groups of ``--only``; all but ``dynamics`` run a script of ``benchmarks/``
 SCRIPTS = {"breakdown": "breakdown.py", "widgets": "widget_latency.py", "integrators": "integrators.py",
            "scenes": "scene_cost.py", "truncated": "truncated.py", "browser": "browser_latency.py",
-           "classroom": "classroom.py"}
+           "classroom": "classroom.py", "page": "page_latency.py"}
 GROUPS = ("dynamics",) + tuple(SCRIPTS)
 #: the exact (rational) reference up to this many coordinates, longdouble beyond (exact costs ~N^3 Fractions)
 EXACT_MAX = 5
@@ -90,7 +90,9 @@ OTHER_RESULTS = (("breakdown.md", "where each method breaks down (accuracy near 
                  ("truncated.md", "truncated articulated recursion: speed against accuracy (10.2.2)"),
                  ("browser_latency.md", "browser latency: slider and drag to the new picture in the page"),
                  ("classroom.md", "a classroom's load: k visitors of `make app`, memory per visitor, drag step "
-                                  "against k, the seat limit"))
+                                  "against k, the seat limit"),
+                 ("page_latency.md", "page latency: explorers drawn by the browser, against the floor F of "
+                                     "an empty round trip, in Voila and JupyterLab"))
 CHARTS = ("scaling", "work_precision", "speed_accuracy", "single_state", "batch")
 
 _T0 = time.perf_counter()
@@ -122,7 +124,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "'scenes' benchmarks/scene_cost.py, 'truncated' benchmarks/truncated.py (truncated "
                              "articulated recursion), 'browser' benchmarks/browser_latency.py (JupyterLab in "
                              "headless chromium), 'classroom' benchmarks/classroom.py (k visitors of the app "
-                             "at once, in headless chromium) (these need a source checkout)")
+                             "at once, in headless chromium), 'page' benchmarks/page_latency.py (explorers "
+                             "drawn in the page, Voila and JupyterLab) (these need a source checkout)")
 
 
 # --------------------------------------------------------------------------- timing

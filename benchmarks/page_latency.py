@@ -199,7 +199,10 @@ def main(argv=None) -> int:
     ap.add_argument("--steps", type=int, default=25)
     ap.add_argument("--out", type=Path, default=Path(__file__).parent / "results")
     ap.add_argument("--only", choices=("voila", "jupyterlab"), action="append")
+    ap.add_argument("--quick", action="store_true", help="10 steps")
     a = ap.parse_args(argv)
+    if a.quick:
+        a.steps = min(a.steps, 10)
     if not 1 <= a.steps <= 500:
         ap.error(f"--steps must be between 1 and 500, got {a.steps}")
     from playwright.sync_api import sync_playwright
