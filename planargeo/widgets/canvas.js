@@ -202,6 +202,7 @@ function render({ model, el }) {
     for (const e of pic.elements) {
       const g = mk("g", { "data-id": e.id, class: "pg-el" + (focusId && focusId !== e.id ? " pg-faded" : "") }, inner);
       if (e.opacity !== undefined && e.opacity !== 1) g.setAttribute("opacity", e.opacity);
+      if (e.symbol || e.desc) g.setAttribute("data-described", "");
       for (const part of e.parts) drawPart(g, part, e);
     }
     mk("rect", { x: 0, y: 0, width: pw, height: ph, class: "pg-frame" }, plot);
@@ -231,7 +232,15 @@ function render({ model, el }) {
     for (const h of pic.handles) {
       const c = circles.get(h.id);
       if (!c) continue;
-      if (drag && drag.id === h.id) continue;  // the dragged one stays under the pointer
+      if (drag && drag.id === h.id) {  // the dragged one stays under the pointer, also when redrawn
+        if (drag.circle !== c) {
+          c.setAttribute("cx", drag.circle.getAttribute("cx"));
+          c.setAttribute("cy", drag.circle.getAttribute("cy"));
+          c.classList.add("pg-dragging");
+          drag.circle = c;
+        }
+        continue;
+      }
       c.setAttribute("cx", X(h.x));
       c.setAttribute("cy", Y(h.y));
     }
