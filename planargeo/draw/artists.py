@@ -830,7 +830,7 @@ class PointArtist(_Base):
         bb = self.axes.bbox
         cd = np.array([(bb.x0 + bb.x1) / 2, (bb.y0 + bb.y1) / 2])
         half = np.array([bb.width, bb.height]) / 2
-        s = min(half[k] / abs(n[k]) for k in range(2) if n[k] != 0.0)
+        s = min(half[k] / abs(n[k]) for k in range(2) if abs(n[k]) > 1e-12)  # a unit vector: one is ≥ 0.7
         base = cd + n * (s - 14 * pts)
         out = []
         self._arrow.set_positions(tuple(base - t * L / 2), tuple(base + t * L / 2))
@@ -1097,7 +1097,7 @@ class LineArtist(_Base):
             return []
         n /= np.hypot(*n)
         half = np.array([bb.width, bb.height]) / 2
-        s = min(half[k] / abs(n[k]) for k in range(2) if n[k] != 0.0)
+        s = min(half[k] / abs(n[k]) for k in range(2) if abs(n[k]) > 1e-12)  # a unit vector: one is ≥ 0.7
         base = cd + n * (s - 12 * pts)
         L = 16 * pts
         self._edge.set_positions(tuple(base - n * L / 2), tuple(base + n * L / 2))

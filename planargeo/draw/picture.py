@@ -317,7 +317,7 @@ class Picture:
         n = np.asarray(n_px, float) / math.hypot(*n_px)
         t = np.asarray(t_px, float) / math.hypot(*t_px)
         half = np.array([pw / 2, ph / 2])
-        s = min(half[k] / abs(n[k]) for k in range(2) if n[k] != 0.0)
+        s = min(half[k] / abs(n[k]) for k in range(2) if abs(n[k]) > 1e-12)  # a unit vector: one is ≥ 0.7
         base_px = half + n * (s - 16.0)  # from the plot area's lower left
         tail_px = base_px - t * length / 2
         x, y = self.box[0] + tail_px[0] / self.kx, self.box[2] + tail_px[1] / self.ky
