@@ -52,14 +52,14 @@ def _describe(explain: dict, symbol: str) -> str:
     return explain.get(symbol) or explain.get(symbol.split(" ")[0], "")
 
 
-def picture_from_axes(ax, *, explain: dict | None = None, title: str = "", view=None,
+def picture_from_axes(axes, *, explain: dict | None = None, title: str = "", view=None,
                       handles=()) -> Picture:
     """The picture of what ``ax`` shows (module docstring).
 
     Parameters
     ----------
-    ax : matplotlib.axes.Axes
-        An explorer's axes, its artists up to date.
+    axes : matplotlib.axes.Axes
+        An explorer's axes, its artists up to date (read, never drawn on).
     explain : dict, optional
         ``{symbol: description}`` (the explorer's :meth:`explain`).
     title : str
@@ -74,6 +74,7 @@ def picture_from_axes(ax, *, explain: dict | None = None, title: str = "", view=
     Picture
     """
     explain = dict(explain or {})
+    ax = axes
     fig = ax.figure
     W, H = (fig.get_size_inches() * fig.dpi).round().astype(int)
     ax.apply_aspect()  # the limits and box matplotlib would draw with

@@ -24,23 +24,24 @@ from matplotlib.patches import Polygon
 
 from planargeo.draw.geometry import arc_glyph
 from planargeo.draw.picture import PX_PER_PT
-from planargeo.draw.style import LABEL_PT, TITLE_PT, rc_context
+from planargeo.draw.style import LABEL_PT, TITLE_PT, get_ax, rc_context
 
 __all__ = ["draw_picture", "figure", "picture_bytes"]
 
 _MARKERS = {"o": "o", "D": "D", "s": "s"}
 
 
-def draw_picture(pic: dict, ax) -> None:
+def draw_picture(pic: dict, ax=None) -> None:
     """Draw the picture ``pic`` (:meth:`Picture.to_dict`) on the axes ``ax``.
 
     Parameters
     ----------
     pic : dict
         A picture's data.
-    ax : matplotlib.axes.Axes
-        Axes whose position already matches the picture's plot area.
+    ax : matplotlib.axes.Axes, optional
+        Axes whose position already matches the picture's plot area (default: the current axes).
     """
+    ax = get_ax(ax)
     x0, x1, y0, y1 = pic["box"]
     w, h = pic["size"]
     ml, mr, mt, mb = pic["margin"]
