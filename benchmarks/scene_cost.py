@@ -253,8 +253,8 @@ def cases() -> list:
 
     sc_ex, tr_ex = SliderCrankExplorer(display="agg"), TreeExplorer(display="agg")
     v_sc = dict(sc_ex.values, **{"crank angle (deg)": math.degrees(0.7)})
-    v_open = dict(tr_ex.values, speed=0.7, loops="open (Fig 9.1)")
-    v_closed = dict(tr_ex.values, speed=0.7, loops="closed (Fig 9.2)")
+    v_open = dict(tr_ex.values, speed=0.7, gravity=9.81, loops="open (Fig 9.1)")    # the scenes' g
+    v_closed = dict(tr_ex.values, speed=0.7, gravity=9.81, loops="closed (Fig 9.2)")
     out = [
         # ---- scenes as their consumers read them
         Case("scene", "chain", "`planargeo report chain`, notebook 08 (n = 10)",
