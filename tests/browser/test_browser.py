@@ -54,8 +54,8 @@ def _slider_values(explorer) -> dict[str, float]:
     out = {}
     for i in range(sliders.count()):
         sl = sliders.nth(i)
-        out[sl.locator(".widget-label").first.inner_text().strip()] = _number(
-            sl.locator(".widget-readout").first.inner_text())
+        label = sl.locator(".widget-label").first.inner_text().strip()
+        out[label.split(" (")[0]] = _number(sl.locator(".widget-readout").first.inner_text())  # no unit
     return out
 
 
@@ -65,9 +65,9 @@ def _polar_distance(v: dict[str, float], conic: str) -> float:
     ``M = R(tilt) diag(1/a², 1/b²) R(tilt)ᵀ`` (a circle: ``b = a``); the polar of
     ``P`` is ``{x : xᵀ M P = 1}``, at distance ``1 / |M P|`` from the centre.
     """
-    a = v["a"]
-    b = a if conic == "circle" else v["b"]
-    t = np.radians(v["tilt (deg)"])
+    a = v["semi-axis a"]
+    b = a if conic == "circle" else v["semi-axis b"]
+    t = np.radians(v["tilt"])
     R = np.array([[np.cos(t), -np.sin(t)], [np.sin(t), np.cos(t)]])
     M = R @ np.diag([1 / a ** 2, 1 / b ** 2]) @ R.T
     return float(1.0 / np.linalg.norm(M @ np.array([v["P x"], v["P y"]])))
@@ -127,7 +127,7 @@ def test_tour_slider_updates_readout_and_figure(lab, browser):
         _wait_for(lambda: figure.bounding_box() and figure.bounding_box()["height"] > 50, 30,
                   "the figure to render")
         slider = explorer.locator(".widget-slider").first
-        label = slider.locator(".widget-label").first.inner_text().strip()
+        label = slider.locator(".widget-label").first.inner_text().strip().split(" (")[0]  # "P x (m)": row "P x"
         value_box = slider.locator(".widget-readout").first
         v0 = _number(value_box.inner_text())
         before = _wait_for(lambda: _readout(page, explorer), 30, "the readout")

@@ -186,6 +186,15 @@ def check_drag(page, explorer, handle):
 
 
 def check_play(page, explorer):
+    # from the default state: the drag and slider checks may have left a state whose motion ends at
+    # once by a stated event (the car sliding out once the tyres' friction limit is reached)
+    reset = explorer.locator("button").filter(has_text="Reset").first
+    if reset.count():
+        shown = _readout(page, explorer)
+        reset.click()
+        _wait_for(lambda: (lambda r: r if r and r != shown else None)(_readout(None, explorer)) or True,
+                  5, "Reset")
+        time.sleep(1.0)
     play = explorer.locator(".widget-play button, .jupyter-widgets.widget-play button").first
     play.scroll_into_view_if_needed()
     before = _readout(page, explorer)

@@ -77,6 +77,8 @@ def _local(url: str) -> bool:
 def _exercise(page, where: str) -> None:
     svg = page.locator(".pg-canvas svg").first
     svg.wait_for(state="visible", timeout=120_000)
+    svg.scroll_into_view_if_needed()
+    time.sleep(0.5)
     handle = page.locator("circle.pg-handle").first
     title = page.locator(".pg-title").first
     _wait_for(lambda: title.text_content().startswith("requests"), 30, "the first picture")
@@ -172,7 +174,7 @@ def test_page_canvas_in_voila(browser, tmp_path):
 
 def test_page_canvas_in_jupyterlab(lab, browser):
     _notebook(lab.root / "canvas.ipynb")
-    page = browser.new_page(viewport={"width": 1200, "height": 900})
+    page = browser.new_page(viewport={"width": 1200, "height": 1400})
     requests: list[str] = []
     try:
         _run(page, f"{lab.url}/lab/tree/canvas.ipynb?reset", "jupyterlab", requests)
