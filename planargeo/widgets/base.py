@@ -1605,7 +1605,12 @@ class Explorer:
         buttons = W.HBox([self.reset_button, W.HTML("<span style='padding:0 4px'>export</span>"),
                           self.export_button, self.export_png_button]
                          + ([self.export_gif_button] if self.has_play else [])
-                         + ([self.export_mp4_button] if self.has_play and self.has_mp4 else []))
+                         + ([self.export_mp4_button] if self.has_play and self.has_mp4 else []),
+                         # the buttons keep their names: a row that does not fit wraps
+                         layout=W.Layout(flex_flow="row wrap", width="330px"))
+        for b in buttons.children:
+            if isinstance(b, W.Button):
+                b.layout.flex = "0 0 auto"
         play = ([W.HBox([self.play_control, self.play_speed, self.play_scale, self.play_loop])]
                 if self.has_play else [])
         controls = W.VBox(list(self.controls.values()) + play + self.extra_widgets()
