@@ -63,7 +63,70 @@ def _as_line_array(l, name: str = "l") -> np.ndarray:
     return l.array if isinstance(l, Line) else _vec(l, name)
 
 
-class Point:
+class _Homogeneous:
+    """Common base: one read-only array ``_a``, compared projectively and drawn for notebooks.
+
+    A subclass names its drawing (``_svg``: a function of
+    :mod:`planargeo.geometry.svg` and its label).
+    """
+
+    __slots__ = ("_a",)
+    __hash__ = None
+    _svg = ("", "")
+
+    def __eq__(self, other):
+        if not isinstance(other, type(self)):
+            return NotImplemented
+        return _proportional(self._a, other._a)
+
+    def __array__(self, dtype=None, copy=None):
+        return np.array(self._a, dtype=dtype)
+
+    def _repr_svg_(self) -> str:
+        """A small drawing for notebooks, by :mod:`planargeo.geometry.svg` without matplotlib.
+
+        A point is a dot (an arrow to a point at infinity), a line the directed
+        line (a dashed frame at infinity), an imaginary conic its real partner
+        (thesis 10.2.3).
+
+        Returns
+        -------
+        str
+            An SVG document.
+        """
+        from planargeo.geometry import svg
+
+        draw, label = self._svg
+        return getattr(svg, draw)(self._a, label=label)
+
+
+class _PointOrLine(_Homogeneous):
+    """What a point and a line share through the duality (thesis 5.3): the same array seen twice.
+
+    ``a ^ b`` of two of a kind is ``_wedge`` (the join of points, the meet of
+    lines); ``a @ b`` with the dual kind ``_dual`` is the incidence form.
+    """
+
+    __slots__ = ()
+
+    def __init__(self, array):
+        a = _vec(array, "array")
+        if not np.any(a):
+            raise DegenerateGeometryError(f"array is the zero vector, which is no {type(self).__name__.lower()}")
+        self._a = a
+
+    def __xor__(self, other):
+        if isinstance(other, type(self)):
+            return self._wedge(other)
+        return NotImplemented
+
+    def __matmul__(self, other):
+        if isinstance(other, self._dual):
+            return self.incidence(other)
+        return NotImplemented
+
+
+class Point(_PointOrLine):
     """A point of the projective plane (thesis 5.49), i.e. a twist's pole.
 
     Parameters
@@ -91,14 +154,8 @@ class Point:
     Line(through=(0, 0), direction=(0.707107, 0.707107))
     """
 
-    __slots__ = ("_a",)
-    __hash__ = None
-
-    def __init__(self, array):
-        a = _vec(array, "array")
-        if not np.any(a):
-            raise DegenerateGeometryError("array is the zero vector, which is no point")
-        self._a = a
+    __slots__ = ()
+    _svg = ("point_svg", "P")
 
     # constructors
     @classmethod
@@ -226,10 +283,7 @@ class Point:
         """
         return Line(_p.join(self._a, _as_point_array(other, "other")))
 
-    def __xor__(self, other):
-        if isinstance(other, Point):
-            return self.join(other)
-        return NotImplemented
+    _wedge = join
 
     def incidence(self, line) -> float:
         """The form ``p @ l`` (thesis 5.23): zero exactly when the point lies on ``line``.
@@ -257,11 +311,6 @@ class Point:
         """
         return float(_p.incidence(self._a, _as_line_array(line, "line")))
 
-    def __matmul__(self, other):
-        if isinstance(other, Line):
-            return self.incidence(other)
-        return NotImplemented
-
     def distance_to(self, line) -> float:
         """Signed distance to ``line``, positive on its left (thesis 5.23).
 
@@ -282,27 +331,6 @@ class Point:
         """
         return float(_p.signed_distance(self._a, _as_line_array(line, "line")))
 
-    def __eq__(self, other):
-        if not isinstance(other, Point):
-            return NotImplemented
-        return _proportional(self._a, other._a)
-
-    def __array__(self, dtype=None, copy=None):
-        return np.array(self._a, dtype=dtype)
-
-    def _repr_svg_(self) -> str:
-        """A small drawing of the point for notebooks (a dot, or an arrow to a point at infinity).
-
-        Drawn by :func:`planargeo.geometry.svg.point_svg` without matplotlib.
-
-        Returns
-        -------
-        str
-            An SVG document.
-        """
-        from planargeo.geometry.svg import point_svg
-
-        return point_svg(self._a, label="P")
     def __repr__(self) -> str:
         if self.is_ideal:
             d = self.direction
@@ -311,7 +339,7 @@ class Point:
         return f"Point(x={_fmt(x)}, y={_fmt(y)})"
 
 
-class Line:
+class Line(_PointOrLine):
     """A line of the projective plane (thesis 5.55), i.e. a wrench's line of action.
 
     Parameters
@@ -340,14 +368,8 @@ class Line:
     Point(x=-3, y=0)
     """
 
-    __slots__ = ("_a",)
-    __hash__ = None
-
-    def __init__(self, array):
-        a = _vec(array, "array")
-        if not np.any(a):
-            raise DegenerateGeometryError("array is the zero vector, which is no line")
-        self._a = a
+    __slots__ = ()
+    _svg = ("line_svg", "l")
 
     @classmethod
     def through(cls, p, q) -> "Line":
@@ -483,10 +505,7 @@ class Line:
         """
         return Point(_p.meet(self._a, _as_line_array(other, "other")))
 
-    def __xor__(self, other):
-        if isinstance(other, Line):
-            return self.meet(other)
-        return NotImplemented
+    _wedge = meet
 
     def incidence(self, point) -> float:
         """The form ``p @ l`` (thesis 5.23): zero exactly when ``point`` lies on this line.
@@ -509,11 +528,6 @@ class Line:
         1.0
         """
         return float(_p.incidence(_as_point_array(point, "point"), self._a))
-
-    def __matmul__(self, other):
-        if isinstance(other, Point):
-            return self.incidence(other)
-        return NotImplemented
 
     def signed_distance(self, point) -> float:
         """Signed distance of ``point`` from this line, positive on the left (thesis 5.23).
@@ -542,27 +556,6 @@ class Line:
         """
         return float(_p.signed_distance(_as_point_array(point, "point"), self._a))
 
-    def __eq__(self, other):
-        if not isinstance(other, Line):
-            return NotImplemented
-        return _proportional(self._a, other._a)
-
-    def __array__(self, dtype=None, copy=None):
-        return np.array(self._a, dtype=dtype)
-
-    def _repr_svg_(self) -> str:
-        """A small drawing of the line for notebooks (the directed line, or a dashed frame for the line at infinity).
-
-        Drawn by :func:`planargeo.geometry.svg.line_svg` without matplotlib.
-
-        Returns
-        -------
-        str
-            An SVG document.
-        """
-        from planargeo.geometry.svg import line_svg
-
-        return line_svg(self._a, label="l")
     def __repr__(self) -> str:
         if self.is_at_infinity:
             return "Line(at infinity)"
@@ -572,7 +565,10 @@ class Line:
                 f"direction=({_fmt(d[0])}, {_fmt(d[1])}))")
 
 
-class Conic:
+Point._dual, Line._dual = Line, Point
+
+
+class Conic(_Homogeneous):
     """A conic (thesis 5.35): a symmetric 3×3 matrix mapping points to lines.
 
     Parameters
@@ -600,8 +596,8 @@ class Conic:
     Point(x=0, y=0)
     """
 
-    __slots__ = ("_m",)
-    __hash__ = None
+    __slots__ = ()
+    _svg = ("conic_svg", "C")
 
     def __init__(self, matrix):
         if isinstance(matrix, Conic):
@@ -613,7 +609,7 @@ class Conic:
             raise DegenerateGeometryError("matrix is zero, which is no conic")
         m = 0.5 * (m + m.T)
         m.setflags(write=False)
-        self._m = m
+        self._a = m
 
     @classmethod
     def circle(cls, centre, radius, imaginary: bool = False) -> "Conic":
@@ -740,7 +736,7 @@ class Conic:
     @property
     def matrix(self) -> np.ndarray:
         """The read-only symmetric matrix."""
-        return self._m
+        return self._a
 
     def polar(self, point) -> Line:
         """The polar line ``C p`` of ``point`` (thesis 5.36).
@@ -767,7 +763,7 @@ class Conic:
         >>> C.polar(Point.at_infinity((1, 0)))          # the diameter perpendicular to x
         Line(through=(0, 0), direction=(0, -1))
         """
-        return Line(_c.polar(self._m, _as_point_array(point, "point")))
+        return Line(_c.polar(self._a, _as_point_array(point, "point")))
 
     def pole(self, line) -> Point:
         """The pole ``C⁻¹ l`` of ``line`` (thesis 5.37), the inverse of :meth:`polar`.
@@ -794,7 +790,7 @@ class Conic:
         >>> C.pole(Line.at_infinity())
         Point(x=0, y=0)
         """
-        return Point(_c.pole(self._m, _as_line_array(line, "line")))
+        return Point(_c.pole(self._a, _as_line_array(line, "line")))
 
     def classify(self, rtol: float = 1e-10) -> _c.ConicType:
         """Real / imaginary / degenerate and kind (thesis 5.2.2; see :func:`planargeo.geometry.conics.classify`).
@@ -818,7 +814,7 @@ class Conic:
         >>> str(Conic.parabola((0, 0), 1).classify())
         'real parabola'
         """
-        return _c.classify(self._m, rtol=rtol)
+        return _c.classify(self._a, rtol=rtol)
 
     @property
     def centre(self) -> Point:
@@ -834,7 +830,7 @@ class Conic:
         >>> Conic.parabola((0, 0), 1).centre            # y = x²/4: ideal point along the axis
         Point(at infinity, direction=(0, 1))
         """
-        return Point(_c.centre(self._m))
+        return Point(_c.centre(self._a))
 
     def contains(self, point, rtol: float = 1e-9) -> bool:
         """True if ``point`` lies on the conic: ``|p C p| <= rtol |C| |p|²`` (thesis 5.38).
@@ -862,7 +858,7 @@ class Conic:
         >>> Conic.hyperbola((0, 0), (1, 1)).contains(Point.at_infinity((1, 1)))   # asymptote y = x
         True
         """
-        return bool(_c.is_on_conic(self._m, _as_point_array(point, "point"), rtol=rtol))
+        return bool(_c.is_on_conic(self._a, _as_point_array(point, "point"), rtol=rtol))
 
     def tangents_from(self, point):
         """The two tangents from an exterior ``point`` and their contact points.
@@ -890,7 +886,7 @@ class Conic:
         >>> abs(t1 @ Point.from_xy(2, 0)) < 1e-12       # the tangent passes through the point
         True
         """
-        L, X = _c.tangents_from_point(self._m, _as_point_array(point, "point"))
+        L, X = _c.tangents_from_point(self._a, _as_point_array(point, "point"))
         return (Line(L[0]), Line(L[1])), (Point(X[0]), Point(X[1]))
 
     def affine_frame(self) -> _c.AffineFrame:
@@ -908,7 +904,7 @@ class Conic:
         ('ellipse', array([1., 2.]), array([[3., 0.],
                [0., 1.]]))
         """
-        return _c.affine_frame(self._m)
+        return _c.affine_frame(self._a)
 
     def drawable(self) -> "Conic":
         """The real point-reflection partner of an imaginary conic (thesis 10.2.3); self if real.
@@ -931,39 +927,18 @@ class Conic:
         >>> I.drawable().contains(Point.from_xy(2, 0))
         True
         """
-        return Conic(_c.drawable_conic(self._m))
+        return Conic(_c.drawable_conic(self._a))
 
-    def __eq__(self, other):
-        if not isinstance(other, Conic):
-            return NotImplemented
-        return _proportional(self._m, other._m)
-
-    def __array__(self, dtype=None, copy=None):
-        return np.array(self._m, dtype=dtype)
-
-    def _repr_svg_(self) -> str:
-        """A small drawing of the conic for notebooks (an imaginary conic through its real partner, thesis 10.2.3).
-
-        Drawn by :func:`planargeo.geometry.svg.conic_svg` without matplotlib.
-
-        Returns
-        -------
-        str
-            An SVG document.
-        """
-        from planargeo.geometry.svg import conic_svg
-
-        return conic_svg(self._m, label="C")
     def __repr__(self) -> str:
         t = self.classify()
         name = str(t)
         if t.reality == "degenerate":
-            return f"Conic(degenerate {name}, matrix={np.round(self._m, 6).tolist()})"
+            return f"Conic(degenerate {name}, matrix={np.round(self._a, 6).tolist()})"
         if t.kind == "parabola" and t.reality == "real":
-            F = _c.affine_frame(self._m)
+            F = _c.affine_frame(self._a)
             d = F.A[:, 1] / np.linalg.norm(F.A[:, 1])
             return (f"Conic({name}, vertex=({_fmt(F.t[0])}, {_fmt(F.t[1])}), "
                     f"axis=({_fmt(d[0])}, {_fmt(d[1])}))")
-        z = _c.centre(self._m)
+        z = _c.centre(self._a)
         x, y = _p.to_xy(z)
         return f"Conic({name}, centre=({_fmt(x)}, {_fmt(y)}))"
