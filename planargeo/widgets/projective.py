@@ -39,6 +39,7 @@ from planargeo.geometry.conics import (centre, classify, conic_circle, conic_ell
                       conic_parabola, polar, polar_construction_interior, pole,
                       tangents_from_point)
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
+from planargeo.draw.pictures.projective import projective_picture
 from planargeo.errors import DegenerateGeometryError, InputError
 from planargeo.geometry.projective import from_xy, is_at_infinity, is_ideal
 from planargeo.widgets.base import Explorer, Handle, Step
@@ -468,6 +469,22 @@ class ProjectiveExplorer(Explorer):
                             self.cpts_art[2 * i + j].set_visible(True)
                         self.cpts_art[4 + i].set_point(K.poles[i])
                         self.cpts_art[4 + i].set_visible(True)
+        return self.readout_of(st)
+
+    def readout_of(self, st):
+        """The readout of the state ``st``: P, the polar's distance, the pole of M, the invariant P·M.
+
+        Parameters
+        ----------
+        st : dict
+            What :meth:`compute` returned.
+
+        Returns
+        -------
+        dict
+            Readout entries.
+        """
+        v = self.values
         P, M, pol, pm = st["P"], st["M"], st["polar"], st["poleM"]
         # polar of P: normalised line [e, r] (5.55): direction and signed distance from the origin
         F = float(np.hypot(pol[0], pol[1]))
@@ -487,3 +504,22 @@ class ProjectiveExplorer(Explorer):
         else:
             out["centre"] = _xy(centre(st["C"]))
         return out
+
+    def scene_picture(self, st, view=None):
+        """The state's picture (:func:`planargeo.draw.pictures.projective.projective_picture`).
+
+        Parameters
+        ----------
+        st : dict
+            What :meth:`compute` returned.
+        view : (x0, x1, y0, y1), optional
+            The view the user zoomed or panned to (default: :attr:`limits`).
+
+        Returns
+        -------
+        Picture
+        """
+        v = self.values
+        return projective_picture(st, construction=bool(v["construction"]),
+                                  line_and_pole=bool(v["line and its pole"]),
+                                  view=view or self.limits, size=self.figure_px)

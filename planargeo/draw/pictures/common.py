@@ -1,0 +1,162 @@
+"""Pieces shared by the explorers' native pictures: words for descriptions, line labels, direction arrows.
+
+* :func:`num` and :func:`where`: a number and a point's position, in words, for an
+  element's description;
+* :func:`label_line`: a line's label beside it, on the side its normal points to,
+  aligned away from the line (so that the line never runs through its own label);
+* :func:`point_along`: an ideal point of pure geometry (a direction, not a
+  translation's pole), its edge arrow pointing *along* its direction.
+
+Examples
+--------
+>>> where([0.0, -2.0, 1.0]), where([1.0, 0.0, 0.0]), num(0.6666666)
+('at (2, 0) m', 'at infinity, direction (0, 1)', '0.667')
+>>> from planargeo.draw.picture import Picture
+>>> pic = Picture((-2, 2, -2, 2), size=(300, 300))
+>>> pic.line("L", [1.0, 1.0, 0.0], label="", arrow=False)      # the line y = x
+>>> label_line(pic, "L", "L")
+>>> part = pic.elements[-1]["parts"][-1]
+>>> part["text"], part["ha"], part["va"]                      # up and to the left of the line
+('L', 'right', 'bottom')
+>>> point_along(pic, "P", [1.0, 0.0, 0.0], symbol="P")          # the direction (0, 1): up
+>>> arrow = pic.elements[-1]["parts"][0]
+>>> arrow["dx"] == 0.0 and arrow["dy"] > 0
+True
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo.draw.geometry import clip_line
+from planargeo.draw.picture import Picture
+from planargeo.geometry.projective import direction, is_ideal, to_xy
+
+__all__ = ["where", "num", "label_line", "point_along"]
+
+
+def num(x, digits: int = 3) -> str:
+    """A number with ``digits`` significant digits (round-off below 1e-12 reads 0, infinity ∞).
+
+    Parameters
+    ----------
+    x : float
+    digits : int
+
+    Returns
+    -------
+    str
+    """
+    x = float(x)
+    if not math.isfinite(x):
+        return "∞" if x > 0 else "−∞" if x < 0 else "undefined"
+    if abs(x) < 1e-12:
+        return "0"
+    return f"{x:.{digits}g}"
+
+
+def where(p, unit: str = "m") -> str:
+    """Where a homogeneous point is, in words: ``"at (x, y) m"`` or ``"at infinity, direction (dx, dy)"``.
+
+    Ideal-ness is :func:`planargeo.geometry.projective.is_ideal`.
+
+    Parameters
+    ----------
+    p : array_like (3,)
+    unit : str
+
+    Returns
+    -------
+    str
+    """
+    p = np.asarray(p, dtype=float)
+    if bool(is_ideal(p)):
+        d = direction(p)
+        return f"at infinity, direction ({num(d[0])}, {num(d[1])})"
+    x, y = to_xy(p)
+    return f"at ({num(x)}, {num(y)}) {unit}"
+
+
+def _align(n) -> tuple[str, str]:
+    """Text alignment for a label put beside an anchor in the pixel direction ``n``."""
+    ha = "left" if n[0] > 0.3 else "right" if n[0] < -0.3 else "center"
+    va = "bottom" if n[1] > 0.3 else "top" if n[1] < -0.3 else "center"
+    return ha, va
+
+
+def label_line(pic: Picture, id: str, text: str, *, anchor=None, gap: float = 7.0,
+               side: float = 1.0) -> None:
+    """Label the line element ``id`` (just drawn, unlabelled) beside its point nearest ``anchor``.
+
+    The label sits ``gap`` pixels off the line along its normal (``side`` = -1: the other
+    normal), aligned away from the line; the picture's placer moves it if another label
+    is there.  A line out of view gets no label.
+
+    Parameters
+    ----------
+    pic : Picture
+    id : str
+        The line element's id.
+    text : str
+        The label.
+    anchor : (float, float), optional
+        Near which point of the line (default: the view's centre), kept within its middle 80 %.
+    gap : float
+        Pixels between the line and the label.
+    side : float
+        +1: above the line (right of a vertical one); -1: below it.
+    """
+    el = next(e for e in pic.elements if e["id"] == id)
+    seg = next((p["xy"] for p in el["parts"] if p["p"] == "path"), None)
+    if seg is None or not text:
+        return
+    seg = np.asarray(seg, float)
+    a = np.array([(pic.box[0] + pic.box[1]) / 2, (pic.box[2] + pic.box[3]) / 2]) if anchor is None \
+        else np.asarray(anchor, float)
+    d = seg[1] - seg[0]
+    L2 = float(d @ d)
+    t = 0.5 if L2 == 0 else float(np.clip((a - seg[0]) @ d / L2, 0.1, 0.9))
+    foot = seg[0] + t * d
+    dp = np.array([d[0] * pic.kx, d[1] * pic.ky])
+    dp /= max(math.hypot(*dp), 1e-300)
+    n = np.array([-dp[1], dp[0]])
+    if n[1] < 0 or (n[1] == 0 and n[0] < 0):
+        n = -n
+    n = n * side
+    ha, va = _align(n)
+    el["parts"].append({"p": "text", "x": float(foot[0]), "y": float(foot[1]), "dx": float(n[0] * gap),
+                        "dy": float(n[1] * gap), "text": text, "ha": ha, "va": va})
+
+
+def point_along(pic: Picture, id: str, p, **kw) -> None:
+    """A point as :meth:`Picture.point`; an ideal one's edge arrow points along its direction.
+
+    :meth:`Picture.point` draws an ideal twist's pole as an arrow along the
+    translation it stands for (across the pole's direction).  A point of pure
+    geometry at infinity *is* a direction: its arrow points that way, out of the view.
+
+    Parameters
+    ----------
+    pic : Picture
+    id : str
+    p : array_like (3,)
+    **kw
+        Keyword arguments of :meth:`Picture.point`.
+    """
+    kw.setdefault("glyph", False)
+    pic.point(id, p, **kw)
+    p = np.asarray(p, float)
+    if not bool(is_ideal(p)) or not np.any(p):
+        return
+    el = pic.elements[-1]
+    arrow = next((q for q in el["parts"] if q["p"] == "arrow"), None)
+    if arrow is None:
+        return
+    L = math.hypot(arrow["dx"], arrow["dy"])
+    mid = np.array([arrow["x"] + arrow["dx"] / 2 / pic.kx, arrow["y"] + arrow["dy"] / 2 / pic.ky])
+    dirn = np.array([-p[1] * pic.kx, p[0] * pic.ky])
+    dirn /= math.hypot(*dirn)
+    arrow["x"] = float(mid[0] - dirn[0] * L / 2 / pic.kx)
+    arrow["y"] = float(mid[1] - dirn[1] * L / 2 / pic.ky)
+    arrow["dx"], arrow["dy"] = float(dirn[0] * L), float(dirn[1] * L)
