@@ -10,7 +10,7 @@ import math
 import numpy as np
 import pytest
 
-from planargeo.draw.layout import legibility_problems
+from _picture_checks import elements, problems
 from planargeo.widgets import SubspaceExplorer
 from planargeo.widgets.subspace import CHECK_ROWS, CHECKS_HEADING, COM, JOINT_OPTIONS, SHOW_OPTIONS
 
@@ -26,8 +26,9 @@ def cross2(a, b):
 
 
 def legible(ex):
-    problems = legibility_problems(ex.fig)
-    assert problems == [], problems
+    """Every element of the picture has its symbol and description; no two labels overlap."""
+    found = problems(ex.picture())
+    assert found == [], found
 
 
 def residuals_print_as_zero(ex):
@@ -258,11 +259,11 @@ def test_the_view_holds_every_handle_and_depends_on_the_values_only(ex):
     ex.set(**{"force x": 3.4, "force y": 1.9, "force angle": 0.0, "F": 4.0})
     tip = ex.handles()[3].where()
     assert tip == pytest.approx((4.4, 1.9))
-    (x0, x1), (y0, y1) = ex.ax.get_xlim(), ex.ax.get_ylim()
+    x0, x1, y0, y1 = ex.picture()["box"]
     for x, y in ex.mechanism_points():
         assert x0 < x < x1 and y0 < y < y1
     fresh = SubspaceExplorer(display="agg", **ex.values)
-    assert fresh.ax.get_xlim() == (x0, x1) and fresh.ax.get_ylim() == (y0, y1)
+    assert fresh.picture()["box"] == [x0, x1, y0, y1]
     assert fresh.readout_strings == ex.readout_strings
     ex.reset()
-    assert ex.ax.get_xlim() == SubspaceExplorer(display="agg").ax.get_xlim()
+    assert ex.picture()["box"] == SubspaceExplorer(display="agg").picture()["box"]

@@ -45,6 +45,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Polygon as MplPolygon
 
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
+from planargeo.draw.pictures.subspace import BAR, subspace_picture
 from planargeo.draw.style import COLORS
 from planargeo.errors import DegenerateGeometryError
 from planargeo.scenes.subspace import subspace_state, unit_direction
@@ -63,7 +64,7 @@ _LABEL = {k: lab for lab, k in JOINT_OPTIONS.items()}
 SHOW_OPTIONS = {"f = TQ + Rμ": "wrench", "I⁻¹f = sψ + Uγ": "twist", "s, R, T, U": "spaces"}
 #: the body: a bar along x with its centre of mass at (1, 0)
 COM = (1.0, 0.0)
-_BAR = np.array([(-0.3, -0.12), (2.3, -0.12), (2.3, 0.12), (-0.3, 0.12)])
+_BAR = BAR
 #: data length of the force arrow per newton, and of the direction handle
 ARROW = 0.5
 DIR_HANDLE = 0.7
@@ -446,19 +447,66 @@ class SubspaceExplorer(Explorer):
         self._merge_coinciding([*self.s_art, *self.U_art, self.afree_art, self.spsi_art, self.Ug_art])
         return self._readout(st, k)
 
+    def readout_of(self, st):
+        """The readout of the state ``st`` (joint forces and accelerations, ``sᵀIs``, the checks).
+
+        Parameters
+        ----------
+        st : dict
+            A state of :meth:`compute`.
+
+        Returns
+        -------
+        dict
+        """
+        return self._readout(st, int(st["s"].shape[1]))
+
+    def scene_picture(self, st, view=None):
+        """The state's picture, built natively (:func:`planargeo.draw.pictures.subspace.subspace_picture`).
+
+        Parameters
+        ----------
+        st : dict
+            A state of :meth:`compute`.
+        view : (x0, x1, y0, y1), optional
+            The view the user zoomed or panned to (default: :meth:`view_box`).
+
+        Returns
+        -------
+        Picture
+        """
+        v = self.values
+        return subspace_picture(st, show=SHOW_OPTIONS[v["show"]], m=float(v["m"]), rho=float(v["rho"]),
+                                view=view or self.view_box(), size=self.figure_px)
+
+    def mechanism_points(self):
+        """Points the view must hold: the handles and the body's corners.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``(n, 2)``.
+        """
+        return np.vstack([super().mechanism_points(), BAR])
+
     #: room left round the handles when the view grows to hold them (m)
     VIEW_MARGIN = 0.3
 
-    def _fit_view(self) -> None:
+    def view_box(self) -> tuple[float, float, float, float]:
         """The default view, grown to hold every handle (the joint, its direction, the force).
 
         The view depends on the control values only (a fresh explorer with the same
         values shows the same view): the default limits, widened to the handles
         plus :data:`VIEW_MARGIN`, then to a span in each direction no smaller than
         the handles' largest extent.
+
+        Returns
+        -------
+        tuple
+            ``(x0, x1, y0, y1)``.
         """
         x0, x1, y0, y1 = self.limits
-        pts = self.mechanism_points()
+        pts = super().mechanism_points()            # the handles (the bar is inside the default limits)
         if len(pts):
             m = self.VIEW_MARGIN
             x0, x1 = min(x0, pts[:, 0].min() - m), max(x1, pts[:, 0].max() + m)
@@ -471,6 +519,10 @@ class SubspaceExplorer(Explorer):
                         x0, x1 = lo - grow, hi + grow
                     else:
                         y0, y1 = lo - grow, hi + grow
+        return (x0, x1, y0, y1)
+
+    def _fit_view(self) -> None:
+        x0, x1, y0, y1 = self.view_box()
         if (x0, x1) != tuple(self.ax.get_xlim()) or (y0, y1) != tuple(self.ax.get_ylim()):
             self.ax.set_xlim(x0, x1)
             self.ax.set_ylim(y0, y1)

@@ -1,0 +1,85 @@
+"""The native pictures of the subspace, impulse, splitting and articulated explorers, against hand geometry.
+
+Positions are computed here by hand (axes of percussion ``x = d + ρ²/d``, poles of motions
+the joint allows, clipped lines through known points), never with the package's picture code.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from _picture_checks import elements, fill, label_boxes, overlapping_labels, problems
+from planargeo.widgets import SubspaceExplorer
+
+
+def _marks(el):
+    return [(p["x"], p["y"]) for p in el["parts"] if p["p"] == "mark"]
+
+
+def _paths(el):
+    return [np.asarray(p["xy"], float) for p in el["parts"] if p["p"] == "path"]
+
+
+def test_label_boxes_are_measured_from_the_picture_data():
+    """A hand-made picture: one label 10 characters long at (0, 0), offset (4, 4), left/bottom."""
+    pic = {"box": [-1.0, 1.0, -1.0, 1.0], "margin": [0, 0, 0, 0], "size": [200, 200], "font_px": 10.0,
+           "elements": [{"id": "a", "parts": [{"p": "text", "x": 0.0, "y": 0.0, "dx": 4.0, "dy": 4.0,
+                                               "text": "abcdefghij", "ha": "left", "va": "bottom"}]},
+                        {"id": "b", "parts": [{"p": "text", "x": 0.5, "y": 0.0, "dx": 0.0, "dy": 0.0,
+                                               "text": "xy", "ha": "right", "va": "top"}]}]}
+    (_, _, a), (_, _, b) = label_boxes(pic)
+    assert a == pytest.approx((104.0, 104.0, 164.0, 116.5))        # 10 × 6 px wide, 12.5 px high
+    assert b == pytest.approx((138.0, 87.5, 150.0, 100.0))
+    assert overlapping_labels(pic) == []
+    pic["elements"][1]["parts"][0].update(y=0.1, va="bottom")    # now inside a's box
+    assert len(overlapping_labels(pic)) == 1
+
+
+# ------------------------------------------------------------------------------------------ subspace
+def test_subspace_default_pivot_percussion_axis_and_force_by_hand():
+    """Pivot at the origin, bar of m = 2, ρ = 0.5 with c at (1, 0), force of 1 N up at x = 1.6: s is the pivot,
+    T the axis of percussion x = d + ρ²/d = 1.25, R the lines through the pivot, f the line x = 1.6."""
+    pic = SubspaceExplorer(display="agg").picture()
+    assert problems(pic) == []
+    els = elements(pic)
+    assert _marks(els["s1"]) == [pytest.approx((0.0, 0.0))]
+    x0, x1, y0, y1 = pic["box"]
+    for name, x in (("T1", 1.25), ("f", 1.6)):
+        (seg,) = _paths(els[name])
+        np.testing.assert_allclose(seg[:, 0], [x, x], atol=1e-4)              # vertical, clipped to the view
+        np.testing.assert_allclose(sorted(seg[:, 1]), [y0, y1], atol=1e-4)
+    for name in ("R1", "R2", "Rmu"):                                          # through the pivot
+        (seg,) = _paths(els[name])
+        d = seg[1] - seg[0]
+        assert abs(d[0] * seg[0][1] - d[1] * seg[0][0]) < 1e-3 * np.hypot(*d)
+    assert els["s1"]["symbol"] == "s" and "(6.1, 6.8)" in els["s1"]["desc"] and "(0, 0) m" in els["s1"]["desc"]
+    assert els["T1"]["desc"].endswith("0.8 N, through (1.25, 0) m")         # T = I s / (sᵀIs): 2·1/2.5
+    assert fill(pic, SubspaceExplorer(display="agg").mechanism_points()) >= 1 / 3
+
+
+def test_subspace_plane_joint_ideal_motions_and_a_couple_reaction():
+    """The plane joint: s₁, s₂ translations (points at infinity, edge arrows), R the line at infinity (a
+    couple glyph), U the spin about the centre of mass (1, 0) where T₁ and T₂ meet."""
+    ex = SubspaceExplorer(display="agg", joint="plane joint (4.79)", show="s, R, T, U")
+    pic = ex.picture()
+    assert problems(pic) == []
+    els = elements(pic)
+    for name in ("s1", "s2"):
+        kinds = [p["p"] for p in els[name]["parts"]]
+        assert "mark" not in kinds and "arrow" in kinds
+        assert any(p["p"] == "text" and p["text"].endswith("at ∞") for p in els[name]["parts"])
+    assert [p["p"] for p in els["R1"]["parts"]][0] == "glyph"
+    assert _marks(els["U1"]) == [pytest.approx((1.0, 0.0))]
+    assert els["U1"]["symbol"] == "U"
+    texts = [p["text"] for p in els["U1"]["parts"] if p["p"] == "text"]
+    assert texts == ["U (T₁ ∩ T₂)"]
+
+
+def test_subspace_coinciding_points_are_one_element_with_both_names():
+    """A pin in a slot struck at (1.6, 0.5) along x: U and Uγ coincide (Uγ is U times γ): one element."""
+    ex = SubspaceExplorer(display="agg", joint="revolute + prismatic", show="I⁻¹f = sψ + Uγ",
+                          **{"force angle": 0.0, "force y": 0.5})
+    els = elements(ex.picture())
+    assert "U_gamma" not in els and els["U1"]["symbol"] == "U, Uγ"
+    U = ex.state["U"][:, 0]
+    assert _marks(els["U1"]) == [pytest.approx((-U[1] / U[2], U[0] / U[2]), abs=1e-4)]
