@@ -37,6 +37,7 @@ from shapely.geometry import Point as SPoint
 from shapely.geometry import Polygon, box
 
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
+from planargeo.draw.pictures.percussion import percussion_numbers, percussion_picture
 from planargeo.draw.style import COLORS
 from planargeo.errors import DegenerateGeometryError, InputError, InvalidPolygonError
 from planargeo.screws.inertia import Inertia, percussion_axis, percussion_pole
@@ -357,67 +358,120 @@ class PercussionExplorer(Explorer):
             Readout entries.
         """
         I, c, a, f = st["I"], st["c"], st["a"], st["f"]
-        shape = st["shape"]
-        self.body.set_xy(np.asarray(shape.exterior.coords))
+        nums = percussion_numbers(st)
+        self.body.set_xy(np.asarray(st["shape"].exterior.coords))
         self.gyration.set_conic(I.matrix)
         self.pole_art.set_point(a)
         self.axis_art.set_line(f)
         self.com_art.set_point(from_xy(c))
-        rho = float(I.radius_of_gyration)
-        m = float(I.mass)
+        if nums["spot"] is not None:
+            self.join_art.set_line(np.cross(a / a[2], from_xy(c)))
+        self.join_art.set_visible(nums["spot"] is not None)
+        spot = nums["grip_spot"] if self.values["drive"] == "impact" else nums["spot"]
+        self.spot.set_data(*(([spot[0]], [spot[1]]) if spot is not None else ([], [])))
+        self.spot_label.set_visible(spot is not None)
+        if spot is not None:
+            self.spot_label.set_point(from_xy(spot))
+        x0, x1, y0, y1 = self._view(st)
+        self.ax.set_xlim(x0, x1)
+        self.ax.set_ylim(y0, y1)
+        return self.readout_of(st)
+
+    def readout_of(self, st):
+        """The readout of the state ``st``: the pole, ``d``, ``r = ρ²/d``, the centres of percussion.
+
+        Parameters
+        ----------
+        st : dict
+            What :meth:`compute` returned.
+
+        Returns
+        -------
+        dict
+            Readout entries.
+        """
+        c = st["c"]
+        nums = percussion_numbers(st)
+        rho, m, P, d = nums["rho"], nums["mass"], nums["P"], nums["d"]
         impact = self.values["drive"] == "impact"
         out = {} if impact else {"pole x": self.values["pole x"], "pole y": self.values["pole y"]}
         out.update({"mass m": m, "radius of gyration ρ": rho, "centre of mass": tuple(c)})
-        finite_pole = not bool(is_ideal(a))
-        if finite_pole:
-            P = np.array([-a[1] / a[2], a[0] / a[2]])
-            d = float(np.hypot(*(P - c)))
-        else:
-            P, d = None, math.inf
-        out["pole"] = point_value(a)
+        out["pole"] = point_value(st["a"])
         out["d = |pole − c|"] = d
-        # the construction line from the pole through the centre of mass
-        if P is not None and d > 1e-9 * max(rho, 1e-300):
-            self.join_art.set_line(np.cross(a / a[2], from_xy(c)))
-            self.join_art.set_visible(True)
-            r = rho * rho / d
-            spot = c + (c - P) / d * r                # where the axis crosses the line pole-c (5.68)
-            self.spot.set_data([spot[0]], [spot[1]])
+        if nums["spot"] is not None:
+            r = nums["r"]
             out["r = ρ²/d (5.68)"] = r
             out["l = d + ρ²/d (5.67)"] = d + r
             out["angular accel. α"] = float(self.values["angular accel. α"])
             out["force for α: m d α (5.66)"] = m * d * float(self.values["angular accel. α"])
-            out["centre of percussion"] = tuple(spot)
+            out["centre of percussion"] = tuple(nums["spot"])
         else:
-            self.join_art.set_visible(False)
-            self.spot.set_data([], [])
             out["r = ρ²/d (5.68)"] = 0.0 if P is None else math.inf
             out["l = d + ρ²/d (5.67)"] = math.inf
             out["force for α: m d α (5.66)"] = "pure couple" if P is not None else "—"
             out["centre of percussion"] = "—"
         # the sweet spot of the grip (origin): where a strike makes the body turn about the grip
-        d0 = float(np.hypot(*c))
-        grip_spot = c + c / d0 * (rho * rho / d0) if d0 > 0 else None
+        grip_spot = nums["grip_spot"]
         out["sweet spot of the grip"] = "—" if grip_spot is None else tuple(grip_spot)
-        if self.values["drive"] == "impact":
-            if grip_spot is not None:
-                self.spot.set_data([grip_spot[0]], [grip_spot[1]])
+        if impact:
             out["impact at"] = self.values["impact at"]
             out["pole distance from grip"] = "at infinity" if P is None else float(np.hypot(*P))
-        sx, sy = self.spot.get_data()
-        self.spot_label.set_visible(len(sx) > 0)
-        if len(sx):
-            self.spot_label.set_point(from_xy([sx[0], sy[0]]))
-        self._fit_view(shape)
         return out
 
-    def _fit_view(self, shape):
-        """Keep the body (and the slider range of the pole) in view; change limits only if needed."""
-        x0, y0, x1, y1 = shape.bounds
+    def scene_picture(self, st, view=None):
+        """The state's picture (:func:`planargeo.draw.pictures.percussion.percussion_picture`).
+
+        Parameters
+        ----------
+        st : dict
+            What :meth:`compute` returned.
+        view : (x0, x1, y0, y1), optional
+            The view the user zoomed or panned to (default: :meth:`_view`).
+
+        Returns
+        -------
+        Picture
+        """
+        return percussion_picture(st, impact=self.values["drive"] == "impact",
+                                  view=view or self._view(st), size=self.figure_px)
+
+    #: the work area: where the pole's sliders reach (m), and the view's step (m)
+    _STEP = 0.25
+
+    def _work_area(self):
         cx, cy = self.controls["pole x"], self.controls["pole y"]
-        lo_x, hi_x = min(x0, cx.min) - 0.1, max(x1, cx.max) + 0.1
-        lo_y, hi_y = min(y0, cy.min) - 0.1, max(y1, cy.max) + 0.1
-        (ax0, ax1), (ay0, ay1) = self.ax.get_xlim(), self.ax.get_ylim()
-        if lo_x < ax0 or hi_x > ax1 or lo_y < ay0 or hi_y > ay1:
-            self.ax.set_xlim(lo_x, hi_x)
-            self.ax.set_ylim(lo_y, hi_y)
+        return (cx.min, cx.max, cy.min, cy.max)
+
+    def mechanism_points(self):
+        """What the view holds: the body's outline, the grip, and the handles within the pole's reach.
+
+        A handle of the axis far beyond the pole's sliders (a pole near ``c`` sends its axis
+        far away, ``r = ρ²/d``) is left out: the axis is still drawn, clipped to the view.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``(n, 2)`` points.
+        """
+        st = self.state
+        pts = [np.zeros((1, 2))]
+        if st is not None:
+            pts.append(np.asarray(st["shape"].exterior.coords, float))
+        x0, x1, y0, y1 = self._work_area()
+        for h in self.handles():
+            xy = h.where()
+            if xy is not None and x0 <= xy[0] <= x1 and y0 <= xy[1] <= y1:
+                pts.append(np.asarray(xy, float).reshape(1, 2))
+        return np.vstack(pts)
+
+    def _view(self, st):
+        """The view: the body, the grip and the handles in reach, 0.25 m around, in steps of 0.25 m.
+
+        A function of the state alone (a fresh explorer with the same values shows the same
+        view); it changes in steps, not under every move of a drag.
+        """
+        pts = self.mechanism_points()
+        lo, hi = pts.min(axis=0) - self._STEP, pts.max(axis=0) + self._STEP
+        lo = np.floor(lo / self._STEP - 1e-9) * self._STEP
+        hi = np.ceil(hi / self._STEP + 1e-9) * self._STEP
+        return (float(lo[0]), float(hi[0]), float(lo[1]), float(hi[1]))
