@@ -24,7 +24,7 @@ Examples
 >>> d = projective_picture(st, view=(-3, 3, -3, 3)).to_dict()
 >>> els = {e["id"]: e for e in d["elements"]}
 >>> els["polar"]["parts"][0]["xy"]            # x = 1/2: the polar of (2, 0) for the unit circle
-[[0.5, -3.0], [0.5, 3.0]]
+[[0.5, 3.0], [0.5, -3.0]]
 >>> els["pole of M"]["desc"]
 'pole C⁻¹ M of the line M (5.37): at (0, 2) m'
 """
