@@ -1,16 +1,13 @@
-"""Pieces shared by the explorers' native pictures: words for descriptions, line labels, direction arrows.
+"""Pieces shared by the explorers' native pictures: line labels, label directions, direction arrows.
 
-* :func:`num` and :func:`where`: a number and a point's position, in words, for an
-  element's description;
 * :func:`label_line`: a line's label beside it, on the side its normal points to,
   aligned away from the line (so that the line never runs through its own label);
+* :func:`label_toward`: a point's label put on a chosen side of it;
 * :func:`point_along`: an ideal point of pure geometry (a direction, not a
   translation's pole), its edge arrow pointing *along* its direction.
 
 Examples
 --------
->>> where([0.0, -2.0, 1.0]), where([1.0, 0.0, 0.0]), num(0.6666666)
-('at (2, 0) m', 'at infinity, direction (0, 1)', '0.667')
 >>> from planargeo.draw.picture import Picture
 >>> pic = Picture((-2, 2, -2, 2), size=(300, 300))
 >>> pic.line("L", [1.0, 1.0, 0.0], label="", arrow=False)      # the line y = x
@@ -29,53 +26,10 @@ import math
 
 import numpy as np
 
-from planargeo.draw.geometry import clip_line
 from planargeo.draw.picture import Picture
-from planargeo.geometry.projective import direction, is_ideal, to_xy
+from planargeo.geometry.projective import is_ideal
 
-__all__ = ["where", "num", "label_line", "point_along"]
-
-
-def num(x, digits: int = 3) -> str:
-    """A number with ``digits`` significant digits (round-off below 1e-12 reads 0, infinity ∞).
-
-    Parameters
-    ----------
-    x : float
-    digits : int
-
-    Returns
-    -------
-    str
-    """
-    x = float(x)
-    if not math.isfinite(x):
-        return "∞" if x > 0 else "−∞" if x < 0 else "undefined"
-    if abs(x) < 1e-12:
-        return "0"
-    return f"{x:.{digits}g}"
-
-
-def where(p, unit: str = "m") -> str:
-    """Where a homogeneous point is, in words: ``"at (x, y) m"`` or ``"at infinity, direction (dx, dy)"``.
-
-    Ideal-ness is :func:`planargeo.geometry.projective.is_ideal`.
-
-    Parameters
-    ----------
-    p : array_like (3,)
-    unit : str
-
-    Returns
-    -------
-    str
-    """
-    p = np.asarray(p, dtype=float)
-    if bool(is_ideal(p)):
-        d = direction(p)
-        return f"at infinity, direction ({num(d[0])}, {num(d[1])})"
-    x, y = to_xy(p)
-    return f"at ({num(x)}, {num(y)}) {unit}"
+__all__ = ["label_line", "label_toward", "point_along"]
 
 
 def _align(n) -> tuple[str, str]:
@@ -160,3 +114,26 @@ def point_along(pic: Picture, id: str, p, **kw) -> None:
     arrow["x"] = float(mid[0] - dirn[0] * L / 2 / pic.kx)
     arrow["y"] = float(mid[1] - dirn[1] * L / 2 / pic.ky)
     arrow["dx"], arrow["dy"] = float(dirn[0] * L), float(dirn[1] * L)
+
+
+def label_toward(el: dict, u, gap: float) -> None:
+    """Put the label of the point element ``el`` ``gap`` pixels from it in the direction ``u``.
+
+    The picture's placer keeps this spot when it is free (else it tries others).
+
+    Parameters
+    ----------
+    el : dict
+        A point element (its first text part is the label).
+    u : (float, float)
+        Direction in pixels (y up).
+    gap : float
+        Pixels from the point to the label.
+    """
+    u = np.asarray(u, float)
+    u = u / max(math.hypot(*u), 1e-300)
+    for part in el["parts"]:
+        if part["p"] == "text":
+            part["dx"], part["dy"] = float(u[0] * gap), float(u[1] * gap)
+            part["ha"], part["va"] = _align(u)
+            return

@@ -31,7 +31,8 @@ import math
 import numpy as np
 
 from planargeo.draw.picture import Picture
-from planargeo.draw.pictures.common import label_line, num, where
+from planargeo.draw.pictures._words import num, where
+from planargeo.draw.pictures.common import label_line
 from planargeo.draw.style import COLORS
 from planargeo.geometry.projective import from_xy, is_ideal
 

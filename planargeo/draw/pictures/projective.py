@@ -36,7 +36,8 @@ import numpy as np
 
 from planargeo.draw.geometry import point_xy
 from planargeo.draw.picture import Picture
-from planargeo.draw.pictures.common import label_line, num, point_along, where
+from planargeo.draw.pictures._words import num, where
+from planargeo.draw.pictures.common import label_line, point_along
 from planargeo.draw.style import COLORS
 from planargeo.geometry.projective import is_at_infinity
 
