@@ -36,8 +36,22 @@ $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
-$(STAMP): pyproject.toml | $(BIN)/python
+# Two steps, two stamps: pip installs when pyproject.toml changes; numba's cache of the compiled kernels is
+# filled again when the install or a kernel source changes (numba keys its cache to kernels.py alone, and
+# freezes the limits kernels.py imports from errors.py and subspaces.py into the machine code: when one of
+# those changes, kernels.py's time is renewed so that numba compiles afresh instead of loading stale code).
+PIP_STAMP      := $(VENV)/.pip-stamp
+KERNEL_SOURCES := planargeo/algorithms/kernels.py planargeo/algorithms/compiled.py
+KERNEL_LIMITS  := planargeo/errors.py planargeo/mechanics/subspaces.py
+
+$(PIP_STAMP): pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e '.[dev]'
+	@touch $(PIP_STAMP)
+
+$(STAMP): $(PIP_STAMP) $(KERNEL_SOURCES) $(KERNEL_LIMITS)
+	@if [ -f $(STAMP) ] && [ -n "$(filter $(KERNEL_LIMITS),$?)" ]; then \
+	  echo "kernel limits changed ($(filter $(KERNEL_LIMITS),$?)): the kernels are compiled afresh"; \
+	  touch planargeo/algorithms/kernels.py; fi
 	$(BIN)/python -m planargeo.algorithms.compiled --warm
 	@touch $(STAMP)
 
