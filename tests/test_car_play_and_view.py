@@ -3,13 +3,21 @@ event at its exact time (no silent cap), the car fills a third of its view, tiny
 state per set of controls, every symbol explained."""
 import math
 
+import numpy as np
 import pytest
 
+from picture_checks import elements, parts
 from planargeo.widgets.car import CarExplorer, view_box
 
 DRIVE, SPEED, RADIUS, HEADING, FRICTION = ("drive force (N)", "speed (m/s)", "turn radius (m)", "heading (deg)",
                                            "tyre friction μ")
 L, EPS, M, RHO = 2.6, 0.45, 1200.0, 1.2
+
+
+def banner(ex) -> str:
+    """The banner's text on the picture ("" when there is none)."""
+    el = elements(ex.picture()).get("banner")
+    return "" if el is None else el["parts"][0]["text"]
 
 
 def test_play_runs_a_minute_from_the_default():
@@ -31,29 +39,39 @@ def test_a_drive_ends_in_the_stated_slide_at_the_friction_limit():
     ex.advance(100, seconds=60.0)
     assert ex.values[SPEED] == pytest.approx(w_end * d, rel=1e-9)           # stopped exactly there
     assert ex.values[SPEED] < ex.controls[SPEED].max                        # not the slider's cap
-    assert ex.message == "" and ex.banner.get_text() == "the car slides out: its tyres reach μ·g"
+    assert ex.message == "" and banner(ex) == "the car slides out: its tyres reach μ·g"
     assert ex.readout_values["tyres"].startswith("slide")
     assert ex.readout_values["acceleration of G"] == pytest.approx(0.9 * 9.81, rel=1e-9)
     n = ex.n_updates
     ex.advance(3)
     assert ex.n_updates == n                                                # Play has ended
     ex.set(**{FRICTION: 1.2})                                               # better tyres: it holds again
-    assert ex.banner.get_text() == "" and ex.readout_values["tyres"].startswith("hold")
+    assert banner(ex) == "" and ex.readout_values["tyres"].startswith("hold")
 
 
 @pytest.mark.parametrize("heading", [0.0, 37.0, 90.0, 200.0])
-def test_the_car_fills_a_third_of_its_view_and_the_view_holds_the_car_and_the_icr(heading):
-    ex = CarExplorer(display="agg", **{HEADING: heading})
-    x0, x1 = ex.ax.get_xlim()
-    y0, y1 = ex.ax.get_ylim()
-    body = ex.body.get_xy()
+@pytest.mark.parametrize("radius", [8.0, 40.0])
+def test_the_car_fills_a_third_of_its_view_and_the_view_holds_the_car_and_a_near_icr(heading, radius):
+    ex = CarExplorer(display="agg", **{HEADING: heading, RADIUS: radius})
+    x0, x1, y0, y1 = ex.view_of(ex.state)
+    body = np.array(parts(elements(ex.picture())["body"], "path")[0]["xy"])
+    th = math.radians(heading)
+    # the body by hand: 1.6 m wide, 0.7 m beyond each axle, turned by the heading about the ICR (-d, 0)
+    corners = np.array([[-0.8, -0.7], [0.8, -0.7], [0.8, L + 0.7], [-0.8, L + 0.7]])
+    rot = np.array([[math.cos(th), -math.sin(th)], [math.sin(th), math.cos(th)]])
+    expected = (corners + [radius, 0.0]) @ rot.T + [-radius, 0.0]
+    assert body == pytest.approx(expected, abs=1e-4)
     if heading == 0.0:
         length = body[:, 1].max() - body[:, 1].min()
         assert length >= (y1 - y0) / 3
     icr = ex.handles()[2].where()
-    for x, y in list(body) + [icr]:
+    for x, y in list(body) + ([icr] if radius <= 12.0 else []):
         assert x0 <= x <= x1 and y0 <= y <= y1
-    assert (x0, x1, y0, y1) == pytest.approx(view_box(8.0, L, math.radians(heading)))
+    assert (x0, x1, y0, y1) == pytest.approx(view_box(radius, L, th))
+    if radius > 12.0:                      # a far ICR: out of view, an arrow at the edge points to it
+        icr_el = elements(ex.picture())["ICR"]
+        assert parts(icr_el, "arrow") and not parts(icr_el, "mark")
+        assert not (x0 <= icr[0] <= x1 and y0 <= icr[1] <= y1)
 
 
 def test_a_tiny_drive_is_computed():
@@ -71,7 +89,7 @@ def test_one_state_per_set_of_controls_after_play_and_drags():
     ex.advance(3)
     fresh = CarExplorer(display="agg", **ex.values)
     assert fresh.readout_values == ex.readout_values and fresh.message == ex.message
-    assert fresh.ax.get_xlim() == ex.ax.get_xlim() and fresh.ax.get_ylim() == ex.ax.get_ylim()
+    assert fresh.view_of(fresh.state) == ex.view_of(ex.state) and fresh.picture() == ex.picture()
 
 
 def test_every_readout_row_and_label_is_explained():

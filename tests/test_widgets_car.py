@@ -4,6 +4,7 @@ import math
 import numpy as np
 import pytest
 
+from picture_checks import elements, on_line, parts
 from planargeo.widgets.car import CarExplorer
 
 L = 2.6
@@ -52,14 +53,28 @@ def test_tyre_forces_match_newton_euler(ex, vals):
     # drawn tyre lines: the rear force acts along the rear axle through the rear contact, which the
     # drawing puts at the origin (the ICR at (-d, 0)); the front force through the front contact
     # (0, L), along the front axle, towards or away from the ICR
-    rl, fl = ex.rear.get_line(), ex.front.get_line()
+    els = elements(ex.picture())
     d = v["turn radius (m)"]
-    assert rl[:2] == pytest.approx([mu1, 0.0], abs=1e-9)
-    assert np.dot([0.0, 0.0, 1.0], rl) == pytest.approx(0.0, abs=1e-6)       # point (0, 0): [y, -x, 1]
-    assert fl[:2] == pytest.approx(mu2 * np.array([d, L]) / math.hypot(d, L), abs=1e-9)
-    for x, y in ((0.0, L), (-d, 0.0)):                                        # front contact, ICR
-        assert np.dot([y, -x, 1.0], fl) == pytest.approx(0.0, abs=1e-6 * (1 + abs(mu2)))
-    ex.fig.canvas.draw()
+    rear_line = parts(els["R₁μ₁"], "path")[0]["xy"]
+    front_line = parts(els["R₂μ₂"], "path")[0]["xy"]
+    # the rear force's line is the rear axle line y = 0 through the rear contact (0, 0) and the ICR
+    for x, y in rear_line:
+        assert y == pytest.approx(0.0, abs=1e-3)
+    assert on_line((-d, 0.0), *front_line, tol=1e-4) and on_line((0.0, L), *front_line, tol=1e-4)
+    # its arrow: μ₁ at 1 mm/N, centred on the rear contact, pointing along the force (sign of μ₁)
+    pic = ex.picture()
+    x0, x1, y0, y1 = pic["box"]
+    kx = (pic["size"][0] - pic["margin"][0] - pic["margin"][1]) / (x1 - x0)       # pixels per metre
+    for el, mu, at, direction in ((els["R₁μ₁"], mu1, (0.0, 0.0), (1.0, 0.0)),
+                                  (els["R₂μ₂"], mu2, (0.0, L), np.array([d, L]) / math.hypot(d, L))):
+        arrows = parts(el, "arrow")
+        if not arrows:
+            assert abs(mu) * 1e-3 * kx < 2.0           # shorter than 2 px: not drawn
+            continue
+        (a,) = arrows
+        vec = np.array([a["dx"], a["dy"]]) / kx
+        assert vec == pytest.approx(1e-3 * mu * np.asarray(direction), abs=1e-3)
+        assert np.array([a["x"], a["y"]]) + vec / 2 == pytest.approx(at, abs=1e-3)
 
 
 def test_more_speed_more_tyre_force(ex):

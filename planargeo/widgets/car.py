@@ -43,48 +43,21 @@ from matplotlib.patches import Polygon as MplPolygon
 from planargeo import scenes
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist, clip_line, conic_geometry
 from planargeo.draw.mechanism import LabelPlacer, ScaleBar
+from planargeo.draw.pictures.car import (FORCE_SCALE, HALF_TRACK, NEAR, OVERHANG, SLIDES, TYRE, car_picture,
+                                         moves, view_box)
 from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.errors import InputError, SceneError
 from planargeo.simulate.integrate import energy
 from planargeo.widgets.base import Explorer, Handle, Step
 
-__all__ = ["CarExplorer"]
+__all__ = ["CarExplorer", "view_box", "grip"]
 
-#: metres of arrow per newton for the tyre, drive and bias forces
-FORCE_SCALE = 1e-3
-#: half track and overhangs of the drawn body, half length of a drawn tyre (m)
-HALF_TRACK, OVERHANG, TYRE = 0.8, 0.7, 0.35
 SPEED, RADIUS, DRIVE, EPS = "speed (m/s)", "turn radius (m)", "drive force (N)", "COM behind front (ε)"
 HEADING = "heading (deg)"
 FRICTION = "tyre friction μ"
-#: the figure's banner once the tyres reach their limit
-SLIDES = "the car slides out: its tyres reach μ·g"
 #: gravity (m/s²): the tyres hold a horizontal acceleration of at most μ·G_ROAD at the centre of gravity
 G_ROAD = 9.81
-
-
-def _moves(theta: float, d: float):
-    """The drawing's placement of the scene: turned by ``theta`` about the ICR, rear tyre at the origin.
-
-    A scene point ``p`` is drawn at ``R p + t`` with ``R`` the rotation by
-    ``theta`` and ``t = (-d, 0)`` (at ``theta = 0`` the rear contact ``(d, 0)``
-    is drawn at the origin and stays there when ``d`` changes: drags map the
-    mouse to the car absolutely).  Twists (and points, in the package's
-    coordinates) map by ``V = [[R, -J t], [0, 1]]`` (``J`` the quarter turn),
-    wrenches (and lines) by ``W = V⁻ᵀ``, inertias (and conics) by ``W I Wᵀ``.
-
-    Returns
-    -------
-    tuple
-        ``(R, t, V, W)``.
-    """
-    c, s = math.cos(theta), math.sin(theta)
-    R = np.array([[c, -s], [s, c]])
-    t = np.array([-float(d), 0.0])
-    V = np.eye(3)
-    V[:2, :2] = R
-    V[:2, 2] = -np.array([-t[1], t[0]])
-    return R, t, V, np.linalg.inv(V).T
+_moves = moves
 
 
 def grip(res, mu: float):
@@ -111,48 +84,6 @@ def grip(res, mu: float):
     r_g = float(np.hypot(*res.extra["cg"]))
     w, wd = float(res.params["omega"]), float(res.quantities["omega_dot"])
     return r_g * float(np.hypot(w * w, wd)), float(mu) * G_ROAD
-
-
-#: margin (m) of the view around the car and the ICR
-VIEW_MARGIN = 1.0
-
-
-def view_box(d: float, L: float, theta: float, F_A: float = 0.0):
-    """The view ``(x0, x1, y0, y1)`` (m, drawn coordinates) holding the car, the ICR and the drive arrow.
-
-    In the car's frame (the ICR at the origin) the car, the ICR and the tip of the
-    drive arrow ``f_A`` fill a rectangle; the view is the square about its centre
-    (turned with the car, :func:`_moves`) whose half side is the rectangle's half
-    diagonal plus :data:`VIEW_MARGIN`, rounded up to 0.5 m: it holds them at every
-    heading, and the car fills a third of it for turns up to about 8 m.
-
-    Parameters
-    ----------
-    d, L : float
-        Turn radius and wheelbase (m).
-    theta : float
-        Heading (rad).
-    F_A : float
-        Drive force (N), drawn ``FORCE_SCALE`` m per N from the front tyre.
-
-    Returns
-    -------
-    tuple of float
-
-    Examples
-    --------
-    >>> [round(v, 2) for v in view_box(8.0, 2.6, 0.0)]
-    [-9.6, 2.4, -4.7, 7.3]
-    """
-    hyp = math.hypot(d, L)
-    tip = np.array([d, L]) + FORCE_SCALE * F_A * np.array([-L, d]) / hyp
-    xs = [0.0, d - HALF_TRACK, d + HALF_TRACK, float(tip[0])]
-    ys = [0.0, -OVERHANG, L + OVERHANG, float(tip[1])]
-    hx, hy = (max(xs) - min(xs)) / 2, (max(ys) - min(ys)) / 2
-    R, t, _V, _W = _moves(theta, d)
-    c = R @ np.array([min(xs) + hx, min(ys) + hy]) + t
-    half = math.ceil(2 * (math.hypot(hx, hy) + VIEW_MARGIN)) / 2
-    return (float(c[0] - half), float(c[0] + half), float(c[1] - half), float(c[1] + half))
 
 
 class CarExplorer(Explorer):
@@ -291,7 +222,8 @@ class CarExplorer(Explorer):
                           outlines=False)   # the outlines are drawn by gallery Fig 6.6, not here
         ke = float(energy(res.model, [0.0], [V / d])[0])
         acc, limit = grip(res, float(v[FRICTION]))
-        return {"res": res, "ke": ke, "acc": acc, "limit": limit, "slides": acc >= limit * (1 - 1e-9)}
+        return {"res": res, "ke": ke, "acc": acc, "limit": limit, "slides": acc >= limit * (1 - 1e-9),
+                "speed": v[SPEED], "heading": v[HEADING]}
 
     def play_step(self, values: dict, dt: float):
         """One Play step: the car drives ``dt`` seconds further round the turn (exact for any ``dt``).
@@ -498,13 +430,63 @@ class CarExplorer(Explorer):
         self.scale_bar.update()
         self.banner.set_text(SLIDES if st["slides"] else "")
         self._label(st, box, cg, icr)
+        return self.readout_of(st)
+
+    def view_of(self, st):
+        """The explorer's own view of the state ``st`` (:func:`~planargeo.draw.pictures.car.view_box`).
+
+        Parameters
+        ----------
+        st : dict
+            A state of :meth:`compute`.
+
+        Returns
+        -------
+        tuple of float
+            ``(x0, x1, y0, y1)`` (m).
+        """
+        p = st["res"].params
+        return view_box(p["d"], p["L"], math.radians(float(st["heading"])), p["F_A"])
+
+    def scene_picture(self, st, view=None):
+        """The state's picture built natively (:func:`planargeo.draw.pictures.car.car_picture`).
+
+        Parameters
+        ----------
+        st : dict
+            A state of :meth:`compute`.
+        view : (x0, x1, y0, y1), optional
+            The view the user zoomed or panned to (default: :meth:`view_of`).
+
+        Returns
+        -------
+        Picture
+        """
+        return car_picture(st["res"], heading=math.radians(float(st["heading"])),
+                           view=view or self.view_of(st), slides=st["slides"], limit=st["limit"],
+                           size=self.figure_px)
+
+    def readout_of(self, st):
+        """The readout of the state ``st``: speed, yaw rate and acceleration, tyre forces, grip, energy.
+
+        Parameters
+        ----------
+        st : dict
+            A state of :meth:`compute`.
+
+        Returns
+        -------
+        dict
+        """
+        res = st["res"]
+        q, x, p = res.quantities, res.extra, res.params
         mu = q["mu"]
         omega, wdot = p["omega"], q["omega_dot"]
         inertia_icr = p["m"] * (p["rho"] ** 2 + float(np.hypot(*x["cg"])) ** 2)
         power = float(q["f_A"][2]) * omega           # the drive's moment about the ICR times ω
-        out = {
-            "speed V": self.values[SPEED],
-            "heading θ": self.values[HEADING],
+        return {
+            "speed V": st["speed"],
+            "heading θ": st["heading"],
             "yaw rate ω": omega,
             "yaw acceleration ω̇": wdot,
             "rear tyre force μ₁": mu[0],
@@ -519,7 +501,27 @@ class CarExplorer(Explorer):
             "drive power": power,
             "rate of change of K": inertia_icr * omega * wdot,
         }
-        return out
+
+    def mechanism_points(self):
+        """The car's corners, its centre of gravity, the steering and drive handles, and a near ICR.
+
+        The ICR belongs to the view for turn radii up to
+        :data:`~planargeo.draw.pictures.car.NEAR` only (beyond, an arrow at the edge points to it).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``(n, 2)`` drawn points (m).
+        """
+        if self.state is None:
+            return np.zeros((0, 2))
+        res = self.state["res"]
+        d, L = res.params["d"], res.params["L"]
+        body = [(d - HALF_TRACK, -OVERHANG), (d + HALF_TRACK, -OVERHANG), (d + HALF_TRACK, L + OVERHANG),
+                (d - HALF_TRACK, L + OVERHANG)] + ([(0.0, 0.0)] if d <= NEAR else [])
+        pts = [self._drawn(c) for c in body]
+        pts += [self._cg_where(), self._steer_where(), self._drive_where()]
+        return np.array(pts, dtype=float)
 
     def explain(self):
         """Every symbol and readout name on screen, with its thesis equation.

@@ -1,0 +1,238 @@
+"""The picture of the cornering car (thesis 6.9, Fig 6.6), built natively: body, tyres, ICR, forces, inertia.
+
+The car turns about its instant centre of rotation (ICR), the joint ``s`` of the
+model (6.114).  Drawn turned by the heading about the ICR (:func:`moves`), with the
+rear tyre at the origin at heading 0:
+
+* the body, the two tyres (the front one steered), the axle lines meeting at the ICR;
+* the velocity pole ``v = s ω`` at the ICR (6.115) and, with a drive, the acceleration
+  pole of ``a = s ω̇`` (6.131), also at the ICR; coasting, ``ω̇ = 0`` and ``a = 0``;
+* the centre of gravity ``G`` and its circle about the ICR, the inertia ``I`` (6.117)
+  as its conic;
+* the tyre forces ``R₁μ₁``, ``R₂μ₂`` (6.114, 6.133), the drive ``f_A`` (6.120) and the
+  bias force ``p`` (6.119), each on its line of action with an arrow to scale
+  (:data:`FORCE_SCALE`), and the active-force line ``T`` (6.125);
+* a scale bar, and the banner once the tyres reach their limit.
+
+Examples
+--------
+>>> from planargeo.scenes.car import car
+>>> res = car(omega=0.5, F_A=0.0, outlines=False)
+>>> d = car_picture(res, heading=0.0, view=view_box(8.0, 2.6, 0.0)).to_dict()
+>>> sorted(e["symbol"] for e in d["elements"] if e["role"] == "reaction")
+['R₁μ₁', 'R₂μ₂']
+>>> "a" in [e.get("symbol") for e in d["elements"]]          # coasting: ω̇ = 0, no acceleration pole
+False
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo.draw.geometry import point_xy
+from planargeo.draw.picture import PX_PER_PT, Picture
+from planargeo.draw.pictures.kit import aim_label, force, label_at, scale_bar
+from planargeo.draw.style import COLORS
+
+__all__ = ["car_picture", "moves", "view_box", "FORCE_SCALE", "HALF_TRACK", "OVERHANG", "TYRE",
+           "VIEW_MARGIN", "NEAR", "SLIDES"]
+
+#: metres of arrow per newton for the tyre, drive and bias forces
+FORCE_SCALE = 1e-3
+#: half track and overhangs of the drawn body, half length of a drawn tyre (m)
+HALF_TRACK, OVERHANG, TYRE = 0.8, 0.7, 0.35
+#: margin (m) of the view around the car (and the ICR when it is in view)
+VIEW_MARGIN = 1.0
+#: the ICR is kept in view for turn radii up to this many metres; beyond, the view holds the car
+#: alone (so that it fills a third of the view) and the ICR is an arrow at the edge pointing to it
+NEAR = 12.0
+#: the picture's banner once the tyres reach their limit
+SLIDES = "the car slides out: its tyres reach μ·g"
+
+
+def moves(theta: float, d: float):
+    """The drawing's placement of the scene: turned by ``theta`` about the ICR, rear tyre at the origin.
+
+    A scene point ``p`` is drawn at ``R p + t`` with ``R`` the rotation by
+    ``theta`` and ``t = (-d, 0)`` (at ``theta = 0`` the rear contact ``(d, 0)``
+    is drawn at the origin and stays there when ``d`` changes: drags map the
+    mouse to the car absolutely).  Twists (and points, in the package's
+    coordinates) map by ``V = [[R, -J t], [0, 1]]`` (``J`` the quarter turn),
+    wrenches (and lines) by ``W = V⁻ᵀ``, inertias (and conics) by ``W I Wᵀ``.
+
+    Parameters
+    ----------
+    theta : float
+        Heading (rad).
+    d : float
+        Turn radius (m).
+
+    Returns
+    -------
+    tuple
+        ``(R, t, V, W)``.
+
+    Examples
+    --------
+    >>> R, t, V, W = moves(0.0, 8.0)
+    >>> (V @ [0.0, 0.0, 1.0]).tolist()          # the ICR (scene origin) drawn at (-8, 0): [y, -x, 1]
+    [0.0, 8.0, 1.0]
+    """
+    c, s = math.cos(theta), math.sin(theta)
+    R = np.array([[c, -s], [s, c]])
+    t = np.array([-float(d), 0.0])
+    V = np.eye(3)
+    V[:2, :2] = R
+    V[:2, 2] = -np.array([-t[1], t[0]])
+    return R, t, V, np.linalg.inv(V).T
+
+
+def view_box(d: float, L: float, theta: float, F_A: float = 0.0):
+    """The view ``(x0, x1, y0, y1)`` (m, drawn coordinates) holding the car, the drive arrow and a near ICR.
+
+    In the car's frame (the ICR at the origin) the car, the tip of the drive arrow
+    ``f_A`` and, for turn radii up to :data:`NEAR`, the ICR fill a rectangle; the
+    view is the square about its centre (turned with the car, :func:`moves`) whose
+    half side is the rectangle's half diagonal plus :data:`VIEW_MARGIN`, rounded up
+    to 0.5 m: it holds them at every heading.  A farther ICR is left out, so that
+    the car fills a third of the view at every turn radius.
+
+    Parameters
+    ----------
+    d, L : float
+        Turn radius and wheelbase (m).
+    theta : float
+        Heading (rad).
+    F_A : float
+        Drive force (N), drawn ``FORCE_SCALE`` m per N from the front tyre.
+
+    Returns
+    -------
+    tuple of float
+
+    Examples
+    --------
+    >>> [round(v, 2) for v in view_box(8.0, 2.6, 0.0)]
+    [-9.6, 2.4, -4.7, 7.3]
+    >>> [round(v, 2) for v in view_box(40.0, 2.6, 0.0)]     # the ICR far left, out of view
+    [-3.5, 3.5, -2.2, 4.8]
+    """
+    hyp = math.hypot(d, L)
+    tip = np.array([d, L]) + FORCE_SCALE * F_A * np.array([-L, d]) / hyp
+    xs = [d - HALF_TRACK, d + HALF_TRACK, float(tip[0])]
+    ys = [-OVERHANG, L + OVERHANG, float(tip[1])]
+    if d <= NEAR:
+        xs.append(0.0)
+        ys.append(0.0)
+    hx, hy = (max(xs) - min(xs)) / 2, (max(ys) - min(ys)) / 2
+    R, t, _V, _W = moves(theta, d)
+    c = R @ np.array([min(xs) + hx, min(ys) + hy]) + t
+    half = math.ceil(2 * (math.hypot(hx, hy) + VIEW_MARGIN)) / 2
+    return (float(c[0] - half), float(c[0] + half), float(c[1] - half), float(c[1] + half))
+
+
+def _at(p) -> str:
+    xy = point_xy(p)
+    return "at infinity" if xy is None else f"at ({xy[0]:.3g}, {xy[1]:.3g}) m"
+
+
+def car_picture(res, *, heading: float, view, slides: bool = False, limit: float = 0.0,
+                size=(600, 560)) -> Picture:
+    """The picture of the car of the scene ``res`` turned by ``heading`` (module docstring).
+
+    Parameters
+    ----------
+    res : SceneResult
+        The scene ``"car"`` (at heading 0).
+    heading : float
+        How far the car has turned about the ICR (rad).
+    view : (x0, x1, y0, y1)
+        What must be in view (drawn coordinates, m).
+    slides : bool
+        The tyres have reached their limit: the banner says the car slides out.
+    limit : float
+        What the tyres hold, μ·g (m/s²), said in the banner's description.
+    size : (int, int)
+        Pixels.
+
+    Returns
+    -------
+    Picture
+    """
+    q, x, p = res.quantities, res.extra, res.params
+    L, d = p["L"], p["d"]
+    R, tr, V, W = moves(heading, d)
+    pic = Picture(view, size=size, ticks=False, margin=(6, 6, 6, 6))
+    rear, front, cg = (R @ x[k] + tr for k in ("rear_contact", "front_contact", "cg"))
+    icr = tr.copy()
+    roll = R @ x["front_rolling"]
+    ahead = R @ [0.0, 1.0]
+    r_cg = float(np.hypot(*x["cg"]))
+    omega, wdot, F_A = float(p["omega"]), float(q["omega_dot"]), float(p["F_A"])
+    body = np.array([[d - HALF_TRACK, -OVERHANG], [d + HALF_TRACK, -OVERHANG],
+                     [d + HALF_TRACK, L + OVERHANG], [d - HALF_TRACK, L + OVERHANG]])
+    pic.path("body", body @ R.T + tr, role="body", symbol="car", closed=True, fill=COLORS["body"], alpha=0.5,
+             color="#000000", width=1.0 * PX_PER_PT, z=2,
+             desc=f"the car's body: wheelbase L = {L:.3g} m, track {2 * HALF_TRACK:.3g} m")
+    pic.path("rear tyre", [rear - TYRE * ahead, rear + TYRE * ahead], role="body", symbol="tyre 1", color="#000000",
+             width=4.0 * PX_PER_PT, z=3, desc=f"rear tyre: it rolls along the car, its axle passes through the ICR, d = {d:.3g} m away")
+    pic.path("front tyre", [front - TYRE * roll, front + TYRE * roll], role="body", symbol="tyre 2",
+             color="#000000",
+             width=4.0 * PX_PER_PT, z=3,
+             desc=f"front tyre, steered by {math.degrees(x['steer']):.3g}°: its axle passes through the ICR (6.114)")
+    pic.path("axles", np.array([icr, rear, [np.nan, np.nan], icr, front]), role="construct", symbol="axles",
+             color=COLORS["construct"], width=0.8 * PX_PER_PT, dash=[4.0, 3.0], z=1,
+             desc=f"the axle lines: they meet at the ICR, d = {d:.3g} m from the rear tyre (6.114)")
+    t = np.linspace(0.0, 2 * np.pi, 181)
+    pic.path("path of G", icr + r_cg * np.column_stack([np.cos(t), np.sin(t)]), role="construct", symbol="r_G",
+             color=COLORS["construct"], width=0.8 * PX_PER_PT, dash=[1.0, 2.5], z=1,
+             desc=f"the circle G runs on about the ICR: radius r_G = {r_cg:.3g} m")
+    drive = F_A != 0.0                    # ω̇ = f_A's moment about the ICR / I_ICR (6.131): zero coasting
+    v_desc = (f"velocity pole: the ICR, the joint s the car turns about, v = s ω (6.114, 6.115): "
+              f"ω = {omega:.3g} rad/s, {_at(V @ q['v'])}")
+    v_desc += ("; it is also the acceleration pole a" if drive else
+               "; coasting, ω̇ = 0 and a = s ω̇ = 0 (6.131): no acceleration pole")
+    pic.point("ICR", V @ np.asarray(q["v"], float), role="twist", symbol="v = sω", label="v = sω (ICR)",
+              desc=v_desc, glyph_scale=8.0)
+    aim_label(pic.elements[-1], R @ [0.0, -1.0], 12.0)      # below: the axle lines leave it to the right
+    if drive:
+        pic.point("a", V @ np.asarray(q["a"], float), role="accel", symbol="a", glyph_scale=3.0,
+                  desc=f"acceleration pole of a = s ω̇ (6.131): a turn about the ICR, so its pole is the "
+                       f"ICR too: ω̇ = {wdot:.3g} rad/s², {_at(V @ q['a'])}")
+        aim_label(pic.elements[-1], R @ [-0.6, 0.8], 12.0)  # up and back: no line leaves the ICR there
+    pic.marks("G", [cg], role="body", color="#000000", size=8.0, symbol="G", z=6,
+              desc=f"centre of gravity G, ε = {p['eps']:.3g} of the wheelbase behind the front axle, "
+                   f"{r_cg:.3g} m from the ICR")
+    label_at(pic, cg, "G")
+    pic.conic("I", W @ np.asarray(q["I"], float) @ W.T, role="inertia", symbol="I",
+              desc=f"inertia of the car as its conic (6.117): mass {p['m']:.4g} kg, radius of gyration "
+                   f"{p['rho']:.3g} m about G")
+    tw = np.asarray(x["tyre_wrenches"], float)
+    mu = q["mu"]
+    for k, (sym, where, at) in enumerate((("R₁μ₁", "rear", rear), ("R₂μ₂", "front", front))):
+        force(pic, sym, W @ tw[:, k], scale=FORCE_SCALE, anchor=at, role="reaction", symbol=sym,
+              desc=f"{where} tyre force: reaction R{'₁₂'[k]} times its size μ{'₁₂'[k]} (6.114, 6.133): "
+                   f"μ{'₁₂'[k]} = {mu[k]:.4g} N", z=4,
+              label_xy=R @ [d + HALF_TRACK + 0.9, (0.0, L)[k]] + tr)   # beside the car, off the body
+    fA = np.asarray(q["f_A"], float)
+    if np.any(fA[:2]):
+        force(pic, "f_A", W @ fA, scale=FORCE_SCALE, anchor=front, role="wrench", symbol="f_A", start=True,
+              desc=f"drive force at the front tyre, along its rolling direction (6.120): {F_A:.4g} N", z=4)
+    pb = np.asarray(q["p"], float)
+    if np.any(pb[:2]):
+        force(pic, "p", W @ pb, scale=FORCE_SCALE, anchor=cg, role="momentum", symbol="p", start=True,
+              width=1.0 * PX_PER_PT, z=4,                          # labelled at the tip, or in view
+              label_xy=cg + min(FORCE_SCALE, 0.25 * (view[1] - view[0]) / math.hypot(*pb[:2])) * (R @ pb[:2]),
+              desc=f"bias force: the centrifugal force through the ICR and G (6.119): "
+                   f"{math.hypot(pb[0], pb[1]):.4g} N = m ω² r_G")
+    pic.line("T", W @ np.asarray(q["T"], float), role="construct", symbol="T", arrow=False,
+             anchor=R @ [d, -OVERHANG - 1.2] + tr,                       # behind the car
+             desc="active force line T: the percussion axis of the joint at the ICR (6.125); "
+                  "a force along it turns the car without loading the tyres")
+    scale_bar(pic)
+    if slides:
+        x0, x1, y0, y1 = pic.box
+        pic.text("banner", (x0, y1), SLIDES, color="#7a3d00", ha="left", va="top", dx=8.0, dy=-8.0, symbol="μ·g",
+                 desc=f"the acceleration G needs reaches what the tyres hold: μ·g = {limit:.3g} m/s²")
+    return pic

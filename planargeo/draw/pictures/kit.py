@@ -1,0 +1,246 @@
+"""Parts shared by the mechanism pictures (car, slider-crank, trees): forces to scale, ground, scale bar.
+
+Plain functions that add elements to a :class:`~planargeo.draw.picture.Picture`:
+
+* :func:`force` — a force drawn on its line of action with an arrow *to scale*
+  (``scale`` metres per newton), centred on the foot of an anchor;
+* :func:`ground` — a hatched ground line;
+* :func:`scale_bar` — a bar of a round length in the lower left of the view;
+* :func:`label_at` — a placed label at a point of an element already added.
+
+Examples
+--------
+>>> from planargeo.draw.picture import Picture
+>>> pic = Picture((-2, 2, -2, 2), size=(200, 200), ticks=False)
+>>> foot = force(pic, "f", [0.0, 10.0, 0.0], scale=0.1, anchor=(0.0, 0.0), symbol="f", desc="a push")
+>>> [round(float(v), 6) for v in foot]              # the line x = 0 through the anchor
+[0.0, 0.0]
+>>> [p["p"] for p in pic.elements[-1]["parts"]]
+['path', 'arrow', 'text']
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo.draw.picture import PX_PER_PT, Picture
+from planargeo.draw.style import COLORS
+
+__all__ = ["force", "ground", "scale_bar", "label_at", "aim_label", "foot_on_line", "nice_length"]
+
+
+def foot_on_line(w, p) -> np.ndarray:
+    """The foot of the point ``p`` on the line of action of the wrench ``w = [fx, fy, τ]`` (4.27).
+
+    Parameters
+    ----------
+    w : array_like (3,)
+        A force with ``fx² + fy² > 0``.
+    p : (float, float)
+
+    Returns
+    -------
+    numpy.ndarray (2,)
+
+    Examples
+    --------
+    >>> foot_on_line([1.0, 0.0, 2.0], (3.0, 0.0)).tolist()     # the line y = -2 (τ + y fx = 0)
+    [3.0, -2.0]
+    """
+    fx, fy, tz = (float(v) for v in w)
+    p = np.asarray(p, dtype=float)
+    F = math.hypot(fx, fy)
+    m_p = tz + p[1] * fx - p[0] * fy                 # the moment about p: the line's value there
+    return p - (m_p / F) * np.array([-fy, fx]) / F
+
+
+def label_at(pic: Picture, xy, text: str, *, gap: float = 6.0) -> None:
+    """Add a label (moved by the picture's placer) at ``xy`` to the element added last.
+
+    Parameters
+    ----------
+    pic : Picture
+    xy : (float, float)
+        Data point the label sits next to.
+    text : str
+    gap : float
+        Pixels from the point.
+    """
+    x, y = (float(v) for v in xy)
+    if text and math.isfinite(x) and math.isfinite(y):
+        pic.elements[-1]["parts"].append({"p": "text", "x": x, "y": y, "dx": gap, "dy": gap,
+                                          "text": text, "ha": "left", "va": "bottom"})
+
+
+def force(pic: Picture, id: str, w, *, scale: float, anchor, role: str = "reaction",
+          symbol: str = "", desc: str = "", label: str | None = None, reach: float | None = None,
+          color: str | None = None, width: float | None = None, dash=None, opacity: float = 1.0,
+          start: bool = False, z: int = 5, label_xy=None):
+    """A force on its line of action with an arrow ``scale |f|`` long (data units) at the anchor's foot.
+
+    Parameters
+    ----------
+    pic : Picture
+    id : str
+        Stable name.
+    w : array_like (3,)
+        The wrench ``[fx, fy, τ]`` (N, N·m).
+    scale : float
+        Arrow length per newton (data units).
+    anchor : (float, float)
+        The arrow sits at this point's foot on the line.
+    role : str
+        Style role.
+    symbol, desc : str
+        Thesis symbol and description.
+    label : str, optional
+        Text at the arrow (default: the symbol; "" for none).
+    reach : float, optional
+        Draw the line of action only ``reach`` data units either side of the foot (default:
+        the whole line across the view).
+    color : str, optional
+    width : float, optional
+        Line width in pixels.
+    dash : list of float, optional
+        Dash pattern of the line of action (pixels).
+    opacity : float
+        Opacity of the whole element (a faded force).
+    start : bool
+        The arrow starts at the foot (default: it is centred on it).
+    z : int
+        Drawing order.
+    label_xy : (float, float), optional
+        The label sits at this point's foot on the line (default: the arrow's middle).
+
+    Returns
+    -------
+    numpy.ndarray or None
+        The foot (where the arrow and the label sit), None for a zero force (nothing drawn).
+    """
+    w = np.asarray(w, dtype=float)
+    F = math.hypot(w[0], w[1])
+    if not F > 0.0 or not math.isfinite(F):
+        return None
+    e = w[:2] / F
+    foot = foot_on_line(w, anchor)
+    if reach is None:
+        from planargeo.draw.geometry import clip_line
+
+        seg = clip_line(w, pic.box)
+        seg = [] if seg is None else [np.asarray(seg, float)]
+    else:
+        seg = [np.array([foot - reach * e, foot + reach * e])]
+    parts = [{"p": "path", "xy": s, "closed": False} for s in seg]
+    v = scale * F * e
+    tail = foot if start else foot - 0.5 * v
+    dx, dy = float(v[0] * pic.kx), float(v[1] * pic.ky)
+    if math.hypot(dx, dy) >= 2.0:
+        parts.append({"p": "arrow", "x": float(tail[0]), "y": float(tail[1]), "dx": dx, "dy": dy})
+    text = symbol if label is None else label
+    if text:
+        at = tail + 0.5 * v if label_xy is None else foot_on_line(w, label_xy)
+        parts.append({"p": "text", "x": float(at[0]), "y": float(at[1]), "dx": 6.0, "dy": 6.0,
+                      "text": text, "ha": "left", "va": "bottom"})
+    if role in ("reaction", "wrench", "momentum"):
+        color = color or COLORS[role]
+    pic.path(id, np.zeros((0, 2)), role=role, symbol=symbol, desc=desc, color=color, width=width,
+             dash=dash, z=z)
+    el = pic.elements[-1]
+    el["parts"] = parts
+    el["opacity"] = float(opacity)
+    return foot
+
+
+def ground(pic: Picture, id: str, xy, *, width: float = 0.9, depth: float = 0.12, n: int = 7,
+           desc: str = "the ground", opacity: float = 1.0) -> None:
+    """A ground line of ``width`` centred on ``xy`` with ``n`` hatch strokes below it.
+
+    Parameters
+    ----------
+    pic : Picture
+    id : str
+    xy : (float, float)
+        The middle of the ground line (data units).
+    width, depth : float
+        Size of the line and of the hatch (data units).
+    n : int
+        Hatch strokes.
+    desc : str
+    opacity : float
+    """
+    x, y = (float(v) for v in xy)
+    rows = [[x - width / 2, y], [x + width / 2, y], [np.nan, np.nan]]
+    for u in np.linspace(x - width / 2 + depth, x + width / 2, n):
+        rows += [[u, y], [u - depth, y - depth], [np.nan, np.nan]]
+    pic.path(id, np.array(rows), role="ground", symbol="ground", color=COLORS["ground"], width=1.4, desc=desc,
+             z=1)
+    pic.elements[-1]["opacity"] = float(opacity)
+
+
+def aim_label(el: dict, direction, gap: float = 9.0) -> None:
+    """Ask the placer to try the label of the element ``el`` first in the pixel ``direction`` from its anchor.
+
+    Parameters
+    ----------
+    el : dict
+        An element of a picture (its first text part is moved).
+    direction : (float, float)
+        Pixel direction (y up).
+    gap : float
+        Pixels from the anchor.
+    """
+    u = np.asarray(direction, dtype=float)
+    u = u / math.hypot(*u)
+    for part in el["parts"]:
+        if part["p"] == "text":
+            part["dx"], part["dy"] = float(gap * u[0]), float(gap * u[1])
+            part["ha"] = "left" if u[0] > 0.3 else "right" if u[0] < -0.3 else "center"
+            part["va"] = "bottom" if u[1] > 0.3 else "top" if u[1] < -0.3 else "center"
+            return
+
+
+def nice_length(span: float) -> float:
+    """A round length (1, 2 or 5 × 10ᵏ) near a fifth of ``span``.
+
+    Parameters
+    ----------
+    span : float
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> nice_length(12.0), nice_length(8.6), nice_length(30.0)
+    (2.0, 2.0, 5.0)
+    """
+    raw = span / 5.0
+    mag = 10.0 ** math.floor(math.log10(raw))
+    return max((m * mag for m in (1.0, 2.0, 5.0) if m * mag <= raw * 1.5), default=mag)
+
+
+def scale_bar(pic: Picture, unit: str = "m") -> float:
+    """A bar of a round length in the lower left corner of the view, labelled with it.
+
+    Parameters
+    ----------
+    pic : Picture
+    unit : str
+
+    Returns
+    -------
+    float
+        The bar's length (data units).
+    """
+    x0, x1, y0, y1 = pic.box
+    L = nice_length(x1 - x0)
+    pad_x, pad_y = 10.0 / pic.kx, 12.0 / pic.ky
+    xy = np.array([[x0 + pad_x, y0 + pad_y], [x0 + pad_x + L, y0 + pad_y]])
+    pic.path("scale bar", xy, role="construct", symbol="scale", color=COLORS["text"], width=2.0 * PX_PER_PT,
+             desc=f"scale: this bar is {L:g} {unit} long", z=1)
+    pic.elements[-1]["parts"].append({"p": "text", "x": float(xy[1, 0]), "y": float(xy[1, 1]),
+                                      "dx": 4.0, "dy": 0.0, "text": f"{L:g} {unit}", "ha": "left",
+                                      "va": "center"})
+    return L
