@@ -17,7 +17,8 @@ import numpy as np
 from planargeo._validate import (as_array, as_mat3, as_scalar, as_vec3, as_xy, batch_shape, check_overflow,
                                  check_positive_definite, check_positive_semidefinite, overflow_checked, rescaled)
 from planargeo.errors import InputError, InvalidPolygonError, SingularInertiaError
-from planargeo.screws.twists import _congruence, _inertia_rotated, _kinetic_energy, X_P_inv_T, inertia_matrix
+from planargeo.screws.twists import (_congruence, _Held, _inertia_rotated, _kinetic_energy, Twist, X_P_inv_T,
+                                      inertia_matrix)
 
 __all__ = [
     "Inertia", "mass", "centre_of_mass", "rotational_inertia", "radius_of_gyration",
@@ -491,7 +492,7 @@ def polygon_moments(geometry, name: str = "geometry"):
 # The class
 # ---------------------------------------------------------------------------
 
-class Inertia:
+class Inertia(_Held):
     """A planar rigid-body inertia at the origin (thesis 1.66, 4.58, 5.64): an imaginary conic.
 
     Wraps one symmetric positive definite ``(..., 3, 3)`` array ``.matrix``
@@ -536,7 +537,9 @@ class Inertia:
     5.0
     """
 
-    __slots__ = ("_matrix",)
+    __slots__ = ()
+    _svg = ("inertia_svg", "I")
+    _ndim = 2
 
     def __init__(self, matrix):
         if isinstance(matrix, Inertia):
@@ -548,7 +551,7 @@ class Inertia:
         check_positive_definite(M, "matrix")
         _check_rigid(M, "matrix")
         M.flags.writeable = False
-        self._matrix = M
+        self._array = M
 
     # -- constructors ---------------------------------------------------
     @classmethod
@@ -677,7 +680,7 @@ class Inertia:
     @property
     def matrix(self) -> np.ndarray:
         """The ``(..., 3, 3)`` matrix at the origin (read-only)."""
-        return self._matrix
+        return self._array
 
     @property
     def mass(self) -> np.ndarray:
@@ -688,17 +691,17 @@ class Inertia:
         >>> float(Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).mass)
         2.0
         """
-        return mass(self._matrix)
+        return mass(self._array)
 
     @property
     def com(self) -> np.ndarray:
         """Centre of mass ``(x, y)``."""
-        return centre_of_mass(self._matrix)
+        return centre_of_mass(self._array)
 
     @property
     def rotational_inertia(self) -> np.ndarray:
         """``J`` about the centre of mass."""
-        return rotational_inertia(self._matrix)
+        return rotational_inertia(self._array)
 
     @property
     def radius_of_gyration(self) -> np.ndarray:
@@ -709,7 +712,7 @@ class Inertia:
         >>> float(Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).radius_of_gyration)
         0.5
         """
-        return radius_of_gyration(self._matrix)
+        return radius_of_gyration(self._array)
 
     @property
     def mobility(self) -> np.ndarray:
@@ -720,44 +723,19 @@ class Inertia:
         >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).mobility.diagonal()
         array([0.5, 0.5, 2. ])
         """
-        return mobility(self._matrix)
-
-    def __array__(self, dtype=None, copy=None):
-        return np.asarray(self._matrix, dtype=dtype)
+        return mobility(self._array)
 
     def __repr__(self) -> str:
-        if self._matrix.ndim == 2:
+        if self._array.ndim == 2:
             c = self.com
             return (f"Inertia(mass={float(self.mass):.6g}, com=({c[0]:.6g}, {c[1]:.6g}), "
                     f"radius_of_gyration={float(self.radius_of_gyration):.6g})")
-        return f"Inertia(batch of shape {self._matrix.shape[:-2]})"
+        return f"Inertia(batch of shape {self._array.shape[:-2]})"
 
-    def _repr_svg_(self) -> "str | None":
-        """A small drawing of the inertia for notebooks (its circle of gyration, the real partner of thesis 10.2.3).
-
-        Drawn by :func:`planargeo.geometry.svg.inertia_svg` without matplotlib.
-
-        Returns
-        -------
-        str
-            An SVG document; None for a batch (the text repr is shown).
-        """
-        if self._matrix.ndim != 2:
-            return None
-        from planargeo.geometry.svg import inertia_svg
-
-        return inertia_svg(self._matrix, label="I")
     def __add__(self, other):
         if not isinstance(other, Inertia):
             return NotImplemented
-        return Inertia(self._matrix + other._matrix)
-
-    def __eq__(self, other):
-        if not isinstance(other, Inertia):
-            return NotImplemented
-        return bool(np.array_equal(self._matrix, other._matrix))
-
-    __hash__ = None
+        return Inertia(self._array + other._array)
 
     # -- operations ------------------------------------------------------
     def at(self, point) -> "Inertia":
@@ -780,7 +758,7 @@ class Inertia:
         >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).at([1.0, 0.0])
         Inertia(mass=2, com=(0, 0), radius_of_gyration=0.5)
         """
-        return Inertia(_congruence(X_P_inv_T(point), self._matrix))
+        return Inertia(_congruence(X_P_inv_T(point), self._array))
 
     def rotated(self, theta, about=(0.0, 0.0)) -> "Inertia":
         """The body turned by ``theta`` about ``about`` (thesis 1.68; :func:`planargeo.screws.inertia_rotated`).
@@ -809,7 +787,7 @@ class Inertia:
         >>> Inertia.from_mass(2.0, [2.0, 0.0], inertia=0.5).rotated(np.pi / 2, about=[1.0, 0.0])
         Inertia(mass=2, com=(1, 1), radius_of_gyration=0.5)
         """
-        return Inertia(_inertia_rotated(self._matrix, theta, about))
+        return Inertia(_inertia_rotated(self._array, theta, about))
 
     def kinetic_energy(self, twist) -> np.ndarray:
         """``½ vᵀ I v`` (thesis 1.9).
@@ -829,7 +807,7 @@ class Inertia:
         >>> float(Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).kinetic_energy([1.0, 0.0, 0.0]))   # ½ m u²
         1.0
         """
-        return _kinetic_energy(self._matrix, as_vec3(getattr(twist, "array", twist), "twist"))
+        return _kinetic_energy(self._array, Twist._coords(twist))
 
     def momentum(self, twist) -> np.ndarray:
         """Momentum wrench ``I v`` (thesis 5.72).
@@ -849,7 +827,7 @@ class Inertia:
         >>> Inertia.from_mass(2.0, [0.0, 1.0], inertia=0.5).momentum([1.0, 0.0, 0.0])   # m u along y = 1
         array([ 2.,  0., -2.])
         """
-        return np.einsum("...ij,...j->...i", self._matrix, as_vec3(getattr(twist, "array", twist), "twist"))
+        return np.einsum("...ij,...j->...i", self._array, Twist._coords(twist))
 
     def percussion_axis_array(self, point) -> np.ndarray:
         """:func:`percussion_axis` as an array.
@@ -869,7 +847,7 @@ class Inertia:
         >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_axis_array([0.0, 0.0, 1.0])
         array([0. , 2. , 2.5])
         """
-        return percussion_axis(self._matrix, point)
+        return percussion_axis(self._array, point)
 
     def percussion_axis(self, point):
         """Axis of percussion of ``point`` as a :class:`planargeo.geometry.Line` (thesis 5.67).
@@ -890,7 +868,7 @@ class Inertia:
         array([0. , 2. , 2.5])
         """
         from planargeo.geometry.elements import Line
-        return Line(percussion_axis(self._matrix, point))
+        return Line(percussion_axis(self._array, point))
 
     def percussion_pole_array(self, line) -> np.ndarray:
         """:func:`percussion_pole` as an array.
@@ -910,7 +888,7 @@ class Inertia:
         >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_pole_array([0.0, 2.0, 2.5])
         array([0., 0., 1.])
         """
-        return percussion_pole(self._matrix, line)
+        return percussion_pole(self._array, line)
 
     def percussion_pole(self, line):
         """Pole whose axis of percussion is ``line``, as a :class:`planargeo.geometry.Point`.
@@ -931,7 +909,7 @@ class Inertia:
         Point(x=1, y=0)
         """
         from planargeo.geometry.elements import Point
-        return Point(percussion_pole(self._matrix, line))
+        return Point(percussion_pole(self._array, line))
 
     def drawable_conic_matrix(self) -> np.ndarray:
         """:func:`drawable_conic` as an array.
@@ -948,7 +926,7 @@ class Inertia:
                [ 0. ,  2. ,  0. ],
                [ 0. ,  0. , -0.5]])
         """
-        return drawable_conic(self._matrix)
+        return drawable_conic(self._array)
 
     def drawable_conic(self):
         """The radius-of-gyration circle as a :class:`planargeo.geometry.Conic` (thesis 10.2.3).
@@ -964,7 +942,7 @@ class Inertia:
         np.float64(-0.5)
         """
         from planargeo.geometry.elements import Conic
-        return Conic(drawable_conic(self._matrix))
+        return Conic(drawable_conic(self._array))
 
     def conic(self):
         """The inertia itself as a (imaginary) :class:`planargeo.geometry.Conic` (thesis 5.4).
@@ -980,4 +958,4 @@ class Inertia:
         np.float64(0.5)
         """
         from planargeo.geometry.elements import Conic
-        return Conic(self._matrix)
+        return Conic(self._array)

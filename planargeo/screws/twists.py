@@ -962,10 +962,55 @@ def _is_number(x) -> bool:
     return isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, bool)
 
 
-class _Screw:
-    """Common base of :class:`Twist` and :class:`Wrench` (one read-only ``(..., 3)`` array)."""
+class _Held:
+    """Common base of :class:`Twist`, :class:`Wrench` and :class:`planargeo.screws.Inertia`: one read-only array.
+
+    Equal when the arrays are equal; drawn for notebooks by the function ``_svg`` of
+    :mod:`planargeo.geometry.svg` (a single value, ``_ndim`` axes; a batch shows its text).
+    """
 
     __slots__ = ("_array",)
+    __hash__ = None
+    _svg = ("", "")
+    _ndim = 1
+
+    def __array__(self, dtype=None, copy=None):
+        return np.asarray(self._array, dtype=dtype)
+
+    def __eq__(self, other):
+        if type(other) is not type(self):
+            return NotImplemented
+        return bool(np.array_equal(self._array, other._array))
+
+    def _repr_svg_(self) -> "str | None":
+        """A small drawing for notebooks, by :mod:`planargeo.geometry.svg` without matplotlib.
+
+        A twist is its pole with the sense of rotation (or a translation arrow), a wrench its line
+        of action with the force arrow (or a couple at infinity), an inertia its circle of gyration
+        (the real partner of thesis 10.2.3).
+
+        Returns
+        -------
+        str
+            An SVG document; None for a batch (the text repr is shown).
+        """
+        if self._array.ndim != self._ndim:
+            return None
+        from planargeo.geometry import svg
+
+        draw, label = self._svg
+        return getattr(svg, draw)(self._array, label=label)
+
+
+class _Screw(_Held):
+    """Common base of :class:`Twist` and :class:`Wrench` (one read-only ``(..., 3)`` array), written once through the duality.
+
+    A subclass names itself (``_name``), the matrix ``_carry`` that moves it to another
+    reference point (:func:`X_P` for twists, :func:`X_P_inv_T` for wrenches), its dual
+    kind ``_dual`` and its projective element ``_element`` (class, property, noun).
+    """
+
+    __slots__ = ()
     _name = "screw"
 
     def __init__(self, array):
@@ -984,9 +1029,6 @@ class _Screw:
     def shape(self) -> tuple:
         """Batch shape (leading dimensions)."""
         return self._array.shape[:-1]
-
-    def __array__(self, dtype=None, copy=None):
-        return np.asarray(self._array, dtype=dtype)
 
     def __repr__(self) -> str:
         body = np.array2string(self._array, separator=", ", precision=6, suppress_small=True)
@@ -1018,13 +1060,6 @@ class _Screw:
 
     __rmul__ = __mul__
 
-    def __eq__(self, other):
-        if type(other) is not type(self):
-            return NotImplemented
-        return bool(np.array_equal(self._array, other._array))
-
-    __hash__ = None
-
     def rotated(self, theta, about=None):
         """The screw turned by ``theta`` about ``about`` (default the reference point, matrix :func:`rot`).
 
@@ -1045,12 +1080,107 @@ class _Screw:
         else:
             c = as_xy(about, "about")
             _batches(theta=(theta, 0), about=(c, 1), twist_or_wrench=(self._array, 1))
-            if isinstance(self, Wrench):
-                M = X_P_inv_T(-c) @ rot(theta) @ X_P_inv_T(c)
-            else:
-                M = X_P(-c) @ rot(theta) @ X_P(c)
+            M = self._carry(-c) @ rot(theta) @ self._carry(c)
         with np.errstate(over="ignore", invalid="ignore"):
             return self._new(np.einsum("...ij,...j->...i", M, self._array), "rotated")
+
+    def at(self, point):
+        """The same screw expressed at ``point``: a twist ``X_P v`` (thesis 4.8), a wrench ``X_P⁻ᵀ f`` (4.24, 4.26).
+
+        Parameters
+        ----------
+        point : array_like, shape (..., 2)
+            New reference point (m).
+
+        Returns
+        -------
+        Twist or Wrench
+            The same kind, at ``point``.
+
+        Examples
+        --------
+        >>> Twist.rotation([0.0, 0.0], 1.0).at([2.0, 0.0])   # the point (2, 0) moves up at 2
+        Twist([0., 2., 1.])
+        >>> Wrench.force([2.0, 0.0], [0.0, 1.0]).at([2.0, 0.0])   # no moment about a point of the line
+        Wrench([0., 1., 0.])
+        """
+        with np.errstate(over="ignore", invalid="ignore"):
+            return self._new(np.einsum("...ij,...j->...i", self._carry(point), self._array), "at")
+
+    @classmethod
+    def _coords(cls, x) -> np.ndarray:
+        """The coordinates of ``x``, a screw of this kind or its array (validated, named by the kind)."""
+        return as_vec3(x.array if isinstance(x, cls) else x, cls._name)
+
+    def _pair(self, other) -> tuple:
+        """``(twist, wrench)`` arrays of this screw and ``other``, of the dual kind (a screw or its array)."""
+        theirs = self._dual._coords(other)
+        return (self._array, theirs) if self._dual is Wrench else (theirs, self._array)
+
+    def power(self, other) -> np.ndarray:
+        """Power ``vᵀf`` (thesis 5.73) with ``other``, a screw of the dual kind; also ``v @ f`` (either order).
+
+        Parameters
+        ----------
+        other : Wrench (of a twist), Twist (of a wrench), or array_like, shape (..., 3)
+            Wrench ``[fx, fy, τz]`` (N, N·m), or twist ``[vx, vy, ω]`` (m/s, rad/s).
+
+        Returns
+        -------
+        numpy.ndarray, shape (...)
+            Power (W).
+
+        Examples
+        --------
+        >>> float(Twist.translation([2.0, 0.0]).power(Wrench.force([0.0, 5.0], [3.0, 0.0])))   # 2 · 3
+        6.0
+        >>> float(Wrench.couple(2.0).power(Twist.rotation([5.0, 5.0], 3.0)))   # τ ω
+        6.0
+        """
+        return power(*self._pair(other))
+
+    def reciprocal(self, other, rtol: float = 1e-12) -> np.ndarray:
+        """True where the wrench does no power on the twist (the pole on the line), of this screw and ``other``.
+
+        Parameters
+        ----------
+        other : Wrench (of a twist), Twist (of a wrench), or array_like, shape (..., 3)
+            The screw of the dual kind.
+        rtol : float, optional
+            Relative tolerance of the zero-power test ``|vᵀf| <= rtol |v| |f|``.
+
+        Returns
+        -------
+        numpy.ndarray of bool, shape (...)
+            Whether the power is zero within ``rtol``.
+
+        Examples
+        --------
+        >>> bool(Twist.rotation([1.0, 1.0]).reciprocal(Wrench.force([1.0, 0.0], [0.0, 1.0])))  # line x = 1
+        True
+        >>> bool(Wrench.couple(1.0).reciprocal(Twist.translation([1.0, 0.0])))   # a couple does no work on a translation
+        True
+        """
+        return reciprocal(*self._pair(other), rtol)
+
+    def __matmul__(self, other):
+        if isinstance(other, self._dual):
+            return power(*self._pair(other))
+        return NotImplemented
+
+    __rmatmul__ = __matmul__
+
+    def _as_element(self):
+        """The projective element this screw is (a twist's pole, a wrench's line; thesis 5.51, 5.56)."""
+        cls, attr, noun = self._element
+        if self._array.ndim != 1:
+            from planargeo.errors import ShapeError
+            raise ShapeError(f"{self._name} must be a single (3,) {self._name} for .{attr}, got shape {self._array.shape}")
+        if not np.any(self._array):
+            from planargeo.errors import DegenerateGeometryError
+            raise DegenerateGeometryError(f"{self._name} is zero: the zero {self._name} has no {noun}")
+        from planargeo.geometry import elements
+        return getattr(elements, cls)(self._array)
 
 
 class Twist(_Screw):
@@ -1088,6 +1218,9 @@ class Twist(_Screw):
 
     __slots__ = ()
     _name = "twist"
+    _carry = staticmethod(X_P)
+    _element = ("Point", "pole", "pole")
+    _svg = ("twist_svg", "v")
 
     @classmethod
     def rotation(cls, point, omega=1.0) -> "Twist":
@@ -1175,97 +1308,7 @@ class Twist(_Screw):
         >>> Twist.rotation([1.0, 2.0], 3.0).pole
         Point(x=1, y=2)
         """
-        if self._array.ndim != 1:
-            from planargeo.errors import ShapeError
-            raise ShapeError(f"twist must be a single (3,) twist for .pole, got shape {self._array.shape}")
-        if not np.any(self._array):
-            from planargeo.errors import DegenerateGeometryError
-            raise DegenerateGeometryError("twist is zero: the zero twist has no pole")
-        from planargeo.geometry.elements import Point
-        return Point(self._array)
-
-    def at(self, point) -> "Twist":
-        """The same motion expressed at ``point``: ``X_P v`` (thesis 4.8).
-
-        Parameters
-        ----------
-        point : array_like, shape (..., 2)
-            New reference point (m).
-
-        Returns
-        -------
-        Twist
-            ``X_P v``.
-
-        Examples
-        --------
-        >>> Twist.rotation([0.0, 0.0], 1.0).at([2.0, 0.0])   # the point (2, 0) moves up at 2
-        Twist([0., 2., 1.])
-        """
-        with np.errstate(over="ignore", invalid="ignore"):
-            return self._new(np.einsum("...ij,...j->...i", X_P(point), self._array), "at")
-
-    def power(self, wrench) -> np.ndarray:
-        """Power ``vᵀf`` (thesis 5.73).
-
-        Parameters
-        ----------
-        wrench : Wrench or array_like, shape (..., 3)
-            Wrench ``[fx, fy, τz]`` (N, N·m).
-
-        Returns
-        -------
-        numpy.ndarray, shape (...)
-            Power (W).
-
-        Examples
-        --------
-        >>> float(Twist.translation([2.0, 0.0]).power(Wrench.force([0.0, 5.0], [3.0, 0.0])))   # 2 · 3
-        6.0
-        """
-        return power(self._array, _wrench_array(wrench))
-
-    def reciprocal(self, wrench, rtol: float = 1e-12) -> np.ndarray:
-        """True where ``wrench`` does no power on this twist (pole on the line).
-
-        Parameters
-        ----------
-        wrench : Wrench or array_like, shape (..., 3)
-            Wrench ``[fx, fy, τz]`` (N, N·m).
-        rtol : float, optional
-            Relative tolerance of the zero-power test ``|vᵀf| <= rtol |v| |f|``.
-
-        Returns
-        -------
-        numpy.ndarray of bool, shape (...)
-            Whether the power is zero within ``rtol``.
-
-        Examples
-        --------
-        >>> bool(Twist.rotation([1.0, 1.0]).reciprocal(Wrench.force([1.0, 0.0], [0.0, 1.0])))  # line x = 1
-        True
-        """
-        return reciprocal(self._array, _wrench_array(wrench), rtol)
-
-    def _repr_svg_(self) -> "str | None":
-        """A small drawing of the twist for notebooks (its pole with the sense of rotation, or a translation arrow).
-
-        Drawn by :func:`planargeo.geometry.svg.twist_svg` without matplotlib.
-
-        Returns
-        -------
-        str
-            An SVG document; None for a batch (the text repr is shown).
-        """
-        if self._array.ndim != 1:
-            return None
-        from planargeo.geometry.svg import twist_svg
-
-        return twist_svg(self._array, label="v")
-    def __matmul__(self, other):
-        if isinstance(other, Wrench):
-            return power(self._array, other.array)
-        return NotImplemented
+        return self._as_element()
 
 
 class Wrench(_Screw):
@@ -1304,6 +1347,9 @@ class Wrench(_Screw):
 
     __slots__ = ()
     _name = "wrench"
+    _carry = staticmethod(X_P_inv_T)
+    _element = ("Line", "line", "line of action")
+    _svg = ("wrench_svg", "f")
 
     @classmethod
     def force(cls, point, force) -> "Wrench":
@@ -1411,112 +1457,12 @@ class Wrench(_Screw):
         >>> Wrench.force([2.0, 0.0], [0.0, 1.0]).line.array
         array([0., 1., 2.])
         """
-        if self._array.ndim != 1:
-            from planargeo.errors import ShapeError
-            raise ShapeError(f"wrench must be a single (3,) wrench for .line, got shape {self._array.shape}")
-        if not np.any(self._array):
-            from planargeo.errors import DegenerateGeometryError
-            raise DegenerateGeometryError("wrench is zero: the zero wrench has no line of action")
-        from planargeo.geometry.elements import Line
-        return Line(self._array)
+        return self._as_element()
 
     polar = line
 
-    def at(self, point) -> "Wrench":
-        """The same load expressed at ``point``: ``X_P⁻ᵀ f`` (thesis 4.24, 4.26).
 
-        Parameters
-        ----------
-        point : array_like, shape (..., 2)
-            New reference point (m).
-
-        Returns
-        -------
-        Wrench
-            ``X_P⁻ᵀ f``.
-
-        Examples
-        --------
-        >>> Wrench.force([2.0, 0.0], [0.0, 1.0]).at([2.0, 0.0])   # no moment about a point of the line
-        Wrench([0., 1., 0.])
-        """
-        with np.errstate(over="ignore", invalid="ignore"):
-            return self._new(np.einsum("...ij,...j->...i", X_P_inv_T(point), self._array), "at")
-
-    def power(self, twist) -> np.ndarray:
-        """Power ``vᵀf`` (thesis 5.73).
-
-        Parameters
-        ----------
-        twist : Twist or array_like, shape (..., 3)
-            Twist ``[vx, vy, ω]`` (m/s, rad/s).
-
-        Returns
-        -------
-        numpy.ndarray, shape (...)
-            Power (W).
-
-        Examples
-        --------
-        >>> float(Wrench.couple(2.0).power(Twist.rotation([5.0, 5.0], 3.0)))   # τ ω
-        6.0
-        """
-        return power(_twist_array(twist), self._array)
-
-    def reciprocal(self, twist, rtol: float = 1e-12) -> np.ndarray:
-        """True where this wrench does no power on ``twist``.
-
-        Parameters
-        ----------
-        twist : Twist or array_like, shape (..., 3)
-            Twist ``[vx, vy, ω]`` (m/s, rad/s).
-        rtol : float, optional
-            Relative tolerance of the zero-power test ``|vᵀf| <= rtol |v| |f|``.
-
-        Returns
-        -------
-        numpy.ndarray of bool, shape (...)
-            Whether the power is zero within ``rtol``.
-
-        Examples
-        --------
-        >>> bool(Wrench.couple(1.0).reciprocal(Twist.translation([1.0, 0.0])))   # a couple does no work on a translation
-        True
-        """
-        return reciprocal(_twist_array(twist), self._array, rtol)
-
-    def _repr_svg_(self) -> "str | None":
-        """A small drawing of the wrench for notebooks (its line of action with the force arrow, or a couple at infinity).
-
-        Drawn by :func:`planargeo.geometry.svg.wrench_svg` without matplotlib.
-
-        Returns
-        -------
-        str
-            An SVG document; None for a batch (the text repr is shown).
-        """
-        if self._array.ndim != 1:
-            return None
-        from planargeo.geometry.svg import wrench_svg
-
-        return wrench_svg(self._array, label="f")
-    def __matmul__(self, other):
-        if isinstance(other, Twist):
-            return power(other.array, self._array)
-        return NotImplemented
-
-    def __rmatmul__(self, other):
-        if isinstance(other, Twist):
-            return power(other.array, self._array)
-        return NotImplemented
-
-
-def _twist_array(x) -> np.ndarray:
-    return as_vec3(x.array if isinstance(x, Twist) else x, "twist")
-
-
-def _wrench_array(x) -> np.ndarray:
-    return as_vec3(x.array if isinstance(x, Wrench) else x, "wrench")
+Twist._dual, Wrench._dual = Wrench, Twist
 
 
 # ---------------------------------------------------------------------------
