@@ -39,6 +39,7 @@ import ipywidgets as W
 import numpy as np
 
 from planargeo.draw.artists import LineArtist, PointArtist
+from planargeo.draw.pictures.screw_sum import screw_sum_picture
 from planargeo.draw.style import sum_style
 from planargeo.errors import InputError
 from planargeo.geometry.projective import is_at_infinity, is_ideal
@@ -368,7 +369,6 @@ class ScrewSumExplorer(Explorer):
             label = _SIZE_LABEL.get(v[f"kind{k}"], "size{k}").format(k=_SUBSCRIPT[k])
             if w.description != label:
                 w.description = label
-        out = {}
         if tw:
             self.q1.set_point(c.v1.array)
             self.q2.set_point(c.v2.array)
@@ -381,9 +381,6 @@ class ScrewSumExplorer(Explorer):
             else:
                 self.join.set_line(c.line)
             self._place_twist_labels(c)
-            out.update({"ω₁": c.omega1, "ω₂": c.omega2, "ω₃ = ω₁ + ω₂": c.omega3,
-                        "pole of sum": _xy_or_ideal(c.P),
-                        "case": _short_case(twists_case(c.v1, c.v2))})
         else:
             self.l1.set_line(c.f1.array)
             self.l2.set_line(c.f2.array)
@@ -400,12 +397,59 @@ class ScrewSumExplorer(Explorer):
                 self.meet.set_visible(False)
             else:
                 self.meet.set_point(c.P)
+        return self.readout_of(st)
+
+    def readout_of(self, st):
+        """The readout of the state ``st`` (numbers with units, the special case); the size sliders' names follow the kinds.
+
+        Parameters
+        ----------
+        st : dict
+            The computed state.
+
+        Returns
+        -------
+        dict
+        """
+        c = st["c"]
+        tw = st["mode"] == "twists"
+        self._mode = st["mode"]
+        v = self.values
+        for k in (1, 2):   # the size slider names what it sets
+            w = self.controls[f"size{k}"]
+            label = _SIZE_LABEL.get(v[f"kind{k}"], "size{k}").format(k=_SUBSCRIPT[k])
+            if w.description != label:
+                w.description = label
+        out = {}
+        if tw:
+            out.update({"ω₁": c.omega1, "ω₂": c.omega2, "ω₃ = ω₁ + ω₂": c.omega3,
+                        "pole of sum": _xy_or_ideal(c.P),
+                        "case": _short_case(twists_case(c.v1, c.v2))})
+        else:
             out.update({"F₁": c.F1, "F₂": c.F2, "|F₃| = |F₁ + F₂|": c.F3,
-                        "meet of lines": meet, "case": _short_case(wrenches_case(c.f1, c.f2))})
+                        "meet of lines": _meet_label(c), "case": _short_case(wrenches_case(c.f1, c.f2))})
         out.update({"β": "none" if c.beta is None else c.beta,
                     "ρ": "none" if c.rho is None else c.rho,
                     "sum": tuple(float(x) for x in c.sum.array)})
         return out
+
+    def scene_picture(self, st, view=None):
+        """The state's picture (:func:`planargeo.draw.pictures.screw_sum.screw_sum_picture`).
+
+        Parameters
+        ----------
+        st : dict
+            The computed state.
+        view : (x0, x1, y0, y1), optional
+            The view the user zoomed or panned to (default: :attr:`limits`).
+
+        Returns
+        -------
+        Picture
+        """
+        v = self.shown_values or self.values
+        return screw_sum_picture(st["mode"], st["c"], anchors=((v["x1"], v["y1"]), (v["x2"], v["y2"])),
+                                 view=view or self.limits, size=self.figure_px)
 
     def _place_twist_labels(self, c):
         """Labels of v₁, v₂ on one side of the lever line Q₁Q₂, the sum's on the other side.

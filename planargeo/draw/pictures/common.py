@@ -75,7 +75,7 @@ def label_line(pic: Picture, id: str, text: str, *, anchor=None, gap: float = 7.
     dp = np.array([d[0] * pic.kx, d[1] * pic.ky])
     dp /= max(math.hypot(*dp), 1e-300)
     n = np.array([-dp[1], dp[0]])
-    if n[1] < 0 or (n[1] == 0 and n[0] < 0):
+    if n[1] < -1e-9 or (abs(n[1]) <= 1e-9 and n[0] < 0):
         n = -n
     n = n * side
     ha, va = _align(n)

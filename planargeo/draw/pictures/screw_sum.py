@@ -1,0 +1,157 @@
+"""The screw-sum explorer's picture: two twists (points) or two wrenches (lines) and their sum (thesis 4.2, 4.4).
+
+What :class:`planargeo.widgets.screw_sum.ScrewSumExplorer` shows, built natively from a
+twist or wrench addition (:func:`planargeo.screws.twists.add_twists`, ``add_wrenches``):
+
+* twists: the poles ``v₁``, ``v₂`` with their rotation glyphs (a translation's pole is at
+  infinity: an arrow at the edge along the motion), the lever line ``Q₁Q₂`` and the sum's
+  pole ``v₃ = v₁ + v₂`` on it (4.11-4.13), drawn heavier; the terms' labels on one side
+  of the lever line, the sum's on the other;
+* wrenches: the lines of action ``f₁``, ``f₂`` with their senses (a couple is the line
+  at infinity: the couple glyph), their meet ``P`` and the sum's line ``f₃ = f₁ + f₂``
+  through it (4.33), drawn heavier.
+
+Examples
+--------
+>>> from planargeo.screws.twists import Twist, add_twists
+>>> c = add_twists(Twist.rotation((0.0, 0.0), 1.0), Twist.rotation((4.0, 0.0), 3.0))
+>>> d = screw_sum_picture("twists", c, view=(-4, 4, -4, 4)).to_dict()
+>>> els = {e["id"]: e for e in d["elements"]}
+>>> v3 = els["v3"]["parts"][0]; (v3["x"], v3["y"])        # 3/4 of the way from Q₁ to Q₂ (4.12)
+(3.0, 0.0)
+>>> els["v3"]["desc"]
+'sum v₃ = v₁ + v₂ (4.11–4.13): ω₃ = 4 rad/s, at (3, 0) m'
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo.draw.picture import PX_PER_PT, Picture
+from planargeo.draw.pictures._words import num, where
+from planargeo.draw.pictures.common import label_line, label_toward
+from planargeo.draw.style import COLORS, SUM
+from planargeo.geometry.projective import is_at_infinity, is_ideal
+
+__all__ = ["screw_sum_picture"]
+
+_SUB = {1: "₁", 2: "₂", 3: "₃"}
+
+
+def _twist_words(t, k) -> str:
+    w = float(t[2])
+    if w == 0.0:
+        return f"a translation, u{_SUB[k]} = {num(math.hypot(t[0], t[1]))} m/s, its pole {where(t)}"
+    return f"ω{_SUB[k]} = {num(w)} rad/s, {where(t)}"
+
+
+def _wrench_words(f, k) -> str:
+    if bool(is_at_infinity(f)):
+        return f"a couple, τ{_SUB[k]} = {num(f[2])} N·m (the line at infinity)"
+    F = math.hypot(f[0], f[1])
+    return f"|F{_SUB[k]}| = {num(F)} N, {num(abs(f[2]) / F)} m from the origin"
+
+
+def _glyph_gap(w: float) -> float:
+    """Pixels from a pole to its label: clear of its rotation glyph (which grows with |ω|)."""
+    return (6.0 + min(max(6.0 * abs(w), 4.0), 16.0)) * PX_PER_PT * 0.8
+
+
+def screw_sum_picture(mode: str, c, *, anchors=None, view, size=(560, 500)) -> Picture:
+    """The picture of one sum (module docstring).
+
+    Parameters
+    ----------
+    mode : {"twists", "wrenches"}
+        What is added.
+    c : Data
+        The construction of :func:`~planargeo.screws.twists.add_twists` (``v1``, ``v2``,
+        ``Q1``, ``Q2``, ``P``, ``line``, ``sum``, ``omega1..3``) or of ``add_wrenches``
+        (``f1``, ``f2``, ``P``, ``L3``, ``sum``, ``F1..3``).
+    anchors : ((x1, y1), (x2, y2)), optional
+        Wrenches: the points of the force lines where their arrows sit.
+    view : (x0, x1, y0, y1)
+        What must be in view.
+    size : (int, int)
+        Pixels.
+
+    Returns
+    -------
+    Picture
+    """
+    pic = Picture(view, size=size)
+    if mode == "twists":
+        _twists(pic, c)
+    else:
+        _wrenches(pic, c, anchors)
+    return pic
+
+
+def _twists(pic: Picture, c) -> None:
+    q1, q2 = np.asarray(c.Q1, float), np.asarray(c.Q2, float)
+    if c.line is not None:
+        pic.line("lever", c.line, role="construct", arrow=False, label="",
+                 desc="lever line Q₁Q₂ through both poles (4.11): the sum's pole lies on it")
+    # labels: v₁, v₂ on one side of the lever line, the sum's on the other (coincident: spread)
+    if c.line is None or q1[2] == 0 or q2[2] == 0:
+        u1, u2, u3 = (-0.7, 0.7), (0.7, 0.7), (0.0, -1.0)
+    else:
+        d = np.array([-q2[1] + q1[1], q2[0] - q1[0]]) * np.array([pic.kx, pic.ky])   # Q₂ − Q₁ in pixels
+        d = d / math.hypot(*d)
+        n = np.array([-d[1], d[0]]) if d[0] >= 0 else np.array([d[1], -d[0]])      # the upper side
+        u1 = u2 = tuple(n)
+        u3 = tuple(-n)
+    for k, t, u in ((1, c.v1.array, u1), (2, c.v2.array, u2)):
+        pic.point(f"v{k}", t, role="twist", symbol=f"v{_SUB[k]}",
+                  desc=f"twist v{_SUB[k]} (4.10): {_twist_words(t, k)}")
+        if not bool(is_ideal(t)):
+            label_toward(pic.elements[-1], u, _glyph_gap(t[2]))
+    if c.P is not None:
+        s = c.sum.array
+        pic.point("v3", s, role="twist", symbol="v₃ = v₁ + v₂", shape="D",
+                  size=SUM["point"]["markersize"] * PX_PER_PT,
+                  desc=f"sum v₃ = v₁ + v₂ (4.11–4.13): {_twist_words(s, 3)}")
+        if not bool(is_ideal(s)):
+            label_toward(pic.elements[-1], u3, _glyph_gap(s[2]) + 3.0)
+
+
+def _couple_words(pic: Picture, text: str, row: int) -> None:
+    """The couple glyph of the element just drawn: its words, and one row lower per earlier couple."""
+    for part in pic.elements[-1]["parts"]:
+        if part["p"] == "text":
+            part["text"] = f"{text}: couple (line at ∞)"
+        if part["p"] in ("text", "glyph"):
+            part["y"] -= row * 30.0 / pic.ky
+
+
+def _wrenches(pic: Picture, c, anchors) -> None:
+    anchors = anchors or (None, None)
+    couples = 0
+    f1, f2 = c.f1.array, c.f2.array
+    for k, f, a in ((1, f1, anchors[0]), (2, f2, anchors[1])):
+        pic.line(f"f{k}", f, role="wrench", symbol=f"f{_SUB[k]}", anchor=a, label="",
+                 desc=f"wrench f{_SUB[k]} on its line of action (4.27): {_wrench_words(f, k)}")
+        if bool(is_at_infinity(f)):     # the couple glyph's own words, with the symbol
+            _couple_words(pic, f"f{_SUB[k]}", couples)
+            couples += 1
+        else:   # the label a metre on along the force from its arrow (clear of the meet P)
+            e = np.array([f[0], f[1]]) / math.hypot(f[0], f[1])
+            at = None if a is None else np.asarray(a, float) + e
+            label_line(pic, f"f{k}", f"f{_SUB[k]}", anchor=at, side=1.0 if k == 1 else -1.0)
+    P = c.P
+    if P is not None and not bool(is_ideal(P)):
+        pic.point("P", P, role="twist", glyph=False, color=COLORS["construct"], symbol="P",
+                  desc=f"meet P = L₁ × L₂ of the two lines (5.34): {where(P)}")
+    if c.L3 is not None:
+        s = c.sum.array
+        anchor = None if P is None or bool(is_ideal(P)) else [-P[1] / P[2], P[0] / P[2]]
+        pic.line("f3", s, role="wrench", symbol="f₃ = f₁ + f₂", anchor=anchor, label="",
+                 width=SUM["line"]["linewidth"] * PX_PER_PT,
+                 desc=f"sum f₃ = f₁ + f₂ (4.33): {_wrench_words(s, 3)}")
+        if bool(is_at_infinity(s)):
+            _couple_words(pic, "f₃ = f₁ + f₂", couples)
+        else:
+            e = np.array([s[0], s[1]]) / math.hypot(s[0], s[1])
+            at = None if anchor is None else np.asarray(anchor, float) + 1.5 * e   # ahead of its arrow at P
+            label_line(pic, "f3", "f₃ = f₁ + f₂", anchor=at, side=-1.0, gap=9.0)
