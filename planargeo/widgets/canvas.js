@@ -1,14 +1,21 @@
 // planargeo's page renderer: draws a picture (planargeo.draw.picture) as SVG, live.
 //
-// The picture arrives as plain data (trait "picture"); nothing here computes geometry
-// beyond mapping data coordinates to pixels.  What happens in the page, at once:
+// The picture arrives as keyed updates (planargeo/widgets/canvas.py's docstring): each
+// element keeps its SVG group, found by id, and only the elements whose data changed
+// are redrawn; the handles keep their nodes.  A view starts from the synced "snapshot"
+// and asks for the whole picture ("sync") whenever an update does not apply to its version.
+// What happens in the page, at once:
 //   * a dragged handle follows the pointer in the same animation frame;
 //   * zoom (wheel), pan (drag the background) and reset move the drawing at once;
-//   * hover highlights an element and shows its description; a click focuses it.
-// What goes to the kernel: {type: "drag" | "view" | "ping", ...} messages, at most one
-// in flight; while one is in flight only the latest new request is kept (the older is
-// dropped), and it is sent when the kernel's "ack" arrives.
+//   * hover highlights an element and shows its description (asked of the kernel when
+//     the picture changed since it was last asked); a click focuses it.
+// What goes to the kernel: {type: "drag" | "view" | "tick" | "describe" | "sync" | "ping", ...},
+// at most one in flight; while one is in flight only the latest request of each type is
+// kept, and the next is sent when the kernel's "ack" arrives.  While the synced "playing"
+// is true, a "tick" is sent as soon as the previous reply is painted.
 const NS = "http://www.w3.org/2000/svg";
+const ANCHOR = { l: "start", c: "middle", r: "end" };
+const BASELINE = { b: "text-after-edge", t: "text-before-edge", c: "central" };
 
 function mk(tag, attrs, parent) {
   const e = document.createElementNS(NS, tag);
@@ -38,7 +45,10 @@ function fmtTick(v) {
   return s.replace("-", "\u2212");
 }
 
+const f2 = (v) => (Math.round(v * 100) / 100).toString();
+
 function render({ model, el }) {
+  const client = Math.random().toString(36).slice(2);
   const root = document.createElement("div");
   root.className = "pg-canvas";
   const bar = document.createElement("div");
@@ -56,11 +66,17 @@ function render({ model, el }) {
   root.append(bar, svg, tip);
   el.appendChild(root);
 
-  let pic = null, W = 0, H = 0, ml = 0, mt = 0, pw = 0, ph = 0, box = null, kx = 1, ky = 1;
-  let content = null, handleLayer = null, focusId = null, focusHandle = null;
-  const circles = new Map();
+  // the picture held: its version, view, elements by id (wire format), handles
+  const st = { version: null, head: null, order: [], els: new Map(), handles: [], tips: {} };
+  let W = 0, H = 0, ml = 0, mt = 0, pw = 0, ph = 0, box = null, kx = 1, ky = 1, localBox = null;
+  let frame = null;             // {plot, axes, title, inner, handleLayer, clipRect, bg, border}
+  const nodes = new Map();      // element id -> its <g>
+  const circles = new Map();    // handle id -> its <circle>
+  const descs = new Map();      // element id -> {version, text}
+  let focusId = null, focusHandle = null, hoverId = null;
   let drag = null, pan = null;
-  let inflight = false, pending = null, seq = 0;
+  let inflight = false, seq = 0, tickHalted = false, syncAsked = false;
+  const pending = new Map();    // request type -> the latest request of that type
   const handlePaints = [];
 
   const X = (x) => (x - box[0]) * kx;
@@ -71,100 +87,142 @@ function render({ model, el }) {
   const stats = [];
   let current = null;
   function send(msg, tInput) {
-    if (inflight) { pending = msg; pending.tInput = tInput; return; }
+    if (inflight) { pending.set(msg.type, { msg, tInput }); return; }
     inflight = true;
     seq += 1;
-    const { tInput: _t, ...clean } = msg;
-    current = { seq, type: msg.type, tInput: tInput ?? msg.tInput ?? performance.now(), tSent: performance.now() };
+    current = { seq, type: msg.type, tInput: tInput ?? performance.now(), tSent: performance.now() };
     stats.push(current);
     if (stats.length > 1000) stats.shift();
-    model.send({ ...clean, seq });
+    model.send({ ...msg, seq, client });
   }
+  function sendNext() {
+    if (inflight || !pending.size) return false;
+    const [type, p] = pending.entries().next().value;
+    pending.delete(type);
+    send(p.msg, p.tInput);
+    return true;
+  }
+  function maybeTick() {
+    if (model.get("playing") && !tickHalted && !inflight && !pending.size && !drag) send({ type: "tick" });
+  }
+  function askSync() {
+    if (syncAsked) return;
+    syncAsked = true;
+    send({ type: "sync", version: st.version });
+  }
+
   model.on("msg:custom", (m) => {
-    if (!m || m.type !== "ack") return;
-    if (current) current.tAck = performance.now();
+    if (!m) return;
+    if (m.type === "update") { apply(m); return; }
+    if (m.type !== "ack") return;
+    const mine = m.client === client || m.client === null || m.client === undefined;
+    if (m.update && (mine || m.update.base !== null)) apply(m.update);
+    if (!mine) return;
     const done = current;
-    requestAnimationFrame(() => { if (done) done.tPaint = performance.now(); });
+    if (done) done.tAck = performance.now();
+    requestAnimationFrame(() => { if (done) done.tPaint = performance.now(); maybeTick(); });
     inflight = false;
     status.textContent = m.ok === false && m.message ? m.message : "";
-    if (pending) { const p = pending; pending = null; send(p); }
-    else if (!drag) placeHandles();
+    if (done && done.type === "sync") syncAsked = false;
+    if (done && done.type === "tick" && m.ok === false) tickHalted = true;
+    if (done && done.type === "view" && !m.update?.head && !pending.has("view")) clearLocalView();
+    if (m.desc !== undefined && m.id) {
+      descs.set(m.id, { version: st.version, text: m.desc });
+      if (hoverId === m.id && tip.style.display !== "none") tip.textContent = m.desc;
+    }
+    if (!sendNext() && !drag) placeHandles();
   });
+  model.on("change:playing", () => { tickHalted = false; maybeTick(); });
 
   function localPoint(ev) {
     const r = svg.getBoundingClientRect();
     return [ev.clientX - r.left - ml, ev.clientY - r.top - mt];
   }
 
-  function drawPart(g, part, elData) {
-    const k = part.p;
-    if (k === "path") {
-      const d = part.xy.map((q, i) => (i ? "L" : "M") + X(q[0]).toFixed(2) + " " + Y(q[1]).toFixed(2)).join("");
-      const fill = elData.fill || "none";
-      const a = { d: d + (part.closed ? "Z" : ""), fill, stroke: elData.color, "stroke-width": elData.width };
-      if (elData.fill) a["fill-opacity"] = elData.alpha ?? 1;
-      if (elData.dash) a["stroke-dasharray"] = elData.dash.join(" ");
+  // ------------------------------------------------------------------ drawing
+  function drawPart(g, q, e) {
+    const k = q[0];
+    if (k === "P") {
+      let d = "";
+      for (let i = 2; i + 1 < q.length; i += 2) d += (i > 2 ? "L" : "M") + f2(X(q[i])) + " " + f2(Y(q[i + 1]));
+      if (q[1]) d += "Z";
+      const a = { d, fill: e.fill || "none", stroke: e.color, "stroke-width": e.width ?? 1.8 };
+      if (e.fill) a["fill-opacity"] = e.alpha ?? 1;
+      if (e.dash) a["stroke-dasharray"] = e.dash.join(" ");
       mk("path", a, g);
-    } else if (k === "ellipse") {
+    } else if (k === "E") {
       // the unit circle under the picture's affine map (data units), sampled here
-      const [a, b, c, d] = part.m, n = 96;
+      const [, cx, cy, a, b, c, dd] = q, n = 96;
       let p = "";
       for (let i = 0; i < n; i++) {
         const t = (2 * Math.PI * i) / n, u = Math.cos(t), v = Math.sin(t);
-        p += (i ? "L" : "M") + X(part.x + a * u + b * v).toFixed(2) + " " + Y(part.y + c * u + d * v).toFixed(2);
+        p += (i ? "L" : "M") + f2(X(cx + a * u + b * v)) + " " + f2(Y(cy + c * u + dd * v));
       }
-      const at = { d: p + "Z", fill: "none", stroke: elData.color, "stroke-width": elData.width };
-      if (elData.dash) at["stroke-dasharray"] = elData.dash.join(" ");
+      const at = { d: p + "Z", fill: "none", stroke: e.color, "stroke-width": e.width ?? 1.8 };
+      if (e.dash) at["stroke-dasharray"] = e.dash.join(" ");
       mk("path", at, g);
-    } else if (k === "mark") {
-      const x = X(part.x), y = Y(part.y), s = part.size / 2;
-      if (part.shape === "D") {
+    } else if (k === "M") {
+      const x = X(q[1]), y = Y(q[2]), s = q[4] / 2;
+      if (q[3] === "D") {
         mk("path", { d: `M${x} ${y - s * 1.2}L${x + s} ${y}L${x} ${y + s * 1.2}L${x - s} ${y}Z`,
-                     fill: elData.color, stroke: "white", "stroke-width": 0.8 }, g);
-      } else if (part.shape === "s") {
-        mk("rect", { x: x - s, y: y - s, width: 2 * s, height: 2 * s, fill: elData.color,
+                     fill: e.color, stroke: "white", "stroke-width": 0.8 }, g);
+      } else if (q[3] === "s") {
+        mk("rect", { x: x - s, y: y - s, width: 2 * s, height: 2 * s, fill: e.color,
                      stroke: "white", "stroke-width": 0.8 }, g);
       } else {
-        mk("circle", { cx: x, cy: y, r: s, fill: elData.color, stroke: "white", "stroke-width": 0.8 }, g);
+        mk("circle", { cx: x, cy: y, r: s, fill: e.color, stroke: "white", "stroke-width": 0.8 }, g);
       }
-    } else if (k === "glyph") {
-      const [arc, head] = arcGlyph(part.r, part.ccw), x = X(part.x), y = Y(part.y);
-      const d = arc.map((q, i) => (i ? "L" : "M") + (x + q[0]).toFixed(2) + " " + (y - q[1]).toFixed(2)).join("");
-      mk("path", { d, fill: "none", stroke: elData.color, "stroke-width": 1.6 }, g);
-      mk("path", { d: "M" + head.map((q) => (x + q[0]).toFixed(2) + " " + (y - q[1]).toFixed(2)).join("L") + "Z",
-                   fill: elData.color }, g);
-    } else if (k === "arrow") {
-      const x = X(part.x), y = Y(part.y), x2 = x + part.dx, y2 = y - part.dy;
-      const L = Math.hypot(part.dx, part.dy) || 1, ux = part.dx / L, uy = -part.dy / L, h = 8;
-      mk("line", { x1: x, y1: y, x2: x2 - ux * h * 0.8, y2: y2 - uy * h * 0.8, stroke: elData.color,
+    } else if (k === "G") {
+      const [arc, head] = arcGlyph(q[3], !!q[4]), x = X(q[1]), y = Y(q[2]);
+      const d = arc.map((p, i) => (i ? "L" : "M") + f2(x + p[0]) + " " + f2(y - p[1])).join("");
+      mk("path", { d, fill: "none", stroke: e.color, "stroke-width": 1.6 }, g);
+      mk("path", { d: "M" + head.map((p) => f2(x + p[0]) + " " + f2(y - p[1])).join("L") + "Z",
+                   fill: e.color }, g);
+    } else if (k === "A") {
+      const x = X(q[1]), y = Y(q[2]), x2 = x + q[3], y2 = y - q[4];
+      const L = Math.hypot(q[3], q[4]) || 1, ux = q[3] / L, uy = -q[4] / L, h = 8;
+      mk("line", { x1: x, y1: y, x2: x2 - ux * h * 0.8, y2: y2 - uy * h * 0.8, stroke: e.color,
                    "stroke-width": 1.9 }, g);
       mk("path", { d: `M${x2} ${y2}L${x2 - ux * h - uy * h * 0.35} ${y2 - uy * h + ux * h * 0.35}` +
-                      `L${x2 - ux * h + uy * h * 0.35} ${y2 - uy * h - ux * h * 0.35}Z`, fill: elData.color }, g);
-    } else if (k === "text") {
-      if (part.hidden) return;
-      const t = mk("text", { x: X(part.x) + part.dx, y: Y(part.y) - part.dy, fill: elData.color,
-                             "font-size": pic.font_px,
-                             "text-anchor": { left: "start", right: "end", center: "middle" }[part.ha],
-                             "dominant-baseline": { bottom: "text-after-edge", top: "text-before-edge",
-                                                    center: "central" }[part.va] }, g);
-      t.textContent = part.text;
+                      `L${x2 - ux * h + uy * h * 0.35} ${y2 - uy * h - ux * h * 0.35}Z`, fill: e.color }, g);
+    } else if (k === "T") {
+      const t = mk("text", { x: X(q[1]) + q[3], y: Y(q[2]) - q[4], fill: e.color,
+                             "font-size": st.head.font_px,
+                             "text-anchor": ANCHOR[q[6][0]] || "start",
+                             "dominant-baseline": BASELINE[q[6][1]] || "text-after-edge" }, g);
+      t.textContent = q[5];
     }
   }
 
-  let nPaint = 0;
-  const paintTimes = [];
-  function draw() {
-    nPaint += 1;
-    requestAnimationFrame(() => { paintTimes.push(performance.now()); if (paintTimes.length > 1000) paintTimes.shift(); });
-    pic = model.get("picture");
+  function drawElement(id) {
+    const e = st.els.get(id);
+    let g = nodes.get(id);
+    if (!g) {
+      g = mk("g", { "data-id": id, class: "pg-el" });
+      nodes.set(id, g);
+    }
+    g.classList.toggle("pg-faded", !!focusId && focusId !== id);
+    if (e.opacity !== undefined && e.opacity !== null && e.opacity !== 1) g.setAttribute("opacity", e.opacity);
+    else g.removeAttribute("opacity");
+    if (e.d) g.setAttribute("data-described", ""); else g.removeAttribute("data-described");
+    g.textContent = "";
+    for (const q of e.parts || []) drawPart(g, q, e);
+  }
+
+  function buildFrame() {
+    // the parts that depend on the view only: size, clip, title, ticks, background, border
+    const h = st.head;
     svg.textContent = "";
+    nodes.clear();
     circles.clear();
-    if (!pic || !pic.size) return;
-    [W, H] = pic.size;
-    [ml, , mt] = pic.margin;
-    pw = W - pic.margin[0] - pic.margin[1];
-    ph = H - pic.margin[2] - pic.margin[3];
-    box = pic.box;
+    frame = null;
+    if (!h || !h.size) return false;
+    [W, H] = h.size;
+    [ml, , mt] = h.margin;
+    pw = W - h.margin[0] - h.margin[1];
+    ph = H - h.margin[2] - h.margin[3];
+    box = h.box;
+    localBox = null;
     kx = pw / (box[1] - box[0]);
     ky = ph / (box[3] - box[2]);
     svg.setAttribute("width", W);
@@ -173,66 +231,128 @@ function render({ model, el }) {
     const defs = mk("defs", {}, svg);
     const clipId = "pgclip" + Math.random().toString(36).slice(2);
     mk("rect", { x: 0, y: 0, width: pw, height: ph }, mk("clipPath", { id: clipId }, defs));
-    if (pic.title) {
-      const t = mk("text", { x: W / 2, y: 16, "text-anchor": "middle", "font-size": pic.font_px + 1,
+    if (h.title) {
+      const t = mk("text", { x: W / 2, y: 16, "text-anchor": "middle", "font-size": h.font_px + 1,
                              class: "pg-title" }, svg);
-      t.textContent = pic.title;
+      t.textContent = h.title;
     }
     const plot = mk("g", { transform: `translate(${ml},${mt})` }, svg);
     mk("rect", { x: 0, y: 0, width: pw, height: ph, class: "pg-bg" }, plot);
-    if (pic.ticks) {
+    if (h.ticks) {
       const axes = mk("g", { class: "pg-axes" }, plot);
-      for (const v of pic.ticks.x) {
+      for (const v of h.ticks.x) {
         const x = X(v);
         mk("line", { x1: x, y1: ph, x2: x, y2: ph + 4 }, axes);
         const t = mk("text", { x, y: ph + 6, "text-anchor": "middle", "dominant-baseline": "text-before-edge",
-                               "font-size": pic.font_px }, axes);
+                               "font-size": h.font_px }, axes);
         t.textContent = fmtTick(v);
       }
-      for (const v of pic.ticks.y) {
+      for (const v of h.ticks.y) {
         const y = Y(v);
         mk("line", { x1: -4, y1: y, x2: 0, y2: y }, axes);
         const t = mk("text", { x: -6, y, "text-anchor": "end", "dominant-baseline": "central",
-                               "font-size": pic.font_px }, axes);
+                               "font-size": h.font_px }, axes);
         t.textContent = fmtTick(v);
       }
     }
-    content = mk("g", { "clip-path": `url(#${clipId})` }, plot);
+    const content = mk("g", { "clip-path": `url(#${clipId})` }, plot);
     const inner = mk("g", { class: "pg-content" }, content);
-    for (const e of pic.elements) {
-      const g = mk("g", { "data-id": e.id, class: "pg-el" + (focusId && focusId !== e.id ? " pg-faded" : "") }, inner);
-      if (e.opacity !== undefined && e.opacity !== 1) g.setAttribute("opacity", e.opacity);
-      if (e.symbol || e.desc) g.setAttribute("data-described", "");
-      for (const part of e.parts) drawPart(g, part, e);
-    }
     mk("rect", { x: 0, y: 0, width: pw, height: ph, class: "pg-frame" }, plot);
-    handleLayer = mk("g", { class: "pg-handles" }, plot);
-    for (const h of pic.handles) {
-      const c = mk("circle", { r: 8, "data-handle": h.id, class: "pg-handle", tabindex: "-1" }, handleLayer);
-      const t = mk("title", {}, c);
-      t.textContent = (h.symbol ? h.symbol + ": " : "") + (h.desc || "drag");
-      circles.set(h.id, c);
+    const handleLayer = mk("g", { class: "pg-handles" }, plot);
+    frame = { inner, handleLayer };
+    return true;
+  }
+
+  let nPaint = 0;
+  const paintTimes = [];
+  function apply(u) {
+    const full = u.base === null || u.base === undefined;
+    if (!full && u.base !== st.version) { askSync(); return; }
+    if (full && u.version === st.version && frame) return;      // already held
+    let rebuild = full || !!u.head;
+    if (full) { st.els = new Map(); st.order = []; st.handles = []; st.tips = {}; descs.clear(); }
+    if (u.head) st.head = u.head;
+    const changed = [];
+    if (u.set) {
+      for (const id in u.set) {
+        const d = u.set[id], e = full ? {} : { ...(st.els.get(id) || {}) };
+        for (const k in d) { if (d[k] === null) delete e[k]; else e[k] = d[k]; }
+        st.els.set(id, e);
+        changed.push(id);
+      }
     }
+    if (u.order) {
+      st.order = u.order;
+      const keep = new Set(u.order);
+      for (const id of [...st.els.keys()]) if (!keep.has(id)) st.els.delete(id);
+    }
+    if (u.handles) st.handles = u.handles;
+    if (u.tips) st.tips = u.tips;
+    st.version = u.version;
+    nPaint += 1;
+    requestAnimationFrame(() => { paintTimes.push(performance.now()); if (paintTimes.length > 1000) paintTimes.shift(); });
+    if (rebuild) { if (!buildFrame()) return; }
+    if (!frame) return;
+    // elements: drop the gone, redraw the changed (all after a new view), keep the order
+    for (const [id, g] of nodes) if (!st.els.has(id)) { g.remove(); nodes.delete(id); }
+    for (const id of rebuild ? st.order : changed) if (st.els.has(id)) drawElement(id);
+    if (rebuild || u.order || changed.some((id) => nodes.has(id) && !nodes.get(id).parentNode)) {
+      const inner = frame.inner;
+      let at = inner.firstChild;
+      for (const id of st.order) {
+        const g = nodes.get(id);
+        if (!g) continue;
+        if (g === at) at = at.nextSibling;
+        else inner.insertBefore(g, at);
+      }
+    }
+    if (localBox) setLocalView(localBox);
+    // handles: one circle each, kept while the handle is there
+    const seen = new Set();
+    for (const [id] of st.handles) {
+      seen.add(id);
+      let c = circles.get(id);
+      if (!c) {
+        c = mk("circle", { r: 8, "data-handle": id, class: "pg-handle", tabindex: "-1" }, frame.handleLayer);
+        mk("title", {}, c);
+        circles.set(id, c);
+      }
+      if (u.tips || rebuild || !c.firstChild.textContent) c.firstChild.textContent = st.tips[id] || "drag";
+    }
+    for (const [id, c] of circles) if (!seen.has(id)) { c.remove(); circles.delete(id); }
     placeHandles();
   }
 
   function setLocalView(b) {
     // show the drawn picture in the box b at once (a transform), until the kernel's redraw arrives
+    if (!frame) return;
+    const b0 = st.head.box;
+    localBox = b;
     box = b;
     kx = pw / (b[1] - b[0]);
     ky = ph / (b[3] - b[2]);
-    const s = kx / (pw / (pic.box[1] - pic.box[0]));
-    const tx = (pic.box[0] - b[0]) * kx, ty = ph * (1 - s) - (pic.box[2] - b[2]) * ky;
-    content.firstChild.setAttribute("transform", `translate(${tx},${ty}) scale(${s})`);
+    const s = kx / (pw / (b0[1] - b0[0]));
+    const tx = (b0[0] - b[0]) * kx, ty = ph * (1 - s) - (b0[2] - b[2]) * ky;
+    frame.inner.setAttribute("transform", `translate(${tx},${ty}) scale(${s})`);
+    placeHandles();
+  }
+
+  function clearLocalView() {
+    if (!localBox || !frame) return;
+    localBox = null;
+    box = st.head.box;
+    kx = pw / (box[1] - box[0]);
+    ky = ph / (box[3] - box[2]);
+    frame.inner.removeAttribute("transform");
     placeHandles();
   }
 
   function placeHandles() {
-    if (!pic) return;
-    for (const h of pic.handles) {
-      const c = circles.get(h.id);
+    if (!frame) return;
+    for (const [id, x, y] of st.handles) {
+      const c = circles.get(id);
       if (!c) continue;
-      if (drag && drag.id === h.id) {  // the dragged one stays under the pointer, also when redrawn
+      if (drag && drag.id === id) {  // the dragged one stays under the pointer
         if (drag.circle !== c) {
           c.setAttribute("cx", drag.circle.getAttribute("cx"));
           c.setAttribute("cy", drag.circle.getAttribute("cy"));
@@ -241,14 +361,24 @@ function render({ model, el }) {
         }
         continue;
       }
-      c.setAttribute("cx", X(h.x));
-      c.setAttribute("cy", Y(h.y));
+      c.setAttribute("cx", X(x));
+      c.setAttribute("cy", Y(y));
     }
   }
 
-  function showTip(ev, e) {
-    if (!e.symbol && !e.desc) { tip.style.display = "none"; return; }
-    tip.textContent = (e.symbol ? e.symbol + " \u2014 " : "") + (e.desc || "");
+  function showTip(ev, id) {
+    const e = st.els.get(id);
+    if (!e || !e.d) { tip.style.display = "none"; return; }
+    const known = descs.get(id);
+    if (known && known.version === st.version) tip.textContent = known.text;
+    else {
+      tip.textContent = (e.symbol ? e.symbol + " \u2014 " : "") + "\u2026";
+      if (hoverId !== id || !known || known.asked !== st.version) {
+        descs.set(id, { ...(known || {}), asked: st.version });
+        send({ type: "describe", id });
+      }
+    }
+    hoverId = id;
     const r = root.getBoundingClientRect();
     tip.style.left = Math.min(ev.clientX - r.left + 12, W - 220) + "px";
     tip.style.top = ev.clientY - r.top + 14 + "px";
@@ -277,10 +407,10 @@ function render({ model, el }) {
     for (const n of svg.querySelectorAll(".pg-hover")) if (n !== g) n.classList.remove("pg-hover");
     if (g) {
       g.classList.add("pg-hover");
-      const e = pic.elements.find((q) => q.id === g.dataset.id);
-      if (e) showTip(ev, e);
-    } else tip.style.display = "none";
+      showTip(ev, g.dataset.id);
+    } else { tip.style.display = "none"; hoverId = null; }
   });
+  svg.addEventListener("pointerleave", () => { tip.style.display = "none"; hoverId = null; });
   svg.addEventListener("pointerdown", (ev) => {
     const hid = ev.target.dataset && ev.target.dataset.handle;
     svg.setPointerCapture(ev.pointerId);
@@ -295,21 +425,21 @@ function render({ model, el }) {
     const g = ev.target.closest && ev.target.closest(".pg-el");
     if (g) {
       focusId = focusId === g.dataset.id ? null : g.dataset.id;
-      for (const n of svg.querySelectorAll(".pg-el"))
-        n.classList.toggle("pg-faded", !!focusId && n.dataset.id !== focusId);
+      for (const [id, n] of nodes) n.classList.toggle("pg-faded", !!focusId && id !== focusId);
       return;
     }
-    pan = { start: localPoint(ev), box0: box.slice() };
+    if (box) pan = { start: localPoint(ev), box0: box.slice() };
   });
-  svg.addEventListener("pointerup", (ev) => {
+  svg.addEventListener("pointerup", () => {
     if (drag) {
       drag.circle.classList.remove("pg-dragging");
       drag = null;
-      if (!inflight && !pending) placeHandles();  // a refused position snaps back
+      if (!inflight && !pending.size) { placeHandles(); maybeTick(); }  // a refused position snaps back
     }
     pan = null;
   });
   svg.addEventListener("wheel", (ev) => {
+    if (!box) return;
     ev.preventDefault();
     const [px, py] = localPoint(ev);
     const [x, y] = dataOf(px, py);
@@ -319,23 +449,25 @@ function render({ model, el }) {
   }, { passive: false });
   svg.addEventListener("keydown", (ev) => {
     const dirs = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] };
-    if (!(ev.key in dirs) || !focusHandle || !pic) return;
-    const h = pic.handles.find((q) => q.id === focusHandle);
+    if (!(ev.key in dirs) || !focusHandle || !frame) return;
+    const h = st.handles.find((q) => q[0] === focusHandle);
     if (!h) return;
     ev.preventDefault();
     const step = (ev.shiftKey ? 20 : 2) / kx, [dx, dy] = dirs[ev.key];
-    h.x += dx * step;
-    h.y += dy * step;
+    h[1] += dx * step;
+    h[2] += dy * step;
     placeHandles();
-    send({ type: "drag", id: h.id, x: h.x, y: h.y });
+    send({ type: "drag", id: h[0], x: h[1], y: h[2] });
   });
   reset.addEventListener("click", () => send({ type: "view", box: null }));
 
-  model.on("change:picture", draw);
-  draw();
-  root.__planargeo = { ping: () => send({ type: "ping" }), busy: () => inflight, stats, handlePaints,
-                       paintTimes, painted: () => nPaint };
-  return () => model.off("change:picture", draw);
+  const snap = model.get("snapshot");
+  if (snap) apply({ ...snap, base: null });
+  askSync();        // the snapshot may be older than this view (a second display): the kernel knows
+  root.__planargeo = { ping: () => send({ type: "ping" }), busy: () => inflight || pending.size > 0, stats,
+                       handlePaints, paintTimes, painted: () => nPaint, version: () => st.version,
+                       elements: () => st.els.size };
+  return () => {};
 }
 
 export default { render };

@@ -3,20 +3,65 @@
 :class:`PictureCanvas` is an `anywidget <https://anywidget.dev>`_ whose ES module
 (``canvas.js``, shipped beside this file: no build step, no network) draws a
 picture's plain data (:mod:`planargeo.draw.picture`) as SVG.  The page moves a
-dragged handle, zooms and pans at once, and sends the kernel one request at a time:
+dragged handle, zooms and pans at once, and sends the kernel one request at a time.
 
-``{"type": "drag", "id": str, "x": float, "y": float, "seq": int}``
+Kernel → page
+-------------
+Setting :attr:`PictureCanvas.picture` (the complete plain dict of
+:meth:`planargeo.draw.picture.Picture.to_dict`, kept whole in Python) sends the page
+only what changed since the version it holds, as an *update*::
+
+    {"version": n, "base": n - 1,            # applies to version n - 1 only
+     "head": {...},                          # view, size, ticks, title (when changed)
+     "order": [id, ...],                     # drawing order (when it changed)
+     "set": {id: {field: value, ...}},       # changed fields of new or changed elements
+     "handles": [[id, x, y], ...],           # when they moved
+     "tips": {handle id: text}}              # when they changed
+
+Coordinates are rounded to a tenth of a pixel of the picture's view (:func:`wire_digits`),
+parts are short arrays (:func:`wire_element`) and descriptions stay in the kernel:
+an element is marked described, and the page asks for its text when the pointer
+rests on it.  An update made while a request is answered travels in the request's
+``ack``; any other (a slider, Play driven by the kernel) is sent alone as
+``{"type": "update", ...}``.  A view that opens (a page reload, a second display)
+starts from the synced ``snapshot`` (the whole current picture, wire format) and
+asks for the whole picture again whenever an update does not apply to its version.
+
+Page → kernel
+-------------
+At most one request is in flight; while one is, the page keeps only the latest
+request of each type and sends it when the ``ack`` arrives.  Every request carries
+``"seq"`` (an int) and the page's ``"client"`` id (echoed in the ack):
+
+``{"type": "drag", "id": str, "x": float, "y": float}``
     a handle moved to ``(x, y)`` (data coordinates);
-``{"type": "view", "box": [x0, x1, y0, y1] | None, "seq": int}``
+``{"type": "view", "box": [x0, x1, y0, y1] | None}``
     the user zoomed or panned (None: back to the explorer's own view);
-``{"type": "ping", "seq": int}``
+``{"type": "tick"}``
+    Play: the next frame, please (below);
+``{"type": "describe", "id": str}``
+    the description of an element (answered in the ack's ``"desc"``);
+``{"type": "sync", "version": int | None}``
+    the page holds this version; the ack brings the whole picture if it is not the current one;
+``{"type": "ping"}``
     nothing to do (the floor of a round trip, for benchmarks).
 
 Every message is checked here before anything acts on it (its type, its fields'
 types, finite numbers within :data:`COORD_LIMIT`, a known handle); a bad one is
 answered ``ok: false`` and changes nothing.  The kernel answers each request with
-``{"type": "ack", "seq", "ok", "message"}`` after the new picture (if any) is set,
-so the page knows when it may send the next.
+``{"type": "ack", "seq", "client", "ok", "message"[, "update"][, "desc"]}`` after the
+new picture (if any) is set, so the page knows when it may send the next.
+
+Play
+----
+While :attr:`PictureCanvas.playing` (a synced Bool, set by the kernel: the explorer's
+Play button) is true, the page sends ``{"type": "tick"}`` as soon as the previous reply
+is painted: the frames pace themselves to what the kernel and the page manage.
+Each checked tick calls ``on_tick()``, which advances the motion by the wall-clock
+time since the last tick and sets the new picture (its update travels in the ack).
+``on_tick`` raising a :class:`~planargeo.errors.PlanargeoError` refuses the tick: its
+message is shown in the page's status line, and the page sends no further tick until
+``playing`` is set again.  A tick that arrives after Play stopped does nothing.
 
 Examples
 --------
@@ -31,6 +76,42 @@ Examples
 (False, 'x must be a finite number, got nan')
 >>> seen
 [('P', 1.0, 2.0)]
+
+Play: ticks reach ``on_tick`` only while ``playing`` is true; a refusal is a message.
+
+>>> frames = []
+>>> def tick():
+...     if len(frames) == 2:
+...         raise PlanargeoError("the motion ends at t = 2 s")
+...     frames.append(len(frames))
+>>> p = PictureCanvas(on_tick=tick)
+>>> p.handle_message({"type": "tick", "seq": 1})      # not playing: nothing happens
+(True, '')
+>>> p.playing = True
+>>> [p.handle_message({"type": "tick", "seq": k}) for k in (2, 3, 4)]
+[(True, ''), (True, ''), (False, 'the motion ends at t = 2 s')]
+>>> frames
+[0, 1]
+
+Updates carry what changed: a moved point sends its parts, not its colour.
+
+>>> from planargeo.draw.picture import Picture
+>>> def picture(x):
+...     pic = Picture((-2, 2, -2, 2), size=(200, 200))
+...     pic.point("P", [0.0, -x, 1.0], role="twist", symbol="P", desc=f"a pole at x = {x}")
+...     pic.line("l", [1.0, 0.0, 0.0], role="wrench", symbol="l")
+...     return pic.to_dict()
+>>> c = PictureCanvas()
+>>> c.picture = picture(0.5)
+>>> first = c.last_update
+>>> sorted(first["set"]), first["order"], first["base"]
+(['P', 'l'], ['l', 'P'], 0)
+>>> c.picture = picture(1.0)
+>>> u = c.last_update
+>>> sorted(u["set"]), sorted(u["set"]["P"]), "head" in u, u["version"]
+(['P'], ['parts'], False, 2)
+>>> c.describe("P")
+'P — a pole at x = 1.0'
 """
 from __future__ import annotations
 
@@ -44,10 +125,14 @@ import traitlets
 
 from planargeo.errors import PlanargeoError
 
-__all__ = ["PictureCanvas", "COORD_LIMIT"]
+__all__ = ["PictureCanvas", "COORD_LIMIT", "wire_digits", "wire_element"]
 
 #: Largest coordinate (in absolute value) a message from the page may carry.
 COORD_LIMIT = 1e9
+#: Element fields that travel to the page as they are (the rest: parts, described mark).
+_STYLE = ("role", "symbol", "color", "width", "dash", "fill", "alpha", "opacity")
+_HA = {"left": "l", "center": "c", "right": "r"}
+_VA = {"bottom": "b", "center": "c", "top": "t"}
 
 _CSS = """
 .pg-canvas { position: relative; font-family: 'DejaVu Sans', sans-serif; user-select: none; }
@@ -77,6 +162,92 @@ def _finite(name: str, v) -> float:
     return v
 
 
+def wire_digits(head: dict) -> int:
+    """Decimals of a data coordinate that the page needs: a tenth of a pixel of the view.
+
+    Parameters
+    ----------
+    head : dict
+        A picture's ``size``, ``margin`` and ``box``.
+
+    Returns
+    -------
+    int
+
+    Examples
+    --------
+    >>> wire_digits({"size": [560, 540], "margin": [6, 6, 6, 30], "box": [-5, 5, -5, 5]})
+    3
+    """
+    try:
+        (w, h), (ml, mr, mt, mb), (x0, x1, y0, y1) = head["size"], head["margin"], head["box"]
+        k = max((w - ml - mr) / (x1 - x0), (h - mt - mb) / (y1 - y0))
+        return max(0, min(12, math.ceil(math.log10(10.0 * k))))
+    except (KeyError, TypeError, ValueError, ZeroDivisionError):
+        return 6
+
+
+def wire_element(el: dict, nd: int) -> dict:
+    """One element of a picture as the page receives it: short parts, no description text.
+
+    Parts become arrays (``["P", closed, x0, y0, x1, y1, ...]`` a path,
+    ``["E", x, y, a, b, c, d]`` an ellipse, ``["M", x, y, shape, px]`` a marker,
+    ``["G", x, y, r, ccw]`` a glyph, ``["A", x, y, dx, dy]`` an arrow,
+    ``["T", x, y, dx, dy, text, "lb"]`` a label with its alignment), data coordinates
+    rounded to ``nd`` decimals and pixel offsets to a tenth; hidden labels are left
+    out; ``"d": 1`` marks an element whose description the page may ask for.
+
+    Parameters
+    ----------
+    el : dict
+        An element of :meth:`planargeo.draw.picture.Picture.to_dict`.
+    nd : int
+        Decimals of a data coordinate (:func:`wire_digits`).
+
+    Returns
+    -------
+    dict
+
+    Examples
+    --------
+    >>> wire_element({"id": "P", "role": "twist", "symbol": "P", "desc": "a pole", "color": "#1f77b4",
+    ...               "parts": [{"p": "mark", "x": 0.123456, "y": 1.0, "shape": "o", "size": 6.94}]}, 3)
+    {'role': 'twist', 'symbol': 'P', 'color': '#1f77b4', 'd': 1, 'parts': [['M', 0.123, 1.0, 'o', 6.9]]}
+    """
+    out = {k: el[k] for k in _STYLE if k in el}
+    if el.get("desc") or el.get("symbol"):
+        out["d"] = 1
+    parts = []
+    for p in el.get("parts", ()):
+        k = p.get("p")
+        if k == "path":
+            flat = ["P", 1 if p.get("closed") else 0]
+            for q in p["xy"]:
+                flat.append(round(q[0], nd))
+                flat.append(round(q[1], nd))
+            parts.append(flat)
+        elif k == "text":
+            if p.get("hidden"):
+                continue
+            parts.append(["T", round(p["x"], nd), round(p["y"], nd), round(p.get("dx", 0.0), 1),
+                          round(p.get("dy", 0.0), 1), p.get("text", ""),
+                          _HA.get(p.get("ha"), "l") + _VA.get(p.get("va"), "b")])
+        elif k == "mark":
+            parts.append(["M", round(p["x"], nd), round(p["y"], nd), p.get("shape", "o"),
+                          round(p.get("size", 6.0), 1)])
+        elif k == "glyph":
+            parts.append(["G", round(p["x"], nd), round(p["y"], nd), round(p.get("r", 8.0), 1),
+                          1 if p.get("ccw") else 0])
+        elif k == "arrow":
+            parts.append(["A", round(p["x"], nd), round(p["y"], nd), round(p.get("dx", 0.0), 1),
+                          round(p.get("dy", 0.0), 1)])
+        elif k == "ellipse":
+            parts.append(["E", round(p["x"], nd), round(p["y"], nd),
+                          *(round(v, nd + 1) for v in p["m"])])
+    out["parts"] = parts
+    return out
+
+
 class PictureCanvas(anywidget.AnyWidget):
     """A picture drawn in the page (module docstring).
 
@@ -87,30 +258,154 @@ class PictureCanvas(anywidget.AnyWidget):
         to refuse the position (the page snaps the handle back and shows the reason).
     on_view : callable ``(box or None) -> None``, optional
         Called for a checked zoom / pan / reset request.
+    on_tick : callable ``() -> None``, optional
+        Called for each checked Play tick while :attr:`playing` is true; it advances the
+        motion and sets the new picture, or raises a
+        :class:`~planargeo.errors.PlanargeoError` to refuse (the message is shown).
     **kwargs
         Passed to :class:`anywidget.AnyWidget`.
 
     Attributes
     ----------
     picture : dict
-        The picture's data (:meth:`planargeo.draw.picture.Picture.to_dict`); setting it
-        redraws the page.
+        The picture's data (:meth:`planargeo.draw.picture.Picture.to_dict`), whole;
+        setting it sends the page what changed.
+    playing : bool
+        Play is on: the page asks for frames (synced; set by the kernel).
+    snapshot
+        The whole current picture in the page's format (synced: read by a view when it
+        opens; never sent on its own).
     n_requests : int
         Requests answered so far.
+    version : int
+        Updates made so far (the version of the picture the page should hold).
+    last_update : dict or None
+        The last update made (for tests and benchmarks).
     """
 
     _esm = Path(__file__).with_name("canvas.js")
     _css = _CSS
-    picture = traitlets.Dict().tag(sync=True)
+    picture = traitlets.Dict()
+    playing = traitlets.Bool(False).tag(sync=True)
+    snapshot = traitlets.Any(None).tag(sync=True, to_json=lambda _v, w: w._snapshot())
 
     def __init__(self, on_drag: Callable[[str, float, float], Any] | None = None,
-                 on_view: Callable[[Any], Any] | None = None, **kwargs):
+                 on_view: Callable[[Any], Any] | None = None,
+                 on_tick: Callable[[], Any] | None = None, **kwargs):
+        # what the page holds (set before the widget opens: opening reads the snapshot)
+        self.version = 0
+        self.last_update = None
+        self._sent: dict[str, dict] = {}
+        self._order: list[str] = []
+        self._head: dict = {}
+        self._head_src: dict = {}
+        self._handles: list = []
+        self._tips: dict = {}
+        self._dirty = False
+        self._in_request = False
         super().__init__(**kwargs)
         self.on_drag = on_drag
         self.on_view = on_view
+        self.on_tick = on_tick
         self.n_requests = 0
         self.on_msg(self._on_msg)
 
+    # ------------------------------------------------------------------ kernel → page
+    @traitlets.observe("picture")
+    def _picture_set(self, _change) -> None:
+        self._dirty = True
+        if not self._in_request:       # inside a request the update travels in its ack
+            update = self._flush()
+            if update is not None:
+                self.send({"type": "update", **update})
+
+    def _flush(self) -> dict | None:
+        """The update from what the page holds to :attr:`picture` (None: nothing changed)."""
+        if not self._dirty:
+            return None
+        self._dirty = False
+        pic = self.picture
+        update: dict[str, Any] = {}
+        head = {k: pic[k] for k in ("size", "margin", "box", "title", "ticks", "font_px") if k in pic}
+        if head != self._head_src:
+            self._head_src = head
+            self._head = {**head, "nd": wire_digits(head)}
+            update["head"] = self._head
+        nd = self._head.get("nd", 6)
+        order, changed, sent = [], {}, self._sent
+        new_sent = {}
+        for el in pic.get("elements", ()):
+            eid = el.get("id")
+            if not isinstance(eid, str) or eid in new_sent:
+                continue
+            order.append(eid)
+            w = wire_element(el, nd)
+            new_sent[eid] = w
+            old = sent.get(eid)
+            if old is None:
+                changed[eid] = w
+            elif old != w:
+                diff = {k: v for k, v in w.items() if old.get(k) != v}
+                diff.update({k: None for k in old if k not in w})
+                changed[eid] = diff
+        self._sent = new_sent
+        if order != self._order:
+            update["order"] = order
+            self._order = order
+        if changed:
+            update["set"] = changed
+        handles, tips = [], {}
+        for h in pic.get("handles", ()):
+            try:
+                handles.append([str(h["id"]), round(float(h["x"]), nd), round(float(h["y"]), nd)])
+            except (KeyError, TypeError, ValueError):
+                continue
+            sym, desc = h.get("symbol") or "", h.get("desc") or "drag"
+            tips[str(h["id"])] = f"{sym}: {desc}" if sym else desc
+        if handles != self._handles:
+            update["handles"] = self._handles = handles
+        if tips != self._tips:
+            update["tips"] = self._tips = tips
+        if not update:
+            return None
+        update["base"] = self.version
+        self.version += 1
+        update["version"] = self.version
+        self.last_update = update
+        return update
+
+    def _snapshot(self) -> dict:
+        """The whole picture the page should hold now (wire format, the current version)."""
+        if getattr(self, "_dirty", False) and not getattr(self, "_in_request", False):
+            self._flush()
+        return {"version": getattr(self, "version", 0), "base": None, "head": getattr(self, "_head", {}),
+                "order": list(getattr(self, "_order", [])), "set": dict(getattr(self, "_sent", {})),
+                "handles": getattr(self, "_handles", []), "tips": getattr(self, "_tips", {})}
+
+    def describe(self, eid: str) -> str:
+        """The hover text of the element ``eid``: its symbol and description.
+
+        Parameters
+        ----------
+        eid : str
+            The element's id.
+
+        Returns
+        -------
+        str
+
+        Raises
+        ------
+        PlanargeoError
+            No such element in the picture.
+        """
+        for el in self.picture.get("elements", ()):
+            if el.get("id") == eid:
+                sym, desc = el.get("symbol") or "", el.get("desc") or ""
+                return f"{sym} — {desc}" if sym and desc else sym or desc
+        raise PlanargeoError(f"no element {eid!r} in the picture")
+
+    # ------------------------------------------------------------------ page → kernel
     def handle_message(self, msg) -> tuple[bool, str]:
         """Check one message from the page and act on it.
 
@@ -127,16 +422,20 @@ class PictureCanvas(anywidget.AnyWidget):
         Raises
         ------
         Exception
-            Whatever ``on_drag`` or ``on_view`` raise other than a
+            Whatever ``on_drag``, ``on_view`` or ``on_tick`` raise other than a
             :class:`~planargeo.errors.PlanargeoError` (a refusal); the widget answers
             such a request as not taken, and the exception goes no further.
         """
+        ok, why, _extra = self._handle(msg)
+        return ok, why
+
+    def _handle(self, msg) -> tuple[bool, str, dict]:
         try:
             if not isinstance(msg, dict):
                 raise PlanargeoError(f"a message must be a dict, got {type(msg).__name__}")
             kind = msg.get("type")
             if kind == "ping":
-                return True, ""
+                return True, "", {}
             if kind == "drag":
                 hid = msg.get("id")
                 if not isinstance(hid, str) or hid not in {h.get("id") for h in
@@ -145,7 +444,11 @@ class PictureCanvas(anywidget.AnyWidget):
                 x, y = _finite("x", msg.get("x")), _finite("y", msg.get("y"))
                 if self.on_drag is not None:
                     self.on_drag(hid, x, y)
-                return True, ""
+                return True, "", {}
+            if kind == "tick":
+                if self.playing and self.on_tick is not None:
+                    self.on_tick()
+                return True, "", {}
             if kind == "view":
                 box = msg.get("box")
                 if box is not None:
@@ -156,16 +459,43 @@ class PictureCanvas(anywidget.AnyWidget):
                         raise PlanargeoError(f"box must have x0 < x1 and y0 < y1, got {box}")
                 if self.on_view is not None:
                     self.on_view(box)
-                return True, ""
+                return True, "", {}
+            if kind == "describe":
+                eid = msg.get("id")
+                if not isinstance(eid, str):
+                    raise PlanargeoError(f"id must be an element's id, got {eid!r}")
+                return True, "", {"desc": self.describe(eid), "id": eid}
+            if kind == "sync":
+                v = msg.get("version")
+                if v is not None and (isinstance(v, bool) or not isinstance(v, int)):
+                    raise PlanargeoError(f"version must be an int or None, got {v!r}")
+                return True, "", {"sync": v}
             raise PlanargeoError(f"unknown message type {kind!r}")
         except PlanargeoError as exc:
-            return False, str(exc)
+            return False, str(exc), {}
 
     def _on_msg(self, _widget, content, _buffers) -> None:
+        self._in_request = True
         try:
-            ok, why = self.handle_message(content)
+            ok, why, extra = self._handle(content)
         except Exception as exc:  # noqa: BLE001 - nothing escapes into the kernel's comm loop
-            ok, why = False, f"not taken: {type(exc).__name__}: {exc}"
+            ok, why, extra = False, f"not taken: {type(exc).__name__}: {exc}", {}
+        finally:
+            self._in_request = False
         self.n_requests += 1
         seq = content.get("seq") if isinstance(content, dict) else None
-        self.send({"type": "ack", "seq": seq if isinstance(seq, int) else None, "ok": ok, "message": why})
+        client = content.get("client") if isinstance(content, dict) else None
+        ack = {"type": "ack", "seq": seq if isinstance(seq, int) else None,
+               "client": client if isinstance(client, str) else None, "ok": ok, "message": why}
+        try:
+            update = self._flush()
+        except Exception as exc:  # noqa: BLE001 - a picture that cannot be sent: say so
+            update, ack["ok"], ack["message"] = None, False, f"not drawn: {type(exc).__name__}: {exc}"
+        if "sync" in extra:
+            if extra["sync"] != self.version:
+                update = self._snapshot()
+        elif "desc" in extra:
+            ack["desc"], ack["id"] = extra["desc"], extra["id"]
+        if update is not None:
+            ack["update"] = update
+        self.send(ack)
