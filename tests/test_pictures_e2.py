@@ -83,3 +83,39 @@ def test_subspace_coinciding_points_are_one_element_with_both_names():
     assert "U_gamma" not in els and els["U1"]["symbol"] == "U, Uγ"
     U = ex.state["U"][:, 0]
     assert _marks(els["U1"]) == [pytest.approx((-U[1] / U[2], U[0] / U[2]), abs=1e-4)]
+
+
+# ------------------------------------------------------------------------------------------ impulse
+L_DOOR, W_DOOR = 0.9, 0.04
+
+
+def test_impulse_door_axis_of_percussion_and_free_pole_by_hand():
+    """The door (0.9 m × 0.04 m, hinge at 0) struck across at x = 0.55: the axis of percussion of the hinge is
+    x = 2L/3 + w²/(6L) (5.67), the pole if free x = L/2 − (ρ_c²)/(0.55 − L/2) with ρ_c² = (L² + w²)/12."""
+    from planargeo.widgets import ImpulseExplorer
+
+    ex = ImpulseExplorer(display="agg", body="door")
+    pic = ex.picture()
+    assert problems(pic) == []
+    els = elements(pic)
+    (seg,) = _paths(els["axis"])
+    np.testing.assert_allclose(seg[:, 0], 2 * L_DOOR / 3 + W_DOOR ** 2 / (6 * L_DOOR), atol=1e-5)
+    assert _marks(els["centre of percussion"]) == [pytest.approx((0.600296, 0.0), abs=1e-5)]
+    free = L_DOOR / 2 - (L_DOOR ** 2 + W_DOOR ** 2) / 12 / (0.55 - L_DOOR / 2)
+    assert _marks(els["free pole"]) == [pytest.approx((free, 0.0), abs=1e-5)]
+    assert _marks(els["pole"]) == [pytest.approx((0.0, 0.0), abs=1e-9)]              # held: about the hinge
+    assert els["reaction"]["symbol"] == "ĵᵣ" and "(5.67)" in els["reaction"]["desc"]
+    assert fill(pic, ex.mechanism_points()) >= 1 / 3                                   # the door fills the view
+
+
+def test_impulse_a_blow_through_the_centre_of_mass_of_a_free_body_has_its_pole_at_infinity():
+    """Free, struck along the body's axis through c: a translation along x, its pole the ideal point across it."""
+    from planargeo.widgets import ImpulseExplorer
+
+    ex = ImpulseExplorer(display="agg", body="door", support="free", **{"strike y": 0.0, "strike angle": 0.0,
+                                                                          "strike x": 0.3})
+    els = elements(ex.picture())
+    kinds = [p["p"] for p in els["pole"]["parts"]]
+    assert "mark" not in kinds and "arrow" in kinds
+    assert "at infinity" in els["pole"]["desc"]
+    assert [p["text"] for p in els["pole"]["parts"] if p["p"] == "text"] == ["v (pole) at ∞"]

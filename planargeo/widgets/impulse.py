@@ -38,6 +38,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Polygon as MplPolygon
 
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
+from planargeo.draw.pictures.impulse import impulse_picture, moved_outline
 from planargeo.draw.style import COLORS
 from planargeo.errors import DegenerateGeometryError
 from planargeo.scenes.impulse import BODIES, impulse
@@ -251,20 +252,8 @@ class ImpulseExplorer(Explorer):
         outline = ex["outline"]
         dv = ex["dv"]
         # the body t seconds after the blow: turned by ω t about the pole (or shifted, a translation)
-        if dv[2] != 0:
-            P = np.array([-dv[1], dv[0]]) / dv[2]
-            th = dv[2] * t
-            c, s = math.cos(th), math.sin(th)
-            moved = (outline - P) @ np.array([[c, s], [-s, c]]) + P
-        else:
-            moved = outline + t * dv[:2]
-        self.body.set_xy(moved)
-        # the view: the fixed frame, grown (never shrunk) to hold the blow's point and arrow tip
-        v = self.values
-        tip = np.array([v["strike x"], v["strike y"]]) + unit_direction(v["strike angle"]) * (ARROW * v["J"] / 2)
-        x0, x1, y0, y1 = self.limits
-        x0, x1 = min(x0, tip[0] - 0.1), max(x1, tip[0] + 0.1)
-        y0, y1 = min(y0, tip[1] - 0.1), max(y1, tip[1] + 0.1)
+        self.body.set_xy(moved_outline(outline, dv, t))
+        x0, x1, y0, y1 = self.view_box()
         if tuple(self.ax.get_xlim()) != (x0, x1) or tuple(self.ax.get_ylim()) != (y0, y1):
             self.ax.set_xlim(x0, x1)
             self.ax.set_ylim(y0, y1)
@@ -301,6 +290,63 @@ class ImpulseExplorer(Explorer):
         if held and near:
             self.grip.set_text(("P (grip)" if r.params["body"] == "bat" else "P (hinge)") + " ≈ pole if free")
         return self._readout(r, held)
+
+    def view_box(self) -> tuple[float, float, float, float]:
+        """The view: the fixed frame, grown (never shrunk) to hold the blow's point and arrow tip.
+
+        Returns
+        -------
+        tuple
+            ``(x0, x1, y0, y1)``.
+        """
+        v = self.values
+        tip = np.array([v["strike x"], v["strike y"]]) + unit_direction(v["strike angle"]) * (ARROW * v["J"] / 2)
+        x0, x1, y0, y1 = self.limits
+        x0, x1 = min(x0, tip[0] - 0.1), max(x1, tip[0] + 0.1)
+        y0, y1 = min(y0, tip[1] - 0.1), max(y1, tip[1] + 0.1)
+        return (x0, x1, y0, y1)
+
+    def mechanism_points(self):
+        """Points the view must hold: the handles and the body's outline at rest.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``(n, 2)``.
+        """
+        pts = super().mechanism_points()
+        st = self.state
+        return pts if st is None else np.vstack([pts, np.asarray(st.extra["outline"], dtype=float)])
+
+    def readout_of(self, r):
+        """The readout of the result ``r`` (ω, poles, the reaction impulse, apparent masses, energy).
+
+        Parameters
+        ----------
+        r : SceneResult
+            A state of :meth:`compute`.
+
+        Returns
+        -------
+        dict
+        """
+        return self._readout(r, r.params["support"] == "held")
+
+    def scene_picture(self, r, view=None):
+        """The state's picture, built natively (:func:`planargeo.draw.pictures.impulse.impulse_picture`).
+
+        Parameters
+        ----------
+        r : SceneResult
+            A state of :meth:`compute`.
+        view : (x0, x1, y0, y1), optional
+            The view the user zoomed or panned to (default: :meth:`view_box`).
+
+        Returns
+        -------
+        Picture
+        """
+        return impulse_picture(r, t=float(self.values["t"]), view=view or self.view_box(), size=self.figure_px)
 
     def _readout(self, r, held):
         q = r.quantities

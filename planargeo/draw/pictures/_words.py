@@ -6,8 +6,8 @@ exactly zero), never by a size threshold.
 
 Examples
 --------
->>> num(0.123456), num(-0.0), num(2.0)
-('0.1235', '0', '2')
+>>> num(0.123456), num(-0.0), num(2.0), num(5.8e-19)
+('0.1235', '0', '2', '0')
 >>> where([4.0, -2.0, 2.0]), where([0.0, 1.0, 0.0])
 ('at (1, 2) m', 'at infinity, direction (-1, 0)')
 >>> force([0.0, 2.0, 2.0]), force([0.0, 0.0, -0.5])
@@ -27,13 +27,15 @@ __all__ = ["num", "pair", "where", "force", "SUB"]
 SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
-def num(x: float, digits: int = 4) -> str:
-    """A number with ``digits`` significant digits, minus zero read as 0.
+def num(x: float, digits: int = 4, zero: float = 1e-9) -> str:
+    """A number with ``digits`` significant digits; round-off (``|x| < zero``) and minus zero read 0.
 
     Parameters
     ----------
     x : float
     digits : int
+    zero : float
+        Round-off level.
 
     Returns
     -------
@@ -42,6 +44,8 @@ def num(x: float, digits: int = 4) -> str:
     x = float(x)
     if not math.isfinite(x):
         return "∞" if x > 0 else "−∞" if x < 0 else "undefined"
+    if abs(x) < zero:
+        return "0"
     s = f"{x:.{digits}g}"
     return "0" if float(s) == 0.0 else s
 
@@ -101,3 +105,38 @@ def force(l, unit: str = "N") -> str:
         return "zero" if tz == 0.0 else f"a couple of {num(tz)} {unit}·m"
     foot = (fy * tz / (F * F), -fx * tz / (F * F))
     return f"{num(F)} {unit}, through {pair(foot)} m"
+
+
+def labelled_line(pic, id: str, l, text: str, *, anchor=None, side: float = 1.0, ahead: float = 0.0,
+                  **kw) -> None:
+    """A line (:meth:`Picture.line`) labelled beside it, clear of its arrow (a couple keeps its glyph's label).
+
+    Parameters
+    ----------
+    pic : Picture
+    id : str
+        The element's id.
+    l : array_like (3,)
+        The line ``[fx, fy, τ]``.
+    text : str
+        The label.
+    anchor : (float, float), optional
+        Where the sense arrow and the label sit (near it on the line).
+    side : float
+        +1: above the line (right of a vertical one); -1: below it.
+    ahead : float
+        The label this far (data units) from the anchor along the force's sense, clear of what
+        is drawn at the anchor.
+    **kw
+        Keyword arguments of :meth:`Picture.line`.
+    """
+    from planargeo.draw.pictures.common import label_line
+
+    l = np.asarray(l, dtype=float)
+    if l[0] == 0.0 and l[1] == 0.0:
+        pic.line(id, l, label=text, anchor=anchor, **kw)
+        return
+    pic.line(id, l, label="", anchor=anchor, **kw)
+    if anchor is not None and ahead:
+        anchor = np.asarray(anchor, dtype=float) + ahead * l[:2] / math.hypot(l[0], l[1])
+    label_line(pic, id, text, anchor=anchor, side=side)

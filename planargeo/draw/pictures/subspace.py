@@ -33,7 +33,7 @@ import math
 import numpy as np
 
 from planargeo.draw.picture import Picture
-from planargeo.draw.pictures._words import force, num, pair, where
+from planargeo.draw.pictures._words import force, labelled_line, num, pair, where
 from planargeo.draw.style import COLORS
 from planargeo.geometry.projective import is_ideal
 
@@ -141,24 +141,26 @@ def subspace_picture(st: dict, *, show: str, m: float, rho: float, view, size=(6
             label = name + (" = poles of s" if k == 2 and kind != "twin_prismatic" else "")
             extra = ("; with two allowed motions it is the line of their poles" if label != name else
                      "; the allowed motions are all translations" if k == 2 else "")
-            pic.line(f"R{j + 1}", R[:, j], role="reaction", width=1.4, symbol=name, label=label,
+            labelled_line(pic, f"R{j + 1}", R[:, j], label, role="reaction", width=1.4, symbol=name,
                      anchor=_along(R[:, j], p, 1.2 if j == 0 else -1.2),
                      desc=f"reaction space (6.1): a force the joint can take, sᵀR = 0: {force(R[:, j])}{extra}")
         for i in range(k):
             sub = _SUB[i] if k > 1 else ""
             ref = (-U[1, 0] / U[2, 0], U[0, 0] / U[2, 0]) if k == 2 and not bool(is_ideal(U[:, 0])) else COM
-            pic.line(f"T{i + 1}", T[:, i], role="wrench", width=1.4, dash=[8.0, 4.0], symbol=f"T{sub}",
+            labelled_line(pic, f"T{i + 1}", T[:, i], f"T{sub}", role="wrench", width=1.4, dash=[8.0, 4.0],
+                          symbol=f"T{sub}", side=-1.0 if i else 1.0,
                      anchor=_along(T[:, i], ref, 1.3 if i == 0 else -1.3),
                      desc=f"T = I s (sᵀIs)⁻¹ (6.36): the axis of percussion of s{sub}, an active force: "
                           f"{force(T[:, i])}")
-    pic.line("f", st["f"], role="wrench", symbol="f", anchor=fp,
+    labelled_line(pic, "f", st["f"], "f", role="wrench", symbol="f", anchor=fp, ahead=0.35,
              desc=f"the applied force on the body (5.56): {force(st['f'])}")
     if show == "wrench":
         if np.any(st["TQ"] != 0):
-            pic.line("TQ", st["TQ"], role="wrench", width=3.6, symbol="TQ", anchor=fp + np.array([0.3, -0.4]),
+            labelled_line(pic, "TQ", st["TQ"], "TQ", role="wrench", width=3.6, symbol="TQ", side=-1.0,
+                          anchor=fp + np.array([0.3, -0.4]),
                      desc=f"the part of f that accelerates the body along the joint (6.38): {force(st['TQ'])}")
         if np.any(st["Rmu"] != 0):
-            pic.line("Rmu", st["Rmu"], role="reaction", width=3.6, symbol="Rμ",
+            labelled_line(pic, "Rmu", st["Rmu"], "Rμ", role="reaction", width=3.6, symbol="Rμ",
                      anchor=p + np.array([-0.4, 0.5]),
                      desc=f"the part of f that goes into the joint (6.38): {force(st['Rmu'])}")
     if show == "twist":
