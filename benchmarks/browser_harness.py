@@ -154,3 +154,136 @@ def voila_command(notebook: Path, port: int | None = None, app_config: bool = Tr
 def launch_chromium(playwright):
     """Debian's headless chromium with the flags this closed network needs."""
     return playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+
+
+# --------------------------------------------------------------------------- the page renderer alone
+_HARNESS_HTML = """<!doctype html>
+<html><head><meta charset="utf-8"><title>planargeo canvas harness</title>
+<style>body {{ margin: 0; background: white; }} {css}</style></head>
+<body><div id="host"></div>
+<script type="module">
+import mod from "/canvas.js";
+let handlers = {{}}, data = {{}}, cleanup = null;
+window.sent = [];
+const model = {{
+  get: (k) => data[k],
+  set: (k, v) => {{ data[k] = v; }},
+  save_changes: () => {{}},
+  on: (ev, cb) => {{ (handlers[ev] = handlers[ev] || []).push(cb); }},
+  off: (ev, cb) => {{ handlers[ev] = (handlers[ev] || []).filter((f) => f !== cb); }},
+  send: (m) => {{ window.sent.push(m); }},
+}};
+function rel(n, r0) {{
+  const r = n.getBoundingClientRect();
+  return [r.left - r0.left, r.top - r0.top, r.right - r0.left, r.bottom - r0.top];
+}}
+function advance(t) {{
+  // the text's extent along the baseline from its characters' advances (no glyph ink),
+  // in the SVG's pixels: [left, right]
+  const n = t.getNumberOfChars();
+  if (!n) return null;
+  const a = t.getExtentOfChar(0), b = t.getExtentOfChar(n - 1), m = t.getCTM();
+  return [m.a * a.x + m.e, m.a * (b.x + b.width) + m.e];
+}}
+window.measure = () => {{
+  const svg = document.querySelector(".pg-canvas svg");
+  const r0 = svg.getBoundingClientRect();
+  const els = [...svg.querySelectorAll(".pg-el")].map((g) => ({{
+    id: g.dataset.id, role: g.dataset.role === undefined ? null : g.dataset.role,
+    nodes: [...g.children].map((n) => ({{
+      tag: n.tagName, box: rel(n, r0), text: n.tagName === "text" ? n.textContent : null,
+      advance: n.tagName === "text" ? advance(n) : null,
+      fill: n.getAttribute("fill"), stroke: n.getAttribute("stroke"),
+    }})),
+  }}));
+  const frame = svg.querySelector(".pg-frame");
+  return {{ size: [r0.width, r0.height], plot: frame ? rel(frame, r0) : null, elements: els,
+           handles: [...svg.querySelectorAll("circle.pg-handle")].map((c) => ({{
+             id: c.dataset.handle, box: rel(c, r0) }})) }};
+}};
+// a new view of a widget whose synced state is `state` (what a page gets when it opens)
+window.openView = (state) => {{
+  if (cleanup) cleanup();
+  handlers = {{}};
+  data = {{ ...state }};
+  window.sent = [];
+  const host = document.getElementById("host");
+  host.textContent = "";
+  cleanup = mod.render({{ model, el: host }}) || null;
+  return window.measure();
+}};
+// a message from the kernel (a picture's update, an ack): what the view then shows
+window.deliver = (msg) => {{
+  for (const cb of handlers["msg:custom"] || []) cb(msg, []);
+  return window.measure();
+}};
+window.harnessReady = true;
+</script></body></html>
+"""
+
+
+class CanvasHarness:
+    """The page renderer (``canvas.js``) alone, in a static page served from 127.0.0.1.
+
+    The page loads the package's own ``canvas.js`` with a tiny stand-in for the
+    anywidget model (``get``/``set``/``on``/``off``/``send``; what the page sends is
+    kept in ``window.sent``) and the widget's CSS, so that pictures can be drawn
+    without a kernel, many in one page, through the widget's own protocol:
+    ``window.openView(state)`` opens a view of a widget whose synced state is ``state``
+    (``PictureCanvas.get_state()``), ``window.deliver(msg)`` hands it a message from
+    the kernel (``{"type": "update", **canvas.last_update}``).  Both answer what the
+    page then shows (``window.measure()``): for every
+    element (``.pg-el``) its id, role and each SVG node's tag, box (pixels from the
+    SVG's top left), text (with its advance: left and right ends along the baseline)
+    and colours; the plot area's box; the handles' boxes.
+
+    Use as a context manager; ``url`` is the page's address.
+    """
+
+    def __init__(self):
+        import http.server
+        import threading
+
+        from planargeo.widgets.canvas import PictureCanvas
+
+        # anywidget turns the class's _esm / _css into file contents (str() is the text)
+        js = str(PictureCanvas._esm).encode()
+        html = _HARNESS_HTML.format(css=str(PictureCanvas._css)).encode()
+        files = {"/": (html, "text/html"), "/canvas.js": (js, "text/javascript")}
+
+        class Handler(http.server.BaseHTTPRequestHandler):
+            def do_GET(self):  # noqa: N802 - http.server's name
+                body, kind = files.get(self.path.split("?")[0], (None, None))
+                if body is None:
+                    self.send_error(404)
+                    return
+                self.send_response(200)
+                self.send_header("Content-Type", kind + "; charset=utf-8")
+                self.send_header("Content-Length", str(len(body)))
+                self.end_headers()
+                self.wfile.write(body)
+
+            def log_message(self, *args):
+                pass
+
+        self.server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), Handler)
+        self.url = f"http://127.0.0.1:{self.server.server_address[1]}/"
+        self.thread = threading.Thread(target=self.server.serve_forever, daemon=True)
+        self.thread.start()
+
+    def open(self, browser, width: int = 1200, height: int = 900):
+        """A new page of ``browser`` (playwright) showing the harness, ready for ``window.show``."""
+        page = browser.new_page(viewport={"width": width, "height": height})
+        page.goto(self.url)
+        page.wait_for_function("window.harnessReady === true", timeout=30_000)
+        return page
+
+    def close(self) -> None:
+        self.server.shutdown()
+        self.server.server_close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()

@@ -29,10 +29,18 @@ from planargeo.draw.style import LABEL_PT, TITLE_PT, get_ax, rc_context
 __all__ = ["draw_picture", "figure", "picture_bytes"]
 
 _MARKERS = {"o": "o", "D": "D", "s": "s"}
+#: Line width of a rotation glyph and of an arrow's shaft, the length of its head (pixels, as the page)
+_GLYPH_PX, _ARROW_PX, _HEAD_PX = 1.6, 1.9, 8.0
 
 
-def draw_picture(pic: dict, ax=None) -> None:
+def draw_picture(pic: dict, ax=None) -> list:
     """Draw the picture ``pic`` (:meth:`Picture.to_dict`) on the axes ``ax``.
+
+    Every artist's ``gid`` is its element's id (``"<id>:label"`` for a label), as in
+    the page, where each element is a group with that id.  Fixed pixel sizes (markers,
+    rotation glyphs, arrows, label offsets) have the page's geometry
+    (``planargeo/widgets/canvas.js``), so both renderers put everything at the same
+    pixel at the picture's size.
 
     Parameters
     ----------
@@ -40,6 +48,12 @@ def draw_picture(pic: dict, ax=None) -> None:
         A picture's data.
     ax : matplotlib.axes.Axes, optional
         Axes whose position already matches the picture's plot area (default: the current axes).
+
+    Returns
+    -------
+    list of (str, int, matplotlib.artist.Artist)
+        Each drawn artist with its element's id and the index of the part it draws
+        (a rotation glyph is two artists: the arc and its head).
     """
     ax = get_ax(ax)
     x0, x1, y0, y1 = pic["box"]
@@ -57,21 +71,26 @@ def draw_picture(pic: dict, ax=None) -> None:
         ax.set_axis_off()
     if pic.get("title"):
         ax.set_title(pic["title"], fontsize=TITLE_PT)
+    drawn = []
     for el in pic["elements"]:
         c, lw, z = el["color"], el["width"] / PX_PER_PT, el["z"]
         op = el.get("opacity", 1.0)
         dashes = None if not el.get("dash") else [v / PX_PER_PT / lw for v in el["dash"]]
-        for part in el["parts"]:
+        gid = el["id"]
+        for i, part in enumerate(el["parts"]):
             kind = part["p"]
+            arts = []
             if kind == "path":
                 xy = np.asarray(part["xy"], float).reshape(-1, 2)
                 if el.get("fill") or part.get("closed"):
-                    ax.add_patch(Polygon(xy, closed=part.get("closed", False), facecolor=el.get("fill") or "none",
-                                         edgecolor=c if c != "none" else "none", linewidth=lw,
-                                         alpha=el.get("alpha", 1.0) * op, zorder=z, gid=el["id"]))
+                    arts.append(ax.add_patch(Polygon(
+                        xy, closed=part.get("closed", False), facecolor=el.get("fill") or "none",
+                        edgecolor=c if c != "none" else "none", linewidth=lw,
+                        alpha=el.get("alpha", 1.0) * op, zorder=z, gid=gid)))
                 else:
-                    (ln,) = ax.plot(xy[:, 0], xy[:, 1], color=c, linewidth=lw, zorder=z, gid=el["id"],
+                    (ln,) = ax.plot(xy[:, 0], xy[:, 1], color=c, linewidth=lw, zorder=z, gid=gid,
                                     solid_capstyle="butt", alpha=op)
+                    arts.append(ln)
                     if dashes:
                         ln.set_dashes(dashes)
             elif kind == "ellipse":
@@ -79,32 +98,52 @@ def draw_picture(pic: dict, ax=None) -> None:
                 a, b, cc, d = part["m"]
                 (ln,) = ax.plot(part["x"] + a * np.cos(t) + b * np.sin(t),
                                 part["y"] + cc * np.cos(t) + d * np.sin(t), color=c, linewidth=lw,
-                                zorder=z, gid=el["id"], alpha=op)
+                                zorder=z, gid=gid, alpha=op)
+                arts.append(ln)
                 if dashes:
                     ln.set_dashes(dashes)
             elif kind == "mark":
-                ax.plot([part["x"]], [part["y"]], linestyle="none", marker=_MARKERS[part["shape"]],
-                        markersize=part["size"] / PX_PER_PT, color=c, markeredgecolor="white",
-                        markeredgewidth=0.6, zorder=z + 0.5, gid=el["id"], alpha=op)
+                arts += ax.plot([part["x"]], [part["y"]], linestyle="none",
+                                marker=_MARKERS[part["shape"]], markersize=part["size"] / PX_PER_PT,
+                                color=c, markeredgecolor="white", markeredgewidth=0.6, zorder=z + 0.5,
+                                gid=gid, alpha=op)
             elif kind == "glyph":
                 arc, head = arc_glyph(part["r"], part["ccw"])
-                ax.plot(part["x"] + arc[:, 0] / kx, part["y"] + arc[:, 1] / ky, color=c, linewidth=1.2,
-                        zorder=z, gid=el["id"], alpha=op)
-                ax.add_patch(Polygon(np.column_stack([part["x"] + head[:, 0] / kx,
-                                                      part["y"] + head[:, 1] / ky]),
-                                     closed=True, color=c, zorder=z, gid=el["id"], alpha=op))
+                arts += ax.plot(part["x"] + arc[:, 0] / kx, part["y"] + arc[:, 1] / ky, color=c,
+                                linewidth=_GLYPH_PX / PX_PER_PT, zorder=z, gid=gid, alpha=op)
+                arts.append(ax.add_patch(Polygon(np.column_stack([part["x"] + head[:, 0] / kx,
+                                                                  part["y"] + head[:, 1] / ky]),
+                                         closed=True, facecolor=c, edgecolor="none", zorder=z,
+                                         gid=gid, alpha=op)))
             elif kind == "arrow":
-                tip = (part["x"] + part["dx"] / kx, part["y"] + part["dy"] / ky)
-                ax.annotate("", xy=tip, xytext=(part["x"], part["y"]), zorder=z + 0.5,
-                            arrowprops=dict(arrowstyle="-|>", color=c, linewidth=1.4, alpha=op,
-                                            mutation_scale=9, shrinkA=0, shrinkB=0))
+                # the page's arrow (pixels, y up): a shaft to 0.8 of the head's length before the
+                # tip, and a head _HEAD_PX long and 0.7 of that wide
+                dx, dy = float(part["dx"]), float(part["dy"])
+                length = float(np.hypot(dx, dy)) or 1.0
+                u = np.array([dx, dy]) / length
+                nrm = np.array([-u[1], u[0]])
+                tip = np.array([dx, dy])
+                shaft = np.array([[0.0, 0.0], tip - u * 0.8 * _HEAD_PX])
+                head = np.array([tip, tip - u * _HEAD_PX + nrm * 0.35 * _HEAD_PX,
+                                 tip - u * _HEAD_PX - nrm * 0.35 * _HEAD_PX])
+                to_data = np.array([1.0 / kx, 1.0 / ky])
+                arts += ax.plot(part["x"] + shaft[:, 0] * to_data[0],
+                                part["y"] + shaft[:, 1] * to_data[1],
+                                color=c, linewidth=_ARROW_PX / PX_PER_PT, zorder=z + 0.5, gid=gid,
+                                alpha=op, solid_capstyle="butt")
+                arts.append(ax.add_patch(Polygon(np.array([part["x"], part["y"]]) + head * to_data,
+                                                 closed=True, facecolor=c, edgecolor="none",
+                                                 zorder=z + 0.5, gid=gid, alpha=op)))
             elif kind == "text" and not part.get("hidden"):
-                ax.annotate(part["text"], (part["x"], part["y"]),
-                            xytext=(part["dx"] / PX_PER_PT, part["dy"] / PX_PER_PT),
-                            textcoords="offset points", ha=part["ha"],
-                            va={"center": "center_baseline"}.get(part["va"], part["va"]),
-                            fontsize=LABEL_PT, color=c, zorder=z + 1, gid=el["id"] + ":label",
-                            annotation_clip=False, alpha=op)
+                arts.append(ax.annotate(
+                    part["text"], (part["x"], part["y"]),
+                    xytext=(part["dx"] / PX_PER_PT, part["dy"] / PX_PER_PT),
+                    textcoords="offset points", ha=part["ha"],
+                    va={"center": "center_baseline"}.get(part["va"], part["va"]),
+                    fontsize=LABEL_PT, color=c, zorder=z + 1, gid=gid + ":label",
+                    annotation_clip=False, alpha=op))
+            drawn += [(gid, i, a) for a in arts]
+    return drawn
 
 
 def figure(pic: dict) -> Figure:
