@@ -336,6 +336,39 @@ def _fitted(points, title: str, minimum: float = 1.0) -> SvgPanel:
     return SvgPanel((c[0] - half, c[0] + half, c[1] - half, c[1] + half), title)
 
 
+def _panel(title: str, fit=None, frame: str | None = None) -> SvgPanel:
+    """A panel with the origin marked: around the points ``fit`` (:func:`_fitted`), else the square of
+    half-width 1.5, first framed (dashed) in the colour ``frame``: the line at infinity."""
+    panel = SvgPanel((-1.5, 1.5, -1.5, 1.5), title) if fit is None else _fitted(fit, title)
+    if frame is not None:
+        panel.frame(frame)
+    panel.origin()
+    return panel
+
+
+def _done(panel: SvgPanel, *captions: str) -> str:
+    """The SVG document of ``panel`` with the caption lines ``captions``."""
+    for c in captions:
+        panel.caption(c)
+    return panel.svg()
+
+
+def _documented(f):
+    """``f`` with the end of its Parameters, its Returns and its Raises heading written in (``{label}``)."""
+    f.__doc__ = f.__doc__.replace("{label}", """label : str
+        Its name.
+
+    Returns
+    -------
+    str
+        An SVG document.
+
+    Raises
+    ------
+    InputError""")
+    return f
+
+
 def _xy(p: np.ndarray):
     """Euclidean ``(x, y)`` of a finite homogeneous point ``[y, -x, w]``."""
     return np.array([-p[1] / p[2], p[0] / p[2]])
@@ -380,6 +413,14 @@ def _draw_line(panel: SvgPanel, l, color: str, width: float = 2.0, dash=None, na
         panel.text(foot + 0.35 * panel.half * d, name, color, dx=10 * n[0], dy=-10 * n[1] - 4)
 
 
+def _pole(xy, title: str) -> SvgPanel:
+    """A panel around the finite point (or pole) ``xy``, drawn as a blue dot."""
+    panel = _panel(title, [xy])
+    panel.dot(xy, _BLUE)
+    return panel
+
+
+@_documented
 def point_svg(p, *, label: str = "P") -> str:
     """A point as a small SVG drawing: a dot and its coordinates, or an arrow to a point at infinity.
 
@@ -387,17 +428,7 @@ def point_svg(p, *, label: str = "P") -> str:
     ----------
     p : array_like (3,)
         Homogeneous point ``[y, -x, w]`` (thesis 5.49); ``w = 0``: at infinity.
-    label : str
-        Its name.
-
-    Returns
-    -------
-    str
-        An SVG document.
-
-    Raises
-    ------
-    InputError
+    {label}
         Not one finite non-zero (3,) vector.
 
     Examples
@@ -410,20 +441,16 @@ def point_svg(p, *, label: str = "P") -> str:
         raise InputError("p is the zero vector, which is no point")
     if p[2] == 0:
         d = _ideal_direction(p)
-        panel = SvgPanel((-1.5, 1.5, -1.5, 1.5), f"{label}: point at infinity")
-        panel.origin()
+        panel = _panel(f"{label}: point at infinity")
         _ideal_arrow(panel, d, _BLUE, f"{label} → ∞")
-        panel.caption(f"{label} at infinity, direction {_pair(d)}")
-        return panel.svg()
+        return _done(panel, f"{label} at infinity, direction {_pair(d)}")
     xy = _xy(p)
-    panel = _fitted([xy], f"{label} = {_pair(xy)}")
-    panel.origin()
-    panel.dot(xy, _BLUE)
+    panel = _pole(xy, f"{label} = {_pair(xy)}")
     panel.text(xy, label, _BLUE)
-    panel.caption(f"{label} = {_pair(xy)}")
-    return panel.svg()
+    return _done(panel, f"{label} = {_pair(xy)}")
 
 
+@_documented
 def line_svg(l, *, label: str = "l") -> str:
     """A line as a small SVG drawing: the directed line through the panel, or the line at infinity.
 
@@ -431,17 +458,7 @@ def line_svg(l, *, label: str = "l") -> str:
     ----------
     l : array_like (3,)
         ``[fx, fy, tz]`` (thesis 5.55); ``[0, 0, t]`` is the line at infinity.
-    label : str
-        Its name.
-
-    Returns
-    -------
-    str
-        An SVG document.
-
-    Raises
-    ------
-    InputError
+    {label}
         Not one finite non-zero (3,) vector.
 
     Examples
@@ -453,19 +470,14 @@ def line_svg(l, *, label: str = "l") -> str:
     if not np.any(l):
         raise InputError("l is the zero vector, which is no line")
     if l[0] == 0 and l[1] == 0:
-        panel = SvgPanel((-1.5, 1.5, -1.5, 1.5), f"{label}: the line at infinity")
-        panel.frame(_ORANGE)
-        panel.origin()
+        panel = _panel(f"{label}: the line at infinity", frame=_ORANGE)
         panel.text((0, 0.6), f"{label}: line at infinity", _ORANGE, dx=0, dy=0, anchor="middle")
-        panel.caption(f"{label} = line at infinity")
-        return panel.svg()
+        return _done(panel, f"{label} = line at infinity")
     foot, d = _line_parts(l)
-    panel = _fitted([foot], f"{label} through {_pair(foot)}")
-    panel.origin()
+    panel = _panel(f"{label} through {_pair(foot)}", [foot])
     _draw_line(panel, l, _ORANGE, name=label)
     panel.dot(foot, _ORANGE, r=2.5)
-    panel.caption(f"{label} through {_pair(foot)}, direction {_pair(d)}")
-    return panel.svg()
+    return _done(panel, f"{label} through {_pair(foot)}, direction {_pair(d)}")
 
 
 def _curve(C: np.ndarray, n: int = 96):
@@ -485,6 +497,7 @@ def _curve(C: np.ndarray, n: int = 96):
     return F, [u @ F.A.T + F.t for u in U]
 
 
+@_documented
 def conic_svg(C, *, label: str = "C") -> str:
     """A conic as a small SVG drawing; an imaginary one through its real partner (thesis 10.2.3).
 
@@ -499,17 +512,7 @@ def conic_svg(C, *, label: str = "C") -> str:
     ----------
     C : array_like (3, 3)
         A symmetric matrix.
-    label : str
-        Its name.
-
-    Returns
-    -------
-    str
-        An SVG document.
-
-    Raises
-    ------
-    InputError
+    {label}
         Not one finite (3, 3) matrix.
 
     Examples
@@ -523,17 +526,12 @@ def conic_svg(C, *, label: str = "C") -> str:
     C = _mat3(C, "C")
     t = classify(C)
     if t.reality == "degenerate":
-        panel = SvgPanel((-1.5, 1.5, -1.5, 1.5), f"{label}: degenerate conic")
-        panel.origin()
-        panel.caption(f"{label}: degenerate conic ({t.kind})")
-        return panel.svg()
+        return _done(_panel(f"{label}: degenerate conic"), f"{label}: degenerate conic ({t.kind})")
     real = t.reality == "real"
-    D = C if real else drawable_conic(C)
-    F, curves = _curve(D)
+    F, curves = _curve(C if real else drawable_conic(C))
     pts = np.vstack(curves) if F.kind == "ellipse" else np.vstack([F.t, F.t + F.A[:, 0],
                                                                     F.t - F.A[:, 0], F.t + F.A[:, 1]])
-    panel = _fitted(pts, f"{label}: {t}")
-    panel.origin()
+    panel = _panel(f"{label}: {t}", pts)
     for c in curves:
         panel.polyline(c, _BLACK, 1.6, None if real else "6 4")
     z = centre(C)
@@ -545,12 +543,10 @@ def conic_svg(C, *, label: str = "C") -> str:
     else:
         panel.text(F.t, label, _BLACK)
         where = f", vertex {_pair(F.t)}"
-    panel.caption(f"{label}: {t}{where}")
-    if not real:
-        panel.caption("dashed: real partner (10.2.3)")
-    return panel.svg()
+    return _done(panel, f"{label}: {t}{where}", *([] if real else ["dashed: real partner (10.2.3)"]))
 
 
+@_documented
 def twist_svg(v, *, label: str = "v") -> str:
     """A twist as a small SVG drawing: its pole with the sense of rotation, or a translation arrow.
 
@@ -563,17 +559,7 @@ def twist_svg(v, *, label: str = "v") -> str:
     ----------
     v : array_like (3,)
         ``[vx, vy, ω]`` at the origin.
-    label : str
-        Its name.
-
-    Returns
-    -------
-    str
-        An SVG document.
-
-    Raises
-    ------
-    InputError
+    {label}
         Not one finite (3,) vector.
 
     Examples
@@ -585,28 +571,19 @@ def twist_svg(v, *, label: str = "v") -> str:
     """
     v = _vec3(v, "v")
     if not np.any(v):
-        panel = SvgPanel((-1.5, 1.5, -1.5, 1.5), f"{label}: zero twist")
-        panel.origin()
-        panel.caption(f"{label} = 0: zero twist, no pole")
-        return panel.svg()
+        return _done(_panel(f"{label}: zero twist"), f"{label} = 0: zero twist, no pole")
     if v[2] == 0:
-        u = v[:2] / np.hypot(v[0], v[1])
-        panel = SvgPanel((-1.5, 1.5, -1.5, 1.5), f"{label}: translation")
-        panel.origin()
-        _ideal_arrow(panel, u, _BLUE, f"{label}")
-        panel.caption(f"{label}: translation, velocity {_pair(v[:2])}")
-        panel.caption("pole at infinity")
-        return panel.svg()
+        panel = _panel(f"{label}: translation")
+        _ideal_arrow(panel, v[:2] / np.hypot(v[0], v[1]), _BLUE, f"{label}")
+        return _done(panel, f"{label}: translation, velocity {_pair(v[:2])}", "pole at infinity")
     xy = _xy(v)
-    panel = _fitted([xy], f"{label}: rotation about {_pair(xy)}")
-    panel.origin()
-    panel.dot(xy, _BLUE)
+    panel = _pole(xy, f"{label}: rotation about {_pair(xy)}")
     panel.spin(xy, bool(v[2] > 0), _BLUE)
     panel.text(xy, label, _BLUE, dx=14, dy=-14)
-    panel.caption(f"{label}: pole {_pair(xy)}, ω = {_num(v[2])}")
-    return panel.svg()
+    return _done(panel, f"{label}: pole {_pair(xy)}, ω = {_num(v[2])}")
 
 
+@_documented
 def wrench_svg(f, *, label: str = "f") -> str:
     """A wrench as a small SVG drawing: its line of action with the force arrow, or a couple.
 
@@ -619,17 +596,7 @@ def wrench_svg(f, *, label: str = "f") -> str:
     ----------
     f : array_like (3,)
         ``[fx, fy, τz]`` at the origin.
-    label : str
-        Its name.
-
-    Returns
-    -------
-    str
-        An SVG document.
-
-    Raises
-    ------
-    InputError
+    {label}
         Not one finite (3,) vector.
 
     Examples
@@ -641,28 +608,20 @@ def wrench_svg(f, *, label: str = "f") -> str:
     """
     f = _vec3(f, "f")
     if not np.any(f):
-        panel = SvgPanel((-1.5, 1.5, -1.5, 1.5), f"{label}: zero wrench")
-        panel.origin()
-        panel.caption(f"{label} = 0: zero wrench, no line")
-        return panel.svg()
+        return _done(_panel(f"{label}: zero wrench"), f"{label} = 0: zero wrench, no line")
     if f[0] == 0 and f[1] == 0:
-        panel = SvgPanel((-1.5, 1.5, -1.5, 1.5), f"{label}: pure couple")
-        panel.frame(_ORANGE)
-        panel.origin()
+        panel = _panel(f"{label}: pure couple", frame=_ORANGE)
         panel.spin((0.0, -0.6), bool(f[2] > 0), _ORANGE, r=20)
         panel.text((0, 0.75), f"{label}: line at infinity", _ORANGE, dx=0, dy=0, anchor="middle")
-        panel.caption(f"{label}: pure couple, τ = {_num(f[2])}")
-        return panel.svg()
+        return _done(panel, f"{label}: pure couple, τ = {_num(f[2])}")
     foot, d = _line_parts(f)
-    F = float(np.hypot(f[0], f[1]))
-    panel = _fitted([foot], f"{label}: force on a line")
-    panel.origin()
+    panel = _panel(f"{label}: force on a line", [foot])
     _draw_line(panel, f, _ORANGE, name=label)
-    panel.caption(f"{label}: F = {_num(F)} through {_pair(foot)}")
-    panel.caption(f"direction {_pair(d)}")
-    return panel.svg()
+    return _done(panel, f"{label}: F = {_num(float(np.hypot(f[0], f[1])))} through {_pair(foot)}",
+                 f"direction {_pair(d)}")
 
 
+@_documented
 def inertia_svg(I, *, label: str = "I") -> str:
     """An inertia as a small SVG drawing: its circle of gyration about the centre of mass (10.2.3).
 
@@ -676,17 +635,7 @@ def inertia_svg(I, *, label: str = "I") -> str:
     ----------
     I : array_like (3, 3)
         A symmetric positive definite inertia.
-    label : str
-        Its name.
-
-    Returns
-    -------
-    str
-        An SVG document.
-
-    Raises
-    ------
-    InputError
+    {label}
         Not one finite (3, 3) matrix.
 
     Examples
@@ -706,8 +655,7 @@ def inertia_svg(I, *, label: str = "I") -> str:
     D = drawable_conic(I)
     F, curves = _curve(D)
     c = _xy(centre(I))
-    panel = _fitted(np.vstack(curves), f"{label}: inertia")
-    panel.origin()
+    panel = _panel(f"{label}: inertia", np.vstack(curves))
     for cv in curves:
         panel.polyline(cv, _BLACK, 1.5, "6 4")
     panel.dot(c, _BLACK, r=3.0)
@@ -719,5 +667,4 @@ def inertia_svg(I, *, label: str = "I") -> str:
         panel.caption(f"{label}: m = {_num(m)}, c = {_pair(c)}, ρ = {_num(rho)}")
     else:
         panel.caption(f"{label}: centre {_pair(c)}")
-    panel.caption("dashed: gyration conic (10.2.3)")
-    return panel.svg()
+    return _done(panel, "dashed: gyration conic (10.2.3)")
