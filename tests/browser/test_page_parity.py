@@ -336,7 +336,16 @@ def test_page_and_matplotlib_draw_the_same(harness_page, name):
     assert not failures, f"{name}:\n" + "\n".join(failures)
 
 
-@pytest.mark.parametrize("name", _explorers())
+#: explorers whose labels overlap in the page today (strict xfails: the entry goes when fixed)
+LABELS_NOT_YET = {
+    "TreeExplorer": "with the velocity poles shown, the labels v₁ and f₁ overlap by 8 x 14 px",
+    "ImpulseExplorer": "with the key shown, its rows (fixed texts) run over the label ĵᵣ (grip) by 42 x 7 px",
+}
+
+
+@pytest.mark.parametrize("name", [
+    pytest.param(n, marks=pytest.mark.xfail(strict=True, reason=LABELS_NOT_YET[n])) if n in LABELS_NOT_YET
+    else n for n in _explorers()])
 def test_no_two_labels_overlap_in_the_page(harness_page, name):
     failures = []
     for state, _pic, page in _drawn(harness_page, name):
