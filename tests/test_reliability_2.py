@@ -61,3 +61,72 @@ def test_the_kernel_cache_is_filled_again_when_a_kernel_source_changes(tmp_path)
     assert _install(tmp_path, log) == []                       # and that touch asks for nothing more
     _newer(tmp_path / "pyproject.toml")
     assert _install(tmp_path, log) == ["pip", "warm"]          # new dependencies: install, then the cache
+
+
+# --------------------------------------------------------------------------- conics: decompositions at any scale
+import warnings  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+from planargeo.errors import DegenerateGeometryError, NumericOverflowError  # noqa: E402
+from planargeo.geometry import conics  # noqa: E402
+
+
+def _strict(fn, *args, **kw):
+    """``fn(*args, **kw)`` with every numpy warning an error (underflow to a subnormal is no defect)."""
+    with warnings.catch_warnings(), np.errstate(divide="warn", over="warn", invalid="warn", under="ignore"):
+        warnings.simplefilter("error")
+        return fn(*args, **kw)
+
+
+@pytest.mark.parametrize("k", [1e300, 1e-300, 1.0])
+def test_decompose_line_of_a_huge_or_tiny_base_is_computed(k):
+    """``L = Σ uᵢ C Qᵢ`` (5.43): scaling the first base point by k divides its component by k; the other two stay.
+    Reference: the decomposition of ``P = (1, 2, 3)`` on the unit base, by hand ``(-2, -1, 3)`` (the docstring)."""
+    C = 1e10 * np.diag([1.0, 2.0, 4.0])                        # C Q1 is 1e310 before scaling: it overflowed
+    L = C @ np.array([1.0, 2.0, 3.0])
+    u = _strict(conics.decompose_line, C, L, [k, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 1.0])
+    np.testing.assert_allclose(u, [-2.0 / k, -1.0, 3.0], rtol=1e-15)
+    C0 = np.diag([1.0, 2.0, 4.0])
+    u = _strict(conics.decompose_line, C0 * k, C0 @ [1.0, 2.0, 3.0] * k, [1.0, 0.0, 0.0], [0.0, 1.0, 0.0],
+                [1.0, 1.0, 1.0])
+    np.testing.assert_allclose(u, [-2.0, -1.0, 3.0], rtol=1e-15)   # degree 0 in (C, L) together
+    u = _strict(conics.decompose_point, np.array([1.0, 2.0, 3.0]) * k, [1.0, 0.0, 0.0], [0.0, k, 0.0],
+                [1.0, 1.0, 1.0])
+    np.testing.assert_allclose(u, [-2.0 * k, -1.0, 3.0 * k], rtol=1e-15)
+
+
+def test_decompositions_refuse_in_their_own_words():
+    """A base with a repeated point at rtol = 0 (LAPACK's 'Singular matrix' before), a nearly dependent one that
+    gave ±inf, and components beyond double precision."""
+    with pytest.raises(DegenerateGeometryError, match="Q1, Q2, Q3"):
+        _strict(conics.decompose_point, [1.0, 2.0, 3.0], [8.0, 0.016, 0.5], [0.1, -0.6, 5.8], [8.0, 0.016, 0.5],
+                rtol=0.0)
+    C = np.array([[0.0, 1.4197e-300, 5e-306], [1.4197e-300, 1.0, 0.0], [5e-306, 0.0, 1.0]])
+    with pytest.raises(DegenerateGeometryError, match="C Q1, C Q2, C Q3"):
+        _strict(conics.decompose_line, C, [-2.2251e-308, 2.8395, -9.1357e-137], [0.0, 0.0, 1.0],
+                [-2.2251e-308, -9.1357e-137, 1.0], [0.0, 0.0, 1.0], rtol=0.0)
+    with pytest.raises(NumericOverflowError, match="decompose_point"):     # u1 = 1e300 / 1e-300
+        _strict(conics.decompose_point, [1e300, 0.0, 0.0], [1e-300, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0])
+
+
+def test_special_decompositions_broadcast_and_scale():
+    """A batch of base points against single ones (a ValueError from np.stack before), and a base point of
+    1e300 (its component divided by 1e300, the others unchanged); reference: the points rebuilt from their
+    components (5.44-5.46: P = Σ uᵢ Qᵢ, L = Σ uᵢ C Qᵢ)."""
+    C = conics.conic_circle([0.0, 0.0], 1.0)
+    Q1, Q2, Q3 = conics.special_base(C, [0.0, -2.0, 1.0])
+    P = np.array([0.3, 0.1, 1.0])
+    Q2b = np.stack([Q2, 3.0 * Q2])
+    u = _strict(conics.decompose_point_special, C, P, Q1, Q2b, Q3)
+    assert u.shape == (2, 3)
+    for ui, q2 in zip(u, Q2b):
+        np.testing.assert_allclose(ui[0] * Q1 + ui[1] * q2 + ui[2] * Q3, P, atol=1e-14)
+    u = _strict(conics.decompose_line_special, C, C @ P, Q1, Q2b, Q3)
+    assert u.shape == (2, 3)
+    for ui, q2 in zip(u, Q2b):
+        np.testing.assert_allclose(ui[0] * (C @ Q1) + ui[1] * (C @ q2) + ui[2] * (C @ Q3), C @ P, atol=1e-14)
+    ref = conics.decompose_point_special(C, P, Q1, Q2, Q3)
+    for fn, x in ((conics.decompose_point_special, P), (conics.decompose_line_special, C @ P)):
+        u = _strict(fn, C, x, Q1 * 1e300, Q2, Q3)
+        np.testing.assert_allclose(u, [ref[0] / 1e300, ref[1], ref[2]], rtol=1e-14)

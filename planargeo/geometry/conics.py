@@ -810,11 +810,48 @@ def _base(Q1, Q2, Q3) -> np.ndarray:
     return np.stack(np.broadcast_arrays(*Q), axis=-1)
 
 
+def _pow2(a: np.ndarray, core: int = 1) -> tuple[np.ndarray, np.ndarray]:
+    """``a`` with each element (a vector, ``core=2``: a matrix) whose largest |entry| lies outside
+    ``(1e-90, 1e90)`` scaled by ``2^-e`` to a largest entry in ``[0.5, 1)``, and the integer ``e``
+    per element (0 where untouched: every ordinary element keeps its bits).
+
+    Scaling by a power of two is exact, so a homogeneous element keeps its meaning: products of three
+    such entries (``Q C Q``) neither over- nor underflow, and a result is scaled back by ``ldexp``.
+    """
+    with np.errstate(invalid="ignore"):
+        m = np.abs(a).max(axis=tuple(range(-core, 0)))
+        keep = ((m > 1e-90) & (m < 1e90)) | (m == 0) | ~np.isfinite(m)
+    e = np.where(keep, 0, np.frexp(m)[1])
+    if not e.any():
+        return a, e
+    return np.ldexp(a, -e.reshape(e.shape + (1,) * core)), e
+
+
+def _back(u: np.ndarray, e: np.ndarray, what: str, culprits: str) -> np.ndarray:
+    """Components ``u`` (..., 3) computed on scaled arguments, times ``2^e`` (exact), or a
+    :class:`NumericOverflowError` naming ``culprits`` when the true components lie beyond double precision."""
+    if np.any(e):
+        with np.errstate(over="ignore", under="ignore"):
+            u = np.ldexp(u, np.broadcast_to(e, u.shape))
+    return check_overflow(u, what, culprits)
+
+
 def _solve_basis(Mcols, v, name: str, rtol: float):
+    """The solution ``u`` of ``Mcols u = v``; a numerically singular base (by ``rtol``, or one LAPACK
+    cannot factor, or one that gives a non-finite ``u`` at ``rtol = 0``) is a :class:`DegenerateGeometryError`."""
     batch_shape(**{name: (Mcols, 2), "the decomposed element": (v, 1)})
     _check_invertible(Mcols, name, "singular: the three base elements are dependent (no basis)", rtol)
     Mcols, v = np.broadcast_arrays(Mcols, v[..., None, :])
-    return np.linalg.solve(Mcols, v[..., 0, :][..., None])[..., 0]
+    try:
+        with np.errstate(all="ignore"):
+            u = np.linalg.solve(Mcols, v[..., 0, :][..., None])[..., 0]
+    except np.linalg.LinAlgError:
+        u = np.full(v.shape[:-2] + (3,), np.nan)
+    if not np.isfinite(u).all():
+        raise DegenerateGeometryError(f"{name} is singular: the three base elements are dependent (no basis)"
+                                      f"{_first_index(~np.isfinite(u).all(axis=-1))} (it cannot be solved "
+                                      "in double precision)")
+    return u
 
 
 def decompose_point(P, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
@@ -844,9 +881,13 @@ def decompose_point(P, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     >>> decompose_point([1.0, 2.0, 3.0], [1.0, 0, 0], [0, 1.0, 0], [1.0, 1.0, 1.0])
     array([-2., -1.,  3.])
     """
-    P = as_vec3(P, "P")
+    P, eP = _pow2(as_vec3(P, "P"))
+    Q1, Q2, Q3 = (as_vec3(x, n) for x, n in ((Q1, "Q1"), (Q2, "Q2"), (Q3, "Q3")))
+    (Q1, e1), (Q2, e2), (Q3, e3) = _pow2(Q1), _pow2(Q2), _pow2(Q3)
     Q = _base(Q1, Q2, Q3)
-    return _solve_basis(Q, P, "[Q1, Q2, Q3]", rtol)
+    u = _solve_basis(Q, P, "[Q1, Q2, Q3]", rtol)          # u_i = 2^(eP - ei) times that of the scaled ones
+    return _back(u, np.stack(np.broadcast_arrays(eP - e1, eP - e2, eP - e3), axis=-1), "decompose_point",
+                 "P or the base too large or too small")
 
 
 def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
@@ -882,10 +923,18 @@ def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     >>> decompose_line(C, C @ [1.0, 2.0, 3.0], [1.0, 0, 0], [0, 1.0, 0], [1.0, 1.0, 1.0])
     array([-2., -1.,  3.])
     """
-    C = _conic(C)
-    L = as_vec3(L, "L")
+    C, eC = _pow2(_conic(C), 2)
+    L, eL = _pow2(as_vec3(L, "L"))
+    Q1, Q2, Q3 = (as_vec3(x, n) for x, n in ((Q1, "Q1"), (Q2, "Q2"), (Q3, "Q3")))
+    (Q1, e1), (Q2, e2), (Q3, e3) = _pow2(Q1), _pow2(Q2), _pow2(Q3)
     Q = _base(Q1, Q2, Q3)
-    return _solve_basis(C @ Q, L, "[C Q1, C Q2, C Q3]", rtol)
+    batch_shape(C=(C, 2), L=(L, 1), Q=(Q, 2))
+    with np.errstate(under="ignore"):
+        CQ = C @ Q                                        # entries below 1 times entries below 1: no overflow
+    u = _solve_basis(CQ, L, "[C Q1, C Q2, C Q3]", rtol)   # u_i = 2^(eL - eC - ei) times the scaled one's
+    d = eL - eC
+    return _back(u, np.stack(np.broadcast_arrays(d - e1, d - e2, d - e3), axis=-1), "decompose_line",
+                 "L, C or the base too large or too small")
 
 
 @overflow_checked("C or Q1")
@@ -966,9 +1015,13 @@ def decompose_point_special(C, P, Q1, Q2, Q3) -> np.ndarray:
     C = _conic(C)
     P, Q1, Q2, Q3 = (as_vec3(x, n) for x, n in ((P, "P"), (Q1, "Q1"), (Q2, "Q2"), (Q3, "Q3")))
     batch_shape(C=(C, 2), P=(P, 1), Q1=(Q1, 1), Q2=(Q2, 1), Q3=(Q3, 1))
-    CP = _mv(C, P)
-    return _special(np.einsum("...i,...i->...", Q1, CP), np.einsum("...i,...i->...", Q3, CP),
-                    np.einsum("...i,...i->...", Q2, CP), C, Q1, Q2, Q3, "decompose_point_special")
+    (C, _), (P, eP) = _pow2(C, 2), _pow2(P)               # u is of degree 0 in C, 1 in P, -1 in its own Qi
+    (Q1, e1), (Q2, e2), (Q3, e3) = _pow2(Q1), _pow2(Q2), _pow2(Q3)
+    with np.errstate(under="ignore"):
+        CP = _mv(C, P)
+        n = (np.einsum("...i,...i->...", Q1, CP), np.einsum("...i,...i->...", Q3, CP),
+             np.einsum("...i,...i->...", Q2, CP))
+    return _special(*n, C, Q1, Q2, Q3, "decompose_point_special", (eP - e1, eP - e2, eP - e3))
 
 
 def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
@@ -1008,12 +1061,18 @@ def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
     C = _conic(C)
     L, Q1, Q2, Q3 = (as_vec3(x, n) for x, n in ((L, "L"), (Q1, "Q1"), (Q2, "Q2"), (Q3, "Q3")))
     batch_shape(C=(C, 2), L=(L, 1), Q1=(Q1, 1), Q2=(Q2, 1), Q3=(Q3, 1))
+    (C, eC), (L, eL) = _pow2(C, 2), _pow2(L)              # u is of degree -1 in C, 1 in L, -1 in its own Qi
+    (Q1, e1), (Q2, e2), (Q3, e3) = _pow2(Q1), _pow2(Q2), _pow2(Q3)
     dot = lambda a, b: np.einsum("...i,...i->...", a, b)  # noqa: E731
-    return _special(dot(Q1, L), dot(Q3, L), dot(Q2, L), C, Q1, Q2, Q3, "decompose_line_special")
+    with np.errstate(under="ignore"):
+        n = dot(Q1, L), dot(Q3, L), dot(Q2, L)
+    d = eL - eC
+    return _special(*n, C, Q1, Q2, Q3, "decompose_line_special", (d - e1, d - e2, d - e3))
 
 
-def _special(n1, n2, n3, C, Q1, Q2, Q3, what: str) -> np.ndarray:
-    """``[n1 / Q1CQ1, n2 / Q3CQ2, n3 / Q2CQ3]`` (5.44-5.46), refusing a base that is not special."""
+def _special(n1, n2, n3, C, Q1, Q2, Q3, what: str, e=(0, 0, 0)) -> np.ndarray:
+    """``[n1 / Q1CQ1, n2 / Q3CQ2, n3 / Q2CQ3] · 2^e`` (5.44-5.46; ``e``: the exponents of the scaled
+    arguments, :func:`_pow2`), refusing a base that is not special."""
     with np.errstate(all="ignore"):
         den = [_quad(Q1, C, Q1), _quad(Q3, C, Q2), _quad(Q2, C, Q3)]
         zero = [np.any(d == 0) for d in den]
@@ -1021,8 +1080,8 @@ def _special(n1, n2, n3, C, Q1, Q2, Q3, what: str) -> np.ndarray:
             name = ("Q1 C Q1", "Q3 C Q2", "Q2 C Q3")[zero.index(True)]
             raise DegenerateGeometryError(f"{what}: {name} = 0, so Q1, Q2, Q3 are not a special base of C "
                                           "(see special_base)")
-        u = np.stack([n1 / den[0], n2 / den[1], n3 / den[2]], axis=-1)
-    return check_overflow(u, what, "the components")
+        u = np.stack(np.broadcast_arrays(n1 / den[0], n2 / den[1], n3 / den[2]), axis=-1)
+    return _back(u, np.stack(np.broadcast_arrays(*e), axis=-1), what, "the components")
 
 
 # --------------------------------------------------------------------------- drawing support
