@@ -4,7 +4,20 @@ import math
 import numpy as np
 import pytest
 
+from picture_checks import elements, overlapping_labels, parts, undescribed
 from planargeo.widgets.slider_crank import SliderCrankExplorer
+
+
+def figure_message(ex) -> str:
+    """The refusal said on the picture ("" for none)."""
+    el = elements(ex.picture()).get("figure message")
+    return "" if el is None else el["parts"][0]["text"]
+
+
+def arrow_direction(ex, sym):
+    """The pixel direction of an edge arrow (a pole at infinity) or None."""
+    arrows = parts(elements(ex.picture())[sym], "arrow")
+    return None if not arrows else np.array([arrows[0]["dx"], arrows[0]["dy"]])
 
 R, T = 2.29, 0.5
 M = (0.40, 0.15, 0.30)
@@ -33,11 +46,10 @@ def gen_mass(psi, l, h=1e-5):
 @pytest.fixture
 def ex():
     """The explorer; the state each test leaves it in must be legible (issue #13)."""
-    from planargeo.draw.layout import legibility_problems
-
     e = SliderCrankExplorer(display="agg")
     yield e
-    assert legibility_problems(e.fig) == []
+    pic = e.picture()
+    assert overlapping_labels(pic) + undescribed(pic) == []
 
 
 def test_thesis_state(ex):
@@ -59,8 +71,11 @@ def test_constant_speed_kinematics(ex, deg):
     assert r["piston speed"] == pytest.approx(hp * w, rel=1e-6)
     assert r["piston acceleration"] == pytest.approx(hpp * w * w, rel=1e-4)
     # the piston only slides: its acceleration is a pure vertical translation (ideal point)
-    a3 = ex.a_art[2].get_point()
+    a3 = ex.state["a"][2]
     assert a3[0] == pytest.approx(0.0, abs=1e-9) and a3[2] == pytest.approx(0.0, abs=1e-9)
+    ex.set(**{"acceleration poles": True})                # drawn as an arrow at the edge, along y
+    d = arrow_direction(ex, "a₃")
+    assert abs(d[0]) < 1e-9 * abs(d[1]) and "at ∞" in parts(elements(ex.picture())["a₃"], "text")[0]["text"]
 
 
 def test_free_crank_matches_lagrange(ex):
@@ -72,17 +87,19 @@ def test_free_crank_matches_lagrange(ex):
 
 
 def test_contact_force_line_is_drawn(ex):
-    F = ex.glyphs["F_1"].wrench                        # -F₃ on the piston (9.61)
+    F = ex.state["reactions"]["F_1"].wrench            # -F₃ on the piston (9.61)
     assert F[1] == pytest.approx(0.0, abs=1e-12)      # the slider only pushes sideways
     assert ex.readout_values["|F₃| slider bearing"] == pytest.approx(abs(F[0]))
-    assert ex.glyphs["F_1"].text.get_text() == "F₃"
-    ex.fig.canvas.draw()
+    el = elements(ex.picture())["F₃"]
+    (a,) = parts(el, "arrow")                         # drawn sideways, with its sense
+    assert abs(a["dy"]) < 1e-9 and np.sign(a["dx"]) == np.sign(F[0])
+    assert parts(el, "text")[0]["text"] == "F₃" and "bearing force" in el["desc"]
 
 
 def test_dead_centre_and_impossible_configurations(ex):
     ex.controls["crank angle (deg)"].value = 90.0
     assert "dead centre" in ex.message and ex.readout_values["configuration"] == "top dead centre"
-    assert ex._msg_text.get_visible()
+    assert "dead centre" in figure_message(ex)
     ex.set(**{"rod length": 2.29, "crank angle (deg)": 0.0})   # rod along the horizontal
     assert "singular" in ex.message
     assert "piston pin on the crank pivot" in ex.message       # folded: l = r at ψ = 0
@@ -90,7 +107,7 @@ def test_dead_centre_and_impossible_configurations(ex):
     ex.controls["crank angle (deg)"].value = 0.0
     good = dict(ex.readout_values)
     ex.controls["rod length"].value = 2.0                      # rod cannot reach
-    assert "rod too short" in ex.message and "rod too short" in ex._msg_text.get_text()
+    assert "rod too short" in ex.message and "rod too short" in figure_message(ex)
     assert ex.readout_values == good and ex.values["rod length"] == 5.0
     ex.controls["rod length"].value = 4.0
     assert ex.message == ""
@@ -107,12 +124,14 @@ def test_crank_moves_reuse_the_model_and_pole_toggles_only_redraw(ex):
     # the drawn velocity poles are the link twists of the current state: the crank turns about
     # the origin at the crank speed, the piston only slides (an ideal point) at h'(ψ) ψ̇
     psi, w, e = math.radians(40.0), 20.0, 1e-5
-    assert ex.v_art[0].get_point() == pytest.approx([0.0, 0.0, w], abs=1e-12)
-    v3 = ex.v_art[2].get_point()
+    assert ex.state["v"][0] == pytest.approx([0.0, 0.0, w], abs=1e-12)
+    els = elements(ex.picture())
+    assert parts(els["v₁"], "mark")[0]["x"] == 0.0 and parts(els["v₁"], "mark")[0]["y"] == 0.0
+    v3 = ex.state["v"][2]
     hp = (height(psi + e, 5.0) - height(psi - e, 5.0)) / (2 * e)
     assert v3 == pytest.approx([0.0, hp * w, 0.0], abs=1e-6)
     ex.controls["acceleration poles"].value = False
-    assert ex.n_computes == n and not any(a.get_visible() for a in ex.a_art)
+    assert ex.n_computes == n and not {"a₁", "a₂", "a₃"} & set(elements(ex.picture()))
     ex.controls["rod length"].value = 4.0                       # a new model
     assert ex.n_computes == n + 1 and len(ex._models) == 2
     assert ex.readout_values["piston height h"] == pytest.approx(height(psi, 4.0), rel=1e-9)
@@ -145,7 +164,7 @@ def test_folded_dead_centre_reports_the_contact_matrix(ex):
     ex.set(**{"rod length": 2.29, "crank angle (deg)": 180.0})
     assert "dead centre with the piston pin on the crank pivot" in ex.message
     assert "contact matrix" in ex.message and "singular" in ex.message
-    assert "piston pin is on the crank pivot" in " ".join(ex._msg_text.get_text().split())
+    assert "piston pin is on the crank pivot" in " ".join(figure_message(ex).split())
     cond = float(re.search(r"condition number ([0-9.e+]+)", ex.message).group(1))
     assert cond > 1e12
     with pytest.raises(SingularConfigurationError) as err:

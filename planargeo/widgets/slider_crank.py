@@ -40,7 +40,8 @@ from matplotlib.patches import FancyArrowPatch, Rectangle
 from planargeo import scenes
 from planargeo.draw.artists import PointArtist, point_xy
 from planargeo.draw.mechanism import draw_ground
-from planargeo.draw.style import COLORS, OKABE_ITO
+from planargeo.draw.pictures.slider_crank import CONTACT_COLOR, slider_crank_picture, slider_crank_view
+from planargeo.draw.style import COLORS
 from planargeo.errors import InputError, SceneError
 from planargeo.scenes.slider_crank import (DEAD_CENTRE_TOL, dead_centre_at, slider_crank_advance,
                                            slider_crank_model, slider_crank_reactions, slider_crank_solve)
@@ -51,8 +52,6 @@ __all__ = ["SliderCrankExplorer"]
 
 #: Font size (points) of the labels drawn on the figure (12.5 px at the explorers' 100 dpi).
 LABEL_PT = 9.0
-#: Colour of contact (loop-closing) forces, apart from the joints' reaction green (Okabe-Ito purple).
-CONTACT_COLOR = OKABE_ITO["purple"]
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 #: controls that set the state at t = 0 (a change starts the time again)
 INITIAL = ("crank angle (deg)", "crank speed", "drive", "rod length", "gravity")
@@ -698,10 +697,64 @@ class SliderCrankExplorer(Explorer):
             for i, art in enumerate(arts):
                 items.append((art, point_xy(pts[i]), f"{name}{i + 1}".translate(_SUB)))
         place_labels(ax, items, obstacles, covered=key_box(ax, bool(vals.get("key"))))
+        return self.readout_of(st)
+
+    def banner_of(self, st) -> str:
+        """The dead centre named on the picture: passing one now, or at one ("" between them).
+
+        Parameters
+        ----------
+        st : dict
+            A state of :meth:`compute`.
+
+        Returns
+        -------
+        str
+        """
         passed, now = st["passed"], st["time"]
         recent = bool(passed) and now - passed[-1][0] < 0.02
         conf = st["configuration"]
-        self.banner.set_text(f"passing {passed[-1][1]}" if recent else (f"at {conf}" if conf else ""))
+        return f"passing {passed[-1][1]}" if recent else (f"at {conf}" if conf else "")
+
+    def scene_picture(self, st, view=None):
+        """The state's picture built natively (:func:`planargeo.draw.pictures.slider_crank.slider_crank_picture`).
+
+        Parameters
+        ----------
+        st : dict
+            A state of :meth:`compute`.
+        view : (x0, x1, y0, y1), optional
+            The view the user zoomed or panned to (default: :func:`slider_crank_view`).
+
+        Returns
+        -------
+        Picture
+        """
+        vals = self.values
+        overlays = {k: bool(vals[k]) for k in ("reaction forces", "velocity poles", "acceleration poles")}
+        return slider_crank_picture(st["sol"].data.pose, r=st["r"], t=st["t"], q=st["q"], reactions=st["reactions"],
+                                    v=st["v"], a=st["a"], h=st["h"], overlays=overlays,
+                                    view=view or slider_crank_view(st["r"], st["l"], st["t"]),
+                                    banner=self.banner_of(st), size=self.figure_px)
+
+    def readout_of(self, st):
+        """The readout of the state ``st``: time, angles, piston, the pin and bearing forces, energy, drift.
+
+        Parameters
+        ----------
+        st : dict
+            A state of :meth:`compute`.
+
+        Returns
+        -------
+        dict
+        """
+        sol = st["sol"]
+        vel, acc = st["v"], st["a"]
+        reactions = st["reactions"]
+        force = {k: float(np.hypot(x.wrench[0], x.wrench[1])) for k, x in reactions.items()}
+        passed, now = st["passed"], st["time"]
+        conf = st["configuration"]
         qq, qdd = st["q"], sol.qdd
         E0 = st["E0"]
         driven = st["drive"] == "constant-speed"

@@ -1,0 +1,177 @@
+"""The picture of the slider-crank (thesis 9.3-9.6, 9.61, Fig 9.3), built natively: links, piston, pin forces.
+
+From one solved state of the closed loop:
+
+* the ground under the crank pivot, the slide (two dashed lines), the crank ``1``, the
+  rod ``2`` and the piston ``3``, the three pins, the joint angles ``ψ``, ``θ``, ``φ`` (9.6);
+* every pin and bearing force of the loop (9.61): ``f₁`` at the crank pivot, ``f₂`` at
+  the crank pin, ``f₃`` at the wrist pin and ``F₃`` at the slider bearing (9.71), each a
+  stretch of its line of action through (or beside) its joint with an arrow to scale (the
+  largest 2.4 m long) and, when it has a moment about its joint, a dotted lever arm;
+* optionally the velocity poles ``vᵢ`` (4.5) and acceleration poles ``aᵢ`` (4.6);
+* a scale bar, and a banner at a dead centre.
+
+Force labels sit at the arrows' heads (at least 0.9 m from their joints), the joint angles a little way along their links,
+so that the labels spread out instead of piling up at the pins.
+
+Examples
+--------
+>>> from planargeo.widgets.slider_crank import SliderCrankExplorer
+>>> ex = SliderCrankExplorer(display="agg")
+>>> d = ex.picture()
+>>> sorted(e["symbol"] for e in d["elements"] if e["role"] in ("reaction", "momentum"))
+['F₃', 'f₁', 'f₂', 'f₃']
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo.draw.geometry import point_xy
+from planargeo.draw.picture import PX_PER_PT, Picture
+from planargeo.draw.pictures.kit import force, ground, label_at, scale_bar
+from planargeo.draw.style import COLORS, OKABE_ITO
+
+__all__ = ["slider_crank_picture", "slider_crank_view", "CONTACT_COLOR", "REACTIONS", "FORCE_LENGTH"]
+
+#: colour of contact (loop-closing) forces, apart from the joints' reaction green (Okabe-Ito purple)
+CONTACT_COLOR = OKABE_ITO["purple"]
+#: the reactions drawn: (key of the state's reactions, symbol, meaning, equation, colour)
+REACTIONS = (
+    ("f_1", "f₁", "pin force at the crank pivot, on the crank from the ground", "9.61", COLORS["reaction"]),
+    ("f_2", "f₂", "pin force at the crank pin, on the rod from the crank", "9.61", COLORS["reaction"]),
+    ("f_3", "f₃", "pin force at the wrist pin, on the piston from the rod", "9.61", COLORS["reaction"]),
+    ("F_1", "F₃", "bearing force of the slide on the piston", "9.71", CONTACT_COLOR),
+)
+#: length (m) of the largest force's arrow
+FORCE_LENGTH = 2.4
+#: half width of the slide (m)
+BORE = 0.35
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+_BODIES = ("crank", "rod", "piston")
+
+
+def slider_crank_view(r: float, l: float, t: float):
+    """The view ``(x0, x1, y0, y1)`` (m): the crank's circle and the piston at its highest, with room.
+
+    Parameters
+    ----------
+    r, l, t : float
+        Crank radius, rod length, half height of the piston (m).
+
+    Returns
+    -------
+    tuple of float
+
+    Examples
+    --------
+    >>> slider_crank_view(2.29, 5.0, 0.5)
+    (-4.5, 4.5, -3.49, 9.29)
+    """
+    return (-4.5, 4.5, -r - 1.2, max(9.0, r + l + 2 * t + 1.0))
+
+
+def _where(p) -> str:
+    xy = point_xy(p)
+    return "at infinity (a translation)" if xy is None else f"at ({xy[0]:.3g}, {xy[1]:.3g}) m"
+
+
+def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, h: float,
+                         overlays: dict, view, banner: str = "", size=(560, 620)) -> Picture:
+    """The picture of one state of the slider-crank (module docstring).
+
+    Parameters
+    ----------
+    pose : array_like (3, 3)
+        ``[x, y, angle]`` of the crank, rod and piston joints.
+    r, t : float
+        Crank radius and half height of the piston (m).
+    q : array_like (3,)
+        Joint angles ``ψ, θ, φ`` (rad).
+    reactions : dict
+        ``{"f_1", "f_2", "f_3", "F_1": reaction}`` with ``point``, ``wrench`` and ``moment``
+        (:func:`planargeo.scenes.slider_crank.slider_crank_reactions`).
+    v, a : array_like (3, 3)
+        Velocity and acceleration twists of the three bodies.
+    h : float
+        Height of the piston (m).
+    overlays : dict
+        ``{"reaction forces", "velocity poles", "acceleration poles": shown}``.
+    view : (x0, x1, y0, y1)
+        What must be in view.
+    banner : str
+        A dead centre named ("" for none).
+    size : (int, int)
+        Pixels.
+
+    Returns
+    -------
+    Picture
+    """
+    pose = np.asarray(pose, dtype=float)
+    pic = Picture(view, size=size, ticks=False, margin=(6, 6, 6, 6))
+    x0, x1, y0, y1 = pic.box
+    pivot, pin, wrist = pose[0, :2], pose[1, :2], pose[2, :2]
+    psi, theta, phi = (math.degrees(float(x)) for x in q)
+    pic.path("slide", [[-BORE, y0], [-BORE, y1], [np.nan, np.nan], [BORE, y0], [BORE, y1]], role="construct",
+             symbol="slide", color=COLORS["ground"], width=1.0 * PX_PER_PT, dash=[4.0, 3.0], z=1,
+             desc=f"the slide: the piston moves along it, {2 * BORE:.3g} m wide (9.6)")
+    ground(pic, "ground", (0.0, -0.15), width=0.9, desc="the ground: the crank turns about the pivot (0, 0) m")
+    pic.path("crank", [pivot, pin], role="body", symbol="1", color=COLORS["ground"], width=4.0 * PX_PER_PT, z=5,
+             desc=f"crank, body 1: r = {r:.3g} m, at ψ = {psi:.4g}° (9.6)")
+    label_at(pic, 0.5 * (pivot + pin), "1", gap=5.0)
+    pic.path("rod", [pin, wrist], role="body", symbol="2", color=COLORS["body"], width=3.0 * PX_PER_PT, z=5,
+             desc=f"rod, body 2: l = {math.hypot(*(wrist - pin)):.3g} m, at θ = {theta:.4g}° (9.6)")
+    label_at(pic, 0.5 * (pin + wrist), "2", gap=5.0)
+    box = np.array([[-0.3, 0.0], [0.3, 0.0], [0.3, 2 * t], [-0.3, 2 * t]]) + wrist
+    pic.path("piston", box, role="body", symbol="3", closed=True, fill=COLORS["body"], alpha=0.6,
+             color="#000000", width=1.0 * PX_PER_PT, z=4,
+             desc=f"piston, body 3: height h = {h:.4g} m, speed {float(v[2][1]):.4g} m/s (9.73)")
+    label_at(pic, wrist + np.array([0.3, 2 * t]), "3", gap=4.0)
+    pic.marks("pins", [pivot, pin, wrist], role="body", symbol="pins", color=COLORS["ground"], size=7.0, z=6,
+              desc=f"the pins: crank pivot (0, 0) m, crank pin ({pin[0]:.3g}, {pin[1]:.3g}) m, "
+                   f"wrist pin ({wrist[0]:.3g}, {wrist[1]:.3g}) m")
+    # the joint angles a little way along their links (the pins are the forces' places)
+    for sym, at, meaning, val in (("ψ", 0.3 * pin, "crank angle", psi),
+                                  ("θ", pin + 0.2 * (wrist - pin), "rod angle, from closing the loop", theta),
+                                  ("φ", wrist + np.array([0.0, 2.8 * t]), "piston angle, its joint coordinate",
+                                   phi)):
+        pic.marks(f"angle {sym}", np.zeros((0, 2)), role="text", symbol=sym, color="#303030",
+                  desc=f"{meaning} (9.6): {val:.4g}°")
+        label_at(pic, at, sym, gap=5.0)
+    if overlays.get("reaction forces"):
+        size_of = {k: math.hypot(*np.asarray(x.wrench, float)[:2]) for k, x in reactions.items()}
+        fmax = max(size_of.values(), default=0.0)
+        scale = FORCE_LENGTH / fmax if fmax > 0 else 0.0
+        for key, sym, meaning, eq, color in REACTIONS:
+            x = reactions[key]
+            w = np.asarray(x.wrench, float)
+            role = "reaction" if key.startswith("f") else "momentum"
+            F = size_of[key]
+            moment = f", moment {x.moment:.3g} N·m about its joint" if abs(x.moment) > 1e-9 * max(F, 1.0) else ""
+            # the label at the arrow's head, at least 0.9 m from the joint (off the pins and the piston)
+            head = np.asarray(x.point, float) + max(0.5 * scale * F, 0.9) * (w[:2] / F if F else 0.0)
+            foot = force(pic, sym, w, scale=scale, anchor=x.point, role=role, symbol=sym, color=color,
+                         desc=f"{meaning} ({eq}): |{sym}| = {F:.4g} N{moment}", reach=1.2, dash=[4.0, 3.0],
+                         width=1.0 * PX_PER_PT, z=8, label_xy=head)
+            if foot is not None and math.hypot(*(foot - np.asarray(x.point))) > 1e-9:
+                pic.path(f"{sym} lever", [x.point, foot], role="construct", symbol=f"{sym} arm", color=color,
+                         width=0.8 * PX_PER_PT, dash=[1.0, 2.0], z=8,
+                         desc=f"lever arm of {sym} about its joint: {math.hypot(*(foot - x.point)):.3g} m "
+                              f"(a couple the joint carries)")
+    for key, flag, role, scale, meaning, eq, unit in (
+            ("v", "velocity poles", "twist", 0.5, "velocity pole", "4.5", "rad/s"),
+            ("a", "acceleration poles", "accel", 0.05, "acceleration pole", "4.6", "rad/s²")):
+        if not overlays.get(flag):
+            continue
+        pts = np.asarray(v if key == "v" else a, float)
+        for i in range(3):
+            sym = f"{key}{i + 1}".translate(_SUB)
+            pic.point(sym, pts[i], role=role, symbol=sym, glyph_scale=scale,
+                      desc=f"{meaning} of the {_BODIES[i]} ({eq}): rate {pts[i][2]:.3g} {unit}, {_where(pts[i])}")
+    scale_bar(pic)
+    if banner:
+        pic.text("banner", (x1, y1), banner, color="#7a3d00", ha="right", va="top", dx=-8.0, dy=-8.0,
+                 symbol="dead centre", desc=f"{banner}: the crank and the rod in line, ψ = {psi:.4g}°")
+    return pic
