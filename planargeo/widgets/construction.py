@@ -47,6 +47,7 @@ from matplotlib.lines import Line2D
 from matplotlib.text import Text
 
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
+from planargeo.draw.pictures.construction import construction_picture
 from planargeo.draw.style import COLORS, STYLES, sum_style
 from planargeo.errors import InputError
 from planargeo.files import atomic_write
@@ -734,13 +735,58 @@ class ConstructionExplorer(Explorer):
                         a.set_visible(False)
         for role, line in self.role_keys.items():     # the key lists the roles on screen
             line.set_visible(role in roles)
+        self.caption_text.set_text("\n".join(textwrap.wrap(f"Step {k}/{n}: {c.steps[k - 1].caption}", 62)))
+        return self.readout_of(state)
+
+    def readout_of(self, state):
+        """The readout of ``state``: the step, its equation, the construction's numbers, the special case.
+
+        The step's full caption (:attr:`caption`) is drawn above the picture; the step
+        slider's range and the sliders shown follow the construction.
+
+        Parameters
+        ----------
+        state : dict
+
+        Returns
+        -------
+        dict
+        """
+        c = state["c"]
+        self._shown_kind = state["kind"]
+        n = len(c.steps)
+        self._follow_kind(state["kind"], n)
+        k = min(int(self.values["step"]), n)
         step = c.steps[k - 1]
         self.caption = f"Step {k}/{n}: {step.caption}"
-        self.caption_text.set_text("\n".join(textwrap.wrap(self.caption, 62)))
         out = {"step": f"{k}/{n}", "equation": step.equation}
         out.update(c.values)
         out["case"] = _short_case(c.case)
         return out
+
+    #: the view: the sliders' reach (±3 m) and a margin (a band for the caption is added above)
+    VIEW = (-3.4, 3.4, -3.4, 3.4)
+
+    def scene_picture(self, state, view=None, *, all_steps: bool = False, caption=None):
+        """The state's picture (:func:`planargeo.draw.pictures.construction.construction_picture`).
+
+        Parameters
+        ----------
+        state : dict
+        view : (x0, x1, y0, y1), optional
+            The view the user zoomed or panned to (default: :attr:`VIEW`).
+        all_steps : bool
+            Every step at full strength (the layered export).
+        caption : str, optional
+            Instead of the step's caption.
+
+        Returns
+        -------
+        Picture
+        """
+        return construction_picture(state["c"], step=int(self.values["step"]), earlier=self.values["earlier"],
+                                    view=view or self.VIEW, size=self.figure_px, all_steps=all_steps,
+                                    caption=caption)
 
     # ------------------------------------------------------------------ handles
     def handles(self) -> list[Handle]:
@@ -809,15 +855,6 @@ class ConstructionExplorer(Explorer):
         return drag
 
     # ------------------------------------------------------------------ export
-    def step_ids(self) -> list[str]:
-        """The SVG group ids of the steps, in order (``step-K-name``).
-
-        Returns
-        -------
-        list of str
-        """
-        return [layer.get_gid() for layer in self.layers]
-
     def export_layers(self, path=None) -> Path:
         """Write the whole construction as an SVG with one ``<g id="step-K-name">`` per step.
 
@@ -851,20 +888,63 @@ class ConstructionExplorer(Explorer):
         except TypeError:
             raise InputError(f"path must be a str or os.PathLike naming a file, got {path!r}") from None
         c = self.state["c"]
-        self._all_steps = True
-        saved = self.caption_text.get_text()
-        try:
-            self.render(self.state)
-            self.caption_text.set_text(c.title)
-            buf = io.BytesIO()
-            with matplotlib.rc_context({"svg.hashsalt": "planargeo"}):
-                self.fig.savefig(buf, format="svg", metadata={"Date": None})
-            written = atomic_write(path, buf.getvalue()).resolve()
-        finally:
-            self._all_steps = False
-            self.render(self.state)
-            self.caption_text.set_text(saved)
-            self._safe_redraw()
+        pic = self.scene_picture(self.state, None, all_steps=True, caption=c.title).to_dict()
+        written = atomic_write(path, layered_svg(pic, self.step_ids())).resolve()
         self.last_export = written
         return written
 
+    def step_ids(self) -> list[str]:
+        """The SVG group ids of the steps of the construction shown, in order (``step-K-name``).
+
+        Returns
+        -------
+        list of str
+        """
+        if self.state is None:
+            return []
+        return [f"step-{k + 1}-{s.id}" for k, s in enumerate(self.state["c"].steps)]
+
+
+def layered_svg(pic: dict, step_ids: list[str]) -> bytes:
+    """The picture ``pic`` as SVG, every step's elements in one group ``<g id="step-K-name">``.
+
+    Parameters
+    ----------
+    pic : dict
+        A construction's picture (:func:`~planargeo.draw.pictures.construction.construction_picture`),
+        whose elements carry their ``step`` (1-based).
+    step_ids : list of str
+        The group id of each step.
+
+    Returns
+    -------
+    bytes
+        The SVG document (the same bytes for the same picture).
+    """
+    import xml.etree.ElementTree as ET
+
+    from planargeo.draw.render import figure
+
+    ns = "http://www.w3.org/2000/svg"
+    ET.register_namespace("", ns)
+    ET.register_namespace("xlink", "http://www.w3.org/1999/xlink")
+    step_of = {el["id"]: el["step"] for el in pic["elements"] if "step" in el}
+    buf = io.BytesIO()
+    with matplotlib.rc_context({"svg.hashsalt": "planargeo"}):
+        figure(pic).savefig(buf, format="svg", metadata={"Date": None})
+    root = ET.fromstring(buf.getvalue())
+    groups = {k: ET.Element(f"{{{ns}}}g", {"id": gid}) for k, gid in enumerate(step_ids, start=1)}
+    home = None       # (parent, index) of the first element of a step: the groups go there, in step order
+    for parent in list(root.iter()):
+        for child in list(parent):
+            gid = (child.get("id") or "").split(":")[0]
+            if child.tag != f"{{{ns}}}g" or gid not in step_of:
+                continue
+            if home is None:
+                home = (parent, list(parent).index(child))
+            parent.remove(child)
+            groups[step_of[gid]].append(child)     # within a step, the picture's drawing order
+    parent, at = home if home is not None else (root, len(root))
+    for k in sorted(groups, reverse=True):
+        parent.insert(at, groups[k])
+    return ET.tostring(root, xml_declaration=True, encoding="utf-8")

@@ -1,0 +1,284 @@
+"""The construction explorer's picture: chapter 4's constructions, step by step (thesis 4.2–4.7, 10.2.4).
+
+What :class:`planargeo.widgets.construction.ConstructionExplorer` shows of a
+:class:`~planargeo.scenes.construction.Construction`: the elements of steps ``1 … k``,
+the last one at full strength and the earlier ones faded, shown or hidden, and the
+step's caption (its title and equation) in a band at the top of the view.  Poles are
+points with their rotation glyphs, force lines have their senses, a sum is drawn
+heavier; construction lines are thin and dashed.  Every element says what it is, its
+equation and its value.
+
+Examples
+--------
+>>> from planargeo.scenes.construction import construct
+>>> c = construct("twist_sum", x1=0.0, y1=0.0, w1=1.0, x2=3.0, y2=0.0, w2=3.0)
+>>> d = construction_picture(c, step=3, view=(-4, 4, -4, 4)).to_dict()
+>>> els = {e["id"]: e for e in d["elements"]}
+>>> v3 = els["v3"]["parts"][0]; (v3["x"], v3["y"])          # β = 3/4 of the way from Q₁ to Q₂ (4.12)
+(2.25, 0.0)
+>>> els["v3"]["symbol"], els["v3"]["desc"]
+('v₃ = v₁ + v₂', 'sum v₃ = v₁ + v₂ (4.11–4.13): rate 4 rad/s, at (2.25, 0) m')
+>>> els["Q1"].get("opacity", 1.0) < 1.0, els["caption 1"]["parts"][0]["text"]
+(True, 'Step 3/3: v₃ on Q₁Q₂ at β = ω₂/(ω₁+ω₂) = 0.75 (4.11–4.13)')
+"""
+from __future__ import annotations
+
+import math
+import textwrap
+
+import numpy as np
+
+from planargeo.draw.picture import FONT_PX, PX_PER_PT, Picture, plain_text
+from planargeo.draw.pictures._words import num, where
+from planargeo.draw.pictures.common import label_line, label_toward
+from planargeo.draw.style import COLORS, SUM
+from planargeo.geometry.projective import is_at_infinity, is_ideal
+
+__all__ = ["construction_picture", "MEANINGS", "FADED", "CAPTION_CHARS"]
+
+#: opacity of the earlier steps when they are faded
+FADED = 0.4
+#: characters per caption line (two lines at most)
+CAPTION_CHARS = 70
+
+#: per construction and element name: (meaning with its equation, unit of a point's rate);
+#: an element's symbol is its label (the thesis symbol), or the one given here after "|"
+MEANINGS = {
+    "twist_sum": {
+        "Q1": "twist v₁, a rotation about its pole Q₁ (4.10)", "Q2": "twist v₂, a rotation about its pole Q₂ (4.10)",
+        "Q1Q2": "Q₁Q₂|lever line through both poles (5.32)",
+        "v3": "sum v₃ = v₁ + v₂ (4.11–4.13)",
+    },
+    "wrench_sum": {
+        "f1": "wrench f₁ on its line of action L₁ (4.27)", "f2": "wrench f₂ on its line of action L₂ (4.27)",
+        "P": "P|meet P = L₁ × L₂ of the two lines (5.34)",
+        "par1": "f₁|the force f₁ drawn from P (4.39)", "par2": "f₂|the force f₂ drawn from P (4.39)",
+        "par3": "|a side of the force parallelogram (4.39)", "par4": "|a side of the force parallelogram (4.39)",
+        "diag": "f₁ + f₂|the parallelogram's diagonal: the summed force (4.39)",
+        "rho": "ρ|shift of the force by the couple, ρ = τ/F (4.46)",
+        "f3": "sum f₃ = f₁ + f₂, its line through P (4.33)",
+    },
+    "velocity": {
+        "v_prev": "velocity pole of the previous body vᵢ₋₁ (4.47)",
+        "joint": "the joint's relative rotation sᵢ q̇ᵢ, its pole at the joint (2.1)",
+        "lever": "kᵢ|lever line from vᵢ₋₁ to the joint (4.48)",
+        "v": "velocity pole of the body vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ (4.48–4.49)",
+    },
+    "acceleration": {
+        "a_prev": "acceleration pole of the previous body aᵢ₋₁ (4.52)",
+        "v": "velocity pole of the body vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ (4.47)",
+        "rel": "relative acceleration sᵢ q̈ᵢ about the joint (4.52)",
+        "kappa": "bias acceleration κᵢ = vᵢ × sᵢ q̇ᵢ, a translation (4.53)",
+        "combo": "what the joint adds, sᵢ q̈ᵢ + κᵢ (4.54)",
+        "joint_lever": "|line of the joint's poles sᵢ q̈ᵢ and κᵢ (4.54)",
+        "lever": "|lever line joining the poles of aᵢ₋₁ and sᵢ q̈ᵢ + κᵢ (4.52)",
+        "a": "acceleration pole of the body aᵢ = aᵢ₋₁ + sᵢ q̈ᵢ + κᵢ (4.52)",
+    },
+    "newton_euler": {
+        "I": "inertia I as its circle of gyration (4.58)",
+        "v": "velocity pole v of the body (4.47)", "a": "acceleration pole a of the body (4.52)",
+        "Ia": "force I a on the axis of percussion of a (5.64)",
+        "p": "bias force p, through the centre of mass (4.56)",
+        "fnet": "net force fⁿᵉᵗ = I a + p (4.55)",
+        "J": "joint|the joint about which the torque is taken (4.57)",
+        "rho": "ρ|distance ρ = τ/|fⁿᵉᵗ| of the net force from the joint (4.57)",
+    },
+    "through_infinity": {
+        "horizon": "horizon|the line at infinity drawn as the circle |h| = 2 m (10.2.4)",
+        "v1": "twist v₁, a rotation about its pole (4.10)",
+        "h": "h|the handle that places v₂'s pole (10.2.4)",
+        "v2": "twist v₂ = k [h_y, −h_x, 1 − |h|/R] (10.2.4, 4.10)",
+        "lever": "|lever line through the poles of v₁ and v₂ (4.11)",
+        "v3": "sum v₃ = v₁ + v₂ (4.11)",
+    },
+}
+_RATE_UNIT = {"twist": "rad/s", "accel": "rad/s²"}
+#: labels whose symbol :func:`~planargeo.draw.picture.plain_text` cannot write (no Unicode superscript e, t)
+_SYMBOLS = {r"$f^{net}$": "fⁿᵉᵗ"}
+
+
+def _meaning(kind: str, e) -> tuple[str, str]:
+    """(symbol, meaning with equation) of the element ``e`` of construction ``kind``."""
+    text = MEANINGS.get(kind, {}).get(e.name, e.name)
+    sym, _, meaning = text.rpartition("|")
+    if not _:
+        meaning = text
+    return (_symbol(e.label) if e.label else sym), meaning
+
+
+def _symbol(label: str) -> str:
+    """The thesis symbol of a mathtext label (superscript words the Unicode table lacks, by hand)."""
+    return _SYMBOLS.get(label) or plain_text(label)
+
+
+def _value(e) -> str:
+    """The element's value in words (a pole's rate and place, a force's size and line, a length)."""
+    v = np.asarray(e.value, float)
+    if e.kind == "point":
+        unit = _RATE_UNIT.get(e.role)
+        return (f"rate {num(v[2])} {unit}, " if unit and not bool(is_ideal(v)) else
+                "a translation, " if unit else "") + where(v)
+    if e.kind == "line":
+        if bool(is_at_infinity(v)):
+            return f"a couple of {num(v[2])} N·m (the line at infinity)"
+        F = math.hypot(v[0], v[1])
+        return f"|force| {num(F)} N, {num(abs(v[2]) / F)} m from the origin"
+    if e.kind == "segment":
+        return f"length {num(float(np.hypot(*(v[1] - v[0]))))} m"
+    return ""
+
+
+def _frame(c, upto: int):
+    """``(centroid, n)``: the finite poles' centroid and the upward normal of the line they lie along.
+
+    The construction's points are labelled on the ``n`` side of that line (a lever line),
+    the sum on the other side.
+    """
+    P = np.array([[-e.value[1] / e.value[2], e.value[0] / e.value[2]] for e in c.elements(upto)
+                  if e.kind == "point" and e.value[2] != 0] or [[0.0, 0.0]])
+    m = P.mean(axis=0)
+    if len(P) > 1 and np.ptp(P, axis=0).max() > 0:
+        _, _, vt = np.linalg.svd(P - m)
+        d = vt[0]
+    else:
+        d = np.array([1.0, 0.0])
+    n = np.array([-d[1], d[0]])
+    if n[1] < 0 or (n[1] == 0 and n[0] < 0):
+        n = -n
+    return m, n
+
+
+def caption_lines(text: str) -> list[str]:
+    """The caption in at most two lines of :data:`CAPTION_CHARS` (the second ends in … when cut).
+
+    Parameters
+    ----------
+    text : str
+
+    Returns
+    -------
+    list of str
+    """
+    lines = textwrap.wrap(text, CAPTION_CHARS)
+    if len(lines) > 2:
+        lines = [lines[0], textwrap.shorten(" ".join(lines[1:]), CAPTION_CHARS, placeholder=" …")]
+    return lines
+
+
+def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(560, 560),
+                         all_steps: bool = False, caption: str | None = None) -> Picture:
+    """The picture of steps ``1 … step`` of the construction ``c`` (module docstring).
+
+    Parameters
+    ----------
+    c : Construction
+        From :func:`planargeo.scenes.construction.construct`.
+    step : int
+        The step shown (clipped to the construction's steps).
+    earlier : {"faded", "shown", "hidden"}
+        How the earlier steps look.
+    view : (x0, x1, y0, y1)
+        What must be in view; a band for the caption is added above it.
+    size : (int, int)
+        Pixels.
+    all_steps : bool
+        Every step at full strength (the layered export).
+    caption : str, optional
+        The caption (default: ``Step k/n: <the step's caption>``).
+
+    Returns
+    -------
+    Picture
+    """
+    n = len(c.steps)
+    k = min(max(int(step), 1), n)
+    shown = n if all_steps else k
+    if all_steps:
+        earlier = "shown"
+    if caption is None:
+        caption = f"Step {k}/{n}: {c.steps[k - 1].caption}"
+    lines = caption_lines(caption)
+    x0, x1, y0, y1 = (float(v) for v in view)
+    ml, mr, mt, mb = 44.0, 12.0, 10.0, 30.0
+    band_px = len(lines) * 1.3 * FONT_PX + 10.0       # the caption's band, below the drawing
+    kx = (size[0] - ml - mr) / (x1 - x0)
+    ky = (size[1] - mt - mb - band_px) / (y1 - y0)
+    k_px = min(kx, ky)
+    pic = Picture((x0, x1, y0 - band_px / k_px, y1), size=size, margin=(ml, mr, mt, mb))
+    bx0, bx1, by0, by1 = pic.box
+    band_top = by0 + band_px / pic.ky
+    pic.path("caption band", [[bx0, by0], [bx1, by0], [bx1, band_top], [bx0, band_top]], role="text",
+             closed=True, fill="#FFFFFF", color="#CCCCCC", width=0.8, z=19,
+             desc=f"the step shown: {caption}")
+    for i, line in enumerate(lines):
+        pic.text(f"caption {i + 1}", (bx0, band_top), line, role="text", ha="left", va="top", dx=6.0,
+                 dy=-5.0 - 1.3 * FONT_PX * i, z=20,
+                 desc=f"the step shown: {caption}" if i == 0 else "")
+        pic.elements[-1]["parts"][0].pop("fixed")     # placed first: no label lands on the caption
+    centre, nrm = _frame(c, shown)
+    view_centre = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+    lines_labelled = 0
+    for i in range(shown):
+        if earlier == "hidden" and i != shown - 1:
+            continue
+        faded = earlier == "faded" and i != shown - 1
+        for e in c.steps[i].elements:
+            sym, meaning = _meaning(c.kind, e)
+            desc = f"{meaning}: {_value(e)}" if _value(e) else meaning
+            label = _symbol(e.label) if e.label else ""
+            v = np.asarray(e.value, float)
+            if e.kind == "point":
+                glyph = e.role in ("twist", "accel")
+                kw = dict(shape="D", size=SUM["point"]["markersize"] * PX_PER_PT) if e.emphasis else {}
+                pic.point(e.name, v, role=e.role if glyph else "twist", glyph=glyph, symbol=sym,
+                          label=label, desc=desc, color=None if glyph else COLORS.get(e.role, COLORS["text"]),
+                          **kw)
+                if label and not bool(is_ideal(v)):
+                    xy = np.array([-v[1] / v[2], v[0] / v[2]])
+                    u = -nrm if e.emphasis else nrm
+                    away = xy - centre
+                    if not e.emphasis and np.hypot(*away) > 1e-9:
+                        away = away / np.hypot(*away)
+                        if abs(away @ nrm) < 0.3:
+                            u = away
+                    r = min(max(6.0 * abs(v[2]), 4.0), 16.0) if glyph else 0.0
+                    label_toward(pic.elements[-1], u, (7.0 + 0.75 * r) * PX_PER_PT)
+            elif e.kind == "line":
+                anchor = None
+                if np.any(v[:2]):   # labelled lines' arrows and labels spread along them
+                    f = v[:2] / np.hypot(*v[:2])
+                    foot = np.array([v[2] * f[1], -v[2] * f[0]]) / np.hypot(*v[:2])
+                    foot = foot + ((view_centre - foot) @ f) * f
+                    if label:
+                        anchor = foot + (1.1 * lines_labelled - 0.8) * f
+                        lines_labelled += 1
+                pic.line(e.name, v, role=e.role, symbol=sym, label="", desc=desc, anchor=anchor,
+                         arrow=e.role != "construct",
+                         width=SUM["line"]["linewidth"] * PX_PER_PT if e.emphasis else None)
+                if bool(is_at_infinity(v)):
+                    for part in pic.elements[-1]["parts"]:
+                        if part["p"] == "text":
+                            part["text"] = (label + ": " if label else "") + "couple (line at ∞)"
+                elif label:
+                    label_line(pic, e.name, label, anchor=anchor)
+            elif e.kind == "conic":
+                pic.conic(e.name, v, role=e.role, symbol=sym, label=label, desc=desc)
+            else:   # a segment, with its label beside its middle
+                (a, b) = v
+                construct = e.role == "construct"
+                pic.path(e.name, v, role=e.role, symbol=sym, desc=desc, z=3,
+                         color=COLORS.get(e.role, COLORS["construct"]),
+                         width=(1.2 if construct else 1.6) * PX_PER_PT,
+                         dash=[4.0 * PX_PER_PT, 3.0 * PX_PER_PT] if construct else None)
+                if label:
+                    d = (b - a) * np.array([pic.kx, pic.ky])
+                    u = np.array([-d[1], d[0]]) / max(math.hypot(*d), 1e-300)
+                    pic.elements[-1]["parts"].append(
+                        {"p": "text", "x": float((a[0] + b[0]) / 2), "y": float((a[1] + b[1]) / 2),
+                         "dx": float(u[0] * 8), "dy": float(u[1] * 8), "text": label,
+                         "ha": "left" if u[0] > 0.3 else "right" if u[0] < -0.3 else "center",
+                         "va": "bottom" if u[1] > 0.3 else "top" if u[1] < -0.3 else "center"})
+            if faded:
+                pic.elements[-1]["opacity"] = FADED
+            pic.elements[-1]["step"] = i + 1
+    return pic
