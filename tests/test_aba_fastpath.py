@@ -95,7 +95,7 @@ def test_other_inputs_take_the_validated_road():
 
 
 def test_one_state_kernels_compile_one_type_and_check_shapes():
-    """The one-state kernels are compiled for C-contiguous writeable float64 arrays only (without and with
+    """The one-state kernel is compiled for C-contiguous writeable float64 arrays only (without and with
     external wrenches): other types go the validated road, compiling nothing; float64 arrays of the wrong
     shape are refused by name, as the validated road refuses them."""
     from planargeo.errors import ShapeError
@@ -106,7 +106,7 @@ def test_one_state_kernels_compile_one_type_and_check_shapes():
     forward_dynamics(m, q, qd, tau)
     inverse_dynamics(m, q, qd, tau)
     inverse_dynamics(m, q, qd, tau, f_ext)
-    before = [len(k.signatures) for k in (kernels.forward_dynamics_one, kernels.inverse_dynamics_one)]
+    before = len(kernels.dynamics_one.signatures)
     ro = q.copy()
     ro.setflags(write=False)
     for args in [(q.astype(np.int64), qd, tau, f_ext), (ro, qd, tau, f_ext), (q, qd, tau, np.asfortranarray(f_ext)),
@@ -114,8 +114,8 @@ def test_one_state_kernels_compile_one_type_and_check_shapes():
         assert _rel(forward_dynamics(m, *args), _general(m, *(np.asarray(a, dtype=float) for a in args))) < 1e-12
         inverse_dynamics(m, *args)
     assert np.array_equal(forward_dynamics(m, ro, qd, tau, np.asfortranarray(f_ext)), ref)
-    assert [len(k.signatures) for k in (kernels.forward_dynamics_one, kernels.inverse_dynamics_one)] == before
-    assert before == [2, 2]
+    assert len(kernels.dynamics_one.signatures) == before
+    assert before == 2                     # forward and inverse alike: without and with external wrenches
     for bad, name in [((q[:-1], qd, tau, None), "q"), ((q, np.append(qd, 0.0), tau, None), "qd"),
                       ((q, qd, tau[:-1], None), "tau"), ((q, qd, tau, f_ext[:-1]), "f_ext"),
                       ((q, qd, tau, np.zeros((m.N, 2))), "f_ext")]:

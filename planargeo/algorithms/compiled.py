@@ -40,6 +40,7 @@ import os
 import sys
 import time
 from collections import namedtuple
+from functools import partial
 
 import numpy as np
 
@@ -129,11 +130,10 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
     if c is None:
         return general(model, q, qd, z, f_ext)
     kernels, tables = c.kernels, c.tables
-    one = kernels.inverse_dynamics_one if inverse else kernels.forward_dynamics_one
     if (type(q) is _ARRAY and q.ndim == 1 and type(qd) is _ARRAY and type(z) is _ARRAY
             and (f_ext is None or type(f_ext) is _ARRAY)):
         try:                # numba checks the types (float64, C-contiguous, writeable), the kernel the shapes
-            out = one(*tables, q, qd, z, f_ext)
+            out = kernels.dynamics_one(inverse, *tables, q, qd, z, f_ext)
         except TypeError:   # another type (ints, a read-only view, f_ext a list...), or the first call: validated
             out = None
         if out is not None:
@@ -147,10 +147,10 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
     rows = [_rows(a, shape + (nq,), (B, nq)) for a in (q, qd, z)]
     fe = None if f_ext is None else _rows(f_ext, shape + (N, 3), (B, N, 3))
     if shape == ():
-        _ready(kernels, inverse, fe is not None)
-        out = one(*tables, *(r[0] for r in rows), None if fe is None else fe[0])
+        _ready(kernels, fe is not None)
+        out = kernels.dynamics_one(inverse, *tables, *(r[0] for r in rows), None if fe is None else fe[0])
         return out if out is not None else _failed(kernels, tables, model, inverse, q, qd, z, f_ext, general)
-    out, declined = (kernels.inverse_dynamics_many if inverse else kernels.forward_dynamics_many)(*tables, *rows, fe)
+    out, declined = kernels.dynamics_many(inverse, *tables, *rows, fe)
     if declined < 0:
         return out.reshape(shape + (nq,))
     _failed(kernels, tables, model, inverse, *(r[declined] for r in rows), None if fe is None else fe[declined],
@@ -162,23 +162,22 @@ _READY: set = set()
 
 
 def _closed(kernels) -> None:
-    """Let the one-state kernels compile nothing at call time (their one type is added by :func:`_ready`).
+    """Let the one-state kernel compile nothing at call time (its one type is added by :func:`_ready`).
 
     A call with another type (a list, int64 or read-only arrays, a batch) then raises numba's
     ``TypeError`` at once, instead of compiling a new version for seconds: :func:`evaluate`
     validates the arguments and hands the kernels that one type.
     """
-    for kernel in (kernels.forward_dynamics_one, kernels.inverse_dynamics_one):
-        if hasattr(kernel, "_can_compile"):             # (NUMBA_DISABLE_JIT=1: plain Python functions)
-            kernel._can_compile = False                 # numba's disable_compile(), allowed before any signature
+    kernel = kernels.dynamics_one
+    if hasattr(kernel, "_can_compile"):             # (NUMBA_DISABLE_JIT=1: a plain Python function)
+        kernel._can_compile = False                 # numba's disable_compile(), allowed before any signature
 
 
-def _ready(kernels, inverse: bool, wrenches: bool) -> None:
-    """Compile (or load from the cache) the one type of a one-state kernel, with or without external wrenches."""
-    key = (inverse, wrenches)
-    if key in _READY:
+def _ready(kernels, wrenches: bool) -> None:
+    """Compile (or load from the cache) the one type of the one-state kernel, with or without external wrenches."""
+    if wrenches in _READY:
         return
-    kernel = kernels.inverse_dynamics_one if inverse else kernels.forward_dynamics_one
+    kernel = kernels.dynamics_one
     if hasattr(kernel, "_can_compile"):
         from numba import types
 
@@ -186,10 +185,10 @@ def _ready(kernels, inverse: bool, wrenches: bool) -> None:
                       types.Array(types.float64, 2, "C"))
         kernel._can_compile = True
         try:
-            kernel.compile((i1, i1, f2, f1, f1, f1, f1, f2 if wrenches else types.none))
+            kernel.compile((types.boolean, i1, i1, f2, f1, f1, f1, f1, f2 if wrenches else types.none))
         finally:
             kernel._can_compile = False
-    _READY.add(key)
+    _READY.add(wrenches)
 
 
 def _rows(a, full, flat):
@@ -250,7 +249,7 @@ def check_finite(result, what: str, **inputs):
 
 
 #: The kernels the package calls from Python (the others are compiled into them).
-ENTRY_POINTS = ("forward_dynamics_one", "inverse_dynamics_one", "singular_joint", "_range")
+ENTRY_POINTS = ("dynamics_one", "singular_joint", "_range")
 _told = []
 
 
@@ -321,7 +320,7 @@ def warm(progress=None) -> list[tuple[str, float]]:
     Examples
     --------
     >>> [step for step, _ in warm()][:2]
-    ['forward dynamics, one state', 'forward dynamics, one state, external wrenches']
+    ['forward and inverse dynamics, one state', 'forward and inverse dynamics, one state, external wrenches']
     """
     from planargeo.mechanics.model import Body, Joint, Model
 
@@ -333,19 +332,14 @@ def warm(progress=None) -> list[tuple[str, float]]:
     nq, N, B = model.nq, model.N, 3
     one, fe1 = np.zeros(nq), np.zeros((N, 3))
     rows, feB = np.zeros((B, nq)), np.zeros((B, N, 3))
-    for what, run in [
-            ("forward dynamics, one state", lambda: _ready(k, False, False)),
-            ("forward dynamics, one state, external wrenches", lambda: _ready(k, False, True)),
-            ("inverse dynamics, one state", lambda: _ready(k, True, False)),
-            ("inverse dynamics, one state, external wrenches", lambda: _ready(k, True, True)),
+    runs = [("forward and inverse dynamics, one state", lambda: _ready(k, False)),
+            ("forward and inverse dynamics, one state, external wrenches", lambda: _ready(k, True)),
             ("singular-joint check", lambda: k.singular_joint(*tables, one, one, one, None)),
-            ("singular-joint check, external wrenches", lambda: k.singular_joint(*tables, one, one, one, fe1)),
-            ("forward dynamics, batch", lambda: k.forward_dynamics_many(*tables, rows, rows, rows, None)),
-            ("forward dynamics, batch, external wrenches",
-             lambda: k.forward_dynamics_many(*tables, rows, rows, rows, feB)),
-            ("inverse dynamics, batch", lambda: k.inverse_dynamics_many(*tables, rows, rows, rows, None)),
-            ("inverse dynamics, batch, external wrenches",
-             lambda: k.inverse_dynamics_many(*tables, rows, rows, rows, feB))]:
+            ("singular-joint check, external wrenches", lambda: k.singular_joint(*tables, one, one, one, fe1))]
+    for inverse, kind in ((False, "forward"), (True, "inverse")):
+        for extra, fe in (("", None), (", external wrenches", feB)):
+            runs.append((f"{kind} dynamics, batch{extra}", partial(k.dynamics_many, inverse, *tables, rows, rows, rows, fe)))
+    for what, run in runs:
         if progress is not None:
             progress(f"  {what} ...")
         t = time.perf_counter()

@@ -50,8 +50,8 @@ from planargeo.errors import COND_LIMIT
 from planargeo.mechanics.subspaces import COND_LIMIT2
 
 __all__ = ["FIXED", "REVOLUTE", "PRISMATIC", "BLOCK", "OK", "NOT_FINITE", "tables", "workspace",
-           "kinematics_state", "articulated_body_state", "columns", "articulated_body_block", "newton_euler_state", "forward_dynamics_one",
-           "forward_dynamics_many", "inverse_dynamics_one", "inverse_dynamics_many", "singular_joint"]
+           "kinematics_state", "articulated_body_state", "columns", "articulated_body_block", "newton_euler_state", "dynamics_one",
+           "dynamics_many", "singular_joint"]
 
 FIXED, REVOLUTE, PRISMATIC = 0, 1, 2
 _CODES = {"fixed": FIXED, "revolute": REVOLUTE, "prismatic": PRISMATIC}
@@ -62,6 +62,29 @@ BLOCK = 256
 
 jit = njit(cache=True, nogil=True, error_model="numpy")
 inline = njit(cache=True, nogil=True, error_model="numpy", inline="always")
+
+#: Parameters the kernels share, written once: ``{tables}`` the model's tables (:func:`tables`)
+#: as separate arrays, ``{model}`` as one tuple, then the state and the scratch arrays of one state.
+_PARAMETERS = {"{tables}": """kind, parent : numpy.ndarray of int, shape (N,)
+        Joint kind codes and parent indices (:func:`tables`).
+    body : numpy.ndarray, shape (N, 8)
+        Per body: joint placement ``(x, y, cos φ, sin φ)``, mass, centre of mass, inertia (:func:`tables`).
+    gravity : numpy.ndarray, shape (2,)
+        Gravity (m/s²).""", "{model}": """model : tuple
+        The model's :func:`tables`.
+    q, qd : numpy.ndarray, shape (nq,)
+        Joint positions and velocities (float64).""", "{scratch}": """fext : numpy.ndarray, shape (N, 3) or None
+        External world wrenches at the origin.
+    w : Workspace
+        Scratch arrays from :func:`workspace`, filled in place."""}
+
+
+def _doc(f):
+    """``f`` with the shared parameters written into its docstring (:data:`_PARAMETERS`)."""
+    for key, text in _PARAMETERS.items():
+        f.__doc__ = f.__doc__.replace(key, text)
+    return f
+
 
 #: Per-state arrays, one row per body, all at the body's joint point ``o_i`` (world axes):
 #: ``origin`` ``o_i`` in the world, ``r`` the offset ``o_i - o_λ`` from the parent's point,
@@ -143,6 +166,7 @@ def _finite_inputs(x, y, z, fext):
 
 
 @jit
+@_doc
 def kinematics_state(model, q, qd, fext, w):
     """Joint points, joint twists, velocities, bias terms and inertias of every body, base to tip (thesis 3.31-3.34).
 
@@ -152,14 +176,8 @@ def kinematics_state(model, q, qd, fext, w):
 
     Parameters
     ----------
-    model : tuple
-        The model's :func:`tables` ``(kind, parent, body, gravity)``.
-    q, qd : numpy.ndarray, shape (nq,)
-        Joint positions and velocities (float64).
-    fext : numpy.ndarray, shape (N, 3) or None
-        External world wrenches at the origin.
-    w : Workspace
-        Scratch arrays from :func:`workspace`, filled in place.
+    {model}
+    {scratch}
     """
     kind, parent, body, gravity = model
     k = 0                                           # the next joint coordinate
@@ -248,6 +266,7 @@ def _clearly_regular(A, s, D):
 
 
 @jit
+@_doc
 def articulated_body_state(model, q, qd, tau, fext, w, qdd):
     """The recursive algorithm (thesis 3.6, 3.31-3.42) for one state: writes ``q̈`` into ``qdd``.
 
@@ -256,16 +275,10 @@ def articulated_body_state(model, q, qd, tau, fext, w, qdd):
 
     Parameters
     ----------
-    model : tuple
-        The model's :func:`tables`.
-    q, qd : numpy.ndarray, shape (nq,)
-        Joint positions and velocities (float64).
+    {model}
     tau : numpy.ndarray, shape (nq,)
         Joint forces.
-    fext : numpy.ndarray, shape (N, 3) or None
-        External world wrenches at the origin.
-    w : Workspace
-        Scratch arrays from :func:`workspace`, filled in place.
+    {scratch}
     qdd : numpy.ndarray, shape (nq,)
         Output: joint accelerations.
 
@@ -343,6 +356,7 @@ def articulated_body_state(model, q, qd, tau, fext, w, qdd):
 
 
 @jit
+@_doc
 def newton_euler_state(model, q, qd, qdd, fext, w, tau):
     """Inverse dynamics (thesis 2.18, 3.10, 3.5) for one state: writes ``τ`` into ``tau``.
 
@@ -350,16 +364,10 @@ def newton_euler_state(model, q, qd, qdd, fext, w, tau):
 
     Parameters
     ----------
-    model : tuple
-        The model's :func:`tables`.
-    q, qd : numpy.ndarray, shape (nq,)
-        Joint positions and velocities (float64).
+    {model}
     qdd : numpy.ndarray, shape (nq,)
         Joint accelerations.
-    fext : numpy.ndarray, shape (N, 3) or None
-        External world wrenches at the origin.
-    w : Workspace
-        Scratch arrays from :func:`workspace`, filled in place.
+    {scratch}
     tau : numpy.ndarray, shape (nq,)
         Output: joint forces.
 
@@ -413,88 +421,54 @@ def _fits(kind, x, y, z, fext):
     return fext is None or (fext.shape[0] == kind.shape[0] and fext.shape[1] == 3)
 
 
-@jit
-def forward_dynamics_one(kind, parent, body, gravity, q, qd, tau, fext):
-    """``q̈`` (nq,) of one state (float64 arrays (nq,), ``fext`` (N, 3) or None), or None if not :data:`OK`.
 
-    Arrays of other shapes give None too (the caller then validates them and names the problem).
+
+@jit
+@_doc
+def dynamics_one(inverse, kind, parent, body, gravity, q, qd, z, fext):
+    """``q̈`` (forward, ``z = τ``) or ``τ`` (``inverse``, ``z = q̈``) of one state, or None if not :data:`OK`.
+
+    Float64 arrays (nq,) and ``fext`` (N, 3) or None; arrays of other shapes give None too
+    (the caller then validates them and names the problem).
 
     Parameters
     ----------
-    kind, parent : numpy.ndarray of int, shape (N,)
-        Joint kind codes and parent indices (:func:`tables`).
-    body : numpy.ndarray, shape (N, 8)
-        Per body: joint placement ``(x, y, cos φ, sin φ)``, mass, centre of mass, inertia (:func:`tables`).
-    gravity : numpy.ndarray, shape (2,)
-        Gravity (m/s²).
+    inverse : bool
+        Inverse dynamics (:func:`newton_euler_state`) instead of forward (:func:`articulated_body_state`).
+    {tables}
     q, qd : numpy.ndarray, shape (nq,)
         Joint positions and velocities (float64).
-    tau : numpy.ndarray, shape (nq,)
-        Joint forces.
+    z : numpy.ndarray, shape (nq,)
+        Joint forces (forward) or accelerations (inverse).
     fext : numpy.ndarray, shape (N, 3) or None
         External world wrenches at the origin.
 
     Returns
     -------
     numpy.ndarray, shape (nq,) or None
-        ``q̈``, or None.
+        ``q̈`` or ``τ``, or None.
     """
-    if not _fits(kind, q, qd, tau, fext):
+    if not _fits(kind, q, qd, z, fext):
         return None
-    qdd = np.empty(q.shape[0])
-    status = articulated_body_state((kind, parent, body, gravity), q, qd, tau, fext, workspace(kind.shape[0]), qdd)
-    return qdd if status == OK else None
+    out = np.empty(q.shape[0])
+    model, w = (kind, parent, body, gravity), workspace(kind.shape[0])
+    if inverse:
+        status = newton_euler_state(model, q, qd, z, fext, w, out)
+    else:
+        status = articulated_body_state(model, q, qd, z, fext, w, out)
+    return out if status == OK else None
 
 
 @jit
-def inverse_dynamics_one(kind, parent, body, gravity, q, qd, qdd, fext):
-    """``τ`` (nq,) of one state (float64 arrays (nq,), ``fext`` (N, 3) or None), or None if not :data:`OK`.
-
-    Arrays of other shapes give None too (the caller then validates them and names the problem).
-
-    Parameters
-    ----------
-    kind, parent : numpy.ndarray of int, shape (N,)
-        Joint kind codes and parent indices (:func:`tables`).
-    body : numpy.ndarray, shape (N, 8)
-        Per body: joint placement ``(x, y, cos φ, sin φ)``, mass, centre of mass, inertia (:func:`tables`).
-    gravity : numpy.ndarray, shape (2,)
-        Gravity (m/s²).
-    q, qd : numpy.ndarray, shape (nq,)
-        Joint positions and velocities (float64).
-    qdd : numpy.ndarray, shape (nq,)
-        Joint accelerations.
-    fext : numpy.ndarray, shape (N, 3) or None
-        External world wrenches at the origin.
-
-    Returns
-    -------
-    numpy.ndarray, shape (nq,) or None
-        ``τ``, or None.
-    """
-    if not _fits(kind, q, qd, qdd, fext):
-        return None
-    tau = np.empty(q.shape[0])
-    status = newton_euler_state((kind, parent, body, gravity), q, qd, qdd, fext, workspace(kind.shape[0]), tau)
-    return tau if status == OK else None
-
-
-@jit
+@_doc
 def singular_joint(kind, parent, body, gravity, q, qd, tau, fext):
     """``(joint, cond)`` of the first joint of the state the singularity rule refuses, or ``(-1, 0.0)``.
 
     Parameters
     ----------
-    kind, parent : numpy.ndarray of int, shape (N,)
-        Joint kind codes and parent indices (:func:`tables`).
-    body : numpy.ndarray, shape (N, 8)
-        Per body: joint placement ``(x, y, cos φ, sin φ)``, mass, centre of mass, inertia (:func:`tables`).
-    gravity : numpy.ndarray, shape (2,)
-        Gravity (m/s²).
-    q, qd : numpy.ndarray, shape (nq,)
-        Joint positions and velocities (float64).
-    tau : numpy.ndarray, shape (nq,)
-        Joint forces.
+    {tables}
+    q, qd, tau : numpy.ndarray, shape (nq,)
+        Joint positions, velocities and forces (float64).
     fext : numpy.ndarray, shape (N, 3) or None
         External world wrenches at the origin.
 
@@ -768,11 +742,30 @@ def _pool():
     return _POOL[0]
 
 
-def _many(inverse, kind, parent, body, gravity, x, y, z, fext):
-    """:func:`_range` on the B states, in one run per thread of whole blocks (the kernels release the GIL).
+@_doc
+def dynamics_many(inverse, kind, parent, body, gravity, x, y, z, fext):
+    """``(out, declined)`` of B states, :func:`dynamics_one` of each: ``out`` (B, nq) is valid when ``declined`` is -1.
 
+    Else ``declined`` is the first state that did not succeed (see the module).  :func:`_range`
+    runs on the B states, in one run per thread of whole blocks (the kernels release the GIL):
     Python's threads, which sleep while they wait, rather than numba's OpenMP ones, which spin: on a
     machine busy with other work the spinning cost 3× the time of one thread (N = 10, 10⁴ states, 2 cores).
+
+    Parameters
+    ----------
+    inverse : bool
+        Inverse dynamics instead of forward.
+    {tables}
+    x, y, z : numpy.ndarray, shape (B, nq)
+        Joint positions, velocities, and forces (forward) or accelerations (inverse) of B
+        states (C-contiguous float64).
+    fext : numpy.ndarray, shape (B, N, 3) or None
+        External world wrenches at the origin.
+
+    Returns
+    -------
+    tuple
+        ``(out, declined)``: ``q̈`` or ``τ`` (B, nq), and -1 or the first state declined.
     """
     out = np.empty(x.shape)
     B, model = x.shape[0], (kind, parent, body, gravity)
@@ -784,58 +777,3 @@ def _many(inverse, kind, parent, body, gravity, x, y, z, fext):
     runs = [(r * nblocks // n * BLOCK, min(B, (r + 1) * nblocks // n * BLOCK)) for r in range(n)]
     firsts = list(_pool().map(lambda run: _range(inverse, model, x, y, z, fext, out, *run), runs))
     return out, next((b for b, (lo, hi) in zip(firsts, runs) if b < hi), -1)
-
-
-def forward_dynamics_many(kind, parent, body, gravity, q, qd, tau, fext):
-    """``(q̈, declined)`` of B states (C-contiguous float64 (B, nq), ``fext`` (B, N, 3) or None).
-
-    ``q̈`` (B, nq) is valid when ``declined`` is -1, else ``declined`` is the first state
-    that did not succeed (see the module).
-
-    Parameters
-    ----------
-    kind, parent : numpy.ndarray of int, shape (N,)
-        Joint kind codes and parent indices (:func:`tables`).
-    body : numpy.ndarray, shape (N, 8)
-        Per body: joint placement ``(x, y, cos φ, sin φ)``, mass, centre of mass, inertia (:func:`tables`).
-    gravity : numpy.ndarray, shape (2,)
-        Gravity (m/s²).
-    q, qd : numpy.ndarray, shape (B, nq)
-        Joint positions and velocities of B states (C-contiguous float64).
-    tau : numpy.ndarray, shape (B, nq)
-        Joint forces.
-    fext : numpy.ndarray, shape (B, N, 3) or None
-        External world wrenches at the origin.
-
-    Returns
-    -------
-    tuple
-        ``(q̈, declined)``.
-    """
-    return _many(False, kind, parent, body, gravity, q, qd, tau, fext)
-
-
-def inverse_dynamics_many(kind, parent, body, gravity, q, qd, qdd, fext):
-    """``(τ, declined)`` of B states (C-contiguous float64 (B, nq), ``fext`` (B, N, 3) or None), as above.
-
-    Parameters
-    ----------
-    kind, parent : numpy.ndarray of int, shape (N,)
-        Joint kind codes and parent indices (:func:`tables`).
-    body : numpy.ndarray, shape (N, 8)
-        Per body: joint placement ``(x, y, cos φ, sin φ)``, mass, centre of mass, inertia (:func:`tables`).
-    gravity : numpy.ndarray, shape (2,)
-        Gravity (m/s²).
-    q, qd : numpy.ndarray, shape (B, nq)
-        Joint positions and velocities of B states (C-contiguous float64).
-    qdd : numpy.ndarray, shape (B, nq)
-        Joint accelerations.
-    fext : numpy.ndarray, shape (B, N, 3) or None
-        External world wrenches at the origin.
-
-    Returns
-    -------
-    tuple
-        ``(τ, declined)``.
-    """
-    return _many(True, kind, parent, body, gravity, q, qd, qdd, fext)
