@@ -415,6 +415,18 @@ def _tmul(X: np.ndarray, v: np.ndarray) -> np.ndarray:
     return (_tr(X) @ v[..., None])[..., 0]
 
 
+def _components(X, v, names: str) -> np.ndarray:
+    """``Xᵀ v`` of a space and a screw given by the caller, validated under their ``names`` (6.61-6.62)."""
+    return _tmul(_space(X, names[0]), _vec(v, names[1]))
+
+
+def _combine(X, x, Y, y, names: tuple) -> np.ndarray:
+    """``X x + Y y``: a screw from its components ``x, y`` (validated, named ``names``) along two spaces (6.38, 6.44)."""
+    x = as_array(x, names[0], (X.shape[-1],))
+    y = as_array(y, names[1], (Y.shape[-1],))
+    return (X @ x[..., None])[..., 0] + (Y @ y[..., None])[..., 0]
+
+
 # ----------------------------------------------------------------------------- kernels (unchecked arguments)
 def _gram(A: np.ndarray, s: np.ndarray, point=None):
     """``(A s, sᵀ A s, cond)``: the joint-space inertia (6.67) and its condition number (:func:`joint_cond`).
@@ -628,7 +640,7 @@ def active_force(s, f) -> np.ndarray:
     >>> active_force([0.0, 0.0, 1.0], [1.0, 2.0, 3.0])   # the moment about the pivot
     array([3.])
     """
-    return _tmul(_space(s, "s"), _vec(f, "f"))
+    return _components(s, f, "sf")
 
 
 @overflow_checked("U or f")
@@ -652,7 +664,7 @@ def reaction_force(U, f) -> np.ndarray:
     >>> reaction_force(np.eye(3)[:, :2], [1.0, 2.0, 3.0])
     array([1., 2.])
     """
-    return _tmul(_space(U, "U"), _vec(f, "f"))
+    return _components(U, f, "Uf")
 
 
 @overflow_checked("T or a")
@@ -676,7 +688,7 @@ def active_acceleration(T, a) -> np.ndarray:
     >>> active_acceleration([0.0, 0.8, 1.0], [0.0, 0.0, 2.0])
     array([2.])
     """
-    return _tmul(_space(T, "T"), _vec(a, "a"))
+    return _components(T, a, "Ta")
 
 
 @overflow_checked("R or a")
@@ -700,7 +712,7 @@ def reactive_acceleration(R, a) -> np.ndarray:
     >>> reactive_acceleration([[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]], [0.0, 0.0, 2.0])  # pin at origin
     array([0., 0.])
     """
-    return _tmul(_space(R, "R"), _vec(a, "a"))
+    return _components(R, a, "Ra")
 
 
 # ----------------------------------------------------------------------------- projectors
@@ -739,7 +751,7 @@ def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 
 @overflow_checked("A or s or R")
 def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
-    """The complementary twist projectors ``(s Tᵀ, U Rᵀ)``, summing to 1 (dual of thesis 6.75).
+    """The complementary twist projectors ``(s Tᵀ, U Rᵀ)``, summing to 1: the transposes of :func:`wrench_projectors` (dual of thesis 6.75).
 
     ``s Tᵀ a = s ψ`` is the joint part of an acceleration, ``U Rᵀ a = U γ``
     its reactive part (6.44, 6.62; ``U Rᵀ`` is the projection of 6.108).
@@ -766,8 +778,7 @@ def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
            [0., 0., 0.],
            [0., 0., 1.]])
     """
-    d = Decomposition(A, s, R)
-    return d.s @ _tr(d.T), d.U @ _tr(d.R)
+    return tuple(_tr(P) for P in wrench_projectors(A, s, R))     # (T sᵀ)ᵀ, (R Uᵀ)ᵀ: the duality
 
 
 # ----------------------------------------------------------------------------- inertias
@@ -1121,9 +1132,7 @@ class Decomposition:
         >>> dec.join_wrench([1.0], [0.0, -0.8]) + 0.0
         array([0., 0., 1.])
         """
-        Q = as_array(Q, "Q", (self.s.shape[-1],))
-        mu = as_array(mu, "mu", (self.R.shape[-1],))
-        return (self.T @ Q[..., None])[..., 0] + (self.R @ mu[..., None])[..., 0]
+        return _combine(self.T, Q, self.R, mu, ("Q", "mu"))
 
     def split_twist(self, a) -> tuple[np.ndarray, np.ndarray]:
         """``(ψ, γ) = (Tᵀa, Rᵀa)`` so that ``a = s ψ + U γ`` (thesis 6.44, 6.62).
@@ -1187,9 +1196,7 @@ class Decomposition:
         >>> dec.join_twist([1.0], [0.0, 0.0])
         array([0., 0., 1.])
         """
-        psi = as_array(psi, "psi", (self.s.shape[-1],))
-        gamma = as_array(gamma, "gamma", (self.R.shape[-1],))
-        return (self.s @ psi[..., None])[..., 0] + (self.U @ gamma[..., None])[..., 0]
+        return _combine(self.s, psi, self.U, gamma, ("psi", "gamma"))
 
     def __repr__(self) -> str:
         return (f"Decomposition(k={self.s.shape[-1]}, batch={self.A.shape[:-2]}, "

@@ -1189,7 +1189,8 @@ class Twist(_Screw):
     A twist *is* its pole in homogeneous coordinates (thesis 5.51): ``.pole``
     returns that point.  The zero twist (no motion) is a legal value but has
     no pole.  Build one from its coordinates, or by name with :meth:`rotation`
-    and :meth:`translation`.
+    and :meth:`translation`; ``.at(P)`` is the same motion at the point ``P``,
+    ``X_P v`` (thesis 4.8).
 
     Parameters
     ----------
@@ -1320,7 +1321,8 @@ class Wrench(_Screw):
     Magnitude choice: ``.magnitude`` is ``F = |f|`` (thesis 4.22) also for a
     pure couple, where it is 0; a couple's strength is its moment ``.moment``
     (``τz``, the same at every point).  ``.distance`` of a couple is ``±inf``.
-    Build one from its coordinates, or by name with :meth:`force` and :meth:`couple`.
+    Build one from its coordinates, or by name with :meth:`force` and :meth:`couple`;
+    ``.at(P)`` is the same load at the point ``P``, ``X_P⁻ᵀ f`` (thesis 4.24, 4.26).
 
     Parameters
     ----------
