@@ -130,3 +130,47 @@ def test_special_decompositions_broadcast_and_scale():
     for fn, x in ((conics.decompose_point_special, P), (conics.decompose_line_special, C @ P)):
         u = _strict(fn, C, x, Q1 * 1e300, Q2, Q3)
         np.testing.assert_allclose(u, [ref[0] / 1e300, ref[1], ref[2]], rtol=1e-14)
+
+
+# --------------------------------------------------------------------------- a blow of any magnitude
+from planargeo.mechanics.impulse import impulse_response, moved_points  # noqa: E402
+from planargeo.screws.twists import inertia_matrix  # noqa: E402
+
+ROD = inertia_matrix(3.0, [1.0, 0.0], 1.0)          # the docstring's rod: m = 3, L = 2, pivot at the origin
+
+
+@pytest.mark.parametrize("support", [None, [0.0, 0.0, 1.0]])
+@pytest.mark.parametrize("j0, k", [([0.3, -0.7, 0.45], -1070), ([0.3, -0.7, 0.45], -1040),
+                                   ([0.0, 0.75, 0.75], 1024), ([0.3, -0.7, 0.45], 0)])
+def test_a_blow_is_linear_down_to_subnormals_and_up_to_the_largest_float(j0, k, support):
+    """Δv and ĵᵣ are linear in ĵ (thesis 6.63, 6.93): the blow 2^k ĵ₀ gives 2^k times the answer for ĵ₀, rounded
+    once.  Before, a subnormal blow lost digits in every product (2^-1070: 3 significant bits), and
+    ĵ = 2^1024 (0, 0.75, 0.75) gave Δv = inf through 1.33 · 1.35e308 (the true ω̇ component is 4.5e307)."""
+    with np.errstate(under="ignore"):
+        j = np.ldexp(np.array(j0), k)                  # the blow as given (a subnormal keeps fewer digits)
+        ref_dv, ref_r = impulse_response(ROD, np.ldexp(j, -k), support)   # the same blow, scaled exactly to ~1
+        want_dv, want_r = np.ldexp(ref_dv, k), np.ldexp(ref_r, k)
+        dv, r = _strict(impulse_response, ROD, j, support)
+    assert np.array_equal(dv, want_dv) and np.array_equal(r, want_r)
+
+
+def test_a_blow_beyond_double_precision_is_refused_in_words():
+    tiny = inertia_matrix(1e-300, [1.0, 0.0], 1e-300)
+    with pytest.raises(NumericOverflowError, match="impulse"):
+        _strict(impulse_response, tiny, [0.0, 1e300, 0.0])
+
+
+def test_moved_points_turn_about_the_pole_and_shift_in_a_translation():
+    """p(t) = P + R(ωt)(p₀ − P) with the pole P = (−v_y, v_x)/ω (the explorer's old formula) for an ordinary
+    turn; p₀ + v t for a translation; and a subnormal ω (the pole beyond 1e308) is the translation's limit."""
+    pts = np.array([[0.0, 0.0], [0.9, 0.0], [0.9, 0.04], [-0.2, 0.3]])
+    dv, t = np.array([0.4, -1.1, 2.3]), 0.7
+    P = np.array([-dv[1], dv[0]]) / dv[2]
+    c, s = np.cos(dv[2] * t), np.sin(dv[2] * t)
+    np.testing.assert_allclose(moved_points(dv, pts, t), (pts - P) @ np.array([[c, s], [-s, c]]) + P, atol=1e-14)
+    np.testing.assert_array_equal(moved_points([1.5, -2.0, 0.0], pts, t), pts + t * np.array([1.5, -2.0]))
+    for w in (5e-324, -1e-310, 1e-9):
+        got = _strict(moved_points, [1.5, -2.0, w], pts, 3.0)
+        np.testing.assert_allclose(got, pts + 3.0 * np.array([1.5, -2.0]), atol=1e-7)
+    with pytest.raises(NumericOverflowError):
+        _strict(moved_points, [1e308, 0.0, 0.0], pts, 1e10)
