@@ -108,13 +108,6 @@ def _case(name: str) -> SpecialCase:
     return SpecialCase(name, f"{text} ({eq})", eq)
 
 
-def _single(x, name: str) -> np.ndarray:
-    a = as_vec3(getattr(x, "array", x), name)
-    if a.shape != (3,):
-        raise ShapeError(f"{name} must have shape (3,), got shape {a.shape}")
-    return _fit(a + 0.0)            # rescaled exactly (a power of two): no overflow in products
-
-
 def _raw(x, name: str) -> np.ndarray:
     a = as_vec3(getattr(x, "array", x), name)
     if a.shape != (3,):
@@ -122,8 +115,37 @@ def _raw(x, name: str) -> np.ndarray:
     return a + 0.0
 
 
+def _single(x, name: str) -> np.ndarray:
+    return _fit(_raw(x, name))      # rescaled exactly (a power of two): no overflow in products
+
+
 def _small(x: float, scale: float, rtol: float) -> bool:
     return abs(x) <= rtol * scale
+
+
+def _one(x, name: str, rtol, cases: tuple, part) -> SpecialCase:
+    """The case of one twist (a point) or wrench (a line) ``x``: ``cases`` = (zero, ideal, finite), ideal when
+    ``part`` of it (a twist's weight ``ω``, a wrench's force ``F``) is zero relative to its size."""
+    a, rtol = _single(x, name), check_tolerance(rtol)
+    n = float(np.linalg.norm(a))
+    if n == 0:
+        return _case(cases[0])
+    return _case(cases[1] if _small(part(a), n, rtol) else cases[2])
+
+
+def _two(x1, x2, names: str, rtol) -> tuple:
+    """``(A, B, A + B, max(|A|, |B|), rtol, whether the sum is zero)`` of two twists or two wrenches."""
+    A, B, rtol = _raw(x1, names[:2]), _raw(x2, names[2:]), check_tolerance(rtol)
+    s = A + B
+    big = max(np.linalg.norm(A), np.linalg.norm(B))
+    return A, B, s, big, rtol, _small(np.linalg.norm(s), big, rtol)
+
+
+def _coincide(A: np.ndarray, B: np.ndarray, rtol) -> bool:
+    """Whether two non-zero twists have one pole (two wrenches one line): their join (meet) ``A × B`` vanishes."""
+    a, b = _fit(A + 0.0), _fit(B + 0.0)
+    return bool(np.any(a) and np.any(b) and _small(np.linalg.norm(np.cross(a, b)),
+                                                   np.linalg.norm(a) * np.linalg.norm(b), rtol))
 
 
 def twist_case(v, rtol: float = 1e-12) -> SpecialCase:
@@ -154,11 +176,7 @@ def twist_case(v, rtol: float = 1e-12) -> SpecialCase:
     >>> twist_case([0.0, 0.0, 0.0]).name, twist_case([1.0, 2.0, 1e-17]).name
     ('zero_twist', 'pure_translation')
     """
-    a, rtol = _single(v, "v"), check_tolerance(rtol)
-    n = float(np.linalg.norm(a))
-    if n == 0:
-        return _case("zero_twist")
-    return _case("pure_translation" if _small(a[2], n, rtol) else "pure_rotation")
+    return _one(v, "v", rtol, ("zero_twist", "pure_translation", "pure_rotation"), lambda a: a[2])
 
 
 def wrench_case(f, rtol: float = 1e-12) -> SpecialCase:
@@ -188,11 +206,7 @@ def wrench_case(f, rtol: float = 1e-12) -> SpecialCase:
     >>> wrench_case([0.0, 0.0, -2.0]).name, wrench_case([0.0, 1.0, 2.0]).name
     ('pure_couple', 'pure_force')
     """
-    a, rtol = _single(f, "f"), check_tolerance(rtol)
-    n = float(np.linalg.norm(a))
-    if n == 0:
-        return _case("zero_wrench")
-    return _case("pure_couple" if _small(np.hypot(a[0], a[1]), n, rtol) else "pure_force")
+    return _one(f, "f", rtol, ("zero_wrench", "pure_couple", "pure_force"), lambda a: np.hypot(a[0], a[1]))
 
 
 def pair_case(v, f, rtol: float = 1e-12) -> SpecialCase:
@@ -266,14 +280,10 @@ def twists_case(v1, v2, rtol: float = 1e-12) -> SpecialCase:
     >>> twists_case([1.0, 0.0, 1.0], [2.0, 0.0, 2.0]).name      # one pole (0, 1), twice the rate
     'coincident_poles'
     """
-    A, B, rtol = _raw(v1, "v1"), _raw(v2, "v2"), check_tolerance(rtol)
-    s = A + B
-    big = max(np.linalg.norm(A), np.linalg.norm(B))
-    if _small(np.linalg.norm(s), big, rtol):
+    A, B, s, big, rtol, zero = _two(v1, v2, "v1v2", rtol)
+    if zero:
         return _case("zero_sum")
-    a, b = _fit(A + 0.0), _fit(B + 0.0)
-    if np.any(a) and np.any(b) and _small(np.linalg.norm(np.cross(a, b)),
-                                          np.linalg.norm(a) * np.linalg.norm(b), rtol):
+    if _coincide(A, B, rtol):
         return _case("coincident_poles")
     r1 = bool(np.any(A)) and not _small(A[2], np.linalg.norm(A), rtol)
     r2 = bool(np.any(B)) and not _small(B[2], np.linalg.norm(B), rtol)
@@ -314,10 +324,8 @@ def wrenches_case(f1, f2, rtol: float = 1e-12) -> SpecialCase:
     >>> wrenches_case([0.0, 1.0, 0.0], [0.0, -1.0, 2.0]).name   # up on x = 0, down on x = 2
     'couple_from_forces'
     """
-    A, B, rtol = _raw(f1, "f1"), _raw(f2, "f2"), check_tolerance(rtol)
-    s = A + B
-    big = max(np.linalg.norm(A), np.linalg.norm(B))
-    if _small(np.linalg.norm(s), big, rtol):
+    A, B, s, big, rtol, zero = _two(f1, f2, "f1f2", rtol)
+    if zero:
         return _case("zero_sum")
     F1, F2 = float(np.hypot(A[0], A[1])), float(np.hypot(B[0], B[1]))
     c1 = not np.any(A) or _small(F1, np.linalg.norm(A), rtol)
@@ -326,8 +334,7 @@ def wrenches_case(f1, f2, rtol: float = 1e-12) -> SpecialCase:
         return _case("couples")
     if c1 or c2:
         return _case("force_couple")
-    a, b = _fit(A + 0.0), _fit(B + 0.0)
-    if _small(np.linalg.norm(np.cross(a, b)), np.linalg.norm(a) * np.linalg.norm(b), rtol):
+    if _coincide(A, B, rtol):
         return _case("same_line")
     if _small(A[0] * B[1] - A[1] * B[0], F1 * F2, rtol):
         return _case("couple_from_forces" if _small(np.hypot(s[0], s[1]), max(F1, F2), rtol)
