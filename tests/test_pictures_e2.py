@@ -119,3 +119,45 @@ def test_impulse_a_blow_through_the_centre_of_mass_of_a_free_body_has_its_pole_a
     assert "mark" not in kinds and "arrow" in kinds
     assert "at infinity" in els["pole"]["desc"]
     assert [p["text"] for p in els["pole"]["parts"] if p["p"] == "text"] == ["v (pole) at ∞"]
+
+
+# ------------------------------------------------------------------------------------------ splitting
+def test_splitting_thesis_example_7_5_poles_by_hand():
+    """Two bodies (ρ = L/2, φ = 45°), a couple on the tip: body 1 turns about its pin (0, 0); the pole of a₂
+    lies on the x axis at x/L = 1 + 2η² cos φ / (4 + 5η²) with η = 2 (7.48), by hand here."""
+    from planargeo.widgets import SplittingExplorer
+
+    ex = SplittingExplorer(display="agg")
+    pic = ex.picture()
+    assert problems(pic) == []
+    els = elements(pic)
+    x = 1 + 2 * 4 * np.cos(np.radians(45.0)) / (4 + 5 * 4)
+    assert _marks(els["a2"]) == [pytest.approx((x, 0.0), abs=1e-5)]
+    assert _marks(els["a1"]) == [pytest.approx((0.0, 0.0), abs=1e-5)]
+    assert _marks(els["centre"]) == [pytest.approx((0.0, 0.0), abs=1e-5)]
+    assert _marks(els["split"]) == [pytest.approx((1.0, 0.0), abs=1e-5)]
+    (lower,) = _paths(els["lower"])
+    (upper,) = _paths(els["upper"])
+    np.testing.assert_allclose(lower, [[0, 0], [1, 0]], atol=1e-5)
+    np.testing.assert_allclose(upper, [[1, 0], [1 + np.sqrt(0.5), np.sqrt(0.5)]], atol=1e-5)
+    assert [p["p"] for p in els["couple"]["parts"]][0] == "glyph"              # the couple: line at infinity
+    assert els["couple"]["symbol"] == "−f₃" and "(7.44)" in els["couple"]["desc"]
+    assert fill(pic, ex.mechanism_points()) >= 1 / 3
+
+
+def test_splitting_a_translating_body_has_its_pole_at_infinity():
+    """A straight chain of 3 under gravity alone, split at joint 3: whatever translates has an ideal pole
+    (an edge arrow, 'at ∞'), every element keeps its symbol and description."""
+    from planargeo.widgets import SplittingExplorer
+
+    ex = SplittingExplorer(display="agg", **{"bodies n": 3, "bend φ (deg)": 0.0, "g (m/s²)": 9.81,
+                                             "couple τ (N·m)": 0.0})
+    assert ex.message == ""
+    pic = ex.picture()
+    assert problems(pic) == []
+    els = elements(pic)
+    assert "pole at (0, 0) m" in els["a1"]["desc"]            # body 1 held at its pin, turning
+    ideal = [k for k in ("a2", "a3") if k in els and "at infinity" in els[k]["desc"]]
+    assert ideal == ["a2", "a3"]                                 # the free-floating pair falls, translating
+    for k in ideal:
+        assert not any(p["p"] == "mark" for p in els[k]["parts"]) and any(p["p"] == "arrow" for p in els[k]["parts"])

@@ -47,7 +47,7 @@ def test_the_folded_chain_stays_in_a_view_as_big_as_it(n, phi):
     ex = SplittingExplorer(display="agg", **{"bodies n": n, "bend φ (deg)": phi})
     assert ex.message == ""
     pts = ex.state["joints"]
-    (x0, x1), (y0, y1) = ex.ax.get_xlim(), ex.ax.get_ylim()
+    x0, x1, y0, y1 = ex.picture()["box"]
     assert np.all((x0 <= pts[:, 0]) & (pts[:, 0] <= x1) & (y0 <= pts[:, 1]) & (pts[:, 1] <= y1))
     size = max(float(np.max(np.ptp(pts, axis=0))), 1.0)              # at least a body's length
     assert min(x1 - x0, y1 - y0) >= size

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from planargeo import scenes
-from planargeo.draw.layout import legibility_problems
+from _picture_checks import elements, label_boxes, problems
 from planargeo.errors import InputError, SceneError
 from planargeo.widgets import SplittingExplorer
 from planargeo.widgets.splitting import x_over_L_7_48
@@ -67,8 +67,10 @@ def kkt_mobility(n, rho, phi):
 
 
 def _legible(ex):
+    """Shown; every element of the picture has its symbol and description; no two labels overlap."""
     assert ex.message == ""
-    assert legibility_problems(ex.fig) == []
+    found = problems(ex.picture())
+    assert found == [], found
 
 
 def test_thesis_example_7_5_in_the_readout():
@@ -149,7 +151,7 @@ def test_display_control_and_exports(tmp_path):
     ex = SplittingExplorer(display="agg")
     n = ex.n_computes
     ex.set(**{"mobility centres": False})
-    assert ex.n_computes == n and not ex.centre.get_visible()
+    assert ex.n_computes == n and "centre" not in elements(ex.picture())
     _legible(ex)
     assert ex.export_svg(tmp_path / "s.svg").stat().st_size > 1000
     assert ex.export_png(tmp_path / "s.png").stat().st_size > 1000
@@ -161,31 +163,31 @@ def test_focus_fades_the_other_side():
     n = ex.n_computes
     ex.set(focus="free-floating part")
     assert ex.message == ""
-    assert ex.lower.get_alpha() < ex.upper.get_alpha()
+    els = elements(ex.picture())
+    assert els["lower"]["opacity"] < els["upper"]["opacity"]
+    assert els["a1"].get("opacity", 1.0) < 1.0 and els["a4"].get("opacity", 1.0) == 1.0
     _legible(ex)
     ex.set(focus="constrained part")
-    assert ex.lower.get_alpha() > ex.upper.get_alpha()
+    els = elements(ex.picture())
+    assert els["lower"]["opacity"] > els["upper"]["opacity"]
     _legible(ex)
 
 
 def test_every_pole_is_shown_and_labelled_in_or_out_of_view():
     """A pole outside the view is a labelled arrow at the edge (issue 13), each with its symbol a_k."""
-    from matplotlib.text import Text
-
     ex = SplittingExplorer(display="agg", **{"bodies n": 8, "split at joint": 6, "bend φ (deg)": 10.0})
     assert ex.message == ""
-    (x0, x1), (y0, y1) = ex.ax.get_xlim(), ex.ax.get_ylim()
-    off = [b for b, a in enumerate(ex.poles[:8])
-           if a.get_xy() is None or not (x0 <= a.get_xy()[0] <= x1 and y0 <= a.get_xy()[1] <= y1)]
-    assert off and all(ex.poles[b].get_visible() for b in range(8))
-    assert not any(a.get_visible() for a in ex.poles[8:])
-    ex.fig.canvas.draw()
-    bb = ex.ax.get_window_extent()
-    shown = {t.get_text(): t.get_window_extent() for t in ex.fig.findobj(Text)
-             if t.get_visible() and t.get_text().startswith("$a_")}
-    for b in range(8):                                    # every pole's symbol is drawn, inside the axes
-        sym = f"$a_{{{b + 1}}}$"
-        assert sym in shown, sym
-        e = shown[sym]
-        assert bb.x0 <= e.x0 and e.x1 <= bb.x1 and bb.y0 <= e.y0 and e.y1 <= bb.y1, sym
+    pic = ex.picture()
+    els = elements(pic)
+    assert [f"a{b + 1}" in els for b in range(8)] == [True] * 8 and "a9" not in els
+    off = [b for b in range(8) if not any(p["p"] == "mark" for p in els[f"a{b + 1}"]["parts"])]
+    assert off and all(any(p["p"] == "arrow" for p in els[f"a{b + 1}"]["parts"]) for b in off)
+    w, h = pic["size"]
+    ml, mr, mt, mb = pic["margin"]
+    shown = {text: box for _id, text, box in label_boxes(pic)}
+    for b in range(8):                                    # every pole's symbol is drawn, inside the plot area
+        sym = f"a{str(b + 1).translate(str.maketrans('0123456789', '₀₁₂₃₄₅₆₇₈₉'))}"
+        (text,) = [t for t in shown if t == sym or t.startswith(sym + " ")]
+        x0, y0, x1, y1 = shown[text]
+        assert -0.5 <= x0 and x1 <= w - ml - mr + 0.5 and -0.5 <= y0 and y1 <= h - mt - mb + 0.5, text
     _legible(ex)

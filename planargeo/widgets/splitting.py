@@ -32,6 +32,8 @@ import numpy as np
 from matplotlib.lines import Line2D
 
 from planargeo.draw.artists import LineArtist, PointArtist
+from planargeo.draw.pictures.articulated import fit_box
+from planargeo.draw.pictures.splitting import splitting_picture
 from planargeo.draw.style import COLORS, OKABE_ITO
 from planargeo.scenes.articulated import bent_chain_model
 from planargeo.scenes.splitting import splitting_state, twist_pole
@@ -457,6 +459,65 @@ class SplittingExplorer(Explorer):
             (lab["f"], line_candidates(f, (x0, x1, y0, y1))),
             (lab["centre"], point_candidates(c) if show_c else []),
         ])
+        return self.readout_of(st)
+
+    def view_box(self, st) -> tuple[float, float, float, float]:
+        """The view: every joint and the split force's arrow; the poles at the split and the centre when near.
+
+        Parameters
+        ----------
+        st : dict
+            A state from :meth:`compute`.
+
+        Returns
+        -------
+        tuple
+            ``(x0, x1, y0, y1)``.
+        """
+        i = st["split"]
+        pts = st["joints"]
+        f = st["f_split"]
+        fxy = math.hypot(f[0], f[1])
+        mech = [pts] + ([[pts[i] + 0.6 * np.array(f[:2]) / fxy]] if fxy > 0 else [])
+        extra = [[p] for p in (twist_pole(st["a"][b]) for b in (i - 1, i)) if p is not None]
+        c = st["centres"][i - 1]
+        if bool(self.values["mobility centres"]) and bool(np.all(np.isfinite(c))):
+            extra.append([c])
+        return fit_box(np.vstack(mech), np.vstack(extra) if extra else (), margin=0.15)
+
+    def scene_picture(self, st, view=None):
+        """The state's picture, built natively (:func:`planargeo.draw.pictures.splitting.splitting_picture`).
+
+        Parameters
+        ----------
+        st : dict
+            A state from :meth:`compute`.
+        view : (x0, x1, y0, y1), optional
+            The view the user zoomed or panned to (default: :meth:`view_box`).
+
+        Returns
+        -------
+        Picture
+        """
+        v = self.values
+        return splitting_picture(st, view=view or self.view_box(st), focus=v.get("focus", "all"),
+                                 centres=bool(v["mobility centres"]), size=self.figure_px)
+
+    def readout_of(self, st):
+        """The readout of the state ``st`` (the split's accelerations and force, ``Λᵢ⁻¹``, ``bᵢ``, ``q̈``).
+
+        Parameters
+        ----------
+        st : dict
+            A state from :meth:`compute`.
+
+        Returns
+        -------
+        dict
+            Readout values (units in :attr:`units`).
+        """
+        n, i = st["n"], st["split"]
+        f = st["f_split"]
         w = self.controls["split at joint"]           # the split slider spans the chain's joints 2..n
         if w.max != n:
             with self._quietly():

@@ -1,0 +1,137 @@
+"""The picture of the splitting explorer's state: a pinned chain split at a joint, its poles and the split force.
+
+What :class:`planargeo.widgets.splitting.SplittingExplorer` shows (thesis 7.4–7.6), from
+one state of :func:`planargeo.scenes.splitting.splitting_state`:
+
+* the constrained chain ``1…i`` and the free-floating chain ``i+1…n`` in two colours,
+  the pins, the ground pin and the split joint ``i+1``;
+* the force of the split joint ``fᵢ₊₁`` (7.56), a line, and the couple ``−fₙ₊₁`` on the
+  tip (7.44), the line at infinity;
+* the acceleration pole of every body ``aⱼ`` (4.6, chain splitting at every joint, 7.6);
+* the centre of ``Λᵢ⁻¹``: where a couple on body ``i`` alone turns it (section 7.5).
+
+A focus on one side fades the other.
+
+Examples
+--------
+>>> import math
+>>> import numpy as np
+>>> from planargeo.scenes.articulated import bent_chain_model
+>>> from planargeo.scenes.splitting import splitting_state
+>>> st = splitting_state(bent_chain_model(2, 0.5, 1.0, 1.0, 0.0), np.array([0.0, math.pi / 4]), 1, 1.0)
+>>> st.update(n=2, split=1)
+>>> d = splitting_picture(st, view=(-0.5, 2.0, -1.0, 1.0)).to_dict()
+>>> [e["symbol"] for e in d["elements"] if e["id"] in ("a1", "a2")]
+['a₁', 'a₂']
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo.draw.picture import PX_PER_PT, Picture
+from planargeo.draw.pictures._words import SUB, force, labelled_line, num, pair, where
+from planargeo.draw.style import COLORS, OKABE_ITO
+from planargeo.scenes.splitting import twist_pole
+
+__all__ = ["splitting_picture", "LOWER", "UPPER", "FADED", "CUT"]
+
+LOWER, UPPER = OKABE_ITO["blue"], OKABE_ITO["vermillion"]
+#: the split joint's ring
+CUT = "#b00020"
+#: opacity of the side out of focus
+FADED = 0.2
+
+
+def _sub(j: int) -> str:
+    return str(j).translate(SUB)
+
+
+def _bodies(a: int, b: int) -> str:
+    return f"body {a}" if a == b else f"bodies {a}…{b}"
+
+
+def _acc(a) -> str:
+    return f"({num(a[0])} m/s², {num(a[1])} m/s², {num(a[2])} rad/s²)"
+
+
+def splitting_picture(st: dict, *, view, focus: str = "all", centres: bool = True,
+                      size=(760, 520)) -> Picture:
+    """The picture of one state of the splitting explorer (module docstring).
+
+    Parameters
+    ----------
+    st : dict
+        :func:`planargeo.scenes.splitting.splitting_state` with ``n`` and ``split`` (0-based
+        index ``i`` of the split joint ``i+1``).
+    view : (x0, x1, y0, y1)
+        What must be in view.
+    focus : {"all", "constrained part", "free-floating part"}
+        The side kept bright.
+    centres : bool
+        Draw the centre of ``Λᵢ⁻¹``.
+    size : (int, int)
+        Pixels.
+
+    Returns
+    -------
+    Picture
+    """
+    n, i = int(st["n"]), int(st["split"])
+    pts = np.asarray(st["joints"], float)
+    low, up = ((1.0, 1.0) if focus == "all" else (1.0, FADED) if focus == "constrained part" else (FADED, 1.0))
+    pic = Picture(view, size=size)
+    thick = 7.0 * PX_PER_PT
+    pic.path("lower", pts[:i + 1], role="body", color=LOWER, width=thick, symbol=f"1…{i}" if i > 1 else "1",
+             desc=f"the constrained chain below the split (7.4): {_bodies(1, i)}, 1 kg each", z=1)
+    pic.elements[-1]["opacity"] = 0.55 * low
+    pic.path("upper", pts[i:], role="body", color=UPPER, width=thick,
+             symbol=f"{i + 1}…{n}" if n > i + 1 else str(n),
+             desc=f"the free-floating chain above the split (7.4): {_bodies(i + 1, n)}, 1 kg each", z=1)
+    pic.elements[-1]["opacity"] = 0.55 * up
+    pic.marks("ground", [pts[0]], role="ground", color=COLORS["ground"], shape="s", size=9.0, symbol="CJ₁",
+              desc="joint 1, pinned to the ground: at (0, 0) m", z=3)
+    pic.marks("split", [pts[i]], role="body", color=CUT, size=15.0, symbol="split",
+              desc=f"the split joint i+1 = {i + 1} (7.4): at {pair(pts[i])} m", z=2)
+    el = pic.elements[-1]
+    el["parts"].append({"p": "text", "x": float(pts[i, 0]), "y": float(pts[i, 1]), "dx": 9.0, "dy": 9.0,
+                        "text": "split", "ha": "left", "va": "bottom"})
+    pic.marks("pins", pts[1:-1], role="body", color="#000000", size=5.0, symbol="joints",
+              desc=f"the joints between the bodies, L = 1 m apart: {n - 1} pins", z=4)
+    f = np.asarray(st["f_split"], float)
+    fs = f"f{_sub(i + 1)}"
+    labelled_line(pic, "f", f, fs, role="reaction", symbol=fs, anchor=pts[i], ahead=0.3,
+                  desc=f"force of the split joint {i + 1} on body {i + 1}, its line of action (7.56): {force(f)}")
+    tip = -np.asarray(st["f_tip"], float)
+    pic.line("couple", tip, role="wrench", symbol=f"−f{_sub(n + 1)}", label=f"−f{_sub(n + 1)} on the tip",
+             desc=f"the couple on the tip from a fictitious joint n+1 (7.44): {num(tip[2])} N·m")
+    poles = [twist_pole(a) for a in st["a"]]
+    hide = None
+    if poles[i - 1] is None and poles[i] is None:          # both translate the same way: one arrow says it
+        u, w = st["a"][i - 1][:2], st["a"][i][:2]
+        if abs(u[0] * w[1] - u[1] * w[0]) <= 0.2 * np.hypot(*u) * np.hypot(*w):
+            hide = i
+    for b in range(n):
+        if b == hide:
+            continue
+        a = np.array(st["a"][b], dtype=float)
+        if poles[b] is None:
+            a[2] = 0.0                                     # a translation: its pole is the ideal point
+        side = "the constrained chain" if b < i else "the free-floating chain"
+        pic.point(f"a{b + 1}", a, role="accel", color=LOWER if b < i else UPPER, glyph=False, size=6.0,
+                  symbol=f"a{_sub(b + 1)}",
+                  desc=f"acceleration of body {b + 1} ({side}) as its pole (4.6, 7.54): {_acc(st['a'][b])}, "
+                       f"pole {where(a)}")
+        if (b < i and low < 1) or (b >= i and up < 1):
+            pic.elements[-1]["opacity"] = FADED
+            for part in pic.elements[-1]["parts"]:
+                if part["p"] == "text":
+                    part["text"] = ""
+    c = np.asarray(st["centres"][i - 1], float)
+    if centres and bool(np.all(np.isfinite(c))):
+        pic.point("centre", [c[1], -c[0], 1.0], role="twist", glyph=False, shape="D", size=7.0,
+                  symbol=f"centre of Λ{_sub(i)}⁻¹",
+                  desc=f"where a couple on body {i} alone turns it: the pole of −Λ{_sub(i)}⁻¹ [0, 0, 1] "
+                       f"(section 7.5): at {pair(c)} m")
+    return pic
