@@ -33,7 +33,6 @@ import math
 
 import numpy as np
 
-from planargeo.draw.geometry import point_xy
 from planargeo.draw.picture import Picture
 from planargeo.draw.style import COLORS
 
@@ -74,18 +73,20 @@ FADED = 0.18
 
 
 def _where(p) -> str:
-    xy = point_xy(p)
-    if xy is None:
-        return "at infinity"
-    return f"at ({xy[0]:.3g}, {xy[1]:.3g}) m"
+    w = float(p[2])
+    if w != 0.0:                              # planargeo.draw.geometry.point_xy, on floats
+        x, y = -float(p[1]) / w, float(p[0]) / w
+        if math.isfinite(x) and math.isfinite(y):
+            return f"at ({x:.3g}, {y:.3g}) m"
+    return "at infinity"
 
 
 def _value(kind: str, x, unit: str) -> str:
     if kind == "point":
-        return f"rate {x[2]:.3g} {unit}, {_where(x)}"
+        return f"rate {float(x[2]):.3g} {unit}, {_where(x)}"
     if kind == "line":
-        return f"|force| {math.hypot(x[0], x[1]):.3g} {unit}" + (
-            " (a couple)" if x[0] == 0.0 and x[1] == 0.0 else "")
+        fx, fy = float(x[0]), float(x[1])
+        return f"|force| {math.hypot(fx, fy):.3g} {unit}" + (" (a couple)" if fx == 0.0 and fy == 0.0 else "")
     return ""
 
 
@@ -141,7 +142,7 @@ def chain_picture(w, *, overlays: dict, view, split: dict | None = None, focus=N
     for key, flag, sym, kind, per, role, color, meaning, eq, unit in LAYERS:
         if not overlays.get(flag) or key not in data:
             continue
-        arr = data[key]
+        arr = data[key] if kind == "conic" else np.asarray(data[key], float).tolist()   # floats: cheap rows
         for i in range(n):
             if key == "TQ" and not split["active_on"][i]:
                 continue

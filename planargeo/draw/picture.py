@@ -218,6 +218,15 @@ _ALIGN_X = {"left": 0.0, "center": 0.5, "right": 1.0}
 _ALIGN_Y = {"bottom": 0.0, "center": 0.5, "top": 1.0}
 _SPOT_FX = np.array([_ALIGN_X[a] for a in _SPOT_HA])
 _SPOT_FY = np.array([_ALIGN_Y[a] for a in _SPOT_VA])
+#: the eight spots as plain floats: (cos, sin, box's left edge and bottom in box sizes)
+_SPOTS = [(float(c), float(s), float(fx), float(fy))
+          for (c, s), fx, fy in zip(_SPOT_DIR, _SPOT_FX, _SPOT_FY)]
+#: cell size (px) of the grid the label placer keeps its placed boxes in
+_CELL = 48.0
+
+
+def _z_of(el: dict):
+    return el["z"]
 
 
 #: element keys left out of the data when they hold these values
@@ -277,6 +286,32 @@ class Picture:
         self._ids: set[str] = set()
 
     # ------------------------------------------------------------------ helpers
+    def copy(self) -> "Picture":
+        """A picture with the same view and elements, to which more can be added.
+
+        Elements and handles added to the copy do not reach this picture (the elements
+        themselves are shared: a builder that caches a picture hands out copies).
+
+        Returns
+        -------
+        Picture
+
+        Examples
+        --------
+        >>> a = Picture((0, 1, 0, 1), size=(100, 100))
+        >>> a.marks("m", [[0.5, 0.5]])
+        >>> b = a.copy()
+        >>> b.handle("h", (0.5, 0.5)); b.marks("n", [[0.2, 0.2]])
+        >>> len(a.elements), len(b.elements), len(a.handles), len(b.handles)
+        (1, 2, 0, 1)
+        """
+        out = object.__new__(Picture)
+        out.__dict__.update(self.__dict__)
+        out.elements = list(self.elements)
+        out.handles = list(self.handles)
+        out._ids = set(self._ids)
+        return out
+
     def to_px(self, xy) -> np.ndarray:
         """Pixel coordinates (from the plot area's lower left, y up) of data points.
 
@@ -364,42 +399,44 @@ class Picture:
         glyph_scale : float
             Glyph radius in pixels per unit ``|w|`` (clamped to [5, 22] px).
         """
-        p = np.asarray(p, dtype=float)
+        p0, p1, p2 = (float(v) for v in p)    # plain floats: a point costs microseconds
         color = _color(role, color)
         text = symbol if label is None else label
         st = STYLES.get(role, {})
         size = float(size if size is not None else st.get("markersize", 5.0) * PX_PER_PT)
         parts: list[dict] = []
         xy = None
-        if p[2] != 0.0 and np.any(p):
+        if p2 != 0.0 and (p0 or p1 or p2):
             x0, x1, y0, y1 = self.box
-            diag, c = math.hypot(x1 - x0, y1 - y0), ((x0 + x1) / 2, (y0 + y1) / 2)
-            with np.errstate(over="ignore"):
-                off = math.hypot(-p[1] - c[0] * p[2], p[0] - c[1] * p[2])
-            if off <= FAR * diag * abs(p[2]):
-                xy = point_xy(p)
+            diag, cx, cy = math.hypot(x1 - x0, y1 - y0), (x0 + x1) / 2, (y0 + y1) / 2
+            off = math.hypot(-p1 - cx * p2, p0 - cy * p2)
+            if off <= FAR * diag * abs(p2):
+                x, y = -p1 / p2, p0 / p2          # point_xy (planargeo.draw.geometry), on floats
+                if math.isfinite(x) and math.isfinite(y):
+                    xy = (x, y)
         if xy is not None:
-            x, y = float(xy[0]), float(xy[1])
-            q = self.to_px([x, y])
+            x, y = xy
+            qx, qy = (x - self.box[0]) * self.kx, (y - self.box[2]) * self.ky
             ml, mr, mt, mb = self.margin
             pw, ph = self.size[0] - ml - mr, self.size[1] - mt - mb
-            if -1 <= q[0] <= pw + 1 and -1 <= q[1] <= ph + 1:
+            if -1 <= qx <= pw + 1 and -1 <= qy <= ph + 1:
                 parts.append({"p": "mark", "x": x, "y": y, "shape": shape or st.get("marker", "o"),
                               "size": size})
-                r = float(np.clip(glyph_scale * abs(p[2]), 4.0, 16.0)) * PX_PER_PT
+                r = min(max(glyph_scale * abs(p2), 4.0), 16.0) * PX_PER_PT
                 if glyph:
-                    parts.append({"p": "glyph", "x": x, "y": y, "r": round(r, 2), "ccw": bool(p[2] > 0)})
+                    parts.append({"p": "glyph", "x": x, "y": y, "r": round(r, 2), "ccw": p2 > 0})
                 if text:
                     gap = (0.75 * r + 3.0) if glyph else size / 2 + 3.0
                     parts.append(self._label(text, x, y, gap, gap))
             else:
                 c = np.array([pw / 2, ph / 2])
+                q = np.array([qx, qy])
                 parts += self._edge_arrow(q - c, q - c, 22.0, text, infinite=False)
-        elif np.any(p):
-            a, b = float(p[0]), float(p[1])
-            n = np.array([-b * self.kx, a * self.ky]) * (-1.0 if p[2] < 0 else 1.0)
+        elif p0 or p1 or p2:
+            a, b = p0, p1
+            n = np.array([-b * self.kx, a * self.ky]) * (-1.0 if p2 < 0 else 1.0)
             t = np.array([a * self.kx, b * self.ky])
-            L = float(np.clip(glyph_scale * math.hypot(a, b), 12.0, 40.0)) * PX_PER_PT
+            L = min(max(glyph_scale * math.hypot(a, b), 12.0), 40.0) * PX_PER_PT
             parts += self._edge_arrow(n, t, L, text, infinite=True)
         self._add(id, role, symbol, desc, parts, color=color, z=7)
 
@@ -440,26 +477,29 @@ class Picture:
         text = symbol if label is None else label
         parts: list[dict] = []
         seg = clip_line(l, self.box)
-        F = math.hypot(l[0], l[1])
+        lx, ly = float(l[0]), float(l[1])
+        F = math.hypot(lx, ly)
         if seg is not None:
             parts.append({"p": "path", "xy": seg, "closed": False})
-            e = np.array([l[0], l[1]]) / F
-            c = np.array([(self.box[0] + self.box[1]) / 2, (self.box[2] + self.box[3]) / 2])
-            a = c if anchor is None else np.asarray(anchor, float)
-            foot = seg[0] + e * float((a - seg[0]) @ e)
-            lo, hi = sorted(float((s - seg[0]) @ e) for s in seg)
-            t = float(np.clip((foot - seg[0]) @ e, lo + 0.1 * (hi - lo), hi - 0.1 * (hi - lo)))
-            foot = seg[0] + e * t
-            ep = np.array([e[0] * self.kx, e[1] * self.ky])
-            ep /= math.hypot(*ep)
+            ex, ey = lx / F, ly / F
+            (sx, sy), (tx, ty) = seg.tolist()
+            if anchor is None:
+                ax, ay = (self.box[0] + self.box[1]) / 2, (self.box[2] + self.box[3]) / 2
+            else:
+                ax, ay = (float(v) for v in anchor)
+            t_end = (tx - sx) * ex + (ty - sy) * ey
+            lo, hi = min(0.0, t_end), max(0.0, t_end)
+            t = (ax - sx) * ex + (ay - sy) * ey
+            t = min(max(t, lo + 0.1 * (hi - lo)), hi - 0.1 * (hi - lo))
+            fx, fy = sx + ex * t, sy + ey * t
+            epx, epy = ex * self.kx, ey * self.ky
+            n_ep = math.hypot(epx, epy)
+            epx, epy = epx / n_ep, epy / n_ep
             if arrow:
-                parts.append({"p": "arrow", "x": float(foot[0]), "y": float(foot[1]),
-                              "dx": float(ep[0] * 24), "dy": float(ep[1] * 24)})
+                parts.append({"p": "arrow", "x": fx, "y": fy, "dx": epx * 24, "dy": epy * 24})
             if text:
-                nrm = np.array([-ep[1], ep[0]])
-                parts.append(self._label(text, float(foot[0]), float(foot[1]),
-                                         float(nrm[0] * 8 + ep[0] * 12), float(nrm[1] * 8 + ep[1] * 12)))
-        elif F == 0.0 and l[2] != 0.0:
+                parts.append(self._label(text, fx, fy, -epy * 8 + epx * 12, epx * 8 + epy * 12))
+        elif F == 0.0 and float(l[2]) != 0.0:
             x0, x1, y0, y1 = self.box
             x, y = x1 - 26 / self.kx, y1 - 26 / self.ky
             parts.append({"p": "glyph", "x": x, "y": y, "r": 12.0, "ccw": bool(l[2] > 0)})
@@ -645,45 +685,52 @@ class Picture:
 
         Labels are placed in drawing order, topmost first; each takes its asked spot, or
         the first of eight spots around its anchor that meets no placed label and stays
-        in the plot area.  A label with no free spot hides (its element keeps its
-        description, shown on hover).
+        in the plot area.  A label with no free spot hides, where it was asked (its
+        element keeps its description, shown on hover).  Placed boxes are kept in a grid
+        of :data:`_CELL` px cells, so that a spot is checked against its neighbours only.
         """
         ml, mr, mt, mb = self.margin
         pw, ph = self.size[0] - ml - mr, self.size[1] - mt - mb
-        placed = np.zeros((0, 4))
+        grid: dict[tuple[int, int], list[tuple[float, float, float, float]]] = {}
         h = 1.25 * FONT_PX
+        bx0, by0, kx, ky = self.box[0], self.box[2], self.kx, self.ky
+        cell = _CELL
+
+        def free(x0, y0, x1, y1) -> bool:
+            for i in range(int(x0 // cell), int(x1 // cell) + 1):
+                for j in range(int(y0 // cell), int(y1 // cell) + 1):
+                    for px0, py0, px1, py1 in grid.get((i, j), ()):
+                        if x0 < px1 and px0 < x1 and y0 < py1 and py0 < y1:
+                            return False
+            return True
+
         for el in sorted(self.elements, key=lambda e: -e["z"]):
             for part in el["parts"]:
                 if part["p"] != "text" or part.get("fixed") or not part["text"]:
                     continue
                 w = _CHAR_EM * FONT_PX * len(part["text"])
-                qx = (part["x"] - self.box[0]) * self.kx
-                qy = (part["y"] - self.box[2]) * self.ky
+                qx = (part["x"] - bx0) * kx
+                qy = (part["y"] - by0) * ky
                 r = max(math.hypot(part["dx"], part["dy"]), 6.0)
-                dx = np.r_[part["dx"], r * _SPOT_DIR[:, 0]]
-                dy = np.r_[part["dy"], r * _SPOT_DIR[:, 1]]
-                fx = np.r_[_ALIGN_X[part["ha"]], _SPOT_FX]     # box's left edge, in box widths
-                fy = np.r_[_ALIGN_Y[part["va"]], _SPOT_FY]
-                x0 = qx + dx - fx * w
-                y0 = qy + dy - fy * h
-                out = (np.maximum(0.0, -x0) + np.maximum(0.0, x0 + w - pw)
-                       + np.maximum(0.0, -y0) + np.maximum(0.0, y0 + h - ph)) * w * h
-                if len(placed):
-                    ox = np.clip(np.minimum(x0[:, None] + w, placed[None, :, 2])
-                                 - np.maximum(x0[:, None], placed[None, :, 0]), 0.0, None)
-                    oy = np.clip(np.minimum(y0[:, None] + h, placed[None, :, 3])
-                                 - np.maximum(y0[:, None], placed[None, :, 1]), 0.0, None)
-                    cost = out + (ox * oy).sum(axis=1)
-                else:
-                    cost = out
-                k = int(np.argmax(cost == 0.0)) if np.any(cost == 0.0) else int(np.argmin(cost))
-                if k:
-                    part["dx"], part["dy"] = round(float(dx[k]), 2), round(float(dy[k]), 2)
-                    part["ha"], part["va"] = _SPOT_HA[k - 1], _SPOT_VA[k - 1]
-                if cost[k] > 0.0:   # no free place: the label hides (the element keeps its hover text)
+                spots = [(part["dx"], part["dy"], _ALIGN_X[part["ha"]], _ALIGN_Y[part["va"]])]
+                spots += [(r * c, r * s_, fx, fy) for c, s_, fx, fy in _SPOTS]
+                for k, (dx, dy, fx, fy) in enumerate(spots):
+                    x0 = qx + dx - fx * w
+                    y0 = qy + dy - fy * h
+                    x1, y1 = x0 + w, y0 + h
+                    if x0 >= 0.0 and y0 >= 0.0 and x1 <= pw and y1 <= ph and free(x0, y0, x1, y1):
+                        break
+                else:          # no free place: the label hides (the element keeps its hover text)
                     part["hidden"] = True
                     continue
-                placed = np.vstack([placed, [x0[k], y0[k], x0[k] + w, y0[k] + h]])
+                if k:
+                    part["dx"], part["dy"] = round(float(dx), 2), round(float(dy), 2)
+                    part["ha"], part["va"] = _SPOT_HA[k - 1], _SPOT_VA[k - 1]
+                part.pop("hidden", None)
+                box = (x0, y0, x1, y1)
+                for i in range(int(x0 // cell), int(x1 // cell) + 1):
+                    for j in range(int(y0 // cell), int(y1 // cell) + 1):
+                        grid.setdefault((i, j), []).append(box)
 
     def to_dict(self) -> dict[str, Any]:
         """The picture as plain JSON data (labels placed, numbers rounded to 1e-4 of the view).
@@ -705,19 +752,24 @@ class Picture:
             return v
 
         elements = []
-        for el in sorted(self.elements, key=lambda e: e["z"]):
+        for el in sorted(self.elements, key=_z_of):
             parts = []
             for part in el["parts"]:
                 part = dict(part)
-                for k in ("x", "y", "xy"):
-                    if k in part:
-                        part[k] = rnd(part[k])
+                x = part.get("x")
+                if x is not None:
+                    part["x"] = round(x, nd) + 0.0 if type(x) is float else rnd(x)
+                    y = part["y"]
+                    part["y"] = round(y, nd) + 0.0 if type(y) is float else rnd(y)
+                if "xy" in part:
+                    part["xy"] = rnd(part["xy"])
                 if "m" in part:
                     part["m"] = [round(v, nd + 2) + 0.0 for v in part["m"]]
                 parts.append(part)
             # keys at their defaults are left out (the renderers read them with defaults)
-            elements.append({k: v for k, v in {**el, "parts": parts}.items()
-                             if not (k in _DEFAULTS and v == _DEFAULTS[k])})
+            out = {k: v for k, v in el.items() if k not in _DEFAULTS or v != _DEFAULTS[k]}
+            out["parts"] = parts
+            elements.append(out)
         ticks = ({"x": nice_ticks(self.box[0], self.box[1]), "y": nice_ticks(self.box[2], self.box[3])}
                  if self.ticks else None)
         return {"size": list(self.size), "margin": list(self.margin),

@@ -296,6 +296,7 @@ class PictureCanvas(anywidget.AnyWidget):
         self.version = 0
         self.last_update = None
         self._sent: dict[str, dict] = {}
+        self._src: dict[str, dict] = {}
         self._order: list[str] = []
         self._head: dict = {}
         self._head_src: dict = {}
@@ -333,12 +334,16 @@ class PictureCanvas(anywidget.AnyWidget):
             update["head"] = self._head
         nd = self._head.get("nd", 6)
         order, changed, sent = [], {}, self._sent
-        new_sent = {}
+        new_sent, src, new_src = {}, {} if "head" in update else self._src, {}
         for el in pic.get("elements", ()):
             eid = el.get("id")
             if not isinstance(eid, str) or eid in new_sent:
                 continue
             order.append(eid)
+            new_src[eid] = el
+            if src.get(eid) == el:          # the same data as last time: the same wire element
+                new_sent[eid] = sent[eid]
+                continue
             w = wire_element(el, nd)
             new_sent[eid] = w
             old = sent.get(eid)
@@ -348,7 +353,7 @@ class PictureCanvas(anywidget.AnyWidget):
                 diff = {k: v for k, v in w.items() if old.get(k) != v}
                 diff.update({k: None for k in old if k not in w})
                 changed[eid] = diff
-        self._sent = new_sent
+        self._sent, self._src = new_sent, new_src
         if order != self._order:
             update["order"] = order
             self._order = order

@@ -1010,9 +1010,19 @@ class ChainExplorer(Explorer):
         v = self.values
         w = st["w"]
         overlays = {k: bool(v[k]) for k in OVERLAYS}
+        view = tuple(view) if view else self._view(st)
+        focus = self._focus(st["model"].N)
+        size = self.figure_px
+        # the same state drawn again (the base asks twice per update: the page, the key): built once
+        key = (tuple(overlays.values()), view, focus, size)
+        last = getattr(self, "_last_picture", None)
+        if last is not None and last[0] is st and last[1] == key:
+            return last[2].copy()
         split = self.tu_split(st) if v["T/U split"] else None
-        return chain_picture(w, overlays=overlays, view=view or self._view(st), split=split,
-                             focus=self._focus(st["model"].N), size=self.figure_px, ends=self._ends(w))
+        pic = chain_picture(w, overlays=overlays, view=view, split=split, focus=focus, size=size,
+                            ends=self._ends(w))
+        self._last_picture = (st, key, pic)
+        return pic.copy()
 
     def _label(self, st, focus, box) -> None:
         """Place the labels: the focused element's first (bold), then every other where it fits."""
