@@ -115,6 +115,61 @@ class _PointOrLine(_Homogeneous):
             raise DegenerateGeometryError(f"array is the zero vector, which is no {type(self).__name__.lower()}")
         self._a = a
 
+    def normalized(self):
+        """The same element, normalised: a point with ``w = 1`` (or unit length at infinity), a line with
+        unit force (or ``tz = ±1`` at infinity).
+
+        Returns
+        -------
+        Point or Line
+            A new element of the same kind.
+
+        Examples
+        --------
+        >>> Point([2.0, -4.0, 2.0]).normalized().array     # the point (2, 1)
+        array([ 1., -2.,  1.])
+        >>> Line([0.0, 3.0, 3.0]).normalized().array
+        array([0., 1., 1.])
+        """
+        return type(self)(self._normalize(self._a))
+
+    def _pair(self, other) -> tuple:
+        """``(point, line)`` arrays of this element and ``other``, of the dual kind (an element or its array)."""
+        name = self._dual.__name__.lower()
+        theirs = other.array if isinstance(other, self._dual) else _vec(other, name)
+        return (self._a, theirs) if self._dual is Line else (theirs, self._a)
+
+    def incidence(self, other) -> float:
+        """The form ``p @ l`` with ``other``, of the dual kind (thesis 5.23): zero exactly when the point lies on the line.
+
+        For a twist and a wrench it is the power ``v·f``.  Its value depends on
+        the scale of both arrays; for a distance use :meth:`Point.distance_to`
+        or :meth:`Line.signed_distance`.
+
+        Parameters
+        ----------
+        other : Line (of a point), Point (of a line), or array_like, shape (3,)
+            The element of the dual kind, or its homogeneous array.
+
+        Returns
+        -------
+        float
+            ``p @ l``.
+
+        Examples
+        --------
+        >>> y1 = Line.from_point_direction((0, 1), (1, 0))            # the line y = 1
+        >>> Point.from_xy(3, 1).incidence(y1), Point.from_xy(3, 2).incidence(y1)
+        (0.0, 1.0)
+        >>> Point.at_infinity((1, 0)) @ y1                            # y = 1 passes through it
+        0.0
+        >>> Line.at_infinity().incidence(Point.at_infinity((3, 4)))    # every ideal point is on it
+        0.0
+        >>> Line.at_infinity() @ Point.from_xy(3, 4)                   # no finite point is
+        1.0
+        """
+        return float(_p.incidence(*self._pair(other)))
+
     def __xor__(self, other):
         if isinstance(other, type(self)):
             return self._wedge(other)
@@ -156,6 +211,7 @@ class Point(_PointOrLine):
 
     __slots__ = ()
     _svg = ("point_svg", "P")
+    _normalize = staticmethod(_p.normalize_point)
 
     # constructors
     @classmethod
@@ -241,21 +297,6 @@ class Point(_PointOrLine):
         """Unit direction of a point at infinity; ``(nan, nan)`` for a finite point."""
         return _p.direction(self._a)
 
-    def normalized(self) -> "Point":
-        """The same point with ``w = 1`` (or unit length at infinity).
-
-        Returns
-        -------
-        Point
-            A new, normalised Point.
-
-        Examples
-        --------
-        >>> Point([2.0, -4.0, 2.0]).normalized().array     # the point (2, 1)
-        array([ 1., -2.,  1.])
-        """
-        return Point(_p.normalize_point(self._a))
-
     # geometry
     def join(self, other) -> "Line":
         """The line through this point and ``other`` (thesis 5.32); also ``p ^ q``.
@@ -285,32 +326,6 @@ class Point(_PointOrLine):
 
     _wedge = join
 
-    def incidence(self, line) -> float:
-        """The form ``p @ l`` (thesis 5.23): zero exactly when the point lies on ``line``.
-
-        For a twist and a wrench it is the power ``v·f``.  Its value depends on
-        the scale of both arrays; for a distance use :meth:`distance_to`.
-
-        Parameters
-        ----------
-        line : Line or array_like, shape (3,)
-            A Line or homogeneous line array.
-
-        Returns
-        -------
-        float
-            ``p @ l``.
-
-        Examples
-        --------
-        >>> y1 = Line.from_point_direction((0, 1), (1, 0))            # the line y = 1
-        >>> Point.from_xy(3, 1).incidence(y1), Point.from_xy(3, 2).incidence(y1)
-        (0.0, 1.0)
-        >>> Point.at_infinity((1, 0)) @ y1                            # y = 1 passes through it
-        0.0
-        """
-        return float(_p.incidence(self._a, _as_line_array(line, "line")))
-
     def distance_to(self, line) -> float:
         """Signed distance to ``line``, positive on its left (thesis 5.23).
 
@@ -329,7 +344,7 @@ class Point(_PointOrLine):
         >>> Point.from_xy(3, 4).distance_to(Line.from_point_direction((0, 1), (1, 0)))   # y = 1
         3.0
         """
-        return float(_p.signed_distance(self._a, _as_line_array(line, "line")))
+        return float(_p.signed_distance(*self._pair(line)))
 
     def __repr__(self) -> str:
         if self.is_ideal:
@@ -370,6 +385,7 @@ class Line(_PointOrLine):
 
     __slots__ = ()
     _svg = ("line_svg", "l")
+    _normalize = staticmethod(_p.normalize_line)
 
     @classmethod
     def through(cls, p, q) -> "Line":
@@ -464,21 +480,6 @@ class Line(_PointOrLine):
         """The point of the line nearest to the origin (``None`` for the line at infinity)."""
         return None if self.is_at_infinity else Point(_p.foot_point(self._a))
 
-    def normalized(self) -> "Line":
-        """The same line with unit force (or ``tz = ±1`` at infinity).
-
-        Returns
-        -------
-        Line
-            A new, normalised Line.
-
-        Examples
-        --------
-        >>> Line([0.0, 3.0, 3.0]).normalized().array
-        array([0., 1., 1.])
-        """
-        return Line(_p.normalize_line(self._a))
-
     def meet(self, other) -> Point:
         """The common point with ``other`` (thesis 5.34); also ``l ^ m``.
 
@@ -507,28 +508,6 @@ class Line(_PointOrLine):
 
     _wedge = meet
 
-    def incidence(self, point) -> float:
-        """The form ``p @ l`` (thesis 5.23): zero exactly when ``point`` lies on this line.
-
-        Parameters
-        ----------
-        point : Point or array_like, shape (3,)
-            A Point or homogeneous point array.
-
-        Returns
-        -------
-        float
-            ``p @ l``.
-
-        Examples
-        --------
-        >>> Line.at_infinity().incidence(Point.at_infinity((3, 4)))    # every ideal point is on it
-        0.0
-        >>> Line.at_infinity() @ Point.from_xy(3, 4)                   # no finite point is
-        1.0
-        """
-        return float(_p.incidence(_as_point_array(point, "point"), self._a))
-
     def signed_distance(self, point) -> float:
         """Signed distance of ``point`` from this line, positive on the left (thesis 5.23).
 
@@ -554,7 +533,7 @@ class Line(_PointOrLine):
         >>> y1.signed_distance(Point.at_infinity((1, 0)))
         nan
         """
-        return float(_p.signed_distance(_as_point_array(point, "point"), self._a))
+        return float(_p.signed_distance(*self._pair(point)))
 
     def __repr__(self) -> str:
         if self.is_at_infinity:
@@ -566,6 +545,8 @@ class Line(_PointOrLine):
 
 
 Point._dual, Line._dual = Line, Point
+Point.normalized = Line.normalized = _PointOrLine.normalized     # their own members (for the API pages)
+Point.incidence = Line.incidence = _PointOrLine.incidence
 
 
 class Conic(_Homogeneous):

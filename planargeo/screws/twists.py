@@ -1465,6 +1465,9 @@ class Wrench(_Screw):
 
 
 Twist._dual, Wrench._dual = Wrench, Twist
+for _kind in (Twist, Wrench):            # their own members (for the API pages), one definition
+    _kind.at, _kind.power, _kind.reciprocal = _Screw.at, _Screw.power, _Screw.reciprocal
+del _kind
 
 
 # ---------------------------------------------------------------------------
