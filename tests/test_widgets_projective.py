@@ -1,16 +1,37 @@
-"""ProjectiveExplorer: poles, polars and constructions against closed forms for circles."""
+"""ProjectiveExplorer: poles, polars and constructions against closed forms for circles.
+
+What is drawn is read off the explorer's picture (``ex.picture()``, the plain data the
+page and the exports draw): a line is its clipped segment, a point its marker, a point
+at infinity an arrow at the edge of the view.
+"""
 import math
 import re
 
 import numpy as np
 import pytest
-from matplotlib.backend_bases import MouseEvent
 
 from planargeo.widgets.projective import CONICS, ProjectiveExplorer
+
+from _picture_checks import elements, problems
 
 
 def xy(p):
     return np.array([-p[1] / p[2], p[0] / p[2]])
+
+
+def segment(el):
+    """The two ends of a drawn (clipped) line."""
+    return np.array(next(p["xy"] for p in el["parts"] if p["p"] == "path"), float)
+
+
+def mark(el):
+    """Where a drawn point's marker is."""
+    m = next(p for p in el["parts"] if p["p"] == "mark")
+    return np.array([m["x"], m["y"]])
+
+
+def construction_ids(pic):
+    return {i for i in elements(pic) if i.startswith(("tangent", "chord", "contact"))}
 
 
 def line_distance(l):
@@ -29,31 +50,41 @@ def test_circle_polar_distance(ex, P):
     ex.set(**{"P x": P[0], "P y": P[1]})
     r2, d = 1.5 ** 2, math.hypot(*P)
     assert ex.readout_values["polar of P: distance to origin"] == pytest.approx(r2 / d)
-    pol = ex.polar_art.get_line()
-    # the polar is perpendicular to OP and crosses OP at distance r²/d (same side as P)
-    foot = r2 / d * np.array(P) / d
-    assert np.dot([foot[1], -foot[0], 1.0], pol) == pytest.approx(0.0, abs=1e-12)
-    assert np.dot(pol[:2], P) == pytest.approx(0.0, abs=1e-12)
+    # the polar of P for x² + y² = r² is the line P·X = r²: perpendicular to OP at r²/d (5.36)
+    els = elements(ex.picture())
+    drawn = [p for p in els["polar"]["parts"] if p["p"] == "path"]
+    assert drawn or r2 / d > 4.0                                          # in view unless far out
+    for X in (np.asarray(drawn[0]["xy"]) if drawn else []):
+        assert np.dot(X, P) == pytest.approx(r2, abs=1e-4)
     assert ex.readout_values["P is"] == ("outside" if d > 1.5 else "inside")
 
 
 def test_exterior_construction_contacts_are_tangent_points(ex):
     ex.set(**{"P x": 2.0, "P y": 1.5})
-    shown = [a for a in ex.cpts_art if a.get_visible()]
-    assert len(shown) == 2 and sum(a.get_visible() for a in ex.tan_art) == 2
-    for a in shown:
-        X = a.get_xy()
-        assert np.hypot(*X) == pytest.approx(1.5)                      # on the circle
-        assert np.dot(X - [2.0, 1.5], X) == pytest.approx(0.0, abs=1e-9)  # radius ⟂ tangent
+    els = elements(ex.picture())
+    assert construction_ids(ex.picture()) == {"tangent 1", "tangent 2", "contact 1", "contact 2"}
+    for k in (1, 2):
+        X = mark(els[f"contact {k}"])
+        assert np.hypot(*X) == pytest.approx(1.5, abs=1e-4)                  # on the circle
+        assert np.dot(X - [2.0, 1.5], X) == pytest.approx(0.0, abs=1e-4)     # radius ⟂ tangent
+        A, B = segment(els[f"tangent {k}"])                                  # the tangent: P and X on it
+        for Q in ([2.0, 1.5], X):
+            assert np.cross(B - A, np.asarray(Q) - A) == pytest.approx(0.0, abs=1e-3)
 
 
 def test_interior_construction_poles_lie_on_polar(ex):
     ex.set(**{"P x": 0.4, "P y": 0.3})
-    assert sum(a.get_visible() for a in ex.tan_art) == 4
-    pol = ex.polar_art.get_line()
-    for a in ex.cpts_art[4:]:
-        assert a.get_visible()
-        assert np.dot(a.get_point(), pol) == pytest.approx(0.0, abs=1e-9 * np.abs(a.get_point()).max())
+    pic = ex.picture()
+    assert construction_ids(pic) == {"tangent 1", "tangent 2", "tangent 3", "tangent 4", "chord 1",
+                                     "chord 2", "chord end 1", "chord end 2", "chord end 3", "chord end 4",
+                                     "chord pole 1", "chord pole 2"}
+    # the poles of the chords lie on the polar of P: P·K = r² (5.2.2, Fig 5.3); here 4.5 m away,
+    # beyond the view: drawn as arrows at its edge, named
+    for K in ex.state["interior"].poles:
+        assert np.dot(xy(K), [0.4, 0.3]) == pytest.approx(1.5 ** 2)
+    for k in (1, 2):
+        parts = elements(pic)[f"chord pole {k}"]["parts"]
+        assert [p["p"] for p in parts] == ["arrow", "text"] and parts[1]["text"].startswith("pole of chord c")
 
 
 def test_inertia_polar_is_axis_of_percussion(ex):
@@ -61,16 +92,24 @@ def test_inertia_polar_is_axis_of_percussion(ex):
     # lies on the other side of the centre at distance ρ²/d (thesis 5.68)
     ex.set(conic="inertia (imaginary circle)", a=0.8, **{"P x": 2.0, "P y": 0.0})
     assert ex.readout_values["conic"] == "imaginary circle"
-    pol = ex.polar_art.get_line()
-    x_line = pol[2] / pol[1]             # vertical line: tz - x fy = 0
-    assert x_line == pytest.approx(-0.8 ** 2 / 2.0)
-    assert not any(a.get_visible() for a in ex.tan_art)
+    pic = ex.picture()
+    assert segment(elements(pic)["polar"])[:, 0] == pytest.approx([-0.8 ** 2 / 2.0] * 2)   # x = −ρ²/d
+    assert construction_ids(pic) == set()
+    C = elements(pic)["C"]                # its real stand-in: the circle of radius ρ, dashed, centre marked
+    e = next(p for p in C["parts"] if p["p"] == "ellipse")
+    assert (e["x"], e["y"]) == (0.0, 0.0) and np.abs(np.linalg.det(np.reshape(e["m"], (2, 2)))) == pytest.approx(0.64)
+    assert C["dash"] and any(p["p"] == "mark" for p in C["parts"])
 
 
 def test_line_pole_and_invariance(ex):
     ex.set(**{"line angle (deg)": 90.0, "line offset": 0.5})   # vertical line x = -0.5
-    M = ex.M_art.get_line()
-    assert np.dot([0.0, 0.5, 1.0], M) == pytest.approx(0.0)    # (−0.5, 0) lies on it
+    els = elements(ex.picture())
+    assert segment(els["M"])[:, 0] == pytest.approx([-0.5, -0.5])
+    # its pole (−4.5, 0) is beyond the view: an arrow at the left edge, pointing left, "off view"
+    parts = els["pole of M"]["parts"]
+    arrow = next(p for p in parts if p["p"] == "arrow")
+    assert arrow["dx"] < 0 and arrow["dy"] == pytest.approx(0.0, abs=1e-9)
+    assert next(p for p in parts if p["p"] == "text")["text"] == "pole of M (off view)"
     # pole of the line x = -0.5 w.r.t. the circle r = 1.5: (-r²/0.5, 0)
     assert ex.readout_values["pole of M"] == pytest.approx((-4.5, 0.0))
     assert ex.readout_values["P·M"] == pytest.approx(ex.readout_values["pole(M)·polar(P)"])
@@ -82,25 +121,18 @@ def test_every_conic_draws(ex, conic):
         ex.set(conic=conic, **{"P x": P[0], "P y": P[1]})
         assert ex.message == ""
         assert ex.readout_values["P·M"] == pytest.approx(ex.readout_values["pole(M)·polar(P)"])
-        ex.fig.canvas.draw()
+        assert problems(ex.picture()) == [], (conic, P)
 
 
 def test_drag_moves_the_point(ex):
-    ex.fig.canvas.draw()
-    canvas = ex.fig.canvas
-    x0, y0 = ex.ax.transData.transform([2.0, 1.5])
-    x1, y1 = ex.ax.transData.transform([-1.0, 2.5])
-    canvas.callbacks.process("button_press_event",
-                             MouseEvent("button_press_event", canvas, x0 + 2, y0 - 2, button=1))
-    canvas.callbacks.process("motion_notify_event", MouseEvent("motion_notify_event", canvas, x1, y1))
-    canvas.callbacks.process("button_release_event",
-                             MouseEvent("button_release_event", canvas, x1, y1, button=1))
-    assert ex.values["P x"] == pytest.approx(-1.0, abs=0.02)
-    assert ex.values["P y"] == pytest.approx(2.5, abs=0.02)
-    assert xy(ex.P_art.get_point()) == pytest.approx([ex.values["P x"], ex.values["P y"]])
-    # a move without a press on the point does nothing
-    canvas.callbacks.process("motion_notify_event", MouseEvent("motion_notify_event", canvas, x0, y0))
-    assert ex.values["P x"] == pytest.approx(-1.0, abs=0.02)
+    ex.drag("P", (2.0, 1.5), (-1.0, 2.5), steps=3)
+    assert ex.values["P x"] == pytest.approx(-1.0) and ex.values["P y"] == pytest.approx(2.5)
+    pic = ex.picture()
+    assert mark(elements(pic)["P"]) == pytest.approx([-1.0, 2.5])
+    assert {h["id"]: (h["x"], h["y"]) for h in pic["handles"]}["P"] == pytest.approx((-1.0, 2.5))
+    # its polar moved with it: P·X = r² on the drawn line
+    for X in segment(elements(pic)["polar"]):
+        assert np.dot(X, [-1.0, 2.5]) == pytest.approx(1.5 ** 2, abs=1e-4)
 
 
 def test_ideal_point_maps_to_a_diameter_and_line_at_infinity_to_the_centre(ex):
@@ -108,19 +140,27 @@ def test_ideal_point_maps_to_a_diameter_and_line_at_infinity_to_the_centre(ex):
     # infinity to the centre (here the circle's centre is the origin)
     ex.set(**{"P at infinity": True, "P x": 1.0, "P y": 1.0, "M at infinity": True})
     assert ex.message == ""
-    pol = ex.polar_art.get_line()
-    assert pol[2] == pytest.approx(0.0, abs=1e-12)                  # through the origin
-    assert np.dot(pol[:2], [1.0, 1.0]) == pytest.approx(0.0, abs=1e-12)  # ⟂ to the direction (circle)
+    pic = ex.picture()
+    els = elements(pic)
+    A, B = segment(els["polar"])                                    # a diameter ⟂ to the direction
+    assert np.cross(A, B) == pytest.approx(0.0, abs=1e-4) and np.dot(B - A, [1.0, 1.0]) == pytest.approx(0.0, abs=1e-4)
+    # P at infinity: an arrow at the edge of the view, pointing along its direction (1, 1)
+    parts = els["P"]["parts"]
+    arrow = next(p for p in parts if p["p"] == "arrow")
+    assert arrow["dx"] == pytest.approx(arrow["dy"]) and arrow["dx"] > 0
+    assert next(p for p in parts if p["p"] == "text")["text"] == "P at ∞"
+    assert not any(p["p"] == "mark" for p in parts)
+    # M, the line at infinity: no stroke in the view, said in words; its pole the centre
+    assert not any(p["p"] == "path" for p in els["M"]["parts"])
+    assert any(p["p"] == "text" and "line at ∞" in p["text"] for p in els["M"]["parts"])
+    assert mark(els["pole of M"]) == pytest.approx([0.0, 0.0])
     assert ex.readout_values["pole of M"] == pytest.approx((0.0, 0.0), abs=1e-12)
     assert ex.readout_values["P"] == "at infinity (direction (0.7071, 0.7071))" and "at infinity" in ex.readout_values["P is"]
     # the two tangents in that direction are parallel and touch the circle at ±r along the normal
-    shown = [a for a in ex.cpts_art if a.get_visible()]
-    assert len(shown) == 2
-    for a in shown:
-        X = a.get_xy()
-        assert np.hypot(*X) == pytest.approx(1.5)
-        assert np.dot(X, [1.0, 1.0]) == pytest.approx(0.0, abs=1e-9)
-    ex.fig.canvas.draw()
+    for k in (1, 2):
+        X = mark(els[f"contact {k}"])
+        assert np.hypot(*X) == pytest.approx(1.5, abs=1e-4)
+        assert np.dot(X, [1.0, 1.0]) == pytest.approx(0.0, abs=1e-4)
     ex.set(**{"P x": 0.0, "P y": 0.0})                                # no direction: a message
     assert "P x, P y" in ex.message
     ex.set(**{"P at infinity": False})
@@ -131,18 +171,17 @@ def test_construction_toggle_only_redraws_and_shows_the_current_point(ex):
     ex.set(**{"P x": 2.0, "P y": 1.5})
     n = ex.n_computes
     ex.controls["construction"].value = False
-    assert ex.n_computes == n and not any(a.get_visible() for a in ex.tan_art + ex.cpts_art)
+    assert ex.n_computes == n and construction_ids(ex.picture()) == set()
     ex.controls["P x"].value = -2.5                      # moved while the construction is hidden
     ex.controls["construction"].value = True
     assert ex.n_computes == n + 1
-    shown = [a for a in ex.cpts_art if a.get_visible()]
-    assert len(shown) == 2
-    for a in shown:                                      # tangent points of the moved P
-        X = a.get_xy()
-        assert np.hypot(*X) == pytest.approx(1.5)
-        assert np.dot(X - [-2.5, 1.5], X) == pytest.approx(0.0, abs=1e-9)
+    els = elements(ex.picture())
+    for k in (1, 2):                                     # tangent points of the moved P
+        X = mark(els[f"contact {k}"])
+        assert np.hypot(*X) == pytest.approx(1.5, abs=1e-4)
+        assert np.dot(X - [-2.5, 1.5], X) == pytest.approx(0.0, abs=1e-4)
     ex.controls["line and its pole"].value = False
-    assert ex.n_computes == n + 1 and not ex.M_art.get_visible() and not ex.Mpole_art.get_visible()
+    assert ex.n_computes == n + 1 and not {"M", "pole of M"} & set(elements(ex.picture()))
 
 
 # ---------------------------------------------------------------- issue 22: ideal points and units
@@ -200,7 +239,6 @@ def test_handles_are_where_they_can_be_grabbed():
     pivot, tip = (np.array(handles[n].where()) for n in ("M (point)", "M (direction)"))
     assert np.all(np.abs(tip) <= 4.0) and np.all(np.abs(pivot) <= 4.0)
     ex.drag("M (direction)", tuple(tip), (tip[0], tip[1] + 0.5), steps=2)
-    M = ex.M_art.get_line()
-    on = lambda x, y: M[2] + y * M[0] - x * M[1]
-    assert on(*pivot) == pytest.approx(0.0, abs=1e-9)
-    assert on(tip[0], tip[1] + 0.5) == pytest.approx(0.0, abs=1e-9)
+    A, B = segment(elements(ex.picture())["M"])          # the drawn M passes the pivot and the pointer
+    for Q in (pivot, (tip[0], tip[1] + 0.5)):
+        assert np.cross(B - A, np.asarray(Q) - A) == pytest.approx(0.0, abs=1e-3)

@@ -43,6 +43,8 @@ from planargeo.geometry.projective import is_at_infinity
 
 __all__ = ["projective_picture"]
 
+_SUB = dict(zip(range(1, 10), "₁₂₃₄₅₆₇₈₉"))
+
 #: colour of the construction's contact points and poles
 GREY = "#7F7F7F"
 
@@ -89,27 +91,30 @@ def projective_picture(st: dict, *, construction: bool = True, line_and_pole: bo
     if construction:
         lines, points = [], []
         if st.get("tangents") is not None:
-            lines = [(f"tangent {k + 1}", st["tangents"][k], "tangent from P to the conic") for k in range(2)]
-            points = [(f"contact {k + 1}", st["contacts"][k], "where a tangent from P touches the conic")
-                      for k in range(2)]
+            lines = [(f"tangent {k + 1}", f"t{_SUB[k + 1]}", st["tangents"][k], "tangent from P to the conic")
+                     for k in range(2)]
+            points = [(f"contact {k + 1}", f"X{_SUB[k + 1]}", st["contacts"][k],
+                       "where a tangent from P touches the conic") for k in range(2)]
             eq = "5.2.2, Fig 5.2"
         elif st.get("interior") is not None:
             K = st["interior"]
             if bool(np.all(np.isfinite(K.tangents)) and np.all(np.isfinite(K.poles))):
-                lines = [(f"chord {i + 1}", K.lines[i], "a chord of the conic through P") for i in range(2)]
-                lines += [(f"tangent {2 * i + j + 1}", K.tangents[i, j], f"tangent at an end of chord {i + 1}")
-                          for i in range(2) for j in range(2)]
-                points = [(f"chord end {2 * i + j + 1}", K.chord_points[i, j], f"an end of chord {i + 1}")
-                          for i in range(2) for j in range(2)]
-                points += [(f"chord pole {i + 1}", K.poles[i], f"pole of chord {i + 1}: its two "
-                            "tangents meet here, on the polar of P") for i in range(2)]
+                lines = [(f"chord {i + 1}", f"c{_SUB[i + 1]}", K.lines[i], "a chord of the conic through P")
+                         for i in range(2)]
+                lines += [(f"tangent {2 * i + j + 1}", f"t{_SUB[2 * i + j + 1]}", K.tangents[i, j],
+                           f"tangent at an end of chord c{_SUB[i + 1]}") for i in range(2) for j in range(2)]
+                points = [(f"chord end {2 * i + j + 1}", f"X{_SUB[2 * i + j + 1]}", K.chord_points[i, j],
+                           f"an end of chord c{_SUB[i + 1]}") for i in range(2) for j in range(2)]
+                points += [(f"chord pole {i + 1}", f"K{_SUB[i + 1]}", K.poles[i],
+                            f"pole K{_SUB[i + 1]} of chord c{_SUB[i + 1]}, where its tangents meet, "
+                            "on the polar of P") for i in range(2)]
             eq = "5.2.2, Fig 5.3"
-        for name, L, meaning in lines:
-            pic.line(name, L, role="construct", desc=f"{meaning} ({eq}): {_line_words(L)}", arrow=False,
+        for name, sym, L, meaning in lines:
+            pic.line(name, L, role="construct", symbol=sym, label="", desc=f"{meaning} ({eq}): {_line_words(L)}", arrow=False,
                      width=0.6 * 1.389 if name.startswith("chord") else None)
-        for name, p, meaning in points:
-            point_along(pic, name, p, role="twist", color=GREY, size=5.5,
-                        label=name if name.startswith("chord pole") else "",
+        for name, sym, p, meaning in points:
+            point_along(pic, name, p, role="twist", color=GREY, size=5.5, symbol=sym,
+                        label=f"pole of chord c{sym[-1]}" if name.startswith("chord pole") else "",
                       desc=f"{meaning} ({eq}): {where(p)}")
     pic.line("polar", st["polar"], role="wrench", symbol="C P", label="", arrow=False,
              desc=f"polar of P, the line C P (5.36): {_line_words(st['polar'])}")
