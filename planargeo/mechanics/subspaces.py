@@ -59,6 +59,7 @@ both carry ``.cond``.
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 
@@ -80,6 +81,23 @@ __all__ = [
 #: (for code that tests the squared scale; it accepts exactly the states ``cond <= COND_LIMIT``
 #: accepts, up to rounding of the last bit at the threshold itself)
 COND_LIMIT2 = COND_LIMIT * COND_LIMIT
+
+
+#: The parameters most functions here take, described once (``{I s R}`` in a docstring: those entries)
+_PARAMETERS = {
+    "A": ("array_like, shape (..., 3, 3)", "Symmetric positive definite (articulated) inertia at the origin."),
+    "I": ("array_like, shape (..., 3, 3)", "Symmetric inertia (rigid or articulated) at the origin."),
+    "s": ("array_like, shape (..., 3, k)", "Joint motion space (k unit twists as columns)."),
+    "R": ("array_like, shape (..., 3, 3-k)", "Joint reaction space (wrenches reciprocal to ``s``)."),
+}
+
+
+def _parameters(f):
+    """``f`` with the entries of :data:`_PARAMETERS` written into its docstring where it names them."""
+    def entries(m):
+        return "\n".join(f"{m[1]}{k} : {_PARAMETERS[k][0]}\n{m[1]}    {_PARAMETERS[k][1]}" for k in m[2].split())
+    f.__doc__ = re.sub(r"^( *)\{([AIsR ]+)\}$", entries, f.__doc__, flags=re.M)
+    return f
 
 
 def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
@@ -620,13 +638,13 @@ def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
 
 # ----------------------------------------------------------------------------- projections
 @overflow_checked("s or f")
+@_parameters
 def active_force(s, f) -> np.ndarray:
     """Active (joint) force ``Q = sᵀ f`` (thesis 6.61a, 6.51).
 
     Parameters
     ----------
-    s : array_like, shape (..., 3, k)
-        Joint motion space (k unit twists as columns).
+    {s}
     f : array_like, shape (..., 3)
         Wrench.
 
@@ -692,13 +710,13 @@ def active_acceleration(T, a) -> np.ndarray:
 
 
 @overflow_checked("R or a")
+@_parameters
 def reactive_acceleration(R, a) -> np.ndarray:
     """Reactive-acceleration components ``γ = Rᵀ a`` (thesis 6.62a, 6.60).
 
     Parameters
     ----------
-    R : array_like, shape (..., 3, 3-k)
-        Joint reaction space (wrenches reciprocal to ``s``).
+    {R}
     a : array_like, shape (..., 3)
         Acceleration twist.
 
@@ -717,6 +735,7 @@ def reactive_acceleration(R, a) -> np.ndarray:
 
 # ----------------------------------------------------------------------------- projectors
 @overflow_checked("A or s or R")
+@_parameters
 def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     """The complementary wrench projectors ``(T sᵀ, R Uᵀ)``, summing to 1 (thesis 6.75).
 
@@ -725,12 +744,7 @@ def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 
     Parameters
     ----------
-    A : array_like, shape (..., 3, 3)
-        Symmetric positive definite (articulated) inertia at the origin.
-    s : array_like, shape (..., 3, k)
-        Joint motion space (k unit twists as columns).
-    R : array_like, shape (..., 3, 3-k)
-        Joint reaction space (wrenches reciprocal to ``s``).
+    {A s R}
 
     Returns
     -------
@@ -750,6 +764,7 @@ def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 
 
 @overflow_checked("A or s or R")
+@_parameters
 def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     """The complementary twist projectors ``(s Tᵀ, U Rᵀ)``, summing to 1: the transposes of :func:`wrench_projectors` (dual of thesis 6.75).
 
@@ -758,31 +773,32 @@ def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 
     Parameters
     ----------
-    A : array_like, shape (..., 3, 3)
-        Symmetric positive definite (articulated) inertia at the origin.
-    s : array_like, shape (..., 3, k)
-        Joint motion space (k unit twists as columns).
-    R : array_like, shape (..., 3, 3-k)
-        Joint reaction space (wrenches reciprocal to ``s``).
+    {A s R}
 
     Returns
     -------
     tuple of numpy.ndarray, each shape (..., 3, 3)
-        ``(s Tᵀ, U Rᵀ)``.
+        ``(s Tᵀ, U Rᵀ)``, the transposes of ``(T sᵀ, R Uᵀ)``: power is the same split either way.
 
     Examples
     --------
-    >>> P_joint, P_react = twist_projectors(np.eye(3), [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
+    A pin at the origin: the joint part of an acceleration is its rotation about the pin.
+
+    >>> A, s, R = np.eye(3), [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]]
+    >>> P_joint, P_react = twist_projectors(A, s, R)
     >>> P_joint
     array([[0., 0., 0.],
            [0., 0., 0.],
            [0., 0., 1.]])
+    >>> all(np.array_equal(P.T, W) for P, W in zip(twist_projectors(A, s, R), wrench_projectors(A, s, R)))
+    True
     """
     return tuple(_tr(P) for P in wrench_projectors(A, s, R))     # (T sᵀ)ᵀ, (R Uᵀ)ᵀ: the duality
 
 
 # ----------------------------------------------------------------------------- inertias
 @overflow_checked("I or s")
+@_parameters
 def joint_space_inertia(I, s) -> np.ndarray:
     """Joint-space inertia ``sᵀ I s`` (thesis 6.67, 6.74c): ``Q = (sᵀIs) ψ``.
 
@@ -792,10 +808,7 @@ def joint_space_inertia(I, s) -> np.ndarray:
 
     Parameters
     ----------
-    I : array_like, shape (..., 3, 3)
-        Symmetric inertia (rigid or articulated) at the origin.
-    s : array_like, shape (..., 3, k)
-        Joint motion space (k unit twists as columns).
+    {I s}
 
     Returns
     -------
@@ -814,6 +827,7 @@ def joint_space_inertia(I, s) -> np.ndarray:
 
 
 @overflow_checked("I or R")
+@_parameters
 def reaction_space_inverse_inertia(I, R) -> np.ndarray:
     """Reaction-space inverse inertia ``Rᵀ I⁻¹ R`` (thesis 6.71): ``γ = (RᵀI⁻¹R) μ``.
 
@@ -824,10 +838,7 @@ def reaction_space_inverse_inertia(I, R) -> np.ndarray:
 
     Parameters
     ----------
-    I : array_like, shape (..., 3, 3)
-        Symmetric inertia (rigid or articulated) at the origin.
-    R : array_like, shape (..., 3, 3-k)
-        Joint reaction space (wrenches reciprocal to ``s``).
+    {I R}
 
     Returns
     -------
@@ -845,6 +856,7 @@ def reaction_space_inverse_inertia(I, R) -> np.ndarray:
 
 
 @overflow_checked("I or s or R")
+@_parameters
 def inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     """Split an inertia as ``I = T sᵀ I + R Uᵀ I`` (thesis 6.76).
 
@@ -856,12 +868,7 @@ def inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
 
     Parameters
     ----------
-    I : array_like, shape (..., 3, 3)
-        Symmetric inertia (rigid or articulated) at the origin.
-    s : array_like, shape (..., 3, k)
-        Joint motion space (k unit twists as columns).
-    R : array_like, shape (..., 3, 3-k)
-        Joint reaction space (wrenches reciprocal to ``s``).
+    {I s R}
 
     Returns
     -------
@@ -880,6 +887,7 @@ def inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
 
 
 @overflow_checked("I or s or R")
+@_parameters
 def inverse_inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     """Split an inverse inertia as ``I⁻¹ = s Tᵀ I⁻¹ + U Rᵀ I⁻¹`` (thesis 6.79–6.81).
 
@@ -891,12 +899,7 @@ def inverse_inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
 
     Parameters
     ----------
-    I : array_like, shape (..., 3, 3)
-        Symmetric inertia (rigid or articulated) at the origin.
-    s : array_like, shape (..., 3, k)
-        Joint motion space (k unit twists as columns).
-    R : array_like, shape (..., 3, 3-k)
-        Joint reaction space (wrenches reciprocal to ``s``).
+    {I s R}
 
     Returns
     -------
@@ -918,6 +921,7 @@ def inverse_inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
 
 
 @overflow_checked("I or s")
+@_parameters
 def effective_mobility(I, s, *, what: str | None = None) -> np.ndarray:
     """Effective inverse inertia of a joint-constrained body ``s Tᵀ I⁻¹ = s (sᵀIs)⁻¹ sᵀ`` (thesis 6.93).
 
@@ -931,10 +935,7 @@ def effective_mobility(I, s, *, what: str | None = None) -> np.ndarray:
 
     Parameters
     ----------
-    I : array_like, shape (..., 3, 3)
-        Symmetric inertia (rigid or articulated) at the origin.
-    s : array_like, shape (..., 3, k)
-        Joint motion space (k unit twists as columns).
+    {I s}
     what : str, optional
         Name of ``sᵀIs`` in the singularity error's message.
 
@@ -955,6 +956,7 @@ def effective_mobility(I, s, *, what: str | None = None) -> np.ndarray:
 
 
 @overflow_checked("I or R")
+@_parameters
 def effective_base_inertia(I, R) -> np.ndarray:
     """Effective inertia of the joint base ``R Uᵀ I = R (RᵀI⁻¹R)⁻¹ Rᵀ`` (thesis 6.97).
 
@@ -967,10 +969,7 @@ def effective_base_inertia(I, R) -> np.ndarray:
 
     Parameters
     ----------
-    I : array_like, shape (..., 3, 3)
-        Symmetric inertia (rigid or articulated) at the origin.
-    R : array_like, shape (..., 3, 3-k)
-        Joint reaction space (wrenches reciprocal to ``s``).
+    {I R}
 
     Returns
     -------
