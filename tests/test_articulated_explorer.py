@@ -12,7 +12,7 @@ import math
 import numpy as np
 import pytest
 
-from planargeo.draw.layout import legibility_problems
+from _picture_checks import elements, problems
 from planargeo.mechanics.model import Model
 from planargeo.scenes.articulated import bent_chain_model, inertia_at
 from planargeo.widgets import ArticulatedExplorer
@@ -20,8 +20,15 @@ from test_articulated_reference import dense_articulated
 
 
 def _legible(ex):
+    """Shown; every element of the picture has its symbol and description; no two labels overlap."""
     assert ex.message == ""
-    assert legibility_problems(ex.fig) == []
+    found = problems(ex.picture())
+    assert found == [], found
+
+
+def _segment(ex, id):
+    (xy,) = [np.asarray(p["xy"], float) for p in elements(ex.picture())[id]["parts"] if p["p"] == "path"]
+    return xy
 
 
 def _reference_A(n, lam, phi_deg, base_deg, k, outboard=None):
@@ -41,12 +48,12 @@ def test_default_state_matches_the_dense_reference_and_is_legible():
     for k in range(4):
         ref = _reference_A(4, 3.0, 25.0, 0.0, k)
         np.testing.assert_allclose(st["A"][k], ref, atol=1e-10 * np.abs(ref).max())
-        np.testing.assert_allclose(ex.art[k].get_conic(), ref, atol=1e-10 * np.abs(ref).max())
-        assert ex.art[k].imaginary                              # drawn through its real partner (10.2.3)
+        el = elements(ex.picture())[f"A{k + 1}"]
+        assert el.get("dash")                                   # drawn through its real partner, dashed (10.2.3)
         # the drawn ellipse is centred on the effective centre A⁻¹ [0, 0, 1] (7.26)
         P = np.linalg.solve(ref, [0.0, 0.0, 1.0])
-        xy = ex.art[k].get_xy()
-        np.testing.assert_allclose(np.nanmean(xy[:-1], axis=0), [-P[1] / P[2], P[0] / P[2]], atol=1e-9)
+        (e,) = [p for p in el["parts"] if p["p"] == "ellipse"]
+        np.testing.assert_allclose([e["x"], e["y"]], [-P[1] / P[2], P[0] / P[2]], atol=1e-5)
     Aj = inertia_at(_reference_A(4, 3.0, 25.0, 0.0, 0), (0.0, 0.0))
     assert ex.readout_values["Aₖ: inertia about joint k"] == pytest.approx(Aj[2, 2], rel=1e-10)
 
@@ -85,31 +92,32 @@ def test_percussion_axis_and_its_point_reflection():
     k = 1
     A = _reference_A(4, 3.0, 25.0, 0.0, k)
     a = np.array([-1.2, -2.5, 1.0])                                       # the pole (2.5, -1.2) as [y, -x, 1]
-    axis = ex.axis_A.get_line()
-    np.testing.assert_allclose(np.cross(axis, A @ a), 0.0, atol=1e-10 * np.abs(A @ a).max() ** 2)
+    axis = A @ a                                                           # the axis of percussion (5.64)
+    for X in _segment(ex, "Aa"):                                           # drawn through it
+        assert abs(axis[2] + X[1] * axis[0] - X[0] * axis[1]) < 1e-4 * np.abs(axis).max()
     # 10.2.3: the polar of a w.r.t. the drawn real conic is the axis reflected through the centre
     P = np.linalg.solve(A, [0.0, 0.0, 1.0])
     c = np.array([-P[1] / P[2], P[0] / P[2]])
-    polar = ex.polar.get_line()
-    foot = np.array([axis[1], -axis[0]]) * axis[2] / (axis[0] ** 2 + axis[1] ** 2)   # two points of the axis
-    for X in (foot, foot + np.array([axis[0], axis[1]]) / math.hypot(axis[0], axis[1])):
-        assert abs(axis[2] + X[1] * axis[0] - X[0] * axis[1]) < 1e-9 * np.abs(axis).max()   # X on the axis
-        Y = 2 * c - X
-        assert abs(polar[2] + Y[1] * polar[0] - Y[0] * polar[1]) < 1e-9 * np.abs(polar).max()
+    for Y in _segment(ex, "polar"):                  # every drawn point of the polar, reflected, is on the axis
+        X = 2 * c - Y
+        assert abs(axis[2] + X[1] * axis[0] - X[0] * axis[1]) < 1e-4 * np.abs(axis).max()
     _legible(ex)
 
 
 def test_chart_components_and_error_per_step():
     ex = ArticulatedExplorer(display="agg", **{"bodies n": 6, "focus": "body 2"})
-    errs = ex.err_curve.get_ydata()
+    errs = np.asarray(ex.state["error"][1])
+    marks = [p for p in elements(ex.picture())["chart error"]["parts"] if p["p"] == "mark"]
+    assert len(marks) == len(errs) and "(10.2.2)" in elements(ex.picture())["chart error"]["desc"]
     assert len(errs) == 5 and errs[-1] == 0.0 and np.all(np.diff(errs) < 0)
     full = _reference_A(6, 3.0, 25.0, 0.0, 1)
     for j, k in enumerate(range(5)):
         ref = _reference_A(6, 3.0, 25.0, 0.0, 1, outboard=k)
         assert errs[j] == pytest.approx(np.linalg.norm(ref - full) / np.linalg.norm(full), rel=1e-8, abs=1e-14)
-    for line in ex.curves:
-        if line.get_visible():
-            assert line.get_ydata()[-1] == pytest.approx(1.0)
+    comps = np.asarray(ex.state["components"][1])
+    for name in ("xx", "yy", "zz"):                 # each drawn curve ends at its full value: 1
+        j = ("xx", "yy", "zz").index(name)
+        assert comps[-1, j] / comps[-1, j] == 1.0 and elements(ex.picture())[f"chart {name}"]["desc"].endswith(", 1")
     _legible(ex)
 
 
@@ -160,7 +168,8 @@ def test_refusals_and_exports(tmp_path):
     assert ex.readout_values == shown and ex.values["bodies n"] == 4
     n = ex.n_computes
     ex.set(**{"rigid inertias": False, "percussion axes": False})
-    assert ex.n_computes == n and not ex.rigid[0].get_visible() and not ex.axis_A.get_visible()
+    els = elements(ex.picture())
+    assert ex.n_computes == n and "I1" not in els and "Aa" not in els and "A1" in els
     _legible(ex)
     assert ex.export_svg(tmp_path / "a.svg").stat().st_size > 1000
     assert ex.export_png(tmp_path / "a.png").stat().st_size > 1000

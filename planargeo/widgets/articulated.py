@@ -39,6 +39,7 @@ from matplotlib.lines import Line2D
 
 from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist, clip_line
 from planargeo.draw.layout import fit_view
+from planargeo.draw.pictures.articulated import MARGIN, articulated_picture, chain_view, fit_box
 from planargeo.draw.style import COLORS, OKABE_ITO
 from planargeo.geometry.conics import drawable_conic
 from planargeo.scenes.articulated import COMPONENTS, articulated_state, bent_chain_model, joint_points
@@ -838,6 +839,76 @@ class ArticulatedExplorer(Explorer):
             (lab["Ia"], line_candidates(st["axis_rigid"][k], box, fracs=(0.9, 0.1, 0.7, 0.3, 0.5))),
             (lab["polar"], line_candidates(self.polar.get_line(), box, fracs=(0.5, 0.3, 0.7, 0.1, 0.9))),
         ])
+        return self.readout_of(st)
+
+    def _focus_k(self, n: int) -> int:
+        """The focused body (0-based; body 1 for "all")."""
+        focus = self.values.get("focus", "all")
+        return 0 if focus == "all" else min(int(focus.split()[1]), n) - 1
+
+    def view_box(self, st) -> tuple[float, float, float, float]:
+        """The view: the chain, the centres, the pole and the drawn conics on the left, the chart on the right.
+
+        Parameters
+        ----------
+        st : dict
+            A state from :meth:`compute`.
+
+        Returns
+        -------
+        tuple
+            ``(x0, x1, y0, y1)``.
+        """
+        from planargeo.draw.geometry import conic_geometry
+
+        v = self.values
+        n = st["n"]
+        pts = [st["joints"], st["centre"], st["centre_rigid"], [[v["pole x"], v["pole y"]]]]
+        for C in list(st["A"][:n]) + (list(st["I"][:n]) if v["rigid inertias"] else []):
+            g = conic_geometry(C)
+            if "affine" in g:                  # the drawn ellipse's box: centre ± the affine's row norms
+                A = g["affine"]
+                half = np.hypot(A[:2, 0], A[:2, 1])
+                pts.append([A[:2, 2] - half, A[:2, 2] + half])
+        box = fit_box(np.vstack(pts), margin=0.1)
+        return chain_view(box, self.figure_px, MARGIN)
+
+    def scene_picture(self, st, view=None):
+        """The state's picture, built natively (:func:`planargeo.draw.pictures.articulated.articulated_picture`).
+
+        Parameters
+        ----------
+        st : dict
+            A state from :meth:`compute`.
+        view : (x0, x1, y0, y1), optional
+            The view the user zoomed or panned to (default: :meth:`view_box`).
+
+        Returns
+        -------
+        Picture
+        """
+        v = self.values
+        return articulated_picture(st, k=self._focus_k(st["n"]), focus_all=v.get("focus", "all") == "all",
+                                   rigid=bool(v["rigid inertias"]), axes=bool(v["percussion axes"]),
+                                   view=view or self.view_box(st), size=self.figure_px)
+
+    def readout_of(self, st):
+        """The readout of the state ``st`` (the focused body's ``Aₖ``, its centre, the pole, the energies).
+
+        Parameters
+        ----------
+        st : dict
+            A state from :meth:`compute`.
+
+        Returns
+        -------
+        dict
+            Readout values (units in :attr:`units`).
+        """
+        v = self.values
+        n = st["n"]
+        k = self._focus_k(n)
+        pts = st["joints"]
         w = self.controls["outboard bodies"]          # the slider spans the bodies outboard of body 1
         if w.max != n - 1:
             with self._quietly():

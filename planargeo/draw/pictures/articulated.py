@@ -21,9 +21,17 @@ Examples
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
-__all__ = ["fit_box"]
+from planargeo.draw.geometry import clip_line
+from planargeo.draw.picture import PX_PER_PT, Picture, nice_ticks
+from planargeo.draw.pictures._words import force, labelled_line, num, pair, where
+from planargeo.draw.style import COLORS
+from planargeo.geometry.conics import drawable_conic
+
+__all__ = ["fit_box", "chain_view", "articulated_picture", "CHART", "CHAIN_SHARE", "MARGIN"]
 
 
 def fit_box(mechanism, extra=(), margin: float = 0.15, reach: float = 3.0,
@@ -66,3 +74,228 @@ def fit_box(mechanism, extra=(), margin: float = 0.15, reach: float = 3.0,
     c, half = 0.5 * (lo + hi), 0.5 * max(float(np.max(hi - lo)), least)
     half = half * (1.0 + 2.0 * margin)
     return (float(c[0] - half), float(c[0] + half), float(c[1] - half), float(c[1] + half))
+
+
+_ART = "#CC79A7"        # OKABE_ITO purple: the articulated inertias
+_RIGID = "#9a9a9a"
+#: chart legend and colour of each component of ``A_k`` at joint ``k``
+CHART = (("xx", "#0072B2"), ("yy", "#E69F00"), ("zz", "#009E73"), ("xy", "#D55E00"), ("xz", "#CC79A7"),
+         ("yz", "#56B4E9"))
+#: the share of the view's width the chain takes (the chart the rest)
+CHAIN_SHARE = 0.62
+
+
+def _sub(i: int) -> str:
+    return str(i).translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
+
+
+def chain_view(box, size, margin) -> tuple[float, float, float, float]:
+    """A view whose left :data:`CHAIN_SHARE` holds the square ``box`` of the chain (the chart on the right).
+
+    Parameters
+    ----------
+    box : (x0, x1, y0, y1)
+        The chain's box (:func:`fit_box`).
+    size : (int, int)
+        The picture's pixels.
+    margin : (left, right, top, bottom)
+        The picture's margins (pixels).
+
+    Returns
+    -------
+    tuple
+        ``(x0, x1, y0, y1)`` with the plot area's shape.
+    """
+    x0, x1, y0, y1 = box
+    pw, ph = size[0] - margin[0] - margin[1], size[1] - margin[2] - margin[3]
+    r = pw / ph
+    S = max(x1 - x0, y1 - y0)
+    H = max(S, S / (CHAIN_SHARE * r))
+    W = r * H
+    cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+    left = cx - CHAIN_SHARE * W / 2
+    return (left, left + W, cy - H / 2, cy + H / 2)
+
+
+def articulated_picture(st: dict, *, k: int, focus_all: bool, rigid: bool, axes: bool, view,
+                        size=(960, 500)) -> Picture:
+    """The picture of one state of the articulated explorer (module docstring).
+
+    Parameters
+    ----------
+    st : dict
+        :func:`planargeo.scenes.articulated.articulated_state` with ``n`` and ``outboard``.
+    k : int
+        The focused body (0-based; body 1 when the focus is "all").
+    focus_all : bool
+        No focus: nothing faded.
+    rigid : bool
+        Draw the rigid inertias ``Iᵢ`` (and the axis ``Iₖa``).
+    axes : bool
+        Draw the axes of percussion and the polar of ``a``.
+    view : (x0, x1, y0, y1)
+        The view (:func:`chain_view`); the chart takes its right part.
+    size : (int, int)
+        Pixels.
+
+    Returns
+    -------
+    Picture
+    """
+    n = int(st["n"])
+    kk = _sub(k + 1)
+    pts = np.asarray(st["joints"], float)
+    pic = Picture(view, size=size, ticks=False, margin=MARGIN)
+    pic.path("links", pts, role="body", color=COLORS["body"], width=7.0 * PX_PER_PT, symbol="links",
+             desc=f"the chain: {n} bodies of 1 kg, joints L = 1 m apart", z=1)
+    pic.elements[-1]["opacity"] = 0.55
+    pic.marks("pins", pts[:-1], role="body", color="#000000", size=6.0, symbol="joints",
+              desc=f"the joints: {n} pins (joint 1 on the ground)", z=4)
+    pic.marks("ground", [pts[0]], role="ground", color=COLORS["ground"], shape="s", size=10.0, symbol="ground",
+              desc="the ground: joint 1 is pinned to it at (0, 0) m", z=3)
+    for i in range(n):
+        bold = focus_all or i == k
+        sub = _sub(i + 1)
+        if rigid:
+            c = np.asarray(st["centre_rigid"][i], float)
+            pic.conic(f"I{i + 1}", st["I"][i], role="inertia", color=_RIGID, symbol=f"I{sub}",
+                      label=f"I{sub}" if i == k else "",
+                      desc=f"rigid inertia of body {i + 1}, a conic about its centre of mass (10.2.3): "
+                           f"centre at {pair(c)} m")
+            if not bold:
+                pic.elements[-1]["opacity"] = 0.25
+        c = np.asarray(st["centre"][i], float)
+        pic.conic(f"A{i + 1}", st["A"][i], role="inertia", color=_ART, symbol=f"A{sub}",
+                  label=f"A{sub}" if i == k else "",
+                  desc=f"articulated inertia of body {i + 1} with the bodies outboard of it (7.7a), a conic: "
+                       f"effective centre at {pair(c)} m")
+        if not bold:
+            pic.elements[-1]["opacity"] = 0.3
+    a = np.asarray(st["pole"], float)
+    pic.point("a", a, role="accel", glyph=False, size=8.0, symbol="a",
+              desc=f"the acceleration pole a of body {k + 1} (4.6): {where(a)}")
+    if axes:
+        labelled_line(pic, "Aa", st["axis"][k], f"A{kk} a", role="wrench", arrow=False, symbol=f"A{kk} a",
+                      anchor=_at(pic, 0.1),
+                      desc=f"axis of percussion of a for body {k + 1} with the outboard bodies attached "
+                           f"(5.64–5.68): {force(st['axis'][k])}")
+        if rigid:
+            labelled_line(pic, "Ia", st["axis_rigid"][k], f"I{kk} a", role="momentum", arrow=False,
+                          dash=[8.0, 4.0], symbol=f"I{kk} a", anchor=_at(pic, 0.45), side=-1.0,
+                          desc=f"axis of percussion of a for body {k + 1} alone (5.64–5.68): "
+                               f"{force(st['axis_rigid'][k])}")
+        polar = drawable_conic(st["A"][k]) @ a
+        labelled_line(pic, "polar", polar, "polar of a (real conic)", role="construct", arrow=False,
+                      symbol="polar of a", anchor=_at(pic, 0.8), side=-1.0,
+                      desc=f"polar of a with respect to the drawn real conic of A{kk}: A{kk} a reflected "
+                           f"through the centre (10.2.3): {force(polar)}")
+    # the lines stay in the chain's part of the view (the chart has the rest)
+    X0, X1, Y0, Y1 = pic.box
+    part = (X0, X0 + (CHAIN_SHARE + 0.04) * (X1 - X0), Y0, Y1)
+    for el in pic.elements:
+        if el["id"] in ("Aa", "Ia", "polar"):
+            line = {"Aa": st["axis"][k], "Ia": st["axis_rigid"][k], "polar": polar}[el["id"]]
+            seg = clip_line(np.asarray(line, float), part)
+            el["parts"] = [q for q in el["parts"] if q["p"] != "path" or seg is not None]
+            for q in el["parts"]:
+                if q["p"] == "path":
+                    q["xy"] = seg
+    _scale_bar(pic)
+    _chart(pic, st, k)
+    return pic
+
+
+#: the picture's margins (pixels): no ticks (a scale bar instead), room for the chart's labels
+MARGIN = (6.0, 6.0, 6.0, 6.0)
+
+
+def _at(pic, f: float):
+    """A point of the chain's part of the view, ``f`` of its width from the left, at mid height."""
+    x0, x1, y0, y1 = pic.box
+    return (x0 + f * CHAIN_SHARE * (x1 - x0), (y0 + y1) / 2)
+
+
+def _scale_bar(pic) -> None:
+    x0, x1, y0, y1 = pic.box
+    span = CHAIN_SHARE * (x1 - x0)
+    length = 10.0 ** math.floor(math.log10(span / 4))
+    for m in (5.0, 2.0):
+        if m * length <= span / 4:
+            length *= m
+            break
+    px, py = x0 + 14.0 / pic.kx, y0 + 14.0 / pic.ky
+    pic.path("scale", [[px, py], [px + length, py]], role="ground", color="#000000", width=2.0,
+             symbol="scale", desc=f"a scale bar: {num(length)} m", z=6)
+    pic.text("scale text", (px + length / 2, py), f"{num(length)} m", ha="center", va="bottom", dy=3.0,
+             symbol="scale", desc=f"the scale bar's length: {num(length)} m")
+
+
+def _chart(pic, st, k: int) -> None:
+    """The convergence chart in the right part of the view (module docstring)."""
+    comps, errs = np.asarray(st["components"][k], float), np.asarray(st["error"][k], float)
+    steps = np.arange(len(comps))
+    full = comps[-1]
+    scale = np.linalg.norm(st["A_full"][k])
+    kk = _sub(k + 1)
+    curves = []
+    for j, (name, color) in enumerate(CHART):
+        if abs(full[j]) > 1e-9 * scale:
+            curves.append((name, color, comps[:, j] / full[j]))
+    vis = [c[2] for c in curves] + [errs]
+    lo = min(0.0, float(np.min(np.concatenate(vis)))) - 0.05
+    hi = max(1.05, float(np.max(np.concatenate(vis)))) + 0.1
+    s0, s1 = -0.3, max(len(comps) - 1, 1) + 0.3
+    X0, X1, Y0, Y1 = pic.box
+    W, H = X1 - X0, Y1 - Y0
+    fx = 1.0 / pic.kx        # data units per pixel
+    fy = 1.0 / pic.ky
+    cx0, cx1 = X0 + (CHAIN_SHARE + 0.08) * W, X1 - 14.0 * fx
+    cy0, cy1 = Y0 + 44.0 * fy, Y1 - 30.0 * fy
+
+    def at(s, v):
+        s, v = np.asarray(s, float), np.asarray(v, float)
+        return np.column_stack([cx0 + (s - s0) / (s1 - s0) * (cx1 - cx0), cy0 + (v - lo) / (hi - lo) * (cy1 - cy0)])
+
+    what = f"entries of A{kk} at joint {k + 1} over their full values against the recursion steps (10.2.2)"
+    pic.path("chart frame", [[cx0, cy0], [cx1, cy0], [cx1, cy1], [cx0, cy1]], role="chart", closed=True,
+             color="#000000", width=0.8, symbol="chart", desc=f"the chart: {what}", z=1)
+    for t in nice_ticks(lo, hi, 5):
+        pic.path(f"chart grid {t:g}", at([s0, s1], [t, t]), role="chart", color="#dddddd", width=0.6,
+                 symbol="chart", desc=f"the chart's grid line: {num(t)} of the full value", z=0)
+        pic.text(f"chart y {t:g}", at([s0], [t])[0], num(t), ha="right", va="center", dx=-3.0,
+                 symbol="chart", desc=f"the chart's value axis: {num(t)} of the full value")
+    for s in steps:
+        pic.text(f"chart x {s}", at([s], [lo])[0], str(s), ha="center", va="top", dy=-3.0,
+                 symbol="steps", desc=f"the chart's step axis: {s} outboard bodies in the recursion")
+    pic.text("chart xlabel", ((cx0 + cx1) / 2, cy0), "recursion steps (outboard bodies)", ha="center", va="top",
+             dy=-17.0, symbol="steps", desc="the chart's axis: how many outboard bodies the recursion includes "
+                                            "(10.2.2): 0 to " + str(len(comps) - 1))
+    pic.text("chart title", ((cx0 + cx1) / 2, cy1), f"entries of A{kk} at joint {k + 1} / full value",
+             ha="center", va="bottom", dy=4.0, symbol=f"A{kk}", desc=f"the chart: {what}")
+    shown_k = min(int(st["outboard"]), len(comps) - 1)
+    pic.path("chart now", at([shown_k, shown_k], [lo, hi]), role="chart", color=_ART, width=1.2,
+             symbol="outboard bodies", desc=f"the recursion steps shown in the chain: {shown_k}", z=2)
+    pic.elements[-1]["opacity"] = 0.7
+    for j, (name, color, y) in enumerate(curves):
+        xy = at(steps, y)
+        pic.path(f"chart {name}", xy, role="chart", color=color, width=1.5, symbol=name,
+                 desc=f"entry {name} of A{kk} at joint {k + 1} over its full value (10.2.2): "
+                      + ", ".join(num(v, 3) for v in y), z=3)
+        pic.elements[-1]["parts"] += [{"p": "mark", "x": float(x), "y": float(v), "shape": "o", "size": 4.0}
+                                      for x, v in xy]
+    xy = at(steps, errs)
+    pic.path("chart error", xy, role="chart", color="#000000", width=1.2, dash=[1.5, 2.5], symbol="error",
+             desc=f"‖A{kk} after so many steps − A{kk}‖ / ‖A{kk}‖ (10.2.2): " + ", ".join(num(v, 3) for v in errs),
+             z=3)
+    pic.elements[-1]["parts"] += [{"p": "mark", "x": float(x), "y": float(v), "shape": "s", "size": 4.0}
+                                  for x, v in xy]
+    # the legend: two columns in the lower right corner of the chart
+    names = [(c[0], c[1]) for c in curves] + [("error", "#000000")]
+    rows = (len(names) + 1) // 2
+    for m, (name, color) in enumerate(names):
+        col, row = divmod(m, rows)
+        x = cx1 - (2 - col) * 50.0 * fx + 4.0 * fx
+        y = cy0 + (rows - row) * 15.0 * fy - 4.0 * fy
+        pic.text(f"legend {name}", (x, y), ("— " if name != "error" else "··· ") + name, color=color,
+                 ha="left", va="center", symbol=name,
+                 desc=f"the chart's key: {name}" + ("" if name == "error" else f", entry {name} of A{kk}"))
