@@ -169,9 +169,6 @@ def centre_of_mass(inertia) -> np.ndarray:
 def rotational_inertia(inertia) -> np.ndarray:
     """Rotational inertia ``J = m ρ²`` about the centre of mass (parallel axis theorem, thesis 1.68, 4.58).
 
-    Raises :class:`~planargeo.errors.InputError` if the mass ``inertia[0, 0]``
-    is zero or negative.
-
     Parameters
     ----------
     inertia : array_like, shape (..., 3, 3)
@@ -200,9 +197,6 @@ def rotational_inertia(inertia) -> np.ndarray:
 @overflow_checked("inertia")
 def radius_of_gyration(inertia) -> np.ndarray:
     """Radius of gyration ``ρ = sqrt(J / m)`` (thesis 4.58, 5.64).
-
-    Raises :class:`~planargeo.errors.InputError` if the mass ``inertia[0, 0]``
-    is zero or negative.
 
     Parameters
     ----------
