@@ -472,6 +472,6 @@ class PercussionExplorer(Explorer):
         """
         pts = self.mechanism_points()
         lo, hi = pts.min(axis=0) - self._STEP, pts.max(axis=0) + self._STEP
-        lo = np.floor(lo / self._STEP - 1e-9) * self._STEP
-        hi = np.ceil(hi / self._STEP + 1e-9) * self._STEP
+        lo = np.floor(lo / self._STEP + 1e-9) * self._STEP
+        hi = np.ceil(hi / self._STEP - 1e-9) * self._STEP
         return (float(lo[0]), float(hi[0]), float(lo[1]), float(hi[1]))

@@ -93,16 +93,17 @@ def percussion_picture(st: dict, *, impact: bool = False, view, size=(600, 480))
     rho = nums["rho"]
     pic.path("body", np.asarray(st["shape"].exterior.coords), role="body", closed=True,
              fill=COLORS["body"], color="#000000", width=1.0 * 1.389, alpha=0.6, z=2,
-             desc=f"the body, a uniform lamina of mass m = {num(nums['mass'])} kg (5.64)")
+             symbol="body", desc=f"the body, a uniform lamina (5.64): mass m = {num(nums['mass'])} kg, "
+                                 f"area {num(st['shape'].area)} m²")
     pic.marks("grip", [[0.0, 0.0]], role="body", shape="s", size=9.0, color=COLORS["ground"], z=3,
-              symbol="grip", desc="where the hands hold the body (the origin)")
+              symbol="grip", desc="the grip, where the hands hold the body: at the origin (0, 0) m")
     grip = pic.elements[-1]
     grip["parts"].append({"p": "text", "x": 0.0, "y": 0.0, "dx": -7.0, "dy": -7.0, "text": "grip",
                           "ha": "right", "va": "top"})
     pic.conic("I", st["I"].matrix, role="inertia", symbol="I", label="ρ", mark_center=False,
               desc=f"inertia I as its circle of gyration (5.4, 1.65): radius ρ = {num(rho)} m")
     if nums["spot"] is not None:
-        pic.line("join", np.cross(a / a[2], from_xy(c)), role="construct", arrow=False, label="",
+        pic.line("join", np.cross(a / a[2], from_xy(c)), role="construct", arrow=False, label="", symbol="ac",
                  desc="the line from the pole a through the centre of mass c (5.68): "
                       f"d = |a − c| = {num(nums['d'])} m")
     F = math.hypot(f[0], f[1])
