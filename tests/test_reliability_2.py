@@ -174,3 +174,71 @@ def test_moved_points_turn_about_the_pole_and_shift_in_a_translation():
         np.testing.assert_allclose(got, pts + 3.0 * np.array([1.5, -2.0]), atol=1e-7)
     with pytest.raises(NumericOverflowError):
         _strict(moved_points, [1e308, 0.0, 0.0], pts, 1e10)
+
+
+# --------------------------------------------------------------------------- closed loops: a budget of evaluations
+import math  # noqa: E402
+import signal  # noqa: E402
+from contextlib import contextmanager  # noqa: E402
+
+from planargeo.errors import InputError, SizeLimitError  # noqa: E402
+from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state  # noqa: E402
+from planargeo.simulate.loops import LOOP_MAX_EVALS, simulate_loops  # noqa: E402
+
+
+class _TooLong(BaseException):
+    pass
+
+
+@contextmanager
+def _deadline(seconds: float):
+    """Fail (not hang) when the block runs past ``seconds`` of wall time (generous: the machine may be loaded)."""
+    def ring(*_):
+        raise _TooLong(f"still running after {seconds} s")
+    old = signal.signal(signal.SIGALRM, ring)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+
+
+@pytest.fixture(scope="module")
+def crank():
+    m = slider_crank_model()
+    q, qd = slider_crank_state()
+    return m, q, qd
+
+
+def test_a_loop_run_past_its_budget_is_refused_at_once(crank):
+    """RK23 at rtol 1e-10 needs about 60 000 evaluations of the constrained dynamics per second of the crank
+    (order 3); half a second of it ran for minutes (150 s measured under load).  Now its first 100 steps
+    extrapolate past LOOP_MAX_EVALS and it is refused, naming the limit and the opt-in."""
+    m, q, qd = crank
+    with _deadline(90), pytest.raises(SizeLimitError, match=f"max_evals = {LOOP_MAX_EVALS}"):
+        simulate_loops(m, q, qd, 0.5, method="RK23", rtol=1e-10, atol=1e-12, progress=False)
+
+
+@pytest.mark.parametrize("t_end, error", [(1e6, SizeLimitError), (1e300, SizeLimitError), (math.inf, InputError),
+                                          (math.nan, InputError), (-1.0, InputError), (0.0, InputError)])
+def test_loop_durations_are_bounded_or_named(crank, t_end, error):
+    m, q, qd = crank
+    with _deadline(90), pytest.raises(error, match="t_end|max_evals|max_steps"):
+        simulate_loops(m, q, qd, t_end, progress=False)
+
+
+def test_a_loop_run_that_reaches_its_budget_keeps_what_it_computed(crank):
+    """The same run with and without a budget: the limited one stops with status 'limit' and a message naming
+    max_evals, and holds the first steps of the full one, bit for bit; RK4's known count is checked up front."""
+    m, q, qd = crank
+    full = simulate_loops(m, q, qd, 0.05, rtol=1e-8, progress=False)
+    part = simulate_loops(m, q, qd, 0.05, rtol=1e-8, progress=False, max_evals=100)
+    assert full.status == "ok" and part.status == "limit" and "max_evals = 100" in part.message
+    assert 1 < len(part.t) < len(full.t) and part.nfev >= 100
+    np.testing.assert_array_equal(part.t, full.t[:len(part.t)])
+    np.testing.assert_array_equal(part.q, full.q[:len(part.t)])
+    with pytest.raises(SizeLimitError, match="max_evals = 10"):
+        simulate_loops(m, q, qd, 0.05, method="RK4", dt=0.01, progress=False, max_evals=10)   # 20 needed
+    with pytest.raises(InputError, match="max_evals"):
+        simulate_loops(m, q, qd, 0.05, progress=False, max_evals=0)

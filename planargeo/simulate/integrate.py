@@ -52,8 +52,14 @@ million: minutes, not years).  Where the count is known before starting (RK4's
 raises :class:`~planargeo.errors.SizeLimitError` at once; an adaptive run whose
 first 100 steps extrapolate past ``max_steps`` raises it too; one that reaches
 ``max_steps`` anyway stops cleanly with ``status == "limit"``, keeping what was
-computed.  Ctrl-C (``KeyboardInterrupt``) also stops cleanly: ``status ==
-"interrupted"``, the trajectory up to the last accepted step.
+computed.  A run may also be given ``max_evals``, a budget of evaluations of the
+dynamics (their cost is what matters where one evaluation is dear, e.g. a closed
+loop: :func:`planargeo.simulate.loops.simulate_loops` sets one by default): RK4's
+``4 t_end / dt`` beyond it raises at once, an adaptive run whose evaluations so far
+extrapolate past it (at its 10th step: past ten times it; at its 100th: past it)
+raises :class:`~planargeo.errors.SizeLimitError` naming ``max_evals``, and one that
+reaches it stops with ``status == "limit"``.  Ctrl-C (``KeyboardInterrupt``) also
+stops cleanly: ``status == "interrupted"``, the trajectory up to the last accepted step.
 
 Examples
 --------
@@ -159,7 +165,7 @@ class SimulationResult:
         Singular and near-singular events (module docstring).
     status : str
         ``"ok"``, ``"singular"`` (a singular configuration stopped the run),
-        ``"failed"`` (the integrator gave up), ``"limit"`` (``max_steps`` reached) or
+        ``"failed"`` (the integrator gave up), ``"limit"`` (``max_steps`` or ``max_evals`` reached) or
         ``"interrupted"`` (Ctrl-C); the trajectory holds what was computed.
     message : str
     method : str
@@ -285,7 +291,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
              project: Callable | None = None, residual: Callable | None = None,
              energy_fn: Callable | None = None, condition: Callable | str | None = None,
              cond_event: float = 1e6, progress: bool | None = None,
-             max_steps: int = MAX_STEPS, damping=None) -> SimulationResult:
+             max_steps: int = MAX_STEPS, damping=None, max_evals: int | None = None) -> SimulationResult:
     """Integrate ``q̈ = forward(q, q̇, τ)`` from ``(q0, qd0)`` over ``[0, t_end]`` (thesis 3.41-3.42, 2.9 in time).
 
     The state ``y = (q, q̇)`` obeys ``ẏ = (q̇, q̈)`` with ``q̈`` from the
@@ -341,6 +347,9 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         energy ``W(t) = ∫ Σ c_j q̇_j² dt`` is integrated with the motion and recorded in
         ``result.dissipated``; ``energy + dissipated`` is the initial energy (for a
         free mechanism) within the integrator's tolerance.
+    max_evals : int, optional
+        Largest number of evaluations of the dynamics (module docstring); None: no limit
+        beyond ``max_steps``.
 
     Returns
     -------
@@ -355,7 +364,8 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         finite and positive (``max_step`` may be ``inf``, ``atol`` zero); a batch of
         states; ``"RK4"`` without ``dt``; ``damping`` negative, not finite or of the wrong shape.
     SizeLimitError
-        A run that needs more than ``max_steps`` steps (module docstring).
+        A run that needs more than ``max_steps`` steps or ``max_evals`` evaluations
+        (module docstring).
 
     Examples
     --------
@@ -383,6 +393,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     (True, True)
     """
     t_end, dt, rtol, atol, max_step, max_steps = _options(method, t_end, dt, rtol, atol, max_step, max_steps)
+    max_evals = _eval_budget(max_evals, method, t_end, dt)
     if qd0 is None:
         raise InputError(f"qd0 must be the initial joint speeds, shape ({model.nq},), got None")
     q0, qd0, _, _, _, shape = check_state(model, q0, qd0)
@@ -492,7 +503,8 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
                 grid[-1] = min(grid[-1], t_end)
             gi = steps = 0
             while solver.status == "running":
-                stop = _step_budget(steps, t, t_end, max_steps, method)
+                stop = (_step_budget(steps, t, t_end, max_steps, method)
+                        or _eval_check(nfev, steps, t, t_end, max_evals, method))
                 if stop:
                     status, message = "limit", stop
                     break
@@ -604,6 +616,38 @@ def _positive(x, name: str, finite: bool = True) -> float:
     if not v > 0:
         raise InputError(f"{name} must be positive, got {v!r}")
     return v
+
+
+def _eval_budget(max_evals, method: str, t_end: float, dt) -> int | None:
+    """The validated ``max_evals`` of :func:`simulate`; RK4's known count (4 per step) past it raises at once."""
+    if max_evals is None:
+        return None
+    if isinstance(max_evals, (bool, np.bool_)) or not isinstance(max_evals, (int, np.integer)) or max_evals < 1:
+        raise InputError(f"max_evals must be a positive integer or None, got {max_evals!r}")
+    if method == "RK4":
+        n = 4 * math.ceil(t_end / dt - 1e-9)
+        if n > max_evals:
+            raise SizeLimitError(f"t_end = {t_end:g} needs {n} evaluations of the dynamics with RK4 at dt = {dt:g}, "
+                                 f"past max_evals = {max_evals}; pass a larger max_evals for a deliberate long run")
+    return int(max_evals)
+
+
+def _eval_check(nfev: int, k: int, t: float, t_end: float, max_evals: int | None, method: str) -> str:
+    """The message of a run stopped by ``max_evals`` after ``nfev`` evaluations ("" to go on); raises when the
+    evaluations so far extrapolate past ``10 max_evals`` at the 10th step, or past ``max_evals`` at the
+    :data:`_PROBE`-th (fail fast: the first steps of an adaptive run are the smallest)."""
+    if max_evals is None:
+        return ""
+    if nfev >= max_evals:
+        return (f"stopped at t = {t:.6g}: max_evals = {max_evals} evaluations of the dynamics done; pass a "
+                "larger max_evals for a deliberate long run")
+    factor = 10 if k == 10 else 1 if k == _PROBE else 0
+    if factor and t > 0 and t_end / (factor * max_evals) > t / nfev:       # overflow-free
+        raise SizeLimitError(f"{method} would need about {t_end / t * nfev:.3g} evaluations of the dynamics to "
+                             f"reach t_end = {t_end:g} (extrapolated from the first {k} steps, {nfev} evaluations), "
+                             f"past max_evals = {max_evals}; pass a larger max_evals for a deliberate long run, or a "
+                             "looser rtol or a higher-order method (DOP853)")
+    return ""
 
 
 def _step_budget(k: int, t: float, t_end: float, max_steps: int, method: str) -> str:

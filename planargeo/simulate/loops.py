@@ -62,9 +62,14 @@ from planargeo.mechanics.model import Model
 from planargeo.simulate.integrate import MAX_STEPS, MULTISTEP, SimulationResult, simulate
 
 __all__ = ["simulate_loops", "closure_residual", "closure_jacobian", "project_state", "baumgarte",
-           "STABILIZATIONS"]
+           "STABILIZATIONS", "LOOP_MAX_EVALS"]
 
 STABILIZATIONS = ("projection", "baumgarte", "both", "none")
+
+#: Default budget of a closed-loop run (``max_evals`` of :func:`simulate_loops`): evaluations of the
+#: constrained dynamics, each about 0.5 ms for the slider-crank on a quiet core (with the projection),
+#: so about 10 s of work; the 10 s crank run of the module docstring takes 18 600.
+LOOP_MAX_EVALS = 20_000
 
 
 def _cs(model, contacts):
@@ -294,7 +299,8 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
                    max_step: float = math.inf, stabilization: str = "projection", alpha: float = 5.0,
                    beta: float = 5.0, prescribed=None, tol: float = 1e-12, trigger: float = 1e-10,
                    project_initial: bool = True, watch: bool = True, cond_event: float = 1e6,
-                   progress: bool | None = None, max_steps: int = MAX_STEPS) -> SimulationResult:
+                   progress: bool | None = None, max_steps: int = MAX_STEPS,
+                   max_evals: int | None = LOOP_MAX_EVALS) -> SimulationResult:
     """Integrate a closed-loop mechanism with stabilised loop closures (thesis 9.5, 9.65-9.75 in time).
 
     The accelerations come from the constrained algorithm (open-loop ``u``
@@ -349,6 +355,13 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
         Progress bar (:func:`planargeo.simulate.progress_enabled`).
     max_steps : int
         Step limit of :func:`planargeo.simulate.simulate` (raise it for a deliberate long run).
+    max_evals : int or None
+        Budget of evaluations of the constrained dynamics (default :data:`LOOP_MAX_EVALS`, about
+        10 s of work): a run whose first steps extrapolate past it raises
+        :class:`~planargeo.errors.SizeLimitError` at once (e.g. ``RK23`` at ``rtol = 1e-10``, whose
+        order 3 takes about 60 000 evaluations per second of the crank); one that reaches it stops
+        with ``status == "limit"``, keeping what was computed.  Raise it (or None) for a
+        deliberate long run.
 
     Returns
     -------
@@ -363,6 +376,8 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
     InputError
         An unknown ``stabilization``, a projection with a multistep method, negative
         ``alpha``/``beta``, bad tolerances, or ``prescribed`` not a dict of joint indices.
+    SizeLimitError
+        A run predicted past ``max_steps`` or ``max_evals``.
 
     Examples
     --------
@@ -429,7 +444,7 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
                    stabilize=baumgarte(model, cs, alpha, beta, fixed=fixed) if use_baum else None,
                    project=project if use_proj else None, residual=resid,
                    condition=condition if watch else None, cond_event=cond_event, progress=progress,
-                   max_steps=max_steps)
+                   max_steps=max_steps, max_evals=max_evals)
     npos = sum(c.nc for c in cs)
     R = res.residual if res.residual is not None else np.zeros((len(res.t), 0))
     res.extra["n_position"] = npos
