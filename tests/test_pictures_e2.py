@@ -161,3 +161,44 @@ def test_splitting_a_translating_body_has_its_pole_at_infinity():
     assert ideal == ["a2", "a3"]                                 # the free-floating pair falls, translating
     for k in ideal:
         assert not any(p["p"] == "mark" for p in els[k]["parts"]) and any(p["p"] == "arrow" for p in els[k]["parts"])
+
+
+# ------------------------------------------------------------------------------------------ articulated
+def test_articulated_one_body_conic_centre_and_percussion_axis_by_hand():
+    """One body of mass 1 (ρ = L/λ = 1/3) along x: Aₖ = Iₖ, centred at (1/2, 0); the axis of percussion of
+    the pole a = (0, −0.8) for a rod about its centre (5.67): the line through c across ca at ρ²/|ca| beyond c."""
+    from planargeo.widgets import ArticulatedExplorer
+
+    ex = ArticulatedExplorer(display="agg", **{"bodies n": 1, "λ = L/ρ": 3.0})
+    pic = ex.picture()
+    assert problems(pic) == []
+    els = elements(pic)
+    for name in ("A1", "I1"):
+        (e,) = [p for p in els[name]["parts"] if p["p"] == "ellipse"]
+        assert (e["x"], e["y"]) == pytest.approx((0.5, 0.0), abs=1e-5)
+    a, c, rho2 = np.array([0.0, -0.8]), np.array([0.5, 0.0]), (1 / 3) ** 2
+    u = (c - a) / np.hypot(*(c - a))
+    foot = c + u * rho2 / np.hypot(*(c - a))                  # the axis ⟂ ca, on the far side of c from a
+    seg = _paths(els["Aa"])[0]
+    for X in seg:
+        assert abs((X - foot) @ u) < 1e-4
+    assert _marks(els["a"]) == [pytest.approx((0.0, -0.8), abs=1e-5)]
+    # the chart: one body, no outboard recursion: a single step, error 0
+    assert "chart error" in els and els["chart error"]["desc"].endswith(": 0")
+    assert fill(pic, ex.mechanism_points()) >= 1 / 3
+
+
+def test_articulated_default_fills_the_chain_part_and_focus_fades_the_rest():
+    from planargeo.widgets import ArticulatedExplorer
+
+    ex = ArticulatedExplorer(display="agg", focus="body 3")
+    pic = ex.picture()
+    assert problems(pic) == []
+    els = elements(pic)
+    assert els["A3"].get("opacity", 1.0) == 1.0 and els["A1"]["opacity"] < 1.0 and els["I2"]["opacity"] < 1.0
+    assert [p["text"] for p in els["A3"]["parts"] if p["p"] == "text"] == ["A₃"]
+    assert fill(pic, ex.mechanism_points()) >= 1 / 3
+    x0, x1, _, _ = pic["box"]                       # the chain's lines stay left of the chart
+    for name in ("Aa", "Ia", "polar"):
+        for seg in _paths(els[name]):
+            assert seg[:, 0].max() <= x0 + 0.67 * (x1 - x0)
