@@ -91,7 +91,7 @@ def screw_sum_picture(mode: str, c, *, anchors=None, view, size=(560, 500)) -> P
 def _twists(pic: Picture, c) -> None:
     q1, q2 = np.asarray(c.Q1, float), np.asarray(c.Q2, float)
     if c.line is not None:
-        pic.line("lever", c.line, role="construct", arrow=False, label="",
+        pic.line("lever", c.line, role="construct", arrow=False, label="", symbol="Q₁Q₂",
                  desc="lever line Q₁Q₂ through both poles (4.11): the sum's pole lies on it")
     # labels: v₁, v₂ on one side of the lever line, the sum's on the other (coincident: spread)
     if c.line is None or q1[2] == 0 or q2[2] == 0:
