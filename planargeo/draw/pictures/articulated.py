@@ -292,6 +292,10 @@ def _chart(pic, st, k: int) -> None:
     # the legend: two columns in the lower right corner of the chart
     names = [(c[0], c[1]) for c in curves] + [("error", "#000000")]
     rows = (len(names) + 1) // 2
+    kx0, ky1 = cx1 - 2 * 50.0 * fx, cy0 + rows * 15.0 * fy + 4.0 * fy
+    pic.path("chart key", [[kx0, cy0 + 2.0 * fy], [cx1 - 2.0 * fx, cy0 + 2.0 * fy], [cx1 - 2.0 * fx, ky1],
+                           [kx0, ky1]], role="chart", closed=True, fill="#ffffff", alpha=0.85, color="#cccccc",
+             width=0.6, symbol="key", desc=f"the chart's key: {len(names)} curves", z=5)
     for m, (name, color) in enumerate(names):
         col, row = divmod(m, rows)
         x = cx1 - (2 - col) * 50.0 * fx + 4.0 * fx
