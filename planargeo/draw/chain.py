@@ -91,7 +91,7 @@ def _value(kind: str, x, unit: str) -> str:
 
 
 def chain_picture(w, *, overlays: dict, view, split: dict | None = None, focus=None,
-                  size=(560, 540), ends=None) -> Picture:
+                  size=(560, 540), ends=None, time: float | None = None) -> Picture:
     """The picture of one state of a chain (module docstring).
 
     Parameters
@@ -113,6 +113,8 @@ def chain_picture(w, *, overlays: dict, view, split: dict | None = None, focus=N
     ends : array_like (N, 2), optional
         The far ends of the links (default: the next joint, the last one reaching one
         link length beyond its joint along the link).
+    time : float, optional
+        The state's time (s), written in the lower right corner.
 
     Returns
     -------
@@ -163,4 +165,8 @@ def chain_picture(w, *, overlays: dict, view, split: dict | None = None, focus=N
                           label="" if faded else None)
             if faded:
                 pic.elements[-1]["opacity"] = FADED
+    if time is not None:
+        x1, y0 = pic.box[1], pic.box[2]
+        pic.text("time", (x1, y0), f"t = {time:.2f} s", ha="right", va="bottom", dx=-6.0, dy=4.0,
+                 symbol="t", desc=f"time since the state the controls set: {time:.2f} s")
     return pic
