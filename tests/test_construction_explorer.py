@@ -15,9 +15,23 @@ import numpy as np
 import pytest
 
 from planargeo.draw.layout import legibility_problems
+from planargeo.draw.render import figure
 from planargeo.errors import InputError
 from planargeo.scenes.construction import CONSTRUCTIONS, construct, parameters
 from planargeo.widgets.construction import ConstructionExplorer
+
+from _picture_checks import elements, problems
+
+
+def steps_drawn(ex) -> list[int]:
+    """The steps whose elements the picture draws (each element carries its step)."""
+    return sorted({e["step"] for e in ex.picture()["elements"] if "step" in e})
+
+
+def legible(ex) -> list[str]:
+    """Problems of the picture: undescribed elements, labels on each other, as drawn by matplotlib too."""
+    pic = ex.picture()
+    return problems(pic) + legibility_problems(figure(pic))
 
 
 def xy(p):
@@ -136,11 +150,14 @@ def test_step_slider_draws_one_step_more_without_recomputing(ex):
     n = ex.n_computes
     ex.set(step=1)
     assert ex.caption == "Step 1/3: Q₁, Q₂: the poles of v₁ and v₂ (4.10)"
-    assert [layer.get_visible() for layer in ex.layers] == [True, False, False]
+    assert steps_drawn(ex) == [1] and set(elements(ex.picture())) >= {"Q1", "Q2"}
+    assert elements(ex.picture())["caption 1"]["parts"][0]["text"] == ex.caption     # drawn, whole
     assert ex.readout_values["equation"] == "4.10"
     ex.set(step=3)
-    assert [layer.get_visible() for layer in ex.layers] == [True, True, True]
+    assert steps_drawn(ex) == [1, 2, 3]
     assert "β = ω₂/(ω₁+ω₂) = 0.75" in ex.caption
+    v3 = next(p for p in elements(ex.picture())["v3"]["parts"] if p["p"] == "mark")
+    assert (v3["x"], v3["y"]) == pytest.approx((2.25, 0.0))      # β = 3/4 of the way from Q₁ to Q₂
     assert ex.n_computes == n                    # the step is a display control
 
 
@@ -169,7 +186,10 @@ def test_layers_export_one_group_per_step(ex, tmp_path):
     ids = [g.get("id") for g in root.iter("{http://www.w3.org/2000/svg}g") if g.get("id", "").startswith("step-")]
     assert ids == ["step-1-poles", "step-2-lever", "step-3-sum"]
     assert ex.step_ids() == ids
-    assert [layer.get_visible() for layer in ex.layers] == [True, False, False]   # view unchanged
+    assert steps_drawn(ex) == [1]                                                 # view unchanged
+    groups = {g.get("id"): g for g in root.iter("{http://www.w3.org/2000/svg}g")}
+    inner = {g.get("id", "").split(":")[0] for g in groups["step-3-sum"].iter() if g.get("id")}
+    assert "v3" in inner and "Q1" not in inner                                   # each step its own
     assert path.read_bytes() == ex.export_layers(tmp_path / "again.svg").read_bytes()
 
 
@@ -180,7 +200,7 @@ def test_every_step_of_every_construction_is_legible(kind):
     for k in range(1, e.n_steps + 1):
         e.set(step=k)
         assert e.message == ""
-        assert legibility_problems(e.fig) == [], (kind, k)
+        assert legible(e) == [], (kind, k)
 
 
 @pytest.mark.parametrize("kind, state", [
@@ -192,7 +212,7 @@ def test_every_step_of_every_construction_is_legible(kind):
 def test_special_states_are_legible(kind, state):
     e = ConstructionExplorer(kind, display="agg", **state)
     assert e.message == ""
-    assert legibility_problems(e.fig) == []
+    assert legible(e) == []
 
 
 def test_registered():
@@ -215,7 +235,7 @@ def test_a_pole_dragged_through_infinity(tmp_path):
     poles, sums = [], []
     for t in (1.5, 1.9, 2.0, 2.1, 2.5):
         e.drag("h", e.handle_position("h"), (t, 0.0), steps=1)
-        assert e.message == "" and legibility_problems(e.fig) == []
+        assert e.message == "" and legible(e) == []
         poles.append(e.readout_values["pole of v₂"])
         sums.append(np.array(e.readout_values["v₃"]))
     assert poles[0] == pytest.approx((6.0, 0.0)) and poles[1][0] == pytest.approx(38.0)
@@ -234,12 +254,13 @@ def test_a_pole_dragged_through_infinity(tmp_path):
 
 def test_earlier_steps_faded_shown_or_hidden(ex):
     ex.set(step=2, earlier="hidden")
-    assert [layer.get_visible() for layer in ex.layers] == [False, True, False]
+    assert steps_drawn(ex) == [2]
     ex.set(earlier="shown")
-    assert [layer.get_visible() for layer in ex.layers] == [True, True, False]
-    assert ex.element_artists["0:Q1"].get_alpha() == 1.0
+    assert steps_drawn(ex) == [1, 2]
+    assert elements(ex.picture())["Q1"].get("opacity", 1.0) == 1.0
     ex.set(earlier="faded")
-    assert ex.element_artists["0:Q1"].get_alpha() < 1.0
+    assert elements(ex.picture())["Q1"].get("opacity", 1.0) < 1.0
+    assert elements(ex.picture())["Q1Q2"].get("opacity", 1.0) == 1.0              # the step shown
 
 
 # ---------------------------------------------------------------- issue 22: every construction offered
@@ -273,16 +294,21 @@ def test_newton_euler_from_the_menu_matches_the_hand_derivation():
     assert e.readout_strings["fⁿᵉᵗ"] == "(0 N, 1 N, 0.25 N·m)"       # one unit per component
 
 
-def test_the_key_names_the_roles_on_screen():
-    e = ConstructionExplorer("newton_euler", display="agg", key=True)
-    from planargeo.draw.artists import legend_handles
+def test_the_key_names_what_is_on_screen():
+    """Issue 21: the key did nothing.  Now it lists the symbols drawn with their meanings."""
+    def key(e):
+        return " | ".join(p["text"] for el in e.picture()["elements"] if el["id"].startswith("key ")
+                          for p in el["parts"] if p["p"] == "text")
 
-    labels = {h.get_label() for h in legend_handles(e.ax)}
-    assert {"velocity pole (a twist)", "acceleration pole", "force line (a wrench)",
-            "bias force p", "inertia I: circle of gyration"} <= labels
-    assert e._legend is not None and len(e._legend.get_texts()) == len(labels)
+    e = ConstructionExplorer("newton_euler", display="agg", key=True)
+    text = key(e)
+    for meaning in ("velocity pole v of the body", "acceleration pole a of the body", "net force",
+                    "bias force p", "inertia I as its circle of gyration"):
+        assert meaning in text, meaning
     e.set(step=1)                      # only the inertia is drawn: the key says only that
-    assert {h.get_label() for h in legend_handles(e.ax)} == {"inertia I: circle of gyration"}
+    assert "inertia I as its circle of gyration" in key(e) and "velocity pole" not in key(e)
+    e.set(key=False)
+    assert key(e) == ""
 
 
 def test_sliders_say_symbols_and_units_not_code_names():
@@ -312,6 +338,6 @@ def test_earlier_steps_control_is_disabled_at_step_one(ex):
     ex.set(step=1)
     assert "step 1" in ex.disabled(ex.values)["earlier"]
     before = dict(ex.readout_values)
-    shown = [layer.get_visible() for layer in ex.layers]
+    shown = ex.picture()["elements"]
     ex.set(earlier="hidden")                    # indeed nothing changes: one step is shown
-    assert ex.readout_values == before and [layer.get_visible() for layer in ex.layers] == shown
+    assert ex.readout_values == before and ex.picture()["elements"] == shown

@@ -33,6 +33,7 @@ from planargeo.draw.pictures._words import num, where
 from planargeo.draw.pictures.common import label_line, label_toward
 from planargeo.draw.style import COLORS, SUM
 from planargeo.geometry.projective import is_at_infinity, is_ideal
+from planargeo.screws.inertia import mass, radius_of_gyration
 
 __all__ = ["construction_picture", "MEANINGS", "FADED", "CAPTION_CHARS"]
 
@@ -41,27 +42,27 @@ FADED = 0.4
 #: characters per caption line (two lines at most)
 CAPTION_CHARS = 70
 
-#: per construction and element name: (meaning with its equation, unit of a point's rate);
-#: an element's symbol is its label (the thesis symbol), or the one given here after "|"
+#: per construction and element name: its meaning with its equation, or (symbol, meaning) for an
+#: element drawn without a label (an element's symbol is its label, the thesis symbol)
 MEANINGS = {
     "twist_sum": {
         "Q1": "twist v₁, a rotation about its pole Q₁ (4.10)", "Q2": "twist v₂, a rotation about its pole Q₂ (4.10)",
-        "Q1Q2": "Q₁Q₂|lever line through both poles (5.32)",
+        "Q1Q2": ("Q₁Q₂", "lever line through both poles (5.32)"),
         "v3": "sum v₃ = v₁ + v₂ (4.11–4.13)",
     },
     "wrench_sum": {
         "f1": "wrench f₁ on its line of action L₁ (4.27)", "f2": "wrench f₂ on its line of action L₂ (4.27)",
-        "P": "P|meet P = L₁ × L₂ of the two lines (5.34)",
-        "par1": "f₁|the force f₁ drawn from P (4.39)", "par2": "f₂|the force f₂ drawn from P (4.39)",
-        "par3": "|a side of the force parallelogram (4.39)", "par4": "|a side of the force parallelogram (4.39)",
-        "diag": "f₁ + f₂|the parallelogram's diagonal: the summed force (4.39)",
-        "rho": "ρ|shift of the force by the couple, ρ = τ/F (4.46)",
+        "P": ("P", "meet P = L₁ × L₂ of the two lines (5.34)"),
+        "par1": ("f₁", "the force f₁ drawn from P (4.39)"), "par2": ("f₂", "the force f₂ drawn from P (4.39)"),
+        "par3": ("side", "a side of the force parallelogram (4.39)"), "par4": ("side", "a side of the force parallelogram (4.39)"),
+        "diag": ("f₁ + f₂", "the parallelogram's diagonal: the summed force (4.39)"),
+        "rho": ("ρ", "shift of the force by the couple, ρ = τ/F (4.46)"),
         "f3": "sum f₃ = f₁ + f₂, its line through P (4.33)",
     },
     "velocity": {
         "v_prev": "velocity pole of the previous body vᵢ₋₁ (4.47)",
         "joint": "the joint's relative rotation sᵢ q̇ᵢ, its pole at the joint (2.1)",
-        "lever": "kᵢ|lever line from vᵢ₋₁ to the joint (4.48)",
+        "lever": ("kᵢ", "lever line from vᵢ₋₁ to the joint (4.48)"),
         "v": "velocity pole of the body vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ (4.48–4.49)",
     },
     "acceleration": {
@@ -70,8 +71,8 @@ MEANINGS = {
         "rel": "relative acceleration sᵢ q̈ᵢ about the joint (4.52)",
         "kappa": "bias acceleration κᵢ = vᵢ × sᵢ q̇ᵢ, a translation (4.53)",
         "combo": "what the joint adds, sᵢ q̈ᵢ + κᵢ (4.54)",
-        "joint_lever": "|line of the joint's poles sᵢ q̈ᵢ and κᵢ (4.54)",
-        "lever": "|lever line joining the poles of aᵢ₋₁ and sᵢ q̈ᵢ + κᵢ (4.52)",
+        "joint_lever": ("joint line", "line of the joint's poles sᵢ q̈ᵢ and κᵢ (4.54)"),
+        "lever": ("lever", "lever line joining the poles of aᵢ₋₁ and sᵢ q̈ᵢ + κᵢ (4.52)"),
         "a": "acceleration pole of the body aᵢ = aᵢ₋₁ + sᵢ q̈ᵢ + κᵢ (4.52)",
     },
     "newton_euler": {
@@ -80,15 +81,15 @@ MEANINGS = {
         "Ia": "force I a on the axis of percussion of a (5.64)",
         "p": "bias force p, through the centre of mass (4.56)",
         "fnet": "net force fⁿᵉᵗ = I a + p (4.55)",
-        "J": "joint|the joint about which the torque is taken (4.57)",
-        "rho": "ρ|distance ρ = τ/|fⁿᵉᵗ| of the net force from the joint (4.57)",
+        "J": ("joint", "the joint about which the torque is taken (4.57)"),
+        "rho": ("ρ", "distance ρ = τ/|fⁿᵉᵗ| of the net force from the joint (4.57)"),
     },
     "through_infinity": {
-        "horizon": "horizon|the line at infinity drawn as the circle |h| = 2 m (10.2.4)",
+        "horizon": ("horizon", "the line at infinity drawn as the circle |h| = 2 m (10.2.4)"),
         "v1": "twist v₁, a rotation about its pole (4.10)",
-        "h": "h|the handle that places v₂'s pole (10.2.4)",
+        "h": ("h", "the handle that places v₂'s pole (10.2.4)"),
         "v2": "twist v₂ = k [h_y, −h_x, 1 − |h|/R] (10.2.4, 4.10)",
-        "lever": "|lever line through the poles of v₁ and v₂ (4.11)",
+        "lever": ("Q₁Q₂", "lever line through the poles of v₁ and v₂ (4.11)"),
         "v3": "sum v₃ = v₁ + v₂ (4.11)",
     },
 }
@@ -100,9 +101,7 @@ _SYMBOLS = {r"$f^{net}$": "fⁿᵉᵗ"}
 def _meaning(kind: str, e) -> tuple[str, str]:
     """(symbol, meaning with equation) of the element ``e`` of construction ``kind``."""
     text = MEANINGS.get(kind, {}).get(e.name, e.name)
-    sym, _, meaning = text.rpartition("|")
-    if not _:
-        meaning = text
+    sym, meaning = text if isinstance(text, tuple) else ("", text)
     return (_symbol(e.label) if e.label else sym), meaning
 
 
@@ -125,7 +124,9 @@ def _value(e) -> str:
         return f"|force| {num(F)} N, {num(abs(v[2]) / F)} m from the origin"
     if e.kind == "segment":
         return f"length {num(float(np.hypot(*(v[1] - v[0]))))} m"
-    return ""
+    if e.role == "inertia":
+        return f"mass {num(mass(v))} kg, radius of gyration {num(radius_of_gyration(v))} m"
+    return f"radius {num(math.sqrt(-v[2, 2] / v[0, 0]))} m" if v[0, 0] > 0 > v[2, 2] else ""
 
 
 def _frame(c, upto: int):
@@ -208,12 +209,12 @@ def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(56
     bx0, bx1, by0, by1 = pic.box
     band_top = by0 + band_px / pic.ky
     pic.path("caption band", [[bx0, by0], [bx1, by0], [bx1, band_top], [bx0, band_top]], role="text",
-             closed=True, fill="#FFFFFF", color="#CCCCCC", width=0.8, z=19,
+             closed=True, fill="#FFFFFF", color="#CCCCCC", width=0.8, z=19, symbol=f"step {k}",
              desc=f"the step shown: {caption}")
     for i, line in enumerate(lines):
         pic.text(f"caption {i + 1}", (bx0, band_top), line, role="text", ha="left", va="top", dx=6.0,
-                 dy=-5.0 - 1.3 * FONT_PX * i, z=20,
-                 desc=f"the step shown: {caption}" if i == 0 else "")
+                 dy=-5.0 - 1.3 * FONT_PX * i, z=20, symbol=f"step {k}",
+                 desc=f"the step shown: {caption}")
         pic.elements[-1]["parts"][0].pop("fixed")     # placed first: no label lands on the caption
     centre, nrm = _frame(c, shown)
     view_centre = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
