@@ -48,12 +48,16 @@ $(PIP_STAMP): pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e '.[dev]'
 	@touch $(PIP_STAMP)
 
+# `make -n lab STAMP=Makefile` (tests/test_readme.py: the set-up taken as done) must not remake this Makefile:
+# GNU make runs the recipe of a rule that remakes a makefile even under -n, so then no rule names it.
+ifneq ($(STAMP),Makefile)
 $(STAMP): $(PIP_STAMP) $(KERNEL_SOURCES) $(KERNEL_LIMITS)
 	@if [ -f $(STAMP) ] && [ -n "$(filter $(KERNEL_LIMITS),$?)" ]; then \
 	  echo "kernel limits changed ($(filter $(KERNEL_LIMITS),$?)): the kernels are compiled afresh"; \
 	  touch planargeo/algorithms/kernels.py; fi
 	$(BIN)/python -m planargeo.algorithms.compiled --warm
 	@touch $(STAMP)
+endif
 
 install: $(STAMP)
 
