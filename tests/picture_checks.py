@@ -82,3 +82,25 @@ def on_line(xy, a, b, tol: float = 1e-6) -> bool:
     d = b - a
     n = np.array([-d[1], d[0]]) / np.hypot(*d)
     return abs(float((xy - a) @ n)) <= tol * max(1.0, float(np.hypot(*d)))
+
+
+def px_per_unit(pic: dict) -> float:
+    """Pixels per data unit of a picture (one scale on both axes)."""
+    x0, x1, _y0, _y1 = pic["box"]
+    return (pic["size"][0] - pic["margin"][0] - pic["margin"][1]) / (x1 - x0)
+
+
+def drawn_arrow(pic: dict, eid: str):
+    """``(vector, middle)`` of an element's arrow in data units, or None when it has no arrow."""
+    arrows = parts(elements(pic)[eid], "arrow")
+    if not arrows:
+        return None
+    (a,) = arrows
+    vec = np.array([a["dx"], a["dy"]]) / px_per_unit(pic)
+    return vec, np.array([a["x"], a["y"]]) + vec / 2
+
+
+def text_of(pic: dict, eid: str) -> str:
+    """The text of a text element (a banner, the figure message), "" when there is none."""
+    el = elements(pic).get(eid)
+    return "" if el is None else parts(el, "text")[0]["text"]

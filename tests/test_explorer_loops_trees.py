@@ -7,15 +7,30 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from planargeo.algorithms.loops import constrained_dynamics_lagrange
-from planargeo.draw.layout import legibility_problems
+from picture_checks import drawn_arrow, elements, overlapping_labels, parts, shown_labels, undescribed
 from planargeo.simulate.loops import closure_residual
 from planargeo.widgets.trees import TreeExplorer
 
 
+SUB = "₁₂₃₄₅₆₇₈₉"
+
+
 def legible(ex):
-    problems = legibility_problems(ex.fig)
+    """No two labels overlap; every element has its symbol and a description with its value."""
+    pic = ex.picture()
+    problems = overlapping_labels(pic) + undescribed(pic)
     assert problems == [], problems
     return ex
+
+
+def drawn_wrench_matches(ex, eid, w, tol):
+    """The drawn arrow of ``eid`` is the force of the wrench ``w`` (the largest force of the picture drawn
+    0.9 m long) and sits on its line of action."""
+    fmax = max(np.hypot(*x.wrench[:2]) for x in ex.state["reactions"])
+    vec, foot = drawn_arrow(ex.picture(), eid)
+    np.testing.assert_allclose(vec * fmax / 0.9, w[:2], rtol=0, atol=tol, err_msg=eid)
+    assert np.dot([foot[1], -foot[0], 1.0], w) == pytest.approx(0.0, abs=1e-4 * max(1.0, np.abs(w).max())), eid
+    return foot
 
 
 @pytest.fixture
@@ -44,23 +59,22 @@ def check_drawn_forces(ex):
     f, F = _lagrange_joint_wrenches(ex.state["model"], q, qd)
     scale = max(1.0, np.abs(f).max())
     for i in range(9):
-        np.testing.assert_allclose(ex.glyphs[f"f_{i + 1}"].wrench, f[i], atol=1e-9 * scale, err_msg=f"f_{i + 1}")
+        drawn_wrench_matches(ex, f"f{SUB[i]}", f[i], 1e-5 * scale)
     for k in range(2):
-        np.testing.assert_allclose(ex.glyphs[f"F_{k + 1}"].wrench, -F[k], atol=1e-9 * scale)
+        drawn_wrench_matches(ex, f"F{SUB[k]}", -F[k], 1e-5 * scale)
     assert ex.readout_values["largest pin force"] == pytest.approx(np.hypot(f[:, 0], f[:, 1]).max(), rel=1e-9)
     return scale
 
 
 def test_every_pin_force_drawn_labelled_and_equal_to_the_multipliers(ex):
-    labels = {g.text.get_text() for g in ex.glyphs.values()}
-    assert labels == {"f₁", "f₂", "f₃", "f₄", "f₅", "f₆", "f₇", "f₈", "f₉", "F₁", "F₂"}
-    assert all(g.text.get_visible() and g.arrow.get_visible() for g in ex.glyphs.values())
+    texts = [t for _id, t in shown_labels(ex.picture())]
+    for sym in ["f₁", "f₂", "f₃", "f₄", "f₅", "f₆", "f₇", "f₈", "f₉", "F₁", "F₂"] + [str(i) for i in range(1, 10)]:
+        assert sym in texts, sym
     check_drawn_forces(ex)
-    # free pins: every joint's line of action passes through its joint (no joint torques here)
+    # free pins: every joint's arrow sits at its joint (no joint torques here)
     pose = ex.state["sol"].data.pose
     for i in range(9):
-        np.testing.assert_allclose(ex.glyphs[f"f_{i + 1}"].foot, pose[i, :2], atol=1e-9)
-    assert [t.get_text() for t in ex.labels] == [str(i) for i in range(1, 10)]
+        np.testing.assert_allclose(drawn_arrow(ex.picture(), f"f{SUB[i]}")[1], pose[i, :2], atol=1e-4)
     assert set(ex.readout_values) <= set(ex.units) | {k for k in ex.readout_values if "(N)" in k or k == "loops"}
 
 
@@ -75,14 +89,15 @@ def test_open_tree_pin_forces_match_pinocchio(ex):
     pd = pm.createData()
     pin.rnea(pm, pd, q, qd, ex.state["qdd"])
     pin.forwardKinematics(pm, pd, q, qd, ex.state["qdd"])
-    scale = max(1.0, max(np.abs(g.wrench).max() for g in ex.glyphs.values() if g.visible))
+    scale = max(np.hypot(*x.wrench[:2]) for x in ex.state["reactions"])
     for i in range(9):
         fi, oMi = pd.f[i + 1], pd.oMi[i + 1]
         F = oMi.rotation @ fi.linear
         p = oMi.translation
         tz = (oMi.rotation @ fi.angular)[2] + p[0] * F[1] - p[1] * F[0]
-        np.testing.assert_allclose(ex.glyphs[f"f_{i + 1}"].wrench, [F[0], F[1], tz], atol=1e-10 * scale)
-    assert not ex.glyphs["F_1"].visible and not ex.glyphs["F_2"].visible
+        np.testing.assert_allclose(ex.state["reactions"][i].wrench, [F[0], F[1], tz], atol=1e-10 * max(1.0, scale))
+        drawn_wrench_matches(ex, f"f{SUB[i]}", np.array([F[0], F[1], tz]), 1e-5 * scale)
+    assert not {"F₁", "F₂"} & set(elements(ex.picture()))
 
 
 def _reference_run(model, q0, qd0, t_end):
@@ -122,13 +137,17 @@ def test_focus_on_one_reaction(ex):
     assert ex.controls["focus"].options[:2] == ("all", "f₁")
     ex.set(focus="f₅")
     legible(ex)
-    g = ex.glyphs["f_5"]
-    assert g.text.get_visible() and g.text.get_fontweight() == "bold"
-    assert sum(x.text.get_visible() for x in ex.glyphs.values()) == 1
-    assert all(x.arrow.get_alpha() < 1 for k, x in ex.glyphs.items() if k != "f_5")
-    assert ex.readout_values["|f₅|"] == pytest.approx(np.hypot(*g.wrench[:2]))
+    pic = ex.picture()
+    els = elements(pic)
+    forces = [f"f{s}" for s in SUB] + ["F₁", "F₂"]
+    assert [i for i, _t in shown_labels(pic) if i in forces] == ["f₅"]         # only the focus labelled
+    assert els["f₅"].get("opacity", 1.0) == 1.0 and els["f₅"]["width"] > els["f₄"]["width"]   # bold
+    assert all(els[k]["opacity"] < 1 for k in forces if k != "f₅")             # the rest faded
+    x = ex.state["reactions"][4]
+    assert ex.readout_values["|f₅|"] == pytest.approx(np.hypot(*x.wrench[:2]))
+    assert f"{ex.readout_values['|f₅|']:.4g} N" in els["f₅"]["desc"]
     ex.set(focus="all")
-    assert ex.ax.get_xlim() == pytest.approx(ex.limits[:2])
+    assert ex.picture()["box"] == pytest.approx(ex.limits, abs=1e-3)
     legible(ex)
 
 

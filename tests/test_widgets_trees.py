@@ -6,6 +6,7 @@ import pytest
 
 from planargeo import scenes
 from planargeo.algorithms.loops import constrained_dynamics_lagrange
+from picture_checks import drawn_arrow, elements, overlapping_labels, parts, px_per_unit, undescribed
 from planargeo.widgets.trees import TreeExplorer
 
 
@@ -23,11 +24,10 @@ def pin_points(ex):
 @pytest.fixture
 def ex():
     """The explorer; the state each test leaves it in must be legible (issue #13)."""
-    from planargeo.draw.layout import legibility_problems
-
     e = TreeExplorer(display="agg", speed=0.0, gravity=9.81)             # the Fig 9.2 pose at rest under gravity
     yield e
-    assert legibility_problems(e.fig) == []
+    pic = e.picture()
+    assert overlapping_labels(pic) + undescribed(pic) == []
 
 
 def test_loops_close_at_rest(ex):
@@ -58,7 +58,17 @@ def test_contact_forces_match_lagrange_reference(ex, speed, mass, g):
         shown = ex.readout_values[f"|F{'₁₂'[k]}| (pin {name})"]
         assert shown == pytest.approx(np.hypot(F[k, 0], F[k, 1]), rel=1e-9, abs=1e-9)
         # the drawn wrench is the reference's, acting on body a: -F (9.61; same line, size)
-        assert ex.glyphs[f"F_{k + 1}"].wrench == pytest.approx(-F[k], rel=1e-9, abs=1e-9)
+        # the drawn force is the reference's, acting on body a: -F (9.61; same line, size), at 0.9 m for the
+        # largest force of the picture
+        pic = ex.picture()
+        drawn = drawn_arrow(pic, f"F{'₁₂'[k]}")
+        fmax = max(np.hypot(*x.wrench[:2]) for x in ex.state["reactions"])
+        if drawn is None:                                   # shorter than 2 px: the line alone
+            assert np.hypot(*F[k, :2]) * 0.9 / fmax * px_per_unit(pic) < 2.0
+            continue
+        vec, foot = drawn
+        assert vec * fmax / 0.9 == pytest.approx(-F[k, :2], rel=1e-5, abs=1e-5 * fmax)
+        assert np.dot([foot[1], -foot[0], 1.0], F[k]) == pytest.approx(0.0, abs=1e-4 * (1 + np.abs(F[k]).max()))
     assert ex.readout_values["q̈₁ (body 1)"] == pytest.approx(ref["qdd"][0], abs=1e-9)
     assert ex.readout_values["largest |q̈ᵢ|"] == pytest.approx(np.abs(ref["qdd"]).max(), rel=1e-9)
 
@@ -75,18 +85,23 @@ def test_open_tree_matches_pinocchio(ex):
 
 def test_contact_forces_pass_through_the_pins(ex):
     tips = pin_points(ex)
+    pic = ex.picture()
     for k, i in enumerate((3, 7)):
-        F = ex.glyphs[f"F_{k + 1}"].wrench
+        F = ex.state["reactions"][9 + k].wrench
         x, y = tips[i]
-        assert ex.glyphs[f"F_{k + 1}"].arrow.get_visible()
         assert np.dot([y, -x, 1.0], F) == pytest.approx(0.0, abs=1e-9 * (1 + np.abs(F).max()))
-    ex.fig.canvas.draw()
+        line = np.array(parts(elements(pic)[f"F{'₁₂'[k]}"], "path")[0]["xy"])   # drawn through the pin, along F
+        assert np.mean(line, axis=0) == pytest.approx(tips[i], abs=1e-4)
+        d = line[1] - line[0]
+        assert d[0] * F[1] - d[1] * F[0] == pytest.approx(0.0, abs=1e-4 * np.hypot(*d) * np.hypot(*F[:2]))
+    pins = parts(elements(pic)["pins"], "mark")
+    np.testing.assert_allclose([(m["x"], m["y"]) for m in pins], [tips[3], tips[7]], atol=1e-4)
 
 
 def test_opening_the_loops_changes_the_motion(ex):
     closed = dict(ex.readout_values)
     ex.controls["loops"].value = "open (Fig 9.1)"
-    assert not any(ex.glyphs[f"F_{k}"].arrow.get_visible() for k in (1, 2))
+    assert not {"F₁", "F₂", "pins"} & set(elements(ex.picture()))
     a = ex.state["a"]
     tips = pin_points(ex)
     assert not np.allclose(point_accel(a[3], tips[3]), point_accel(a[6], tips[6]))   # tips drift apart
@@ -95,9 +110,9 @@ def test_opening_the_loops_changes_the_motion(ex):
 
 def test_overlays_and_speed(ex):
     ex.set(speed=1.5, **{"velocity poles": True, "acceleration poles": True})
-    assert all(a.get_visible() for a in ex.v_art + ex.a_art)
+    els = elements(ex.picture())
+    assert all(f"{k}{'₁₂₃₄₅₆₇₈₉'[i]}" in els for k in "va" for i in range(9))
     assert ex.message == ""
-    ex.fig.canvas.draw()
 
 
 @pytest.mark.parametrize("toggle", ["velocity poles", "acceleration poles", "reaction forces"])
@@ -111,13 +126,17 @@ def test_display_toggles_do_not_recompute(toggle):
     ex.controls[toggle].value = before
     ex.controls[toggle].value = not before
     assert calls == [] and ex.n_updates == 4
-    arts = {"velocity poles": ex.v_art, "acceleration poles": ex.a_art,
-            "reaction forces": [g.arrow for g in ex.glyphs.values()]}[toggle]
-    assert all(a.get_visible() == (not before) for a in arts)
-    # the artists still show the state: the velocity poles are the joint-speed twists
+    ids = {"velocity poles": [f"v{s}" for s in "₁₂₃₄₅₆₇₈₉"], "acceleration poles": [f"a{s}" for s in "₁₂₃₄₅₆₇₈₉"],
+           "reaction forces": [f"f{s}" for s in "₁₂₃₄₅₆₇₈₉"]}[toggle]
+    els = elements(ex.picture())
+    assert all((i in els) == (not before) for i in ids)
+    # the picture still shows the state: the velocity poles are the joint-speed twists
     if toggle == "velocity poles":
         for i in range(9):
-            assert ex.v_art[i].get_point() == pytest.approx(ex.state["sol"].data.v[i])
+            v = ex.state["sol"].data.v[i]                 # [vx, vy, w]: the pole (-vy/w, vx/w)
+            (m,) = parts(els[ids[i]], "mark") or [None]
+            if m is not None:
+                assert (m["x"], m["y"]) == pytest.approx((-v[1] / v[2], v[0] / v[2]), abs=1e-4)
     ex.controls["speed"].value = 0.5          # a physics control does recompute
     assert len(calls) == 1 and calls[0] == {"speed"}
 

@@ -36,6 +36,7 @@ from matplotlib.lines import Line2D
 from planargeo import scenes
 from planargeo.draw.artists import PointArtist, point_xy
 from planargeo.draw.mechanism import draw_ground
+from planargeo.draw.pictures.trees import symbol_of, trees_picture
 from planargeo.draw.style import COLORS
 from planargeo.errors import InputError, PlanargeoError
 from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_reactions,
@@ -84,7 +85,8 @@ class TreeExplorer(Explorer):
     Examples
     --------
     >>> ex = TreeExplorer(display="agg")
-    >>> ex.readout_values["degrees of freedom"], len(ex.glyphs)
+    >>> pic = ex.picture()
+    >>> ex.readout_values["degrees of freedom"], sum(e["id"][0] in "fF" for e in pic["elements"])
     (5, 11)
     """
 
@@ -374,7 +376,7 @@ class TreeExplorer(Explorer):
         tips = pose_now[:, :2] + L * np.column_stack([np.cos(pose_now[:, 2]), np.sin(pose_now[:, 2])])
         st = {"closed": closed, "model": model, "q": q, "qd": qd, "length": L, "dof": dof, "sol": sol,
               "a": sol.a.reshape(N, 3), "qdd": np.asarray(sol.qdd), "tips": tips, "t": t, "E": E, "E0": E0,
-              "drift": drift, "events": list(events), "reactions": tree_reactions(model, sol)}
+              "drift": drift, "events": list(events), "reactions": tree_reactions(model, sol), "speed": v["speed"]}
         if closed:
             st["F"] = sol.F.reshape(-1, 3)
             st["cond"] = float(sol.cond)
@@ -455,8 +457,47 @@ class TreeExplorer(Explorer):
             for i, art in enumerate(arts):
                 items.append((art, point_xy(pts[i]), f"{name}{_SUB[i + 1]}"))
         place_labels(ax, items, obstacles, covered=key_box(ax, bool(vals.get("key"))))
+        return self.readout_of(st)
+
+    def scene_picture(self, st, view=None):
+        """The state's picture built natively (:func:`planargeo.draw.pictures.trees.trees_picture`).
+
+        Parameters
+        ----------
+        st : dict
+            A state of :meth:`compute`.
+        view : (x0, x1, y0, y1), optional
+            The view the user zoomed or panned to (default: :attr:`limits`, every pose the links reach).
+
+        Returns
+        -------
+        Picture
+        """
+        vals = self.values
+        overlays = {k: bool(vals[k]) for k in ("reaction forces", "velocity poles", "acceleration poles")}
+        contacts = [c.name for c in st["model"].contacts] if st["closed"] else []
+        return trees_picture(st["sol"].data.pose, st["tips"], reactions=st["reactions"], contacts=contacts,
+                             v=st["sol"].data.v, a=st["a"], overlays=overlays, focus=vals.get("focus", "all"),
+                             view=view or self.limits, size=self.figure_px)
+
+    def readout_of(self, st):
+        """The readout of the state ``st`` (and of the focus shown): energy, drifts, forces, accelerations.
+
+        Parameters
+        ----------
+        st : dict
+            A state of :meth:`compute`.
+
+        Returns
+        -------
+        dict
+        """
+        closed, model = st["closed"], st["model"]
+        focus = self.values.get("focus", "all")
+        reactions = {symbol_of(x.symbol): x for x in st["reactions"]}
+        force = {k: float(np.hypot(x.wrench[0], x.wrench[1])) for k, x in reactions.items()}
         E0 = st["E0"]
-        out = {"t": st["t"], "speed": vals["speed"], "loops": "closed" if closed else "open",
+        out = {"t": st["t"], "speed": st["speed"], "loops": "closed" if closed else "open",
                "degrees of freedom": st["dof"], "energy E": st["E"],
                "energy drift ΔE/E₀": (st["E"] - E0) / abs(E0) if E0 else 0.0,
                "closure drift |φ|": st["drift"]}

@@ -27,7 +27,8 @@ import numpy as np
 from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.style import COLORS
 
-__all__ = ["force", "ground", "scale_bar", "label_at", "aim_label", "foot_on_line", "nice_length"]
+__all__ = ["force", "ground", "scale_bar", "label_at", "aim_label", "side_label", "clearest", "seg_distance",
+           "foot_on_line", "nice_length"]
 
 
 def foot_on_line(w, p) -> np.ndarray:
@@ -198,6 +199,80 @@ def aim_label(el: dict, direction, gap: float = 9.0) -> None:
             part["ha"] = "left" if u[0] > 0.3 else "right" if u[0] < -0.3 else "center"
             part["va"] = "bottom" if u[1] > 0.3 else "top" if u[1] < -0.3 else "center"
             return
+
+
+def seg_distance(p, segs) -> float:
+    """The distance from the point ``p`` to the nearest of the segments ``segs`` ``(n, 2, 2)``.
+
+    Parameters
+    ----------
+    p : (float, float)
+    segs : array_like (n, 2, 2)
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> seg_distance((0.0, 1.0), [[[-1.0, 0.0], [1.0, 0.0]], [[3.0, 0.0], [3.0, 2.0]]])
+    1.0
+    """
+    segs = np.asarray(segs, dtype=float).reshape(-1, 2, 2)
+    if not len(segs):
+        return math.inf
+    p = np.asarray(p, dtype=float)
+    a, b = segs[:, 0], segs[:, 1]
+    d = b - a
+    L2 = np.einsum("ij,ij->i", d, d)
+    t = np.clip(np.einsum("ij,ij->i", p - a, d) / np.where(L2 > 0, L2, 1.0), 0.0, 1.0)
+    return float(np.min(np.hypot(*(a + t[:, None] * d - p).T)))
+
+
+def clearest(points, segs):
+    """The point of ``points`` farthest from every segment of ``segs`` (a label's place off the links).
+
+    Parameters
+    ----------
+    points : array_like (m, 2)
+    segs : array_like (n, 2, 2)
+
+    Returns
+    -------
+    numpy.ndarray (2,)
+
+    Examples
+    --------
+    >>> clearest([(0.0, 0.1), (0.0, 2.0)], [[[-1.0, 0.0], [1.0, 0.0]]]).tolist()
+    [0.0, 2.0]
+    """
+    points = np.asarray(points, dtype=float).reshape(-1, 2)
+    return points[int(np.argmax([seg_distance(q, segs) for q in points]))]
+
+
+def side_label(pic: Picture, a, b, text: str, segs, *, gap: float = 5.0) -> None:
+    """Label the segment ``a``–``b`` (the element added last) at its middle, on its side clearer of ``segs``.
+
+    Parameters
+    ----------
+    pic : Picture
+    a, b : (float, float)
+        The segment's ends (data units).
+    text : str
+    segs : array_like (n, 2, 2)
+        Other segments the label keeps away from.
+    gap : float
+        Pixels from the segment.
+    """
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    m = 0.5 * (a + b)
+    d = b - a
+    L = math.hypot(*d)
+    n = np.array([-d[1], d[0]]) / L if L > 0 else np.array([0.0, 1.0])
+    span = 0.25 * max(L, 1e-9)
+    side = clearest([m + span * n, m - span * n], segs)
+    label_at(pic, m, text, gap=gap)
+    aim_label(pic.elements[-1], n if float((side - m) @ n) > 0 else -n, gap + 4.0)
 
 
 def nice_length(span: float) -> float:

@@ -1,0 +1,156 @@
+"""The picture of the nine-link tree (thesis Fig 9.1) and its closed loops (Fig 9.2), built natively.
+
+From one solved state:
+
+* the ground under the pivot, the nine links (each labelled with its body number), the
+  joints and, loops closed, the two pins that close them (tips of bodies 4 and 7, 8 and 9);
+* every pin force: the joint wrenches ``f₁ … f₉`` (9.61: the wrench on body ``i`` from its
+  parent, 9.41 for the open tree) and the contact forces ``F₁``, ``F₂`` (9.71), each a
+  stretch of its line of action with an arrow to scale (the largest 0.9 m long);
+* optionally the velocity poles ``vᵢ`` (4.5) and acceleration poles ``aᵢ`` (4.6);
+* a scale bar.
+
+A focus on one force draws it wider and labelled, and fades the other forces.
+
+Examples
+--------
+>>> from planargeo.widgets.trees import TreeExplorer
+>>> ex = TreeExplorer(display="agg")
+>>> d = ex.picture()
+>>> sorted(e["symbol"] for e in d["elements"] if e["id"].startswith(("f", "F")))
+['F₁', 'F₂', 'f₁', 'f₂', 'f₃', 'f₄', 'f₅', 'f₆', 'f₇', 'f₈', 'f₉']
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo.draw.geometry import point_xy
+from planargeo.draw.picture import PX_PER_PT, Picture
+from planargeo.draw.pictures.kit import clearest, force, ground, scale_bar, side_label
+from planargeo.draw.pictures.slider_crank import CONTACT_COLOR
+from planargeo.draw.style import COLORS
+
+__all__ = ["trees_picture", "symbol_of", "FORCE_LENGTH", "FADED", "VIEW"]
+
+#: length (m) of the largest force's arrow
+FORCE_LENGTH = 0.9
+#: opacity of the forces outside the focus
+FADED = 0.25
+#: the view (m): every pose the links can reach (body 1 and three more links from the pivot)
+VIEW = (-4.3, 4.3, -4.3, 4.3)
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def symbol_of(sym: str) -> str:
+    """``"f_2"`` -> ``"f₂"``: a reaction's symbol as drawn.
+
+    Parameters
+    ----------
+    sym : str
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> symbol_of("F_1")
+    'F₁'
+    """
+    return sym.replace("_", "").translate(_SUB)
+
+
+def _where(p) -> str:
+    xy = point_xy(p)
+    return "at infinity (a translation)" if xy is None else f"at ({xy[0]:.3g}, {xy[1]:.3g}) m"
+
+
+def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, focus: str = "all",
+                  view=VIEW, size=(560, 560)) -> Picture:
+    """The picture of one state of the nine links (module docstring).
+
+    Parameters
+    ----------
+    pose : array_like (9, 3)
+        ``[x, y, angle]`` of each body's joint.
+    tips : array_like (9, 2)
+        The far end of each link.
+    reactions : sequence
+        The reactions (``symbol`` ``"f_i"`` or ``"F_k"``, ``point``, ``wrench``, ``moment``),
+        :func:`planargeo.scenes.trees.tree_reactions`.
+    contacts : sequence of str
+        Names of the loop-closing pins (``"4-7"``, ``"8-9"``), empty for the open tree.
+    v, a : array_like (9, 3)
+        Velocity and acceleration twists of the bodies.
+    overlays : dict
+        ``{"reaction forces", "velocity poles", "acceleration poles": shown}``.
+    focus : str
+        A force's symbol (``"f₄"``) drawn bold, the others faded; ``"all"`` for none.
+    view : (x0, x1, y0, y1)
+        What must be in view.
+    size : (int, int)
+        Pixels.
+
+    Returns
+    -------
+    Picture
+    """
+    pose = np.asarray(pose, dtype=float)
+    tips = np.asarray(tips, dtype=float)
+    n = len(pose)
+    pic = Picture(view, size=size, ticks=False, margin=(6, 6, 6, 6))
+    ground(pic, "ground", (0.0, 0.0), width=0.9, desc="the ground: body 1 turns about the pivot (0, 0) m")
+    links = np.stack([pose[:, :2], tips], axis=1)                   # (n, 2, 2) segments
+    for i in range(n):
+        pic.path(f"body {i + 1}", [pose[i, :2], tips[i]], role="body", symbol=str(i + 1),
+                 color=COLORS["ground"], width=2.5 * PX_PER_PT, z=5,
+                 desc=f"body {i + 1} (Fig 9.1): {math.hypot(*(tips[i] - pose[i, :2])):.3g} m long, "
+                      f"at {math.degrees(pose[i, 2]):.4g}°")
+        side_label(pic, pose[i, :2], tips[i], str(i + 1), np.delete(links, i, axis=0), gap=3.0)
+    pic.marks("joints", pose[:, :2], role="body", symbol="joints", color=COLORS["ground"], size=5.0, z=6,
+              desc=f"the {n} joints: joint 1 at the pivot (0, 0) m")
+    contact = [x for x in reactions if x.symbol.startswith("F")]
+    if contact:
+        pins = np.array([x.point for x in contact])
+        pic.marks("pins", pins, role="reaction", symbol="pins", color=COLORS["reaction"], size=10.0, z=5,
+                  desc="the pins closing the loops (Fig 9.2): " + ", ".join(
+                      f"tips of bodies {c} at ({p[0]:.3g}, {p[1]:.3g}) m" for c, p in zip(contacts, pins)))
+    if overlays.get("reaction forces"):
+        size_of = {x.symbol: math.hypot(*np.asarray(x.wrench, float)[:2]) for x in reactions}
+        fmax = max(size_of.values(), default=0.0)
+        scale = FORCE_LENGTH / fmax if fmax > 0 else 0.0
+        names = dict(zip((f"F_{k + 1}" for k in range(len(contacts))), contacts))
+        for x in reactions:
+            sym = symbol_of(x.symbol)
+            w = np.asarray(x.wrench, float)
+            F = size_of[x.symbol]
+            on = focus in ("all", sym)
+            if x.symbol.startswith("f"):
+                i = int(x.symbol[2:])
+                meaning, eq, color = (f"pin force of joint {i}: the wrench on body {i} from its parent",
+                                      "9.61", COLORS["reaction"])
+            else:
+                meaning, eq, color = (f"contact force of the pin joining the tips of bodies {names[x.symbol]}",
+                                      "9.71", CONTACT_COLOR)
+            moment = f", moment {x.moment:.3g} N·m about its pin" if abs(x.moment) > 1e-9 * max(F, 1e-300) else ""
+            # the label on the line of action where it is clearest of the links (pins share places)
+            e = w[:2] / F if F else np.zeros(2)
+            head = clearest([np.asarray(x.point, float) + k * e for k in (0.4, -0.4, 0.25, -0.25)], links)
+            force(pic, sym, w, scale=scale, anchor=x.point, role="reaction" if sym[0] == "f" else "momentum",
+                  symbol=sym, color=color, desc=f"{meaning} ({eq}): |{sym}| = {F:.4g} N{moment}", reach=0.45,
+                  dash=[4.0, 3.0], width=(2.4 if focus == sym else 1.0) * PX_PER_PT, z=9 if focus == sym else 8,
+                  label=None if on else "", opacity=1.0 if on else FADED, label_xy=head)
+    for key, flag, role, gs, meaning, eq, unit in (
+            ("v", "velocity poles", "twist", 3.0, "velocity pole", "4.5", "rad/s"),
+            ("a", "acceleration poles", "accel", 0.3, "acceleration pole", "4.6", "rad/s²")):
+        if not overlays.get(flag):
+            continue
+        pts = np.asarray(v if key == "v" else a, float)
+        for i in range(n):
+            sym = f"{key}{i + 1}".translate(_SUB)
+            pic.point(sym, pts[i], role=role, symbol=sym, glyph_scale=gs,
+                      desc=f"{meaning} of body {i + 1} ({eq}): rate {pts[i][2]:.3g} {unit}, {_where(pts[i])}")
+    scale_bar(pic)
+    return pic
