@@ -170,6 +170,34 @@ class _PointOrLine(_Homogeneous):
         """
         return float(_p.incidence(*self._pair(other)))
 
+    def _signed_distance(self, other) -> float:
+        """Signed distance of the point from the line, this element and ``other`` of the dual kind (thesis 5.23).
+
+        Positive on the line's left, seen looking along its direction ``(fx, fy)``.
+        Ideal elements have no finite distance (documented, no warning): a point at
+        infinity gives NaN, a finite point and the line at infinity ``±inf``.  This is
+        ``Point.distance_to(line)`` and ``Line.signed_distance(point)``.
+
+        Parameters
+        ----------
+        other : Line, Point or array_like, shape (3,)
+            As for :meth:`incidence`.
+
+        Returns
+        -------
+        float
+            Signed distance (m); NaN for a point at infinity.
+
+        Examples
+        --------
+        >>> y1 = Line.from_point_direction((0, 1), (1, 0))            # y = 1, directed along +x
+        >>> y1.signed_distance(Point.from_xy(3, 4)), Point.from_xy(0, -1).distance_to(y1)
+        (3.0, -2.0)
+        >>> y1.signed_distance(Point.at_infinity((1, 0))), Point.from_xy(1, 1).distance_to(Line.at_infinity())
+        (nan, inf)
+        """
+        return float(_p.signed_distance(*self._pair(other)))
+
     def __xor__(self, other):
         if isinstance(other, type(self)):
             return self._wedge(other)
@@ -188,16 +216,13 @@ class Point(_PointOrLine):
     ----------
     array : array_like, shape (3,)
         Homogeneous coordinates ``[y, -x, w]`` (any non-zero multiple);
-        ``w = 0`` is a point at infinity.  Single values only: a batch
-        ``(..., 3)`` raises :class:`~planargeo.errors.ShapeError`; the functions
-        of :mod:`planargeo.geometry.projective` broadcast.
+        ``w = 0`` is a point at infinity.
 
     Raises
     ------
-    ShapeError
-        If ``array`` does not have shape (3,).
-    DegenerateGeometryError
-        If ``array`` is the zero vector.
+    ShapeError, DegenerateGeometryError
+        If ``array`` does not have shape (3,) (one point: for a batch use the functions
+        of :mod:`planargeo.geometry.projective`), or is the zero vector.
 
     Examples
     --------
@@ -326,26 +351,6 @@ class Point(_PointOrLine):
 
     _wedge = join
 
-    def distance_to(self, line) -> float:
-        """Signed distance to ``line``, positive on its left (thesis 5.23).
-
-        Parameters
-        ----------
-        line : Line or array_like, shape (3,)
-            A Line or homogeneous line array.
-
-        Returns
-        -------
-        float
-            Signed distance (m); ``±inf``/``nan`` for ideal elements.
-
-        Examples
-        --------
-        >>> Point.from_xy(3, 4).distance_to(Line.from_point_direction((0, 1), (1, 0)))   # y = 1
-        3.0
-        """
-        return float(_p.signed_distance(*self._pair(line)))
-
     def __repr__(self) -> str:
         if self.is_ideal:
             d = self.direction
@@ -362,16 +367,12 @@ class Line(_PointOrLine):
     array : array_like, shape (3,)
         ``[fx, fy, tz]``: the points ``(x, y)`` with ``tz + y fx - x fy = 0``,
         directed along ``(fx, fy)``.  ``[0, 0, 1]`` is the line at infinity.
-        Single values only: a batch ``(..., 3)`` raises
-        :class:`~planargeo.errors.ShapeError`; the functions of
-        :mod:`planargeo.geometry.projective` broadcast.
 
     Raises
     ------
-    ShapeError
-        If ``array`` does not have shape (3,).
-    DegenerateGeometryError
-        If ``array`` is the zero vector.
+    ShapeError, DegenerateGeometryError
+        If ``array`` is not one line, shape (3,) (a batch: the functions of
+        :mod:`planargeo.geometry.projective` broadcast), or is zero.
 
     Examples
     --------
@@ -508,33 +509,6 @@ class Line(_PointOrLine):
 
     _wedge = meet
 
-    def signed_distance(self, point) -> float:
-        """Signed distance of ``point`` from this line, positive on the left (thesis 5.23).
-
-        "Left" is seen looking along the line's direction ``(fx, fy)``.  A point
-        at infinity has no finite distance: the result is NaN (documented, no
-        warning).
-
-        Parameters
-        ----------
-        point : Point or array_like, shape (3,)
-            A Point or homogeneous point array.
-
-        Returns
-        -------
-        float
-            Signed distance (m), NaN for a point at infinity.
-
-        Examples
-        --------
-        >>> y1 = Line.from_point_direction((0, 1), (1, 0))            # y = 1, directed along +x
-        >>> y1.signed_distance(Point.from_xy(3, 4)), y1.signed_distance(Point.from_xy(0, -1))
-        (3.0, -2.0)
-        >>> y1.signed_distance(Point.at_infinity((1, 0)))
-        nan
-        """
-        return float(_p.signed_distance(*self._pair(point)))
-
     def __repr__(self) -> str:
         if self.is_at_infinity:
             return "Line(at infinity)"
@@ -547,6 +521,7 @@ class Line(_PointOrLine):
 Point._dual, Line._dual = Line, Point
 Point.normalized = Line.normalized = _PointOrLine.normalized     # their own members (for the API pages)
 Point.incidence = Line.incidence = _PointOrLine.incidence
+Point.distance_to = Line.signed_distance = _PointOrLine._signed_distance
 
 
 class Conic(_Homogeneous):
