@@ -479,7 +479,10 @@ class ArticulatedExplorer(Explorer):
             "polar of a (real conic)": ("polar of a with respect to the drawn real conic of Aₖ: Aₖa reflected "
                                         "through the centre (section 10.2.3)"),
             "entries of Aₖ at joint k / full value": "the chart: each entry of Aₖ (at joint k) after so many "
-                                                     "recursion steps, over its value with every outboard body",
+                                                     "recursion steps, over its value with every outboard body; "
+                                                     f"in the figure: entries of A{kk} at joint "
+                                                     f"{focus.split()[1] if focus.startswith('body ') else 1} "
+                                                     "/ full value",
             "xx": "entry xx of Aₖ at joint k: the mass felt pushing along x (eq. 7.26)",
             "yy": "entry yy of Aₖ at joint k: the mass felt pushing along y (eq. 7.26)",
             "zz": "entry zz of Aₖ at joint k: the rotational inertia about joint k (eq. 7.26)",

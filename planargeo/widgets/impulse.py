@@ -41,7 +41,7 @@ from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
 from planargeo.draw.pictures.impulse import impulse_picture, moved_outline
 from planargeo.draw.style import COLORS
 from planargeo.errors import DegenerateGeometryError
-from planargeo.scenes.impulse import BODIES, impulse
+from planargeo.scenes.impulse import BODIES, body_outline, impulse
 from planargeo.scenes.subspace import unit_direction
 from planargeo.screws.inertia import percussion_axis
 from planargeo.widgets.base import Explorer, Handle, Step, point_text
@@ -294,6 +294,9 @@ class ImpulseExplorer(Explorer):
     def view_box(self) -> tuple[float, float, float, float]:
         """The view: the fixed frame, grown (never shrunk) to hold the blow's point and arrow tip.
 
+        Each side is at least the mechanism's extent (the body at rest, the blow's point
+        and tip) plus 0.2 m.
+
         Returns
         -------
         tuple
@@ -304,6 +307,13 @@ class ImpulseExplorer(Explorer):
         x0, x1, y0, y1 = self.limits
         x0, x1 = min(x0, tip[0] - 0.1), max(x1, tip[0] + 0.1)
         y0, y1 = min(y0, tip[1] - 0.1), max(y1, tip[1] + 0.1)
+        # no side shorter than the mechanism (the body at rest and the blow's handles) and a margin
+        pts = np.vstack([body_outline(v["body"]), [v["strike x"], v["strike y"]], tip])
+        size = float(np.max(np.ptp(pts, axis=0))) + 0.2
+        if x1 - x0 < size:
+            x0, x1 = x0 - (size - (x1 - x0)) / 2, x1 + (size - (x1 - x0)) / 2
+        if y1 - y0 < size:
+            y0, y1 = y0 - (size - (y1 - y0)) / 2, y1 + (size - (y1 - y0)) / 2
         return (x0, x1, y0, y1)
 
     def mechanism_points(self):

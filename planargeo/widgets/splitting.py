@@ -197,7 +197,7 @@ class SplittingExplorer(Explorer):
             "φ": "bend: the angle of every body relative to the one before it (eq. 7.47)",
             "τ": "size of the couple on the tip (N·m)",
             "g": "gravity, along −y (m/s²)",
-            "−fₙ₊₁ on the tip": f"the couple on the tip, from a fictitious joint n+1 (eq. 7.44); in the figure: -f{sub(n + 1)} on the tip",
+            "−fₙ₊₁ on the tip": f"the couple on the tip, from a fictitious joint n+1 (eq. 7.44); in the figure: −f{sub(n + 1)} on the tip: couple (line at ∞)",
             "aⱼ": ("acceleration of body j, drawn as its pole: the point with no acceleration (eq. 4.6); in the figure: "
                    + ", ".join(f"a{sub(j)}" for j in range(1, n + 1))),
             "aᵢ": "acceleration of body i, straight from the split (eq. 7.54)",

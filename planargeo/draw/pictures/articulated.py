@@ -293,13 +293,13 @@ def _chart(pic, st, k: int) -> None:
     names = [(c[0], c[1]) for c in curves] + [("error", "#000000")]
     rows = (len(names) + 1) // 2
     kx0, ky1 = cx1 - 2 * 50.0 * fx, cy0 + rows * 15.0 * fy + 4.0 * fy
-    pic.path("chart key", [[kx0, cy0 + 2.0 * fy], [cx1 - 2.0 * fx, cy0 + 2.0 * fy], [cx1 - 2.0 * fx, ky1],
+    pic.path("key box", [[kx0, cy0 + 2.0 * fy], [cx1 - 2.0 * fx, cy0 + 2.0 * fy], [cx1 - 2.0 * fx, ky1],
                            [kx0, ky1]], role="chart", closed=True, fill="#ffffff", alpha=0.85, color="#cccccc",
              width=0.6, symbol="key", desc=f"the chart's key: {len(names)} curves", z=5)
     for m, (name, color) in enumerate(names):
         col, row = divmod(m, rows)
         x = cx1 - (2 - col) * 50.0 * fx + 4.0 * fx
         y = cy0 + (rows - row) * 15.0 * fy - 4.0 * fy
-        pic.text(f"legend {name}", (x, y), ("— " if name != "error" else "··· ") + name, color=color,
+        pic.text(f"key {name}", (x, y), ("— " if name != "error" else "··· ") + name, color=color,
                  ha="left", va="center", symbol=name,
                  desc=f"the chart's key: {name}" + ("" if name == "error" else f", entry {name} of A{kk}"))
