@@ -1,8 +1,9 @@
-"""Fixtures for the real-browser test: a throw-away JupyterLab server and headless chromium.
+"""Fixtures for the real-browser tests: a throw-away JupyterLab server and headless chromium.
 
-Everything the server writes (config, settings, workspaces, runtime files, the
-notebook copy) lives in a temporary directory; news fetching, update checks and
-the extension manager's network calls are switched off.
+Both are shared by the whole session (one server, one browser: the suite runs on two
+cores); each test opens its own page.  Everything the server writes (config, settings,
+workspaces, runtime files, the notebook copies) lives in a temporary directory; news
+fetching, update checks and the extension manager's network calls are switched off.
 """
 from __future__ import annotations
 
@@ -23,11 +24,15 @@ from browser_harness import CHROMIUM, CHROMIUM_ARGS, LabServer, VoilaServer  # n
 ARTIFACTS = Path(__file__).parent / "artifacts"
 
 
-@pytest.fixture(scope="module")
-def lab(tmp_path_factory):
+def _need_chromium():
     if not Path(CHROMIUM).exists():
         pytest.skip(f"{CHROMIUM} not found: install Debian's chromium (apt-get install -y chromium)")
     pytest.importorskip("playwright.sync_api", reason="playwright is not installed")
+
+
+@pytest.fixture(scope="session")
+def lab(tmp_path_factory):
+    _need_chromium()
     tmp = tmp_path_factory.mktemp("lab")
     root = tmp / "nb"
     root.mkdir()
@@ -38,8 +43,9 @@ def lab(tmp_path_factory):
         server.stop()
 
 
-@pytest.fixture(scope="module")
-def browser(lab):
+@pytest.fixture(scope="session")
+def browser():
+    _need_chromium()
     from playwright.sync_api import sync_playwright
 
     with sync_playwright() as p:
