@@ -486,6 +486,15 @@ def polygon_moments(geometry, name: str = "geometry"):
 # The class
 # ---------------------------------------------------------------------------
 
+def _derived(function, doc: str) -> property:
+    """A read-only property of :class:`Inertia`: ``function`` of its matrix, documented by ``doc``."""
+    def get(self):
+        return function(self._array)
+
+    get.__doc__ = doc
+    return property(get)
+
+
 class Inertia(_Held):
     """A planar rigid-body inertia at the origin (thesis 1.66, 4.58, 5.64): an imaginary conic.
 
@@ -676,48 +685,30 @@ class Inertia(_Held):
         """The ``(..., 3, 3)`` matrix at the origin (read-only)."""
         return self._array
 
-    @property
-    def mass(self) -> np.ndarray:
-        """Mass ``m = matrix[0, 0]`` (thesis 1.66, 4.58); an array of the batch shape.
+    # the body's quantities: the module's functions of its matrix
+    mass = _derived(mass, """Mass ``m = matrix[0, 0]`` (thesis 1.66, 4.58); an array of the batch shape.
 
         Examples
         --------
         >>> float(Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).mass)
         2.0
-        """
-        return mass(self._array)
-
-    @property
-    def com(self) -> np.ndarray:
-        """Centre of mass ``(x, y)``."""
-        return centre_of_mass(self._array)
-
-    @property
-    def rotational_inertia(self) -> np.ndarray:
-        """``J`` about the centre of mass."""
-        return rotational_inertia(self._array)
-
-    @property
-    def radius_of_gyration(self) -> np.ndarray:
-        """Radius of gyration ``ρ = sqrt(J / m)`` about the centre of mass (thesis 4.58, 5.64).
+        """)
+    com = _derived(centre_of_mass, """Centre of mass ``(x, y)``.""")
+    rotational_inertia = _derived(rotational_inertia, """``J`` about the centre of mass.""")
+    radius_of_gyration = _derived(radius_of_gyration, """Radius of gyration ``ρ = sqrt(J / m)`` about the centre of mass (thesis 4.58, 5.64).
 
         Examples
         --------
         >>> float(Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).radius_of_gyration)
         0.5
-        """
-        return radius_of_gyration(self._array)
-
-    @property
-    def mobility(self) -> np.ndarray:
-        """Inverse inertia ``I⁻¹`` (via ``solve``).
+        """)
+    mobility = _derived(mobility, """Inverse inertia ``I⁻¹`` (via ``solve``).
 
         Examples
         --------
         >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).mobility.diagonal()
         array([0.5, 0.5, 2. ])
-        """
-        return mobility(self._array)
+        """)
 
     def __repr__(self) -> str:
         if self._array.ndim == 2:
