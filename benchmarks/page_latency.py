@@ -1,22 +1,29 @@
 """Page latency: explorers drawn by the browser (``display="page"``), in JupyterLab and in Voila.
 
 Measured in Debian's headless chromium, in the same run and through the same widget
-(:class:`planargeo.widgets.canvas.PictureCanvas`):
+(:class:`planargeo.widgets.canvas.PictureCanvas`), in each medium:
 
 * **F, the floor**: an empty request from the page to the kernel and back (``ping``),
   doing no work; the machine's and Jupyter's share of every step;
-* **drag step**: a 3 px mouse move on a handle → the picture with the new geometry
-  painted (the page's own clock: input event to the animation frame after the reply);
-* **handle repaint**: the mouse move → the dragged handle painted at the pointer
-  (the page alone, no kernel);
-* **slider step**: a key press on a slider → the new picture painted;
-* the **Python side** of one update and the size of the message (in this process).
+* for the **10-link chain with every overlay on**:
 
-Explorers: the 10-link chain with every overlay on, and the projective playground.
-The chain builds its picture natively (:mod:`planargeo.draw.chain`); the projective
-playground's is still read off its matplotlib artists (:mod:`planargeo.draw.from_axes`),
-so its Python side includes that adapter.  Medians and 90th percentiles of
-``--steps`` steps go to ``<out>/page_latency.{json,md}``.
+  - **drag step**: a 3 px mouse move on the end of link 10 → the picture with the new
+    geometry painted (the page's own clock: input event to the animation frame after
+    the reply);
+  - **handle repaint**: the mouse move → the dragged handle painted at the pointer
+    (the page alone, no kernel);
+  - **slider step**: a key press on the ``angle`` slider (every element moves) → the
+    new picture painted;
+  - **Play**: the Play button pressed at 1×; frames painted per second over 10 s, and
+    the time scale (seconds of motion per second of wall clock, read off the picture's
+    ``t = … s``);
+
+* **every explorer's drag step** (its first handle inside the view, 3 px moves);
+* the **Python side** of one chain update (compute, picture, the update message) and
+  the size of the messages, in this process.
+
+Medians and 90th percentiles of ``--steps`` steps go to ``<out>/page_latency.{json,md}``
+with the load average of the machine while it ran.
 
 Run::
 
@@ -44,14 +51,21 @@ from planargeo.files import atomic_write_many  # noqa: E402
 
 OVERLAYS = ("velocity poles", "acceleration poles", "bias terms", "internal forces", "T/U split",
             "articulated inertias")
+CHAIN = "10-link chain, all overlays"
 CELLS = [
-    "from planargeo.widgets import ChainExplorer, ProjectiveExplorer",
-    "chain = ChainExplorer(display='page', links=10, **{k: True for k in %r})\nchain" % (OVERLAYS,),
-    "light = ProjectiveExplorer(display='page')\nlight",
-]
-#: (case, explorer title fragment, handle, slider)
-CASES = (("10-link chain, all overlays", "Chain", "link 10 end", "angle"),
-         ("projective playground", "Projective", "P", "P x"))
+    "import planargeo.widgets as pw",
+    "chain = pw.ChainExplorer(display='page', links=10, **{k: True for k in %r})\nchain" % (OVERLAYS,),
+    "others = {n: getattr(pw, n)(display='page') for n in pw.EXPLORERS if n != 'ChainExplorer'}",
+] + [f"others[{n!r}]" for n in ("ProjectiveExplorer", "PercussionExplorer", "ScrewSumExplorer", "CarExplorer",
+                                "SliderCrankExplorer", "TreeExplorer", "SubspaceExplorer", "ImpulseExplorer",
+                                "ConstructionExplorer", "ArticulatedExplorer", "SplittingExplorer")]
+
+
+def _titles() -> dict[str, str]:
+    """``{explorer class name: its title}`` (how the page's explorers are told apart)."""
+    import planargeo.widgets as pw
+
+    return {n: getattr(pw, n).title for n in pw.EXPLORERS}
 
 
 def _notebook(path: Path) -> None:
@@ -75,6 +89,10 @@ def _canvas(page, title: str):
     cv = ex.locator(".pg-canvas").first
     cv.wait_for(state="visible", timeout=60_000)
     cv.scroll_into_view_if_needed()
+    for _ in range(600):                  # the first picture drawn (synced with the kernel)
+        if _api(cv, "p.elements() > 0 && !p.busy()"):
+            break
+        time.sleep(0.05)
     return ex, cv
 
 
@@ -104,13 +122,31 @@ def floor(cv, steps: int) -> list[float]:
     return out
 
 
-def drag(page, cv, handle: str, steps: int, px: float = 3.0) -> tuple[list[float], list[float]]:
-    circle = cv.locator(f"circle[data-handle='{handle}']").first
+def _handle_inside(cv, handle: str | None):
+    """The handle's circle: the named one, or the first well inside the view."""
+    if handle is not None:
+        return cv.locator(f"circle[data-handle='{handle}']").first
+    svg = cv.locator("svg").first.bounding_box()
+    circles = cv.locator("circle.pg-handle")
+    for j in range(circles.count()):
+        b = circles.nth(j).bounding_box()
+        if b and svg["x"] + 30 < b["x"] < svg["x"] + svg["width"] - 40 and \
+                svg["y"] + 30 < b["y"] < svg["y"] + svg["height"] - 40:
+            return circles.nth(j)
+    return None
+
+
+def drag(page, cv, handle: str | None, steps: int, px: float = 3.0):
+    """(drag step latencies, handle repaints, refused steps, the handle's id)."""
+    circle = _handle_inside(cv, handle)
+    if circle is None:
+        return [], [], 0, None
+    hid = circle.get_attribute("data-handle")
     box = circle.bounding_box()
     x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
     page.mouse.move(x, y)
     page.mouse.down()
-    lat = []
+    lat, refused = [], 0
     n0 = _api(cv, "p.handlePaints.length")
     for k in range(steps):
         _wait_idle(cv)
@@ -124,9 +160,10 @@ def drag(page, cv, handle: str, steps: int, px: float = 3.0) -> tuple[list[float
                 lat.append(s["tPaint"] - s["tInput"])
                 break
             time.sleep(0.005)
+        refused += bool(_api(cv, "p.status()"))
     page.mouse.up()
     _wait_idle(cv)
-    return lat, _api(cv, f"p.handlePaints.slice({n0})")
+    return lat, _api(cv, f"p.handlePaints.slice({n0})"), refused, hid
 
 
 def slider(page, ex, cv, name: str, steps: int) -> list[float]:
@@ -154,44 +191,98 @@ def slider(page, ex, cv, name: str, steps: int) -> list[float]:
     return out
 
 
+def _shown_time(cv) -> float | None:
+    text = _api(cv, "p.text('time')")
+    try:
+        return float(text.split("=")[1].split()[0])
+    except (AttributeError, IndexError, ValueError):
+        return None
+
+
+def play(ex, cv, seconds: float = 10.0) -> dict:
+    """Play at 1× for ``seconds``: frames painted per second and seconds of motion per second."""
+    cv.scroll_into_view_if_needed()
+    button = ex.locator(".widget-play button").first
+    button.scroll_into_view_if_needed()
+    button.click()                                     # play
+    time.sleep(1.0)                                    # past the start
+    t0, sim0 = cv.evaluate("() => performance.now()"), _shown_time(cv)
+    time.sleep(seconds)
+    t1, sim1 = cv.evaluate("() => performance.now()"), _shown_time(cv)
+    frames = _api(cv, f"p.paintTimes.filter(t => t > {t0} && t <= {t1}).length")
+    gaps = _api(cv, f"p.paintTimes.filter(t => t > {t0} && t <= {t1})")
+    button.click()                                     # pause
+    _wait_idle(cv)
+    wall = (t1 - t0) / 1e3
+    d = [b - a for a, b in zip(gaps, gaps[1:])]
+    return {"fps": round(frames / wall, 1), "frames": frames, "wall (s)": round(wall, 2),
+            "time scale": round((sim1 - sim0) / wall, 3) if sim0 is not None and sim1 is not None else None,
+            "frame gap median (ms)": round(statistics.median(d), 1) if d else None,
+            "frame gap p90 (ms)": round(sorted(d)[int(0.9 * (len(d) - 1))], 1) if d else None}
+
+
 def measure(page, steps: int) -> dict:
-    res = {}
-    for case, title, handle, sl in CASES:
-        ex, cv = _canvas(page, title)
-        time.sleep(1.0)
-        r = {"F (ping round trip)": _stat(floor(cv, steps))}
-        lat, hp = drag(page, cv, handle, steps)
-        r["drag step"] = _stat(lat)
-        r["handle repaint"] = _stat(hp)
-        r["slider step"] = _stat(slider(page, ex, cv, sl, steps))
-        res[case] = r
+    titles = _titles()
+    ex, cv = _canvas(page, titles["ChainExplorer"])
+    time.sleep(1.0)
+    r = {"F (ping round trip)": _stat(floor(cv, steps))}
+    lat, hp, refused, _ = drag(page, cv, "link 10 end", steps)
+    r["drag step"], r["handle repaint"] = _stat(lat), _stat(hp)
+    r["slider step"] = _stat(slider(page, ex, cv, "angle", steps))
+    r["play"] = play(ex, cv)
+    r["F after (ping round trip)"] = _stat(floor(cv, steps))
+    res = {CHAIN: r, "every explorer": {}}
+    for name, title in titles.items():
+        if name == "ChainExplorer":
+            continue
+        try:
+            ex, cv = _canvas(page, title)
+            lat, _hp, refused, hid = drag(page, cv, None, steps)
+            res["every explorer"][name] = {"drag step": _stat(lat), "handle": hid, "refused": refused}
+        except Exception as exc:  # noqa: BLE001 - one explorer's failure is reported, not fatal
+            res["every explorer"][name] = {"drag step": _stat([]), "error": f"{type(exc).__name__}: {exc}"[:200]}
+    res["every explorer"]["ChainExplorer"] = {"drag step": r["drag step"], "handle": "link 10 end",
+                                              "refused": refused}
     return res
 
 
 def python_side(repeat: int = 25) -> dict:
-    from planargeo.widgets import ChainExplorer, ProjectiveExplorer
+    """One chain update in this process: the drag step and the slider step, and their messages."""
+    from planargeo.widgets import ChainExplorer
 
+    ex = ChainExplorer(display="page", links=10, **{k: True for k in OVERLAYS})
+    sent = []
+    ex.canvas.send = lambda m, *a, **k: sent.append(m)
+    h = next(h for h in ex.canvas.picture["handles"] if h["id"] == "link 10 end")
     out = {}
-    for case, cls, kw, handle in (("10-link chain, all overlays", ChainExplorer,
-                                   dict(links=10, **{k: True for k in OVERLAYS}), "link 10 end"),
-                                  ("projective playground", ProjectiveExplorer, {}, "P")):
-        ex = cls(display="page", **kw)
-        h = next(h for h in ex.canvas.picture["handles"] if h["id"] == handle)
-        ts = []
+    for label, act in (("drag step", lambda k: ex.canvas._on_msg(
+            None, {"type": "drag", "id": "link 10 end", "x": h["x"] + 0.01 * (k % 5), "y": h["y"], "seq": k}, None)),
+                       ("slider step", lambda k: setattr(ex.controls["angle"], "value", -30.0 + (k % 7)))):
+        for k in range(5):
+            act(k)
+        ts, wall, sizes = [], [], []
         for k in range(repeat):
-            t0 = time.perf_counter()
-            ex.canvas.handle_message({"type": "drag", "id": handle, "x": h["x"] + 0.01 * (k % 5),
-                                      "y": h["y"], "seq": k})
-            ts.append((time.perf_counter() - t0) * 1e3)
-        t1 = time.perf_counter()
-        for _ in range(repeat):
-            ex.picture()
-        pic_ms = (time.perf_counter() - t1) / repeat * 1e3
-        out[case] = {"update, drag step (ms)": round(statistics.median(ts), 1),
-                     "of which the picture (ms)": round(pic_ms, 1),
-                     "message (KB)": round(len(json.dumps(ex.canvas.picture)) / 1024, 1),
-                     "elements": len(ex.canvas.picture["elements"])}
+            del sent[:]
+            t0, c0 = time.perf_counter(), time.process_time()
+            act(k)
+            wall.append((time.perf_counter() - t0) * 1e3)
+            ts.append((time.process_time() - c0) * 1e3)
+            sizes.append(sum(len(json.dumps(m, separators=(",", ":"))) for m in sent))
+        out[label] = {"update (ms)": round(statistics.median(wall), 2),
+                      "update, CPU (ms)": round(statistics.median(ts), 2),
+                      "message (KB)": round(statistics.median(sizes) / 1024, 1)}
+    t1 = time.perf_counter()
+    for _ in range(repeat):
+        ex.picture()
+    out["picture (ms)"] = round((time.perf_counter() - t1) / repeat * 1e3, 2)
+    out["whole picture, first view (KB)"] = round(len(json.dumps(ex.canvas._snapshot(), separators=(",", ":"))) / 1024, 1)
+    out["picture dict (KB)"] = round(len(json.dumps(ex.canvas.picture)) / 1024, 1)
+    out["elements"] = len(ex.canvas.picture["elements"])
     return out
+
+
+def _cell(s) -> str:
+    return f"{s['median']} ({s['p90']})" if s and s.get("median") is not None else "—"
 
 
 def main(argv=None) -> int:
@@ -207,6 +298,7 @@ def main(argv=None) -> int:
         ap.error(f"--steps must be between 1 and 500, got {a.steps}")
     from playwright.sync_api import sync_playwright
 
+    load0 = os.getloadavg()
     results = {"python": python_side()}
     with tempfile.TemporaryDirectory() as tmp, sync_playwright() as p:
         tmp = Path(tmp)
@@ -238,28 +330,50 @@ def main(argv=None) -> int:
                     server.stop()
         finally:
             browser.close()
+    load1 = os.getloadavg()
     results["when"] = datetime.datetime.now().isoformat(timespec="seconds")
     results["machine"] = f"{platform.machine()}, {os.cpu_count()} cores, {platform.python_version()}"
+    results["load average (1 min) at start, end"] = [round(load0[0], 2), round(load1[0], 2)]
+    media = a.only or ("voila", "jupyterlab")
     lines = ["# Page latency: explorers drawn by the browser", "",
-             f"{results['when']}, {results['machine']}; medians (90th percentiles) of {a.steps} steps, ms.",
-             "F is the round trip of an empty request through the same widget (the floor).", ""]
-    for medium in a.only or ("voila", "jupyterlab"):
-        lines += [f"## {medium}", "", "| explorer | F | drag step | handle repaint | slider step |",
-                  "|---|---|---|---|---|"]
-        for case, r in results[medium].items():
-            cell = lambda s: f"{s['median']} ({s['p90']})" if s["median"] is not None else "—"  # noqa: E731
-            lines.append(f"| {case} | {cell(r['F (ping round trip)'])} | {cell(r['drag step'])} | "
-                         f"{cell(r['handle repaint'])} | {cell(r['slider step'])} |")
-        lines.append("")
-    lines += ["## Python side (this process)", "", "| explorer | update (ms) | picture (ms) | message (KB) | elements |",
-              "|---|---|---|---|---|"]
-    for case, r in results["python"].items():
-        lines.append(f"| {case} | {r['update, drag step (ms)']} | {r['of which the picture (ms)']} | "
-                     f"{r['message (KB)']} | {r['elements']} |")
-    lines += ["", "The chain's picture is built natively (planargeo/draw/chain.py); the projective "
-              "playground's is still read off its matplotlib artists (planargeo/draw/from_axes.py).",
-              "Goals (issue 21): drag and slider steps ≤ F + 15 ms; handle repaint ≤ 20 ms; "
-              "Python side ≤ 5 ms and message ≤ 20 KB for the chain."]
+             f"{results['when']}, {results['machine']}, load average {load0[0]:.2f} at the start and "
+             f"{load1[0]:.2f} at the end; medians (90th percentiles) of {a.steps} steps, ms.",
+             "F is the round trip of an empty request through the same widget (the floor), measured "
+             "before and after the chain's steps.", "",
+             f"## {CHAIN}", "",
+             "| medium | F | drag step | handle repaint | slider step | F after |", "|---|---|---|---|---|---|"]
+    for m in media:
+        r = results[m][CHAIN]
+        lines.append(f"| {m} | {_cell(r['F (ping round trip)'])} | {_cell(r['drag step'])} | "
+                     f"{_cell(r['handle repaint'])} | {_cell(r['slider step'])} | {_cell(r['F after (ping round trip)'])} |")
+    lines += ["", "Play at 1× for 10 s (frames painted per second; seconds of motion per second of wall clock):", "",
+              "| medium | fps | frames | time scale | frame gap median (p90), ms |", "|---|---|---|---|---|"]
+    for m in media:
+        q = results[m][CHAIN]["play"]
+        lines.append(f"| {m} | {q['fps']} | {q['frames']} | {q['time scale']} | "
+                     f"{q['frame gap median (ms)']} ({q['frame gap p90 (ms)']}) |")
+    lines += ["", "## Drag step of every explorer", "",
+              "| explorer | handle | " + " | ".join(media) + " |", "|---|---|" + "---|" * len(media)]
+    for name in _titles():
+        cells = []
+        hid = None
+        for m in media:
+            e = results[m]["every explorer"].get(name, {})
+            hid = hid or e.get("handle")
+            note = f" ({e['refused']} refused)" if e.get("refused") else ""
+            cells.append(_cell(e.get("drag step")) + note if "error" not in e else "error: " + e["error"][:60])
+        lines.append(f"| {name} | {hid or '—'} | " + " | ".join(cells) + " |")
+    py = results["python"]
+    lines += ["", "## Python side of one chain update (this process)", "",
+              "| step | update (ms) | CPU (ms) | message (KB) |", "|---|---|---|---|"]
+    for k in ("drag step", "slider step"):
+        lines.append(f"| {k} | {py[k]['update (ms)']} | {py[k]['update, CPU (ms)']} | {py[k]['message (KB)']} |")
+    lines += ["", f"The picture alone: {py['picture (ms)']} ms; {py['elements']} elements; the whole picture a "
+              f"newly opened view gets: {py['whole picture, first view (KB)']} KB (the picture's dict, with "
+              f"descriptions: {py['picture dict (KB)']} KB).", "",
+              "Goals (issue 21): drag and slider steps ≤ F + 15 ms (≤ 40 ms where F ≤ 25 ms); handle repaint "
+              "≤ 20 ms; every explorer's drag step ≤ F + 15 ms; Play ≥ 30 fps at 1×; Python side ≤ 5 ms "
+              "and message ≤ 20 KB for the chain."]
     a.out.mkdir(parents=True, exist_ok=True)
     atomic_write_many({a.out / "page_latency.json": json.dumps(results, indent=1) + "\n",
                        a.out / "page_latency.md": "\n".join(lines) + "\n"})

@@ -221,8 +221,6 @@ _SPOT_FY = np.array([_ALIGN_Y[a] for a in _SPOT_VA])
 #: the eight spots as plain floats: (cos, sin, box's left edge and bottom in box sizes)
 _SPOTS = [(float(c), float(s), float(fx), float(fy))
           for (c, s), fx, fy in zip(_SPOT_DIR, _SPOT_FX, _SPOT_FY)]
-#: cell size (px) of the grid the label placer keeps its placed boxes in
-_CELL = 48.0
 
 
 def _z_of(el: dict):
@@ -231,6 +229,7 @@ def _z_of(el: dict):
 
 #: element keys left out of the data when they hold these values
 _DEFAULTS = {"dash": None, "fill": None, "alpha": 1.0, "opacity": 1.0, "desc": "", "symbol": ""}
+_DEFAULT_ITEMS = tuple(_DEFAULTS.items())
 
 
 class Picture:
@@ -686,22 +685,20 @@ class Picture:
         Labels are placed in drawing order, topmost first; each takes its asked spot, or
         the first of eight spots around its anchor that meets no placed label and stays
         in the plot area.  A label with no free spot hides, where it was asked (its
-        element keeps its description, shown on hover).  Placed boxes are kept in a grid
-        of :data:`_CELL` px cells, so that a spot is checked against its neighbours only.
+        element keeps its description, shown on hover).  Placed boxes are kept by row (one
+        label height), so that a spot is checked against the boxes of its rows only.
         """
         ml, mr, mt, mb = self.margin
         pw, ph = self.size[0] - ml - mr, self.size[1] - mt - mb
-        grid: dict[tuple[int, int], list[tuple[float, float, float, float]]] = {}
         h = 1.25 * FONT_PX
+        rows: dict[int, list[tuple[float, float, float, float]]] = {}   # boxes by row of one label height
         bx0, by0, kx, ky = self.box[0], self.box[2], self.kx, self.ky
-        cell = _CELL
 
         def free(x0, y0, x1, y1) -> bool:
-            for i in range(int(x0 // cell), int(x1 // cell) + 1):
-                for j in range(int(y0 // cell), int(y1 // cell) + 1):
-                    for px0, py0, px1, py1 in grid.get((i, j), ()):
-                        if x0 < px1 and px0 < x1 and y0 < py1 and py0 < y1:
-                            return False
+            for j in range(int(y0 // h), int(y1 // h) + 1):
+                for px0, py0, px1, py1 in rows.get(j, ()):
+                    if x0 < px1 and px0 < x1 and y0 < py1 and py0 < y1:
+                        return False
             return True
 
         for el in sorted(self.elements, key=lambda e: -e["z"]):
@@ -728,9 +725,8 @@ class Picture:
                     part["ha"], part["va"] = _SPOT_HA[k - 1], _SPOT_VA[k - 1]
                 part.pop("hidden", None)
                 box = (x0, y0, x1, y1)
-                for i in range(int(x0 // cell), int(x1 // cell) + 1):
-                    for j in range(int(y0 // cell), int(y1 // cell) + 1):
-                        grid.setdefault((i, j), []).append(box)
+                for j in range(int(y0 // h), int(y1 // h) + 1):
+                    rows.setdefault(j, []).append(box)
 
     def to_dict(self) -> dict[str, Any]:
         """The picture as plain JSON data (labels placed, numbers rounded to 1e-4 of the view).
@@ -767,7 +763,10 @@ class Picture:
                     part["m"] = [round(v, nd + 2) + 0.0 for v in part["m"]]
                 parts.append(part)
             # keys at their defaults are left out (the renderers read them with defaults)
-            out = {k: v for k, v in el.items() if k not in _DEFAULTS or v != _DEFAULTS[k]}
+            out = dict(el)
+            for k, d in _DEFAULT_ITEMS:
+                if out.get(k, d) == d:
+                    out.pop(k, None)
             out["parts"] = parts
             elements.append(out)
         ticks = ({"x": nice_ticks(self.box[0], self.box[1]), "y": nice_ticks(self.box[2], self.box[3])}

@@ -466,7 +466,9 @@ function render({ model, el }) {
   askSync();        // the snapshot may be older than this view (a second display): the kernel knows
   root.__planargeo = { ping: () => send({ type: "ping" }), busy: () => inflight || pending.size > 0, stats,
                        handlePaints, paintTimes, painted: () => nPaint, version: () => st.version,
-                       elements: () => st.els.size };
+                       elements: () => st.els.size, status: () => status.textContent,
+                       text: (id) => { const e = st.els.get(id); const t = e && (e.parts || []).find((q) => q[0] === "T");
+                                       return t ? t[5] : null; } };
   return () => {};
 }
 

@@ -10,7 +10,11 @@ horizontal line through it, slowly on purpose (0.15 s per request), and refuses
   requests, and the last position wins;
 * a refused position snaps the handle back to the last accepted one, with the reason;
 * the wheel zooms at once and the kernel redraws the new view; *reset view* returns;
-* hovering an element shows its symbol and description;
+* hovering an element shows its symbol and description (asked of the kernel);
+* Play: while ``playing`` is on the page asks for frames by itself (``tick``), one at a
+  time, and stops when it is off;
+* a view opened later (a second display of the same widget, after many updates) shows
+  the whole current picture;
 * no request of the page leaves 127.0.0.1 (every URL is recorded).
 """
 from __future__ import annotations
@@ -30,15 +34,17 @@ pytestmark = pytest.mark.browser
 
 CODE = """\
 import time
+import ipywidgets as W
+from IPython.display import display
 from planargeo.draw.picture import Picture
 from planargeo.errors import PlanargeoError
 from planargeo.widgets.canvas import PictureCanvas
 
-state = {"n": 0, "view": (-4.0, 4.0, -4.0, 4.0), "xy": (0.0, 0.0)}
+state = {"n": 0, "view": (-4.0, 4.0, -4.0, 4.0), "xy": (0.0, 0.0), "ticks": 0}
 
 def make():
     x, y = state["xy"]
-    pic = Picture(state["view"], size=(480, 460), title=f"requests {state['n']}")
+    pic = Picture(state["view"], size=(480, 460), title=f"requests {state['n']} ticks {state['ticks']}")
     pic.point("P", [y, -x, 1.0], symbol="P", desc="the dragged point", glyph=False)
     pic.line("l", [1.0, 0.0, -y], symbol="l", desc="the horizontal line through P", arrow=False)
     pic.handle("P", (x, y), symbol="P", desc="drag me")
@@ -56,9 +62,22 @@ def on_view(box):
     state["view"] = tuple(box) if box is not None else (-4.0, 4.0, -4.0, 4.0)
     c.picture = make()
 
-c = PictureCanvas(on_drag=on_drag, on_view=on_view)
+def on_tick():
+    state["ticks"] += 1
+    time.sleep(0.01)
+    c.picture = make()
+
+c = PictureCanvas(on_drag=on_drag, on_view=on_view, on_tick=on_tick)
 c.picture = make()
-c
+play = W.ToggleButton(description="play")
+W.link((play, "value"), (c, "playing"))
+again = W.Button(description="show again")
+out = W.Output()
+def show_again(_):
+    with out:
+        display(c)
+again.on_click(show_again)
+display(c, W.HBox([play, again]), out)
 """
 
 
@@ -84,7 +103,10 @@ def _exercise(page, where: str) -> None:
     _wait_for(lambda: title.text_content().startswith("requests"), 30, "the first picture")
 
     def n_requests() -> int:
-        return int(title.text_content().split()[-1])
+        return int(title.text_content().split()[1])
+
+    def n_ticks() -> int:
+        return int(title.text_content().split()[3])
 
     def marker_cx() -> float:
         return float(page.locator("g[data-id='P'] circle").first.get_attribute("cx"))
@@ -134,6 +156,25 @@ def _exercise(page, where: str) -> None:
     line.hover(force=True)
     tip = page.locator(".pg-tip").first
     _wait_for(lambda: "horizontal line through P" in tip.inner_text(), 10, f"{where}: the hover text")
+    # 6. Play: the page asks for frames by itself while playing is on, one at a time
+    api = page.locator(".pg-canvas").first
+    page.get_by_role("button", name="play").click()
+    _wait_for(lambda: n_ticks() >= 10, 30, f"{where}: ticks while playing")
+    assert api.evaluate("el => el.__planargeo.stats.filter(s => s.type === 'tick' && !s.tAck).length") <= 1
+    page.get_by_role("button", name="play").click()
+    time.sleep(1.0)
+    stopped = n_ticks()
+    time.sleep(1.0)
+    assert n_ticks() <= stopped + 1, f"{where}: ticks went on after Play stopped"
+    # 7. a view opened now shows the whole current picture, as the first view does
+    cx_now = marker_cx()
+    page.get_by_role("button", name="show again").click()
+    second = page.locator(".pg-canvas").nth(1)
+    second.wait_for(state="visible", timeout=30_000)
+    _wait_for(lambda: second.locator("g[data-id='P'] circle").count() == 1, 20, f"{where}: the second view drawn")
+    _wait_for(lambda: abs(float(second.locator("g[data-id='P'] circle").first.get_attribute("cx")) - cx_now) < 0.5,
+              20, f"{where}: the second view shows the current picture")
+    assert second.locator(".pg-title").first.text_content() == title.text_content()
 
 
 def _run(page, url: str, where: str, requests: list[str]) -> None:
