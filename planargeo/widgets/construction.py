@@ -764,8 +764,10 @@ class ConstructionExplorer(Explorer):
         out["case"] = _short_case(c.case)
         return out
 
-    #: the view: the sliders' reach (±3 m) and a margin (a band for the caption is added above)
+    #: the view: the sliders' reach (±3 m) and a margin, ±4 m where a direction handle reaches 1 m
+    #: beyond a force's point (a band for the caption is added below)
     VIEW = (-3.4, 3.4, -3.4, 3.4)
+    VIEWS = {"wrench_sum": (-4.0, 4.0, -4.0, 4.0)}
 
     def scene_picture(self, state, view=None, *, all_steps: bool = False, caption=None):
         """The state's picture (:func:`planargeo.draw.pictures.construction.construction_picture`).
@@ -774,7 +776,8 @@ class ConstructionExplorer(Explorer):
         ----------
         state : dict
         view : (x0, x1, y0, y1), optional
-            The view the user zoomed or panned to (default: :attr:`VIEW`).
+            The view the user zoomed or panned to (default: :attr:`VIEWS` of the construction, or
+            :attr:`VIEW`).
         all_steps : bool
             Every step at full strength (the layered export).
         caption : str, optional
@@ -785,7 +788,7 @@ class ConstructionExplorer(Explorer):
         Picture
         """
         return construction_picture(state["c"], step=int(self.values["step"]), earlier=self.values["earlier"],
-                                    view=view or self.VIEW, size=self.figure_px, all_steps=all_steps,
+                                    view=view or self.VIEWS.get(state["kind"], self.VIEW), size=self.figure_px, all_steps=all_steps,
                                     caption=caption)
 
     # ------------------------------------------------------------------ handles

@@ -465,13 +465,16 @@ class PercussionExplorer(Explorer):
         return np.vstack(pts)
 
     def _view(self, st):
-        """The view: the body, the grip and the handles in reach, 0.25 m around, in steps of 0.25 m.
+        """The view: the body, the grip and the handles in reach, 0.25 m around, square, in steps of 0.25 m.
 
         A function of the state alone (a fresh explorer with the same values shows the same
         view); it changes in steps, not under every move of a drag.
         """
         pts = self.mechanism_points()
         lo, hi = pts.min(axis=0) - self._STEP, pts.max(axis=0) + self._STEP
+        # as tall as wide (and the other way): the whole mechanism fits either way round
+        grow = np.maximum(0.0, float(np.max(hi - lo)) - (hi - lo)) / 2
+        lo, hi = lo - grow, hi + grow
         lo = np.floor(lo / self._STEP + 1e-9) * self._STEP
         hi = np.ceil(hi / self._STEP - 1e-9) * self._STEP
         return (float(lo[0]), float(hi[0]), float(lo[1]), float(hi[1]))
