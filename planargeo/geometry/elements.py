@@ -174,9 +174,9 @@ class _PointOrLine(_Homogeneous):
         """Signed distance of the point from the line, this element and ``other`` of the dual kind (thesis 5.23).
 
         Positive on the line's left, seen looking along its direction ``(fx, fy)``.
-        Ideal elements have no finite distance (documented, no warning): a point at
-        infinity gives NaN, a finite point and the line at infinity ``±inf``.  This is
-        ``Point.distance_to(line)`` and ``Line.signed_distance(point)``.
+        Ideal elements are infinitely far (documented, no warning): ``±inf``, or NaN
+        for an ideal point on the line (:func:`planargeo.geometry.projective.signed_distance`).
+        This is ``Point.distance_to(line)`` and ``Line.signed_distance(point)``.
 
         Parameters
         ----------
@@ -186,7 +186,7 @@ class _PointOrLine(_Homogeneous):
         Returns
         -------
         float
-            Signed distance (m); NaN for a point at infinity.
+            Signed distance (m); ``±inf`` or NaN for ideal elements.
 
         Examples
         --------
