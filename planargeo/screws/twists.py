@@ -83,12 +83,7 @@ def X_P_inv_T(point) -> np.ndarray:
     >>> X_P_inv_T([0.0, 1.0]) @ [1.0, 0.0, 0.0]   # force along x through the origin, moment about (0, 1)
     array([1., 0., 1.])
     """
-    p = as_xy(point, "point")
-    out = np.zeros(p.shape[:-1] + (3, 3))
-    out[..., 0, 0] = out[..., 1, 1] = out[..., 2, 2] = 1.0
-    out[..., 2, 0] = p[..., 1]
-    out[..., 2, 1] = -p[..., 0]
-    return out
+    return np.ascontiguousarray(np.swapaxes(X_P(-as_xy(point, "point")), -1, -2))     # X_P(p)⁻¹ = X_P(-p)
 
 
 def rot(theta) -> np.ndarray:
