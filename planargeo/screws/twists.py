@@ -1123,7 +1123,7 @@ class _Screw(_Held):
         Returns
         -------
         numpy.ndarray, shape (...)
-            Power (W).
+            Power (W): :func:`power` of the twist and the wrench, whichever is this screw.
 
         Examples
         --------
