@@ -322,7 +322,7 @@ def test_projective_drag_P_moves_the_polar():
     ex.drag("P", _h(ex, "P").where(), (0.613, -1.237), steps=4)
     P = np.array([-1.237, -0.613, 1.0])                 # [y, -x, 1]
     C = ex.state["C"]
-    pol = ex.polar_art.get_line()
+    pol = np.asarray(ex.state["polar"], float)          # the polar line drawn
     assert np.allclose(np.cross(pol, C @ P), 0.0, atol=1e-12)
     assert ex.values["P x"] == pytest.approx(0.613)
 
@@ -331,7 +331,7 @@ def test_projective_drag_M_by_direction_turns_it_through_the_drag_point():
     ex = ProjectiveExplorer(display="agg")
     foot = np.array(_h(ex, "M (point)").where())
     ex.drag("M (direction)", _h(ex, "M (direction)").where(), (2.0, 3.0), steps=3)
-    M = ex.M_art.get_line()
+    M = np.asarray(ex.state["M"], float)              # the line M drawn
     on = lambda x, y: M[2] + y * M[0] - x * M[1]      # 4.27
     assert on(2.0, 3.0) == pytest.approx(0.0, abs=1e-9)
     assert on(*foot) == pytest.approx(0.0, abs=1e-9)
@@ -343,7 +343,8 @@ def test_projective_drag_pole_of_M_makes_M_its_polar():
     assert ex.readout_values["pole of M"] == pytest.approx((0.5, 0.7))
     # independent: the polar of (0.5, 0.7) is C p, and it is M
     C = ex.state["C"]
-    assert np.allclose(np.cross(C @ np.array([0.7, -0.5, 1.0]), ex.M_art.get_line()), 0.0, atol=1e-12)
+    assert np.allclose(np.cross(C @ np.array([0.7, -0.5, 1.0]), np.asarray(ex.state["M"], float)), 0.0,
+                       atol=1e-12)
 
 
 def test_projective_pole_of_M_at_the_centre_is_refused():

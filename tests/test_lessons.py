@@ -385,10 +385,14 @@ def test_lesson5_chain_reactions_through_their_joints():
     from planargeo.widgets import ChainExplorer
     ch = ChainExplorer(display="agg", links=3, speed=0.0, **{"T/U split": True, "velocity poles": False})
     w = ch.state["w"]
+    els = {e["id"]: e for e in ch.picture()["elements"]}
     for i in range(3):
         x, y = w.origin[i]
-        r_line = ch.r_art[i].get_line()
-        assert abs(np.dot([y, -x, 1.0], r_line)) < 1e-9 * (1 + abs(r_line).max())
+        # the line drawn as Rμ (thesis 7.6) passes through its joint (to the picture's rounding)
+        xy = np.asarray(next(p["xy"] for p in els[f"Rμ{i + 1}"]["parts"] if p["p"] == "path"),
+                        float).reshape(-1, 2)
+        d = xy[-1] - xy[0]
+        assert abs(d[0] * (y - xy[0, 1]) - d[1] * (x - xy[0, 0])) / np.hypot(*d) < 1e-3
 
 
 # ---------------------------------------------------------- lesson 6: the planar example 6.9 (the car)

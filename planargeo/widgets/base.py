@@ -512,9 +512,17 @@ class Explorer:
     def __init__(self, *, display: str = "auto", figsize=None, export_dir=None, **values):
         if display not in _DISPLAYS:
             raise InputError(f"display must be one of {_DISPLAYS}, got {display!r}")
-        if display == "auto":
+        #: True for a native explorer (:meth:`scene_picture` and :meth:`readout_of`): no figure at all
+        self.native = (type(self).scene_picture is not Explorer.scene_picture
+                       and type(self).readout_of is not Explorer.readout_of)
+        if self.native and display in ("auto", "ipympl"):
+            display = "page"
+        elif display == "auto":
             display = "ipympl" if _backend_is_ipympl() else "image"
         self.display_mode = display
+        self._figsize = self._figure_inches(figsize or self.figsize)
+        self._figure_text = ""
+        self._page_view = None
         self.export_dir = Path(export_dir) if export_dir is not None else None
         self.readout_values: dict[str, Any] = {}
         self.state: Any = None
@@ -564,6 +572,8 @@ class Explorer:
                 w.step = _representable_step(w.value, w.min, w.step)
         self.defaults = {k: w.value for k, w in self.controls.items()}
         self._drag_active: Handle | None = None
+        self._drag_canvas = None
+        self._drag_seq = 0
         self._drag_pending: tuple[float, float] | None = None
         self._last_drag = (0.0, 0.0)
         self._extra_handles: list[Handle] = []
@@ -571,19 +581,10 @@ class Explorer:
         self._play_origin: dict[str, Any] | None = None
         self._last_tick = (0.0, 0.0)
 
-        # figure ----------------------------------------------------------------
-        self.fig, self.ax = self._make_figure(figsize or self.figsize)
-        self.frames = Frames(self.fig)
-        self.setup_axes(self.ax)
-        place_labels(self.ax)  # labels avoid each other and stay inside the axes
-        self.make_artists(self.ax)
-        self._msg_text = self.ax.text(0.5, 0.5, "", transform=self.ax.transAxes, ha="center",
-                                      va="center", fontsize=11, color="#b00020", zorder=100,
-                                      wrap=True,
-                                      bbox=dict(boxstyle="round", fc="white", ec="#b00020",
-                                                alpha=0.9),
-                                      visible=False)
-        self._msg_text._planargeo_overlay = True  # a deliberate box over the figure (legibility)
+        # figure (none for a native explorer: its picture is built from the state) -------------
+        self.fig = self.ax = self.frames = self._msg_text = None
+        if not self.native:
+            self._make_artist_figure()
         self._legend = None
 
         # widgets ---------------------------------------------------------------
@@ -631,16 +632,17 @@ class Explorer:
                                         layout=W.Layout(width="80px"))
             scale = float(self.time_scale)
             self.play_scale = W.HTML(
-                "" if scale == 1.0 else
                 f"<span title='1× plays {scale:g} simulated seconds per second'>"
-                f"1× = {scale:g}× real time</span>")
+                + ("1× = real time" if scale == 1.0 else f"1× = {scale:g}× real time") + "</span>")
             self.play_speed.observe(self.guarded(lambda _c: self._restart_clock()), names="value")
             self.play_control.observe(self.guarded(self._play_tick), names="value")
             self.play_control.observe(self.guarded(self._play_toggled), names="playing")
         for name, w in self.controls.items():
             w.observe(self._make_observer(name), names="value")
         self.widget = self._layout()
-        self.connect_mouse()
+        self._connect_page_play()
+        if not self.native:
+            self.connect_mouse()
         self._connect_handles()
         self._update(initial=True)
         self.defaults = dict(self.values)  # as first shown (controls that follow others included)
@@ -780,13 +782,12 @@ class Explorer:
 
     @property
     def native_page(self) -> bool:
-        """True when the page draws this explorer's own picture (no matplotlib artist involved)."""
-        return (self.display_mode == "page" and type(self).scene_picture is not Explorer.scene_picture
-                and type(self).readout_of is not Explorer.readout_of)
+        """True when this explorer draws its own picture (:attr:`native`; kept for old callers)."""
+        return self.native
 
     def _render(self, state: Any) -> dict[str, Any]:
-        """The readout of ``state``; the artists are updated unless the page draws the picture."""
-        return self.readout_of(state) if self.native_page else self.render(state)
+        """The readout of ``state``; the artists are updated unless the explorer is native."""
+        return self.readout_of(state) if self.native else self.render(state)
 
     def adjust(self, values: dict[str, Any], changed: set[str]) -> dict[str, Any]:
         """Values of controls that follow the ``changed`` ones (default: none).
@@ -1085,10 +1086,49 @@ class Explorer:
         try:
             for k in range(1, steps + 1):                        # its moves
                 p = a + (b - a) * (k / steps)
-                self._drag_to(h, float(p[0]), float(p[1]))
+                if self.native:     # as the page sends it: the canvas checks the message first
+                    self._drag_message(name, float(p[0]), float(p[1]))
+                else:
+                    self._drag_to(h, float(p[0]), float(p[1]))
         finally:
             self._release()                                      # and its release
         return self
+
+    def _drag_message(self, name: str, x: float, y: float) -> bool:
+        """One drag move sent as the page sends it (``{"type": "drag", ...}``), in any display mode.
+
+        The page's canvas (a headless one outside the page, holding the handles that
+        can be dragged now) checks the message and calls :meth:`_page_drag`; a message
+        it refuses is shown as a refused drag step.
+        """
+        if self.display_mode == "page":
+            canvas = self.canvas
+        else:
+            if self._drag_canvas is None:
+                self._drag_canvas = self._make_canvas()
+            canvas = self._drag_canvas
+            canvas.picture = {"handles": self._handle_list()}
+        self._drag_seq += 1
+        ok, why = canvas.handle_message({"type": "drag", "id": name, "x": x, "y": y,
+                                         "seq": self._drag_seq})
+        if not ok and why != self.message:   # refused by the check, before any update
+            self._refuse(f"drag of {name} refused: {why}")
+        return ok
+
+    def _handle_list(self) -> list[dict]:
+        """The handles that can be dragged now, as the picture lists them."""
+        out = []
+        for h in self.all_handles():
+            try:
+                where = h.where()
+            except Exception:  # noqa: BLE001 - a handle that cannot say where it is: not shown
+                where = None
+            if where is None:
+                continue
+            x, y = (float(v) for v in np.asarray(where, dtype=float).reshape(2))
+            if math.isfinite(x) and math.isfinite(y):
+                out.append({"id": h.name, "x": x, "y": y})
+        return out
 
     def _drag_to(self, h: Handle, x: float, y: float) -> bool:
         """One drag move: the handle's control values as one update (clamped to the sliders)."""
@@ -1208,8 +1248,51 @@ class Explorer:
         self._clock = None
         self._restart_clock()
 
-    def _play_tick(self, change) -> None:
+    @property
+    def _page_plays(self) -> bool:
+        """True when the page's canvas paces Play (its ``playing`` trait and tick messages)."""
+        canvas = getattr(self, "canvas", None)
+        return canvas is not None and canvas.has_trait("playing")
+
+    def _connect_page_play(self) -> None:
+        """Play in the page: the Play button's ``playing`` is the canvas's; the canvas's ticks advance it.
+
+        The page sends a tick as soon as the previous picture is painted; each tick covers the
+        wall-clock time since the last (:class:`~planargeo.widgets.play.PlayClock`) in sub-steps
+        of at most ``1 / play_fps`` s and sets one picture.  The Play widget's own timer is
+        slowed to nothing: it only shows the button.
+        """
+        if not (self.has_play and self._page_plays):
+            return
+        self.canvas.on_tick = self._page_tick
+        self.play_control.interval = 10 ** 7
+        self._play_link = W.link((self.play_control, "playing"), (self.canvas, "playing"))
+
+    def _page_tick(self) -> None:
+        """A tick from the page while it plays: one frame of the wall-clock time since the last.
+
+        Raises
+        ------
+        PlanargeoError
+            Play stopped on a refused step (the message says why; the page shows it).
+        """
         if not self.play_control.playing:
+            return
+        if self._clock is None:
+            self._restart_clock()
+        seconds = self._clock.due()
+        if seconds <= 0 or self._frame(seconds):
+            return
+        if self.play_loop is not None and self.play_loop.value and self._play_origin and \
+                not self._message:
+            self.set(**self._play_origin)  # start again
+            return
+        self.play_control.playing = False
+        if self._message:
+            raise PlanargeoError(self._message)
+
+    def _play_tick(self, change) -> None:
+        if not self.play_control.playing or self._page_plays:
             return
         # the wall clock sets the simulated time: ticks that arrive while a slow frame was drawn
         # are dropped, and the next one covers the time they would have (display frames dropped,
@@ -1253,22 +1336,25 @@ class Explorer:
         return path
 
     def _svg_bytes(self) -> bytes:
-        if self.native_page:  # the page's own picture, drawn by matplotlib
-            from planargeo.draw.render import picture_bytes
-
-            return picture_bytes(self.picture(), "svg")
+        fig = self._picture_figure() if self.native else self.fig   # a native one: its picture
         buf = io.BytesIO()
         # no date and fixed element ids: the same view always gives the same file
         with matplotlib.rc_context({"svg.hashsalt": "planargeo"}):
-            self.fig.savefig(buf, format="svg", metadata={"Date": None})
+            fig.savefig(buf, format="svg", metadata={"Date": None})
         return buf.getvalue()
 
-    def _png_bytes(self, dpi: float | None = None) -> bytes:
-        if self.native_page:
-            from planargeo.draw.render import picture_bytes
+    def _picture_figure(self):
+        """The shown picture drawn by matplotlib (:func:`planargeo.draw.render.figure`), at 100 dpi."""
+        from planargeo.draw.render import figure
 
-            return picture_bytes(self.picture(), "png", dpi=dpi or self.dpi)
+        return figure(self.picture())
+
+    def _png_bytes(self, dpi: float | None = None) -> bytes:
         buf = io.BytesIO()
+        if self.native:   # the picture's size is the figure's in pixels: drawn at 100 dpi
+            self._picture_figure().savefig(buf, format="png", dpi=100.0 * (dpi or self.dpi) / self.dpi,
+                                           metadata={"Software": None})
+            return buf.getvalue()
         self.fig.savefig(buf, format="png", dpi=dpi or self.dpi, metadata={"Software": None})
         return buf.getvalue()
 
@@ -1337,12 +1423,10 @@ class Explorer:
             for k in range(frames):
                 if k and not self._frame(seconds):
                     break
-                if self.native_page:
+                if self.native:
                     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-                    from planargeo.draw.render import figure
-
-                    canvas = FigureCanvasAgg(figure(self.picture()))
+                    canvas = FigureCanvasAgg(self._picture_figure())
                     canvas.draw()
                     out.append(np.asarray(canvas.buffer_rgba())[..., :3].copy())
                     continue
@@ -1448,6 +1532,10 @@ class Explorer:
         if self.display_mode == "page":
             self.canvas.picture = self.picture()
             return
+        if self.native:   # image: the picture drawn by matplotlib into the image; agg: nothing to draw
+            if self.display_mode == "image":
+                self.image.value = self._png_bytes()
+            return
         self.frames.draw()
         if self.display_mode == "ipympl":
             self.fig.canvas.blit()
@@ -1475,8 +1563,10 @@ class Explorer:
                 where = None
             if where is not None:
                 handles.append((h.name, where, f"drag to change {h.name}"))
-        view = getattr(self, "_page_view", None)
+        view = self._page_view
         pic = self.scene_picture(self.state, view) if self.state is not None else None
+        if pic is None and self.native:
+            raise PlanargeoError(f"{type(self).__name__} has no state to draw yet")
         if pic is None:
             try:
                 explain = dict(self.explain())
@@ -1485,7 +1575,37 @@ class Explorer:
             return picture_from_axes(self.ax, explain=explain, view=view, handles=handles).to_dict()
         for name, where, desc in handles:
             pic.handle(name, where, symbol=name, desc=desc)
+        if self.controls["key"].value:
+            self._add_key(pic)
+        if self._figure_text:   # a refused value, said on the picture as on a figure
+            (x0, x1, y0, y1) = pic.box
+            pic.text("figure message", ((x0 + x1) / 2, (y0 + y1) / 2), self._figure_text, role="text",
+                     color="#b00020", ha="center", va="center", z=100,
+                     desc=f"refused: {self._figure_text}")
         return pic.to_dict()
+
+    @staticmethod
+    def _key_entries(pic) -> list[tuple[str, str, str]]:
+        """``(symbols, meaning, colour)`` of the described elements of the picture, one per meaning."""
+        groups: dict[tuple[str, str], list[str]] = {}
+        for el in pic.elements:
+            sym = el.get("symbol") or ""
+            if not sym or el["id"] == "figure message" or el["id"].startswith("key "):
+                continue
+            meaning = str(el.get("desc") or "").split(":")[0].split("(")[0].strip()
+            syms = groups.setdefault((meaning, el.get("color") or "#222"), [])
+            if sym not in syms:
+                syms.append(sym)
+        return [(", ".join(syms) if len(syms) <= 2 else f"{syms[0]}…{syms[-1]}", meaning, color)
+                for (meaning, color), syms in groups.items()]
+
+    def _add_key(self, pic) -> None:
+        """The key: one line per symbol of the picture, in its colour, at the upper left."""
+        x0, _x1, _y0, y1 = pic.box
+        for k, (sym, meaning, color) in enumerate(self._key_entries(pic)[:12]):
+            text = f"{sym}: {meaning}" if meaning else sym
+            pic.text(f"key {k + 1}", (x0, y1), text[:48], role="text", color=color, ha="left",
+                     va="top", dx=6.0, dy=-4.0 - 14.0 * k, z=90, desc=f"key: {text}")
 
     def _page_drag(self, name: str, x: float, y: float) -> None:
         """A drag request from the page: one update, or a refusal the page shows."""
@@ -1546,11 +1666,31 @@ class Explorer:
         return self
 
     # ---------------------------------------------------------------- internals
-    def _make_figure(self, figsize):
+    def _figure_inches(self, figsize) -> tuple[float, float]:
+        """The figure's size in inches: at least the notebook column's width, same aspect."""
         w, h = (float(v) for v in figsize)
         min_w = EXPLORER_MIN_WIDTH_PX / self.dpi
-        if w < min_w:  # at least the notebook column's width, same aspect
+        if w < min_w:
             w, h = min_w, h * min_w / w
+        return w, h
+
+    def _make_artist_figure(self) -> None:
+        """The matplotlib figure of an explorer drawn by its artists (not native)."""
+        self.fig, self.ax = self._make_figure(self._figsize)
+        self.frames = Frames(self.fig)
+        self.setup_axes(self.ax)
+        place_labels(self.ax)  # labels avoid each other and stay inside the axes
+        self.make_artists(self.ax)
+        self._msg_text = self.ax.text(0.5, 0.5, "", transform=self.ax.transAxes, ha="center",
+                                      va="center", fontsize=11, color="#b00020", zorder=100,
+                                      wrap=True,
+                                      bbox=dict(boxstyle="round", fc="white", ec="#b00020",
+                                                alpha=0.9),
+                                      visible=False)
+        self._msg_text._planargeo_overlay = True  # a deliberate box over the figure (legibility)
+
+    def _make_figure(self, figsize):
+        w, h = figsize
         fig = Figure(figsize=(w, h), dpi=self.dpi)
         if self.display_mode == "ipympl":
             live_canvas(fig)   # draws when the explorer says so, sends light PNGs
@@ -1580,8 +1720,8 @@ class Explorer:
     @property
     def figure_px(self) -> tuple[int, int]:
         """Native size of the figure in pixels (as shown at 100 % zoom)."""
-        w, h = self.fig.get_size_inches() * self.dpi
-        return int(round(w)), int(round(h))
+        w, h = self._figsize
+        return int(round(w * self.dpi)), int(round(h * self.dpi))
 
     def _layout(self):
         wpx, _ = self.figure_px
@@ -1593,11 +1733,8 @@ class Explorer:
                                                                max_width="100%"))
             fig_widget = self.image
         elif self.display_mode == "page":
-            from planargeo.widgets.canvas import PictureCanvas
-
             self.image = None
-            self._page_view = None
-            self.canvas = PictureCanvas(on_drag=self._page_drag, on_view=self._page_view_to)
+            self.canvas = self._make_canvas()
             fig_widget = self.canvas
         else:
             self.image = None
@@ -1632,7 +1769,14 @@ class Explorer:
         return root
 
     # ------------------------------------------------------------------ mouse
+    def _make_canvas(self):
+        from planargeo.widgets.canvas import PictureCanvas
+
+        return PictureCanvas(on_drag=self._page_drag, on_view=self._page_view_to)
+
     def _connect_handles(self) -> None:
+        if self.fig is None:   # a native explorer: the page (or :meth:`drag`) sends drag messages
+            return
         canvas = self.fig.canvas
         self._mouse_cids = getattr(self, "_mouse_cids", []) + [
             canvas.mpl_connect(ev, self.guarded(fn)) for ev, fn in (
@@ -1783,8 +1927,15 @@ class Explorer:
             self.message_box.value = ""
 
     def _show_figure_message(self, text: str) -> None:
-        self._msg_text.set_text(text)
-        self._msg_text.set_visible(bool(text))
+        self._figure_text = text
+        if self._msg_text is not None:
+            self._msg_text.set_text(text)
+            self._msg_text.set_visible(bool(text))
+
+    @property
+    def figure_text(self) -> str:
+        """The message drawn on the figure or picture ("" when none is shown)."""
+        return self._figure_text
 
     def _update(self, initial: bool = False) -> None:
         """Show the state of the controls, or refuse it; never raises after construction."""
@@ -1890,7 +2041,7 @@ class Explorer:
         except Exception as exc:  # noqa: BLE001 - a faulty rule disables nothing
             off = {}
             self._message = self._message or f"internal error in disabled(): {exc}"
-        if "key" not in off and not self.controls["key"].value and not has_legend_entries(self.ax):
+        if "key" not in off and not self.controls["key"].value and not self._has_key_entries():
             off["key"] = "nothing drawn now has an entry in the key"
         for k, w in self.controls.items():
             reason = off.get(k)
@@ -1905,6 +2056,10 @@ class Explorer:
             text = f"<i>no explanation: {html.escape(str(exc))}</i>"
         if self.explain_box.value != text:
             self.explain_box.value = text
+
+    def _has_key_entries(self) -> bool:
+        """True when something drawn now has an entry in the key (a native picture: its symbols)."""
+        return self.state is not None if self.native else has_legend_entries(self.ax)
 
     @staticmethod
     def _reason(exc: Exception) -> str:
@@ -2005,7 +2160,11 @@ class Explorer:
                                        f"{html.escape(str(exc))}</span>")
 
     def _draw_key(self) -> None:
-        """The legend of labelled artists when the "key" control is on (removed when off)."""
+        """The legend of labelled artists when the "key" control is on (removed when off).
+
+        A native explorer's key is part of its picture (:meth:`picture`)."""
+        if self.native:
+            return
         if self._legend is not None:
             with contextlib.suppress(Exception):
                 self._legend.remove()

@@ -458,6 +458,9 @@ class ExplorerFuzzer:
         self._run("set", lambda e: e.set(**dict(vals)), f"ex.set(**{vals!r})", check=check)
 
     def _view(self) -> tuple[float, float, float, float]:
+        if self.ex.fig is None:           # a native explorer: the box of its picture
+            x0, x1, y0, y1 = self.ex.picture()["box"]
+            return x0, x1, y0, y1
         x0, x1 = self.ex.ax.get_xlim()
         y0, y1 = self.ex.ax.get_ylim()
         return x0, x1, y0, y1
