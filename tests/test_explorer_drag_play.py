@@ -251,8 +251,62 @@ def test_the_time_scale_is_shown_beside_the_speed_menu():
     class Slow(Dot):
         time_scale = 0.1
 
-    assert Dot(display="agg").play_scale.value == ""
+    assert "1× = real time" in Dot(display="agg").play_scale.value
     assert "0.1× real time" in Slow(display="agg").play_scale.value
+
+
+class PageDot(Counted):
+    """The counted dot, native: a picture instead of artists (no figure)."""
+
+    def scene_picture(self, st, view=None):
+        from planargeo.draw.picture import Picture
+
+        pic = Picture(view or self.limits, size=self.figure_px)
+        pic.path("dot", [[st["x"], st["y"]], [st["x"] + 0.01, st["y"]]], symbol="d", desc="the dot")
+        return pic
+
+    def readout_of(self, st):
+        return {"x": st["x"], "y": st["y"]}
+
+
+def test_play_in_the_page_ticks_from_the_canvas_in_sub_steps():
+    """Page Play: the button's playing is the canvas's; each tick covers the wall time since the last,
+    in sub-steps of at most 1/play_fps s (none skipped), and sets one picture; Play ends by the page."""
+    ex = PageDot(display="page", v=0.5)
+    assert ex.fig is None and ex.native
+    clock = _playing(ex)
+    assert ex.canvas.playing                           # the button started the page's ticks
+    ex.steps, version = [], ex.canvas.version
+    clock.t += 0.37
+    assert ex.canvas.handle_message({"type": "tick", "seq": 1}) == (True, "")
+    assert ex.canvas.version == version + 1            # one picture
+    due = 0.37 + 1.0 / ex.play_fps                     # the first tick also shows one frame's motion
+    assert sum(ex.steps) == pytest.approx(due) and max(ex.steps) <= 1.0 / ex.play_fps + 1e-12
+    assert len(ex.steps) == math.ceil(due * ex.play_fps - 1e-9)
+    assert ex.values["x"] == pytest.approx(0.5 * due)
+    x = ex.values["x"]
+    ex.play_control.value += 1                         # the Play widget's own timer does nothing here
+    assert ex.values["x"] == x
+    ex.play_loop.value = False
+    for k in range(2, 60):                             # to x > 1: the run ends, the page stops ticking
+        clock.t += 0.2
+        ex.canvas.handle_message({"type": "tick", "seq": k})
+        if not ex.play_control.playing:
+            break
+    assert not ex.play_control.playing and not ex.canvas.playing
+    assert ex.values["x"] <= 1.0 and ex.message == ""
+
+
+def test_a_refused_play_step_in_the_page_is_a_refused_tick():
+    """A play step the scene refuses stops Play; the page gets the message with the tick's answer."""
+    ex = PageDot(display="page", v=2.0, x=1.4)
+    ex.play_loop.value = False
+    ex.play_step = lambda values, dt: {"x": values["x"] + 0.2}      # past 1.5: refused by compute
+    clock = _playing(ex)
+    clock.t += 0.05
+    ok, why = ex.canvas.handle_message({"type": "tick", "seq": 1})
+    assert not ok and "x must not exceed 1.5" in why and not ex.canvas.playing
+    assert ex.values["x"] == pytest.approx(1.4) and ex.figure_text
 
 
 def test_ticks_queued_behind_a_slow_frame_are_dropped():
