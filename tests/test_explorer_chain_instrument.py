@@ -3,30 +3,52 @@
 Every number compared here comes from an independent source: the dragged joint
 angle from ``atan2`` of the dragged point by hand, the accelerations of a Play
 frame from Pinocchio's ``aba`` (``benchmarks/bench.pinocchio_forward``), the
-energy over Play frames from its conservation, the labels from the legibility
-check of :func:`planargeo.draw.layout.legibility_problems`.
+energy over Play frames from its conservation, the labels from their boxes in
+the picture (tests/_picture_checks.py: no two overlap).
 """
 import math
 
 import numpy as np
 import pytest
 
-from planargeo.draw.layout import legibility_problems
+from _picture_checks import elements, label_boxes, overlapping_labels
 from planargeo.widgets.chain import OVERLAYS, ChainExplorer
 
 ALL = {k: True for k in OVERLAYS}
 
 
+def _drawn(ex) -> np.ndarray:
+    """The links as drawn (base, then each joint and the link's far end), from the picture."""
+    return np.asarray(elements(ex.picture())["links"]["parts"][0]["xy"], float)
+
+
 def _abs_angles(ex):
-    """Absolute link directions (rad) as drawn: from each joint to the link's end."""
-    x, y = ex.links_line.get_data()
-    return [math.atan2(y[2 * i + 2] - y[2 * i + 1], x[2 * i + 2] - x[2 * i + 1])
-            for i in range(ex.state["model"].N)]
+    """Absolute link directions (rad): from each joint to the link's end (the state's poses)."""
+    w = ex.state["w"]
+    ends = ex._ends(w)
+    return [math.atan2(ends[i, 1] - w.pose[i, 1], ends[i, 0] - w.pose[i, 0]) for i in range(len(ends))]
 
 
 def _joints(ex):
-    x, y = ex.links_line.get_data()
-    return np.column_stack([x[1::2], y[1::2]])
+    """Joint positions (the state's), checked against the drawn links (to the picture's rounding)."""
+    joints = np.asarray(ex.state["w"].pose[:, :2], float)
+    assert _drawn(ex)[1::2] == pytest.approx(joints, abs=2e-4)
+    return joints
+
+
+def legible(ex) -> list:
+    """Pairs of labels of the shown picture that overlap (none, for a legible picture).
+
+    A refusal written over the picture (the base's "figure message") is a deliberate box on
+    top of everything, as it was on the figure: it is not a label.
+    """
+    return [pair for pair in overlapping_labels(ex.picture())
+            if "figure message" not in (pair[0][0], pair[1][0])]
+
+
+def shown_labels(ex) -> list[str]:
+    """The label texts shown in the picture."""
+    return [t for _, t, _ in label_boxes(ex.picture())]
 
 
 def _wrap(a):
@@ -52,7 +74,7 @@ def test_dragging_a_link_end_sets_its_joint_angle_by_atan2(link):
     # the handle is now at the link's end, on the ray to the mouse
     end = np.array(ex.handles()[link].where())
     assert end == pytest.approx(joint + [math.cos(2.0), math.sin(2.0)], abs=1e-9)
-    assert legibility_problems(ex.fig) == []
+    assert legible(ex) == []
 
 
 def test_drag_of_link_1_moves_the_angle_slider_and_sliders_move_dragged_joints():
@@ -79,7 +101,7 @@ def test_a_drag_onto_the_joint_itself_is_refused_with_the_reason():
     ex.drag("link 2 end", ex.handles()[2].where(), joint, steps=1)
     assert "cannot be dragged onto joint 2" in ex.message
     assert ex.readout_values == shown and ex.values == ex.shown_values
-    assert legibility_problems(ex.fig) == []
+    assert legible(ex) == []
 
 
 def test_prismatic_drag_sets_the_slide_and_refuses_beyond_its_range():
@@ -113,7 +135,7 @@ def test_play_conserves_energy_and_matches_pinocchio():
 
     ex = ChainExplorer(display="agg", links=4, speed=1.0, torque=0.0, fps=25, **ALL)
     e0 = ex.readout_values["total energy (J)"]
-    xy0 = ex.links_line.get_xydata().copy()
+    xy0 = _drawn(ex)
     es = []
     for k in range(1, 13):
         ex.advance(1)
@@ -121,15 +143,19 @@ def test_play_conserves_energy_and_matches_pinocchio():
         assert ex.readout_values["t (s)"] == pytest.approx(k / 25)         # 1× speed: 1 / fps a frame
         es.append(ex.readout_values["total energy (J)"])
         assert ex.readout_values["energy drift (J)"] == pytest.approx(es[-1] - e0)  # no joint forces
-    assert not np.allclose(ex.links_line.get_xydata(), xy0)                   # it moved
+    assert not np.allclose(_drawn(ex), xy0)                                  # it moved
     assert np.abs(np.array(es) - e0).max() <= 1e-6 * max(1.0, abs(e0))
     w = ex.state["w"]
     ref = pinocchio_forward(ex.state["model"], w.q, w.qd, w.tau)
     assert w.qdd == pytest.approx(ref, rel=1e-9, abs=1e-9)
     assert ex.readout_values["q̈₁"] == pytest.approx(ref[0], rel=1e-9, abs=1e-9)
     # the overlays follow the time: the drawn velocity pole is the shown state's
-    assert ex.v_art[0].get_point() == pytest.approx(w.v[0])
-    assert legibility_problems(ex.fig) == []
+    v1 = elements(ex.picture())["v1"]
+    m = next((p for p in v1["parts"] if p["p"] == "mark"), None)
+    if m is not None:
+        assert [m["x"], m["y"]] == pytest.approx([-w.v[0][1] / w.v[0][2], w.v[0][0] / w.v[0][2]], abs=2e-4)
+    assert f"rate {w.v[0][2]:.3g} rad/s" in v1["desc"]
+    assert legible(ex) == []
 
 
 def test_play_stops_at_the_end_and_restarts_on_a_new_state():
@@ -152,34 +178,35 @@ def test_play_stops_at_the_end_and_restarts_on_a_new_state():
 def test_focus_options_fade_and_label():
     ex = ChainExplorer(display="agg", links=10, torque=2.0, **ALL)
     assert ex.focus_options()[:2] == ["link1", "link2"] and "joint10" in ex.focus_options()
-    full = ex.ax.get_xlim()
-    assert legibility_problems(ex.fig) == []
+    full = ex.picture()["box"]
+    assert legible(ex) == []
     ex.set(focus="joint4")
     assert ex.message == ""
-    shown = ex._shown_labels
-    for sym in ("$f_{4}$", "$TQ_{4}$", r"$R\mu_{4}$"):
+    shown = shown_labels(ex)
+    for sym in ("f₄", "TQ₄", "Rμ₄"):
         assert sym in shown
-    assert not any(s.endswith("_{3}$") or s.endswith("_{5}$") for s in shown)   # others unlabelled
-    assert ex.f_art[3].get_alpha() is None and ex.f_art[2].get_alpha() < 0.5    # the rest faded
-    assert all(c.get_alpha() < 0.5 for c in ex.f_art[2].get_children())
-    assert ex.ax.get_xlim() == pytest.approx(full)                 # no zoom: the whole chain stays in view
-    assert legibility_problems(ex.fig) == []
+    assert not any(s.endswith("₃") or s.endswith("₅") for s in shown)         # others unlabelled
+    e = elements(ex.picture())
+    assert e["f4"].get("opacity", 1.0) == 1.0 and e["f3"]["opacity"] < 0.5    # the rest faded
+    assert ex.picture()["box"] == pytest.approx(full)              # no zoom: the whole chain stays in view
+    assert legible(ex) == []
     ex.set(focus="link7")
-    assert "$v_{7}$" in ex._shown_labels and "$A_{7}$" in ex._shown_labels
-    assert legibility_problems(ex.fig) == []
+    assert "v₇" in shown_labels(ex) and "A₇" in shown_labels(ex)
+    assert legible(ex) == []
     ex.set(focus="all")
-    assert ex.f_art[2].get_alpha() is None and ex.ax.get_xlim() == pytest.approx(full)
+    assert elements(ex.picture())["f3"].get("opacity", 1.0) == 1.0
+    assert ex.picture()["box"] == pytest.approx(full)
 
 
 @pytest.mark.parametrize("links", [1, 4, 10, 20])
 def test_labels_legible_with_all_overlays(links):
     """Every label placed clear of the others and inside the axes, at >= 11 px."""
     ex = ChainExplorer(display="agg", links=links, torque=1.0, **ALL)
-    assert legibility_problems(ex.fig) == []
-    assert len(ex._shown_labels) >= min(links, 10)
+    assert legible(ex) == []
+    assert len(shown_labels(ex)) >= min(links, 10)
     for k in (5, -45.0):
         ex.controls["angle"].value = float(k)
-        assert legibility_problems(ex.fig) == []
+        assert legible(ex) == []
 
 
 def test_units_and_round_off():
@@ -194,8 +221,8 @@ def test_units_and_round_off():
 @pytest.mark.parametrize("links", [1, 2, 4, 10, 20])
 def test_bias_terms_are_labelled_and_legible(links):
     ex = ChainExplorer(display="agg", links=links, speed=1.5, **{"bias terms": True})
-    assert any(s.startswith("$p_") for s in ex._shown_labels)
-    assert legibility_problems(ex.fig) == []
+    assert any(s[:1] == "p" and s[1:2] in tuple("₀₁₂₃₄₅₆₇₈₉") for s in shown_labels(ex))
+    assert legible(ex) == []
 
 
 def test_play_energy_drift_counts_the_work_of_the_joint_forces():

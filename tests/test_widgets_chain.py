@@ -1,13 +1,50 @@
-"""ChainExplorer: controls drive readouts and artists; errors become messages."""
+"""ChainExplorer: controls drive readouts and the picture; errors become messages.
+
+The picture is read as the page and the exports get it (``ex.picture()``: elements
+found by id, e.g. ``v1``, ``f3``, ``TQ2``, ``links``); its coordinates are rounded to
+1e-5 of the view, hence the drawn-position tolerances.
+"""
 import math
 
 import numpy as np
 import pytest
 
+from planargeo.draw.geometry import conic_geometry, point_xy
 from planargeo.errors import SingularConfigurationError
 from planargeo.widgets.chain import ChainExplorer
 
 G = 9.81
+#: tolerance of a drawn coordinate (the picture's rounding)
+DRAWN = 2e-4
+
+
+def els(ex) -> dict:
+    """``{id: element}`` of the shown picture."""
+    return {e["id"]: e for e in ex.picture()["elements"]}
+
+
+def chain_xy(ex) -> np.ndarray:
+    """The drawn links: base, then each joint and the link's far end."""
+    return np.asarray(els(ex)["links"]["parts"][0]["xy"], float)
+
+
+def mark(el):
+    """``(x, y)`` of an element's marker, or None (a pole drawn at the edge of the view)."""
+    m = next((p for p in el["parts"] if p["p"] == "mark"), None)
+    return None if m is None else np.array([m["x"], m["y"]])
+
+
+def on_drawn_line(el, xy, tol=DRAWN) -> bool:
+    """True when the point ``xy`` lies on the line drawn by the element (its clipped segment)."""
+    a, b = (np.asarray(q, float) for q in next(p for p in el["parts"] if p["p"] == "path")["xy"])
+    d = (b - a) / np.linalg.norm(b - a)
+    r = np.asarray(xy, float) - a
+    return abs(d[0] * r[1] - d[1] * r[0]) <= tol * (1 + np.abs(r).max())
+
+
+def ids_with(ex, prefix: str) -> list[str]:
+    """Ids of the picture's elements ``prefix1``, ``prefix2``... (one layer of overlays)."""
+    return sorted(k for k in els(ex) if k.startswith(prefix) and k[len(prefix):].isdigit())
 
 
 @pytest.fixture
@@ -24,16 +61,17 @@ def test_single_pendulum_matches_closed_form(ex):
         assert ex.readout_values["q̈₁"] == pytest.approx(-1.5 * G * math.cos(th), rel=1e-9)
         assert ex.readout_values["potential energy (J)"] == pytest.approx(G * 0.5 * math.sin(th), abs=1e-12)
         # the tip of the drawn link is at (cos, sin)
-        x, y = ex.links_line.get_data()
-        assert (x[-1], y[-1]) == pytest.approx((math.cos(th), math.sin(th)))
+        assert tuple(chain_xy(ex)[-1]) == pytest.approx((math.cos(th), math.sin(th)), abs=DRAWN)
 
 
 def test_speed_sets_kinetic_energy_and_velocity_pole(ex):
     ex.controls["speed"].value = 2.0
     assert ex.readout_values["kinetic energy (J)"] == pytest.approx(0.5 * (1 / 3) * 4.0)
-    p = ex.v_art[0].get_point()          # rotation about the pivot (0, 0): [0, 0, w]
-    assert p == pytest.approx([0.0, 0.0, 2.0], abs=1e-12)
-    assert ex.v_art[0].get_visible() and not ex.v_art[1].get_visible()
+    # rotation about the pivot (0, 0) at 2 rad/s: the pole at the pivot, its rate described
+    v1 = els(ex)["v1"]
+    assert tuple(mark(v1)) == pytest.approx((0.0, 0.0), abs=DRAWN)
+    assert "rate 2 rad/s" in v1["desc"] and "(4.5)" in v1["desc"]
+    assert ids_with(ex, "v") == ["v1"]
 
 
 def test_torque_enters_the_acceleration(ex):
@@ -48,23 +86,24 @@ def test_links_and_overlays(ex):
         for k in ("acceleration poles", "bias terms", "T/U split", "articulated inertias"):
             ex.controls[k].value = True
     assert ex.readout_values["links"] == 6 and "q̈₆" in ex.readout_values
-    assert sum(a.get_visible() for a in ex.A_art) == 6
-    assert sum(a.get_visible() for a in ex.f_art) == 6
+    assert ids_with(ex, "A") == [f"A{i}" for i in range(1, 7)]
+    assert ids_with(ex, "f") == [f"f{i}" for i in range(1, 7)]
     # the active + reaction parts add up to the joint force (6.38)
-    f = np.array([a.get_line() for a in ex.f_art[:6]])
-    t = np.array([a.get_line() for a in ex.t_art[:6]])
-    r = np.array([a.get_line() for a in ex.r_art[:6]])
-    assert t + r == pytest.approx(f, abs=1e-9)
-    # the reaction part passes through its revolute joint: incidence (5.24)
-    w = ex.state["w"]
+    w, split = ex.state["w"], ex.tu_split(ex.state)
+    assert split["active"] + split["reaction"] == pytest.approx(w.f, abs=1e-9)
+    # the reaction part passes through its revolute joint: incidence (5.24), algebraically
+    # and as drawn
+    e = els(ex)
     for i in range(6):
         x, y = w.origin[i]
-        assert np.dot([y, -x, 1.0], r[i]) == pytest.approx(0.0, abs=1e-9 * (1 + np.abs(r[i]).max()))
+        r = split["reaction"][i]
+        assert np.dot([y, -x, 1.0], r) == pytest.approx(0.0, abs=1e-9 * (1 + np.abs(r).max()))
+        if any(p["p"] == "path" for p in e[f"Rμ{i + 1}"]["parts"]):
+            assert on_drawn_line(e[f"Rμ{i + 1}"], (x, y))
     ex.controls["links"].value = 2
-    assert sum(a.get_visible() for a in ex.A_art) == 2
+    assert ids_with(ex, "A") == ["A1", "A2"]
     ex.controls["articulated inertias"].value = False
-    assert not any(a.get_visible() for a in ex.A_art)
-    ex.fig.canvas.draw()
+    assert ids_with(ex, "A") == []
 
 
 def test_joint_sets(ex):
@@ -76,7 +115,7 @@ def test_joint_sets(ex):
 
 def test_error_keeps_last_drawing(ex, monkeypatch):
     ex.controls["angle"].value = 10.0
-    before = ex.links_line.get_data()[0].copy()
+    before = chain_xy(ex)
     good = dict(ex.readout_values)
 
     def boom(*a, **k):
@@ -86,7 +125,7 @@ def test_error_keeps_last_drawing(ex, monkeypatch):
     ex.controls["angle"].value = 20.0            # must not raise
     assert "singular on purpose" in ex.message
     assert ex.readout_values == good
-    assert np.array_equal(ex.links_line.get_data()[0], before)
+    assert np.array_equal(chain_xy(ex), before)
     monkeypatch.undo()
     ex.controls["angle"].value = 30.0            # and it keeps working
     assert ex.message == ""
@@ -128,15 +167,16 @@ def test_image_mode_updates_png():
 def test_active_part_hidden_without_torque_shown_with_it():
     ex = ChainExplorer(display="agg", links=3, torque=0.0, **{"T/U split": True})
     # no joint torque: Q = sᵀf = τ = 0, the joint force is pure reaction
-    assert not any(a.get_visible() for a in ex.t_art)
-    assert [a.get_visible() for a in ex.r_art[:3]] == [True] * 3
+    assert ids_with(ex, "TQ") == []
+    assert ids_with(ex, "Rμ") == ["Rμ1", "Rμ2", "Rμ3"]
     ex.controls["torque"].value = 5.0
-    assert [a.get_visible() for a in ex.t_art[:3]] == [True] * 3
+    assert ids_with(ex, "TQ") == ["TQ1", "TQ2", "TQ3"]
     # the active part lies on the percussion axis: its moment about the joint is Q = τ
-    w = ex.state["w"]
+    w, split = ex.state["w"], ex.tu_split(ex.state)
     for i in range(3):
         x, y = w.origin[i]
-        assert np.dot([y, -x, 1.0], ex.t_art[i].get_line()) == pytest.approx(5.0)
+        assert np.dot([y, -x, 1.0], split["active"][i]) == pytest.approx(5.0)
+        assert "(6.38)" in els(ex)[f"TQ{i + 1}"]["desc"]
 
 
 def test_torque_on_one_joint_only():
@@ -160,8 +200,7 @@ def test_per_joint_lists_override_the_patterns():
     w = ex.state["w"]
     assert w.q == pytest.approx([math.pi / 2, -math.pi / 2])
     # the tip of link 2 is at (1, 1): link 1 points up, link 2 turns back to +x
-    x, y = ex.links_line.get_data()
-    assert (x[-1], y[-1]) == pytest.approx((1.0, 1.0))
+    assert tuple(chain_xy(ex)[-1]) == pytest.approx((1.0, 1.0), abs=DRAWN)
     assert np.array(w.tau) == pytest.approx([0.0, 1.0])
     good = dict(ex.readout_values)
     ex.controls["joint torques"].value = "0, one"
@@ -217,32 +256,37 @@ def test_acceleration_split_matches_hand_formulas():
         Ainv_R = np.linalg.solve(A, R)
         U = Ainv_R @ np.linalg.inv(R.T @ Ainv_R)                                 # (6.37), (6.45)
         psi, gamma = T @ a[i], R.T @ a[i]                                        # (6.100), (6.101)
-        motion = ex.spsi_art[i].get_point()
-        reactive = ex.ugam_art[i].get_point()
-        assert ex.spsi_art[i].get_visible() and ex.ugam_art[i].get_visible()
+        split = ex.tu_split(ex.state)
+        motion, reactive = split["motion"][i], split["reactive"][i]
+        assert {f"sψ{i + 1}", f"Uγ{i + 1}"} <= set(els(ex))
+        drawn = mark(els(ex)[f"sψ{i + 1}"])        # the motion part's pole, where drawn: at the joint
+        if drawn is not None:
+            assert tuple(drawn) == pytest.approx(tuple(p[i]), abs=DRAWN)
         assert motion == pytest.approx(s[i] * psi, abs=1e-9)
         assert reactive == pytest.approx(U @ gamma, abs=1e-9)
         assert motion + reactive == pytest.approx(a[i], abs=1e-9)               # (6.44)
         # the motion part is a rotation about the joint; the reactive part has no ψ (Tᵀ U = 0)
         assert T @ reactive == pytest.approx(0.0, abs=1e-9)
         # the force split: sᵀ (T Q) = Q is the joint torque (6.49)
-        assert s[i] @ ex.t_art[i].get_line() == pytest.approx(tau[i], rel=1e-9)
-    assert not any(x.get_visible() for x in ex.spsi_art[2:] + ex.ugam_art[2:])
+        assert s[i] @ split["active"][i] == pytest.approx(tau[i], rel=1e-9)
+    assert ids_with(ex, "sψ") == ["sψ1", "sψ2"] and ids_with(ex, "Uγ") == ["Uγ1", "Uγ2"]
 
 
 def test_split_is_hidden_when_off_and_derived_once():
     ex = ChainExplorer(display="agg", links=3, torque=1.0)
-    assert not any(x.get_visible() for x in ex.t_art + ex.r_art + ex.spsi_art + ex.ugam_art)
+    assert not any(ids_with(ex, k) for k in ("TQ", "Rμ", "sψ", "Uγ"))
     assert "split" not in ex.state
     n = ex.n_computes
     ex.controls["T/U split"].value = True                      # drawing only: no recompute
+    assert len(ids_with(ex, "sψ")) == 3 and len(ids_with(ex, "Rμ")) == 3   # drawn (agg: when asked)
     assert ex.n_computes == n and "split" in ex.state
     split = ex.state["split"]
-    assert sum(x.get_visible() for x in ex.spsi_art) == 3 and sum(x.get_visible() for x in ex.r_art) == 3
     ex.controls["T/U split"].value = False
     ex.controls["T/U split"].value = True
+    ids_with(ex, "sψ")
     assert ex.state["split"] is split and ex.n_computes == n
     ex.controls["angle"].value = 10.0                          # physics: recomputed
+    ids_with(ex, "sψ")
     assert ex.n_computes == n + 1 and ex.state["split"] is not split
 
 
@@ -257,15 +301,26 @@ def test_overlay_toggles_do_not_recompute_and_draw_the_state(overlay):
     ex.controls[overlay].value = True
     assert calls == []
     w = ex.state["w"]
-    arts, data = {"velocity poles": (ex.v_art, w.v), "acceleration poles": (ex.a_art, w.a),
-                  "bias terms": (ex.p_art, w.p), "internal forces": (ex.f_art, w.f),
-                  "articulated inertias": (ex.A_art, w.A)}[overlay]
-    assert [x.get_visible() for x in arts[:4]] == [True, True, True, False]
-    for i in range(3):
-        got = arts[i].get_conic() if overlay == "articulated inertias" else (
-            arts[i].get_point() if overlay.endswith("poles") else arts[i].get_line())
-        assert np.asarray(got) == pytest.approx(np.asarray(data[i]))
-    ex.fig.canvas.draw()
+    prefix, data = {"velocity poles": ("v", w.v), "acceleration poles": ("a", w.a),
+                    "bias terms": ("p", w.p), "internal forces": ("f", w.f),
+                    "articulated inertias": ("A", w.A)}[overlay]
+    assert ids_with(ex, prefix) == [f"{prefix}{i}" for i in (1, 2, 3)]
+    e = els(ex)
+    for i in range(3):      # each drawn where the state's own value puts it
+        el = e[f"{prefix}{i + 1}"]
+        if overlay.endswith("poles"):
+            xy = point_xy(data[i])
+            if mark(el) is not None:
+                assert tuple(mark(el)) == pytest.approx(tuple(xy), abs=DRAWN)
+        elif overlay == "articulated inertias":
+            ell = next(p for p in el["parts"] if p["p"] == "ellipse")
+            A = conic_geometry(data[i])["affine"]
+            assert [ell["x"], ell["y"]] == pytest.approx(list(A[:2, 2]), abs=DRAWN)
+            assert ell["m"] == pytest.approx([A[0, 0], A[0, 1], A[1, 0], A[1, 1]], abs=DRAWN)
+        else:
+            fx, fy, tz = data[i]
+            foot = np.array([fy * tz, -fx * tz]) / (fx * fx + fy * fy)   # the line's point nearest 0
+            assert on_drawn_line(el, foot)
 
 
 def test_play_drives_the_time():
@@ -276,9 +331,9 @@ def test_play_drives_the_time():
             ex.advance(1)
         assert ex.values["time (s)"] == pytest.approx(0.1 * k)
         assert ex.readout_values["t (s)"] == pytest.approx(0.1 * k)
-        qs.append(ex.links_line.get_xydata().copy())
+        qs.append(chain_xy(ex))
     assert not np.allclose(qs[0], qs[-1])                      # the links moved
     ex.player.value = 0.2                                      # the slider: the same state as Play's
-    np.testing.assert_allclose(ex.links_line.get_xydata(), qs[2], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(chain_xy(ex), qs[2], rtol=0, atol=1e-12)
     ex.controls["speed"].value = 0.0                         # a new initial state: back to t = 0
     assert ex.player.value == 0

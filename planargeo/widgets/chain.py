@@ -4,8 +4,11 @@ Controls set the number of links (1-20), the joint types (all revolute, all
 prismatic, or alternating), the joint angles (first joint and a common bend
 for the others), the joint speeds, a torque (on all joints, the first or the
 last), the position of the base, and per joint (lists typed as ``30, -20, 10``
-override those patterns joint by joint), and toggle overlays drawn with
-:mod:`planargeo.draw`, each element labelled with its thesis symbol:
+override those patterns joint by joint), and toggle overlays, each element
+labelled with its thesis symbol and described on hover.  The explorer is
+native: its picture is built from the solved state
+(:func:`planargeo.draw.chain.chain_picture`) and drawn by the page, or by
+matplotlib for the exports; no figure is made.  The overlays:
 
 * velocity poles ``v_i`` (points, 4.5) and acceleration poles ``a_i`` (4.6),
 * bias terms: the bias accelerations ``κ_i`` (points) and bias forces ``p_i`` (lines),
@@ -22,8 +25,8 @@ The overlay checkboxes change the drawing only: toggling one re-renders the
 last computed state (the split is derived from it once, when first shown).
 Labels are placed where they fit (none overlaps another or leaves the axes);
 the *focus* control picks one link (its poles, bias terms and articulated
-inertia) or one joint (its force and T/U split): those are drawn labelled, in
-bold, the rest faded (the whole chain stays in view).
+inertia) or one joint (its force and T/U split): those are drawn labelled,
+the rest faded and unlabelled (the whole chain stays in view).
 
 By hand: drag the end of link ``i`` to set joint ``i`` (its angle, or its
 slide for a prismatic joint), keeping the others; drag the base to move the
@@ -42,17 +45,12 @@ the energies are read off that workspace.
 """
 from __future__ import annotations
 
-import itertools
 import math
 
 import ipywidgets as W
 import numpy as np
-from matplotlib.lines import Line2D
 
-from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist, clip_line
 from planargeo.draw.chain import chain_picture
-from planargeo.draw.mechanism import LabelPlacer, ScaleBar
-from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.errors import InputError, SizeLimitError
 from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.mechanics.subspaces import T_of
@@ -85,38 +83,14 @@ TORQUE_LIMIT = 1e4
 ANGLE_LIMIT = 3600.0
 #: slide range of a prismatic joint (m), the slide slider's
 SLIDE = (-0.5, 1.0)
-#: the ground under the base: a line and its hatching (NaN-separated strokes), relative to the base
-_GROUND = np.vstack([[[-0.4, -0.1], [0.4, -0.1], [np.nan, np.nan]]]
-                    + [[[x, -0.1], [x - 0.1, -0.2], [np.nan, np.nan]] for x in np.linspace(-0.35, 0.4, 6)])
 #: unit of a joint's acceleration by joint kind
 QDD_UNIT = {"revolute": "rad/s²", "prismatic": "m/s²"}
-#: labels shown at most without a focus (each costs ~0.3 ms to draw; the focus labels the rest)
-MAX_LABELS = 24
-#: overlay artists made at the start, per overlay (more when a longer chain is shown)
-POOL0 = 4
-#: opacity of the elements outside the focus
-FADED = 0.18
-#: mathtext of each overlay symbol (thesis notation)
-_TEX = {"f": "f", "v": "v", "a": "a", "TQ": "TQ", "Rμ": r"R\mu", "sψ": r"s\psi", "Uγ": r"U\gamma",
-        "κ": r"\kappa", "p": "p", "A": "A"}
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
 def sub(i: int) -> str:
     """``i`` as Unicode subscript digits (``sub(12) == "₁₂"``)."""
     return str(i).translate(_SUB)
-
-
-def _sym(symbol: str, i: int) -> str:
-    """``symbol`` with the subscript ``i`` as mathtext (``$f_{3}$``; cheaper to draw than plain text)."""
-    return f"${_TEX[symbol]}_{{{i}}}$"
-
-
-def _fade(art, alpha) -> None:
-    """Set the opacity of one of :mod:`planargeo.draw.artists`' artists and of its parts."""
-    art.set_alpha(alpha)
-    for child in art.get_children():
-        child.set_alpha(alpha)
 
 
 def chain_for(n: int, joints: str = "revolute", gravity: bool = True, length: float = 1.0,
@@ -302,98 +276,6 @@ class ChainExplorer(Explorer):
     def player(self):
         """The time slider (what Play moves)."""
         return self.controls[TIME]
-
-    # -- figure ------------------------------------------------------------------
-    def setup_axes(self, ax):
-        """Equal-aspect axes without ticks (a 1 m scale bar instead: cheaper and clearer).
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-            The explorer's axes.
-        """
-        from planargeo.draw.style import setup_axes
-
-        setup_axes(ax, self.limits, axis_off=True)
-
-    def make_artists(self, ax):
-        """Create every artist once: links, base, the overlay pools, focus marks and labels.
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-            The explorer's axes.
-        """
-        self.links_line = Line2D([], [], color=COLORS["ground"], lw=2.5, marker="o", ms=4,
-                                 mfc="white", zorder=5)
-        ax.add_line(self.links_line)
-        self.focus_line = Line2D([], [], color=COLORS["ground"], lw=6.0, alpha=0.35,
-                                 solid_capstyle="round", zorder=4.5, visible=False)
-        ax.add_line(self.focus_line)
-        self.focus_joint = Line2D([], [], marker="o", ms=12, mfc="none", mec="black", mew=2.0,
-                                  ls="none", zorder=6, visible=False)
-        ax.add_line(self.focus_joint)
-        # the ground under the base, moved with it
-        self.ground = Line2D([], [], color=COLORS["ground"], lw=1.2, zorder=4)
-        ax.add_line(self.ground)
-        z = np.array([0.0, 0.0, 1.0])
-        zl = np.array([1.0, 0.0, 0.0])
-
-        self._factories = []
-
-        def pool(factory):
-            # a pool of artists per overlay, grown (never shrunk) to the longest chain shown:
-            # invisible artists still cost a draw call each
-            out = []
-            self._factories.append((out, factory))
-            return out
-
-        self.v_art = pool(lambda i: PointArtist(z, role="twist", glyph_scale=4.0))
-        self.a_art = pool(lambda i: PointArtist(z, role="accel", glyph_scale=1.0))
-        self.kappa_art = pool(lambda i: PointArtist(z, role="accel", glyph=False, markersize=4,
-                                                    color=COLORS["momentum"]))
-        self.p_art = pool(lambda i: LineArtist(zl, role="momentum", scale=None, linewidth=1.0))
-        self.f_art = pool(lambda i: LineArtist(zl, role="wrench", scale=0.02))
-        self.t_art = pool(lambda i: LineArtist(zl, role="wrench", scale=None, linestyle=":",
-                                               linewidth=1.2))
-        self.r_art = pool(lambda i: LineArtist(zl, role="reaction", scale=0.02))
-        # acceleration split (6.44): s ψ (along the joint) and U γ (reactive part)
-        self.spsi_art = pool(lambda i: PointArtist(z, role="accel", glyph=False, markersize=5))
-        self.ugam_art = pool(lambda i: PointArtist(z, role="accel", glyph=False, markersize=5,
-                                                   color=COLORS["reaction"]))
-        self.A_art = pool(lambda i: ConicArtist(np.eye(3), role="inertia", linewidth=0.8))
-        self._scaled = set()
-        self._grow(POOL0)
-        # label colour and the glyph clearance (points) of each layer's labels
-        self._layers = [
-            # artists, overlay, symbol, kind, per ("link" or "joint"), colour, clearance
-            (self.f_art, "internal forces", "f", "line", "joint", COLORS["wrench"], 4.0),
-            (self.v_art, "velocity poles", "v", "point", "link", COLORS["twist"], 12.0),
-            (self.a_art, "acceleration poles", "a", "point", "link", COLORS["accel"], 9.0),
-            (self.t_art, "T/U split", "TQ", "line", "joint", COLORS["wrench"], 4.0),
-            (self.r_art, "T/U split", "Rμ", "line", "joint", COLORS["reaction"], 4.0),
-            (self.spsi_art, "T/U split", "sψ", "point", "joint", COLORS["accel"], 5.0),
-            (self.ugam_art, "T/U split", "Uγ", "point", "joint", COLORS["reaction"], 5.0),
-            (self.kappa_art, "bias terms", "κ", "point", "link", COLORS["momentum"], 5.0),
-            (self.p_art, "bias terms", "p", "line", "link", COLORS["momentum"], 4.0),
-            (self.A_art, "articulated inertias", "A", "conic", "link", COLORS["inertia"], 4.0),
-        ]
-        for arts, _flag, sym, *_ in self._layers:     # a key entry per layer (the base's legend)
-            arts[0].set_label(f"${_TEX[sym]}_i$")
-        self.scale_bar = ScaleBar(ax, fontsize=LABEL_PT + 1.5)          # in the margin, under the axes
-        self.time_text = self.fig.text(0.0, 0.0, "", va="center", ha="right", fontsize=LABEL_PT + 1.5)
-        self.labels = LabelPlacer(ax, size=MAX_LABELS + 16, fontsize=LABEL_PT + 1.5)
-        self._shown_labels = []
-        self._edge_text = {}          # artists whose own label marks their edge arrow (focus)
-
-    def _grow(self, n: int) -> None:
-        """Make every overlay pool hold at least ``n`` artists (new ones hidden)."""
-        for out, factory in self._factories:
-            while len(out) < n:
-                art = self.ax.add_artist(factory(len(out)))
-                art.set_visible(False)
-                out.append(art)
-        self._scaled = set(self.f_art + self.r_art)
 
     # -- model / state -------------------------------------------------------------
     def model_for(self, v) -> Model:
@@ -731,6 +613,12 @@ class ChainExplorer(Explorer):
                 return (kind, i) if 0 <= i < n else None
         return None
 
+    def _state_ends(self, st) -> np.ndarray:
+        """The links' far ends of a computed state (kept in it: every handle and the picture ask)."""
+        if "ends" not in st:
+            st["ends"] = self._ends(st["w"])
+        return st["ends"]
+
     def _ends(self, w) -> np.ndarray:
         """World positions of the links' far ends (N, 2)."""
         return w.pose[:, :2] + np.column_stack([np.cos(w.pose[:, 2]), np.sin(w.pose[:, 2])])
@@ -758,7 +646,7 @@ class ChainExplorer(Explorer):
             st = self.state
             if st is None or i >= st["model"].N:
                 return None
-            x, y = self._ends(st["w"])[i]
+            x, y = self._state_ends(st)[i]
             return (float(x), float(y))
         return where
 
@@ -878,91 +766,10 @@ class ChainExplorer(Explorer):
         zoom (the whole chain stays in view).
         """
         model, w = st["model"], st["w"]
-        chain = np.vstack([np.asarray(w.origin[0], float)[None, :], w.pose[:, :2], self._ends(w)])
+        chain = np.vstack([np.asarray(w.origin[0], float)[None, :], w.pose[:, :2], self._state_ends(st)])
         reach = max(model.N + 0.4, float(np.max(np.hypot(*chain.T))) + 0.4)
         reach = math.ceil(2.0 * reach - 1e-9) / 2.0
         return (-reach, reach, -reach, reach)
-
-    def render(self, st):
-        """Update links, overlays, focus, labels and view to the state ``st``; return the readout.
-
-        Parameters
-        ----------
-        st : dict
-            A state of :meth:`compute`.
-
-        Returns
-        -------
-        dict
-            The readout values.
-        """
-        model, w = st["model"], st["w"]
-        n = model.N
-        v = self.values
-        if n > len(self.v_art):
-            self._grow(n)
-        focus = self._focus(n)
-        split = self.tu_split(st) if v["T/U split"] else {}
-        ends = self._ends(w)
-        chain = np.empty((2 * n + 1, 2))
-        chain[0] = w.origin[0]
-        chain[1::2] = w.pose[:, :2]
-        chain[2::2] = ends
-        self.links_line.set_data(chain[:, 0], chain[:, 1])
-        bx, by = w.origin[0]
-        self.ground.set_data(bx + _GROUND[:, 0], by + _GROUND[:, 1])
-        if focus is not None and focus[0] == "joint":    # the focused joint's force 0.6 m long
-            big = [w.f[focus[1]]] + ([split["reaction"][focus[1]]] if split else [])
-            fscale = 0.6 / max(1e-9, max(float(np.hypot(*b[:2])) for b in big))
-        else:
-            fscale = 0.5 / max(1.0, float(np.max(np.abs(w.f[:, :2]))))
-        data = {"f": w.f, "v": w.v, "a": w.a, "TQ": split.get("active"), "Rμ": split.get("reaction"),
-                "sψ": split.get("motion"), "Uγ": split.get("reactive"), "κ": w.kappa, "p": w.p,
-                "A": w.A}
-        anchors = {"joint": w.pose[:, :2], "link": w.com}
-        setters = {"point": PointArtist.set_point, "line": LineArtist.set_line,
-                   "conic": ConicArtist.set_conic}
-        # first pass: the artists' data and visibility, the line arrows at their joint / centre
-        for arts, flag, sym, kind, per, _color, _clear in self._layers:
-            arr = data[sym]
-            on = bool(v[flag]) and arr is not None
-            setter = setters[kind]
-            for i, art in enumerate(arts):
-                show = on and i < n
-                if show:
-                    setter(art, arr[i])
-                    if kind == "line":
-                        art.set_anchor(anchors[per][i])
-                        if art in self._scaled:
-                            art.set_scale(fscale)
-                    if arts is self.t_art:
-                        show = bool(split["active_on"][i])
-                    fade = focus is not None and not (focus == (per, i))
-                    alpha = FADED if fade else None
-                    if art.get_alpha() != alpha:
-                        _fade(art, alpha)
-                if art.get_visible() != show:
-                    art.set_visible(show)
-        # the view (all: the chain's reach; focus: the focused element) and the focus marks
-        box = self._view(st, focus)
-        if tuple(self.ax.get_xlim()) + tuple(self.ax.get_ylim()) != box:
-            self.ax.set_xlim(box[0], box[1])
-            self.ax.set_ylim(box[2], box[3])
-        self.ax.apply_aspect()
-        self.focus_line.set_visible(focus is not None)
-        self.focus_joint.set_visible(focus is not None)
-        if focus is not None:
-            i = focus[1]
-            self.focus_line.set_data([w.pose[i, 0], ends[i, 0]], [w.pose[i, 1], ends[i, 1]])
-            self.focus_joint.set_data([w.pose[i, 0]], [w.pose[i, 1]])
-            self.focus_line.set_linewidth(8.0 if focus[0] == "link" else 3.0)
-            self.focus_joint.set_markersize(14 if focus[0] == "joint" else 8)
-        self.scale_bar.update(1.0)                         # a 1 m scale bar under the axes
-        pos = self.ax.get_position()                       # the time: in the margin, lower right
-        self.time_text.set_position((pos.x1, pos.y0 - 14.0 / self.fig.bbox.height))
-        self._label(st, focus, box)
-        self.time_text.set_text(f"t = {st['t']:.2f} s")
-        return self.readout_of(st)
 
     def readout_of(self, st):
         """The readout of the state ``st`` (energies, work, drift, end accelerations, base force).
@@ -1020,89 +827,6 @@ class ChainExplorer(Explorer):
             return last[2].copy()
         split = self.tu_split(st) if v["T/U split"] else None
         pic = chain_picture(w, overlays=overlays, view=view, split=split, focus=focus, size=size,
-                            ends=self._ends(w))
+                            ends=self._state_ends(st), time=st["t"])
         self._last_picture = (st, key, pic)
         return pic.copy()
-
-    def _label(self, st, focus, box) -> None:
-        """Place the labels: the focused element's first (bold), then every other where it fits."""
-        n = st["model"].N
-        w = st["w"]
-        v = {flag: self.controls[flag].value for flag in OVERLAYS}
-        anchors = {"joint": w.pose[:, :2], "link": w.com}
-        edge = {}
-
-        def requests(focused_only: bool):
-            """Label requests, round-robin over the layers (every kind is labelled early)."""
-            for i in range(n):
-                for arts, flag, sym, kind, per, color, clear in self._layers:
-                    if not v[flag]:
-                        continue
-                    art = arts[i]
-                    if not art.get_visible():
-                        continue
-                    focused = focus == (per, i)
-                    if focused_only != focused:
-                        continue                           # with a focus, the rest is faded: no label
-                    xy = self._label_anchor(art, kind, box, anchors[per][i])
-                    if kind == "point" and focused and xy is None:
-                        # a focused pole off the view (or at infinity): its edge arrow is labelled
-                        edge[art] = _sym(sym, i + 1)
-                    if xy is None:
-                        continue
-                    c = clear
-                    if kind == "point" and arts in (self.v_art, self.a_art):
-                        gs = 4.0 if arts is self.v_art else 1.0
-                        c = float(np.clip(gs * abs(art.get_point()[2]), 4.0, 16.0)) + 3.0
-                    yield (_sym(sym, i + 1), xy, {"color": color, "clear": c, "bold": focused})
-
-        obstacles = []
-        if focus is not None:                  # the focused element's labels (few): all of them
-            kind, i = focus
-            mid = w.pose[i, :2] if kind == "joint" else 0.5 * (w.pose[i, :2] + self._ends(w)[i])
-            reqs = [(f"{kind} {i + 1}", mid, {"bold": True, "clear": 9.0}), *requests(True)]
-            limit = None
-        else:                                  # everything: as many as MAX_LABELS (from the first few)
-            reqs, limit = list(itertools.islice(requests(False), 3 * MAX_LABELS)), MAX_LABELS
-        shown = self.labels.place(reqs, obstacles, limit=limit)
-        for art in set(self._edge_text) | set(edge):
-            if self._edge_text.get(art) != edge.get(art):
-                art.set_text(edge.get(art, ""))
-        self._edge_text = edge
-        self._shown_labels = [t.get_text() for t, _ in zip(self.labels.texts, range(sum(shown)))]
-
-    @staticmethod
-    def _label_anchor(art, kind, box, near=None):
-        """Where an element's label goes (data), or None when it has no place in the view.
-
-        A point: its pole; a line: the middle of its arrow, or the foot of
-        ``near`` on it (no arrow), or a third along its visible part when
-        those are out of view; a conic: its curve at 45° from the centre.
-        """
-        x0, x1, y0, y1 = box
-
-        def inside(xy):
-            return xy is not None and x0 <= xy[0] <= x1 and y0 <= xy[1] <= y1
-
-        if kind == "point":
-            xy = art.get_xy()
-            return xy if inside(xy) else None
-        if kind == "line":
-            line = art.get_line()
-            seg = clip_line(line, box)
-            if seg is None:
-                return None
-            arrow = art.get_arrow()
-            if arrow is not None:
-                mid = 0.5 * (arrow[0] + arrow[1])
-            else:
-                fx, fy, tz = line
-                e = np.array([fx, fy]) / math.hypot(fx, fy)
-                p0 = np.array([fy * tz, -fx * tz]) / (fx * fx + fy * fy)
-                mid = p0 + e * ((np.asarray(near, float) - p0) @ e)
-            return mid if inside(mid) else seg[0] + (seg[1] - seg[0]) / 3.0
-        g = art.geometry()
-        if "affine" not in g:
-            return None
-        xy = (g["affine"] @ [0.7071, 0.7071, 1.0])[:2]
-        return xy if inside(xy) else None
