@@ -16,6 +16,11 @@ from planargeo.widgets.screw_sum import ScrewSumExplorer
 from _picture_checks import elements, problems
 
 
+def cross2(a, b) -> float:
+    """The z component of the cross product of two plane vectors."""
+    return float(a[0] * b[1] - a[1] * b[0])
+
+
 def mark(ex, id):
     m = next(p for p in elements(ex.picture())[id]["parts"] if p["p"] == "mark")
     return np.array([m["x"], m["y"]])
@@ -28,7 +33,7 @@ def segment(ex, id):
 def on_segment_line(seg, q, tol=1e-3):
     """True when the point ``q`` lies on the line through the two ends ``seg``."""
     a, b = seg
-    return abs(np.cross(b - a, np.asarray(q, float) - a)) <= tol * np.hypot(*(b - a))
+    return abs(cross2(b - a, np.asarray(q, float) - a)) <= tol * np.hypot(*(b - a))
 
 
 def along(text, d):
@@ -64,7 +69,7 @@ def test_two_rotations_lever_rule(ex):
     labels = {i: next(p for p in e["parts"] if p["p"] == "text") for i, e in elements(ex.picture()).items()
               if i in ("v1", "v2", "v3")}
     a, b = segment(ex, "lever")
-    side = lambda t: np.sign(np.cross(b - a, [t["dx"], t["dy"]]))
+    side = lambda t: np.sign(cross2(b - a, [t["dx"], t["dy"]]))
     assert side(labels["v1"]) == side(labels["v2"]) == -side(labels["v3"])
 
 
@@ -94,7 +99,7 @@ def test_wrenches_concurrent_parallel_couple(ex):
     assert ex.readout_values["case"] == "concurrent forces (4.4.1)"
     assert ex.readout_values["meet of lines"] == pytest.approx((2.0, 0.0))
     f3 = segment(ex, "f3")                     # along (1, 2) through the meet (2, 0)
-    assert np.cross(f3[1] - f3[0], [1.0, 2.0]) == pytest.approx(0.0, abs=1e-3)
+    assert cross2(f3[1] - f3[0], [1.0, 2.0]) == pytest.approx(0.0, abs=1e-3)
     assert on_segment_line(f3, (2.0, 0.0)) and mark(ex, "P") == pytest.approx([2.0, 0.0])
     # parallel forces, lever rule: 1 N at x=-1 and 3 N at x=3, both along +y -> line x = 2
     ex.set(angle1=90.0, size2=3.0, x2=3.0)
