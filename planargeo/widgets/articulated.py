@@ -25,7 +25,7 @@ swing is integrated once per configuration in chunks of one second (DOP853, dens
 :class:`planargeo.widgets._motion.Motion`), so the state at a time depends on that time
 and the other controls alone, whatever Play's steps were.
 
-Handles (mouse under ``%matplotlib widget``, or :meth:`Explorer.drag` in scripts): the
+Handles (dragged in the page, or :meth:`Explorer.drag` in scripts): the
 acceleration pole ``a``, the tip of the chain (sets the bend ``φ``) and the end of the
 first body (sets the base angle ``θ₁``).
 """
@@ -35,32 +35,24 @@ import math
 
 import ipywidgets as W
 import numpy as np
-from matplotlib.lines import Line2D
 
-from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist, clip_line
-from planargeo.draw.layout import fit_view
+from planargeo.draw.geometry import conic_geometry
 from planargeo.draw.pictures.articulated import MARGIN, articulated_picture, chain_view, fit_box
-from planargeo.draw.style import COLORS, OKABE_ITO
-from planargeo.geometry.conics import drawable_conic
-from planargeo.scenes.articulated import COMPONENTS, articulated_state, bent_chain_model, joint_points
+from planargeo.scenes.articulated import articulated_state, bent_chain_model, inertia_at
 from planargeo.widgets._motion import Motion
 from planargeo.widgets.base import Explorer, Handle, Step, cached, point_text
 
-__all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip", "place_labels", "label_artist", "curve_candidates",
-           "line_candidates", "point_candidates", "fit_mechanism"]
+__all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip"]
 
 #: Most bodies the explorer shows.
 NMAX = 8
 #: Longest swing [s] (the range of the time slider).
 T_MAX = 60.0
-#: chart legend of each component of ``A_k`` at joint ``k`` (``A[0, 2]``, ``A[1, 2]``: ``A_xz``, ``A_yz``)
-_LABELS = {"m_x": "xx", "m_y": "yy", "A_z": "zz", "m_xy": "xy", "c_x": "xz", "c_y": "yz"}
 #: the readout's time control
 TIME = "time (s)"
 #: the readout row that shows the damping at rest (what c means: the power it takes when every joint turns
 #: at 1 rad/s)
 C_ROW = "damping power at 1 rad/s in every joint"
-_ART = OKABE_ITO["purple"]
 #: controls that define the chain or its swing: a change restarts the swing at t = 0
 _CHAIN = ("bodies n", "λ = L/ρ", "bend φ (deg)", "base θ₁ (deg)", "g (m/s²)", "damping c")
 
@@ -119,212 +111,6 @@ def bend_for_tip(xy, n: int, base: float, L: float = 1.0) -> float:
     if dist(rounded)[0] <= dist(phi)[0] + 1e-12 * (1.0 + float(np.hypot(*target))):
         phi = rounded
     return float(phi)
-
-
-def fit_mechanism(ax, mechanism, extra=(), margin: float = 0.15, reach: float = 3.0, least: float = 1.0):
-    """Fit the view to every point of the mechanism, and to the ``extra`` points near it.
-
-    Every finite point of ``mechanism`` stays in view, however many of them coincide (a folded
-    chain); an ``extra`` point (a pole, a centre) is kept when it lies within ``reach`` times the
-    mechanism's size of its middle (a farther one gets its edge arrow).  The view spans at least
-    ``least`` (the mechanism's own length scale).  Only the box's corners reach
-    :func:`planargeo.draw.layout.fit_view`, so no point of the mechanism is taken for an outlier.
-
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes
-    mechanism : array_like (m, 2)
-        Points that must be in view.
-    extra : array_like (k, 2)
-        Points kept in view when near the mechanism.
-    margin : float
-        Margin, a fraction of the box's larger side.
-    reach : float
-        How far (in mechanism sizes) an extra point may lie and still be kept in view.
-    least : float
-        Smallest span of the box (m).
-
-    Returns
-    -------
-    tuple
-        The limits ``(x0, x1, y0, y1)`` set.
-
-    Examples
-    --------
-    >>> import matplotlib.pyplot as plt
-    >>> fig, ax = plt.subplots()
-    >>> x0, x1, y0, y1 = fit_mechanism(ax, [[0, 0], [1, 0], [0, 0]], margin=0.0)
-    >>> bool(x0 <= 0.0 and x1 >= 1.0 and x1 - x0 >= 1.0)
-    True
-    """
-    M = np.asarray(mechanism, dtype=float).reshape(-1, 2)
-    M = M[np.all(np.isfinite(M), axis=1)]
-    lo, hi = M.min(axis=0), M.max(axis=0)
-    size = max(float(np.max(hi - lo)), least)
-    E = np.asarray(extra, dtype=float).reshape(-1, 2)
-    E = E[np.all(np.isfinite(E), axis=1)]
-    if len(E):
-        mid = 0.5 * (lo + hi)
-        E = E[np.hypot(*(E - mid).T) <= reach * size]
-        if len(E):
-            lo, hi = np.minimum(lo, E.min(axis=0)), np.maximum(hi, E.max(axis=0))
-    c, half = 0.5 * (lo + hi), 0.5 * max(float(np.max(hi - lo)), least)    # a square: no side below the size
-    fit_view(ax, np.array([c - half, c + half]), margin=margin)
-    return tuple(float(x) for x in (*ax.get_xlim(), *ax.get_ylim()))
-
-
-def place_labels(ax, items) -> list:
-    """Place labels next to their anchors without overlaps (greedy, in order of priority).
-
-    Each item is ``(annotation, candidates)``: an annotation made by :func:`label_artist` and a
-    list of ``((x, y) data anchor, (dx, dy) offset in points)`` tried in turn; the first
-    position whose text lies inside the axes and clear of the labels placed before wins (else
-    the one that overlaps least).  Hidden annotations are skipped; an annotation whose anchors
-    all lie outside the view is hidden.
-
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes
-        The axes (its limits already set).
-    items : list of (Annotation, list)
-        Labels in order of priority.
-
-    Returns
-    -------
-    list of matplotlib.transforms.Bbox
-        The placed labels' boxes (display pixels).
-    """
-    renderer = ax.figure.canvas.get_renderer()
-    frame = ax.get_window_extent(renderer)
-    (x0, x1), (y0, y1) = sorted(ax.get_xlim()), sorted(ax.get_ylim())
-    placed = []
-    for ann, cands in items:
-        cands = [(xy, off) for xy, off in cands if np.all(np.isfinite(xy))
-                 and x0 <= xy[0] <= x1 and y0 <= xy[1] <= y1]       # a label only for what is in view
-        if not cands:
-            ann.set_visible(False)
-        if not ann.get_visible() or not ann.get_text():
-            continue
-        best, best_cost = None, math.inf
-        for xy, off in cands:
-            if not np.all(np.isfinite(xy)):
-                continue
-            ann.xy = (float(xy[0]), float(xy[1]))
-            ann.set_position((float(off[0]), float(off[1])))
-            ann.set_horizontalalignment("left" if off[0] > 1 else "right" if off[0] < -1 else "center")
-            ann.set_verticalalignment("bottom" if off[1] > 1 else "top" if off[1] < -1 else "center")
-            bb = ann.get_window_extent(renderer)
-            out = (max(0.0, frame.x0 + 2 - bb.x0) + max(0.0, bb.x1 - frame.x1 + 2)
-                   + max(0.0, frame.y0 + 2 - bb.y0) + max(0.0, bb.y1 - frame.y1 + 2))
-            cost = 1e3 * out + sum(max(0.0, min(bb.x1, o.x1) - max(bb.x0, o.x0) + 2)
-                                   * max(0.0, min(bb.y1, o.y1) - max(bb.y0, o.y0) + 2) for o in placed)
-            if cost < best_cost:
-                best, best_cost = (xy, off), cost
-            if cost == 0:
-                break
-        if best is None:
-            ann.set_visible(False)
-            continue
-        xy, off = best
-        ann.xy = (float(xy[0]), float(xy[1]))
-        ann.set_position((float(off[0]), float(off[1])))
-        ann.set_horizontalalignment("left" if off[0] > 1 else "right" if off[0] < -1 else "center")
-        ann.set_verticalalignment("bottom" if off[1] > 1 else "top" if off[1] < -1 else "center")
-        placed.append(ann.get_window_extent(renderer))
-    return placed
-
-
-def label_artist(ax, text: str = "", color: str = "black", fontsize: float = 11.0):
-    """An annotation (text offset in points from a data point) for :func:`place_labels`.
-
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes
-    text : str
-    color : str
-    fontsize : float
-
-    Returns
-    -------
-    matplotlib.text.Annotation
-    """
-    return ax.annotate(text, xy=(0.0, 0.0), xytext=(0.0, 0.0), textcoords="offset points", color=color,
-                       fontsize=fontsize, zorder=20, annotation_clip=False)
-
-
-def curve_candidates(xy, offset: float = 4.0) -> list:
-    """Label positions around a closed curve: its right, top, left and bottom points, offset outward.
-
-    Parameters
-    ----------
-    xy : (m, 2) points of the curve (NaN allowed)
-    offset : float
-        Distance from the curve in points.
-
-    Returns
-    -------
-    list of ((x, y), (dx, dy))
-    """
-    P = np.asarray(xy, dtype=float)
-    P = P[np.all(np.isfinite(P), axis=1)]
-    if not len(P):
-        return []
-    out = []
-    for k, d in ((int(np.argmax(P[:, 0] + P[:, 1])), (offset, offset)), (int(np.argmax(P[:, 1])), (0.0, offset)),
-                 (int(np.argmax(P[:, 0])), (offset, 0.0)), (int(np.argmin(P[:, 0] - P[:, 1])), (-offset, offset)),
-                 (int(np.argmin(P[:, 1])), (0.0, -offset)), (int(np.argmin(P[:, 0])), (-offset, 0.0)),
-                 (int(np.argmin(P[:, 0] + P[:, 1])), (-offset, -offset)),
-                 (int(np.argmax(P[:, 0] - P[:, 1])), (offset, -offset))):
-        out.append((P[k], d))
-    return out
-
-
-def line_candidates(line, box, fracs=(0.1, 0.9, 0.3, 0.7, 0.5), offset: float = 5.0) -> list:
-    """Label positions along a line inside ``box`` (x0, x1, y0, y1), on either side of it.
-
-    Parameters
-    ----------
-    line : (3,) homogeneous line
-    box : (x0, x1, y0, y1)
-    fracs : fractions along the visible segment, in order of preference
-    offset : float
-        Distance from the line in points.
-
-    Returns
-    -------
-    list of ((x, y), (dx, dy))
-    """
-    seg = clip_line(line, box)
-    if seg is None:
-        return []
-    seg = seg[np.argsort(seg[:, 0])]
-    n = np.array([-line[1], line[0]], dtype=float)          # the line's normal (direction (fx, fy))
-    n = n / max(np.hypot(*n), 1e-300)
-    if n[1] < 0:
-        n = -n
-    out = []
-    for f in fracs:
-        p = seg[0] + f * (seg[1] - seg[0])
-        out += [(p, tuple(offset * n)), (p, tuple(-offset * n))]
-    return out
-
-
-def point_candidates(xy, offset: float = 6.0) -> list:
-    """Label positions around a point (up-right first; then farther out, for crowded places).
-
-    Parameters
-    ----------
-    xy : (x, y)
-    offset : float
-        Distance in points.
-
-    Returns
-    -------
-    list of ((x, y), (dx, dy))
-    """
-    p = np.asarray(xy, dtype=float)
-    return [(p, (r * offset * a, r * offset * b)) for r in (1.0, 2.5, 4.0)
-            for a, b in ((1, 1), (1, -1), (-1, 1), (-1, -1), (0, 1.4), (0, -1.4), (1.4, 0), (-1.4, 0))]
 
 
 class ArticulatedExplorer(Explorer):
@@ -512,55 +298,6 @@ class ArticulatedExplorer(Explorer):
             C_ROW: "n c × (1 rad/s)²: the power the damping takes when every joint turns at 1 rad/s",
         }
 
-    # ------------------------------------------------------------------ figure
-    def setup_axes(self, ax):
-        """Main axes for the chain (left) and the convergence chart (right).
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-        """
-        super().setup_axes(ax)
-        ax.set_position([0.085, 0.1, 0.53, 0.85])
-        ax.set_xlabel("x (m)")
-        ax.set_ylabel("y (m)")
-        self.chart = ax.figure.add_axes([0.71, 0.12, 0.27, 0.78])
-        self.chart.grid(True, lw=0.3, alpha=0.5)
-        self.chart.set_xlabel("recursion steps (outboard bodies)")
-        self.chart.set_title("entries of $A_k$ at joint $k$ / full value", fontsize=11)
-
-    def make_artists(self, ax):
-        """Create every artist once (links, pins, conics, axes, pole; chart lines).
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-        """
-        self.links = Line2D([], [], color=COLORS["body"], lw=7, alpha=0.55, solid_capstyle="round", zorder=1)
-        self.pins = Line2D([], [], marker="o", ms=6, mfc="white", mec="black", ls="none", zorder=4)
-        self.ground = Line2D([0.0], [0.0], marker="s", ms=9, color=COLORS["ground"], ls="none", zorder=3)
-        for a in (self.links, self.pins, self.ground):
-            ax.add_line(a)
-        e = np.diag([1.0, 1.0, 1.0])
-        self.rigid = [ax.add_artist(ConicArtist(e, role="inertia", color="#9a9a9a", linewidth=1.0))
-                      for _ in range(NMAX)]
-        self.art = [ax.add_artist(ConicArtist(e, role="inertia", color=_ART, linewidth=1.3))
-                    for _ in range(NMAX)]
-        self.pole_art = ax.add_artist(PointArtist([0.0, 0.0, 1.0], role="accel", glyph=False, markersize=8))
-        self.axis_A = ax.add_artist(LineArtist([0.0, 1.0, 0.0], role="wrench", scale=None))
-        self.axis_I = ax.add_artist(LineArtist([0.0, 1.0, 0.0], role="momentum", scale=None,
-                                               linestyle=(0, (6, 3))))
-        self.polar = ax.add_artist(LineArtist([0.0, 1.0, 0.0], role="construct", scale=None))
-        # labels, placed clear of each other at every update (place_labels)
-        self.lab = {name: label_artist(ax, "", color) for name, color in (
-            ("a", COLORS["accel"]), ("A", _ART), ("I", "#6a6a6a"), ("Aa", COLORS["wrench"]),
-            ("Ia", COLORS["momentum"]), ("polar", COLORS["construct"]))}
-        self.curves = [self.chart.plot([], [], marker="o", ms=3, lw=1.5, label=_LABELS[c])[0] for c in COMPONENTS]
-        self.err_curve = self.chart.plot([], [], color="black", lw=1.2, ls=":", marker="s", ms=3,
-                                         label="error")[0]
-        self.now = self.chart.axvline(0.0, color=_ART, lw=1.0, alpha=0.7)
-        self.chart.legend(loc="lower right", fontsize=10, ncol=2, handlelength=1.2, columnspacing=0.8,
-                          borderaxespad=0.3, frameon=True, framealpha=0.85)
 
     # ------------------------------------------------------------------ handles and Play
     def handles(self):
@@ -729,7 +466,7 @@ class ArticulatedExplorer(Explorer):
         Returns
         -------
         dict
-            The state :meth:`render` draws.
+            The state :meth:`scene_picture` draws and :meth:`readout_of` reads.
 
         Raises
         ------
@@ -753,97 +490,6 @@ class ArticulatedExplorer(Explorer):
         st.update(n=n, lam=lam, q=q, outboard=out_k, t=t, energy=(float(T + V), W, E0), c=float(v["damping c"]))
         return st
 
-    # ------------------------------------------------------------------ drawing
-    def render(self, st):
-        """Update the artists and the chart in place; return the readout.
-
-        Parameters
-        ----------
-        st : dict
-            A state from :meth:`compute`.
-
-        Returns
-        -------
-        dict
-            Readout values (units in :attr:`units`).
-        """
-        v = self.values
-        n = st["n"]
-        focus = v.get("focus", "all")
-        k = 0 if focus == "all" else min(int(focus.split()[1]), n) - 1     # labels and chart: body 1 for "all"
-        pts = st["joints"]
-        self.links.set_data(pts[:, 0], pts[:, 1])
-        self.pins.set_data(pts[:-1, 0], pts[:-1, 1])
-        show_rigid = bool(v["rigid inertias"])
-        for i in range(NMAX):
-            on = i < n
-            self.art[i].set_visible(on)
-            self.rigid[i].set_visible(on and show_rigid)
-            if not on:
-                continue
-            self.art[i].set_conic(st["A"][i])
-            self.rigid[i].set_conic(st["I"][i])
-            bold = focus == "all" or i == k
-            _fade(self.art[i], 1.0 if bold else 0.3)
-            _fade(self.rigid[i], 0.9 if bold else 0.25)
-        a = st["pole"]
-        self.pole_art.set_point(a)
-        axes_on = bool(v["percussion axes"])
-        for art in (self.axis_A, self.axis_I, self.polar):
-            art.set_visible(axes_on)
-        self.axis_A.set_line(st["axis"][k])
-        self.axis_I.set_line(st["axis_rigid"][k])
-        self.axis_I.set_visible(axes_on and show_rigid)
-        self.polar.set_line(drawable_conic(st["A"][k]) @ a)            # 10.2.3: reflection of A_k a through the centre
-        # chart: the focused body's components against the recursion steps, each over its full value
-        comps, errs = st["components"][k], st["error"][k]
-        steps = np.arange(len(comps))
-        full = comps[-1]
-        scale = np.linalg.norm(st["A_full"][k])
-        for j, line in enumerate(self.curves):
-            meaningful = abs(full[j]) > 1e-9 * scale
-            line.set_visible(meaningful)
-            line.set_data(steps, comps[:, j] / full[j] if meaningful else np.zeros(len(steps)))
-        self.err_curve.set_data(steps, errs)
-        shown_k = min(st["outboard"], len(comps) - 1)
-        self.now.set_xdata([shown_k, shown_k])
-        self.chart.set_xlim(-0.3, max(len(comps) - 1, 1) + 0.3)
-        vis = [c.get_ydata() for c in self.curves if c.get_visible()] + [errs]
-        lo = min(0.0, float(np.min(np.concatenate(vis))))
-        hi = max(1.05, float(np.max(np.concatenate(vis))))
-        self.chart.set_ylim(lo - 0.05, hi + 0.1)
-        self.chart.set_xticks(range(len(comps)))
-        # the view: chain, centres, pole
-        view = [pts, st["centre"], st["centre_rigid"], [[v["pole x"], v["pole y"]]]]
-        view += [c.get_xy() for c in self.art[:n]]               # the drawn conics stay in view
-        if show_rigid:
-            view += [c.get_xy() for c in self.rigid[:n]]
-        fit_mechanism(self.ax, np.vstack(view), margin=0.1)
-        # labels: thesis symbols next to the focused body's elements, clear of each other
-        x0, x1 = self.ax.get_xlim()
-        y0, y1 = self.ax.get_ylim()
-        box = (x0, x1, y0, y1)
-        lab = self.lab
-        lab["a"].set_text("$a$")
-        lab["A"].set_text(f"$A_{{{k + 1}}}$")
-        lab["I"].set_text(f"$I_{{{k + 1}}}$")
-        lab["Aa"].set_text(f"$A_{{{k + 1}}}\\,a$")
-        lab["Ia"].set_text(f"$I_{{{k + 1}}}\\,a$")
-        lab["polar"].set_text("polar of $a$ (real conic)")
-        lab["I"].set_visible(show_rigid)
-        lab["Ia"].set_visible(axes_on and show_rigid)
-        for name in ("Aa", "polar"):
-            lab[name].set_visible(axes_on)
-        place_labels(self.ax, [
-            (lab["a"], point_candidates((v["pole x"], v["pole y"]))),
-            (lab["A"], curve_candidates(self.art[k].get_xy())),
-            (lab["I"], curve_candidates(self.rigid[k].get_xy())),
-            (lab["Aa"], line_candidates(st["axis"][k], box)),
-            (lab["Ia"], line_candidates(st["axis_rigid"][k], box, fracs=(0.9, 0.1, 0.7, 0.3, 0.5))),
-            (lab["polar"], line_candidates(self.polar.get_line(), box, fracs=(0.5, 0.3, 0.7, 0.1, 0.9))),
-        ])
-        return self.readout_of(st)
-
     def _focus_k(self, n: int) -> int:
         """The focused body (0-based; body 1 for "all")."""
         focus = self.values.get("focus", "all")
@@ -862,8 +508,6 @@ class ArticulatedExplorer(Explorer):
         tuple
             ``(x0, x1, y0, y1)``.
         """
-        from planargeo.draw.geometry import conic_geometry
-
         v = self.values
         n = st["n"]
         pts = [st["joints"], st["centre"], st["centre_rigid"], [[v["pole x"], v["pole y"]]]]
@@ -918,8 +562,6 @@ class ArticulatedExplorer(Explorer):
                 w.max = n - 1
         # readout
         Ak = st["A"][k]
-        from planargeo.scenes.articulated import inertia_at
-
         zero = float(self.zero_tol) * float(self.scale)
         Aj = inertia_at(Ak, pts[k])
         c = st["centre"][k]
@@ -954,14 +596,6 @@ class ArticulatedExplorer(Explorer):
 def _sub(i: int) -> str:
     """``i`` in subscript digits."""
     return str(i).translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
-
-
-def _fade(artist, alpha):
-    """Set the opacity of a composite artist and of its children."""
-    artist.set_alpha(alpha)
-    for c in artist.get_children():
-        c.set_alpha(alpha)
-    artist.stale = True
 
 
 def _rotate_back(A, theta):

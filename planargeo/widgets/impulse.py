@@ -34,16 +34,11 @@ import math
 
 import ipywidgets as W
 import numpy as np
-from matplotlib.lines import Line2D
-from matplotlib.patches import Polygon as MplPolygon
 
-from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
-from planargeo.draw.pictures.impulse import impulse_picture, moved_outline
-from planargeo.draw.style import COLORS
+from planargeo.draw.pictures.impulse import impulse_picture
 from planargeo.errors import DegenerateGeometryError
 from planargeo.scenes.impulse import BODIES, body_outline, impulse
 from planargeo.scenes.subspace import unit_direction
-from planargeo.screws.inertia import percussion_axis
 from planargeo.widgets.base import Explorer, Handle, Step, point_text
 
 __all__ = ["ImpulseExplorer"]
@@ -134,40 +129,6 @@ class ImpulseExplorer(Explorer):
             "t": Step(0.0, T_MAX, 0.01, 0.0, "time after the blow t (s)").make("t"),
         }
 
-    def make_artists(self, ax):
-        """Create every artist once.
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-        """
-        z, zl = np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0])
-        self.ghost = MplPolygon(np.zeros((3, 2)), closed=True, fc="none", ec=COLORS["construct"], ls="--",
-                                lw=0.8, zorder=1)
-        ax.add_patch(self.ghost)
-        self.body = MplPolygon(np.zeros((3, 2)), closed=True, fc=COLORS["body"], ec="black", alpha=0.6,
-                               zorder=2, label="body")
-        ax.add_patch(self.body)
-        self.conic = ax.add_artist(ConicArtist(np.eye(3), role="inertia", text="I (ρ)", text_offset=(-6.0, 4.0)))
-        self.conic.set_text_alignment("right", "bottom")
-        self.grip = ax.add_artist(PointArtist(z, role="twist", glyph=False, color=COLORS["ground"],
-                                              marker="s", markersize=8))
-        self.grip.set_text_beside((-0.7, 0.7))
-        self.com = ax.add_artist(PointArtist(z, role="twist", glyph=False, text="c", color="black", marker="+",
-                                             markersize=9))
-        self.com.set_text_beside((0.0, 1.0))
-        self.axis = ax.add_artist(LineArtist(zl, role="construct", scale=None, text="axis of percussion of P",
-                                             text_at="anchor"))
-        self.cop = ax.add_line(Line2D([], [], marker="*", ms=13, color=COLORS["wrench"], mec="black", ls="none",
-                                      zorder=6, label="centre of percussion"))
-        self.blow = ax.add_artist(LineArtist(zl, role="wrench", scale=ARROW, text="ĵ (blow)"))
-        self.reaction = ax.add_artist(LineArtist(zl, role="reaction", scale=ARROW, text="ĵᵣ (grip)",
-                                                 linewidth=1.2))
-        self.pole = ax.add_artist(PointArtist(z, role="twist", glyph_scale=3.0, text="v (pole)"))
-        self.pole.set_text_beside((0.7, -0.7))
-        self.free_pole = ax.add_artist(PointArtist(z, role="twist", glyph=False, color=COLORS["construct"],
-                                                   text="pole if free"))
-        self.free_pole.set_text_beside((0.0, 1.0))
 
     # ------------------------------------------------------------------ handles and Play
     def handles(self):
@@ -233,63 +194,6 @@ class ImpulseExplorer(Explorer):
         """
         return impulse(body=v["body"], support=v["support"], m=float(v["m"]), x=float(v["strike x"]),
                        y=float(v["strike y"]), angle_deg=float(v["strike angle"]), J=float(v["J"]))
-
-    def render(self, r):
-        """Update the artists and return the readout.
-
-        Parameters
-        ----------
-        r : SceneResult
-            A state of :meth:`compute`.
-
-        Returns
-        -------
-        dict
-        """
-        q, ex = r.quantities, r.extra
-        held = r.params["support"] == "held"
-        t = float(self.values["t"])
-        outline = ex["outline"]
-        dv = ex["dv"]
-        # the body t seconds after the blow: turned by ω t about the pole (or shifted, a translation)
-        self.body.set_xy(moved_outline(outline, dv, t))
-        x0, x1, y0, y1 = self.view_box()
-        if tuple(self.ax.get_xlim()) != (x0, x1) or tuple(self.ax.get_ylim()) != (y0, y1):
-            self.ax.set_xlim(x0, x1)
-            self.ax.set_ylim(y0, y1)
-        self.ghost.set_xy(outline)
-        self.ghost.set_visible(t > 0)
-        I = ex["I"]
-        com = np.array(q["com"])
-        self.conic.set_conic(I)
-        self.com.set_point([com[1], -com[0], 1.0])
-        self.grip.set_point([0.0, 0.0, 1.0])
-        self.grip.set_text("P (grip)" if r.params["body"] == "bat" else "P (hinge)")
-        self.axis.set_line(percussion_axis(I, [0.0, 0.0, 1.0]))
-        cop = q["centre_of_percussion"]
-        self.axis.set_anchor((cop[0], cop[1] - 0.4))
-        self.cop.set_data([cop[0]], [cop[1]])
-        self.blow.set_line(ex["impulse"])
-        self.blow.set_anchor((r.params["x"], r.params["y"]))
-        jr = ex["reaction"]
-        self.reaction.set_visible(held and bool(np.hypot(jr[0], jr[1]) > 1e-12 * abs(r.params["J"])))
-        if self.reaction.get_visible():
-            self.reaction.set_text("ĵᵣ (grip)" if r.params["body"] == "bat" else "ĵᵣ (hinge)")
-            self.reaction.set_line(jr)
-            u = jr[:2] / float(np.hypot(jr[0], jr[1]))
-            self.reaction.set_anchor(-0.15 * u)            # the arrow ends near P, pushing on the body there
-        moving = bool(np.any(dv != 0))
-        self.pole.set_visible(moving)
-        if moving:
-            self.pole.set_point(dv)
-        free = ex["dv_free"]
-        near = free[2] != 0 and math.hypot(free[0] / free[2], free[1] / free[2]) < 0.04   # at the grip (drawn)
-        self.free_pole.set_visible(bool(held and not near))
-        if self.free_pole.get_visible():
-            self.free_pole.set_point(free)
-        if held and near:
-            self.grip.set_text(("P (grip)" if r.params["body"] == "bat" else "P (hinge)") + " ≈ pole if free")
-        return self._readout(r, held)
 
     def view_box(self) -> tuple[float, float, float, float]:
         """The view: the fixed frame, grown (never shrunk) to hold the blow's point and arrow tip.

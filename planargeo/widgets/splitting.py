@@ -29,26 +29,18 @@ import math
 
 import ipywidgets as W
 import numpy as np
-from matplotlib.lines import Line2D
 
-from planargeo.draw.artists import LineArtist, PointArtist
 from planargeo.draw.pictures.articulated import fit_box
 from planargeo.draw.pictures.splitting import splitting_picture
-from planargeo.draw.style import COLORS, OKABE_ITO
 from planargeo.scenes.articulated import bent_chain_model
 from planargeo.scenes.splitting import splitting_state, twist_pole
-from planargeo.widgets.articulated import (bend_for_tip, fit_mechanism, label_artist, line_candidates,
-                                           place_labels, point_candidates)
+from planargeo.widgets.articulated import bend_for_tip
 from planargeo.widgets.base import Explorer, Handle, Step, cached, point_text
-
-#: size (points) of the poles' own labels: that of the placed labels (``label_artist``)
-LABEL_FONT = 11.0
 
 __all__ = ["SplittingExplorer", "NMAX", "x_over_L_7_48"]
 
 #: Most bodies the explorer shows.
 NMAX = 8
-_LOWER, _UPPER = OKABE_ITO["blue"], OKABE_ITO["vermillion"]
 #: units of an acceleration ``[a_x, a_y, α]``
 _ACC = ("m/s²", "m/s²", "rad/s²")
 
@@ -226,44 +218,6 @@ class SplittingExplorer(Explorer):
             "η = L/ρ (7.49)": "size ratio of the bodies (eq. 7.49)",
         }
 
-    def setup_axes(self, ax):
-        """Equal-aspect axes with metre labels.
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-        """
-        super().setup_axes(ax)
-        ax.set_position([0.1, 0.12, 0.86, 0.83])
-        ax.set_xlabel("x (m)")
-        ax.set_ylabel("y (m)")
-
-    def make_artists(self, ax):
-        """Create every artist once (both halves of the chain, pins, split marker, force, poles).
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-        """
-        kw = dict(lw=7, alpha=0.55, solid_capstyle="round", zorder=1)
-        self.lower = ax.add_line(Line2D([], [], color=_LOWER, label="constrained chain 1..i", **kw))
-        self.upper = ax.add_line(Line2D([], [], color=_UPPER, label="free-floating chain i+1..n", **kw))
-        self.pins = ax.add_line(Line2D([], [], marker="o", ms=6, mfc="white", mec="black", ls="none", zorder=4))
-        self.ground = ax.add_line(Line2D([0.0], [0.0], marker="s", ms=9, color=COLORS["ground"], ls="none",
-                                         zorder=3))
-        self.cut = ax.add_line(Line2D([], [], marker="o", ms=15, mfc="none", mec="#b00020", mew=2.2, ls="none",
-                                      zorder=5, label="split joint"))
-        self.force = ax.add_artist(LineArtist([0.0, 1.0, 0.0], role="reaction", scale=0.5))
-        self.couple = ax.add_artist(LineArtist([0.0, 0.0, 1.0], role="wrench", corner="upper left"))
-        self.poles = [ax.add_artist(PointArtist([0.0, 0.0, 1.0], role="accel", glyph=False, markersize=6))
-                      for _ in range(NMAX)]
-        self.centre = ax.add_artist(PointArtist([0.0, 0.0, 1.0], role="twist", glyph=False, marker="D",
-                                                markersize=6))
-        # labels, placed clear of each other at every update
-        self.lab = {name: label_artist(ax, "", color) for name, color in (
-            ("a_i", _LOWER), ("a_j", _UPPER), ("f", COLORS["reaction"]), ("centre", COLORS["twist"]),
-            ("cut", "#b00020"), ("couple", COLORS["wrench"]))}
-
     def focus_options(self):
         """Focus on one side of the split: the other side's links and poles fade.
 
@@ -375,91 +329,6 @@ class SplittingExplorer(Explorer):
         st = splitting_state(self._model(n, rho, float(v["g (m/s²)"])), q, split, tau)
         st.update(n=n, split=split, rho=rho, phi=phi, tau=tau)
         return st
-
-    def render(self, st):
-        """Update the artists in place and return the readout.
-
-        Parameters
-        ----------
-        st : dict
-            A state from :meth:`compute`.
-
-        Returns
-        -------
-        dict
-            Readout values (units in :attr:`units`).
-        """
-        n, i = st["n"], st["split"]                      # the split joint is i+1 (1-based): body i below it
-        pts = st["joints"]
-        self.lower.set_data(pts[:i + 1, 0], pts[:i + 1, 1])
-        self.upper.set_data(pts[i:, 0], pts[i:, 1])
-        self.pins.set_data(pts[:-1, 0], pts[:-1, 1])
-        self.cut.set_data([pts[i, 0]], [pts[i, 1]])
-        f = st["f_split"]
-        self.force.set_line(f)
-        self.force.set_anchor(pts[i])
-        fxy = math.hypot(f[0], f[1])
-        self.force.set_scale(0.6 / fxy if fxy > 0 else None)
-        self.couple.set_line(-st["f_tip"])
-        # the view: every joint and the split force's arrow; the poles at the split and the centre when near
-        mech = [pts] + ([[pts[i] + 0.6 * np.array(f[:2]) / fxy]] if fxy > 0 else [])
-        extra = []
-        poles = [twist_pole(a) for a in st["a"]]
-        for b in (i - 1, i):                                   # the two bodies at the split
-            if poles[b] is not None:
-                extra.append([poles[b]])
-        c = st["centres"][i - 1]
-        show_c = bool(self.values["mobility centres"]) and bool(np.all(np.isfinite(c)))
-        if show_c:
-            extra.append([c])
-        fit_mechanism(self.ax, np.vstack(mech), np.vstack(extra) if extra else (), margin=0.15)
-        (x0, x1), (y0, y1) = self.ax.get_xlim(), self.ax.get_ylim()
-        for b in range(NMAX):
-            art = self.poles[b]
-            near = b in (i - 1, i)
-            art.set_visible(b < n)          # out of view: a labelled arrow at the edge points to it
-            # the two poles at the split are labelled by the placed labels, the others by their own
-            art.set_text("" if near else f"$a_{{{b + 1}}}$")
-            if b < n:
-                art.set_point(st["a"][b])
-                art.set_color(_LOWER if b < i else _UPPER)
-                art.set_text_props(fontsize=LABEL_FONT)
-        focus = self.values.get("focus", "all")
-        low, up = (1.0, 1.0) if focus == "all" else (1.0, 0.2) if focus == "constrained part" else (0.2, 1.0)
-        self.lower.set_alpha(0.55 * low)
-        self.upper.set_alpha(0.55 * up)
-        for b in range(n):
-            alpha = low if b < i else up
-            self.poles[b].set_alpha(alpha)
-            for child in self.poles[b].get_children():
-                child.set_alpha(alpha)
-        if poles[i - 1] is None and poles[i] is None:          # both translate: one arrow says it (∞)
-            u, w = st["a"][i - 1][:2], st["a"][i][:2]
-            if abs(u[0] * w[1] - u[1] * w[0]) <= 0.2 * np.hypot(*u) * np.hypot(*w):
-                self.poles[i].set_visible(False)
-        self.centre.set_visible(show_c)
-        if show_c:
-            self.centre.set_point([c[1], -c[0], 1.0])
-        lab = self.lab
-        lab["a_i"].set_text(f"$a_{{{i}}}$")
-        lab["a_j"].set_text(f"$a_{{{i + 1}}}$")
-        lab["f"].set_text(f"$f_{{{i + 1}}}$")
-        lab["centre"].set_text(f"centre of $\\Lambda_{{{i}}}^{{-1}}$")
-        lab["cut"].set_text("split")
-        lab["couple"].set_text(f"$-f_{{{n + 1}}}$ on the tip")
-        for key in lab:
-            lab[key].set_visible(True)
-        lab["centre"].set_visible(show_c)
-        corner = (x0 + 1e-9 * (x1 - x0), y1 - 1e-9 * (y1 - y0))      # beside the couple's glyph (upper left)
-        place_labels(self.ax, [
-            (lab["couple"], [(corner, (30.0, -10.0)), (corner, (30.0, -30.0))]),
-            (lab["cut"], point_candidates(pts[i], offset=9.0)),
-            (lab["a_i"], [] if poles[i - 1] is None else point_candidates(poles[i - 1])),
-            (lab["a_j"], [] if poles[i] is None else point_candidates(poles[i])),
-            (lab["f"], line_candidates(f, (x0, x1, y0, y1))),
-            (lab["centre"], point_candidates(c) if show_c else []),
-        ])
-        return self.readout_of(st)
 
     def view_box(self, st) -> tuple[float, float, float, float]:
         """The view: every joint and the split force's arrow; the poles at the split and the centre when near.

@@ -41,12 +41,8 @@ import math
 
 import ipywidgets as W
 import numpy as np
-from matplotlib.lines import Line2D
-from matplotlib.patches import Polygon as MplPolygon
 
-from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
-from planargeo.draw.pictures.subspace import BAR, subspace_picture
-from planargeo.draw.style import COLORS
+from planargeo.draw.pictures.subspace import BAR, COM, DIR_HANDLE, subspace_picture
 from planargeo.errors import DegenerateGeometryError
 from planargeo.scenes.subspace import subspace_state, unit_direction
 from planargeo.screws.twists import inertia_matrix
@@ -62,19 +58,9 @@ JOINT_OPTIONS = {"revolute": "revolute", "prismatic": "prismatic",
 _LABEL = {k: lab for lab, k in JOINT_OPTIONS.items()}
 #: The "show" buttons: shown name -> what is drawn.
 SHOW_OPTIONS = {"f = TQ + Rμ": "wrench", "I⁻¹f = sψ + Uγ": "twist", "s, R, T, U": "spaces"}
-#: the body: a bar along x with its centre of mass at (1, 0)
-COM = (1.0, 0.0)
-_BAR = BAR
-#: data length of the force arrow per newton, and of the direction handle
+#: data length of the force arrow per newton (the force tip handle)
 ARROW = 0.5
-DIR_HANDLE = 0.7
 _SUB = "₁₂"
-
-
-def _xy(p):
-    """``(x, y)`` of a finite homogeneous point (for placing labels; ideal points are not placed)."""
-    return (float(-p[1] / p[2]) + 0.0, float(p[0] / p[2]) + 0.0)
-
 
 #: the heading row above the identity checks
 CHECKS_HEADING = "checks: thesis identities of s, R, T, U"
@@ -97,24 +83,6 @@ CHECK_ROWS = {
     "Rᵀ(sψ)": ("check Rᵀ(sψ) → 0", "—",
                "the held body's acceleration has no reactive part: Rᵀs ψ = 0 by sᵀR = 0 (6.58–6.60)"),
 }
-
-
-def _along(line, ref, t: float):
-    """The point ``t`` along ``line`` (a force line) from the foot of ``ref`` on it; ``ref`` for a couple."""
-    fx, fy, tz = (float(x) for x in line)
-    F = math.hypot(fx, fy)
-    ref = np.asarray(ref, dtype=float)
-    if F == 0:
-        return ref
-    d = np.array([fx, fy]) / F
-    p0 = np.array([fy * tz, -fx * tz]) / (F * F)            # foot of the origin (4.27)
-    return p0 + d * ((ref - p0) @ d + t)
-
-
-#: where each kind of point puts its label (a unit direction from the point): distinct, so that
-#: coinciding points (s and sψ of a pure rotation about the pin, U and Uγ...) keep legible labels
-_BESIDE = {"s": (-0.7, 0.7), "U": (0.7, -0.7), "a_free": (0.7, 0.7), "s_psi": (-0.7, -0.7),
-           "U_gamma": (-1.0, 0.0), "c": (0.0, 1.0)}
 
 
 def _kind_units(s_col) -> tuple[str, str]:
@@ -172,53 +140,6 @@ class SubspaceExplorer(Explorer):
             "show": W.ToggleButtons(options=list(SHOW_OPTIONS), value="f = TQ + Rμ", description="show",
                                     style={"button_width": "auto"}),
         }
-
-    # ------------------------------------------------------------------ artists
-    def make_artists(self, ax):
-        """Create every artist once (body, joint, s, R, T, U, f and its parts).
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-        """
-        z, zl = np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0])
-        self.body = MplPolygon(_BAR, closed=True, fc=COLORS["body"], ec="black", alpha=0.45, zorder=1,
-                               label="body")
-        ax.add_patch(self.body)
-        self.track = ax.add_line(Line2D([], [], color=COLORS["ground"], lw=5, alpha=0.35, zorder=1,
-                                        solid_capstyle="butt", label="joint"))
-        self.pin = ax.add_line(Line2D([], [], marker="o", ms=9, mfc="white", mec=COLORS["ground"], mew=2,
-                                      ls="none", zorder=6))
-        self.dir_handle = ax.add_line(Line2D([], [], marker="D", ms=6, color=COLORS["ground"], ls="none",
-                                             zorder=6))
-        self.com = ax.add_artist(PointArtist(z, role="twist", glyph=False, text="c", color="black",
-                                             marker="+", markersize=9))
-        self.com.set_text_beside(_BESIDE["c"])
-        self.conic = ax.add_artist(ConicArtist(np.eye(3), role="inertia", text="I", text_offset=(-6.0, 4.0)))
-        self.conic.set_text_alignment("right", "bottom")
-        self.s_art = [ax.add_artist(PointArtist(z, role="twist", glyph=False, markersize=8, glyph_scale=0.5))
-                      for _ in range(2)]
-        self._labels, self._besides = {}, {}
-        for a in self.s_art:
-            self._besides[a] = _BESIDE["s"]
-        self.R_art = [ax.add_artist(LineArtist(zl, role="reaction", scale=None, linewidth=1.0,
-                                               corner="upper left")) for _ in range(2)]
-        self.T_art = [ax.add_artist(LineArtist(zl, role="wrench", scale=None, linewidth=1.0,
-                                               linestyle=(0, (6, 3)), corner="lower left")) for _ in range(2)]
-        self.U_art = [ax.add_artist(PointArtist(z, role="accel", glyph=False, markersize=7, glyph_scale=0.5)) for _ in range(2)]
-        for a in self.U_art:
-            self._besides[a] = _BESIDE["U"]
-        self.f_art = ax.add_artist(LineArtist(zl, role="wrench", scale=ARROW, text="f", text_at="tip"))
-        self.TQ_art = ax.add_artist(LineArtist(zl, role="wrench", scale=ARROW, text="TQ", linewidth=2.6,
-                                               corner="lower right"))
-        self.Rmu_art = ax.add_artist(LineArtist(zl, role="reaction", scale=ARROW, text="Rμ", linewidth=2.6,
-                                                corner="upper right"))
-        self.afree_art = ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.5, text="I⁻¹f"))
-        self.spsi_art = ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.5, text="sψ"))
-        self.Ug_art = ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.5, text="Uγ",
-                                                color=COLORS["momentum"]))
-        for a, key in ((self.afree_art, "a_free"), (self.spsi_art, "s_psi"), (self.Ug_art, "U_gamma")):
-            self._besides[a] = _BESIDE[key]
 
     def disabled(self, values):
         """Controls that change nothing for the joint chosen, with the reason.
@@ -359,94 +280,6 @@ class SubspaceExplorer(Explorer):
                                                            unit_direction(v["joint angle"]), np.array(a))
         return st
 
-    def render(self, st):
-        """Update the artists and return the readout.
-
-        Parameters
-        ----------
-        st : dict
-            A state of :meth:`compute`.
-
-        Returns
-        -------
-        dict
-        """
-        show = SHOW_OPTIONS[self.values["show"]]
-        s, R, T, U = st["s"], st["R"], st["T"], st["U"]
-        k = s.shape[1]
-        p, e, fp = st["point"], st["direction"], st["force point"]
-        # the joint
-        kind = st["joint"]
-        if kind == "revolute":
-            self.track.set_data([], [])
-            self.dir_handle.set_data([], [])
-        else:
-            ends = np.array([p - 0.9 * e, p + 0.9 * e]) if kind != "twin_prismatic" else \
-                np.array([p - 0.5 * e, p + 0.5 * e, p, p - 0.5 * np.array([-e[1], e[0]]),
-                          p + 0.5 * np.array([-e[1], e[0]])])
-            self.track.set_data(ends[:, 0], ends[:, 1])
-            h = p + DIR_HANDLE * e
-            self.dir_handle.set_data([h[0]], [h[1]])
-        pin = kind in ("revolute", "revolute_prismatic")
-        self.pin.set_data(([p[0]], [p[1]]) if pin else ([], []))
-        self.com.set_point([COM[1], -COM[0], 1.0])
-        self.conic.set_conic(st["I"])
-        self._text = {self.com: "c", self.f_art: "f", self.TQ_art: "TQ", self.Rmu_art: "Rμ",
-                      self.conic: "I"}
-        self.conic.set_text(self._text[self.conic])
-        # subspaces
-        twin = kind == "twin_prismatic"
-        for i, art in enumerate(self.s_art):
-            art.set_visible(i < k)
-            if i < k:
-                art.set_point(s[:, i])
-                self._labels[art] = ("s" if k == 1 else f"s{_SUB[i]}") + (", sψ" if k == 1 and show == "twist" else "")
-        for i, art in enumerate(self.R_art):
-            on = i < 3 - k and show in ("wrench", "spaces")
-            art.set_visible(on)
-            if on:
-                art.set_line(R[:, i])
-                name = "R" if 3 - k == 1 else f"R{_SUB[i]}"
-                if k == 2:
-                    name += " = poles of s" if not twin else " (couple): s all translations"
-                art.set_text(name)
-                self._text[art] = name
-                art.set_anchor(_along(R[:, i], p, 1.2 if i == 0 else -1.2))
-        for i, art in enumerate(self.T_art):
-            on = i < k and show in ("wrench", "spaces")
-            art.set_visible(on)
-            if on:
-                art.set_line(T[:, i])
-                self._text[art] = "T" if k == 1 else f"T{_SUB[i]}"
-                art.set_text(self._text[art])
-                art.set_anchor(_along(T[:, i], _xy(U[:, 0]) if k == 2 and not is_ideal(U[:, 0]) else COM, 1.3 if i == 0 else -1.3))
-        for i, art in enumerate(self.U_art):
-            on = i < 3 - k and show in ("twist", "spaces")
-            art.set_visible(on)
-            if on:
-                art.set_point(U[:, i])
-                self._labels[art] = "U" + ("" if 3 - k == 1 else _SUB[i]) + (" (T₁ ∩ T₂)" if k == 2 else "")
-        # the force and its splits
-        self.f_art.set_line(st["f"])
-        self.f_art.set_anchor(fp)
-        wrench, twist = show == "wrench", show == "twist"
-        self.TQ_art.set_visible(wrench and np.any(st["TQ"] != 0))
-        self.Rmu_art.set_visible(wrench and np.any(st["Rmu"] != 0))
-        if wrench:
-            self.TQ_art.set_line(st["TQ"])
-            self.TQ_art.set_anchor(fp + np.array([0.3, -0.4]))
-            self.Rmu_art.set_line(st["Rmu"])
-            self.Rmu_art.set_anchor(p + np.array([-0.4, 0.5]))
-        for art, key in ((self.afree_art, "a_free"), (self.spsi_art, "s_psi"), (self.Ug_art, "U_gamma")):
-            on = twist and np.any(st[key] != 0) and not (key == "s_psi" and k == 1)
-            art.set_visible(bool(on))
-            if on:
-                art.set_point(st[key])
-                self._labels[art] = {"a_free": "I⁻¹f", "s_psi": "sψ", "U_gamma": "Uγ"}[key]
-        self._fit_view()
-        self._merge_coinciding([*self.s_art, *self.U_art, self.afree_art, self.spsi_art, self.Ug_art])
-        return self._readout(st, k)
-
     def readout_of(self, st):
         """The readout of the state ``st`` (joint forces and accelerations, ``sᵀIs``, the checks).
 
@@ -520,40 +353,6 @@ class SubspaceExplorer(Explorer):
                     else:
                         y0, y1 = lo - grow, hi + grow
         return (x0, x1, y0, y1)
-
-    def _fit_view(self) -> None:
-        x0, x1, y0, y1 = self.view_box()
-        if (x0, x1) != tuple(self.ax.get_xlim()) or (y0, y1) != tuple(self.ax.get_ylim()):
-            self.ax.set_xlim(x0, x1)
-            self.ax.set_ylim(y0, y1)
-
-    def _merge_coinciding(self, arts):
-        """Points drawn at one place (s and sψ of a rotation about the pin, U and Uγ...) get one joint label."""
-        shown = []
-        labels, besides = self._labels, self._besides
-        for a in arts:
-            if not a.get_visible():
-                continue
-            p = a.get_point()
-            n = float(np.linalg.norm(p))
-            for b in shown:
-                q = b.get_point()
-                if np.linalg.norm(np.cross(p, q)) <= 1e-9 * n * float(np.linalg.norm(q)):
-                    labels[b] = f"{labels[b]}, {labels[a]}"
-                    a.set_visible(False)
-                    break
-            else:
-                shown.append(a)
-        (x0, x1), (y0, y1) = self.ax.get_xlim(), self.ax.get_ylim()
-        for a in shown:
-            a.set_text(labels[a])
-            self._text[a] = labels[a]
-            p = a.get_point()
-            inside = not is_ideal(p) and x0 <= -p[1] / p[2] <= x1 and y0 <= p[0] / p[2] <= y1
-            if inside:
-                a.set_text_beside(besides[a])
-            else:                        # an edge arrow (off the view, at infinity): its label inside
-                a.set_text_offset(None)
 
     def _readout(self, st, k):
         s, R = st["s"], st["R"]
