@@ -146,13 +146,16 @@ def draw_picture(pic: dict, ax=None) -> list:
     return drawn
 
 
-def figure(pic: dict) -> Figure:
+def figure(pic: dict, artists: list | None = None) -> Figure:
     """A new matplotlib figure holding the picture at its pixel size (100 dpi).
 
     Parameters
     ----------
     pic : dict
         A picture's data (:meth:`Picture.to_dict`).
+    artists : list, optional
+        If given, the drawn artists are appended to it, as :func:`draw_picture` returns them
+        (``(element id, part index, artist)``).
 
     Returns
     -------
@@ -163,7 +166,9 @@ def figure(pic: dict) -> Figure:
     with rc_context():
         fig = Figure(figsize=(w / 100.0, h / 100.0), dpi=100)
         ax = fig.add_axes((ml / w, mb / h, (w - ml - mr) / w, (h - mt - mb) / h))
-        draw_picture(pic, ax)
+        drawn = draw_picture(pic, ax)
+    if artists is not None:
+        artists.extend(drawn)
     return fig
 
 

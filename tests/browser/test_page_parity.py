@@ -119,18 +119,19 @@ def matplotlib_measure(pic: dict) -> dict:
     from matplotlib.colors import to_hex
 
     from planargeo.draw import render
+    from planargeo.draw.style import rc_context
 
-    fig = render.figure(pic)
-    ax = fig.axes[0]
-    ax.cla()
-    drawn = render.draw_picture(pic, ax)
+    drawn: list = []
+    fig = render.figure(pic, artists=drawn)     # the exports' figure (render.picture_bytes)
     FigureCanvasAgg(fig)
-    renderer = fig.canvas.get_renderer()
-    fig.draw(renderer)
+    with rc_context():
+        renderer = fig.canvas.get_renderer()
+        fig.draw(renderer)
     H = fig.get_size_inches()[1] * fig.dpi
     out: dict[str, list] = {}
     for gid, i, art in drawn:
-        bb = art.get_window_extent(renderer)
+        with rc_context():
+            bb = art.get_window_extent(renderer)
         box = [bb.x0, H - bb.y1, bb.x1, H - bb.y0]
         text = art.get_text() if hasattr(art, "get_text") else None
         colors = set()
