@@ -114,7 +114,8 @@ def floor(cv, steps: int) -> list[float]:
         n = _api(cv, "p.stats.length")
         _api(cv, "p.ping()")
         for _ in range(500):
-            s = _api(cv, f"p.stats.length > {n} && p.stats[p.stats.length - 1].tAck ? p.stats[p.stats.length - 1] : null")
+            s = _api(cv, f"p.stats.length > {n} && p.stats[p.stats.length - 1].tAck"
+                         " ? p.stats[p.stats.length - 1] : null")
             if s:
                 out.append(s["tAck"] - s["tSent"])
                 break
@@ -275,7 +276,8 @@ def python_side(repeat: int = 25) -> dict:
     for _ in range(repeat):
         ex.picture()
     out["picture (ms)"] = round((time.perf_counter() - t1) / repeat * 1e3, 2)
-    out["whole picture, first view (KB)"] = round(len(json.dumps(ex.canvas._snapshot(), separators=(",", ":"))) / 1024, 1)
+    snapshot = json.dumps(ex.canvas._snapshot(), separators=(",", ":"))
+    out["whole picture, first view (KB)"] = round(len(snapshot) / 1024, 1)
     out["picture dict (KB)"] = round(len(json.dumps(ex.canvas.picture)) / 1024, 1)
     out["elements"] = len(ex.canvas.picture["elements"])
     return out
@@ -345,7 +347,8 @@ def main(argv=None) -> int:
     for m in media:
         r = results[m][CHAIN]
         lines.append(f"| {m} | {_cell(r['F (ping round trip)'])} | {_cell(r['drag step'])} | "
-                     f"{_cell(r['handle repaint'])} | {_cell(r['slider step'])} | {_cell(r['F after (ping round trip)'])} |")
+                     f"{_cell(r['handle repaint'])} | {_cell(r['slider step'])} | "
+                     f"{_cell(r['F after (ping round trip)'])} |")
     lines += ["", "Play at 1× for 10 s (frames painted per second; seconds of motion per second of wall clock):", "",
               "| medium | fps | frames | time scale | frame gap median (p90), ms |", "|---|---|---|---|---|"]
     for m in media:

@@ -50,7 +50,7 @@ from typing import Any
 
 import numpy as np
 
-from planargeo.draw.geometry import clip_line, conic_curves, conic_geometry, point_xy
+from planargeo.draw.geometry import clip_line, conic_curves, conic_geometry
 from planargeo.draw.style import COLORS, LABEL_PT, LINEWIDTHS, STYLES
 from planargeo.errors import InputError
 
