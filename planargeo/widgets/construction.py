@@ -4,7 +4,7 @@ A *construction* menu offers every construction that
 :mod:`planargeo.scenes.construction` knows: twist addition, wrench addition,
 velocity and acceleration kinematics across a joint, the Newton–Euler balance
 of one body, and a pole dragged through infinity.  A *step* slider draws the
-construction up to that step; the caption above the figure names the step and
+construction up to that step; the caption under the drawing names the step and
 its equation, earlier steps stay (faded, at full strength or hidden: the
 *earlier steps* buttons), later ones are hidden.  Every input (poles, rates,
 force lines, the joint, the centre of mass) has a slider and, where it is a
@@ -12,7 +12,8 @@ point, a drag handle: dragging redoes the whole construction.  The sliders of
 inputs the chosen construction does not use are disabled (and hidden).  The
 *key* shows what each colour and mark stands for (a pole, a force line, a
 construction line...).  The steps come from
-:func:`planargeo.scenes.construction.construct`; this module only draws them.
+:func:`planargeo.scenes.construction.construct`;
+:func:`planargeo.draw.pictures.construction.construction_picture` draws them.
 
 For slides, :meth:`ConstructionExplorer.export_layers` writes an SVG with
 every step in its own layer, ``<g id="step-K-name">``, to reveal one by one.
@@ -36,19 +37,12 @@ from __future__ import annotations
 import io
 import math
 import re
-import textwrap
 from pathlib import Path
 
-import matplotlib
-import matplotlib.artist as martist
 import numpy as np
 import ipywidgets as W
-from matplotlib.lines import Line2D
-from matplotlib.text import Text
 
-from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
 from planargeo.draw.pictures.construction import construction_picture
-from planargeo.draw.style import COLORS, STYLES, sum_style
 from planargeo.errors import InputError
 from planargeo.files import atomic_write
 from planargeo.scenes.construction import CONSTRUCTIONS, construct, parameters
@@ -140,12 +134,6 @@ _UNITS = {"ω₁": "rad/s", "ω₂": "rad/s", "ω₃ = ω₁ + ω₂": "rad/s", 
           "ρ = τ/|fⁿᵉᵗ|": "m", "fⁿᵉᵗ": WRENCH_UNITS, "power of fⁿᵉᵗ on v": "W", "step": "—",
           "equation": "—", "case": "—", "weight of v₂": "—", "v₂": "—", "pole of v₂": "m",
           "v₃": TWIST_UNITS}
-
-#: what the key (legend) calls each role of an element
-ROLE_KEY = {"twist": "velocity pole (a twist)", "accel": "acceleration pole",
-            "wrench": "force line (a wrench)", "momentum": "bias force p",
-            "reaction": "joint", "construct": "construction line",
-            "inertia": "inertia I: circle of gyration", "conic": "horizon: the line at infinity"}
 
 #: the meaning of every symbol each construction shows (figure labels and readout rows)
 _EXPLAIN_COMMON = {
@@ -250,88 +238,6 @@ def _range(name: str):
     return (-3.0, 3.0, 0.05, "—")
 
 
-class StepLayer(martist.Artist):
-    """A container artist: its children are drawn inside one SVG group ``<g id=gid>``.
-
-    The children (planargeo artists, lines, texts) are owned by the layer, not
-    by the axes, so that a step's elements stay together in the SVG output.
-
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes
-        The axes the children draw in.
-    gid : str
-        The group's id in SVG output.
-
-    Examples
-    --------
-    >>> import matplotlib; matplotlib.use("Agg")
-    >>> import matplotlib.pyplot as plt
-    >>> fig, ax = plt.subplots()
-    >>> layer = StepLayer(ax, "step-1")
-    >>> _ = layer.add(Line2D([0, 1], [0, 1]))
-    >>> buf = io.StringIO(); fig.savefig(buf, format="svg")
-    >>> 'id="step-1"' in buf.getvalue()
-    True
-    >>> plt.close(fig)
-    """
-
-    def __init__(self, ax, gid: str):
-        super().__init__()
-        self.set_gid(gid)
-        self.set_in_layout(False)
-        self.children: list = []
-        ax.add_artist(self)
-
-    def add(self, artist):
-        """Adopt ``artist`` (set its axes, figure and data transform); return it.
-
-        Parameters
-        ----------
-        artist : matplotlib.artist.Artist
-
-        Returns
-        -------
-        matplotlib.artist.Artist
-        """
-        ax = self.axes
-        artist.axes = ax
-        artist.set_figure(ax.figure)
-        if not artist.is_transform_set():
-            artist.set_transform(ax.transData)
-        if hasattr(artist, "set_clip_path") and not isinstance(artist, Text):
-            artist.set_clip_path(ax.patch)
-        self.children.append(artist)
-        self.stale = True
-        return artist
-
-    def get_children(self):
-        """The adopted artists.
-
-        Returns
-        -------
-        list
-        """
-        return list(self.children)
-
-    @martist.allow_rasterization
-    def draw(self, renderer):
-        """Draw the children inside one group named by the layer's gid.
-
-        Parameters
-        ----------
-        renderer : matplotlib.backend_bases.RendererBase
-        """
-        if not self.get_visible():
-            return
-        renderer.open_group("step", gid=self.get_gid())
-        for c in sorted(self.children, key=lambda a: a.get_zorder()):
-            if c.get_visible():
-                c.draw(renderer)
-        renderer.close_group("step")
-        self.stale = False
-
-
 class ConstructionExplorer(Explorer):
     """Chapter 4's constructions drawn step by step, with their captions and equations.
 
@@ -373,10 +279,7 @@ class ConstructionExplorer(Explorer):
             for name, default in parameters(kind).items():
                 self._all_params.setdefault(name, default)
         self._all_params.update(parameters(construction))
-        self._max_steps = max(len(construct(k).steps) for k in CONSTRUCTIONS) + 1
-        self._artists: dict[str, dict[str, object]] = {k: {} for k in CONSTRUCTIONS}
         self._shown_kind: str | None = None
-        self._all_steps = False
         super().__init__(construction=construction, **kwargs)
         self.controls["construction"].observe(
             self.guarded(lambda ch: self._follow_kind(ch["new"])), names="value")
@@ -399,16 +302,6 @@ class ConstructionExplorer(Explorer):
         if self.state is not None:
             return len(self.state["c"].steps)
         return len(construct(self.construction).steps)
-
-    @property
-    def layers(self) -> list:
-        """The step layers of the construction shown, in order."""
-        return self._layers[:self.n_steps]
-
-    @property
-    def element_artists(self) -> dict:
-        """``{"K:name": artist}`` of the construction shown (K the step's index from 0)."""
-        return self._artists[self.construction]
 
     def _follow_kind(self, kind: str, n: int | None = None) -> None:
         """The step slider's range (``n`` steps, default the construction's) and the sliders shown follow ``kind``."""
@@ -501,52 +394,6 @@ class ConstructionExplorer(Explorer):
         kind = self.values["construction"] if self.state is None else self.construction
         return {**EXPLAIN[kind], **_EXPLAIN_COMMON}
 
-    def setup_axes(self, ax):
-        """Equal-aspect axes over :attr:`limits` with a light grid.
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-        """
-        from planargeo.draw.style import setup_axes
-
-        from matplotlib.ticker import MultipleLocator
-
-        setup_axes(ax, self.limits, grid=True, axis_off=False)
-        for axis in (ax.xaxis, ax.yaxis):      # ticks every 2 m: drawing ticks is half a redraw
-            axis.set_major_locator(MultipleLocator(2.0))
-        ax.grid(True, lw=0.4, alpha=0.4)
-        ax.figure.subplots_adjust(top=0.86)
-
-    def make_artists(self, ax):
-        """One :class:`StepLayer` per step (children made when an element first appears), and the key.
-
-        The key (legend) lists one entry per role drawn (a velocity pole, a force
-        line, a construction line...): an empty line in the role's style, shown
-        when an element of that role is on screen.
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-        """
-        self._layers = [StepLayer(ax, f"step-{k + 1}") for k in range(self._max_steps)]
-        # the caption is the axes' title, set flush left (a title, not a label of the drawing)
-        self.caption_text = ax.set_title("", fontsize=9)
-        self.caption_text.set_horizontalalignment("left")
-        self.caption_text.set_x(0.0)
-        self.role_keys = {}
-        for role, text in ROLE_KEY.items():
-            st = STYLES.get(role, STYLES["construct"])
-            kw = dict(color=st["color"], linestyle="none", marker=st["marker"],
-                      markersize=st.get("markersize", 5.0)) if "marker" in st else \
-                dict(color=st["color"], linestyle=st.get("linestyle", "-"),
-                     linewidth=st.get("linewidth", 1.2))
-            self.role_keys[role] = ax.add_line(Line2D([], [], label=text, visible=False, **kw))
-        sum_kw = dict(color=COLORS["text"], linestyle="none", marker=sum_style("point")["marker"],
-                      markersize=sum_style("point")["markersize"])
-        self.role_keys["sum"] = ax.add_line(Line2D([], [], label="a sum (drawn heavier)",
-                                                   visible=False, **sum_kw))
-
     def compute(self, values, changed):
         """The construction for the parameter values (may raise a named PlanargeoError).
 
@@ -562,181 +409,6 @@ class ConstructionExplorer(Explorer):
         """
         kind = values["construction"]
         return {"kind": kind, "c": construct(kind, **{k: values[k] for k in parameters(kind)})}
-
-    def _artist(self, k: int, e):
-        key = f"{k}:{e.name}"
-        art = self.element_artists.get(key)
-        if art is not None:
-            return art
-        layer = self._layers[k]
-        if e.kind == "point":
-            if e.role in ("twist", "accel"):
-                kw = dict(role=e.role, **(sum_style("point") if e.emphasis else {}))
-            else:
-                kw = dict(role="twist", glyph=False, color=COLORS.get(e.role, COLORS["text"]))
-            art = layer.add(PointArtist(e.value, text=e.label or None, **kw))
-        elif e.kind == "line":
-            scale = None if e.role == "construct" else 0.6
-            art = layer.add(LineArtist(e.value, role=e.role, scale=scale, text=e.label or None,
-                                       **(sum_style("line") if e.emphasis else {})))
-        elif e.kind == "conic":
-            art = layer.add(ConicArtist(e.value, role=e.role, text=e.label or None))
-        else:
-            st = STYLES.get(e.role, STYLES["construct"])
-            line = layer.add(Line2D([0, 1], [0, 1], color=st["color"],
-                                    linewidth=1.2 if e.role == "construct" else 1.6,
-                                    linestyle=st["linestyle"] if e.role == "construct" else "-"))
-            text = layer.add(Text(0, 0, e.label, fontsize=9, color=st["color"], ha="center",
-                                  va="center")) if e.label else None
-            art = (line, text)
-        self.element_artists[key] = art
-        return art
-
-    def _update_artist(self, art, e, alpha: float, centre):
-        if e.kind == "segment":
-            line, text = art
-            (x0, y0), (x1, y1) = e.value
-            line.set_data([x0, x1], [y0, y1])
-            line.set_alpha(alpha)
-            line.set_visible(True)
-            if text is not None:
-                d = np.array([x1 - x0, y1 - y0])
-                n = np.array([-d[1], d[0]]) / max(np.hypot(*d), 1e-300) * 0.22
-                text.set_position(tuple((np.array([x0, y0]) + np.array([x1, y1])) / 2 + n))
-                text.set_alpha(alpha)
-                text.set_visible(True)
-            return
-        if e.kind == "point":
-            art.set_point(e.value)
-            xy = (np.array([-e.value[1] / e.value[2], e.value[0] / e.value[2]])
-                  if e.value[2] != 0 else None)
-            (x0, x1), (y0, y1) = self.ax.get_xlim(), self.ax.get_ylim()
-            if xy is not None and x0 < xy[0] < x1 and y0 < xy[1] < y1:
-                n = centre[1]
-                u = tuple(-n) if e.emphasis else tuple(n)
-                if np.hypot(*(xy - centre[0])) > 1e-9 and not e.emphasis:
-                    away = (xy - centre[0]) / np.hypot(*(xy - centre[0]))
-                    u = tuple(away) if abs(away @ n) < 0.3 else u
-                # the rotation glyph's radius (PointArtist: 6 pt per unit rate, in [4, 16] pt)
-                glyph = (min(max(6.0 * abs(e.value[2]), 4.0), 16.0)
-                         if e.role in ("twist", "accel") else 0.0)
-                u = self._inward(xy, u)
-                taken = [d for q, d in self._placed if np.hypot(*(q - xy)) < 0.15]
-                if taken:          # poles on one spot (coincident): spread their labels round it
-                    spare = [d for d in ((-0.7, 0.7), (0.7, 0.7), (0.7, -0.7), (-0.7, -0.7))
-                             if d not in taken]
-                    u = spare[0] if spare else u
-                self._placed.append((xy, u))
-                art.set_text_beside(u, 7.0 + glyph)
-                art.set_text(e.label or None)
-            else:                  # ideal or out of view: the artist's own arrow and label at the edge
-                art.set_text(e.label or None)
-                art.set_text_offset(None)
-        elif e.kind == "line":
-            art.set_line(e.value)
-            if e.label and np.any(e.value[:2]):
-                # labelled lines' arrows (and labels) spread along them, so that lines that
-                # coincide or cross near the centre keep their labels apart
-                k = len(self._lines_placed)
-                f = e.value[:2] / np.hypot(*e.value[:2])
-                foot = np.array([e.value[2] * f[1], -e.value[2] * f[0]]) / np.hypot(*e.value[:2])
-                foot = foot + ((self._view_centre - foot) @ f) * f
-                art.set_anchor(foot + (1.1 * k - 0.8) * f)
-                self._lines_placed.append(e.name)
-        else:
-            art.set_conic(e.value)
-        art.set_alpha(alpha)
-        # the artist hands its alpha to its parts only when it first meets its axes
-        # (planargeo.draw.artists._Base._prepare_children): a later fade is given to them here
-        for part in art.get_children():
-            part.set_alpha(alpha)
-        art.set_visible(True)
-
-    @staticmethod
-    def _label_frame(c):
-        """``(centroid, n)``: the finite poles' centroid and the upward normal of their main axis.
-
-        Labels of a construction's points go on the ``n`` side of the line the
-        poles lie along (a lever line), the sum's label on the other side.
-        """
-        P = np.array([[-e.value[1] / e.value[2], e.value[0] / e.value[2]] for e in c.elements()
-                      if e.kind == "point" and e.value[2] != 0] or [[0.0, 0.0]])
-        m = P.mean(axis=0)
-        if len(P) > 1 and np.ptp(P, axis=0).max() > 0:
-            _, _, vt = np.linalg.svd(P - m)
-            d = vt[0]
-        else:
-            d = np.array([1.0, 0.0])
-        n = np.array([-d[1], d[0]])
-        if n[1] < 0 or (n[1] == 0 and n[0] < 0):
-            n = -n
-        return m, n
-
-    def _inward(self, xy, u):
-        """``u`` turned toward the centre of the view for a point near its side."""
-        x0, x1 = self.ax.get_xlim()
-        off = (xy[0] - (x0 + x1) / 2) / ((x1 - x0) / 2)
-        if abs(off) > 0.45 and u[0] * off >= -0.35:
-            return (-0.75 if off > 0 else 0.75, 0.66 if u[1] >= 0 else -0.66)
-        return u
-
-    def render(self, state):
-        """Show steps ``1 … step`` (the last one at full strength) and the caption; the readout.
-
-        Parameters
-        ----------
-        state : dict
-
-        Returns
-        -------
-        dict
-            The readout: step, its equation, the construction's numbers and the
-            special case in a few words (the step's full caption is above the figure).
-        """
-        c = state["c"]
-        kind = state["kind"]
-        for other, arts in self._artists.items():      # another construction's elements: hidden
-            if other != kind:
-                for art in arts.values():
-                    for a in (art if isinstance(art, tuple) else (art,)):
-                        if a is not None:
-                            a.set_visible(False)
-        self._shown_kind = kind
-        n = len(c.steps)
-        self._follow_kind(kind, n)
-        k = min(int(self.values["step"]), n)
-        shown = n if self._all_steps else k
-        centre = self._label_frame(c)
-        self._placed: list = []
-        self._lines_placed: list = []
-        (x0, x1), (y0, y1) = self.ax.get_xlim(), self.ax.get_ylim()
-        self._view_centre = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
-        used = set()
-        roles = set()
-        for i, layer in enumerate(self._layers):
-            if i >= n:
-                layer.set_visible(False)
-                continue
-            step = c.steps[i]
-            layer.set_gid(f"step-{i + 1}-{step.id}")
-            earlier = "shown" if self._all_steps else self.values["earlier"]
-            layer.set_visible(i < shown and (earlier != "hidden" or i == shown - 1))
-            alpha = 1.0 if (earlier == "shown" or i == shown - 1) else FADED
-            for e in step.elements:
-                art = self._artist(i, e)
-                used.add(f"{i}:{e.name}")
-                self._update_artist(art, e, alpha, centre)
-                if layer.get_visible():
-                    roles.add("sum" if e.emphasis else e.role)
-        for key, art in self.element_artists.items():
-            if key not in used:
-                for a in (art if isinstance(art, tuple) else (art,)):
-                    if a is not None:
-                        a.set_visible(False)
-        for role, line in self.role_keys.items():     # the key lists the roles on screen
-            line.set_visible(role in roles)
-        self.caption_text.set_text("\n".join(textwrap.wrap(f"Step {k}/{n}: {c.steps[k - 1].caption}", 62)))
-        return self.readout_of(state)
 
     def readout_of(self, state):
         """The readout of ``state``: the step, its equation, the construction's numbers, the special case.
@@ -927,13 +599,14 @@ def layered_svg(pic: dict, step_ids: list[str]) -> bytes:
     import xml.etree.ElementTree as ET
 
     from planargeo.draw.render import figure
+    from planargeo.draw.style import rc_context
 
     ns = "http://www.w3.org/2000/svg"
     ET.register_namespace("", ns)
     ET.register_namespace("xlink", "http://www.w3.org/1999/xlink")
     step_of = {el["id"]: el["step"] for el in pic["elements"] if "step" in el}
     buf = io.BytesIO()
-    with matplotlib.rc_context({"svg.hashsalt": "planargeo"}):
+    with rc_context():                       # fixed fonts, and SVG ids from a fixed salt
         figure(pic).savefig(buf, format="svg", metadata={"Date": None})
     root = ET.fromstring(buf.getvalue())
     groups = {k: ET.Element(f"{{{ns}}}g", {"id": gid}) for k, gid in enumerate(step_ids, start=1)}

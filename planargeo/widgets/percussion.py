@@ -10,7 +10,7 @@ at ``r = ρ²/d`` from the centre of mass (5.68).
 Two ways to play:
 
 ``drive = "acceleration pole"``
-    move the pole (sliders, or drag it under ``%matplotlib widget``); the axis
+    move the pole (sliders, or drag it in the page); the axis
     of percussion follows; or drag the axis itself, by its point on the line
     from the pole through ``c`` (a parallel move) or by a second point on it
     (a turn), and the pole follows (``a = I⁻¹ f``);
@@ -31,14 +31,10 @@ import math
 
 import ipywidgets as W
 import numpy as np
-from matplotlib.lines import Line2D
-from matplotlib.patches import Polygon as MplPolygon
 from shapely.geometry import Point as SPoint
 from shapely.geometry import Polygon, box
 
-from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
 from planargeo.draw.pictures.percussion import percussion_numbers, percussion_picture
-from planargeo.draw.style import COLORS
 from planargeo.errors import DegenerateGeometryError, InputError, InvalidPolygonError
 from planargeo.screws.inertia import Inertia, percussion_axis, percussion_pole
 from planargeo.geometry.projective import from_xy, is_ideal
@@ -145,41 +141,6 @@ class PercussionExplorer(Explorer):
             "mass (kg)": Step(0.1, 5.0, 0.05, 1.0, "mass (kg)").make("mass"),
             "angular accel. α": Step(-50, 50, 0.5, 10.0, "angular accel. α (rad/s²)").make("alpha"),
         }
-
-    def make_artists(self, ax):
-        """Create the artists once (updated in place by :meth:`render`).
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-            The explorer's axes.
-        """
-        self.body = MplPolygon(np.zeros((3, 2)), closed=True, fc=COLORS["body"], ec="black",
-                               alpha=0.6, zorder=2)
-        ax.add_patch(self.body)
-        self.grip = Line2D([0.0], [0.0], marker="s", ms=7, color=COLORS["ground"], ls="none", zorder=3)
-        ax.add_line(self.grip)
-        z = np.array([0.0, 0.0, 1.0])
-        self.gyration = ax.add_artist(ConicArtist(np.eye(3), role="inertia", text="ρ"))
-        self.pole_art = ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.3, text="a",
-                                                  markersize=7))
-        self.axis_art = ax.add_artist(LineArtist([0.0, 1.0, 0.0], role="wrench", scale=None,
-                                                 text="axis of percussion f = I a"))
-        self.join_art = ax.add_artist(LineArtist([1.0, 0.0, 0.0], role="construct", scale=None))
-        self.spot = Line2D([], [], marker="*", ms=12, color=COLORS["wrench"], mec="black",
-                           ls="none", zorder=6, label="centre of percussion")
-        ax.add_line(self.spot)
-        self.spot_label = ax.add_artist(PointArtist(z, role="accel", glyph=False, markersize=0.1,
-                                                    color=COLORS["wrench"], text="centre of percussion"))
-        self.com_art = ax.add_artist(PointArtist(z, role="twist", glyph=False, markersize=5,
-                                                 color="black", text="c"))
-        self.com_art.set_label("centre of mass c")
-        self.grip_label = ax.add_artist(PointArtist(z, role="twist", glyph=False, markersize=0.1,
-                                                    color=COLORS["ground"], text="grip"))
-        self.grip_label.set_text_beside((-0.7071, -0.7071), 7.0)
-        self.gyration.set_label("gyration circle ρ (I)")
-        self.pole_art.set_label("acceleration pole a")
-        self.axis_art.set_label("axis of percussion f = I a")
 
     def disabled(self, values):
         """Controls that change nothing in the drive or shape chosen, with the reason.
@@ -321,7 +282,7 @@ class PercussionExplorer(Explorer):
         Returns
         -------
         dict
-            The state drawn by :meth:`render`.
+            The state drawn by :meth:`scene_picture`.
 
         Raises
         ------
@@ -343,39 +304,6 @@ class PercussionExplorer(Explorer):
             a = from_xy([v["pole x"], v["pole y"]])
             line = percussion_axis(Imat, a)
         return {"shape": shape, "I": I, "c": c, "a": a, "f": line}
-
-    def render(self, st):
-        """Update the artists for the state ``st``; return the readout.
-
-        Parameters
-        ----------
-        st : dict
-            What :meth:`compute` returned.
-
-        Returns
-        -------
-        dict
-            Readout entries.
-        """
-        I, c, a, f = st["I"], st["c"], st["a"], st["f"]
-        nums = percussion_numbers(st)
-        self.body.set_xy(np.asarray(st["shape"].exterior.coords))
-        self.gyration.set_conic(I.matrix)
-        self.pole_art.set_point(a)
-        self.axis_art.set_line(f)
-        self.com_art.set_point(from_xy(c))
-        if nums["spot"] is not None:
-            self.join_art.set_line(np.cross(a / a[2], from_xy(c)))
-        self.join_art.set_visible(nums["spot"] is not None)
-        spot = nums["grip_spot"] if self.values["drive"] == "impact" else nums["spot"]
-        self.spot.set_data(*(([spot[0]], [spot[1]]) if spot is not None else ([], [])))
-        self.spot_label.set_visible(spot is not None)
-        if spot is not None:
-            self.spot_label.set_point(from_xy(spot))
-        x0, x1, y0, y1 = self._view(st)
-        self.ax.set_xlim(x0, x1)
-        self.ax.set_ylim(y0, y1)
-        return self.readout_of(st)
 
     def readout_of(self, st):
         """The readout of the state ``st``: the pole, ``d``, ``r = ρ²/d``, the centres of percussion.

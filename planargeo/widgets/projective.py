@@ -15,12 +15,13 @@ distance-like number ``P·M`` equals ``pole(M)·polar(P)``.  Ideal elements are
 ordinary: put ``P`` at infinity (a direction) and its polar is a diameter, a
 line through the centre; the line at infinity has the centre as its pole.
 
-Under ``%matplotlib widget`` drag with the mouse (or call :meth:`Explorer.drag`):
+Drag in the page (or call :meth:`Explorer.drag`):
 the point ``P``, the line ``M`` by a point on it (``M (point)``, first its point
 nearest the origin: a parallel move) or by a second point on it (``M (direction)``,
 a turn about the first), and the ``pole of M`` (``M`` becomes the polar of the dragged point).
 The *construction* and *line and its pole* checkboxes only redraw (nothing is
-recomputed).
+recomputed).  The picture is built by
+:func:`planargeo.draw.pictures.projective.projective_picture`.
 
 Examples
 --------
@@ -38,7 +39,6 @@ import numpy as np
 from planargeo.geometry.conics import (centre, classify, conic_circle, conic_ellipse, conic_hyperbola,
                       conic_parabola, polar, polar_construction_interior, pole,
                       tangents_from_point)
-from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist
 from planargeo.draw.pictures.projective import projective_picture
 from planargeo.errors import DegenerateGeometryError, InputError
 from planargeo.geometry.projective import from_xy, is_at_infinity, is_ideal
@@ -189,31 +189,6 @@ class ProjectiveExplorer(Explorer):
             "line and its pole": W.Checkbox(value=True, description="line and its pole",
                                             indent=False),
         }
-
-    def make_artists(self, ax):
-        """Create the artists once (updated in place by :meth:`render`).
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-            The explorer's axes.
-        """
-        z = np.array([0.0, 0.0, 1.0])
-        zl = np.array([1.0, 0.0, 0.0])
-        self.conic_art = ax.add_artist(ConicArtist(np.eye(3), role="conic", text="C"))
-        self.conic_art.set_label("conic C")
-        self.P_art = ax.add_artist(PointArtist(z, role="twist", glyph=False, text="P", markersize=7))
-        self.polar_art = ax.add_artist(LineArtist(zl, role="wrench", scale=None, text="polar of P"))
-        self.M_art = ax.add_artist(LineArtist(zl, role="momentum", scale=None, text="M"))
-        self.Mpole_art = ax.add_artist(PointArtist(z, role="accel", glyph=False, text="pole of M",
-                                                   markersize=6))
-        self.tan_art = [ax.add_artist(LineArtist(zl, role="construct", scale=None)) for _ in range(4)]
-        self.chord_art = [ax.add_artist(LineArtist(zl, role="construct", scale=None, linewidth=0.6))
-                          for _ in range(2)]
-        self.cpts_art = [ax.add_artist(PointArtist(z, role="twist", glyph=False, markersize=4,
-                                                   color="#7F7F7F")) for _ in range(6)]
-        for k, a in enumerate(self.tan_art):
-            a.set_label("_tangent" if k else "tangents (5.2.2)")
 
     def explain(self):
         """What every symbol on screen means, with its thesis equation.
@@ -381,7 +356,7 @@ class ProjectiveExplorer(Explorer):
         Returns
         -------
         dict
-            The state drawn by :meth:`render`.
+            The state drawn by :meth:`scene_picture`.
 
         Raises
         ------
@@ -423,53 +398,6 @@ class ProjectiveExplorer(Explorer):
         elif ctype.reality == "imaginary":
             st["where"] = "no real points: algebraic map only"
         return st
-
-    def render(self, st):
-        """Update the artists for the state ``st``; return the readout.
-
-        Parameters
-        ----------
-        st : dict
-            What :meth:`compute` returned.
-
-        Returns
-        -------
-        dict
-            Readout entries.
-        """
-        v = self.values
-        self.conic_art.set_conic(st["C"])
-        self.P_art.set_point(st["P"])
-        self.polar_art.set_line(st["polar"])
-        show_line = bool(v["line and its pole"])
-        self.M_art.set_visible(show_line)
-        self.Mpole_art.set_visible(show_line)
-        self.M_art.set_line(st["M"])
-        self.Mpole_art.set_point(st["poleM"])
-        for a in self.tan_art + self.chord_art + self.cpts_art:
-            a.set_visible(False)
-        if v["construction"]:
-            if st["tangents"] is not None:
-                for k in range(2):
-                    self.tan_art[k].set_line(st["tangents"][k])
-                    self.tan_art[k].set_visible(True)
-                    self.cpts_art[k].set_point(st["contacts"][k])
-                    self.cpts_art[k].set_visible(True)
-            elif st["interior"] is not None:
-                K = st["interior"]
-                ok = bool(np.all(np.isfinite(K.tangents)) and np.all(np.isfinite(K.poles)))
-                if ok:
-                    for i in range(2):
-                        self.chord_art[i].set_line(K.lines[i])
-                        self.chord_art[i].set_visible(True)
-                        for j in range(2):
-                            self.tan_art[2 * i + j].set_line(K.tangents[i, j])
-                            self.tan_art[2 * i + j].set_visible(True)
-                            self.cpts_art[2 * i + j].set_point(K.chord_points[i, j])
-                            self.cpts_art[2 * i + j].set_visible(True)
-                        self.cpts_art[4 + i].set_point(K.poles[i])
-                        self.cpts_art[4 + i].set_visible(True)
-        return self.readout_of(st)
 
     def readout_of(self, st):
         """The readout of the state ``st``: P, the polar's distance, the pole of M, the invariant P·M.

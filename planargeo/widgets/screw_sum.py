@@ -12,12 +12,13 @@ lever rule (4.4.2), a force plus a couple is a parallel force shifted by
 line at infinity).
 
 All the arithmetic is :func:`planargeo.screws.add_twists` /
-:func:`planargeo.screws.add_wrenches`; this module only draws it.  The readout
+:func:`planargeo.screws.add_wrenches`; :func:`planargeo.draw.pictures.screw_sum.screw_sum_picture`
+draws it.  The readout
 names the special case reached (:mod:`planargeo.screws.special`, thesis 10.2.4):
 dragging or sliding into it passes through the ideal element (a pole at
 infinity, parallel lines meeting at infinity, a couple) without an error.
 
-Handles (under ``%matplotlib widget``, or :meth:`Explorer.drag` in tests): the
+Handles (dragged in the page, or :meth:`Explorer.drag` in tests): the
 poles ``v1``, ``v2`` of rotations; the directions ``v1 direction``,
 ``v2 direction`` of translations; the force lines ``f1``, ``f2`` by a point
 and ``f1 direction``, ``f2 direction`` by the tip of their arrow.
@@ -38,11 +39,9 @@ import math
 import ipywidgets as W
 import numpy as np
 
-from planargeo.draw.artists import LineArtist, PointArtist
 from planargeo.draw.pictures.screw_sum import screw_sum_picture
-from planargeo.draw.style import sum_style
 from planargeo.errors import InputError
-from planargeo.geometry.projective import is_at_infinity, is_ideal
+from planargeo.geometry.projective import is_at_infinity
 from planargeo.screws.special import twists_case, wrenches_case
 from planargeo.screws.twists import Twist, Wrench, add_twists, add_wrenches
 from planargeo.widgets._points import point_value
@@ -266,41 +265,6 @@ class ScrewSumExplorer(Explorer):
             "x, y": "the point of a screw: a rotation's pole or a point of a force's line",
         }
 
-    def setup_axes(self, ax):
-        """The base's axes, with ticks every 2 m (drawing ticks was half of a redraw).
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-        """
-        from matplotlib.ticker import MultipleLocator
-
-        super().setup_axes(ax)
-        for axis in (ax.xaxis, ax.yaxis):
-            axis.set_major_locator(MultipleLocator(2.0))
-
-    def make_artists(self, ax):
-        """The poles, the lever line, the force lines and their meet, made once.
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-        """
-        z = np.array([0.0, 0.0, 1.0])
-        zl = np.array([1.0, 0.0, 0.0])
-        self.q1 = ax.add_artist(PointArtist(z, role="twist", text="$v_1$"))
-        self.q2 = ax.add_artist(PointArtist(z, role="twist", text="$v_2$"))
-        self.p3 = ax.add_artist(PointArtist(z, role="twist", text="$v_3 = v_1 + v_2$",
-                                            **sum_style("point")))
-        self.join = ax.add_artist(LineArtist(zl, role="construct", scale=None))
-        self.l1 = ax.add_artist(LineArtist(zl, role="wrench", scale=0.5, text="$f_1$"))
-        self.l2 = ax.add_artist(LineArtist(zl, role="wrench", scale=0.5, text="$f_2$",
-                                           corner="upper left"))
-        self.l3 = ax.add_artist(LineArtist(zl, role="wrench", scale=0.5, text="$f_3 = f_1 + f_2$",
-                                           corner="lower right", **sum_style("line")))
-        self.meet = ax.add_artist(PointArtist(z, role="twist", glyph=False, color="#7F7F7F",
-                                              text="$P$"))
-
     def _screw(self, v, k):
         kind = v[f"kind{k}"]
         x, y, m = v[f"x{k}"], v[f"y{k}"], v[f"size{k}"]
@@ -343,61 +307,6 @@ class ScrewSumExplorer(Explorer):
         if mode == "twists":
             return {"mode": mode, "c": add_twists(s1, s2)}
         return {"mode": mode, "c": add_wrenches(s1, s2)}
-
-    def render(self, st):
-        """Update the artists and return the readout (numbers with units, the special case).
-
-        Parameters
-        ----------
-        st : dict
-            The computed state.
-
-        Returns
-        -------
-        dict
-        """
-        c = st["c"]
-        tw = st["mode"] == "twists"
-        self._mode = st["mode"]
-        for a in (self.q1, self.q2, self.p3, self.join):
-            a.set_visible(tw)
-        for a in (self.l1, self.l2, self.l3, self.meet):
-            a.set_visible(not tw)
-        v = self.values
-        for k in (1, 2):   # the size slider names what it sets
-            w = self.controls[f"size{k}"]
-            label = _SIZE_LABEL.get(v[f"kind{k}"], "size{k}").format(k=_SUBSCRIPT[k])
-            if w.description != label:
-                w.description = label
-        if tw:
-            self.q1.set_point(c.v1.array)
-            self.q2.set_point(c.v2.array)
-            if c.P is None:
-                self.p3.set_visible(False)
-            else:
-                self.p3.set_point(c.sum.array)
-            if c.line is None:
-                self.join.set_visible(False)
-            else:
-                self.join.set_line(c.line)
-            self._place_twist_labels(c)
-        else:
-            self.l1.set_line(c.f1.array)
-            self.l2.set_line(c.f2.array)
-            self.l1.set_anchor((v["x1"], v["y1"]))
-            self.l2.set_anchor((v["x2"], v["y2"]))
-            meet = _meet_label(c)
-            self.l3.set_anchor(meet if isinstance(meet, tuple) else
-                               (0.5 * (v["x1"] + v["x2"]), 0.5 * (v["y1"] + v["y2"])))
-            if c.L3 is None:
-                self.l3.set_visible(False)
-            else:
-                self.l3.set_line(c.sum.array)
-            if c.P is None or bool(is_ideal(c.P)):
-                self.meet.set_visible(False)
-            else:
-                self.meet.set_point(c.P)
-        return self.readout_of(st)
 
     def readout_of(self, st):
         """The readout of the state ``st`` (numbers with units, the special case); the size sliders' names follow the kinds.
@@ -450,42 +359,6 @@ class ScrewSumExplorer(Explorer):
         v = self.shown_values or self.values
         return screw_sum_picture(st["mode"], st["c"], anchors=((v["x1"], v["y1"]), (v["x2"], v["y2"])),
                                  view=view or self.limits, size=self.figure_px)
-
-    def _place_twist_labels(self, c):
-        """Labels of v₁, v₂ on one side of the lever line Q₁Q₂, the sum's on the other side.
-
-        Each label sits clear of its rotation glyph (which grows with ``|ω|``);
-        coincident poles spread the three labels around the common pole.
-        """
-        def gap(w):
-            return 6.0 + min(max(6.0 * abs(w), 4.0), 16.0)
-
-        q1, q2 = c.Q1, c.Q2
-        if c.line is None or q1[2] == 0 or q2[2] == 0:
-            u1, u2, u3 = (-0.7, 0.7), (0.7, 0.7), (0.0, -1.0)
-        else:
-            d = np.array([-q2[1] + q1[1], q2[0] - q1[0]])          # Q2 - Q1 in (x, y)
-            d = d / np.hypot(*d)
-            n = np.array([-d[1], d[0]]) if d[0] >= 0 else np.array([d[1], -d[0]])  # upward side
-            u1 = u2 = tuple(n)
-            u3 = tuple(-n)
-        for art, p, u, w in ((self.q1, q1, u1, c.omega1), (self.q2, q2, u2, c.omega2),
-                             (self.p3, c.P, u3, c.omega3)):
-            if p is None or p[2] == 0:      # an ideal pole: the artist's own label at the edge
-                art.set_text_offset(None)
-            else:
-                art.set_text_beside(self._inward(p, u), gap(w) + (2.0 if art is self.p3 else 0.0))
-
-    def _inward(self, p, u):
-        """``u`` turned toward the view's centre for a point near a side (its label stays in view)."""
-        x0, x1 = self.ax.get_xlim()
-        x = float(-p[1] / p[2])
-        half = (x1 - x0) / 2
-        off = (x - (x0 + x1) / 2) / half
-        if abs(off) > 0.45 and u[0] * off >= -0.35:
-            ux = -0.75 if off > 0 else 0.75
-            return (ux, 0.66 * (1.0 if u[1] >= 0 else -1.0))
-        return u
 
     # ------------------------------------------------------------------ handles
     def handles(self) -> list[Handle]:
