@@ -3,6 +3,7 @@ failed before its fix, plus the set-up's stamp of the compiled kernels."""
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import subprocess
 import time
@@ -250,3 +251,22 @@ def test_a_loop_run_that_reaches_its_budget_keeps_what_it_computed(crank):
         simulate_loops(m, q, qd, 0.05, method="RK4", dt=0.01, progress=False, max_evals=10)   # 20 needed
     with pytest.raises(InputError, match="max_evals"):
         simulate_loops(m, q, qd, 0.05, progress=False, max_evals=0)
+
+
+@pytest.mark.parametrize("method", ["DOP853", "RK45", "RK23", "Radau", "BDF", "LSODA"])
+def test_a_start_too_fast_to_integrate_is_refused_in_words(method):
+    """q̇ = 1e150 (q̈ ≈ 1e300): scipy's error norms square the scaled rates, so every method failed in numpy's
+    words (overflow in dot, 'array must not contain infs', divide by zero) or stalled at t = 0 for a million
+    steps (LSODA: 205 s).  Now the start is refused naming the limit and the arguments."""
+    from planargeo.mechanics.model import chain_model
+    from planargeo.simulate.integrate import RATE_LIMIT, simulate
+
+    with _deadline(60), pytest.raises(NumericOverflowError, match=re.escape(f"below {RATE_LIMIT:g} (qd0")):
+        _strict(simulate, chain_model(2), [0.1, 0.2], [1e150, -3e150], 0.01, method=method, progress=False)
+
+
+def test_the_slider_crank_started_too_fast_is_refused_in_words(crank):
+    m, q, _ = crank
+    with _deadline(60), pytest.raises(NumericOverflowError, match="qd0"):
+        _strict(simulate_loops, m, q, [1e150, -10.0, 1e-300], 0.2763, method="RK23", rtol=1e-6, atol=1e-8,
+                dt=0.01, max_step=0.1, stabilization="baumgarte", progress=False)

@@ -60,6 +60,10 @@ extrapolate past it (at its 10th step: past ten times it; at its 100th: past it)
 raises :class:`~planargeo.errors.SizeLimitError` naming ``max_evals``, and one that
 reaches it stops with ``status == "limit"``.  Ctrl-C (``KeyboardInterrupt``) also
 stops cleanly: ``status == "interrupted"``, the trajectory up to the last accepted step.
+A start whose speeds or accelerations reach :data:`RATE_LIMIT` (1e150: the adaptive
+methods square them in their error norms) raises
+:class:`~planargeo.errors.NumericOverflowError`; a state that leaves double
+precision's range on the way stops the run with ``status == "failed"``.
 
 Examples
 --------
@@ -78,12 +82,13 @@ from typing import Any, Callable
 import numpy as np
 
 from planargeo._validate import as_array, as_scalar
-from planargeo.errors import InputError, ShapeError, SingularConfigurationError, SizeLimitError
+from planargeo.errors import (InputError, NumericOverflowError, PlanargeoError, ShapeError,
+                              SingularConfigurationError, SizeLimitError)
 from planargeo.mechanics.kinematics import check_state, kinematics
 from planargeo.mechanics.model import Model
 
 __all__ = ["simulate", "SimulationResult", "energy", "progress_enabled", "near_singular_events", "METHODS",
-           "MULTISTEP", "MAX_STEPS"]
+           "MULTISTEP", "MAX_STEPS", "RATE_LIMIT"]
 
 METHODS = ("RK23", "RK45", "DOP853", "Radau", "BDF", "LSODA", "RK4")
 
@@ -366,6 +371,8 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     SizeLimitError
         A run that needs more than ``max_steps`` steps or ``max_evals`` evaluations
         (module docstring).
+    NumericOverflowError
+        A start whose speeds or accelerations reach :data:`RATE_LIMIT`.
 
     Examples
     --------
@@ -470,6 +477,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     bar = _progress(progress, t_end)
     t = 0.0
     try:
+        _check_rates(rhs, y, nq)                # one evaluation (counted in nfev, seen by the hooks)
         if method == "RK4":
             nsteps = max(1, math.ceil(t_end / dt - 1e-9))      # at most max_steps (_options)
             h = t_end / nsteps
@@ -491,7 +499,10 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
             cls = getattr(integrate, method)   # scipy's OdeSolver class of that name ("RK4" is stepped above)
 
             def make(t0, y0, first_step=None):
-                return cls(rhs, t0, y0, t_end, rtol=rtol, atol=atol, max_step=max_step, first_step=first_step)
+                # scipy's step-size norms square the scaled rates: rates near 1e154 overflow there (an
+                # infinite norm gives a zero step, which scipy reports as a failure: stopped below)
+                with np.errstate(over="ignore", invalid="ignore"):
+                    return cls(rhs, t0, y0, t_end, rtol=rtol, atol=atol, max_step=max_step, first_step=first_step)
 
             solver = make(0.0, y)
             grid = []
@@ -508,8 +519,16 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
                 if stop:
                     status, message = "limit", stop
                     break
-                msg = solver.step()
+                try:
+                    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+                        msg = solver.step()
+                except (ValueError, ArithmeticError, np.linalg.LinAlgError) as exc:
+                    if isinstance(exc, PlanargeoError):
+                        raise
+                    solver.status, msg = "failed", f"the step could not be computed ({exc})"
                 steps += 1
+                if solver.status != "failed" and not np.isfinite(solver.y).all():
+                    solver.status, msg = "failed", "the state left double precision's range (speeds too large)"
                 if solver.status == "failed":
                     status, message = "failed", f"{method} failed at t = {solver.t:.6g}: {msg}"
                     break
@@ -643,11 +662,35 @@ def _eval_check(nfev: int, k: int, t: float, t_end: float, max_evals: int | None
                 "larger max_evals for a deliberate long run")
     factor = 10 if k == 10 else 1 if k == _PROBE else 0
     if factor and t > 0 and t_end / (factor * max_evals) > t / nfev:       # overflow-free
-        raise SizeLimitError(f"{method} would need about {t_end / t * nfev:.3g} evaluations of the dynamics to "
+        raise SizeLimitError(f"{method} would need {_about(t_end, t, nfev)} evaluations of the dynamics to "
                              f"reach t_end = {t_end:g} (extrapolated from the first {k} steps, {nfev} evaluations), "
                              f"past max_evals = {max_evals}; pass a larger max_evals for a deliberate long run, or a "
                              "looser rtol or a higher-order method (DOP853)")
     return ""
+
+
+#: Largest |q̇| and |q̈| an integration starts from: the adaptive methods square the scaled rates in their
+#: error norms (1e150² is near the float range), so beyond it they stall or fail in numpy's words.
+RATE_LIMIT = 1e150
+
+
+def _check_rates(rhs, y, nq: int) -> None:
+    """Refuse a starting state whose speeds or accelerations reach :data:`RATE_LIMIT` (in the package's words)."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        f0 = np.asarray(rhs(0.0, y), dtype=float)
+    qd, qdd = np.abs(f0[:nq]), np.abs(f0[nq:2 * nq])
+    if not (np.all(qd < RATE_LIMIT) and np.all(qdd < RATE_LIMIT)):
+        raise NumericOverflowError(
+            f"the starting state moves too fast to integrate in double precision: largest |q̇| = "
+            f"{float(np.max(qd, initial=0.0)):.3g}, |q̈| = {float(np.max(qdd, initial=0.0)):.3g}; both must stay "
+            f"below {RATE_LIMIT:g} (qd0, tau or f_ext too large)")
+
+
+def _about(t_end: float, t: float, n: int) -> str:
+    """``"about N"`` for the count ``n t_end / t`` extrapolated from ``n`` at ``t`` (overflow-free words)."""
+    with np.errstate(over="ignore"):
+        x = n * (t_end / t)
+    return f"about {x:.3g}" if math.isfinite(x) else "more than 1e308"
 
 
 def _step_budget(k: int, t: float, t_end: float, max_steps: int, method: str) -> str:
@@ -656,8 +699,11 @@ def _step_budget(k: int, t: float, t_end: float, max_steps: int, method: str) ->
     if k >= max_steps:
         return (f"stopped at t = {t:.6g}: max_steps = {max_steps} steps taken; pass a larger max_steps "
                 "for a deliberate long run")
+    if k == _PROBE and t <= 0:
+        raise SizeLimitError(f"{method} made no progress in its first {k} steps (t = 0): it would never reach "
+                             f"t_end = {t_end:g}")
     if k == _PROBE and t > 0 and t_end / (10 * max_steps) > t / k:      # t_end / t · k > 10 max_steps, overflow-free
-        raise SizeLimitError(f"{method} would need about {t_end / t * k:.3g} steps to reach t_end = {t_end:g} "
+        raise SizeLimitError(f"{method} would need {_about(t_end, t, k)} steps to reach t_end = {t_end:g} "
                              f"(extrapolated from the first {k}), past max_steps = {max_steps}; pass a larger "
                              "max_steps for a deliberate long run")
     return ""
