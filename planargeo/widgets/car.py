@@ -26,7 +26,7 @@ the tyre forces follow (6.133: they grow with ``ω²``).  The default drive is
 zero (the car goes round at constant speed).  Play ends at one of two stated
 events, each at its exact time: the car stops (a braking drive), or the
 acceleration of its centre of gravity reaches what the tyres hold, ``μ·g``
-(the friction control ``μ``): there the car slides out, and the figure and
+(the friction control ``μ``): there the car slides out, and the picture and
 the readout say so.  The readout shows the kinetic energy
 (:func:`planargeo.simulate.energy`), the drive's power and ``dK/dt``: equal,
 since the tyre forces do no work.
@@ -37,15 +37,10 @@ import math
 import textwrap
 
 import numpy as np
-from matplotlib.lines import Line2D
-from matplotlib.patches import Polygon as MplPolygon
 
 from planargeo import scenes
-from planargeo.draw.artists import ConicArtist, LineArtist, PointArtist, clip_line, conic_geometry
-from planargeo.draw.mechanism import LabelPlacer, ScaleBar
 from planargeo.draw.pictures.car import (FORCE_SCALE, HALF_TRACK, NEAR, OVERHANG, SLIDES, TYRE, car_picture,
                                          moves, view_box)
-from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.errors import InputError, SceneError
 from planargeo.simulate.integrate import energy
 from planargeo.widgets.base import Explorer, Handle, Step
@@ -57,7 +52,6 @@ HEADING = "heading (deg)"
 FRICTION = "tyre friction μ"
 #: gravity (m/s²): the tyres hold a horizontal acceleration of at most μ·G_ROAD at the centre of gravity
 G_ROAD = 9.81
-_moves = moves
 
 
 def grip(res, mu: float):
@@ -103,8 +97,6 @@ class CarExplorer(Explorer):
     title = "Car cornering: tyre forces by projective dynamics"
     slug = "car"
     figsize = (6.0, 5.6)
-    limits = (-21, 5, -13, 13)
-    grid = False
     scale = 1.0
     units = {"speed V": "m/s", "heading θ": "°", "yaw rate ω": "rad/s", "yaw acceleration ω̇": "rad/s²",
              "rear tyre force μ₁": "N", "front tyre force μ₂": "N", "steering angle": "°",
@@ -135,61 +127,6 @@ class CarExplorer(Explorer):
             HEADING: Step(0.0, 360.0, 1.0, 0.0, HEADING).make("heading"),
         }
 
-    def setup_axes(self, ax):
-        """Equal-aspect axes without ticks (a scale bar instead).
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-            The explorer's axes.
-        """
-        from planargeo.draw.style import setup_axes
-
-        setup_axes(ax, self.limits, axis_off=True)
-
-    def make_artists(self, ax):
-        """Create every artist once: body, tyres, axles, poles, forces, inertia, labels.
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-            The explorer's axes.
-        """
-        self.body = MplPolygon(np.zeros((4, 2)), closed=True, fc=COLORS["body"], ec="black",
-                               alpha=0.5, zorder=2)
-        ax.add_patch(self.body)
-        self.wheels = [Line2D([], [], color="black", lw=4, solid_capstyle="butt", zorder=3)
-                       for _ in range(2)]
-        for w in self.wheels:
-            ax.add_line(w)
-        self.axles = Line2D([], [], color=COLORS["construct"], lw=0.8, ls="--", zorder=1)
-        ax.add_line(self.axles)
-        self.path = Line2D([], [], color=COLORS["construct"], lw=0.8, ls=":", zorder=1)
-        ax.add_line(self.path)
-        z = np.array([0.0, 0.0, 1.0])
-        self.icr = ax.add_artist(PointArtist(z, role="twist"))
-        self.accel = ax.add_artist(PointArtist(z, role="accel", glyph_scale=3.0))
-        self.cg = Line2D([], [], marker="o", ms=8, mfc="white", mec="black", mew=1.5, ls="none",
-                         zorder=6, label="centre of gravity G")
-        ax.add_line(self.cg)
-        self.inertia = ax.add_artist(ConicArtist(np.eye(3), role="inertia"))
-        self.rear = ax.add_artist(LineArtist([1.0, 0, 0], role="reaction", scale=FORCE_SCALE))
-        self.front = ax.add_artist(LineArtist([1.0, 0, 0], role="reaction", scale=FORCE_SCALE))
-        self.drive = ax.add_artist(LineArtist([1.0, 0, 0], role="wrench", scale=FORCE_SCALE))
-        self.bias = ax.add_artist(LineArtist([1.0, 0, 0], role="momentum", scale=FORCE_SCALE,
-                                             linewidth=1.0))
-        self.T_line = ax.add_artist(LineArtist([1.0, 0, 0], role="construct", scale=None))
-        for art, key in ((self.icr, "ICR: velocity pole v = sω"), (self.accel, "acceleration pole a"),
-                         (self.inertia, "inertia I"), (self.rear, "tyre force R₁μ₁ (rear)"),
-                         (self.front, "tyre force R₂μ₂ (front)"), (self.drive, "drive force f_A"),
-                         (self.bias, "bias force p"), (self.T_line, "active force line T")):
-            art.set_label(key)
-        self.banner = ax.text(0.02, 0.98, "", transform=ax.transAxes, ha="left", va="top", fontsize=LABEL_PT + 1.5,
-                              color="#7a3d00", fontweight="bold", zorder=20)
-        self.scale_bar = ScaleBar(ax, fontsize=LABEL_PT + 1.5)          # in the margin, under the axes
-        self.labels = LabelPlacer(ax, size=16, fontsize=LABEL_PT + 1.5)
-        self._shown_labels = []
-
     # -- physics -------------------------------------------------------------------
     def compute(self, v, changed):
         """The scene at the control values (the car at heading 0), its energy and the Play run.
@@ -206,7 +143,7 @@ class CarExplorer(Explorer):
         dict
             ``res`` (the scene), ``ke`` (kinetic energy), ``acc`` (the acceleration of
             the centre of gravity), ``limit`` (μ·g, what the tyres hold) and ``slides``
-            (the limit reached: the car slides out, said on the figure and in the readout).
+            (the limit reached: the car slides out, said on the picture and in the readout).
 
         Raises
         ------
@@ -274,7 +211,7 @@ class CarExplorer(Explorer):
         """``(R, t, res)`` of the state shown: the drawing's placement (:func:`_moves`) and the scene."""
         res = self.state["res"]
         th = math.radians(float(self.shown_values.get(HEADING, self.values[HEADING])))
-        R, t, _V, _W = _moves(th, res.params["d"])
+        R, t, _V, _W = moves(th, res.params["d"])
         return R, t, res
 
     def _to_scene(self, x, y):
@@ -352,7 +289,7 @@ class CarExplorer(Explorer):
         return {DRIVE: float((p - ex["front_contact"]) @ ex["front_rolling"]) / FORCE_SCALE}
 
     def figure_message(self, exc: Exception) -> str:
-        """The refusal drawn on the figure, wrapped to stay inside the axes.
+        """The refusal said on the picture, wrapped to stay inside it.
 
         Parameters
         ----------
@@ -364,73 +301,6 @@ class CarExplorer(Explorer):
         str
         """
         return textwrap.fill(super().figure_message(exc), 40)
-
-    # -- drawing -----------------------------------------------------------------------
-    def render(self, st):
-        """Update the drawing (turned by the heading about the ICR) and return the readout.
-
-        Parameters
-        ----------
-        st : dict
-            A state of :meth:`compute`.
-
-        Returns
-        -------
-        dict
-            The readout values.
-        """
-        res = st["res"]
-        q, x, p = res.quantities, res.extra, res.params
-        L, d = p["L"], p["d"]
-        th = math.radians(float(self.values[HEADING]))
-        R, tr, V, W = _moves(th, d)
-        rear, front, cg = (R @ x[k] + tr for k in ("rear_contact", "front_contact", "cg"))
-        icr = tr.copy()
-        roll = R @ x["front_rolling"]
-        heading = R @ [0.0, 1.0]
-        body = np.array([[d - HALF_TRACK, -OVERHANG], [d + HALF_TRACK, -OVERHANG],
-                         [d + HALF_TRACK, L + OVERHANG], [d - HALF_TRACK, L + OVERHANG]])
-        self.body.set_xy(body @ R.T + tr)
-        self.wheels[0].set_data(*np.column_stack([rear - TYRE * heading, rear + TYRE * heading]))
-        self.wheels[1].set_data(*np.column_stack([front - TYRE * roll, front + TYRE * roll]))
-        self.axles.set_data([icr[0], rear[0], np.nan, icr[0], front[0]],
-                            [icr[1], rear[1], np.nan, icr[1], front[1]])
-        t = np.linspace(0.0, 2 * np.pi, 121)
-        r_cg = float(np.hypot(*x["cg"]))
-        self.path.set_data(icr[0] + r_cg * np.cos(t), icr[1] + r_cg * np.sin(t))   # G's circle
-        a = V @ q["a"]
-        self.icr.set_point(V @ q["v"])
-        self.accel.set_point(a)
-        self.accel.set_visible(bool(np.any(a)))
-        self.cg.set_data([cg[0]], [cg[1]])
-        self.inertia.set_conic(W @ np.asarray(q["I"]) @ W.T)
-        tw = x["tyre_wrenches"]
-        self.rear.set_line(W @ tw[:, 0])
-        self.rear.set_anchor(rear)
-        self.front.set_line(W @ tw[:, 1])
-        self.front.set_anchor(front)
-        fA = np.asarray(q["f_A"])
-        self.drive.set_visible(bool(np.any(fA)))
-        if np.any(fA):                       # the arrow starts at the front contact
-            self.drive.set_line(W @ fA)
-            self.drive.set_anchor(front + 0.5 * FORCE_SCALE * p["F_A"] * roll)
-        pb = np.asarray(q["p"])
-        self.bias.set_visible(bool(np.any(pb[:2])))
-        if np.any(pb[:2]):
-            self.bias.set_line(W @ pb)
-            self.bias.set_anchor(cg + 0.5 * FORCE_SCALE * R @ pb[:2])
-        self.T_line.set_line(W @ np.asarray(q["T"]))
-        # the view: the car and the ICR, centred between them and turning with the car (a size that
-        # holds them at every heading, so that the car fills a third of the view for d up to ~8 m)
-        box = view_box(d, L, th, p["F_A"])
-        if tuple(self.ax.get_xlim()) != box[:2] or tuple(self.ax.get_ylim()) != box[2:]:
-            self.ax.set_xlim(*box[:2])
-            self.ax.set_ylim(*box[2:])
-        self.ax.apply_aspect()
-        self.scale_bar.update()
-        self.banner.set_text(SLIDES if st["slides"] else "")
-        self._label(st, box, cg, icr)
-        return self.readout_of(st)
 
     def view_of(self, st):
         """The explorer's own view of the state ``st`` (:func:`~planargeo.draw.pictures.car.view_box`).
@@ -557,26 +427,3 @@ class CarExplorer(Explorer):
             "I": "inertia of the car drawn as its conic (6.117)",
             FRICTION: "friction coefficient between tyre and road",
         }
-
-    def _label(self, st, box, cg, icr) -> None:
-        """Label every element with its thesis symbol where it fits."""
-        reqs = [(r"$G$", cg, {"clear": 6.0})]
-        if self.accel.get_visible():
-            reqs.append((r"$a$", icr, {"color": COLORS["accel"], "clear": 12.0}))
-        reqs.append((r"$v = s\omega$ (ICR)", icr, {"color": COLORS["twist"], "clear": 12.0}))
-        for art, text, color in ((self.rear, r"$R_1\mu_1$", COLORS["reaction"]),
-                                 (self.front, r"$R_2\mu_2$", COLORS["reaction"]),
-                                 (self.drive, r"$f_A$", COLORS["wrench"]),
-                                 (self.bias, r"$p$", COLORS["momentum"])):
-            if art.get_visible():
-                seg = art.get_arrow()
-                if seg is not None:
-                    reqs.append((text, 0.5 * (seg[0] + seg[1]), {"color": color, "clear": 5.0}))
-        seg = clip_line(self.T_line.get_line(), box)
-        if seg is not None:
-            reqs.append((r"$T$", seg[0] + 0.15 * (seg[1] - seg[0]), {"color": COLORS["construct"]}))
-        g = conic_geometry(self.inertia.get_conic())
-        if "affine" in g:
-            reqs.append((r"$I$", (g["affine"] @ [0.7071, -0.7071, 1.0])[:2], {"clear": 4.0}))
-        shown = self.labels.place(reqs)
-        self._shown_labels = [r[0] for r, ok in zip(reqs, shown) if ok]

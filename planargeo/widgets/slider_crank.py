@@ -34,14 +34,9 @@ import math
 
 import ipywidgets as W
 import numpy as np
-from matplotlib.lines import Line2D
-from matplotlib.patches import FancyArrowPatch, Rectangle
 
 from planargeo import scenes
-from planargeo.draw.artists import PointArtist, point_xy
-from planargeo.draw.mechanism import draw_ground
-from planargeo.draw.pictures.slider_crank import CONTACT_COLOR, slider_crank_picture, slider_crank_view
-from planargeo.draw.style import COLORS
+from planargeo.draw.pictures.slider_crank import slider_crank_picture, slider_crank_view
 from planargeo.errors import InputError, SceneError
 from planargeo.scenes.slider_crank import (DEAD_CENTRE_TOL, dead_centre_at, slider_crank_advance,
                                            slider_crank_model, slider_crank_reactions, slider_crank_solve)
@@ -50,9 +45,6 @@ from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["SliderCrankExplorer"]
 
-#: Font size (points) of the labels drawn on the figure (12.5 px at the explorers' 100 dpi).
-LABEL_PT = 9.0
-_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 #: controls that set the state at t = 0 (a change starts the time again)
 INITIAL = ("crank angle (deg)", "crank speed", "drive", "rod length", "gravity")
 #: scene seconds between the checkpoints of a run
@@ -109,199 +101,8 @@ def time_value(text, limit: float) -> float:
     return t
 
 
-def symbol_text(sym: str) -> str:
-    """``"f_2"`` -> ``"f₂"``: a reaction's symbol as drawn.
-
-    Parameters
-    ----------
-    sym : str
-
-    Returns
-    -------
-    str
-    """
-    return sym.replace("_", "").translate(_SUB)
-
-
-class ReactionGlyph:
-    """One reaction drawn at its joint: a stretch of its line of action, the force arrow, a label.
-
-    Attributes ``wrench`` and ``point`` hold what is drawn, ``foot`` where the arrow sits.
-
-    The arrow (``scale`` data units per newton) is centred on the foot of the
-    joint on the line of action (the joint itself for a free pin, whose line
-    passes through it); the line of action is drawn ``reach`` data units either
-    side.  A dotted connector joins the joint to that foot when the reaction has
-    a moment about the joint (a drive torque, a bearing's couple).
-
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes
-    label : str
-        The thesis symbol drawn next to the arrow.
-    color : str, optional
-    reach : float
-        Half-length of the drawn line of action (data units).
-    legend : str, optional
-        Entry in the explorer's key (one per kind of force, not per glyph).
-    """
-
-    def __init__(self, ax, label: str, color: str | None = None, reach: float = 1.2, legend: str | None = None):
-        color = color or COLORS["reaction"]
-        self.reach = float(reach)
-        self.line = Line2D([], [], color=color, lw=1.0, ls="--", zorder=8, label=legend or "_nolegend_")
-        self.link = Line2D([], [], color=color, lw=0.8, ls=":", zorder=8)
-        self.arrow = FancyArrowPatch((0, 0), (0, 0), arrowstyle="-|>", mutation_scale=11, color=color, lw=2.0,
-                                     shrinkA=0, shrinkB=0, zorder=9)
-        ax.add_line(self.line)
-        ax.add_line(self.link)
-        ax.add_patch(self.arrow)
-        self.text = ax.annotate(label, (0.0, 0.0), xytext=(6, 6), textcoords="offset points", fontsize=LABEL_PT,
-                                color=color, zorder=12, annotation_clip=True)
-        self.foot = np.zeros(2)
-        self.point = np.zeros(2)
-        self.wrench = np.zeros(3)
-        self.visible = True
-
-    def update(self, point, wrench, scale: float) -> None:
-        """Place the glyph for the reaction ``wrench`` (``[fx, fy, τ_o]``, N) at joint ``point``.
-
-        Parameters
-        ----------
-        point : (float, float)
-            The joint (data coordinates).
-        wrench : array_like (3,)
-            The reaction wrench at the origin.
-        scale : float
-            Arrow length per newton (data units).
-        """
-        p = np.asarray(point, dtype=float)
-        self.wrench = np.array(wrench, dtype=float)
-        self.point = p
-        fx, fy, tz = (float(x) for x in wrench)
-        F = math.hypot(fx, fy)
-        if F == 0.0:
-            self.foot = p
-            for a in (self.line, self.link):
-                a.set_data([], [])
-            self.arrow.set_positions(tuple(p), tuple(p))
-            self.text.xy = tuple(p)
-            return
-        e = np.array([fx, fy]) / F
-        # the line tz + y fx - x fy = 0 (4.27): foot of p on it
-        m_p = tz + p[1] * fx - p[0] * fy                  # moment about p (the line's value at p)
-        foot = p - (m_p / F) * np.array([-e[1], e[0]])    # the gradient of the line's value is (-fy, fx)
-        self.foot = foot
-        ends = np.array([foot - self.reach * e, foot + self.reach * e])
-        self.line.set_data(ends[:, 0], ends[:, 1])
-        if np.hypot(*(foot - p)) > 1e-9:
-            self.link.set_data([p[0], foot[0]], [p[1], foot[1]])
-        else:
-            self.link.set_data([], [])
-        half = 0.5 * scale * F * e
-        self.arrow.set_positions(tuple(foot - half), tuple(foot + half))
-        self.text.xy = tuple(foot)
-
-    def set_visible(self, on: bool) -> None:
-        """Show or hide the glyph (line, connector, arrow and label)."""
-        self.visible = bool(on)
-        for a in (self.line, self.link, self.arrow, self.text):
-            a.set_visible(self.visible)
-
-
-def place_labels(ax, items, obstacles=(), fontsize: float = LABEL_PT, covered=()) -> None:
-    """Put each label next to its anchor where it overlaps no other label or obstacle and stays in the axes.
-
-    ``items`` are ``(label, anchor)`` or ``(label, anchor, text)``: a matplotlib
-    ``Annotation`` (offset in points from its ``xy``) or a
-    :class:`~planargeo.draw.artists.PointArtist` (its label's offset and alignment;
-    give its ``text``), and the data point it labels.  Candidate places are tried
-    around the anchor (8 directions, 7, 16, 28, 42 then 58 points away); the first
-    free one wins, else the least crowded (slid into the axes if need be).  Text
-    boxes are estimated from the font size (no drawing needed).  A label whose
-    point is out of view is skipped (an annotation is clipped; a point artist's
-    label is emptied until its point is back in view).
-
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes
-    items : sequence of tuples
-        Labels in order of priority.
-    obstacles : sequence of (x0, y0, x1, y1)
-        Display-coordinate boxes to keep clear (pins, other texts).
-    fontsize : float
-        Font size (points) used to estimate the label boxes.
-    covered : sequence of (x0, y0, x1, y1)
-        Display boxes drawn over the plot (the key): a label whose point lies under one is
-        not shown (its point is hidden too), and the box is kept clear of the others.
-    """
-    fig = ax.figure
-    ppt = fig.dpi / 72.0
-    box = ax.bbox
-    taken = [tuple(o) for o in obstacles] + [tuple(o) for o in covered]
-    dirs = [(1, 1), (-1, 1), (1, -1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1)]
-    for item in items:
-        obj, anchor = item[0], item[1]
-        annotation = hasattr(obj, "xyann")
-        if annotation:                        # its own text, kept while it is blanked under the key
-            if not hasattr(obj, "_planargeo_label") or obj.get_text():
-                obj._planargeo_label = obj.get_text()
-            label = obj._planargeo_label
-        else:
-            label = item[2] if len(item) > 2 else ""
-        if not annotation and anchor is None:
-            obj.set_text(label)               # an ideal point: the artist labels its direction at the edge
-            continue
-        if not obj.get_visible() or not label or anchor is None:
-            continue
-        a = ax.transData.transform(np.asarray(anchor, dtype=float))
-        inside = bool(np.all(np.isfinite(a))) and box.x0 <= a[0] <= box.x1 and box.y0 <= a[1] <= box.y1
-        under = inside and any(c[0] <= a[0] <= c[2] and c[1] <= a[1] <= c[3] for c in covered)
-        obj.set_text("" if under or (not inside and not annotation) else label)
-        if not inside or under:
-            continue                          # out of view, or under the key: not labelled here
-        n = len(label)
-        w, h = (0.62 * n * fontsize + 3) * ppt, 1.25 * fontsize * ppt
-        best, best_bad = None, math.inf
-        for dist in (7.0, 16.0, 28.0, 42.0, 58.0):
-            for ux, uy in dirs:
-                u = np.array([ux, uy], dtype=float) / math.hypot(ux, uy)
-                off = dist * u
-                cx, cy = a + off * ppt
-                ha = "left" if u[0] > 0.35 else "right" if u[0] < -0.35 else "center"
-                va = "bottom" if u[1] > 0.35 else "top" if u[1] < -0.35 else "center"
-                x0 = cx if ha == "left" else cx - w if ha == "right" else cx - w / 2
-                y0 = cy if va == "bottom" else cy - h if va == "top" else cy - h / 2
-                bb = (x0 - 2.5, y0 - 2.5, x0 + w + 2.5, y0 + h + 2.5)
-                bad = sum(max(0.0, min(bb[2], o[2]) - max(bb[0], o[0])) * max(0.0, min(bb[3], o[3]) - max(bb[1], o[1]))
-                          for o in taken)
-                if bb[0] < box.x0 + 2 or bb[2] > box.x1 - 2 or bb[1] < box.y0 + 2 or bb[3] > box.y1 - 2:
-                    bad += 1e9
-                if bad < best_bad:
-                    best, best_bad = (off, ha, va, bb), bad
-                if bad == 0:
-                    break
-            if best_bad == 0:
-                break
-        off, ha, va, bb = best
-        # still out of the axes (a crowded edge): slide it in
-        dx = max(0.0, box.x0 + 2 - bb[0]) - max(0.0, bb[2] - (box.x1 - 2))
-        dy = max(0.0, box.y0 + 2 - bb[1]) - max(0.0, bb[3] - (box.y1 - 2))
-        if dx or dy:
-            off = off + np.array([dx, dy]) / ppt
-            bb = (bb[0] + dx, bb[1] + dy, bb[2] + dx, bb[3] + dy)
-        if annotation:
-            obj.set_position((float(off[0]), float(off[1])))
-            obj.set_horizontalalignment(ha)
-            obj.set_verticalalignment(va)
-        else:
-            obj.set_text_offset((float(off[0]), float(off[1])))
-            obj.set_text_alignment(ha, va)
-        taken.append(bb)
-
-
 def wrap_message(text: str, width: int = 38) -> str:
-    """``text`` broken into lines of at most ``width`` characters, so that a figure message stays in the axes.
+    """``text`` broken into lines of at most ``width`` characters, so that a refused state's message stays inside the picture.
 
     Parameters
     ----------
@@ -321,54 +122,6 @@ def wrap_message(text: str, width: int = 38) -> str:
     import textwrap
 
     return "\n".join(textwrap.wrap(text, width)) or text
-
-
-def key_box(ax, on: bool, fontsize: float = 8.5):
-    """Estimated display box of the explorer's key (legend, upper left) when it is ``on``, for labels to avoid.
-
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes
-    on : bool
-        Whether the "key" control is on.
-    fontsize : float
-        The key's font size (points).
-
-    Returns
-    -------
-    list of tuple
-        ``[(x0, y0, x1, y1)]`` in display coordinates, or ``[]`` when the key is off or empty.
-    """
-    if not on:
-        return []
-    from planargeo.draw.artists import legend_handles
-
-    labels = [h.get_label() for h in legend_handles(ax)]
-    if not labels:
-        return []
-    ppt = ax.figure.dpi / 72.0
-    box = ax.bbox
-    w = (0.62 * max(len(s) for s in labels) + 3.2) * fontsize * ppt
-    h = (len(labels) * 1.75 + 0.8) * fontsize * ppt
-    pad = 0.3 * fontsize * ppt
-    return [(box.x0, box.y1 - h - pad, box.x0 + w + pad, box.y1)]
-
-
-def pin_box(ax, xy, r_px: float = 6.0):
-    """Display-coordinate box ``(x0, y0, x1, y1)`` of ``r_px`` pixels around the data point ``xy``.
-
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes
-    xy : (float, float)
-    r_px : float
-
-    Returns
-    -------
-    tuple of float
-    """
-    x, y = ax.transData.transform(np.asarray(xy, dtype=float))
-    return (x - r_px, y - r_px, x + r_px, y + r_px)
 
 
 class SliderCrankExplorer(Explorer):
@@ -399,7 +152,6 @@ class SliderCrankExplorer(Explorer):
     title = "Slider-crank: a closed loop and its pin and bearing forces"
     slug = "slider-crank"
     figsize = (5.6, 6.2)
-    limits = (-4.5, 4.5, -3.5, 9.0)
     display_controls = ("reaction forces", "velocity poles", "acceleration poles")
     #: scene seconds per second of Play at speed 1× (slow motion: the crank turns at ~20 rad/s; the base
     #: shows the factor beside the speed menu)
@@ -454,41 +206,6 @@ class SliderCrankExplorer(Explorer):
             "velocity poles": W.Checkbox(value=False, description="velocity poles", indent=False),
             "acceleration poles": W.Checkbox(value=False, description="acceleration poles", indent=False),
         }
-
-    def make_artists(self, ax):
-        """Guide, ground, links, piston, reaction glyphs, poles and labels (built once).
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-        """
-        self.guide = Line2D([-0.35, -0.35, np.nan, 0.35, 0.35], [-20, 20, np.nan, -20, 20],
-                            color=COLORS["ground"], lw=1.0, ls="--", zorder=1)
-        ax.add_line(self.guide)
-        draw_ground((0.0, -0.15), ax, width=0.9, zorder=1)
-        self.crank = Line2D([], [], color=COLORS["ground"], lw=4, solid_capstyle="round", zorder=5, label="crank 1")
-        self.rod = Line2D([], [], color=COLORS["body"], lw=3, solid_capstyle="round", zorder=5, label="rod 2")
-        self.pins = Line2D([], [], ls="none", marker="o", ms=5, mfc="white", mec="black", zorder=6)
-        for a in (self.crank, self.rod, self.pins):
-            ax.add_line(a)
-        self.piston = Rectangle((-0.3, 0), 0.6, 1.0, fc=COLORS["body"], ec="black", alpha=0.6, zorder=4,
-                                label="piston 3")
-        ax.add_patch(self.piston)
-        kw = dict(fontsize=LABEL_PT, color="#303030", zorder=12, textcoords="offset points", xytext=(6, 6),
-                  annotation_clip=True)
-        self.body_labels = [ax.annotate(s, (0.0, 0.0), **kw) for s in ("1", "2", "3")]
-        self.joint_labels = [ax.annotate(s, (0.0, 0.0), **kw) for s in ("ψ", "θ", "φ")]
-        self.glyphs = {s: ReactionGlyph(ax, symbol_text(s), legend="pin force fᵢ (9.61)" if s == "f_1" else None)
-                       for s in ("f_1", "f_2", "f_3")}
-        self.glyphs["F_1"] = ReactionGlyph(ax, "F₃", color=CONTACT_COLOR, legend="bearing force F₃ (9.71)")
-        self.glyphs["F_1"].text.set_text("F₃")          # the thesis calls the slider's force F₃ (9.84)
-        z = np.array([0.0, 0.0, 1.0])
-        self.v_art = [ax.add_artist(PointArtist(z, role="twist", glyph_scale=0.5, text=f"v{i + 1}".translate(_SUB)))
-                      for i in range(3)]
-        self.a_art = [ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.05, text=f"a{i + 1}".translate(_SUB)))
-                      for i in range(3)]
-        self.banner = ax.text(0.98, 0.98, "", transform=ax.transAxes, ha="right", va="top", fontsize=LABEL_PT + 1,
-                              color="#7a3d00", zorder=20, fontweight="bold")
 
     # ----------------------------------------------------------------- handles
     def handles(self):
@@ -605,7 +322,7 @@ class SliderCrankExplorer(Explorer):
         Returns
         -------
         dict
-            The state drawn by :meth:`render`.
+            The state (drawn by :meth:`scene_picture`, read by :meth:`readout_of`).
 
         Raises
         ------
@@ -639,65 +356,6 @@ class SliderCrankExplorer(Explorer):
         while len(self._runs) > 2:
             self._runs.pop(next(iter(self._runs)))
         return st
-
-    def render(self, st):
-        """Move the links, piston, reaction glyphs, poles and labels; return the readout.
-
-        Parameters
-        ----------
-        st : dict
-            A state of :meth:`compute`.
-
-        Returns
-        -------
-        dict
-        """
-        ax = self.ax
-        sol = st["sol"]
-        d = sol.data
-        r, l, t = st["r"], st["l"], st["t"]
-        pose = d.pose
-        pin, wrist = pose[1, :2], pose[2, :2]
-        top = max(9.0, r + l + 2 * t + 1.0)
-        if ax.get_ylim()[1] != top:
-            ax.set_ylim(-r - 1.2, top)
-        self.crank.set_data([0.0, pin[0]], [0.0, pin[1]])
-        self.rod.set_data([pin[0], wrist[0]], [pin[1], wrist[1]])
-        self.pins.set_data([0.0, pin[0], wrist[0]], [0.0, pin[1], wrist[1]])
-        self.piston.set_xy((wrist[0] - 0.3, wrist[1]))
-        self.piston.set_height(2 * t)
-        vals = self.values
-        reactions = st["reactions"]
-        force = {k: float(np.hypot(x.wrench[0], x.wrench[1])) for k, x in reactions.items()}
-        fmax = max(force.values())
-        scale = 2.4 / fmax if fmax > 0 else 0.0          # the largest force: a 2.4 m arrow
-        show_f = bool(vals["reaction forces"])
-        for sym, g in self.glyphs.items():
-            x = reactions[sym]
-            g.update(x.point, x.wrench, scale)
-            g.set_visible(show_f)
-        vel, acc = st["v"], st["a"]
-        for i in range(3):
-            self.v_art[i].set_visible(bool(vals["velocity poles"]))
-            self.v_art[i].set_point(vel[i])
-            self.a_art[i].set_visible(bool(vals["acceleration poles"]))
-            self.a_art[i].set_point(acc[i])
-        # labels: bodies at their middles, joints at the pins, reactions at their arrows
-        mids = [0.5 * pin, 0.5 * (pin + wrist), wrist + np.array([0.0, t])]
-        for lab, m in zip(self.body_labels, mids):
-            lab.xy = tuple(m)
-        # the joint angles are labelled a little way along their links, not on the pins, where the pin
-        # forces' labels go: the labels spread out instead of piling up at the pins
-        for lab, p in zip(self.joint_labels, (0.3 * pin, pin + 0.2 * (wrist - pin), wrist + np.array([0.0, 1.4 * t]))):
-            lab.xy = tuple(p)
-        obstacles = [pin_box(ax, p) for p in (np.zeros(2), pin, wrist)]
-        items = [(g.text, g.foot) for g in self.glyphs.values()]
-        items += [(lab, lab.xy) for lab in self.joint_labels] + [(lab, lab.xy) for lab in self.body_labels]
-        for name, arts, pts in (("v", self.v_art, vel), ("a", self.a_art, acc)):
-            for i, art in enumerate(arts):
-                items.append((art, point_xy(pts[i]), f"{name}{i + 1}".translate(_SUB)))
-        place_labels(ax, items, obstacles, covered=key_box(ax, bool(vals.get("key"))))
-        return self.readout_of(st)
 
     def banner_of(self, st) -> str:
         """The dead centre named on the picture: passing one now, or at one ("" between them).
@@ -837,7 +495,7 @@ class SliderCrankExplorer(Explorer):
         return {"t (s)": "set by Play (a new initial state starts it at 0)"}
 
     def figure_message(self, exc):
-        """Short text on the figure for a refused state (rod too short, singular closure...).
+        """Short text on the picture for a refused state (rod too short, singular closure...).
 
         Parameters
         ----------

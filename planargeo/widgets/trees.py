@@ -31,20 +31,15 @@ import math
 
 import ipywidgets as W
 import numpy as np
-from matplotlib.lines import Line2D
 
 from planargeo import scenes
-from planargeo.draw.artists import PointArtist, point_xy
-from planargeo.draw.mechanism import draw_ground
 from planargeo.draw.pictures.trees import symbol_of, trees_picture
-from planargeo.draw.style import COLORS
 from planargeo.errors import InputError, PlanargeoError
 from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_reactions,
                                     tree_solve)
 from planargeo.simulate.integrate import energy
 from planargeo.widgets.base import Explorer, Handle, Step, cached
-from planargeo.widgets.slider_crank import (CONTACT_COLOR, LABEL_PT, ReactionGlyph, key_box, pin_box, place_labels,
-                                            symbol_text, time_text, time_value)
+from planargeo.widgets.slider_crank import time_text, time_value
 
 __all__ = ["TreeExplorer"]
 
@@ -53,7 +48,6 @@ _SUB = "₀₁₂₃₄₅₆₇₈₉"
 N = 9
 #: controls that set the state at t = 0 (a change starts the time again)
 INITIAL = ("speed", "loops", "gravity", "mass", "body 1 angle (deg)", "body 2 angle (deg)")
-_FADED = 0.25
 #: default gravity (m/s²) and speed (rad/s): the links coast without gravity, slowly enough for Play to keep
 #: up with real time; under gravity the nine links fall through a pose where a loop lies flat every
 #: fraction of a second (:func:`~planargeo.scenes.trees.tree_advance` steps over them, at about ten times
@@ -139,36 +133,7 @@ class TreeExplorer(Explorer):
         """
         loops = self.controls["loops"].value if "loops" in getattr(self, "controls", {}) else "closed"
         closed = str(loops).startswith("closed")
-        return [symbol_text(f"f_{i + 1}") for i in range(N)] + (["F₁", "F₂"] if closed else [])
-
-    def make_artists(self, ax):
-        """Links, joints, pins, the reaction glyphs, poles and body labels (built once).
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-        """
-        self.links = Line2D([], [], color=COLORS["ground"], lw=2.5, solid_capstyle="round", zorder=5)
-        self.joints = Line2D([], [], ls="none", marker="o", ms=4, mfc="white", mec="black", zorder=6)
-        self.pins = Line2D([], [], ls="none", marker="o", ms=8, mfc="none", mec=COLORS["reaction"], mew=2, zorder=6)
-        for a in (self.links, self.joints, self.pins):
-            ax.add_line(a)
-        draw_ground((0.0, 0.0), ax, width=0.9, zorder=1)
-        kw = dict(fontsize=LABEL_PT, color="#404040", zorder=12, textcoords="offset points", xytext=(4, 4),
-                  annotation_clip=True)
-        self.labels = [ax.annotate(str(i + 1), (0.0, 0.0), **kw) for i in range(N)]
-        self.glyphs = {}
-        for i in range(N):
-            self.glyphs[f"f_{i + 1}"] = ReactionGlyph(ax, symbol_text(f"f_{i + 1}"), reach=0.45,
-                                                      legend="pin force fᵢ (9.61)" if i == 0 else None)
-        for k in range(2):
-            self.glyphs[f"F_{k + 1}"] = ReactionGlyph(ax, symbol_text(f"F_{k + 1}"), color=CONTACT_COLOR, reach=0.45,
-                                                      legend="contact force Fₖ (9.71)" if k == 0 else None)
-        z = np.array([0.0, 0.0, 1.0])
-        self.v_art = [ax.add_artist(PointArtist(z, role="twist", glyph_scale=3.0, text=f"v{_SUB[i + 1]}"))
-                      for i in range(N)]
-        self.a_art = [ax.add_artist(PointArtist(z, role="accel", glyph_scale=0.3, text=f"a{_SUB[i + 1]}"))
-                      for i in range(N)]
+        return [symbol_of(f"f_{i + 1}") for i in range(N)] + (["F₁", "F₂"] if closed else [])
 
     def geometry(self, closed: bool):
         """Contacts, link length and degrees of freedom ``nq − rank J_c`` (9.54, 9.60) of a loop setting (cached).
@@ -388,77 +353,6 @@ class TreeExplorer(Explorer):
             self._runs.pop(next(iter(self._runs)))
         return st
 
-    def render(self, st):
-        """Move links, pins, reaction glyphs (focus: one bold, the rest faded), poles, labels.
-
-        Parameters
-        ----------
-        st : dict
-            A state of :meth:`compute`.
-
-        Returns
-        -------
-        dict
-            The readout.
-        """
-        ax = self.ax
-        closed, model = st["closed"], st["model"]
-        d = st["sol"].data
-        pose, tips = d.pose, st["tips"]
-        vals = self.values
-        focus = vals.get("focus", "all")
-        reactions = {symbol_text(x.symbol): x for x in st["reactions"]}
-        if closed:        # the thesis names the contact forces F₁, F₂ (9.49 order)
-            pass
-        # view: every pose the links can reach (body 1 and three more links from the pivot), fixed
-        if tuple(ax.get_xlim()) != self.limits[:2] or tuple(ax.get_ylim()) != self.limits[2:]:
-            ax.set_xlim(*self.limits[:2])
-            ax.set_ylim(*self.limits[2:])
-        xs, ys = [], []
-        for i in range(N):
-            xs += [pose[i, 0], tips[i, 0], np.nan]
-            ys += [pose[i, 1], tips[i, 1], np.nan]
-        self.links.set_data(xs, ys)
-        self.joints.set_data(pose[:, 0], pose[:, 1])
-        for i, t in enumerate(self.labels):
-            t.xy = tuple(0.5 * (pose[i, :2] + tips[i]))
-        force = {k: float(np.hypot(x.wrench[0], x.wrench[1])) for k, x in reactions.items()}
-        fmax = max(force.values(), default=0.0)
-        scale = 0.9 / fmax if fmax > 0 else 0.0
-        show = bool(vals["reaction forces"])
-        for sym, g in self.glyphs.items():
-            x = reactions.get(symbol_text(sym))
-            if x is None:
-                g.set_visible(False)
-                continue
-            g.update(x.point, x.wrench, scale)
-            g.set_visible(show)
-            on = focus in ("all", symbol_text(sym))
-            alpha = 1.0 if on else _FADED
-            for a in (g.line, g.link, g.arrow):
-                a.set_alpha(alpha)
-            g.arrow.set_linewidth(3.0 if focus == symbol_text(sym) else 2.0)
-            g.text.set_visible(show and on)
-            g.text.set_fontweight("bold" if focus == symbol_text(sym) else "normal")
-        for i in range(N):
-            self.v_art[i].set_visible(bool(vals["velocity poles"]))
-            self.v_art[i].set_point(d.v[i])
-            self.a_art[i].set_visible(bool(vals["acceleration poles"]))
-            self.a_art[i].set_point(st["a"][i])
-        if closed:
-            pins = np.array([x.point for x in st["reactions"] if x.symbol.startswith("F")])
-            self.pins.set_data(pins[:, 0], pins[:, 1])
-        else:
-            self.pins.set_data([], [])
-        obstacles = [pin_box(ax, p, 4.0) for p in pose[:, :2]]
-        items = [(g.text, g.foot) for g in self.glyphs.values() if g.visible]
-        items += [(t, t.xy) for t in self.labels]
-        for name, arts, pts in (("v", self.v_art, d.v), ("a", self.a_art, st["a"])):
-            for i, art in enumerate(arts):
-                items.append((art, point_xy(pts[i]), f"{name}{_SUB[i + 1]}"))
-        place_labels(ax, items, obstacles, covered=key_box(ax, bool(vals.get("key"))))
-        return self.readout_of(st)
-
     def scene_picture(self, st, view=None):
         """The state's picture built natively (:func:`planargeo.draw.pictures.trees.trees_picture`).
 
@@ -503,9 +397,9 @@ class TreeExplorer(Explorer):
                "closure drift |φ|": st["drift"]}
         if closed:
             for k, c in enumerate(model.contacts):
-                out[f"|F{_SUB[k + 1]}| (pin {c.name})"] = force[symbol_text(f"F_{k + 1}")]
+                out[f"|F{_SUB[k + 1]}| (pin {c.name})"] = force[symbol_of(f"F_{k + 1}")]
             out["condition number"] = st["cond"]
-        out["largest pin force"] = max(force[symbol_text(f"f_{i + 1}")] for i in range(N))
+        out["largest pin force"] = max(force[symbol_of(f"f_{i + 1}")] for i in range(N))
         if focus in reactions:
             x = reactions[focus]
             out["focus"] = focus
@@ -552,17 +446,17 @@ class TreeExplorer(Explorer):
             out[f"v{_SUB[i + 1]}"] = f"velocity pole of body {i + 1}: the point it turns about now (section 4.5)"
             out[f"a{_SUB[i + 1]}"] = f"acceleration pole of body {i + 1}: its point without acceleration (4.6)"
         for i in range(N):
-            out[symbol_text(f"f_{i + 1}")] = (f"pin force of joint {i + 1}: the wrench on body {i + 1} from its "
+            out[symbol_of(f"f_{i + 1}")] = (f"pin force of joint {i + 1}: the wrench on body {i + 1} from its "
                                               "parent (9.61; 9.41 for the open tree)")
         for k, name in enumerate(("4-7", "8-9")):
-            out[symbol_text(f"F_{k + 1}")] = f"contact force of the pin joining the tips of bodies {name} (9.71)"
+            out[symbol_of(f"F_{k + 1}")] = f"contact force of the pin joining the tips of bodies {name} (9.71)"
             out[f"|F{_SUB[k + 1]}| (pin {name})"] = f"size of the contact force F{_SUB[k + 1]} (9.71)"
         for i in range(N):
-            f = symbol_text(f"f_{i + 1}")
+            f = symbol_of(f"f_{i + 1}")
             out[f"|{f}|"] = f"size of the pin force {f} (9.61)"
             out[f"moment of {f} about its pin"] = f"moment of {f} about its own pin: 0 for a free pin (9.61)"
         for k in range(2):
-            F = symbol_text(f"F_{k + 1}")
+            F = symbol_of(f"F_{k + 1}")
             out[f"|{F}|"] = f"size of the contact force {F} (9.71)"
             out[f"moment of {F} about its pin"] = f"moment of {F} about its own pin: 0 for a free pin (9.71)"
         return out
