@@ -209,11 +209,11 @@ def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(56
     bx0, bx1, by0, by1 = pic.box
     band_top = by0 + band_px / pic.ky
     pic.path("caption band", [[bx0, by0], [bx1, by0], [bx1, band_top], [bx0, band_top]], role="text",
-             closed=True, fill="#FFFFFF", color="#CCCCCC", width=0.8, z=19, symbol=f"step {k}",
+             closed=True, fill="#FFFFFF", color="#CCCCCC", width=0.8, z=19, symbol="step",
              desc=f"the step shown: {caption}")
     for i, line in enumerate(lines):
         pic.text(f"caption {i + 1}", (bx0, band_top), line, role="text", ha="left", va="top", dx=6.0,
-                 dy=-5.0 - 1.3 * FONT_PX * i, z=20, symbol=f"step {k}",
+                 dy=-5.0 - 1.3 * FONT_PX * i, z=20, symbol="step",
                  desc=f"the step shown: {caption}")
         pic.elements[-1]["parts"][0].pop("fixed")     # placed first: no label lands on the caption
     centre, nrm = _frame(c, shown)
