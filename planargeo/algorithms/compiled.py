@@ -256,8 +256,11 @@ _told = []
 def cache_is_warm(kernels=None) -> bool:
     """Whether numba's cache holds the entry points of :mod:`planargeo.algorithms.kernels` for its current source.
 
-    A heuristic on the cache's index files (one per kernel, rewritten by numba with every
-    compilation): present and not older than ``kernels.py``.  It does not compile anything.
+    Numba's own rule, read from each kernel's cache index: it holds compiled versions and was
+    written for the source as it is now (numba ≥ 0.6x stamps an index with a hash of the
+    source's content, so a file merely touched stays warm).  Where numba's cache files do not
+    offer that (another version), the older heuristic: an index not older than ``kernels.py``.
+    It does not compile anything.
 
     Parameters
     ----------
@@ -267,7 +270,7 @@ def cache_is_warm(kernels=None) -> bool:
     Returns
     -------
     bool
-        True if every entry point has an index newer than the source.
+        True if every entry point's compiled code in the cache is current.
 
     Examples
     --------
@@ -277,13 +280,17 @@ def cache_is_warm(kernels=None) -> bool:
     if kernels is None:
         from planargeo.algorithms import kernels
     try:
-        source = os.stat(kernels.__file__).st_mtime
         for name in ENTRY_POINTS:
             cache = getattr(kernels, name)._cache          # numba's FunctionCache (cache=True)
-            index = getattr(cache, "_index_path", None) or cache._cache_file._index_path   # numba ≥ 0.60
-            if os.stat(index).st_mtime < source:
+            cache_file = getattr(cache, "_cache_file", None)
+            if cache_file is not None and hasattr(cache_file, "_load_index"):
+                if not cache_file._load_index():          # empty: none, or for another source (numba's stamp)
+                    return False
+                continue
+            index = getattr(cache, "_index_path", None) or cache_file._index_path
+            if os.stat(index).st_mtime < os.stat(kernels.__file__).st_mtime:
                 return False
-    except (OSError, AttributeError):
+    except Exception:                                      # (unreadable or foreign files: not warm)
         return False
     return True
 
