@@ -19,7 +19,8 @@ page per host: JupyterLab here, the web app's Voila in ``test_browser_explorers.
   away from the pointer), the kernel answers with the new view; a background drag pans;
   "reset view" brings every handle back to its first place (within 1 px);
 * **hover**: rests on a described element on top: its description shows;
-* **Play** (where it has it): frames are painted while it plays, and stop when paused;
+* **Play** (where it has it): frames are painted while it plays, and stop when paused; the
+  page asked for them (tick requests on the wire: frames paced by the page);
 * **export**: the SVG button gives a file that is an SVG document.
 
 Over the whole run, every message between the page and the kernel is read off the
@@ -349,18 +350,33 @@ def check_hover(page, ex):
     raise AssertionError(f"no description shown on hover ({len(spots)} described elements on top tried)")
 
 
+#: tick requests the page sent during the last Play check (filled by check_play)
+PLAY_TICKS = [0]
+
+
+def _ticks(page) -> int:
+    return page.evaluate("(window.__pgWire || []).filter((m) => m.type === 'tick').length")
+
+
+def check_play_paced(page, ex):
+    """Play's frames were asked for by the page (tick requests), not pushed by a timer in the kernel."""
+    assert PLAY_TICKS[0] > 0, ("Play painted frames but the page sent no tick: its frames are not paced "
+                               "by the page (PictureCanvas.playing / on_tick not linked to the Play button)")
+
+
 def check_play(page, ex):
     cv = _canvas(ex)
     reset = ex.locator("button").filter(has_text="Reset").first
     if reset.count():                 # from the default state (a drag may leave a motion that ends at once)
-        s0 = _stats(cv)
         reset.click()
         time.sleep(1.0)
     play = ex.locator(".widget-play button").first
     play.scroll_into_view_if_needed()
     p0 = _stats(cv)["painted"]
+    t0 = _ticks(page)
     play.click()
     _wait_for(lambda: _stats(cv)["painted"] >= p0 + 5, 20, "five frames painted while playing")
+    PLAY_TICKS[0] = _ticks(page) - t0
     pause = ex.locator(".widget-play button").nth(1)
     if pause.count():
         pause.click()
@@ -368,7 +384,6 @@ def check_play(page, ex):
     p1 = _stats(cv)["painted"]
     time.sleep(1.0)
     assert _stats(cv)["painted"] <= p1 + 1, "frames still painted a second after pause"
-    del s0
 
 
 def check_export(page, ex, tmp: Path):
@@ -464,7 +479,9 @@ def run_all(page, names: list[str], tmp: Path, screens: Path | None = None) -> l
         _try("zoom/pan/reset", failures, name, lambda: check_view(page, ex))
         _try("hover", failures, name, lambda: check_hover(page, ex))
         if ex.locator(".widget-play").count():
+            PLAY_TICKS[0] = 0
             _try("play", failures, name, lambda: check_play(page, ex))
+            _try("play paced by the page", failures, name, lambda: check_play_paced(page, ex))
         _try("export", failures, name, lambda: check_export(page, ex, tmp))
     wire = page.evaluate("window.__pgWire || []")
     RESULTS["_wire"] = {"requests": str(sum(m.get("dir") == "out" for m in wire)),
