@@ -18,7 +18,7 @@ Examples
 (2.25, 0.0)
 >>> els["v3"]["symbol"], els["v3"]["desc"]
 ('v₃ = v₁ + v₂', 'sum v₃ = v₁ + v₂ (4.11–4.13): rate 4 rad/s, at (2.25, 0) m')
->>> els["Q1"].get("opacity", 1.0) < 1.0, els["caption 1"]["parts"][0]["text"]
+>>> els["Q1"].get("opacity", 1.0) < 1.0, els["caption"]["parts"][1]["text"]
 (True, 'Step 3/3: v₃ on Q₁Q₂ at β = ω₂/(ω₁+ω₂) = 0.75 (4.11–4.13)')
 """
 from __future__ import annotations
@@ -208,14 +208,14 @@ def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(56
     pic = Picture((x0, x1, y0 - band_px / k_px, y1), size=size, margin=(ml, mr, mt, mb))
     bx0, bx1, by0, by1 = pic.box
     band_top = by0 + band_px / pic.ky
-    pic.path("caption band", [[bx0, by0], [bx1, by0], [bx1, band_top], [bx0, band_top]], role="text",
-             closed=True, fill="#FFFFFF", color="#CCCCCC", width=0.8, z=19, symbol="step",
+    # one element: the band (white, a thin frame) and the caption's lines in it, placed first by the
+    # label placer (topmost), so that no label of the drawing lands on them
+    pic.path("caption", [[bx0, by0], [bx1, by0], [bx1, band_top], [bx0, band_top]], role="text",
+             closed=True, fill="#FFFFFF", color="#444444", width=0.6, z=20, symbol="step",
              desc=f"the step shown: {caption}")
-    for i, line in enumerate(lines):
-        pic.text(f"caption {i + 1}", (bx0, band_top), line, role="text", ha="left", va="top", dx=6.0,
-                 dy=-5.0 - 1.3 * FONT_PX * i, z=20, symbol="step",
-                 desc=f"the step shown: {caption}")
-        pic.elements[-1]["parts"][0].pop("fixed")     # placed first: no label lands on the caption
+    pic.elements[-1]["parts"] += [
+        {"p": "text", "x": bx0, "y": band_top, "dx": 6.0, "dy": -5.0 - 1.3 * FONT_PX * i, "text": line,
+         "ha": "left", "va": "top"} for i, line in enumerate(lines)]
     centre, nrm = _frame(c, shown)
     view_centre = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
     lines_labelled = 0
