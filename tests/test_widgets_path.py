@@ -23,6 +23,9 @@ import planargeo.widgets as widgets
 from test_layers import level
 
 WIDGETS = Path(widgets.__file__).parent
+#: the modules the explorer base is made of (one job each): on a stack they count as the base
+BASE_PARTS = {"planargeo.widgets.controls", "planargeo.widgets.front", "planargeo.widgets.handles",
+              "planargeo.widgets.export", "planargeo.widgets.play"}
 
 #: explorer, a physics control and a new value (the update computes a state)
 CHANGES = [("ChainExplorer", "angle", 10.0), ("ChainExplorer", "joints", "alternating"),
@@ -55,6 +58,7 @@ def calls_during(action) -> tuple[collections.Counter, set[tuple[str, ...]]]:
         chain, f = [], frame
         while f is not None:
             m = f.f_globals.get("__name__", "")
+            m = "planargeo.widgets.base" if m in BASE_PARTS else m
             # a decorator's wrapper (planargeo._validate's errstate/overflow guards) is not a layer step
             if m.startswith("planargeo") and m != "planargeo._validate" and (not chain or chain[-1] != m):
                 chain.append(m)

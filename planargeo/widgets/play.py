@@ -32,10 +32,14 @@ import numbers
 import time
 from typing import Any, Callable
 
-from planargeo.errors import InputError
+import ipywidgets as W
+
+from planargeo.errors import InputError, PlanargeoError
+from planargeo.widgets.controls import same_value
 
 __all__ = ["MAX_CATCHUP", "MAX_ADVANCE_FRAMES", "MAX_ADVANCE_SECONDS", "MAX_ANIMATION_FRAMES",
            "substeps", "run_substeps", "check_count", "check_duration", "PlayClock"]
+# PlayMixin (below) is the explorer's Play; it is documented with the Explorer it is part of
 
 #: wall seconds a single Play tick may catch up (a longer gap: the motion resumes, it does not jump)
 MAX_CATCHUP = 0.5
@@ -215,3 +219,203 @@ class PlayClock:
         gap = min(max(now - self.last, 0.0), MAX_CATCHUP)
         self.last = now
         return gap * self.rate
+
+
+class PlayMixin:
+    """Play for :class:`~planargeo.widgets.base.Explorer`: the controls, the clock, the page's ticks."""
+
+    def _make_play_controls(self) -> None:
+        """Play, speed, loop and the time scale (an explorer with :meth:`play_step`)."""
+        self.play_control = self.play_speed = self.play_loop = self.play_scale = None
+        self._clock: PlayClock | None = None
+        self._play_origin: dict[str, Any] | None = None
+        self._last_tick = (0.0, 0.0)
+        if not self.has_play:
+            return
+        self.play_control = W.Play(value=0, min=0, max=10 ** 9, step=1,
+                                   interval=int(round(1000 / self.play_fps)), description="play",
+                                   show_repeat=False)
+        self.play_speed = W.Dropdown(options=[("¼×", 0.25), ("½×", 0.5), ("1×", 1.0),
+                                              ("2×", 2.0), ("4×", 4.0)], value=1.0,
+                                     description="speed", layout=W.Layout(width="150px"))
+        self.play_loop = W.Checkbox(value=True, description="loop", indent=False,
+                                    layout=W.Layout(width="80px"))
+        scale = float(self.time_scale)
+        self.play_scale = W.HTML(
+            f"<span title='1× plays {scale:g} simulated seconds per second'>"
+            + ("1× = real time" if scale == 1.0 else f"1× = {scale:g}× real time") + "</span>")
+        self.play_speed.observe(self.guarded(lambda _c: self._restart_clock()), names="value")
+        self.play_control.observe(self.guarded(self._play_tick), names="value")
+        self.play_control.observe(self.guarded(self._play_toggled), names="playing")
+
+    def advance(self, n_frames: int = 1, *, seconds: float | None = None,
+                allow_long: bool = False) -> "Explorer":
+        """Step Play ``n_frames`` frames without a front end (one update per frame).
+
+        Each frame covers ``speed × time_scale / play_fps`` simulated seconds
+        (:attr:`play_dt`), or ``seconds / n_frames`` when ``seconds`` is given,
+        through :meth:`play_step` sub-steps of at most ``1 / play_fps`` seconds;
+        only the frame's end is drawn (as Play does when drawing is slower than
+        real time).  A None from ``play_step`` ends the run; so does a refused
+        step, which keeps what was computed before it and names the reason.
+
+        Parameters
+        ----------
+        n_frames : int
+            Number of frames, at most :data:`MAX_ADVANCE_FRAMES`.
+        seconds : float, optional
+            Simulated seconds the frames cover together, at most
+            :data:`MAX_ADVANCE_SECONDS`.
+        allow_long : bool
+            Opt in to more frames or seconds than the limits.
+
+        Returns
+        -------
+        Explorer
+            ``self``.
+
+        Raises
+        ------
+        InputError
+            The explorer has no Play (no :meth:`play_step`), ``n_frames`` is not a
+            positive integer, ``seconds`` not a positive finite number, or either
+            is beyond its limit without ``allow_long``.
+        """
+        if not self.has_play:
+            raise InputError(f"{type(self).__name__} has no Play (it does not define play_step)")
+        n = check_count("n_frames", n_frames, MAX_ADVANCE_FRAMES, allow_long)
+        if seconds is None:
+            per_frame = self.play_dt
+            check_duration("n_frames × play_dt", n * per_frame, MAX_ADVANCE_SECONDS,
+                                 allow_long)
+        else:
+            per_frame = check_duration("seconds", seconds, MAX_ADVANCE_SECONDS,
+                                             allow_long) / n
+        for _ in range(n):
+            if not self._frame(per_frame):
+                break
+        return self
+
+    @property
+    def play_dt(self) -> float:
+        """Simulated seconds per Play frame: ``speed × time_scale / play_fps``."""
+        speed = self.play_speed.value if self.play_speed is not None else 1.0
+        return float(speed) * float(self.time_scale) / float(self.play_fps)
+
+    @property
+    def play_max_dt(self) -> float:
+        """The longest :meth:`play_step` sub-step: ``1 / play_fps`` simulated seconds."""
+        return 1.0 / float(self.play_fps)
+
+    def _frame(self, seconds: float | None = None) -> bool:
+        """One shown Play frame ``seconds`` on (default :attr:`play_dt`), in sub-steps.
+
+        False when Play ends: None from play_step, or a refused step (what was
+        computed before it is shown, with the reason).
+        """
+        seconds = self.play_dt if seconds is None else float(seconds)
+        start = dict(self.shown_values or self.values)
+        vals, ended, exc = run_substeps(self.play_step, start, seconds, self.play_max_dt)
+        new = {k: v for k, v in vals.items() if k in self.controls and not same_value(v, start.get(k))}
+        before = self.n_updates
+        if new:
+            self.set(**new)
+        shown = self.n_updates > before
+        if isinstance(exc, KeyboardInterrupt):      # Ctrl-C: what was computed is shown, then it stops
+            raise exc
+        if exc is not None:
+            message = f"play stopped: {self._reason(exc)}"
+            if self.message:
+                message += f"; {self.message}"
+            self._refuse(message, self.figure_message(exc))
+            return False
+        if new and not shown:        # the new values were refused (the message says why)
+            return False
+        return not ended
+
+    def _restart_clock(self) -> None:
+        """Play's wall clock: started with Play (one frame due at once), its rate following the speed."""
+        rate = float(self.play_speed.value) * float(self.time_scale)
+        if self.play_control is None or not self.play_control.playing:
+            self._clock = None
+        elif self._clock is None:
+            self._clock = PlayClock(rate, self.wall_clock, lead=1.0 / self.play_fps)
+        else:
+            self._clock.rate = rate
+
+    def _play_toggled(self, change) -> None:
+        if change["new"]:
+            self._play_origin = dict(self.shown_values)
+        self._clock = None
+        self._restart_clock()
+
+    @property
+    def _page_plays(self) -> bool:
+        """True when the page's canvas paces Play (its ``playing`` trait and tick messages)."""
+        canvas = getattr(self, "canvas", None)
+        return canvas is not None and canvas.has_trait("playing")
+
+    def _connect_page_play(self) -> None:
+        """Play in the page: the Play button's ``playing`` is the canvas's; the canvas's ticks advance it.
+
+        The page sends a tick as soon as the previous picture is painted; each tick covers the
+        wall-clock time since the last (:class:`~planargeo.widgets.play.PlayClock`) in sub-steps
+        of at most ``1 / play_fps`` s and sets one picture.  The Play widget's own timer is
+        slowed to nothing: it only shows the button.
+        """
+        if not (self.has_play and self._page_plays):
+            return
+        self.canvas.on_tick = self._page_tick
+        self.play_control.interval = 10 ** 7
+        self._play_link = W.link((self.play_control, "playing"), (self.canvas, "playing"))
+
+    def _page_tick(self) -> None:
+        """A tick from the page while it plays: one frame of the wall-clock time since the last.
+
+        Raises
+        ------
+        PlanargeoError
+            Play stopped on a refused step (the message says why; the page shows it).
+        """
+        if not self.play_control.playing:
+            return
+        if self._clock is None:
+            self._restart_clock()
+        seconds = self._clock.due()
+        if seconds <= 0 or self._frame(seconds):
+            return
+        if self.play_loop is not None and self.play_loop.value and self._play_origin and \
+                not self._message:
+            self.set(**self._play_origin)  # start again
+            return
+        self.play_control.playing = False
+        if self._message:
+            raise PlanargeoError(self._message)
+
+    def _play_tick(self, change) -> None:
+        if not self.play_control.playing or self._page_plays:
+            return
+        # the wall clock sets the simulated time: ticks that arrive while a slow frame was drawn
+        # are dropped, and the next one covers the time they would have (display frames dropped,
+        # no physics step skipped)
+        interval = self.play_control.interval / 1000.0
+        now = self.wall_clock()
+        last_end, last_cost = self._last_tick
+        if last_cost > interval and now - last_end < max(0.5 * interval, 0.01):
+            return
+        if self._clock is None:
+            self._restart_clock()
+        seconds = self._clock.due()
+        if seconds <= 0:
+            return
+        t0 = self.wall_clock()
+        ok = self._frame(seconds)
+        t1 = self.wall_clock()
+        self._last_tick = (t1, t1 - t0)
+        if ok:
+            return
+        if self.play_loop is not None and self.play_loop.value and self._play_origin and \
+                not self._message:
+            self.set(**self._play_origin)  # start again
+            return
+        self.play_control.playing = False

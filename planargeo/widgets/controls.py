@@ -1,0 +1,490 @@
+"""Controls as data, and the checks every control value passes (the explorers' inputs).
+
+A control is described by data (:class:`Step`, :class:`Choice`, :class:`Toggle`) and made
+into its widget by the base; :func:`check_control` is the one rule for what a control takes.
+Sliders keep a value outside their range (:class:`FloatSlider`), so that the explorer can
+refuse it by name instead of the browser silently moving it to an end.
+
+Examples
+--------
+>>> Step(0.0, 2.0, 0.5, 1.0, "length").make("length").value
+1.0
+>>> Choice(("revolute", "prismatic"), "prismatic", "joints").make("joints").value
+'prismatic'
+>>> check_control("links", Step(1, 20, 1, 3, integer=True).make("links"), 2.5)
+Traceback (most recent call last):
+...
+planargeo.errors.InputError: links must be an integer between 1 and 20, got 2.5
+"""
+from __future__ import annotations
+
+import contextlib
+import math
+import numbers
+import re
+import time
+from typing import Any, Callable
+
+import ipywidgets as W
+import numpy as np
+from traitlets import validate
+
+from planargeo.errors import InputError
+
+__all__ = ["CACHE_LIMIT", "TEXT_LIMIT", "cached", "Step", "Choice", "Toggle",
+           "make_control", "check_control", "ControlsMixin"]
+
+
+#: entries an explorer's per-parameter cache holds before it is emptied
+CACHE_LIMIT = 32
+
+
+def cached(cache: dict, key, make: Callable[[], Any]) -> Any:
+    """``cache[key]``, built by ``make()`` when missing; a full cache (> :data:`CACHE_LIMIT`) is emptied.
+
+    Explorers keep models or integrated shapes per parameter tuple with this, so
+    a slider sweep over many values cannot grow a cache without bound.
+
+    Parameters
+    ----------
+    cache : dict
+        The explorer's cache.
+    key : hashable
+        The parameters the entry depends on.
+    make : callable
+        Builds the entry when it is missing.
+
+    Returns
+    -------
+    Any
+        The cached entry.
+
+    Examples
+    --------
+    >>> store = {}
+    >>> cached(store, (1.0, 2.0), lambda: "model"), cached(store, (1.0, 2.0), lambda: "other")
+    ('model', 'model')
+    >>> for k in range(40):
+    ...     _ = cached(store, k, lambda: k)
+    >>> len(store) <= CACHE_LIMIT + 1
+    True
+    """
+    if key not in cache:
+        if len(cache) > CACHE_LIMIT:
+            cache.clear()
+        cache[key] = make()
+    return cache[key]
+
+
+class FloatSlider(W.FloatSlider):
+    """A float slider that keeps a value outside its range, for the explorer to refuse by name.
+
+    (An ipywidgets slider silently moves such a value to the nearest end.)
+    """
+
+    @validate("value")
+    def _validate_value(self, proposal):
+        return proposal["value"]
+
+
+class IntSlider(W.IntSlider):
+    """An integer slider that keeps a value outside its range (see :class:`FloatSlider`)."""
+
+    @validate("value")
+    def _validate_value(self, proposal):
+        return proposal["value"]
+
+
+class Step:
+    """A slider description: ``Step(lo, hi, step, value, label, integer=False)``.
+
+    Parameters
+    ----------
+    lo, hi : float
+        Range of the slider.
+    step : float
+        Slider step (made finer by :meth:`make` when ``value`` is not on its grid).
+    value : float
+        Default value.
+    label : str
+        Description shown beside the slider.
+    integer : bool
+        An integer slider.
+    """
+
+    def __init__(self, lo: float, hi: float, step: float, value: float, label: str = "",
+                 integer: bool = False):
+        self.lo, self.hi, self.step, self.value, self.label = lo, hi, step, value, label
+        self.integer = integer
+
+    def make(self, name: str) -> FloatSlider | IntSlider:
+        """The slider widget (a default off the grid makes the step finer: it must be shown exactly).
+
+        Parameters
+        ----------
+        name : str
+            Description used when the step has no label.
+
+        Returns
+        -------
+        FloatSlider or IntSlider
+        """
+        step = self.step if self.integer else _representable_step(self.value, self.lo, self.step)
+        cls, shown = (IntSlider, "d") if self.integer else (FloatSlider, f".{_decimals(step)}f")
+        return cls(value=self.value, min=self.lo, max=self.hi, step=step,
+                   description=self.label or name, continuous_update=True, readout_format=shown,
+                   style={"description_width": "initial"}, layout=W.Layout(width="310px"))
+
+
+class Choice:
+    """A list description: ``Choice(options, value, label, buttons=False)``.
+
+    Parameters
+    ----------
+    options : sequence
+        The options (values, or ``(label, value)`` pairs).
+    value : Any
+        Default option.
+    label : str
+        Description shown beside the list.
+    buttons : bool
+        Toggle buttons instead of a dropdown menu.
+    """
+
+    def __init__(self, options, value, label: str = "", buttons: bool = False):
+        self.options, self.value, self.label, self.buttons = tuple(options), value, label, buttons
+
+    def make(self, name: str) -> W.Dropdown | W.ToggleButtons:
+        """The list widget.
+
+        Parameters
+        ----------
+        name : str
+            Description used when the list has no label.
+
+        Returns
+        -------
+        ipywidgets.Dropdown or ipywidgets.ToggleButtons
+        """
+        cls = W.ToggleButtons if self.buttons else W.Dropdown
+        return cls(options=self.options, value=self.value, description=self.label or name,
+                   style={"description_width": "initial"},
+                   layout=W.Layout(width="auto" if self.buttons else "310px"))
+
+
+class Toggle:
+    """A checkbox description: ``Toggle(value, label)``.
+
+    Parameters
+    ----------
+    value : bool
+        Default.
+    label : str
+        Description shown beside the box.
+    """
+
+    def __init__(self, value: bool = False, label: str = ""):
+        self.value, self.label = bool(value), label
+
+    def make(self, name: str) -> W.Checkbox:
+        """The checkbox.
+
+        Parameters
+        ----------
+        name : str
+            Description used when the box has no label.
+
+        Returns
+        -------
+        ipywidgets.Checkbox
+        """
+        return W.Checkbox(value=self.value, description=self.label or name, indent=False)
+
+
+def make_control(name: str, spec):
+    """The widget of a control: ``spec.make(name)`` for a description, the widget itself otherwise.
+
+    Parameters
+    ----------
+    name : str
+        The control's name.
+    spec : Step, Choice, Toggle or ipywidgets.ValueWidget
+        The control's description or widget.
+
+    Returns
+    -------
+    ipywidgets.ValueWidget
+
+    Examples
+    --------
+    >>> make_control("show", Toggle(True)).value
+    True
+    """
+    return spec.make(name) if isinstance(spec, (Step, Choice, Toggle)) else spec
+
+
+_SELECTIONS = (W.Dropdown, W.ToggleButtons, W.RadioButtons, W.Select)
+
+
+def check_control(name: str, widget, value):
+    """``value`` as control ``name`` holds it, or :class:`InputError` naming the control.
+
+    A slider takes a finite real number in its range (an integer slider an
+    integral one), a list (dropdown, toggle buttons) one of its options, a
+    checkbox ``True`` or ``False``, a text box a string whose numbers are at most
+    :data:`TEXT_LIMIT` in magnitude (finite).
+
+    Parameters
+    ----------
+    name : str
+        The control's name (for the message).
+    widget : ipywidgets.ValueWidget
+        The control.
+    value : Any
+        The value to check.
+
+    Returns
+    -------
+    Any
+        The value as the control holds it (a float for a float slider, an int for an integer one).
+
+    Raises
+    ------
+    InputError
+        The control does not take the value.
+
+    Examples
+    --------
+    >>> check_control("angle", Step(-180, 180, 1.0, 0.0).make("angle"), 30)
+    30.0
+    >>> check_control("angle", Step(-180, 180, 1.0, 0.0).make("angle"), float("nan"))
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: angle must be a number between -180 and 180, got nan
+    >>> check_control("joints", W.Dropdown(options=("revolute", "prismatic")), None)
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: joints must be one of ['revolute', 'prismatic'], got None
+    >>> check_control("joint speeds", W.Text(), "1, 1e150")
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: joint speeds: numbers typed here must lie between -1e+06 and 1e+06, got 1e150
+    """
+    if isinstance(widget, (W.FloatSlider, W.IntSlider)):
+        integer = isinstance(widget, W.IntSlider)
+        real = isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_))
+        x = float(value) if real else float("nan")
+        if not (widget.min <= x <= widget.max and (x.is_integer() or not integer)):
+            kind = "an integer" if integer else "a number"
+            raise InputError(f"{name} must be {kind} between {widget.min:g} and {widget.max:g}, "
+                             f"got {value!r}")
+        return int(x) if integer else x
+    if isinstance(widget, _SELECTIONS):
+        options = [o[1] if isinstance(o, tuple) else o for o in widget.options]
+        try:
+            found = value in options
+        except (TypeError, ValueError):  # an array compared with the options
+            found = False
+        if not found:
+            raise InputError(f"{name} must be one of {options}, got {value!r}")
+        return value
+    if isinstance(widget, W.Checkbox):
+        if not isinstance(value, (bool, np.bool_)):
+            raise InputError(f"{name} must be True or False, got {value!r}")
+        return bool(value)
+    if isinstance(widget, W.Text):
+        if not isinstance(value, str):
+            raise InputError(f"{name} must be text, got {value!r}")
+        for tok in _NUMBER.findall(value):
+            x = float(tok)
+            if not abs(x) <= TEXT_LIMIT:
+                raise InputError(f"{name}: numbers typed here must lie between {-TEXT_LIMIT:g} and "
+                                 f"{TEXT_LIMIT:g}, got {tok}")
+    return value
+
+
+#: the largest magnitude of a number typed into an explorer's text field (a larger one is refused
+#: by name before any computation, instead of overflowing inside it)
+TEXT_LIMIT = 1e6
+_NUMBER = re.compile(r"(?<![\w.])[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?(?![\w.])|"
+                     r"(?<![\w])[-+]?(?:inf(?:inity)?|nan)(?![\w])", re.IGNORECASE)
+
+
+def _grid_ok(value: float, lo: float, step: float) -> bool:
+    """True when ``value`` lies on the slider grid ``lo + k step`` (what the front end shows)."""
+    if not step or step <= 0:
+        return True
+    k = (value - lo) / step
+    return abs(k - round(k)) <= 1e-6
+
+
+def _on_grid(value: float, lo: float, step: float) -> float:
+    """``value`` rounded to the grid ``lo + k step`` (as a slider in the browser rounds it)."""
+    if not step or step <= 0:
+        return value
+    return lo + round((value - lo) / step) * step
+
+
+def _representable_step(value: float, lo: float, step: float) -> float:
+    """The slider step, made finer (÷2, ÷5, ÷10, ... ÷1000) until its grid holds ``value``."""
+    for f in (1, 2, 5, 10, 20, 50, 100, 1000):
+        if _grid_ok(value, lo, step / f):
+            return step / f
+    return float(step)
+
+
+def _decimals(step: float) -> int:
+    """Decimal places that show every value of a slider grid of this step."""
+    if not step or step <= 0:
+        return 3
+    d = 0
+    while d < 6 and abs(step * 10 ** d - round(step * 10 ** d)) > 1e-9:
+        d += 1
+    return d
+
+
+def same_value(a, b) -> bool:
+    try:
+        return bool(a == b) or (a != a and b != b)
+    except Exception:  # noqa: BLE001 - arrays and other odd values
+        return a is b
+
+
+def numeric_failure(exc: Exception) -> bool:
+    """True for numpy's floating-point errors (overflow, invalid value) raised inside a computation."""
+    if isinstance(exc, (FloatingPointError, OverflowError)):
+        return True
+    text = str(exc)
+    return isinstance(exc, RuntimeWarning) and ("overflow" in text or "invalid value" in text)
+
+
+def short_text(text: str) -> str:
+    return text if len(text) < 90 else text[:87] + "..."
+
+
+def shown_as(name: str, value) -> str:
+    """``name = value`` for a message (numbers short, text quoted)."""
+    real = isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_))
+    return f"{name} = {value:g}" if real else f"{name} = {value!r}"
+
+
+class ControlsMixin:
+    """The controls of :class:`~planargeo.widgets.base.Explorer`: made from their descriptions, observed,
+    the browser's slider echo screened out, set quietly by the explorer itself."""
+
+    def _make_controls(self, values: dict[str, Any]) -> None:
+        """The controls (described as data or as widgets), the base's key and focus, the given values."""
+        self.controls: dict[str, W.ValueWidget] = {k: make_control(k, c)
+                                                   for k, c in dict(self.make_controls()).items()}
+        bad = sorted(set(self.display_controls) - set(self.controls))
+        if bad:  # a programming error in the subclass, not user input
+            raise InputError(f"{type(self).__name__}.display_controls names no control {bad[0]!r}")
+        extra = ["key"]
+        focus = list(self.focus_options())
+        if focus and "focus" not in self.controls:
+            self.controls["focus"] = Choice(["all", *focus], "all", "focus").make("focus")
+            extra.append("focus")
+        if "key" not in self.controls:
+            self.controls["key"] = Toggle(False, "key (legend)").make("key")
+        self.display_controls = tuple(self.display_controls) + tuple(
+            k for k in extra if k not in self.display_controls)
+        self._base_focus = "focus" in extra      # the base's focus menu: its options follow the values
+        unknown = sorted(set(values) - set(self.controls))
+        if unknown:
+            raise InputError(f"{type(self).__name__} has no control {unknown[0]!r} "
+                             f"(controls: {', '.join(self.controls)})")
+        for k, v in values.items():
+            if k != "focus" or "focus" not in extra:
+                self.controls[k].value = check_control(k, self.controls[k], v)
+        if "focus" in values and "focus" in extra:  # the options of the values given, then the focus
+            self.controls["focus"].options = ("all", *self.focus_options())
+            self.controls["focus"].value = check_control("focus", self.controls["focus"], values["focus"])
+        for w in self.controls.values():  # a value the slider's grid cannot show: a finer step
+            if isinstance(w, W.FloatSlider) and w.step and not _grid_ok(w.value, w.min, w.step):
+                w.step = _representable_step(w.value, w.min, w.step)
+        self.defaults = {k: w.value for k, w in self.controls.items()}
+
+    def _make_observer(self, name: str) -> Callable:
+        widget = self.controls[name]
+        slider = isinstance(widget, W.FloatSlider)
+
+        def _observer(change):
+            if slider and self._screen_echo(name, widget, change):
+                return
+            if self._quiet:  # the explorer setting its own controls
+                return
+            self._changed.add(name)
+            if self._hold:
+                self._pending = True
+                return
+            self._update()
+
+        return _observer
+
+    #: seconds during which the browser's rounded copy of a set value counts as its echo
+    ECHO_SECONDS = 2.0
+
+    def _screen_echo(self, name: str, widget, change) -> bool:
+        """True for a slider's echo: ignore it (no update, no snapping to the grid).
+
+        A browser slider rounds a value the explorer set (a drag, a Play frame)
+        to its step and sends it back; such a message (one from the front end,
+        i.e. inside ipywidgets' ``set_state``) equal to the rounded copy of a
+        value set in the last :attr:`ECHO_SECONDS` is not a user's change.
+        """
+        new, old = change["new"], change["old"]
+        now = time.monotonic()
+        from_front = "value" in (getattr(widget, "_property_lock", None) or {})
+        recent = [r for r in self._echo.get(name, []) if now - r[0] <= self.ECHO_SECONDS]
+        if from_front and isinstance(new, numbers.Real) and any(
+                abs(float(new) - r[2]) <= 1e-9 * max(1.0, abs(r[2])) for r in recent):
+            sh = self._shadow.get(name)
+            exact = sh[0] if sh is not None and old == sh[1] else old
+            self._shadow[name] = (exact, new)
+            self._echo[name] = recent
+            return True
+        self._shadow.pop(name, None)
+        if not from_front and isinstance(new, float) and math.isfinite(new) and \
+                not _grid_ok(new, widget.min, widget.step):
+            recent.append((now, new, _on_grid(new, widget.min, widget.step)))
+            self._echo[name] = recent[-16:]
+        return False
+
+    @property
+    def values(self) -> dict[str, Any]:
+        """Current value of every control (a dragged value, not the slider's rounded echo of it).
+
+        Returns
+        -------
+        dict
+        """
+        out = {}
+        for k, w in self.controls.items():
+            v = w.value
+            sh = self._shadow.get(k)
+            out[k] = sh[0] if sh is not None and v == sh[1] else v
+        return out
+
+    @contextlib.contextmanager
+    def _quietly(self):
+        """Set controls without triggering updates (the explorer's own changes)."""
+        self._quiet += 1
+        try:
+            yield
+        finally:
+            self._quiet -= 1
+
+    def _set_controls(self, values: dict[str, Any]) -> None:
+        with self._quietly():
+            for k, v in values.items():
+                self.controls[k].value = v
+
+    def _focus_follow(self, values: dict[str, Any]) -> dict[str, Any]:
+        """``{"focus": "all"}`` when the focus chosen no longer exists for ``values`` (else nothing)."""
+        if not self._base_focus or values.get("focus", "all") == "all":
+            return {}
+        try:
+            options = ["all", *self.focus_options()]
+        except Exception:  # noqa: BLE001 - options that cannot be listed: keep the choice
+            return {}
+        return {} if values["focus"] in options else {"focus": "all"}

@@ -1,0 +1,279 @@
+"""Exports of what an explorer shows: SVG and PNG files, GIF and MP4 animations, download links.
+
+Every file is drawn whole by matplotlib (a native explorer's picture through
+:mod:`planargeo.draw.render`), rendered to memory and written atomically
+(:func:`planargeo.files.atomic_write`).  The same view always gives the same file.
+"""
+from __future__ import annotations
+
+import base64
+import html
+import io
+import itertools
+import os
+import shutil
+import subprocess
+import tempfile
+from pathlib import Path
+
+import matplotlib
+import numpy as np
+
+from planargeo.errors import InputError, OutputError
+from planargeo.files import atomic_write
+from planargeo.widgets.play import MAX_ANIMATION_FRAMES, check_count
+
+__all__ = ["ExportMixin"]
+
+_export_counter = itertools.count(1)
+
+
+class ExportMixin:
+    """Exports for :class:`~planargeo.widgets.base.Explorer` (files, animations, links, the stored PNG)."""
+
+    def _export_path(self, path, ext: str) -> Path:
+        if path is None:
+            d = self.export_dir or Path.cwd()
+            path = Path(d) / f"planargeo-{self.slug}-{os.getpid()}-{next(_export_counter)}.{ext}"
+        try:
+            path = Path(path)
+            special = path.exists() and not path.is_file()
+        except TypeError:
+            raise InputError(f"path must be a str or os.PathLike naming a file, got {path!r}") from None
+        except OSError as e:                             # e.g. a name too long for the file system
+            raise OutputError(f"cannot write {path}: {e.strerror or e}") from None
+        if special:
+            raise OutputError(f"cannot write {path}: it exists and is not a regular file")
+        return path
+
+    def _svg_bytes(self) -> bytes:
+        fig = self._picture_figure() if self.native else self.fig   # a native one: its picture
+        buf = io.BytesIO()
+        # no date and fixed element ids: the same view always gives the same file
+        with matplotlib.rc_context({"svg.hashsalt": "planargeo"}):
+            fig.savefig(buf, format="svg", metadata={"Date": None})
+        return buf.getvalue()
+
+    def _picture_figure(self):
+        """The shown picture drawn by matplotlib (:func:`planargeo.draw.render.figure`), at 100 dpi."""
+        from planargeo.draw.render import figure
+
+        return figure(self.picture())
+
+    def _png_bytes(self, dpi: float | None = None) -> bytes:
+        buf = io.BytesIO()
+        if self.native:   # the picture's size is the figure's in pixels: drawn at 100 dpi
+            self._picture_figure().savefig(buf, format="png", dpi=100.0 * (dpi or self.dpi) / self.dpi,
+                                           metadata={"Software": None})
+            return buf.getvalue()
+        self.fig.savefig(buf, format="png", dpi=dpi or self.dpi, metadata={"Software": None})
+        return buf.getvalue()
+
+    def export_svg(self, path=None) -> Path:
+        """Write the current view to an SVG file, atomically, and return its path.
+
+        The view is rendered to memory first and the file replaced in one step
+        (:func:`planargeo.files.atomic_write`): a failure leaves an existing file
+        as it was.  The file depends on the view only (no date, fixed element ids).
+
+        Parameters
+        ----------
+        path : str or os.PathLike, optional
+            The file; default ``planargeo-<slug>-<pid>-<n>.svg`` in ``export_dir``
+            (or the current folder).
+
+        Returns
+        -------
+        pathlib.Path
+            The file written (absolute).
+
+        Raises
+        ------
+        InputError
+            ``path`` names no file.
+        OutputError
+            The file cannot be written (no space, no permission, a folder or a
+            device such as ``/dev/full``, which is never replaced).
+        """
+        path = self._export_path(path, "svg")
+        self.last_export = atomic_write(path, self._svg_bytes()).resolve()
+        return self.last_export
+
+    def export_png(self, path=None) -> Path:
+        """Write the current view to a PNG file (at the figure's size), atomically.
+
+        Parameters
+        ----------
+        path : str or os.PathLike, optional
+            The file; default ``planargeo-<slug>-<pid>-<n>.png`` in ``export_dir``.
+
+        Returns
+        -------
+        pathlib.Path
+            The file written (absolute).
+
+        Raises
+        ------
+        InputError
+            ``path`` names no file.
+        OutputError
+            The file cannot be written.
+        """
+        path = self._export_path(path, "png")
+        self.last_export = atomic_write(path, self._png_bytes()).resolve()
+        return self.last_export
+
+    def _frames_rgb(self, frames: int, fps: int | None = None) -> list[np.ndarray]:
+        """RGB images of ``frames`` Play frames at ``fps`` in real time from the shown state (restored after)."""
+        seconds = self.play_dt * self.play_fps / float(fps or self.play_fps)
+        start = dict(self.shown_values)
+        state, readout = self.state, dict(self.readout_values)
+        out = []
+        self._exporting = True
+        try:
+            for k in range(frames):
+                if k and not self._frame(seconds):
+                    break
+                if self.native:
+                    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+                    canvas = FigureCanvasAgg(self._picture_figure())
+                    canvas.draw()
+                    out.append(np.asarray(canvas.buffer_rgba())[..., :3].copy())
+                    continue
+                self.fig.canvas.draw()
+                out.append(np.asarray(self.fig.canvas.buffer_rgba())[..., :3].copy())
+        finally:
+            self._exporting = False
+            self.set(**start)
+            if self.values == start and self._message == "":
+                self._safe_redraw()
+            else:  # pragma: no cover - the start state is always showable
+                self.state, self.readout_values = state, readout
+        return out
+
+    def export_animation(self, path=None, *, format: str = "gif", frames: int = 60,
+                         fps: int = 20, allow_long: bool = False) -> Path:
+        """Write ``frames`` Play frames from the shown state as a GIF or MP4 file, atomically.
+
+        The file plays in real time (× Play's speed and :attr:`time_scale`): frame
+        ``k`` shows the state ``k / fps`` of its seconds later.  The explorer
+        returns to the shown state afterwards; stopping (Ctrl-C) writes nothing
+        and leaves it there too.  GIF uses pillow; MP4 needs the ``ffmpeg``
+        program (Debian's ``ffmpeg`` package).
+
+        Parameters
+        ----------
+        path : str or os.PathLike, optional
+            The file; default ``planargeo-<slug>-<pid>-<n>.<format>`` in ``export_dir``.
+        format : {"gif", "mp4"}
+            File format.
+        frames : int
+            Number of frames (fewer if Play ends first), at most
+            :data:`~planargeo.widgets.play.MAX_ANIMATION_FRAMES`.
+        fps : int
+            Frames per second of the file.
+        allow_long : bool
+            Opt in to more frames than the limit.
+
+        Returns
+        -------
+        pathlib.Path
+            The file written (absolute).
+
+        Raises
+        ------
+        InputError
+            No Play in this explorer, an unknown format, frames / fps not positive
+            integers, or more frames than the limit without ``allow_long``.
+        OutputError
+            The file cannot be written, or MP4 without ffmpeg.
+        """
+        data = self._animation_bytes(format, frames, fps, allow_long)
+        path = self._export_path(path, format)
+        self.last_export = atomic_write(path, data).resolve()
+        return self.last_export
+
+    def _animation_bytes(self, format: str, frames: int, fps: int, allow_long: bool = False) -> bytes:
+        if format not in ("gif", "mp4"):
+            raise InputError(f"format must be 'gif' or 'mp4', got {format!r}")
+        frames = check_count("frames", frames, MAX_ANIMATION_FRAMES, allow_long)
+        fps = check_count("fps", fps, 1000, allow_long=None)
+        if not self.has_play:
+            raise InputError(f"{type(self).__name__} has no animation (it does not define play_step)")
+        ffmpeg = shutil.which("ffmpeg")
+        if format == "mp4" and ffmpeg is None:
+            raise OutputError("mp4 export needs the ffmpeg program, which is not installed "
+                              "(install Debian's ffmpeg, or use format='gif')")
+        imgs = self._frames_rgb(frames, fps)
+        if format == "gif":
+            from PIL import Image
+
+            pics = [Image.fromarray(a).quantize(colors=128, method=Image.Quantize.MEDIANCUT)
+                    for a in imgs]
+            buf = io.BytesIO()
+            pics[0].save(buf, format="GIF", save_all=True, append_images=pics[1:],
+                         duration=max(1, int(round(1000 / fps))), loop=0)
+            return buf.getvalue()
+        h, w = imgs[0].shape[:2]
+        with tempfile.TemporaryDirectory() as d:
+            out = Path(d) / "movie.mp4"
+            cmd = [ffmpeg, "-loglevel", "error", "-y", "-f", "rawvideo", "-pix_fmt", "rgb24",
+                   "-s", f"{w}x{h}", "-r", str(fps), "-i", "-",
+                   "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p",
+                   "-vcodec", "libx264", str(out)]
+            try:
+                r = subprocess.run(cmd, input=b"".join(a.tobytes() for a in imgs),
+                                   capture_output=True, timeout=300)
+            except (OSError, subprocess.SubprocessError) as e:
+                raise OutputError(f"ffmpeg failed: {e}") from None
+            if r.returncode != 0 or not out.exists():
+                raise OutputError(f"ffmpeg failed: {r.stderr.decode(errors='replace')[-300:]}")
+            return out.read_bytes()
+
+    @property
+    def has_mp4(self) -> bool:
+        """True when MP4 export works here (the ``ffmpeg`` program is installed)."""
+        return shutil.which("ffmpeg") is not None
+
+    def _export_bytes(self, kind: str) -> bytes:
+        if kind == "svg":
+            return self._svg_bytes()
+        if kind == "png":
+            return self._png_bytes()
+        return self._animation_bytes(kind, 60, self.play_fps)
+
+    def _export_clicked(self, kind: str = "svg") -> None:
+        """Export button: a download link in the page (and the file in ``export_dir`` if set)."""
+        mime = {"svg": "image/svg+xml", "png": "image/png", "gif": "image/gif",
+                "mp4": "video/mp4"}[kind]
+        try:
+            if self.export_dir is not None:
+                p = {"svg": self.export_svg, "png": self.export_png}.get(
+                    kind, lambda: self.export_animation(format=kind, fps=self.play_fps))()
+                data, name = p.read_bytes(), p.name
+                saved = f"saved <code>{html.escape(str(p))}</code> "
+            else:
+                data, name, saved = self._export_bytes(kind), f"planargeo-{self.slug}.{kind}", ""
+            href = f"data:{mime};base64,{base64.b64encode(data).decode('ascii')}"
+            self.export_label.value = (
+                f"<div style='white-space:nowrap;overflow:hidden;text-overflow:ellipsis'>"
+                f"<a download='{html.escape(name)}' href='{href}' class='planargeo-download' "
+                f"style='font-weight:bold'>⬇ {html.escape(name)}</a> {saved}</div>")
+        except Exception as exc:  # noqa: BLE001
+            self.export_label.value = (f"<span style='color:#b00020'>export failed: "
+                                       f"{html.escape(str(exc))}</span>")
+
+    def _repr_mimebundle_(self, **kwargs):
+        """The widget view, plus a static PNG of the figure (shown where widgets are not, e.g. GitHub)."""
+        bundle = self.widget._repr_mimebundle_(**kwargs)
+        if isinstance(bundle, tuple):  # (data, metadata)
+            data = bundle[0]
+        else:
+            data = bundle
+        if isinstance(data, dict):
+            try:
+                data["image/png"] = base64.b64encode(self._png_bytes()).decode("ascii")
+            except Exception:  # noqa: BLE001 - the picture is a courtesy, never an error
+                pass
+        return bundle

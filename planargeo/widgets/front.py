@@ -1,0 +1,382 @@
+"""The front end of an explorer: its figure or picture, its page widgets, readout and messages.
+
+Display modes (:class:`~planargeo.widgets.base.Explorer` ``display``): ``"page"`` (the
+browser draws the picture: :class:`~planargeo.widgets.canvas.PictureCanvas`), ``"image"``
+(a PNG of it in an :class:`ipywidgets.Image`), ``"agg"`` (nothing shown; the picture is
+built when asked), and, for an explorer still drawn by matplotlib artists, ``"ipympl"``.
+A native explorer (:meth:`~planargeo.widgets.base.Explorer.scene_picture`) has no figure.
+"""
+from __future__ import annotations
+
+import contextlib
+import html
+from typing import Any
+
+import ipywidgets as W
+import matplotlib
+import numpy as np
+from matplotlib.figure import Figure
+
+from planargeo.draw.artists import has_legend_entries, place_labels
+from planargeo.draw.style import EXPLORER_MIN_WIDTH_PX, EXPLORER_TICK_PT, LABEL_PT
+from planargeo.errors import PlanargeoError
+from planargeo.widgets.frames import Frames, live_canvas, live_png
+from planargeo.widgets.readout import explain_html, fmt, value_text
+
+__all__ = ["FrontMixin", "backend_is_ipympl"]
+
+
+def backend_is_ipympl() -> bool:
+    """True when matplotlib's backend is ipympl's (``%matplotlib widget``).
+
+    Returns
+    -------
+    bool
+    """
+    name = matplotlib.get_backend().lower()
+    return "ipympl" in name or name in ("widget", "module://ipympl.backend_nbagg")
+
+
+def _value_and_unit(full: str, bare: str) -> tuple[str, str]:
+    """The readout's value and unit columns: a common unit goes in its own column (HTML-safe)."""
+    if full.startswith(bare) and full[len(bare):].startswith(" "):
+        return bare, full[len(bare) + 1:]
+    return full, ""
+
+
+class FrontMixin:
+    """The front end of :class:`~planargeo.widgets.base.Explorer` (figure or picture, widgets, readout)."""
+
+    def _make_widgets(self) -> None:
+        """The readout, message line, buttons and "what is shown" panel (fixed widths and heights)."""
+        fig_w = f"{self.figure_px[0]}px"
+        self.readout = W.HTML(layout=W.Layout(width=fig_w, max_width="100%", overflow="hidden"))
+        self.readout_strings: dict[str, str] = {}
+        self.message_box = W.HTML(layout=W.Layout(width=fig_w, max_width="100%", height="2.8em",
+                                                  min_height="2.8em", max_height="2.8em",
+                                                  overflow="auto"))
+
+        def button(description, icon, tooltip, click):
+            b = W.Button(description=description, icon=icon, tooltip=tooltip, layout=W.Layout(width="auto"))
+            b.on_click(self.guarded(lambda _b: click()))
+            return b
+
+        self.reset_button = button("Reset", "undo", "Return every control to its default", self.reset)
+        self.export_button, self.export_png_button, self.export_gif_button, self.export_mp4_button = (
+            button(kind.upper(), icon, f"Export {what} as {kind.upper()} (a download link)",
+                   lambda kind=kind: self._export_clicked(kind))
+            for kind, icon, what in (("svg", "download", "the current view"),
+                                     ("png", "download", "the current view"),
+                                     ("gif", "film", "an animation"), ("mp4", "film", "an animation")))
+        self.export_label = W.HTML(layout=W.Layout(width="310px", height="1.8em", overflow="hidden"))
+        self.explain_box = W.HTML(layout=W.Layout(width=fig_w, max_width="100%"))
+        self.explain_box.add_class("planargeo-explain")
+
+    def _figure_inches(self, figsize) -> tuple[float, float]:
+        """The figure's size in inches: at least the notebook column's width, same aspect."""
+        w, h = (float(v) for v in figsize)
+        min_w = EXPLORER_MIN_WIDTH_PX / self.dpi
+        if w < min_w:
+            w, h = min_w, h * min_w / w
+        return w, h
+
+    def _make_artist_figure(self) -> None:
+        """The matplotlib figure of an explorer drawn by its artists (not native)."""
+        self.fig, self.ax = self._make_figure(self._figsize)
+        self.frames = Frames(self.fig)
+        self.setup_axes(self.ax)
+        place_labels(self.ax)  # labels avoid each other and stay inside the axes
+        self.make_artists(self.ax)
+        self._msg_text = self.ax.text(0.5, 0.5, "", transform=self.ax.transAxes, ha="center",
+                                      va="center", fontsize=11, color="#b00020", zorder=100,
+                                      wrap=True,
+                                      bbox=dict(boxstyle="round", fc="white", ec="#b00020",
+                                                alpha=0.9),
+                                      visible=False)
+        self._msg_text._planargeo_overlay = True  # a deliberate box over the figure (legibility)
+
+    def _make_figure(self, figsize):
+        w, h = figsize
+        fig = Figure(figsize=(w, h), dpi=self.dpi)
+        if self.display_mode == "ipympl":
+            live_canvas(fig)   # draws when the explorer says so, sends light PNGs
+            fig.canvas.header_visible = False
+            fig.canvas.footer_visible = False
+            fig.canvas.toolbar_visible = True      # its own column, never over the axes
+            fig.canvas.toolbar_position = "left"
+            fig.canvas.resizable = False
+        else:
+            from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+            FigureCanvasAgg(fig)
+        ax = fig.add_subplot(1, 1, 1)
+        if self.display_mode == "ipympl":
+            # the toolbar's coordinate message goes to ipympl's footer, which is hidden: sending it
+            # on every mouse move would only load the page and the server during a drag
+            ax.format_coord = lambda x, y: ""
+        ax.tick_params(labelsize=EXPLORER_TICK_PT)
+        fig.subplots_adjust(left=0.09, right=0.98, bottom=0.07, top=0.97)
+        return fig, ax
+
+    @property
+    def figure_px(self) -> tuple[int, int]:
+        """Native size of the figure in pixels (as shown at 100 % zoom)."""
+        w, h = self._figsize
+        return int(round(w * self.dpi)), int(round(h * self.dpi))
+
+    def _layout(self):
+        wpx, _ = self.figure_px
+        if self.display_mode == "ipympl":
+            fig_widget = self.fig.canvas
+        elif self.display_mode == "image":
+            # shown at its native size (text sizes as designed), shrinking with a narrow output area
+            self.image = W.Image(format="png", layout=W.Layout(width=f"{wpx}px", height="auto",
+                                                               max_width="100%"))
+            fig_widget = self.image
+        elif self.display_mode == "page":
+            self.image = None
+            self.canvas = self._make_canvas()
+            fig_widget = self.canvas
+        else:
+            self.image = None
+            fig_widget = W.HTML("<i>(figure drawn off-screen)</i>")
+        buttons = W.HBox([self.reset_button, W.HTML("<span style='padding:0 4px'>export</span>"),
+                          self.export_button, self.export_png_button]
+                         + ([self.export_gif_button] if self.has_play else [])
+                         + ([self.export_mp4_button] if self.has_play and self.has_mp4 else []),
+                         # the buttons keep their names: a row that does not fit wraps
+                         layout=W.Layout(flex_flow="row wrap", width="330px"))
+        for b in buttons.children:
+            if isinstance(b, W.Button):
+                b.layout.flex = "0 0 auto"
+        play = ([W.HBox([self.play_control, self.play_speed, self.play_scale, self.play_loop])]
+                if self.has_play else [])
+        controls = W.VBox(list(self.controls.values()) + play + self.extra_widgets()
+                          + [buttons, self.export_label],
+                          layout=W.Layout(width="330px", min_width="330px", overflow="visible"))
+        # controls on the left; on the right a reserved message line, the figure and the readout
+        # under it: fixed widths and heights above the readout, so nothing moves when a message
+        # appears or the readout changes (the readout only grows downwards, with nothing below)
+        right = W.VBox([self.message_box, fig_widget, self.readout, self.explain_box],
+                       layout=W.Layout(align_items="flex-start", overflow="visible"))
+        head = W.HTML(f"<h4 style='margin:2px'>{html.escape(self.title)}</h4>")
+        body = W.HBox([controls, right],
+                      layout=W.Layout(flex_flow="row wrap", align_items="flex-start"))
+        root = W.VBox([head, body])
+        root.add_class("planargeo-explorer")
+        self.readout.add_class("planargeo-readout")
+        self.message_box.add_class("planargeo-message")
+        fig_widget.add_class("planargeo-figure")
+        return root
+
+    def _make_canvas(self):
+        from planargeo.widgets.canvas import PictureCanvas
+
+        return PictureCanvas(on_drag=self._page_drag, on_view=self._page_view_to)
+
+    def redraw(self) -> None:
+        """Draw the figure and send it to the page.
+
+        Only what can change is drawn (:class:`~planargeo.widgets.frames.Frames`:
+        the axes' background is kept while the view stays put), and the page gets
+        a light PNG (:func:`~planargeo.widgets.frames.live_png`) at once: in image
+        mode as the image's value, under ipympl through its canvas, without
+        ipympl's round trip through the page.
+        """
+        if self.display_mode == "page":
+            self.canvas.picture = self.picture()
+            return
+        if self.native:   # image: the picture drawn by matplotlib into the image; agg: nothing to draw
+            if self.display_mode == "image":
+                self.image.value = self._png_bytes()
+            return
+        self.frames.draw()
+        if self.display_mode == "ipympl":
+            self.fig.canvas.blit()
+        elif self.display_mode == "image":
+            self.image.value = live_png(np.asarray(self.fig.canvas.buffer_rgba()))
+
+    def picture(self) -> dict:
+        """What is shown, as a picture's plain data (:mod:`planargeo.draw.picture`).
+
+        A native explorer's :meth:`scene_picture` of the shown state (an explorer drawn by
+        artists: read off them, :func:`planargeo.draw.from_axes.picture_from_axes`), in the
+        view the user zoomed or panned to in the page, if any; with the handles that can be
+        dragged now, the key when it is on, and the message of a refused value.
+
+        Returns
+        -------
+        dict
+
+        Raises
+        ------
+        PlanargeoError
+            A native explorer with no state shown yet.
+        """
+        from planargeo.draw.from_axes import picture_from_axes
+
+        handles = []
+        for h in self.all_handles():
+            try:
+                where = h.where()
+            except Exception:  # noqa: BLE001 - a handle that cannot say where it is: not shown
+                where = None
+            if where is not None:
+                handles.append((h.name, where, f"drag to change {h.name}"))
+        view = self._page_view
+        pic = self.scene_picture(self.state, view) if self.state is not None else None
+        if pic is None and self.native:
+            raise PlanargeoError(f"{type(self).__name__} has no state to draw yet")
+        if pic is None:
+            try:
+                explain = dict(self.explain())
+            except Exception:  # noqa: BLE001 - descriptions are a courtesy
+                explain = {}
+            return picture_from_axes(self.ax, explain=explain, view=view, handles=handles).to_dict()
+        for name, where, desc in handles:
+            pic.handle(name, where, symbol=name, desc=desc)
+        if self.controls["key"].value:
+            self._add_key(pic)
+        if self._figure_text:   # a refused value, said on the picture as on a figure
+            (x0, x1, y0, y1) = pic.box
+            pic.text("figure message", ((x0 + x1) / 2, (y0 + y1) / 2), self._figure_text, role="text",
+                     color="#b00020", ha="center", va="center", z=100,
+                     desc=f"refused: {self._figure_text}")
+        return pic.to_dict()
+
+    @staticmethod
+    def _key_entries(pic) -> list[tuple[str, str, str]]:
+        """``(symbols, meaning, colour)`` of the described elements of the picture, one per meaning."""
+        groups: dict[tuple[str, str], list[str]] = {}
+        for el in pic.elements:
+            sym = el.get("symbol") or ""
+            if not sym or el["id"] == "figure message" or el["id"].startswith("key "):
+                continue
+            meaning = str(el.get("desc") or "").split(":")[0].split("(")[0].strip()
+            syms = groups.setdefault((meaning, el.get("color") or "#222"), [])
+            if sym not in syms:
+                syms.append(sym)
+        return [(", ".join(syms) if len(syms) <= 2 else f"{syms[0]}…{syms[-1]}", meaning, color)
+                for (meaning, color), syms in groups.items()]
+
+    def _add_key(self, pic) -> None:
+        """The key: one line per symbol of the picture, in its colour, at the upper left."""
+        x0, _x1, _y0, y1 = pic.box
+        for k, (sym, meaning, color) in enumerate(self._key_entries(pic)[:12]):
+            text = f"{sym}: {meaning}" if meaning else sym
+            pic.text(f"key {k + 1}", (x0, y1), text[:48], role="text", color=color, ha="left",
+                     va="top", dx=6.0, dy=-4.0 - 14.0 * k, z=90, desc=f"key: {text}")
+
+    def _has_key_entries(self) -> bool:
+        """True when something drawn now has an entry in the key (a native picture: its symbols)."""
+        return self.state is not None if self.native else has_legend_entries(self.ax)
+
+    def _draw_key(self) -> None:
+        """The legend of labelled artists when the "key" control is on (removed when off).
+
+        A native explorer's key is part of its picture (:meth:`picture`)."""
+        if self.native:
+            return
+        if self._legend is not None:
+            with contextlib.suppress(Exception):
+                self._legend.remove()
+            self._legend = None
+        if not self.controls["key"].value:
+            return
+        from planargeo.draw.artists import legend_handles
+
+        handles = legend_handles(self.ax)
+        if handles:
+            self._legend = self.ax.legend(handles=handles, loc="upper left", fontsize=LABEL_PT,
+                                          framealpha=0.9, handlelength=1.6, borderaxespad=0.3)
+            self._legend.set_zorder(50)
+
+    def _page_view_to(self, box) -> None:
+        """The user zoomed or panned in the page (None: back to the explorer's own view)."""
+        self._page_view = None if box is None else tuple(box)
+        self._safe_redraw()
+
+    def _set_message(self, text: str) -> None:
+        self._message = text
+        if text:
+            self.message_box.value = (f"<div style='color:#b00020;font-weight:bold'>"
+                                      f"⚠ {html.escape(text)}</div>")
+        else:
+            self.message_box.value = ""
+
+    def _show_figure_message(self, text: str) -> None:
+        self._figure_text = text
+        if self._msg_text is not None:
+            self._msg_text.set_text(text)
+            self._msg_text.set_visible(bool(text))
+
+    @property
+    def figure_text(self) -> str:
+        """The message drawn on the figure or picture ("" when none is shown)."""
+        return self._figure_text
+
+    def _readout_html(self, values: dict[str, Any]) -> str:
+        zero = float(self.zero_tol) * float(self.scale)
+        self.readout_strings = {}
+        rows = []
+        for k, v in values.items():
+            if str(k).startswith("_"):
+                continue
+            full = value_text(v, self.units.get(k, ""), zero=zero)
+            self.readout_strings[str(k)] = html.unescape(full)
+            text, unit = _value_and_unit(full, fmt(v, zero=zero))
+            rows.append(
+                f"<tr><td style='padding-right:6px;line-height:1.25;white-space:nowrap;"
+                f"overflow:hidden;text-overflow:ellipsis;max-width:300px' title='{html.escape(str(k))}'>"
+                f"{html.escape(str(k))}</td>"
+                f"<td style='text-align:right;font-family:monospace;line-height:1.25;"
+                f"white-space:nowrap'>{text}</td>"
+                f"<td style='padding-left:3px;line-height:1.25;white-space:nowrap;color:#555'>"
+                f"{unit}</td></tr>")
+        return (f"<b>Readout</b><table class='planargeo-readout' style='font-size:12px;"
+                f"table-layout:auto;border-collapse:collapse'>{''.join(rows)}</table>")
+
+    def show(self):
+        """Display the explorer (in a notebook) and return it.
+
+        Returns
+        -------
+        Explorer
+            ``self``.
+        """
+        from IPython.display import display
+
+        display(self.widget)
+        return self
+
+    def _follow_shown(self) -> None:
+        """Focus options, disabled controls and the "what is shown" panel, for the shown state."""
+        w = self.controls.get("focus")
+        if self._base_focus:
+            with contextlib.suppress(Exception):
+                options = ("all", *self.focus_options())
+                if tuple(w.options) != options:
+                    value = w.value if w.value in options else "all"
+                    with self._quietly():
+                        w.options = options
+                        w.value = value
+        try:
+            off = dict(self.disabled(dict(self.shown_values or self.values)))
+        except Exception as exc:  # noqa: BLE001 - a faulty rule disables nothing
+            off = {}
+            self._message = self._message or f"internal error in disabled(): {exc}"
+        if "key" not in off and not self.controls["key"].value and not self._has_key_entries():
+            off["key"] = "nothing drawn now has an entry in the key"
+        for k, w in self.controls.items():
+            reason = off.get(k)
+            if bool(w.disabled) != (reason is not None):
+                w.disabled = reason is not None
+            tip = str(reason) if reason is not None else self._tooltips.get(k)
+            if hasattr(w, "tooltip") and w.tooltip != tip:
+                w.tooltip = tip
+        try:
+            text = explain_html(dict(self.explain()))
+        except Exception as exc:  # noqa: BLE001
+            text = f"<i>no explanation: {html.escape(str(exc))}</i>"
+        if self.explain_box.value != text:
+            self.explain_box.value = text
