@@ -30,9 +30,8 @@ import math
 
 import numpy as np
 
-from planargeo.draw.geometry import point_xy
 from planargeo.draw.picture import PX_PER_PT, Picture
-from planargeo.draw.pictures.kit import aim_label, force, label_at, scale_bar
+from planargeo.draw.pictures.kit import aim_label, force, label_at, num, scale_bar, where
 from planargeo.draw.style import COLORS
 
 __all__ = ["car_picture", "moves", "view_box", "FORCE_SCALE", "HALF_TRACK", "OVERHANG", "TYRE",
@@ -132,11 +131,6 @@ def view_box(d: float, L: float, theta: float, F_A: float = 0.0):
     return (float(c[0] - half), float(c[0] + half), float(c[1] - half), float(c[1] + half))
 
 
-def _at(p) -> str:
-    xy = point_xy(p)
-    return "at infinity" if xy is None else f"at ({xy[0]:.3g}, {xy[1]:.3g}) m"
-
-
 def car_picture(res, *, heading: float, view, slides: bool = False, limit: float = 0.0,
                 size=(600, 560)) -> Picture:
     """The picture of the car of the scene ``res`` turned by ``heading`` (module docstring).
@@ -187,10 +181,10 @@ def car_picture(res, *, heading: float, view, slides: bool = False, limit: float
     t = np.linspace(0.0, 2 * np.pi, 181)
     pic.path("path of G", icr + r_cg * np.column_stack([np.cos(t), np.sin(t)]), role="construct", symbol="r_G",
              color=COLORS["construct"], width=0.8 * PX_PER_PT, dash=[1.0, 2.5], z=1,
-             desc=f"the circle G runs on about the ICR: radius r_G = {r_cg:.3g} m")
+             desc=f"the circle G runs on about the ICR: radius {r_cg:.3g} m")
     drive = F_A != 0.0                    # ω̇ = f_A's moment about the ICR / I_ICR (6.131): zero coasting
     v_desc = (f"velocity pole: the ICR, the joint s the car turns about, v = s ω (6.114, 6.115): "
-              f"ω = {omega:.3g} rad/s, {_at(V @ q['v'])}")
+              f"ω = {num(omega)} rad/s, {where(V @ q['v'])}")
     v_desc += ("; it is also the acceleration pole a" if drive else
                "; coasting, ω̇ = 0 and a = s ω̇ = 0 (6.131): no acceleration pole")
     pic.point("ICR", V @ np.asarray(q["v"], float), role="twist", symbol="v = sω", label="v = sω (ICR)",
@@ -199,10 +193,10 @@ def car_picture(res, *, heading: float, view, slides: bool = False, limit: float
     if drive:
         pic.point("a", V @ np.asarray(q["a"], float), role="accel", symbol="a", glyph_scale=3.0,
                   desc=f"acceleration pole of a = s ω̇ (6.131): a turn about the ICR, so its pole is the "
-                       f"ICR too: ω̇ = {wdot:.3g} rad/s², {_at(V @ q['a'])}")
+                       f"ICR too: ω̇ = {num(wdot)} rad/s², {where(V @ q['a'])}")
         aim_label(pic.elements[-1], R @ [-0.6, 0.8], 12.0)  # up and back: no line leaves the ICR there
     pic.marks("G", [cg], role="body", color="#000000", size=8.0, symbol="G", z=6,
-              desc=f"centre of gravity G, ε = {p['eps']:.3g} of the wheelbase behind the front axle, "
+              desc=f"centre of gravity G: ε = {p['eps']:.3g} of the wheelbase behind the front axle, "
                    f"{r_cg:.3g} m from the ICR")
     label_at(pic, cg, "G")
     pic.conic("I", W @ np.asarray(q["I"], float) @ W.T, role="inertia", symbol="I",
@@ -210,26 +204,29 @@ def car_picture(res, *, heading: float, view, slides: bool = False, limit: float
                    f"{p['rho']:.3g} m about G")
     tw = np.asarray(x["tyre_wrenches"], float)
     mu = q["mu"]
-    for k, (sym, where, at) in enumerate((("R₁μ₁", "rear", rear), ("R₂μ₂", "front", front))):
+    for k, (sym, which, at) in enumerate((("R₁μ₁", "rear", rear), ("R₂μ₂", "front", front))):
         force(pic, sym, W @ tw[:, k], scale=FORCE_SCALE, anchor=at, role="reaction", symbol=sym,
-              desc=f"{where} tyre force: reaction R{'₁₂'[k]} times its size μ{'₁₂'[k]} (6.114, 6.133): "
-                   f"μ{'₁₂'[k]} = {mu[k]:.4g} N", z=4,
+              desc=f"{which} tyre force: reaction R{'₁₂'[k]} times its size μ{'₁₂'[k]} (6.114, 6.133): "
+                   f"μ{'₁₂'[k]} = {num(mu[k], 4)} N", z=4,
               label_xy=R @ [d + HALF_TRACK + 0.9, (0.0, L)[k]] + tr)   # beside the car, off the body
     fA = np.asarray(q["f_A"], float)
     if np.any(fA[:2]):
         force(pic, "f_A", W @ fA, scale=FORCE_SCALE, anchor=front, role="wrench", symbol="f_A", start=True,
-              desc=f"drive force at the front tyre, along its rolling direction (6.120): {F_A:.4g} N", z=4)
+              desc=f"drive force at the front tyre, along its rolling direction (6.120): {num(F_A, 4)} N", z=4)
     pb = np.asarray(q["p"], float)
     if np.any(pb[:2]):
         force(pic, "p", W @ pb, scale=FORCE_SCALE, anchor=cg, role="momentum", symbol="p", start=True,
               width=1.0 * PX_PER_PT, z=4,                          # labelled at the tip, or in view
               label_xy=cg + min(FORCE_SCALE, 0.25 * (view[1] - view[0]) / math.hypot(*pb[:2])) * (R @ pb[:2]),
               desc=f"bias force: the centrifugal force through the ICR and G (6.119): "
-                   f"{math.hypot(pb[0], pb[1]):.4g} N = m ω² r_G")
-    pic.line("T", W @ np.asarray(q["T"], float), role="construct", symbol="T", arrow=False,
+                   f"{num(math.hypot(pb[0], pb[1]), 4)} N (m ω² times G's distance from the ICR)")
+    T = W @ np.asarray(q["T"], float)
+    icr_h = V @ [0.0, 0.0, 1.0]                               # the ICR, homogeneous
+    off = abs(float(T @ icr_h)) / math.hypot(T[0], T[1]) if math.hypot(T[0], T[1]) > 0 else math.inf
+    pic.line("T", T, role="construct", symbol="T", arrow=False,
              anchor=R @ [d, -OVERHANG - 1.2] + tr,                       # behind the car
-             desc="active force line T: the percussion axis of the joint at the ICR (6.125); "
-                  "a force along it turns the car without loading the tyres")
+             desc=f"active force line T, the percussion axis of the joint at the ICR (6.125): {num(off)} m "
+                  f"from the ICR; a force along it turns the car without loading the tyres")
     scale_bar(pic)
     if slides:
         x0, x1, y0, y1 = pic.box

@@ -28,7 +28,7 @@ from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.style import COLORS
 
 __all__ = ["force", "ground", "scale_bar", "label_at", "aim_label", "side_label", "clearest", "seg_distance",
-           "foot_on_line", "nice_length"]
+           "foot_on_line", "nice_length", "num", "where", "rate"]
 
 
 def foot_on_line(w, p) -> np.ndarray:
@@ -275,6 +275,79 @@ def side_label(pic: Picture, a, b, text: str, segs, *, gap: float = 5.0) -> None
     aim_label(pic.elements[-1], n if float((side - m) @ n) > 0 else -n, gap + 4.0)
 
 
+def num(x: float, digits: int = 3, tiny: float = 1e-9) -> str:
+    """``x`` with ``digits`` significant digits, round-off (``|x| < tiny``) as 0, as the readout shows it.
+
+    Parameters
+    ----------
+    x : float
+    digits : int
+    tiny : float
+        Below this magnitude the number is round-off.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> num(5.609e-15), num(-0.0), num(2.987e4, 4), num(1.5e-3)
+    ('0', '0', '2.987e+04', '0.0015')
+    """
+    x = float(x)
+    return "0" if abs(x) < tiny or x == 0.0 else f"{x:.{digits}g}"
+
+
+def where(p, *, far: float = 1e6) -> str:
+    """Where the pole ``p = [vx, vy, w]`` lies, for a description: ``"at (x, y) m"`` or at infinity.
+
+    A pole farther than ``far`` metres (a rate that is round-off) is at infinity, as the
+    picture draws it.
+
+    Parameters
+    ----------
+    p : array_like (3,)
+    far : float
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> where([0.0, -2.0, 1.0]), where([1.0, 0.0, 8.88e-16])
+    ('at (2, 0) m', 'at infinity (a translation)')
+    """
+    from planargeo.draw.geometry import point_xy
+
+    xy = point_xy(p)
+    if xy is None or not np.all(np.isfinite(xy)) or math.hypot(*xy) > far:
+        return "at infinity (a translation)"
+    return f"at ({num(xy[0])}, {num(xy[1])}) m"
+
+
+def rate(p, unit: str, *, far: float = 1e6) -> str:
+    """The rate (weight) of the pole ``p``, 0 when the pole is at infinity (:func:`where`).
+
+    Parameters
+    ----------
+    p : array_like (3,)
+    unit : str
+    far : float
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> rate([0.0, -2.0, 1.0], "rad/s"), rate([1.0, 0.0, 8.88e-16], "rad/s")
+    ('rate 1 rad/s', 'rate 0 rad/s')
+    """
+    w = 0.0 if where(p, far=far).startswith("at infinity") else float(p[2])
+    return f"rate {num(w)} {unit}"
+
+
 def nice_length(span: float) -> float:
     """A round length (1, 2 or 5 × 10ᵏ) near a fifth of ``span``.
 
@@ -314,7 +387,7 @@ def scale_bar(pic: Picture, unit: str = "m") -> float:
     pad_x, pad_y = 10.0 / pic.kx, 12.0 / pic.ky
     xy = np.array([[x0 + pad_x, y0 + pad_y], [x0 + pad_x + L, y0 + pad_y]])
     pic.path("scale bar", xy, role="construct", symbol="scale", color=COLORS["text"], width=2.0 * PX_PER_PT,
-             desc=f"scale: this bar is {L:g} {unit} long", z=1)
+             desc=f"scale bar: {L:g} {unit}", z=1)
     pic.elements[-1]["parts"].append({"p": "text", "x": float(xy[1, 0]), "y": float(xy[1, 1]),
                                       "dx": 4.0, "dy": 0.0, "text": f"{L:g} {unit}", "ha": "left",
                                       "va": "center"})

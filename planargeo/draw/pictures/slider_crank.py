@@ -28,9 +28,8 @@ import math
 
 import numpy as np
 
-from planargeo.draw.geometry import point_xy
 from planargeo.draw.picture import PX_PER_PT, Picture
-from planargeo.draw.pictures.kit import force, ground, label_at, scale_bar
+from planargeo.draw.pictures.kit import force, ground, label_at, num, rate, scale_bar, where
 from planargeo.draw.style import COLORS, OKABE_ITO
 
 __all__ = ["slider_crank_picture", "slider_crank_view", "CONTACT_COLOR", "REACTIONS", "FORCE_LENGTH"]
@@ -70,11 +69,6 @@ def slider_crank_view(r: float, l: float, t: float):
     (-4.5, 4.5, -3.49, 9.29)
     """
     return (-4.5, 4.5, -r - 1.2, max(9.0, r + l + 2 * t + 1.0))
-
-
-def _where(p) -> str:
-    xy = point_xy(p)
-    return "at infinity (a translation)" if xy is None else f"at ({xy[0]:.3g}, {xy[1]:.3g}) m"
 
 
 def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, h: float,
@@ -127,11 +121,11 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
     box = np.array([[-0.3, 0.0], [0.3, 0.0], [0.3, 2 * t], [-0.3, 2 * t]]) + wrist
     pic.path("piston", box, role="body", symbol="3", closed=True, fill=COLORS["body"], alpha=0.6,
              color="#000000", width=1.0 * PX_PER_PT, z=4,
-             desc=f"piston, body 3: height h = {h:.4g} m, speed {float(v[2][1]):.4g} m/s (9.73)")
+             desc=f"piston, body 3 (9.73): height h = {h:.4g} m, speed {num(float(v[2][1]), 4)} m/s")
     label_at(pic, wrist + np.array([0.3, 2 * t]), "3", gap=4.0)
     pic.marks("pins", [pivot, pin, wrist], role="body", symbol="pins", color=COLORS["ground"], size=7.0, z=6,
-              desc=f"the pins: crank pivot (0, 0) m, crank pin ({pin[0]:.3g}, {pin[1]:.3g}) m, "
-                   f"wrist pin ({wrist[0]:.3g}, {wrist[1]:.3g}) m")
+              desc=f"the pins: crank pivot (0, 0) m, crank pin ({num(pin[0])}, {num(pin[1])}) m, "
+                   f"wrist pin ({num(wrist[0])}, {num(wrist[1])}) m")
     # the joint angles a little way along their links (the pins are the forces' places)
     for sym, at, meaning, val in (("ψ", 0.3 * pin, "crank angle", psi),
                                   ("θ", pin + 0.2 * (wrist - pin), "rod angle, from closing the loop", theta),
@@ -149,11 +143,12 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
             w = np.asarray(x.wrench, float)
             role = "reaction" if key.startswith("f") else "momentum"
             F = size_of[key]
-            moment = f", moment {x.moment:.3g} N·m about its joint" if abs(x.moment) > 1e-9 * max(F, 1.0) else ""
+            tiny = 1e-9 * max(fmax, 1.0)
+            moment = f", moment {num(x.moment, 3, tiny)} N·m about its joint" if abs(x.moment) > tiny else ""
             # the label at the arrow's head, at least 0.9 m from the joint (off the pins and the piston)
             head = np.asarray(x.point, float) + max(0.5 * scale * F, 0.9) * (w[:2] / F if F else 0.0)
             foot = force(pic, sym, w, scale=scale, anchor=x.point, role=role, symbol=sym, color=color,
-                         desc=f"{meaning} ({eq}): |{sym}| = {F:.4g} N{moment}", reach=1.2, dash=[4.0, 3.0],
+                         desc=f"{meaning} ({eq}): |{sym}| = {num(F, 4, tiny)} N{moment}", reach=1.2, dash=[4.0, 3.0],
                          width=1.0 * PX_PER_PT, z=8, label_xy=head)
             if foot is not None and math.hypot(*(foot - np.asarray(x.point))) > 1e-9:
                 pic.path(f"{sym} lever", [x.point, foot], role="construct", symbol=f"{sym} arm", color=color,
@@ -169,9 +164,9 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
         for i in range(3):
             sym = f"{key}{i + 1}".translate(_SUB)
             pic.point(sym, pts[i], role=role, symbol=sym, glyph_scale=scale,
-                      desc=f"{meaning} of the {_BODIES[i]} ({eq}): rate {pts[i][2]:.3g} {unit}, {_where(pts[i])}")
+                      desc=f"{meaning} of the {_BODIES[i]} ({eq}): {rate(pts[i], unit)}, {where(pts[i])}")
     scale_bar(pic)
     if banner:
         pic.text("banner", (x1, y1), banner, color="#7a3d00", ha="right", va="top", dx=-8.0, dy=-8.0,
-                 symbol="dead centre", desc=f"{banner}: the crank and the rod in line, ψ = {psi:.4g}°")
+                 symbol="dead centre", desc=f"{banner}: the crank and the rod in line, ψ = {num(psi, 4)}°")
     return pic

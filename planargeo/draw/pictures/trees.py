@@ -26,9 +26,8 @@ import math
 
 import numpy as np
 
-from planargeo.draw.geometry import point_xy
 from planargeo.draw.picture import PX_PER_PT, Picture
-from planargeo.draw.pictures.kit import clearest, force, ground, scale_bar, side_label
+from planargeo.draw.pictures.kit import clearest, force, ground, num, rate, scale_bar, side_label, where
 from planargeo.draw.pictures.slider_crank import CONTACT_COLOR
 from planargeo.draw.style import COLORS
 
@@ -60,11 +59,6 @@ def symbol_of(sym: str) -> str:
     'F₁'
     """
     return sym.replace("_", "").translate(_SUB)
-
-
-def _where(p) -> str:
-    xy = point_xy(p)
-    return "at infinity (a translation)" if xy is None else f"at ({xy[0]:.3g}, {xy[1]:.3g}) m"
 
 
 def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, focus: str = "all",
@@ -116,7 +110,7 @@ def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, f
         pins = np.array([x.point for x in contact])
         pic.marks("pins", pins, role="reaction", symbol="pins", color=COLORS["reaction"], size=10.0, z=5,
                   desc="the pins closing the loops (Fig 9.2): " + ", ".join(
-                      f"tips of bodies {c} at ({p[0]:.3g}, {p[1]:.3g}) m" for c, p in zip(contacts, pins)))
+                      f"tips of bodies {c} at ({num(p[0])}, {num(p[1])}) m" for c, p in zip(contacts, pins)))
     if overlays.get("reaction forces"):
         size_of = {x.symbol: math.hypot(*np.asarray(x.wrench, float)[:2]) for x in reactions}
         fmax = max(size_of.values(), default=0.0)
@@ -134,12 +128,13 @@ def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, f
             else:
                 meaning, eq, color = (f"contact force of the pin joining the tips of bodies {names[x.symbol]}",
                                       "9.71", CONTACT_COLOR)
-            moment = f", moment {x.moment:.3g} N·m about its pin" if abs(x.moment) > 1e-9 * max(F, 1e-300) else ""
+            tiny = 1e-9 * max(fmax, 1e-300)
+            moment = f", moment {num(x.moment, 3, tiny)} N·m about its pin" if abs(x.moment) > tiny else ""
             # the label on the line of action where it is clearest of the links (pins share places)
             e = w[:2] / F if F else np.zeros(2)
             head = clearest([np.asarray(x.point, float) + k * e for k in (0.4, -0.4, 0.25, -0.25)], links)
             force(pic, sym, w, scale=scale, anchor=x.point, role="reaction" if sym[0] == "f" else "momentum",
-                  symbol=sym, color=color, desc=f"{meaning} ({eq}): |{sym}| = {F:.4g} N{moment}", reach=0.45,
+                  symbol=sym, color=color, desc=f"{meaning} ({eq}): |{sym}| = {num(F, 4, tiny)} N{moment}", reach=0.45,
                   dash=[4.0, 3.0], width=(2.4 if focus == sym else 1.0) * PX_PER_PT, z=9 if focus == sym else 8,
                   label=None if on else "", opacity=1.0 if on else FADED, label_xy=head)
     for key, flag, role, gs, meaning, eq, unit in (
@@ -151,6 +146,6 @@ def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, f
         for i in range(n):
             sym = f"{key}{i + 1}".translate(_SUB)
             pic.point(sym, pts[i], role=role, symbol=sym, glyph_scale=gs,
-                      desc=f"{meaning} of body {i + 1} ({eq}): rate {pts[i][2]:.3g} {unit}, {_where(pts[i])}")
+                      desc=f"{meaning} of body {i + 1} ({eq}): {rate(pts[i], unit)}, {where(pts[i])}")
     scale_bar(pic)
     return pic
