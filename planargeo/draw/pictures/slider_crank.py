@@ -11,7 +11,7 @@ From one solved state of the closed loop:
 * optionally the velocity poles ``vᵢ`` (4.5) and acceleration poles ``aᵢ`` (4.6);
 * a scale bar, and a banner at a dead centre.
 
-Force labels sit at the arrows' heads (at least 0.9 m from their joints), the joint angles a little way along their links,
+Force labels sit on their lines 0.9 to 1.2 m from their joints, where they are clearest of the links, the joint angles a little way along their links,
 so that the labels spread out instead of piling up at the pins.
 
 Examples
@@ -29,7 +29,7 @@ import math
 import numpy as np
 
 from planargeo.draw.picture import PX_PER_PT, Picture
-from planargeo.draw.pictures.kit import force, ground, label_at, num, rate, scale_bar, where
+from planargeo.draw.pictures.kit import clearest, force, ground, label_at, num, rate, scale_bar, side_label, where
 from planargeo.draw.style import COLORS, OKABE_ITO
 
 __all__ = ["slider_crank_picture", "slider_crank_view", "CONTACT_COLOR", "REACTIONS", "FORCE_LENGTH"]
@@ -114,10 +114,11 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
     ground(pic, "ground", (0.0, -0.15), width=0.9, desc="the ground: the crank turns about the pivot (0, 0) m")
     pic.path("crank", [pivot, pin], role="body", symbol="1", color=COLORS["ground"], width=4.0 * PX_PER_PT, z=5,
              desc=f"crank, body 1: r = {r:.3g} m, at ψ = {psi:.4g}° (9.6)")
-    label_at(pic, 0.5 * (pivot + pin), "1", gap=5.0)
+    links = np.array([[pivot, pin], [pin, wrist]])
+    side_label(pic, pivot, pin, "1", links[1:], gap=4.0)            # beside the crank, away from the rod
     pic.path("rod", [pin, wrist], role="body", symbol="2", color=COLORS["body"], width=3.0 * PX_PER_PT, z=5,
              desc=f"rod, body 2: l = {math.hypot(*(wrist - pin)):.3g} m, at θ = {theta:.4g}° (9.6)")
-    label_at(pic, 0.5 * (pin + wrist), "2", gap=5.0)
+    side_label(pic, pin, wrist, "2", links[:1], gap=4.0)
     box = np.array([[-0.3, 0.0], [0.3, 0.0], [0.3, 2 * t], [-0.3, 2 * t]]) + wrist
     pic.path("piston", box, role="body", symbol="3", closed=True, fill=COLORS["body"], alpha=0.6,
              color="#000000", width=1.0 * PX_PER_PT, z=4,
@@ -138,6 +139,7 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
         size_of = {k: math.hypot(*np.asarray(x.wrench, float)[:2]) for k, x in reactions.items()}
         fmax = max(size_of.values(), default=0.0)
         scale = FORCE_LENGTH / fmax if fmax > 0 else 0.0
+        obstacles = np.concatenate([links, np.stack([box, np.roll(box, -1, axis=0)], axis=1)])
         for key, sym, meaning, eq, color in REACTIONS:
             x = reactions[key]
             w = np.asarray(x.wrench, float)
@@ -145,8 +147,10 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
             F = size_of[key]
             tiny = 1e-9 * max(fmax, 1.0)
             moment = f", moment {num(x.moment, 3, tiny)} N·m about its joint" if abs(x.moment) > tiny else ""
-            # the label at the arrow's head, at least 0.9 m from the joint (off the pins and the piston)
-            head = np.asarray(x.point, float) + max(0.5 * scale * F, 0.9) * (w[:2] / F if F else 0.0)
+            # the label on the line of action 0.9 to 1.2 m from the joint, where it is clearest of the links
+            # and the piston (off the pins)
+            e = w[:2] / F if F else np.zeros(2)
+            head = clearest([np.asarray(x.point, float) + k * e for k in (0.9, -0.9, 1.2, -1.2)], obstacles)
             foot = force(pic, sym, w, scale=scale, anchor=x.point, role=role, symbol=sym, color=color,
                          desc=f"{meaning} ({eq}): |{sym}| = {num(F, 4, tiny)} N{moment}", reach=1.2, dash=[4.0, 3.0],
                          width=1.0 * PX_PER_PT, z=8, label_xy=head)
