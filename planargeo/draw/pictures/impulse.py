@@ -89,7 +89,8 @@ def impulse_picture(r, *, t: float, view, size=(640, 460)) -> Picture:
     outline, dv, free = ex["outline"], np.asarray(ex["dv"], float), np.asarray(ex["dv_free"], float)
     pic = Picture(view, size=size)
     if t > 0:
-        pic.path("at rest", outline, role="construct", closed=True, color=COLORS["construct"], dash=[5.0, 4.0],
+        ring = np.vstack([outline, outline[:1]])              # an open ring: dashed by every renderer
+        pic.path("at rest", ring, role="construct", color=COLORS["construct"], dash=[5.0, 4.0],
                  symbol="body at rest", desc=f"the {prm['body']} where it was struck: at rest at t = 0 s", z=1)
     pic.path("body", moved_outline(outline, dv, t), role="body", closed=True, fill=COLORS["body"], alpha=0.6,
              color="#000000", symbol="body",
