@@ -252,9 +252,11 @@ def _chart(pic, st, k: int) -> None:
     cx0, cx1 = X0 + (CHAIN_SHARE + 0.08) * W, X1 - 14.0 * fx
     cy0, cy1 = Y0 + 44.0 * fy, Y1 - 30.0 * fy
 
+    sx, sy = (cx1 - cx0) / (s1 - s0), (cy1 - cy0) / (hi - lo)
+
     def at(s, v):
-        s, v = np.asarray(s, float), np.asarray(v, float)
-        return np.column_stack([cx0 + (s - s0) / (s1 - s0) * (cx1 - cx0), cy0 + (v - lo) / (hi - lo) * (cy1 - cy0)])
+        """Chart values (steps ``s``, values ``v``) to data points of the view."""
+        return np.array([[cx0 + (float(a) - s0) * sx, cy0 + (float(b) - lo) * sy] for a, b in zip(s, v)])
 
     what = f"entries of A{kk} at joint {k + 1} over their full values against the recursion steps (10.2.2)"
     pic.path("chart frame", [[cx0, cy0], [cx1, cy0], [cx1, cy1], [cx0, cy1]], role="chart", closed=True,
