@@ -6,8 +6,9 @@ page per host: JupyterLab here, the web app's Voila in ``test_browser_explorers.
 (which also makes ``docs/screens``).  For each explorer, headless chromium
 
 * **layout**: samples the plot area on a 12 × 12 grid and finds only the picture on top
-  (no control, bar, tooltip or toolbar over the axes); measures every readout cell's box
-  against the readout and the explorer it sits in, and its text against the cell's own
+  (no control, bar, tooltip or toolbar over the axes), and no clipping container (an
+  output area) cuts it; measures every readout cell's box against the readout, the
+  explorer and every clipping container it sits in, and its text against the cell's own
   width (no value clipped); measures the SVG text boxes of the picture's labels (no two
   overlap);
 * **drag**: presses its first handle in view, moves it 12 px: the handle follows the
@@ -161,6 +162,14 @@ def check_layout(page, ex) -> list[str]:
             over.set(name, (over.get(name) || 0) + 1);
           }
           for (const [name, n] of over) problems.push(`${name} covers ${n} of 144 points of the plot area`);
+          for (let a = svg.parentElement; a && a !== document.body; a = a.parentElement) {
+            const s = getComputedStyle(a), c = a.getBoundingClientRect();
+            if (s.overflowX !== 'visible' && (r.right > c.right + 0.5 || r.left < c.left - 0.5)) {
+              problems.push(`the plot area [${r.left.toFixed(0)}, ${r.right.toFixed(0)}] is cut by a `
+                            + `${a.tagName.toLowerCase()} (overflow ${s.overflowX}) [${c.left.toFixed(0)}, ${c.right.toFixed(0)}]`);
+              break;
+            }
+          }
           // readout: each cell inside its table's container and the explorer, its text not clipped
           const ro = root.querySelector('.planargeo-readout');
           if (ro) {
@@ -176,15 +185,16 @@ def check_layout(page, ex) -> list[str]:
               }
               if (td.scrollWidth > td.clientWidth + 1 && td !== td.parentElement.firstElementChild)
                 problems.push(`readout ${row}: cell '${t}' clipped (${td.scrollWidth} px of text in ${td.clientWidth} px)`);
-              // the nearest clipping ancestor up to the explorer must hold the cell
-              for (let a = td.parentElement; a && a !== root.parentElement; a = a.parentElement) {
+              // every clipping ancestor, up to the page (an output area, the notebook), holds the cell
+              for (let a = td.parentElement; a && a !== document.body; a = a.parentElement) {
                 const s = getComputedStyle(a);
                 if (s.overflowX !== 'visible' && a.tagName !== 'TD') {
                   const c = boxOf(a);
-                  if (b.right > c.right + 0.5 || b.left < c.left - 0.5)
+                  if (b.right > c.right + 0.5 || b.left < c.left - 0.5) {
                     problems.push(`readout ${row}: cell '${t}' cut by a ${a.tagName.toLowerCase()} `
                                   + `(overflow ${s.overflowX}) at x = ${c.right.toFixed(0)}`);
-                  break;
+                    break;
+                  }
                 }
               }
             }
