@@ -10,7 +10,7 @@ page per host: JupyterLab here, the web app's Voila in ``test_browser_explorers.
   output area) cuts it; measures every readout cell's box against the readout, the
   explorer and every clipping container it sits in, and its text against the cell's own
   width (no value clipped); measures the SVG text boxes of the picture's labels (no two
-  overlap);
+  overlap); in the default state and again after the drag and the slider below;
 * **drag**: presses its first handle in view, moves it 12 px: the handle follows the
   pointer in the page at once, the kernel answers and a new picture is painted, and the
   readout changes;
@@ -486,6 +486,7 @@ def run_all(page, names: list[str], tmp: Path, screens: Path | None = None) -> l
         _try("layout", failures, name, lambda: check_layout(page, ex))
         _try("drag", failures, name, lambda: check_drag(page, ex))
         _try("slider", failures, name, lambda: check_slider(page, ex))
+        _try("layout after the drag and slider", failures, name, lambda: check_layout(page, ex))
         _try("zoom/pan/reset", failures, name, lambda: check_view(page, ex))
         _try("hover", failures, name, lambda: check_hover(page, ex))
         if ex.locator(".widget-play").count():
