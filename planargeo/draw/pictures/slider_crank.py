@@ -16,10 +16,17 @@ so that the labels spread out instead of piling up at the pins.
 
 Examples
 --------
->>> from planargeo.widgets.slider_crank import SliderCrankExplorer
->>> ex = SliderCrankExplorer(display="agg")
->>> d = ex.picture()
->>> sorted(e["symbol"] for e in d["elements"] if e["role"] in ("reaction", "momentum"))
+>>> from types import SimpleNamespace
+>>> def pin_force(p, f):                  # a force through the point p: its moment about the origin
+...     return SimpleNamespace(point=p, wrench=(f[0], f[1], p[0] * f[1] - p[1] * f[0]), moment=0.0)
+>>> pose = [[0.0, 0.0, 0.4], [2.108, 0.895, 2.006], [0.0, 5.429, 1.571]]
+>>> reactions = {"f_1": pin_force((0.0, 0.0), (-126.4, -50.0)), "f_2": pin_force((2.108, 0.895), (-40.4, -21.9)),
+...              "f_3": pin_force((0.0, 5.429), (24.0, 1.1)), "F_1": pin_force((0.0, 5.929), (-24.0, 0.0))}
+>>> twists = [[0.0, 0.0, 20.0], [1.0, 2.0, 3.0], [0.0, 50.5, 0.0]]
+>>> pic = slider_crank_picture(pose, r=2.29, t=0.5, q=[0.4, 1.6, -0.44], reactions=reactions, v=twists,
+...                            a=twists, h=5.929, overlays={"reaction forces": True},
+...                            view=slider_crank_view(2.29, 5.0, 0.5))
+>>> sorted(e["symbol"] for e in pic.to_dict()["elements"] if e["role"] in ("reaction", "momentum"))
 ['F₃', 'f₁', 'f₂', 'f₃']
 """
 from __future__ import annotations

@@ -14,11 +14,15 @@ A focus on one force draws it wider and labelled, and fades the other forces.
 
 Examples
 --------
->>> from planargeo.widgets.trees import TreeExplorer
->>> ex = TreeExplorer(display="agg")
->>> d = ex.picture()
->>> sorted(e["symbol"] for e in d["elements"] if e["id"].startswith(("f", "F")))
-['F₁', 'F₂', 'f₁', 'f₂', 'f₃', 'f₄', 'f₅', 'f₆', 'f₇', 'f₈', 'f₉']
+>>> from types import SimpleNamespace
+>>> pose = [[0.0, 0.0, 1.5708], [0.0, 1.0, 1.5708]]            # two links standing up
+>>> tips = [[0.0, 1.0], [0.0, 2.0]]
+>>> reactions = [SimpleNamespace(symbol="f_1", point=(0.0, 0.0), wrench=(0.0, 2.0, 0.0), moment=0.0),
+...              SimpleNamespace(symbol="f_2", point=(0.0, 1.0), wrench=(0.0, 1.0, 0.0), moment=0.0)]
+>>> d = trees_picture(pose, tips, reactions=reactions, v=np.zeros((2, 3)), a=np.zeros((2, 3)),
+...                   overlays={"reaction forces": True}).to_dict()
+>>> [e["symbol"] for e in d["elements"] if e["id"].startswith(("f", "F"))]
+['f₁', 'f₂']
 """
 from __future__ import annotations
 
