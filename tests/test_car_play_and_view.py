@@ -65,10 +65,10 @@ def test_the_car_fills_a_third_of_its_view_and_the_view_holds_the_car_and_a_near
         length = body[:, 1].max() - body[:, 1].min()
         assert length >= (y1 - y0) / 3
     icr = ex.handles()[2].where()
-    for x, y in list(body) + ([icr] if radius <= 12.0 else []):
+    for x, y in list(body) + ([icr] if radius <= 10.0 else []):
         assert x0 <= x <= x1 and y0 <= y <= y1
     assert (x0, x1, y0, y1) == pytest.approx(view_box(radius, L, th))
-    if radius > 12.0:                      # a far ICR: out of view, an arrow at the edge points to it
+    if radius > 10.0:                      # a far ICR: out of view, an arrow at the edge points to it
         icr_el = elements(ex.picture())["ICR"]
         assert parts(icr_el, "arrow") and not parts(icr_el, "mark")
         assert not (x0 <= icr[0] <= x1 and y0 <= icr[1] <= y1)

@@ -45,7 +45,7 @@ HALF_TRACK, OVERHANG, TYRE = 0.8, 0.7, 0.35
 VIEW_MARGIN = 1.0
 #: the ICR is kept in view for turn radii up to this many metres; beyond, the view holds the car
 #: alone (so that it fills a third of the view) and the ICR is an arrow at the edge pointing to it
-NEAR = 12.0
+NEAR = 10.0
 #: the picture's banner once the tyres reach their limit
 SLIDES = "the car slides out: its tyres reach μ·g"
 
