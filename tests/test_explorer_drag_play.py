@@ -1,8 +1,9 @@
 """Dragging handles and Play (issue 13): one update per move, no echo, no snapping, refusals keep state.
 
-The mouse is driven through the canvas's own event callbacks (what ipympl feeds
-it); the browser's slider echo is driven through ``Widget.set_state``, the
-method ipywidgets calls for a message from the front end.
+Drags are the page's drag messages (``ex.drag`` sends them through the canvas's own
+check, ``PictureCanvas.handle_message``); Play's ticks are the page's tick messages; the
+browser's slider echo is driven through ``Widget.set_state``, the method ipywidgets calls
+for a message from the front end.
 """
 from __future__ import annotations
 
@@ -10,8 +11,8 @@ import math
 
 import numpy as np
 import pytest
-from matplotlib.backend_bases import MouseEvent
 
+from planargeo.draw.picture import Picture
 from planargeo.errors import InputError, SceneError
 from planargeo.widgets import PercussionExplorer, ProjectiveExplorer
 from planargeo.widgets.base import Explorer, Handle, Step
@@ -27,16 +28,17 @@ class Dot(Explorer):
         return {"x": Step(-2, 2, 0.1, 0.0, "x").make("x"), "y": Step(-2, 2, 0.1, 0.0, "y").make("y"),
                 "v": Step(-2, 2, 0.1, 1.0, "v").make("v")}
 
-    def make_artists(self, ax):
-        self.dot, = ax.plot([0], [0], "o")
+    def scene_picture(self, st, view=None):
+        pic = Picture(view or self.limits, size=self.figure_px)
+        pic.marks("dot", [[st["x"], st["y"]]], symbol="d", desc="the dot (1.1)")
+        return pic
 
     def compute(self, v, changed):
         if v["x"] > 1.5:
             raise SceneError("x must not exceed 1.5")
         return dict(v)
 
-    def render(self, st):
-        self.dot.set_data([st["x"]], [st["y"]])
+    def readout_of(self, st):
         return {"x": st["x"], "y": st["y"]}
 
     def handles(self):
@@ -46,11 +48,6 @@ class Dot(Explorer):
     def play_step(self, values, dt):
         x = values["x"] + values["v"] * dt
         return None if x > 1.0 else {"x": x}
-
-
-def _event(ex, kind, xy, button=None):
-    px, py = ex.ax.transData.transform(xy)
-    ex.fig.canvas.callbacks.process(kind, MouseEvent(kind, ex.fig.canvas, px, py, button=button))
 
 
 # ----------------------------------------------------------------------- drag
@@ -64,42 +61,23 @@ def test_drag_is_one_update_per_move_and_not_snapped():
     assert ex.readout_strings["x"] == "0.737 m"
 
 
-def test_mouse_drag_under_the_canvas_events():
+def test_drag_in_the_page_is_one_picture_per_move():
+    ex = Dot(display="page")
+    version, n = ex.canvas.version, ex.n_updates
+    ex.drag("dot", (0.0, 0.0), (0.513, -0.25), steps=5)
+    assert ex.n_updates == n + 5 + 1                   # five moves and the release's redraw
+    assert ex.canvas.version == version + 5            # the release's picture is the last move's: not sent
+    h = ex.canvas.picture["handles"][0]
+    assert (h["x"], h["y"]) == pytest.approx((0.513, -0.25))
+
+
+def test_drag_is_checked_as_the_page_is():
+    """A position the page's canvas refuses (beyond its coordinate limit) is refused the same way."""
     ex = Dot(display="agg")
-    ex.DRAG_BACKLOG_COST = math.inf                  # every move is drawn (no backlog handling)
-    ex.fig.canvas.draw()
-    _event(ex, "button_press_event", (0.0, 0.0), button=1)
-    n = ex.n_updates
-    for k in range(1, 6):
-        _event(ex, "motion_notify_event", (0.1 * k + 0.013, -0.05 * k))
-        assert ex.n_updates == n + k                                # one update per move
-    _event(ex, "button_release_event", (0.5, -0.25), button=1)    # redraws the shown state
-    _event(ex, "motion_notify_event", (1.0, 1.0))                    # released: nothing moves
-    assert ex.n_updates == n + 5 + 1
-    assert ex.values["x"] == pytest.approx(0.513, abs=0.01)
-
-
-def test_moves_queued_behind_a_slow_step_are_folded_into_the_next():
-    ex = Dot(display="agg")
-    ex.DRAG_BACKLOG_COST, ex.DRAG_BACKLOG_GAP = 0.0, 10.0   # every step is "slow", every move "queued"
-    ex.fig.canvas.draw()
-    _event(ex, "button_press_event", (0.0, 0.0), button=1)
-    n = ex.n_updates
-    _event(ex, "motion_notify_event", (0.2, 0.0))
-    _event(ex, "motion_notify_event", (0.4, 0.0))            # queued: kept, not drawn
-    _event(ex, "motion_notify_event", (0.613, 0.1))
-    assert ex.n_updates == n + 1 and ex.values["x"] == pytest.approx(0.2, abs=0.01)
-    _event(ex, "button_release_event", (0.613, 0.1), button=1)  # the last position is applied
-    assert ex.n_updates == n + 2 + 1 and ex.values["x"] == pytest.approx(0.613, abs=0.01)
-
-
-def test_press_far_from_every_handle_drags_nothing():
-    ex = Dot(display="agg")
-    ex.fig.canvas.draw()
-    _event(ex, "button_press_event", (1.0, 1.0), button=1)
-    n = ex.n_updates
-    _event(ex, "motion_notify_event", (1.2, 1.2))
-    assert ex.n_updates == n and ex.values["x"] == 0.0
+    ex.drag("dot", (0.0, 0.0), (0.4, 0.1), steps=1)
+    ex.drag("dot", (0.4, 0.1), (1e300, 0.0), steps=1)
+    assert ex.message.startswith("drag of dot refused: x must be within")
+    assert ex.values["x"] == pytest.approx(0.4) and ex.readout_values["x"] == pytest.approx(0.4)
 
 
 def test_slider_echo_of_a_dragged_value_is_ignored():
@@ -255,25 +233,13 @@ def test_the_time_scale_is_shown_beside_the_speed_menu():
     assert "0.1× real time" in Slow(display="agg").play_scale.value
 
 
-class PageDot(Counted):
-    """The counted dot, native: a picture instead of artists (no figure)."""
-
-    def scene_picture(self, st, view=None):
-        from planargeo.draw.picture import Picture
-
-        pic = Picture(view or self.limits, size=self.figure_px)
-        pic.path("dot", [[st["x"], st["y"]], [st["x"] + 0.01, st["y"]]], symbol="d", desc="the dot")
-        return pic
-
-    def readout_of(self, st):
-        return {"x": st["x"], "y": st["y"]}
+PageDot = Counted
 
 
 def test_play_in_the_page_ticks_from_the_canvas_in_sub_steps():
     """Page Play: the button's playing is the canvas's; each tick covers the wall time since the last,
     in sub-steps of at most 1/play_fps s (none skipped), and sets one picture; Play ends by the page."""
     ex = PageDot(display="page", v=0.5)
-    assert ex.fig is None and ex.native
     clock = _playing(ex)
     assert ex.canvas.playing                           # the button started the page's ticks
     ex.steps, version = [], ex.canvas.version
@@ -310,8 +276,15 @@ def test_a_refused_play_step_in_the_page_is_a_refused_tick():
 
 
 def test_ticks_queued_behind_a_slow_frame_are_dropped():
-    ex = Dot(display="agg")
-    ex.play_control.interval = 1                      # every frame (a redraw) is slower than 1 ms
+    import time
+
+    class SlowStep(Dot):
+        def play_step(self, values, dt):
+            time.sleep(0.003)
+            return super().play_step(values, dt)
+
+    ex = SlowStep(display="agg")
+    ex.play_control.interval = 1                      # every frame (3 ms of physics) is slower than 1 ms
     ex.play_control.playing = True
     ex.play_control.value += 1
     x = ex.values["x"]
@@ -344,19 +317,12 @@ def test_advance_seconds_is_sub_stepped_and_stop_keeps_what_was_computed():
     assert 0.95 - 1e-9 <= ex2.values["x"] <= 1.0 and ex2.readout_values["x"] == ex2.values["x"]
 
 
-def test_drag_goes_through_the_mouse_path():
-    """drag() presses, moves and releases like the mouse: a view held during a drag is fitted after."""
-    class Follow(Dot):
-        def render(self, st):
-            if self._drag_active is None:                   # held still while dragging
-                self.ax.set_xlim(st["x"] - 1, st["x"] + 1)
-            return super().render(st)
-
-    ex = Follow(display="agg")
+def test_drag_release_draws_the_shown_state_as_a_fresh_explorer():
+    """The release of a drag draws the state as a fresh explorer with the same values draws it."""
+    ex = Dot(display="agg")
     ex.drag("dot", (0.0, 0.0), (1.2, 0.3), steps=3)
-    fresh = Follow(display="agg", **ex.values)
-    assert ex.ax.get_xlim() == pytest.approx(fresh.ax.get_xlim())
-    assert ex.ax.get_xlim() == pytest.approx((0.2, 2.2))
+    fresh = Dot(display="agg", **ex.values)
+    assert ex.picture() == fresh.picture()
 
 
 def test_no_play_without_play_step():

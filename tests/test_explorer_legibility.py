@@ -32,9 +32,7 @@ def _params():
 
 
 def _shown(ex):
-    """The figure as shown: the explorer's own, or its picture drawn by matplotlib (native explorers)."""
-    if ex.fig is not None:
-        return ex.fig
+    """The explorer's picture as matplotlib draws it (exports, the stored image)."""
     from planargeo.draw.render import figure
 
     return figure(ex.picture())
@@ -199,7 +197,8 @@ def test_readout_shows_units_and_zero():
     assert "<td" in ex.readout.value and ">kg<" in ex.readout.value
 
 
-def test_use_widget_backend_outside_a_kernel_is_image():
+def test_use_widget_backend_changes_nothing():
+    """Notebooks still call it first: explorers are drawn by the page, matplotlib's backend is left alone."""
     backend = matplotlib.get_backend()
-    assert widgets.use_widget_backend() == "image"
+    assert widgets.use_widget_backend() == "page"
     assert matplotlib.get_backend() == backend

@@ -24,8 +24,8 @@ Parametrised over every explorer of :data:`planargeo.widgets.EXPLORERS` (``displ
 * **every symbol explained**: each readout name and each label drawn on the figure appears in
   ``explain()``.
 
-"Changed" is judged on the readout texts and the state's numbers first; the drawn picture's
-pixels are compared only for display controls (overlays, key), which change nothing else.
+"Changed" is judged on the readout texts and the state's numbers first; the picture's data
+is compared only for display controls (overlays, key), which change nothing else.
 
 Explorers that still break a rule carry ``xfail(strict=True)`` with the exact failure in
 :data:`KNOWN`; a fixed explorer then fails its xfail, and its entry goes.
@@ -43,7 +43,6 @@ import numpy as np
 import pytest
 
 from planargeo import widgets
-from planargeo.draw.layout import drawn_texts
 from planargeo.widgets import EXPLORERS
 from planargeo.widgets.readout import is_numeric, plain_symbol
 
@@ -125,11 +124,8 @@ def _same_numbers(a: list, b: list) -> bool:
 
 
 def _pixels(ex) -> str:
-    """A fingerprint of what is drawn: the picture's data (native explorers) or the figure's pixels."""
-    if ex.fig is None:
-        return hashlib.sha1(json.dumps(ex.picture(), sort_keys=True).encode()).hexdigest()
-    ex.fig.canvas.draw()
-    return hashlib.sha1(np.asarray(ex.fig.canvas.buffer_rgba()).tobytes()).hexdigest()
+    """A fingerprint of what is drawn: the picture's data."""
+    return hashlib.sha1(json.dumps(ex.picture(), sort_keys=True).encode()).hexdigest()
 
 
 class Snapshot:
@@ -226,13 +222,9 @@ def _random_set(ex, rng, k: int | None = None) -> dict:
 
 
 def _view(ex) -> tuple[float, float, float, float]:
-    if ex.fig is None:                     # a native explorer: the box its picture shows
-        x0, x1, y0, y1 = ex.picture()["box"]
-        return (x0, x1, y0, y1)
-    ex.ax.apply_aspect()
-    x0, x1 = ex.ax.get_xlim()
-    y0, y1 = ex.ax.get_ylim()
-    return (min(x0, x1), max(x0, x1), min(y0, y1), max(y0, y1))
+    """The box the picture shows."""
+    x0, x1, y0, y1 = ex.picture()["box"]
+    return (x0, x1, y0, y1)
 
 
 # --------------------------------------------------------------------------- rules
@@ -453,19 +445,16 @@ def test_readout_is_readable(name):
 
 
 def _labels(ex) -> set[tuple[str, ...]]:
-    """The symbols labelled on the figure (texts drawn in the axes, not ticks, messages or the key).
+    """The symbols labelled in the picture (placed labels, not fixed texts, messages or the key).
 
-    Each label is a tuple of the names it may go by: its text's symbol, and for a native
-    explorer also its element's thesis symbol (one of them must be explained).
+    Each label is a tuple of the names it may go by: its text's symbol and its element's
+    thesis symbol (one of them must be explained).
     """
     out = set()
-    if ex.fig is None:      # a native explorer: the labels of the elements of its picture
-        texts = [(part["text"], el.get("symbol") or "") for el in ex.picture()["elements"]
-                 if el["id"] != "figure message" and not el["id"].startswith("key ")
-                 for part in el["parts"] if part["p"] == "text" and not part.get("hidden")
-                 and not part.get("fixed")]
-    else:
-        texts = [(t, "") for t in _figure_texts(ex)]
+    texts = [(part["text"], el.get("symbol") or "") for el in ex.picture()["elements"]
+             if el["id"] != "figure message" and not el["id"].startswith("key ")
+             for part in el["parts"] if part["p"] == "text" and not part.get("hidden")
+             and not part.get("fixed")]
     for text, symbol in texts:
         s = plain_symbol(text).strip()
         if " = " in s:
@@ -475,21 +464,6 @@ def _labels(ex) -> set[tuple[str, ...]]:
         if not s or re.fullmatch(r"[-−+\d.,e ]+\s*[A-Za-zµ°/·²]*", s):   # a number, "1 m", "30°"
             continue
         out.add((s, plain_symbol(symbol).strip()) if symbol else (s,))
-    return out
-
-
-def _figure_texts(ex) -> list[str]:
-    """The texts drawn in the axes of an explorer drawn by matplotlib artists (not ticks, messages, key)."""
-    out = []
-    skip = {id(t) for axis in (ex.ax.xaxis, ex.ax.yaxis) for t in axis.get_ticklabels(which="both")}
-    skip |= {id(ex.ax.xaxis.label), id(ex.ax.yaxis.label), id(ex.ax.title)}
-    legend = ex.ax.get_legend()
-    if legend is not None:
-        skip |= {id(t) for t in legend.get_texts()}
-    for t, _bb in drawn_texts(ex.fig):
-        if id(t) in skip or getattr(t, "_planargeo_overlay", False):
-            continue
-        out.append(t.get_text())
     return out
 
 

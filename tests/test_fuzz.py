@@ -88,14 +88,17 @@ class _Plain(Explorer):
     def make_controls(self):
         return {"x": Step(-5.0, 5.0, 0.5, 1.0, "x").make("x")}
 
-    def make_artists(self, ax):
-        (self.dot,) = ax.plot([0.0], [0.0], "o")
+    def scene_picture(self, state, view=None):
+        from planargeo.draw.picture import Picture
+
+        pic = Picture(view or self.limits, size=self.figure_px)
+        pic.marks("dot", [[state["y"] / 2, 0.0]], symbol="x", desc="the dot (1.1)")
+        return pic
 
     def compute(self, values, changed):
         return {"y": 2.0 * values["x"]}
 
-    def render(self, state):
-        self.dot.set_data([state["y"] / 2], [0.0])
+    def readout_of(self, state):
         return {"y": state["y"]}
 
 

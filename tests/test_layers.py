@@ -148,3 +148,10 @@ def test_the_check_sees_a_violation():
 def test_installed_package_imports_nothing_from_tests_or_benchmarks():
     bad = {n: sorted(e & {"tests", "benchmarks", "bench", "reference", "conftest"}) for n, e in EXTERNAL.items()}
     assert not {n: e for n, e in bad.items() if e}
+
+
+@pytest.mark.parametrize("name", sorted(n for n in MODULES if n.startswith("planargeo.widgets")))
+def test_widgets_import_no_matplotlib(name):
+    """Issue 21: explorers are drawn by the page from their pictures; only draw/ turns a picture into
+    matplotlib (exports, stored images). No widget module imports matplotlib or ipympl, not even lazily."""
+    assert not EXTERNAL[name] & {"matplotlib", "ipympl"}, (name, sorted(EXTERNAL[name]))

@@ -1,4 +1,4 @@
-"""Behaviour shared by every explorer: construction, fuzzed controls, errors, export, ipympl."""
+"""Behaviour shared by every explorer: construction, fuzzed controls, errors, export, the page."""
 import subprocess
 import sys
 import textwrap
@@ -8,6 +8,7 @@ import ipywidgets as W
 import pytest
 
 import planargeo.widgets as widgets
+from planargeo.draw.picture import Picture
 from planargeo.errors import InputError, OutputError, SceneError
 from planargeo.widgets.base import Explorer, Step, fmt
 
@@ -28,11 +29,8 @@ def _values_for(w):
 
 
 def _draw(ex) -> None:
-    """Draw what is shown: the picture (native explorers) or the figure."""
-    if ex.fig is None:
-        assert ex.picture()["elements"]
-    else:
-        ex.fig.canvas.draw()
+    """Build what is shown: the picture."""
+    assert ex.picture()["elements"]
 
 
 @pytest.mark.parametrize("name", NAMES)
@@ -72,8 +70,11 @@ class Toy(Explorer):
     def make_controls(self):
         return {"a": Step(-2, 2, 0.1, 0.5, "a").make("a"), "b": Step(-2, 2, 0.1, 1.0, "b").make("b")}
 
-    def make_artists(self, ax):
-        self.seg, = ax.plot([0, 1], [0, 1])
+    def scene_picture(self, st, view=None):
+        pic = Picture(view or (-2, 2, -2, 2), size=self.figure_px)
+        if self.values.get("show", True):
+            pic.path("seg", [[0.0, 0.0], [st["a"], st["b"]]], symbol="s", desc="the segment (1.1)")
+        return pic
 
     def compute(self, v, changed):
         if v["a"] > v["b"]:
@@ -84,20 +85,32 @@ class Toy(Explorer):
             return {"boom": True}
         return dict(v, changed=sorted(changed))
 
-    def render(self, st):
+    def readout_of(self, st):
         if st.get("boom"):
             raise KeyError("render failed on purpose")
-        self.seg.set_data([0, st["a"]], [0, st["b"]])
         return {"a": st["a"], "b": st["b"], "changed": ",".join(st["changed"])}
+
+
+def _seg(t):
+    """The segment's element in the toy's picture (None: not drawn)."""
+    return next((e for e in t.picture()["elements"] if e["id"] == "seg"), None)
+
+
+def _seg_x(t) -> float:
+    """The x of the segment's drawn end."""
+    xy = _seg(t)["parts"][0]["xy"]
+    return xy[-1][0] if isinstance(xy[0], list) else xy[-2]
 
 
 def test_errors_become_messages_and_keep_the_last_drawing():
     t = Toy(display="agg")
     t.controls["a"].value = 0.8
-    assert t.readout_values["a"] == 0.8 and t.seg.get_xdata()[1] == 0.8
+    assert t.readout_values["a"] == 0.8 and _seg_x(t) == 0.8
     t.controls["a"].value = 1.5                              # a PlanargeoError
-    assert t.message == "a must not exceed b (refused: a = 1.5)" and t.seg.get_xdata()[1] == 0.8
-    assert t.figure_text and t._msg_text.get_visible() and t.readout_values["a"] == 0.8 and t.values["a"] == 0.8
+    assert t.message == "a must not exceed b (refused: a = 1.5)" and _seg_x(t) == 0.8
+    assert t.readout_values["a"] == 0.8 and t.values["a"] == 0.8
+    msg = next(e for e in t.picture()["elements"] if e["id"] == "figure message")    # said on the picture
+    assert t.figure_text and msg["parts"][0]["text"].startswith("a must not exceed b")
     t.controls["a"].value = -2.0                             # ZeroDivisionError in compute
     assert t.message.startswith("cannot compute this configuration")
     t.controls["a"].value = 0.0
@@ -108,7 +121,8 @@ def test_errors_become_messages_and_keep_the_last_drawing():
     assert "cannot compute" in t.message
     t.controls["a"].value = 0.3
     t.controls["b"].value = 1.0
-    assert t.message == "" and not t.figure_text and not t._msg_text.get_visible() and t.readout_values["a"] == 0.3
+    assert t.message == "" and not t.figure_text and t.readout_values["a"] == 0.3
+    assert all(e["id"] != "figure message" for e in t.picture()["elements"])
 
 
 def test_render_errors_are_reported_not_raised():
@@ -160,27 +174,25 @@ def test_fmt():
     assert fmt(1234567.0) == "1.235e+06" and fmt((1.0, 2.5)) == "(1, 2.5)" and fmt("<b>") == "&lt;b&gt;"
 
 
-def test_ipympl_canvas_is_the_figure_widget():
+def test_every_explorer_is_drawn_by_the_page_without_a_figure():
+    """Under ipympl too (old notebooks): the page draws each explorer's picture; no matplotlib figure."""
     code = textwrap.dedent("""
         import matplotlib
         matplotlib.use("module://ipympl.backend_nbagg")
-        import ipywidgets as W
         import planargeo.widgets as widgets
         from planargeo.widgets.canvas import PictureCanvas
-        def inside(w, ex):
-            return w is ex.fig.canvas or any(inside(c, ex) for c in getattr(w, "children", ()))
-        for name in widgets.EXPLORERS:                 # under ipympl: the figure's canvas, or the page
-            ex = getattr(widgets, name)()
-            assert ex.message == "", (name, ex.message)
-            if ex.native:                              # a native explorer: drawn by the page, no figure
-                assert ex.display_mode == "page" and ex.fig is None and isinstance(ex.canvas, PictureCanvas)
-                continue
-            assert ex.display_mode == "ipympl" and isinstance(ex.fig.canvas, W.DOMWidget)
-            assert inside(ex.widget, ex)
-            assert ex.fig.canvas.toolbar_position == "left" and ex.fig.canvas.toolbar_visible is True
+        assert widgets.use_widget_backend() == "page"
+        def inside(w, c):
+            return w is c or any(inside(k, c) for k in getattr(w, "children", ()))
+        for name in widgets.EXPLORERS:
+            for display in ("auto", "ipympl", "page"):
+                ex = getattr(widgets, name)(display=display)
+                assert ex.message == "" and ex.display_mode == "page", (name, ex.message)
+                assert isinstance(ex.canvas, PictureCanvas) and inside(ex.widget, ex.canvas)
+                assert not hasattr(ex, "fig") and ex.canvas.picture["elements"]
         print("ok")
     """)
-    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
     assert r.returncode == 0 and r.stdout.strip().endswith("ok"), r.stderr[-2000:]
 
 
@@ -195,10 +207,6 @@ class ToyOverlay(Toy):
         c["show"] = W.Checkbox(value=True, description="show")
         return c
 
-    def render(self, st):
-        out = super().render(st)
-        self.seg.set_visible(self.values["show"])
-        return out
 
 
 def test_display_only_control_redraws_without_computing():
@@ -207,11 +215,11 @@ def test_display_only_control_redraws_without_computing():
     state = t.state
     t.controls["show"].value = False
     assert t.n_computes == 1 and t.n_updates == 2 and t.state is state
-    assert not t.seg.get_visible()
+    assert _seg(t) is None
     t.controls["show"].value = True
-    assert t.seg.get_visible() and t.n_computes == 1
+    assert _seg(t) is not None and t.n_computes == 1
     t.controls["a"].value = 0.7                                # physics: one compute
-    assert t.n_computes == 2 and t.seg.get_xdata()[1] == 0.7
+    assert t.n_computes == 2 and _seg_x(t) == 0.7
     with t.hold():                                              # mixed changes: one compute
         t.controls["show"].value = False
         t.controls["b"].value = 1.5
@@ -224,10 +232,12 @@ def test_display_toggle_after_a_refused_value_redraws_the_shown_state():
     assert t.values == t.shown_values and t.values["a"] == 0.5
     n = t.n_computes
     t.controls["show"].value = False                            # the shown state is current
-    assert t.n_computes == n and t.message == "" and not t.seg.get_visible()
-    assert t.seg.get_xdata()[1] == 0.5
+    assert t.n_computes == n and t.message == "" and _seg(t) is None
+    t.controls["show"].value = True
+    assert _seg_x(t) == 0.5
+    t.controls["show"].value = False
     t.controls["a"].value = 0.2
-    assert t.message == "" and not t.seg.get_visible()
+    assert t.message == "" and _seg(t) is None
 
 
 def test_display_controls_must_name_controls():
@@ -412,8 +422,14 @@ class Shape(Explorer):
     def explain(self):
         return {"radius": "the circle's radius (thesis 1.1)", "$\\omega_1$": "the first dot's rate"}
 
-    def make_artists(self, ax):
-        self.dots, = ax.plot([], [], "o")
+    def scene_picture(self, st, view=None):
+        import numpy as np
+
+        pic = Picture(view or self.limits, size=self.figure_px)
+        t = np.linspace(0.0, 2 * np.pi, st["n"], endpoint=False)
+        pic.marks("dots", st["r"] * np.column_stack([np.cos(t), np.sin(t)]), symbol="ω₁",
+                  desc="the dots on the circle (1.1)")
+        return pic
 
     def compute(self, v, changed):
         import numpy as np
@@ -422,7 +438,7 @@ class Shape(Explorer):
         s = np.float64(v["size"]) * np.float64(1e10)          # overflows for a size beyond 1e298
         return {"r": r, "n": v["n"], "s": float(s)}
 
-    def render(self, st):
+    def readout_of(self, st):
         return {"radius": st["r"], "centre": (0.0, 0.0), "twist": (1.0, 2.0, 0.5),
                 "state": "at rest", "pole": point_text([1.0, 0.0, 0.0]), "size": st["s"]}
 
@@ -439,12 +455,13 @@ def test_disabled_controls_carry_their_reason_as_tooltip():
     assert ex.readout_values["radius"] == 1.5
 
 
-def test_the_key_is_disabled_when_nothing_has_an_entry():
+def test_the_key_lists_the_symbols_of_the_picture():
     ex = Shape(display="agg")
-    assert ex.controls["key"].disabled and "key" in ex.controls["key"].tooltip
-    ex.dots.set_label("dots")
-    ex.set(n=3)
     assert not ex.controls["key"].disabled
+    assert not any(e["id"].startswith("key ") for e in ex.picture()["elements"])
+    ex.set(key=True)
+    key = [e for e in ex.picture()["elements"] if e["id"].startswith("key ")]
+    assert [e["parts"][0]["text"] for e in key] == ["ω₁: the dots on the circle"]
 
 
 def test_explain_panel_lists_every_symbol_readably():

@@ -1,19 +1,18 @@
 """One consistent state in every explorer (issue 16, item 3).
 
-After any change, from the keyboard, the mouse or code, the controls, the
-figure and the readout show one state: the last one computed.  A value that
+After any change, from the keyboard, the page's pointer or code, the controls, the
+picture and the readout show one state: the last one computed.  A value that
 cannot be shown (NaN, out of range, ``None``, an impossible or singular
 configuration) is refused by name and the controls return to that state; no
 exception escapes a callback.
 
-The reference for "the figure and readout show the state" is the explorer's
-own drawing of its shown state, done again from scratch: :meth:`render` of
-``ex.state`` with the controls as they are must give the same readout and the
-same pixels.
+The reference for "the picture and readout show the state" is the explorer's
+own reading of its shown state, done again from scratch: :meth:`readout_of` of
+``ex.state`` with the controls as they are must give the same readout, and the
+picture the same data.
 """
 from __future__ import annotations
 
-import io
 import json
 import math
 import re
@@ -23,7 +22,6 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from matplotlib.backend_bases import MouseEvent
 
 import planargeo.widgets as widgets
 from planargeo.errors import InputError
@@ -35,11 +33,8 @@ HOSTILE = [math.nan, math.inf, -math.inf, 1e300, -1e300, None, "x", "1.5", 1 + 2
 
 
 def _png(ex) -> bytes:
-    if ex.fig is None:                       # a native explorer: what it draws is its picture
-        return json.dumps(ex.picture(), sort_keys=True).encode()
-    buf = io.BytesIO()
-    ex.fig.savefig(buf, format="png", dpi=30)
-    return buf.getvalue()
+    """What is drawn: the picture's data."""
+    return json.dumps(ex.picture(), sort_keys=True).encode()
 
 
 def assert_one_state(ex, pixels: bool = False) -> None:
@@ -47,8 +42,7 @@ def assert_one_state(ex, pixels: bool = False) -> None:
     assert ex.values == ex.shown_values
     readout = {k: fmt(v) for k, v in ex.readout_values.items()}
     before = _png(ex) if pixels else None
-    redraw = ex.readout_of if ex.fig is None else ex.render
-    assert {k: fmt(v) for k, v in redraw(ex.state).items()} == readout
+    assert {k: fmt(v) for k, v in ex.readout_of(ex.state).items()} == readout
     if pixels:
         assert _png(ex) == before
 

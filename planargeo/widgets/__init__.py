@@ -1,16 +1,17 @@
-"""Interactive explorers (ipywidgets + matplotlib) built on :mod:`planargeo.draw`.
+"""Interactive explorers (ipywidgets, drawn by the page) built on :mod:`planargeo.draw`.
 
-Each explorer builds its figure and artists once and updates them in place when
-a control changes.  Display one in a notebook by leaving it as the last
-expression of a cell (or calling ``.show()``)::
+Each explorer turns its controls into a state, the state into a picture
+(:mod:`planargeo.draw.picture`) and a readout; the page draws the picture
+(:mod:`planargeo.widgets.canvas`), moves dragged handles at once, zooms and pans.
+Display one in a notebook by leaving it as the last expression of a cell (or
+calling ``.show()``)::
 
     from planargeo.widgets import ProjectiveExplorer
     ProjectiveExplorer()
 
-Under ``%matplotlib widget`` (ipympl) the figure is interactive (drag points);
-with the default inline backend it is re-rendered as an image on every change.
-Explorers are imported lazily so that a missing optional module only affects
-the explorer that needs it.
+Where no widget can be shown (a saved notebook, the docs), the output holds a static
+PNG of the picture.  Explorers are imported lazily so that a missing optional module
+only affects the explorer that needs it.
 """
 from __future__ import annotations
 
@@ -22,38 +23,19 @@ __all__ = ["Explorer", "Handle", "fmt", "EXPLORERS", "use_widget_backend"]
 
 
 def use_widget_backend() -> str:
-    """Turn on ``%matplotlib widget`` (ipympl) in a kernel where it works; else stay inline.
+    """The front end explorers use: the page draws their pictures (kept for notebooks that call it).
 
-    Notebooks call this first: explorers then draw on an interactive canvas
-    (drag the handles with the mouse).  Without a kernel, or where ipympl is
-    missing or fails, nothing changes and explorers render images.
+    Explorers need no matplotlib backend (``%matplotlib widget`` is not needed): each draws
+    its picture in the page, in JupyterLab, Notebook and Voila alike.  Calling this changes
+    nothing.
 
     Returns
     -------
     str
-        ``"ipympl"`` when the widget backend is on, ``"image"`` otherwise.
+        ``"page"``.
     """
-    try:
-        from IPython import get_ipython
-    except ImportError:
-        return "image"
-    ip = get_ipython()
-    if ip is None or getattr(ip, "kernel", None) is None:
-        return "image"
-    try:
-        import ipympl  # noqa: F401
+    return "page"
 
-        ip.run_line_magic("matplotlib", "widget")
-    except Exception:  # noqa: BLE001 - fall back silently to the inline backend
-        try:
-            ip.run_line_magic("matplotlib", "inline")
-        except Exception:  # noqa: BLE001
-            pass
-        return "image"
-    import matplotlib
-
-    return "ipympl" if "ipympl" in matplotlib.get_backend().lower() or \
-        "widget" in matplotlib.get_backend().lower() else "image"
 
 #: public name -> submodule defining it
 EXPLORERS = {

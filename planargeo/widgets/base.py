@@ -11,15 +11,15 @@ Play step.  The base does the rest, in parts with one job each:
 * :mod:`planargeo.widgets.handles`: handles and drags (the page's checked drag message);
 * :mod:`planargeo.widgets.play`: Play at true real time, in sub-steps, paced by the page;
 * :mod:`planargeo.widgets.export`: SVG, PNG, GIF and MP4 files and download links;
-* :mod:`planargeo.widgets.front`: the picture or figure, the widgets, readout and messages;
+* :mod:`planargeo.widgets.front`: the picture, the widgets, readout and messages;
 * this module: the explorer's state, its updates and refusals.
 
 Front ends (``display``): ``"page"`` (the browser draws the picture:
-:mod:`planargeo.widgets.canvas`; the default, ``"auto"``, for a native explorer),
-``"image"`` (a PNG of the picture, drawn by :mod:`planargeo.draw.render`) and ``"agg"``
-(nothing shown: tests, benchmarks; the picture is built when asked, :meth:`Explorer.picture`).
-An explorer still drawn by matplotlib artists (``setup_axes``, ``make_artists``,
-``render``) has a figure, and also ``"ipympl"``.
+:mod:`planargeo.widgets.canvas`; the default, ``"auto"``), ``"image"`` (a PNG of the
+picture, drawn by :mod:`planargeo.draw.render`) and ``"agg"`` (nothing shown: tests,
+benchmarks; the picture is built when asked, :meth:`Explorer.picture`).  No matplotlib
+figure: the picture is the one description of what is shown, and matplotlib draws it only
+for files (exports, the static image stored in a notebook).
 
 One consistent state.  The controls, the picture and the readout always show the state last
 computed.  A value that cannot be shown is *refused*: a control set to NaN, out of its
@@ -66,13 +66,13 @@ from typing import Any, Callable
 import ipywidgets as W
 import numpy as np
 
-from planargeo.draw.style import EXPLORER_DPI, setup_axes
+from planargeo.draw.style import EXPLORER_DPI
 from planargeo.errors import InputError, PlanargeoError
 from planargeo.widgets.controls import (TEXT_LIMIT, Choice, ControlsMixin, FloatSlider, IntSlider, Step,
                                          Toggle, numeric_failure, same_value, short_text, shown_as, cached,
                                          check_control)
 from planargeo.widgets.export import ExportMixin
-from planargeo.widgets.front import FrontMixin, backend_is_ipympl
+from planargeo.widgets.front import FrontMixin
 from planargeo.widgets.handles import Handle, HandleMixin
 from planargeo.widgets.play import PlayMixin
 from planargeo.widgets.readout import fmt, point_text
@@ -84,32 +84,30 @@ _DISPLAYS = ("auto", "ipympl", "image", "agg", "page")
 
 
 class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
-    """Base class: a figure + controls + readout + message, updated in place.
+    """Base class: controls + picture + readout + message, one consistent state.
 
     Subclasses implement
 
-    * :meth:`make_controls` -> ``{name: widget}`` (initial values are the defaults),
-    * :meth:`setup_axes` (limits, labels) and :meth:`make_artists` (create every
-      artist once, store them on ``self``),
+    * :meth:`make_controls` -> ``{name: description or widget}`` (initial values are the defaults),
     * :meth:`compute` ``(values, changed) -> state``: may raise PlanargeoError,
-    * :meth:`render` ``(state)``: update the artists in place and return the
-      readout dictionary (it may derive overlay quantities from ``state`` and
-      store them there, so that they are computed once per state),
-    * optionally :meth:`adjust` ``(values, changed)``: controls that follow
-      others (set with them, refused with them).
+    * :meth:`scene_picture` ``(state, view) -> Picture``: what is drawn,
+    * :meth:`readout_of` ``(state) -> dict``: the numbers shown,
+    * optionally :meth:`handles`, :meth:`play_step`, :meth:`adjust` (controls that
+      follow others, set with them, refused with them), :meth:`disabled`,
+      :meth:`explain` and :meth:`focus_options`.
 
     Controls named in :attr:`display_controls` change the drawing only: a change
     of those alone re-renders the shown state without calling
     :meth:`compute` (:attr:`n_computes` counts the calls).
 
-    Every update either shows a new state (controls, figure and readout all
+    Every update either shows a new state (controls, picture and readout all
     of it) or is refused as a whole (module docstring): :attr:`shown_values`
     are the control values of the state on show, equal to :attr:`values`
     whenever no callback is running.
 
     Parameters
     ----------
-    display : {"auto", "ipympl", "image", "agg"}
+    display : {"auto", "page", "image", "agg"}
         Front end (see the module docstring).
     figsize : (float, float)
         Figure size in inches.
@@ -154,8 +152,6 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
     #: Frames per second of Play and of exported animations (``dt = speed / play_fps``).
     play_fps: int = 20
 
-    #: Pixel radius within which a mouse press picks a handle.
-    handle_radius_px: float = 12.0
 
     #: Simulated seconds per wall-clock second at Play speed "1×" (shown beside the speed menu when not 1).
     time_scale: float = 1.0
@@ -166,14 +162,9 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
     def __init__(self, *, display: str = "auto", figsize=None, export_dir=None, **values):
         if display not in _DISPLAYS:
             raise InputError(f"display must be one of {_DISPLAYS}, got {display!r}")
-        #: True for a native explorer (:meth:`scene_picture` and :meth:`readout_of`): no figure at all
-        self.native = (type(self).scene_picture is not Explorer.scene_picture
-                       and type(self).readout_of is not Explorer.readout_of)
-        if self.native and display in ("auto", "ipympl"):
-            display = "page"
-        elif display == "auto":
-            display = "ipympl" if backend_is_ipympl() else "image"
-        self.display_mode = display
+        #: every explorer draws its own picture (kept for callers that ask)
+        self.native = True
+        self.display_mode = "page" if display in ("auto", "ipympl") else display   # ipympl: old notebooks
         self._figsize = self._figure_inches(figsize or self.figsize)
         self._figure_text = ""
         self._page_view = None
@@ -181,7 +172,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         self.readout_values: dict[str, Any] = {}
         self.state: Any = None
         self.shown_values: dict[str, Any] = {}
-        self.n_updates = self.n_computes = 0
+        self.n_updates = self.n_computes = self.n_refusals = 0
         self.last_export: Path | None = None
         self._message = ""
         self._hold = self._quiet = 0
@@ -192,15 +183,9 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         self._drag_active: Handle | None = None
         self._drag_canvas = None
         self._drag_seq = 0
-        self._drag_pending: tuple[float, float] | None = None
-        self._last_drag = (0.0, 0.0)
-        self._extra_handles: list[Handle] = []
         self._make_controls(values)
 
-        # figure (none for a native explorer: its picture is built from the state), widgets, Play
-        self.fig = self.ax = self.frames = self._msg_text = self._legend = None
-        if not self.native:
-            self._make_artist_figure()
+        # widgets, Play (no figure: the picture is built from the state)
         self._make_widgets()
         self._tooltips = {k: getattr(w, "tooltip", None) for k, w in self.controls.items()}
         self.has_play = type(self).play_step is not Explorer.play_step
@@ -209,9 +194,6 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
             w.observe(self._make_observer(name), names="value")
         self.widget = self._layout()
         self._connect_page_play()
-        if not self.native:
-            self.connect_mouse()
-        self._connect_handles()
         self._update(initial=True)
         self.defaults = dict(self.values)  # as first shown (controls that follow others included)
 
@@ -230,37 +212,8 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         """
         raise NotImplementedError
 
-    #: the initial view ``(x0, x1, y0, y1)`` of the equal-aspect axes (None: autoscale), and a light grid
+    #: the explorer's own view ``(x0, x1, y0, y1)`` (its pictures may use it as their default)
     limits: tuple[float, float, float, float] | None = None
-
-    grid: bool = True
-
-    def setup_axes(self, ax) -> None:
-        """Equal-aspect axes with :attr:`limits` and a light grid (subclasses may change).
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-            The explorer's axes.
-        """
-        setup_axes(self.limits, ax=ax, axis_off=False)
-        if self.grid:
-            ax.grid(True, lw=0.3, alpha=0.5)
-
-    def make_artists(self, ax) -> None:  # pragma: no cover - abstract
-        """Create every artist once and keep it on ``self`` (subclasses).
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes
-            The explorer's axes.
-
-        Raises
-        ------
-        NotImplementedError
-            In the base class.
-        """
-        raise NotImplementedError
 
     def compute(self, values: dict[str, Any], changed: set[str]) -> Any:  # pragma: no cover
         """The scene's numbers for the control ``values`` (subclasses).
@@ -275,7 +228,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         Returns
         -------
         Any
-            The state :meth:`render` draws.
+            The state :meth:`scene_picture` draws and :meth:`readout_of` reads.
 
         Raises
         ------
@@ -286,8 +239,33 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         """
         raise NotImplementedError
 
-    def render(self, state: Any) -> dict[str, Any]:  # pragma: no cover - abstract
-        """Update the artists in place for ``state`` and return the readout (subclasses).
+    def scene_picture(self, state: Any, view=None):
+        """The picture of ``state`` (subclasses): every element with its id, role, symbol and meaning.
+
+        The page draws it (``display="page"``); exports and the image draw the same picture
+        through matplotlib (:mod:`planargeo.draw.render`).  The base adds the handles, the key
+        and the message of a refused value (:meth:`picture`).
+
+        Parameters
+        ----------
+        state : Any
+            What :meth:`compute` returned.
+        view : (x0, x1, y0, y1), optional
+            The view the user zoomed or panned to (None: the explorer's own).
+
+        Returns
+        -------
+        Picture
+
+        Raises
+        ------
+        NotImplementedError
+            In the base class.
+        """
+        raise NotImplementedError
+
+    def readout_of(self, state: Any) -> dict[str, Any]:
+        """The readout of ``state`` (subclasses).
 
         Parameters
         ----------
@@ -306,56 +284,10 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         """
         raise NotImplementedError
 
-    def scene_picture(self, state: Any, view=None):
-        """The picture of ``state``, built natively (optional; default None).
-
-        An explorer that draws its state as a :class:`~planargeo.draw.picture.Picture`
-        returns it here; in the page (``display="page"``) it is then drawn without any
-        matplotlib artist: :meth:`readout_of` gives the numbers, and exports draw the same
-        picture through matplotlib (:mod:`planargeo.draw.render`).  None: the picture is
-        read off the explorer's artists.
-
-        Parameters
-        ----------
-        state : Any
-            What :meth:`compute` returned.
-        view : (x0, x1, y0, y1), optional
-            The view the user zoomed or panned to (None: the explorer's own).
-
-        Returns
-        -------
-        Picture or None
-        """
-        return None
-
-    def readout_of(self, state: Any) -> dict[str, Any]:
-        """The readout of ``state`` without drawing (explorers with :meth:`scene_picture`).
-
-        Parameters
-        ----------
-        state : Any
-            What :meth:`compute` returned.
-
-        Returns
-        -------
-        dict
-            Readout entries, as :meth:`render` returns them.
-
-        Raises
-        ------
-        NotImplementedError
-            An explorer that draws only through its artists.
-        """
-        raise NotImplementedError(f"{type(self).__name__} has no readout_of() apart from render()")
-
     @property
     def native_page(self) -> bool:
-        """True when this explorer draws its own picture (:attr:`native`; kept for old callers)."""
-        return self.native
-
-    def _render(self, state: Any) -> dict[str, Any]:
-        """The readout of ``state``; the artists are updated unless the explorer is native."""
-        return self.readout_of(state) if self.native else self.render(state)
+        """True: every explorer draws its own picture (kept for old callers)."""
+        return True
 
     def adjust(self, values: dict[str, Any], changed: set[str]) -> dict[str, Any]:
         """Values of controls that follow the ``changed`` ones (default: none).
@@ -387,11 +319,8 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         """
         return []
 
-    def connect_mouse(self) -> None:
-        """Connect extra mouse handlers (subclasses; :meth:`handles` covers dragging)."""
-
     def handles(self) -> list[Handle]:
-        """The draggable handles of the figure (default: none).
+        """The draggable handles of the picture (default: none).
 
         Returns
         -------
@@ -484,7 +413,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
 
     @contextlib.contextmanager
     def _page_after(self):
-        """The controls', readout's and message's new values reach the page after the figure.
+        """The controls', readout's and message's new values reach the page after the picture.
 
         The new picture is what the user waits for; the page's work on the other
         widgets (sliders, the readout table) would otherwise compete with the
@@ -551,7 +480,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
 
     def _update(self, initial: bool = False) -> None:
         """Show the state of the controls, or refuse it; never raises after construction."""
-        if self._busy:  # a re-entrant change from inside render: fold it in
+        if self._busy:  # a re-entrant change from inside an update: fold it in
             self._pending = True
             return
         self._busy = True
@@ -582,7 +511,6 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
                 raise
             self._refuse(str(exc), self.figure_message(exc))
             return
-        rendered = False
         try:
             follow = self.adjust(values, changed)
             self._set_controls(follow)
@@ -597,8 +525,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
                 else:
                     self.n_computes += 1
                     state = self.compute(values, changed | set(follow))
-                rendered = True
-                readout = dict(self._render(state))
+                readout = dict(self.readout_of(state))
                 table = self._readout_html(readout)
                 message = (state.get("message", "") if isinstance(state, dict)
                            else getattr(state, "message", ""))
@@ -613,13 +540,12 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
                 figure = short_text(reason)
             else:
                 figure = self.figure_message(exc)
-            self._refuse(f"{reason} (refused: {refused})" if refused else reason, figure, rendered)
+            self._refuse(f"{reason} (refused: {refused})" if refused else reason, figure)
             self._follow_shown()
             return
         self.state = state
         self.shown_values = self.values
         self.readout_values = readout
-        self._draw_key()
         self.readout.value = table
         self._set_message(message)
         self._show_figure_message(message)
@@ -635,8 +561,9 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
             return f"cannot compute this configuration: {exc}"
         return f"internal error ({type(exc).__name__}): {exc}"
 
-    def _refuse(self, message: str, figure_text: str | None = None, rerender: bool = False) -> None:
-        """Report ``message`` and return controls, figure and readout to the shown state."""
+    def _refuse(self, message: str, figure_text: str | None = None) -> None:
+        """Report ``message`` and return controls, picture and readout to the shown state."""
+        self.n_refusals += 1
         reverted = [k for k, v in self.shown_values.items()
                     if k in self.controls and not same_value(self.controls[k].value, v)]
         self._set_controls(self.shown_values)
@@ -645,17 +572,12 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
                 self.controls[k].send_state("value")
         self._changed.clear()
         self._pending = False
-        if rerender:  # a render that failed midway may have moved some artists
-            try:
-                self._render(self.state)
-            except Exception as exc:  # noqa: BLE001
-                message += f"; redrawing the shown state failed ({type(exc).__name__}): {exc}"
         self._set_message(message)
         self._show_figure_message(short_text(message) if figure_text is None else figure_text)
         self._safe_redraw()
 
     def figure_message(self, exc: Exception) -> str:
-        """Short text drawn on the figure when an update is refused.
+        """Short text written on the picture when an update is refused.
 
         Parameters
         ----------

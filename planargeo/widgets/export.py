@@ -1,8 +1,9 @@
 """Exports of what an explorer shows: SVG and PNG files, GIF and MP4 animations, download links.
 
-Every file is drawn whole by matplotlib (a native explorer's picture through
-:mod:`planargeo.draw.render`), rendered to memory and written atomically
-(:func:`planargeo.files.atomic_write`).  The same view always gives the same file.
+Every file is the explorer's picture (:meth:`~planargeo.widgets.front.FrontMixin.picture`)
+drawn by the matplotlib renderer (:func:`planargeo.draw.render.picture_bytes`), made in
+memory and written atomically (:func:`planargeo.files.atomic_write`).  The same view always
+gives the same file.
 """
 from __future__ import annotations
 
@@ -11,13 +12,14 @@ import html
 import io
 import itertools
 import os
+import re
 import shutil
 import subprocess
 import tempfile
 from pathlib import Path
 
-import matplotlib
 import numpy as np
+from PIL import Image
 
 from planargeo.errors import InputError, OutputError
 from planargeo.files import atomic_write
@@ -47,27 +49,16 @@ class ExportMixin:
         return path
 
     def _svg_bytes(self) -> bytes:
-        fig = self._picture_figure() if self.native else self.fig   # a native one: its picture
-        buf = io.BytesIO()
-        # no date and fixed element ids: the same view always gives the same file
-        with matplotlib.rc_context({"svg.hashsalt": "planargeo"}):
-            fig.savefig(buf, format="svg", metadata={"Date": None})
-        return buf.getvalue()
+        from planargeo.draw.render import picture_bytes   # matplotlib, loaded when a file is made
 
-    def _picture_figure(self):
-        """The shown picture drawn by matplotlib (:func:`planargeo.draw.render.figure`), at 100 dpi."""
-        from planargeo.draw.render import figure
-
-        return figure(self.picture())
+        # fixed element ids (the package's svg.hashsalt) and no date: the same view, the same file
+        return re.sub(rb"<dc:date>[^<]*</dc:date>", b"", picture_bytes(self.picture(), "svg"))
 
     def _png_bytes(self, dpi: float | None = None) -> bytes:
-        buf = io.BytesIO()
-        if self.native:   # the picture's size is the figure's in pixels: drawn at 100 dpi
-            self._picture_figure().savefig(buf, format="png", dpi=100.0 * (dpi or self.dpi) / self.dpi,
-                                           metadata={"Software": None})
-            return buf.getvalue()
-        self.fig.savefig(buf, format="png", dpi=dpi or self.dpi, metadata={"Software": None})
-        return buf.getvalue()
+        from planargeo.draw.render import picture_bytes
+
+        # the picture's size is the explorer's in pixels: drawn at 100 dpi
+        return picture_bytes(self.picture(), "png", dpi=100.0 * (dpi or self.dpi) / self.dpi)
 
     def export_svg(self, path=None) -> Path:
         """Write the current view to an SVG file, atomically, and return its path.
@@ -134,15 +125,7 @@ class ExportMixin:
             for k in range(frames):
                 if k and not self._frame(seconds):
                     break
-                if self.native:
-                    from matplotlib.backends.backend_agg import FigureCanvasAgg
-
-                    canvas = FigureCanvasAgg(self._picture_figure())
-                    canvas.draw()
-                    out.append(np.asarray(canvas.buffer_rgba())[..., :3].copy())
-                    continue
-                self.fig.canvas.draw()
-                out.append(np.asarray(self.fig.canvas.buffer_rgba())[..., :3].copy())
+                out.append(np.asarray(Image.open(io.BytesIO(self._png_bytes())).convert("RGB")))
         finally:
             self._exporting = False
             self.set(**start)
@@ -207,8 +190,6 @@ class ExportMixin:
                               "(install Debian's ffmpeg, or use format='gif')")
         imgs = self._frames_rgb(frames, fps)
         if format == "gif":
-            from PIL import Image
-
             pics = [Image.fromarray(a).quantize(colors=128, method=Image.Quantize.MEDIANCUT)
                     for a in imgs]
             buf = io.BytesIO()

@@ -1,10 +1,10 @@
-"""The front end of an explorer: its figure or picture, its page widgets, readout and messages.
+"""The front end of an explorer: its picture, its page widgets, readout and messages.
 
 Display modes (:class:`~planargeo.widgets.base.Explorer` ``display``): ``"page"`` (the
 browser draws the picture: :class:`~planargeo.widgets.canvas.PictureCanvas`), ``"image"``
-(a PNG of it in an :class:`ipywidgets.Image`), ``"agg"`` (nothing shown; the picture is
-built when asked), and, for an explorer still drawn by matplotlib artists, ``"ipympl"``.
-A native explorer (:meth:`~planargeo.widgets.base.Explorer.scene_picture`) has no figure.
+(a PNG of it, drawn by :mod:`planargeo.draw.render`, in an :class:`ipywidgets.Image`) and
+``"agg"`` (nothing shown; the picture is built when asked).  There is no matplotlib figure:
+the picture (:meth:`FrontMixin.picture`) is the one description of what is shown.
 """
 from __future__ import annotations
 
@@ -13,28 +13,12 @@ import html
 from typing import Any
 
 import ipywidgets as W
-import matplotlib
-import numpy as np
-from matplotlib.figure import Figure
 
-from planargeo.draw.artists import has_legend_entries, place_labels
-from planargeo.draw.style import EXPLORER_MIN_WIDTH_PX, EXPLORER_TICK_PT, LABEL_PT
+from planargeo.draw.style import EXPLORER_MIN_WIDTH_PX
 from planargeo.errors import PlanargeoError
-from planargeo.widgets.frames import Frames, live_canvas, live_png
 from planargeo.widgets.readout import explain_html, fmt, value_text
 
-__all__ = ["FrontMixin", "backend_is_ipympl"]
-
-
-def backend_is_ipympl() -> bool:
-    """True when matplotlib's backend is ipympl's (``%matplotlib widget``).
-
-    Returns
-    -------
-    bool
-    """
-    name = matplotlib.get_backend().lower()
-    return "ipympl" in name or name in ("widget", "module://ipympl.backend_nbagg")
+__all__ = ["FrontMixin"]
 
 
 def _value_and_unit(full: str, bare: str) -> tuple[str, str]:
@@ -80,55 +64,15 @@ class FrontMixin:
             w, h = min_w, h * min_w / w
         return w, h
 
-    def _make_artist_figure(self) -> None:
-        """The matplotlib figure of an explorer drawn by its artists (not native)."""
-        self.fig, self.ax = self._make_figure(self._figsize)
-        self.frames = Frames(self.fig)
-        self.setup_axes(self.ax)
-        place_labels(self.ax)  # labels avoid each other and stay inside the axes
-        self.make_artists(self.ax)
-        self._msg_text = self.ax.text(0.5, 0.5, "", transform=self.ax.transAxes, ha="center",
-                                      va="center", fontsize=11, color="#b00020", zorder=100,
-                                      wrap=True,
-                                      bbox=dict(boxstyle="round", fc="white", ec="#b00020",
-                                                alpha=0.9),
-                                      visible=False)
-        self._msg_text._planargeo_overlay = True  # a deliberate box over the figure (legibility)
-
-    def _make_figure(self, figsize):
-        w, h = figsize
-        fig = Figure(figsize=(w, h), dpi=self.dpi)
-        if self.display_mode == "ipympl":
-            live_canvas(fig)   # draws when the explorer says so, sends light PNGs
-            fig.canvas.header_visible = False
-            fig.canvas.footer_visible = False
-            fig.canvas.toolbar_visible = True      # its own column, never over the axes
-            fig.canvas.toolbar_position = "left"
-            fig.canvas.resizable = False
-        else:
-            from matplotlib.backends.backend_agg import FigureCanvasAgg
-
-            FigureCanvasAgg(fig)
-        ax = fig.add_subplot(1, 1, 1)
-        if self.display_mode == "ipympl":
-            # the toolbar's coordinate message goes to ipympl's footer, which is hidden: sending it
-            # on every mouse move would only load the page and the server during a drag
-            ax.format_coord = lambda x, y: ""
-        ax.tick_params(labelsize=EXPLORER_TICK_PT)
-        fig.subplots_adjust(left=0.09, right=0.98, bottom=0.07, top=0.97)
-        return fig, ax
-
     @property
     def figure_px(self) -> tuple[int, int]:
-        """Native size of the figure in pixels (as shown at 100 % zoom)."""
+        """Size of the picture in pixels (``figsize`` × ``dpi``; as shown at 100 % zoom)."""
         w, h = self._figsize
         return int(round(w * self.dpi)), int(round(h * self.dpi))
 
     def _layout(self):
         wpx, _ = self.figure_px
-        if self.display_mode == "ipympl":
-            fig_widget = self.fig.canvas
-        elif self.display_mode == "image":
+        if self.display_mode == "image":
             # shown at its native size (text sizes as designed), shrinking with a narrow output area
             self.image = W.Image(format="png", layout=W.Layout(width=f"{wpx}px", height="auto",
                                                                max_width="100%"))
@@ -139,7 +83,7 @@ class FrontMixin:
             fig_widget = self.canvas
         else:
             self.image = None
-            fig_widget = W.HTML("<i>(figure drawn off-screen)</i>")
+            fig_widget = W.HTML("<i>(picture built off-screen)</i>")
         buttons = W.HBox([self.reset_button, W.HTML("<span style='padding:0 4px'>export</span>"),
                           self.export_button, self.export_png_button]
                          + ([self.export_gif_button] if self.has_play else [])
@@ -175,34 +119,22 @@ class FrontMixin:
         return PictureCanvas(on_drag=self._page_drag, on_view=self._page_view_to)
 
     def redraw(self) -> None:
-        """Draw the figure and send it to the page.
+        """Send the shown state's picture to the front end.
 
-        Only what can change is drawn (:class:`~planargeo.widgets.frames.Frames`:
-        the axes' background is kept while the view stays put), and the page gets
-        a light PNG (:func:`~planargeo.widgets.frames.live_png`) at once: in image
-        mode as the image's value, under ipympl through its canvas, without
-        ipympl's round trip through the page.
+        The page's canvas gets the picture (it sends the page only what changed); an
+        image gets it drawn as PNG; without a front end nothing is built.
         """
         if self.display_mode == "page":
             self.canvas.picture = self.picture()
-            return
-        if self.native:   # image: the picture drawn by matplotlib into the image; agg: nothing to draw
-            if self.display_mode == "image":
-                self.image.value = self._png_bytes()
-            return
-        self.frames.draw()
-        if self.display_mode == "ipympl":
-            self.fig.canvas.blit()
         elif self.display_mode == "image":
-            self.image.value = live_png(np.asarray(self.fig.canvas.buffer_rgba()))
+            self.image.value = self._png_bytes()
 
     def picture(self) -> dict:
         """What is shown, as a picture's plain data (:mod:`planargeo.draw.picture`).
 
-        A native explorer's :meth:`scene_picture` of the shown state (an explorer drawn by
-        artists: read off them, :func:`planargeo.draw.from_axes.picture_from_axes`), in the
-        view the user zoomed or panned to in the page, if any; with the handles that can be
-        dragged now, the key when it is on, and the message of a refused value.
+        The explorer's :meth:`scene_picture` of the shown state, in the view the user zoomed
+        or panned to in the page, if any; with the handles that can be dragged now, the key
+        when it is on, and the message of a refused value.
 
         Returns
         -------
@@ -211,30 +143,13 @@ class FrontMixin:
         Raises
         ------
         PlanargeoError
-            A native explorer with no state shown yet.
+            No state shown yet.
         """
-        from planargeo.draw.from_axes import picture_from_axes
-
-        handles = []
-        for h in self.all_handles():
-            try:
-                where = h.where()
-            except Exception:  # noqa: BLE001 - a handle that cannot say where it is: not shown
-                where = None
-            if where is not None:
-                handles.append((h.name, where, f"drag to change {h.name}"))
-        view = self._page_view
-        pic = self.scene_picture(self.state, view) if self.state is not None else None
-        if pic is None and self.native:
+        if self.state is None:
             raise PlanargeoError(f"{type(self).__name__} has no state to draw yet")
-        if pic is None:
-            try:
-                explain = dict(self.explain())
-            except Exception:  # noqa: BLE001 - descriptions are a courtesy
-                explain = {}
-            return picture_from_axes(self.ax, explain=explain, view=view, handles=handles).to_dict()
-        for name, where, desc in handles:
-            pic.handle(name, where, symbol=name, desc=desc)
+        pic = self.scene_picture(self.state, self._page_view)
+        for h in self._handle_list():
+            pic.handle(h["id"], (h["x"], h["y"]), symbol=h["id"], desc=f"drag to change {h['id']}")
         if self.controls["key"].value:
             self._add_key(pic)
         if self._figure_text:   # a refused value, said on the picture as on a figure
@@ -267,30 +182,6 @@ class FrontMixin:
             pic.text(f"key {k + 1}", (x0, y1), text[:48], role="text", color=color, ha="left",
                      va="top", dx=6.0, dy=-4.0 - 14.0 * k, z=90, desc=f"key: {text}")
 
-    def _has_key_entries(self) -> bool:
-        """True when something drawn now has an entry in the key (a native picture: its symbols)."""
-        return self.state is not None if self.native else has_legend_entries(self.ax)
-
-    def _draw_key(self) -> None:
-        """The legend of labelled artists when the "key" control is on (removed when off).
-
-        A native explorer's key is part of its picture (:meth:`picture`)."""
-        if self.native:
-            return
-        if self._legend is not None:
-            with contextlib.suppress(Exception):
-                self._legend.remove()
-            self._legend = None
-        if not self.controls["key"].value:
-            return
-        from planargeo.draw.artists import legend_handles
-
-        handles = legend_handles(self.ax)
-        if handles:
-            self._legend = self.ax.legend(handles=handles, loc="upper left", fontsize=LABEL_PT,
-                                          framealpha=0.9, handlelength=1.6, borderaxespad=0.3)
-            self._legend.set_zorder(50)
-
     def _page_view_to(self, box) -> None:
         """The user zoomed or panned in the page (None: back to the explorer's own view)."""
         self._page_view = None if box is None else tuple(box)
@@ -306,13 +197,10 @@ class FrontMixin:
 
     def _show_figure_message(self, text: str) -> None:
         self._figure_text = text
-        if self._msg_text is not None:
-            self._msg_text.set_text(text)
-            self._msg_text.set_visible(bool(text))
 
     @property
     def figure_text(self) -> str:
-        """The message drawn on the figure or picture ("" when none is shown)."""
+        """The message written on the picture ("" when none is shown)."""
         return self._figure_text
 
     def _readout_html(self, values: dict[str, Any]) -> str:
@@ -365,7 +253,7 @@ class FrontMixin:
         except Exception as exc:  # noqa: BLE001 - a faulty rule disables nothing
             off = {}
             self._message = self._message or f"internal error in disabled(): {exc}"
-        if "key" not in off and not self.controls["key"].value and not self._has_key_entries():
+        if "key" not in off and not self.controls["key"].value and self.state is None:
             off["key"] = "nothing drawn now has an entry in the key"
         for k, w in self.controls.items():
             reason = off.get(k)

@@ -1,9 +1,9 @@
 """Handles and dragging: points of the picture the user (or a test) drags to set controls.
 
 A :class:`Handle` names a point, where it is now, and the control values a drag to a
-new point means.  :class:`HandleMixin` gives the explorer :meth:`~HandleMixin.drag`
-(in every display mode, through the same checked message the page sends) and, for
-an explorer still drawn by matplotlib artists, the mouse on its figure.
+new point means.  The page hit-tests the handles and sends ``{"type": "drag", "id", "x",
+"y"}`` messages; :meth:`HandleMixin.drag` sends the same messages from Python, in every
+display mode, through the same check (:meth:`planargeo.widgets.canvas.PictureCanvas.handle_message`).
 
 Examples
 --------
@@ -31,7 +31,7 @@ __all__ = ["Handle", "HandleMixin"]
 
 @dataclass
 class Handle:
-    """A point of the figure the mouse can drag (under ipympl) and tests can drag (:meth:`Explorer.drag`).
+    """A point of the picture the user drags in the page, and tests drag with :meth:`HandleMixin.drag`.
 
     Parameters
     ----------
@@ -44,7 +44,13 @@ class Handle:
         raise a :class:`~planargeo.errors.PlanargeoError`: the drag step is refused,
         the last good state stays, and the message names the reason.
 
+    Examples
+    --------
+    >>> h = Handle("P", lambda: (0.0, 0.0), lambda x, y: {"P x": x, "P y": y})
+    >>> h.where()
+    (0.0, 0.0)
     """
+
     name: str
     where: Callable[[], Any]
     drag: Callable[[float, float], dict]
@@ -75,34 +81,14 @@ class HandleMixin:
                         pts.append(q)
         return np.array(pts, dtype=float).reshape(-1, 2)
 
-    def connect_drag(self, x_control: str, y_control: str, target: Callable[[], Any],
-                     radius_px: float | None = None) -> None:
-        """Let the mouse drag the point ``target()`` (data ``(x, y)``) by setting two controls.
-
-        Kept for compatibility: it adds a :class:`Handle` named ``"x_control,y_control"``.
-
-        Parameters
-        ----------
-        x_control, y_control : str
-            The controls that take the dragged point's x and y.
-        target : callable () -> (x, y) or None
-            The point's current position.
-        radius_px : float, optional
-            Pick radius in pixels (default :attr:`handle_radius_px`).
-        """
-        if radius_px is not None:
-            self.handle_radius_px = float(radius_px)
-        self._extra_handles.append(Handle(f"{x_control},{y_control}", target,
-                                          lambda x, y: {x_control: x, y_control: y}))
-
     def all_handles(self) -> list[Handle]:
-        """:meth:`handles` and those added by :meth:`connect_drag`.
+        """The explorer's :meth:`handles` (what the picture shows and drags use).
 
         Returns
         -------
         list of Handle
         """
-        return list(self.handles()) + list(self._extra_handles)
+        return list(self.handles())
 
     def _handle(self, name: str) -> Handle:
         found = {h.name: h for h in self.all_handles()}
@@ -114,9 +100,10 @@ class HandleMixin:
     def drag(self, name: str, start, end, steps: int = 10) -> "Explorer":
         """Drag handle ``name`` from data point ``start`` to ``end`` in ``steps`` moves.
 
-        Works in every display mode, as the mouse does under ipympl: each move is
-        one update (or one refusal, which keeps the last good state and names the
-        reason in :attr:`message`); values are not snapped to the sliders' grid.
+        Works in every display mode, as the page's pointer does: each move is the page's
+        drag message, checked as the page's, and one update (or one refusal, which keeps the
+        last good state and names the reason in :attr:`message`); values are not snapped to
+        the sliders' grid.
         The handle follows the pointer: move ``k`` asks ``drag`` of the point
         ``start + (end - start) k / steps``.
 
@@ -152,14 +139,11 @@ class HandleMixin:
             raise InputError(f"start and end must be finite, got {start!r}, {end!r}")
         if h.where() is None:
             raise InputError(f"handle {name!r} cannot be dragged in this state")
-        self._drag_active, self._drag_pending = h, None          # the mouse's press on the handle
+        self._drag_active = h                                    # the pointer's press on the handle
         try:
-            for k in range(1, steps + 1):                        # its moves
+            for k in range(1, steps + 1):                        # its moves, as the page sends them
                 p = a + (b - a) * (k / steps)
-                if self.native:     # as the page sends it: the canvas checks the message first
-                    self._drag_message(name, float(p[0]), float(p[1]))
-                else:
-                    self._drag_to(h, float(p[0]), float(p[1]))
+                self._drag_message(name, float(p[0]), float(p[1]))
         finally:
             self._release()                                      # and its release
         return self
@@ -201,7 +185,10 @@ class HandleMixin:
         return out
 
     def _drag_to(self, h: Handle, x: float, y: float) -> bool:
-        """One drag move: the handle's control values as one update (clamped to the sliders)."""
+        """One drag move: the handle's control values as one update (clamped to the sliders).
+
+        False when it was refused (a position that changes no value is taken: nothing to show).
+        """
         try:
             vals = dict(h.drag(x, y))
         except Exception as exc:  # noqa: BLE001 - a refused drag step, never raised
@@ -213,76 +200,18 @@ class HandleMixin:
             if isinstance(w, (W.FloatSlider, W.IntSlider)) and real and math.isfinite(v):
                 v = min(max(float(v), w.min), w.max)
                 vals[k] = int(round(v)) if isinstance(w, W.IntSlider) else v
-        before = self.n_updates
+        before = self.n_refusals
         self.set(**vals)
-        return self.n_updates > before
+        return self.n_refusals == before
 
     def _page_drag(self, name: str, x: float, y: float) -> None:
         """A drag request from the page: one update, or a refusal the page shows."""
         if not self._drag_to(self._handle(name), x, y):
             raise PlanargeoError(self.message or f"drag of {name} refused")
 
-    def _connect_handles(self) -> None:
-        if self.fig is None:   # a native explorer: the page (or :meth:`drag`) sends drag messages
-            return
-        canvas = self.fig.canvas
-        self._mouse_cids = getattr(self, "_mouse_cids", []) + [
-            canvas.mpl_connect(ev, self.guarded(fn)) for ev, fn in (
-                ("button_press_event", self._on_press), ("motion_notify_event", self._on_move),
-                ("button_release_event", self._on_release))]
-
-    def _on_press(self, ev) -> None:
-        if ev.inaxes is not self.ax or ev.button not in (1, None):
-            return
-        tb = getattr(self.fig.canvas, "toolbar", None)
-        if tb is not None and str(getattr(tb, "mode", "")):  # pan / zoom in use
-            return
-        best, dmin = None, float(self.handle_radius_px)
-        for h in self.all_handles():
-            xy = h.where()
-            if xy is None or not np.all(np.isfinite(np.asarray(xy, float))):
-                continue
-            px = self.ax.transData.transform(np.asarray(xy, float))
-            d = float(np.hypot(px[0] - ev.x, px[1] - ev.y))
-            if d <= dmin:
-                best, dmin = h, d
-        self._drag_active = best
-
-    #: a mouse move arriving within this many seconds of the end of a drag step that took longer
-    #: than :attr:`DRAG_BACKLOG_COST` was queued behind it: it is kept and applied with the next
-    #: move or the release, not drawn on its own (so the figure keeps up with the mouse)
-    DRAG_BACKLOG_GAP = 0.008
-
-    DRAG_BACKLOG_COST = 0.03
-
-    def _on_move(self, ev) -> None:
-        h = self._drag_active
-        if h is None or ev.inaxes is not self.ax or ev.xdata is None:
-            return
-        x, y = ev.xdata, ev.ydata
-        if not (np.isfinite(x) and np.isfinite(y)):
-            return
-        now = time.monotonic()
-        last_end, last_cost = self._last_drag
-        if last_cost > self.DRAG_BACKLOG_COST and now - last_end < self.DRAG_BACKLOG_GAP:
-            self._drag_pending = (float(x), float(y))
-            self._last_drag = (now, last_cost)
-            return
-        self._drag_pending = None
-        self._drag_to(h, float(x), float(y))
-        self._last_drag = (time.monotonic(), time.monotonic() - now)
-
-    def _on_release(self, ev) -> None:
-        self._release()
-
     def _release(self) -> None:
-        """End of a drag (mouse or :meth:`drag`): the last queued move, then the shown state drawn
-        again as a fresh explorer would draw it (a view held still during the drag is fitted)."""
-        h, pending = self._drag_active, self._drag_pending
-        if h is not None and pending is not None:  # the last position, queued behind a slow step
-            self._drag_to(h, *pending)
-        self._drag_active, self._drag_pending = None, None
-        self._last_drag = (0.0, 0.0)
+        """End of a :meth:`drag`: the shown state drawn again as a fresh explorer would draw it."""
+        h, self._drag_active = self._drag_active, None
         if h is None or self.state is None:
             return
         message = self._message

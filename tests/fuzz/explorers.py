@@ -277,8 +277,6 @@ class ExplorerFuzzer:
 
     def _hangs(self, steps) -> bool:
         """Replay ``steps`` on a new explorer: does it hang again?"""
-        import matplotlib.pyplot as plt
-
         if self.minimize_budget <= 0:
             return False
         self.minimize_budget -= 3
@@ -293,22 +291,15 @@ class ExplorerFuzzer:
             return True
         except BaseException:  # noqa: BLE001
             return False
-        finally:
-            if ex is not None:
-                plt.close(ex.fig)
         return False
 
     def _reproduces(self, steps, fresh: bool) -> bool:
         """Replay ``steps`` on a new explorer: does it fail again (the invariant, or what it shows)?"""
-        import matplotlib.pyplot as plt
-
-        figs = []
         try:
             with time_limit(self.limit), np.errstate(**NUMPY_ERRORS), \
                     warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always")
                 ex = self.cls(display="agg", export_dir=self.scratch)
-                figs.append(ex.fig)
                 for i, (_, fn) in enumerate(steps):
                     try:
                         fn(ex)
@@ -323,14 +314,10 @@ class ExplorerFuzzer:
                     ref = self.cls(display="agg", **dict(ex.values))
                 except Exception:  # noqa: BLE001
                     return True
-                figs.append(ref.fig)
                 atol = float(getattr(ex, "zero_tol", 1e-9)) * float(getattr(ex, "scale", 1.0))
                 return readout_difference(ex.readout_values, ref.readout_values, atol) is not None
         except BaseException:  # noqa: BLE001 - a hang or anything else: not this failure
             return False
-        finally:
-            for f in figs:
-                plt.close(f)
 
     def _minimize(self, steps, fresh: bool):
         """A shorter list of steps that still fails (one step dropped at a time, within a budget).
@@ -458,11 +445,7 @@ class ExplorerFuzzer:
         self._run("set", lambda e: e.set(**dict(vals)), f"ex.set(**{vals!r})", check=check)
 
     def _view(self) -> tuple[float, float, float, float]:
-        if self.ex.fig is None:           # a native explorer: the box of its picture
-            x0, x1, y0, y1 = self.ex.picture()["box"]
-            return x0, x1, y0, y1
-        x0, x1 = self.ex.ax.get_xlim()
-        y0, y1 = self.ex.ax.get_ylim()
+        x0, x1, y0, y1 = self.ex.picture()["box"]      # the box the picture shows
         return x0, x1, y0, y1
 
     def _drag(self) -> None:
@@ -588,27 +571,20 @@ class ExplorerFuzzer:
                          time.perf_counter() - t0)
             return
         dt = time.perf_counter() - t0
-        try:
-            verdict = _check_shown(ref)
-            numpy_words = [w for w in caught if issubclass(w.category, RuntimeWarning)]
-            if verdict is None and numpy_words:
-                verdict = (FOREIGN, f"a warning reached the user: {numpy_words[0].message}")
-            if verdict is None:
-                atol = float(getattr(ex, "zero_tol", 1e-9)) * float(getattr(ex, "scale", 1.0))
-                diff = readout_difference(ex.readout_values, ref.readout_values, atol)
-                if diff:
-                    verdict = (INCONSISTENT, f"readout differs: {diff}")
-            self._record("fresh", *(verdict or (OK, "")), dt)
-        finally:
-            import matplotlib.pyplot as plt
-
-            plt.close(ref.fig)
+        verdict = _check_shown(ref)
+        numpy_words = [w for w in caught if issubclass(w.category, RuntimeWarning)]
+        if verdict is None and numpy_words:
+            verdict = (FOREIGN, f"a warning reached the user: {numpy_words[0].message}")
+        if verdict is None:
+            atol = float(getattr(ex, "zero_tol", 1e-9)) * float(getattr(ex, "scale", 1.0))
+            diff = readout_difference(ex.readout_values, ref.readout_values, atol)
+            if diff:
+                verdict = (INCONSISTENT, f"readout differs: {diff}")
+        self._record("fresh", *(verdict or (OK, "")), dt)
 
     # -- a run
     def run(self, n_calls: int, seq: tuple[int, int] = (3, 10)) -> dict[str, Tally]:
         """About ``n_calls`` calls: sequences of actions, each followed by the invariant check."""
-        import matplotlib.pyplot as plt
-
         while self.calls() < n_calls:
             if self.ex is None:
                 try:
@@ -622,10 +598,7 @@ class ExplorerFuzzer:
             if self.ex is not None and "fresh" not in self.stopped:
                 self.fresh()
             if self.ex is not None and self.rng.random() < 0.15:   # a new explorer now and then
-                plt.close(self.ex.fig)
                 self.ex = None
-        if self.ex is not None:
-            plt.close(self.ex.fig)
         return self.tallies
 
 
