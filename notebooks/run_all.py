@@ -10,11 +10,11 @@ What makes a run deterministic:
 * each notebook runs in a fresh kernel (``python3``, the interpreter running this script) in the
   ``notebooks/`` folder, with ``PYTHONHASHSEED=0`` and ``SOURCE_DATE_EPOCH=0``;
 * figures are inline PNG: ``MPLBACKEND`` is removed from the kernel's environment, so IPython's
-  inline backend is used, and the recording kernel runs as a reader's kernel without the widget
-  front end would: before the first cell a silent set-up (not stored in the notebook, not in the
-  history) marks ``ipympl`` unavailable, so ``planargeo.widgets.use_widget_backend()`` falls back to
-  inline images (an ipympl canvas stores no picture); ``PLANARGEO_WIDGET_BACKEND=image`` is set too,
-  for a ``use_widget_backend`` that reads it; the notebooks seed every random generator they use;
+  inline backend is used; an explorer's output keeps, beside its widget, a static PNG of its
+  picture drawn by matplotlib (``Explorer._repr_mimebundle_``), which GitHub and the docs show
+  without a kernel; before the first cell a silent set-up (not stored in the notebook, not in the
+  history) marks ``ipympl`` unavailable, as in a reader's kernel; the notebooks seed every random
+  generator they use;
 * no timings, dates or widget state are stored: ``record_timing`` is off, widget state is not
   saved, the kernelspec metadata is fixed.
 
