@@ -12,6 +12,7 @@ import pytest
 from PIL import Image
 
 from planargeo.errors import InputError, OutputError
+import planargeo.widgets as widgets
 from planargeo.widgets import ProjectiveExplorer
 
 from test_explorer_drag_play import Dot
@@ -121,3 +122,20 @@ def test_notebook_output_carries_a_static_picture():
     png = base64.b64decode(data["image/png"])
     with Image.open(io.BytesIO(png)) as im:
         assert im.size == ex.figure_px
+
+
+@pytest.mark.parametrize("name", sorted(widgets.EXPLORERS))
+def test_every_explorer_in_the_page_stores_its_picture_as_png(name):
+    """Saved notebooks and the docs show every explorer without a kernel: the output of the page's
+    widget carries the picture drawn by the matplotlib renderer (draw/render.py), at the picture's size."""
+    from planargeo.draw.render import picture_bytes
+
+    ex = getattr(widgets, name)()
+    assert ex.display_mode == "page"
+    bundle = ex._repr_mimebundle_()
+    data = bundle[0] if isinstance(bundle, tuple) else bundle
+    assert "application/vnd.jupyter.widget-view+json" in data
+    png = base64.b64decode(data["image/png"])
+    assert png == picture_bytes(ex.picture(), "png")
+    with Image.open(io.BytesIO(png)) as im:      # (matplotlib truncates 4.6 in × 100 dpi to 459 px)
+        assert all(abs(a - b) <= 1 for a, b in zip(im.size, ex.figure_px)), (im.size, ex.figure_px)
