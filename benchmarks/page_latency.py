@@ -206,7 +206,12 @@ def play(ex, cv, seconds: float = 10.0) -> dict:
     button = ex.locator(".widget-play button").first
     button.scroll_into_view_if_needed()
     button.click()                                     # play
-    time.sleep(1.0)                                    # past the start
+    for _ in range(600):                               # past the start (a first motion may compile)
+        t = _shown_time(cv)
+        if t is not None and t > 0.3:
+            break
+        time.sleep(0.1)
+    time.sleep(0.5)
     t0, sim0 = cv.evaluate("() => performance.now()"), _shown_time(cv)
     time.sleep(seconds)
     t1, sim1 = cv.evaluate("() => performance.now()"), _shown_time(cv)
