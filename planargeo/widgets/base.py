@@ -110,7 +110,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
     display : {"auto", "page", "image", "agg"}
         Front end (see the module docstring).
     figsize : (float, float)
-        Figure size in inches.
+        Picture size in inches (at ``dpi``).
     export_dir : str or Path, optional
         Where *Export SVG* writes (default: the current directory).
     **values
@@ -132,7 +132,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
     #: Short name used for exported file names.
     slug: str = "explorer"
 
-    #: Figure size (inches) and resolution of the rendered image.
+    #: Picture size (inches) and resolution (pixels per inch) of the picture and its images.
     figsize: tuple[float, float] = (6.0, 5.0)
 
     dpi: int = EXPLORER_DPI
@@ -599,7 +599,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
             self._message = self._message or f"drawing failed ({type(exc).__name__}): {exc}"
 
     def guarded(self, callback: Callable) -> Callable:
-        """``callback`` for a button or the mouse: an exception becomes a message, never escapes.
+        """``callback`` for a button or the page: an exception becomes a message, never escapes.
 
         Parameters
         ----------
@@ -620,7 +620,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         return run
 
     def time_update(self, name: str, values: list, repeat: int = 1) -> list[float]:
-        """Seconds from setting ``controls[name]`` to the redrawn figure, per value.
+        """Seconds from setting ``controls[name]`` to the new state shown (its picture sent), per value.
 
         Parameters
         ----------

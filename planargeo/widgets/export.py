@@ -91,7 +91,7 @@ class ExportMixin:
         return self.last_export
 
     def export_png(self, path=None) -> Path:
-        """Write the current view to a PNG file (at the figure's size), atomically.
+        """Write the current view to a PNG file (at the picture's size), atomically.
 
         Parameters
         ----------
@@ -115,7 +115,7 @@ class ExportMixin:
         return self.last_export
 
     def _frames_rgb(self, frames: int, fps: int | None = None) -> list[np.ndarray]:
-        """RGB images of ``frames`` Play frames at ``fps`` in real time from the shown state (restored after)."""
+        """RGB images of ``frames`` Play frames at ``fps`` in real time from the shown state (kept)."""
         seconds = self.play_dt * self.play_fps / float(fps or self.play_fps)
         start = dict(self.shown_values)
         state, readout = self.state, dict(self.readout_values)
@@ -246,7 +246,7 @@ class ExportMixin:
                                        f"{html.escape(str(exc))}</span>")
 
     def _repr_mimebundle_(self, **kwargs):
-        """The widget view, plus a static PNG of the figure (shown where widgets are not, e.g. GitHub)."""
+        """The widget view, plus a static PNG of the picture (shown where widgets are not, e.g. GitHub)."""
         bundle = self.widget._repr_mimebundle_(**kwargs)
         if isinstance(bundle, tuple):  # (data, metadata)
             data = bundle[0]

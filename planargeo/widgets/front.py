@@ -29,7 +29,7 @@ def _value_and_unit(full: str, bare: str) -> tuple[str, str]:
 
 
 class FrontMixin:
-    """The front end of :class:`~planargeo.widgets.base.Explorer` (figure or picture, widgets, readout)."""
+    """The front end of :class:`~planargeo.widgets.base.Explorer` (picture, widgets, readout)."""
 
     def _make_widgets(self) -> None:
         """The readout, message line, buttons and "what is shown" panel (fixed widths and heights)."""
@@ -57,7 +57,7 @@ class FrontMixin:
         self.explain_box.add_class("planargeo-explain")
 
     def _figure_inches(self, figsize) -> tuple[float, float]:
-        """The figure's size in inches: at least the notebook column's width, same aspect."""
+        """The picture's size in inches: at least the notebook column's width, same aspect."""
         w, h = (float(v) for v in figsize)
         min_w = EXPLORER_MIN_WIDTH_PX / self.dpi
         if w < min_w:
@@ -98,7 +98,7 @@ class FrontMixin:
         controls = W.VBox(list(self.controls.values()) + play + self.extra_widgets()
                           + [buttons, self.export_label],
                           layout=W.Layout(width="330px", min_width="330px", overflow="visible"))
-        # controls on the left; on the right a reserved message line, the figure and the readout
+        # controls on the left; on the right a reserved message line, the picture and the readout
         # under it: fixed widths and heights above the readout, so nothing moves when a message
         # appears or the readout changes (the readout only grows downwards, with nothing below)
         right = W.VBox([self.message_box, fig_widget, self.readout, self.explain_box],

@@ -57,7 +57,7 @@ class Handle:
 
 
 class HandleMixin:
-    """Dragging for :class:`~planargeo.widgets.base.Explorer` (handles, drags, the figure's mouse)."""
+    """Dragging for :class:`~planargeo.widgets.base.Explorer` (handles and drags, as the page sends them)."""
 
     def mechanism_points(self) -> np.ndarray:
         """Points ``(n, 2)`` the view must hold: by default the finite positions of the handles.
