@@ -162,3 +162,29 @@ def test_percussion_centre_of_percussion_by_hand():
     ellipse = next(p for p in els["I"]["parts"] if p["p"] == "ellipse")       # the gyration circle
     assert (ellipse["x"], ellipse["y"]) == pytest.approx((0.5, 0.0), abs=1e-9)
     assert math.sqrt(abs(np.linalg.det(np.reshape(ellipse["m"], (2, 2))))) == pytest.approx(math.sqrt(rho2), rel=1e-4)
+
+
+#: readouts shown by the matplotlib explorers before they were made native (commit 8c88eba,
+#: ``render``): the native ``readout_of`` shows exactly these texts
+OLD_READOUTS = [
+    ('ProjectiveExplorer', {}, {},
+     {'P x': '2 m', 'P y': '1.5 m', 'P': '(2, 1.5) m', 'conic': 'real ellipse', 'P is': 'outside', 'polar of P: distance to origin': '0.7769 m', 'pole of M': '(-4.283, -1.189) m', 'P·M': '-2.73 m', 'pole(M)·polar(P)': '-2.73 m', 'centre': '(0, 0) m'}),
+    ('ProjectiveExplorer', {}, {'P at infinity': True, 'M at infinity': True},
+     {'P x': '2 m', 'P y': '1.5 m', 'P': 'at infinity (direction (0.8, 0.6))', 'conic': 'real ellipse', 'P is': 'outside (at infinity)', 'polar of P: distance to origin': '0 m', 'pole of M': '(0, 0) m', 'P·M': '0 m', 'pole(M)·polar(P)': '0 m', 'centre': '(0, 0) m'}),
+    ('PercussionExplorer', {}, {'shape': 'L-shape', 'pole x': -0.5, 'pole y': 0.5},
+     {'pole x': '-0.5 m', 'pole y': '0.5 m', 'mass m': '1 kg', 'radius of gyration ρ': '0.3439 m', 'centre of mass': '(0.6286, 0.07143) m', 'pole': '(-0.5, 0.5) m', 'd = |pole − c|': '1.207 m', 'r = ρ²/d (5.68)': '0.09795 m', 'l = d + ρ²/d (5.67)': '1.305 m', 'angular accel. α': '10 rad/s²', 'force for α: m d α (5.66)': '12.07 N', 'centre of percussion': '(0.7201, 0.03665) m', 'sweet spot of the grip': '(0.8143, 0.09253) m'}),
+    ('ScrewSumExplorer', {}, {'kind2': 'translation', 'angle2': 45.0},
+     {'ω₁': '1 rad/s', 'ω₂': '0 rad/s', 'ω₃ = ω₁ + ω₂': '1 rad/s', 'pole of sum': '(-2.914, 1.414) m', 'case': 'rotation plus translation (4.16)', 'β': 'none', 'ρ': '2 m', 'sum': '(1.414 m/s, 2.914 m/s, 1 rad/s)'}),
+    ('ScrewSumExplorer', {'add': 'wrenches'}, {'kind1': 'couple', 'kind2': 'couple'},
+     {'F₁': '0 N', 'F₂': '0 N', '|F₃| = |F₁ + F₂|': '0 N', 'meet of lines': 'none (the sum is zero)', 'case': 'two couples (4.46)', 'β': 'none', 'ρ': 'none', 'sum': '(0 N, 0 N, 3 N·m)'}),
+    ('ConstructionExplorer', {'construction': 'wrench_sum'}, {},
+     {'step': '4/4', 'equation': '4.33', 'F₁': '1 N', 'F₂': '1.5 N', 'F₃': '2.179 N', 'β': '—', 'ρ': '—', 'meet P': '(0.1443, 2.348) m', 'f₃': '(-0.25 N, 2.165 N, 0.8995 N·m)', 'case': 'concurrent forces (4.4.1)'}),
+    ('ConstructionExplorer', {'construction': 'newton_euler'}, {'step': 1},
+     {'step': '1/6', 'equation': '4.58, 10.2.3', 'm': '1 kg', '|Ia|': '2.704 N', '|p|': '4.5 N', '|fⁿᵉᵗ|': '2.704 N', 'τ': '2.49 N·m', 'ρ = τ/|fⁿᵉᵗ|': '0.9208 m', 'fⁿᵉᵗ': '(-1.5 N, 2.25 N, 1.365 N·m)', 'power of fⁿᵉᵗ on v': '-4.14 W', 'case': 'force on a finite line (4.27)'}),
+]
+
+
+@pytest.mark.parametrize("name, init, vals, shown", OLD_READOUTS, ids=[f"{r[0]}-{k}" for k, r in enumerate(OLD_READOUTS)])
+def test_the_readout_is_the_one_the_matplotlib_explorer_showed(name, init, vals, shown):
+    ex = make(name, init, vals)
+    assert ex.readout_strings == shown

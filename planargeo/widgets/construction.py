@@ -39,7 +39,6 @@ import math
 import re
 from pathlib import Path
 
-import numpy as np
 import ipywidgets as W
 
 from planargeo.draw.pictures.construction import construction_picture

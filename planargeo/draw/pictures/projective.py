@@ -34,11 +34,9 @@ import math
 
 import numpy as np
 
-from planargeo.draw.geometry import point_xy
 from planargeo.draw.picture import Picture
 from planargeo.draw.pictures._words import num, where
 from planargeo.draw.pictures.common import label_line, point_along
-from planargeo.draw.style import COLORS
 from planargeo.geometry.projective import is_at_infinity
 
 __all__ = ["projective_picture"]
