@@ -22,7 +22,8 @@ page per host: JupyterLab here, the web app's Voila in ``test_browser_explorers.
 * **hover**: rests on a described element on top: its description shows;
 * **Play** (where it has it): frames are painted while it plays, and stop when paused; the
   page asked for them (tick requests on the wire: frames paced by the page);
-* **export**: the SVG button gives a file that is an SVG document.
+* **export**: the SVG button gives an SVG document holding every element and label the
+  page shows, by id (matplotlib's drawing of the same picture);
 
 Over the whole run, every message between the page and the kernel is read off the
 websocket (both of Jupyter's wire formats): the test fails if a page sends a request
@@ -31,6 +32,7 @@ recorded: the test fails if any leaves 127.0.0.1.
 """
 from __future__ import annotations
 
+import html
 import json
 import re
 import time
@@ -418,8 +420,16 @@ def check_export(page, ex, tmp: Path):
         page.remove_listener("download", on_download)
     path = tmp / (got[0].suggested_filename or "export.svg")
     got[0].save_as(path)
-    head = path.read_bytes()[:400].decode("utf-8", "replace")
-    assert "<svg" in head or head.startswith("<?xml"), head[:100]
+    text = path.read_bytes().decode("utf-8", "replace")
+    assert "<svg" in text[:400] or text.startswith("<?xml"), text[:100]
+    # the export draws the picture the page shows: each element and label the page draws is in it, by id
+    ids = {html.unescape(i) for i in re.findall(r'<g id="([^"]+)"', text)}
+    shown = page.evaluate("""(cv) => [...cv.querySelectorAll('.pg-el')].filter((g) => g.childElementCount)
+        .map((g) => [g.dataset.id, [...g.querySelectorAll('text')].some((t) => t.textContent)])""",
+                          _canvas(ex).element_handle())
+    missing = ([i for i, _ in shown if i not in ids and f"{i}:label" not in ids]      # a text alone: its label
+               + [f"{i}:label" for i, lab in shown if lab and f"{i}:label" not in ids])
+    assert not missing, f"the exported SVG lacks what the page shows: {missing[:8]}"
 
 
 def in_flight_violations(wire: list[dict]) -> list[str]:
