@@ -477,12 +477,13 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     bar = _progress(progress, t_end)
     t = 0.0
     try:
-        _check_rates(rhs, y, nq)                # one evaluation (counted in nfev, seen by the hooks)
         if method == "RK4":
             nsteps = max(1, math.ceil(t_end / dt - 1e-9))      # at most max_steps (_options)
             h = t_end / nsteps
             for k in range(nsteps):
                 k1 = rhs(t, y)
+                if k == 0:
+                    _check_rates(k1, nq)
                 k2 = rhs(t + h / 2, y + h / 2 * k1)
                 k3 = rhs(t + h / 2, y + h / 2 * k2)
                 k4 = rhs(t + h, y + h * k3)
@@ -504,7 +505,11 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
                 with np.errstate(over="ignore", invalid="ignore"):
                     return cls(rhs, t0, y0, t_end, rtol=rtol, atol=atol, max_step=max_step, first_step=first_step)
 
+            if method in MULTISTEP:                 # they keep no rates of the start: one more evaluation
+                _check_rates(rhs(0.0, y), nq)
             solver = make(0.0, y)
+            if getattr(solver, "f", None) is not None:   # the one-step methods' rates at the start
+                _check_rates(solver.f, nq)
             grid = []
             if dt is not None:
                 nout = int(math.floor(t_end / dt + 1e-9))
@@ -674,10 +679,9 @@ def _eval_check(nfev: int, k: int, t: float, t_end: float, max_evals: int | None
 RATE_LIMIT = 1e150
 
 
-def _check_rates(rhs, y, nq: int) -> None:
-    """Refuse a starting state whose speeds or accelerations reach :data:`RATE_LIMIT` (in the package's words)."""
-    with np.errstate(over="ignore", invalid="ignore"):
-        f0 = np.asarray(rhs(0.0, y), dtype=float)
+def _check_rates(f0, nq: int) -> None:
+    """Refuse a start whose rates ``f0 = (q̇, q̈, …)`` reach :data:`RATE_LIMIT` (in the package's words)."""
+    f0 = np.asarray(f0, dtype=float)
     qd, qdd = np.abs(f0[:nq]), np.abs(f0[nq:2 * nq])
     if not (np.all(qd < RATE_LIMIT) and np.all(qdd < RATE_LIMIT)):
         raise NumericOverflowError(
