@@ -435,10 +435,11 @@ class ConstructionExplorer(Explorer):
         out["case"] = _short_case(c.case)
         return out
 
-    #: the view: the sliders' reach (±3 m) and a margin, ±4 m where a direction handle reaches 1 m
-    #: beyond a force's point (a band for the caption is added below)
+    #: the view: the sliders' reach (±3 m) and a margin; ±4 m where a direction handle reaches 1 m
+    #: beyond a force's point, and for twist addition (a sum shifted by ρ = u/ω lands beyond ±3 m);
+    #: a band for the caption is added below
     VIEW = (-3.4, 3.4, -3.4, 3.4)
-    VIEWS = {"wrench_sum": (-4.0, 4.0, -4.0, 4.0)}
+    VIEWS = {"wrench_sum": (-4.0, 4.0, -4.0, 4.0), "twist_sum": (-4.0, 4.0, -4.0, 4.0)}
 
     def scene_picture(self, state, view=None, *, all_steps: bool = False, caption=None):
         """The state's picture (:func:`planargeo.draw.pictures.construction.construction_picture`).

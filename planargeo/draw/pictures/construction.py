@@ -232,7 +232,7 @@ def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(56
                 glyph = e.role in ("twist", "accel")
                 kw = dict(shape="D", size=SUM["point"]["markersize"] * PX_PER_PT) if e.emphasis else {}
                 pic.point(e.name, v, role=e.role if glyph else "twist", glyph=glyph, symbol=sym,
-                          label=label, desc=desc, color=None if glyph else COLORS.get(e.role, COLORS["text"]),
+                          label=label or sym, desc=desc, color=None if glyph else COLORS.get(e.role, COLORS["text"]),
                           **kw)
                 if label and not bool(is_ideal(v)):
                     xy = np.array([-v[1] / v[2], v[0] / v[2]])
@@ -257,9 +257,15 @@ def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(56
                          arrow=e.role != "construct",
                          width=SUM["line"]["linewidth"] * PX_PER_PT if e.emphasis else None)
                 if bool(is_at_infinity(v)):
+                    # the line at infinity: a couple (a wrench), or the join of two ideal poles;
+                    # drawn in the lower right corner, above the caption (the upper edge has the
+                    # arrows of ideal points)
+                    what = "couple (line at ∞)" if e.role != "construct" else "the line at ∞"
                     for part in pic.elements[-1]["parts"]:
                         if part["p"] == "text":
-                            part["text"] = (label + ": " if label else "") + "couple (line at ∞)"
+                            part["text"] = ((label or sym) + ": " if (label or sym) else "") + what
+                        if part["p"] in ("text", "glyph"):
+                            part["y"] = band_top + 26.0 / pic.ky
                 elif label:
                     label_line(pic, e.name, label, anchor=anchor)
             elif e.kind == "conic":

@@ -93,6 +93,9 @@ def _twists(pic: Picture, c) -> None:
     if c.line is not None:
         pic.line("lever", c.line, role="construct", arrow=False, label="", symbol="Q₁Q₂",
                  desc="lever line Q₁Q₂ through both poles (4.11): the sum's pole lies on it")
+        for part in pic.elements[-1]["parts"]:      # two translations: their poles' join is the line at ∞
+            if part["p"] == "text":
+                part["text"] = "Q₁Q₂: the line at ∞"
     # labels: v₁, v₂ on one side of the lever line, the sum's on the other (coincident: spread)
     if c.line is None or q1[2] == 0 or q2[2] == 0:
         u1, u2, u3 = (-0.7, 0.7), (0.7, 0.7), (0.0, -1.0)
