@@ -188,3 +188,16 @@ OLD_READOUTS = [
 def test_the_readout_is_the_one_the_matplotlib_explorer_showed(name, init, vals, shown):
     ex = make(name, init, vals)
     assert ex.readout_strings == shown
+
+
+def test_two_translations_join_on_the_line_at_infinity_not_a_couple():
+    """Two translations: both poles are ideal, so the lever line Q₁Q₂ is the line at infinity (5.32);
+    for twists that is a line, not a couple (the word belongs to wrenches, 4.27)."""
+    ex = make("ScrewSumExplorer", {}, {"kind1": "translation", "kind2": "translation"})
+    lever = elements(ex.picture())["lever"]
+    texts = [p["text"] for p in lever["parts"] if p["p"] == "text"]
+    assert texts == ["Q₁Q₂: the line at ∞"] and not any(p["p"] == "path" for p in lever["parts"])
+    c = make("ConstructionExplorer", {"construction": "wrench_sum"}, {"F2": 0.0, "tau2": 1.0})
+    f2 = elements(c.picture())["f2"]          # a couple is a wrench on the line at infinity
+    assert [p["text"] for p in f2["parts"] if p["p"] == "text"] == ["f₂: couple (line at ∞)"]
+    assert not any(p.get("hidden") for p in f2["parts"])
