@@ -50,14 +50,6 @@ NAMES = sorted(EXPLORERS)
 
 #: (explorer, rule) -> the failure still shown (xfail, strict): remove an entry once it passes
 KNOWN: dict[tuple[str, str], str] = {}
-#: (explorer, rule) -> a failure of a picture being converted during this session (xfail, not strict:
-#: its owner fixes it; the entry goes when it passes)
-PENDING: dict[tuple[str, str], str] = {
-    ("ConstructionExplorer", "views"): "a point of the mechanism out of the picture's default view",
-    ("ImpulseExplorer", "views"): "the picture's view spans less than half the scene's scale",
-    ("ConstructionExplorer", "explain"): "the step caption is a placed label whose symbol 'step 3' "
-                                         "is not in explain() (a fixed text, or explained)",
-}
 
 CODE_NAME = re.compile(r"\w_\w|[a-z]+\[\d\]")
 NUMBER = re.compile(r"(?<![\w.])[-−+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?(?![\w.])")
@@ -68,8 +60,6 @@ def _params(rule: str):
     for name in NAMES:
         why = KNOWN.get((name, rule))
         marks = [pytest.mark.xfail(strict=True, reason=why)] if why else []
-        if (name, rule) in PENDING:
-            marks = [pytest.mark.xfail(strict=False, reason=PENDING[(name, rule)])]
         out.append(pytest.param(name, id=name, marks=marks))
     return out
 
