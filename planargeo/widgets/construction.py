@@ -460,7 +460,8 @@ class ConstructionExplorer(Explorer):
         Picture
         """
         return construction_picture(state["c"], step=int(self.values["step"]), earlier=self.values["earlier"],
-                                    view=view or self.VIEWS.get(state["kind"], self.VIEW), size=self.figure_px, all_steps=all_steps,
+                                    view=view or self.VIEWS.get(state["kind"], self.VIEW), size=self.figure_px,
+                                    all_steps=all_steps,
                                     caption=caption)
 
     # ------------------------------------------------------------------ handles

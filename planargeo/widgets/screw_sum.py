@@ -309,7 +309,7 @@ class ScrewSumExplorer(Explorer):
         return {"mode": mode, "c": add_wrenches(s1, s2)}
 
     def readout_of(self, st):
-        """The readout of the state ``st`` (numbers with units, the special case); the size sliders' names follow the kinds.
+        """The readout of ``st`` (numbers with units, the special case); the size sliders' names follow the kinds.
 
         Parameters
         ----------

@@ -46,7 +46,8 @@ CAPTION_CHARS = 70
 #: element drawn without a label (an element's symbol is its label, the thesis symbol)
 MEANINGS = {
     "twist_sum": {
-        "Q1": "twist v₁, a rotation about its pole Q₁ (4.10)", "Q2": "twist v₂, a rotation about its pole Q₂ (4.10)",
+        "Q1": "twist v₁, a rotation about its pole Q₁ (4.10)",
+        "Q2": "twist v₂, a rotation about its pole Q₂ (4.10)",
         "Q1Q2": ("Q₁Q₂", "lever line through both poles (5.32)"),
         "v3": "sum v₃ = v₁ + v₂ (4.11–4.13)",
     },
@@ -54,7 +55,8 @@ MEANINGS = {
         "f1": "wrench f₁ on its line of action L₁ (4.27)", "f2": "wrench f₂ on its line of action L₂ (4.27)",
         "P": ("P", "meet P = L₁ × L₂ of the two lines (5.34)"),
         "par1": ("f₁", "the force f₁ drawn from P (4.39)"), "par2": ("f₂", "the force f₂ drawn from P (4.39)"),
-        "par3": ("side", "a side of the force parallelogram (4.39)"), "par4": ("side", "a side of the force parallelogram (4.39)"),
+        "par3": ("side", "a side of the force parallelogram (4.39)"),
+        "par4": ("side", "a side of the force parallelogram (4.39)"),
         "diag": ("f₁ + f₂", "the parallelogram's diagonal: the summed force (4.39)"),
         "rho": ("ρ", "shift of the force by the couple, ρ = τ/F (4.46)"),
         "f3": "sum f₃ = f₁ + f₂, its line through P (4.33)",

@@ -40,7 +40,7 @@ __all__ = ["percussion_picture", "percussion_numbers"]
 
 
 def percussion_numbers(st: dict) -> dict:
-    """The construction's points and lengths: the pole ``P``, ``d``, ``r``, the centre of percussion, the grip's sweet spot.
+    """The construction's points and lengths: pole ``P``, ``d``, ``r``, centre of percussion, grip's sweet spot.
 
     Parameters
     ----------

@@ -108,7 +108,8 @@ def projective_picture(st: dict, *, construction: bool = True, line_and_pole: bo
                             "on the polar of P") for i in range(2)]
             eq = "5.2.2, Fig 5.3"
         for name, sym, L, meaning in lines:
-            pic.line(name, L, role="construct", symbol=sym, label="", desc=f"{meaning} ({eq}): {_line_words(L)}", arrow=False,
+            pic.line(name, L, role="construct", symbol=sym, label="", arrow=False,
+                     desc=f"{meaning} ({eq}): {_line_words(L)}",
                      width=0.6 * 1.389 if name.startswith("chord") else None)
         for name, sym, p, meaning in points:
             point_along(pic, name, p, role="twist", color=GREY, size=5.5, symbol=sym,
