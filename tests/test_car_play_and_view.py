@@ -100,3 +100,29 @@ def test_every_readout_row_and_label_is_explained():
         assert "(" not in k                                  # units are the readout's, not in the names
     for lab in ("G", "a", "v = sω (ICR)", "R₁μ₁", "R₂μ₂", "f_A", "p", "T", "I"):
         assert lab in meaning
+
+
+def test_a_fresh_car_after_a_long_drag_history_shows_the_same_state():
+    """``make fuzz`` once found a fresh CarExplorer slow after a long history of drags (some far beyond the
+    view, as the fuzzer makes them); the fresh one must show the same state, picture and all."""
+    import random
+
+    rng = random.Random(3)
+    ex = CarExplorer(display="agg", **{DRIVE: 1000.0})
+    for _ in range(40):
+        h = rng.choice([h for h in ex.all_handles() if h.where() is not None])
+        start = h.where()
+        x0, x1, y0, y1 = ex.view_of(ex.state)
+        far = rng.choice([0.02, 0.2, 0.6, 3.0, 1e3, 1e6]) * max(x1 - x0, y1 - y0)
+        ang = rng.uniform(0.0, 2 * math.pi)
+        ex.drag(h.name, start, (start[0] + far * math.cos(ang), start[1] + far * math.sin(ang)), rng.choice([1, 2, 5]))
+        if rng.random() < 0.2:
+            ex.advance(rng.choice([1, 3]))
+    fresh = CarExplorer(display="agg", **ex.values)
+    assert fresh.message == "" and fresh.readout_values == ex.readout_values
+
+    def drawn(e):            # the picture without a refusal's message (the last drag may have been refused)
+        pic = e.picture()
+        return {**pic, "elements": [el for el in pic["elements"] if el["id"] != "figure message"]}
+
+    assert drawn(fresh) == drawn(ex)
