@@ -28,6 +28,7 @@ import numpy as np
 from planargeo.draw.picture import Picture
 from planargeo.draw.pictures._words import force, labelled_line, num, pair, where
 from planargeo.draw.style import COLORS
+from planargeo.mechanics.impulse import moved_points
 from planargeo.screws.inertia import percussion_axis
 
 __all__ = ["impulse_picture", "moved_outline"]
@@ -54,14 +55,7 @@ def moved_outline(outline, dv, t: float) -> np.ndarray:
     >>> moved_outline([[1.0, 0.0]], [0.0, 0.0, math.pi / 2], 1.0).round(12).tolist()  # a quarter turn about 0
     [[0.0, 1.0]]
     """
-    outline = np.asarray(outline, dtype=float)
-    dv = np.asarray(dv, dtype=float)
-    if dv[2] != 0:
-        P = np.array([-dv[1], dv[0]]) / dv[2]
-        th = dv[2] * t
-        c, s = math.cos(th), math.sin(th)
-        return (outline - P) @ np.array([[c, s], [-s, c]]) + P
-    return outline + t * dv[:2]
+    return moved_points(dv, outline, t)   # written without the pole: finite for a subnormal ω
 
 
 def impulse_picture(r, *, t: float, view, size=(640, 460)) -> Picture:
@@ -123,7 +117,7 @@ def impulse_picture(r, *, t: float, view, size=(640, 460)) -> Picture:
     if np.any(dv != 0):
         pic.point("pole", dv, role="twist", glyph_scale=3.0, symbol="v", label="v (pole)",
                   desc=f"the velocity pole just after the blow (4.10): ω = {num(dv[2])} rad/s, {where(dv)}")
-    near = free[2] != 0 and math.hypot(free[0] / free[2], free[1] / free[2]) < 0.04      # at the grip (drawn)
+    near = math.hypot(free[0], free[1]) < 0.04 * abs(free[2])      # at the grip (drawn)
     ptext = f"P ({grip})" + (" ≈ pole if free" if held and near else "")
     pic.point("P", [0.0, 0.0, 1.0], role="twist", color=COLORS["ground"], glyph=False, shape="s", size=8.0,
               symbol="P", label=ptext,
