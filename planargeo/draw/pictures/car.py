@@ -170,16 +170,16 @@ def car_picture(res, *, heading: float, view, slides: bool = False, limit: float
              color="#000000", width=1.0 * PX_PER_PT, z=2,
              desc=f"the car's body: wheelbase L = {L:.3g} m, track {2 * HALF_TRACK:.3g} m")
     pic.path("rear tyre", [rear - TYRE * ahead, rear + TYRE * ahead], role="body", symbol="tyre 1", color="#000000",
-             width=4.0 * PX_PER_PT, z=3, desc=f"rear tyre: it rolls along the car, its axle passes through the ICR, d = {d:.3g} m away")
+             width=4.0 * PX_PER_PT, z=3, desc=f"tyre (6.114): the rear one, rolling along the car; its axle passes through the ICR, d = {d:.3g} m away")
     pic.path("front tyre", [front - TYRE * roll, front + TYRE * roll], role="body", symbol="tyre 2",
              color="#000000",
              width=4.0 * PX_PER_PT, z=3,
-             desc=f"front tyre, steered by {math.degrees(x['steer']):.3g}°: its axle passes through the ICR (6.114)")
+             desc=f"tyre (6.114): the front one, steered by {math.degrees(x['steer']):.3g}°; its axle passes through the ICR")
     pic.path("axles", np.array([icr, rear, [np.nan, np.nan], icr, front]), role="construct", symbol="axles",
              color=COLORS["construct"], width=0.8 * PX_PER_PT, dash=[4.0, 3.0], z=1,
              desc=f"the axle lines: they meet at the ICR, d = {d:.3g} m from the rear tyre (6.114)")
     t = np.linspace(0.0, 2 * np.pi, 181)
-    pic.path("path of G", icr + r_cg * np.column_stack([np.cos(t), np.sin(t)]), role="construct", symbol="r_G",
+    pic.path("path of G", icr + r_cg * np.column_stack([np.cos(t), np.sin(t)]), role="construct", symbol="circle of G",
              color=COLORS["construct"], width=0.8 * PX_PER_PT, dash=[1.0, 2.5], z=1,
              desc=f"the circle G runs on about the ICR: radius {r_cg:.3g} m")
     drive = F_A != 0.0                    # ω̇ = f_A's moment about the ICR / I_ICR (6.131): zero coasting
@@ -192,7 +192,7 @@ def car_picture(res, *, heading: float, view, slides: bool = False, limit: float
     aim_label(pic.elements[-1], R @ [0.0, -1.0], 12.0)      # below: the axle lines leave it to the right
     if drive:
         pic.point("a", V @ np.asarray(q["a"], float), role="accel", symbol="a", glyph_scale=3.0,
-                  desc=f"acceleration pole of a = s ω̇ (6.131): a turn about the ICR, so its pole is the "
+                  desc=f"acceleration pole (6.131): a = s ω̇ is a turn about the ICR, so its pole is the "
                        f"ICR too: ω̇ = {num(wdot)} rad/s², {where(V @ q['a'])}")
         aim_label(pic.elements[-1], R @ [-0.6, 0.8], 12.0)  # up and back: no line leaves the ICR there
     pic.marks("G", [cg], role="body", color="#000000", size=8.0, symbol="G", z=6,
@@ -200,19 +200,19 @@ def car_picture(res, *, heading: float, view, slides: bool = False, limit: float
                    f"{r_cg:.3g} m from the ICR")
     label_at(pic, cg, "G")
     pic.conic("I", W @ np.asarray(q["I"], float) @ W.T, role="inertia", symbol="I",
-              desc=f"inertia of the car as its conic (6.117): mass {p['m']:.4g} kg, radius of gyration "
+              desc=f"inertia (6.117): the car's, as its conic, mass {p['m']:.4g} kg, radius of gyration "
                    f"{p['rho']:.3g} m about G")
     tw = np.asarray(x["tyre_wrenches"], float)
     mu = q["mu"]
     for k, (sym, which, at) in enumerate((("R₁μ₁", "rear", rear), ("R₂μ₂", "front", front))):
         force(pic, sym, W @ tw[:, k], scale=FORCE_SCALE, anchor=at, role="reaction", symbol=sym,
-              desc=f"{which} tyre force: reaction R{'₁₂'[k]} times its size μ{'₁₂'[k]} (6.114, 6.133): "
+              desc=f"tyre force (6.114, 6.133): the {which} one, reaction R{'₁₂'[k]} times its size μ{'₁₂'[k]}, "
                    f"μ{'₁₂'[k]} = {num(mu[k], 4)} N", z=4,
               label_xy=R @ [d + HALF_TRACK + 0.9, (0.0, L)[k]] + tr)   # beside the car, off the body
     fA = np.asarray(q["f_A"], float)
     if np.any(fA[:2]):
         force(pic, "f_A", W @ fA, scale=FORCE_SCALE, anchor=front, role="wrench", symbol="f_A", start=True,
-              desc=f"drive force at the front tyre, along its rolling direction (6.120): {num(F_A, 4)} N", z=4)
+              desc=f"drive force (6.120): at the front tyre, along its rolling direction, {num(F_A, 4)} N", z=4)
     pb = np.asarray(q["p"], float)
     if np.any(pb[:2]):
         force(pic, "p", W @ pb, scale=FORCE_SCALE, anchor=cg, role="momentum", symbol="p", start=True,
@@ -225,7 +225,7 @@ def car_picture(res, *, heading: float, view, slides: bool = False, limit: float
     off = abs(float(T @ icr_h)) / math.hypot(T[0], T[1]) if math.hypot(T[0], T[1]) > 0 else math.inf
     pic.line("T", T, role="construct", symbol="T", arrow=False,
              anchor=R @ [d, -OVERHANG - 1.2] + tr,                       # behind the car
-             desc=f"active force line T, the percussion axis of the joint at the ICR (6.125): {num(off)} m "
+             desc=f"active force line (6.125): the percussion axis of the joint at the ICR, {num(off)} m "
                   f"from the ICR; a force along it turns the car without loading the tyres")
     scale_bar(pic)
     if slides:

@@ -43,12 +43,12 @@ __all__ = ["slider_crank_picture", "slider_crank_view", "CONTACT_COLOR", "REACTI
 
 #: colour of contact (loop-closing) forces, apart from the joints' reaction green (Okabe-Ito purple)
 CONTACT_COLOR = OKABE_ITO["purple"]
-#: the reactions drawn: (key of the state's reactions, symbol, meaning, equation, colour)
+#: the reactions drawn: (key of the state's reactions, symbol, kind, equation, where it acts, colour)
 REACTIONS = (
-    ("f_1", "f₁", "pin force at the crank pivot, on the crank from the ground", "9.61", COLORS["reaction"]),
-    ("f_2", "f₂", "pin force at the crank pin, on the rod from the crank", "9.61", COLORS["reaction"]),
-    ("f_3", "f₃", "pin force at the wrist pin, on the piston from the rod", "9.61", COLORS["reaction"]),
-    ("F_1", "F₃", "bearing force of the slide on the piston", "9.71", CONTACT_COLOR),
+    ("f_1", "f₁", "pin force", "9.61", "at the crank pivot, on the crank from the ground", COLORS["reaction"]),
+    ("f_2", "f₂", "pin force", "9.61", "at the crank pin, on the rod from the crank", COLORS["reaction"]),
+    ("f_3", "f₃", "pin force", "9.61", "at the wrist pin, on the piston from the rod", COLORS["reaction"]),
+    ("F_1", "F₃", "bearing force", "9.71", "of the slide on the piston", CONTACT_COLOR),
 )
 #: length (m) of the largest force's arrow
 FORCE_LENGTH = 2.4
@@ -117,14 +117,14 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
     psi, theta, phi = (math.degrees(float(x)) for x in q)
     pic.path("slide", [[-BORE, y0], [-BORE, y1], [np.nan, np.nan], [BORE, y0], [BORE, y1]], role="construct",
              symbol="slide", color=COLORS["ground"], width=1.0 * PX_PER_PT, dash=[4.0, 3.0], z=1,
-             desc=f"the slide: the piston moves along it, {2 * BORE:.3g} m wide (9.6)")
+             desc=f"the slide (9.6): the piston moves along it, {2 * BORE:.3g} m wide")
     ground(pic, "ground", (0.0, -0.15), width=0.9, desc="the ground: the crank turns about the pivot (0, 0) m")
     pic.path("crank", [pivot, pin], role="body", symbol="1", color=COLORS["ground"], width=4.0 * PX_PER_PT, z=5,
-             desc=f"crank, body 1: r = {r:.3g} m, at ψ = {psi:.4g}° (9.6)")
+             desc=f"crank, body 1 (9.6): r = {r:.3g} m, at ψ = {num(psi, 4)}°")
     links = np.array([[pivot, pin], [pin, wrist]])
     side_label(pic, pivot, pin, "1", links[1:], gap=4.0)            # beside the crank, away from the rod
     pic.path("rod", [pin, wrist], role="body", symbol="2", color=COLORS["body"], width=3.0 * PX_PER_PT, z=5,
-             desc=f"rod, body 2: l = {math.hypot(*(wrist - pin)):.3g} m, at θ = {theta:.4g}° (9.6)")
+             desc=f"rod, body 2 (9.6): l = {math.hypot(*(wrist - pin)):.3g} m, at θ = {num(theta, 4)}°")
     side_label(pic, pin, wrist, "2", links[:1], gap=4.0)
     box = np.array([[-0.3, 0.0], [0.3, 0.0], [0.3, 2 * t], [-0.3, 2 * t]]) + wrist
     pic.path("piston", box, role="body", symbol="3", closed=True, fill=COLORS["body"], alpha=0.6,
@@ -140,14 +140,14 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
                                   ("φ", wrist + np.array([0.0, 2.8 * t]), "piston angle, its joint coordinate",
                                    phi)):
         pic.marks(f"angle {sym}", np.zeros((0, 2)), role="text", symbol=sym, color="#303030",
-                  desc=f"{meaning} (9.6): {val:.4g}°")
+                  desc=f"joint angle (9.6): {meaning}, {sym} = {num(val, 4)}°")
         label_at(pic, at, sym, gap=5.0)
     if overlays.get("reaction forces"):
         size_of = {k: math.hypot(*np.asarray(x.wrench, float)[:2]) for k, x in reactions.items()}
         fmax = max(size_of.values(), default=0.0)
         scale = FORCE_LENGTH / fmax if fmax > 0 else 0.0
         obstacles = np.concatenate([links, np.stack([box, np.roll(box, -1, axis=0)], axis=1)])
-        for key, sym, meaning, eq, color in REACTIONS:
+        for key, sym, meaning, eq, at, color in REACTIONS:
             x = reactions[key]
             w = np.asarray(x.wrench, float)
             role = "reaction" if key.startswith("f") else "momentum"
@@ -159,7 +159,7 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
             e = w[:2] / F if F else np.zeros(2)
             head = clearest([np.asarray(x.point, float) + k * e for k in (0.9, -0.9, 1.2, -1.2)], obstacles)
             foot = force(pic, sym, w, scale=scale, anchor=x.point, role=role, symbol=sym, color=color,
-                         desc=f"{meaning} ({eq}): |{sym}| = {num(F, 4, tiny)} N{moment}", reach=1.2, dash=[4.0, 3.0],
+                         desc=f"{meaning} ({eq}): {at}, |{sym}| = {num(F, 4, tiny)} N{moment}", reach=1.2, dash=[4.0, 3.0],
                          width=1.0 * PX_PER_PT, z=8, label_xy=head)
             if foot is not None and math.hypot(*(foot - np.asarray(x.point))) > 1e-9:
                 pic.path(f"{sym} lever", [x.point, foot], role="construct", symbol=f"{sym} arm", color=color,
@@ -175,7 +175,7 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
         for i in range(3):
             sym = f"{key}{i + 1}".translate(_SUB)
             pic.point(sym, pts[i], role=role, symbol=sym, glyph_scale=scale,
-                      desc=f"{meaning} of the {_BODIES[i]} ({eq}): {rate(pts[i], unit)}, {where(pts[i])}")
+                      desc=f"{meaning} ({eq}): of the {_BODIES[i]}, {rate(pts[i], unit)}, {where(pts[i])}")
     scale_bar(pic)
     if banner:
         pic.text("banner", (x1, y1), banner, color="#7a3d00", ha="right", va="top", dx=-8.0, dy=-8.0,

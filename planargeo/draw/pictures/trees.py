@@ -104,7 +104,7 @@ def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, f
     for i in range(n):
         pic.path(f"body {i + 1}", [pose[i, :2], tips[i]], role="body", symbol=str(i + 1),
                  color=COLORS["ground"], width=2.5 * PX_PER_PT, z=5,
-                 desc=f"body {i + 1} (Fig 9.1): {math.hypot(*(tips[i] - pose[i, :2])):.3g} m long, "
+                 desc=f"link (Fig 9.1): body {i + 1}, {math.hypot(*(tips[i] - pose[i, :2])):.3g} m long, "
                       f"at {math.degrees(pose[i, 2]):.4g}°")
         side_label(pic, pose[i, :2], tips[i], str(i + 1), np.delete(links, i, axis=0), gap=3.0)
     pic.marks("joints", pose[:, :2], role="body", symbol="joints", color=COLORS["ground"], size=5.0, z=6,
@@ -127,18 +127,18 @@ def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, f
             on = focus in ("all", sym)
             if x.symbol.startswith("f"):
                 i = int(x.symbol[2:])
-                meaning, eq, color = (f"pin force of joint {i}: the wrench on body {i} from its parent",
-                                      "9.61", COLORS["reaction"])
+                meaning, eq, color = "pin force", "9.61", COLORS["reaction"]
+                at = f"joint {i}, the wrench on body {i} from its parent"
             else:
-                meaning, eq, color = (f"contact force of the pin joining the tips of bodies {names[x.symbol]}",
-                                      "9.71", CONTACT_COLOR)
+                meaning, eq, color = "contact force", "9.71", CONTACT_COLOR
+                at = f"the pin joining the tips of bodies {names[x.symbol]}"
             tiny = 1e-9 * max(fmax, 1e-300)
             moment = f", moment {num(x.moment, 3, tiny)} N·m about its pin" if abs(x.moment) > tiny else ""
             # the label on the line of action where it is clearest of the links (pins share places)
             e = w[:2] / F if F else np.zeros(2)
             head = clearest([np.asarray(x.point, float) + k * e for k in (0.4, -0.4, 0.25, -0.25)], links)
             force(pic, sym, w, scale=scale, anchor=x.point, role="reaction" if sym[0] == "f" else "momentum",
-                  symbol=sym, color=color, desc=f"{meaning} ({eq}): |{sym}| = {num(F, 4, tiny)} N{moment}", reach=0.45,
+                  symbol=sym, color=color, desc=f"{meaning} ({eq}): {at}, |{sym}| = {num(F, 4, tiny)} N{moment}", reach=0.45,
                   dash=[4.0, 3.0], width=(2.4 if focus == sym else 1.0) * PX_PER_PT, z=9 if focus == sym else 8,
                   label=None if on else "", opacity=1.0 if on else FADED, label_xy=head)
     for key, flag, role, gs, meaning, eq, unit in (
@@ -150,6 +150,6 @@ def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, f
         for i in range(n):
             sym = f"{key}{i + 1}".translate(_SUB)
             pic.point(sym, pts[i], role=role, symbol=sym, glyph_scale=gs,
-                      desc=f"{meaning} of body {i + 1} ({eq}): {rate(pts[i], unit)}, {where(pts[i])}")
+                      desc=f"{meaning} ({eq}): body {i + 1}, {rate(pts[i], unit)}, {where(pts[i])}")
     scale_bar(pic)
     return pic
