@@ -201,3 +201,15 @@ def test_two_translations_join_on_the_line_at_infinity_not_a_couple():
     f2 = elements(c.picture())["f2"]          # a couple is a wrench on the line at infinity
     assert [p["text"] for p in f2["parts"] if p["p"] == "text"] == ["f₂: couple (line at ∞)"]
     assert not any(p.get("hidden") for p in f2["parts"])
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_a_view_from_the_page_is_the_box_shown(name):
+    """The page sends the box it shows after a pan or zoom: the picture keeps exactly that box
+    (a second band for the construction's caption would shift every handle under the pointer)."""
+    ex = getattr(pw, name)(display="agg")
+    x0, x1, y0, y1 = ex.picture()["box"]
+    dx, dy = 0.1 * (x1 - x0), 0.05 * (y1 - y0)
+    box = (x0 + dx, x1 + dx, y0 + dy, y1 + dy)                 # panned, same scale
+    pic = ex.scene_picture(ex.state, box).to_dict()
+    assert pic["box"] == pytest.approx(list(box), abs=1e-4)

@@ -461,8 +461,7 @@ class ConstructionExplorer(Explorer):
         """
         return construction_picture(state["c"], step=int(self.values["step"]), earlier=self.values["earlier"],
                                     view=view or self.VIEWS.get(state["kind"], self.VIEW), size=self.figure_px,
-                                    all_steps=all_steps,
-                                    caption=caption)
+                                    all_steps=all_steps, caption=caption, band_below=view is None)
 
     # ------------------------------------------------------------------ handles
     def handles(self) -> list[Handle]:

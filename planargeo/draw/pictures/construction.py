@@ -169,7 +169,8 @@ def caption_lines(text: str) -> list[str]:
 
 
 def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(560, 560),
-                         all_steps: bool = False, caption: str | None = None) -> Picture:
+                         all_steps: bool = False, caption: str | None = None,
+                         band_below: bool = True) -> Picture:
     """The picture of steps ``1 … step`` of the construction ``c`` (module docstring).
 
     Parameters
@@ -181,13 +182,16 @@ def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(56
     earlier : {"faded", "shown", "hidden"}
         How the earlier steps look.
     view : (x0, x1, y0, y1)
-        What must be in view; a band for the caption is added above it.
+        What must be in view; a band for the caption is added below it (``band_below``).
     size : (int, int)
         Pixels.
     all_steps : bool
         Every step at full strength (the layered export).
     caption : str, optional
         The caption (default: ``Step k/n: <the step's caption>``).
+    band_below : bool
+        Add the caption's band below ``view``; False: ``view`` is the whole box shown (a view
+        the user zoomed or panned to in the page, band included), the band at its bottom.
 
     Returns
     -------
@@ -204,10 +208,11 @@ def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(56
     x0, x1, y0, y1 = (float(v) for v in view)
     ml, mr, mt, mb = 44.0, 12.0, 10.0, 30.0
     band_px = len(lines) * 1.3 * FONT_PX + 10.0       # the caption's band, below the drawing
-    kx = (size[0] - ml - mr) / (x1 - x0)
-    ky = (size[1] - mt - mb - band_px) / (y1 - y0)
-    k_px = min(kx, ky)
-    pic = Picture((x0, x1, y0 - band_px / k_px, y1), size=size, margin=(ml, mr, mt, mb))
+    if band_below:
+        kx = (size[0] - ml - mr) / (x1 - x0)
+        ky = (size[1] - mt - mb - band_px) / (y1 - y0)
+        y0 -= band_px / min(kx, ky)
+    pic = Picture((x0, x1, y0, y1), size=size, margin=(ml, mr, mt, mb))
     bx0, bx1, by0, by1 = pic.box
     band_top = by0 + band_px / pic.ky
     # one element: the band (white, a thin frame) and the caption's lines in it, placed first by the
