@@ -348,18 +348,22 @@ class Picture:
         """Parts of an arrow at the view's edge in the pixel direction ``n_px`` (along ``t_px``)."""
         ml, mr, mt, mb = self.margin
         pw, ph = self.size[0] - ml - mr, self.size[1] - mt - mb
-        n = np.asarray(n_px, float) / math.hypot(*n_px)
-        t = np.asarray(t_px, float) / math.hypot(*t_px)
-        half = np.array([pw / 2, ph / 2])
-        s = min(half[k] / abs(n[k]) for k in range(2) if abs(n[k]) > 1e-12)  # a unit vector: one is ≥ 0.7
-        base_px = half + n * (s - 16.0)  # from the plot area's lower left
-        tail_px = base_px - t * length / 2
-        x, y = self.box[0] + tail_px[0] / self.kx, self.box[2] + tail_px[1] / self.ky
-        parts = [{"p": "arrow", "x": x, "y": y, "dx": float(t[0] * length), "dy": float(t[1] * length)}]
-        lab_px = base_px - n * (length / 2 + 6)
-        lx, ly = self.box[0] + lab_px[0] / self.kx, self.box[2] + lab_px[1] / self.ky
-        ha = "right" if n[0] > 0.5 else "left" if n[0] < -0.5 else "center"
-        va = "top" if n[1] > 0.5 else "bottom" if n[1] < -0.5 else "center"
+        n0, n1 = (float(v) for v in n_px)           # plain floats (the same arithmetic as arrays)
+        hn = math.hypot(n0, n1)
+        n0, n1 = n0 / hn, n1 / hn
+        t0, t1 = (float(v) for v in t_px)
+        ht = math.hypot(t0, t1)
+        t0, t1 = t0 / ht, t1 / ht
+        h0, h1 = pw / 2, ph / 2
+        s = min(h / abs(c) for h, c in ((h0, n0), (h1, n1)) if abs(c) > 1e-12)  # one is ≥ 0.7
+        b0, b1 = h0 + n0 * (s - 16.0), h1 + n1 * (s - 16.0)  # from the plot area's lower left
+        x = self.box[0] + (b0 - t0 * length / 2) / self.kx
+        y = self.box[2] + (b1 - t1 * length / 2) / self.ky
+        parts = [{"p": "arrow", "x": x, "y": y, "dx": t0 * length, "dy": t1 * length}]
+        lx = self.box[0] + (b0 - n0 * (length / 2 + 6)) / self.kx
+        ly = self.box[2] + (b1 - n1 * (length / 2 + 6)) / self.ky
+        ha = "right" if n0 > 0.5 else "left" if n0 < -0.5 else "center"
+        va = "top" if n1 > 0.5 else "bottom" if n1 < -0.5 else "center"
         words = (text + " " if text else "") + ("at ∞" if infinite else "(off view)")
         parts.append(self._label(words, lx, ly, 0.0, 0.0, ha, va))
         return parts
@@ -428,13 +432,13 @@ class Picture:
                     gap = (0.75 * r + 3.0) if glyph else size / 2 + 3.0
                     parts.append(self._label(text, x, y, gap, gap))
             else:
-                c = np.array([pw / 2, ph / 2])
-                q = np.array([qx, qy])
-                parts += self._edge_arrow(q - c, q - c, 22.0, text, infinite=False)
+                d = (qx - pw / 2, qy - ph / 2)
+                parts += self._edge_arrow(d, d, 22.0, text, infinite=False)
         elif p0 or p1 or p2:
             a, b = p0, p1
-            n = np.array([-b * self.kx, a * self.ky]) * (-1.0 if p2 < 0 else 1.0)
-            t = np.array([a * self.kx, b * self.ky])
+            sg = -1.0 if p2 < 0 else 1.0
+            n = (-b * self.kx * sg, a * self.ky * sg)
+            t = (a * self.kx, b * self.ky)
             L = min(max(glyph_scale * math.hypot(a, b), 12.0), 40.0) * PX_PER_PT
             parts += self._edge_arrow(n, t, L, text, infinite=True)
         self._add(id, role, symbol, desc, parts, color=color, z=7)
