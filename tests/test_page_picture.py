@@ -47,6 +47,8 @@ BAD = [
     {"type": "drag", "x": "1", "y": 0.0}, {"type": "drag", "x": True, "y": 0.0},
     {"type": "view", "box": [0, 1, 0]}, {"type": "view", "box": [1, 0, 0, 1]},
     {"type": "view", "box": [0, float("inf"), 0, 1]}, {"type": "view", "box": "all"},
+    {"type": "describe", "id": 5}, {"type": "describe", "id": "no such element"},
+    {"type": "sync", "version": 1.5}, {"type": "sync", "version": True},
 ]
 
 
