@@ -217,33 +217,30 @@ def wire_element(el: dict, nd: int) -> dict:
     out = {k: el[k] for k in _STYLE if k in el}
     if el.get("desc") or el.get("symbol"):
         out["d"] = 1
+    rnd = round
     parts = []
     for p in el.get("parts", ()):
         k = p.get("p")
-        if k == "path":
-            flat = ["P", 1 if p.get("closed") else 0]
-            for q in p["xy"]:
-                flat.append(round(q[0], nd))
-                flat.append(round(q[1], nd))
-            parts.append(flat)
-        elif k == "text":
+        if k == "text":
             if p.get("hidden"):
                 continue
-            parts.append(["T", round(p["x"], nd), round(p["y"], nd), round(p.get("dx", 0.0), 1),
-                          round(p.get("dy", 0.0), 1), p.get("text", ""),
+            parts.append(["T", rnd(p["x"], nd), rnd(p["y"], nd), rnd(p.get("dx", 0.0), 1),
+                          rnd(p.get("dy", 0.0), 1), p.get("text", ""),
                           _HA.get(p.get("ha"), "l") + _VA.get(p.get("va"), "b")])
         elif k == "mark":
-            parts.append(["M", round(p["x"], nd), round(p["y"], nd), p.get("shape", "o"),
-                          round(p.get("size", 6.0), 1)])
-        elif k == "glyph":
-            parts.append(["G", round(p["x"], nd), round(p["y"], nd), round(p.get("r", 8.0), 1),
-                          1 if p.get("ccw") else 0])
+            parts.append(["M", rnd(p["x"], nd), rnd(p["y"], nd), p.get("shape", "o"), rnd(p.get("size", 6.0), 1)])
+        elif k == "path":
+            flat = ["P", 1 if p.get("closed") else 0]
+            for x, y in p["xy"]:
+                flat += (rnd(x, nd), rnd(y, nd))
+            parts.append(flat)
         elif k == "arrow":
-            parts.append(["A", round(p["x"], nd), round(p["y"], nd), round(p.get("dx", 0.0), 1),
-                          round(p.get("dy", 0.0), 1)])
+            parts.append(["A", rnd(p["x"], nd), rnd(p["y"], nd), rnd(p.get("dx", 0.0), 1),
+                          rnd(p.get("dy", 0.0), 1)])
+        elif k == "glyph":
+            parts.append(["G", rnd(p["x"], nd), rnd(p["y"], nd), rnd(p.get("r", 8.0), 1), 1 if p.get("ccw") else 0])
         elif k == "ellipse":
-            parts.append(["E", round(p["x"], nd), round(p["y"], nd),
-                          *(round(v, nd + 1) for v in p["m"])])
+            parts.append(["E", rnd(p["x"], nd), rnd(p["y"], nd), *(rnd(v, nd + 1) for v in p["m"])])
     out["parts"] = parts
     return out
 
@@ -349,9 +346,10 @@ class PictureCanvas(anywidget.AnyWidget):
             old = sent.get(eid)
             if old is None:
                 changed[eid] = w
-            elif old != w:
-                diff = {k: v for k, v in w.items() if old.get(k) != v}
-                diff.update({k: None for k in old if k not in w})
+                continue
+            diff = {k: v for k, v in w.items() if old.get(k) != v}
+            diff.update({k: None for k in old if k not in w})
+            if diff:
                 changed[eid] = diff
         self._sent, self._src = new_sent, new_src
         if order != self._order:
