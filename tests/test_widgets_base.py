@@ -110,7 +110,8 @@ def test_errors_become_messages_and_keep_the_last_drawing():
     assert t.message == "a must not exceed b (refused: a = 1.5)" and _seg_x(t) == 0.8
     assert t.readout_values["a"] == 0.8 and t.values["a"] == 0.8
     msg = next(e for e in t.picture()["elements"] if e["id"] == "figure message")    # said on the picture
-    assert t.figure_text and msg["parts"][0]["text"].startswith("a must not exceed b")
+    text = next(p["text"] for p in msg["parts"] if p["p"] == "text")
+    assert t.figure_text and text.startswith("a must not exceed b") and msg["fill"] == "white"
     t.controls["a"].value = -2.0                             # ZeroDivisionError in compute
     assert t.message.startswith("cannot compute this configuration")
     t.controls["a"].value = 0.0
@@ -461,7 +462,8 @@ def test_the_key_lists_the_symbols_of_the_picture():
     assert not any(e["id"].startswith("key ") for e in ex.picture()["elements"])
     ex.set(key=True)
     key = [e for e in ex.picture()["elements"] if e["id"].startswith("key ")]
-    assert [e["parts"][0]["text"] for e in key] == ["ω₁: the dots on the circle"]
+    assert [p["text"] for e in key for p in e["parts"] if p["p"] == "text"] == ["ω₁: the dots on the circle"]
+    assert any(e["id"] == "key panel" and e["fill"] == "white" for e in key)      # on a white panel
 
 
 def test_explain_panel_lists_every_symbol_readably():

@@ -13,12 +13,21 @@ import html
 from typing import Any
 
 import ipywidgets as W
+import numpy as np
 
+from planargeo.draw.picture import _CHAR_EM, FONT_PX
 from planargeo.draw.style import EXPLORER_MIN_WIDTH_PX
 from planargeo.errors import PlanargeoError
 from planargeo.widgets.readout import explain_html, fmt, value_text
 
 __all__ = ["FrontMixin"]
+
+
+def _panel(pic, id: str, x0: float, x1: float, y0: float, y1: float, *, color: str, z: int,
+           desc: str) -> None:
+    """A white panel with a thin frame under texts written over the drawing (the key, a message)."""
+    pic.path(id, [[x0, y0], [x1, y0], [x1, y1], [x0, y1]], role="text", closed=True, fill="white",
+             alpha=0.9, color=color, width=0.8, z=z, desc=desc)
 
 
 def _value_and_unit(full: str, bare: str) -> tuple[str, str]:
@@ -152,11 +161,17 @@ class FrontMixin:
             pic.handle(h["id"], (h["x"], h["y"]), symbol=h["id"], desc=f"drag to change {h['id']}")
         if self.controls["key"].value:
             self._add_key(pic)
-        if self._figure_text:   # a refused value, said on the picture as on a figure
+        if self._figure_text:   # a refused value, said on the picture, on a white panel
             (x0, x1, y0, y1) = pic.box
-            pic.text("figure message", ((x0 + x1) / 2, (y0 + y1) / 2), self._figure_text, role="text",
-                     color="#b00020", ha="center", va="center", z=100,
-                     desc=f"refused: {self._figure_text}")
+            cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+            w = (_CHAR_EM * FONT_PX * len(self._figure_text) / 2 + 8.0) / pic.kx
+            h = (0.625 * FONT_PX + 5.0) / pic.ky
+            pic.text("figure message", (cx, cy), self._figure_text, role="text", color="#b00020",
+                     ha="center", va="center", z=100, desc=f"message: {self._figure_text}")
+            el = pic.elements[-1]                # the panel: a part of the message, drawn first
+            el["parts"].insert(0, {"p": "path", "closed": True, "xy": np.array(
+                [[cx - w, cy - h], [cx + w, cy - h], [cx + w, cy + h], [cx - w, cy + h]])})
+            el.update(fill="white", alpha=0.9, width=0.8)
         return pic.to_dict()
 
     @staticmethod
@@ -177,7 +192,15 @@ class FrontMixin:
     def _add_key(self, pic) -> None:
         """The key: one line per symbol of the picture, in its colour, at the upper left."""
         x0, _x1, _y0, y1 = pic.box
-        for k, (sym, meaning, color) in enumerate(self._key_entries(pic)[:12]):
+        entries = self._key_entries(pic)[:12]
+        if not entries:
+            return
+        lines = [f"{sym}: {meaning}"[:48] if meaning else sym for sym, meaning, _c in entries]
+        wide = _CHAR_EM * FONT_PX * max(map(len, lines)) + 8.0
+        _panel(pic, "key panel", x0 + 2.0 / pic.kx, x0 + (6.0 + wide) / pic.kx,
+               y1 - (8.0 + 14.0 * len(lines)) / pic.ky, y1 - 1.0 / pic.ky, color="#888888", z=89,
+               desc="the key: each symbol drawn, in its colour, and its meaning")
+        for k, (sym, meaning, color) in enumerate(entries):
             text = f"{sym}: {meaning}" if meaning else sym
             pic.text(f"key {k + 1}", (x0, y1), text[:48], role="text", color=color, ha="left",
                      va="top", dx=6.0, dy=-4.0 - 14.0 * k, z=90, desc=f"key: {text}")
