@@ -15,12 +15,15 @@ from typing import Any
 import ipywidgets as W
 import numpy as np
 
-from planargeo.draw.picture import _CHAR_EM, FONT_PX
+from planargeo.draw.picture import FONT_PX
 from planargeo.draw.style import EXPLORER_MIN_WIDTH_PX
 from planargeo.errors import PlanargeoError
 from planargeo.widgets.readout import explain_html, fmt, value_text
 
 __all__ = ["FrontMixin"]
+
+#: width of a character of a label, in font sizes (the estimate the picture's label placer makes)
+_CHAR_EM = 0.6
 
 
 def _panel(pic, id: str, x0: float, x1: float, y0: float, y1: float, *, color: str, z: int,
