@@ -453,10 +453,7 @@ RESULTS: dict[str, dict[str, str]] = {}
 
 #: (explorer, check) -> why it fails today.  Strict: the run fails on any other failure, and
 #: also when one of these passes (then its entry must go); with only these, it is an xfail.
-KNOWN = {
-    ("ConstructionExplorer", "zoom/pan/reset"):
-        "the explorer refits the view the page asks for (a pan to [-3.96, 2.96, -3.44, 3.7] is drawn "
-        "in [-4.14, 3.14, -3.80, 3.7]), so the picture jumps after a pan",
+KNOWN: dict[tuple[str, str], str] = {
 }
 
 

@@ -333,7 +333,8 @@ def test_page_and_matplotlib_draw_the_same(harness_page, name):
 
 #: explorers whose labels overlap in the page today (strict xfails: the entry goes when fixed)
 LABELS_NOT_YET: dict[str, str] = {
-    "ImpulseExplorer": "with the key shown, its rows (fixed texts) run over the label ĵᵣ (grip) by 42 x 7 px",
+    "ImpulseExplorer": "with the key shown, the key panel's rows lie over the label ĵᵣ (grip) (42 x 7 px; the "
+                       "panel hides it)",
 }
 
 
