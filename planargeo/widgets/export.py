@@ -245,6 +245,28 @@ class ExportMixin:
             self.export_label.value = (f"<span style='color:#b00020'>export failed: "
                                        f"{html.escape(str(exc))}</span>")
 
+    def snapshot(self):
+        """The shown picture as a still image, for a notebook's output (drawn by matplotlib).
+
+        A lesson shows the state it has just computed this way: the image is stored in
+        the notebook and needs no kernel to be seen.
+
+        Returns
+        -------
+        IPython.display.Image
+            The PNG of :meth:`picture`, at the explorer's size.
+
+        Examples
+        --------
+        >>> from planargeo.widgets import ProjectiveExplorer
+        >>> img = ProjectiveExplorer(display="agg").snapshot()
+        >>> img.format, img.data[:4]
+        ('png', b'\x89PNG')
+        """
+        from IPython.display import Image
+
+        return Image(data=self._png_bytes(), format="png")
+
     def _repr_mimebundle_(self, **kwargs):
         """The widget view, plus a static PNG of the picture (shown where widgets are not, e.g. GitHub)."""
         bundle = self.widget._repr_mimebundle_(**kwargs)
