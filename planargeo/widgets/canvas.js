@@ -116,10 +116,11 @@ function render({ model, el }) {
     if (m.type === "update") { apply(m); return; }
     if (m.type !== "ack") return;
     const mine = m.client === client || m.client === null || m.client === undefined;
+    const tAck = performance.now();
     if (m.update && (mine || m.update.base !== null)) apply(m.update);
     if (!mine) return;
     const done = current;
-    if (done) done.tAck = performance.now();
+    if (done) { done.tAck = tAck; done.tApplied = performance.now(); }
     requestAnimationFrame(() => { if (done) done.tPaint = performance.now(); maybeTick(); });
     inflight = false;
     status.textContent = m.ok === false && m.message ? m.message : "";
