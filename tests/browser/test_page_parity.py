@@ -2,7 +2,7 @@
 
 For every explorer, in each state the browser tests visit (the default; after a
 drag of its first handle in view; after a slider change; with a display toggle and
-with a focus), the explorer's picture (``ex.picture()``, plain data) is drawn
+with a focus; zoomed in, as the page asks), the explorer's picture (``ex.picture()``, plain data) is drawn
 
 * by the page: ``canvas.js`` as SVG in headless chromium, in one static page served
   from 127.0.0.1 with a stand-in for the anywidget model
@@ -53,7 +53,7 @@ def visited_states(name: str):
 
     import planargeo.widgets as pw
 
-    ex = getattr(pw, name)(display="agg")
+    ex = getattr(pw, name)(display="page")     # a canvas with no page: its messages handled in Python
     out = [("default", ex.picture())]
     pic = out[0][1]
     # a drag of its first handle in view, by 8 % of the view's width (or up, or the other way)
@@ -109,6 +109,14 @@ def visited_states(name: str):
         ex.set(focus=ex.controls["focus"].options[1])
         if not ex.message:
             out.append((f"focus {ex.controls['focus'].value}", ex.picture()))
+    # zoomed in about a point off centre, as the page asks for it (the canvas's checked view message)
+    ex.reset()
+    bx0, bx1, by0, by1 = ex.picture()["box"]
+    cx, cy = bx0 + 0.45 * (bx1 - bx0), by0 + 0.55 * (by1 - by0)
+    box = [cx + (bx0 - cx) * 0.7, cx + (bx1 - cx) * 0.7, cy + (by0 - cy) * 0.7, cy + (by1 - cy) * 0.7]
+    ok, why = ex.canvas.handle_message({"type": "view", "box": box, "seq": 1})
+    assert ok, f"{name}: the view {box} refused: {why}"
+    out.append(("zoomed", ex.picture()))
     return out
 
 
@@ -333,6 +341,7 @@ def test_page_and_matplotlib_draw_the_same(harness_page, name):
 
 #: explorers whose labels overlap in the page today (strict xfails: the entry goes when fixed)
 LABELS_NOT_YET: dict[str, str] = {
+    "ArticulatedExplorer": "zoomed in, the label 'a (off view)' lies on the scale bar's text '0.5 m' (12 x 6 px)",
     "ImpulseExplorer": "with the key shown, the key panel's rows lie over the label ĵᵣ (grip) (42 x 7 px; the "
                        "panel hides it)",
 }
