@@ -419,11 +419,14 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         widgets (sliders, the readout table) would otherwise compete with the
         drawing of the frame for the processor.
         """
-        widgets = [*self.controls.values(), self.readout, self.message_box]
         with contextlib.ExitStack() as stack:
-            for w in widgets:
+            for w in self._synced_widgets():
                 stack.enter_context(w.hold_sync())
             yield
+
+    def _synced_widgets(self) -> list:
+        """The widgets whose values follow the shown state: the controls, the readout, the message."""
+        return [*self.controls.values(), self.readout, self.message_box]
 
     def set(self, **values) -> "Explorer":
         """Set several controls at once (one update); returns ``self``.

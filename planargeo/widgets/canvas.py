@@ -115,6 +115,7 @@ Updates carry what changed: a moved point sends its parts, not its colour.
 """
 from __future__ import annotations
 
+import contextlib
 import math
 import numbers
 from pathlib import Path
@@ -259,6 +260,10 @@ class PictureCanvas(anywidget.AnyWidget):
         Called for each checked Play tick while :attr:`playing` is true; it advances the
         motion and sets the new picture, or raises a
         :class:`~planargeo.errors.PlanargeoError` to refuse (the message is shown).
+    around : callable ``() -> context manager``, optional
+        Wraps the handling of each request *and its reply*: e.g. other widgets' syncs
+        held until the reply (with the new picture) has gone, so that the page paints
+        the picture before it works on them.
     **kwargs
         Passed to :class:`anywidget.AnyWidget`.
 
@@ -288,7 +293,8 @@ class PictureCanvas(anywidget.AnyWidget):
 
     def __init__(self, on_drag: Callable[[str, float, float], Any] | None = None,
                  on_view: Callable[[Any], Any] | None = None,
-                 on_tick: Callable[[], Any] | None = None, **kwargs):
+                 on_tick: Callable[[], Any] | None = None,
+                 around: Callable[[], Any] | None = None, **kwargs):
         # what the page holds (set before the widget opens: opening reads the snapshot)
         self.version = 0
         self.last_update = None
@@ -305,6 +311,7 @@ class PictureCanvas(anywidget.AnyWidget):
         self.on_drag = on_drag
         self.on_view = on_view
         self.on_tick = on_tick
+        self.around = around or contextlib.nullcontext
         self.n_requests = 0
         self.on_msg(self._on_msg)
 
@@ -478,6 +485,10 @@ class PictureCanvas(anywidget.AnyWidget):
             return False, str(exc), {}
 
     def _on_msg(self, _widget, content, _buffers) -> None:
+        with self.around():      # the reply leaves before what the wrapper held
+            self._answer(content)
+
+    def _answer(self, content) -> None:
         self._in_request = True
         try:
             ok, why, extra = self._handle(content)

@@ -128,7 +128,8 @@ class FrontMixin:
     def _make_canvas(self):
         from planargeo.widgets.canvas import PictureCanvas
 
-        return PictureCanvas(on_drag=self._page_drag, on_view=self._page_view_to)
+        # the controls', readout's and message's syncs leave after each reply (the picture first)
+        return PictureCanvas(on_drag=self._page_drag, on_view=self._page_view_to, around=self._page_after)
 
     def redraw(self) -> None:
         """Send the shown state's picture to the front end.

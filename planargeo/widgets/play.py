@@ -27,6 +27,7 @@ planargeo.errors.InputError: n_frames must be a positive integer, got 0
 """
 from __future__ import annotations
 
+import contextlib
 import math
 import numbers
 import time
@@ -43,6 +44,9 @@ __all__ = ["MAX_CATCHUP", "MAX_ADVANCE_FRAMES", "MAX_ADVANCE_SECONDS", "MAX_ANIM
 
 #: wall seconds a single Play tick may catch up (a longer gap: the motion resumes, it does not jump)
 MAX_CATCHUP = 0.5
+#: While the page plays, the controls and the readout reach it at most this often (seconds);
+#: every frame's picture goes at once (the page's work on the other widgets would hold it up).
+PLAY_SYNC_S = 0.25
 #: frames one call of ``advance`` may take without ``allow_long=True``
 MAX_ADVANCE_FRAMES = 10_000
 #: simulated seconds one call of ``advance`` may cover without ``allow_long=True``
@@ -230,6 +234,8 @@ class PlayMixin:
         self._clock: PlayClock | None = None
         self._play_origin: dict[str, Any] | None = None
         self._last_tick = (0.0, 0.0)
+        self._play_hold: contextlib.ExitStack | None = None
+        self._play_synced = 0.0
         if not self.has_play:
             return
         self.play_control = W.Play(value=0, min=0, max=10 ** 9, step=1,
@@ -344,6 +350,8 @@ class PlayMixin:
             self._clock.rate = rate
 
     def _play_toggled(self, change) -> None:
+        if not change["new"]:
+            self._release_play_hold()
         if change["new"]:
             self._play_origin = dict(self.shown_values)
         self._clock = None
@@ -381,9 +389,18 @@ class PlayMixin:
             return
         if self._clock is None:
             self._restart_clock()
+        now = self.wall_clock()
+        if self._play_hold is None:       # the controls and readout wait (picture first)
+            self._play_hold = contextlib.ExitStack()
+            for w in self._synced_widgets():
+                self._play_hold.enter_context(w.hold_sync())
+            self._play_synced = now
+        elif now - self._play_synced >= PLAY_SYNC_S:
+            self._release_play_hold()
         seconds = self._clock.due()
         if seconds <= 0 or self._frame(seconds):
             return
+        self._release_play_hold()
         if self.play_loop is not None and self.play_loop.value and self._play_origin and \
                 not self._message:
             self.set(**self._play_origin)  # start again
@@ -391,6 +408,12 @@ class PlayMixin:
         self.play_control.playing = False
         if self._message:
             raise PlanargeoError(self._message)
+
+    def _release_play_hold(self) -> None:
+        """Send the controls' and readout's held values to the page (Play's periodic sync)."""
+        hold, self._play_hold = self._play_hold, None
+        if hold is not None:
+            hold.close()
 
     def _play_tick(self, change) -> None:
         if not self.play_control.playing or self._page_plays:
