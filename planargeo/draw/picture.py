@@ -705,6 +705,20 @@ class Picture:
                         return False
             return True
 
+        def reserve(box) -> None:
+            for j in range(int(box[1] // h), int(box[3] // h) + 1):
+                rows.setdefault(j, []).append(box)
+
+        # texts written at a fixed place (a key's rows, a scale bar's length, a message) come
+        # first: the labels placed after them keep clear of them
+        for el in self.elements:
+            for part in el["parts"]:
+                if part["p"] == "text" and part.get("fixed") and part["text"]:
+                    w = _CHAR_EM * FONT_PX * len(part["text"])
+                    x0 = (part["x"] - bx0) * kx + part["dx"] - _ALIGN_X[part["ha"]] * w
+                    y0 = (part["y"] - by0) * ky + part["dy"] - _ALIGN_Y[part["va"]] * h
+                    reserve((x0, y0, x0 + w, y0 + h))
+
         for el in sorted(self.elements, key=lambda e: -e["z"]):
             for part in el["parts"]:
                 if part["p"] != "text" or part.get("fixed") or not part["text"]:
@@ -728,9 +742,7 @@ class Picture:
                     part["dx"], part["dy"] = round(float(dx), 2), round(float(dy), 2)
                     part["ha"], part["va"] = _SPOT_HA[k - 1], _SPOT_VA[k - 1]
                 part.pop("hidden", None)
-                box = (x0, y0, x1, y1)
-                for j in range(int(y0 // h), int(y1 // h) + 1):
-                    rows.setdefault(j, []).append(box)
+                reserve((x0, y0, x1, y1))
 
     def to_dict(self) -> dict[str, Any]:
         """The picture as plain JSON data (labels placed, numbers rounded to 1e-4 of the view).

@@ -12,7 +12,8 @@
 // What goes to the kernel: {type: "drag" | "view" | "tick" | "describe" | "sync" | "ping", ...},
 // at most one in flight; while one is in flight only the latest request of each type is
 // kept, and the next is sent when the kernel's "ack" arrives.  While the synced "playing"
-// is true, a "tick" is sent as soon as the previous reply is painted.
+// is true, a "tick" is sent as soon as the previous reply has arrived (the kernel computes
+// the next frame while the page paints this one).
 const NS = "http://www.w3.org/2000/svg";
 const ANCHOR = { l: "start", c: "middle", r: "end" };
 const BASELINE = { b: "text-after-edge", t: "text-before-edge", c: "central" };
@@ -121,7 +122,7 @@ function render({ model, el }) {
     if (!mine) return;
     const done = current;
     if (done) { done.tAck = tAck; done.tApplied = performance.now(); }
-    requestAnimationFrame(() => { if (done) done.tPaint = performance.now(); maybeTick(); });
+    requestAnimationFrame(() => { if (done) done.tPaint = performance.now(); });
     inflight = false;
     status.textContent = m.ok === false && m.message ? m.message : "";
     if (done && done.type === "sync") syncAsked = false;
@@ -132,6 +133,9 @@ function render({ model, el }) {
       if (hoverId === m.id && tip.style.display !== "none") tip.textContent = m.desc;
     }
     if (!sendNext() && !drag) placeHandles();
+    // Play: the next frame is asked for at once, so the kernel computes it while this one is
+    // painted (still one request in flight; the wall clock sets how far each frame goes)
+    maybeTick();
   });
   model.on("change:playing", () => { tickHalted = false; maybeTick(); });
 
@@ -206,6 +210,7 @@ function render({ model, el }) {
     if (e.opacity !== undefined && e.opacity !== null && e.opacity !== 1) g.setAttribute("opacity", e.opacity);
     else g.removeAttribute("opacity");
     if (e.d) g.setAttribute("data-described", ""); else g.removeAttribute("data-described");
+    if (e.role) g.setAttribute("data-role", e.role); else g.removeAttribute("data-role");
     g.textContent = "";
     for (const q of e.parts || []) drawPart(g, q, e);
   }

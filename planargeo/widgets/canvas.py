@@ -56,7 +56,8 @@ Play
 ----
 While :attr:`PictureCanvas.playing` (a synced Bool, set by the kernel: the explorer's
 Play button) is true, the page sends ``{"type": "tick"}`` as soon as the previous reply
-is painted: the frames pace themselves to what the kernel and the page manage.
+has arrived, so the kernel computes the next frame while the page paints this one: the
+frames pace themselves to what the kernel and the page manage (one request in flight).
 Each checked tick calls ``on_tick()``, which advances the motion by the wall-clock
 time since the last tick and sets the new picture (its update travels in the ack).
 ``on_tick`` raising a :class:`~planargeo.errors.PlanargeoError` refuses the tick: its

@@ -26,6 +26,26 @@ __all__ = ["FrontMixin"]
 _CHAR_EM = 0.6
 
 
+#: longest line of the key, in characters (a longer meaning ends at a word, with "…")
+_KEY_CHARS = 48
+
+
+def _clip_words(text: str, n: int) -> str:
+    """``text`` cut to at most ``n`` characters at a word's end, with "…" when cut.
+
+    >>> _clip_words("c: the centre of percussion of the bat", 20)
+    'c: the centre of…'
+    >>> _clip_words("v₁: a pole", 20)
+    'v₁: a pole'
+    """
+    if len(text) <= n:
+        return text
+    cut = text[:n - 1]
+    if " " in cut:
+        cut = cut[:cut.rindex(" ")]
+    return cut.rstrip(" ,;:") + "…"
+
+
 def _panel(pic, id: str, x0: float, x1: float, y0: float, y1: float, *, color: str, z: int,
            desc: str) -> None:
     """A white panel with a thin frame under texts written over the drawing (the key, a message)."""
@@ -199,14 +219,15 @@ class FrontMixin:
         entries = self._key_entries(pic)[:12]
         if not entries:
             return
-        lines = [f"{sym}: {meaning}"[:48] if meaning else sym for sym, meaning, _c in entries]
+        lines = [_clip_words(f"{sym}: {meaning}", _KEY_CHARS) if meaning else sym
+                 for sym, meaning, _c in entries]
         wide = _CHAR_EM * FONT_PX * max(map(len, lines)) + 8.0
         _panel(pic, "key panel", x0 + 2.0 / pic.kx, x0 + (6.0 + wide) / pic.kx,
                y1 - (8.0 + 14.0 * len(lines)) / pic.ky, y1 - 1.0 / pic.ky, color="#888888", z=89,
                desc="the key: each symbol drawn, in its colour, and its meaning")
         for k, (sym, meaning, color) in enumerate(entries):
             text = f"{sym}: {meaning}" if meaning else sym
-            pic.text(f"key {k + 1}", (x0, y1), text[:48], role="text", color=color, ha="left",
+            pic.text(f"key {k + 1}", (x0, y1), lines[k], role="text", color=color, ha="left",
                      va="top", dx=6.0, dy=-4.0 - 14.0 * k, z=90, desc=f"key: {text}")
 
     def _page_view_to(self, box) -> None:

@@ -366,7 +366,7 @@ class PlayMixin:
     def _connect_page_play(self) -> None:
         """Play in the page: the Play button's ``playing`` is the canvas's; the canvas's ticks advance it.
 
-        The page sends a tick as soon as the previous picture is painted; each tick covers the
+        The page sends a tick as soon as the previous picture has arrived; each tick covers the
         wall-clock time since the last (:class:`~planargeo.widgets.play.PlayClock`) in sub-steps
         of at most ``1 / play_fps`` s and sets one picture.  The Play widget's own timer is
         slowed to nothing: it only shows the button.

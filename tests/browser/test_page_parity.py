@@ -11,8 +11,8 @@ with a focus; zoomed in, as the page asks), the explorer's picture (``ex.picture
   element's id, its place read through matplotlib's own transforms
   (``get_window_extent`` at the picture's size, 100 dpi).
 
-The two must show the same elements: the same ids (and roles, once the page writes
-them: ``data-role``), the same colours per element, the same label texts, and every
+The two must show the same elements: the same ids and roles (the page writes each
+element's role as ``data-role``), the same colours per element, the same label texts, and every
 marker, rotation glyph, arrow, line, curve and label at the same pixel, within 1 px
 at the same size.  A label's place is its box's edge (or centre) on the side it is
 anchored by: across, from its characters' advances (a glyph's ink may reach past
@@ -210,7 +210,7 @@ def compare(pic: dict, page: dict, mpl: dict) -> list[str]:
         if pid not in by_id:
             continue
         pe = by_id[pid]
-        if pe["role"] is not None and pe["role"] != el.get("role", "body"):
+        if pe["role"] != el.get("role", "body"):
             problems.append(f"{pid}: role {pe['role']!r} in the page, {el.get('role')!r} in the picture")
         try:
             nodes = _page_parts(el, pe)
@@ -340,11 +340,7 @@ def test_page_and_matplotlib_draw_the_same(harness_page, name):
 
 
 #: explorers whose labels overlap in the page today (strict xfails: the entry goes when fixed)
-LABELS_NOT_YET: dict[str, str] = {
-    "ArticulatedExplorer": "zoomed in, the label 'a (off view)' lies on the scale bar's text '0.5 m' (12 x 6 px)",
-    "ImpulseExplorer": "with the key shown, the key panel's rows lie over the label ĵᵣ (grip) (42 x 7 px; the "
-                       "panel hides it)",
-}
+LABELS_NOT_YET: dict[str, str] = {}
 
 
 @pytest.mark.parametrize("name", [
