@@ -531,3 +531,17 @@ def test_export_animation_is_bounded_and_mp4_has_its_button(tmp_path):
 def test_a_focus_of_the_given_values_is_taken_at_construction():
     ex = Shape(display="agg", n=6, focus="dot 6")
     assert ex.values["focus"] == "dot 6" and ex.message == ""
+
+
+def test_a_slider_value_set_by_the_page_is_not_echoed_back():
+    """The page shows the value it set; the kernel's answer is the new picture, not an echo."""
+    from planargeo.widgets.chain import ChainExplorer
+
+    ex = ChainExplorer(display="page")
+    slider = ex.controls["angle"]
+    sent = []
+    slider._send = lambda msg, buffers=None: sent.append(msg)
+    before = ex.n_updates
+    slider.set_state({"value": 12.0})                    # as the page sends it
+    assert slider.value == 12.0 and ex.n_updates == before + 1
+    assert not [m for m in sent if m.get("method") == "echo_update"]

@@ -27,6 +27,7 @@ from typing import Any, Callable
 
 import ipywidgets as W
 import numpy as np
+import traitlets
 from traitlets import validate
 
 from planargeo.errors import InputError
@@ -79,8 +80,12 @@ def cached(cache: dict, key, make: Callable[[], Any]) -> Any:
 class FloatSlider(W.FloatSlider):
     """A float slider that keeps a value outside its range, for the explorer to refuse by name.
 
-    (An ipywidgets slider silently moves such a value to the nearest end.)
+    (An ipywidgets slider silently moves such a value to the nearest end.)  A value the
+    page sets is not echoed back to it (``echo_update=False``): the page already shows it,
+    and the new picture is what it waits for.
     """
+
+    value = traitlets.CFloat(0.0, help="Float value").tag(sync=True, echo_update=False)
 
     @validate("value")
     def _validate_value(self, proposal):
@@ -89,6 +94,8 @@ class FloatSlider(W.FloatSlider):
 
 class IntSlider(W.IntSlider):
     """An integer slider that keeps a value outside its range (see :class:`FloatSlider`)."""
+
+    value = traitlets.CInt(0, help="Int value").tag(sync=True, echo_update=False)
 
     @validate("value")
     def _validate_value(self, proposal):
