@@ -76,23 +76,24 @@ BATCH_SIZES = (1, 100, 10000)
 QUICK_BATCH_SIZES = (1, 100, 1000)
 PEERS = ("pinocchio", "mujoco")
 #: groups of ``--only``; all but ``dynamics`` run a script of ``benchmarks/``
-SCRIPTS = {"breakdown": "breakdown.py", "widgets": "widget_latency.py", "integrators": "integrators.py",
-           "scenes": "scene_cost.py", "truncated": "truncated.py", "browser": "browser_latency.py",
-           "classroom": "classroom.py", "page": "page_latency.py"}
+SCRIPTS = {"breakdown": "breakdown.py", "integrators": "integrators.py", "scenes": "scene_cost.py",
+           "truncated": "truncated.py", "classroom": "classroom.py", "page": "page_latency.py"}
 GROUPS = ("dynamics",) + tuple(SCRIPTS)
 #: the exact (rational) reference up to this many coordinates, longdouble beyond (exact costs ~N^3 Fractions)
 EXACT_MAX = 5
 #: other result files linked from RESULTS.md (written by the scripts of the other groups)
 OTHER_RESULTS = (("breakdown.md", "where each method breaks down (accuracy near singularities)"),
-                 ("widget_latency.md", "widget latency: control change to redrawn figure"),
                  ("integrators.md", "integrators: work–precision of ODE solvers, energy and constraint drift"),
                  ("scene_cost.md", "scene cost: what each scene computes and what modelling less saves"),
                  ("truncated.md", "truncated articulated recursion: speed against accuracy (10.2.2)"),
-                 ("browser_latency.md", "browser latency: slider and drag to the new picture in the page"),
                  ("classroom.md", "a classroom's load: k visitors of `make app`, memory per visitor, drag step "
                                   "against k, the seat limit"),
                  ("page_latency.md", "page latency: explorers drawn by the browser, against the floor F of "
-                                     "an empty round trip, in Voila and JupyterLab"))
+                                     "an empty round trip, in Voila and JupyterLab"),
+                 ("pixel_path_widget_latency.md", "record of 2026-11-26: the old pixel path's widget latency "
+                                               "(Matplotlib redraws; replaced by page_latency.md)"),
+                 ("pixel_path_browser_latency.md", "record of 2026-11-26: the old pixel path's latency in "
+                                                "JupyterLab (PNG frames, ipympl; replaced by page_latency.md)"))
 CHARTS = ("scaling", "work_precision", "speed_accuracy", "single_state", "batch")
 
 _T0 = time.perf_counter()
@@ -119,11 +120,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="folder for copies of the SVG charts (default: none; make bench: gallery/benchmarks)")
     parser.add_argument("--only", choices=GROUPS, action="append",
                         help="run only these groups (repeatable; default: all). 'dynamics' is this module; "
-                             "'breakdown' runs benchmarks/breakdown.py (accuracy study), 'widgets' "
-                             "benchmarks/widget_latency.py, 'integrators' benchmarks/integrators.py, "
+                             "'breakdown' runs benchmarks/breakdown.py (accuracy study), "
+                             "'integrators' benchmarks/integrators.py, "
                              "'scenes' benchmarks/scene_cost.py, 'truncated' benchmarks/truncated.py (truncated "
-                             "articulated recursion), 'browser' benchmarks/browser_latency.py (JupyterLab in "
-                             "headless chromium), 'classroom' benchmarks/classroom.py (k visitors of the app "
+                             "articulated recursion), 'classroom' benchmarks/classroom.py (k visitors of the app "
                              "at once, in headless chromium), 'page' benchmarks/page_latency.py (explorers "
                              "drawn in the page, Voila and JupyterLab) (these need a source checkout)")
 

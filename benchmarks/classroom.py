@@ -8,9 +8,10 @@ per visitor, which runs the whole app notebook (every explorer).  When every pag
 all its explorers, all visitors at once
 
 1. drag the end of the last link of the chain explorer ("A chain in motion") by 3-px
-   mouse moves, each step waiting for its picture (``browser_latency.drag_steps``: the
-   time from the move to the next paint of the canvas, page clock);
-2. press Play on the same explorer and count the frames that reach the page in a fixed
+   mouse moves, each step waiting for its picture (:func:`drag_steps`: the time from the
+   mouse move to the paint of the picture that move asked for, page clock, read from the
+   canvas's own timings, ``planargeo/widgets/canvas.js``);
+2. press Play on the same explorer and count the pictures the page paints in a fixed
    time, then press Pause.
 
 Memory is read with psutil while every page is still open: each kernel's RSS and PSS
@@ -58,7 +59,6 @@ import nbformat
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from browser_harness import CHROMIUM, CHROMIUM_ARGS, VoilaServer  # noqa: E402
-from browser_latency import INIT, drag_steps  # noqa: E402
 
 from planargeo.files import atomic_write_many  # noqa: E402
 
@@ -123,19 +123,74 @@ def app_explorers(notebook: Path = APP) -> list[str]:
 
 
 def chain_handle() -> dict:
-    """Where the last link's end of the default chain explorer sits, as fractions of its canvas."""
+    """The last handle inside the default chain explorer's view, and where it sits.
+
+    Read from the explorer's picture (``ex.picture()``): its id (the page's handle circle
+    carries it as ``data-handle``) and its place as fractions of the picture's width and
+    height, from the picture's box, size and margins (the page's canvas draws the same
+    picture at that size, below its button bar).
+    """
     from planargeo.widgets import ChainExplorer
 
-    ex = ChainExplorer(display="agg")
-    W, H = ex.fig.canvas.get_width_height()
-    ex.ax.apply_aspect()
-    x0, x1 = sorted(ex.ax.get_xlim())
-    y0, y1 = sorted(ex.ax.get_ylim())
-    hs = [h for h in ex.handles() if h.where() is not None
-          and x0 < h.where()[0] < x1 and y0 < h.where()[1] < y1]
-    h = hs[-1]
-    px, py = ex.ax.transData.transform(h.where())
-    return {"name": h.name, "fx": float(px / W), "fy": float(1 - py / H)}
+    pic = ChainExplorer(display="agg").picture()
+    x0, x1, y0, y1 = pic["box"]
+    (w, h), (ml, mr, mt, mb) = pic["size"], pic["margin"]
+    inside = [hd for hd in pic["handles"] if x0 < hd["x"] < x1 and y0 < hd["y"] < y1]
+    hd = inside[-1]
+    px = ml + (hd["x"] - x0) * (w - ml - mr) / (x1 - x0)
+    py = mt + (y1 - hd["y"]) * (h - mt - mb) / (y1 - y0)
+    return {"name": hd["id"], "fx": float(px / w), "fy": float(py / h)}
+
+
+def _api(cv, expr: str):
+    """Evaluate ``expr`` with ``p`` the page canvas's own interface (``canvas.js``)."""
+    return cv.evaluate(f"(el) => {{ const p = el.__planargeo; return {expr}; }}")
+
+
+def _wait_for(cv, expr: str, timeout: float) -> bool:
+    from playwright.sync_api import TimeoutError as PlaywrightTimeout
+
+    try:
+        cv.page.wait_for_function(f"(el) => {{ const p = el.__planargeo; return !!({expr}); }}",
+                                  arg=cv.element_handle(), timeout=timeout * 1000, polling=20)
+        return True
+    except PlaywrightTimeout:
+        return False
+
+
+def drag_steps(page, cv, handle: dict, steps: int, px: float = 3.0, timeout: float = 10.0) -> list[float | None]:
+    """Drag ``handle`` by ``px``-pixel mouse moves (8 right, 8 left, ...), one step at a time.
+
+    Per step, milliseconds from the mouse move to the paint of the picture it asked for
+    (the canvas's ``stats``: input time and paint time of each request), or None when no
+    picture came within ``timeout`` seconds.  The handle is found by its circle
+    (``data-handle``), else by its place in the picture (:func:`chain_handle`) within the
+    canvas's SVG.
+    """
+    cv.scroll_into_view_if_needed()
+    circle = cv.locator(f"circle[data-handle='{handle['name']}']").first
+    box = circle.bounding_box() if circle.count() else None
+    if box is not None:
+        x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    else:
+        svg = cv.locator("svg").first.bounding_box()
+        x, y = svg["x"] + handle["fx"] * svg["width"], svg["y"] + handle["fy"] * svg["height"]
+    page.mouse.move(x, y)
+    page.mouse.down()
+    out: list[float | None] = []
+    for k in range(steps):
+        _wait_for(cv, "!p.busy()", 20.0)
+        time.sleep(0.03)
+        n = _api(cv, "p.stats.length")
+        x += px if (k // 8) % 2 == 0 else -px
+        page.mouse.move(x, y)
+        if _wait_for(cv, f"p.stats.length > {n} && p.stats[{n}].tPaint", timeout):
+            s = _api(cv, f"p.stats[{n}]")
+            out.append(s["tPaint"] - s["tInput"])
+        else:
+            out.append(None)
+    page.mouse.up()
+    return out
 
 
 # --------------------------------------------------------------------------- the browser
@@ -286,23 +341,23 @@ def visitor(i: int, url: str, cdp: str, plan: dict, barrier: threading.Barrier, 
         _wait(f"{plan['n_explorers']} explorers", lambda: explorers.count() >= plan["n_explorers"], left)
         ex = explorers.nth(plan["index"])
         ex.scroll_into_view_if_needed()
-        canvas = ex.locator(".planargeo-figure canvas").first
+        cv = ex.locator(".pg-canvas").first
         left = plan["load_timeout"] - (time.monotonic() - t0)
-        _wait("the chain's canvas", lambda: (canvas.bounding_box() or {}).get("width", 0) > 50, max(left, 5))
-        state["ex"] = ex
+        _wait("the chain's picture", lambda: cv.count() > 0 and _api(cv, "!!p && p.elements() > 0"), max(left, 5))
+        state["ex"], state["cv"] = ex, cv
         rec["ready_s"] = time.monotonic() - t0
 
     def drag():
-        rec["drag_ms"] = drag_steps(state["page"], state["ex"], plan["handle"], plan["steps"])
+        rec["drag_ms"] = drag_steps(state["page"], state["cv"], plan["handle"], plan["steps"])
 
     def play():
-        page, ex = state["page"], state["ex"]
+        ex, cv = state["ex"], state["cv"]
         buttons = ex.locator(".widget-play button")
         buttons.first.scroll_into_view_if_needed()
-        n0 = page.evaluate("window.__pgPaints.length")
+        n0 = _api(cv, "p.painted()")
         buttons.first.click()
         time.sleep(plan["play"])
-        n1 = page.evaluate("window.__pgPaints.length")
+        n1 = _api(cv, "p.painted()")
         if buttons.count() > 1:
             buttons.nth(1).click()          # pause
         rec["play_fps"] = (n1 - n0) / plan["play"]   # pictures that reached the page per second
@@ -316,7 +371,6 @@ def visitor(i: int, url: str, cdp: str, plan: dict, barrier: threading.Barrier, 
             context = browser.new_context(viewport=VIEWPORT)
             try:
                 state["page"] = context.new_page()
-                state["page"].add_init_script(INIT)
                 for phase in (load, drag, play, stay):
                     if "error" not in rec:
                         try:

@@ -17,7 +17,8 @@ numbers as the full one (agreement, never timing).
 The explorers' own choices are measured too (the chain explorer computes the
 per-joint T/U split only when it is drawn), together with the qdd-only fast
 paths of the forward-dynamics methods against their full workspaces, and,
-for scale, the whole explorer update (compute, artists, Agg redraw).
+for scale, the whole explorer update (compute, then the picture the page draws,
+``ex.picture()``).
 
 Where an explorer already computes only what it draws (cached models, ``loop_solve``'s
 contact columns, the car's ``outlines=False``), its compute step is the minimal side and
@@ -384,6 +385,16 @@ def _cycler(ex, control, values):
     return lambda: setattr(ex.controls[control], "value", next(it))
 
 
+def _updater(ex, control, values):
+    """A whole update as the page sees it: the control's next value (compute), then the picture."""
+    step = _cycler(ex, control, values)
+
+    def run():
+        step()
+        ex.picture()
+    return run
+
+
 def measure(case: Case, budget: float, rounds: int) -> dict:
     t = time_interleaved({"full": case.full, "minimal": case.minimal}, budget=budget, rounds=rounds)
     st = ratio_stats(t, "minimal", "full")
@@ -392,14 +403,19 @@ def measure(case: Case, budget: float, rounds: int) -> dict:
 
 
 def measure_updates(budget: float, rounds: int) -> list:
-    """Whole explorer updates (compute, artists, Agg redraw): context for the savings above."""
+    """Whole explorer updates (compute, then ``ex.picture()``): context for the savings above.
+
+    The explorers run with ``display="agg"`` (nothing shown): a control change computes the
+    state and readout; building the picture is what the page's update adds in Python
+    (sending it and drawing it in the browser: ``benchmarks/page_latency.py``).
+    """
     from planargeo.widgets import CarExplorer, SliderCrankExplorer, TreeExplorer
 
     rows = []
     log("  update: chain, 10 links, overlays on / off")
     on, off = chain_explorer(True), chain_explorer(False)
     angles = list(np.linspace(-40.0, 0.0, 7))
-    t = time_interleaved({"on": _cycler(on, "angle", angles), "off": _cycler(off, "angle", angles)},
+    t = time_interleaved({"on": _updater(on, "angle", angles), "off": _updater(off, "angle", angles)},
                          budget=budget, rounds=rounds)
     rows.append({"explorer": "chain, 10 links: all overlays (on) vs none (off)", "on_ms": 1e3 * np.median(t["on"]),
                  "off_ms": 1e3 * np.median(t["off"]), "ratio": ratio_stats(t, "off", "on")})
@@ -408,7 +424,7 @@ def measure_updates(budget: float, rounds: int) -> list:
             ("slider-crank", SliderCrankExplorer(display="agg"), "crank angle (deg)", list(np.linspace(10, 70, 7))),
             ("trees, loops closed", TreeExplorer(display="agg"), "speed", list(np.linspace(0.2, 2.0, 7)))):
         log(f"  update: {label}")
-        tt = time_interleaved({"update": _cycler(ex, control, values), "draw": ex.fig.canvas.draw},
+        tt = time_interleaved({"update": _updater(ex, control, values), "draw": ex.picture},
                               budget=budget, rounds=rounds)
         rows.append({"explorer": label, "update_ms": 1e3 * np.median(tt["update"]),
                      "draw_ms": 1e3 * np.median(tt["draw"])})
@@ -448,8 +464,9 @@ def write_markdown(res: dict, path: Path) -> None:
             L.append(f"| {r['consumer']} | {r['skipped']} | {_us(r['full_us'])} | {_us(r['minimal_us'])} | "
                      f"{r['ratio']['best']:.2f} | {r['ratio']['median']:.2f} |")
     if res.get("updates"):
-        L += ["", "Whole updates for scale (a control change: compute, set the artists, Agg redraw), medians:", "",
-              "| explorer | update ms | bare redraw ms | |", "|---|---:|---:|---|"]
+        L += ["", "Whole updates for scale (a control change: compute, then the picture, `ex.picture()`; "
+              "sending and drawing it in the page: [page_latency.md](page_latency.md)), medians:", "",
+              "| explorer | update ms | picture alone ms | |", "|---|---:|---:|---|"]
         for u in res["updates"]:
             if "on_ms" in u:
                 L.append(f"| {u['explorer']} | {u['on_ms']:.1f} (on) / {u['off_ms']:.1f} (off) | — | "
@@ -504,10 +521,10 @@ def _notes(res: dict) -> list:
     if ups:
         u = [x for x in ups.values() if "update_ms" in x]
         if u:
-            out.append("* **In an explorer these savings are small next to drawing**: a whole update takes "
-                       + ", ".join(f"{x['update_ms']:.0f} ms ({x['explorer']})" for x in u)
-                       + "; the savings above are a few percent of that. They matter for sweeps (gallery charts, "
-                       "notebooks, `report` in a loop) and for animation.")
+            out.append("* **For scale**, a whole update in an explorer (compute, then the picture) takes "
+                       + ", ".join(f"{x['update_ms']:.1f} ms ({x['explorer']})" for x in u)
+                       + ". The savings above matter most for sweeps (gallery charts, notebooks, `report` in a "
+                       "loop) and for animation.")
         ch = next((x for x in ups.values() if "on_ms" in x), None)
         if ch:
             out.append(f"* **chain explorer, whole update**: switching every overlay off makes an update "

@@ -123,7 +123,7 @@ def test_quick_main_writes_results_with_sections(tmp_path, monkeypatch):
                     "## Single call: time per call", "## Accuracy: error against the extended-precision reference",
                     "## Batched sweeps", "## Scaling", "## Other results"):
         assert heading in text
-    for link in ("scaling.svg", "work_precision.svg", "breakdown.md", "widget_latency.md", "integrators.md",
+    for link in ("scaling.svg", "work_precision.svg", "breakdown.md", "page_latency.md", "integrators.md",
                  "scene_cost.md"):
         assert f"](./{link})" in text                      # beside RESULTS.md
     assert "single call, N = 10: `aba` / pin.aba" in text or "pinocchio" not in bench._peers(chain_model(1))
