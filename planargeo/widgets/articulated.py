@@ -379,13 +379,7 @@ class ArticulatedExplorer(Explorer):
                     w.max = n - 1
 
     def mechanism_points(self):
-        """Points the view must hold: every joint of the chain and the tip (the base's rule tests).
-
-        Returns
-        -------
-        numpy.ndarray
-            ``(n + 1, 2)``.
-        """
+        # Points the view must hold: every joint of the chain and the tip (the base's rule tests).
         st = self.state
         return np.zeros((0, 2)) if st is None else np.asarray(st["joints"], dtype=float).reshape(-1, 2)
 
@@ -453,41 +447,23 @@ class ArticulatedExplorer(Explorer):
         y0 = np.concatenate([self._q0(v), np.zeros(n), [0.0]])
         return cached(self._motions, key, lambda: Motion(rhs, y0, chunk=1.0))
 
-    def compute(self, v, changed):
-        """The shown configuration's inertias, axes, convergence chart and (when swinging) energies.
-
-        Parameters
-        ----------
-        v : dict
-            Control values.
-        changed : set of str
-            Controls that changed.
-
-        Returns
-        -------
-        dict
-            The state :meth:`scene_picture` draws and :meth:`readout_of` reads.
-
-        Raises
-        ------
-        PlanargeoError
-            A configuration that cannot be computed (kept out of view: the last good state stays).
-        """
+    def compute(self, values, changed):
+        # The shown configuration's inertias, axes, convergence chart and (when swinging) energies.
         from planargeo.simulate.integrate import energy
 
-        n, lam = int(v["bodies n"]), float(v["λ = L/ρ"])
-        t = float(v[TIME])
-        motion = self.motion(v)
+        n, lam = int(values["bodies n"]), float(values["λ = L/ρ"])
+        t = float(values[TIME])
+        motion = self.motion(values)
         y = motion.at(t)
         q, qd, W = y[:n], y[n:2 * n], float(y[2 * n])
-        model_g = self._model(n, lam, float(v["g (m/s²)"]))
+        model_g = self._model(n, lam, float(values["g (m/s²)"]))
         T, V = energy(model_g, q, qd)
-        E0 = float(sum(energy(model_g, self._q0(v), np.zeros(n))))
-        out_k = int(v["outboard bodies"])
+        E0 = float(sum(energy(model_g, self._q0(values), np.zeros(n))))
+        out_k = int(values["outboard bodies"])
         outboard = None if out_k >= n - 1 else out_k
         st = articulated_state(self._model(n, lam), q, outboard=outboard,
-                               pole=(float(v["pole x"]), float(v["pole y"])))
-        st.update(n=n, lam=lam, q=q, outboard=out_k, t=t, energy=(float(T + V), W, E0), c=float(v["damping c"]))
+                               pole=(float(values["pole x"]), float(values["pole y"])))
+        st.update(n=n, lam=lam, q=q, outboard=out_k, t=t, energy=(float(T + V), W, E0), c=float(values["damping c"]))
         return st
 
     def _focus_k(self, n: int) -> int:
@@ -520,76 +496,53 @@ class ArticulatedExplorer(Explorer):
         box = fit_box(np.vstack(pts), margin=0.1)
         return chain_view(box, self.figure_px, MARGIN)
 
-    def scene_picture(self, st, view=None):
-        """The state's picture, built natively (:func:`planargeo.draw.pictures.articulated.articulated_picture`).
-
-        Parameters
-        ----------
-        st : dict
-            A state from :meth:`compute`.
-        view : (x0, x1, y0, y1), optional
-            The view the user zoomed or panned to (default: :meth:`view_box`).
-
-        Returns
-        -------
-        Picture
-        """
+    def scene_picture(self, state, view=None):
+        # The state's picture, built natively (:func:`planargeo.draw.pictures.articulated.articulated_picture`).
         v = self.values
-        return articulated_picture(st, k=self._focus_k(st["n"]), focus_all=v.get("focus", "all") == "all",
+        return articulated_picture(state, k=self._focus_k(state["n"]), focus_all=v.get("focus", "all") == "all",
                                    rigid=bool(v["rigid inertias"]), axes=bool(v["percussion axes"]),
-                                   view=view or self.view_box(st), size=self.figure_px)
+                                   view=view or self.view_box(state), size=self.figure_px)
 
-    def readout_of(self, st):
-        """The readout of the state ``st`` (the focused body's ``Aₖ``, its centre, the pole, the energies).
-
-        Parameters
-        ----------
-        st : dict
-            A state from :meth:`compute`.
-
-        Returns
-        -------
-        dict
-            Readout values (units in :attr:`units`).
-        """
+    def readout_of(self, state):
+        # The readout of the state ``state`` (the focused body's ``Aₖ``, its centre, the pole, the energies).
         v = self.values
-        n = st["n"]
+        n = state["n"]
         k = self._focus_k(n)
-        pts = st["joints"]
+        pts = state["joints"]
         w = self.controls["outboard bodies"]          # the slider spans the bodies outboard of body 1
         if w.max != n - 1:
             with self._quietly():
                 w.max = n - 1
         # readout
-        Ak = st["A"][k]
+        Ak = state["A"][k]
         zero = float(self.zero_tol) * float(self.scale)
         Aj = inertia_at(Ak, pts[k])
-        c = st["centre"][k]
+        c = state["centre"][k]
         P = np.array([v["pole x"], v["pole y"]])
         dist = float(np.hypot(*(P - c)))
-        line = st["axis"][k]
+        line = state["axis"][k]
         axis_from_c = abs(line[2] + c[1] * line[0] - c[0] * line[1]) / max(math.hypot(line[0], line[1]), 1e-300)
         out = {
             "bodies": n,
-            "outboard included": f"{min(st['outboard'], n - 1 - k)} of {n - 1 - k}",
+            "outboard included": f"{min(state['outboard'], n - 1 - k)} of {n - 1 - k}",
             "Aₖ: mass along x": float(Aj[0, 0]), "Aₖ: mass along y": float(Aj[1, 1]),
             "Aₖ: inertia about joint k": float(Aj[2, 2]),
             "effective centre of Aₖ": point_text([c[1], -c[0], 1.0], zero=zero),
-            "centre of mass of body k": point_text([st["centre_rigid"][k][1], -st["centre_rigid"][k][0], 1.0],
+            "centre of mass of body k": point_text([state["centre_rigid"][k][1], -state["centre_rigid"][k][0], 1.0],
                                                    zero=zero),
-            "truncation error of Aₖ": float(st["truncation_error"][k]),
+            "truncation error of Aₖ": float(state["truncation_error"][k]),
             "pole a": point_text([P[1], -P[0], 1.0], zero=zero), "distance from a to the centre": dist,
             "axis Aₖa: distance from the centre": float(axis_from_c),
         }
-        if k == 0 and abs(math.remainder(float(v["bend φ (deg)"]), 360.0)) < 1e-12 and st["t"] == 0:
+        if k == 0 and abs(math.remainder(float(v["bend φ (deg)"]), 360.0)) < 1e-12 and state["t"] == 0:
             from planargeo.scenes.horizontal_chain import effective_centre
 
             out["effective centre d/L (7.27)"] = effective_centre(
-                inertia_at(st["A"][0], (0.0, 0.0)) if v["base θ₁ (deg)"] == 0 else
-                _rotate_back(st["A"][0], math.radians(v["base θ₁ (deg)"])))[0]
-        E, Wd, E0 = st["energy"]
-        out.update({"t": st["t"], "energy T + V": E, "dissipated W": Wd, "T + V + W": E + Wd,
-                    "initial energy E₀": E0, C_ROW: st["n"] * st["c"]})
+                inertia_at(state["A"][0], (0.0, 0.0)) if v["base θ₁ (deg)"] == 0 else
+                _rotate_back(state["A"][0], math.radians(v["base θ₁ (deg)"])))[0]
+        E, Wd, E0 = state["energy"]
+        out.update({"t": state["t"], "energy T + V": E, "dissipated W": Wd, "T + V + W": E + Wd,
+                    "initial energy E₀": E0, C_ROW: state["n"] * state["c"]})
         return out
 
 

@@ -128,39 +128,19 @@ class CarExplorer(Explorer):
         }
 
     # -- physics -------------------------------------------------------------------
-    def compute(self, v, changed):
-        """The scene at the control values (the car at heading 0), its energy and the Play run.
-
-        Parameters
-        ----------
-        v : dict
-            Control values.
-        changed : set of str
-            Controls that changed.
-
-        Returns
-        -------
-        dict
-            ``res`` (the scene), ``ke`` (kinetic energy), ``acc`` (the acceleration of
-            the centre of gravity), ``limit`` (μ·g, what the tyres hold) and ``slides``
-            (the limit reached: the car slides out, said on the picture and in the readout).
-
-        Raises
-        ------
-        SceneError
-            A turn radius that is not positive.
-        """
-        d = float(v[RADIUS])
-        V = float(v[SPEED])
+    def compute(self, values, changed):
+        # The scene at the control values (the car at heading 0), its energy and the Play run.
+        d = float(values[RADIUS])
+        V = float(values[SPEED])
         if d <= 0:
             raise SceneError(f"turn radius must be positive, got {d}")
-        res = self._scene(m=float(v["mass (kg)"]), rho=float(v["radius of gyration (m)"]),
-                          d=d, eps=float(v[EPS]), omega=V / d, F_A=float(v[DRIVE]),
+        res = self._scene(m=float(values["mass (kg)"]), rho=float(values["radius of gyration (m)"]),
+                          d=d, eps=float(values[EPS]), omega=V / d, F_A=float(values[DRIVE]),
                           outlines=False)   # the outlines are drawn by gallery Fig 6.6, not here
         ke = float(energy(res.model, [0.0], [V / d])[0])
-        acc, limit = grip(res, float(v[FRICTION]))
+        acc, limit = grip(res, float(values[FRICTION]))
         return {"res": res, "ke": ke, "acc": acc, "limit": limit, "slides": acc >= limit * (1 - 1e-9),
-                "speed": v[SPEED], "heading": v[HEADING]}
+                "speed": values[SPEED], "heading": values[HEADING]}
 
     def play_step(self, values: dict, dt: float):
         """One Play step: the car drives ``dt`` seconds further round the turn (exact for any ``dt``).
@@ -318,71 +298,42 @@ class CarExplorer(Explorer):
         p = st["res"].params
         return view_box(p["d"], p["L"], math.radians(float(st["heading"])), p["F_A"])
 
-    def scene_picture(self, st, view=None):
-        """The state's picture built natively (:func:`planargeo.draw.pictures.car.car_picture`).
-
-        Parameters
-        ----------
-        st : dict
-            A state of :meth:`compute`.
-        view : (x0, x1, y0, y1), optional
-            The view the user zoomed or panned to (default: :meth:`view_of`).
-
-        Returns
-        -------
-        Picture
-        """
-        return car_picture(st["res"], heading=math.radians(float(st["heading"])),
-                           view=view or self.view_of(st), slides=st["slides"], limit=st["limit"],
+    def scene_picture(self, state, view=None):
+        # The state's picture built natively (:func:`planargeo.draw.pictures.car.car_picture`).
+        return car_picture(state["res"], heading=math.radians(float(state["heading"])),
+                           view=view or self.view_of(state), slides=state["slides"], limit=state["limit"],
                            size=self.figure_px)
 
-    def readout_of(self, st):
-        """The readout of the state ``st``: speed, yaw rate and acceleration, tyre forces, grip, energy.
-
-        Parameters
-        ----------
-        st : dict
-            A state of :meth:`compute`.
-
-        Returns
-        -------
-        dict
-        """
-        res = st["res"]
+    def readout_of(self, state):
+        # The readout of the state ``state``: speed, yaw rate and acceleration, tyre forces, grip, energy.
+        res = state["res"]
         q, x, p = res.quantities, res.extra, res.params
         mu = q["mu"]
         omega, wdot = p["omega"], q["omega_dot"]
         inertia_icr = p["m"] * (p["rho"] ** 2 + float(np.hypot(*x["cg"])) ** 2)
         power = float(q["f_A"][2]) * omega           # the drive's moment about the ICR times ω
         return {
-            "speed V": st["speed"],
-            "heading θ": st["heading"],
+            "speed V": state["speed"],
+            "heading θ": state["heading"],
             "yaw rate ω": omega,
             "yaw acceleration ω̇": wdot,
             "rear tyre force μ₁": mu[0],
             "front tyre force μ₂": mu[1],
             "steering angle": math.degrees(x["steer"]),
             "lateral acceleration at G": omega ** 2 * float(np.hypot(*x["cg"])) / G_ROAD,
-            "acceleration of G": st["acc"],
-            "friction limit μ·g": st["limit"],
-            "tyres": ("slide: the car slides out" if st["slides"]
-                      else f"hold ({100 * st['acc'] / st['limit']:.0f}% of μ·g used)"),
-            "kinetic energy K": st["ke"],
+            "acceleration of G": state["acc"],
+            "friction limit μ·g": state["limit"],
+            "tyres": ("slide: the car slides out" if state["slides"]
+                      else f"hold ({100 * state['acc'] / state['limit']:.0f}% of μ·g used)"),
+            "kinetic energy K": state["ke"],
             "drive power": power,
             "rate of change of K": inertia_icr * omega * wdot,
         }
 
     def mechanism_points(self):
-        """The car's corners, its centre of gravity, the steering and drive handles, and a near ICR.
-
-        The ICR belongs to the view for turn radii up to
-        :data:`~planargeo.draw.pictures.car.NEAR` only (beyond, an arrow at the edge points to it).
-
-        Returns
-        -------
-        numpy.ndarray
-            ``(n, 2)`` drawn points (m).
-        """
+        # The car's corners, its centre of gravity, the steering and drive handles, and a near ICR.
+        # The ICR belongs to the view for turn radii up to
+        # :data:`~planargeo.draw.pictures.car.NEAR` only (beyond, an arrow at the edge points to it).
         if self.state is None:
             return np.zeros((0, 2))
         res = self.state["res"]

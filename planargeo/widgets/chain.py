@@ -404,30 +404,10 @@ class ChainExplorer(Explorer):
         return cached(self._motions, key,
                       lambda: Motion(rhs, np.concatenate([q0, qd0]), CHUNK, rtol=1e-8, atol=1e-10))
 
-    def compute(self, v, changed):
-        """The state of the controls: the chain solved by the ABA at the time ``t`` shown.
-
-        Parameters
-        ----------
-        v : dict
-            Control values.
-        changed : set of str
-            Controls that changed.
-
-        Returns
-        -------
-        dict
-            ``model``, ``w`` (the ABA workspace), ``t``, ``tau``, ``q0``, ``e0``, ``ke``, ``pe``.
-
-        Raises
-        ------
-        InputError
-            A per-joint list that is not a list of numbers, or a number beyond its limit.
-        SingularConfigurationError
-            The motion could not be integrated up to ``t``.
-        """
-        model, q0, qd0, tau = self.initial_state(v)
-        t = float(v[TIME])
+    def compute(self, values, changed):
+        # The state of the controls: the chain solved by the ABA at the time ``t`` shown.
+        model, q0, qd0, tau = self.initial_state(values)
+        t = float(values[TIME])
         q, qd = q0, qd0
         if t > 0.0:
             y = self.motion_for(model, q0, qd0, tau).at(t)
@@ -771,27 +751,16 @@ class ChainExplorer(Explorer):
         reach = math.ceil(2.0 * reach - 1e-9) / 2.0
         return (-reach, reach, -reach, reach)
 
-    def readout_of(self, st):
-        """The readout of the state ``st`` (energies, work, drift, end accelerations, base force).
-
-        Parameters
-        ----------
-        st : dict
-            A state of :meth:`compute`.
-
-        Returns
-        -------
-        dict
-            The readout values.
-        """
-        model, w = st["model"], st["w"]
+    def readout_of(self, state):
+        # The readout of the state ``state`` (energies, work, drift, end accelerations, base force).
+        model, w = state["model"], state["w"]
         n = model.N
-        e = st["ke"] + st["pe"]
-        work = float(np.dot(st["tau"], w.q - st["q0"]))     # constant joint forces: work τ·(q − q₀)
-        out = {"links": n, "t (s)": st["t"],
-               "kinetic energy (J)": st["ke"], "potential energy (J)": st["pe"],
+        e = state["ke"] + state["pe"]
+        work = float(np.dot(state["tau"], w.q - state["q0"]))     # constant joint forces: work τ·(q − q₀)
+        out = {"links": n, "t (s)": state["t"],
+               "kinetic energy (J)": state["ke"], "potential energy (J)": state["pe"],
                "total energy (J)": e, "work of the joint forces (J)": work,
-               "energy drift (J)": e - st["e0"] - work}
+               "energy drift (J)": e - state["e0"] - work}
         out["q̈₁"] = float(w.qdd[0])
         out[f"q̈{sub(n)}"] = float(w.qdd[-1])
         # a joint's acceleration: angular (revolute) or linear (prismatic)
@@ -800,33 +769,21 @@ class ChainExplorer(Explorer):
         out["|base force| (N)"] = float(np.hypot(*w.f[0, :2]))
         return out
 
-    def scene_picture(self, st, view=None):
-        """The state's picture built natively (:func:`planargeo.draw.chain.chain_picture`), for the page.
-
-        Parameters
-        ----------
-        st : dict
-            A state of :meth:`compute`.
-        view : (x0, x1, y0, y1), optional
-            The view the user zoomed or panned to (default: :meth:`_view`).
-
-        Returns
-        -------
-        Picture
-        """
+    def scene_picture(self, state, view=None):
+        # The state's picture built natively (:func:`planargeo.draw.chain.chain_picture`), for the page.
         v = self.values
-        w = st["w"]
+        w = state["w"]
         overlays = {k: bool(v[k]) for k in OVERLAYS}
-        view = tuple(view) if view else self._view(st)
-        focus = self._focus(st["model"].N)
+        view = tuple(view) if view else self._view(state)
+        focus = self._focus(state["model"].N)
         size = self.figure_px
         # the same state drawn again (the base asks twice per update: the page, the key): built once
         key = (tuple(overlays.values()), view, focus, size)
         last = getattr(self, "_last_picture", None)
-        if last is not None and last[0] is st and last[1] == key:
+        if last is not None and last[0] is state and last[1] == key:
             return last[2].copy()
-        split = self.tu_split(st) if v["T/U split"] else None
+        split = self.tu_split(state) if v["T/U split"] else None
         pic = chain_picture(w, overlays=overlays, view=view, split=split, focus=focus, size=size,
-                            ends=self._state_ends(st), time=st["t"])
-        self._last_picture = (st, key, pic)
+                            ends=self._state_ends(state), time=state["t"])
+        self._last_picture = (state, key, pic)
         return pic.copy()

@@ -394,35 +394,14 @@ class ConstructionExplorer(Explorer):
         return {**EXPLAIN[kind], **_EXPLAIN_COMMON}
 
     def compute(self, values, changed):
-        """The construction for the parameter values (may raise a named PlanargeoError).
-
-        Parameters
-        ----------
-        values : dict
-        changed : set
-
-        Returns
-        -------
-        dict
-            ``{"kind", "c": Construction}``.
-        """
+        # The construction for the parameter values (may raise a named PlanargeoError).
         kind = values["construction"]
         return {"kind": kind, "c": construct(kind, **{k: values[k] for k in parameters(kind)})}
 
     def readout_of(self, state):
-        """The readout of ``state``: the step, its equation, the construction's numbers, the special case.
-
-        The step's full caption (:attr:`caption`) is drawn above the picture; the step
-        slider's range and the sliders shown follow the construction.
-
-        Parameters
-        ----------
-        state : dict
-
-        Returns
-        -------
-        dict
-        """
+        # The readout of ``state``: the step, its equation, the construction's numbers, the special case.
+        # The step's full caption (:attr:`caption`) is drawn above the picture; the step
+        # slider's range and the sliders shown follow the construction.
         c = state["c"]
         self._shown_kind = state["kind"]
         n = len(c.steps)

@@ -173,27 +173,10 @@ class ImpulseExplorer(Explorer):
         return None if t > T_MAX + 1e-12 else {"t": min(t, T_MAX)}
 
     # ------------------------------------------------------------------ state
-    def compute(self, v, changed):
-        """The scene :func:`~planargeo.scenes.impulse.impulse` of the controls.
-
-        Parameters
-        ----------
-        v : dict
-            Control values.
-        changed : set of str
-            The controls that changed.
-
-        Returns
-        -------
-        SceneResult
-
-        Raises
-        ------
-        PlanargeoError
-            A blow without a line (``J = 0``).
-        """
-        return impulse(body=v["body"], support=v["support"], m=float(v["m"]), x=float(v["strike x"]),
-                       y=float(v["strike y"]), angle_deg=float(v["strike angle"]), J=float(v["J"]))
+    def compute(self, values, changed):
+        # The scene :func:`~planargeo.scenes.impulse.impulse` of the controls.
+        return impulse(body=values["body"], support=values["support"], m=float(values["m"]), x=float(values["strike x"]),
+                       y=float(values["strike y"]), angle_deg=float(values["strike angle"]), J=float(values["J"]))
 
     def view_box(self) -> tuple[float, float, float, float]:
         """The view: the fixed frame, grown (never shrunk) to hold the blow's point and arrow tip.
@@ -221,46 +204,18 @@ class ImpulseExplorer(Explorer):
         return (x0, x1, y0, y1)
 
     def mechanism_points(self):
-        """Points the view must hold: the handles and the body's outline at rest.
-
-        Returns
-        -------
-        numpy.ndarray
-            ``(n, 2)``.
-        """
+        # Points the view must hold: the handles and the body's outline at rest.
         pts = super().mechanism_points()
         st = self.state
         return pts if st is None else np.vstack([pts, np.asarray(st.extra["outline"], dtype=float)])
 
-    def readout_of(self, r):
-        """The readout of the result ``r`` (ω, poles, the reaction impulse, apparent masses, energy).
+    def readout_of(self, state):
+        # The readout of the result ``state`` (ω, poles, the reaction impulse, apparent masses, energy).
+        return self._readout(state, state.params["support"] == "held")
 
-        Parameters
-        ----------
-        r : SceneResult
-            A state of :meth:`compute`.
-
-        Returns
-        -------
-        dict
-        """
-        return self._readout(r, r.params["support"] == "held")
-
-    def scene_picture(self, r, view=None):
-        """The state's picture, built natively (:func:`planargeo.draw.pictures.impulse.impulse_picture`).
-
-        Parameters
-        ----------
-        r : SceneResult
-            A state of :meth:`compute`.
-        view : (x0, x1, y0, y1), optional
-            The view the user zoomed or panned to (default: :meth:`view_box`).
-
-        Returns
-        -------
-        Picture
-        """
-        return impulse_picture(r, t=float(self.values["t"]), view=view or self.view_box(), size=self.figure_px)
+    def scene_picture(self, state, view=None):
+        # The state's picture, built natively (:func:`planargeo.draw.pictures.impulse.impulse_picture`).
+        return impulse_picture(state, t=float(self.values["t"]), view=view or self.view_box(), size=self.figure_px)
 
     def _readout(self, r, held):
         q = r.quantities

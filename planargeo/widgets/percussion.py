@@ -269,62 +269,33 @@ class PercussionExplorer(Explorer):
         shape = parse_polygon(v["polygon"]) if key[1] is not None else PRESETS[key[0]]
         return shape, Inertia.from_polygon(shape)
 
-    def compute(self, v, changed):
-        """The state for the control values ``v``.
-
-        Parameters
-        ----------
-        v : dict
-            Every control's value.
-        changed : set of str
-            The controls that changed.
-
-        Returns
-        -------
-        dict
-            The state drawn by :meth:`scene_picture`.
-
-        Raises
-        ------
-        PlanargeoError
-            A state that cannot be shown (refused by the base).
-        """
-        shape, I0 = self._shape_inertia(v)
-        m = float(v["mass (kg)"])
+    def compute(self, values, changed):
+        # The state for the control values ``values``.
+        shape, I0 = self._shape_inertia(values)
+        m = float(values["mass (kg)"])
         # uniform lamina of mass m: the unit-density inertia scaled by m / area (1.65 is linear)
         I = Inertia(I0.matrix * (m / float(I0.mass)))
         c = np.asarray(I.com, dtype=float)
         Imat = I.matrix
-        if v["drive"] == "impact":
-            s = float(v["impact at"])
+        if values["drive"] == "impact":
+            s = float(values["impact at"])
             f = np.array([0.0, 1.0, s])             # unit force along +y through (s, 0) (5.56)
             a = percussion_pole(Imat, f)
             line = f
         else:
-            a = from_xy([v["pole x"], v["pole y"]])
+            a = from_xy([values["pole x"], values["pole y"]])
             line = percussion_axis(Imat, a)
         return {"shape": shape, "I": I, "c": c, "a": a, "f": line}
 
-    def readout_of(self, st):
-        """The readout of the state ``st``: the pole, ``d``, ``r = ρ²/d``, the centres of percussion.
-
-        Parameters
-        ----------
-        st : dict
-            What :meth:`compute` returned.
-
-        Returns
-        -------
-        dict
-            Readout entries.
-        """
-        c = st["c"]
-        nums = percussion_numbers(st)
+    def readout_of(self, state):
+        # The readout of the state ``state``: the pole, ``d``, ``r = ρ²/d``, the centres of percussion.
+        c = state["c"]
+        nums = percussion_numbers(state)
         rho, m, P, d = nums["rho"], nums["mass"], nums["P"], nums["d"]
         impact = self.values["drive"] == "impact"
         out = {} if impact else {"pole x": self.values["pole x"], "pole y": self.values["pole y"]}
         out.update({"mass m": m, "radius of gyration ρ": rho, "centre of mass": tuple(c)})
-        out["pole"] = point_value(st["a"])
+        out["pole"] = point_value(state["a"])
         out["d = |pole − c|"] = d
         if nums["spot"] is not None:
             r = nums["r"]
@@ -346,22 +317,10 @@ class PercussionExplorer(Explorer):
             out["pole distance from grip"] = "at infinity" if P is None else float(np.hypot(*P))
         return out
 
-    def scene_picture(self, st, view=None):
-        """The state's picture (:func:`planargeo.draw.pictures.percussion.percussion_picture`).
-
-        Parameters
-        ----------
-        st : dict
-            What :meth:`compute` returned.
-        view : (x0, x1, y0, y1), optional
-            The view the user zoomed or panned to (default: :meth:`_view`).
-
-        Returns
-        -------
-        Picture
-        """
-        return percussion_picture(st, impact=self.values["drive"] == "impact",
-                                  view=view or self._view(st), size=self.figure_px)
+    def scene_picture(self, state, view=None):
+        # The state's picture (:func:`planargeo.draw.pictures.percussion.percussion_picture`).
+        return percussion_picture(state, impact=self.values["drive"] == "impact",
+                                  view=view or self._view(state), size=self.figure_px)
 
     #: the work area: where the pole's sliders reach (m), and the view's step (m)
     _STEP = 0.25
@@ -371,16 +330,9 @@ class PercussionExplorer(Explorer):
         return (cx.min, cx.max, cy.min, cy.max)
 
     def mechanism_points(self):
-        """What the view holds: the body's outline, the grip, and the handles within the pole's reach.
-
-        A handle of the axis far beyond the pole's sliders (a pole near ``c`` sends its axis
-        far away, ``r = ρ²/d``) is left out: the axis is still drawn, clipped to the view.
-
-        Returns
-        -------
-        numpy.ndarray
-            ``(n, 2)`` points.
-        """
+        # What the view holds: the body's outline, the grip, and the handles within the pole's reach.
+        # A handle of the axis far beyond the pole's sliders (a pole near ``c`` sends its axis
+        # far away, ``r = ρ²/d``) is left out: the axis is still drawn, clipped to the view.
         st = self.state
         pts = [np.zeros((1, 2))]
         if st is not None:

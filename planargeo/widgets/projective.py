@@ -268,14 +268,8 @@ class ProjectiveExplorer(Explorer):
         return pivot, pivot + arm * e
 
     def mechanism_points(self):
-        """What the fixed view must hold: ``P`` and the handles of ``M`` (not the pole of M, which
-        may lie anywhere in the plane: a line near the centre has its pole far away).
-
-        Returns
-        -------
-        numpy.ndarray
-            ``(n, 2)`` points.
-        """
+        # What the fixed view must hold: ``P`` and the handles of ``M`` (not the pole of M, which
+        # may lie anywhere in the plane: a line near the centre has its pole far away).
         pts = [h.where() for h in self.handles() if h.name != "pole of M"]
         return np.array([p for p in pts if p is not None], dtype=float).reshape(-1, 2)
 
@@ -343,36 +337,18 @@ class ProjectiveExplorer(Explorer):
             Handle("pole of M", pole_where, self._drag_pole_of_M),
         ]
 
-    def compute(self, v, changed):
-        """The state for the control values ``v``.
-
-        Parameters
-        ----------
-        v : dict
-            Every control's value.
-        changed : set of str
-            The controls that changed.
-
-        Returns
-        -------
-        dict
-            The state drawn by :meth:`scene_picture`.
-
-        Raises
-        ------
-        PlanargeoError
-            A state that cannot be shown (refused by the base).
-        """
-        C = make_conic(v["conic"], v["a"], v["b"], v["tilt (deg)"])
-        if v["P at infinity"]:
+    def compute(self, values, changed):
+        # The state for the control values ``values``.
+        C = make_conic(values["conic"], values["a"], values["b"], values["tilt (deg)"])
+        if values["P at infinity"]:
             # the ideal point in the direction (dx, dy): [dy, -dx, 0] (conventions: direction (-b, a))
-            P = np.array([v["P y"], -v["P x"], 0.0])
+            P = np.array([values["P y"], -values["P x"], 0.0])
             if not np.any(P):
                 raise DegenerateGeometryError("P x, P y must not both be zero for a point at infinity")
         else:
-            P = from_xy([v["P x"], v["P y"]])
-        M = np.array([0.0, 0.0, 1.0]) if v["M at infinity"] else _line(v["line angle (deg)"],
-                                                                       v["line offset"])
+            P = from_xy([values["P x"], values["P y"]])
+        M = np.array([0.0, 0.0, 1.0]) if values["M at infinity"] else _line(values["line angle (deg)"],
+                                                                       values["line offset"])
         ctype = classify(C)
         polarP = _settle(polar(C, P), C, P, "polar")
         poleM = _settle(pole(C, M), C, M, "pole")
@@ -399,55 +375,32 @@ class ProjectiveExplorer(Explorer):
             st["where"] = "no real points: algebraic map only"
         return st
 
-    def readout_of(self, st):
-        """The readout of the state ``st``: P, the polar's distance, the pole of M, the invariant P·M.
-
-        Parameters
-        ----------
-        st : dict
-            What :meth:`compute` returned.
-
-        Returns
-        -------
-        dict
-            Readout entries.
-        """
+    def readout_of(self, state):
+        # The readout of the state ``state``: P, the polar's distance, the pole of M, the invariant P·M.
         v = self.values
-        P, M, pol, pm = st["P"], st["M"], st["polar"], st["poleM"]
+        P, M, pol, pm = state["P"], state["M"], state["polar"], state["poleM"]
         # polar of P: normalised line [e, r] (5.55): direction and signed distance from the origin
         F = float(np.hypot(pol[0], pol[1]))
         out = {
             "P x": v["P x"], "P y": v["P y"],
             "P": _xy(P),
-            "conic": str(st["type"]),
-            "P is": st["where"],
+            "conic": str(state["type"]),
+            "P is": state["where"],
             "polar of P: distance to origin": ("line at infinity" if is_at_infinity(pol)
                                                else abs(pol[2]) / F),
             "pole of M": _xy(pm),
             "P·M": float(P @ M),
             "pole(M)·polar(P)": float(pm @ pol),
         }
-        if st["type"].kind == "parabola":   # its centre is the ideal point of its axis
-            out["centre"] = _xy(_settle(pole(st["C"], [0.0, 0.0, 1.0]), st["C"], [0.0, 0.0, 1.0], "pole"))
+        if state["type"].kind == "parabola":   # its centre is the ideal point of its axis
+            out["centre"] = _xy(_settle(pole(state["C"], [0.0, 0.0, 1.0]), state["C"], [0.0, 0.0, 1.0], "pole"))
         else:
-            out["centre"] = _xy(centre(st["C"]))
+            out["centre"] = _xy(centre(state["C"]))
         return out
 
-    def scene_picture(self, st, view=None):
-        """The state's picture (:func:`planargeo.draw.pictures.projective.projective_picture`).
-
-        Parameters
-        ----------
-        st : dict
-            What :meth:`compute` returned.
-        view : (x0, x1, y0, y1), optional
-            The view the user zoomed or panned to (default: :attr:`limits`).
-
-        Returns
-        -------
-        Picture
-        """
+    def scene_picture(self, state, view=None):
+        # The state's picture (:func:`planargeo.draw.pictures.projective.projective_picture`).
         v = self.values
-        return projective_picture(st, construction=bool(v["construction"]),
+        return projective_picture(state, construction=bool(v["construction"]),
                                   line_and_pole=bool(v["line and its pole"]),
                                   view=view or self.limits, size=self.figure_px)

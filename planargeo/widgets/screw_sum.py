@@ -278,51 +278,23 @@ class ScrewSumExplorer(Explorer):
             return Wrench.force((x, y), d)
         return Wrench.couple(m)
 
-    def compute(self, v, changed):
-        """The sum's construction (:func:`~planargeo.screws.twists.add_twists` or ``add_wrenches``).
-
-        Parameters
-        ----------
-        v : dict
-            The control values.
-        changed : set
-            The controls that changed.
-
-        Returns
-        -------
-        dict
-            ``{"mode", "c"}``.
-
-        Raises
-        ------
-        PlanargeoError
-            A zero screw (named), a kind the mode does not add, or a sum beyond double precision.
-        """
-        mode = v["add"]
+    def compute(self, values, changed):
+        # The sum's construction (:func:`~planargeo.screws.twists.add_twists` or ``add_wrenches``).
+        mode = values["add"]
         for k in (1, 2):
-            if v[f"kind{k}"] not in KINDS[mode]:
+            if values[f"kind{k}"] not in KINDS[mode]:
                 raise InputError(f"kind{k} must be one of {list(KINDS[mode])} when adding {mode}, "
-                                 f"got {v[f'kind{k}']!r}")
-        s1, s2 = self._screw(v, 1), self._screw(v, 2)
+                                 f"got {values[f'kind{k}']!r}")
+        s1, s2 = self._screw(values, 1), self._screw(values, 2)
         if mode == "twists":
             return {"mode": mode, "c": add_twists(s1, s2)}
         return {"mode": mode, "c": add_wrenches(s1, s2)}
 
-    def readout_of(self, st):
-        """The readout of ``st`` (numbers with units, the special case); the size sliders' names follow the kinds.
-
-        Parameters
-        ----------
-        st : dict
-            The computed state.
-
-        Returns
-        -------
-        dict
-        """
-        c = st["c"]
-        tw = st["mode"] == "twists"
-        self._mode = st["mode"]
+    def readout_of(self, state):
+        # The readout of ``state`` (numbers with units, the special case); the size sliders' names follow the kinds.
+        c = state["c"]
+        tw = state["mode"] == "twists"
+        self._mode = state["mode"]
         v = self.values
         for k in (1, 2):   # the size slider names what it sets
             w = self.controls[f"size{k}"]
@@ -342,22 +314,10 @@ class ScrewSumExplorer(Explorer):
                     "sum": tuple(float(x) for x in c.sum.array)})
         return out
 
-    def scene_picture(self, st, view=None):
-        """The state's picture (:func:`planargeo.draw.pictures.screw_sum.screw_sum_picture`).
-
-        Parameters
-        ----------
-        st : dict
-            The computed state.
-        view : (x0, x1, y0, y1), optional
-            The view the user zoomed or panned to (default: :attr:`limits`).
-
-        Returns
-        -------
-        Picture
-        """
+    def scene_picture(self, state, view=None):
+        # The state's picture (:func:`planargeo.draw.pictures.screw_sum.screw_sum_picture`).
         v = self.shown_values or self.values
-        return screw_sum_picture(st["mode"], st["c"], anchors=((v["x1"], v["y1"]), (v["x2"], v["y2"])),
+        return screw_sum_picture(state["mode"], state["c"], anchors=((v["x1"], v["y1"]), (v["x2"], v["y2"])),
                                  view=view or self.limits, size=self.figure_px)
 
     # ------------------------------------------------------------------ handles

@@ -309,38 +309,20 @@ class SliderCrankExplorer(Explorer):
             drift, passed = max(drift, res), passed + more
         return psi, psidot, drift, passed
 
-    def compute(self, v, changed):
-        """The state at time ``t`` of the run from the initial crank state; the loop closed and solved (9.5, 9.61).
-
-        Parameters
-        ----------
-        v : dict
-            Control values.
-        changed : set of str
-            Controls changed since the last state.
-
-        Returns
-        -------
-        dict
-            The state (drawn by :meth:`scene_picture`, read by :meth:`readout_of`).
-
-        Raises
-        ------
-        SceneError, SingularConfigurationError
-            A configuration that cannot be assembled, or a singular loop closure.
-        """
-        psi0 = math.radians(v["crank angle (deg)"])
-        l, g = float(v["rod length"]), float(v["gravity"])
+    def compute(self, values, changed):
+        # The state at time ``t`` of the run from the initial crank state; the loop closed and solved (9.5, 9.61).
+        psi0 = math.radians(values["crank angle (deg)"])
+        l, g = float(values["rod length"]), float(values["gravity"])
         r, thick = self.params["r"], self.params["t"]
         model = self.model_for(l, g)
-        drive = v["drive"]
-        key = (psi0, float(v["crank speed"]), drive, l, g)
+        drive = values["drive"]
+        key = (psi0, float(values["crank speed"]), drive, l, g)
         run = self._runs.get(key)
         if run is None:
-            q0, qd0, sol0, _h = slider_crank_solve(model, psi0, float(v["crank speed"]), r, l, thick, drive)
-            run = {"ck": [(psi0, float(v["crank speed"]))], "drift": [0.0], "passed": [],
+            q0, qd0, sol0, _h = slider_crank_solve(model, psi0, float(values["crank speed"]), r, l, thick, drive)
+            run = {"ck": [(psi0, float(values["crank speed"]))], "drift": [0.0], "passed": [],
                    "E0": float(sum(energy(model, data=sol0.data)))}
-        t = time_value(v["t (s)"], T_END)
+        t = time_value(values["t (s)"], T_END)
         psi, psidot, drift, passed = self._run_state(model, run, t, l, drive)
         q, qd, sol, h = slider_crank_solve(model, psi, psidot, r, l, thick, drive)
         E = float(sum(energy(model, data=sol.data)))
@@ -374,61 +356,39 @@ class SliderCrankExplorer(Explorer):
         conf = st["configuration"]
         return f"passing {passed[-1][1]}" if recent else (f"at {conf}" if conf else "")
 
-    def scene_picture(self, st, view=None):
-        """The state's picture built natively (:func:`planargeo.draw.pictures.slider_crank.slider_crank_picture`).
-
-        Parameters
-        ----------
-        st : dict
-            A state of :meth:`compute`.
-        view : (x0, x1, y0, y1), optional
-            The view the user zoomed or panned to (default: :func:`slider_crank_view`).
-
-        Returns
-        -------
-        Picture
-        """
+    def scene_picture(self, state, view=None):
+        # The state's picture built natively (:func:`planargeo.draw.pictures.slider_crank.slider_crank_picture`).
         vals = self.values
         overlays = {k: bool(vals[k]) for k in ("reaction forces", "velocity poles", "acceleration poles")}
-        return slider_crank_picture(st["sol"].data.pose, r=st["r"], t=st["t"], q=st["q"], reactions=st["reactions"],
-                                    v=st["v"], a=st["a"], h=st["h"], overlays=overlays,
-                                    view=view or slider_crank_view(st["r"], st["l"], st["t"]),
-                                    banner=self.banner_of(st), size=self.figure_px)
+        return slider_crank_picture(state["sol"].data.pose, r=state["r"], t=state["t"], q=state["q"], reactions=state["reactions"],
+                                    v=state["v"], a=state["a"], h=state["h"], overlays=overlays,
+                                    view=view or slider_crank_view(state["r"], state["l"], state["t"]),
+                                    banner=self.banner_of(state), size=self.figure_px)
 
-    def readout_of(self, st):
-        """The readout of the state ``st``: time, angles, piston, the pin and bearing forces, energy, drift.
-
-        Parameters
-        ----------
-        st : dict
-            A state of :meth:`compute`.
-
-        Returns
-        -------
-        dict
-        """
-        sol = st["sol"]
-        vel, acc = st["v"], st["a"]
-        reactions = st["reactions"]
+    def readout_of(self, state):
+        # The readout of the state ``state``: time, angles, piston, the pin and bearing forces, energy, drift.
+        sol = state["sol"]
+        vel, acc = state["v"], state["a"]
+        reactions = state["reactions"]
         force = {k: float(np.hypot(x.wrench[0], x.wrench[1])) for k, x in reactions.items()}
-        passed, now = st["passed"], st["time"]
-        conf = st["configuration"]
-        qq, qdd = st["q"], sol.qdd
-        E0 = st["E0"]
-        driven = st["drive"] == "constant-speed"
-        drift = (st["E"] - E0) / abs(E0) if E0 else 0.0
+        passed, now = state["passed"], state["time"]
+        conf = state["configuration"]
+        qq, qdd = state["q"], sol.qdd
+        E0 = state["E0"]
+        driven = state["drive"] == "constant-speed"
+        drift = (state["E"] - E0) / abs(E0) if E0 else 0.0
         out = {
             "t": now, "crank angle ψ": (math.degrees(qq[0]) + 180.0) % 360.0 - 180.0,
-            "crank speed ψ̇": st["qd"][0], "rod angle θ": math.degrees(qq[1]),
+            "crank speed ψ̇": state["qd"][0], "rod angle θ": math.degrees(qq[1]),
             "piston angle φ": math.degrees(qq[2]),
-            "piston height h": st["h"], "piston speed": vel[2][1], "piston acceleration": acc[2][1],
+            "piston height h": state["h"], "piston speed": vel[2][1], "piston acceleration": acc[2][1],
             "ψ̈ crank": qdd[0],
             "|f₁| crank pivot": force["f_1"], "|f₂| crank pin": force["f_2"],
             "|f₃| wrist pin": force["f_3"], "|F₃| slider bearing": force["F_1"],
             "bearing couple": reactions["F_1"].moment, "drive torque Q₁": sol.tau_drive[0],
-            "energy E": st["E"],
+            "energy E": state["E"],
             "energy drift ΔE/E₀": drift if not driven else "none stated: the drive does work",
-            "closure drift": st["drift"],
+            "closure drift": state["drift"],
             "configuration": conf or "between dead centres",
             "last dead centre passed": (f"{passed[-1][1]} at t = {passed[-1][0]:.3f} s" if passed else "none yet"),
         }

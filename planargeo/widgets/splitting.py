@@ -289,44 +289,20 @@ class SplittingExplorer(Explorer):
                     w.max = n
 
     def mechanism_points(self):
-        """Points the view must hold: every joint of the chain and the tip (the base's rule tests).
-
-        Returns
-        -------
-        numpy.ndarray
-            ``(n + 1, 2)``.
-        """
+        # Points the view must hold: every joint of the chain and the tip (the base's rule tests).
         st = self.state
         return np.zeros((0, 2)) if st is None else np.asarray(st["joints"], dtype=float).reshape(-1, 2)
 
-    def compute(self, v, changed):
-        """Mobilities, the split solution and every body's acceleration.
-
-        Parameters
-        ----------
-        v : dict
-            Control values.
-        changed : set of str
-
-        Returns
-        -------
-        dict
-            :func:`planargeo.scenes.splitting.splitting_state` plus ``n``, ``split``, ``rho``, ``phi``.
-
-        Raises
-        ------
-        PlanargeoError
-            A configuration that cannot be computed (e.g. a zero couple and no gravity has no
-            acceleration poles; singular joints).
-        """
-        n, split = int(v["bodies n"]), int(v["split at joint"]) - 1
-        rho, phi, tau = float(v["ρ (m)"]), math.radians(v["bend φ (deg)"]), float(v["couple τ (N·m)"])
-        if tau == 0.0 and float(v["g (m/s²)"]) == 0.0:
+    def compute(self, values, changed):
+        # Mobilities, the split solution and every body's acceleration.
+        n, split = int(values["bodies n"]), int(values["split at joint"]) - 1
+        rho, phi, tau = float(values["ρ (m)"]), math.radians(values["bend φ (deg)"]), float(values["couple τ (N·m)"])
+        if tau == 0.0 and float(values["g (m/s²)"]) == 0.0:
             from planargeo.errors import InputError
 
             raise InputError("couple τ must be non-zero without gravity: nothing would move")
         q = np.array([0.0] + [phi] * (n - 1))
-        st = splitting_state(self._model(n, rho, float(v["g (m/s²)"])), q, split, tau)
+        st = splitting_state(self._model(n, rho, float(values["g (m/s²)"])), q, split, tau)
         st.update(n=n, split=split, rho=rho, phi=phi, tau=tau)
         return st
 
@@ -354,61 +330,38 @@ class SplittingExplorer(Explorer):
             extra.append([c])
         return fit_box(np.vstack(mech), np.vstack(extra) if extra else (), margin=0.15)
 
-    def scene_picture(self, st, view=None):
-        """The state's picture, built natively (:func:`planargeo.draw.pictures.splitting.splitting_picture`).
-
-        Parameters
-        ----------
-        st : dict
-            A state from :meth:`compute`.
-        view : (x0, x1, y0, y1), optional
-            The view the user zoomed or panned to (default: :meth:`view_box`).
-
-        Returns
-        -------
-        Picture
-        """
+    def scene_picture(self, state, view=None):
+        # The state's picture, built natively (:func:`planargeo.draw.pictures.splitting.splitting_picture`).
         v = self.values
-        return splitting_picture(st, view=view or self.view_box(st), focus=v.get("focus", "all"),
+        return splitting_picture(state, view=view or self.view_box(state), focus=v.get("focus", "all"),
                                  centres=bool(v["mobility centres"]), size=self.figure_px)
 
-    def readout_of(self, st):
-        """The readout of the state ``st`` (the split's accelerations and force, ``Λᵢ⁻¹``, ``bᵢ``, ``q̈``).
-
-        Parameters
-        ----------
-        st : dict
-            A state from :meth:`compute`.
-
-        Returns
-        -------
-        dict
-            Readout values (units in :attr:`units`).
-        """
-        n, i = st["n"], st["split"]
-        f = st["f_split"]
+    def readout_of(self, state):
+        # The readout of the state ``state`` (the split's accelerations and force, ``Λᵢ⁻¹``, ``bᵢ``, ``q̈``).
+        n, i = state["n"], state["split"]
+        f = state["f_split"]
         w = self.controls["split at joint"]           # the split slider spans the chain's joints 2..n
         if w.max != n:
             with self._quietly():
                 w.max = n
-        Lam = st["Lambda_inv"][i - 1]
+        Lam = state["Lambda_inv"][i - 1]
         out = {
             "split at joint": i + 1,
-            "aᵢ (7.54)": _vec(st["a_split"]),
-            "aᵢ₊₁": _vec(st["a"][i]),
+            "aᵢ (7.54)": _vec(state["a_split"]),
+            "aᵢ₊₁": _vec(state["a"][i]),
             "fᵢ₊₁ (7.56)": _vec(f),
-            "pole of aᵢ": _pole_text(st["a"][i - 1]),
-            "pole of aᵢ₊₁": _pole_text(st["a"][i]),
+            "pole of aᵢ": _pole_text(state["a"][i - 1]),
+            "pole of aᵢ₊₁": _pole_text(state["a"][i]),
             "row 1 of Λᵢ⁻¹": _vec(Lam[0]), "row 2 of Λᵢ⁻¹": _vec(Lam[1]), "row 3 of Λᵢ⁻¹": _vec(Lam[2]),
-            "bᵢ": _vec(st["b"][i - 1]),
-            "aₙ (tip)": _vec(st["a"][-1]),
-            "q̈ (6.110)": _vec(st["qdd"]),
+            "bᵢ": _vec(state["b"][i - 1]),
+            "aₙ (tip)": _vec(state["a"][-1]),
+            "q̈ (6.110)": _vec(state["qdd"]),
         }
-        a_n = st["a"][-1]
+        a_n = state["a"][-1]
         if n == 2 and float(self.values["g (m/s²)"]) == 0.0 and a_n[2] != 0:
             out["x/L of aₙ's pole (7.48)"] = float(-a_n[1] / a_n[2])
-            out["x/L closed form"] = x_over_L_7_48(st["rho"], 1.0, st["phi"])
-            out["η = L/ρ (7.49)"] = 1.0 / st["rho"]
+            out["x/L closed form"] = x_over_L_7_48(state["rho"], 1.0, state["phi"])
+            out["η = L/ρ (7.49)"] = 1.0 / state["rho"]
         return out
 
 

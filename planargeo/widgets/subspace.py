@@ -251,75 +251,30 @@ class SubspaceExplorer(Explorer):
         return {"force angle": math.degrees(math.atan2(d[1], d[0])), "F": 2 * n / ARROW}
 
     # ------------------------------------------------------------------ state
-    def compute(self, v, changed):
-        """The decomposition of the controls' state (:func:`~planargeo.scenes.subspace.subspace_state`).
-
-        Parameters
-        ----------
-        v : dict
-            Control values.
-        changed : set of str
-            The controls that changed.
-
-        Returns
-        -------
-        dict
-
-        Raises
-        ------
-        PlanargeoError
-            A state without a decomposition (zero force or direction, singular inertia).
-        """
-        m, rho = float(v["m"]), float(v["rho"])
+    def compute(self, values, changed):
+        # The decomposition of the controls' state (:func:`~planargeo.scenes.subspace.subspace_state`).
+        m, rho = float(values["m"]), float(values["rho"])
         I = inertia_matrix(m, COM, m * rho * rho)
-        e = float(v["F"]) * unit_direction(v["force angle"])
-        a = (float(v["force x"]), float(v["force y"]))
+        e = float(values["F"]) * unit_direction(values["force angle"])
+        a = (float(values["force x"]), float(values["force y"]))
         f = np.array([e[0], e[1], a[0] * e[1] - a[1] * e[0]])
-        st = subspace_state(JOINT_OPTIONS[v["joint"]], (v["joint x"], v["joint y"]), unit_direction(v["joint angle"]), I, f)
-        st["point"], st["direction"], st["force point"] = (np.array([v["joint x"], v["joint y"]]),
-                                                           unit_direction(v["joint angle"]), np.array(a))
+        st = subspace_state(JOINT_OPTIONS[values["joint"]], (values["joint x"], values["joint y"]), unit_direction(values["joint angle"]), I, f)
+        st["point"], st["direction"], st["force point"] = (np.array([values["joint x"], values["joint y"]]),
+                                                           unit_direction(values["joint angle"]), np.array(a))
         return st
 
-    def readout_of(self, st):
-        """The readout of the state ``st`` (joint forces and accelerations, ``sᵀIs``, the checks).
+    def readout_of(self, state):
+        # The readout of the state ``state`` (joint forces and accelerations, ``sᵀIs``, the checks).
+        return self._readout(state, int(state["s"].shape[1]))
 
-        Parameters
-        ----------
-        st : dict
-            A state of :meth:`compute`.
-
-        Returns
-        -------
-        dict
-        """
-        return self._readout(st, int(st["s"].shape[1]))
-
-    def scene_picture(self, st, view=None):
-        """The state's picture, built natively (:func:`planargeo.draw.pictures.subspace.subspace_picture`).
-
-        Parameters
-        ----------
-        st : dict
-            A state of :meth:`compute`.
-        view : (x0, x1, y0, y1), optional
-            The view the user zoomed or panned to (default: :meth:`view_box`).
-
-        Returns
-        -------
-        Picture
-        """
+    def scene_picture(self, state, view=None):
+        # The state's picture, built natively (:func:`planargeo.draw.pictures.subspace.subspace_picture`).
         v = self.values
-        return subspace_picture(st, show=SHOW_OPTIONS[v["show"]], m=float(v["m"]), rho=float(v["rho"]),
+        return subspace_picture(state, show=SHOW_OPTIONS[v["show"]], m=float(v["m"]), rho=float(v["rho"]),
                                 view=view or self.view_box(), size=self.figure_px)
 
     def mechanism_points(self):
-        """Points the view must hold: the handles and the body's corners.
-
-        Returns
-        -------
-        numpy.ndarray
-            ``(n, 2)``.
-        """
+        # Points the view must hold: the handles and the body's corners.
         return np.vstack([super().mechanism_points(), BAR])
 
     #: room left round the handles when the view grows to hold them (m)

@@ -216,13 +216,7 @@ class TreeExplorer(Explorer):
         return [Handle("tip of body 1", tip(0), drag1), Handle("tip of body 2", tip(1), drag2)]
 
     def mechanism_points(self):
-        """Every joint and link tip of the pose shown (the view holds them).
-
-        Returns
-        -------
-        numpy.ndarray
-            ``(18, 2)`` points.
-        """
+        # Every joint and link tip of the pose shown (the view holds them).
         if self.state is None:
             return np.zeros((0, 2))
         return np.vstack([self.state["sol"].data.pose[:, :2], self.state["tips"]])
@@ -292,45 +286,25 @@ class TreeExplorer(Explorer):
             events = events + [(k * CHECKPOINT + float(e["t"]), e["kind"]) for e in out["events"]]
         return q, qd, drift, events
 
-    def compute(self, v, changed):
-        """The state at time ``t`` of the run from the initial controls; one solve (9.5 or 9.39-9.43) with reactions.
-
-        The pose at ``t = 0`` depends on the two angles alone (the rule of
-        :func:`~planargeo.scenes.trees.tree_pose`), and the run on the initial
-        controls alone (fixed checkpoints): the same controls give the same state
-        after any history.
-
-        Parameters
-        ----------
-        v : dict
-            Control values.
-        changed : set of str
-            Controls changed since the last state.
-
-        Returns
-        -------
-        dict
-
-        Raises
-        ------
-        SceneError
-            A pose whose loops cannot close.
-        PlanargeoError
-            The integration stopped (a singular configuration it could not pass).
-        """
-        closed = v["loops"].startswith("closed")
-        model = self.model_for(closed, float(v["mass"]), float(v["gravity"]))
+    def compute(self, values, changed):
+        # The state at time ``t`` of the run from the initial controls; one solve (9.5 or 9.39-9.43) with reactions.
+        # The pose at ``t = 0`` depends on the two angles alone (the rule of
+        # :func:`~planargeo.scenes.trees.tree_pose`), and the run on the initial
+        # controls alone (fixed checkpoints): the same controls give the same state
+        # after any history.
+        closed = values["loops"].startswith("closed")
+        model = self.model_for(closed, float(values["mass"]), float(values["gravity"]))
         _c, L, dof = self.geometry(closed)
-        a1, a2, speed = float(v["body 1 angle (deg)"]), float(v["body 2 angle (deg)"]), float(v["speed"])
+        a1, a2, speed = float(values["body 1 angle (deg)"]), float(values["body 2 angle (deg)"]), float(values["speed"])
         pose_key = (closed, a1, a2)
         pose = self._poses.get(pose_key)
         if pose is None:
             pose = tree_pose(model, math.radians(a1), 1.0, angle2=math.radians(a2))
-        key = (closed, float(v["mass"]), float(v["gravity"]), speed, a1, a2)
+        key = (closed, float(values["mass"]), float(values["gravity"]), speed, a1, a2)
         run = self._runs.get(key)
         if run is None:
             run = {"ck": [(pose[0], speed * pose[1])], "drift": [0.0], "events": []}
-        t = time_value(v["t (s)"], T_END)
+        t = time_value(values["t (s)"], T_END)
         q, qd, drift, events = self._run_state(model, run, t)
         sol = tree_solve(model, q, qd)                               # 9.5 closed, 9.39-9.43 open
         E = float(sum(energy(model, data=sol.data)))
@@ -341,7 +315,7 @@ class TreeExplorer(Explorer):
         tips = pose_now[:, :2] + L * np.column_stack([np.cos(pose_now[:, 2]), np.sin(pose_now[:, 2])])
         st = {"closed": closed, "model": model, "q": q, "qd": qd, "length": L, "dof": dof, "sol": sol,
               "a": sol.a.reshape(N, 3), "qdd": np.asarray(sol.qdd), "tips": tips, "t": t, "E": E, "E0": E0,
-              "drift": drift, "events": list(events), "reactions": tree_reactions(model, sol), "speed": v["speed"]}
+              "drift": drift, "events": list(events), "reactions": tree_reactions(model, sol), "speed": values["speed"]}
         if closed:
             st["F"] = sol.F.reshape(-1, 3)
             st["cond"] = float(sol.cond)
@@ -353,62 +327,40 @@ class TreeExplorer(Explorer):
             self._runs.pop(next(iter(self._runs)))
         return st
 
-    def scene_picture(self, st, view=None):
-        """The state's picture built natively (:func:`planargeo.draw.pictures.trees.trees_picture`).
-
-        Parameters
-        ----------
-        st : dict
-            A state of :meth:`compute`.
-        view : (x0, x1, y0, y1), optional
-            The view the user zoomed or panned to (default: :attr:`limits`, every pose the links reach).
-
-        Returns
-        -------
-        Picture
-        """
+    def scene_picture(self, state, view=None):
+        # The state's picture built natively (:func:`planargeo.draw.pictures.trees.trees_picture`).
         vals = self.values
         overlays = {k: bool(vals[k]) for k in ("reaction forces", "velocity poles", "acceleration poles")}
-        contacts = [c.name for c in st["model"].contacts] if st["closed"] else []
-        return trees_picture(st["sol"].data.pose, st["tips"], reactions=st["reactions"], contacts=contacts,
-                             v=st["sol"].data.v, a=st["a"], overlays=overlays, focus=vals.get("focus", "all"),
+        contacts = [c.name for c in state["model"].contacts] if state["closed"] else []
+        return trees_picture(state["sol"].data.pose, state["tips"], reactions=state["reactions"], contacts=contacts,
+                             v=state["sol"].data.v, a=state["a"], overlays=overlays, focus=vals.get("focus", "all"),
                              view=view or self.limits, size=self.figure_px)
 
-    def readout_of(self, st):
-        """The readout of the state ``st`` (and of the focus shown): energy, drifts, forces, accelerations.
-
-        Parameters
-        ----------
-        st : dict
-            A state of :meth:`compute`.
-
-        Returns
-        -------
-        dict
-        """
-        closed, model = st["closed"], st["model"]
+    def readout_of(self, state):
+        # The readout of the state ``state`` (and of the focus shown): energy, drifts, forces, accelerations.
+        closed, model = state["closed"], state["model"]
         focus = self.values.get("focus", "all")
-        reactions = {symbol_of(x.symbol): x for x in st["reactions"]}
+        reactions = {symbol_of(x.symbol): x for x in state["reactions"]}
         force = {k: float(np.hypot(x.wrench[0], x.wrench[1])) for k, x in reactions.items()}
-        E0 = st["E0"]
-        out = {"t": st["t"], "speed": st["speed"], "loops": "closed" if closed else "open",
-               "degrees of freedom": st["dof"], "energy E": st["E"],
-               "energy drift ΔE/E₀": (st["E"] - E0) / abs(E0) if E0 else 0.0,
-               "closure drift |φ|": st["drift"]}
+        E0 = state["E0"]
+        out = {"t": state["t"], "speed": state["speed"], "loops": "closed" if closed else "open",
+               "degrees of freedom": state["dof"], "energy E": state["E"],
+               "energy drift ΔE/E₀": (state["E"] - E0) / abs(E0) if E0 else 0.0,
+               "closure drift |φ|": state["drift"]}
         if closed:
             for k, c in enumerate(model.contacts):
                 out[f"|F{_SUB[k + 1]}| (pin {c.name})"] = force[symbol_of(f"F_{k + 1}")]
-            out["condition number"] = st["cond"]
+            out["condition number"] = state["cond"]
         out["largest pin force"] = max(force[symbol_of(f"f_{i + 1}")] for i in range(N))
         if focus in reactions:
             x = reactions[focus]
             out["focus"] = focus
             out[f"|{focus}|"] = force[focus]
             out[f"moment of {focus} about its pin"] = x.moment
-        qdd = st["qdd"]
+        qdd = state["qdd"]
         out["q̈₁ (body 1)"] = qdd[0]
         out["largest |q̈ᵢ|"] = float(np.max(np.abs(qdd)))
-        ev = st["events"]
+        ev = state["events"]
         out["singular poses"] = (f"{len(ev)}, the last at t = {ev[-1][0]:.2f} s" if ev else "none yet")
         self.units = dict(self.units)
         for k in out:
