@@ -1,8 +1,6 @@
-"""Tests of planargeo.draw.artists: clipping, poles, conic paths, cheap updates."""
+"""Tests of planargeo.draw.artists: clipping, poles, conic paths."""
 from __future__ import annotations
 
-import gc
-import tracemalloc
 import warnings
 
 import matplotlib
@@ -14,8 +12,7 @@ import pytest  # noqa: E402
 from hypothesis import given, strategies as st  # noqa: E402
 
 from planargeo.draw.artists import (ConicArtist, LineArtist, PointArtist, clip_line,  # noqa: E402
-                                    conic_geometry, plot_conic, plot_inertia, plot_line,
-                                    plot_point)
+                                    conic_geometry, plot_conic, plot_line, plot_point)
 from planargeo.errors import InputError, NonFiniteError, ShapeError  # noqa: E402
 from planargeo.screws.twists import inertia_matrix  # noqa: E402
 
@@ -182,7 +179,7 @@ def test_hyperbola_has_both_branches(ax):
 def test_inertia_drawn_as_gyration_circle(ax):
     m, c, J = 2.0, np.array([1.0, 0.5]), 0.5
     rho = np.sqrt(J / m)
-    art = plot_inertia(inertia_matrix(m, c, J), ax)
+    art = plot_conic(inertia_matrix(m, c, J), ax, role="inertia")
     assert art.imaginary and art.kind == "ellipse"
     xy = art.get_xy()
     np.testing.assert_allclose(np.linalg.norm(xy - c, axis=1), rho, rtol=1e-10)
@@ -256,51 +253,6 @@ def test_bad_input():
 
 
 # ----------------------------------------------------------------- cheap updates
-def _count(fig):
-    return len(fig.findobj())
-
-
-def test_updates_create_no_artists_and_leak_no_memory(ax):
-    fig = ax.figure
-    ax.set_axis_off()
-    pa = plot_point([0.0, 0.0, 1.0], ax, text="v")
-    la = plot_line([1.0, 0.0, 0.0], ax, text="f")
-    ca = plot_conic(inertia_matrix(1.0, [0.0, 0.0], 1.0), ax, role="inertia")
-    fig.canvas.draw()
-    n_children = len(ax.get_children())
-    n_all = _count(fig)
-    rng = np.random.default_rng(0)
-
-    def step(i):
-        t = i * 0.01
-        pa.set_point([np.sin(t), np.cos(t), 1.0 + 0.5 * np.sin(3 * t)] if i % 10 else [1.0, 1.0, 0.0])
-        la.set_line([np.cos(t), np.sin(t), 0.3] if i % 7 else [0.0, 0.0, 1.0])
-        ca.set_conic(inertia_matrix(1.0 + 0.5 * np.sin(t), [np.cos(t), 0.0], 0.3))
-        assert pa.stale and la.stale and ca.stale
-        if i % 50 == 0:
-            fig.canvas.draw()
-
-    def grow(n0):
-        gc.collect()
-        tracemalloc.start()
-        before = tracemalloc.take_snapshot()
-        for i in range(n0, n0 + 1000):
-            step(i)
-        gc.collect()
-        after = tracemalloc.take_snapshot()
-        tracemalloc.stop()
-        return sum(s.size_diff for s in after.compare_to(before, "filename"))
-
-    for i in range(300):  # warm-up (font and transform caches fill once)
-        step(i)
-    grow(300)
-    growth = grow(1300)  # a second window of 1000 updates must not keep growing
-    assert growth < 100_000, growth
-    assert len(ax.get_children()) == n_children
-    assert _count(fig) == n_all
-    _ = rng
-
-
 def test_update_does_not_rebuild_conic_path(ax):
     ca = plot_conic(inertia_matrix(1.0, [0.0, 0.0], 1.0), ax, role="inertia")
     ax.figure.canvas.draw()
@@ -341,7 +293,7 @@ def test_inertia_circle_is_screws_drawable_conic(ax, rng):
 
     for _ in range(5):
         I = inertia_matrix(rng.uniform(0.5, 3), rng.uniform(-2, 2, 2), rng.uniform(0.1, 2))
-        art = plot_inertia(I, ax)
+        art = plot_conic(I, ax, role="inertia")
         _check_on_conic(art, drawable_conic(I))
 
 
@@ -433,7 +385,7 @@ def test_plot_functions_default_to_the_current_axes():
     try:
         ax = fig.gca()
         arts = [plot_point([0.0, 0.0, 1.0]), plot_line([1.0, 0.0, 0.0]),
-                plot_conic(np.diag([1.0, 1.0, -1.0])), plot_inertia(inertia_matrix(1.0, [0, 0], 0.5))]
+                plot_conic(np.diag([1.0, 1.0, -1.0])), plot_conic(inertia_matrix(1.0, [0, 0], 0.5), role="inertia")]
         assert all(a.axes is ax for a in arts)
         leg = legend([("twist", "point", "a twist"), ("reaction", "sum-line", "a sum")])
         assert ax.get_legend() is leg

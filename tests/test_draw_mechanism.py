@@ -96,33 +96,3 @@ def test_draw_frame_axes_turned_by_angle(ax):
     np.testing.assert_allclose(x_arrow.xyann, [1.0, 2.0])
     with pytest.raises(TypeError):
         draw_frame([0.0, 0.0], 0.3, ax)                 # the old positional angle
-
-
-def test_label_placer_keeps_labels_apart_inside_and_reuses_its_pool(ax):
-    """Placed labels never overlap (their drawn boxes) and stay inside the axes; the pool is reused."""
-    from planargeo.draw.layout import legibility_problems
-    from planargeo.draw.mechanism import LabelPlacer
-
-    ax.set_xlim(0, 4)
-    ax.set_ylim(0, 4)
-    ax.set_xticks([])
-    ax.set_yticks([])
-    labels = LabelPlacer(ax, size=40, fontsize=10)
-    rng = np.random.default_rng(1)
-    pts = rng.uniform(-0.5, 4.5, size=(60, 2))                    # some outside the view
-    reqs = [(f"$f_{{{i}}}$", p, {"bold": i == 0}) for i, p in enumerate(pts)]
-    reqs.insert(0, ("first", (2.0, 2.0)))
-    shown = labels.place(reqs)
-    assert shown[0]                                               # the first always fits
-    inside = (pts >= 0).all(axis=1) & (pts <= 4).all(axis=1)
-    assert not any(s for s, ok in zip(shown[1:], inside) if not ok)  # no anchor outside: no label
-    texts = [t for t in labels.texts if t.get_visible()]
-    assert len(texts) == sum(shown) and 5 < len(texts) <= 40
-    assert legibility_problems(ax.figure) == []
-    # the estimated boxes hold the drawn ones
-    r = ax.figure.canvas.get_renderer()
-    for t, box in zip(texts, labels.boxes):
-        bb = t.get_window_extent(r)
-        assert bb.x0 >= box[0] - 1 and bb.x1 <= box[2] + 1 and bb.y0 >= box[1] - 1 and bb.y1 <= box[3] + 1
-    assert labels.place([("P", (1.0, 1.0))]) == [True]
-    assert sum(t.get_visible() for t in labels.texts) == 1        # the rest of the pool hidden

@@ -2,11 +2,10 @@
 
 Each artist holds one homogeneous array in the package's coordinates (a point
 ``[y, -x, 1]`` is a twist, a line ``[fx, fy, tz]`` is a wrench, a symmetric
-``(3, 3)`` matrix is a conic or an inertia).  A ``set_*`` call only stores the
-new array and marks the artist stale; the geometry (clipping against the
-current view, glyph placement) is computed when the figure is drawn, with a
-fixed set of child primitives, so an artist can be updated thousands of times
-(animation, widgets) without creating new artists.
+``(3, 3)`` matrix is a conic or an inertia).  The geometry (clipping against
+the current view, glyph placement) is computed when the figure is drawn, with a
+fixed set of child primitives.  The gallery's figures draw with these artists;
+the explorers draw pictures (:mod:`planargeo.draw.picture`) instead.
 
 * :class:`PointArtist`: a twist's pole with a rotation glyph (counter-clockwise
   or clockwise arc arrow, radius growing with ``|ω|``); an ideal point (a
@@ -35,7 +34,7 @@ from matplotlib.markers import MarkerStyle
 from matplotlib.patches import FancyArrowPatch, Polygon
 from matplotlib.path import Path
 from matplotlib.text import Text
-from matplotlib.transforms import Affine2D, Bbox, IdentityTransform
+from matplotlib.transforms import Affine2D, IdentityTransform
 
 from planargeo.errors import InputError
 from planargeo.draw.geometry import _mat, _vec, clip_line, conic_geometry, euclidean_conic, point_xy
@@ -44,7 +43,7 @@ from planargeo.draw.style import LABEL_PT, get_ax, style as _style
 __all__ = [
     "PointArtist", "LineArtist", "ConicArtist",
     "point_xy", "clip_line", "conic_geometry", "euclidean_conic",
-    "plot_point", "plot_line", "plot_conic", "plot_inertia", "legend_handles", "place_labels",
+    "plot_point", "plot_line", "plot_conic",
 ]
 
 #: A finite pole farther than FAR view diagonals from the view is drawn like an ideal point
@@ -78,145 +77,6 @@ def _arc_glyph(center, radius, ccw: bool, npts: int = 40, pts: float = 1.0):
     h = min(max(3.0 * pts, 0.45 * radius), 6.0 * pts)
     head = np.array([end + tang * h, end - 0.5 * h * norm, end + 0.5 * h * norm])
     return arc, head
-
-
-def _text_props(color):
-    return dict(color=color, fontsize=LABEL_PT, ha="center", va="center")
-
-
-# --------------------------------------------------------------------------- label placement
-class _LabelBoard(martist.Artist):
-    """Invisible first artist of an axes: at each draw it forgets the label boxes placed so far.
-
-    Labels of this module's artists on an axes with a board (:func:`place_labels`)
-    avoid the boxes of the labels drawn before them and stay inside the axes.
-    """
-
-    def __init__(self):
-        super().__init__()
-        self.set_zorder(-1e9)
-        self.set_in_layout(False)
-        self.boxes: list = []
-
-    @martist.allow_rasterization
-    def draw(self, renderer):
-        self.boxes = []
-        self.stale = False
-
-
-def place_labels(ax=None):
-    """Turn on automatic label placement on ``ax``: labels avoid each other and stay inside.
-
-    Each label of a :class:`PointArtist`, :class:`LineArtist` or :class:`ConicArtist`
-    is first tried where it would go; if it overlaps a label drawn before it or
-    leaves the axes, a few other places around its anchor are tried, and the
-    label is finally moved inside the axes.  Explorers turn this on; figures
-    whose labels are placed by hand (the gallery) leave it off.
-
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes, optional
-        Default: the current axes.
-
-    Returns
-    -------
-    matplotlib.axes.Axes
-        ``ax``.
-    """
-    ax = get_ax(ax)
-    if _board(ax) is None:
-        ax._planargeo_board = _LabelBoard()
-        ax.add_artist(ax._planargeo_board)
-    return ax
-
-
-def _board(ax):
-    return getattr(ax, "_planargeo_board", None) if ax is not None else None
-
-
-#: where a label's box starts, in widths (heights) left of (below) its position, per alignment
-_HA = {"left": 0.0, "center": 0.5, "right": 1.0}
-_VA = {"bottom": 0.0, "center": 0.5, "top": 1.0, "baseline": 0.0, "center_baseline": 0.5}
-
-#: directions (unit vectors) tried for a label that collides, in order
-_TRY = [(0.7071, 0.7071), (0.7071, -0.7071), (-0.7071, 0.7071), (-0.7071, -0.7071),
-        (1.0, 0.0), (-1.0, 0.0), (0.0, 1.0), (0.0, -1.0)]
-
-
-def _overlap_area(a, b) -> float:
-    dx = min(a.x1, b.x1) - max(a.x0, b.x0)
-    dy = min(a.y1, b.y1) - max(a.y0, b.y0)
-    return dx * dy if dx > 0.5 and dy > 0.5 else 0.0
-
-
-#: (text, font, dpi) -> (width, height) of a one-line label's box, in display pixels
-_TEXT_SIZE: dict = {}
-
-
-def _text_box(text, renderer):
-    """Display box of a label: a one-line, unrotated label's from its size (measured once) and
-    alignment, by arithmetic; any other text's from Matplotlib."""
-    s = text.get_text()
-    ha, va = text.get_horizontalalignment(), text.get_verticalalignment()
-    if (not s or text.get_rotation() != 0.0 or "\n" in s or text.get_wrap()
-            or ha not in _HA or va not in ("bottom", "center", "top")):
-        return text.get_window_extent(renderer)
-    key = (s, hash(text.get_fontproperties()), renderer.dpi)
-    wh = _TEXT_SIZE.get(key)
-    if wh is None:
-        bb = text.get_window_extent(renderer)
-        _TEXT_SIZE[key] = (bb.width, bb.height)
-        return bb
-    w, h = wh
-    x, y = text.get_transform().transform(text.get_position())
-    return Bbox.from_bounds(x - w * _HA[ha], y - h * _VA[va], w, h)
-
-
-def _settle(text, anchor, gap_px, renderer, ax):
-    """Move ``text`` (display space) off the labels already placed and into the axes; register it."""
-    board = _board(ax)
-    if board is None:
-        return
-    box = ax.bbox
-
-    def cost(bb):
-        out = sum(_overlap_area(bb, o) for o in board.boxes)
-        dx = max(box.x0 - bb.x0, 0) + max(bb.x1 - box.x1, 0)
-        dy = max(box.y0 - bb.y0, 0) + max(bb.y1 - box.y1, 0)
-        return out + 50.0 * (dx + dy)
-
-    bb = _text_box(text, renderer)
-    best = (cost(bb), text.get_position(), text.get_horizontalalignment(),
-            text.get_verticalalignment())
-    if best[0] > 0 and anchor is not None:
-        anchor = np.asarray(anchor, dtype=float)
-        for scale in (1.0, 2.2):
-            for u in _TRY:
-                text.set_position(_pyxy(anchor + scale * gap_px * np.asarray(u)))
-                text.set_horizontalalignment("left" if u[0] > 0.35 else "right" if u[0] < -0.35
-                                             else "center")
-                text.set_verticalalignment("bottom" if u[1] > 0.35 else "top" if u[1] < -0.35
-                                           else "center")
-                c = cost(_text_box(text, renderer))
-                if c < best[0]:
-                    best = (c, text.get_position(), text.get_horizontalalignment(),
-                            text.get_verticalalignment())
-                if c == 0:
-                    break
-            if best[0] == 0:
-                break
-    text.set_position(best[1])
-    text.set_horizontalalignment(best[2])
-    text.set_verticalalignment(best[3])
-    bb = _text_box(text, renderer)
-    # finally inside the axes (a label never leaves them)
-    shift = np.array([max(box.x0 + 1 - bb.x0, 0) - max(bb.x1 - box.x1 + 1, 0),
-                      max(box.y0 + 1 - bb.y0, 0) - max(bb.y1 - box.y1 + 1, 0)])
-    if np.any(shift):
-        x, y = text.get_position()
-        text.set_position(_pyxy((x + shift[0], y + shift[1])))
-        bb = _text_box(text, renderer)
-    board.boxes.append(bb)
 
 
 # --------------------------------------------------------------------------- fast drawing
@@ -433,22 +293,6 @@ class _Base(martist.Artist):
                                              linewidth=0))
         self._head.set_transform(IdentityTransform())
 
-    def set_text(self, text):
-        """Set the text label drawn next to the glyph."""
-        self._text.set_text("" if text is None else str(text))
-        self.stale = True
-
-    def set_text_props(self, **props):
-        """Set properties of the label (``fontsize``, ``color``...), as :meth:`matplotlib.text.Text.update`.
-
-        Parameters
-        ----------
-        **props
-            Text properties.
-        """
-        self._text.update(props)
-        self.stale = True
-
     def set_text_offset(self, offset):
         """Offset (dx, dy) in points of the label from its reference point (None: the default)."""
         if hasattr(self, "_auto_offset"):
@@ -514,9 +358,6 @@ class _Base(martist.Artist):
         if not self.get_visible() or self.axes is None:
             self.stale = False
             return
-        if _board(self.axes) is not None:  # alignment moved by the last label placement
-            self._text.set_horizontalalignment(self._ha)
-            self._text.set_verticalalignment(self._va)
         self._prepare_children()
         drawn = self._update_geometry(renderer)
         renderer.open_group(type(self).__name__, gid=self.get_gid())
@@ -529,17 +370,7 @@ class _Base(martist.Artist):
             return []
         off = self._text_offset * renderer.points_to_pixels(1.0)
         self._text.set_position(_pyxy(np.asarray(anchor_disp) + off))
-        self._settle_text(anchor_disp, renderer, float(np.hypot(*off)))
         return [self._text]
-
-    def _settle_text(self, anchor_disp, renderer, gap_px=None):
-        """With :func:`place_labels` on: the label off others' and inside the axes."""
-        if _board(self.axes) is None or not self._text.get_text():
-            return
-        pts = renderer.points_to_pixels(1.0)
-        gap = max(gap_px or 0.0, 6.0 * pts)
-        _settle(self._text, anchor_disp, gap, renderer, self.axes)
-
 
 # --------------------------------------------------------------------------- points
 class PointArtist(_Base):
@@ -597,46 +428,6 @@ class PointArtist(_Base):
         self._marker.set_transform(ax.transData)
 
     # API
-    def set_point(self, point):
-        """Store a new homogeneous point; geometry is recomputed at draw time.
-
-        Parameters
-        ----------
-        point : array_like (3,) or object with ``.array``
-            ``[vx, vy, w]``.
-        """
-        self._p = _vec(point, "point")
-        self.stale = True
-
-    set_twist = set_point
-
-    def set_color(self, color):
-        """Draw the pole, its glyph, its edge arrow and its label in ``color``.
-
-        Parameters
-        ----------
-        color : color
-        """
-        self._color = color
-        self._marker.set_color(color)
-        self._arc.set_color(color)
-        self._head.set_color(color)
-        self._arrow.set_color(color)
-        self._inf.set_color(color)
-        self._text.set_color(color)
-        self.stale = True
-
-    def set_glyph_scale(self, glyph_scale):
-        """Rotation-glyph radius in points per unit ``|w|`` (clamped to [4, 16]).
-
-        Parameters
-        ----------
-        glyph_scale : float
-            Points per unit ``|w|``.
-        """
-        self._glyph_scale = float(glyph_scale)
-        self.stale = True
-
     def get_point(self) -> np.ndarray:
         """The stored homogeneous point.
 
@@ -729,14 +520,11 @@ class PointArtist(_Base):
             self._inf.set_position(_pyxy(base - t * (L / 2 + 7 * pts)))
             self._inf.set_horizontalalignment("center")
             self._inf.set_verticalalignment("center")
-            if _board(self.axes) is not None:  # inside the axes, clear of other labels
-                _settle(self._inf, base - t * (L / 2 + 7 * pts), 7 * pts, renderer, self.axes)
             out.append(self._inf)
         if self._text.get_text() and not self._auto_offset:  # as asked, from the arrow's middle
             self._text.set_position(_pyxy(base + self._text_offset * pts))
             self._text.set_horizontalalignment(self._ha)
             self._text.set_verticalalignment(self._va)
-            self._settle_text(base, renderer)
             out.append(self._text)
         elif self._text.get_text():
             # inside the view from the arrow, aligned so that it extends away from the edge
@@ -745,7 +533,6 @@ class PointArtist(_Base):
                 "right" if n[0] > 0.5 else "left" if n[0] < -0.5 else "center")
             self._text.set_verticalalignment(
                 "top" if n[1] > 0.5 else "bottom" if n[1] < -0.5 else "center")
-            self._settle_text(base - n * 10 * pts, renderer)
             out.append(self._text)
         return out
 
@@ -822,29 +609,6 @@ class LineArtist(_Base):
     def _on_axes(self, ax):
         self._line.set_transform(ax.transData)
         self._arrow.set_transform(ax.transData)
-
-    def set_line(self, line):
-        """Store a new homogeneous line; clipping happens at draw time.
-
-        Parameters
-        ----------
-        line : array_like (3,) or object with ``.array``
-            ``[fx, fy, tz]``.
-        """
-        self._l = _vec(line, "line")
-        self.stale = True
-
-    set_wrench = set_line
-
-    def set_scale(self, scale):
-        """Force-arrow length in data units per unit force (None: no arrow).
-
-        Parameters
-        ----------
-        scale : float or None
-        """
-        self._scale = None if scale is None else float(scale)
-        self.stale = True
 
     def set_anchor(self, anchor):
         """Where along the line the arrow sits (projected onto the line); None: view centre.
@@ -937,7 +701,6 @@ class LineArtist(_Base):
                 self._text.set_position(_pyxy((cx - r - 4 * pts, cy) if right else (cx + r + 4 * pts, cy)))
                 self._text.set_horizontalalignment("right" if right else "left")
                 self._text.set_verticalalignment("center")
-                self._settle_text((cx, cy), renderer, r + 4 * pts)
                 out.append(self._text)
             return out
         seg = clip_line(self._l, _view(ax))
@@ -954,14 +717,6 @@ class LineArtist(_Base):
             self._arrow.set_positions(tuple(tail), tuple(tip))
             out.append(self._arrow)
         at = anchor if self._text_at == "anchor" else tip
-        if _board(ax) is not None:  # a label point out of view: the nearest point well inside
-            x0, x1, y0, y1 = _view(ax)
-            if not (x0 <= at[0] <= x1 and y0 <= at[1] <= y1):
-                a, b = seg
-                d = b - a
-                L = math.hypot(*d)
-                k = float(np.clip((np.asarray(at) - a) @ (d / L) / L, 0.15, 0.85)) if L > 0 else 0.5
-                at = a + k * d
         out += self._place_text(ax.transData.transform(at), renderer)
         return out
 
@@ -998,7 +753,6 @@ class LineArtist(_Base):
                 "right" if n[0] > 0.5 else "left" if n[0] < -0.5 else "center")
             self._text.set_verticalalignment(
                 "top" if n[1] > 0.5 else "bottom" if n[1] < -0.5 else "center")
-            self._settle_text(base - n * (L / 2), renderer)
             out.append(self._text)
         return out
 
@@ -1103,8 +857,6 @@ class ConicArtist(_Base):
         self._curve.set_linestyle(_style("inertia" if dashed else self._role)["linestyle"])
         return g
 
-    set_inertia = set_conic
-
     def geometry(self) -> dict:
         """How the stored conic is drawn: :func:`conic_geometry` of it, kept until the next ``set_conic``.
 
@@ -1181,76 +933,6 @@ class ConicArtist(_Base):
 
 
 # --------------------------------------------------------------------------- legend
-def _proxy(a, label):
-    """A Line2D standing for one of this module's artists in a legend."""
-    if isinstance(a, PointArtist):
-        m = a._marker
-        return Line2D([], [], linestyle="none", marker=m.get_marker(), markersize=m.get_markersize(),
-                      color=a._color, markeredgecolor="white", label=label)
-    line = a._line if isinstance(a, LineArtist) else a._curve
-    return Line2D([], [], color=a._color, linewidth=line.get_linewidth(),
-                  linestyle=line.get_linestyle(), label=label)
-
-
-def legend_handles(ax=None) -> list:
-    """Legend entries of the visible, labelled artists of ``ax`` (this module's by proxy).
-
-    An artist of this module is listed under its label (``set_label``) or, without
-    one, its text; other artists (lines, patches, collections) under their label.
-    Labels starting with ``_`` and empty ones are left out; a label is listed once.
-
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes, optional
-        Default: the current axes.
-
-    Returns
-    -------
-    list of matplotlib.artist.Artist
-        Handles for ``ax.legend(handles=...)``.
-    """
-    return [(_proxy(a, label) if isinstance(a, _Base) else a) for a, label in _legend_entries(ax)]
-
-
-def _legend_entries(ax=None, first: bool = False) -> list:
-    """``(artist, label)`` of the visible, labelled artists (the first one only with ``first``)."""
-    from matplotlib.collections import Collection
-    from matplotlib.patches import Patch
-
-    ax = get_ax(ax)
-    out, seen = [], set()
-    for a in ax.get_children():
-        if not a.get_visible():
-            continue
-        label = a.get_label() or ""
-        if isinstance(a, _Base):
-            label = label or a._text.get_text()
-        elif not isinstance(a, (Line2D, Patch, Collection)) or a is ax.patch:
-            continue
-        if not label or label.startswith("_") or label in seen:
-            continue
-        out.append((a, label))
-        if first:
-            break
-        seen.add(label)
-    return out
-
-
-def has_legend_entries(ax=None) -> bool:
-    """True when :func:`legend_handles` would list something (a key has entries).
-
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes, optional
-        Default: the current axes.
-
-    Returns
-    -------
-    bool
-    """
-    return bool(_legend_entries(ax, first=True))
-
-
 # --------------------------------------------------------------------------- plot functions
 def plot_point(point, ax=None, **kw) -> PointArtist:
     """Add a :class:`PointArtist` to ``ax`` (default: current axes) and return it.
@@ -1307,23 +989,3 @@ def plot_conic(conic, ax=None, **kw) -> ConicArtist:
     ConicArtist
     """
     return get_ax(ax).add_artist(ConicArtist(conic, **kw))
-
-
-def plot_inertia(inertia, ax=None, **kw) -> ConicArtist:
-    """Draw an inertia as its radius-of-gyration circle (dashed) with the centre of mass.
-
-    Parameters
-    ----------
-    inertia : array_like or planargeo object
-        What to draw.
-    ax : matplotlib.axes.Axes, optional
-        Default: the current axes.
-    **kw
-        Keyword arguments of :class:`ConicArtist`.
-
-    Returns
-    -------
-    ConicArtist
-    """
-    kw.setdefault("role", "inertia")
-    return plot_conic(inertia, ax, **kw)

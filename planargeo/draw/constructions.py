@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo.geometry.conics import (line_conic_intersections, polar, polar_construction_exterior,
+from planargeo.geometry.conics import (line_conic_intersections, polar_construction_exterior,
                       polar_construction_interior)
 from planargeo.screws.inertia import centre_of_mass, percussion_axis
 from planargeo.geometry.projective import from_direction, from_xy, join, meet, to_xy
@@ -27,10 +27,10 @@ from planargeo.errors import InputError
 from planargeo.mechanics.subspaces import Decomposition
 
 __all__ = [
-    "line_conic_points", "tangent_points", "label",
+    "line_conic_points", "label",
     "draw_twist_sum", "draw_wrench_sum", "draw_velocity_step", "draw_acceleration_step",
     "draw_newton_euler", "draw_polar_exterior", "draw_polar_interior",
-    "draw_tangent", "draw_percussion", "draw_power", "draw_segment", "draw_dimension",
+    "draw_percussion", "draw_power", "draw_segment", "draw_dimension",
     "draw_decomposition", "draw_twist_split", "draw_wrench_split", "draw_projective_step",
 ]
 
@@ -218,30 +218,6 @@ def line_conic_points(C, L) -> list[np.ndarray]:
     """
     X, real = line_conic_intersections(_mat(C, "C"), _vec(L, "L"))
     return [X[0], X[1]] if bool(real) else []
-
-
-def tangent_points(C, p) -> list[np.ndarray]:
-    """Points where the tangents from ``p`` touch ``C``: the conic meets the polar ``C p`` (5.36).
-
-    Parameters
-    ----------
-    C : array_like (3, 3)
-        A conic.
-    p : array_like (3,)
-        A point (exterior for real contacts).
-
-    Returns
-    -------
-    list of ndarray (3,)
-        The two contact points, or an empty list for an interior point.
-
-    Raises
-    ------
-    ShapeError, NonFiniteError
-        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
-    """
-    C = _mat(C, "C")
-    return line_conic_points(C, polar(C, _vec(p, "p")))
 
 
 # --------------------------------------------------------------------------- twist / wrench sums
@@ -575,36 +551,6 @@ def draw_newton_euler(I, a, v, ax=None, *, scale=None, names=("$v$", "$a$", "$Ia
 
 
 # --------------------------------------------------------------------------- pole / polar
-def draw_tangent(C, q, ax=None, *, text=None):
-    """The tangent ``C q`` at a point ``q`` of the conic (5.38–5.39).
-
-    Parameters
-    ----------
-    C : array_like (3, 3)
-        A conic.
-    q : array_like (3,)
-        A point of the conic.
-    ax : matplotlib.axes.Axes, optional
-        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
-    text : str, optional
-        Label of the point.
-
-    Returns
-    -------
-    dict
-        The artists ``{"q", "tangent"}``.
-
-    Raises
-    ------
-    ShapeError, NonFiniteError
-        An argument that is not a finite homogeneous vector (or 3×3 matrix), named.
-    """
-    ax = get_ax(ax)
-    C, q = _mat(C, "C"), _vec(q, "q")
-    return {"q": plot_point(q, ax, role="twist", glyph=False, text=text),
-            "tangent": plot_line(polar(C, q), ax, role="construct", scale=None)}
-
-
 def draw_polar_exterior(C, p, ax=None, *, names=("$P$", "$L = CP$"), L_anchor=None):
     """Polar of an exterior point (thesis 5.36, Fig. 5.2): tangents from ``p``; ``L`` joins their contacts.
 
