@@ -183,13 +183,13 @@ def _marker_transform(m, size_px):
 _TEXT_LAYOUT: dict = {}
 
 
-def _draw_text(t, renderer, fallback=None):
+def _draw_text(t, renderer):
     """Draw a label: with Agg, the glyphs at the baseline its layout gives (cached), else ``t.draw``.
 
     What is drawn is what :meth:`matplotlib.text.Text.draw` draws for a
     one-line, unrotated label without a box; the layout (alignment offsets,
     mathtext or not) is computed once per text, font, alignment and dpi.
-    ``fallback(renderer)`` draws any other text (default: ``t.draw``).
+    Any other text is drawn by ``t.draw``.
     """
     s = t.get_text()
     if not s:
@@ -197,7 +197,7 @@ def _draw_text(t, renderer, fallback=None):
     if (not isinstance(renderer, RendererAgg) or t.get_rotation() != 0.0 or "\n" in s
             or t.get_wrap() or t.get_usetex() or t.get_bbox_patch() is not None
             or t.get_path_effects()):
-        (fallback or t.draw)(renderer)
+        t.draw(renderer)
         return
     prop = t.get_fontproperties()
     key = (s, hash(prop), t.get_horizontalalignment(), t.get_verticalalignment(), renderer.dpi)
@@ -207,7 +207,7 @@ def _draw_text(t, renderer, fallback=None):
             _, info, _ = t._get_layout(renderer)
             (_line, _wh, dx, dy), = info
         except Exception:  # noqa: BLE001 - any surprise: Matplotlib draws it
-            (fallback or t.draw)(renderer)
+            t.draw(renderer)
             return
         lay = _TEXT_LAYOUT[key] = (dx, dy, bool(cbook.is_math_text(s)))
     x, y = t.get_transform().transform(t.get_position())
@@ -857,29 +857,11 @@ class ConicArtist(_Base):
         self._curve.set_linestyle(_style("inertia" if dashed else self._role)["linestyle"])
         return g
 
-    def geometry(self) -> dict:
-        """How the stored conic is drawn: :func:`conic_geometry` of it, kept until the next ``set_conic``.
-
-        Returns
-        -------
-        dict
-        """
-        return self._geometry()
-
     def _on_axes(self, ax):
         self._curve.set_transform(self._affine + ax.transData)
         self._center.set_transform(ax.transData)
         for art in self._lines:
             art.set_transform(ax.transData)
-
-    def get_conic(self) -> np.ndarray:
-        """The stored conic matrix.
-
-        Returns
-        -------
-        numpy.ndarray
-        """
-        return self._C.copy()
 
     @property
     def kind(self) -> str:

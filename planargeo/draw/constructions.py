@@ -5,7 +5,7 @@ planargeo objects), computes what the construction needs with the math modules
 (:mod:`planargeo.geometry.projective`, conic polarity ``C p`` / ``C⁻¹ l``, twist and
 wrench sums) and draws it with the artists of :mod:`planargeo.draw.artists`.
 They take ``ax=None`` (current axes) and return a dict of the artists made,
-keyed by name, so a caller (a widget) can update them.
+keyed by name, so a caller (a gallery figure) can adjust them.
 
 Thesis figures: twist addition (4.1, 4.3), wrench addition (4.4–4.6), pole and
 polar constructions (5.2, 5.3), tangents, the axis of percussion (5.6), power
