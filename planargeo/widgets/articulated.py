@@ -154,13 +154,8 @@ class ArticulatedExplorer(Explorer):
 
     # ------------------------------------------------------------------ controls
     def make_controls(self):
-        """The explorer's controls (sliders, checkboxes).
-
-        Returns
-        -------
-        dict
-            ``{name: widget}``.
-        """
+        # The explorer's controls (sliders, checkboxes).
+        # Returns ``{name: widget}``.
         return {
             "bodies n": Step(1, NMAX, 1, 4, "bodies n", integer=True).make("bodies n"),
             "λ = L/ρ": Step(0.5, 8.0, 0.05, 3.0, "λ = L/ρ").make("lam"),
@@ -177,25 +172,12 @@ class ArticulatedExplorer(Explorer):
         }
 
     def adjust(self, values, changed):
-        """Controls that follow: the outboard bodies stay on the chain, a new chain swings from ``t = 0``.
-
-        ``outboard bodies`` never exceeds the ``n − 1`` bodies outboard of body 1 (its slider
-        spans 0 to ``n − 1`` once the state is shown); at its largest ("all of them") it stays at the largest
-        when ``n`` changes.  A change of the chain or its swing restarts the time at 0 unless the
-        time is set with it.  A focus on a body that is gone falls back to "all" (the base).
-
-        Parameters
-        ----------
-        values : dict
-            The control values about to be shown.
-        changed : set of str
-            The controls that changed.
-
-        Returns
-        -------
-        dict
-            Controls that follow: ``outboard bodies`` and ``time (s)``.
-        """
+        # Controls that follow: the outboard bodies stay on the chain, a new chain swings from ``t = 0``.
+        # ``outboard bodies`` never exceeds the ``n − 1`` bodies outboard of body 1 (its slider
+        # spans 0 to ``n − 1`` once the state is shown); at its largest ("all of them") it stays at the largest
+        # when ``n`` changes.  A change of the chain or its swing restarts the time at 0 unless the
+        # time is set with it.  A focus on a body that is gone falls back to "all" (the base).
+        # Returns Controls that follow: ``outboard bodies`` and ``time (s)``.
         out = {}
         n = int(values["bodies n"])
         k = int(values["outboard bodies"])
@@ -215,17 +197,8 @@ class ArticulatedExplorer(Explorer):
         return out
 
     def disabled(self, values):
-        """Controls that would change nothing in the state ``values`` describe, with the reason.
-
-        Parameters
-        ----------
-        values : dict
-
-        Returns
-        -------
-        dict
-            ``{control: reason}``.
-        """
+        # Controls that would change nothing in the state ``values`` describe, with the reason.
+        # Returns ``{control: reason}``.
         out = {}
         n = int(values["bodies n"])
         if n == 1:
@@ -234,12 +207,7 @@ class ArticulatedExplorer(Explorer):
         return out
 
     def explain(self):
-        """Every symbol and readout name on screen: one-line meaning and thesis equation.
-
-        Returns
-        -------
-        dict
-        """
+        # Every symbol and readout name on screen: one-line meaning and thesis equation.
         focus = str(self.values.get("focus", "all"))
         kk = _sub(int(focus.split()[1]) if focus.startswith("body ") else 1)
         return {
@@ -301,12 +269,7 @@ class ArticulatedExplorer(Explorer):
 
     # ------------------------------------------------------------------ handles and Play
     def handles(self):
-        """The draggable handles: the pole ``a``, the chain's tip (bend ``φ``), the first body's end (``θ₁``).
-
-        Returns
-        -------
-        list of Handle
-        """
+        # The draggable handles: the pole ``a``, the chain's tip (bend ``φ``), the first body's end (``θ₁``).
         def pole_where():
             v = self.shown_values or self.values
             return (float(v["pole x"]), float(v["pole y"]))
@@ -336,15 +299,10 @@ class ArticulatedExplorer(Explorer):
                 Handle("first body", base_where, base_drag)]
 
     def focus_options(self):
-        """The bodies to focus on: the focused body's conics, axes and chart are shown, the rest fade.
-
-        Returns
-        -------
-        list of str
-            ``"body 1"`` ... ``"body n"`` (the base adds ``"all"``: body 1 labelled, nothing faded);
-            before the first state is shown, every body of the longest chain (so that a focus given
-            to the constructor with ``n`` is taken).
-        """
+        # The bodies to focus on: the focused body's conics, axes and chart are shown, the rest fade.
+        # Returns ``"body 1"`` ... ``"body n"`` (the base adds ``"all"``: body 1 labelled, nothing faded);
+        # before the first state is shown, every body of the longest chain (so that a focus given
+        # to the constructor with ``n`` is taken).
         w = getattr(self, "controls", {}).get("bodies n")
         n = NMAX if w is None or getattr(self, "state", None) is None else int(w.value)
         return [f"body {i}" for i in range(1, n + 1)]
@@ -388,22 +346,9 @@ class ArticulatedExplorer(Explorer):
         return None if st is None else st["joints"]
 
     def play_step(self, values, dt):
-        """The time ``dt`` seconds on (Play); the swing itself is read in :meth:`compute`.
-
-        The state at a time depends on that time alone (module docstring), so any ``dt`` is exact.
-
-        Parameters
-        ----------
-        values : dict
-            The shown control values.
-        dt : float
-            Seconds of the step (> 0).
-
-        Returns
-        -------
-        dict or None
-            ``{"time (s)": t + dt}`` (at most the end of the range); None at its end (Play stops).
-        """
+        # The time ``dt`` seconds on (Play); the swing itself is read in :meth:`compute`.
+        # The state at a time depends on that time alone (module docstring), so any ``dt`` is exact.
+        # Returns ``{"time (s)": t + dt}`` (at most the end of the range); None at its end (Play stops).
         t = float(values[TIME])
         if t >= T_MAX:
             return None

@@ -109,13 +109,8 @@ class CarExplorer(Explorer):
         super().__init__(**kw)
 
     def make_controls(self):
-        """The controls: speed, turn radius, drive force, centre of gravity, gyration, mass, heading.
-
-        Returns
-        -------
-        dict
-            ``{name: widget}``.
-        """
+        # The controls: speed, turn radius, drive force, centre of gravity, gyration, mass, heading.
+        # Returns ``{name: widget}``.
         return {
             SPEED: Step(0.0, 30.0, 0.5, 4.0, SPEED).make("speed"),
             RADIUS: Step(2.0, 60.0, 0.5, 8.0, RADIUS).make("radius"),
@@ -143,27 +138,14 @@ class CarExplorer(Explorer):
                 "speed": values[SPEED], "heading": values[HEADING]}
 
     def play_step(self, values: dict, dt: float):
-        """One Play step: the car drives ``dt`` seconds further round the turn (exact for any ``dt``).
-
-        With the steering fixed, ``ω̇`` (6.131) is constant, so the step is exact:
-        ``ω ← ω + ω̇ dt``, heading ``θ ← θ + ω dt + ω̇ dt²/2``.  Two events end
-        Play, each at its exact time within the step: the car stops (a braking
-        drive brings ``ω`` to 0), or the acceleration of the centre of gravity,
-        ``r_G √(ω⁴ + ω̇²)``, reaches what the tyres hold, ``μ·g``: there the car
-        slides out (the readout and the message say so).
-
-        Parameters
-        ----------
-        values : dict
-            The control values shown.
-        dt : float
-            Seconds (any value in ``(0, 1/play_fps]``).
-
-        Returns
-        -------
-        dict or None
-            New speed and heading, or None once the car has stopped or slides out.
-        """
+        # One Play step: the car drives ``dt`` seconds further round the turn (exact for any ``dt``).
+        # With the steering fixed, ``ω̇`` (6.131) is constant, so the step is exact:
+        # ``ω ← ω + ω̇ dt``, heading ``θ ← θ + ω dt + ω̇ dt²/2``.  Two events end
+        # Play, each at its exact time within the step: the car stops (a braking
+        # drive brings ``ω`` to 0), or the acceleration of the centre of gravity,
+        # ``r_G √(ω⁴ + ω̇²)``, reaches what the tyres hold, ``μ·g``: there the car
+        # slides out (the readout and the message say so).
+        # Returns New speed and heading, or None once the car has stopped or slides out.
         res = self._scene(m=float(values["mass (kg)"]), rho=float(values["radius of gyration (m)"]),
                           d=float(values[RADIUS]), eps=float(values[EPS]),
                           omega=float(values[SPEED]) / float(values[RADIUS]), F_A=float(values[DRIVE]),
@@ -203,19 +185,13 @@ class CarExplorer(Explorer):
         return tuple(float(c) for c in R @ np.asarray(p, float) + t)
 
     def handles(self) -> list:
-        """Draggable handles: the centre of gravity, the steering, the ICR and the drive arrow's tip.
-
-        * ``centre of gravity``: along the car (sets ε; it stays on the centre line);
-        * ``steering``: the front tyre's leading edge; the wheel points at the
-          mouse, the ICR moves to where its axle meets the rear axle line
-          (sets the turn radius ``d = L / tan δ``);
-        * ``ICR``: along the rear axle line (sets ``d``);
-        * ``drive``: the tip of the ``f_A`` arrow, along the front wheel (sets ``F_A``).
-
-        Returns
-        -------
-        list of Handle
-        """
+        # Draggable handles: the centre of gravity, the steering, the ICR and the drive arrow's tip.
+        # * ``centre of gravity``: along the car (sets ε; it stays on the centre line);
+        # * ``steering``: the front tyre's leading edge; the wheel points at the
+        #   mouse, the ICR moves to where its axle meets the rear axle line
+        #   (sets the turn radius ``d = L / tan δ``);
+        # * ``ICR``: along the rear axle line (sets ``d``);
+        # * ``drive``: the tip of the ``f_A`` arrow, along the front wheel (sets ``F_A``).
         return [Handle("centre of gravity", self._cg_where, self._cg_drag),
                 Handle("steering", self._steer_where, self._steer_drag),
                 Handle("ICR", self._icr_where, self._icr_drag),
@@ -269,17 +245,7 @@ class CarExplorer(Explorer):
         return {DRIVE: float((p - ex["front_contact"]) @ ex["front_rolling"]) / FORCE_SCALE}
 
     def figure_message(self, exc: Exception) -> str:
-        """The refusal said on the picture, wrapped to stay inside it.
-
-        Parameters
-        ----------
-        exc : Exception
-            Why the update was refused.
-
-        Returns
-        -------
-        str
-        """
+        # The refusal said on the picture, wrapped to stay inside it.
         return textwrap.fill(super().figure_message(exc), 40)
 
     def view_of(self, st):
@@ -345,12 +311,7 @@ class CarExplorer(Explorer):
         return np.array(pts, dtype=float)
 
     def explain(self):
-        """Every symbol and readout name on screen, with its thesis equation.
-
-        Returns
-        -------
-        dict
-        """
+        # Every symbol and readout name on screen, with its thesis equation.
         return {
             "speed V": "speed of the rear tyre, V = ω d (6.115)",
             "heading θ": "how far the car has turned about the ICR",

@@ -228,13 +228,8 @@ class ChainExplorer(Explorer):
              "|base force| (N)": "N"}
 
     def make_controls(self):
-        """The controls: chain, state, load, base, per-joint lists, overlays and the time.
-
-        Returns
-        -------
-        dict
-            ``{name: widget}``.
-        """
+        # The controls: chain, state, load, base, per-joint lists, overlays and the time.
+        # Returns ``{name: widget}``.
         c = {
             "links": Step(1, NMAX, 1, 4, "links", integer=True).make("links"),
             "joints": W.Dropdown(options=JOINT_SETS, value="revolute", description="joints"),
@@ -347,26 +342,13 @@ class ChainExplorer(Explorer):
         return model, q, qd, tau
 
     def adjust(self, values, changed):
-        """Controls that follow a change: the time, and the per-joint list against the sliders.
-
-        A new initial state starts at ``t = 0`` (unless the time is set with
-        it).  While joint values are typed (or dragged) per joint, the
-        ``angle`` slider still moves joint 1 (the list's first entry follows it),
-        and ``bend`` / ``slide`` return every joint to the common pattern (the
-        list is emptied), so that no slider is ever dead.
-
-        Parameters
-        ----------
-        values : dict
-            The control values asked for.
-        changed : set of str
-            The controls that changed.
-
-        Returns
-        -------
-        dict
-            Values of the controls that follow.
-        """
+        # Controls that follow a change: the time, and the per-joint list against the sliders.
+        # A new initial state starts at ``t = 0`` (unless the time is set with
+        # it).  While joint values are typed (or dragged) per joint, the
+        # ``angle`` slider still moves joint 1 (the list's first entry follows it),
+        # and ``bend`` / ``slide`` return every joint to the common pattern (the
+        # list is emptied), so that no slider is ever dead.
+        # Returns Values of the controls that follow.
         out = {}
         if changed & set(INITIAL) and TIME not in changed and values[TIME] != 0:
             out[TIME] = 0.0
@@ -459,50 +441,24 @@ class ChainExplorer(Explorer):
         return st["split"]
 
     def figure_message(self, exc: Exception) -> str:
-        """The refusal drawn on the figure, wrapped to stay inside the axes.
-
-        Parameters
-        ----------
-        exc : Exception
-            Why the update was refused.
-
-        Returns
-        -------
-        str
-        """
+        # The refusal drawn on the figure, wrapped to stay inside the axes.
         import textwrap
 
         return textwrap.fill(super().figure_message(exc), 40)
 
     # -- focus, handles, play ------------------------------------------------------
     def focus_options(self) -> list[str]:
-        """Links and joints the focus can pick: ``link1``..``linkN``, ``joint1``..``jointN`` of the chain.
-
-        Before the first state is shown (while the constructor checks its
-        values) every link of the longest chain is listed, so that a focus
-        given with the number of links is taken.
-
-        Returns
-        -------
-        list of str
-        """
+        # Links and joints the focus can pick: ``link1``..``linkN``, ``joint1``..``jointN`` of the chain.
+        # Before the first state is shown (while the constructor checks its
+        # values) every link of the longest chain is listed, so that a focus
+        # given with the number of links is taken.
         w = getattr(self, "controls", {}).get("links")
         n = NMAX if w is None or getattr(self, "state", None) is None else int(w.value)
         return [f"link{i}" for i in range(1, n + 1)] + [f"joint{i}" for i in range(1, n + 1)]
 
     def disabled(self, values: dict) -> dict:
-        """Controls that would change nothing in the state ``values`` describe, each with the reason.
-
-        Parameters
-        ----------
-        values : dict
-            Control values.
-
-        Returns
-        -------
-        dict
-            ``{control: reason}``.
-        """
+        # Controls that would change nothing in the state ``values`` describe, each with the reason.
+        # Returns ``{control: reason}``.
         n, kinds = int(values["links"]), values["joints"]
         kind = ["revolute" if kinds == "revolute" or (kinds == "alternating" and i % 2 == 0) else "prismatic"
                 for i in range(n)]
@@ -533,16 +489,10 @@ class ChainExplorer(Explorer):
         return out
 
     def explain(self) -> dict:
-        """Every symbol and readout name on screen with its one-line meaning and thesis equation.
-
-        Each indexed symbol (``vᵢ``) lists the ones the figure can show for the chain shown
-        (``v₁ … vₙ``).
-
-        Returns
-        -------
-        dict
-            ``{symbol or readout name: meaning}``.
-        """
+        # Every symbol and readout name on screen with its one-line meaning and thesis equation.
+        # Each indexed symbol (``vᵢ``) lists the ones the figure can show for the chain shown
+        # (``v₁ … vₙ``).
+        # Returns ``{symbol or readout name: meaning}``.
         st = getattr(self, "state", None)
         n = st["model"].N if st is not None else int(self.values["links"])
 
@@ -604,17 +554,11 @@ class ChainExplorer(Explorer):
         return w.pose[:, :2] + np.column_stack([np.cos(w.pose[:, 2]), np.sin(w.pose[:, 2])])
 
     def handles(self) -> list:
-        """Draggable handles: the base, and the end of every link.
-
-        Dragging ``link i end`` sets joint ``i`` (the angle of the link's
-        direction relative to its parent, or the slide of a prismatic joint
-        along the parent's axis) and keeps every other joint; it writes the
-        per-joint list (for link 1 with no list, the ``angle`` slider).
-
-        Returns
-        -------
-        list of Handle
-        """
+        # Draggable handles: the base, and the end of every link.
+        # Dragging ``link i end`` sets joint ``i`` (the angle of the link's
+        # direction relative to its parent, or the slide of a prismatic joint
+        # along the parent's axis) and keeps every other joint; it writes the
+        # per-joint list (for link 1 with no list, the ``angle`` slider).
         out = [Handle("base", lambda: (self.values["base x (m)"], self.values["base y (m)"]),
                       lambda x, y: {"base x (m)": float(x), "base y (m)": float(y)})]
         for i in range(NMAX):
@@ -662,24 +606,11 @@ class ChainExplorer(Explorer):
         return drag
 
     def play_step(self, values: dict, dt: float):
-        """One Play step: the time ``dt`` seconds on (the motion itself is read in :meth:`compute`).
-
-        The state at a time depends on that time alone (module docstring), so
-        any ``dt`` is exact: Play at any speed, the slider and a fresh explorer
-        show the same state at the same ``t``.
-
-        Parameters
-        ----------
-        values : dict
-            The control values shown.
-        dt : float
-            Seconds of motion of the step (> 0).
-
-        Returns
-        -------
-        dict or None
-            ``{"time (s)": t + dt}`` (at most the end of the range), or None at its end.
-        """
+        # One Play step: the time ``dt`` seconds on (the motion itself is read in :meth:`compute`).
+        # The state at a time depends on that time alone (module docstring), so
+        # any ``dt`` is exact: Play at any speed, the slider and a fresh explorer
+        # show the same state at the same ``t``.
+        # Returns ``{"time (s)": t + dt}`` (at most the end of the range), or None at its end.
         t = float(values[TIME])
         end = float(self.controls[TIME].max)
         if t >= end:

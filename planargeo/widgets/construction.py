@@ -325,12 +325,7 @@ class ConstructionExplorer(Explorer):
 
     # ------------------------------------------------------------------ explorer
     def make_controls(self):
-        """The construction menu, the step slider, how earlier steps look, one slider per parameter.
-
-        Returns
-        -------
-        dict
-        """
+        # The construction menu, the step slider, how earlier steps look, one slider per parameter.
         n = len(construct(self._first).steps)
         c = {"construction": W.Dropdown(options=CHOICES, value=self._first, description="construction",
                                         layout=W.Layout(width="310px")),
@@ -344,17 +339,7 @@ class ConstructionExplorer(Explorer):
         return c
 
     def adjust(self, values, changed):
-        """A new construction starts from its own defaults (those not set with it), showing every step.
-
-        Parameters
-        ----------
-        values : dict
-        changed : set
-
-        Returns
-        -------
-        dict
-        """
+        # A new construction starts from its own defaults (those not set with it), showing every step.
         kind = values["construction"]
         if self._shown_kind is None or kind == self._shown_kind:
             return {}
@@ -365,16 +350,7 @@ class ConstructionExplorer(Explorer):
         return out
 
     def disabled(self, values):
-        """The sliders of parameters the chosen construction does not use, with the reason.
-
-        Parameters
-        ----------
-        values : dict
-
-        Returns
-        -------
-        dict
-        """
+        # The sliders of parameters the chosen construction does not use, with the reason.
         kind = values["construction"]
         used = set(parameters(kind))
         title = CONSTRUCTIONS[kind][0].split(" (")[0].lower()
@@ -384,12 +360,7 @@ class ConstructionExplorer(Explorer):
         return out
 
     def explain(self):
-        """The meaning of every symbol the chosen construction shows, with its thesis equation.
-
-        Returns
-        -------
-        dict
-        """
+        # The meaning of every symbol the chosen construction shows, with its thesis equation.
         kind = self.values["construction"] if self.state is None else self.construction
         return {**EXPLAIN[kind], **_EXPLAIN_COMMON}
 
@@ -444,12 +415,7 @@ class ConstructionExplorer(Explorer):
 
     # ------------------------------------------------------------------ handles
     def handles(self) -> list[Handle]:
-        """Drag handles: the construction's input points, and force directions by their arrow tip.
-
-        Returns
-        -------
-        list of Handle
-        """
+        # Drag handles: the construction's input points, and force directions by their arrow tip.
         out = []
         for name, px, py in _POINTS[self.construction]:
             out.append(Handle(name, self._where(px, py), self._move(px, py)))

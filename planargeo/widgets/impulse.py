@@ -110,12 +110,7 @@ class ImpulseExplorer(Explorer):
     scale = 1.0
 
     def make_controls(self):
-        """The controls: body, support, mass, the blow (point, angle, impulse) and the time after it.
-
-        Returns
-        -------
-        dict
-        """
+        # The controls: body, support, mass, the blow (point, angle, impulse) and the time after it.
         return {
             "body": W.Dropdown(options=list(BODIES), value="bat", description="body",
                                tooltip="a bat held at its grip, or a door (top view) held by its hinge"),
@@ -132,12 +127,7 @@ class ImpulseExplorer(Explorer):
 
     # ------------------------------------------------------------------ handles and Play
     def handles(self):
-        """Draggable handles: the blow's point and its arrow tip.
-
-        Returns
-        -------
-        list of Handle
-        """
+        # Draggable handles: the blow's point and its arrow tip.
         return [Handle("blow point", lambda: (self.values["strike x"], self.values["strike y"]),
                        lambda x, y: {"strike x": x, "strike y": y}),
                 Handle("blow tip", self._tip_where, self._drag_tip)]
@@ -156,19 +146,7 @@ class ImpulseExplorer(Explorer):
         return {"strike angle": math.degrees(math.atan2(d[1], d[0])), "J": 2 * n / ARROW}
 
     def play_step(self, values, dt):
-        """The next frame of the motion after the blow: ``t + dt`` (None at the end).
-
-        Parameters
-        ----------
-        values : dict
-            The shown control values.
-        dt : float
-            Time step (s).
-
-        Returns
-        -------
-        dict or None
-        """
+        # The next frame of the motion after the blow: ``t + dt`` (None at the end).
         t = float(values["t"]) + float(dt)
         return None if t > T_MAX + 1e-12 else {"t": min(t, T_MAX)}
 
@@ -248,12 +226,7 @@ class ImpulseExplorer(Explorer):
         return out
 
     def explain(self):
-        """Every symbol and readout name on screen, with its thesis equation.
-
-        Returns
-        -------
-        dict
-        """
+        # Every symbol and readout name on screen, with its thesis equation.
         return {
             "ω after the blow": "angular velocity of the body just after the blow (5.64)",
             "velocity of c": "velocity of the centre of mass just after the blow (5.64)",

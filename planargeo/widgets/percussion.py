@@ -121,13 +121,8 @@ class PercussionExplorer(Explorer):
         super().__init__(**kw)
 
     def make_controls(self):
-        """The controls (see the module docstring).
-
-        Returns
-        -------
-        dict
-            ``{name: widget}``.
-        """
+        # The controls (see the module docstring).
+        # Returns ``{name: widget}``.
         return {
             "pole x": Step(-1.5, 2.0, 0.01, 0.0, "pole of a: x (m)").make("pole x"),
             "pole y": Step(-1.2, 1.2, 0.01, 0.0, "pole of a: y (m)").make("pole y"),
@@ -143,16 +138,7 @@ class PercussionExplorer(Explorer):
         }
 
     def disabled(self, values):
-        """Controls that change nothing in the drive or shape chosen, with the reason.
-
-        Parameters
-        ----------
-        values : dict
-
-        Returns
-        -------
-        dict
-        """
+        # Controls that change nothing in the drive or shape chosen, with the reason.
         out = {}
         if values["drive"] == "impact":
             reason = "the impact sets the pole here (a = I⁻¹f): choose drive = acceleration pole to move it"
@@ -164,12 +150,7 @@ class PercussionExplorer(Explorer):
         return out
 
     def explain(self):
-        """Every symbol on screen, with its thesis equation.
-
-        Returns
-        -------
-        dict
-        """
+        # Every symbol on screen, with its thesis equation.
         return {
             "∞": "a point at infinity (a direction), drawn at the edge of the view as an arrow its way (5.5)",
             "a": "the acceleration pole: the point of the body with no acceleration (5.64)",
@@ -238,12 +219,7 @@ class PercussionExplorer(Explorer):
         return self._pole_for_axis(np.array([d[0], d[1], -(foot[1] * d[0] - foot[0] * d[1])]))
 
     def handles(self):
-        """``a`` (the pole), ``axis (point)``, ``axis (direction)`` (pole drive) or ``impact``.
-
-        Returns
-        -------
-        list of Handle
-        """
+        # ``a`` (the pole), ``axis (point)``, ``axis (direction)`` (pole drive) or ``impact``.
         pole_drive = lambda: self.state is not None and self.values["drive"] == "acceleration pole"
         axis = lambda k: (tuple(self._axis_points()[k]) if pole_drive() and self._axis_points()
                           is not None else None)

@@ -166,13 +166,8 @@ class ProjectiveExplorer(Explorer):
              "pole(M)·polar(P)": "m"}
 
     def make_controls(self):
-        """The controls (see the module docstring).
-
-        Returns
-        -------
-        dict
-            ``{name: widget}``.
-        """
+        # The controls (see the module docstring).
+        # Returns ``{name: widget}``.
         return {
             "P x": Step(-4, 4, 0.05, 2.0, "P x (m)").make("P x"),
             "P y": Step(-4, 4, 0.05, 1.5, "P y (m)").make("P y"),
@@ -191,13 +186,8 @@ class ProjectiveExplorer(Explorer):
         }
 
     def explain(self):
-        """What every symbol on screen means, with its thesis equation.
-
-        Returns
-        -------
-        dict
-            ``{symbol or readout name: one-line meaning}``.
-        """
+        # What every symbol on screen means, with its thesis equation.
+        # Returns ``{symbol or readout name: one-line meaning}``.
         return {
             "∞": "a point at infinity (a direction), drawn at the edge of the view as an arrow its way (5.5)",
             "C": "the conic: the symmetric 3×3 matrix C of a curve QᵀCQ = 0 (5.35, 5.38)",
@@ -220,18 +210,8 @@ class ProjectiveExplorer(Explorer):
         }
 
     def disabled(self, values):
-        """Controls that change nothing in the state ``values`` (with the reason).
-
-        Parameters
-        ----------
-        values : dict
-            Control values.
-
-        Returns
-        -------
-        dict
-            ``{control: reason}``.
-        """
+        # Controls that change nothing in the state ``values`` (with the reason).
+        # Returns ``{control: reason}``.
         out = {}
         kind = values["conic"]
         if kind in ("circle", "parabola", "inertia (imaginary circle)"):
@@ -309,12 +289,7 @@ class ProjectiveExplorer(Explorer):
         return {"line angle (deg)": ang, "line offset": off}
 
     def handles(self):
-        """``P``, ``M (point)``, ``M (direction)``, ``pole of M``.
-
-        Returns
-        -------
-        list of Handle
-        """
+        # ``P``, ``M (point)``, ``M (direction)``, ``pole of M``.
         def P_where():
             v = self.values
             return None if v["P at infinity"] else (v["P x"], v["P y"])

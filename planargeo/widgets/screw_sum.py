@@ -137,12 +137,7 @@ class ScrewSumExplorer(Explorer):
                 "sum": SUM_UNITS.get(getattr(self, "_mode", None) or self._first_mode)}
 
     def make_controls(self):
-        """The mode ``add`` and, per screw, its kind (of that mode), point, size and direction.
-
-        Returns
-        -------
-        dict
-        """
+        # The mode ``add`` and, per screw, its kind (of that mode), point, size and direction.
         kinds = W.ToggleButtons(options=("twists", "wrenches"), value=self._first_mode,
                                 description="add")
         c = {"add": kinds}
@@ -189,36 +184,15 @@ class ScrewSumExplorer(Explorer):
         return super().set(**values)
 
     def adjust(self, values, changed):
-        """Kinds follow the mode: in twists mode a screw is a rotation or a translation, in wrenches a force or a couple.
-
-        Parameters
-        ----------
-        values : dict
-            The control values.
-        changed : set
-            The controls that changed.
-
-        Returns
-        -------
-        dict
-            Kinds that follow a change of ``add``.
-        """
+        # Kinds follow the mode: in twists mode a screw is a rotation or a translation, in wrenches a force or a couple.
+        # Returns Kinds that follow a change of ``add``.
         mode = values["add"]
         self._offer_kinds(mode)
         return {f"kind{k}": _OTHER[values[f"kind{k}"]] for k in (1, 2)
                 if values[f"kind{k}"] not in KINDS[mode]}
 
     def disabled(self, values):
-        """Sliders a screw of its kind does not use, with the reason.
-
-        Parameters
-        ----------
-        values : dict
-
-        Returns
-        -------
-        dict
-        """
+        # Sliders a screw of its kind does not use, with the reason.
         out = {}
         for k in (1, 2):
             kind = values[f"kind{k}"]
@@ -233,12 +207,7 @@ class ScrewSumExplorer(Explorer):
         return out
 
     def explain(self):
-        """Every symbol on screen, with its thesis equation.
-
-        Returns
-        -------
-        dict
-        """
+        # Every symbol on screen, with its thesis equation.
         return {
             "∞": "a point at infinity (a direction), drawn at the edge of the view as an arrow its way (5.5)",
             "v₁, v₂": "the two twists added: a rotation about a pole, or a translation (pole at "
@@ -322,19 +291,13 @@ class ScrewSumExplorer(Explorer):
 
     # ------------------------------------------------------------------ handles
     def handles(self) -> list[Handle]:
-        """The draggable poles, force lines (by a point) and directions (by an arm's tip).
-
-        ``v1``, ``v2``: the pole of a rotation (sets ``xk``, ``yk``);
-        ``v1 direction``, ``v2 direction``: a translation's direction (``anglek``);
-        ``f1``, ``f2``: a point of a force line (``xk``, ``yk``);
-        ``f1 direction``, ``f2 direction``: the tip of an arm of length
-        :data:`ARM` along the force (``anglek``).  A handle of a screw of
-        another kind, or of the other mode, is not draggable (``where()`` is None).
-
-        Returns
-        -------
-        list of Handle
-        """
+        # The draggable poles, force lines (by a point) and directions (by an arm's tip).
+        # ``v1``, ``v2``: the pole of a rotation (sets ``xk``, ``yk``);
+        # ``v1 direction``, ``v2 direction``: a translation's direction (``anglek``);
+        # ``f1``, ``f2``: a point of a force line (``xk``, ``yk``);
+        # ``f1 direction``, ``f2 direction``: the tip of an arm of length
+        # :data:`ARM` along the force (``anglek``).  A handle of a screw of
+        # another kind, or of the other mode, is not draggable (``where()`` is None).
         out = []
         for k in (1, 2):
             out += [Handle(f"v{k}", self._where(k, "rotation", False), self._move(k)),

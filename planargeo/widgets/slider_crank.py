@@ -187,12 +187,7 @@ class SliderCrankExplorer(Explorer):
         return cached(self._models, (l, g), lambda: slider_crank_model(l=l, g=g, **self.params))
 
     def make_controls(self):
-        """The controls: crank angle and speed, drive, rod length, gravity and the overlays.
-
-        Returns
-        -------
-        dict
-        """
+        # The controls: crank angle and speed, drive, rod length, gravity and the overlays.
         return {
             "crank angle (deg)": Step(-180, 180, 1, 23.0,
                                       "crank angle ψ at t = 0 (°)").make("crank angle (deg)"),
@@ -209,12 +204,7 @@ class SliderCrankExplorer(Explorer):
 
     # ----------------------------------------------------------------- handles
     def handles(self):
-        """Drag the crank pin (sets ψ) or the piston (sets its height, the crank keeps its side).
-
-        Returns
-        -------
-        list of Handle
-        """
+        # Drag the crank pin (sets ψ) or the piston (sets its height, the crank keeps its side).
         def pin():
             return None if self.state is None else tuple(self.state["sol"].data.pose[1, :2])
 
@@ -244,36 +234,14 @@ class SliderCrankExplorer(Explorer):
 
     # -------------------------------------------------------------------- Play
     def adjust(self, values, changed):
-        """A change of the initial state starts the time again (``t = 0``), unless ``t`` is set with it.
-
-        Parameters
-        ----------
-        values : dict
-        changed : set of str
-
-        Returns
-        -------
-        dict
-        """
+        # A change of the initial state starts the time again (``t = 0``), unless ``t`` is set with it.
         if set(changed) & set(INITIAL) and "t (s)" not in changed and values["t (s)"] != "0":
             return {"t (s)": "0"}
         return {}
 
     def play_step(self, values, dt):
-        """One Play step: the scene time advances by ``dt`` (the integration runs in :meth:`compute`).
-
-        Parameters
-        ----------
-        values : dict
-            The shown control values.
-        dt : float
-            Scene seconds (the base has applied :attr:`time_scale`), any value in ``(0, 1/play_fps]``.
-
-        Returns
-        -------
-        dict or None
-            The next time, None at the end of the time slider.
-        """
+        # One Play step: the scene time advances by ``dt`` (the integration runs in :meth:`compute`).
+        # Returns The next time, None at the end of the time slider.
         t = time_value(values["t (s)"], T_END) + float(dt)
         return None if t > T_END + 1e-9 else {"t (s)": time_text(t)}
 
@@ -395,12 +363,7 @@ class SliderCrankExplorer(Explorer):
         return out
 
     def explain(self):
-        """Every symbol and readout name on screen, with its thesis equation.
-
-        Returns
-        -------
-        dict
-        """
+        # Every symbol and readout name on screen, with its thesis equation.
         return {
             "t": "scene time since the start of the motion (Play advances it, 0.1 s per second at 1×)",
             "ψ": "crank angle: the coordinate of joint 1 (9.6)",
@@ -442,30 +405,11 @@ class SliderCrankExplorer(Explorer):
         }
 
     def disabled(self, values):
-        """The time is set by Play.
-
-        Parameters
-        ----------
-        values : dict
-
-        Returns
-        -------
-        dict
-        """
+        # The time is set by Play.
         return {"t (s)": "set by Play (a new initial state starts it at 0)"}
 
     def figure_message(self, exc):
-        """Short text on the picture for a refused state (rod too short, singular closure...).
-
-        Parameters
-        ----------
-        exc : Exception
-            Why the state was refused.
-
-        Returns
-        -------
-        str
-        """
+        # Short text on the picture for a refused state (rod too short, singular closure...).
         text = str(exc)
         if "rod too short" in text:
             short = "rod too short: it cannot reach the slider at this crank angle"

@@ -113,13 +113,8 @@ class SplittingExplorer(Explorer):
         return "SplittingExplorer(...)"
 
     def make_controls(self):
-        """The explorer's controls.
-
-        Returns
-        -------
-        dict
-            ``{name: widget}``.
-        """
+        # The explorer's controls.
+        # Returns ``{name: widget}``.
         return {
             "bodies n": Step(2, NMAX, 1, 2, "bodies n", integer=True).make("bodies n"),
             "split at joint": Step(2, NMAX, 1, 2, "split at joint i+1", integer=True).make("split"),
@@ -135,44 +130,20 @@ class SplittingExplorer(Explorer):
         }
 
     def adjust(self, values, changed):
-        """The split joint stays on the chain (``2 <= i+1 <= n``; its slider spans 2 to ``n`` once shown).
-
-        Parameters
-        ----------
-        values : dict
-        changed : set of str
-
-        Returns
-        -------
-        dict
-            ``{"split at joint": n}`` when the chain became shorter than the split.
-        """
+        # The split joint stays on the chain (``2 <= i+1 <= n``; its slider spans 2 to ``n`` once shown).
+        # Returns ``{"split at joint": n}`` when the chain became shorter than the split.
         n = int(values["bodies n"])
         return {"split at joint": n} if values["split at joint"] > n else {}
 
     def disabled(self, values):
-        """Controls that would change nothing, with the reason.
-
-        Parameters
-        ----------
-        values : dict
-
-        Returns
-        -------
-        dict
-            ``{"split at joint": reason}`` for two bodies (the only joint to split at is joint 2).
-        """
+        # Controls that would change nothing, with the reason.
+        # Returns ``{"split at joint": reason}`` for two bodies (the only joint to split at is joint 2).
         if int(values["bodies n"]) == 2:
             return {"split at joint": "two bodies: joint 2 is the only joint to split at (add bodies to move it)"}
         return {}
 
     def explain(self):
-        """Every symbol and readout name on screen: one-line meaning and thesis equation.
-
-        Returns
-        -------
-        dict
-        """
+        # Every symbol and readout name on screen: one-line meaning and thesis equation.
         v = self.values
         n = int(v["bodies n"])
         i = min(int(v["split at joint"]), n) - 1
@@ -219,25 +190,15 @@ class SplittingExplorer(Explorer):
         }
 
     def focus_options(self):
-        """Focus on one side of the split: the other side's links and poles fade.
-
-        Returns
-        -------
-        list of str
-            ``"constrained part"`` (bodies ``1..i``) and ``"free-floating part"`` (``i+1..n``).
-        """
+        # Focus on one side of the split: the other side's links and poles fade.
+        # Returns ``"constrained part"`` (bodies ``1..i``) and ``"free-floating part"`` (``i+1..n``).
         return ["constrained part", "free-floating part"]
 
     def _model(self, n, rho, g):
         return cached(self._models, (n, rho, g), lambda: bent_chain_model(n, rho, 1.0, 1.0, g))
 
     def handles(self):
-        """Draggable handles: the split marker (snaps to the nearest joint) and the tip (bend ``φ``).
-
-        Returns
-        -------
-        list of Handle
-        """
+        # Draggable handles: the split marker (snaps to the nearest joint) and the tip (bend ``φ``).
         def split_where():
             st = self.state
             if st is None or st["n"] < 3:             # two bodies: nowhere else to split (disabled)

@@ -120,12 +120,7 @@ class SubspaceExplorer(Explorer):
     scale = 1.0
 
     def make_controls(self):
-        """The controls: joint kind and pose, body, force, what to show.
-
-        Returns
-        -------
-        dict
-        """
+        # The controls: joint kind and pose, body, force, what to show.
         return {
             "joint": W.Dropdown(options=list(JOINT_OPTIONS), value="revolute", description="joint"),
             "joint x": Step(-1.4, 3.4, 0.01, 0.0, "joint x (m)").make("joint x"),
@@ -142,27 +137,13 @@ class SubspaceExplorer(Explorer):
         }
 
     def disabled(self, values):
-        """Controls that change nothing for the joint chosen, with the reason.
-
-        Parameters
-        ----------
-        values : dict
-
-        Returns
-        -------
-        dict
-        """
+        # Controls that change nothing for the joint chosen, with the reason.
         if JOINT_OPTIONS[values["joint"]] == "revolute":
             return {"joint angle": "a revolute joint has no direction: only its pivot counts"}
         return {}
 
     def explain(self):
-        """Every symbol on screen, with its thesis equation.
-
-        Returns
-        -------
-        dict
-        """
+        # Every symbol on screen, with its thesis equation.
         st = self.state
         k = 1 if st is None else int(st["s"].shape[1])
         out = {
@@ -207,12 +188,7 @@ class SubspaceExplorer(Explorer):
 
     # ------------------------------------------------------------------ handles
     def handles(self):
-        """Draggable handles: the joint, its direction, the force's point and its arrow tip.
-
-        Returns
-        -------
-        list of Handle
-        """
+        # Draggable handles: the joint, its direction, the force's point and its arrow tip.
         return [Handle("joint", self._joint_where, lambda x, y: {"joint x": x, "joint y": y}),
                 Handle("joint direction", self._dir_where, self._drag_dir),
                 Handle("force point", lambda: (self.values["force x"], self.values["force y"]),

@@ -102,12 +102,7 @@ class TreeExplorer(Explorer):
         super().__init__(**kw)
 
     def make_controls(self):
-        """The controls: speed, loops, gravity, mass, the two dragged angles, the time and the overlays.
-
-        Returns
-        -------
-        dict
-        """
+        # The controls: speed, loops, gravity, mass, the two dragged angles, the time and the overlays.
         t = W.Text(value="0", description="t (s)", disabled=True,
                    tooltip="set by Play (a new initial state starts it at 0)")
         return {
@@ -125,12 +120,7 @@ class TreeExplorer(Explorer):
         }
 
     def focus_options(self):
-        """The reactions one can focus on: the joints ``f₁ … f₉`` and, loops closed, the contacts ``F₁``, ``F₂``.
-
-        Returns
-        -------
-        list of str
-        """
+        # The reactions one can focus on: the joints ``f₁ … f₉`` and, loops closed, the contacts ``F₁``, ``F₂``.
         loops = self.controls["loops"].value if "loops" in getattr(self, "controls", {}) else "closed"
         closed = str(loops).startswith("closed")
         return [symbol_of(f"f_{i + 1}") for i in range(N)] + (["F₁", "F₂"] if closed else [])
@@ -176,12 +166,7 @@ class TreeExplorer(Explorer):
 
     # ---------------------------------------------------------------- handles
     def handles(self):
-        """Drag the tip of body 1 (its angle) or the tip of body 2 (its angle); the loops close again.
-
-        Returns
-        -------
-        list of Handle
-        """
+        # Drag the tip of body 1 (its angle) or the tip of body 2 (its angle); the loops close again.
         def tip(i):
             def where():
                 if self.state is None:
@@ -223,34 +208,14 @@ class TreeExplorer(Explorer):
 
     # ------------------------------------------------------------------- Play
     def adjust(self, values, changed):
-        """A change of the initial state starts the time again (``t = 0``), unless ``t`` is set with it.
-
-        Parameters
-        ----------
-        values : dict
-        changed : set of str
-
-        Returns
-        -------
-        dict
-        """
+        # A change of the initial state starts the time again (``t = 0``), unless ``t`` is set with it.
         if set(changed) & set(INITIAL) and "t (s)" not in changed and values["t (s)"] != "0":
             return {"t (s)": "0"}
         return {}
 
     def play_step(self, values, dt):
-        """One Play frame: the scene time advances by ``dt`` (the integration runs in :meth:`compute`).
-
-        Parameters
-        ----------
-        values : dict
-        dt : float
-
-        Returns
-        -------
-        dict or None
-            The next time, None at the end of the time slider.
-        """
+        # One Play frame: the scene time advances by ``dt`` (the integration runs in :meth:`compute`).
+        # Returns The next time, None at the end of the time slider.
         t = time_value(values["t (s)"], T_END) + float(dt)
         return None if t > T_END + 1e-9 else {"t (s)": time_text(t)}
 
@@ -371,12 +336,7 @@ class TreeExplorer(Explorer):
         return out
 
     def explain(self):
-        """Every symbol and readout name on screen, with its thesis equation.
-
-        Returns
-        -------
-        dict
-        """
+        # Every symbol and readout name on screen, with its thesis equation.
         out = {
             "t": "time since the start of the motion (Play advances it)",
             "speed": "scale of the joint speeds at t = 0 (the pattern of the scene, made to fit the loops, 9.54)",
@@ -414,14 +374,5 @@ class TreeExplorer(Explorer):
         return out
 
     def disabled(self, values):
-        """The time is set by Play; the acceleration and velocity poles need a motion.
-
-        Parameters
-        ----------
-        values : dict
-
-        Returns
-        -------
-        dict
-        """
+        # The time is set by Play; the acceleration and velocity poles need a motion.
         return {"t (s)": "set by Play (a new initial state starts it at 0)"}
