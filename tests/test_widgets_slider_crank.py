@@ -11,7 +11,7 @@ from planargeo.widgets.slider_crank import SliderCrankExplorer
 def figure_message(ex) -> str:
     """The refusal said on the picture ("" for none)."""
     el = elements(ex.picture()).get("figure message")
-    return "" if el is None else el["parts"][0]["text"]
+    return "" if el is None else " ".join(q["text"] for q in el["parts"] if q["p"] == "text")
 
 
 def arrow_direction(ex, sym):
