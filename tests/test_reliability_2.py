@@ -270,3 +270,28 @@ def test_the_slider_crank_started_too_fast_is_refused_in_words(crank):
     with _deadline(60), pytest.raises(NumericOverflowError, match="qd0"):
         _strict(simulate_loops, m, q, [1e150, -10.0, 1e-300], 0.2763, method="RK23", rtol=1e-6, atol=1e-8,
                 dt=0.01, max_step=0.1, stabilization="baumgarte", progress=False)
+
+
+def test_a_motion_refuses_a_time_beyond_one_calls_work_and_keeps_what_it_did():
+    """The chain explorer's time slider: a far time costs a bounded step, refused by name; asking again goes on."""
+    import math
+
+    from planargeo.errors import SizeLimitError
+    from planargeo.widgets._motion import Motion
+
+    w = 40.0                                   # a fast oscillator: many steps per second
+    m = Motion(lambda t, y: [y[1], -w * w * y[0]], [1.0, 0.0], chunk=0.5, max_evals=3000)
+    with pytest.raises(SizeLimitError, match=r"t = 30 s .*computed up to t = \d"):
+        m.at(30.0)
+    first = m.reached
+    assert 0.0 < first < 30.0
+    with pytest.raises(SizeLimitError):
+        m.at(30.0)
+    assert m.reached > first                   # the second call went on from where the first stopped
+    while True:
+        try:
+            y = m.at(30.0)
+            break
+        except SizeLimitError:
+            pass
+    assert abs(y[0] - math.cos(w * 30.0)) < 1e-5   # the closed form x = cos ωt

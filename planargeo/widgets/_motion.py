@@ -6,6 +6,10 @@ frames shown before (an adaptive integrator takes other steps); here the motion 
 in chunks of a fixed length (each from the end of the one before, DOP853 with dense output)
 and the state at time ``t`` is the chunk's interpolant at ``t``: a function of ``t`` and the
 initial state alone.  Chunks are kept, so a time already reached costs one interpolation.
+
+One call does a bounded amount of work (:data:`MAX_EVALS` evaluations of the dynamics, a few
+seconds): a time beyond it is refused with :class:`~planargeo.errors.SizeLimitError`, the
+chunks computed so far kept, so that asking again (or Play) goes on from there.
 """
 from __future__ import annotations
 
@@ -13,9 +17,16 @@ import math
 
 import numpy as np
 
-from planargeo.errors import SingularConfigurationError
+from planargeo.errors import SingularConfigurationError, SizeLimitError
 
-__all__ = ["Motion"]
+__all__ = ["Motion", "MAX_EVALS"]
+
+#: Evaluations of the dynamics one call may spend (about 5 s for a 20-link chain).
+MAX_EVALS = 250_000
+
+
+class _OverBudget(Exception):
+    """The evaluations of one call ran out (caught in :meth:`Motion.extend`)."""
 
 
 class Motion:
@@ -31,6 +42,8 @@ class Motion:
         Length of a chunk (s).
     rtol, atol : float
         DOP853 tolerances.
+    max_evals : int
+        Evaluations of ``rhs`` one call of :meth:`extend` (or :meth:`at`) may spend.
 
     Examples
     --------
@@ -39,8 +52,10 @@ class Motion:
     True
     """
 
-    def __init__(self, rhs, y0, chunk: float = 1.0, rtol: float = 1e-9, atol: float = 1e-11):
+    def __init__(self, rhs, y0, chunk: float = 1.0, rtol: float = 1e-9, atol: float = 1e-11,
+                 max_evals: int = MAX_EVALS):
         self.rhs, self.chunk, self.rtol, self.atol = rhs, float(chunk), float(rtol), float(atol)
+        self.max_evals = int(max_evals)
         self.starts = [np.array(y0, dtype=float)]       # the state at k * chunk
         self.sols = []                                   # chunk k's interpolant (k < len(sols))
 
@@ -56,14 +71,31 @@ class Motion:
         ------
         SingularConfigurationError
             The integrator stopped.
+        SizeLimitError
+            Reaching ``t`` needs more than :attr:`max_evals` evaluations in this call (the
+            chunks done are kept: a next call goes on from :attr:`reached`).
         """
         from scipy.integrate import solve_ivp
 
         need = int(math.floor(t / self.chunk)) + 1
+        left = [self.max_evals]
+
+        def rhs(s, y):
+            left[0] -= 1
+            if left[0] < 0:
+                raise _OverBudget
+            return self.rhs(s, y)
+
         while len(self.sols) < need:
             k = len(self.sols)
-            r = solve_ivp(self.rhs, (0.0, self.chunk), self.starts[k], method="DOP853", rtol=self.rtol,
-                          atol=self.atol, dense_output=True)
+            try:
+                r = solve_ivp(rhs, (0.0, self.chunk), self.starts[k], method="DOP853", rtol=self.rtol,
+                              atol=self.atol, dense_output=True)
+            except _OverBudget:
+                raise SizeLimitError(
+                    f"t = {t:.4g} s is more motion than one step computes ({self.max_evals:,} evaluations "
+                    f"of the dynamics); it is computed up to t = {self.reached:.4g} s now: ask again to "
+                    f"go on from there, or press Play") from None
             if r.status != 0 or not np.all(np.isfinite(r.y[:, -1])):
                 raise SingularConfigurationError(
                     f"the motion could not be integrated past t = {k * self.chunk:.4g} s: {r.message}")
