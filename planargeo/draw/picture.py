@@ -632,7 +632,7 @@ class Picture:
 
     def text(self, id: str, xy, text: str, *, role: str = "text", symbol: str = "", desc: str = "",
              color: str | None = None, ha: str = "left", va: str = "bottom", dx: float = 0.0,
-             dy: float = 0.0, z: int = 8):
+             dy: float = 0.0, z: int = 8, obstacle: bool = True):
         """A text at a data point, moved by a pixel offset (not moved by the label placer).
 
         Parameters
@@ -657,6 +657,10 @@ class Picture:
             Offset in pixels (y up).
         z : int
             Drawing order.
+        obstacle : bool
+            The placed labels keep clear of it (default).  False for a passing note drawn
+            over everything on its own panel (a refusal's message): the labels stay where
+            they are without it.
         """
         x, y = (float(v) for v in xy)
         if not (math.isfinite(x) and math.isfinite(y)):
@@ -664,6 +668,8 @@ class Picture:
         va = {"baseline": "bottom", "center_baseline": "center"}.get(va, va)
         part = self._label(str(text), x, y, float(dx), float(dy), ha, va)
         part["fixed"] = True
+        if not obstacle:
+            part["over"] = True
         self._add(id, role, symbol, desc, [part], color=_color(role, color), z=z)
 
     def handle(self, id: str, xy, *, symbol: str = "", desc: str = ""):
@@ -713,7 +719,7 @@ class Picture:
         # first: the labels placed after them keep clear of them
         for el in self.elements:
             for part in el["parts"]:
-                if part["p"] == "text" and part.get("fixed") and part["text"]:
+                if part["p"] == "text" and part.get("fixed") and part["text"] and not part.get("over"):
                     w = _CHAR_EM * FONT_PX * len(part["text"])
                     x0 = (part["x"] - bx0) * kx + part["dx"] - _ALIGN_X[part["ha"]] * w
                     y0 = (part["y"] - by0) * ky + part["dy"] - _ALIGN_Y[part["va"]] * h

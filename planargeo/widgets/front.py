@@ -191,7 +191,8 @@ class FrontMixin:
             w = (_CHAR_EM * FONT_PX * len(self._figure_text) / 2 + 8.0) / pic.kx
             h = (0.625 * FONT_PX + 5.0) / pic.ky
             pic.text("figure message", (cx, cy), self._figure_text, role="text", color="#b00020",
-                     ha="center", va="center", z=100, desc=f"message: {self._figure_text}")
+                     ha="center", va="center", z=100, desc=f"message: {self._figure_text}",
+                     obstacle=False)
             el = pic.elements[-1]                # the panel: a part of the message, drawn first
             el["parts"].insert(0, {"p": "path", "closed": True, "xy": np.array(
                 [[cx - w, cy - h], [cx + w, cy - h], [cx + w, cy + h], [cx - w, cy + h]])})

@@ -14,6 +14,7 @@ seat, on a small notebook with a widget (the app itself takes tens of seconds to
 from __future__ import annotations
 
 import asyncio
+import concurrent.futures
 import json
 import re
 import time
@@ -25,7 +26,7 @@ from pathlib import Path
 import nbformat
 import pytest
 
-from .conftest import CHROMIUM, CHROMIUM_ARGS
+from .conftest import CHROMIUM
 
 pytestmark = pytest.mark.browser
 
@@ -90,38 +91,32 @@ def _visit(browser, url):
     return ctx, page, resp
 
 
-def test_visitor_beyond_the_seats_gets_the_class_is_full_page(one_seat):
-    from playwright.sync_api import sync_playwright
-
+def test_visitor_beyond_the_seats_gets_the_class_is_full_page(one_seat, browser):
     url = one_seat.url + "/"
-    with sync_playwright() as p:
-        b = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
-        try:
-            ctx1, page1, resp1 = _visit(b, url)
-            assert resp1.status == 200
-            page1.locator(".widget-slider").filter(has_text="seat test").wait_for(timeout=45_000)
+    b = browser                           # the session's chromium (conftest.py)
+    ctx1, page1, resp1 = _visit(b, url)
+    assert resp1.status == 200
+    page1.locator(".widget-slider").filter(has_text="seat test").wait_for(timeout=45_000)
 
-            ctx2, page2, resp2 = _visit(b, url)
-            assert resp2.status == 503
-            assert resp2.headers.get("retry-after") == "60"
-            assert page2.locator("h1").inner_text() == "The class is full"
-            body = page2.locator("body").inner_text()
-            assert "1 visitor," in body and "reload" in body
-            assert page2.locator(".widget-slider").count() == 0
+    ctx2, page2, resp2 = _visit(b, url)
+    assert resp2.status == 503
+    assert resp2.headers.get("retry-after") == "60"
+    assert page2.locator("h1").inner_text() == "The class is full"
+    body = page2.locator("body").inner_text()
+    assert "1 visitor," in body and "reload" in body
+    assert page2.locator(".widget-slider").count() == 0
 
-            page1.close(run_before_unload=True)   # Voila's page shuts its kernel down on leaving
-            deadline = time.monotonic() + 25
-            while True:
-                resp2 = page2.reload(wait_until="domcontentloaded", timeout=45_000)
-                if resp2.status == 200 or time.monotonic() > deadline:
-                    break
-                time.sleep(1.0)
-            assert resp2.status == 200, "the seat did not come back after visitor 1 left"
-            page2.locator(".widget-slider").filter(has_text="seat test").wait_for(timeout=45_000)
-            ctx1.close()
-            ctx2.close()
-        finally:
-            b.close()
+    page1.close(run_before_unload=True)   # Voila's page shuts its kernel down on leaving
+    deadline = time.monotonic() + 25
+    while True:
+        resp2 = page2.reload(wait_until="domcontentloaded", timeout=45_000)
+        if resp2.status == 200 or time.monotonic() > deadline:
+            break
+        time.sleep(1.0)
+    assert resp2.status == 200, "the seat did not come back after visitor 1 left"
+    page2.locator(".widget-slider").filter(has_text="seat test").wait_for(timeout=45_000)
+    ctx1.close()
+    ctx2.close()
 
 
 def _message(msg_type: str, content: dict) -> str:
@@ -158,8 +153,10 @@ def test_messages_from_the_page_cannot_execute_code(one_seat, tmp_path):
         html = r.read().decode()
     kernel = re.search(r'"kernelId": *"([0-9a-f-]+)"', html).group(1)
     marker = tmp_path / "executed.txt"
-    replies = asyncio.run(_talk(one_seat.url.replace("http", "ws") + f"/api/kernels/{kernel}/channels",
-                                marker))
+    ws = one_seat.url.replace("http", "ws") + f"/api/kernels/{kernel}/channels"
+    # its own thread: the session's Playwright keeps an event loop in this one
+    with concurrent.futures.ThreadPoolExecutor(1) as pool:
+        replies = pool.submit(asyncio.run, _talk(ws, marker)).result()
     assert "kernel_info_reply" in replies          # the channel works: allowed requests are answered
     assert "execute_reply" not in replies and "execute_input" not in replies
     assert not marker.exists()

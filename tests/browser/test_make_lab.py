@@ -22,7 +22,7 @@ from pathlib import Path
 
 import pytest
 
-from browser_harness import CHROMIUM, CHROMIUM_ARGS
+from browser_harness import CHROMIUM  # noqa: F401 - where the tests look for chromium
 
 ROOT = Path(__file__).resolve().parents[2]
 #: What a pasted URL looks like: this server, 48 hexadecimal digits of token (secrets.token_hex(24)).
@@ -103,10 +103,8 @@ def test_make_lab_command_keeps_the_token_off_its_command_line():
     assert not any("token" in a.lower() for a in cmd)                  # made at start, not visible in `ps`
 
 
-def test_make_lab_prints_a_url_that_opens_jupyterlab(tmp_path):
-    if not Path(CHROMIUM).exists():
-        pytest.skip(f"{CHROMIUM} not found: install Debian's chromium (apt-get install -y chromium)")
-    sync_api = pytest.importorskip("playwright.sync_api", reason="playwright is not installed")
+def test_make_lab_prints_a_url_that_opens_jupyterlab(tmp_path, browser):
+    # ``browser``: the session's chromium (conftest.py); a second Playwright in this thread would clash
     before = _tracked_state()
     port = _free_port()
     lab = MakeLab(tmp_path / "first", port)
@@ -125,23 +123,23 @@ def test_make_lab_prints_a_url_that_opens_jupyterlab(tmp_path):
             with socket.socket() as s:
                 s.settimeout(2)
                 assert s.connect_ex((ip, port)) != 0, f"the lab answers on {ip}"
-        with sync_api.sync_playwright() as p:
-            browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
-            try:
-                page = browser.new_page()
-                page.goto(url, wait_until="domcontentloaded", timeout=60_000)
-                page.wait_for_selector("#jp-main-dock-panel", timeout=180_000)     # JupyterLab's shell
-                page.wait_for_selector(".jp-Notebook", timeout=180_000)            # the tour, open
-                assert page.locator("input[name=password]").count() == 0
-                assert "00-tour.ipynb" in page.locator(".lm-DockPanel-tabBar .lm-TabBar-tabLabel").all_inner_texts()
-                page.close()
-                # without the token: the login page, not the lab
-                stranger = browser.new_context().new_page()
-                stranger.goto(url.split("?")[0], wait_until="domcontentloaded", timeout=60_000)
-                stranger.wait_for_selector("input[name=password]", timeout=30_000)
-                assert stranger.locator("#jp-main-dock-panel").count() == 0
-            finally:
-                browser.close()
+        ctx, other_ctx = browser.new_context(), browser.new_context()
+        try:
+            page = ctx.new_page()
+            page.goto(url, wait_until="domcontentloaded", timeout=60_000)
+            page.wait_for_selector("#jp-main-dock-panel", timeout=180_000)     # JupyterLab's shell
+            page.wait_for_selector(".jp-Notebook", timeout=180_000)            # the tour, open
+            assert page.locator("input[name=password]").count() == 0
+            assert "00-tour.ipynb" in page.locator(".lm-DockPanel-tabBar .lm-TabBar-tabLabel").all_inner_texts()
+            page.close()
+            # without the token: the login page, not the lab
+            stranger = other_ctx.new_page()
+            stranger.goto(url.split("?")[0], wait_until="domcontentloaded", timeout=60_000)
+            stranger.wait_for_selector("input[name=password]", timeout=30_000)
+            assert stranger.locator("#jp-main-dock-panel").count() == 0
+        finally:
+            ctx.close()
+            other_ctx.close()
     finally:
         rc = lab.stop()
     # stopped on request: a clean exit, or (its server extensions' shutdown can hang on a loaded
