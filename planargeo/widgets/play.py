@@ -248,7 +248,7 @@ class PlayMixin:
                                     layout=W.Layout(width="80px"))
         scale = float(self.time_scale)
         self.play_scale = W.HTML(
-            f"<span title='1× plays {scale:g} simulated seconds per second'>"
+            f"<span style='white-space:nowrap' title='1× plays {scale:g} simulated seconds per second'>"
             + ("1× = real time" if scale == 1.0 else f"1× = {scale:g}× real time") + "</span>")
         self.play_speed.observe(self.guarded(lambda _c: self._restart_clock()), names="value")
         self.play_control.observe(self.guarded(self._play_tick), names="value")
