@@ -125,7 +125,8 @@ class FrontMixin:
         for b in buttons.children:
             if isinstance(b, W.Button):
                 b.layout.flex = "0 0 auto"
-        play = ([W.HBox([self.play_control, self.play_speed, self.play_scale, self.play_loop])]
+        play = ([W.HBox([self.play_control, self.play_speed, self.play_scale, self.play_loop],
+                         layout=W.Layout(flex_flow="row wrap", align_items="center"))]
                 if self.has_play else [])
         controls = W.VBox(list(self.controls.values()) + play + self.extra_widgets()
                           + [buttons, self.export_label],
