@@ -176,10 +176,9 @@ def test_fmt():
 
 
 def test_every_explorer_is_drawn_by_the_page_without_a_figure():
-    """Under ipympl too (old notebooks): the page draws each explorer's picture; no matplotlib figure."""
+    """Old notebooks asking for display='ipympl' get the page too; no matplotlib figure, ipympl not needed."""
     code = textwrap.dedent("""
-        import matplotlib
-        matplotlib.use("module://ipympl.backend_nbagg")
+        import sys
         import planargeo.widgets as widgets
         from planargeo.widgets.canvas import PictureCanvas
         assert widgets.use_widget_backend() == "page"
@@ -191,6 +190,7 @@ def test_every_explorer_is_drawn_by_the_page_without_a_figure():
                 assert ex.message == "" and ex.display_mode == "page", (name, ex.message)
                 assert isinstance(ex.canvas, PictureCanvas) and inside(ex.widget, ex.canvas)
                 assert not hasattr(ex, "fig") and ex.canvas.picture["elements"]
+        assert "ipympl" not in sys.modules and "matplotlib.pyplot" not in sys.modules
         print("ok")
     """)
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
