@@ -1,0 +1,593 @@
+"""The T/U decompositions of chapter 6 drawn into a :class:`~planargeo.draw.picture.Picture`.
+
+A joint with motion space ``s`` and reaction space ``R`` (``sᵀR = 0``), completed by an
+inertia ``A`` (thesis 6.2–6.3, 6.36–6.48), splits the force and acceleration spaces:
+
+* :func:`decomposition` — the joint's poles ``s``, the percussion space ``T = A s (sᵀAs)⁻¹``
+  (lines; for a pin, the axis of percussion of the joint), the reactions ``R`` (lines
+  through the joint) and the accelerations they produce, ``U = A⁻¹R(RᵀA⁻¹R)⁻¹`` or
+  ``A⁻¹R`` (Figs 6.1, 6.2);
+* :func:`twist_split` — an acceleration ``a = sψ + Uγ`` and the forces ``f_k = A a_k`` of
+  its parts (6.44, 6.75–6.76, Fig. 6.3);
+* :func:`wrench_split` — a force ``f = TQ + Rμ`` and the accelerations ``a_k = A⁻¹f_k`` of
+  its parts (6.38, 6.77–6.81, Fig. 6.4);
+* :func:`projective_step` — the joint acceleration ``q̈ᵢ = Tᵢᵀaᵢ − Tᵢᵀ(aᵢ₋₁ + κᵢ)`` across
+  one joint (6.98–6.101, Fig. 6.5).
+
+Each takes the picture first, computes what it draws with
+:class:`planargeo.mechanics.subspaces.Decomposition` and returns the elements it added,
+keyed by name, with ``"values"``: the arrays it computed.  :func:`twist_parts` and
+:func:`wrench_parts` compute the splits alone (to choose where to draw before drawing).
+
+Examples
+--------
+A rod of mass 1, centre of mass at (1, 0), pinned at the origin: its axis of percussion
+is the vertical line ``x = 1.25``.
+
+>>> from planargeo.draw.picture import Picture
+>>> from planargeo.mechanics.joints import revolute
+>>> from planargeo.screws.twists import inertia_matrix
+>>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
+>>> pic = Picture((-1, 3, -2, 2), size=(300, 300), ticks=False)
+>>> out = decomposition(pic, j.s, j.R, A)
+>>> [float(x) for p in out["T"]["parts"] if p["p"] == "path" for x, y in p["xy"]]  # x = 1.25
+[1.25, 1.25]
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo._validate import as_vec3
+from planargeo.draw.picture import Picture
+from planargeo.draw.pictures.common import label_line, label_toward
+from planargeo.draw.pictures.kit import force as _force_arrow
+from planargeo.draw.pictures._words import num, pair, where
+from planargeo.errors import InputError
+from planargeo.mechanics.subspaces import Decomposition
+
+__all__ = ["decomposition", "twist_split", "wrench_split", "projective_step", "twist_parts",
+           "wrench_parts"]
+
+
+# --------------------------------------------------------------------------- words and helpers
+def _keys(prefix: str, k: int) -> list[str]:
+    """Keys of ``k`` columns: ``prefix`` alone for one column, else ``prefix1``, ``prefix2``..."""
+    return [prefix] if k == 1 else [f"{prefix}{j + 1}" for j in range(k)]
+
+
+def _tex(sym: str, k: int, j: int) -> str:
+    """``$sym$`` for one column, ``$sym_{j+1}$`` for column ``j`` of several."""
+    return f"${sym}$" if k == 1 else f"${sym}_{{{j + 1}}}$"
+
+
+def _line_words(l) -> str:
+    """Where a line ``[fx, fy, tz]`` (4.27) runs: its point nearest the origin and its direction."""
+    fx, fy, tz = (float(v) for v in l)
+    F = math.hypot(fx, fy)
+    if F == 0.0:
+        return "the line at infinity" if tz != 0.0 else "none (zero)"
+    return f"through {pair((fy * tz / (F * F), -fx * tz / (F * F)))} m, along {pair((fx / F, fy / F))}"
+
+
+def _wrench_words(l, unit: str = "N") -> str:
+    """A force in words: its size and line, or a couple."""
+    fx, fy, tz = (float(v) for v in l)
+    F = math.hypot(fx, fy)
+    if F == 0.0:
+        return "zero" if tz == 0.0 else f"a couple of {num(tz)} {unit}·m"
+    return f"{num(F)} {unit}, {_line_words(l)}"
+
+
+def _accel_words(p) -> str:
+    """An acceleration pole in words: where it is and its rate."""
+    return f"pole {where(p)}, rate {num(float(p[2]))} rad/s²"
+
+
+def _aim(el: dict, aims: dict, key: str) -> None:
+    """Ask the placer to try the label of ``el`` first at the pixel offset ``aims[key]``."""
+    u = aims.get(key)
+    if u is not None:
+        u = np.asarray(u, dtype=float)
+        gap = math.hypot(*u)
+        if gap > 0.0:
+            label_toward(el, u, gap)
+
+
+def _line(pic: Picture, id: str, l, text, *, role: str, symbol: str, desc: str, anchor, side: float,
+          aims: dict, key: str) -> dict:
+    """A line without a sense arrow, labelled beside it near ``anchor``; the element."""
+    pic.line(id, l, role=role, symbol=symbol, desc=desc, label="", arrow=False)
+    el = pic.elements[-1]
+    if math.hypot(float(l[0]), float(l[1])) > 0.0:
+        label_line(pic, id, text or "", anchor=anchor, side=side)
+    elif text:                              # the line at infinity: the couple glyph's label
+        for part in el["parts"]:
+            if part["p"] == "text":
+                part["text"] = f"{text}: couple (line at ∞)"
+    _aim(el, aims, key)
+    return el
+
+
+def _point(pic: Picture, id: str, p, text, *, role: str, symbol: str, desc: str, glyph: bool,
+           aims: dict, key: str) -> dict:
+    """A pole (:meth:`Picture.point`) with its label aimed as asked; the element."""
+    pic.point(id, p, role=role, symbol=symbol, desc=desc, label=text or "", glyph=glyph)
+    el = pic.elements[-1]
+    _aim(el, aims, key)
+    return el
+
+
+def _centre(pic: Picture) -> np.ndarray:
+    x0, x1, y0, y1 = pic.box
+    return np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+
+
+def _check_picture(pic) -> None:
+    if not isinstance(pic, Picture):
+        raise InputError(f"pic must be a Picture, got {type(pic).__name__}")
+
+
+def _parts_arg(parts) -> tuple[int, ...]:
+    try:
+        show = tuple(int(p) for p in parts)
+    except (TypeError, ValueError):
+        show = ()
+    if not show or any(p not in (1, 2) for p in show):
+        raise InputError(f"parts must be a non-empty selection of 1 and 2, got {parts!r}")
+    return show
+
+
+# --------------------------------------------------------------------------- decomposition
+def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, anchors=None,
+                  sides=None, aims=None, prefix: str = "") -> dict:
+    """A joint's spaces completed by an inertia (thesis 6.2–6.3, 6.36–6.48, Figs 6.1, 6.2).
+
+    Draws the motion space ``s`` (joint poles), the percussion space
+    ``T = A s (sᵀAs)⁻¹`` (6.36, lines: for a pin, the axis of percussion of the
+    joint, ``sᵀT = 1``) and the reaction space ``R`` (lines through the joint),
+    and the accelerations the reactions produce: with ``reactive="U"`` the
+    decoupled ``U = A⁻¹R(RᵀA⁻¹R)⁻¹`` (6.45, Fig. 6.2: ``RᵀU = 1``, so ``U₁``
+    lies on ``R₂`` and ``U₂`` on ``R₁``; ``TᵀU = 0``, all on ``T``), with
+    ``reactive="inverse"`` the plain ``A⁻¹R_k`` (Fig. 6.1, the percussion poles
+    of the reactions, also on ``T``).
+
+    Parameters
+    ----------
+    pic : Picture
+        Where to draw.
+    s, R : array_like (3, k), (3, 3-k)
+        Motion and reaction spaces of the joint (``sᵀR = 0``).
+    A : array_like (3, 3)
+        The (rigid or articulated) inertia, positive definite.
+    reactive : {"U", "inverse"}
+        Which accelerations to mark for the reactions (see above).
+    labels : dict, optional
+        Label text per key (``"s"``, ``"T"``, ``"R1"``, ``"U1"`` or ``"AiR1"``...; one
+        column: ``"s"``, ``"T"``; several: ``"s1"``, ``"T1"``...); ``""`` for none.
+    anchors : dict, optional
+        Per line key: the point near which its label sits (default: the view's centre).
+    sides : dict, optional
+        Per line key: +1 (default) labels above the line (right of a vertical one), -1 below.
+    aims : dict, optional
+        Per key: the pixel offset ``(dx, dy)`` (y up) at which the placer tries the label
+        first (it moves a label that would overlap another).
+    prefix : str
+        Prefix of the element ids (ids are ``prefix + key``).
+
+    Returns
+    -------
+    dict
+        The elements keyed as above, and ``"values"``: the arrays ``{"T", "U", "AiR"}``
+        (``AiR = A⁻¹R``).
+
+    Raises
+    ------
+    InputError
+        ``pic`` not a Picture, or ``reactive`` neither "U" nor "inverse".
+    PlanargeoError
+        Spaces or an inertia the decomposition refuses (named by
+        :class:`~planargeo.mechanics.subspaces.Decomposition`).
+
+    Examples
+    --------
+    >>> from planargeo.draw.picture import Picture
+    >>> from planargeo.mechanics.joints import revolute
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
+    >>> pic = Picture((-1, 3, -2, 2), size=(300, 300), ticks=False)
+    >>> out = decomposition(pic, j.s, j.R, A)
+    >>> sorted(k for k in out if k != "values")
+    ['R1', 'R2', 'T', 'U1', 'U2', 's']
+    >>> bool(np.allclose(j.R.T @ out["values"]["U"], np.eye(2)))    # RᵀU = 1 (6.48)
+    True
+    >>> [(p["x"], p["y"]) for p in out["U2"]["parts"] if p["p"] == "mark"]   # U₂ on R₁ and on T
+    [(1.25, 0.0)]
+    >>> out["T"]["desc"]
+    'axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.36): through (1.25, 0) m, along (0, 1)'
+    """
+    _check_picture(pic)
+    if reactive not in ("U", "inverse"):
+        raise InputError(f"reactive must be 'U' or 'inverse', got {reactive!r}")
+    dec = Decomposition(A, s, R)
+    s, R, A, T, U = dec.s, dec.R, dec.A, dec.T, dec.U
+    AiR = np.linalg.solve(A, R)
+    k, r = s.shape[1], R.shape[1]
+    inv = reactive == "inverse"
+    pts = AiR if inv else U
+    keys = {"s": _keys("s", k), "T": _keys("T", k), "R": _keys("R", r),
+            "P": _keys("AiR" if inv else "U", r)}
+    default = {**{n: _tex("s", k, j) for j, n in enumerate(keys["s"])},
+               **{n: _tex("T", k, j) for j, n in enumerate(keys["T"])},
+               **{n: _tex("R", r, j) for j, n in enumerate(keys["R"])},
+               **{n: (_tex("A^{-1}R", r, j) if r == 1 else f"$A^{{-1}}R_{j + 1}$") if inv
+                  else _tex("U", r, j) for j, n in enumerate(keys["P"])}}
+    labels = {**default, **dict(labels or {})}
+    anchors, sides, aims = dict(anchors or {}), dict(sides or {}), dict(aims or {})
+    out: dict = {}
+    for j, n in enumerate(keys["T"]):
+        out[n] = _line(pic, prefix + n, T[:, j], labels[n], role="momentum", symbol=default[n],
+                       desc="axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.36): "
+                            + _line_words(T[:, j]),
+                       anchor=anchors.get(n), side=sides.get(n, 1.0), aims=aims, key=n)
+    for j, n in enumerate(keys["R"]):
+        out[n] = _line(pic, prefix + n, R[:, j], labels[n], role="reaction", symbol=default[n],
+                       desc="a unit reaction of the joint, a line through it (6.1): "
+                            + _line_words(R[:, j]),
+                       anchor=anchors.get(n), side=sides.get(n, 1.0), aims=aims, key=n)
+    for j, n in enumerate(keys["s"]):
+        out[n] = _point(pic, prefix + n, s[:, j], labels[n], role="twist", symbol=default[n],
+                        desc=f"motion space of the joint, its pole (6.1): {where(s[:, j])}",
+                        glyph=False, aims=aims, key=n)
+    for j, n in enumerate(keys["P"]):
+        what = ("acceleration a unit reaction gives the free body, A⁻¹R (6.42): " if inv else
+                "reactive acceleration U = A⁻¹R(RᵀA⁻¹R)⁻¹, RᵀU = 1 (6.45, 6.48): ")
+        out[n] = _point(pic, prefix + n, pts[:, j], labels[n], role="accel", symbol=default[n],
+                        desc=what + _accel_words(pts[:, j]), glyph=False, aims=aims, key=n)
+    out["values"] = {"T": T, "U": U, "AiR": AiR}
+    return out
+
+
+# --------------------------------------------------------------------------- splits
+def twist_parts(s, R, A, a) -> dict:
+    """The split of an acceleration by a joint: ``a = sψ + Uγ`` and the forces ``f_k = A a_k`` (6.44, 6.76).
+
+    Parameters
+    ----------
+    s, R, A : array_like
+        As in :func:`decomposition`.
+    a : array_like (3,)
+        The acceleration to split.
+
+    Returns
+    -------
+    dict
+        ``{"T", "U", "psi", "gamma", "a1", "a2", "f1", "f2"}``: ``ψ = Tᵀa``, ``γ = Rᵀa``,
+        ``a₁ = sψ``, ``a₂ = Uγ``, ``f_k = A a_k``.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        ``a`` not a finite 3-vector.
+
+    Examples
+    --------
+    >>> from planargeo.mechanics.joints import revolute
+    >>> from planargeo.screws.twists import inertia_matrix, unit_rotation
+    >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
+    >>> v = twist_parts(j.s, j.R, A, unit_rotation([2.0, 1.0]))
+    >>> bool(np.allclose(v["a1"] + v["a2"], unit_rotation([2.0, 1.0])))    # a = sψ + Uγ (6.44)
+    True
+    """
+    a = as_vec3(a, "a")
+    dec = Decomposition(A, s, R)
+    psi, gamma = dec.split_twist(a)                       # (Tᵀa, Rᵀa), 6.44
+    a1, a2 = dec.s @ psi, dec.U @ gamma
+    return {"T": dec.T, "U": dec.U, "psi": psi, "gamma": gamma, "a1": a1, "a2": a2,
+            "f1": dec.A @ a1, "f2": dec.A @ a2}
+
+
+def wrench_parts(s, R, A, f) -> dict:
+    """The split of a force by a joint: ``f = TQ + Rμ`` and the accelerations ``a_k = A⁻¹f_k`` (6.38, 6.80).
+
+    Parameters
+    ----------
+    s, R, A : array_like
+        As in :func:`decomposition`.
+    f : array_like (3,)
+        The force to split.
+
+    Returns
+    -------
+    dict
+        ``{"T", "U", "Q", "mu", "f1", "f2", "a1", "a2"}``: ``Q = sᵀf``, ``μ = Uᵀf``,
+        ``f₁ = TQ``, ``f₂ = Rμ``, ``a_k = A⁻¹f_k``.
+
+    Raises
+    ------
+    ShapeError, NonFiniteError
+        ``f`` not a finite 3-vector.
+
+    Examples
+    --------
+    >>> from planargeo.mechanics.joints import revolute
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
+    >>> v = wrench_parts(j.s, j.R, A, [0.0, 1.0, 2.0])     # 1 N upwards on the line x = 2
+    >>> float(v["Q"][0]), v["f1"] + v["f2"]                 # Q = sᵀf: the moment 2
+    (2.0, array([0., 1., 2.]))
+    """
+    f = as_vec3(f, "f")
+    dec = Decomposition(A, s, R)
+    Q, mu = dec.split_wrench(f)                           # (sᵀf, Uᵀf), 6.38
+    f1, f2 = dec.T @ Q, dec.R @ mu
+    return {"T": dec.T, "U": dec.U, "Q": Q, "mu": mu, "f1": f1, "f2": f2,
+            "a1": np.linalg.solve(dec.A, f1), "a2": np.linalg.solve(dec.A, f2)}
+
+
+def _arrow_scale(f, scale, arrow_length) -> float:
+    """Data units per newton: ``arrow_length / |F|`` when a fixed arrow length is asked for."""
+    if arrow_length is not None:
+        F = math.hypot(float(f[0]), float(f[1]))
+        return 0.0 if F == 0.0 else float(arrow_length) / F
+    return 0.0 if scale is None else float(scale)
+
+
+def _split(pic, vals, show, names, descs, *, aims, anchors, scale, arrow_length, show_T, prefix):
+    """Draw the axis ``T`` and the chosen parts ``(a_k, f_k)``; the elements and ``"values"``."""
+    out: dict = {"values": vals}
+    T = vals["T"]
+    aims, anchors = dict(aims or {}), dict(anchors or {})
+    if show_T:
+        for j in range(T.shape[1]):
+            n = "T" if T.shape[1] == 1 else f"T{j + 1}"
+            out[n] = _line(pic, prefix + n, T[:, j], names.get(n, _tex("T", T.shape[1], j)),
+                           role="construct", symbol=_tex("T", T.shape[1], j),
+                           desc="axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.36): "
+                                + _line_words(T[:, j]),
+                           anchor=anchors.get(n), side=-1.0, aims=aims, key=n)
+    for k in show:
+        a, f = vals[f"a{k}"], vals[f"f{k}"]
+        ka, kf = f"a{k}", f"f{k}"
+        out[ka] = _point(pic, prefix + ka, a, names.get(ka), role="accel", symbol=f"$a_{k}$",
+                         desc=descs[ka] + _accel_words(a), glyph=True, aims=aims, key=ka)
+        if math.hypot(float(f[0]), float(f[1])) > 0.0:
+            at = anchors.get(kf)
+            _force_arrow(pic, prefix + kf, f, scale=_arrow_scale(f, scale, arrow_length),
+                         anchor=_centre(pic) if at is None else at, role="wrench",
+                         symbol=f"$f_{k}$", label=names.get(kf) or "",
+                         desc=descs[kf] + _wrench_words(f))
+        else:                                   # a couple (or nothing): the picture's couple glyph
+            pic.line(prefix + kf, f, role="wrench", symbol=f"$f_{k}$", label=names.get(kf) or "",
+                     desc=descs[kf] + _wrench_words(f))
+        out[kf] = pic.elements[-1]
+        _aim(out[kf], aims, kf)
+    return out
+
+
+def twist_split(pic: Picture, s, R, A, a, *, parts=(1, 2), names=None, aims=None, anchors=None,
+                scale=1.0, arrow_length=None, show_T: bool = True, prefix: str = "") -> dict:
+    """An acceleration split by a joint, and the forces of its parts (thesis 6.44, 6.75–6.76, Fig. 6.3).
+
+    ``a = s ψ + U γ`` with ``ψ = Tᵀa``, ``γ = Rᵀa`` (6.44, 6.62): ``a₁ = sψ``
+    turns the body about the joint, ``a₂ = Uγ`` lies on the axis ``T``.  Their
+    forces ``f_k = A a_k`` add up to ``A a`` (the inertia decomposition
+    ``A = T sᵀA + R UᵀA``, 6.76): ``f₁ = T sᵀA a`` is a multiple of ``T``,
+    ``f₂ = R UᵀA a`` passes through the joint.
+
+    Parameters
+    ----------
+    pic : Picture
+        Where to draw.
+    s, R, A : array_like
+        As in :func:`decomposition`.
+    a : array_like (3,)
+        The acceleration to split.
+    parts : sequence of {1, 2}
+        Which parts to draw (e.g. one per panel); the values hold both.
+    names : dict, optional
+        Labels keyed ``"a1"``, ``"f1"``, ``"a2"``, ``"f2"``, ``"T"`` (``""``: none).
+    aims : dict, optional
+        Per key: the pixel offset ``(dx, dy)`` (y up) at which the placer tries the label first.
+    anchors : dict, optional
+        Per key ``"T"``, ``"f1"``, ``"f2"``: where on the line the label (``T``) or the
+        force's arrow and label sit (the point's foot on it; default: the view's centre).
+    scale, arrow_length : float, optional
+        Force arrows: data units per newton, or (``arrow_length``) a fixed length in data
+        units whatever the magnitude.  ``scale=None`` and no ``arrow_length``: no arrow.
+    show_T : bool
+        Draw the axis ``T`` (a construction line).
+    prefix : str
+        Prefix of the element ids.
+
+    Returns
+    -------
+    dict
+        Elements ``{"T", "a1", "f1", "a2", "f2"}`` (those drawn) and ``"values"``:
+        ``{"T", "U", "psi", "gamma", "a1", "a2", "f1", "f2"}`` (:func:`twist_parts`).
+
+    Raises
+    ------
+    InputError
+        ``pic`` not a Picture, ``parts`` not a selection of 1 and 2.
+    ShapeError, NonFiniteError
+        ``a`` not a finite 3-vector.
+
+    Examples
+    --------
+    >>> from planargeo.draw.picture import Picture
+    >>> from planargeo.mechanics.joints import revolute
+    >>> from planargeo.screws.twists import inertia_matrix, unit_rotation
+    >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
+    >>> pic = Picture((-1, 3, -2, 2), size=(300, 300), ticks=False)
+    >>> out = twist_split(pic, j.s, j.R, A, unit_rotation([2.0, 1.0]), arrow_length=0.6)
+    >>> v = out["values"]
+    >>> bool(np.allclose(v["a1"] + v["a2"], unit_rotation([2.0, 1.0])))    # a = sψ + Uγ (6.44)
+    True
+    >>> [p["p"] for p in out["f1"]["parts"]]          # the line, its arrow, its label
+    ['path', 'arrow', 'text']
+    >>> twist_split(pic, j.s, j.R, A, [0.0, 0.0, 1.0], parts=(3,))
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: parts must be a non-empty selection of 1 and 2, got (3,)
+    """
+    _check_picture(pic)
+    show = _parts_arg(parts)
+    vals = twist_parts(s, R, A, a)
+    nm = {"a1": r"$a_1 = s\psi$", "a2": r"$a_2 = U\gamma$", "f1": "$f_1 = Aa_1$",
+          "f2": "$f_2 = Aa_2$", **(names or {})}
+    descs = {"a1": "the part of a about the joint, a₁ = sψ, ψ = Tᵀa (6.44): ",
+             "a2": "the part of a on the axis T, a₂ = Uγ, γ = Rᵀa (6.44): ",
+             "f1": "the force of a₁, f₁ = A a₁ = T sᵀA a, a multiple of T (6.76): ",
+             "f2": "the force of a₂, f₂ = A a₂ = R UᵀA a, through the joint (6.76): "}
+    return _split(pic, vals, show, nm, descs, aims=aims, anchors=anchors, scale=scale,
+                  arrow_length=arrow_length, show_T=show_T, prefix=prefix)
+
+
+def wrench_split(pic: Picture, s, R, A, f, *, parts=(1, 2), names=None, aims=None, anchors=None,
+                 scale=1.0, arrow_length=None, show_T: bool = True, prefix: str = "") -> dict:
+    """A force split by a joint, and the accelerations of its parts (thesis 6.38, 6.77–6.81, Fig. 6.4).
+
+    ``f = T Q + R μ`` with ``Q = sᵀf``, ``μ = Uᵀf`` (6.38, 6.61): the active
+    part ``f₁ = TQ`` (a multiple of the axis ``T``) turns the body about the
+    joint, ``a₁ = A⁻¹f₁ = s TᵀA⁻¹f``; the reaction ``f₂ = Rμ`` passes through
+    the joint and produces ``a₂ = A⁻¹f₂ = U RᵀA⁻¹f`` on ``T`` (6.80–6.81).
+
+    Parameters
+    ----------
+    pic : Picture
+        Where to draw.
+    s, R, A, parts, names, aims, anchors, scale, arrow_length, show_T, prefix
+        As :func:`twist_split`.
+    f : array_like (3,)
+        The force to split.
+
+    Returns
+    -------
+    dict
+        As :func:`twist_split`; ``"values"``: ``{"T", "U", "Q", "mu", "f1", "f2", "a1", "a2"}``
+        (:func:`wrench_parts`).
+
+    Raises
+    ------
+    InputError
+        ``pic`` not a Picture, ``parts`` not a selection of 1 and 2.
+    ShapeError, NonFiniteError
+        ``f`` not a finite 3-vector.
+
+    Examples
+    --------
+    >>> from planargeo.draw.picture import Picture
+    >>> from planargeo.mechanics.joints import revolute
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
+    >>> pic = Picture((-1, 3, -2, 2), size=(300, 300), ticks=False)
+    >>> f = np.array([0.0, 1.0, 2.0])                 # 1 N upwards on the line x = 2 (4.27)
+    >>> out = wrench_split(pic, j.s, j.R, A, f, parts=[1])
+    >>> v = out["values"]
+    >>> bool(np.allclose(v["f1"] + v["f2"], f)), float(v["Q"][0])   # Q = sᵀf: the moment 2
+    (True, 2.0)
+    >>> sorted(k for k in out if k != "values")
+    ['T', 'a1', 'f1']
+    """
+    _check_picture(pic)
+    show = _parts_arg(parts)
+    vals = wrench_parts(s, R, A, f)
+    nm = {"a1": "$a_1 = A^{-1}f_1$", "a2": "$a_2 = A^{-1}f_2$", "f1": "$f_1 = TQ$",
+          "f2": r"$f_2 = R\mu$", **(names or {})}
+    descs = {"a1": "the acceleration of f₁, a₁ = A⁻¹f₁ = s TᵀA⁻¹f, about the joint (6.80): ",
+             "a2": "the acceleration of f₂, a₂ = A⁻¹f₂ = U RᵀA⁻¹f, on the axis T (6.81): ",
+             "f1": "the active part of f, f₁ = TQ, Q = sᵀf (6.38): ",
+             "f2": "the reaction part of f, f₂ = Rμ, μ = Uᵀf, through the joint (6.38): "}
+    return _split(pic, vals, show, nm, descs, aims=aims, anchors=anchors, scale=scale,
+                  arrow_length=arrow_length, show_T=show_T, prefix=prefix)
+
+
+# --------------------------------------------------------------------------- projective step
+def projective_step(pic: Picture, s, R, A, a_prev, a, kappa, *,
+                    names=("$T_i$", "$s_i$", "$a_{i-1}$", "$a_i$"), aims=None, T_anchor=None,
+                    T_side: float = 1.0, prefix: str = "") -> dict:
+    """Projective kinematics across one joint (thesis 6.98–6.101, Fig. 6.5).
+
+    With ``Tᵢ`` the percussion space of joint ``i`` for the body inertia ``A``
+    (6.36), ``ψᵢ = Tᵢᵀaᵢ`` and ``ψᵢ₋₁ = Tᵢᵀaᵢ₋₁`` are the absolute accelerations
+    along the joint (``Tᵢ`` picks the ``sᵢ`` component of an acceleration, 6.44),
+    and the joint acceleration is ``q̈ᵢ = ψᵢ − Tᵢᵀ(aᵢ₋₁ + κᵢ)`` (6.101).
+
+    Parameters
+    ----------
+    pic : Picture
+        Where to draw.
+    s, R : array_like (3, k), (3, 3-k)
+        Motion and reaction spaces of joint ``i``.
+    A : array_like (3, 3)
+        The body inertia.
+    a_prev, a : array_like (3,)
+        Accelerations of the parent and of the body.
+    kappa : array_like (3,)
+        The joint's bias acceleration ``κᵢ``.
+    names : tuple of 4 str
+        Labels of ``Tᵢ``, ``sᵢ``, ``aᵢ₋₁``, ``aᵢ`` (also their symbols).
+    aims : dict, optional
+        Per key ``"T"``, ``"s"``, ``"a_prev"``, ``"a"``: the pixel offset ``(dx, dy)`` (y up)
+        at which the placer tries the label first.
+    T_anchor : (x, y), optional
+        Near which point of ``Tᵢ`` its label sits.
+    T_side : float
+        +1: ``Tᵢ``'s label above the line, -1: below.
+    prefix : str
+        Prefix of the element ids.
+
+    Returns
+    -------
+    dict
+        The elements ``{"T", "s", "a_prev", "a"}`` (first columns for a multi-dof joint)
+        and ``"values"``: ``{"T", "psi", "psi_prev", "qdd"}``.
+
+    Raises
+    ------
+    InputError
+        ``pic`` not a Picture, or ``names`` not four labels.
+    ShapeError, NonFiniteError
+        An argument that is not a finite homogeneous vector, named.
+
+    Examples
+    --------
+    >>> from planargeo.draw.picture import Picture
+    >>> from planargeo.mechanics.joints import revolute
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
+    >>> a = 2.0 * j.s[:, 0]                            # turning about the joint at 2 rad/s²
+    >>> pic = Picture((-1, 3, -2, 2), size=(300, 300), ticks=False)
+    >>> out = projective_step(pic, j.s, j.R, A, np.zeros(3), a, np.zeros(3))
+    >>> out["values"]["qdd"].round(12).tolist()
+    [2.0]
+    """
+    _check_picture(pic)
+    names = tuple(names)
+    if len(names) != 4:
+        raise InputError(f"names must be 4 labels (Tᵢ, sᵢ, aᵢ₋₁, aᵢ), got {len(names)}")
+    a_prev, a, kap = as_vec3(a_prev, "a_prev"), as_vec3(a, "a"), as_vec3(kappa, "kappa")
+    dec = Decomposition(A, s, R)
+    T = dec.T
+    psi, psi_prev = T.T @ a, T.T @ a_prev
+    qdd = psi - T.T @ (a_prev + kap)
+    aims = dict(aims or {})
+    out = {"T": _line(pic, prefix + "T", T[:, 0], names[0], role="momentum", symbol=names[0],
+                      desc="axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.36), picks the "
+                           f"joint's part of an acceleration: {_line_words(T[:, 0])}",
+                      anchor=T_anchor, side=T_side, aims=aims, key="T"),
+           "s": _point(pic, prefix + "s", dec.s[:, 0], names[1], role="twist", symbol=names[1],
+                       desc=f"the joint, its unit twist (6.1): {where(dec.s[:, 0])}", glyph=False,
+                       aims=aims, key="s"),
+           "a_prev": _point(pic, prefix + "a_prev", a_prev, names[2], role="accel", symbol=names[2],
+                            desc=f"acceleration of the parent, ψ = Tᵀa = {num(psi_prev[0])} rad/s² "
+                                 f"along the joint (6.99): {_accel_words(a_prev)}",
+                            glyph=True, aims=aims, key="a_prev"),
+           "a": _point(pic, prefix + "a", a, names[3], role="accel", symbol=names[3],
+                       desc=f"acceleration of the body, ψ = Tᵀa = {num(psi[0])} rad/s² along the joint, "
+                            f"q̈ = ψᵢ − Tᵀ(aᵢ₋₁ + κ) = {num(qdd[0])} rad/s² (6.101): {_accel_words(a)}",
+                       glyph=True, aims=aims, key="a")}
+    out["values"] = {"T": T, "psi": psi, "psi_prev": psi_prev, "qdd": qdd}
+    return out
