@@ -1,0 +1,568 @@
+"""Pole and polar constructions on a :class:`~planargeo.draw.picture.Picture` (thesis 5.2, 5.4, 5.5).
+
+Each function takes the picture first and the quantities after it, computes what
+the construction needs with the math modules (conic polarity ``C p``, the inertia's
+axis of percussion ``I a``, the momentum ``I v``) and adds plain elements to the
+picture, each with a stable id, a role, its thesis symbol and a one-line
+description.  They return the elements they made, keyed by name (and the
+numbers of the construction), so that a figure can aim a label or read a place.
+
+* :func:`polar_exterior` — the polar of an exterior point: the tangents from it,
+  their contacts, and the line joining them (5.36, Fig. 5.2);
+* :func:`polar_interior` — the polar of an interior point from two chords and the
+  poles of the chords (5.36, Theorem 12, Fig. 5.3);
+* :func:`percussion` — the axis of percussion ``f = I a`` of an acceleration
+  pole, ``ρ²/d`` beyond the centre of mass (5.64–5.68, Fig. 5.6);
+* :func:`power` — powerless force and acceleration: ``vᵀf = 0``, ``pᵀa = 0``
+  with ``p = I v`` (5.69–5.74, Fig. 5.7).
+
+Examples
+--------
+>>> import numpy as np
+>>> from planargeo.draw.picture import Picture
+>>> from planargeo.geometry.conics import conic_circle
+>>> pic = Picture((-3, 3, -3, 3), size=(300, 300), ticks=False)
+>>> out = polar_exterior(pic, conic_circle([0.0, 0.0], 1.0), [0.0, -2.0, 1.0])   # P = (2, 0)
+>>> sorted(out["L"]["parts"][0]["xy"].round(6).tolist())   # the polar x = 1/2, clipped to the view
+[[0.5, -3.0], [0.5, 3.0]]
+>>> out["L"]["desc"]
+'polar L = C P of P (5.36): the line through the contacts (0.5, 0.866) and (0.5, -0.866)'
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo.draw.geometry import _mat, _vec, point_xy
+from planargeo.draw.picture import PX_PER_PT, Picture
+from planargeo.draw.pictures._words import num, pair
+from planargeo.draw.pictures.common import label_line, point_along
+from planargeo.draw.style import COLORS
+from planargeo.errors import InputError
+from planargeo.geometry.conics import (line_conic_intersections, polar_construction_exterior,
+                                       polar_construction_interior)
+from planargeo.geometry.projective import from_direction, from_xy, is_ideal, join, meet, to_xy
+from planargeo.screws.inertia import centre_of_mass, percussion_axis, radius_of_gyration
+
+__all__ = ["line_conic_points", "interior_construction", "power_values", "polar_exterior",
+           "polar_interior", "percussion", "power"]
+
+
+def _picture(pic) -> Picture:
+    if not isinstance(pic, Picture):
+        raise InputError(f"pic must be a planargeo.draw.picture.Picture, got {type(pic).__name__}")
+    return pic
+
+
+def _xy(p) -> str:
+    """``(x, y)`` of a point, or where at infinity it lies (a direction)."""
+    xy = point_xy(p)
+    if xy is None:
+        d = np.array([-p[1], p[0]]) / math.hypot(p[0], p[1])
+        return f"at infinity in the direction {pair(d, 3)}"
+    return pair(xy, 3)
+
+
+def _line_words(l) -> str:
+    """A line ``[fx, fy, τ]`` in words: its point nearest the origin and its direction."""
+    fx, fy, tz = (float(v) for v in l)
+    F = math.hypot(fx, fy)
+    if F == 0.0:
+        return "the line at infinity"
+    return f"through {pair((fy * tz / F ** 2, -fx * tz / F ** 2), 3)}, direction {pair((fx / F, fy / F), 3)}"
+
+
+def _last(pic: Picture) -> dict:
+    return pic.elements[-1]
+
+
+def line_conic_points(C, L) -> list[np.ndarray]:
+    """Real common points of the line ``L`` and the conic ``C`` (5.38; 0 or 2 homogeneous points).
+
+    Parameters
+    ----------
+    C : array_like (3, 3)
+        A conic.
+    L : array_like (3,)
+        A line.
+
+    Returns
+    -------
+    list of ndarray (3,)
+        The two real common points, or an empty list when the line misses the conic.
+
+    Raises
+    ------
+    InputError
+        An argument that is not a finite homogeneous vector (or symmetric 3×3 matrix), named.
+
+    Examples
+    --------
+    >>> from planargeo.geometry.conics import conic_circle
+    >>> C = conic_circle([0.0, 0.0], 2.0)
+    >>> sorted(to_xy(X).round(6).tolist() for X in line_conic_points(C, [1.0, 0.0, 0.0]))  # y = 0
+    [[-2.0, 0.0], [2.0, 0.0]]
+    >>> line_conic_points(C, [1.0, 0.0, -5.0])            # y = 5 misses the circle
+    []
+    """
+    X, real = line_conic_intersections(_mat(C, "C"), _vec(L, "L"))
+    return [X[0], X[1]] if bool(real) else []
+
+
+# --------------------------------------------------------------------------- pole / polar
+def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=None,
+                   prefix: str = "") -> dict:
+    """Polar of an exterior point (thesis 5.36, Fig. 5.2): tangents from ``p``; ``L`` joins their contacts.
+
+    Adds the conic ``C``, the two tangents from ``p`` (construction lines), their
+    contacts (marks), the polar ``L = C p`` (labelled beside it) and the point.
+
+    Parameters
+    ----------
+    pic : Picture
+        Where to draw.
+    C : array_like (3, 3)
+        A real conic.
+    p : array_like (3,)
+        An exterior point.
+    names : (str, str)
+        Symbols (labels) of the point and its polar.
+    L_anchor : (x, y), optional
+        Near which point of the polar its label sits (default: the view's centre).
+    prefix : str
+        Put before every id (two constructions in one picture).
+
+    Returns
+    -------
+    dict
+        The elements ``{"conic", "P", "L", "tangents", "contacts"}`` and
+        ``"construction"`` (:class:`~planargeo.geometry.conics.ExteriorConstruction`).
+
+    Raises
+    ------
+    InputError
+        ``pic`` not a picture, ``C`` or ``p`` not finite (or ``C`` not symmetric), or an
+        interior point (no real tangents).
+
+    Examples
+    --------
+    >>> from planargeo.geometry.conics import conic_circle
+    >>> pic = Picture((-3, 3, -3, 3), size=(300, 300), ticks=False)
+    >>> out = polar_exterior(pic, conic_circle([0.0, 0.0], 1.0), from_xy([2.0, 0.0]))
+    >>> [part["x"] for part in out["contacts"]["parts"]]          # both at x = 1/2
+    [0.5, 0.5]
+    >>> sorted(round(part["y"], 6) for part in out["contacts"]["parts"])   # y = ±√3/2
+    [-0.866025, 0.866025]
+    >>> polar_exterior(pic, conic_circle([0.0, 0.0], 1.0), from_xy([0.2, 0.0]))
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: p has no real tangents to C: it lies inside the conic (or C is imaginary); use on_interior='nan' to get NaN instead
+    """
+    pic = _picture(pic)
+    C, p = _mat(C, "C"), _vec(p, "p")
+    K = polar_construction_exterior(C, p)
+    P, L = names
+    contacts = [to_xy(X) for X in K.contacts]
+    out = {"construction": K}
+    pic.conic(prefix + "C", C, role="conic", symbol="C", desc="the conic C (5.35): the points x with xᵀCx = 0")
+    out["conic"] = _last(pic)
+    out["tangents"] = []
+    for k, (t, xy) in enumerate(zip(K.tangents, contacts)):
+        pic.line(f"{prefix}tangent {k + 1}", t, role="construct", arrow=False, label="",
+                 symbol=f"T{k + 1}",
+                 desc=f"tangent {k + 1} from P to C (5.38–5.39): touches C at {pair(xy, 3)}")
+        out["tangents"].append(_last(pic))
+    pic.marks(prefix + "contacts", contacts, role="construct", size=3.5 * PX_PER_PT,
+              color=COLORS["construct"], z=5, symbol="contacts",
+              desc=f"where the tangents from P touch C (5.38): {pair(contacts[0], 3)} and {pair(contacts[1], 3)}")
+    out["contacts"] = _last(pic)
+    pic.line(prefix + "L", K.polar, role="wrench", arrow=False, label="", symbol=L,
+             desc=f"polar L = C P of P (5.36): the line through the contacts {pair(contacts[0], 3)} "
+                  f"and {pair(contacts[1], 3)}")
+    label_line(pic, prefix + "L", L, anchor=L_anchor)
+    out["L"] = _last(pic)
+    pic.point(prefix + "P", p, role="twist", glyph=False, symbol=P,
+              desc=f"the point P, outside C (5.36): at {_xy(p)}")
+    out["P"] = _last(pic)
+    return out
+
+
+def interior_construction(C, p, angles=(0.35, 1.9)):
+    """The polar construction of an interior point with its two chords at ``angles`` (5.36, Theorem 12).
+
+    Parameters
+    ----------
+    C : array_like (3, 3)
+        A real conic.
+    p : array_like (3,)
+        A point inside it (a finite point).
+    angles : (float, float)
+        Directions of the two chords through ``p`` (radians from the x axis).
+
+    Returns
+    -------
+    InteriorConstruction
+        :class:`~planargeo.geometry.conics.InteriorConstruction`.
+
+    Raises
+    ------
+    InputError
+        ``C`` or ``p`` not finite, ``p`` at infinity, not two angles, or a chord that does not
+        cut the conic in two points.
+
+    Examples
+    --------
+    >>> from planargeo.geometry.conics import conic_circle
+    >>> K = interior_construction(conic_circle([0.0, 0.0], 2.0), from_xy([1.0, 0.0]), (0.7, 2.0))
+    >>> [round(float(to_xy(R)[0]), 9) for R in K.poles]       # both on the polar x = r²/d = 4
+    [4.0, 4.0]
+    """
+    C, p = _mat(C, "C"), _vec(p, "p")
+    if bool(is_ideal(p)):
+        raise InputError("p must be a finite point (inside the conic), got a point at infinity")
+    a = np.asarray(angles, dtype=float)
+    if a.shape != (2,) or not np.all(np.isfinite(a)):
+        raise InputError(f"angles must be two finite directions in radians, got {angles!r}")
+    pxy = to_xy(p)
+    lines = np.stack([join(p, from_xy(pxy + [np.cos(t), np.sin(t)])) for t in a])
+    return polar_construction_interior(C, p, lines=lines)
+
+
+def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L = CP$"),
+                   L_anchor=None, prefix: str = "") -> dict:
+    """Polar of an interior point (thesis 5.36, Theorem 12, Fig. 5.3).
+
+    Two chords through ``p`` (at ``angles``); the tangents at each chord's ends
+    meet in a point ``R_k``; the two points span ``L``.  Each of them is the pole
+    of its chord (Theorem 12), which is why ``L`` passes through both.  A chord
+    that is a diameter has its pole at infinity (an arrow at the edge of the view,
+    pointing along its direction).
+
+    Parameters
+    ----------
+    pic : Picture
+        Where to draw.
+    C : array_like (3, 3)
+        A real conic.
+    p : array_like (3,)
+        An interior point.
+    angles : (float, float)
+        Directions (radians) of the two chords through ``p``.
+    names : (str, str)
+        Symbols (labels) of the point and its polar.
+    L_anchor : (x, y), optional
+        Near which point of the polar its label sits (default: the view's centre).
+    prefix : str
+        Put before every id.
+
+    Returns
+    -------
+    dict
+        The elements ``{"conic", "P", "chords", "tangents", "chord_points", "R1", "R2", "L"}``
+        and ``"construction"`` (:class:`~planargeo.geometry.conics.InteriorConstruction`).
+
+    Raises
+    ------
+    InputError
+        ``pic`` not a picture, bad ``C``, ``p`` or ``angles``, or a chord that misses the conic
+        (``p`` not inside it).
+
+    Examples
+    --------
+    >>> from planargeo.geometry.conics import conic_circle
+    >>> pic = Picture((-5, 5, -5, 5), size=(300, 300), ticks=False)
+    >>> out = polar_interior(pic, conic_circle([0.0, 0.0], 2.0), from_xy([1.0, 0.0]), angles=(0.7, 2.0))
+    >>> sorted(out["L"]["parts"][0]["xy"].round(9).tolist())  # x = r²/d = 4
+    [[4.0, -5.0], [4.0, 5.0]]
+    >>> [round(out[k]["parts"][0]["x"], 9) for k in ("R1", "R2")]
+    [4.0, 4.0]
+    """
+    pic = _picture(pic)
+    C, p = _mat(C, "C"), _vec(p, "p")
+    K = interior_construction(C, p, angles)
+    P, L = names
+    out = {"construction": K}
+    pic.conic(prefix + "C", C, role="conic", symbol="C", desc="the conic C (5.35): the points x with xᵀCx = 0")
+    out["conic"] = _last(pic)
+    out["chords"], out["tangents"] = [], []
+    ends = [[to_xy(X) for X in K.chord_points[k]] for k in range(2)]
+    for k in range(2):
+        pic.line(f"{prefix}chord {k + 1}", K.lines[k], role="construct", arrow=False, label="",
+                 symbol=f"chord {k + 1}",
+                 desc=f"chord {k + 1} through P (5.36, step 1): cuts C at {pair(ends[k][0], 3)} and "
+                      f"{pair(ends[k][1], 3)}")
+        out["chords"].append(_last(pic))
+    for k in range(2):
+        for j in range(2):
+            pic.line(f"{prefix}tangent {k + 1}.{j + 1}", K.tangents[k, j], role="construct", arrow=False,
+                     label="", width=0.6 * PX_PER_PT, symbol=f"tangent {k + 1}.{j + 1}",
+                     desc=f"tangent to C at the end {pair(ends[k][j], 3)} of chord {k + 1} (5.38–5.39)")
+            out["tangents"].append(_last(pic))
+    pts = [xy for pair_ in ends for xy in pair_]
+    pic.marks(prefix + "chord points", pts, role="construct", size=3.0 * PX_PER_PT, color=COLORS["construct"],
+              z=5, symbol="chord ends", desc="where the two chords through P cut C (5.38): "
+                                             + ", ".join(pair(xy, 3) for xy in pts))
+    out["chord_points"] = _last(pic)
+    for k in range(2):
+        R = K.poles[k]
+        sym = f"$R_{k + 1}$"
+        point_along(pic, f"{prefix}R{k + 1}", R, role="accel", symbol=sym,
+                    desc=f"pole R{'₁₂'[k]} of chord {k + 1} (Theorem 12): where the tangents at its ends "
+                         f"meet, {'at ' if point_xy(R) is not None else ''}{_xy(R)}")
+        out[f"R{k + 1}"] = _last(pic)
+    pic.line(prefix + "L", K.polar, role="wrench", arrow=False, label="", symbol=L,
+             desc=f"polar L = C P of P (5.36): the line through R₁ and R₂, {_line_words(K.polar)}")
+    label_line(pic, prefix + "L", L, anchor=L_anchor)
+    out["L"] = _last(pic)
+    pic.point(prefix + "P", p, role="twist", glyph=False, symbol=P,
+              desc=f"the point P, inside C (5.36): at {_xy(p)}")
+    out["P"] = _last(pic)
+    return out
+
+
+# --------------------------------------------------------------------------- inertia
+def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = True, f_anchor=None,
+               prefix: str = "") -> dict:
+    """Axis of percussion ``f = I a`` of an acceleration pole ``a`` (thesis 5.64–5.68, Fig. 5.6).
+
+    Adds the inertia (its circle of gyration, dashed), the pole and the axis; with
+    ``dims`` the distances ``d`` (pole to centre of mass) and ``ρ²/d`` (centre of mass
+    to the axis) along the line through both, and that line (the lever).
+
+    Parameters
+    ----------
+    pic : Picture
+        Where to draw.
+    I : array_like (3, 3)
+        The inertia.
+    a : array_like (3,)
+        The acceleration pole.
+    names : (str, str)
+        Symbols (labels) of the pole and the axis.
+    dims : bool
+        Dimension ``d`` and ``ρ²/d`` (when the pole is finite and not at the centre of mass).
+    f_anchor : (x, y), optional
+        Near which point of the axis its label sits.
+    prefix : str
+        Put before every id.
+
+    Returns
+    -------
+    dict
+        The elements ``{"inertia", "a", "f"}`` and, with ``dims``, ``"dims"`` (the two
+        dimensions' element dicts) and ``"lever"``; ``"values"``: ``f`` (the axis, ``I a``),
+        ``c`` (centre of mass), ``foot`` (where the axis crosses the lever, or None).
+
+    Raises
+    ------
+    InputError
+        ``pic`` not a picture, ``I`` not a finite symmetric 3×3 matrix, ``a`` not a finite
+        homogeneous vector.
+
+    Examples
+    --------
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> pic = Picture((-2, 3, -2, 2), size=(300, 240), ticks=False)
+    >>> I = inertia_matrix(2.0, [0.0, 0.0], 2.0 * 0.6 ** 2)        # ρ = 0.6 about the origin
+    >>> out = percussion(pic, I, from_xy([-1.5, 0.0]))              # d = 1.5
+    >>> out["values"]["foot"].round(9).tolist()                     # ρ²/d = 0.24 beyond c
+    [0.24, 0.0]
+    >>> sorted(out["f"]["parts"][0]["xy"].round(9).tolist())        # the vertical axis x = 0.24
+    [[0.24, -2.0], [0.24, 2.0]]
+    """
+    from planargeo.draw.sketch import dimension, segment
+
+    pic = _picture(pic)
+    I, a = _mat(I, "inertia"), _vec(a, "a")
+    f = percussion_axis(I, a)
+    c = centre_of_mass(I)
+    rho = float(radius_of_gyration(I))
+    a_name, f_name = names
+    foot = None
+    if not bool(is_ideal(a)) and np.any(f[:2]) and not np.allclose(to_xy(a), c, rtol=0, atol=1e-12 * max(1.0, rho)):
+        foot = to_xy(meet(f, join(a, from_xy(c))))
+    out = {"values": {"f": f, "c": c, "foot": foot}}
+    pic.conic(prefix + "I", I, role="inertia", symbol="I", label="",
+              desc=f"inertia I (5.64) as its circle of gyration: radius ρ = {num(rho)} m about the centre of "
+                   f"mass {pair(c, 3)} m")
+    out["inertia"] = _last(pic)
+    if foot is not None:
+        r = float(np.hypot(*(foot - c)))
+        where_f = f"r = ρ²/d = {num(r)} m beyond the centre of mass"
+    elif not np.any(f[:2]):
+        where_f = "a pure couple (the pole is at the centre of mass)"
+    else:
+        where_f = "through the centre of mass (the pole is at infinity)"
+    pic.line(prefix + "f", f, role="wrench", arrow=False, label="", symbol=f_name,
+             desc=f"axis of percussion f = I a (5.64–5.68): {where_f}")
+    label_line(pic, prefix + "f", f_name, anchor=f_anchor)
+    out["f"] = _last(pic)
+    pic.point(prefix + "a", a, role="accel", symbol=a_name,
+              desc=f"acceleration pole a (5.64): the point of the body with no acceleration, "
+                   f"{'at ' if point_xy(a) is not None else ''}{_xy(a)}")
+    out["a"] = _last(pic)
+    if dims and foot is not None:
+        axy = to_xy(a)
+        segment(pic, prefix + "lever", axy, foot)
+        out["lever"] = _last(pic)
+        out["lever"]["symbol"] = "lever"
+        out["lever"]["desc"] = "the line from the pole a through the centre of mass to the axis (5.68)"
+        d = float(np.hypot(*(axy - c)))
+        out["dims"] = []
+        for id_, (q0, q1), text, desc in (
+                ("d", (axy, c), "$d$", f"distance d from the pole a to the centre of mass (5.68): {num(d)} m"),
+                ("rho2/d", (c, foot), r"$\rho^2/d$",
+                 f"distance ρ²/d from the centre of mass to the axis of percussion (5.68): {num(rho * rho / d)} m")):
+            dimension(pic, prefix + id_, q0, q1, text)
+            el = _last(pic)
+            el["symbol"], el["desc"] = text.strip("$").replace("\\rho", "ρ").replace("^2", "²"), desc
+            out["dims"].append(el)
+    return out
+
+
+# --------------------------------------------------------------------------- power
+def power_values(v, I, *, f_angle: float = 0.6, a_distance: float = 1.6) -> dict:
+    """The momentum ``p = I v``, a powerless force ``f`` and a powerless acceleration ``a`` (5.69–5.74).
+
+    ``f`` is the line through ``v`` whose direction is the momentum's turned by
+    ``f_angle`` (for a translation ``v``, an ideal point: the line through the
+    centre of mass along ``v``'s direction); ``a`` is the point of ``p`` at signed
+    distance ``a_distance`` from the foot of the perpendicular from the centre of
+    mass.  Ideal elements are ordinary values: ``v`` at the centre of mass makes
+    ``p`` a pure couple (the line at infinity), and ``a`` is then an ideal point (a
+    translation) in the direction turned by ``f_angle`` from the x axis.
+
+    Parameters
+    ----------
+    v : array_like (3,)
+        The velocity twist.
+    I : array_like (3, 3)
+        The inertia.
+    f_angle, a_distance : float
+        Placement (see above).
+
+    Returns
+    -------
+    dict
+        ``p``, ``f``, ``a`` (homogeneous), ``ef`` (``f``'s unit direction), ``c`` (centre of mass).
+
+    Raises
+    ------
+    InputError
+        ``v`` or ``I`` not finite (or ``I`` not symmetric), or a placement that is not a finite number.
+
+    Examples
+    --------
+    >>> from planargeo.screws.twists import inertia_matrix, unit_rotation
+    >>> I = inertia_matrix(1.0, [0.0, 0.0], 0.5)
+    >>> val = power_values(unit_rotation([1.0, 0.0]), I)
+    >>> float(unit_rotation([1.0, 0.0]) @ val["f"]), float(val["p"] @ val["a"])   # vᵀf = 0, pᵀa = 0
+    (0.0, 0.0)
+    """
+    v, I = _vec(v, "v"), _mat(I, "inertia")
+    for name, x in (("f_angle", f_angle), ("a_distance", a_distance)):
+        if not isinstance(x, (int, float, np.floating, np.integer)) or not math.isfinite(float(x)):
+            raise InputError(f"{name} must be a finite number, got {x!r}")
+    p = I @ v
+    c = centre_of_mass(I)
+    F = math.hypot(p[0], p[1])
+    ang = math.atan2(p[1], p[0]) + float(f_angle)        # atan2(0, 0) = 0: a couple p
+    ef = np.array([math.cos(ang), math.sin(ang)])
+    if v[2] != 0.0:
+        f = np.cross(v, from_direction(ef))              # through v, along ef
+    else:
+        f = np.cross(v, from_xy(c))                      # through c, parallel to the translation
+    if F != 0.0:   # on p, a_distance from the foot of the perpendicular from the centre of mass
+        e = p[:2] / F
+        foot = np.cross(p, np.cross(from_xy(c), from_direction([-e[1], e[0]])))   # homogeneous
+        a = foot + foot[2] * float(a_distance) * from_direction(e)   # no division by the weight: a
+        # nearly-couple p (v close to the centre of mass) gives a far, nearly ideal point
+    else:
+        a = from_direction(ef)                           # p at infinity: an ideal point
+    return {"p": p, "f": f, "a": a, "ef": ef, "c": c}
+
+
+def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
+          names=("$v$", "$p = Iv$", "$f$: $v^Tf = 0$", "$a$: $p^Ta = 0$"), f_label_at=1.6,
+          p_label_at=None, prefix: str = "") -> dict:
+    """Power relations (thesis 5.69–5.74, Fig. 5.7).
+
+    A powerless force ``f`` passes through the velocity pole ``v`` (``vᵀ f = 0``);
+    a powerless acceleration ``a`` lies on the momentum line ``p = I v``
+    (``pᵀ a = 0``).  The construction's
+    numbers are :func:`power_values`'s.  ``f_label_at`` and ``p_label_at`` put the
+    labels of ``f`` and ``p`` near the points at those signed distances along them
+    from ``v`` and from ``a`` (None: the view's centre).
+
+    Parameters
+    ----------
+    pic : Picture
+        Where to draw.
+    v : array_like (3,)
+        The velocity twist.
+    I : array_like (3, 3)
+        The inertia.
+    f_angle, a_distance : float
+        Placement of ``f`` and ``a`` (:func:`power_values`).
+    names : tuple of 4 str
+        Symbols (labels) of ``v``, ``p``, ``f`` and ``a``.
+    f_label_at, p_label_at : float, optional
+        Placement of the labels (see above).
+    prefix : str
+        Put before every id.
+
+    Returns
+    -------
+    dict
+        The elements ``{"inertia", "v", "p", "f", "a"}`` and ``"values"`` (:func:`power_values`).
+
+    Raises
+    ------
+    InputError
+        ``pic`` not a picture, ``v`` or ``I`` not finite, or a placement not a finite number.
+
+    Examples
+    --------
+    >>> from planargeo.screws.twists import inertia_matrix, unit_rotation
+    >>> pic = Picture((-3, 3, -3, 3), size=(300, 300), ticks=False)
+    >>> out = power(pic, unit_rotation([1.0, 0.0]), inertia_matrix(1.0, [0.0, 0.0], 0.5))
+    >>> sorted(out["p"]["parts"][0]["xy"].round(9).tolist())   # p = I v: x = −ρ²/d = −0.5 (5.71)
+    [[-0.5, -3.0], [-0.5, 3.0]]
+    >>> out["v"]["desc"]
+    'velocity pole v (5.69): at (1, 0), rate 1 rad/s'
+    """
+    pic = _picture(pic)
+    v, I = _vec(v, "v"), _mat(I, "inertia")
+    val = power_values(v, I, f_angle=f_angle, a_distance=a_distance)
+    p, f, a, ef = val["p"], val["f"], val["a"], val["ef"]
+    F = math.hypot(p[0], p[1])
+    f_anchor = to_xy(v) + float(f_label_at) * ef if (v[2] != 0.0 and f_label_at is not None) else None
+    p_anchor = (to_xy(a) + float(p_label_at) * p[:2] / F
+                if (p_label_at is not None and F != 0.0 and a[2] != 0.0) else None)
+    nv, np_, nf, na = names
+    out = {"values": val}
+    pic.conic(prefix + "I", I, role="inertia", symbol="I", label="",
+              desc=f"inertia I (5.64) as its circle of gyration about the centre of mass {pair(val['c'], 3)} m")
+    out["inertia"] = _last(pic)
+    rate = f", rate {num(v[2])} rad/s" if point_xy(v) is not None else " (a translation)"
+    pic.point(prefix + "v", v, role="twist", symbol=nv,
+              desc=f"velocity pole v (5.69): {'at ' if point_xy(v) is not None else ''}{_xy(v)}{rate}")
+    out["v"] = _last(pic)
+    if F != 0.0:
+        pic.line(prefix + "p", p, role="momentum", arrow=False, label="", symbol=np_,
+                 desc=f"momentum p = I v (5.71): {num(F)} kg·m/s, {_line_words(p)}")
+        label_line(pic, prefix + "p", np_, anchor=p_anchor)
+    else:
+        pic.line(prefix + "p", p, role="momentum", arrow=False, symbol=np_,
+                 desc=f"momentum p = I v (5.71): a pure angular momentum {num(p[2])} kg·m²/s (the line at infinity)")
+    out["p"] = _last(pic)
+    pic.line(prefix + "f", f, role="wrench", arrow=False, label="", symbol=nf,
+             desc=f"a powerless force f, vᵀf = 0 (5.69): a line through the pole v, {_line_words(f)}")
+    label_line(pic, prefix + "f", nf, anchor=f_anchor)
+    out["f"] = _last(pic)
+    pic.point(prefix + "a", a, role="accel", glyph=False, symbol=na,
+                desc=f"a powerless acceleration a, pᵀa = 0 (5.72): a point of the momentum line, "
+                     f"{'at ' if point_xy(a) is not None else ''}{_xy(a)}")
+    out["a"] = _last(pic)
+    return out
