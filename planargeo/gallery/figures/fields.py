@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo.draw.artists import plot_line, plot_point
-from planargeo.draw.constructions import label
-from planargeo.draw.layout import fit_view
+from planargeo.draw.picture import PX_PER_PT
+from planargeo.draw.pictures.kit import aim_label, label_at
+from planargeo.draw.sketch import label, panel, segment, show
 from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.gallery.figures import register
 from planargeo.screws.twists import X_P, X_P_inv_T, Twist, Wrench
@@ -43,18 +43,26 @@ def fig1_1(ax):
     assert np.allclose(np.einsum("ij,ij->i", V, r), 0.0)                       # perpendicular
     assert np.allclose(np.hypot(*V.T), OMEGA * np.hypot(*r.T))                  # |v_P| = ω r
     s = 0.17
+    pic = panel(ax, [[-1.75, -1.75], [1.75, 1.75]], margin=0.0)
+    # the field itself is a chart (matplotlib's quiver); the named elements are the picture's
     ax.quiver(P[:, 0], P[:, 1], s * V[:, 0], s * V[:, 1], angles="xy", scale_units="xy", scale=1,
               color=COLORS["twist"], width=0.006, headwidth=3.5, headlength=4, alpha=0.85)
-    plot_point(v, ax, text="pole of $v$", text_offset=(-40, -22))
+    pic.point("v", v, role="twist", symbol="v", label="pole of v",
+              desc=f"the pole of the twist v (4.10): at ({POLE[0]:g}, {POLE[1]:g}) m, ω = {OMEGA:g} rad/s")
+    aim_label(pic.elements[-1], (-0.6, -1.0), 20.0)
     k = 12                                           # one point named: P = (1, -1) and its v_P
     Q = P[k]
-    ax.plot(*Q, "o", color="#222222", ms=3)
-    label(Q, "$P$", ax=ax, offset=(-5, -3), ha="right", va="top")
-    label(Q + s * V[k], r"$v_P = \omega\, r$", ax=ax, offset=(0, -6), va="top",
-          color=COLORS["twist"])
-    ax.plot([POLE[0], Q[0]], [POLE[1], Q[1]], color=COLORS["construct"], lw=0.8, ls="--")
-    label((POLE + Q) / 2, "$r$", ax=ax, offset=(4, -10), color=COLORS["construct"])
-    fit_view([[-1.75, -1.75], [1.75, 1.75]], margin=0.0, ax=ax)
+    r = float(np.hypot(*(Q - POLE)))
+    segment(pic, "r", POLE, Q, label="r", symbol="r",
+            desc=f"r: the distance from the pole to P, {r:.3g} m")
+    pic.marks("P", [Q], role="text", color="#222222", size=3.0 * PX_PER_PT, symbol="P",
+              desc=f"a body point P = ({Q[0]:g}, {Q[1]:g}) m")
+    label_at(pic, Q, "P", gap=5.0)
+    aim_label(pic.elements[-1], (-1.0, -1.0), 5.0)
+    label(pic, "v_P", Q + s * V[k], "vₚ = ω r", offset=(0, -6), va="top", role="twist", symbol="vₚ",
+          desc=f"vₚ = ω r (1.3 with pitch 0): the velocity of the body point at P, "
+               f"{OMEGA * r:.3g} m/s, perpendicular to r")
+    show(pic, ax)
 
 
 @register(1.04, height=2.9)
@@ -63,6 +71,7 @@ def fig1_4(ax):
     τ_P about each point P, the last component of X_P⁻ᵀ f (4.24), is the force times P's signed
     distance from the line (1.43 with pitch 0), so its level lines run parallel to the line of
     action, zero on it, counter-clockwise on its left and clockwise on its right."""
+    pic = panel(ax, [[-1.75, -1.75], [1.75, 1.75]], margin=0.0)
     e = np.array([np.cos(ANGLE), np.sin(ANGLE)])
     f = Wrench.force(LINE_POINT, e).array
     t = np.linspace(-2.6, 2.6, 105)
@@ -72,6 +81,7 @@ def fig1_4(ax):
     # the closed form: τ_P = F · (signed distance of P, positive on the left of f)
     n_ = np.array([-e[1], e[0]])
     assert np.allclose(tau, (X - LINE_POINT[0]) * n_[0] + (Y - LINE_POINT[1]) * n_[1])
+    # the level lines are a chart (matplotlib's contour, with their values); the force is the picture's
     levels = np.arange(-1.5, 1.51, 0.5)
     ax.contour(X, Y, tau, levels=levels, colors=[COLORS["momentum"]], linewidths=0.8,
                linestyles=["--" if v < 0 else ":" if v > 0 else "-" for v in levels])
@@ -82,5 +92,7 @@ def fig1_4(ax):
     for p, text in (((-0.75, 1.5), "τ > 0: counter-clockwise"), ((0.85, -1.55), "τ < 0: clockwise")):
         ax.text(*p, text, fontsize=LABEL_PT, color=COLORS["momentum"], ha="center", va="center",
                 bbox=dict(fc="white", ec="none", pad=0.5))
-    plot_line(f, ax, role="wrench", scale=0.9, anchor=LINE_POINT + 0.4 * e, text="$f$")
-    fit_view([[-1.75, -1.75], [1.75, 1.75]], margin=0.0, ax=ax)
+    pic.line("f", f, role="wrench", symbol="f", anchor=LINE_POINT + 0.4 * e,
+             desc=f"the force f (4.27): 1 N along {np.degrees(ANGLE):g}° through "
+                  f"({LINE_POINT[0]:g}, {LINE_POINT[1]:g}) m, its line of action τ = 0")
+    show(pic, ax)
