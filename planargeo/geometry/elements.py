@@ -64,15 +64,13 @@ def _as_line_array(l, name: str = "l") -> np.ndarray:
 
 
 class _Homogeneous:
-    """Common base: one read-only array ``_a``, compared projectively and drawn for notebooks.
+    """Common base: one read-only array ``_a``, compared projectively.
 
-    A subclass names its drawing (``_svg``: a function of
-    :mod:`planargeo.geometry.svg` and its label).
+    Notebooks draw it with :mod:`planargeo.draw.notebook` (registered by ``import planargeo``).
     """
 
     __slots__ = ("_a",)
     __hash__ = None
-    _svg = ("", "")
 
     def __eq__(self, other):
         if not isinstance(other, type(self)):
@@ -81,23 +79,6 @@ class _Homogeneous:
 
     def __array__(self, dtype=None, copy=None):
         return np.array(self._a, dtype=dtype)
-
-    def _repr_svg_(self) -> str:
-        """A small drawing for notebooks, by :mod:`planargeo.geometry.svg` without matplotlib.
-
-        A point is a dot (an arrow to a point at infinity), a line the directed
-        line (a dashed frame at infinity), an imaginary conic its real partner
-        (thesis 10.2.3).
-
-        Returns
-        -------
-        str
-            An SVG document.
-        """
-        from planargeo.geometry import svg
-
-        draw, label = self._svg
-        return getattr(svg, draw)(self._a, label=label)
 
 
 class _PointOrLine(_Homogeneous):
@@ -235,7 +216,6 @@ class Point(_PointOrLine):
     """
 
     __slots__ = ()
-    _svg = ("point_svg", "P")
     _normalize = staticmethod(_p.normalize_point)
 
     # constructors
@@ -385,7 +365,6 @@ class Line(_PointOrLine):
     """
 
     __slots__ = ()
-    _svg = ("line_svg", "l")
     _normalize = staticmethod(_p.normalize_line)
 
     @classmethod
@@ -553,7 +532,6 @@ class Conic(_Homogeneous):
     """
 
     __slots__ = ()
-    _svg = ("conic_svg", "C")
 
     def __init__(self, matrix):
         if isinstance(matrix, Conic):

@@ -541,8 +541,6 @@ class Inertia(_Held):
     """
 
     __slots__ = ()
-    _svg = ("inertia_svg", "I")
-    _ndim = 2
 
     def __init__(self, matrix):
         if isinstance(matrix, Inertia):

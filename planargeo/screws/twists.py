@@ -960,14 +960,12 @@ def _is_number(x) -> bool:
 class _Held:
     """Common base of :class:`Twist`, :class:`Wrench` and :class:`planargeo.screws.Inertia`: one read-only array.
 
-    Equal when the arrays are equal; drawn for notebooks by the function ``_svg`` of
-    :mod:`planargeo.geometry.svg` (a single value, ``_ndim`` axes; a batch shows its text).
+    Equal when the arrays are equal.  Notebooks draw a single value with
+    :mod:`planargeo.draw.notebook` (registered by ``import planargeo``); a batch shows its text.
     """
 
     __slots__ = ("_array",)
     __hash__ = None
-    _svg = ("", "")
-    _ndim = 1
 
     def __array__(self, dtype=None, copy=None):
         return np.asarray(self._array, dtype=dtype)
@@ -976,25 +974,6 @@ class _Held:
         if type(other) is not type(self):
             return NotImplemented
         return bool(np.array_equal(self._array, other._array))
-
-    def _repr_svg_(self) -> "str | None":
-        """A small drawing for notebooks, by :mod:`planargeo.geometry.svg` without matplotlib.
-
-        A twist is its pole with the sense of rotation (or a translation arrow), a wrench its line
-        of action with the force arrow (or a couple at infinity), an inertia its circle of gyration
-        (the real partner of thesis 10.2.3).
-
-        Returns
-        -------
-        str
-            An SVG document; None for a batch (the text repr is shown).
-        """
-        if self._array.ndim != self._ndim:
-            return None
-        from planargeo.geometry import svg
-
-        draw, label = self._svg
-        return getattr(svg, draw)(self._array, label=label)
 
 
 class _Screw(_Held):
@@ -1216,7 +1195,6 @@ class Twist(_Screw):
     _name = "twist"
     _carry = staticmethod(X_P)
     _element = ("Point", "pole", "pole")
-    _svg = ("twist_svg", "v")
 
     @classmethod
     def rotation(cls, point, omega=1.0) -> "Twist":
@@ -1346,7 +1324,6 @@ class Wrench(_Screw):
     _name = "wrench"
     _carry = staticmethod(X_P_inv_T)
     _element = ("Line", "line", "line of action")
-    _svg = ("wrench_svg", "f")
 
     @classmethod
     def force(cls, point, force) -> "Wrench":

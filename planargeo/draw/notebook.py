@@ -1,0 +1,265 @@
+"""One element drawn for a notebook: a point, line, conic, twist, wrench or inertia as a picture.
+
+A value shown at the end of a notebook cell is drawn, the way the explorers and the
+gallery draw it, as a :class:`~planargeo.draw.picture.Picture` (its geometry done once
+there: ideal points as edge arrows, the line at infinity as a couple glyph, an
+imaginary conic by its real partner, dashed, thesis 10.2.3), rendered by the one SVG
+writer, matplotlib (:func:`planargeo.draw.render.picture_bytes`).  The view is a
+square around the element and the origin ``O`` (grey cross, for orientation); the
+title names the element with its numbers.
+
+The math layers do not draw: ``import planargeo`` registers :func:`element_svg` with
+IPython's display formatter when it runs inside IPython (:func:`register`).
+
+Examples
+--------
+>>> from planargeo.screws.twists import Twist
+>>> pic = element_picture(Twist.rotation((1.0, 2.0), 3.0))
+>>> pic.title
+'v: pole (1, 2), ω = 3'
+>>> [p["p"] for p in next(e for e in pic.elements if e["id"] == "v")["parts"]]
+['mark', 'glyph', 'text']
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo.draw.picture import Picture
+from planargeo.errors import InputError
+from planargeo.geometry.conics import centre, classify
+from planargeo.geometry.elements import Conic, Line, Point
+from planargeo.screws.inertia import Inertia
+from planargeo.screws.twists import Twist, Wrench
+
+__all__ = ["element_picture", "element_svg", "register", "SIZE"]
+
+#: Width and height (pixels) of an element's picture.
+SIZE = (280, 300)
+#: The classes drawn for notebooks, by module and name (for IPython's formatter).
+DRAWN = (("planargeo.geometry.elements", "Point"), ("planargeo.geometry.elements", "Line"),
+         ("planargeo.geometry.elements", "Conic"), ("planargeo.screws.twists", "Twist"),
+         ("planargeo.screws.twists", "Wrench"), ("planargeo.screws.inertia", "Inertia"),
+         ("planargeo.draw.picture", "Picture"))
+
+
+def num(x: float) -> str:
+    """``x`` to three significant digits, round-off below 1e-12 (and ``-0``) as ``0``."""
+    x = float(x)
+    return "0" if abs(x) < 1e-12 else f"{x:.3g}"
+
+
+def _pair(xy) -> str:
+    return f"({num(xy[0])}, {num(xy[1])})"
+
+
+def _xy(p) -> np.ndarray:
+    """Euclidean ``(x, y)`` of a finite homogeneous point ``[y, -x, w]`` (thesis 5.49)."""
+    return np.array([-p[1] / p[2], p[0] / p[2]])
+
+
+def _foot(l) -> np.ndarray:
+    """The point of the finite line ``[fx, fy, tz]`` nearest the origin."""
+    return np.array([l[2] * l[1], -l[2] * l[0]]) / float(l[0] ** 2 + l[1] ** 2)
+
+
+def _frame(points, title: str, size, minimum: float = 1.0) -> Picture:
+    """A square view around the finite ``points`` and the origin, at least ``2 minimum`` wide,
+    with the origin marked."""
+    P = np.vstack([np.zeros((1, 2)), np.asarray(points, float).reshape(-1, 2)])
+    P = P[np.all(np.isfinite(P), axis=1)]
+    lo, hi = P.min(axis=0), P.max(axis=0)
+    c, half = (lo + hi) / 2, 1.5 * max(float(np.max(hi - lo)) / 2, minimum)
+    pic = Picture((c[0] - half, c[0] + half, c[1] - half, c[1] + half), size, title=title,
+                  ticks=False, margin=(6, 6, 26, 6))
+    r = 6.0 / pic.kx
+    pic.path("O", [[-r, 0.0], [r, 0.0], [float("nan"), float("nan")], [0.0, -r], [0.0, r]],
+             role="construct", symbol="O", desc="the origin", color="#7F7F7F")
+    return pic
+
+
+def _ring(C) -> np.ndarray:
+    """Points of the conic's real curve or real partner (for the view)."""
+    from planargeo.draw.geometry import conic_geometry
+
+    g = conic_geometry(C)
+    if "affine" not in g:
+        return np.zeros((0, 2))
+    A = g["affine"]
+    u = np.array([[1, 0, 1], [-1, 0, 1], [0, 1, 1], [0, -1, 1]], float)
+    return (u @ A.T)[:, :2]
+
+
+def element_picture(obj, *, size=SIZE) -> Picture:
+    """The picture of one element, as a notebook shows it.
+
+    Parameters
+    ----------
+    obj : Point, Line, Conic, Twist, Wrench or Inertia
+        A single element (not a batch).
+    size : (int, int)
+        Width and height in pixels.
+
+    Returns
+    -------
+    Picture
+
+    Raises
+    ------
+    InputError
+        ``obj`` is none of these, or a batch.
+
+    Examples
+    --------
+    >>> from planargeo.geometry.elements import Line
+    >>> element_picture(Line.at_infinity()).title
+    'l = the line at infinity'
+    """
+    if isinstance(obj, (Point, Line, Twist, Wrench)):
+        a = np.asarray(obj.array, float)
+        if a.shape != (3,):
+            raise InputError(f"obj must be a single element, got a batch of shape {a.shape}")
+        if isinstance(obj, (Point, Twist)):
+            return _pole(a, "P" if isinstance(obj, Point) else "v", isinstance(obj, Twist), size)
+        return _line(a, "l" if isinstance(obj, Line) else "f", isinstance(obj, Wrench), size)
+    if isinstance(obj, (Conic, Inertia)):
+        C = np.asarray(obj.matrix, float)
+        if C.shape != (3, 3):
+            raise InputError(f"obj must be a single element, got a batch of shape {C.shape}")
+        return _conic(C, "C" if isinstance(obj, Conic) else "I", isinstance(obj, Inertia), size)
+    raise InputError(f"obj must be a Point, Line, Conic, Twist, Wrench or Inertia, got "
+                     f"{type(obj).__name__}")
+
+
+def _pole(p, name: str, twist: bool, size) -> Picture:
+    role = "twist" if twist else "point"
+    if not np.any(p):
+        pic = _frame([], f"{name} = 0: zero twist, no pole", size)
+        return pic
+    if p[2] == 0:
+        d = np.array([-p[1], p[0]]) / math.hypot(p[0], p[1])
+        title = (f"{name}: translation, velocity {_pair(p[:2])}" if twist
+                 else f"{name} at infinity, direction {_pair(d)}")
+        pic = _frame([], title, size)
+        pic.point(name, p, role="twist", symbol=name, desc=title + " (pole at infinity)")
+        return pic
+    xy = _xy(p)
+    title = f"{name}: pole {_pair(xy)}, ω = {num(p[2])}" if twist else f"{name} = {_pair(xy)}"
+    pic = _frame([xy], title, size)
+    pic.point(name, p, role="twist", symbol=name, desc=title, glyph=twist,
+              shape=None if twist else "o")
+    return pic
+
+
+def _line(l, name: str, wrench: bool, size) -> Picture:
+    if not np.any(l):
+        return _frame([], f"{name} = 0: zero wrench, no line", size)
+    if l[0] == 0 and l[1] == 0:
+        title = f"{name}: pure couple, τ = {num(l[2])}" if wrench else f"{name} = the line at infinity"
+        pic = _frame([], title, size)
+        if wrench:
+            pic.line(name, l, role="wrench", symbol=name, desc=title)
+        else:   # the line at infinity: a dashed frame just inside the view
+            x0, x1, y0, y1 = pic.box
+            ix, iy = 8.0 / pic.kx, 8.0 / pic.ky
+            pic.path(name, [[x0 + ix, y0 + iy], [x1 - ix, y0 + iy], [x1 - ix, y1 - iy],
+                            [x0 + ix, y1 - iy], [x0 + ix, y0 + iy]], role="wrench", symbol=name,
+                     desc=title, dash=[5.0, 4.0])
+            pic.text(name + ":label", ((x0 + x1) / 2, y1 - 30.0 / pic.ky), f"{name}: line at ∞",
+                     role="wrench", symbol=name, desc=title, ha="center")
+        return pic
+    foot = _foot(l)
+    F = math.hypot(l[0], l[1])
+    title = (f"{name}: F = {num(F)} through {_pair(foot)}" if wrench
+             else f"{name} through {_pair(foot)}, direction {_pair(np.asarray(l[:2]) / F)}")
+    pic = _frame([foot], title, size)
+    pic.line(name, l, role="wrench", symbol=name, desc=title, arrow=wrench, anchor=foot)
+    pic.marks(name + ":foot", [foot], role="wrench", symbol="", desc=f"foot of {name} on O",
+              size=4.0)
+    return pic
+
+
+def _conic(C, name: str, inertia: bool, size) -> Picture:
+    C = 0.5 * (C + C.T)
+    t = classify(C)
+    if t.reality == "degenerate":
+        pic = _frame([], f"{name}: degenerate conic ({t.kind})", size)
+        pic.conic(name, C, symbol=name, desc=pic.title)
+        return pic
+    if inertia and C[0, 0] < 0:
+        C = -C
+    z = centre(C)
+    if inertia and t.reality == "imaginary":
+        m = float(C[0, 0])
+        c = _xy(z)
+        rigid = (abs(C[0, 0] - C[1, 1]) <= 1e-10 * np.abs(C).max()
+                 and abs(C[0, 1]) <= 1e-10 * np.abs(C).max())
+        rho = math.sqrt(max(float(C[2, 2]) / m - float(c @ c), 0.0))
+        title = (f"{name}: m = {num(m)}, c = {_pair(c)}, ρ = {num(rho)}" if rigid
+                 else f"{name}: centre {_pair(c)}")
+    else:
+        where = f", centre {_pair(_xy(z))}" if z[2] != 0 else ""
+        title = f"{name}: {t}{where}"
+    real = t.reality == "real"
+    pic = _frame(_ring(C), title, size)
+    pic.conic(name, C, role="inertia" if inertia else "conic", symbol=name,
+              desc=title + ("" if real else "; dashed: its real partner (10.2.3)"))
+    return pic
+
+
+def element_svg(obj) -> str | None:
+    """The SVG of :func:`element_picture`, drawn by matplotlib; None for a batch (text is shown).
+
+    Parameters
+    ----------
+    obj : Point, Line, Conic, Twist, Wrench, Inertia or Picture
+        What to draw (a :class:`Picture` is drawn as it is).
+
+    Returns
+    -------
+    str or None
+        An SVG document.
+
+    Examples
+    --------
+    >>> from planargeo.geometry.elements import Point
+    >>> element_svg(Point.from_xy(1.0, 2.0)).lstrip().startswith("<?xml")
+    True
+    """
+    import io
+
+    from planargeo.draw.render import figure
+    from planargeo.draw.style import rc_context
+
+    if not isinstance(obj, Picture):
+        try:
+            obj = element_picture(obj)
+        except InputError:
+            return None
+    buf = io.StringIO()
+    with rc_context():               # fixed hash salt, no date: the same text every time
+        figure(obj.to_dict()).savefig(buf, format="svg", metadata={"Date": None})
+    return buf.getvalue()
+
+
+def register(shell) -> None:
+    """Show the elements (and pictures) as SVG drawings in the IPython ``shell``.
+
+    Parameters
+    ----------
+    shell : IPython.core.interactiveshell.InteractiveShell
+        The running shell (``IPython.get_ipython()``).
+
+    Examples
+    --------
+    >>> from IPython.core.interactiveshell import InteractiveShell
+    >>> from planargeo.geometry.elements import Point
+    >>> register(InteractiveShell.instance())
+    >>> data, _ = InteractiveShell.instance().display_formatter.format(Point.from_xy(1.0, 2.0))
+    >>> "image/svg+xml" in data
+    True
+    """
+    svg = shell.display_formatter.formatters["image/svg+xml"]
+    for module, name in DRAWN:
+        svg.for_type_by_name(module, name, element_svg)
