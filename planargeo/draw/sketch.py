@@ -37,6 +37,7 @@ import math
 
 import numpy as np
 
+from planargeo.draw.geometry import clip_line
 from planargeo.draw.layout import _without_outliers, shape_points
 from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.style import COLORS, LINEWIDTHS, STYLES
@@ -44,7 +45,7 @@ from planargeo.errors import InputError
 
 __all__ = ["panel", "fit_box", "show", "label", "segment", "dimension", "link_polygon",
            "transform_shape", "body", "link", "pin", "ground", "slider", "frame", "com", "model",
-           "slider_guide", "joint_split", "contact"]
+           "model_shapes", "slider_guide", "contact", "split_arrows", "joint_split"]
 
 #: outline colour of bodies and body labels
 BODY_EDGE = "#1f3a4d"
@@ -975,8 +976,6 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
     >>> [round(v, 6) for v in out["shapes"][1].centroid.coords[0]]      # link 2: (0, 1) to (1, 1)
     [0.5, 1.0]
     """
-    from shapely.ops import unary_union
-
     _pic(pic)
     pose = np.asarray(data.pose, float)
     cm = np.asarray(data.com, float)
@@ -984,14 +983,8 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
     out = {"bodies": [], "joints": [], "com": [], "contacts": [], "shapes": []}
     if names is not None and len(names) != model.N:
         raise InputError(f"names must hold one label per body ({model.N}), got {len(names)}")
-    for i, b in enumerate(model.bodies):
-        if b.shape is not None:
-            shape = transform_shape(b.shape, pose[i])
-        else:
-            kids = model.children(i)
-            ends = [origin[k] for k in kids] or [pose[i, :2] + 2 * (cm[i] - pose[i, :2])]
-            shape = unary_union([link_polygon(pose[i, :2], e, width) for e in ends])
-        out["shapes"].append(shape)
+    out["shapes"] = model_shapes(model, data, width=width)
+    for i, (b, shape) in enumerate(zip(model.bodies, out["shapes"])):
         if names is not None:
             name = names[i]
         else:
@@ -1164,6 +1157,268 @@ def contact(pic: Picture, id: str, contact, pose, *, body_shape=None, size: floa
     return out
 
 
-def joint_split(*args, **kw):
-    """Placeholder: the port of ``draw_joint_split`` lands in the next commit."""
-    raise NotImplementedError("joint_split lands in the next commit")
+def _seg_dist(c, a, b) -> float:
+    """Distance from the point ``c`` to the segment ``a b``."""
+    d = b - a
+    t = float(np.clip((c - a) @ d / max(d @ d, 1e-300), 0.0, 1.0))
+    return float(np.hypot(*(a + t * d - c)))
+
+
+def _slide_clear(line, L, foot, blocked, clearance):
+    """The arrow middle on ``line`` nearest ``foot`` whose arrow (length ``L``) clears ``blocked``."""
+    from shapely.geometry import LineString
+
+    e = np.array([line[0], line[1]]) / np.hypot(line[0], line[1])
+    if blocked is None or blocked.is_empty:
+        return foot
+    step = max(L, clearance) / 4
+    for k in range(41):                      # 0, +1, -1, +2, -2, ... steps along the line
+        t = (k + 1) // 2 * step * (1 if k % 2 else -1)
+        m = foot + t * e
+        if not LineString([m - e * L / 2, m + e * L / 2]).buffer(clearance).intersects(blocked):
+            return m
+    return foot
+
+
+def _foot(w, p) -> np.ndarray:
+    """The foot of the point ``p`` on the line of action of ``w = [fx, fy, τ]`` (4.27)."""
+    fx, fy, tz = (float(v) for v in w)
+    s = max(abs(fx), abs(fy))
+    ux, uy, uz = fx / s, fy / s, tz / s
+    G = math.hypot(ux, uy)
+    e = np.array([ux, uy]) / G
+    p0 = np.array([uy * uz, -ux * uz]) / (G * G)      # foot of the origin
+    return p0 + e * ((np.asarray(p, float) - p0) @ e)
+
+
+def model_shapes(model, data, *, width: float = 0.18) -> list:
+    """The bodies of ``model`` at the state ``data`` as :func:`model` draws them (world shapely shapes).
+
+    To fit a view to a mechanism before its picture exists (:func:`panel`).
+
+    Parameters
+    ----------
+    model : planargeo.mechanics.model.Model
+    data : planargeo.mechanics.model.Data
+    width : float
+        Width of the default rounded links.
+
+    Returns
+    -------
+    list of shapely geometry
+
+    Examples
+    --------
+    >>> from planargeo.gallery.figures import chain
+    >>> from planargeo.mechanics.kinematics import kinematics
+    >>> m = chain(2)
+    >>> d = kinematics(m, np.zeros(2), np.zeros(2))
+    >>> [round(v, 6) for v in model_shapes(m, d, width=0.2)[1].bounds]    # link 2 from (1, 0) to (2, 0)
+    [0.9, -0.1, 2.1, 0.1]
+    """
+    from shapely.ops import unary_union
+
+    pose = np.asarray(data.pose, float)
+    cm = np.asarray(data.com, float)
+    origin = np.asarray(data.origin, float)
+    out = []
+    for i, b in enumerate(model.bodies):
+        if b.shape is not None:
+            out.append(transform_shape(b.shape, pose[i]))
+        else:
+            ends = [origin[k] for k in model.children(i)] or [pose[i, :2] + 2 * (cm[i] - pose[i, :2])]
+            out.append(unary_union([link_polygon(pose[i, :2], e, width) for e in ends]))
+    return out
+
+
+def split_arrows(s, R, A, f, *, scale: float = 1.0, anchor, avoid=None, clearance: float = 0.1):
+    """The split of a joint force (6.38) and the arrows :func:`joint_split` draws, before drawing.
+
+    ``f = T Q + R μ`` with ``T``, ``U`` built on the inertia ``A``
+    (:class:`planargeo.mechanics.subspaces.Decomposition`).  Each arrow is
+    ``scale |part|`` long on its line, centred on ``anchor``'s foot; with ``avoid`` it
+    slides along its line to the nearest place ``clearance`` away from ``avoid`` and
+    from the arrows before it (``f``, then the active part, then the reaction).
+
+    Parameters
+    ----------
+    s : array_like (3, k)
+        The joint's motion space.
+    R : array_like (3, 3 - k)
+        Its reaction space.
+    A : array_like (3, 3)
+        The (articulated) inertia of the split.
+    f : array_like (3,)
+        The joint force.
+    scale : float
+        Arrow length per unit force (data units).
+    anchor : (float, float)
+        Where the arrows sit along their lines.
+    avoid : shapely geometry, optional
+    clearance : float
+
+    Returns
+    -------
+    tuple
+        ``({"f", "active", "reaction"}: (tail, tip) or None, (Q, μ, TQ, Rμ))``; None for a
+        part with no arrow (zero, or the line at infinity).
+
+    Raises
+    ------
+    InputError
+        ``anchor`` not a finite point.
+
+    Examples
+    --------
+    >>> from planargeo.mechanics.joints import revolute
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> j = revolute([0.0, 0.0])
+    >>> A = inertia_matrix(2.0, [1.0, 0.0], 0.3)
+    >>> arrows, (Q, mu, TQ, Rmu) = split_arrows(j.s, j.R, A, [0.0, 1.0, 2.0], anchor=(0.0, 0.0))
+    >>> [v.round(6).tolist() for v in arrows["f"]]          # on the line x = 2, centred at (2, 0)
+    [[2.0, -0.5], [2.0, 0.5]]
+    """
+    from shapely.geometry import LineString
+
+    from planargeo.mechanics.subspaces import Decomposition
+
+    anchor = _xy(anchor, "anchor")
+    f = np.asarray(f, float).reshape(3)
+    dec = Decomposition(np.asarray(A, float), np.asarray(s, float), np.asarray(R, float))
+    Q, mu = dec.split_wrench(f)
+    active = dec.T @ Q
+    react = dec.R @ mu
+    arrows = {}
+    blocked = avoid
+    for k, w in (("f", f), ("active", active), ("reaction", react)):
+        F = math.hypot(w[0], w[1])
+        if not (F > 1e-12 * max(1.0, float(np.max(np.abs(f))))):
+            arrows[k] = None
+            continue
+        e = w[:2] / F
+        half = 0.5 * scale * F * e
+        mid = _foot(w, anchor)
+        if avoid is not None:
+            mid = _slide_clear(w, 2 * float(np.hypot(*half)), mid, blocked, clearance)
+        tail, tip = mid - half, mid + half
+        arrows[k] = (tail, tip)
+        if avoid is not None:
+            blocked = blocked.union(LineString([tail, tip]))
+    return arrows, (Q, mu, active, react)
+
+
+def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: float = 1.0, anchor=None,
+                gap: float = 5.0, avoid=None, clearance: float = 0.1):
+    """A joint force ``f`` split into its active part ``T Q`` and its reaction ``R μ`` (6.38).
+
+    Three lines across the view, each with an arrow ``scale |part|`` long
+    (:func:`split_arrows`): ``f`` (element ``id + ":f"``, wrench), ``T Q``
+    (``id + ":active"``, dashed) and ``R μ`` (``id + ":reaction"``, dotted).  Each
+    label sits beside its arrow's middle, ``gap`` points off the line, on the side
+    that keeps it farthest from the other two arrows, the labels already placed and
+    ``avoid``.  A pure couple (a line at infinity) is the picture's couple glyph.
+
+    Parameters
+    ----------
+    pic : Picture
+    id : str
+        Stem of the three elements' ids.
+    s, R, A, f
+        Motion space, reaction space, inertia of the split and the joint force.
+    name : str
+        Subscript of the labels (``f_name``, ``TQ_name``, ``Rμ_name``).
+    scale : float
+        Arrow length per unit force (data units).
+    anchor : (float, float), optional
+        Where the arrows sit along their lines (default: the view's centre).
+    gap : float
+        Distance of a label from its arrow (points).
+    avoid : shapely geometry, optional
+        What the arrows keep ``clearance`` away from (e.g. the drawn bodies).
+    clearance : float
+        Free distance around ``avoid`` and earlier arrows (data units).
+
+    Returns
+    -------
+    tuple
+        ``({"f", "active", "reaction"}: element or None, (Q, μ, TQ, Rμ))``.
+
+    Examples
+    --------
+    >>> from planargeo.mechanics.joints import revolute
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> pic = Picture((-1, 3, -2, 2), size=(200, 200), ticks=False, margin=(0, 0, 0, 0))
+    >>> j = revolute([0.0, 0.0])
+    >>> A = inertia_matrix(2.0, [1.0, 0.0], 0.3)
+    >>> out, (Q, mu, TQ, Rmu) = joint_split(pic, "j1", j.s, j.R, A, [0.0, 1.0, 2.0], name="1",
+    ...                                     anchor=[0.0, 0.0])
+    >>> bool(np.allclose(TQ + Rmu, [0.0, 1.0, 2.0])), sorted(out)
+    (True, ['active', 'f', 'reaction'])
+    >>> arrow = [p for p in out["f"]["parts"] if p["p"] == "arrow"][0]
+    >>> arrow["x"], arrow["y"], arrow["dy"]               # from (2, -0.5), 1 unit = 50 px up
+    (2.0, -0.5, 50.0)
+    """
+    from planargeo.draw.picture import plain_text
+
+    _pic(pic)
+    if anchor is None:
+        x0, x1, y0, y1 = pic.box
+        anchor = ((x0 + x1) / 2, (y0 + y1) / 2)
+    arrows, split = split_arrows(s, R, A, f, scale=scale, anchor=anchor, avoid=avoid,
+                                 clearance=clearance)
+    Q, mu, active, react = split
+    lines = {"f": (np.asarray(f, float).reshape(3), "wrench", None, f"$f_{{{name}}}$",
+                   "joint force (6.38)"),
+             "active": (active, "momentum", [6.0 * PX_PER_PT, 2.0 * PX_PER_PT], f"$TQ_{{{name}}}$",
+                        "active part T Q of the joint force (6.38)"),
+             "reaction": (react, "reaction", [2.0 * PX_PER_PT, 2.0 * PX_PER_PT], f"$R\\mu_{{{name}}}$",
+                          "reaction part R μ of the joint force (6.38)")}
+    out = {}
+    placed = []
+    segs = {k: v for k, v in arrows.items() if v is not None}
+    for k, (w, role, dash, text, meaning) in lines.items():
+        text = plain_text(text)
+        F = math.hypot(w[0], w[1])
+        desc = f"{meaning}: |{text}| = {F:.3g} N"
+        eid = f"{id}:{k}"
+        if arrows[k] is None:
+            if abs(w[2]) > 1e-12 * max(1.0, float(np.max(np.abs(f)))) and F == 0.0:
+                pic.line(eid, w, role=role, symbol=text, desc=f"{meaning}: a couple of {w[2]:.3g} N·m",
+                         dash=dash)
+                out[k] = pic.elements[-1]
+            else:
+                out[k] = None
+            continue
+        tail, tip = arrows[k]
+        parts = []
+        seg = clip_line(w, pic.box)
+        if seg is not None:
+            parts.append({"p": "path", "xy": np.asarray(seg, float), "closed": False})
+        d = tip - tail
+        parts.append({"p": "arrow", "x": float(tail[0]), "y": float(tail[1]),
+                      "dx": float(d[0] * pic.kx), "dy": float(d[1] * pic.ky)})
+        mid = 0.5 * (tail + tip)
+        L = float(np.hypot(*d))
+        n = np.array([-d[1], d[0]]) / L
+        others = [v for j, v in segs.items() if j != k]
+
+        def label_room(side):
+            c = mid + side * n * 0.25 * L
+            dist = [_seg_dist(c, *o) for o in others] + [float(np.hypot(*(c - p))) for p in placed]
+            if avoid is not None:
+                from shapely.geometry import Point as SPoint
+
+                dist.append(float(avoid.distance(SPoint(*c))))
+            return min(dist) if dist else 0.0
+
+        side = 1.0 if label_room(1.0) >= label_room(-1.0) else -1.0
+        placed.append(mid + side * n * 0.25 * L)
+        u = side * n * (pic.kx, pic.ky)
+        u = u / math.hypot(*u)
+        g = gap * PX_PER_PT
+        parts.append(_text_part(mid[0], mid[1], text, g * u[0], g * u[1], *_align(u)))
+        out[k] = _element(pic, eid, role, parts, symbol=text, desc=desc, color=COLORS[role],
+                          width=LINEWIDTHS[role] * PX_PER_PT, z=5)
+        if dash:
+            out[k]["dash"] = dash
+    return out, split
