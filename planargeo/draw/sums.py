@@ -1,0 +1,614 @@
+"""Screw sums of chapter 4 drawn into a :class:`~planargeo.draw.picture.Picture`.
+
+Picture-based ports of the twist and wrench sums and of the kinematics and
+Newton–Euler steps along a chain (thesis 4.11–4.56, Figs 4.1–4.9).  Each
+function takes the picture first, computes what its construction needs with the
+math modules (:mod:`planargeo.geometry.projective`, :mod:`planargeo.screws`) and
+adds plain elements to the picture: poles with their rotation glyphs (ideal ones
+as edge arrows), lines of action with their force arrows *to scale*, lever lines,
+dimensions.  It returns the elements it made, keyed by name (and, where the old
+drawing did, the computed arrays under ``"values"``).
+
+Every element has a stable id (``prefix`` + its name), a role (its style), its
+thesis symbol and a one-line description: meaning (equation): value.
+
+* :func:`twist_sum` — ``v₃ = v₁ + v₂`` on the lever line of the two poles (4.11–4.16);
+* :func:`wrench_sum` — ``f₃ = f₁ + f₂`` through the meet, with the force parallelogram
+  (4.33–4.46);
+* :func:`velocity_step` — ``vᵢ = vᵢ₋₁ + sᵢq̇ᵢ`` (4.47–4.49);
+* :func:`acceleration_step` — ``aᵢ = aᵢ₋₁ + sᵢq̈ᵢ + κᵢ`` (4.50–4.54);
+* :func:`newton_euler` — ``f_net = I a + p`` of one body (4.55–4.56).
+
+Examples
+--------
+>>> from planargeo.draw.picture import Picture
+>>> from planargeo.screws.twists import unit_rotation
+>>> pic = Picture((-1, 4, -2, 2), size=(300, 200), ticks=False)
+>>> out = twist_sum(pic, unit_rotation([0, 0]), 2 * unit_rotation([3, 0]))
+>>> sorted(out)
+['lever', 'v1', 'v2', 'v3']
+>>> mark = out["v3"]["parts"][0]
+>>> mark["x"], mark["y"]              # beta = 2/3 of the way from Q1 to Q2 (4.12-4.13)
+(2.0, 0.0)
+>>> out["v3"]["desc"]
+'sum v₃ = v₁ + v₂ (4.11–4.13): ω = 3 rad/s, pole at (2, 0) m'
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo._validate import as_mat3, as_scalar, as_vec3
+from planargeo.draw.picture import PX_PER_PT, Picture, plain_text
+from planargeo.draw.pictures._words import force as force_words, num, pair
+from planargeo.draw.pictures.common import label_toward
+from planargeo.draw.pictures.kit import aim_label, force as force_arrow
+from planargeo.draw.sketch import dimension
+from planargeo.draw.style import COLORS, LINEWIDTHS, STYLES, SUM
+from planargeo.errors import InputError
+from planargeo.geometry.projective import is_at_infinity, is_ideal
+from planargeo.screws.inertia import centre_of_mass, mass
+from planargeo.screws.twists import bias_force, kappa
+
+__all__ = ["twist_sum", "wrench_sum", "velocity_step", "acceleration_step", "newton_euler"]
+
+#: dash pattern (pixels) of construction lines
+_CONSTRUCT_DASH = [round(v * PX_PER_PT, 2) for v in STYLES["construct"]["linestyle"][1]]
+#: marker size (pixels) of a sum's pole, line width (pixels) of a sum's line of action
+_SUM_POINT_PX = SUM["point"]["markersize"] * PX_PER_PT
+_SUM_LINE_PX = SUM["line"]["linewidth"] * PX_PER_PT
+
+
+# --------------------------------------------------------------------------- checks and words
+def _picture(pic, name: str) -> Picture:
+    if not isinstance(pic, Picture):
+        raise InputError(f"{name}: pic must be a Picture (planargeo.draw.picture), got {type(pic).__name__}")
+    return pic
+
+
+def _texts(x, n: int, name: str) -> tuple:
+    """``x`` as a tuple of ``n`` entries (a label or offset per element), checked."""
+    try:
+        t = tuple(x)
+    except TypeError:
+        raise InputError(f"{name} must be a sequence of {n} entries, got {x!r}") from None
+    if len(t) != n:
+        raise InputError(f"{name} must have {n} entries, got {len(t)}")
+    return t
+
+
+def _symbol(label: str) -> str:
+    """The thesis symbol of a label: its plain text before any remark in brackets."""
+    return plain_text(label).split(" (")[0].strip()
+
+
+def _pole_words(p, unit: str = "rad/s", speed: str = "m/s") -> str:
+    """A twist (or acceleration) ``[vx, vy, w]`` in words: its rate and where its pole is."""
+    p = np.asarray(p, float)
+    w = float(p[2])
+    if not np.any(p):
+        return "zero"
+    if bool(is_ideal(p)):
+        d = np.array([p[0], p[1]]) / math.hypot(p[0], p[1])
+        return (f"a translation of {num(math.hypot(p[0], p[1]))} {speed} along {pair(d)}, "
+                f"its pole at infinity")
+    return f"ω = {num(w)} {unit}, pole at {pair((-p[1] / w, p[0] / w))} m"
+
+
+def _gap(w: float, glyph_scale: float = 6.0) -> float:
+    """Pixels from a pole to its label: clear of its rotation glyph (which grows with |w|)."""
+    return 0.75 * min(max(glyph_scale * abs(w), 4.0), 16.0) * PX_PER_PT + 5.0
+
+
+def _pole(pic: Picture, id: str, p, *, role: str, label: str, desc: str, toward=None,
+          emphasis: bool = False, glyph_scale: float = 6.0) -> dict:
+    """A pole (:meth:`Picture.point`); a sum's as a larger diamond; its label put ``toward`` first."""
+    kw = dict(shape="D", size=_SUM_POINT_PX) if emphasis else {}
+    pic.point(id, p, role=role, symbol=_symbol(label), desc=desc, label=plain_text(label),
+              glyph_scale=glyph_scale, **kw)
+    el = pic.elements[-1]
+    if toward is not None and not bool(is_ideal(p)):
+        label_toward(el, toward, _gap(p[2], glyph_scale) + (3.0 if emphasis else 0.0))
+    return el
+
+
+def _lever(pic: Picture, id: str, p, q, *, desc: str, width: float | None = None) -> dict | None:
+    """The construction line ``p × q`` through two poles; None when it is not a line to draw.
+
+    Coincident poles have no lever line (every line through the pole is one), and two
+    ideal poles join in the line at infinity: neither is drawn.
+    """
+    line = np.cross(p, q)
+    if not np.any(line) or bool(is_at_infinity(line)):
+        return None
+    pic.line(id, line, role="construct", arrow=False, label="", symbol=id, desc=desc, width=width)
+    return pic.elements[-1]
+
+
+def _wrench(pic: Picture, id: str, f, *, role: str, label: str, desc: str, scale, anchor,
+            emphasis: bool = False, toward=None, couples: list | None = None) -> dict | None:
+    """A wrench: its line of action with a force arrow ``scale |f|`` long centred at ``anchor``'s foot.
+
+    ``scale`` None: the line alone.  A pure couple (the line at infinity) is the couple
+    glyph in the upper right corner (one row lower per couple already drawn: ``couples``).
+    A zero wrench draws nothing (None).
+    """
+    f = np.asarray(f, float)
+    width = _SUM_LINE_PX if emphasis else None
+    symbol = _symbol(label)
+    text = plain_text(label)
+    if not np.any(f):
+        return None
+    if bool(is_at_infinity(f)):
+        pic.line(id, f, role=role, symbol=symbol, desc=desc, label=text, width=width)
+        el = pic.elements[-1]
+        row = 0 if couples is None else len(couples)
+        for part in el["parts"]:
+            if part["p"] in ("text", "glyph"):
+                part["y"] -= row * 30.0 / pic.ky
+        if couples is not None:
+            couples.append(id)
+        return el
+    if anchor is None:
+        anchor = ((pic.box[0] + pic.box[1]) / 2, (pic.box[2] + pic.box[3]) / 2)
+    if scale is None:
+        pic.line(id, f, role=role, symbol=symbol, desc=desc, label=text, anchor=anchor, arrow=False,
+                 width=width)
+    else:
+        force_arrow(pic, id, f, scale=float(scale), anchor=anchor, role=role, symbol=symbol, desc=desc,
+                    label=text, width=width, color=COLORS.get(role))
+    el = pic.elements[-1]
+    if toward is not None:
+        aim_label(el, toward)
+    return el
+
+
+# --------------------------------------------------------------------------- twist / wrench sums
+def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), lever: bool = True,
+              glyph_scale: float = 6.0, role: str = "twist", toward=(None, None, None),
+              prefix: str = "") -> dict:
+    """Twist addition (thesis 4.11–4.16, Figs 4.1, 4.3): ``v₃ = v₁ + v₂`` lies on the lever line of the poles.
+
+    The pole of the sum is ``P = Q₁ + β(Q₂ − Q₁)`` with ``β = ω₂/(ω₁ + ω₂)`` (4.12–4.13);
+    a rotation plus a translation ``u`` is a rotation about ``Q + ρn``, ``ρ = u/ω`` (4.16).
+    The sum is a twist like its terms (same role colour), drawn as a larger diamond.
+    Coincident poles have no lever line (none is drawn), nor do two translations (their
+    poles join in the line at infinity).  Labels of the terms go on one side of the lever
+    line, the sum's on the other, unless ``toward`` says otherwise.
+
+    Parameters
+    ----------
+    pic : Picture
+        Where to draw.
+    v1, v2 : array_like (3,)
+        The twists ``[vx, vy, ω]`` (points).
+    labels : (str, str, str)
+        Labels of ``v₁``, ``v₂`` and the sum (``$...$`` mathtext turns into Unicode); the
+        symbol of each is its text before a remark in brackets.
+    lever : bool
+        Draw the line joining the poles.
+    glyph_scale : float
+        Rotation glyph radius (points per unit rate).
+    role : str
+        Style role of the three poles.
+    toward : (direction, direction, direction)
+        Pixel direction (x right, y up) in which each label is put first (None: automatic).
+    prefix : str
+        Put before every id (several sums in one picture).
+
+    Returns
+    -------
+    dict
+        The elements ``{"v1", "v2", "v3"}`` and ``"lever"`` (when drawn).
+
+    Raises
+    ------
+    InputError
+        ``pic`` not a Picture, a twist that is not 3 finite numbers (named), or ``labels`` /
+        ``toward`` without three entries.
+
+    Examples
+    --------
+    >>> from planargeo.draw.picture import Picture
+    >>> from planargeo.screws.twists import unit_rotation, unit_translation
+    >>> pic = Picture((-3, 3, -3, 3), size=(200, 200), ticks=False)
+    >>> out = twist_sum(pic, 2 * unit_rotation([1, 0]), unit_translation([0, 1]))
+    >>> out["v3"]["parts"][0]["x"], out["v3"]["parts"][0]["y"]     # Q + (u/ω) n, n = (-1, 0) (4.16)
+    (0.5, 0.0)
+    >>> twist_sum(pic, [1, 2], [0, 0, 1])
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.ShapeError: v1 must have shape (..., 3), got shape (2,)
+    """
+    pic = _picture(pic, "twist_sum")
+    v1, v2 = as_vec3(v1, "v1"), as_vec3(v2, "v2")
+    labels = _texts(labels, 3, "labels")
+    toward = list(_texts(toward, 3, "toward"))
+    v3 = v1 + v2
+    out = {}
+    if lever:
+        beta = (f"β = ω₂/(ω₁ + ω₂) = {num(v2[2] / v3[2])}" if v3[2] != 0.0
+                else "β = ∞: the sum is a translation")
+        el = _lever(pic, prefix + "lever", v1, v2,
+                    desc=f"lever line Q₁Q₂ through both poles (4.11–4.13): the sum's pole lies on it, {beta}")
+        if el is not None:
+            out["lever"] = el
+    auto = _label_sides(pic, v1, v2)
+    toward = [t if t is not None else a for t, a in zip(toward, auto)]
+    syms = [_symbol(x) for x in labels]
+    out["v1"] = _pole(pic, prefix + "v1", v1, role=role, label=labels[0], toward=toward[0],
+                      glyph_scale=glyph_scale, desc=f"twist {syms[0]} (4.10): {_pole_words(v1)}")
+    out["v2"] = _pole(pic, prefix + "v2", v2, role=role, label=labels[1], toward=toward[1],
+                      glyph_scale=glyph_scale, desc=f"twist {syms[1]} (4.10): {_pole_words(v2)}")
+    out["v3"] = _pole(pic, prefix + "v3", v3, role=role, label=labels[2], toward=toward[2],
+                      glyph_scale=glyph_scale, emphasis=True,
+                      desc=f"sum {syms[2]} (4.11–4.13): {_pole_words(v3)}")
+    return out
+
+
+def _label_sides(pic: Picture, p, q):
+    """Label directions (pixels): both terms on the upper side of their lever line, the sum below."""
+    if p[2] == 0.0 or q[2] == 0.0 or not np.any(np.cross(p, q)):
+        return [(-0.7, 0.7), (0.7, 0.7), (0.0, -1.0)]
+    d = np.array([(p[1] / p[2] - q[1] / q[2]) * pic.kx, (q[0] / q[2] - p[0] / p[2]) * pic.ky])
+    d = d / math.hypot(*d)
+    n = np.array([-d[1], d[0]]) if d[0] >= 0 else np.array([d[1], -d[0]])
+    return [tuple(n), tuple(n), tuple(-n)]
+
+
+def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), scale=1.0,
+               anchors=(None, None, None), parallelogram: bool = True, role: str = "wrench",
+               toward=(None, None, None), prefix: str = "") -> dict:
+    """Wrench addition (thesis 4.33–4.46, Figs 4.4–4.6): ``f₃ = f₁ + f₂``.
+
+    Two crossing forces: ``f₃`` passes through their meet ``P = f₁ × f₂`` and the force
+    parallelogram is drawn there, the three arrows starting at ``P``.  Parallel forces:
+    ``f₃`` lies between them by the lever rule (4.43); a force and a couple: ``f₃`` is
+    parallel to ``f₁`` at ``ρ = τ/F`` (4.46).  A couple is the line at infinity: the
+    couple glyph in the upper right corner.  The sum is a wrench like its terms, drawn
+    with a heavier line.
+
+    Parameters
+    ----------
+    pic : Picture
+        Where to draw.
+    f1, f2 : array_like (3,)
+        The wrenches ``[fx, fy, τ]`` (lines).
+    labels : (str, str, str)
+        Labels of ``f₁``, ``f₂`` and the sum (a couple's reads "label: couple (line at ∞)").
+    scale : float or None
+        Force arrow length per unit force (data units); None: no arrows.
+    anchors : (xy, xy, xy)
+        Where each arrow sits (its middle at the anchor's foot on the line; None: the view
+        centre's foot).  Ignored when the parallelogram is drawn (the arrows start at ``P``).
+    parallelogram : bool
+        Draw the force parallelogram at the meet of crossing lines.
+    role : str
+        Style role of the three lines.
+    toward : (direction, direction, direction)
+        Pixel direction (x right, y up) in which each label is put first (None: beside the arrow).
+    prefix : str
+        Put before every id.
+
+    Returns
+    -------
+    dict
+        The elements ``{"f1", "f2", "f3"}`` (a zero wrench has none) and, for crossing lines,
+        ``"meet"`` and ``"parallelogram"``.
+
+    Raises
+    ------
+    InputError
+        ``pic`` not a Picture, a wrench that is not 3 finite numbers (named), a scale that is
+        not a positive number, or ``labels`` / ``anchors`` / ``toward`` without three entries.
+
+    Examples
+    --------
+    >>> from planargeo.draw.picture import Picture
+    >>> pic = Picture((-1, 3, -1, 3), size=(200, 200), ticks=False)
+    >>> out = wrench_sum(pic, [1.0, 0.0, -1.0], [0.0, 1.0, 2.0], scale=0.5)   # y = 1 and x = 2
+    >>> out["meet"]["parts"][0]["x"], out["meet"]["parts"][0]["y"]
+    (2.0, 1.0)
+    >>> [part["xy"].tolist() for part in out["parallelogram"]["parts"]]   # f1's tip to f3's, f2's to it
+    [[[2.5, 1.0], [2.5, 1.5]], [[2.0, 1.5], [2.5, 1.5]]]
+    """
+    pic = _picture(pic, "wrench_sum")
+    f1, f2 = as_vec3(f1, "f1"), as_vec3(f2, "f2")
+    if scale is not None:
+        scale = as_scalar(scale, "scale")
+        if not scale > 0.0:
+            raise InputError(f"scale must be a positive number (data units per unit force), got {scale!r}")
+    labels = _texts(labels, 3, "labels")
+    anchors = list(_texts(anchors, 3, "anchors"))
+    toward = _texts(toward, 3, "toward")
+    f3 = f1 + f2
+    P = np.cross(f1, f2)
+    finite_meet = bool(np.any(P)) and not bool(is_ideal(P)) and not bool(is_at_infinity(f1)) \
+        and not bool(is_at_infinity(f2))
+    Pxy = np.array([-P[1] / P[2], P[0] / P[2]]) if finite_meet else None
+    if finite_meet and parallelogram and scale is not None:
+        anchors = [Pxy + scale * f[:2] / 2 for f in (f1, f2, f3)]
+    syms = [_symbol(x) for x in labels]
+    out, couples = {}, []
+    for k, (name, f, what, eq) in enumerate((("f1", f1, "wrench", "4.27"), ("f2", f2, "wrench", "4.27"),
+                                             ("f3", f3, "sum", "4.33–4.46"))):
+        el = _wrench(pic, prefix + name, f, role=role, label=labels[k], scale=scale, anchor=anchors[k],
+                     emphasis=name == "f3", toward=toward[k], couples=couples,
+                     desc=f"{what} {syms[k]} on its line of action ({eq}): {force_words(f)}")
+        if el is not None:
+            out[name] = el
+    if finite_meet:
+        pic.marks(prefix + "meet", [Pxy], role="construct", symbol="P", shape="o",
+                  size=3.5 * PX_PER_PT, z=6,
+                  desc=f"meet P = f₁ × f₂ of the two lines of action (4.35): at {pair(Pxy)} m; "
+                       f"the sum's line passes through it")
+        out["meet"] = pic.elements[-1]
+        if parallelogram and scale is not None:
+            a, b, c = (Pxy + scale * f[:2] for f in (f1, f2, f3))
+            pic.path(prefix + "parallelogram", [a, c, [np.nan, np.nan], b, c], role="construct",
+                     dash=_CONSTRUCT_DASH, width=LINEWIDTHS["construct"] * PX_PER_PT, z=2,
+                     symbol="parallelogram",
+                     desc="force parallelogram (4.33): the sum's arrow is its diagonal from P")
+            out["parallelogram"] = pic.elements[-1]
+    return out
+
+
+# --------------------------------------------------------------------------- chains, one body
+def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot q_i$", "$v_i$"),
+                  toward=(None, None, None), dims: bool = True, dim_offset: float = 0.25,
+                  prefix: str = "") -> dict:
+    """One step of velocity kinematics along a chain (thesis 4.47–4.49, Fig. 4.7).
+
+    ``vᵢ = vᵢ₋₁ + sᵢq̇ᵢ`` is a twist sum (:func:`twist_sum`): the pole of ``vᵢ`` lies on
+    the line joining the pole of ``vᵢ₋₁`` and the joint (the pole of ``sᵢ``), at ``βk``
+    from the former with ``β = q̇ᵢ/(q̇ᵢ + ωᵢ₋₁)`` (4.48).  With ``dims`` the distance ``k``
+    between the two poles is dimensioned (when both are finite), ``dim_offset`` to the
+    left of the lever line.
+
+    Parameters
+    ----------
+    pic : Picture
+        Where to draw.
+    v_prev : array_like (3,)
+        The previous body's twist ``vᵢ₋₁``.
+    s : array_like (3,)
+        The joint's unit twist ``sᵢ``.
+    qd : float
+        The joint speed ``q̇ᵢ``.
+    labels : (str, str, str)
+        Labels of ``vᵢ₋₁``, ``sᵢq̇ᵢ`` and ``vᵢ``.
+    toward : (direction, direction, direction)
+        Pixel directions in which the labels are put first (None: automatic).
+    dims, dim_offset
+        Dimension the distance ``k`` (offset to the left of the lever line, data units).
+    prefix : str
+        Put before every id.
+
+    Returns
+    -------
+    dict
+        The elements ``{"v_prev", "joint", "v"}``, ``"lever"`` and ``"k"`` when drawn, and
+        ``"values"``: the arrays ``{"joint": sᵢq̇ᵢ, "v": vᵢ}``.
+
+    Raises
+    ------
+    InputError
+        ``pic`` not a Picture, a twist that is not 3 finite numbers or ``qd`` not a finite
+        number (named).
+
+    Examples
+    --------
+    >>> from planargeo.draw.picture import Picture
+    >>> from planargeo.screws.twists import unit_rotation
+    >>> pic = Picture((-1, 4, -2, 2), size=(300, 200), ticks=False)
+    >>> out = velocity_step(pic, 1.0 * unit_rotation([0, 0]), unit_rotation([3, 0]), 2.0)
+    >>> out["values"]["v"].tolist()             # pole at beta k = 2/3 * 3 from the first (4.48)
+    [0.0, -6.0, 3.0]
+    >>> out["k"]["symbol"]
+    'k'
+    """
+    pic = _picture(pic, "velocity_step")
+    v_prev = as_vec3(v_prev, "v_prev")
+    u = as_vec3(s, "s") * as_scalar(qd, "qd")
+    art = twist_sum(pic, v_prev, u, labels=labels, toward=toward, prefix=prefix)
+    out = {"v_prev": art["v1"], "joint": art["v2"], "v": art["v3"]}
+    if "lever" in art:
+        out["lever"] = art["lever"]
+    out["values"] = {"joint": u, "v": v_prev + u}
+    if dims and v_prev[2] != 0.0 and u[2] != 0.0 and np.any(np.cross(v_prev, u)):
+        a = np.array([-v_prev[1] / v_prev[2], v_prev[0] / v_prev[2]])
+        b = np.array([-u[1] / u[2], u[0] / u[2]])
+        out["k"] = dimension(pic, prefix + "k", a, b, "k", offset=as_scalar(dim_offset, "dim_offset"),
+                             desc=f"distance k between the poles of {_symbol(labels[0])} and the joint "
+                                  f"(4.48): {num(math.hypot(*(b - a)))} m")
+        out["k"]["symbol"] = "k"
+    return out
+
+
+def acceleration_step(pic, a_prev, v_prev, s, qd, qdd, *,
+                      labels=("$a_{i-1}$", r"$s_i\ddot q_i$", r"$v_i\times s_i\dot q_i$",
+                              r"$s_i\ddot q_i + v_i\times s_i\dot q_i$", "$a_i$"),
+                      toward=(None,) * 5, prefix: str = "") -> dict:
+    """One step of acceleration kinematics along a chain (thesis 4.50–4.54, Fig. 4.8).
+
+    ``aᵢ = aᵢ₋₁ + sᵢq̈ᵢ + κᵢ`` with the bias ``κᵢ = vᵢ × sᵢq̇ᵢ``
+    (:func:`planargeo.screws.twists.kappa`), a translation (an ideal point, an arrow at
+    the view's edge).  The joint's part ``sᵢq̈ᵢ + κᵢ`` is a rotation on the line through
+    the joint in the direction of that ideal point, offset by ``|κᵢ|/q̈ᵢ`` (4.54), and
+    ``aᵢ`` lies on its line to ``aᵢ₋₁``; all five are accelerations, ``aᵢ`` marked as the sum.
+    ``v_prev`` is the velocity of the body before the joint (``vᵢ × sᵢ = vᵢ₋₁ × sᵢ``).
+
+    Parameters
+    ----------
+    pic : Picture
+        Where to draw.
+    a_prev, v_prev : array_like (3,)
+        The previous body's acceleration and velocity twists.
+    s : array_like (3,)
+        The joint's unit twist.
+    qd, qdd : float
+        Joint speed and acceleration.
+    labels : tuple of 5 str
+        Labels of ``aᵢ₋₁``, ``sᵢq̈ᵢ``, ``κᵢ``, ``sᵢq̈ᵢ + κᵢ`` and ``aᵢ``.
+    toward : tuple of 5 directions
+        Pixel directions in which the labels are put first (None: the placer's choice).
+    prefix : str
+        Put before every id.
+
+    Returns
+    -------
+    dict
+        The elements ``{"a_prev", "joint", "bias", "joint_total", "a"}``, the lever lines
+        ``"lever"`` (``aᵢ₋₁`` to the joint's part) and ``"joint_lever"`` (``sᵢq̈ᵢ`` to ``κᵢ``)
+        when drawn, and ``"values"`` (the arrays of the five points).
+
+    Raises
+    ------
+    InputError
+        ``pic`` not a Picture, a twist that is not 3 finite numbers, ``qd`` / ``qdd`` not
+        finite numbers (named), or ``labels`` / ``toward`` without five entries.
+
+    Examples
+    --------
+    >>> from planargeo.draw.picture import Picture
+    >>> from planargeo.screws.twists import unit_rotation
+    >>> pic = Picture((-1, 4, -2, 3), size=(300, 300), ticks=False)
+    >>> out = acceleration_step(pic, [0, 0, 0], unit_rotation([0, 0]), unit_rotation([2, 0]), 1.0, 1.0)
+    >>> out["values"]["bias"].tolist()          # kappa = w qd (S - V): a translation along x (4.53)
+    [2.0, 0.0, 0.0]
+    >>> out["joint_total"]["parts"][0]["x"], out["joint_total"]["parts"][0]["y"]   # 2 from the joint (4.54)
+    (2.0, 2.0)
+    """
+    pic = _picture(pic, "acceleration_step")
+    a_prev, v_prev, s = as_vec3(a_prev, "a_prev"), as_vec3(v_prev, "v_prev"), as_vec3(s, "s")
+    qd, qdd = as_scalar(qd, "qd"), as_scalar(qdd, "qdd")
+    labels = _texts(labels, 5, "labels")
+    toward = _texts(toward, 5, "toward")
+    rel = s * qdd
+    bias = kappa(v_prev, s, qd)
+    combo = rel + bias
+    a = a_prev + combo
+    syms = [_symbol(x) for x in labels]
+    out = {}
+    el = _lever(pic, prefix + "lever", a_prev, combo,
+                desc=f"lever line of {syms[0]} and {syms[3]} (4.52): {syms[4]} lies on it")
+    if el is not None:
+        out["lever"] = el
+    el = _lever(pic, prefix + "joint_lever", rel, bias, width=0.6 * PX_PER_PT,
+                desc=f"line of {syms[1]} and {syms[2]} (4.54): {syms[3]} lies on it, "
+                     f"|κ|/q̈ = {num(math.hypot(bias[0], bias[1]) / abs(qdd)) if qdd else '∞'} m "
+                     f"from the joint")
+    if el is not None:
+        out["joint_lever"] = el
+    words = (("a_prev", a_prev, "acceleration of the previous body", "4.50"),
+             ("joint", rel, "joint acceleration", "4.52"),
+             ("bias", bias, "bias acceleration κ = v × s q̇", "4.53"),
+             ("joint_total", combo, "joint's part", "4.54"),
+             ("a", a, "sum", "4.52"))
+    for k, (name, p, what, eq) in enumerate(words):
+        out[name] = _pole(pic, prefix + name, p, role="accel", label=labels[k], toward=toward[k],
+                          emphasis=name == "a",
+                          desc=f"{what} {syms[k]} ({eq}): {_pole_words(p, 'rad/s²', 'm/s²')}")
+    out["values"] = {"a_prev": a_prev, "joint": rel, "bias": bias, "joint_total": combo, "a": a}
+    return out
+
+
+def newton_euler(pic, I, a, v, *, scale=None,
+                 labels=("$v$", "$a$", "$Ia$", "$p$", "$f_{net} = Ia + p$"),
+                 positions=(-1.0, -0.9, 1.0), toward=(None,) * 5, inertia: bool = True,
+                 prefix: str = "") -> dict:
+    """Newton–Euler balance of one body (thesis 4.55–4.56, Fig. 4.9): ``f_net = I a + p``.
+
+    ``I a`` is the axis of percussion of ``a`` (5.64), ``p = v ×* I v``
+    (:func:`planargeo.screws.twists.bias_force`, no gravity) the centripetal force
+    through the centre of mass toward the pole of ``v``, and ``f_net`` their sum, drawn
+    with the sum's heavier line.  The arrows sit at signed distances ``positions`` (for
+    ``Ia``, ``p``, ``f_net``) along each line from the foot of the centre of mass.
+
+    Parameters
+    ----------
+    pic : Picture
+        Where to draw.
+    I : array_like (3, 3)
+        The body's inertia.
+    a, v : array_like (3,)
+        Its acceleration and velocity twists.
+    scale : float, optional
+        Force arrow length per unit force (None: no arrows).
+    labels : tuple of 5 str
+        Labels of ``v``, ``a``, ``Ia``, ``p`` and ``f_net``.
+    positions : (float, float, float)
+        Where the arrows (and labels) of ``Ia``, ``p`` and ``f_net`` sit (see above).
+    toward : tuple of 5 directions
+        Pixel directions in which the labels are put first (None: the placer's choice).
+    inertia : bool
+        Draw the inertia's circle of gyration.
+    prefix : str
+        Put before every id.
+
+    Returns
+    -------
+    dict
+        The elements ``{"inertia", "v", "a", "Ia", "p", "f_net"}`` (those drawn) and
+        ``"values"`` (the arrays ``Ia``, ``p``, ``f_net``).
+
+    Raises
+    ------
+    InputError
+        ``pic`` not a Picture, ``I`` not a finite 3×3 matrix, a twist that is not 3
+        finite numbers, a bad scale, or ``labels`` / ``toward`` / ``positions`` of the
+        wrong length.
+
+    Examples
+    --------
+    >>> from planargeo.draw.picture import Picture
+    >>> from planargeo.screws.twists import inertia_matrix, unit_rotation
+    >>> pic = Picture((-2, 3, -2, 2), size=(300, 240), ticks=False)
+    >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.18)
+    >>> out = newton_euler(pic, I, 2 * unit_rotation([1, -1]), 1.5 * unit_rotation([-1, 0]), scale=0.1)
+    >>> out["values"]["p"].round(12).tolist()   # m l w^2 = 9 toward the pole, along -x through y = 0
+    [-9.0, 0.0, 0.0]
+    >>> out["f_net"]["symbol"]
+    'fₙₑₜ = Ia + p'
+    """
+    pic = _picture(pic, "newton_euler")
+    I, a, v = as_mat3(I, "I"), as_vec3(a, "a"), as_vec3(v, "v")
+    if scale is not None:
+        scale = as_scalar(scale, "scale")
+        if not scale > 0.0:
+            raise InputError(f"scale must be a positive number (data units per unit force), got {scale!r}")
+    labels = _texts(labels, 5, "labels")
+    toward = _texts(toward, 5, "toward")
+    positions = [as_scalar(t, "positions") for t in _texts(positions, 3, "positions")]
+    Ia = I @ a
+    p = bias_force(I, v)
+    fnet = Ia + p
+    c = centre_of_mass(I)
+    syms = [_symbol(x) for x in labels]
+
+    def along(f, t):  # a point at signed distance t along line f from the foot of c
+        F = math.hypot(f[0], f[1])
+        return None if F == 0.0 else c + f[:2] / F * t
+
+    out = {}
+    if inertia:
+        pic.conic(prefix + "inertia", I, role="inertia", symbol="I", label="",
+                  desc=f"inertia I (4.58) as its circle of gyration: m = {num(mass(I))} kg, "
+                       f"centre of mass at {pair(c)} m")
+        out["inertia"] = pic.elements[-1]
+    out["v"] = _pole(pic, prefix + "v", v, role="twist", label=labels[0], toward=toward[0],
+                     desc=f"velocity {syms[0]} (4.10): {_pole_words(v)}")
+    out["a"] = _pole(pic, prefix + "a", a, role="accel", label=labels[1], toward=toward[1],
+                     desc=f"acceleration {syms[1]} (4.50): {_pole_words(a, 'rad/s²', 'm/s²')}")
+    forces = (("Ia", Ia, "wrench", "inertial force I a, the axis of percussion of a", "4.55, 5.64"),
+              ("p", p, "momentum", "centripetal force p = v ×* I v through the centre of mass", "4.56"),
+              ("f_net", fnet, "wrench", "net force f = I a + p", "4.55"))
+    for k, (name, f, role, what, eq) in enumerate(forces):
+        el = _wrench(pic, prefix + name, f, role=role, label=labels[k + 2], scale=scale,
+                     anchor=along(f, positions[k]), emphasis=name == "f_net", toward=toward[k + 2],
+                     desc=f"{what} ({eq}): {force_words(f)}")
+        if el is not None:
+            out[name] = el
+    out["values"] = {"Ia": Ia, "p": p, "f_net": fnet}
+    return out
