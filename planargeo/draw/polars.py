@@ -35,7 +35,7 @@ import math
 import numpy as np
 
 from planargeo.draw.geometry import _mat, _vec, point_xy
-from planargeo.draw.picture import PX_PER_PT, Picture
+from planargeo.draw.picture import PX_PER_PT, Picture, plain_text
 from planargeo.draw.pictures._words import num, pair
 from planargeo.draw.pictures.common import label_line, point_along
 from planargeo.draw.style import COLORS
@@ -180,7 +180,7 @@ def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=No
     pic.line(prefix + "L", K.polar, role="wrench", arrow=False, label="", symbol=L,
              desc=f"polar L = C P of P (5.36): the line through the contacts {pair(contacts[0], 3)} "
                   f"and {pair(contacts[1], 3)}")
-    label_line(pic, prefix + "L", L, anchor=L_anchor)
+    label_line(pic, prefix + "L", plain_text(L), anchor=L_anchor)
     out["L"] = _last(pic)
     pic.point(prefix + "P", p, role="twist", glyph=False, symbol=P,
               desc=f"the point P, outside C (5.36): at {_xy(p)}")
@@ -313,7 +313,7 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
         out[f"R{k + 1}"] = _last(pic)
     pic.line(prefix + "L", K.polar, role="wrench", arrow=False, label="", symbol=L,
              desc=f"polar L = C P of P (5.36): the line through R₁ and R₂, {_line_words(K.polar)}")
-    label_line(pic, prefix + "L", L, anchor=L_anchor)
+    label_line(pic, prefix + "L", plain_text(L), anchor=L_anchor)
     out["L"] = _last(pic)
     pic.point(prefix + "P", p, role="twist", glyph=False, symbol=P,
               desc=f"the point P, inside C (5.36): at {_xy(p)}")
@@ -396,7 +396,7 @@ def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = Tr
         where_f = "through the centre of mass (the pole is at infinity)"
     pic.line(prefix + "f", f, role="wrench", arrow=False, label="", symbol=f_name,
              desc=f"axis of percussion f = I a (5.64–5.68): {where_f}")
-    label_line(pic, prefix + "f", f_name, anchor=f_anchor)
+    label_line(pic, prefix + "f", plain_text(f_name), anchor=f_anchor)
     out["f"] = _last(pic)
     pic.point(prefix + "a", a, role="accel", symbol=a_name,
               desc=f"acceleration pole a (5.64): the point of the body with no acceleration, "
@@ -404,19 +404,16 @@ def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = Tr
     out["a"] = _last(pic)
     if dims and foot is not None:
         axy = to_xy(a)
-        segment(pic, prefix + "lever", axy, foot)
-        out["lever"] = _last(pic)
-        out["lever"]["symbol"] = "lever"
-        out["lever"]["desc"] = "the line from the pole a through the centre of mass to the axis (5.68)"
+        out["lever"] = segment(pic, prefix + "lever", axy, foot, symbol="lever",
+                               desc="the line from the pole a through the centre of mass to the axis (5.68)")
         d = float(np.hypot(*(axy - c)))
         out["dims"] = []
-        for id_, (q0, q1), text, desc in (
-                ("d", (axy, c), "$d$", f"distance d from the pole a to the centre of mass (5.68): {num(d)} m"),
-                ("rho2/d", (c, foot), r"$\rho^2/d$",
+        for id_, (q0, q1), sym, desc in (
+                ("d", (axy, c), "d", f"distance d from the pole a to the centre of mass (5.68): {num(d)} m"),
+                ("rho2/d", (c, foot), "ρ²/d",
                  f"distance ρ²/d from the centre of mass to the axis of percussion (5.68): {num(rho * rho / d)} m")):
-            dimension(pic, prefix + id_, q0, q1, text)
-            el = _last(pic)
-            el["symbol"], el["desc"] = text.strip("$").replace("\\rho", "ρ").replace("^2", "²"), desc
+            el = dimension(pic, prefix + id_, q0, q1, sym, desc=desc)
+            el["symbol"] = sym
             out["dims"].append(el)
     return out
 
@@ -427,7 +424,7 @@ def power_values(v, I, *, f_angle: float = 0.6, a_distance: float = 1.6) -> dict
 
     ``f`` is the line through ``v`` whose direction is the momentum's turned by
     ``f_angle`` (for a translation ``v``, an ideal point: the line through the
-    centre of mass along ``v``'s direction); ``a`` is the point of ``p`` at signed
+    centre of mass across the translation); ``a`` is the point of ``p`` at signed
     distance ``a_distance`` from the foot of the perpendicular from the centre of
     mass.  Ideal elements are ordinary values: ``v`` at the centre of mass makes
     ``p`` a pure couple (the line at infinity), and ``a`` is then an ideal point (a
@@ -472,7 +469,7 @@ def power_values(v, I, *, f_angle: float = 0.6, a_distance: float = 1.6) -> dict
     if v[2] != 0.0:
         f = np.cross(v, from_direction(ef))              # through v, along ef
     else:
-        f = np.cross(v, from_xy(c))                      # through c, parallel to the translation
+        f = np.cross(v, from_xy(c))                      # through c, across the translation
     if F != 0.0:   # on p, a_distance from the foot of the perpendicular from the centre of mass
         e = p[:2] / F
         foot = np.cross(p, np.cross(from_xy(c), from_direction([-e[1], e[0]])))   # homogeneous
@@ -552,14 +549,14 @@ def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
     if F != 0.0:
         pic.line(prefix + "p", p, role="momentum", arrow=False, label="", symbol=np_,
                  desc=f"momentum p = I v (5.71): {num(F)} kg·m/s, {_line_words(p)}")
-        label_line(pic, prefix + "p", np_, anchor=p_anchor)
+        label_line(pic, prefix + "p", plain_text(np_), anchor=p_anchor)
     else:
         pic.line(prefix + "p", p, role="momentum", arrow=False, symbol=np_,
                  desc=f"momentum p = I v (5.71): a pure angular momentum {num(p[2])} kg·m²/s (the line at infinity)")
     out["p"] = _last(pic)
     pic.line(prefix + "f", f, role="wrench", arrow=False, label="", symbol=nf,
              desc=f"a powerless force f, vᵀf = 0 (5.69): a line through the pole v, {_line_words(f)}")
-    label_line(pic, prefix + "f", nf, anchor=f_anchor)
+    label_line(pic, prefix + "f", plain_text(nf), anchor=f_anchor)
     out["f"] = _last(pic)
     pic.point(prefix + "a", a, role="accel", glyph=False, symbol=na,
                 desc=f"a powerless acceleration a, pᵀa = 0 (5.72): a point of the momentum line, "
