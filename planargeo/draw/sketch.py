@@ -44,7 +44,7 @@ from planargeo.draw.style import COLORS, LINEWIDTHS, STYLES
 from planargeo.errors import InputError
 
 __all__ = ["panel", "fit_box", "show", "label", "segment", "dimension", "link_polygon",
-           "transform_shape", "body", "link", "pin", "ground", "slider", "frame", "com", "model",
+           "transform_shape", "arrow", "body", "link", "pin", "ground", "slider", "frame", "com", "model",
            "model_shapes", "slider_guide", "contact", "split_arrows", "joint_split"]
 
 #: outline colour of bodies and body labels
@@ -475,6 +475,55 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
              _text_part(m[0], m[1], text, gap * npx[0], gap * npx[1], *_align(npx))]
     return _element(pic, id, "construct", parts, desc=desc or text,
                     color=color or COLORS["construct"], width=0.7 * PX_PER_PT, z=2)
+
+
+def arrow(pic: Picture, id: str, p, q, *, role: str = "wrench", color=None, label=None,
+          offset=(5, 5), symbol: str = "", desc: str = "", z: int = 5) -> dict:
+    """An arrow from ``p`` to ``q`` (data points; the picture's arrow: solid shaft, head at ``q``).
+
+    Parameters
+    ----------
+    pic : Picture
+    id : str
+    p, q : (float, float)
+        Tail and tip (distinct).
+    role : str
+        Style role (its colour).
+    color : str, optional
+    label : str, optional
+        Text at the tip, moved by ``offset`` points (placed).
+    offset : (float, float)
+        Shift of the label (points, y up).
+    symbol, desc : str
+    z : int
+
+    Returns
+    -------
+    dict
+        The element: ``[arrow, text]``.
+
+    Raises
+    ------
+    InputError
+        ``p`` and ``q`` coincide or are not finite points.
+
+    Examples
+    --------
+    >>> pic = Picture((0, 2, 0, 2), size=(100, 100), ticks=False, margin=(0, 0, 0, 0))
+    >>> part = arrow(pic, "F", (0.0, 1.0), (1.0, 1.0))["parts"][0]
+    >>> part["x"], part["y"], part["dx"], part["dy"]        # 1 unit = 50 px to the right
+    (0.0, 1.0, 50.0, 0.0)
+    """
+    p, q = _xy(p, "p"), _xy(q, "q")
+    if np.array_equal(p, q):
+        raise InputError("arrow: p and q must be distinct points")
+    _pic(pic)
+    d = (q - p) * (pic.kx, pic.ky)
+    parts = [{"p": "arrow", "x": float(p[0]), "y": float(p[1]), "dx": float(d[0]), "dy": float(d[1])}]
+    if label:
+        parts.append(_text_part(q[0], q[1], label, offset[0] * PX_PER_PT, offset[1] * PX_PER_PT))
+    return _element(pic, id, role, parts, symbol=symbol, desc=desc, color=_role_color(role, color),
+                    width=LINEWIDTHS.get(role, 1.3) * PX_PER_PT, z=z)
 
 
 # --------------------------------------------------------------------------- shapes

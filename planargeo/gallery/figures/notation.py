@@ -2,12 +2,9 @@
 from __future__ import annotations
 
 import numpy as np
-from matplotlib.patches import Circle, Rectangle
+from shapely.geometry import Point as SPoint, box as sbox
 
-from planargeo.draw.artists import plot_point
-from planargeo.draw.constructions import label
-from planargeo.draw.layout import fit_view
-from planargeo.draw.mechanism import draw_frame, draw_model
+from planargeo.draw.sketch import arrow, body, frame, label, model, panel, show
 from planargeo.draw.style import COLORS
 from planargeo.gallery.figures import chain, register
 from planargeo.mechanics.kinematics import kinematics
@@ -22,20 +19,22 @@ def fig2_1(ax):
     m = chain(3)
     q = np.array([0.5, -0.6, 0.7])
     d = kinematics(m, q, np.zeros(3))
-    names = ["$i-1$", "$i$", "$i+1$"]
-    draw_model(m, d, ax, alpha=0.25, names=[f"body {n}" for n in names], show_com=False)
     pose = np.asarray(d.pose)
+    tip = 2 * np.asarray(d.com)[2] - pose[2, :2]
+    pic = panel(ax, [pose[0, :2] - [0.35, 0.45], tip + [0.25, 0.2], pose[1, :2] + [0.0, 0.5]],
+                margin=0.06)
+    names = ["i − 1", "i", "i + 1"]
+    model(pic, m, d, alpha=0.25, names=[f"body {n}" for n in names], show_com=False)
     for i in range(3):             # body i's frame at joint i, turned with the body
-        draw_frame(pose[i, :2], ax, angle=pose[i, 2], length=0.3, labels=("", ""))
+        frame(pic, f"frame {i + 1}", pose[i, :2], angle=pose[i, 2], length=0.3, labels=("", ""),
+              desc=f"the local frame of body {names[i]}, at joint {names[i]}, turned with the body")
     s = np.asarray(d.s(1))[:, 0]                  # joint i's unit twist: its pole is the joint
     assert np.allclose([-s[1] / s[2], s[0] / s[2]], pose[1, :2])
-    plot_point(s, ax, role="twist", glyph=True, text="joint $i$: $s_i\\dot q_i$",
-               text_offset=(-12, 12))
-    label(pose[2, :2], "joint $i+1$", ax=ax, offset=(8, -16))
-    label(pose[0, :2], "joint $i-1$", ax=ax, offset=(10, -18))
-    tip = 2 * np.asarray(d.com)[2] - pose[2, :2]
-    fit_view([pose[0, :2] - [0.35, 0.45], tip + [0.25, 0.2], pose[1, :2] + [0.0, 0.5]],
-             margin=0.06, ax=ax)
+    pic.point("s_i", s, role="twist", label="joint i: sᵢq̇ᵢ", symbol="sᵢ",
+              desc="unit twist of joint i (2.1): its pole is the joint, the relative motion sᵢq̇ᵢ")
+    label(pic, "joint i+1", pose[2, :2], "joint i + 1", offset=(8, -16))
+    label(pic, "joint i-1", pose[0, :2], "joint i − 1", offset=(10, -18))
+    show(pic, ax)
 
 
 def apparent_mass(m: float = 1.0):
@@ -90,21 +89,27 @@ def fig3_3(ax):
     assert np.isclose(along(0.0), m) and np.isclose(along(np.pi / 2), 2 * m)    # 3.14
     assert np.allclose(A[:2, :2], np.diag([m, 2 * m]))
     R = 1.0
-    ax.add_patch(Circle((0, 0), R, fc=COLORS["body"], alpha=0.3, ec="#1f3a4d", lw=1.0))
-    ax.add_patch(Rectangle((-R, -0.16), 2 * R, 0.32, fc="white", ec="#1f3a4d", lw=0.8))
-    ax.add_patch(Rectangle((-0.3, -0.13), 0.6, 0.26, fc=COLORS["momentum"], alpha=0.6,
-                           ec="#1f3a4d", lw=0.8))
-    label((0.62, 0.62), "sphere $m$", ax=ax, offset=(4, 4))
-    label((-0.3, -0.13), "cylinder $m$", ax=ax, offset=(-6, -14), ha="right")
+    pic = panel(ax, [[-1.6, -1.7], [2.3, 1.7]], margin=0.02)
+    body(pic, "sphere", SPoint(0.0, 0.0).buffer(R, quad_segs=24), alpha=0.3,
+         desc="the sphere (a disc), mass m, free to slide along the slot")
+    body(pic, "slot", sbox(-R, -0.16, R, 0.16), color="white", alpha=1.0, z=2,
+         desc="the slot along x in which the sphere slides")
+    body(pic, "cylinder", sbox(-0.3, -0.13, 0.3, 0.13), color=COLORS["momentum"], alpha=0.6, z=3,
+         desc="the cylinder (the slider), mass m")
+    label(pic, "sphere label", (0.62, 0.62), "sphere m", offset=(4, 4))
+    label(pic, "cylinder label", (-0.3, -0.13), "cylinder m", offset=(-6, -14), ha="right")
     th = np.linspace(0, 2 * np.pi, 181)
     r = 0.75 * np.array([along(t) for t in th])
-    ax.plot(r * np.cos(th), r * np.sin(th), color=COLORS["wrench"], lw=1.0, ls="--")
-    label((0.0, -1.5), "apparent mass", ax=ax, offset=(0, -2), ha="center", va="top",
-          color=COLORS["wrench"])
-    for d, txt, off in (((1.0, 0.0), "$F_x$: mass $m$", (4, 4)),
-                        ((0.0, 1.0), "$F_y$: mass $2m$", (5, 0))):
+    pic.path("apparent mass", np.column_stack([r * np.cos(th), r * np.sin(th)]), role="wrench",
+             width=1.0 * 100 / 72, dash=[4.0 * 100 / 72, 1.5 * 100 / 72], z=4,
+             desc="apparent mass 1/(eᵀA⁻¹e) for a force along e (3.14), 0.75 units per kg: "
+                  f"{along(0.0):.3g} kg along x, {along(np.pi / 2):.3g} kg along y")
+    label(pic, "apparent mass label", (0.0, -1.5), "apparent mass", offset=(0, -2), ha="center",
+          va="top", role="wrench")
+    for d, name, txt, off in (((1.0, 0.0), "F_along", "F∥: mass m", (4, 4)),
+                              ((0.0, 1.0), "F_across", "F⊥: mass 2m", (5, 0))):
         tip = 0.35 * np.array(d) + 0.9 * np.array(d) * (1.0 if d[0] else 1.2)
-        ax.annotate("", xy=tuple(tip), xytext=tuple(0.3 * np.array(d)),
-                    arrowprops=dict(arrowstyle="-|>", color=COLORS["wrench"], lw=1.6))
-        label(tip, txt, ax=ax, offset=off, color=COLORS["wrench"])
-    fit_view([[-1.6, -1.7], [2.3, 1.7]], margin=0.02, ax=ax)
+        arrow(pic, name, 0.3 * np.array(d), tip, role="wrench", label=txt, offset=off,
+              symbol=txt.split(":")[0], desc=f"a force on the slider through its centre, "
+              f"{'along' if d[0] else 'across'} the slot: apparent {txt.split(': ')[1]} (3.14)")
+    show(pic, ax)
