@@ -38,8 +38,9 @@ import numpy as np
 
 from planargeo.draw.geometry import conic_geometry
 from planargeo.draw.pictures.articulated import MARGIN, articulated_picture, chain_view, fit_box
-from planargeo.scenes.articulated import articulated_state, bent_chain_model, inertia_at
+from planargeo.scenes.articulated import articulated_state, inertia_at
 from planargeo.widgets._motion import Motion
+from planargeo.widgets._explorer import ChainBodies
 from planargeo.widgets.base import Explorer, Handle, Step, cached, point_text
 
 __all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip"]
@@ -113,7 +114,7 @@ def bend_for_tip(xy, n: int, base: float, L: float = 1.0) -> float:
     return float(phi)
 
 
-class ArticulatedExplorer(Explorer):
+class ArticulatedExplorer(ChainBodies, Explorer):
     """Rigid and articulated inertias of a chain as conics, their axes of percussion and convergence.
 
     Parameters
@@ -144,13 +145,11 @@ class ArticulatedExplorer(Explorer):
         C_ROW: "W",
     }
 
+    spans = ("outboard bodies", -1, NMAX - 1)
+
     def __init__(self, **kw):
-        self._models: dict = {}
         self._motions: dict = {}     # the swing of each configuration (Motion of (q, q̇, W))
         super().__init__(**kw)
-
-    def __repr__(self) -> str:
-        return "ArticulatedExplorer(...)"
 
     # ------------------------------------------------------------------ controls
     def make_controls(self):
@@ -277,15 +276,6 @@ class ArticulatedExplorer(Explorer):
         def pole_drag(x, y):
             return {"pole x": float(x), "pole y": float(y)}
 
-        def tip_where():
-            pts = self._joints()
-            return None if pts is None or len(pts) < 3 else tuple(pts[-1])
-
-        def tip_drag(x, y):
-            v = self.values
-            phi = bend_for_tip((x, y), int(v["bodies n"]), math.radians(v["base θ₁ (deg)"]))
-            return {"bend φ (deg)": float(np.clip(math.degrees(phi), -180.0, 180.0))}
-
         def base_where():
             pts = self._joints()
             return None if pts is None else tuple(pts[1])
@@ -295,7 +285,7 @@ class ArticulatedExplorer(Explorer):
                 return {}
             return {"base θ₁ (deg)": float(math.degrees(math.atan2(y, x)))}
 
-        return [Handle("pole a", pole_where, pole_drag), Handle("tip", tip_where, tip_drag),
+        return [Handle("pole a", pole_where, pole_drag), self._tip_handle("base θ₁ (deg)"),
                 Handle("first body", base_where, base_drag)]
 
     def focus_options(self):
@@ -306,40 +296,6 @@ class ArticulatedExplorer(Explorer):
         w = getattr(self, "controls", {}).get("bodies n")
         n = NMAX if w is None or getattr(self, "state", None) is None else int(w.value)
         return [f"body {i}" for i in range(1, n + 1)]
-
-    def set(self, **values):
-        """Set several controls at once (the base's :meth:`~planargeo.widgets.base.Explorer.set`).
-
-        With ``bodies n`` among them, ``outboard bodies`` takes any value its widest range allows
-        (checked against the new ``n`` by :meth:`adjust`); its slider spans the shown chain after.
-
-        Parameters
-        ----------
-        **values
-            ``name=value`` for each control to set.
-
-        Returns
-        -------
-        Explorer
-            ``self``.
-        """
-        if "bodies n" not in values:
-            return super().set(**values)
-        w = self.controls["outboard bodies"]
-        with self._quietly():
-            w.max = NMAX - 1
-        try:
-            return super().set(**values)
-        finally:
-            n = int((self.shown_values or self.values)["bodies n"])
-            if w.max != n - 1 and w.value <= n - 1:
-                with self._quietly():
-                    w.max = n - 1
-
-    def mechanism_points(self):
-        # Points the view must hold: every joint of the chain and the tip (the base's rule tests).
-        st = self.state
-        return np.zeros((0, 2)) if st is None else np.asarray(st["joints"], dtype=float).reshape(-1, 2)
 
     def _joints(self):
         st = self.state
@@ -358,9 +314,6 @@ class ArticulatedExplorer(Explorer):
     def _key(self, v):
         return (int(v["bodies n"]), float(v["λ = L/ρ"]), float(v["bend φ (deg)"]), float(v["base θ₁ (deg)"]),
                 float(v["g (m/s²)"]), float(v["damping c"]))
-
-    def _model(self, n, lam, g=0.0):
-        return cached(self._models, (n, lam, g), lambda: bent_chain_model(n, 1.0 / lam, 1.0, 1.0, g))
 
     def _q0(self, v):
         n = int(v["bodies n"])
@@ -382,7 +335,7 @@ class ArticulatedExplorer(Explorer):
 
         key = self._key(v)
         n, c = key[0], key[5]
-        model = self._model(n, key[1], key[4])
+        model = self._model(n, 1.0 / key[1], key[4])
 
         def rhs(_t, y):
             qd = y[n:2 * n]
@@ -401,12 +354,12 @@ class ArticulatedExplorer(Explorer):
         motion = self.motion(values)
         y = motion.at(t)
         q, qd, W = y[:n], y[n:2 * n], float(y[2 * n])
-        model_g = self._model(n, lam, float(values["g (m/s²)"]))
+        model_g = self._model(n, 1.0 / lam, float(values["g (m/s²)"]))
         T, V = energy(model_g, q, qd)
         E0 = float(sum(energy(model_g, self._q0(values), np.zeros(n))))
         out_k = int(values["outboard bodies"])
         outboard = None if out_k >= n - 1 else out_k
-        st = articulated_state(self._model(n, lam), q, outboard=outboard,
+        st = articulated_state(self._model(n, 1.0 / lam), q, outboard=outboard,
                                pole=(float(values["pole x"]), float(values["pole y"])))
         st.update(n=n, lam=lam, q=q, outboard=out_k, t=t, energy=(float(T + V), W, E0), c=float(values["damping c"]))
         return st
@@ -454,10 +407,7 @@ class ArticulatedExplorer(Explorer):
         n = state["n"]
         k = self._focus_k(n)
         pts = state["joints"]
-        w = self.controls["outboard bodies"]          # the slider spans the bodies outboard of body 1
-        if w.max != n - 1:
-            with self._quietly():
-                w.max = n - 1
+        self._span(n)                                  # the slider spans the bodies outboard of body 1
         # readout
         Ak = state["A"][k]
         zero = float(self.zero_tol) * float(self.scale)

@@ -35,7 +35,6 @@ Examples
 from __future__ import annotations
 
 import io
-import math
 import re
 from pathlib import Path
 
@@ -45,6 +44,7 @@ from planargeo.draw.pictures.construction import construction_picture
 from planargeo.errors import InputError
 from planargeo.files import atomic_write
 from planargeo.scenes.construction import CONSTRUCTIONS, construct, parameters
+from planargeo.widgets._explorer import arrow_handle, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["ConstructionExplorer"]
@@ -416,63 +416,8 @@ class ConstructionExplorer(Explorer):
     # ------------------------------------------------------------------ handles
     def handles(self) -> list[Handle]:
         # Drag handles: the construction's input points, and force directions by their arrow tip.
-        out = []
-        for name, px, py in _POINTS[self.construction]:
-            out.append(Handle(name, self._where(px, py), self._move(px, py)))
-        for name, px, py, pa, pf in _DIRECTIONS.get(self.construction, []):
-            out.append(Handle(name, self._tip(px, py, pa, pf), self._turn(px, py, pa, pf)))
-        return out
-
-    def handle_position(self, name: str):
-        """Current data position of handle ``name``.
-
-        Parameters
-        ----------
-        name : str
-
-        Returns
-        -------
-        (float, float) or None
-
-        Raises
-        ------
-        InputError
-            No handle of that name.
-        """
-        for h in self.handles():
-            if h.name == name:
-                return h.where()
-        raise InputError(f"name must name a handle of this construction "
-                         f"({', '.join(h.name for h in self.handles())}), got {name!r}")
-
-    def _shown(self):
-        return self.shown_values or self.values
-
-    def _where(self, px, py):
-        return lambda: (self._shown()[px], self._shown()[py])
-
-    def _move(self, px, py):
-        return lambda x, y: {px: x, py: y}
-
-    def _tip(self, px, py, pa, pf):
-        def where():
-            v = self._shown()
-            a = math.radians(v[pa])
-            s = -1.0 if v[pf] < 0 else 1.0
-            return (v[px] + s * ARM * math.cos(a), v[py] + s * ARM * math.sin(a))
-        return where
-
-    def _turn(self, px, py, pa, pf):
-        def drag(x, y):
-            v = self._shown()
-            dx, dy = x - v[px], y - v[py]
-            if dx == 0 and dy == 0:
-                raise InputError(f"{pa}: the direction handle is on the force's point, "
-                                 f"which gives no direction")
-            if v[pf] < 0:
-                dx, dy = -dx, -dy
-            return {pa: math.degrees(math.atan2(dy, dx))}
-        return drag
+        return ([xy_handle(self, *p) for p in _POINTS[self.construction]]
+                + [arrow_handle(self, *d, arm=ARM, flip=True) for d in _DIRECTIONS.get(self.construction, [])])
 
     # ------------------------------------------------------------------ export
     def export_layers(self, path=None) -> Path:

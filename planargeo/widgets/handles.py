@@ -90,6 +90,25 @@ class HandleMixin:
         """
         return list(self.handles())
 
+    def handle_position(self, name: str):
+        """Where handle ``name`` is now (None: it cannot be dragged now).
+
+        Parameters
+        ----------
+        name : str
+            A handle's name (:meth:`handles`).
+
+        Returns
+        -------
+        (float, float) or None
+
+        Raises
+        ------
+        InputError
+            No handle of that name.
+        """
+        return self._handle(name).where()
+
     def _handle(self, name: str) -> Handle:
         found = {h.name: h for h in self.all_handles()}
         if name not in found:

@@ -36,10 +36,9 @@ import ipywidgets as W
 import numpy as np
 
 from planargeo.draw.pictures.impulse import impulse_picture
-from planargeo.errors import DegenerateGeometryError
 from planargeo.scenes.impulse import BODIES, body_outline, impulse
-from planargeo.scenes.subspace import unit_direction
-from planargeo.widgets.base import Explorer, Handle, Step, point_text
+from planargeo.widgets._explorer import arrow_handle, grown_view, xy_handle
+from planargeo.widgets.base import Explorer, Step, point_text
 
 __all__ = ["ImpulseExplorer"]
 
@@ -127,23 +126,9 @@ class ImpulseExplorer(Explorer):
 
     # ------------------------------------------------------------------ handles and Play
     def handles(self):
-        # Draggable handles: the blow's point and its arrow tip.
-        return [Handle("blow point", lambda: (self.values["strike x"], self.values["strike y"]),
-                       lambda x, y: {"strike x": x, "strike y": y}),
-                Handle("blow tip", self._tip_where, self._drag_tip)]
-
-    def _tip_where(self):
-        v = self.values
-        e = unit_direction(v["strike angle"]) * (ARROW * v["J"] / 2)
-        return (v["strike x"] + e[0], v["strike y"] + e[1])
-
-    def _drag_tip(self, x, y):
-        v = self.values
-        d = np.array([x - v["strike x"], y - v["strike y"]])
-        n = float(np.hypot(*d))
-        if not n > 1e-9:
-            raise DegenerateGeometryError("J must be non-zero: the arrow's tip is on the blow point (no blow)")
-        return {"strike angle": math.degrees(math.atan2(d[1], d[0])), "J": 2 * n / ARROW}
+        # Draggable handles: the blow's point and its arrow's tip (the arrow is ARROW × J / 2 long).
+        return [xy_handle(self, "blow point", "strike x", "strike y"),
+                arrow_handle(self, "blow tip", "strike x", "strike y", "strike angle", "J", per=ARROW / 2)]
 
     def play_step(self, values, dt):
         # The next frame of the motion after the blow: ``t + dt`` (None at the end).
@@ -156,30 +141,13 @@ class ImpulseExplorer(Explorer):
         return impulse(body=values["body"], support=values["support"], m=float(values["m"]), x=float(values["strike x"]),
                        y=float(values["strike y"]), angle_deg=float(values["strike angle"]), J=float(values["J"]))
 
-    def view_box(self) -> tuple[float, float, float, float]:
-        """The view: the fixed frame, grown (never shrunk) to hold the blow's point and arrow tip.
-
-        Each side is at least the mechanism's extent (the body at rest, the blow's point
-        and tip) plus 0.2 m.
-
-        Returns
-        -------
-        tuple
-            ``(x0, x1, y0, y1)``.
-        """
+    def _view(self) -> tuple[float, float, float, float]:
+        """The fixed frame grown (never shrunk) to hold the blow's tip; no side shorter than the
+        mechanism (the body at rest, the blow's point and tip) and 0.2 m."""
         v = self.values
-        tip = np.array([v["strike x"], v["strike y"]]) + unit_direction(v["strike angle"]) * (ARROW * v["J"] / 2)
-        x0, x1, y0, y1 = self.limits
-        x0, x1 = min(x0, tip[0] - 0.1), max(x1, tip[0] + 0.1)
-        y0, y1 = min(y0, tip[1] - 0.1), max(y1, tip[1] + 0.1)
-        # no side shorter than the mechanism (the body at rest and the blow's handles) and a margin
-        pts = np.vstack([body_outline(v["body"]), [v["strike x"], v["strike y"]], tip])
-        size = float(np.max(np.ptp(pts, axis=0))) + 0.2
-        if x1 - x0 < size:
-            x0, x1 = x0 - (size - (x1 - x0)) / 2, x1 + (size - (x1 - x0)) / 2
-        if y1 - y0 < size:
-            y0, y1 = y0 - (size - (y1 - y0)) / 2, y1 + (size - (y1 - y0)) / 2
-        return (x0, x1, y0, y1)
+        tip = self.handle_position("blow tip")
+        return grown_view(self.limits, [tip], 0.1, extra=0.2,
+                          sized=np.vstack([body_outline(v["body"]), [v["strike x"], v["strike y"]], tip]))
 
     def mechanism_points(self):
         # Points the view must hold: the handles and the body's outline at rest.
@@ -193,7 +161,7 @@ class ImpulseExplorer(Explorer):
 
     def scene_picture(self, state, view=None):
         # The state's picture, built natively (:func:`planargeo.draw.pictures.impulse.impulse_picture`).
-        return impulse_picture(state, t=float(self.values["t"]), view=view or self.view_box(), size=self.figure_px)
+        return impulse_picture(state, t=float(self.values["t"]), view=view or self._view(), size=self.figure_px)
 
     def _readout(self, r, held):
         q = r.quantities

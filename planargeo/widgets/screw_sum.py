@@ -45,6 +45,7 @@ from planargeo.geometry.projective import is_at_infinity
 from planargeo.screws.special import twists_case, wrenches_case
 from planargeo.screws.twists import Twist, Wrench, add_twists, add_wrenches
 from planargeo.widgets._points import point_value
+from planargeo.widgets._explorer import _shown, arrow_handle, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["ScrewSumExplorer"]
@@ -107,11 +108,6 @@ class ScrewSumExplorer(Explorer):
     ----------
     **kwargs
         As :class:`~planargeo.widgets.base.Explorer` (``display``, initial control values).
-
-    Raises
-    ------
-    InputError
-        An unknown control or a value it does not take.
     """
 
     title = "Twist and wrench addition"
@@ -291,68 +287,18 @@ class ScrewSumExplorer(Explorer):
 
     # ------------------------------------------------------------------ handles
     def handles(self) -> list[Handle]:
-        # The draggable poles, force lines (by a point) and directions (by an arm's tip).
-        # ``v1``, ``v2``: the pole of a rotation (sets ``xk``, ``yk``);
-        # ``v1 direction``, ``v2 direction``: a translation's direction (``anglek``);
-        # ``f1``, ``f2``: a point of a force line (``xk``, ``yk``);
-        # ``f1 direction``, ``f2 direction``: the tip of an arm of length
-        # :data:`ARM` along the force (``anglek``).  A handle of a screw of
-        # another kind, or of the other mode, is not draggable (``where()`` is None).
+        # ``v1``, ``v2``: a rotation's pole (``xk``, ``yk``); ``v1 direction``, ``v2 direction``: a
+        # translation's direction (``anglek``); ``f1``, ``f2``: a point of a force line; ``f1 direction``,
+        # ``f2 direction``: the tip of an arm :data:`ARM` long along the force.  A handle of a screw
+        # of another kind is not draggable now (``where()`` is None).
         out = []
         for k in (1, 2):
-            out += [Handle(f"v{k}", self._where(k, "rotation", False), self._move(k)),
-                    Handle(f"v{k} direction", self._where(k, "translation", True), self._turn(k)),
-                    Handle(f"f{k}", self._where(k, "force", False), self._move(k)),
-                    Handle(f"f{k} direction", self._where(k, "force", True), self._turn(k))]
+            def kind_is(kind, k=k):
+                return lambda: _shown(self).get(f"kind{k}") == kind
+            xy = (f"x{k}", f"y{k}")
+            turn = (f"angle{k}", f"size{k}")
+            out += [xy_handle(self, f"v{k}", *xy, when=kind_is("rotation")),
+                    arrow_handle(self, f"v{k} direction", *xy, *turn, arm=ARM, when=kind_is("translation")),
+                    xy_handle(self, f"f{k}", *xy, when=kind_is("force")),
+                    arrow_handle(self, f"f{k} direction", *xy, *turn, arm=ARM, flip=True, when=kind_is("force"))]
         return out
-
-    def handle_position(self, name: str):
-        """Current data position of handle ``name`` (None: not draggable now).
-
-        Parameters
-        ----------
-        name : str
-
-        Returns
-        -------
-        (float, float) or None
-
-        Raises
-        ------
-        InputError
-            No handle of that name.
-        """
-        for h in self.handles():
-            if h.name == name:
-                return h.where()
-        raise InputError(f"name must name a handle of ScrewSumExplorer, got {name!r}")
-
-    def _where(self, k: int, kind: str, arm: bool):
-        def where():
-            v = self.shown_values or self.values
-            if v.get(f"kind{k}") != kind:
-                return None
-            x, y = v[f"x{k}"], v[f"y{k}"]
-            if not arm:
-                return (x, y)
-            a = math.radians(v[f"angle{k}"])
-            sign = -1.0 if (kind == "force" and v[f"size{k}"] < 0) else 1.0
-            return (x + sign * ARM * math.cos(a), y + sign * ARM * math.sin(a))
-        return where
-
-    def _move(self, k: int):
-        def drag(x, y):
-            return {f"x{k}": x, f"y{k}": y}
-        return drag
-
-    def _turn(self, k: int):
-        def drag(x, y):
-            v = self.shown_values or self.values
-            dx, dy = x - v[f"x{k}"], y - v[f"y{k}"]
-            if dx == 0 and dy == 0:
-                raise InputError(f"angle{k}: the direction handle is on the screw's point, "
-                                 f"which gives no direction")
-            if v[f"kind{k}"] == "force" and v[f"size{k}"] < 0:
-                dx, dy = -dx, -dy          # the arm points along the force, not along the angle
-            return {f"angle{k}": math.degrees(math.atan2(dy, dx))}
-        return drag

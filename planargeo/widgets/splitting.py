@@ -32,10 +32,9 @@ import numpy as np
 
 from planargeo.draw.pictures.articulated import fit_box
 from planargeo.draw.pictures.splitting import splitting_picture
-from planargeo.scenes.articulated import bent_chain_model
 from planargeo.scenes.splitting import splitting_state, twist_pole
-from planargeo.widgets.articulated import bend_for_tip
-from planargeo.widgets.base import Explorer, Handle, Step, cached, point_text
+from planargeo.widgets._explorer import ChainBodies
+from planargeo.widgets.base import Explorer, Handle, Step, point_text
 
 __all__ = ["SplittingExplorer", "NMAX", "x_over_L_7_48"]
 
@@ -71,7 +70,7 @@ def x_over_L_7_48(rho: float, L: float, phi: float) -> float:
     return 1.0 + 2.0 * eta2 * math.cos(phi) / (4.0 + 5.0 * eta2)
 
 
-class SplittingExplorer(Explorer):
+class SplittingExplorer(ChainBodies, Explorer):
     """A pinned chain split at a chosen joint: mobilities, accelerations of both halves, the split force.
 
     Parameters
@@ -105,12 +104,7 @@ class SplittingExplorer(Explorer):
         "bᵢ": _ACC, "q̈ (6.110)": "rad/s²",
     }
 
-    def __init__(self, **kw):
-        self._models: dict = {}
-        super().__init__(**kw)
-
-    def __repr__(self) -> str:
-        return "SplittingExplorer(...)"
+    spans = ("split at joint", 0, NMAX)
 
     def make_controls(self):
         # The explorer's controls.
@@ -194,9 +188,6 @@ class SplittingExplorer(Explorer):
         # Returns ``"constrained part"`` (bodies ``1..i``) and ``"free-floating part"`` (``i+1..n``).
         return ["constrained part", "free-floating part"]
 
-    def _model(self, n, rho, g):
-        return cached(self._models, (n, rho, g), lambda: bent_chain_model(n, rho, 1.0, 1.0, g))
-
     def handles(self):
         # Draggable handles: the split marker (snaps to the nearest joint) and the tip (bend ``φ``).
         def split_where():
@@ -210,49 +201,7 @@ class SplittingExplorer(Explorer):
             d = np.hypot(*(st["joints"][1:st["n"]] - [x, y]).T)
             return {"split at joint": int(np.argmin(d)) + 2}
 
-        def tip_where():
-            st = self.state
-            return None if st is None else tuple(st["joints"][-1])
-
-        def tip_drag(x, y):
-            phi = bend_for_tip((x, y), int(self.values["bodies n"]), 0.0)
-            return {"bend φ (deg)": float(np.clip(math.degrees(phi), -180.0, 180.0))}
-
-        return [Handle("split", split_where, split_drag), Handle("tip", tip_where, tip_drag)]
-
-    def set(self, **values):
-        """Set several controls at once (the base's :meth:`~planargeo.widgets.base.Explorer.set`).
-
-        With ``bodies n`` among them, ``split at joint`` takes any value its widest range allows
-        (checked against the new ``n`` by :meth:`adjust`); its slider spans the shown chain after.
-
-        Parameters
-        ----------
-        **values
-            ``name=value`` for each control to set.
-
-        Returns
-        -------
-        Explorer
-            ``self``.
-        """
-        if "bodies n" not in values:
-            return super().set(**values)
-        w = self.controls["split at joint"]
-        with self._quietly():
-            w.max = NMAX
-        try:
-            return super().set(**values)
-        finally:
-            n = int((self.shown_values or self.values)["bodies n"])
-            if w.max != n and w.value <= n:
-                with self._quietly():
-                    w.max = n
-
-    def mechanism_points(self):
-        # Points the view must hold: every joint of the chain and the tip (the base's rule tests).
-        st = self.state
-        return np.zeros((0, 2)) if st is None else np.asarray(st["joints"], dtype=float).reshape(-1, 2)
+        return [Handle("split", split_where, split_drag), self._tip_handle()]
 
     def compute(self, values, changed):
         # Mobilities, the split solution and every body's acceleration.
@@ -301,10 +250,7 @@ class SplittingExplorer(Explorer):
         # The readout of the state ``state`` (the split's accelerations and force, ``Λᵢ⁻¹``, ``bᵢ``, ``q̈``).
         n, i = state["n"], state["split"]
         f = state["f_split"]
-        w = self.controls["split at joint"]           # the split slider spans the chain's joints 2..n
-        if w.max != n:
-            with self._quietly():
-                w.max = n
+        self._span(n)                                 # the split slider spans the chain's joints 2..n
         Lam = state["Lambda_inv"][i - 1]
         out = {
             "split at joint": i + 1,

@@ -37,18 +37,17 @@ Examples
 """
 from __future__ import annotations
 
-import math
 
 import ipywidgets as W
 import numpy as np
 
 from planargeo.draw.pictures.subspace import BAR, COM, DIR_HANDLE, subspace_picture
-from planargeo.errors import DegenerateGeometryError
 from planargeo.scenes.subspace import subspace_state, unit_direction
 from planargeo.screws.twists import inertia_matrix
 from planargeo.geometry.projective import is_at_infinity, is_ideal
 from planargeo.widgets._points import point_value
-from planargeo.widgets.base import Explorer, Handle, Step
+from planargeo.widgets._explorer import _shown, arrow_handle, grown_view, xy_handle
+from planargeo.widgets.base import Explorer, Step
 
 __all__ = ["SubspaceExplorer", "JOINT_OPTIONS", "SHOW_OPTIONS"]
 
@@ -188,43 +187,13 @@ class SubspaceExplorer(Explorer):
 
     # ------------------------------------------------------------------ handles
     def handles(self):
-        # Draggable handles: the joint, its direction, the force's point and its arrow tip.
-        return [Handle("joint", self._joint_where, lambda x, y: {"joint x": x, "joint y": y}),
-                Handle("joint direction", self._dir_where, self._drag_dir),
-                Handle("force point", lambda: (self.values["force x"], self.values["force y"]),
-                       lambda x, y: {"force x": x, "force y": y}),
-                Handle("force tip", self._tip_where, self._drag_tip)]
-
-    def _joint_where(self):
-        v = self.values
-        return (v["joint x"], v["joint y"])
-
-    def _dir_where(self):
-        v = self.values
-        if JOINT_OPTIONS[v["joint"]] == "revolute":
-            return None
-        e = unit_direction(v["joint angle"])
-        return (v["joint x"] + DIR_HANDLE * e[0], v["joint y"] + DIR_HANDLE * e[1])
-
-    def _drag_dir(self, x, y):
-        v = self.values
-        d = np.array([x - v["joint x"], y - v["joint y"]])
-        if not np.hypot(*d) > 1e-9:
-            raise DegenerateGeometryError("joint direction must be non-zero: the direction handle is on the joint")
-        return {"joint angle": math.degrees(math.atan2(d[1], d[0]))}
-
-    def _tip_where(self):
-        v = self.values
-        e = unit_direction(v["force angle"]) * (ARROW * v["F"] / 2)
-        return (v["force x"] + e[0], v["force y"] + e[1])
-
-    def _drag_tip(self, x, y):
-        v = self.values
-        d = np.array([x - v["force x"], y - v["force y"]])
-        n = float(np.hypot(*d))
-        if not n > 1e-9:
-            raise DegenerateGeometryError("F must be non-zero: the force tip is on the force point (no line)")
-        return {"force angle": math.degrees(math.atan2(d[1], d[0])), "F": 2 * n / ARROW}
+        # Draggable handles: the joint, its direction (not a pivot's), the force's point and its arrow tip.
+        slides = lambda: JOINT_OPTIONS[_shown(self)["joint"]] != "revolute"
+        return [xy_handle(self, "joint", "joint x", "joint y"),
+                arrow_handle(self, "joint direction", "joint x", "joint y", "joint angle", arm=DIR_HANDLE,
+                             when=slides),
+                xy_handle(self, "force point", "force x", "force y"),
+                arrow_handle(self, "force tip", "force x", "force y", "force angle", "F", per=ARROW / 2)]
 
     # ------------------------------------------------------------------ state
     def compute(self, values, changed):
@@ -247,43 +216,15 @@ class SubspaceExplorer(Explorer):
         # The state's picture, built natively (:func:`planargeo.draw.pictures.subspace.subspace_picture`).
         v = self.values
         return subspace_picture(state, show=SHOW_OPTIONS[v["show"]], m=float(v["m"]), rho=float(v["rho"]),
-                                view=view or self.view_box(), size=self.figure_px)
+                                view=view or self._view(), size=self.figure_px)
 
     def mechanism_points(self):
         # Points the view must hold: the handles and the body's corners.
         return np.vstack([super().mechanism_points(), BAR])
 
-    #: room left round the handles when the view grows to hold them (m)
-    VIEW_MARGIN = 0.3
-
-    def view_box(self) -> tuple[float, float, float, float]:
-        """The default view, grown to hold every handle (the joint, its direction, the force).
-
-        The view depends on the control values only (a fresh explorer with the same
-        values shows the same view): the default limits, widened to the handles
-        plus :data:`VIEW_MARGIN`, then to a span in each direction no smaller than
-        the handles' largest extent.
-
-        Returns
-        -------
-        tuple
-            ``(x0, x1, y0, y1)``.
-        """
-        x0, x1, y0, y1 = self.limits
-        pts = super().mechanism_points()            # the handles (the bar is inside the default limits)
-        if len(pts):
-            m = self.VIEW_MARGIN
-            x0, x1 = min(x0, pts[:, 0].min() - m), max(x1, pts[:, 0].max() + m)
-            y0, y1 = min(y0, pts[:, 1].min() - m), max(y1, pts[:, 1].max() + m)
-            size = float(np.max(np.ptp(pts, axis=0))) + 2 * m
-            for lo, hi, axis in ((x0, x1, "x"), (y0, y1, "y")):
-                if hi - lo < size:
-                    grow = (size - (hi - lo)) / 2
-                    if axis == "x":
-                        x0, x1 = lo - grow, hi + grow
-                    else:
-                        y0, y1 = lo - grow, hi + grow
-        return (x0, x1, y0, y1)
+    def _view(self) -> tuple[float, float, float, float]:
+        """The default limits grown to hold every handle with 0.3 m round them (the values alone decide it)."""
+        return grown_view(self.limits, super().mechanism_points(), 0.3)
 
     def _readout(self, st, k):
         s, R = st["s"], st["R"]

@@ -1,0 +1,183 @@
+"""What several explorers share, written once: handles named by their controls, a view grown to
+hold points, sliders that span a chain of ``n`` bodies, a scene time kept as text, readout rows.
+
+* :func:`xy_handle`: a point handle whose position is two controls (it sets both);
+* :func:`arrow_handle`: the tip of an arrow drawn from such a point along an angle control:
+  it turns the arrow (and, with ``per``, sets its size too);
+* :func:`grown_view`: a view grown to hold points, no side shorter than their extent;
+* :class:`ChainBodies`: an explorer of a chain of ``bodies n`` (its joints in view, its model
+  cached, a slider that spans the chain, the tip dragged to bend it);
+* :class:`SceneTime`: Play advances a scene time kept in a text control, and a change of the
+  initial state starts it again at 0;
+* :func:`rows`: readout rows as data, ``{name: (unit, meaning)}`` -> units and meanings.
+
+Examples
+--------
+>>> grown_view((0.0, 1.0, 0.0, 1.0), [[2.0, 0.5], [-1.0, 0.5]], 0.5)
+(-1.5, 2.5, -1.5, 2.5)
+>>> rows({"ω": ("rad/s", "angular velocity (2.3)")})
+({'ω': 'rad/s'}, {'ω': 'angular velocity (2.3)'})
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from planargeo.errors import DegenerateGeometryError
+from planargeo.widgets.controls import cached
+from planargeo.widgets.handles import Handle
+
+
+def _shown(ex) -> dict:
+    return ex.shown_values or ex.values
+
+
+def xy_handle(ex, name: str, kx: str, ky: str, when=None) -> Handle:
+    """A handle at ``(values[kx], values[ky])`` that sets both; not draggable while ``when()`` is false."""
+    def where():
+        v = _shown(ex)
+        return (v[kx], v[ky]) if when is None or when() else None
+
+    return Handle(name, where, lambda x, y: {kx: x, ky: y})
+
+
+def arrow_handle(ex, name: str, kx: str, ky: str, kangle: str, ksize: str | None = None, *,
+                 arm: float = 1.0, per: float | None = None, flip: bool = False, when=None) -> Handle:
+    """The tip of an arrow from ``(values[kx], values[ky])`` along ``values[kangle]`` (degrees).
+
+    The arrow is ``arm`` long, or ``per × values[ksize]`` when ``per`` is given (then a drag
+    sets the size too).  ``flip``: a negative size points the arrow the other way.  A drag onto
+    the arrow's foot gives no direction and is refused.
+    """
+    def sense(v):
+        return -1.0 if flip and v[ksize] < 0 else 1.0
+
+    def where():
+        v = _shown(ex)
+        if when is not None and not when():
+            return None
+        length = per * v[ksize] if per is not None else sense(v) * arm
+        a = math.radians(v[kangle])
+        return (v[kx] + length * math.cos(a), v[ky] + length * math.sin(a))
+
+    def drag(x, y):
+        v = _shown(ex)
+        d = np.array([x - v[kx], y - v[ky]]) * sense(v)
+        n = float(np.hypot(*d))
+        if not n > 1e-9:
+            what = ksize if per is not None else name
+            raise DegenerateGeometryError(f"{what} must be non-zero: the arrow's tip is on its foot "
+                                          "(no direction)")
+        out = {kangle: math.degrees(math.atan2(d[1], d[0]))}
+        if per is not None:
+            out[ksize] = n / per
+        return out
+
+    return Handle(name, where, drag)
+
+
+def grown_view(box, pts, margin: float, sized=None, extra: float | None = None) -> tuple:
+    """``box`` ``(x0, x1, y0, y1)`` grown to hold ``pts`` with ``margin``, no side shorter than their extent.
+
+    The least side is the extent of ``sized`` (default ``pts``) plus ``extra`` (default twice
+    the margin), grown about the middle.
+    """
+    x0, x1, y0, y1 = box
+    pts = np.asarray(pts, dtype=float).reshape(-1, 2)
+    if not len(pts):
+        return tuple(box)
+    x0, x1 = min(x0, pts[:, 0].min() - margin), max(x1, pts[:, 0].max() + margin)
+    y0, y1 = min(y0, pts[:, 1].min() - margin), max(y1, pts[:, 1].max() + margin)
+    sized = pts if sized is None else np.asarray(sized, dtype=float).reshape(-1, 2)
+    size = float(np.max(np.ptp(sized, axis=0))) + (2 * margin if extra is None else extra)
+    if x1 - x0 < size:
+        x0, x1 = x0 - (size - (x1 - x0)) / 2, x1 + (size - (x1 - x0)) / 2
+    if y1 - y0 < size:
+        y0, y1 = y0 - (size - (y1 - y0)) / 2, y1 + (size - (y1 - y0)) / 2
+    return (float(x0), float(x1), float(y0), float(y1))
+
+
+def rows(table: dict) -> tuple[dict, dict]:
+    """``{name: (unit, meaning)}`` -> ``({name: unit}, {name: meaning})``: each row written once."""
+    return {k: u for k, (u, _m) in table.items()}, {k: m for k, (_u, m) in table.items()}
+
+
+class ChainBodies:
+    """For an explorer of a chain of ``bodies n`` (mass 1, joints ``L = 1`` apart): the parts it shares.
+
+    :attr:`spans`: ``(control, offset, widest)``: the control's slider spans up to ``n + offset``
+    once a state is shown (while ``n`` is set, up to ``widest``).
+    """
+
+    spans: tuple[str, int, int] = ("", 0, 0)
+
+    def __init__(self, **kw):
+        self._models: dict = {}
+        super().__init__(**kw)
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}(...)"
+
+    def _model(self, n, rho, g=0.0):
+        from planargeo.scenes.articulated import bent_chain_model
+
+        return cached(self._models, (n, rho, g), lambda: bent_chain_model(n, rho, 1.0, 1.0, g))
+
+    def _span(self, n: int, *, widest: bool = False) -> None:
+        """The spanned slider up to ``n + offset`` (or its widest range), its value kept."""
+        name, offset, most = self.spans
+        w, top = self.controls[name], most if widest else n + offset
+        if w.max != top and (widest or w.value <= top):
+            with self._quietly():
+                w.max = top
+
+    def set(self, **values):
+        if "bodies n" not in values:
+            return super().set(**values)
+        self._span(0, widest=True)   # any value the widest range allows (checked against n by adjust)
+        try:
+            return super().set(**values)
+        finally:
+            self._span(int(_shown(self)["bodies n"]))
+
+    def mechanism_points(self):
+        # Points the view must hold: every joint of the chain and the tip.
+        st = self.state
+        return np.zeros((0, 2)) if st is None else np.asarray(st["joints"], dtype=float).reshape(-1, 2)
+
+    def _tip_handle(self, base: str | None = None) -> Handle:
+        """The chain's tip: dragged, it sets the bend ``φ`` that brings it nearest (the first body at ``base``)."""
+        from planargeo.widgets.articulated import bend_for_tip
+
+        def where():
+            pts = None if self.state is None else self.state["joints"]
+            return None if pts is None or len(pts) < 3 else tuple(pts[-1])
+
+        def drag(x, y):
+            v = self.values
+            phi = bend_for_tip((x, y), int(v["bodies n"]), math.radians(v[base]) if base else 0.0)
+            return {"bend φ (deg)": float(np.clip(math.degrees(phi), -180.0, 180.0))}
+
+        return Handle("tip", where, drag)
+
+
+class SceneTime:
+    """Play advances a scene time kept as text in the control ``"t (s)"`` up to :attr:`t_end`.
+
+    A change of a control in :attr:`initial` (the state at ``t = 0``) starts the time again.
+    """
+
+    initial: tuple[str, ...] = ()
+    t_end: float = 60.0
+
+    def adjust(self, values, changed):
+        if set(changed) & set(self.initial) and "t (s)" not in changed and values["t (s)"] != "0":
+            return {"t (s)": "0"}
+        return {}
+
+    def play_step(self, values, dt):
+        from planargeo.widgets.slider_crank import time_text, time_value
+
+        t = time_value(values["t (s)"], self.t_end) + float(dt)
+        return None if t > self.t_end + 1e-9 else {"t (s)": time_text(t)}
