@@ -4,11 +4,11 @@ from __future__ import annotations
 import numpy as np
 
 from planargeo.mechanics.contacts import world_point
-from planargeo.draw.artists import plot_line
-from planargeo.draw.constructions import label
-from planargeo.draw.mechanism import draw_model
-from planargeo.draw.style import COLORS, LABEL_PT
-from planargeo.draw.layout import fit_panel, fit_view, shape_points
+from planargeo.draw.layout import shape_points
+from planargeo.draw.picture import PX_PER_PT, plain_text
+from planargeo.draw.pictures.kit import aim_label, force
+from planargeo.draw.sketch import BODY_EDGE, label, model, model_shapes, panel, segment, show
+from planargeo.draw.style import COLORS
 from planargeo.gallery.figures import register, scene_state
 
 
@@ -27,8 +27,9 @@ def fig9_1(ax):
     """Fig. 9.1 — the rigid-body tree of scene 'tree': body 1 is the root (pinned), bodies 4, 7, 8
     and 9 are the tips of the branches (parents (9.1): −, 1, 2, 3, 1, 5, 6, 6, 1)."""
     res, d = scene_state("tree")
-    draw_model(res.model, d, ax, width=0.14, show_com=False, names=[str(k + 1) for k in range(9)])
-    fit_view([*d.origin, *_tips(res.model, d)], margin=0.08, ax=ax)
+    pic = panel(ax, [*d.origin, *_tips(res.model, d)], margin=0.08)
+    model(pic, res.model, d, width=0.14, show_com=False, names=[str(k + 1) for k in range(9)])
+    show(pic, ax)
 
 
 @register(9.02, height=3.0)
@@ -43,12 +44,12 @@ def fig9_2(ax):
 
     res, d = scene_state("constrained-tree")
     m = res.model
-    arts = draw_model(m, d, ax, width=0.14, show_com=False, labels=False)
-    bodies = unary_union(arts["shapes"])
+    shapes = model_shapes(m, d, width=0.14)
+    bodies = unary_union(shapes)
     F = np.asarray(res.quantities["F"])
     sc = 0.12
-    P = [shape_points(*arts["shapes"])]
-    mags, lines = [], []
+    P = [shape_points(*shapes)]
+    mags, lines, arrows = [], [], []
     for k, (c, p) in enumerate(zip(m.contacts, _contact_points(m, d))):
         f = F[k]                          # Definition 42: +F acts on body b, −F on body a
         mag = np.hypot(*f[:2])
@@ -62,15 +63,20 @@ def fig9_2(ax):
         n = np.array([-e[1], e[0]])
         side = 1.0 if bodies.distance(SPoint(*(anchor + 0.2 * n))) >= \
             bodies.distance(SPoint(*(anchor - 0.2 * n))) else -1.0
-        art = plot_line(f, ax, role="reaction", scale=sc, anchor=anchor, text=f"$F_{{{c.name}}}$",
-                        text_at="anchor")
-        art.set_text_beside(side * n, 5.0)
-        P.append(np.array(art.get_arrow()))
+        P.append(np.array([anchor - e * L / 2, anchor + e * L / 2]))
+        arrows.append((f, anchor, side * n, c.name, mag))
         lines.append(f)
-        mags.append(f"$|F_{{{c.name}}}|$ = {mag:.2f} N")
-    fit_panel(np.vstack(P), margin=0.06, ax=ax)
+    pic = panel(ax, np.vstack(P), margin=0.06, fit_height=True)
+    model(pic, m, d, width=0.14, show_com=False, labels=False)
+    for k, (f, anchor, u, name, mag) in enumerate(arrows):
+        sym = plain_text(f"$F_{{{name}}}$")
+        force(pic, f"F{k + 1}", f, scale=sc, anchor=anchor, role="reaction", symbol=sym,
+              desc=f"contact force of the pin {name} (9.70–9.71): on body {name.split('-')[1]}, "
+                   f"|{sym}| = {mag:.3g} N")
+        aim_label(pic.elements[-1], u, gap=5.0 * PX_PER_PT)
+        mags.append(f"|{sym}| = {mag:.2f} N")
     # body numbers beside their links, on the side away from the contact-force lines
-    for i, shape in enumerate(arts["shapes"]):
+    for i, shape in enumerate(shapes):
         cxy = np.array(shape.centroid.coords[0])
         a = d.pose[i, :2]
         t = cxy - a
@@ -80,33 +86,14 @@ def fig9_2(ax):
             return min(abs(f[2] + q[1] * f[0] - q[0] * f[1]) / np.hypot(*f[:2]) for f in lines)
 
         u = n if line_dist(cxy + 0.25 * n) >= line_dist(cxy - 0.25 * n) else -n
-        label(cxy, str(i + 1), offset=tuple(9 * u), fontsize=LABEL_PT, color="#1f3a4d",
-              ha="center", va="center", ax=ax)
-    ax.text(0.02, 0.02, "\n".join(mags), transform=ax.transAxes, fontsize=LABEL_PT,
-            color=COLORS["reaction"])
-
-
-def slider_crank(ax, **draw):
-    """The scene 'slider-crank' drawn at its state (``draw``: more options of ``draw_model``).
-
-    Returns the scene, its kinematics and the outline points of the drawn bodies.
-
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes
-        Where to draw.
-    **draw : 
-        More options of :func:`planargeo.draw.mechanism.draw_model`.
-
-    Returns
-    -------
-    tuple
-        ``(SceneResult, Data, outline points)``.
-    """
-    res, d = scene_state("slider-crank")
-    arts = draw_model(res.model, d, ax, width=0.3, labels=False, show_com=True, pin_radius=0.1,
-                      **draw)
-    return res, d, shape_points(*arts["shapes"])
+        label(pic, f"body label {i + 1}", cxy, str(i + 1), offset=tuple(9 * u), color=BODY_EDGE,
+              ha="center", va="center", desc=f"body {i + 1}")
+    x0, x1, y0, y1 = pic.box
+    for j, text in enumerate(reversed(mags)):     # the magnitudes in the lower left, first on top
+        label(pic, f"magnitude {len(mags) - j}", (x0, y0), text, role="reaction",
+              offset=(0.02 * (x1 - x0) * pic.kx / PX_PER_PT, (3 + 15 * j)), fixed=True,
+              desc="size of a contact force (9.71)")
+    show(pic, ax)
 
 
 @register(9.03, height=3.4)
@@ -114,11 +101,15 @@ def fig9_3(ax):
     """Fig. 9.3 — slider-crank (scene 'slider-crank', thesis 9.6): relative rotations ψ, θ, φ with
     ψ + θ + φ = π/2; the state closes the loop at θ = 1.6063 (the printed 1.603 and the signs of
     θ̇, φ̇ in 9.78–9.79 are corrected, docs/errata.md)."""
-    res, d, P = slider_crank(ax)
+    res, d = scene_state("slider-crank")
+    P = shape_points(*model_shapes(res.model, d, width=0.3))
+    pic = panel(ax, np.vstack([P, P.min(axis=0) - [1.0, 0.4], P.max(axis=0) + [0.8, 0.2]]),
+                margin=0.03)
+    model(pic, res.model, d, width=0.3, labels=False, show_com=True, pin_radius=0.1)
     for i, body in enumerate(res.model.bodies):  # the piston's name right of its guide, others left
         right = i == 2
-        label(d.com[i], body.name, offset=(18 if right else -9, 6 if i == 0 else 0), fontsize=LABEL_PT,
-              color="#1f3a4d", va="center", ha="left" if right else "right", ax=ax)
+        label(pic, f"name {i + 1}", d.com[i], body.name, offset=(18 if right else -9, 6 if i == 0 else 0),
+              color=BODY_EDGE, va="center", ha="left" if right else "right", desc=f"body {i + 1}")
     q = res.state["q"]
     absang = np.cumsum(q)
     for i, (nm, val) in enumerate(zip(("ψ", "θ", "φ"), q)):
@@ -126,12 +117,13 @@ def fig9_3(ax):
         base = absang[i] - val
         t = np.linspace(base, absang[i], 30)
         rr = (0.9, 0.7, 0.6)[i]
-        ax.plot(o[0] + rr * np.cos(t), o[1] + rr * np.sin(t), color=COLORS["twist"], lw=0.8)
-        ax.plot([o[0], o[0] + 0.9 * np.cos(base)], [o[1], o[1] + 0.9 * np.sin(base)],
-                color=COLORS["construct"], lw=0.6, ls="--")
+        pic.path(f"{nm} arc", np.column_stack([o[0] + rr * np.cos(t), o[1] + rr * np.sin(t)]),
+                 role="twist", color=COLORS["twist"], width=0.8 * PX_PER_PT, z=3, symbol=nm,
+                 desc=f"relative rotation {nm} of joint {i + 1} (9.6): {val:.4f} rad")
+        segment(pic, f"{nm} reference", o, o + 0.9 * np.array([np.cos(base), np.sin(base)]),
+                width=0.6 * PX_PER_PT, desc=f"the direction {nm} is measured from")
         mid = t[len(t) // 2]
-        label(o + rr * np.array([np.cos(mid), np.sin(mid)]),
-              f"{nm} = {val:.3f}", offset=((6, -12), (6, 2), (-62, 4))[i], fontsize=LABEL_PT,
-              color=COLORS["twist"], ax=ax)
-    fit_view(np.vstack([P, P.min(axis=0) - [1.0, 0.4], P.max(axis=0) + [0.8, 0.2]]), margin=0.03, ax=ax)
-
+        label(pic, f"{nm} value", o + rr * np.array([np.cos(mid), np.sin(mid)]),
+              f"{nm} = {val:.3f}".replace("-", "−"), offset=((6, -12), (6, 2), (-62, 4))[i],
+              role="twist", symbol=nm, desc=f"relative rotation {nm} (9.6): {val:.4f} rad")
+    show(pic, ax)
