@@ -40,8 +40,8 @@ import math
 import numpy as np
 
 from planargeo._validate import as_vec3
-from planargeo.draw.picture import Picture
-from planargeo.draw.pictures.common import label_line, label_toward
+from planargeo.draw.picture import Picture, plain_text
+from planargeo.draw.pictures.common import label_toward
 from planargeo.draw.pictures.kit import force as _force_arrow
 from planargeo.draw.pictures._words import num, pair, where
 from planargeo.errors import InputError
@@ -95,17 +95,47 @@ def _aim(el: dict, aims: dict, key: str) -> None:
             label_toward(el, u, gap)
 
 
+def _label_beside(pic: Picture, el: dict, text: str, anchor, side: float, gap: float = 7.0,
+                  end: float = 14.0) -> None:
+    """Label the clipped line ``el`` beside its point nearest ``anchor`` (default: the view's centre).
+
+    The label sits ``gap`` pixels off the line along its normal (+1: above, or right of a
+    vertical line; -1: the other side), aligned away from it, and at least ``end`` pixels
+    from the ends of the drawn segment.
+    """
+    seg = next((p["xy"] for p in el["parts"] if p["p"] == "path"), None)
+    if seg is None or not text:
+        return
+    seg = np.asarray(seg, float)
+    a = _centre(pic) if anchor is None else np.asarray(anchor, float)
+    d = seg[1] - seg[0]
+    dp = np.array([d[0] * pic.kx, d[1] * pic.ky])
+    Lp = math.hypot(*dp)
+    if Lp == 0.0:
+        return
+    lo = min(end / Lp, 0.5)
+    t = float(np.clip((a - seg[0]) @ d / float(d @ d), lo, 1.0 - lo))
+    foot = seg[0] + t * d
+    n = np.array([-dp[1], dp[0]]) / Lp
+    if n[1] < -1e-9 or (abs(n[1]) <= 1e-9 and n[0] < 0):
+        n = -n
+    n = n * (1.0 if side >= 0 else -1.0)
+    el["parts"].append({"p": "text", "x": float(foot[0]), "y": float(foot[1]), "dx": 0.0, "dy": 0.0,
+                        "text": text, "ha": "left", "va": "bottom"})
+    label_toward(el, n, gap)
+
+
 def _line(pic: Picture, id: str, l, text, *, role: str, symbol: str, desc: str, anchor, side: float,
           aims: dict, key: str) -> dict:
     """A line without a sense arrow, labelled beside it near ``anchor``; the element."""
     pic.line(id, l, role=role, symbol=symbol, desc=desc, label="", arrow=False)
     el = pic.elements[-1]
     if math.hypot(float(l[0]), float(l[1])) > 0.0:
-        label_line(pic, id, text or "", anchor=anchor, side=side)
+        _label_beside(pic, el, plain_text(text or ""), anchor, side)
     elif text:                              # the line at infinity: the couple glyph's label
         for part in el["parts"]:
             if part["p"] == "text":
-                part["text"] = f"{text}: couple (line at ∞)"
+                part["text"] = plain_text(f"{text}: couple (line at ∞)")
     _aim(el, aims, key)
     return el
 
@@ -356,7 +386,7 @@ def _split(pic, vals, show, names, descs, *, aims, anchors, scale, arrow_length,
             at = anchors.get(kf)
             _force_arrow(pic, prefix + kf, f, scale=_arrow_scale(f, scale, arrow_length),
                          anchor=_centre(pic) if at is None else at, role="wrench",
-                         symbol=f"$f_{k}$", label=names.get(kf) or "",
+                         symbol=f"$f_{k}$", label=plain_text(names.get(kf) or ""),
                          desc=descs[kf] + _wrench_words(f))
         else:                                   # a couple (or nothing): the picture's couple glyph
             pic.line(prefix + kf, f, role="wrench", symbol=f"$f_{k}$", label=names.get(kf) or "",
