@@ -9,7 +9,9 @@ initial state alone.  Chunks are kept, so a time already reached costs one inter
 
 One call does a bounded amount of work (:data:`MAX_EVALS` evaluations of the dynamics, a few
 seconds): a time beyond it is refused with :class:`~planargeo.errors.SizeLimitError`, the
-chunks computed so far kept, so that asking again (or Play) goes on from there.
+chunks computed so far kept, so that asking again (or Play) goes on from there.  The budget is a
+:class:`Budget`: an explorer whose motion is stepped by other means (the slider-crank's closed loop,
+checkpoint by checkpoint) spends one the same way and is refused in the same words.
 """
 from __future__ import annotations
 
@@ -17,9 +19,9 @@ import math
 
 import numpy as np
 
-from planargeo.errors import SingularConfigurationError, SizeLimitError
+from planargeo.errors import InputError, SingularConfigurationError, SizeLimitError
 
-__all__ = ["Motion", "MAX_EVALS"]
+__all__ = ["Motion", "Budget", "MAX_EVALS"]
 
 #: Evaluations of the dynamics one call may spend (about 5 s for a 20-link chain).
 MAX_EVALS = 250_000
@@ -27,6 +29,61 @@ MAX_EVALS = 250_000
 
 class _OverBudget(Exception):
     """The evaluations of one call ran out (caught in :meth:`Motion.extend`)."""
+
+
+class Budget:
+    """The evaluations of the dynamics one update may spend, and the refusal when they run out.
+
+    One budget is made per update (a call of :meth:`Motion.extend`, one :meth:`compute` of an
+    explorer): the steps of that update charge it, and the first step that finds it spent
+    stops the update with :meth:`refusal`, the work done so far kept by the caller.
+
+    Parameters
+    ----------
+    max_evals : int
+        Evaluations the update may spend (at least 1).
+
+    Examples
+    --------
+    >>> b = Budget(100)
+    >>> b.charge(60); b.spent
+    False
+    >>> b.charge(60); b.spent, b.left
+    (True, -20)
+    >>> print(b.refusal(30.0, 1.5))
+    t = 30 s is more motion than one step computes (100 evaluations of the dynamics); it is computed up to t = 1.5 s now: ask again to go on from there, or press Play
+    """
+
+    def __init__(self, max_evals: int = MAX_EVALS):
+        if isinstance(max_evals, bool) or not int(max_evals) == max_evals or int(max_evals) < 1:
+            raise InputError(f"max_evals must be a whole number of at least 1, got {max_evals!r}")
+        self.max_evals = int(max_evals)
+        self.left = self.max_evals
+
+    @property
+    def spent(self) -> bool:
+        """True once the evaluations are used up (the next step must not start)."""
+        return self.left <= 0
+
+    def charge(self, n: int = 1) -> None:
+        """Count ``n`` evaluations done (a step already taken is kept: this never raises)."""
+        self.left -= int(n)
+
+    def counting(self, rhs):
+        """``rhs`` charging one evaluation per call, stopping the integration when none is left."""
+        def counted(t, y):
+            if self.left <= 0:
+                raise _OverBudget
+            self.left -= 1
+            return rhs(t, y)
+        return counted
+
+    def refusal(self, t: float, reached: float) -> SizeLimitError:
+        """The error of an update stopped at ``reached`` on its way to ``t`` (the limit and what to do)."""
+        return SizeLimitError(
+            f"t = {t:.4g} s is more motion than one step computes ({self.max_evals:,} evaluations "
+            f"of the dynamics); it is computed up to t = {reached:.4g} s now: ask again to "
+            f"go on from there, or press Play")
 
 
 class Motion:
@@ -78,13 +135,8 @@ class Motion:
         from scipy.integrate import solve_ivp
 
         need = int(math.floor(t / self.chunk)) + 1
-        left = [self.max_evals]
-
-        def rhs(s, y):
-            left[0] -= 1
-            if left[0] < 0:
-                raise _OverBudget
-            return self.rhs(s, y)
+        budget = Budget(self.max_evals)
+        rhs = budget.counting(self.rhs)
 
         while len(self.sols) < need:
             k = len(self.sols)
@@ -92,10 +144,7 @@ class Motion:
                 r = solve_ivp(rhs, (0.0, self.chunk), self.starts[k], method="DOP853", rtol=self.rtol,
                               atol=self.atol, dense_output=True)
             except _OverBudget:
-                raise SizeLimitError(
-                    f"t = {t:.4g} s is more motion than one step computes ({self.max_evals:,} evaluations "
-                    f"of the dynamics); it is computed up to t = {self.reached:.4g} s now: ask again to "
-                    f"go on from there, or press Play") from None
+                raise budget.refusal(t, self.reached) from None
             if r.status != 0 or not np.all(np.isfinite(r.y[:, -1])):
                 raise SingularConfigurationError(
                     f"the motion could not be integrated past t = {k * self.chunk:.4g} s: {r.message}")

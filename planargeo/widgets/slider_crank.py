@@ -21,7 +21,11 @@ scene seconds per second at speed 1×, shown beside the speed menu); the
 overlays follow every frame, the readout shows the energy and its drift since
 ``t = 0`` (free crank) and the closure drift (the largest gap the integration
 opened in the loop), and names the dead centres (toggle positions: crank and
-rod in line) as the crank passes them.
+rod in line) as the crank passes them.  One update spends at most
+:data:`UPDATE_EVALS` evaluations of the loop's dynamics (a few seconds, like the chain
+explorer's time slider, :class:`planargeo.widgets._motion.Budget`): a farther time is refused
+by name, with the limit, the checkpoints computed so far kept, so that asking again (or Play)
+goes on from there.
 
 Handles: drag the crank pin (sets ``ψ``) or the piston (sets its height; the
 crank keeps its side).  A configuration that cannot be assembled (rod too
@@ -31,6 +35,7 @@ last good state stays and the message names the reason.
 from __future__ import annotations
 
 import math
+import re
 
 import ipywidgets as W
 import numpy as np
@@ -41,6 +46,7 @@ from planargeo.errors import InputError, SceneError
 from planargeo.scenes.slider_crank import (DEAD_CENTRE_TOL, dead_centre_at, slider_crank_advance,
                                            slider_crank_model, slider_crank_reactions, slider_crank_solve)
 from planargeo.simulate.integrate import energy
+from planargeo.widgets._motion import Budget
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["SliderCrankExplorer"]
@@ -52,6 +58,10 @@ CHECKPOINT = 0.02
 #: end of the time slider (scene seconds; 100 s of Play at 1×, then Play ends or loops): the state at t
 #: costs an integration from 0 to t, about 1800 dynamics evaluations per scene second
 T_END = 10.0
+#: evaluations of the loop's dynamics one update may spend (the budget of the chain explorer's time slider,
+#: :data:`planargeo.widgets._motion.MAX_EVALS`, in the same seconds: one evaluation of the closed loop costs
+#: about 40 of a 20-link chain's, ~0.8 ms; about 2.4 scene seconds of the default crank per update)
+UPDATE_EVALS = 6_000
 
 
 def time_text(t: float) -> str:
@@ -156,7 +166,8 @@ class SliderCrankExplorer(Explorer):
     #: scene seconds per second of Play at speed 1× (slow motion: the crank turns at ~20 rad/s; the base
     #: shows the factor beside the speed menu)
     time_scale = 0.1
-    #: relative tolerance of the Play integration (DOP853; energy drift ~1e-8 per crank turn)
+    #: relative tolerance of the Play integration (DOP853; energy drift ~1e-6 per crank turn, most of it as
+    #: the crank passes a dead centre: 4e-6 over the first 5 s of the default motion)
     play_rtol = 1e-7
     units = {"t": "s", "crank angle ψ": "°", "crank speed ψ̇": "rad/s", "rod angle θ": "°", "piston angle φ": "°",
              "piston height h": "m", "piston speed": "m/s", "piston acceleration": "m/s²", "ψ̈ crank": "rad/s²",
@@ -251,20 +262,27 @@ class SliderCrankExplorer(Explorer):
 
         Integrated from checkpoint to checkpoint (``CHECKPOINT`` scene seconds apart),
         then from the last one before ``t``: the same operations whatever the history.
+        One call spends at most :data:`UPDATE_EVALS` evaluations (a :class:`Budget`, give or
+        take the last checkpoint's): a time beyond raises its
+        :class:`~planargeo.errors.SizeLimitError`, the checkpoints done kept in ``run``.
         """
         r = self.params["r"]
         ck = run["ck"]
         k = int(math.floor(t / CHECKPOINT + 1e-9))
+        budget = Budget(UPDATE_EVALS)
 
         def step(psi, psidot, h, t0):
             out = slider_crank_advance(model, psi, psidot, h, r, l, drive, rtol=self.play_rtol,
                                        atol=self.play_rtol * 1e-2)
+            budget.charge(out["nfev"])
             turn = out["psi"] - psi
             passed = [(t0 + (h * (a - psi) / turn if turn else 0.0), name) for name, a in out["dead_centres"]]
             return out["psi"], out["psidot"], out["position_residual"], passed
 
         while len(ck) <= k:
             n = len(ck) - 1
+            if budget.spent:
+                raise budget.refusal(t, n * CHECKPOINT)
             psi, psidot, res, passed = step(*ck[n], CHECKPOINT, n * CHECKPOINT)
             ck.append((psi, psidot))
             run["drift"].append(max(run["drift"][-1], res))
@@ -291,6 +309,11 @@ class SliderCrankExplorer(Explorer):
             run = {"ck": [(psi0, float(values["crank speed"]))], "drift": [0.0], "passed": [],
                    "E0": float(sum(energy(model, data=sol0.data)))}
         t = time_value(values["t (s)"], T_END)
+        # kept before the integration: the checkpoints of a refused time stay for the next ask
+        self._runs.pop(key, None)
+        self._runs[key] = run
+        while len(self._runs) > 2:
+            self._runs.pop(next(iter(self._runs)))
         psi, psidot, drift, passed = self._run_state(model, run, t, l, drive)
         q, qd, sol, h = slider_crank_solve(model, psi, psidot, r, l, thick, drive)
         E = float(sum(energy(model, data=sol.data)))
@@ -419,6 +442,10 @@ class SliderCrankExplorer(Explorer):
             short = "singular configuration: folded dead centre, the piston pin is on the crank pivot"
         elif "singular" in text:
             short = "singular configuration: the rod lies along the horizontal"
+        elif "more motion than one step computes" in text:
+            far = re.search(r"computed up to t = (\S+) s", text)
+            short = (f"too far for one step: computed up to {far.group(1) if far else '?'} s; "
+                     f"ask again to go on")
         else:
             short = super().figure_message(exc)
         return wrap_message(short)
