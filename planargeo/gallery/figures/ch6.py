@@ -41,6 +41,15 @@ def _pinned_body(pic, shape, I):
                    f"radius of gyration {np.sqrt(I[2, 2] / I[0, 0] - c @ c):.3g} m")
 
 
+def _show(pic, ax):
+    """Name the sketch's unnamed marks (centre-of-mass discs, pins: no symbol argument) and draw."""
+    for el in pic.elements:
+        if not el["symbol"]:
+            el["symbol"] = "centre of mass" if ":com" in el["id"] or el["id"].startswith("cg") else \
+                el["id"].replace("pin", "joint")
+    return show(pic, ax)
+
+
 def _on_line(L, y):
     """The point of the line ``L`` (4.27: ``tz + y fx − x fy = 0``) at height ``y`` (L not horizontal)."""
     return np.array([(L[2] + y * L[0]) / L[1], y])
@@ -67,7 +76,7 @@ def fig6_1(ax):
         anchors={"T": _on_line(T, lo + 0.25), "R1": [pts[1][0] + 1.4, 0.0], "R2": [0.0, pts[0][1]]},
         sides={"R1": -1.0, "R2": -1.0},
         aims={"s": (-8.0, -7.0), "AiR1": (10.0, 4.0), "AiR2": (10.0, 4.0)})
-    show(pic, ax)
+    _show(pic, ax)
 
 
 @register(6.02, height=2.6)
@@ -90,7 +99,7 @@ def fig6_2(ax):
                            "R2": [0.0, 0.5 * (1.0 + pts[0][1])]},
                   sides={"R1": -1.0, "R2": -1.0},
                   aims={"s": (-14.0, 8.0), "U1": (8.0, 4.0), "U2": (8.0, 4.0)})
-    show(pic, ax)
+    _show(pic, ax)
 
 
 def _split_panels(axs, kind):
@@ -138,7 +147,7 @@ def _split_panels(axs, kind):
                     "the reaction part of the force and its acceleration")
         pic.text("panel", (x0, y1), "AB"[k - 1], dx=4.0, dy=-4.0, va="top", symbol="AB"[k - 1],
                  desc=f"panel {'AB'[k - 1]}: part {k}, {what}")
-        show(pic, ax)
+        _show(pic, ax)
 
 
 @register(6.03, height=4.2, nrows=2)
@@ -183,7 +192,7 @@ def fig6_5(ax):
              desc=f"the accelerations along joint 2 (6.99): ψ₂ = T₂ᵀa₂ = {num(psi_i)} rad/s², "
                   f"ψ₁ = T₂ᵀa₁ = {num(psi_prev)} rad/s²; the joint acceleration (6.101): "
                   f"q̈₂ = ψ₂ − T₂ᵀ(a₁ + κ₂) = {num(qdd)} rad/s²")
-    show(pic, ax)
+    _show(pic, ax)
 
 
 @register(6.06, height=3.0)
@@ -239,4 +248,4 @@ def fig6_6(ax):
     x0, x1, y0, y1 = pic.box
     pic.text("omega_dot", (x0, y1), f"ω̇ = {qn['omega_dot']:.3f} rad/s²", dx=4.0, dy=-4.0, va="top",
              symbol="ω̇", desc=f"the car's angular acceleration: {qn['omega_dot']:.4g} rad/s²")
-    show(pic, ax)
+    _show(pic, ax)
