@@ -77,6 +77,30 @@ def _last(pic: Picture) -> dict:
     return pic.elements[-1]
 
 
+def _conic(pic: Picture, id: str, C) -> None:
+    """The conic ``C`` labelled ``C``: inside an ellipse, near its upper left (clear of the curve),
+    or at the first drawn point of another conic."""
+    pic.conic(id, C, role="conic", symbol="C", label="", desc="the conic C (5.35): the points x with xᵀCx = 0")
+    el = _last(pic)
+    e = next((q for q in el["parts"] if q["p"] in ("ellipse", "path")), None)
+    if e is None:
+        return
+    if e["p"] == "ellipse":      # the unit circle under (x, y) + m: its point farthest up-left, 70 % out
+        a, b, c, d = e["m"]
+        t = np.linspace(0.0, 2 * math.pi, 72, endpoint=False)
+        k = int(np.argmax(-(a * np.cos(t) + b * np.sin(t)) * pic.kx + (c * np.cos(t) + d * np.sin(t)) * pic.ky))
+        x = e["x"] + 0.7 * (a * math.cos(t[k]) + b * math.sin(t[k]))
+        y = e["y"] + 0.7 * (c * math.cos(t[k]) + d * math.sin(t[k]))
+        dx = dy = 0.0
+        ha = va = "center"
+    else:
+        x, y = (float(v) for v in np.asarray(e["xy"], float)[0])
+        dx = dy = 4.0
+        ha, va = "left", "bottom"
+    el["parts"].append({"p": "text", "x": float(x), "y": float(y), "dx": dx, "dy": dy, "text": "C",
+                        "ha": ha, "va": va})
+
+
 def line_conic_points(C, L) -> list[np.ndarray]:
     """Real common points of the line ``L`` and the conic ``C`` (5.38; 0 or 2 homogeneous points).
 
@@ -111,7 +135,7 @@ def line_conic_points(C, L) -> list[np.ndarray]:
 
 
 # --------------------------------------------------------------------------- pole / polar
-def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=None,
+def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=None, L_side: float = 1.0,
                    prefix: str = "") -> dict:
     """Polar of an exterior point (thesis 5.36, Fig. 5.2): tangents from ``p``; ``L`` joins their contacts.
 
@@ -129,7 +153,9 @@ def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=No
     names : (str, str)
         Symbols (labels) of the point and its polar.
     L_anchor : (x, y), optional
-        Near which point of the polar its label sits (default: the view's centre).
+        Near which point of the polar its label sits (default: the middle of the contacts).
+    L_side : float
+        +1: the polar's label above it (right of a vertical one); -1: below it.
     prefix : str
         Put before every id (two constructions in one picture).
 
@@ -165,7 +191,7 @@ def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=No
     P, L = names
     contacts = [to_xy(X) for X in K.contacts]
     out = {"construction": K}
-    pic.conic(prefix + "C", C, role="conic", symbol="C", desc="the conic C (5.35): the points x with xᵀCx = 0")
+    _conic(pic, prefix + "C", C)
     out["conic"] = _last(pic)
     out["tangents"] = []
     for k, (t, xy) in enumerate(zip(K.tangents, contacts)):
@@ -180,7 +206,8 @@ def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=No
     pic.line(prefix + "L", K.polar, role="wrench", arrow=False, label="", symbol=L,
              desc=f"polar L = C P of P (5.36): the line through the contacts {pair(contacts[0], 3)} "
                   f"and {pair(contacts[1], 3)}")
-    label_line(pic, prefix + "L", plain_text(L), anchor=L_anchor)
+    label_line(pic, prefix + "L", plain_text(L), anchor=(contacts[0] + contacts[1]) / 2 if L_anchor is None
+               else L_anchor, side=L_side)
     out["L"] = _last(pic)
     pic.point(prefix + "P", p, role="twist", glyph=False, symbol=P,
               desc=f"the point P, outside C (5.36): at {_xy(p)}")
@@ -230,7 +257,7 @@ def interior_construction(C, p, angles=(0.35, 1.9)):
 
 
 def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L = CP$"),
-                   L_anchor=None, prefix: str = "") -> dict:
+                   L_anchor=None, L_side: float = 1.0, prefix: str = "") -> dict:
     """Polar of an interior point (thesis 5.36, Theorem 12, Fig. 5.3).
 
     Two chords through ``p`` (at ``angles``); the tangents at each chord's ends
@@ -253,6 +280,8 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
         Symbols (labels) of the point and its polar.
     L_anchor : (x, y), optional
         Near which point of the polar its label sits (default: the view's centre).
+    L_side : float
+        +1: the polar's label above it (right of a vertical one); -1: below it.
     prefix : str
         Put before every id.
 
@@ -283,7 +312,7 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
     K = interior_construction(C, p, angles)
     P, L = names
     out = {"construction": K}
-    pic.conic(prefix + "C", C, role="conic", symbol="C", desc="the conic C (5.35): the points x with xᵀCx = 0")
+    _conic(pic, prefix + "C", C)
     out["conic"] = _last(pic)
     out["chords"], out["tangents"] = [], []
     ends = [[to_xy(X) for X in K.chord_points[k]] for k in range(2)]
@@ -313,7 +342,7 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
         out[f"R{k + 1}"] = _last(pic)
     pic.line(prefix + "L", K.polar, role="wrench", arrow=False, label="", symbol=L,
              desc=f"polar L = C P of P (5.36): the line through R₁ and R₂, {_line_words(K.polar)}")
-    label_line(pic, prefix + "L", plain_text(L), anchor=L_anchor)
+    label_line(pic, prefix + "L", plain_text(L), anchor=L_anchor, side=L_side)
     out["L"] = _last(pic)
     pic.point(prefix + "P", p, role="twist", glyph=False, symbol=P,
               desc=f"the point P, inside C (5.36): at {_xy(p)}")
@@ -482,7 +511,7 @@ def power_values(v, I, *, f_angle: float = 0.6, a_distance: float = 1.6) -> dict
 
 def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
           names=("$v$", "$p = Iv$", "$f$: $v^Tf = 0$", "$a$: $p^Ta = 0$"), f_label_at=1.6,
-          p_label_at=None, prefix: str = "") -> dict:
+          p_label_at=None, f_side: float = 1.0, p_side: float = 1.0, prefix: str = "") -> dict:
     """Power relations (thesis 5.69–5.74, Fig. 5.7).
 
     A powerless force ``f`` passes through the velocity pole ``v`` (``vᵀ f = 0``);
@@ -506,6 +535,8 @@ def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
         Symbols (labels) of ``v``, ``p``, ``f`` and ``a``.
     f_label_at, p_label_at : float, optional
         Placement of the labels (see above).
+    f_side, p_side : float
+        +1: the label of ``f`` (``p``) above its line (right of a vertical one); -1: below it.
     prefix : str
         Put before every id.
 
@@ -549,14 +580,14 @@ def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
     if F != 0.0:
         pic.line(prefix + "p", p, role="momentum", arrow=False, label="", symbol=np_,
                  desc=f"momentum p = I v (5.71): {num(F)} kg·m/s, {_line_words(p)}")
-        label_line(pic, prefix + "p", plain_text(np_), anchor=p_anchor)
+        label_line(pic, prefix + "p", plain_text(np_), anchor=p_anchor, side=p_side)
     else:
         pic.line(prefix + "p", p, role="momentum", arrow=False, symbol=np_,
                  desc=f"momentum p = I v (5.71): a pure angular momentum {num(p[2])} kg·m²/s (the line at infinity)")
     out["p"] = _last(pic)
     pic.line(prefix + "f", f, role="wrench", arrow=False, label="", symbol=nf,
              desc=f"a powerless force f, vᵀf = 0 (5.69): a line through the pole v, {_line_words(f)}")
-    label_line(pic, prefix + "f", plain_text(nf), anchor=f_anchor)
+    label_line(pic, prefix + "f", plain_text(nf), anchor=f_anchor, side=f_side)
     out["f"] = _last(pic)
     pic.point(prefix + "a", a, role="accel", glyph=False, symbol=na,
                 desc=f"a powerless acceleration a, pᵀa = 0 (5.72): a point of the momentum line, "

@@ -3,66 +3,90 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo.geometry.conics import (conic_ellipse, decompose_line_special, decompose_point_special, polar,
-                       special_base)
-from planargeo.screws.inertia import Inertia, percussion_axis
-from planargeo.geometry.projective import from_standard, from_xy, join, to_xy
-from planargeo.draw.artists import plot_conic, plot_line, plot_point
-from planargeo.draw.constructions import (line_conic_points, draw_percussion, draw_polar_exterior,
-                             draw_polar_interior, draw_power, draw_segment, label)
-from planargeo.draw.mechanism import draw_body, link_polygon
-from planargeo.draw.style import COLORS, LABEL_PT
-from planargeo.draw.layout import fit_view
+from planargeo.draw.picture import PX_PER_PT
+from planargeo.draw.pictures.common import label_line, label_toward
+from planargeo.draw.polars import (interior_construction, line_conic_points, percussion, polar_exterior,
+                                   polar_interior, power, power_values)
+from planargeo.draw.sketch import body, label, link_polygon, panel, segment, show
+from planargeo.draw.style import COLORS
 from planargeo.gallery.figures import register
+from planargeo.geometry.conics import (conic_ellipse, decompose_line_special, decompose_point_special, polar,
+                                       special_base)
+from planargeo.geometry.projective import from_standard, from_xy, join, to_xy
+from planargeo.screws.inertia import Inertia, percussion_axis
+
+#: the axes' colour in Figs 5.1 and 5.5
+AXES = "#555555"
+#: length of an arrow's head (pixels)
+HEAD_PX = 8.0
 
 
-def _vec_arrow(ax, p, d, text, color="#222222", **kw):
+def _vec_arrow(pic, id, p, d, text, *, color, symbol, desc, offset=(5, 5), width=1.0):
+    """An arrow from the data point ``p`` along the data vector ``d``, its text at the tip (``offset`` points)."""
     p = np.asarray(p, float)
-    q = p + np.asarray(d, float)
-    ax.annotate("", xy=tuple(q), xytext=tuple(p),
-                arrowprops=dict(arrowstyle="-|>", color=color, lw=1.0, shrinkA=0, shrinkB=0,
-                                mutation_scale=9))
-    label(q, text, color=color, **kw, ax=ax)
+    d = np.asarray(d, float)
+    dpx = d * (pic.kx, pic.ky)
+    u = dpx / np.hypot(*dpx)
+    head = min(HEAD_PX, float(np.hypot(*dpx)))
+    base = p + d - u * head / (pic.kx, pic.ky)          # the shaft (this width) ends under the head
+    pic.path(id, np.array([p, base]), role="construct", symbol=symbol, desc=desc, color=color,
+             width=width * PX_PER_PT, dash=[], z=5)
+    pic.elements[-1]["parts"].append({"p": "arrow", "x": float(base[0]), "y": float(base[1]),
+                                      "dx": float(u[0] * head), "dy": float(u[1] * head)})
+    if text:
+        label(pic, id + ":label", p + d, text, offset=offset, color=color, symbol=symbol, desc=desc)
 
 
-def _axes_cross(ax, size=2.6):
-    for d in ([1, 0], [0, 1]):
-        ax.annotate("", xy=tuple(np.array(d) * size), xytext=tuple(-np.array(d) * 0.3),
-                    arrowprops=dict(arrowstyle="-|>", color="#555555", lw=0.7, mutation_scale=7))
-    label([size, 0], "$x$", offset=(2, -10), color="#555555", ax=ax)
-    label([0, size], "$y$", offset=(-10, 0), va="top", color="#555555", ax=ax)
+def _axes_cross(pic, size=2.6):
+    for k, (d, name) in enumerate(((np.array([1.0, 0.0]), "x"), (np.array([0.0, 1.0]), "y"))):
+        _vec_arrow(pic, f"{name} axis", -0.3 * d, (size + 0.3) * d, "", color=AXES, symbol=name,
+                   desc=f"the {name} axis", width=0.7)
+    label(pic, "x", [size, 0], "x", offset=(2, -10), color=AXES, symbol="x", desc="the x axis")
+    label(pic, "y", [0, size], "y", offset=(-10, 0), va="top", color=AXES, symbol="y", desc="the y axis")
 
 
 def _coords(ax, alternative: bool):
     """A point P and a line L in standard (Fig. 5.1) or alternative (Fig. 5.5) coordinates."""
-    _axes_cross(ax)
+    pic = panel(ax, [[-0.6, -1.6], [2.8, 2.6]], margin=0.03)
+    _axes_cross(pic)
     lamP, rP = np.deg2rad(62), 2.0
     lamL, rL = np.deg2rad(-20), 1.8
     # the point and the line are built from their standard coordinates (5.4, 5.14a)
     P = from_standard([1.0, rP * np.cos(lamP), rP * np.sin(lamP)])
     L = from_standard([rL, -np.cos(lamL), -np.sin(lamL)])
     Pxy = to_xy(P)
-    plot_point(P, ax, glyph=False, text="$P$")
-    plot_line(L, ax, scale=None, text="$L$", anchor=[2.5, -1.0])
     foot = rL * np.array([np.cos(lamL), np.sin(lamL)])
-    draw_segment([0, 0], Pxy, ax=ax)
-    draw_segment([0, 0], foot, ax=ax)
+    segment(pic, "r_P", [0, 0], Pxy, symbol="r", desc=f"distance r of P from the origin (5.4): {rP:g}")
+    segment(pic, "r_L", [0, 0], foot, symbol="r", desc=f"distance r of L from the origin (5.14): {rL:g}")
+    pic.line("L", L, role="wrench", arrow=False, label="", symbol="L",
+             desc=f"the line L at distance r = {rL:g} from the origin, unit normal n at "
+                  f"{np.rad2deg(lamL):.0f}° (5.14): L = [r; −n]")
+    label_line(pic, "L", "L", anchor=[2.5, -1.0], side=-1.0)
+    pic.point("P", P, role="twist", glyph=False, symbol="P",
+              desc=f"the point P at distance r = {rP:g} from the origin, direction n at "
+                   f"{np.rad2deg(lamP):.0f}° (5.4): P = [1; r n]")
     nP, nL = Pxy / rP, foot / rL
     if alternative:
         eP = np.array([-nP[1], nP[0]])          # (5.50)
         eL = np.array([-nL[1], nL[0]])          # along the line (5.55)
-        _vec_arrow(ax, Pxy, 0.7 * eP, r"$\vec e$", color=COLORS["twist"])
-        _vec_arrow(ax, foot, 0.7 * eL, r"$\vec e$", color=COLORS["wrench"])
-        ax.text(0.98, 0.02, r"$P=[-r\vec e;\,1]$ (5.49),  $L=[\vec e;\,r]$ (5.55)",
-                transform=ax.transAxes, fontsize=LABEL_PT, ha="right", va="bottom")
+        _vec_arrow(pic, "e_P", Pxy, 0.7 * eP, "e⃗", color=COLORS["twist"], symbol="e",
+                   desc="unit vector e of P, perpendicular to n (5.50)", width=1.4)
+        _vec_arrow(pic, "e_L", foot, 0.7 * eL, "e⃗", color=COLORS["wrench"], symbol="e",
+                   desc="unit vector e of L, along the line (5.55)", width=1.4)
+        text = "P = [−r e⃗; 1] (5.49),  L = [e⃗; r] (5.55)"
     else:
-        _vec_arrow(ax, [0, 0], 0.7 * nP, r"$\vec n$", color=COLORS["twist"], offset=(-12, -2))
-        _vec_arrow(ax, [0, 0], 0.7 * nL, r"$\vec n$", color=COLORS["wrench"], offset=(-4, -16))
-        ax.text(0.98, 0.02, r"$P=[1;\,r\vec n]$,  $L=[r;\,-\vec n]$ (5.4, 5.14)",
-                transform=ax.transAxes, fontsize=LABEL_PT, ha="right", va="bottom")
-    label(0.72 * Pxy, "$r$", offset=(-10, 2), ax=ax)      # beyond the unit-vector arrows
-    label(0.72 * foot, "$r$", offset=(0, 4), ax=ax)
-    fit_view([[-0.6, -1.6], [2.8, 2.6]], margin=0.03, ax=ax)
+        _vec_arrow(pic, "n_P", [0, 0], 0.7 * nP, "n⃗", color=COLORS["twist"], offset=(-12, -2), symbol="n",
+                   desc="unit vector n towards P (5.4)", width=1.4)
+        _vec_arrow(pic, "n_L", [0, 0], 0.7 * nL, "n⃗", color=COLORS["wrench"], offset=(-4, -16), symbol="n",
+                   desc="unit normal n of L (5.14)", width=1.4)
+        text = "P = [1; r n⃗],  L = [r; −n⃗] (5.4, 5.14)"
+    x0, x1, y0, y1 = pic.box
+    pic.text("coordinates", (x1 - 0.02 * (x1 - x0), y0 + 0.02 * (y1 - y0)), text, ha="right",
+             symbol="P, L", desc=("alternative" if alternative else "standard") + " homogeneous coordinates of "
+                                 "P and L " + ("(5.49, 5.55)" if alternative else "(5.4, 5.14)"))
+    label(pic, "r_P:label", 0.72 * Pxy, "r", offset=(-10, 2), symbol="r", desc="the distance r of P (5.4)")
+    label(pic, "r_L:label", 0.72 * foot, "r", offset=(0, 4), symbol="r", desc="the distance r of L (5.14)")
+    show(pic, ax)
 
 
 @register(5.01, height=2.7)
@@ -83,15 +107,20 @@ def fig5_2(ax):
     conics.polar_construction_exterior."""
     C = _ellipse()
     p = from_xy([2.6, 1.3])
-    draw_polar_exterior(C, p, ax)
+    pic = panel(ax, [[-2.0, -1.6], [2.9, 1.6]], margin=0.05)
+    polar_exterior(pic, C, p, L_side=-1.0)           # L's label inside C, under the chord
     th = np.deg2rad(230)   # Q: where the ray from the centre at angle th meets C
     ray = join(from_xy([0.0, 0.0]), from_xy([np.cos(th), np.sin(th)]))
     q = max(line_conic_points(C, ray), key=lambda X: to_xy(X) @ [np.cos(th), np.sin(th)])
     assert abs(q @ C @ q) < 1e-9 * np.abs(C).max() * (q @ q)
-    plot_point(q, ax, glyph=False, role="accel", text="$Q$", text_offset=(-12, -12))
-    plot_line(polar(C, q), ax, role="construct", scale=None, text="$M = CQ$",
-              anchor=to_xy(q) + [-0.6, 0.6], color=COLORS["accel"])
-    fit_view([[-2.0, -1.6], [2.9, 1.6]], margin=0.05, ax=ax)
+    qxy = to_xy(q)
+    pic.line("M", polar(C, q), role="construct", color=COLORS["accel"], arrow=False, label="", symbol="M = CQ",
+             desc="the polar M = C Q of a point Q on C: its tangent there (5.38–5.39)")
+    label_line(pic, "M", "M = CQ", anchor=qxy + [0.9, -0.2], side=-1.0)    # below M, right of Q
+    pic.point("Q", q, role="accel", glyph=False, symbol="Q",
+              desc=f"a point Q on the conic C (5.38): at ({qxy[0]:.3g}, {qxy[1]:.3g})")
+    label_toward(pic.elements[-1], (-1.0, -1.0), 8.0)
+    show(pic, ax)
 
 
 @register(5.03, height=2.8)
@@ -101,13 +130,14 @@ def fig5_3(ax):
     conics.polar_construction_interior."""
     C = _ellipse()
     p = from_xy([1.0, 0.45])
-    out = draw_polar_interior(C, p, ax, angles=(np.deg2rad(75), np.deg2rad(150)),
-                              text_offsets=(None, (10.0, -4.0), None, (-8.0, 4.0)))
-    K = out["construction"]
+    angles = (np.deg2rad(75), np.deg2rad(150))
+    K = interior_construction(C, p, angles)
     R1, R2 = to_xy(K.poles[0]), to_xy(K.poles[1])
-    out["L"].set_anchor((R1 + R2) / 2)           # L's label between R1 and R2, right of L
-    out["R2"].set_text_alignment("right")        # R2's label left of L
-    fit_view([R1, R2, [-1.8, -1.2], [1.8, 1.2]], margin=0.15, ax=ax)
+    pic = panel(ax, [R1, R2, [-1.8, -1.2], [1.8, 1.2]], margin=0.15)
+    out = polar_interior(pic, C, p, angles=angles, L_anchor=(R1 + R2) / 2)   # L's label between R1 and R2
+    label_toward(out["R1"], (1.0, -0.4), 10.0)
+    label_toward(out["R2"], (-1.0, 0.5), 9.0)                                 # R2's label left of L
+    show(pic, ax)
 
 
 @register(5.04, height=2.8)
@@ -121,26 +151,35 @@ def fig5_4(ax):
     u = decompose_point_special(C, P, Q1, Q2, Q3)
     uL = decompose_line_special(C, polar(C, P), Q1, Q2, Q3)
     assert np.allclose(u, uL, rtol=1e-9, atol=1e-12)
-    plot_conic(C, ax, text="$C$")
     q1, q2, q3 = to_xy(Q1), to_xy(Q2), to_xy(Q3)
+    pic = panel(ax, [q1, [-1.9, -1.5], [1.9, 1.5]], margin=0.1)
+    pic.conic("C", C, role="conic", symbol="C", label="", desc="the conic C (5.35): the points x with xᵀCx = 0")
+    label(pic, "C:label", [-1.0, 0.15], "C", offset=(0, 0), ha="center", va="center", symbol="C",
+          desc="the conic C (5.35)")                     # inside C, clear of the curve
+    uu = u / (u @ [Q1[2], Q2[2], Q3[2]])
     # M1 = C Q1 is the chord Q2 Q3, M2 and M3 the tangents Q1 Q2 and Q1 Q3: labels away from the Qs
     anchors = (q3 + 0.5 * (q3 - q2) / np.hypot(*(q3 - q2)), (q1 + q2) / 2, (q1 + q3) / 2)
-    offsets = ((6.0, 2.0), (-4.0, 6.0), (8.0, -6.0))
-    q_offsets = ((-6.0, 6.0), (-6.0, 8.0), (-10.0, -2.0))
+    what = ("the chord through Q₂ and Q₃", "the tangent at Q₂ (through Q₁)", "the tangent at Q₃ (through Q₁)")
+    sub = "₁₂₃"
     for k, Q in enumerate((Q1, Q2, Q3)):
-        pt = plot_point(Q, ax, glyph=False, text=f"$Q_{k + 1}$", text_offset=q_offsets[k])
-        if k == 0:
-            pt.set_text_alignment("right")
-        if k == 2:
-            pt.set_text_alignment("right", "top")
-        plot_line(polar(C, Q), ax, role="construct", scale=None, text=f"$M_{k + 1}$",
-                  anchor=anchors[k], text_offset=offsets[k])
-    plot_point(P, ax, glyph=False, role="accel", text="$P$")
-    plot_line(polar(C, P), ax, scale=None, text="$L = CP$", anchor=[1.0, -1.2],
-              text_offset=(8.0, -12.0))
-    txt = ", ".join(f"$u_{k + 1}$={v:.2f}" for k, v in enumerate(u / (u @ [Q1[2], Q2[2], Q3[2]])))
-    ax.text(0.02, 0.98, txt, transform=ax.transAxes, fontsize=LABEL_PT, ha="left", va="top")
-    fit_view([q1, [-1.9, -1.5], [1.9, 1.5]], margin=0.1, ax=ax)
+        pic.line(f"M{k + 1}", polar(C, Q), role="construct", arrow=False, label="", symbol=f"M{sub[k]}",
+                 desc=f"the polar M{sub[k]} = C Q{sub[k]} (5.43): {what[k]}")
+        label_line(pic, f"M{k + 1}", f"M{sub[k]}", anchor=anchors[k], side=-1.0 if k == 2 else 1.0)
+    pic.line("L", polar(C, P), role="wrench", arrow=False, label="", symbol="L = CP",
+             desc="the polar L = C P (5.36), decomposed on the Mᵢ with the same uᵢ (5.43, 5.46)")
+    label_line(pic, "L", "L = CP", anchor=[1.0, -1.2], side=-1.0)
+    for k, (Q, xy) in enumerate(zip((Q1, Q2, Q3), (q1, q2, q3))):
+        pic.point(f"Q{k + 1}", Q, role="twist", glyph=False, symbol=f"Q{sub[k]}",
+                  desc=f"base point Q{sub[k]} (5.42): at ({xy[0]:.3g}, {xy[1]:.3g}), u{sub[k]} = {uu[k]:.2f}")
+        label_toward(pic.elements[-1], ((-1.0, 1.0), (-0.6, 1.0), (-1.0, -0.3))[k], 8.0)
+    pxy = to_xy(P)
+    pic.point("P", P, role="accel", glyph=False, symbol="P",
+              desc=f"the point P = u₁Q₁ + u₂Q₂ + u₃Q₃ (5.42): at ({pxy[0]:.3g}, {pxy[1]:.3g})")
+    txt = ", ".join(f"u{sub[k]} = {v:.2f}" for k, v in enumerate(uu))
+    x0, x1, y0, y1 = pic.box
+    pic.text("u", (x0 + 0.02 * (x1 - x0), y1 - 0.02 * (y1 - y0)), txt, ha="left", va="top", symbol="u",
+             desc=f"the coordinates of P on the base Q₁, Q₂, Q₃ (5.44–5.45): {txt}")
+    show(pic, ax)
 
 
 @register(5.05, height=2.7)
@@ -150,12 +189,17 @@ def fig5_5(ax):
     _coords(ax, alternative=True)
 
 
-def _body(ax):
-    """The link of Figs 5.6-5.7 drawn with its centre of mass; returns its inertia (from the shape)."""
+def _link():
+    """The link of Figs 5.6-5.7 and its inertia (from the shape)."""
     shape = link_polygon([-0.2, 0.0], [2.2, 0.0], 0.7)
-    I = Inertia.from_polygon(shape, density=1.0)
-    draw_body(shape, ax, com=I.com)
-    return I
+    return shape, Inertia.from_polygon(shape, density=1.0)
+
+
+def _body(pic, shape, I):
+    """The link drawn with its centre of mass."""
+    body(pic, "body", shape, com=I.com, symbol="body",
+         desc=f"the body, a uniform lamina: mass {float(I.mass):.3g} kg, radius of gyration "
+              f"ρ = {float(I.radius_of_gyration):.3g} m")
 
 
 @register(5.06, height=2.0)
@@ -163,16 +207,19 @@ def fig5_6(ax):
     """Fig. 5.6 — the inertia maps an acceleration pole a to its axis of percussion f = I a
     (5.64–5.68): at distance d from the centre of mass, the axis lies beyond it at ρ²/d. Inertia
     from the body's polygon (Inertia.from_polygon), drawn as its radius-of-gyration circle."""
-    I = _body(ax)
+    shape, I = _link()
     c = np.asarray(I.com)
     a = from_xy(c - [1.5, 0.0])
-    f = percussion_axis(I.matrix, a)
+    pic = panel(ax, [to_xy(a) - [0.3, 0], [2.6, -0.7], [2.6, 0.7]], margin=0.06)
+    _body(pic, shape, I)
     d, rho = 1.5, float(I.radius_of_gyration)
-    x_axis = to_xy(np.cross(f, [1.0, 0.0, -c[1]]))  # meet with the line y = c_y
-    assert np.isclose(x_axis[0] - c[0], rho ** 2 / d)
+    x_axis = c[0] + rho ** 2 / d
     # the axis's label near the top of the view, right of the line and outside the circle
-    draw_percussion(I.matrix, a, ax, f_anchor=[x_axis[0], c[1] + 0.8], text_offsets=(None, (5.0, 0.0)))
-    fit_view([to_xy(a) - [0.3, 0], [2.6, -0.7], [2.6, 0.7]], margin=0.06, ax=ax)
+    out = percussion(pic, I.matrix, a, f_anchor=[x_axis, c[1] + 0.8])
+    f = out["values"]["f"]
+    assert np.allclose(f, percussion_axis(I.matrix, a))
+    assert np.isclose(to_xy(np.cross(f, [1.0, 0.0, -c[1]]))[0] - c[0], rho ** 2 / d)   # meets y = c_y at ρ²/d
+    show(pic, ax)
 
 
 @register(5.07, height=2.4)
@@ -180,9 +227,11 @@ def fig5_7(ax):
     """Fig. 5.7 — power relations: a powerless force f passes through the velocity pole v (vᵀf = 0,
     5.69), and a powerless acceleration a lies on the momentum line p = I v (pᵀa = 0,
     5.71–5.72)."""
-    I = _body(ax)
     v = 1.2 * from_xy([0.6, -1.1])
-    out = draw_power(v, I.matrix, ax, text_offsets=((-14.0, -16.0), (8.0, 4.0), (0.0, -14.0), None),
-                     p_label_at=-2.3, f_label_at=-1.0)
-    out["v"].set_text_alignment("right")
-    fit_view([[-0.6, -1.5], [2.6, 1.45], out["a"].get_xy(), to_xy(v)], margin=0.08, ax=ax)
+    shape, I = _link()
+    val = power_values(v, I.matrix)           # where a lies, for the view
+    pic = panel(ax, [[-0.6, -1.5], [2.6, 1.45], to_xy(val["a"]), to_xy(v)], margin=0.08)
+    _body(pic, shape, I)
+    out = power(pic, v, I.matrix, p_label_at=-2.3, f_label_at=-1.0, f_side=-1.0)   # f's label under f
+    label_toward(out["v"], (-1.0, -1.0), 12.0)
+    show(pic, ax)
