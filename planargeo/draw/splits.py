@@ -12,7 +12,7 @@ inertia ``A`` (thesis 6.2–6.3, 6.36–6.48), splits the force and acceleration
 * :func:`wrench_split` — a force ``f = TQ + Rμ`` and the accelerations ``a_k = A⁻¹f_k`` of
   its parts (6.38, 6.77–6.81, Fig. 6.4);
 * :func:`projective_step` — the joint acceleration ``q̈ᵢ = Tᵢᵀaᵢ − Tᵢᵀ(aᵢ₋₁ + κᵢ)`` across
-  one joint (6.98–6.101, Fig. 6.5).
+  one joint (6.98–6.110, Fig. 6.5).
 
 Each takes the picture first, computes what it draws with
 :class:`planargeo.mechanics.subspaces.Decomposition` and returns the elements it added,
@@ -235,7 +235,7 @@ def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, an
     >>> [(p["x"], p["y"]) for p in out["U2"]["parts"] if p["p"] == "mark"]   # U₂ on R₁ and on T
     [(1.25, 0.0)]
     >>> out["T"]["desc"]
-    'axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.36): through (1.25, 0) m, along (0, 1)'
+    'axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.36, 6.39): through (1.25, 0) m, along (0, 1)'
     """
     _check_picture(pic)
     if reactive not in ("U", "inverse"):
@@ -258,7 +258,7 @@ def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, an
     out: dict = {}
     for j, n in enumerate(keys["T"]):
         out[n] = _line(pic, prefix + n, T[:, j], labels[n], role="momentum", symbol=default[n],
-                       desc="axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.36): "
+                       desc="axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.36, 6.39): "
                             + _line_words(T[:, j]),
                        anchor=anchors.get(n), side=sides.get(n, 1.0), aims=aims, key=n)
     for j, n in enumerate(keys["R"]):
@@ -271,7 +271,7 @@ def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, an
                         desc=f"motion space of the joint, its pole (6.1): {where(s[:, j])}",
                         glyph=False, aims=aims, key=n)
     for j, n in enumerate(keys["P"]):
-        what = ("acceleration a unit reaction gives the free body, A⁻¹R (6.42): " if inv else
+        what = ("acceleration a unit reaction gives the free body, A⁻¹R (6.15): " if inv else
                 "reactive acceleration U = A⁻¹R(RᵀA⁻¹R)⁻¹, RᵀU = 1 (6.45, 6.48): ")
         out[n] = _point(pic, prefix + n, pts[:, j], labels[n], role="accel", symbol=default[n],
                         desc=what + _accel_words(pts[:, j]), glyph=False, aims=aims, key=n)
@@ -374,7 +374,7 @@ def _split(pic, vals, show, names, descs, *, aims, anchors, scale, arrow_length,
             n = "T" if T.shape[1] == 1 else f"T{j + 1}"
             out[n] = _line(pic, prefix + n, T[:, j], names.get(n, _tex("T", T.shape[1], j)),
                            role="construct", symbol=_tex("T", T.shape[1], j),
-                           desc="axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.36): "
+                           desc="axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.36, 6.39): "
                                 + _line_words(T[:, j]),
                            anchor=anchors.get(n), side=-1.0, aims=aims, key=n)
     for k in show:
@@ -543,7 +543,7 @@ def projective_step(pic: Picture, s, R, A, a_prev, a, kappa, *,
     With ``Tᵢ`` the percussion space of joint ``i`` for the body inertia ``A``
     (6.36), ``ψᵢ = Tᵢᵀaᵢ`` and ``ψᵢ₋₁ = Tᵢᵀaᵢ₋₁`` are the absolute accelerations
     along the joint (``Tᵢ`` picks the ``sᵢ`` component of an acceleration, 6.44),
-    and the joint acceleration is ``q̈ᵢ = ψᵢ − Tᵢᵀ(aᵢ₋₁ + κᵢ)`` (6.101).
+    and the joint acceleration is ``q̈ᵢ = ψᵢ − Tᵢᵀ(aᵢ₋₁ + κᵢ)`` (6.100, 6.110).
 
     Parameters
     ----------
@@ -605,7 +605,7 @@ def projective_step(pic: Picture, s, R, A, a_prev, a, kappa, *,
     qdd = psi - T.T @ (a_prev + kap)
     aims = dict(aims or {})
     out = {"T": _line(pic, prefix + "T", T[:, 0], names[0], role="momentum", symbol=names[0],
-                      desc="axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.36), picks the "
+                      desc="axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.39), picks the "
                            f"joint's part of an acceleration: {_line_words(T[:, 0])}",
                       anchor=T_anchor, side=T_side, aims=aims, key="T"),
            "s": _point(pic, prefix + "s", dec.s[:, 0], names[1], role="twist", symbol=names[1],
@@ -613,11 +613,12 @@ def projective_step(pic: Picture, s, R, A, a_prev, a, kappa, *,
                        aims=aims, key="s"),
            "a_prev": _point(pic, prefix + "a_prev", a_prev, names[2], role="accel", symbol=names[2],
                             desc=f"acceleration of the parent, ψ = Tᵀa = {num(psi_prev[0])} rad/s² "
-                                 f"along the joint (6.99): {_accel_words(a_prev)}",
+                                 f"along the joint (6.100): {_accel_words(a_prev)}",
                             glyph=True, aims=aims, key="a_prev"),
            "a": _point(pic, prefix + "a", a, names[3], role="accel", symbol=names[3],
-                       desc=f"acceleration of the body, ψ = Tᵀa = {num(psi[0])} rad/s² along the joint, "
-                            f"q̈ = ψᵢ − Tᵀ(aᵢ₋₁ + κ) = {num(qdd[0])} rad/s² (6.101): {_accel_words(a)}",
+                       desc=f"acceleration of the body, ψ = Tᵀa = {num(psi[0])} rad/s² along the "
+                            f"joint, q̈ = ψᵢ − Tᵀ(aᵢ₋₁ + κ) = {num(qdd[0])} rad/s² (6.100, 6.110): "
+                            + _accel_words(a),
                        glyph=True, aims=aims, key="a")}
     out["values"] = {"T": T, "psi": psi, "psi_prev": psi_prev, "qdd": qdd}
     return out

@@ -189,8 +189,8 @@ def fig6_5(ax):
     x0, x1, y0, y1 = pic.box
     pic.text("readout", (x1, y0), f"ψ₂ = {psi_i:.3g},  ψ₁ = {psi_prev:.3g},  q̈₂ = {qdd:.3g}",
              dx=-4.0, dy=4.0, ha="right", symbol="ψ₂, ψ₁, q̈₂",
-             desc=f"the accelerations along joint 2 (6.99): ψ₂ = T₂ᵀa₂ = {num(psi_i)} rad/s², "
-                  f"ψ₁ = T₂ᵀa₁ = {num(psi_prev)} rad/s²; the joint acceleration (6.101): "
+             desc=f"the accelerations along joint 2 (6.100): ψ₂ = T₂ᵀa₂ = {num(psi_i)} rad/s², "
+                  f"ψ₁ = T₂ᵀa₁ = {num(psi_prev)} rad/s²; the joint acceleration (6.110): "
                   f"q̈₂ = ψ₂ − T₂ᵀ(a₁ + κ₂) = {num(qdd)} rad/s²")
     _show(pic, ax)
 
@@ -226,13 +226,15 @@ def fig6_6(ax):
     pic.elements[-1]["parts"][-1].update(dx=0.0, dy=-14.0, ha="center", va="top")
     mu = qn["mu"]
     force_arrow(pic, "R1mu", R1mu, scale=sc, anchor=0.5 * (icr + rear), role="reaction",
-                symbol="R₁μ₁", label=f"R₁μ₁ = {mu[0]:.0f} N (rear)", label_xy=icr + 0.4 * (rear - icr),
-                desc=f"the rear tyres' reaction, along their axle through the ICR (6.133): "
+                symbol="R₁μ₁", label=f"R₁μ₁ = {mu[0]:.0f} N (rear)",
+                label_xy=icr + 0.4 * (rear - icr),
+                desc=f"the rear tyres' reaction, along their axle through the ICR (6.132): "
                      f"μ₁ = {num(mu[0])} N")
     aim_label(pic.elements[-1], (0.0, -1.0), 9.0)
     force_arrow(pic, "R2mu", R2mu, scale=sc, anchor=0.5 * (icr + front), role="reaction",
-                symbol="R₂μ₂", label=f"R₂μ₂ = {mu[1]:.0f} N (front)", label_xy=icr + 0.4 * (front - icr),
-                desc=f"the front tyres' reaction, along their axle through the ICR (6.133): "
+                symbol="R₂μ₂", label=f"R₂μ₂ = {mu[1]:.0f} N (front)",
+                label_xy=icr + 0.4 * (front - icr),
+                desc=f"the front tyres' reaction, along their axle through the ICR (6.132): "
                      f"μ₂ = {num(mu[1])} N")
     aim_label(pic.elements[-1], (0.0, 1.0), 9.0)
     force_arrow(pic, "fA", fA, scale=sc, anchor=anchor_A, role="wrench", symbol="f_A",
@@ -240,12 +242,13 @@ def fig6_6(ax):
                                     f"{num(np.hypot(*fA[:2]))} N")
     aim_label(pic.elements[-1], (-1.0, 0.3), 10.0)
     pic.line("T", T, role="momentum", symbol="T", label="", arrow=False,
-             desc="the axis of percussion of the ICR joint, T = I s (sᵀIs)⁻¹ (6.36, 6.125)")
+             desc="the axis of percussion of the ICR joint, T = I s (sᵀIs)⁻¹ (6.124)")
     label_at(pic, _on_line(T, lo[1] - 0.5), "T")
     aim_label(pic.elements[-1], (1.0, 0.0), 7.0)
     pic.point("a", qn["a"], role="accel", symbol="a",
-              desc=f"the car's acceleration, its pole (6.131): ω̇ = {qn['omega_dot']:.3f} rad/s²")
+              desc=f"the car's acceleration a = sω̇ (γ = 0, 6.129–6.131), its pole: "
+                   f"ω̇ = {qn['omega_dot']:.3f} rad/s²")
     x0, x1, y0, y1 = pic.box
     pic.text("omega_dot", (x0, y1), f"ω̇ = {qn['omega_dot']:.3f} rad/s²", dx=4.0, dy=-4.0, va="top",
-             symbol="ω̇", desc=f"the car's angular acceleration: {qn['omega_dot']:.4g} rad/s²")
+             symbol="ω̇", desc=f"the car's angular acceleration (6.131): {qn['omega_dot']:.4g} rad/s²")
     _show(pic, ax)
