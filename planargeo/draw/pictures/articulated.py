@@ -26,6 +26,7 @@ import math
 import numpy as np
 
 from planargeo.draw.geometry import clip_line
+from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import PX_PER_PT, Picture, nice_ticks
 from planargeo.draw.pictures._words import force, labelled_line, num, pair, where
 from planargeo.draw.style import COLORS
@@ -117,6 +118,7 @@ def chain_view(box, size, margin) -> tuple[float, float, float, float]:
     return (left, left + W, cy - H / 2, cy + H / 2)
 
 
+@builder
 def articulated_picture(st: dict, *, k: int, focus_all: bool, rigid: bool, axes: bool, view,
                         size=(960, 500)) -> Picture:
     """The picture of one state of the articulated explorer (module docstring).
@@ -135,12 +137,6 @@ def articulated_picture(st: dict, *, k: int, focus_all: bool, rigid: bool, axes:
         Draw the axes of percussion and the polar of ``a``.
     view : (x0, x1, y0, y1)
         The view (:func:`chain_view`); the chart takes its right part.
-    size : (int, int)
-        Pixels.
-
-    Returns
-    -------
-    Picture
     """
     n = int(st["n"])
     kk = _sub(k + 1)

@@ -30,6 +30,7 @@ import math
 
 import numpy as np
 
+from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.pictures.kit import aim_label, force, label_at, num, scale_bar, where
 from planargeo.draw.style import COLORS
@@ -131,6 +132,7 @@ def view_box(d: float, L: float, theta: float, F_A: float = 0.0):
     return (float(c[0] - half), float(c[0] + half), float(c[1] - half), float(c[1] + half))
 
 
+@builder
 def car_picture(res, *, heading: float, view, slides: bool = False, limit: float = 0.0,
                 size=(600, 560)) -> Picture:
     """The picture of the car of the scene ``res`` turned by ``heading`` (module docstring).
@@ -147,12 +149,6 @@ def car_picture(res, *, heading: float, view, slides: bool = False, limit: float
         The tyres have reached their limit: the banner says the car slides out.
     limit : float
         What the tyres hold, μ·g (m/s²), said in the banner's description.
-    size : (int, int)
-        Pixels.
-
-    Returns
-    -------
-    Picture
     """
     q, x, p = res.quantities, res.extra, res.params
     L, d = p["L"], p["d"]

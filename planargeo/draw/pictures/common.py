@@ -23,13 +23,43 @@ True
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 
 from planargeo.draw.picture import Picture
 from planargeo.geometry.projective import is_ideal
 
-__all__ = ["label_line", "label_toward", "point_along"]
+__all__ = ["label_line", "label_toward", "point_along", "builder"]
+
+#: what every picture builder's docstring ends with: the parameters all of them take, and the result
+_BUILDER_DOC = {"view": "view : (x0, x1, y0, y1)\n    What must be in view.",
+                "size": "size : (int, int)\n    Pixels.",
+                "Returns": "\nReturns\n-------\nPicture"}
+
+
+def builder(fn):
+    """Mark ``fn`` as a picture builder: its docstring gets the entries all builders share.
+
+    Every builder takes ``view`` and ``size`` and returns a :class:`Picture`; what its own
+    docstring does not say of them is added once, here, at the end of its Parameters.
+
+    Parameters
+    ----------
+    fn : callable
+        A function ``(state..., view, size) -> Picture`` whose docstring ends with its Parameters.
+
+    Returns
+    -------
+    callable
+        ``fn`` itself, its docstring completed.
+    """
+    import inspect
+
+    doc = inspect.cleandoc(fn.__doc__ or "")
+    fn.__doc__ = "\n".join([doc] + [text for key, text in _BUILDER_DOC.items()
+                                     if not re.search(rf"^{key}\b", doc, re.M)])
+    return fn
 
 
 def _align(n) -> tuple[str, str]:

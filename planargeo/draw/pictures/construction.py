@@ -30,7 +30,7 @@ import numpy as np
 
 from planargeo.draw.picture import FONT_PX, PX_PER_PT, Picture, plain_text
 from planargeo.draw.pictures._words import num, where
-from planargeo.draw.pictures.common import label_line, label_toward
+from planargeo.draw.pictures.common import builder, label_line, label_toward
 from planargeo.draw.style import COLORS, SUM
 from planargeo.geometry.projective import is_at_infinity, is_ideal
 from planargeo.screws.inertia import mass, radius_of_gyration
@@ -168,6 +168,7 @@ def caption_lines(text: str) -> list[str]:
     return lines
 
 
+@builder
 def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(560, 560),
                          all_steps: bool = False, caption: str | None = None,
                          band_below: bool = True) -> Picture:
@@ -183,8 +184,6 @@ def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(56
         How the earlier steps look.
     view : (x0, x1, y0, y1)
         What must be in view; a band for the caption is added below it (``band_below``).
-    size : (int, int)
-        Pixels.
     all_steps : bool
         Every step at full strength (the layered export).
     caption : str, optional
@@ -192,10 +191,6 @@ def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(56
     band_below : bool
         Add the caption's band below ``view``; False: ``view`` is the whole box shown (a view
         the user zoomed or panned to in the page, band included), the band at its bottom.
-
-    Returns
-    -------
-    Picture
     """
     n = len(c.steps)
     k = min(max(int(step), 1), n)

@@ -25,6 +25,7 @@ import math
 
 import numpy as np
 
+from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import Picture
 from planargeo.draw.pictures._words import force, labelled_line, num, pair, where
 from planargeo.draw.style import COLORS
@@ -58,6 +59,7 @@ def moved_outline(outline, dv, t: float) -> np.ndarray:
     return moved_points(dv, outline, t)   # written without the pole: finite for a subnormal ω
 
 
+@builder
 def impulse_picture(r, *, t: float, view, size=(640, 460)) -> Picture:
     """The picture of one result of the impulse scene (module docstring).
 
@@ -67,14 +69,6 @@ def impulse_picture(r, *, t: float, view, size=(640, 460)) -> Picture:
         :func:`planargeo.scenes.impulse.impulse`.
     t : float
         Seconds after the blow.
-    view : (x0, x1, y0, y1)
-        What must be in view.
-    size : (int, int)
-        Pixels.
-
-    Returns
-    -------
-    Picture
     """
     q, ex, prm = r.quantities, r.extra, r.params
     held = prm["support"] == "held"

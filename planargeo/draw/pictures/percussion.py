@@ -32,7 +32,7 @@ import numpy as np
 
 from planargeo.draw.picture import Picture
 from planargeo.draw.pictures._words import num, where
-from planargeo.draw.pictures.common import label_line
+from planargeo.draw.pictures.common import builder, label_line
 from planargeo.draw.style import COLORS
 from planargeo.geometry.projective import from_xy, is_ideal
 
@@ -69,6 +69,7 @@ def percussion_numbers(st: dict) -> dict:
     return out
 
 
+@builder
 def percussion_picture(st: dict, *, impact: bool = False, view, size=(600, 480)) -> Picture:
     """The picture of one state of the percussion explorer (module docstring).
 
@@ -78,14 +79,6 @@ def percussion_picture(st: dict, *, impact: bool = False, view, size=(600, 480))
         ``shape`` (shapely polygon), ``I``, ``c``, ``a`` (the pole), ``f`` (the axis of percussion).
     impact : bool
         Driven by an impact (the sweet spot of the grip is marked) rather than by the pole.
-    view : (x0, x1, y0, y1)
-        What must be in view.
-    size : (int, int)
-        Pixels.
-
-    Returns
-    -------
-    Picture
     """
     pic = Picture(view, size=size)
     nums = percussion_numbers(st)

@@ -36,7 +36,7 @@ import numpy as np
 
 from planargeo.draw.picture import Picture
 from planargeo.draw.pictures._words import num, where
-from planargeo.draw.pictures.common import label_line, point_along
+from planargeo.draw.pictures.common import builder, label_line, point_along
 from planargeo.geometry.projective import is_at_infinity
 
 __all__ = ["projective_picture"]
@@ -57,6 +57,7 @@ def _line_words(L) -> str:
     return f"{num(abs(L[2]) / F)} m from the origin, direction {num(ang)}°"
 
 
+@builder
 def projective_picture(st: dict, *, construction: bool = True, line_and_pole: bool = True,
                        view=(-4.0, 4.0, -4.0, 4.0), size=(560, 540)) -> Picture:
     """The picture of one state of the projective playground (module docstring).
@@ -71,14 +72,6 @@ def projective_picture(st: dict, *, construction: bool = True, line_and_pole: bo
         Draw the construction of 5.2.2.
     line_and_pole : bool
         Draw the line ``M`` and its pole.
-    view : (x0, x1, y0, y1)
-        What must be in view.
-    size : (int, int)
-        Pixels.
-
-    Returns
-    -------
-    Picture
     """
     pic = Picture(view, size=size)
     ctype = st["type"]

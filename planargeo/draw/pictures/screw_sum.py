@@ -30,7 +30,7 @@ import numpy as np
 
 from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.pictures._words import num, where
-from planargeo.draw.pictures.common import label_line, label_toward
+from planargeo.draw.pictures.common import builder, label_line, label_toward
 from planargeo.draw.style import COLORS, SUM
 from planargeo.geometry.projective import is_at_infinity, is_ideal
 
@@ -58,6 +58,7 @@ def _glyph_gap(w: float) -> float:
     return (6.0 + min(max(6.0 * abs(w), 4.0), 16.0)) * PX_PER_PT * 0.8
 
 
+@builder
 def screw_sum_picture(mode: str, c, *, anchors=None, view, size=(560, 500)) -> Picture:
     """The picture of one sum (module docstring).
 
@@ -71,14 +72,6 @@ def screw_sum_picture(mode: str, c, *, anchors=None, view, size=(560, 500)) -> P
         (``f1``, ``f2``, ``P``, ``L3``, ``sum``, ``F1..3``).
     anchors : ((x1, y1), (x2, y2)), optional
         Wrenches: the points of the force lines where their arrows sit.
-    view : (x0, x1, y0, y1)
-        What must be in view.
-    size : (int, int)
-        Pixels.
-
-    Returns
-    -------
-    Picture
     """
     pic = Picture(view, size=size)
     if mode == "twists":

@@ -35,6 +35,7 @@ import math
 
 import numpy as np
 
+from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.pictures.kit import clearest, force, ground, label_at, num, rate, scale_bar, side_label, where
 from planargeo.draw.style import COLORS, OKABE_ITO
@@ -78,6 +79,7 @@ def slider_crank_view(r: float, l: float, t: float):
     return (-4.5, 4.5, -r - 1.2, max(9.0, r + l + 2 * t + 1.0))
 
 
+@builder
 def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, h: float,
                          overlays: dict, view, banner: str = "", size=(560, 620)) -> Picture:
     """The picture of one state of the slider-crank (module docstring).
@@ -99,16 +101,8 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
         Height of the piston (m).
     overlays : dict
         ``{"reaction forces", "velocity poles", "acceleration poles": shown}``.
-    view : (x0, x1, y0, y1)
-        What must be in view.
     banner : str
         A dead centre named ("" for none).
-    size : (int, int)
-        Pixels.
-
-    Returns
-    -------
-    Picture
     """
     pose = np.asarray(pose, dtype=float)
     pic = Picture(view, size=size, ticks=False, margin=(6, 6, 6, 6))

@@ -30,6 +30,7 @@ import math
 
 import numpy as np
 
+from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.pictures._words import SUB, force, labelled_line, num, pair, where
 from planargeo.draw.style import COLORS, OKABE_ITO
@@ -56,6 +57,7 @@ def _acc(a) -> str:
     return f"({num(a[0])} m/s², {num(a[1])} m/s², {num(a[2])} rad/s²)"
 
 
+@builder
 def splitting_picture(st: dict, *, view, focus: str = "all", centres: bool = True,
                       size=(760, 520)) -> Picture:
     """The picture of one state of the splitting explorer (module docstring).
@@ -65,18 +67,10 @@ def splitting_picture(st: dict, *, view, focus: str = "all", centres: bool = Tru
     st : dict
         :func:`planargeo.scenes.splitting.splitting_state` with ``n`` and ``split`` (0-based
         index ``i`` of the split joint ``i+1``).
-    view : (x0, x1, y0, y1)
-        What must be in view.
     focus : {"all", "constrained part", "free-floating part"}
         The side kept bright.
     centres : bool
         Draw the centre of ``Λᵢ⁻¹``.
-    size : (int, int)
-        Pixels.
-
-    Returns
-    -------
-    Picture
     """
     n, i = int(st["n"]), int(st["split"])
     pts = np.asarray(st["joints"], float)

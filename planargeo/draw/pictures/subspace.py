@@ -32,6 +32,7 @@ import math
 
 import numpy as np
 
+from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import Picture
 from planargeo.draw.pictures._words import force, labelled_line, num, pair, where
 from planargeo.draw.style import COLORS
@@ -69,6 +70,7 @@ def _same_point(p, q) -> bool:
     return bool(np.linalg.norm(np.cross(p, q)) <= 1e-9 * float(np.linalg.norm(p)) * float(np.linalg.norm(q)))
 
 
+@builder
 def subspace_picture(st: dict, *, show: str, m: float, rho: float, view, size=(640, 500)) -> Picture:
     """The picture of one state of the subspace explorer (module docstring).
 
@@ -81,14 +83,6 @@ def subspace_picture(st: dict, *, show: str, m: float, rho: float, view, size=(6
         The split of the force, the split of the free acceleration, or the four spaces.
     m, rho : float
         The body's mass (kg) and radius of gyration (m), for the descriptions.
-    view : (x0, x1, y0, y1)
-        What must be in view.
-    size : (int, int)
-        Pixels.
-
-    Returns
-    -------
-    Picture
     """
     s, R, T, U = st["s"], st["R"], st["T"], st["U"]
     k = int(s.shape[1])

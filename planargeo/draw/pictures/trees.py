@@ -30,6 +30,7 @@ import math
 
 import numpy as np
 
+from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.pictures.kit import clearest, force, ground, num, rate, scale_bar, side_label, where
 from planargeo.draw.pictures.slider_crank import CONTACT_COLOR
@@ -65,6 +66,7 @@ def symbol_of(sym: str) -> str:
     return sym.replace("_", "").translate(_SUB)
 
 
+@builder
 def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, focus: str = "all",
                   view=VIEW, size=(560, 560)) -> Picture:
     """The picture of one state of the nine links (module docstring).
@@ -86,14 +88,6 @@ def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, f
         ``{"reaction forces", "velocity poles", "acceleration poles": shown}``.
     focus : str
         A force's symbol (``"f₄"``) drawn bold, the others faded; ``"all"`` for none.
-    view : (x0, x1, y0, y1)
-        What must be in view.
-    size : (int, int)
-        Pixels.
-
-    Returns
-    -------
-    Picture
     """
     pose = np.asarray(pose, dtype=float)
     tips = np.asarray(tips, dtype=float)
