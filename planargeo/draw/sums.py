@@ -127,12 +127,14 @@ def _lever(pic: Picture, id: str, p, q, *, desc: str, width: float | None = None
 
 
 def _wrench(pic: Picture, id: str, f, *, role: str, label: str, desc: str, scale, anchor,
-            emphasis: bool = False, toward=None, couples: list | None = None) -> dict | None:
+            emphasis: bool = False, toward=None, couples: list | None = None,
+            corner: str = "right") -> dict | None:
     """A wrench: its line of action with a force arrow ``scale |f|`` long centred at ``anchor``'s foot.
 
     ``scale`` None: the line alone.  A pure couple (the line at infinity) is the couple
-    glyph in the upper right corner (one row lower per couple already drawn: ``couples``).
-    A zero wrench draws nothing (None).
+    glyph in an upper corner (``corner`` "right" or "left"; one row lower per couple
+    already drawn in that corner: ``couples``), labelled "label: couple (line at ∞)" (a
+    label that names the couple itself is kept as it is).  A zero wrench draws nothing (None).
     """
     f = np.asarray(f, float)
     width = _SUM_LINE_PX if emphasis else None
@@ -143,12 +145,20 @@ def _wrench(pic: Picture, id: str, f, *, role: str, label: str, desc: str, scale
     if bool(is_at_infinity(f)):
         pic.line(id, f, role=role, symbol=symbol, desc=desc, label=text, width=width)
         el = pic.elements[-1]
-        row = 0 if couples is None else len(couples)
+        row = 0 if couples is None else sum(1 for c in couples if c == corner)
+        x0, x1, _, _ = pic.box
         for part in el["parts"]:
             if part["p"] in ("text", "glyph"):
                 part["y"] -= row * 30.0 / pic.ky
+            if part["p"] == "text" and text and "couple" in text:
+                part["text"] = text
+            if corner == "left":          # mirrored: the glyph 26 px from the left edge, its words right of it
+                if part["p"] == "glyph":
+                    part["x"] = x0 + 26.0 / pic.kx
+                elif part["p"] == "text":
+                    part["x"], part["dx"], part["ha"] = x0 + 26.0 / pic.kx, 18.0, "left"
         if couples is not None:
-            couples.append(id)
+            couples.append(corner)
         return el
     if anchor is None:
         anchor = ((pic.box[0] + pic.box[1]) / 2, (pic.box[2] + pic.box[3]) / 2)
@@ -159,9 +169,43 @@ def _wrench(pic: Picture, id: str, f, *, role: str, label: str, desc: str, scale
         force_arrow(pic, id, f, scale=float(scale), anchor=anchor, role=role, symbol=symbol, desc=desc,
                     label=text, width=width, color=COLORS.get(role))
     el = pic.elements[-1]
+    arrow = next((q for q in el["parts"] if q["p"] == "arrow"), None)
+    if arrow is not None:        # the label at the arrow's tip (as the old drawing), the placer's first spot
+        tip = (arrow["x"] + arrow["dx"] / pic.kx, arrow["y"] + arrow["dy"] / pic.ky)
+        for part in el["parts"]:
+            if part["p"] == "text":
+                part["x"], part["y"] = tip
+        if toward is None:       # beside the tip, left of the force's sense
+            toward = (-arrow["dy"], arrow["dx"])
+        if emphasis:
+            _notch(pic, el, arrow, tip)
     if toward is not None:
-        aim_label(el, toward)
+        aim_label(el, toward, gap=12.0 if emphasis else 9.0)
     return el
+
+
+def _notch(pic: Picture, el: dict, arrow: dict, tip) -> None:
+    """Cut a heavy line of action where its arrow's head sits, so that the head shows on it."""
+    L = math.hypot(arrow["dx"], arrow["dy"])
+    if L < 12.0:
+        return
+    u = np.array([arrow["dx"] / pic.kx, arrow["dy"] / pic.ky]) / L       # data units per pixel along it
+    a, b = np.asarray(tip) - 10.0 * u, np.asarray(tip) + 2.0 * u          # the head's stretch, and a little
+    parts = []
+    for part in el["parts"]:
+        if part["p"] != "path":
+            parts.append(part)
+            continue
+        p, q = np.asarray(part["xy"], float)
+        d = q - p
+        t = sorted(((a - p) @ d / (d @ d), (b - p) @ d / (d @ d)))
+        if t[1] <= 0.0 or t[0] >= 1.0:
+            parts.append(part)
+            continue
+        for lo, hi in ((0.0, t[0]), (t[1], 1.0)):
+            if hi > lo:
+                parts.append({"p": "path", "xy": np.array([p + lo * d, p + hi * d]), "closed": False})
+    el["parts"] = parts
 
 
 # --------------------------------------------------------------------------- twist / wrench sums
@@ -266,8 +310,9 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
     parallelogram is drawn there, the three arrows starting at ``P``.  Parallel forces:
     ``f₃`` lies between them by the lever rule (4.43); a force and a couple: ``f₃`` is
     parallel to ``f₁`` at ``ρ = τ/F`` (4.46).  A couple is the line at infinity: the
-    couple glyph in the upper right corner.  The sum is a wrench like its terms, drawn
-    with a heavier line.
+    couple glyph in an upper corner (``f₂``'s on the left, the others' on the right).
+    The sum is a wrench like its terms, drawn with a heavier line, cut where its arrow's
+    head sits so that the head shows.  Labels sit at the arrows' tips.
 
     Parameters
     ----------
@@ -276,7 +321,8 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
     f1, f2 : array_like (3,)
         The wrenches ``[fx, fy, τ]`` (lines).
     labels : (str, str, str)
-        Labels of ``f₁``, ``f₂`` and the sum (a couple's reads "label: couple (line at ∞)").
+        Labels of ``f₁``, ``f₂`` and the sum (a couple's reads "label: couple (line at ∞)",
+        unless the label names the couple itself).
     scale : float or None
         Force arrow length per unit force (data units); None: no arrows.
     anchors : (xy, xy, xy)
@@ -329,12 +375,20 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
     Pxy = np.array([-P[1] / P[2], P[0] / P[2]]) if finite_meet else None
     if finite_meet and parallelogram and scale is not None:
         anchors = [Pxy + scale * f[:2] / 2 for f in (f1, f2, f3)]
+        # labels away from the parallelogram: the terms' beyond their corners, the sum's ahead
+        # of its tip, on the side of f1
+        k = np.array([pic.kx, pic.ky])
+        side = (f1[:2] - f2[:2]) * k
+        auto = [tuple((f1[:2] - f2[:2]) * k), tuple((f2[:2] - f1[:2]) * k),
+                tuple(f3[:2] * k / math.hypot(*(f3[:2] * k)) + side / math.hypot(*side))]
+        toward = tuple(t if t is not None else a for t, a in zip(toward, auto))
     syms = [_symbol(x) for x in labels]
     out, couples = {}, []
     for k, (name, f, what, eq) in enumerate((("f1", f1, "wrench", "4.27"), ("f2", f2, "wrench", "4.27"),
                                              ("f3", f3, "sum", "4.33–4.46"))):
         el = _wrench(pic, prefix + name, f, role=role, label=labels[k], scale=scale, anchor=anchors[k],
                      emphasis=name == "f3", toward=toward[k], couples=couples,
+                     corner="left" if name == "f2" else "right",
                      desc=f"{what} {syms[k]} on its line of action ({eq}): {force_words(f)}")
         if el is not None:
             out[name] = el
@@ -355,7 +409,7 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
 
 
 # --------------------------------------------------------------------------- chains, one body
-def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot q_i$", "$v_i$"),
+def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot{q}_i$", "$v_i$"),
                   toward=(None, None, None), dims: bool = True, dim_offset: float = 0.25,
                   prefix: str = "") -> dict:
     """One step of velocity kinematics along a chain (thesis 4.47–4.49, Fig. 4.7).
@@ -427,8 +481,8 @@ def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot q_i$", 
 
 
 def acceleration_step(pic, a_prev, v_prev, s, qd, qdd, *,
-                      labels=("$a_{i-1}$", r"$s_i\ddot q_i$", r"$v_i\times s_i\dot q_i$",
-                              r"$s_i\ddot q_i + v_i\times s_i\dot q_i$", "$a_i$"),
+                      labels=("$a_{i-1}$", r"$s_i\ddot{q}_i$", r"$v_i \times s_i\dot{q}_i$",
+                              r"$s_i\ddot{q}_i + v_i \times s_i\dot{q}_i$", "$a_i$"),
                       toward=(None,) * 5, prefix: str = "") -> dict:
     """One step of acceleration kinematics along a chain (thesis 4.50–4.54, Fig. 4.8).
 
@@ -515,7 +569,7 @@ def acceleration_step(pic, a_prev, v_prev, s, qd, qdd, *,
 
 
 def newton_euler(pic, I, a, v, *, scale=None,
-                 labels=("$v$", "$a$", "$Ia$", "$p$", "$f_{net} = Ia + p$"),
+                 labels=("$v$", "$a$", "$Ia$", "$p$", "fⁿᵉᵗ = Ia + p"),
                  positions=(-1.0, -0.9, 1.0), toward=(None,) * 5, inertia: bool = True,
                  prefix: str = "") -> dict:
     """Newton–Euler balance of one body (thesis 4.55–4.56, Fig. 4.9): ``f_net = I a + p``.
@@ -570,7 +624,7 @@ def newton_euler(pic, I, a, v, *, scale=None,
     >>> out["values"]["p"].round(12).tolist()   # m l w^2 = 9 toward the pole, along -x through y = 0
     [-9.0, 0.0, 0.0]
     >>> out["f_net"]["symbol"]
-    'fₙₑₜ = Ia + p'
+    'fⁿᵉᵗ = Ia + p'
     """
     pic = _picture(pic, "newton_euler")
     I, a, v = as_mat3(I, "I"), as_vec3(a, "a"), as_vec3(v, "v")
