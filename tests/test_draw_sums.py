@@ -292,3 +292,30 @@ def test_bad_input_is_refused_by_name(pic):
     with pytest.raises(InputError, match="qdd must be numeric"):
         acceleration_step(pic, [0, 0, 0], [0, 0, 1], [0, -1, 1], 1.0, "fast")
     assert pic.elements == []                     # nothing half-drawn
+
+
+def test_sum_arrow_head_shows_on_its_heavy_line(pic):
+    # the sum's line of action is cut where its arrow's head sits (the head is narrower than the line)
+    f1, f2 = np.array([1.0, 0.0, -1.0]), np.array([0.0, 1.0, 2.0])
+    out = wrench_sum(pic, f1, f2, scale=1.0)
+    pieces = [np.asarray(p["xy"]) for p in out["f3"]["parts"] if p["p"] == "path"]
+    assert len(pieces) == 2
+    tip = np.array([2.0, 1.0]) + (f1 + f2)[:2]                   # P + scale f3 (4.33)
+    a = _part(out["f3"], "arrow")
+    np.testing.assert_allclose([a["x"] + a["dx"] / pic.kx, a["y"] + a["dy"] / pic.ky], tip, atol=1e-12)
+    u = (f1 + f2)[:2] / np.hypot(*(f1 + f2)[:2])
+    along = sorted(float((q - tip) @ u) for piece in pieces for q in piece)
+    assert along[1] < 0.0 < along[2]
+    assert all(_on_segment_line(q, np.array([[2.0, 1.0], tip])) for piece in pieces for q in piece)
+    # the labels sit at the arrows' tips (the placer's first choice)
+    t = _part(out["f1"], "text")
+    np.testing.assert_allclose([t["x"], t["y"]], [3.0, 1.0], atol=1e-12)
+
+
+def test_couple_glyphs_in_their_corners(pic):
+    out = wrench_sum(pic, [0.0, 0.0, 1.0], [0.0, 0.0, -2.0], labels=("$f_1$", "$f_2$ = couple τ", "$f_3$"))
+    g1, g2, g3 = (_part(out[k], "glyph") for k in ("f1", "f2", "f3"))
+    assert g1["x"] > 0 > g2["x"] and g3["x"] == g1["x"] and g3["y"] < g1["y"]   # f3 one row under f1
+    assert g1["ccw"] and not g2["ccw"] and not g3["ccw"]              # tau3 = 1 - 2 < 0
+    assert _part(out["f2"], "text")["text"] == "f₂ = couple τ"
+    assert _part(out["f1"], "text")["text"] == "f₁: couple (line at ∞)"
