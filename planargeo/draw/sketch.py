@@ -683,7 +683,7 @@ def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alp
         _element(pic, f"{id}:holes", "body", [{"p": "path", "xy": h, "closed": True} for h in holes],
                  color=edgecolor, width=LINEWIDTHS["body"] * PX_PER_PT, fill="white", z=z)
     if com is not None:
-        globals()["com"](pic, f"{id}:com", com)
+        _com(pic, f"{id}:com", com)
     return el
 
 
@@ -968,6 +968,9 @@ def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6,
                     fill="black", z=z)
 
 
+_com, _ground = com, ground      # for the functions with keywords of these names
+
+
 def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, labels: bool = True,
           ground: bool = True, pin_radius: float = 0.05, show_com: bool = True, alpha: float = 0.35,
           names=None, contacts: bool = True) -> dict:
@@ -1050,7 +1053,7 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
     for i, joint in enumerate(model.joints):
         o = origin[i]
         if model.parents[i] == -1 and ground and joint.kind != "plane":
-            out["joints"].append(globals()["ground"](
+            out["joints"].append(_ground(
                 pic, f"{prefix}ground {i + 1}", o - [0, pin_radius * 1.6], width=10 * pin_radius,
                 depth=1.6 * pin_radius))
         if joint.kind in ("revolute", "revolute_prismatic"):

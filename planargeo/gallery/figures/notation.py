@@ -4,6 +4,7 @@ from __future__ import annotations
 import numpy as np
 from shapely.geometry import Point as SPoint, box as sbox
 
+from planargeo.draw.picture import PX_PER_PT
 from planargeo.draw.sketch import arrow, body, frame, label, model, panel, show
 from planargeo.draw.style import COLORS
 from planargeo.gallery.figures import chain, register
@@ -101,7 +102,7 @@ def fig3_3(ax):
     th = np.linspace(0, 2 * np.pi, 181)
     r = 0.75 * np.array([along(t) for t in th])
     pic.path("apparent mass", np.column_stack([r * np.cos(th), r * np.sin(th)]), role="wrench",
-             width=1.0 * 100 / 72, dash=[4.0 * 100 / 72, 1.5 * 100 / 72], z=4,
+             width=1.0 * PX_PER_PT, dash=[4.0 * PX_PER_PT, 1.5 * PX_PER_PT], z=4,
              desc="apparent mass 1/(eᵀA⁻¹e) for a force along e (3.14), 0.75 units per kg: "
                   f"{along(0.0):.3g} kg along x, {along(np.pi / 2):.3g} kg along y")
     label(pic, "apparent mass label", (0.0, -1.5), "apparent mass", offset=(0, -2), ha="center",
