@@ -319,18 +319,9 @@ class ArticulatedExplorer(ChainBodies, Explorer):
         n = int(v["bodies n"])
         return np.array([math.radians(v["base θ₁ (deg)"])] + [math.radians(v["bend φ (deg)"])] * (n - 1))
 
-    def motion(self, v) -> Motion:
-        """The swing of the configuration ``v`` from rest: ``y = (q, q̇, W)`` at any time (kept per configuration).
-
-        Parameters
-        ----------
-        v : dict
-            Control values.
-
-        Returns
-        -------
-        Motion
-        """
+    def _motion(self, v) -> Motion:
+        """The swing of the configuration of the control values ``v`` from rest: ``y = (q, q̇, W)`` at any
+        time (kept per configuration)."""
         from planargeo.scenes.chain import chain_accelerations as forward_dynamics
 
         key = self._key(v)
@@ -351,7 +342,7 @@ class ArticulatedExplorer(ChainBodies, Explorer):
 
         n, lam = int(values["bodies n"]), float(values["λ = L/ρ"])
         t = float(values[TIME])
-        motion = self.motion(values)
+        motion = self._motion(values)
         y = motion.at(t)
         q, qd, W = y[:n], y[n:2 * n], float(y[2 * n])
         model_g = self._model(n, 1.0 / lam, float(values["g (m/s²)"]))
@@ -369,19 +360,9 @@ class ArticulatedExplorer(ChainBodies, Explorer):
         focus = self.values.get("focus", "all")
         return 0 if focus == "all" else min(int(focus.split()[1]), n) - 1
 
-    def view_box(self, st) -> tuple[float, float, float, float]:
-        """The view: the chain, the centres, the pole and the drawn conics on the left, the chart on the right.
-
-        Parameters
-        ----------
-        st : dict
-            A state from :meth:`compute`.
-
-        Returns
-        -------
-        tuple
-            ``(x0, x1, y0, y1)``.
-        """
+    def _view(self, st) -> tuple[float, float, float, float]:
+        """The view of the state ``st``: the chain, the centres, the pole and the drawn conics on the left,
+        the chart on the right."""
         v = self.values
         n = st["n"]
         pts = [st["joints"], st["centre"], st["centre_rigid"], [[v["pole x"], v["pole y"]]]]
@@ -399,7 +380,7 @@ class ArticulatedExplorer(ChainBodies, Explorer):
         v = self.values
         return articulated_picture(state, k=self._focus_k(state["n"]), focus_all=v.get("focus", "all") == "all",
                                    rigid=bool(v["rigid inertias"]), axes=bool(v["percussion axes"]),
-                                   view=view or self.view_box(state), size=self.figure_px)
+                                   view=view or self._view(state), size=self.figure_px)
 
     def readout_of(self, state):
         # The readout of the state ``state`` (the focused body's ``Aₖ``, its centre, the pole, the energies).

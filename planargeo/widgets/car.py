@@ -87,17 +87,11 @@ class CarExplorer(Explorer):
     ----------
     **kw
         :class:`~planargeo.widgets.base.Explorer` options and initial control values.
-
-    Raises
-    ------
-    InputError
-        An unknown control or a value it does not take.
     """
 
     title = "Car cornering: tyre forces by projective dynamics"
     slug = "car"
     figsize = (6.0, 5.6)
-    scale = 1.0
     units = {"speed V": "m/s", "heading θ": "°", "yaw rate ω": "rad/s", "yaw acceleration ω̇": "rad/s²",
              "rear tyre force μ₁": "N", "front tyre force μ₂": "N", "steering angle": "°",
              "lateral acceleration at G": "g", "acceleration of G": "m/s²", "friction limit μ·g": "m/s²", "kinetic energy K": "J",
@@ -254,7 +248,7 @@ class CarExplorer(Explorer):
         Parameters
         ----------
         st : dict
-            A state of :meth:`compute`.
+            The state, as :meth:`compute` gives it.
 
         Returns
         -------

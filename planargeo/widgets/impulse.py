@@ -86,19 +86,6 @@ def pole_text(tw, pole, rest: str = "at rest") -> str:
 
 class ImpulseExplorer(Explorer):
     """A body at rest struck by a blow: velocity pole, reaction impulse, apparent mass (thesis 5.4, 6.93).
-
-    Parameters
-    ----------
-    **kw
-        As for :class:`planargeo.widgets.base.Explorer` (``display``, ``figsize``,
-        ``export_dir`` and initial control values).
-
-    Raises
-    ------
-    InputError
-        An unknown control or a value it does not take.
-    PlanargeoError
-        Initial values that describe no state (e.g. ``J = 0``).
     """
 
     title = "Impulse and the centre of percussion: a bat or a door struck at rest"
@@ -106,7 +93,6 @@ class ImpulseExplorer(Explorer):
     figsize = (6.4, 4.6)
     limits = (-0.45, 1.2, -0.6, 0.6)
     display_controls = ("t",)
-    scale = 1.0
 
     def make_controls(self):
         # The controls: body, support, mass, the blow (point, angle, impulse) and the time after it.

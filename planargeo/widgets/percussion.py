@@ -109,7 +109,6 @@ class PercussionExplorer(Explorer):
     figsize = (6.0, 4.8)
     limits = (-0.9, 1.6, -0.9, 0.9)
     display_controls = ("angular accel. α",)
-    scale = 1.0
     units = {"pole x": "m", "pole y": "m", "mass m": "kg", "radius of gyration ρ": "m",
              "centre of mass": "m", "pole": "m", "d = |pole − c|": "m", "r = ρ²/d (5.68)": "m",
              "l = d + ρ²/d (5.67)": "m", "force for α: m d α (5.66)": "N",

@@ -73,12 +73,6 @@ def x_over_L_7_48(rho: float, L: float, phi: float) -> float:
 class SplittingExplorer(ChainBodies, Explorer):
     """A pinned chain split at a chosen joint: mobilities, accelerations of both halves, the split force.
 
-    Parameters
-    ----------
-    **kw
-        As for :class:`planargeo.widgets.base.Explorer` (``display``, ``figsize``, initial
-        control values by name).
-
     Examples
     --------
     Thesis example 7.5 (``ρ = L/2``, ``φ = 45°``): the couple turns body 2 about ``x = 1.2357 L``.
@@ -216,19 +210,9 @@ class SplittingExplorer(ChainBodies, Explorer):
         st.update(n=n, split=split, rho=rho, phi=phi, tau=tau)
         return st
 
-    def view_box(self, st) -> tuple[float, float, float, float]:
-        """The view: every joint and the split force's arrow; the poles at the split and the centre when near.
-
-        Parameters
-        ----------
-        st : dict
-            A state from :meth:`compute`.
-
-        Returns
-        -------
-        tuple
-            ``(x0, x1, y0, y1)``.
-        """
+    def _view(self, st) -> tuple[float, float, float, float]:
+        """The view of the state ``st``: every joint and the split force's arrow; the poles at the split and
+        the centre when near."""
         i = st["split"]
         pts = st["joints"]
         f = st["f_split"]
@@ -243,7 +227,7 @@ class SplittingExplorer(ChainBodies, Explorer):
     def scene_picture(self, state, view=None):
         # The state's picture, built natively (:func:`planargeo.draw.pictures.splitting.splitting_picture`).
         v = self.values
-        return splitting_picture(state, view=view or self.view_box(state), focus=v.get("focus", "all"),
+        return splitting_picture(state, view=view or self._view(state), focus=v.get("focus", "all"),
                                  centres=bool(v["mobility centres"]), size=self.figure_px)
 
     def readout_of(self, state):

@@ -96,19 +96,6 @@ def _reaction_units(R_col) -> tuple[str, str]:
 
 class SubspaceExplorer(Explorer):
     """Subspaces ``s, R, T, U`` of one joint and the splits of one force (thesis 6.1–6.4, 6.63–6.97).
-
-    Parameters
-    ----------
-    **kw
-        As for :class:`planargeo.widgets.base.Explorer` (``display``, ``figsize``,
-        ``export_dir`` and initial control values).
-
-    Raises
-    ------
-    InputError
-        An unknown control or a value it does not take.
-    PlanargeoError
-        Initial values that describe no state (e.g. ``F = 0``).
     """
 
     title = "Subspaces of a joint: s, R, T, U and the splits of a force (thesis 6.1–6.4)"
@@ -116,7 +103,6 @@ class SubspaceExplorer(Explorer):
     figsize = (6.4, 5.0)
     limits = (-1.5, 3.5, -2.0, 2.0)
     display_controls = ()   # "show" recomputes (cheap): the generic test flips display controls as sliders
-    scale = 1.0
 
     def make_controls(self):
         # The controls: joint kind and pose, body, force, what to show.

@@ -38,6 +38,7 @@ from planargeo.errors import InputError, PlanargeoError
 from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_reactions,
                                     tree_solve)
 from planargeo.simulate.integrate import energy
+from planargeo.widgets._explorer import SceneTime
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 from planargeo.widgets.slider_crank import time_text, time_value
 
@@ -61,20 +62,13 @@ CHECKPOINT = 0.05
 T_END = 60.0
 
 
-class TreeExplorer(Explorer):
+class TreeExplorer(SceneTime, Explorer):
     """The tree of Fig 9.1 and the constrained tree of Fig 9.2 with every pin and contact force, and Play.
 
     Parameters
     ----------
     **kw
         Passed to :class:`~planargeo.widgets.base.Explorer`.
-
-    Raises
-    ------
-    InputError
-        An unknown control or a bad initial value.
-    PlanargeoError
-        The initial values describe a pose whose loops cannot close.
 
     Examples
     --------
@@ -89,7 +83,7 @@ class TreeExplorer(Explorer):
     figsize = (5.6, 5.6)
     limits = (-4.3, 4.3, -4.3, 4.3)
     display_controls = ("velocity poles", "acceleration poles", "reaction forces")
-    scale = 1.0
+    initial, t_end = INITIAL, T_END
     units = {"t": "s", "speed": "rad/s", "degrees of freedom": "—", "condition number": "—",
              "energy E": "J", "energy drift ΔE/E₀": "—", "closure drift |φ|": "m", "q̈₁ (body 1)": "rad/s²",
              "largest |q̈ᵢ|": "rad/s²", "largest pin force": "N", "singular poses": "—", "focus": "—"}
@@ -206,19 +200,7 @@ class TreeExplorer(Explorer):
             return np.zeros((0, 2))
         return np.vstack([self.state["sol"].data.pose[:, :2], self.state["tips"]])
 
-    # ------------------------------------------------------------------- Play
-    def adjust(self, values, changed):
-        # A change of the initial state starts the time again (``t = 0``), unless ``t`` is set with it.
-        if set(changed) & set(INITIAL) and "t (s)" not in changed and values["t (s)"] != "0":
-            return {"t (s)": "0"}
-        return {}
-
-    def play_step(self, values, dt):
-        # One Play frame: the scene time advances by ``dt`` (the integration runs in :meth:`compute`).
-        # Returns The next time, None at the end of the time slider.
-        t = time_value(values["t (s)"], T_END) + float(dt)
-        return None if t > T_END + 1e-9 else {"t (s)": time_text(t)}
-
+    # ------------------------------------------------------------------- Play (SceneTime: t from 0 to T_END)
     def _run_state(self, model, run: dict, t: float):
         """``(q, qd, drift, events)`` at scene time ``t`` of ``run`` (its checkpoints extended in place).
 
