@@ -2,34 +2,58 @@
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.patches import Rectangle
 
 from planargeo.algorithms.articulated_inertia import articulated_inertia
 from planargeo.algorithms.articulated_mobility import articulated_mobility
 from planargeo.algorithms.chain_splitting import mobility_split
-from planargeo.mechanics.kinematics import kinematics
-from planargeo.geometry.projective import to_xy
-from planargeo.scenes import build as build_scene
-from planargeo.draw.artists import plot_conic, plot_line, plot_point
 from planargeo.draw.charts import plot_curves, polar_curves
-from planargeo.draw.constructions import draw_dimension, label
-from planargeo.draw.mechanism import draw_model
+from planargeo.draw.geometry import conic_geometry
+from planargeo.draw.layout import shape_points
+from planargeo.draw.picture import PX_PER_PT
+from planargeo.draw.pictures._words import num
+from planargeo.draw.pictures.common import label_toward
+from planargeo.draw.pictures.kit import force
+from planargeo.draw.sketch import dimension, label, model, model_shapes, panel, segment, show
 from planargeo.draw.style import COLORS, LABEL_PT
-from planargeo.draw.layout import fit_panel, fit_view, shape_points
 from planargeo.gallery.figures import chain, register, scene_state
+from planargeo.geometry.projective import to_xy
+from planargeo.mechanics.kinematics import kinematics
+from planargeo.scenes import build as build_scene
 
 #: The joint angles of the four-link chains of Figs 7.1, 7.2 and 7.11.
 Q4 = np.array([0.3, 0.5, -0.6, 0.7])
 
 
-def _chain4(ax, q, base="revolute"):
-    """The four-link chain of Figs 7.1, 7.2 and 7.11 drawn at rest at ``q``.
+def _conic_xy(C, n: int = 48) -> np.ndarray:
+    """Points of the conic ``C`` as the picture draws it (an inertia by its circle of gyration), to fit a view."""
+    A = conic_geometry(C)["affine"]
+    t = np.linspace(0.0, 2 * np.pi, n, endpoint=False)
+    return (A @ np.vstack([np.cos(t), np.sin(t), np.ones(n)]))[:2].T
 
-    Returns the model, its kinematics and the outline points of the drawn bodies.
+
+def _conic_label(pic, id, xy, text, toward, *, desc, gap=4.0):
+    """Label a conic (drawn from the points ``xy``) at its point farthest in the direction ``toward``, outside it."""
+    u = np.asarray(toward, float) / np.hypot(*toward)
+    at = xy[np.argmax(xy @ u)]
+    ha = "left" if u[0] > 0.3 else "right" if u[0] < -0.3 else "center"
+    va = "bottom" if u[1] > 0.3 else "top" if u[1] < -0.3 else "center"
+    label(pic, id, at, text, offset=(gap * u[0], gap * u[1]), ha=ha, va=va, symbol=text, desc=desc)
+
+
+def _chain4(q, base="revolute"):
+    """The four-link chain of Figs 7.1, 7.2 and 7.11 at rest at ``q``.
+
+    Returns the model, its kinematics and the outline points of its bodies as drawn.
     """
     m = chain(4, base=base)
     d = kinematics(m, q, np.zeros(m.nq))
-    arts = draw_model(m, d, ax, show_com=False)
-    return m, d, shape_points(*arts["shapes"])
+    return m, d, shape_points(*model_shapes(m, d))
+
+
+def _xy(p) -> str:
+    x, y = to_xy(p)
+    return f"({x:.3g}, {y:.3g}) m"
 
 
 @register(7.01, height=2.6)
@@ -38,19 +62,25 @@ def fig7_1(ax):
     force f_i at joint i accelerates body i by a_i = A_i⁻¹ f_i (at rest), including the bodies
     beyond; A₂ drawn as its (sign-flipped) conic about the effective centre."""
     q = np.concatenate([[0.0, 0.0, 0.2], Q4[1:]])
-    m, d, outline = _chain4(ax, q, base="plane")
+    m, d, outline = _chain4(q, base="plane")
     i = 1
     A = articulated_inertia(m, q).A[i]
-    plot_conic(A, ax, role="inertia", text="$A_2$", text_offset=(-26, 10))
-    plot_conic(d.I[i], ax, role="inertia", color=COLORS["construct"], mark_center=False)
     o = d.origin[i]
     f = np.array([1.0, 0.0, -o[1]])                 # a unit force along +x through joint 2 (4.27)
     a = np.linalg.solve(A, f)
-    plot_line(f, ax, role="reaction", scale=0.6, anchor=o - [0.5, 0.0], text="$f_2$",
-              text_offset=(-4, -16))
-    plot_point(a, ax, role="accel", text="$a_2 = A_2^{-1}f_2$", glyph_scale=2.0,
-               text_offset=(10, 10))
-    fit_panel([*outline, to_xy(a), o - [1.0, 0.0]], margin=0.06, ax=ax)
+    pic = panel(ax, [*outline, to_xy(a), o - [1.0, 0.0]], margin=0.06, fit_height=True)
+    model(pic, m, d, show_com=False)
+    pic.conic("I2", d.I[i], role="inertia", color=COLORS["construct"], mark_center=False, label="",
+              symbol="I₂", desc="inertia I₂ of body 2 alone (5.64), as its circle of gyration")
+    desc = "articulated inertia A₂ of bodies 2–4, free-floating (7.1–7.8): its sign-flipped conic about the " \
+           "effective centre"
+    pic.conic("A2", A, role="inertia", symbol="A₂", label="", desc=desc)
+    _conic_label(pic, "A2:label", _conic_xy(A), "A₂", (-1.0, 1.0), desc=desc)
+    force(pic, "f2", f, scale=0.6, anchor=o - [0.5, 0.0], symbol="f₂",
+          desc=f"the internal force f₂ at joint 2 (7.1): 1 N along +x through {tuple(np.round(o, 3))} m")
+    pic.point("a2", a, role="accel", symbol="a₂", label="a₂ = A₂⁻¹f₂", glyph_scale=2.0,
+              desc=f"acceleration pole a₂ = A₂⁻¹f₂ of body 2 (7.8): at {_xy(a)}, rate {a[2]:.3g} rad/s²")
+    show(pic, ax)
 
 
 @register(7.02, height=2.6)
@@ -58,16 +88,22 @@ def fig7_2(ax):
     """Fig. 7.2 — articulated mobility Λ_i⁻¹ of a constrained chain (7.28–7.38, corrected sign of
     7.38a, see docs/errata.md): the load −f_{i+1} on body i accelerates it by a_i = −Λ_i⁻¹ f_{i+1}
     (at rest), including the bodies before it."""
-    m, d, outline = _chain4(ax, Q4)
+    m, d, outline = _chain4(Q4)
     i = 1
     o = d.origin[i + 1]
     f_next = np.array([-1.0, 0.0, o[1]])   # f_3: a unit force along -x through joint 3 (4.27)
     a = -articulated_mobility(m, Q4).Lambda_inv[i] @ f_next
+    pic = panel(ax, [*outline, to_xy(a), d.origin[0] - [0.0, 0.15]], margin=0.06, fit_height=True)
+    model(pic, m, d, show_com=False)
+    force(pic, "-f3", -f_next, scale=0.35, anchor=o, start=True, symbol="−f₃", label="",
+          desc="the load −f₃ on body 2 from body 3 (7.28): 1 N along +x through joint 3")
     # the label above-left of joint 3 (free of links 2 and 3), not on link 3 at the arrow's tip
-    plot_line(-f_next, ax, role="reaction", scale=0.6, anchor=o, text="$-f_3$", text_at="anchor",
-              text_offset=(-10, 4)).set_text_alignment("right", "bottom")
-    plot_point(a, ax, role="accel", text="$a_2 = -\\Lambda_2^{-1}f_3$")
-    fit_panel([*outline, to_xy(a), d.origin[0] - [0.0, 0.15]], margin=0.06, ax=ax)
+    label(pic, "-f3:label", o, "−f₃", offset=(-10, 4), ha="right", color=COLORS["reaction"], symbol="−f₃",
+          desc="the load −f₃ on body 2 (7.28)")
+    pic.point("a2", a, role="accel", symbol="a₂", label="a₂ = −Λ₂⁻¹f₃",
+              desc=f"acceleration pole a₂ = −Λ₂⁻¹f₃ of body 2 (7.38, corrected): at {_xy(a)}, "
+                   f"rate {a[2]:.3g} rad/s²")
+    show(pic, ax)
 
 
 @register(7.03, height=2.9, ncols=2, gridspec_kw={"width_ratios": [2.3, 1.0]})
@@ -75,41 +111,56 @@ def fig7_3(axs):
     """Fig. 7.3 — two identical bodies at angle φ pushed by a horizontal force f₁ at CJ₁ (scene
     'two-body', 7.9–7.24): the articulated inertia A₁ (black) from the bodies' inertias (grey);
     a₁ = A₁⁻¹f₁ is the acceleration pole of body 1 (below CJ₁); m_x = {A₁}₁₁ (7.12)."""
-    from matplotlib.patches import Rectangle
-
     res, d = scene_state("two-body")
     A1 = np.array(res.quantities["A1"])
     f1 = np.array([1.0, 0.0, 0.0])                  # unit horizontal force through CJ₁ (4.27)
     a1 = np.linalg.solve(A1, f1)
     ax1 = to_xy(a1)
+    outline = shape_points(*model_shapes(res.model, d))
+    A1_xy = _conic_xy(A1)
     # left: the bodies, their inertias and A₁ in detail; right: the same scene with the pole a₁
     for k, ax in enumerate(axs):
         detail = k == 0
-        arts = draw_model(res.model, d, ax, ground=False, labels=False, show_com=detail)
-        cs = [plot_conic(d.I[j], ax, role="inertia", color=COLORS["construct"], mark_center=False)
-              for j in range(2)] if detail else []
-        cs.append(plot_conic(A1, ax, role="inertia", mark_center=detail))
-        plot_line(f1, ax, scale=0.6 if detail else None, anchor=[-0.35, 0.0],
-                  text="$f_1$" if detail else None, text_offset=(-20, 4))
-        plot_line([0.0, 1.0, 0.0], ax, role="construct", scale=None)    # x = 0 through CJ₁
-        P = np.vstack([shape_points(*arts["shapes"]), *[c.get_xy() for c in cs]])
         if detail:
-            label([0, 0], "$CJ_1$", offset=(-22, -14), fontsize=LABEL_PT, ax=ax)
-            # A₁'s label outside every circle: at its lower-right point (the bodies' grey
-            # circles lie left and above), pushed outward
-            xy = cs[-1].get_xy()
-            label(xy[np.argmax(xy[:, 0] - xy[:, 1])], "$A_1$", offset=(2, -2), ha="left",
-                  va="top", ax=ax)
-            ax.text(0.98, 0.02, f"φ = {np.rad2deg(res.params['phi']):.0f}°, "
-                    f"λ = {res.quantities['lam']:g}:\n$m_x/m$ = {res.quantities['mx_over_m']:.3f}",
-                    transform=ax.transAxes, fontsize=LABEL_PT, ha="right")
-            fit_view(np.vstack([P, P.min(axis=0) - [0.3, 0.7]]), margin=0.03, ax=ax)
+            P = np.vstack([outline, A1_xy, *[_conic_xy(d.I[j]) for j in range(2)]])
+            pic = panel(ax, np.vstack([P, P.min(axis=0) - [0.3, 0.7]]), margin=0.03)
         else:
-            plot_point(a1, ax, role="accel", text=f"$a_1$\n({ax1[0]:.2f}, {ax1[1]:.2f})",
-                       text_offset=(6, 4))
-            fit_view(np.vstack([P, ax1, ax1 + [1.6, -0.3]]), margin=0.03, ax=ax)
-            ax.add_patch(Rectangle((0, 0), 1, 1, transform=ax.transAxes, fill=False, ec="#bbbbbb",
-                                   lw=0.6))
+            pic = panel(ax, np.vstack([outline, A1_xy, ax1, ax1 + [1.6, -0.3]]), margin=0.03)
+        model(pic, res.model, d, ground=False, labels=False, show_com=detail)
+        if detail:
+            for j in range(2):
+                pic.conic(f"I{j + 1}", d.I[j], role="inertia", color=COLORS["construct"], mark_center=False,
+                          label="", symbol=f"I{'₁₂'[j]}", desc=f"inertia of body {j + 1} alone (5.64)")
+        pic.conic("A1", A1, role="inertia", mark_center=detail, label="", symbol="A₁",
+                  desc=f"articulated inertia A₁ of the two bodies at CJ₁ (7.9–7.24): mₓ/m = {{A₁}}₁₁/m = "
+                       f"{res.quantities['mx_over_m']:.3f}")
+        pic.line("x = 0", [0.0, 1.0, 0.0], role="construct", arrow=False, label="", symbol="x = 0",
+                 desc="the vertical x = 0 through CJ₁")
+        if detail:
+            force(pic, "f1", f1, scale=0.6, anchor=[-0.35, 0.0], role="wrench", symbol="f₁", label="",
+                  desc="the force f₁: 1 N horizontal through CJ₁ (7.9)")
+            label(pic, "f1:label", [-0.35, 0.0], "f₁", offset=(-20, 4), color=COLORS["wrench"], symbol="f₁",
+                  desc="the force f₁ (7.9)")
+            label(pic, "CJ1", [0, 0], "CJ₁", offset=(-22, -14), symbol="CJ₁", desc="the joint CJ₁ at the origin")
+            # A₁'s label outside every circle: at its lower-right point (the bodies' grey circles lie
+            # left and above), pushed outward
+            label(pic, "A1:label", A1_xy[np.argmax(A1_xy[:, 0] - A1_xy[:, 1])], "A₁", offset=(2, -2),
+                  va="top", symbol="A₁", desc="articulated inertia A₁ (7.9)")
+            x0, x1, y0, y1 = pic.box
+            at = (x1 - 0.02 * (x1 - x0), y0 + 0.02 * (y1 - y0))
+            pic.text("mx", at, f"mₓ/m = {res.quantities['mx_over_m']:.3f}", ha="right", symbol="mₓ/m",
+                     desc="the effective horizontal mass over the mass (7.12): {A₁}₁₁ / m")
+            pic.text("phi", at, f"φ = {np.rad2deg(res.params['phi']):.0f}°, λ = {res.quantities['lam']:g}:",
+                     ha="right", dy=16.0, symbol="φ, λ", desc="the scene's angle φ and size ratio λ = L/ρ")
+        else:
+            pic.line("f1", f1, role="wrench", arrow=False, label="", symbol="f₁",
+                     desc="the force f₁: 1 N horizontal through CJ₁ (7.9)")
+            pic.point("a1", a1, role="accel", symbol="a₁", label=f"a₁ ({num(ax1[0], 3)}, {num(ax1[1], 3)})",
+                      desc=f"acceleration pole a₁ = A₁⁻¹f₁ of body 1 (7.9): at {_xy(a1)}")
+            label_toward(pic.elements[-1], (1.0, 0.6), 8.0)
+        show(pic, ax)
+        if not detail:
+            ax.add_patch(Rectangle((0, 0), 1, 1, transform=ax.transAxes, fill=False, ec="#bbbbbb", lw=0.6))
 
 
 @register(7.04, height=2.4, margins=(0.16, 0.97, 0.18, 0.95))
@@ -135,20 +186,28 @@ def fig7_5(ax):
     marked for n = 1…4 (λ = 2 here)."""
     lam = 2.0
     res, d = scene_state("horizontal-chain", n=4, lam=lam)
-    draw_model(res.model, d, ax, show_com=True, ground=False, labels=False)
-    plot_conic(np.array(res.quantities["A1"]), ax, role="inertia", text="$A_1$ (n=4)",
-               text_offset=(4, 10))
+    pic = panel(ax, [[-0.3, -1.1], [4.2, 0.7]], margin=0.02)
+    model(pic, res.model, d, show_com=True, ground=False, labels=False)
+    A1 = np.array(res.quantities["A1"])
+    desc = "articulated inertia A₁ of the first body with 4 bodies (7.25–7.27), about its effective centre"
+    pic.conic("A1", A1, role="inertia", symbol="A₁", label="", desc=desc)
+    _conic_label(pic, "A1:label", _conic_xy(A1), "A₁ (n = 4)", (0.0, 1.0), desc=desc)
     groups = {}
     for n in range(1, 5):
         dn = build_scene("horizontal-chain", n=n, lam=lam).quantities["d_over_L"]
         key = next((k for k in groups if np.isclose(k, dn, rtol=1e-9)), dn)
         groups.setdefault(key, []).append(n)
-    for k, (dn, ns) in enumerate(sorted(groups.items())):
-        y = -0.5 - 0.2 * k
-        ax.plot([dn, dn], [y, -0.3], color=COLORS["accel"], lw=0.8)
-        label([dn, y], f"$d_1$ = {dn:.3f} L (n = {', '.join(map(str, ns))})", offset=(2, -2),
-              fontsize=LABEL_PT, va="top", color=COLORS["accel"], ax=ax)
-    fit_view([[-0.3, -1.1], [4.2, 0.7]], margin=0.02, ax=ax)
+    marks = sorted(groups.items())
+    for k, (dn, ns) in enumerate(marks):
+        # the leftmost mark reaches lowest, so that each text runs right under the marks beyond it
+        y = -0.5 - 0.2 * (len(marks) - 1 - k)
+        text = f"d₁ = {dn:.3f} L (n = {', '.join(map(str, ns))})"
+        segment(pic, f"d1 {k + 1}", [dn, y], [dn, -0.3], role="accel", color=COLORS["accel"], dash=[],
+                width=0.8 * PX_PER_PT, symbol="d₁",
+                desc=f"effective centre d₁ of the first body (7.27): {dn:.3f} L for n = {', '.join(map(str, ns))}")
+        label(pic, f"d1 {k + 1}:label", [dn, y], text, offset=(2, -2), va="top", color=COLORS["accel"],
+              symbol="d₁", desc=f"effective centre d₁ (7.27): {text}")
+    show(pic, ax)
 
 
 #: The margins of the λ charts, Figs 7.6-7.8.
@@ -193,14 +252,26 @@ def fig7_9(ax):
     the ground, a pure couple f₃ (line at infinity) on body 2; its acceleration pole a₂ lies on the
     x axis at x/L = 1 + 2η²cosφ/(4 + 5η²) (corrected 7.38a)."""
     res, d = scene_state("mobility-example")
-    draw_model(res.model, d, ax)
     a2 = np.array(res.quantities["a2"])
-    plot_line(-np.array(res.quantities["f3"]), ax, text="$-f_3$ (couple on body 2)",
-              corner="upper left")
-    plot_point(a2, ax, role="accel", text="$a_2$")
     x = to_xy(a2)
-    draw_dimension([0, -0.35], [x[0], -0.35], f"$x$ = {res.quantities['x_over_L']:.3f} L", ax=ax)
-    fit_view([*d.origin, d.com[1] * 2 - d.origin[1], x, [0, -0.5]], margin=0.12, ax=ax)
+    pic = panel(ax, [*d.origin, d.com[1] * 2 - d.origin[1], x, [0, -0.5]], margin=0.12)
+    model(pic, res.model, d)
+    f3 = np.array(res.quantities["f3"])
+    # a pure couple (the line at infinity): its glyph in the upper left corner, clear of body 2
+    x0, x1, y0, y1 = pic.box
+    gx, gy = x0 + 26 / pic.kx, y1 - 26 / pic.ky
+    segment(pic, "-f3", [gx, gy], [gx, gy], role="wrench", symbol="−f₃",
+            desc=f"the load −f₃ on body 2: a pure couple of {-f3[2]:.3g} N·m (the line at infinity, 4.27)")
+    pic.elements[-1]["parts"] = [
+        {"p": "glyph", "x": float(gx), "y": float(gy), "r": 12.0, "ccw": bool(-f3[2] > 0)},
+        {"p": "text", "x": float(gx), "y": float(gy), "dx": 18.0, "dy": 0.0, "ha": "left", "va": "center",
+         "text": "−f₃: couple on body 2 (line at ∞)"}]
+    pic.point("a2", a2, role="accel", symbol="a₂",
+              desc=f"acceleration pole a₂ of body 2 (7.40–7.49): at {_xy(a2)}, on the x axis")
+    xl = res.quantities["x_over_L"]
+    dimension(pic, "x", [0, -0.35], [x[0], -0.35], f"x = {xl:.3f} L",
+              desc=f"where a₂ lies on the x axis (7.47, corrected 7.38a): x/L = {xl:.3f}")
+    show(pic, ax)
 
 
 @register(7.1, height=3.0, polar=[0.1, 0.1, 0.66, 0.8])
@@ -223,7 +294,7 @@ def fig7_11(ax):
     a₂ = b₂ − Λ₂⁻¹f₃ and a₃ = A₃⁻¹(f₃ − d₃) (here at rest without gravity, b₂ = 0). Computed with
     listings 7.1.1 and 7.4.1 as corrected for applied loads (docs/errata.md, chapter 7 items 2 and
     3)."""
-    m, d, outline = _chain4(ax, Q4)
+    m, d, outline = _chain4(Q4)
     z = np.zeros(4)
     F = np.zeros((4, 3))
     tip = d.origin[3] + 1.0 * np.array([np.cos(d.pose[3, 2]), np.sin(d.pose[3, 2])])
@@ -236,13 +307,21 @@ def fig7_11(ax):
     assert np.allclose(sol.a[1], r_mob.b[1] - r_mob.Lambda_inv[1] @ f3)
     assert np.allclose(r_in.A[2] @ sol.a[2], f3 - r_in.d[2])
     b2_zero = np.allclose(r_mob.b[1], 0.0)
-    A3 = plot_conic(r_in.A[2], ax, role="inertia", text="$A_3$", text_offset=(10, -30))
-    plot_line(F[3], ax, scale=0.5, anchor=tip, text="$F$", text_offset=(-14, -8))
-    plot_line(f3, ax, role="reaction", scale=0.5, anchor=d.origin[2], text="$f_3$",
-              text_offset=(-16, 4))
-    plot_point(sol.a[1], ax, role="accel",
-               text="$a_2 = -\\Lambda_2^{-1}f_3$" if b2_zero else "$a_2 = b_2 - \\Lambda_2^{-1}f_3$",
-               text_offset=(10, -12))
-    plot_point(sol.a[2], ax, role="accel", text="$a_3 = A_3^{-1}(f_3 - d_3)$", text_offset=(-40, 10))
-    fit_panel([*outline, *A3.get_xy(), tip, to_xy(sol.a[1]), to_xy(sol.a[2]),
-                   d.origin[0] - [0.0, 0.2]], margin=0.05, ax=ax)
+    A3 = r_in.A[2]
+    pic = panel(ax, [*outline, *_conic_xy(A3), tip, to_xy(sol.a[1]), to_xy(sol.a[2]),
+                     d.origin[0] - [0.0, 0.2]], margin=0.05, fit_height=True)
+    model(pic, m, d, show_com=False)
+    desc = "articulated inertia A₃ of the free-floating chain, bodies 3–4 (7.52–7.55)"
+    pic.conic("A3", A3, role="inertia", symbol="A₃", label="", desc=desc)
+    _conic_label(pic, "A3:label", _conic_xy(A3), "A₃", (0.0, -1.0), desc=desc)      # below A₃, off link 3
+    force(pic, "F", F[3], scale=0.5, anchor=tip, role="wrench", symbol="F",
+          desc="the external force F: 1 N downward through the tip of body 4")
+    force(pic, "f3", f3, scale=0.5, anchor=d.origin[2], symbol="f₃",
+          desc=f"the internal force f₃ at joint 3 from the split (7.56): {np.hypot(*f3[:2]):.3g} N")
+    a2_text = "a₂ = −Λ₂⁻¹f₃" if b2_zero else "a₂ = b₂ − Λ₂⁻¹f₃"
+    pic.point("a2", sol.a[1], role="accel", symbol="a₂", label=a2_text,
+              desc=f"acceleration pole of body 2, {a2_text} (7.53): at {_xy(sol.a[1])}")
+    label_toward(pic.elements[-1], (1.0, -0.8), 10.0)                             # right of it, below f₃
+    pic.point("a3", sol.a[2], role="accel", symbol="a₃", label="a₃ = A₃⁻¹(f₃ − d₃)",
+              desc=f"acceleration pole of body 3, a₃ = A₃⁻¹(f₃ − d₃) (7.55): at {_xy(sol.a[2])}")
+    show(pic, ax)
