@@ -52,8 +52,9 @@ def _chain4(q, base="revolute"):
 
 
 def _xy(p) -> str:
+    """Where the pole ``p`` lies, for a description (round-off read as 0)."""
     x, y = to_xy(p)
-    return f"({x:.3g}, {y:.3g}) m"
+    return f"({num(x, 3)}, {num(y, 3)}) m"
 
 
 @register(7.01, height=2.6)
@@ -77,7 +78,7 @@ def fig7_1(ax):
     pic.conic("A2", A, role="inertia", symbol="A₂", label="", desc=desc)
     _conic_label(pic, "A2:label", _conic_xy(A), "A₂", (-1.0, 1.0), desc=desc)
     force(pic, "f2", f, scale=0.6, anchor=o - [0.5, 0.0], symbol="f₂",
-          desc=f"the internal force f₂ at joint 2 (7.1): 1 N along +x through {tuple(np.round(o, 3))} m")
+          desc=f"the internal force f₂ at joint 2 (7.1): 1 N along +x through ({num(o[0], 3)}, {num(o[1], 3)}) m")
     pic.point("a2", a, role="accel", symbol="a₂", label="a₂ = A₂⁻¹f₂", glyph_scale=2.0,
               desc=f"acceleration pole a₂ = A₂⁻¹f₂ of body 2 (7.8): at {_xy(a)}, rate {a[2]:.3g} rad/s²")
     show(pic, ax)
@@ -270,7 +271,7 @@ def fig7_9(ax):
               desc=f"acceleration pole a₂ of body 2 (7.40–7.49): at {_xy(a2)}, on the x axis")
     xl = res.quantities["x_over_L"]
     dimension(pic, "x", [0, -0.35], [x[0], -0.35], f"x = {xl:.3f} L",
-              desc=f"where a₂ lies on the x axis (7.47, corrected 7.38a): x/L = {xl:.3f}")
+              desc=f"where a₂ lies on the x axis (7.47, corrected 7.38a): x/L = {xl:.3f}")["symbol"] = "x"
     show(pic, ax)
 
 
