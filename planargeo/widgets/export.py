@@ -86,33 +86,18 @@ class ExportMixin:
             The file cannot be written (no space, no permission, a folder or a
             device such as ``/dev/full``, which is never replaced).
         """
-        path = self._export_path(path, "svg")
-        self.last_export = atomic_write(path, self._svg_bytes()).resolve()
+        return self._write(self._export_path(path, "svg"), self._svg_bytes())
+
+    def _write(self, path: Path, data: bytes) -> Path:
+        """``data`` written to ``path`` atomically; the file is :attr:`last_export`."""
+        self.last_export = atomic_write(path, data).resolve()
         return self.last_export
 
     def export_png(self, path=None) -> Path:
-        """Write the current view to a PNG file (at the picture's size), atomically.
+        return self._write(self._export_path(path, "png"), self._png_bytes())
 
-        Parameters
-        ----------
-        path : str or os.PathLike, optional
-            The file; default ``planargeo-<slug>-<pid>-<n>.png`` in ``export_dir``.
-
-        Returns
-        -------
-        pathlib.Path
-            The file written (absolute).
-
-        Raises
-        ------
-        InputError
-            ``path`` names no file.
-        OutputError
-            The file cannot be written.
-        """
-        path = self._export_path(path, "png")
-        self.last_export = atomic_write(path, self._png_bytes()).resolve()
-        return self.last_export
+    export_png.__doc__ = (export_svg.__doc__.replace("an SVG file", "a PNG file (at the picture's size)")
+                          .replace(".svg", ".png"))
 
     def _frames_rgb(self, frames: int, fps: int | None = None) -> list[np.ndarray]:
         """RGB images of ``frames`` Play frames at ``fps`` in real time from the shown state (kept)."""
@@ -173,9 +158,7 @@ class ExportMixin:
             The file cannot be written, or MP4 without ffmpeg.
         """
         data = self._animation_bytes(format, frames, fps, allow_long)
-        path = self._export_path(path, format)
-        self.last_export = atomic_write(path, data).resolve()
-        return self.last_export
+        return self._write(self._export_path(path, format), data)
 
     def _animation_bytes(self, format: str, frames: int, fps: int, allow_long: bool = False) -> bytes:
         if format not in ("gif", "mp4"):

@@ -138,7 +138,7 @@ class HandleMixin:
         Returns
         -------
         Explorer
-            ``self``.
+            ``self``, dragged.
 
         Raises
         ------

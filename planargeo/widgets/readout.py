@@ -164,7 +164,7 @@ def value_text(x: Any, unit: Any = "", zero: float = 0.0, digits: int = 4) -> st
     Returns
     -------
     str
-        HTML-safe text.
+        HTML-safe text, the unit after numbers only.
 
     Examples
     --------

@@ -72,6 +72,7 @@ def where(p, unit: str = "m") -> str:
     ----------
     p : array_like (3,)
     unit : str
+        Unit of the coordinates.
 
     Returns
     -------

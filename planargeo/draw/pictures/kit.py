@@ -27,8 +27,10 @@ import numpy as np
 from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.style import COLORS
 
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
 __all__ = ["force", "ground", "scale_bar", "label_at", "aim_label", "side_label", "clearest", "seg_distance",
-           "foot_on_line", "nice_length", "num", "where", "rate"]
+           "foot_on_line", "nice_length", "where", "rate", "pole_overlays"]
 
 
 def foot_on_line(w, p) -> np.ndarray:
@@ -276,26 +278,10 @@ def side_label(pic: Picture, a, b, text: str, segs, *, gap: float = 5.0) -> None
 
 
 def num(x: float, digits: int = 3, tiny: float = 1e-9) -> str:
-    """``x`` with ``digits`` significant digits, round-off (``|x| < tiny``) as 0, as the readout shows it.
+    """:func:`planargeo.draw.pictures._words.num` with three digits by default: ``num(2.987e4, 4)`` is ``'2.987e+04'``."""
+    from planargeo.draw.pictures._words import num as words
 
-    Parameters
-    ----------
-    x : float
-    digits : int
-    tiny : float
-        Below this magnitude the number is round-off.
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> num(5.609e-15), num(-0.0), num(2.987e4, 4), num(1.5e-3)
-    ('0', '0', '2.987e+04', '0.0015')
-    """
-    x = float(x)
-    return "0" if abs(x) < tiny or x == 0.0 else f"{x:.{digits}g}"
+    return words(x, digits, tiny)
 
 
 def where(p, *, far: float = 1e6) -> str:
@@ -334,6 +320,7 @@ def rate(p, unit: str, *, far: float = 1e6) -> str:
     p : array_like (3,)
     unit : str
     far : float
+        As for :func:`where`.
 
     Returns
     -------
@@ -354,6 +341,7 @@ def nice_length(span: float) -> float:
     Parameters
     ----------
     span : float
+        The length (the view's width) a fifth of which is rounded.
 
     Returns
     -------
@@ -367,6 +355,32 @@ def nice_length(span: float) -> float:
     raw = span / 5.0
     mag = 10.0 ** math.floor(math.log10(raw))
     return max((m * mag for m in (1.0, 2.0, 5.0) if m * mag <= raw * 1.5), default=mag)
+
+
+def pole_overlays(pic: Picture, v, a, overlays: dict, bodies, scales=(3.0, 0.3)) -> None:
+    """The velocity poles (4.5) and acceleration poles (4.6) of the bodies, as ``overlays`` asks.
+
+    Parameters
+    ----------
+    pic : Picture
+    v, a : array_like (n, 3)
+        Velocity and acceleration twists of the bodies (their poles are drawn).
+    overlays : dict
+        ``{"velocity poles": shown, "acceleration poles": shown}``.
+    bodies : sequence of str
+        How each body is named in the descriptions (``"body 1"``, ``"of the crank"``).
+    scales : (float, float)
+        Glyph scales of the velocity and the acceleration poles.
+    """
+    for key, pts, flag, role, gs, meaning, eq, unit in (
+            ("v", v, "velocity poles", "twist", scales[0], "velocity pole", "4.5", "rad/s"),
+            ("a", a, "acceleration poles", "accel", scales[1], "acceleration pole", "4.6", "rad/s²")):
+        if overlays.get(flag):
+            pts = np.asarray(pts, float)
+            for i, body in enumerate(bodies):
+                sym = f"{key}{i + 1}".translate(_SUB)
+                pic.point(sym, pts[i], role=role, symbol=sym, glyph_scale=gs,
+                          desc=f"{meaning} ({eq}): {body}, {rate(pts[i], unit)}, {where(pts[i])}")
 
 
 def scale_bar(pic: Picture, unit: str = "m") -> float:

@@ -37,7 +37,7 @@ import numpy as np
 
 from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import PX_PER_PT, Picture
-from planargeo.draw.pictures.kit import clearest, force, ground, label_at, num, rate, scale_bar, side_label, where
+from planargeo.draw.pictures.kit import clearest, force, ground, label_at, num, pole_overlays, scale_bar, side_label
 from planargeo.draw.style import COLORS, OKABE_ITO
 
 __all__ = ["slider_crank_picture", "slider_crank_view", "CONTACT_COLOR", "REACTIONS", "FORCE_LENGTH"]
@@ -55,7 +55,6 @@ REACTIONS = (
 FORCE_LENGTH = 2.4
 #: half width of the slide (m)
 BORE = 0.35
-_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 _BODIES = ("crank", "rod", "piston")
 
 
@@ -160,16 +159,7 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
                          width=0.8 * PX_PER_PT, dash=[1.0, 2.0], z=8,
                          desc=f"lever arm of {sym} about its joint: {math.hypot(*(foot - x.point)):.3g} m "
                               f"(a couple the joint carries)")
-    for key, flag, role, scale, meaning, eq, unit in (
-            ("v", "velocity poles", "twist", 0.5, "velocity pole", "4.5", "rad/s"),
-            ("a", "acceleration poles", "accel", 0.05, "acceleration pole", "4.6", "rad/s²")):
-        if not overlays.get(flag):
-            continue
-        pts = np.asarray(v if key == "v" else a, float)
-        for i in range(3):
-            sym = f"{key}{i + 1}".translate(_SUB)
-            pic.point(sym, pts[i], role=role, symbol=sym, glyph_scale=scale,
-                      desc=f"{meaning} ({eq}): of the {_BODIES[i]}, {rate(pts[i], unit)}, {where(pts[i])}")
+    pole_overlays(pic, v, a, overlays, [f"of the {b}" for b in _BODIES[:3]], scales=(0.5, 0.05))
     scale_bar(pic)
     if banner:
         pic.text("banner", (x1, y1), banner, color="#7a3d00", ha="right", va="top", dx=-8.0, dy=-8.0,

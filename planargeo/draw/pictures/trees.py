@@ -32,7 +32,7 @@ import numpy as np
 
 from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import PX_PER_PT, Picture
-from planargeo.draw.pictures.kit import clearest, force, ground, num, rate, scale_bar, side_label, where
+from planargeo.draw.pictures.kit import clearest, force, ground, num, pole_overlays, scale_bar, side_label
 from planargeo.draw.pictures.slider_crank import CONTACT_COLOR
 from planargeo.draw.style import COLORS
 
@@ -53,6 +53,7 @@ def symbol_of(sym: str) -> str:
     Parameters
     ----------
     sym : str
+        A reaction's symbol as the scene writes it.
 
     Returns
     -------
@@ -135,15 +136,6 @@ def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, f
                   symbol=sym, color=color, desc=f"{meaning} ({eq}): {at}, |{sym}| = {num(F, 4, tiny)} N{moment}", reach=0.45,
                   dash=[4.0, 3.0], width=(2.4 if focus == sym else 1.0) * PX_PER_PT, z=9 if focus == sym else 8,
                   label=None if on else "", opacity=1.0 if on else FADED, label_xy=head)
-    for key, flag, role, gs, meaning, eq, unit in (
-            ("v", "velocity poles", "twist", 3.0, "velocity pole", "4.5", "rad/s"),
-            ("a", "acceleration poles", "accel", 0.3, "acceleration pole", "4.6", "rad/s²")):
-        if not overlays.get(flag):
-            continue
-        pts = np.asarray(v if key == "v" else a, float)
-        for i in range(n):
-            sym = f"{key}{i + 1}".translate(_SUB)
-            pic.point(sym, pts[i], role=role, symbol=sym, glyph_scale=gs,
-                      desc=f"{meaning} ({eq}): body {i + 1}, {rate(pts[i], unit)}, {where(pts[i])}")
+    pole_overlays(pic, v, a, overlays, [f"body {i + 1}" for i in range(n)])
     scale_bar(pic)
     return pic
