@@ -147,7 +147,7 @@ class ExportMixin:
         Returns
         -------
         pathlib.Path
-            The file written (absolute).
+            The animation written (absolute).
 
         Raises
         ------

@@ -71,6 +71,7 @@ def where(p, unit: str = "m") -> str:
     Parameters
     ----------
     p : array_like (3,)
+        The point (zero: none).
     unit : str
         Unit of the coordinates.
 

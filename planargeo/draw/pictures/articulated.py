@@ -152,21 +152,17 @@ def articulated_picture(st: dict, *, k: int, focus_all: bool, rigid: bool, axes:
     for i in range(n):
         bold = focus_all or i == k
         sub = _sub(i + 1)
-        if rigid:
-            c = np.asarray(st["centre_rigid"][i], float)
-            pic.conic(f"I{i + 1}", st["I"][i], role="inertia", color=_RIGID, symbol=f"I{sub}",
-                      label=f"I{sub}" if i == k else "",
-                      desc=f"rigid inertia of body {i + 1}, a conic about its centre of mass (10.2.3): "
-                           f"centre at {pair(c)} m")
-            if not bold:
-                pic.elements[-1]["opacity"] = 0.25
-        c = np.asarray(st["centre"][i], float)
-        pic.conic(f"A{i + 1}", st["A"][i], role="inertia", color=_ART, symbol=f"A{sub}",
-                  label=f"A{sub}" if i == k else "",
-                  desc=f"articulated inertia of body {i + 1} with the bodies outboard of it (7.7a), a conic: "
-                       f"effective centre at {pair(c)} m")
-        if not bold:
-            pic.elements[-1]["opacity"] = 0.3
+        for name, centre, color, faded, what in (
+                ("I", "centre_rigid", _RIGID, 0.25, "rigid inertia of body {i}, a conic about its centre of mass "
+                                                    "(10.2.3): centre"),
+                ("A", "centre", _ART, 0.3, "articulated inertia of body {i} with the bodies outboard of it (7.7a), "
+                                          "a conic: effective centre")):
+            if name == "A" or rigid:
+                pic.conic(f"{name}{i + 1}", st[name][i], role="inertia", color=color, symbol=f"{name}{sub}",
+                          label=f"{name}{sub}" if i == k else "",
+                          desc=f"{what.format(i=i + 1)} at {pair(np.asarray(st[centre][i], float))} m")
+                if not bold:
+                    pic.elements[-1]["opacity"] = faded
     a = np.asarray(st["pole"], float)
     pic.point("a", a, role="accel", glyph=False, size=8.0, symbol="a",
               desc=f"the acceleration pole a of body {k + 1} (4.6): {where(a)}")
