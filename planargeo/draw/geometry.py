@@ -16,6 +16,8 @@ numbers (:mod:`planargeo.draw.picture`).
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from planargeo._validate import as_array, as_vec3
@@ -44,7 +46,9 @@ def _mat(x, name: str) -> np.ndarray:
     m = as_array(x, name, (3, 3)).copy()
     if m.ndim != 2:
         raise InputError(f"{name} must be a single (3, 3) matrix, got shape {m.shape}")
-    if not np.allclose(m, m.T, rtol=1e-10, atol=1e-12 * max(1.0, float(np.abs(m).max()))):
+    mt = m.T
+    # np.allclose(m, m.T, rtol=1e-10, atol=…) on finite numbers (as_array checked them), cheaper
+    if not (np.abs(m - mt) <= 1e-12 * max(1.0, float(np.abs(m).max())) + 1e-10 * np.abs(mt)).all():
         raise InputError(f"{name} must be symmetric")
     return 0.5 * (m + m.T)
 
@@ -110,22 +114,23 @@ def clip_line(line, box) -> np.ndarray | None:
     fx, fy, tz = fx / sc, fy / sc, tz / sc  # homogeneous rescaling: same line
     F2 = fx * fx + fy * fy
     x0, x1, y0, y1 = (float(v) for v in box)
-    p = np.array([fy * tz, -fx * tz]) / F2  # foot of the perpendicular from the origin
-    d = np.array([fx, fy]) / np.sqrt(F2)
-    tlo, thi = -np.inf, np.inf
-    for k, (lo, hi) in enumerate(((x0, x1), (y0, y1))):
-        if d[k] == 0.0:
-            if p[k] < lo or p[k] > hi:
+    # plain floats (the same IEEE operations as on arrays: a clipped line costs microseconds)
+    p0, p1 = fy * tz / F2, -fx * tz / F2  # foot of the perpendicular from the origin
+    n = math.sqrt(F2)
+    d0, d1 = fx / n, fy / n
+    tlo, thi = -math.inf, math.inf
+    for pk, dk, lo, hi in ((p0, d0, x0, x1), (p1, d1, y0, y1)):
+        if dk == 0.0:
+            if pk < lo or pk > hi:
                 return None
             continue
-        with np.errstate(over="ignore"):  # a subnormal component: the slab is unbounded
-            a, b = (lo - p[k]) / d[k], (hi - p[k]) / d[k]
+        a, b = (lo - pk) / dk, (hi - pk) / dk   # a subnormal component: the slab is unbounded (inf)
         if a > b:
             a, b = b, a
         tlo, thi = max(tlo, a), min(thi, b)
     if not tlo <= thi:
         return None
-    out = np.array([p + tlo * d, p + thi * d])
+    out = [[p0 + tlo * d0, p1 + tlo * d1], [p0 + thi * d0, p1 + thi * d1]]
     # snap the coordinate that hit the boundary exactly onto it
     for q in out:
         for k, (lo, hi) in enumerate(((x0, x1), (y0, y1))):
@@ -133,7 +138,7 @@ def clip_line(line, box) -> np.ndarray | None:
                 q[k] = lo
             elif abs(q[k] - hi) <= 1e-12 * max(1.0, abs(hi)):
                 q[k] = hi
-    return out
+    return np.array(out)
 
 
 def _unit_curves() -> dict[str, list[np.ndarray]]:

@@ -702,53 +702,69 @@ class Picture:
         pw, ph = self.size[0] - ml - mr, self.size[1] - mt - mb
         h = 1.25 * FONT_PX
         rows: dict[int, list[tuple[float, float, float, float]]] = {}   # boxes by row of one label height
+        get = rows.get
         bx0, by0, kx, ky = self.box[0], self.box[2], self.kx, self.ky
+        em = _CHAR_EM * FONT_PX
 
-        def free(x0, y0, x1, y1) -> bool:
+        def reserve(x0, y0, x1, y1) -> None:
+            box = (x0, y0, x1, y1)
             for j in range(int(y0 // h), int(y1 // h) + 1):
-                for px0, py0, px1, py1 in rows.get(j, ()):
-                    if x0 < px1 and px0 < x1 and y0 < py1 and py0 < y1:
-                        return False
-            return True
-
-        def reserve(box) -> None:
-            for j in range(int(box[1] // h), int(box[3] // h) + 1):
-                rows.setdefault(j, []).append(box)
+                row = get(j)
+                if row is None:
+                    rows[j] = [box]
+                else:
+                    row.append(box)
 
         # texts written at a fixed place (a key's rows, a scale bar's length, a message) come
         # first: the labels placed after them keep clear of them
         for el in self.elements:
             for part in el["parts"]:
                 if part["p"] == "text" and part.get("fixed") and part["text"] and not part.get("over"):
-                    w = _CHAR_EM * FONT_PX * len(part["text"])
+                    w = em * len(part["text"])
                     x0 = (part["x"] - bx0) * kx + part["dx"] - _ALIGN_X[part["ha"]] * w
                     y0 = (part["y"] - by0) * ky + part["dy"] - _ALIGN_Y[part["va"]] * h
-                    reserve((x0, y0, x0 + w, y0 + h))
+                    reserve(x0, y0, x0 + w, y0 + h)
 
         for el in sorted(self.elements, key=lambda e: -e["z"]):
             for part in el["parts"]:
                 if part["p"] != "text" or part.get("fixed") or not part["text"]:
                     continue
-                w = _CHAR_EM * FONT_PX * len(part["text"])
+                w = em * len(part["text"])
                 qx = (part["x"] - bx0) * kx
                 qy = (part["y"] - by0) * ky
-                r = max(math.hypot(part["dx"], part["dy"]), 6.0)
-                spots = [(part["dx"], part["dy"], _ALIGN_X[part["ha"]], _ALIGN_Y[part["va"]])]
-                spots += [(r * c, r * s_, fx, fy) for c, s_, fx, fy in _SPOTS]
-                for k, (dx, dy, fx, fy) in enumerate(spots):
+                dx, dy = part["dx"], part["dy"]
+                r = max(math.hypot(dx, dy), 6.0)
+                fx, fy = _ALIGN_X[part["ha"]], _ALIGN_Y[part["va"]]
+                k = 0
+                while True:    # the asked spot, then the eight around the anchor
+                    if k:
+                        c, s_, fx, fy = _SPOTS[k - 1]
+                        dx, dy = r * c, r * s_
                     x0 = qx + dx - fx * w
                     y0 = qy + dy - fy * h
                     x1, y1 = x0 + w, y0 + h
-                    if x0 >= 0.0 and y0 >= 0.0 and x1 <= pw and y1 <= ph and free(x0, y0, x1, y1):
+                    if x0 >= 0.0 and y0 >= 0.0 and x1 <= pw and y1 <= ph:
+                        free = True        # no placed box in the rows this one covers meets it
+                        for j in range(int(y0 // h), int(y1 // h) + 1):
+                            for px0, py0, px1, py1 in get(j, ()):
+                                if x0 < px1 and px0 < x1 and y0 < py1 and py0 < y1:
+                                    free = False
+                                    break
+                            if not free:
+                                break
+                        if free:
+                            break
+                    k += 1
+                    if k > 8:
                         break
-                else:          # no free place: the label hides (the element keeps its hover text)
+                if k > 8:      # no free place: the label hides (the element keeps its hover text)
                     part["hidden"] = True
                     continue
                 if k:
                     part["dx"], part["dy"] = round(float(dx), 2), round(float(dy), 2)
                     part["ha"], part["va"] = _SPOT_HA[k - 1], _SPOT_VA[k - 1]
                 part.pop("hidden", None)
-                reserve((x0, y0, x1, y1))
+                reserve(x0, y0, x1, y1)
 
     def to_dict(self) -> dict[str, Any]:
         """The picture as plain JSON data (labels placed, numbers rounded to 1e-4 of the view).

@@ -123,6 +123,7 @@ from pathlib import Path
 from typing import Any, Callable
 
 import anywidget
+import numpy as np
 import traitlets
 
 from planargeo.errors import PlanargeoError
@@ -232,10 +233,14 @@ def wire_element(el: dict, nd: int) -> dict:
         elif k == "mark":
             parts.append(["M", rnd(p["x"], nd), rnd(p["y"], nd), p.get("shape", "o"), rnd(p.get("size", 6.0), 1)])
         elif k == "path":
-            flat = ["P", 1 if p.get("closed") else 0]
-            for x, y in p["xy"]:
-                flat += (rnd(x, nd), rnd(y, nd))
-            parts.append(flat)
+            xy = p["xy"]
+            head = ["P", 1 if p.get("closed") else 0]
+            if len(xy) > 3:        # rounded together (numpy: a long path costs microseconds)
+                parts.append(head + (np.round(np.asarray(xy, dtype=float).ravel(), nd) + 0.0).tolist())
+            else:
+                for x, y in xy:
+                    head += (rnd(x, nd), rnd(y, nd))
+                parts.append(head)
         elif k == "arrow":
             parts.append(["A", rnd(p["x"], nd), rnd(p["y"], nd), rnd(p.get("dx", 0.0), 1),
                           rnd(p.get("dy", 0.0), 1)])
