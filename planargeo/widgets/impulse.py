@@ -37,7 +37,7 @@ import numpy as np
 
 from planargeo.draw.pictures.impulse import impulse_picture
 from planargeo.scenes.impulse import BODIES, body_outline, impulse
-from planargeo.widgets._explorer import arrow_handle, grown_view, xy_handle
+from planargeo.widgets._explorer import arrow_handle, grown_view, rows, xy_handle
 from planargeo.widgets.base import Explorer, Step, point_text
 
 __all__ = ["ImpulseExplorer"]
@@ -46,6 +46,25 @@ __all__ = ["ImpulseExplorer"]
 ARROW = 0.25
 #: longest time after the blow that Play runs (s)
 T_MAX = 60.0
+#: the readout's rows: name -> (unit, meaning with its thesis equation)
+UNITS, MEANINGS = rows({
+    "ω after the blow": ("rad/s", "angular velocity of the body just after the blow (5.64)"),
+    "velocity of c": ("m/s", "velocity of the centre of mass just after the blow (5.64)"),
+    "velocity pole": ("—", "the point the body turns about just after the blow (4.10)"),
+    "pole if free (I⁻¹ĵ)": ("—", "where it would turn about if nothing held it: the pole of I⁻¹ĵ (5.64-5.68)"),
+    "reaction impulse ĵᵣ, across": ("N·s", "impulse of the grip or hinge on the body, across the body (5.67)"),
+    "reaction impulse ĵᵣ, along": ("N·s", "impulse of the grip or hinge on the body, along the body"),
+    "|ĵᵣ|": ("N·s", "size of the reaction impulse: the sting felt at the grip (5.67)"),
+    "centre of percussion (5.67)": ("m", "where a blow across the body leaves the grip without a reaction (5.67)"),
+    "l = d + ρ²/d": ("m", "distance of the centre of percussion from the grip; d to the centre of mass (5.67)"),
+    "apparent mass along ĵ": ("kg", "impulse per unit change of the struck point's speed along the blow (Fig 3.3)"),
+    "apparent mass, held": ("kg", "the apparent mass with the grip or hinge holding the body (Fig 3.3)"),
+    "apparent mass, free": ("kg", "the apparent mass with nothing holding it (Fig 3.3)"),
+    "mass m": ("kg", "mass of the body"),
+    "radius of gyration ρ": ("m", "J = m ρ² about the centre of mass (5.67)"),
+    "kinetic energy": ("J", "½ vᵀ I v just after the blow (section 1.9)"),
+    "t": ("s", "time after the blow (Play advances it)"),
+})
 
 
 def pole_text(tw, pole, rest: str = "at rest") -> str:
@@ -93,6 +112,7 @@ class ImpulseExplorer(Explorer):
     figsize = (6.4, 4.6)
     limits = (-0.45, 1.2, -0.6, 0.6)
     display_controls = ("t",)
+    units = UNITS
 
     def make_controls(self):
         # The controls: body, support, mass, the blow (point, angle, impulse) and the time after it.
@@ -141,26 +161,22 @@ class ImpulseExplorer(Explorer):
         st = self.state
         return pts if st is None else np.vstack([pts, np.asarray(st.extra["outline"], dtype=float)])
 
-    def readout_of(self, state):
-        # The readout of the result ``state`` (ω, poles, the reaction impulse, apparent masses, energy).
-        return self._readout(state, state.params["support"] == "held")
-
     def scene_picture(self, state, view=None):
         # The state's picture, built natively (:func:`planargeo.draw.pictures.impulse.impulse_picture`).
         return impulse_picture(state, t=float(self.values["t"]), view=view or self._view(), size=self.figure_px)
 
-    def _readout(self, r, held):
-        q = r.quantities
-        rf = np.array(q["reaction_force"])
+    def readout_of(self, state):
+        # The readout of the result ``state`` (ω, poles, the reaction impulse, apparent masses, energy).
+        r, q = state, state.quantities
         d = float(np.hypot(*q["com"]))
-        out = {
+        return {
             "ω after the blow": q["omega"],
             "velocity of c": tuple(q["v_com"]),
             "velocity pole": pole_text(r.extra["dv"], q["pole"]),
             "pole if free (I⁻¹ĵ)": pole_text(r.extra["dv_free"], q["pole_if_free"]),
             "reaction impulse ĵᵣ, across": q["reaction_across"],
             "reaction impulse ĵᵣ, along": q["reaction_along"],
-            "|ĵᵣ|": float(np.hypot(*rf)),
+            "|ĵᵣ|": float(np.hypot(*np.array(q["reaction_force"]))),
             "centre of percussion (5.67)": tuple(q["centre_of_percussion"]),
             "l = d + ρ²/d": d + q["rho"] ** 2 / d,
             "apparent mass along ĵ": math.inf if q["apparent_mass"] is None else q["apparent_mass"],
@@ -171,33 +187,10 @@ class ImpulseExplorer(Explorer):
             "kinetic energy": q["kinetic_energy"],
             "t": float(self.values["t"]),
         }
-        self.units = {"ω after the blow": "rad/s", "velocity of c": "m/s", "velocity pole": "—",
-                      "pole if free (I⁻¹ĵ)": "—", "reaction impulse ĵᵣ, across": "N·s",
-                      "reaction impulse ĵᵣ, along": "N·s", "|ĵᵣ|": "N·s", "centre of percussion (5.67)": "m",
-                      "l = d + ρ²/d": "m", "apparent mass along ĵ": "kg", "apparent mass, held": "kg",
-                      "apparent mass, free": "kg", "mass m": "kg", "radius of gyration ρ": "m",
-                      "kinetic energy": "J", "t": "s"}
-        return out
 
     def explain(self):
         # Every symbol and readout name on screen, with its thesis equation.
-        return {
-            "ω after the blow": "angular velocity of the body just after the blow (5.64)",
-            "velocity of c": "velocity of the centre of mass just after the blow (5.64)",
-            "velocity pole": "the point the body turns about just after the blow (4.10)",
-            "pole if free (I⁻¹ĵ)": "where it would turn about if nothing held it: the pole of I⁻¹ĵ (5.64-5.68)",
-            "reaction impulse ĵᵣ, across": "impulse of the grip or hinge on the body, across the body (5.67)",
-            "reaction impulse ĵᵣ, along": "impulse of the grip or hinge on the body, along the body",
-            "|ĵᵣ|": "size of the reaction impulse: the sting felt at the grip (5.67)",
-            "centre of percussion (5.67)": "where a blow across the body leaves the grip without a reaction (5.67)",
-            "l = d + ρ²/d": "distance of the centre of percussion from the grip; d to the centre of mass (5.67)",
-            "apparent mass along ĵ": "impulse per unit change of the struck point's speed along the blow (Fig 3.3)",
-            "apparent mass, held": "the apparent mass with the grip or hinge holding the body (Fig 3.3)",
-            "apparent mass, free": "the apparent mass with nothing holding it (Fig 3.3)",
-            "mass m": "mass of the body",
-            "radius of gyration ρ": "J = m ρ² about the centre of mass (5.67)",
-            "kinetic energy": "½ vᵀ I v just after the blow (section 1.9)",
-            "t": "time after the blow (Play advances it)",
+        return {**MEANINGS,
             "I (ρ)": "the body's inertia drawn as its conic, of radius ρ about c (5.4)",
             "c": "centre of mass",
             "P (grip)": "the grip, where the bat is held (a revolute joint)",
