@@ -1,8 +1,9 @@
 """Legibility of every gallery figure: text large enough, no label cut off, no two on top of each other.
 
-Each registered figure is built in the gallery's style and drawn on Agg.  The
-texts that are actually drawn (recorded at draw time, so labels of artists
-that skip them, ticks outside the view and empty texts do not count) must lie
+Each registered figure is built in the gallery's style (every geometric panel drawn
+from a picture by :func:`planargeo.draw.render.draw_picture`, charts by matplotlib)
+and drawn on Agg.  The texts that are actually drawn (recorded at draw time, so
+hidden labels, ticks outside the view and empty texts do not count) must lie
 inside the figure, and no two of them may overlap by more than ``TOL`` pixels
 in both directions (at the gallery's 100 dpi: 0.7 pt), and every one must be at least
 ``MIN_TEXT_PX`` (11 px) high at the SVG's natural size in a browser (an SVG's sizes are
@@ -18,7 +19,6 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import pytest  # noqa: E402
-from matplotlib.backends.backend_agg import RendererAgg  # noqa: E402
 from matplotlib.text import Text  # noqa: E402
 
 from planargeo.gallery.figures import load_all  # noqa: E402
@@ -30,14 +30,13 @@ SPECS = load_all()
 
 
 def _drawn_texts(fig, monkeypatch):
-    """(text, window extent) of every non-empty Text drawn while rendering ``fig``.
+    """(text, window extent, font size) of every visible non-empty Text drawn while rendering ``fig``.
 
-    A text is drawn either by its own ``draw`` or, for the labels of
-    :mod:`planargeo.draw.artists`, straight through the renderer (which is told
-    which Text it draws); both are observed, each text once.
+    Every text of a figure is a matplotlib Text that draws itself (picture labels,
+    chart labels, ticks, legends, titles): ``Text.draw`` is observed, each text once.
     """
     drawn, seen = [], set()
-    orig, orig_agg = Text.draw, RendererAgg.draw_text
+    orig = Text.draw
 
     def note(t, renderer):
         if id(t) not in seen and t.get_visible() and t.get_text():
@@ -48,16 +47,9 @@ def _drawn_texts(fig, monkeypatch):
         orig(self, renderer)
         note(self, renderer)
 
-    def record_agg(self, gc, x, y, s, prop, angle, ismath=False, mtext=None):
-        orig_agg(self, gc, x, y, s, prop, angle, ismath=ismath, mtext=mtext)
-        if mtext is not None:
-            note(mtext, self)
-
     monkeypatch.setattr(Text, "draw", record)
-    monkeypatch.setattr(RendererAgg, "draw_text", record_agg)
     fig.canvas.draw()
     monkeypatch.setattr(Text, "draw", orig)
-    monkeypatch.setattr(RendererAgg, "draw_text", orig_agg)
     return drawn
 
 

@@ -1,26 +1,42 @@
-"""Drawing: twists as points, wrenches as lines, inertias as conics (matplotlib).
+"""Drawing: twists as points, wrenches as lines, inertias as conics.
 
-Math modules never import matplotlib; this package imports the math.  Every drawing
-function takes what it draws first and ``ax=None`` next (None: the current axes).
+A drawing is a :class:`~planargeo.draw.picture.Picture`: plain elements whose
+geometry is computed once in Python (poles, clipped lines, conic curves, ideal
+elements as edge arrows, placed labels).  The page draws it live; matplotlib draws
+the same picture for the gallery, exports and stored pictures.  Math modules never
+import matplotlib, and neither does ``import planargeo.draw``: only the modules
+that render do.
 
-* :mod:`~planargeo.draw.artists`: ``PointArtist``, ``LineArtist``, ``ConicArtist`` and
-  ``plot_point`` / ``plot_line`` / ``plot_conic``;
-* :mod:`~planargeo.draw.constructions`: the thesis's constructions (``draw_twist_sum``,
-  ``draw_wrench_sum``, ``draw_polar_exterior``, ``draw_polar_interior``, ``draw_percussion``,
-  ``draw_power``, the T/U decompositions of chapter 6: ``draw_decomposition``,
-  ``draw_twist_split``, ``draw_wrench_split``, ``draw_projective_step`` ...);
-* :mod:`~planargeo.draw.mechanism`: bodies, pins, sliders, ground, ``draw_model``,
-  ``draw_joint_split``;
-* :mod:`~planargeo.draw.charts`: curves over a parameter;
-* :mod:`~planargeo.draw.layout`: views fitted to computed points;
-* :mod:`~planargeo.draw.style`: the one visual language (Okabe-Ito roles, fixed rcParams,
-  ``legend``).
+* :mod:`~planargeo.draw.picture`: :class:`~planargeo.draw.picture.Picture`, the
+  plain elements (point, line, conic, path, marks, text, handle);
+* :mod:`~planargeo.draw.geometry`: drawing geometry without a renderer (poles,
+  ``clip_line``, ``conic_geometry``, ``conic_curves``, the rotation glyph);
+* :mod:`~planargeo.draw.render`: the matplotlib renderer of a picture
+  (``draw_picture``, ``figure``, ``picture_bytes``);
+* :mod:`~planargeo.draw.sketch`: the gallery's shared basics on a picture (a panel
+  fitted to an axes, labels, dimensions, bodies, pins, ground, a whole model,
+  joint splits, contacts);
+* :mod:`~planargeo.draw.sums`, :mod:`~planargeo.draw.polars`,
+  :mod:`~planargeo.draw.splits`: the thesis's constructions on a picture (sums of
+  twists and wrenches, chapter 4; polars, percussion and power, chapter 5; the
+  T/U splits of chapter 6);
+* :mod:`~planargeo.draw.pictures`: each explorer's state as a picture;
+* :mod:`~planargeo.draw.chain`: a chain's picture shared by explorers;
+* :mod:`~planargeo.draw.notebook`: one value of a notebook cell drawn as a picture;
+* :mod:`~planargeo.draw.charts`: curves over a parameter (matplotlib charts);
+* :mod:`~planargeo.draw.layout`: views fitted to computed points, the legibility check;
+* :mod:`~planargeo.draw.style`: the one visual language (Okabe-Ito roles, fixed
+  rcParams, ``legend``).
+
+Examples
+--------
+>>> import planargeo.draw
+>>> pic = planargeo.draw.Picture((-1, 1, -1, 1), size=(100, 100))
+>>> pic.point("v", [0.0, 0.0, 1.0], symbol="v")       # a unit rotation about the origin
+>>> [part["p"] for part in pic.elements[0]["parts"]]
+['mark', 'glyph', 'text']
 """
-from planargeo.draw.artists import (ConicArtist, LineArtist, PointArtist, plot_conic, plot_line,  # noqa: F401
-                      plot_point)
-from planargeo.draw.constructions import (draw_decomposition, draw_percussion, draw_polar_exterior,  # noqa: F401
-                            draw_polar_interior, draw_power, draw_projective_step,
-                            draw_twist_split, draw_twist_sum, draw_wrench_split, draw_wrench_sum)
-from planargeo.draw.mechanism import (draw_body, draw_ground, draw_joint_split, draw_link, draw_model,  # noqa: F401
-                        draw_pin, draw_slider)
+from planargeo.draw.picture import Picture  # noqa: F401
 from planargeo.draw.style import COLORS, OKABE_ITO, rc_context, style  # noqa: F401
+
+__all__ = ["Picture", "COLORS", "OKABE_ITO", "rc_context", "style"]

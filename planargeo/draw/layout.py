@@ -1,4 +1,4 @@
-"""Views fitted to computed points (and the figure height to their aspect), and a legibility check.
+"""Views fitted to computed points, and a legibility check.
 
 :func:`legibility_problems` is the one test of a drawn figure that explorers and
 the gallery share: text at least :data:`~planargeo.draw.style.MIN_TEXT_PX` pixels
@@ -8,13 +8,14 @@ an axes outside it.
 from __future__ import annotations
 
 import itertools
+import math
 
 import numpy as np
 
-from planargeo.draw.style import MIN_TEXT_PX, _is_axes, get_ax
+from planargeo.draw.style import MIN_TEXT_PX, get_ax
 from planargeo.errors import InputError
 
-__all__ = ["shape_points", "fit_panel", "fit_view", "legibility_problems", "drawn_texts"]
+__all__ = ["shape_points", "fit_box", "fit_view", "legibility_problems", "drawn_texts"]
 
 #: pixels two text boxes may overlap (in both directions) or stick out before it is a problem
 TOL_PX = 1.0
@@ -40,92 +41,109 @@ def shape_points(*shapes) -> np.ndarray:
     return np.vstack(out)
 
 
-def _former_order(name, points, rest, ax, margin):
-    """``(ax, points, margin)`` of ``name(points[, margin], ax=...)`` or the former ``name(ax, points[, margin])``."""
-    if _is_axes(points):                    # the former order: axes first
-        if ax is not None:
-            raise InputError(f"{name}: ax given twice (first argument and ax=)")
-        if not rest:
-            raise InputError(f"{name} needs points besides the axes")
-        ax, points, rest = points, rest[0], rest[1:]
-    if len(rest) > 1:
-        raise InputError(f"{name} takes (points[, margin]), got {1 + len(rest)} positional arguments")
-    if rest:
-        if margin is not None:
-            raise InputError(f"{name}: margin given twice (positionally and margin=)")
-        margin = rest[0]
-    return get_ax(ax), points, margin
+def fit_box(points, aspect: float, *, margin=None, keep=None, min_span=None) -> tuple:
+    """The view ``(x0, x1, y0, y1)`` fitted to the finite ``points``: what :func:`fit_view` sets.
 
+    The bounding box of the finite ``points`` without their far outliers (poles of
+    near-translations: points farther from the points' median than 20 times their
+    median distance from it), with ``keep`` always in, at least ``min_span`` wide
+    and high, grown by ``margin`` × its larger extent on each side, then widened on
+    one axis to the height / width ratio ``aspect``.
 
-def fit_panel(points, *args, ax=None, margin=None, hmin=1.5, hmax=4.6):
-    """Fit a single-panel figure to ``points``: the figure height follows the points' aspect.
-
-    The width stays; the height becomes ``width × (extent_y / extent_x)`` (clamped to
-    ``[hmin, hmax]`` inches), so that the drawing fills the panel instead of
-    leaving a band empty; then :func:`fit_view`.
-
-    The former call ``fit_panel(ax, points[, margin])`` (axes first) is still read correctly.
-
-    Parameters
-    ----------
-    points : array_like (n, 2)
-        Points to keep in view.
-    *args
-        ``margin`` positionally (and, in the former order, ``points`` after the axes).
-    ax : matplotlib.axes.Axes, optional
-        The panel (default: the current axes).
-    margin : float, optional
-        Margin, a fraction of the larger extent (default 0.08).
-    hmin, hmax : float
-        Bounds of the figure height (inches).
-
-    Returns
-    -------
-    matplotlib.axes.Axes
-        The panel.
-
-    Raises
-    ------
-    InputError
-        Axes or margin given twice, or too many positional arguments.
-    """
-    ax, points, margin = _former_order("fit_panel", points, args, ax, margin)
-    margin = 0.08 if margin is None else margin
-    P = np.asarray(points, float).reshape(-1, 2)
-    P = P[np.all(np.isfinite(P), axis=1)]
-    ext = P.max(axis=0) - P.min(axis=0) + 2 * margin * np.max(P.max(axis=0) - P.min(axis=0))
-    fig = ax.figure
-    fw, _ = fig.get_size_inches()
-    bb = ax.get_position(original=True)
-    h = float(np.clip(fw * bb.width * ext[1] / ext[0] / bb.height, hmin, hmax))
-    fig.set_size_inches(fw, h)
-    fit_view(P, ax=ax, margin=margin)
-    return ax
-
-
-def fit_view(points, *args, ax=None, margin=None, aspect=None, keep=None, min_span=None):
-    """Set limits to the bounding box of the finite ``points`` (Euclidean, (n, 2)) plus a margin.
-
-    ``margin`` is a fraction of the larger extent; with ``aspect`` (height /
-    width of the panel) the box is widened so that equal-aspect drawing fills it.
-
-    Far outliers among ``points`` (poles of near-translations) are left out:
-    points farther from the points' median than 20 times their median distance
-    from it.  Outliers are only ever taken from ``points``: the ``keep`` points
-    (the mechanism) are always in view, and they set the spread the outliers
-    are measured by; ``min_span`` is the smallest width and height of the view.
-    Without ``keep``, when the points kept would all but coincide (most points
-    of a folded chain), they count as one point and the spread is the distance
-    to the nearest other point: the view never keeps only the coincident points.
-
-    The former call ``fit_view(ax, points[, margin])`` (axes first) is still read correctly.
+    Outliers are only ever taken from ``points``: the ``keep`` points (the mechanism)
+    are always in view, and they set the spread the outliers are measured by.
+    Without ``keep``, when the points kept would all but coincide (most points of a
+    folded chain), they count as one point and the spread is the distance to the
+    nearest other point: the view never keeps only the coincident points.
 
     Parameters
     ----------
     points : array_like (n, 2)
         Points to keep in view (far outliers excepted).
-    *args
-        ``margin`` positionally (and, in the former order, ``points`` after the axes).
+    aspect : float
+        Height / width of the panel.
+    margin : float, optional
+        Fraction of the larger extent (default 0.25).
+    keep : array_like (m, 2), optional
+        Points always in view (the mechanism); never taken for outliers.
+    min_span : float, optional
+        Smallest width and height before the margin (e.g. the scene's size).
+
+    Returns
+    -------
+    tuple of float
+
+    Raises
+    ------
+    InputError
+        No finite point, or an ``aspect``, ``margin`` or ``min_span`` that is not a
+        finite number (positive for ``aspect``, non-negative for the others).
+
+    Examples
+    --------
+    >>> fit_box([[0, 0], [2, 1]], 0.5, margin=0.0)
+    (0.0, 2.0, 0.0, 1.0)
+    >>> fit_box([[0, 0], [2, 1]], 1.0, margin=0.1)
+    (-0.2, 2.2, -0.7, 1.7)
+
+    A chain folded onto its base (most points coincide up to round-off), its tip
+    1 m away: the tip is no outlier.  With the mechanism as ``keep``, a pole 1e8 m
+    away is left out:
+
+    >>> folded = [[0, 0], [1e-7, 0], [2e-7, 0], [1e-7, 1e-7], [1.0, 0.0]]
+    >>> fit_box(folded, 1.0, margin=0.0)[:2]
+    (0.0, 1.0)
+    >>> fit_box([[1e8, 0.0], [0.5, 0.2]], 1.0, margin=0.0, keep=folded)[:2]
+    (0.0, 1.0)
+    """
+    aspect = _number(aspect, "aspect", positive=True)
+    margin = 0.25 if margin is None else _number(margin, "margin")
+    min_span = 0.0 if min_span is None else _number(min_span, "min_span")
+    try:
+        P = np.asarray(points, float).reshape(-1, 2)
+        K = np.zeros((0, 2)) if keep is None else np.asarray(keep, float).reshape(-1, 2)
+    except (TypeError, ValueError):
+        raise InputError("points and keep must be arrays of (x, y) points") from None
+    P = P[np.all(np.isfinite(P), axis=1)]
+    K = K[np.all(np.isfinite(K), axis=1)]
+    if not len(P) and not len(K):
+        raise InputError("no finite point to fit the view to")
+    P = np.vstack([_without_outliers(P, K, min_span), K])
+    lo, hi = P.min(axis=0), P.max(axis=0)
+    if min_span:                                        # at least min_span wide and high
+        c, half = (lo + hi) / 2, np.maximum((hi - lo) / 2, min_span / 2)
+        lo, hi = c - half, c + half
+    size = max(float(np.max(hi - lo)), 1e-9)
+    lo, hi = lo - margin * size, hi + margin * size
+    w, h = hi - lo
+    c = (lo + hi) / 2
+    if h / w < aspect:
+        h = w * aspect
+    else:
+        w = h / aspect
+    return tuple(round(float(v), 12) + 0.0 for v in (c[0] - w / 2, c[0] + w / 2, c[1] - h / 2,
+                                                      c[1] + h / 2))
+
+
+def _number(v, name: str, *, positive: bool = False) -> float:
+    """``v`` as a finite float (> 0 with ``positive``, else >= 0), or an InputError naming ``name``."""
+    try:
+        f = float(v)
+    except (TypeError, ValueError):
+        f = float("nan")
+    if not (math.isfinite(f) and (f > 0 if positive else f >= 0)):
+        kind = "positive" if positive else "non-negative"
+        raise InputError(f"{name} must be a {kind} finite number, got {v!r}")
+    return f
+
+
+def fit_view(points, *, ax=None, margin=None, aspect=None, keep=None, min_span=None):
+    """Set the limits of ``ax`` to the view :func:`fit_box` fits to ``points``.
+
+    Parameters
+    ----------
+    points : array_like (n, 2)
+        Points to keep in view (far outliers excepted, :func:`fit_box`).
     ax : matplotlib.axes.Axes, optional
         The panel (default: the current axes).
     margin : float, optional
@@ -145,65 +163,31 @@ def fit_view(points, *args, ax=None, margin=None, aspect=None, keep=None, min_sp
     Raises
     ------
     InputError
-        Axes or margin given twice, too many positional arguments, or a
-        ``min_span`` that is not a non-negative finite number.
+        No finite point, or a bad ``margin``, ``aspect`` or ``min_span`` (:func:`fit_box`).
 
     Examples
     --------
-    A chain folded onto its base: most points coincide (up to round-off), the
-    tip is 1 m away.  The view holds the tip (it is no outlier):
-
     >>> from matplotlib.figure import Figure
     >>> ax = Figure(figsize=(4, 4)).add_subplot()
-    >>> folded = [[0, 0], [1e-7, 0], [2e-7, 0], [1e-7, 1e-7], [1.0, 0.0]]
-    >>> [float(x) for x in fit_view(folded, ax=ax, margin=0.0, aspect=1.0).get_xlim()]
-    [0.0, 1.0]
-
-    With the mechanism as ``keep``, a pole 1e8 m away is left out, the mechanism kept:
-
-    >>> [float(x) for x in fit_view([[1e8, 0.0], [0.5, 0.2]], ax=ax, margin=0.0, aspect=1.0,
-    ...                              keep=folded).get_xlim()]
+    >>> [float(x) for x in fit_view([[0, 0], [1, 0.5]], ax=ax, margin=0.0, aspect=1.0).get_xlim()]
     [0.0, 1.0]
     >>> x0, x1 = fit_view([[0, 0], [1e-7, 0]], ax=ax, margin=0.0, aspect=1.0, min_span=2.0).get_xlim()
     >>> round(float(x1 - x0), 9)
     2.0
     """
-    ax, points, margin = _former_order("fit_view", points, args, ax, margin)
-    margin = 0.25 if margin is None else margin
-    if min_span is not None and not (isinstance(min_span, (int, float, np.floating)) and
-                                     np.isfinite(min_span) and min_span >= 0):
-        raise InputError(f"min_span must be a non-negative finite number, got {min_span!r}")
-    P = np.asarray(points, float).reshape(-1, 2)
-    P = P[np.all(np.isfinite(P), axis=1)]
-    K = np.zeros((0, 2)) if keep is None else np.asarray(keep, float).reshape(-1, 2)
-    K = K[np.all(np.isfinite(K), axis=1)]
-    P = _without_outliers(P, K, float(min_span or 0.0))
-    P = np.vstack([P, K])
-    if not len(P):
-        P = np.zeros((1, 2))
-    lo, hi = P.min(axis=0), P.max(axis=0)
-    if min_span:                                        # at least min_span wide and high
-        c, half = (lo + hi) / 2, np.maximum((hi - lo) / 2, min_span / 2)
-        lo, hi = c - half, c + half
-    size = max(float(np.max(hi - lo)), 1e-9)
-    lo, hi = lo - margin * size, hi + margin * size
+    ax = get_ax(ax)
     if aspect is None:
         bb = ax.get_position(original=True)
         fw, fh = ax.figure.get_size_inches()
         aspect = (bb.height * fh) / (bb.width * fw)
-    w, h = hi - lo
-    c = (lo + hi) / 2
-    if h / w < aspect:
-        h = w * aspect
-    else:
-        w = h / aspect
-    ax.set_xlim(c[0] - w / 2, c[0] + w / 2)
-    ax.set_ylim(c[1] - h / 2, c[1] + h / 2)
+    x0, x1, y0, y1 = fit_box(points, aspect, margin=margin, keep=keep, min_span=min_span)
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)
     return ax
 
 
 def _without_outliers(P: np.ndarray, K: np.ndarray, min_span: float) -> np.ndarray:
-    """``P`` without its far outliers, measured against the mechanism ``K`` when given (fit_view)."""
+    """``P`` without its far outliers, measured against the mechanism ``K`` when given (:func:`fit_box`)."""
     ref = K if len(K) else P
     if len(P) <= 2 and not len(K):
         return P

@@ -5,7 +5,8 @@ Plain functions that add elements to a :class:`~planargeo.draw.picture.Picture`
 :func:`planargeo.draw.render.draw_picture`):
 
 * :func:`panel` — a Picture the size of a matplotlib axes (pixels at 100 dpi), its
-  view fitted to points as :func:`planargeo.draw.layout.fit_view` fits an axes;
+  view fitted to points (:func:`planargeo.draw.layout.fit_box`, the view
+  :func:`planargeo.draw.layout.fit_view` sets on an axes);
   :func:`show` — draw it on that axes;
 * :func:`label`, :func:`segment`, :func:`dimension` — a text at a point, a finite
   segment, a dimension line with end ticks;
@@ -38,7 +39,7 @@ import math
 import numpy as np
 
 from planargeo.draw.geometry import clip_line
-from planargeo.draw.layout import _without_outliers, shape_points
+from planargeo.draw.layout import fit_box, shape_points
 from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.style import COLORS, LINEWIDTHS, STYLES
 from planargeo.errors import InputError
@@ -122,93 +123,15 @@ def _circle(c, r, n: int = 36) -> np.ndarray:
 
 
 # --------------------------------------------------------------------------- panel
-def fit_box(points, aspect: float, *, margin=None, keep=None, min_span=None) -> tuple:
-    """The view ``(x0, x1, y0, y1)`` that :func:`planargeo.draw.layout.fit_view` would set.
-
-    The bounding box of the finite ``points`` without their far outliers (the same
-    rule, :func:`planargeo.draw.layout.fit_view`), with ``keep`` always in, at least
-    ``min_span`` wide and high, grown by ``margin`` × its larger extent on each
-    side, then widened on one axis to the height / width ratio ``aspect``.
-
-    Parameters
-    ----------
-    points : array_like (n, 2)
-        Points to keep in view (far outliers excepted).
-    aspect : float
-        Height / width of the panel.
-    margin : float, optional
-        Fraction of the larger extent (default 0.25, as ``fit_view``).
-    keep : array_like (m, 2), optional
-        Points always in view.
-    min_span : float, optional
-        Smallest width and height before the margin.
-
-    Returns
-    -------
-    tuple of float
-
-    Raises
-    ------
-    InputError
-        No finite point, or a bad ``aspect``, ``margin`` or ``min_span``.
-
-    Examples
-    --------
-    >>> fit_box([[0, 0], [2, 1]], 0.5, margin=0.0)
-    (0.0, 2.0, 0.0, 1.0)
-    >>> fit_box([[0, 0], [2, 1]], 1.0, margin=0.1)
-    (-0.2, 2.2, -0.7, 1.7)
-    """
-    aspect = _positive(aspect, "aspect")
-    margin = 0.25 if margin is None else margin
-    try:
-        margin = float(margin)
-    except (TypeError, ValueError):
-        raise InputError(f"margin must be a number, got {margin!r}") from None
-    if not (math.isfinite(margin) and margin >= 0):
-        raise InputError(f"margin must be a non-negative finite number, got {margin!r}")
-    if min_span is not None:
-        try:
-            ms = float(min_span)
-        except (TypeError, ValueError):
-            ms = float("nan")
-        if not (math.isfinite(ms) and ms >= 0):
-            raise InputError(f"min_span must be a non-negative finite number, got {min_span!r}")
-        min_span = ms
-    try:
-        P = np.asarray(points, float).reshape(-1, 2)
-        K = np.zeros((0, 2)) if keep is None else np.asarray(keep, float).reshape(-1, 2)
-    except (TypeError, ValueError):
-        raise InputError("points and keep must be arrays of (x, y) points") from None
-    P = P[np.all(np.isfinite(P), axis=1)]
-    K = K[np.all(np.isfinite(K), axis=1)]
-    if not len(P) and not len(K):
-        raise InputError("panel: no finite point to fit the view to")
-    P = np.vstack([_without_outliers(P, K, float(min_span or 0.0)), K])
-    lo, hi = P.min(axis=0), P.max(axis=0)
-    if min_span:
-        c, half = (lo + hi) / 2, np.maximum((hi - lo) / 2, min_span / 2)
-        lo, hi = c - half, c + half
-    size = max(float(np.max(hi - lo)), 1e-9)
-    lo, hi = lo - margin * size, hi + margin * size
-    w, h = hi - lo
-    c = (lo + hi) / 2
-    if h / w < aspect:
-        h = w * aspect
-    else:
-        w = h / aspect
-    return tuple(round(float(v), 12) + 0.0 for v in (c[0] - w / 2, c[0] + w / 2, c[1] - h / 2,
-                                                      c[1] + h / 2))
-
-
 def panel(ax, points, *, margin=None, keep=None, min_span=None, fit_height=False, hmin=1.5,
           hmax=4.6) -> Picture:
     """A Picture the size of the axes ``ax`` (pixels at 100 dpi), its view fitted to ``points``.
 
     No ticks, no margin around the plot area, and the view
-    :func:`planargeo.draw.layout.fit_view` would give the axes (:func:`fit_box`).
-    With ``fit_height`` the figure's height first follows the points' aspect, as
-    :func:`planargeo.draw.layout.fit_panel` does (clamped to ``[hmin, hmax]`` inches).
+    :func:`planargeo.draw.layout.fit_view` would give the axes
+    (:func:`planargeo.draw.layout.fit_box`).  With ``fit_height`` the figure's height
+    first follows the points' aspect: the axes' width times the ratio of the
+    points' extents, each grown by the margin (clamped to ``[hmin, hmax]`` inches).
     The axes are not changed (:func:`show` draws the picture on them).
 
     Parameters

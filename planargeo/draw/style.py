@@ -24,8 +24,9 @@ same colour, told apart by weight (:data:`SUM`: a heavier line, a larger
 diamond marker).  :func:`legend` makes a key of roles for one panel.
 
 Use :func:`rc_context` to get the package's fixed fonts and sizes; gallery
-output is reproducible only inside that context.  Every drawing function takes
-what it draws first and ``ax=None`` next (None: the current axes, :func:`get_ax`).
+output is reproducible only inside that context.  Every function that draws on a
+matplotlib axes takes what it draws first and ``ax=None`` after it (None: the
+current axes, :func:`get_ax`).
 """
 from __future__ import annotations
 
@@ -73,7 +74,8 @@ LINEWIDTHS = {
     "chart": 1.5,
 }
 
-#: Default artist styles per role (keyword arguments for the artists).
+#: Style per role: colour, line width (points), dash (matplotlib ``linestyle``) and marker;
+#: a :class:`~planargeo.draw.picture.Picture` turns them into pixels.
 STYLES = {
     "twist": dict(color=COLORS["twist"], marker="o", markersize=5.0),
     "accel": dict(color=COLORS["accel"], marker="o", markersize=5.0),
@@ -85,9 +87,9 @@ STYLES = {
     "inertia": dict(color=COLORS["inertia"], linewidth=LINEWIDTHS["inertia"], linestyle=(0, (5, 3))),
 }
 
-#: Emphasis of a sum (same colour as its terms, heavier): keyword arguments for
-#: :class:`~planargeo.draw.artists.LineArtist` (``"line"``) and
-#: :class:`~planargeo.draw.artists.PointArtist` (``"point"``).
+#: Emphasis of a sum (same colour as its terms, heavier): the width of a sum's line
+#: (``"line"``, points) and the marker of a sum's pole (``"point"``), in pictures
+#: (:mod:`planargeo.draw.sums`) and legend keys (:func:`legend`).
 SUM = {
     "line": dict(linewidth=3.4),
     "point": dict(marker="D", markersize=6.5),
