@@ -43,6 +43,7 @@ from planargeo.draw.pictures.car import (FORCE_SCALE, HALF_TRACK, NEAR, OVERHANG
                                          moves, view_box)
 from planargeo.errors import InputError, SceneError
 from planargeo.simulate.integrate import energy
+from planargeo.widgets._explorer import rows
 from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["CarExplorer", "view_box", "grip"]
@@ -52,6 +53,24 @@ HEADING = "heading (deg)"
 FRICTION = "tyre friction μ"
 #: gravity (m/s²): the tyres hold a horizontal acceleration of at most μ·G_ROAD at the centre of gravity
 G_ROAD = 9.81
+
+#: the readout's rows: name -> (unit, meaning with its thesis equation)
+UNITS, MEANINGS = rows({
+    "speed V": ("m/s", "speed of the rear tyre, V = ω d (6.115)"),
+    "heading θ": ("°", "how far the car has turned about the ICR"),
+    "yaw rate ω": ("rad/s", "turning rate of the car about the ICR (6.115)"),
+    "yaw acceleration ω̇": ("rad/s²", "its rate of change, from the drive force alone (6.131)"),
+    "rear tyre force μ₁": ("N", "signed lateral force of the rear tyre along R₁, negative towards the ICR (6.133)"),
+    "front tyre force μ₂": ("N", "signed lateral force of the front tyre along R₂ (6.133)"),
+    "steering angle": ("°", "angle of the front wheels, whose axle meets the rear axle at the ICR (6.114)"),
+    "lateral acceleration at G": ("g", "its part towards the ICR, ω² r_G, in units of g = 9.81 m/s²"),
+    "acceleration of G": ("m/s²", "acceleration of the centre of gravity, r_G √(ω⁴ + ω̇²)"),
+    "friction limit μ·g": ("m/s²", "the largest acceleration the tyres hold (friction coefficient μ times g)"),
+    "tyres": ("—", "whether the tyres hold the car on its circle, and how much of μ·g it uses"),
+    "kinetic energy K": ("J", "½ vᵀ I v of the car turning about the ICR (section 1.9)"),
+    "drive power": ("W", "power of the drive force f_A: its moment about the ICR times ω (6.120)"),
+    "rate of change of K": ("W", "dK/dt = I_ICR ω ω̇: equal to the drive power (the tyre forces do no work)"),
+})
 
 
 def grip(res, mu: float):
@@ -92,10 +111,7 @@ class CarExplorer(Explorer):
     title = "Car cornering: tyre forces by projective dynamics"
     slug = "car"
     figsize = (6.0, 5.6)
-    units = {"speed V": "m/s", "heading θ": "°", "yaw rate ω": "rad/s", "yaw acceleration ω̇": "rad/s²",
-             "rear tyre force μ₁": "N", "front tyre force μ₂": "N", "steering angle": "°",
-             "lateral acceleration at G": "g", "acceleration of G": "m/s²", "friction limit μ·g": "m/s²", "kinetic energy K": "J",
-             "drive power": "W", "rate of change of K": "W", "tyres": "—"}
+    units = UNITS
 
     def __init__(self, **kw):
         # the scene function itself (scenes.build checks parameter names on every call)
@@ -307,21 +323,8 @@ class CarExplorer(Explorer):
     def explain(self):
         # Every symbol and readout name on screen, with its thesis equation.
         return {
-            "speed V": "speed of the rear tyre, V = ω d (6.115)",
-            "heading θ": "how far the car has turned about the ICR",
-            "yaw rate ω": "turning rate of the car about the ICR (6.115)",
-            "yaw acceleration ω̇": "its rate of change, from the drive force alone (6.131)",
-            "rear tyre force μ₁": "signed lateral force of the rear tyre along R₁, negative towards the ICR (6.133)",
-            "front tyre force μ₂": "signed lateral force of the front tyre along R₂ (6.133)",
-            "steering angle": "angle of the front wheels, whose axle meets the rear axle at the ICR (6.114)",
-            "lateral acceleration at G": "its part towards the ICR, ω² r_G, in units of g = 9.81 m/s²",
-            "acceleration of G": "acceleration of the centre of gravity, r_G √(ω⁴ + ω̇²)",
-            "friction limit μ·g": "the largest acceleration the tyres hold (friction coefficient μ times g)",
-            "tyres": "whether the tyres hold the car on its circle, and how much of μ·g it uses",
+            **MEANINGS,
             SLIDES: "the acceleration G needs reaches μ·g, what the tyres hold: the car slides out",
-            "kinetic energy K": "½ vᵀ I v of the car turning about the ICR (section 1.9)",
-            "drive power": "power of the drive force f_A: its moment about the ICR times ω (6.120)",
-            "rate of change of K": "dK/dt = I_ICR ω ω̇: equal to the drive power (the tyre forces do no work)",
             "G": "centre of gravity of the car",
             "v = sω (ICR)": "velocity pole: the instant centre of rotation, joint s of the model (6.114, 6.115)",
             "a": "acceleration pole of a = s ω̇ (6.131)",
