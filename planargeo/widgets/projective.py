@@ -42,6 +42,7 @@ from planargeo.geometry.conics import (centre, classify, conic_circle, conic_ell
 from planargeo.draw.pictures.projective import projective_picture
 from planargeo.errors import DegenerateGeometryError, InputError
 from planargeo.geometry.projective import from_xy, is_at_infinity, is_ideal
+from planargeo.widgets._explorer import rows
 from planargeo.widgets.base import Explorer, Handle, Step
 from planargeo.widgets._points import point_value
 
@@ -106,16 +107,6 @@ def _angle_offset(M) -> tuple[float, float]:
     return math.degrees(math.atan2(e[1], e[0])), -tz / F
 
 
-def _xy(p):
-    """Readout value of a homogeneous point: ``(x, y)`` numbers, or the words "at infinity (direction …)".
-
-    Ideal-ness is decided by the package's exact test
-    (:func:`~planargeo.geometry.projective.is_ideal`); a computed point that is ideal
-    within its rounding was made exactly ideal where it was computed (:func:`_settle`).
-    """
-    return point_value(p)
-
-
 #: a computed homogeneous result counts as ideal when its weight is within this many rounding
 #: units (times the conic's condition number) of zero: see :func:`_settle`
 ROUNDING_UNITS = 64.0
@@ -152,6 +143,22 @@ def _settle(x, C, operand, kind: str) -> np.ndarray:
     return x
 
 
+#: the readout's rows: name -> (unit, meaning with its thesis equation)
+UNITS, MEANINGS = rows({
+    "P x": ("m", "x of P, or of its direction when P is at infinity (5.49)"),
+    "P y": ("m", "y of P, or of its direction when P is at infinity (5.49)"),
+    "P": ("m", "the movable point P in homogeneous coordinates [y, −x, 1] (5.49)"),
+    "conic": ("—", "the kind of conic C: real (a curve) or imaginary (an inertia, no real points) (5.35)"),
+    "P is": ("—", "where P lies: outside, on or inside the conic, which fixes the construction (5.2.2)"),
+    "polar of P: distance to origin": ("m", "distance |r| of the polar C P from the origin, line [e, r] with "
+                                            "|e| = 1 (5.55)"),
+    "pole of M": ("m", "the point C⁻¹ M that the conic maps M to (5.37)"),
+    "P·M": ("m", "the linear form t = PᵀM: the signed distance of P from M (5.40)"),
+    "pole(M)·polar(P)": ("m", "the same number from the images, t = (C⁻¹M)ᵀ(C P) (5.41)"),
+    "centre": ("m", "the centre C⁻¹ [0, 0, 1]: the pole of the line at infinity (5.37)"),
+})
+
+
 class ProjectiveExplorer(Explorer):
     """Pole and polar of a movable point and line with respect to a conic."""
 
@@ -161,9 +168,7 @@ class ProjectiveExplorer(Explorer):
     limits = (-4, 4, -4, 4)
     display_controls = ("construction", "line and its pole")
     scale = 4.0
-    units = {"P x": "m", "P y": "m", "P": "m", "polar of P: distance to origin": "m",
-             "pole of M": "m", "centre": "m", "conic": "—", "P is": "—", "P·M": "m",
-             "pole(M)·polar(P)": "m"}
+    units = UNITS
 
     def make_controls(self):
         # The controls (see the module docstring).
@@ -187,26 +192,15 @@ class ProjectiveExplorer(Explorer):
 
     def explain(self):
         # What every symbol on screen means, with its thesis equation.
-        # Returns ``{symbol or readout name: one-line meaning}``.
         return {
             "∞": "a point at infinity (a direction), drawn at the edge of the view as an arrow its way (5.5)",
             "C": "the conic: the symmetric 3×3 matrix C of a curve QᵀCQ = 0 (5.35, 5.38)",
-            "conic": "the kind of conic C: real (a curve) or imaginary (an inertia, no real points) (5.35)",
-            "P": "the movable point P in homogeneous coordinates [y, −x, 1] (5.49)",
-            "P x": "x of P, or of its direction when P is at infinity (5.49)",
-            "P y": "y of P, or of its direction when P is at infinity (5.49)",
-            "P is": "where P lies: outside, on or inside the conic, which fixes the construction (5.2.2)",
             "polar of P": "the line L = C P that the conic maps P to (5.36)",
-            "polar of P: distance to origin": "distance |r| of the polar C P from the origin, "
-                                              "line [e, r] with |e| = 1 (5.55)",
             "M": "the movable line M = [e, r]: direction e at signed distance r (5.55)",
-            "pole of M": "the point C⁻¹ M that the conic maps M to (5.37)",
             "tangents (5.2.2)": "tangents to the conic that build the polar by hand (5.2.2, Fig 5.2–5.3)",
-            "P·M": "the linear form t = PᵀM: the signed distance of P from M (5.40)",
-            "pole(M)·polar(P)": "the same number from the images, t = (C⁻¹M)ᵀ(C P) (5.41)",
-            "centre": "the centre C⁻¹ [0, 0, 1]: the pole of the line at infinity (5.37)",
             "a": "the semi-axis a (circle and inertia: the radius; parabola: 4 × focal distance)",
             "b": "the second semi-axis b of the ellipse or hyperbola",
+            **MEANINGS,
         }
 
     def disabled(self, values):
@@ -358,19 +352,19 @@ class ProjectiveExplorer(Explorer):
         F = float(np.hypot(pol[0], pol[1]))
         out = {
             "P x": v["P x"], "P y": v["P y"],
-            "P": _xy(P),
+            "P": point_value(P),
             "conic": str(state["type"]),
             "P is": state["where"],
             "polar of P: distance to origin": ("line at infinity" if is_at_infinity(pol)
                                                else abs(pol[2]) / F),
-            "pole of M": _xy(pm),
+            "pole of M": point_value(pm),
             "P·M": float(P @ M),
             "pole(M)·polar(P)": float(pm @ pol),
         }
         if state["type"].kind == "parabola":   # its centre is the ideal point of its axis
-            out["centre"] = _xy(_settle(pole(state["C"], [0.0, 0.0, 1.0]), state["C"], [0.0, 0.0, 1.0], "pole"))
+            out["centre"] = point_value(_settle(pole(state["C"], [0.0, 0.0, 1.0]), state["C"], [0.0, 0.0, 1.0], "pole"))
         else:
-            out["centre"] = _xy(centre(state["C"]))
+            out["centre"] = point_value(centre(state["C"]))
         return out
 
     def scene_picture(self, state, view=None):
