@@ -44,7 +44,7 @@ from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.style import COLORS, LINEWIDTHS, STYLES
 from planargeo.errors import InputError
 
-__all__ = ["panel", "fit_box", "show", "label", "segment", "dimension", "link_polygon",
+__all__ = ["panel", "fit_box", "show", "label", "segment", "dimension", "body_words", "link_polygon",
            "transform_shape", "arrow", "body", "link", "pin", "ground", "slider", "frame", "com", "model",
            "model_shapes", "slider_guide", "contact", "split_arrows", "joint_split"]
 
@@ -120,6 +120,37 @@ def _element(pic: Picture, id: str, role: str, parts: list, *, color: str, width
 def _circle(c, r, n: int = 36) -> np.ndarray:
     t = np.linspace(0.0, 2 * np.pi, n, endpoint=False)
     return np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])
+
+
+def body_words(name=None, number=None) -> str:
+    """How a description names a body: ``"body 2"``, ``"crank (body 2)"``, never ``"body body 2"``.
+
+    Parameters
+    ----------
+    name : str, optional
+        The body's name or label (``"body 1"``, ``"crank"``, ``"3"``).
+    number : int, optional
+        The body's number (from 1).
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> body_words("body 1", 1), body_words("3"), body_words("crank", 2), body_words(None, 4)
+    ('body 1', 'body 3', 'crank (body 2)', 'body 4')
+    >>> "centre of mass of " + body_words("body2", 2)
+    'centre of mass of body2'
+    """
+    name = "" if name is None else str(name).strip()
+    if not name:
+        return f"body {number}" if number is not None else "a body"
+    if name.lower().startswith("body"):
+        return name
+    if len(name) <= 2 or name == str(number):       # a number or a letter: "body 3", "body A"
+        return f"body {name}"
+    return f"{name} (body {number})" if number is not None else name
 
 
 # --------------------------------------------------------------------------- panel
@@ -328,7 +359,7 @@ def segment(pic: Picture, id: str, p, q, *, role: str = "construct", label=None,
 
 
 def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at: float = 0.5,
-              color=None, tick: float = 8.0, desc: str = "") -> dict:
+              color=None, tick: float = 8.0, symbol: str | None = None, desc: str = "") -> dict:
     """A dimension line ``p q`` with end ticks, shifted ``offset`` to the left of ``p → q``, labelled.
 
     The text sits at the fraction ``at`` along the line, 4 points off it on the left
@@ -348,9 +379,12 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
     at : float
         Where the text sits along the line (0: at ``p``, 1: at ``q``).
     color : str, optional
-        Colour (default: the construction grey, the text black).
+        Colour of the line, its ticks and its text (default: the construction grey).
     tick : float
         Length of the end ticks (pixels), across the line.
+    symbol : str, optional
+        Thesis symbol of the length (default: the text before its first ``" = "``,
+        so ``"ρ = u/ω"`` is ``ρ``, or the whole text).
     desc : str
         One-line description (default: the text).
 
@@ -372,6 +406,8 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
     [[[0.0, 1.0], [2.0, 1.0]], [[0.0, 0.84], [0.0, 1.16]], [[2.0, 0.84], [2.0, 1.16]]]
     >>> el["parts"][3]["text"], el["parts"][3]["x"], el["parts"][3]["va"]
     ('2 m', 1.0, 'bottom')
+    >>> dimension(pic, "rho", (0, 0), (1, 0), "ρ = u/ω")["symbol"], el["symbol"]
+    ('ρ', '2 m')
     """
     p, q = _xy(p, "p"), _xy(q, "q")
     d = q - p
@@ -396,7 +432,9 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
              {"p": "path", "xy": np.array([p2 - half, p2 + half]), "closed": False},
              {"p": "path", "xy": np.array([q2 - half, q2 + half]), "closed": False},
              _text_part(m[0], m[1], text, gap * npx[0], gap * npx[1], *_align(npx))]
-    return _element(pic, id, "construct", parts, desc=desc or text,
+    if symbol is None:
+        symbol = str(text).split(" = ", 1)[0]
+    return _element(pic, id, "construct", parts, symbol=symbol, desc=desc or text,
                     color=color or COLORS["construct"], width=0.7 * PX_PER_PT, z=2)
 
 
@@ -592,7 +630,7 @@ def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alp
     outer, holes = _polygons(shape)
     parts = [{"p": "path", "xy": r, "closed": True} for r in outer]
     el = _element(pic, id, "body", parts, symbol=symbol,
-                  desc=desc or (f"body {label}" if label else "a body"), color=edgecolor,
+                  desc=desc or body_words(label), color=edgecolor,
                   width=LINEWIDTHS["body"] * PX_PER_PT, fill=color or COLORS["body"],
                   alpha=float(alpha), z=z)
     if label is not None and str(label):
@@ -606,7 +644,7 @@ def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alp
         _element(pic, f"{id}:holes", "body", [{"p": "path", "xy": h, "closed": True} for h in holes],
                  color=edgecolor, width=LINEWIDTHS["body"] * PX_PER_PT, fill="white", z=z)
     if com is not None:
-        _com(pic, f"{id}:com", com)
+        _com(pic, f"{id}:com", com, desc=f"centre of mass of {desc or body_words(label)}")
     return el
 
 
@@ -639,7 +677,8 @@ def link(pic: Picture, id: str, p, q, *, width: float = 0.25, **kw) -> dict:
     return body(pic, id, link_polygon(p, q, width), **kw)
 
 
-def pin(pic: Picture, id: str, xy, *, radius: float = 0.06, z: int = 6, desc: str = "a revolute joint") -> dict:
+def pin(pic: Picture, id: str, xy, *, radius: float = 0.06, z: int = 6, symbol: str = "joint",
+        desc: str = "a revolute joint") -> dict:
     """A revolute joint: a white disc with a dark rim, ``radius`` data units.
 
     Parameters
@@ -652,7 +691,10 @@ def pin(pic: Picture, id: str, xy, *, radius: float = 0.06, z: int = 6, desc: st
         Radius of the disc (data units).
     z : int
         Drawing order.
+    symbol : str
+        What it is called (default ``"joint"``; e.g. ``"P"``, the joint's pole).
     desc : str
+        One-line description.
 
     Returns
     -------
@@ -673,7 +715,7 @@ def pin(pic: Picture, id: str, xy, *, radius: float = 0.06, z: int = 6, desc: st
     """
     c = _xy(xy, "xy")
     r = _positive(radius, "radius")
-    _pic(pic).path(id, _circle(c, r), role="body", symbol="", desc=desc, closed=True, fill="white",
+    _pic(pic).path(id, _circle(c, r), role="body", symbol=symbol, desc=desc, closed=True, fill="white",
                    color=DARK, width=1.0 * PX_PER_PT, z=z)
     return pic.elements[-1]
 
@@ -848,7 +890,7 @@ def frame(pic: Picture, id: str, origin, *, angle: float = 0.0, length: float = 
     return _element(pic, id, "construct", parts, desc=desc, color=color, width=0.9 * PX_PER_PT, z=4)
 
 
-def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6,
+def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: str = "c",
         desc: str = "centre of mass") -> dict:
     """The centre-of-mass symbol: a disc quartered black and white, ``radius`` data units.
 
@@ -864,7 +906,11 @@ def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6,
     radius : float
         Radius of the symbol (data units).
     z : int
+        Drawing order.
+    symbol : str
+        Thesis symbol of the centre of mass (default ``"c"``; ``"$c_2$"`` reads c₂).
     desc : str
+        One-line description.
 
     Returns
     -------
@@ -880,15 +926,15 @@ def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6,
     """
     c = _xy(xy, "xy")
     r = _positive(radius, "radius")
-    _pic(pic).path(f"{id}:disc", _circle(c, r), role="body", desc=desc, closed=True, fill="white",
-                   color="black", width=0.6 * PX_PER_PT, z=z)
+    _pic(pic).path(f"{id}:disc", _circle(c, r), role="body", symbol=symbol, desc=desc, closed=True,
+                   fill="white", color="black", width=0.6 * PX_PER_PT, z=z)
     parts = []
     for k in (0, 2):
         t = np.linspace(k * np.pi / 2, (k + 1) * np.pi / 2, 10)
         xy_ = np.vstack([c, np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])])
         parts.append({"p": "path", "xy": xy_, "closed": True})
-    return _element(pic, id, "body", parts, desc=desc, color="black", width=0.6 * PX_PER_PT,
-                    fill="black", z=z)
+    return _element(pic, id, "body", parts, symbol=symbol, desc=desc, color="black",
+                    width=0.6 * PX_PER_PT, fill="black", z=z)
 
 
 _com, _ground = com, ground      # for the functions with keywords of these names
@@ -964,15 +1010,16 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
             name = names[i]
         else:
             name = b.name if labels and b.name else (str(i + 1) if labels else None)
+        words = body_words(name, i + 1)
         el = body(pic, f"{prefix}body {i + 1}", shape, alpha=alpha, symbol=str(name or i + 1),
-                  desc=f"body {name or i + 1}")
+                  desc=words)
         if (labels or names is not None) and name:
             c = shape.centroid
             el["parts"].append(_text_part(c.x, c.y, str(name), 0.0, -9 * PX_PER_PT, "center", "center"))
         out["bodies"].append(el)
         if show_com:
             out["com"].append(com(pic, f"{prefix}com {i + 1}", cm[i], radius=0.9 * pin_radius,
-                                  desc=f"centre of mass of body {name or i + 1}"))
+                                  symbol=f"$c_{{{i + 1}}}$", desc=f"centre of mass of {words}"))
     for i, joint in enumerate(model.joints):
         o = origin[i]
         if model.parents[i] == -1 and ground and joint.kind != "plane":
@@ -982,7 +1029,7 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
         if joint.kind in ("revolute", "revolute_prismatic"):
             out["joints"].append(pin(pic, f"{prefix}joint {i + 1}",
                                      pose[i, :2] if joint.kind == "revolute" else o, radius=pin_radius,
-                                     desc=f"joint {i + 1}, revolute"))
+                                     symbol=f"joint {i + 1}", desc=f"joint {i + 1}, revolute"))
         if joint.kind in ("prismatic", "revolute_prismatic"):
             axis = np.asarray(data.s(i))[:2, 0]        # the translation column of s_i (world)
             out["joints"].append(slider(pic, f"{prefix}slider {i + 1}", pose[i, :2], axis,
