@@ -45,7 +45,7 @@ from planargeo.geometry.projective import is_at_infinity
 from planargeo.screws.special import twists_case, wrenches_case
 from planargeo.screws.twists import Twist, Wrench, add_twists, add_wrenches
 from planargeo.widgets._points import point_value
-from planargeo.widgets._explorer import _shown, arrow_handle, xy_handle
+from planargeo.widgets._explorer import _shown, arrow_handle, rows, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["ScrewSumExplorer"]
@@ -63,6 +63,22 @@ _SUBSCRIPT = {1: "₁", 2: "₂"}
 #: the sum's components: a twist [vx, vy, ω] (the velocity of the origin's point and the rate),
 #: a wrench [fx, fy, τ] (the force and its moment about the origin)
 SUM_UNITS = {"twists": ("m/s", "m/s", "rad/s"), "wrenches": ("N", "N", "N·m")}
+
+#: the readout's rows: name -> (unit, meaning with its thesis equation); the sum's units follow the mode
+UNITS, MEANINGS = rows({
+    "ω₁": ("rad/s", "angular velocity of v₁ (4.10)"), "ω₂": ("rad/s", "angular velocity of v₂ (4.10)"),
+    "ω₃ = ω₁ + ω₂": ("rad/s", "angular velocity of the sum (4.11)"),
+    "F₁": ("N", "the force f₁ (its magnitude, signed along its angle) (4.27)"),
+    "F₂": ("N", "the force f₂ (its magnitude, signed along its angle) (4.27)"),
+    "|F₃| = |F₁ + F₂|": ("N", "magnitude of the summed force (4.39)"),
+    "β": ("—", "lever ratio: the sum's pole (or line) divides Q₁Q₂ at β = ω₂/(ω₁+ω₂) (4.12, 4.43)"),
+    "ρ": ("m", "shift of a rotation by a translation, ρ = u/ω (4.16), or of a force by a couple, ρ = τ/F (4.46)"),
+    "pole of sum": ("m", "the pole of v₃: where the sum does not move (4.12)"),
+    "meet of lines": ("m", "where the two force lines meet: the sum's line passes there (4.4.1)"),
+    "case": ("—", "the special case reached, by name and equation (10.2.4)"),
+    "sum": (None, "the sum's components: a twist [vx, vy, ω] (velocity of the origin's point, rate) "
+                  "or a wrench [fx, fy, τ] (force, moment about the origin) (4.10, 4.27)"),
+})
 
 
 def _xy_or_ideal(p):
@@ -127,10 +143,7 @@ class ScrewSumExplorer(Explorer):
     @property
     def units(self):
         """Unit of each readout row (the sum's three components each its own)."""
-        return {"ω₁": "rad/s", "ω₂": "rad/s", "ω₃ = ω₁ + ω₂": "rad/s", "pole of sum": "m",
-                "F₁": "N", "F₂": "N", "|F₃| = |F₁ + F₂|": "N", "meet of lines": "m", "β": "—",
-                "ρ": "m", "case": "—",
-                "sum": SUM_UNITS.get(getattr(self, "_mode", None) or self._first_mode)}
+        return {**UNITS, "sum": SUM_UNITS.get(getattr(self, "_mode", None) or self._first_mode)}
 
     def make_controls(self):
         # The mode ``add`` and, per screw, its kind (of that mode), point, size and direction.
@@ -213,19 +226,7 @@ class ScrewSumExplorer(Explorer):
                       "(4.27, 4.46)",
             "f₃ = f₁ + f₂": "their sum, on a line through the meet P of the two lines (4.33)",
             "P": "the meet P = L₁ × L₂ of the two force lines (5.34)",
-            "ω₁": "angular velocity of v₁ (4.10)", "ω₂": "angular velocity of v₂ (4.10)",
-            "ω₃ = ω₁ + ω₂": "angular velocity of the sum (4.11)",
-            "F₁": "the force f₁ (its magnitude, signed along its angle) (4.27)",
-            "F₂": "the force f₂ (its magnitude, signed along its angle) (4.27)",
-            "|F₃| = |F₁ + F₂|": "magnitude of the summed force (4.39)",
-            "β": "lever ratio: the sum's pole (or line) divides Q₁Q₂ at β = ω₂/(ω₁+ω₂) (4.12, 4.43)",
-            "ρ": "shift of a rotation by a translation, ρ = u/ω (4.16), or of a force by a couple, "
-                 "ρ = τ/F (4.46)",
-            "pole of sum": "the pole of v₃: where the sum does not move (4.12)",
-            "meet of lines": "where the two force lines meet: the sum's line passes there (4.4.1)",
-            "case": "the special case reached, by name and equation (10.2.4)",
-            "sum": "the sum's components: a twist [vx, vy, ω] (velocity of the origin's point, rate) "
-                   "or a wrench [fx, fy, τ] (force, moment about the origin) (4.10, 4.27)",
+            **MEANINGS,
             "u": "speed of a translation (4.10)", "τ": "moment of a couple (4.46)",
             "x, y": "the point of a screw: a rotation's pole or a point of a force's line",
         }
