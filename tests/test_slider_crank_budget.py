@@ -19,6 +19,7 @@ from contextlib import contextmanager
 import pytest
 
 from planargeo import scenes
+from planargeo.errors import SizeLimitError
 from planargeo.widgets import SliderCrankExplorer
 from planargeo.widgets.slider_crank import UPDATE_EVALS
 
@@ -115,6 +116,10 @@ def test_a_far_time_is_refused_in_words_and_asking_again_goes_on():
     assert abs(ro["energy E"] - E0) < 2e-5 * abs(E0)
     assert abs(ro["energy drift ΔE/E₀"]) < 2e-5
     assert ro["closure drift"] < 1e-6
+
+    # a new explorer given these values is bounded too: one update's work, then the same words
+    with _deadline(300), pytest.raises(SizeLimitError, match=REFUSAL.pattern.replace(r"(?P<t>\S+)", "5")):
+        SliderCrankExplorer(display="agg", **ex.values)
 
     # the same time reached by another path, in steps each within one update: the same state
     other = SliderCrankExplorer(display="agg")

@@ -16,6 +16,10 @@ action sequences through the paths of the mouse and the page:
   durations in and out of its domain (1e6, 1e300, inf, nan, -1, 0, 1e-300);
 * ``fresh`` — after each sequence, the invariant: ``type(ex)(display="agg", **ex.values)`` shows the
   same readout numbers as ``ex`` (to 1e-9 relative, round-off below ``zero_tol · scale`` equal to 0).
+  A time further than one update computes (the chain's and the slider-crank's time: a
+  :class:`~planargeo.errors.SizeLimitError` saying "ask again") is reached the way its message says:
+  the fresh explorer is made at its default time, then asked for that time again until it is
+  computed (:func:`fresh_explorer`).
 
 An action *failed* when an exception escaped it, when the explorer shows numpy's words
 ("overflow encountered", "invalid value encountered", "divide by zero"), a Python traceback, an
@@ -103,6 +107,47 @@ def _short(x, n=60) -> str:
     with np.printoptions(precision=6, threshold=6):
         s = repr(x)
     return s if len(s) <= n else s[:n - 3] + "..."
+
+
+#: controls that hold a scene time (a far one may take several updates: "ask again")
+TIME_CONTROLS = ("time (s)", "t (s)", "t")
+#: updates a fresh explorer may ask for a far time before the invariant counts it as failed
+MAX_ASKS = 40
+
+
+def fresh_explorer(cls, values: dict):
+    """``cls(display="agg", **values)``; a time beyond one update's work reached by asking again.
+
+    A :class:`~planargeo.errors.SizeLimitError` whose message says "ask again" (a time further than
+    one update computes) is not a refusal of the values: the explorer is made at its default time,
+    then its time control is set to the value again, as the message says, until it is shown.
+
+    Raises
+    ------
+    Exception
+        What the constructor raised for any other reason, or the last refusal after
+        :data:`MAX_ASKS` asks (as :class:`~planargeo.errors.PlanargeoError`).
+    """
+    from planargeo.errors import SizeLimitError
+
+    try:
+        return cls(display="agg", **values)
+    except SizeLimitError as exc:
+        if "ask again" not in str(exc):
+            raise
+        first = exc
+    times = {k: v for k, v in values.items() if k in TIME_CONTROLS}
+    if not times:
+        raise first
+    ref = cls(display="agg", **{k: v for k, v in values.items() if k not in times})
+    for _ in range(MAX_ASKS):
+        ref.set(**times)
+        if all(_numbers_close(ref.values[k], v, 0.0) if isinstance(v, numbers.Number) else ref.values[k] == v
+               for k, v in times.items()):
+            return ref
+        if "ask again" not in (ref.message or ""):
+            raise PlanargeoError(f"a fresh explorer asked for {times} refuses it: {ref.message}")
+    raise PlanargeoError(f"a fresh explorer asked {MAX_ASKS} times for {times} has not reached it: {ref.message}")
 
 
 # ----------------------------------------------------------------------------- values
@@ -311,7 +356,7 @@ class ExplorerFuzzer:
                     return _check_shown(ex) is not None or any(
                         issubclass(w.category, RuntimeWarning) for w in caught)
                 try:
-                    ref = self.cls(display="agg", **dict(ex.values))
+                    ref = fresh_explorer(self.cls, dict(ex.values))
                 except Exception:  # noqa: BLE001
                     return True
                 atol = float(getattr(ex, "zero_tol", 1e-9)) * float(getattr(ex, "scale", 1.0))
@@ -556,11 +601,11 @@ class ExplorerFuzzer:
         values = dict(ex.values)
         text = f"{self.name}(display='agg', **ex.values)"
         t0 = time.perf_counter()
-        try:
-            with time_limit(self.limit), np.errstate(**NUMPY_ERRORS), \
+        try:           # a far time may take a few asks (fresh_explorer): three actions' time
+            with time_limit(3 * self.limit), np.errstate(**NUMPY_ERRORS), \
                     warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always")
-                ref = self.cls(display="agg", **values)
+                ref = fresh_explorer(self.cls, values)
         except Hang as exc:
             self._record("fresh", HANG, f"{exc}", time.perf_counter() - t0)
             self.stopped.add("fresh")
