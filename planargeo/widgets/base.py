@@ -419,10 +419,17 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         widgets (sliders, the readout table) would otherwise compete with the
         drawing of the frame for the processor.
         """
-        with contextlib.ExitStack() as stack:
-            for w in self._synced_widgets():
-                stack.enter_context(w.hold_sync())
+        if getattr(self, "_after_depth", 0):     # already held (a drag's reply, then its update)
             yield
+            return
+        self._after_depth = 1
+        try:
+            with contextlib.ExitStack() as stack:
+                for w in self._synced_widgets():
+                    stack.enter_context(w.hold_sync())
+                yield
+        finally:
+            self._after_depth = 0
 
     def _synced_widgets(self) -> list:
         """The widgets whose values follow the shown state: the controls, the readout, the message."""
