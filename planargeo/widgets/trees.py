@@ -38,7 +38,7 @@ from planargeo.errors import InputError, PlanargeoError
 from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_reactions,
                                     tree_solve)
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._explorer import SceneTime
+from planargeo.widgets._explorer import SceneTime, rows
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 from planargeo.widgets.slider_crank import time_text, time_value
 
@@ -60,6 +60,25 @@ PLAY_RTOL = 1e-7
 CHECKPOINT = 0.05
 #: end of the time slider (s): Play runs a minute; the state at t costs an integration from 0 to t
 T_END = 60.0
+
+#: the readout's rows: name -> (unit, meaning with its thesis equation)
+UNITS, MEANINGS = rows({
+    "t": ("s", "time since the start of the motion (Play advances it)"),
+    "speed": ("rad/s", "scale of the joint speeds at t = 0 (the pattern of the scene, made to fit the loops, 9.54)"),
+    "loops": ("—", "closed: the pins of Fig 9.2 join the tips of bodies 4, 7 and 8, 9; open: the tree of Fig 9.1"),
+    "degrees of freedom": ("—", "joint coordinates less the independent closure conditions, nq − rank J_c "
+                                "(9.54, 9.60)"),
+    "energy E": ("J", "kinetic plus potential energy of the nine links (K = ½ vᵀ I v, section 1.9)"),
+    "energy drift ΔE/E₀": ("—", "relative change of E since t = 0 (zero for the exact motion: no torques, no "
+                                "friction)"),
+    "closure drift |φ|": ("m", "largest gap opened at a pin by the integration so far, position form of 9.54"),
+    "condition number": ("—", "condition number of BᵀGΛ⁻¹GᵀB, the matrix solved for the contact forces (9.70)"),
+    "largest pin force": ("N", "largest |fᵢ| of the nine joints (9.61)"),
+    "focus": ("—", "the pin force drawn bold"),
+    "q̈₁ (body 1)": ("rad/s²", "angular acceleration of joint 1, the pivot of body 1 (9.43, 9.75)"),
+    "largest |q̈ᵢ|": ("rad/s²", "largest joint acceleration of the nine joints (9.43, 9.75)"),
+    "singular poses": ("—", "poses passed where BᵀGΛ⁻¹GᵀB (9.70) loses rank: a loop lies flat on one line"),
+})
 
 
 class TreeExplorer(SceneTime, Explorer):
@@ -84,9 +103,7 @@ class TreeExplorer(SceneTime, Explorer):
     limits = (-4.3, 4.3, -4.3, 4.3)
     display_controls = ("velocity poles", "acceleration poles", "reaction forces")
     initial, t_end = INITIAL, T_END
-    units = {"t": "s", "speed": "rad/s", "degrees of freedom": "—", "condition number": "—",
-             "energy E": "J", "energy drift ΔE/E₀": "—", "closure drift |φ|": "m", "q̈₁ (body 1)": "rad/s²",
-             "largest |q̈ᵢ|": "rad/s²", "largest pin force": "N", "singular poses": "—", "focus": "—"}
+    units = UNITS
 
     def __init__(self, **kw):
         self._geometry: dict = {}   # closed -> (contacts, length, dof)
@@ -320,19 +337,7 @@ class TreeExplorer(SceneTime, Explorer):
     def explain(self):
         # Every symbol and readout name on screen, with its thesis equation.
         out = {
-            "t": "time since the start of the motion (Play advances it)",
-            "speed": "scale of the joint speeds at t = 0 (the pattern of the scene, made to fit the loops, 9.54)",
-            "loops": "closed: the pins of Fig 9.2 join the tips of bodies 4, 7 and 8, 9; open: the tree of Fig 9.1",
-            "degrees of freedom": "joint coordinates less the independent closure conditions, nq − rank J_c (9.54, 9.60)",
-            "energy E": "kinetic plus potential energy of the nine links (K = ½ vᵀ I v, section 1.9)",
-            "energy drift ΔE/E₀": "relative change of E since t = 0 (zero for the exact motion: no torques, no friction)",
-            "closure drift |φ|": "largest gap opened at a pin by the integration so far, position form of 9.54",
-            "condition number": "condition number of BᵀGΛ⁻¹GᵀB, the matrix solved for the contact forces (9.70)",
-            "largest pin force": "largest |fᵢ| of the nine joints (9.61)",
-            "focus": "the pin force drawn bold",
-            "q̈₁ (body 1)": "angular acceleration of joint 1, the pivot of body 1 (9.43, 9.75)",
-            "largest |q̈ᵢ|": "largest joint acceleration of the nine joints (9.43, 9.75)",
-            "singular poses": "poses passed where BᵀGΛ⁻¹GᵀB (9.70) loses rank: a loop lies flat on one line",
+            **MEANINGS,
             "∞": "the pole named beside this arrow lies at infinity, in the arrow's direction (a translation, 4.10)",
             "1 … 9": "body numbers of Fig 9.1",
         }
