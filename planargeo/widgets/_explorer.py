@@ -99,8 +99,8 @@ def grown_view(box, pts, margin: float, sized=None, extra: float | None = None) 
 
 
 def rows(table: dict) -> tuple[dict, dict]:
-    """``{name: (unit, meaning)}`` -> ``({name: unit}, {name: meaning})``: each row written once."""
-    return {k: u for k, (u, _m) in table.items()}, {k: m for k, (_u, m) in table.items()}
+    """``{name: (unit, meaning)}`` -> ``({name: unit}, {name: meaning})``: each row written once (unit None: none)."""
+    return {k: u for k, (u, _m) in table.items() if u is not None}, {k: m for k, (_u, m) in table.items()}
 
 
 class ChainBodies:

@@ -40,7 +40,7 @@ from planargeo.draw.geometry import conic_geometry
 from planargeo.draw.pictures.articulated import MARGIN, articulated_picture, chain_view, fit_box
 from planargeo.scenes.articulated import articulated_state, inertia_at
 from planargeo.widgets._motion import Motion
-from planargeo.widgets._explorer import ChainBodies
+from planargeo.widgets._explorer import ChainBodies, rows
 from planargeo.widgets.base import Explorer, Handle, Step, cached, point_text
 
 __all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip"]
@@ -56,6 +56,31 @@ TIME = "time (s)"
 C_ROW = "damping power at 1 rad/s in every joint"
 #: controls that define the chain or its swing: a change restarts the swing at t = 0
 _CHAIN = ("bodies n", "λ = L/ρ", "bend φ (deg)", "base θ₁ (deg)", "g (m/s²)", "damping c")
+
+#: the readout's rows: name -> (unit, meaning with its thesis equation)
+UNITS, MEANINGS = rows({
+    "bodies": ("—", "number of bodies n"),
+    "outboard included": ("—", "bodies outboard of k the recursion for Aₖ includes, of all there are (section 10.2.2)"),
+    "Aₖ: mass along x": ("kg", "mass felt pushing body k along x at its joint: entry xx of Aₖ (eq. 7.26)"),
+    "Aₖ: mass along y": ("kg", "mass felt pushing body k along y at its joint: entry yy of Aₖ (eq. 7.26)"),
+    "Aₖ: inertia about joint k": ("kg·m²", "rotational inertia of Aₖ about joint k: entry zz (eq. 7.26)"),
+    "effective centre of Aₖ": (None, "the point where Aₖ has no coupling of force and turning: its conic's centre "
+                                     "(eq. 7.26)"),
+    "centre of mass of body k": (None, "the centre of Iₖ"),
+    "effective centre d/L (7.27)": ("—", "distance of body 1's effective centre from its joint, over L (straight "
+                                         "chain; eq. 7.27)"),
+    "truncation error of Aₖ": ("—", "‖Aₖ with the shown outboard bodies − Aₖ‖ / ‖Aₖ‖ (section 10.2.2)"),
+    "pole a": (None, "the acceleration pole a (draggable)"),
+    "distance from a to the centre": ("m", "distance from the pole a to the effective centre of Aₖ"),
+    "axis Aₖa: distance from the centre": ("m", "distance of the axis of percussion Aₖa from the effective centre "
+                                                "(eq. 5.64-5.68)"),
+    "t": ("s", "time of the swing since it started from rest (s)"),
+    "energy T + V": ("J", "energy of the chain at time t"),
+    "dissipated W": ("J", "energy the damping removed up to t"),
+    "T + V + W": ("J", "stays E₀ but for the integration error"),
+    "initial energy E₀": ("J", "energy at t = 0 (at rest: V alone)"),
+    C_ROW: ("W", "n c × (1 rad/s)²: the power the damping takes when every joint turns at 1 rad/s"),
+})
 
 
 def bend_for_tip(xy, n: int, base: float, L: float = 1.0) -> float:
@@ -136,14 +161,7 @@ class ArticulatedExplorer(ChainBodies, Explorer):
     slug = "articulated"
     figsize = (9.6, 5.0)
     display_controls = ("rigid inertias", "percussion axes")
-    units = {
-        "bodies": "—", "outboard included": "—", "Aₖ: mass along x": "kg", "Aₖ: mass along y": "kg",
-        "Aₖ: inertia about joint k": "kg·m²", "effective centre d/L (7.27)": "—",
-        "truncation error of Aₖ": "—", "distance from a to the centre": "m",
-        "axis Aₖa: distance from the centre": "m",
-        "t": "s", "energy T + V": "J", "dissipated W": "J", "T + V + W": "J", "initial energy E₀": "J",
-        C_ROW: "W",
-    }
+    units = UNITS
 
     spans = ("outboard bodies", -1, NMAX - 1)
 
@@ -220,7 +238,6 @@ class ArticulatedExplorer(ChainBodies, Explorer):
             "θ₁": "angle of the first body from the x axis",
             "g": "gravity along −y for the swing (m/s²)",
             "c": "viscous damping at every joint: joint torque −c q̇ (N·m·s/rad)",
-            "t": "time of the swing since it started from rest (s)",
             "Iᵢ": "rigid inertia of body i, drawn as a conic about its centre of mass (section 10.2.3)",
             "Aᵢ": "articulated inertia of body i with the bodies outboard of it (eq. 7.7a), drawn as a conic",
             "Aₖ": f"articulated inertia of the focused body k (eq. 7.7a); in the figure: A{kk}",
@@ -246,23 +263,7 @@ class ArticulatedExplorer(ChainBodies, Explorer):
             "T": "kinetic energy of the chain (eq. 1.9)",
             "V": "potential energy of the chain in gravity g",
             "W": "energy the joint damping has removed since t = 0: ∫ c q̇ᵀq̇ dt",
-            "bodies": "number of bodies n",
-            "outboard included": "bodies outboard of k the recursion for Aₖ includes, of all there are (section 10.2.2)",
-            "Aₖ: mass along x": "mass felt pushing body k along x at its joint: entry xx of Aₖ (eq. 7.26)",
-            "Aₖ: mass along y": "mass felt pushing body k along y at its joint: entry yy of Aₖ (eq. 7.26)",
-            "Aₖ: inertia about joint k": "rotational inertia of Aₖ about joint k: entry zz (eq. 7.26)",
-            "effective centre of Aₖ": "the point where Aₖ has no coupling of force and turning: its conic's centre (eq. 7.26)",
-            "centre of mass of body k": "the centre of Iₖ",
-            "effective centre d/L (7.27)": "distance of body 1's effective centre from its joint, over L (straight chain; eq. 7.27)",
-            "truncation error of Aₖ": "‖Aₖ with the shown outboard bodies − Aₖ‖ / ‖Aₖ‖ (section 10.2.2)",
-            "pole a": "the acceleration pole a (draggable)",
-            "distance from a to the centre": "distance from the pole a to the effective centre of Aₖ",
-            "axis Aₖa: distance from the centre": "distance of the axis of percussion Aₖa from the effective centre (eq. 5.64-5.68)",
-            "energy T + V": "energy of the chain at time t",
-            "dissipated W": "energy the damping removed up to t",
-            "T + V + W": "stays E₀ but for the integration error",
-            "initial energy E₀": "energy at t = 0 (at rest: V alone)",
-            C_ROW: "n c × (1 rad/s)²: the power the damping takes when every joint turns at 1 rad/s",
+            **MEANINGS,
         }
 
 
