@@ -33,7 +33,7 @@ import numpy as np
 from planargeo.draw.pictures.articulated import fit_box
 from planargeo.draw.pictures.splitting import splitting_picture
 from planargeo.scenes.splitting import splitting_state, twist_pole
-from planargeo.widgets._explorer import ChainBodies
+from planargeo.widgets._explorer import ChainBodies, rows
 from planargeo.widgets.base import Explorer, Handle, Step, point_text
 
 __all__ = ["SplittingExplorer", "NMAX", "x_over_L_7_48"]
@@ -42,6 +42,28 @@ __all__ = ["SplittingExplorer", "NMAX", "x_over_L_7_48"]
 NMAX = 8
 #: units of an acceleration ``[a_x, a_y, α]``
 _ACC = ("m/s²", "m/s²", "rad/s²")
+
+_LAM = ("1/kg", "1/kg", "1/(kg·m)")
+#: the readout's rows: name -> (unit, meaning with its thesis equation)
+UNITS, MEANINGS = rows({
+    "split at joint": ("—", "the joint i+1 where the chain is split"),
+    "aᵢ (7.54)": (_ACC, "acceleration of body i, straight from the split (eq. 7.54)"),
+    "aᵢ₊₁": (_ACC, "acceleration of body i+1, the first body of the free-floating chain (eq. 7.54)"),
+    "fᵢ₊₁ (7.56)": (("N", "N", "N·m"), "force of the split joint on body i+1 (eq. 7.56)"),
+    "pole of aᵢ": (None, "the point of body i with no acceleration (eq. 4.6)"),
+    "pole of aᵢ₊₁": (None, "the point of body i+1 with no acceleration (eq. 4.6)"),
+    "row 1 of Λᵢ⁻¹": (_LAM, "x acceleration of body i per unit force at it (eq. 7.38a)"),
+    "row 2 of Λᵢ⁻¹": (_LAM, "y acceleration of body i per unit force at it (eq. 7.38a)"),
+    "row 3 of Λᵢ⁻¹": (("1/(kg·m)", "1/(kg·m)", "1/(kg·m²)"), "angular acceleration of body i per unit force at it "
+                                                           "(eq. 7.38a)"),
+    "bᵢ": (_ACC, "bias acceleration of body i in the constrained chain: its acceleration with no force at joint "
+                 "i+1 (eq. 7.38a)"),
+    "aₙ (tip)": (_ACC, "acceleration of the tip body (eq. 7.46 for n = 2)"),
+    "q̈ (6.110)": ("rad/s²", "joint accelerations q̈₁…q̈ₙ by chain splitting (eq. 6.110)"),
+    "x/L of aₙ's pole (7.48)": ("—", "pole of a₂ on the x axis over L, computed (n = 2, no gravity; eq. 7.48)"),
+    "x/L closed form": ("—", "1 + 2η² cos φ / (4 + 5η²), by hand (eq. 7.48)"),
+    "η = L/ρ (7.49)": ("—", "size ratio of the bodies (eq. 7.49)"),
+})
 
 
 def x_over_L_7_48(rho: float, L: float, phi: float) -> float:
@@ -90,13 +112,7 @@ class SplittingExplorer(ChainBodies, Explorer):
     #: real values here, a 0.05 N·m couple on 8 bodies of ρ = 2 m, are above 1e-4)
     scale = 1.0
     zero_tol = 1e-6
-    units = {
-        "split at joint": "—", "aᵢ (7.54)": _ACC, "aᵢ₊₁": _ACC, "fᵢ₊₁ (7.56)": ("N", "N", "N·m"),
-        "aₙ (tip)": _ACC, "x/L of aₙ's pole (7.48)": "—", "x/L closed form": "—", "η = L/ρ (7.49)": "—",
-        "row 1 of Λᵢ⁻¹": ("1/kg", "1/kg", "1/(kg·m)"), "row 2 of Λᵢ⁻¹": ("1/kg", "1/kg", "1/(kg·m)"),
-        "row 3 of Λᵢ⁻¹": ("1/(kg·m)", "1/(kg·m)", "1/(kg·m²)"),
-        "bᵢ": _ACC, "q̈ (6.110)": "rad/s²",
-    }
+    units = UNITS
 
     spans = ("split at joint", 0, NMAX)
 
@@ -152,29 +168,15 @@ class SplittingExplorer(ChainBodies, Explorer):
             "aⱼ": ("acceleration of body j, drawn as its pole: the point with no acceleration (eq. 4.6); in the figure: "
                    + ", ".join(f"a{sub(j)}" for j in range(1, n + 1))),
             "aᵢ": "acceleration of body i, straight from the split (eq. 7.54)",
-            "aᵢ₊₁": "acceleration of body i+1, the first body of the free-floating chain (eq. 7.54)",
             "aₙ": "acceleration of the tip body n (eq. 7.46 for n = 2)",
             "fᵢ₊₁": f"force of the split joint i+1 on body i+1, drawn as its line of action (eq. 7.56); in the figure: f{sub(i + 1)}",
             "Λᵢ⁻¹": "articulated mobility of body i in the constrained chain 1…i (eq. 7.38a)",
-            "bᵢ": "bias acceleration of body i in the constrained chain: its acceleration with no force at joint i+1 (eq. 7.38a)",
             "centre of Λᵢ⁻¹": f"where a couple on body i alone turns it: the pole of −Λᵢ⁻¹ [0, 0, 1] (section 7.5); in the figure: centre of Λ{sub(i)}⁻¹",
             "split": "the joint i+1 where the chain is split",
             "q̈": "joint accelerations of all joints, by chain splitting at every joint (eq. 6.110)",
             "η": "size ratio η = L/ρ (eq. 7.49)",
             "x/L": "where the pole of aₙ lies on the x axis, over L (eq. 7.47, 7.48)",
-            "split at joint": "the joint i+1 where the chain is split",
-            "aᵢ (7.54)": "acceleration of body i, straight from the split (eq. 7.54)",
-            "fᵢ₊₁ (7.56)": "force of the split joint on body i+1 (eq. 7.56)",
-            "pole of aᵢ": "the point of body i with no acceleration (eq. 4.6)",
-            "pole of aᵢ₊₁": "the point of body i+1 with no acceleration (eq. 4.6)",
-            "row 1 of Λᵢ⁻¹": "x acceleration of body i per unit force at it (eq. 7.38a)",
-            "row 2 of Λᵢ⁻¹": "y acceleration of body i per unit force at it (eq. 7.38a)",
-            "row 3 of Λᵢ⁻¹": "angular acceleration of body i per unit force at it (eq. 7.38a)",
-            "aₙ (tip)": "acceleration of the tip body (eq. 7.46 for n = 2)",
-            "q̈ (6.110)": "joint accelerations q̈₁…q̈ₙ by chain splitting (eq. 6.110)",
-            "x/L of aₙ's pole (7.48)": "pole of a₂ on the x axis over L, computed (n = 2, no gravity; eq. 7.48)",
-            "x/L closed form": "1 + 2η² cos φ / (4 + 5η²), by hand (eq. 7.48)",
-            "η = L/ρ (7.49)": "size ratio of the bodies (eq. 7.49)",
+            **MEANINGS,
         }
 
     def focus_options(self):
