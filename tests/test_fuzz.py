@@ -8,7 +8,9 @@
   entry points belong to other parts of the package (``make fuzz`` reports them, non-zero).
 * The other tests plant defects and check that the harness reports them as failed: explorers
   (defined here) whose state depends on their history, that show numpy's overflow text, that
-  keep a value outside a slider's range, or that hang; functions that raise a foreign exception,
+  keep a value outside a slider's range, that hang, or whose picture cannot be drawn (the page asks for it
+  after every action); an explorer whose far time takes several updates ("ask again") keeps the
+  invariant, its fresh explorer asking again as the message says; functions that raise a foreign exception,
   return NaN from finite input, or wrap numpy's words in the package's error.  A clean explorer
   and a clean function must come out with no failure (the harness does not fail everything).
 """
@@ -212,3 +214,59 @@ def test_function_failures_are_found():
     assert _kinds(wrapped, finite).get(FOREIGN) == 30
     c = _kinds(clean, finite)
     assert set(c) <= {OK, PACKAGE} and c.get(OK) and c.get(PACKAGE), c
+
+
+class _Undrawable(_Plain):
+    """Its picture cannot be drawn near the top of its range (the page would show nothing)."""
+
+    def scene_picture(self, state, view=None):
+        if state["y"] >= 8.0:
+            raise ZeroDivisionError("float division by zero")
+        return super().scene_picture(state, view)
+
+
+def test_a_picture_that_cannot_be_drawn_is_found_and_the_run_goes_on():
+    tallies = fuzz_explorers(60, seed=3, classes={"_Undrawable": _Undrawable})
+    found = _failed(tallies, FOREIGN)
+    assert found, {k: dict(t.counts) for k, t in tallies.items()}
+    examples = " ".join(str(e) for t in tallies.values() for e in t.examples.values())
+    assert "ex.picture() raised ZeroDivisionError" in examples
+    assert sum(t.calls for t in tallies.values()) >= 60          # the run went on
+
+
+class _FarTime(_Plain):
+    """A time control whose far values take several updates: beyond 2 s past the time reached, the update
+    is refused with the package's words ("ask again") and the time reached moves on 2 s (a budget)."""
+
+    def make_controls(self):
+        return {**super().make_controls(), "time (s)": Step(0.0, 10.0, 0.5, 0.0, "time (s)").make("time")}
+
+    def compute(self, values, changed):
+        from planargeo.errors import SizeLimitError
+
+        reached = getattr(self, "reached", 0.0)
+        t = float(values["time (s)"])
+        if t > reached + 2.0:
+            self.reached = reached + 2.0
+            raise SizeLimitError(f"t = {t:g} s is more motion than one step computes; it is computed up to "
+                                 f"t = {self.reached:g} s now: ask again to go on from there, or press Play")
+        self.reached = max(reached, t)
+        return {"y": 2.0 * values["x"] + t}
+
+
+def test_a_far_time_is_reached_by_asking_again_in_the_fresh_check():
+    """The invariant holds for a time that one update cannot reach: the fresh explorer asks again."""
+    from fuzz.explorers import fresh_explorer
+
+    ex = _FarTime(display="agg")
+    for t in (2.0, 4.0, 6.0, 7.5):
+        ex.set(**{"time (s)": t})
+    assert ex.values["time (s)"] == 7.5 and ex.message == ""
+    from planargeo.errors import SizeLimitError
+
+    with pytest.raises(SizeLimitError, match="ask again"):
+        _FarTime(display="agg", **ex.values)
+    ref = fresh_explorer(_FarTime, dict(ex.values))
+    assert ref.values["time (s)"] == 7.5 and ref.readout_values == ex.readout_values
+    tallies = fuzz_explorers(60, seed=3, classes={"_FarTime": _FarTime})
+    assert not _failed(tallies), {k: t.examples for k, t in tallies.items() if t.failed}

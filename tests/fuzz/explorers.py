@@ -263,6 +263,15 @@ def _check_shown(ex) -> tuple[str, str] | None:
     return None
 
 
+def _picture_failure(ex) -> tuple[str, str] | None:
+    """The page draws the shown state after every action: :meth:`picture` must not raise."""
+    try:
+        ex.picture()
+    except Exception as exc:  # noqa: BLE001 - the page would show nothing
+        return FOREIGN, f"ex.picture() raised {type(exc).__name__}: {str(exc)[:200]}"
+    return None
+
+
 class ExplorerFuzzer:
     """Drive one explorer class with seeded action sequences and tally each action.
 
@@ -353,7 +362,7 @@ class ExplorerFuzzer:
                     except Exception:  # noqa: BLE001
                         return not fresh and i == len(steps) - 1
                 if not fresh:
-                    return _check_shown(ex) is not None or any(
+                    return _picture_failure(ex) is not None or _check_shown(ex) is not None or any(
                         issubclass(w.category, RuntimeWarning) for w in caught)
                 try:
                     ref = fresh_explorer(self.cls, dict(ex.values))
@@ -419,6 +428,7 @@ class ExplorerFuzzer:
                     warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always")
                 out = fn(ex)
+                drawn = _picture_failure(ex)        # what the page asks next
         except Hang as exc:
             self._record(action, HANG, str(exc), time.perf_counter() - t0)
             self.stopped.add(action)
@@ -435,11 +445,13 @@ class ExplorerFuzzer:
             return
         dt = time.perf_counter() - t0
         numpy_words = [w for w in caught if issubclass(w.category, RuntimeWarning)]
-        verdict = _check_shown(ex) or (check(out) if check else None) or (
+        verdict = drawn or _check_shown(ex) or (check(out) if check else None) or (
             (FOREIGN, f"a warning reached the user: {numpy_words[0].category.__name__}: {numpy_words[0].message} "
                       f"({Path(numpy_words[0].filename).name}:{numpy_words[0].lineno})") if numpy_words else None)
         if verdict:
             self._record(action, *verdict, dt)
+            if verdict is drawn:
+                self.ex = None                 # its picture cannot be drawn: a new explorer
             return
         updated = ex.n_updates > before[0]
         # refused: no new state and a message (not one left from an earlier refusal; exports only fail)
@@ -514,7 +526,13 @@ class ExplorerFuzzer:
             self._record("drag", FOREIGN, f"handle {h.name!r}: where() raised {type(exc).__name__}: {exc}", 0.0)
             self.ex = None
             return
-        x0, x1, y0, y1 = self._view()
+        try:
+            x0, x1, y0, y1 = self._view()
+        except Exception as exc:  # noqa: BLE001 - found by the action before; never stop the run
+            self.history.append(("ex.picture()", lambda e: e.picture()))
+            self._record("drag", FOREIGN, f"ex.picture() raised {type(exc).__name__}: {str(exc)[:200]}", 0.0)
+            self.ex = None
+            return
         size = max(abs(x1 - x0), abs(y1 - y0), 1e-9)
         if where is None:
             start = (float(0.5 * (x0 + x1)), float(0.5 * (y0 + y1)))
