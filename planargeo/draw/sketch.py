@@ -222,13 +222,14 @@ def panel(ax, points, *, margin=None, keep=None, min_span=None, fit_height=False
     return Picture(box, size=(w, h), ticks=False, margin=(0, 0, 0, 0))
 
 
-def show(pic: Picture, ax) -> list:
+def show(pic: Picture, ax=None) -> list:
     """Draw the picture on the axes ``ax`` (:func:`planargeo.draw.render.draw_picture`).
 
     Parameters
     ----------
     pic : Picture
-    ax : matplotlib.axes.Axes
+    ax : matplotlib.axes.Axes, optional
+        The axes :func:`panel` sized the picture to (default: the current axes).
 
     Returns
     -------

@@ -286,15 +286,8 @@ def legend(items, ax=None, *, loc="lower right", **kw):
     return get_ax(ax).legend(handles=handles, **opts)
 
 
-def _is_axes(x) -> bool:
-    """True for a matplotlib axes (how the former ax-first calls are recognised)."""
-    return hasattr(x, "transData") and hasattr(x, "annotate")
-
-
 def setup_axes(limits=None, ax=None, *, grid=False, axis_off=True):
     """Equal-aspect geometric axes with optional ``limits = (x0, x1, y0, y1)``.
-
-    The former call ``setup_axes(ax, limits)`` (axes first) is still read correctly.
 
     Parameters
     ----------
@@ -311,16 +304,7 @@ def setup_axes(limits=None, ax=None, *, grid=False, axis_off=True):
     -------
     matplotlib.axes.Axes
         The axes set up.
-
-    Raises
-    ------
-    InputError
-        Axes given twice (first argument and ``ax``).
     """
-    if _is_axes(limits):                    # the former order setup_axes(ax, limits)
-        if _is_axes(ax):
-            raise InputError("setup_axes: ax given twice (first argument and ax=)")
-        limits, ax = ax, limits
     ax = get_ax(ax)
     ax.set_aspect("equal", adjustable="box")
     if limits is not None:
