@@ -16,12 +16,13 @@ checkpoint by checkpoint) spends one the same way and is refused in the same wor
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 
 from planargeo.errors import InputError, SingularConfigurationError, SizeLimitError
 
-__all__ = ["Motion", "Budget", "MAX_EVALS"]
+__all__ = ["Motion", "Budget", "MAX_EVALS", "refusal_on_picture"]
 
 #: Evaluations of the dynamics one call may spend (about 5 s for a 20-link chain).
 MAX_EVALS = 250_000
@@ -84,6 +85,32 @@ class Budget:
             f"t = {t:.4g} s is more motion than one step computes ({self.max_evals:,} evaluations "
             f"of the dynamics); it is computed up to t = {reached:.4g} s now: ask again to "
             f"go on from there, or press Play")
+
+
+def refusal_on_picture(text: str) -> str | None:
+    """The short form of a :meth:`Budget.refusal` for the picture, or None for another message.
+
+    The full message is too long for the picture (the base cuts it before "ask again").
+
+    Parameters
+    ----------
+    text : str
+
+    Returns
+    -------
+    str or None
+
+    Examples
+    --------
+    >>> refusal_on_picture(str(Budget(10).refusal(30.0, 1.5)))
+    'too far for one step: computed up to 1.5 s; ask again to go on'
+    >>> refusal_on_picture("rod too short") is None
+    True
+    """
+    if "more motion than one step computes" not in text:
+        return None
+    far = re.search(r"computed up to t = (\S+) s", text)
+    return f"too far for one step: computed up to {far.group(1) if far else '?'} s; ask again to go on"
 
 
 class Motion:

@@ -35,7 +35,6 @@ last good state stays and the message names the reason.
 from __future__ import annotations
 
 import math
-import re
 
 import ipywidgets as W
 import numpy as np
@@ -46,7 +45,7 @@ from planargeo.errors import InputError, SceneError
 from planargeo.scenes.slider_crank import (DEAD_CENTRE_TOL, dead_centre_at, slider_crank_advance,
                                            slider_crank_model, slider_crank_reactions, slider_crank_solve)
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._motion import Budget
+from planargeo.widgets._motion import Budget, refusal_on_picture
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["SliderCrankExplorer"]
@@ -442,10 +441,8 @@ class SliderCrankExplorer(Explorer):
             short = "singular configuration: folded dead centre, the piston pin is on the crank pivot"
         elif "singular" in text:
             short = "singular configuration: the rod lies along the horizontal"
-        elif "more motion than one step computes" in text:
-            far = re.search(r"computed up to t = (\S+) s", text)
-            short = (f"too far for one step: computed up to {far.group(1) if far else '?'} s; "
-                     f"ask again to go on")
+        elif refusal_on_picture(text):
+            short = refusal_on_picture(text)
         else:
             short = super().figure_message(exc)
         return wrap_message(short)
