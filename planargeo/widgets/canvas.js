@@ -13,7 +13,8 @@
 // at most one in flight; while one is in flight only the latest request of each type is
 // kept, and the next is sent when the kernel's "ack" arrives.  While the synced "playing"
 // is true, a "tick" is sent as soon as the previous reply has arrived (the kernel computes
-// the next frame while the page paints this one).
+// the next frame while the page paints this one, and sends one more frame alone halfway to
+// the next tick; a "halt" message says that Play was refused in such a frame).
 const NS = "http://www.w3.org/2000/svg";
 const ANCHOR = { l: "start", c: "middle", r: "end" };
 const BASELINE = { b: "text-after-edge", t: "text-before-edge", c: "central" };
@@ -114,7 +115,12 @@ function render({ model, el }) {
 
   model.on("msg:custom", (m) => {
     if (!m) return;
-    if (m.type === "update") { apply(m); return; }
+    if (m.type === "update") { nPushed += 1; apply(m); return; }
+    if (m.type === "halt") {        // Play refused in a frame the kernel sent alone
+      status.textContent = m.message || "";
+      tickHalted = true;
+      return;
+    }
     if (m.type !== "ack") return;
     const mine = m.client === client || m.client === null || m.client === undefined;
     const tAck = performance.now();
@@ -269,7 +275,7 @@ function render({ model, el }) {
     return true;
   }
 
-  let nPaint = 0;
+  let nPaint = 0, nPushed = 0, paintAsked = false;
   const paintTimes = [];
   function apply(u) {
     const full = u.base === null || u.base === undefined;
@@ -296,7 +302,14 @@ function render({ model, el }) {
     if (u.tips) st.tips = u.tips;
     st.version = u.version;
     nPaint += 1;
-    requestAnimationFrame(() => { paintTimes.push(performance.now()); if (paintTimes.length > 1000) paintTimes.shift(); });
+    if (!paintAsked) {              // one entry per animation frame that shows a new picture
+      paintAsked = true;
+      requestAnimationFrame(() => {
+        paintAsked = false;
+        paintTimes.push(performance.now());
+        if (paintTimes.length > 1000) paintTimes.shift();
+      });
+    }
     if (rebuild) { if (!buildFrame()) return; }
     if (!frame) return;
     // elements: drop the gone, redraw the changed (all after a new view), keep the order
@@ -471,7 +484,7 @@ function render({ model, el }) {
   if (snap) apply({ ...snap, base: null });
   askSync();        // the snapshot may be older than this view (a second display): the kernel knows
   root.__planargeo = { ping: () => send({ type: "ping" }), busy: () => inflight || pending.size > 0, stats,
-                       handlePaints, paintTimes, painted: () => nPaint, version: () => st.version,
+                       handlePaints, paintTimes, painted: () => nPaint, pushed: () => nPushed, version: () => st.version,
                        elements: () => st.els.size, status: () => status.textContent,
                        text: (id) => { const e = st.els.get(id); const t = e && (e.parts || []).find((q) => q[0] === "T");
                                        return t ? t[5] : null; } };

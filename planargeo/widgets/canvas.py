@@ -64,6 +64,15 @@ time since the last tick and sets the new picture (its update travels in the ack
 message is shown in the page's status line, and the page sends no further tick until
 ``playing`` is set again.  A tick that arrives after Play stopped does nothing.
 
+The kernel keeps two frames in flight: after answering a tick it calls ``on_tick()``
+once more, halfway to the next tick (the interval between the last two ticks, less
+the time a frame takes), and sends that frame alone as an ``update``.  The page
+still sends one request at a time; a frame a page cannot paint in time is only a
+display frame dropped (each frame covers the wall-clock time since the one before,
+so no physics step is skipped).  A refusal in such a frame reaches the page as
+``{"type": "halt", "message": str}`` (the page shows it and stops ticking).  There
+is no extra frame without a running event loop (no kernel: tests, scripts).
+
 Examples
 --------
 >>> seen = []
@@ -116,9 +125,11 @@ Updates carry what changed: a moved point sends its parts, not its colour.
 """
 from __future__ import annotations
 
+import asyncio
 import contextlib
 import math
 import numbers
+import time
 from pathlib import Path
 from typing import Any, Callable
 
@@ -313,6 +324,11 @@ class PictureCanvas(anywidget.AnyWidget):
         self._tips: dict = {}
         self._dirty = False
         self._in_request = False
+        self._extra = None                 # the pending extra Play frame (an event loop's handle)
+        self._tick_at = None               # when the last tick arrived (perf_counter)
+        self._tick_gap = None              # seconds between the last two ticks
+        self._tick_cost = 0.0              # seconds the last tick's frame took
+        self.n_extra_frames = 0
         super().__init__(**kwargs)
         self.on_drag = on_drag
         self.on_view = on_view
@@ -463,7 +479,14 @@ class PictureCanvas(anywidget.AnyWidget):
                 return True, "", {}
             if kind == "tick":
                 if self.playing and self.on_tick is not None:
+                    self._cancel_extra()
+                    now = time.perf_counter()
+                    if self._tick_at is not None:
+                        self._tick_gap = now - self._tick_at
+                    self._tick_at = now
                     self.on_tick()
+                    self._tick_cost = time.perf_counter() - now
+                    return True, "", {"extra": True}
                 return True, "", {}
             if kind == "view":
                 box = msg.get("box")
@@ -519,3 +542,35 @@ class PictureCanvas(anywidget.AnyWidget):
         if update is not None:
             ack["update"] = update
         self.send(ack)
+        if extra.get("extra") and ack["ok"] and self.playing:
+            self._schedule_extra()
+
+    # ------------------------------------------------------------------ Play: two frames in flight
+    def _schedule_extra(self) -> None:
+        """Call ``on_tick`` once more halfway to the next tick (module docstring, Play)."""
+        try:
+            loop = asyncio.get_running_loop()
+        except RuntimeError:       # no event loop (no kernel): one frame per tick
+            return
+        gap = self._tick_gap if self._tick_gap is not None else 0.0
+        delay = min(max(0.5 * gap - self._tick_cost, 0.0), 0.1)
+        self._extra = loop.call_later(delay, self._extra_frame)
+
+    def _cancel_extra(self) -> None:
+        handle, self._extra = self._extra, None
+        if handle is not None:
+            handle.cancel()
+
+    def _extra_frame(self) -> None:
+        """The extra Play frame: ``on_tick`` outside a request; its picture goes as an update."""
+        self._extra = None
+        if not self.playing or self.on_tick is None or self._in_request:
+            return
+        try:
+            with self.around():
+                self.on_tick()
+            self.n_extra_frames += 1
+        except PlanargeoError as exc:
+            self.send({"type": "halt", "message": str(exc)})
+        except Exception as exc:  # noqa: BLE001 - nothing escapes into the kernel's event loop
+            self.send({"type": "halt", "message": f"not taken: {type(exc).__name__}: {exc}"})

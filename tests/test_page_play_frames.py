@@ -1,0 +1,94 @@
+"""Play in the page: the kernel keeps two frames in flight, and no physics step is skipped.
+
+No browser here: the canvas's messages are caught, and an asyncio loop stands in for the
+kernel's (the page's path is driven by tests/browser/test_page_explorers.py).  Each tick the
+page sends is answered with a frame, and one more frame follows alone halfway to the next
+tick; every frame covers the wall-clock time since the one before (a clock the test
+controls), so the time shown is the wall time played, frame by frame.
+"""
+from __future__ import annotations
+
+import asyncio
+
+from planargeo.errors import PlanargeoError
+from planargeo.widgets import ChainExplorer
+from planargeo.widgets.canvas import PictureCanvas
+
+FRAME_S = 0.03          # wall seconds each frame's clock advances (set by the test's clock)
+
+
+def _playing_chain():
+    """A chain playing at 1× on a clock that moves FRAME_S seconds per frame, and what its canvas sends."""
+    ex = ChainExplorer(display="page", links=3)
+    clock = [0.0]
+    ex.wall_clock = lambda: clock[0]
+    c = ex.canvas
+    sent = []
+    c.send = lambda m, *a, **k: sent.append(m)
+    tick = c.on_tick
+
+    def on_tick():
+        clock[0] += FRAME_S
+        tick()
+
+    c.on_tick = on_tick
+    ex.play_control.playing = True          # linked to the canvas's playing
+    return ex, c, sent
+
+
+def _ticks(c, n: int, gap: float = 0.15) -> None:
+    async def run():
+        for k in range(n):
+            c._on_msg(None, {"type": "tick", "seq": k, "client": "t"}, None)
+            await asyncio.sleep(gap)
+    asyncio.run(run())
+
+
+def test_each_tick_brings_a_second_frame_and_the_frames_chain():
+    ex, c, sent = _playing_chain()
+    assert c.playing and ex.shown_values["time (s)"] == 0.0
+    v0 = c.version
+    _ticks(c, 4)
+    kinds = [m["type"] for m in sent if m["type"] in ("ack", "update")]
+    assert kinds == ["ack", "update"] * 4
+    assert all(m["ok"] for m in sent if m["type"] == "ack")
+    updates = [m["update"] if m["type"] == "ack" else m for m in sent]
+    # applied in order, each update applies to the version before it
+    assert [u["base"] for u in updates] == list(range(v0, v0 + 8))
+    assert c.version == v0 + 8 and c.n_extra_frames == 4
+    # no physics step skipped: the time shown is the wall time played (the first frame
+    # also covers Play's lead of one frame, 1 / play_fps)
+    want = 8 * FRAME_S + 1.0 / ex.play_fps
+    assert abs(ex.shown_values["time (s)"] - want) < 1e-9
+    assert abs(ex.readout_values["t (s)"] - want) < 1e-9
+
+
+def test_no_second_frame_once_play_stops_or_without_an_event_loop():
+    ex, c, sent = _playing_chain()
+    ex.play_control.playing = False
+    _ticks(c, 2)
+    assert [m["type"] for m in sent] == ["ack", "ack"] and c.n_extra_frames == 0
+    assert ex.shown_values["time (s)"] == 0.0
+    ex.play_control.playing = True
+    del sent[:]
+    for k in range(3):                      # no running loop: one frame per tick
+        c._on_msg(None, {"type": "tick", "seq": k}, None)
+    assert [m["type"] for m in sent] == ["ack"] * 3 and c.n_extra_frames == 0
+
+
+def test_a_refusal_in_the_second_frame_halts_the_page_with_its_reason():
+    calls = []
+
+    def on_tick():
+        calls.append(1)
+        if len(calls) == 2:
+            raise PlanargeoError("the motion ends at t = 2 s")
+
+    c = PictureCanvas(on_tick=on_tick)
+    sent = []
+    c.send = lambda m, *a, **k: sent.append(m)
+    c.playing = True
+    _ticks(c, 1)
+    assert len(calls) == 2
+    assert [m["type"] for m in sent] == ["ack", "halt"]
+    assert sent[0]["ok"] and sent[1]["message"] == "the motion ends at t = 2 s"
