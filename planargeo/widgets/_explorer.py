@@ -29,14 +29,15 @@ from planargeo.widgets.controls import cached
 from planargeo.widgets.handles import Handle
 
 
-def _shown(ex) -> dict:
+def shown(ex) -> dict:
+    """The control values on show (the values themselves before the first state is shown)."""
     return ex.shown_values or ex.values
 
 
 def xy_handle(ex, name: str, kx: str, ky: str, when=None) -> Handle:
     """A handle at ``(values[kx], values[ky])`` that sets both; not draggable while ``when()`` is false."""
     def where():
-        v = _shown(ex)
+        v = shown(ex)
         return (v[kx], v[ky]) if when is None or when() else None
 
     return Handle(name, where, lambda x, y: {kx: x, ky: y})
@@ -54,7 +55,7 @@ def arrow_handle(ex, name: str, kx: str, ky: str, kangle: str, ksize: str | None
         return -1.0 if flip and v[ksize] < 0 else 1.0
 
     def where():
-        v = _shown(ex)
+        v = shown(ex)
         if when is not None and not when():
             return None
         length = per * v[ksize] if per is not None else sense(v) * arm
@@ -62,7 +63,7 @@ def arrow_handle(ex, name: str, kx: str, ky: str, kangle: str, ksize: str | None
         return (v[kx] + length * math.cos(a), v[ky] + length * math.sin(a))
 
     def drag(x, y):
-        v = _shown(ex)
+        v = shown(ex)
         d = np.array([x - v[kx], y - v[ky]]) * sense(v)
         n = float(np.hypot(*d))
         if not n > 1e-9:
@@ -139,7 +140,7 @@ class ChainBodies:
         try:
             return super().set(**values)
         finally:
-            self._span(int(_shown(self)["bodies n"]))
+            self._span(int(shown(self)["bodies n"]))
 
     def mechanism_points(self):
         # Points the view must hold: every joint of the chain and the tip.

@@ -45,7 +45,7 @@ from planargeo.geometry.projective import is_at_infinity
 from planargeo.screws.special import twists_case, wrenches_case
 from planargeo.screws.twists import Twist, Wrench, add_twists, add_wrenches
 from planargeo.widgets._points import point_value
-from planargeo.widgets._explorer import _shown, arrow_handle, rows, xy_handle
+from planargeo.widgets._explorer import shown, arrow_handle, rows, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["ScrewSumExplorer"]
@@ -295,7 +295,7 @@ class ScrewSumExplorer(Explorer):
         out = []
         for k in (1, 2):
             def kind_is(kind, k=k):
-                return lambda: _shown(self).get(f"kind{k}") == kind
+                return lambda: shown(self).get(f"kind{k}") == kind
             xy = (f"x{k}", f"y{k}")
             turn = (f"angle{k}", f"size{k}")
             out += [xy_handle(self, f"v{k}", *xy, when=kind_is("rotation")),

@@ -46,7 +46,7 @@ from planargeo.scenes.subspace import subspace_state, unit_direction
 from planargeo.screws.twists import inertia_matrix
 from planargeo.geometry.projective import is_at_infinity, is_ideal
 from planargeo.widgets._points import point_value
-from planargeo.widgets._explorer import _shown, arrow_handle, grown_view, xy_handle
+from planargeo.widgets._explorer import shown, arrow_handle, grown_view, xy_handle
 from planargeo.widgets.base import Explorer, Step
 
 __all__ = ["SubspaceExplorer", "JOINT_OPTIONS", "SHOW_OPTIONS"]
@@ -174,7 +174,7 @@ class SubspaceExplorer(Explorer):
     # ------------------------------------------------------------------ handles
     def handles(self):
         # Draggable handles: the joint, its direction (not a pivot's), the force's point and its arrow tip.
-        slides = lambda: JOINT_OPTIONS[_shown(self)["joint"]] != "revolute"
+        slides = lambda: JOINT_OPTIONS[shown(self)["joint"]] != "revolute"
         return [xy_handle(self, "joint", "joint x", "joint y"),
                 arrow_handle(self, "joint direction", "joint x", "joint y", "joint angle", arm=DIR_HANDLE,
                              when=slides),
