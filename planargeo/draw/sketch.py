@@ -245,7 +245,7 @@ def show(pic: Picture, ax=None) -> list:
 def label(pic: Picture, id: str, xy, text: str, *, offset=(5, 5), ha: str = "left",
           va: str = "bottom", role: str = "text", color=None, symbol: str = "", desc: str = "",
           fixed: bool = False) -> dict:
-    """A text at the data point ``xy``, moved by ``offset`` points (as the old ``label``).
+    """A text at the data point ``xy``, moved by ``offset`` points.
 
     The picture's placer keeps the text at the asked place, or moves it to a free
     spot around ``xy`` if another label is there (``fixed``: it never moves).
@@ -726,7 +726,7 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.8, angle: float = 0.0,
     """A ground line ``width`` long centred on ``xy``, at ``angle``, hatched on its right-hand side.
 
     Each hatch stroke goes from a point of the line by ``depth`` along ``-(e + n)``
-    (``e`` the line's direction, ``n`` its left normal), as the old ``draw_ground``.
+    (``e`` the line's direction, ``n`` its left normal).
 
     Parameters
     ----------
@@ -896,7 +896,7 @@ def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: 
     """The centre-of-mass symbol: a disc quartered black and white, ``radius`` data units.
 
     Two elements: the white disc with its rim (``id + ":disc"``) and the two black
-    quarters (``id``, first and third quadrants, as the old ``draw_com``).
+    quarters (``id``, first and third quadrants).
 
     Parameters
     ----------
@@ -944,7 +944,7 @@ _com, _ground = com, ground      # for the functions with keywords of these name
 def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, labels: bool = True,
           ground: bool = True, pin_radius: float = 0.05, show_com: bool = True, alpha: float = 0.35,
           names=None, contacts: bool = True) -> dict:
-    """A model's bodies, joints and contacts at the state in ``data`` (the old ``draw_model``).
+    """A model's bodies, joints and contacts at the state in ``data``.
 
     A body with a shapely ``shape`` is drawn from it (moved by its pose); otherwise
     as a rounded link from its joint to each child's joint (or, for a tip body,
