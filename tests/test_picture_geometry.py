@@ -695,3 +695,14 @@ def test_the_momentum_at_an_off_origin_centre_of_mass_is_drawn():
     pic = Picture((-3.0, 3.0, -3.0, 3.0), size=(300, 300))
     power(pic, 1.5 * unit_rotation(c), inertia_matrix(2.0, c, 0.5))
     assert _el(pic, "p")["parts"]
+
+
+def test_importing_the_drawing_package_loads_no_matplotlib():
+    """``import planargeo.draw`` gives pictures without matplotlib: only the renderers load it."""
+    import subprocess
+    import sys
+
+    code = ("import sys, planargeo.draw; "
+            "print('matplotlib' in sys.modules, type(planargeo.draw.style).__name__, planargeo.draw.Picture.__name__)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
+    assert out == ["False", "module", "Picture"]

@@ -35,8 +35,12 @@ Examples
 >>> pic.point("v", [0.0, 0.0, 1.0], symbol="v")       # a unit rotation about the origin
 >>> [part["p"] for part in pic.elements[0]["parts"]]
 ['mark', 'glyph', 'text']
+>>> import planargeo.draw.style as style_module      # the module, not a function of the same name
+>>> style_module.COLORS["twist"]
+'#0072B2'
 """
 from planargeo.draw.picture import Picture  # noqa: F401
-from planargeo.draw.style import COLORS, OKABE_ITO, rc_context, style  # noqa: F401
+from planargeo.draw.style import COLORS, OKABE_ITO, rc_context  # noqa: F401
 
-__all__ = ["Picture", "COLORS", "OKABE_ITO", "rc_context", "style"]
+# (the function style.style is not exported here: the name would hide the module planargeo.draw.style)
+__all__ = ["Picture", "COLORS", "OKABE_ITO", "rc_context"]
