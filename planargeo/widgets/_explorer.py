@@ -7,8 +7,9 @@ hold points, sliders that span a chain of ``n`` bodies, a scene time kept as tex
 * :func:`grown_view`: a view grown to hold points, no side shorter than their extent;
 * :class:`ChainBodies`: an explorer of a chain of ``bodies n`` (its joints in view, its model
   cached, a slider that spans the chain, the tip dragged to bend it);
-* :class:`SceneTime`: Play advances a scene time kept in a text control, and a change of the
-  initial state starts it again at 0;
+* :class:`SceneTime`: Play advances a scene time kept in a text control (:func:`time_text`,
+  :func:`time_value`), and a change of the initial state starts it again at 0; :func:`run_to`
+  integrates a run to a time from its checkpoints;
 * :func:`rows`: readout rows as data, ``{name: (unit, meaning)}`` -> units and meanings.
 
 Examples
@@ -24,7 +25,7 @@ import math
 
 import numpy as np
 
-from planargeo.errors import DegenerateGeometryError
+from planargeo.errors import DegenerateGeometryError, InputError
 from planargeo.widgets.controls import cached
 from planargeo.widgets.handles import Handle
 
@@ -163,6 +164,90 @@ class ChainBodies:
         return Handle("tip", where, drag)
 
 
+def time_text(t: float) -> str:
+    """The scene time ``t`` (s) as the read-only time field holds it: to the nanosecond, no trailing zeros.
+
+    Parameters
+    ----------
+    t : float
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> time_text(0.0), time_text(0.1 + 0.2), time_text(59.99999999999873)
+    ('0', '0.3', '60')
+    """
+    text = f"{round(float(t), 9):.9f}".rstrip("0").rstrip(".")
+    return "0" if text in ("", "-0") else text
+
+
+def time_value(text, limit: float) -> float:
+    """The scene time (s) of the time field's ``text``, or :class:`InputError` naming the field and its range.
+
+    Parameters
+    ----------
+    text : str or float
+    limit : float
+        The end of the time (s).
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> time_value("2.5", 10.0)
+    2.5
+    """
+    try:
+        t = float(text)
+    except (TypeError, ValueError):
+        raise InputError(f"t (s) must be a time in seconds, got {text!r}") from None
+    if not 0.0 <= t <= limit + 1e-9:
+        raise InputError(f"t (s) must lie between 0 and {limit:g} s, got {text!r}")
+    return t
+
+
+def run_to(run: dict, t: float, checkpoint: float, step, budget=None):
+    """``(state, drift, events)`` at scene time ``t`` of ``run``, its checkpoints extended in place.
+
+    ``run`` holds ``ck`` (the state at every ``checkpoint`` seconds from 0), ``drift`` (the largest
+    residual up to each) and ``events`` (``(time, what)``).  The run is integrated from checkpoint to
+    checkpoint, then from the last one before ``t`` to ``t``: the same operations whatever the
+    history, so that the controls alone decide the state.  ``step(state, h, t0) -> (state,
+    residual, events)`` advances ``h`` seconds from ``t0``; a ``budget``
+    (:class:`planargeo.widgets._motion.Budget`) spent refuses the next checkpoint.
+    """
+    ck = run["ck"]
+    k = int(math.floor(t / checkpoint + 1e-9))
+    while len(ck) <= k:
+        n = len(ck) - 1
+        if budget is not None and budget.spent:
+            raise budget.refusal(t, n * checkpoint)
+        state, res, events = step(ck[n], checkpoint, n * checkpoint)
+        ck.append(state)
+        run["drift"].append(max(run["drift"][-1], res))
+        run["events"] += events
+    state, drift = ck[k], run["drift"][k]
+    events = [e for e in run["events"] if e[0] <= k * checkpoint]
+    rest = t - k * checkpoint
+    if rest > 1e-12:
+        state, res, more = step(state, rest, k * checkpoint)
+        drift, events = max(drift, res), events + more
+    return state, drift, events
+
+
+def keep_run(runs: dict, key, run: dict, most: int = 2) -> None:
+    """Keep ``run`` under ``key`` as the newest of ``runs``, the ``most`` newest only."""
+    runs.pop(key, None)
+    runs[key] = run
+    while len(runs) > most:
+        runs.pop(next(iter(runs)))
+
+
 class SceneTime:
     """Play advances a scene time kept as text in the control ``"t (s)"`` up to :attr:`t_end`.
 
@@ -178,7 +263,5 @@ class SceneTime:
         return {}
 
     def play_step(self, values, dt):
-        from planargeo.widgets.slider_crank import time_text, time_value
-
         t = time_value(values["t (s)"], self.t_end) + float(dt)
         return None if t > self.t_end + 1e-9 else {"t (s)": time_text(t)}

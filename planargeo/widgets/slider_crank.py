@@ -45,6 +45,7 @@ from planargeo.errors import InputError, SceneError
 from planargeo.scenes.slider_crank import (DEAD_CENTRE_TOL, dead_centre_at, slider_crank_advance,
                                            slider_crank_model, slider_crank_reactions, slider_crank_solve)
 from planargeo.simulate.integrate import energy
+from planargeo.widgets._explorer import SceneTime, keep_run, run_to, time_value
 from planargeo.widgets._motion import Budget, refusal_on_picture
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
@@ -61,53 +62,6 @@ T_END = 10.0
 #: :data:`planargeo.widgets._motion.MAX_EVALS`, in the same seconds: one evaluation of the closed loop costs
 #: about 40 of a 20-link chain's, ~0.8 ms; about 2.4 scene seconds of the default crank per update)
 UPDATE_EVALS = 6_000
-
-
-def time_text(t: float) -> str:
-    """The scene time ``t`` (s) as the read-only time field holds it: to the nanosecond, no trailing zeros.
-
-    Parameters
-    ----------
-    t : float
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> time_text(0.0), time_text(0.1 + 0.2), time_text(59.99999999999873)
-    ('0', '0.3', '60')
-    """
-    text = f"{round(float(t), 9):.9f}".rstrip("0").rstrip(".")
-    return "0" if text in ("", "-0") else text
-
-
-def time_value(text, limit: float) -> float:
-    """The scene time (s) of the time field's ``text``, or :class:`InputError` naming the field and its range.
-
-    Parameters
-    ----------
-    text : str or float
-    limit : float
-        The end of the time (s).
-
-    Returns
-    -------
-    float
-
-    Examples
-    --------
-    >>> time_value("2.5", 10.0)
-    2.5
-    """
-    try:
-        t = float(text)
-    except (TypeError, ValueError):
-        raise InputError(f"t (s) must be a time in seconds, got {text!r}") from None
-    if not 0.0 <= t <= limit + 1e-9:
-        raise InputError(f"t (s) must lie between 0 and {limit:g} s, got {text!r}")
-    return t
 
 
 def wrap_message(text: str, width: int = 38) -> str:
@@ -133,7 +87,7 @@ def wrap_message(text: str, width: int = 38) -> str:
     return "\n".join(textwrap.wrap(text, width)) or text
 
 
-class SliderCrankExplorer(Explorer):
+class SliderCrankExplorer(SceneTime, Explorer):
     """Slider-crank of thesis 9.6: every pin and bearing force (9.61), Play through ``simulate_loops``.
 
     Parameters
@@ -162,6 +116,7 @@ class SliderCrankExplorer(Explorer):
     slug = "slider-crank"
     figsize = (5.6, 6.2)
     display_controls = ("reaction forces", "velocity poles", "acceleration poles")
+    initial, t_end = INITIAL, T_END
     #: scene seconds per second of Play at speed 1× (slow motion: the crank turns at ~20 rad/s; the base
     #: shows the factor beside the speed menu)
     time_scale = 0.1
@@ -242,56 +197,26 @@ class SliderCrankExplorer(Explorer):
 
         return [Handle("crank pin", pin, drag_pin), Handle("piston", piston, drag_piston)]
 
-    # -------------------------------------------------------------------- Play
-    def adjust(self, values, changed):
-        # A change of the initial state starts the time again (``t = 0``), unless ``t`` is set with it.
-        if set(changed) & set(INITIAL) and "t (s)" not in changed and values["t (s)"] != "0":
-            return {"t (s)": "0"}
-        return {}
-
-    def play_step(self, values, dt):
-        # One Play step: the scene time advances by ``dt`` (the integration runs in :meth:`compute`).
-        # Returns The next time, None at the end of the time slider.
-        t = time_value(values["t (s)"], T_END) + float(dt)
-        return None if t > T_END + 1e-9 else {"t (s)": time_text(t)}
-
     # ------------------------------------------------------------------ state
     def _run_state(self, model, run, t, l, drive):
-        """``(psi, psidot, drift, passed)`` at scene time ``t`` of ``run`` (its checkpoints extended in place).
-
-        Integrated from checkpoint to checkpoint (``CHECKPOINT`` scene seconds apart),
-        then from the last one before ``t``: the same operations whatever the history.
-        One call spends at most :data:`UPDATE_EVALS` evaluations (a :class:`Budget`, give or
-        take the last checkpoint's): a time beyond raises its
+        """``(psi, psidot, drift, passed)`` at scene time ``t`` of ``run`` (:func:`run_to`, ``CHECKPOINT``
+        scene seconds apart).  One call spends at most :data:`UPDATE_EVALS` evaluations (a :class:`Budget`,
+        give or take the last checkpoint's): a time beyond raises its
         :class:`~planargeo.errors.SizeLimitError`, the checkpoints done kept in ``run``.
         """
         r = self.params["r"]
-        ck = run["ck"]
-        k = int(math.floor(t / CHECKPOINT + 1e-9))
         budget = Budget(UPDATE_EVALS)
 
-        def step(psi, psidot, h, t0):
+        def step(state, h, t0):
+            psi, psidot = state
             out = slider_crank_advance(model, psi, psidot, h, r, l, drive, rtol=self.play_rtol,
                                        atol=self.play_rtol * 1e-2)
             budget.charge(out["nfev"])
             turn = out["psi"] - psi
             passed = [(t0 + (h * (a - psi) / turn if turn else 0.0), name) for name, a in out["dead_centres"]]
-            return out["psi"], out["psidot"], out["position_residual"], passed
+            return (out["psi"], out["psidot"]), out["position_residual"], passed
 
-        while len(ck) <= k:
-            n = len(ck) - 1
-            if budget.spent:
-                raise budget.refusal(t, n * CHECKPOINT)
-            psi, psidot, res, passed = step(*ck[n], CHECKPOINT, n * CHECKPOINT)
-            ck.append((psi, psidot))
-            run["drift"].append(max(run["drift"][-1], res))
-            run["passed"] += passed
-        psi, psidot = ck[k]
-        drift, passed = run["drift"][k], [e for e in run["passed"] if e[0] <= k * CHECKPOINT]
-        rest = t - k * CHECKPOINT
-        if rest > 1e-12:
-            psi, psidot, res, more = step(psi, psidot, rest, k * CHECKPOINT)
-            drift, passed = max(drift, res), passed + more
+        (psi, psidot), drift, passed = run_to(run, t, CHECKPOINT, step, budget)
         return psi, psidot, drift, passed
 
     def compute(self, values, changed):
@@ -305,14 +230,11 @@ class SliderCrankExplorer(Explorer):
         run = self._runs.get(key)
         if run is None:
             q0, qd0, sol0, _h = slider_crank_solve(model, psi0, float(values["crank speed"]), r, l, thick, drive)
-            run = {"ck": [(psi0, float(values["crank speed"]))], "drift": [0.0], "passed": [],
+            run = {"ck": [(psi0, float(values["crank speed"]))], "drift": [0.0], "events": [],
                    "E0": float(sum(energy(model, data=sol0.data)))}
         t = time_value(values["t (s)"], T_END)
         # kept before the integration: the checkpoints of a refused time stay for the next ask
-        self._runs.pop(key, None)
-        self._runs[key] = run
-        while len(self._runs) > 2:
-            self._runs.pop(next(iter(self._runs)))
+        keep_run(self._runs, key, run)
         psi, psidot, drift, passed = self._run_state(model, run, t, l, drive)
         q, qd, sol, h = slider_crank_solve(model, psi, psidot, r, l, thick, drive)
         E = float(sum(energy(model, data=sol.data)))
@@ -323,10 +245,7 @@ class SliderCrankExplorer(Explorer):
         st["configuration"] = name
         if name and t == 0.0:
             st["message"] = f"dead centre ({name}): a force on the piston cannot turn the crank here"
-        self._runs.pop(key, None)
-        self._runs[key] = run
-        while len(self._runs) > 2:
-            self._runs.pop(next(iter(self._runs)))
+        keep_run(self._runs, key, run)
         return st
 
     def banner_of(self, st) -> str:

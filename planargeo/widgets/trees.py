@@ -38,9 +38,8 @@ from planargeo.errors import InputError, PlanargeoError
 from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_reactions,
                                     tree_solve)
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._explorer import SceneTime, rows
+from planargeo.widgets._explorer import SceneTime, keep_run, rows, run_to, time_value
 from planargeo.widgets.base import Explorer, Handle, Step, cached
-from planargeo.widgets.slider_crank import time_text, time_value
 
 __all__ = ["TreeExplorer"]
 
@@ -219,35 +218,16 @@ class TreeExplorer(SceneTime, Explorer):
 
     # ------------------------------------------------------------------- Play (SceneTime: t from 0 to T_END)
     def _run_state(self, model, run: dict, t: float):
-        """``(q, qd, drift, events)`` at scene time ``t`` of ``run`` (its checkpoints extended in place).
+        """``(q, qd, drift, events)`` at scene time ``t`` of ``run`` (:func:`run_to`, ``CHECKPOINT`` seconds apart)."""
+        def step(state, h, t0):
+            try:
+                out = tree_advance(model, *state, h, rtol=PLAY_RTOL, atol=PLAY_RTOL * 1e-2)
+            except PlanargeoError as exc:
+                raise PlanargeoError(f"the loops locked at t ≈ {t0:.2f} s: {exc}") from exc
+            return (out["q"], out["qd"]), out["position_residual"], [(t0 + float(e["t"]), e["kind"])
+                                                                     for e in out["events"]]
 
-        The run is integrated from checkpoint to checkpoint, ``k × CHECKPOINT`` seconds
-        apart, then from the last checkpoint before ``t`` to ``t``: the same operations
-        whatever the history, so that the controls alone decide the state.
-        """
-        ck = run["ck"]
-        k = int(math.floor(t / CHECKPOINT + 1e-9))
-        while len(ck) <= k:
-            n = len(ck) - 1
-            q0, qd0 = ck[n]
-            try:
-                out = tree_advance(model, q0, qd0, CHECKPOINT, rtol=PLAY_RTOL, atol=PLAY_RTOL * 1e-2)
-            except PlanargeoError as exc:
-                raise PlanargeoError(f"the loops locked at t ≈ {n * CHECKPOINT:.2f} s: {exc}") from exc
-            ck.append((out["q"], out["qd"]))
-            run["drift"].append(max(run["drift"][-1], out["position_residual"]))
-            run["events"] += [(n * CHECKPOINT + float(e["t"]), e["kind"]) for e in out["events"]]
-        q, qd = ck[k]
-        drift, events = run["drift"][k], [e for e in run["events"] if e[0] <= k * CHECKPOINT]
-        rest = t - k * CHECKPOINT
-        if rest > 1e-12:
-            try:
-                out = tree_advance(model, q, qd, rest, rtol=PLAY_RTOL, atol=PLAY_RTOL * 1e-2)
-            except PlanargeoError as exc:
-                raise PlanargeoError(f"the loops locked at t ≈ {k * CHECKPOINT:.2f} s: {exc}") from exc
-            q, qd = out["q"], out["qd"]
-            drift = max(drift, out["position_residual"])
-            events = events + [(k * CHECKPOINT + float(e["t"]), e["kind"]) for e in out["events"]]
+        (q, qd), drift, events = run_to(run, t, CHECKPOINT, step)
         return q, qd, drift, events
 
     def compute(self, values, changed):
@@ -285,10 +265,7 @@ class TreeExplorer(SceneTime, Explorer):
             st["cond"] = float(sol.cond)
         # the state is good: keep its pose and run (the last two runs)
         cached(self._poses, pose_key, lambda: pose)
-        self._runs.pop(key, None)
-        self._runs[key] = run
-        while len(self._runs) > 2:
-            self._runs.pop(next(iter(self._runs)))
+        keep_run(self._runs, key, run)
         return st
 
     def scene_picture(self, state, view=None):
