@@ -706,3 +706,31 @@ def test_importing_the_drawing_package_loads_no_matplotlib():
             "print('matplotlib' in sys.modules, type(planargeo.draw.style).__name__, planargeo.draw.Picture.__name__)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
     assert out == ["False", "module", "Picture"]
+
+
+def test_a_models_bodies_joints_and_centres_of_mass_are_named_once():
+    """Bodies named "body 1", "crank", "3": each description names the body once ("body 1", not
+    "body body 1"); the centres of mass are c₁, c₂, c₃, the pins joint 1, 2, 3."""
+    from planargeo.mechanics.kinematics import kinematics
+    from planargeo.mechanics.model import Body, Joint, Model
+
+    bodies = [Body(1.0, (0.5, 0.0), 0.1, name=n) for n in ("body 1", "crank", "3")]
+    joints = [Joint("revolute", (0.0, 0.0, 0.0)), Joint("revolute", (1.0, 0.0, 0.0)),
+              Joint("revolute", (1.0, 0.0, 0.0))]
+    m = Model(bodies, joints, [-1, 0, 1], (0.0, 0.0))
+    pic = _pic((-1.0, 4.0, -2.0, 2.0))
+    out = sketch.model(pic, m, kinematics(m, np.zeros(3), np.zeros(3)))
+    assert [e["desc"] for e in out["com"]] == ["centre of mass of body 1", "centre of mass of crank (body 2)",
+                                               "centre of mass of body 3"]
+    assert [e["symbol"] for e in out["com"]] == ["c₁", "c₂", "c₃"]
+    assert [e["desc"] for e in out["bodies"]] == ["body 1", "crank (body 2)", "body 3"]
+    pins = [e for e in out["joints"] if e["id"].startswith("joint")]
+    assert [e["symbol"] for e in pins] == ["joint 1", "joint 2", "joint 3"]
+    assert sketch.pin(pic, "p", (0.0, 0.0))["symbol"] == "joint"
+    assert sketch.com(pic, "g", (0.0, 0.0))["symbol"] == "c"
+    assert _el(pic, "g:disc")["symbol"] == "c"
+    dims = [sketch.dimension(pic, k, (0, 0), (1, 0), t) for k, t in (("d1", "ρ = u/ω"), ("d2", "βk"))]
+    assert [d["symbol"] for d in dims] == ["ρ", "βk"]
+    assert sketch.dimension(pic, "d3", (0, 0), (1, 0), "2 m", symbol="L")["symbol"] == "L"
+    # the dimension's text has the line's colour (its docstring says so): one colour per element
+    assert dims[0]["color"] == planargeo.draw.COLORS["construct"]
