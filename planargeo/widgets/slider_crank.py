@@ -41,7 +41,7 @@ import numpy as np
 
 from planargeo import scenes
 from planargeo.draw.pictures.slider_crank import slider_crank_picture, slider_crank_view
-from planargeo.errors import InputError, SceneError
+from planargeo.errors import InputError, PlanargeoError, SceneError
 from planargeo.scenes.slider_crank import (DEAD_CENTRE_TOL, dead_centre_at, slider_crank_advance,
                                            slider_crank_model, slider_crank_reactions, slider_crank_solve)
 from planargeo.simulate.integrate import energy
@@ -209,8 +209,13 @@ class SliderCrankExplorer(SceneTime, Explorer):
 
         def step(state, h, t0):
             psi, psidot = state
-            out = slider_crank_advance(model, psi, psidot, h, r, l, drive, rtol=self.play_rtol,
-                                       atol=self.play_rtol * 1e-2)
+            try:
+                out = slider_crank_advance(model, psi, psidot, h, r, l, drive, rtol=self.play_rtol,
+                                           atol=self.play_rtol * 1e-2)
+            except PlanargeoError as exc:     # its times are the step's own: say where the step began
+                exc.args = (f"the motion stopped in its step from t = {t0:.4g} s (computed up to there, kept): "
+                            f"{exc}",)
+                raise
             budget.charge(out["nfev"])
             turn = out["psi"] - psi
             passed = [(t0 + (h * (a - psi) / turn if turn else 0.0), name) for name, a in out["dead_centres"]]
