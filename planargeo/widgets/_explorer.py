@@ -10,17 +10,20 @@ hold points, sliders that span a chain of ``n`` bodies, a scene time kept as tex
 * :class:`SceneTime`: Play advances a scene time kept in a text control (:func:`time_text`,
   :func:`time_value`), and a change of the initial state starts it again at 0; :func:`run_to`
   integrates a run to a time from its checkpoints;
-* :func:`rows`: readout rows as data, ``{name: (unit, meaning)}`` -> units and meanings.
+* :class:`Described`: the readout rows' units and meanings and the picture's symbols, kept as data
+  (``planargeo/data/readouts.toml``).
 
 Examples
 --------
 >>> grown_view((0.0, 1.0, 0.0, 1.0), [[2.0, 0.5], [-1.0, 0.5]], 0.5)
 (-1.5, 2.5, -1.5, 2.5)
->>> rows({"ω": ("rad/s", "angular velocity (2.3)")})
-({'ω': 'rad/s'}, {'ω': 'angular velocity (2.3)'})
+>>> units, meanings, symbols = readouts("impulse")
+>>> units["ω after the blow"], meanings["ω after the blow"]
+('rad/s', 'angular velocity of the body just after the blow (5.64)')
 """
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -100,9 +103,45 @@ def grown_view(box, pts, margin: float, sized=None, extra: float | None = None) 
     return (float(x0), float(x1), float(y0), float(y1))
 
 
-def rows(table: dict) -> tuple[dict, dict]:
-    """``{name: (unit, meaning)}`` -> ``({name: unit}, {name: meaning})``: each row written once (unit None: none)."""
-    return {k: u for k, (u, _m) in table.items() if u is not None}, {k: m for k, (_u, m) in table.items()}
+@functools.cache
+def _described() -> dict:
+    import tomllib
+    from importlib.resources import files
+
+    return tomllib.loads((files("planargeo") / "data/readouts.toml").read_text(encoding="utf-8"))
+
+
+def readouts(explorer: str) -> tuple[dict, dict, dict]:
+    """``(units, meanings, symbols)`` of ``explorer`` as ``planargeo/data/readouts.toml`` describes them.
+
+    ``units`` and ``meanings`` are those of its readout rows (a row without a unit has none in
+    ``units``; a list of units is one per component), ``symbols`` the meanings of what its picture
+    shows.
+    """
+    table = _described()[explorer]
+    rows = table.get("rows", {})
+    units = {k: tuple(u) if isinstance(u, list) else u for k, (u, _m) in rows.items() if u}
+    return units, {k: m for k, (_u, m) in rows.items()}, dict(table.get("symbols", {}))
+
+
+class Described:
+    """An explorer whose readout rows and symbols are described as data (:func:`readouts` of :attr:`described`).
+
+    The class gets :attr:`units`, :attr:`meanings` (of the readout rows) and :attr:`symbols`;
+    :meth:`explain` gives the symbols' and the rows' meanings.
+    """
+
+    described: str = ""
+
+    def __init_subclass__(cls, **kw):
+        super().__init_subclass__(**kw)
+        if cls.__dict__.get("described"):
+            cls.row_units, cls.meanings, cls.symbols = readouts(cls.described)
+            if "units" not in cls.__dict__:
+                cls.units = cls.row_units
+
+    def explain(self):
+        return {**self.symbols, **self.meanings}
 
 
 class ChainBodies:
@@ -148,10 +187,9 @@ class ChainBodies:
         st = self.state
         return np.zeros((0, 2)) if st is None else np.asarray(st["joints"], dtype=float).reshape(-1, 2)
 
-    def _tip_handle(self, base: str | None = None) -> Handle:
-        """The chain's tip: dragged, it sets the bend ``φ`` that brings it nearest (the first body at ``base``)."""
-        from planargeo.widgets.articulated import bend_for_tip
-
+    def _tip_handle(self, bend_for_tip, base: str | None = None) -> Handle:
+        """The chain's tip: dragged, it sets the bend ``φ`` that brings it nearest (``bend_for_tip``; the
+        first body at the angle control ``base``)."""
         def where():
             pts = None if self.state is None else self.state["joints"]
             return None if pts is None or len(pts) < 3 else tuple(pts[-1])

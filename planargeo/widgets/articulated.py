@@ -40,7 +40,7 @@ from planargeo.draw.geometry import conic_geometry
 from planargeo.draw.pictures.articulated import MARGIN, articulated_picture, chain_view, fit_box
 from planargeo.scenes.articulated import articulated_state, inertia_at
 from planargeo.widgets._motion import Motion
-from planargeo.widgets._explorer import ChainBodies, rows
+from planargeo.widgets._explorer import ChainBodies, Described
 from planargeo.widgets.base import Explorer, Handle, Step, cached, point_text
 
 __all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip"]
@@ -56,31 +56,6 @@ TIME = "time (s)"
 C_ROW = "damping power at 1 rad/s in every joint"
 #: controls that define the chain or its swing: a change restarts the swing at t = 0
 _CHAIN = ("bodies n", "λ = L/ρ", "bend φ (deg)", "base θ₁ (deg)", "g (m/s²)", "damping c")
-
-#: the readout's rows: name -> (unit, meaning with its thesis equation)
-UNITS, MEANINGS = rows({
-    "bodies": ("—", "number of bodies n"),
-    "outboard included": ("—", "bodies outboard of k the recursion for Aₖ includes, of all there are (section 10.2.2)"),
-    "Aₖ: mass along x": ("kg", "mass felt pushing body k along x at its joint: entry xx of Aₖ (eq. 7.26)"),
-    "Aₖ: mass along y": ("kg", "mass felt pushing body k along y at its joint: entry yy of Aₖ (eq. 7.26)"),
-    "Aₖ: inertia about joint k": ("kg·m²", "rotational inertia of Aₖ about joint k: entry zz (eq. 7.26)"),
-    "effective centre of Aₖ": (None, "the point where Aₖ has no coupling of force and turning: its conic's centre "
-                                     "(eq. 7.26)"),
-    "centre of mass of body k": (None, "the centre of Iₖ"),
-    "effective centre d/L (7.27)": ("—", "distance of body 1's effective centre from its joint, over L (straight "
-                                         "chain; eq. 7.27)"),
-    "truncation error of Aₖ": ("—", "‖Aₖ with the shown outboard bodies − Aₖ‖ / ‖Aₖ‖ (section 10.2.2)"),
-    "pole a": (None, "the acceleration pole a (draggable)"),
-    "distance from a to the centre": ("m", "distance from the pole a to the effective centre of Aₖ"),
-    "axis Aₖa: distance from the centre": ("m", "distance of the axis of percussion Aₖa from the effective centre "
-                                                "(eq. 5.64-5.68)"),
-    "t": ("s", "time of the swing since it started from rest (s)"),
-    "energy T + V": ("J", "energy of the chain at time t"),
-    "dissipated W": ("J", "energy the damping removed up to t"),
-    "T + V + W": ("J", "stays E₀ but for the integration error"),
-    "initial energy E₀": ("J", "energy at t = 0 (at rest: V alone)"),
-    C_ROW: ("W", "n c × (1 rad/s)²: the power the damping takes when every joint turns at 1 rad/s"),
-})
 
 
 def bend_for_tip(xy, n: int, base: float, L: float = 1.0) -> float:
@@ -139,7 +114,7 @@ def bend_for_tip(xy, n: int, base: float, L: float = 1.0) -> float:
     return float(phi)
 
 
-class ArticulatedExplorer(ChainBodies, Explorer):
+class ArticulatedExplorer(Described, ChainBodies, Explorer):
     """Rigid and articulated inertias of a chain as conics, their axes of percussion and convergence.
 
     Parameters
@@ -159,9 +134,9 @@ class ArticulatedExplorer(ChainBodies, Explorer):
 
     title = "Articulated inertias along a chain: conics, percussion and convergence"
     slug = "articulated"
+    described = "articulated"
     figsize = (9.6, 5.0)
     display_controls = ("rigid inertias", "percussion axes")
-    units = UNITS
 
     spans = ("outboard bodies", -1, NMAX - 1)
 
@@ -224,46 +199,22 @@ class ArticulatedExplorer(ChainBodies, Explorer):
         return out
 
     def explain(self):
-        # Every symbol and readout name on screen: one-line meaning and thesis equation.
+        # Every symbol and readout name on screen: one-line meaning and thesis equation (the focused body's
+        # symbols as the figure names them).
         focus = str(self.values.get("focus", "all"))
-        kk = _sub(int(focus.split()[1]) if focus.startswith("body ") else 1)
+        j = focus.split()[1] if focus.startswith("body ") else 1
+        kk = _sub(int(j))
         return {
-            "n": "number of bodies in the chain (1 kg each, joints L = 1 m apart)",
-            "i": "index of any body of the chain",
-            "k": "the focused body (body 1 when the focus is 'all'): its Aₖ, Iₖ, axes and chart are shown",
-            "L": "distance between joints, 1 m",
-            "ρ": "radius of gyration of each body, ρ = L/λ (m)",
-            "λ": "size ratio λ = L/ρ (eq. 7.21)",
-            "φ": "bend: the angle of every body relative to the one before it",
-            "θ₁": "angle of the first body from the x axis",
-            "g": "gravity along −y for the swing (m/s²)",
-            "c": "viscous damping at every joint: joint torque −c q̇ (N·m·s/rad)",
-            "Iᵢ": "rigid inertia of body i, drawn as a conic about its centre of mass (section 10.2.3)",
-            "Aᵢ": "articulated inertia of body i with the bodies outboard of it (eq. 7.7a), drawn as a conic",
+            **self.symbols,
             "Aₖ": f"articulated inertia of the focused body k (eq. 7.7a); in the figure: A{kk}",
             "Iₖ": f"rigid inertia of the focused body k; in the figure: I{kk}",
-            "a": "the acceleration pole: the point about which body k is made to accelerate (eq. 4.6)",
             "Aₖa": ("axis of percussion: the force that gives body k the acceleration a with the outboard bodies "
                     f"attached (eq. 5.64-5.68); in the figure: A{kk} a"),
             "Iₖa": f"axis of percussion of body k alone (eq. 5.64-5.68); in the figure: I{kk} a",
-            "polar of a (real conic)": ("polar of a with respect to the drawn real conic of Aₖ: Aₖa reflected "
-                                        "through the centre (section 10.2.3)"),
             "entries of Aₖ at joint k / full value": "the chart: each entry of Aₖ (at joint k) after so many "
                                                      "recursion steps, over its value with every outboard body; "
-                                                     f"in the figure: entries of A{kk} at joint "
-                                                     f"{focus.split()[1] if focus.startswith('body ') else 1} "
-                                                     "/ full value",
-            "xx": "entry xx of Aₖ at joint k: the mass felt pushing along x (eq. 7.26)",
-            "yy": "entry yy of Aₖ at joint k: the mass felt pushing along y (eq. 7.26)",
-            "zz": "entry zz of Aₖ at joint k: the rotational inertia about joint k (eq. 7.26)",
-            "xy, xz, yz": "entries xy, xz, yz of Aₖ at joint k: the couplings between pushing and turning",
-            "recursion steps (outboard bodies)": "the chart's axis: how many outboard bodies the recursion for Aₖ includes (section 10.2.2)",
-            "error": "‖Aₖ after so many steps − Aₖ‖ / ‖Aₖ‖ (the chart; section 10.2.2)",
-            "E₀": "energy T + V of the chain at rest at t = 0",
-            "T": "kinetic energy of the chain (eq. 1.9)",
-            "V": "potential energy of the chain in gravity g",
-            "W": "energy the joint damping has removed since t = 0: ∫ c q̇ᵀq̇ dt",
-            **MEANINGS,
+                                                     f"in the figure: entries of A{kk} at joint {j} / full value",
+            **self.meanings,
         }
 
 
@@ -286,7 +237,7 @@ class ArticulatedExplorer(ChainBodies, Explorer):
                 return {}
             return {"base θ₁ (deg)": float(math.degrees(math.atan2(y, x)))}
 
-        return [Handle("pole a", pole_where, pole_drag), self._tip_handle("base θ₁ (deg)"),
+        return [Handle("pole a", pole_where, pole_drag), self._tip_handle(bend_for_tip, "base θ₁ (deg)"),
                 Handle("first body", base_where, base_drag)]
 
     def focus_options(self):

@@ -43,7 +43,7 @@ from planargeo.draw.pictures.car import (FORCE_SCALE, HALF_TRACK, NEAR, OVERHANG
                                          moves, view_box)
 from planargeo.errors import InputError, SceneError
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._explorer import rows
+from planargeo.widgets._explorer import Described
 from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["CarExplorer", "view_box", "grip"]
@@ -53,25 +53,6 @@ HEADING = "heading (deg)"
 FRICTION = "tyre friction μ"
 #: gravity (m/s²): the tyres hold a horizontal acceleration of at most μ·G_ROAD at the centre of gravity
 G_ROAD = 9.81
-
-#: the readout's rows: name -> (unit, meaning with its thesis equation)
-UNITS, MEANINGS = rows({
-    "speed V": ("m/s", "speed of the rear tyre, V = ω d (6.115)"),
-    "heading θ": ("°", "how far the car has turned about the ICR"),
-    "yaw rate ω": ("rad/s", "turning rate of the car about the ICR (6.115)"),
-    "yaw acceleration ω̇": ("rad/s²", "its rate of change, from the drive force alone (6.131)"),
-    "rear tyre force μ₁": ("N", "signed lateral force of the rear tyre along R₁, negative towards the ICR (6.133)"),
-    "front tyre force μ₂": ("N", "signed lateral force of the front tyre along R₂ (6.133)"),
-    "steering angle": ("°", "angle of the front wheels, whose axle meets the rear axle at the ICR (6.114)"),
-    "lateral acceleration at G": ("g", "its part towards the ICR, ω² r_G, in units of g = 9.81 m/s²"),
-    "acceleration of G": ("m/s²", "acceleration of the centre of gravity, r_G √(ω⁴ + ω̇²)"),
-    "friction limit μ·g": ("m/s²", "the largest acceleration the tyres hold (friction coefficient μ times g)"),
-    "tyres": ("—", "whether the tyres hold the car on its circle, and how much of μ·g it uses"),
-    "kinetic energy K": ("J", "½ vᵀ I v of the car turning about the ICR (section 1.9)"),
-    "drive power": ("W", "power of the drive force f_A: its moment about the ICR times ω (6.120)"),
-    "rate of change of K": ("W", "dK/dt = I_ICR ω ω̇: equal to the drive power (the tyre forces do no work)"),
-})
-
 
 def grip(res, mu: float):
     """The acceleration of the centre of gravity and what the tyres hold, ``(r_G √(ω⁴ + ω̇²), μ·g)`` (m/s²).
@@ -99,7 +80,7 @@ def grip(res, mu: float):
     return r_g * float(np.hypot(w * w, wd)), float(mu) * G_ROAD
 
 
-class CarExplorer(Explorer):
+class CarExplorer(Described, Explorer):
     """Tyre forces of a car cornering and accelerating (thesis 6.9), dragged and driven round the turn.
 
     Parameters
@@ -110,8 +91,8 @@ class CarExplorer(Explorer):
 
     title = "Car cornering: tyre forces by projective dynamics"
     slug = "car"
+    described = "car"
     figsize = (6.0, 5.6)
-    units = UNITS
 
     def __init__(self, **kw):
         # the scene function itself (scenes.build checks parameter names on every call)
@@ -319,20 +300,3 @@ class CarExplorer(Explorer):
         pts = [self._drawn(c) for c in body]
         pts += [self._cg_where(), self._steer_where(), self._drive_where()]
         return np.array(pts, dtype=float)
-
-    def explain(self):
-        # Every symbol and readout name on screen, with its thesis equation.
-        return {
-            **MEANINGS,
-            SLIDES: "the acceleration G needs reaches μ·g, what the tyres hold: the car slides out",
-            "G": "centre of gravity of the car",
-            "v = sω (ICR)": "velocity pole: the instant centre of rotation, joint s of the model (6.114, 6.115)",
-            "a": "acceleration pole of a = s ω̇ (6.131)",
-            "R₁μ₁": "rear tyre force: reaction R₁ times its size μ₁ (6.114, 6.133)",
-            "R₂μ₂": "front tyre force: reaction R₂ times its size μ₂ (6.114, 6.133)",
-            "f_A": "drive force at the front tyre, along its rolling direction (6.120)",
-            "p": "bias force, the centrifugal force through the ICR (6.119)",
-            "T": "active force line: the percussion axis of the joint (6.125)",
-            "I": "inertia of the car drawn as its conic (6.117)",
-            FRICTION: "friction coefficient between tyre and road",
-        }

@@ -37,7 +37,7 @@ import numpy as np
 
 from planargeo.draw.pictures.impulse import impulse_picture
 from planargeo.scenes.impulse import BODIES, body_outline, impulse
-from planargeo.widgets._explorer import arrow_handle, grown_view, rows, xy_handle
+from planargeo.widgets._explorer import Described, arrow_handle, grown_view, xy_handle
 from planargeo.widgets.base import Explorer, Step, point_text
 
 __all__ = ["ImpulseExplorer"]
@@ -46,27 +46,6 @@ __all__ = ["ImpulseExplorer"]
 ARROW = 0.25
 #: longest time after the blow that Play runs (s)
 T_MAX = 60.0
-#: the readout's rows: name -> (unit, meaning with its thesis equation)
-UNITS, MEANINGS = rows({
-    "ω after the blow": ("rad/s", "angular velocity of the body just after the blow (5.64)"),
-    "velocity of c": ("m/s", "velocity of the centre of mass just after the blow (5.64)"),
-    "velocity pole": ("—", "the point the body turns about just after the blow (4.10)"),
-    "pole if free (I⁻¹ĵ)": ("—", "where it would turn about if nothing held it: the pole of I⁻¹ĵ (5.64-5.68)"),
-    "reaction impulse ĵᵣ, across": ("N·s", "impulse of the grip or hinge on the body, across the body (5.67)"),
-    "reaction impulse ĵᵣ, along": ("N·s", "impulse of the grip or hinge on the body, along the body"),
-    "|ĵᵣ|": ("N·s", "size of the reaction impulse: the sting felt at the grip (5.67)"),
-    "centre of percussion (5.67)": ("m", "where a blow across the body leaves the grip without a reaction (5.67)"),
-    "l = d + ρ²/d": ("m", "distance of the centre of percussion from the grip; d to the centre of mass (5.67)"),
-    "apparent mass along ĵ": ("kg", "impulse per unit change of the struck point's speed along the blow (Fig 3.3)"),
-    "apparent mass, held": ("kg", "the apparent mass with the grip or hinge holding the body (Fig 3.3)"),
-    "apparent mass, free": ("kg", "the apparent mass with nothing holding it (Fig 3.3)"),
-    "mass m": ("kg", "mass of the body"),
-    "radius of gyration ρ": ("m", "J = m ρ² about the centre of mass (5.67)"),
-    "kinetic energy": ("J", "½ vᵀ I v just after the blow (section 1.9)"),
-    "t": ("s", "time after the blow (Play advances it)"),
-})
-
-
 def pole_text(tw, pole, rest: str = "at rest") -> str:
     """Readout text of the pole of a twist ``[vx, vy, ω]``: ``"(x, y) m"``, ``"at infinity (direction …)"`` or ``rest``.
 
@@ -103,16 +82,16 @@ def pole_text(tw, pole, rest: str = "at rest") -> str:
     return point_text([pole[1], -pole[0], 1.0], "m", zero=1e-12)
 
 
-class ImpulseExplorer(Explorer):
+class ImpulseExplorer(Described, Explorer):
     """A body at rest struck by a blow: velocity pole, reaction impulse, apparent mass (thesis 5.4, 6.93).
     """
 
     title = "Impulse and the centre of percussion: a bat or a door struck at rest"
     slug = "impulse"
+    described = "impulse"
     figsize = (6.4, 4.6)
     limits = (-0.45, 1.2, -0.6, 0.6)
     display_controls = ("t",)
-    units = UNITS
 
     def make_controls(self):
         # The controls: body, support, mass, the blow (point, angle, impulse) and the time after it.
@@ -186,21 +165,4 @@ class ImpulseExplorer(Explorer):
             "radius of gyration ρ": q["rho"],
             "kinetic energy": q["kinetic_energy"],
             "t": float(self.values["t"]),
-        }
-
-    def explain(self):
-        # Every symbol and readout name on screen, with its thesis equation.
-        return {**MEANINGS,
-            "I (ρ)": "the body's inertia drawn as its conic, of radius ρ about c (5.4)",
-            "c": "centre of mass",
-            "P (grip)": "the grip, where the bat is held (a revolute joint)",
-            "P (hinge)": "the hinge of the door (a revolute joint)",
-            "axis of percussion of P": "the line of blows that leave P without reaction (5.67)",
-            "centre of percussion": "the point of that line on the body's axis (5.67)",
-            "ĵ (blow)": "the blow: an impulse wrench along its line (5.64)",
-            "ĵᵣ (grip)": "the reaction impulse of the grip on the bat (5.67)",
-            "ĵᵣ (hinge)": "the reaction impulse of the hinge on the door (5.67)",
-            "v (pole)": "the velocity pole just after the blow (4.10)",
-            "pole if free": "the pole of I⁻¹ĵ, where the body would turn if free (5.64-5.68)",
-            "body": "the body after the blow, turned about its velocity pole",
         }

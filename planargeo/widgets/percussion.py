@@ -39,7 +39,7 @@ from planargeo.errors import DegenerateGeometryError, InputError, InvalidPolygon
 from planargeo.screws.inertia import Inertia, percussion_axis, percussion_pole
 from planargeo.geometry.projective import from_xy, is_ideal
 from planargeo.widgets._points import point_value
-from planargeo.widgets._explorer import rows
+from planargeo.widgets._explorer import Described
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["PercussionExplorer", "PRESETS", "parse_polygon"]
@@ -53,26 +53,6 @@ PRESETS = {
     "L-shape": Polygon([(0, -0.05), (1.0, -0.05), (1.0, 0.45), (0.9, 0.45), (0.9, 0.05), (0, 0.05)]),
     "custom polygon": None,
 }
-
-#: the readout's rows: name -> (unit, meaning with its thesis equation)
-UNITS, MEANINGS = rows({
-    "pole x": ("m", "x of the acceleration pole a"), "pole y": ("m", "y of the acceleration pole a"),
-    "mass m": ("kg", "the body's mass (a uniform lamina of the shape)"),
-    "radius of gyration ρ": ("m", "ρ with J = m ρ² about the centre of mass (1.65)"),
-    "centre of mass": ("m", "the centre of mass c (1.65)"),
-    "pole": ("m", "the acceleration pole a (5.64)"),
-    "d = |pole − c|": ("m", "distance from the pole to the centre of mass (5.66)"),
-    "r = ρ²/d (5.68)": ("m", "distance from the centre of mass to the axis of percussion (5.68)"),
-    "l = d + ρ²/d (5.67)": ("m", "distance from the pole to the axis of percussion (5.67)"),
-    "angular accel. α": ("rad/s²", "the angular acceleration about the pole (5.66)"),
-    "force for α: m d α (5.66)": ("N", "the force the axis of percussion carries for α (5.66)"),
-    "centre of percussion": ("m", "where the axis of percussion crosses the line pole – centre of mass (5.68)"),
-    "sweet spot of the grip": ("m", "the centre of percussion for a turn about the grip: strike there and the "
-                                    "hands feel no sting (5.67)"),
-    "impact at": ("m", "where the blow across the long axis strikes (x along the body)"),
-    "pole distance from grip": ("m", "distance of the resulting pole from the grip: 0 at the sweet spot (5.67)"),
-})
-
 
 def parse_polygon(text: str) -> Polygon:
     """A shapely polygon from ``"x, y; x, y; ..."`` (at least three vertices).
@@ -115,7 +95,7 @@ def parse_polygon(text: str) -> Polygon:
     return poly
 
 
-class PercussionExplorer(Explorer):
+class PercussionExplorer(Described, Explorer):
     """Acceleration pole and axis of percussion of a body at rest (thesis 5.4).
 
     Parameters
@@ -126,10 +106,10 @@ class PercussionExplorer(Explorer):
 
     title = "Inertia and percussion: the sweet spot"
     slug = "percussion"
+    described = "percussion"
     figsize = (6.0, 4.8)
     limits = (-0.9, 1.6, -0.9, 0.9)
     display_controls = ("angular accel. α",)
-    units = UNITS
 
     def __init__(self, **kw):
         self._inertias: dict = {}   # shape key -> (shape, unit-density Inertia)
@@ -163,20 +143,6 @@ class PercussionExplorer(Explorer):
         if values["shape"] != "custom polygon":
             out["polygon"] = "used with shape = custom polygon"
         return out
-
-    def explain(self):
-        # Every symbol on screen, with its thesis equation.
-        return {
-            "∞": "a point at infinity (a direction), drawn at the edge of the view as an arrow its way (5.5)",
-            "a": "the acceleration pole: the point of the body with no acceleration (5.64)",
-            "I": "the body's inertia, an imaginary conic, drawn as its circle of gyration (5.4, 1.65)",
-            "ρ": "radius of gyration about the centre of mass: J = m ρ² (1.65)",
-            "c": "the centre of mass (1.65)",
-            "axis of percussion f = I a": "the line of the force f = I a that gives the body the "
-                                          "acceleration pole a from rest (5.64)",
-            "grip": "the grip (the origin), where the hands hold the body",
-            **MEANINGS,
-        }
 
     # -- handles -------------------------------------------------------------------
     def _axis_points(self):

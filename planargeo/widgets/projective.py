@@ -42,7 +42,7 @@ from planargeo.geometry.conics import (centre, classify, conic_circle, conic_ell
 from planargeo.draw.pictures.projective import projective_picture
 from planargeo.errors import DegenerateGeometryError, InputError
 from planargeo.geometry.projective import from_xy, is_at_infinity, is_ideal
-from planargeo.widgets._explorer import rows
+from planargeo.widgets._explorer import Described
 from planargeo.widgets.base import Explorer, Handle, Step
 from planargeo.widgets._points import point_value
 
@@ -143,32 +143,16 @@ def _settle(x, C, operand, kind: str) -> np.ndarray:
     return x
 
 
-#: the readout's rows: name -> (unit, meaning with its thesis equation)
-UNITS, MEANINGS = rows({
-    "P x": ("m", "x of P, or of its direction when P is at infinity (5.49)"),
-    "P y": ("m", "y of P, or of its direction when P is at infinity (5.49)"),
-    "P": ("m", "the movable point P in homogeneous coordinates [y, −x, 1] (5.49)"),
-    "conic": ("—", "the kind of conic C: real (a curve) or imaginary (an inertia, no real points) (5.35)"),
-    "P is": ("—", "where P lies: outside, on or inside the conic, which fixes the construction (5.2.2)"),
-    "polar of P: distance to origin": ("m", "distance |r| of the polar C P from the origin, line [e, r] with "
-                                            "|e| = 1 (5.55)"),
-    "pole of M": ("m", "the point C⁻¹ M that the conic maps M to (5.37)"),
-    "P·M": ("m", "the linear form t = PᵀM: the signed distance of P from M (5.40)"),
-    "pole(M)·polar(P)": ("m", "the same number from the images, t = (C⁻¹M)ᵀ(C P) (5.41)"),
-    "centre": ("m", "the centre C⁻¹ [0, 0, 1]: the pole of the line at infinity (5.37)"),
-})
-
-
-class ProjectiveExplorer(Explorer):
+class ProjectiveExplorer(Described, Explorer):
     """Pole and polar of a movable point and line with respect to a conic."""
 
     title = "Projective playground: poles, polars and constructions"
     slug = "projective"
+    described = "projective"
     figsize = (5.6, 5.4)
     limits = (-4, 4, -4, 4)
     display_controls = ("construction", "line and its pole")
     scale = 4.0
-    units = UNITS
 
     def make_controls(self):
         # The controls (see the module docstring).
@@ -188,19 +172,6 @@ class ProjectiveExplorer(Explorer):
             "construction": W.Checkbox(value=True, description="construction (5.2.2)", indent=False),
             "line and its pole": W.Checkbox(value=True, description="line and its pole",
                                             indent=False),
-        }
-
-    def explain(self):
-        # What every symbol on screen means, with its thesis equation.
-        return {
-            "∞": "a point at infinity (a direction), drawn at the edge of the view as an arrow its way (5.5)",
-            "C": "the conic: the symmetric 3×3 matrix C of a curve QᵀCQ = 0 (5.35, 5.38)",
-            "polar of P": "the line L = C P that the conic maps P to (5.36)",
-            "M": "the movable line M = [e, r]: direction e at signed distance r (5.55)",
-            "tangents (5.2.2)": "tangents to the conic that build the polar by hand (5.2.2, Fig 5.2–5.3)",
-            "a": "the semi-axis a (circle and inertia: the radius; parabola: 4 × focal distance)",
-            "b": "the second semi-axis b of the ellipse or hyperbola",
-            **MEANINGS,
         }
 
     def disabled(self, values):

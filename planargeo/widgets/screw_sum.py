@@ -45,7 +45,7 @@ from planargeo.geometry.projective import is_at_infinity
 from planargeo.screws.special import twists_case, wrenches_case
 from planargeo.screws.twists import Twist, Wrench, add_twists, add_wrenches
 from planargeo.widgets._points import point_value
-from planargeo.widgets._explorer import shown, arrow_handle, rows, xy_handle
+from planargeo.widgets._explorer import Described, arrow_handle, shown, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["ScrewSumExplorer"]
@@ -63,23 +63,6 @@ _SUBSCRIPT = {1: "₁", 2: "₂"}
 #: the sum's components: a twist [vx, vy, ω] (the velocity of the origin's point and the rate),
 #: a wrench [fx, fy, τ] (the force and its moment about the origin)
 SUM_UNITS = {"twists": ("m/s", "m/s", "rad/s"), "wrenches": ("N", "N", "N·m")}
-
-#: the readout's rows: name -> (unit, meaning with its thesis equation); the sum's units follow the mode
-UNITS, MEANINGS = rows({
-    "ω₁": ("rad/s", "angular velocity of v₁ (4.10)"), "ω₂": ("rad/s", "angular velocity of v₂ (4.10)"),
-    "ω₃ = ω₁ + ω₂": ("rad/s", "angular velocity of the sum (4.11)"),
-    "F₁": ("N", "the force f₁ (its magnitude, signed along its angle) (4.27)"),
-    "F₂": ("N", "the force f₂ (its magnitude, signed along its angle) (4.27)"),
-    "|F₃| = |F₁ + F₂|": ("N", "magnitude of the summed force (4.39)"),
-    "β": ("—", "lever ratio: the sum's pole (or line) divides Q₁Q₂ at β = ω₂/(ω₁+ω₂) (4.12, 4.43)"),
-    "ρ": ("m", "shift of a rotation by a translation, ρ = u/ω (4.16), or of a force by a couple, ρ = τ/F (4.46)"),
-    "pole of sum": ("m", "the pole of v₃: where the sum does not move (4.12)"),
-    "meet of lines": ("m", "where the two force lines meet: the sum's line passes there (4.4.1)"),
-    "case": ("—", "the special case reached, by name and equation (10.2.4)"),
-    "sum": (None, "the sum's components: a twist [vx, vy, ω] (velocity of the origin's point, rate) "
-                  "or a wrench [fx, fy, τ] (force, moment about the origin) (4.10, 4.27)"),
-})
-
 
 def _xy_or_ideal(p):
     if p is None:
@@ -111,7 +94,7 @@ def _meet_label(c):
 ARM = 1.0
 
 
-class ScrewSumExplorer(Explorer):
+class ScrewSumExplorer(Described, Explorer):
     """Add two twists (points) or two wrenches (lines) and watch the construction (thesis 4.2, 4.4).
 
     Controls: ``add`` (twists or wrenches), and per screw ``k = 1, 2`` its kind
@@ -128,6 +111,7 @@ class ScrewSumExplorer(Explorer):
 
     title = "Twist and wrench addition"
     slug = "screw-sum"
+    described = "screw_sum"
     figsize = (5.6, 5.0)
     limits = (-4, 4, -4, 4)
     scale = 3.0
@@ -143,7 +127,7 @@ class ScrewSumExplorer(Explorer):
     @property
     def units(self):
         """Unit of each readout row (the sum's three components each its own)."""
-        return {**UNITS, "sum": SUM_UNITS.get(getattr(self, "_mode", None) or self._first_mode)}
+        return {**self.row_units, "sum": SUM_UNITS.get(getattr(self, "_mode", None) or self._first_mode)}
 
     def make_controls(self):
         # The mode ``add`` and, per screw, its kind (of that mode), point, size and direction.
@@ -214,22 +198,6 @@ class ScrewSumExplorer(Explorer):
                 out[f"x{k}"] = out[f"y{k}"] = out[f"angle{k}"] = (
                     "a couple is on the line at infinity: only its moment τ counts")
         return out
-
-    def explain(self):
-        # Every symbol on screen, with its thesis equation.
-        return {
-            "∞": "a point at infinity (a direction), drawn at the edge of the view as an arrow its way (5.5)",
-            "v₁, v₂": "the two twists added: a rotation about a pole, or a translation (pole at "
-                      "infinity) (4.10)",
-            "v₃ = v₁ + v₂": "their sum, a twist whose pole lies on the line Q₁Q₂ of the poles (4.11)",
-            "f₁, f₂": "the two wrenches added: a force on its line, or a couple (the line at infinity) "
-                      "(4.27, 4.46)",
-            "f₃ = f₁ + f₂": "their sum, on a line through the meet P of the two lines (4.33)",
-            "P": "the meet P = L₁ × L₂ of the two force lines (5.34)",
-            **MEANINGS,
-            "u": "speed of a translation (4.10)", "τ": "moment of a couple (4.46)",
-            "x, y": "the point of a screw: a rotation's pole or a point of a force's line",
-        }
 
     def _screw(self, v, k):
         kind = v[f"kind{k}"]

@@ -32,8 +32,10 @@ import numpy as np
 
 from planargeo.draw.pictures.articulated import fit_box
 from planargeo.draw.pictures.splitting import splitting_picture
+from planargeo.draw.pictures._words import SUB
 from planargeo.scenes.splitting import splitting_state, twist_pole
-from planargeo.widgets._explorer import ChainBodies, rows
+from planargeo.widgets._explorer import ChainBodies, Described
+from planargeo.widgets.articulated import bend_for_tip
 from planargeo.widgets.base import Explorer, Handle, Step, point_text
 
 __all__ = ["SplittingExplorer", "NMAX", "x_over_L_7_48"]
@@ -44,28 +46,6 @@ NMAX = 8
 _ACC = ("m/s²", "m/s²", "rad/s²")
 
 _LAM = ("1/kg", "1/kg", "1/(kg·m)")
-#: the readout's rows: name -> (unit, meaning with its thesis equation)
-UNITS, MEANINGS = rows({
-    "split at joint": ("—", "the joint i+1 where the chain is split"),
-    "aᵢ (7.54)": (_ACC, "acceleration of body i, straight from the split (eq. 7.54)"),
-    "aᵢ₊₁": (_ACC, "acceleration of body i+1, the first body of the free-floating chain (eq. 7.54)"),
-    "fᵢ₊₁ (7.56)": (("N", "N", "N·m"), "force of the split joint on body i+1 (eq. 7.56)"),
-    "pole of aᵢ": (None, "the point of body i with no acceleration (eq. 4.6)"),
-    "pole of aᵢ₊₁": (None, "the point of body i+1 with no acceleration (eq. 4.6)"),
-    "row 1 of Λᵢ⁻¹": (_LAM, "x acceleration of body i per unit force at it (eq. 7.38a)"),
-    "row 2 of Λᵢ⁻¹": (_LAM, "y acceleration of body i per unit force at it (eq. 7.38a)"),
-    "row 3 of Λᵢ⁻¹": (("1/(kg·m)", "1/(kg·m)", "1/(kg·m²)"), "angular acceleration of body i per unit force at it "
-                                                           "(eq. 7.38a)"),
-    "bᵢ": (_ACC, "bias acceleration of body i in the constrained chain: its acceleration with no force at joint "
-                 "i+1 (eq. 7.38a)"),
-    "aₙ (tip)": (_ACC, "acceleration of the tip body (eq. 7.46 for n = 2)"),
-    "q̈ (6.110)": ("rad/s²", "joint accelerations q̈₁…q̈ₙ by chain splitting (eq. 6.110)"),
-    "x/L of aₙ's pole (7.48)": ("—", "pole of a₂ on the x axis over L, computed (n = 2, no gravity; eq. 7.48)"),
-    "x/L closed form": ("—", "1 + 2η² cos φ / (4 + 5η²), by hand (eq. 7.48)"),
-    "η = L/ρ (7.49)": ("—", "size ratio of the bodies (eq. 7.49)"),
-})
-
-
 def x_over_L_7_48(rho: float, L: float, phi: float) -> float:
     """Closed form of thesis 7.48: the pole of ``a_2`` of example 7.5 at ``x / L`` on ``y = 0``.
 
@@ -92,7 +72,7 @@ def x_over_L_7_48(rho: float, L: float, phi: float) -> float:
     return 1.0 + 2.0 * eta2 * math.cos(phi) / (4.0 + 5.0 * eta2)
 
 
-class SplittingExplorer(ChainBodies, Explorer):
+class SplittingExplorer(Described, ChainBodies, Explorer):
     """A pinned chain split at a chosen joint: mobilities, accelerations of both halves, the split force.
 
     Examples
@@ -106,13 +86,13 @@ class SplittingExplorer(ChainBodies, Explorer):
 
     title = "Constrained chain: articulated mobility and chain splitting"
     slug = "splitting"
+    described = "splitting"
     figsize = (7.6, 5.2)
     display_controls = ("mobility centres",)
     #: lengths in metres (L = 1); a value below ``zero_tol × scale`` is round-off and reads 0 (the smallest
     #: real values here, a 0.05 N·m couple on 8 bodies of ρ = 2 m, are above 1e-4)
     scale = 1.0
     zero_tol = 1e-6
-    units = UNITS
 
     spans = ("split at joint", 0, NMAX)
 
@@ -147,36 +127,22 @@ class SplittingExplorer(ChainBodies, Explorer):
         return {}
 
     def explain(self):
-        # Every symbol and readout name on screen: one-line meaning and thesis equation.
-        v = self.values
-        n = int(v["bodies n"])
-        i = min(int(v["split at joint"]), n) - 1
-
-        def sub(j):
-            return str(j).translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
-
+        # Every symbol and readout name on screen: one-line meaning and thesis equation (the split's own
+        # symbols as the figure names them).
+        n = int(self.values["bodies n"])
+        i = min(int(self.values["split at joint"]), n) - 1
+        sub = lambda j: str(j).translate(SUB)
         return {
-            "n": "number of bodies in the chain (mass 1 kg each, joints L = 1 m apart)",
-            "i": "the chain is split at joint i+1: bodies 1…i below it, i+1…n above it",
-            "j": "index of any body of the chain (its acceleration pole aⱼ)",
-            "ρ": "radius of gyration of each body (m)",
-            "L": "distance between joints, 1 m",
-            "φ": "bend: the angle of every body relative to the one before it (eq. 7.47)",
-            "τ": "size of the couple on the tip (N·m)",
-            "g": "gravity, along −y (m/s²)",
-            "−fₙ₊₁ on the tip": f"the couple on the tip, from a fictitious joint n+1 (eq. 7.44); in the figure: −f{sub(n + 1)} on the tip: couple (line at ∞)",
-            "aⱼ": ("acceleration of body j, drawn as its pole: the point with no acceleration (eq. 4.6); in the figure: "
-                   + ", ".join(f"a{sub(j)}" for j in range(1, n + 1))),
-            "aᵢ": "acceleration of body i, straight from the split (eq. 7.54)",
-            "aₙ": "acceleration of the tip body n (eq. 7.46 for n = 2)",
-            "fᵢ₊₁": f"force of the split joint i+1 on body i+1, drawn as its line of action (eq. 7.56); in the figure: f{sub(i + 1)}",
-            "Λᵢ⁻¹": "articulated mobility of body i in the constrained chain 1…i (eq. 7.38a)",
-            "centre of Λᵢ⁻¹": f"where a couple on body i alone turns it: the pole of −Λᵢ⁻¹ [0, 0, 1] (section 7.5); in the figure: centre of Λ{sub(i)}⁻¹",
-            "split": "the joint i+1 where the chain is split",
-            "q̈": "joint accelerations of all joints, by chain splitting at every joint (eq. 6.110)",
-            "η": "size ratio η = L/ρ (eq. 7.49)",
-            "x/L": "where the pole of aₙ lies on the x axis, over L (eq. 7.47, 7.48)",
-            **MEANINGS,
+            **self.symbols,
+            "−fₙ₊₁ on the tip": "the couple on the tip, from a fictitious joint n+1 (eq. 7.44); in the figure: "
+                                f"−f{sub(n + 1)} on the tip: couple (line at ∞)",
+            "aⱼ": ("acceleration of body j, drawn as its pole: the point with no acceleration (eq. 4.6); in the "
+                   "figure: " + ", ".join(f"a{sub(j)}" for j in range(1, n + 1))),
+            "fᵢ₊₁": "force of the split joint i+1 on body i+1, drawn as its line of action (eq. 7.56); in the "
+                    f"figure: f{sub(i + 1)}",
+            "centre of Λᵢ⁻¹": "where a couple on body i alone turns it: the pole of −Λᵢ⁻¹ [0, 0, 1] (section 7.5); "
+                              f"in the figure: centre of Λ{sub(i)}⁻¹",
+            **self.meanings,
         }
 
     def focus_options(self):
@@ -197,7 +163,7 @@ class SplittingExplorer(ChainBodies, Explorer):
             d = np.hypot(*(st["joints"][1:st["n"]] - [x, y]).T)
             return {"split at joint": int(np.argmin(d)) + 2}
 
-        return [Handle("split", split_where, split_drag), self._tip_handle()]
+        return [Handle("split", split_where, split_drag), self._tip_handle(bend_for_tip)]
 
     def compute(self, values, changed):
         # Mobilities, the split solution and every body's acceleration.

@@ -38,7 +38,7 @@ from planargeo.errors import InputError, PlanargeoError
 from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_reactions,
                                     tree_solve)
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._explorer import SceneTime, keep_run, rows, run_to, time_value
+from planargeo.widgets._explorer import Described, SceneTime, keep_run, run_to, time_value
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["TreeExplorer"]
@@ -60,27 +60,7 @@ CHECKPOINT = 0.05
 #: end of the time slider (s): Play runs a minute; the state at t costs an integration from 0 to t
 T_END = 60.0
 
-#: the readout's rows: name -> (unit, meaning with its thesis equation)
-UNITS, MEANINGS = rows({
-    "t": ("s", "time since the start of the motion (Play advances it)"),
-    "speed": ("rad/s", "scale of the joint speeds at t = 0 (the pattern of the scene, made to fit the loops, 9.54)"),
-    "loops": ("—", "closed: the pins of Fig 9.2 join the tips of bodies 4, 7 and 8, 9; open: the tree of Fig 9.1"),
-    "degrees of freedom": ("—", "joint coordinates less the independent closure conditions, nq − rank J_c "
-                                "(9.54, 9.60)"),
-    "energy E": ("J", "kinetic plus potential energy of the nine links (K = ½ vᵀ I v, section 1.9)"),
-    "energy drift ΔE/E₀": ("—", "relative change of E since t = 0 (zero for the exact motion: no torques, no "
-                                "friction)"),
-    "closure drift |φ|": ("m", "largest gap opened at a pin by the integration so far, position form of 9.54"),
-    "condition number": ("—", "condition number of BᵀGΛ⁻¹GᵀB, the matrix solved for the contact forces (9.70)"),
-    "largest pin force": ("N", "largest |fᵢ| of the nine joints (9.61)"),
-    "focus": ("—", "the pin force drawn bold"),
-    "q̈₁ (body 1)": ("rad/s²", "angular acceleration of joint 1, the pivot of body 1 (9.43, 9.75)"),
-    "largest |q̈ᵢ|": ("rad/s²", "largest joint acceleration of the nine joints (9.43, 9.75)"),
-    "singular poses": ("—", "poses passed where BᵀGΛ⁻¹GᵀB (9.70) loses rank: a loop lies flat on one line"),
-})
-
-
-class TreeExplorer(SceneTime, Explorer):
+class TreeExplorer(Described, SceneTime, Explorer):
     """The tree of Fig 9.1 and the constrained tree of Fig 9.2 with every pin and contact force, and Play.
 
     Parameters
@@ -98,11 +78,11 @@ class TreeExplorer(SceneTime, Explorer):
 
     title = "Trees and loops: Fig 9.2, its pin and contact forces"
     slug = "trees"
+    described = "trees"
     figsize = (5.6, 5.6)
     limits = (-4.3, 4.3, -4.3, 4.3)
     display_controls = ("velocity poles", "acceleration poles", "reaction forces")
     initial, t_end = INITIAL, T_END
-    units = UNITS
 
     def __init__(self, **kw):
         self._geometry: dict = {}   # closed -> (contacts, length, dof)
@@ -312,12 +292,8 @@ class TreeExplorer(SceneTime, Explorer):
         return out
 
     def explain(self):
-        # Every symbol and readout name on screen, with its thesis equation.
-        out = {
-            **MEANINGS,
-            "∞": "the pole named beside this arrow lies at infinity, in the arrow's direction (a translation, 4.10)",
-            "1 … 9": "body numbers of Fig 9.1",
-        }
+        # Every symbol and readout name on screen, with its thesis equation (the bodies' and forces' own).
+        out = super().explain()
         for i in range(N):
             out[f"v{_SUB[i + 1]}"] = f"velocity pole of body {i + 1}: the point it turns about now (section 4.5)"
             out[f"a{_SUB[i + 1]}"] = f"acceleration pole of body {i + 1}: its point without acceleration (4.6)"
