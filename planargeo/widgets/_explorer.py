@@ -111,6 +111,11 @@ def _described() -> dict:
     return tomllib.loads((files("planargeo") / "data/readouts.toml").read_text(encoding="utf-8"))
 
 
+def explorer_data(explorer: str) -> dict:
+    """The table of ``explorer`` in ``planargeo/data/readouts.toml`` (its words kept as data)."""
+    return _described()[explorer]
+
+
 def readouts(explorer: str) -> tuple[dict, dict, dict]:
     """``(units, meanings, symbols)`` of ``explorer`` as ``planargeo/data/readouts.toml`` describes them.
 
@@ -118,7 +123,7 @@ def readouts(explorer: str) -> tuple[dict, dict, dict]:
     ``units``; a list of units is one per component), ``symbols`` the meanings of what its picture
     shows.
     """
-    table = _described()[explorer]
+    table = explorer_data(explorer)
     rows = table.get("rows", {})
     units = {k: tuple(u) if isinstance(u, list) else u for k, (u, _m) in rows.items() if u}
     return units, {k: m for k, (_u, m) in rows.items()}, dict(table.get("symbols", {}))

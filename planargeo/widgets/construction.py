@@ -44,7 +44,7 @@ from planargeo.draw.pictures.construction import construction_picture
 from planargeo.errors import InputError
 from planargeo.files import atomic_write
 from planargeo.scenes.construction import CONSTRUCTIONS, construct, parameters
-from planargeo.widgets._explorer import arrow_handle, xy_handle
+from planargeo.widgets._explorer import arrow_handle, explorer_data, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["ConstructionExplorer"]
@@ -68,27 +68,10 @@ _SUB = {"1": "₁", "2": "₂"}
 ARM = 1.0
 FADED = 0.4
 
-#: what each parameter's slider says, per construction (symbol and unit; no code names)
-_LABELS = {
-    "twist_sum": {"x{k}": "pole of v{s}: x (m)", "y{k}": "pole of v{s}: y (m)",
-                  "w{k}": "ω{s} (rad/s)", "u{k}": "translation u{s} (m/s)",
-                  "angle{k}": "direction of u{s} (deg)"},
-    "wrench_sum": {"x{k}": "point of f{s}: x (m)", "y{k}": "point of f{s}: y (m)",
-                   "F{k}": "force F{s} (N)", "angle{k}": "direction of F{s} (deg)",
-                   "tau{k}": "couple τ{s} (N·m)"},
-    "velocity": {"xv": "pole of vᵢ₋₁: x (m)", "yv": "pole of vᵢ₋₁: y (m)", "w": "ωᵢ₋₁ (rad/s)",
-                 "xj": "joint: x (m)", "yj": "joint: y (m)", "qd": "q̇ᵢ (rad/s)"},
-    "acceleration": {"xv": "pole of vᵢ₋₁: x (m)", "yv": "pole of vᵢ₋₁: y (m)", "w": "ωᵢ₋₁ (rad/s)",
-                     "xa": "pole of aᵢ₋₁: x (m)", "ya": "pole of aᵢ₋₁: y (m)",
-                     "alpha": "αᵢ₋₁ (rad/s²)", "xj": "joint: x (m)", "yj": "joint: y (m)",
-                     "qd": "q̇ᵢ (rad/s)", "qdd": "q̈ᵢ (rad/s²)"},
-    "newton_euler": {"m": "mass m (kg)", "xc": "centre of mass: x (m)", "yc": "centre of mass: y (m)",
-                     "r": "radius of gyration r (m)", "xv": "pole of v: x (m)", "yv": "pole of v: y (m)",
-                     "w": "ω (rad/s)", "xa": "pole of a: x (m)", "ya": "pole of a: y (m)",
-                     "alpha": "α (rad/s²)", "xj": "joint: x (m)", "yj": "joint: y (m)"},
-    "through_infinity": {"x1": "pole of v₁: x (m)", "y1": "pole of v₁: y (m)", "w1": "ω₁ (rad/s)",
-                         "hx": "handle h: x (m)", "hy": "handle h: y (m)", "k": "size k of v₂ (rad/s)"},
-}
+#: the construction's words, kept as data (``planargeo/data/readouts.toml``): what each parameter's slider
+#: says per construction, the readout's units, the meanings of each construction's symbols and rows
+_DATA = explorer_data("construction")
+_LABELS = _DATA["labels"]
 
 
 def _label(kind: str, name: str) -> str:
@@ -119,106 +102,8 @@ _DIRECTIONS = {
                    ("f2 direction", "x2", "y2", "angle2", "F2")],
 }
 
-#: a twist [vx, vy, ω], an acceleration [ax, ay, α], a wrench [fx, fy, τ]: one unit per component
-TWIST_UNITS = ("m/s", "m/s", "rad/s")
-ACCEL_UNITS = ("m/s²", "m/s²", "rad/s²")
-WRENCH_UNITS = ("N", "N", "N·m")
-
-#: readout units by key
-_UNITS = {"ω₁": "rad/s", "ω₂": "rad/s", "ω₃ = ω₁ + ω₂": "rad/s", "ρ": "m", "β": "—",
-          "pole of v₃": "m", "F₁": "N", "F₂": "N", "F₃": "N", "meet P": "m", "f₃": WRENCH_UNITS,
-          "ωᵢ₋₁": "rad/s", "q̇ᵢ": "rad/s", "ωᵢ": "rad/s", "kᵢ": "m", "βᵢ": "—",
-          "pole of vᵢ": "m", "q̈ᵢ": "rad/s²", "|κᵢ|": "m/s²", "ρᵢ": "m", "pole of aᵢ": "m",
-          "aᵢ": ACCEL_UNITS, "m": "kg", "|Ia|": "N", "|p|": "N", "|fⁿᵉᵗ|": "N", "τ": "N·m",
-          "ρ = τ/|fⁿᵉᵗ|": "m", "fⁿᵉᵗ": WRENCH_UNITS, "power of fⁿᵉᵗ on v": "W", "step": "—",
-          "equation": "—", "case": "—", "weight of v₂": "—", "v₂": "—", "pole of v₂": "m",
-          "v₃": TWIST_UNITS}
-
-#: the meaning of every symbol each construction shows (figure labels and readout rows)
-_EXPLAIN_COMMON = {
-    "∞": "a point at infinity (a direction), drawn at the edge of the view as an arrow its way (5.5)",
-    "step": "the step shown, of all the construction's steps",
-    "equation": "the thesis equation the step uses",
-    "case": "the special case reached, by name and equation (10.2.4)",
-}
-EXPLAIN = {
-    "twist_sum": {
-        "v₁": "the first twist: a rotation ω₁ about its pole Q₁, plus a translation u₁ (4.10)",
-        "v₂": "the second twist: ω₂ about Q₂, plus a translation u₂ (4.10)",
-        "v₃ = v₁ + v₂": "their sum, whose pole lies on the line Q₁Q₂ (4.11)",
-        "Q₁, Q₂": "the poles of v₁ and v₂, the points that do not move (4.10)",
-        "ω₁": "angular velocity of v₁ (4.10)", "ω₂": "angular velocity of v₂ (4.10)",
-        "ω₃ = ω₁ + ω₂": "angular velocity of the sum (4.11)",
-        "β": "lever ratio: v₃'s pole is at Q₁ + β (Q₂ − Q₁), β = ω₂/(ω₁+ω₂) (4.12)",
-        "ρ": "shift of a rotation by a translation, ρ = u/ω (4.16)",
-        "pole of v₃": "the pole of the sum (4.12–4.13)",
-    },
-    "wrench_sum": {
-        "f₁": "the first wrench: a force F₁ on its line, plus a couple τ₁ (4.27, 4.46)",
-        "f₂": "the second wrench: a force F₂ on its line, plus a couple τ₂ (4.27, 4.46)",
-        "f₃ = f₁ + f₂": "their sum, on a line through the meet P (4.33)",
-        "f₃": "the sum's components [fx, fy, τ]: force and moment about the origin (4.27)",
-        "P": "the meet P = L₁ × L₂ of the two lines of action (5.34)",
-        "meet P": "where the lines of f₁ and f₂ meet (5.34)",
-        "F₁": "magnitude of the force f₁ (4.27)", "F₂": "magnitude of the force f₂ (4.27)",
-        "F₃": "magnitude of the summed force (4.39)",
-        "β": "lever ratio of parallel forces, β = F₂/(F₁+F₂) (4.43)",
-        "ρ": "shift of a force by a couple, ρ = τ/F (4.46)",
-    },
-    "velocity": {
-        "vᵢ₋₁": "the velocity twist of the previous body, a rotation ωᵢ₋₁ about its pole (4.47)",
-        "sᵢq̇ᵢ": "the joint's relative rotation: unit rotation sᵢ about the joint times q̇ᵢ (2.1)",
-        "vᵢ": "the body's velocity twist vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ (4.47)",
-        "ωᵢ₋₁": "angular velocity of the previous body (4.47)",
-        "q̇ᵢ": "the joint's rate (4.47)", "ωᵢ": "angular velocity of the body, ωᵢ₋₁ + q̇ᵢ (4.49)",
-        "kᵢ": "distance from the pole of vᵢ₋₁ to the joint (4.48)",
-        "βᵢ": "lever ratio βᵢ = q̇ᵢ/(q̇ᵢ + ωᵢ₋₁): vᵢ's pole is βᵢ kᵢ along the lever (4.48)",
-        "pole of vᵢ": "the pole of the body's velocity (4.48)",
-    },
-    "acceleration": {
-        "aᵢ₋₁": "the acceleration twist of the previous body, α about its pole (4.52)",
-        "vᵢ": "the body's velocity twist vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ (4.47)",
-        "sᵢq̈ᵢ": "the joint's relative acceleration about the joint (4.52)",
-        "κᵢ": "the bias acceleration κᵢ = vᵢ × sᵢ q̇ᵢ, a translation (4.53)",
-        "sᵢq̈ᵢ + κᵢ": "what the joint adds: a rotation ρᵢ from the joint (4.54)",
-        "aᵢ": "the body's acceleration aᵢ = aᵢ₋₁ + sᵢ q̈ᵢ + κᵢ, components [ax, ay, α] (4.52)",
-        "ωᵢ₋₁": "angular velocity of the previous body (4.47)", "q̇ᵢ": "the joint's rate (4.47)",
-        "q̈ᵢ": "the joint's acceleration (4.52)",
-        "kᵢ": "distance from the pole of vᵢ₋₁ to the joint (4.48)",
-        "|κᵢ|": "size of the bias acceleration, ωᵢ₋₁ q̇ᵢ kᵢ (4.53)",
-        "ρᵢ": "distance of the pole of sᵢq̈ᵢ + κᵢ from the joint, ωᵢ₋₁ q̇ᵢ kᵢ / q̈ᵢ (4.54)",
-        "pole of aᵢ": "the acceleration pole of the body (4.52)",
-    },
-    "newton_euler": {
-        "I": "the body's inertia, drawn as its circle of gyration about the centre of mass (4.58)",
-        "v": "the body's velocity twist, ω about its pole (4.47)",
-        "a": "the body's acceleration twist, α about its pole (4.52)",
-        "Ia": "I a: the force that gives the acceleration a, on the axis of percussion of a (5.64)",
-        "p": "the bias force p = −(v×)ᵀ I v, through the centre of mass (4.56)",
-        "fⁿᵉᵗ": "the net force fⁿᵉᵗ = I a + p, components [fx, fy, τ] (4.55)",
-        "joint": "the joint about which the torque is taken (4.57)",
-        "m": "mass of the body (4.58)", "|Ia|": "magnitude of the force I a (5.64)",
-        "|p|": "magnitude of the bias force, m l ω² (4.56)",
-        "|fⁿᵉᵗ|": "magnitude of the net force (4.55)",
-        "τ": "the joint torque: the net force's moment about the joint (4.57)",
-        "ρ": "distance of the net force's line from the joint, τ/|fⁿᵉᵗ| (4.57)",
-        "ρ = τ/|fⁿᵉᵗ|": "distance of the net force's line from the joint (4.57)",
-        "r": "radius of gyration of the body about its centre of mass (4.58)",
-        "power of fⁿᵉᵗ on v": "the power vᵀ fⁿᵉᵗ of the net force on the motion (5.73)",
-    },
-    "through_infinity": {
-        "horizon": "the line at infinity drawn as a circle |h| = 2 m: a handle on it is a point at "
-                   "infinity (10.2.4)",
-        "h": "the handle that places v₂'s pole, inside the horizon or on it (10.2.4)",
-        "v₁": "the first twist, ω₁ about its pole (4.10)",
-        "v₂": "the twist v₂ = k [h_y, −h_x, 1 − |h|/R]: a rotation, or on the horizon a "
-              "translation (10.2.4)",
-        "v₃ = v₁ + v₂": "the sum, which moves on smoothly as v₂'s pole passes infinity (4.11)",
-        "v₃": "the sum's components [vx, vy, ω] (4.10)",
-        "weight of v₂": "the weight 1 − |h|/R of v₂'s pole: 0 on the horizon (10.2.4)",
-        "pole of v₂": "the pole of v₂ (4.10)", "pole of v₃": "the pole of the sum (4.12)",
-    },
-}
+#: readout units by key (a vector: one per component)
+_UNITS = {k: tuple(u) if isinstance(u, list) else u for k, u in _DATA["units"].items()}
 
 
 def _short_case(text: str) -> str:
@@ -362,7 +247,7 @@ class ConstructionExplorer(Explorer):
     def explain(self):
         # The meaning of every symbol the chosen construction shows, with its thesis equation.
         kind = self.values["construction"] if self.state is None else self.construction
-        return {**EXPLAIN[kind], **_EXPLAIN_COMMON}
+        return {**_DATA[kind], **_DATA["common"]}
 
     def compute(self, values, changed):
         # The construction for the parameter values (may raise a named PlanargeoError).
