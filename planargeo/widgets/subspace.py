@@ -46,7 +46,7 @@ from planargeo.scenes.subspace import subspace_state, unit_direction
 from planargeo.screws.twists import inertia_matrix
 from planargeo.geometry.projective import is_at_infinity, is_ideal
 from planargeo.widgets._points import point_value
-from planargeo.widgets._explorer import shown, arrow_handle, grown_view, xy_handle
+from planargeo.widgets._explorer import arrow_handle, explorer_data, grown_view, shown, xy_handle
 from planargeo.widgets.base import Explorer, Step
 
 __all__ = ["SubspaceExplorer", "JOINT_OPTIONS", "SHOW_OPTIONS"]
@@ -63,25 +63,8 @@ _SUB = "₁₂"
 
 #: the heading row above the identity checks
 CHECKS_HEADING = "checks: thesis identities of s, R, T, U"
-#: residual of the scene -> (readout row, unit, why it must read 0)
-CHECK_ROWS = {
-    "sᵀT − 1": ("check sᵀT − 1 → 0", "—",
-                "T is scaled so that sᵀT = 1: the joint force Q = sᵀf reads T's share (6.23, 6.32)"),
-    "RᵀU − 1": ("check RᵀU − 1 → 0", "—",
-                "U is scaled so that RᵀU = 1: the reaction μ = Uᵀf reads R's share (6.22, 6.35)"),
-    "TᵀU": ("check TᵀU → 0", "—",
-            "TᵀU = 0, the dual of sᵀR = 0: active forces and reactive accelerations do not mix (6.46)"),
-    "T sᵀ + R Uᵀ − 1": ("check T sᵀ + R Uᵀ − 1 → 0", "—",
-                        "every force splits as f = T sᵀf + R Uᵀf, whole and once (6.38, 6.51, 6.54)"),
-    "sᵀR": ("check sᵀR → 0", "—",
-            "the reactions are the lines through the poles of the allowed motions: sᵀR = 0 (6.1)"),
-    "(sψ)ᵀ(Rμ)": ("check (sψ)ᵀ(Rμ) → 0", "N·m/s²",
-                  "the joint's reaction does no work on the motion it allows (6.40–6.43)"),
-    "(Uγ)ᵀ(TQ)": ("check (Uγ)ᵀ(TQ) → 0", "N·m/s²",
-                  "the active force does no work on the reactive acceleration, by TᵀU = 0 (6.46)"),
-    "Rᵀ(sψ)": ("check Rᵀ(sψ) → 0", "—",
-               "the held body's acceleration has no reactive part: Rᵀs ψ = 0 by sᵀR = 0 (6.58–6.60)"),
-}
+#: residual of the scene -> (readout row, unit, why it must read 0), kept as data (``planargeo/data/readouts.toml``)
+CHECK_ROWS = {k: tuple(v) for k, v in explorer_data("subspace")["checks"].items()}
 
 
 def _kind_units(s_col) -> tuple[str, str]:
@@ -131,29 +114,7 @@ class SubspaceExplorer(Explorer):
         # Every symbol on screen, with its thesis equation.
         st = self.state
         k = 1 if st is None else int(st["s"].shape[1])
-        out = {
-            "∞": "a point at infinity (a direction), drawn at the edge of the view as an arrow its way (5.5)",
-            "s": "motion space: the poles of the motions the joint allows (6.1, 6.8)",
-            "R": "reaction space: the lines of the forces the joint can take, sᵀR = 0 (6.1)",
-            "T": "T = I s (sᵀIs)⁻¹: the axes of percussion of s, the active forces (6.36)",
-            "U": "U = I⁻¹R (RᵀI⁻¹R)⁻¹: the reactive accelerations, points on T, TᵀU = 0 (6.37, 6.46)",
-            "f": "the applied force on the body (its line and size F) (5.56)",
-            "TQ": "the part of f that accelerates the body along the joint (6.38)",
-            "Rμ": "the part of f that goes into the joint (6.38)",
-            "I⁻¹f": "the acceleration the body would have if free (6.68)",
-            "sψ": "the acceleration of the body held by the joint (6.44, 6.93)",
-            "Uγ": "the acceleration the joint's base would need to let the body move freely (6.44)",
-            "c": "the centre of mass of the body", "body": "the body, a bar, at rest",
-            "joint": "the joint: a pivot, a slide, a pin in a slot or the plane joint (4.79)",
-            "I": "the body's inertia, drawn as its circle of gyration ρ about c (5.4)",
-            "k (degrees of freedom)": "how many independent motions the joint allows (6.8)",
-            "sᵀIs (6.67)": "joint-space inertia: what resists the joint's own acceleration (6.67)",
-            "pole of sψ (held body)": "the pole of the held body's acceleration (6.44)",
-            "joint's push −Rμ, |force|": "size of the force with which the joint pushes back (6.38)",
-            "U (meet of T₁, T₂)": "a 2-dof joint's two lines T meet in the one point U (6.46)",
-            CHECKS_HEADING: "identities s, R, T and U are built to satisfy: the rows below must "
-                            "read 0 up to round-off",
-        }
+        out = dict(explorer_data("subspace")["symbols"])
         sub = (lambda i: _SUB[i]) if k > 1 else (lambda i: "")
         rsub = (lambda j: _SUB[j]) if 3 - k > 1 else (lambda j: "")
         for i in range(k):
