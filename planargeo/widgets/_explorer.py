@@ -130,18 +130,16 @@ def readouts(explorer: str) -> tuple[dict, dict, dict]:
 
 
 class Described:
-    """An explorer whose readout rows and symbols are described as data (:func:`readouts` of :attr:`described`).
+    """An explorer whose readout rows and symbols are described as data (:func:`readouts` of its ``slug``).
 
     The class gets :attr:`units`, :attr:`meanings` (of the readout rows) and :attr:`symbols`;
     :meth:`explain` gives the symbols' and the rows' meanings.
     """
 
-    described: str = ""
-
     def __init_subclass__(cls, **kw):
         super().__init_subclass__(**kw)
-        if cls.__dict__.get("described"):
-            cls.row_units, cls.meanings, cls.symbols = readouts(cls.described)
+        if cls.__dict__.get("slug") in _described():
+            cls.row_units, cls.meanings, cls.symbols = readouts(cls.slug)
             if "units" not in cls.__dict__:
                 cls.units = cls.row_units
 

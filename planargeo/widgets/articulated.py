@@ -134,7 +134,6 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
 
     title = "Articulated inertias along a chain: conics, percussion and convergence"
     slug = "articulated"
-    described = "articulated"
     figsize = (9.6, 5.0)
     display_controls = ("rigid inertias", "percussion axes")
 

@@ -91,7 +91,6 @@ class CarExplorer(Described, Explorer):
 
     title = "Car cornering: tyre forces by projective dynamics"
     slug = "car"
-    described = "car"
     figsize = (6.0, 5.6)
 
     def __init__(self, **kw):

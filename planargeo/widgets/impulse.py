@@ -88,7 +88,6 @@ class ImpulseExplorer(Described, Explorer):
 
     title = "Impulse and the centre of percussion: a bat or a door struck at rest"
     slug = "impulse"
-    described = "impulse"
     figsize = (6.4, 4.6)
     limits = (-0.45, 1.2, -0.6, 0.6)
     display_controls = ("t",)

@@ -106,7 +106,6 @@ class PercussionExplorer(Described, Explorer):
 
     title = "Inertia and percussion: the sweet spot"
     slug = "percussion"
-    described = "percussion"
     figsize = (6.0, 4.8)
     limits = (-0.9, 1.6, -0.9, 0.9)
     display_controls = ("angular accel. α",)

@@ -148,7 +148,6 @@ class ProjectiveExplorer(Described, Explorer):
 
     title = "Projective playground: poles, polars and constructions"
     slug = "projective"
-    described = "projective"
     figsize = (5.6, 5.4)
     limits = (-4, 4, -4, 4)
     display_controls = ("construction", "line and its pole")

@@ -111,7 +111,6 @@ class ScrewSumExplorer(Described, Explorer):
 
     title = "Twist and wrench addition"
     slug = "screw-sum"
-    described = "screw_sum"
     figsize = (5.6, 5.0)
     limits = (-4, 4, -4, 4)
     scale = 3.0

@@ -259,7 +259,7 @@ class SliderCrankExplorer(SceneTime, Explorer):
         Parameters
         ----------
         st : dict
-            A state of :meth:`compute`.
+            A state of :meth:`compute`: its time, the dead centres passed and its configuration count.
 
         Returns
         -------

@@ -86,7 +86,6 @@ class SplittingExplorer(Described, ChainBodies, Explorer):
 
     title = "Constrained chain: articulated mobility and chain splitting"
     slug = "splitting"
-    described = "splitting"
     figsize = (7.6, 5.2)
     display_controls = ("mobility centres",)
     #: lengths in metres (L = 1); a value below ``zero_tol × scale`` is round-off and reads 0 (the smallest

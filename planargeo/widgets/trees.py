@@ -78,7 +78,6 @@ class TreeExplorer(Described, SceneTime, Explorer):
 
     title = "Trees and loops: Fig 9.2, its pin and contact forces"
     slug = "trees"
-    described = "trees"
     figsize = (5.6, 5.6)
     limits = (-4.3, 4.3, -4.3, 4.3)
     display_controls = ("velocity poles", "acceleration poles", "reaction forces")
