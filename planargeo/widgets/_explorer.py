@@ -23,11 +23,11 @@ Examples
 """
 from __future__ import annotations
 
-import functools
 import math
 
 import numpy as np
 
+from planargeo.draw.pictures._words import words_data
 from planargeo.errors import DegenerateGeometryError, InputError
 from planargeo.widgets.controls import cached
 from planargeo.widgets.handles import Handle
@@ -103,17 +103,9 @@ def grown_view(box, pts, margin: float, sized=None, extra: float | None = None) 
     return (float(x0), float(x1), float(y0), float(y1))
 
 
-@functools.cache
-def _described() -> dict:
-    import tomllib
-    from importlib.resources import files
-
-    return tomllib.loads((files("planargeo") / "data/readouts.toml").read_text(encoding="utf-8"))
-
-
 def explorer_data(explorer: str) -> dict:
     """The table of ``explorer`` in ``planargeo/data/readouts.toml`` (its words kept as data)."""
-    return _described()[explorer]
+    return words_data(explorer)
 
 
 def readouts(explorer: str) -> tuple[dict, dict, dict]:
@@ -138,7 +130,7 @@ class Described:
 
     def __init_subclass__(cls, **kw):
         super().__init_subclass__(**kw)
-        if cls.__dict__.get("slug") in _described():
+        if "rows" in explorer_data(cls.__dict__.get("slug", "")):
             cls.row_units, cls.meanings, cls.symbols = readouts(cls.slug)
             if "units" not in cls.__dict__:
                 cls.units = cls.row_units

@@ -15,16 +15,30 @@ Examples
 """
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
 
 from planargeo.geometry.projective import is_ideal
 
-__all__ = ["num", "pair", "where", "force", "SUB"]
+__all__ = ["num", "pair", "where", "force", "SUB", "words_data"]
 
 #: subscript digits
 SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+@functools.cache
+def _words() -> dict:
+    import tomllib
+    from importlib.resources import files
+
+    return tomllib.loads((files("planargeo") / "data/readouts.toml").read_text(encoding="utf-8"))
+
+
+def words_data(explorer: str) -> dict:
+    """The words of ``explorer`` kept as data: its table in ``planargeo/data/readouts.toml`` (none: empty)."""
+    return _words().get(explorer, {})
 
 
 def num(x: float, digits: int = 4, zero: float = 1e-9) -> str:

@@ -29,7 +29,7 @@ import textwrap
 import numpy as np
 
 from planargeo.draw.picture import FONT_PX, PX_PER_PT, Picture, plain_text
-from planargeo.draw.pictures._words import num, where
+from planargeo.draw.pictures._words import num, where, words_data
 from planargeo.draw.pictures.common import builder, label_line, label_toward
 from planargeo.draw.style import COLORS, SUM
 from planargeo.geometry.projective import is_at_infinity, is_ideal
@@ -43,58 +43,9 @@ FADED = 0.4
 CAPTION_CHARS = 70
 
 #: per construction and element name: its meaning with its equation, or (symbol, meaning) for an
-#: element drawn without a label (an element's symbol is its label, the thesis symbol)
-MEANINGS = {
-    "twist_sum": {
-        "Q1": "twist v₁, a rotation about its pole Q₁ (4.10)",
-        "Q2": "twist v₂, a rotation about its pole Q₂ (4.10)",
-        "Q1Q2": ("Q₁Q₂", "lever line through both poles (5.32)"),
-        "v3": "sum v₃ = v₁ + v₂ (4.11–4.13)",
-    },
-    "wrench_sum": {
-        "f1": "wrench f₁ on its line of action L₁ (4.27)", "f2": "wrench f₂ on its line of action L₂ (4.27)",
-        "P": ("P", "meet P = L₁ × L₂ of the two lines (5.34)"),
-        "par1": ("f₁", "the force f₁ drawn from P (4.39)"), "par2": ("f₂", "the force f₂ drawn from P (4.39)"),
-        "par3": ("side", "a side of the force parallelogram (4.39)"),
-        "par4": ("side", "a side of the force parallelogram (4.39)"),
-        "diag": ("f₁ + f₂", "the parallelogram's diagonal: the summed force (4.39)"),
-        "rho": ("ρ", "shift of the force by the couple, ρ = τ/F (4.46)"),
-        "f3": "sum f₃ = f₁ + f₂, its line through P (4.33)",
-    },
-    "velocity": {
-        "v_prev": "velocity pole of the previous body vᵢ₋₁ (4.47)",
-        "joint": "the joint's relative rotation sᵢ q̇ᵢ, its pole at the joint (2.1)",
-        "lever": ("kᵢ", "lever line from vᵢ₋₁ to the joint (4.48)"),
-        "v": "velocity pole of the body vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ (4.48–4.49)",
-    },
-    "acceleration": {
-        "a_prev": "acceleration pole of the previous body aᵢ₋₁ (4.52)",
-        "v": "velocity pole of the body vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ (4.47)",
-        "rel": "relative acceleration sᵢ q̈ᵢ about the joint (4.52)",
-        "kappa": "bias acceleration κᵢ = vᵢ × sᵢ q̇ᵢ, a translation (4.53)",
-        "combo": "what the joint adds, sᵢ q̈ᵢ + κᵢ (4.54)",
-        "joint_lever": ("joint line", "line of the joint's poles sᵢ q̈ᵢ and κᵢ (4.54)"),
-        "lever": ("lever", "lever line joining the poles of aᵢ₋₁ and sᵢ q̈ᵢ + κᵢ (4.52)"),
-        "a": "acceleration pole of the body aᵢ = aᵢ₋₁ + sᵢ q̈ᵢ + κᵢ (4.52)",
-    },
-    "newton_euler": {
-        "I": "inertia I as its circle of gyration (4.58)",
-        "v": "velocity pole v of the body (4.47)", "a": "acceleration pole a of the body (4.52)",
-        "Ia": "force I a on the axis of percussion of a (5.64)",
-        "p": "bias force p, through the centre of mass (4.56)",
-        "fnet": "net force fⁿᵉᵗ = I a + p (4.55)",
-        "J": ("joint", "the joint about which the torque is taken (4.57)"),
-        "rho": ("ρ", "distance ρ = τ/|fⁿᵉᵗ| of the net force from the joint (4.57)"),
-    },
-    "through_infinity": {
-        "horizon": ("horizon", "the line at infinity drawn as the circle |h| = 2 m (10.2.4)"),
-        "v1": "twist v₁, a rotation about its pole (4.10)",
-        "h": ("h", "the handle that places v₂'s pole (10.2.4)"),
-        "v2": "twist v₂ = k [h_y, −h_x, 1 − |h|/R] (10.2.4, 4.10)",
-        "lever": ("Q₁Q₂", "lever line through the poles of v₁ and v₂ (4.11)"),
-        "v3": "sum v₃ = v₁ + v₂ (4.11)",
-    },
-}
+#: element drawn without a label (an element's symbol is its label, the thesis symbol); kept as data
+MEANINGS = {kind: {k: tuple(v) if isinstance(v, list) else v for k, v in table.items()}
+            for kind, table in words_data("construction")["elements"].items()}
 _RATE_UNIT = {"twist": "rad/s", "accel": "rad/s²"}
 #: labels whose symbol :func:`~planargeo.draw.picture.plain_text` cannot write (no Unicode superscript e, t)
 _SYMBOLS = {r"$f^{net}$": "fⁿᵉᵗ"}
