@@ -38,7 +38,7 @@ from planargeo.draw.pictures.percussion import percussion_numbers, percussion_pi
 from planargeo.errors import DegenerateGeometryError, InputError, InvalidPolygonError
 from planargeo.screws.inertia import Inertia, percussion_axis, percussion_pole
 from planargeo.geometry.projective import from_xy, is_ideal
-from planargeo.widgets._points import point_value
+from planargeo.widgets.readout import point_value
 from planargeo.widgets._explorer import Described
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 

@@ -44,7 +44,7 @@ from planargeo.errors import DegenerateGeometryError, InputError
 from planargeo.geometry.projective import from_xy, is_at_infinity, is_ideal
 from planargeo.widgets._explorer import Described
 from planargeo.widgets.base import Explorer, Handle, Step
-from planargeo.widgets._points import point_value
+from planargeo.widgets.readout import point_value
 
 __all__ = ["ProjectiveExplorer", "CONICS", "make_conic"]
 

@@ -28,7 +28,8 @@ import numpy as np
 
 from planargeo.geometry.projective import direction, is_ideal, to_xy
 
-__all__ = ["fmt", "point_text", "value_text", "split_units", "explain_html", "is_numeric", "plain_symbol"]
+__all__ = ["fmt", "point_text", "point_value", "value_text", "split_units", "explain_html", "is_numeric",
+           "plain_symbol"]
 
 #: units that mean "dimensionless": nothing is written
 NO_UNIT = ("", "—", "-")
@@ -220,6 +221,30 @@ def point_text(p, unit: str = "m", zero: float = 0.0, digits: int = 4) -> str:
     xy = to_xy(p)
     text = fmt(tuple(xy), digits, zero)
     return f"{text} {html.escape(unit)}" if unit not in NO_UNIT else text
+
+
+def point_value(p):
+    """``(x, y)`` of a finite homogeneous point (numbers: the base writes the unit), or the words of
+    :func:`point_text` for a point at infinity.
+
+    Parameters
+    ----------
+    p : array_like, shape (3,)
+        ``[a, b, w]`` with ``x = −b/w``, ``y = a/w`` (thesis 5.49).
+
+    Returns
+    -------
+    tuple of float or str
+
+    Examples
+    --------
+    >>> point_value([2.0, -1.0, 1.0]), point_value([0.0, -1.0, 0.0])
+    ((1.0, 2.0), 'at infinity (direction (1, 0))')
+    """
+    p = np.asarray(p, dtype=float)
+    if bool(is_ideal(p)):
+        return point_text(p)
+    return (float(-p[1] / p[2]) + 0.0, float(p[0] / p[2]) + 0.0)
 
 
 _GREEK = {"alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "varepsilon": "ε",

@@ -44,7 +44,7 @@ from planargeo.errors import InputError
 from planargeo.geometry.projective import is_at_infinity
 from planargeo.screws.special import twists_case, wrenches_case
 from planargeo.screws.twists import Twist, Wrench, add_twists, add_wrenches
-from planargeo.widgets._points import point_value
+from planargeo.widgets.readout import point_value
 from planargeo.widgets._explorer import Described, arrow_handle, shown, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step
 

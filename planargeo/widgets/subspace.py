@@ -45,7 +45,7 @@ from planargeo.draw.pictures.subspace import BAR, COM, DIR_HANDLE, subspace_pict
 from planargeo.scenes.subspace import subspace_state, unit_direction
 from planargeo.screws.twists import inertia_matrix
 from planargeo.geometry.projective import is_at_infinity, is_ideal
-from planargeo.widgets._points import point_value
+from planargeo.widgets.readout import point_value
 from planargeo.widgets._explorer import arrow_handle, explorer_data, grown_view, shown, xy_handle
 from planargeo.widgets.base import Explorer, Step
 
