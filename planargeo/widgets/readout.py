@@ -21,11 +21,11 @@ from __future__ import annotations
 
 import html
 import numbers
-import re
 from typing import Any
 
 import numpy as np
 
+from planargeo.draw.picture import plain_text
 from planargeo.geometry.projective import direction, is_ideal, to_xy
 
 __all__ = ["fmt", "point_text", "point_value", "value_text", "split_units", "explain_html", "is_numeric",
@@ -247,60 +247,8 @@ def point_value(p):
     return (float(-p[1] / p[2]) + 0.0, float(p[0] / p[2]) + 0.0)
 
 
-_GREEK = {"alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "varepsilon": "ε",
-          "zeta": "ζ", "eta": "η", "theta": "θ", "vartheta": "ϑ", "iota": "ι", "kappa": "κ",
-          "lambda": "λ", "mu": "μ", "nu": "ν", "xi": "ξ", "pi": "π", "rho": "ρ", "sigma": "σ",
-          "tau": "τ", "upsilon": "υ", "phi": "φ", "varphi": "φ", "chi": "χ", "psi": "ψ",
-          "omega": "ω", "Gamma": "Γ", "Delta": "Δ", "Theta": "Θ", "Lambda": "Λ", "Xi": "Ξ",
-          "Pi": "Π", "Sigma": "Σ", "Phi": "Φ", "Psi": "Ψ", "Omega": "Ω", "infty": "∞",
-          "times": "×", "cdot": "·", "perp": "⊥", "parallel": "∥", "to": "→", "rightarrow": "→",
-          "leftarrow": "←", "pm": "±", "circ": "°", "prime": "′", "ell": "ℓ", "nabla": "∇",
-          "partial": "∂", "approx": "≈", "neq": "≠", "le": "≤", "ge": "≥", "leq": "≤", "geq": "≥",
-          "top": "ᵀ", "quad": " ", ",": " ", ";": " ", "!": ""}
-_SUB = dict(zip("0123456789+-=()aehijklmnoprstuvxβγρφχ",
-                "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓᵦᵧᵨᵩᵪ"))
-_SUP = dict(zip("0123456789+-=()nijkTt*", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁿⁱʲᵏᵀᵗ*"))
-_ACCENTS = {"dot": "\u0307", "ddot": "\u0308", "hat": "\u0302", "bar": "\u0304", "tilde": "\u0303",
-            "vec": "\u20d7", "overline": "\u0304"}
-
-
-def _script(body: str, table: dict, mark: str) -> str:
-    if all(c in table for c in body):
-        return "".join(table[c] for c in body)
-    return f"{mark}({body})" if len(body) > 1 else f"{mark}{body}"
-
-
-def plain_symbol(text: str) -> str:
-    """A label's mathtext (``$\\dot{q}_1$``) as readable Unicode (``q̇₁``); other text unchanged.
-
-    Parameters
-    ----------
-    text : str
-        A label, possibly with ``$...$`` math.
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> plain_symbol("$v_1$"), plain_symbol(r"$\\omega_{12}$"), plain_symbol(r"$\\ddot{q}_2$")
-    ('v₁', 'ω₁₂', 'q̈₂')
-    >>> plain_symbol(r"$\\Lambda^{-1}$ row"), plain_symbol("pole of M")
-    ('Λ⁻¹ row', 'pole of M')
-    """
-    def math(m: re.Match) -> str:
-        t = m.group(1)
-        t = re.sub(r"\\(?:mathrm|mathbf|mathit|boldsymbol|mathsf|text|operatorname)\{([^{}]*)\}", r"\1", t)
-        for name, mark in _ACCENTS.items():
-            t = re.sub(r"\\" + name + r"\{([^{}])\}", lambda n: n.group(1) + mark, t)
-            t = re.sub(r"\\" + name + r"\s*([A-Za-z])", lambda n: n.group(1) + mark, t)
-        t = re.sub(r"\\([A-Za-z]+|[,;!])", lambda n: _GREEK.get(n.group(1), n.group(1)), t)
-        t = re.sub(r"_\{([^{}]*)\}|_(\S)", lambda n: _script(n.group(1) or n.group(2), _SUB, "_"), t)
-        t = re.sub(r"\^\{([^{}]*)\}|\^(\S)", lambda n: _script(n.group(1) or n.group(2), _SUP, "^"), t)
-        return t.replace("{", "").replace("}", "")
-
-    return re.sub(r"\$([^$]*)\$", math, str(text))
+#: a label's mathtext (``$\\dot{q}_1$``) as readable Unicode (``q̇₁``): the pictures' own reader
+plain_symbol = plain_text
 
 
 def explain_html(meanings: dict[str, str], title: str = "What is shown") -> str:
