@@ -26,6 +26,25 @@ function mk(tag, attrs, parent) {
   return e;
 }
 
+const glyphs = new Map();      // (r, ccw) -> the glyph's paths about its centre (pixels, y down)
+function glyphPaths(r, ccw) {
+  const key = r + (ccw ? "+" : "-");
+  let g = glyphs.get(key);
+  if (!g) {
+    const [arc, head] = arcGlyph(r, ccw);
+    g = [arc.map((p, i) => (i ? "L" : "M") + f2(p[0]) + " " + f2(-p[1])).join(""),
+         "M" + head.map((p) => f2(p[0]) + " " + f2(-p[1])).join("L") + "Z"];
+    if (glyphs.size > 500) glyphs.clear();
+    glyphs.set(key, g);
+  }
+  return g;
+}
+
+// the unit circle, sampled once (an ellipse part is its image under an affine map)
+const CIRCLE_N = 96;
+const CIRCLE = Array.from({ length: CIRCLE_N }, (_, i) => [Math.cos((2 * Math.PI * i) / CIRCLE_N),
+                                                          Math.sin((2 * Math.PI * i) / CIRCLE_N)]);
+
 function arcGlyph(r, ccw) {
   // the 270° rotation arrow of planargeo.draw.geometry.arc_glyph (pixels, y up)
   const n = 40, a0 = -Math.PI / 4, span = 1.5 * Math.PI, pts = [];
@@ -151,7 +170,7 @@ function render({ model, el }) {
   }
 
   // ------------------------------------------------------------------ drawing
-  function drawPart(g, q, e) {
+  function drawPart(put, q, e) {
     const k = q[0];
     if (k === "P") {
       let d = "";
@@ -160,48 +179,47 @@ function render({ model, el }) {
       const a = { d, fill: e.fill || "none", stroke: e.color, "stroke-width": e.width ?? 1.8 };
       if (e.fill) a["fill-opacity"] = e.alpha ?? 1;
       if (e.dash) a["stroke-dasharray"] = e.dash.join(" ");
-      mk("path", a, g);
+      put("path", a);
     } else if (k === "E") {
       // the unit circle under the picture's affine map (data units), sampled here
-      const [, cx, cy, a, b, c, dd] = q, n = 96;
+      const [, cx, cy, a, b, c, dd] = q;
       let p = "";
-      for (let i = 0; i < n; i++) {
-        const t = (2 * Math.PI * i) / n, u = Math.cos(t), v = Math.sin(t);
+      for (let i = 0; i < CIRCLE_N; i++) {
+        const [u, v] = CIRCLE[i];
         p += (i ? "L" : "M") + f2(X(cx + a * u + b * v)) + " " + f2(Y(cy + c * u + dd * v));
       }
       const at = { d: p + "Z", fill: "none", stroke: e.color, "stroke-width": e.width ?? 1.8 };
       if (e.dash) at["stroke-dasharray"] = e.dash.join(" ");
-      mk("path", at, g);
+      put("path", at);
     } else if (k === "M") {
       const x = X(q[1]), y = Y(q[2]), s = q[4] / 2;
       if (q[3] === "D") {
-        mk("path", { d: `M${x} ${y - s * 1.2}L${x + s} ${y}L${x} ${y + s * 1.2}L${x - s} ${y}Z`,
-                     fill: e.color, stroke: "white", "stroke-width": 0.8 }, g);
+        put("path", { d: `M${x} ${y - s * 1.2}L${x + s} ${y}L${x} ${y + s * 1.2}L${x - s} ${y}Z`,
+                     fill: e.color, stroke: "white", "stroke-width": 0.8 });
       } else if (q[3] === "s") {
-        mk("rect", { x: x - s, y: y - s, width: 2 * s, height: 2 * s, fill: e.color,
-                     stroke: "white", "stroke-width": 0.8 }, g);
+        put("rect", { x: x - s, y: y - s, width: 2 * s, height: 2 * s, fill: e.color,
+                     stroke: "white", "stroke-width": 0.8 });
       } else {
-        mk("circle", { cx: x, cy: y, r: s, fill: e.color, stroke: "white", "stroke-width": 0.8 }, g);
+        put("circle", { cx: x, cy: y, r: s, fill: e.color, stroke: "white", "stroke-width": 0.8 });
       }
     } else if (k === "G") {
-      const [arc, head] = arcGlyph(q[3], !!q[4]), x = X(q[1]), y = Y(q[2]);
-      const d = arc.map((p, i) => (i ? "L" : "M") + f2(x + p[0]) + " " + f2(y - p[1])).join("");
-      mk("path", { d, fill: "none", stroke: e.color, "stroke-width": 1.6 }, g);
-      mk("path", { d: "M" + head.map((p) => f2(x + p[0]) + " " + f2(y - p[1])).join("L") + "Z",
-                   fill: e.color }, g);
+      // the glyph drawn once about its centre, moved there
+      const [arc, head] = glyphPaths(q[3], !!q[4]), at = `translate(${f2(X(q[1]))},${f2(Y(q[2]))})`;
+      put("path", { d: arc, transform: at, fill: "none", stroke: e.color, "stroke-width": 1.6 });
+      put("path", { d: head, transform: at, fill: e.color });
     } else if (k === "A") {
       const x = X(q[1]), y = Y(q[2]), x2 = x + q[3], y2 = y - q[4];
       const L = Math.hypot(q[3], q[4]) || 1, ux = q[3] / L, uy = -q[4] / L, h = 8;
-      mk("line", { x1: x, y1: y, x2: x2 - ux * h * 0.8, y2: y2 - uy * h * 0.8, stroke: e.color,
-                   "stroke-width": 1.9 }, g);
-      mk("path", { d: `M${x2} ${y2}L${x2 - ux * h - uy * h * 0.35} ${y2 - uy * h + ux * h * 0.35}` +
-                      `L${x2 - ux * h + uy * h * 0.35} ${y2 - uy * h - ux * h * 0.35}Z`, fill: e.color }, g);
+      put("line", { x1: x, y1: y, x2: x2 - ux * h * 0.8, y2: y2 - uy * h * 0.8, stroke: e.color,
+                   "stroke-width": 1.9 });
+      put("path", { d: `M${x2} ${y2}L${x2 - ux * h - uy * h * 0.35} ${y2 - uy * h + ux * h * 0.35}` +
+                      `L${x2 - ux * h + uy * h * 0.35} ${y2 - uy * h - ux * h * 0.35}Z`, fill: e.color });
     } else if (k === "T") {
-      const t = mk("text", { x: X(q[1]) + q[3], y: Y(q[2]) - q[4], fill: e.color,
+      const t = put("text", { x: X(q[1]) + q[3], y: Y(q[2]) - q[4], fill: e.color,
                              "font-size": st.head.font_px,
                              "text-anchor": ANCHOR[q[6][0]] || "start",
-                             "dominant-baseline": BASELINE[q[6][1]] || "text-after-edge" }, g);
-      t.textContent = q[5];
+                             "dominant-baseline": BASELINE[q[6][1]] || "text-after-edge" });
+      if (t.textContent !== q[5]) t.textContent = q[5];
     }
   }
 
@@ -217,8 +235,19 @@ function render({ model, el }) {
     else g.removeAttribute("opacity");
     if (e.d) g.setAttribute("data-described", ""); else g.removeAttribute("data-described");
     if (e.role) g.setAttribute("data-role", e.role); else g.removeAttribute("data-role");
-    g.textContent = "";
-    for (const q of e.parts || []) drawPart(g, q, e);
+    // the same kinds of parts as drawn last: their nodes are kept and only moved
+    const parts = e.parts || [];
+    let sig = (e.fill ? "f" : "") + (e.dash ? "d" : "") + ":";
+    for (const q of parts) sig += q[0] === "M" ? "M" + q[3] : q[0];
+    const kids = g.childNodes;
+    let i = 0;
+    const reuse = g.__sig === sig;
+    const put = reuse
+      ? (tag, attrs) => { const n = kids[i++]; for (const k in attrs) n.setAttribute(k, attrs[k]); return n; }
+      : (tag, attrs) => mk(tag, attrs, g);
+    if (!reuse) g.textContent = "";
+    for (const q of parts) drawPart(put, q, e);
+    g.__sig = sig;
   }
 
   function buildFrame() {
@@ -277,7 +306,14 @@ function render({ model, el }) {
 
   let nPaint = 0, nPushed = 0, paintAsked = false;
   const paintTimes = [];
+  const applyTimes = [];         // milliseconds each update took to apply (for benchmarks)
   function apply(u) {
+    const t0 = performance.now();
+    applyUpdate(u);
+    applyTimes.push(performance.now() - t0);
+    if (applyTimes.length > 1000) applyTimes.shift();
+  }
+  function applyUpdate(u) {
     const full = u.base === null || u.base === undefined;
     if (!full && u.base !== st.version) { askSync(); return; }
     if (full && u.version === st.version && frame) return;      // already held
@@ -484,7 +520,7 @@ function render({ model, el }) {
   if (snap) apply({ ...snap, base: null });
   askSync();        // the snapshot may be older than this view (a second display): the kernel knows
   root.__planargeo = { ping: () => send({ type: "ping" }), busy: () => inflight || pending.size > 0, stats,
-                       handlePaints, paintTimes, painted: () => nPaint, pushed: () => nPushed, version: () => st.version,
+                       handlePaints, paintTimes, applyTimes, painted: () => nPaint, pushed: () => nPushed, version: () => st.version,
                        elements: () => st.els.size, status: () => status.textContent,
                        text: (id) => { const e = st.els.get(id); const t = e && (e.parts || []).find((q) => q[0] === "T");
                                        return t ? t[5] : null; } };
