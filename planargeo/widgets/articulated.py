@@ -37,6 +37,7 @@ import ipywidgets as W
 import numpy as np
 
 from planargeo.draw.geometry import conic_geometry
+from planargeo.draw.pictures._words import subscript
 from planargeo.draw.pictures.articulated import MARGIN, articulated_picture, chain_view, fit_box
 from planargeo.scenes.articulated import articulated_state, inertia_at
 from planargeo.widgets._motion import Motion
@@ -202,7 +203,7 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         # symbols as the figure names them).
         focus = str(self.values.get("focus", "all"))
         j = focus.split()[1] if focus.startswith("body ") else 1
-        kk = _sub(int(j))
+        kk = subscript(int(j))
         return {
             **self.symbols,
             "Aₖ": f"articulated inertia of the focused body k (eq. 7.7a); in the figure: A{kk}",
@@ -371,11 +372,6 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         out.update({"t": state["t"], "energy T + V": E, "dissipated W": Wd, "T + V + W": E + Wd,
                     "initial energy E₀": E0, C_ROW: state["n"] * state["c"]})
         return out
-
-
-def _sub(i: int) -> str:
-    """``i`` in subscript digits."""
-    return str(i).translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
 
 
 def _rotate_back(A, theta):

@@ -40,6 +40,7 @@ from pathlib import Path
 
 import ipywidgets as W
 
+from planargeo.draw.pictures._words import subscript
 from planargeo.draw.pictures.construction import construction_picture
 from planargeo.errors import InputError
 from planargeo.files import atomic_write
@@ -63,8 +64,6 @@ _RANGES = {
 #: every construction the scene knows, in its order: the menu's (title, key) options
 CHOICES = [(title, key) for key, (title, _) in CONSTRUCTIONS.items()]
 
-_SUB = {"1": "₁", "2": "₂"}
-
 ARM = 1.0
 FADED = 0.4
 
@@ -81,7 +80,7 @@ def _label(kind: str, name: str) -> str:
         return table[name]
     m = re.fullmatch(r"([a-zA-Z]+)([12])", name)
     if m and f"{m.group(1)}{{k}}" in table:
-        return table[f"{m.group(1)}{{k}}"].format(s=_SUB[m.group(2)])
+        return table[f"{m.group(1)}{{k}}"].format(s=subscript(m.group(2)))
     unit = _range(name)[3]
     return name if unit == "—" else f"{name} ({unit})"
 

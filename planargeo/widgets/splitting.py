@@ -32,7 +32,7 @@ import numpy as np
 
 from planargeo.draw.pictures.articulated import fit_box
 from planargeo.draw.pictures.splitting import splitting_picture
-from planargeo.draw.pictures._words import SUB
+from planargeo.draw.pictures._words import subscript
 from planargeo.scenes.splitting import splitting_state, twist_pole
 from planargeo.widgets._explorer import ChainBodies, Described
 from planargeo.widgets.articulated import bend_for_tip
@@ -130,17 +130,16 @@ class SplittingExplorer(Described, ChainBodies, Explorer):
         # symbols as the figure names them).
         n = int(self.values["bodies n"])
         i = min(int(self.values["split at joint"]), n) - 1
-        sub = lambda j: str(j).translate(SUB)
         return {
             **self.symbols,
             "−fₙ₊₁ on the tip": "the couple on the tip, from a fictitious joint n+1 (eq. 7.44); in the figure: "
-                                f"−f{sub(n + 1)} on the tip: couple (line at ∞)",
+                                f"−f{subscript(n + 1)} on the tip: couple (line at ∞)",
             "aⱼ": ("acceleration of body j, drawn as its pole: the point with no acceleration (eq. 4.6); in the "
-                   "figure: " + ", ".join(f"a{sub(j)}" for j in range(1, n + 1))),
+                   "figure: " + ", ".join(f"a{subscript(j)}" for j in range(1, n + 1))),
             "fᵢ₊₁": "force of the split joint i+1 on body i+1, drawn as its line of action (eq. 7.56); in the "
-                    f"figure: f{sub(i + 1)}",
+                    f"figure: f{subscript(i + 1)}",
             "centre of Λᵢ⁻¹": "where a couple on body i alone turns it: the pole of −Λᵢ⁻¹ [0, 0, 1] (section 7.5); "
-                              f"in the figure: centre of Λ{sub(i)}⁻¹",
+                              f"in the figure: centre of Λ{subscript(i)}⁻¹",
             **self.meanings,
         }
 

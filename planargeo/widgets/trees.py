@@ -33,6 +33,7 @@ import ipywidgets as W
 import numpy as np
 
 from planargeo import scenes
+from planargeo.draw.pictures._words import subscript
 from planargeo.draw.pictures.trees import symbol_of, trees_picture
 from planargeo.errors import InputError, PlanargeoError
 from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_reactions,
@@ -42,8 +43,6 @@ from planargeo.widgets._explorer import Described, SceneTime, keep_run, run_to, 
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["TreeExplorer"]
-
-_SUB = "₀₁₂₃₄₅₆₇₈₉"
 
 N = 9
 #: controls that set the state at t = 0 (a change starts the time again)
@@ -269,7 +268,7 @@ class TreeExplorer(Described, SceneTime, Explorer):
                "closure drift |φ|": state["drift"]}
         if closed:
             for k, c in enumerate(model.contacts):
-                out[f"|F{_SUB[k + 1]}| (pin {c.name})"] = force[symbol_of(f"F_{k + 1}")]
+                out[f"|F{subscript(k + 1)}| (pin {c.name})"] = force[symbol_of(f"F_{k + 1}")]
             out["condition number"] = state["cond"]
         out["largest pin force"] = max(force[symbol_of(f"f_{i + 1}")] for i in range(N))
         if focus in reactions:
@@ -294,14 +293,14 @@ class TreeExplorer(Described, SceneTime, Explorer):
         # Every symbol and readout name on screen, with its thesis equation (the bodies' and forces' own).
         out = super().explain()
         for i in range(N):
-            out[f"v{_SUB[i + 1]}"] = f"velocity pole of body {i + 1}: the point it turns about now (section 4.5)"
-            out[f"a{_SUB[i + 1]}"] = f"acceleration pole of body {i + 1}: its point without acceleration (4.6)"
+            out[f"v{subscript(i + 1)}"] = f"velocity pole of body {i + 1}: the point it turns about now (section 4.5)"
+            out[f"a{subscript(i + 1)}"] = f"acceleration pole of body {i + 1}: its point without acceleration (4.6)"
         for i in range(N):
             out[symbol_of(f"f_{i + 1}")] = (f"pin force of joint {i + 1}: the wrench on body {i + 1} from its "
                                               "parent (9.61; 9.41 for the open tree)")
         for k, name in enumerate(("4-7", "8-9")):
             out[symbol_of(f"F_{k + 1}")] = f"contact force of the pin joining the tips of bodies {name} (9.71)"
-            out[f"|F{_SUB[k + 1]}| (pin {name})"] = f"size of the contact force F{_SUB[k + 1]} (9.71)"
+            out[f"|F{subscript(k + 1)}| (pin {name})"] = f"size of the contact force F{subscript(k + 1)} (9.71)"
         for i in range(N):
             f = symbol_of(f"f_{i + 1}")
             out[f"|{f}|"] = f"size of the pin force {f} (9.61)"

@@ -22,10 +22,24 @@ import numpy as np
 
 from planargeo.geometry.projective import is_ideal
 
-__all__ = ["num", "pair", "where", "force", "SUB", "words_data"]
+__all__ = ["num", "pair", "where", "force", "SUB", "subscript", "words_data"]
 
 #: subscript digits
 SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def subscript(i) -> str:
+    """``i`` in subscript digits: ``subscript(12)`` is ``'₁₂'``.
+
+    Parameters
+    ----------
+    i : int or str
+
+    Returns
+    -------
+    str
+    """
+    return str(i).translate(SUB)
 
 
 @functools.cache

@@ -28,7 +28,7 @@ import numpy as np
 from planargeo.draw.geometry import clip_line
 from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import PX_PER_PT, Picture, nice_ticks
-from planargeo.draw.pictures._words import force, labelled_line, num, pair, where
+from planargeo.draw.pictures._words import force, labelled_line, num, pair, subscript, where
 from planargeo.draw.style import COLORS
 from planargeo.geometry.conics import drawable_conic
 
@@ -86,10 +86,6 @@ CHART = (("xx", "#0072B2"), ("yy", "#E69F00"), ("zz", "#009E73"), ("xy", "#D55E0
 CHAIN_SHARE = 0.62
 
 
-def _sub(i: int) -> str:
-    return str(i).translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
-
-
 def chain_view(box, size, margin) -> tuple[float, float, float, float]:
     """A view whose left :data:`CHAIN_SHARE` holds the square ``box`` of the chain (the chart on the right).
 
@@ -139,7 +135,7 @@ def articulated_picture(st: dict, *, k: int, focus_all: bool, rigid: bool, axes:
         The view (:func:`chain_view`); the chart takes its right part.
     """
     n = int(st["n"])
-    kk = _sub(k + 1)
+    kk = subscript(k + 1)
     pts = np.asarray(st["joints"], float)
     pic = Picture(view, size=size, ticks=False, margin=MARGIN)
     pic.path("links", pts, role="body", color=COLORS["body"], width=7.0 * PX_PER_PT, symbol="links",
@@ -151,7 +147,7 @@ def articulated_picture(st: dict, *, k: int, focus_all: bool, rigid: bool, axes:
               desc="the ground: joint 1 is pinned to it at (0, 0) m", z=3)
     for i in range(n):
         bold = focus_all or i == k
-        sub = _sub(i + 1)
+        sub = subscript(i + 1)
         for name, centre, color, faded, what in (
                 ("I", "centre_rigid", _RIGID, 0.25, "rigid inertia of body {i}, a conic about its centre of mass "
                                                     "(10.2.3): centre"),
@@ -228,7 +224,7 @@ def _chart(pic, st, k: int) -> None:
     steps = np.arange(len(comps))
     full = comps[-1]
     scale = np.linalg.norm(st["A_full"][k])
-    kk = _sub(k + 1)
+    kk = subscript(k + 1)
     curves = []
     for j, (name, color) in enumerate(CHART):
         if abs(full[j]) > 1e-9 * scale:

@@ -25,9 +25,8 @@ import math
 import numpy as np
 
 from planargeo.draw.picture import PX_PER_PT, Picture
+from planargeo.draw.pictures._words import num as _num, subscript
 from planargeo.draw.style import COLORS
-
-_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 __all__ = ["force", "ground", "scale_bar", "label_at", "aim_label", "side_label", "clearest", "seg_distance",
            "foot_on_line", "nice_length", "where", "rate", "pole_overlays"]
@@ -279,9 +278,7 @@ def side_label(pic: Picture, a, b, text: str, segs, *, gap: float = 5.0) -> None
 
 def num(x: float, digits: int = 3, tiny: float = 1e-9) -> str:
     """:func:`planargeo.draw.pictures._words.num` with three digits by default: ``num(2.987e4, 4)`` is ``'2.987e+04'``."""
-    from planargeo.draw.pictures._words import num as words
-
-    return words(x, digits, tiny)
+    return _num(x, digits, tiny)
 
 
 def where(p, *, far: float = 1e6) -> str:
@@ -378,7 +375,7 @@ def pole_overlays(pic: Picture, v, a, overlays: dict, bodies, scales=(3.0, 0.3))
         if overlays.get(flag):
             pts = np.asarray(pts, float)
             for i, body in enumerate(bodies):
-                sym = f"{key}{i + 1}".translate(_SUB)
+                sym = f"{key}{subscript(i + 1)}"
                 pic.point(sym, pts[i], role=role, symbol=sym, glyph_scale=gs,
                           desc=f"{meaning} ({eq}): {body}, {rate(pts[i], unit)}, {where(pts[i])}")
 

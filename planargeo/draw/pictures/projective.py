@@ -35,13 +35,11 @@ import math
 import numpy as np
 
 from planargeo.draw.picture import Picture
-from planargeo.draw.pictures._words import num, where
+from planargeo.draw.pictures._words import num, subscript, where
 from planargeo.draw.pictures.common import builder, label_line, point_along
 from planargeo.geometry.projective import is_at_infinity
 
 __all__ = ["projective_picture"]
-
-_SUB = dict(zip(range(1, 10), "₁₂₃₄₅₆₇₈₉"))
 
 #: colour of the construction's contact points and poles
 GREY = "#7F7F7F"
@@ -82,22 +80,22 @@ def projective_picture(st: dict, *, construction: bool = True, line_and_pole: bo
     if construction:
         lines, points = [], []
         if st.get("tangents") is not None:
-            lines = [(f"tangent {k + 1}", f"t{_SUB[k + 1]}", st["tangents"][k], "tangent from P to the conic")
+            lines = [(f"tangent {k + 1}", f"t{subscript(k + 1)}", st["tangents"][k], "tangent from P to the conic")
                      for k in range(2)]
-            points = [(f"contact {k + 1}", f"X{_SUB[k + 1]}", st["contacts"][k],
+            points = [(f"contact {k + 1}", f"X{subscript(k + 1)}", st["contacts"][k],
                        "where a tangent from P touches the conic") for k in range(2)]
             eq = "5.2.2, Fig 5.2"
         elif st.get("interior") is not None:
             K = st["interior"]
             if bool(np.all(np.isfinite(K.tangents)) and np.all(np.isfinite(K.poles))):
-                lines = [(f"chord {i + 1}", f"c{_SUB[i + 1]}", K.lines[i], "a chord of the conic through P")
+                lines = [(f"chord {i + 1}", f"c{subscript(i + 1)}", K.lines[i], "a chord of the conic through P")
                          for i in range(2)]
-                lines += [(f"tangent {2 * i + j + 1}", f"t{_SUB[2 * i + j + 1]}", K.tangents[i, j],
-                           f"tangent at an end of chord c{_SUB[i + 1]}") for i in range(2) for j in range(2)]
-                points = [(f"chord end {2 * i + j + 1}", f"X{_SUB[2 * i + j + 1]}", K.chord_points[i, j],
-                           f"an end of chord c{_SUB[i + 1]}") for i in range(2) for j in range(2)]
-                points += [(f"chord pole {i + 1}", f"K{_SUB[i + 1]}", K.poles[i],
-                            f"pole K{_SUB[i + 1]} of chord c{_SUB[i + 1]}, where its tangents meet, "
+                lines += [(f"tangent {2 * i + j + 1}", f"t{subscript(2 * i + j + 1)}", K.tangents[i, j],
+                           f"tangent at an end of chord c{subscript(i + 1)}") for i in range(2) for j in range(2)]
+                points = [(f"chord end {2 * i + j + 1}", f"X{subscript(2 * i + j + 1)}", K.chord_points[i, j],
+                           f"an end of chord c{subscript(i + 1)}") for i in range(2) for j in range(2)]
+                points += [(f"chord pole {i + 1}", f"K{subscript(i + 1)}", K.poles[i],
+                            f"pole K{subscript(i + 1)} of chord c{subscript(i + 1)}, where its tangents meet, "
                             "on the polar of P") for i in range(2)]
             eq = "5.2.2, Fig 5.3"
         for name, sym, L, meaning in lines:

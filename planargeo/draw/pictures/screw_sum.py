@@ -29,28 +29,25 @@ import math
 import numpy as np
 
 from planargeo.draw.picture import PX_PER_PT, Picture
-from planargeo.draw.pictures._words import num, where
+from planargeo.draw.pictures._words import num, subscript, where
 from planargeo.draw.pictures.common import builder, label_line, label_toward
 from planargeo.draw.style import COLORS, SUM
 from planargeo.geometry.projective import is_at_infinity, is_ideal
 
 __all__ = ["screw_sum_picture"]
 
-_SUB = {1: "₁", 2: "₂", 3: "₃"}
-
-
 def _twist_words(t, k) -> str:
     w = float(t[2])
     if w == 0.0:
-        return f"a translation, u{_SUB[k]} = {num(math.hypot(t[0], t[1]))} m/s, its pole {where(t)}"
-    return f"ω{_SUB[k]} = {num(w)} rad/s, {where(t)}"
+        return f"a translation, u{subscript(k)} = {num(math.hypot(t[0], t[1]))} m/s, its pole {where(t)}"
+    return f"ω{subscript(k)} = {num(w)} rad/s, {where(t)}"
 
 
 def _wrench_words(f, k) -> str:
     if bool(is_at_infinity(f)):
-        return f"a couple, τ{_SUB[k]} = {num(f[2])} N·m (the line at infinity)"
+        return f"a couple, τ{subscript(k)} = {num(f[2])} N·m (the line at infinity)"
     F = math.hypot(f[0], f[1])
-    return f"|F{_SUB[k]}| = {num(F)} N, {num(abs(f[2]) / F)} m from the origin"
+    return f"|F{subscript(k)}| = {num(F)} N, {num(abs(f[2]) / F)} m from the origin"
 
 
 def _glyph_gap(w: float) -> float:
@@ -99,8 +96,8 @@ def _twists(pic: Picture, c) -> None:
         u1 = u2 = tuple(n)
         u3 = tuple(-n)
     for k, t, u in ((1, c.v1.array, u1), (2, c.v2.array, u2)):
-        pic.point(f"v{k}", t, role="twist", symbol=f"v{_SUB[k]}",
-                  desc=f"twist v{_SUB[k]} (4.10): {_twist_words(t, k)}")
+        pic.point(f"v{k}", t, role="twist", symbol=f"v{subscript(k)}",
+                  desc=f"twist v{subscript(k)} (4.10): {_twist_words(t, k)}")
         if not bool(is_ideal(t)):
             label_toward(pic.elements[-1], u, _glyph_gap(t[2]))
     if c.P is not None:
@@ -126,15 +123,15 @@ def _wrenches(pic: Picture, c, anchors) -> None:
     couples = 0
     f1, f2 = c.f1.array, c.f2.array
     for k, f, a in ((1, f1, anchors[0]), (2, f2, anchors[1])):
-        pic.line(f"f{k}", f, role="wrench", symbol=f"f{_SUB[k]}", anchor=a, label="",
-                 desc=f"wrench f{_SUB[k]} on its line of action (4.27): {_wrench_words(f, k)}")
+        pic.line(f"f{k}", f, role="wrench", symbol=f"f{subscript(k)}", anchor=a, label="",
+                 desc=f"wrench f{subscript(k)} on its line of action (4.27): {_wrench_words(f, k)}")
         if bool(is_at_infinity(f)):     # the couple glyph's own words, with the symbol
-            _couple_words(pic, f"f{_SUB[k]}", couples)
+            _couple_words(pic, f"f{subscript(k)}", couples)
             couples += 1
         else:   # the label a metre on along the force from its arrow (clear of the meet P)
             e = np.array([f[0], f[1]]) / math.hypot(f[0], f[1])
             at = None if a is None else np.asarray(a, float) + e
-            label_line(pic, f"f{k}", f"f{_SUB[k]}", anchor=at, side=1.0 if k == 1 else -1.0)
+            label_line(pic, f"f{k}", f"f{subscript(k)}", anchor=at, side=1.0 if k == 1 else -1.0)
     P = c.P
     if P is not None and not bool(is_ideal(P)):
         pic.point("P", P, role="twist", glyph=False, color=COLORS["construct"], symbol="P",

@@ -32,7 +32,7 @@ import numpy as np
 
 from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import PX_PER_PT, Picture
-from planargeo.draw.pictures._words import SUB, force, labelled_line, num, pair, where
+from planargeo.draw.pictures._words import force, labelled_line, num, pair, subscript, where
 from planargeo.draw.style import COLORS, OKABE_ITO
 from planargeo.scenes.splitting import twist_pole
 
@@ -43,10 +43,6 @@ LOWER, UPPER = OKABE_ITO["blue"], OKABE_ITO["vermillion"]
 CUT = "#b00020"
 #: opacity of the side out of focus
 FADED = 0.2
-
-
-def _sub(j: int) -> str:
-    return str(j).translate(SUB)
 
 
 def _bodies(a: int, b: int) -> str:
@@ -94,11 +90,11 @@ def splitting_picture(st: dict, *, view, focus: str = "all", centres: bool = Tru
     pic.marks("pins", pts[1:-1], role="body", color="#000000", size=5.0, symbol="joints",
               desc=f"the joints between the bodies, L = 1 m apart: {n - 1} pins", z=4)
     f = np.asarray(st["f_split"], float)
-    fs = f"f{_sub(i + 1)}"
+    fs = f"f{subscript(i + 1)}"
     labelled_line(pic, "f", f, fs, role="reaction", symbol=fs, anchor=pts[i], ahead=0.3,
                   desc=f"force of the split joint {i + 1} on body {i + 1}, its line of action (7.56): {force(f)}")
     tip = -np.asarray(st["f_tip"], float)
-    pic.line("couple", tip, role="wrench", symbol=f"−f{_sub(n + 1)}", label=f"−f{_sub(n + 1)} on the tip",
+    pic.line("couple", tip, role="wrench", symbol=f"−f{subscript(n + 1)}", label=f"−f{subscript(n + 1)} on the tip",
              desc=f"the couple on the tip from a fictitious joint n+1 (7.44): {num(tip[2])} N·m")
     poles = [twist_pole(a) for a in st["a"]]
     hide = None
@@ -114,7 +110,7 @@ def splitting_picture(st: dict, *, view, focus: str = "all", centres: bool = Tru
             a[2] = 0.0                                     # a translation: its pole is the ideal point
         side = "the constrained chain" if b < i else "the free-floating chain"
         pic.point(f"a{b + 1}", a, role="accel", color=LOWER if b < i else UPPER, glyph=False, size=6.0,
-                  symbol=f"a{_sub(b + 1)}",
+                  symbol=f"a{subscript(b + 1)}",
                   desc=f"acceleration of body {b + 1} ({side}) as its pole (4.6, 7.54): {_acc(st['a'][b])}, "
                        f"pole {where(a)}")
         if (b < i and low < 1) or (b >= i and up < 1):
@@ -125,7 +121,7 @@ def splitting_picture(st: dict, *, view, focus: str = "all", centres: bool = Tru
     c = np.asarray(st["centres"][i - 1], float)
     if centres and bool(np.all(np.isfinite(c))):
         pic.point("centre", [c[1], -c[0], 1.0], role="twist", glyph=False, shape="D", size=7.0,
-                  symbol=f"centre of Λ{_sub(i)}⁻¹",
-                  desc=f"where a couple on body {i} alone turns it: the pole of −Λ{_sub(i)}⁻¹ [0, 0, 1] "
+                  symbol=f"centre of Λ{subscript(i)}⁻¹",
+                  desc=f"where a couple on body {i} alone turns it: the pole of −Λ{subscript(i)}⁻¹ [0, 0, 1] "
                        f"(section 7.5): at {pair(c)} m")
     return pic

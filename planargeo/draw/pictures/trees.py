@@ -32,6 +32,7 @@ import numpy as np
 
 from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import PX_PER_PT, Picture
+from planargeo.draw.pictures._words import SUB
 from planargeo.draw.pictures.kit import clearest, force, ground, num, pole_overlays, scale_bar, side_label
 from planargeo.draw.pictures.slider_crank import CONTACT_COLOR
 from planargeo.draw.style import COLORS
@@ -44,7 +45,6 @@ FORCE_LENGTH = 0.9
 FADED = 0.25
 #: the view (m): every pose the links can reach (body 1 and three more links from the pivot)
 VIEW = (-4.3, 4.3, -4.3, 4.3)
-_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
 def symbol_of(sym: str) -> str:
@@ -64,7 +64,7 @@ def symbol_of(sym: str) -> str:
     >>> symbol_of("F_1")
     'F₁'
     """
-    return sym.replace("_", "").translate(_SUB)
+    return sym.replace("_", "").translate(SUB)
 
 
 @builder
