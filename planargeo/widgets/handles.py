@@ -13,7 +13,6 @@ Examples
 """
 from __future__ import annotations
 
-import contextlib
 import math
 import numbers
 import time
@@ -71,14 +70,7 @@ class HandleMixin:
         numpy.ndarray
             ``(n, 2)`` data points.
         """
-        pts = []
-        for h in self.all_handles():
-            with contextlib.suppress(Exception):
-                xy = h.where()
-                if xy is not None:
-                    q = np.asarray(xy, dtype=float).reshape(2)
-                    if np.all(np.isfinite(q)):
-                        pts.append(q)
+        pts = [(h["x"], h["y"]) for h in self._handle_list()]
         return np.array(pts, dtype=float).reshape(-1, 2)
 
     def all_handles(self) -> list[Handle]:
@@ -192,13 +184,10 @@ class HandleMixin:
         """The handles that can be dragged now, as the picture lists them."""
         out = []
         for h in self.all_handles():
-            try:
-                where = h.where()
-            except Exception:  # noqa: BLE001 - a handle that cannot say where it is: not shown
-                where = None
-            if where is None:
+            try:   # a handle that cannot say where it is, or is not at a finite point: not shown
+                x, y = (float(v) for v in np.asarray(h.where(), dtype=float).reshape(2))
+            except Exception:  # noqa: BLE001
                 continue
-            x, y = (float(v) for v in np.asarray(where, dtype=float).reshape(2))
             if math.isfinite(x) and math.isfinite(y):
                 out.append({"id": h.name, "x": x, "y": y})
         return out
