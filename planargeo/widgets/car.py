@@ -113,15 +113,20 @@ class CarExplorer(Described, Explorer):
         }
 
     # -- physics -------------------------------------------------------------------
+    def _scene_of(self, values):
+        """The scene ``"car"`` of the control values (the outlines are drawn by gallery Fig 6.6, not here)."""
+        d = float(values[RADIUS])
+        return self._scene(m=float(values["mass (kg)"]), rho=float(values["radius of gyration (m)"]), d=d,
+                           eps=float(values[EPS]), omega=float(values[SPEED]) / d, F_A=float(values[DRIVE]),
+                           outlines=False)
+
     def compute(self, values, changed):
         # The scene at the control values (the car at heading 0), its energy and the Play run.
         d = float(values[RADIUS])
         V = float(values[SPEED])
         if d <= 0:
             raise SceneError(f"turn radius must be positive, got {d}")
-        res = self._scene(m=float(values["mass (kg)"]), rho=float(values["radius of gyration (m)"]),
-                          d=d, eps=float(values[EPS]), omega=V / d, F_A=float(values[DRIVE]),
-                          outlines=False)   # the outlines are drawn by gallery Fig 6.6, not here
+        res = self._scene_of(values)
         ke = float(energy(res.model, [0.0], [V / d])[0])
         acc, limit = grip(res, float(values[FRICTION]))
         return {"res": res, "ke": ke, "acc": acc, "limit": limit, "slides": acc >= limit * (1 - 1e-9),
@@ -136,10 +141,7 @@ class CarExplorer(Described, Explorer):
         # ``r_G √(ω⁴ + ω̇²)``, reaches what the tyres hold, ``μ·g``: there the car
         # slides out (the readout and the message say so).
         # Returns New speed and heading, or None once the car has stopped or slides out.
-        res = self._scene(m=float(values["mass (kg)"]), rho=float(values["radius of gyration (m)"]),
-                          d=float(values[RADIUS]), eps=float(values[EPS]),
-                          omega=float(values[SPEED]) / float(values[RADIUS]), F_A=float(values[DRIVE]),
-                          outlines=False)
+        res = self._scene_of(values)
         d = res.params["d"]
         w0 = res.params["omega"]
         wd = res.quantities["omega_dot"]

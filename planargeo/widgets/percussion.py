@@ -197,18 +197,15 @@ class PercussionExplorer(Described, Explorer):
                    else (self.values["impact at"], 0.0), lambda x, y: {"impact at": x}),
         ]
 
-    def _shape(self, v):
-        return self._shape_inertia(v)[0]
-
     def _shape_inertia(self, v):
         """The shape and its unit-density inertia ``I0`` (5.64), integrated once per shape."""
         key = (v["shape"], v["polygon"] if v["shape"] == "custom polygon" else None)
-        return cached(self._inertias, key, lambda: self._integrate(key, v))
 
-    @staticmethod
-    def _integrate(key, v):
-        shape = parse_polygon(v["polygon"]) if key[1] is not None else PRESETS[key[0]]
-        return shape, Inertia.from_polygon(shape)
+        def integrate():
+            shape = parse_polygon(v["polygon"]) if key[1] is not None else PRESETS[key[0]]
+            return shape, Inertia.from_polygon(shape)
+
+        return cached(self._inertias, key, integrate)
 
     def compute(self, values, changed):
         # The state for the control values ``values``.
