@@ -146,7 +146,7 @@ def point_along(pic: Picture, id: str, p, **kw) -> None:
     arrow["dx"], arrow["dy"] = float(dirn[0] * L), float(dirn[1] * L)
 
 
-def label_toward(el: dict, u, gap: float) -> None:
+def label_toward(el: dict, u, gap: float = 9.0) -> None:
     """Put the label of the point element ``el`` ``gap`` pixels from it in the direction ``u``.
 
     The picture's placer keeps this spot when it is free (else it tries others).

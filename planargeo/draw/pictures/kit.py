@@ -26,6 +26,7 @@ import numpy as np
 
 from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.pictures._words import num as _num, subscript
+from planargeo.draw.pictures.common import label_toward as aim_label
 from planargeo.draw.style import COLORS
 
 __all__ = ["force", "ground", "scale_bar", "label_at", "aim_label", "side_label", "clearest", "seg_distance",
@@ -178,28 +179,6 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.9, depth: float = 0.12
     pic.path(id, np.array(rows), role="ground", symbol="ground", color=COLORS["ground"], width=1.4, desc=desc,
              z=1)
     pic.elements[-1]["opacity"] = float(opacity)
-
-
-def aim_label(el: dict, direction, gap: float = 9.0) -> None:
-    """Ask the placer to try the label of the element ``el`` first in the pixel ``direction`` from its anchor.
-
-    Parameters
-    ----------
-    el : dict
-        An element of a picture (its first text part is moved).
-    direction : (float, float)
-        Pixel direction (y up).
-    gap : float
-        Pixels from the anchor.
-    """
-    u = np.asarray(direction, dtype=float)
-    u = u / math.hypot(*u)
-    for part in el["parts"]:
-        if part["p"] == "text":
-            part["dx"], part["dy"] = float(gap * u[0]), float(gap * u[1])
-            part["ha"] = "left" if u[0] > 0.3 else "right" if u[0] < -0.3 else "center"
-            part["va"] = "bottom" if u[1] > 0.3 else "top" if u[1] < -0.3 else "center"
-            return
 
 
 def seg_distance(p, segs) -> float:
