@@ -108,21 +108,16 @@ def percussion_picture(st: dict, *, impact: bool = False, view, size=(600, 480))
     if F > 0:   # the label near the axis's upper end, clear of the body and of the spot's label
         up = np.array([f[0], f[1]]) / F * (1.0 if (f[1], f[0]) >= (0.0, 0.0) else -1.0)
         label_line(pic, "axis of percussion", "axis of percussion f = I a", anchor=c + 1e3 * up)
-    if impact and nums["grip_spot"] is not None:
-        s = nums["grip_spot"]
-        pic.marks("spot", [s], role="wrench", shape="D", size=10.0, color=COLORS["wrench"], z=6,
-                  symbol="sweet spot", desc=f"sweet spot of the grip (5.67): strike there and the hands feel "
-                                            f"no sting, at ({num(s[0])}, {num(s[1])}) m")
+    grip_spot = impact and nums["grip_spot"] is not None
+    s = nums["grip_spot"] if grip_spot else nums["spot"]
+    if s is not None:
+        name = "sweet spot" if grip_spot else "centre of percussion"
+        where_ = f"at ({num(s[0])}, {num(s[1])}) m"
+        pic.marks("spot", [s], role="wrench", shape="D", size=10.0, color=COLORS["wrench"], z=6, symbol=name,
+                  desc=f"sweet spot of the grip (5.67): strike there and the hands feel no sting, {where_}"
+                  if grip_spot else f"centre of percussion (5.68): where the axis crosses the line a–c, {where_}")
         pic.elements[-1]["parts"].append({"p": "text", "x": float(s[0]), "y": float(s[1]), "dx": 7.0,
-                                          "dy": -7.0, "text": "sweet spot", "ha": "left", "va": "top"})
-    elif nums["spot"] is not None:
-        s = nums["spot"]
-        pic.marks("spot", [s], role="wrench", shape="D", size=10.0, color=COLORS["wrench"], z=6,
-                  symbol="centre of percussion",
-                  desc=f"centre of percussion (5.68): where the axis crosses the line a–c, at "
-                       f"({num(s[0])}, {num(s[1])}) m")
-        pic.elements[-1]["parts"].append({"p": "text", "x": float(s[0]), "y": float(s[1]), "dx": 7.0,
-                                          "dy": -11.0, "text": "centre of percussion", "ha": "left",
+                                          "dy": -7.0 if grip_spot else -11.0, "text": name, "ha": "left",
                                           "va": "top"})
     pic.point("c", from_xy(c), role="twist", glyph=False, color="#000000", size=6.5, symbol="c",
               desc=f"centre of mass c (1.65): at ({num(c[0])}, {num(c[1])}) m")
