@@ -155,10 +155,6 @@ class SubspaceExplorer(Explorer):
                                                            unit_direction(values["joint angle"]), np.array(a))
         return st
 
-    def readout_of(self, state):
-        # The readout of the state ``state`` (joint forces and accelerations, ``sᵀIs``, the checks).
-        return self._readout(state, int(state["s"].shape[1]))
-
     def scene_picture(self, state, view=None):
         # The state's picture, built natively (:func:`planargeo.draw.pictures.subspace.subspace_picture`).
         v = self.values
@@ -173,42 +169,28 @@ class SubspaceExplorer(Explorer):
         """The default limits grown to hold every handle with 0.3 m round them (the values alone decide it)."""
         return grown_view(self.limits, super().mechanism_points(), 0.3)
 
-    def _readout(self, st, k):
-        s, R = st["s"], st["R"]
-        out = {"joint": _LABEL[st["joint"]], "k (degrees of freedom)": k}
-        units = {"k (degrees of freedom)": "—"}
+    def readout_of(self, state):
+        # The readout of the state (joint forces and accelerations, ``sᵀIs``, the checks), each row with its unit.
+        st, k = state, int(state["s"].shape[1])
+        s, R, sIs, reaction = st["s"], st["R"], st["sIs"], st["reaction"]
+        rows = [("joint", _LABEL[st["joint"]], None), ("k (degrees of freedom)", k, "—")]
         for i in range(k):
             fu, au = _kind_units(s[:, i])
             sub = _SUB[i] if k > 1 else ""
-            out[f"Q{sub} = s{sub}ᵀf"], units[f"Q{sub} = s{sub}ᵀf"] = float(st["Q"][i]), fu
-            out[f"ψ{sub} = T{sub}ᵀI⁻¹f"], units[f"ψ{sub} = T{sub}ᵀI⁻¹f"] = float(st["psi"][i]), au
+            rows += [(f"Q{sub} = s{sub}ᵀf", float(st["Q"][i]), fu), (f"ψ{sub} = T{sub}ᵀI⁻¹f", float(st["psi"][i]), au)]
         for j in range(3 - k):
             fu, au = _reaction_units(R[:, j])
             sub = _SUB[j] if 3 - k > 1 else ""
-            out[f"μ{sub} = U{sub}ᵀf"], units[f"μ{sub} = U{sub}ᵀf"] = float(st["mu"][j]), fu
-            out[f"γ{sub} = R{sub}ᵀI⁻¹f"], units[f"γ{sub} = R{sub}ᵀI⁻¹f"] = float(st["gamma"][j]), au
-        sIs = st["sIs"]
-        if k == 1:
-            out["sᵀIs (6.67)"] = float(sIs[0, 0])
-            units["sᵀIs (6.67)"] = "kg" if bool(is_ideal(s[:, 0])) else "kg·m²"
-        else:   # one unit per entry: rotation–rotation kg·m², rotation–translation kg·m, else kg
-            rot = [not bool(is_ideal(s[:, i])) for i in range(k)]
-            out["sᵀIs (6.67)"] = tuple(float(x) for x in np.ravel(sIs))
-            units["sᵀIs (6.67)"] = tuple({2: "kg·m²", 1: "kg·m", 0: "kg"}[rot[i] + rot[j]]
-                                         for i in range(k) for j in range(k))
-        out["pole of sψ (held body)"] = point_value(st["s_psi"]) if np.any(st["s_psi"] != 0) else "at rest"
-        units["pole of sψ (held body)"] = "m"
-        reaction = st["reaction"]
-        out["joint's push −Rμ, |force|"] = float(np.hypot(reaction[0], reaction[1]))
-        units["joint's push −Rμ, |force|"] = "N"
+            rows += [(f"μ{sub} = U{sub}ᵀf", float(st["mu"][j]), fu), (f"γ{sub} = R{sub}ᵀI⁻¹f", float(st["gamma"][j]), au)]
+        rot = [not bool(is_ideal(s[:, i])) for i in range(k)]   # sᵀIs: kg·m² rotation–rotation, kg·m mixed, else kg
+        units = tuple({2: "kg·m²", 1: "kg·m", 0: "kg"}[rot[i] + rot[j]] for i in range(k) for j in range(k))
+        rows += [("sᵀIs (6.67)", float(sIs[0, 0]) if k == 1 else tuple(float(x) for x in np.ravel(sIs)),
+                  units[0] if k == 1 else units),
+                 ("pole of sψ (held body)", point_value(st["s_psi"]) if np.any(st["s_psi"] != 0) else "at rest", "m"),
+                 ("joint's push −Rμ, |force|", float(np.hypot(reaction[0], reaction[1])), "N")]
         if k == 2:
-            out["U (meet of T₁, T₂)"] = point_value(st["U"][:, 0])
-            units["U (meet of T₁, T₂)"] = "m"
-        out[CHECKS_HEADING] = "each must read 0"
-        units[CHECKS_HEADING] = "—"
-        for name, val in st["residuals"].items():
-            row = CHECK_ROWS[name][0]
-            out[row] = val
-            units[row] = CHECK_ROWS[name][1]
-        self.units = units
-        return out
+            rows.append(("U (meet of T₁, T₂)", point_value(st["U"][:, 0]), "m"))
+        rows.append((CHECKS_HEADING, "each must read 0", "—"))
+        rows += [(CHECK_ROWS[name][0], val, CHECK_ROWS[name][1]) for name, val in st["residuals"].items()]
+        self.units = {key: unit for key, _v, unit in rows if unit is not None}
+        return {key: v for key, v, _u in rows}
