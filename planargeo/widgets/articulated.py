@@ -41,7 +41,7 @@ from planargeo.draw.pictures._words import subscript
 from planargeo.draw.pictures.articulated import MARGIN, articulated_picture, chain_view, fit_box
 from planargeo.scenes.articulated import articulated_state, inertia_at
 from planargeo.widgets._motion import Motion
-from planargeo.widgets._explorer import ChainBodies, Described
+from planargeo.widgets._explorer import ChainBodies, Described, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step, cached, point_text
 
 __all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip"]
@@ -221,23 +221,15 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
     # ------------------------------------------------------------------ handles and Play
     def handles(self):
         # The draggable handles: the pole ``a``, the chain's tip (bend ``φ``), the first body's end (``θ₁``).
-        def pole_where():
-            v = self.shown_values or self.values
-            return (float(v["pole x"]), float(v["pole y"]))
-
-        def pole_drag(x, y):
-            return {"pole x": float(x), "pole y": float(y)}
-
         def base_where():
-            pts = self._joints()
-            return None if pts is None else tuple(pts[1])
+            return None if self.state is None else tuple(self.state["joints"][1])
 
         def base_drag(x, y):
             if x == 0 and y == 0:
                 return {}
             return {"base θ₁ (deg)": float(math.degrees(math.atan2(y, x)))}
 
-        return [Handle("pole a", pole_where, pole_drag), self._tip_handle(bend_for_tip, "base θ₁ (deg)"),
+        return [xy_handle(self, "pole a", "pole x", "pole y"), self._tip_handle(bend_for_tip, "base θ₁ (deg)"),
                 Handle("first body", base_where, base_drag)]
 
     def focus_options(self):
@@ -248,10 +240,6 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         w = getattr(self, "controls", {}).get("bodies n")
         n = NMAX if w is None or getattr(self, "state", None) is None else int(w.value)
         return [f"body {i}" for i in range(1, n + 1)]
-
-    def _joints(self):
-        st = self.state
-        return None if st is None else st["joints"]
 
     def play_step(self, values, dt):
         # The time ``dt`` seconds on (Play); the swing itself is read in :meth:`compute`.
