@@ -39,7 +39,7 @@ from planargeo.errors import DegenerateGeometryError, InputError, InvalidPolygon
 from planargeo.screws.inertia import Inertia, percussion_axis, percussion_pole
 from planargeo.geometry.projective import from_xy, is_ideal
 from planargeo.widgets.readout import point_value
-from planargeo.widgets._explorer import Described
+from planargeo.widgets._explorer import Described, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["PercussionExplorer", "PRESETS", "parse_polygon"]
@@ -189,8 +189,7 @@ class PercussionExplorer(Described, Explorer):
         axis = lambda k: (tuple(self._axis_points()[k]) if pole_drive() and self._axis_points()
                           is not None else None)
         return [
-            Handle("a", lambda: (self.values["pole x"], self.values["pole y"]) if pole_drive()
-                   else None, lambda x, y: {"pole x": x, "pole y": y}),
+            xy_handle(self, "a", "pole x", "pole y", when=pole_drive),
             Handle("axis (point)", lambda: axis(0), self._drag_axis_point),
             Handle("axis (direction)", lambda: axis(1), self._drag_axis_direction),
             Handle("impact", lambda: None if pole_drive() or self.state is None

@@ -42,7 +42,7 @@ from planargeo.geometry.conics import (centre, classify, conic_circle, conic_ell
 from planargeo.draw.pictures.projective import projective_picture
 from planargeo.errors import DegenerateGeometryError, InputError
 from planargeo.geometry.projective import from_xy, is_at_infinity, is_ideal
-from planargeo.widgets._explorer import Described
+from planargeo.widgets._explorer import Described, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step
 from planargeo.widgets.readout import point_value
 
@@ -254,10 +254,6 @@ class ProjectiveExplorer(Described, Explorer):
 
     def handles(self):
         # ``P``, ``M (point)``, ``M (direction)``, ``pole of M``.
-        def P_where():
-            v = self.values
-            return None if v["P at infinity"] else (v["P x"], v["P y"])
-
         def pole_where():
             st = self.state
             if st is None or self._M_points() is None:
@@ -268,7 +264,7 @@ class ProjectiveExplorer(Described, Explorer):
             return (float(-p[1] / p[2]), float(p[0] / p[2]))
 
         return [
-            Handle("P", P_where, lambda x, y: {"P x": x, "P y": y}),
+            xy_handle(self, "P", "P x", "P y", when=lambda: not self.values["P at infinity"]),
             Handle("M (point)", lambda: None if self._M_points() is None else
                    tuple(self._M_points()[0]), self._drag_M_point),
             Handle("M (direction)", lambda: None if self._M_points() is None else
