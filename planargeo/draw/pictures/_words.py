@@ -34,6 +34,7 @@ def subscript(i) -> str:
     Parameters
     ----------
     i : int or str
+        A whole number, or its digits.
 
     Returns
     -------
