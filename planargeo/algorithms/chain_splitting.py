@@ -94,16 +94,8 @@ def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) 
 
     Parameters
     ----------
-    Lam_i, b_i : (3, 3), (3,)
-        Articulated mobility and bias acceleration of body ``i`` (7.38).
-    A_next, d_next : (3, 3), (3,)
-        Articulated inertia and bias force of body ``i+1`` (7.7).
-    T_next, s_next : (3, k)
-        Active force subspace (6.105) and joint space of joint ``i+1``.
-    Q_next : (k,)
-        Force (torque) applied at joint ``i+1``.
-    kappa_next : (3,)
-        Bias (velocity-product) acceleration of body ``i+1`` (2.19).
+    Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next : array_like
+        The split at joint ``i+1``, as for :func:`split_acceleration`.
 
     Returns
     -------
@@ -231,12 +223,8 @@ def mobility_split(model, q, qd=None, tau=None, f_ext=None) -> ChainSplit:
     ----------
     model : Model
         An unbranched chain hanging from the ground.
-    q : array_like, shape (nq,)
-        Joint coordinates.
-    qd, tau : array_like, shape (nq,), optional
-        Joint speeds and forces (zero).
-    f_ext : array_like, shape (N, 3), optional
-        External wrenches on the bodies (none).
+    q, qd, tau, f_ext : array_like
+        The state, as for :func:`planargeo.algorithms.articulated_mobility.articulated_mobility`.
 
     Returns
     -------

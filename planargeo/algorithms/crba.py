@@ -105,12 +105,8 @@ def bias_forces(model: Model, q, qd, f_ext=None) -> np.ndarray:
 
     Parameters
     ----------
-    model : Model
-        The mechanism (bodies, joints, parents, gravity).
-    q, qd : array_like (..., nq)
-        Joint coordinates and velocities.
-    f_ext : array_like (..., N, 3), optional
-        External world wrenches at the origin on each body.
+    model, q, qd, f_ext : Model, array_like
+        The mechanism and its state, as for :func:`planargeo.algorithms.aba.forward_dynamics`.
 
     Returns
     -------
@@ -139,12 +135,8 @@ def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
 
     Parameters
     ----------
-    model : Model
-        The mechanism (bodies, joints, parents, gravity).
-    q, qd, tau : array_like (..., nq)
-        ``qd`` or ``tau`` None: zeros.
-    f_ext : array_like (..., N, 3), optional
-        External world wrenches at the origin, one per body (besides gravity).
+    model, q, qd, tau, f_ext : Model, array_like
+        The mechanism and its state, as for :func:`planargeo.algorithms.aba.forward_dynamics`.
 
     Returns
     -------

@@ -309,14 +309,8 @@ def projective_workspace(model, q, qd=None, tau=None, f_ext=None) -> ProjectiveW
     ----------
     model : Model
         The mechanism.
-    q : array_like, shape (nq,)
-        Joint coordinates.
-    qd : array_like, shape (nq,), optional
-        Joint velocities (zero).
-    tau : array_like, shape (nq,), optional
-        Joint forces (zero).
-    f_ext : array_like, shape (N, 3), optional
-        External world wrenches.
+    q, qd, tau, f_ext : array_like
+        The state, as for :func:`planargeo.algorithms.articulated_mobility.articulated_mobility`.
 
     Returns
     -------

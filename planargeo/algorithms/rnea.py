@@ -30,12 +30,10 @@ def newton_euler(model: Model, q, qd, qdd, f_ext=None) -> Data:
 
     Parameters
     ----------
-    model : Model
-        The mechanism (bodies, joints, parents, gravity).
-    q, qd, qdd : array_like (..., nq)
-        One state: joint coordinates, velocities and accelerations.
-    f_ext : array_like (..., N, 3), optional
-        External world wrenches at the origin on each body.
+    model, q, qd, f_ext : Model, array_like
+        The mechanism and its state, as for :func:`planargeo.algorithms.aba.articulated_body`.
+    qdd : array_like (..., nq)
+        Joint accelerations.
 
     Returns
     -------

@@ -95,10 +95,8 @@ def chain_accelerations(model, q, qd, tau):
 
     Parameters
     ----------
-    model : Model
-        The chain.
-    q, qd, tau : array_like (nq,)
-        Joint values, speeds and forces.
+    model, q, qd, tau : Model, array_like (nq,)
+        The chain and its state, as for :func:`chain_workspace`.
 
     Returns
     -------

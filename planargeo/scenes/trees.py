@@ -192,14 +192,9 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
 
     Parameters
     ----------
-    mass : float, optional
-        Mass of each link (kg).
-    length : float, optional
-        Length of each link (m).
-    g : float, optional
-        Gravity along -y (m/s²).
-    speed : float, optional
-        Scale of the joint-speed pattern (rad/s).
+    mass, length, g, speed : float, optional
+        As for :func:`tree`: each link's mass (kg) and length (m), gravity along -y (m/s²),
+        the scale of the joint-speed pattern (rad/s).
 
     Returns
     -------
