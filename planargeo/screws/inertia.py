@@ -17,13 +17,20 @@ import numpy as np
 from planargeo._validate import (as_array, as_mat3, as_scalar, as_vec3, as_xy, batch_shape, check_overflow,
                                  check_positive_definite, check_positive_semidefinite, overflow_checked, rescaled)
 from planargeo.errors import InputError, InvalidPolygonError, SingularInertiaError
-from planargeo.screws.twists import (_congruence, _Held, _inertia_rotated, _kinetic_energy, Twist, X_P_inv_T,
-                                      inertia_matrix)
+from planargeo.screws._docs import SCREWS, entries
+from planargeo.screws.twists import (_Held, inertia_at, inertia_matrix, inertia_rotated, kinetic_energy,
+                                      momentum)
 
 __all__ = [
     "Inertia", "mass", "centre_of_mass", "rotational_inertia", "radius_of_gyration",
     "percussion_axis", "percussion_pole", "drawable_conic", "mobility", "polygon_moments",
 ]
+
+#: The docstring entries of this module (:func:`planargeo.screws._docs.entries`): the screws' and these.
+_documented = entries(SCREWS, {
+    "pole": "point : array_like, shape (..., 3)\n    Homogeneous acceleration pole (a twist).",
+    "impulse": "line : array_like, shape (..., 3)\n    Homogeneous line (an impulse's line of action).",
+})
 
 
 def _positive(x, name: str) -> np.ndarray:
@@ -88,6 +95,7 @@ def _vec(x, name) -> np.ndarray:
 # that divide by the mass reject a zero or negative ``inertia[0, 0]``.
 # ---------------------------------------------------------------------------
 
+@_documented
 def mass(inertia) -> np.ndarray:
     """Mass ``m = I[0, 0]`` of a rigid-body inertia (thesis 1.66, 4.58).
 
@@ -96,8 +104,7 @@ def mass(inertia) -> np.ndarray:
 
     Parameters
     ----------
-    inertia : array_like, shape (..., 3, 3)
-        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+    {inertia}
 
     Returns
     -------
@@ -127,6 +134,7 @@ def _with_mass(inertia, name: str = "inertia") -> np.ndarray:
 
 
 @overflow_checked("1 / mass")
+@_documented
 def centre_of_mass(inertia) -> np.ndarray:
     """Centre of mass ``c = (I[1, 2], -I[0, 2]) / m`` (thesis 1.66, 4.58).
 
@@ -138,8 +146,7 @@ def centre_of_mass(inertia) -> np.ndarray:
 
     Parameters
     ----------
-    inertia : array_like, shape (..., 3, 3)
-        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+    {inertia}
 
     Returns
     -------
@@ -166,13 +173,13 @@ def centre_of_mass(inertia) -> np.ndarray:
 
 
 @overflow_checked("inertia")
+@_documented
 def rotational_inertia(inertia) -> np.ndarray:
     """Rotational inertia ``J = m ρ²`` about the centre of mass (parallel axis theorem, thesis 1.68, 4.58).
 
     Parameters
     ----------
-    inertia : array_like, shape (..., 3, 3)
-        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+    {inertia}
 
     Returns
     -------
@@ -195,13 +202,13 @@ def rotational_inertia(inertia) -> np.ndarray:
 
 
 @overflow_checked("inertia")
+@_documented
 def radius_of_gyration(inertia) -> np.ndarray:
     """Radius of gyration ``ρ = sqrt(J / m)`` (thesis 4.58, 5.64).
 
     Parameters
     ----------
-    inertia : array_like, shape (..., 3, 3)
-        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+    {inertia}
 
     Returns
     -------
@@ -223,6 +230,7 @@ def radius_of_gyration(inertia) -> np.ndarray:
 
 
 @overflow_checked("1 / inertia")
+@_documented
 def mobility(inertia) -> np.ndarray:
     """Mobility ``I⁻¹`` (the dual conic; thesis 8.3.5), computed with ``solve``.
 
@@ -232,8 +240,7 @@ def mobility(inertia) -> np.ndarray:
 
     Parameters
     ----------
-    inertia : array_like, shape (..., 3, 3)
-        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+    {inertia}
 
     Returns
     -------
@@ -320,6 +327,7 @@ def percussion_axis(inertia, point) -> np.ndarray:
                     "percussion_axis(inertia, point)", "inertia or point")
 
 
+@_documented
 def percussion_pole(inertia, line) -> np.ndarray:
     """Acceleration pole ``a = I⁻¹ f`` whose axis of percussion is ``line`` (inverse of :func:`percussion_axis`).
 
@@ -328,8 +336,7 @@ def percussion_pole(inertia, line) -> np.ndarray:
 
     Parameters
     ----------
-    inertia : array_like, shape (..., 3, 3)
-        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+    {inertia}
     line : array_like, shape (..., 3)
         Homogeneous line (a wrench).
 
@@ -359,6 +366,7 @@ def percussion_pole(inertia, line) -> np.ndarray:
                     "percussion_pole(inertia, line)", "line, or the inverse inertia,")
 
 
+@_documented
 def drawable_conic(inertia) -> np.ndarray:
     """The real conic drawn for an inertia: the radius-of-gyration circle (thesis 10.2.3).
 
@@ -379,8 +387,7 @@ def drawable_conic(inertia) -> np.ndarray:
 
     Parameters
     ----------
-    inertia : array_like, shape (..., 3, 3)
-        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
+    {inertia}
 
     Returns
     -------
@@ -741,7 +748,7 @@ class Inertia(_Held):
         >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).at([1.0, 0.0])
         Inertia(mass=2, com=(0, 0), radius_of_gyration=0.5)
         """
-        return Inertia(_congruence(X_P_inv_T(point), self._array))
+        return Inertia(inertia_at(self._array, point))
 
     def rotated(self, theta, about=(0.0, 0.0)) -> "Inertia":
         """The body turned by ``theta`` about ``about`` (thesis 1.68; :func:`planargeo.screws.inertia_rotated`).
@@ -770,15 +777,15 @@ class Inertia(_Held):
         >>> Inertia.from_mass(2.0, [2.0, 0.0], inertia=0.5).rotated(np.pi / 2, about=[1.0, 0.0])
         Inertia(mass=2, com=(1, 1), radius_of_gyration=0.5)
         """
-        return Inertia(_inertia_rotated(self._array, theta, about))
+        return Inertia(inertia_rotated(self._array, theta, about))
 
+    @_documented
     def kinetic_energy(self, twist) -> np.ndarray:
         """``½ vᵀ I v`` (thesis 1.9).
 
         Parameters
         ----------
-        twist : Twist or array_like, shape (..., 3)
-            Twist ``[vx, vy, ω]`` (m/s, rad/s).
+        {twist}
 
         Returns
         -------
@@ -790,15 +797,15 @@ class Inertia(_Held):
         >>> float(Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).kinetic_energy([1.0, 0.0, 0.0]))   # ½ m u²
         1.0
         """
-        return _kinetic_energy(self._array, Twist._coords(twist))
+        return kinetic_energy(self._array, twist)
 
+    @_documented
     def momentum(self, twist) -> np.ndarray:
         """Momentum wrench ``I v`` (thesis 5.72).
 
         Parameters
         ----------
-        twist : Twist or array_like, shape (..., 3)
-            Twist ``[vx, vy, ω]`` (m/s, rad/s).
+        {twist}
 
         Returns
         -------
@@ -810,15 +817,15 @@ class Inertia(_Held):
         >>> Inertia.from_mass(2.0, [0.0, 1.0], inertia=0.5).momentum([1.0, 0.0, 0.0])   # m u along y = 1
         array([ 2.,  0., -2.])
         """
-        return np.einsum("...ij,...j->...i", self._array, Twist._coords(twist))
+        return momentum(self._array, twist)
 
+    @_documented
     def percussion_axis_array(self, point) -> np.ndarray:
         """:func:`percussion_axis` as an array.
 
         Parameters
         ----------
-        point : array_like, shape (..., 3)
-            Homogeneous acceleration pole.
+        {pole}
 
         Returns
         -------
@@ -832,18 +839,18 @@ class Inertia(_Held):
         """
         return percussion_axis(self._array, point)
 
+    @_documented
     def percussion_axis(self, point):
-        """Axis of percussion of ``point`` as a :class:`planargeo.geometry.Line` (thesis 5.67).
+        """Axis of percussion of ``point`` (thesis 5.67): :meth:`percussion_axis_array` as a line.
 
         Parameters
         ----------
-        point : array_like, shape (3,)
-            Homogeneous acceleration pole.
+        {pole}
 
         Returns
         -------
         Line
-            The axis of percussion ``I a``.
+            A :class:`planargeo.geometry.Line`.
 
         Examples
         --------
@@ -851,15 +858,15 @@ class Inertia(_Held):
         array([0. , 2. , 2.5])
         """
         from planargeo.geometry.elements import Line
-        return Line(percussion_axis(self._array, point))
+        return Line(self.percussion_axis_array(point))
 
+    @_documented
     def percussion_pole_array(self, line) -> np.ndarray:
         """:func:`percussion_pole` as an array.
 
         Parameters
         ----------
-        line : array_like, shape (..., 3)
-            Homogeneous line (an impulse's line of action).
+        {impulse}
 
         Returns
         -------
@@ -873,18 +880,18 @@ class Inertia(_Held):
         """
         return percussion_pole(self._array, line)
 
+    @_documented
     def percussion_pole(self, line):
-        """Pole whose axis of percussion is ``line``, as a :class:`planargeo.geometry.Point`.
+        """Pole whose axis of percussion is ``line``: :meth:`percussion_pole_array` as a point.
 
         Parameters
         ----------
-        line : array_like, shape (3,)
-            Homogeneous line (an impulse's line of action).
+        {impulse}
 
         Returns
         -------
         Point
-            The pole ``I⁻¹ f``.
+            A :class:`planargeo.geometry.Point`.
 
         Examples
         --------
@@ -892,7 +899,7 @@ class Inertia(_Held):
         Point(x=1, y=0)
         """
         from planargeo.geometry.elements import Point
-        return Point(percussion_pole(self._array, line))
+        return Point(self.percussion_pole_array(line))
 
     def drawable_conic_matrix(self) -> np.ndarray:
         """:func:`drawable_conic` as an array.
@@ -912,12 +919,12 @@ class Inertia(_Held):
         return drawable_conic(self._array)
 
     def drawable_conic(self):
-        """The radius-of-gyration circle as a :class:`planargeo.geometry.Conic` (thesis 10.2.3).
+        """The radius-of-gyration circle (thesis 10.2.3): :meth:`drawable_conic_matrix` as a conic.
 
         Returns
         -------
         Conic
-            The real circle of radius ``ρ`` about the centre of mass.
+            A :class:`planargeo.geometry.Conic`: the real circle of radius ``ρ`` about the centre of mass.
 
         Examples
         --------
@@ -925,7 +932,7 @@ class Inertia(_Held):
         np.float64(-0.5)
         """
         from planargeo.geometry.elements import Conic
-        return Conic(drawable_conic(self._array))
+        return Conic(self.drawable_conic_matrix())
 
     def conic(self):
         """The inertia itself as a (imaginary) :class:`planargeo.geometry.Conic` (thesis 5.4).

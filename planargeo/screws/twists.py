@@ -24,6 +24,7 @@ from planargeo._validate import (as_array, as_mat3, as_vec3, as_xy, batch_shape,
                                  check_positive_semidefinite, check_tolerance, overflow_checked, rescaled)
 from planargeo.errors import NumericOverflowError
 from planargeo.geometry.projective import _fit, normalize_line, normalize_point, to_xy
+from planargeo.screws._docs import documented
 
 __all__ = [
     "X_P", "X_P_inv_T", "rot", "X_frame", "X_frame_inv_T", "rotation_about", "crm", "crf",
@@ -35,6 +36,7 @@ __all__ = [
 ]
 
 
+@documented
 def X_P(point) -> np.ndarray:
     """Twist transform from the origin to ``point`` (thesis 4.8).
 
@@ -42,8 +44,7 @@ def X_P(point) -> np.ndarray:
 
     Parameters
     ----------
-    point : array_like, shape (..., 2)
-        Reference point ``(x, y)`` (m).
+    {point}
 
     Returns
     -------
@@ -62,6 +63,7 @@ def X_P(point) -> np.ndarray:
     return out
 
 
+@documented
 def X_P_inv_T(point) -> np.ndarray:
     """Wrench transform from the origin to ``point`` (thesis 4.24).
 
@@ -70,8 +72,7 @@ def X_P_inv_T(point) -> np.ndarray:
 
     Parameters
     ----------
-    point : array_like, shape (..., 2)
-        Reference point ``(x, y)`` (m).
+    {point}
 
     Returns
     -------
@@ -154,6 +155,7 @@ def X_frame(theta, point) -> np.ndarray:
 
 
 @overflow_checked("theta or point")
+@documented
 def X_frame_inv_T(theta, point) -> np.ndarray:
     """Wrench transform matching :func:`X_frame`: ``X⁻ᵀ = rot(θ) X_P⁻ᵀ`` (thesis 1.58, 4.24).
 
@@ -165,8 +167,7 @@ def X_frame_inv_T(theta, point) -> np.ndarray:
     ----------
     theta : array_like, shape (...)
         Angle of the new frame (rad).
-    point : array_like, shape (..., 2)
-        Reference point ``(x, y)`` (m).
+    {point}
 
     Returns
     -------
@@ -394,15 +395,13 @@ def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
     return out
 
 
+@documented
 def power(twist, wrench) -> np.ndarray:
     """Power ``vᵀf`` of a wrench on a twist (thesis 5.73); zero means incidence.
 
     Parameters
     ----------
-    twist : Twist or array_like, shape (..., 3)
-        Twist ``[vx, vy, ω]`` (m/s, rad/s).
-    wrench : Wrench or array_like, shape (..., 3)
-        Wrench ``[fx, fy, τz]`` (N, N·m).
+    {twist wrench}
 
     Returns
     -------
@@ -424,15 +423,13 @@ def _dot(a, b):
     return np.einsum("...i,...i->...", a, b)
 
 
+@documented
 def kinetic_energy(inertia, twist) -> np.ndarray:
     """Kinetic energy ``½ vᵀ I v`` (thesis 1.9), invariant under frame changes.
 
     Parameters
     ----------
-    inertia : array_like, shape (..., 3, 3)
-        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
-    twist : Twist or array_like, shape (..., 3)
-        Twist ``[vx, vy, ω]`` (m/s, rad/s).
+    {inertia twist}
 
     Returns
     -------
@@ -464,11 +461,6 @@ def kinetic_energy(inertia, twist) -> np.ndarray:
     """
     I = _inertia_psd(inertia)
     v = as_vec3(twist, "twist")
-    return _kinetic_energy(I, v)
-
-
-def _kinetic_energy(I: np.ndarray, v: np.ndarray) -> np.ndarray:
-    """``½ vᵀ I v`` on arrays already checked (the unchecked kernel)."""
     batch_shape(inertia=(I, 2), twist=(v, 1))
     return np.asarray(rescaled(lambda I, v: 0.5 * np.einsum("...i,...ij,...j->...", v, I, v), (I, v), (1, 2),
                                (2, 1), 0, "kinetic_energy(inertia, twist)", "inertia or twist"))
@@ -483,13 +475,13 @@ def _inertia_psd(inertia, name: str = "inertia") -> np.ndarray:
 # Scalar features of twists and wrenches (thesis 4.6-4.10, 4.22-4.32)
 # ---------------------------------------------------------------------------
 
+@documented
 def twist_magnitude(twist) -> np.ndarray:
     """Magnitude ``ω_z`` of a planar twist (thesis 4.6), signed; 0 for a translation.
 
     Parameters
     ----------
-    twist : Twist or array_like, shape (..., 3)
-        Twist ``[vx, vy, ω]`` (m/s, rad/s).
+    {twist}
 
     Returns
     -------
@@ -505,6 +497,7 @@ def twist_magnitude(twist) -> np.ndarray:
     return np.asarray(v[..., 2])
 
 
+@documented
 def pole_xy(twist) -> np.ndarray:
     """Euclidean pole ``(-v_y/ω, v_x/ω)`` of a twist (thesis 4.10).
 
@@ -515,8 +508,7 @@ def pole_xy(twist) -> np.ndarray:
 
     Parameters
     ----------
-    twist : Twist or array_like, shape (..., 3)
-        Twist ``[vx, vy, ω]`` (m/s, rad/s).
+    {twist}
 
     Returns
     -------
@@ -533,6 +525,7 @@ def pole_xy(twist) -> np.ndarray:
     return to_xy(as_vec3(twist, "twist"))
 
 
+@documented
 def wrench_magnitude(wrench) -> np.ndarray:
     """Magnitude ``F = sqrt(f_x² + f_y²)`` of a planar wrench (thesis 4.22, 4.29).
 
@@ -540,8 +533,7 @@ def wrench_magnitude(wrench) -> np.ndarray:
 
     Parameters
     ----------
-    wrench : Wrench or array_like, shape (..., 3)
-        Wrench ``[fx, fy, τz]`` (N, N·m).
+    {wrench}
 
     Returns
     -------
@@ -558,6 +550,7 @@ def wrench_magnitude(wrench) -> np.ndarray:
                                "wrench_magnitude(wrench)", "wrench"))
 
 
+@documented
 def wrench_axis(wrench):
     """Direction ``e``, distance ``d`` and normal ``n`` of a wrench's line of action (thesis 4.28-4.32).
 
@@ -568,8 +561,7 @@ def wrench_axis(wrench):
 
     Parameters
     ----------
-    wrench : Wrench or array_like, shape (..., 3)
-        Wrench ``[fx, fy, τz]`` (N, N·m).
+    {wrench}
 
     Returns
     -------
@@ -601,6 +593,7 @@ def wrench_axis(wrench):
     return e, np.asarray(d), n
 
 
+@documented
 def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
     """True where twist and wrench are reciprocal: zero power (thesis 1.9, 5.61, 5.69).
 
@@ -609,10 +602,7 @@ def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
 
     Parameters
     ----------
-    twist : Twist or array_like, shape (..., 3)
-        Twist ``[vx, vy, ω]`` (m/s, rad/s).
-    wrench : Wrench or array_like, shape (..., 3)
-        Wrench ``[fx, fy, τz]`` (N, N·m).
+    {twist wrench}
     rtol : float, optional
         Relative tolerance of the zero-power test ``|vᵀf| <= rtol |v| |f|``.
 
@@ -640,6 +630,7 @@ def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
 # ---------------------------------------------------------------------------
 
 @overflow_checked("inertia or point")
+@documented
 def inertia_at(inertia, point) -> np.ndarray:
     """Inertia expressed at ``point`` (thesis 1.68, parallel axis theorem).
 
@@ -652,10 +643,7 @@ def inertia_at(inertia, point) -> np.ndarray:
 
     Parameters
     ----------
-    inertia : array_like, shape (..., 3, 3)
-        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
-    point : array_like, shape (..., 2)
-        Reference point ``(x, y)`` (m).
+    {inertia point}
 
     Returns
     -------
@@ -664,8 +652,7 @@ def inertia_at(inertia, point) -> np.ndarray:
 
     Raises
     ------
-    InputError, SingularInertiaError
-        ``inertia`` not symmetric positive semi-definite (see :func:`kinetic_energy`).
+    {not_psd}
 
     Examples
     --------
@@ -685,6 +672,7 @@ def _congruence(W: np.ndarray, I: np.ndarray) -> np.ndarray:
 
 
 @overflow_checked("inertia, theta or point")
+@documented
 def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
     """Inertia in the frame of :func:`X_frame`: ``I_B = X⁻ᵀ I X⁻¹`` (thesis 1.68).
 
@@ -711,8 +699,7 @@ def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
 
     Raises
     ------
-    InputError, SingularInertiaError
-        ``inertia`` not symmetric positive semi-definite (see :func:`kinetic_energy`).
+    {not_psd}
 
     Examples
     --------
@@ -730,6 +717,7 @@ def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
 
 
 @overflow_checked("inertia, theta or about")
+@documented
 def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
     """Inertia of the body turned by ``theta`` about ``about`` (thesis 1.68 with :func:`rotation_about`).
 
@@ -757,8 +745,7 @@ def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
 
     Raises
     ------
-    InputError, SingularInertiaError
-        ``inertia`` not symmetric positive semi-definite (see :func:`kinetic_energy`).
+    {not_psd}
 
     Examples
     --------
@@ -768,17 +755,14 @@ def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
     >>> np.allclose(I, inertia_matrix(2.0, [1.0, 1.0], 0.5))
     True
     """
-    return _inertia_rotated(_inertia_psd(inertia), theta, about)
-
-
-def _inertia_rotated(I: np.ndarray, theta, about) -> np.ndarray:
-    """:func:`inertia_rotated` without the inertia check (the unchecked kernel)."""
+    I = _inertia_psd(inertia)
     c = as_xy(about, "about")
     _batches(inertia=(I, 2), theta=(theta, 0), about=(c, 1))
     return _congruence(X_P_inv_T(-c) @ rot(theta) @ X_P_inv_T(c), I)
 
 
 @overflow_checked("inertia or twist")
+@documented
 def momentum(inertia, twist) -> np.ndarray:
     """Momentum wrench ``p = I v`` (thesis 1.65, 5.72).
 
@@ -787,10 +771,7 @@ def momentum(inertia, twist) -> np.ndarray:
 
     Parameters
     ----------
-    inertia : array_like, shape (..., 3, 3)
-        Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).
-    twist : Twist or array_like, shape (..., 3)
-        Twist ``[vx, vy, ω]`` (m/s, rad/s).
+    {inertia twist}
 
     Returns
     -------
@@ -804,8 +785,7 @@ def momentum(inertia, twist) -> np.ndarray:
 
     Raises
     ------
-    InputError, SingularInertiaError
-        ``inertia`` not symmetric positive semi-definite (see :func:`kinetic_energy`).
+    {not_psd}
     """
     I = _inertia_psd(inertia)
     v = as_vec3(twist, "twist")
@@ -900,6 +880,7 @@ def kappa(twist, s, qd) -> np.ndarray:
 
 
 @overflow_checked("inertia, twist or g")
+@documented
 def bias_force(inertia, twist, g=None) -> np.ndarray:
     """Bias force ``p = -(v×)ᵀ I v - g`` (thesis 3.11, 4.56, 4.62).
 
@@ -931,8 +912,7 @@ def bias_force(inertia, twist, g=None) -> np.ndarray:
 
     Raises
     ------
-    InputError, SingularInertiaError
-        ``inertia`` not symmetric positive semi-definite (see :func:`kinetic_energy`).
+    {not_psd}
     """
     I = _inertia_psd(inertia)
     v = as_vec3(twist, "twist")
