@@ -349,6 +349,7 @@ def parse_sets(sets: list[str], defaults: dict[str, Any] | None = None) -> dict[
     Returns
     -------
     dict
+        ``{name: value}``, each value read by :func:`parse_value`.
 
     Raises
     ------

@@ -105,7 +105,7 @@ def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) 
     Raises
     ------
     SingularConfigurationError
-        When the split matrix ``1 + Λ_i⁻¹ R Uᵀ A_{i+1}`` is singular.
+        As :func:`split_acceleration`.
 
     Examples
     --------

@@ -39,10 +39,8 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
 
     Parameters
     ----------
-    model : Model
-        The mechanism (bodies, joints, parents, gravity).
-    q : array_like (..., nq)
-        Joint coordinates.
+    model, q : Model, array_like (..., nq)
+        The mechanism and its joint coordinates (leading dimensions: a batch).
     method : {"crba", "jacobian"}
         Composite-rigid-body recursion, or the direct sum ``Σ J_iᵀ I_i J_i``.
 

@@ -178,6 +178,7 @@ def style(role: str, **overrides) -> dict:
     Returns
     -------
     dict
+        Matplotlib's keyword arguments for an element in that role.
 
     Raises
     ------
@@ -207,11 +208,12 @@ def sum_style(kind: str, **overrides) -> dict:
     Returns
     -------
     dict
+        Matplotlib's keyword arguments that mark a sum: a wider line, or a diamond marker.
 
     Raises
     ------
     InputError
-        An unknown kind.
+        A ``kind`` other than "line" and "point".
 
     Examples
     --------

@@ -359,7 +359,7 @@ def main(args) -> int:
     Parameters
     ----------
     args : argparse.Namespace
-        Parsed options of :func:`add_arguments`.
+        ``out``, ``only``, ``force`` and ``check``, as :func:`add_arguments` reads them.
 
     Returns
     -------

@@ -181,7 +181,7 @@ def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int | 
     Raises
     ------
     SceneError
-        A parameter out of range (named).
+        ``n`` or ``lam`` not positive, ``outboard`` negative (named).
 
     Examples
     --------

@@ -504,6 +504,7 @@ def parameters(kind: str) -> dict[str, float]:
     Returns
     -------
     dict
+        ``{parameter: default}``, in the builder's order.
 
     Raises
     ------

@@ -122,7 +122,7 @@ def impulse(body: str = "bat", support: str = "held", m: float = 0.9, x: float =
     Raises
     ------
     SceneError
-        A parameter out of range (named).
+        ``body`` or ``support`` not one of its choices, ``m`` not positive, ``J`` zero (named).
 
     Examples
     --------

@@ -165,7 +165,8 @@ def splitting(n: int = 2, m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi:
     Raises
     ------
     SceneError
-        A parameter out of range (named).
+        ``n < 2``, ``split`` not between 1 and ``n - 1``, a size not positive, ``tau`` zero
+        or ``g`` negative (named).
 
     Examples
     --------

@@ -148,12 +148,8 @@ def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float =
 
     Parameters
     ----------
-    mass : float, optional
-        Mass of each link (kg).
-    length : float, optional
-        Length of each link (m).
-    g : float, optional
-        Gravity along -y (m/s²).
+    mass, length, g : float, optional
+        The links and gravity, as for :func:`tree_model`.
     speed : float, optional
         Scale of the joint-speed pattern (rad/s).
 
@@ -193,8 +189,7 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
     Parameters
     ----------
     mass, length, g, speed : float, optional
-        As for :func:`tree`: each link's mass (kg) and length (m), gravity along -y (m/s²),
-        the scale of the joint-speed pattern (rad/s).
+        As for :func:`tree`.
 
     Returns
     -------
