@@ -53,9 +53,17 @@ import numpy as np
 from planargeo._validate import as_vec3, as_xy, check_positive, check_tolerance
 from planargeo.errors import ShapeError
 from planargeo.geometry.projective import _fit
+from planargeo.screws._docs import entries
 
 __all__ = ["SpecialCase", "CASES", "twist_case", "wrench_case", "pair_case", "twists_case",
            "wrenches_case", "horizon_point", "horizon_handle"]
+
+#: The docstring entries the case functions share (:func:`planargeo.screws._docs.entries`).
+_documented = entries({
+    "rtol": "rtol : float\n    Relative size below which a quantity counts as zero.",
+    "case": "Returns\n-------\nSpecialCase\n    The case, named.\n\nRaises\n------\nShapeError\n"
+            "    A screw argument is not one (3,) twist or wrench.\nInputError\n    A negative or non-finite ``rtol``.",
+})
 
 #: name -> (readable text, thesis equation)
 CASES = {
@@ -148,6 +156,7 @@ def _coincide(A: np.ndarray, B: np.ndarray, rtol) -> bool:
                                                    np.linalg.norm(a) * np.linalg.norm(b), rtol))
 
 
+@_documented
 def twist_case(v, rtol: float = 1e-12) -> SpecialCase:
     """Name the case of one twist: ``zero_twist``, ``pure_translation`` or ``pure_rotation``.
 
@@ -157,19 +166,9 @@ def twist_case(v, rtol: float = 1e-12) -> SpecialCase:
     Parameters
     ----------
     v : Twist or array_like (3,)
-    rtol : float
-        Relative size below which a component counts as zero.
+    {rtol}
 
-    Returns
-    -------
-    SpecialCase
-
-    Raises
-    ------
-    ShapeError
-        ``v`` is not one (3,) twist.
-    InputError
-        A negative or non-finite ``rtol``.
+    {case}
 
     Examples
     --------
@@ -179,6 +178,7 @@ def twist_case(v, rtol: float = 1e-12) -> SpecialCase:
     return _one(v, "v", rtol, ("zero_twist", "pure_translation", "pure_rotation"), lambda a: a[2])
 
 
+@_documented
 def wrench_case(f, rtol: float = 1e-12) -> SpecialCase:
     """Name the case of one wrench: ``zero_wrench``, ``pure_couple`` or ``pure_force``.
 
@@ -187,19 +187,9 @@ def wrench_case(f, rtol: float = 1e-12) -> SpecialCase:
     Parameters
     ----------
     f : Wrench or array_like (3,)
-    rtol : float
-        Relative size below which a component counts as zero.
+    {rtol}
 
-    Returns
-    -------
-    SpecialCase
-
-    Raises
-    ------
-    ShapeError
-        ``f`` is not one (3,) wrench.
-    InputError
-        A negative or non-finite ``rtol``.
+    {case}
 
     Examples
     --------
@@ -209,6 +199,7 @@ def wrench_case(f, rtol: float = 1e-12) -> SpecialCase:
     return _one(f, "f", rtol, ("zero_wrench", "pure_couple", "pure_force"), lambda a: np.hypot(a[0], a[1]))
 
 
+@_documented
 def pair_case(v, f, rtol: float = 1e-12) -> SpecialCase:
     """Name the relation of a twist and a wrench: ``workless`` (reciprocal) or ``power``.
 
@@ -221,19 +212,9 @@ def pair_case(v, f, rtol: float = 1e-12) -> SpecialCase:
     ----------
     v : Twist or array_like (3,)
     f : Wrench or array_like (3,)
-    rtol : float
-        Relative size below which the power counts as zero.
+    {rtol}
 
-    Returns
-    -------
-    SpecialCase
-
-    Raises
-    ------
-    ShapeError
-        Not one (3,) twist and one (3,) wrench.
-    InputError
-        A negative or non-finite ``rtol``.
+    {case}
 
     Examples
     --------
@@ -250,6 +231,7 @@ def pair_case(v, f, rtol: float = 1e-12) -> SpecialCase:
     return _case("workless" if _small(a @ b, np.linalg.norm(a) * np.linalg.norm(b), rtol) else "power")
 
 
+@_documented
 def twists_case(v1, v2, rtol: float = 1e-12) -> SpecialCase:
     """Name the case of the sum of two twists (thesis 4.11–4.16).
 
@@ -261,19 +243,9 @@ def twists_case(v1, v2, rtol: float = 1e-12) -> SpecialCase:
     Parameters
     ----------
     v1, v2 : Twist or array_like (3,)
-    rtol : float
-        Relative size below which a quantity counts as zero.
+    {rtol}
 
-    Returns
-    -------
-    SpecialCase
-
-    Raises
-    ------
-    ShapeError
-        Not two (3,) twists.
-    InputError
-        A negative or non-finite ``rtol``.
+    {case}
 
     Examples
     --------
@@ -294,6 +266,7 @@ def twists_case(v1, v2, rtol: float = 1e-12) -> SpecialCase:
     return _case("translations")
 
 
+@_documented
 def wrenches_case(f1, f2, rtol: float = 1e-12) -> SpecialCase:
     """Name the case of the sum of two wrenches (thesis 4.33–4.46).
 
@@ -305,19 +278,9 @@ def wrenches_case(f1, f2, rtol: float = 1e-12) -> SpecialCase:
     Parameters
     ----------
     f1, f2 : Wrench or array_like (3,)
-    rtol : float
-        Relative size below which a quantity counts as zero.
+    {rtol}
 
-    Returns
-    -------
-    SpecialCase
-
-    Raises
-    ------
-    ShapeError
-        Not two (3,) wrenches.
-    InputError
-        A negative or non-finite ``rtol``.
+    {case}
 
     Examples
     --------
