@@ -52,12 +52,19 @@ import numpy as np
 
 from planargeo._validate import as_array, as_scalar, as_xy
 from planargeo.errors import DegenerateGeometryError, InputError, ShapeError
+from planargeo.screws._docs import entries
 
 __all__ = ["Contact", "CONTACT_DOFS", "contact_matrix", "validate_contacts", "world_point",
            "z_of", "B_of", "residual", "contact_bias", "stacked_contact_spaces"]
 
 #: Number of relative degrees of freedom ``k`` each contact kind allows (columns of ``z``).
 CONTACT_DOFS = {"pin": 1, "slider": 1, "weld": 0}
+
+#: The parameters of the per-contact functions, described once (:func:`planargeo.screws._docs.entries`).
+_documented = entries({
+    "contact": "contact : Contact\n    One contact.",
+    "pose": "pose : array_like, shape (..., N, 3)\n    World poses ``(x, y, θ)`` of the N bodies (m, rad).",
+})
 
 
 def _xy_tuple(x, name):
@@ -225,13 +232,13 @@ def _pose_of(pose, i):
     return pose[..., i, 0], pose[..., i, 1], pose[..., i, 2]
 
 
+@_documented
 def world_point(pose, body: int, point) -> np.ndarray:
     """World coordinates of ``point`` given in ``body``'s frame (``body = -1``: world; the pose of 2.1-2.9).
 
     Parameters
     ----------
-    pose : array_like, shape (..., N, 3)
-        World poses ``(x, y, θ)`` of the N bodies (m, rad).
+    {pose}
     body : int
         Body index, or ``-1`` for the world frame.
     point : array_like, shape (2,)
@@ -275,6 +282,7 @@ def _slider_dir(contact, pose):
     return c * dx - s * dy, s * dx + c * dy
 
 
+@_documented
 def z_of(contact: Contact, pose) -> np.ndarray:
     """Contact motion space ``z`` (3×k unit twists at the origin; thesis 9.54, 9.83).
 
@@ -284,10 +292,7 @@ def z_of(contact: Contact, pose) -> np.ndarray:
 
     Parameters
     ----------
-    contact : Contact
-        One contact.
-    pose : array_like, shape (..., N, 3)
-        World poses ``(x, y, θ)`` of the N bodies (m, rad).
+    {contact pose}
 
     Returns
     -------
@@ -316,6 +321,7 @@ def z_of(contact: Contact, pose) -> np.ndarray:
     return z
 
 
+@_documented
 def B_of(contact: Contact, pose) -> np.ndarray:
     """Contact reaction space ``B`` (3×(3-k) wrenches at the origin, ``z^T B = 0``; 9.59-9.60, 9.87).
 
@@ -333,10 +339,7 @@ def B_of(contact: Contact, pose) -> np.ndarray:
 
     Parameters
     ----------
-    contact : Contact
-        One contact.
-    pose : array_like, shape (..., N, 3)
-        World poses ``(x, y, θ)`` of the N bodies (m, rad).
+    {contact pose}
 
     Returns
     -------
@@ -368,6 +371,7 @@ def B_of(contact: Contact, pose) -> np.ndarray:
     return B
 
 
+@_documented
 def residual(contact: Contact, pose) -> np.ndarray:
     """Position-level loop-closure residual (3-k values; zero when the loop is closed; position form of 9.59-9.60).
 
@@ -378,10 +382,7 @@ def residual(contact: Contact, pose) -> np.ndarray:
 
     Parameters
     ----------
-    contact : Contact
-        One contact.
-    pose : array_like, shape (..., N, 3)
-        World poses ``(x, y, θ)`` of the N bodies (m, rad).
+    {contact pose}
 
     Returns
     -------
@@ -439,6 +440,7 @@ def contact_bias(v_a, v_b) -> np.ndarray:
     return np.einsum("...ij,...j->...i", crm(va), va - vb)
 
 
+@_documented
 def stacked_contact_spaces(contacts, pose):
     """Block-diagonal ``z = {{z_k}}`` (3m×Σk) and ``B = {{B_k}}`` (3m×Σ(3-k)) for all contacts (thesis 9.54, 9.60).
 
@@ -446,8 +448,7 @@ def stacked_contact_spaces(contacts, pose):
     ----------
     contacts : sequence of Contact
         The model's contacts (loop closures).
-    pose : array_like, shape (..., N, 3)
-        World poses ``(x, y, θ)`` of the N bodies (m, rad).
+    {pose}
 
     Returns
     -------

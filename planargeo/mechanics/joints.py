@@ -58,6 +58,7 @@ import numpy as np
 
 from planargeo._validate import as_xy, overflow_checked
 from planargeo.errors import InputError, ShapeError
+from planargeo.screws._docs import entries
 from planargeo.screws.twists import unit_rotation, unit_translation
 
 __all__ = ["KINDS", "DOF", "motion_space", "reaction_space", "R_of", "JointSpace",
@@ -70,6 +71,12 @@ KINDS = ("revolute", "prismatic", "revolute_prismatic", "twin_prismatic", "plane
 DOF = {"revolute": 1, "prismatic": 1, "revolute_prismatic": 2, "twin_prismatic": 2, "plane": 3, "fixed": 0}
 
 _USES_DIRECTION = ("prismatic", "revolute_prismatic", "twin_prismatic", "plane")
+
+#: The parameters of the joint constructors, described once (:func:`planargeo.screws._docs.entries`).
+_documented = entries({
+    "point": "point : array_like, shape (2,), optional\n    A point of the joint (m); default the origin.",
+    "direction": "direction : array_like, shape (2,), optional\n    Sliding direction (non-zero); default +x.",
+})
 
 
 def _check_kind(kind) -> str:
@@ -468,6 +475,7 @@ def _by_name(constructor):
     return named_only
 
 
+@_documented
 def revolute(point=(0.0, 0.0)) -> JointSpace:
     """Revolute (pin) joint about ``point`` (thesis 4.64): ``s`` = the point ``[y, -x, 1]``.
 
@@ -476,8 +484,7 @@ def revolute(point=(0.0, 0.0)) -> JointSpace:
 
     Parameters
     ----------
-    point : array_like, shape (2,), optional
-        A point of the joint (m); default the origin.
+    {point}
 
     Returns
     -------
@@ -493,6 +500,7 @@ def revolute(point=(0.0, 0.0)) -> JointSpace:
 
 
 @_by_name
+@_documented
 def prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Prismatic (slider) joint through ``point`` along ``direction`` (thesis 4.69, 5.62, 5.63).
 
@@ -502,10 +510,7 @@ def prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 
     Parameters
     ----------
-    point : array_like, shape (2,), optional
-        A point of the joint (m); default the origin.
-    direction : array_like, shape (2,), optional
-        Sliding direction (non-zero); default +x.
+    {point direction}
 
     Returns
     -------
@@ -524,6 +529,7 @@ def prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     return JointSpace("prismatic", point, direction)
 
 
+@_documented
 def revolute_prismatic(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Two-dof pin-in-slot joint: slide along ``direction``, turn about ``point`` (thesis 4.74).
 
@@ -531,10 +537,7 @@ def revolute_prismatic(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 
     Parameters
     ----------
-    point : array_like, shape (2,), optional
-        A point of the joint (m); default the origin.
-    direction : array_like, shape (2,), optional
-        Sliding direction (non-zero); default +x.
+    {point direction}
 
     Returns
     -------
@@ -552,6 +555,7 @@ def revolute_prismatic(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 
 
 @_by_name
+@_documented
 def twin_prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Two-dof twin prismatic joint, thesis 4.8.4's "plane joint" (4.79): slides along ``direction`` and its normal.
 
@@ -569,10 +573,7 @@ def twin_prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 
     Parameters
     ----------
-    point : array_like, shape (2,), optional
-        A point of the joint (m); default the origin.
-    direction : array_like, shape (2,), optional
-        Sliding direction (non-zero); default +x.
+    {point direction}
 
     Returns
     -------
@@ -598,6 +599,7 @@ def twin_prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     return JointSpace("twin_prismatic", point, direction)
 
 
+@_documented
 def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Free planar (3-dof) joint: slides along ``direction`` and its normal, turns about ``point`` (thesis 4.79 + 4.64, 5.62).
 
@@ -609,10 +611,7 @@ def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 
     Parameters
     ----------
-    point : array_like, shape (2,), optional
-        A point of the joint (m); default the origin.
-    direction : array_like, shape (2,), optional
-        Sliding direction (non-zero); default +x.
+    {point direction}
 
     Returns
     -------
@@ -631,6 +630,7 @@ def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     return JointSpace("plane", point, direction)
 
 
+@_documented
 def fixed(point=(0.0, 0.0)) -> JointSpace:
     """Weld (0-dof) at ``point``: ``s`` is empty, ``R`` = forces through ``point`` along x, y and a couple (thesis 6.10).
 
@@ -638,8 +638,7 @@ def fixed(point=(0.0, 0.0)) -> JointSpace:
 
     Parameters
     ----------
-    point : array_like, shape (2,), optional
-        A point of the joint (m); default the origin.
+    {point}
 
     Returns
     -------
