@@ -59,13 +59,13 @@ both carry ``.cond``.
 from __future__ import annotations
 
 import math
-import re
 
 import numpy as np
 
 from planargeo._validate import as_array, as_scalar, check_overflow, check_positive_semidefinite, overflow_checked
 from planargeo.errors import (COND_LIMIT, InputError, ShapeError,
                               SingularConfigurationError, SingularInertiaError)
+from planargeo.screws._docs import entries
 
 __all__ = [
     "T_of", "U_of",
@@ -84,20 +84,12 @@ COND_LIMIT2 = COND_LIMIT * COND_LIMIT
 
 
 #: The parameters most functions here take, described once (``{I s R}`` in a docstring: those entries)
-_PARAMETERS = {
-    "A": ("array_like, shape (..., 3, 3)", "Symmetric positive definite (articulated) inertia at the origin."),
-    "I": ("array_like, shape (..., 3, 3)", "Symmetric inertia (rigid or articulated) at the origin."),
-    "s": ("array_like, shape (..., 3, k)", "Joint motion space (k unit twists as columns)."),
-    "R": ("array_like, shape (..., 3, 3-k)", "Joint reaction space (wrenches reciprocal to ``s``)."),
-}
-
-
-def _parameters(f):
-    """``f`` with the entries of :data:`_PARAMETERS` written into its docstring where it names them."""
-    def entries(m):
-        return "\n".join(f"{m[1]}{k} : {_PARAMETERS[k][0]}\n{m[1]}    {_PARAMETERS[k][1]}" for k in m[2].split())
-    f.__doc__ = re.sub(r"^( *)\{([AIsR ]+)\}$", entries, f.__doc__, flags=re.M)
-    return f
+_parameters = entries({
+    "A": "A : array_like, shape (..., 3, 3)\n    Symmetric positive definite (articulated) inertia at the origin.",
+    "I": "I : array_like, shape (..., 3, 3)\n    Symmetric inertia (rigid or articulated) at the origin.",
+    "s": "s : array_like, shape (..., 3, k)\n    Joint motion space (k unit twists as columns).",
+    "R": "R : array_like, shape (..., 3, 3-k)\n    Joint reaction space (wrenches reciprocal to ``s``).",
+})
 
 
 def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
