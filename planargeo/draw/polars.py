@@ -38,6 +38,7 @@ from planargeo.draw.geometry import _mat, _vec, point_xy
 from planargeo.draw.picture import PX_PER_PT, Picture, plain_text
 from planargeo.draw.pictures._words import num, pair
 from planargeo.draw.pictures.common import label_line, point_along
+from planargeo.draw.sketch import as_picture, dimension, documented, segment
 from planargeo.draw.style import COLORS
 from planargeo.errors import InputError
 from planargeo.geometry.conics import (line_conic_intersections, polar_construction_exterior,
@@ -47,12 +48,6 @@ from planargeo.screws.inertia import centre_of_mass, percussion_axis, radius_of_
 
 __all__ = ["line_conic_points", "interior_construction", "power_values", "polar_exterior",
            "polar_interior", "percussion", "power"]
-
-
-def _picture(pic) -> Picture:
-    if not isinstance(pic, Picture):
-        raise InputError(f"pic must be a planargeo.draw.picture.Picture, got {type(pic).__name__}")
-    return pic
 
 
 def _xy(p) -> str:
@@ -135,6 +130,7 @@ def line_conic_points(C, L) -> list[np.ndarray]:
 
 
 # --------------------------------------------------------------------------- pole / polar
+@documented
 def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=None, L_side: float = 1.0,
                    prefix: str = "") -> dict:
     """Polar of an exterior point (thesis 5.36, Fig. 5.2): tangents from ``p``; ``L`` joins their contacts.
@@ -144,8 +140,7 @@ def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=No
 
     Parameters
     ----------
-    pic : Picture
-        Where to draw.
+    {pic}
     C : array_like (3, 3)
         A real conic.
     p : array_like (3,)
@@ -156,8 +151,7 @@ def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=No
         Near which point of the polar its label sits (default: the middle of the contacts).
     L_side : float
         +1: the polar's label above it (right of a vertical one); -1: below it.
-    prefix : str
-        Put before every id (two constructions in one picture).
+    {prefix}
 
     Returns
     -------
@@ -185,7 +179,7 @@ def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=No
     ...
     planargeo.errors.InputError: p has no real tangents to C: it lies inside the conic (or C is imaginary); use on_interior='nan' to get NaN instead
     """
-    pic = _picture(pic)
+    pic = as_picture(pic)
     C, p = _mat(C, "C"), _vec(p, "p")
     K = polar_construction_exterior(C, p)
     P, L = names
@@ -256,6 +250,7 @@ def interior_construction(C, p, angles=(0.35, 1.9)):
     return polar_construction_interior(C, p, lines=lines)
 
 
+@documented
 def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L = CP$"),
                    L_anchor=None, L_side: float = 1.0, prefix: str = "") -> dict:
     """Polar of an interior point (thesis 5.36, Theorem 12, Fig. 5.3).
@@ -268,8 +263,7 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
 
     Parameters
     ----------
-    pic : Picture
-        Where to draw.
+    {pic}
     C : array_like (3, 3)
         A real conic.
     p : array_like (3,)
@@ -282,8 +276,7 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
         Near which point of the polar its label sits (default: the view's centre).
     L_side : float
         +1: the polar's label above it (right of a vertical one); -1: below it.
-    prefix : str
-        Put before every id.
+    {prefix}
 
     Returns
     -------
@@ -307,7 +300,7 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
     >>> [round(out[k]["parts"][0]["x"], 9) for k in ("R1", "R2")]
     [4.0, 4.0]
     """
-    pic = _picture(pic)
+    pic = as_picture(pic)
     C, p = _mat(C, "C"), _vec(p, "p")
     K = interior_construction(C, p, angles)
     P, L = names
@@ -351,6 +344,7 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
 
 
 # --------------------------------------------------------------------------- inertia
+@documented
 def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = True, f_anchor=None,
                prefix: str = "") -> dict:
     """Axis of percussion ``f = I a`` of an acceleration pole ``a`` (thesis 5.64–5.68, Fig. 5.6).
@@ -361,8 +355,7 @@ def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = Tr
 
     Parameters
     ----------
-    pic : Picture
-        Where to draw.
+    {pic}
     I : array_like (3, 3)
         The inertia.
     a : array_like (3,)
@@ -373,8 +366,7 @@ def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = Tr
         Dimension ``d`` and ``ρ²/d`` (when the pole is finite and not at the centre of mass).
     f_anchor : (x, y), optional
         Near which point of the axis its label sits.
-    prefix : str
-        Put before every id.
+    {prefix}
 
     Returns
     -------
@@ -400,9 +392,7 @@ def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = Tr
     >>> sorted(out["f"]["parts"][0]["xy"].round(9).tolist())        # the vertical axis x = 0.24
     [[0.24, -2.0], [0.24, 2.0]]
     """
-    from planargeo.draw.sketch import dimension, segment
-
-    pic = _picture(pic)
+    pic = as_picture(pic)
     I, a = _mat(I, "inertia"), _vec(a, "a")
     f = percussion_axis(I, a)
     c = centre_of_mass(I)
@@ -509,6 +499,7 @@ def power_values(v, I, *, f_angle: float = 0.6, a_distance: float = 1.6) -> dict
     return {"p": p, "f": f, "a": a, "ef": ef, "c": c}
 
 
+@documented
 def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
           names=("$v$", "$p = Iv$", "$f$: $v^Tf = 0$", "$a$: $p^Ta = 0$"), f_label_at=1.6,
           p_label_at=None, f_side: float = 1.0, p_side: float = 1.0, prefix: str = "") -> dict:
@@ -523,8 +514,7 @@ def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
 
     Parameters
     ----------
-    pic : Picture
-        Where to draw.
+    {pic}
     v : array_like (3,)
         The velocity twist.
     I : array_like (3, 3)
@@ -537,8 +527,7 @@ def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
         Placement of the labels (see above).
     f_side, p_side : float
         +1: the label of ``f`` (``p``) above its line (right of a vertical one); -1: below it.
-    prefix : str
-        Put before every id.
+    {prefix}
 
     Returns
     -------
@@ -560,7 +549,7 @@ def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
     >>> out["v"]["desc"]
     'velocity pole v (5.69): at (1, 0), rate 1 rad/s'
     """
-    pic = _picture(pic)
+    pic = as_picture(pic)
     v, I = _vec(v, "v"), _mat(I, "inertia")
     val = power_values(v, I, f_angle=f_angle, a_distance=a_distance)
     p, f, a, ef = val["p"], val["f"], val["a"], val["ef"]

@@ -35,13 +35,15 @@ True
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 
 from planargeo.draw.geometry import clip_line
 from planargeo.draw.layout import fit_box, shape_points
-from planargeo.draw.picture import PX_PER_PT, Picture
-from planargeo.draw.style import COLORS, LINEWIDTHS, STYLES
+from planargeo.draw.picture import PX_PER_PT, Picture, _color as _role_color, _dash as _role_dash
+from planargeo.draw.pictures.common import _align
+from planargeo.draw.style import COLORS, LINEWIDTHS
 from planargeo.errors import InputError
 
 __all__ = ["panel", "fit_box", "show", "label", "segment", "dimension", "body_words", "link_polygon",
@@ -76,28 +78,79 @@ def _positive(v, name: str) -> float:
     return f
 
 
-def _pic(pic) -> Picture:
+def as_picture(pic) -> Picture:
+    """``pic`` itself if it is a :class:`~planargeo.draw.picture.Picture`, else an InputError.
+
+    Parameters
+    ----------
+    pic : object
+        What a drawing function was given to draw on.
+
+    Returns
+    -------
+    Picture
+
+    Raises
+    ------
+    InputError
+        ``pic`` is not a Picture.
+
+    Examples
+    --------
+    >>> as_picture("a figure")
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: pic must be a Picture (planargeo.draw.picture.Picture), got str
+    """
     if not isinstance(pic, Picture):
-        raise InputError(f"pic must be a planargeo.draw.picture.Picture, got {type(pic).__name__}")
+        raise InputError(f"pic must be a Picture (planargeo.draw.picture.Picture), got {type(pic).__name__}")
     return pic
 
 
-def _role_color(role: str, color=None) -> str:
-    return color or COLORS.get(role) or STYLES.get(role, {}).get("color") or COLORS["text"]
+#: Docstring entries the drawing functions share, written once: a line ``{pic id}`` in a
+#: docstring stands for those entries (:func:`documented`).
+ENTRIES = {"pic": "pic : Picture\n    Where to draw.",
+           "id": "id : str\n    Stable name of the element.",
+           "symbol": "symbol, desc : str\n    Thesis symbol and a one-line description.",
+           "z": "z : int\n    Drawing order.",
+           "prefix": "prefix : str\n    Put before every id (several drawings in one picture)."}
 
 
-def _role_dash(role: str):
-    ls = STYLES.get(role, {}).get("linestyle")
-    if isinstance(ls, tuple):
-        return [round(v * PX_PER_PT, 2) for v in ls[1]]
-    return None
+def documented(fn):
+    """``fn`` with each docstring line ``{pic id ...}`` replaced by those :data:`ENTRIES`.
 
+    Parameters
+    ----------
+    fn : callable
+        A function whose docstring names shared entries, one ``{key key ...}`` line each place.
 
-def _align(n) -> tuple[str, str]:
-    """Alignment of a text put beside an anchor in the pixel direction ``n`` (away from it)."""
-    ha = "left" if n[0] > 0.3 else "right" if n[0] < -0.3 else "center"
-    va = "bottom" if n[1] > 0.3 else "top" if n[1] < -0.3 else "center"
-    return ha, va
+    Returns
+    -------
+    callable
+        ``fn`` itself, its docstring completed.
+
+    Examples
+    --------
+    >>> def f(pic, z):
+    ...     '''Draw.
+    ...
+    ...     Parameters
+    ...     ----------
+    ...     {pic z}
+    ...     '''
+    >>> print(documented(f).__doc__.split("----------")[1].rstrip())
+    <BLANKLINE>
+        pic : Picture
+            Where to draw.
+        z : int
+            Drawing order.
+    """
+    def entries(m):
+        return "\n".join(m[1] + line for key in m[2].split() for line in ENTRIES[key].split("\n"))
+
+    if fn.__doc__:
+        fn.__doc__ = re.sub(r"^( *)\{([a-z ]+)\}$", entries, fn.__doc__, flags=re.M)
+    return fn
 
 
 def _text_part(x, y, text, dx=0.0, dy=0.0, ha="left", va="bottom") -> dict:
@@ -222,12 +275,13 @@ def panel(ax, points, *, margin=None, keep=None, min_span=None, fit_height=False
     return Picture(box, size=(w, h), ticks=False, margin=(0, 0, 0, 0))
 
 
+@documented
 def show(pic: Picture, ax=None) -> list:
     """Draw the picture on the axes ``ax`` (:func:`planargeo.draw.render.draw_picture`).
 
     Parameters
     ----------
-    pic : Picture
+    {pic}
     ax : matplotlib.axes.Axes, optional
         The axes :func:`panel` sized the picture to (default: the current axes).
 
@@ -238,10 +292,11 @@ def show(pic: Picture, ax=None) -> list:
     """
     from planargeo.draw.render import draw_picture
 
-    return draw_picture(_pic(pic).to_dict(), ax)
+    return draw_picture(as_picture(pic).to_dict(), ax)
 
 
 # --------------------------------------------------------------------------- texts, lines
+@documented
 def label(pic: Picture, id: str, xy, text: str, *, offset=(5, 5), ha: str = "left",
           va: str = "bottom", role: str = "text", color=None, symbol: str = "", desc: str = "",
           fixed: bool = False) -> dict:
@@ -252,9 +307,7 @@ def label(pic: Picture, id: str, xy, text: str, *, offset=(5, 5), ha: str = "lef
 
     Parameters
     ----------
-    pic : Picture
-    id : str
-        Stable name of the element.
+    {pic id}
     xy : (float, float)
         The point the text refers to.
     text : str
@@ -267,8 +320,7 @@ def label(pic: Picture, id: str, xy, text: str, *, offset=(5, 5), ha: str = "lef
         Style role (its colour).
     color : str, optional
         Colour instead of the role's.
-    symbol, desc : str
-        Thesis symbol and a one-line description.
+    {symbol}
     fixed : bool
         Keep the text where asked (the placer does not move it; others avoid it).
 
@@ -295,7 +347,7 @@ def label(pic: Picture, id: str, xy, text: str, *, offset=(5, 5), ha: str = "lef
         dx, dy = (float(v) * PX_PER_PT for v in offset)
     except (TypeError, ValueError):
         raise InputError(f"offset must be two numbers (points), got {offset!r}") from None
-    _pic(pic).text(id, (x, y), str(text), role=role, color=_role_color(role, color), ha=ha, va=va,
+    as_picture(pic).text(id, (x, y), str(text), role=role, color=_role_color(role, color), ha=ha, va=va,
                    dx=dx, dy=dy, symbol=symbol, desc=desc)
     el = pic.elements[-1]
     if not fixed:
@@ -303,15 +355,14 @@ def label(pic: Picture, id: str, xy, text: str, *, offset=(5, 5), ha: str = "lef
     return el
 
 
+@documented
 def segment(pic: Picture, id: str, p, q, *, role: str = "construct", label=None, color=None,
             width=None, dash=None, symbol: str = "", desc: str = "", z: int = 2) -> dict:
     """A finite segment ``p q`` in a role's style (colour, width, dash), optionally labelled.
 
     Parameters
     ----------
-    pic : Picture
-    id : str
-        Stable name.
+    {pic id}
     p, q : (float, float)
         End points.
     role : str
@@ -323,9 +374,7 @@ def segment(pic: Picture, id: str, p, q, *, role: str = "construct", label=None,
         Line width in pixels (default: the role's).
     dash : list of float, optional
         Dash pattern in pixels (default: the role's; ``[]`` for solid).
-    symbol, desc : str
-    z : int
-        Drawing order.
+    {symbol z}
 
     Returns
     -------
@@ -345,7 +394,7 @@ def segment(pic: Picture, id: str, p, q, *, role: str = "construct", label=None,
     ([[0.0, 0.0], [1.0, 1.0]], [5.56, 4.17])
     """
     p, q = _xy(p, "p"), _xy(q, "q")
-    _pic(pic).path(id, np.array([p, q]), role=role, symbol=symbol, desc=desc,
+    as_picture(pic).path(id, np.array([p, q]), role=role, symbol=symbol, desc=desc,
                    color=_role_color(role, color),
                    width=width if width is not None else LINEWIDTHS.get(role, 1.0) * PX_PER_PT,
                    dash=(dash or None) if dash is not None else _role_dash(role), z=z)
@@ -359,6 +408,7 @@ def segment(pic: Picture, id: str, p, q, *, role: str = "construct", label=None,
     return el
 
 
+@documented
 def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at: float = 0.5,
               color=None, tick: float = 8.0, symbol: str | None = None, desc: str = "") -> dict:
     """A dimension line ``p q`` with end ticks, shifted ``offset`` to the left of ``p → q``, labelled.
@@ -368,9 +418,7 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
 
     Parameters
     ----------
-    pic : Picture
-    id : str
-        Stable name.
+    {pic id}
     p, q : (float, float)
         Distinct end points.
     text : str
@@ -421,7 +469,7 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
         raise InputError(f"offset and at must be numbers, got {offset!r}, {at!r}") from None
     if not (math.isfinite(offset) and math.isfinite(at)):
         raise InputError(f"offset and at must be finite, got {offset!r}, {at!r}")
-    _pic(pic)
+    as_picture(pic)
     n = np.array([-d[1], d[0]]) / L
     p2, q2 = p + offset * n, q + offset * n
     npx = n * (pic.kx, pic.ky)
@@ -439,14 +487,14 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
                     color=color or COLORS["construct"], width=0.7 * PX_PER_PT, z=2)
 
 
+@documented
 def arrow(pic: Picture, id: str, p, q, *, role: str = "wrench", color=None, label=None,
           offset=(5, 5), symbol: str = "", desc: str = "", z: int = 5) -> dict:
     """An arrow from ``p`` to ``q`` (data points; the picture's arrow: solid shaft, head at ``q``).
 
     Parameters
     ----------
-    pic : Picture
-    id : str
+    {pic id}
     p, q : (float, float)
         Tail and tip (distinct).
     role : str
@@ -456,8 +504,7 @@ def arrow(pic: Picture, id: str, p, q, *, role: str = "wrench", color=None, labe
         Text at the tip, moved by ``offset`` points (placed).
     offset : (float, float)
         Shift of the label (points, y up).
-    symbol, desc : str
-    z : int
+    {symbol z}
 
     Returns
     -------
@@ -479,7 +526,7 @@ def arrow(pic: Picture, id: str, p, q, *, role: str = "wrench", color=None, labe
     p, q = _xy(p, "p"), _xy(q, "q")
     if np.array_equal(p, q):
         raise InputError("arrow: p and q must be distinct points")
-    _pic(pic)
+    as_picture(pic)
     d = (q - p) * (pic.kx, pic.ky)
     parts = [{"p": "arrow", "x": float(p[0]), "y": float(p[1]), "dx": float(d[0]), "dy": float(d[1])}]
     if label:
@@ -574,6 +621,7 @@ def _rings_path(rings) -> np.ndarray:
 
 
 # --------------------------------------------------------------------------- mechanism
+@documented
 def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alpha: float = 0.35,
          edgecolor: str = BODY_EDGE, z: int = 1, com=None, symbol: str = "", desc: str = "") -> dict:
     """A body: a filled polygon (shapely polygon / multipolygon, or (n, 2) vertices).
@@ -583,9 +631,7 @@ def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alp
 
     Parameters
     ----------
-    pic : Picture
-    id : str
-        Stable name.
+    {pic id}
     shape : shapely Polygon or MultiPolygon, or array_like (n, 2)
         The body; in world coordinates, or in its body frame when ``pose`` is given.
     pose : (float, float, float), optional
@@ -598,11 +644,10 @@ def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alp
         Opacity of the fill.
     edgecolor : str
         Outline colour.
-    z : int
-        Drawing order.
+    {z}
     com : (float, float), optional
         Centre of mass to mark.
-    symbol, desc : str
+    {symbol}
 
     Returns
     -------
@@ -621,7 +666,7 @@ def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alp
     >>> np.round(el["parts"][0]["xy"], 9).tolist()        # turned a quarter, moved by 1 along x
     [[1.0, 0.0], [1.0, 1.0], [0.0, 0.0], [1.0, 0.0]]
     """
-    _pic(pic)
+    as_picture(pic)
     if pose is not None:
         if not hasattr(shape, "geom_type"):
             from shapely.geometry import Polygon as SPolygon
@@ -649,13 +694,13 @@ def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alp
     return el
 
 
+@documented
 def link(pic: Picture, id: str, p, q, *, width: float = 0.25, **kw) -> dict:
     """A default rounded link between two points (:func:`link_polygon`, drawn by :func:`body`).
 
     Parameters
     ----------
-    pic : Picture
-    id : str
+    {pic id}
     p, q : (float, float)
         The link's end points.
     width : float
@@ -678,20 +723,19 @@ def link(pic: Picture, id: str, p, q, *, width: float = 0.25, **kw) -> dict:
     return body(pic, id, link_polygon(p, q, width), **kw)
 
 
+@documented
 def pin(pic: Picture, id: str, xy, *, radius: float = 0.06, z: int = 6, symbol: str = "joint",
         desc: str = "a revolute joint") -> dict:
     """A revolute joint: a white disc with a dark rim, ``radius`` data units.
 
     Parameters
     ----------
-    pic : Picture
-    id : str
+    {pic id}
     xy : (float, float)
         The joint.
     radius : float
         Radius of the disc (data units).
-    z : int
-        Drawing order.
+    {z}
     symbol : str
         What it is called (default ``"joint"``; e.g. ``"P"``, the joint's pole).
     desc : str
@@ -716,11 +760,12 @@ def pin(pic: Picture, id: str, xy, *, radius: float = 0.06, z: int = 6, symbol: 
     """
     c = _xy(xy, "xy")
     r = _positive(radius, "radius")
-    _pic(pic).path(id, _circle(c, r), role="body", symbol=symbol, desc=desc, closed=True, fill="white",
+    as_picture(pic).path(id, _circle(c, r), role="body", symbol=symbol, desc=desc, closed=True, fill="white",
                    color=DARK, width=1.0 * PX_PER_PT, z=z)
     return pic.elements[-1]
 
 
+@documented
 def ground(pic: Picture, id: str, xy, *, width: float = 0.8, angle: float = 0.0, depth: float = 0.12,
            n: int = 7, z: int = 1, desc: str = "the ground") -> dict:
     """A ground line ``width`` long centred on ``xy``, at ``angle``, hatched on its right-hand side.
@@ -730,8 +775,7 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.8, angle: float = 0.0,
 
     Parameters
     ----------
-    pic : Picture
-    id : str
+    {pic id}
     xy : (float, float)
         Middle of the ground line.
     width : float
@@ -742,7 +786,7 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.8, angle: float = 0.0,
         Length (along each axis) of the hatch strokes.
     n : int
         Number of hatch strokes (at least 2).
-    z : int
+    {z}
     desc : str
 
     Returns
@@ -774,10 +818,11 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.8, angle: float = 0.0,
     for t in np.linspace(0, 1, int(n)):
         s = a + (b - a) * t
         parts.append({"p": "path", "xy": np.array([s, s - (e + nrm) * depth]), "closed": False})
-    return _element(_pic(pic), id, "ground", parts, symbol="ground", desc=desc, color=COLORS["ground"],
+    return _element(as_picture(pic), id, "ground", parts, symbol="ground", desc=desc, color=COLORS["ground"],
                     width=1.0 * PX_PER_PT, z=z)
 
 
+@documented
 def slider(pic: Picture, id: str, xy, direction, *, size=(0.35, 0.2), track: float = 1.6,
            z: int = 3, desc: str = "a prismatic joint") -> dict:
     """A prismatic joint: a block on a hatched track along ``direction``.
@@ -787,8 +832,7 @@ def slider(pic: Picture, id: str, xy, direction, *, size=(0.35, 0.2), track: flo
 
     Parameters
     ----------
-    pic : Picture
-    id : str
+    {pic id}
     xy : (float, float)
         Centre of the block.
     direction : (float, float)
@@ -797,8 +841,7 @@ def slider(pic: Picture, id: str, xy, direction, *, size=(0.35, 0.2), track: flo
         Length and height of the block.
     track : float
         Length of the track.
-    z : int
-        Drawing order of the block.
+    {z}
     desc : str
 
     Returns
@@ -847,14 +890,14 @@ def _arrow_parts(pic: Picture, p, q, head: float = 9.0) -> list:
              "dy": float(u[1] * hd)}]
 
 
+@documented
 def frame(pic: Picture, id: str, origin, *, angle: float = 0.0, length: float = 0.5,
           labels=("x", "y"), color: str = DARK, desc: str = "a body frame") -> dict:
     """Coordinate axes arrows at ``origin``, the first at ``angle``, ``length`` data units long.
 
     Parameters
     ----------
-    pic : Picture
-    id : str
+    {pic id}
     origin : (float, float)
     angle : float
         Direction of the first axis (radians).
@@ -881,7 +924,7 @@ def frame(pic: Picture, id: str, origin, *, angle: float = 0.0, length: float = 
     o = _xy(origin, "origin")
     length = _positive(length, "length")
     parts = []
-    _pic(pic)
+    as_picture(pic)
     for k, lab in enumerate(labels):
         a = float(angle) + k * np.pi / 2
         tip = o + length * np.array([math.cos(a), math.sin(a)])
@@ -891,6 +934,7 @@ def frame(pic: Picture, id: str, origin, *, angle: float = 0.0, length: float = 
     return _element(pic, id, "construct", parts, desc=desc, color=color, width=0.9 * PX_PER_PT, z=4)
 
 
+@documented
 def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: str = "c",
         desc: str = "centre of mass") -> dict:
     """The centre-of-mass symbol: a disc quartered black and white, ``radius`` data units.
@@ -900,14 +944,12 @@ def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: 
 
     Parameters
     ----------
-    pic : Picture
-    id : str
+    {pic id}
     xy : (float, float)
         The centre of mass.
     radius : float
         Radius of the symbol (data units).
-    z : int
-        Drawing order.
+    {z}
     symbol : str
         Thesis symbol of the centre of mass (default ``"c"``; ``"$c_2$"`` reads c₂).
     desc : str
@@ -927,7 +969,7 @@ def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: 
     """
     c = _xy(xy, "xy")
     r = _positive(radius, "radius")
-    _pic(pic).path(f"{id}:disc", _circle(c, r), role="body", symbol=symbol, desc=desc, closed=True,
+    as_picture(pic).path(f"{id}:disc", _circle(c, r), role="body", symbol=symbol, desc=desc, closed=True,
                    fill="white", color="black", width=0.6 * PX_PER_PT, z=z)
     parts = []
     for k in (0, 2):
@@ -941,6 +983,7 @@ def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: 
 _com, _ground = com, ground      # for the functions with keywords of these names
 
 
+@documented
 def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, labels: bool = True,
           ground: bool = True, pin_radius: float = 0.05, show_com: bool = True, alpha: float = 0.35,
           names=None, contacts: bool = True) -> dict:
@@ -958,12 +1001,11 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
 
     Parameters
     ----------
-    pic : Picture
+    {pic}
     model : planargeo.mechanics.model.Model
     data : planargeo.mechanics.model.Data
         Its kinematics at the state to draw (poses, centres of mass, joint origins).
-    prefix : str
-        Put before every id (several models in one picture).
+    {prefix}
     width : float
         Width of the default rounded links.
     labels : bool
@@ -987,6 +1029,11 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
         Elements under ``"bodies"``, ``"joints"``, ``"com"``, ``"contacts"``, and the
         bodies' world shapes (shapely) under ``"shapes"``.
 
+    Raises
+    ------
+    InputError
+        ``names`` without one label per body.
+
     Examples
     --------
     >>> from planargeo.gallery.figures import chain
@@ -998,7 +1045,7 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
     >>> [round(v, 6) for v in out["shapes"][1].centroid.coords[0]]      # link 2: (0, 1) to (1, 1)
     [0.5, 1.0]
     """
-    _pic(pic)
+    as_picture(pic)
     pose = np.asarray(data.pose, float)
     cm = np.asarray(data.com, float)
     origin = np.asarray(data.origin, float)
@@ -1101,6 +1148,7 @@ def slider_guide(contact, pose, body_shape=None, *, clearance: float = 0.04, mar
     return p0, e, n, half + clearance, (lo - m, hi + m)
 
 
+@documented
 def contact(pic: Picture, id: str, contact, pose, *, body_shape=None, size: float = 0.08,
             clearance: float = 0.04, z: int = 7) -> list:
     """One contact of a model (thesis 9.3, 9.49) at the poses ``pose`` (N, 3).
@@ -1114,8 +1162,7 @@ def contact(pic: Picture, id: str, contact, pose, *, body_shape=None, size: floa
 
     Parameters
     ----------
-    pic : Picture
-    id : str
+    {pic id}
     contact : planargeo.mechanics.contacts.Contact
     pose : array_like (N, 3)
         The bodies' poses.
@@ -1125,8 +1172,7 @@ def contact(pic: Picture, id: str, contact, pose, *, body_shape=None, size: floa
         Size of the contact's mark (data units).
     clearance : float
         Gap between body a and a slider's walls.
-    z : int
-        Drawing order of the mark.
+    {z}
 
     Returns
     -------
@@ -1145,7 +1191,7 @@ def contact(pic: Picture, id: str, contact, pose, *, body_shape=None, size: floa
     """
     from planargeo.mechanics.contacts import world_point
 
-    _pic(pic)
+    as_picture(pic)
     size = _positive(size, "size")
     pose = np.asarray(pose, float)
     pa = np.asarray(world_point(pose, contact.a, contact.point_a), float)
@@ -1330,6 +1376,7 @@ def split_arrows(s, R, A, f, *, scale: float = 1.0, anchor, avoid=None, clearanc
     return arrows, (Q, mu, active, react)
 
 
+@documented
 def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: float = 1.0, anchor=None,
                 gap: float = 5.0, avoid=None, clearance: float = 0.1):
     """A joint force ``f`` split into its active part ``T Q`` and its reaction ``R μ`` (6.38).
@@ -1343,7 +1390,7 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
 
     Parameters
     ----------
-    pic : Picture
+    {pic}
     id : str
         Stem of the three elements' ids.
     s, R, A, f
@@ -1383,7 +1430,7 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
     """
     from planargeo.draw.picture import plain_text
 
-    _pic(pic)
+    as_picture(pic)
     if anchor is None:
         x0, x1, y0, y1 = pic.box
         anchor = ((x0 + x1) / 2, (y0 + y1) / 2)

@@ -44,6 +44,7 @@ from planargeo.draw.picture import Picture, plain_text
 from planargeo.draw.pictures.common import label_toward
 from planargeo.draw.pictures.kit import force as _force_arrow
 from planargeo.draw.pictures._words import num, pair, where
+from planargeo.draw.sketch import as_picture, documented
 from planargeo.errors import InputError
 from planargeo.mechanics.subspaces import Decomposition
 
@@ -154,11 +155,6 @@ def _centre(pic: Picture) -> np.ndarray:
     return np.array([(x0 + x1) / 2, (y0 + y1) / 2])
 
 
-def _check_picture(pic) -> None:
-    if not isinstance(pic, Picture):
-        raise InputError(f"pic must be a Picture, got {type(pic).__name__}")
-
-
 def _parts_arg(parts) -> tuple[int, ...]:
     try:
         show = tuple(int(p) for p in parts)
@@ -170,6 +166,7 @@ def _parts_arg(parts) -> tuple[int, ...]:
 
 
 # --------------------------------------------------------------------------- decomposition
+@documented
 def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, anchors=None,
                   sides=None, aims=None, prefix: str = "") -> dict:
     """A joint's spaces completed by an inertia (thesis 6.2–6.3, 6.36–6.48, Figs 6.1, 6.2).
@@ -185,8 +182,7 @@ def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, an
 
     Parameters
     ----------
-    pic : Picture
-        Where to draw.
+    {pic}
     s, R : array_like (3, k), (3, 3-k)
         Motion and reaction spaces of the joint (``sᵀR = 0``).
     A : array_like (3, 3)
@@ -203,8 +199,7 @@ def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, an
     aims : dict, optional
         Per key: the pixel offset ``(dx, dy)`` (y up) at which the placer tries the label
         first (it moves a label that would overlap another).
-    prefix : str
-        Prefix of the element ids (ids are ``prefix + key``).
+    {prefix}
 
     Returns
     -------
@@ -237,7 +232,7 @@ def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, an
     >>> out["T"]["desc"]
     'axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.36, 6.39): through (1.25, 0) m, along (0, 1)'
     """
-    _check_picture(pic)
+    as_picture(pic)
     if reactive not in ("U", "inverse"):
         raise InputError(f"reactive must be 'U' or 'inverse', got {reactive!r}")
     dec = Decomposition(A, s, R)
@@ -396,6 +391,7 @@ def _split(pic, vals, show, names, descs, *, aims, anchors, scale, arrow_length,
     return out
 
 
+@documented
 def twist_split(pic: Picture, s, R, A, a, *, parts=(1, 2), names=None, aims=None, anchors=None,
                 scale=1.0, arrow_length=None, show_T: bool = True, prefix: str = "") -> dict:
     """An acceleration split by a joint, and the forces of its parts (thesis 6.44, 6.75–6.76, Fig. 6.3).
@@ -408,8 +404,7 @@ def twist_split(pic: Picture, s, R, A, a, *, parts=(1, 2), names=None, aims=None
 
     Parameters
     ----------
-    pic : Picture
-        Where to draw.
+    {pic}
     s, R, A : array_like
         As in :func:`decomposition`.
     a : array_like (3,)
@@ -428,8 +423,7 @@ def twist_split(pic: Picture, s, R, A, a, *, parts=(1, 2), names=None, aims=None
         units whatever the magnitude.  ``scale=None`` and no ``arrow_length``: no arrow.
     show_T : bool
         Draw the axis ``T`` (a construction line).
-    prefix : str
-        Prefix of the element ids.
+    {prefix}
 
     Returns
     -------
@@ -462,7 +456,7 @@ def twist_split(pic: Picture, s, R, A, a, *, parts=(1, 2), names=None, aims=None
     ...
     planargeo.errors.InputError: parts must be a non-empty selection of 1 and 2, got (3,)
     """
-    _check_picture(pic)
+    as_picture(pic)
     show = _parts_arg(parts)
     vals = twist_parts(s, R, A, a)
     nm = {"a1": r"$a_1 = s\psi$", "a2": r"$a_2 = U\gamma$", "f1": "$f_1 = Aa_1$",
@@ -475,6 +469,7 @@ def twist_split(pic: Picture, s, R, A, a, *, parts=(1, 2), names=None, aims=None
                   arrow_length=arrow_length, show_T=show_T, prefix=prefix)
 
 
+@documented
 def wrench_split(pic: Picture, s, R, A, f, *, parts=(1, 2), names=None, aims=None, anchors=None,
                  scale=1.0, arrow_length=None, show_T: bool = True, prefix: str = "") -> dict:
     """A force split by a joint, and the accelerations of its parts (thesis 6.38, 6.77–6.81, Fig. 6.4).
@@ -486,8 +481,7 @@ def wrench_split(pic: Picture, s, R, A, f, *, parts=(1, 2), names=None, aims=Non
 
     Parameters
     ----------
-    pic : Picture
-        Where to draw.
+    {pic}
     s, R, A, parts, names, aims, anchors, scale, arrow_length, show_T, prefix
         As :func:`twist_split`.
     f : array_like (3,)
@@ -521,7 +515,7 @@ def wrench_split(pic: Picture, s, R, A, f, *, parts=(1, 2), names=None, aims=Non
     >>> sorted(k for k in out if k != "values")
     ['T', 'a1', 'f1']
     """
-    _check_picture(pic)
+    as_picture(pic)
     show = _parts_arg(parts)
     vals = wrench_parts(s, R, A, f)
     nm = {"a1": "$a_1 = A^{-1}f_1$", "a2": "$a_2 = A^{-1}f_2$", "f1": "$f_1 = TQ$",
@@ -535,6 +529,7 @@ def wrench_split(pic: Picture, s, R, A, f, *, parts=(1, 2), names=None, aims=Non
 
 
 # --------------------------------------------------------------------------- projective step
+@documented
 def projective_step(pic: Picture, s, R, A, a_prev, a, kappa, *,
                     names=("$T_i$", "$s_i$", "$a_{i-1}$", "$a_i$"), aims=None, T_anchor=None,
                     T_side: float = 1.0, prefix: str = "") -> dict:
@@ -547,8 +542,7 @@ def projective_step(pic: Picture, s, R, A, a_prev, a, kappa, *,
 
     Parameters
     ----------
-    pic : Picture
-        Where to draw.
+    {pic}
     s, R : array_like (3, k), (3, 3-k)
         Motion and reaction spaces of joint ``i``.
     A : array_like (3, 3)
@@ -566,8 +560,7 @@ def projective_step(pic: Picture, s, R, A, a_prev, a, kappa, *,
         Near which point of ``Tᵢ`` its label sits.
     T_side : float
         +1: ``Tᵢ``'s label above the line, -1: below.
-    prefix : str
-        Prefix of the element ids.
+    {prefix}
 
     Returns
     -------
@@ -594,7 +587,7 @@ def projective_step(pic: Picture, s, R, A, a_prev, a, kappa, *,
     >>> out["values"]["qdd"].round(12).tolist()
     [2.0]
     """
-    _check_picture(pic)
+    as_picture(pic)
     names = tuple(names)
     if len(names) != 4:
         raise InputError(f"names must be 4 labels (Tᵢ, sᵢ, aᵢ₋₁, aᵢ), got {len(names)}")

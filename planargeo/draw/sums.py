@@ -44,7 +44,7 @@ from planargeo.draw.picture import PX_PER_PT, Picture, plain_text
 from planargeo.draw.pictures._words import force as force_words, num, pair
 from planargeo.draw.pictures.common import label_toward
 from planargeo.draw.pictures.kit import aim_label, force as force_arrow
-from planargeo.draw.sketch import dimension
+from planargeo.draw.sketch import as_picture, dimension, documented
 from planargeo.draw.style import COLORS, LINEWIDTHS, STYLES, SUM
 from planargeo.errors import InputError
 from planargeo.geometry.projective import is_at_infinity, is_ideal
@@ -61,12 +61,6 @@ _SUM_LINE_PX = SUM["line"]["linewidth"] * PX_PER_PT
 
 
 # --------------------------------------------------------------------------- checks and words
-def _picture(pic, name: str) -> Picture:
-    if not isinstance(pic, Picture):
-        raise InputError(f"{name}: pic must be a Picture (planargeo.draw.picture), got {type(pic).__name__}")
-    return pic
-
-
 def _texts(x, n: int, name: str) -> tuple:
     """``x`` as a tuple of ``n`` entries (a label or offset per element), checked."""
     try:
@@ -209,6 +203,7 @@ def _notch(pic: Picture, el: dict, arrow: dict, tip) -> None:
 
 
 # --------------------------------------------------------------------------- twist / wrench sums
+@documented
 def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), lever: bool = True,
               glyph_scale: float = 6.0, role: str = "twist", toward=(None, None, None),
               prefix: str = "") -> dict:
@@ -223,8 +218,7 @@ def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), le
 
     Parameters
     ----------
-    pic : Picture
-        Where to draw.
+    {pic}
     v1, v2 : array_like (3,)
         The twists ``[vx, vy, ω]`` (points).
     labels : (str, str, str)
@@ -238,8 +232,7 @@ def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), le
         Style role of the three poles.
     toward : (direction, direction, direction)
         Pixel direction (x right, y up) in which each label is put first (None: automatic).
-    prefix : str
-        Put before every id (several sums in one picture).
+    {prefix}
 
     Returns
     -------
@@ -265,7 +258,7 @@ def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), le
     ...
     planargeo.errors.ShapeError: v1 must have shape (..., 3), got shape (2,)
     """
-    pic = _picture(pic, "twist_sum")
+    pic = as_picture(pic)
     v1, v2 = as_vec3(v1, "v1"), as_vec3(v2, "v2")
     labels = _texts(labels, 3, "labels")
     toward = list(_texts(toward, 3, "toward"))
@@ -301,6 +294,7 @@ def _label_sides(pic: Picture, p, q):
     return [tuple(n), tuple(n), tuple(-n)]
 
 
+@documented
 def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), scale=1.0,
                anchors=(None, None, None), parallelogram: bool = True, role: str = "wrench",
                toward=(None, None, None), prefix: str = "") -> dict:
@@ -316,8 +310,7 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
 
     Parameters
     ----------
-    pic : Picture
-        Where to draw.
+    {pic}
     f1, f2 : array_like (3,)
         The wrenches ``[fx, fy, τ]`` (lines).
     labels : (str, str, str)
@@ -334,8 +327,7 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
         Style role of the three lines.
     toward : (direction, direction, direction)
         Pixel direction (x right, y up) in which each label is put first (None: beside the arrow).
-    prefix : str
-        Put before every id.
+    {prefix}
 
     Returns
     -------
@@ -359,7 +351,7 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
     >>> [part["xy"].tolist() for part in out["parallelogram"]["parts"]]   # f1's tip to f3's, f2's to it
     [[[2.5, 1.0], [2.5, 1.5]], [[2.0, 1.5], [2.5, 1.5]]]
     """
-    pic = _picture(pic, "wrench_sum")
+    pic = as_picture(pic)
     f1, f2 = as_vec3(f1, "f1"), as_vec3(f2, "f2")
     if scale is not None:
         scale = as_scalar(scale, "scale")
@@ -409,6 +401,7 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
 
 
 # --------------------------------------------------------------------------- chains, one body
+@documented
 def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot{q}_i$", "$v_i$"),
                   toward=(None, None, None), dims: bool = True, dim_offset: float = 0.25,
                   prefix: str = "") -> dict:
@@ -422,8 +415,7 @@ def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot{q}_i$",
 
     Parameters
     ----------
-    pic : Picture
-        Where to draw.
+    {pic}
     v_prev : array_like (3,)
         The previous body's twist ``vᵢ₋₁``.
     s : array_like (3,)
@@ -436,8 +428,7 @@ def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot{q}_i$",
         Pixel directions in which the labels are put first (None: automatic).
     dims, dim_offset
         Dimension the distance ``k`` (offset to the left of the lever line, data units).
-    prefix : str
-        Put before every id.
+    {prefix}
 
     Returns
     -------
@@ -462,7 +453,7 @@ def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot{q}_i$",
     >>> out["k"]["symbol"]
     'k'
     """
-    pic = _picture(pic, "velocity_step")
+    pic = as_picture(pic)
     v_prev = as_vec3(v_prev, "v_prev")
     u = as_vec3(s, "s") * as_scalar(qd, "qd")
     art = twist_sum(pic, v_prev, u, labels=labels, toward=toward, prefix=prefix)
@@ -480,6 +471,7 @@ def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot{q}_i$",
     return out
 
 
+@documented
 def acceleration_step(pic, a_prev, v_prev, s, qd, qdd, *,
                       labels=("$a_{i-1}$", r"$s_i\ddot{q}_i$", r"$v_i \times s_i\dot{q}_i$",
                               r"$s_i\ddot{q}_i + v_i \times s_i\dot{q}_i$", "$a_i$"),
@@ -495,8 +487,7 @@ def acceleration_step(pic, a_prev, v_prev, s, qd, qdd, *,
 
     Parameters
     ----------
-    pic : Picture
-        Where to draw.
+    {pic}
     a_prev, v_prev : array_like (3,)
         The previous body's acceleration and velocity twists.
     s : array_like (3,)
@@ -507,8 +498,7 @@ def acceleration_step(pic, a_prev, v_prev, s, qd, qdd, *,
         Labels of ``aᵢ₋₁``, ``sᵢq̈ᵢ``, ``κᵢ``, ``sᵢq̈ᵢ + κᵢ`` and ``aᵢ``.
     toward : tuple of 5 directions
         Pixel directions in which the labels are put first (None: the placer's choice).
-    prefix : str
-        Put before every id.
+    {prefix}
 
     Returns
     -------
@@ -534,7 +524,7 @@ def acceleration_step(pic, a_prev, v_prev, s, qd, qdd, *,
     >>> out["joint_total"]["parts"][0]["x"], out["joint_total"]["parts"][0]["y"]   # 2 from the joint (4.54)
     (2.0, 2.0)
     """
-    pic = _picture(pic, "acceleration_step")
+    pic = as_picture(pic)
     a_prev, v_prev, s = as_vec3(a_prev, "a_prev"), as_vec3(v_prev, "v_prev"), as_vec3(s, "s")
     qd, qdd = as_scalar(qd, "qd"), as_scalar(qdd, "qdd")
     labels = _texts(labels, 5, "labels")
@@ -568,6 +558,7 @@ def acceleration_step(pic, a_prev, v_prev, s, qd, qdd, *,
     return out
 
 
+@documented
 def newton_euler(pic, I, a, v, *, scale=None,
                  labels=("$v$", "$a$", "$Ia$", "$p$", "fⁿᵉᵗ = Ia + p"),
                  positions=(-1.0, -0.9, 1.0), toward=(None,) * 5, inertia: bool = True,
@@ -582,8 +573,7 @@ def newton_euler(pic, I, a, v, *, scale=None,
 
     Parameters
     ----------
-    pic : Picture
-        Where to draw.
+    {pic}
     I : array_like (3, 3)
         The body's inertia.
     a, v : array_like (3,)
@@ -598,8 +588,7 @@ def newton_euler(pic, I, a, v, *, scale=None,
         Pixel directions in which the labels are put first (None: the placer's choice).
     inertia : bool
         Draw the inertia's circle of gyration.
-    prefix : str
-        Put before every id.
+    {prefix}
 
     Returns
     -------
@@ -626,7 +615,7 @@ def newton_euler(pic, I, a, v, *, scale=None,
     >>> out["f_net"]["symbol"]
     'fⁿᵉᵗ = Ia + p'
     """
-    pic = _picture(pic, "newton_euler")
+    pic = as_picture(pic)
     I, a, v = as_mat3(I, "I"), as_vec3(a, "a"), as_vec3(v, "v")
     if scale is not None:
         scale = as_scalar(scale, "scale")
