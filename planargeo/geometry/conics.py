@@ -29,7 +29,7 @@ import numpy as np
 from planargeo._validate import (as_array, as_mat3, as_vec3, as_xy, batch_shape, check_overflow, check_positive,
                                  check_symmetric, check_tolerance, overflow_checked, rescaled)
 from planargeo.errors import DegenerateGeometryError, InputError, ShapeError
-from planargeo.geometry.projective import T_STD, _cross, _first_index, _fit, _refuse_zero
+from planargeo.geometry.projective import T_STD, _cross, _entries, _first_index, _fit, _refuse_zero
 
 __all__ = [
     "polar", "pole", "conic_residual", "is_on_conic", "ConicType", "classify", "centre",
@@ -43,6 +43,27 @@ __all__ = [
 ]
 
 _E2 = np.array([0.0, 0.0, 1.0])
+
+#: Docstring entries many functions here share, each said once (a line ``{C p}`` in a docstring: those
+#: entries; :class:`planargeo.geometry.elements.Conic` uses them too).
+_ENTRIES = {
+    "C": "C : array_like, shape (..., 3, 3)\n    Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).",
+    "p": "p : array_like, shape (..., 3)\n    Homogeneous points.",
+    "l": "l : array_like, shape (..., 3)\n    Homogeneous lines.",
+    "rtol_base": "rtol : float, optional\n    The base counts as singular when its condition number exceeds ``1/rtol``.",
+    "special_base": "Q1, Q2, Q3 : array_like, shape (..., 3)\n    A special base of ``C`` (from :func:`special_base`).",
+    "not_special": "Raises\n------\nDegenerateGeometryError\n"
+                   "    If a denominator is zero (the points are not a special base of ``C``).",
+    "centre": "centre : array_like, shape (2,)\n    Centre (m).",
+    "ellipse_axes": "axes : array_like, shape (2,)\n    Semi-axes ``(a, b)`` (m).\n"
+                    "angle : float, optional\n    Angle of the first semi-axis from +x (rad).",
+    "hyperbola_axes": "axes : array_like, shape (2,)\n    Transverse and conjugate semi-axes ``(a, b)`` (m).\n"
+                      "angle : float, optional\n    Angle of the transverse axis from +x (rad).",
+    "parabola": "vertex : array_like, shape (2,)\n    Vertex (m).\n"
+                "focal_length : float\n    Distance ``f`` from the vertex to the focus (m).\n"
+                "angle : float, optional\n    Rotation of the parabola's frame from the axes (rad).",
+}
+_shared = _entries(_ENTRIES)
 
 
 # --------------------------------------------------------------------------- helpers
@@ -117,6 +138,7 @@ def _nline(l):
 
 
 # --------------------------------------------------------------------------- polarity
+@_shared
 def polar(C, p) -> np.ndarray:
     """Polar line ``C p`` of point ``p`` with respect to conic ``C`` (thesis 5.36).
 
@@ -126,10 +148,7 @@ def polar(C, p) -> np.ndarray:
 
     Parameters
     ----------
-    C : array_like, shape (..., 3, 3), symmetric
-        Symmetric conic matrix.
-    p : array_like, shape (..., 3)
-        Homogeneous points.
+    {C p}
 
     Returns
     -------
@@ -148,6 +167,7 @@ def polar(C, p) -> np.ndarray:
     return rescaled(_mv, (C, p), (1, 1), (2, 1), 1, "polar(C, p)", "C or p")
 
 
+@_shared
 def pole(C, l, rtol: float = 1e-13) -> np.ndarray:
     """Pole ``C⁻¹ l`` of line ``l`` with respect to conic ``C`` (thesis 5.37).
 
@@ -157,8 +177,7 @@ def pole(C, l, rtol: float = 1e-13) -> np.ndarray:
 
     Parameters
     ----------
-    C : array_like, shape (..., 3, 3)
-        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    {C}
     l : array_like, shape (..., 3)
         Homogeneous line (for an inertia: a wrench).
     rtol : float, optional
@@ -192,15 +211,13 @@ def pole(C, l, rtol: float = 1e-13) -> np.ndarray:
     return rescaled(solve, (C, l), (-1, 1), (2, 1), 1, "pole(C, l)", "l, or C⁻¹,")
 
 
+@_shared
 def conic_residual(C, p) -> np.ndarray:
     """The quadratic form ``p @ C @ p`` (thesis 5.38); zero on the conic.
 
     Parameters
     ----------
-    C : array_like, shape (..., 3, 3)
-        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
-    p : array_like, shape (..., 3)
-        Homogeneous points.
+    {C p}
 
     Returns
     -------
@@ -218,6 +235,7 @@ def conic_residual(C, p) -> np.ndarray:
     return rescaled(lambda C, p: _quad(p, C, p), (C, p), (1, 2), (2, 1), 0, "conic_residual(C, p)", "C or p")
 
 
+@_shared
 def is_on_conic(C, p, rtol: float = 1e-9) -> np.ndarray:
     """True where ``|p C p| <= rtol |C| |p|²`` (relative form of thesis 5.38).
 
@@ -226,10 +244,7 @@ def is_on_conic(C, p, rtol: float = 1e-9) -> np.ndarray:
 
     Parameters
     ----------
-    C : array_like, shape (..., 3, 3)
-        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
-    p : array_like, shape (..., 3)
-        Homogeneous points.
+    {C p}
     rtol : float, optional
         Relative tolerance of the test.
 
@@ -315,6 +330,7 @@ def _classify1(S: np.ndarray, rtol: float) -> ConicType:
     return ConicType("degenerate", "double line", False, 1)
 
 
+@_shared
 def classify(C, rtol: float = 1e-10):
     """Classify a conic (thesis 5.2.2): real / imaginary / degenerate, and its kind.
 
@@ -327,8 +343,7 @@ def classify(C, rtol: float = 1e-10):
 
     Parameters
     ----------
-    C : array_like, shape (3, 3) or (..., 3, 3)
-        Symmetric conic matrix.
+    {C}
     rtol : float
         Relative tolerance below which an eigenvalue counts as zero.
 
@@ -357,6 +372,7 @@ def classify(C, rtol: float = 1e-10):
     return out.reshape(S.shape[:-2])
 
 
+@_shared
 def centre(C) -> np.ndarray:
     """Centre of a conic: the pole of the line at infinity (thesis 5.2.2).
 
@@ -370,8 +386,7 @@ def centre(C) -> np.ndarray:
 
     Parameters
     ----------
-    C : array_like, shape (..., 3, 3)
-        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    {C}
 
     Returns
     -------
@@ -430,6 +445,7 @@ def _intersections(C, l, rtol):
     return _unit(X), real
 
 
+@_shared
 def line_conic_intersections(C, l, rtol: float = 1e-9):
     """The two points where line ``l`` meets conic ``C`` (thesis 5.38 on a line).
 
@@ -441,10 +457,7 @@ def line_conic_intersections(C, l, rtol: float = 1e-9):
 
     Parameters
     ----------
-    C : array_like, shape (..., 3, 3)
-        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
-    l : array_like, shape (..., 3)
-        Homogeneous line.
+    {C l}
     rtol : float, optional
         Relative tolerance below which a negative discriminant counts as zero.
 
@@ -469,6 +482,7 @@ def line_conic_intersections(C, l, rtol: float = 1e-9):
     return check_overflow(_npoint(X), "line_conic_intersections(C, l)", "the points'", ok=~real[..., None, None]), real
 
 
+@_shared
 def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
     """The two tangents from a point to a conic, and their contact points (thesis 5.2.2).
 
@@ -478,8 +492,7 @@ def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
 
     Parameters
     ----------
-    C : array_like, shape (..., 3, 3)
-        Symmetric conic matrix.
+    {C}
     p : array_like, shape (..., 3)
         Homogeneous point.
     on_interior : {"raise", "nan"}
@@ -619,6 +632,7 @@ class InteriorConstruction:
     polar: np.ndarray
 
 
+@_shared
 def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 1e-9) -> ExteriorConstruction:
     """Geometric construction of the polar of an exterior point (thesis 5.2.2, Fig. 5.2).
 
@@ -629,8 +643,7 @@ def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 
 
     Parameters
     ----------
-    C : array_like, shape (..., 3, 3)
-        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    {C}
     p : array_like, shape (..., 3)
         Homogeneous point, exterior to (or on) the conic.
     on_interior : {"raise", "nan"}, optional
@@ -665,6 +678,7 @@ def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 
                     on_interior == "nan")
 
 
+@_shared
 def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: float = 1e-9) -> InteriorConstruction:
     """Geometric construction of the polar of an interior point (thesis 5.2.2, Fig. 5.3).
 
@@ -676,8 +690,7 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
 
     Parameters
     ----------
-    C : array_like, shape (..., 3, 3)
-        Symmetric conic matrix.
+    {C}
     p : array_like, shape (..., 3)
         Homogeneous point, interior to the conic (or any point with secants).
     lines : array_like, shape (..., 2, 3), optional
@@ -769,6 +782,7 @@ def _checked(construction, what: str, nan_asked: bool):
 
 
 # --------------------------------------------------------------------------- duality
+@_shared
 def correlation(C, Q, L, rtol: float = 1e-13):
     """The correlation of Theorem 12: ``(P, M) = (pole(C, L), polar(C, Q))``.
 
@@ -779,8 +793,7 @@ def correlation(C, Q, L, rtol: float = 1e-13):
 
     Parameters
     ----------
-    C : array_like, shape (..., 3, 3)
-        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    {C}
     Q : array_like, shape (..., 3)
         A point.
     L : array_like, shape (..., 3)
@@ -803,9 +816,14 @@ def correlation(C, Q, L, rtol: float = 1e-13):
     return pole(C, L, rtol=rtol), polar(C, Q)
 
 
-def _base(Q1, Q2, Q3) -> np.ndarray:
+def _scaled_base(Q1, Q2, Q3) -> tuple[list, np.ndarray]:
+    """The three base points, validated and scaled by :func:`_pow2`, and their exponents ``(..., 3)``."""
+    (Q1, e1), (Q2, e2), (Q3, e3) = (_pow2(as_vec3(x, n)) for x, n in ((Q1, "Q1"), (Q2, "Q2"), (Q3, "Q3")))
+    return [Q1, Q2, Q3], np.stack(np.broadcast_arrays(e1, e2, e3), axis=-1)
+
+
+def _base(Q) -> np.ndarray:
     """The matrix ``[Q1, Q2, Q3]`` (columns) of three points, broadcast over their batches."""
-    Q = [as_vec3(Q1, "Q1"), as_vec3(Q2, "Q2"), as_vec3(Q3, "Q3")]
     batch_shape(Q1=(Q[0], 1), Q2=(Q[1], 1), Q3=(Q[2], 1))
     return np.stack(np.broadcast_arrays(*Q), axis=-1)
 
@@ -854,6 +872,7 @@ def _solve_basis(Mcols, v, name: str, rtol: float):
     return u
 
 
+@_shared
 def decompose_point(P, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     """Components ``u`` of ``P = u1 Q1 + u2 Q2 + u3 Q3`` (thesis 5.42).
 
@@ -863,8 +882,7 @@ def decompose_point(P, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
         The point to decompose.
     Q1, Q2, Q3 : array_like, shape (..., 3)
         Three non-collinear base points.
-    rtol : float, optional
-        The base counts as singular when its condition number exceeds ``1/rtol``.
+    {rtol_base}
 
     Returns
     -------
@@ -882,14 +900,12 @@ def decompose_point(P, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     array([-2., -1.,  3.])
     """
     P, eP = _pow2(as_vec3(P, "P"))
-    Q1, Q2, Q3 = (as_vec3(x, n) for x, n in ((Q1, "Q1"), (Q2, "Q2"), (Q3, "Q3")))
-    (Q1, e1), (Q2, e2), (Q3, e3) = _pow2(Q1), _pow2(Q2), _pow2(Q3)
-    Q = _base(Q1, Q2, Q3)
-    u = _solve_basis(Q, P, "[Q1, Q2, Q3]", rtol)          # u_i = 2^(eP - ei) times that of the scaled ones
-    return _back(u, np.stack(np.broadcast_arrays(eP - e1, eP - e2, eP - e3), axis=-1), "decompose_point",
-                 "P or the base too large or too small")
+    Q, e = _scaled_base(Q1, Q2, Q3)
+    u = _solve_basis(_base(Q), P, "[Q1, Q2, Q3]", rtol)   # u_i = 2^(eP - ei) times that of the scaled ones
+    return _back(u, eP[..., None] - e, "decompose_point", "P or the base too large or too small")
 
 
+@_shared
 def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     """Components ``u`` of ``L = u1 C Q1 + u2 C Q2 + u3 C Q3`` (thesis 5.43).
 
@@ -898,14 +914,12 @@ def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
 
     Parameters
     ----------
-    C : array_like, shape (..., 3, 3)
-        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    {C}
     L : array_like, shape (..., 3)
         The line to decompose.
     Q1, Q2, Q3 : array_like, shape (..., 3)
         Three non-collinear base points; the base lines are their polars ``C Qi``.
-    rtol : float, optional
-        The base counts as singular when its condition number exceeds ``1/rtol``.
+    {rtol_base}
 
     Returns
     -------
@@ -925,19 +939,17 @@ def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     """
     C, eC = _pow2(_conic(C), 2)
     L, eL = _pow2(as_vec3(L, "L"))
-    Q1, Q2, Q3 = (as_vec3(x, n) for x, n in ((Q1, "Q1"), (Q2, "Q2"), (Q3, "Q3")))
-    (Q1, e1), (Q2, e2), (Q3, e3) = _pow2(Q1), _pow2(Q2), _pow2(Q3)
-    Q = _base(Q1, Q2, Q3)
+    Q, e = _scaled_base(Q1, Q2, Q3)
+    Q = _base(Q)
     batch_shape(C=(C, 2), L=(L, 1), Q=(Q, 2))
     with np.errstate(under="ignore"):
         CQ = C @ Q                                        # entries below 1 times entries below 1: no overflow
     u = _solve_basis(CQ, L, "[C Q1, C Q2, C Q3]", rtol)   # u_i = 2^(eL - eC - ei) times the scaled one's
-    d = eL - eC
-    return _back(u, np.stack(np.broadcast_arrays(d - e1, d - e2, d - e3), axis=-1), "decompose_line",
-                 "L, C or the base too large or too small")
+    return _back(u, (eL - eC)[..., None] - e, "decompose_line", "L, C or the base too large or too small")
 
 
 @overflow_checked("C or Q1")
+@_shared
 def special_base(C, Q1, rtol: float = 1e-9):
     """The special base of Fig. 5.4: ``Q1`` exterior, ``Q2, Q3`` its tangent contact points.
 
@@ -946,8 +958,7 @@ def special_base(C, Q1, rtol: float = 1e-9):
 
     Parameters
     ----------
-    C : array_like, shape (..., 3, 3)
-        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    {C}
     Q1 : array_like, shape (..., 3)
         A point exterior to the real conic ``C``.
     rtol : float, optional
@@ -978,6 +989,7 @@ def special_base(C, Q1, rtol: float = 1e-9):
     return Q1b, X[..., 0, :], X[..., 1, :]
 
 
+@_shared
 def decompose_point_special(C, P, Q1, Q2, Q3) -> np.ndarray:
     """Components of ``P`` on the special base of Fig. 5.4 by projections (thesis 5.44-5.45).
 
@@ -987,22 +999,17 @@ def decompose_point_special(C, P, Q1, Q2, Q3) -> np.ndarray:
 
     Parameters
     ----------
-    C : array_like, shape (..., 3, 3)
-        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    {C}
     P : array_like, shape (..., 3)
         The point to decompose.
-    Q1, Q2, Q3 : array_like, shape (..., 3)
-        A special base of ``C`` (from :func:`special_base`).
+    {special_base}
 
     Returns
     -------
     numpy.ndarray, shape (..., 3)
         The components ``(u1, u2, u3)``.
 
-    Raises
-    ------
-    DegenerateGeometryError
-        If a denominator is zero (the points are not a special base of ``C``).
+    {not_special}
 
     Examples
     --------
@@ -1012,18 +1019,16 @@ def decompose_point_special(C, P, Q1, Q2, Q3) -> np.ndarray:
     >>> np.allclose(u[0] * B[0] + u[1] * B[1] + u[2] * B[2], [0.3, 0.1, 1.0])
     True
     """
-    C = _conic(C)
-    P, Q1, Q2, Q3 = (as_vec3(x, n) for x, n in ((P, "P"), (Q1, "Q1"), (Q2, "Q2"), (Q3, "Q3")))
-    batch_shape(C=(C, 2), P=(P, 1), Q1=(Q1, 1), Q2=(Q2, 1), Q3=(Q3, 1))
+    C, P = _conic(C), as_vec3(P, "P")
+    Q, e = _scaled_base(Q1, Q2, Q3)
+    batch_shape(C=(C, 2), P=(P, 1), Q1=(Q[0], 1), Q2=(Q[1], 1), Q3=(Q[2], 1))
     (C, _), (P, eP) = _pow2(C, 2), _pow2(P)               # u is of degree 0 in C, 1 in P, -1 in its own Qi
-    (Q1, e1), (Q2, e2), (Q3, e3) = _pow2(Q1), _pow2(Q2), _pow2(Q3)
     with np.errstate(under="ignore"):
         CP = _mv(C, P)
-        n = (np.einsum("...i,...i->...", Q1, CP), np.einsum("...i,...i->...", Q3, CP),
-             np.einsum("...i,...i->...", Q2, CP))
-    return _special(*n, C, Q1, Q2, Q3, "decompose_point_special", (eP - e1, eP - e2, eP - e3))
+    return _special(CP, C, Q, "decompose_point_special", eP[..., None] - e)
 
 
+@_shared
 def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
     """Components of ``L`` on the lines ``Mi = C Qi`` of the special base (thesis 5.46).
 
@@ -1033,22 +1038,17 @@ def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
 
     Parameters
     ----------
-    C : array_like, shape (..., 3, 3)
-        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    {C}
     L : array_like, shape (..., 3)
         The line to decompose.
-    Q1, Q2, Q3 : array_like, shape (..., 3)
-        A special base of ``C`` (from :func:`special_base`).
+    {special_base}
 
     Returns
     -------
     numpy.ndarray, shape (..., 3)
         The components ``(u1, u2, u3)`` on ``C Q1, C Q2, C Q3``.
 
-    Raises
-    ------
-    DegenerateGeometryError
-        If a denominator is zero (the points are not a special base of ``C``).
+    {not_special}
 
     Examples
     --------
@@ -1058,21 +1058,19 @@ def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
     >>> np.allclose(decompose_line_special(C, C @ P, *B), decompose_point_special(C, P, *B))
     True
     """
-    C = _conic(C)
-    L, Q1, Q2, Q3 = (as_vec3(x, n) for x, n in ((L, "L"), (Q1, "Q1"), (Q2, "Q2"), (Q3, "Q3")))
-    batch_shape(C=(C, 2), L=(L, 1), Q1=(Q1, 1), Q2=(Q2, 1), Q3=(Q3, 1))
+    C, L = _conic(C), as_vec3(L, "L")
+    Q, e = _scaled_base(Q1, Q2, Q3)
+    batch_shape(C=(C, 2), L=(L, 1), Q1=(Q[0], 1), Q2=(Q[1], 1), Q3=(Q[2], 1))
     (C, eC), (L, eL) = _pow2(C, 2), _pow2(L)              # u is of degree -1 in C, 1 in L, -1 in its own Qi
-    (Q1, e1), (Q2, e2), (Q3, e3) = _pow2(Q1), _pow2(Q2), _pow2(Q3)
-    dot = lambda a, b: np.einsum("...i,...i->...", a, b)  # noqa: E731
+    return _special(L, C, Q, "decompose_line_special", (eL - eC)[..., None] - e)
+
+
+def _special(x, C, Q, what: str, e) -> np.ndarray:
+    """``[Q1·x / Q1CQ1, Q3·x / Q3CQ2, Q2·x / Q2CQ3] · 2^e`` (5.44-5.46: ``x`` is ``C P`` or ``L``; ``e``: the
+    exponents of the scaled arguments, :func:`_pow2`), refusing a base that is not special."""
+    Q1, Q2, Q3 = Q
     with np.errstate(under="ignore"):
-        n = dot(Q1, L), dot(Q3, L), dot(Q2, L)
-    d = eL - eC
-    return _special(*n, C, Q1, Q2, Q3, "decompose_line_special", (d - e1, d - e2, d - e3))
-
-
-def _special(n1, n2, n3, C, Q1, Q2, Q3, what: str, e=(0, 0, 0)) -> np.ndarray:
-    """``[n1 / Q1CQ1, n2 / Q3CQ2, n3 / Q2CQ3] · 2^e`` (5.44-5.46; ``e``: the exponents of the scaled
-    arguments, :func:`_pow2`), refusing a base that is not special."""
+        n1, n2, n3 = (np.einsum("...i,...i->...", q, x) for q in (Q1, Q3, Q2))
     with np.errstate(all="ignore"):
         den = [_quad(Q1, C, Q1), _quad(Q3, C, Q2), _quad(Q2, C, Q3)]
         zero = [np.any(d == 0) for d in den]
@@ -1081,10 +1079,11 @@ def _special(n1, n2, n3, C, Q1, Q2, Q3, what: str, e=(0, 0, 0)) -> np.ndarray:
             raise DegenerateGeometryError(f"{what}: {name} = 0, so Q1, Q2, Q3 are not a special base of C "
                                           "(see special_base)")
         u = np.stack(np.broadcast_arrays(n1 / den[0], n2 / den[1], n3 / den[2]), axis=-1)
-    return _back(u, np.stack(np.broadcast_arrays(*e), axis=-1), what, "the components")
+    return _back(u, e, what, "the components")
 
 
 # --------------------------------------------------------------------------- drawing support
+@_shared
 def drawable_conic(C) -> np.ndarray:
     """A real conic that shows an imaginary one (thesis 10.2.3).
 
@@ -1106,8 +1105,7 @@ def drawable_conic(C) -> np.ndarray:
 
     Parameters
     ----------
-    C : array_like, shape (..., 3, 3)
-        Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).
+    {C}
 
     Returns
     -------
@@ -1311,6 +1309,13 @@ def _rot(angle):
     return np.stack([np.stack([c, -s], -1), np.stack([s, c], -1)], -2)
 
 
+def _turned(kind: str, centre, axes, angle) -> np.ndarray:
+    """The ellipse or hyperbola with semi-axes ``axes`` along the frame at ``centre`` turned by ``angle``."""
+    axes = check_positive(as_xy(axes, "axes"), "axes")
+    A = _rot(as_array(angle, "angle")) * axes[..., None, :]
+    return conic_from_affine(kind, A, centre)
+
+
 @overflow_checked("centre or radius")
 def conic_circle(centre, radius, imaginary: bool = False) -> np.ndarray:
     """Circle ``|x - c|² = r²`` (or the imaginary circle ``|x - c|² = -r²``).
@@ -1364,17 +1369,13 @@ def conic_circle(centre, radius, imaginary: bool = False) -> np.ndarray:
 
 
 @overflow_checked("centre or axes")
+@_shared
 def conic_ellipse(centre, axes, angle=0.0) -> np.ndarray:
     """Ellipse with semi-axes ``axes = (a, b)``, the first turned by ``angle`` from +x.
 
     Parameters
     ----------
-    centre : array_like, shape (2,)
-        Centre (m).
-    axes : array_like, shape (2,)
-        Semi-axes ``(a, b)`` (m).
-    angle : float, optional
-        Angle of the first semi-axis from +x (rad).
+    {centre ellipse_axes}
 
     Returns
     -------
@@ -1386,24 +1387,17 @@ def conic_ellipse(centre, axes, angle=0.0) -> np.ndarray:
     >>> str(classify(conic_ellipse([0.0, 0.0], [2.0, 1.0], 0.3)))
     'real ellipse'
     """
-    axes = check_positive(as_xy(axes, "axes"), "axes")
-    angle = as_array(angle, "angle")
-    A = _rot(angle) * axes[..., None, :]
-    return conic_from_affine("ellipse", A, centre)
+    return _turned("ellipse", centre, axes, angle)
 
 
 @overflow_checked("centre or axes")
+@_shared
 def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
     """Hyperbola ``x'²/a² - y'²/b² = 1`` in the frame at ``centre`` turned by ``angle``.
 
     Parameters
     ----------
-    centre : array_like, shape (2,)
-        Centre (m).
-    axes : array_like, shape (2,)
-        Transverse and conjugate semi-axes ``(a, b)`` (m).
-    angle : float, optional
-        Angle of the transverse axis from +x (rad).
+    {centre hyperbola_axes}
 
     Returns
     -------
@@ -1415,24 +1409,17 @@ def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
     >>> str(classify(conic_hyperbola([0.0, 0.0], [1.0, 1.0])))
     'real hyperbola'
     """
-    axes = check_positive(as_xy(axes, "axes"), "axes")
-    angle = as_array(angle, "angle")
-    A = _rot(angle) * axes[..., None, :]
-    return conic_from_affine("hyperbola", A, centre)
+    return _turned("hyperbola", centre, axes, angle)
 
 
 @overflow_checked("vertex or focal_length")
+@_shared
 def conic_parabola(vertex, focal_length, angle=0.0) -> np.ndarray:
     """Parabola ``y' = x'² / (4 f)`` in the frame at ``vertex`` turned by ``angle`` (opens to +y').
 
     Parameters
     ----------
-    vertex : array_like, shape (2,)
-        Vertex (m).
-    focal_length : float
-        Distance ``f`` from the vertex to the focus (m).
-    angle : float, optional
-        Rotation of the parabola's frame from the axes (rad).
+    {parabola}
 
     Returns
     -------

@@ -45,6 +45,8 @@ point and no line, raises :class:`DegenerateGeometryError`.  The NaN and
 from __future__ import annotations
 
 import math
+import re
+import textwrap
 
 import numpy as np
 
@@ -70,6 +72,22 @@ T_STD.setflags(write=False)
 #: The line at infinity ``[0, 0, 1]`` (a pure couple).
 LINE_AT_INFINITY = np.array([0.0, 0.0, 1.0])
 LINE_AT_INFINITY.setflags(write=False)
+
+
+def _entries(table: dict[str, str]):
+    """A decorator writing docstring entries said once: a line ``{p l}`` alone becomes the entries
+    ``table["p"]`` and ``table["l"]``, indented like that line.
+
+    So a parameter (or a section) that many functions share is described in one place.
+    """
+    def entry(m):
+        return "\n".join(textwrap.indent(table[key], m[1]) for key in m[2].split())
+
+    def fill(f):
+        f.__doc__ = re.sub(r"^( *)\{([\w ]+)\}$", entry, f.__doc__, flags=re.M)
+        return f
+    return fill
+
 
 def _first_index(mask: np.ndarray) -> str:
     """Human-readable position of the first True in ``mask`` ('' for a scalar)."""
