@@ -423,13 +423,17 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
             yield
             return
         self._after_depth = 1
+        stack = contextlib.ExitStack()
         try:
-            with contextlib.ExitStack() as stack:
-                for w in self._synced_widgets():
-                    stack.enter_context(w.hold_sync())
-                yield
+            for w in self._synced_widgets():
+                stack.enter_context(w.hold_sync())
+            yield
         finally:
             self._after_depth = 0
+            # while the page plays the syncs wait longer (PlayMixin._keep_play_hold): at most
+            # every PLAY_SYNC_S seconds (a hold inside Play's hold holds nothing of its own)
+            if not self._keep_play_hold(stack):
+                stack.close()
 
     def _synced_widgets(self) -> list:
         """The widgets whose values follow the shown state: the controls, the readout, the message."""

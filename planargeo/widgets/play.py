@@ -389,14 +389,8 @@ class PlayMixin:
             return
         if self._clock is None:
             self._restart_clock()
-        now = self.wall_clock()
-        if self._play_hold is None:       # the controls and readout wait (picture first)
-            self._play_hold = contextlib.ExitStack()
-            for w in self._synced_widgets():
-                self._play_hold.enter_context(w.hold_sync())
-            self._play_synced = now
-        elif now - self._play_synced >= PLAY_SYNC_S:
-            self._release_play_hold()
+        # the controls' and readout's syncs are held by the base while the page plays
+        # (Explorer._page_after: at most every PLAY_SYNC_S seconds, after a frame's reply)
         seconds = self._clock.due()
         if seconds <= 0 or self._frame(seconds):
             return
@@ -408,6 +402,25 @@ class PlayMixin:
         self.play_control.playing = False
         if self._message:
             raise PlanargeoError(self._message)
+
+    def _keep_play_hold(self, stack: contextlib.ExitStack) -> bool:
+        """While the page plays, keep the syncs ``stack`` holds (True); they go every PLAY_SYNC_S s.
+
+        Called when an update's hold of the controls', readout's and message's syncs ends
+        (after a frame's reply has gone): the first hold while the page plays is kept,
+        then released once ``PLAY_SYNC_S`` seconds have passed, or when Play stops.
+        """
+        if not hasattr(self, "_play_hold"):      # before Play's controls exist
+            return False
+        playing = (self.has_play and self._page_plays and self.play_control is not None
+                   and self.play_control.playing)
+        now = time.monotonic()
+        if playing and self._play_hold is None:
+            self._play_hold, self._play_synced = stack, now
+            return True
+        if self._play_hold is not None and (not playing or now - self._play_synced >= PLAY_SYNC_S):
+            self._release_play_hold()
+        return False
 
     def _release_play_hold(self) -> None:
         """Send the controls' and readout's held values to the page (Play's periodic sync)."""
