@@ -12,11 +12,12 @@ Measured in Debian's headless chromium, in the same run and through the same wid
     the reply);
   - **handle repaint**: the mouse move → the dragged handle painted at the pointer
     (the page alone, no kernel);
-  - **slider step**: a key press on the ``angle`` slider (every element moves) → the
-    new picture painted;
-  - **Play**: the Play button pressed at 1×; frames painted per second over 10 s, and
-    the time scale (seconds of motion per second of wall clock, read off the picture's
-    ``t = … s``);
+  - **slider step**: a key press on the ``angle`` slider (every element moves; from the
+    key's ``keydown`` event in the page) → the new picture painted; and the page's time
+    to apply that picture;
+  - **Play**: the Play button pressed at 1×; frames painted per second over 10 s (one per
+    animation frame that shows a new picture), and the time scale (seconds of motion per
+    second of wall clock, read off the picture's ``t = … s``);
 
 * **every explorer's drag step** (its first handle inside the view, 3 px moves);
 * the **Python side** of one chain update (compute, picture, the update message) and
@@ -167,29 +168,41 @@ def drag(page, cv, handle: str | None, steps: int, px: float = 3.0):
     return lat, _api(cv, f"p.handlePaints.slice({n0})"), refused, hid
 
 
-def slider(page, ex, cv, name: str, steps: int) -> list[float]:
+def slider(page, ex, cv, name: str, steps: int) -> tuple[list[float], list[float]]:
+    """(slider step latencies, the page's time to apply each new picture), ms.
+
+    A step runs from the key's ``keydown`` event in the page (as a drag step runs from
+    the pointer's move event) to the animation frame after the new picture was applied.
+    """
     sl = ex.locator(".widget-slider").filter(has_text=name).first
     knob = sl.locator(".noUi-handle").first
     knob.scroll_into_view_if_needed()
     knob.focus()
-    out, net = [], 0
+    knob.evaluate("(el) => { window.__pgKeys = []; el.addEventListener('keydown', "
+                  "() => window.__pgKeys.push(performance.now()), true); }")
+    out, applied, net = [], [], 0
     for k in range(steps):
         _wait_idle(cv)
         time.sleep(0.25)
-        t0 = cv.evaluate("() => performance.now()")
+        n_keys = page.evaluate("window.__pgKeys.length")
+        n_apply = _api(cv, "p.applyTimes.length")
         right = (k // 5) % 2 == 0
         page.keyboard.press("ArrowRight" if right else "ArrowLeft")
         net += 1 if right else -1
+        t0 = None
         for _ in range(1000):
-            t = _api(cv, f"p.paintTimes.find(t => t > {t0}) ?? null")
+            if t0 is None:
+                t0 = page.evaluate(f"window.__pgKeys[{n_keys}] ?? null")
+            t = _api(cv, f"p.paintTimes.find(t => t > {t0}) ?? null") if t0 is not None else None
             if t is not None:
                 out.append(t - t0)
+                applied += _api(cv, f"p.applyTimes.slice({n_apply})")
                 break
             time.sleep(0.005)
     for _ in range(abs(net)):
         time.sleep(0.25)
         page.keyboard.press("ArrowLeft" if net > 0 else "ArrowRight")
-    return out
+    return out, applied
 
 
 def _shown_time(cv) -> float | None:
@@ -212,9 +225,9 @@ def play(ex, cv, seconds: float = 10.0) -> dict:
             break
         time.sleep(0.1)
     time.sleep(0.5)
-    t0, sim0 = cv.evaluate("() => performance.now()"), _shown_time(cv)
+    t0, sim0, pushed0 = cv.evaluate("() => performance.now()"), _shown_time(cv), _api(cv, "p.pushed()")
     time.sleep(seconds)
-    t1, sim1 = cv.evaluate("() => performance.now()"), _shown_time(cv)
+    t1, sim1, pushed1 = cv.evaluate("() => performance.now()"), _shown_time(cv), _api(cv, "p.pushed()")
     frames = _api(cv, f"p.paintTimes.filter(t => t > {t0} && t <= {t1}).length")
     gaps = _api(cv, f"p.paintTimes.filter(t => t > {t0} && t <= {t1})")
     button.click()                                     # pause
@@ -222,6 +235,7 @@ def play(ex, cv, seconds: float = 10.0) -> dict:
     wall = (t1 - t0) / 1e3
     d = [b - a for a, b in zip(gaps, gaps[1:])]
     return {"fps": round(frames / wall, 1), "frames": frames, "wall (s)": round(wall, 2),
+            "frames sent alone per second": round((pushed1 - pushed0) / wall, 1),
             "time scale": round((sim1 - sim0) / wall, 3) if sim0 is not None and sim1 is not None else None,
             "frame gap median (ms)": round(statistics.median(d), 1) if d else None,
             "frame gap p90 (ms)": round(sorted(d)[int(0.9 * (len(d) - 1))], 1) if d else None}
@@ -234,7 +248,8 @@ def measure(page, steps: int) -> dict:
     r = {"F (ping round trip)": _stat(floor(cv, steps))}
     lat, hp, refused, _ = drag(page, cv, "link 10 end", steps)
     r["drag step"], r["handle repaint"] = _stat(lat), _stat(hp)
-    r["slider step"] = _stat(slider(page, ex, cv, "angle", steps))
+    lat, applied = slider(page, ex, cv, "angle", steps)
+    r["slider step"], r["slider: page applies the picture"] = _stat(lat), _stat(applied)
     r["play"] = play(ex, cv)
     r["F after (ping round trip)"] = _stat(floor(cv, steps))
     res = {CHAIN: r, "every explorer": {}}
@@ -348,18 +363,22 @@ def main(argv=None) -> int:
              "F is the round trip of an empty request through the same widget (the floor), measured "
              "before and after the chain's steps.", "",
              f"## {CHAIN}", "",
-             "| medium | F | drag step | handle repaint | slider step | F after |", "|---|---|---|---|---|---|"]
+             "| medium | F | drag step | handle repaint | slider step | (page applies it) | F after |",
+             "|---|---|---|---|---|---|---|"]
     for m in media:
         r = results[m][CHAIN]
         lines.append(f"| {m} | {_cell(r['F (ping round trip)'])} | {_cell(r['drag step'])} | "
                      f"{_cell(r['handle repaint'])} | {_cell(r['slider step'])} | "
+                     f"{_cell(r.get('slider: page applies the picture'))} | "
                      f"{_cell(r['F after (ping round trip)'])} |")
     lines += ["", "Play at 1× for 10 s (frames painted per second; seconds of motion per second of wall clock):", "",
-              "| medium | fps | frames | time scale | frame gap median (p90), ms |", "|---|---|---|---|---|"]
+              "| medium | fps | frames | time scale | frame gap median (p90), ms | frames sent alone per s |",
+              "|---|---|---|---|---|---|"]
     for m in media:
         q = results[m][CHAIN]["play"]
         lines.append(f"| {m} | {q['fps']} | {q['frames']} | {q['time scale']} | "
-                     f"{q['frame gap median (ms)']} ({q['frame gap p90 (ms)']}) |")
+                     f"{q['frame gap median (ms)']} ({q['frame gap p90 (ms)']}) | "
+                     f"{q.get('frames sent alone per second', '—')} |")
     lines += ["", "## Drag step of every explorer", "",
               "| explorer | handle | " + " | ".join(media) + " |", "|---|---|" + "---|" * len(media)]
     for name in _titles():
