@@ -51,6 +51,9 @@ _ENTRIES = {
     "p": "p : array_like, shape (..., 3)\n    Homogeneous points.",
     "l": "l : array_like, shape (..., 3)\n    Homogeneous lines.",
     "rtol_base": "rtol : float, optional\n    The base counts as singular when its condition number exceeds ``1/rtol``.",
+    "decomposed_P": "P : array_like, shape (..., 3)\n    The point to decompose.",
+    "decomposed_L": "L : array_like, shape (..., 3)\n    The line to decompose.",
+    "components": "Returns\n-------\nnumpy.ndarray, shape (..., 3)\n    The components ``(u1, u2, u3)``.",
     "special_base": "Q1, Q2, Q3 : array_like, shape (..., 3)\n    A special base of ``C`` (from :func:`special_base`).",
     "not_special": "Raises\n------\nDegenerateGeometryError\n"
                    "    If a denominator is zero (the points are not a special base of ``C``).",
@@ -62,6 +65,7 @@ _ENTRIES = {
     "parabola": "vertex : array_like, shape (2,)\n    Vertex (m).\n"
                 "focal_length : float\n    Distance ``f`` from the vertex to the focus (m).\n"
                 "angle : float, optional\n    Rotation of the parabola's frame from the axes (rad).",
+    "conic_matrix": "Returns\n-------\nnumpy.ndarray, shape (3, 3)\n    The conic matrix.",
 }
 _shared = _entries(_ENTRIES)
 
@@ -878,16 +882,12 @@ def decompose_point(P, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
 
     Parameters
     ----------
-    P : array_like, shape (..., 3)
-        The point to decompose.
+    {decomposed_P}
     Q1, Q2, Q3 : array_like, shape (..., 3)
         Three non-collinear base points.
     {rtol_base}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
-        The components ``u``.
+    {components}
 
     Raises
     ------
@@ -915,16 +915,12 @@ def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     Parameters
     ----------
     {C}
-    L : array_like, shape (..., 3)
-        The line to decompose.
+    {decomposed_L}
     Q1, Q2, Q3 : array_like, shape (..., 3)
         Three non-collinear base points; the base lines are their polars ``C Qi``.
     {rtol_base}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
-        The components ``u``.
+    {components}
 
     Raises
     ------
@@ -1000,14 +996,10 @@ def decompose_point_special(C, P, Q1, Q2, Q3) -> np.ndarray:
     Parameters
     ----------
     {C}
-    P : array_like, shape (..., 3)
-        The point to decompose.
+    {decomposed_P}
     {special_base}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
-        The components ``(u1, u2, u3)``.
+    {components}
 
     {not_special}
 
@@ -1039,14 +1031,10 @@ def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
     Parameters
     ----------
     {C}
-    L : array_like, shape (..., 3)
-        The line to decompose.
+    {decomposed_L}
     {special_base}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
-        The components ``(u1, u2, u3)`` on ``C Q1, C Q2, C Q3``.
+    {components}
 
     {not_special}
 
@@ -1377,10 +1365,7 @@ def conic_ellipse(centre, axes, angle=0.0) -> np.ndarray:
     ----------
     {centre ellipse_axes}
 
-    Returns
-    -------
-    numpy.ndarray, shape (3, 3)
-        The conic matrix.
+    {conic_matrix}
 
     Examples
     --------
@@ -1399,15 +1384,13 @@ def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
     ----------
     {centre hyperbola_axes}
 
-    Returns
-    -------
-    numpy.ndarray, shape (3, 3)
-        The conic matrix.
+    {conic_matrix}
 
     Examples
     --------
-    >>> str(classify(conic_hyperbola([0.0, 0.0], [1.0, 1.0])))
-    'real hyperbola'
+    >>> H = conic_hyperbola([0.0, 0.0], [2.0, 1.0])
+    >>> str(classify(H)), float(conic_residual(H, [0.0, -2.0, 1.0]))    # through its vertex (2, 0)
+    ('real hyperbola', 0.0)
     """
     return _turned("hyperbola", centre, axes, angle)
 
@@ -1421,10 +1404,7 @@ def conic_parabola(vertex, focal_length, angle=0.0) -> np.ndarray:
     ----------
     {parabola}
 
-    Returns
-    -------
-    numpy.ndarray, shape (3, 3)
-        The conic matrix.
+    {conic_matrix}
 
     Examples
     --------
