@@ -30,6 +30,7 @@ __all__ = [
 _documented = entries(SCREWS, {
     "pole": "point : array_like, shape (..., 3)\n    Homogeneous acceleration pole (a twist).",
     "impulse": "line : array_like, shape (..., 3)\n    Homogeneous line (an impulse's line of action).",
+    "no_mass": "InputError\n    If the mass ``inertia[..., 0, 0]`` is not positive (no centre of mass to divide out).",
 })
 
 
@@ -141,9 +142,6 @@ def centre_of_mass(inertia) -> np.ndarray:
     It is also the centre of the conic: the pole of the line at infinity
     (thesis 5.2.2), i.e. the point whose axis of percussion is a pure couple.
 
-    Raises :class:`~planargeo.errors.InputError` if the mass ``inertia[0, 0]``
-    is zero or negative (there is no centre of mass to divide out).
-
     Parameters
     ----------
     {inertia}
@@ -155,8 +153,7 @@ def centre_of_mass(inertia) -> np.ndarray:
 
     Raises
     ------
-    InputError
-        If the mass ``inertia[..., 0, 0]`` is not positive.
+    {no_mass}
 
     Examples
     --------
@@ -188,8 +185,7 @@ def rotational_inertia(inertia) -> np.ndarray:
 
     Raises
     ------
-    InputError
-        If the mass ``inertia[..., 0, 0]`` is not positive.
+    {no_mass}
 
     Examples
     --------
@@ -217,8 +213,7 @@ def radius_of_gyration(inertia) -> np.ndarray:
 
     Raises
     ------
-    InputError
-        If the mass ``inertia[..., 0, 0]`` is not positive.
+    {no_mass}
 
     Examples
     --------
@@ -234,10 +229,6 @@ def radius_of_gyration(inertia) -> np.ndarray:
 def mobility(inertia) -> np.ndarray:
     """Mobility ``I⁻¹`` (the dual conic; thesis 8.3.5), computed with ``solve``.
 
-    Raises :class:`~planargeo.errors.SingularInertiaError` for a singular or
-    indefinite inertia (carrying ``.cond``), :class:`~planargeo.errors.InputError` for a
-    non-symmetric one.
-
     Parameters
     ----------
     {inertia}
@@ -250,7 +241,7 @@ def mobility(inertia) -> np.ndarray:
     Raises
     ------
     SingularInertiaError
-        Singular or indefinite ``inertia``.
+        Singular or indefinite ``inertia`` (carrying ``.cond``).
     InputError
         Non-symmetric ``inertia``.
 
