@@ -89,6 +89,7 @@ def as_picture(pic) -> Picture:
     Returns
     -------
     Picture
+        ``pic``.
 
     Raises
     ------
@@ -113,16 +114,20 @@ ENTRIES = {"pic": "pic : Picture\n    Where to draw.",
            "id": "id : str\n    Stable name of the element.",
            "symbol": "symbol, desc : str\n    Thesis symbol and a one-line description.",
            "z": "z : int\n    Drawing order.",
-           "prefix": "prefix : str\n    Put before every id (several drawings in one picture)."}
+           "prefix": "prefix : str\n    Put before every id (several drawings in one picture).",
+           "element": "Returns\n-------\ndict\n    The element added."}
 
 
-def documented(fn):
-    """``fn`` with each docstring line ``{pic id ...}`` replaced by those :data:`ENTRIES`.
+def documented(fn, entries: dict | None = None):
+    """``fn`` with each docstring line ``{pic id ...}`` replaced by those :data:`ENTRIES` (and ``entries``).
 
     Parameters
     ----------
     fn : callable
         A function whose docstring names shared entries, one ``{key key ...}`` line each place.
+    entries : dict, optional
+        More entries (a module's own: an example's set-up), by key; ``functools.partial`` makes
+        a module's decorator of them.
 
     Returns
     -------
@@ -145,11 +150,13 @@ def documented(fn):
         z : int
             Drawing order.
     """
-    def entries(m):
-        return "\n".join(m[1] + line for key in m[2].split() for line in ENTRIES[key].split("\n"))
+    table = {**ENTRIES, **(entries or {})}
+
+    def lines(m):
+        return "\n".join(m[1] + line for key in m[2].split() for line in table[key].split("\n"))
 
     if fn.__doc__:
-        fn.__doc__ = re.sub(r"^( *)\{([a-z ]+)\}$", entries, fn.__doc__, flags=re.M)
+        fn.__doc__ = re.sub(r"^( *)\{([a-z ]+)\}$", lines, fn.__doc__, flags=re.M)
     return fn
 
 
@@ -324,10 +331,7 @@ def label(pic: Picture, id: str, xy, text: str, *, offset=(5, 5), ha: str = "lef
     fixed : bool
         Keep the text where asked (the placer does not move it; others avoid it).
 
-    Returns
-    -------
-    dict
-        The element.
+    {element}
 
     Raises
     ------
@@ -376,10 +380,7 @@ def segment(pic: Picture, id: str, p, q, *, role: str = "construct", label=None,
         Dash pattern in pixels (default: the role's; ``[]`` for solid).
     {symbol z}
 
-    Returns
-    -------
-    dict
-        The element.
+    {element}
 
     Raises
     ------
@@ -649,10 +650,7 @@ def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alp
         Centre of mass to mark.
     {symbol}
 
-    Returns
-    -------
-    dict
-        The element.
+    {element}
 
     Raises
     ------
@@ -708,10 +706,7 @@ def link(pic: Picture, id: str, p, q, *, width: float = 0.25, **kw) -> dict:
     **kw
         Options of :func:`body`.
 
-    Returns
-    -------
-    dict
-        The element.
+    {element}
 
     Examples
     --------
@@ -741,10 +736,7 @@ def pin(pic: Picture, id: str, xy, *, radius: float = 0.06, z: int = 6, symbol: 
     desc : str
         One-line description.
 
-    Returns
-    -------
-    dict
-        The element.
+    {element}
 
     Raises
     ------

@@ -36,6 +36,7 @@ is the vertical line ``x = 1.25``.
 from __future__ import annotations
 
 import math
+from functools import partial
 
 import numpy as np
 
@@ -61,6 +62,17 @@ def _keys(prefix: str, k: int) -> list[str]:
 def _tex(sym: str, k: int, j: int) -> str:
     """``$sym$`` for one column, ``$sym_{j+1}$`` for column ``j`` of several."""
     return f"${sym}$" if k == 1 else f"${sym}_{{{j + 1}}}$"
+
+
+#: The examples' set-up: a rod of mass 1 pinned at the origin, its centre of mass at (1, 0), and a view
+_documented = partial(documented, entries={
+    "rod": ">>> from planargeo.mechanics.joints import revolute\n"
+           ">>> from planargeo.screws.twists import inertia_matrix, unit_rotation\n"
+           ">>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)",
+    "view": ">>> pic = Picture((-1, 3, -2, 2), size=(300, 300), ticks=False)"})
+
+#: what the axis of percussion of a joint is (the start of its description)
+_T_WORDS = "axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.36, 6.39): "
 
 
 def _line_words(l) -> str:
@@ -166,7 +178,7 @@ def _parts_arg(parts) -> tuple[int, ...]:
 
 
 # --------------------------------------------------------------------------- decomposition
-@documented
+@_documented
 def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, anchors=None,
                   sides=None, aims=None, prefix: str = "") -> dict:
     """A joint's spaces completed by an inertia (thesis 6.2–6.3, 6.36–6.48, Figs 6.1, 6.2).
@@ -217,11 +229,7 @@ def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, an
 
     Examples
     --------
-    >>> from planargeo.draw.picture import Picture
-    >>> from planargeo.mechanics.joints import revolute
-    >>> from planargeo.screws.twists import inertia_matrix
-    >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
-    >>> pic = Picture((-1, 3, -2, 2), size=(300, 300), ticks=False)
+    {rod view}
     >>> out = decomposition(pic, j.s, j.R, A)
     >>> sorted(k for k in out if k != "values")
     ['R1', 'R2', 'T', 'U1', 'U2', 's']
@@ -251,30 +259,25 @@ def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, an
     labels = {**default, **dict(labels or {})}
     anchors, sides, aims = dict(anchors or {}), dict(sides or {}), dict(aims or {})
     out: dict = {}
-    for j, n in enumerate(keys["T"]):
-        out[n] = _line(pic, prefix + n, T[:, j], labels[n], role="momentum", symbol=default[n],
-                       desc="axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.36, 6.39): "
-                            + _line_words(T[:, j]),
-                       anchor=anchors.get(n), side=sides.get(n, 1.0), aims=aims, key=n)
-    for j, n in enumerate(keys["R"]):
-        out[n] = _line(pic, prefix + n, R[:, j], labels[n], role="reaction", symbol=default[n],
-                       desc="a unit reaction of the joint, a line through it (6.1): "
-                            + _line_words(R[:, j]),
-                       anchor=anchors.get(n), side=sides.get(n, 1.0), aims=aims, key=n)
-    for j, n in enumerate(keys["s"]):
-        out[n] = _point(pic, prefix + n, s[:, j], labels[n], role="twist", symbol=default[n],
-                        desc=f"motion space of the joint, its pole (6.1): {where(s[:, j])}",
-                        glyph=False, aims=aims, key=n)
-    for j, n in enumerate(keys["P"]):
-        what = ("acceleration a unit reaction gives the free body, A⁻¹R (6.15): " if inv else
-                "reactive acceleration U = A⁻¹R(RᵀA⁻¹R)⁻¹, RᵀU = 1 (6.45, 6.48): ")
-        out[n] = _point(pic, prefix + n, pts[:, j], labels[n], role="accel", symbol=default[n],
-                        desc=what + _accel_words(pts[:, j]), glyph=False, aims=aims, key=n)
+    for key, X, role, what in (("T", T, "momentum", _T_WORDS),
+                               ("R", R, "reaction", "a unit reaction of the joint, a line through it (6.1): ")):
+        for j, n in enumerate(keys[key]):
+            out[n] = _line(pic, prefix + n, X[:, j], labels[n], role=role, symbol=default[n],
+                           desc=what + _line_words(X[:, j]), anchor=anchors.get(n),
+                           side=sides.get(n, 1.0), aims=aims, key=n)
+    for key, X, role, what, words in (
+            ("s", s, "twist", "motion space of the joint, its pole (6.1): ", where),
+            ("P", pts, "accel", "acceleration a unit reaction gives the free body, A⁻¹R (6.15): " if inv
+             else "reactive acceleration U = A⁻¹R(RᵀA⁻¹R)⁻¹, RᵀU = 1 (6.45, 6.48): ", _accel_words)):
+        for j, n in enumerate(keys[key]):
+            out[n] = _point(pic, prefix + n, X[:, j], labels[n], role=role, symbol=default[n],
+                            desc=what + words(X[:, j]), glyph=False, aims=aims, key=n)
     out["values"] = {"T": T, "U": U, "AiR": AiR}
     return out
 
 
 # --------------------------------------------------------------------------- splits
+@_documented
 def twist_parts(s, R, A, a) -> dict:
     """The split of an acceleration by a joint: ``a = sψ + Uγ`` and the forces ``f_k = A a_k`` (6.44, 6.76).
 
@@ -298,9 +301,7 @@ def twist_parts(s, R, A, a) -> dict:
 
     Examples
     --------
-    >>> from planargeo.mechanics.joints import revolute
-    >>> from planargeo.screws.twists import inertia_matrix, unit_rotation
-    >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
+    {rod}
     >>> v = twist_parts(j.s, j.R, A, unit_rotation([2.0, 1.0]))
     >>> bool(np.allclose(v["a1"] + v["a2"], unit_rotation([2.0, 1.0])))    # a = sψ + Uγ (6.44)
     True
@@ -313,15 +314,14 @@ def twist_parts(s, R, A, a) -> dict:
             "f1": dec.A @ a1, "f2": dec.A @ a2}
 
 
+@_documented
 def wrench_parts(s, R, A, f) -> dict:
     """The split of a force by a joint: ``f = TQ + Rμ`` and the accelerations ``a_k = A⁻¹f_k`` (6.38, 6.80).
 
     Parameters
     ----------
-    s, R, A : array_like
-        As in :func:`decomposition`.
-    f : array_like (3,)
-        The force to split.
+    s, R, A, f : array_like
+        As :func:`twist_parts`, with the force ``f`` (3,) to split.
 
     Returns
     -------
@@ -332,13 +332,11 @@ def wrench_parts(s, R, A, f) -> dict:
     Raises
     ------
     ShapeError, NonFiniteError
-        ``f`` not a finite 3-vector.
+        As :func:`twist_parts` (``f`` for ``a``).
 
     Examples
     --------
-    >>> from planargeo.mechanics.joints import revolute
-    >>> from planargeo.screws.twists import inertia_matrix
-    >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
+    {rod}
     >>> v = wrench_parts(j.s, j.R, A, [0.0, 1.0, 2.0])     # 1 N upwards on the line x = 2
     >>> float(v["Q"][0]), v["f1"] + v["f2"]                 # Q = sᵀf: the moment 2
     (2.0, array([0., 1., 2.]))
@@ -351,6 +349,22 @@ def wrench_parts(s, R, A, f) -> dict:
             "a1": np.linalg.solve(dec.A, f1), "a2": np.linalg.solve(dec.A, f2)}
 
 
+#: The two splits by a joint: how the parts are computed, their default labels and what they are
+_SPLITS = {
+    "twist": (twist_parts,
+              {"a1": r"$a_1 = s\psi$", "a2": r"$a_2 = U\gamma$", "f1": "$f_1 = Aa_1$", "f2": "$f_2 = Aa_2$"},
+              {"a1": "the part of a about the joint, a₁ = sψ, ψ = Tᵀa (6.44): ",
+               "a2": "the part of a on the axis T, a₂ = Uγ, γ = Rᵀa (6.44): ",
+               "f1": "the force of a₁, f₁ = A a₁ = T sᵀA a, a multiple of T (6.76): ",
+               "f2": "the force of a₂, f₂ = A a₂ = R UᵀA a, through the joint (6.76): "}),
+    "wrench": (wrench_parts,
+               {"a1": "$a_1 = A^{-1}f_1$", "a2": "$a_2 = A^{-1}f_2$", "f1": "$f_1 = TQ$", "f2": r"$f_2 = R\mu$"},
+               {"a1": "the acceleration of f₁, a₁ = A⁻¹f₁ = s TᵀA⁻¹f, about the joint (6.80): ",
+                "a2": "the acceleration of f₂, a₂ = A⁻¹f₂ = U RᵀA⁻¹f, on the axis T (6.81): ",
+                "f1": "the active part of f, f₁ = TQ, Q = sᵀf (6.38): ",
+                "f2": "the reaction part of f, f₂ = Rμ, μ = Uᵀf, through the joint (6.38): "})}
+
+
 def _arrow_scale(f, scale, arrow_length) -> float:
     """Data units per newton: ``arrow_length / |F|`` when a fixed arrow length is asked for."""
     if arrow_length is not None:
@@ -359,8 +373,13 @@ def _arrow_scale(f, scale, arrow_length) -> float:
     return 0.0 if scale is None else float(scale)
 
 
-def _split(pic, vals, show, names, descs, *, aims, anchors, scale, arrow_length, show_T, prefix):
-    """Draw the axis ``T`` and the chosen parts ``(a_k, f_k)``; the elements and ``"values"``."""
+def _split(kind, pic, s, R, A, x, *, parts, names, aims, anchors, scale, arrow_length, show_T, prefix):
+    """Split ``x`` (:data:`_SPLITS` ``[kind]``); draw the axis ``T`` and the chosen parts ``(a_k, f_k)``."""
+    as_picture(pic)
+    show = _parts_arg(parts)
+    compute, default, descs = _SPLITS[kind]
+    vals = compute(s, R, A, x)
+    names = {**default, **(names or {})}
     out: dict = {"values": vals}
     T = vals["T"]
     aims, anchors = dict(aims or {}), dict(anchors or {})
@@ -369,8 +388,7 @@ def _split(pic, vals, show, names, descs, *, aims, anchors, scale, arrow_length,
             n = "T" if T.shape[1] == 1 else f"T{j + 1}"
             out[n] = _line(pic, prefix + n, T[:, j], names.get(n, _tex("T", T.shape[1], j)),
                            role="construct", symbol=_tex("T", T.shape[1], j),
-                           desc="axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.36, 6.39): "
-                                + _line_words(T[:, j]),
+                           desc=_T_WORDS + _line_words(T[:, j]),
                            anchor=anchors.get(n), side=-1.0, aims=aims, key=n)
     for k in show:
         a, f = vals[f"a{k}"], vals[f"f{k}"]
@@ -391,7 +409,7 @@ def _split(pic, vals, show, names, descs, *, aims, anchors, scale, arrow_length,
     return out
 
 
-@documented
+@_documented
 def twist_split(pic: Picture, s, R, A, a, *, parts=(1, 2), names=None, aims=None, anchors=None,
                 scale=1.0, arrow_length=None, show_T: bool = True, prefix: str = "") -> dict:
     """An acceleration split by a joint, and the forces of its parts (thesis 6.44, 6.75–6.76, Fig. 6.3).
@@ -440,11 +458,7 @@ def twist_split(pic: Picture, s, R, A, a, *, parts=(1, 2), names=None, aims=None
 
     Examples
     --------
-    >>> from planargeo.draw.picture import Picture
-    >>> from planargeo.mechanics.joints import revolute
-    >>> from planargeo.screws.twists import inertia_matrix, unit_rotation
-    >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
-    >>> pic = Picture((-1, 3, -2, 2), size=(300, 300), ticks=False)
+    {rod view}
     >>> out = twist_split(pic, j.s, j.R, A, unit_rotation([2.0, 1.0]), arrow_length=0.6)
     >>> v = out["values"]
     >>> bool(np.allclose(v["a1"] + v["a2"], unit_rotation([2.0, 1.0])))    # a = sψ + Uγ (6.44)
@@ -456,20 +470,11 @@ def twist_split(pic: Picture, s, R, A, a, *, parts=(1, 2), names=None, aims=None
     ...
     planargeo.errors.InputError: parts must be a non-empty selection of 1 and 2, got (3,)
     """
-    as_picture(pic)
-    show = _parts_arg(parts)
-    vals = twist_parts(s, R, A, a)
-    nm = {"a1": r"$a_1 = s\psi$", "a2": r"$a_2 = U\gamma$", "f1": "$f_1 = Aa_1$",
-          "f2": "$f_2 = Aa_2$", **(names or {})}
-    descs = {"a1": "the part of a about the joint, a₁ = sψ, ψ = Tᵀa (6.44): ",
-             "a2": "the part of a on the axis T, a₂ = Uγ, γ = Rᵀa (6.44): ",
-             "f1": "the force of a₁, f₁ = A a₁ = T sᵀA a, a multiple of T (6.76): ",
-             "f2": "the force of a₂, f₂ = A a₂ = R UᵀA a, through the joint (6.76): "}
-    return _split(pic, vals, show, nm, descs, aims=aims, anchors=anchors, scale=scale,
-                  arrow_length=arrow_length, show_T=show_T, prefix=prefix)
+    return _split("twist", pic, s, R, A, a, parts=parts, names=names, aims=aims, anchors=anchors,
+                  scale=scale, arrow_length=arrow_length, show_T=show_T, prefix=prefix)
 
 
-@documented
+@_documented
 def wrench_split(pic: Picture, s, R, A, f, *, parts=(1, 2), names=None, aims=None, anchors=None,
                  scale=1.0, arrow_length=None, show_T: bool = True, prefix: str = "") -> dict:
     """A force split by a joint, and the accelerations of its parts (thesis 6.38, 6.77–6.81, Fig. 6.4).
@@ -481,8 +486,7 @@ def wrench_split(pic: Picture, s, R, A, f, *, parts=(1, 2), names=None, aims=Non
 
     Parameters
     ----------
-    {pic}
-    s, R, A, parts, names, aims, anchors, scale, arrow_length, show_T, prefix
+    pic, s, R, A, parts, names, aims, anchors, scale, arrow_length, show_T, prefix
         As :func:`twist_split`.
     f : array_like (3,)
         The force to split.
@@ -495,18 +499,12 @@ def wrench_split(pic: Picture, s, R, A, f, *, parts=(1, 2), names=None, aims=Non
 
     Raises
     ------
-    InputError
-        ``pic`` not a Picture, ``parts`` not a selection of 1 and 2.
-    ShapeError, NonFiniteError
-        ``f`` not a finite 3-vector.
+    InputError, ShapeError, NonFiniteError
+        As :func:`twist_split` (``f`` for ``a``).
 
     Examples
     --------
-    >>> from planargeo.draw.picture import Picture
-    >>> from planargeo.mechanics.joints import revolute
-    >>> from planargeo.screws.twists import inertia_matrix
-    >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
-    >>> pic = Picture((-1, 3, -2, 2), size=(300, 300), ticks=False)
+    {rod view}
     >>> f = np.array([0.0, 1.0, 2.0])                 # 1 N upwards on the line x = 2 (4.27)
     >>> out = wrench_split(pic, j.s, j.R, A, f, parts=[1])
     >>> v = out["values"]
@@ -515,21 +513,12 @@ def wrench_split(pic: Picture, s, R, A, f, *, parts=(1, 2), names=None, aims=Non
     >>> sorted(k for k in out if k != "values")
     ['T', 'a1', 'f1']
     """
-    as_picture(pic)
-    show = _parts_arg(parts)
-    vals = wrench_parts(s, R, A, f)
-    nm = {"a1": "$a_1 = A^{-1}f_1$", "a2": "$a_2 = A^{-1}f_2$", "f1": "$f_1 = TQ$",
-          "f2": r"$f_2 = R\mu$", **(names or {})}
-    descs = {"a1": "the acceleration of f₁, a₁ = A⁻¹f₁ = s TᵀA⁻¹f, about the joint (6.80): ",
-             "a2": "the acceleration of f₂, a₂ = A⁻¹f₂ = U RᵀA⁻¹f, on the axis T (6.81): ",
-             "f1": "the active part of f, f₁ = TQ, Q = sᵀf (6.38): ",
-             "f2": "the reaction part of f, f₂ = Rμ, μ = Uᵀf, through the joint (6.38): "}
-    return _split(pic, vals, show, nm, descs, aims=aims, anchors=anchors, scale=scale,
-                  arrow_length=arrow_length, show_T=show_T, prefix=prefix)
+    return _split("wrench", pic, s, R, A, f, parts=parts, names=names, aims=aims, anchors=anchors,
+                  scale=scale, arrow_length=arrow_length, show_T=show_T, prefix=prefix)
 
 
 # --------------------------------------------------------------------------- projective step
-@documented
+@_documented
 def projective_step(pic: Picture, s, R, A, a_prev, a, kappa, *,
                     names=("$T_i$", "$s_i$", "$a_{i-1}$", "$a_i$"), aims=None, T_anchor=None,
                     T_side: float = 1.0, prefix: str = "") -> dict:
@@ -577,10 +566,7 @@ def projective_step(pic: Picture, s, R, A, a_prev, a, kappa, *,
 
     Examples
     --------
-    >>> from planargeo.draw.picture import Picture
-    >>> from planargeo.mechanics.joints import revolute
-    >>> from planargeo.screws.twists import inertia_matrix
-    >>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
+    {rod}
     >>> a = 2.0 * j.s[:, 0]                            # turning about the joint at 2 rad/s²
     >>> pic = Picture((-1, 3, -2, 2), size=(300, 300), ticks=False)
     >>> out = projective_step(pic, j.s, j.R, A, np.zeros(3), a, np.zeros(3))

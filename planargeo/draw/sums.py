@@ -247,7 +247,6 @@ def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), le
 
     Examples
     --------
-    >>> from planargeo.draw.picture import Picture
     >>> from planargeo.screws.twists import unit_rotation, unit_translation
     >>> pic = Picture((-3, 3, -3, 3), size=(200, 200), ticks=False)
     >>> out = twist_sum(pic, 2 * unit_rotation([1, 0]), unit_translation([0, 1]))
@@ -343,7 +342,6 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
 
     Examples
     --------
-    >>> from planargeo.draw.picture import Picture
     >>> pic = Picture((-1, 3, -1, 3), size=(200, 200), ticks=False)
     >>> out = wrench_sum(pic, [1.0, 0.0, -1.0], [0.0, 1.0, 2.0], scale=0.5)   # y = 1 and x = 2
     >>> out["meet"]["parts"][0]["x"], out["meet"]["parts"][0]["y"]
@@ -444,7 +442,6 @@ def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot{q}_i$",
 
     Examples
     --------
-    >>> from planargeo.draw.picture import Picture
     >>> from planargeo.screws.twists import unit_rotation
     >>> pic = Picture((-1, 4, -2, 2), size=(300, 200), ticks=False)
     >>> out = velocity_step(pic, 1.0 * unit_rotation([0, 0]), unit_rotation([3, 0]), 2.0)
@@ -515,7 +512,6 @@ def acceleration_step(pic, a_prev, v_prev, s, qd, qdd, *,
 
     Examples
     --------
-    >>> from planargeo.draw.picture import Picture
     >>> from planargeo.screws.twists import unit_rotation
     >>> pic = Picture((-1, 4, -2, 3), size=(300, 300), ticks=False)
     >>> out = acceleration_step(pic, [0, 0, 0], unit_rotation([0, 0]), unit_rotation([2, 0]), 1.0, 1.0)
@@ -605,7 +601,6 @@ def newton_euler(pic, I, a, v, *, scale=None,
 
     Examples
     --------
-    >>> from planargeo.draw.picture import Picture
     >>> from planargeo.screws.twists import inertia_matrix, unit_rotation
     >>> pic = Picture((-2, 3, -2, 2), size=(300, 240), ticks=False)
     >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.18)
