@@ -50,7 +50,8 @@ _ENTRIES = {
     "C": "C : array_like, shape (..., 3, 3)\n    Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).",
     "p": "p : array_like, shape (..., 3)\n    Homogeneous points.",
     "l": "l : array_like, shape (..., 3)\n    Homogeneous lines.",
-    "rtol_base": "rtol : float, optional\n    The base counts as singular when its condition number exceeds ``1/rtol``.",
+    "rtol_base": "rtol : float, optional\n"
+                 "    The base counts as singular when its condition number exceeds ``1/rtol``.",
     "decomposed_P": "P : array_like, shape (..., 3)\n    The point to decompose.",
     "decomposed_L": "L : array_like, shape (..., 3)\n    The line to decompose.",
     "components": "Returns\n-------\nnumpy.ndarray, shape (..., 3)\n    The components ``(u1, u2, u3)``.",

@@ -31,6 +31,13 @@ __all__ = ["Point", "Line", "Conic"]
 _EQ_TOL = 1e-12
 
 
+#: Docstring entries the classes share (a line ``{point}`` in a docstring); the conics' own too.
+_shared = _p._entries({**_c._ENTRIES,
+                       "point": "point : Point or array_like, shape (3,)\n    A Point or homogeneous point array.",
+                       "line": "line : Line or array_like, shape (3,)\n    A Line or homogeneous line array.",
+                       "new_conic": "Returns\n-------\nConic\n    The new conic."})
+
+
 def _fmt(v: float) -> str:
     v = float(v)
     if v == 0:
@@ -113,6 +120,17 @@ class _PointOrLine(_Homogeneous):
         array([0., 1., 1.])
         """
         return type(self)(self._normalize(self._a))
+
+    @property
+    def array(self) -> np.ndarray:
+        """The read-only homogeneous coordinates: ``[y, -x, w]`` of a point, ``[fx, fy, tz]`` of a line."""
+        return self._a
+
+    @property
+    def direction(self) -> np.ndarray:
+        """Unit direction of a point at infinity, or along a line (``(fx, fy)/|f|``); ``(nan, nan)`` for a
+        finite point and for the line at infinity."""
+        return self._direction(self._a)
 
     def _pair(self, other) -> tuple:
         """``(point, line)`` arrays of this element and ``other``, of the dual kind (an element or its array)."""
@@ -216,7 +234,7 @@ class Point(_PointOrLine):
     """
 
     __slots__ = ()
-    _normalize = staticmethod(_p.normalize_point)
+    _normalize, _direction = staticmethod(_p.normalize_point), staticmethod(_p.direction)
 
     # constructors
     @classmethod
@@ -283,11 +301,6 @@ class Point(_PointOrLine):
 
     # data
     @property
-    def array(self) -> np.ndarray:
-        """The read-only homogeneous coordinates ``[y, -x, w]``."""
-        return self._a
-
-    @property
     def xy(self) -> np.ndarray:
         """Euclidean ``(x, y)``; ``(nan, nan)`` at infinity."""
         return _p.to_xy(self._a)
@@ -296,11 +309,6 @@ class Point(_PointOrLine):
     def is_ideal(self) -> bool:
         """True for a point at infinity (``w`` exactly zero)."""
         return bool(_p.is_ideal(self._a))
-
-    @property
-    def direction(self) -> np.ndarray:
-        """Unit direction of a point at infinity; ``(nan, nan)`` for a finite point."""
-        return _p.direction(self._a)
 
     # geometry
     def join(self, other) -> "Line":
@@ -365,7 +373,7 @@ class Line(_PointOrLine):
     """
 
     __slots__ = ()
-    _normalize = staticmethod(_p.normalize_line)
+    _normalize, _direction = staticmethod(_p.normalize_line), staticmethod(_p.line_direction)
 
     @classmethod
     def through(cls, p, q) -> "Line":
@@ -441,19 +449,9 @@ class Line(_PointOrLine):
         return cls(_p.line_through_point_direction(pa, direction))
 
     @property
-    def array(self) -> np.ndarray:
-        """The read-only coordinates ``[fx, fy, tz]``."""
-        return self._a
-
-    @property
     def is_at_infinity(self) -> bool:
         """True for the line at infinity (force exactly zero)."""
         return bool(_p.is_at_infinity(self._a))
-
-    @property
-    def direction(self) -> np.ndarray:
-        """Unit direction ``(fx, fy)/|f|``; ``(nan, nan)`` for the line at infinity."""
-        return _p.line_direction(self._a)
 
     @property
     def foot(self) -> Point | None:
@@ -499,6 +497,8 @@ class Line(_PointOrLine):
 
 Point._dual, Line._dual = Line, Point
 Point.normalized = Line.normalized = _PointOrLine.normalized     # their own members (for the API pages)
+Point.array, Line.array = _PointOrLine.array, _PointOrLine.array
+Point.direction, Line.direction = _PointOrLine.direction, _PointOrLine.direction
 Point.incidence = Line.incidence = _PointOrLine.incidence
 Point.distance_to = Line.signed_distance = _PointOrLine._signed_distance
 
@@ -546,22 +546,21 @@ class Conic(_Homogeneous):
         self._a = m
 
     @classmethod
+    @_shared
     def circle(cls, centre, radius, imaginary: bool = False) -> "Conic":
         """Circle of ``radius`` about ``centre`` (imaginary: ``|x - c|² = -r²``).
 
+        The conic of :func:`planargeo.geometry.conics.conic_circle`.
+
         Parameters
         ----------
-        centre : array_like, shape (2,)
-            Centre (m).
+        {centre}
         radius : float
             Radius (m).
         imaginary : bool, optional
             Build the imaginary circle instead.
 
-        Returns
-        -------
-        Conic
-            See :func:`planargeo.geometry.conics.conic_circle`.
+        {new_conic}
 
         Examples
         --------
@@ -571,22 +570,17 @@ class Conic(_Homogeneous):
         return cls(_c.conic_circle(centre, radius, imaginary=imaginary))
 
     @classmethod
+    @_shared
     def ellipse(cls, centre, axes, angle=0.0) -> "Conic":
         """Ellipse with semi-axes ``axes``, the first turned by ``angle``.
 
+        The conic of :func:`planargeo.geometry.conics.conic_ellipse`.
+
         Parameters
         ----------
-        centre : array_like, shape (2,)
-            Centre (m).
-        axes : array_like, shape (2,)
-            Semi-axes ``(a, b)`` (m).
-        angle : float, optional
-            Angle of the first semi-axis from +x (rad).
+        {centre ellipse_axes}
 
-        Returns
-        -------
-        Conic
-            See :func:`planargeo.geometry.conics.conic_ellipse`.
+        {new_conic}
 
         Examples
         --------
@@ -596,22 +590,17 @@ class Conic(_Homogeneous):
         return cls(_c.conic_ellipse(centre, axes, angle))
 
     @classmethod
+    @_shared
     def hyperbola(cls, centre, axes, angle=0.0) -> "Conic":
         """Hyperbola ``x'²/a² - y'²/b² = 1`` in the frame at ``centre`` turned by ``angle``.
 
+        The conic of :func:`planargeo.geometry.conics.conic_hyperbola`.
+
         Parameters
         ----------
-        centre : array_like, shape (2,)
-            Centre (m).
-        axes : array_like, shape (2,)
-            Transverse and conjugate semi-axes ``(a, b)`` (m).
-        angle : float, optional
-            Angle of the transverse axis from +x (rad).
+        {centre hyperbola_axes}
 
-        Returns
-        -------
-        Conic
-            See :func:`planargeo.geometry.conics.conic_hyperbola`.
+        {new_conic}
 
         Examples
         --------
@@ -621,22 +610,17 @@ class Conic(_Homogeneous):
         return cls(_c.conic_hyperbola(centre, axes, angle))
 
     @classmethod
+    @_shared
     def parabola(cls, vertex, focal_length, angle=0.0) -> "Conic":
         """Parabola ``y' = x'²/(4 f)`` at ``vertex`` turned by ``angle``.
 
+        The conic of :func:`planargeo.geometry.conics.conic_parabola`.
+
         Parameters
         ----------
-        vertex : array_like, shape (2,)
-            Vertex (m).
-        focal_length : float
-            Vertex-to-focus distance ``f`` (m).
-        angle : float, optional
-            Rotation of the parabola's frame (rad).
+        {parabola}
 
-        Returns
-        -------
-        Conic
-            See :func:`planargeo.geometry.conics.conic_parabola`.
+        {new_conic}
 
         Examples
         --------
@@ -647,6 +631,7 @@ class Conic(_Homogeneous):
         return cls(_c.conic_parabola(vertex, focal_length, angle))
 
     @classmethod
+    @_shared
     def from_coefficients(cls, a, b, c, d, e, f) -> "Conic":
         """Conic ``a x² + b xy + c y² + d x + e y + f = 0``.
 
@@ -655,10 +640,7 @@ class Conic(_Homogeneous):
         a, b, c, d, e, f : float
             Coefficients of the implicit equation.
 
-        Returns
-        -------
-        Conic
-            The conic.
+        {new_conic}
 
         Examples
         --------
@@ -672,6 +654,7 @@ class Conic(_Homogeneous):
         """The read-only symmetric matrix."""
         return self._a
 
+    @_shared
     def polar(self, point) -> Line:
         """The polar line ``C p`` of ``point`` (thesis 5.36).
 
@@ -681,8 +664,7 @@ class Conic(_Homogeneous):
 
         Parameters
         ----------
-        point : Point or array_like, shape (3,)
-            A Point or homogeneous point array.
+        {point}
 
         Returns
         -------
@@ -699,6 +681,7 @@ class Conic(_Homogeneous):
         """
         return Line(_c.polar(self._a, _as_point_array(point, "point")))
 
+    @_shared
     def pole(self, line) -> Point:
         """The pole ``C⁻¹ l`` of ``line`` (thesis 5.37), the inverse of :meth:`polar`.
 
@@ -708,8 +691,7 @@ class Conic(_Homogeneous):
 
         Parameters
         ----------
-        line : Line or array_like, shape (3,)
-            A Line or homogeneous line array.
+        {line}
 
         Returns
         -------
@@ -766,6 +748,7 @@ class Conic(_Homogeneous):
         """
         return Point(_c.centre(self._a))
 
+    @_shared
     def contains(self, point, rtol: float = 1e-9) -> bool:
         """True if ``point`` lies on the conic: ``|p C p| <= rtol |C| |p|²`` (thesis 5.38).
 
@@ -774,8 +757,7 @@ class Conic(_Homogeneous):
 
         Parameters
         ----------
-        point : Point or array_like, shape (3,)
-            A Point or homogeneous point array.
+        {point}
         rtol : float, optional
             Relative tolerance of the test.
 
@@ -794,6 +776,7 @@ class Conic(_Homogeneous):
         """
         return bool(_c.is_on_conic(self._a, _as_point_array(point, "point"), rtol=rtol))
 
+    @_shared
     def tangents_from(self, point):
         """The two tangents from an exterior ``point`` and their contact points.
 
@@ -804,8 +787,7 @@ class Conic(_Homogeneous):
 
         Parameters
         ----------
-        point : Point or array_like, shape (3,)
-            A Point or homogeneous point array.
+        {point}
 
         Returns
         -------

@@ -89,6 +89,26 @@ def _entries(table: dict[str, str]):
     return fill
 
 
+#: Docstring entries many functions here share, each said once (a line ``{p l}`` in a docstring).
+_ENTRIES = {
+    "p": "p : array_like, shape (..., 3)\n    Homogeneous points.",
+    "l": "l : array_like, shape (..., 3)\n    Homogeneous lines ``[fx, fy, tz]``.",
+    "normalized": "Returns\n-------\nndarray, shape (..., 3)\n    The base coordinates.",
+    "cond_limit": "cond_limit : float, optional\n"
+                  "    Largest accepted condition number ``κ`` (:func:`cross_cond`),\n"
+                  "    :data:`planargeo.errors.COND_LIMIT` = ``1e12`` by default.  The result's relative\n"
+                  "    error is at most about ``ε κ``.",
+    "cross_raises": "Raises\n------\nDegenerateGeometryError\n"
+                    "    If the two are the same element (their cross product exactly zero, ``.cond`` is\n"
+                    "    ``inf``), one of them is the zero vector, or they are so nearly the same that\n"
+                    "    ``κ > cond_limit`` (``.cond`` is the largest such κ).",
+    "standard": "Returns\n-------\nnumpy.ndarray, shape (..., 3, 3)\n"
+                "    The matrix in the other coordinates: ``T C T`` (or ``T S T``), ``T`` of (5.47)\n"
+                "    being its own inverse.",
+}
+_shared = _entries(_ENTRIES)
+
+
 def _first_index(mask: np.ndarray) -> str:
     """Human-readable position of the first True in ``mask`` ('' for a scalar)."""
     if mask.ndim == 0:
@@ -170,6 +190,7 @@ def _refuse_zero(x: np.ndarray, name: str, what: str) -> None:
 
 
 # --------------------------------------------------------------------------- normalisation
+@_shared
 def normalize_point(p) -> np.ndarray:
     """Base coordinates of points (thesis 5.2, 5.49).
 
@@ -179,19 +200,15 @@ def normalize_point(p) -> np.ndarray:
 
     Parameters
     ----------
-    p : array_like, shape (..., 3)
-        Homogeneous points (non-zero).
+    {p}
 
-    Returns
-    -------
-    ndarray, shape (..., 3)
+    {normalized}
 
     Raises
     ------
-    DegenerateGeometryError
-        If some ``p`` is the zero vector (which is no point).
-    NumericOverflowError
-        If a finite point is farther from the origin than double precision reaches.
+    DegenerateGeometryError, NumericOverflowError
+        If some ``p`` is the zero vector (which is no point), or a finite point is farther from the
+        origin than double precision reaches.
 
     Examples
     --------
@@ -211,6 +228,7 @@ def normalize_point(p) -> np.ndarray:
         return check_overflow(p / den[..., None], "normalize_point(p)", "p's coordinates")
 
 
+@_shared
 def normalize_line(l) -> np.ndarray:
     """Base coordinates of lines (thesis 5.11, 5.55).
 
@@ -223,19 +241,15 @@ def normalize_line(l) -> np.ndarray:
 
     Parameters
     ----------
-    l : array_like, shape (..., 3)
-        Homogeneous lines (non-zero).
+    {l}
 
-    Returns
-    -------
-    ndarray, shape (..., 3)
+    {normalized}
 
     Raises
     ------
-    DegenerateGeometryError
-        If some ``l`` is the zero vector (which is no line).
-    NumericOverflowError
-        If a finite line is farther from the origin than double precision reaches.
+    DegenerateGeometryError, NumericOverflowError
+        If some ``l`` is the zero vector (which is no line), or a finite line is farther from the
+        origin than double precision reaches.
 
     Examples
     --------
@@ -299,13 +313,13 @@ def normalize(x, kind: str | None = None) -> np.ndarray:
     raise InputError(f"kind must be 'point' or 'line', got {kind!r}")
 
 
+@_shared
 def is_ideal(p) -> np.ndarray:
     """True for points at infinity: weight ``w = p[..., 2]`` exactly zero (thesis 5.5).
 
     Parameters
     ----------
-    p : array_like, shape (..., 3)
-        Homogeneous points ``[a, b, w]``.
+    {p}
 
     Returns
     -------
@@ -321,13 +335,13 @@ def is_ideal(p) -> np.ndarray:
     return p[..., 2] == 0
 
 
+@_shared
 def is_at_infinity(l) -> np.ndarray:
     """True for the line at infinity: force ``(fx, fy)`` exactly zero (thesis 5.16).
 
     Parameters
     ----------
-    l : array_like, shape (..., 3)
-        Homogeneous lines ``[fx, fy, tz]``.
+    {l}
 
     Returns
     -------
@@ -406,6 +420,7 @@ def from_direction(d) -> np.ndarray:
     return out
 
 
+@_shared
 def to_xy(p) -> np.ndarray:
     """Euclidean coordinates ``(x, y) = (-p1/w, p0/w)`` of points (thesis 5.51).
 
@@ -414,8 +429,7 @@ def to_xy(p) -> np.ndarray:
 
     Parameters
     ----------
-    p : array_like, shape (..., 3)
-        Homogeneous points.
+    {p}
 
     Returns
     -------
@@ -477,6 +491,7 @@ def direction(p) -> np.ndarray:
     return np.stack([_safe_div(-p[..., 1], den), _safe_div(p[..., 0], den)], axis=-1)
 
 
+@_shared
 def line_direction(l) -> np.ndarray:
     """Unit direction ``(fx, fy)/|f|`` along a line (thesis 5.55: the vector ``e``).
 
@@ -484,8 +499,7 @@ def line_direction(l) -> np.ndarray:
 
     Parameters
     ----------
-    l : array_like, shape (..., 3)
-        Homogeneous lines ``[fx, fy, tz]``.
+    {l}
 
     Returns
     -------
@@ -504,6 +518,7 @@ def line_direction(l) -> np.ndarray:
     return np.stack([_safe_div(f[..., 0], n), _safe_div(f[..., 1], n)], axis=-1)
 
 
+@_shared
 def foot_point(l) -> np.ndarray:
     """The point of a line nearest to the origin, as a homogeneous point.
 
@@ -511,8 +526,7 @@ def foot_point(l) -> np.ndarray:
 
     Parameters
     ----------
-    l : array_like, shape (..., 3)
-        Homogeneous lines.
+    {l}
 
     Returns
     -------
@@ -642,6 +656,7 @@ def _checked_cross(a, b, names: str, what: str, cond_limit: float) -> np.ndarray
     return c
 
 
+@_shared
 def join(p, q, cond_limit: float = COND_LIMIT) -> np.ndarray:
     """The line through two points, ``p × q`` (thesis 5.27-5.32).
 
@@ -652,29 +667,23 @@ def join(p, q, cond_limit: float = COND_LIMIT) -> np.ndarray:
     point is the line through the point in that direction, the join of two
     ideal points is the line at infinity.
 
+    Its condition number ``κ = |p| |q| / |p × q|`` bounds the line's relative error by about ``ε κ``:
+    for finite points ``δ`` apart at distance ``R ≳ 1`` from the origin ``κ ≈ R / δ`` and the line
+    misses them by about ``ε R² / δ``.  Two distinct ideal points are not near each other unless their
+    directions differ by less than about ``1/cond_limit`` radians.
+
     Parameters
     ----------
     p, q : array_like, shape (..., 3)
         Homogeneous points (broadcast together).
-    cond_limit : float, optional
-        Largest accepted condition number ``κ = |p| |q| / |p × q|``
-        (:func:`cross_cond`), :data:`planargeo.errors.COND_LIMIT` = ``1e12`` by default.  The
-        returned line's relative error is at most about ``ε κ``; for finite
-        points ``δ`` apart at distance ``R ≳ 1`` from the origin ``κ ≈ R / δ``
-        and the line misses them by about ``ε R² / δ``.
+    {cond_limit}
 
     Returns
     -------
     ndarray, shape (..., 3)
+        The line ``p × q``.
 
-    Raises
-    ------
-    DegenerateGeometryError
-        If ``p`` and ``q`` are the same point (``p × q`` exactly zero, ``.cond``
-        is ``inf``), one of them is the zero vector, or they are so nearly the
-        same point that ``κ > cond_limit`` (``.cond`` is the largest such κ).
-        Two distinct ideal points are not near each other unless their
-        directions differ by less than about ``1/cond_limit`` radians.
+    {cross_raises}
 
     Examples
     --------
@@ -694,6 +703,7 @@ def join(p, q, cond_limit: float = COND_LIMIT) -> np.ndarray:
     return _checked_cross(p, q, "pq", "join(p, q): p and q are {kind} point", cond_limit)
 
 
+@_shared
 def meet(l, m, cond_limit: float = COND_LIMIT) -> np.ndarray:
     """The point common to two lines, ``l × m`` (thesis 5.33-5.34).
 
@@ -701,26 +711,21 @@ def meet(l, m, cond_limit: float = COND_LIMIT) -> np.ndarray:
     (well conditioned unless the lines are nearly the same line).  Thesis
     (5.34), in standard coordinates, is ``-(l × m)``: the same point.
 
+    Its condition number ``κ = |l| |m| / |l × m|`` bounds the point's relative error by about ``ε κ``:
+    for two lines through a point near the origin at an angle ``θ``, ``κ ≈ 1/θ``.
+
     Parameters
     ----------
     l, m : array_like, shape (..., 3)
         Homogeneous lines (broadcast together).
-    cond_limit : float, optional
-        Largest accepted condition number ``κ = |l| |m| / |l × m|``
-        (:func:`cross_cond`), :data:`planargeo.errors.COND_LIMIT` = ``1e12`` by default.  The
-        returned point's relative error is at most about ``ε κ``; for two
-        lines through a point near the origin at an angle ``θ``, ``κ ≈ 1/θ``.
+    {cond_limit}
 
     Returns
     -------
     ndarray, shape (..., 3)
+        The point ``l × m``.
 
-    Raises
-    ------
-    DegenerateGeometryError
-        If ``l`` and ``m`` are the same line (``l × m`` exactly zero, ``.cond``
-        is ``inf``), one of them is the zero vector, or they are so nearly the
-        same line that ``κ > cond_limit`` (``.cond`` is the largest such κ).
+    {cross_raises}
 
     Examples
     --------
@@ -770,6 +775,7 @@ def incidence(p, l) -> np.ndarray:
         return check_overflow(np.einsum("...i,...i->...", p, l), "incidence(p, l)", "p or l")
 
 
+@_shared
 def signed_distance(p, l) -> np.ndarray:
     """Signed distance from point ``p`` to line ``l`` (thesis 5.23).
 
@@ -784,10 +790,7 @@ def signed_distance(p, l) -> np.ndarray:
 
     Parameters
     ----------
-    p : array_like, shape (..., 3)
-        Homogeneous points.
-    l : array_like, shape (..., 3)
-        Homogeneous lines, broadcast against ``p``.
+    {p l}
 
     Returns
     -------
@@ -937,6 +940,7 @@ def from_standard(x) -> np.ndarray:
     return np.einsum("ij,...j->...i", T_STD, x)
 
 
+@_shared
 def conic_to_standard(C) -> np.ndarray:
     """A conic's matrix in standard coordinates, ``T C T`` (thesis 5.35, 5.47).
 
@@ -945,10 +949,7 @@ def conic_to_standard(C) -> np.ndarray:
     C : array_like, shape (..., 3, 3)
         Symmetric conic matrix in the package's coordinates.
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
-        ``T C T`` with ``T`` of (5.47).
+    {standard}
 
     Examples
     --------
@@ -961,6 +962,7 @@ def conic_to_standard(C) -> np.ndarray:
     return T_STD @ C @ T_STD
 
 
+@_shared
 def conic_from_standard(S) -> np.ndarray:
     """A conic's matrix in the package's coordinates from standard coordinates, ``T S T``.
 
@@ -969,10 +971,7 @@ def conic_from_standard(S) -> np.ndarray:
     S : array_like, shape (..., 3, 3)
         Symmetric conic matrix in standard coordinates.
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
-        ``T S T`` with ``T`` of (5.47).
+    {standard}
 
     Examples
     --------
