@@ -255,16 +255,13 @@ def joint_axes(kind: str, ox, oy, phi, qi):
         x1, y1 = ox + qi[..., 0] * c, oy + qi[..., 0] * s
         cols = [np.stack([c, s, zero], -1), np.stack([y1, -x1, one], -1)]
         return cols, (x1, y1, phi + qi[..., 1])
-    if kind == "twin_prismatic":       # thesis 4.79: s = [e, e⊥], no rotation
+    if kind in ("twin_prismatic", "plane"):       # slide along e and e⊥; a plane joint then turns
         x1 = ox + qi[..., 0] * c - qi[..., 1] * s
         y1 = oy + qi[..., 0] * s + qi[..., 1] * c
         cols = [np.stack([c, s, zero], -1), np.stack([-s, c, zero], -1)]
-        return cols, (x1, y1, phi)
-    if kind == "plane":
-        x1 = ox + qi[..., 0] * c - qi[..., 1] * s
-        y1 = oy + qi[..., 0] * s + qi[..., 1] * c
-        cols = [np.stack([c, s, zero], -1), np.stack([-s, c, zero], -1), np.stack([y1, -x1, one], -1)]
-        return cols, (x1, y1, phi + qi[..., 2])
+        if kind == "twin_prismatic":       # thesis 4.79: s = [e, e⊥], no rotation
+            return cols, (x1, y1, phi)
+        return cols + [np.stack([y1, -x1, one], -1)], (x1, y1, phi + qi[..., 2])
     if kind == "fixed":
         return [], (ox, oy, phi)
     raise AssertionError(kind)  # pragma: no cover (Joint validates kinds)

@@ -194,10 +194,7 @@ def joint_scale(A, s, point):
     a00, a01, a02 = A[..., 0, 0], A[..., 0, 1], A[..., 0, 2]
     a11, a12, a22 = A[..., 1, 1], A[..., 1, 2], A[..., 2, 2]
     with np.errstate(over="ignore", under="ignore", invalid="ignore"):   # out of range: check_overflow below
-        p02 = a02 + y * a00 - x * a01
-        p12 = a12 + y * a01 - x * a11
-        p22 = a22 + y * a02 - x * a12 + y * p02 - x * p12
-        F2 = a00 * a00 + a11 * a11 + p22 * p22 + 2.0 * (a01 * a01 + p02 * p02 + p12 * p12)
+        p02, p12, p22, F2 = _moved_inertia(a00, a01, a02, a11, a12, a22, x, y)
     if not np.all((F2 < 1e300) & (F2 > 1e-300)):
         # squares overflowed or underflowed (masses like 1e160 or 1e-170): the norm is homogeneous,
         # so take it of the entries divided by their largest magnitude, then scale back
@@ -217,13 +214,18 @@ def joint_scale(A, s, point):
     return float(out) if np.ndim(out) == 0 else out
 
 
-def _joint_scale_one(A, cols, x, y):
-    """:func:`joint_scale` of one joint, ``A`` and the columns of ``s`` as lists; None where squares leave range."""
-    (a00, a01, a02), (_, a11, a12), (_, _, a22) = A
+def _moved_inertia(a00, a01, a02, a11, a12, a22, x, y):
+    """The moment entries ``p02, p12, p22`` of ``A_P`` and ``‖A_P‖_F²`` (:func:`joint_scale`), of floats or arrays alike."""
     p02 = a02 + y * a00 - x * a01
     p12 = a12 + y * a01 - x * a11
     p22 = a22 + y * a02 - x * a12 + y * p02 - x * p12
-    F2 = a00 * a00 + a11 * a11 + p22 * p22 + 2.0 * (a01 * a01 + p02 * p02 + p12 * p12)
+    return p02, p12, p22, a00 * a00 + a11 * a11 + p22 * p22 + 2.0 * (a01 * a01 + p02 * p02 + p12 * p12)
+
+
+def _joint_scale_one(A, cols, x, y):
+    """:func:`joint_scale` of one joint, ``A`` and the columns of ``s`` as lists; None where squares leave range."""
+    (a00, a01, a02), (_, a11, a12), (_, _, a22) = A
+    F2 = _moved_inertia(a00, a01, a02, a11, a12, a22, x, y)[3]
     if not 1e-300 < F2 < 1e300:
         return None
     ss = 0.0
