@@ -23,7 +23,8 @@ from pathlib import Path
 
 from planargeo.errors import InputError, OutputError
 
-__all__ = ["atomic_write", "atomic_write_many", "digest", "read_manifest", "manifest_bytes", "owned_files"]
+__all__ = ["atomic_write", "atomic_write_many", "digest", "read_manifest", "manifest_bytes", "owned_files",
+           "make_folder"]
 
 
 def _umask_mode() -> int:
@@ -301,3 +302,56 @@ def owned_files(folder, entries, new=None) -> tuple[dict[str, str], list[str]]:
         else:
             changed.append(name)
     return own, sorted(changed)
+
+
+def make_folder(path, what: str = "--out") -> bool:
+    """Make sure ``path`` is a folder, creating it (not its parents) if new; True if this call created it.
+
+    The folder a command writes into (``planargeo gallery --out``, ``planargeo bench --out``).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The folder.
+    what : str, optional
+        How the messages name it (the command's option).
+
+    Returns
+    -------
+    bool
+        Whether this call created the folder.
+
+    Raises
+    ------
+    OutputError
+        One line naming the folder: a file in the way, a missing parent folder, a folder that
+        cannot be created or looked at (a name too long, no permission).
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> new = pathlib.Path(tempfile.mkdtemp()) / "gallery"
+    >>> make_folder(new), make_folder(new)
+    (True, False)
+    >>> make_folder(new / "no" / "such")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.OutputError: --out .../gallery/no/such: the parent folder .../gallery/no does not exist
+    """
+    path = Path(path)
+    try:
+        if path.exists() or path.is_symlink():
+            if not path.is_dir():
+                raise OutputError(f"{what} {path} is a file, not a folder")
+            return False
+        if not path.parent.is_dir():
+            raise OutputError(f"{what} {path}: the parent folder {path.parent} does not exist")
+        try:
+            path.mkdir()
+        except OSError as e:
+            raise OutputError(f"{what} {path}: cannot create the folder: {e.strerror or e}") from e
+        return True
+    except OutputError:
+        raise
+    except OSError as e:                    # a name too long, no permission to look...
+        raise OutputError(f"{what} {path}: {e.strerror or e}") from e

@@ -34,7 +34,7 @@ import tempfile
 from pathlib import Path
 
 from planargeo.errors import InputError, NonFiniteError, OutputError, SizeLimitError
-from planargeo.files import atomic_write_many, digest, manifest_bytes, owned_files, read_manifest
+from planargeo.files import atomic_write_many, digest, make_folder, manifest_bytes, owned_files, read_manifest
 
 __all__ = ["add_arguments", "main", "find_suite", "out_folder", "parse_sizes", "MANIFEST", "MAX_SIZE",
            "MAX_SIZE_COUNT"]
@@ -181,28 +181,19 @@ def _prepare(out: str | None, force: bool) -> tuple[Path, bool]:
         except OSError as e:
             raise OutputError(f"cannot create a temporary folder: {e.strerror or e}") from e
     p = Path(out)
-    try:
-        if p.exists() or p.is_symlink():
-            if not p.is_dir():
-                raise OutputError(f"--out {p} is not a folder")
-            if read_manifest(p / MANIFEST) is None and any(p.iterdir()) and not force:
-                raise OutputError(f"--out {p} holds files that are not a benchmark result of planargeo bench "
-                                  f"(it has no {MANIFEST} manifest): choose another folder, or pass --force "
-                                  "to write there anyway (nothing is deleted)")
-            return p, False
-        if not p.parent.is_dir():
-            raise OutputError(f"--out {p}: the parent folder {p.parent} does not exist")
-        try:
-            p.mkdir()
-        except OSError as e:
-            raise OutputError(f"--out {p}: cannot create the folder: {e.strerror or e}") from e
+    if make_folder(p):
         return p, True
-    except OutputError as e:
-        if str(e).startswith("cannot read the manifest"):
-            raise OutputError(f"--out {p}: {e}") from e
-        raise
-    except OSError as e:                  # a name too long, no permission to look...
+    try:
+        foreign = read_manifest(p / MANIFEST) is None and any(p.iterdir())
+    except OutputError as e:              # cannot read the manifest
+        raise OutputError(f"--out {p}: {e}") from e
+    except OSError as e:                  # no permission to look...
         raise OutputError(f"--out {p}: {e.strerror or e}") from e
+    if foreign and not force:
+        raise OutputError(f"--out {p} holds files that are not a benchmark result of planargeo bench "
+                          f"(it has no {MANIFEST} manifest): choose another folder, or pass --force "
+                          "to write there anyway (nothing is deleted)")
+    return p, False
 
 
 def _stage(out: Path, created: bool) -> Path:
@@ -242,7 +233,7 @@ def out_folder(out: str | None, force: bool = False) -> Path:
     >>> out_folder("/dev/full")
     Traceback (most recent call last):
     ...
-    planargeo.errors.OutputError: --out /dev/full is not a folder
+    planargeo.errors.OutputError: --out /dev/full is a file, not a folder
     """
     p, created = _prepare(out, force)
     shutil.rmtree(_stage(p, created))

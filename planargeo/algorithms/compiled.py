@@ -64,7 +64,7 @@ def kernels_for(model):
     Parameters
     ----------
     model : Model
-        The mechanism.
+        The mechanism; the kernels cover it when its joints are all revolute, prismatic or fixed.
 
     Returns
     -------
@@ -230,7 +230,8 @@ def check_finite(result, what: str, **inputs):
     Raises
     ------
     NumericOverflowError
-        If ``result`` holds NaN or infinity.
+        If ``result`` holds NaN or infinity; the message names the largest of ``inputs``
+        and its size.
 
     Examples
     --------
@@ -265,7 +266,8 @@ def cache_is_warm(kernels=None) -> bool:
     Parameters
     ----------
     kernels : module, optional
-        :mod:`planargeo.algorithms.kernels` (imported if not given).
+        The kernels' module, :mod:`planargeo.algorithms.kernels` if not given (then
+        imported, which compiles nothing).
 
     Returns
     -------

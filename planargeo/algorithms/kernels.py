@@ -265,6 +265,15 @@ def _clearly_regular(A, s, D):
     return 1e-300 < F2 < 1e300 and F2 * ss * ss < D * D * COND_LIMIT2
 
 
+@inline
+def _parent_acceleration(a, r, lam, i):
+    """The parent's acceleration ``a_λ`` moved out to body ``i``'s joint point by ``r_i`` (4.8); ``a_0 = 0`` (3.40)."""
+    if lam < 0:
+        return 0.0, 0.0, 0.0
+    a2 = a[lam, 2]
+    return a[lam, 0] - r[i, 1] * a2, a[lam, 1] + r[i, 0] * a2, a2
+
+
 @jit
 @_doc
 def articulated_body_state(model, q, qd, tau, fext, w, qdd):
@@ -341,11 +350,7 @@ def articulated_body_state(model, q, qd, tau, fext, w, qdd):
             d[lam, 2] += c2 - ry * c0 + rx * c1
     # 4. joint accelerations, base to tip (3.40-3.42)
     for i in range(len(kind)):
-        lam = parent[i]
-        a0 = a1 = a2 = 0.0                                  # a_0 = 0 (3.40)
-        if lam >= 0:                                        # a_λ moved out to o_i (4.8)
-            a2 = a[lam, 2]
-            a0, a1 = a[lam, 0] - r[i, 1] * a2, a[lam, 1] + r[i, 0] * a2
+        a0, a1, a2 = _parent_acceleration(a, r, parent[i], i)
         if kind[i] != FIXED:                                # q̈_i = D⁻¹ (u - Uᵀ a_λ) (3.41)
             qi = (u[i] - (U[i, 0] * a0 + U[i, 1] * a1 + U[i, 2] * a2)) / w.D[i]
             qdd[k] = qi
@@ -365,11 +370,9 @@ def newton_euler_state(model, q, qd, qdd, fext, w, tau):
     Parameters
     ----------
     {model}
-    qdd : numpy.ndarray, shape (nq,)
-        Joint accelerations.
+    qdd, tau : numpy.ndarray, shape (nq,)
+        Joint accelerations; the output, joint forces.
     {scratch}
-    tau : numpy.ndarray, shape (nq,)
-        Output: joint forces.
 
     Returns
     -------
@@ -383,12 +386,8 @@ def newton_euler_state(model, q, qd, qdd, fext, w, tau):
     r, s, kappa, I, a = w.r, w.s, w.kappa, w.I, w.a
     f = w.p                   # f_i = I_i a_i + p_i + Σ f_children (3.10), collected in place of p_i
     k = 0
-    for i in range(len(kind)):                              # a_i = a_λ + s_i q̈_i + κ_i (2.18), a_0 = 0
-        lam = parent[i]
-        a0 = a1 = a2 = 0.0
-        if lam >= 0:                                        # a_λ moved out to o_i (4.8)
-            a2 = a[lam, 2]
-            a0, a1 = a[lam, 0] - r[i, 1] * a2, a[lam, 1] + r[i, 0] * a2
+    for i in range(len(kind)):                              # a_i = a_λ + s_i q̈_i + κ_i (2.18)
+        a0, a1, a2 = _parent_acceleration(a, r, parent[i], i)
         if kind[i] != FIXED:
             a0, a1, a2 = a0 + s[i, 0] * qdd[k], a1 + s[i, 1] * qdd[k], a2 + s[i, 2] * qdd[k]
             k += 1
@@ -419,8 +418,6 @@ def _fits(kind, x, y, z, fext):
     if x.shape[0] != nq or y.shape[0] != nq or z.shape[0] != nq:
         return False
     return fext is None or (fext.shape[0] == kind.shape[0] and fext.shape[1] == 3)
-
-
 
 
 @jit

@@ -39,7 +39,7 @@ import tempfile
 from pathlib import Path
 
 from planargeo.errors import InputError, OutputError
-from planargeo.files import atomic_write_many, digest, manifest_bytes, owned_files, read_manifest
+from planargeo.files import atomic_write_many, digest, make_folder, manifest_bytes, owned_files, read_manifest
 
 DEFAULT_OUT = Path(__file__).resolve().parents[2] / "gallery"
 
@@ -189,31 +189,15 @@ def _folder(out: Path) -> bool:
     Raises :class:`OutputError` (one line naming the folder and the problem) for a missing
     parent, a file in the way, a folder that cannot be created or written into.
     """
-    try:
-        if out.exists() or out.is_symlink():
-            if not out.is_dir():
-                raise OutputError(f"--out {out} is a file, not a folder")
-            created = False
-        else:
-            if not out.parent.is_dir():
-                raise OutputError(f"--out {out}: the parent folder {out.parent} does not exist")
-            try:
-                out.mkdir()
-            except OSError as e:
-                raise OutputError(f"--out {out}: cannot create the folder: {e.strerror or e}") from e
-            created = True
-        try:                                 # root may write anywhere but a read-only file system or /proc
-            fd, probe = tempfile.mkstemp(dir=out, prefix=".planargeo-probe-")
-            os.close(fd)
-            os.unlink(probe)
-        except OSError as e:
-            if created:
-                out.rmdir()
-            raise OutputError(f"--out {out}: cannot write in the folder: {e.strerror or e}") from e
-    except OutputError:
-        raise
-    except OSError as e:                    # a name too long, no permission to look...
-        raise OutputError(f"--out {out}: {e.strerror or e}") from e
+    created = make_folder(out)
+    try:                                 # root may write anywhere but a read-only file system or /proc
+        fd, probe = tempfile.mkstemp(dir=out, prefix=".planargeo-probe-")
+        os.close(fd)
+        os.unlink(probe)
+    except OSError as e:
+        if created:
+            out.rmdir()
+        raise OutputError(f"--out {out}: cannot write in the folder: {e.strerror or e}") from e
     return created
 
 

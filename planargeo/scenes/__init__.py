@@ -183,7 +183,7 @@ def parameters(name: str) -> dict[str, Any]:
     Parameters
     ----------
     name : str
-        A registered scene name (see :func:`names`).
+        A registered scene name; an unknown one raises :class:`SceneError`, as in :func:`get`.
 
     Returns
     -------
@@ -205,7 +205,7 @@ def limits(name: str) -> dict[str, int]:
     Parameters
     ----------
     name : str
-        A registered scene name (see :func:`names`).
+        A registered scene name, as for :func:`parameters`.
 
     Returns
     -------

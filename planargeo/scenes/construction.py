@@ -205,14 +205,22 @@ def _direction(angle_deg: float) -> np.ndarray:
     return np.array([0.0 if abs(c) < 1e-15 else c, 0.0 if abs(s) < 1e-15 else s])
 
 
+def _twist(x, y, w, u, angle, k) -> np.ndarray:
+    """Twist ``v_k``: a rotation ``w`` about ``(x, y)`` plus a translation ``u`` at ``angle`` degrees."""
+    v = w * unit_rotation([x, y]) + np.append(u * _direction(angle), 0.0)
+    return _nonzero(v, f"v{k}", "twist")
+
+
+def _wrench(x, y, F, angle, tau, k) -> np.ndarray:
+    """Wrench ``f_k``: a force ``F`` at ``angle`` degrees through ``(x, y)`` plus a couple ``tau``."""
+    d = F * _direction(angle)
+    return _nonzero(np.array([d[0], d[1], x * d[1] - y * d[0] + tau]), f"f{k}", "wrench")
+
+
 # --------------------------------------------------------------------------- twist sum (4.2)
 def _twist_sum(x1=-1.5, y1=0.0, w1=1.0, u1=0.0, angle1=0.0,
                x2=1.5, y2=0.5, w2=2.0, u2=0.0, angle2=90.0) -> Construction:
-    def twist(x, y, w, u, ang, k):
-        v = w * unit_rotation([x, y]) + np.append(u * _direction(ang), 0.0)
-        return _nonzero(v, f"v{k}", "twist")
-
-    v1, v2 = twist(x1, y1, w1, u1, angle1, 1), twist(x2, y2, w2, u2, angle2, 2)
+    v1, v2 = _twist(x1, y1, w1, u1, angle1, 1), _twist(x2, y2, w2, u2, angle2, 2)
     c = add_twists(v1, v2)
     case = twists_case(v1, v2)
     steps = [ConstructionStep("poles", "Q₁, Q₂: the poles of v₁ and v₂", "4.10",
@@ -249,12 +257,7 @@ def _twist_sum(x1=-1.5, y1=0.0, w1=1.0, u1=0.0, angle1=0.0,
 # --------------------------------------------------------------------------- wrench sum (4.4)
 def _wrench_sum(x1=-1.5, y1=-0.5, F1=1.0, angle1=60.0, tau1=0.0,
                 x2=1.5, y2=0.0, F2=1.5, angle2=120.0, tau2=0.0) -> Construction:
-    def wrench(x, y, F, ang, tau, k):
-        d = F * _direction(ang)
-        f = np.array([d[0], d[1], x * d[1] - y * d[0] + tau])
-        return _nonzero(f, f"f{k}", "wrench")
-
-    f1, f2 = wrench(x1, y1, F1, angle1, tau1, 1), wrench(x2, y2, F2, angle2, tau2, 2)
+    f1, f2 = _wrench(x1, y1, F1, angle1, tau1, 1), _wrench(x2, y2, F2, angle2, tau2, 2)
     c = add_wrenches(f1, f2)
     case = wrenches_case(f1, f2)
     steps = [ConstructionStep("lines", "L₁, L₂: the lines of action of f₁ and f₂", "4.27",
