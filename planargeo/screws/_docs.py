@@ -19,6 +19,8 @@ SCREWS = {
                "    Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).",
     "not_psd": "InputError, SingularInertiaError\n"
                "    ``inertia`` not symmetric positive semi-definite (see :func:`planargeo.screws.kinetic_energy`).",
+    "bad_array": "ShapeError, NonFiniteError, InputError\n"
+                 "    ``array`` without a last axis of 3, not finite, or not real numbers.",
 }
 
 _PLACE = re.compile(r"^( *)\{([\w ]+)\}$", re.M)

@@ -497,13 +497,8 @@ class Inertia(_Held):
     """A planar rigid-body inertia at the origin (thesis 1.66, 4.58, 5.64): an imaginary conic.
 
     Wraps one symmetric positive definite ``(..., 3, 3)`` array ``.matrix``
-    (read-only) with the structure of a rigid body (4.58)::
-
-        [[ m,     0,    -m cy       ],
-         [ 0,     m,     m cx       ],
-         [-m cy,  m cx,  J + m |c|² ]]
-
-    so that :attr:`mass`, :attr:`com`, :attr:`rotational_inertia` and
+    (read-only) with the structure of a rigid body (4.58, the matrix of
+    :func:`~planargeo.screws.twists.inertia_matrix`), so that :attr:`mass`, :attr:`com`, :attr:`rotational_inertia` and
     :attr:`radius_of_gyration` are meaningful.  Construct with
     :meth:`from_mass`, :meth:`from_polygon`, :meth:`composite` (or ``+``), or
     from a matrix.  Articulated inertias (chapters 6-7: any symmetric positive

@@ -1137,6 +1137,7 @@ class _Screw(_Held):
         return getattr(elements, cls)(self._array)
 
 
+@documented
 class Twist(_Screw):
     """A planar velocity (or acceleration) twist ``[vx, vy, ω]`` at the origin (thesis 4.6).
 
@@ -1155,8 +1156,7 @@ class Twist(_Screw):
 
     Raises
     ------
-    ShapeError, NonFiniteError, InputError
-        ``array`` without a last axis of 3, not finite, or not real numbers.
+    {bad_array}
 
     Examples
     --------
@@ -1265,6 +1265,7 @@ class Twist(_Screw):
         return self._as_element()
 
 
+@documented
 class Wrench(_Screw):
     """A planar force wrench ``[fx, fy, τz]`` at the origin (thesis 4.21).
 
@@ -1286,8 +1287,7 @@ class Wrench(_Screw):
 
     Raises
     ------
-    ShapeError, NonFiniteError, InputError
-        ``array`` without a last axis of 3, not finite, or not real numbers.
+    {bad_array}
 
     Examples
     --------
