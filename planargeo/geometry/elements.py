@@ -19,6 +19,9 @@ the point lies on the line).
 """
 from __future__ import annotations
 
+import inspect
+import textwrap
+
 import numpy as np
 
 from planargeo.geometry import conics as _c
@@ -31,11 +34,9 @@ __all__ = ["Point", "Line", "Conic"]
 _EQ_TOL = 1e-12
 
 
-#: Docstring entries the classes share (a line ``{point}`` in a docstring); the conics' own too.
-_shared = _p._entries({**_c._ENTRIES,
-                       "point": "point : Point or array_like, shape (3,)\n    A Point or homogeneous point array.",
-                       "line": "line : Line or array_like, shape (3,)\n    A Line or homogeneous line array.",
-                       "new_conic": "Returns\n-------\nConic\n    The new conic."})
+#: Docstring entries the classes share, said once (a line ``{point}`` in a docstring).
+_shared = _p._entries({"point": "point : Point or array_like, shape (3,)\n    A Point or homogeneous point array.",
+                       "line": "line : Line or array_like, shape (3,)\n    A Line or homogeneous line array."})
 
 
 def _fmt(v: float) -> str:
@@ -503,6 +504,26 @@ Point.incidence = Line.incidence = _PointOrLine.incidence
 Point.distance_to = Line.signed_distance = _PointOrLine._signed_distance
 
 
+def _conic_of(make, examples: str) -> classmethod:
+    """A constructor of :class:`Conic`: the conic of ``make``, a function of :mod:`planargeo.geometry.conics`.
+
+    It takes ``make``'s parameters and is documented by ``make``'s summary and Parameters (said once,
+    there), then its own Returns and ``examples``.
+    """
+    def construct(cls, *args, **kwargs):
+        return cls(make(*args, **kwargs))
+
+    own = inspect.signature(make)
+    cls = inspect.Parameter("cls", inspect.Parameter.POSITIONAL_ONLY)
+    construct.__signature__ = own.replace(parameters=[cls, *own.parameters.values()], return_annotation="Conic")
+    construct.__name__ = make.__name__.removeprefix("conic_")
+    construct.__qualname__ = f"Conic.{construct.__name__}"
+    construct.__doc__ = "\n".join([make.__doc__.split("\n    Returns\n")[0], "    Returns", "    -------", "    Conic",
+                                   "        One conic (a batch raises ShapeError).", "", "    Examples", "    --------",
+                                   textwrap.indent(textwrap.dedent(examples).strip(), "    "), "    "])
+    return classmethod(construct)
+
+
 class Conic(_Homogeneous):
     """A conic (thesis 5.35): a symmetric 3×3 matrix mapping points to lines.
 
@@ -545,109 +566,22 @@ class Conic(_Homogeneous):
         m.setflags(write=False)
         self._a = m
 
-    @classmethod
-    @_shared
-    def circle(cls, centre, radius, imaginary: bool = False) -> "Conic":
-        """Circle of ``radius`` about ``centre`` (imaginary: ``|x - c|² = -r²``).
-
-        The conic of :func:`planargeo.geometry.conics.conic_circle`.
-
-        Parameters
-        ----------
-        {centre}
-        radius : float
-            Radius (m).
-        imaginary : bool, optional
-            Build the imaginary circle instead.
-
-        {new_conic}
-
-        Examples
-        --------
+    circle = _conic_of(_c.conic_circle, """
         >>> Conic.circle((1, 2), 3), Conic.circle((0, 0), 1, imaginary=True)
-        (Conic(real circle, centre=(1, 2)), Conic(imaginary circle, centre=(0, 0)))
-        """
-        return cls(_c.conic_circle(centre, radius, imaginary=imaginary))
-
-    @classmethod
-    @_shared
-    def ellipse(cls, centre, axes, angle=0.0) -> "Conic":
-        """Ellipse with semi-axes ``axes``, the first turned by ``angle``.
-
-        The conic of :func:`planargeo.geometry.conics.conic_ellipse`.
-
-        Parameters
-        ----------
-        {centre ellipse_axes}
-
-        {new_conic}
-
-        Examples
-        --------
+        (Conic(real circle, centre=(1, 2)), Conic(imaginary circle, centre=(0, 0)))""")
+    ellipse = _conic_of(_c.conic_ellipse, """
         >>> Conic.ellipse((1, 2), (3, 1)).affine_frame().t
-        array([1., 2.])
-        """
-        return cls(_c.conic_ellipse(centre, axes, angle))
-
-    @classmethod
-    @_shared
-    def hyperbola(cls, centre, axes, angle=0.0) -> "Conic":
-        """Hyperbola ``x'²/a² - y'²/b² = 1`` in the frame at ``centre`` turned by ``angle``.
-
-        The conic of :func:`planargeo.geometry.conics.conic_hyperbola`.
-
-        Parameters
-        ----------
-        {centre hyperbola_axes}
-
-        {new_conic}
-
-        Examples
-        --------
+        array([1., 2.])""")
+    hyperbola = _conic_of(_c.conic_hyperbola, """
         >>> Conic.hyperbola((0, 0), (1, 2))
-        Conic(real hyperbola, centre=(0, 0))
-        """
-        return cls(_c.conic_hyperbola(centre, axes, angle))
-
-    @classmethod
-    @_shared
-    def parabola(cls, vertex, focal_length, angle=0.0) -> "Conic":
-        """Parabola ``y' = x'²/(4 f)`` at ``vertex`` turned by ``angle``.
-
-        The conic of :func:`planargeo.geometry.conics.conic_parabola`.
-
-        Parameters
-        ----------
-        {parabola}
-
-        {new_conic}
-
-        Examples
-        --------
+        Conic(real hyperbola, centre=(0, 0))""")
+    parabola = _conic_of(_c.conic_parabola, """
         >>> P = Conic.parabola((0, 0), 0.25)                  # y = x²
         >>> P, P.contains(Point.from_xy(2, 4))
-        (Conic(real parabola, vertex=(0, 0), axis=(0, 1)), True)
-        """
-        return cls(_c.conic_parabola(vertex, focal_length, angle))
-
-    @classmethod
-    @_shared
-    def from_coefficients(cls, a, b, c, d, e, f) -> "Conic":
-        """Conic ``a x² + b xy + c y² + d x + e y + f = 0``.
-
-        Parameters
-        ----------
-        a, b, c, d, e, f : float
-            Coefficients of the implicit equation.
-
-        {new_conic}
-
-        Examples
-        --------
+        (Conic(real parabola, vertex=(0, 0), axis=(0, 1)), True)""")
+    from_coefficients = _conic_of(_c.conic_from_coefficients, """
         >>> Conic.from_coefficients(1, 0, 1, 0, 0, -4)      # x² + y² = 4
-        Conic(real circle, centre=(0, 0))
-        """
-        return cls(_c.conic_from_coefficients(a, b, c, d, e, f))
+        Conic(real circle, centre=(0, 0))""")
 
     @property
     def matrix(self) -> np.ndarray:
