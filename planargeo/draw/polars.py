@@ -38,7 +38,7 @@ from planargeo.draw.geometry import _mat, _vec, point_xy
 from planargeo.draw.picture import PX_PER_PT, Picture, plain_text
 from planargeo.draw.pictures._words import num, pair
 from planargeo.draw.pictures.common import label_line, point_along
-from planargeo.draw.sketch import as_picture, dimension, documented, segment
+from planargeo.draw.sketch import added, as_picture, dimension, documented, segment
 from planargeo.draw.style import COLORS
 from planargeo.errors import InputError
 from planargeo.geometry.conics import (line_conic_intersections, polar_construction_exterior,
@@ -50,13 +50,13 @@ __all__ = ["line_conic_points", "interior_construction", "power_values", "polar_
            "polar_interior", "percussion", "power"]
 
 
-def _xy(p) -> str:
-    """``(x, y)`` of a point, or where at infinity it lies (a direction)."""
+def _where(p) -> str:
+    """Where a point is: ``at (x, y)``, or at infinity in a direction."""
     xy = point_xy(p)
     if xy is None:
         d = np.array([-p[1], p[0]]) / math.hypot(p[0], p[1])
         return f"at infinity in the direction {pair(d, 3)}"
-    return pair(xy, 3)
+    return f"at {pair(xy, 3)}"
 
 
 def _line_words(l) -> str:
@@ -68,18 +68,39 @@ def _line_words(l) -> str:
     return f"through {pair((fy * tz / F ** 2, -fx * tz / F ** 2), 3)}, direction {pair((fx / F, fy / F), 3)}"
 
 
-def _last(pic: Picture) -> dict:
+def _line(pic: Picture, id: str, l, role: str, symbol: str, desc: str, *, anchor=None,
+          side: float = 1.0) -> dict:
+    """A line without a sense arrow, labelled with its symbol beside it (:func:`label_line`); the element."""
+    pic.line(id, l, role=role, arrow=False, label="", symbol=symbol, desc=desc)
+    label_line(pic, id, plain_text(symbol), anchor=anchor, side=side)
     return pic.elements[-1]
 
 
-def _conic(pic: Picture, id: str, C) -> None:
+def _inertia(pic: Picture, prefix: str, I, more: str) -> dict:
+    """The inertia ``I`` as its circle of gyration (dashed), its description ending with ``more``; the element."""
+    return added(pic.conic, prefix + "I", I, role="inertia", symbol="I", label="",
+                 desc="inertia I (5.64) as its circle of gyration" + more)
+
+
+def _polar_and_point(pic: Picture, out: dict, prefix: str, K, p, names, *, inside: bool, through: str,
+                     anchor, side: float) -> dict:
+    """Add the polar ``L`` of a construction ``K`` (labelled) and its point ``P`` to ``out``; ``out``."""
+    P, L = names
+    out["L"] = _line(pic, prefix + "L", K.polar, "wrench", L, anchor=anchor, side=side,
+                     desc=f"polar L = C P of P (5.36): the line through {through}")
+    out["P"] = added(pic.point, prefix + "P", p, role="twist", glyph=False, symbol=P,
+                     desc=f"the point P, {'inside' if inside else 'outside'} C (5.36): {_where(p)}")
+    return out
+
+
+def _conic(pic: Picture, id: str, C) -> dict:
     """The conic ``C`` labelled ``C``: inside an ellipse, near its upper left (clear of the curve),
     or at the first drawn point of another conic."""
-    pic.conic(id, C, role="conic", symbol="C", label="", desc="the conic C (5.35): the points x with xᵀCx = 0")
-    el = _last(pic)
+    el = added(pic.conic, id, C, role="conic", symbol="C", label="",
+               desc="the conic C (5.35): the points x with xᵀCx = 0")
     e = next((q for q in el["parts"] if q["p"] in ("ellipse", "path")), None)
     if e is None:
-        return
+        return el
     if e["p"] == "ellipse":      # the unit circle under (x, y) + m: its point farthest up-left, 70 % out
         a, b, c, d = e["m"]
         t = np.linspace(0.0, 2 * math.pi, 72, endpoint=False)
@@ -94,6 +115,7 @@ def _conic(pic: Picture, id: str, C) -> None:
         ha, va = "left", "bottom"
     el["parts"].append({"p": "text", "x": float(x), "y": float(y), "dx": dx, "dy": dy, "text": "C",
                         "ha": ha, "va": va})
+    return el
 
 
 def line_conic_points(C, L) -> list[np.ndarray]:
@@ -182,31 +204,19 @@ def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=No
     pic = as_picture(pic)
     C, p = _mat(C, "C"), _vec(p, "p")
     K = polar_construction_exterior(C, p)
-    P, L = names
     contacts = [to_xy(X) for X in K.contacts]
-    out = {"construction": K}
-    _conic(pic, prefix + "C", C)
-    out["conic"] = _last(pic)
-    out["tangents"] = []
-    for k, (t, xy) in enumerate(zip(K.tangents, contacts)):
-        pic.line(f"{prefix}tangent {k + 1}", t, role="construct", arrow=False, label="",
-                 symbol=f"T{k + 1}",
-                 desc=f"tangent {k + 1} from P to C (5.38–5.39): touches C at {pair(xy, 3)}")
-        out["tangents"].append(_last(pic))
-    pic.marks(prefix + "contacts", contacts, role="construct", size=3.5 * PX_PER_PT,
-              color=COLORS["construct"], z=5, symbol="contacts",
-              desc=f"where the tangents from P touch C (5.38): {pair(contacts[0], 3)} and {pair(contacts[1], 3)}")
-    out["contacts"] = _last(pic)
-    pic.line(prefix + "L", K.polar, role="wrench", arrow=False, label="", symbol=L,
-             desc=f"polar L = C P of P (5.36): the line through the contacts {pair(contacts[0], 3)} "
-                  f"and {pair(contacts[1], 3)}")
-    label_line(pic, prefix + "L", plain_text(L), anchor=(contacts[0] + contacts[1]) / 2 if L_anchor is None
-               else L_anchor, side=L_side)
-    out["L"] = _last(pic)
-    pic.point(prefix + "P", p, role="twist", glyph=False, symbol=P,
-              desc=f"the point P, outside C (5.36): at {_xy(p)}")
-    out["P"] = _last(pic)
-    return out
+    both = f"{pair(contacts[0], 3)} and {pair(contacts[1], 3)}"
+    out = {"construction": K, "conic": _conic(pic, prefix + "C", C)}
+    out["tangents"] = [added(pic.line, f"{prefix}tangent {k + 1}", t, role="construct", arrow=False, label="",
+                             symbol=f"T{k + 1}",
+                             desc=f"tangent {k + 1} from P to C (5.38–5.39): touches C at {pair(xy, 3)}")
+                       for k, (t, xy) in enumerate(zip(K.tangents, contacts))]
+    out["contacts"] = added(pic.marks, prefix + "contacts", contacts, role="construct", size=3.5 * PX_PER_PT,
+                            color=COLORS["construct"], z=5, symbol="contacts",
+                            desc=f"where the tangents from P touch C (5.38): {both}")
+    return _polar_and_point(pic, out, prefix, K, p, names, inside=False, through=f"the contacts {both}",
+                            anchor=(contacts[0] + contacts[1]) / 2 if L_anchor is None else L_anchor,
+                            side=L_side)
 
 
 def interior_construction(C, p, angles=(0.35, 1.9)):
@@ -250,7 +260,6 @@ def interior_construction(C, p, angles=(0.35, 1.9)):
     return polar_construction_interior(C, p, lines=lines)
 
 
-@documented
 def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L = CP$"),
                    L_anchor=None, L_side: float = 1.0, prefix: str = "") -> dict:
     """Polar of an interior point (thesis 5.36, Theorem 12, Fig. 5.3).
@@ -263,20 +272,14 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
 
     Parameters
     ----------
-    {pic}
-    C : array_like (3, 3)
-        A real conic.
+    pic, C, names, L_side, prefix
+        As :func:`polar_exterior`.
     p : array_like (3,)
         An interior point.
     angles : (float, float)
         Directions (radians) of the two chords through ``p``.
-    names : (str, str)
-        Symbols (labels) of the point and its polar.
     L_anchor : (x, y), optional
         Near which point of the polar its label sits (default: the view's centre).
-    L_side : float
-        +1: the polar's label above it (right of a vertical one); -1: below it.
-    {prefix}
 
     Returns
     -------
@@ -303,44 +306,28 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
     pic = as_picture(pic)
     C, p = _mat(C, "C"), _vec(p, "p")
     K = interior_construction(C, p, angles)
-    P, L = names
-    out = {"construction": K}
-    _conic(pic, prefix + "C", C)
-    out["conic"] = _last(pic)
-    out["chords"], out["tangents"] = [], []
+    out = {"construction": K, "conic": _conic(pic, prefix + "C", C)}
     ends = [[to_xy(X) for X in K.chord_points[k]] for k in range(2)]
-    for k in range(2):
-        pic.line(f"{prefix}chord {k + 1}", K.lines[k], role="construct", arrow=False, label="",
-                 symbol=f"chord {k + 1}",
-                 desc=f"chord {k + 1} through P (5.36, step 1): cuts C at {pair(ends[k][0], 3)} and "
-                      f"{pair(ends[k][1], 3)}")
-        out["chords"].append(_last(pic))
-    for k in range(2):
-        for j in range(2):
-            pic.line(f"{prefix}tangent {k + 1}.{j + 1}", K.tangents[k, j], role="construct", arrow=False,
-                     label="", width=0.6 * PX_PER_PT, symbol=f"tangent {k + 1}.{j + 1}",
-                     desc=f"tangent to C at the end {pair(ends[k][j], 3)} of chord {k + 1} (5.38–5.39)")
-            out["tangents"].append(_last(pic))
+    out["chords"] = [added(pic.line, f"{prefix}chord {k + 1}", K.lines[k], role="construct", arrow=False,
+                           label="", symbol=f"chord {k + 1}",
+                           desc=f"chord {k + 1} through P (5.36, step 1): cuts C at {pair(ends[k][0], 3)} and "
+                                f"{pair(ends[k][1], 3)}") for k in range(2)]
+    out["tangents"] = [added(pic.line, f"{prefix}tangent {k + 1}.{j + 1}", K.tangents[k, j], role="construct",
+                             arrow=False, label="", width=0.6 * PX_PER_PT, symbol=f"tangent {k + 1}.{j + 1}",
+                             desc=f"tangent to C at the end {pair(ends[k][j], 3)} of chord {k + 1} (5.38–5.39)")
+                       for k in range(2) for j in range(2)]
     pts = [xy for pair_ in ends for xy in pair_]
-    pic.marks(prefix + "chord points", pts, role="construct", size=3.0 * PX_PER_PT, color=COLORS["construct"],
-              z=5, symbol="chord ends", desc="where the two chords through P cut C (5.38): "
-                                             + ", ".join(pair(xy, 3) for xy in pts))
-    out["chord_points"] = _last(pic)
+    out["chord_points"] = added(pic.marks, prefix + "chord points", pts, role="construct", size=3.0 * PX_PER_PT,
+                                color=COLORS["construct"], z=5, symbol="chord ends",
+                                desc="where the two chords through P cut C (5.38): "
+                                     + ", ".join(pair(xy, 3) for xy in pts))
     for k in range(2):
-        R = K.poles[k]
-        sym = f"$R_{k + 1}$"
-        point_along(pic, f"{prefix}R{k + 1}", R, role="accel", symbol=sym,
+        point_along(pic, f"{prefix}R{k + 1}", K.poles[k], role="accel", symbol=f"$R_{k + 1}$",
                     desc=f"pole R{'₁₂'[k]} of chord {k + 1} (Theorem 12): where the tangents at its ends "
-                         f"meet, {'at ' if point_xy(R) is not None else ''}{_xy(R)}")
-        out[f"R{k + 1}"] = _last(pic)
-    pic.line(prefix + "L", K.polar, role="wrench", arrow=False, label="", symbol=L,
-             desc=f"polar L = C P of P (5.36): the line through R₁ and R₂, {_line_words(K.polar)}")
-    label_line(pic, prefix + "L", plain_text(L), anchor=L_anchor, side=L_side)
-    out["L"] = _last(pic)
-    pic.point(prefix + "P", p, role="twist", glyph=False, symbol=P,
-              desc=f"the point P, inside C (5.36): at {_xy(p)}")
-    out["P"] = _last(pic)
-    return out
+                         f"meet, {_where(K.poles[k])}")
+        out[f"R{k + 1}"] = pic.elements[-1]
+    return _polar_and_point(pic, out, prefix, K, p, names, inside=True,
+                            through=f"R₁ and R₂, {_line_words(K.polar)}", anchor=L_anchor, side=L_side)
 
 
 # --------------------------------------------------------------------------- inertia
@@ -402,10 +389,7 @@ def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = Tr
     if not bool(is_ideal(a)) and np.any(f[:2]) and not np.allclose(to_xy(a), c, rtol=0, atol=1e-12 * max(1.0, rho)):
         foot = to_xy(meet(f, join(a, from_xy(c))))
     out = {"values": {"f": f, "c": c, "foot": foot}}
-    pic.conic(prefix + "I", I, role="inertia", symbol="I", label="",
-              desc=f"inertia I (5.64) as its circle of gyration: radius ρ = {num(rho)} m about the centre of "
-                   f"mass {pair(c, 3)} m")
-    out["inertia"] = _last(pic)
+    out["inertia"] = _inertia(pic, prefix, I, f": radius ρ = {num(rho)} m about the centre of mass {pair(c, 3)} m")
     if foot is not None:
         r = float(np.hypot(*(foot - c)))
         where_f = f"r = ρ²/d = {num(r)} m beyond the centre of mass"
@@ -413,27 +397,19 @@ def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = Tr
         where_f = "a pure couple (the pole is at the centre of mass)"
     else:
         where_f = "through the centre of mass (the pole is at infinity)"
-    pic.line(prefix + "f", f, role="wrench", arrow=False, label="", symbol=f_name,
-             desc=f"axis of percussion f = I a (5.64–5.68): {where_f}")
-    label_line(pic, prefix + "f", plain_text(f_name), anchor=f_anchor)
-    out["f"] = _last(pic)
-    pic.point(prefix + "a", a, role="accel", symbol=a_name,
-              desc=f"acceleration pole a (5.64): the point of the body with no acceleration, "
-                   f"{'at ' if point_xy(a) is not None else ''}{_xy(a)}")
-    out["a"] = _last(pic)
+    out["f"] = _line(pic, prefix + "f", f, "wrench", f_name, anchor=f_anchor,
+                     desc=f"axis of percussion f = I a (5.64–5.68): {where_f}")
+    out["a"] = added(pic.point, prefix + "a", a, role="accel", symbol=a_name,
+                     desc=f"acceleration pole a (5.64): the point of the body with no acceleration, {_where(a)}")
     if dims and foot is not None:
         axy = to_xy(a)
         out["lever"] = segment(pic, prefix + "lever", axy, foot, symbol="lever",
                                desc="the line from the pole a through the centre of mass to the axis (5.68)")
         d = float(np.hypot(*(axy - c)))
-        out["dims"] = []
-        for id_, (q0, q1), sym, desc in (
-                ("d", (axy, c), "d", f"distance d from the pole a to the centre of mass (5.68): {num(d)} m"),
-                ("rho2/d", (c, foot), "ρ²/d",
-                 f"distance ρ²/d from the centre of mass to the axis of percussion (5.68): {num(rho * rho / d)} m")):
-            el = dimension(pic, prefix + id_, q0, q1, sym, desc=desc)
-            el["symbol"] = sym
-            out["dims"].append(el)
+        out["dims"] = [dimension(pic, prefix + id_, q0, q1, sym, desc=desc) for id_, (q0, q1), sym, desc in (
+            ("d", (axy, c), "d", f"distance d from the pole a to the centre of mass (5.68): {num(d)} m"),
+            ("rho2/d", (c, foot), "ρ²/d",
+             f"distance ρ²/d from the centre of mass to the axis of percussion (5.68): {num(rho * rho / d)} m"))]
     return out
 
 
@@ -559,27 +535,19 @@ def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
                 if (p_label_at is not None and F != 0.0 and a[2] != 0.0) else None)
     nv, np_, nf, na = names
     out = {"values": val}
-    pic.conic(prefix + "I", I, role="inertia", symbol="I", label="",
-              desc=f"inertia I (5.64) as its circle of gyration about the centre of mass {pair(val['c'], 3)} m")
-    out["inertia"] = _last(pic)
+    out["inertia"] = _inertia(pic, prefix, I, f" about the centre of mass {pair(val['c'], 3)} m")
     rate = f", rate {num(v[2])} rad/s" if point_xy(v) is not None else " (a translation)"
-    pic.point(prefix + "v", v, role="twist", symbol=nv,
-              desc=f"velocity pole v (5.69): {'at ' if point_xy(v) is not None else ''}{_xy(v)}{rate}")
-    out["v"] = _last(pic)
+    out["v"] = added(pic.point, prefix + "v", v, role="twist", symbol=nv,
+                     desc=f"velocity pole v (5.69): {_where(v)}{rate}")
     if F != 0.0:
-        pic.line(prefix + "p", p, role="momentum", arrow=False, label="", symbol=np_,
-                 desc=f"momentum p = I v (5.71): {num(F)} kg·m/s, {_line_words(p)}")
-        label_line(pic, prefix + "p", plain_text(np_), anchor=p_anchor, side=p_side)
+        out["p"] = _line(pic, prefix + "p", p, "momentum", np_, anchor=p_anchor, side=p_side,
+                         desc=f"momentum p = I v (5.71): {num(F)} kg·m/s, {_line_words(p)}")
     else:
-        pic.line(prefix + "p", p, role="momentum", arrow=False, symbol=np_,
-                 desc=f"momentum p = I v (5.71): a pure angular momentum {num(p[2])} kg·m²/s (the line at infinity)")
-    out["p"] = _last(pic)
-    pic.line(prefix + "f", f, role="wrench", arrow=False, label="", symbol=nf,
-             desc=f"a powerless force f, vᵀf = 0 (5.69): a line through the pole v, {_line_words(f)}")
-    label_line(pic, prefix + "f", plain_text(nf), anchor=f_anchor, side=f_side)
-    out["f"] = _last(pic)
-    pic.point(prefix + "a", a, role="accel", glyph=False, symbol=na,
-                desc=f"a powerless acceleration a, pᵀa = 0 (5.72): a point of the momentum line, "
-                     f"{'at ' if point_xy(a) is not None else ''}{_xy(a)}")
-    out["a"] = _last(pic)
+        out["p"] = added(pic.line, prefix + "p", p, role="momentum", arrow=False, symbol=np_,
+                         desc=f"momentum p = I v (5.71): a pure angular momentum {num(p[2])} kg·m²/s "
+                              f"(the line at infinity)")
+    out["f"] = _line(pic, prefix + "f", f, "wrench", nf, anchor=f_anchor, side=f_side,
+                     desc=f"a powerless force f, vᵀf = 0 (5.69): a line through the pole v, {_line_words(f)}")
+    out["a"] = added(pic.point, prefix + "a", a, role="accel", glyph=False, symbol=na,
+                     desc=f"a powerless acceleration a, pᵀa = 0 (5.72): a point of the momentum line, {_where(a)}")
     return out

@@ -108,6 +108,31 @@ def as_picture(pic) -> Picture:
     return pic
 
 
+def added(draw, *args, **kw) -> dict:
+    """Call the :class:`~planargeo.draw.picture.Picture` method ``draw`` and return the element it added.
+
+    Parameters
+    ----------
+    draw : callable
+        A bound method of a picture that adds one element (``pic.line``, ``pic.point``...).
+    *args, **kw
+        Its arguments.
+
+    Returns
+    -------
+    dict
+        The element added.
+
+    Examples
+    --------
+    >>> pic = Picture((0, 1, 0, 1), size=(100, 100), ticks=False)
+    >>> added(pic.marks, "m", [(0.5, 0.5)], symbol="M")["symbol"]
+    'M'
+    """
+    draw(*args, **kw)
+    return draw.__self__.elements[-1]
+
+
 #: Docstring entries the drawing functions share, written once: a line ``{pic id}`` in a
 #: docstring stands for those entries (:func:`documented`).
 ENTRIES = {"pic": "pic : Picture\n    Where to draw.",
