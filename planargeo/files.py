@@ -196,11 +196,13 @@ def read_manifest(path) -> dict[str, str | None] | None:
     Returns
     -------
     dict or None
+        ``{name: sha256 or None}``; None when there is no manifest file.
 
     Raises
     ------
     OutputError
-        The manifest exists but cannot be read.
+        The manifest exists but cannot be read (a folder, no permission, not UTF-8): the
+        message names the file and the reason.
 
     Examples
     --------

@@ -220,7 +220,7 @@ def round_off(quantities: dict, info: dict | None = None, tol: float = ZERO_TOL)
     Raises
     ------
     InputError
-        If ``tol`` is negative or not finite.
+        If ``tol`` is negative, not finite, or not a number.
 
     Examples
     --------

@@ -97,7 +97,7 @@ def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.
     Returns
     -------
     numpy.ndarray, shape (3,)
-        ``a_i``.
+        ``a_i``, the body's acceleration at the origin.
 
     Examples
     --------

@@ -502,7 +502,7 @@ def parameters(kind: str) -> dict[str, float]:
     Parameters
     ----------
     kind : str
-        A key of :data:`CONSTRUCTIONS`.
+        A key of :data:`CONSTRUCTIONS`, e.g. ``"twist_sum"``.
 
     Returns
     -------
