@@ -35,8 +35,10 @@ kind (dof)                    ``s`` columns                   ``R`` columns
 The ``revolute_prismatic`` columns follow the thesis's order (4.74):
 translation first, then rotation.
 
-:class:`JointSpace` is a small frozen object for one joint; :func:`motion_space`
-and :func:`reaction_space` are the vectorised array functions behind it, and
+:class:`JointSpace` is a small frozen object for one joint (each constructor below,
+:func:`revolute` to :func:`fixed`, makes one: ``point`` and ``direction`` of shape
+``(2,)``); :func:`motion_space` and :func:`reaction_space` are the vectorised array
+functions behind it, which broadcast, and
 :func:`R_of` gives ``R`` of a joint known only by its motion space ``s`` (as the
 algorithms know it).
 
@@ -479,9 +481,6 @@ def _by_name(constructor):
 def revolute(point=(0.0, 0.0)) -> JointSpace:
     """Revolute (pin) joint about ``point`` (thesis 4.64): ``s`` = the point ``[y, -x, 1]``.
 
-    One joint: ``point`` of shape ``(2,)`` (like every joint constructor;
-    :func:`motion_space` / :func:`reaction_space` broadcast).
-
     Parameters
     ----------
     {point}
@@ -504,7 +503,7 @@ def revolute(point=(0.0, 0.0)) -> JointSpace:
 def prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Prismatic (slider) joint through ``point`` along ``direction`` (thesis 4.69, 5.62, 5.63).
 
-    One joint: ``point`` and ``direction`` of shape ``(2,)``, given by name (the point first, as
+    ``point`` and ``direction`` are given by name (the point first, as
     for every joint; a positional call raises :class:`~planargeo.errors.InputError`, since the
     order was once ``(direction, point)``).
 
@@ -532,8 +531,6 @@ def prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 @_documented
 def revolute_prismatic(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Two-dof pin-in-slot joint: slide along ``direction``, turn about ``point`` (thesis 4.74).
-
-    One joint: ``point`` and ``direction`` of shape ``(2,)``.
 
     Parameters
     ----------
@@ -565,7 +562,7 @@ def twin_prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     ``R = [0, 0, 1]``, the line at infinity, reciprocal to every translation
     (the ideal points lie on the line at infinity).  ``point`` (the joint
     frame's origin) does not change ``s`` or ``R``; it is kept for drawing.
-    Like :func:`prismatic`, it takes ``point`` and ``direction`` (shape ``(2,)``) by name.
+    Like :func:`prismatic`, it takes ``point`` and ``direction`` by name.
 
     In a model it is the joint kind ``"twin_prismatic"`` of :class:`planargeo.mechanics.model.Joint`
     (two dofs, slid by ``(q[0], q[1])`` along ``e`` and ``e⊥``, not rotated; the same
@@ -605,8 +602,7 @@ def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 
     The columns follow the package's ``Model`` joint ``"plane"`` (translations
     along the joint frame's x and y axes, then rotation about its origin); with
-    the defaults ``s`` is the identity.  ``R`` is empty.  One joint: ``point``
-    and ``direction`` of shape ``(2,)``.  Thesis 4.8.4's 2-dof "plane joint"
+    the defaults ``s`` is the identity.  ``R`` is empty.  Thesis 4.8.4's 2-dof "plane joint"
     (4.79, no rotation) is :func:`twin_prismatic`.
 
     Parameters
@@ -633,8 +629,6 @@ def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 @_documented
 def fixed(point=(0.0, 0.0)) -> JointSpace:
     """Weld (0-dof) at ``point``: ``s`` is empty, ``R`` = forces through ``point`` along x, y and a couple (thesis 6.10).
-
-    One joint: ``point`` of shape ``(2,)``.
 
     Parameters
     ----------
