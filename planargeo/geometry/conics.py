@@ -996,13 +996,9 @@ def decompose_point_special(C, P, Q1, Q2, Q3) -> np.ndarray:
 
     Parameters
     ----------
-    {C}
-    {decomposed_P}
-    {special_base}
+    {C decomposed_P special_base}
 
-    {components}
-
-    {not_special}
+    {components not_special}
 
     Examples
     --------
@@ -1031,13 +1027,13 @@ def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
 
     Parameters
     ----------
-    {C}
-    {decomposed_L}
-    {special_base}
+    {C decomposed_L special_base}
 
-    {components}
+    {components not_special}
 
-    {not_special}
+    See Also
+    --------
+    decompose_point_special : the same components, of a point ``P`` with ``L = C P``.
 
     Examples
     --------
@@ -1362,6 +1358,8 @@ def conic_circle(centre, radius, imaginary: bool = False) -> np.ndarray:
 def conic_ellipse(centre, axes, angle=0.0) -> np.ndarray:
     """Ellipse with semi-axes ``axes = (a, b)``, the first turned by ``angle`` from +x.
 
+    The image of the unit circle under ``x = R(angle) diag(a, b) u + centre`` (:func:`conic_from_affine`).
+
     Parameters
     ----------
     {centre ellipse_axes}
@@ -1380,6 +1378,8 @@ def conic_ellipse(centre, axes, angle=0.0) -> np.ndarray:
 @_shared
 def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
     """Hyperbola ``x'²/a² - y'²/b² = 1`` in the frame at ``centre`` turned by ``angle``.
+
+    Its asymptotes are ``y' = ±(b/a) x'`` in that frame.
 
     Parameters
     ----------
@@ -1400,6 +1400,8 @@ def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
 @_shared
 def conic_parabola(vertex, focal_length, angle=0.0) -> np.ndarray:
     """Parabola ``y' = x'² / (4 f)`` in the frame at ``vertex`` turned by ``angle`` (opens to +y').
+
+    Its focus is ``(0, f)`` in that frame.
 
     Parameters
     ----------
