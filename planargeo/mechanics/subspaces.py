@@ -796,9 +796,7 @@ def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 def joint_space_inertia(I, s) -> np.ndarray:
     """Joint-space inertia ``sᵀ I s`` (thesis 6.67, 6.74c): ``Q = (sᵀIs) ψ``.
 
-    ``I`` must be symmetric (:class:`~planargeo.errors.InputError`) and positive
-    semi-definite (:class:`~planargeo.errors.SingularInertiaError` naming ``I``);
-    it may be singular.
+    ``I`` may be singular (the module docstring gives the errors).
 
     Parameters
     ----------
@@ -825,10 +823,7 @@ def joint_space_inertia(I, s) -> np.ndarray:
 def reaction_space_inverse_inertia(I, R) -> np.ndarray:
     """Reaction-space inverse inertia ``Rᵀ I⁻¹ R`` (thesis 6.71): ``γ = (RᵀI⁻¹R) μ``.
 
-    Computed with a solve, not an explicit inverse.  ``I`` must be symmetric
-    (:class:`~planargeo.errors.InputError`) and positive definite: a negative
-    eigenvalue or a singular ``I`` raises
-    :class:`~planargeo.errors.SingularInertiaError` naming ``I``.
+    Computed with a solve, not an explicit inverse; ``I`` must be positive definite.
 
     Parameters
     ----------
@@ -923,9 +918,7 @@ def effective_mobility(I, s, *, what: str | None = None) -> np.ndarray:
     by ``a = s Tᵀ I⁻¹ f`` (with ``f`` the wrench *applied to* the body; the
     thesis's 6.83–6.93 carry a minus sign because their ``f`` is the wrench the
     body transmits, like ``f_{i+1}`` in 6.102).  No inverse of ``I`` is needed:
-    ``I`` must be symmetric (:class:`~planargeo.errors.InputError`) and positive
-    semi-definite (:class:`~planargeo.errors.SingularInertiaError` naming ``I``);
-    singular ``sᵀIs`` raises :class:`~planargeo.errors.SingularConfigurationError`.
+    ``I`` may be singular, ``sᵀIs`` may not.
 
     Parameters
     ----------
@@ -957,9 +950,7 @@ def effective_base_inertia(I, R) -> np.ndarray:
     The reaction force needed to give the joint base the acceleration ``a``
     when the joint transmits no active force: ``f = R Uᵀ I a``.  This is the
     projection the articulated-body recursion adds to the parent (6.76, chapter 7).
-    ``I`` must be symmetric positive definite
-    (:class:`~planargeo.errors.InputError` / :class:`~planargeo.errors.SingularInertiaError`
-    naming ``I``).
+    ``I`` must be positive definite.
 
     Parameters
     ----------
