@@ -964,7 +964,7 @@ def conic_to_standard(C) -> np.ndarray:
 
 @_shared
 def conic_from_standard(S) -> np.ndarray:
-    """A conic's matrix in the package's coordinates from standard coordinates, ``T S T``.
+    """A conic's matrix in the package's coordinates from standard coordinates, ``T S T`` (thesis 5.47).
 
     Parameters
     ----------
