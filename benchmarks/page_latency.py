@@ -225,9 +225,9 @@ def play(ex, cv, seconds: float = 10.0) -> dict:
             break
         time.sleep(0.1)
     time.sleep(0.5)
-    t0, sim0, pushed0 = cv.evaluate("() => performance.now()"), _shown_time(cv), _api(cv, "p.pushed()")
+    t0, sim0, pushed0 = cv.evaluate("() => performance.now()"), _shown_time(cv), _api(cv, "p.pushed ? p.pushed() : 0")
     time.sleep(seconds)
-    t1, sim1, pushed1 = cv.evaluate("() => performance.now()"), _shown_time(cv), _api(cv, "p.pushed()")
+    t1, sim1, pushed1 = cv.evaluate("() => performance.now()"), _shown_time(cv), _api(cv, "p.pushed ? p.pushed() : 0")
     frames = _api(cv, f"p.paintTimes.filter(t => t > {t0} && t <= {t1}).length")
     gaps = _api(cv, f"p.paintTimes.filter(t => t > {t0} && t <= {t1})")
     button.click()                                     # pause
