@@ -95,14 +95,8 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
     """Forward (``z = τ``) or inverse (``inverse=True``, ``z = q̈``) dynamics: the kernels, else ``general``.
 
     ``general(model, q, qd, z, f_ext)`` is the caller's general recursion, run for a model
-    the kernels do not cover.  A state a kernel does not finish raises: a singular joint
-    the kernel's :class:`~planargeo.errors.SingularConfigurationError`, anything else the
-    error ``general`` raises for it (a batch: for its first such state, as it would alone).
-    One state given as C-contiguous, writeable float64 arrays of the right shapes goes to the
-    kernel as it is (numba checks the types, the kernel the shapes and that the state is finite;
-    numba's one array type, so no other layout is ever compiled); anything else is validated by
-    :func:`~planargeo.mechanics.kinematics.check_state` and handed over as C-contiguous
-    float64 rows.
+    the kernels do not cover.  The three roads of a call and the errors are the module's.
+    A batch raises for its first state a kernel does not finish, as that state would alone.
 
     Parameters
     ----------

@@ -24,7 +24,7 @@ from planargeo.errors import (InputError, NonFiniteError, NumericOverflowError, 
                               ShapeError, SizeLimitError)
 
 __all__ = ["SceneResult", "register", "get", "names", "parameters", "limits", "build", "check_param",
-           "non_finite", "SceneNonFiniteError", "SceneShapeError", "SceneSizeError", "SceneRangeError"]
+           "plain", "non_finite", "SceneNonFiniteError", "SceneShapeError", "SceneSizeError", "SceneRangeError"]
 
 
 class SceneNonFiniteError(SceneError, NonFiniteError):
@@ -300,6 +300,27 @@ def _evaluate(fn, params) -> SceneResult | str:
 
 def _fmt(v) -> str:
     return f"{v:g}" if isinstance(v, float) else str(v)
+
+
+def plain(x) -> list | float | None:
+    """``x`` as nested lists of plain floats without ``-0.0`` (None stays None): how scenes keep arrays.
+
+    Parameters
+    ----------
+    x : array_like or None
+        Numbers.
+
+    Returns
+    -------
+    list, float or None
+        Nested lists of floats (a float for a scalar).
+
+    Examples
+    --------
+    >>> plain([[-0.0, 1], [2.5, 3]]), plain(None)
+    ([[0.0, 1.0], [2.5, 3.0]], None)
+    """
+    return None if x is None else (np.asarray(x, dtype=float) + 0.0).tolist()
 
 
 def non_finite(result: SceneResult) -> list[str]:

@@ -31,8 +31,7 @@ from __future__ import annotations
 import numpy as np
 
 from planargeo.mechanics.model import Body, Joint, Model
-from planargeo.scenes import SceneResult, check_param, register
-from planargeo.scenes.two_body import _plain
+from planargeo.scenes import SceneResult, check_param, plain, register
 
 __all__ = ["articulated", "articulated_state", "bent_chain_model", "joint_points", "inertia_at", "conic_centre", "COMPONENTS"]
 
@@ -203,13 +202,13 @@ def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int | 
     q = np.array([0.0] + [phi] * (n - 1))
     st = articulated_state(model, q, outboard=outboard, pole=(pole_x, pole_y), L=L)
     d, mx, my, Az = effective_centre(st["A_full"][0])
-    quantities = {k: _plain(st[k]) for k in ("joints", "I", "A", "A_full", "centre_rigid", "centre", "pole",
+    quantities = {k: plain(st[k]) for k in ("joints", "I", "A", "A_full", "centre_rigid", "centre", "pole",
                                              "axis_rigid", "axis", "truncation_error")}
-    quantities["components"] = [_plain(c) for c in st["components"]]
-    quantities["error"] = [_plain(e) for e in st["error"]]
+    quantities["components"] = [plain(c) for c in st["components"]]
+    quantities["error"] = [plain(e) for e in st["error"]]
     quantities["effective_7_26"] = {"d_over_L": d / L, "mx_over_m": mx / m, "my_over_m": my / m,
                                     "Az_over_m_rho2": Az / (m * rho * rho)}
-    state = {"q": _plain(q), "qd": [0.0] * n, "tau": [0.0] * n}
+    state = {"q": plain(q), "qd": [0.0] * n, "tau": [0.0] * n}
     return SceneResult("articulated", params, model, state, quantities,
                        extra={"articulated": st["result"], "full": st["full"], "rho": rho, "L": L})
 

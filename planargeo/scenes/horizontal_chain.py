@@ -32,8 +32,7 @@ from __future__ import annotations
 import numpy as np
 
 from planargeo.mechanics.model import Body, Joint, Model
-from planargeo.scenes import SceneResult, check_param, register
-from planargeo.scenes.two_body import _plain
+from planargeo.scenes import SceneResult, check_param, plain, register
 
 __all__ = ["horizontal_chain", "horizontal_chain_model", "effective_centre"]
 
@@ -127,7 +126,7 @@ def horizontal_chain(n: int = 4, lam: float = 2.0) -> SceneResult:
         "mx_over_m": mx / m,
         "my_over_m": my / m,
         "Az_over_m_rho2": Az / (m * rho * rho),
-        "A1": _plain(r.A[0]),
+        "A1": plain(r.A[0]),
     }
     state = {"q": [0.0] * n, "qd": [0.0] * n, "tau": [0.0] * n}
     return SceneResult("horizontal-chain", params, model, state, quantities,

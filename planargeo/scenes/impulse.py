@@ -31,7 +31,7 @@ import numpy as np
 
 from planargeo.mechanics.impulse import apparent_mass, centre_of_percussion, impulse_response
 from planargeo.mechanics.joints import motion_space
-from planargeo.scenes import SceneResult, check_param, register
+from planargeo.scenes import SceneResult, check_param, plain, register
 from planargeo.scenes.subspace import unit_direction
 from planargeo.screws.inertia import Inertia
 
@@ -64,10 +64,6 @@ def body_outline(body: str) -> np.ndarray:
     """
     body = check_param("body", body, "choice", choices=tuple(BODIES))
     return np.array(BODIES[body], dtype=float)
-
-
-def _plain(x):
-    return None if x is None else (np.asarray(x, dtype=float) + 0.0).tolist()
 
 
 def _finite_or_none(v: float) -> float | None:
@@ -156,15 +152,15 @@ def impulse(body: str = "bat", support: str = "held", m: float = 0.9, x: float =
     rf = reaction[:2]
     v_grip = dv[:2]                                              # velocity of the origin (the grip)
     q = {
-        "I": _plain(I), "com": _plain(c), "rho": rho, "impulse": _plain(j), "dv": _plain(dv),
-        "omega": float(dv[2]), "pole": _pole(dv, size), "v_com": _plain(dv[:2] + dv[2] * np.array([-c[1], c[0]])),
-        "reaction": _plain(reaction), "reaction_force": _plain(rf),
+        "I": plain(I), "com": plain(c), "rho": rho, "impulse": plain(j), "dv": plain(dv),
+        "omega": float(dv[2]), "pole": _pole(dv, size), "v_com": plain(dv[:2] + dv[2] * np.array([-c[1], c[0]])),
+        "reaction": plain(reaction), "reaction_force": plain(rf),
         "reaction_across": float(rf @ t), "reaction_along": float(rf @ n),
         "pole_if_free": _pole(dv_free, size),
-        "centre_of_percussion": _plain(centre_of_percussion(I, (0.0, 0.0))),
+        "centre_of_percussion": plain(centre_of_percussion(I, (0.0, 0.0))),
         "apparent_mass_held": _finite_or_none(apparent_mass(I, j, s)),
         "apparent_mass_free": _finite_or_none(apparent_mass(I, j)),
-        "kinetic_energy": float(0.5 * dv @ I @ dv), "v_grip": _plain(v_grip),
+        "kinetic_energy": float(0.5 * dv @ I @ dv), "v_grip": plain(v_grip),
     }
     q["apparent_mass"] = q["apparent_mass_held"] if support == "held" else q["apparent_mass_free"]
     outline = np.array(BODIES[body], dtype=float)

@@ -26,8 +26,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo.scenes import SceneResult, check_param, register
-from planargeo.scenes.two_body import _plain, two_body_model
+from planargeo.scenes import SceneResult, check_param, plain, register
+from planargeo.scenes.two_body import two_body_model
 
 __all__ = ["mobility_example"]
 
@@ -71,15 +71,15 @@ def mobility_example(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: floa
     f3 = np.array([0.0, 0.0, tau])
     a2 = -r.Lambda_inv[1] @ f3 + r.b[1]                                   # (7.37), (7.45)
     quantities = {
-        "Lambda1_inv": _plain(r.Lambda_inv[0]),
-        "Lambda2_inv": _plain(r.Lambda_inv[1]),
-        "f3": _plain(f3),
-        "a2": _plain(a2),
+        "Lambda1_inv": plain(r.Lambda_inv[0]),
+        "Lambda2_inv": plain(r.Lambda_inv[1]),
+        "f3": plain(f3),
+        "a2": plain(a2),
         "x_over_L": float(-a2[1] / (L * a2[2])),                          # (7.47)
         "eta": L / rho,
-        "T1": _plain(r.T[0][:, 0]), "U1": _plain(r.U[0]),
-        "T2": _plain(r.T[1][:, 0]), "U2": _plain(r.U[1]),
+        "T1": plain(r.T[0][:, 0]), "U1": plain(r.U[0]),
+        "T2": plain(r.T[1][:, 0]), "U2": plain(r.U[1]),
     }
-    state = {"q": _plain(q), "qd": [0.0, 0.0], "tau": [0.0, 0.0]}
+    state = {"q": plain(q), "qd": [0.0, 0.0], "tau": [0.0, 0.0]}
     return SceneResult("mobility-example", params, model, state, quantities,
                        extra={"mobility": r, "instant_centre": np.array([-a2[1] / a2[2], 0.0])})

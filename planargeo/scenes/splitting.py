@@ -29,9 +29,8 @@ from __future__ import annotations
 import numpy as np
 
 from planargeo.errors import SceneError
-from planargeo.scenes import SceneResult, check_param, register
+from planargeo.scenes import SceneResult, check_param, plain, register
 from planargeo.scenes.articulated import bent_chain_model, joint_points
-from planargeo.scenes.two_body import _plain
 
 __all__ = ["splitting", "splitting_state", "twist_pole"]
 
@@ -187,14 +186,14 @@ def splitting(n: int = 2, m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi:
     q = np.array([0.0] + [phi] * (n - 1))
     st = splitting_state(model, q, split, tau, L=L)
     a_tip = st["a"][-1]
-    quantities = {k: _plain(st[k]) for k in ("joints", "Lambda_inv", "b", "A", "d", "a_split", "f_split",
+    quantities = {k: plain(st[k]) for k in ("joints", "Lambda_inv", "b", "A", "d", "a_split", "f_split",
                                              "a", "f", "qdd", "a_tip_7_37", "f_tip")}
     quantities.update({
-        "Lambda1_inv": _plain(st["Lambda_inv_free"][0]),
-        "Lambda2_inv": _plain(st["Lambda_inv_free"][1]),
-        "a_tip": _plain(a_tip),
+        "Lambda1_inv": plain(st["Lambda_inv_free"][0]),
+        "Lambda2_inv": plain(st["Lambda_inv_free"][1]),
+        "a_tip": plain(a_tip),
         "x_over_L": float(-a_tip[1] / (L * a_tip[2])),
         "eta": L / rho,
     })
-    state = {"q": _plain(q), "qd": [0.0] * n, "tau": [0.0] * n}
+    state = {"q": plain(q), "qd": [0.0] * n, "tau": [0.0] * n}
     return SceneResult("splitting", params, model, state, quantities, extra={"state": st})

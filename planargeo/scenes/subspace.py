@@ -47,17 +47,13 @@ from planargeo.errors import DegenerateGeometryError
 from planargeo.mechanics.joints import reaction_space, motion_space
 from planargeo.mechanics.subspaces import (Decomposition, joint_space_inertia,
                                            reaction_space_inverse_inertia)
-from planargeo.scenes import SceneResult, check_param, register
+from planargeo.scenes import SceneResult, check_param, plain, register
 from planargeo.screws.twists import inertia_matrix
 
 __all__ = ["subspace", "JOINT_KINDS", "subspace_state", "unit_direction"]
 
 #: The joints the scene offers (the package's kind names; ``twin_prismatic`` is thesis 4.79's plane joint).
 JOINT_KINDS = ("revolute", "prismatic", "revolute_prismatic", "twin_prismatic")
-
-
-def _plain(x):
-    return (np.asarray(x, dtype=float) + 0.0).tolist()
 
 
 def unit_direction(deg: float) -> np.ndarray:
@@ -218,6 +214,6 @@ def subspace(joint: str = "revolute", px: float = 0.0, py: float = 0.0, joint_an
     e = F * unit_direction(fa)
     f = np.array([e[0], e[1], ax * e[1] - ay * e[0]])           # the force e through (ax, ay) (5.56)
     st = subspace_state(joint, (px, py), unit_direction(ja), I, f)
-    q = {k: (None if v is None else (dict(v) if isinstance(v, dict) else _plain(v)))
+    q = {k: (None if v is None else (dict(v) if isinstance(v, dict) else plain(v)))
          for k, v in st.items() if k != "joint"}
     return SceneResult("subspace", params, None, {"v": [0.0, 0.0, 0.0]}, q, extra={"state": st})

@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo.scenes import SceneResult, check_param, register
+from planargeo.scenes import SceneResult, check_param, plain, register
 
 __all__ = ["tree", "constrained_tree", "tree_model", "tree_solve", "tree_dof", "tree_pose", "tree_advance",
            "tree_reactions", "CROSS_COND", "CROSS_STEP",
@@ -138,10 +138,6 @@ def _default_q():
     return np.array([th[i] - (th[p] if p >= 0 else 0.0) for i, p in enumerate(FIG91_PARENTS)])
 
 
-def _tolist(x):
-    return np.asarray(x, dtype=float).tolist()
-
-
 @register("tree")
 def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float = 1.0) -> SceneResult:
     """The open tree of Fig 9.1 in the default pose, joint speeds ``speed × pattern``, no torques.
@@ -170,12 +166,12 @@ def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float =
     a_direct = direct_accelerations(sol, Lam, b)
     qdd_direct = sol.T.T @ (a_direct - sol.C @ a_direct - sol.kappa)
     C = adjacency(model.parents)
-    quantities = {"C": _tolist(C), "Dinv": _tolist(trunk(C)), "L": _tolist(sol.L),
-                  "Lambda_inv": _tolist(np.stack(Lam)), "b": _tolist(np.stack(b)), "qdd": _tolist(sol.qdd),
-                  "qdd_direct": _tolist(qdd_direct), "a": _tolist(sol.a.reshape(9, 3)),
-                  "f": _tolist(sol.f.reshape(9, 3))}
+    quantities = {"C": plain(C), "Dinv": plain(trunk(C)), "L": plain(sol.L),
+                  "Lambda_inv": plain(np.stack(Lam)), "b": plain(np.stack(b)), "qdd": plain(sol.qdd),
+                  "qdd_direct": plain(qdd_direct), "a": plain(sol.a.reshape(9, 3)),
+                  "f": plain(sol.f.reshape(9, 3))}
     return SceneResult("tree", dict(mass=mass, length=length, g=g, speed=speed), model,
-                       state={"q": _tolist(q), "qd": _tolist(qd), "tau": _tolist(tau)},
+                       state={"q": plain(q), "qd": plain(qd), "tau": plain(tau)},
                        quantities=quantities, extra={"solution": sol})
 
 
@@ -216,13 +212,13 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
     qd = qd - np.linalg.pinv(Jc) @ (Jc @ qd)
     tau = np.zeros(9)
     sol = loop_solve(model, q, qd, tau)
-    quantities = {"G": _tolist(sol.G), "Upsilon": _tolist(sol.Upsilon), "qdd": _tolist(sol.qdd),
-                  "a": _tolist(sol.a.reshape(9, 3)), "u": _tolist(sol.u.reshape(9, 3)),
-                  "F": _tolist(sol.F.reshape(-1, 3)), "xi": _tolist(sol.xi), "cond": float(sol.cond),
+    quantities = {"G": plain(sol.G), "Upsilon": plain(sol.Upsilon), "qdd": plain(sol.qdd),
+                  "a": plain(sol.a.reshape(9, 3)), "u": plain(sol.u.reshape(9, 3)),
+                  "F": plain(sol.F.reshape(-1, 3)), "xi": plain(sol.xi), "cond": float(sol.cond),
                   # every pin force of the closed tree (9.61): f_i on body i from its parent through joint i
-                  "f": _tolist(sol.f.reshape(9, 3)), "mu": _tolist(sol.mu.reshape(9, 2))}
+                  "f": plain(sol.f.reshape(9, 3)), "mu": plain(sol.mu.reshape(9, 2))}
     return SceneResult("constrained-tree", dict(mass=mass, length=length, g=g, speed=speed), model,
-                       state={"q": _tolist(q), "qd": _tolist(qd), "tau": _tolist(tau)},
+                       state={"q": plain(q), "qd": plain(qd), "tau": plain(tau)},
                        quantities=quantities, extra={"solution": sol})
 
 

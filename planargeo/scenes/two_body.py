@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 
 from planargeo.mechanics.model import Body, Joint, Model
-from planargeo.scenes import SceneResult, check_param, register
+from planargeo.scenes import SceneResult, check_param, plain, register
 
 __all__ = ["two_body", "positive"]
 
@@ -43,11 +43,6 @@ def positive(value, name: str) -> float:
         The value.
     """
     return check_param(name, value, positive=True)
-
-
-def _plain(x) -> list:
-    """Nested plain-float lists (no ``-0.0``)."""
-    return (np.asarray(x, dtype=float) + 0.0).tolist()
 
 
 def finite(value, name: str) -> float:
@@ -104,16 +99,16 @@ def two_body(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: float = np.p
     r = articulated_inertia(model, q)
     A1 = r.A[0]
     quantities = {
-        "A1": _plain(A1),
+        "A1": plain(A1),
         "m_x": float(A1[0, 0]),
         "mx_over_m": float(A1[0, 0] / m),
         "lam": L / rho,
-        "A2": _plain(r.A[1]),
-        "U2": _plain(r.U[1]),
-        "T2": _plain(r.T[1][:, 0]),
-        "s": [_plain(r.S[0][:, 0]), _plain(r.S[1][:, 0])],
-        "R": [_plain(r.R[0]), _plain(r.R[1])],
+        "A2": plain(r.A[1]),
+        "U2": plain(r.U[1]),
+        "T2": plain(r.T[1][:, 0]),
+        "s": [plain(r.S[0][:, 0]), plain(r.S[1][:, 0])],
+        "R": [plain(r.R[0]), plain(r.R[1])],
     }
-    state = {"q": _plain(q), "qd": [0.0, 0.0], "tau": [0.0, 0.0]}
+    state = {"q": plain(q), "qd": [0.0, 0.0], "tau": [0.0, 0.0]}
     return SceneResult("two-body", params, model, state, quantities,
                        extra={"articulated": r, "force_direction": np.array([1.0, 0.0])})
