@@ -104,6 +104,7 @@ def element_picture(obj, *, size=SIZE) -> Picture:
     Returns
     -------
     Picture
+        The element in a square view around it and the origin, titled with its numbers.
 
     Raises
     ------

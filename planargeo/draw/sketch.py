@@ -94,7 +94,8 @@ def as_picture(pic) -> Picture:
     Raises
     ------
     InputError
-        ``pic`` is not a Picture.
+        ``pic`` is not a Picture (a matplotlib figure or axes is not one: :func:`panel` makes
+        a picture the size of an axes).
 
     Examples
     --------
@@ -131,6 +132,26 @@ def added(draw, *args, **kw) -> dict:
     """
     draw(*args, **kw)
     return draw.__self__.elements[-1]
+
+
+def view_centre(pic: Picture) -> np.ndarray:
+    """The centre of the picture's view (data units).
+
+    Parameters
+    ----------
+    pic : Picture
+
+    Returns
+    -------
+    numpy.ndarray (2,)
+
+    Examples
+    --------
+    >>> view_centre(Picture((0, 4, -1, 1), size=(100, 100))).tolist()
+    [2.0, 0.0]
+    """
+    x0, x1, y0, y1 = pic.box
+    return np.array([(x0 + x1) / 2, (y0 + y1) / 2])
 
 
 #: Docstring entries the drawing functions share, written once: a line ``{pic id}`` in a
@@ -1449,8 +1470,7 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
 
     as_picture(pic)
     if anchor is None:
-        x0, x1, y0, y1 = pic.box
-        anchor = ((x0 + x1) / 2, (y0 + y1) / 2)
+        anchor = view_centre(pic)
     arrows, split = split_arrows(s, R, A, f, scale=scale, anchor=anchor, avoid=avoid,
                                  clearance=clearance)
     Q, mu, active, react = split

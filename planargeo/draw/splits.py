@@ -45,7 +45,7 @@ from planargeo.draw.picture import Picture, plain_text
 from planargeo.draw.pictures.common import label_toward
 from planargeo.draw.pictures.kit import force as _force_arrow
 from planargeo.draw.pictures._words import num, pair, where
-from planargeo.draw.sketch import as_picture, documented
+from planargeo.draw.sketch import as_picture, documented, view_centre
 from planargeo.errors import InputError
 from planargeo.mechanics.subspaces import Decomposition
 
@@ -120,7 +120,7 @@ def _label_beside(pic: Picture, el: dict, text: str, anchor, side: float, gap: f
     if seg is None or not text:
         return
     seg = np.asarray(seg, float)
-    a = _centre(pic) if anchor is None else np.asarray(anchor, float)
+    a = view_centre(pic) if anchor is None else np.asarray(anchor, float)
     d = seg[1] - seg[0]
     dp = np.array([d[0] * pic.kx, d[1] * pic.ky])
     Lp = math.hypot(*dp)
@@ -160,11 +160,6 @@ def _point(pic: Picture, id: str, p, text, *, role: str, symbol: str, desc: str,
     el = pic.elements[-1]
     _aim(el, aims, key)
     return el
-
-
-def _centre(pic: Picture) -> np.ndarray:
-    x0, x1, y0, y1 = pic.box
-    return np.array([(x0 + x1) / 2, (y0 + y1) / 2])
 
 
 def _parts_arg(parts) -> tuple[int, ...]:
@@ -398,7 +393,7 @@ def _split(kind, pic, s, R, A, x, *, parts, names, aims, anchors, scale, arrow_l
         if math.hypot(float(f[0]), float(f[1])) > 0.0:
             at = anchors.get(kf)
             _force_arrow(pic, prefix + kf, f, scale=_arrow_scale(f, scale, arrow_length),
-                         anchor=_centre(pic) if at is None else at, role="wrench",
+                         anchor=view_centre(pic) if at is None else at, role="wrench",
                          symbol=f"$f_{k}$", label=plain_text(names.get(kf) or ""),
                          desc=descs[kf] + _wrench_words(f))
         else:                                   # a couple (or nothing): the picture's couple glyph

@@ -40,12 +40,12 @@ import math
 import numpy as np
 
 from planargeo._validate import as_mat3, as_scalar, as_vec3
-from planargeo.draw.picture import PX_PER_PT, Picture, plain_text
+from planargeo.draw.picture import PX_PER_PT, Picture, _dash, plain_text
 from planargeo.draw.pictures._words import force as force_words, num, pair
 from planargeo.draw.pictures.common import label_toward
 from planargeo.draw.pictures.kit import aim_label, force as force_arrow
-from planargeo.draw.sketch import as_picture, dimension, documented
-from planargeo.draw.style import COLORS, LINEWIDTHS, STYLES, SUM
+from planargeo.draw.sketch import added, as_picture, dimension, documented, view_centre
+from planargeo.draw.style import COLORS, LINEWIDTHS, SUM
 from planargeo.errors import InputError
 from planargeo.geometry.projective import is_at_infinity, is_ideal
 from planargeo.screws.inertia import centre_of_mass, mass
@@ -53,8 +53,6 @@ from planargeo.screws.twists import bias_force, kappa
 
 __all__ = ["twist_sum", "wrench_sum", "velocity_step", "acceleration_step", "newton_euler"]
 
-#: dash pattern (pixels) of construction lines
-_CONSTRUCT_DASH = [round(v * PX_PER_PT, 2) for v in STYLES["construct"]["linestyle"][1]]
 #: marker size (pixels) of a sum's pole, line width (pixels) of a sum's line of action
 _SUM_POINT_PX = SUM["point"]["markersize"] * PX_PER_PT
 _SUM_LINE_PX = SUM["line"]["linewidth"] * PX_PER_PT
@@ -70,6 +68,16 @@ def _texts(x, n: int, name: str) -> tuple:
     if len(t) != n:
         raise InputError(f"{name} must have {n} entries, got {len(t)}")
     return t
+
+
+def _scale(scale) -> float | None:
+    """A force arrow's length per unit force: None (no arrows) or a positive number, checked."""
+    if scale is None:
+        return None
+    scale = as_scalar(scale, "scale")
+    if not scale > 0.0:
+        raise InputError(f"scale must be a positive number (data units per unit force), got {scale!r}")
+    return scale
 
 
 def _symbol(label: str) -> str:
@@ -99,9 +107,8 @@ def _pole(pic: Picture, id: str, p, *, role: str, label: str, desc: str, toward=
           emphasis: bool = False, glyph_scale: float = 6.0) -> dict:
     """A pole (:meth:`Picture.point`); a sum's as a larger diamond; its label put ``toward`` first."""
     kw = dict(shape="D", size=_SUM_POINT_PX) if emphasis else {}
-    pic.point(id, p, role=role, symbol=_symbol(label), desc=desc, label=plain_text(label),
-              glyph_scale=glyph_scale, **kw)
-    el = pic.elements[-1]
+    el = added(pic.point, id, p, role=role, symbol=_symbol(label), desc=desc, label=plain_text(label),
+               glyph_scale=glyph_scale, **kw)
     if toward is not None and not bool(is_ideal(p)):
         label_toward(el, toward, _gap(p[2], glyph_scale) + (3.0 if emphasis else 0.0))
     return el
@@ -116,8 +123,7 @@ def _lever(pic: Picture, id: str, p, q, *, desc: str, width: float | None = None
     line = np.cross(p, q)
     if not np.any(line) or bool(is_at_infinity(line)):
         return None
-    pic.line(id, line, role="construct", arrow=False, label="", symbol=id, desc=desc, width=width)
-    return pic.elements[-1]
+    return added(pic.line, id, line, role="construct", arrow=False, label="", symbol=id, desc=desc, width=width)
 
 
 def _wrench(pic: Picture, id: str, f, *, role: str, label: str, desc: str, scale, anchor,
@@ -137,8 +143,7 @@ def _wrench(pic: Picture, id: str, f, *, role: str, label: str, desc: str, scale
     if not np.any(f):
         return None
     if bool(is_at_infinity(f)):
-        pic.line(id, f, role=role, symbol=symbol, desc=desc, label=text, width=width)
-        el = pic.elements[-1]
+        el = added(pic.line, id, f, role=role, symbol=symbol, desc=desc, label=text, width=width)
         row = 0 if couples is None else sum(1 for c in couples if c == corner)
         x0, x1, _, _ = pic.box
         for part in el["parts"]:
@@ -155,7 +160,7 @@ def _wrench(pic: Picture, id: str, f, *, role: str, label: str, desc: str, scale
             couples.append(corner)
         return el
     if anchor is None:
-        anchor = ((pic.box[0] + pic.box[1]) / 2, (pic.box[2] + pic.box[3]) / 2)
+        anchor = view_centre(pic)
     if scale is None:
         pic.line(id, f, role=role, symbol=symbol, desc=desc, label=text, anchor=anchor, arrow=False,
                  width=width)
@@ -351,10 +356,7 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
     """
     pic = as_picture(pic)
     f1, f2 = as_vec3(f1, "f1"), as_vec3(f2, "f2")
-    if scale is not None:
-        scale = as_scalar(scale, "scale")
-        if not scale > 0.0:
-            raise InputError(f"scale must be a positive number (data units per unit force), got {scale!r}")
+    scale = _scale(scale)
     labels = _texts(labels, 3, "labels")
     anchors = list(_texts(anchors, 3, "anchors"))
     toward = _texts(toward, 3, "toward")
@@ -383,18 +385,16 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
         if el is not None:
             out[name] = el
     if finite_meet:
-        pic.marks(prefix + "meet", [Pxy], role="construct", symbol="P", shape="o",
-                  size=3.5 * PX_PER_PT, z=6,
-                  desc=f"meet P = f₁ × f₂ of the two lines of action (4.35): at {pair(Pxy)} m; "
-                       f"the sum's line passes through it")
-        out["meet"] = pic.elements[-1]
+        out["meet"] = added(pic.marks, prefix + "meet", [Pxy], role="construct", symbol="P", shape="o",
+                            size=3.5 * PX_PER_PT, z=6,
+                            desc=f"meet P = f₁ × f₂ of the two lines of action (4.35): at {pair(Pxy)} m; "
+                                 f"the sum's line passes through it")
         if parallelogram and scale is not None:
             a, b, c = (Pxy + scale * f[:2] for f in (f1, f2, f3))
-            pic.path(prefix + "parallelogram", [a, c, [np.nan, np.nan], b, c], role="construct",
-                     dash=_CONSTRUCT_DASH, width=LINEWIDTHS["construct"] * PX_PER_PT, z=2,
-                     symbol="parallelogram",
-                     desc="force parallelogram (4.33): the sum's arrow is its diagonal from P")
-            out["parallelogram"] = pic.elements[-1]
+            out["parallelogram"] = added(pic.path, prefix + "parallelogram", [a, c, [np.nan, np.nan], b, c],
+                                         role="construct", dash=_dash("construct"), z=2, symbol="parallelogram",
+                                         width=LINEWIDTHS["construct"] * PX_PER_PT,
+                                         desc="force parallelogram (4.33): the sum's arrow is its diagonal from P")
     return out
 
 
@@ -612,10 +612,7 @@ def newton_euler(pic, I, a, v, *, scale=None,
     """
     pic = as_picture(pic)
     I, a, v = as_mat3(I, "I"), as_vec3(a, "a"), as_vec3(v, "v")
-    if scale is not None:
-        scale = as_scalar(scale, "scale")
-        if not scale > 0.0:
-            raise InputError(f"scale must be a positive number (data units per unit force), got {scale!r}")
+    scale = _scale(scale)
     labels = _texts(labels, 5, "labels")
     toward = _texts(toward, 5, "toward")
     positions = [as_scalar(t, "positions") for t in _texts(positions, 3, "positions")]
@@ -631,10 +628,9 @@ def newton_euler(pic, I, a, v, *, scale=None,
 
     out = {}
     if inertia:
-        pic.conic(prefix + "inertia", I, role="inertia", symbol="I", label="",
-                  desc=f"inertia I (4.58) as its circle of gyration: m = {num(mass(I))} kg, "
-                       f"centre of mass at {pair(c)} m")
-        out["inertia"] = pic.elements[-1]
+        out["inertia"] = added(pic.conic, prefix + "inertia", I, role="inertia", symbol="I", label="",
+                               desc=f"inertia I (4.58) as its circle of gyration: m = {num(mass(I))} kg, "
+                                    f"centre of mass at {pair(c)} m")
     out["v"] = _pole(pic, prefix + "v", v, role="twist", label=labels[0], toward=toward[0],
                      desc=f"velocity {syms[0]} (4.10): {_pole_words(v)}")
     out["a"] = _pole(pic, prefix + "a", a, role="accel", label=labels[1], toward=toward[1],
