@@ -43,6 +43,7 @@ from planargeo.draw.geometry import clip_line
 from planargeo.draw.layout import fit_box, shape_points
 from planargeo.draw.picture import PX_PER_PT, Picture, _color as _role_color, _dash as _role_dash
 from planargeo.draw.pictures.common import _align
+from planargeo.draw.pictures.kit import foot_on_line, seg_distance
 from planargeo.draw.style import COLORS, LINEWIDTHS
 from planargeo.errors import InputError
 
@@ -1264,13 +1265,6 @@ def contact(pic: Picture, id: str, contact, pose, *, body_shape=None, size: floa
     return out
 
 
-def _seg_dist(c, a, b) -> float:
-    """Distance from the point ``c`` to the segment ``a b``."""
-    d = b - a
-    t = float(np.clip((c - a) @ d / max(d @ d, 1e-300), 0.0, 1.0))
-    return float(np.hypot(*(a + t * d - c)))
-
-
 def _slide_clear(line, L, foot, blocked, clearance):
     """The arrow middle on ``line`` nearest ``foot`` whose arrow (length ``L``) clears ``blocked``."""
     from shapely.geometry import LineString
@@ -1285,17 +1279,6 @@ def _slide_clear(line, L, foot, blocked, clearance):
         if not LineString([m - e * L / 2, m + e * L / 2]).buffer(clearance).intersects(blocked):
             return m
     return foot
-
-
-def _foot(w, p) -> np.ndarray:
-    """The foot of the point ``p`` on the line of action of ``w = [fx, fy, τ]`` (4.27)."""
-    fx, fy, tz = (float(v) for v in w)
-    s = max(abs(fx), abs(fy))
-    ux, uy, uz = fx / s, fy / s, tz / s
-    G = math.hypot(ux, uy)
-    e = np.array([ux, uy]) / G
-    p0 = np.array([uy * uz, -ux * uz]) / (G * G)      # foot of the origin
-    return p0 + e * ((np.asarray(p, float) - p0) @ e)
 
 
 def model_shapes(model, data, *, width: float = 0.18) -> list:
@@ -1404,7 +1387,7 @@ def split_arrows(s, R, A, f, *, scale: float = 1.0, anchor, avoid=None, clearanc
             continue
         e = w[:2] / F
         half = 0.5 * scale * F * e
-        mid = _foot(w, anchor)
+        mid = foot_on_line(w, anchor)
         if avoid is not None:
             mid = _slide_clear(w, 2 * float(np.hypot(*half)), mid, blocked, clearance)
         tail, tip = mid - half, mid + half
@@ -1511,7 +1494,7 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
 
         def label_room(side):
             c = mid + side * n * 0.25 * L
-            dist = [_seg_dist(c, *o) for o in others] + [float(np.hypot(*(c - p))) for p in placed]
+            dist = [seg_distance(c, [o]) for o in others] + [float(np.hypot(*(c - p))) for p in placed]
             if avoid is not None:
                 from shapely.geometry import Point as SPoint
 
