@@ -46,13 +46,18 @@ def _fmt(v: float) -> str:
     return f"{v:.6g}"
 
 
+def _one(x, name: str, n: int) -> np.ndarray:
+    """``x`` as one vector of ``n`` floats (a batch is refused: the classes hold single values)."""
+    a = as_array(x, name, (n,))
+    if a.shape != (n,):
+        raise ShapeError(f"{name} must have shape ({n},), got shape {a.shape}")
+    return a
+
+
 def _vec(x, name: str) -> np.ndarray:
     if isinstance(x, (Point, Line)):
         x = x.array
-    a = as_array(x, name, (3,))
-    if a.shape != (3,):
-        raise ShapeError(f"{name} must have shape (3,), got shape {a.shape}")
-    a = a + 0.0
+    a = _one(x, name, 3) + 0.0
     a.setflags(write=False)
     return a
 
@@ -264,11 +269,7 @@ class Point(_PointOrLine):
         >>> Point.from_xy(1, 2), Point.from_xy((1, 2))
         (Point(x=1, y=2), Point(x=1, y=2))
         """
-        xy = x if y is None else (x, y)
-        a = as_array(xy, "xy", (2,))
-        if a.shape != (2,):
-            raise ShapeError(f"xy must have shape (2,), got shape {a.shape}")
-        return cls(_p.from_xy(a))
+        return cls(_p.from_xy(_one(x if y is None else (x, y), "xy", 2)))
 
     @classmethod
     def at_infinity(cls, direction) -> "Point":
@@ -295,10 +296,7 @@ class Point(_PointOrLine):
         >>> P, P.array
         (Point(at infinity, direction=(1, 0)), array([ 0., -1.,  0.]))
         """
-        d = as_array(direction, "direction", (2,))
-        if d.shape != (2,):
-            raise ShapeError(f"direction must have shape (2,), got shape {d.shape}")
-        return cls(_p.from_direction(d))
+        return cls(_p.from_direction(_one(direction, "direction", 2)))
 
     # data
     @property
@@ -440,13 +438,7 @@ class Line(_PointOrLine):
         >>> L, L.array
         (Line(through=(1, 0), direction=(0, 1)), array([0., 3., 3.]))
         """
-        if isinstance(point, Point):
-            pa = point.array
-        else:
-            xy = as_array(point, "point", (2,))
-            if xy.shape != (2,):
-                raise ShapeError(f"point must have shape (2,), got shape {xy.shape}")
-            pa = _p.from_xy(xy)
+        pa = point.array if isinstance(point, Point) else _p.from_xy(_one(point, "point", 2))
         return cls(_p.line_through_point_direction(pa, direction))
 
     @property

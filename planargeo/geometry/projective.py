@@ -936,8 +936,7 @@ def from_standard(x) -> np.ndarray:
     >>> from_standard([1.0, 1.0, 2.0])      # the point (1, 2)
     array([ 2., -1.,  1.])
     """
-    x = as_vec3(x, "x")
-    return np.einsum("ij,...j->...i", T_STD, x)
+    return to_standard(x)                   # T is its own inverse
 
 
 @_shared
