@@ -307,7 +307,7 @@ def unit_rotation(point) -> np.ndarray:
 def unit_translation(direction) -> np.ndarray:
     """Unit twist of a translation along ``direction`` (a point at infinity, thesis 5.62).
 
-    The direction is normalised; a zero direction raises :class:`~planargeo.errors.DegenerateGeometryError`.
+    The direction is normalised.
 
     Parameters
     ----------
