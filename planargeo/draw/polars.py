@@ -38,7 +38,7 @@ from planargeo.draw.geometry import _mat, _vec, point_xy
 from planargeo.draw.picture import PX_PER_PT, Picture, plain_text
 from planargeo.draw.pictures._words import num, pair
 from planargeo.draw.pictures.common import label_line, point_along
-from planargeo.draw.sketch import added, as_picture, dimension, documented, segment
+from planargeo.draw.sketch import added, as_picture, dimension, documented, line_words, segment
 from planargeo.draw.style import COLORS
 from planargeo.errors import InputError
 from planargeo.geometry.conics import (line_conic_intersections, polar_construction_exterior,
@@ -57,15 +57,6 @@ def _where(p) -> str:
         d = np.array([-p[1], p[0]]) / math.hypot(p[0], p[1])
         return f"at infinity in the direction {pair(d, 3)}"
     return f"at {pair(xy, 3)}"
-
-
-def _line_words(l) -> str:
-    """A line ``[fx, fy, τ]`` in words: its point nearest the origin and its direction."""
-    fx, fy, tz = (float(v) for v in l)
-    F = math.hypot(fx, fy)
-    if F == 0.0:
-        return "the line at infinity"
-    return f"through {pair((fy * tz / F ** 2, -fx * tz / F ** 2), 3)}, direction {pair((fx / F, fy / F), 3)}"
 
 
 def _line(pic: Picture, id: str, l, role: str, symbol: str, desc: str, *, anchor=None,
@@ -327,7 +318,7 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
                          f"meet, {_where(K.poles[k])}")
         out[f"R{k + 1}"] = pic.elements[-1]
     return _polar_and_point(pic, out, prefix, K, p, names, inside=True,
-                            through=f"R₁ and R₂, {_line_words(K.polar)}", anchor=L_anchor, side=L_side)
+                            through=f"R₁ and R₂, {line_words(K.polar, 3)}", anchor=L_anchor, side=L_side)
 
 
 # --------------------------------------------------------------------------- inertia
@@ -541,13 +532,13 @@ def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
                      desc=f"velocity pole v (5.69): {_where(v)}{rate}")
     if F != 0.0:
         out["p"] = _line(pic, prefix + "p", p, "momentum", np_, anchor=p_anchor, side=p_side,
-                         desc=f"momentum p = I v (5.71): {num(F)} kg·m/s, {_line_words(p)}")
+                         desc=f"momentum p = I v (5.71): {num(F)} kg·m/s, {line_words(p, 3)}")
     else:
         out["p"] = added(pic.line, prefix + "p", p, role="momentum", arrow=False, symbol=np_,
                          desc=f"momentum p = I v (5.71): a pure angular momentum {num(p[2])} kg·m²/s "
                               f"(the line at infinity)")
     out["f"] = _line(pic, prefix + "f", f, "wrench", nf, anchor=f_anchor, side=f_side,
-                     desc=f"a powerless force f, vᵀf = 0 (5.69): a line through the pole v, {_line_words(f)}")
+                     desc=f"a powerless force f, vᵀf = 0 (5.69): a line through the pole v, {line_words(f, 3)}")
     out["a"] = added(pic.point, prefix + "a", a, role="accel", glyph=False, symbol=na,
                      desc=f"a powerless acceleration a, pᵀa = 0 (5.72): a point of the momentum line, {_where(a)}")
     return out

@@ -42,6 +42,7 @@ import numpy as np
 from planargeo.draw.geometry import clip_line
 from planargeo.draw.layout import fit_box, shape_points
 from planargeo.draw.picture import PX_PER_PT, Picture, _color as _role_color, _dash as _role_dash
+from planargeo.draw.pictures._words import pair
 from planargeo.draw.pictures.common import _align
 from planargeo.draw.pictures.kit import foot_on_line, seg_distance
 from planargeo.draw.style import COLORS, LINEWIDTHS
@@ -153,6 +154,32 @@ def view_centre(pic: Picture) -> np.ndarray:
     """
     x0, x1, y0, y1 = pic.box
     return np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+
+
+def line_words(l, digits: int = 4) -> str:
+    """Where a line ``[fx, fy, τ]`` (4.27) runs, in words: its point nearest the origin and its direction.
+
+    Parameters
+    ----------
+    l : array_like (3,)
+    digits : int
+        Significant digits of the numbers.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> line_words([0.0, 1.0, 2.0]), line_words([0.0, 0.0, 1.0])        # the line x = 2; a couple
+    ('through (2, 0) m, along (0, 1)', 'the line at infinity')
+    """
+    fx, fy, tz = (float(v) for v in l)
+    F = math.hypot(fx, fy)
+    if F == 0.0:
+        return "the line at infinity" if tz != 0.0 else "none (zero)"
+    return (f"through {pair((fy * tz / (F * F), -fx * tz / (F * F)), digits)} m, "
+            f"along {pair((fx / F, fy / F), digits)}")
 
 
 #: Docstring entries the drawing functions share, written once: a line ``{pic id}`` in a

@@ -45,7 +45,7 @@ from planargeo.draw.picture import Picture, plain_text
 from planargeo.draw.pictures.common import label_toward
 from planargeo.draw.pictures.kit import force as _force_arrow
 from planargeo.draw.pictures._words import num, pair, where
-from planargeo.draw.sketch import as_picture, documented, view_centre
+from planargeo.draw.sketch import as_picture, documented, line_words, view_centre
 from planargeo.errors import InputError
 from planargeo.mechanics.subspaces import Decomposition
 
@@ -75,22 +75,13 @@ _documented = partial(documented, entries={
 _T_WORDS = "axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.36, 6.39): "
 
 
-def _line_words(l) -> str:
-    """Where a line ``[fx, fy, tz]`` (4.27) runs: its point nearest the origin and its direction."""
-    fx, fy, tz = (float(v) for v in l)
-    F = math.hypot(fx, fy)
-    if F == 0.0:
-        return "the line at infinity" if tz != 0.0 else "none (zero)"
-    return f"through {pair((fy * tz / (F * F), -fx * tz / (F * F)))} m, along {pair((fx / F, fy / F))}"
-
-
 def _wrench_words(l, unit: str = "N") -> str:
     """A force in words: its size and line, or a couple."""
     fx, fy, tz = (float(v) for v in l)
     F = math.hypot(fx, fy)
     if F == 0.0:
         return "zero" if tz == 0.0 else f"a couple of {num(tz)} {unit}·m"
-    return f"{num(F)} {unit}, {_line_words(l)}"
+    return f"{num(F)} {unit}, {line_words(l)}"
 
 
 def _accel_words(p) -> str:
@@ -258,7 +249,7 @@ def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, an
                                ("R", R, "reaction", "a unit reaction of the joint, a line through it (6.1): ")):
         for j, n in enumerate(keys[key]):
             out[n] = _line(pic, prefix + n, X[:, j], labels[n], role=role, symbol=default[n],
-                           desc=what + _line_words(X[:, j]), anchor=anchors.get(n),
+                           desc=what + line_words(X[:, j]), anchor=anchors.get(n),
                            side=sides.get(n, 1.0), aims=aims, key=n)
     for key, X, role, what, words in (
             ("s", s, "twist", "motion space of the joint, its pole (6.1): ", where),
@@ -383,7 +374,7 @@ def _split(kind, pic, s, R, A, x, *, parts, names, aims, anchors, scale, arrow_l
             n = "T" if T.shape[1] == 1 else f"T{j + 1}"
             out[n] = _line(pic, prefix + n, T[:, j], names.get(n, _tex("T", T.shape[1], j)),
                            role="construct", symbol=_tex("T", T.shape[1], j),
-                           desc=_T_WORDS + _line_words(T[:, j]),
+                           desc=_T_WORDS + line_words(T[:, j]),
                            anchor=anchors.get(n), side=-1.0, aims=aims, key=n)
     for k in show:
         a, f = vals[f"a{k}"], vals[f"f{k}"]
@@ -580,7 +571,7 @@ def projective_step(pic: Picture, s, R, A, a_prev, a, kappa, *,
     aims = dict(aims or {})
     out = {"T": _line(pic, prefix + "T", T[:, 0], names[0], role="momentum", symbol=names[0],
                       desc="axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.39), picks the "
-                           f"joint's part of an acceleration: {_line_words(T[:, 0])}",
+                           f"joint's part of an acceleration: {line_words(T[:, 0])}",
                       anchor=T_anchor, side=T_side, aims=aims, key="T"),
            "s": _point(pic, prefix + "s", dec.s[:, 0], names[1], role="twist", symbol=names[1],
                        desc=f"the joint, its unit twist (6.1): {where(dec.s[:, 0])}", glyph=False,
