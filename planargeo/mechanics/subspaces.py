@@ -89,6 +89,8 @@ _parameters = entries({
     "I": "I : array_like, shape (..., 3, 3)\n    Symmetric inertia (rigid or articulated) at the origin.",
     "s": "s : array_like, shape (..., 3, k)\n    Joint motion space (k unit twists as columns).",
     "R": "R : array_like, shape (..., 3, 3-k)\n    Joint reaction space (wrenches reciprocal to ``s``).",
+    "f": "f : array_like, shape (..., 3)\n    Wrench.",
+    "a": "a : array_like, shape (..., 3)\n    Acceleration twist.",
 })
 
 
@@ -638,9 +640,7 @@ def active_force(s, f) -> np.ndarray:
 
     Parameters
     ----------
-    {s}
-    f : array_like, shape (..., 3)
-        Wrench.
+    {s f}
 
     Returns
     -------
@@ -656,6 +656,7 @@ def active_force(s, f) -> np.ndarray:
 
 
 @overflow_checked("U or f")
+@_parameters
 def reaction_force(U, f) -> np.ndarray:
     """Reaction-force components ``μ = Uᵀ f`` (thesis 6.61b, 6.54).
 
@@ -663,8 +664,7 @@ def reaction_force(U, f) -> np.ndarray:
     ----------
     U : array_like, shape (..., 3, 3-k)
         The joint's ``U = I⁻¹R (RᵀI⁻¹R)⁻¹`` (:func:`U_of`, 6.37).
-    f : array_like, shape (..., 3)
-        Wrench.
+    {f}
 
     Returns
     -------
@@ -680,6 +680,7 @@ def reaction_force(U, f) -> np.ndarray:
 
 
 @overflow_checked("T or a")
+@_parameters
 def active_acceleration(T, a) -> np.ndarray:
     """Active (absolute joint) acceleration ``ψ = Tᵀ a`` (thesis 6.62b, 6.57).
 
@@ -687,8 +688,7 @@ def active_acceleration(T, a) -> np.ndarray:
     ----------
     T : array_like, shape (..., 3, k)
         The joint's ``T = I s (sᵀIs)⁻¹`` (:func:`T_of`, 6.36).
-    a : array_like, shape (..., 3)
-        Acceleration twist.
+    {a}
 
     Returns
     -------
@@ -710,9 +710,7 @@ def reactive_acceleration(R, a) -> np.ndarray:
 
     Parameters
     ----------
-    {R}
-    a : array_like, shape (..., 3)
-        Acceleration twist.
+    {R a}
 
     Returns
     -------
@@ -1056,13 +1054,13 @@ class Decomposition:
         """
         return cls(A, joint.s, joint.R, name=name)
 
+    @_parameters
     def split_wrench(self, f) -> tuple[np.ndarray, np.ndarray]:
         """``(Q, μ) = (sᵀf, Uᵀf)`` so that ``f = T Q + R μ`` (thesis 6.38, 6.61).
 
         Parameters
         ----------
-        f : array_like, shape (..., 3)
-            Wrench.
+        {f}
 
         Returns
         -------
@@ -1118,13 +1116,13 @@ class Decomposition:
         """
         return _combine(self.T, Q, self.R, mu, ("Q", "mu"))
 
+    @_parameters
     def split_twist(self, a) -> tuple[np.ndarray, np.ndarray]:
         """``(ψ, γ) = (Tᵀa, Rᵀa)`` so that ``a = s ψ + U γ`` (thesis 6.44, 6.62).
 
         Parameters
         ----------
-        a : array_like, shape (..., 3)
-            Acceleration twist.
+        {a}
 
         Returns
         -------
