@@ -370,6 +370,14 @@ def _state_arrays(model, q, qd, tau, f_ext, checked=False):
     return _data_arrays(model, _kinematics_scalar(model, q, np.zeros(model.nq) if qd is None else qd, f_ext), tau)
 
 
+def _one_state(model, q, qd, tau, f_ext, who: str):
+    """``(q, qd, tau, f_ext)`` checked as one state (``qd``, ``tau`` zeros if None); a batch: ShapeError naming ``who``."""
+    q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
+    if shape != ():
+        raise ShapeError(f"{who} takes one state, got batch shape {shape}")
+    return q, qd, tau, f_ext
+
+
 def _data_arrays(model, d, tau):
     """:func:`_state_arrays` of the kinematics ``d`` of one state (``tau`` zero if None)."""
     tau = np.zeros(model.nq) if tau is None else tau

@@ -34,9 +34,9 @@ import numpy as np
 
 from planargeo.mechanics.contacts import contact_matrix, stacked_contact_spaces, validate_contacts, world_point
 from planargeo.errors import InputError, ShapeError, SingularConfigurationError
-from planargeo.mechanics.kinematics import check_state, kinematics
+from planargeo.mechanics.kinematics import kinematics
 from planargeo.mechanics.model import Model
-from planargeo.algorithms.articulated_inertia import _per_state
+from planargeo.algorithms.articulated_inertia import _one_state, _per_state
 from planargeo.algorithms.stacked import blocks, stacked_solve, trunk, adjacency
 
 __all__ = ["LoopSolution", "Reaction", "loop_solve", "joint_wrenches", "loop_condition", "forward_dynamics_loops", "constrained_dynamics_lagrange",
@@ -372,12 +372,7 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
     """
     if mobility not in ("columns", "full"):
         raise InputError(f"mobility must be 'columns' or 'full', got {mobility!r}")
-    q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
-    if shape != ():
-        raise ShapeError(f"loop_solve takes one state, got batch shape {shape}")
-    nq = model.nq
-    qd = np.zeros(nq) if qd is None else qd
-    tau = np.zeros(nq) if tau is None else tau
+    q, qd, tau, f_ext = _one_state(model, q, qd, tau, f_ext, "loop_solve")
     cs = _contacts_of(model, contacts)
     data = kinematics(model, q, qd, f_ext)
     tree = stacked_solve(model, q, qd, tau, f_ext, data=data)
@@ -634,12 +629,8 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
     >>> bool(abs(ref["qdd"][0] - (-6 / 5 * 9.81 * np.cos(1.2))) < 1e-10)
     True
     """
-    q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
-    if shape != ():
-        raise ShapeError(f"constrained_dynamics_lagrange takes one state, got batch shape {shape}")
+    q, qd, tau, f_ext = _one_state(model, q, qd, tau, f_ext, "constrained_dynamics_lagrange")
     nq, N = model.nq, model.N
-    qd = np.zeros(nq) if qd is None else qd
-    tau = np.zeros(nq) if tau is None else tau
     cs = _contacts_of(model, contacts)
     data = kinematics(model, q, qd, None)
     arr = model.arrays()

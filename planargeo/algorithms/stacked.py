@@ -40,10 +40,11 @@ import numpy as np
 
 from planargeo._validate import as_array
 from planargeo.errors import InputError, ShapeError, TopologyError
-from planargeo.mechanics.kinematics import _kinematics_scalar, check_state
+from planargeo.mechanics.kinematics import _kinematics_scalar
 from planargeo.mechanics.subspaces import _effective_mobility
 from planargeo.mechanics.model import Model, _cycle_error, _find_cycle
-from planargeo.algorithms.articulated_inertia import _data_arrays, _per_state, _state_arrays, articulated_recursion
+from planargeo.algorithms.articulated_inertia import (_data_arrays, _one_state, _per_state, _state_arrays,
+                                                     articulated_recursion)
 from planargeo.algorithms.articulated_mobility import mobility_recursion
 
 __all__ = ["adjacency", "trunk", "blocks", "StackedSolution", "stacked_solve", "joint_conditions",
@@ -468,12 +469,10 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     >>> round(float(sol.qdd[0]), 6)                      # uniform rod from its end: -3g/(2L)
     -14.715
     """
-    q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
-    if shape != ():
-        raise ShapeError(f"stacked_solve takes one state, got batch shape {shape}")
-    N, nq = model.N, model.nq
+    q, qd, tau, f_ext = _one_state(model, q, qd, tau, f_ext, "stacked_solve")
+    N = model.N
     if data is None:
-        data = _kinematics_scalar(model, q, np.zeros(nq) if qd is None else qd, f_ext)   # kinematics(), checked
+        data = _kinematics_scalar(model, q, qd, f_ext)   # kinematics(), checked
     args = _data_arrays(model, data, tau)
     art = articulated_recursion(*args[1:])          # 7.7a/7.7b = 9.27/9.28 corrected, 7.8
     ks = [si.shape[1] for si in art.S]
