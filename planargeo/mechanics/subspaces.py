@@ -89,8 +89,6 @@ _parameters = entries({
     "I": "I : array_like, shape (..., 3, 3)\n    Symmetric inertia (rigid or articulated) at the origin.",
     "s": "s : array_like, shape (..., 3, k)\n    Joint motion space (k unit twists as columns).",
     "R": "R : array_like, shape (..., 3, 3-k)\n    Joint reaction space (wrenches reciprocal to ``s``).",
-    "f": "f : array_like, shape (..., 3)\n    Wrench.",
-    "a": "a : array_like, shape (..., 3)\n    Acceleration twist.",
 })
 
 
@@ -640,7 +638,9 @@ def active_force(s, f) -> np.ndarray:
 
     Parameters
     ----------
-    {s f}
+    {s}
+    f : array_like, shape (..., 3)
+        Wrench.
 
     Returns
     -------
@@ -656,7 +656,6 @@ def active_force(s, f) -> np.ndarray:
 
 
 @overflow_checked("U or f")
-@_parameters
 def reaction_force(U, f) -> np.ndarray:
     """Reaction-force components ``μ = Uᵀ f`` (thesis 6.61b, 6.54).
 
@@ -664,7 +663,8 @@ def reaction_force(U, f) -> np.ndarray:
     ----------
     U : array_like, shape (..., 3, 3-k)
         The joint's ``U = I⁻¹R (RᵀI⁻¹R)⁻¹`` (:func:`U_of`, 6.37).
-    {f}
+    f : array_like, shape (..., 3)
+        Wrench.
 
     Returns
     -------
@@ -680,7 +680,6 @@ def reaction_force(U, f) -> np.ndarray:
 
 
 @overflow_checked("T or a")
-@_parameters
 def active_acceleration(T, a) -> np.ndarray:
     """Active (absolute joint) acceleration ``ψ = Tᵀ a`` (thesis 6.62b, 6.57).
 
@@ -688,7 +687,8 @@ def active_acceleration(T, a) -> np.ndarray:
     ----------
     T : array_like, shape (..., 3, k)
         The joint's ``T = I s (sᵀIs)⁻¹`` (:func:`T_of`, 6.36).
-    {a}
+    a : array_like, shape (..., 3)
+        Acceleration twist.
 
     Returns
     -------
@@ -710,7 +710,9 @@ def reactive_acceleration(R, a) -> np.ndarray:
 
     Parameters
     ----------
-    {R a}
+    {R}
+    a : array_like, shape (..., 3)
+        Acceleration twist.
 
     Returns
     -------
@@ -1054,13 +1056,13 @@ class Decomposition:
         """
         return cls(A, joint.s, joint.R, name=name)
 
-    @_parameters
     def split_wrench(self, f) -> tuple[np.ndarray, np.ndarray]:
         """``(Q, μ) = (sᵀf, Uᵀf)`` so that ``f = T Q + R μ`` (thesis 6.38, 6.61).
 
         Parameters
         ----------
-        {f}
+        f : array_like, shape (..., 3)
+            Wrench.
 
         Returns
         -------
@@ -1116,13 +1118,13 @@ class Decomposition:
         """
         return _combine(self.T, Q, self.R, mu, ("Q", "mu"))
 
-    @_parameters
     def split_twist(self, a) -> tuple[np.ndarray, np.ndarray]:
         """``(ψ, γ) = (Tᵀa, Rᵀa)`` so that ``a = s ψ + U γ`` (thesis 6.44, 6.62).
 
         Parameters
         ----------
-        {a}
+        a : array_like, shape (..., 3)
+            Acceleration twist.
 
         Returns
         -------
