@@ -29,7 +29,8 @@ import numpy as np
 from planargeo._validate import (as_array, as_mat3, as_vec3, as_xy, batch_shape, check_overflow, check_positive,
                                  check_symmetric, check_tolerance, overflow_checked, rescaled)
 from planargeo.errors import DegenerateGeometryError, InputError, ShapeError
-from planargeo.geometry.projective import T_STD, _cross, _entries, _first_index, _fit, _refuse_zero
+from planargeo.geometry._docs import entries
+from planargeo.geometry.projective import T_STD, _cross, _first_index, _fit, _refuse_zero
 
 __all__ = [
     "polar", "pole", "conic_residual", "is_on_conic", "ConicType", "classify", "centre",
@@ -68,7 +69,7 @@ _ENTRIES = {
                 "angle : float, optional\n    Rotation of the parabola's frame from the axes (rad).",
     "conic_matrix": "Returns\n-------\nnumpy.ndarray, shape (3, 3)\n    The conic matrix.",
 }
-_shared = _entries(_ENTRIES)
+_shared = entries(_ENTRIES)
 
 
 # --------------------------------------------------------------------------- helpers

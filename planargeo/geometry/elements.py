@@ -26,6 +26,7 @@ import numpy as np
 
 from planargeo.geometry import conics as _c
 from planargeo.geometry import projective as _p
+from planargeo.geometry._docs import entries
 from planargeo._validate import as_array
 from planargeo.errors import DegenerateGeometryError, ShapeError
 
@@ -35,7 +36,7 @@ _EQ_TOL = 1e-12
 
 
 #: Docstring entries the classes share, said once (a line ``{point}`` in a docstring).
-_shared = _p._entries({"point": "point : Point or array_like, shape (3,)\n    A Point or homogeneous point array.",
+_shared = entries({"point": "point : Point or array_like, shape (3,)\n    A Point or homogeneous point array.",
                        "line": "line : Line or array_like, shape (3,)\n    A Line or homogeneous line array."})
 
 

@@ -45,13 +45,12 @@ point and no line, raises :class:`DegenerateGeometryError`.  The NaN and
 from __future__ import annotations
 
 import math
-import re
-import textwrap
 
 import numpy as np
 
 from planargeo._validate import as_array, as_scalar, as_vec3, as_xy, batch_shape, check_overflow
 from planargeo.errors import COND_LIMIT, DegenerateGeometryError, InputError
+from planargeo.geometry._docs import entries
 
 __all__ = [
     "T_STD", "LINE_AT_INFINITY",
@@ -74,21 +73,6 @@ LINE_AT_INFINITY = np.array([0.0, 0.0, 1.0])
 LINE_AT_INFINITY.setflags(write=False)
 
 
-def _entries(table: dict[str, str]):
-    """A decorator writing docstring entries said once: a line ``{p l}`` alone becomes the entries
-    ``table["p"]`` and ``table["l"]``, indented like that line.
-
-    So a parameter (or a section) that many functions share is described in one place.
-    """
-    def entry(m):
-        return "\n".join(textwrap.indent(table[key], m[1]) for key in m[2].split())
-
-    def fill(f):
-        f.__doc__ = re.sub(r"^( *)\{([\w ]+)\}$", entry, f.__doc__, flags=re.M)
-        return f
-    return fill
-
-
 #: Docstring entries many functions here share, each said once (a line ``{p l}`` in a docstring).
 _ENTRIES = {
     "p": "p : array_like, shape (..., 3)\n    Homogeneous points.",
@@ -106,7 +90,7 @@ _ENTRIES = {
                 "    The matrix in the other coordinates: ``T C T`` (or ``T S T``), ``T`` of (5.47)\n"
                 "    being its own inverse.",
 }
-_shared = _entries(_ENTRIES)
+_shared = entries(_ENTRIES)
 
 
 def _first_index(mask: np.ndarray) -> str:
