@@ -104,7 +104,6 @@ def tree_solve(model, q, qd, tau=None):
     from planargeo.algorithms.loops import loop_solve
     from planargeo.algorithms.stacked import stacked_solve
 
-    tau = np.zeros(model.nq) if tau is None else tau
     return (loop_solve if model.contacts else stacked_solve)(model, q, qd, tau)
 
 
