@@ -55,12 +55,8 @@ import numpy as np
 
 from planargeo._validate import as_array, as_scalar, as_xy
 from planargeo.errors import CyclicTopologyError, InputError, ShapeError, TopologyError
-from planargeo.screws._docs import entries
 
 __all__ = ["Body", "Joint", "Model", "Data", "JOINT_DOFS", "MAX_BODIES", "chain_model", "random_model"]
-
-#: The body index most methods take, described once (:func:`planargeo.screws._docs.entries`).
-_documented = entries({"i": "i : int\n    Body (joint) index."})
 
 #: Number of degrees of freedom of each joint kind.
 JOINT_DOFS: dict[str, int] = {
@@ -344,13 +340,13 @@ class Model:
         object.__setattr__(self, "_arrays", {})
 
     # -- structure -------------------------------------------------------
-    @_documented
     def q_slice(self, i: int) -> slice:
         """Slice of ``q`` holding joint ``i``'s coordinates.
 
         Parameters
         ----------
-        {i}
+        i : int
+            Body (joint) index.
 
         Returns
         -------
@@ -393,13 +389,13 @@ class Model:
         """
         return tuple(k for k, p in enumerate(self.parents) if p == i)
 
-    @_documented
     def ancestors(self, i: int) -> tuple[int, ...]:
         """Bodies on the path from the ground to ``i`` (inclusive), root first.
 
         Parameters
         ----------
-        {i}
+        i : int
+            Body index.
 
         Returns
         -------
@@ -536,13 +532,13 @@ class Data:
     def __init__(self, model: Model):
         self.model = model
 
-    @_documented
     def s(self, i: int) -> np.ndarray:
         """Joint ``i``'s world-frame motion space, shape (..., 3, k).
 
         Parameters
         ----------
-        {i}
+        i : int
+            Body (joint) index.
 
         Returns
         -------
@@ -557,13 +553,13 @@ class Data:
         """
         return self.S[..., :, self.model.q_slice(i)]
 
-    @_documented
     def jacobian(self, i: int) -> np.ndarray:
         """Body ``i``'s Jacobian (..., 3, nq): ``v_i = J_i qd`` (thesis Remark 8).
 
         Parameters
         ----------
-        {i}
+        i : int
+            Body index.
 
         Returns
         -------
