@@ -61,8 +61,10 @@ __all__ = ["SpecialCase", "CASES", "twist_case", "wrench_case", "pair_case", "tw
 #: The docstring entries the case functions share (:func:`planargeo.screws._docs.entries`).
 _documented = entries({
     "rtol": "rtol : float\n    Relative size below which a quantity counts as zero.",
-    "case": "Returns\n-------\nSpecialCase\n    The case, named.\n\nRaises\n------\nShapeError\n"
-            "    A screw argument is not one (3,) twist or wrench.\nInputError\n    A negative or non-finite ``rtol``.",
+    "case": ("Returns\n-------\nSpecialCase\n    The case, named.\n\n"
+             "Raises\n------\n"
+             "ShapeError\n    A screw argument is not one (3,) twist or wrench.\n"
+             "InputError\n    A negative or non-finite ``rtol``."),
 })
 
 #: name -> (readable text, thesis equation)
