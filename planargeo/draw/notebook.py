@@ -27,9 +27,12 @@ import math
 import numpy as np
 
 from planargeo.draw.picture import Picture
+from planargeo.draw.pictures._words import num as _num
+from planargeo.draw.pictures.kit import foot_on_line
 from planargeo.errors import InputError
 from planargeo.geometry.conics import centre, classify
 from planargeo.geometry.elements import Conic, Line, Point
+from planargeo.geometry.projective import to_xy
 from planargeo.screws.inertia import Inertia
 from planargeo.screws.twists import Twist, Wrench
 
@@ -46,22 +49,11 @@ DRAWN = (("planargeo.geometry.elements", "Point"), ("planargeo.geometry.elements
 
 def num(x: float) -> str:
     """``x`` to three significant digits, round-off below 1e-12 (and ``-0``) as ``0``."""
-    x = float(x)
-    return "0" if abs(x) < 1e-12 else f"{x:.3g}"
+    return _num(x, 3, 1e-12)
 
 
 def _pair(xy) -> str:
     return f"({num(xy[0])}, {num(xy[1])})"
-
-
-def _xy(p) -> np.ndarray:
-    """Euclidean ``(x, y)`` of a finite homogeneous point ``[y, -x, w]`` (thesis 5.49)."""
-    return np.array([-p[1] / p[2], p[0] / p[2]])
-
-
-def _foot(l) -> np.ndarray:
-    """The point of the finite line ``[fx, fy, tz]`` nearest the origin."""
-    return np.array([l[2] * l[1], -l[2] * l[0]]) / float(l[0] ** 2 + l[1] ** 2)
 
 
 def _frame(points, title: str, size, minimum: float = 1.0) -> Picture:
@@ -145,7 +137,7 @@ def _pole(p, name: str, twist: bool, size) -> Picture:
         pic = _frame([], title, size)
         pic.point(name, p, role="twist", symbol=name, desc=title + " (pole at infinity)")
         return pic
-    xy = _xy(p)
+    xy = to_xy(p)
     title = f"{name}: pole {_pair(xy)}, ω = {num(p[2])}" if twist else f"{name} = {_pair(xy)}"
     pic = _frame([xy], title, size)
     pic.point(name, p, role="twist", symbol=name, desc=title, glyph=twist,
@@ -170,7 +162,7 @@ def _line(l, name: str, wrench: bool, size) -> Picture:
             pic.text(name + ":label", ((x0 + x1) / 2, y1 - 30.0 / pic.ky), f"{name}: line at ∞",
                      role="wrench", symbol=name, desc=title, ha="center")
         return pic
-    foot = _foot(l)
+    foot = foot_on_line(l, (0.0, 0.0))
     F = math.hypot(l[0], l[1])
     title = (f"{name}: F = {num(F)} through {_pair(foot)}" if wrench
              else f"{name} through {_pair(foot)}, direction {_pair(np.asarray(l[:2]) / F)}")
@@ -193,14 +185,14 @@ def _conic(C, name: str, inertia: bool, size) -> Picture:
     z = centre(C)
     if inertia and t.reality == "imaginary":
         m = float(C[0, 0])
-        c = _xy(z)
+        c = to_xy(z)
         rigid = (abs(C[0, 0] - C[1, 1]) <= 1e-10 * np.abs(C).max()
                  and abs(C[0, 1]) <= 1e-10 * np.abs(C).max())
         rho = math.sqrt(max(float(C[2, 2]) / m - float(c @ c), 0.0))
         title = (f"{name}: m = {num(m)}, c = {_pair(c)}, ρ = {num(rho)}" if rigid
                  else f"{name}: centre {_pair(c)}")
     else:
-        where = f", centre {_pair(_xy(z))}" if z[2] != 0 else ""
+        where = f", centre {_pair(to_xy(z))}" if z[2] != 0 else ""
         title = f"{name}: {t}{where}"
     real = t.reality == "real"
     pic = _frame(_ring(C), title, size)
