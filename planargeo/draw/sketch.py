@@ -688,13 +688,6 @@ def _polygons(shape):
     return [xy], []
 
 
-def _rings_path(rings) -> np.ndarray:
-    rows = []
-    for r in rings:
-        rows += [r, np.full((1, 2), np.nan)]
-    return np.vstack(rows[:-1])
-
-
 # --------------------------------------------------------------------------- mechanism
 @documented
 def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alpha: float = 0.35,
