@@ -37,7 +37,7 @@ _EQ_TOL = 1e-12
 
 #: Docstring entries the classes share, said once (a line ``{point}`` in a docstring).
 _shared = entries({"point": "point : Point or array_like, shape (3,)\n    A Point or homogeneous point array.",
-                       "line": "line : Line or array_like, shape (3,)\n    A Line or homogeneous line array."})
+                   "line": "line : Line or array_like, shape (3,)\n    A Line or homogeneous line array."})
 
 
 def _fmt(v: float) -> str:
