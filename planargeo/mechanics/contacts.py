@@ -52,7 +52,7 @@ import numpy as np
 
 from planargeo._validate import as_array, as_scalar, as_xy
 from planargeo.errors import DegenerateGeometryError, InputError, ShapeError
-from planargeo.screws._docs import entries
+from planargeo.geometry._docs import entries
 
 __all__ = ["Contact", "CONTACT_DOFS", "contact_matrix", "validate_contacts", "world_point",
            "z_of", "B_of", "residual", "contact_bias", "stacked_contact_spaces"]
@@ -60,7 +60,7 @@ __all__ = ["Contact", "CONTACT_DOFS", "contact_matrix", "validate_contacts", "wo
 #: Number of relative degrees of freedom ``k`` each contact kind allows (columns of ``z``).
 CONTACT_DOFS = {"pin": 1, "slider": 1, "weld": 0}
 
-#: The parameters of the per-contact functions, described once (:func:`planargeo.screws._docs.entries`).
+#: The parameters of the per-contact functions, described once (:func:`planargeo.geometry._docs.entries`).
 _documented = entries({
     "contact": "contact : Contact\n    One contact.",
     "pose": "pose : array_like, shape (..., N, 3)\n    World poses ``(x, y, θ)`` of the N bodies (m, rad).",

@@ -60,7 +60,7 @@ import numpy as np
 
 from planargeo._validate import as_xy, overflow_checked
 from planargeo.errors import InputError, ShapeError
-from planargeo.screws._docs import entries
+from planargeo.geometry._docs import entries
 from planargeo.screws.twists import unit_rotation, unit_translation
 
 __all__ = ["KINDS", "DOF", "motion_space", "reaction_space", "R_of", "JointSpace",
@@ -74,7 +74,7 @@ DOF = {"revolute": 1, "prismatic": 1, "revolute_prismatic": 2, "twin_prismatic":
 
 _USES_DIRECTION = ("prismatic", "revolute_prismatic", "twin_prismatic", "plane")
 
-#: The parameters of the joint constructors, described once (:func:`planargeo.screws._docs.entries`).
+#: The parameters of the joint constructors, described once (:func:`planargeo.geometry._docs.entries`).
 _documented = entries({
     "point": "point : array_like, shape (2,), optional\n    A point of the joint (m); default the origin.",
     "direction": "direction : array_like, shape (2,), optional\n    Sliding direction (non-zero); default +x.",

@@ -65,7 +65,7 @@ import numpy as np
 from planargeo._validate import as_array, as_scalar, check_overflow, check_positive_semidefinite, overflow_checked
 from planargeo.errors import (COND_LIMIT, InputError, ShapeError,
                               SingularConfigurationError, SingularInertiaError)
-from planargeo.screws._docs import entries
+from planargeo.geometry._docs import entries
 
 __all__ = [
     "T_of", "U_of",

@@ -1,14 +1,11 @@
-"""Docstring entries that many functions of the screws and mechanics share, written once (private).
+"""The docstring entries many functions of the screws share, written once (private).
 
-A docstring line that holds only names in braces, such as ``{inertia twist}``, stands for
-those entries: :func:`entries` writes them in at the line's indentation.  A line naming
-something the table does not hold is left as it is.
+A docstring line such as ``{inertia twist}`` stands for those entries of :data:`SCREWS`;
+:data:`documented` writes them in (:func:`planargeo.geometry._docs.entries`).
 """
 from __future__ import annotations
 
-import inspect
-import re
-import textwrap
+from planargeo.geometry._docs import entries
 
 #: The entries of the screws' docstrings: a name and its (parameter or raises) entry.
 SCREWS = {
@@ -23,52 +20,5 @@ SCREWS = {
                  "    ``array`` without a last axis of 3, not finite, or not real numbers.",
 }
 
-_PLACE = re.compile(r"^( *)\{([\w ]+)\}$", re.M)
-
-
-def entries(*tables):
-    """A decorator writing the entries of ``tables`` into a docstring where a line names them in braces.
-
-    Parameters
-    ----------
-    *tables : dict of str to str
-        Entries by name; a later table's entry replaces an earlier one's.
-
-    Returns
-    -------
-    callable
-        The decorator; it returns the function (or class) itself, its docstring filled in
-        (and that of the function it wraps, if any).
-
-    Examples
-    --------
-    >>> @entries({"x": "x : float\\n    A number."})
-    ... def f(x):
-    ...     '''Nothing.
-    ...
-    ...     Parameters
-    ...     ----------
-    ...     {x}
-    ...     '''
-    >>> print(f.__doc__.splitlines()[4])
-        x : float
-    """
-    table = {name: text for t in tables for name, text in t.items()}
-
-    def fill(match):
-        names = match[2].split()
-        if not all(name in table for name in names):
-            return match[0]
-        return "\n".join(textwrap.indent(table[name], match[1]) for name in names)
-
-    def decorate(f):
-        for g in {f, inspect.unwrap(f)}:
-            if g.__doc__:
-                g.__doc__ = _PLACE.sub(fill, g.__doc__)
-        return f
-
-    return decorate
-
-
-#: The decorator of the screws' shared entries (:data:`SCREWS`).
+#: The decorator of the screws' shared entries.
 documented = entries(SCREWS)

@@ -17,7 +17,8 @@ import numpy as np
 from planargeo._validate import (as_array, as_mat3, as_scalar, as_vec3, as_xy, batch_shape, check_overflow,
                                  check_positive_definite, check_positive_semidefinite, overflow_checked, rescaled)
 from planargeo.errors import InputError, InvalidPolygonError, SingularInertiaError
-from planargeo.screws._docs import SCREWS, entries
+from planargeo.geometry._docs import entries
+from planargeo.screws._docs import SCREWS
 from planargeo.screws.twists import (_Held, inertia_at, inertia_matrix, inertia_rotated, kinetic_energy,
                                       momentum)
 
@@ -26,7 +27,7 @@ __all__ = [
     "percussion_axis", "percussion_pole", "drawable_conic", "mobility", "polygon_moments",
 ]
 
-#: The docstring entries of this module (:func:`planargeo.screws._docs.entries`): the screws' and these.
+#: The docstring entries of this module (:func:`planargeo.geometry._docs.entries`): the screws' and these.
 _documented = entries(SCREWS, {
     "pole": "point : array_like, shape (..., 3)\n    Homogeneous acceleration pole (a twist).",
     "impulse": "line : array_like, shape (..., 3)\n    Homogeneous line (an impulse's line of action).",

@@ -53,12 +53,12 @@ import numpy as np
 from planargeo._validate import as_vec3, as_xy, check_positive, check_tolerance
 from planargeo.errors import ShapeError
 from planargeo.geometry.projective import _fit
-from planargeo.screws._docs import entries
+from planargeo.geometry._docs import entries
 
 __all__ = ["SpecialCase", "CASES", "twist_case", "wrench_case", "pair_case", "twists_case",
            "wrenches_case", "horizon_point", "horizon_handle"]
 
-#: The docstring entries the case functions share (:func:`planargeo.screws._docs.entries`).
+#: The docstring entries the case functions share (:func:`planargeo.geometry._docs.entries`).
 _documented = entries({
     "rtol": "rtol : float\n    Relative size below which a quantity counts as zero.",
     "case": ("Returns\n-------\nSpecialCase\n    The case, named.\n\n"
