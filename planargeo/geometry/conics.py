@@ -1331,7 +1331,7 @@ def conic_circle(centre, radius, imaginary: bool = False) -> np.ndarray:
     Raises
     ------
     InputError
-        If ``imaginary`` is not a bool.
+        If ``imaginary`` is not True or False.
 
     Examples
     --------

@@ -387,7 +387,7 @@ def from_direction(d) -> np.ndarray:
     Raises
     ------
     DegenerateGeometryError
-        If ``d`` is the zero vector.
+        If ``d`` is the zero vector, which has no direction.
 
     Examples
     --------
