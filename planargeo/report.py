@@ -173,20 +173,16 @@ def quantity_info(scene: str) -> dict[str, dict[str, str]]:
 
 def _magnitude(v: Any) -> float:
     """Largest finite magnitude in a plain value (numbers, nested lists and dicts), 0 if none."""
-    if isinstance(v, bool) or v is None or isinstance(v, str):
-        return 0.0
-    if isinstance(v, (int, float)):
-        return abs(float(v)) if math.isfinite(v) else 0.0
     if isinstance(v, dict):
-        return max((_magnitude(x) for x in v.values()), default=0.0)
+        v = list(v.values())
     if isinstance(v, list):
-        return max((_magnitude(x) for x in v), default=0.0)
+        return max(map(_magnitude, v), default=0.0)
+    if isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v):
+        return abs(float(v))
     return 0.0
 
 
 def _zeroed(v: Any, limit: float) -> Any:
-    if isinstance(v, bool) or v is None or isinstance(v, str):
-        return v
     if isinstance(v, float):
         return 0.0 if abs(v) < limit or v == 0 else v
     if isinstance(v, dict):
@@ -412,17 +408,13 @@ def to_plain(x: Any) -> Any:
 
 
 def _fmt_number(v: Any) -> str:
-    if isinstance(v, bool) or v is None:
+    if not isinstance(v, float):
         return str(v)
-    if isinstance(v, int):
-        return str(v)
-    if isinstance(v, float):
-        if v == 0:
-            return "0.0"                       # also -0.0
-        if math.isfinite(v) and v == int(v) and abs(v) < 1e12:
-            return f"{v:.1f}"
-        return f"{v:.6g}"
-    return str(v)
+    if v == 0:
+        return "0.0"                           # also -0.0
+    if math.isfinite(v) and v == int(v) and abs(v) < 1e12:
+        return f"{v:.1f}"
+    return f"{v:.6g}"
 
 
 #: Matrices with more columns than this are summarised in the table (``--json`` has the values).
