@@ -545,11 +545,7 @@ def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
     if on_interior == "raise" and not np.all(real):
         raise InputError(f"p has no real tangents to C{_first_index(~real)}: it lies inside the conic "
                          "(or C is imaginary); use on_interior='nan' to get NaN instead")
-    T = _mv(C[..., None, :, :], X)
-    vertex = real[..., None] & np.all(T == 0, axis=-1)
-    if np.any(vertex):
-        raise DegenerateGeometryError(f"a contact point is the vertex of the degenerate conic C"
-                                      f"{_first_index(np.any(vertex, axis=-1))}, where the tangent is undefined")
+    T = _tangents_at(C[..., None, :, :], X, real, "contact point", -1)
     nan = ~real[..., None, None]
     return (check_overflow(_nline(T), "tangents_from_point(C, p)", "the tangents' distance", ok=nan),
             check_overflow(_npoint(X), "tangents_from_point(C, p)", "the contact points'", ok=nan))
@@ -676,10 +672,7 @@ def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 
     Lj = _cross(Xu[..., 0, :], Xu[..., 1, :])
     same = np.all(Lj == 0, axis=-1, keepdims=True)
     Lj = np.where(same, T[..., 0, :], Lj)
-    # orient like C p so that drawings and comparisons are consistent
-    s = np.einsum("...i,...i->...", Lj, _mv(C, p))
-    Lj = np.where((s < 0)[..., None], -Lj, Lj)
-    P = np.broadcast_to(p, Lj.shape)
+    Lj, P = _like_polar(Lj, C, p)
     return _checked(ExteriorConstruction(_npoint(P), T, X, _nline(Lj)), "polar_construction_exterior",
                     on_interior == "nan")
 
@@ -762,22 +755,33 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
         i = int(np.argwhere(~distinct)[0][-1])
         raise InputError(f"lines[{i}] does not cut C in two distinct real points "
                          "(p is not interior, or the line is tangent)")
-    CX = _mv(C[..., None, None, :, :], X)
-    vertex = distinct[..., None] & np.all(CX == 0, axis=-1)
-    if np.any(vertex):
-        raise DegenerateGeometryError(f"a chord point is the vertex of the degenerate conic C"
-                                      f"{_first_index(np.any(vertex, axis=(-2, -1)))}, where the tangent is undefined")
-    T = _nline(CX)
+    T = _nline(_tangents_at(C[..., None, None, :, :], X, distinct, "chord point", (-2, -1)))
     poles = _unit(_cross(_unit(T[..., 0, :]), _unit(T[..., 1, :])))
     polar_ = _cross(poles[..., 0, :], poles[..., 1, :])
     bad = np.all(polar_ == 0, axis=-1) & np.all(distinct, axis=-1)
     if np.any(bad):
         raise DegenerateGeometryError(f"lines[0] and lines[1] are the same line{_first_index(bad)}")
-    s = np.einsum("...i,...i->...", polar_, _mv(C, p))
-    polar_ = np.where((s < 0)[..., None], -polar_, polar_)
-    P = np.broadcast_to(p, polar_.shape)
+    polar_, P = _like_polar(polar_, C, p)
     return _checked(InteriorConstruction(_npoint(P), _nline(lines), _npoint(X), T, _npoint(poles), _nline(polar_)),
                     "polar_construction_interior", on_miss == "nan")
+
+
+def _tangents_at(C, X, real, what: str, axes) -> np.ndarray:
+    """The tangents ``C X`` at the points ``X`` of the conic; where ``real``, a point that is the vertex of a
+    degenerate conic (no tangent there) is refused, naming it ``what`` (``axes``: those of ``X`` per conic)."""
+    T = _mv(C, X)
+    vertex = real[..., None] & np.all(T == 0, axis=-1)
+    if np.any(vertex):
+        raise DegenerateGeometryError(f"a {what} is the vertex of the degenerate conic C"
+                                      f"{_first_index(np.any(vertex, axis=axes))}, where the tangent is undefined")
+    return T
+
+
+def _like_polar(L, C, p):
+    """``L`` oriented like the polar ``C p`` (so that drawings and comparisons agree), and ``p`` broadcast to it."""
+    s = np.einsum("...i,...i->...", L, _mv(C, p))
+    L = np.where((s < 0)[..., None], -L, L)
+    return L, np.broadcast_to(p, L.shape)
 
 
 def _checked(construction, what: str, nan_asked: bool):
