@@ -34,11 +34,12 @@ import math
 
 import numpy as np
 
+from planargeo.draw._shared import added, as_picture, documented, line_words
 from planargeo.draw.geometry import _mat, _vec, point_xy
 from planargeo.draw.picture import PX_PER_PT, Picture, plain_text
 from planargeo.draw.pictures._words import num, pair
 from planargeo.draw.pictures.common import label_line, point_along
-from planargeo.draw.sketch import added, as_picture, dimension, documented, line_words, segment
+from planargeo.draw.sketch import dimension, segment
 from planargeo.draw.style import COLORS
 from planargeo.errors import InputError
 from planargeo.geometry.conics import (line_conic_intersections, polar_construction_exterior,

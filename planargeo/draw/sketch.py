@@ -35,14 +35,13 @@ True
 from __future__ import annotations
 
 import math
-import re
 
 import numpy as np
 
+from planargeo.draw._shared import as_picture, documented, view_centre
 from planargeo.draw.geometry import clip_line
 from planargeo.draw.layout import fit_box, shape_points
 from planargeo.draw.picture import PX_PER_PT, Picture, _color as _role_color, _dash as _role_dash
-from planargeo.draw.pictures._words import pair
 from planargeo.draw.pictures.common import _align
 from planargeo.draw.pictures.kit import foot_on_line, seg_distance
 from planargeo.draw.style import COLORS, LINEWIDTHS
@@ -78,160 +77,6 @@ def _positive(v, name: str) -> float:
     if not (math.isfinite(f) and f > 0):
         raise InputError(f"{name} must be a positive finite number, got {v!r}")
     return f
-
-
-def as_picture(pic) -> Picture:
-    """``pic`` itself if it is a :class:`~planargeo.draw.picture.Picture`, else an InputError.
-
-    Parameters
-    ----------
-    pic : object
-        What a drawing function was given to draw on.
-
-    Returns
-    -------
-    Picture
-        ``pic``.
-
-    Raises
-    ------
-    InputError
-        ``pic`` is not a Picture (a matplotlib figure or axes is not one: :func:`panel` makes
-        a picture the size of an axes).
-
-    Examples
-    --------
-    >>> as_picture("a figure")
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.InputError: pic must be a Picture (planargeo.draw.picture.Picture), got str
-    """
-    if not isinstance(pic, Picture):
-        raise InputError(f"pic must be a Picture (planargeo.draw.picture.Picture), got {type(pic).__name__}")
-    return pic
-
-
-def added(draw, *args, **kw) -> dict:
-    """Call the :class:`~planargeo.draw.picture.Picture` method ``draw`` and return the element it added.
-
-    Parameters
-    ----------
-    draw : callable
-        A bound method of a picture that adds one element (``pic.line``, ``pic.point``...).
-    *args, **kw
-        Its arguments.
-
-    Returns
-    -------
-    dict
-        The element added.
-
-    Examples
-    --------
-    >>> pic = Picture((0, 1, 0, 1), size=(100, 100), ticks=False)
-    >>> added(pic.marks, "m", [(0.5, 0.5)], symbol="M")["symbol"]
-    'M'
-    """
-    draw(*args, **kw)
-    return draw.__self__.elements[-1]
-
-
-def view_centre(pic: Picture) -> np.ndarray:
-    """The centre of the picture's view (data units).
-
-    Parameters
-    ----------
-    pic : Picture
-
-    Returns
-    -------
-    numpy.ndarray (2,)
-
-    Examples
-    --------
-    >>> view_centre(Picture((0, 4, -1, 1), size=(100, 100))).tolist()
-    [2.0, 0.0]
-    """
-    x0, x1, y0, y1 = pic.box
-    return np.array([(x0 + x1) / 2, (y0 + y1) / 2])
-
-
-def line_words(l, digits: int = 4) -> str:
-    """Where a line ``[fx, fy, τ]`` (4.27) runs, in words: its point nearest the origin and its direction.
-
-    Parameters
-    ----------
-    l : array_like (3,)
-    digits : int
-        Significant digits of the numbers.
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> line_words([0.0, 1.0, 2.0]), line_words([0.0, 0.0, 1.0])        # the line x = 2; a couple
-    ('through (2, 0) m, along (0, 1)', 'the line at infinity')
-    """
-    fx, fy, tz = (float(v) for v in l)
-    F = math.hypot(fx, fy)
-    if F == 0.0:
-        return "the line at infinity" if tz != 0.0 else "none (zero)"
-    return (f"through {pair((fy * tz / (F * F), -fx * tz / (F * F)), digits)} m, "
-            f"along {pair((fx / F, fy / F), digits)}")
-
-
-#: Docstring entries the drawing functions share, written once: a line ``{pic id}`` in a
-#: docstring stands for those entries (:func:`documented`).
-ENTRIES = {"pic": "pic : Picture\n    Where to draw.",
-           "id": "id : str\n    Stable name of the element.",
-           "symbol": "symbol, desc : str\n    Thesis symbol and a one-line description.",
-           "z": "z : int\n    Drawing order.",
-           "prefix": "prefix : str\n    Put before every id (several drawings in one picture).",
-           "element": "Returns\n-------\ndict\n    The element added."}
-
-
-def documented(fn, entries: dict | None = None):
-    """``fn`` with each docstring line ``{pic id ...}`` replaced by those :data:`ENTRIES` (and ``entries``).
-
-    Parameters
-    ----------
-    fn : callable
-        A function whose docstring names shared entries, one ``{key key ...}`` line each place.
-    entries : dict, optional
-        More entries (a module's own: an example's set-up), by key; ``functools.partial`` makes
-        a module's decorator of them.
-
-    Returns
-    -------
-    callable
-        ``fn`` itself, its docstring completed.
-
-    Examples
-    --------
-    >>> def f(pic, z):
-    ...     '''Draw.
-    ...
-    ...     Parameters
-    ...     ----------
-    ...     {pic z}
-    ...     '''
-    >>> print(documented(f).__doc__.split("----------")[1].rstrip())
-    <BLANKLINE>
-        pic : Picture
-            Where to draw.
-        z : int
-            Drawing order.
-    """
-    table = {**ENTRIES, **(entries or {})}
-
-    def lines(m):
-        return "\n".join(m[1] + line for key in m[2].split() for line in table[key].split("\n"))
-
-    if fn.__doc__:
-        fn.__doc__ = re.sub(r"^( *)\{([a-z ]+)\}$", lines, fn.__doc__, flags=re.M)
-    return fn
 
 
 def _text_part(x, y, text, dx=0.0, dy=0.0, ha="left", va="bottom") -> dict:

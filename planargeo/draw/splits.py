@@ -41,11 +41,11 @@ from functools import partial
 import numpy as np
 
 from planargeo._validate import as_vec3
+from planargeo.draw._shared import as_picture, documented, line_words, view_centre
 from planargeo.draw.picture import Picture, plain_text
 from planargeo.draw.pictures.common import label_toward
 from planargeo.draw.pictures.kit import force as _force_arrow
 from planargeo.draw.pictures._words import num, pair, where
-from planargeo.draw.sketch import as_picture, documented, line_words, view_centre
 from planargeo.errors import InputError
 from planargeo.mechanics.subspaces import Decomposition
 

@@ -40,11 +40,12 @@ import math
 import numpy as np
 
 from planargeo._validate import as_mat3, as_scalar, as_vec3
+from planargeo.draw._shared import added, as_picture, documented, view_centre
 from planargeo.draw.picture import PX_PER_PT, Picture, _dash, plain_text
 from planargeo.draw.pictures._words import force as force_words, num, pair
 from planargeo.draw.pictures.common import label_toward
 from planargeo.draw.pictures.kit import aim_label, force as force_arrow
-from planargeo.draw.sketch import added, as_picture, dimension, documented, view_centre
+from planargeo.draw.sketch import dimension
 from planargeo.draw.style import COLORS, LINEWIDTHS, SUM
 from planargeo.errors import InputError
 from planargeo.geometry.projective import is_at_infinity, is_ideal

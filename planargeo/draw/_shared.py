@@ -1,0 +1,95 @@
+"""What the gallery's drawing modules share (private): the picture check, a few words, the docstrings.
+
+:mod:`~planargeo.draw.sketch`, :mod:`~planargeo.draw.sums`, :mod:`~planargeo.draw.polars`,
+:mod:`~planargeo.draw.splits` and :mod:`~planargeo.draw.notebook` add elements to a
+:class:`~planargeo.draw.picture.Picture`; the helpers they all need are written here once.
+"""
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+
+from planargeo.draw.picture import Picture
+from planargeo.draw.pictures._words import pair
+from planargeo.errors import InputError
+
+__all__ = ["as_picture", "added", "view_centre", "line_words", "ENTRIES", "documented"]
+
+
+def as_picture(pic) -> Picture:
+    """``pic`` itself if it is a :class:`Picture`, else an InputError naming it.
+
+    >>> as_picture("a figure")
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: pic must be a Picture (planargeo.draw.picture.Picture), got str
+    """
+    if not isinstance(pic, Picture):
+        raise InputError(f"pic must be a Picture (planargeo.draw.picture.Picture), got {type(pic).__name__}")
+    return pic
+
+
+def added(draw, *args, **kw) -> dict:
+    """Call the picture's method ``draw`` (``pic.line``, ``pic.point``...) and return the element it added."""
+    draw(*args, **kw)
+    return draw.__self__.elements[-1]
+
+
+def view_centre(pic: Picture) -> np.ndarray:
+    """The centre of the picture's view (data units)."""
+    x0, x1, y0, y1 = pic.box
+    return np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+
+
+def line_words(l, digits: int = 4) -> str:
+    """Where a line ``[fx, fy, τ]`` (4.27) runs, in words: its point nearest the origin and its direction.
+
+    >>> line_words([0.0, 1.0, 2.0]), line_words([0.0, 0.0, 1.0])        # the line x = 2; a couple
+    ('through (2, 0) m, along (0, 1)', 'the line at infinity')
+    """
+    fx, fy, tz = (float(v) for v in l)
+    F = math.hypot(fx, fy)
+    if F == 0.0:
+        return "the line at infinity" if tz != 0.0 else "none (zero)"
+    return (f"through {pair((fy * tz / (F * F), -fx * tz / (F * F)), digits)} m, "
+            f"along {pair((fx / F, fy / F), digits)}")
+
+
+#: Docstring entries the drawing functions share, written once: a line ``{pic id}`` in a
+#: docstring stands for those entries (:func:`documented`).
+ENTRIES = {"pic": "pic : Picture\n    Where to draw.",
+           "id": "id : str\n    Stable name of the element.",
+           "symbol": "symbol, desc : str\n    Thesis symbol and a one-line description.",
+           "z": "z : int\n    Drawing order.",
+           "prefix": "prefix : str\n    Put before every id (several drawings in one picture).",
+           "element": "Returns\n-------\ndict\n    The element added."}
+
+
+def documented(fn, entries: dict | None = None):
+    """``fn`` with each docstring line ``{pic id ...}`` replaced by those :data:`ENTRIES` (and ``entries``,
+    a module's own, e.g. an example's set-up; ``functools.partial`` makes a module's decorator of them).
+
+    >>> def f(pic, z):
+    ...     '''Draw.
+    ...
+    ...     Parameters
+    ...     ----------
+    ...     {pic z}
+    ...     '''
+    >>> print(documented(f).__doc__.split("----------")[1].rstrip())
+    <BLANKLINE>
+        pic : Picture
+            Where to draw.
+        z : int
+            Drawing order.
+    """
+    table = {**ENTRIES, **(entries or {})}
+
+    def lines(m):
+        return "\n".join(m[1] + line for key in m[2].split() for line in table[key].split("\n"))
+
+    if fn.__doc__:
+        fn.__doc__ = re.sub(r"^( *)\{([a-z ]+)\}$", lines, fn.__doc__, flags=re.M)
+    return fn
