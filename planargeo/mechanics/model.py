@@ -527,6 +527,13 @@ class Data:
         Applied wrenches: gravity at the centre of mass plus ``f_ext``.
     p : ndarray (..., N, 3)
         Bias forces ``-(v×)^T I v - g`` (3.11 / 3.34).
+
+    Examples
+    --------
+    >>> from planargeo.mechanics.kinematics import kinematics
+    >>> kinematics(chain_model(2), [0.0, 0.0]).com      # two straight unit links along x
+    array([[0.5, 0. ],
+           [1.5, 0. ]])
     """
 
     def __init__(self, model: Model):

@@ -1053,6 +1053,12 @@ class Decomposition:
         -------
         Decomposition
             ``Decomposition(A, joint.s, joint.R)``.
+
+        Examples
+        --------
+        >>> from planargeo.mechanics.joints import revolute
+        >>> Decomposition.from_joint(np.eye(3), revolute((0.0, 0.0))).T.ravel()   # a unit disc: T = s
+        array([0., 0., 1.])
         """
         return cls(A, joint.s, joint.R, name=name)
 

@@ -103,6 +103,11 @@ class SpecialCase:
     name : str
     text : str
     equation : str
+
+    Examples
+    --------
+    >>> twist_case([1.0, 0.0, 0.0])
+    SpecialCase(name='pure_translation', text='pure translation: the pole is at infinity (4.10)', equation='4.10')
     """
 
     name: str
