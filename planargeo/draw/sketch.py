@@ -38,7 +38,7 @@ import math
 
 import numpy as np
 
-from planargeo.draw._shared import as_picture, documented, view_centre
+from planargeo.draw._shared import added, as_picture, documented, view_centre
 from planargeo.draw.geometry import clip_line
 from planargeo.draw.layout import fit_box, shape_points
 from planargeo.draw.picture import PX_PER_PT, Picture, _color as _role_color, _dash as _role_dash
@@ -89,9 +89,8 @@ def _text_part(x, y, text, dx=0.0, dy=0.0, ha="left", va="bottom") -> dict:
 def _element(pic: Picture, id: str, role: str, parts: list, *, color: str, width: float,
              symbol: str = "", desc: str = "", fill=None, alpha: float = 1.0, z: int = 3) -> dict:
     """Add an element made of the given ``parts`` (through :meth:`Picture.path`) and return it."""
-    pic.path(id, np.zeros((2, 2)), role=role, symbol=symbol, desc=desc, color=color, width=width,
-             fill=fill, alpha=alpha, z=z)
-    el = pic.elements[-1]
+    el = added(pic.path, id, np.zeros((2, 2)), role=role, symbol=symbol, desc=desc, color=color, width=width,
+               fill=fill, alpha=alpha, z=z)
     el["parts"] = parts
     return el
 
@@ -270,9 +269,8 @@ def label(pic: Picture, id: str, xy, text: str, *, offset=(5, 5), ha: str = "lef
         dx, dy = (float(v) * PX_PER_PT for v in offset)
     except (TypeError, ValueError):
         raise InputError(f"offset must be two numbers (points), got {offset!r}") from None
-    as_picture(pic).text(id, (x, y), str(text), role=role, color=_role_color(role, color), ha=ha, va=va,
-                   dx=dx, dy=dy, symbol=symbol, desc=desc)
-    el = pic.elements[-1]
+    el = added(as_picture(pic).text, id, (x, y), str(text), role=role, color=_role_color(role, color), ha=ha,
+               va=va, dx=dx, dy=dy, symbol=symbol, desc=desc)
     if not fixed:
         el["parts"][0].pop("fixed", None)
     return el
@@ -314,11 +312,10 @@ def segment(pic: Picture, id: str, p, q, *, role: str = "construct", label=None,
     ([[0.0, 0.0], [1.0, 1.0]], [5.56, 4.17])
     """
     p, q = _xy(p, "p"), _xy(q, "q")
-    as_picture(pic).path(id, np.array([p, q]), role=role, symbol=symbol, desc=desc,
-                   color=_role_color(role, color),
-                   width=width if width is not None else LINEWIDTHS.get(role, 1.0) * PX_PER_PT,
-                   dash=(dash or None) if dash is not None else _role_dash(role), z=z)
-    el = pic.elements[-1]
+    el = added(as_picture(pic).path, id, np.array([p, q]), role=role, symbol=symbol, desc=desc,
+               color=_role_color(role, color),
+               width=width if width is not None else LINEWIDTHS.get(role, 1.0) * PX_PER_PT,
+               dash=(dash or None) if dash is not None else _role_dash(role), z=z)
     if label:
         d = (q - p) * (pic.kx, pic.ky)
         L = math.hypot(*d)
@@ -664,9 +661,8 @@ def pin(pic: Picture, id: str, xy, *, radius: float = 0.06, z: int = 6, symbol: 
     """
     c = _xy(xy, "xy")
     r = _positive(radius, "radius")
-    as_picture(pic).path(id, _circle(c, r), role="body", symbol=symbol, desc=desc, closed=True, fill="white",
-                   color=DARK, width=1.0 * PX_PER_PT, z=z)
-    return pic.elements[-1]
+    return added(as_picture(pic).path, id, _circle(c, r), role="body", symbol=symbol, desc=desc, closed=True,
+                 fill="white", color=DARK, width=1.0 * PX_PER_PT, z=z)
 
 
 @documented
@@ -777,9 +773,8 @@ def slider(pic: Picture, id: str, xy, direction, *, size=(0.35, 0.2), track: flo
     ground(pic, f"{id}:track", c - nrm * h / 2, width=_positive(track, "track"), angle=ang)
     corners = np.array([[-w / 2, -h / 2], [w / 2, -h / 2], [w / 2, h / 2], [-w / 2, h / 2]])
     xy_ = c + corners[:, :1] * e + corners[:, 1:] * nrm
-    pic.path(id, xy_, role="body", desc=desc, closed=True, fill="#dddddd", color=DARK,
-             width=1.0 * PX_PER_PT, z=z)
-    return pic.elements[-1]
+    return added(pic.path, id, xy_, role="body", desc=desc, closed=True, fill="#dddddd", color=DARK,
+                 width=1.0 * PX_PER_PT, z=z)
 
 
 def _arrow_parts(pic: Picture, p, q, head: float = 9.0) -> list:
@@ -874,7 +869,7 @@ def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: 
     c = _xy(xy, "xy")
     r = _positive(radius, "radius")
     as_picture(pic).path(f"{id}:disc", _circle(c, r), role="body", symbol=symbol, desc=desc, closed=True,
-                   fill="white", color="black", width=0.6 * PX_PER_PT, z=z)
+                         fill="white", color="black", width=0.6 * PX_PER_PT, z=z)
     parts = []
     for k in (0, 2):
         t = np.linspace(k * np.pi / 2, (k + 1) * np.pi / 2, 10)
@@ -1114,19 +1109,16 @@ def contact(pic: Picture, id: str, contact, pose, *, body_shape=None, size: floa
                                   depth=0.6 * size, n=max(int(round(length / (1.5 * size))), 2),
                                   z=z - 5, desc=f"guide wall of slider contact {name}"))
             else:
-                pic.path(wid, np.array([wall - e * length / 2, wall + e * length / 2]), role="ground",
-                         color=COLORS["ground"], width=1.2 * PX_PER_PT, z=z - 5,
-                         desc=f"guide wall of slider contact {name} (on body {contact.b + 1})")
-                out.append(pic.elements[-1])
-        pic.marks(id, [pa], role="body", color=DARK, size=2.5 * PX_PER_PT, z=z,
-                  desc=f"slider contact {name} (9.83): its point on body {contact.a + 1}")
-        out.append(pic.elements[-1])
+                out.append(added(pic.path, wid, np.array([wall - e * length / 2, wall + e * length / 2]),
+                                 role="ground", color=COLORS["ground"], width=1.2 * PX_PER_PT, z=z - 5,
+                                 desc=f"guide wall of slider contact {name} (on body {contact.b + 1})"))
+        out.append(added(pic.marks, id, [pa], role="body", color=DARK, size=2.5 * PX_PER_PT, z=z,
+                         desc=f"slider contact {name} (9.83): its point on body {contact.a + 1}"))
         return out
     filled = contact.kind == "weld"
     sq = pa + np.array([[-1, -1], [1, -1], [1, 1], [-1, 1]]) * size / 2
-    pic.path(id, sq, role="body", closed=True, fill=DARK if filled else "white", color=DARK,
-             width=1.0 * PX_PER_PT, z=z, desc=f"{contact.kind} contact {name} (9.49)")
-    out.append(pic.elements[-1])
+    out.append(added(pic.path, id, sq, role="body", closed=True, fill=DARK if filled else "white", color=DARK,
+                     width=1.0 * PX_PER_PT, z=z, desc=f"{contact.kind} contact {name} (9.49)"))
     return out
 
 
@@ -1338,9 +1330,8 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
         eid = f"{id}:{k}"
         if arrows[k] is None:
             if abs(w[2]) > 1e-12 * max(1.0, float(np.max(np.abs(f)))) and F == 0.0:
-                pic.line(eid, w, role=role, symbol=text, desc=f"{meaning}: a couple of {w[2]:.3g} N·m",
-                         dash=dash)
-                out[k] = pic.elements[-1]
+                out[k] = added(pic.line, eid, w, role=role, symbol=text,
+                               desc=f"{meaning}: a couple of {w[2]:.3g} N·m", dash=dash)
             else:
                 out[k] = None
             continue
