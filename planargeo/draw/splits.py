@@ -41,7 +41,7 @@ from functools import partial
 import numpy as np
 
 from planargeo._validate import as_vec3
-from planargeo.draw._shared import as_picture, documented, line_words, view_centre
+from planargeo.draw._shared import added, as_picture, documented, line_words, view_centre
 from planargeo.draw.picture import Picture, plain_text
 from planargeo.draw.pictures.common import label_toward
 from planargeo.draw.pictures.kit import force as _force_arrow
@@ -132,8 +132,7 @@ def _label_beside(pic: Picture, el: dict, text: str, anchor, side: float, gap: f
 def _line(pic: Picture, id: str, l, text, *, role: str, symbol: str, desc: str, anchor, side: float,
           aims: dict, key: str) -> dict:
     """A line without a sense arrow, labelled beside it near ``anchor``; the element."""
-    pic.line(id, l, role=role, symbol=symbol, desc=desc, label="", arrow=False)
-    el = pic.elements[-1]
+    el = added(pic.line, id, l, role=role, symbol=symbol, desc=desc, label="", arrow=False)
     if math.hypot(float(l[0]), float(l[1])) > 0.0:
         _label_beside(pic, el, plain_text(text or ""), anchor, side)
     elif text:                              # the line at infinity: the couple glyph's label
@@ -147,8 +146,7 @@ def _line(pic: Picture, id: str, l, text, *, role: str, symbol: str, desc: str, 
 def _point(pic: Picture, id: str, p, text, *, role: str, symbol: str, desc: str, glyph: bool,
            aims: dict, key: str) -> dict:
     """A pole (:meth:`Picture.point`) with its label aimed as asked; the element."""
-    pic.point(id, p, role=role, symbol=symbol, desc=desc, label=text or "", glyph=glyph)
-    el = pic.elements[-1]
+    el = added(pic.point, id, p, role=role, symbol=symbol, desc=desc, label=text or "", glyph=glyph)
     _aim(el, aims, key)
     return el
 
