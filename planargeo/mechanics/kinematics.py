@@ -243,25 +243,30 @@ def joint_axes(kind: str, ox, oy, phi, qi):
     >>> np.round(pose, 12)                          # slid 0.5 along y, 0.25 along -x; not turned
     array([0.75      , 2.5       , 1.57079633])
     """
-    c, s = np.cos(phi), np.sin(phi)
-    zero, one = np.zeros_like(ox), np.ones_like(ox)
+    cols, pose = _axes(kind, ox, oy, phi, [qi[..., j] for j in range(qi.shape[-1])], np.cos(phi), np.sin(phi))
+    return [np.stack(np.broadcast_arrays(*col), -1) for col in cols], pose
+
+
+def _axes(kind: str, ox, oy, phi, q, c, s):
+    """:func:`joint_axes` with the columns as ``(s0, s1, s2)`` triples, of floats or arrays alike.
+
+    ``q`` holds the joint's coordinates, ``c, s`` the cosine and sine of ``phi`` (each caller
+    computes them its own way: NumPy for batches, :mod:`math` for one state).
+    """
     if kind == "revolute":
-        cols = [np.stack([oy, -ox, one], -1)]
-        return cols, (ox, oy, phi + qi[..., 0])
+        return [(oy, -ox, 1.0)], (ox, oy, phi + q[0])
     if kind == "prismatic":
-        cols = [np.stack([c, s, zero], -1)]
-        return cols, (ox + qi[..., 0] * c, oy + qi[..., 0] * s, phi)
+        return [(c, s, 0.0)], (ox + q[0] * c, oy + q[0] * s, phi)
     if kind == "revolute_prismatic":
-        x1, y1 = ox + qi[..., 0] * c, oy + qi[..., 0] * s
-        cols = [np.stack([c, s, zero], -1), np.stack([y1, -x1, one], -1)]
-        return cols, (x1, y1, phi + qi[..., 1])
+        x1, y1 = ox + q[0] * c, oy + q[0] * s
+        return [(c, s, 0.0), (y1, -x1, 1.0)], (x1, y1, phi + q[1])
     if kind in ("twin_prismatic", "plane"):       # slide along e and e⊥; a plane joint then turns
-        x1 = ox + qi[..., 0] * c - qi[..., 1] * s
-        y1 = oy + qi[..., 0] * s + qi[..., 1] * c
-        cols = [np.stack([c, s, zero], -1), np.stack([-s, c, zero], -1)]
+        x1 = ox + q[0] * c - q[1] * s
+        y1 = oy + q[0] * s + q[1] * c
+        cols = [(c, s, 0.0), (-s, c, 0.0)]
         if kind == "twin_prismatic":       # thesis 4.79: s = [e, e⊥], no rotation
             return cols, (x1, y1, phi)
-        return cols + [np.stack([y1, -x1, one], -1)], (x1, y1, phi + qi[..., 2])
+        return cols + [(y1, -x1, 1.0)], (x1, y1, phi + q[2])
     if kind == "fixed":
         return [], (ox, oy, phi)
     raise AssertionError(kind)  # pragma: no cover (Joint validates kinds)
@@ -416,25 +421,7 @@ def _kinematics_scalar(model: Model, q: np.ndarray, qd: np.ndarray, f_ext) -> Da
             ox, oy, phi = bx + cb * px - sb * py, by + sb * px + cb * py, bth + pth
             vx, vy, w = v[par]
         o = model.q_offsets[i]
-        kind = joint.kind
-        c, s = cos(phi), sin(phi)
-        if kind == "revolute":
-            cols, (x, y, th) = [(oy, -ox, 1.0)], (ox, oy, phi + ql[o])
-        elif kind == "prismatic":
-            cols, (x, y, th) = [(c, s, 0.0)], (ox + ql[o] * c, oy + ql[o] * s, phi)
-        elif kind == "revolute_prismatic":
-            x, y = ox + ql[o] * c, oy + ql[o] * s
-            cols, th = [(c, s, 0.0), (y, -x, 1.0)], phi + ql[o + 1]
-        elif kind == "twin_prismatic":
-            x = ox + ql[o] * c - ql[o + 1] * s
-            y = oy + ql[o] * s + ql[o + 1] * c
-            cols, th = [(c, s, 0.0), (-s, c, 0.0)], phi
-        elif kind == "plane":
-            x = ox + ql[o] * c - ql[o + 1] * s
-            y = oy + ql[o] * s + ql[o + 1] * c
-            cols, th = [(c, s, 0.0), (-s, c, 0.0), (y, -x, 1.0)], phi + ql[o + 2]
-        else:
-            cols, (x, y, th) = [], (ox, oy, phi)
+        cols, (x, y, th) = _axes(joint.kind, ox, oy, phi, ql[o:o + joint.dofs], cos(phi), sin(phi))
         origin.append((ox, oy))
         pose.append((x, y, th))
         # twist (2.9) and bias acceleration (2.19 with sequential-screw cross terms)
