@@ -35,6 +35,7 @@ True
 from __future__ import annotations
 
 import math
+from functools import partial
 
 import numpy as np
 
@@ -50,6 +51,10 @@ from planargeo.errors import InputError
 __all__ = ["panel", "fit_box", "show", "label", "segment", "dimension", "body_words", "link_polygon",
            "transform_shape", "arrow", "body", "link", "pin", "ground", "slider", "frame", "com", "model",
            "model_shapes", "slider_guide", "contact", "split_arrows", "joint_split"]
+
+#: :func:`~planargeo.draw._shared.documented` with what the two-point elements raise, written once
+_two_points = partial(documented, entries={
+    "distinct": "Raises\n------\nInputError\n    ``p`` and ``q`` coincide or are not finite points."})
 
 #: outline colour of bodies and body labels
 BODY_EDGE = "#1f3a4d"
@@ -325,7 +330,7 @@ def segment(pic: Picture, id: str, p, q, *, role: str = "construct", label=None,
     return el
 
 
-@documented
+@_two_points
 def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at: float = 0.5,
               color=None, tick: float = 8.0, symbol: str | None = None, desc: str = "") -> dict:
     """A dimension line ``p q`` with end ticks, shifted ``offset`` to the left of ``p → q``, labelled.
@@ -359,10 +364,7 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
     dict
         The element: parts ``[line, tick at p, tick at q, text]``.
 
-    Raises
-    ------
-    InputError
-        ``p`` and ``q`` coincide or are not finite points.
+    {distinct}
 
     Examples
     --------
@@ -404,7 +406,7 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
                     color=color or COLORS["construct"], width=0.7 * PX_PER_PT, z=2)
 
 
-@documented
+@_two_points
 def arrow(pic: Picture, id: str, p, q, *, role: str = "wrench", color=None, label=None,
           offset=(5, 5), symbol: str = "", desc: str = "", z: int = 5) -> dict:
     """An arrow from ``p`` to ``q`` (data points; the picture's arrow: solid shaft, head at ``q``).
@@ -428,10 +430,7 @@ def arrow(pic: Picture, id: str, p, q, *, role: str = "wrench", color=None, labe
     dict
         The element: ``[arrow, text]``.
 
-    Raises
-    ------
-    InputError
-        ``p`` and ``q`` coincide or are not finite points.
+    {distinct}
 
     Examples
     --------
