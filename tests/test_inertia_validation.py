@@ -143,3 +143,27 @@ def test_features_of_good_masses_are_the_hand_values():
     np.testing.assert_allclose(planargeo.screws.inertia.centre_of_mass(I), [[1.0, -3.0], [0.0, 2.0]], atol=1e-14)
     np.testing.assert_allclose(planargeo.screws.inertia.rotational_inertia(I), [0.5, 9.0], atol=1e-13)
     np.testing.assert_allclose(planargeo.screws.inertia.radius_of_gyration(I), [0.5, 1.5], atol=1e-14)
+
+
+@pytest.mark.parametrize("op, name", [
+    (lambda I: I.at([1e200, 0.0]), "inertia_at"),
+    (lambda I: I.rotated(1.0, [1e200, 0.0]), "inertia_rotated"),
+    (lambda I: I.momentum([1e308, 0.0, 1e308]), "momentum"),
+    (lambda I: I.kinetic_energy([1e200, 0.0, 1e200]), "kinetic_energy"),
+])
+def test_inertia_operations_overflow_like_the_screws_functions(op, name):
+    """Inertia's operations go through the screws' functions: an overflow names that function."""
+    from planargeo.errors import NumericOverflowError
+
+    with pytest.raises(NumericOverflowError, match=rf"^{name}\b.*overflows double precision"):
+        op(Inertia.from_mass(2.0, [1.0, 0.0], inertia=1.0))
+
+
+def test_inertia_operations_match_the_screws_functions_and_closed_forms():
+    """``at``/``rotated``/``momentum``/``kinetic_energy`` of the class equal the hand-built results."""
+    I = Inertia.from_mass(2.0, [2.0, 0.0], inertia=0.5)
+    np.testing.assert_allclose(I.at([2.0, 0.0]).matrix, np.diag([2.0, 2.0, 0.5]), atol=1e-15)   # about its centre
+    np.testing.assert_allclose(I.rotated(np.pi / 2, [1.0, 0.0]).matrix, inertia_matrix(2.0, [1.0, 1.0], 0.5),
+                               atol=1e-14)
+    np.testing.assert_allclose(I.momentum([0.0, 0.0, 1.0]), [0.0, 4.0, 8.5])   # m ω (−c_y, c_x), (J + m d²) ω
+    assert float(I.kinetic_energy([0.0, 0.0, 2.0])) == pytest.approx(0.5 * 8.5 * 4.0)
