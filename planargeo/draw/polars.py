@@ -37,7 +37,7 @@ import numpy as np
 from planargeo.draw._shared import added, as_picture, documented, line_words
 from planargeo.draw.geometry import _mat, _vec, point_xy
 from planargeo.draw.picture import PX_PER_PT, Picture, plain_text
-from planargeo.draw.pictures._words import num, pair
+from planargeo.draw.pictures._words import num, pair, where
 from planargeo.draw.pictures.common import label_line, point_along
 from planargeo.draw.sketch import dimension, segment
 from planargeo.draw.style import COLORS
@@ -49,15 +49,6 @@ from planargeo.screws.inertia import centre_of_mass, percussion_axis, radius_of_
 
 __all__ = ["line_conic_points", "interior_construction", "power_values", "polar_exterior",
            "polar_interior", "percussion", "power"]
-
-
-def _where(p) -> str:
-    """Where a point is: ``at (x, y)``, or at infinity in a direction."""
-    xy = point_xy(p)
-    if xy is None:
-        d = np.array([-p[1], p[0]]) / math.hypot(p[0], p[1])
-        return f"at infinity in the direction {pair(d, 3)}"
-    return f"at {pair(xy, 3)}"
 
 
 def _line(pic: Picture, id: str, l, role: str, symbol: str, desc: str, *, anchor=None,
@@ -81,7 +72,7 @@ def _polar_and_point(pic: Picture, out: dict, prefix: str, K, p, names, *, insid
     out["L"] = _line(pic, prefix + "L", K.polar, "wrench", L, anchor=anchor, side=side,
                      desc=f"polar L = C P of P (5.36): the line through {through}")
     out["P"] = added(pic.point, prefix + "P", p, role="twist", glyph=False, symbol=P,
-                     desc=f"the point P, {'inside' if inside else 'outside'} C (5.36): {_where(p)}")
+                     desc=f"the point P, {'inside' if inside else 'outside'} C (5.36): {where(p)}")
     return out
 
 
@@ -316,7 +307,7 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
     for k in range(2):
         point_along(pic, f"{prefix}R{k + 1}", K.poles[k], role="accel", symbol=f"$R_{k + 1}$",
                     desc=f"pole R{'₁₂'[k]} of chord {k + 1} (Theorem 12): where the tangents at its ends "
-                         f"meet, {_where(K.poles[k])}")
+                         f"meet, {where(K.poles[k])}")
         out[f"R{k + 1}"] = pic.elements[-1]
     return _polar_and_point(pic, out, prefix, K, p, names, inside=True,
                             through=f"R₁ and R₂, {line_words(K.polar, 3)}", anchor=L_anchor, side=L_side)
@@ -392,7 +383,7 @@ def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = Tr
     out["f"] = _line(pic, prefix + "f", f, "wrench", f_name, anchor=f_anchor,
                      desc=f"axis of percussion f = I a (5.64–5.68): {where_f}")
     out["a"] = added(pic.point, prefix + "a", a, role="accel", symbol=a_name,
-                     desc=f"acceleration pole a (5.64): the point of the body with no acceleration, {_where(a)}")
+                     desc=f"acceleration pole a (5.64): the point of the body with no acceleration, {where(a)}")
     if dims and foot is not None:
         axy = to_xy(a)
         out["lever"] = segment(pic, prefix + "lever", axy, foot, symbol="lever",
@@ -515,7 +506,7 @@ def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
     >>> sorted(out["p"]["parts"][0]["xy"].round(9).tolist())   # p = I v: x = −ρ²/d = −0.5 (5.71)
     [[-0.5, -3.0], [-0.5, 3.0]]
     >>> out["v"]["desc"]
-    'velocity pole v (5.69): at (1, 0), rate 1 rad/s'
+    'velocity pole v (5.69): at (1, 0) m, rate 1 rad/s'
     """
     pic = as_picture(pic)
     v, I = _vec(v, "v"), _mat(I, "inertia")
@@ -530,7 +521,7 @@ def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
     out["inertia"] = _inertia(pic, prefix, I, f" about the centre of mass {pair(val['c'], 3)} m")
     rate = f", rate {num(v[2])} rad/s" if point_xy(v) is not None else " (a translation)"
     out["v"] = added(pic.point, prefix + "v", v, role="twist", symbol=nv,
-                     desc=f"velocity pole v (5.69): {_where(v)}{rate}")
+                     desc=f"velocity pole v (5.69): {where(v)}{rate}")
     if F != 0.0:
         out["p"] = _line(pic, prefix + "p", p, "momentum", np_, anchor=p_anchor, side=p_side,
                          desc=f"momentum p = I v (5.71): {num(F)} kg·m/s, {line_words(p, 3)}")
@@ -541,5 +532,5 @@ def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
     out["f"] = _line(pic, prefix + "f", f, "wrench", nf, anchor=f_anchor, side=f_side,
                      desc=f"a powerless force f, vᵀf = 0 (5.69): a line through the pole v, {line_words(f, 3)}")
     out["a"] = added(pic.point, prefix + "a", a, role="accel", glyph=False, symbol=na,
-                     desc=f"a powerless acceleration a, pᵀa = 0 (5.72): a point of the momentum line, {_where(a)}")
+                     desc=f"a powerless acceleration a, pᵀa = 0 (5.72): a point of the momentum line, {where(a)}")
     return out
