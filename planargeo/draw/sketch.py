@@ -42,7 +42,7 @@ import numpy as np
 from planargeo.draw._shared import added, as_picture, documented, view_centre
 from planargeo.draw.geometry import clip_line
 from planargeo.draw.layout import fit_box, shape_points
-from planargeo.draw.picture import PX_PER_PT, Picture, _color as _role_color, _dash as _role_dash
+from planargeo.draw.picture import PX_PER_PT, Picture, _color as _role_color, _dash as _role_dash, plain_text
 from planargeo.draw.pictures.common import _align
 from planargeo.draw.pictures.kit import foot_on_line, seg_distance
 from planargeo.draw.style import COLORS, LINEWIDTHS
@@ -85,8 +85,6 @@ def _positive(v, name: str) -> float:
 
 
 def _text_part(x, y, text, dx=0.0, dy=0.0, ha="left", va="bottom") -> dict:
-    from planargeo.draw.picture import plain_text
-
     return {"p": "text", "x": float(x), "y": float(y), "dx": float(dx), "dy": float(dy),
             "text": plain_text(text), "ha": ha, "va": va}
 
@@ -1305,8 +1303,6 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
     >>> arrow["x"], arrow["y"], arrow["dy"]               # from (2, -0.5), 1 unit = 50 px up
     (2.0, -0.5, 50.0)
     """
-    from planargeo.draw.picture import plain_text
-
     as_picture(pic)
     if anchor is None:
         anchor = view_centre(pic)

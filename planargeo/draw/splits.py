@@ -45,7 +45,7 @@ from planargeo.draw._shared import added, as_picture, documented, line_words, vi
 from planargeo.draw.picture import Picture, plain_text
 from planargeo.draw.pictures.common import label_toward
 from planargeo.draw.pictures.kit import force as _force_arrow
-from planargeo.draw.pictures._words import num, pair, where
+from planargeo.draw.pictures._words import num, where
 from planargeo.errors import InputError
 from planargeo.mechanics.subspaces import Decomposition
 
