@@ -366,15 +366,18 @@ def _kinematics_batch(model: Model, q, qd, f_ext, shape) -> Data:
         ddx, ddy = _rot2(np.cos(th), np.sin(th), cbx, cby)
         cx, cy = x + ddx, y + ddy
         com[..., i, 0], com[..., i, 1] = cx, cy
-        I[..., i, 0, 0] = I[..., i, 1, 1] = m
-        I[..., i, 0, 2] = I[..., i, 2, 0] = -m * cy
-        I[..., i, 1, 2] = I[..., i, 2, 1] = m * cx
-        I[..., i, 2, 2] = J + m * (cx * cx + cy * cy)
-        g[..., i, 0] = m * gx
-        g[..., i, 1] = m * gy
-        g[..., i, 2] = m * (cx * gy - cy * gx)
+        inertia, weight = _body_terms(m, J, cx, cy, gx, gy)
+        for r, k in np.ndindex(3, 3):
+            I[..., i, r, k] = inertia[r][k]
+        g[..., i, 0], g[..., i, 1], g[..., i, 2] = weight
 
     return _data(model, q, qd, f_ext, pose, com, origin, S, I, v, kappa, g)
+
+
+def _body_terms(m, J, cx, cy, gx, gy):
+    """A body's inertia at the origin (4.58) as rows, and its weight at the centre of mass, of floats or arrays alike."""
+    inertia = ((m, 0.0, -m * cy), (0.0, m, m * cx), (-m * cy, m * cx, J + m * (cx * cx + cy * cy)))
+    return inertia, (m * gx, m * gy, m * (cx * gy - cy * gx))
 
 
 def _data(model: Model, q, qd, f_ext, pose, com, origin, S, I, v, kappa, g) -> Data:
@@ -443,7 +446,8 @@ def _kinematics_scalar(model: Model, q: np.ndarray, qd: np.ndarray, f_ext) -> Da
         ct, st = cos(th), sin(th)
         cx, cy = x + ct * cbx - st * cby, y + st * cbx + ct * cby
         com.append((cx, cy))
-        Il.append(((m, 0.0, -m * cy), (0.0, m, m * cx), (-m * cy, m * cx, J + m * (cx * cx + cy * cy))))
-        g.append((m * gx, m * gy, m * (cx * gy - cy * gx)))
+        inertia, weight = _body_terms(m, J, cx, cy, gx, gy)
+        Il.append(inertia)
+        g.append(weight)
     return _data(model, q, qd, f_ext, np.array(pose), np.array(com), np.array(origin), np.array(S).reshape(3, nq),
                  np.array(Il), np.array(v), np.array(kappa), np.array(g))
