@@ -342,3 +342,27 @@ def test_split_arrows_slide_clear_of_what_they_avoid():
 def test_bad_picture_argument():
     with pytest.raises(InputError, match="Picture"):
         sketch.pin("not a picture", "j", (0, 0))
+
+
+@pytest.mark.parametrize("module", ["sketch", "sums", "polars", "splits"])
+def test_shared_docstring_entries_are_written_in(module):
+    """Every drawing function's docstring has its shared entries (``{pic id}`` lines) written in.
+
+    A function that names shared entries but lacks the decorator would show ``{pic}`` in the
+    documentation and miss those parameters; the written-in text is the one of
+    :data:`planargeo.draw._shared.ENTRIES`.
+    """
+    import importlib
+    import re
+
+    from planargeo.draw._shared import ENTRIES
+
+    mod = importlib.import_module(f"planargeo.draw.{module}")
+    docs = {name: getattr(mod, name).__doc__ or "" for name in mod.__all__ if callable(getattr(mod, name))}
+    left = [name for name, doc in docs.items() if re.search(r"^ *\{[a-z ]+\}$", doc, re.M)]
+    assert left == []
+    # the entries are written in, indented like the rest of the section
+    assert "    pic : Picture\n        Where to draw." in docs[{"sketch": "label", "sums": "twist_sum",
+                                                             "polars": "percussion",
+                                                             "splits": "decomposition"}[module]]
+    assert ENTRIES["pic"] == "pic : Picture\n    Where to draw."
