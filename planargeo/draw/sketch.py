@@ -174,7 +174,6 @@ def panel(ax, points, *, margin=None, keep=None, min_span=None, fit_height=False
 
     Examples
     --------
-    >>> import matplotlib; matplotlib.use("Agg")
     >>> from matplotlib.figure import Figure
     >>> ax = Figure(figsize=(4, 2)).add_axes((0.0, 0.0, 1.0, 1.0))
     >>> pic = panel(ax, [[0, 0], [1, 1]], margin=0.0)
@@ -1073,7 +1072,7 @@ def contact(pic: Picture, id: str, contact, pose, *, body_shape=None, size: floa
     Returns
     -------
     list of dict
-        The elements added.
+        The elements added: a slider's two walls, then the mark.
 
     Examples
     --------

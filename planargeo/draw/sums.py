@@ -226,7 +226,8 @@ def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), le
     ----------
     {pic}
     v1, v2 : array_like (3,)
-        The twists ``[vx, vy, ω]`` (points).
+        The twists ``[vx, vy, ω]`` to add: each a pole (a point) with its rate ω, an ideal pole
+        for a translation.
     labels : (str, str, str)
         Labels of ``v₁``, ``v₂`` and the sum (``$...$`` mathtext turns into Unicode); the
         symbol of each is its text before a remark in brackets.
