@@ -143,12 +143,18 @@ function render({ model, el }) {
     if (m.type !== "ack") return;
     const mine = m.client === client || m.client === null || m.client === undefined;
     const tAck = performance.now();
-    if (m.update && (mine || m.update.base !== null)) apply(m.update);
-    if (!mine) return;
+    if (!mine) {
+      if (m.update && m.update.base !== null) apply(m.update);
+      return;
+    }
     const done = current;
+    inflight = false;
+    // Play: the next frame is asked for before this one is drawn, so the kernel computes it
+    // while the page applies and paints this one (still one request in flight)
+    if (done && done.type === "tick" && m.ok !== false && !pending.size) maybeTick();
+    if (m.update) apply(m.update);
     if (done) { done.tAck = tAck; done.tApplied = performance.now(); }
     requestAnimationFrame(() => { if (done) done.tPaint = performance.now(); });
-    inflight = false;
     status.textContent = m.ok === false && m.message ? m.message : "";
     if (done && done.type === "sync") syncAsked = false;
     if (done && done.type === "tick" && m.ok === false) tickHalted = true;
@@ -158,8 +164,7 @@ function render({ model, el }) {
       if (hoverId === m.id && tip.style.display !== "none") tip.textContent = m.desc;
     }
     if (!sendNext() && !drag) placeHandles();
-    // Play: the next frame is asked for at once, so the kernel computes it while this one is
-    // painted (still one request in flight; the wall clock sets how far each frame goes)
+    // Play: the next frame, if not asked for yet (the wall clock sets how far each frame goes)
     maybeTick();
   });
   model.on("change:playing", () => { tickHalted = false; maybeTick(); });
