@@ -13,7 +13,7 @@ from planargeo.draw.layout import shape_points
 from planargeo.draw.picture import PX_PER_PT
 from planargeo.draw.pictures._words import num
 from planargeo.draw.pictures.common import label_toward
-from planargeo.draw.pictures.kit import force
+from planargeo.draw.pictures.kit import force, where
 from planargeo.draw.sketch import dimension, label, model, model_shapes, panel, segment, show
 from planargeo.draw.style import COLORS, LABEL_PT
 from planargeo.gallery.figures import chain, register, scene_state
@@ -51,12 +51,6 @@ def _chain4(q, base="revolute"):
     return m, d, shape_points(*model_shapes(m, d))
 
 
-def _xy(p) -> str:
-    """Where the pole ``p`` lies, for a description (round-off read as 0)."""
-    x, y = to_xy(p)
-    return f"({num(x, 3)}, {num(y, 3)}) m"
-
-
 @register(7.01, height=2.6)
 def fig7_1(ax):
     """Fig. 7.1 — articulated inertia A_i of a free-floating sub-chain (7.1–7.8): the internal
@@ -80,7 +74,7 @@ def fig7_1(ax):
     force(pic, "f2", f, scale=0.6, anchor=o - [0.5, 0.0], symbol="f₂",
           desc=f"the internal force f₂ at joint 2 (7.1): 1 N along +x through ({num(o[0], 3)}, {num(o[1], 3)}) m")
     pic.point("a2", a, role="accel", symbol="a₂", label="a₂ = A₂⁻¹f₂", glyph_scale=2.0,
-              desc=f"acceleration pole a₂ = A₂⁻¹f₂ of body 2 (7.8): at {_xy(a)}, rate {a[2]:.3g} rad/s²")
+              desc=f"acceleration pole a₂ = A₂⁻¹f₂ of body 2 (7.8): {where(a)}, rate {a[2]:.3g} rad/s²")
     show(pic, ax)
 
 
@@ -102,7 +96,7 @@ def fig7_2(ax):
     label(pic, "-f3:label", o, "−f₃", offset=(-10, 4), ha="right", color=COLORS["reaction"], symbol="−f₃",
           desc="the load −f₃ on body 2 (7.28)")
     pic.point("a2", a, role="accel", symbol="a₂", label="a₂ = −Λ₂⁻¹f₃",
-              desc=f"acceleration pole a₂ = −Λ₂⁻¹f₃ of body 2 (7.38, corrected): at {_xy(a)}, "
+              desc=f"acceleration pole a₂ = −Λ₂⁻¹f₃ of body 2 (7.38, corrected): {where(a)}, "
                    f"rate {a[2]:.3g} rad/s²")
     show(pic, ax)
 
@@ -157,7 +151,7 @@ def fig7_3(axs):
             pic.line("f1", f1, role="wrench", arrow=False, label="", symbol="f₁",
                      desc="the force f₁: 1 N horizontal through CJ₁ (7.9)")
             pic.point("a1", a1, role="accel", symbol="a₁", label=f"a₁ ({num(ax1[0], 3)}, {num(ax1[1], 3)})",
-                      desc=f"acceleration pole a₁ = A₁⁻¹f₁ of body 1 (7.9): at {_xy(a1)}")
+                      desc=f"acceleration pole a₁ = A₁⁻¹f₁ of body 1 (7.9): {where(a1)}")
             label_toward(pic.elements[-1], (1.0, 0.6), 8.0)
         show(pic, ax)
         if not detail:
@@ -268,7 +262,7 @@ def fig7_9(ax):
         {"p": "text", "x": float(gx), "y": float(gy), "dx": 18.0, "dy": 0.0, "ha": "left", "va": "center",
          "text": "−f₃: couple on body 2 (line at ∞)"}]
     pic.point("a2", a2, role="accel", symbol="a₂",
-              desc=f"acceleration pole a₂ of body 2 (7.40–7.49): at {_xy(a2)}, on the x axis")
+              desc=f"acceleration pole a₂ of body 2 (7.40–7.49): {where(a2)}, on the x axis")
     xl = res.quantities["x_over_L"]
     dimension(pic, "x", [0, -0.35], [x[0], -0.35], f"x = {xl:.3f} L",
               desc=f"where a₂ lies on the x axis (7.47, corrected 7.38a): x/L = {xl:.3f}")["symbol"] = "x"
@@ -321,8 +315,8 @@ def fig7_11(ax):
           desc=f"the internal force f₃ at joint 3 from the split (7.56): {np.hypot(*f3[:2]):.3g} N")
     a2_text = "a₂ = −Λ₂⁻¹f₃" if b2_zero else "a₂ = b₂ − Λ₂⁻¹f₃"
     pic.point("a2", sol.a[1], role="accel", symbol="a₂", label=a2_text,
-              desc=f"acceleration pole of body 2, {a2_text} (7.53): at {_xy(sol.a[1])}")
+              desc=f"acceleration pole of body 2, {a2_text} (7.53): {where(sol.a[1])}")
     label_toward(pic.elements[-1], (1.0, -0.8), 10.0)                             # right of it, below f₃
     pic.point("a3", sol.a[2], role="accel", symbol="a₃", label="a₃ = A₃⁻¹(f₃ − d₃)",
-              desc=f"acceleration pole of body 3, a₃ = A₃⁻¹(f₃ − d₃) (7.55): at {_xy(sol.a[2])}")
+              desc=f"acceleration pole of body 3, a₃ = A₃⁻¹(f₃ − d₃) (7.55): {where(sol.a[2])}")
     show(pic, ax)
