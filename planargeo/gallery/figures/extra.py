@@ -11,23 +11,20 @@ from planargeo.screws.inertia import Inertia, centre_of_mass, percussion_axis
 from planargeo.screws.twists import inertia_matrix
 from planargeo.geometry.projective import from_xy, to_xy
 from planargeo.draw.layout import shape_points
-from planargeo.draw.picture import FONT_PX, PX_PER_PT
-from planargeo.draw.pictures._words import labelled_line
+from planargeo.draw.picture import _CHAR_EM, FONT_PX, PX_PER_PT
+from planargeo.draw.pictures._words import labelled_line, subscript
 from planargeo.draw.pictures.kit import aim_label, foot_on_line, force, rate, where
 from planargeo.draw.sketch import (body, joint_split, label, link_polygon, model, model_shapes, panel,
                                    segment, show, split_arrows)
 from planargeo.gallery.figures import chain, register, scene_state
 from planargeo.gallery.figures.ch3 import QD, QDD, Q
 
-_SUB = "₀₁₂₃₄₅₆₇₈₉"
-#: advance of one character in font sizes, as the picture's label placer estimates it
-_CHAR_EM = 0.6
 
 
 def _caption(pic, id, text, *, desc):
     """A text in the lower left corner of the view on a white box (the lines pass behind it)."""
     x0, x1, y0, y1 = pic.box
-    w, h = _CHAR_EM * FONT_PX * len(text) + 4.0, 1.25 * FONT_PX + 2.0      # pixels (the placer's estimate)
+    w, h = _CHAR_EM * FONT_PX * len(text) + 4.0, 1.25 * FONT_PX + 2.0      # pixels (the label placer's estimate)
     x, y = x0 + 6.0 / pic.kx, y0 + 0.5 / pic.ky
     box = [[x - 2.0 / pic.kx, y], [x + (w - 2.0) / pic.kx, y], [x + (w - 2.0) / pic.kx, y + h / pic.ky],
            [x - 2.0 / pic.kx, y + h / pic.ky]]
@@ -54,16 +51,16 @@ def extra_inertia_field(ax):
              np.array([1.0, 0.6, 0.0])]
     for k, a in enumerate(poles, start=1):
         f = percussion_axis(I, a)
-        pic.point(f"a{k}", a, role="accel", glyph=False, symbol=f"a{_SUB[k]}",
-                  desc=f"an acceleration pole a{_SUB[k]} (a point): {where(a)}")
+        pic.point(f"a{k}", a, role="accel", glyph=False, symbol=f"a{subscript(k)}",
+                  desc=f"an acceleration pole a{subscript(k)} (a point): {where(a)}")
         if k in (3, 5):          # below a₃'s pole, left of a₅'s edge arrow: clear of the couple's words
             aim_label(pic.elements[-1], (0.0, -1.0) if k == 3 else (-1.0, 0.0), 6.0)
         # the label 1.3 m along the line from the foot of c (4.27); a couple has no foot
         anchor = foot_on_line(f, c) + 1.3 * f[:2] / np.hypot(*f[:2]) if np.any(f[:2]) else None
-        labelled_line(pic, f"Ia{k}", f, f"Ia{_SUB[k]}", role="wrench", arrow=False, anchor=anchor,
-                      width=1.2 * PX_PER_PT, symbol=f"Ia{_SUB[k]}",
-                      desc=f"the axis of percussion I a{_SUB[k]} (5.64-5.68): the force that gives the body "
-                           f"at rest the acceleration a{_SUB[k]}"
+        labelled_line(pic, f"Ia{k}", f, f"Ia{subscript(k)}", role="wrench", arrow=False, anchor=anchor,
+                      width=1.2 * PX_PER_PT, symbol=f"Ia{subscript(k)}",
+                      desc=f"the axis of percussion I a{subscript(k)} (5.64-5.68): the force that gives the body "
+                           f"at rest the acceleration a{subscript(k)}"
                            + ("; a couple, the line at infinity" if not np.any(f[:2]) else ""))
     show(pic, ax)
 
@@ -89,8 +86,8 @@ def extra_joint_splits(axs):
                                             name=str(i + 1), scale=0.03, anchor=w.origin[i], avoid=avoid)
         assert np.allclose(act + rea, w.f[i]) and np.allclose(Qi, w.tau[i])
         _caption(pic, "Q", f"joint {i + 1}: Q = τ = {Qi[0]:.2f}",
-                 desc=f"the active part's coordinate Q{_SUB[i + 1]} (6.38), equal to the joint torque "
-                      f"τ{_SUB[i + 1]}: {Qi[0]:.2f} N·m")
+                 desc=f"the active part's coordinate Q{subscript(i + 1)} (6.38), equal to the joint torque "
+                      f"τ{subscript(i + 1)}: {Qi[0]:.2f} N·m")
         show(pic, ax)
 
 
@@ -122,13 +119,13 @@ def extra_slider_crank(ax):
           desc=f"the contact force F₃ = Bξ (9.86) on the crank-rod side; −F₃ acts on the piston: "
                f"{np.hypot(*F3[:2]):.1f} N")
     for k in range(3):
-        pic.point(f"a{k + 1}", a[k], role="accel", symbol=f"a{_SUB[k + 1]}", glyph_scale=0.05,
+        pic.point(f"a{k + 1}", a[k], role="accel", symbol=f"a{subscript(k + 1)}", glyph_scale=0.05,
                   desc=f"the closed-loop acceleration of body {k + 1}, the {m.bodies[k].name} (9.94): "
                        f"{rate(a[k], 'rad/s²')}, pole {where(a[k])}")
         if k == 0:                   # a₁ and v₁ share the crank's pivot: a₁ below right, v₁ left
             aim_label(pic.elements[-1], (1.0, -1.0), 9.0)
     for k in (0, 2):                                  # v₂'s pole (the rod's ICR) lies far right
-        pic.point(f"v{k + 1}", v[k], role="twist", glyph=False, symbol=f"v{_SUB[k + 1]}",
+        pic.point(f"v{k + 1}", v[k], role="twist", glyph=False, symbol=f"v{subscript(k + 1)}",
                   desc=f"the velocity of body {k + 1}, the {m.bodies[k].name}: {rate(v[k], 'rad/s')}, "
                        f"pole {where(v[k])}")
         if k == 0:
