@@ -25,10 +25,6 @@ TIME_CONTROLS = ("time (s)", "t (s)", "t")
 HOSTILE = (1e6, 1e300, math.inf, math.nan, -1.0)
 #: explorers with Play and a time control (checked below against the classes themselves)
 TIMED = ["ChainExplorer", "SliderCrankExplorer", "TreeExplorer", "ImpulseExplorer", "ArticulatedExplorer"]
-#: explorers whose farthest time still takes one unbounded update (skipped, named here until their owner
-#: bounds it: a wall-clock deadline cannot tell "slow" from "unbounded" reliably on every machine)
-NOT_YET_BOUNDED = {"TreeExplorer": "trees.py integrates the whole run to t in one update (t = 60 s: 52 s open, "
-                                   "more closed, measured under load); it needs the slider-crank's Budget"}
 
 
 class _TooLong(Exception):
@@ -85,8 +81,7 @@ def test_a_time_outside_its_range_is_refused_by_name_and_0_is_computed(name):
     assert _shown_time(ex, k) == 0.0 and ex.readout_values == shown
 
 
-@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.skip(reason=NOT_YET_BOUNDED[n]))
-                                  if n in NOT_YET_BOUNDED else n for n in TIMED])
+@pytest.mark.parametrize("name", TIMED)
 def test_the_end_of_the_time_range_is_one_bounded_update(name):
     ex = getattr(widgets, name)(display="agg")
     k = _time_control(ex)

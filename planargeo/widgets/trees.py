@@ -10,7 +10,10 @@ A *focus* on one of them draws it bold and labelled and fades the others.
 
 *Play* advances the scene time ``t`` (a control of its own); the state at ``t``
 is integrated from ``t = 0`` with :func:`planargeo.scenes.trees.tree_advance`
-from checkpoint to checkpoint, so that the controls alone decide it.  With
+from checkpoint to checkpoint, so that the controls alone decide it.  One update
+spends at most :data:`UPDATE_EVALS` evaluations of the dynamics: a farther time
+is refused in words that say how far it got, the checkpoints kept, so that
+asking again (or Play) goes on from there.  With
 equal links the loop 5-6-8-9 is a rhombus that lies flat now and then; the
 motion is carried through those singular poses (counted in the readout).  The
 default lets the links coast without gravity (raise ``g`` to see them fall:
@@ -40,6 +43,7 @@ from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_m
                                     tree_solve)
 from planargeo.simulate.integrate import energy
 from planargeo.widgets._explorer import Described, SceneTime, keep_run, run_to, time_value
+from planargeo.widgets._motion import Budget, refusal_on_picture
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["TreeExplorer"]
@@ -58,6 +62,12 @@ PLAY_RTOL = 1e-7
 CHECKPOINT = 0.05
 #: end of the time slider (s): Play runs a minute; the state at t costs an integration from 0 to t
 T_END = 60.0
+#: evaluations of the nine links' dynamics one update may spend (a :class:`~planargeo.widgets._motion.Budget`,
+#: like the slider-crank's): one evaluation costs about 2 ms under load, the default coasting links spend
+#: about 280 per scene second (about 1,700 under gravity or at 3 rad/s): one update reaches about 7 scene
+#: seconds of the default (0.7-1.5 under gravity), and a farther time is refused after about 5-8 s (measured
+#: on a loaded 2-core machine)
+UPDATE_EVALS = 2_500
 
 class TreeExplorer(Described, SceneTime, Explorer):
     """The tree of Fig 9.1 and the constrained tree of Fig 9.2 with every pin and contact force, and Play.
@@ -196,16 +206,24 @@ class TreeExplorer(Described, SceneTime, Explorer):
 
     # ------------------------------------------------------------------- Play (SceneTime: t from 0 to T_END)
     def _run_state(self, model, run: dict, t: float):
-        """``(q, qd, drift, events)`` at scene time ``t`` of ``run`` (:func:`run_to`, ``CHECKPOINT`` seconds apart)."""
+        """``(q, qd, drift, events)`` at scene time ``t`` of ``run`` (:func:`run_to`, ``CHECKPOINT`` seconds apart).
+
+        One call spends at most :data:`UPDATE_EVALS` evaluations (a :class:`Budget`, give or take the last
+        checkpoint's): a time beyond raises its :class:`~planargeo.errors.SizeLimitError`, the checkpoints
+        done kept in ``run``, so that asking again goes on from there.
+        """
+        budget = Budget(UPDATE_EVALS)
+
         def step(state, h, t0):
             try:
                 out = tree_advance(model, *state, h, rtol=PLAY_RTOL, atol=PLAY_RTOL * 1e-2)
             except PlanargeoError as exc:
                 raise PlanargeoError(f"the loops locked at t ≈ {t0:.2f} s: {exc}") from exc
+            budget.charge(out["nfev"])
             return (out["q"], out["qd"]), out["position_residual"], [(t0 + float(e["t"]), e["kind"])
                                                                      for e in out["events"]]
 
-        (q, qd), drift, events = run_to(run, t, CHECKPOINT, step)
+        (q, qd), drift, events = run_to(run, t, CHECKPOINT, step, budget)
         return q, qd, drift, events
 
     def compute(self, values, changed):
@@ -227,6 +245,8 @@ class TreeExplorer(Described, SceneTime, Explorer):
         if run is None:
             run = {"ck": [(pose[0], speed * pose[1])], "drift": [0.0], "events": []}
         t = time_value(values["t (s)"], T_END)
+        # kept before the integration: the checkpoints of a refused time stay for the next ask
+        keep_run(self._runs, key, run)
         q, qd, drift, events = self._run_state(model, run, t)
         sol = tree_solve(model, q, qd)                               # 9.5 closed, 9.39-9.43 open
         E = float(sum(energy(model, data=sol.data)))
@@ -314,3 +334,8 @@ class TreeExplorer(Described, SceneTime, Explorer):
     def disabled(self, values):
         # The time is set by Play; the acceleration and velocity poles need a motion.
         return {"t (s)": "set by Play (a new initial state starts it at 0)"}
+
+    def figure_message(self, exc):
+        # Short text on the picture for a refused state: a time too far for one update in full (the base
+        # would cut it before "ask again"), anything else as the base writes it.
+        return refusal_on_picture(str(exc)) or super().figure_message(exc)
