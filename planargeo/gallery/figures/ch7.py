@@ -12,7 +12,7 @@ from planargeo.draw.geometry import conic_geometry
 from planargeo.draw.layout import shape_points
 from planargeo.draw.picture import PX_PER_PT
 from planargeo.draw.pictures._words import num
-from planargeo.draw.pictures.common import label_toward
+from planargeo.draw.pictures.common import _align, label_toward
 from planargeo.draw.pictures.kit import force, where
 from planargeo.draw.sketch import dimension, label, model, model_shapes, panel, segment, show
 from planargeo.draw.style import COLORS, LABEL_PT
@@ -36,8 +36,7 @@ def _conic_label(pic, id, xy, text, toward, *, desc, gap=4.0):
     """Label a conic (drawn from the points ``xy``) at its point farthest in the direction ``toward``, outside it."""
     u = np.asarray(toward, float) / np.hypot(*toward)
     at = xy[np.argmax(xy @ u)]
-    ha = "left" if u[0] > 0.3 else "right" if u[0] < -0.3 else "center"
-    va = "bottom" if u[1] > 0.3 else "top" if u[1] < -0.3 else "center"
+    ha, va = _align(u)
     label(pic, id, at, text, offset=(gap * u[0], gap * u[1]), ha=ha, va=va, symbol=text, desc=desc)
 
 
