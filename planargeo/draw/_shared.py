@@ -7,13 +7,13 @@
 from __future__ import annotations
 
 import math
-import re
 
 import numpy as np
 
 from planargeo.draw.picture import Picture
 from planargeo.draw.pictures._words import pair
 from planargeo.errors import InputError
+from planargeo.geometry._docs import entries
 
 __all__ = ["as_picture", "added", "view_centre", "line_words", "ENTRIES", "documented"]
 
@@ -58,7 +58,8 @@ def line_words(l, digits: int = 4) -> str:
 
 
 #: Docstring entries the drawing functions share, written once: a line ``{pic id}`` in a
-#: docstring stands for those entries (:func:`documented`).
+#: docstring stands for those entries (:data:`documented`; a module adds its own with
+#: ``entries(ENTRIES, {...})``).
 ENTRIES = {"pic": "pic : Picture\n    Where to draw.",
            "id": "id : str\n    Stable name of the element.",
            "symbol": "symbol, desc : str\n    Thesis symbol and a one-line description.",
@@ -67,29 +68,5 @@ ENTRIES = {"pic": "pic : Picture\n    Where to draw.",
            "element": "Returns\n-------\ndict\n    The element added."}
 
 
-def documented(fn, entries: dict | None = None):
-    """``fn`` with each docstring line ``{pic id ...}`` replaced by those :data:`ENTRIES` (and ``entries``,
-    a module's own, e.g. an example's set-up; ``functools.partial`` makes a module's decorator of them).
-
-    >>> def f(pic, z):
-    ...     '''Draw.
-    ...
-    ...     Parameters
-    ...     ----------
-    ...     {pic z}
-    ...     '''
-    >>> print(documented(f).__doc__.split("----------")[1].rstrip())
-    <BLANKLINE>
-        pic : Picture
-            Where to draw.
-        z : int
-            Drawing order.
-    """
-    table = {**ENTRIES, **(entries or {})}
-
-    def lines(m):
-        return "\n".join(m[1] + line for key in m[2].split() for line in table[key].split("\n"))
-
-    if fn.__doc__:
-        fn.__doc__ = re.sub(r"^( *)\{([a-z ]+)\}$", lines, fn.__doc__, flags=re.M)
-    return fn
+#: The decorator writing :data:`ENTRIES` into a docstring (:func:`planargeo.geometry._docs.entries`)
+documented = entries(ENTRIES)

@@ -35,11 +35,10 @@ True
 from __future__ import annotations
 
 import math
-from functools import partial
 
 import numpy as np
 
-from planargeo.draw._shared import added, as_picture, documented, view_centre
+from planargeo.draw._shared import ENTRIES, added, as_picture, documented, view_centre
 from planargeo.draw.geometry import clip_line
 from planargeo.draw.layout import fit_box, shape_points
 from planargeo.draw.picture import PX_PER_PT, Picture, _color as _role_color, _dash as _role_dash, plain_text
@@ -47,13 +46,14 @@ from planargeo.draw.pictures.common import _align
 from planargeo.draw.pictures.kit import foot_on_line, seg_distance
 from planargeo.draw.style import COLORS, LINEWIDTHS
 from planargeo.errors import InputError
+from planargeo.geometry._docs import entries
 
 __all__ = ["panel", "fit_box", "show", "label", "segment", "dimension", "body_words", "link_polygon",
            "transform_shape", "arrow", "body", "link", "pin", "ground", "slider", "frame", "com", "model",
            "model_shapes", "slider_guide", "contact", "split_arrows", "joint_split"]
 
-#: :func:`~planargeo.draw._shared.documented` with what the two-point elements raise, written once
-_two_points = partial(documented, entries={
+#: The shared docstring entries and what the two-point elements raise, written once
+_two_points = entries(ENTRIES, {
     "distinct": "Raises\n------\nInputError\n    ``p`` and ``q`` coincide or are not finite points."})
 
 #: outline colour of bodies and body labels

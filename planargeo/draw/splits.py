@@ -36,17 +36,17 @@ is the vertical line ``x = 1.25``.
 from __future__ import annotations
 
 import math
-from functools import partial
 
 import numpy as np
 
 from planargeo._validate import as_vec3
-from planargeo.draw._shared import added, as_picture, documented, line_words, view_centre
+from planargeo.draw._shared import ENTRIES, added, as_picture, line_words, view_centre
 from planargeo.draw.picture import Picture, plain_text
 from planargeo.draw.pictures.common import label_toward
 from planargeo.draw.pictures.kit import force as _force_arrow
 from planargeo.draw.pictures._words import num, where
 from planargeo.errors import InputError
+from planargeo.geometry._docs import entries
 from planargeo.mechanics.subspaces import Decomposition
 
 __all__ = ["decomposition", "twist_split", "wrench_split", "projective_step", "twist_parts",
@@ -65,7 +65,7 @@ def _tex(sym: str, k: int, j: int) -> str:
 
 
 #: The examples' set-up: a rod of mass 1 pinned at the origin, its centre of mass at (1, 0), and a view
-_documented = partial(documented, entries={
+_documented = entries(ENTRIES, {
     "rod": ">>> from planargeo.mechanics.joints import revolute\n"
            ">>> from planargeo.screws.twists import inertia_matrix, unit_rotation\n"
            ">>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)",
