@@ -185,7 +185,7 @@ def slider(page, ex, cv, name: str, steps: int) -> tuple[list[float], list[float
         _wait_idle(cv)
         time.sleep(0.25)
         n_keys = page.evaluate("window.__pgKeys.length")
-        n_apply = _api(cv, "p.applyTimes.length")
+        n_apply = _api(cv, "(p.applyTimes || []).length")
         right = (k // 5) % 2 == 0
         page.keyboard.press("ArrowRight" if right else "ArrowLeft")
         net += 1 if right else -1
@@ -196,7 +196,7 @@ def slider(page, ex, cv, name: str, steps: int) -> tuple[list[float], list[float
             t = _api(cv, f"p.paintTimes.find(t => t > {t0}) ?? null") if t0 is not None else None
             if t is not None:
                 out.append(t - t0)
-                applied += _api(cv, f"p.applyTimes.slice({n_apply})")
+                applied += _api(cv, f"(p.applyTimes || []).slice({n_apply})")
                 break
             time.sleep(0.005)
     for _ in range(abs(net)):
