@@ -56,7 +56,7 @@ from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.mechanics.subspaces import T_of
 from planargeo.scenes.chain import chain_workspace
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._motion import Motion
+from planargeo.widgets._motion import Motion, refusal_on_picture
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["ChainExplorer", "chain_for", "parse_list"]
@@ -441,10 +441,11 @@ class ChainExplorer(Explorer):
         return st["split"]
 
     def figure_message(self, exc: Exception) -> str:
-        # The refusal drawn on the figure, wrapped to stay inside the axes.
+        # The refusal drawn on the figure, wrapped to stay inside the axes; a time too far for one update
+        # in its short form (the base would cut it before "ask again").
         import textwrap
 
-        return textwrap.fill(super().figure_message(exc), 40)
+        return textwrap.fill(refusal_on_picture(str(exc)) or super().figure_message(exc), 40)
 
     # -- focus, handles, play ------------------------------------------------------
     def focus_options(self) -> list[str]:
