@@ -12,6 +12,15 @@ Examples
 ('at (1, 2) m', 'at infinity, direction (-1, 0)')
 >>> force([0.0, 2.0, 2.0]), force([0.0, 0.0, -0.5])
 ('2 N, through (1, 0) m', 'a couple of -0.5 N·m')
+
+Tiny and huge values keep their geometry (no ``F * F`` to underflow, no weight to overflow):
+
+>>> force([1e-300, 1e-300, -1e-300])
+'0 N, through (-0.5, 0.5) m'
+>>> force([5e-324, 0.0, 1.0])
+'0 N, its line far off: nearly a couple of 1 N·m'
+>>> where([1.0, 0.0, 5e-324])
+'far off, direction (0, 1)'
 """
 from __future__ import annotations
 
@@ -109,12 +118,26 @@ def where(p, unit: str = "m") -> str:
     str
     """
     p = np.asarray(p, dtype=float).reshape(3)
+    if not np.all(np.isfinite(p)):
+        return "undefined (not a finite point)"
     if not np.any(p):
         return "none (zero)"
     if bool(is_ideal(p)):
-        d = np.array([-p[1], p[0]]) / math.hypot(p[0], p[1])
-        return f"at infinity, direction {pair(d)}"
-    return f"at {pair((-p[1] / p[2], p[0] / p[2]))} {unit}"
+        return f"at infinity, direction {pair(_unit(-p[1], p[0]))}"
+    with np.errstate(over="ignore", under="ignore"):
+        xy = (-p[1] / p[2], p[0] / p[2])
+    if not (math.isfinite(xy[0]) and math.isfinite(xy[1])):   # a weight so small the point leaves the floats
+        return f"far off, direction {pair(_unit(-p[1] * np.sign(p[2]), p[0] * np.sign(p[2])))}"
+    return f"at {pair(xy)} {unit}"
+
+
+def _unit(x: float, y: float) -> tuple[float, float]:
+    """``(x, y)`` scaled to length 1 (scaled by its largest part first: no overflow, no underflow)."""
+    x, y = float(x), float(y)
+    big = max(abs(x), abs(y))
+    x, y = x / big, y / big
+    n = math.hypot(x, y)
+    return x / n, y / n
 
 
 def force(l, unit: str = "N") -> str:
@@ -131,10 +154,15 @@ def force(l, unit: str = "N") -> str:
     str
     """
     fx, fy, tz = (float(v) for v in np.asarray(l, dtype=float).reshape(3))
+    if not all(map(math.isfinite, (fx, fy, tz))):
+        return "undefined (not a finite force)"
     F = math.hypot(fx, fy)
     if F == 0.0:
         return "zero" if tz == 0.0 else f"a couple of {num(tz)} {unit}·m"
-    foot = (fy * tz / (F * F), -fx * tz / (F * F))
+    arm = tz / F                       # the foot's distance from the origin (F * F would underflow)
+    if not math.isfinite(arm):         # a force so small beside its moment that its line leaves the floats
+        return f"{num(F)} {unit}, its line far off: nearly a couple of {num(tz)} {unit}·m"
+    foot = ((fy / F) * arm, -(fx / F) * arm)
     return f"{num(F)} {unit}, through {pair(foot)} m"
 
 
