@@ -117,15 +117,15 @@ def draw_picture(pic: dict, ax=None) -> list:
                                          gid=gid, alpha=op)))
             elif kind == "arrow":
                 # the page's arrow (pixels, y up): a shaft to 0.8 of the head's length before the
-                # tip, and a head _HEAD_PX long and 0.7 of that wide
+                # tip, and a head max(_HEAD_PX, 4 × the line's width) long and 0.7 of that wide
                 dx, dy = float(part["dx"]), float(part["dy"])
+                hp = max(_HEAD_PX, 4.0 * el["width"])       # the head grows with its line
                 length = float(np.hypot(dx, dy)) or 1.0
                 u = np.array([dx, dy]) / length
                 nrm = np.array([-u[1], u[0]])
                 tip = np.array([dx, dy])
-                shaft = np.array([[0.0, 0.0], tip - u * 0.8 * _HEAD_PX])
-                head = np.array([tip, tip - u * _HEAD_PX + nrm * 0.35 * _HEAD_PX,
-                                 tip - u * _HEAD_PX - nrm * 0.35 * _HEAD_PX])
+                shaft = np.array([[0.0, 0.0], tip - u * 0.8 * hp])
+                head = np.array([tip, tip - u * hp + nrm * 0.35 * hp, tip - u * hp - nrm * 0.35 * hp])
                 to_data = np.array([1.0 / kx, 1.0 / ky])
                 arts += ax.plot(part["x"] + shaft[:, 0] * to_data[0],
                                 part["y"] + shaft[:, 1] * to_data[1],

@@ -214,7 +214,8 @@ function render({ model, el }) {
       put("path", { d: head, transform: at, fill: e.color });
     } else if (k === "A") {
       const x = X(q[1]), y = Y(q[2]), x2 = x + q[3], y2 = y - q[4];
-      const L = Math.hypot(q[3], q[4]) || 1, ux = q[3] / L, uy = -q[4] / L, h = 8;
+      const L = Math.hypot(q[3], q[4]) || 1, ux = q[3] / L, uy = -q[4] / L,
+            h = Math.max(8, 4 * (e.width || 0));   // the head grows with the line it marks
       put("line", { x1: x, y1: y, x2: x2 - ux * h * 0.8, y2: y2 - uy * h * 0.8, stroke: e.color,
                    "stroke-width": 1.9 });
       put("path", { d: `M${x2} ${y2}L${x2 - ux * h - uy * h * 0.35} ${y2 - uy * h + ux * h * 0.35}` +
