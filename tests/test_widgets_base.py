@@ -545,3 +545,26 @@ def test_a_slider_value_set_by_the_page_is_not_echoed_back():
     slider.set_state({"value": 12.0})                    # as the page sends it
     assert slider.value == 12.0 and ex.n_updates == before + 1
     assert not [m for m in sent if m.get("method") == "echo_update"]
+
+
+class ToyInterrupted(Toy):
+    """The toy whose compute is stopped by Ctrl-C when b reaches 1.9 (a long compute interrupted)."""
+
+    def compute(self, v, changed):
+        if v["b"] == 1.9:
+            raise KeyboardInterrupt
+        return super().compute(v, changed)
+
+
+def test_ctrl_c_in_compute_returns_to_the_shown_state_and_stops():
+    """Ctrl-C stops the cell, and the explorer shows what it computed last: control, readout and
+    picture agree, with a message saying so; the next value is computed as usual."""
+    t = ToyInterrupted(display="agg")
+    t.set(b=1.2)
+    with pytest.raises(KeyboardInterrupt):
+        t.set(b=1.9)
+    assert t.controls["b"].value == 1.2 and t.readout_values["b"] == 1.2
+    assert _seg(t)["parts"][0]["xy"][-1] == [0.5, 1.2]
+    assert "Ctrl-C" in t.message
+    t.set(b=1.5)
+    assert t.readout_values["b"] == 1.5 and t.message == ""

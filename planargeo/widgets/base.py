@@ -543,6 +543,12 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
                 table = self._readout_html(readout)
                 message = (state.get("message", "") if isinstance(state, dict)
                            else getattr(state, "message", ""))
+        except KeyboardInterrupt:   # Ctrl-C in a long compute: back to the shown state, then stop
+            if initial:
+                raise
+            self._refuse("stopped by Ctrl-C before this was computed; the controls show the last "
+                         "computed state (set a value again to compute it)")
+            raise
         except Exception as exc:  # noqa: BLE001 - refused and reported, never raised
             if initial:
                 raise
