@@ -148,3 +148,13 @@ def test_a_far_time_is_refused_in_words_and_asking_again_goes_on():
         _one_state(other)
         assert abs(other.readout_values["energy E"] - E0) < 1e-5 * abs(E0)
     assert other.readout_values == ro
+
+
+def test_play_after_a_refusal_goes_on_from_the_shown_time():
+    """A refused jump leaves Play where it was: frames on from the shown t = 0, the loops closed."""
+    ex = TreeExplorer(display="agg")
+    assert _ask(ex, f"{T_END:g}")
+    with _deadline(120):
+        ex.advance(2)
+    assert ex.message == "" and 0.0 < ex.readout_values["t"] < 1.0
+    _one_state(ex)
