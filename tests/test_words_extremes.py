@@ -102,3 +102,25 @@ def test_a_blow_just_off_the_centre_puts_the_pole_far_off_on_the_right_side():
     # exactly on the centre line: a pure translation, the pole a point at infinity
     assert _pole_words(_drawn(ex, **{"strike y": 0.0})) in ("at infinity, direction (0, 1)",
                                                              "at infinity, direction (0, -1)")
+
+
+def test_trees_pin_forces_of_a_subnormal_gravity_are_drawn_like_any_other():
+    """At rest the pin forces are proportional to g (statics), so the arrows, drawn to the largest,
+    are the same for g = 9.81 and for a subnormal g = 1e-310, where 1/fmax overflows."""
+    from planargeo.widgets import TreeExplorer
+
+    def arrows(g):
+        t = TreeExplorer(display="agg")
+        t.set(speed=0.0)
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            t.set(gravity=g)
+            pic = t.picture()
+        assert t.message == ""
+        return {e["id"]: (p["dx"], p["dy"]) for e in pic["elements"] if e["role"] == "reaction"
+                for p in e["parts"] if p["p"] == "arrow"}
+
+    big, tiny = arrows(9.81), arrows(1e-310)
+    assert big and set(big) == set(tiny)
+    for k in big:
+        assert tiny[k] == pytest.approx(big[k], rel=1e-3, abs=0.05)

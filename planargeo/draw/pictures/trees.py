@@ -113,7 +113,6 @@ def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, f
     if overlays.get("reaction forces"):
         size_of = {x.symbol: math.hypot(*np.asarray(x.wrench, float)[:2]) for x in reactions}
         fmax = max(size_of.values(), default=0.0)
-        scale = FORCE_LENGTH / fmax if fmax > 0 else 0.0
         names = dict(zip((f"F_{k + 1}" for k in range(len(contacts))), contacts))
         for x in reactions:
             sym = symbol_of(x.symbol)
@@ -132,7 +131,10 @@ def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, f
             # the label on the line of action where it is clearest of the links (pins share places)
             e = w[:2] / F if F else np.zeros(2)
             head = clearest([np.asarray(x.point, float) + k * e for k in (0.4, -0.4, 0.25, -0.25)], links)
-            force(pic, sym, w, scale=scale, anchor=x.point, role="reaction" if sym[0] == "f" else "momentum",
+            # drawn as the unit force's wrench times F / fmax: a ratio, never a scale 1/fmax that
+            # overflows when the largest force is subnormal
+            wn = w / F * (F / fmax) if F else w
+            force(pic, sym, wn, scale=FORCE_LENGTH, anchor=x.point, role="reaction" if sym[0] == "f" else "momentum",
                   symbol=sym, color=color, desc=f"{meaning} ({eq}): {at}, |{sym}| = {num(F, 4, tiny)} N{moment}", reach=0.45,
                   dash=[4.0, 3.0], width=(2.4 if focus == sym else 1.0) * PX_PER_PT, z=9 if focus == sym else 8,
                   label=None if on else "", opacity=1.0 if on else FADED, label_xy=head)
