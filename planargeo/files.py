@@ -15,6 +15,7 @@ has changed, or put there under the same name, is the user's.
 """
 from __future__ import annotations
 
+import functools
 import hashlib
 import os
 import re
@@ -23,7 +24,7 @@ from pathlib import Path
 
 from planargeo.errors import InputError, OutputError
 
-__all__ = ["atomic_write", "atomic_write_many", "digest", "read_manifest", "manifest_bytes", "owned_files",
+__all__ = ["package_words", "WORDS_FILE", "atomic_write", "atomic_write_many", "digest", "read_manifest", "manifest_bytes", "owned_files",
            "make_folder"]
 
 
@@ -357,3 +358,46 @@ def make_folder(path, what: str = "--out") -> bool:
         raise
     except OSError as e:                    # a name too long, no permission to look...
         raise OutputError(f"{what} {path}: {e.strerror or e}") from e
+
+
+#: The package's words kept as data (one file, shipped with the package): the reported
+#: quantities' descriptions (``[scene.*]``) and the explorers' readout rows and symbols
+#: (``[explorer.*]``).
+WORDS_FILE = "data/quantities.toml"
+
+
+@functools.cache
+def package_words(part: str) -> dict:
+    """One part of the package's words kept as data (:data:`WORDS_FILE`), read once.
+
+    Parameters
+    ----------
+    part : {"scene", "explorer"}
+        ``"scene"``: what ``planargeo report`` prints for each scene (description, symbol,
+        equation, unit of every quantity); ``"explorer"``: each explorer's readout rows and
+        picture symbols.
+
+    Returns
+    -------
+    dict
+        The part's tables, by scene or explorer name (do not modify: it is shared).
+
+    Raises
+    ------
+    InputError
+        If ``part`` is neither.
+
+    Examples
+    --------
+    >>> package_words("scene")["car"]["omega_dot"]["unit"]
+    'rad/s²'
+    >>> package_words("explorer")["impulse"]["rows"]["mass m"]
+    ['kg', 'mass of the body']
+    """
+    import tomllib
+    from importlib.resources import files
+
+    data = tomllib.loads((files("planargeo") / WORDS_FILE).read_text(encoding="utf-8"))
+    if part not in data:
+        raise InputError(f"part must be one of {sorted(data)}, got {part!r}")
+    return data[part]

@@ -42,14 +42,17 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
+from planargeo.files import WORDS_FILE
+
 __all__ = ["add_arguments", "main", "parse_value", "parse_sets", "to_plain", "format_table", "quantity_info",
            "quantity", "Quantity", "round_off", "format_listing", "QUANTITY_INFO", "QUANTITIES_FILE", "ZERO_TOL"]
 
 #: Values below ``ZERO_TOL`` times the scene's scale for their unit print as 0 in the table.
 ZERO_TOL = 1e-9
 
-#: Where the quantities' descriptions live: one data file, shipped with the package.
-QUANTITIES_FILE = "data/quantities.toml"
+#: Where the quantities' descriptions live: one data file, shipped with the package (its
+#: ``[scene.*]`` tables; the explorers' words are its ``[explorer.*]`` tables).
+QUANTITIES_FILE = WORDS_FILE
 
 
 class Quantity(NamedTuple):
@@ -77,11 +80,10 @@ class Quantity(NamedTuple):
 
 
 def _read_quantities() -> dict[str, dict[str, Quantity]]:
-    import tomllib
-    from importlib.resources import files
+    from planargeo.files import package_words
 
-    data = tomllib.loads((files("planargeo") / QUANTITIES_FILE).read_text(encoding="utf-8"))
-    return {scene: {key: Quantity(**entry) for key, entry in table.items()} for scene, table in data.items()}
+    return {scene: {key: Quantity(**entry) for key, entry in table.items()}
+            for scene, table in package_words("scene").items()}
 
 
 #: ``scene -> quantity -> (description, thesis symbol, thesis equation, unit)`` of every quantity

@@ -14,7 +14,23 @@ FIELDS = ["description", "symbol", "equation", "unit"]
 
 
 def raw() -> dict:
-    return tomllib.loads(DATA.read_text(encoding="utf-8"))
+    return tomllib.loads(DATA.read_text(encoding="utf-8"))["scene"]
+
+
+def test_one_file_holds_the_report_and_the_explorers_words():
+    """The report's quantities and the explorers' readout rows and symbols are one data file,
+    read by one reader; no other data file of words ships with the package."""
+    from planargeo.draw.pictures._words import words_data
+    from planargeo.files import package_words
+
+    data = tomllib.loads(DATA.read_text(encoding="utf-8"))
+    assert set(data) == {"scene", "explorer"}
+    assert sorted(p.name for p in DATA.parent.glob("*.toml")) == ["quantities.toml"]
+    assert package_words("explorer") == data["explorer"] and len(data["explorer"]) >= 10
+    assert words_data("impulse") == data["explorer"]["impulse"]
+    assert words_data("no such explorer") == {}
+    with pytest.raises(InputError, match="part must be one of"):
+        package_words("widgets")
 
 
 def test_the_file_describes_every_quantity_with_four_strings():

@@ -11,7 +11,7 @@ hold points, sliders that span a chain of ``n`` bodies, a scene time kept as tex
   :func:`time_value`), and a change of the initial state starts it again at 0; :func:`run_to`
   integrates a run to a time from its checkpoints;
 * :class:`Described`: the readout rows' units and meanings and the picture's symbols, kept as data
-  (``planargeo/data/readouts.toml``).
+  (``planargeo/data/quantities.toml``, its ``[explorer.*]`` tables).
 
 Examples
 --------
@@ -104,12 +104,12 @@ def grown_view(box, pts, margin: float, sized=None, extra: float | None = None) 
 
 
 def explorer_data(explorer: str) -> dict:
-    """The table of ``explorer`` in ``planargeo/data/readouts.toml`` (its words kept as data)."""
+    """The table of ``explorer`` in ``planargeo/data/quantities.toml``, its ``[explorer.*]`` tables (its words kept as data)."""
     return words_data(explorer)
 
 
 def readouts(explorer: str) -> tuple[dict, dict, dict]:
-    """``(units, meanings, symbols)`` of ``explorer`` as ``planargeo/data/readouts.toml`` describes them.
+    """``(units, meanings, symbols)`` of ``explorer`` as ``planargeo/data/quantities.toml``, its ``[explorer.*]`` tables describes them.
 
     ``units`` and ``meanings`` are those of its readout rows (a row without a unit has none in
     ``units``; a list of units is one per component), ``symbols`` the meanings of what its picture

@@ -67,7 +67,7 @@ CHOICES = [(title, key) for key, (title, _) in CONSTRUCTIONS.items()]
 ARM = 1.0
 FADED = 0.4
 
-#: the construction's words, kept as data (``planargeo/data/readouts.toml``): what each parameter's slider
+#: the construction's words, kept as data (``planargeo/data/quantities.toml``, its ``[explorer.*]`` tables): what each parameter's slider
 #: says per construction, the readout's units, the meanings of each construction's symbols and rows
 _DATA = explorer_data("construction")
 _LABELS = _DATA["labels"]

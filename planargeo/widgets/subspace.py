@@ -63,7 +63,7 @@ _SUB = "₁₂"
 
 #: the heading row above the identity checks
 CHECKS_HEADING = "checks: thesis identities of s, R, T, U"
-#: residual of the scene -> (readout row, unit, why it must read 0), kept as data (``planargeo/data/readouts.toml``)
+#: residual of the scene -> (readout row, unit, why it must read 0), kept as data (``planargeo/data/quantities.toml``, its ``[explorer.*]`` tables)
 CHECK_ROWS = {k: tuple(v) for k, v in explorer_data("subspace")["checks"].items()}
 
 

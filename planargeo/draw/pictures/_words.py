@@ -24,11 +24,11 @@ Tiny and huge values keep their geometry (no ``F * F`` to underflow, no weight t
 """
 from __future__ import annotations
 
-import functools
 import math
 
 import numpy as np
 
+from planargeo.files import package_words
 from planargeo.geometry.projective import is_ideal
 
 __all__ = ["num", "pair", "where", "force", "SUB", "subscript", "words_data"]
@@ -52,17 +52,10 @@ def subscript(i) -> str:
     return str(i).translate(SUB)
 
 
-@functools.cache
-def _words() -> dict:
-    import tomllib
-    from importlib.resources import files
-
-    return tomllib.loads((files("planargeo") / "data/readouts.toml").read_text(encoding="utf-8"))
-
-
 def words_data(explorer: str) -> dict:
-    """The words of ``explorer`` kept as data: its table in ``planargeo/data/readouts.toml`` (none: empty)."""
-    return _words().get(explorer, {})
+    """The words of ``explorer`` kept as data: its ``[explorer.<name>]`` table in the package's
+    one data file (:func:`planargeo.files.package_words`; none: empty)."""
+    return package_words("explorer").get(explorer, {})
 
 
 def num(x: float, digits: int = 4, zero: float = 1e-9) -> str:
