@@ -393,9 +393,6 @@ def test_bad_conic_is_refused_by_name():
         pic.point("f", [0.0, 0.0, 1.0])
 
 
-@pytest.mark.xfail(strict=True, reason="Picture.point and Picture.line do not check their input yet "
-                                       "(a 2-vector: ValueError; NaN: ValueError or nothing drawn; an unknown "
-                                       "role: accepted); owner of planargeo/draw/picture.py")
 def test_bad_point_or_line_is_refused_by_name():
     pic = _pic()
     with pytest.raises(ShapeError, match="point"):
@@ -684,9 +681,6 @@ def test_power_velocity_at_an_off_origin_centre_of_mass_is_a_couple():
     assert abs((x1 - x0) * (c[1] - y0) - (y1 - y0) * (c[0] - x0)) < 1e-9 * math.hypot(x1 - x0, y1 - y0)
 
 
-@pytest.mark.xfail(strict=True, reason="p = I v is [-1.1e-16, 5.6e-17, 0.75] (round-off): a line 7e15 m away, "
-                                       "which Picture.line draws as nothing (no couple glyph, no edge arrow); "
-                                       "owners of planargeo/draw/polars.py and picture.py")
 def test_the_momentum_at_an_off_origin_centre_of_mass_is_drawn():
     from planargeo.draw.polars import power
     from planargeo.screws.twists import unit_rotation
@@ -694,7 +688,10 @@ def test_the_momentum_at_an_off_origin_centre_of_mass_is_drawn():
     c = np.array([0.3, -0.4])
     pic = Picture((-3.0, 3.0, -3.0, 3.0), size=(300, 300))
     power(pic, 1.5 * unit_rotation(c), inertia_matrix(2.0, c, 0.5))
-    assert _el(pic, "p")["parts"]
+    # p = I v is a couple up to round-off ([-1.1e-16, 5.6e-17, 0.75]: a line 7e15 m away, farther
+    # than FAR view diagonals): drawn like the line at infinity, a couple glyph turning with τ > 0
+    glyphs = [q for q in _el(pic, "p")["parts"] if q["p"] == "glyph"]
+    assert len(glyphs) == 1 and glyphs[0]["ccw"] is True
 
 
 def test_importing_the_drawing_package_loads_no_matplotlib():

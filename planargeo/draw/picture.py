@@ -52,7 +52,7 @@ import numpy as np
 
 from planargeo.draw.geometry import clip_line, conic_curves, conic_geometry
 from planargeo.draw.style import COLORS, LABEL_PT, LINEWIDTHS, STYLES
-from planargeo.errors import InputError
+from planargeo.errors import InputError, NonFiniteError, ShapeError
 
 __all__ = ["Picture", "PX_PER_PT", "FONT_PX", "nice_ticks", "plain_text"]
 
@@ -199,6 +199,21 @@ def plain_text(s: str) -> str:
     return "".join(_math_to_unicode(p) if k % 2 else p for k, p in enumerate(parts))
 
 
+#: The roles an element may have: the style table's (:mod:`planargeo.draw.style`).
+ROLES = frozenset(COLORS) | frozenset(STYLES) | frozenset(LINEWIDTHS)
+
+
+def _three(id, v, what: str) -> tuple[float, float, float]:
+    """``v`` as three finite floats, or the package's error naming the element."""
+    try:
+        a, b, c = (float(x) for x in v)
+    except (TypeError, ValueError):
+        raise ShapeError(f"{what} {id!r} must be three numbers, got {v!r}") from None
+    if not (math.isfinite(a) and math.isfinite(b) and math.isfinite(c)):
+        raise NonFiniteError(f"{what} {id!r} must be finite, got {[a, b, c]}")
+    return a, b, c
+
+
 def _color(role: str, color: str | None) -> str:
     return color or COLORS.get(role) or STYLES.get(role, {}).get("color") or COLORS["text"]
 
@@ -330,6 +345,8 @@ class Picture:
              width: float | None = None, dash=None, fill: str | None = None,
              alpha: float = 1.0, z: int = 3, opacity: float = 1.0) -> dict:
         id = str(id)
+        if role not in ROLES:
+            raise InputError(f"role of {id!r} must be one of {sorted(ROLES)}, got {role!r}")
         if id in self._ids:
             raise InputError(f"element id {id!r} is used twice in one picture")
         self._ids.add(id)
@@ -402,7 +419,7 @@ class Picture:
         glyph_scale : float
             Glyph radius in pixels per unit ``|w|`` (clamped to [5, 22] px).
         """
-        p0, p1, p2 = (float(v) for v in p)    # plain floats: a point costs microseconds
+        p0, p1, p2 = _three(id, p, "point")    # plain floats: a point costs microseconds
         color = _color(role, color)
         text = symbol if label is None else label
         st = STYLES.get(role, {})
@@ -475,13 +492,17 @@ class Picture:
         dash : list of float, optional
             Dash pattern in pixels (default: the role's).
         """
-        l = np.asarray(l, dtype=float)
+        lx, ly, lz = _three(id, l, "line")
         color = _color(role, color)
         text = symbol if label is None else label
         parts: list[dict] = []
-        seg = clip_line(l, self.box)
-        lx, ly = float(l[0]), float(l[1])
         F = math.hypot(lx, ly)
+        x0, x1, y0, y1 = self.box
+        cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+        if F != 0.0 and abs(lz + cy * lx - cx * ly) > FAR * math.hypot(x1 - x0, y1 - y0) * F:
+            F = lx = ly = 0.0     # farther than FAR view diagonals: drawn like the line at infinity
+        l = np.array([lx, ly, lz])
+        seg = clip_line(l, self.box) if F else None
         if seg is not None:
             parts.append({"p": "path", "xy": seg, "closed": False})
             ex, ey = lx / F, ly / F
@@ -502,10 +523,10 @@ class Picture:
                 parts.append({"p": "arrow", "x": fx, "y": fy, "dx": epx * 24, "dy": epy * 24})
             if text:
                 parts.append(self._label(text, fx, fy, -epy * 8 + epx * 12, epx * 8 + epy * 12))
-        elif F == 0.0 and float(l[2]) != 0.0:
+        elif F == 0.0 and lz != 0.0:
             x0, x1, y0, y1 = self.box
             x, y = x1 - 26 / self.kx, y1 - 26 / self.ky
-            parts.append({"p": "glyph", "x": x, "y": y, "r": 12.0, "ccw": bool(l[2] > 0)})
+            parts.append({"p": "glyph", "x": x, "y": y, "r": 12.0, "ccw": lz > 0})
             parts.append(self._label((text + ": " if text else "") + "couple (line at ∞)",
                                      x, y, -18.0, 0.0, "right", "center"))
         self._add(id, role, symbol, desc, parts, color=color, width=width,
