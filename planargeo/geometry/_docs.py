@@ -46,7 +46,12 @@ def entries(*tables):
         names = match[2].split()
         if not all(name in table for name in names):
             return match[0]
-        return "\n".join(textwrap.indent(table[name], match[1]) for name in names)
+        out = ""
+        for k, name in enumerate(names):      # a section (a title underlined) after a blank line
+            lines = table[name].split("\n", 2)
+            section = len(lines) > 1 and set(lines[1]) == {"-"}
+            out += ("\n\n" if section else "\n") * (k > 0) + textwrap.indent(table[name], match[1])
+        return out
 
     def decorate(f):
         for g in {f, inspect.unwrap(f)}:
