@@ -127,26 +127,16 @@ simulate.__class__ = _CallableSubpackage
 
 def _show_pictures_in_notebooks() -> None:
     """Inside IPython, show points, lines, conics, twists, wrenches, inertias and pictures as
-    drawings (:func:`planargeo.draw.notebook.element_svg`, loaded on the first one shown): the
+    drawings (:func:`planargeo.draw.notebook.register`; numpy only until one is shown): the
     math classes themselves never draw."""
     import sys
 
     ipython = sys.modules.get("IPython")
     shell = ipython.get_ipython() if ipython is not None else None
-    if shell is None or not hasattr(shell, "display_formatter"):
-        return
+    if shell is not None and hasattr(shell, "display_formatter"):
+        from planargeo.draw.notebook import register
 
-    def svg(obj):
-        from planargeo.draw.notebook import element_svg
-
-        return element_svg(obj)
-
-    formatter = shell.display_formatter.formatters["image/svg+xml"]
-    for module, name in (("planargeo.geometry.elements", "Point"), ("planargeo.geometry.elements", "Line"),
-                         ("planargeo.geometry.elements", "Conic"), ("planargeo.screws.twists", "Twist"),
-                         ("planargeo.screws.twists", "Wrench"), ("planargeo.screws.inertia", "Inertia"),
-                         ("planargeo.draw.picture", "Picture")):
-        formatter.for_type_by_name(module, name, svg)
+        register(shell)
 
 
 _show_pictures_in_notebooks()
