@@ -187,30 +187,11 @@ def test_moved_points_turn_about_the_pole_and_shift_in_a_translation():
 
 # --------------------------------------------------------------------------- closed loops: a budget of evaluations
 import math  # noqa: E402
-import signal  # noqa: E402
-from contextlib import contextmanager  # noqa: E402
 
+from _limits import time_limit  # noqa: E402
 from planargeo.errors import InputError, SizeLimitError  # noqa: E402
 from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state  # noqa: E402
 from planargeo.simulate.loops import LOOP_MAX_EVALS, simulate_loops  # noqa: E402
-
-
-class _TooLong(BaseException):
-    pass
-
-
-@contextmanager
-def _deadline(seconds: float):
-    """Fail (not hang) when the block runs past ``seconds`` of wall time (generous: the machine may be loaded)."""
-    def ring(*_):
-        raise _TooLong(f"still running after {seconds} s")
-    old = signal.signal(signal.SIGALRM, ring)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, old)
 
 
 @pytest.fixture(scope="module")
@@ -225,7 +206,7 @@ def test_a_loop_run_past_its_budget_is_refused_at_once(crank):
     (order 3); half a second of it ran for minutes (150 s measured under load).  Now its first 100 steps
     extrapolate past LOOP_MAX_EVALS and it is refused, naming the limit and the opt-in."""
     m, q, qd = crank
-    with _deadline(90), pytest.raises(SizeLimitError, match=f"max_evals = {LOOP_MAX_EVALS}"):
+    with time_limit(90), pytest.raises(SizeLimitError, match=f"max_evals = {LOOP_MAX_EVALS}"):
         simulate_loops(m, q, qd, 0.5, method="RK23", rtol=1e-10, atol=1e-12, progress=False)
 
 
@@ -233,7 +214,7 @@ def test_a_loop_run_past_its_budget_is_refused_at_once(crank):
                                           (math.nan, InputError), (-1.0, InputError), (0.0, InputError)])
 def test_loop_durations_are_bounded_or_named(crank, t_end, error):
     m, q, qd = crank
-    with _deadline(90), pytest.raises(error, match="t_end|max_evals|max_steps"):
+    with time_limit(90), pytest.raises(error, match="t_end|max_evals|max_steps"):
         simulate_loops(m, q, qd, t_end, progress=False)
 
 
@@ -261,13 +242,13 @@ def test_a_start_too_fast_to_integrate_is_refused_in_words(method):
     from planargeo.mechanics.model import chain_model
     from planargeo.simulate.integrate import RATE_LIMIT, simulate
 
-    with _deadline(60), pytest.raises(NumericOverflowError, match=re.escape(f"below {RATE_LIMIT:g} (qd0")):
+    with time_limit(60), pytest.raises(NumericOverflowError, match=re.escape(f"below {RATE_LIMIT:g} (qd0")):
         _strict(simulate, chain_model(2), [0.1, 0.2], [1e150, -3e150], 0.01, method=method, progress=False)
 
 
 def test_the_slider_crank_started_too_fast_is_refused_in_words(crank):
     m, q, _ = crank
-    with _deadline(60), pytest.raises(NumericOverflowError, match="qd0"):
+    with time_limit(60), pytest.raises(NumericOverflowError, match="qd0"):
         _strict(simulate_loops, m, q, [1e150, -10.0, 1e-300], 0.2763, method="RK23", rtol=1e-6, atol=1e-8,
                 dt=0.01, max_step=0.1, stabilization="baumgarte", progress=False)
 

@@ -12,12 +12,11 @@ The deadline is a hang guard (generous: the machine may be loaded), not a speed 
 from __future__ import annotations
 
 import math
-import signal
-from contextlib import contextmanager
 
 import ipywidgets as W
 import pytest
 
+from _limits import time_limit
 from planargeo import widgets
 from planargeo.errors import InputError
 
@@ -25,23 +24,6 @@ TIME_CONTROLS = ("time (s)", "t (s)", "t")
 HOSTILE = (1e6, 1e300, math.inf, math.nan, -1.0)
 #: explorers with Play and a time control (checked below against the classes themselves)
 TIMED = ["ChainExplorer", "SliderCrankExplorer", "TreeExplorer", "ImpulseExplorer", "ArticulatedExplorer"]
-
-
-class _TooLong(Exception):
-    pass
-
-
-@contextmanager
-def _deadline(seconds: float):
-    def ring(*_):
-        raise _TooLong(f"still running after {seconds} s")
-    old = signal.signal(signal.SIGALRM, ring)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, old)
 
 
 def _time_control(ex) -> str:
@@ -71,12 +53,12 @@ def test_a_time_outside_its_range_is_refused_by_name_and_0_is_computed(name):
     shown = dict(ex.readout_values)
     for v in HOSTILE:
         for given in ((v, repr(v)) if text else (v,)):
-            with _deadline(60):
+            with time_limit(60):
                 ex.set(**{k: given})
             assert k in ex.message, (given, ex.message)                    # the control named
             assert "overflow" not in ex.message and "invalid value" not in ex.message
             assert _shown_time(ex, k) == 0.0 and ex.readout_values == shown  # the shown state kept
-    with _deadline(60):
+    with time_limit(60):
         ex.set(**{k: "0" if text else 0.0})
     assert _shown_time(ex, k) == 0.0 and ex.readout_values == shown
 
@@ -95,7 +77,7 @@ def test_the_end_of_the_time_range_is_one_bounded_update(name):
         end = float(w.max)
         value = end
     shown = dict(ex.readout_values)
-    with _deadline(60):
+    with time_limit(60):
         ex.set(**{k: value})
     if ex.message:                          # refused: the limit and what to do, the shown state kept
         assert "ask again" in ex.message and "evaluations of the dynamics" in ex.message, ex.message
@@ -111,14 +93,14 @@ def test_the_end_of_the_time_range_is_one_bounded_update(name):
 def test_play_asked_for_a_long_run_names_the_limit(name):
     ex = getattr(widgets, name)(display="agg")
     for bad in (1e6, 1e300):
-        with _deadline(60), pytest.raises(InputError, match=r"at most .*allow_long=True"):
+        with time_limit(60), pytest.raises(InputError, match=r"at most .*allow_long=True"):
             ex.advance(1, seconds=bad)
-        with _deadline(60), pytest.raises(InputError, match=r"at most .*allow_long=True"):
+        with time_limit(60), pytest.raises(InputError, match=r"at most .*allow_long=True"):
             ex.advance(int(bad) if bad < 1e10 else 10 ** 300)
     for bad in (math.inf, math.nan, -1.0, 0.0):
-        with _deadline(60), pytest.raises(InputError, match="seconds must be a positive finite number"):
+        with time_limit(60), pytest.raises(InputError, match="seconds must be a positive finite number"):
             ex.advance(1, seconds=bad)
-        with _deadline(60), pytest.raises(InputError, match="n_frames must be a positive integer"):
+        with time_limit(60), pytest.raises(InputError, match="n_frames must be a positive integer"):
             ex.advance(bad)
     assert ex.message == "" and ex.readout_values["t" if "t" in ex.readout_values else next(
         r for r in ex.readout_values if r.startswith("t"))] == 0.0

@@ -12,56 +12,17 @@ from __future__ import annotations
 
 import math
 import re
-import signal
-from contextlib import contextmanager
 
 import pytest
 
+from _limits import REFUSAL, ask, picture_texts, time_limit
 from planargeo.errors import SizeLimitError
 from planargeo.widgets import TreeExplorer
 from planargeo.widgets.trees import T_END, UPDATE_EVALS
 
 TIME = "t (s)"
-REFUSAL = re.compile(r"t = (?P<t>\S+) s is more motion than one step computes \((?P<n>[\d,]+) evaluations of "
-                     r"the dynamics\); it is computed up to t = (?P<reached>\S+) s now: ask again to go on "
-                     r"from there, or press Play")
 #: the picture's coordinates are rounded to 1e-5 m
 TOL = 5e-5
-
-
-class _TooLong(Exception):
-    pass
-
-
-@contextmanager
-def _deadline(seconds: float):
-    """Fail (not hang) when the block runs past ``seconds`` of wall time (generous: a loaded machine)."""
-    def ring(*_):
-        raise _TooLong(f"still running after {seconds} s")
-    old = signal.signal(signal.SIGALRM, ring)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, old)
-
-
-def _picture_texts(pic) -> str:
-    out = []
-
-    def walk(x):
-        if isinstance(x, dict):
-            for k, v in x.items():
-                if k in ("text", "label", "lines") and isinstance(v, (str, list)):
-                    out.append(v if isinstance(v, str) else " ".join(map(str, v)))
-                else:
-                    walk(v)
-        elif isinstance(x, list):
-            for v in x:
-                walk(v)
-    walk(pic)
-    return " ".join(" ".join(out).split())
 
 
 def _links(pic) -> dict:
@@ -96,9 +57,7 @@ def _one_state(ex) -> None:
 
 
 def _ask(ex, t: str) -> re.Match | None:
-    with _deadline(300):
-        ex.set(**{TIME: t})
-    return REFUSAL.search(ex.message)
+    return ask(ex, TIME, t)
 
 
 def test_a_far_time_is_refused_in_words_and_asking_again_goes_on():
@@ -118,7 +77,7 @@ def test_a_far_time_is_refused_in_words_and_asking_again_goes_on():
     assert ex.values[TIME] == "0" and ex.readout_values == shown
     _one_state(ex)
     assert (f"too far for one step: computed up to {m['reached']} s; ask again to go on"
-            in _picture_texts(ex.picture()))
+            in picture_texts(ex.picture()))
     # asking again goes on from the checkpoints kept
     m = _ask(ex, end)
     assert m, ex.message
@@ -137,7 +96,7 @@ def test_a_far_time_is_refused_in_words_and_asking_again_goes_on():
     assert ro["closure drift |φ|"] < 1e-6
 
     # a new explorer given the far time is bounded too: one update's work, then the same words
-    with _deadline(300), pytest.raises(SizeLimitError, match=REFUSAL.pattern.replace(r"(?P<t>\S+)", end)):
+    with time_limit(300), pytest.raises(SizeLimitError, match=REFUSAL.pattern.replace(r"(?P<t>\S+)", end)):
         TreeExplorer(display="agg", **{**ex.values, TIME: end})
 
     # the same time reached by another path, in steps each within one update: the same state
@@ -154,7 +113,7 @@ def test_play_after_a_refusal_goes_on_from_the_shown_time():
     """A refused jump leaves Play where it was: frames on from the shown t = 0, the loops closed."""
     ex = TreeExplorer(display="agg")
     assert _ask(ex, f"{T_END:g}")
-    with _deadline(120):
+    with time_limit(120):
         ex.advance(2)
     assert ex.message == "" and 0.0 < ex.readout_values["t"] < 1.0
     _one_state(ex)

@@ -10,11 +10,9 @@ Examples
 """
 from __future__ import annotations
 
-import contextlib
 import dataclasses
 import math
 import re
-import signal
 import time
 import warnings
 from collections import Counter
@@ -23,6 +21,7 @@ from typing import Any, Callable
 
 import numpy as np
 
+from _limits import Hang, time_limit  # noqa: F401  (the hang guard, shared with the tests)
 from planargeo.errors import PlanargeoError
 
 OK, PACKAGE, FOREIGN, NONFINITE, HANG, INCONSISTENT = (
@@ -56,10 +55,6 @@ def foreign_text(text: str) -> str | None:
 
 #: numpy's default floating-point error handling (underflow to zero or a subnormal is no defect).
 NUMPY_ERRORS = dict(divide="warn", over="warn", invalid="warn", under="ignore")
-
-
-class Hang(BaseException):
-    """Raised by the alarm inside a call past its time limit (a BaseException: no ``except Exception`` stops it)."""
 
 
 @dataclass
@@ -139,40 +134,6 @@ def note_refusal(tally: Tally, r: Result, keep: int = 3) -> None:
         seen = tally.examples.setdefault(REFUSALS, [])
         if len(seen) < keep and r.detail not in seen:
             seen.append(r.detail)
-
-
-@contextlib.contextmanager
-def time_limit(seconds: float):
-    """Raise :class:`Hang` in the main thread after ``seconds`` (SIGALRM; POSIX).
-
-    An alarm raised where Python swallows exceptions (a garbage-collector callback) is raised
-    again every 0.5 s, and a block that ends after its alarm fired raises :class:`Hang` at its
-    end: a call past its limit is always a hang.
-
-    >>> import time
-    >>> try:
-    ...     with time_limit(0.05):
-    ...         time.sleep(1)
-    ... except Hang as e:
-    ...     print(e)
-    no answer within 0.05 s
-    """
-    fired = []
-
-    def alarm(signum, frame):
-        fired.append(True)
-        signal.setitimer(signal.ITIMER_REAL, 0.5)
-        raise Hang(f"no answer within {seconds:g} s")
-
-    old = signal.signal(signal.SIGALRM, alarm)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, old)
-    if fired:
-        raise Hang(f"no answer within {seconds:g} s")
 
 
 def _numbers(x, depth=0, seen=None):
