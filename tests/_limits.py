@@ -4,7 +4,8 @@
   generous because the machine may be loaded, never a speed figure.
 * :data:`REFUSAL` is the refusal of a time too far for one update
   (:class:`planargeo.widgets._motion.Budget`), :func:`ask` sets a time under the guard and reads that
-  refusal, :func:`picture_texts` gathers the words drawn in a picture.
+  refusal, :func:`by_steps` and :func:`play_after_refusal` walk an explorer's time through it,
+  :func:`picture_texts` gathers the words drawn in a picture.
 
 Examples
 --------
@@ -75,6 +76,25 @@ def ask(ex, control: str, value, seconds: float = 300) -> re.Match | None:
     with time_limit(seconds):
         ex.set(**{control: value})
     return REFUSAL.search(ex.message)
+
+
+def by_steps(ex, control: str, steps, check):
+    """Ask the times ``steps`` in turn: each is computed in one update (no refusal, no message), and
+    ``check(ex)`` holds after each; the explorer."""
+    for t in steps:
+        assert ask(ex, control, t) is None and ex.message == "", (t, ex.message)
+        check(ex)
+    return ex
+
+
+def play_after_refusal(ex, control: str, far, frames: int = 2, seconds: float = 120):
+    """Ask the time ``far`` (refused: too far for one update), then Play ``frames`` frames, which goes on
+    without a message; the explorer."""
+    assert ask(ex, control, far), ex.message
+    with time_limit(seconds):
+        ex.advance(frames)
+    assert ex.message == "", ex.message
+    return ex
 
 
 def picture_texts(pic) -> str:

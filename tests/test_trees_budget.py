@@ -15,7 +15,7 @@ import re
 
 import pytest
 
-from _limits import REFUSAL, ask, picture_texts, time_limit
+from _limits import REFUSAL, ask, by_steps, picture_texts, play_after_refusal, time_limit
 from planargeo.errors import SizeLimitError
 from planargeo.widgets import TreeExplorer
 from planargeo.widgets.trees import T_END, UPDATE_EVALS
@@ -100,20 +100,16 @@ def test_a_far_time_is_refused_in_words_and_asking_again_goes_on():
         TreeExplorer(display="agg", **{**ex.values, TIME: end})
 
     # the same time reached by another path, in steps each within one update: the same state
-    other = TreeExplorer(display="agg")
-    steps = [f"{float(reached) * k / 4:.9g}" for k in (1, 2, 3)] + [reached]
-    for t in steps:
-        assert _ask(other, t) is None and other.message == "", other.message
+    def same_motion(other):
         _one_state(other)
         assert abs(other.readout_values["energy E"] - E0) < 1e-5 * abs(E0)
+    steps = [f"{float(reached) * k / 4:.9g}" for k in (1, 2, 3)] + [reached]
+    other = by_steps(TreeExplorer(display="agg"), TIME, steps, same_motion)
     assert other.readout_values == ro
 
 
 def test_play_after_a_refusal_goes_on_from_the_shown_time():
     """A refused jump leaves Play where it was: frames on from the shown t = 0, the loops closed."""
-    ex = TreeExplorer(display="agg")
-    assert _ask(ex, f"{T_END:g}")
-    with time_limit(120):
-        ex.advance(2)
-    assert ex.message == "" and 0.0 < ex.readout_values["t"] < 1.0
+    ex = play_after_refusal(TreeExplorer(display="agg"), TIME, f"{T_END:g}")
+    assert 0.0 < ex.readout_values["t"] < 1.0
     _one_state(ex)
