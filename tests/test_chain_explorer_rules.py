@@ -1,13 +1,14 @@
 """ChainExplorer against the rules of issues 22 and 23: bounded runs, one state per set of controls,
 controls that do something (or say why not), options that follow n, symbols explained."""
 import _thread
+import contextlib
 import math
-import signal
 import threading
 
 import numpy as np
 import pytest
 
+from _limits import time_limit
 from planargeo.errors import InputError, PlanargeoError, SizeLimitError
 from planargeo.simulate.integrate import energy
 from planargeo.widgets.chain import ChainExplorer
@@ -15,15 +16,9 @@ from planargeo.widgets.chain import ChainExplorer
 
 @pytest.fixture
 def alarm():
-    """Fail (instead of hanging) a test that runs longer than the given seconds."""
-    def set_alarm(seconds):
-        def boom(*_):
-            raise TimeoutError(f"still running after {seconds} s")
-        signal.signal(signal.SIGALRM, boom)
-        signal.alarm(seconds)
-    yield set_alarm
-    signal.alarm(0)
-    signal.signal(signal.SIGALRM, signal.SIG_DFL)
+    """Fail (instead of hanging) a test that runs longer than the given seconds (:func:`_limits.time_limit`)."""
+    with contextlib.ExitStack() as stack:
+        yield lambda seconds: stack.enter_context(time_limit(seconds))
 
 
 @pytest.mark.parametrize("duration, error, words", [
