@@ -142,6 +142,8 @@ class Motion:
         self.max_evals = int(max_evals)
         self.starts = [np.array(y0, dtype=float)]       # the state at k * chunk
         self.sols = []                                   # chunk k's interpolant (k < len(sols))
+        self._open = None              # the chunk being computed: (solver, times, interpolants)
+        self._rhs_now = rhs
 
     @property
     def reached(self) -> float:
@@ -159,24 +161,102 @@ class Motion:
             Reaching ``t`` needs more than :attr:`max_evals` evaluations in this call (the
             chunks done are kept: a next call goes on from :attr:`reached`).
         """
-        from scipy.integrate import solve_ivp
-
         need = int(math.floor(t / self.chunk)) + 1
         budget = Budget(self.max_evals)
-        rhs = budget.counting(self.rhs)
-
         while len(self.sols) < need:
-            k = len(self.sols)
             try:
-                r = solve_ivp(rhs, (0.0, self.chunk), self.starts[k], method="DOP853", rtol=self.rtol,
-                              atol=self.atol, dense_output=True)
+                self._steps(budget, None)
             except _OverBudget:
                 raise budget.refusal(t, self.reached) from None
-            if r.status != 0 or not np.all(np.isfinite(r.y[:, -1])):
-                raise SingularConfigurationError(
-                    f"the motion could not be integrated past t = {k * self.chunk:.4g} s: {r.message}")
-            self.sols.append(r.sol)
-            self.starts.append(np.array(r.y[:, -1], dtype=float))
+
+    def work_ahead(self, t: float, seconds: float) -> bool:
+        """Spend about ``seconds`` of wall time computing the chunks up to time ``t``, then stop.
+
+        The same steps as :meth:`extend` would take (DOP853's steps do not depend on
+        where the work is cut), so the states are the same, bit for bit: Play calls
+        this between frames so that no frame waits for a whole chunk.  A failure here
+        is left for :meth:`extend` to report.
+
+        Parameters
+        ----------
+        t : float
+            The time to compute up to.
+        seconds : float
+            Wall seconds to spend at most (one step of the integrator more, at worst).
+
+        Returns
+        -------
+        bool
+            True while work up to ``t`` is left.
+
+        Examples
+        --------
+        >>> a, b = Motion(lambda t, y: -y, [1.0], chunk=0.5), Motion(lambda t, y: -y, [1.0], chunk=0.5)
+        >>> while a.work_ahead(1.2, 1e-6):
+        ...     pass
+        >>> a.reached, bool(a.at(1.1)[0] == b.at(1.1)[0])
+        (1.5, True)
+        """
+        import time
+
+        need = int(math.floor(t / self.chunk)) + 1
+        end = time.perf_counter() + float(seconds)
+        try:
+            while len(self.sols) < need:
+                if self._steps(Budget(self.max_evals), end):
+                    continue
+                return True
+        except Exception:  # noqa: BLE001 - extend() reports it when the time is asked for
+            self._open = None
+            return False
+        return False
+
+    def _steps(self, budget: Budget, until: float | None) -> bool:
+        """Steps of the chunk being computed, until it is done (True) or past ``until`` (False)."""
+        import time
+
+        from scipy.integrate import DOP853, OdeSolution
+
+        if self._open is None:
+            k = len(self.sols)
+            self._rhs_now = self.rhs
+            solver = DOP853(lambda t, y: self._rhs_now(t, y), 0.0, self.starts[k], self.chunk,
+                            rtol=self.rtol, atol=self.atol)
+            self._open = (solver, [0.0], [])
+        solver, ts, interpolants = self._open
+        self._rhs_now = budget.counting(self.rhs)
+        try:
+            # solve_ivp's loop (t_eval None, dense output), one step at a time
+            while True:
+                message = solver.step()
+                if solver.status == "failed":
+                    self._open = None
+                    raise SingularConfigurationError(
+                        f"the motion could not be integrated past t = {len(self.sols) * self.chunk:.4g} s: "
+                        f"{message}")
+                interpolants.append(solver.dense_output())
+                if len(ts) > 1 and ts[-1] == solver.t:
+                    interpolants.pop()
+                else:
+                    ts.append(solver.t)
+                if solver.status == "finished":
+                    break
+                if until is not None and time.perf_counter() > until:
+                    return False
+        except _OverBudget:
+            self._open = None       # the chunk starts again at the next call (as before)
+            raise
+        finally:
+            self._rhs_now = self.rhs
+        self._open = None
+        y = solver.y
+        if not np.all(np.isfinite(y)):
+            raise SingularConfigurationError(
+                f"the motion could not be integrated past t = {len(self.sols) * self.chunk:.4g} s: "
+                "the state is not finite")
+        self.sols.append(OdeSolution(np.array(ts), interpolants, alt_segment=False))
+        self.starts.append(np.array(y, dtype=float))
+        return True
 
     def at(self, t: float) -> np.ndarray:
         """The state at time ``t >= 0`` (chunk start: exactly the stored state).

@@ -99,6 +99,7 @@ function render({ model, el }) {
   let inflight = false, seq = 0, tickHalted = false, syncAsked = false;
   const pending = new Map();    // request type -> the latest request of that type
   const handlePaints = [];
+  const arrivals = [];          // when each update sent alone arrived (for benchmarks)
 
   const X = (x) => (x - box[0]) * kx;
   const Y = (y) => ph - (y - box[2]) * ky;
@@ -134,7 +135,13 @@ function render({ model, el }) {
 
   model.on("msg:custom", (m) => {
     if (!m) return;
-    if (m.type === "update") { nPushed += 1; apply(m); return; }
+    if (m.type === "update") {
+      nPushed += 1;
+      arrivals.push(performance.now());
+      if (arrivals.length > 1000) arrivals.shift();
+      applyFrame(m);
+      return;
+    }
     if (m.type === "halt") {        // Play refused in a frame the kernel sent alone
       status.textContent = m.message || "";
       tickHalted = true;
@@ -144,7 +151,7 @@ function render({ model, el }) {
     const mine = m.client === client || m.client === null || m.client === undefined;
     const tAck = performance.now();
     if (!mine) {
-      if (m.update && m.update.base !== null) apply(m.update);
+      if (m.update && m.update.base !== null) applyFrame(m.update);
       return;
     }
     const done = current;
@@ -152,8 +159,8 @@ function render({ model, el }) {
     // Play: the next frame is asked for before this one is drawn, so the kernel computes it
     // while the page applies and paints this one (still one request in flight)
     if (done && done.type === "tick" && m.ok !== false && !pending.size) maybeTick();
-    if (m.update) apply(m.update);
-    if (done) { done.tAck = tAck; done.tApplied = performance.now(); }
+    if (m.update) applyFrame(m.update);
+    if (done) { done.tAck = tAck; done.tApplied = performance.now(); done.kernelMs = m.ms; }
     requestAnimationFrame(() => { if (done) done.tPaint = performance.now(); });
     status.textContent = m.ok === false && m.message ? m.message : "";
     if (done && done.type === "sync") syncAsked = false;
@@ -313,7 +320,32 @@ function render({ model, el }) {
   let nPaint = 0, nPushed = 0, paintAsked = false;
   const paintTimes = [];
   const applyTimes = [];         // milliseconds each update took to apply (for benchmarks)
+  // While Play runs, at most one new picture per animation frame: a frame that arrives when
+  // one is already waiting to be painted waits for the next animation frame (at most two wait;
+  // beyond that the oldest are applied at once, only display frames dropped).  Frames that
+  // arrive together (the page was busy) are so shown one after the other, not in one paint.
+  const waiting = [];
+  let waitArmed = false;
+  function applyFrame(u) {
+    if (!model.get("playing") && !waiting.length) { apply(u); return; }
+    if (!paintAsked && !waiting.length) { apply(u); return; }
+    waiting.push(u);
+    while (waiting.length > 2) apply(waiting.shift());
+    armWaiting();
+  }
+  function armWaiting() {
+    if (waitArmed) return;
+    waitArmed = true;
+    // asked after the paint's own callback (same frame, called in order): it has counted the last picture
+    requestAnimationFrame(() => {
+      waitArmed = false;
+      if (!waiting.length) return;
+      apply(waiting.shift());
+      if (waiting.length) armWaiting();
+    });
+  }
   function apply(u) {
+    if (u.base === null || u.base === undefined) while (waiting.length) applyUpdate(waiting.shift());
     const t0 = performance.now();
     applyUpdate(u);
     applyTimes.push(performance.now() - t0);
@@ -526,7 +558,7 @@ function render({ model, el }) {
   if (snap) apply({ ...snap, base: null });
   askSync();        // the snapshot may be older than this view (a second display): the kernel knows
   root.__planargeo = { ping: () => send({ type: "ping" }), busy: () => inflight || pending.size > 0, stats,
-                       handlePaints, paintTimes, applyTimes, painted: () => nPaint, pushed: () => nPushed, version: () => st.version,
+                       handlePaints, paintTimes, applyTimes, arrivals, painted: () => nPaint, pushed: () => nPushed, version: () => st.version,
                        elements: () => st.els.size, status: () => status.textContent,
                        text: (id) => { const e = st.els.get(id); const t = e && (e.parts || []).find((q) => q[0] === "T");
                                        return t ? t[5] : null; } };

@@ -49,7 +49,8 @@ request of each type and sends it when the ``ack`` arrives.  Every request carri
 Every message is checked here before anything acts on it (its type, its fields'
 types, finite numbers within :data:`COORD_LIMIT`, a known handle); a bad one is
 answered ``ok: false`` and changes nothing.  The kernel answers each request with
-``{"type": "ack", "seq", "client", "ok", "message"[, "update"][, "desc"]}`` after the
+``{"type": "ack", "seq", "client", "ok", "message", "ms"[, "update"][, "desc"]}`` (``ms``: the
+milliseconds the kernel spent on it, for benchmarks) after the
 new picture (if any) is set, so the page knows when it may send the next.
 
 Play
@@ -72,6 +73,11 @@ display frame dropped (each frame covers the wall-clock time since the one befor
 so no physics step is skipped).  A refusal in such a frame reaches the page as
 ``{"type": "halt", "message": str}`` (the page shows it and stops ticking).  There
 is no extra frame without a running event loop (no kernel: tests, scripts).
+
+Between frames the kernel does Play's work ahead: ``on_idle(seconds)`` is called right
+after each frame has gone (a tick's ack, an extra frame), to spend at most about
+``seconds`` (:data:`IDLE_SLICE`) on what the next frames will need (the chain
+integrates its next chunk of motion), so that no frame waits for a whole chunk.
 
 Examples
 --------
@@ -141,6 +147,8 @@ from planargeo.errors import PlanargeoError
 
 __all__ = ["PictureCanvas", "COORD_LIMIT", "wire_digits", "wire_element"]
 
+#: Wall seconds of Play's work ahead done after each frame has gone (``on_idle``).
+IDLE_SLICE = 0.006
 #: Largest coordinate (in absolute value) a message from the page may carry.
 COORD_LIMIT = 1e9
 #: Element fields that travel to the page as they are (the rest: parts, described mark).
@@ -277,6 +285,10 @@ class PictureCanvas(anywidget.AnyWidget):
         Called for each checked Play tick while :attr:`playing` is true; it advances the
         motion and sets the new picture, or raises a
         :class:`~planargeo.errors.PlanargeoError` to refuse (the message is shown).
+    on_idle : callable ``(seconds) -> bool``, optional
+        Play's work ahead, called after each frame has gone with the wall seconds it may
+        spend; True when work is left.  Whatever it raises is dropped (the frame that
+        needs the work reports it).
     around : callable ``() -> context manager``, optional
         Wraps the handling of each request *and its reply*: e.g. other widgets' syncs
         held until the reply (with the new picture) has gone, so that the page paints
@@ -311,7 +323,8 @@ class PictureCanvas(anywidget.AnyWidget):
     def __init__(self, on_drag: Callable[[str, float, float], Any] | None = None,
                  on_view: Callable[[Any], Any] | None = None,
                  on_tick: Callable[[], Any] | None = None,
-                 around: Callable[[], Any] | None = None, **kwargs):
+                 around: Callable[[], Any] | None = None,
+                 on_idle: Callable[[float], Any] | None = None, **kwargs):
         # what the page holds (set before the widget opens: opening reads the snapshot)
         self.version = 0
         self.last_update = None
@@ -333,6 +346,7 @@ class PictureCanvas(anywidget.AnyWidget):
         self.on_drag = on_drag
         self.on_view = on_view
         self.on_tick = on_tick
+        self.on_idle = on_idle
         self.around = around or contextlib.nullcontext
         self.n_requests = 0
         self.on_msg(self._on_msg)
@@ -518,6 +532,7 @@ class PictureCanvas(anywidget.AnyWidget):
             self._answer(content)
 
     def _answer(self, content) -> None:
+        t0 = time.perf_counter()
         self._in_request = True
         try:
             ok, why, extra = self._handle(content)
@@ -541,9 +556,11 @@ class PictureCanvas(anywidget.AnyWidget):
             ack["desc"], ack["id"] = extra["desc"], extra["id"]
         if update is not None:
             ack["update"] = update
+        ack["ms"] = round((time.perf_counter() - t0) * 1e3, 1)     # the kernel's time (benchmarks)
         self.send(ack)
         if extra.get("extra") and ack["ok"] and self.playing:
             self._schedule_extra()
+            self._schedule_idle()
 
     # ------------------------------------------------------------------ Play: two frames in flight
     def _schedule_extra(self) -> None:
@@ -570,7 +587,26 @@ class PictureCanvas(anywidget.AnyWidget):
             with self.around():
                 self.on_tick()
             self.n_extra_frames += 1
+            self._schedule_idle()
         except PlanargeoError as exc:
             self.send({"type": "halt", "message": str(exc)})
         except Exception as exc:  # noqa: BLE001 - nothing escapes into the kernel's event loop
             self.send({"type": "halt", "message": f"not taken: {type(exc).__name__}: {exc}"})
+
+    def _schedule_idle(self) -> None:
+        """Play's work ahead (``on_idle``) as soon as the event loop is free (module docstring, Play)."""
+        if self.on_idle is None:
+            return
+        try:
+            loop = asyncio.get_running_loop()
+        except RuntimeError:       # no event loop (no kernel): the frames do the work themselves
+            return
+        loop.call_soon(self._idle)
+
+    def _idle(self) -> None:
+        if not self.playing or self.on_idle is None or self._in_request:
+            return
+        try:
+            self.on_idle(IDLE_SLICE)
+        except Exception:  # noqa: BLE001 - work ahead only: the frame that needs it reports a failure
+            pass

@@ -386,6 +386,20 @@ class ChainExplorer(Explorer):
         return cached(self._motions, key,
                       lambda: Motion(rhs, np.concatenate([q0, qd0]), CHUNK, rtol=1e-8, atol=1e-10))
 
+    def play_ahead(self, values, seconds: float) -> bool:
+        """Play's work ahead: the motion one chunk past the time shown, for about ``seconds`` of wall time.
+
+        Play calls it between frames (:class:`~planargeo.widgets.canvas.PictureCanvas`'s
+        ``on_idle``); the states are the same as without it (:meth:`Motion.work_ahead`).
+
+        Returns
+        -------
+        bool
+            True while work is left.
+        """
+        model, q0, qd0, tau = self.initial_state(values)
+        return self.motion_for(model, q0, qd0, tau).work_ahead(float(values[TIME]) + CHUNK, seconds)
+
     def compute(self, values, changed):
         # The state of the controls: the chain solved by the ABA at the time ``t`` shown.
         model, q0, qd0, tau = self.initial_state(values)

@@ -374,8 +374,16 @@ class PlayMixin:
         if not (self.has_play and self._page_plays):
             return
         self.canvas.on_tick = self._page_tick
+        if hasattr(self, "play_ahead"):
+            self.canvas.on_idle = self._page_idle
         self.play_control.interval = 10 ** 7
         self._play_link = W.link((self.play_control, "playing"), (self.canvas, "playing"))
+
+    def _page_idle(self, seconds: float) -> bool:
+        """Between the page's frames: the explorer's ``play_ahead`` for at most about ``seconds``."""
+        if not (self.play_control.playing and self._clock is not None):
+            return False
+        return bool(self.play_ahead(self.shown_values, seconds))
 
     def _page_tick(self) -> None:
         """A tick from the page while it plays: one frame of the wall-clock time since the last.
