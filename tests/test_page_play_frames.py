@@ -92,3 +92,41 @@ def test_a_refusal_in_the_second_frame_halts_the_page_with_its_reason():
     assert len(calls) == 2
     assert [m["type"] for m in sent] == ["ack", "halt"]
     assert sent[0]["ok"] and sent[1]["message"] == "the motion ends at t = 2 s"
+
+
+def test_work_ahead_between_frames_gives_the_states_solve_ivp_gives():
+    # the chunks computed in slices between frames are scipy's own chunks, bit for bit
+    import numpy as np
+    from scipy.integrate import solve_ivp
+
+    from planargeo.widgets._motion import Motion
+
+    def rhs(_t, y):                  # a pendulum with a spring: nothing to do with the chain
+        return np.array([y[1], -9.81 * np.sin(y[0]) - 2.0 * y[0]])
+
+    sliced, whole = Motion(rhs, [1.0, 0.0], chunk=0.5), Motion(rhs, [1.0, 0.0], chunk=0.5)
+    slices = 0
+    while sliced.work_ahead(1.2, 1e-9):          # one integrator step per slice, at most
+        slices += 1
+    assert slices > 3 and sliced.reached == 1.5
+    y = np.array([1.0, 0.0])
+    for k in range(3):
+        r = solve_ivp(rhs, (0.0, 0.5), y, method="DOP853", rtol=1e-9, atol=1e-11, dense_output=True)
+        for s in (0.1, 0.25, 0.49):
+            t = k * 0.5 + s
+            assert np.array_equal(sliced.at(t), r.sol(t - k * 0.5))
+            assert np.array_equal(whole.at(t), r.sol(t - k * 0.5))
+        y = r.y[:, -1]
+        assert np.array_equal(sliced.at((k + 1) * 0.5), y)
+
+
+def test_play_works_ahead_between_frames_and_shows_the_same_times():
+    ex, c, sent = _playing_chain()
+    model, q0, qd0, tau = ex.initial_state(ex.values)
+    motion = ex.motion_for(model, q0, qd0, tau)
+    _ticks(c, 3, gap=0.05)
+    # the idle slices after each frame computed the chunk after the one shown
+    assert motion.reached >= 2 * ex.motion_for(model, q0, qd0, tau).chunk
+    fresh = ChainExplorer(display="agg", links=3)
+    fresh.set(**{"time (s)": ex.shown_values["time (s)"]})
+    assert fresh.readout_values == ex.readout_values
