@@ -20,6 +20,14 @@ Measured in Debian's headless chromium, in the same run and through the same wid
     second of wall clock, read off the picture's ``t = … s``);
 
 * **every explorer's drag step** (its first handle inside the view, 3 px moves);
+
+  every drag and slider step starts after the page has been idle for the same
+  :data:`PAUSE` (0.03 s): the slider steps used to wait 0.25 s and the drag steps
+  0.03 s, so the two were not measured alike (run side by side at equal pauses, the
+  slider step is within a few ms of the drag step: the gap was the method's, not
+  the widgets');
+* **Play** also records the kernel's milliseconds per frame (``ms`` in each tick's
+  ack) and the tick's round trip, to tell the kernel's share from the messaging's;
 * the **Python side** of one chain update (compute, picture, the update message) and
   the size of the messages, in this process.
 
@@ -60,6 +68,10 @@ CELLS = [
 ] + [f"others[{n!r}]" for n in ("ProjectiveExplorer", "PercussionExplorer", "ScrewSumExplorer", "CarExplorer",
                                 "SliderCrankExplorer", "TreeExplorer", "SubspaceExplorer", "ImpulseExplorer",
                                 "ConstructionExplorer", "ArticulatedExplorer", "SplittingExplorer")]
+
+
+#: Seconds the page is left idle before each drag or slider step (the same for both).
+PAUSE = 0.03
 
 
 def _titles() -> dict[str, str]:
@@ -138,7 +150,7 @@ def _handle_inside(cv, handle: str | None):
     return None
 
 
-def drag(page, cv, handle: str | None, steps: int, px: float = 3.0):
+def drag(page, cv, handle: str | None, steps: int, px: float = 3.0, pause: float = PAUSE):
     """(drag step latencies, handle repaints, refused steps, the handle's id)."""
     circle = _handle_inside(cv, handle)
     if circle is None:
@@ -152,7 +164,7 @@ def drag(page, cv, handle: str | None, steps: int, px: float = 3.0):
     n0 = _api(cv, "p.handlePaints.length")
     for k in range(steps):
         _wait_idle(cv)
-        time.sleep(0.03)
+        time.sleep(pause)
         n = _api(cv, "p.stats.length")
         x += px if (k // 8) % 2 == 0 else -px
         page.mouse.move(x, y)
@@ -168,7 +180,7 @@ def drag(page, cv, handle: str | None, steps: int, px: float = 3.0):
     return lat, _api(cv, f"p.handlePaints.slice({n0})"), refused, hid
 
 
-def slider(page, ex, cv, name: str, steps: int) -> tuple[list[float], list[float]]:
+def slider(page, ex, cv, name: str, steps: int, pause: float = PAUSE) -> tuple[list[float], list[float]]:
     """(slider step latencies, the page's time to apply each new picture), ms.
 
     A step runs from the key's ``keydown`` event in the page (as a drag step runs from
@@ -183,7 +195,7 @@ def slider(page, ex, cv, name: str, steps: int) -> tuple[list[float], list[float
     out, applied, net = [], [], 0
     for k in range(steps):
         _wait_idle(cv)
-        time.sleep(0.25)
+        time.sleep(pause)
         n_keys = page.evaluate("window.__pgKeys.length")
         n_apply = _api(cv, "(p.applyTimes || []).length")
         right = (k // 5) % 2 == 0
@@ -230,6 +242,8 @@ def play(ex, cv, seconds: float = 10.0) -> dict:
     t1, sim1, pushed1 = cv.evaluate("() => performance.now()"), _shown_time(cv), _api(cv, "p.pushed ? p.pushed() : 0")
     frames = _api(cv, f"p.paintTimes.filter(t => t > {t0} && t <= {t1}).length")
     gaps = _api(cv, f"p.paintTimes.filter(t => t > {t0} && t <= {t1})")
+    ticks = _api(cv, f"p.stats.filter(s => s.type === 'tick' && s.tSent > {t0} && s.tAck && s.tSent <= {t1})"
+                     ".map(s => [s.tAck - s.tSent, s.kernelMs ?? null])")
     button.click()                                     # pause
     _wait_idle(cv)
     wall = (t1 - t0) / 1e3
@@ -238,7 +252,9 @@ def play(ex, cv, seconds: float = 10.0) -> dict:
             "frames sent alone per second": round((pushed1 - pushed0) / wall, 1),
             "time scale": round((sim1 - sim0) / wall, 3) if sim0 is not None and sim1 is not None else None,
             "frame gap median (ms)": round(statistics.median(d), 1) if d else None,
-            "frame gap p90 (ms)": round(sorted(d)[int(0.9 * (len(d) - 1))], 1) if d else None}
+            "frame gap p90 (ms)": round(sorted(d)[int(0.9 * (len(d) - 1))], 1) if d else None,
+            "tick round trip (ms)": _stat([a for a, _k in ticks]),
+            "kernel per tick (ms)": _stat([k for _a, k in ticks])}
 
 
 def measure(page, steps: int) -> dict:
@@ -372,13 +388,15 @@ def main(argv=None) -> int:
                      f"{_cell(r.get('slider: page applies the picture'))} | "
                      f"{_cell(r['F after (ping round trip)'])} |")
     lines += ["", "Play at 1× for 10 s (frames painted per second; seconds of motion per second of wall clock):", "",
-              "| medium | fps | frames | time scale | frame gap median (p90), ms | frames sent alone per s |",
-              "|---|---|---|---|---|---|"]
+              "| medium | fps | frames | time scale | frame gap median (p90), ms | frames sent alone per s "
+              "| tick round trip | kernel per tick |",
+              "|---|---|---|---|---|---|---|---|"]
     for m in media:
         q = results[m][CHAIN]["play"]
         lines.append(f"| {m} | {q['fps']} | {q['frames']} | {q['time scale']} | "
                      f"{q['frame gap median (ms)']} ({q['frame gap p90 (ms)']}) | "
-                     f"{q.get('frames sent alone per second', '—')} |")
+                     f"{q.get('frames sent alone per second', '—')} | {_cell(q.get('tick round trip (ms)'))} | "
+                     f"{_cell(q.get('kernel per tick (ms)'))} |")
     lines += ["", "## Drag step of every explorer", "",
               "| explorer | handle | " + " | ".join(media) + " |", "|---|---|" + "---|" * len(media)]
     for name in _titles():

@@ -14,7 +14,9 @@
 // kept, and the next is sent when the kernel's "ack" arrives.  While the synced "playing"
 // is true, a "tick" is sent as soon as the previous reply has arrived (the kernel computes
 // the next frame while the page paints this one, and sends one more frame alone halfway to
-// the next tick; a "halt" message says that Play was refused in such a frame).
+// the next tick; a "halt" message says that Play was refused in such a frame).  While Play
+// runs the page shows at most one new picture per animation frame: frames that arrive
+// together are shown one after the other (at most two wait), not painted over each other.
 const NS = "http://www.w3.org/2000/svg";
 const ANCHOR = { l: "start", c: "middle", r: "end" };
 const BASELINE = { b: "text-after-edge", t: "text-before-edge", c: "central" };

@@ -70,7 +70,9 @@ once more, halfway to the next tick (the interval between the last two ticks, le
 the time a frame takes), and sends that frame alone as an ``update``.  The page
 still sends one request at a time; a frame a page cannot paint in time is only a
 display frame dropped (each frame covers the wall-clock time since the one before,
-so no physics step is skipped).  A refusal in such a frame reaches the page as
+so no physics step is skipped).  The page shows at most one new picture per animation
+frame: frames that arrive together (the page was busy) wait for the next animation
+frame, at most two (beyond that the oldest are drawn at once).  A refusal in such a frame reaches the page as
 ``{"type": "halt", "message": str}`` (the page shows it and stops ticking).  There
 is no extra frame without a running event loop (no kernel: tests, scripts).
 
