@@ -23,9 +23,10 @@ Measured in Debian's headless chromium, in the same run and through the same wid
 
   every drag and slider step starts after the page has been idle for the same
   :data:`PAUSE` (0.03 s): the slider steps used to wait 0.25 s and the drag steps
-  0.03 s, so the two were not measured alike (run side by side at equal pauses, the
-  slider step is within a few ms of the drag step: the gap was the method's, not
-  the widgets');
+  0.03 s, so the two were not measured alike.  At equal pauses the slider step is
+  within a few ms of the drag step in Voila (the gap there was the method's); in
+  JupyterLab it stays about 10 ms above the drag step (not yet explained: the kernel's
+  share is the same);
 * **Play** also records the kernel's milliseconds per frame (``ms`` in each tick's
   ack) and the tick's round trip, to tell the kernel's share from the messaging's;
 * the **Python side** of one chain update (compute, picture, the update message) and
