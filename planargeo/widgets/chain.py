@@ -392,6 +392,13 @@ class ChainExplorer(Explorer):
         Play calls it between frames (:class:`~planargeo.widgets.canvas.PictureCanvas`'s
         ``on_idle``); the states are the same as without it (:meth:`Motion.work_ahead`).
 
+        Parameters
+        ----------
+        values : dict
+            The controls' values (the chain and the time shown).
+        seconds : float
+            About how much wall time to spend now.
+
         Returns
         -------
         bool
