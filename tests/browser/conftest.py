@@ -61,3 +61,16 @@ def copy_notebook(src: Path, root: Path, name: str = "under-test.ipynb") -> Path
     dst = root / name
     shutil.copy(src, dst)
     return dst
+
+
+@pytest.fixture(scope="module")
+def harness_page(browser):
+    """The page renderer alone on a static page (:class:`browser_harness.CanvasHarness`)."""
+    from browser_harness import CanvasHarness
+
+    with CanvasHarness() as h:
+        page = h.open(browser)
+        try:
+            yield page
+        finally:
+            page.close()

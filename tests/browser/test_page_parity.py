@@ -283,18 +283,6 @@ def overlapping_labels(page: dict) -> list[str]:
 
 
 # --------------------------------------------------------------------------- the tests
-@pytest.fixture(scope="module")
-def harness_page(browser):
-    from browser_harness import CanvasHarness
-
-    with CanvasHarness() as h:
-        page = h.open(browser)
-        try:
-            yield page
-        finally:
-            page.close()
-
-
 def _explorers():
     import planargeo.widgets as pw
 

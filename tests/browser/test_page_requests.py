@@ -16,18 +16,6 @@ import pytest
 pytestmark = pytest.mark.browser
 
 
-@pytest.fixture(scope="module")
-def page(browser):
-    from browser_harness import CanvasHarness
-
-    with CanvasHarness() as h:
-        p = h.open(browser)
-        try:
-            yield p
-        finally:
-            p.close()
-
-
 def _picture():
     from planargeo.draw.picture import Picture
 
@@ -46,7 +34,8 @@ def _ack(page, m):
                   {"type": "ack", "seq": m["seq"], "client": m.get("client"), "ok": True, "message": ""})
 
 
-def test_one_request_in_flight_and_the_latest_position_wins(page):
+def test_one_request_in_flight_and_the_latest_position_wins(harness_page):
+    page = harness_page
     from planargeo.widgets.canvas import PictureCanvas
 
     pic = _picture()
