@@ -1,44 +1,16 @@
-"""Scene "slider-crank": the planar constrained example of thesis 9.6 (Fig 9.3).
+"""Scene "slider-crank": the constrained example of thesis 9.6 (Fig 9.3).
 
-Three bodies in a chain of revolute joints: the crank (body 1) turns about
-the global origin by ``ψ``, the connecting rod (body 2) by ``θ`` relative to
-the crank at its tip, the piston (body 3) by ``φ`` relative to the rod at the
-rod's tip.  A slider contact keeps the piston on the vertical line through the
-crank pivot, not turning: ``ψ + θ + φ = π/2`` and
-``r cos ψ + l cos(ψ + θ) = 0``.  The state is given by the crank angle ``ψ``
-and speed ``ψ̇``; ``θ``, ``φ`` and their rates follow from the loop closure
-(assembly branch of Fig 9.3: the piston above the crank pivot,
-``sin(ψ + θ) ≥ 0``).
-
-Defaults are the thesis's: ``m = 0.40, 0.15, 0.30``, ``r = 2.29``,
-``l = 5.00``, ``t = 0.5``, centres of mass at ``r/4``, ``l/2`` and ``t`` from
-each body's joint, ``I_z = 0.1464 m₁ r², 0.0866 m₂ l², 0.666 m₃ t²``,
-``ψ = 0.4``, ``ψ̇ = 20``.  The thesis does not state the applied loads; ``g``
-(default 9.81, along -y) is a parameter (``g = 0`` gives the pure velocity
-effects).
-
-Note (erratum, ``docs/errata.md``): the printed state (9.78,
-9.79) has ``θ = 1.603`` (the loop closes at ``θ = 1.6063``) and the signs of
-``θ̇``, ``φ̇`` inverted: the closure gives ``q̇ = (20, -23.9343, 3.9343)``,
-which is the state behind the printed twists (9.80).
-
-Quantities (global origin, thesis ordering): ``q``, ``qd``, ``v`` (3 twists),
-``u`` (open-loop accelerations, 9.82), ``Lambda3_inv`` (9.81), ``h`` (9.86),
-``z3``, ``B3`` (9.87), ``xi`` (9.90), ``F3`` (9.92), ``a3`` (9.94), ``a``
-(all bodies), ``qdd``, ``tau_drive`` (crank torque needed by the drive), and every pin and
-bearing force of the loop (9.61): ``f`` (the joint wrenches ``f_1`` crank pivot, ``f_2`` crank
-pin, ``f_3`` wrist pin, each on its body from its parent, N, N, N·m at the origin), ``mu``
-(``μ_i = U_iᵀ f_i``, 6.61b), ``pin_forces`` (``f_1..f_3`` and ``F_1``, the slider bearing's
-``-F₃`` on the piston) and ``reaction_moments`` (each about its own pin or contact point:
-the drive torque at ``f_1``, zero at the free pins, the bearing's couple at ``F_1``).
+Crank (body 1) about the origin by ``ψ``, rod (body 2) by ``θ``, piston (body 3) by ``φ``; a
+slider keeps the piston on the vertical through the crank pivot (``ψ + θ + φ = π/2``,
+``r cos ψ + l cos(ψ + θ) = 0``, branch ``sin(ψ + θ) ≥ 0``).  Defaults are the thesis's; ``g``
+(not stated there) is a parameter.  Erratum (``docs/errata.md``): the printed state (9.78, 9.79)
+has ``θ = 1.603`` (the loop closes at 1.6063) and the signs of ``θ̇``, ``φ̇`` inverted.
 
 Examples
 --------
 >>> res = slider_crank()
 >>> [round(x, 4) for x in res.state["q"]]
 [0.4, 1.6063, -0.4355]
->>> round(res.quantities["h"], 3)
-5.925
 """
 from __future__ import annotations
 
@@ -65,17 +37,14 @@ def slider_crank_model(m1=0.40, m2=0.15, m3=0.30, r=2.29, l=5.00, t=0.5, g=9.81)
     ----------
     m1, m2, m3 : float, optional
         Masses of crank, connecting rod and slider (kg).
-    r, l : float, optional
-        Crank and connecting-rod lengths (m).
-    t : float, optional
-        Distance from the piston's joint to its centre of mass and slider contact (m).
+    r, l, t : float, optional
+        Crank and rod lengths; piston joint to its centre of mass and slider contact (m).
     g : float, optional
         Gravity along -y (m/s²).
 
     Returns
     -------
     Model
-        Three bodies in a chain closed by a slider contact.
     """
     from planargeo.mechanics.contacts import Contact
     from planargeo.mechanics.model import Body, Joint, Model
@@ -101,26 +70,21 @@ def slider_crank_state(psi=0.4, psidot=20.0, r=2.29, l=5.00):
 
     Parameters
     ----------
-    psi : float, optional
-        Crank angle ψ (rad).
-    psidot : float, optional
-        Crank speed (rad/s).
+    psi, psidot : float, optional
+        Crank angle ψ (rad) and speed (rad/s).
     r, l : float, optional
-        Crank and connecting-rod lengths (m).
+        Crank and rod lengths (m).
 
     Returns
     -------
-    tuple of numpy.ndarray
-        ``(q, qd)``, each shape (3,).
+    q, qd : ndarray, shape (3,)
 
     Raises
     ------
     SceneError
-        If the rod cannot reach the piston line (``l < r |cos ψ|``), or a
-        parameter is not finite (``r``, ``l`` not positive).
+        The rod cannot reach the piston line (``l < r |cos ψ|``), or a bad parameter.
     SingularConfigurationError
-        If the rod lies along the horizontal (``l = r |cos ψ|``): the loop
-        closure does not determine ``θ̇``.
+        The rod lies along the horizontal (``l = r |cos ψ|``): ``θ̇`` is undetermined.
 
     Examples
     --------
@@ -153,9 +117,6 @@ def slider_crank_state(psi=0.4, psidot=20.0, r=2.29, l=5.00):
 def slider_crank_solve(model, psi, psidot, r, l, t, drive="free"):
     """Close the loop at crank angle ``psi`` and solve it with the constrained algorithm (9.5).
 
-    The one solve behind the scene and the slider-crank explorer (which passes
-    its cached model).
-
     Parameters
     ----------
     model : Model
@@ -165,26 +126,24 @@ def slider_crank_solve(model, psi, psidot, r, l, t, drive="free"):
     r, l, t : float
         Crank, rod and piston lengths (thesis 9.6).
     drive : {"free", "constant-speed"}
-        ``"constant-speed"`` prescribes ``ψ̈ = 0`` (the torque needed is
-        ``sol.tau_drive``).
+        ``"constant-speed"`` prescribes ``ψ̈ = 0`` (torque needed: ``sol.tau_drive``).
 
     Returns
     -------
     q, qd : ndarray
         Joint coordinates and rates closing the loop.
     sol : LoopSolution
-        The result of :func:`~planargeo.algorithms.loops.loop_solve`.
+        From :func:`~planargeo.algorithms.loops.loop_solve`.
     h : float
         Piston height (9.85).
 
     Raises
     ------
     SceneError
-        If the rod cannot reach the piston line.
+        The rod cannot reach the piston line.
     SingularConfigurationError
-        If the loop closure is singular (rod along the horizontal); when the
-        piston pin is then on the crank pivot (``l = r`` at a dead centre) the
-        message says so and carries the condition of the contact matrix.
+        The loop closure is singular (rod along the horizontal; with the piston pin on the
+        crank pivot the message says so, with the contact matrix's condition).
 
     Examples
     --------
@@ -225,22 +184,19 @@ def slider_crank(psi: float = 0.4, psidot: float = 20.0, m1: float = 0.40, m2: f
     Parameters
     ----------
     psi, psidot : float
-        Crank angle ψ (rad) and crank speed ψ̇ (rad/s).
-    m1, m2, m3 : float
-        Masses of the crank, the connecting rod and the slider (kg).
-    r, l, t : float
-        Crank length, connecting-rod length, and the distance from the piston's joint to its
-        centre of mass and slider contact (thesis 9.6; m).
-    g : float
-        Gravity along -y (m/s²).
+        Crank angle ψ (rad) and speed ψ̇ (rad/s).
+    m1, m2, m3, r, l, t, g : float
+        As for :func:`slider_crank_model`.
     drive : {"free", "constant-speed"}
-        ``"free"``: no crank torque; ``"constant-speed"``: the crank is driven at
-        constant speed (``ψ̈ = 0``), the torque needed is ``tau_drive``.
+        No crank torque, or the crank driven at ``ψ̈ = 0`` (torque needed: ``tau_drive``).
 
     Returns
     -------
     SceneResult
-        ``quantities`` as listed in the module docstring (every pin and bearing force included).
+        ``q``, ``qd``, ``v`` (9.80), ``u`` (9.82), ``Lambda3_inv`` (9.81), ``h`` (9.86), ``z3``,
+        ``B3`` (9.87), ``xi`` (9.90), ``F3`` (9.92), ``a3`` (9.94), ``a``, ``qdd``, ``tau_drive``,
+        and every pin and bearing force (9.61): ``f``, ``mu`` (6.61b), ``pin_forces``,
+        ``reaction_moments``.
     """
     psi, psidot = check_param("psi", psi), check_param("psidot", psidot)
     drive = check_param("drive", drive, "choice", choices=("free", "constant-speed"))
@@ -272,11 +228,6 @@ def slider_crank(psi: float = 0.4, psidot: float = 20.0, m1: float = 0.40, m2: f
 def dead_centre_at(psi, tol: float = DEAD_CENTRE_TOL) -> str:
     """The name of the dead centre the crank is at (``|cos ψ| < tol``), or ``""``.
 
-    At ``ψ = 90°`` crank and rod are stretched in line and the piston is highest
-    (top dead centre); at ``ψ = -90°`` they are folded and it is lowest (bottom
-    dead centre).  Both are toggle positions: the piston's force passes through
-    the crank pivot and gives no torque.
-
     Parameters
     ----------
     psi : float
@@ -287,7 +238,6 @@ def dead_centre_at(psi, tol: float = DEAD_CENTRE_TOL) -> str:
     Returns
     -------
     str
-        ``"top dead centre"``, ``"bottom dead centre"`` or ``""``.
 
     Examples
     --------
@@ -303,8 +253,7 @@ def dead_centre_at(psi, tol: float = DEAD_CENTRE_TOL) -> str:
 def dead_centres_passed(psi0, psi1) -> list:
     """The dead centres the crank passes turning from ``psi0`` to ``psi1`` (unwrapped angles), in the order passed.
 
-    A dead centre exactly at ``psi1`` counts as passed, one at ``psi0`` does not
-    (so consecutive frames never report one twice).
+    One exactly at ``psi1`` counts, one at ``psi0`` does not (consecutive frames never repeat one).
 
     Parameters
     ----------
@@ -318,8 +267,6 @@ def dead_centres_passed(psi0, psi1) -> list:
 
     Examples
     --------
-    >>> [n for n, _ in dead_centres_passed(0.4, 0.4 + 2 * np.pi)]
-    ['top dead centre', 'bottom dead centre']
     >>> dead_centres_passed(2.0, 1.0)
     [('top dead centre', 1.5707963267948966)]
     """
@@ -339,10 +286,7 @@ def dead_centres_passed(psi0, psi1) -> list:
 def slider_crank_advance(model, psi, psidot, dt, r=2.29, l=5.00, drive="free", *, rtol=1e-8, atol=1e-10):
     """Integrate the slider-crank over ``dt`` seconds from crank state ``(ψ, ψ̇)`` with :func:`simulate_loops`.
 
-    The loop is closed at ``(ψ, ψ̇)`` (:func:`slider_crank_state`), integrated
-    by the constrained algorithm (9.5) with the closures projected
-    (:func:`planargeo.simulate.loops.simulate_loops`), free or with the crank
-    driven at constant speed.  Play in the slider-crank explorer is one call per frame.
+    The constrained algorithm (9.5) with the closures projected; the explorer's Play step.
 
     Parameters
     ----------
@@ -355,25 +299,24 @@ def slider_crank_advance(model, psi, psidot, dt, r=2.29, l=5.00, drive="free", *
     r, l : float
         Crank and rod lengths.
     drive : {"free", "constant-speed"}
+        As for :func:`slider_crank`.
     rtol, atol : float
         Integrator tolerances (DOP853).
 
     Returns
     -------
     dict
-        ``psi``, ``psidot`` at the end (``psi`` unwrapped), ``position_residual`` and
-        ``velocity_residual`` (largest closure drift ``|φ|``, ``|J_c q̇|`` during the step, m and m/s),
-        ``dead_centres`` (:func:`dead_centres_passed`), ``events`` (the simulation's near-singular
-        events), ``nfev`` (dynamics evaluations), ``status``.
+        ``psi`` (unwrapped), ``psidot``, ``position_residual``, ``velocity_residual`` (largest
+        closure drift), ``dead_centres``, ``events``, ``nfev``, ``status``.
 
     Raises
     ------
     SceneError
-        If ``dt`` is not positive, or the rod cannot reach the piston line.
+        ``dt`` not positive, or the rod cannot reach the piston line.
     SingularConfigurationError
-        If the start is a singular configuration.
+        The start is singular.
     PlanargeoError
-        If the integration stops at a singular configuration (its message).
+        The integration stops at a singular configuration.
 
     Examples
     --------
@@ -411,8 +354,7 @@ def slider_crank_reactions(sol) -> dict:
     Returns
     -------
     dict
-        ``{"f_1": Reaction, "f_2": ..., "f_3": ..., "F_1": ...}``
-        (:class:`planargeo.algorithms.loops.Reaction`: ``point``, ``wrench``, ``moment``...).
+        ``{"f_1": Reaction, ..., "F_1": Reaction}`` (:class:`planargeo.algorithms.loops.Reaction`).
 
     Examples
     --------
