@@ -1,29 +1,12 @@
 """Scenes "tree" (thesis Fig 9.1) and "constrained-tree" (Fig 9.2).
 
-Nine uniform links (mass ``mass``, length ``length``, centre of mass at
-mid-link, ``J = m L²/12``) joined by revolute joints at their parents' tips,
-with the topology of Fig 9.1: body 1 is the root (pinned at the origin),
-bodies 2-3-4 and 5-6-7 are two branches from body 1's tip, body 8 branches
-from body 6 and body 9 from body 1.  In the default pose (absolute link
-angles 90°, 135°, 90°, 45° | 45°, 90°, 135° | 225° | 90°) the tips of bodies
-4 and 7 meet, and so do the tips of bodies 8 and 9: the "constrained-tree"
-closes both loops there with pin contacts (Fig 9.2: ``G`` of 9.49), leaving
-9 - 2·2 = 5 degrees of freedom.
-
-Quantities (0-based body order, global origin): ``C`` (9.1), ``Dinv`` (9.13),
-``L`` (the 27×27 articulation matrix ``(1 - Cᵀ R Uᵀ)⁻¹`` of 9.31 on the 3×3-block
-adjacency), ``Lambda_inv`` (nine 3×3 articulated mobilities ``Λ_i⁻¹``, each body
-with its descendants cut off, 7.37) and ``b`` (nine bias accelerations ``b_i``),
-the inputs of the direct solution 9.48, ``qdd`` (9.39/9.43), ``qdd_direct``
-(9.48), ``a`` (body accelerations), ``f`` (joint forces); for the
-constrained tree also ``G`` (9.49), ``Upsilon`` (9.51), ``u``, ``F`` (contact
-forces, one wrench per contact, 9.71), ``xi`` and ``cond``.
+Nine uniform links (``J = m L²/12``) on revolute joints at their parents' tips: body 1 pinned at
+the origin, branches 2-3-4 and 5-6-7 and body 9 from its tip, body 8 from body 6.  In the default
+pose the tips of bodies 4 and 7 meet, and so do those of 8 and 9; the constrained tree pins them
+there (``G`` of 9.49), leaving 9 - 2·2 = 5 degrees of freedom.
 
 Examples
 --------
->>> res = tree()
->>> len(res.quantities["qdd"])
-9
 >>> ct = constrained_tree()
 >>> np.array(ct.quantities["G"]).astype(int)[0]
 array([ 0,  0,  0,  1,  0,  0, -1,  0,  0])
@@ -50,10 +33,8 @@ def tree_model(mass=1.0, length=1.0, g=9.81, contacts=()):
 
     Parameters
     ----------
-    mass : float, optional
-        Mass of each link (kg).
-    length : float, optional
-        Length of each link (m).
+    mass, length : float, optional
+        Mass (kg) and length (m) of each link.
     g : float, optional
         Gravity along -y (m/s²).
     contacts : sequence of Contact, optional
@@ -62,7 +43,6 @@ def tree_model(mass=1.0, length=1.0, g=9.81, contacts=()):
     Returns
     -------
     Model
-        Nine links with the parents of Fig 9.1.
     """
     from planargeo.mechanics.model import Body, Joint, Model
 
@@ -78,8 +58,6 @@ def tree_model(mass=1.0, length=1.0, g=9.81, contacts=()):
 def tree_solve(model, q, qd, tau=None):
     """One solve of the tree: stacked (9.39-9.43) when open, the constrained algorithm (9.5) with contacts.
 
-    The trees explorer's step (on its cached model); ``tau`` defaults to zero.
-
     Parameters
     ----------
     model : Model
@@ -92,7 +70,6 @@ def tree_solve(model, q, qd, tau=None):
     Returns
     -------
     StackedSolution or LoopSolution
-        The solve.
 
     Examples
     --------
@@ -120,7 +97,6 @@ def tree_dof(model, q) -> int:
     Returns
     -------
     int
-        The degrees of freedom.
 
     Examples
     --------
@@ -144,14 +120,15 @@ def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float =
     Parameters
     ----------
     mass, length, g : float, optional
-        The links and gravity, as for :func:`tree_model`.
+        As for :func:`tree_model`.
     speed : float, optional
         Scale of the joint-speed pattern (rad/s).
 
     Returns
     -------
     SceneResult
-        Parameters, model, state and the stacked solution's quantities.
+        ``C`` (9.1), ``Dinv`` (9.13), ``L`` (9.31), ``Lambda_inv`` (7.37) and ``b``, the inputs of
+        9.48; ``qdd`` (9.39/9.43), ``qdd_direct`` (9.48), ``a``, ``f`` (0-based bodies, origin).
     """
     from planargeo.algorithms.stacked import adjacency, direct_accelerations, stacked_solve, trunk
 
@@ -178,8 +155,7 @@ def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float =
 def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float = 1.0) -> SceneResult:
     """The tree of Fig 9.2: pins between the tips of bodies 4 and 7 and of bodies 8 and 9.
 
-    The joint speeds are ``speed × pattern`` projected onto the velocities the
-    loops allow (least-squares correction).
+    The joint speeds are ``speed × pattern`` less its part that breaks the loops (least squares).
 
     Parameters
     ----------
@@ -189,7 +165,8 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
     Returns
     -------
     SceneResult
-        Parameters, model, state and the constrained solution's quantities.
+        ``G`` (9.49), ``Upsilon`` (9.51), ``qdd``, ``a``, ``u``, ``F`` (9.71), ``xi``, ``cond``,
+        ``f`` (9.61), ``mu``.
     """
     from planargeo.algorithms.loops import loop_solve
     from planargeo.algorithms.stacked import blocks
@@ -224,17 +201,11 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
 def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
     """A state of the (constrained) tree with body 1 at ``root_angle``: the loops closed, the speed pattern projected.
 
-    Positions, without ``q_start`` (a rule on the two angles alone, so that one
-    pair of angles gives one pose): the pose of Fig 9.1/9.2 turned as a whole to
-    ``root_angle`` (its loops stay closed), then body 2 turned the shorter way to
-    the absolute angle ``angle2`` in steps of at most 10°, the other joints moved
-    after each step by Gauss-Newton until the pins close
-    (:func:`planargeo.simulate.loops.project_state` with joints 1 and 2 fixed,
-    9.54 in positions).  With ``q_start``: joint 1 (and 2) set in ``q_start``
-    and the loops closed from there in one go.  Velocities: ``speed`` times the scene's joint-speed
-    pattern, minus its part that breaks the loops (least squares, as the
-    ``"constrained-tree"`` scene), so at ``root_angle = 90°`` and the default
-    pose this is the scene's state.
+    Without ``q_start``: the pose of Fig 9.2 turned as a whole to ``root_angle``, then body 2 turned
+    the shorter way to ``angle2`` in steps of at most 10°, the loops closed after each step by
+    Gauss-Newton (:func:`planargeo.simulate.loops.project_state`, 9.54 in positions).  With
+    ``q_start``: closed from there in one go.  Velocities: the scene's pattern less its part that
+    breaks the loops, so ``root_angle = 90°`` gives the scene's state.
 
     Parameters
     ----------
@@ -245,9 +216,9 @@ def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
     speed : float
         Scale of the joint-speed pattern (rad/s).
     q_start : array_like (9,), optional
-        Where to start the closure (default: the rule above).
+        Where to start the closure.
     angle2 : float, optional
-        Absolute angle of body 2 (rad); None: body 2 keeps its angle relative to body 1.
+        Absolute angle of body 2 (rad); None: it keeps its angle relative to body 1.
 
     Returns
     -------
@@ -256,7 +227,7 @@ def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
     Raises
     ------
     SceneError
-        If the loops cannot be closed with body 1 at that angle (the pins out of reach).
+        The loops cannot be closed with body 1 at that angle.
 
     Examples
     --------
@@ -317,17 +288,11 @@ _CROSS_FACTORS = (1.0, 0.77, 1.3, 0.5, 2.0, 0.31, 3.0, 0.2, 5.0)
 def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True):
     """Integrate the tree (loops closed by its contacts, if any) over ``dt`` seconds (9.5 with :func:`simulate_loops`).
 
-    The closed tree of Fig 9.2 has equal links, so its loop 5-6-8-9 is a
-    rhombus: it folds flat (all four links on one line) in the course of most
-    motions.  There ``BᵀGΛ⁻¹GᵀB`` (9.70) loses rank for an instant: the motion
-    goes on smoothly, but the adaptive integrator's steps shrink towards the
-    flat pose until the solver refuses it.  With ``cross`` such a stop is
-    stepped over: from the last state with condition number below
-    :data:`CROSS_COND` the motion is carried on by fixed RK4 steps of
-    :data:`CROSS_STEP` (which pass the flat pose between two evaluations; the
-    projection keeps the loops closed) until the condition number is below
-    :data:`CROSS_COND` again; then the adaptive integration goes on.  Each
-    crossing is an event ``{"kind": "singular pose passed", "t", "cond"}``.
+    The closed tree's loop 5-6-8-9 is a rhombus that folds flat in most motions: ``BᵀGΛ⁻¹GᵀB``
+    (9.70) loses rank for an instant and the adaptive steps shrink until the solver stops.  With
+    ``cross`` that pose is stepped over by fixed RK4 steps of :data:`CROSS_STEP` from the last state
+    with condition below :data:`CROSS_COND` until it is below again (an event
+    ``{"kind": "singular pose passed", "t", "cond"}``).
 
     Parameters
     ----------
@@ -346,15 +311,14 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True):
     -------
     dict
         ``q``, ``qd`` at the end, ``position_residual``, ``velocity_residual`` (largest closure
-        drift during the step, m and m/s), ``events`` (near-singular configurations met and
-        singular ones passed, ``t`` from the start of the step), ``crossings``, ``nfev``, ``status``.
+        drift), ``events`` (``t`` from the start of the step), ``crossings``, ``nfev``, ``status``.
 
     Raises
     ------
     SceneError
-        If ``dt`` is not positive.
+        ``dt`` not positive.
     PlanargeoError
-        If the integration stops (a singular configuration that could not be crossed: its message).
+        The integration stops at a singular configuration that could not be crossed.
 
     Examples
     --------
@@ -424,8 +388,8 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True):
 def tree_reactions(model, sol) -> list:
     """Every pin force of the tree: a :class:`~planargeo.algorithms.loops.Reaction` per joint, then per contact.
 
-    The joints' wrenches ``f`` on each body from its parent (9.61 with the loops
-    closed, 9.41 for the open tree) and the contacts' ``-F`` on body ``a`` (9.71).
+    The joints' ``f`` on each body from its parent (9.61 closed, 9.41 open) and the contacts' ``-F``
+    on body ``a`` (9.71).
 
     Parameters
     ----------
@@ -442,9 +406,6 @@ def tree_reactions(model, sol) -> list:
     >>> closed = constrained_tree()
     >>> [r.symbol for r in tree_reactions(closed.model, closed.extra["solution"])][-3:]
     ['f_9', 'F_1', 'F_2']
-    >>> open_ = tree()
-    >>> len(tree_reactions(open_.model, open_.extra["solution"]))
-    9
     """
     from planargeo.algorithms.loops import Reaction
 
