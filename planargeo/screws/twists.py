@@ -1,18 +1,10 @@
-"""Planar screws as arrays: twists ``[vx, vy, wz]`` and wrenches ``[fx, fy, tz]``.
+"""Planar screws as arrays: twists ``[vx, vy, ω]`` and wrenches ``[fx, fy, τz]`` (thesis ch. 1, 4).
 
-All quantities are expressed at a stated reference point, by default the
-global origin, with the linear part first (thesis ordering).  Every function
-broadcasts over leading dimensions: vectors are ``(..., 3)``, matrices
-``(..., 3, 3)``, Euclidean points ``(..., 2)``.
-
-A twist *is* a point in the package's homogeneous coordinates (its pole, the
-instant centre; thesis 5.51), a wrench *is* a line (its polar, the line of
-action; thesis 5.56).  See :mod:`planargeo.geometry.projective`.
-
-Finite in, finite out: a result beyond double precision's range raises
-:class:`~planargeo.errors.NumericOverflowError` naming the arguments; powers,
-energies and magnitudes whose plain evaluation overflows only in an
-intermediate step are evaluated rescaled (:func:`planargeo._validate.rescaled`).
+Quantities are given at a reference point (the origin by default), linear part first, and
+broadcast over leading dimensions.  A twist *is* a point (its pole, 5.51) and a wrench a line
+(its line of action, 5.56) of :mod:`planargeo.geometry.projective`.  A result beyond double
+precision raises :class:`~planargeo.errors.NumericOverflowError`; powers and energies that
+overflow only in an intermediate step are evaluated rescaled.
 """
 from __future__ import annotations
 
@@ -38,9 +30,7 @@ __all__ = [
 
 @documented
 def X_P(point) -> np.ndarray:
-    """Twist transform from the origin to ``point`` (thesis 4.8).
-
-    ``X_P(p) @ v`` is the twist ``v`` (given at the origin) expressed at ``p``.
+    """Twist transform from the origin to ``point`` (thesis 4.8): ``X_P(p) @ v`` is ``v`` seen at ``p``.
 
     Parameters
     ----------
@@ -65,10 +55,7 @@ def X_P(point) -> np.ndarray:
 
 @documented
 def X_P_inv_T(point) -> np.ndarray:
-    """Wrench transform from the origin to ``point`` (thesis 4.24).
-
-    ``X_P_inv_T(p) @ f`` is the wrench ``f`` (given at the origin) expressed
-    at ``p``; it equals ``inv(X_P(p)).T``.
+    """Wrench transform from the origin to ``point`` (thesis 4.24): ``inv(X_P(p)).T``.
 
     Parameters
     ----------
@@ -77,7 +64,6 @@ def X_P_inv_T(point) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
-        ``X_P(point)⁻ᵀ``.
 
     Examples
     --------
@@ -88,9 +74,7 @@ def X_P_inv_T(point) -> np.ndarray:
 
 
 def rot(theta) -> np.ndarray:
-    """Rotation of screw coordinates by ``theta`` about the reference point.
-
-    The same matrix rotates twists and wrenches (it is orthogonal).
+    """Rotation of screw coordinates by ``theta`` about the reference point (twists and wrenches alike).
 
     Parameters
     ----------
@@ -100,7 +84,6 @@ def rot(theta) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
-        The rotation matrix.
 
     Examples
     --------
@@ -120,19 +103,7 @@ def rot(theta) -> np.ndarray:
 
 @overflow_checked("theta or point")
 def X_frame(theta, point) -> np.ndarray:
-    """General planar twist transform: translation to ``point``, then rotation by ``theta`` (thesis 1.56, 4.7).
-
-    Thesis 1.56 projected on the plane (``X_2D = Dᵀ X_3D D``, 4.7) with
-    ``r_AB = point`` and ``E`` the rotation by ``theta`` about z::
-
-        X = rot(θ) X_P(p) = [[ cos θ, -sin θ,  -(p_y cos θ + p_x sin θ)],
-                             [ sin θ,  cos θ,    p_x cos θ - p_y sin θ ],
-                             [ 0,      0,        1                     ]]
-
-    ``X @ v`` is the twist ``v`` (given at the origin) expressed at ``point``
-    and then rotated by ``theta`` (the coordinates in a frame at ``point``
-    whose axes are turned by ``-theta``).  ``theta = 0`` gives :func:`X_P`;
-    ``point = (0, 0)`` gives :func:`rot`.
+    """Twist transform to a frame at ``point`` turned by ``theta``: ``rot(θ) X_P(p)`` (thesis 1.56, 4.7).
 
     Parameters
     ----------
@@ -159,10 +130,6 @@ def X_frame(theta, point) -> np.ndarray:
 def X_frame_inv_T(theta, point) -> np.ndarray:
     """Wrench transform matching :func:`X_frame`: ``X⁻ᵀ = rot(θ) X_P⁻ᵀ`` (thesis 1.58, 4.24).
 
-    ``X_frame_inv_T(θ, p) @ f`` is the wrench ``f`` (given at the origin)
-    expressed at ``p`` and rotated by ``θ``; power is preserved:
-    ``(X v)ᵀ (X⁻ᵀ f) = vᵀ f``.
-
     Parameters
     ----------
     theta : array_like, shape (...)
@@ -172,7 +139,6 @@ def X_frame_inv_T(theta, point) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
-        ``rot(θ) X_P⁻ᵀ(p)``.
 
     Examples
     --------
@@ -185,13 +151,9 @@ def X_frame_inv_T(theta, point) -> np.ndarray:
 
 @overflow_checked("theta or about")
 def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
-    """Twist map of a rigid rotation by ``theta`` about the point ``about`` (active; thesis 4.8, 1.56).
+    """Twist map ``X_P(-c) rot(θ) X_P(c)`` of a rigid rotation by ``theta`` about ``about`` (thesis 4.8, 1.56).
 
-    ``M = X_P(-c) rot(θ) X_P(c)``: express at ``c``, turn, express back at the
-    origin.  ``M @ v`` is the twist ``v`` carried along when the plane is
-    turned by ``theta`` about ``c`` (its pole turns about ``c``); wrenches are
-    carried by ``inv(M).T`` (= ``X_P⁻ᵀ(-c) rot(θ) X_P⁻ᵀ(c)``) and inertias by
-    :func:`inertia_rotated`.  With ``about = (0, 0)`` this is :func:`rot`.
+    Wrenches are carried by its inverse transpose, inertias by :func:`inertia_rotated`.
 
     Parameters
     ----------
@@ -203,7 +165,6 @@ def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
-        ``M`` acting on twists.
 
     Examples
     --------
@@ -219,12 +180,7 @@ def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
 def crm(v) -> np.ndarray:
     """Planar motion cross operator ``v×`` (thesis 2.16 projected, 4.63).
 
-    ``crm(v) @ s`` is the rate of change of a twist ``s`` carried by a body
-    moving with twist ``v``; for ``v = [vx, vy, w]``::
-
-        [[0, -w,  vy],
-         [w,  0, -vx],
-         [0,  0,   0]]
+    ``crm(v) @ s`` is the rate of change of a twist ``s`` carried by a body moving with twist ``v``.
 
     Parameters
     ----------
@@ -234,7 +190,6 @@ def crm(v) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
-        The matrix of ``v×``.
 
     Examples
     --------
@@ -251,14 +206,7 @@ def crm(v) -> np.ndarray:
 
 
 def crf(v) -> np.ndarray:
-    """Planar force cross operator ``v×* = -(v×)^T`` (dual of :func:`crm`, thesis 3.8).
-
-    ``crf(v) @ f`` is the rate of change of a wrench ``f`` carried by a body
-    moving with twist ``v``; for ``v = [vx, vy, w]``::
-
-        [[ 0,   -w,   0],
-         [ w,    0,   0],
-         [-vy,  vx,   0]]
+    """Planar force cross operator ``v×* = -(v×)ᵀ`` (dual of :func:`crm`, thesis 3.8).
 
     Parameters
     ----------
@@ -268,32 +216,26 @@ def crf(v) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
-        The matrix of ``v×*``.
 
     Examples
     --------
-    >>> crf([0.0, 0.0, 1.0]) @ [1.0, 0.0, 0.0]   # a force along x, rotated at unit rate about the origin
-    array([0., 1., 0.])
     >>> crf([1.0, 0.0, 0.0]) @ [0.0, 1.0, 0.0]   # a force along y carried along x: moment about the origin grows
     array([0., 0., 1.])
     """
     return -np.swapaxes(crm(v), -1, -2)
 
 
+@documented
 def unit_rotation(point) -> np.ndarray:
-    """Unit twist of a counter-clockwise rotation about ``point`` (thesis 4.10, 5.51).
-
-    For ``point = (x, y)`` this is ``[y, -x, 1]``: the homogeneous point itself.
+    """Unit twist ``[y, -x, 1]`` of a counter-clockwise rotation about ``point`` (thesis 4.10, 5.51).
 
     Parameters
     ----------
-    point : array_like, shape (..., 2)
-        The pole ``(x, y)`` (m).
+    {point}
 
     Returns
     -------
     numpy.ndarray, shape (..., 3)
-        ``[y, -x, 1]``.
 
     Examples
     --------
@@ -305,9 +247,7 @@ def unit_rotation(point) -> np.ndarray:
 
 
 def unit_translation(direction) -> np.ndarray:
-    """Unit twist of a translation along ``direction`` (a point at infinity, thesis 5.62).
-
-    The direction is normalised.
+    """Unit twist ``[dx, dy, 0] / |d|`` of a translation along ``direction`` (thesis 5.62).
 
     Parameters
     ----------
@@ -317,7 +257,6 @@ def unit_translation(direction) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3)
-        ``[dx, dy, 0] / |d|``.
 
     Raises
     ------
@@ -342,8 +281,7 @@ def unit_translation(direction) -> np.ndarray:
 def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
     """Planar spatial inertia at the origin (thesis 1.68 projected; 4.58, 5.64).
 
-    For mass ``m``, centre of mass ``c = (cx, cy)`` and rotational inertia
-    ``J`` about the centre of mass (``J = m ρ²``)::
+    For mass ``m``, centre of mass ``(cx, cy)`` and ``J`` about it::
 
         [[ m,     0,    -m cy          ],
          [ 0,     m,     m cx          ],
@@ -352,23 +290,20 @@ def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
     Parameters
     ----------
     mass : array_like (...)
-        ``m > 0``.
+        ``m > 0`` (kg).
     com : array_like (..., 2)
         Centre of mass ``(cx, cy)`` (m).
     inertia_about_com : array_like (...)
-        ``J >= 0`` (``J = 0`` is a point mass: a singular, positive
-        semi-definite inertia).
+        ``J >= 0`` (kg·m²; ``J = 0`` is a point mass).
 
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
-        The inertia matrix shown above.
 
     Raises
     ------
     InputError
-        ``mass <= 0`` or ``inertia_about_com < 0`` (the message names the
-        argument, e.g. ``"mass must be positive, got -1.0"``).
+        ``mass <= 0`` or ``inertia_about_com < 0``.
 
     Examples
     --------
@@ -376,10 +311,6 @@ def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
     array([[2. , 0. , 0. ],
            [0. , 2. , 2. ],
            [0. , 2. , 2.5]])
-    >>> inertia_matrix(-1, [0.0, 0.0], 1.0)
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.InputError: mass must be positive, got -1.0
     """
     m = check_positive(mass, "mass")
     c = as_xy(com, "com")
@@ -397,7 +328,7 @@ def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
 
 @documented
 def power(twist, wrench) -> np.ndarray:
-    """Power ``vᵀf`` of a wrench on a twist (thesis 5.73); zero means incidence.
+    """Power ``vᵀf`` (W) of a wrench on a twist (thesis 5.73); zero means incidence.
 
     Parameters
     ----------
@@ -406,7 +337,6 @@ def power(twist, wrench) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (...)
-        Power (W).
 
     Examples
     --------
@@ -425,7 +355,7 @@ def _dot(a, b):
 
 @documented
 def kinetic_energy(inertia, twist) -> np.ndarray:
-    """Kinetic energy ``½ vᵀ I v`` (thesis 1.9), invariant under frame changes.
+    """Kinetic energy ``½ vᵀ I v`` (J; thesis 1.9), invariant under frame changes.
 
     Parameters
     ----------
@@ -434,30 +364,15 @@ def kinetic_energy(inertia, twist) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (...)
-        Kinetic energy (J).
-
-    Examples
-    --------
-    A disc (``m = 2``, ``J = 0.5``) centred at ``(1, 0)`` spinning at ``ω = 3``
-    about the origin: ``½ (J + m d²) ω² = 11.25``.
-
-    >>> float(kinetic_energy(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 3.0]))
-    11.25
 
     Raises
     ------
-    InputError
-        ``inertia`` is not symmetric.
-    SingularInertiaError
-        ``inertia`` has a negative eigenvalue (beyond rounding,
-        :data:`planargeo._validate.PSD_RTOL`): no inertia, the energy could be
-        negative.  Singular (positive semi-definite) inertias such as point
-        masses are accepted.
+    {not_psd}
 
-    >>> kinetic_energy(np.diag([1.0, 1.0, -1.0]), [0.0, 0.0, 1.0])
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.SingularInertiaError: inertia must be positive semi-definite, got smallest eigenvalue -1 (condition number inf)
+    Examples
+    --------
+    >>> float(kinetic_energy(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 3.0]))   # ½ (J + m d²) ω²
+    11.25
     """
     I = _inertia_psd(inertia)
     v = as_vec3(twist, "twist")
@@ -477,7 +392,7 @@ def _inertia_psd(inertia, name: str = "inertia") -> np.ndarray:
 
 @documented
 def twist_magnitude(twist) -> np.ndarray:
-    """Magnitude ``ω_z`` of a planar twist (thesis 4.6), signed; 0 for a translation.
+    """Signed magnitude ``ω_z`` (rad/s) of a twist (thesis 4.6); 0 for a translation.
 
     Parameters
     ----------
@@ -486,7 +401,6 @@ def twist_magnitude(twist) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (...)
-        ``ω_z`` (rad/s).
 
     Examples
     --------
@@ -499,12 +413,7 @@ def twist_magnitude(twist) -> np.ndarray:
 
 @documented
 def pole_xy(twist) -> np.ndarray:
-    """Euclidean pole ``(-v_y/ω, v_x/ω)`` of a twist (thesis 4.10).
-
-    The twist *is* its pole (thesis 5.51), so this is
-    :func:`planargeo.geometry.projective.to_xy` applied to the twist.  A translation
-    (``ω = 0``) has its pole at infinity: NaN is returned (no warning); use
-    the homogeneous array itself.
+    """Euclidean pole ``(-v_y/ω, v_x/ω)`` of a twist (thesis 4.10); NaN for a translation, silently.
 
     Parameters
     ----------
@@ -513,23 +422,18 @@ def pole_xy(twist) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 2)
-        The pole (m); NaN for translations.
 
     Examples
     --------
     >>> pole_xy([2.0, -1.0, 1.0])
     array([1., 2.])
-    >>> pole_xy([1.0, 0.0, 0.0])
-    array([nan, nan])
     """
     return to_xy(as_vec3(twist, "twist"))
 
 
 @documented
 def wrench_magnitude(wrench) -> np.ndarray:
-    """Magnitude ``F = sqrt(f_x² + f_y²)`` of a planar wrench (thesis 4.22, 4.29).
-
-    A pure couple has ``F = 0`` (its strength is the moment ``τ_z``).
+    """Magnitude ``F = sqrt(f_x² + f_y²)`` (N) of a wrench (thesis 4.22, 4.29); 0 for a couple.
 
     Parameters
     ----------
@@ -538,7 +442,6 @@ def wrench_magnitude(wrench) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (...)
-        ``F`` (N).
 
     Examples
     --------
@@ -552,12 +455,10 @@ def wrench_magnitude(wrench) -> np.ndarray:
 
 @documented
 def wrench_axis(wrench):
-    """Direction ``e``, distance ``d`` and normal ``n`` of a wrench's line of action (thesis 4.28-4.32).
+    """Direction ``e = f/F``, distance ``d = τ/F`` and normal ``n`` of a line of action (thesis 4.28-4.32).
 
-    ``e = f/F`` (4.28), ``d = τ_z/F`` (4.31), ``n = (f_y, -f_x)/F`` (4.32);
-    the point of the line nearest the origin is ``n d`` (4.30).  For a pure
-    couple (line at infinity) ``e`` and ``n`` are NaN and ``d`` is ``±inf``
-    (sign of ``τ_z``); for the zero wrench everything is NaN.  No warnings.
+    The point nearest the origin is ``n d`` (4.30).  A couple gives NaN ``e``, ``n`` and
+    ``d = ±inf``; the zero wrench all NaN; no warnings.
 
     Parameters
     ----------
@@ -571,12 +472,8 @@ def wrench_axis(wrench):
 
     Examples
     --------
-    >>> e, d, n = wrench_axis([0.0, 2.0, 4.0])   # vertical force along x = 2
-    >>> e, d, n
+    >>> wrench_axis([0.0, 2.0, 4.0])   # vertical force along x = 2
     (array([0., 1.]), array(2.), array([ 1., -0.]))
-    >>> e, d, n = wrench_axis([0.0, 0.0, -1.0])
-    >>> d
-    array(-inf)
     """
     f = as_vec3(wrench, "wrench")
     ok = np.any(f[..., :2] != 0, axis=-1)
@@ -595,21 +492,17 @@ def wrench_axis(wrench):
 
 @documented
 def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
-    """True where twist and wrench are reciprocal: zero power (thesis 1.9, 5.61, 5.69).
-
-    Geometrically the pole of the twist lies on the line of the wrench.  The
-    test is ``|vᵀf| <= rtol * |v| |f|``.
+    """True where twist and wrench are reciprocal, ``|vᵀf| <= rtol |v| |f|`` (thesis 1.9, 5.61, 5.69).
 
     Parameters
     ----------
     {twist wrench}
     rtol : float, optional
-        Relative tolerance of the zero-power test ``|vᵀf| <= rtol |v| |f|``.
+        Relative tolerance of the zero-power test.
 
     Returns
     -------
     numpy.ndarray of bool, shape (...)
-        Whether the pair is reciprocal.
 
     Examples
     --------
@@ -632,14 +525,7 @@ def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
 @overflow_checked("inertia or point")
 @documented
 def inertia_at(inertia, point) -> np.ndarray:
-    """Inertia expressed at ``point`` (thesis 1.68, parallel axis theorem).
-
-    With ``_A X_B = X_P⁻¹`` (origin ``A``, point ``B = P``), 1.68 reads
-    ``I_P = X_P⁻ᵀ I X_P⁻¹``: twists at ``P`` are taken back to the origin
-    (``X_P⁻¹``), mapped to momenta, and the momenta carried to ``P`` with
-    ``X_P⁻ᵀ`` (4.24).  Consequently ``inertia_at(inertia_matrix(m, c, J), P)
-    == inertia_matrix(m, c - P, J)``.  For a rotation as well see
-    :func:`inertia_transform` (passive) and :func:`inertia_rotated` (active).
+    """Inertia expressed at ``point``: ``X_P⁻ᵀ I X_P⁻¹`` (thesis 1.68, parallel axis theorem).
 
     Parameters
     ----------
@@ -648,7 +534,6 @@ def inertia_at(inertia, point) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
-        ``X_P⁻ᵀ I X_P⁻¹``.
 
     Raises
     ------
@@ -674,28 +559,18 @@ def _congruence(W: np.ndarray, I: np.ndarray) -> np.ndarray:
 @overflow_checked("inertia, theta or point")
 @documented
 def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
-    """Inertia in the frame of :func:`X_frame`: ``I_B = X⁻ᵀ I X⁻¹`` (thesis 1.68).
-
-    With ``_B X_A = X_frame(θ, p)`` (translation to ``p`` then rotation by
-    ``θ``, 1.56 projected), 1.68 reads ``I_B = (_A X_B)ᵀ I_A (_A X_B)`` with
-    ``_A X_B = X⁻¹``, i.e. ``I_B = W I Wᵀ`` with ``W = X_frame_inv_T(θ, p)
-    = rot(θ) X_P⁻ᵀ(p)``.  Twists and wrenches transformed by ``X`` and ``X⁻ᵀ``
-    then give the same momenta and kinetic energy.  ``theta = 0`` is
-    :func:`inertia_at`; for a rigid body ``I_B = inertia_matrix(m, rot₂(θ) (c - p), J)``.
+    """Inertia in the frame of :func:`X_frame`: ``I_B = X⁻ᵀ I X⁻¹`` (thesis 1.68; passive).
 
     Parameters
     ----------
-    inertia : array_like (..., 3, 3)
-        Symmetric positive semi-definite (rigid-body or articulated) inertia.
+    {inertia}
     theta : array_like (...)
         Angle of the new frame (rad).
-    point : array_like (..., 2)
-        Origin of the new frame (m).
+    {point}
 
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
-        ``I_B``.
 
     Raises
     ------
@@ -703,9 +578,6 @@ def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
 
     Examples
     --------
-    A body centred at ``(1, 0)`` seen from a frame at the origin turned by
-    -90° (``θ = 90°``): its centre is at ``(0, 1)`` there.
-
     >>> np.round(inertia_transform(inertia_matrix(2.0, [1.0, 0.0], 0.5), np.pi / 2), 12) + 0.0
     array([[ 2. ,  0. , -2. ],
            [ 0. ,  2. ,  0. ],
@@ -719,29 +591,19 @@ def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
 @overflow_checked("inertia, theta or about")
 @documented
 def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
-    """Inertia of the body turned by ``theta`` about ``about`` (thesis 1.68 with :func:`rotation_about`).
-
-    The active counterpart of :func:`inertia_transform`, matching
-    :meth:`Twist.rotated`: with ``M = rotation_about(θ, c)`` carrying twists,
-    ``I' = M⁻ᵀ I M⁻¹`` so that ``I' (M v) = M⁻ᵀ (I v)`` (the momentum is
-    carried along) and ``½ (M v)ᵀ I' (M v) = ½ vᵀ I v``.  For a rigid body the
-    centre of mass turns about ``c`` and ``m``, ``J`` are unchanged.  About the
-    origin this is ``rot(θ) I rot(θ)ᵀ``, also 1.68 for the pure rotation
-    ``X = rot(θ)`` (:func:`inertia_transform` with ``point = (0, 0)``).
+    """Inertia ``M⁻ᵀ I M⁻¹`` of the body turned by ``theta`` about ``about`` (thesis 1.68; active, ``M`` of :func:`rotation_about`).
 
     Parameters
     ----------
-    inertia : array_like (..., 3, 3)
-        Symmetric positive semi-definite (rigid-body or articulated) inertia.
+    {inertia}
     theta : array_like (...)
         Angle of the rotation (rad), counter-clockwise.
     about : array_like (..., 2), optional
-        Centre of the rotation (default the origin).
+        Centre of the rotation (m).
 
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
-        ``I'``.
 
     Raises
     ------
@@ -749,10 +611,8 @@ def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
 
     Examples
     --------
-    A body centred at ``(2, 0)`` turned by 90° about ``(1, 0)``: centred at ``(1, 1)``.
-
     >>> I = inertia_rotated(inertia_matrix(2.0, [2.0, 0.0], 0.5), np.pi / 2, about=[1.0, 0.0])
-    >>> np.allclose(I, inertia_matrix(2.0, [1.0, 1.0], 0.5))
+    >>> np.allclose(I, inertia_matrix(2.0, [1.0, 1.0], 0.5))       # centred at (1, 1) now
     True
     """
     I = _inertia_psd(inertia)
@@ -764,10 +624,7 @@ def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
 @overflow_checked("inertia or twist")
 @documented
 def momentum(inertia, twist) -> np.ndarray:
-    """Momentum wrench ``p = I v`` (thesis 1.65, 5.72).
-
-    Its line passes through the centre of mass (thesis 1.60) and ``pᵀa`` is the
-    power of the inertial force on ``a`` (5.74).
+    """Momentum wrench ``p = I v`` (thesis 1.65, 5.72); its line passes through the centre of mass.
 
     Parameters
     ----------
@@ -776,16 +633,15 @@ def momentum(inertia, twist) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3)
-        Momentum wrench (kg·m/s, kg·m²/s).
+
+    Raises
+    ------
+    {not_psd}
 
     Examples
     --------
     >>> momentum(inertia_matrix(1.0, [0.0, 0.0], 1.0), [1.0, 0.0, 0.0])
     array([1., 0., 0.])
-
-    Raises
-    ------
-    {not_psd}
     """
     I = _inertia_psd(inertia)
     v = as_vec3(twist, "twist")
@@ -795,45 +651,25 @@ def momentum(inertia, twist) -> np.ndarray:
 
 @overflow_checked("twist, s or qd")
 def kappa(twist, s, qd) -> np.ndarray:
-    """Bias (convective) acceleration ``κ = ṡ q̇`` of a joint with sequential screws (thesis 2.19, 4.61).
+    """Bias acceleration ``κ = ṡ q̇`` of a joint with sequential screws (thesis 2.19, 4.61).
 
-    The columns ``s_1 … s_k`` of ``s`` are *sequential screws* (thesis 2.2):
-    column ``j`` is carried by the parent body and by the motions of the
-    columns ``1 … j-1`` before it, so it moves with the twist
-    ``v + Σ_{l<j} s_l q̇_l`` and (2.14) gives ``ṡ_j = (v + Σ_{l<j} s_l q̇_l) × s_j``.
-    Hence::
-
-        κ = Σ_j (v + Σ_{l<j} s_l q̇_l) × s_j q̇_j
-          = v × s q̇ + Σ_{l<j} (s_l q̇_l) × (s_j q̇_j)
-
-    For one column (and for columns that commute, e.g. two translations) this
-    is the printed ``v × s q̇`` of 2.19/4.61; for a multi-dof joint the printed
-    form drops the cross terms (see ``docs/errata.md``: 4.77, and
-    Kinematics §1, (2.19)/(3.33)).  Agrees with
-    :func:`planargeo.mechanics.kinematics.kinematics` (``Data.kappa``).
+    Column ``j`` of ``s`` moves with ``v + Σ_{l<j} s_l q̇_l``, so
+    ``κ = v × s q̇ + Σ_{l<j} (s_l q̇_l) × (s_j q̇_j)``: the printed 2.19/4.61 for one column; for
+    several the printed form drops the cross terms (``docs/errata.md``, 4.77).
 
     Parameters
     ----------
     twist : array_like (..., 3)
-        Velocity ``v_{λ(i)}`` of the parent body (the one that carries the
-        joint), at the origin.  Passing the body's own velocity
-        ``v_i = v_{λ(i)} + s q̇`` gives the same result, because
-        ``(s q̇) × (s q̇) = 0``.
+        Velocity of the parent body at the origin (the body's own gives the same result).
     s : array_like (..., 3, k) or (..., 3)
-        Joint motion space at the current configuration, columns **in the
-        order the motions are applied** (e.g. slide then turn for
-        :func:`planargeo.mechanics.joints.revolute_prismatic`).  A single axis may be
-        given as a vector; an array whose last two dimensions are ``(3, 3)``
-        is a 3-column motion space.
+        Joint motion space, columns in the order the motions are applied.
     qd : array_like (..., k) or (...)
         Joint speeds, in the order of the columns.
 
     Returns
     -------
     ndarray (..., 3)
-        A translation (zero ``ω``).  For one revolute column it lies along the
-        line joining the poles of ``v`` and ``s`` (thesis 4.53):
-        ``ω q̇ (S - V)`` for normalised poles ``V`` of ``v`` and ``S`` of ``s``.
+        A translation (zero ``ω``).
 
     Raises
     ------
@@ -842,17 +678,8 @@ def kappa(twist, s, qd) -> np.ndarray:
 
     Examples
     --------
-    Revolute joint, thesis 4.66-4.67 (``v_{i-1} = (1, 2, 0.5)``, ``θ̇ = 3``):
-
-    >>> kappa([1.0, 2.0, 0.5], [0.0, 0.0, 1.0], 3.0)
+    >>> kappa([1.0, 2.0, 0.5], [0.0, 0.0, 1.0], 3.0)   # revolute joint, thesis 4.66-4.67
     array([ 6., -3.,  0.])
-
-    Slide along x by ``u = 1.5`` then turn at ``θ̇ = 2`` about the slid pin at
-    ``(0.7, 0)``, parent at rest: the pin's velocity ``u`` turns at ``θ̇``,
-    ``κ = u θ̇ (0, -1)`` (the printed 4.77 gives zero):
-
-    >>> kappa([0.0, 0.0, 0.0], [[1.0, 0.0], [0.0, -0.7], [0.0, 1.0]], [1.5, 2.0])
-    array([ 0., -3.,  0.])
     """
     v = as_vec3(twist, "twist")
     S = as_array(s, "s")
@@ -882,37 +709,26 @@ def kappa(twist, s, qd) -> np.ndarray:
 @overflow_checked("inertia, twist or g")
 @documented
 def bias_force(inertia, twist, g=None) -> np.ndarray:
-    """Bias force ``p = -(v×)ᵀ I v - g`` (thesis 3.11, 4.56, 4.62).
-
-    ``-(v×)ᵀ = v×*`` (:func:`crf`), so this is ``crf(v) @ I @ v - g``.  For a
-    rigid body the velocity part is the centripetal force: a force through the
-    centre of mass pointing towards the pole of ``v`` of magnitude ``m l ω²``
-    (thesis 4.7).
+    """Bias force ``p = -(v×)ᵀ I v - g = crf(v) I v - g`` (thesis 3.11, 4.56, 4.62).
 
     Parameters
     ----------
-    inertia : array_like (..., 3, 3)
-        Inertia at the origin.
-    twist : array_like (..., 3)
-        Velocity twist of the body.
+    {inertia twist}
     g : array_like (..., 3), optional
         External wrench (gravity, loads) at the origin; default zero.
 
     Returns
     -------
     numpy.ndarray, shape (..., 3)
-        The bias wrench (N, N·m).
-
-    Examples
-    --------
-    Body of mass 1 with its centre at (2, 0) spinning about the origin:
-
-    >>> bias_force(inertia_matrix(1.0, [2.0, 0.0], 1.0), [0.0, 0.0, 1.0])   # m l ω² = 2 towards the origin
-    array([-2.,  0.,  0.])
 
     Raises
     ------
     {not_psd}
+
+    Examples
+    --------
+    >>> bias_force(inertia_matrix(1.0, [2.0, 0.0], 1.0), [0.0, 0.0, 1.0])   # m l ω² = 2 towards the origin
+    array([-2.,  0.,  0.])
     """
     I = _inertia_psd(inertia)
     v = as_vec3(twist, "twist")
@@ -929,7 +745,7 @@ def bias_force(inertia, twist, g=None) -> np.ndarray:
 # ---------------------------------------------------------------------------
 
 def _batches(**named) -> tuple:
-    """:func:`planargeo._validate.batch_shape` of arguments not yet converted (as real arrays, named)."""
+    """:func:`planargeo._validate.batch_shape` of arguments not yet converted."""
     return batch_shape(**{k: (as_array(x, k), nd) for k, (x, nd) in named.items()})
 
 
@@ -938,11 +754,7 @@ def _is_number(x) -> bool:
 
 
 class _Held:
-    """Common base of :class:`Twist`, :class:`Wrench` and :class:`planargeo.screws.Inertia`: one read-only array.
-
-    Equal when the arrays are equal.  Notebooks draw a single value with
-    :mod:`planargeo.draw.notebook` (registered by ``import planargeo``); a batch shows its text.
-    """
+    """Common base of :class:`Twist`, :class:`Wrench` and :class:`planargeo.screws.Inertia`: one read-only array."""
 
     __slots__ = ("_array",)
     __hash__ = None
@@ -957,11 +769,10 @@ class _Held:
 
 
 class _Screw(_Held):
-    """Common base of :class:`Twist` and :class:`Wrench` (one read-only ``(..., 3)`` array), written once through the duality.
+    """Common base of :class:`Twist` and :class:`Wrench`, written once through the duality.
 
-    A subclass names itself (``_name``), the matrix ``_carry`` that moves it to another
-    reference point (:func:`X_P` for twists, :func:`X_P_inv_T` for wrenches), its dual
-    kind ``_dual`` and its projective element ``_element`` (class, property, noun).
+    A subclass names itself (``_name``), the matrix ``_carry`` that moves it to another point, its
+    dual kind ``_dual`` and its projective element ``_element`` (class, property, noun).
     """
 
     __slots__ = ()
@@ -1015,18 +826,23 @@ class _Screw(_Held):
     __rmul__ = __mul__
 
     def rotated(self, theta, about=None):
-        """The screw turned by ``theta`` about ``about`` (default the reference point, matrix :func:`rot`).
+        """The screw turned by ``theta`` about ``about`` (default the reference point); power is unchanged.
 
-        Twists are carried by :func:`rotation_about` ``M``, wrenches by
-        ``M⁻ᵀ``, so power is unchanged; about the reference point both are
-        :func:`rot`.  Inertias turn with :meth:`planargeo.screws.inertia.Inertia.rotated`.
+        Parameters
+        ----------
+        theta : float or array_like
+            Angle (rad), counter-clockwise.
+        about : array_like, shape (..., 2), optional
+            Centre of the rotation (m).
+
+        Returns
+        -------
+        Twist or Wrench
 
         Examples
         --------
         >>> Twist.rotation([1.0, 0.0]).rotated(np.pi / 2).pole_xy.round(12)   # the pole turns with it
         array([0., 1.])
-        >>> Wrench.force([2.0, 0.0], [0.0, 1.0]).rotated(np.pi, about=[1.0, 0.0]).line.array.round(12) + 0.0
-        array([ 0., -1.,  0.])
         """
         if about is None:
             M = rot(theta)
@@ -1039,79 +855,70 @@ class _Screw(_Held):
             return self._new(np.einsum("...ij,...j->...i", M, self._array), "rotated")
 
     def at(self, point):
-        """The same screw expressed at ``point``: a twist ``X_P v`` (thesis 4.8), a wrench ``X_P⁻ᵀ f`` (4.24, 4.26).
+        """The same screw at ``point``: a twist ``X_P v`` (thesis 4.8), a wrench ``X_P⁻ᵀ f`` (4.24, 4.26).
 
         Parameters
         ----------
         point : array_like, shape (..., 2)
-            New reference point (m).
+            Reference point ``(x, y)`` (m).
 
         Returns
         -------
         Twist or Wrench
-            The same kind, at ``point``.
 
         Examples
         --------
         >>> Twist.rotation([0.0, 0.0], 1.0).at([2.0, 0.0])   # the point (2, 0) moves up at 2
         Twist([0., 2., 1.])
-        >>> Wrench.force([2.0, 0.0], [0.0, 1.0]).at([2.0, 0.0])   # no moment about a point of the line
-        Wrench([0., 1., 0.])
         """
         with np.errstate(over="ignore", invalid="ignore"):
             return self._new(np.einsum("...ij,...j->...i", self._carry(point), self._array), "at")
 
     @classmethod
     def _coords(cls, x) -> np.ndarray:
-        """The coordinates of ``x``, a screw of this kind or its array (validated, named by the kind)."""
+        """The validated coordinates of ``x``, a screw of this kind or its array."""
         return as_vec3(x.array if isinstance(x, cls) else x, cls._name)
 
     def _pair(self, other) -> tuple:
-        """``(twist, wrench)`` arrays of this screw and ``other``, of the dual kind (a screw or its array)."""
+        """``(twist, wrench)`` arrays of this screw and ``other`` of the dual kind."""
         theirs = self._dual._coords(other)
         return (self._array, theirs) if self._dual is Wrench else (theirs, self._array)
 
     def power(self, other) -> np.ndarray:
-        """Power ``vᵀf`` (thesis 5.73) with ``other``, a screw of the dual kind; also ``v @ f`` (either order).
+        """Power ``vᵀf`` (W; thesis 5.73) with ``other`` of the dual kind; also ``v @ f``.
 
         Parameters
         ----------
-        other : Wrench (of a twist), Twist (of a wrench), or array_like, shape (..., 3)
-            Wrench ``[fx, fy, τz]`` (N, N·m), or twist ``[vx, vy, ω]`` (m/s, rad/s).
+        other : Twist, Wrench or array_like, shape (..., 3)
+            The screw of the dual kind.
 
         Returns
         -------
         numpy.ndarray, shape (...)
-            Power (W): :func:`power` of the twist and the wrench, whichever is this screw.
 
         Examples
         --------
         >>> float(Twist.translation([2.0, 0.0]).power(Wrench.force([0.0, 5.0], [3.0, 0.0])))   # 2 · 3
         6.0
-        >>> float(Wrench.couple(2.0).power(Twist.rotation([5.0, 5.0], 3.0)))   # τ ω
-        6.0
         """
         return power(*self._pair(other))
 
     def reciprocal(self, other, rtol: float = 1e-12) -> np.ndarray:
-        """True where the wrench does no power on the twist (the pole on the line), of this screw and ``other``.
+        """True where this screw and ``other`` of the dual kind do no power (:func:`reciprocal`).
 
         Parameters
         ----------
-        other : Wrench (of a twist), Twist (of a wrench), or array_like, shape (..., 3)
+        other : Twist, Wrench or array_like, shape (..., 3)
             The screw of the dual kind.
         rtol : float, optional
-            Relative tolerance of the zero-power test ``|vᵀf| <= rtol |v| |f|``.
+            Relative tolerance of the zero-power test.
 
         Returns
         -------
         numpy.ndarray of bool, shape (...)
-            Whether the power is zero within ``rtol``.
 
         Examples
         --------
-        >>> bool(Twist.rotation([1.0, 1.0]).reciprocal(Wrench.force([1.0, 0.0], [0.0, 1.0])))  # line x = 1
-        True
         >>> bool(Wrench.couple(1.0).reciprocal(Twist.translation([1.0, 0.0])))   # a couple does no work on a translation
         True
         """
@@ -1139,20 +946,12 @@ class _Screw(_Held):
 
 @documented
 class Twist(_Screw):
-    """A planar velocity (or acceleration) twist ``[vx, vy, ω]`` at the origin (thesis 4.6).
-
-    A twist *is* its pole in homogeneous coordinates (thesis 5.51): ``.pole``
-    returns that point.  The zero twist (no motion) is a legal value but has
-    no pole.  Build one from its coordinates, or by name with :meth:`rotation`
-    and :meth:`translation`; ``.at(P)`` is the same motion at the point ``P``,
-    ``X_P v`` (thesis 4.8).
+    """A planar velocity (or acceleration) twist ``[vx, vy, ω]`` at the origin (thesis 4.6): a point, its pole (5.51).
 
     Parameters
     ----------
     array : array_like, shape (..., 3), or Twist
-        The coordinates ``[vx, vy, ω]`` at the origin: the velocity of the point at the
-        origin (m/s) and the angular velocity (rad/s, counter-clockwise positive); leading
-        dimensions are a batch of twists.  Stored as a read-only copy.
+        ``[vx, vy, ω]`` (m/s, rad/s); leading dimensions are a batch.  Stored read-only.
 
     Raises
     ------
@@ -1161,14 +960,10 @@ class Twist(_Screw):
     Examples
     --------
     >>> v = Twist.rotation([1.0, 2.0], 3.0)
-    >>> v
-    Twist([ 6., -3.,  3.])
-    >>> v.pole_xy
-    array([1., 2.])
+    >>> v, v.pole_xy
+    (Twist([ 6., -3.,  3.]), array([1., 2.]))
     >>> (v + Twist.translation([0.0, 3.0])).pole_xy      # thesis 4.16: P = Q + (u/ω) n
     array([0., 2.])
-    >>> float(v @ Wrench.force([1.0, 2.0], [1.0, 1.0]))  # a force through the pole: no power
-    0.0
     """
 
     __slots__ = ()
@@ -1178,23 +973,22 @@ class Twist(_Screw):
 
     @classmethod
     def rotation(cls, point, omega=1.0) -> "Twist":
-        """Rotation at rate ``omega`` (counter-clockwise positive) about ``point`` (thesis 4.10, 5.51).
+        """Rotation ``omega [y, -x, 1]`` about ``point`` (thesis 4.10, 5.51).
 
         Parameters
         ----------
         point : array_like, shape (..., 2)
-            The pole (m).
+            Reference point ``(x, y)`` (m).
         omega : float or array_like, optional
             Angular velocity (rad/s), counter-clockwise positive.
 
         Returns
         -------
         Twist
-            ``omega * [y, -x, 1]``.
 
         Examples
         --------
-        >>> Twist.rotation([1.0, 0.0], 2.0)      # ω [y, -x, 1]
+        >>> Twist.rotation([1.0, 0.0], 2.0)
         Twist([ 0., -2.,  2.])
         """
         w = as_array(omega, "omega")
@@ -1203,7 +997,7 @@ class Twist(_Screw):
 
     @classmethod
     def translation(cls, velocity) -> "Twist":
-        """Pure translation with linear velocity ``velocity = (vx, vy)`` (a point at infinity).
+        """Pure translation ``[vx, vy, 0]`` (a point at infinity).
 
         Parameters
         ----------
@@ -1213,13 +1007,11 @@ class Twist(_Screw):
         Returns
         -------
         Twist
-            ``[vx, vy, 0]``.
 
         Examples
         --------
-        >>> t = Twist.translation([0.0, 3.0])
-        >>> t, bool(t.is_translation)
-        (Twist([0., 3., 0.]), True)
+        >>> Twist.translation([0.0, 3.0])
+        Twist([0., 3., 0.])
         """
         u = as_xy(velocity, "velocity")
         return cls(np.concatenate([u, np.zeros(u.shape[:-1] + (1,))], axis=-1))
@@ -1248,14 +1040,12 @@ class Twist(_Screw):
 
     @property
     def pole(self):
-        """The pole as a :class:`planargeo.geometry.Point` (the array itself, thesis 5.51).
+        """The pole as a :class:`planargeo.geometry.Point` (thesis 5.51).
 
         Raises
         ------
-        ShapeError
-            If this is a batch of twists.
-        DegenerateGeometryError
-            If the twist is zero.
+        ShapeError, DegenerateGeometryError
+            A batch of twists, or the zero twist.
 
         Examples
         --------
@@ -1267,23 +1057,14 @@ class Twist(_Screw):
 
 @documented
 class Wrench(_Screw):
-    """A planar force wrench ``[fx, fy, τz]`` at the origin (thesis 4.21).
+    """A planar force wrench ``[fx, fy, τz]`` at the origin (thesis 4.21): a line, its line of action (5.56).
 
-    A wrench *is* its line of action (polar) in homogeneous coordinates
-    (thesis 5.56): ``.line`` returns that line.
-
-    Magnitude choice: ``.magnitude`` is ``F = |f|`` (thesis 4.22) also for a
-    pure couple, where it is 0; a couple's strength is its moment ``.moment``
-    (``τz``, the same at every point).  ``.distance`` of a couple is ``±inf``.
-    Build one from its coordinates, or by name with :meth:`force` and :meth:`couple`;
-    ``.at(P)`` is the same load at the point ``P``, ``X_P⁻ᵀ f`` (thesis 4.24, 4.26).
+    ``.magnitude`` is ``F = |f|`` (4.22), 0 for a couple, whose strength is ``.moment``.
 
     Parameters
     ----------
     array : array_like, shape (..., 3), or Wrench
-        The coordinates ``[fx, fy, τz]`` at the origin: the force (N) and its moment about
-        the origin (N m, counter-clockwise positive); leading dimensions are a batch of
-        wrenches.  Stored as a read-only copy.
+        ``[fx, fy, τz]`` (N, N·m); leading dimensions are a batch.  Stored read-only.
 
     Raises
     ------
@@ -1292,10 +1073,8 @@ class Wrench(_Screw):
     Examples
     --------
     >>> f = Wrench.force([0.0, 1.0], [2.0, 0.0])     # horizontal force along y = 1
-    >>> f
-    Wrench([ 2.,  0., -2.])
-    >>> float(f.magnitude), float(f.distance), f.normal
-    (2.0, -1.0, array([ 0., -1.]))
+    >>> f, float(f.distance)
+    (Wrench([ 2.,  0., -2.]), -1.0)
     >>> f + Wrench.couple(2.0)                       # thesis 4.46: shifted by τ/F = 1
     Wrench([2., 0., 0.])
     """
@@ -1307,21 +1086,18 @@ class Wrench(_Screw):
 
     @classmethod
     def force(cls, point, force) -> "Wrench":
-        """Pure force ``force = (fx, fy)`` acting along the line through ``point``.
-
-        The moment at the origin is ``x fy - y fx`` (so that 4.27 holds at ``point``).
+        """Pure force ``(fx, fy)`` along the line through ``point``: ``[fx, fy, x fy - y fx]`` (4.27).
 
         Parameters
         ----------
         point : array_like, shape (..., 2)
-            A point of the line of action (m).
+            Reference point ``(x, y)`` (m).
         force : array_like, shape (..., 2)
             Force ``(fx, fy)`` (N).
 
         Returns
         -------
         Wrench
-            ``[fx, fy, x fy - y fx]``.
 
         Examples
         --------
@@ -1338,7 +1114,7 @@ class Wrench(_Screw):
 
     @classmethod
     def couple(cls, tau) -> "Wrench":
-        """Pure couple of moment ``tau`` (counter-clockwise positive): the line at infinity.
+        """Pure couple ``[0, 0, tau]``: the line at infinity.
 
         Parameters
         ----------
@@ -1348,13 +1124,11 @@ class Wrench(_Screw):
         Returns
         -------
         Wrench
-            ``[0, 0, tau]``.
 
         Examples
         --------
-        >>> c = Wrench.couple(-2.0)
-        >>> c, bool(c.is_couple), float(c.magnitude), float(c.moment)
-        (Wrench([ 0.,  0., -2.]), True, 0.0, -2.0)
+        >>> Wrench.couple(-2.0)
+        Wrench([ 0.,  0., -2.])
         """
         t = as_array(tau, "tau")
         z = np.zeros(t.shape)
@@ -1397,14 +1171,12 @@ class Wrench(_Screw):
 
     @property
     def line(self):
-        """The line of action (polar) as a :class:`planargeo.geometry.Line` (thesis 5.56).
+        """The line of action as a :class:`planargeo.geometry.Line` (thesis 5.56).
 
         Raises
         ------
-        ShapeError
-            If this is a batch of wrenches.
-        DegenerateGeometryError
-            If the wrench is zero.
+        ShapeError, DegenerateGeometryError
+            A batch of wrenches, or the zero wrench.
 
         Examples
         --------
@@ -1442,49 +1214,34 @@ def _single(x, cls, name) -> np.ndarray:
 class TwistSum:
     """Construction of ``v3 = v1 + v2`` (thesis 4.2), for drawing.
 
-    Points and lines are normalised homogeneous arrays in the package's
-    coordinates (:func:`planargeo.geometry.projective.normalize_point` /
-    :func:`~planargeo.geometry.projective.normalize_line`: finite points with ``w = 1``,
-    ideal points and finite lines with unit length, the line at infinity
-    ``[0, 0, ±1]`` keeping the sign of the couple); wrap them with ``Point(...)`` / ``Line(...)`` to draw.  The pole
-    ``P`` of the sum always lies on ``line`` (the join of ``Q1`` and ``Q2``).
+    Points and lines are normalised homogeneous arrays (:func:`planargeo.geometry.projective.normalize_point`,
+    ``normalize_line``); the pole ``P`` of the sum lies on ``line``, the join of ``Q1`` and ``Q2``.
 
     Attributes
     ----------
     v1, v2, sum : Twist
         The two twists and their sum.
     case : str
-        ``"rotations"`` (4.11-4.13), ``"opposite_rotations"`` (``ω1 = -ω2``:
-        a translation perpendicular to ``Q1Q2``, ``beta = inf``),
-        ``"rotation_translation"`` (4.16, always a rotation),
-        ``"translations"`` (sum of the velocities; ``"zero"`` when they cancel).
+        ``"rotations"`` (4.11-4.13), ``"opposite_rotations"`` (``ω1 = -ω2``),
+        ``"rotation_translation"`` (4.16), ``"translations"`` or ``"zero"``.
     Q1, Q2 : ndarray (3,)
-        Poles of ``v1`` and ``v2`` (ideal for translations).
+        Poles of ``v1`` and ``v2``.
     P : ndarray (3,) or None
         Pole of the sum (None for the zero twist).
     omega1, omega2, omega3 : float
         Magnitudes; ``omega3 = omega1 + omega2`` (4.11).
     beta : float or None
-        Lever ratio ``ω2/(ω1+ω2)`` with ``P = Q1 + β (Q2 - Q1)`` (4.12-4.13);
-        ``inf`` for opposite rotations, None when a translation is involved.
+        Lever ratio ``ω2/(ω1+ω2)``, ``P = Q1 + β (Q2 - Q1)`` (4.12-4.13); ``inf`` for opposite rotations.
     rho : float or None
-        Offset ``u/ω`` of 4.16 (rotation + translation), with ``P = Q + ρ n``,
-        ``n`` the translation direction turned by +90°.
+        Offset ``u/ω`` of 4.16: ``P = Q + ρ n``, ``n`` the translation turned by +90°.
     line : ndarray (3,) or None
         Join of ``Q1`` and ``Q2`` (None when they coincide).
 
     Examples
     --------
-    A unit rotation about the origin plus a translation along y at 2
-    (thesis 4.16): a rotation about the pole shifted by ``ρ = u/ω = 2``
-    along ``n = (-1, 0)``, i.e. about ``(-2, 0)``.
-
     >>> c = add_twists(Twist.rotation([0.0, 0.0], 1.0), Twist.translation([0.0, 2.0]))
     >>> c.case, c.rho, c.sum
     ('rotation_translation', 2.0, Twist([0., 2., 1.]))
-    >>> from planargeo.geometry.projective import to_xy
-    >>> to_xy(c.P)
-    array([-2.,  0.])
     """
 
     v1: Twist
@@ -1503,19 +1260,14 @@ class TwistSum:
 
 
 def add_twists(v1, v2, rtol: float = 1e-12) -> TwistSum:
-    """Add two twists and describe the construction (thesis 4.11-4.16).
-
-    Single twists only (a construction is one drawing): a batch raises
-    :class:`~planargeo.errors.ShapeError`; for many sums add the arrays (or
-    ``Twist`` batches) directly.
+    """Add two single twists and describe the construction (thesis 4.11-4.16).
 
     Parameters
     ----------
     v1, v2 : Twist or array_like (3,)
-        Non-zero twists at the origin.
+        Non-zero twists at the origin (a batch raises ShapeError).
     rtol : float
-        The poles count as coincident (``line`` is None) when
-        ``|v1 × v2| <= rtol |v1| |v2|``.
+        The poles coincide (``line`` is None) when ``|v1 × v2| <= rtol |v1| |v2|``.
 
     Returns
     -------
@@ -1526,8 +1278,6 @@ def add_twists(v1, v2, rtol: float = 1e-12) -> TwistSum:
     >>> c = add_twists(Twist.rotation([0.0, 0.0], 1.0), Twist.rotation([4.0, 0.0], 3.0))
     >>> c.case, c.beta, c.P
     ('rotations', 0.75, array([ 0., -3.,  1.]))
-    >>> add_twists(Twist.rotation([0.0, 0.0], 1.0), Twist.rotation([4.0, 0.0], -1.0)).sum
-    Twist([0., 4., 0.])
     """
     a = _single(v1, Twist, "v1")
     b = _single(v2, Twist, "v2")
@@ -1564,22 +1314,17 @@ def _add_twists(a, b, rtol) -> TwistSum:
 
 @dataclass(frozen=True)
 class WrenchSum:
-    """Construction of ``f3 = f1 + f2`` (thesis 4.4), for drawing.
+    """Construction of ``f3 = f1 + f2`` (thesis 4.4), for drawing (arrays as in :class:`TwistSum`).
 
-    Lines and points are normalised homogeneous arrays (see :class:`TwistSum`).
-    The line ``L3`` of the sum always passes through ``P``, the meet of ``L1``
-    and ``L2``.
+    The line ``L3`` of the sum passes through ``P``, the meet of ``L1`` and ``L2``.
 
     Attributes
     ----------
     f1, f2, sum : Wrench
         The two wrenches and their sum.
     case : str
-        ``"concurrent"`` (4.4.1: two forces meeting at ``P``),
-        ``"parallel"`` (4.4.2: lever rule, ``P`` ideal),
-        ``"couple"`` (opposite parallel forces of equal size: a pure couple),
-        ``"force_couple"`` (4.4.3: the force shifted by ``rho = τ/F``),
-        ``"couples"`` (two couples), ``"zero"`` (the sum vanishes).
+        ``"concurrent"`` (4.4.1), ``"parallel"`` (4.4.2, lever rule), ``"couple"`` (equal opposite
+        parallel forces), ``"force_couple"`` (4.4.3), ``"couples"`` or ``"zero"``.
     L1, L2 : ndarray (3,)
         Lines of ``f1`` and ``f2``.
     L3 : ndarray (3,) or None
@@ -1589,24 +1334,17 @@ class WrenchSum:
     F1, F2, F3 : float
         Magnitudes ``|f|`` (4.22, 4.39).
     beta : float or None
-        Lever ratio ``F2/(F1+F2)`` of 4.44 with signed magnitudes along the
-        direction of ``f1`` (parallel case only).
+        Lever ratio ``F2/(F1+F2)`` of 4.44, signed along ``f1`` (parallel case).
     d1, d2, d3 : float or None
-        Signed distances ``τ/F`` from the origin along the normal
-        ``n = (sin λ, -cos λ)`` of ``f1``'s direction ``λ`` (parallel case, 4.43-4.45).
+        Signed distances ``τ/F`` from the origin along ``f1``'s normal (parallel case, 4.43-4.45).
     rho : float or None
-        Shift ``τ/F`` of 4.46 (force + couple), along the force's normal ``n`` (4.32).
+        Shift ``τ/F`` of 4.46 (force + couple), along the force's normal (4.32).
 
     Examples
     --------
-    A unit force along the x axis plus a couple of 2 (thesis 4.46): the force
-    shifted by ``ρ = τ/F = 2`` along ``n = (0, -1)``, onto the line ``y = -2``.
-
     >>> c = add_wrenches(Wrench.force([0.0, 0.0], [1.0, 0.0]), Wrench.couple(2.0))
-    >>> c.case, c.rho, c.L3
+    >>> c.case, c.rho, c.L3                  # onto the line y = -2
     ('force_couple', 2.0, array([1., 0., 2.]))
-    >>> c.sum.line.foot
-    Point(x=0, y=-2)
     """
 
     f1: Wrench
@@ -1628,35 +1366,23 @@ class WrenchSum:
 
 
 def add_wrenches(f1, f2, rtol: float = 1e-12) -> WrenchSum:
-    """Add two wrenches and describe the construction (thesis 4.33-4.46).
+    """Add two single wrenches and describe the construction (thesis 4.33-4.46).
 
-    Two force lines are treated as parallel when
-    ``|f1x f2y - f1y f2x| <= rtol F1 F2``.
-
-    Single wrenches only (a construction is one drawing): ``f1`` and ``f2``
-    must have shape ``(3,)`` (a batch raises :class:`~planargeo.errors.ShapeError`);
-    for many sums add the arrays (or ``Wrench`` batches) directly.
-
-    Note: thesis 4.37 is misprinted (see ``docs/errata.md``); the meet
-    point here is the exact ``L1 × L2``.
+    Thesis 4.37 is misprinted (``docs/errata.md``); the meet here is the exact ``L1 × L2``.
 
     Parameters
     ----------
     f1, f2 : Wrench or array_like, shape (3,)
-        Non-zero wrenches at the origin.
+        Non-zero wrenches at the origin (a batch raises ShapeError).
     rtol : float, optional
-        Tolerance of the parallel test.
+        The lines are parallel when ``|f1x f2y - f1y f2x| <= rtol F1 F2``.
 
     Returns
     -------
     WrenchSum
-        The sum and the construction that draws it (case, meet point, lines).
 
     Examples
     --------
-    >>> c = add_wrenches(Wrench.force([0.0, 0.0], [1.0, 0.0]), Wrench.force([0.0, 2.0], [0.0, 1.0]))
-    >>> c.case, c.P                                   # x-axis meets the y-axis at the origin
-    ('concurrent', array([0., 0., 1.]))
     >>> c = add_wrenches(Wrench.force([0.0, 0.0], [0.0, 1.0]), Wrench.force([4.0, 0.0], [0.0, 3.0]))
     >>> c.case, c.beta, c.d3                          # lever rule: resultant on x = 3
     ('parallel', 0.75, 3.0)
