@@ -1,60 +1,22 @@
 """Subspace decompositions of wrenches, twists and inertias (thesis chapter 6).
 
-A joint's motion space ``s`` (3×k) and reaction space ``R`` (3×(3-k)),
-``sᵀR = 0``, are completed with the help of an inertia ``A`` (a rigid body
-inertia ``I`` or an articulated inertia) into
+A joint's motion space ``s`` (3×k) and reaction space ``R`` (3×(3-k)), ``sᵀR = 0``, are
+completed with an inertia ``A`` (rigid or articulated) into the percussion space
+``T = A s (sᵀAs)⁻¹`` (:func:`T_of`) and the reactive-acceleration space
+``U = A⁻¹R (RᵀA⁻¹R)⁻¹`` (:func:`U_of`), with ``sᵀT = 1``, ``RᵀU = 1``, ``TᵀU = 0`` (6.22, 6.23,
+6.46).  Any wrench splits as ``f = T Q + R μ`` (6.38), any acceleration as ``a = s ψ + U γ``
+(6.44), with ``Q = sᵀf``, ``μ = Uᵀf``, ``ψ = Tᵀa``, ``γ = Rᵀa`` (6.61–6.62).  Arguments: the
+inertia first, then ``s`` before ``R``, then the screw; everything broadcasts over leading
+dimensions, and a ``(3,)`` space is one column.  No matrix is inverted explicitly.
 
-* the *percussion space*            ``T = A s (sᵀ A s)⁻¹``  :func:`T_of`   (6.30, 6.36, 6.39, 6.105)
-* the *reactive-acceleration space* ``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹``  :func:`U_of`   (6.37, 6.45, 6.99; 6.33 misprinted)
-
-with ``sᵀT = 1``, ``RᵀU = 1`` and ``TᵀU = 0`` (6.22, 6.23, 6.46).  Any wrench
-splits as ``f = T Q + R μ`` (6.38) and any acceleration as ``a = s ψ + U γ``
-(6.44), the components being read off by the projections (6.61–6.62)::
-
-    Q = sᵀ f      μ = Uᵀ f      ψ = Tᵀ a      γ = Rᵀ a
-
-``R`` itself is :func:`planargeo.mechanics.joints.R_of` (from a joint's ``s``) or
-:func:`planargeo.mechanics.joints.reaction_space` (from its kind).
-
-**Argument order** (one for the whole package): the inertia first, then the
-spaces (``s`` before ``R``), then the wrench or twist: ``T_of(A, s)``,
-``U_of(A, R)``, ``Decomposition(A, s, R)``, ``effective_mobility(I, s)``.
-
-All functions broadcast over leading dimensions: spaces are ``(..., 3, k)``,
-inertias ``(..., 3, 3)``, wrenches / twists ``(..., 3)``.  A space may also be
-given as a single column of shape ``(3,)``.  No matrix is inverted explicitly:
-everything goes through :func:`numpy.linalg.solve` on the small ``k×k``
-matrices ``sᵀAs`` / ``RᵀA⁻¹R`` (and on ``A`` itself for ``A⁻¹R``); a single
-1×1 ``sᵀAs`` is applied as the LU solve does it, by its reciprocal.
-
-The public functions validate their arguments and call one unchecked kernel
-per quantity (``_T(A, s)``, ``_U(A, R)``, ``_effective_mobility(A, s)``), which the
-chain algorithms call per body on inertias built from checked bodies.  The
-singularity rule (:func:`_gram`, :func:`joint_cond`) lives in the kernels, so it is
-the same everywhere: a joint's ``sᵀAs`` is singular when its condition number
-``‖A‖_F ‖s‖_F² / σ_min(sᵀAs)`` exceeds the package's one limit,
-:data:`planargeo.errors.COND_LIMIT` (``1e12``).  The chain algorithms measure it with
-``A`` and ``s`` at the joint's own point ``P`` (:func:`joint_scale`; invariant under
-moving the whole mechanism: a pendulum pinned 1 km from the origin is as regular as
-one pinned at it); the public functions of this module, which know no joint point,
-at the origin of the coordinates they are given.
-
-Inertia arguments of the public functions must be symmetric
-(:class:`~planargeo.errors.InputError`) and positive semi-definite: an
-eigenvalue below ``-1e-10 max|eigenvalue|`` raises
-:class:`~planargeo.errors.SingularInertiaError` naming the argument.  Singular
-(semi-definite) inertias — point masses, articulated inertias projected across
-a joint — are legitimate wherever only ``sᵀAs`` is inverted
-(:func:`T_of`, :func:`joint_space_inertia`, :func:`effective_mobility`,
-:func:`U_of` with ``s``); the functions that need ``A⁻¹`` (:func:`U_of` without
-``s``, :func:`reaction_space_inverse_inertia`, :func:`effective_base_inertia`,
-:func:`inertia_decomposition`, :func:`inverse_inertia_decomposition`,
-:class:`Decomposition` with ``k < 3``) need it positive definite.
-
-Errors: a singular ``sᵀAs`` or ``RᵀA⁻¹R`` raises
-:class:`~planargeo.errors.SingularConfigurationError`; a singular ``A`` where
-``A⁻¹`` is needed raises :class:`~planargeo.errors.SingularInertiaError`;
-both carry ``.cond``.
+The public functions validate and call unchecked kernels (``_T``, ``_U``,
+``_effective_mobility``), which the chain algorithms call per body.  The one singularity rule
+lives there: ``sᵀAs`` is singular when ``‖A‖_F ‖s‖_F² / σ_min(sᵀAs)`` (:func:`joint_cond`,
+measured at the joint's point by the algorithms, :func:`joint_scale`) exceeds
+:data:`planargeo.errors.COND_LIMIT`; it raises :class:`~planargeo.errors.SingularConfigurationError`,
+a singular ``A`` where ``A⁻¹`` is needed :class:`~planargeo.errors.SingularInertiaError` (both
+with ``.cond``).  Inertias must be symmetric and positive semi-definite; where only ``sᵀAs`` is
+inverted they may be singular (point masses).
 """
 from __future__ import annotations
 
@@ -89,17 +51,17 @@ _parameters = entries({
     "I": "I : array_like, shape (..., 3, 3)\n    Symmetric inertia (rigid or articulated) at the origin.",
     "s": "s : array_like, shape (..., 3, k)\n    Joint motion space (k unit twists as columns).",
     "R": "R : array_like, shape (..., 3, 3-k)\n    Joint reaction space (wrenches reciprocal to ``s``).",
+    "f": "f : array_like, shape (..., 3)\n    Wrench.",
+    "a": "a : array_like, shape (..., 3)\n    Acceleration twist.",
+    "what": "what : str, optional\n    Name of the matrix in the singularity error's message, e.g. ``\"sᵀAs of joint 3\"``.",
 })
 
 
 def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
     """The scale-free condition number of a joint's ``sᵀAs`` (the rule of :data:`planargeo.errors.COND_LIMIT`), as a float.
 
-    ``cond = ‖A_P‖_F ‖s_P‖_F² / σ_min(sᵀAs)`` with the joint's articulated inertia
-    ``A_P`` and motion space ``s_P`` at its own point ``P`` (:func:`joint_scale`;
-    ``sᵀAs`` itself is the same at every point); the joint is singular when
-    ``cond > COND_LIMIT``.  ``‖A_P‖ ‖s_P‖²`` is the size of the products that cancel
-    when ``sᵀAs`` is formed at ``P``.
+    ``cond = ‖A_P‖_F ‖s_P‖_F² / σ_min(sᵀAs)`` with ``A`` and ``s`` at the joint's own point ``P``
+    (:func:`joint_scale`); the joint is singular when ``cond > COND_LIMIT``.
 
     Parameters
     ----------
@@ -122,13 +84,10 @@ def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
 
     Examples
     --------
-    A unit point mass at distance ``d = 1e-6`` from its pivot ``P``:
-    ``sᵀAs = d²``, ``‖A_P‖_F ≈ √2`` (its mass block), ``s_P = [0, 0, 1]``.
+    A unit point mass ``d = 1e-6`` from its pivot: ``sᵀAs = d²``, ``‖A_P‖_F ≈ √2``.
 
     >>> round(joint_cond(1e-12, 2.0 + 1e-24, 1.0) / 1e12, 6)
     1.414214
-    >>> joint_cond(0.0, 2.0, 1.0)
-    inf
     """
     smin, A_norm2, s_norm2 = (as_scalar(x, name) for x, name in
                               ((smin, "smin"), (A_norm2, "A_norm2"), (s_norm2, "s_norm2")))
@@ -141,15 +100,10 @@ def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
 def joint_scale(A, s, point):
     """``‖A_P‖_F ‖s_P‖_F²``: the scale of the rule of :func:`joint_cond` at the joint's point ``P``.
 
-    ``A`` (..., 3, 3) and ``s`` (..., 3, k) are given at the origin and moved to
-    ``P = (x, y)`` (..., 2): twists by ``X = [[1, 0, -y], [0, 1, x], [0, 0, 1]]``
-    (``s_P = X s``, thesis 4.8), the inertia congruently, ``A_P = X⁻ᵀ A X⁻¹`` (1.68,
-    4.58): only its moment row and column change,
-    ``(A_P)_{j2} = A_{j2} + y A_{j0} - x A_{j1}`` for ``j = 0, 1`` and
-    ``(A_P)_22 = A_22 + 2 y A_02 - 2 x A_12 + y² A_00 - 2 x y A_01 + x² A_11``.
-    Scale-safe: where the squares of the entries would overflow or underflow (masses
-    like ``1e160`` or ``1e-170``), the norm is taken of ``A_P`` divided by its largest
-    entry and scaled back (the rule is scale invariant).
+    ``A`` and ``s``, given at the origin, are moved to ``P = (x, y)``: ``s_P = X s`` with
+    ``X = [[1, 0, -y], [0, 1, x], [0, 0, 1]]`` (thesis 4.8), ``A_P = X⁻ᵀ A X⁻¹`` (1.68, 4.58).
+    Where the squares of the entries would leave the float range, the norm is taken of ``A_P``
+    divided by its largest entry and scaled back (the rule is scale invariant).
 
     Parameters
     ----------
@@ -177,8 +131,6 @@ def joint_scale(A, s, point):
     >>> from planargeo.screws.twists import inertia_matrix
     >>> joint_scale(inertia_matrix(1.0, [1000.5, 0.0], 0.0), [0.0, -1000.0, 1.0], [1000.0, 0.0])
     1.6007810593582121
-    >>> round(float(np.sqrt(2 + 2 * 0.25 + 0.0625)), 12)
-    1.600781059358
     """
     A, P = as_array(A, "A", (3, 3)), as_array(point, "point", (2,))
     s = as_array(s, "s")
@@ -258,7 +210,6 @@ def singular_joint_error(i: int, cond: float) -> SingularConfigurationError:
 
     Examples
     --------
-
     >>> str(singular_joint_error(3, 2e12))
     'sᵀAs of joint 3 is singular: the inertia has (almost) nothing along s (condition number 2e+12)'
     """
@@ -319,11 +270,7 @@ def _fro2(x: np.ndarray) -> np.ndarray:
 
 
 def _norm(A: np.ndarray):
-    """Cheap norm ``‖A‖`` of each matrix in a stack: the Frobenius norm (a float for one matrix).
-
-    Within a factor ``√3`` of the 2-norm of a 3×3 matrix, and no eigen-solve:
-    the scale of the singularity rule (:func:`_gram`).
-    """
+    """Cheap norm ``‖A‖`` of each matrix in a stack: the Frobenius norm (a float for one matrix)."""
     if A.ndim == 2:
         return math.sqrt(float(np.vdot(A, A)))
     return np.sqrt(_fro2(A))
@@ -341,13 +288,7 @@ def _check(cond, error, message: str) -> None:
 
 
 def _weighted_gram(X: np.ndarray, AX: np.ndarray, A_norm, scale=None):
-    """``M = Xᵀ (A X)`` (symmetrised) and its scale-free condition number ``‖A‖ ‖X‖² / σ_min(M)``.
-
-    ``σ_min`` is ``|M|`` for a 1×1 ``M``, else from the small ``k×k`` matrix itself;
-    ``scale`` replaces ``‖A‖ ‖X‖²`` where known (the joint's point, :func:`joint_scale`).
-    One joint of one dof runs on Python floats (``M`` is its own transpose); ``cond``
-    is ``inf`` where ``σ_min = 0``.
-    """
+    """``M = Xᵀ (A X)`` (symmetrised) and its condition number ``scale / σ_min(M)``, ``scale`` default ``‖A‖ ‖X‖²``."""
     if X.shape == (3, 1) and AX.ndim == 2:
         M = X.T @ AX
         smin = abs(float(M[0, 0]))     # the rule of joint_cond, without squaring the scale (no overflow)
@@ -377,10 +318,8 @@ def _solve_A(A: np.ndarray, B: np.ndarray, name: str, eig=None) -> np.ndarray:
 def _solve(M: np.ndarray, b: np.ndarray, what: str = "a recursion matrix") -> np.ndarray:
     """``M⁻¹ b`` for one small ``M`` already checked non-singular.
 
-    The caller's cheap condition estimate can pass a matrix that LAPACK still finds
-    exactly singular (a zero pivot after round-off, e.g. masses mixed over 14 decades
-    in the mobility recursion 7.38): that is reported as a SingularConfigurationError
-    with ``cond = inf``, never as numpy's bare LinAlgError.
+    LAPACK may still find it exactly singular (round-off, e.g. masses over 14 decades in 7.38):
+    that is a SingularConfigurationError with ``cond = inf``, not numpy's LinAlgError.
     """
     if M.shape == (1, 1):
         return b / M[0, 0]                  # the LU solve's numbers, without its overhead
@@ -391,11 +330,7 @@ def _solve(M: np.ndarray, b: np.ndarray, what: str = "a recursion matrix") -> np
 
 
 def _right_solve(X: np.ndarray, M: np.ndarray) -> np.ndarray:
-    """``X M⁻¹`` for symmetric ``M`` (..., k, k), as ``(M⁻¹ Xᵀ)ᵀ``.
-
-    A single 1×1 ``M`` multiplies by ``1 / M`` (within an ulp of the LU solve, without its
-    overhead).
-    """
+    """``X M⁻¹`` for symmetric ``M`` (..., k, k); a single 1×1 ``M`` multiplies by ``1 / M``."""
     if M.shape == (1, 1):
         return X * (1.0 / M[0, 0])
     Xt = _tr(X)
@@ -441,33 +376,21 @@ def _combine(X, x, Y, y, names: tuple) -> np.ndarray:
 
 # ----------------------------------------------------------------------------- kernels (unchecked arguments)
 def _gram(A: np.ndarray, s: np.ndarray, point=None):
-    """``(A s, sᵀ A s, cond)``: the joint-space inertia (6.67) and its condition number (:func:`joint_cond`).
-
-    ``point``: the joint's point ``P`` (..., 2), where the rule is measured
-    (:func:`joint_scale`); default the origin of the coordinates.  Never raises: the
-    callers decide (:func:`_checked_gram` raises, ``joint_conditions`` records).
-    """
+    """``(A s, sᵀ A s, cond)`` (6.67, :func:`joint_cond`), the rule measured at ``point`` (default the origin); never raises."""
     As = A @ s
     M, cond = _weighted_gram(s, As, _norm(A), None if point is None else joint_scale(A, s, point))
     return As, M, cond
 
 
 def _checked_gram(A: np.ndarray, s: np.ndarray, what: str, point=None) -> tuple[np.ndarray, np.ndarray]:
-    """``(A s, sᵀ A s)`` of :func:`_gram`, raising SingularConfigurationError (``.cond``) past the limit.
-
-    ``what`` names ``sᵀAs`` in the message, e.g. ``"sᵀAs of joint 3"``.
-    """
+    """``(A s, sᵀ A s)`` of :func:`_gram`, raising SingularConfigurationError past the limit (``what`` names ``sᵀAs``)."""
     As, M, cond = _gram(A, s, point)
     _check(cond, SingularConfigurationError, f"{what} is singular: the inertia has (almost) nothing along s")
     return As, M
 
 
 def _T(A: np.ndarray, s: np.ndarray, what: str = "sᵀAs", gram=None, point=None) -> np.ndarray:
-    """``T = A s (sᵀ A s)⁻¹`` (6.30, 6.36, 6.39, 6.105): the kernel of :func:`T_of`.
-
-    ``gram``: ``_checked_gram(A, s, what, point)`` if already formed; ``point``: the
-    joint's point, where the singularity rule is measured (default the origin).
-    """
+    """``T = A s (sᵀ A s)⁻¹`` (6.30, 6.36, 6.39, 6.105), the kernel of :func:`T_of`; ``gram`` if already formed."""
     if s.shape[-1] == 0:
         return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 0))
     As, M = _checked_gram(A, s, what, point) if gram is None else gram
@@ -475,28 +398,15 @@ def _T(A: np.ndarray, s: np.ndarray, what: str = "sᵀAs", gram=None, point=None
 
 
 def _effective_mobility(A: np.ndarray, s: np.ndarray, what: str = "sᵀIs", gram=None, point=None) -> np.ndarray:
-    """``s Tᵀ A⁻¹ = s (sᵀ A s)⁻¹ sᵀ`` (6.93, 7.31a): the kernel of :func:`effective_mobility`.
-
-    ``gram``, ``point``: as for :func:`_T`.
-    """
+    """``s Tᵀ A⁻¹ = s (sᵀ A s)⁻¹ sᵀ`` (6.93, 7.31a), the kernel of :func:`effective_mobility`."""
     if s.shape[-1] == 0:
         return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 3))
     _, M = _checked_gram(A, s, what, point) if gram is None else gram
     return _right_solve(s, M) @ _tr(s)
 
 
-def _U(A, R: np.ndarray, s=None, T=None, *, name: str = "A", eig=None, what=None) -> np.ndarray:
-    """``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹`` (6.37, 6.45, 6.99): the kernel of :func:`U_of`.
-
-    With ``s`` and ``T = T(A, s)`` the inverse-free ``U = (1 - s Tᵀ) R (RᵀR)⁻¹``
-    (from ``T sᵀ + R Uᵀ = 1``, 6.75, and ``RᵀU = 1``): ``A`` is not used, and may be
-    singular.  Otherwise ``A`` must be invertible (``eig``: its ``(max, min)``
-    |eigenvalue| if known); ``name`` names it in the messages.
-    """
-    if R.shape[-1] == 0:
-        return np.zeros(np.broadcast_shapes(R.shape[:-2], (T if s is not None else A).shape[:-2]) + (3, 0))
-    if s is not None:
-        return _right_solve((np.eye(3) - s @ _tr(T)) @ R, _tr(R) @ R)
+def _reaction_gram(A, R: np.ndarray, name: str, eig=None, what=None):
+    """``(A⁻¹R, RᵀA⁻¹R)``, raising where ``A`` or ``RᵀA⁻¹R`` is singular (``eig``: ``A``'s |eigenvalues|)."""
     eig = _abs_eig(A) if eig is None else eig
     AiR = _solve_A(A, R, name, eig)
     with np.errstate(divide="ignore"):
@@ -504,29 +414,36 @@ def _U(A, R: np.ndarray, s=None, T=None, *, name: str = "A", eig=None, what=None
     M, cond = _weighted_gram(R, AiR, Ainv_norm)
     _check(cond, SingularConfigurationError,
            f"{what or f'Rᵀ{name}⁻¹R'} is singular: the inertia has (almost) nothing along R")
+    return AiR, M
+
+
+def _U(A, R: np.ndarray, s=None, T=None, *, name: str = "A", eig=None, what=None) -> np.ndarray:
+    """``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹`` (6.37, 6.45, 6.99), the kernel of :func:`U_of`; with ``s`` and
+    ``T = T(A, s)`` the inverse-free ``U = (1 - s Tᵀ) R (RᵀR)⁻¹`` (6.75), ``A`` unused."""
+    if R.shape[-1] == 0:
+        return np.zeros(np.broadcast_shapes(R.shape[:-2], (T if s is not None else A).shape[:-2]) + (3, 0))
+    if s is not None:
+        return _right_solve((np.eye(3) - s @ _tr(T)) @ R, _tr(R) @ R)
+    return _right_solve(*_reaction_gram(A, R, name, eig, what))
     return _right_solve(AiR, M)
 
 
 # ----------------------------------------------------------------------------- T and U
 @overflow_checked("A or s")
+@_parameters
 def T_of(A, s, *, what: str | None = None) -> np.ndarray:
     """Percussion (active-force) space ``T = A s (sᵀ A s)⁻¹`` (thesis 6.30, 6.36, 6.39, 6.105).
 
-    The weighted pseudo-inverse of ``s`` (6.26): ``sᵀT = 1`` (6.32) and
-    ``TᵀU = 0`` (6.46).  For a revolute joint its single column is the axis of
-    percussion of the pivot (5.67), scaled so that its moment about the pivot
-    is 1.
+    The weighted pseudo-inverse of ``s`` (6.26): ``sᵀT = 1`` (6.32), ``TᵀU = 0`` (6.46).
+    For a revolute joint its column is the pivot's axis of percussion (5.67).
 
     Parameters
     ----------
     A : array_like, shape (..., 3, 3)
-        Rigid-body or articulated inertia: symmetric positive semi-definite
-        (singular is fine, e.g. a point mass, as long as ``sᵀAs`` is not).
+        Symmetric positive semi-definite inertia (singular is fine if ``sᵀAs`` is not).
     s : array_like, shape (..., 3, k) or (3,)
         Motion space (unit twists at the origin).
-    what : str, optional
-        How ``sᵀAs`` is named in the error message (default ``"sᵀAs"``), e.g.
-        ``"sᵀAs of joint 3"``.
+    {what}
 
     Returns
     -------
@@ -535,55 +452,39 @@ def T_of(A, s, *, what: str | None = None) -> np.ndarray:
     Raises
     ------
     InputError
-        ``A`` is not symmetric (message ``"A must be symmetric, ..."``).
+        ``A`` is not symmetric.
     SingularInertiaError
-        ``A`` has a negative eigenvalue (``"A must be positive semi-definite, ..."``).
+        ``A`` has a negative eigenvalue.
     SingularConfigurationError
-        If ``sᵀAs`` is singular (``A`` has no inertia along ``s``): its
-        scale-free condition number ``‖A‖ ‖s‖² / |λ|_min(sᵀAs)`` (``.cond``;
-        Frobenius norms, no eigen-solve of ``A``), here measured at the origin of
-        the given coordinates, exceeds :data:`planargeo.errors.COND_LIMIT`.
+        ``sᵀAs`` is singular by the rule of :data:`planargeo.errors.COND_LIMIT` (at the origin).
 
     Examples
     --------
     Pinned body of thesis 5.64 (``m = 2``, ``d = 1``, ``ρ² = 1/4``), pinned at the origin:
 
     >>> from planargeo.screws.twists import inertia_matrix
-    >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.5)
-    >>> T_of(I, [0.0, 0.0, 1.0])      # force along y at x = 1/0.8 = d + ρ²/d (5.67)
-    array([[0. ],
-           [0.8],
-           [1. ]])
-    >>> T_of(np.diag([1.0, 1.0, -1.0]), [0.0, 0.0, 1.0])
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.SingularInertiaError: A must be positive semi-definite, got smallest eigenvalue -1 (condition number inf)
+    >>> T_of(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0]).ravel()   # at x = d + ρ²/d (5.67)
+    array([0. , 0.8, 1. ])
     """
     return _T(_inertia(A, "A"), _space(s, "s"), _what(what, "sᵀAs"))
 
 
 @overflow_checked("A or R")
+@_parameters
 def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
     """Reactive-acceleration space ``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹`` (thesis 6.37, 6.45, 6.99; 6.33 corrected).
 
-    The weighted pseudo-inverse of ``R``: ``RᵀU = 1`` (6.35), ``TᵀU = 0`` (6.46).
-    Thesis 6.33 prints ``A⁻¹R (RᵀA⁻¹R)`` without the inverse (see
-    ``docs/errata.md``).
+    ``RᵀU = 1`` (6.35), ``TᵀU = 0`` (6.46); thesis 6.33 omits the inverse (``docs/errata.md``).
 
     Parameters
     ----------
     A : array_like, shape (..., 3, 3)
-        Rigid-body or articulated inertia: symmetric positive semi-definite,
-        and positive definite (invertible) unless ``s`` is given.
+        Symmetric positive semi-definite inertia; definite unless ``s`` is given.
     R : array_like, shape (..., 3, r) or (3,)
         Reaction space (unit wrenches at the origin).
     s : array_like, shape (..., 3, 3 - r), optional
-        The joint's motion space (``sᵀR = 0``).  When given, the inverse-free
-        equivalent ``U = (1 - s Tᵀ) R (RᵀR)⁻¹`` is used (from ``T sᵀ + R Uᵀ = 1``,
-        6.75 / 7.8, and ``RᵀU = 1``): only ``sᵀAs`` must be invertible, so
-        point-mass bodies (singular ``A``) are fine.
-    what : str, optional
-        Name of the matrix in the singularity message.
+        The joint's motion space: then ``U = (1 - s Tᵀ) R (RᵀR)⁻¹`` (6.75), no ``A⁻¹`` needed.
+    {what}
 
     Returns
     -------
@@ -594,23 +495,13 @@ def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
     InputError
         ``A`` is not symmetric, or ``sᵀR ≠ 0``.
     SingularInertiaError
-        ``A`` has a negative eigenvalue, or is singular and ``s`` is not given
-        (``"A must be invertible"``, with ``.cond``).
+        ``A`` has a negative eigenvalue, or is singular and ``s`` is not given.
     SingularConfigurationError
         If ``RᵀA⁻¹R`` (or, with ``s``, ``sᵀAs``) is singular.
 
     Examples
     --------
-    A free unit disc (``m = 1``, ``J = 1`` at the origin) held by a slider along x:
-    the reactive accelerations are pure sliding across (y) and pure spin.
-
-    >>> U_of(np.eye(3), [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])
-    array([[0., 0.],
-           [1., 0.],
-           [0., 1.]])
-
-    A unit point mass at (1, 0) pinned at the origin (``A`` singular): with
-    ``s`` the inverse-free form applies (thesis 7.40 with ``ρ = 0``).
+    A unit point mass at (1, 0) pinned at the origin (``A`` singular, thesis 7.40 with ``ρ = 0``):
 
     >>> from planargeo.screws.twists import inertia_matrix
     >>> from planargeo.mechanics.joints import revolute
@@ -638,14 +529,11 @@ def active_force(s, f) -> np.ndarray:
 
     Parameters
     ----------
-    {s}
-    f : array_like, shape (..., 3)
-        Wrench.
+    {s f}
 
     Returns
     -------
     numpy.ndarray, shape (..., k)
-        ``Q = sᵀ f``.
 
     Examples
     --------
@@ -656,49 +544,37 @@ def active_force(s, f) -> np.ndarray:
 
 
 @overflow_checked("U or f")
+@_parameters
 def reaction_force(U, f) -> np.ndarray:
     """Reaction-force components ``μ = Uᵀ f`` (thesis 6.61b, 6.54).
 
     Parameters
     ----------
     U : array_like, shape (..., 3, 3-k)
-        The joint's ``U = I⁻¹R (RᵀI⁻¹R)⁻¹`` (:func:`U_of`, 6.37).
-    f : array_like, shape (..., 3)
-        Wrench.
+        The joint's reactive-acceleration space (:func:`U_of`).
+    {f}
 
     Returns
     -------
     numpy.ndarray, shape (..., 3-k)
-        ``μ = Uᵀ f``.
-
-    Examples
-    --------
-    >>> reaction_force(np.eye(3)[:, :2], [1.0, 2.0, 3.0])
-    array([1., 2.])
     """
     return _components(U, f, "Uf")
 
 
 @overflow_checked("T or a")
+@_parameters
 def active_acceleration(T, a) -> np.ndarray:
     """Active (absolute joint) acceleration ``ψ = Tᵀ a`` (thesis 6.62b, 6.57).
 
     Parameters
     ----------
     T : array_like, shape (..., 3, k)
-        The joint's ``T = I s (sᵀIs)⁻¹`` (:func:`T_of`, 6.36).
-    a : array_like, shape (..., 3)
-        Acceleration twist.
+        The joint's percussion space (:func:`T_of`).
+    {a}
 
     Returns
     -------
     numpy.ndarray, shape (..., k)
-        ``ψ = Tᵀ a``.
-
-    Examples
-    --------
-    >>> active_acceleration([0.0, 0.8, 1.0], [0.0, 0.0, 2.0])
-    array([2.])
     """
     return _components(T, a, "Ta")
 
@@ -710,19 +586,11 @@ def reactive_acceleration(R, a) -> np.ndarray:
 
     Parameters
     ----------
-    {R}
-    a : array_like, shape (..., 3)
-        Acceleration twist.
+    {R a}
 
     Returns
     -------
     numpy.ndarray, shape (..., 3-k)
-        ``γ = Rᵀ a``.
-
-    Examples
-    --------
-    >>> reactive_acceleration([[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]], [0.0, 0.0, 2.0])  # pin at origin
-    array([0., 0.])
     """
     return _components(R, a, "Ra")
 
@@ -733,8 +601,7 @@ def reactive_acceleration(R, a) -> np.ndarray:
 def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     """The complementary wrench projectors ``(T sᵀ, R Uᵀ)``, summing to 1 (thesis 6.75).
 
-    ``T sᵀ f`` is the active part ``T Q`` of a wrench, ``R Uᵀ f`` its reaction
-    part ``R μ`` (6.38, 6.61).
+    ``T sᵀ f = T Q`` is the active part of a wrench, ``R Uᵀ f = R μ`` its reaction part (6.38, 6.61).
 
     Parameters
     ----------
@@ -748,9 +615,9 @@ def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     Examples
     --------
     >>> P_act, P_rea = wrench_projectors(np.eye(3), [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
-    >>> P_act + P_rea
-    array([[1., 0., 0.],
-           [0., 1., 0.],
+    >>> P_act
+    array([[0., 0., 0.],
+           [0., 0., 0.],
            [0., 0., 1.]])
     """
     d = Decomposition(A, s, R)
@@ -760,10 +627,9 @@ def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 @overflow_checked("A or s or R")
 @_parameters
 def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
-    """The complementary twist projectors ``(s Tᵀ, U Rᵀ)``, summing to 1: the transposes of :func:`wrench_projectors` (dual of thesis 6.75).
+    """The twist projectors ``(s Tᵀ, U Rᵀ)``: the transposes of :func:`wrench_projectors` (dual of thesis 6.75).
 
-    ``s Tᵀ a = s ψ`` is the joint part of an acceleration, ``U Rᵀ a = U γ``
-    its reactive part (6.44, 6.62; ``U Rᵀ`` is the projection of 6.108).
+    ``s Tᵀ a = s ψ`` is the joint part of an acceleration, ``U Rᵀ a = U γ`` its reactive part (6.44, 6.62).
 
     Parameters
     ----------
@@ -772,20 +638,7 @@ def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     Returns
     -------
     tuple of numpy.ndarray, each shape (..., 3, 3)
-        ``(s Tᵀ, U Rᵀ)``, the transposes of ``(T sᵀ, R Uᵀ)``: power is the same split either way.
-
-    Examples
-    --------
-    A pin at the origin: the joint part of an acceleration is its rotation about the pin.
-
-    >>> A, s, R = np.eye(3), [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]]
-    >>> P_joint, P_react = twist_projectors(A, s, R)
-    >>> P_joint
-    array([[0., 0., 0.],
-           [0., 0., 0.],
-           [0., 0., 1.]])
-    >>> all(np.array_equal(P.T, W) for P, W in zip(twist_projectors(A, s, R), wrench_projectors(A, s, R)))
-    True
+        ``(s Tᵀ, U Rᵀ)``.
     """
     return tuple(_tr(P) for P in wrench_projectors(A, s, R))     # (T sᵀ)ᵀ, (R Uᵀ)ᵀ: the duality
 
@@ -794,9 +647,7 @@ def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 @overflow_checked("I or s")
 @_parameters
 def joint_space_inertia(I, s) -> np.ndarray:
-    """Joint-space inertia ``sᵀ I s`` (thesis 6.67, 6.74c): ``Q = (sᵀIs) ψ``.
-
-    ``I`` may be singular (the module docstring gives the errors).
+    """Joint-space inertia ``sᵀ I s`` (thesis 6.67, 6.74c): ``Q = (sᵀIs) ψ``; ``I`` may be singular.
 
     Parameters
     ----------
@@ -805,7 +656,6 @@ def joint_space_inertia(I, s) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., k, k)
-        ``sᵀ I s``.
 
     Examples
     --------
@@ -821,9 +671,7 @@ def joint_space_inertia(I, s) -> np.ndarray:
 @overflow_checked("I or R")
 @_parameters
 def reaction_space_inverse_inertia(I, R) -> np.ndarray:
-    """Reaction-space inverse inertia ``Rᵀ I⁻¹ R`` (thesis 6.71): ``γ = (RᵀI⁻¹R) μ``.
-
-    Computed with a solve, not an explicit inverse; ``I`` must be positive definite.
+    """Reaction-space inverse inertia ``Rᵀ I⁻¹ R`` (thesis 6.71): ``γ = (RᵀI⁻¹R) μ``; ``I`` definite.
 
     Parameters
     ----------
@@ -832,12 +680,6 @@ def reaction_space_inverse_inertia(I, R) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3-k, 3-k)
-        ``Rᵀ I⁻¹ R``.
-
-    Examples
-    --------
-    >>> reaction_space_inverse_inertia(np.diag([2.0, 2.0, 1.0]), [[1.0], [0.0], [0.0]])
-    array([[0.5]])
     """
     I, eig = _inertia_eig(I, "I")
     R = _space(R, "R")
@@ -847,13 +689,9 @@ def reaction_space_inverse_inertia(I, R) -> np.ndarray:
 @overflow_checked("I or s or R")
 @_parameters
 def inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
-    """Split an inertia as ``I = T sᵀ I + R Uᵀ I`` (thesis 6.76).
+    """Split an inertia as ``I = T sᵀ I + R Uᵀ I`` (thesis 6.76); errors as for :class:`Decomposition`.
 
-    ``T sᵀ I a`` is the force accelerating the joint's moving part, ``R Uᵀ I a``
-    the (reaction) force accelerating its base; the second term is the
-    effective inertia of the joint base (6.97), see :func:`effective_base_inertia`.
-    ``I`` must be symmetric positive definite (``U`` needs ``I⁻¹``) unless
-    the joint is free (``k = 3``); errors as for :class:`Decomposition`.
+    The second part is the effective inertia of the joint base (6.97, :func:`effective_base_inertia`).
 
     Parameters
     ----------
@@ -862,14 +700,6 @@ def inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     Returns
     -------
     (ndarray, ndarray), each shape (..., 3, 3)
-
-    Examples
-    --------
-    >>> from planargeo.screws.twists import inertia_matrix
-    >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.5)
-    >>> Ia, Ib = inertia_decomposition(I, [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
-    >>> np.allclose(Ia + Ib, I)
-    True
     """
     d = Decomposition(I, s, R, name="I")
     return d.T @ _tr(d.s) @ d.A, d.R @ _tr(d.U) @ d.A
@@ -878,13 +708,7 @@ def inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
 @overflow_checked("I or s or R")
 @_parameters
 def inverse_inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
-    """Split an inverse inertia as ``I⁻¹ = s Tᵀ I⁻¹ + U Rᵀ I⁻¹`` (thesis 6.79–6.81).
-
-    ``s Tᵀ I⁻¹ f`` is the motion of the joint produced by a wrench ``f`` (the
-    effective mobility of a constrained body, 6.93), ``U Rᵀ I⁻¹ f`` the motion
-    of the joint base (6.81).  Both parts are symmetric:
-    ``s Tᵀ I⁻¹ = s (sᵀIs)⁻¹ sᵀ`` and ``U Rᵀ I⁻¹ = I⁻¹R (RᵀI⁻¹R)⁻¹ RᵀI⁻¹``.
-    ``I`` must be symmetric positive definite; errors as for :class:`Decomposition`.
+    """Split an inverse inertia as ``I⁻¹ = s Tᵀ I⁻¹ + U Rᵀ I⁻¹`` (thesis 6.79–6.81); both parts symmetric.
 
     Parameters
     ----------
@@ -894,15 +718,6 @@ def inverse_inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     -------
     tuple of numpy.ndarray, each shape (..., 3, 3)
         ``(s Tᵀ I⁻¹, U Rᵀ I⁻¹)``.
-
-    Examples
-    --------
-    >>> Ma, Mb = inverse_inertia_decomposition(np.diag([2.0, 2.0, 4.0]), [0.0, 0.0, 1.0],
-    ...                                        [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
-    >>> Ma + Mb
-    array([[0.5 , 0.  , 0.  ],
-           [0.  , 0.5 , 0.  ],
-           [0.  , 0.  , 0.25]])
     """
     d = Decomposition(I, s, R, name="I")
     IiR = _solve_A(d.A, d.R, "I")
@@ -914,30 +729,22 @@ def inverse_inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
 def effective_mobility(I, s, *, what: str | None = None) -> np.ndarray:
     """Effective inverse inertia of a joint-constrained body ``s Tᵀ I⁻¹ = s (sᵀIs)⁻¹ sᵀ`` (thesis 6.93).
 
-    A body at rest held by the joint and loaded by a wrench ``f`` accelerates
-    by ``a = s Tᵀ I⁻¹ f`` (with ``f`` the wrench *applied to* the body; the
-    thesis's 6.83–6.93 carry a minus sign because their ``f`` is the wrench the
-    body transmits, like ``f_{i+1}`` in 6.102).  No inverse of ``I`` is needed:
-    ``I`` may be singular, ``sᵀIs`` may not.
+    A body at rest loaded by the wrench ``f`` accelerates by ``a = s Tᵀ I⁻¹ f``
+    (``f`` applied to the body: the thesis's minus sign, ``docs/errata.md``).
 
     Parameters
     ----------
-    {I s}
-    what : str, optional
-        Name of ``sᵀIs`` in the singularity error's message.
+    {I s what}
 
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
-        ``s (sᵀIs)⁻¹ sᵀ``.
 
     Examples
     --------
     >>> from planargeo.screws.twists import inertia_matrix
-    >>> effective_mobility(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0])
-    array([[0. , 0. , 0. ],
-           [0. , 0. , 0. ],
-           [0. , 0. , 0.4]])
+    >>> effective_mobility(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0])[2]
+    array([0. , 0. , 0.4])
     """
     return _effective_mobility(_inertia(I, "I"), _space(s, "s"), _what(what, "sᵀIs"))
 
@@ -945,12 +752,9 @@ def effective_mobility(I, s, *, what: str | None = None) -> np.ndarray:
 @overflow_checked("I or R")
 @_parameters
 def effective_base_inertia(I, R) -> np.ndarray:
-    """Effective inertia of the joint base ``R Uᵀ I = R (RᵀI⁻¹R)⁻¹ Rᵀ`` (thesis 6.97).
+    """Effective inertia of the joint base ``R Uᵀ I = R (RᵀI⁻¹R)⁻¹ Rᵀ`` (thesis 6.97); ``I`` definite.
 
-    The reaction force needed to give the joint base the acceleration ``a``
-    when the joint transmits no active force: ``f = R Uᵀ I a``.  This is the
-    projection the articulated-body recursion adds to the parent (6.76, chapter 7).
-    ``I`` must be positive definite.
+    The projection the articulated-body recursion adds to the parent (6.76, chapter 7).
 
     Parameters
     ----------
@@ -959,21 +763,13 @@ def effective_base_inertia(I, R) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
-        ``R (RᵀI⁻¹R)⁻¹ Rᵀ`` (zero for an empty ``R``).
-
-    Examples
-    --------
-    >>> effective_base_inertia(np.diag([2.0, 2.0, 4.0]), [[0.0], [0.0], [1.0]])   # only a couple: J
-    array([[0., 0., 0.],
-           [0., 0., 0.],
-           [0., 0., 4.]])
+        Zero for an empty ``R``.
     """
     I, eig = _inertia_eig(I, "I")
     R = _space(R, "R")
     if R.shape[-1] == 0:                                # no reaction (a plane joint): nothing is transmitted
         return np.zeros(np.broadcast_shapes(I.shape, R.shape[:-2] + (3, 3)))
-    M, cond = _weighted_gram(R, _solve_A(I, R, "I", eig), 1.0 / eig[1])
-    _check(cond, SingularConfigurationError, "RᵀI⁻¹R is singular: the inertia has (almost) nothing along R")
+    _, M = _reaction_gram(I, R, "I", eig)
     return _right_solve(R, M) @ _tr(R)
 
 
@@ -984,8 +780,7 @@ class Decomposition:
     Parameters
     ----------
     A : array_like, shape (..., 3, 3)
-        Body or articulated inertia: symmetric positive semi-definite, and
-        positive definite (invertible) when ``k < 3`` (``U`` needs ``A⁻¹``).
+        Body or articulated inertia: symmetric positive semi-definite; definite when ``k < 3``.
     s : array_like, shape (..., 3, k) or (3,)
         Motion space.
     R : array_like, shape (..., 3, 3 - k)
@@ -998,8 +793,7 @@ class Decomposition:
     InputError
         ``A`` not symmetric, or ``sᵀR ≠ 0``.
     SingularInertiaError
-        ``A`` has a negative eigenvalue (``"A must be positive semi-definite"``),
-        or is singular when ``k < 3`` (``"A must be invertible"``, with ``.cond``).
+        ``A`` has a negative eigenvalue, or is singular when ``k < 3`` (with ``.cond``).
     SingularConfigurationError
         ``sᵀAs`` or ``RᵀA⁻¹R`` singular.
 
@@ -1014,15 +808,17 @@ class Decomposition:
 
     Examples
     --------
+    A pendulum (m = 2, centre of mass at (1, 0), J = 0.5) pinned at the origin:
+    ``T = [0, 0.8, 1]`` is the wrench of unit joint torque, its line the axis of percussion.
+
     >>> from planargeo.mechanics.joints import revolute
     >>> from planargeo.screws.twists import inertia_matrix
-    >>> j = revolute((0.0, 0.0))
-    >>> dec = Decomposition.from_joint(inertia_matrix(2.0, [1.0, 0.0], 0.5), j)
+    >>> dec = Decomposition.from_joint(inertia_matrix(2.0, [1.0, 0.0], 0.5), revolute((0.0, 0.0)))
+    >>> dec.T.ravel(), dec.U[:, 1]
+    (array([0. , 0.8, 1. ]), array([ 0. ,  1. , -0.8]))
     >>> Q, mu = dec.split_wrench([0.0, 1.0, 2.0])
-    >>> Q, mu
-    (array([2.]), array([ 0. , -0.6]))
-    >>> dec.join_wrench(Q, mu)
-    array([0., 1., 2.])
+    >>> Q, mu, dec.join_wrench(Q, mu)
+    (array([2.]), array([ 0. , -0.6]), array([0., 1., 2.]))
     """
 
     __slots__ = ("A", "s", "R", "T", "U")
@@ -1037,13 +833,13 @@ class Decomposition:
         self.U = _U(A, R, name=name, eig=eig)
 
     @classmethod
+    @_parameters
     def from_joint(cls, A, joint, *, name: str = "A") -> "Decomposition":
         """Build from a :class:`planargeo.mechanics.joints.JointSpace` (its ``s`` and ``R``, thesis 5.63, 6.1).
 
         Parameters
         ----------
-        A : array_like, shape (..., 3, 3)
-            Symmetric positive definite (articulated) inertia at the origin.
+        {A}
         joint : JointSpace
             The joint.
         name : str, optional
@@ -1053,12 +849,6 @@ class Decomposition:
         -------
         Decomposition
             ``Decomposition(A, joint.s, joint.R)``.
-
-        Examples
-        --------
-        >>> from planargeo.mechanics.joints import revolute
-        >>> Decomposition.from_joint(np.eye(3), revolute((0.0, 0.0))).T.ravel()   # a unit disc: T = s
-        array([0., 0., 1.])
         """
         return cls(A, joint.s, joint.R, name=name)
 
@@ -1074,21 +864,6 @@ class Decomposition:
         -------
         tuple of numpy.ndarray
             ``Q`` (..., k) and ``μ`` (..., 3-k).
-
-        Examples
-        --------
-        A pendulum (m = 2, centre of mass at (1, 0), J = 0.5 about it) on a
-        revolute joint at the origin, loaded by a unit couple: the joint
-        torque is ``Q = sᵀf = 1``; the body turns at ``α = 1 / (J + m d²) = 0.4``,
-        its centre of mass accelerates by (0, 0.4), which takes the force
-        (0, 0.8) of ``T Q = [0, 0.8, 1]``; the pivot supplies the rest,
-        ``μ = (0, -0.8)`` (unit forces along x and y through the pivot).
-
-        >>> from planargeo.mechanics.joints import revolute
-        >>> from planargeo.screws.twists import inertia_matrix
-        >>> dec = Decomposition.from_joint(inertia_matrix(2.0, [1.0, 0.0], 0.5), revolute((0.0, 0.0)))
-        >>> dec.split_wrench([0.0, 0.0, 1.0])
-        (array([1.]), array([ 0. , -0.8]))
         """
         f = _vec(f, "f")
         return _tmul(self.s, f), _tmul(self.U, f)
@@ -1107,20 +882,6 @@ class Decomposition:
         -------
         numpy.ndarray, shape (..., 3)
             ``f``.
-
-        Examples
-        --------
-        The pendulum of :meth:`split_wrench`: ``T = [0, 0.8, 1]`` (the wrench
-        of unit joint torque) plus the pivot's force (0, -0.8) through the
-        origin is the unit couple again.
-
-        >>> from planargeo.mechanics.joints import revolute
-        >>> from planargeo.screws.twists import inertia_matrix
-        >>> dec = Decomposition.from_joint(inertia_matrix(2.0, [1.0, 0.0], 0.5), revolute((0.0, 0.0)))
-        >>> dec.T.ravel()
-        array([0. , 0.8, 1. ])
-        >>> dec.join_wrench([1.0], [0.0, -0.8]) + 0.0
-        array([0., 0., 1.])
         """
         return _combine(self.T, Q, self.R, mu, ("Q", "mu"))
 
@@ -1139,17 +900,13 @@ class Decomposition:
 
         Examples
         --------
-        The pendulum of :meth:`split_wrench` translated upwards at unit
-        acceleration: ``γ = Rᵀa = (0, 1)`` is the pivot's acceleration.  With
-        no joint torque the pivot's push would turn the body at
-        ``-m d / (J + m d²) = -0.8`` (``U γ = [0, 1, -0.8]``); ``ψ = 0.8`` is
-        the joint acceleration that cancels that turn.
+        A unit disc pinned at its centre, translated upwards: no joint acceleration.
 
-        >>> from planargeo.mechanics.joints import revolute
-        >>> from planargeo.screws.twists import inertia_matrix
-        >>> dec = Decomposition.from_joint(inertia_matrix(2.0, [1.0, 0.0], 0.5), revolute((0.0, 0.0)))
+        >>> dec = Decomposition(np.eye(3), [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
         >>> dec.split_twist([0.0, 1.0, 0.0])
-        (array([0.8]), array([0., 1.]))
+        (array([0.]), array([0., 1.]))
+        >>> dec.join_twist([0.0], [0.0, 1.0])
+        array([0., 1., 0.])
         """
         a = _vec(a, "a")
         return _tmul(self.T, a), _tmul(self.R, a)
@@ -1168,23 +925,6 @@ class Decomposition:
         -------
         numpy.ndarray, shape (..., 3)
             ``a``.
-
-        Examples
-        --------
-        The pendulum of :meth:`split_twist`: the reactive acceleration of a
-        unit upward push on the pivot, ``U[:, 1] = [0, 1, -0.8]``, plus the
-        joint's ``s ψ = [0, 0, 0.8]`` is the pure translation; a joint
-        acceleration alone is a rotation about the pivot.
-
-        >>> from planargeo.mechanics.joints import revolute
-        >>> from planargeo.screws.twists import inertia_matrix
-        >>> dec = Decomposition.from_joint(inertia_matrix(2.0, [1.0, 0.0], 0.5), revolute((0.0, 0.0)))
-        >>> dec.U[:, 1]
-        array([ 0. ,  1. , -0.8])
-        >>> dec.join_twist([0.8], [0.0, 1.0]) + 0.0
-        array([0., 1., 0.])
-        >>> dec.join_twist([1.0], [0.0, 0.0])
-        array([0., 0., 1.])
         """
         return _combine(self.s, psi, self.U, gamma, ("psi", "gamma"))
 
