@@ -1,43 +1,15 @@
 """The :class:`Explorer` base class shared by every interactive explorer.
 
-An explorer is a scene made interactive: controls (described as data: :class:`Step`,
-:class:`~planargeo.widgets.controls.Choice`, :class:`~planargeo.widgets.controls.Toggle`),
-``compute(values) -> state`` (the scene's numbers), ``scene_picture(state) -> Picture``
-(:mod:`planargeo.draw.picture`: what is drawn, every element with its id, role, symbol and
-description) and ``readout_of(state)`` (the numbers shown), handles to drag and an optional
-Play step.  The base does the rest, in parts with one job each:
-
-* :mod:`planargeo.widgets.controls`: controls as data and the checks of their values;
-* :mod:`planargeo.widgets.handles`: handles and drags (the page's checked drag message);
-* :mod:`planargeo.widgets.play`: Play at true real time, in sub-steps, paced by the page;
-* :mod:`planargeo.widgets.export`: SVG, PNG, GIF and MP4 files and download links;
-* :mod:`planargeo.widgets.front`: the picture, the widgets, readout and messages;
-* this module: the explorer's state, its updates and refusals.
-
-Front ends (``display``): ``"page"`` (the browser draws the picture:
-:mod:`planargeo.widgets.canvas`; the default, ``"auto"``), ``"image"`` (a PNG of the
-picture, drawn by :mod:`planargeo.draw.render`) and ``"agg"`` (nothing shown: tests,
-benchmarks; the picture is built when asked, :meth:`Explorer.picture`).  No matplotlib
-figure: the picture is the one description of what is shown, and matplotlib draws it only
-for files (exports, the static image stored in a notebook).
-
-One consistent state.  The controls, the picture and the readout always show the state last
-computed.  A value that cannot be shown is *refused*: a control set to NaN, out of its
-range, to ``None`` or to no option of its list, or a combination the scene cannot compute
-(any :class:`~planargeo.errors.PlanargeoError`).  The message names the refused control and
-the reason, the controls return to the shown values, and picture and readout stay as they
-were.  No exception ever escapes a callback.  Controls listed in
-:attr:`Explorer.display_controls` change only what is drawn: no recompute.
-
-Programmatic use (tests, notebooks)::
-
-    ex.controls["angle"].value = 0.3     # triggers one update
-    ex.readout_values["distance"]        # the numbers shown in the readout
-    ex.message                           # "" when all is well
-    ex.picture()                         # what is drawn, as plain data
-    with ex.hold():                      # several changes, one update
-        ex.controls["a"].value = 1.0
-        ex.controls["b"].value = 2.0
+An explorer is a scene made interactive: controls as data (:class:`Step`, :class:`Choice`,
+:class:`Toggle`), ``compute(values) -> state``, ``scene_picture(state) -> Picture`` and
+``readout_of(state)``, handles to drag and an optional Play step.  The parts, one job each:
+:mod:`~planargeo.widgets.controls` (controls and their checks), :mod:`~planargeo.widgets.handles`
+(drags), :mod:`~planargeo.widgets.play` (Play), :mod:`~planargeo.widgets.export` (files),
+:mod:`~planargeo.widgets.front` (picture, widgets, readout); this module: the state, its updates
+and refusals.  Displays: ``"page"`` (the browser draws the picture; the default ``"auto"``),
+``"image"`` (a PNG) and ``"agg"`` (nothing shown: tests).  A value that cannot be shown is
+*refused*: the message names the control and the reason, and controls, picture and readout stay
+on the last computed state; no exception escapes a callback.
 
 Examples
 --------
@@ -92,18 +64,11 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
     * :meth:`compute` ``(values, changed) -> state``: may raise PlanargeoError,
     * :meth:`scene_picture` ``(state, view) -> Picture``: what is drawn,
     * :meth:`readout_of` ``(state) -> dict``: the numbers shown,
-    * optionally :meth:`handles`, :meth:`play_step`, :meth:`adjust` (controls that
-      follow others, set with them, refused with them), :meth:`disabled`,
+    * optionally :meth:`handles`, :meth:`play_step`, :meth:`adjust`, :meth:`disabled`,
       :meth:`explain` and :meth:`focus_options`.
 
-    Controls named in :attr:`display_controls` change the drawing only: a change
-    of those alone re-renders the shown state without calling
-    :meth:`compute` (:attr:`n_computes` counts the calls).
-
-    Every update either shows a new state (controls, picture and readout all
-    of it) or is refused as a whole (module docstring): :attr:`shown_values`
-    are the control values of the state on show, equal to :attr:`values`
-    whenever no callback is running.
+    Controls in :attr:`display_controls` change the drawing only (no :meth:`compute`).
+    :attr:`shown_values` are the control values of the state on show.
 
     Parameters
     ----------
@@ -114,14 +79,12 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
     export_dir : str or Path, optional
         Where *Export SVG* writes (default: the current directory).
     **values
-        Initial control values overriding the defaults (they also become the
-        values *Reset* returns to).
+        Initial control values overriding the defaults (and *Reset*'s).
 
     Raises
     ------
     InputError
-        An unknown control or display, or an initial value the control does not
-        take (:func:`check_control`).
+        An unknown control or display, or an initial value the control does not take.
     PlanargeoError
         The initial values describe a state that cannot be computed.
     """
@@ -134,7 +97,6 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
 
     #: Picture size (inches) and resolution (pixels per inch) of the picture and its images.
     figsize: tuple[float, float] = (6.0, 5.0)
-
     dpi: int = EXPLORER_DPI
 
     #: Controls that only change what is drawn (no recompute when only they change).
@@ -146,12 +108,10 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
 
     #: Scene length scale: readout numbers below ``zero_tol * scale`` print as 0 (round-off).
     scale: float = 1.0
-
     zero_tol: float = 1e-9
 
     #: Frames per second of Play and of exported animations (``dt = speed / play_fps``).
     play_fps: int = 20
-
 
     #: Simulated seconds per wall-clock second at Play speed "1×" (shown beside the speed menu when not 1).
     time_scale: float = 1.0
@@ -203,7 +163,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         Returns
         -------
         dict
-            ``{name: widget}``; each widget's initial value is the default.
+            ``{name: description or widget}``; the initial values are the defaults.
 
         Raises
         ------
@@ -234,17 +194,11 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         ------
         PlanargeoError
             The values describe a state that cannot be shown (the update is refused).
-        NotImplementedError
-            In the base class.
         """
         raise NotImplementedError
 
     def scene_picture(self, state: Any, view=None):
-        """The picture of ``state`` (subclasses): every element with its id, role, symbol and meaning.
-
-        The page draws it (``display="page"``); exports and the image draw the same picture
-        through matplotlib (:mod:`planargeo.draw.render`).  The base adds the handles, the key
-        and the message of a refused value (:meth:`picture`).
+        """The picture of ``state`` (subclasses); the base adds handles, key and message.
 
         Parameters
         ----------
@@ -290,10 +244,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         return True
 
     def adjust(self, values: dict[str, Any], changed: set[str]) -> dict[str, Any]:
-        """Values of controls that follow the ``changed`` ones (default: none).
-
-        They are set with the change and refused with it; e.g. the screw-sum
-        explorer turns rotations into forces when it switches to wrenches.
+        """Values of controls that follow the ``changed`` ones, set and refused with them (default: none).
 
         Parameters
         ----------
@@ -310,12 +261,11 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         return {}
 
     def extra_widgets(self) -> list:
-        """Widgets shown below the controls (e.g. a Play button).
+        """Widgets shown below the controls (default: none).
 
         Returns
         -------
         list
-            Widgets (default: none).
         """
         return []
 
@@ -331,8 +281,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
     def play_step(self, values: dict[str, Any], dt: float) -> dict[str, Any] | None:
         """Control values of the next Play frame after ``values``, ``dt`` seconds on (None: stop).
 
-        An explorer that overrides this gets Play (with speed and loop) and
-        animation export; the default has no Play.
+        An explorer that overrides this gets Play and animation export.
 
         Parameters
         ----------
@@ -348,10 +297,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         return None
 
     def disabled(self, values: dict[str, Any]) -> dict[str, str]:
-        """Controls that would change nothing in the state of ``values``, with the reason (default: none).
-
-        After every shown update exactly these controls are disabled, each with
-        its reason as tooltip; the others are enabled again.
+        """Controls that would change nothing in the state of ``values`` (disabled, the reason as tooltip).
 
         Parameters
         ----------
@@ -376,10 +322,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         return {}
 
     def focus_options(self) -> list[str]:
-        """Names of bodies or joints to focus on (default: none, no "focus" control).
-
-        Read again after every shown update: the options may follow the values
-        (e.g. the number of bodies); a focus that no longer exists falls back to "all".
+        """Names of bodies or joints to focus on (default: none, no "focus" control); read after each update.
 
         Returns
         -------
@@ -413,12 +356,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
 
     @contextlib.contextmanager
     def _page_after(self):
-        """The controls', readout's and message's new values reach the page after the picture.
-
-        The new picture is what the user waits for; the page's work on the other
-        widgets (sliders, the readout table) would otherwise compete with the
-        drawing of the frame for the processor.
-        """
+        """The controls', readout's and message's new values reach the page after the picture."""
         if getattr(self, "_after_depth", 0):     # already held (a drag's reply, then its update)
             yield
             return
@@ -440,10 +378,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         return [*self.controls.values(), self.readout, self.message_box]
 
     def set(self, **values) -> "Explorer":
-        """Set several controls at once (one update); returns ``self``.
-
-        Every value is checked first (:func:`check_control`): if one is refused,
-        none is set and the message names it.
+        """Set several controls at once (one update); if one value is refused, none is set.
 
         Parameters
         ----------
@@ -453,12 +388,11 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         Returns
         -------
         Explorer
-            ``self``.
 
         Raises
         ------
         InputError
-            Never raised out of it: a bad name or value is refused and shown in :attr:`message`.
+            Never out of it: a bad name or value is refused and shown in :attr:`message`.
         """
         problems = []
         for k, v in values.items():
@@ -477,12 +411,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         return self
 
     def reset(self) -> None:
-        """Return every control to its default (one update).
-
-        The defaults are the values first shown, so they are taken even where a
-        control's range follows another control (its range is that of the state
-        reached).
-        """
+        """Return every control to its default, the values first shown (one update)."""
         self._resetting = True
         try:
             with self.hold():
@@ -510,11 +439,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
             self._update()
 
     def _show(self, changed: set[str], initial: bool) -> None:
-        """Compute and render the controls' state, or refuse it (:meth:`_refuse`).
-
-        Only display controls changed (or none: a forced update): the shown
-        state is rendered again, without :meth:`compute`.
-        """
+        """Compute and render the controls' state, or refuse it (:meth:`_refuse`)."""
         values = self.values
         try:
             for k in changed:
@@ -602,7 +527,6 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         Parameters
         ----------
         exc : Exception
-            Why the update was refused.
 
         Returns
         -------
@@ -624,12 +548,10 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         Parameters
         ----------
         callback : callable
-            The function to guard.
 
         Returns
         -------
         callable
-            A function that calls ``callback`` and shows any exception as the message.
         """
         def run(*args):
             try:
@@ -654,7 +576,6 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         Returns
         -------
         list of float
-            Seconds per update.
         """
         out = []
         for _ in range(repeat):

@@ -1,47 +1,12 @@
 """Chain explorer: an N-link planar chain with its geometric overlays (thesis ch. 4, 6, 7).
 
-Controls set the number of links (1-20), the joint types (all revolute, all
-prismatic, or alternating), the joint angles (first joint and a common bend
-for the others), the joint speeds, a torque (on all joints, the first or the
-last), the position of the base, and per joint (lists typed as ``30, -20, 10``
-override those patterns joint by joint), and toggle overlays, each element
-labelled with its thesis symbol and described on hover.  The explorer is
-native: its picture is built from the solved state
-(:func:`planargeo.draw.chain.chain_picture`) and drawn by the page, or by
-matplotlib for the exports; no figure is made.  The overlays:
-
-* velocity poles ``v_i`` (points, 4.5) and acceleration poles ``a_i`` (4.6),
-* bias terms: the bias accelerations ``κ_i`` (points) and bias forces ``p_i`` (lines),
-* internal (joint) force lines ``f_i = A_i a_i + d_i`` (3.13),
-* the per-joint T/U split: the force ``f_i = T_i Q_i + R_i μ_i`` (6.38, 6.104)
-  into the active part ``TQ_i`` along the percussion axis and the reaction
-  ``Rμ_i`` through the joint, and the acceleration ``a_i = s_i ψ_i + U_i γ_i``
-  (6.44) into the part ``sψ_i`` along the joint's motion space
-  (``ψ_i = T_iᵀ a_i``, 6.100) and the reactive part ``Uγ_i`` (``γ_i = R_iᵀ a_i``,
-  6.101) in the quake space ``U_i = A_i⁻¹ R_i (R_iᵀ A_i⁻¹ R_i)⁻¹`` (6.45),
-* the articulated inertias ``A_i`` (3.38) as conics.
-
-The overlay checkboxes change the drawing only: toggling one re-renders the
-last computed state (the split is derived from it once, when first shown).
-Labels are placed where they fit (none overlaps another or leaves the axes);
-the *focus* control picks one link (its poles, bias terms and articulated
-inertia) or one joint (its force and T/U split): those are drawn labelled,
-the rest faded and unlabelled (the whole chain stays in view).
-
-By hand: drag the end of link ``i`` to set joint ``i`` (its angle, or its
-slide for a prismatic joint), keeping the others; drag the base to move the
-whole chain.  The ``time (s)`` slider shows the motion at time ``t`` from the
-state the other controls set; Play moves it on at real time.  The motion is
-integrated once per initial state in chunks of :data:`CHUNK` seconds
-(DOP853, dense output), so the state at ``t`` depends on ``t`` alone, not on
-the frames shown before.  The readout shows the energy, the work of the
-(constant) joint forces since ``t = 0`` and the energy drift ``E − E₀ − W``
-(zero but for the integration error; the chain is a tree: it has no
-constraint to drift from).
-
-Each state is solved once, by the articulated-body algorithm through the
-scene (:func:`planargeo.scenes.chain.chain_workspace`: one kinematics pass);
-the energies are read off that workspace.
+Controls set the links (1-20), joint kinds, angles, speeds, a torque and the base; typed lists
+(``30, -20, 10``) override them joint by joint.  Overlays: velocity and acceleration poles
+(4.5, 4.6), bias terms, joint force lines (3.13), the per-joint T/U split of force and
+acceleration (6.38, 6.44, 6.45) and the articulated inertias (3.38) as conics; *focus* picks
+one link or joint.  Drag a link's end to set its joint, the base to move the chain.  The
+``time (s)`` slider and Play show the motion from the state the controls set, integrated once
+per initial state in chunks of :data:`CHUNK` s (the state at ``t`` depends on ``t`` alone).
 """
 from __future__ import annotations
 
@@ -102,8 +67,7 @@ def chain_for(n: int, joints: str = "revolute", gravity: bool = True, length: fl
     n : int
         Number of links, 1 to 20.
     joints : {"revolute", "prismatic", "alternating"}
-        Joint kinds (alternating: revolute, prismatic, revolute...).  A
-        prismatic joint slides along the parent link's axis.
+        Joint kinds; a prismatic joint slides along the parent link's axis.
     gravity : bool
         Gravity ``(0, -9.81)`` or none.
     length, mass : float
@@ -114,7 +78,6 @@ def chain_for(n: int, joints: str = "revolute", gravity: bool = True, length: fl
     Returns
     -------
     Model
-        Bodies ``link1``... on joints ``joint1``...
 
     Raises
     ------
@@ -171,8 +134,6 @@ def parse_list(text: str, name: str) -> list[float]:
     --------
     >>> parse_list("30, -20,0.5", "joint values")
     [30.0, -20.0, 0.5]
-    >>> parse_list("  ", "joint values")
-    []
     """
     items = [t for t in text.replace(";", ",").split(",") if t.strip()]
     try:
@@ -201,11 +162,9 @@ class ChainExplorer(Explorer):
     Parameters
     ----------
     duration : float
-        Range of the ``time (s)`` slider: Play stops (or loops) there; at most
-        :data:`DURATION_MAX` s.
+        Range of the ``time (s)`` slider (s), at most :data:`DURATION_MAX`.
     fps : int
-        Frames per second of Play (at speed 1×, a frame is ``1 / fps`` s of
-        motion), 1 to 100.
+        Frames per second of Play, 1 to 100.
     **kw
         :class:`~planargeo.widgets.base.Explorer` options and initial control values.
 
@@ -228,8 +187,6 @@ class ChainExplorer(Explorer):
              "|base force| (N)": "N"}
 
     def make_controls(self):
-        # The controls: chain, state, load, base, per-joint lists, overlays and the time.
-        # Returns ``{name: widget}``.
         c = {
             "links": Step(1, NMAX, 1, 4, "links", integer=True).make("links"),
             "joints": W.Dropdown(options=JOINT_SETS, value="revolute", description="joints"),
@@ -279,7 +236,6 @@ class ChainExplorer(Explorer):
         Parameters
         ----------
         v : dict
-            Control values.
 
         Returns
         -------
@@ -297,12 +253,10 @@ class ChainExplorer(Explorer):
         Parameters
         ----------
         v : dict
-            Control values.
 
         Returns
         -------
         tuple
-            The model and the joint values, speeds and forces (arrays).
 
         Raises
         ------
@@ -342,13 +296,8 @@ class ChainExplorer(Explorer):
         return model, q, qd, tau
 
     def adjust(self, values, changed):
-        # Controls that follow a change: the time, and the per-joint list against the sliders.
-        # A new initial state starts at ``t = 0`` (unless the time is set with
-        # it).  While joint values are typed (or dragged) per joint, the
-        # ``angle`` slider still moves joint 1 (the list's first entry follows it),
-        # and ``bend`` / ``slide`` return every joint to the common pattern (the
-        # list is emptied), so that no slider is ever dead.
-        # Returns Values of the controls that follow.
+        # a new initial state starts at t = 0; with a typed list, "angle" still moves joint 1 and
+        # "bend" / "slide" empty the list, so that no slider is ever dead
         out = {}
         if changed & set(INITIAL) and TIME not in changed and values[TIME] != 0:
             out[TIME] = 0.0
@@ -373,7 +322,6 @@ class ChainExplorer(Explorer):
         Returns
         -------
         Motion
-            ``y = (q, q̇)`` at any time (:class:`planargeo.widgets._motion.Motion`).
         """
         from planargeo.scenes.chain import chain_accelerations as forward_dynamics
 
@@ -387,15 +335,12 @@ class ChainExplorer(Explorer):
                       lambda: Motion(rhs, np.concatenate([q0, qd0]), CHUNK, rtol=1e-8, atol=1e-10))
 
     def play_ahead(self, values, seconds: float) -> bool:
-        """Play's work ahead: the motion one chunk past the time shown, for about ``seconds`` of wall time.
-
-        Play calls it between frames (:class:`~planargeo.widgets.canvas.PictureCanvas`'s
-        ``on_idle``); the states are the same as without it (:meth:`Motion.work_ahead`).
+        """Play's work ahead between frames: the motion one chunk past the time shown (same states).
 
         Parameters
         ----------
         values : dict
-            The controls' values (the chain and the time shown).
+            The controls' values.
         seconds : float
             About how much wall time to spend now.
 
@@ -408,7 +353,6 @@ class ChainExplorer(Explorer):
         return self.motion_for(model, q0, qd0, tau).work_ahead(float(values[TIME]) + CHUNK, seconds)
 
     def compute(self, values, changed):
-        # The state of the controls: the chain solved by the ABA at the time ``t`` shown.
         model, q0, qd0, tau = self.initial_state(values)
         t = float(values[TIME])
         q, qd = q0, qd0
@@ -442,8 +386,8 @@ class ChainExplorer(Explorer):
         Returns
         -------
         dict
-            ``{"active": T Q, "reaction": R μ, "active_on": Q ≠ 0, "motion": s ψ,
-            "reactive": U γ}`` (arrays of shape ``(N, 3)``, ``active_on`` ``(N,)``).
+            ``active`` (T Q), ``reaction`` (R μ), ``motion`` (s ψ), ``reactive`` (U γ): ``(N, 3)``;
+            ``active_on`` (Q ≠ 0): ``(N,)``.
         """
         if "split" not in st:
             model, w = st["model"], st["w"]
@@ -462,25 +406,19 @@ class ChainExplorer(Explorer):
         return st["split"]
 
     def figure_message(self, exc: Exception) -> str:
-        # The refusal drawn on the figure, wrapped to stay inside the axes; a time too far for one update
-        # in its short form (the base would cut it before "ask again").
+        # wrapped to stay inside the axes; a time too far in its short form (not cut before "ask again")
         import textwrap
 
         return textwrap.fill(refusal_on_picture(str(exc)) or super().figure_message(exc), 40)
 
     # -- focus, handles, play ------------------------------------------------------
     def focus_options(self) -> list[str]:
-        # Links and joints the focus can pick: ``link1``..``linkN``, ``joint1``..``jointN`` of the chain.
-        # Before the first state is shown (while the constructor checks its
-        # values) every link of the longest chain is listed, so that a focus
-        # given with the number of links is taken.
+        # before the first state every link of the longest chain: a focus given with "links" is taken
         w = getattr(self, "controls", {}).get("links")
         n = NMAX if w is None or getattr(self, "state", None) is None else int(w.value)
         return [f"link{i}" for i in range(1, n + 1)] + [f"joint{i}" for i in range(1, n + 1)]
 
     def disabled(self, values: dict) -> dict:
-        # Controls that would change nothing in the state ``values`` describe, each with the reason.
-        # Returns ``{control: reason}``.
         n, kinds = int(values["links"]), values["joints"]
         kind = ["revolute" if kinds == "revolute" or (kinds == "alternating" and i % 2 == 0) else "prismatic"
                 for i in range(n)]
@@ -511,10 +449,6 @@ class ChainExplorer(Explorer):
         return out
 
     def explain(self) -> dict:
-        # Every symbol and readout name on screen with its one-line meaning and thesis equation.
-        # Each indexed symbol (``vᵢ``) lists the ones the figure can show for the chain shown
-        # (``v₁ … vₙ``).
-        # Returns ``{symbol or readout name: meaning}``.
         st = getattr(self, "state", None)
         n = st["model"].N if st is not None else int(self.values["links"])
 
@@ -576,11 +510,7 @@ class ChainExplorer(Explorer):
         return w.pose[:, :2] + np.column_stack([np.cos(w.pose[:, 2]), np.sin(w.pose[:, 2])])
 
     def handles(self) -> list:
-        # Draggable handles: the base, and the end of every link.
-        # Dragging ``link i end`` sets joint ``i`` (the angle of the link's
-        # direction relative to its parent, or the slide of a prismatic joint
-        # along the parent's axis) and keeps every other joint; it writes the
-        # per-joint list (for link 1 with no list, the ``angle`` slider).
+        # the base, and each link's end: it sets its joint (angle or slide), keeping the others
         out = [Handle("base", lambda: (self.values["base x (m)"], self.values["base y (m)"]),
                       lambda x, y: {"base x (m)": float(x), "base y (m)": float(y)})]
         for i in range(NMAX):
@@ -628,11 +558,7 @@ class ChainExplorer(Explorer):
         return drag
 
     def play_step(self, values: dict, dt: float):
-        # One Play step: the time ``dt`` seconds on (the motion itself is read in :meth:`compute`).
-        # The state at a time depends on that time alone (module docstring), so
-        # any ``dt`` is exact: Play at any speed, the slider and a fresh explorer
-        # show the same state at the same ``t``.
-        # Returns ``{"time (s)": t + dt}`` (at most the end of the range), or None at its end.
+        # the time dt on; the state at t depends on t alone, so any dt is exact
         t = float(values[TIME])
         end = float(self.controls[TIME].max)
         if t >= end:
@@ -645,12 +571,9 @@ class ChainExplorer(Explorer):
         Parameters
         ----------
         duration : float, optional
-            Seconds of motion from ``t = 0`` (default: the explorer's ``duration``,
-            the time slider's range).  At least one frame (``1 / fps``) and at
-            most the explorer's ``duration`` unless ``allow_long``.
+            Seconds of motion from ``t = 0``: one frame to the explorer's ``duration`` (the default).
         allow_long : bool
-            Integrate beyond the explorer's ``duration`` (any finite duration;
-            Ctrl-C stops it and keeps what was computed).
+            Integrate beyond ``duration`` (Ctrl-C stops it and keeps what was computed).
 
         Returns
         -------
@@ -689,15 +612,7 @@ class ChainExplorer(Explorer):
 
     # -- drawing ---------------------------------------------------------------------
     def _view(self, st, focus=None) -> tuple[float, float, float, float]:
-        """The view: the whole chain's reach about the ground origin (with or without a focus).
-
-        Centred on the fixed origin, not on the base: a view that followed the base would move
-        under the mouse while the base is dragged (and the drag would run away).  The reach is
-        rounded up to half metres, so that it changes in steps, not under every move of a drag.
-        The view depends on the state alone: after a drag it is what a fresh explorer with the
-        same values shows.  A focus fades the rest and labels the focused element; it does not
-        zoom (the whole chain stays in view).
-        """
+        """The view: the whole chain's reach about the ground origin (with or without a focus)."""
         model, w = st["model"], st["w"]
         chain = np.vstack([np.asarray(w.origin[0], float)[None, :], w.pose[:, :2], self._state_ends(st)])
         reach = max(model.N + 0.4, float(np.max(np.hypot(*chain.T))) + 0.4)
@@ -705,7 +620,6 @@ class ChainExplorer(Explorer):
         return (-reach, reach, -reach, reach)
 
     def readout_of(self, state):
-        # The readout of the state ``state`` (energies, work, drift, end accelerations, base force).
         model, w = state["model"], state["w"]
         n = model.N
         e = state["ke"] + state["pe"]
@@ -723,7 +637,6 @@ class ChainExplorer(Explorer):
         return out
 
     def scene_picture(self, state, view=None):
-        # The state's picture built natively (:func:`planargeo.draw.chain.chain_picture`), for the page.
         v = self.values
         w = state["w"]
         overlays = {k: bool(v[k]) for k in OVERLAYS}

@@ -282,8 +282,7 @@ class ConstructionExplorer(Explorer):
         ----------
         state : dict
         view : (x0, x1, y0, y1), optional
-            The view the user zoomed or panned to (default: :attr:`VIEWS` of the construction, or
-            :attr:`VIEW`).
+            The view (default: :attr:`VIEWS` of the construction, or :attr:`VIEW`).
         all_steps : bool
             Every step at full strength (the layered export).
         caption : str, optional

@@ -432,13 +432,7 @@ class ControlsMixin:
     ECHO_SECONDS = 2.0
 
     def _screen_echo(self, name: str, widget, change) -> bool:
-        """True for a slider's echo: ignore it (no update, no snapping to the grid).
-
-        A browser slider rounds a value the explorer set (a drag, a Play frame)
-        to its step and sends it back; such a message (one from the front end,
-        i.e. inside ipywidgets' ``set_state``) equal to the rounded copy of a
-        value set in the last :attr:`ECHO_SECONDS` is not a user's change.
-        """
+        """True for a slider's echo: ignore it (no update, no snapping to the grid)."""
         new, old = change["new"], change["old"]
         now = time.monotonic()
         from_front = "value" in (getattr(widget, "_property_lock", None) or {})

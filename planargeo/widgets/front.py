@@ -31,13 +31,7 @@ _KEY_CHARS = 48
 
 
 def _clip_words(text: str, n: int) -> str:
-    """``text`` cut to at most ``n`` characters at a word's end, with "…" when cut.
-
-    >>> _clip_words("c: the centre of percussion of the bat", 20)
-    'c: the centre of…'
-    >>> _clip_words("v₁: a pole", 20)
-    'v₁: a pole'
-    """
+    """``text`` cut to at most ``n`` characters at a word's end, with "…" when cut."""
     if len(text) <= n:
         return text
     cut = text[:n - 1]

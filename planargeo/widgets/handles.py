@@ -61,14 +61,9 @@ class HandleMixin:
     def mechanism_points(self) -> np.ndarray:
         """Points ``(n, 2)`` the view must hold: by default the finite positions of the handles.
 
-        An explorer whose mechanism has more to keep in view (links, bodies) may
-        add them; the rule tests check that the view contains these points and
-        is never much smaller than :attr:`scale`.
-
         Returns
         -------
         numpy.ndarray
-            ``(n, 2)`` data points.
         """
         pts = [(h["x"], h["y"]) for h in self._handle_list()]
         return np.array(pts, dtype=float).reshape(-1, 2)
@@ -193,10 +188,7 @@ class HandleMixin:
         return out
 
     def _drag_to(self, h: Handle, x: float, y: float) -> bool:
-        """One drag move: the handle's control values as one update (clamped to the sliders).
-
-        False when it was refused (a position that changes no value is taken: nothing to show).
-        """
+        """One drag move: the handle's control values as one update (clamped to the sliders)."""
         try:
             vals = dict(h.drag(x, y))
         except Exception as exc:  # noqa: BLE001 - a refused drag step, never raised

@@ -314,11 +314,7 @@ class PlayMixin:
         return 1.0 / float(self.play_fps)
 
     def _frame(self, seconds: float | None = None) -> bool:
-        """One shown Play frame ``seconds`` on (default :attr:`play_dt`), in sub-steps.
-
-        False when Play ends: None from play_step, or a refused step (what was
-        computed before it is shown, with the reason).
-        """
+        """One shown Play frame ``seconds`` on (default :attr:`play_dt`), in sub-steps."""
         seconds = self.play_dt if seconds is None else float(seconds)
         start = dict(self.shown_values or self.values)
         vals, ended, exc = run_substeps(self.play_step, start, seconds, self.play_max_dt)
@@ -386,13 +382,7 @@ class PlayMixin:
         return bool(self.play_ahead(self.shown_values, seconds))
 
     def _page_tick(self) -> None:
-        """A tick from the page while it plays: one frame of the wall-clock time since the last.
-
-        Raises
-        ------
-        PlanargeoError
-            Play stopped on a refused step (the message says why; the page shows it).
-        """
+        """A tick from the page while it plays: one frame of the wall-clock time since the last."""
         if not self.play_control.playing:
             return
         if self._clock is None:
