@@ -1,36 +1,11 @@
 """Recursive articulated-body forward dynamics (thesis 3.6, 3.31-3.42).
 
-Absolute (global-origin) formulation: every twist, wrench and inertia is
-expressed at the world origin, so no coordinate transforms appear between
-bodies.  Trees are handled by summing the articulated contributions of all
-children into the parent (the chain recursion 3.38/3.39 with ``i+1`` replaced
-by "each child of ``i``").
-
-For body ``i`` with joint space ``s_i`` (3×k), articulated inertia ``A_i`` and
-articulated bias force ``d_i`` (after its children have been added):
-
-* ``D_i = s_iᵀ A_i s_i``, ``U_i = A_i s_i``, ``c_i = A_i κ_i + d_i``,
-  ``u_i = τ_i - s_iᵀ c_i``;
-* the parent ``λ`` receives (3.37-3.39, with ``(s⁺)ᵀ = U D⁻¹``)
-  ``A_λ += A_i - U_i D_i⁻¹ U_iᵀ = (1 - s_i s_i⁺)ᵀ A_i`` and
-  ``d_λ += c_i + U_i D_i⁻¹ u_i = (s_i⁺)ᵀ τ_i + (1 - s_i s_i⁺)ᵀ (A_i κ_i + d_i)``;
-* outwards, ``q̈_i = D_i⁻¹ (u_i - U_iᵀ a_λ)`` (3.41) and
-  ``a_i = a_λ + s_i q̈_i + κ_i`` (3.42), with ``a_ground = 0`` (3.40);
-  gravity enters as applied wrenches in ``p_i`` (3.34), not as a base
-  acceleration;
-* the joint force is ``f_i = A_i a_i + d_i`` (3.13).
-
-The recursion is written twice, once per audience, and the tests hold the two
-to each other and to independent references (Pinocchio, Lagrange's equations):
-
-* :func:`articulated_body` on arrays, as above: any joint kind (3×k joint spaces),
-  batches broadcast over leading dimensions, and the whole workspace (``A``, ``d``,
-  ``a``, ``f``, ``D``, ``U``, ``u``...) returned for drawings and reports;
-* :func:`planargeo.algorithms.kernels.articulated_body_state`: one state of a model of
-  revolute, prismatic and fixed joints as plain loops over the bodies, each body at
-  its joint's point, compiled by numba.  :func:`forward_dynamics` runs it for such
-  models (a batch in blocks of states shared among threads) and
-  :func:`articulated_body` for the others (see :mod:`planargeo.algorithms.compiled`).
+Inwards, ``D_i = s_iᵀ A_i s_i``, ``U_i = A_i s_i``, ``u_i = τ_i - s_iᵀ (A_i κ_i + d_i)`` and the
+parent receives ``A_i - U_i D_i⁻¹ U_iᵀ`` and ``A_i κ_i + d_i + U_i D_i⁻¹ u_i`` (3.37-3.39; trees
+sum every child); outwards ``q̈_i = D_i⁻¹ (u_i - U_iᵀ a_λ)`` and ``a_i = a_λ + s_i q̈_i + κ_i``
+(3.40-3.42).  :func:`articulated_body` runs it on arrays at the origin (any joint kind,
+batches, the whole workspace); :func:`forward_dynamics` runs the compiled
+:func:`planargeo.algorithms.kernels.articulated_body_state` where it covers the model.
 """
 from __future__ import annotations
 
@@ -51,31 +26,26 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
     Parameters
     ----------
     model : Model
-        The mechanism (bodies, joints, parents, gravity).
+        The mechanism.
     q, qd, tau : array_like (..., nq)
-        One state: joint coordinates, velocities and forces.
+        Joint coordinates, velocities and forces.
     f_ext : array_like (..., N, 3), optional
         External wrenches at the origin on each body.
 
     Returns
     -------
     Data
-        The kinematics fields plus ``A`` (..., N, 3, 3) articulated inertias
-        (3.38), ``d`` (..., N, 3) articulated bias forces (3.39), ``a``
-        (..., N, 3) accelerations (3.42), ``f`` (..., N, 3) joint forces
-        ``A a + d`` (3.13), ``qdd`` (..., nq) (3.41), ``tau``, and per joint
-        lists ``D`` (``s^T A s``), ``U`` (``A s``), ``u`` (``tau - s^T (A kappa + d)``).
+        The kinematics fields plus ``A`` (3.38), ``d`` (3.39), ``a`` (3.42), ``f = A a + d``
+        (3.13), ``qdd`` (3.41), ``tau``, and per joint ``D`` (``sᵀAs``), ``U`` (``A s``), ``u``.
 
     Raises
     ------
     ShapeError, NonFiniteError, InputError
-        Arguments of the wrong shape, not finite, or complex (:func:`~planargeo.mechanics.kinematics.check_state`).
+        Arguments of the wrong shape, not finite, or complex.
     SingularConfigurationError
-        If some ``s_i^T A_i s_i`` is singular (e.g. a point mass on a revolute
-        joint at its own position), by the rule of :data:`planargeo.errors.COND_LIMIT`
-        (measured at the joint's point).
+        If some ``sᵀAs`` is singular by the rule of :data:`planargeo.errors.COND_LIMIT`.
     NumericOverflowError
-        If finite input gives a ``q̈`` that is not finite (e.g. speeds of 1e160).
+        If finite input gives a ``q̈`` that is not finite.
 
     Examples
     --------
@@ -143,12 +113,11 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     Parameters
     ----------
     model : Model
-        The mechanism (bodies, joints, parents, gravity).
+        The mechanism.
     q, qd, tau : array_like (..., nq)
-        Joint coordinates, speeds and forces/torques; leading dimensions are a
-        batch evaluated in one call.  ``qd`` or ``tau`` None: zeros.
+        Joint coordinates, speeds and forces; leading dimensions are a batch.  ``qd`` or ``tau`` None: zeros.
     f_ext : array_like (..., N, 3), optional
-        External world wrenches at the origin applied to each body (besides gravity).
+        External world wrenches at the origin on each body (besides gravity).
 
     Returns
     -------
@@ -160,24 +129,17 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     ShapeError, NonFiniteError, InputError
         Arguments of the wrong shape, not finite, or complex.
     SingularConfigurationError
-        If some ``s_i^T A_i s_i`` is singular by the package's one rule
-        (:data:`planargeo.errors.COND_LIMIT`: ``‖A_P‖_F ‖s_P‖² / σ_min(sᵀAs) > 1e12``
-        at the joint's point ``P``, invariant under moving the whole mechanism), with
-        that ``.cond``, for the same states the other recursive methods refuse.
+        If some ``sᵀAs`` is singular by the rule of :data:`planargeo.errors.COND_LIMIT` (``.cond``).
     NumericOverflowError
         If finite input gives a ``q̈`` that is not finite (e.g. speeds of 1e160).
 
     Examples
     --------
-    A uniform rod (mass 1, length 1) pinned at one end, released horizontally:
-    ``q̈ = -(m g L/2) / (m L²/3) = -1.5 g``.
+    A uniform unit rod pinned at one end, released horizontally: ``q̈ = -1.5 g``.
 
     >>> from planargeo.mechanics.model import chain_model
     >>> forward_dynamics(chain_model(1), [0.0], [0.0], [0.0])
     array([-14.715])
-    >>> forward_dynamics(chain_model(1), [[0.0], [np.pi / 2]], [[0.0], [0.0]], [[0.0], [0.0]]).round(12)
-    array([[-14.715],
-           [  0.   ]])
     """
     return evaluate(model, False, q, qd, tau, f_ext, _general)
 

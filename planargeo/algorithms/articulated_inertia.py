@@ -1,28 +1,11 @@
 """Articulated inertia algorithm for a free-floating chain or tree (thesis 7.1, 7.1.1).
 
-The articulated inertia ``A_i`` and bias force ``d_i`` relate the internal
-force of joint ``i`` to the acceleration of body ``i`` with everything beyond
-it attached (7.1)::
-
-    f_i = A_i a_i + d_i
-
-From the tips to the base (7.2, 7.7a, 7.7b, 7.8)::
-
-    A_N = I_N,  d_N = p_N
-    A_i = I_i + R_{i+1} U_{i+1}^T A_{i+1}
-    d_i = p_i + T_{i+1} Q_{i+1} + R_{i+1} U_{i+1}^T (A_{i+1} kappa_{i+1} + d_{i+1})
-    R_i U_i^T = 1 - T_i s_i^T
-
-with ``p_i = -(v_i×)^T I_i v_i - g_i`` (3.11).  The algorithm listing of 7.1.1
-prints ``+ g_i`` in ``d_N`` and ``d_i``; the applied loads enter with a minus
-sign (3.11, 3.34), see ``docs/errata.md``.  On a tree each body
-sums the projected contributions of all its children.
-
-:func:`articulated_recursion` is the package's one copy of this recursion: the
-projective equations (6.108-6.110), chain splitting (7.6), the stacked tree
-(9.27-9.28, corrected) and the watched joint conditions all call it.  This module
-also holds the model glue those algorithms share (one state's kinematics as
-arrays; batches solved state by state).
+``f_i = A_i a_i + d_i`` (7.1); tips to base ``A_N = I_N``, ``d_N = p_N`` and (7.7a, 7.7b, 7.8)
+``A_i = I_i + R U^T A_{i+1}``, ``d_i = p_i + T Q + R U^T (A_{i+1} κ_{i+1} + d_{i+1})`` with
+``R U^T = 1 - T s^T``, each child summed on a tree.  The listing prints ``+ g_i``; the loads enter
+with a minus sign (3.11, ``docs/errata.md``).  :func:`articulated_recursion` is the package's one
+copy, called by the projective (6.108-6.110), chain-splitting (7.6) and stacked (9.27-9.28)
+solutions; the module also holds the model glue they share.
 """
 from __future__ import annotations
 
@@ -43,8 +26,7 @@ _EYE3.setflags(write=False)
 
 
 class _Reactions:
-    """The reaction bases ``R_i`` (:func:`planargeo.mechanics.joints.R_of`) and the spaces ``U_i``
-    (6.37/6.99, inverse-free from ``T_i``) of a recursion's result, built on first access."""
+    """The reaction bases ``R_i`` and spaces ``U_i`` of a recursion's result, built on first access."""
 
     @functools.cached_property
     def R(self) -> list:
@@ -69,13 +51,11 @@ class ArticulatedInertias(_Reactions):
     S : list of (3, k_i) joint spaces.
     T : list of (3, k_i) percussion spaces ``A_i s_i (s_i^T A_i s_i)^-1`` (6.105).
     P : list of (3, 3) projectors ``R_i U_i^T = 1 - T_i s_i^T`` (7.8).
-    gram : list of ``(A_i s_i, s_i^T A_i s_i)`` (``None`` for a fixed joint), checked by the rule.
-    cond : (N,) the joints' condition numbers (:func:`planargeo.mechanics.subspaces.joint_cond`; 1 for a fixed joint).
-    points : (N, 2) or None, the points of the reaction bases of prismatic joints (the body frames' origins).
-    steps : int or None, the truncation of the recursion (``None``: the full recursion; ``k``: every
-        ``A_i``, ``d_i`` holds only the bodies at most ``k`` joints outboard of ``i``, thesis 10.2.2).
-    R, U : lists, built on first access: the reaction spaces (:func:`planargeo.mechanics.joints.R_of`)
-        and the reactive acceleration spaces (6.99).
+    gram : list of ``(A_i s_i, s_i^T A_i s_i)`` (``None`` for a fixed joint).
+    cond : (N,) the joints' condition numbers (1 for a fixed joint).
+    points : (N, 2) or None, the points of the reaction bases of prismatic joints.
+    steps : int or None, the truncation of the recursion (10.2.2; None: full).
+    R, U : lists, built on first access: reaction spaces and reactive acceleration spaces (6.99).
     """
 
     A: np.ndarray
@@ -109,25 +89,15 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
     tau : list of N (k_i,) joint torques ``Q_i``.
     parents : sequence of N ints (``-1`` the ground, parents before children), default a chain.
     points : (N, 2), optional
-        A point of each joint, for the reaction bases ``R`` of prismatic joints
-        (:func:`planargeo.mechanics.joints.R_of`); default the origin.
+        A point of each joint for the reaction bases ``R`` of prismatic joints; default the origin.
     joint_points : (N, 2), optional
-        Each joint's point (pivot; placement point of a prismatic joint: the joint
-        frame's origin), where the singularity rule of :data:`planargeo.errors.COND_LIMIT`
-        is measured; default the origin.  The model-level functions pass the joint frames' origins.
+        Each joint's point, where the rule of :data:`planargeo.errors.COND_LIMIT` is measured; default the origin.
     check : bool
-        Raise for a singular joint (default).  ``False`` never raises: every joint's
-        condition number is recorded in ``cond`` and an exactly singular joint
-        (``cond = inf``) is treated as locked for its parent (``T = 0``, ``R Uᵀ = 1``).
+        Raise for a singular joint (default); ``False`` records every ``cond`` and treats an
+        exactly singular joint as locked (``T = 0``).
     steps : int, optional
-        Truncate the recursion (thesis 10.2.2, "three iterations are almost as precise as
-        six"): ``A_i``, ``d_i`` then hold body ``i`` and only the bodies at most ``steps``
-        joints outboard of it, as if the chain ended there (``0``: ``A_i = I_i``,
-        ``d_i = p_i``).  Computed as ``steps`` Jacobi sweeps of 7.7a/7.7b over all bodies
-        at once (one batched step per sweep instead of one step per body), so for long
-        chains a few steps cost less than the full recursion.  ``None`` (default) or a
-        value at least the depth of the tree gives the full recursion.  The error
-        against the full recursion is :func:`truncation_error`.
+        Keep only the bodies at most ``steps`` joints outboard (thesis 10.2.2), by ``steps`` Jacobi
+        sweeps over all bodies at once; None (default) or at least the tree's depth: the full recursion.
 
     Returns
     -------
@@ -136,8 +106,7 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
     Raises
     ------
     SingularConfigurationError
-        When some ``s_i^T A_i s_i`` is singular (e.g. a massless tip body), by the rule
-        of :data:`planargeo.errors.COND_LIMIT` (``.cond``; message names the joint).
+        When some ``s_i^T A_i s_i`` is singular by the rule (``.cond``; the message names the joint).
     InputError
         ``steps`` is not ``None`` or a non-negative integer.
 
@@ -195,7 +164,7 @@ def _check_steps(steps):
 
 
 def _depth(parents) -> int:
-    """Largest number of joints between a body and its deepest descendant (0 for a single body)."""
+    """Largest number of joints between a body and its deepest descendant."""
     level = [0] * len(parents)
     for i in reversed(range(len(parents))):
         j = parents[i]
@@ -228,7 +197,7 @@ def _sweep(A, S, groups, joint_points):
 
 
 def _truncated(I, p, S, kappa, tau, parents, points, joint_points, check, steps) -> ArticulatedInertias:
-    """7.7a/7.7b truncated after ``steps`` bodies outboard, as Jacobi sweeps over all bodies (thesis 10.2.2)."""
+    """7.7a/7.7b truncated after ``steps`` bodies outboard, as Jacobi sweeps (thesis 10.2.2)."""
     N = I.shape[0]
     par = np.asarray(parents, dtype=int)
     kids = np.flatnonzero(par >= 0)
@@ -269,16 +238,14 @@ def truncation_error(model, q, qd=None, tau=None, f_ext=None, *, steps: int) -> 
     q, qd, tau, f_ext
         One state, as for :func:`articulated_inertia`.
     steps : int
-        Bodies outboard kept by the truncated recursion (``articulated_recursion(..., steps=steps)``).
+        Bodies outboard kept by the truncated recursion.
 
     Returns
     -------
     dict
-        ``"A"``: (N,) relative errors ``‖A_i^(k) - A_i‖_F / ‖A_i‖_F``; ``"d"``: (N,)
-        errors of the bias forces ``max|d_i^(k) - d_i| / max_j max|d_j|`` (0 when every
-        ``d_j`` is 0); ``"entries"``: (N, 3, 3) ``|A_i^(k) - A_i| / ‖A_i‖_F`` entry by entry;
-        ``"max_A"``, ``"max_d"``: the largest of ``"A"`` and ``"d"``; ``"truncated"``,
-        ``"full"``: both :class:`ArticulatedInertias`.
+        ``"A"``: (N,) ``‖A_i^(k) - A_i‖_F / ‖A_i‖_F``; ``"d"``: (N,) ``max|d_i^(k) - d_i| / max_j max|d_j|``
+        (0 when every ``d_j`` is 0); ``"entries"``: (N, 3, 3) ``|A_i^(k) - A_i| / ‖A_i‖_F``;
+        ``"max_A"``, ``"max_d"``; ``"truncated"``, ``"full"``: both :class:`ArticulatedInertias`.
 
     Raises
     ------
@@ -290,14 +257,12 @@ def truncation_error(model, q, qd=None, tau=None, f_ext=None, *, steps: int) -> 
     Examples
     --------
     Thesis 7.3 at ``lambda = L / rho = 2``: one outboard body already gives the first body's
-    effective centre, ``m_y`` and ``A_z`` of any longer chain; only ``m_x = n m`` still grows.
+    ``A_z``; only ``m_x = n m`` still grows.
 
     >>> from planargeo.scenes.horizontal_chain import horizontal_chain_model
     >>> e = truncation_error(horizontal_chain_model(6, 1.0, 0.5, 1.0), np.zeros(6), steps=3)
-    >>> round(float(e["A"][0]), 4), float(e["max_A"]) == float(e["A"][0])
-    (0.3114, True)
-    >>> float(e["entries"][0][2, 2])                    # A_z about the joint: exact after one step
-    0.0
+    >>> round(float(e["A"][0]), 4), float(e["entries"][0][2, 2])
+    (0.3114, 0.0)
     """
     if steps is None:
         raise InputError("steps must be a non-negative integer, got None")
@@ -335,12 +300,11 @@ def articulated_inertia(model, q, qd=None, tau=None, f_ext=None, *, steps: int |
     InputError
         A state of the wrong shape, or a bad ``steps``.
     SingularConfigurationError
-        A singular joint (:func:`articulated_recursion`).
+        A singular joint.
 
     Examples
     --------
-    Two unit slender links in line on pins: the first body feels twice the
-    mass along the chain.
+    Two unit slender links in line on pins: the first body feels twice the mass along the chain.
 
     >>> from planargeo.mechanics.model import chain_model
     >>> float(articulated_inertia(chain_model(2), [0.0, 0.0]).A[0][0, 0])
@@ -353,14 +317,10 @@ def articulated_inertia(model, q, qd=None, tau=None, f_ext=None, *, steps: int |
 # Model glue shared by the chapter 6-9 algorithms
 # ---------------------------------------------------------------------------
 def _state_arrays(model, q, qd, tau, f_ext, checked=False):
-    """Kinematics of one state as the recursions take it.
+    """One state as the recursions take it: ``(data, I, S, kappa, p, tau, parents, points, joint_points)``.
 
-    Returns ``(data, I, S, kappa, p, tau, parents, points, joint_points)``: the
-    :class:`~planargeo.mechanics.model.Data`, then the arguments of
-    :func:`articulated_recursion` in order (``S`` and ``tau`` as per-joint lists,
-    ``points`` the body frames' origins, ``joint_points`` the joint frames' origins).
-    ``checked``: the arguments come out of :func:`planargeo.mechanics.kinematics.check_state`
-    for one state already (as in :func:`_per_state`), so they are not validated again.
+    ``S``, ``tau`` per joint; ``points`` the body frames' origins, ``joint_points`` the joint frames'.
+    ``checked``: already one state validated by ``check_state`` (as in :func:`_per_state`).
     """
     if not checked:
         q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
@@ -371,7 +331,7 @@ def _state_arrays(model, q, qd, tau, f_ext, checked=False):
 
 
 def _one_state(model, q, qd, tau, f_ext, who: str):
-    """``(q, qd, tau, f_ext)`` checked as one state (``qd``, ``tau`` zeros if None); a batch: ShapeError naming ``who``."""
+    """``(q, qd, tau, f_ext)`` checked as one state; a batch: ShapeError naming ``who``."""
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
     if shape != ():
         raise ShapeError(f"{who} takes one state, got batch shape {shape}")
@@ -388,11 +348,7 @@ def _data_arrays(model, d, tau):
 
 
 def _per_state(fn, model, q, qd, tau, f_ext):
-    """Apply the single-state solver ``fn(model, q, qd, tau, f_ext) -> (nq,)`` over batch dimensions.
-
-    The arguments are validated once (:func:`planargeo.mechanics.kinematics.check_state`);
-    ``fn`` receives one checked state at a time (``qd``, ``tau`` zero if omitted).
-    """
+    """The one-state solver ``fn(model, q, qd, tau, f_ext) -> (nq,)`` over batch dimensions, validated once."""
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
     nq, N = model.nq, model.N
     q = np.broadcast_to(q, shape + (nq,))

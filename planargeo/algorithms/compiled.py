@@ -1,37 +1,12 @@
 """How the dynamics functions reach the compiled kernels (:mod:`planargeo.algorithms.kernels`).
 
-``import planargeo`` imports neither numba nor the kernels: :func:`kernels_for` imports
-them on the first call for a model the kernels cover (joints all revolute, prismatic or
-fixed), and numba compiles each kernel on its first use (then loads it from its cache).
-
-A call (:func:`evaluate`) takes one of three roads, all giving the same numbers:
-
-* one state given as float64 arrays of the right shapes goes straight to the kernel,
-  which checks that it is finite and of the model's shapes (the types are numba's to check:
-  the one-state kernels are compiled for C-contiguous, writeable float64 arrays only, and
-  refuse any other type instead of compiling it: the call falls back to the next road);
-* anything else (lists, other dtypes, batches, broadcasting) is validated by
-  :func:`planargeo.mechanics.kinematics.check_state` and handed over as C-contiguous
-  float64 rows;
-* a state the kernel does not finish raises: a singular joint (the kernel measures
-  the rule of :data:`~planargeo.errors.COND_LIMIT` at the joint's point)
-  :class:`~planargeo.errors.SingularConfigurationError`, a non-finite input or result
-  the error the general array recursion raises for it, naming the argument.
-
-:func:`check_finite` is the last step of every general path: finite input that gives a
-non-finite result raises :class:`~planargeo.errors.NumericOverflowError`.
-
-**No wait on the compiler in a lesson.**  numba keeps what it compiled in its cache
-(``cache=True``: files beside ``kernels.py`` in ``__pycache__``, or under
-``NUMBA_CACHE_DIR``), and loads it in a fraction of a second.  That cache is not portable:
-numba writes machine code for this machine's processor and keys it to ``kernels.py``'s
-modification time, so it cannot ship inside the package or the repository.  The set-up
-(``make lab``, ``make test``: the Makefile's install step) therefore fills it on the machine
-itself with ``python -m planargeo.algorithms.compiled --warm`` (:func:`warm`: every signature
-the package calls, one state and batches, forward and inverse, with and without external
-wrenches).  When the cache is cold anyway (an install without the Makefile, or after an edit
-of ``kernels.py``), the first call says in one line on the terminal or notebook that it is
-compiling, instead of waiting silently.
+``import planargeo`` imports neither numba nor the kernels: :func:`kernels_for` imports them
+for the first model they cover.  :func:`evaluate` hands one float64 state straight to the
+kernel (compiled for that one type; any other type raises numba's ``TypeError`` instead of
+compiling), validates anything else by :func:`planargeo.mechanics.kinematics.check_state`, and
+turns a state the kernel does not finish into the general recursion's named error.  numba's
+cache is per machine, so ``make lab`` / ``make test`` fill it with
+``python -m planargeo.algorithms.compiled --warm`` (:func:`warm`); a cold cache says so once.
 """
 from __future__ import annotations
 
@@ -64,12 +39,12 @@ def kernels_for(model):
     Parameters
     ----------
     model : Model
-        The mechanism; the kernels cover it when its joints are all revolute, prismatic or fixed.
+        The mechanism; covered when its joints are all revolute, prismatic or fixed.
 
     Returns
     -------
     Compiled or None
-        The kernels module, tables and shapes; None for a model with other joint kinds.
+        The kernels module, tables and shapes.
 
     Examples
     --------
@@ -94,8 +69,6 @@ def kernels_for(model):
 def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
     """Forward (``z = τ``) or inverse (``inverse=True``, ``z = q̈``) dynamics: the kernels, else ``general``.
 
-    ``general(model, q, qd, z, f_ext)`` is the caller's general recursion, run for a model
-    the kernels do not cover.  The three roads of a call and the errors are the module's.
     A batch raises for its first state a kernel does not finish, as that state would alone.
 
     Parameters
@@ -103,15 +76,13 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
     model : Model
         The mechanism.
     inverse : bool
-        Inverse dynamics (``z = q̈``) instead of forward (``z = τ``).
-    q, qd : array_like, shape (..., nq)
-        Joint positions and velocities.
-    z : array_like, shape (..., nq)
-        Joint forces (forward) or accelerations (inverse).
+        Inverse dynamics instead of forward.
+    q, qd, z : array_like, shape (..., nq)
+        Joint positions, velocities, and forces (forward) or accelerations (inverse).
     f_ext : array_like, shape (..., N, 3) or None
         External world wrenches.
     general : callable
-        ``general(model, q, qd, z, f_ext)``, the general recursion.
+        ``general(model, q, qd, z, f_ext)``, the general recursion for models the kernels do not cover.
 
     Returns
     -------
@@ -156,12 +127,7 @@ _READY: set = set()
 
 
 def _closed(kernels) -> None:
-    """Let the one-state kernel compile nothing at call time (its one type is added by :func:`_ready`).
-
-    A call with another type (a list, int64 or read-only arrays, a batch) then raises numba's
-    ``TypeError`` at once, instead of compiling a new version for seconds: :func:`evaluate`
-    validates the arguments and hands the kernels that one type.
-    """
+    """Let the one-state kernel compile nothing at call time: another type raises ``TypeError`` at once."""
     kernel = kernels.dynamics_one
     if hasattr(kernel, "_can_compile"):             # (NUMBA_DISABLE_JIT=1: a plain Python function)
         kernel._can_compile = False                 # numba's disable_compile(), allowed before any signature
@@ -204,9 +170,6 @@ def _failed(kernels, tables, model, inverse, q, qd, z, f_ext, general):
 def check_finite(result, what: str, **inputs):
     """Return ``result``, or raise :class:`~planargeo.errors.NumericOverflowError` if it is not finite.
 
-    ``inputs`` are the (finite, validated) arguments it came from; the message names the
-    largest of them.
-
     Parameters
     ----------
     result : numpy.ndarray
@@ -214,7 +177,7 @@ def check_finite(result, what: str, **inputs):
     what : str
         Its name in the message.
     **inputs : numpy.ndarray
-        The arguments it came from, by name.
+        The (finite) arguments it came from, by name; the message names the largest.
 
     Returns
     -------
@@ -224,8 +187,7 @@ def check_finite(result, what: str, **inputs):
     Raises
     ------
     NumericOverflowError
-        If ``result`` holds NaN or infinity; the message names the largest of ``inputs``
-        and its size.
+        If ``result`` holds NaN or infinity.
 
     Examples
     --------
@@ -251,17 +213,13 @@ _told = []
 def cache_is_warm(kernels=None) -> bool:
     """Whether numba's cache holds the entry points of :mod:`planargeo.algorithms.kernels` for its current source.
 
-    Numba's own rule, read from each kernel's cache index: it holds compiled versions and was
-    written for the source as it is now (numba ≥ 0.6x stamps an index with a hash of the
-    source's content, so a file merely touched stays warm).  Where numba's cache files do not
-    offer that (another version), the older heuristic: an index not older than ``kernels.py``.
-    It does not compile anything.
+    numba's own rule (an index stamped for the source as it is now), else an index not older than
+    ``kernels.py``; compiles nothing.
 
     Parameters
     ----------
     kernels : module, optional
-        The kernels' module, :mod:`planargeo.algorithms.kernels` if not given (then
-        imported, which compiles nothing).
+        The kernels' module (default :mod:`planargeo.algorithms.kernels`).
 
     Returns
     -------
@@ -304,21 +262,17 @@ def _say_if_cold(kernels) -> None:
 
 
 def warm(progress=None) -> list[tuple[str, float]]:
-    """Compile every kernel signature the package calls, so that numba's cache holds them (or load them from it).
-
-    The signatures :func:`evaluate` hands the kernels: one state and a batch, forward and
-    inverse dynamics, without and with external wrenches, and the singular-joint check
-    (the types do not depend on the model's size or joint kinds).
+    """Compile (or load from numba's cache) every kernel signature :func:`evaluate` calls.
 
     Parameters
     ----------
     progress : callable, optional
-        Called with one line of text before each step and after it (e.g. ``print``).
+        Called with one line of text before and after each step (e.g. ``print``).
 
     Returns
     -------
     list of (str, float)
-        Each step and the seconds it took (a fraction of a second each when the cache was warm).
+        Each step and the seconds it took.
 
     Examples
     --------

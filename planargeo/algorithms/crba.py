@@ -1,17 +1,5 @@
-"""Dense reference dynamics: mass matrix by composite rigid bodies, bias by inverse dynamics.
-
-The joint-space equations of motion are ``H(q) q̈ + C(q, q̇) = τ`` with
-
-* ``H = Σ_i J_iᵀ I_i J_i`` (``J_i`` the body Jacobian of thesis Remark 8),
-  computed by the composite-rigid-body recursion: with the composite inertia
-  ``Ic_i = I_i + Σ_{children c} Ic_c`` (all at the origin, so plain sums),
-  ``H[r, c] = s_rᵀ Ic_{body(c)} s_c`` for every coordinate ``r`` whose joint is on
-  the path from the ground to the body of coordinate ``c``, and ``H[c, r]`` its
-  transpose;
-* ``C = RNEA(q, q̇, 0, f_ext)`` (bias forces, gravity and external loads).
-
-:func:`forward_dynamics_crba` solves ``H q̈ = τ - C`` densely; it is the
-reference the recursive algorithms are tested against.
+"""Dense reference dynamics: ``H(q) q̈ + C(q, q̇) = τ`` with the mass matrix by composite rigid bodies
+and the bias by inverse dynamics, solved densely; the reference the recursive algorithms are tested against.
 """
 from __future__ import annotations
 
@@ -30,12 +18,10 @@ SINGULAR_RCOND = 1e-13
 
 
 def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
-    """Joint-space mass matrix ``H(q) = Σ_i J_iᵀ I_i J_i`` (..., nq, nq) (thesis Remark 8, 3.5, 3.10).
+    """Joint-space mass matrix ``H(q) = Σ_i J_iᵀ I_i J_i`` (..., nq, nq) (thesis 3.5, 3.10; Remark 8).
 
-    ``J_i = [s_1 … s_i]`` (Remark 8) maps joint rates to the twist of body
-    ``i``; projecting the Newton-Euler forces (3.10) on the joint axes (3.5)
-    gives ``τ = H q̈ + C``.  The composite-rigid-body recursion sums the
-    inertias at the origin: ``H[r, c] = s_rᵀ Ic_{body(c)} s_c``.
+    The composite-rigid-body recursion sums the inertias at the origin:
+    ``H[r, c] = s_rᵀ Ic_{body(c)} s_c`` for ``r`` on the path to ``body(c)``.
 
     Parameters
     ----------
@@ -54,7 +40,7 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
     InputError
         An unknown ``method``, or ``q`` of the wrong shape, not finite, or complex.
     NumericOverflowError
-        If ``H`` is not finite for finite ``q`` (coordinates out of the float range).
+        If ``H`` is not finite for finite ``q``.
 
     Examples
     --------
@@ -65,12 +51,6 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
     >>> (mass_matrix(chain_model(2), [0.0, 0.0]) * 6).round(12)
     array([[16.,  5.],
            [ 5.,  2.]])
-
-    Folded back (q2 = π), link 2's centre is at ``x = 0.5``: ``H11 = 1/3 + 1/12 + 0.5²``:
-
-    >>> (mass_matrix(chain_model(2), [0.0, np.pi], method="jacobian") * 6).round(12)
-    array([[ 4., -1.],
-           [-1.,  2.]])
     """
     if method not in ("crba", "jacobian"):
         raise InputError(f"method must be 'crba' or 'jacobian', got {method!r}")
@@ -96,10 +76,7 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
 def bias_forces(model: Model, q, qd, f_ext=None) -> np.ndarray:
     """Bias forces ``C(q, q̇) = τ(q, q̇, q̈ = 0)``: velocity terms, gravity, loads (thesis 3.5, 3.10, 3.11).
 
-    The joint forces that keep every joint from accelerating, by inverse
-    dynamics with ``q̈ = 0`` (so ``p_i`` of 3.11 and ``κ_i`` of 2.19 enter), on the
-    array recursion :func:`~planargeo.algorithms.rnea.newton_euler` (the dense reference
-    shares no code with the compiled kernels).
+    By the array recursion :func:`~planargeo.algorithms.rnea.newton_euler` (no code shared with the kernels).
 
     Parameters
     ----------
@@ -112,14 +89,9 @@ def bias_forces(model: Model, q, qd, f_ext=None) -> np.ndarray:
 
     Examples
     --------
-    A unit rod at rest, horizontal: the gravity torque ``m g L / 2``; spinning
-    without gravity: no torque (the centripetal force passes through the pivot):
-
     >>> from planargeo.mechanics.model import chain_model
-    >>> bias_forces(chain_model(1), [0.0], [0.0])
+    >>> bias_forces(chain_model(1), [0.0], [0.0])          # a unit rod at rest: m g L / 2
     array([4.905])
-    >>> bias_forces(chain_model(1, gravity=(0, 0)), [0.3], [5.0]).round(12)
-    array([0.])
     """
     q, qd, _, f_ext, _, shape = check_state(model, q, qd, None, f_ext)
     return newton_euler(model, q, qd, np.zeros(shape + (model.nq,)), f_ext).tau
@@ -127,9 +99,6 @@ def bias_forces(model: Model, q, qd, f_ext=None) -> np.ndarray:
 
 def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     """Joint accelerations by the dense solve ``H q̈ = τ - C`` (thesis 3.5, 3.10 in joint space; independent reference).
-
-    ``H`` by :func:`mass_matrix`, ``C`` by :func:`bias_forces`.  A model
-    without joint coordinates (every joint ``"fixed"``) gives an empty ``q̈``.
 
     Parameters
     ----------
@@ -139,32 +108,21 @@ def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     Returns
     -------
     ndarray (..., nq)
+        Empty for a model without coordinates.
 
     Raises
     ------
     NumericOverflowError
-        If finite input gives a result that is not finite (e.g. speeds of 1e160).
+        If finite input gives a result that is not finite.
     SingularConfigurationError
-        If ``H`` is numerically singular: ``λ_min(H) ≤ SINGULAR_RCOND λ_max(H)``
-        (``.cond = λ_max / λ_min``).  The dense reference keeps this rule of its
-        own, not the joints' rule of :data:`planargeo.errors.COND_LIMIT` that
-        the recursive methods share: a joint whose ``sᵀAs`` vanishes need not
-        make ``H`` ill-conditioned (a lone point-mass pendulum has ``H = m d²``,
-        condition number 1), so ``crba`` may answer states they refuse
-        (``docs/simulation.md``, "One rule for singular joints").
+        If ``λ_min(H) ≤ SINGULAR_RCOND λ_max(H)`` (``.cond = λ_max / λ_min``): a rule of its own, so it
+        may answer states the joints' rule refuses (``docs/simulation.md``).
 
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
     >>> forward_dynamics_crba(chain_model(1), [0.0], [0.0], [0.0])     # -1.5 g / L
     array([-14.715])
-
-    A welded body has no coordinates:
-
-    >>> from planargeo.mechanics.model import Body, Joint, Model
-    >>> welded = Model([Body(1.0, (0.5, 0.0), 0.1)], [Joint("fixed", (0.0, 0.0, 0.0))], [-1])
-    >>> forward_dynamics_crba(welded, [], [], [])
-    array([], dtype=float64)
     """
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
     H = mass_matrix(model, q)

@@ -1,40 +1,16 @@
 """The compiled recursions: ABA (thesis 3.31-3.42) and RNEA (2.18, 3.10, 3.5), one state at a time or a block.
 
-These are the hot loops of :func:`planargeo.algorithms.aba.forward_dynamics` and
-:func:`planargeo.algorithms.rnea.inverse_dynamics` for models whose joints are all
-revolute, prismatic or fixed.  They are the equations of the thesis as plain loops over
-the bodies, on arrays allocated once per call (:func:`workspace`), compiled by numba
-(``@njit(cache=True)``: compiled on first use, then loaded from numba's cache).  Run
-with ``NUMBA_DISABLE_JIT=1`` they are ordinary Python, to step through in a debugger.
-
-**Each body at its joint.**  The equations of 3.6 hold at any reference point, as long as
-the quantities they combine are taken at the same one.  Here body ``i``'s twist,
-inertia, forces and accelerations are taken at its joint's point ``o_i`` (world axes),
-where its joint is simplest: a revolute joint is ``s = [0, 0, 1]``, a prismatic joint
-along ``(c, s)`` is ``s = [c, s, 0]``, a fixed joint has no column.  Between a body and
-its parent, twists and accelerations move out by ``r_i = o_i - o_λ`` (``X_P``, thesis
-4.8) and wrenches and inertias move in (4.24, 1.68): the parent's step then reads the
-child's articulated inertia and bias force at its own point.  Only these offsets, never
-world positions, enter the dynamics, so a mechanism far from the origin is computed as
-accurately as one at it; and the singularity rule of
-:data:`planargeo.errors.COND_LIMIT`, measured at the joint's point, reads
-``A_i`` and ``s_i`` as they are.  Trees sum every child into its parent (3.38-3.39 with
-``i+1`` read as "each child of ``i``").
-
-**Batches.**  :func:`articulated_body_block` runs the ABA on blocks of :data:`BLOCK` states
-with the states innermost (each per-body step a loop over the block's states, which the
-compiler vectorises, and the states' independent chains overlap), giving each state the
-numbers :func:`articulated_body_state` gives it; a block it does not finish is run state by
-state.  Large batches are shared among threads, whole blocks at a time.
-
-A state kernel returns ``-1`` when it succeeded, the index of a joint the singularity
-rule refuses (its condition number left in ``w.D``), or ``-2`` when an input or the
-result is not finite: the caller then runs the general path, which raises the package's
-error naming the argument.
-
-Model tables (:func:`tables`): ``kind`` (N,) joint codes, ``parent`` (N,), ``body``
-(N, 8) ``[px, py, cos θ, sin θ, m, cx, cy, J]`` (joint placement in the parent's frame,
-mass, centre of mass in the body frame, inertia about it) and ``gravity`` (2,).
+The hot loops of :func:`planargeo.algorithms.aba.forward_dynamics` and
+:func:`planargeo.algorithms.rnea.inverse_dynamics` for revolute, prismatic and fixed joints:
+plain loops over the bodies on arrays allocated once per call, compiled by numba
+(``NUMBA_DISABLE_JIT=1`` runs them as Python).  Each body is taken at its joint's point ``o_i``
+(world axes), where a revolute joint is ``s = [0, 0, 1]`` and a prismatic one ``[c, s, 0]``;
+twists move out and wrenches and inertias move in by ``r_i = o_i - o_λ`` (4.8, 4.24, 1.68), so
+only offsets, never world positions, enter.  A state kernel returns :data:`OK`, the index of a
+joint the rule of :data:`planargeo.errors.COND_LIMIT` refuses (its condition number left in
+``w.D``), or :data:`NOT_FINITE`; the caller then runs the general path, which raises.
+Model tables (:func:`tables`): ``kind``, ``parent`` (N,), ``body`` (N, 8)
+``[px, py, cos θ, sin θ, m, cx, cy, J]`` and ``gravity`` (2,).
 """
 from __future__ import annotations
 
@@ -63,8 +39,7 @@ BLOCK = 256
 jit = njit(cache=True, nogil=True, error_model="numpy")
 inline = njit(cache=True, nogil=True, error_model="numpy", inline="always")
 
-#: Parameters the kernels share, written once: ``{tables}`` the model's tables (:func:`tables`)
-#: as separate arrays, ``{model}`` as one tuple, then the state and the scratch arrays of one state.
+#: Parameter entries the kernels' docstrings share (:func:`_doc`).
 _PARAMETERS = {"{tables}": """kind, parent : numpy.ndarray of int, shape (N,)
         Joint kind codes and parent indices (:func:`tables`).
     body : numpy.ndarray, shape (N, 8)
@@ -86,12 +61,9 @@ def _doc(f):
     return f
 
 
-#: Per-state arrays, one row per body, all at the body's joint point ``o_i`` (world axes):
-#: ``origin`` ``o_i`` in the world, ``r`` the offset ``o_i - o_λ`` from the parent's point,
-#: ``frame`` the body frame (its origin less ``o_i``, then cos θ, sin θ), ``s`` the joint twist,
-#: ``v`` (3.32), ``kappa`` (3.33), ``I`` the inertia (then the articulated inertia ``A``),
-#: ``p`` the bias force (3.34; then ``d``, or the joint force ``f``), ``U = A s``,
-#: ``D = sᵀAs``, ``u = τ - sᵀ(Aκ + d)``, ``a`` the acceleration (3.42, 2.18).
+#: Per-state arrays, one row per body at its joint point: ``origin`` ``o_i``, ``r = o_i - o_λ``, ``frame``
+#: (origin less ``o_i``, cos θ, sin θ), ``s``, ``v`` (3.32), ``kappa`` (3.33), ``I`` (then ``A``), ``p``
+#: (3.34; then ``d`` or ``f``), ``U = A s``, ``D = sᵀAs``, ``u = τ - sᵀ(Aκ + d)``, ``a`` (3.42, 2.18).
 Workspace = namedtuple("Workspace", "origin r frame s v kappa I p U D u a")
 
 
@@ -127,7 +99,7 @@ def tables(model):
 
 @inline
 def workspace(N):
-    """Fresh arrays for one state of an ``N``-body model (see :data:`Workspace`).
+    """Fresh :data:`Workspace` arrays for one state of an ``N``-body model.
 
     Parameters
     ----------
@@ -170,9 +142,7 @@ def _finite_inputs(x, y, z, fext):
 def kinematics_state(model, q, qd, fext, w):
     """Joint points, joint twists, velocities, bias terms and inertias of every body, base to tip (thesis 3.31-3.34).
 
-    Fills ``w.origin, w.r, w.frame, w.s, w.v, w.kappa, w.I, w.p`` for the state ``q, qd``
-    (``fext``: (N, 3) external wrenches at the world origin, or None), each body at its
-    joint's point.
+    Fills ``w.origin, w.r, w.frame, w.s, w.v, w.kappa, w.I, w.p``, each body at its joint's point.
 
     Parameters
     ----------
@@ -237,9 +207,8 @@ def kinematics_state(model, q, qd, fext, w):
 
 @jit
 def joint_cond(A, s, D):
-    """``‖A‖_F ‖s‖² / |D|``: the condition number of the rule of ``COND_LIMIT`` for ``A``, ``s`` at the joint's point.
+    """``‖A‖_F ‖s‖² / |D|``, the rule of ``COND_LIMIT`` at the joint's point, scale-safe.
 
-    Scale-safe (inertias of 1e-170 or 1e160 have squares out of the float range);
     ``inf`` when ``D = sᵀAs`` is 0, NaN when ``A`` or ``D`` is not finite.
     """
     big = 0.0
@@ -279,9 +248,6 @@ def _parent_acceleration(a, r, lam, i):
 def articulated_body_state(model, q, qd, tau, fext, w, qdd):
     """The recursive algorithm (thesis 3.6, 3.31-3.42) for one state: writes ``q̈`` into ``qdd``.
 
-    Returns :data:`OK`, :data:`NOT_FINITE`, or the index of the first joint (tip to base)
-    the singularity rule refuses, its condition number left in ``w.D``.
-
     Parameters
     ----------
     {model}
@@ -294,7 +260,7 @@ def articulated_body_state(model, q, qd, tau, fext, w, qdd):
     Returns
     -------
     int
-        :data:`OK`, :data:`NOT_FINITE`, or the index of a singular joint.
+        :data:`OK`, :data:`NOT_FINITE`, or the first joint (tip to base) the rule refuses.
     """
     if not _finite_inputs(q, qd, tau, fext):
         return NOT_FINITE
@@ -365,8 +331,6 @@ def articulated_body_state(model, q, qd, tau, fext, w, qdd):
 def newton_euler_state(model, q, qd, qdd, fext, w, tau):
     """Inverse dynamics (thesis 2.18, 3.10, 3.5) for one state: writes ``τ`` into ``tau``.
 
-    Returns :data:`OK`, or :data:`NOT_FINITE` when an input or the result is not finite.
-
     Parameters
     ----------
     {model}
@@ -425,18 +389,15 @@ def _fits(kind, x, y, z, fext):
 def dynamics_one(inverse, kind, parent, body, gravity, q, qd, z, fext):
     """``q̈`` (forward, ``z = τ``) or ``τ`` (``inverse``, ``z = q̈``) of one state, or None if not :data:`OK`.
 
-    Float64 arrays (nq,) and ``fext`` (N, 3) or None; arrays of other shapes give None too
-    (the caller then validates them and names the problem).
+    Arrays of other shapes give None too (the caller then validates them and names the problem).
 
     Parameters
     ----------
     inverse : bool
-        Inverse dynamics (:func:`newton_euler_state`) instead of forward (:func:`articulated_body_state`).
+        Inverse dynamics instead of forward.
     {tables}
-    q, qd : numpy.ndarray, shape (nq,)
-        Joint positions and velocities (float64).
-    z : numpy.ndarray, shape (nq,)
-        Joint forces (forward) or accelerations (inverse).
+    q, qd, z : numpy.ndarray, shape (nq,)
+        Joint positions, velocities, and forces (forward) or accelerations (inverse).
     fext : numpy.ndarray, shape (N, 3) or None
         External world wrenches at the origin.
 
@@ -465,7 +426,7 @@ def singular_joint(kind, parent, body, gravity, q, qd, tau, fext):
     ----------
     {tables}
     q, qd, tau : numpy.ndarray, shape (nq,)
-        Joint positions, velocities and forces (float64).
+        Joint positions, velocities and forces.
     fext : numpy.ndarray, shape (N, 3) or None
         External world wrenches at the origin.
 
@@ -479,12 +440,9 @@ def singular_joint(kind, parent, body, gravity, q, qd, tau, fext):
     return (status, w.D[status]) if status >= 0 else (-1, 0.0)
 
 
-#: Per-block arrays of :func:`articulated_body_block`, the states of a block innermost (the last axis,
-#: :data:`BLOCK` long) so that each per-body step is a loop over states that vectorises; one row more
-#: than bodies, the last (index -1, a parent of -1) the ground: at the world origin, at rest.
-#: ``x, y, z`` the inputs and ``out`` the result (nq, BLOCK); ``A`` the upper triangle
-#: ``A00 A01 A02 A11 A12 A22``; ``c`` (3.39) and ``B`` (3.38, the upper triangle) what a body passes
-#: its parent; ``sq = s q̇``; ``ok`` whether a state passed the quick singularity test.
+#: Per-block arrays, the block's states innermost (they vectorise); one row more than bodies, the
+#: last (parent -1) the ground at rest.  ``x, y, z, out`` (nq, BLOCK); ``A``, ``B`` upper triangles
+#: ``A00 A01 A02 A11 A12 A22``; ``c`` (3.39); ``sq = s q̇``; ``ok``: passed the quick singularity test.
 Columns = namedtuple("Columns", "x y z out origin r frame s sq v kappa A d U D u a c B ok")
 
 
@@ -494,12 +452,8 @@ def columns(N, nq, L):
 
     Parameters
     ----------
-    N : int
-        Number of bodies.
-    nq : int
-        Number of coordinates.
-    L : int
-        Block length (states).
+    N, nq, L : int
+        Numbers of bodies, coordinates and states per block.
 
     Returns
     -------
@@ -517,22 +471,17 @@ def columns(N, nq, L):
 
 @jit
 def articulated_body_block(model, q, qd, tau, fext, lo, hi, w, qdd):
-    """:func:`articulated_body_state` for the states ``lo:hi`` (at most :data:`BLOCK`) of the (B, nq) arrays at once.
+    """:func:`articulated_body_state` for the states ``lo:hi`` (at most :data:`BLOCK`) at once (thesis 3.31-3.42).
 
-    The same equations in the same order, each per-body step a loop over the block's
-    states (``w``: :func:`columns`), so every state gets the numbers it gets alone.  Returns
-    True when every state succeeded; False when a state is not finite or not clearly
-    regular (``_clearly_regular``): the caller then runs :func:`articulated_body_state`
-    on the block, which tells.
+    The same equations in the same order, each per-body step a loop over the block's states,
+    so every state gets the numbers it gets alone.
 
     Parameters
     ----------
     model : tuple
         The model's :func:`tables`.
-    q, qd : numpy.ndarray, shape (B, nq)
-        Joint positions and velocities of B states (C-contiguous float64).
-    tau : numpy.ndarray, shape (B, nq)
-        Joint forces.
+    q, qd, tau : numpy.ndarray, shape (B, nq)
+        Joint positions, velocities and forces of B states.
     fext : numpy.ndarray, shape (B, N, 3) or None
         External world wrenches at the origin.
     lo, hi : int
@@ -545,7 +494,8 @@ def articulated_body_block(model, q, qd, tau, fext, lo, hi, w, qdd):
     Returns
     -------
     bool
-        Whether every state of the block succeeded.
+        Whether every state succeeded; False (a state not finite or not clearly regular):
+        the caller reruns the block by :func:`articulated_body_state`, which tells.
     """
     kind, parent, body, gravity = model
     n, N = hi - lo, kind.shape[0]
@@ -690,12 +640,7 @@ def articulated_body_block(model, q, qd, tau, fext, lo, hi, w, qdd):
 
 @jit
 def _block(inverse, model, x, y, z, fext, out, lo, hi):
-    """One state kernel on the rows ``lo:hi`` of the (B, nq) arrays ``x, y, z`` into ``out``, one workspace.
-
-    ``inverse``: :func:`newton_euler_state` (``z = q̈``), else :func:`articulated_body_state`
-    (``z = τ``); ``fext`` (B, N, 3) or None.  Returns the first state that did not
-    succeed, or ``hi``.
-    """
+    """One state kernel on the rows ``lo:hi`` into ``out``; the first state that failed, or ``hi``."""
     w = workspace(model[0].shape[0])
     for b in range(lo, hi):
         f = fext[b] if fext is not None else None
@@ -710,9 +655,7 @@ def _block(inverse, model, x, y, z, fext, out, lo, hi):
 
 @jit
 def _range(inverse, model, x, y, z, fext, out, lo, hi):
-    """The states ``lo:hi``: forward dynamics a block of :data:`BLOCK` at a time by :func:`articulated_body_block`
-    (a block it does not finish, state by state), inverse dynamics by :func:`_block`.  The first failed state, or ``hi``.
-    """
+    """The states ``lo:hi``, forward a :data:`BLOCK` at a time (a failed block state by state); the first failure, or ``hi``."""
     if inverse or hi - lo == 1:                     # (one state: its columns would cost more than the kernel)
         return _block(inverse, model, x, y, z, fext, out, lo, hi)
     w = columns(model[0].shape[0], x.shape[1], min(BLOCK, hi - lo))
@@ -732,7 +675,7 @@ _POOL_LOCK = threading.Lock()
 
 
 def _pool():
-    """The threads that share a large batch (as many as numba's, ``NUMBA_NUM_THREADS``), started on first use."""
+    """The threads that share a large batch (``NUMBA_NUM_THREADS`` of them), started on first use."""
     with _POOL_LOCK:
         if not _POOL:
             _POOL.append(ThreadPoolExecutor(get_num_threads(), thread_name_prefix="planargeo-kernels"))
@@ -741,12 +684,10 @@ def _pool():
 
 @_doc
 def dynamics_many(inverse, kind, parent, body, gravity, x, y, z, fext):
-    """``(out, declined)`` of B states, :func:`dynamics_one` of each: ``out`` (B, nq) is valid when ``declined`` is -1.
+    """``(out, declined)`` of B states, :func:`dynamics_one` of each; ``declined`` is -1 or the first failed state.
 
-    Else ``declined`` is the first state that did not succeed (see the module).  :func:`_range`
-    runs on the B states, in one run per thread of whole blocks (the kernels release the GIL):
-    Python's threads, which sleep while they wait, rather than numba's OpenMP ones, which spin: on a
-    machine busy with other work the spinning cost 3× the time of one thread (N = 10, 10⁴ states, 2 cores).
+    Runs :func:`_range` on whole blocks per thread: Python's threads, which sleep while they
+    wait, not numba's OpenMP ones, which spin (3× slower on a busy 2-core machine).
 
     Parameters
     ----------
@@ -754,8 +695,7 @@ def dynamics_many(inverse, kind, parent, body, gravity, x, y, z, fext):
         Inverse dynamics instead of forward.
     {tables}
     x, y, z : numpy.ndarray, shape (B, nq)
-        Joint positions, velocities, and forces (forward) or accelerations (inverse) of B
-        states (C-contiguous float64).
+        Joint positions, velocities, and forces (forward) or accelerations (inverse).
     fext : numpy.ndarray, shape (B, N, 3) or None
         External world wrenches at the origin.
 

@@ -1,17 +1,9 @@
-"""Recursive Newton-Euler inverse dynamics (thesis 3.5, 3.9-3.12, absolute formulation).
+"""Recursive Newton-Euler inverse dynamics (thesis 3.5, 3.9-3.12).
 
-Outwards, ``a_i = a_λ + s_i q̈_i + κ_i`` (2.18) with ``a_ground = 0``
-(gravity is an applied wrench in ``p_i``, 3.11).  Inwards, each body's joint
-force is the force needed to move it plus everything carried by its children,
-
-    ``f_i = I_i a_i + p_i + Σ_{c: λ(c) = i} f_c``       (3.10 for a tree)
-
-and the joint torque is its projection ``τ_i = s_iᵀ f_i`` (3.5).
-
-As for forward dynamics (:mod:`planargeo.algorithms.aba`), the recursion is written
-twice: :func:`newton_euler` on arrays (any joint kind, batches, the whole workspace),
-and :func:`planargeo.algorithms.kernels.newton_euler_state`, compiled, which
-:func:`inverse_dynamics` runs for models of revolute, prismatic and fixed joints.
+Outwards ``a_i = a_λ + s_i q̈_i + κ_i`` (2.18, ``a_ground = 0``, gravity in ``p_i``); inwards
+``f_i = I_i a_i + p_i + Σ_children f_c`` (3.10) and ``τ_i = s_iᵀ f_i`` (3.5).
+:func:`newton_euler` runs it on arrays; :func:`inverse_dynamics` runs the compiled
+:func:`planargeo.algorithms.kernels.newton_euler_state` where it covers the model.
 """
 from __future__ import annotations
 
@@ -38,16 +30,15 @@ def newton_euler(model: Model, q, qd, qdd, f_ext=None) -> Data:
     Returns
     -------
     Data
-        Kinematics fields plus ``qdd``, ``a`` (..., N, 3) accelerations (2.18),
-        ``f`` (..., N, 3) joint forces (the load joint ``i`` transmits from the
-        parent to body ``i``, 3.10) and ``tau`` (..., nq) (3.5).
+        Kinematics fields plus ``qdd``, ``a`` (2.18), ``f`` (the load joint ``i`` carries from the
+        parent to body ``i``, 3.10) and ``tau`` (3.5).
 
     Raises
     ------
     ShapeError, NonFiniteError, InputError
         Arguments of the wrong shape, not finite, or complex.
     NumericOverflowError
-        If finite input gives a ``τ`` that is not finite (e.g. ``q̈`` near 1e308).
+        If finite input gives a ``τ`` that is not finite.
 
     Examples
     --------
@@ -81,21 +72,18 @@ def newton_euler(model: Model, q, qd, qdd, f_ext=None) -> Data:
 
 
 def inverse_dynamics(model: Model, q, qd, qdd, f_ext=None, *, return_forces: bool = False):
-    """Joint forces/torques ``τ_i = s_iᵀ f_i`` that produce ``qdd`` (thesis 3.5, 3.10, 2.18; recursive Newton-Euler).
-
-    Accelerations outwards by 2.18, joint forces inwards by 3.10 (3.12 at the
-    tips, children summed for a tree), torques by 3.5.
+    """Joint forces/torques ``τ_i = s_iᵀ f_i`` that produce ``qdd`` (thesis 3.5, 3.10, 3.12, 2.18; recursive Newton-Euler).
 
     Parameters
     ----------
     model : Model
-        The mechanism (bodies, joints, parents, gravity).
+        The mechanism.
     q, qd, qdd : array_like (..., nq)
-        ``qd`` or ``qdd`` None: zeros.
+        The state; ``qd`` or ``qdd`` None: zeros.
     f_ext : array_like (..., N, 3), optional
         External world wrenches at the origin, one per body (besides gravity).
     return_forces : bool
-        Also return the joint forces ``f`` (..., N, 3) (world wrenches at the origin).
+        Also return the joint forces ``f`` (..., N, 3).
 
     Returns
     -------
@@ -114,16 +102,6 @@ def inverse_dynamics(model: Model, q, qd, qdd, f_ext=None, *, return_forces: boo
     >>> from planargeo.mechanics.model import chain_model
     >>> inverse_dynamics(chain_model(1, gravity=(0, 0)), [0.0], [0.0], [3.0])
     array([1.])
-
-    Holding it horizontal against gravity takes ``m g L / 2``; the joint force is the
-    pivot's reaction (weight plus couple), and a batch of states is one call:
-
-    >>> tau, f = inverse_dynamics(chain_model(1), [0.0], [0.0], [0.0], return_forces=True)
-    >>> tau, f
-    (array([4.905]), array([[0.   , 9.81 , 4.905]]))
-    >>> inverse_dynamics(chain_model(1), [[0.0], [np.pi / 2]], [[0.0], [0.0]], [[0.0], [0.0]]).round(12)
-    array([[4.905],
-           [0.   ]])
     """
     if return_forces:
         w = newton_euler(model, q, qd, qdd, f_ext)
