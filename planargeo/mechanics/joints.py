@@ -1,22 +1,10 @@
 """Planar joints: motion spaces ``s`` and reaction spaces ``R`` (thesis 4.8, 5.61–5.63, 6.1).
 
-A joint allowing ``k`` degrees of freedom is described by its *motion space*
-``s`` (a ``(3, k)`` matrix whose columns are unit twists) and its *reaction
-space* ``R`` (a ``(3, 3 - k)`` matrix whose columns are unit wrenches) with
-
-    sᵀ R = 0          (thesis 5.61, 6.1)
-
-i.e. every reaction wrench is reciprocal to (does no work on) every joint
-motion.  In the package's homogeneous coordinates a unit rotation about a
-point *is* that point and a unit force *is* its line of action, so ``sᵀR = 0``
-says that the reaction lines pass through the joint's pivot (revolute) or
-through the joint's ideal point (prismatic: forces perpendicular to the slide,
-plus the line at infinity, a couple).
-
-Everything is expressed in world coordinates at the global origin, with
-twists ordered ``[vx, vy, wz]`` and wrenches ``[fx, fy, tz]``.
-
-The reaction bases are chosen to be meaningful, as in thesis 4.8 / 5.63:
+A ``k``-dof joint has a motion space ``s`` (3×k unit twists) and a reaction space ``R``
+(3×(3-k) unit wrenches) with ``sᵀR = 0`` (5.61, 6.1): in homogeneous coordinates a unit rotation
+*is* its point and a unit force *is* its line, so the reaction lines pass through the pivot
+(revolute) or the slide's ideal point (prismatic).  World coordinates at the origin; twists
+``[vx, vy, wz]``, wrenches ``[fx, fy, tz]``.  The bases follow thesis 4.8 / 5.63:
 
 ============================  ==============================  =============================================
 kind (dof)                    ``s`` columns                   ``R`` columns
@@ -24,33 +12,18 @@ kind (dof)                    ``s`` columns                   ``R`` columns
 ``revolute`` (1)              rotation about ``p``            unit forces through ``p`` along x, along y
 ``prismatic`` (1)             translation along ``e``         unit force through ``p`` along ``e⊥``, couple
 ``revolute_prismatic`` (2)    translation ``e``,              unit force through ``p`` along ``e⊥``
-                              rotation about ``p``
+                              rotation about ``p`` (4.74)
 ``twin_prismatic`` (2)        translations ``e``, ``e⊥``      unit couple (the line at infinity)
 ``plane`` (3)                 translations ``e``, ``e⊥``,     (none)
                               rotation about ``p``
 ``fixed`` (0)                 (none)                          unit forces through ``p`` along x, y, couple
 ============================  ==============================  =============================================
 
-(``e⊥ = (-e_y, e_x)``, the direction ``e`` turned by +90°, as in thesis 5.63.)
-The ``revolute_prismatic`` columns follow the thesis's order (4.74):
-translation first, then rotation.
-
-:class:`JointSpace` is a small frozen object for one joint (each constructor below,
-:func:`revolute` to :func:`fixed`, makes one: ``point`` and ``direction`` of shape
-``(2,)``); :func:`motion_space` and :func:`reaction_space` are the vectorised array
-functions behind it, which broadcast, and
-:func:`R_of` gives ``R`` of a joint known only by its motion space ``s`` (as the
-algorithms know it).
-
-Note: thesis 4.8.4 calls its 2-dof "twin prismatic" joint (translations x
-and y, 4.79) a *plane joint*; here that joint is ``twin_prismatic``
-(:func:`twin_prismatic`; with ``direction = (1, 0)`` its ``s`` is 4.79
-exactly, and its reaction space is the unit couple ``[0, 0, 1]``, the line at
-infinity, whatever ``point``), while ``plane`` is the 3-dof free planar joint
-of the package's model (:class:`planargeo.mechanics.model.Joint` kinds), whose reaction
-space is empty.  The column order of every kind the model knows matches
-:func:`planargeo.mechanics.kinematics.joint_axes` (``twin_prismatic``'s columns are the
-first two of ``plane``).
+``e⊥`` is ``e`` turned by +90° (5.63).  Thesis 4.8.4's 2-dof "plane joint" (4.79) is
+``twin_prismatic`` here; ``plane`` is the 3-dof free joint of :class:`planargeo.mechanics.model.Joint`.
+Column orders match :func:`planargeo.mechanics.kinematics.joint_axes`.  :class:`JointSpace` is one
+frozen joint (made by :func:`revolute` ... :func:`fixed`); :func:`motion_space` and
+:func:`reaction_space` broadcast; :func:`R_of` reads ``R`` off a joint's ``s``.
 """
 from __future__ import annotations
 
@@ -58,7 +31,7 @@ import functools
 
 import numpy as np
 
-from planargeo._validate import as_xy, overflow_checked
+from planargeo._validate import as_array, as_xy, overflow_checked
 from planargeo.errors import InputError, ShapeError
 from planargeo.geometry._docs import entries
 from planargeo.screws.twists import unit_rotation, unit_translation
@@ -74,10 +47,13 @@ DOF = {"revolute": 1, "prismatic": 1, "revolute_prismatic": 2, "twin_prismatic":
 
 _USES_DIRECTION = ("prismatic", "revolute_prismatic", "twin_prismatic", "plane")
 
-#: The parameters of the joint constructors, described once (:func:`planargeo.geometry._docs.entries`).
+_POINT = "point : array_like, shape (2,), optional\n    A point of the joint (m); default the origin."
+_DIRECTION = "direction : array_like, shape (2,), optional\n    Sliding direction (non-zero); default +x."
+#: The sections of the joint constructors, written once (:func:`planargeo.geometry._docs.entries`).
 _documented = entries({
-    "point": "point : array_like, shape (2,), optional\n    A point of the joint (m); default the origin.",
-    "direction": "direction : array_like, shape (2,), optional\n    Sliding direction (non-zero); default +x.",
+    "point": f"Parameters\n----------\n{_POINT}",
+    "point_direction": f"Parameters\n----------\n{_POINT}\n{_DIRECTION}",
+    "joint": "Returns\n-------\nJointSpace\n    The joint (its ``s`` and ``R``: module table).",
 })
 
 
@@ -116,19 +92,14 @@ def motion_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
     kind : {"revolute", "prismatic", "revolute_prismatic", "twin_prismatic", "plane", "fixed"}
         Joint kind (:data:`KINDS`).
     point : array_like, shape (..., 2)
-        The joint's pivot (revolute), a point on the slide (prismatic), the
-        joint frame's origin (plane, twin prismatic: its ``s`` and ``R`` do
-        not depend on it), the weld point (fixed).
+        The pivot, a point on the slide, the joint frame's origin or the weld point.
     direction : array_like, shape (..., 2)
-        Slide direction (prismatic kinds), the joint frame's x axis (plane,
-        twin prismatic); normalised; ignored by ``revolute`` and ``fixed``.
-        A zero direction raises :class:`~planargeo.errors.DegenerateGeometryError`.
+        Slide direction or the joint frame's x axis (normalised; ignored by revolute and fixed).
 
     Returns
     -------
     ndarray, shape (..., 3, k)
-        Unit twists as columns, ``k = DOF[kind]``; leading dimensions broadcast
-        ``point`` and ``direction``.
+        Unit twists as columns, ``k = DOF[kind]``; ``point`` and ``direction`` broadcast.
 
     Examples
     --------
@@ -136,16 +107,6 @@ def motion_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
     array([[ 1.],
            [-2.],
            [ 1.]])
-    >>> motion_space("prismatic", direction=(0.0, 3.0))
-    array([[0.],
-           [1.],
-           [0.]])
-    >>> motion_space("twin_prismatic")                # thesis 4.79
-    array([[1., 0.],
-           [0., 1.],
-           [0., 0.]])
-    >>> motion_space("fixed", (1.0, 1.0)).shape
-    (3, 0)
     """
     kind, p, e, shape = _prepare(kind, point, direction)
     if kind == "revolute":
@@ -163,11 +124,7 @@ def motion_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
 
 
 def reaction_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
-    """Reaction space ``R`` of a joint, with ``sᵀR = 0`` (thesis 5.61, 5.63, 6.1).
-
-    The columns are unit wrenches chosen to be meaningful (see the module
-    table): unit forces whose lines of action pass through the joint, and the
-    unit couple ``[0, 0, 1]`` (the line at infinity) when rotation is blocked.
+    """Reaction space ``R`` of a joint, with ``sᵀR = 0`` (thesis 5.61, 5.63, 6.1): the module table's wrenches.
 
     Parameters
     ----------
@@ -180,26 +137,15 @@ def reaction_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
 
     Examples
     --------
-    >>> reaction_space("prismatic", direction=(1.0, 0.0))   # thesis 5.63 with λ = 0
-    array([[0., 0.],
-           [1., 0.],
-           [0., 1.]])
     >>> reaction_space("revolute", (2.0, 1.0))              # forces along x and y through (2, 1)
     array([[ 1.,  0.],
            [ 0.,  1.],
            [-1.,  2.]])
-    >>> reaction_space("twin_prismatic", (2.0, 1.0))        # the couple: line at infinity
-    array([[0.],
-           [0.],
-           [1.]])
     """
     kind, p, e, shape = _prepare(kind, point, direction)
-    if shape == ():
-        ex, ey, couple = np.array([1.0, 0.0]), np.array([0.0, 1.0]), np.array([0.0, 0.0, 1.0])
-    else:
-        ex = np.broadcast_to(np.array([1.0, 0.0]), shape + (2,))
-        ey = np.broadcast_to(np.array([0.0, 1.0]), shape + (2,))
-        couple = np.broadcast_to(np.array([0.0, 0.0, 1.0]), shape + (3,))
+    ex = np.broadcast_to(np.array([1.0, 0.0]), shape + (2,))
+    ey = np.broadcast_to(np.array([0.0, 1.0]), shape + (2,))
+    couple = np.broadcast_to(np.array([0.0, 0.0, 1.0]), shape + (3,))
     if kind == "revolute":
         return np.stack([_force_through(p, ex), _force_through(p, ey)], axis=-1)
     if kind == "plane":
@@ -219,34 +165,18 @@ def reaction_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
 def R_of(s, point=(0.0, 0.0)) -> np.ndarray:
     """Reaction space ``R`` (``sᵀR = 0``) of the joint whose motion space is ``s`` (thesis 6.1, 5.63, 7.16).
 
-    The algorithms (:mod:`planargeo.algorithms.projective`, ``stacked``,
-    ``articulated_*``) know a joint only by its motion space ``s`` at the
-    current state; this reads the kind, pivot and slide direction off ``s``
-    and returns :func:`reaction_space` ``(kind, point, direction)``, so that every
-    reaction component ``μ = Uᵀ f`` in the package is measured in the same,
-    thesis-meaningful basis (module table):
-
-    * ``k = 1``, rotation ``[a, b, w]`` with ``w ≠ 0``: revolute about the
-      point ``(-b/w, a/w)``; ``R`` = unit forces along x and y through it (7.16);
-    * ``k = 1``, translation ``[a, b, 0]``: prismatic along ``(a, b)``;
-      ``R`` = unit force along ``e⊥`` through ``point``, then the unit couple (5.63);
-    * ``k = 2``: the span holds one translation ``e`` and rotations about the
-      points of one line; ``R`` = the unit force along ``e⊥`` through the
-      rotation point (kind ``revolute_prismatic``); two translations (the
-      twin prismatic joint of 4.79, kind ``twin_prismatic``) give the unit couple;
-    * ``k = 3``: empty; ``k = 0``: weld at ``point``.
-
-    The kind test ``w ≠ 0`` is exact (a translation is an ordinary ideal
-    point with ``w = 0``), not a tolerance.
+    The algorithms know a joint only by ``s``; this reads kind, pivot and slide direction off it
+    and returns :func:`reaction_space`, so every ``μ = Uᵀ f`` in the package is in the module
+    table's basis.  A rotation ``[a, b, w]`` (``w ≠ 0``, tested exactly) is a pivot at
+    ``(-b/w, a/w)`` (7.16); a translation a slide through ``point``; two columns a pin in a slot
+    (or, two translations, ``twin_prismatic``); three columns ``plane``; none a weld at ``point``.
 
     Parameters
     ----------
     s : array_like, shape (3, k)
         Motion space (unit twists at the origin, as columns).
     point : array_like, shape (2,)
-        A point of the joint, used where ``s`` does not fix the reaction
-        lines: on the slide of a prismatic joint (the models use the body's
-        frame origin, i.e. the slider's current position) and the weld point.
+        A point on a prismatic joint's slide (the models use the slider's frame origin), or the weld point.
 
     Returns
     -------
@@ -259,17 +189,11 @@ def R_of(s, point=(0.0, 0.0)) -> np.ndarray:
 
     Examples
     --------
-    >>> R_of([[3.0], [-2.0], [1.0]])             # revolute at (2, 3): thesis 7.16
-    array([[ 1.,  0.],
-           [ 0.,  1.],
-           [-3.,  2.]])
     >>> R_of([[1.0], [0.0], [0.0]], (2.0, 3.0))  # prismatic along x at (2, 3): 5.63
     array([[0., 0.],
            [1., 0.],
            [2., 1.]])
     """
-    from planargeo._validate import as_array
-
     a = as_array(s, "s")
     point = as_xy(point, "point")
     if a.ndim == 1 and a.shape == (3,):
@@ -301,42 +225,23 @@ def _frozen(a: np.ndarray) -> np.ndarray:
 
 
 class JointSpace:
-    """One planar joint's motion space ``s`` and reaction space ``R`` (thesis 4.8, 5.61–5.63).
+    """One planar joint's motion space ``s`` and reaction space ``R`` (thesis 4.8, 5.61–5.63), frozen.
 
-    Frozen: the arrays are read-only.  Build with the named constructors
-    :func:`revolute`, :func:`prismatic`, :func:`revolute_prismatic`,
-    :func:`twin_prismatic`, :func:`plane`, :func:`fixed` (or
-    ``JointSpace(kind, point, direction)``).
-
-    Single joints only: ``point`` and ``direction`` must have shape ``(2,)``
-    (a batch raises :class:`~planargeo.errors.ShapeError`).  For many joints
-    at once use :func:`motion_space` / :func:`reaction_space`, which broadcast.
+    Build with :func:`revolute` ... :func:`fixed`; one joint only (for many, :func:`motion_space`).
 
     Parameters
     ----------
     kind : str
         One of :data:`KINDS`.
     point : array_like, shape (2,), optional
-        The joint's point (m): pivot, point on the slide, joint-frame origin or weld point;
-        default the origin.
+        Pivot, point on the slide, joint-frame origin or weld point (m); default the origin.
     direction : array_like, shape (2,), optional
-        Slide direction (non-zero; prismatic kinds, twin prismatic, plane), default +x;
-        ignored by the revolute and fixed joints.
+        Slide direction (non-zero), default +x; ignored by the revolute and fixed joints.
 
     Attributes
     ----------
-    kind : str
-        Joint kind: revolute, prismatic, revolute_prismatic, twin_prismatic, plane or fixed.
-    point : ndarray, shape (2,)
-        Pivot / point on the slide / joint-frame origin / weld point.
-    direction : ndarray, shape (2,) or None
-        Unit slide direction (prismatic kinds, twin prismatic, plane), else ``None``.
-    s : ndarray, shape (3, k)
-        Motion space, unit twists at the origin.
-    R : ndarray, shape (3, 3 - k)
-        Reaction space, unit wrenches at the origin, ``s.T @ R == 0``.
-    dof : int
-        ``k``.
+    kind, point, direction, s, R, dof
+        The properties below.
 
     Raises
     ------
@@ -380,24 +285,12 @@ class JointSpace:
 
     @property
     def kind(self) -> str:
-        """Joint kind, one of :data:`KINDS`.
-
-        Examples
-        --------
-        >>> revolute((1.0, 2.0)).kind
-        'revolute'
-        """
+        """Joint kind, one of :data:`KINDS`."""
         return self._kind
 
     @property
     def point(self) -> np.ndarray:
-        """The joint's point, shape (2,), read-only: pivot / point on the slide / joint-frame origin / weld point.
-
-        Examples
-        --------
-        >>> prismatic(point=(3.0, 0.0), direction=(0.0, 1.0)).point
-        array([3., 0.])
-        """
+        """The joint's point, shape (2,), read-only: pivot / point on the slide / joint-frame origin / weld point."""
         return self._point
 
     @property
@@ -408,35 +301,17 @@ class JointSpace:
         --------
         >>> prismatic(direction=(3.0, 4.0)).direction
         array([0.6, 0.8])
-        >>> revolute().direction is None
-        True
         """
         return self._direction
 
     @property
     def s(self) -> np.ndarray:
-        """Motion space ``s``, shape (3, k), read-only: unit twists at the origin as columns (thesis 4.64-4.79).
-
-        Examples
-        --------
-        >>> revolute((2.0, 0.0)).s                 # rotation about (2, 0): the point [y, -x, 1]
-        array([[ 0.],
-               [-2.],
-               [ 1.]])
-        """
+        """Motion space ``s``, shape (3, k), read-only: unit twists at the origin as columns (thesis 4.64-4.79)."""
         return self._s
 
     @property
     def R(self) -> np.ndarray:
-        """Reaction space ``R``, shape (3, 3 - k), read-only: unit wrenches at the origin, ``sᵀR = 0`` (thesis 5.63, 6.1).
-
-        Examples
-        --------
-        >>> revolute((2.0, 0.0)).R                 # unit forces along x and y through (2, 0)
-        array([[1., 0.],
-               [0., 1.],
-               [0., 2.]])
-        """
+        """Reaction space ``R``, shape (3, 3 - k), read-only: unit wrenches at the origin, ``sᵀR = 0`` (thesis 5.63, 6.1)."""
         return self._R
 
     @property
@@ -451,17 +326,16 @@ class JointSpace:
         d = tuple(float(x) for x in self._direction)
         return f"JointSpace({self._kind!r}, point={p}, direction={d})"
 
+    def _key(self):
+        return self._kind, tuple(self._point), None if self._direction is None else tuple(self._direction)
+
     def __eq__(self, other) -> bool:
         if not isinstance(other, JointSpace):
             return NotImplemented
-        same_dir = (self._direction is None and other._direction is None) or (
-            self._direction is not None and other._direction is not None
-            and np.array_equal(self._direction, other._direction))
-        return self._kind == other._kind and np.array_equal(self._point, other._point) and same_dir
+        return self._key() == other._key()
 
     def __hash__(self) -> int:
-        d = None if self._direction is None else tuple(self._direction)
-        return hash((self._kind, tuple(self._point), d))
+        return hash(self._key())
 
 
 def _by_name(constructor):
@@ -481,19 +355,12 @@ def _by_name(constructor):
 def revolute(point=(0.0, 0.0)) -> JointSpace:
     """Revolute (pin) joint about ``point`` (thesis 4.64): ``s`` = the point ``[y, -x, 1]``.
 
-    Parameters
-    ----------
-    {point}
-
-    Returns
-    -------
-    JointSpace
-        ``s = [y, -x, 1]``, ``R`` = unit forces along x and y through the point.
+    {point joint}
 
     Examples
     --------
-    >>> revolute((0.0, 0.0)).s.ravel()          # thesis 4.64
-    array([0., 0., 1.])
+    >>> revolute((2.0, 0.0)).s.ravel(), revolute((2.0, 0.0)).R[2]     # unit forces through (2, 0)
+    (array([ 0., -2.,  1.]), array([0., 2.]))
     """
     return JointSpace("revolute", point)
 
@@ -503,23 +370,13 @@ def revolute(point=(0.0, 0.0)) -> JointSpace:
 def prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Prismatic (slider) joint through ``point`` along ``direction`` (thesis 4.69, 5.62, 5.63).
 
-    ``point`` and ``direction`` are given by name (the point first, as
-    for every joint; a positional call raises :class:`~planargeo.errors.InputError`, since the
-    order was once ``(direction, point)``).
+    ``point`` and ``direction`` are given by name (a positional call raises
+    :class:`~planargeo.errors.InputError`: the order was once ``(direction, point)``).
 
-    Parameters
-    ----------
-    {point direction}
-
-    Returns
-    -------
-    JointSpace
-        ``s = [dx, dy, 0]`` (unit), ``R`` = the normal force through the point and a couple.
+    {point_direction joint}
 
     Examples
     --------
-    >>> np.round(prismatic(direction=(1.0, 1.0)).s.ravel(), 4)
-    array([0.7071, 0.7071, 0.    ])
     >>> prismatic((1.0, 1.0))
     Traceback (most recent call last):
     ...
@@ -532,21 +389,7 @@ def prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 def revolute_prismatic(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Two-dof pin-in-slot joint: slide along ``direction``, turn about ``point`` (thesis 4.74).
 
-    Parameters
-    ----------
-    {point direction}
-
-    Returns
-    -------
-    JointSpace
-        Two columns of ``s`` (slide, turn), one of ``R`` (the normal force through the point).
-
-    Examples
-    --------
-    >>> revolute_prismatic((0.0, 0.0), (1.0, 0.0)).s     # thesis 4.74 with λ = 0
-    array([[1., 0.],
-           [0., 0.],
-           [0., 1.]])
+    {point_direction joint}
     """
     return JointSpace("revolute_prismatic", point, direction)
 
@@ -556,38 +399,13 @@ def revolute_prismatic(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 def twin_prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Two-dof twin prismatic joint, thesis 4.8.4's "plane joint" (4.79): slides along ``direction`` and its normal.
 
-    ``s = [e, e⊥]`` (two unit translations, ``e⊥`` the direction turned by
-    +90°); with the default ``direction = (1, 0)`` this is 4.79,
-    ``s = [[1, 0], [0, 1], [0, 0]]``.  Rotation is blocked by a couple only:
-    ``R = [0, 0, 1]``, the line at infinity, reciprocal to every translation
-    (the ideal points lie on the line at infinity).  ``point`` (the joint
-    frame's origin) does not change ``s`` or ``R``; it is kept for drawing.
-    Like :func:`prismatic`, it takes ``point`` and ``direction`` by name.
+    ``s = [e, e⊥]``, ``R = [0, 0, 1]`` (the line at infinity, whatever ``point``, which is kept
+    for drawing).  Like :func:`prismatic`, it takes ``point`` and ``direction`` by name.
 
-    In a model it is the joint kind ``"twin_prismatic"`` of :class:`planargeo.mechanics.model.Joint`
-    (two dofs, slid by ``(q[0], q[1])`` along ``e`` and ``e⊥``, not rotated; the same
-    columns as :func:`planargeo.mechanics.kinematics.joint_axes`).
-
-    Parameters
-    ----------
-    {point direction}
-
-    Returns
-    -------
-    JointSpace
-        ``s = [e, e⊥]``, ``R = [0, 0, 1]``.
+    {point_direction joint}
 
     Examples
     --------
-    >>> j = twin_prismatic()
-    >>> j.s                                      # thesis 4.79
-    array([[1., 0.],
-           [0., 1.],
-           [0., 0.]])
-    >>> j.R                                      # the unit couple
-    array([[0.],
-           [0.],
-           [1.]])
     >>> twin_prismatic(direction=(0.0, 2.0)).s    # e = y, e⊥ = -x
     array([[ 0., -1.],
            [ 1.,  0.],
@@ -600,28 +418,7 @@ def twin_prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Free planar (3-dof) joint: slides along ``direction`` and its normal, turns about ``point`` (thesis 4.79 + 4.64, 5.62).
 
-    The columns follow the package's ``Model`` joint ``"plane"`` (translations
-    along the joint frame's x and y axes, then rotation about its origin); with
-    the defaults ``s`` is the identity.  ``R`` is empty.  Thesis 4.8.4's 2-dof "plane joint"
-    (4.79, no rotation) is :func:`twin_prismatic`.
-
-    Parameters
-    ----------
-    {point direction}
-
-    Returns
-    -------
-    JointSpace
-        Three columns of ``s``, empty ``R``.
-
-    Examples
-    --------
-    >>> plane().s
-    array([[1., 0., 0.],
-           [0., 1., 0.],
-           [0., 0., 1.]])
-    >>> plane().R.shape
-    (3, 0)
+    {point_direction joint}
     """
     return JointSpace("plane", point, direction)
 
@@ -630,20 +427,6 @@ def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 def fixed(point=(0.0, 0.0)) -> JointSpace:
     """Weld (0-dof) at ``point``: ``s`` is empty, ``R`` = forces through ``point`` along x, y and a couple (thesis 6.10).
 
-    Parameters
-    ----------
-    {point}
-
-    Returns
-    -------
-    JointSpace
-        Empty ``s``, three columns of ``R``.
-
-    Examples
-    --------
-    >>> fixed((0.0, 0.0)).R
-    array([[1., 0., 0.],
-           [0., 1., 0.],
-           [0., 0., 1.]])
+    {point joint}
     """
     return JointSpace("fixed", point)
