@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from planargeo.draw.picture import Picture
+from planargeo.draw.picture import _ENTRIES, Picture
 from planargeo.draw.pictures._words import pair
 from planargeo.errors import InputError
 from planargeo.geometry._docs import entries
@@ -60,10 +60,8 @@ def line_words(l, digits: int = 4) -> str:
 #: Docstring entries the drawing functions share, written once: a line ``{pic id}`` in a
 #: docstring stands for those entries (:data:`documented`; a module adds its own with
 #: ``entries(ENTRIES, {...})``).
-ENTRIES = {"pic": "pic : Picture\n    Where to draw.",
-           "id": "id : str\n    Stable name of the element.",
-           "symbol": "symbol, desc : str\n    Thesis symbol and a one-line description.",
-           "z": "z : int\n    Drawing order.",
+ENTRIES = {**_ENTRIES, "pic": "pic : Picture\n    Where to draw.",
+           "desc": "desc : str\n    One-line description.",
            "prefix": "prefix : str\n    Put before every id (several drawings in one picture).",
            "element": "Returns\n-------\ndict\n    The element added."}
 

@@ -1,20 +1,11 @@
 """A picture described once: plain elements that every renderer draws the same way.
 
-A :class:`Picture` is built from a scene's state in Python, with all of its
-geometry done here, once: poles placed or sent to the edge of the view when they
-are ideal, infinite lines clipped to the view, conics classified and sampled, the
-line at infinity drawn as a couple glyph, labels placed so that they avoid each
-other.  What comes out of :meth:`Picture.to_dict` is plain JSON: a view, a list
-of *elements* and a list of *handles*.  Two renderers draw it:
-
-* the page (``planargeo/widgets/canvas.js``, an anywidget ES module) for live use;
-* matplotlib (:func:`planargeo.draw.render.draw_picture`) for exports and stored
-  pictures.
-
-Every element has a stable ``id``, a ``role`` (its style, one table:
-:mod:`planargeo.draw.style`), its thesis ``symbol`` and a short description
-``desc`` (meaning, equation, value with unit), shown when the pointer rests on it.
-An element is drawn from *parts*, each a primitive in data coordinates:
+A :class:`Picture` does all of its geometry here, once (ideal poles as edge arrows, lines
+clipped to the view, conics sampled, the line at infinity as a couple glyph, labels placed
+apart); :meth:`Picture.to_dict` gives plain JSON that the page (``planargeo/widgets/canvas.js``)
+and matplotlib (:func:`planargeo.draw.render.draw_picture`) draw alike.  Every element has a
+stable ``id``, a ``role`` (its style, :mod:`planargeo.draw.style`), its thesis ``symbol`` and
+a description ``desc`` shown on hover, and is drawn from *parts* in data coordinates:
 
 ``{"p": "path", "xy": [[x, y], ...], "closed": bool}``
     a polyline or polygon (stroke, and fill when the element has one);
@@ -53,6 +44,7 @@ import numpy as np
 from planargeo.draw.geometry import clip_line, conic_curves, conic_geometry
 from planargeo.draw.style import COLORS, LABEL_PT, LINEWIDTHS, STYLES
 from planargeo.errors import InputError, NonFiniteError, ShapeError
+from planargeo.geometry._docs import entries
 
 __all__ = ["Picture", "PX_PER_PT", "FONT_PX", "nice_ticks", "plain_text"]
 
@@ -82,10 +74,8 @@ def nice_ticks(lo: float, hi: float, n: int = 5) -> list[float]:
 
     Examples
     --------
-    >>> nice_ticks(-4, 4)
-    [-4.0, -2.0, 0.0, 2.0, 4.0]
-    >>> nice_ticks(0.0, 1.0, 3)
-    [0.0, 0.5, 1.0]
+    >>> nice_ticks(-4, 4), nice_ticks(0.0, 1.0, 3)
+    ([-4.0, -2.0, 0.0, 2.0, 4.0], [0.0, 0.5, 1.0])
     """
     span = hi - lo
     if not span > 0 or not math.isfinite(span):
@@ -123,6 +113,13 @@ _ACCENT = {"dot": "\u0307", "ddot": "\u0308", "hat": "\u0302", "bar": "\u0304", 
 def _math_to_unicode(m: str) -> str:
     out, i = [], 0
 
+    def command_end(j):
+        """Index after the command that starts with the backslash at j (letters, or one sign)."""
+        k = j + 1
+        while k < len(m) and m[k].isalpha():
+            k += 1
+        return max(k, j + 2)
+
     def group(j):
         """(text of the group or single token at j, index after it)."""
         if j < len(m) and m[j] == "{":
@@ -132,21 +129,15 @@ def _math_to_unicode(m: str) -> str:
                 k += 1
             return _math_to_unicode(m[j + 1:k - 1]), k
         if j < len(m) and m[j] == "\\":
-            k = j + 1
-            while k < len(m) and m[k].isalpha():
-                k += 1
-            k = max(k, j + 2)
+            k = command_end(j)
             return _math_to_unicode(m[j:k]), k
         return (m[j], j + 1) if j < len(m) else ("", j)
 
     while i < len(m):
         c = m[i]
         if c == "\\":
-            k = i + 1
-            while k < len(m) and m[k].isalpha():
-                k += 1
-            name = m[i + 1:k] or m[i + 1:i + 2]
-            k = max(k, i + 2)
+            k = command_end(i)
+            name = m[i + 1:k]
             if name in _ACCENT:
                 body, k = group(k)
                 out.append((body[:1] + _ACCENT[name] + body[1:]) if body else "")
@@ -241,6 +232,14 @@ _SPOTS = [(float(c), float(s), float(fx), float(fy))
 def _z_of(el: dict):
     return el["z"]
 
+
+#: Docstring entries of the element methods (and of :mod:`planargeo.draw._shared`), written once
+_ENTRIES = {"id": "id : str\n    Stable name of the element.",
+            "role": "role : str\n    Style role (:mod:`planargeo.draw.style`).",
+            "symbol": "symbol, desc : str\n    Thesis symbol and a one-line description.",
+            "color": "color : str, optional\n    Colour instead of the role's.",
+            "z": "z : int\n    Drawing order."}
+_documented = entries(_ENTRIES)
 
 #: element keys left out of the data when they hold these values
 _DEFAULTS = {"dash": None, "fill": None, "alpha": 1.0, "opacity": 1.0, "desc": "", "symbol": ""}
@@ -386,6 +385,7 @@ class Picture:
         return parts
 
     # ------------------------------------------------------------------ elements
+    @_documented
     def point(self, id: str, p, *, role: str = "twist", symbol: str = "", desc: str = "",
               label: str | None = None, glyph: bool = True, size: float | None = None,
               shape: str | None = None, color: str | None = None, glyph_scale: float = 6.0):
@@ -398,14 +398,10 @@ class Picture:
 
         Parameters
         ----------
-        id : str
-            Stable name of the element.
+        {id}
         p : array_like (3,)
             ``[vx, vy, w]``.
-        role : str
-            Style role (:mod:`planargeo.draw.style`).
-        symbol, desc : str
-            Thesis symbol and a one-line description (meaning, equation, value).
+        {role symbol}
         label : str, optional
             Text beside the pole (default: ``symbol``).
         glyph : bool
@@ -414,8 +410,7 @@ class Picture:
             Marker size in pixels.
         shape : {"o", "D", "s"}, optional
             Marker shape.
-        color : str, optional
-            Colour instead of the role's.
+        {color}
         glyph_scale : float
             Glyph radius in pixels per unit ``|w|`` (clamped to [5, 22] px).
         """
@@ -460,6 +455,7 @@ class Picture:
             parts += self._edge_arrow(n, t, L, text, infinite=True)
         self._add(id, role, symbol, desc, parts, color=color, z=7)
 
+    @_documented
     def line(self, id: str, l, *, role: str = "wrench", symbol: str = "", desc: str = "",
              label: str | None = None, anchor=None, arrow: bool = True, color: str | None = None,
              width: float | None = None, dash=None):
@@ -471,22 +467,17 @@ class Picture:
 
         Parameters
         ----------
-        id : str
-            Stable name of the element.
+        {id}
         l : array_like (3,)
             ``[fx, fy, tz]``.
-        role : str
-            Style role.
-        symbol, desc : str
-            Thesis symbol and a one-line description.
+        {role symbol}
         label : str, optional
             Text at the line (default: ``symbol``).
         anchor : (float, float), optional
             Where the sense arrow sits (projected onto the line).
         arrow : bool
             Draw the sense arrow.
-        color : str, optional
-            Colour instead of the role's.
+        {color}
         width : float, optional
             Line width in pixels.
         dash : list of float, optional
@@ -532,26 +523,24 @@ class Picture:
         self._add(id, role, symbol, desc, parts, color=color, width=width,
                   dash=dash if dash is not None else _dash(role))
 
+    @_documented
     def conic(self, id: str, C, *, role: str = "conic", symbol: str = "", desc: str = "",
               label: str | None = None, mark_center: bool | None = None, color: str | None = None):
         """A conic (an inertia's imaginary conic drawn by its real stand-in, dashed).
 
         Parameters
         ----------
-        id : str
-            Stable name of the element.
+        {id}
         C : array_like (3, 3)
             Symmetric conic matrix.
         role : str
             ``"conic"`` or ``"inertia"`` (dashed, centre marked).
-        symbol, desc : str
-            Thesis symbol and a one-line description.
+        {symbol}
         label : str, optional
             Text at the curve (default: ``symbol``).
         mark_center : bool, optional
             Mark the centre (default: for inertias and imaginary conics).
-        color : str, optional
-            Colour instead of the role's.
+        {color}
         """
         g = conic_geometry(C)
         color = _color(role, color)
@@ -577,6 +566,7 @@ class Picture:
         dash = _dash("inertia") if (imaginary or role == "inertia") else _dash(role)
         self._add(id, role, symbol, desc, parts, color=color, dash=dash, z=2)
 
+    @_documented
     def path(self, id: str, xy, *, role: str = "body", symbol: str = "", desc: str = "",
              closed: bool = False, fill: str | None = None, color: str | None = None,
              width: float | None = None, dash=None, alpha: float = 1.0, label: str | None = None,
@@ -585,14 +575,10 @@ class Picture:
 
         Parameters
         ----------
-        id : str
-            Stable name of the element.
+        {id}
         xy : array_like (n, 2)
-            Vertices.
-        role : str
-            Style role.
-        symbol, desc : str
-            Thesis symbol and a one-line description.
+            Vertices (a non-finite row separates pieces).
+        {role symbol}
         closed : bool
             A polygon.
         fill : str, optional
@@ -607,8 +593,7 @@ class Picture:
             Opacity of the fill.
         label : str, optional
             Text at the first vertex.
-        z : int
-            Drawing order.
+        {z}
         """
         xy = np.asarray(xy, dtype=float).reshape(-1, 2)
         ok = np.all(np.isfinite(xy), axis=1)
@@ -623,34 +608,29 @@ class Picture:
         self._add(id, role, symbol, desc, parts, color=_color(role, color), width=width,
                   dash=dash, fill=fill, alpha=alpha, z=z)
 
+    @_documented
     def marks(self, id: str, xy, *, role: str = "body", symbol: str = "", desc: str = "",
               shape: str = "o", size: float = 6.0, color: str | None = None, z: int = 4):
         """Markers of one size at data points (pins, centres of mass, samples).
 
         Parameters
         ----------
-        id : str
-            Stable name of the element.
+        {id}
         xy : array_like (n, 2)
             Where the markers sit.
-        role : str
-            Style role.
-        symbol, desc : str
-            Thesis symbol and a one-line description.
+        {role symbol}
         shape : {"o", "D", "s"}
             Marker shape.
         size : float
             Marker size in pixels.
-        color : str, optional
-            Colour instead of the role's.
-        z : int
-            Drawing order.
+        {color z}
         """
         xy = np.asarray(xy, dtype=float).reshape(-1, 2)
         parts = [{"p": "mark", "x": float(x), "y": float(y), "shape": shape, "size": float(size)}
                  for x, y in xy if math.isfinite(x) and math.isfinite(y)]
         self._add(id, role, symbol, desc, parts, color=_color(role, color), z=z)
 
+    @_documented
     def text(self, id: str, xy, text: str, *, role: str = "text", symbol: str = "", desc: str = "",
              color: str | None = None, ha: str = "left", va: str = "bottom", dx: float = 0.0,
              dy: float = 0.0, z: int = 8, obstacle: bool = True):
@@ -658,30 +638,20 @@ class Picture:
 
         Parameters
         ----------
-        id : str
-            Stable name of the element.
+        {id}
         xy : (float, float)
             Anchor in data coordinates.
         text : str
             The text.
-        role : str
-            Style role.
-        symbol, desc : str
-            Thesis symbol and a one-line description.
-        color : str, optional
-            Colour instead of the role's.
-        ha : {"left", "center", "right"}
-            Horizontal alignment at the anchor.
-        va : {"bottom", "center", "top"} (``"baseline"`` reads as bottom)
-            Vertical alignment at the anchor.
+        {role symbol color}
+        ha, va : str
+            Alignment at the anchor (``"left"``, ``"center"``, ``"right"``; ``"bottom"``,
+            ``"center"``, ``"top"``, ``"baseline"`` read as bottom).
         dx, dy : float
             Offset in pixels (y up).
-        z : int
-            Drawing order.
+        {z}
         obstacle : bool
-            The placed labels keep clear of it (default).  False for a passing note drawn
-            over everything on its own panel (a refusal's message): the labels stay where
-            they are without it.
+            The placed labels keep clear of it (default; False for a passing note over everything).
         """
         x, y = (float(v) for v in xy)
         if not (math.isfinite(x) and math.isfinite(y)):

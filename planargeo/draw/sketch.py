@@ -1,22 +1,11 @@
 """Shared basics of the gallery's pictures: a panel fitted to an axes, labels, dimensions, mechanisms.
 
-Plain functions that add elements to a :class:`~planargeo.draw.picture.Picture`
-(the gallery's figures draw from Pictures, rendered by
-:func:`planargeo.draw.render.draw_picture`):
-
-* :func:`panel` — a Picture the size of a matplotlib axes (pixels at 100 dpi), its
-  view fitted to points (:func:`planargeo.draw.layout.fit_box`, the view
-  :func:`planargeo.draw.layout.fit_view` sets on an axes);
-  :func:`show` — draw it on that axes;
-* :func:`label`, :func:`segment`, :func:`dimension` — a text at a point, a finite
-  segment, a dimension line with end ticks;
-* mechanisms: :func:`body`, :func:`link`, :func:`pin`, :func:`ground`,
-  :func:`slider`, :func:`frame`, :func:`com`, a whole :func:`model` at a state,
-  a joint force split into active and reaction parts (:func:`joint_split`) and
-  a model's contacts (:func:`contact`, :func:`slider_guide`).
-
-Each adds elements with a stable id (``id``, or ``id`` plus a suffix for the
-parts of one thing) and returns what it added.
+Plain functions that add elements with stable ids to a :class:`~planargeo.draw.picture.Picture`
+and return what they added: :func:`panel` (a Picture the size of an axes, its view fitted to
+points) and :func:`show`; texts and lines (:func:`label`, :func:`segment`, :func:`dimension`,
+:func:`arrow`); mechanisms (:func:`body`, :func:`link`, :func:`pin`, :func:`ground`,
+:func:`slider`, :func:`frame`, :func:`com`, a whole :func:`model`, its :func:`contact` s) and
+a joint force split into active and reaction parts (:func:`joint_split`, chapter 6).
 
 Examples
 --------
@@ -75,6 +64,7 @@ def _xy(v, name: str) -> np.ndarray:
 
 
 def _positive(v, name: str) -> float:
+    """``v`` as a positive finite float, or an InputError naming ``name``."""
     try:
         f = float(v)
     except (TypeError, ValueError):
@@ -91,7 +81,7 @@ def _text_part(x, y, text, dx=0.0, dy=0.0, ha="left", va="bottom") -> dict:
 
 def _element(pic: Picture, id: str, role: str, parts: list, *, color: str, width: float,
              symbol: str = "", desc: str = "", fill=None, alpha: float = 1.0, z: int = 3) -> dict:
-    """Add an element made of the given ``parts`` (through :meth:`Picture.path`) and return it."""
+    """Add an element of the given ``parts`` (through :meth:`Picture.path`); the element."""
     el = added(pic.path, id, np.zeros((2, 2)), role=role, symbol=symbol, desc=desc, color=color, width=width,
                fill=fill, alpha=alpha, z=z)
     el["parts"] = parts
@@ -121,8 +111,6 @@ def body_words(name=None, number=None) -> str:
     --------
     >>> body_words("body 1", 1), body_words("3"), body_words("crank", 2), body_words(None, 4)
     ('body 1', 'body 3', 'crank (body 2)', 'body 4')
-    >>> "centre of mass of " + body_words("body2", 2)
-    'centre of mass of body2'
     """
     name = "" if name is None else str(name).strip()
     if not name:
@@ -139,12 +127,9 @@ def panel(ax, points, *, margin=None, keep=None, min_span=None, fit_height=False
           hmax=4.6) -> Picture:
     """A Picture the size of the axes ``ax`` (pixels at 100 dpi), its view fitted to ``points``.
 
-    No ticks, no margin around the plot area, and the view
-    :func:`planargeo.draw.layout.fit_view` would give the axes
-    (:func:`planargeo.draw.layout.fit_box`).  With ``fit_height`` the figure's height
-    first follows the points' aspect: the axes' width times the ratio of the
-    points' extents, each grown by the margin (clamped to ``[hmin, hmax]`` inches).
-    The axes are not changed (:func:`show` draws the picture on them).
+    No ticks, no margin, the view :func:`planargeo.draw.layout.fit_box` gives.  With
+    ``fit_height`` the figure's height first follows the points' aspect (grown by the
+    margin, clamped to ``[hmin, hmax]`` inches).  The axes are not changed.
 
     Parameters
     ----------
@@ -227,10 +212,7 @@ def show(pic: Picture, ax=None) -> list:
 def label(pic: Picture, id: str, xy, text: str, *, offset=(5, 5), ha: str = "left",
           va: str = "bottom", role: str = "text", color=None, symbol: str = "", desc: str = "",
           fixed: bool = False) -> dict:
-    """A text at the data point ``xy``, moved by ``offset`` points.
-
-    The picture's placer keeps the text at the asked place, or moves it to a free
-    spot around ``xy`` if another label is there (``fixed``: it never moves).
+    """A text at the data point ``xy``, moved by ``offset`` points (the placer may move it unless ``fixed``).
 
     Parameters
     ----------
@@ -243,11 +225,7 @@ def label(pic: Picture, id: str, xy, text: str, *, offset=(5, 5), ha: str = "lef
         Shift of the text in points (y up).
     ha, va : str
         Alignment at the shifted anchor.
-    role : str
-        Style role (its colour).
-    color : str, optional
-        Colour instead of the role's.
-    {symbol}
+    {role color symbol}
     fixed : bool
         Keep the text where asked (the placer does not move it; others avoid it).
 
@@ -292,7 +270,7 @@ def segment(pic: Picture, id: str, p, q, *, role: str = "construct", label=None,
         Style role (default ``"construct"``: thin, grey, dashed).
     label : str, optional
         Text beside the segment's middle (placed).
-    color : str, optional
+    {color}
     width : float, optional
         Line width in pixels (default: the role's).
     dash : list of float, optional
@@ -332,9 +310,6 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
               color=None, tick: float = 8.0, symbol: str | None = None, desc: str = "") -> dict:
     """A dimension line ``p q`` with end ticks, shifted ``offset`` to the left of ``p → q``, labelled.
 
-    The text sits at the fraction ``at`` along the line, 4 points off it on the left
-    of ``p → q``, aligned away from it.
-
     Parameters
     ----------
     {pic id}
@@ -345,14 +320,13 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
     offset : float
         Shift of the line to the left of ``p → q`` (data units).
     at : float
-        Where the text sits along the line (0: at ``p``, 1: at ``q``).
+        Where the text sits along the line (0: at ``p``, 1: at ``q``), 4 points off it on the left.
     color : str, optional
         Colour of the line, its ticks and its text (default: the construction grey).
     tick : float
         Length of the end ticks (pixels), across the line.
     symbol : str, optional
-        Thesis symbol of the length (default: the text before its first ``" = "``,
-        so ``"ρ = u/ω"`` is ``ρ``, or the whole text).
+        Thesis symbol of the length (default: the text before its first ``" = "``, or all of it).
     desc : str
         One-line description (default: the text).
 
@@ -369,8 +343,6 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
     >>> el = dimension(pic, "d", (0, 0), (2, 0), "2 m", offset=1.0)
     >>> [part["xy"].tolist() for part in el["parts"][:3]]
     [[[0.0, 1.0], [2.0, 1.0]], [[0.0, 0.84], [0.0, 1.16]], [[2.0, 0.84], [2.0, 1.16]]]
-    >>> el["parts"][3]["text"], el["parts"][3]["x"], el["parts"][3]["va"]
-    ('2 m', 1.0, 'bottom')
     >>> dimension(pic, "rho", (0, 0), (1, 0), "ρ = u/ω")["symbol"], el["symbol"]
     ('ρ', '2 m')
     """
@@ -413,9 +385,7 @@ def arrow(pic: Picture, id: str, p, q, *, role: str = "wrench", color=None, labe
     {pic id}
     p, q : (float, float)
         Tail and tip (distinct).
-    role : str
-        Style role (its colour).
-    color : str, optional
+    {role color}
     label : str, optional
         Text at the tip, moved by ``offset`` points (placed).
     offset : (float, float)
@@ -530,10 +500,7 @@ def _polygons(shape):
 @documented
 def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alpha: float = 0.35,
          edgecolor: str = BODY_EDGE, z: int = 1, com=None, symbol: str = "", desc: str = "") -> dict:
-    """A body: a filled polygon (shapely polygon / multipolygon, or (n, 2) vertices).
-
-    Holes are drawn white (element ``id + ":holes"``); with ``com`` the
-    centre-of-mass symbol (:func:`com`, element ``id + ":com"``) marks it.
+    """A body: a filled polygon, its holes white (``id + ":holes"``), its centre of mass marked (``id + ":com"``).
 
     Parameters
     ----------
@@ -543,7 +510,7 @@ def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alp
     pose : (float, float, float), optional
         The body frame's origin and angle (radians).
     label : str, optional
-        Text at a point inside the body (centred there, placed).
+        Text at a point inside the body.
     color : str, optional
         Fill colour (default: the body colour).
     alpha : float
@@ -635,11 +602,7 @@ def pin(pic: Picture, id: str, xy, *, radius: float = 0.06, z: int = 6, symbol: 
         The joint.
     radius : float
         Radius of the disc (data units).
-    {z}
-    symbol : str
-        What it is called (default ``"joint"``; e.g. ``"P"``, the joint's pole).
-    desc : str
-        One-line description.
+    {z symbol}
 
     {element}
 
@@ -666,9 +629,6 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.8, angle: float = 0.0,
            n: int = 7, z: int = 1, desc: str = "the ground") -> dict:
     """A ground line ``width`` long centred on ``xy``, at ``angle``, hatched on its right-hand side.
 
-    Each hatch stroke goes from a point of the line by ``depth`` along ``-(e + n)``
-    (``e`` the line's direction, ``n`` its left normal).
-
     Parameters
     ----------
     {pic id}
@@ -679,11 +639,10 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.8, angle: float = 0.0,
     angle : float
         Direction of the line (radians).
     depth : float
-        Length (along each axis) of the hatch strokes.
+        Length (along the line and across it) of the hatch strokes.
     n : int
         Number of hatch strokes (at least 2).
-    {z}
-    desc : str
+    {z desc}
 
     Returns
     -------
@@ -721,10 +680,7 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.8, angle: float = 0.0,
 @documented
 def slider(pic: Picture, id: str, xy, direction, *, size=(0.35, 0.2), track: float = 1.6,
            z: int = 3, desc: str = "a prismatic joint") -> dict:
-    """A prismatic joint: a block on a hatched track along ``direction``.
-
-    The track (:func:`ground`, element ``id + ":track"``) runs ``track`` long under
-    the block, half the block's height off its centre.
+    """A prismatic joint: a block on a hatched track (:func:`ground`, ``id + ":track"``) along ``direction``.
 
     Parameters
     ----------
@@ -737,8 +693,7 @@ def slider(pic: Picture, id: str, xy, direction, *, size=(0.35, 0.2), track: flo
         Length and height of the block.
     track : float
         Length of the track.
-    {z}
-    desc : str
+    {z desc}
 
     Returns
     -------
@@ -794,6 +749,7 @@ def frame(pic: Picture, id: str, origin, *, angle: float = 0.0, length: float = 
     ----------
     {pic id}
     origin : (float, float)
+        Where the axes start.
     angle : float
         Direction of the first axis (radians).
     length : float
@@ -801,7 +757,8 @@ def frame(pic: Picture, id: str, origin, *, angle: float = 0.0, length: float = 
     labels : (str, str)
         Labels of the two axes at their tips ("" for none).
     color : str
-    desc : str
+        Colour of the arrows.
+    {desc}
 
     Returns
     -------
@@ -832,10 +789,7 @@ def frame(pic: Picture, id: str, origin, *, angle: float = 0.0, length: float = 
 @documented
 def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: str = "c",
         desc: str = "centre of mass") -> dict:
-    """The centre-of-mass symbol: a disc quartered black and white, ``radius`` data units.
-
-    Two elements: the white disc with its rim (``id + ":disc"``) and the two black
-    quarters (``id``, first and third quadrants).
+    """The centre-of-mass symbol: a white disc (``id + ":disc"``) and two black quarters (``id``).
 
     Parameters
     ----------
@@ -844,11 +798,7 @@ def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: 
         The centre of mass.
     radius : float
         Radius of the symbol (data units).
-    {z}
-    symbol : str
-        Thesis symbol of the centre of mass (default ``"c"``; ``"$c_2$"`` reads c₂).
-    desc : str
-        One-line description.
+    {z symbol}
 
     Returns
     -------
@@ -882,14 +832,7 @@ _com, _ground = com, ground      # for the functions with keywords of these name
 def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, labels: bool = True,
           ground: bool = True, pin_radius: float = 0.05, show_com: bool = True, alpha: float = 0.35,
           names=None, contacts: bool = True) -> dict:
-    """A model's bodies, joints and contacts at the state in ``data``.
-
-    A body with a shapely ``shape`` is drawn from it (moved by its pose); otherwise
-    as a rounded link from its joint to each child's joint (or, for a tip body,
-    through its centre of mass to twice as far).  Revolute joints are pins at the
-    body's pose, prismatic joints sliders along the joint's translation axis (the
-    first column of ``s_i``); joints on the ground get hatching.  With ``contacts``
-    every contact of ``model.contacts`` is drawn by :func:`contact`.
+    """A model's bodies (:func:`model_shapes`), joints and contacts at the state in ``data``.
 
     Element ids (``prefix`` first): ``body i``, ``com i``, ``joint i``, ``ground i``,
     ``slider i``, ``contact k`` (numbers from 1).
@@ -898,8 +841,9 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
     ----------
     {pic}
     model : planargeo.mechanics.model.Model
+        The model.
     data : planargeo.mechanics.model.Data
-        Its kinematics at the state to draw (poses, centres of mass, joint origins).
+        Its kinematics at the state to draw.
     {prefix}
     width : float
         Width of the default rounded links.
@@ -916,7 +860,7 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
     names : list of str, optional
         Body labels instead of the model's names.
     contacts : bool
-        Draw the model's contacts.
+        Draw the model's contacts (:func:`contact`).
 
     Returns
     -------
@@ -985,13 +929,9 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
 
 
 def slider_guide(contact, pose, body_shape=None, *, clearance: float = 0.04, margin=None):
-    """The guide of a slider contact in world coordinates, from the contact and the state.
+    """The guide of a slider contact in world coordinates: the line through ``point_b`` along ``direction`` (9.83).
 
-    The guide is the line through ``point_b`` (body b's frame, or the world for
-    the ground) along ``direction``, turned by body b's pose (9.83).  Its walls
-    sit ``clearance`` outside the drawn body a (``body_shape``: its half-width
-    across the guide), and span body a's extent along the guide plus ``margin``
-    (default: the body's width) at each end.
+    Its walls sit ``clearance`` outside the drawn body a and span its extent along the guide.
 
     Parameters
     ----------
@@ -1048,17 +988,14 @@ def contact(pic: Picture, id: str, contact, pose, *, body_shape=None, size: floa
             clearance: float = 0.04, z: int = 7) -> list:
     """One contact of a model (thesis 9.3, 9.49) at the poses ``pose`` (N, 3).
 
-    * ``"pin"``: a white square with a dark rim at the contact point (a loop
-      closure, distinct from the tree's round pins);
-    * ``"slider"``: the two guide walls of :func:`slider_guide` (hatched outside
-      when the guide is the ground; ids ``id + ":wall 1"``, ``id + ":wall 2"``)
-      and a dot at the contact point on body a (``id``);
-    * ``"weld"``: a filled dark square at the contact point.
+    A pin is a white square, a weld a dark one; a slider is the two guide walls of
+    :func:`slider_guide` (``id + ":wall 1"``, ``":wall 2"``) and a dot on body a (``id``).
 
     Parameters
     ----------
     {pic id}
     contact : planargeo.mechanics.contacts.Contact
+        The contact.
     pose : array_like (N, 3)
         The bodies' poses.
     body_shape : shapely geometry, optional
@@ -1137,12 +1074,15 @@ def _slide_clear(line, L, foot, blocked, clearance):
 def model_shapes(model, data, *, width: float = 0.18) -> list:
     """The bodies of ``model`` at the state ``data`` as :func:`model` draws them (world shapely shapes).
 
-    To fit a view to a mechanism before its picture exists (:func:`panel`).
+    A body's ``shape`` moved by its pose, else a rounded link from its joint to each child's
+    (a tip body: through its centre of mass to twice as far).
 
     Parameters
     ----------
     model : planargeo.mechanics.model.Model
+        The model.
     data : planargeo.mechanics.model.Data
+        Its kinematics at the state.
     width : float
         Width of the default rounded links.
 
@@ -1175,13 +1115,10 @@ def model_shapes(model, data, *, width: float = 0.18) -> list:
 
 
 def split_arrows(s, R, A, f, *, scale: float = 1.0, anchor, avoid=None, clearance: float = 0.1):
-    """The split of a joint force (6.38) and the arrows :func:`joint_split` draws, before drawing.
+    """The split ``f = T Q + R μ`` of a joint force (6.38) and the arrows :func:`joint_split` draws.
 
-    ``f = T Q + R μ`` with ``T``, ``U`` built on the inertia ``A``
-    (:class:`planargeo.mechanics.subspaces.Decomposition`).  Each arrow is
-    ``scale |part|`` long on its line, centred on ``anchor``'s foot; with ``avoid`` it
-    slides along its line to the nearest place ``clearance`` away from ``avoid`` and
-    from the arrows before it (``f``, then the active part, then the reaction).
+    Each arrow is ``scale |part|`` long on its line, centred on ``anchor``'s foot, slid along
+    its line to ``clearance`` from ``avoid`` and from the arrows before it.
 
     Parameters
     ----------
@@ -1198,7 +1135,9 @@ def split_arrows(s, R, A, f, *, scale: float = 1.0, anchor, avoid=None, clearanc
     anchor : (float, float)
         Where the arrows sit along their lines.
     avoid : shapely geometry, optional
+        What the arrows keep clear of.
     clearance : float
+        Free distance around ``avoid`` and earlier arrows (data units).
 
     Returns
     -------
@@ -1255,12 +1194,8 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
                 gap: float = 5.0, avoid=None, clearance: float = 0.1):
     """A joint force ``f`` split into its active part ``T Q`` and its reaction ``R μ`` (6.38).
 
-    Three lines across the view, each with an arrow ``scale |part|`` long
-    (:func:`split_arrows`): ``f`` (element ``id + ":f"``, wrench), ``T Q``
-    (``id + ":active"``, dashed) and ``R μ`` (``id + ":reaction"``, dotted).  Each
-    label sits beside its arrow's middle, ``gap`` points off the line, on the side
-    that keeps it farthest from the other two arrows, the labels already placed and
-    ``avoid``.  A pure couple (a line at infinity) is the picture's couple glyph.
+    Three lines with arrows (:func:`split_arrows`): ``id + ":f"``, ``":active"`` (dashed) and
+    ``":reaction"`` (dotted), each labelled on the side of its arrow with the most room.
 
     Parameters
     ----------
