@@ -1,23 +1,8 @@
-"""Scene ``articulated``: rigid and articulated inertias along a chain as conics (thesis sections 7.1-7.3, 10.2.2, 10.2.3; 7.7a, 7.26).
+"""Scene ``articulated``: rigid and articulated inertias along a chain as conics (thesis 7.1-7.3, 10.2.2, 10.2.3).
 
-``n`` identical bodies (mass ``m = 1``, joints ``L = 1`` apart, centre of mass half-way,
-radius of gyration ``rho = L / lam``) hang from joint 1 at the origin; every further joint
-bends the chain by ``phi``.  At rest, without gravity.  For every body the scene gives
-
-* its rigid inertia ``I_i`` and its articulated inertia ``A_i`` (7.7a), the latter with only
-  ``outboard`` bodies beyond ``i`` included (the truncated recursion of 10.2.2;
-  ``outboard = None``: all of them);
-* the effective centre of ``A_i``: the centre of the conic, ``A_i⁻¹ [0, 0, 1]`` (the pole of
-  the line at infinity: a couple on body ``i`` turns it about this point, 7.26);
-* the axes of percussion ``I_i a`` and ``A_i a`` of a chosen acceleration pole ``a``
-  (5.64-5.68): the force on body ``i`` that gives it that acceleration alone and with the
-  bodies outboard attached;
-* for every body, the articulated inertia's components (at the body's own joint) after
-  ``k = 0, 1, ...`` recursion steps and their error against the full recursion.
-
-Inertias are imaginary conics; they are drawn through the real conic with the sign of the
-homogeneous part flipped (10.2.3, :func:`planargeo.geometry.conics.drawable_conic`), whose
-polars are the point reflections of the inertia's through the centre.
+``n`` bodies (``m = 1``, joints ``L = 1`` apart, ``rho = L / lam``) hang from the origin, each
+joint after the first bent by ``phi``, at rest.  Inertias are imaginary conics, drawn through
+the real conic with the homogeneous part's sign flipped (10.2.3).
 
 Examples
 --------
@@ -49,16 +34,11 @@ def bent_chain_model(n: int, rho: float, L: float = 1.0, m: float = 1.0, g: floa
     rho, L, m : float
         Radius of gyration, length and mass of each body (> 0).
     g : float
-        Gravity along -y [m/s²] (default 0).
+        Gravity along -y [m/s²].
 
     Returns
     -------
     Model
-
-    Examples
-    --------
-    >>> bent_chain_model(2, 0.5).N
-    2
     """
     bodies = [Body(m, (L / 2, 0.0), m * rho * rho, name=f"body {i + 1}") for i in range(n)]
     joints = [Joint("revolute", (0.0 if i == 0 else L, 0.0, 0.0), name=f"CJ{i + 1}") for i in range(n)]
@@ -92,9 +72,7 @@ def joint_points(q, L: float = 1.0) -> np.ndarray:
 
 
 def inertia_at(A, point) -> np.ndarray:
-    """An inertia given at the origin, expressed at ``point = (x, y)``: ``X⁻ᵀ A X⁻¹`` (thesis 1.68, 4.58).
-
-    ``X = [[1, 0, -y], [0, 1, x], [0, 0, 1]]`` moves twists to the point (4.8).
+    """An inertia given at the origin, expressed at ``point = (x, y)``: ``X⁻ᵀ A X⁻¹`` (thesis 1.68, 4.58, 4.8).
 
     Parameters
     ----------
@@ -119,10 +97,7 @@ def inertia_at(A, point) -> np.ndarray:
 
 
 def conic_centre(A) -> np.ndarray:
-    """Centre ``(x, y)`` of an inertia conic: its pole of the line at infinity, ``A⁻¹ [0, 0, 1]``.
-
-    For a body's inertia the centre of mass; for an articulated inertia the effective centre
-    (7.26): a couple turns the body about it.
+    """Centre ``(x, y)`` of an inertia conic, ``A⁻¹ [0, 0, 1]``: the centre of mass, or the effective centre (7.26).
 
     Parameters
     ----------
@@ -154,28 +129,21 @@ def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int | 
     Parameters
     ----------
     n : int
-        Number of bodies (>= 1).  Default 4.
+        Number of bodies (>= 1).
     lam : float
-        Size ratio ``lambda = L / rho`` (> 0, 7.21).  Default 3.
+        Size ratio ``lambda = L / rho`` (> 0, 7.21).
     phi : float
-        Bend at every joint after the first [rad].  Default 0.4.
+        Bend at every joint after the first [rad].
     outboard : int or None
-        Bodies beyond each body included in its articulated inertia (>= 0), or None
-        for all of them (the full recursion).  Default None.
+        Bodies beyond each body in its articulated inertia (>= 0; None: all, the full recursion).
     pole_x, pole_y : float
         The acceleration pole ``a`` whose axes of percussion are given [m].
 
     Returns
     -------
     SceneResult
-        ``quantities``: ``joints`` (n+1, 2), ``I``, ``A``, ``A_full`` (n, 3, 3) at the origin,
-        ``centre_rigid``, ``centre`` (n, 2) conic centres of ``I_i`` and ``A_i``,
-        ``axis_rigid``, ``axis`` (n, 3) the lines ``I_i a`` and ``A_i a``, ``pole`` (3,),
-        ``components`` (n lists of ``k = 0..n-1-i`` rows of :data:`COMPONENTS` of ``A_i`` at
-        joint ``i``), ``error`` (n lists: ``‖A_i^(k) - A_i‖_F / ‖A_i‖_F`` for the same ``k``),
-        ``truncation_error`` (n,) of the shown ``A``, ``effective_7_26``: ``d_over_L``,
-        ``mx_over_m``, ``my_over_m``, ``Az_over_m_rho2`` of body 1 (7.26; meaningful for
-        ``phi = 0``).  ``state``: ``q = [0, phi, ...]``.
+        The keys of :func:`articulated_state` as lists (without ``result``, ``full``), and
+        ``effective_7_26`` of body 1 (7.26; meaningful for ``phi = 0``).
 
     Raises
     ------
@@ -214,38 +182,33 @@ def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int | 
 
 
 def articulated_state(model, q, *, outboard: int | None = None, pole=(0.0, 0.0), L: float = 1.0) -> dict:
-    """Everything the scene and the explorer show of one configuration of a chain (arrays).
+    """Everything the scene and the explorer show of one configuration of a chain at rest (arrays).
 
     Parameters
     ----------
     model : Model
         An unbranched chain of revolute joints ``L`` apart (:func:`bent_chain_model`).
     q : array_like (n,)
-        Relative joint angles [rad]; the chain is taken at rest (inertias do not depend on speeds).
+        Relative joint angles [rad].
     outboard : int or None
-        Truncation of the recursion (``None``: all bodies outboard).
+        Truncation of the recursion (10.2.2; None: all bodies outboard).
     pole : (float, float)
-        The acceleration pole ``a`` (a point) whose axes of percussion are wanted.
+        The acceleration pole ``a`` whose axes of percussion are wanted.
     L : float
-        Distance between joints (for the joint positions).
+        Distance between joints.
 
     Returns
     -------
     dict
-        ``joints``, ``I``, ``A``, ``A_full``, ``centre_rigid``, ``centre``, ``pole``, ``axis_rigid``,
-        ``axis``, ``truncation_error``, ``components`` (list of (k_i, 6) arrays), ``error`` (list of
-        (k_i,) arrays), ``result`` and ``full`` (:class:`~planargeo.algorithms.articulated_inertia.ArticulatedInertias`).
+        ``joints``; ``I``, ``A``, ``A_full`` at the origin (7.7a); conic centres ``centre_rigid``,
+        ``centre``; ``pole``; the axes ``axis_rigid`` = ``I_i a``, ``axis`` = ``A_i a``;
+        ``truncation_error``; per body ``components`` (:data:`COMPONENTS` of ``A_i`` at its joint
+        after ``k = 0, 1, ...`` steps) and their relative ``error``; ``result`` and ``full``.
 
     Raises
     ------
     SingularConfigurationError
         A singular joint (never for bodies with mass and rotational inertia).
-
-    Examples
-    --------
-    >>> st = articulated_state(bent_chain_model(2, 0.5), [0.0, 0.0], outboard=0)
-    >>> bool(np.allclose(st["A"], st["I"]))
-    True
     """
     from planargeo.algorithms.articulated_inertia import articulated_inertia
 

@@ -1,27 +1,12 @@
 """Scene ``car``: a car cornering and accelerating, solved by projective dynamics (thesis 6.9).
 
-The car (wheelbase ``L``) turns with its steering fixed, so it rotates about
-the instant centre of rotation (ICR), where the rear-axle line meets the
-front-axle line.  The thesis models this as a revolute joint ``s`` at the ICR
-(6.114) whose reactions are the two lateral tyre forces.
-
-Geometry (thesis frame = world frame, the ICR at the global origin):
-
-* ICR ``(0, 0)``; rear tyre contact ``(d, 0)``; front tyre contact ``(d, L)``;
-  the car heads along +y, so ``d > 0`` is a left turn;
-* centre of gravity ``(d, (1 - ε) L)``, i.e. ``ε L`` behind the front axle;
-* rear tyre reaction ``R₁ = [1, 0, 0]``: a unit force along the rear axle (+x);
-  front tyre reaction ``R₂ = [d, L, 0]/√(d²+L²)``: a unit force along the front
-  axle, pointing away from the ICR (6.114);
-* drive force ``F_A`` at the front contact along the front wheels' rolling
-  direction ``(-L, d)/√(d²+L²)`` (6.120).
-
-The solution goes through :mod:`planargeo.mechanics.subspaces` exactly as in the thesis:
-``T`` (6.124), ``U`` (6.126), ``γ = Rᵀκ`` (6.128), ``ω̇ = ψ = Tᵀ I⁻¹ (T Q − d)``
-with ``Q = 0`` and ``d = p − f_A`` (6.107, 6.130), and
-``μ = Uᵀ I U γ + Uᵀ d`` (6.106a, 6.132).  ``μ = (μ_rear, μ_front)`` are the
-signed tyre forces along ``R₁``, ``R₂``: negative values push the car towards
-the ICR.
+With its steering fixed the car turns about the instant centre of rotation (ICR), where the
+rear- and front-axle lines meet: a revolute joint ``s`` at the ICR (6.114) whose reactions are
+the two lateral tyre forces.  World frame: ICR at the origin, rear contact ``(d, 0)``, front
+contact ``(d, L)``, heading +y (``d > 0``: a left turn), centre of gravity ``ε L`` behind the
+front axle.  Solved through :mod:`planargeo.mechanics.subspaces` as in the thesis: ``T``
+(6.124), ``U`` (6.126), ``γ = Rᵀκ`` (6.128), ``ω̇ = Tᵀ I⁻¹ (T Q − d)`` (6.107, 6.130),
+``μ = Uᵀ I U γ + Uᵀ d`` (6.106a, 6.132); negative ``μ`` push the car towards the ICR.
 """
 from __future__ import annotations
 
@@ -58,73 +43,42 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
     Parameters
     ----------
     m : float
-        Mass of the car [kg] (> 0).  Default 1200 kg, a small car.
+        Mass [kg] (> 0).
     rho : float
-        Radius of gyration about the vertical axis through the centre of
-        gravity [m] (> 0; yaw inertia ``m ρ²``).  Default 1.2 m.
+        Radius of gyration about the centre of gravity [m] (> 0; yaw inertia ``m ρ²``).
     L : float
-        Wheelbase [m] (> 0).  Default 2.6 m.
+        Wheelbase [m] (> 0).
     d : float
-        Radius of the turn measured at the rear axle: the ICR is ``d`` to the
-        left of the rear tyre contact [m] (the rear speed is ``V = ω d``).
-        Default 8 m, a tight corner.
+        Radius of the turn at the rear axle [m] (rear speed ``V = ω d``).
     eps : float
-        Distance of the centre of gravity behind the front axle, as a fraction
-        of the wheelbase (``ε L``; usually in ``[0, 1]``).  Default 0.45
-        (slightly nose-heavy).
+        Centre of gravity behind the front axle, as a fraction of ``L``.
     omega : float
-        Yaw rate about the ICR [rad/s].  Default 0.5 rad/s (``V`` = 4 m/s).
+        Yaw rate about the ICR [rad/s].
     F_A : float
         Drive force at the front tyres along their rolling direction [N].
-        Default 2000 N.
     outlines : bool
-        Build the shapely outlines (the car body as ``model.bodies[0].shape``
-        and ``extra["tyres"]``).  Default True.  Only gallery Fig 6.6 draws
-        them; ``False`` (used by the car explorer, which draws its own outline
-        and rebuilds the scene on every control change) skips the shapely
-        work: no ``"tyres"`` key, body ``shape`` None, every other output
-        identical.  A drawing option, not a physical parameter, so it is not
-        listed in ``params``.
+        Build the shapely outlines (body ``shape``, ``extra["tyres"]``; only Fig 6.6 draws them).
+        A drawing option, not in ``params``; every other output is the same without.
 
     Returns
     -------
     SceneResult
-        ``quantities`` (plain lists, thesis ordering, at the global origin = ICR):
-        ``omega_dot`` (6.131), ``mu`` = [rear, front] tyre forces (6.133),
-        ``T`` (3,) (6.125), ``U`` (3×2) (6.127), ``s``, ``R`` (6.114), ``I``
-        (6.117), ``v`` (6.115), ``kappa`` (6.116), ``p`` (6.119), ``f_A``
-        (6.120), ``gamma`` (6.129), ``a`` (acceleration twist), ``f`` (joint =
-        total tyre wrench, 6.122), ``V`` (rear speed ``ω d``).
-        ``extra`` (numpy arrays, for drawing): ``icr``, ``rear_contact``,
-        ``front_contact``, ``cg``, ``heading``, ``rear_axle``, ``front_axle``
-        (unit lateral directions of ``R₁``, ``R₂``), ``front_rolling``,
-        ``steer`` (front steering angle [rad]), ``joint`` (the
-        :class:`~planargeo.mechanics.joints.JointSpace`), ``s``, ``R``, ``T``, ``U``,
-        ``tyre_wrenches`` (3×2: ``R₁ μ₁``, ``R₂ μ₂``), ``decomposition``,
-        ``tyres`` (shapely outlines of the rear and front tyre, world frame;
-        only when ``outlines``).
-        ``model``: one body (the car, outline as ``shape`` when ``outlines``,
-        else None) on a revolute
-        joint at the ICR, no gravity (the road is the plane); ``state`` holds
-        ``q = [0]``, ``qd = [ω]``, ``tau = [0]`` and ``f_ext = [f_A]``, so any
-        forward-dynamics function reproduces ``omega_dot``.
+        ``quantities`` at the ICR: ``omega_dot`` (6.131), ``mu`` = [rear, front] (6.133), ``T``
+        (6.125), ``U`` (6.127), ``s``, ``R`` (6.114), ``I`` (6.117), ``v`` (6.115), ``kappa``
+        (6.116), ``p`` (6.119), ``f_A`` (6.120), ``gamma`` (6.129), ``a``, ``f`` (6.122), ``V``.
+        ``extra``: the geometry for drawing.  ``state`` has ``f_ext = [f_A]``, so any
+        forward-dynamics function on ``model`` reproduces ``omega_dot``.
 
     Raises
     ------
     SceneError
-        A parameter that is not a finite number (``m``, ``rho``, ``L`` not
-        positive), or ``outlines`` not a boolean.
+        A parameter not a finite number (``m``, ``rho``, ``L`` not positive), or ``outlines`` not a bool.
 
     Examples
     --------
     >>> res = car()
-    >>> round(res.quantities["omega_dot"], 4)
-    0.2077
-    >>> [round(x, 1) for x in res.quantities["mu"]]
-    [-1102.4, -1089.3]
-    >>> bare = car(outlines=False)
-    >>> bare.quantities["mu"] == res.quantities["mu"], "tyres" in bare.extra
-    (True, False)
+    >>> round(res.quantities["omega_dot"], 4), [round(x, 1) for x in res.quantities["mu"]]
+    (0.2077, [-1102.4, -1089.3])
     """
     m = check_param("m", m, positive=True)
     rho = check_param("rho", rho, positive=True)
@@ -170,20 +124,9 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
     f = dec.join_wrench(Q, mu)                                                # (6.38), (6.123)
 
     quantities = {
-        "omega_dot": float(psi[0]),
-        "mu": mu.tolist(),
-        "T": T[:, 0].tolist(),
-        "U": U.tolist(),
-        "s": s[:, 0].tolist(),
-        "R": R.tolist(),
-        "I": I.tolist(),
-        "v": v.tolist(),
-        "kappa": kappa.tolist(),
-        "p": p.tolist(),
-        "f_A": f_A.tolist(),
-        "gamma": gamma.tolist(),
-        "a": a.tolist(),
-        "f": f.tolist(),
+        "omega_dot": float(psi[0]), "mu": mu.tolist(), "T": T[:, 0].tolist(), "U": U.tolist(),
+        "s": s[:, 0].tolist(), "R": R.tolist(), "I": I.tolist(), "v": v.tolist(), "kappa": kappa.tolist(),
+        "p": p.tolist(), "f_A": f_A.tolist(), "gamma": gamma.tolist(), "a": a.tolist(), "f": f.tolist(),
         "V": omega * d,
     }
     extra = {

@@ -1,22 +1,13 @@
-"""Scene ``chain``: a planar chain of uniform links (thesis Chapters 2-3).
+"""Scene ``chain``: a planar chain of uniform links (thesis Chapters 2-3), solved by all five methods.
 
-Link ``i`` has mass ``mass``, length ``length``, centre of mass at mid-link and
-inertia ``mass length²/12`` about it; joint 1 sits at the origin and joint ``i``
-at the tip of link ``i-1``; at ``q = 0`` the links lie along +x; ``q`` are
-relative joint angles (CCW positive) or slides along the link, ``tau`` the
-joint torques / forces; gravity acts along y.
-
-The joint accelerations are solved by all five forward dynamics methods
-(``aba`` (3.6), ``projective`` (6.108-6.113), ``mobility_split`` (7.54/7.56),
-``stacked`` (9.39/9.48), ``crba`` (dense reference)); an error raised by any
-of them propagates (``planargeo report chain`` then exits non-zero with its
-message).
+Link ``i`` (mass ``mass``, length ``length``, ``J = m L²/12`` at mid-link) hangs from joint ``i``
+at the tip of link ``i-1`` (joint 1 at the origin), along +x at ``q = 0``; an error from any
+method propagates (``planargeo report chain`` then exits non-zero).
 
 Examples
 --------
 >>> from planargeo import scenes
->>> r = scenes.build("chain", n=1)
->>> r.quantities["qdd"]["aba"]          # a rod released horizontally: -1.5 g
+>>> scenes.build("chain", n=1).quantities["qdd"]["aba"]          # a rod released horizontally: -1.5 g
 [-14.715]
 """
 from __future__ import annotations
@@ -50,11 +41,6 @@ def available_methods() -> dict:
     -------
     dict
         Method name -> ``forward_dynamics(model, q, qd, tau, f_ext=None)``.
-
-    Examples
-    --------
-    >>> list(available_methods())
-    ['aba', 'projective', 'mobility_split', 'stacked', 'crba']
     """
     return dict(METHODS)
 
@@ -62,10 +48,8 @@ def available_methods() -> dict:
 def chain_workspace(model, q, qd, tau):
     """One state of a chain solved by the articulated-body algorithm (thesis 3.6): its workspace.
 
-    What the scene keeps in ``extra["data"]`` and the chain explorer draws, one
-    kinematics pass per state: poles ``v``, ``a`` (4.5, 4.6), bias terms
-    ``kappa``, ``p``, articulated inertias ``A`` (3.38), joint forces ``f`` (3.13),
-    ``qdd`` (3.41).  See :func:`planargeo.algorithms.aba.articulated_body`.
+    What the chain explorer draws: poles ``v``, ``a`` (4.5, 4.6), ``kappa``, ``p``, articulated
+    inertias ``A`` (3.38), joint forces ``f`` (3.13), ``qdd`` (3.41).
 
     Parameters
     ----------
@@ -77,13 +61,7 @@ def chain_workspace(model, q, qd, tau):
     Returns
     -------
     Data
-        The ABA workspace (poses, poles, forces, articulated inertias, ``qdd``).
-
-    Examples
-    --------
-    >>> w = chain_workspace(chain_model(1), [0.0], [0.0], [0.0])
-    >>> w.qdd                                   # a rod released horizontally: -1.5 g
-    array([-14.715])
+        From :func:`planargeo.algorithms.aba.articulated_body`.
     """
     return articulated_body(model, q, qd, tau)
 
@@ -91,12 +69,10 @@ def chain_workspace(model, q, qd, tau):
 def chain_accelerations(model, q, qd, tau):
     """The joint accelerations ``q̈`` of a chain at one state (articulated-body algorithm, 3.6).
 
-    What the explorers integrate in time; widgets reach the algorithms through the scenes.
-
     Parameters
     ----------
     model, q, qd, tau : Model, array_like (nq,)
-        The chain and its state, as for :func:`chain_workspace`.
+        As for :func:`chain_workspace`.
 
     Returns
     -------
@@ -125,19 +101,16 @@ def chain(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str = "revo
     joint : {"revolute", "prismatic"}
         Kind of every joint (a prismatic joint slides along its link).
     seed : int or None
-        A non-negative integer: if given, ``q``, ``qd``, ``tau`` are drawn
-        from a normal distribution with this seed; otherwise they are zero.
+        If given, ``q``, ``qd``, ``tau`` are normal random numbers with this seed; else zero.
     gravity : float
-        Gravitational acceleration along y (default -9.81).
+        Gravitational acceleration along y.
 
     Returns
     -------
     SceneResult
-        ``model`` (:class:`planargeo.mechanics.model.Model`); ``state``: ``q``, ``qd``,
-        ``tau``; ``quantities``: ``q``, ``qd``, ``tau``, ``qdd`` (``{method:
-        list}`` for each of the five methods), ``max_disagreement`` (largest
-        difference from the ``aba`` result); ``extra``: ``methods``
-        (names run), ``data`` (the ABA workspace: ``A``, ``d``, ``a``, ``f``...).
+        ``quantities``: ``q``, ``qd``, ``tau``, ``qdd`` by ``aba`` (3.6), ``projective``
+        (6.108-6.113), ``mobility_split`` (7.54/7.56), ``stacked`` (9.39/9.48), ``crba``, and
+        ``max_disagreement``; ``extra["data"]``: the ABA workspace.
     """
     n_int = check_param("n", n, "int", positive=True)
     mass_v = check_param("mass", mass, positive=True)

@@ -1,24 +1,13 @@
 """Scene ``horizontal-chain``: articulated inertia of the first body of a straight chain (thesis 7.3).
 
-``n`` identical bodies (mass ``m``, radius of gyration ``rho``, joints ``L``
-apart, centre of mass half-way) lie along +x, joint 1 at the origin, at rest,
-without gravity.  The articulated inertia ``A_1`` of the first body (7.1.1) is
-diagonal when expressed at its *effective centre of gravity*, the point
-``(d, 0)`` (7.26)::
-
-    A_1 at (d, 0) = diag(m_x, m_y, A_z)
-
-With ``A_1 = [[a, 0, 0], [0, b, c], [0, c, e]]`` at the origin (the chain is
-symmetric about the x axis) moving the reference point to ``(d, 0)`` gives
-``d = c / b``, ``m_x = a``, ``m_y = b``, ``A_z = e - c^2 / b``.  The results
-depend on ``n`` and ``lambda = L / rho`` only.  For two bodies (derived by hand
-from 7.19 at ``phi = 0``)::
+``n`` identical bodies along +x (joints ``L`` apart) at rest, without gravity.  ``A_1`` (7.1.1) is
+diagonal, ``diag(m_x, m_y, A_z)``, at its *effective centre of gravity* ``(d, 0)`` (7.26); the
+results depend on ``n`` and ``lambda = L / rho`` only.  For two bodies (by hand from 7.19)::
 
     d/L = (lambda^2 + 12) / (2 (lambda^2 + 8))   (7.27)     m_x/m = 2
     m_y/m = (lambda^2 + 8) / (lambda^2 + 4)                  A_z/(m rho^2) = 2 (lambda^2 + 4) / (lambda^2 + 8)
 
-and for ``lambda = 2`` every further body leaves ``d``, ``m_y`` and ``A_z``
-unchanged (7.3's claim; ``m_x = n m`` always).
+and at ``lambda = 2`` further bodies leave ``d``, ``m_y`` and ``A_z`` unchanged (7.3's claim).
 
 Examples
 --------
@@ -31,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo.mechanics.model import Body, Joint, Model
+from planargeo.mechanics.model import Model
 from planargeo.scenes import SceneResult, check_param, plain, register
 
 __all__ = ["horizontal_chain", "horizontal_chain_model", "effective_centre"]
@@ -44,27 +33,20 @@ def horizontal_chain_model(n: int, m: float, rho: float, L: float) -> Model:
     ----------
     n : int
         Number of bodies.
-    m : float
-        Mass of each body (kg).
-    rho : float
-        Radius of gyration of each body (m).
-    L : float
-        Joint spacing (m).
+    m, rho, L : float
+        Mass (kg) and radius of gyration (m) of each body, joint spacing (m).
 
     Returns
     -------
     Model
-        The chain, without gravity.
     """
-    bodies = [Body(m, (L / 2, 0.0), m * rho * rho, name=f"body {i + 1}") for i in range(n)]
-    joints = [Joint("revolute", (0.0 if i == 0 else L, 0.0, 0.0), name=f"CJ{i + 1}") for i in range(n)]
-    return Model(bodies, joints, list(range(-1, n - 1)), gravity=(0.0, 0.0))
+    from planargeo.scenes.articulated import bent_chain_model      # here: keeps the scenes' order
+
+    return bent_chain_model(n, rho, L, m)
 
 
 def effective_centre(A) -> tuple[float, float, float, float]:
-    """``(d, m_x, m_y, A_z)`` of an inertia symmetric about the x axis (thesis 7.26).
-
-    ``d`` is where the inertia becomes diagonal on the x axis.
+    """``(d, m_x, m_y, A_z)`` of an inertia symmetric about the x axis: where it is diagonal (thesis 7.26).
 
     Parameters
     ----------
@@ -74,7 +56,7 @@ def effective_centre(A) -> tuple[float, float, float, float]:
     Returns
     -------
     tuple of float
-        ``(d, m_x, m_y, A_z)``: the centre on the x axis (m), the two masses (kg) and the rotational inertia there (kg·m²).
+        The centre ``d`` on the x axis (m), the two masses (kg) and the rotational inertia there.
 
     Examples
     --------
@@ -94,22 +76,15 @@ def horizontal_chain(n: int = 4, lam: float = 2.0) -> SceneResult:
     Parameters
     ----------
     n : int
-        Number of bodies (>= 1).  Default 4 (the thesis tabulates 1..4).
+        Number of bodies (>= 1).
     lam : float
-        Size ratio ``lambda = L / rho`` (> 0, 7.21).  Default 2.0, the
-        elliptical disk of the thesis.
+        Size ratio ``lambda = L / rho`` (> 0, 7.21).
 
     Returns
     -------
     SceneResult
-        ``quantities``: ``d_over_L``, ``mx_over_m``, ``my_over_m``,
-        ``Az_over_m_rho2`` of the first body (7.26), and ``A1`` (3×3, at the
-        origin) for ``m = L = 1``.  ``state``: ``q = 0``.
-
-    Examples
-    --------
-    >>> horizontal_chain(n=1, lam=3.0).quantities["d_over_L"]
-    0.5
+        ``d_over_L``, ``mx_over_m``, ``my_over_m``, ``Az_over_m_rho2`` of body 1 (7.26) and
+        ``A1`` at the origin, for ``m = L = 1``.
     """
     from planargeo.algorithms.articulated_inertia import articulated_inertia
 
@@ -121,13 +96,8 @@ def horizontal_chain(n: int = 4, lam: float = 2.0) -> SceneResult:
     model = horizontal_chain_model(n, m, rho, L)
     r = articulated_inertia(model, np.zeros(n))
     d, mx, my, Az = effective_centre(r.A[0])
-    quantities = {
-        "d_over_L": d / L,
-        "mx_over_m": mx / m,
-        "my_over_m": my / m,
-        "Az_over_m_rho2": Az / (m * rho * rho),
-        "A1": plain(r.A[0]),
-    }
+    quantities = {"d_over_L": d / L, "mx_over_m": mx / m, "my_over_m": my / m,
+                  "Az_over_m_rho2": Az / (m * rho * rho), "A1": plain(r.A[0])}
     state = {"q": [0.0] * n, "qd": [0.0] * n, "tau": [0.0] * n}
     return SceneResult("horizontal-chain", params, model, state, quantities,
                        extra={"articulated": r, "effective_centre": np.array([d, 0.0])})

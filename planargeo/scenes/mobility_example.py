@@ -1,19 +1,9 @@
 """Scene ``mobility-example``: articulated mobility of a pinned two-body chain (thesis 7.5, Figure 7.9).
 
-The bodies of :mod:`~planargeo.scenes.two_body` with the first joint ``CJ_1``
-pinned to the ground at the origin, at rest, without gravity.  A pure couple
-``f_3 = [0, 0, tau]`` (7.44) from a fictitious joint 3 acts on body 2 (as
-``-f_3``, 3.1) and accelerates it by (7.45)::
-
-    a_2 = -Lambda_2^-1 f_3
-
-with the articulated mobility ``Lambda_2^-1`` of the corrected recursion 7.38a
-(algorithm 7.4.1).  ``a_2`` is a rotation about the point ``(x, 0)`` with
-(7.47; derived by hand from the 2×2 joint-space inertia, ``eta = L / rho``)::
-
-    x / L = -a_2[1] / (L a_2[2]) = 1 + 2 eta^2 cos(phi) / (4 + 5 eta^2)
-
-the effective centre of mass of body 2 in the chain.
+The bodies of :mod:`~planargeo.scenes.two_body`, pinned at the origin, at rest, no gravity.  A
+pure couple ``f_3 = [0, 0, tau]`` (7.44) on body 2 accelerates it by ``a_2 = -Lambda_2^-1 f_3``
+(7.45; mobility of 7.38a), a rotation about ``(x, 0)`` with (7.47, by hand, ``eta = L / rho``)
+``x / L = 1 + 2 eta^2 cos(phi) / (4 + 5 eta^2)``.
 
 Examples
 --------
@@ -40,25 +30,17 @@ def mobility_example(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: floa
     Parameters
     ----------
     m, rho, L : float
-        Mass, radius of gyration and length of each body (> 0).  Defaults 1, 0.5, 1.
+        Mass, radius of gyration and length of each body (> 0).
     phi : float
-        Angle of body 2 relative to body 1 [rad].  Default ``pi / 4``.
+        Angle of body 2 relative to body 1 [rad].
     tau : float
-        Magnitude of the pure couple ``f_3 = [0, 0, tau]`` (non-zero).  Default 1.
+        The pure couple ``f_3 = [0, 0, tau]`` (non-zero).
 
     Returns
     -------
     SceneResult
-        ``quantities``: ``Lambda1_inv`` (7.42), ``Lambda2_inv`` (7.43), ``f3``
-        (7.44), ``a2`` (7.46), ``x_over_L`` (7.48), ``eta`` (7.49), ``T1``,
-        ``U1`` (7.40), ``T2``, ``U2`` (7.41; body-inertia subspaces at the
-        origin).  ``state``: ``q = [0, phi]``, ``qd = tau = [0, 0]``.
-
-    Examples
-    --------
-    >>> r = mobility_example(phi=0.0)
-    >>> round(r.quantities["x_over_L"], 12)    # 1 + 2*4/(4 + 20)
-    1.333333333333
+        ``Lambda1_inv`` (7.42), ``Lambda2_inv`` (7.43), ``f3`` (7.44), ``a2`` (7.46), ``x_over_L``
+        (7.48), ``eta`` (7.49), ``T1``, ``U1`` (7.40), ``T2``, ``U2`` (7.41).
     """
     from planargeo.algorithms.articulated_mobility import articulated_mobility
     m, rho, L = (check_param(k, v, positive=True) for k, v in (("m", m), ("rho", rho), ("L", L)))
@@ -71,14 +53,9 @@ def mobility_example(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: floa
     f3 = np.array([0.0, 0.0, tau])
     a2 = -r.Lambda_inv[1] @ f3 + r.b[1]                                   # (7.37), (7.45)
     quantities = {
-        "Lambda1_inv": plain(r.Lambda_inv[0]),
-        "Lambda2_inv": plain(r.Lambda_inv[1]),
-        "f3": plain(f3),
-        "a2": plain(a2),
-        "x_over_L": float(-a2[1] / (L * a2[2])),                          # (7.47)
-        "eta": L / rho,
-        "T1": plain(r.T[0][:, 0]), "U1": plain(r.U[0]),
-        "T2": plain(r.T[1][:, 0]), "U2": plain(r.U[1]),
+        "Lambda1_inv": plain(r.Lambda_inv[0]), "Lambda2_inv": plain(r.Lambda_inv[1]), "f3": plain(f3),
+        "a2": plain(a2), "x_over_L": float(-a2[1] / (L * a2[2])), "eta": L / rho,      # x/L: (7.47)
+        "T1": plain(r.T[0][:, 0]), "U1": plain(r.U[0]), "T2": plain(r.T[1][:, 0]), "U2": plain(r.U[1]),
     }
     state = {"q": plain(q), "qd": [0.0, 0.0], "tau": [0.0, 0.0]}
     return SceneResult("mobility-example", params, model, state, quantities,
