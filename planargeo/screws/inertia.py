@@ -1,14 +1,8 @@
 """Planar rigid-body inertias as (imaginary) conics (thesis 1.8, 4.58, 5.4, 10.2.3).
 
-An inertia ``I`` (a symmetric positive definite ``(3, 3)`` matrix at the
-origin, :func:`planargeo.screws.inertia_matrix`) maps an acceleration twist
-(a point: its pole) to the force wrench that produces it from rest (a line:
-the *axis of percussion* of the pole, thesis 5.64-5.68).  As a conic it has
-no real points; :func:`drawable_conic` gives the real *radius of gyration
-circle* that can be drawn instead (thesis 10.2.3).
-
-Functions broadcast over leading dimensions (inertias ``(..., 3, 3)``, points
-and lines ``(..., 3)``); :class:`Inertia` is a thin validated wrapper.
+An inertia maps an acceleration pole (a point) to the wrench that produces it from rest (a
+line: its axis of percussion, 5.64-5.68); :func:`drawable_conic` gives the real circle of
+gyration drawn for it.  Functions broadcast; :class:`Inertia` is a thin validated wrapper.
 """
 from __future__ import annotations
 
@@ -49,12 +43,7 @@ def _mat(x, name="inertia") -> np.ndarray:
 
 
 def _psd(x, name="inertia") -> np.ndarray:
-    """An inertia that must be symmetric positive *semi*-definite (a point mass, ``J = 0``, is allowed).
-
-    Raises :class:`InputError` (not symmetric) or :class:`SingularInertiaError`
-    (a negative eigenvalue beyond rounding,
-    :func:`planargeo._validate.check_positive_semidefinite`), naming ``name``.
-    """
+    """An inertia that must be symmetric positive *semi*-definite (a point mass is allowed)."""
     return check_positive_semidefinite(_mat(x, name), name)
 
 
@@ -63,7 +52,7 @@ RIGID_RTOL = 1e-10
 
 
 def _check_rigid(M: np.ndarray, name: str) -> np.ndarray:
-    """Raise :class:`InputError` unless ``M[0, 0] == M[1, 1]`` and ``M[0, 1] == 0`` (thesis 4.58), relative to ``max|M|``."""
+    """``M``, unless not of the rigid-body form 4.58 (``M[0, 0] == M[1, 1]``, ``M[0, 1] == 0``, relative to ``max|M|``)."""
     scale = np.abs(M).max(axis=(-2, -1), initial=0.0)
     dev = np.maximum(np.abs(M[..., 0, 0] - M[..., 1, 1]),
                      np.maximum(np.abs(M[..., 0, 1]), np.abs(M[..., 1, 0])))
@@ -88,21 +77,13 @@ def _vec(x, name) -> np.ndarray:
 
 
 # ---------------------------------------------------------------------------
-# Features of a rigid-body inertia (thesis 1.66, 4.58)
-#
-# mass, centre_of_mass, rotational_inertia and radius_of_gyration read the
-# entries of the rigid-body form 4.58 and do not check it: for an articulated
-# inertia (no such structure) the numbers mean nothing.  The Inertia class
-# checks the structure, so its properties are always meaningful.  The three
-# that divide by the mass reject a zero or negative ``inertia[0, 0]``.
+# Features of a rigid-body inertia (thesis 1.66, 4.58): read from the form 4.58, not checked
+# (Inertia checks it); those dividing by the mass reject inertia[0, 0] <= 0.
 # ---------------------------------------------------------------------------
 
 @_documented
 def mass(inertia) -> np.ndarray:
-    """Mass ``m = I[0, 0]`` of a rigid-body inertia (thesis 1.66, 4.58).
-
-    Only meaningful for the rigid-body form 4.58 (not checked here; it is by
-    :class:`Inertia`); an articulated inertia has no mass.
+    """Mass ``m = I[0, 0]`` (kg) of a rigid-body inertia (thesis 1.66, 4.58; the form is not checked).
 
     Parameters
     ----------
@@ -111,7 +92,6 @@ def mass(inertia) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (...)
-        Mass (kg).
 
     Examples
     --------
@@ -122,11 +102,7 @@ def mass(inertia) -> np.ndarray:
 
 
 def _with_mass(inertia, name: str = "inertia") -> np.ndarray:
-    """The inertia array, after checking its mass ``inertia[0, 0] > 0`` (every one of a batch).
-
-    Raises :class:`InputError` naming the argument and the first bad mass,
-    e.g. ``"inertia: mass inertia[0, 0] must be positive, got -1.0"``.
-    """
+    """The inertia array, after checking every mass ``inertia[0, 0] > 0`` (InputError naming it)."""
     I = _mat(inertia, name)
     m = I[..., 0, 0]
     bad = ~(m > 0)
@@ -138,10 +114,7 @@ def _with_mass(inertia, name: str = "inertia") -> np.ndarray:
 @overflow_checked("1 / mass")
 @_documented
 def centre_of_mass(inertia) -> np.ndarray:
-    """Centre of mass ``c = (I[1, 2], -I[0, 2]) / m`` (thesis 1.66, 4.58).
-
-    It is also the centre of the conic: the pole of the line at infinity
-    (thesis 5.2.2), i.e. the point whose axis of percussion is a pure couple.
+    """Centre of mass ``c = (I[1, 2], -I[0, 2]) / m`` (m; thesis 1.66, 4.58): the conic's centre.
 
     Parameters
     ----------
@@ -150,7 +123,6 @@ def centre_of_mass(inertia) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 2)
-        Centre of mass (m).
 
     Raises
     ------
@@ -160,10 +132,6 @@ def centre_of_mass(inertia) -> np.ndarray:
     --------
     >>> centre_of_mass(inertia_matrix(2.0, [1.0, -3.0], 0.5))
     array([ 1., -3.])
-    >>> centre_of_mass(np.diag([-1.0, -1.0, 1.0]))
-    Traceback (most recent call last):
-        ...
-    planargeo.errors.InputError: inertia: mass inertia[0, 0] must be positive, got -1.0
     """
     I = _with_mass(inertia)
     m = I[..., 0, 0]
@@ -173,7 +141,7 @@ def centre_of_mass(inertia) -> np.ndarray:
 @overflow_checked("inertia")
 @_documented
 def rotational_inertia(inertia) -> np.ndarray:
-    """Rotational inertia ``J = m ρ²`` about the centre of mass (parallel axis theorem, thesis 1.68, 4.58).
+    """Rotational inertia ``J = m ρ²`` (kg·m²) about the centre of mass (thesis 1.68, 4.58).
 
     Parameters
     ----------
@@ -182,7 +150,6 @@ def rotational_inertia(inertia) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (...)
-        ``J`` (kg·m²).
 
     Raises
     ------
@@ -201,7 +168,7 @@ def rotational_inertia(inertia) -> np.ndarray:
 @overflow_checked("inertia")
 @_documented
 def radius_of_gyration(inertia) -> np.ndarray:
-    """Radius of gyration ``ρ = sqrt(J / m)`` (thesis 4.58, 5.64).
+    """Radius of gyration ``ρ = sqrt(J / m)`` (m; thesis 4.58, 5.64).
 
     Parameters
     ----------
@@ -210,7 +177,6 @@ def radius_of_gyration(inertia) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (...)
-        ``ρ`` (m).
 
     Raises
     ------
@@ -228,7 +194,7 @@ def radius_of_gyration(inertia) -> np.ndarray:
 @overflow_checked("1 / inertia")
 @_documented
 def mobility(inertia) -> np.ndarray:
-    """Mobility ``I⁻¹`` (the dual conic; thesis 8.3.5), computed with ``solve``.
+    """Mobility ``I⁻¹``, the dual conic (thesis 8.3.5), computed with ``solve``.
 
     Parameters
     ----------
@@ -237,21 +203,16 @@ def mobility(inertia) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
-        ``I⁻¹``.
 
     Raises
     ------
-    SingularInertiaError
-        Singular or indefinite ``inertia`` (carrying ``.cond``).
-    InputError
-        Non-symmetric ``inertia``.
+    SingularInertiaError, InputError
+        ``inertia`` singular or indefinite (carrying ``.cond``), or not symmetric.
 
     Examples
     --------
-    >>> mobility(inertia_matrix(2.0, [0.0, 0.0], 0.5))
-    array([[0.5, 0. , 0. ],
-           [0. , 0.5, 0. ],
-           [0. , 0. , 2. ]])
+    >>> mobility(inertia_matrix(2.0, [0.0, 0.0], 0.5)).diagonal()
+    array([0.5, 0.5, 2. ])
     """
     I = _pd(inertia)
     return _solve(I, np.broadcast_to(np.eye(3), I.shape))
@@ -268,49 +229,31 @@ def _solve(I: np.ndarray, b: np.ndarray) -> np.ndarray:
 # Axis of percussion (thesis 5.64-5.68) and the drawable conic (10.2.3)
 # ---------------------------------------------------------------------------
 
+@_documented
 def percussion_axis(inertia, point) -> np.ndarray:
     """Axis of percussion ``f = I a`` of an acceleration pole ``a`` (thesis 5.64-5.68).
 
-    ``point`` is a homogeneous point (an acceleration twist; ``[y, -x, 1]`` for
-    ``(x, y)``).  The returned line is the force that, applied to the body at
-    rest, accelerates it about ``point``.  For a pole at distance ``d`` from
-    the centre of mass ``c`` the axis is perpendicular to the line ``P c``,
-    on the far side of ``c``, at distance ``r = ρ²/d`` from ``c`` (5.68), i.e.
-    ``l = d + ρ²/d`` from the pole (5.67).  Limits (no special cases in the
-    code): the pole at ``c`` gives the line at infinity (a pure couple); a pole
-    at infinity (a translation) gives a line through ``c``.
+    The force that, applied at rest, accelerates the body about ``point``: perpendicular to the
+    line from the pole to the centre of mass ``c``, beyond ``c`` at ``ρ²/d`` (5.67-5.68).  The pole at
+    ``c`` gives the line at infinity; a pole at infinity a line through ``c``.
 
     Parameters
     ----------
-    inertia : array_like (..., 3, 3) or Inertia
-        Symmetric positive definite inertia at the origin.
-    point : array_like (..., 3) or Point/Twist
-        Homogeneous acceleration pole(s).
+    {inertia pole}
 
     Returns
     -------
     ndarray (..., 3)
-        The wrench ``I a`` (not normalised: its size is the force for unit ``α``).
+        The wrench ``I a`` (not normalised).
 
     Raises
     ------
-    InputError
-        ``inertia`` is not symmetric.
-    SingularInertiaError
-        ``inertia`` is not positive semi-definite (a point mass, ``J = 0``,
-        is accepted: its axes of percussion all pass through the mass).
+    {not_psd}
 
     Examples
     --------
-    Thesis 5.64-5.66 with ``m = 2``, ``d = 1``, ``ρ = 1/2``: the line ``x = 1.25``.
-
-    >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.5)
-    >>> percussion_axis(I, [0.0, 0.0, 1.0])
+    >>> percussion_axis(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0])   # 5.66: the line x = 1.25
     array([0. , 2. , 2.5])
-    >>> percussion_axis(np.diag([1.0, 1.0, -1.0]), [0.0, 0.0, 1.0])
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.SingularInertiaError: inertia must be positive semi-definite, got smallest eigenvalue -1 (condition number inf)
     """
     I = _psd(inertia)
     a = _vec(point, "point")
@@ -323,32 +266,23 @@ def percussion_axis(inertia, point) -> np.ndarray:
 def percussion_pole(inertia, line) -> np.ndarray:
     """Acceleration pole ``a = I⁻¹ f`` whose axis of percussion is ``line`` (inverse of :func:`percussion_axis`).
 
-    A line through the centre of mass gives a pole at infinity (the body
-    translates); the line at infinity (a couple) gives the centre of mass.
-
     Parameters
     ----------
-    {inertia}
-    line : array_like, shape (..., 3)
-        Homogeneous line (a wrench).
+    {inertia impulse}
 
     Returns
     -------
     numpy.ndarray, shape (..., 3)
-        The acceleration ``I⁻¹ f`` (its pole, not normalised).
+        The acceleration ``I⁻¹ f`` (not normalised).
 
     Raises
     ------
-    InputError
-        ``inertia`` is not symmetric.
-    SingularInertiaError
-        ``inertia`` is not positive definite (e.g. a point mass, or an
-        indefinite matrix); carries ``.cond``.
+    InputError, SingularInertiaError
+        ``inertia`` not symmetric, or not positive definite (carrying ``.cond``).
 
     Examples
     --------
-    >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.5)
-    >>> percussion_pole(I, [0.0, 0.0, 1.0])      # a couple spins the body about its centre (1, 0)
+    >>> percussion_pole(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0])   # a couple: about the centre
     array([ 0., -1.,  1.])
     """
     I = _pd(inertia)
@@ -362,20 +296,9 @@ def percussion_pole(inertia, line) -> np.ndarray:
 def drawable_conic(inertia) -> np.ndarray:
     """The real conic drawn for an inertia: the radius-of-gyration circle (thesis 10.2.3).
 
-    In the centre-of-mass frame the inertia is ``diag(m, m, m ρ²)``, an
-    imaginary conic.  Flipping the sign of the homogeneous part gives
-    ``diag(m, m, -m ρ²)``: the real circle of radius ``ρ`` about the centre of
-    mass ``c`` (in world coordinates ``X_cᵀ diag(m, m, -m ρ²) X_c``, which is
-    ``I`` with ``2 m ρ²`` subtracted from ``I[2, 2]``).
-
-    Meaning: a point ``P`` at distance ``d`` from ``c`` and its axis of
-    percussion lie on opposite sides of ``c`` with ``d r = ρ²``, while the
-    ordinary polar of ``P`` with respect to the circle lies on the *same* side
-    at the same distance ``ρ²/d``.  So the axis of percussion of ``P`` is the
-    reflection through ``c`` of the polar of ``P`` with respect to this circle
-    (and vice versa).  In matrices: with the point reflection ``R`` through
-    ``c``, ``I ∝ Rᵀ C`` (in the centre frame ``R = diag(-1, -1, 1)`` and
-    ``R C = -I``).
+    ``I`` with ``2 m ρ²`` taken from ``I[2, 2]``: the circle of radius ``ρ`` about the centre of
+    mass.  The axis of percussion of a point is the reflection through the centre of its polar
+    with respect to this circle (:func:`planargeo.geometry.conics.drawable_conic`).
 
     Parameters
     ----------
@@ -384,13 +307,10 @@ def drawable_conic(inertia) -> np.ndarray:
     Returns
     -------
     ndarray (..., 3, 3)
-        Symmetric, with signature (2, 1): ``pᵀ C p = m (|x - c|² - ρ²)`` for
-        ``p = [y, -x, 1]``.
 
-    This is :func:`planargeo.geometry.conics.drawable_conic` (which handles any
-    imaginary conic) after checking that ``inertia`` is an inertia (symmetric
-    positive semi-definite; a point mass gives the degenerate circle of
-    radius 0, the inertia itself).
+    Raises
+    ------
+    {not_psd}
 
     Examples
     --------
@@ -411,10 +331,8 @@ def drawable_conic(inertia) -> np.ndarray:
 def polygon_moments(geometry, name: str = "geometry"):
     """Area, centroid and polar second moment about the centroid of a shapely area.
 
-    Uses Green's theorem on each ring (exterior counter-clockwise, holes
-    clockwise after ``shapely.geometry.polygon.orient``), so holes and
-    (disjoint) unions of a ``MultiPolygon`` work.  Coordinates are shifted to
-    the centre of the bounding box first for accuracy.
+    Green's theorem on each ring (holes and ``MultiPolygon`` parts work), in coordinates
+    shifted to the centre of the bounding box for accuracy.
 
     Parameters
     ----------
@@ -433,8 +351,7 @@ def polygon_moments(geometry, name: str = "geometry"):
     Raises
     ------
     InvalidPolygonError
-        Not a Polygon/MultiPolygon, empty, invalid (with shapely's
-        ``explain_validity`` reason) or of zero area.
+        Not a (Multi)Polygon, empty, invalid or of zero area.
 
     Examples
     --------
@@ -497,16 +414,9 @@ def _derived(function, doc: str) -> property:
 class Inertia(_Held):
     """A planar rigid-body inertia at the origin (thesis 1.66, 4.58, 5.64): an imaginary conic.
 
-    Wraps one symmetric positive definite ``(..., 3, 3)`` array ``.matrix``
-    (read-only) with the structure of a rigid body (4.58, the matrix of
-    :func:`~planargeo.screws.twists.inertia_matrix`), so that :attr:`mass`, :attr:`com`, :attr:`rotational_inertia` and
-    :attr:`radius_of_gyration` are meaningful.  Construct with
-    :meth:`from_mass`, :meth:`from_polygon`, :meth:`composite` (or ``+``), or
-    from a matrix.  Articulated inertias (chapters 6-7: any symmetric positive
-    semi-definite matrix, e.g. ``diag(1, 2, 1)``) have no mass or centre of
-    mass; they stay plain arrays, which every function of
-    :mod:`planargeo.screws.inertia`, :mod:`planargeo.screws.twists` and
-    :mod:`planargeo.mechanics.subspaces` accepts.
+    One read-only ``(..., 3, 3)`` matrix of the rigid-body form 4.58 (:func:`~planargeo.screws.twists.inertia_matrix`).
+    Articulated inertias (chapters 6-7) have no mass or centre: they stay plain arrays, which every
+    function accepts.
 
     Parameters
     ----------
@@ -515,21 +425,14 @@ class Inertia(_Held):
 
     Raises
     ------
-    InputError
-        Non-symmetric matrix, non-positive mass ``matrix[0, 0]``, no rigid-body
-        structure (``matrix[0, 0] != matrix[1, 1]`` or ``matrix[0, 1] != 0``
-        beyond ``1e-10 max|matrix|``); the message names ``matrix``.  Wrong
-        shape / non-finite values (``ShapeError`` / ``NonFiniteError``).
-    SingularInertiaError
-        Not positive definite (carries ``.cond``).
+    InputError, SingularInertiaError
+        Not symmetric, a non-positive mass, not of the rigid-body form; not positive definite.
 
     Examples
     --------
     >>> I = Inertia.from_mass(2.0, [1.0, 0.0], radius_of_gyration=0.5)
     >>> I
     Inertia(mass=2, com=(1, 0), radius_of_gyration=0.5)
-    >>> I.percussion_axis_array([0.0, 0.0, 1.0])    # thesis 5.66: the line x = 1 + 0.25
-    array([0. , 2. , 2.5])
     >>> float(I.kinetic_energy([0.0, 0.0, 2.0]))      # ½ (J + m d²) ω²
     5.0
     """
@@ -551,10 +454,7 @@ class Inertia(_Held):
     # -- constructors ---------------------------------------------------
     @classmethod
     def from_mass(cls, mass, com, radius_of_gyration=None, inertia=None) -> "Inertia":
-        """Inertia of mass ``mass`` centred at ``com`` (thesis 4.58, 5.64).
-
-        Give exactly one of ``radius_of_gyration`` (``ρ > 0``) or ``inertia``
-        (``J > 0`` about the centre of mass; ``J = m ρ²``).
+        """Inertia of mass ``mass`` centred at ``com``, given ``ρ`` or ``J = m ρ²`` (thesis 4.58, 5.64).
 
         Parameters
         ----------
@@ -562,28 +462,22 @@ class Inertia(_Held):
             Mass ``m > 0`` (kg).
         com : array_like, shape (..., 2)
             Centre of mass ``c`` (m).
-        radius_of_gyration : float or array_like, optional
-            ``ρ > 0`` (m).
-        inertia : float or array_like, optional
-            ``J > 0`` about the centre of mass (kg·m²).
+        radius_of_gyration, inertia : float or array_like, optional
+            Exactly one: ``ρ > 0`` (m) or ``J > 0`` about the centre of mass (kg·m²).
 
         Returns
         -------
         Inertia
-            ``inertia_matrix(m, c, J)`` wrapped.
 
         Raises
         ------
         InputError
-            If not exactly one of ``radius_of_gyration`` and ``inertia`` is given, or a value
-            is not positive.
+            Not exactly one of ``radius_of_gyration`` and ``inertia``, or a value not positive.
 
         Examples
         --------
-        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).matrix
-        array([[2. , 0. , 0. ],
-               [0. , 2. , 0. ],
-               [0. , 0. , 0.5]])
+        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).matrix.diagonal()
+        array([2. , 2. , 0.5])
         """
         m = _positive(mass, "mass")
         c = as_xy(com, "com")
@@ -599,11 +493,7 @@ class Inertia(_Held):
 
     @classmethod
     def from_polygon(cls, geometry, density=1.0) -> "Inertia":
-        """Inertia of a uniform lamina (shapely ``Polygon`` / ``MultiPolygon``).
-
-        Mass ``density × area``, centre the centroid, rotational inertia
-        ``density × ∫|x - c|² dA``; holes and disjoint unions work (see
-        :func:`polygon_moments`).
+        """Inertia of a uniform lamina (shapely ``Polygon`` / ``MultiPolygon``; see :func:`polygon_moments`).
 
         Parameters
         ----------
@@ -615,14 +505,11 @@ class Inertia(_Held):
         Returns
         -------
         Inertia
-            The lamina's inertia at the origin.
 
         Raises
         ------
-        InputError
-            If ``density`` is not positive, or shapely is missing.
-        InvalidPolygonError
-            If the geometry is not a valid polygon of positive area and polar moment.
+        InputError, InvalidPolygonError
+            ``density`` not positive; not a valid polygon of positive area and polar moment.
 
         Examples
         --------
@@ -646,12 +533,11 @@ class Inertia(_Held):
         Parameters
         ----------
         parts : iterable of Inertia
-            The bodies joined rigidly (at least one).
+            The bodies (at least one).
 
         Returns
         -------
         Inertia
-            The sum of the parts' matrices.
 
         Raises
         ------
@@ -661,8 +547,7 @@ class Inertia(_Held):
         Examples
         --------
         >>> a = Inertia.from_mass(1.0, [-1.0, 0.0], inertia=0.1)
-        >>> b = Inertia.from_mass(1.0, [1.0, 0.0], inertia=0.1)
-        >>> float(Inertia.composite([a, b]).rotational_inertia)   # 0.2 + 2 · 1²
+        >>> float(Inertia.composite([a, a.at([2.0, 0.0])]).rotational_inertia)   # 0.2 + 2 · 1²
         2.2
         """
         parts = list(parts)
@@ -678,29 +563,11 @@ class Inertia(_Held):
         return self._array
 
     # the body's quantities: the module's functions of its matrix
-    mass = _derived(mass, """Mass ``m = matrix[0, 0]`` (thesis 1.66, 4.58); an array of the batch shape.
-
-        Examples
-        --------
-        >>> float(Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).mass)
-        2.0
-        """)
-    com = _derived(centre_of_mass, """Centre of mass ``(x, y)``.""")
-    rotational_inertia = _derived(rotational_inertia, """``J`` about the centre of mass.""")
-    radius_of_gyration = _derived(radius_of_gyration, """Radius of gyration ``ρ = sqrt(J / m)`` about the centre of mass (thesis 4.58, 5.64).
-
-        Examples
-        --------
-        >>> float(Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).radius_of_gyration)
-        0.5
-        """)
-    mobility = _derived(mobility, """Inverse inertia ``I⁻¹`` (via ``solve``).
-
-        Examples
-        --------
-        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).mobility.diagonal()
-        array([0.5, 0.5, 2. ])
-        """)
+    mass = _derived(mass, """Mass ``m = matrix[0, 0]`` (kg), of the batch shape.""")
+    com = _derived(centre_of_mass, """Centre of mass ``(x, y)`` (m).""")
+    rotational_inertia = _derived(rotational_inertia, """``J`` about the centre of mass (kg·m²).""")
+    radius_of_gyration = _derived(radius_of_gyration, """Radius of gyration ``ρ = sqrt(J / m)`` (m; thesis 4.58, 5.64).""")
+    mobility = _derived(mobility, """Inverse inertia ``I⁻¹`` (via ``solve``).""")
 
     def __repr__(self) -> str:
         if self._array.ndim == 2:
@@ -718,8 +585,6 @@ class Inertia(_Held):
     def at(self, point) -> "Inertia":
         """The same body expressed at ``point`` (thesis 1.68: ``X_P⁻ᵀ I X_P⁻¹``).
 
-        The result's ``com`` is then relative to ``point``.
-
         Parameters
         ----------
         point : array_like, shape (2,)
@@ -728,7 +593,6 @@ class Inertia(_Held):
         Returns
         -------
         Inertia
-            The inertia at ``point``.
 
         Examples
         --------
@@ -740,13 +604,6 @@ class Inertia(_Held):
     def rotated(self, theta, about=(0.0, 0.0)) -> "Inertia":
         """The body turned by ``theta`` about ``about`` (thesis 1.68; :func:`planargeo.screws.inertia_rotated`).
 
-        The active rotation, like :meth:`planargeo.screws.Twist.rotated`:
-        ``m`` and ``J`` are unchanged and the centre of mass turns about
-        ``about``; twists and wrenches turned the same way keep their kinetic
-        energy, momentum and power.  (:meth:`at` changes the reference point
-        instead; :func:`planargeo.screws.inertia_transform` is the passive
-        change to a translated and rotated frame.)
-
         Parameters
         ----------
         theta : float
@@ -757,7 +614,6 @@ class Inertia(_Held):
         Returns
         -------
         Inertia
-            The turned body's inertia.
 
         Examples
         --------
@@ -768,7 +624,7 @@ class Inertia(_Held):
 
     @_documented
     def kinetic_energy(self, twist) -> np.ndarray:
-        """``½ vᵀ I v`` (thesis 1.9).
+        """Kinetic energy ``½ vᵀ I v`` (J; thesis 1.9).
 
         Parameters
         ----------
@@ -777,7 +633,6 @@ class Inertia(_Held):
         Returns
         -------
         numpy.ndarray, shape (...)
-            Kinetic energy (J).
 
         Examples
         --------
@@ -797,7 +652,6 @@ class Inertia(_Held):
         Returns
         -------
         numpy.ndarray, shape (..., 3)
-            Momentum wrench ``[px, py, Lz]`` (kg·m/s, kg·m²/s).
 
         Examples
         --------
@@ -808,7 +662,7 @@ class Inertia(_Held):
 
     @_documented
     def percussion_axis_array(self, point) -> np.ndarray:
-        """:func:`percussion_axis` as an array.
+        """:func:`percussion_axis` ``I a`` of ``point``.
 
         Parameters
         ----------
@@ -817,7 +671,6 @@ class Inertia(_Held):
         Returns
         -------
         numpy.ndarray, shape (..., 3)
-            The axis of percussion ``I a``.
 
         Examples
         --------
@@ -828,7 +681,7 @@ class Inertia(_Held):
 
     @_documented
     def percussion_axis(self, point):
-        """Axis of percussion of ``point`` (thesis 5.67): :meth:`percussion_axis_array` as a line.
+        """Axis of percussion of ``point`` as a :class:`planargeo.geometry.Line` (thesis 5.67).
 
         Parameters
         ----------
@@ -837,19 +690,18 @@ class Inertia(_Held):
         Returns
         -------
         Line
-            A :class:`planargeo.geometry.Line`.
 
         Examples
         --------
-        >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_axis([0.0, 0.0, 1.0]).array   # x = 1.25
-        array([0. , 2. , 2.5])
+        >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_axis([0.0, 0.0, 1.0])   # x = 1.25
+        Line(through=(1.25, 0), direction=(0, 1))
         """
         from planargeo.geometry.elements import Line
         return Line(self.percussion_axis_array(point))
 
     @_documented
     def percussion_pole_array(self, line) -> np.ndarray:
-        """:func:`percussion_pole` as an array.
+        """:func:`percussion_pole` ``I⁻¹ f`` of ``line``.
 
         Parameters
         ----------
@@ -858,7 +710,6 @@ class Inertia(_Held):
         Returns
         -------
         numpy.ndarray, shape (..., 3)
-            The pole ``I⁻¹ f``.
 
         Examples
         --------
@@ -869,7 +720,7 @@ class Inertia(_Held):
 
     @_documented
     def percussion_pole(self, line):
-        """Pole whose axis of percussion is ``line``: :meth:`percussion_pole_array` as a point.
+        """Pole whose axis of percussion is ``line``, as a :class:`planargeo.geometry.Point`.
 
         Parameters
         ----------
@@ -878,7 +729,6 @@ class Inertia(_Held):
         Returns
         -------
         Point
-            A :class:`planargeo.geometry.Point`.
 
         Examples
         --------
@@ -889,50 +739,45 @@ class Inertia(_Held):
         return Point(self.percussion_pole_array(line))
 
     def drawable_conic_matrix(self) -> np.ndarray:
-        """:func:`drawable_conic` as an array.
+        """:func:`drawable_conic` of this inertia, the radius-of-gyration circle's matrix.
 
         Returns
         -------
         numpy.ndarray, shape (..., 3, 3)
-            The radius-of-gyration circle's matrix.
 
         Examples
         --------
-        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).drawable_conic_matrix()
-        array([[ 2. ,  0. ,  0. ],
-               [ 0. ,  2. ,  0. ],
-               [ 0. ,  0. , -0.5]])
+        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).drawable_conic_matrix()[2, 2]   # -m ρ²
+        np.float64(-0.5)
         """
         return drawable_conic(self._array)
 
     def drawable_conic(self):
-        """The radius-of-gyration circle (thesis 10.2.3): :meth:`drawable_conic_matrix` as a conic.
+        """The radius-of-gyration circle (thesis 10.2.3) as a :class:`planargeo.geometry.Conic`.
 
         Returns
         -------
         Conic
-            A :class:`planargeo.geometry.Conic`: the real circle of radius ``ρ`` about the centre of mass.
 
         Examples
         --------
-        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).drawable_conic().matrix[2, 2]   # -m ρ²
-        np.float64(-0.5)
+        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).drawable_conic()
+        Conic(real circle, centre=(0, 0))
         """
         from planargeo.geometry.elements import Conic
         return Conic(self.drawable_conic_matrix())
 
     def conic(self):
-        """The inertia itself as a (imaginary) :class:`planargeo.geometry.Conic` (thesis 5.4).
+        """The inertia itself as an (imaginary) :class:`planargeo.geometry.Conic` (thesis 5.4).
 
         Returns
         -------
         Conic
-            The imaginary conic of the inertia matrix.
 
         Examples
         --------
-        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).conic().matrix[2, 2]
-        np.float64(0.5)
+        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).conic()
+        Conic(imaginary circle, centre=(0, 0))
         """
         from planargeo.geometry.elements import Conic
         return Conic(self._array)
