@@ -1,21 +1,11 @@
-"""Scene ``splitting``: a constrained chain's articulated mobilities and chain splitting (thesis sections 7.4-7.6: 7.28-7.56).
+"""Scene ``splitting``: a constrained chain's articulated mobilities and chain splitting (thesis 7.4-7.6: 7.28-7.56).
 
-``n`` identical bodies (mass ``m``, radius of gyration ``rho``, joints ``L`` apart, centre of
-mass half-way) hang from the ground at joint ``CJ_1`` (the origin); every further joint bends
-the chain by ``phi``.  At rest; gravity ``g`` along ``-y`` (0: the thesis's example).  A pure
-couple ``f_{n+1} = [0, 0, tau]`` from a fictitious joint ``n+1`` acts on the tip (as
-``-f_{n+1}``, 3.1; 7.44).
-
-The chain is split at joint ``split + 1``: bodies ``1..split`` form the constrained chain with
-articulated mobility ``Lambda_i⁻¹``, ``b_i`` (7.4.1, corrected 7.38a), bodies
-``split+1..n`` the free-floating chain with articulated inertia ``A_{i+1}``, ``d_{i+1}``
-(7.1.1); the acceleration of body ``i = split`` and the force of joint ``i+1`` follow
-directly (7.54, 7.56), and the accelerations of all bodies by chain splitting at every joint.
-
-With ``n = 2`` this is example 7.5 (Figure 7.9): ``a_2 = -Lambda_2⁻¹ f_3`` (7.45) is a
-rotation about the point ``(x, 0)`` with (7.47; derived by hand, ``eta = L / rho``)::
-
-    x / L = 1 + 2 eta² cos(phi) / (4 + 5 eta²)
+``n`` bodies (joints ``L`` apart) hang from ``CJ_1`` at the origin, each further joint bent by
+``phi``, at rest, gravity ``g`` (0: the thesis's example).  A couple ``f_{n+1} = [0, 0, tau]``
+acts on the tip (as ``-f_{n+1}``, 3.1; 7.44).  Split at joint ``split + 1``: bodies
+``1..split`` form the constrained chain (mobility ``Lambda_i⁻¹``, ``b_i``, 7.4.1 corrected
+7.38a), the rest the free-floating chain (``A_{i+1}``, ``d_{i+1}``, 7.1.1).  With ``n = 2``
+this is example 7.5 (Figure 7.9): ``x / L = 1 + 2 eta² cos(phi) / (4 + 5 eta²)`` (7.47).
 
 Examples
 --------
@@ -67,22 +57,19 @@ def splitting_state(model, q, split: int, tau: float, *, L: float = 1.0) -> dict
     q : array_like (n,)
         Relative joint angles [rad].
     split : int
-        Split at joint ``split + 1``: the constrained part is bodies ``1..split`` (1 <= split < n).
+        Split at joint ``split + 1`` (1 <= split < n).
     tau : float
         The couple ``f_{n+1} = [0, 0, tau]`` on the tip (applied as ``-f_{n+1}``).
     L : float
-        Distance between joints (joint positions).
+        Distance between joints.
 
     Returns
     -------
     dict
-        ``joints`` (n+1, 2); ``Lambda_inv`` (n, 3, 3), ``b`` (n, 3) with the couple applied
-        (the mobility of body ``i`` sees loads on bodies ``1..i`` only); ``Lambda_inv_free``,
-        ``b_free`` without it; ``A``, ``d`` (n, 3, 3), (n, 3) articulated inertias with the
-        couple; ``a_split`` (7.54) and ``f_split`` (7.56) at the split; ``a``, ``f``, ``qdd``
-        of the whole chain by chain splitting (7.6); ``a_tip_7_37`` = ``-Lambda_n⁻¹ f_{n+1} + b_n``
-        (7.37, 7.45); ``f_tip`` = ``f_{n+1}``; ``centres`` (n, 2 or NaN): the poles of
-        ``-Lambda_i⁻¹ [0, 0, 1]`` (where a couple on body ``i`` alone turns it, 7.5).
+        ``joints``; ``Lambda_inv``, ``b`` with the couple (body ``i`` sees loads on ``1..i``), and
+        ``Lambda_inv_free``, ``b_free`` without; ``A``, ``d`` with the couple; ``a_split`` (7.54),
+        ``f_split`` (7.56); ``a``, ``f``, ``qdd`` by chain splitting (7.6); ``a_tip_7_37``
+        (7.37, 7.45); ``f_tip``; ``centres``: poles of ``-Lambda_i⁻¹ [0, 0, 1]`` (NaN: none).
 
     Raises
     ------
@@ -141,31 +128,28 @@ def splitting(n: int = 2, m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi:
     Parameters
     ----------
     n : int
-        Number of bodies (>= 2).  Default 2 (example 7.5).
+        Number of bodies (>= 2).
     m, rho, L : float
-        Mass, radius of gyration and length of each body (> 0).  Defaults 1, 0.5, 1.
+        Mass, radius of gyration and length of each body (> 0).
     phi : float
-        Bend at every joint after the first [rad].  Default ``pi / 4``.
+        Bend at every joint after the first [rad].
     tau : float
-        The couple ``f_{n+1} = [0, 0, tau]`` on the tip [N·m] (non-zero).  Default 1.
+        The couple on the tip [N·m] (non-zero).
     split : int
-        Split at joint ``split + 1`` (1 <= split <= n - 1).  Default 1.
+        Split at joint ``split + 1`` (1 <= split <= n - 1).
     g : float
-        Gravity along -y [m/s²] (>= 0).  Default 0.
+        Gravity along -y [m/s²] (>= 0).
 
     Returns
     -------
     SceneResult
-        ``quantities``: the arrays of :func:`splitting_state` as lists, and for example 7.5
-        ``Lambda1_inv`` (7.42), ``Lambda2_inv`` (7.43), ``a_tip`` (``a_2`` of 7.46 for
-        ``n = 2``), ``x_over_L`` (7.47-7.48: ``-a_tip[1] / (L a_tip[2])``), ``eta``
-        (7.49).  ``state``: ``q = [0, phi, ...]``, at rest.
+        :func:`splitting_state` as lists, and for example 7.5 ``Lambda1_inv`` (7.42),
+        ``Lambda2_inv`` (7.43), ``a_tip`` (7.46), ``x_over_L`` (7.47-7.48), ``eta`` (7.49).
 
     Raises
     ------
     SceneError
-        ``n < 2``, ``split`` not between 1 and ``n - 1``, a size not positive, ``tau`` zero
-        or ``g`` negative (named).
+        ``n < 2``, ``split`` out of range, a size not positive, ``tau`` zero or ``g`` negative.
 
     Examples
     --------

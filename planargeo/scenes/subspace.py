@@ -1,34 +1,10 @@
 """Scene ``subspace``: the subspace decomposition of one body at a joint (thesis 6.1–6.4, 6.63–6.97).
 
-One rigid body at rest (mass ``m``, centre of mass ``(cx, cy)``, radius of
-gyration ``rho``) is held by one joint and loaded by one applied force ``f``
-(magnitude ``F`` on the line through ``(ax, ay)`` at angle ``force_angle_deg``).
-The joint is a ``revolute`` pivot, a ``prismatic`` slider, a
-``revolute_prismatic`` pin in a slot, or the 2-dof ``twin_prismatic`` plane
-joint of thesis 4.79 (translations along and across ``joint_angle_deg``).
-
-Everything the chapter names is computed with :mod:`planargeo.mechanics.subspaces`:
-
-* the motion space ``s`` and reaction space ``R`` (``sᵀR = 0``, 6.1),
-* ``T = I s (sᵀIs)⁻¹`` (6.36) and ``U = I⁻¹R (RᵀI⁻¹R)⁻¹`` (6.37, 6.33 corrected),
-* the wrench split ``f = T Q + R μ`` with ``Q = sᵀf``, ``μ = Uᵀf`` (6.38, 6.61),
-* the twist split of the free body's acceleration ``I⁻¹f = s ψ + U γ`` with
-  ``ψ = Tᵀ I⁻¹ f``, ``γ = Rᵀ I⁻¹ f`` (6.44, 6.62, 6.80–6.81): ``s ψ`` is the
-  acceleration of the body held by the (unpowered) joint (6.93 with the
-  applied-wrench sign, ``docs/errata.md``), ``U γ`` the motion the joint's base
-  would need,
-* the joint-space inertia ``sᵀIs`` (6.67) and the reaction-space inverse
-  inertia ``RᵀI⁻¹R`` (6.71),
-* the joint's reaction on the body ``I a − f = −R μ``,
-* the power relations as residuals that must vanish: ``sᵀT − 1``, ``RᵀU − 1``,
-  ``TᵀU``, ``T sᵀ + R Uᵀ − 1``, ``sᵀR``, and the powers ``(sψ)ᵀ(Rμ)`` (the
-  reaction does no work on the allowed motion) and ``(Uγ)ᵀ(TQ)``.
-
-For a 2-dof joint the two columns of ``s`` span a line of poles (every instant
-centre the joint allows), which is the reaction line ``R``; the two columns of
-``T`` are two lines through one point, ``U`` (``TᵀU = 0``): the active forces
-form the pencil of lines through ``U``.  Both are reported (``s_line``,
-``T_pencil``).
+One rigid body at rest, held by one joint (a ``revolute`` pivot, a ``prismatic`` slider, a
+``revolute_prismatic`` pin in a slot, or the 2-dof ``twin_prismatic`` plane joint of 4.79) and
+loaded by one force ``f``; everything chapter 6 names, computed with
+:mod:`planargeo.mechanics.subspaces`.  For a 2-dof joint the columns of ``s`` span a line of poles
+(the reaction line) and the ``T`` lines pass through one point, ``U`` (``s_line``, ``T_pencil``).
 
 Examples
 --------
@@ -81,7 +57,7 @@ def unit_direction(deg: float) -> np.ndarray:
 
 
 def _span_line(X: np.ndarray) -> np.ndarray | None:
-    """The line joining the two columns of a (3, 2) space (the points it spans), normalised; None if k != 2."""
+    """The normalised line joining the two columns of a (3, 2) space; None if k != 2."""
     if X.shape[-1] != 2:
         return None
     line = np.cross(X[:, 0], X[:, 1])
@@ -96,10 +72,8 @@ def subspace_state(joint: str, point, direction, I, force) -> dict:
     ----------
     joint : {"revolute", "prismatic", "revolute_prismatic", "twin_prismatic"}
         The joint kind.
-    point : array_like, shape (2,)
-        The joint's point (pivot, point on the slide).
-    direction : array_like, shape (2,)
-        The joint's direction (slide; frame x axis of the plane joint).
+    point, direction : array_like, shape (2,)
+        The joint's point and direction (slide; the plane joint's x axis).
     I : array_like, shape (3, 3)
         The body's inertia at the origin (positive definite).
     force : array_like, shape (3,)
@@ -108,8 +82,12 @@ def subspace_state(joint: str, point, direction, I, force) -> dict:
     Returns
     -------
     dict
-        ``s, R, T, U, I, f, Q, mu, TQ, Rmu, psi, gamma, a_free, s_psi, U_gamma,
-        reaction, sIs, RIR, s_line, T_pencil, residuals`` (see the module docstring).
+        ``s``, ``R`` (``sᵀR = 0``, 6.1); ``T = I s (sᵀIs)⁻¹`` (6.36), ``U = I⁻¹R (RᵀI⁻¹R)⁻¹``
+        (6.37, 6.33 corrected); ``I``, ``f``; ``Q = sᵀf``, ``mu = Uᵀf``, ``TQ``, ``Rmu`` (6.38,
+        6.61); ``psi = Tᵀ I⁻¹ f``, ``gamma = Rᵀ I⁻¹ f`` (6.44, 6.62, 6.80–6.81), ``a_free``,
+        ``s_psi`` (the held body's acceleration, 6.93 with the applied-wrench sign,
+        ``docs/errata.md``), ``U_gamma``; ``reaction = −Rμ``; ``sIs`` (6.67), ``RIR`` (6.71);
+        ``s_line``, ``T_pencil``; ``residuals`` of the power relations, each must vanish.
 
     Raises
     ------
@@ -160,34 +138,28 @@ def subspace(joint: str = "revolute", px: float = 0.0, py: float = 0.0, joint_an
     Parameters
     ----------
     joint : {"revolute", "prismatic", "revolute_prismatic", "twin_prismatic"}
-        The joint (``twin_prismatic`` is the plane joint of thesis 4.79).  Default ``"revolute"``.
+        The joint (``twin_prismatic``: the plane joint of thesis 4.79).
     px, py : float
-        The joint's point [m].  Default the origin.
+        The joint's point [m].
     joint_angle_deg : float
-        The joint's direction (slide; the plane joint's x axis) [deg].  Default 0.
+        The joint's direction [deg].
     m : float
-        Mass [kg] (> 0).  Default 2.
+        Mass [kg] (> 0).
     cx, cy : float
-        Centre of mass [m].  Default (1, 0).
+        Centre of mass [m].
     rho : float
-        Radius of gyration about the centre of mass [m] (> 0).  Default 0.5.
+        Radius of gyration about the centre of mass [m] (> 0).
     ax, ay : float
-        A point of the applied force's line [m].  Default (1.6, 0).
+        A point of the applied force's line [m].
     force_angle_deg : float
-        Direction of the applied force [deg].  Default 90 (along +y).
+        Direction of the applied force [deg].
     F : float
-        Magnitude of the applied force [N] (non-zero; negative reverses it).  Default 1.
+        Magnitude of the applied force [N] (non-zero; negative reverses it).
 
     Returns
     -------
     SceneResult
-        ``quantities``: ``s``, ``R``, ``T``, ``U`` (3×k, 3×(3−k)), ``I``, ``f``,
-        ``Q``, ``mu``, ``TQ``, ``Rmu``, ``psi``, ``gamma``, ``a_free`` (= I⁻¹f),
-        ``s_psi`` (the held body's acceleration), ``U_gamma``, ``reaction``
-        (the joint's wrench on the body, ``−Rμ``), ``sIs``, ``RIR``, ``s_line``
-        and ``T_pencil`` (2-dof joints: the line of poles of ``s`` and the
-        common point of the ``T`` lines; None otherwise) and ``residuals``
-        (the power relations, each must vanish).
+        ``quantities``: :func:`subspace_state` as lists (``s_line``, ``T_pencil``: None for 1 dof).
 
     Raises
     ------
