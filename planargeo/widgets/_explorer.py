@@ -1,25 +1,12 @@
 """What several explorers share, written once: handles named by their controls, a view grown to
-hold points, sliders that span a chain of ``n`` bodies, a scene time kept as text, readout rows.
-
-* :func:`xy_handle`: a point handle whose position is two controls (it sets both);
-* :func:`arrow_handle`: the tip of an arrow drawn from such a point along an angle control:
-  it turns the arrow (and, with ``per``, sets its size too);
-* :func:`grown_view`: a view grown to hold points, no side shorter than their extent;
-* :class:`ChainBodies`: an explorer of a chain of ``bodies n`` (its joints in view, its model
-  cached, a slider that spans the chain, the tip dragged to bend it);
-* :class:`SceneTime`: Play advances a scene time kept in a text control (:func:`time_text`,
-  :func:`time_value`), and a change of the initial state starts it again at 0; :func:`run_to`
-  integrates a run to a time from its checkpoints;
-* :class:`Described`: the readout rows' units and meanings and the picture's symbols, kept as data
-  (``planargeo/data/quantities.toml``, its ``[explorer.*]`` tables).
+hold points, sliders that span a chain of ``n`` bodies (:class:`ChainBodies`), a scene time kept
+as text (:class:`SceneTime`), readout rows described as data (:class:`Described`,
+``planargeo/data/quantities.toml``).
 
 Examples
 --------
 >>> grown_view((0.0, 1.0, 0.0, 1.0), [[2.0, 0.5], [-1.0, 0.5]], 0.5)
 (-1.5, 2.5, -1.5, 2.5)
->>> units, meanings, symbols = readouts("impulse")
->>> units["ω after the blow"], meanings["ω after the blow"]
-('rad/s', 'angular velocity of the body just after the blow (5.64)')
 """
 from __future__ import annotations
 
@@ -51,9 +38,8 @@ def arrow_handle(ex, name: str, kx: str, ky: str, kangle: str, ksize: str | None
                  arm: float = 1.0, per: float | None = None, flip: bool = False, when=None) -> Handle:
     """The tip of an arrow from ``(values[kx], values[ky])`` along ``values[kangle]`` (degrees).
 
-    The arrow is ``arm`` long, or ``per × values[ksize]`` when ``per`` is given (then a drag
-    sets the size too).  ``flip``: a negative size points the arrow the other way.  A drag onto
-    the arrow's foot gives no direction and is refused.
+    The arrow is ``arm`` long, or ``per × values[ksize]`` (then a drag sets the size too);
+    ``flip``: a negative size points it the other way.
     """
     def sense(v):
         return -1.0 if flip and v[ksize] < 0 else 1.0
@@ -103,17 +89,18 @@ def grown_view(box, pts, margin: float, sized=None, extra: float | None = None) 
     return (float(x0), float(x1), float(y0), float(y1))
 
 
-def explorer_data(explorer: str) -> dict:
-    """The table of ``explorer`` in ``planargeo/data/quantities.toml``, its ``[explorer.*]`` tables (its words kept as data)."""
-    return words_data(explorer)
+#: the table of an explorer in ``planargeo/data/quantities.toml`` (its words kept as data)
+explorer_data = words_data
 
 
 def readouts(explorer: str) -> tuple[dict, dict, dict]:
-    """``(units, meanings, symbols)`` of ``explorer`` as ``planargeo/data/quantities.toml``, its ``[explorer.*]`` tables describes them.
+    """``(units, meanings, symbols)`` of ``explorer``'s readout rows and picture, from its data.
 
-    ``units`` and ``meanings`` are those of its readout rows (a row without a unit has none in
-    ``units``; a list of units is one per component), ``symbols`` the meanings of what its picture
-    shows.
+    Examples
+    --------
+    >>> units, meanings, symbols = readouts("impulse")
+    >>> units["ω after the blow"], meanings["ω after the blow"]
+    ('rad/s', 'angular velocity of the body just after the blow (5.64)')
     """
     table = explorer_data(explorer)
     rows = table.get("rows", {})
@@ -122,11 +109,7 @@ def readouts(explorer: str) -> tuple[dict, dict, dict]:
 
 
 class Described:
-    """An explorer whose readout rows and symbols are described as data (:func:`readouts` of its ``slug``).
-
-    The class gets :attr:`units`, :attr:`meanings` (of the readout rows) and :attr:`symbols`;
-    :meth:`explain` gives the symbols' and the rows' meanings.
-    """
+    """An explorer whose readout rows and symbols are described as data (:func:`readouts` of its ``slug``)."""
 
     def __init_subclass__(cls, **kw):
         super().__init_subclass__(**kw)
@@ -140,12 +123,9 @@ class Described:
 
 
 class ChainBodies:
-    """For an explorer of a chain of ``bodies n`` (mass 1, joints ``L = 1`` apart): the parts it shares.
+    """For an explorer of a chain of ``bodies n`` (mass 1, joints ``L = 1`` apart): the parts it shares."""
 
-    :attr:`spans`: ``(control, offset, widest)``: the control's slider spans up to ``n + offset``
-    once a state is shown (while ``n`` is set, up to ``widest``).
-    """
-
+    #: ``(control, offset, widest)``: the control spans up to ``n + offset`` (while ``n`` is set, ``widest``)
     spans: tuple[str, int, int] = ("", 0, 0)
 
     def __init__(self, **kw):
@@ -178,7 +158,6 @@ class ChainBodies:
             self._span(int(shown(self)["bodies n"]))
 
     def mechanism_points(self):
-        # Points the view must hold: every joint of the chain and the tip.
         st = self.state
         return np.zeros((0, 2)) if st is None else np.asarray(st["joints"], dtype=float).reshape(-1, 2)
 
@@ -200,14 +179,6 @@ class ChainBodies:
 def time_text(t: float) -> str:
     """The scene time ``t`` (s) as the read-only time field holds it: to the nanosecond, no trailing zeros.
 
-    Parameters
-    ----------
-    t : float
-
-    Returns
-    -------
-    str
-
     Examples
     --------
     >>> time_text(0.0), time_text(0.1 + 0.2), time_text(59.99999999999873)
@@ -218,23 +189,7 @@ def time_text(t: float) -> str:
 
 
 def time_value(text, limit: float) -> float:
-    """The scene time (s) of the time field's ``text``, or :class:`InputError` naming the field and its range.
-
-    Parameters
-    ----------
-    text : str or float
-    limit : float
-        The end of the time (s).
-
-    Returns
-    -------
-    float
-
-    Examples
-    --------
-    >>> time_value("2.5", 10.0)
-    2.5
-    """
+    """The scene time (s) of the time field's ``text`` (at most ``limit``), or an :class:`InputError`."""
     try:
         t = float(text)
     except (TypeError, ValueError):
@@ -247,12 +202,10 @@ def time_value(text, limit: float) -> float:
 def run_to(run: dict, t: float, checkpoint: float, step, budget=None):
     """``(state, drift, events)`` at scene time ``t`` of ``run``, its checkpoints extended in place.
 
-    ``run`` holds ``ck`` (the state at every ``checkpoint`` seconds from 0), ``drift`` (the largest
-    residual up to each) and ``events`` (``(time, what)``).  The run is integrated from checkpoint to
-    checkpoint, then from the last one before ``t`` to ``t``: the same operations whatever the
-    history, so that the controls alone decide the state.  ``step(state, h, t0) -> (state,
-    residual, events)`` advances ``h`` seconds from ``t0``; a ``budget``
-    (:class:`planargeo.widgets._motion.Budget`) spent refuses the next checkpoint.
+    ``run`` holds ``ck`` (the state every ``checkpoint`` s), ``drift`` (the largest residual up to
+    each) and ``events``.  From the last checkpoint before ``t`` to ``t``: the same operations whatever
+    the history.  ``step(state, h, t0) -> (state, residual, events)``; a spent ``budget`` refuses
+    the next checkpoint.
     """
     ck = run["ck"]
     k = int(math.floor(t / checkpoint + 1e-9))
@@ -282,10 +235,8 @@ def keep_run(runs: dict, key, run: dict, most: int = 2) -> None:
 
 
 class SceneTime:
-    """Play advances a scene time kept as text in the control ``"t (s)"`` up to :attr:`t_end`.
-
-    A change of a control in :attr:`initial` (the state at ``t = 0``) starts the time again.
-    """
+    """Play advances a scene time kept as text in ``"t (s)"`` up to :attr:`t_end`; a change of a
+    control in :attr:`initial` starts it again."""
 
     initial: tuple[str, ...] = ()
     t_end: float = 60.0

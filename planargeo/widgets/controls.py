@@ -1,9 +1,6 @@
-"""Controls as data, and the checks every control value passes (the explorers' inputs).
-
-A control is described by data (:class:`Step`, :class:`Choice`, :class:`Toggle`) and made
-into its widget by the base; :func:`check_control` is the one rule for what a control takes.
-Sliders keep a value outside their range (:class:`FloatSlider`), so that the explorer can
-refuse it by name instead of the browser silently moving it to an end.
+"""Controls as data (:class:`Step`, :class:`Choice`, :class:`Toggle`) and :func:`check_control`, the
+one rule for what a control takes.  Sliders keep a value outside their range, so that the
+explorer refuses it by name instead of the browser moving it to an end.
 
 Examples
 --------
@@ -43,9 +40,6 @@ CACHE_LIMIT = 32
 def cached(cache: dict, key, make: Callable[[], Any]) -> Any:
     """``cache[key]``, built by ``make()`` when missing; a full cache (> :data:`CACHE_LIMIT`) is emptied.
 
-    Explorers keep models or integrated shapes per parameter tuple with this, so
-    a slider sweep over many values cannot grow a cache without bound.
-
     Parameters
     ----------
     cache : dict
@@ -58,17 +52,12 @@ def cached(cache: dict, key, make: Callable[[], Any]) -> Any:
     Returns
     -------
     Any
-        The cached entry.
 
     Examples
     --------
     >>> store = {}
     >>> cached(store, (1.0, 2.0), lambda: "model"), cached(store, (1.0, 2.0), lambda: "other")
     ('model', 'model')
-    >>> for k in range(40):
-    ...     _ = cached(store, k, lambda: k)
-    >>> len(store) <= CACHE_LIMIT + 1
-    True
     """
     if key not in cache:
         if len(cache) > CACHE_LIMIT:
@@ -80,9 +69,7 @@ def cached(cache: dict, key, make: Callable[[], Any]) -> Any:
 class FloatSlider(W.FloatSlider):
     """A float slider that keeps a value outside its range, for the explorer to refuse by name.
 
-    (An ipywidgets slider silently moves such a value to the nearest end.)  A value the
-    page sets is not echoed back to it (``echo_update=False``): the page already shows it,
-    and the new picture is what it waits for.
+    A value the page sets is not echoed back to it (``echo_update=False``): the page shows it.
     """
 
     value = traitlets.CFloat(0.0, help="Float value").tag(sync=True, echo_update=False)
@@ -102,19 +89,37 @@ class IntSlider(W.IntSlider):
         return proposal["value"]
 
 
-class Step:
-    """A slider description: ``Step(lo, hi, step, value, label, integer=False)``.
+class _Control:
+    """A control's description: :meth:`make` builds its widget."""
+
+    def make(self, name: str) -> W.ValueWidget:
+        """The control's widget.
+
+        Parameters
+        ----------
+        name : str
+            Description used when the control has no label.
+
+        Returns
+        -------
+        ipywidgets.ValueWidget
+        """
+        raise NotImplementedError
+
+
+class Step(_Control):
+    """A slider description.
 
     Parameters
     ----------
     lo, hi : float
         Range of the slider.
     step : float
-        Slider step (made finer by :meth:`make` when ``value`` is not on its grid).
+        Slider step (made finer when ``value`` is not on its grid).
     value : float
         Default value.
     label : str
-        Description shown beside the slider.
+        Description shown beside the slider (default: the control's name).
     integer : bool
         An integer slider.
     """
@@ -125,17 +130,7 @@ class Step:
         self.integer = integer
 
     def make(self, name: str) -> FloatSlider | IntSlider:
-        """The slider widget (a default off the grid makes the step finer: it must be shown exactly).
-
-        Parameters
-        ----------
-        name : str
-            Description used when the step has no label.
-
-        Returns
-        -------
-        FloatSlider or IntSlider
-        """
+        # a default off the grid makes the step finer: it must be shown exactly
         step = self.step if self.integer else _representable_step(self.value, self.lo, self.step)
         cls, shown = (IntSlider, "d") if self.integer else (FloatSlider, f".{_decimals(step)}f")
         return cls(value=self.value, min=self.lo, max=self.hi, step=step,
@@ -143,8 +138,8 @@ class Step:
                    style={"description_width": "initial"}, layout=W.Layout(width="310px"))
 
 
-class Choice:
-    """A list description: ``Choice(options, value, label, buttons=False)``.
+class Choice(_Control):
+    """A list description.
 
     Parameters
     ----------
@@ -162,25 +157,14 @@ class Choice:
         self.options, self.value, self.label, self.buttons = tuple(options), value, label, buttons
 
     def make(self, name: str) -> W.Dropdown | W.ToggleButtons:
-        """The list widget.
-
-        Parameters
-        ----------
-        name : str
-            Description used when the list has no label.
-
-        Returns
-        -------
-        ipywidgets.Dropdown or ipywidgets.ToggleButtons
-        """
         cls = W.ToggleButtons if self.buttons else W.Dropdown
         return cls(options=self.options, value=self.value, description=self.label or name,
                    style={"description_width": "initial"},
                    layout=W.Layout(width="auto" if self.buttons else "310px"))
 
 
-class Toggle:
-    """A checkbox description: ``Toggle(value, label)``.
+class Toggle(_Control):
+    """A checkbox description.
 
     Parameters
     ----------
@@ -194,17 +178,6 @@ class Toggle:
         self.value, self.label = bool(value), label
 
     def make(self, name: str) -> W.Checkbox:
-        """The checkbox.
-
-        Parameters
-        ----------
-        name : str
-            Description used when the box has no label.
-
-        Returns
-        -------
-        ipywidgets.Checkbox
-        """
         return W.Checkbox(value=self.value, description=self.label or name, indent=False)
 
 
@@ -227,7 +200,7 @@ def make_control(name: str, spec):
     >>> make_control("show", Toggle(True)).value
     True
     """
-    return spec.make(name) if isinstance(spec, (Step, Choice, Toggle)) else spec
+    return spec.make(name) if isinstance(spec, _Control) else spec
 
 
 _SELECTIONS = (W.Dropdown, W.ToggleButtons, W.RadioButtons, W.Select)
@@ -236,10 +209,8 @@ _SELECTIONS = (W.Dropdown, W.ToggleButtons, W.RadioButtons, W.Select)
 def check_control(name: str, widget, value):
     """``value`` as control ``name`` holds it, or :class:`InputError` naming the control.
 
-    A slider takes a finite real number in its range (an integer slider an
-    integral one), a list (dropdown, toggle buttons) one of its options, a
-    checkbox ``True`` or ``False``, a text box a string whose numbers are at most
-    :data:`TEXT_LIMIT` in magnitude (finite).
+    A slider takes a finite number in its range, a list one of its options, a checkbox a bool,
+    a text box a string whose numbers are finite and at most :data:`TEXT_LIMIT` in magnitude.
 
     Parameters
     ----------
@@ -253,7 +224,7 @@ def check_control(name: str, widget, value):
     Returns
     -------
     Any
-        The value as the control holds it (a float for a float slider, an int for an integer one).
+        The value as the control holds it (float or int for a slider).
 
     Raises
     ------
@@ -268,10 +239,6 @@ def check_control(name: str, widget, value):
     Traceback (most recent call last):
     ...
     planargeo.errors.InputError: angle must be a number between -180 and 180, got nan
-    >>> check_control("joints", W.Dropdown(options=("revolute", "prismatic")), None)
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.InputError: joints must be one of ['revolute', 'prismatic'], got None
     >>> check_control("joint speeds", W.Text(), "1, 1e150")
     Traceback (most recent call last):
     ...
@@ -310,8 +277,7 @@ def check_control(name: str, widget, value):
     return value
 
 
-#: the largest magnitude of a number typed into an explorer's text field (a larger one is refused
-#: by name before any computation, instead of overflowing inside it)
+#: the largest magnitude of a number typed into a text field (refused by name, not overflowing)
 TEXT_LIMIT = 1e6
 _NUMBER = re.compile(r"(?<![\w.])[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?(?![\w.])|"
                      r"(?<![\w])[-+]?(?:inf(?:inity)?|nan)(?![\w])", re.IGNORECASE)
@@ -376,8 +342,7 @@ def shown_as(name: str, value) -> str:
 
 
 class ControlsMixin:
-    """The controls of :class:`~planargeo.widgets.base.Explorer`: made from their descriptions, observed,
-    the browser's slider echo screened out, set quietly by the explorer itself."""
+    """The controls of :class:`~planargeo.widgets.base.Explorer`: made, observed, echoes screened out."""
 
     def _make_controls(self, values: dict[str, Any]) -> None:
         """The controls (described as data or as widgets), the base's key and focus, the given values."""
@@ -453,12 +418,7 @@ class ControlsMixin:
 
     @property
     def values(self) -> dict[str, Any]:
-        """Current value of every control (a dragged value, not the slider's rounded echo of it).
-
-        Returns
-        -------
-        dict
-        """
+        """Current value of every control (a dragged value, not the slider's rounded echo of it)."""
         out = {}
         for k, w in self.controls.items():
             v = w.value

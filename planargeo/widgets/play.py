@@ -1,18 +1,7 @@
-"""Play's clock: simulated time at true real time × speed × time scale, in bounded sub-steps.
-
-Play shows a frame whenever the page ticks, but a frame may take longer to
-draw than the tick interval.  So the time is measured on the wall clock: each
-tick advances the simulation by the wall time since the last one (× speed ×
-the explorer's ``time_scale``), through ``play_step`` calls of at most
-``1 / play_fps`` simulated seconds each.  No physics step is skipped; only
-display frames are dropped.  A tick never catches up more than
-:data:`MAX_CATCHUP` wall seconds (after a pause of the kernel the motion
-resumes, it does not jump).
-
-Long runs are bounded (issue 23): :func:`check_count` and
-:func:`check_duration` refuse, with a named :class:`~planargeo.errors.InputError`,
-a non-positive or non-finite count or duration, and one beyond the stated
-limit unless the caller opts in with ``allow_long=True``.
+"""Play at true real time: each tick advances the simulation by the wall time since the last one
+(× speed × ``time_scale``, at most :data:`MAX_CATCHUP` s), through ``play_step`` sub-steps of at
+most ``1 / play_fps`` s: no physics step is skipped, only display frames are dropped.  Long runs
+are bounded (:func:`check_count`, :func:`check_duration`) unless ``allow_long=True``.
 
 Examples
 --------
@@ -20,10 +9,6 @@ Examples
 [0.08333333333333333, 0.08333333333333333, 0.08333333333333333]
 >>> run_substeps(lambda v, dt: {"t": v["t"] + dt}, {"t": 0.0}, 1.0, 0.05)[0]["t"]
 1.0000000000000002
->>> check_count("n_frames", 0, 10)
-Traceback (most recent call last):
-...
-planargeo.errors.InputError: n_frames must be a positive integer, got 0
 """
 from __future__ import annotations
 
@@ -44,8 +29,7 @@ __all__ = ["MAX_CATCHUP", "MAX_ADVANCE_FRAMES", "MAX_ADVANCE_SECONDS", "MAX_ANIM
 
 #: wall seconds a single Play tick may catch up (a longer gap: the motion resumes, it does not jump)
 MAX_CATCHUP = 0.5
-#: While the page plays, the controls and the readout reach it at most this often (seconds);
-#: every frame's picture goes at once (the page's work on the other widgets would hold it up).
+#: while the page plays, controls and readout reach it at most this often (s); pictures at once
 PLAY_SYNC_S = 0.25
 #: frames one call of ``advance`` may take without ``allow_long=True``
 MAX_ADVANCE_FRAMES = 10_000
@@ -80,8 +64,6 @@ def check_count(name: str, value: Any, limit: int, allow_long: bool | None = Fal
 
     Examples
     --------
-    >>> check_count("frames", 5, 10)
-    5
     >>> check_count("frames", 50, 10)
     Traceback (most recent call last):
     ...
@@ -117,13 +99,6 @@ def check_duration(name: str, value: Any, limit: float, allow_long: bool = False
     ------
     InputError
         Not a positive finite number, or beyond ``limit`` without ``allow_long``.
-
-    Examples
-    --------
-    >>> check_duration("seconds", float("nan"), 10.0)
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.InputError: seconds must be a positive finite number of seconds, got nan
     """
     real = isinstance(value, numbers.Real) and not isinstance(value, bool)
     if not real or not math.isfinite(float(value)) or float(value) <= 0:
@@ -139,10 +114,8 @@ def substeps(seconds: float, max_dt: float) -> list[float]:
 
     Parameters
     ----------
-    seconds : float
-        Time to cover (> 0).
-    max_dt : float
-        Largest step (> 0).
+    seconds, max_dt : float
+        Time to cover and the largest step (> 0).
 
     Returns
     -------
@@ -170,9 +143,8 @@ def run_substeps(step: Callable[[dict, float], dict | None], values: dict, secon
     Returns
     -------
     (dict, bool, Exception or None)
-        The control values reached (what was computed is kept), whether the run
-        ended (``step`` returned None), and the exception that stopped it, if any
-        (a ``KeyboardInterrupt`` too: the caller shows what was computed, then raises it).
+        The values reached, whether the run ended (``step`` returned None), and the exception
+        (even ``KeyboardInterrupt``) that stopped it.
     """
     vals = dict(values)
     for dt in substeps(seconds, max_dt):
@@ -217,7 +189,6 @@ class PlayClock:
         Returns
         -------
         float
-            Wall seconds since the last call (at most :data:`MAX_CATCHUP`) times the rate.
         """
         now = self.clock()
         gap = min(max(now - self.last, 0.0), MAX_CATCHUP)
@@ -258,45 +229,35 @@ class PlayMixin:
                 allow_long: bool = False) -> "Explorer":
         """Step Play ``n_frames`` frames without a front end (one update per frame).
 
-        Each frame covers ``speed × time_scale / play_fps`` simulated seconds
-        (:attr:`play_dt`), or ``seconds / n_frames`` when ``seconds`` is given,
-        through :meth:`play_step` sub-steps of at most ``1 / play_fps`` seconds;
-        only the frame's end is drawn (as Play does when drawing is slower than
-        real time).  A None from ``play_step`` ends the run; so does a refused
-        step, which keeps what was computed before it and names the reason.
+        Each frame covers :attr:`play_dt` (or ``seconds / n_frames``) in :meth:`play_step`
+        sub-steps; a None from ``play_step`` or a refused step ends the run.
 
         Parameters
         ----------
         n_frames : int
             Number of frames, at most :data:`MAX_ADVANCE_FRAMES`.
         seconds : float, optional
-            Simulated seconds the frames cover together, at most
-            :data:`MAX_ADVANCE_SECONDS`.
+            Simulated seconds the frames cover together, at most :data:`MAX_ADVANCE_SECONDS`.
         allow_long : bool
             Opt in to more frames or seconds than the limits.
 
         Returns
         -------
         Explorer
-            ``self``.
 
         Raises
         ------
         InputError
-            The explorer has no Play (no :meth:`play_step`), ``n_frames`` is not a
-            positive integer, ``seconds`` not a positive finite number, or either
-            is beyond its limit without ``allow_long``.
+            No Play, or a count or duration that is not positive or beyond its limit.
         """
         if not self.has_play:
             raise InputError(f"{type(self).__name__} has no Play (it does not define play_step)")
         n = check_count("n_frames", n_frames, MAX_ADVANCE_FRAMES, allow_long)
         if seconds is None:
             per_frame = self.play_dt
-            check_duration("n_frames × play_dt", n * per_frame, MAX_ADVANCE_SECONDS,
-                                 allow_long)
+            check_duration("n_frames × play_dt", n * per_frame, MAX_ADVANCE_SECONDS, allow_long)
         else:
-            per_frame = check_duration("seconds", seconds, MAX_ADVANCE_SECONDS,
-                                             allow_long) / n
+            per_frame = check_duration("seconds", seconds, MAX_ADVANCE_SECONDS, allow_long) / n
         for _ in range(n):
             if not self._frame(per_frame):
                 break
@@ -346,10 +307,10 @@ class PlayMixin:
             self._clock.rate = rate
 
     def _play_toggled(self, change) -> None:
-        if not change["new"]:
-            self._release_play_hold()
         if change["new"]:
             self._play_origin = dict(self.shown_values)
+        else:
+            self._release_play_hold()
         self._clock = None
         self._restart_clock()
 
@@ -360,12 +321,9 @@ class PlayMixin:
         return canvas is not None and canvas.has_trait("playing")
 
     def _connect_page_play(self) -> None:
-        """Play in the page: the Play button's ``playing`` is the canvas's; the canvas's ticks advance it.
+        """Play in the page: the button's ``playing`` is the canvas's; its ticks advance Play.
 
-        The page sends a tick as soon as the previous picture has arrived; each tick covers the
-        wall-clock time since the last (:class:`~planargeo.widgets.play.PlayClock`) in sub-steps
-        of at most ``1 / play_fps`` s and sets one picture.  The Play widget's own timer is
-        slowed to nothing: it only shows the button.
+        The Play widget's own timer is slowed to nothing: it only shows the button.
         """
         if not (self.has_play and self._page_plays):
             return
@@ -387,27 +345,24 @@ class PlayMixin:
             return
         if self._clock is None:
             self._restart_clock()
-        # the controls' and readout's syncs are held by the base while the page plays
-        # (Explorer._page_after: at most every PLAY_SYNC_S seconds, after a frame's reply)
         seconds = self._clock.due()
         if seconds <= 0 or self._frame(seconds):
             return
         self._release_play_hold()
+        if not self._play_again() and self._message:
+            raise PlanargeoError(self._message)      # the page shows why Play stopped
+
+    def _play_again(self) -> bool:
+        """At the end of a run: start again (loop, no refusal: True) or stop Play."""
         if self.play_loop is not None and self.play_loop.value and self._play_origin and \
                 not self._message:
-            self.set(**self._play_origin)  # start again
-            return
+            self.set(**self._play_origin)
+            return True
         self.play_control.playing = False
-        if self._message:
-            raise PlanargeoError(self._message)
+        return False
 
     def _keep_play_hold(self, stack: contextlib.ExitStack) -> bool:
-        """While the page plays, keep the syncs ``stack`` holds (True); they go every PLAY_SYNC_S s.
-
-        Called when an update's hold of the controls', readout's and message's syncs ends
-        (after a frame's reply has gone): the first hold while the page plays is kept,
-        then released once ``PLAY_SYNC_S`` seconds have passed, or when Play stops.
-        """
+        """While the page plays, keep the syncs ``stack`` holds (True); they go every PLAY_SYNC_S s."""
         if not hasattr(self, "_play_hold"):      # before Play's controls exist
             return False
         playing = (self.has_play and self._page_plays and self.play_control is not None
@@ -429,9 +384,7 @@ class PlayMixin:
     def _play_tick(self, change) -> None:
         if not self.play_control.playing or self._page_plays:
             return
-        # the wall clock sets the simulated time: ticks that arrive while a slow frame was drawn
-        # are dropped, and the next one covers the time they would have (display frames dropped,
-        # no physics step skipped)
+        # ticks that arrive while a slow frame was drawn are dropped; the next covers their time
         interval = self.play_control.interval / 1000.0
         now = self.wall_clock()
         last_end, last_cost = self._last_tick
@@ -446,10 +399,5 @@ class PlayMixin:
         ok = self._frame(seconds)
         t1 = self.wall_clock()
         self._last_tick = (t1, t1 - t0)
-        if ok:
-            return
-        if self.play_loop is not None and self.play_loop.value and self._play_origin and \
-                not self._message:
-            self.set(**self._play_origin)  # start again
-            return
-        self.play_control.playing = False
+        if not ok:
+            self._play_again()

@@ -1,21 +1,8 @@
 """Readout text of the explorers: numbers with their units, points, and the "what is shown" panel.
 
-The rules every explorer's readout follows (issue 22):
-
-* a unit is written after a number only, never after a word ("at rest");
-* a vector's entry takes one unit per component (a tuple) or one common unit;
-* round-off (``|x| ≤ zero``) prints as ``0``;
-* a point at infinity reads "at infinity (direction (dx, dy))", decided by
-  :func:`planargeo.geometry.projective.is_ideal`, never by ``== 0``.
-
-Examples
---------
->>> value_text((1.0, -2.0, 0.5), ("m/s", "m/s", "rad/s"))
-'(1 m/s, -2 m/s, 0.5 rad/s)'
->>> value_text("at rest", "m"), value_text(0.25, "m")
-('at rest', '0.25 m')
->>> point_text([0.0, -2.0, 1.0]), point_text([1.0, 0.0, 0.0])
-('(2, 0) m', 'at infinity (direction (0, 1))')
+A unit follows numbers only (never a word, "at rest"), one per component or one common; round-off
+prints as ``0``; a point at infinity (:func:`~planargeo.geometry.projective.is_ideal`) reads
+"at infinity (direction (dx, dy))".
 """
 from __future__ import annotations
 
@@ -54,10 +41,8 @@ def fmt(x: Any, digits: int = 4, zero: float = 0.0) -> str:
 
     Examples
     --------
-    >>> fmt(0.123456), fmt(float("inf")), fmt((1.0, -2.5)), fmt(True)
-    ('0.1235', '∞', '(1, -2.5)', 'yes')
-    >>> fmt(-1.2e-16, zero=1e-9), fmt((1.0, 3e-12), zero=1e-9)
-    ('0', '(1, 0)')
+    >>> fmt(0.123456), fmt(float("inf")), fmt((1.0, -2.5)), fmt(True), fmt(-1.2e-16, zero=1e-9)
+    ('0.1235', '∞', '(1, -2.5)', 'yes', '0')
     """
     if isinstance(x, (bool, np.bool_)):
         return "yes" if x else "no"
@@ -133,11 +118,6 @@ def split_units(unit, n: int) -> list[str]:
     ------
     ValueError
         A tuple whose length is not ``n`` (a programming error in an explorer's units).
-
-    Examples
-    --------
-    >>> split_units("m", 2), split_units(("m/s", "rad/s"), 2)
-    (['m', 'm'], ['m/s', 'rad/s'])
     """
     if isinstance(unit, (tuple, list)):
         units = [("" if u in NO_UNIT else str(u)) for u in unit]
@@ -165,12 +145,12 @@ def value_text(x: Any, unit: Any = "", zero: float = 0.0, digits: int = 4) -> st
     Returns
     -------
     str
-        HTML-safe text, the unit after numbers only.
+        HTML-safe text.
 
     Examples
     --------
-    >>> value_text((1.0, 2.0), "m"), value_text(3, "—"), value_text(True, "m")
-    ('(1, 2) m', '3', 'yes')
+    >>> value_text((1.0, -2.0, 0.5), ("m/s", "m/s", "rad/s")), value_text("at rest", "m")
+    ('(1 m/s, -2 m/s, 0.5 rad/s)', 'at rest')
     """
     text = fmt(x, digits, zero)
     if not is_numeric(x):
@@ -190,9 +170,6 @@ def value_text(x: Any, unit: Any = "", zero: float = 0.0, digits: int = 4) -> st
 def point_text(p, unit: str = "m", zero: float = 0.0, digits: int = 4) -> str:
     """Readout text of a homogeneous point: ``"(x, y) m"`` or ``"at infinity (direction (dx, dy))"``.
 
-    Ideal points are told by :func:`planargeo.geometry.projective.is_ideal`
-    (weight exactly zero), never by a size threshold.
-
     Parameters
     ----------
     p : array_like (3,)
@@ -210,10 +187,8 @@ def point_text(p, unit: str = "m", zero: float = 0.0, digits: int = 4) -> str:
 
     Examples
     --------
-    >>> point_text([4.0, -2.0, 2.0])
-    '(1, 2) m'
-    >>> point_text([0.0, 1.0, 0.0])
-    'at infinity (direction (-1, 0))'
+    >>> point_text([4.0, -2.0, 2.0]), point_text([0.0, 1.0, 0.0])
+    ('(1, 2) m', 'at infinity (direction (-1, 0))')
     """
     p = np.asarray(p, dtype=float).reshape(3)
     if bool(is_ideal(p)):
@@ -224,8 +199,7 @@ def point_text(p, unit: str = "m", zero: float = 0.0, digits: int = 4) -> str:
 
 
 def point_value(p):
-    """``(x, y)`` of a finite homogeneous point (numbers: the base writes the unit), or the words of
-    :func:`point_text` for a point at infinity.
+    """``(x, y)`` of a finite homogeneous point, or :func:`point_text`'s words for one at infinity.
 
     Parameters
     ----------
@@ -265,11 +239,6 @@ def explain_html(meanings: dict[str, str], title: str = "What is shown") -> str:
     -------
     str
         HTML (a ``<details>`` list; empty text when there is nothing to explain).
-
-    Examples
-    --------
-    >>> "<b>ω</b>" in explain_html({"ω": "angular velocity (thesis 2.3)"})
-    True
     """
     if not meanings:
         return ""
