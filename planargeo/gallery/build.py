@@ -1,34 +1,15 @@
 """``planargeo gallery``: regenerate (or ``--check``) the SVG gallery.
 
-Each registered figure (see :mod:`planargeo.gallery.figures`) is rendered to
-``<out>/<name>.svg`` inside the package's fixed style (fonts, sizes,
-``svg.hashsalt``, no date metadata), so two runs give identical bytes, and
-``<out>/README.md`` indexes the figures with their captions.  ``--check`` renders
-into a temporary folder and exits 1 listing stale, missing or extra files.
-
-A run never loses a file it did not write.  ``<out>/.planargeo-gallery`` (the
-manifest) lists the files the gallery wrote there, each with the SHA-256 of the
-bytes written; a run deletes or overwrites only those that still hold those
-bytes (:func:`planargeo.files.owned_files`).  A listed file that has changed
-since, or that the user has put there under the same name, is the user's: a run
-leaves it and says so in one line.  A manifest from before hashes were kept
-lists bare names; such a file counts as the gallery's only if it is identical
-to what would be written now.  A run refuses a non-empty folder without a
-manifest, and a user's file of the same name as one of its figures, unless
-given ``--force`` (which overwrites such files but still deletes nothing it did
-not write).  All files of a run are written together by
-:func:`planargeo.files.atomic_write_many` (each staged beside its target, then
-moved in), with the usual permissions, so a failure (a full device, a file-size
-limit) leaves the previous gallery intact.  The folder itself may be created
-(before anything is rendered); its parent must exist.  Problems (a missing
-parent, a file in the way, a folder that cannot be created or written, a
-read-only file system) raise :class:`~planargeo.errors.OutputError`, which
-``planargeo gallery`` prints as one line (exit status 1).
-
-The README also indexes the benchmark charts that ``planargeo bench`` copies
-into ``<out>/benchmarks/`` (one line each, from :data:`BENCHMARK_CAPTIONS`);
-those SVGs are measurements, not rendered here, so ``--check`` compares the
-README against the charts present in the checked folder.
+Each registered figure (:mod:`planargeo.gallery.figures`) is rendered to ``<out>/<name>.svg``
+in the package's fixed style, so two runs give identical bytes; ``<out>/README.md`` indexes
+them with their captions and the benchmark charts ``planargeo bench`` copies into
+``<out>/benchmarks/``.  ``--check`` renders into a temporary folder and lists stale, missing
+or extra files.  A run never loses a file it did not write: the manifest
+``.planargeo-gallery`` lists each file written with its SHA-256, and only files still holding
+those bytes are overwritten or deleted (:func:`planargeo.files.owned_files`; ``--force``
+overwrites a user's file of a figure's name).  All files are written together
+(:func:`planargeo.files.atomic_write_many`); problems raise
+:class:`~planargeo.errors.OutputError`.
 """
 from __future__ import annotations
 
@@ -66,7 +47,6 @@ def add_arguments(parser):
     Parameters
     ----------
     parser : argparse.ArgumentParser
-        The subcommand's parser.
     """
     parser.add_argument("--out", default=str(DEFAULT_OUT),
                         help="output folder (default: the repository's gallery/)")
@@ -80,17 +60,15 @@ def add_arguments(parser):
 
 
 def render_svg(spec) -> bytes:
-    """Render one figure spec to SVG bytes (deterministic).
+    """Render one figure spec to SVG bytes (the same on every run).
 
     Parameters
     ----------
     spec : FigureSpec
-        A registered figure.
 
     Returns
     -------
     bytes
-        The SVG file's content, the same on every run.
     """
     import matplotlib
 
@@ -115,12 +93,10 @@ def benchmark_charts(folder) -> list[str]:
     Parameters
     ----------
     folder : str or pathlib.Path
-        The gallery's ``benchmarks/`` folder.
 
     Returns
     -------
     list of str
-        File stems, sorted.
     """
     folder = Path(folder)
     if not folder.is_dir():
@@ -134,14 +110,13 @@ def readme(specs, benchmarks=()) -> str:
     Parameters
     ----------
     specs : dict of str to FigureSpec
-        The registered figures, in gallery order (:func:`planargeo.gallery.figures.load_all`).
+        The figures in gallery order (:func:`planargeo.gallery.figures.load_all`).
     benchmarks : sequence of str, optional
-        Stems of the benchmark charts to index (:func:`benchmark_charts`).
+        Stems of the benchmark charts (:func:`benchmark_charts`).
 
     Returns
     -------
     str
-        The Markdown text.
     """
     lines = [
         "# planargeo gallery",
@@ -184,11 +159,7 @@ def _say(line: str) -> None:
 
 
 def _folder(out: Path) -> bool:
-    """Make sure ``out`` is a folder the gallery can write into; return True if this call created it.
-
-    Raises :class:`OutputError` (one line naming the folder and the problem) for a missing
-    parent, a file in the way, a folder that cannot be created or written into.
-    """
+    """Make sure ``out`` is a folder the gallery can write into (OutputError if not); True if created."""
     created = make_folder(out)
     try:                                 # root may write anywhere but a read-only file system or /proc
         fd, probe = tempfile.mkstemp(dir=out, prefix=".planargeo-probe-")
@@ -202,14 +173,11 @@ def _folder(out: Path) -> bool:
 
 
 def _claim(out: Path, names, force: bool, new=None) -> tuple[dict, dict, list]:
-    """Check that writing ``names`` into ``out`` loses no file the gallery did not write.
+    """``(own, undecided, changed)``: may writing ``names`` into ``out`` lose no one's file? (OutputError if not)
 
-    ``new`` (``{name: bytes}``, once rendered) settles the entries of an old manifest without
-    hashes; before that they are left undecided.  Returns ``(own, undecided, changed)``: the
-    files still holding what the gallery wrote (``{name: sha256}``, which it may overwrite or
-    delete), the old entries not yet settled (``{name: None}``), and the listed files that are
-    the user's now.  Raises :class:`OutputError` for a folder holding other files and no
-    manifest, or a user's file named like one to be written (unless ``force``).
+    ``own``: files still holding what the gallery wrote; ``undecided``: entries of an old
+    manifest without hashes, until ``new`` (``{name: bytes}``) settles them; ``changed``: the
+    user's now.
     """
     try:
         entries = read_manifest(out / MANIFEST)
@@ -244,10 +212,9 @@ def generate(out, only=None, *, benchmarks=None, force: bool = False, say=_say) 
     benchmarks : path, optional
         The folder whose benchmark charts the README indexes (default ``out/benchmarks``).
     force : bool
-        Write into a folder holding files the gallery did not write (module docstring).
+        Write into a folder holding files the gallery did not write.
     say : callable, optional
-        Receives the one-line note about files the gallery wrote once but leaves because they
-        have changed since (default: printed on stderr).
+        Receives the note on files left because they changed since written (default: stderr).
 
     Returns
     -------
@@ -259,8 +226,7 @@ def generate(out, only=None, *, benchmarks=None, force: bool = False, say=_say) 
     InputError
         ``only`` names an unknown figure.
     OutputError
-        ``out`` cannot be written, or holds files the gallery did not write
-        (without ``force``); nothing has been changed then.
+        ``out`` cannot be written, or holds others' files (without ``force``); nothing changed.
     """
     from planargeo.gallery.figures import load_all
 
@@ -312,13 +278,11 @@ def check(out) -> list[str]:
     Parameters
     ----------
     out : str or pathlib.Path
-        The gallery folder to verify.
 
     Returns
     -------
     list of str
-        ``"missing: …"``, ``"stale: …"`` or ``"extra: …"`` lines.  The manifest, which holds
-        the other files' hashes, is reported stale only when they are all current.
+        ``"missing: …"``, ``"stale: …"`` or ``"extra: …"`` (the manifest stale only if alone).
     """
     out = Path(out)
     with tempfile.TemporaryDirectory() as tmp:
@@ -343,12 +307,12 @@ def main(args) -> int:
     Parameters
     ----------
     args : argparse.Namespace
-        ``out``, ``only``, ``force`` and ``check``, as :func:`add_arguments` reads them.
+        ``out``, ``only``, ``force`` and ``check`` (:func:`add_arguments`).
 
     Returns
     -------
     int
-        Exit status: 0, or 1 when ``--check`` found problems.
+        Exit status: 1 when ``--check`` found problems.
     """
     if args.check:
         problems = check(args.out)

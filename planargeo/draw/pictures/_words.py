@@ -1,8 +1,6 @@
-"""Words for the one-line descriptions of picture elements: where a point is, what a force is.
+"""Words for the picture elements' descriptions: numbers, where a point is, what a force is.
 
-Shared by the explorers' picture builders (:mod:`planargeo.draw.pictures`).  A point
-at infinity is told by :func:`planargeo.geometry.projective.is_ideal` (weight
-exactly zero), never by a size threshold.
+A point at infinity is told by :func:`~planargeo.geometry.projective.is_ideal`, never by a size.
 
 Examples
 --------
@@ -38,40 +36,17 @@ SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
 def subscript(i) -> str:
-    """``i`` in subscript digits: ``subscript(12)`` is ``'₁₂'``.
-
-    Parameters
-    ----------
-    i : int or str
-        A whole number, or its digits.
-
-    Returns
-    -------
-    str
-    """
+    """``i`` (a whole number or its digits) in subscript digits: ``subscript(12)`` is ``'₁₂'``."""
     return str(i).translate(SUB)
 
 
 def words_data(explorer: str) -> dict:
-    """The words of ``explorer`` kept as data: its ``[explorer.<name>]`` table in the package's
-    one data file (:func:`planargeo.files.package_words`; none: empty)."""
+    """The ``[explorer.<name>]`` table of the package's words (:func:`planargeo.files.package_words`)."""
     return package_words("explorer").get(explorer, {})
 
 
 def num(x: float, digits: int = 4, zero: float = 1e-9) -> str:
-    """A number with ``digits`` significant digits; round-off (``|x| < zero``) and minus zero read 0.
-
-    Parameters
-    ----------
-    x : float
-    digits : int
-    zero : float
-        Round-off level.
-
-    Returns
-    -------
-    str
-    """
+    """``x`` with ``digits`` significant digits; round-off (``|x| < zero``) and minus zero read 0."""
     x = float(x)
     if not math.isfinite(x):
         return "∞" if x > 0 else "−∞" if x < 0 else "undefined"
@@ -82,34 +57,12 @@ def num(x: float, digits: int = 4, zero: float = 1e-9) -> str:
 
 
 def pair(xy, digits: int = 4) -> str:
-    """``(x, y)`` with :func:`num`.
-
-    Parameters
-    ----------
-    xy : (float, float)
-    digits : int
-
-    Returns
-    -------
-    str
-    """
+    """``(x, y)`` with :func:`num`."""
     return f"({num(xy[0], digits)}, {num(xy[1], digits)})"
 
 
 def where(p, unit: str = "m") -> str:
-    """Where a homogeneous point ``[a, b, w]`` (thesis 5.49) is: ``at (x, y) m`` or at infinity.
-
-    Parameters
-    ----------
-    p : array_like (3,)
-        The point (zero: none).
-    unit : str
-        Unit of the coordinates.
-
-    Returns
-    -------
-    str
-    """
+    """Where a homogeneous point ``[a, b, w]`` (thesis 5.49) is: ``at (x, y) m`` or at infinity."""
     p = np.asarray(p, dtype=float).reshape(3)
     if not np.all(np.isfinite(p)):
         return "undefined (not a finite point)"
@@ -125,7 +78,7 @@ def where(p, unit: str = "m") -> str:
 
 
 def _unit(x: float, y: float) -> tuple[float, float]:
-    """``(x, y)`` scaled to length 1 (scaled by its largest part first: no overflow, no underflow)."""
+    """``(x, y)`` scaled to length 1 (by its largest part first: no overflow, no underflow)."""
     x, y = float(x), float(y)
     big = max(abs(x), abs(y))
     x, y = x / big, y / big
@@ -134,18 +87,7 @@ def _unit(x: float, y: float) -> tuple[float, float]:
 
 
 def force(l, unit: str = "N") -> str:
-    """A force ``[fx, fy, τ]`` in words: its size and the foot of the origin on its line, or a couple.
-
-    Parameters
-    ----------
-    l : array_like (3,)
-    unit : str
-        Unit of the force (the couple's is ``unit·m``).
-
-    Returns
-    -------
-    str
-    """
+    """A force ``[fx, fy, τ]`` in ``unit``: its size and the origin's foot on its line, or a couple."""
     fx, fy, tz = (float(v) for v in np.asarray(l, dtype=float).reshape(3))
     if not all(map(math.isfinite, (fx, fy, tz))):
         return "undefined (not a finite force)"
@@ -161,26 +103,10 @@ def force(l, unit: str = "N") -> str:
 
 def labelled_line(pic, id: str, l, text: str, *, anchor=None, side: float = 1.0, ahead: float = 0.0,
                   **kw) -> None:
-    """A line (:meth:`Picture.line`) labelled beside it, clear of its arrow (a couple keeps its glyph's label).
+    """The line ``l`` (:meth:`Picture.line`, ``**kw``) labelled ``text`` beside it, clear of its arrow.
 
-    Parameters
-    ----------
-    pic : Picture
-    id : str
-        The element's id.
-    l : array_like (3,)
-        The line ``[fx, fy, τ]``.
-    text : str
-        The label.
-    anchor : (float, float), optional
-        Where the sense arrow and the label sit (near it on the line).
-    side : float
-        +1: above the line (right of a vertical one); -1: below it.
-    ahead : float
-        The label this far (data units) from the anchor along the force's sense, clear of what
-        is drawn at the anchor.
-    **kw
-        Keyword arguments of :meth:`Picture.line`.
+    The arrow sits near ``anchor``, the label ``ahead`` (data units) from it along the force, on
+    ``side`` +1 (above) or -1 (below); a couple keeps its glyph's label.
     """
     from planargeo.draw.pictures.common import label_line
 

@@ -1,18 +1,8 @@
-"""The picture of the articulated-inertia explorer's state: a chain, its inertias as conics, axes and a chart.
+"""The articulated-inertia explorer's picture: a chain, its inertias as conics, axes and a chart (thesis 7.1–7.3, 10.2.2–10.2.3).
 
-What :class:`planargeo.widgets.articulated.ArticulatedExplorer` shows (thesis 7.1–7.3,
-10.2.2, 10.2.3), from one state of :func:`planargeo.scenes.articulated.articulated_state`:
-
-* the links, the pins and the ground pin;
-* every body's rigid inertia ``Iᵢ`` (grey) and articulated inertia ``Aᵢ`` (7.7a, purple)
-  as conics (the real stand-ins of imaginary conics, 10.2.3), the focused body's bold;
-* the acceleration pole ``a`` and, for the focused body ``k``, its axes of percussion
-  ``Aₖa`` and ``Iₖa`` (5.64–5.68) and the polar of ``a`` with respect to the drawn real
-  conic of ``Aₖ`` (10.2.3);
-* a chart, on the right of the view: each entry of ``Aₖ`` at joint ``k`` over its full
-  value against the recursion steps (10.2.2), with the truncation error.
-
-:func:`fit_box` is the view of a chain's mechanism (shared with the splitting picture).
+Rigid inertias ``Iᵢ`` and articulated ones ``Aᵢ`` (7.7a) are drawn as conics, the focused
+body's bold; the acceleration pole ``a``, its axes of percussion ``Aₖa``, ``Iₖa`` (5.64–5.68)
+and its polar; on the right a chart of ``Aₖ`` against the recursion steps (10.2.2).
 
 Examples
 --------
@@ -39,20 +29,15 @@ def fit_box(mechanism, extra=(), margin: float = 0.15, reach: float = 3.0,
             least: float = 1.0) -> tuple[float, float, float, float]:
     """A square box about every finite point of ``mechanism`` and the ``extra`` points near it.
 
-    An ``extra`` point (a pole, a centre) is kept when it lies within ``reach`` times the
-    mechanism's size of its middle (a farther one gets its edge arrow).  The box spans at
-    least ``least``, plus ``margin`` times its side on every side.
-
     Parameters
     ----------
     mechanism : array_like (m, 2)
         Points that must be in view.
     extra : array_like (k, 2)
-        Points kept in view when near the mechanism.
+        Points kept in view when within ``reach`` mechanism sizes of its middle.
     margin : float
         Margin on each side, a fraction of the box's side.
     reach : float
-        How far (in mechanism sizes) an extra point may lie and still be kept in view.
     least : float
         Smallest side of the box (m).
 
@@ -94,7 +79,6 @@ def chain_view(box, size, margin) -> tuple[float, float, float, float]:
     box : (x0, x1, y0, y1)
         The chain's box (:func:`fit_box`).
     size : (int, int)
-        The picture's pixels.
     margin : (left, right, top, bottom)
         The picture's margins (pixels).
 
@@ -125,12 +109,8 @@ def articulated_picture(st: dict, *, k: int, focus_all: bool, rigid: bool, axes:
         :func:`planargeo.scenes.articulated.articulated_state` with ``n`` and ``outboard``.
     k : int
         The focused body (0-based; body 1 when the focus is "all").
-    focus_all : bool
-        No focus: nothing faded.
-    rigid : bool
-        Draw the rigid inertias ``Iᵢ`` (and the axis ``Iₖa``).
-    axes : bool
-        Draw the axes of percussion and the polar of ``a``.
+    focus_all, rigid, axes : bool
+        Nothing faded; the rigid inertias ``Iᵢ`` drawn; the axes and the polar of ``a`` drawn.
     view : (x0, x1, y0, y1)
         The view (:func:`chain_view`); the chart takes its right part.
     """

@@ -1,18 +1,7 @@
-"""The picture of the cornering car (thesis 6.9, Fig 6.6), built natively: body, tyres, ICR, forces, inertia.
+"""The cornering car's picture (thesis 6.9, Fig 6.6): body, tyres, ICR, forces to scale, inertia.
 
-The car turns about its instant centre of rotation (ICR), the joint ``s`` of the
-model (6.114).  Drawn turned by the heading about the ICR (:func:`moves`), with the
-rear tyre at the origin at heading 0:
-
-* the body, the two tyres (the front one steered), the axle lines meeting at the ICR;
-* the velocity pole ``v = s ω`` at the ICR (6.115) and, with a drive, the acceleration
-  pole of ``a = s ω̇`` (6.131), also at the ICR; coasting, ``ω̇ = 0`` and ``a = 0``;
-* the centre of gravity ``G`` and its circle about the ICR, the inertia ``I`` (6.117)
-  as its conic;
-* the tyre forces ``R₁μ₁``, ``R₂μ₂`` (6.114, 6.133), the drive ``f_A`` (6.120) and the
-  bias force ``p`` (6.119), each on its line of action with an arrow to scale
-  (:data:`FORCE_SCALE`), and the active-force line ``T`` (6.125);
-* a scale bar, and the banner once the tyres reach their limit.
+The car turns about its instant centre of rotation (ICR), the joint ``s`` of the model
+(6.114); it is drawn turned by the heading about the ICR (:func:`moves`).
 
 Examples
 --------
@@ -54,12 +43,8 @@ SLIDES = "the car slides out: its tyres reach μ·g"
 def moves(theta: float, d: float):
     """The drawing's placement of the scene: turned by ``theta`` about the ICR, rear tyre at the origin.
 
-    A scene point ``p`` is drawn at ``R p + t`` with ``R`` the rotation by
-    ``theta`` and ``t = (-d, 0)`` (at ``theta = 0`` the rear contact ``(d, 0)``
-    is drawn at the origin and stays there when ``d`` changes: drags map the
-    mouse to the car absolutely).  Twists (and points, in the package's
-    coordinates) map by ``V = [[R, -J t], [0, 1]]`` (``J`` the quarter turn),
-    wrenches (and lines) by ``W = V⁻ᵀ``, inertias (and conics) by ``W I Wᵀ``.
+    A scene point ``p`` is drawn at ``R p + t`` (``t = (-d, 0)``); twists and points map by
+    ``V = [[R, -J t], [0, 1]]``, wrenches and lines by ``W = V⁻ᵀ``, inertias by ``W I Wᵀ``.
 
     Parameters
     ----------
@@ -89,14 +74,10 @@ def moves(theta: float, d: float):
 
 
 def view_box(d: float, L: float, theta: float, F_A: float = 0.0):
-    """The view ``(x0, x1, y0, y1)`` (m, drawn coordinates) holding the car, the drive arrow and a near ICR.
+    """The view ``(x0, x1, y0, y1)`` (m) holding the car, the drive arrow and an ICR up to :data:`NEAR`.
 
-    In the car's frame (the ICR at the origin) the car, the tip of the drive arrow
-    ``f_A`` and, for turn radii up to :data:`NEAR`, the ICR fill a rectangle; the
-    view is the square about its centre (turned with the car, :func:`moves`) whose
-    half side is the rectangle's half diagonal plus :data:`VIEW_MARGIN`, rounded up
-    to 0.5 m: it holds them at every heading.  A farther ICR is left out, so that
-    the car fills a third of the view at every turn radius.
+    A square about them whose half side is their box's half diagonal plus :data:`VIEW_MARGIN`
+    (rounded up to 0.5 m): it holds them at every heading.
 
     Parameters
     ----------
@@ -143,12 +124,10 @@ def car_picture(res, *, heading: float, view, slides: bool = False, limit: float
         The scene ``"car"`` (at heading 0).
     heading : float
         How far the car has turned about the ICR (rad).
-    view : (x0, x1, y0, y1)
-        What must be in view (drawn coordinates, m).
     slides : bool
-        The tyres have reached their limit: the banner says the car slides out.
+        The tyres have reached their limit: the banner says so.
     limit : float
-        What the tyres hold, μ·g (m/s²), said in the banner's description.
+        What the tyres hold, μ·g (m/s²).
     """
     q, x, p = res.quantities, res.extra, res.params
     L, d = p["L"], p["d"]

@@ -1,10 +1,4 @@
-"""Pieces shared by the explorers' native pictures: line labels, label directions, direction arrows.
-
-* :func:`label_line`: a line's label beside it, on the side its normal points to,
-  aligned away from the line (so that the line never runs through its own label);
-* :func:`label_toward`: a point's label put on a chosen side of it;
-* :func:`point_along`: an ideal point of pure geometry (a direction, not a
-  translation's pole), its edge arrow pointing *along* its direction.
+"""Steps shared by the explorers' pictures: line labels, label directions, direction arrows, :func:`builder`.
 
 Examples
 --------
@@ -39,10 +33,7 @@ _BUILDER_DOC = {"view": "view : (x0, x1, y0, y1)\n    What must be in view.",
 
 
 def builder(fn):
-    """Mark ``fn`` as a picture builder: its docstring gets the entries all builders share.
-
-    Every builder takes ``view`` and ``size`` and returns a :class:`Picture`; what its own
-    docstring does not say of them is added once, here, at the end of its Parameters.
+    """Mark ``fn`` as a picture builder: its docstring gets the ``view``, ``size`` and Returns it lacks.
 
     Parameters
     ----------
@@ -52,7 +43,7 @@ def builder(fn):
     Returns
     -------
     callable
-        ``fn`` itself, its docstring completed.
+        ``fn``, its docstring completed.
     """
     import inspect
 
@@ -71,23 +62,15 @@ def _align(n) -> tuple[str, str]:
 
 def label_line(pic: Picture, id: str, text: str, *, anchor=None, gap: float = 7.0,
                side: float = 1.0) -> None:
-    """Label the line element ``id`` (just drawn, unlabelled) beside its point nearest ``anchor``.
-
-    The label sits ``gap`` pixels off the line along its normal (``side`` = -1: the other
-    normal), aligned away from the line; the picture's placer moves it if another label
-    is there.  A line out of view gets no label.
+    """Label the line element ``id`` ``gap`` pixels off it, aligned away from it, near ``anchor``.
 
     Parameters
     ----------
     pic : Picture
-    id : str
-        The line element's id.
-    text : str
-        The label.
+    id, text : str
     anchor : (float, float), optional
         Near which point of the line (default: the view's centre), kept within its middle 80 %.
     gap : float
-        Pixels between the line and the label.
     side : float
         +1: above the line (right of a vertical one); -1: below it.
     """
@@ -114,11 +97,9 @@ def label_line(pic: Picture, id: str, text: str, *, anchor=None, gap: float = 7.
 
 
 def point_along(pic: Picture, id: str, p, **kw) -> None:
-    """A point as :meth:`Picture.point`; an ideal one's edge arrow points along its direction.
+    """A point as :meth:`Picture.point` (``**kw``); an ideal one's edge arrow points along its direction.
 
-    :meth:`Picture.point` draws an ideal twist's pole as an arrow along the
-    translation it stands for (across the pole's direction).  A point of pure
-    geometry at infinity *is* a direction: its arrow points that way, out of the view.
+    (:meth:`Picture.point` draws a translation's pole, its arrow across the pole's direction.)
 
     Parameters
     ----------
@@ -126,7 +107,6 @@ def point_along(pic: Picture, id: str, p, **kw) -> None:
     id : str
     p : array_like (3,)
     **kw
-        Keyword arguments of :meth:`Picture.point`.
     """
     kw.setdefault("glyph", False)
     pic.point(id, p, **kw)
@@ -147,18 +127,13 @@ def point_along(pic: Picture, id: str, p, **kw) -> None:
 
 
 def label_toward(el: dict, u, gap: float = 9.0) -> None:
-    """Put the label of the point element ``el`` ``gap`` pixels from it in the direction ``u``.
-
-    The picture's placer keeps this spot when it is free (else it tries others).
+    """Put the label of the point element ``el`` ``gap`` pixels from it in the pixel direction ``u``.
 
     Parameters
     ----------
     el : dict
-        A point element (its first text part is the label).
     u : (float, float)
-        Direction in pixels (y up).
     gap : float
-        Pixels from the point to the label.
     """
     u = np.asarray(u, float)
     u = u / max(math.hypot(*u), 1e-300)

@@ -1,12 +1,7 @@
-"""The construction explorer's picture: chapter 4's constructions, step by step (thesis 4.2–4.7, 10.2.4).
+"""The construction explorer's picture: chapter 4's constructions step by step (thesis 4.2–4.7, 10.2.4).
 
-What :class:`planargeo.widgets.construction.ConstructionExplorer` shows of a
-:class:`~planargeo.scenes.construction.Construction`: the elements of steps ``1 … k``,
-the last one at full strength and the earlier ones faded, shown or hidden, and the
-step's caption (its title and equation) in a band at the top of the view.  Poles are
-points with their rotation glyphs, force lines have their senses, a sum is drawn
-heavier; construction lines are thin and dashed.  Every element says what it is, its
-equation and its value.
+The elements of steps ``1 … k``, the last at full strength and the earlier ones faded,
+shown or hidden, with the step's caption in a band at the bottom of the view.
 
 Examples
 --------
@@ -30,7 +25,7 @@ import numpy as np
 
 from planargeo.draw.picture import FONT_PX, PX_PER_PT, Picture, plain_text
 from planargeo.draw.pictures._words import num, where, words_data
-from planargeo.draw.pictures.common import builder, label_line, label_toward
+from planargeo.draw.pictures.common import _align, builder, label_line, label_toward
 from planargeo.draw.style import COLORS, SUM
 from planargeo.geometry.projective import is_at_infinity, is_ideal
 from planargeo.screws.inertia import mass, radius_of_gyration
@@ -83,11 +78,7 @@ def _value(e) -> str:
 
 
 def _frame(c, upto: int):
-    """``(centroid, n)``: the finite poles' centroid and the upward normal of the line they lie along.
-
-    The construction's points are labelled on the ``n`` side of that line (a lever line),
-    the sum on the other side.
-    """
+    """``(centroid, n)``: the finite poles' centroid and the upward normal of the line along them."""
     P = np.array([[-e.value[1] / e.value[2], e.value[0] / e.value[2]] for e in c.elements(upto)
                   if e.kind == "point" and e.value[2] != 0] or [[0.0, 0.0]])
     m = P.mean(axis=0)
@@ -133,15 +124,12 @@ def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(56
         The step shown (clipped to the construction's steps).
     earlier : {"faded", "shown", "hidden"}
         How the earlier steps look.
-    view : (x0, x1, y0, y1)
-        What must be in view; a band for the caption is added below it (``band_below``).
     all_steps : bool
         Every step at full strength (the layered export).
     caption : str, optional
         The caption (default: ``Step k/n: <the step's caption>``).
     band_below : bool
-        Add the caption's band below ``view``; False: ``view`` is the whole box shown (a view
-        the user zoomed or panned to in the page, band included), the band at its bottom.
+        Add the caption's band below ``view``; False: ``view`` (zoomed or panned) holds the band.
     """
     n = len(c.steps)
     k = min(max(int(step), 1), n)
@@ -233,11 +221,10 @@ def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(56
                 if label:
                     d = (b - a) * np.array([pic.kx, pic.ky])
                     u = np.array([-d[1], d[0]]) / max(math.hypot(*d), 1e-300)
+                    ha, va = _align(u)
                     pic.elements[-1]["parts"].append(
                         {"p": "text", "x": float((a[0] + b[0]) / 2), "y": float((a[1] + b[1]) / 2),
-                         "dx": float(u[0] * 8), "dy": float(u[1] * 8), "text": label,
-                         "ha": "left" if u[0] > 0.3 else "right" if u[0] < -0.3 else "center",
-                         "va": "bottom" if u[1] > 0.3 else "top" if u[1] < -0.3 else "center"})
+                         "dx": float(u[0] * 8), "dy": float(u[1] * 8), "text": label, "ha": ha, "va": va})
             if faded:
                 pic.elements[-1]["opacity"] = FADED
             pic.elements[-1]["step"] = i + 1

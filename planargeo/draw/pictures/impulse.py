@@ -1,15 +1,8 @@
-"""The picture of the impulse explorer's state: a bat or a door struck at rest, its poles and the sting.
+"""The impulse explorer's picture: a bat or door struck at rest, its poles and the sting (thesis 5.4, 5.64–5.68).
 
-What :class:`planargeo.widgets.impulse.ImpulseExplorer` shows (thesis 5.4, 5.64–5.68,
-figure 3.3), from one result of the scene :func:`planargeo.scenes.impulse.impulse`:
-
-* the body ``t`` seconds after the blow, turned about its velocity pole (and its
-  outline at rest, dashed, once ``t > 0``); its centre of mass ``c`` and inertia ``I``;
-* the grip or hinge ``P``, the axis of percussion of ``P`` and the centre of percussion
-  on the body's axis (5.67);
-* the blow ``ĵ`` and, held, the reaction impulse ``ĵᵣ`` of the grip (the sting);
-* the velocity pole just after the blow ``v`` (4.10) and where the body would turn if
-  nothing held it (the pole of ``I⁻¹ĵ``).
+The body ``t`` s after the blow (and at rest, dashed), the grip or hinge ``P`` with its axis
+and centre of percussion (5.67), the blow ``ĵ`` and the grip's reaction ``ĵᵣ``, the velocity
+pole ``v`` (4.10) and the pole the body would have if free.
 
 Examples
 --------
@@ -41,11 +34,9 @@ def moved_outline(outline, dv, t: float) -> np.ndarray:
     Parameters
     ----------
     outline : array_like (n, 2)
-        The body at rest.
     dv : array_like (3,)
-        The twist just after the blow ``[vx, vy, ω]`` (velocity of the point at the origin).
+        The twist just after the blow ``[vx, vy, ω]``.
     t : float
-        Seconds after the blow.
 
     Returns
     -------

@@ -1,12 +1,4 @@
-"""Parts shared by the mechanism pictures (car, slider-crank, trees): forces to scale, ground, scale bar.
-
-Plain functions that add elements to a :class:`~planargeo.draw.picture.Picture`:
-
-* :func:`force` — a force drawn on its line of action with an arrow *to scale*
-  (``scale`` metres per newton), centred on the foot of an anchor;
-* :func:`ground` — a hatched ground line;
-* :func:`scale_bar` — a bar of a round length in the lower left of the view;
-* :func:`label_at` — a placed label at a point of an element already added.
+"""Steps shared by the mechanism pictures (car, slider-crank, trees): forces to scale, ground, scale bar.
 
 Examples
 --------
@@ -41,6 +33,7 @@ def foot_on_line(w, p) -> np.ndarray:
     w : array_like (3,)
         A force with ``fx² + fy² > 0``.
     p : (float, float)
+        The point.
 
     Returns
     -------
@@ -59,16 +52,14 @@ def foot_on_line(w, p) -> np.ndarray:
 
 
 def label_at(pic: Picture, xy, text: str, *, gap: float = 6.0) -> None:
-    """Add a label (moved by the picture's placer) at ``xy`` to the element added last.
+    """Add a label (moved by the picture's placer) ``gap`` pixels from ``xy`` to the element added last.
 
     Parameters
     ----------
     pic : Picture
     xy : (float, float)
-        Data point the label sits next to.
     text : str
     gap : float
-        Pixels from the point.
     """
     x, y = (float(v) for v in xy)
     if text and math.isfinite(x) and math.isfinite(y):
@@ -85,34 +76,22 @@ def force(pic: Picture, id: str, w, *, scale: float, anchor, role: str = "reacti
     Parameters
     ----------
     pic : Picture
-    id : str
-        Stable name.
+    id, role, symbol, desc : str
+        The element's id, style role, thesis symbol and description.
     w : array_like (3,)
         The wrench ``[fx, fy, τ]`` (N, N·m).
     scale : float
         Arrow length per newton (data units).
     anchor : (float, float)
         The arrow sits at this point's foot on the line.
-    role : str
-        Style role.
-    symbol, desc : str
-        Thesis symbol and description.
     label : str, optional
         Text at the arrow (default: the symbol; "" for none).
     reach : float, optional
-        Draw the line of action only ``reach`` data units either side of the foot (default:
-        the whole line across the view).
-    color : str, optional
-    width : float, optional
-        Line width in pixels.
-    dash : list of float, optional
-        Dash pattern of the line of action (pixels).
-    opacity : float
-        Opacity of the whole element (a faded force).
+        The line drawn only ``reach`` either side of the foot (default: across the view).
+    color, width, dash, opacity, z
+        Line colour, width and dash (pixels), the element's opacity and drawing order.
     start : bool
         The arrow starts at the foot (default: it is centred on it).
-    z : int
-        Drawing order.
     label_xy : (float, float), optional
         The label sits at this point's foot on the line (default: the arrow's middle).
 
@@ -157,19 +136,15 @@ def force(pic: Picture, id: str, w, *, scale: float, anchor, role: str = "reacti
 
 def ground(pic: Picture, id: str, xy, *, width: float = 0.9, depth: float = 0.12, n: int = 7,
            desc: str = "the ground", opacity: float = 1.0) -> None:
-    """A ground line of ``width`` centred on ``xy`` with ``n`` hatch strokes below it.
+    """A ground line of ``width`` centred on ``xy`` with ``n`` hatch strokes ``depth`` deep below it.
 
     Parameters
     ----------
     pic : Picture
-    id : str
+    id, desc : str
     xy : (float, float)
-        The middle of the ground line (data units).
     width, depth : float
-        Size of the line and of the hatch (data units).
     n : int
-        Hatch strokes.
-    desc : str
     opacity : float
     """
     x, y = (float(v) for v in xy)
@@ -237,10 +212,8 @@ def side_label(pic: Picture, a, b, text: str, segs, *, gap: float = 5.0) -> None
     ----------
     pic : Picture
     a, b : (float, float)
-        The segment's ends (data units).
     text : str
     segs : array_like (n, 2, 2)
-        Other segments the label keeps away from.
     gap : float
         Pixels from the segment.
     """
@@ -261,10 +234,7 @@ def num(x: float, digits: int = 3, tiny: float = 1e-9) -> str:
 
 
 def where(p, *, far: float = 1e6) -> str:
-    """Where the pole ``p = [vx, vy, w]`` lies, for a description: ``"at (x, y) m"`` or at infinity.
-
-    A pole farther than ``far`` metres (a rate that is round-off) is at infinity, as the
-    picture draws it.
+    """Where the pole ``p = [vx, vy, w]`` lies: ``"at (x, y) m"``, or at infinity beyond ``far`` m.
 
     Parameters
     ----------
@@ -296,7 +266,6 @@ def rate(p, unit: str, *, far: float = 1e6) -> str:
     p : array_like (3,)
     unit : str
     far : float
-        As for :func:`where`.
 
     Returns
     -------
@@ -317,7 +286,6 @@ def nice_length(span: float) -> float:
     Parameters
     ----------
     span : float
-        The length (the view's width) a fifth of which is rounded.
 
     Returns
     -------
@@ -340,11 +308,11 @@ def pole_overlays(pic: Picture, v, a, overlays: dict, bodies, scales=(3.0, 0.3))
     ----------
     pic : Picture
     v, a : array_like (n, 3)
-        Velocity and acceleration twists of the bodies (their poles are drawn).
+        Velocity and acceleration twists of the bodies.
     overlays : dict
         ``{"velocity poles": shown, "acceleration poles": shown}``.
     bodies : sequence of str
-        How each body is named in the descriptions (``"body 1"``, ``"of the crank"``).
+        Each body's name in the descriptions (``"body 1"``, ``"of the crank"``).
     scales : (float, float)
         Glyph scales of the velocity and the acceleration poles.
     """
@@ -370,7 +338,7 @@ def scale_bar(pic: Picture, unit: str = "m") -> float:
     Returns
     -------
     float
-        The bar's length (data units).
+        The bar's length.
     """
     x0, x1, y0, y1 = pic.box
     L = nice_length(x1 - x0)

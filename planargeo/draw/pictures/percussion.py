@@ -1,14 +1,8 @@
-"""The percussion explorer's picture: a body, its inertia, an acceleration pole and its axis of percussion (thesis 5.4).
+"""The percussion explorer's picture: a body, its inertia, a pole and its axis of percussion (thesis 5.4).
 
-What :class:`planargeo.widgets.percussion.PercussionExplorer` shows, built natively:
-
-* the body (a uniform lamina) and the grip at the origin;
-* its inertia ``I`` (5.4), an imaginary conic, drawn as its circle of gyration (radius ``ρ``,
-  1.65) about the centre of mass ``c``;
-* the acceleration pole ``a`` and the axis of percussion ``f = I a`` (5.64), with the
-  construction line from ``a`` through ``c`` and the centre of percussion where the axis
-  crosses it, ``r = ρ²/d`` beyond ``c`` (5.68);
-* driven by an impact, the sweet spot of the grip instead (5.67).
+The inertia ``I`` as its circle of gyration, the pole ``a`` and the axis ``f = I a`` (5.64),
+the line ``a``–``c`` and the centre of percussion ``ρ²/d`` beyond ``c`` (5.68), or the
+grip's sweet spot when driven by an impact (5.67).
 
 Examples
 --------
@@ -50,9 +44,7 @@ def percussion_numbers(st: dict) -> dict:
     Returns
     -------
     dict
-        ``P`` (None when the pole is ideal), ``d`` (``inf`` then), ``rho``, ``mass``,
-        ``r`` and ``spot`` (None when the pole is ideal or at ``c``), ``grip_spot``
-        (None when ``c`` is the grip).
+        ``P``, ``d``, ``rho``, ``mass``, ``r``, ``spot``, ``grip_spot`` (None where undefined).
     """
     I, c, a = st["I"], np.asarray(st["c"], float), np.asarray(st["a"], float)
     rho = float(I.radius_of_gyration)
@@ -78,7 +70,7 @@ def percussion_picture(st: dict, *, impact: bool = False, view, size=(600, 480))
     st : dict
         ``shape`` (shapely polygon), ``I``, ``c``, ``a`` (the pole), ``f`` (the axis of percussion).
     impact : bool
-        Driven by an impact (the sweet spot of the grip is marked) rather than by the pole.
+        Driven by an impact: the grip's sweet spot is marked.
     """
     pic = Picture(view, size=size)
     nums = percussion_numbers(st)

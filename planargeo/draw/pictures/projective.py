@@ -1,17 +1,8 @@
 """The projective playground's picture: a conic, a point and its polar, a line and its pole (thesis 5.2).
 
-What :class:`planargeo.widgets.projective.ProjectiveExplorer` shows, built natively:
-
-* the conic ``C`` (5.35): a real conic as its curve, an inertia (imaginary) as its real
-  stand-in circle, dashed, with its centre;
-* the movable point ``P`` and its polar line ``C P`` (5.36);
-* the movable line ``M`` and its pole ``C⁻¹ M`` (5.37), when asked;
-* the construction of 5.2.2, when asked: from ``P`` outside, the two tangents and their
-  contact points (Fig 5.2); from ``P`` inside, two chords, the tangents at their ends and
-  the two poles where those meet (Fig 5.3).
-
-Ideal elements are ordinary: ``P`` at infinity is an arrow at the edge of the view, its
-polar a diameter; ``M`` the line at infinity is the couple glyph, its pole the centre.
+The conic ``C`` (5.35; an inertia as its dashed real stand-in), ``P`` and its polar ``C P``
+(5.36), ``M`` and its pole ``C⁻¹ M`` (5.37), and the construction of 5.2.2 (Figs 5.2, 5.3).
+Ideal elements are ordinary: ``P`` at infinity is an arrow at the edge of the view.
 
 Examples
 --------
@@ -63,13 +54,10 @@ def projective_picture(st: dict, *, construction: bool = True, line_and_pole: bo
     Parameters
     ----------
     st : dict
-        The state: ``C`` (conic), ``type`` (its class), ``P`` and ``polar``, ``M`` and
-        ``poleM``, and the construction: ``tangents`` and ``contacts`` (P outside) or
-        ``interior`` (P inside, :func:`~planargeo.geometry.conics.polar_construction_interior`).
-    construction : bool
-        Draw the construction of 5.2.2.
-    line_and_pole : bool
-        Draw the line ``M`` and its pole.
+        ``C``, ``type``, ``P``, ``polar``, ``M``, ``poleM``, and ``tangents`` and ``contacts``
+        (P outside) or ``interior`` (:func:`~planargeo.geometry.conics.polar_construction_interior`).
+    construction, line_and_pole : bool
+        Draw the construction of 5.2.2; the line ``M`` and its pole.
     """
     pic = Picture(view, size=size)
     ctype = st["type"]

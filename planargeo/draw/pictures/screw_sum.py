@@ -1,15 +1,7 @@
-"""The screw-sum explorer's picture: two twists (points) or two wrenches (lines) and their sum (thesis 4.2, 4.4).
+"""The screw-sum explorer's picture: two twists (points) or wrenches (lines) and their sum (thesis 4.2, 4.4).
 
-What :class:`planargeo.widgets.screw_sum.ScrewSumExplorer` shows, built natively from a
-twist or wrench addition (:func:`planargeo.screws.twists.add_twists`, ``add_wrenches``):
-
-* twists: the poles ``v₁``, ``v₂`` with their rotation glyphs (a translation's pole is at
-  infinity: an arrow at the edge along the motion), the lever line ``Q₁Q₂`` and the sum's
-  pole ``v₃ = v₁ + v₂`` on it (4.11-4.13), drawn heavier; the terms' labels on one side
-  of the lever line, the sum's on the other;
-* wrenches: the lines of action ``f₁``, ``f₂`` with their senses (a couple is the line
-  at infinity: the couple glyph), their meet ``P`` and the sum's line ``f₃ = f₁ + f₂``
-  through it (4.33), drawn heavier.
+Twists: the poles, the lever line ``Q₁Q₂`` and the sum's pole on it (4.11–4.13); wrenches:
+the lines of action, their meet ``P`` and the sum's line through it (4.33).
 
 Examples
 --------
@@ -62,13 +54,10 @@ def screw_sum_picture(mode: str, c, *, anchors=None, view, size=(560, 500)) -> P
     Parameters
     ----------
     mode : {"twists", "wrenches"}
-        What is added.
     c : Data
-        The construction of :func:`~planargeo.screws.twists.add_twists` (``v1``, ``v2``,
-        ``Q1``, ``Q2``, ``P``, ``line``, ``sum``, ``omega1..3``) or of ``add_wrenches``
-        (``f1``, ``f2``, ``P``, ``L3``, ``sum``, ``F1..3``).
+        :func:`~planargeo.screws.twists.add_twists` or ``add_wrenches``.
     anchors : ((x1, y1), (x2, y2)), optional
-        Wrenches: the points of the force lines where their arrows sit.
+        Wrenches: where the arrows sit on their lines.
     """
     pic = Picture(view, size=size)
     if mode == "twists":

@@ -1,18 +1,8 @@
-"""The picture of the slider-crank (thesis 9.3-9.6, 9.61, Fig 9.3), built natively: links, piston, pin forces.
+"""The slider-crank's picture (thesis 9.3–9.6, 9.61, Fig 9.3): links, piston, pin forces to scale.
 
-From one solved state of the closed loop:
-
-* the ground under the crank pivot, the slide (two dashed lines), the crank ``1``, the
-  rod ``2`` and the piston ``3``, the three pins, the joint angles ``ψ``, ``θ``, ``φ`` (9.6);
-* every pin and bearing force of the loop (9.61): ``f₁`` at the crank pivot, ``f₂`` at
-  the crank pin, ``f₃`` at the wrist pin and ``F₃`` at the slider bearing (9.71), each a
-  stretch of its line of action through (or beside) its joint with an arrow to scale (the
-  largest 2.4 m long) and, when it has a moment about its joint, a dotted lever arm;
-* optionally the velocity poles ``vᵢ`` (4.5) and acceleration poles ``aᵢ`` (4.6);
-* a scale bar, and a banner at a dead centre.
-
-Force labels sit on their lines 0.9 to 1.2 m from their joints, where they are clearest of the links, the joint angles a little way along their links,
-so that the labels spread out instead of piling up at the pins.
+The crank ``1``, rod ``2`` and piston ``3`` on the slide, the joint angles (9.6), the pin and
+bearing forces (9.61, 9.71) with their lever arms, the poles if asked, a scale bar and a
+banner at a dead centre.
 
 Examples
 --------
@@ -87,17 +77,14 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
     ----------
     pose : array_like (3, 3)
         ``[x, y, angle]`` of the crank, rod and piston joints.
-    r, t : float
-        Crank radius and half height of the piston (m).
+    r, t, h : float
+        Crank radius, half height and height of the piston (m).
     q : array_like (3,)
         Joint angles ``ψ, θ, φ`` (rad).
     reactions : dict
-        ``{"f_1", "f_2", "f_3", "F_1": reaction}`` with ``point``, ``wrench`` and ``moment``
-        (:func:`planargeo.scenes.slider_crank.slider_crank_reactions`).
+        ``{"f_1", "f_2", "f_3", "F_1": reaction}`` with ``point``, ``wrench``, ``moment``.
     v, a : array_like (3, 3)
         Velocity and acceleration twists of the three bodies.
-    h : float
-        Height of the piston (m).
     overlays : dict
         ``{"reaction forces", "velocity poles", "acceleration poles": shown}``.
     banner : str

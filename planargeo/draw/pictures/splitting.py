@@ -1,16 +1,8 @@
-"""The picture of the splitting explorer's state: a pinned chain split at a joint, its poles and the split force.
+"""The splitting explorer's picture: a pinned chain split at a joint, its poles and the split force (thesis 7.4–7.6).
 
-What :class:`planargeo.widgets.splitting.SplittingExplorer` shows (thesis 7.4–7.6), from
-one state of :func:`planargeo.scenes.splitting.splitting_state`:
-
-* the constrained chain ``1…i`` and the free-floating chain ``i+1…n`` in two colours,
-  the pins, the ground pin and the split joint ``i+1``;
-* the force of the split joint ``fᵢ₊₁`` (7.56), a line, and the couple ``−fₙ₊₁`` on the
-  tip (7.44), the line at infinity;
-* the acceleration pole of every body ``aⱼ`` (4.6, chain splitting at every joint, 7.6);
-* the centre of ``Λᵢ⁻¹``: where a couple on body ``i`` alone turns it (section 7.5).
-
-A focus on one side fades the other.
+The two sides of the split in two colours, the split joint's force ``fᵢ₊₁`` (7.56), the
+couple ``−fₙ₊₁`` on the tip (7.44), every body's acceleration pole (4.6) and the centre
+of ``Λᵢ⁻¹`` (7.5); a focus on one side fades the other.
 
 Examples
 --------
@@ -61,8 +53,7 @@ def splitting_picture(st: dict, *, view, focus: str = "all", centres: bool = Tru
     Parameters
     ----------
     st : dict
-        :func:`planargeo.scenes.splitting.splitting_state` with ``n`` and ``split`` (0-based
-        index ``i`` of the split joint ``i+1``).
+        :func:`planargeo.scenes.splitting.splitting_state` with ``n`` and ``split`` (0-based).
     focus : {"all", "constrained part", "free-floating part"}
         The side kept bright.
     centres : bool

@@ -1,18 +1,8 @@
-"""The picture of the subspace explorer's state: a body, its joint, ``s, R, T, U`` and the splits of ``f``.
+"""The subspace explorer's picture: a body, its joint, ``s, R, T, U`` and the splits of ``f`` (thesis 6.1–6.4).
 
-What :class:`planargeo.widgets.subspace.SubspaceExplorer` shows (thesis 6.1–6.4,
-6.63–6.97), from one state of :func:`planargeo.scenes.subspace.subspace_state`:
-
-* the body (a bar), its centre of mass ``c`` and its inertia ``I`` (the circle of
-  gyration, 5.4); the joint: a pin, a slide, a pin in a slot or the plane joint (4.79);
-* the motion space ``s`` (points: the poles of the allowed motions, 6.1) and, with the
-  forces, the reaction space ``R`` (lines, ``sᵀR = 0``) and ``T = I s (sᵀIs)⁻¹`` (6.36);
-* with the accelerations, ``U = I⁻¹R (RᵀI⁻¹R)⁻¹`` (points on ``T``, 6.37);
-* the force ``f`` and, as asked, its split ``f = TQ + Rμ`` (6.38) or the split of the
-  free body's acceleration ``I⁻¹f = sψ + Uγ`` (6.44).
-
-Points drawn at one place (``s`` and ``sψ`` of a rotation about the pin, ``U`` and
-``Uγ``...) are one element with a joint label.
+The motion space ``s`` (poles), with the forces the reaction space ``R`` and ``T`` (6.36),
+with the accelerations ``U`` (6.37), and the force ``f`` split as ``TQ + Rμ`` (6.38) or the
+free acceleration as ``sψ + Uγ`` (6.44).  Points drawn at one place are one element.
 
 Examples
 --------
@@ -77,8 +67,7 @@ def subspace_picture(st: dict, *, show: str, m: float, rho: float, view, size=(6
     Parameters
     ----------
     st : dict
-        A state of :func:`planargeo.scenes.subspace.subspace_state` with ``point`` (the
-        joint), ``direction`` (its unit direction) and ``force point``.
+        :func:`planargeo.scenes.subspace.subspace_state` with ``point``, ``direction``, ``force point``.
     show : {"wrench", "twist", "spaces"}
         The split of the force, the split of the free acceleration, or the four spaces.
     m, rho : float

@@ -1,16 +1,7 @@
-"""The picture of the nine-link tree (thesis Fig 9.1) and its closed loops (Fig 9.2), built natively.
+"""The nine-link tree's picture (thesis Fig 9.1) and its closed loops (Fig 9.2): links, pins, forces.
 
-From one solved state:
-
-* the ground under the pivot, the nine links (each labelled with its body number), the
-  joints and, loops closed, the two pins that close them (tips of bodies 4 and 7, 8 and 9);
-* every pin force: the joint wrenches ``f₁ … f₉`` (9.61: the wrench on body ``i`` from its
-  parent, 9.41 for the open tree) and the contact forces ``F₁``, ``F₂`` (9.71), each a
-  stretch of its line of action with an arrow to scale (the largest 0.9 m long);
-* optionally the velocity poles ``vᵢ`` (4.5) and acceleration poles ``aᵢ`` (4.6);
-* a scale bar.
-
-A focus on one force draws it wider and labelled, and fades the other forces.
+The pin forces ``f₁ … f₉`` (9.61, 9.41) and contact forces ``F₁``, ``F₂`` (9.71) to scale,
+the poles if asked, a scale bar; a focus on one force fades the others.
 
 Examples
 --------
@@ -53,7 +44,6 @@ def symbol_of(sym: str) -> str:
     Parameters
     ----------
     sym : str
-        A reaction's symbol as the scene writes it.
 
     Returns
     -------
@@ -79,10 +69,9 @@ def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, f
     tips : array_like (9, 2)
         The far end of each link.
     reactions : sequence
-        The reactions (``symbol`` ``"f_i"`` or ``"F_k"``, ``point``, ``wrench``, ``moment``),
-        :func:`planargeo.scenes.trees.tree_reactions`.
+        :func:`planargeo.scenes.trees.tree_reactions` (``symbol``, ``point``, ``wrench``, ``moment``).
     contacts : sequence of str
-        Names of the loop-closing pins (``"4-7"``, ``"8-9"``), empty for the open tree.
+        Names of the loop-closing pins (``"4-7"``, ``"8-9"``).
     v, a : array_like (9, 3)
         Velocity and acceleration twists of the bodies.
     overlays : dict

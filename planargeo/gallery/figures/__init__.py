@@ -1,12 +1,7 @@
-"""Registry of gallery figures (one function per thesis figure) and what they share.
+"""Registry of gallery figures (one function per thesis figure, :func:`register`) and what they share.
 
-A figure module registers a drawing function ``figC_K(ax)`` with
-:func:`register`: its name is the SVG file stem, its docstring the caption; the
-registered builder makes the figure (:func:`new_figure`), draws on its axes from
-computed quantities and returns it.  :func:`load_all` imports every module
-of :data:`MODULES`; an import error propagates (a figure never silently drops
-out of the gallery).  :func:`chain` and :func:`scene_state` are the models and
-states several figures draw.
+A registered ``figC_K(ax)`` is named like its SVG file and captioned by its docstring;
+:func:`load_all` imports every module of :data:`MODULES` (an import error propagates).
 """
 from __future__ import annotations
 
@@ -32,13 +27,13 @@ class FigureSpec:
     Attributes
     ----------
     name : str
-        The figure's name, also its SVG file's stem (``fig5_6``).
+        The SVG file's stem (``fig5_6``).
     caption : str
-        The caption: the drawing function's docstring, lines joined.
+        The drawing function's docstring, lines joined.
     build : callable
-        ``build() -> matplotlib.figure.Figure``, a new figure drawn.
+        ``build() -> matplotlib.figure.Figure``.
     order : float
-        Its place in the gallery (the thesis figure number, ``5.06`` for Fig. 5.6).
+        Its place in the gallery (``5.06`` for Fig. 5.6).
     """
     name: str
     caption: str
@@ -50,13 +45,7 @@ REGISTRY: dict[str, FigureSpec] = {}
 
 
 def register(order: float, *, height: float = 2.8, **layout):
-    """Decorator: register ``draw(ax)`` as a figure, ``order`` its place in the gallery.
-
-    The function's name is the figure's name (the SVG file stem) and its
-    docstring, its lines joined by spaces, the caption.  The figure's
-    ``build() -> Figure`` makes a one-column figure ``height`` inches tall with
-    :func:`new_figure` (``layout``: its keywords), calls ``draw`` with its axes
-    (an array of axes for several panels) and returns it.
+    """Decorator: register ``draw(ax)``, drawn on a :func:`new_figure`, as the figure named like it.
 
     Parameters
     ----------
@@ -64,8 +53,8 @@ def register(order: float, *, height: float = 2.8, **layout):
         Place in the gallery (thesis figure number, e.g. ``4.07``).
     height : float, optional
         Figure height (inches).
-    **layout : 
-        Keywords of :func:`new_figure` (``nrows``, ``ncols``, ``margins``, ``polar``).
+    **layout :
+        Keywords of :func:`new_figure`.
 
     Returns
     -------
@@ -75,7 +64,7 @@ def register(order: float, *, height: float = 2.8, **layout):
     Raises
     ------
     PlanargeoError
-        If ``draw`` has no docstring (``python -OO`` drops them): no caption.
+        If ``draw`` has no docstring (its caption; ``python -OO`` drops them).
     """
     def deco(draw):
         if not draw.__doc__:
@@ -95,19 +84,12 @@ def register(order: float, *, height: float = 2.8, **layout):
 
 
 def legible_text(fig, min_pt: float = LABEL_PT):
-    """Raise every text of ``fig`` smaller than ``min_pt`` points to ``min_pt`` (one text size).
-
-    The gallery's figures draw with :mod:`planargeo.draw`, whose texts are
-    :data:`~planargeo.draw.style.LABEL_PT`; this catches a text drawn smaller
-    (a helper's own default), so that no text of the gallery is below
-    :data:`~planargeo.draw.style.MIN_TEXT_PX` at the SVG's natural size.
+    """Raise every text of ``fig`` smaller than ``min_pt`` points to ``min_pt``.
 
     Parameters
     ----------
     fig : matplotlib.figure.Figure
-        A drawn figure.
     min_pt : float, optional
-        Smallest font size (points).
 
     Returns
     -------
@@ -125,14 +107,11 @@ def legible_text(fig, min_pt: float = LABEL_PT):
 
 
 def load_all() -> dict[str, FigureSpec]:
-    """Import every figure module; return the registry sorted by thesis order.
-
-    Any import error propagates: a broken figure module fails the gallery loudly.
+    """Import every figure module (errors propagate); return the registry sorted by thesis order.
 
     Returns
     -------
     dict of str to FigureSpec
-        Every figure, in gallery order.
     """
     for mod in MODULES:
         importlib.import_module(f"{__name__}.{mod}")
@@ -140,26 +119,19 @@ def load_all() -> dict[str, FigureSpec]:
 
 
 def new_figure(height=2.8, *, nrows=1, ncols=1, margins=None, polar=None, **kw):
-    """A figure one column wide and ``height`` inches tall, and its axes.
-
-    By default ``nrows × ncols`` equal-aspect, axis-free panels filling the
-    figure; with ``margins = (left, right, bottom, top)`` chart axes inside
-    those figure fractions; with ``polar = [left, bottom, width, height]`` one
-    polar axes there.  ``kw`` go to :func:`matplotlib.pyplot.subplots`.
-    Returns ``(fig, ax)``, or ``(fig, axs)`` (flat) for several panels.
+    """A figure one column wide and ``height`` inches tall, and its axes (equal-aspect, axis-free panels).
 
     Parameters
     ----------
     height : float, optional
-        Height (inches); the width is one column.
     nrows, ncols : int, optional
         Panel grid.
     margins : tuple of 4 float, optional
         ``(left, right, bottom, top)`` figure fractions for chart axes.
     polar : sequence of 4 float, optional
         ``[left, bottom, width, height]`` of one polar axes.
-    **kw : 
-        More keywords for :func:`matplotlib.pyplot.subplots`.
+    **kw :
+        Keywords of :func:`matplotlib.pyplot.subplots`.
 
     Returns
     -------
@@ -185,25 +157,18 @@ def new_figure(height=2.8, *, nrows=1, ncols=1, margins=None, polar=None, **kw):
 def chain(n: int, *, base: str = "revolute", gravity=(0.0, 0.0), tip_com: float = 0.5) -> Model:
     """``n`` unit links (mass 1, centre of mass 0.5 along the link, 1/12 about it) named 1…n.
 
-    Joint 1 (kind ``base``) sits at the origin, joint ``i`` (revolute) 1 along
-    link ``i − 1``; the last link's centre of mass is at ``tip_com`` (it is
-    drawn ``2 tip_com`` long).
-
     Parameters
     ----------
     n : int
-        Number of links.
     base : str, optional
-        Kind of joint 1.
+        Kind of joint 1 (at the origin; the others are revolute).
     gravity : array_like, shape (2,), optional
-        Gravity (m/s²).
     tip_com : float, optional
         Centre of mass of the last link along it (m).
 
     Returns
     -------
     Model
-        The chain.
     """
     bodies = [Body(1.0, (0.5 if i < n - 1 else tip_com, 0.0), 1.0 / 12, name=str(i + 1))
               for i in range(n)]
@@ -218,9 +183,7 @@ def scene_state(name: str, **params):
     Parameters
     ----------
     name : str
-        Scene name.
-    **params : 
-        Scene parameters.
+    **params :
 
     Returns
     -------
