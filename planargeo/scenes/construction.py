@@ -1,12 +1,10 @@
 """Chapter 4's constructions as step-by-step protocols (thesis 4.2–4.7, 4.10–4.57).
 
-A *construction* takes a few numbers (poles, rates, forces, a joint, an inertia)
-and returns the ordered steps by which the thesis builds its figure: each step
-names what it adds, the equation it uses, and the elements it draws (points,
-lines, segments, a conic) in the package's homogeneous coordinates, plus the
-numbers a reader checks by hand.  Nothing here draws: the
-:class:`~planargeo.widgets.construction.ConstructionExplorer` shows one step at a
-time, the tests compare the numbers with hand derivations.
+A *construction* takes a few numbers and returns the ordered steps by which the thesis builds
+its figure: what each step adds, the equation it uses, the elements it draws (homogeneous
+points, lines, segments, a conic) and the numbers a reader checks by hand.  Nothing here draws
+(:class:`~planargeo.widgets.construction.ConstructionExplorer` does).  Special cases (a pole at
+infinity, parallel lines, a couple) are ordinary values, named in the caption (10.2.4).
 
 =================  ============================================================  ============
 kind               what is constructed                                           thesis
@@ -18,10 +16,6 @@ kind               what is constructed                                          
 ``newton_euler``   ``fⁿᵉᵗ = I a + p`` and the joint torque as ``ρ = τ/|fⁿᵉᵗ|``   4.55–4.57
 ``through_inf…``   a pole dragged through infinity (``through_infinity``)        10.2.4
 =================  ============================================================  ============
-
-Special cases are ordinary values (thesis 10.2.4): a sum whose pole is at
-infinity, parallel force lines meeting at infinity, a couple on the line at
-infinity; the step's caption names the case (:mod:`planargeo.screws.special`).
 
 Examples
 --------
@@ -60,13 +54,12 @@ class Element:
     name : str
         Identifier, unique within a construction (e.g. ``"Q1"``).
     kind : {"point", "line", "segment", "conic"}
-        A homogeneous point (3,), a homogeneous line (3,), a Euclidean segment
-        (2, 2) or a conic (3, 3).
+        A homogeneous point or line (3,), a Euclidean segment (2, 2) or a conic (3, 3).
     value : ndarray
     role : str
-        Style role (:mod:`planargeo.draw.style`), e.g. ``"twist"``, ``"wrench"``.
+        Style role (:mod:`planargeo.draw.style`), e.g. ``"twist"``.
     label : str
-        The thesis symbol (matplotlib mathtext), "" for none.
+        The thesis symbol (mathtext), "" for none.
     emphasis : bool
         A sum (drawn heavier).
     """
@@ -88,12 +81,11 @@ class ConstructionStep:
     id : str
         Short identifier (also the SVG layer id, prefixed ``step-``).
     title : str
-        What the step constructs, with its numbers (unicode, one line).
+        What the step constructs, with its numbers (one line).
     equation : str
         The thesis equation(s) used, e.g. ``"4.12–4.13"``.
     elements : tuple of Element
-        What the step adds to the drawing (possibly nothing: a step that only
-        computes a number).
+        What the step adds to the drawing (possibly nothing).
     """
 
     id: str
@@ -165,10 +157,7 @@ def _seg(name, p, q, role="construct", label="") -> Element:
 
 
 def _xy_or_inf(p) -> Any:
-    """``(x, y)`` of a finite point; the words "at infinity (direction (dx, dy))" for an ideal one.
-
-    Ideal-ness is the package's exact test (:func:`~planargeo.geometry.projective.is_ideal`).
-    """
+    """``(x, y)`` of a finite point; "at infinity (direction (dx, dy))" for an ideal one (:func:`is_ideal`)."""
     p = np.asarray(p, float)
     if bool(is_ideal(p)):
         d = direction(p)
@@ -217,14 +206,18 @@ def _wrench(x, y, F, angle, tau, k) -> np.ndarray:
     return _nonzero(np.array([d[0], d[1], x * d[1] - y * d[0] + tau]), f"f{k}", "wrench")
 
 
+def _operands(id_, title, eq, element, name, a, b, role, sym) -> ConstructionStep:
+    """The first step of a sum: its two operands ``a``, ``b`` drawn as ``element`` (:func:`_pt`, :func:`_ln`)."""
+    return ConstructionStep(id_, title, eq, (element(f"{name}1", a, role, f"${sym}_1$"),
+                                             element(f"{name}2", b, role, f"${sym}_2$")))
+
+
 # --------------------------------------------------------------------------- twist sum (4.2)
 def _twist_sum(x1=-1.5, y1=0.0, w1=1.0, u1=0.0, angle1=0.0,
                x2=1.5, y2=0.5, w2=2.0, u2=0.0, angle2=90.0) -> Construction:
     v1, v2 = _twist(x1, y1, w1, u1, angle1, 1), _twist(x2, y2, w2, u2, angle2, 2)
-    c = add_twists(v1, v2)
-    case = twists_case(v1, v2)
-    steps = [ConstructionStep("poles", "Q₁, Q₂: the poles of v₁ and v₂", "4.10",
-                              (_pt("Q1", v1, "twist", "$v_1$"), _pt("Q2", v2, "twist", "$v_2$")))]
+    c, case = add_twists(v1, v2), twists_case(v1, v2)
+    steps = [_operands("poles", "Q₁, Q₂: the poles of v₁ and v₂", "4.10", _pt, "Q", v1, v2, "twist", "v")]
     if c.line is None:
         steps.append(ConstructionStep("lever", "Q₁ = Q₂: one pole, every line through it is a lever",
                                       "4.11"))
@@ -258,10 +251,9 @@ def _twist_sum(x1=-1.5, y1=0.0, w1=1.0, u1=0.0, angle1=0.0,
 def _wrench_sum(x1=-1.5, y1=-0.5, F1=1.0, angle1=60.0, tau1=0.0,
                 x2=1.5, y2=0.0, F2=1.5, angle2=120.0, tau2=0.0) -> Construction:
     f1, f2 = _wrench(x1, y1, F1, angle1, tau1, 1), _wrench(x2, y2, F2, angle2, tau2, 2)
-    c = add_wrenches(f1, f2)
-    case = wrenches_case(f1, f2)
-    steps = [ConstructionStep("lines", "L₁, L₂: the lines of action of f₁ and f₂", "4.27",
-                              (_ln("f1", f1, "wrench", "$f_1$"), _ln("f2", f2, "wrench", "$f_2$")))]
+    c, case = add_wrenches(f1, f2), wrenches_case(f1, f2)
+    steps = [_operands("lines", "L₁, L₂: the lines of action of f₁ and f₂", "4.27", _ln, "f", f1, f2,
+                       "wrench", "f")]
     if c.P is None:
         steps.append(ConstructionStep("meet", "two couples: no finite line to meet", "4.46"))
     elif case.name == "same_line":
@@ -544,20 +536,15 @@ def construct(kind: str, **params) -> Construction:
     Raises
     ------
     InputError
-        An unknown kind or parameter, a non-finite value, or inputs that make
-        a zero twist or wrench (which has no pole or line), named.
+        An unknown kind or parameter, a non-finite value, or a zero twist or wrench (named).
     PlanargeoError
-        Any other value the geometry refuses (named by the function that refused).
+        Any other value the geometry refuses.
 
     Examples
     --------
     >>> c = construct("velocity", xv=0.0, yv=0.0, w=1.0, xj=3.0, yj=0.0, qd=2.0)
     >>> c.values["pole of vᵢ"]                     # β k = 2/3 · 3 along the lever (4.48)
     (2.0, 0.0)
-    >>> construct("twist_sum", w2=0.0, u2=0.0)
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.InputError: v2 must be non-zero: with these values it is the zero twist (no pole)
     """
     defaults = parameters(kind)
     unknown = sorted(set(params) - set(defaults))
