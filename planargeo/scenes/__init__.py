@@ -1,12 +1,7 @@
-"""Named scenes: functions from named parameters (with defaults) to a model and state.
+"""Named scenes: functions from keyword parameters (each with a default) to a :class:`SceneResult`.
 
-Each scene module registers itself with :func:`register`.  A scene function
-takes keyword parameters only (each with a default) and returns a
-:class:`SceneResult`; drawings, widgets and ``planargeo report`` all use them.
-
->>> from planargeo import scenes
->>> sorted(scenes.names())  # doctest: +SKIP
-['car', 'chain', ...]
+Each scene module registers itself with :func:`register`; drawings, widgets and ``planargeo
+report`` all build scenes by name.
 """
 from __future__ import annotations
 
@@ -28,15 +23,15 @@ __all__ = ["SceneResult", "register", "get", "names", "parameters", "limits", "b
 
 
 class SceneNonFiniteError(SceneError, NonFiniteError):
-    """A scene parameter is NaN or infinite (both a :class:`SceneError` and a :class:`NonFiniteError`)."""
+    """A scene parameter is NaN or infinite."""
 
 
 class SceneShapeError(SceneError, ShapeError):
-    """A scalar scene parameter was given as an array (both a :class:`SceneError` and a :class:`ShapeError`)."""
+    """A scalar scene parameter was given as an array."""
 
 
 class SceneSizeError(SceneError, SizeLimitError):
-    """A size parameter past the scene's limit (both a :class:`SceneError` and a :class:`SizeLimitError`)."""
+    """A size parameter past the scene's limit."""
 
 
 class SceneRangeError(SceneError, NumericOverflowError):
@@ -71,14 +66,13 @@ class SceneResult:
     name : str
         Registered scene name, e.g. ``"slider-crank"``.
     params : dict
-        Every parameter with the value used (defaults filled in).
+        Every parameter with the value used.
     model : object or None
-        The frozen mechanism description (``planargeo.mechanics.model.Model``), if the scene has one.
+        The mechanism (``planargeo.mechanics.model.Model``), if the scene has one.
     state : dict
-        The state used: plain numbers / lists (e.g. ``q``, ``qd``, ``tau``).
+        The state used, plain numbers and lists (``q``, ``qd``, ``tau``...).
     quantities : dict
-        Every solved output, as plain numbers / nested lists, thesis ordering,
-        expressed at the global origin.
+        Every solved output, plain, thesis ordering, at the global origin.
     extra : dict
         Anything else a drawing may want (numpy arrays allowed).
     """
@@ -94,16 +88,13 @@ class SceneResult:
 def register(name: str, limits: dict[str, tuple[int, str]] | None = None):
     """Decorator registering a scene function under ``name``.
 
-    ``limits`` maps a size parameter (a positive integer such as a number of links) to its
-    largest value and what that costs, e.g. ``{"n": (200, "about 0.5 s")}``: :func:`build`
-    refuses larger values unless asked with ``allow_big=True``.
-
     Parameters
     ----------
     name : str
         The scene's name.
     limits : dict, optional
-        ``{parameter: (largest value, cost)}``.
+        ``{size parameter: (largest value, what that costs)}``, e.g. ``{"n": (200, "about 0.5 s")}``:
+        :func:`build` refuses larger values unless ``allow_big=True``.
 
     Returns
     -------
@@ -131,12 +122,11 @@ def _load() -> None:
 
 
 def names() -> list[str]:
-    """Registered scene names.
+    """Registered scene names, in registration order.
 
     Returns
     -------
     list of str
-        In registration order.
 
     Examples
     --------
@@ -148,7 +138,7 @@ def names() -> list[str]:
 
 
 def get(name: str) -> Callable[..., SceneResult]:
-    """The scene function registered as ``name``; :class:`SceneError` if unknown.
+    """The scene function registered as ``name``.
 
     Parameters
     ----------
@@ -158,17 +148,11 @@ def get(name: str) -> Callable[..., SceneResult]:
     Returns
     -------
     callable
-        The scene function.
 
     Raises
     ------
     SceneError
         If ``name`` is not registered.
-
-    Examples
-    --------
-    >>> get("two-body").__name__
-    'two_body'
     """
     _load()
     try:
@@ -183,7 +167,7 @@ def parameters(name: str) -> dict[str, Any]:
     Parameters
     ----------
     name : str
-        A registered scene name; an unknown one raises :class:`SceneError`, as in :func:`get`.
+        A registered scene name (else :class:`SceneError`, as in :func:`get`).
 
     Returns
     -------
@@ -205,16 +189,15 @@ def limits(name: str) -> dict[str, int]:
     Parameters
     ----------
     name : str
-        A registered scene name, as for :func:`parameters`.
+        A registered scene name.
 
     Returns
     -------
     dict of str to int
-        ``{parameter: largest value}``; empty for a scene without limits.
+        Empty for a scene without limits.
 
     Examples
     --------
-
     >>> limits("chain")
     {'n': 200}
     """
@@ -237,15 +220,15 @@ def build(name: str, *, allow_big: bool = False, **params) -> SceneResult:
     Returns
     -------
     SceneResult
-        The scene's parameters, model, state, solved quantities and extras.
 
     Raises
     ------
     SceneError
-        An unknown parameter, or a value the scene refuses (its own checks).
+        An unknown parameter, or a value the scene refuses.
     SceneSizeError
-        A size parameter past its limit (a chain of 10⁶ links) without ``allow_big``: the
-        message states the limit and what the limit costs, instead of running for hours.
+        A size past its limit without ``allow_big`` (the message states the limit and its cost).
+    SceneRangeError
+        Results beyond double precision (the message names the parameters responsible).
 
     Examples
     --------
@@ -313,7 +296,6 @@ def plain(x) -> list | float | None:
     Returns
     -------
     list, float or None
-        Nested lists of floats (a float for a scalar).
 
     Examples
     --------
@@ -334,7 +316,7 @@ def non_finite(result: SceneResult) -> list[str]:
     Returns
     -------
     list of str
-        The offending names; empty when all is finite.
+        Empty when all is finite.
 
     Examples
     --------
@@ -360,14 +342,12 @@ def check_param(name: str, value: Any, kind: str = "float", *, positive: bool = 
     Parameters
     ----------
     name : str
-        The parameter's name (used in the message).
+        The parameter's name.
     value : object
         The value given.
     kind : {"float", "int", "choice"}
-        ``"float"``: a finite real number (not a bool, not a string, not an
-        array), returned as ``float``.  ``"int"``: an integer (not a bool; a
-        float with an integral value is accepted), returned as ``int``.
-        ``"choice"``: one of ``choices``, returned unchanged.
+        A finite real number (not a bool, str or array), returned as float; an integer (a float
+        with an integral value is accepted), returned as int; or one of ``choices``, unchanged.
     positive, nonnegative, nonzero : bool
         Further conditions on a number.
     choices : sequence of str
@@ -382,25 +362,15 @@ def check_param(name: str, value: Any, kind: str = "float", *, positive: bool = 
     Raises
     ------
     SceneError
-        Wrong type, out of range or not one of ``choices``;
-        :class:`SceneNonFiniteError` for NaN / inf and :class:`SceneShapeError`
-        for an array (subclasses of ``SceneError``).
+        Wrong type, out of range or not one of ``choices``; :class:`SceneNonFiniteError` for NaN or
+        inf and :class:`SceneShapeError` for an array.
     InputError
-        ``kind`` is not one of ``"float"``, ``"int"``, ``"choice"`` (a mistake
-        in the scene module, not in the user's parameters).
+        ``kind`` is not one of the three (a mistake in the scene module).
 
     Examples
     --------
     >>> check_param("m", 2, positive=True), check_param("n", 3.0, "int", positive=True)
     (2.0, 3)
-    >>> check_param("psidot", float("nan"))
-    Traceback (most recent call last):
-    ...
-    planargeo.scenes.SceneNonFiniteError: psidot must be finite, got nan
-    >>> check_param("seed", -1, "int", nonnegative=True, optional=True)
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.SceneError: seed must be a non-negative integer, got -1
     >>> check_param("n", True, "int", positive=True)
     Traceback (most recent call last):
     ...
