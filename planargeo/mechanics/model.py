@@ -1,48 +1,26 @@
-"""Frozen mechanism descriptions: :class:`Body`, :class:`Joint`, :class:`Model`.
+"""Frozen mechanism descriptions :class:`Body`, :class:`Joint`, :class:`Model`, and the per-state :class:`Data`.
 
-A :class:`Model` is a tree of rigid bodies connected to the ground (and to
-each other) by joints.  Body ``i`` hangs from ``parents[i]`` (``-1`` is the
-ground) through ``joints[i]``; parents always come before their children, so
-``parents[i] < i``.  Everything is validated up front: a model that exists is
-a model every algorithm can run on.
+A :class:`Model` is a tree: body ``i`` hangs from ``parents[i] < i`` (``-1`` the ground) through
+``joints[i]``; everything is validated up front, so every algorithm runs on any model that
+exists.  ``Joint.placement = (x, y, theta)`` is the joint frame's pose in the parent's frame (the
+world's for the ground); :class:`Body` mass properties are in the body frame.  The joint moves
+the body frame relative to the joint frame (thesis chapter 2):
 
-Frames (thesis Chapter 2, planar):
+============================  ====  =================================================
+kind                          dofs  body frame = joint frame ...
+============================  ====  =================================================
+``"revolute"``                1     rotated by ``q`` about its origin (CCW positive)
+``"prismatic"``               1     slid by ``q`` along its x axis
+``"revolute_prismatic"``      2     slid by ``q[0]`` along x, then rotated by ``q[1]``
+                                    about the slid origin (thesis 2.6-2.8)
+``"twin_prismatic"``          2     slid by ``(q[0], q[1])`` along (x, y), not rotated
+                                    (thesis 4.79)
+``"plane"``                   3     slid by ``(q[0], q[1])`` along (x, y), then
+                                    rotated by ``q[2]`` (a free body)
+``"fixed"``                   0     unchanged (a weld)
+============================  ====  =================================================
 
-* ``Joint.placement = (x, y, theta)`` is the pose of the *joint frame* in the
-  parent body's frame (in the world frame when the parent is the ground).
-* The joint moves the body frame relative to the joint frame:
-
-  ============================  ====  =================================================
-  kind                          dofs  body frame = joint frame ...
-  ============================  ====  =================================================
-  ``"revolute"``                1     rotated by ``q`` about its origin (CCW positive)
-  ``"prismatic"``               1     slid by ``q`` along its x axis
-  ``"revolute_prismatic"``      2     slid by ``q[0]`` along x, then rotated by ``q[1]``
-                                      about the slid origin (thesis 2.6-2.8)
-  ``"twin_prismatic"``          2     slid by ``(q[0], q[1])`` along (x, y), not rotated
-                                      (thesis 4.8.4, 4.79: ``s`` = the first two
-                                      columns of ``"plane"``, ``R`` = the line at
-                                      infinity)
-  ``"plane"``                   3     slid by ``(q[0], q[1])`` along (x, y), then
-                                      rotated by ``q[2]`` (a free body)
-  ``"fixed"``                   0     unchanged (a weld)
-  ============================  ====  =================================================
-
-* :class:`Body` mass properties (``com``, ``inertia`` about the com, ``shape``)
-  are given in the body frame.
-
-The per-state workspace (world-frame poses, joint axes ``s_i``, inertias
-``I_i``, twists ``v_i``, bias terms ``kappa_i``, ``p_i``, and everything the
-recursive algorithms add) is a :class:`Data`, filled by
-:func:`planargeo.mechanics.kinematics.kinematics`.
-
-Examples
---------
->>> m = chain_model(2)              # double pendulum of unit links
->>> m.nq, m.parents
-(2, (-1, 0))
->>> m.q_slice(1)
-slice(1, 2, None)
+:func:`planargeo.mechanics.kinematics.kinematics` fills a :class:`Data` for a state.
 """
 from __future__ import annotations
 
@@ -53,8 +31,9 @@ from typing import Any
 
 import numpy as np
 
-from planargeo._validate import as_array, as_scalar, as_xy
+from planargeo._validate import as_array, as_scalar, check_positive
 from planargeo.errors import CyclicTopologyError, InputError, ShapeError, TopologyError
+from planargeo.geometry._docs import entries
 
 __all__ = ["Body", "Joint", "Model", "Data", "JOINT_DOFS", "MAX_BODIES", "chain_model", "random_model"]
 
@@ -68,12 +47,29 @@ JOINT_DOFS: dict[str, int] = {
     "fixed": 0,
 }
 
+#: Docstring entries shared here (:func:`planargeo.geometry._docs.entries`).
+_documented = entries({
+    "i": "Parameters\n----------\ni : int\n    Body (joint) index.",
+    "gravity": "gravity : array_like, shape (2,)\n    Gravitational acceleration ``(gx, gy)`` (m/s²).",
+    "allow_large": "allow_large : bool, optional\n    Lift the :data:`MAX_BODIES` limit.",
+})
+
 
 def _finite_tuple(x, name: str, n: int) -> tuple[float, ...]:
     a = as_array(x, name, (n,))
     if a.ndim != 1:
         raise ShapeError(f"{name} must have shape ({n},), got shape {a.shape}")
     return tuple(float(v) for v in a)
+
+
+def _positive(x, name: str, strict: bool = True) -> float:
+    """A scalar argument, positive (non-negative unless ``strict``), as a float."""
+    return float(check_positive(as_scalar(x, name), name, strict=strict))
+
+
+def _check_name(name) -> None:
+    if not isinstance(name, str):
+        raise InputError(f"name must be a string, got {name!r}")
 
 
 @dataclass(frozen=True)
@@ -87,8 +83,7 @@ class Body:
     com : (float, float)
         Centre of mass in the body frame.
     inertia : float
-        Rotational inertia about the centre of mass, ``J = m rho^2 >= 0``
-        (0 is a point mass).
+        Rotational inertia about the centre of mass, ``J = m rho^2 >= 0`` (0: a point mass).
     shape : shapely geometry or None
         Outline in the body frame, for drawings only.
     name : str
@@ -96,15 +91,10 @@ class Body:
 
     Examples
     --------
-    >>> b = Body(2.0, com=(0.5, 0.0), inertia=1 / 6)
-    >>> b.spatial_inertia()      # at the body-frame origin (thesis 5.64)
+    >>> Body(2.0, com=(0.5, 0.0), inertia=1 / 6).spatial_inertia()      # at the body-frame origin (thesis 5.64)
     array([[2.        , 0.        , 0.        ],
            [0.        , 2.        , 1.        ],
            [0.        , 1.        , 0.66666667]])
-    >>> Body(-1.0)
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.InputError: mass must be positive, got -1.0
     """
 
     mass: float
@@ -114,17 +104,10 @@ class Body:
     name: str = ""
 
     def __post_init__(self):
-        m = as_scalar(self.mass, "mass")
-        if not m > 0:
-            raise InputError(f"mass must be positive, got {m!r}")
-        J = as_scalar(self.inertia, "inertia")
-        if J < 0:
-            raise InputError(f"inertia must be non-negative, got {J!r}")
-        object.__setattr__(self, "mass", m)
-        object.__setattr__(self, "inertia", J)
+        object.__setattr__(self, "mass", _positive(self.mass, "mass"))
+        object.__setattr__(self, "inertia", _positive(self.inertia, "inertia", strict=False))
         object.__setattr__(self, "com", _finite_tuple(self.com, "com", 2))
-        if not isinstance(self.name, str):
-            raise InputError(f"name must be a string, got {self.name!r}")
+        _check_name(self.name)
 
     def spatial_inertia(self) -> np.ndarray:
         """The 3×3 inertia at the body-frame origin (thesis 4.58, 5.64).
@@ -133,13 +116,6 @@ class Body:
         -------
         numpy.ndarray, shape (3, 3)
             ``inertia_matrix(mass, com, inertia)``.
-
-        Examples
-        --------
-        >>> Body(2.0, (1.0, 0.0), 0.5).spatial_inertia()      # J + m |c|² = 0.5 + 2
-        array([[2. , 0. , 0. ],
-               [0. , 2. , 2. ],
-               [0. , 2. , 2.5]])
         """
         from planargeo.screws.twists import inertia_matrix
 
@@ -153,24 +129,16 @@ class Joint:
     Parameters
     ----------
     kind : str
-        One of ``"revolute"``, ``"prismatic"``, ``"revolute_prismatic"``,
-        ``"twin_prismatic"``, ``"plane"``, ``"fixed"`` (see the module docstring).
+        One of :data:`JOINT_DOFS` (see the module docstring).
     placement : (x, y, theta)
-        Pose of the joint frame in the parent body's frame (world frame when
-        the parent is the ground).
+        Pose of the joint frame in the parent body's frame (world frame for the ground).
     name : str
         A label for drawings and messages.
 
     Examples
     --------
-    >>> Joint("revolute", (1.0, 0.0, 0.0)).dofs
-    1
     >>> Joint("twin_prismatic").dofs              # thesis 4.79: translations along x and y
     2
-    >>> Joint("hinge")
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.InputError: kind must be one of ['revolute', 'prismatic', 'revolute_prismatic', 'twin_prismatic', 'plane', 'fixed'], got 'hinge'
     """
 
     kind: str
@@ -181,8 +149,7 @@ class Joint:
         if not isinstance(self.kind, str) or self.kind not in JOINT_DOFS:
             raise InputError(f"kind must be one of {list(JOINT_DOFS)}, got {self.kind!r}")
         object.__setattr__(self, "placement", _finite_tuple(self.placement, "placement", 3))
-        if not isinstance(self.name, str):
-            raise InputError(f"name must be a string, got {self.name!r}")
+        _check_name(self.name)
 
     @property
     def dofs(self) -> int:
@@ -207,18 +174,8 @@ def _find_cycle(ps) -> tuple[int, ...]:
 def _cycle_error(ps, cycle, message: str | None = None) -> CyclicTopologyError:
     """The :class:`~planargeo.errors.CyclicTopologyError` of a parent list with a ``cycle``.
 
-    ``1 - C`` (thesis 9.12) is exactly singular: the cycle's indicator ``e``
-    has ``eᵀ (1 - C) = 0`` (checked here in exact 0/1 arithmetic), so its
-    condition number is ``inf``.  ``message`` replaces the default text
-    (the bodies of the cycle and the parents).
-
-    Examples
-    --------
-    >>> e = _cycle_error([1, 2, 0], (0, 1, 2))
-    >>> e.cond, e.cycle
-    (inf, (0, 1, 2))
-    >>> str(e)
-    'parents contain a cycle through bodies 0 -> 1 -> 2 -> 0 (parents=[1, 2, 0]) (condition number of 1 - C: inf)'
+    ``1 - C`` (thesis 9.12) is exactly singular (``eᵀ (1 - C) = 0`` for the cycle's indicator
+    ``e``, checked in exact 0/1 arithmetic): ``cond = inf``.  ``message`` replaces the default text.
     """
     ps = [int(p) for p in ps]
     n = len(ps)
@@ -263,6 +220,7 @@ def _check_parents(parents, n: int) -> tuple[int, ...]:
     return tuple(ps)
 
 
+@_documented
 @dataclass(frozen=True)
 class Model:
     """A tree of rigid bodies (frozen, validated).
@@ -275,8 +233,7 @@ class Model:
         ``joints[i]`` connects body ``i`` to ``parents[i]``.
     parents : sequence of int
         ``parents[i]`` is ``-1`` (ground) or a body index ``< i``.
-    gravity : (gx, gy)
-        Gravitational acceleration; it acts on each body at its centre of mass.
+    {gravity}
     contacts : tuple
         Contact / loop-closure descriptions (used by :mod:`planargeo.mechanics.contacts`).
 
@@ -291,9 +248,6 @@ class Model:
 
     Examples
     --------
-    >>> m = Model([Body(1.0)], [Joint("plane")], [-1])
-    >>> m.nq, m.q_slice(0)
-    (3, slice(0, 3, None))
     >>> Model([Body(1.0), Body(1.0)], [Joint("revolute")] * 2, [1, 0])
     Traceback (most recent call last):
     ...
@@ -314,18 +268,16 @@ class Model:
     def __post_init__(self):
         bodies = tuple(self.bodies)
         joints = tuple(self.joints)
-        for i, b in enumerate(bodies):
-            if not isinstance(b, Body):
-                raise InputError(f"bodies[{i}] must be a Body, got {type(b).__name__}")
-        for i, j in enumerate(joints):
-            if not isinstance(j, Joint):
-                raise InputError(f"joints[{i}] must be a Joint, got {type(j).__name__}")
+        for what, items, cls in (("bodies", bodies, Body), ("joints", joints, Joint)):
+            for i, x in enumerate(items):
+                if not isinstance(x, cls):
+                    raise InputError(f"{what}[{i}] must be a {cls.__name__}, got {type(x).__name__}")
         if len(bodies) == 0:
             raise InputError("bodies must not be empty")
         if len(joints) != len(bodies):
             raise InputError(f"joints must have one entry per body ({len(bodies)}), got {len(joints)}")
         parents = _check_parents(self.parents, len(bodies))
-        g = _finite_tuple(as_xy(self.gravity, "gravity"), "gravity", 2)
+        g = _finite_tuple(self.gravity, "gravity", 2)
         object.__setattr__(self, "bodies", bodies)
         object.__setattr__(self, "joints", joints)
         object.__setattr__(self, "parents", parents)
@@ -340,18 +292,15 @@ class Model:
         object.__setattr__(self, "_arrays", {})
 
     # -- structure -------------------------------------------------------
+    @_documented
     def q_slice(self, i: int) -> slice:
         """Slice of ``q`` holding joint ``i``'s coordinates.
 
-        Parameters
-        ----------
-        i : int
-            Body (joint) index.
+        {i}
 
         Returns
         -------
         slice
-            Its coordinates in ``q``.
 
         Raises
         ------
@@ -369,7 +318,7 @@ class Model:
         return slice(self.q_offsets[i], self.q_offsets[i + 1])
 
     def children(self, i: int) -> tuple[int, ...]:
-        """Bodies whose parent is ``i`` (``-1``: bodies on the ground).
+        """Bodies whose parent is ``i`` (``-1``: bodies on the ground), in order.
 
         Parameters
         ----------
@@ -379,7 +328,6 @@ class Model:
         Returns
         -------
         tuple of int
-            The children's indices, in order.
 
         Examples
         --------
@@ -389,18 +337,15 @@ class Model:
         """
         return tuple(k for k, p in enumerate(self.parents) if p == i)
 
+    @_documented
     def ancestors(self, i: int) -> tuple[int, ...]:
         """Bodies on the path from the ground to ``i`` (inclusive), root first.
 
-        Parameters
-        ----------
-        i : int
-            Body index.
+        {i}
 
         Returns
         -------
         tuple of int
-            The path, root first, ``i`` last.
 
         Examples
         --------
@@ -430,12 +375,7 @@ class Model:
         Returns
         -------
         dict of str to numpy.ndarray
-            The cached arrays (read-only).
-
-        Examples
-        --------
-        >>> sorted(chain_model(3).arrays())
-        ['J', 'com', 'mass', 'parents', 'placement']
+            ``mass``, ``com``, ``J``, ``placement``, ``parents``.
         """
         a = self._arrays
         if "mass" not in a:
@@ -454,7 +394,6 @@ class Model:
         Returns
         -------
         numpy.ndarray of bool, shape (N, nq)
-            The mask.
 
         Examples
         --------
@@ -474,23 +413,17 @@ class Model:
             a["ancestor_mask"] = mask
         return a["ancestor_mask"]
 
+    @_documented
     def with_gravity(self, gravity) -> "Model":
         """A copy with another gravity vector.
 
         Parameters
         ----------
-        gravity : array_like, shape (2,)
-            Gravitational acceleration ``(gx, gy)`` (m/s²).
+        {gravity}
 
         Returns
         -------
         Model
-            The copy.
-
-        Examples
-        --------
-        >>> chain_model(3).with_gravity((0.0, 0.0)).gravity
-        (0.0, 0.0)
         """
         return Model(self.bodies, self.joints, self.parents, gravity, self.contacts)
 
@@ -515,8 +448,7 @@ class Data:
     origin : ndarray (..., N, 2)
         World position of each joint frame's origin (before the joint motion).
     S : ndarray (..., 3, nq)
-        All joint axes side by side, ``S[..., :, q_slice(i)] = s_i`` (thesis
-        Remark 8: the chain's Jacobian).
+        All joint axes side by side, ``S[..., :, q_slice(i)] = s_i`` (thesis Remark 8).
     I : ndarray (..., N, 3, 3)
         Spatial inertias at the origin (thesis 4.58).
     v : ndarray (..., N, 3)
@@ -539,39 +471,27 @@ class Data:
     def __init__(self, model: Model):
         self.model = model
 
+    @_documented
     def s(self, i: int) -> np.ndarray:
         """Joint ``i``'s world-frame motion space, shape (..., 3, k).
 
-        Parameters
-        ----------
-        i : int
-            Body (joint) index.
+        {i}
 
         Returns
         -------
         numpy.ndarray, shape (..., 3, k)
-            The joint's world motion space.
-
-        Examples
-        --------
-        >>> from planargeo.mechanics.kinematics import kinematics
-        >>> kinematics(chain_model(3), [0.0, 0.0, 0.0]).s(1)[:, 0]     # a pin at (1, 0): the point [0, -1, 1]
-        array([ 0., -1.,  1.])
         """
         return self.S[..., :, self.model.q_slice(i)]
 
+    @_documented
     def jacobian(self, i: int) -> np.ndarray:
-        """Body ``i``'s Jacobian (..., 3, nq): ``v_i = J_i qd`` (thesis Remark 8).
+        """Body ``i``'s Jacobian (..., 3, nq): ``v_i = J_i qd`` (thesis Remark 8), zero for joints not on its path.
 
-        Parameters
-        ----------
-        i : int
-            Body index.
+        {i}
 
         Returns
         -------
         numpy.ndarray, shape (..., 3, nq)
-            Columns of the joints on the path to ``i``, zero elsewhere.
 
         Examples
         --------
@@ -618,26 +538,20 @@ def _body_count(n, allow_large: bool) -> int:
     return n
 
 
+@_documented
 def chain_model(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str = "revolute",
                 gravity=(0.0, -9.81), *, allow_large: bool = False) -> Model:
-    """An unbranched chain of ``n`` uniform slender links.
-
-    Link ``i`` has mass ``mass``, length ``length``, centre of mass at mid-link
-    and inertia ``mass length² / 12`` about it; joint 1 sits at the origin and
-    joint ``i`` at the tip of link ``i-1``; at ``q = 0`` the links lie along +x.
+    """An unbranched chain of ``n`` uniform slender links along +x at ``q = 0``, joint 1 at the origin.
 
     Parameters
     ----------
     n : int
         Number of links, 1 to :data:`MAX_BODIES` (more with ``allow_large=True``).
     mass, length : float
-        Positive and finite; ``mass length²`` must be finite too.
+        Of each link, positive; the inertia ``mass length² / 12`` about its middle must be finite.
     joint : str
         The kind of every joint (see :class:`Joint`).
-    gravity : (gx, gy)
-        Gravitational acceleration ``(gx, gy)`` (m/s²).
-    allow_large : bool
-        Allow more than :data:`MAX_BODIES` links.
+    {gravity allow_large}
 
     Returns
     -------
@@ -646,26 +560,17 @@ def chain_model(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str =
     Raises
     ------
     InputError
-        ``n`` not an integer (floats and bools included), below 1 or above the limit;
-        ``mass`` or ``length`` not positive, or so large that the link inertia overflows.
+        ``n`` not an integer or out of range; ``mass`` or ``length`` not positive or too large.
 
     Examples
     --------
     >>> m = chain_model(3, joint="prismatic")
     >>> [j.kind for j in m.joints], m.joints[1].placement
     (['prismatic', 'prismatic', 'prismatic'], (1.0, 0.0, 0.0))
-    >>> chain_model(1.5)
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.InputError: n must be an integer, got 1.5
     """
     n = _body_count(n, allow_large)
-    L = as_scalar(length, "length")
-    if not L > 0:
-        raise InputError(f"length must be positive, got {L!r}")
-    m = as_scalar(mass, "mass")
-    if not m > 0:
-        raise InputError(f"mass must be positive, got {m!r}")
+    L = _positive(length, "length")
+    m = _positive(mass, "mass")
     J = m * L * L / 12
     if not math.isfinite(J):
         raise InputError(f"length {L!r} is too large for mass {m!r}: the link inertia mass length² / 12 overflows")
@@ -674,28 +579,22 @@ def chain_model(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str =
     return Model(bodies, joints, list(range(-1, n - 1)), gravity)
 
 
+@_documented
 def random_model(n: int, seed=None, *, kinds=("revolute", "prismatic"), tree: bool = False,
                  gravity=(0.0, -9.81), allow_large: bool = False) -> Model:
-    """A random model for tests: ``n`` bodies, joint kinds drawn from ``kinds``.
-
-    With ``tree=True`` each body's parent is drawn uniformly among the earlier
-    bodies and the ground; otherwise the model is a chain.  ``n`` is limited as in
-    :func:`chain_model`.
+    """A random model for tests: ``n`` bodies (limited as in :func:`chain_model`), joint kinds drawn from ``kinds``.
 
     Parameters
     ----------
     n : int
-        Number of bodies (``1 <= n <= MAX_BODIES`` unless ``allow_large``).
+        Number of bodies.
     seed : int or numpy.random.Generator, optional
         Random seed (non-negative) or generator.
     kinds : sequence of str, optional
         Joint kinds to draw from.
     tree : bool, optional
-        Draw a tree instead of a chain.
-    gravity : array_like, shape (2,), optional
-        Gravity (m/s²).
-    allow_large : bool, optional
-        Lift the ``MAX_BODIES`` limit.
+        Each parent drawn among the earlier bodies and the ground; else a chain.
+    {gravity allow_large}
 
     Returns
     -------
