@@ -1,36 +1,12 @@
 """Articulated mobility algorithm for a constrained chain or tree (thesis 7.4, 7.4.1).
 
-The articulated mobility ``Lambda_i^-1`` and bias acceleration ``b_i`` relate
-the force of joint ``i+1`` to the acceleration of body ``i`` with the bodies
-from the ground up to ``i`` attached (7.28)::
-
-    a_i = -Lambda_i^-1 f_{i+1} + b_i
-
-From the base to the tips, with the body-inertia subspaces ``T_i = I_i s_i
-(s_i^T I_i s_i)^-1``, ``U_i = I_i^-1 R_i (R_i^T I_i^-1 R_i)^-1`` (6.36, 6.37)::
-
-    eta_i      = s_i T_i^T I_i^-1 (T_i Q_i - p_i)                                (7.35)
-    Lambda_1^-1 = s_1 T_1^T I_1^-1,  b_1 = eta_1 + U_1 R_1^T kappa_1              (7.31)
-    M_i        = 1 + U_i R_i^T Lambda_{i-1}^-1 I_i
-    Lambda_i^-1 = M_i^-1 (s_i T_i^T I_i^-1 + U_i R_i^T Lambda_{i-1}^-1)          (7.38a, corrected)
-    b_i        = M_i^-1 (eta_i - U_i R_i^T (Lambda_{i-1}^-1 p_i - b_{i-1} - kappa_i))  (7.38b)
-
-The thesis prints a minus sign before ``U_i R_i^T Lambda_{i-1}^-1`` in 7.36
-and 7.38a, and its listing 7.4.1 drops the applied loads ``g_i`` from
-``p_i``; both are corrected here (``docs/errata.md``).
-
-On a tree (9.45-9.48) ``Lambda_i^-1``, ``b_i`` describe body ``i`` with its
-descendants cut off, which still carries the subtrees of its ancestors' other
-children: before 7.38 the parent ``j``'s mobility is loaded with the articulated
-inertias (7.7) of ``i``'s siblings ``k``, ``E = Σ R_k U_k^T A_k``,
-``e = Σ T_k Q_k + R_k U_k^T (A_k kappa_k + d_k)``::
-
-    Lambda_{i-1}^-1 -> (1 + Lambda_j^-1 E)^-1 Lambda_j^-1,
-    b_{i-1}         -> (1 + Lambda_j^-1 E)^-1 (b_j - Lambda_j^-1 e)
-
-(``docs/errata.md``, chapter 9, item 5).  A chain has no siblings and this is 7.4.1.
-:func:`mobility_recursion` is the package's one copy of the recursion (chain
-splitting 7.6 and the stacked direct solution 9.48 call it).
+``a_i = -Λ_i⁻¹ f_{i+1} + b_i`` (7.28) for body ``i`` with the bodies from the ground up to it;
+base to tips with ``T_i``, ``U_i`` on the body inertia (6.36, 6.37): ``η_i`` (7.35),
+``Λ_1⁻¹``, ``b_1`` (7.31) and ``Λ_i⁻¹ = M_i⁻¹ (s T^T I⁻¹ + U R^T Λ_{i-1}⁻¹)``, ``b_i`` (7.38) with
+``M_i = 1 + U R^T Λ_{i-1}⁻¹ I_i``.  The printed minus sign in 7.36/7.38a and the loads dropped
+from ``p_i`` in 7.4.1 are corrected; on a tree the parent's mobility is first loaded with the
+siblings' articulated inertias (9.45; ``docs/errata.md``, chapter 9, item 5).
+:func:`mobility_recursion` is the package's one copy (chain splitting 7.6, stacked 9.48).
 """
 from __future__ import annotations
 
@@ -57,9 +33,8 @@ class ArticulatedMobilities(_Reactions):
     b : (N, 3) articulated bias accelerations (7.31b, 7.38b).
     S : list of (3, k_i) joint spaces.
     T : list of body-inertia percussion spaces ``I_i s_i (s_i^T I_i s_i)^-1`` (6.36).
-    points : (N, 2) or None, the points of the reaction bases of prismatic joints (the body frames' origins).
-    R, U : lists, built on first access: the reaction spaces (:func:`planargeo.mechanics.joints.R_of`:
-        forces through the joint, couples; 7.16, 5.63) and the body-inertia ``U_i`` (6.37).
+    points : (N, 2) or None, the points of the reaction bases of prismatic joints.
+    R, U : lists, built on first access: reaction spaces (7.16, 5.63) and body-inertia ``U_i`` (6.37).
     """
 
     Lambda_inv: np.ndarray
@@ -79,10 +54,7 @@ SOLVE_COND_LIMIT = 1e16
 
 
 def _cond(M) -> float:
-    """Cheap condition number ``‖M‖ ‖M⁻¹‖`` (Frobenius norms) of a small square matrix; ``inf`` if singular.
-
-    Between ``cond₂`` and ``k cond₂`` for a ``k×k`` matrix; no singular value decomposition.
-    """
+    """Cheap condition number ``‖M‖_F ‖M⁻¹‖_F`` of a small square matrix (between cond₂ and k cond₂); ``inf`` if singular."""
     if M.shape == (3, 3):                       # adjugate and determinant on Python floats
         (a, b, c), (d, e, f), (g, h, k) = M.tolist()
         adj = (e * k - f * h, c * h - b * k, b * f - c * e,
@@ -118,10 +90,7 @@ def _checked_solve(M, B, what: str):
 
 
 def _siblings_loaded(art: ArticulatedInertias, tau, kappa, children, i, j, Lam_j, b_j):
-    """The parent's mobility with the articulated inertias of ``i``'s siblings attached (thesis 9.45, corrected).
-
-    ``(Λ_j⁻¹, b_j)`` unchanged when ``i`` has no siblings (a chain).
-    """
+    """The parent's ``(Λ_j⁻¹, b_j)`` with the articulated inertias of ``i``'s siblings attached (thesis 9.45, corrected)."""
     sib = [k for k in children[j] if k != i]
     if not sib:
         return Lam_j, b_j
@@ -143,11 +112,9 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_poi
     ----------
     I, S, kappa, p, tau, parents, points, joint_points
         One state, as for :func:`planargeo.algorithms.articulated_inertia.articulated_recursion`
-        (body inertias ``I``: point masses are fine while every ``s_i^T I_i s_i`` is invertible;
-        ``joint_points``: where the singularity rule is measured).
+        (point masses are fine while every ``s_i^T I_i s_i`` is invertible).
     articulated : ArticulatedInertias, optional
-        :func:`planargeo.algorithms.articulated_inertia.articulated_recursion` of the same state,
-        for the siblings of a tree (computed when needed and not given).
+        ``articulated_recursion`` of the same state, for the siblings of a tree (computed if needed).
 
     Returns
     -------
@@ -211,10 +178,6 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_poi
 def articulated_mobility(model, q, qd=None, tau=None, f_ext=None) -> ArticulatedMobilities:
     """Articulated mobilities ``Lambda_i^-1`` and bias accelerations ``b_i`` (thesis 7.4.1; trees 9.45).
 
-    One state of a chain or tree hanging from the ground, given as for
-    :func:`planargeo.algorithms.articulated_inertia.articulated_inertia`; returns an
-    :class:`ArticulatedMobilities` (:func:`mobility_recursion` on the state's kinematics).
-
     Parameters
     ----------
     model : Model
@@ -233,14 +196,9 @@ def articulated_mobility(model, q, qd=None, tau=None, f_ext=None) -> Articulated
 
     Examples
     --------
-    The tip of a double pendulum of unit links, at rest without gravity:
-    ``a_2 = -Lambda_2^-1 f_3 + b_2`` with ``b_2 = 0``.
-
     >>> from planargeo.mechanics.model import chain_model
     >>> r = articulated_mobility(chain_model(2, gravity=(0, 0)), [0.0, 0.0])
-    >>> float(np.abs(r.b).max())
+    >>> float(np.abs(r.b).max())                       # at rest without gravity
     0.0
-    >>> bool(np.allclose(r.Lambda_inv[1], r.Lambda_inv[1].T))
-    True
     """
     return mobility_recursion(*_state_arrays(model, q, qd, tau, f_ext)[1:])

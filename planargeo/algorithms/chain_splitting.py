@@ -1,20 +1,10 @@
 """Chain splitting: direct body accelerations and joint forces (thesis 7.6).
 
-Split the chain at joint ``i+1``: the bodies ``1..i`` form a constrained
-chain with articulated mobility ``Lambda_i^-1``, ``b_i`` (7.4.1,
-:mod:`~planargeo.algorithms.articulated_mobility`), the bodies ``i+1..N`` a
-free-floating chain with articulated inertia ``A_{i+1}``, ``d_{i+1}`` (7.1.1,
-:mod:`~planargeo.algorithms.articulated_inertia`).  Eliminating the unknown
-force or acceleration gives, with ``K = R_{i+1} U_{i+1}^T A_{i+1}`` and
-``C = 1 + Lambda_i^-1 K``::
-
-    a_i     = C^-1 [b_i - Lambda_i^-1 (T_{i+1} Q_{i+1} + R_{i+1} U_{i+1}^T (A_{i+1} kappa_{i+1} + d_{i+1}))]   (7.54)
-    f_{i+1} = C^-T [T_{i+1} Q_{i+1} + R_{i+1} U_{i+1}^T (A_{i+1} (b_i + kappa_{i+1}) + d_{i+1})]             (7.56)
-
-For the tip ``a_N = b_N``.  7.56 relies on ``C^T = 1 + K Lambda_i^-1`` (7.55),
-true because ``K = R (R^T A^-1 R)^-1 R^T`` and ``Lambda_i^-1`` are symmetric;
-it holds only with the corrected mobility recursion (7.38a).  Joint
-accelerations then follow from 6.110: ``qdd_i = T_i^T (a_i - a_{i-1} - kappa_i)``.
+Split at joint ``i+1``: bodies ``1..i`` with articulated mobility ``Λ_i⁻¹``, ``b_i`` (7.4.1), bodies
+``i+1..N`` with articulated inertia ``A_{i+1}``, ``d_{i+1}`` (7.1.1).  With
+``K = R_{i+1} U_{i+1}^T A_{i+1}`` and ``C = 1 + Λ_i⁻¹ K``, 7.54 gives ``a_i`` and 7.56 ``f_{i+1}``
+(through ``C^T = 1 + K Λ_i⁻¹``, 7.55, true only with the corrected 7.38a); ``a_N = b_N`` and
+``q̈`` by 6.110.
 """
 from __future__ import annotations
 
@@ -46,6 +36,8 @@ def _split(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next):
 def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) -> np.ndarray:
     """Acceleration of body ``i`` split from the rest of the chain at joint ``i+1`` (thesis 7.54).
 
+    ``a_i = C^-1 [b_i - Λ_i⁻¹ (T Q + R U^T (A κ + d))]``, all of the next body.
+
     Parameters
     ----------
     Lam_i, b_i : (3, 3), (3,)
@@ -57,12 +49,12 @@ def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa
     Q_next : (k,)
         Force (torque) applied at joint ``i+1``.
     kappa_next : (3,)
-        Bias (velocity-product) acceleration of body ``i+1`` (2.19).
+        Bias acceleration of body ``i+1`` (2.19).
 
     Returns
     -------
     numpy.ndarray, shape (3,)
-        The acceleration ``a_i = [ax, ay, α]`` of body ``i`` (7.54).
+        ``a_i = [ax, ay, α]``.
 
     Raises
     ------
@@ -72,8 +64,7 @@ def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa
     Examples
     --------
     A pinned unit point mass at (1, 0) (body i) carrying a second one on a pin at
-    (1, 0), at rest, with a unit upward push on body i (``b_i = [0, 0, 1]``):
-    the second mass adds to the first, halving the acceleration.
+    (1, 0), at rest, with a unit upward push on body i: the second mass halves the acceleration.
 
     >>> from planargeo.screws.twists import inertia_matrix
     >>> A2 = inertia_matrix(1.0, [1.0, 0.0], 1e-3)
@@ -92,6 +83,8 @@ def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa
 def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) -> np.ndarray:
     """Internal force of joint ``i+1`` from the split chain (thesis 7.56).
 
+    ``f_{i+1} = C^-T [T Q + R U^T (A (b_i + κ) + d)]``, all of the next body.
+
     Parameters
     ----------
     Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next : array_like
@@ -100,7 +93,7 @@ def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) 
     Returns
     -------
     numpy.ndarray, shape (3,)
-        The wrench ``f_{i+1} = [fx, fy, τ]`` body ``i`` exerts on body ``i+1`` through the joint (7.56).
+        The wrench ``f_{i+1}`` body ``i`` exerts on body ``i+1`` through the joint.
 
     Raises
     ------
@@ -109,8 +102,7 @@ def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) 
 
     Examples
     --------
-    The example of :func:`split_acceleration`: the pin between the masses pushes
-    the second one up with half the unit push (``f = I_2 a_1`` with ``a_1 = [0, 0, 0.5]``).
+    The example of :func:`split_acceleration`: the pin pushes the second mass with half the push.
 
     >>> from planargeo.screws.twists import inertia_matrix
     >>> A2 = inertia_matrix(1.0, [1.0, 0.0], 1e-3)
@@ -133,9 +125,7 @@ class ChainSplit:
     Attributes
     ----------
     a : (N, 3) body accelerations (7.54; ``a_N = b_N``).
-    f : (N, 3) internal joint forces: ``f[i]`` for ``i >= 1`` from 7.56
-        (split at joint ``i``); ``f[0]`` from the force propagator of body 1
-        (6.113b) with ``f[1]``.
+    f : (N, 3) joint forces: ``f[i]``, ``i >= 1``, from 7.56; ``f[0]`` from the force propagator (6.113b).
     qdd : (nq,) joint accelerations (6.110).
     """
 
@@ -152,13 +142,7 @@ def _check_chain(parents, N):
 
 
 def chain_split(I, S, kappa, p, tau, parents=None, joint_points=None) -> ChainSplit:
-    """Solve a chain by chain splitting on arrays (thesis 7.6 algorithm).
-
-    Steps: articulated inertias (7.1.1), articulated mobilities (7.4.1),
-    then every ``a_i`` directly by 7.54, every ``f_{i+1}`` by 7.56, and the
-    joint accelerations by 6.110.  ``parents`` must be the chain ``[-1, 0, ..., N-2]``
-    (the default); ``joint_points`` (N, 2): each joint's point, where the singularity rule of :data:`planargeo.errors.COND_LIMIT`
-    is measured (default the origin; :func:`mobility_split` passes the joint frames' origins).
+    """Solve a chain by chain splitting on arrays (thesis 7.6 algorithm: 7.1.1, 7.4.1, 7.54, 7.56, 6.110).
 
     Parameters
     ----------
@@ -167,13 +151,13 @@ def chain_split(I, S, kappa, p, tau, parents=None, joint_points=None) -> ChainSp
     S : sequence of (3, k_i) arrays
         Joint spaces ``s_i``.
     kappa, p : (N, 3) arrays
-        Bias accelerations (2.19) and bias forces (3.11: velocity products, gravity, external) of the bodies.
+        Bias accelerations (2.19) and bias forces (3.11) of the bodies.
     tau : sequence of (k_i,) arrays
         Joint forces.
     parents : sequence of int, optional
         Must be ``[-1, 0, ..., N-2]``.
     joint_points : (N, 2) array, optional
-        Where each joint's conditioning is measured.
+        Where each joint's conditioning is measured (default the origin).
 
     Returns
     -------
@@ -185,7 +169,7 @@ def chain_split(I, S, kappa, p, tau, parents=None, joint_points=None) -> ChainSp
     TopologyError
         When ``parents`` is not an unbranched chain.
     SingularConfigurationError
-        When a joint-space matrix or a split matrix ``1 + Λ⁻¹ R Uᵀ A`` is singular.
+        When a joint-space matrix or a split matrix is singular.
 
     Examples
     --------
@@ -224,7 +208,7 @@ def mobility_split(model, q, qd=None, tau=None, f_ext=None) -> ChainSplit:
     model : Model
         An unbranched chain hanging from the ground.
     q, qd, tau, f_ext : array_like
-        The state, as for :func:`planargeo.algorithms.articulated_mobility.articulated_mobility`.
+        One state, as for :func:`planargeo.algorithms.articulated_inertia.articulated_inertia`.
 
     Returns
     -------
@@ -241,8 +225,7 @@ def mobility_split(model, q, qd=None, tau=None, f_ext=None) -> ChainSplit:
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
-    >>> r = mobility_split(chain_model(2, gravity=(0, 0)), [0.0, 0.0], [0.0, 0.0], [1.0, 0.0])
-    >>> r.qdd.round(9)
+    >>> mobility_split(chain_model(2, gravity=(0, 0)), [0.0, 0.0], [0.0, 0.0], [1.0, 0.0]).qdd.round(9)
     array([ 1.71428571, -4.28571429])
     """
     return _chain_split(_state_arrays(model, q, qd, tau, f_ext))
@@ -260,15 +243,12 @@ def _mobility_split_qdd(model, q, qd, tau, f_ext):
 def forward_dynamics_mobility_split(model, q, qd, tau, f_ext=None) -> np.ndarray:
     """Joint accelerations by articulated mobility + chain splitting (thesis 7.4.1, 7.54, 7.56, 6.110).
 
-    Arguments and result as :func:`planargeo.algorithms.projective.forward_dynamics_projective`;
-    the model must be an unbranched chain whose first body hangs from the ground.
-
     Parameters
     ----------
     model : Model
-        An unbranched chain.
+        An unbranched chain whose first body hangs from the ground.
     q, qd, tau : array_like, shape (..., nq)
-        Joint coordinates, speeds and forces (leading dimensions: a batch of states).
+        Joint coordinates, speeds and forces (leading dimensions: a batch).
     f_ext : array_like, shape (..., N, 3), optional
         External wrenches on the bodies.
 

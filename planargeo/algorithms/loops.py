@@ -1,29 +1,11 @@
 """Closed loops and contacts in stacked form (thesis 9.3-9.5).
 
-The tree of a :class:`~planargeo.mechanics.model.Model` is cut open at its contacts
-(:class:`planargeo.mechanics.contacts.Contact`), solved as an open tree, and the
-contact forces needed to close the loops are added (thesis 9.5):
-
-1. contact matrix ``G`` (9.49), branch matrix ``Υ = G Δ^{-1}`` (9.50),
-   motion spaces ``z`` and reaction spaces ``B`` (``z^T B = 0``, 9.60);
-2. open-loop accelerations ``u`` (9.63 = 9.39) and the tree's mobility ``Λ^{-1}``;
-3. contact rates ``θ̇ = (z^T J z)^{-1} z^T J G v`` with ``J = Υ I Υ^T`` (9.57-9.58)
-   and contact bias accelerations ``ν = v × z θ̇`` (9.55);
-4. ``Γ = B (B^T G Λ^{-1} G^T B)^{-1} B^T`` (9.72), ``F = Γ (G u - ν)`` (9.71);
-5. closed-loop accelerations ``a = u - Λ^{-1} G^T F`` (9.73) and
-   ``q̈ = T^T (Δ a - κ)`` (9.75).
-
-Correction (``docs/errata.md``): in (9.65)-(9.73) ``Λ^{-1}`` must
-be the tree's *full* stacked mobility ``Λ^{-1} = L^T S T^T A^{-1} L`` (block
-``(i, j)``: acceleration of body ``i`` per unit wrench on body ``j``), not the
-block-diagonal ``{{Λ_i^{-1}}}`` of the chain mobilities (7.37): a contact force
-on one body accelerates every body of the tree, in particular the other side
-of the loop.  For the slider-crank of 9.6 (one contact on the tip body, to
-the ground) both agree, which is why the example does not show it.
-
-:func:`constrained_dynamics_lagrange` is the independent reference: Lagrange
-multipliers in maximal coordinates (centre-of-mass position and angle of every
-body; tree joints and contacts alike as analytic constraints), solved densely.
+The tree is cut open at its contacts, solved as an open tree, and the contact forces that
+close the loops are added: ``G`` (9.49), ``Υ = G Δ^{-1}`` (9.50), ``z``, ``B`` (9.60); open-loop
+``u`` (9.63); contact rates and ``ν`` (9.55-9.58); ``Γ = B (B^T G Λ^{-1} G^T B)^{-1} B^T``,
+``F = Γ (G u - ν)`` (9.71-9.72); ``a = u - Λ^{-1} G^T F`` and ``q̈`` (9.73, 9.75).  ``Λ^{-1}``
+must be the tree's full stacked mobility, not the block diagonal of 7.37 (``docs/errata.md``).
+:func:`constrained_dynamics_lagrange` is the independent reference (maximal coordinates).
 """
 from __future__ import annotations
 
@@ -74,62 +56,42 @@ def branch_matrix(G, parents) -> np.ndarray:
 class LoopSolution:
     """All quantities of one constrained state (thesis 9.49-9.75; attributes named after the symbols).
 
-    Reaction bases: ``xi`` are the components of the contact forces in the
-    contact reaction spaces ``B`` of :func:`planargeo.mechanics.contacts.B_of`
-    (``F = B ξ``, 9.70-9.71): for a pin, the unit forces along x and y through
-    the contact point; for a slider, the unit force normal to the slide through
-    the contact point on body ``a`` (the slide direction turned by -90°, as in
-    the thesis's 9.87), then the unit couple; for a weld, the identity.  These
-    are the conventions of the joints' reaction spaces
-    (:func:`planargeo.mechanics.joints.reaction_space`: forces through the joint, couples),
-    except that a joint's slider normal is the direction turned by +90° (5.63):
-    the thesis itself uses the two orientations, and the contact's follows 9.87
-    so that ``xi`` compares with 9.90.  The open tree's joint reaction bases
-    (``tree.R``) are the joints'.
+    ``xi`` are the contact forces' components in the contact reaction spaces ``B``
+    (:func:`planargeo.mechanics.contacts.B_of`, ``F = B ξ``): a slider's normal is its direction
+    turned by -90° as in the thesis's 9.87 (a joint's is +90°, 5.63), so ``xi`` compares with 9.90.
 
     Attributes
     ----------
-    tree : StackedSolution  (open-loop tree, ``tree.a`` is ``u``)
-    G, Upsilon : (m, N) contact and branch matrices; ``G3`` the 3m×3N blocks
+    tree : StackedSolution (the open tree; ``tree.a`` is ``u``)
+    G, Upsilon, G3 : contact and branch matrices (m, N), ``G`` in 3×3 blocks
     z, B : block-diagonal contact motion / reaction spaces
     u : (3N,) open-loop accelerations (9.63)
-    Lambda_inv : (3N, 3N) the tree's full mobility (the ``Λ^{-1}`` of 9.65-9.73); built on first
-        access (``tree.mobility``): the solve itself uses only its contact columns
-    Lambda_inv_Gt : (3N, 3m) the contact columns ``Λ^{-1} G^T`` (two unit-triangular solves,
-        :meth:`~planargeo.algorithms.stacked.StackedSolution.mobility_times`)
-    contact_mobility : (3m, 3m) ``G Λ^{-1} G^T``, the mobility seen at the contacts
+    Lambda_inv : (3N, 3N) the tree's full mobility (9.65-9.73), built on first access
+    Lambda_inv_Gt : (3N, 3m) its contact columns ``Λ^{-1} G^T``
+    contact_mobility : (3m, 3m) ``G Λ^{-1} G^T``
     J : (3m, 3m) branch composite inertia ``Υ I Υ^T`` (9.57)
-    theta_dot : contact rates (9.58); nu : (3m,) contact bias accelerations
-    K : ``B^T G Λ^{-1} G^T B`` ; cond : its condition number
-    Gamma : (3m, 3m) (9.72); xi : reaction magnitudes in the basis ``B`` (9.70); F : (3m,) contact forces (9.71)
-    a : (3N,) closed-loop accelerations (9.73); qdd : (nq,) (9.75)
-    tau_drive : (nq,) joint torques including the drives (prescribed joints)
-    f : (3N,) joint wrenches of the closed loop, ``Δᵀ f = I a + p + Gᵀ F`` (9.61) solved for ``f``:
-        ``f_i`` is the wrench ``[fx, fy, τ_o]`` (N, N, N·m; moment about the global origin) that the
-        parent (or the ground) exerts on body ``i`` through joint ``i``: the pin or bearing force,
-        plus the joint's drive (:func:`joint_wrenches`)
-    Q : (nq,) ``Q_i = s_iᵀ f_i`` (6.38): the part of ``f_i`` that works through the joint (the joint
-        torque, N·m, or force, N); equals ``tau_drive``
-    mu : (3N - nq,) reaction magnitudes ``μ_i = U_iᵀ f_i`` of every joint in its reaction basis
-        ``R_i`` (6.61b, 6.104; for a revolute joint with ``Q_i = 0``: the pin force along x and y, N)
-    reactions : list of :class:`Reaction`, every pin and bearing force of the loop: one per tree
-        joint (``f_i``, at the joint) then one per contact (``F_k``, at its point on body ``a``)
+    theta_dot, nu : contact rates (9.58) and bias accelerations (9.55)
+    K, cond : ``B^T G Λ^{-1} G^T B`` and its condition number
+    Gamma, xi, F : (9.72), reaction magnitudes in ``B`` (9.70), contact forces (9.71)
+    a, qdd : closed-loop accelerations (9.73, 9.75)
+    tau_drive : (nq,) joint torques including the drives
+    f : (3N,) joint wrenches from ``Δᵀ f = I a + p + Gᵀ F`` (9.61): ``f_i`` acts on body ``i`` from its parent
+    Q : (nq,) ``s_iᵀ f_i`` (6.38), equal to ``tau_drive``
+    mu : reaction magnitudes ``U_iᵀ f_i`` of every joint in its basis ``R_i`` (6.61b, 6.104)
+    reactions : list of :class:`Reaction`, one per tree joint then one per contact
 
     Examples
     --------
-    A free body (``plane`` joint, m = 2) pinned to the ground at its centre of
-    mass (3, 1): at rest the pin carries its weight.  ``-F`` acts on the body,
-    so ``ξ = [0, -m g]`` in the basis of unit forces along x and y through the pin.
+    A free body (``plane`` joint, m = 2) pinned to the ground at its centre of mass (3, 1): at rest
+    the pin carries its weight; ``-F`` acts on the body, so ``ξ = [0, -m g]``.
 
     >>> from planargeo.mechanics.contacts import Contact
     >>> from planargeo.mechanics.model import Body, Joint, Model
     >>> m = Model([Body(2.0, (0.0, 0.0), 0.5)], [Joint("plane")], [-1])
     >>> pin = Contact("pin", 0, -1, point_a=(0.0, 0.0), point_b=(3.0, 1.0))
     >>> sol = loop_solve(m, [3.0, 1.0, 0.0], [0.0] * 3, [0.0] * 3, contacts=[pin])
-    >>> sol.xi.round(9) + 0.0, sol.B[:, :2]
-    (array([ 0.  , -19.62]), array([[ 1.,  0.],
-           [ 0.,  1.],
-           [-1.,  3.]]))
+    >>> sol.xi.round(9) + 0.0
+    array([ 0.  , -19.62])
     """
 
     def __repr__(self):
@@ -174,7 +136,7 @@ class LoopSolution:
 
     @property
     def Lambda_inv(self) -> np.ndarray:
-        """The tree's full stacked mobility ``Λ^{-1}`` (3N×3N) of 9.65-9.73, built on first access (``tree.mobility``)."""
+        """The tree's full stacked mobility ``Λ^{-1}`` (3N×3N) of 9.65-9.73, built on first access."""
         return self.tree.mobility
 
 
@@ -185,24 +147,19 @@ class Reaction:
     Attributes
     ----------
     symbol : str
-        ``"f_i"`` for tree joint ``i`` (1-based, the thesis's numbering), ``"F_k"`` for contact ``k``.
+        ``"f_i"`` for tree joint ``i`` (1-based), ``"F_k"`` for contact ``k``.
     name : str
         The joint's or contact's name in the model (may be empty).
     kind : str
-        The joint kind (``"revolute"``, ``"prismatic"``...) or the contact kind (``"pin"``, ``"slider"``,
-        ``"weld"``).
-    body : int
-        The body the wrench acts on (0-based): body ``i`` for joint ``i``, body ``a`` of a contact.
-    other : int
-        The body that exerts it (0-based; -1 the ground): the joint's parent, the contact's body ``b``.
+        The joint kind or the contact kind (``"pin"``, ``"slider"``, ``"weld"``).
+    body, other : int
+        The body the wrench acts on and the body that exerts it (0-based; -1 the ground).
     point : ndarray (2,)
         Where it acts: the joint's position, the contact point on body ``a`` (m).
     wrench : ndarray (3,)
-        ``[fx, fy, τ_o]`` (N, N, N·m, moment about the global origin) acting **on** ``body``: ``f_i`` for a
-        joint, ``-F_k`` for a contact (the thesis's ``F`` acts with ``-`` on body ``a``, 9.61).
+        ``[fx, fy, τ_o]`` acting **on** ``body`` (moment about the origin): ``f_i``, or ``-F_k`` (9.61).
     moment : float
-        Moment of ``wrench`` about ``point`` (N·m): the drive torque of a revolute joint, zero for a free
-        pin (to rounding), the couple a slider's bearing carries.
+        Moment of ``wrench`` about ``point`` (N·m): a drive torque, zero for a free pin, a slider's couple.
     """
 
     symbol: str
@@ -223,10 +180,6 @@ class Reaction:
 def joint_wrenches(parents, I, a, p, GtF=None) -> np.ndarray:
     """Joint wrenches from ``Δᵀ f = I a + p + Gᵀ F`` (thesis 9.61; 9.14 without contacts), by one inward sweep.
 
-    ``(Δᵀ f)_i = f_i - Σ_{children c} f_c``, so ``f_i`` is body ``i``'s own
-    ``I_i a_i + p_i + (GᵀF)_i`` plus the wrenches its children draw from it,
-    children first (``O(N)``; ``Δ^{-T}`` is never formed).
-
     Parameters
     ----------
     parents : sequence of int (N,)
@@ -234,16 +187,16 @@ def joint_wrenches(parents, I, a, p, GtF=None) -> np.ndarray:
     I : array_like (3N, 3N)
         Stacked (block-diagonal) body inertias at the origin.
     a : array_like (3N,)
-        Body accelerations (the closed-loop ``a`` of 9.73).
+        Body accelerations.
     p : array_like (3N,)
-        Bias forces ``p = v×* I v - g`` (3.11, 3.34; ``g`` gravity plus applied wrenches).
+        Bias forces (3.11, 3.34).
     GtF : array_like (3N,), optional
-        ``Gᵀ F``, the net contact wrenches of 9.61 (``-GᵀF`` acts on the bodies).
+        ``Gᵀ F``, the net contact wrenches of 9.61.
 
     Returns
     -------
     ndarray (3N,)
-        ``f``: ``f_i`` is the wrench (at the origin) that the parent exerts on body ``i`` through joint ``i``.
+        ``f``: ``f_i`` the wrench (at the origin) the parent exerts on body ``i`` through joint ``i``.
 
     Raises
     ------
@@ -252,13 +205,7 @@ def joint_wrenches(parents, I, a, p, GtF=None) -> np.ndarray:
 
     Examples
     --------
-    A unit link hanging straight down at rest from a pin at the origin (``a = 0``,
-    ``p = -g``): the pin holds up its weight, ``f = p``, a force of 9.81 N up through the pin.
-
-    >>> joint_wrenches([-1], np.eye(3), np.zeros(3), np.array([0.0, 9.81, 0.0]))
-    array([0.  , 9.81, 0.  ])
-
-    Two bodies: the root's joint also carries what its child draws from it.
+    Two bodies at rest: the root's joint also carries what its child draws from it.
 
     >>> joint_wrenches([-1, 0], np.eye(6), np.zeros(6), np.array([0.0, 1.0, 0.0, 0.0, 2.0, 0.0]))
     array([0., 3., 0., 0., 2., 0.])
@@ -326,26 +273,19 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
     Parameters
     ----------
     model : Model
-        The spanning tree; ``model.contacts`` closes the loops unless
-        ``contacts`` is given.
+        The spanning tree; ``model.contacts`` closes the loops unless ``contacts`` is given.
     q, qd, tau : array_like (nq,)
         A state satisfying the loop closures (velocities included).
     f_ext : array_like (N, 3), optional
+        External world wrenches.
     contacts : sequence of Contact, optional
+        The loop closures.
     prescribed : dict {joint index: qdd value(s)}, optional
-        Drives: these joints' accelerations are prescribed (e.g. a crank at
-        constant speed, ``{0: 0.0}``); the torques they need are returned in
-        ``tau_drive``.  Each drive is treated as one more contact between the
-        body and its parent with ``B = s (s^T s)^{-1}`` and
-        ``ν = κ_i + s q̈_prescribed``; the returned ``qdd`` of a driven joint
-        is the prescribed value exactly.
+        Drives (e.g. a crank at constant speed, ``{0: 0.0}``), each one more contact with
+        ``B = s (s^T s)^{-1}``, ``ν = κ_i + s q̈``; their torques in ``tau_drive``, their ``qdd`` exact.
     mobility : {"columns", "full"}
-        How ``Λ^{-1}`` enters 9.65-9.73, which read it only through
-        ``Λ^{-1} G^T``: ``"columns"`` (default) forms just those ``3m`` (+ 3
-        per drive) columns, ``Lᵀ (S Tᵀ A⁻¹ (L Gᵀ))`` by two unit-triangular
-        solves with ``L⁻¹ = 1 - Cᵀ P``; ``"full"`` builds the full 3N×3N
-        ``Λ^{-1} = Lᵀ S Tᵀ A⁻¹ L`` first (the direct transcription, kept as a
-        check).  Either way ``sol.Lambda_inv`` gives the full matrix on access.
+        ``"columns"`` forms only the columns ``Λ^{-1} G^T`` by two unit-triangular solves;
+        ``"full"`` builds the 3N×3N ``Λ^{-1}`` first (the direct transcription, kept as a check).
 
     Returns
     -------
@@ -353,14 +293,14 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
 
     Raises
     ------
+    InputError
+        A bad ``mobility`` or ``prescribed`` joint.
     SingularConfigurationError
-        If ``B^T G Λ^{-1} G^T B`` is singular (redundant or locked loops),
-        with its condition number in ``.cond``.
+        If ``B^T G Λ^{-1} G^T B`` is singular (redundant or locked loops), ``.cond`` its condition number.
 
     Examples
     --------
-    A parallelogram four-bar: a chain of three uniform unit links whose tip
-    is pinned to the ground at (1, 0).  In the crank angle ``φ`` its energy is
+    A parallelogram four-bar: three uniform unit links whose tip is pinned to the ground at (1, 0);
     ``T = 5/6 φ̇²``, ``V = 2 g sin φ``, so ``φ̈ = -6/5 g cos φ``:
 
     >>> from planargeo.mechanics.contacts import Contact
@@ -493,11 +433,8 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
 def loop_condition(model: Model, q, contacts=None, *, prescribed=None) -> float:
     """Condition number of ``B^T G Λ^{-1} G^T B`` at ``q`` (thesis 9.70-9.72), without raising.
 
-    The matrix depends on ``q`` only (``Λ^{-1}`` and ``B``); :func:`loop_solve`
-    refuses it above :data:`SINGULAR_COND`.  Here a singular configuration
-    returns the condition number found (``inf`` when exactly singular), also
-    when it is the open tree's ``sᵀAs`` that is singular.  Used to watch a
-    closed-loop simulation for dead centres (:func:`planargeo.simulate.loops.simulate_loops`).
+    :func:`loop_solve` refuses it above :data:`SINGULAR_COND`; here a singular configuration (the
+    open tree's too) returns the condition number found, ``inf`` when exactly singular.
 
     Parameters
     ----------
@@ -513,15 +450,11 @@ def loop_condition(model: Model, q, contacts=None, *, prescribed=None) -> float:
     Returns
     -------
     float
-        The condition number (``inf`` when exactly singular).
+        The condition number.
 
     Examples
     --------
-    The folded slider-crank (``l = r``) at ``ψ = 0`` is singular; the thesis's is not:
-
     >>> from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
-    >>> loop_condition(slider_crank_model(l=2.29), [0.0, np.pi, -np.pi / 2]) > 1e15
-    True
     >>> round(loop_condition(slider_crank_model(), slider_crank_state()[0]), 3)
     5.905
     """
@@ -533,17 +466,18 @@ def loop_condition(model: Model, q, contacts=None, *, prescribed=None) -> float:
 
 
 def forward_dynamics_loops(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribed=None):
-    """Joint accelerations of a closed-loop mechanism (thesis 9.5; see :func:`loop_solve`).
-
-    Same signature as the tree algorithms plus ``contacts`` (default
-    ``model.contacts``); batches over leading dimensions of ``q``.
+    """Joint accelerations ``q̈`` of a closed-loop mechanism (thesis 9.5, 9.75), batches over leading dimensions.
 
     Parameters
     ----------
     model : Model
+        The spanning tree.
     q, qd, tau : array_like (..., nq)
+        States satisfying the loop closures.
     f_ext : array_like (..., N, 3), optional
+        External world wrenches.
     contacts : sequence of Contact, optional
+        Default ``model.contacts``.
     prescribed : dict, optional
         Driven joints (:func:`loop_solve`).
 
@@ -577,38 +511,30 @@ def _rot(th):
 def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribed=None):
     """Independent reference: Lagrange multipliers in maximal coordinates, solved densely (reference for 9.73, 9.75).
 
-    Each body ``i`` has coordinates ``x_i = (c_x, c_y, θ)`` (centre of mass and
-    angle) and the diagonal mass matrix ``diag(m, m, J)``; Newton-Euler at the
-    centre of mass has no velocity terms.  Tree joints and contacts are
-    position constraints ``φ(x) = 0`` written out by hand (point coincidence,
-    point on a line, equal angles) with analytic Jacobians ``Φ`` and
-    second-order terms ``γ = Φ̇ ẋ``; the system::
-
-        [ M   -Φ^T ] [ ẍ ]   [ F_applied ]
-        [ Φ    0   ] [ λ ] = [   -γ      ]
-
-    is solved densely.  Joint torques act as equal and opposite wrenches
-    ``s (s^T s)^{-1} τ`` on body and parent.  Only the poses and velocities of
-    :func:`planargeo.mechanics.kinematics.kinematics` are shared with the stacked code.
+    Each body has coordinates ``(c_x, c_y, θ)`` (centre of mass, angle) and mass ``diag(m, m, J)``;
+    joints and contacts are position constraints written by hand with analytic Jacobians ``Φ`` and
+    ``γ = Φ̇ ẋ``, and ``[[M, -Φ^T], [Φ, 0]] [ẍ, λ] = [F_applied, -γ]`` is solved densely.  Only the
+    poses and velocities of :func:`planargeo.mechanics.kinematics.kinematics` are shared with the stacked code.
 
     Parameters
     ----------
     model : Model
+        The spanning tree.
     q, qd, tau : array_like (nq,)
         One state.
     f_ext : array_like (N, 3), optional
+        External world wrenches.
     contacts : sequence of Contact, optional
+        Default ``model.contacts``.
     prescribed : dict, optional
         Driven revolute joints ``{joint: qdd}``.
 
     Returns
     -------
     dict
-        ``a`` (N, 3) spatial accelerations at the origin, ``qdd`` (nq,)
-        (least squares from ``Δ a - κ = S q̈``), ``F`` (m, 3) contact forces in
-        the thesis's sign (``-F`` acts on body ``a``), ``tau_drive`` (nq,),
-        ``lambda`` and ``Phi`` (the multipliers and the constraint Jacobian, tree
-        joints first: ``n_tree_constraints`` rows).
+        ``a`` (N, 3) accelerations at the origin, ``qdd`` (nq,) (least squares from ``Δ a - κ = S q̈``),
+        ``F`` (m, 3) contact forces (``-F`` acts on body ``a``), ``tau_drive``, ``lambda``, ``Phi``
+        and ``n_tree_constraints`` (the tree joints' rows come first).
 
     Raises
     ------

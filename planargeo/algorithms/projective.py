@@ -1,47 +1,12 @@
 """Projective articulated dynamics: subspaces, propagators, forward dynamics (thesis 6.5-6.8).
 
-Every joint ``i`` splits the wrenches and accelerations of its body into an
-*active* part along the joint and a *reactive* part (thesis 6.38, 6.44)::
-
-    f_i = T_i Q_i + R_i mu_i          a_i = s_i psi_i + U_i gamma_i
-
-with the joint space ``s_i`` (3×k), the reaction space ``R_i`` (3×(3-k),
-``s_i^T R_i = 0``, 6.1) and the weighted pseudo-inverses (6.105, 6.99)::
-
-    T_i = A_i s_i (s_i^T A_i s_i)^-1      U_i = A_i^-1 R_i (R_i^T A_i^-1 R_i)^-1
-
-built on the articulated inertia ``A_i`` (6.8 uses the body inertia ``I_i``).
-The components are projections (6.61, 6.62): ``Q = s^T f``, ``mu = U^T f``,
-``psi = T^T a``, ``gamma = R^T a``.
-
-Solving the chain from the base outwards with the articulated inertias of
-:mod:`planargeo.algorithms.articulated_inertia` (thesis 6.108-6.110)::
-
-    gamma_i = R_i^T (a_{i-1} + kappa_i)                          (6.101)
-    psi_i   = T_i^T A_i^-1 (T_i Q_i - d_i)                        (6.107)
-    a_i     = s_i psi_i + U_i gamma_i                             (6.108)
-    mu_i    = U_i^T A_i U_i gamma_i + U_i^T d_i                   (6.106a)
-    f_i     = T_i Q_i + R_i mu_i                                  (6.109)
-    qdd_i   = T_i^T (a_i - a_{i-1} - kappa_i)                     (6.110)
-
-All quantities are world-frame screws at the global origin (twist
-``[vx, vy, w]``, wrench ``[fx, fy, tz]``); ``a_{i-1}`` is the acceleration of
-body ``i``'s parent (zero for the ground), so trees are handled as well as
-chains.
-
-Reaction basis (the meaning of ``mu``): every ``R_i`` is
-:func:`planargeo.mechanics.joints.R_of`, the package's one definition
-(:func:`planargeo.mechanics.joints.reaction_space`, thesis 4.8, 5.63, 7.16): for a
-revolute joint at ``(x, y)`` the unit forces along x and y through the joint;
-for a prismatic joint along ``e`` the unit force along ``e⊥`` (``e`` turned by
-+90°) through the slider (the body frame's origin) and the unit couple; for a
-revolute-prismatic joint the unit force along ``e⊥`` through the pin.  So with
-no joint force (``Q = 0``) ``mu`` is the joint's reaction force in those
-components; in general ``f = T Q + R mu`` first sets apart the force ``T Q`` on
-the axis of percussion (6.38).  ``T`` and ``U`` come from
-:func:`planargeo.mechanics.subspaces.T_of` and
-:func:`planargeo.mechanics.subspaces.U_of` (one implementation,
-one singularity rule); ``qdd`` does not depend on the basis.
+Each joint splits its body's wrench and acceleration into an active and a reactive part,
+``f_i = T_i Q_i + R_i μ_i``, ``a_i = s_i ψ_i + U_i γ_i`` (6.38, 6.44), with ``T``, ``U`` on the
+articulated inertia (6.105, 6.99).  Base outwards (6.101-6.110): ``γ = Rᵀ (a_λ + κ)``,
+``ψ = Tᵀ A⁻¹ (T Q - d)``, ``a = s ψ + U γ``, ``μ = Uᵀ A U γ + Uᵀ d``, ``f = T Q + R μ``,
+``q̈ = Tᵀ (a - a_λ - κ)``; screws at the origin, ``R_i`` the package's one basis
+(:func:`planargeo.mechanics.joints.R_of`: for a free revolute joint ``μ`` is the pin force along
+x and y).  ``q̈`` does not depend on the basis.
 """
 from __future__ import annotations
 
@@ -69,9 +34,9 @@ def _propagator_args(I, s, Q, T):
 def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.ndarray:
     """Acceleration of a body from its neighbours' loads (thesis 6.113a).
 
-    ``a_i = s_i T_i^T I_i^-1 (T_i Q_i - p_i - f_{i+1}) + U_i R_i^T (a_{i-1} + kappa_i)``
-    with ``T_i``, ``U_i`` built on the body inertia (6.36, 6.37); ``s T^T I^-1 = s (s^T I s)^-1 s^T``
-    (6.93) and ``U R^T = 1 - s T^T`` (6.75), whatever the reaction basis.
+    ``a_i = s_i T_i^T I_i^-1 (T_i Q_i - p_i - f_{i+1}) + U_i R_i^T (a_{i-1} + kappa_i)`` with ``T_i``,
+    ``U_i`` on the body inertia (6.36, 6.37), ``s T^T I^-1 = s (s^T I s)^-1 s^T`` (6.93) and
+    ``U R^T = 1 - s T^T`` (6.75).
 
     Parameters
     ----------
@@ -90,14 +55,12 @@ def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.
     kappa : array_like, shape (3,)
         Bias acceleration of the joint (2.19).
     T : array_like, shape (3, k), optional
-        The percussion space ``I s (sᵀIs)⁻¹`` if already formed (and checked, e.g. by
-        the singularity rule at the joint's own point); by default it is formed here
-        (:func:`planargeo.mechanics.subspaces.T_of`, the rule measured at the origin).
+        ``I s (sᵀIs)⁻¹`` if already formed and checked; else :func:`planargeo.mechanics.subspaces.T_of`.
 
     Returns
     -------
     numpy.ndarray, shape (3,)
-        ``a_i``, the body's acceleration at the origin.
+        ``a_i`` at the origin.
 
     Examples
     --------
@@ -118,9 +81,8 @@ def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.
 def force_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.ndarray:
     """Internal force of a body's joint from its neighbours (thesis 6.113b).
 
-    ``f_i = T_i Q_i + R_i U_i^T (I_i (a_{i-1} + kappa_i) + p_i + f_{i+1})``
-    with ``T_i``, ``U_i`` built on the body inertia (6.36, 6.37) and ``R U^T = 1 - T s^T``
-    (7.8), whatever the reaction basis.  Parameters as :func:`acceleration_propagator`.
+    ``f_i = T_i Q_i + R_i U_i^T (I_i (a_{i-1} + kappa_i) + p_i + f_{i+1})`` with ``T_i``, ``U_i`` on the
+    body inertia (6.36, 6.37) and ``R U^T = 1 - T s^T`` (7.8).
 
     Parameters
     ----------
@@ -134,8 +96,7 @@ def force_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.ndarray
 
     Examples
     --------
-    The pinned point mass of :func:`acceleration_propagator`, at rest with the
-    base still: the pin carries the whole push (``f = I a + p`` with ``a = [0, 0, 1]``).
+    The pinned point mass of :func:`acceleration_propagator`: the pin carries none of the push.
 
     >>> from planargeo.screws.twists import inertia_matrix
     >>> f = force_propagator(inertia_matrix(1.0, [1.0, 0.0], 0.0), [[0.0], [0.0], [1.0]], [0.0],
@@ -154,11 +115,11 @@ def joint_accelerations(T, a, kappa, parents) -> np.ndarray:
 
     Parameters
     ----------
-    T : list of N (3, k_i) percussion spaces (6.105, or 6.36: ``sᵀT = 1`` is all that is used).
-        Each joint's percussion space ``T_i`` (3, k_i).
-    a, kappa : (N, 3) body and bias accelerations; ``a_{λ(i)}`` is the parent's (zero for the ground).
-        Body accelerations and joint bias accelerations (3,) each.
-    parents : sequence of N ints.
+    T : list of N (3, k_i)
+        Percussion spaces (6.105 or 6.36; only ``sᵀT = 1`` is used).
+    a, kappa : (N, 3)
+        Body accelerations and joint bias accelerations.
+    parents : sequence of N ints
         Parent of each body (-1: the ground).
 
     Returns
@@ -181,13 +142,11 @@ def joint_accelerations(T, a, kappa, parents) -> np.ndarray:
 class ProjectiveWorkspace:
     """Everything the projective solution computes, per body ``i`` (thesis 6.99-6.110; lists of arrays).
 
-    ``mu[i]`` are components in ``R[i]``, the basis of
-    :func:`planargeo.mechanics.joints.R_of` (unit forces through the joint, couples).
-
     Attributes
     ----------
     s, R, T, U : list of (3, k), (3, 3-k), (3, k), (3, 3-k)
-        Joint space, reaction space, active force and reactive acceleration subspaces (6.99, 6.105).
+        Joint space, reaction space (:func:`planargeo.mechanics.joints.R_of`), active force and
+        reactive acceleration subspaces (6.99, 6.105).
     A, d : (N, 3, 3), (N, 3)
         Articulated inertias and bias forces (7.7a, 7.7b).
     Q, mu : list of (k,), (3-k,)
@@ -196,7 +155,7 @@ class ProjectiveWorkspace:
         Active and reactive components of ``a_i`` (6.107, 6.101).
     a, f : (N, 3)
         Body accelerations (6.108) and internal joint forces (6.109).
-    qdd : (nq,) joint accelerations (6.110).
+    qdd : (nq,)
         Joint accelerations (6.110).
     """
 
@@ -216,11 +175,7 @@ class ProjectiveWorkspace:
 
 
 def _accelerations(art, kappa, tau, parents):
-    """``psi_i`` (6.107) and ``a_i`` (6.108), base to tips, from the articulated quantities.
-
-    ``psi = T^T A^-1 (T Q - d) = (s^T A s)^-1 (Q - s^T d)`` and ``U R^T = 1 - s T^T`` (6.75):
-    neither ``A^-1`` nor a reaction basis is needed.
-    """
+    """``psi_i`` (6.107) and ``a_i`` (6.108), base to tips: ``psi = (s^T A s)^-1 (Q - s^T d)``, ``U R^T = 1 - s T^T``."""
     N = len(art.S)
     a = np.zeros((N, 3))
     psi = [None] * N
@@ -239,32 +194,15 @@ def projective_solve(I, S, kappa, p, tau, parents=None, points=None, joint_point
 
     Parameters
     ----------
-    I : (N, 3, 3) body inertias at the origin.
-        Body inertias at the origin (3, 3) each.
-    S : list of N arrays (3, k_i): joint spaces.
-        Joint motion spaces (3, k_i) each.
-    kappa, p : (N, 3) bias accelerations (2.19) and bias forces (3.11).
-        Bias accelerations (2.19) and bias forces (3.11, gravity included) of the bodies.
-    tau : list of N arrays (k_i,): joint torques ``Q_i``.
-        Joint forces, one array (k_i,) per joint.
-    parents : sequence of N ints (``-1`` ground, parents before children), default a chain.
-        Parent of each body (-1: the ground).
-    points : (N, 2), optional
-        A point of each joint for the reaction bases (:func:`planargeo.mechanics.joints.R_of`:
-        used by prismatic joints, whose reaction force passes through it); default the origin.
-        :func:`projective_workspace` passes each body's frame origin.
-    joint_points : (N, 2), optional
-        Each joint's point (pivot; placement point of a prismatic joint: the joint
-        frame's origin), where the singularity rule of :data:`planargeo.errors.COND_LIMIT`
-        is measured; default the origin.  The model-level functions pass the joint frames' origins.
+    I, S, kappa, p, tau, parents, points, joint_points
+        One state (bias accelerations (2.19) and forces (3.11)), as for
+        :func:`planargeo.algorithms.articulated_inertia.articulated_recursion`
+        (``points``: where the reaction forces of prismatic joints pass).
 
     Returns
     -------
     ProjectiveWorkspace
-        ``mu[i]`` are the reaction components in the basis ``R[i]`` of
-        :func:`planargeo.mechanics.joints.R_of` (forces along x and y through
-        a revolute joint; force along ``e⊥`` through the slider and a couple
-        for a prismatic joint), so that ``f[i] = T[i] Q[i] + R[i] mu[i]``.
+        With ``f[i] = T[i] Q[i] + R[i] mu[i]``.
 
     Raises
     ------
@@ -300,17 +238,14 @@ def projective_solve(I, S, kappa, p, tau, parents=None, points=None, joint_point
 
 
 def projective_workspace(model, q, qd=None, tau=None, f_ext=None) -> ProjectiveWorkspace:
-    """Full projective solution of one state of ``model`` (thesis 6.101-6.110).
-
-    Returns the per-joint subspaces ``T, U``, components ``Q, mu, psi,
-    gamma``, body accelerations ``a_i`` and internal forces ``f_i`` (for drawings).
+    """Full projective solution of one state of ``model`` (thesis 6.101-6.110), for drawings.
 
     Parameters
     ----------
     model : Model
         The mechanism.
     q, qd, tau, f_ext : array_like
-        The state, as for :func:`planargeo.algorithms.articulated_mobility.articulated_mobility`.
+        One state, as for :func:`planargeo.algorithms.articulated_inertia.articulated_inertia`.
 
     Returns
     -------
@@ -335,22 +270,14 @@ def _projective_qdd(model, q, qd, tau, f_ext):
 
 
 def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
-    """Joint accelerations by the projective articulated equations (thesis 6.108-6.110).
-
-    The forward-dynamics signature of :mod:`planargeo.algorithms`: ``q``, ``qd``, ``tau``
-    of shape (..., nq) (leading batch dimensions solved state by state), ``f_ext`` (..., N, 3)
-    world wrenches at the origin on the bodies (besides gravity); returns ``q̈`` (..., nq).
+    """Joint accelerations by the projective articulated equations (thesis 6.108-6.110), state by state.
 
     Parameters
     ----------
     model : Model
         The mechanism.
-    q : array_like, shape (..., nq)
-        Joint coordinates.
-    qd : array_like, shape (..., nq)
-        Joint velocities.
-    tau : array_like, shape (..., nq)
-        Joint forces/torques (N, N·m).
+    q, qd, tau : array_like, shape (..., nq)
+        Joint coordinates, velocities and forces (leading dimensions: a batch).
     f_ext : array_like, shape (..., N, 3), optional
         External world wrenches at the origin on the bodies (besides gravity).
 
@@ -366,8 +293,7 @@ def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
 
     Examples
     --------
-    A unit slender link lying along +x on a pin at the origin, under gravity:
-    ``qdd = -g (L/2) / (L^2/3) = -14.715``.
+    A unit slender link along +x on a pin at the origin, under gravity: ``qdd = -g (L/2) / (L^2/3)``.
 
     >>> from planargeo.mechanics.model import chain_model
     >>> forward_dynamics_projective(chain_model(1), [0.0], [0.0], [0.0]).round(6)
