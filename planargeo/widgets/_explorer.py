@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 
+import ipywidgets as W
 import numpy as np
 
 from planargeo.draw.pictures._words import words_data
@@ -226,6 +227,12 @@ def run_to(run: dict, t: float, checkpoint: float, step, budget=None):
     return state, drift, events
 
 
+def time_step(values: dict, dt: float, name: str, end: float) -> dict | None:
+    """Play's step of a time control ``name``: ``dt`` on, at most ``end`` (None once there)."""
+    t = float(values[name])
+    return None if t >= end else {name: min(t + float(dt), end)}
+
+
 def keep_run(runs: dict, key, run: dict, most: int = 2) -> None:
     """Keep ``run`` under ``key`` as the newest of ``runs``, the ``most`` newest only."""
     runs.pop(key, None)
@@ -240,6 +247,14 @@ class SceneTime:
 
     initial: tuple[str, ...] = ()
     t_end: float = 60.0
+    _SET_BY_PLAY = "set by Play (a new initial state starts it at 0)"
+
+    def time_control(self) -> W.Text:
+        """The read-only time field."""
+        return W.Text(value="0", description="t (s)", disabled=True, tooltip=self._SET_BY_PLAY)
+
+    def disabled(self, values):
+        return {"t (s)": self._SET_BY_PLAY}
 
     def adjust(self, values, changed):
         if set(changed) & set(self.initial) and "t (s)" not in changed and values["t (s)"] != "0":

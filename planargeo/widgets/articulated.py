@@ -1,33 +1,12 @@
 """Articulated inertias along a chain, drawn as conics (thesis sections 7.1-7.3, 10.2.2, 10.2.3).
 
-A chain of ``n`` identical bodies (mass 1, joints ``L = 1`` apart, radius of gyration
-``ρ = L / λ``) hangs from the ground; every joint after the first bends it by ``φ``.
-For every body the explorer draws
-
-* its rigid inertia ``I_i`` (grey) and its articulated inertia ``A_i`` (7.7a, purple) as
-  conics.  Inertias are imaginary conics: what is drawn is the real conic with the sign of
-  the homogeneous part flipped (10.2.3), an ellipse about the (effective) centre of mass;
-* for the focused body, the axes of percussion ``I_k a`` and ``A_k a`` of the acceleration
-  pole ``a`` (5.64-5.68): the force that gives body ``k`` that acceleration alone, and with
-  the bodies outboard attached; and the polar of ``a`` with respect to the drawn real conic,
-  the point reflection of ``A_k a`` through the centre (the point symmetry of 10.2.3);
-* how ``A_i`` changes as bodies are added outboard: the *outboard bodies* slider truncates
-  the recursion (:func:`planargeo.algorithms.articulated_inertia.articulated_recursion`
-  with ``steps=``; thesis 10.2.2, "three iterations are almost as precise as six"), and
-  the chart on the right plots each component of the focused body's ``A_k`` (at its own
-  joint) against the number of recursion steps, with its error against the full recursion.
-
-*Play* (or the time slider) lets the chain swing under gravity ``g`` from the configuration
-of the sliders, at rest, with viscous damping ``c`` at every joint; the conics follow the
-motion, and the readout shows the energy ``T + V``, the energy the damping removed ``W``
-and their sum, which stays at the initial energy within the integrator's tolerance.  The
-swing is integrated once per configuration in chunks of one second (DOP853, dense output:
-:class:`planargeo.widgets._motion.Motion`), so the state at a time depends on that time
-and the other controls alone, whatever Play's steps were.
-
-Handles (dragged in the page, or :meth:`Explorer.drag` in scripts): the
-acceleration pole ``a``, the tip of the chain (sets the bend ``φ``) and the end of the
-first body (sets the base angle ``θ₁``).
+A chain of ``n`` identical bodies (mass 1, joints ``L = 1`` apart, ``ρ = L / λ``), every joint
+after the first bent by ``φ``.  Drawn: each body's rigid inertia ``I_i`` and articulated inertia
+``A_i`` (7.7a) as the real conics of 10.2.3; for the focused body the axes of percussion ``I_k a``
+and ``A_k a`` of the pole ``a`` (5.64-5.68); and, as the *outboard bodies* slider truncates the
+recursion (10.2.2), a chart of ``A_k``'s entries against the steps taken.  *Play* lets the chain
+swing under gravity with joint damping (:class:`planargeo.widgets._motion.Motion`).  Handles: the
+pole ``a``, the chain's tip (``φ``) and the first body's end (``θ₁``).
 """
 from __future__ import annotations
 
@@ -41,7 +20,7 @@ from planargeo.draw.pictures._words import subscript
 from planargeo.draw.pictures.articulated import MARGIN, articulated_picture, chain_view, fit_box
 from planargeo.scenes.articulated import articulated_state, inertia_at
 from planargeo.widgets._motion import Motion
-from planargeo.widgets._explorer import ChainBodies, Described, xy_handle
+from planargeo.widgets._explorer import ChainBodies, Described, time_step, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step, cached, point_text
 
 __all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip"]
@@ -52,8 +31,7 @@ NMAX = 8
 T_MAX = 60.0
 #: the readout's time control
 TIME = "time (s)"
-#: the readout row that shows the damping at rest (what c means: the power it takes when every joint turns
-#: at 1 rad/s)
+#: the readout row of the damping (the power it takes when every joint turns at 1 rad/s)
 C_ROW = "damping power at 1 rad/s in every joint"
 #: controls that define the chain or its swing: a change restarts the swing at t = 0
 _CHAIN = ("bodies n", "λ = L/ρ", "bend φ (deg)", "base θ₁ (deg)", "g (m/s²)", "damping c")
@@ -62,8 +40,7 @@ _CHAIN = ("bodies n", "λ = L/ρ", "bend φ (deg)", "base θ₁ (deg)", "g (m/s�
 def bend_for_tip(xy, n: int, base: float, L: float = 1.0) -> float:
     """The bend ``φ`` [rad] that brings the tip of the chain nearest to ``xy`` (base angle ``base``).
 
-    Every joint after the first bends by ``φ``; searched on a 0.01° grid, then refined
-    by golden-section search (no snapping to a slider grid).
+    Searched on a 0.01° grid, then refined by golden-section search.
 
     Parameters
     ----------
@@ -121,8 +98,7 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
     Parameters
     ----------
     **kw
-        As for :class:`planargeo.widgets.base.Explorer` (``display``, ``figsize``, initial
-        control values by name).
+        As for :class:`planargeo.widgets.base.Explorer`.
 
     Examples
     --------
@@ -146,8 +122,6 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
 
     # ------------------------------------------------------------------ controls
     def make_controls(self):
-        # The explorer's controls (sliders, checkboxes).
-        # Returns ``{name: widget}``.
         return {
             "bodies n": Step(1, NMAX, 1, 4, "bodies n", integer=True).make("bodies n"),
             "λ = L/ρ": Step(0.5, 8.0, 0.05, 3.0, "λ = L/ρ").make("lam"),
@@ -164,12 +138,8 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         }
 
     def adjust(self, values, changed):
-        # Controls that follow: the outboard bodies stay on the chain, a new chain swings from ``t = 0``.
-        # ``outboard bodies`` never exceeds the ``n − 1`` bodies outboard of body 1 (its slider
-        # spans 0 to ``n − 1`` once the state is shown); at its largest ("all of them") it stays at the largest
-        # when ``n`` changes.  A change of the chain or its swing restarts the time at 0 unless the
-        # time is set with it.  A focus on a body that is gone falls back to "all" (the base).
-        # Returns Controls that follow: ``outboard bodies`` and ``time (s)``.
+        # "outboard bodies" stays within the n − 1 bodies outboard of body 1 (at "all" it stays "all");
+        # a change of the chain or its swing restarts the time at 0
         out = {}
         n = int(values["bodies n"])
         k = int(values["outboard bodies"])
@@ -189,8 +159,6 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         return out
 
     def disabled(self, values):
-        # Controls that would change nothing in the state ``values`` describe, with the reason.
-        # Returns ``{control: reason}``.
         out = {}
         n = int(values["bodies n"])
         if n == 1:
@@ -199,8 +167,6 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         return out
 
     def explain(self):
-        # Every symbol and readout name on screen: one-line meaning and thesis equation (the focused body's
-        # symbols as the figure names them).
         focus = str(self.values.get("focus", "all"))
         j = focus.split()[1] if focus.startswith("body ") else 1
         kk = subscript(int(j))
@@ -217,10 +183,8 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
             **self.meanings,
         }
 
-
     # ------------------------------------------------------------------ handles and Play
     def handles(self):
-        # The draggable handles: the pole ``a``, the chain's tip (bend ``φ``), the first body's end (``θ₁``).
         def base_where():
             return None if self.state is None else tuple(self.state["joints"][1])
 
@@ -233,22 +197,13 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
                 Handle("first body", base_where, base_drag)]
 
     def focus_options(self):
-        # The bodies to focus on: the focused body's conics, axes and chart are shown, the rest fade.
-        # Returns ``"body 1"`` ... ``"body n"`` (the base adds ``"all"``: body 1 labelled, nothing faded);
-        # before the first state is shown, every body of the longest chain (so that a focus given
-        # to the constructor with ``n`` is taken).
+        # before the first state every body of the longest chain: a focus given with "bodies n" is taken
         w = getattr(self, "controls", {}).get("bodies n")
         n = NMAX if w is None or getattr(self, "state", None) is None else int(w.value)
         return [f"body {i}" for i in range(1, n + 1)]
 
     def play_step(self, values, dt):
-        # The time ``dt`` seconds on (Play); the swing itself is read in :meth:`compute`.
-        # The state at a time depends on that time alone (module docstring), so any ``dt`` is exact.
-        # Returns ``{"time (s)": t + dt}`` (at most the end of the range); None at its end (Play stops).
-        t = float(values[TIME])
-        if t >= T_MAX:
-            return None
-        return {TIME: min(t + float(dt), T_MAX)}
+        return time_step(values, dt, TIME, T_MAX)
 
     # ------------------------------------------------------------------ physics
     def _key(self, v):
@@ -260,8 +215,7 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         return np.array([math.radians(v["base θ₁ (deg)"])] + [math.radians(v["bend φ (deg)"])] * (n - 1))
 
     def _motion(self, v) -> Motion:
-        """The swing of the configuration of the control values ``v`` from rest: ``y = (q, q̇, W)`` at any
-        time (kept per configuration)."""
+        """The swing of the configuration ``v`` from rest: ``y = (q, q̇, W)`` (kept per configuration)."""
         from planargeo.scenes.chain import chain_accelerations as forward_dynamics
 
         key = self._key(v)
@@ -277,7 +231,6 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         return cached(self._motions, key, lambda: Motion(rhs, y0, chunk=1.0))
 
     def compute(self, values, changed):
-        # The shown configuration's inertias, axes, convergence chart and (when swinging) energies.
         from planargeo.simulate.integrate import energy
 
         n, lam = int(values["bodies n"]), float(values["λ = L/ρ"])
@@ -301,8 +254,7 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         return 0 if focus == "all" else min(int(focus.split()[1]), n) - 1
 
     def _view(self, st) -> tuple[float, float, float, float]:
-        """The view of the state ``st``: the chain, the centres, the pole and the drawn conics on the left,
-        the chart on the right."""
+        """The view: the chain, the centres, the pole and the conics on the left, the chart on the right."""
         v = self.values
         n = st["n"]
         pts = [st["joints"], st["centre"], st["centre_rigid"], [[v["pole x"], v["pole y"]]]]
@@ -316,20 +268,17 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         return chain_view(box, self.figure_px, MARGIN)
 
     def scene_picture(self, state, view=None):
-        # The state's picture, built natively (:func:`planargeo.draw.pictures.articulated.articulated_picture`).
         v = self.values
         return articulated_picture(state, k=self._focus_k(state["n"]), focus_all=v.get("focus", "all") == "all",
                                    rigid=bool(v["rigid inertias"]), axes=bool(v["percussion axes"]),
                                    view=view or self._view(state), size=self.figure_px)
 
     def readout_of(self, state):
-        # The readout of the state ``state`` (the focused body's ``Aₖ``, its centre, the pole, the energies).
         v = self.values
         n = state["n"]
         k = self._focus_k(n)
         pts = state["joints"]
         self._span(n)                                  # the slider spans the bodies outboard of body 1
-        # readout
         Ak = state["A"][k]
         zero = float(self.zero_tol) * float(self.scale)
         Aj = inertia_at(Ak, pts[k])

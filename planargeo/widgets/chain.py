@@ -21,6 +21,7 @@ from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.mechanics.subspaces import T_of
 from planargeo.scenes.chain import chain_workspace
 from planargeo.simulate.integrate import energy
+from planargeo.widgets._explorer import time_step
 from planargeo.widgets._motion import Motion, refusal_on_picture
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
@@ -558,12 +559,8 @@ class ChainExplorer(Explorer):
         return drag
 
     def play_step(self, values: dict, dt: float):
-        # the time dt on; the state at t depends on t alone, so any dt is exact
-        t = float(values[TIME])
-        end = float(self.controls[TIME].max)
-        if t >= end:
-            return None
-        return {TIME: min(t + float(dt), end)}
+        # the state at t depends on t alone, so any dt is exact
+        return time_step(values, dt, TIME, float(self.controls[TIME].max))
 
     def simulate(self, duration: float | None = None, *, allow_long: bool = False) -> float:
         """Integrate the motion of the shown initial state ahead of time (what Play and the time slider show).

@@ -1,22 +1,9 @@
 """Chapter 4's constructions one step at a time, like a construction protocol (thesis 4.2–4.7).
 
-A *construction* menu offers every construction that
-:mod:`planargeo.scenes.construction` knows: twist addition, wrench addition,
-velocity and acceleration kinematics across a joint, the Newton–Euler balance
-of one body, and a pole dragged through infinity.  A *step* slider draws the
-construction up to that step; the caption under the drawing names the step and
-its equation, earlier steps stay (faded, at full strength or hidden: the
-*earlier steps* buttons), later ones are hidden.  Every input (poles, rates,
-force lines, the joint, the centre of mass) has a slider and, where it is a
-point, a drag handle: dragging redoes the whole construction.  The sliders of
-inputs the chosen construction does not use are disabled (and hidden).  The
-*key* shows what each colour and mark stands for (a pole, a force line, a
-construction line...).  The steps come from
-:func:`planargeo.scenes.construction.construct`;
-:func:`planargeo.draw.pictures.construction.construction_picture` draws them.
-
-For slides, :meth:`ConstructionExplorer.export_layers` writes an SVG with
-every step in its own layer, ``<g id="step-K-name">``, to reveal one by one.
+A menu picks a construction of :mod:`planargeo.scenes.construction`; a *step* slider draws it
+up to that step, captioned with the step's equation.  Every input has a slider and, where it is
+a point, a drag handle; :meth:`ConstructionExplorer.export_layers` writes an SVG with one layer
+per step, for slides.
 
 Examples
 --------
@@ -24,13 +11,9 @@ Examples
 ...                           x2=4.0 - 1.0, y2=0.0, w2=3.0)
 >>> ex.readout_values["pole of v₃"]                 # β = 3/4 of the way from Q₁ to Q₂ (4.12)
 (2.25, 0.0)
->>> ex.set(step=1).caption
-'Step 1/3: Q₁, Q₂: the poles of v₁ and v₂ (4.10)'
 >>> _ = ex.drag("v2", (3.0, 0.0), (3.0, 1.0), steps=2)   # the whole construction follows
 >>> ex.readout_values["pole of v₃"]
 (2.25, 0.75)
->>> ex.set(construction="velocity").readout_values["pole of vᵢ"]   # every construction, one menu
-(0.0, 0.4)
 """
 from __future__ import annotations
 
@@ -67,8 +50,7 @@ CHOICES = [(title, key) for key, (title, _) in CONSTRUCTIONS.items()]
 ARM = 1.0
 FADED = 0.4
 
-#: the construction's words, kept as data (``planargeo/data/quantities.toml``, its ``[explorer.*]`` tables): what each parameter's slider
-#: says per construction, the readout's units, the meanings of each construction's symbols and rows
+#: the construction's words, kept as data: slider labels, readout units, meanings
 _DATA = explorer_data("construction")
 _LABELS = _DATA["labels"]
 
@@ -127,13 +109,9 @@ class ConstructionExplorer(Explorer):
     Parameters
     ----------
     construction : str
-        The construction shown first, a key of
-        :data:`planargeo.scenes.construction.CONSTRUCTIONS`: ``"twist_sum"``,
-        ``"wrench_sum"``, ``"velocity"``, ``"acceleration"``, ``"newton_euler"`` or
-        ``"through_infinity"``.  The *construction* menu offers all of them.
+        The construction shown first, a key of :data:`planargeo.scenes.construction.CONSTRUCTIONS`.
     **kwargs
-        As :class:`~planargeo.widgets.base.Explorer`: ``display``, and initial
-        control values (the construction's parameters, ``step``).
+        As :class:`~planargeo.widgets.base.Explorer`: ``display`` and initial control values.
 
     Raises
     ------
@@ -187,7 +165,7 @@ class ConstructionExplorer(Explorer):
         return len(construct(self.construction).steps)
 
     def _follow_kind(self, kind: str, n: int | None = None) -> None:
-        """The step slider's range (``n`` steps, default the construction's) and the sliders shown follow ``kind``."""
+        """The step slider's range (``n`` steps) and the sliders shown follow ``kind``."""
         if kind not in CONSTRUCTIONS:
             return
         if n is None:
@@ -209,7 +187,6 @@ class ConstructionExplorer(Explorer):
 
     # ------------------------------------------------------------------ explorer
     def make_controls(self):
-        # The construction menu, the step slider, how earlier steps look, one slider per parameter.
         n = len(construct(self._first).steps)
         c = {"construction": W.Dropdown(options=CHOICES, value=self._first, description="construction",
                                         layout=W.Layout(width="310px")),
@@ -223,7 +200,7 @@ class ConstructionExplorer(Explorer):
         return c
 
     def adjust(self, values, changed):
-        # A new construction starts from its own defaults (those not set with it), showing every step.
+        # a new construction starts from its own defaults (those not set with it), showing every step
         kind = values["construction"]
         if self._shown_kind is None or kind == self._shown_kind:
             return {}
@@ -234,7 +211,6 @@ class ConstructionExplorer(Explorer):
         return out
 
     def disabled(self, values):
-        # The sliders of parameters the chosen construction does not use, with the reason.
         kind = values["construction"]
         used = set(parameters(kind))
         title = CONSTRUCTIONS[kind][0].split(" (")[0].lower()
@@ -244,19 +220,15 @@ class ConstructionExplorer(Explorer):
         return out
 
     def explain(self):
-        # The meaning of every symbol the chosen construction shows, with its thesis equation.
         kind = self.values["construction"] if self.state is None else self.construction
         return {**_DATA[kind], **_DATA["common"]}
 
     def compute(self, values, changed):
-        # The construction for the parameter values (may raise a named PlanargeoError).
         kind = values["construction"]
         return {"kind": kind, "c": construct(kind, **{k: values[k] for k in parameters(kind)})}
 
     def readout_of(self, state):
-        # The readout of ``state``: the step, its equation, the construction's numbers, the special case.
-        # The step's full caption (:attr:`caption`) is drawn above the picture; the step
-        # slider's range and the sliders shown follow the construction.
+        # the step's full caption is drawn on the picture; the sliders shown follow the construction
         c = state["c"]
         self._shown_kind = state["kind"]
         n = len(c.steps)
@@ -298,28 +270,21 @@ class ConstructionExplorer(Explorer):
 
     # ------------------------------------------------------------------ handles
     def handles(self) -> list[Handle]:
-        # Drag handles: the construction's input points, and force directions by their arrow tip.
         return ([xy_handle(self, *p) for p in _POINTS[self.construction]]
                 + [arrow_handle(self, *d, arm=ARM, flip=True) for d in _DIRECTIONS.get(self.construction, [])])
 
     # ------------------------------------------------------------------ export
     def export_layers(self, path=None) -> Path:
-        """Write the whole construction as an SVG with one ``<g id="step-K-name">`` per step.
-
-        Every step is drawn at full strength, each in its own group, for slides
-        that reveal the construction step by step; the view on screen is not
-        changed.  The file is written atomically.
+        """Write the whole construction as an SVG with one ``<g id="step-K-name">`` per step, all at full strength.
 
         Parameters
         ----------
         path : str or Path, optional
-            Where to write (default: ``planargeo-construction-<kind>-layers.svg``
-            in the export folder or the current folder).
+            Where to write (default: ``planargeo-construction-<kind>-layers.svg`` in the export folder).
 
         Returns
         -------
         Path
-            The file written.
 
         Raises
         ------
@@ -359,15 +324,13 @@ def layered_svg(pic: dict, step_ids: list[str]) -> bytes:
     Parameters
     ----------
     pic : dict
-        A construction's picture (:func:`~planargeo.draw.pictures.construction.construction_picture`),
-        whose elements carry their ``step`` (1-based).
+        A construction's picture, whose elements carry their ``step`` (1-based).
     step_ids : list of str
         The group id of each step.
 
     Returns
     -------
     bytes
-        The SVG document (the same bytes for the same picture).
     """
     import xml.etree.ElementTree as ET
 

@@ -1,36 +1,12 @@
 """Slider-crank explorer: a closed kinematic loop and every force inside it (thesis 9.3-9.6, 9.61, Fig 9.3).
 
-The crank angle ``ψ`` and speed ``ψ̇`` at ``t = 0`` set the motion (the default
-23° is the thesis's 0.4 rad on the slider's 1° grid); the loop closure gives the
-rod and piston angles ``θ``, ``φ``.  The constrained algorithm
-(:func:`planargeo.scenes.slider_crank.slider_crank_solve`, the scene's own solve)
-gives the closed-loop accelerations and **every pin and bearing force of the
-loop** (9.61, :attr:`planargeo.algorithms.loops.LoopSolution.reactions`): ``f₁``
-at the crank pivot, ``f₂`` at the crank pin, ``f₃`` at the wrist pin (each the
-wrench on a body from its parent) and ``F₃`` at the slider bearing (``-F₃`` on
-the piston, 9.71).  Each is drawn as its line of action through its joint with
-an arrow of the force and a label, placed clear of the other labels; the
-readout gives their magnitudes (N), the bearing's couple and the drive torque.
-
-*Play* advances the scene time ``t``; the state at ``t`` is integrated from
-``t = 0`` with :func:`planargeo.simulate.loops.simulate_loops`
-(:func:`~planargeo.scenes.slider_crank.slider_crank_advance` from checkpoint to
-checkpoint, so the controls alone decide the state), free or with the crank
-driven at constant speed, in slow motion (:attr:`SliderCrankExplorer.time_scale`
-scene seconds per second at speed 1×, shown beside the speed menu); the
-overlays follow every frame, the readout shows the energy and its drift since
-``t = 0`` (free crank) and the closure drift (the largest gap the integration
-opened in the loop), and names the dead centres (toggle positions: crank and
-rod in line) as the crank passes them.  One update spends at most
-:data:`UPDATE_EVALS` evaluations of the loop's dynamics (a few seconds, like the chain
-explorer's time slider, :class:`planargeo.widgets._motion.Budget`): a farther time is refused
-by name, with the limit, the checkpoints computed so far kept, so that asking again (or Play)
-goes on from there.
-
-Handles: drag the crank pin (sets ``ψ``) or the piston (sets its height; the
-crank keeps its side).  A configuration that cannot be assembled (rod too
-short, piston out of reach) or whose loop closure is singular is refused: the
-last good state stays and the message names the reason.
+The crank angle ``ψ`` and speed ``ψ̇`` at ``t = 0`` set the motion; the constrained algorithm
+(:func:`planargeo.scenes.slider_crank.slider_crank_solve`) gives the closed-loop accelerations and
+every pin and bearing force of the loop (9.61, 9.71), drawn as lines of action.  *Play* advances
+the scene time in slow motion (:attr:`SliderCrankExplorer.time_scale`), free or with the crank
+driven, from checkpoint to checkpoint (the controls alone decide the state; one update spends at
+most :data:`UPDATE_EVALS` evaluations); the readout names the dead centres passed.  Drag the
+crank pin (sets ``ψ``) or the piston (sets its height).
 """
 from __future__ import annotations
 
@@ -55,17 +31,15 @@ __all__ = ["SliderCrankExplorer"]
 INITIAL = ("crank angle (deg)", "crank speed", "drive", "rod length", "gravity")
 #: scene seconds between the checkpoints of a run
 CHECKPOINT = 0.02
-#: end of the time slider (scene seconds; 100 s of Play at 1×, then Play ends or loops): the state at t
-#: costs an integration from 0 to t, about 1800 dynamics evaluations per scene second
+#: end of the time slider (scene seconds; about 1800 dynamics evaluations per scene second)
 T_END = 10.0
-#: evaluations of the loop's dynamics one update may spend (the budget of the chain explorer's time slider,
-#: :data:`planargeo.widgets._motion.MAX_EVALS`, in the same seconds: one evaluation of the closed loop costs
-#: about 40 of a 20-link chain's, ~0.8 ms; about 2.4 scene seconds of the default crank per update)
+#: evaluations of the loop's dynamics one update may spend (~0.8 ms each: the chain explorer's
+#: MAX_EVALS in the same seconds; about 2.4 scene seconds of the default crank)
 UPDATE_EVALS = 6_000
 
 
 def wrap_message(text: str, width: int = 38) -> str:
-    """``text`` broken into lines of at most ``width`` characters, so that a refused state's message stays inside the picture.
+    """``text`` broken into lines of at most ``width`` characters (a refusal inside the picture).
 
     Parameters
     ----------
@@ -93,12 +67,12 @@ class SliderCrankExplorer(SceneTime, Explorer):
     Parameters
     ----------
     **kw
-        Passed to :class:`~planargeo.widgets.base.Explorer` (``display``, initial control values...).
+        Passed to :class:`~planargeo.widgets.base.Explorer`.
 
     Raises
     ------
     InputError
-        An unknown control or a bad initial value (:class:`~planargeo.widgets.base.Explorer`).
+        An unknown control or a bad initial value.
     PlanargeoError
         The initial values describe a configuration that cannot be assembled.
 
@@ -117,11 +91,9 @@ class SliderCrankExplorer(SceneTime, Explorer):
     figsize = (5.6, 6.2)
     display_controls = ("reaction forces", "velocity poles", "acceleration poles")
     initial, t_end = INITIAL, T_END
-    #: scene seconds per second of Play at speed 1× (slow motion: the crank turns at ~20 rad/s; the base
-    #: shows the factor beside the speed menu)
+    #: scene seconds per second of Play at speed 1× (slow motion: the crank turns at ~20 rad/s)
     time_scale = 0.1
-    #: relative tolerance of the Play integration (DOP853; energy drift ~1e-6 per crank turn, most of it as
-    #: the crank passes a dead centre: 4e-6 over the first 5 s of the default motion)
+    #: relative tolerance of the Play integration (DOP853; energy drift ~1e-6 per crank turn)
     play_rtol = 1e-7
     units = {"t": "s", "crank angle ψ": "°", "crank speed ψ̇": "rad/s", "rod angle θ": "°", "piston angle φ": "°",
              "piston height h": "m", "piston speed": "m/s", "piston acceleration": "m/s²", "ψ̈ crank": "rad/s²",
@@ -152,13 +124,11 @@ class SliderCrankExplorer(SceneTime, Explorer):
         return cached(self._models, (l, g), lambda: slider_crank_model(l=l, g=g, **self.params))
 
     def make_controls(self):
-        # The controls: crank angle and speed, drive, rod length, gravity and the overlays.
         return {
             "crank angle (deg)": Step(-180, 180, 1, 23.0,
                                       "crank angle ψ at t = 0 (°)").make("crank angle (deg)"),
             "crank speed": Step(-100, 100, 0.5, 20.0, "crank speed ψ̇ at t = 0 (rad/s)").make("crank speed"),
-            "t (s)": W.Text(value="0", description="t (s)", disabled=True,
-                            tooltip="set by Play (a new initial state starts it at 0)"),
+            "t (s)": self.time_control(),
             "drive": W.ToggleButtons(options=("free", "constant-speed"), value="free", description="crank"),
             "rod length": Step(1.0, 8.0, 0.01, 5.0, "rod length l (m)").make("rod length"),
             "gravity": Step(0.0, 20.0, 0.01, 9.81, "g (m/s²)").make("gravity"),
@@ -169,7 +139,7 @@ class SliderCrankExplorer(SceneTime, Explorer):
 
     # ----------------------------------------------------------------- handles
     def handles(self):
-        # Drag the crank pin (sets ψ) or the piston (sets its height, the crank keeps its side).
+        # the crank pin sets ψ; the piston sets its height, the crank keeps its side
         def pin():
             return None if self.state is None else tuple(self.state["sol"].data.pose[1, :2])
 
@@ -199,11 +169,7 @@ class SliderCrankExplorer(SceneTime, Explorer):
 
     # ------------------------------------------------------------------ state
     def _run_state(self, model, run, t, l, drive):
-        """``(psi, psidot, drift, passed)`` at scene time ``t`` of ``run`` (:func:`run_to`, ``CHECKPOINT``
-        scene seconds apart).  One call spends at most :data:`UPDATE_EVALS` evaluations (a :class:`Budget`,
-        give or take the last checkpoint's): a time beyond raises its
-        :class:`~planargeo.errors.SizeLimitError`, the checkpoints done kept in ``run``.
-        """
+        """``(psi, psidot, drift, passed)`` at scene time ``t`` of ``run``, at most :data:`UPDATE_EVALS` spent."""
         r = self.params["r"]
         budget = Budget(UPDATE_EVALS)
 
@@ -225,7 +191,7 @@ class SliderCrankExplorer(SceneTime, Explorer):
         return psi, psidot, drift, passed
 
     def compute(self, values, changed):
-        # The state at time ``t`` of the run from the initial crank state; the loop closed and solved (9.5, 9.61).
+        # the state at time t of the run from the initial crank state; the loop closed and solved (9.5, 9.61)
         psi0 = math.radians(values["crank angle (deg)"])
         l, g = float(values["rod length"]), float(values["gravity"])
         r, thick = self.params["r"], self.params["t"]
@@ -259,7 +225,7 @@ class SliderCrankExplorer(SceneTime, Explorer):
         Parameters
         ----------
         st : dict
-            A state of :meth:`compute`: its time, the dead centres passed and its configuration count.
+            A state of :meth:`compute`.
 
         Returns
         -------
@@ -271,7 +237,6 @@ class SliderCrankExplorer(SceneTime, Explorer):
         return f"passing {passed[-1][1]}" if recent else (f"at {conf}" if conf else "")
 
     def scene_picture(self, state, view=None):
-        # The state's picture built natively (:func:`planargeo.draw.pictures.slider_crank.slider_crank_picture`).
         vals = self.values
         overlays = {k: bool(vals[k]) for k in ("reaction forces", "velocity poles", "acceleration poles")}
         return slider_crank_picture(state["sol"].data.pose, r=state["r"], t=state["t"], q=state["q"], reactions=state["reactions"],
@@ -280,7 +245,6 @@ class SliderCrankExplorer(SceneTime, Explorer):
                                     banner=self.banner_of(state), size=self.figure_px)
 
     def readout_of(self, state):
-        # The readout of the state ``state``: time, angles, piston, the pin and bearing forces, energy, drift.
         sol = state["sol"]
         vel, acc = state["v"], state["a"]
         reactions = state["reactions"]
@@ -309,7 +273,6 @@ class SliderCrankExplorer(SceneTime, Explorer):
         return out
 
     def explain(self):
-        # Every symbol and readout name on screen, with its thesis equation.
         return {
             "t": "scene time since the start of the motion (Play advances it, 0.1 s per second at 1×)",
             "ψ": "crank angle: the coordinate of joint 1 (9.6)",
@@ -350,23 +313,16 @@ class SliderCrankExplorer(SceneTime, Explorer):
             "passing bottom dead centre": "the crank is turning through the bottom dead centre",
         }
 
-    def disabled(self, values):
-        # The time is set by Play.
-        return {"t (s)": "set by Play (a new initial state starts it at 0)"}
 
     def figure_message(self, exc):
-        # Short text on the picture for a refused state (rod too short, singular closure...).
         text = str(exc)
-        if "rod too short" in text:
-            short = "rod too short: it cannot reach the slider at this crank angle"
-        elif "cannot reach height" in text:
-            short = "the piston cannot reach that height"
-        elif "piston pin on the crank pivot" in text:
-            short = "singular configuration: folded dead centre, the piston pin is on the crank pivot"
-        elif "singular" in text:
-            short = "singular configuration: the rod lies along the horizontal"
-        elif refusal_on_picture(text):
-            short = refusal_on_picture(text)
-        else:
-            short = super().figure_message(exc)
-        return wrap_message(short)
+        short = next((s for key, s in _SHORT if key in text), None)
+        return wrap_message(short or refusal_on_picture(text) or super().figure_message(exc))
+
+
+#: the short text drawn for a refused state, by a part of its message (the first that matches)
+_SHORT = (("rod too short", "rod too short: it cannot reach the slider at this crank angle"),
+          ("cannot reach height", "the piston cannot reach that height"),
+          ("piston pin on the crank pivot",
+           "singular configuration: folded dead centre, the piston pin is on the crank pivot"),
+          ("singular", "singular configuration: the rod lies along the horizontal"))

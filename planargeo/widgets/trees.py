@@ -1,32 +1,12 @@
 """Trees and loops explorer: the nine-link system of thesis Fig 9.1 / 9.2 and every force inside its loops.
 
-Open the two loops and the nine links form a tree (Fig 9.1, solved in stacked
-form, 9.1-9.2); close them with pins between the tips of bodies 4 and 7 and of
-bodies 8 and 9 (Fig 9.2) and the constrained algorithm (9.4-9.5) adds the
-contact forces ``F₁``, ``F₂``.  Every pin force of the mechanism is drawn at its
-joint, updated every frame: the nine joint wrenches ``f₁ … f₉`` (9.61: the wrench
-on body ``i`` from its parent, 9.41 for the open tree) and the contact forces.
-A *focus* on one of them draws it bold and labelled and fades the others.
-
-*Play* advances the scene time ``t`` (a control of its own); the state at ``t``
-is integrated from ``t = 0`` with :func:`planargeo.scenes.trees.tree_advance`
-from checkpoint to checkpoint, so that the controls alone decide it.  One update
-spends at most :data:`UPDATE_EVALS` evaluations of the dynamics: a farther time
-is refused in words that say how far it got, the checkpoints kept, so that
-asking again (or Play) goes on from there.  With
-equal links the loop 5-6-8-9 is a rhombus that lies flat now and then; the
-motion is carried through those singular poses (counted in the readout).  The
-default lets the links coast without gravity (raise ``g`` to see them fall:
-the integration then costs about ten times more).  The readout shows the
-energy and its drift since ``t = 0`` and the closure drift ``|φ|`` (the largest
-gap the integration opened at a pin).
-
-Handles: drag the tip of body 1 (its angle about the pivot) or the tip of body 2
-(its angle).  The pose at ``t = 0`` follows from the two angles alone
-(:func:`planargeo.scenes.trees.tree_pose`: the Fig 9.2 pose turned, then body 2
-turned to its angle with the loops closed step by step), so one pair of angles
-gives one pose whatever the history; a pose whose loops cannot close is
-refused: the last good state stays and the message names the reason.
+Open, the nine links form a tree (Fig 9.1, 9.1-9.2); closed with pins between the tips of bodies
+4 and 7 and of 8 and 9 (Fig 9.2), the constrained algorithm (9.4-9.5) adds the contact forces
+``F₁``, ``F₂``.  Every pin force ``f₁ … f₉`` (9.61; 9.41 open) and contact force is drawn at its
+joint; *focus* picks one.  *Play* advances the scene time from checkpoint to checkpoint
+(:func:`planargeo.scenes.trees.tree_advance`: the controls alone decide the state; one update
+spends at most :data:`UPDATE_EVALS` evaluations), through the poses where a loop lies flat.
+Drag the tips of bodies 1 and 2 to set their angles (:func:`~planargeo.scenes.trees.tree_pose`).
 """
 from __future__ import annotations
 
@@ -51,10 +31,8 @@ __all__ = ["TreeExplorer"]
 N = 9
 #: controls that set the state at t = 0 (a change starts the time again)
 INITIAL = ("speed", "loops", "gravity", "mass", "body 1 angle (deg)", "body 2 angle (deg)")
-#: default gravity (m/s²) and speed (rad/s): the links coast without gravity, slowly enough for Play to keep
-#: up with real time; under gravity the nine links fall through a pose where a loop lies flat every
-#: fraction of a second (:func:`~planargeo.scenes.trees.tree_advance` steps over them, at about ten times
-#: the cost)
+#: default gravity (m/s²) and speed (rad/s): the links coast, slowly enough for Play to keep up with
+#: real time (under gravity a loop lies flat every fraction of a second: ten times the cost)
 DEFAULT_G, DEFAULT_SPEED = 0.0, 0.25
 #: relative tolerance of the Play integration (DOP853)
 PLAY_RTOL = 1e-7
@@ -62,12 +40,10 @@ PLAY_RTOL = 1e-7
 CHECKPOINT = 0.05
 #: end of the time slider (s): Play runs a minute; the state at t costs an integration from 0 to t
 T_END = 60.0
-#: evaluations of the nine links' dynamics one update may spend (a :class:`~planargeo.widgets._motion.Budget`,
-#: like the slider-crank's): one evaluation costs about 2 ms under load, the default coasting links spend
-#: about 280 per scene second (about 1,700 under gravity or at 3 rad/s): one update reaches about 7 scene
-#: seconds of the default (0.7-1.5 under gravity), and a farther time is refused after about 5-8 s (measured
-#: on a loaded 2-core machine)
+#: evaluations of the dynamics one update may spend (~2 ms each under load; the default spends about
+#: 280 per scene second, 1,700 under gravity: one update reaches about 7 scene seconds)
 UPDATE_EVALS = 2_500
+
 
 class TreeExplorer(Described, SceneTime, Explorer):
     """The tree of Fig 9.1 and the constrained tree of Fig 9.2 with every pin and contact force, and Play.
@@ -100,9 +76,6 @@ class TreeExplorer(Described, SceneTime, Explorer):
         super().__init__(**kw)
 
     def make_controls(self):
-        # The controls: speed, loops, gravity, mass, the two dragged angles, the time and the overlays.
-        t = W.Text(value="0", description="t (s)", disabled=True,
-                   tooltip="set by Play (a new initial state starts it at 0)")
         return {
             "speed": Step(-3, 3, 0.05, DEFAULT_SPEED, "speed (rad/s)").make("speed"),
             "loops": W.ToggleButtons(options=("closed (Fig 9.2)", "open (Fig 9.1)"), value="closed (Fig 9.2)",
@@ -111,14 +84,13 @@ class TreeExplorer(Described, SceneTime, Explorer):
             "mass": Step(0.1, 5, 0.1, 1.0, "link mass (kg)").make("mass"),
             "body 1 angle (deg)": Step(-180, 180, 1, FIG91_ANGLES[0], "body 1 angle (°)").make("body 1 angle (deg)"),
             "body 2 angle (deg)": Step(-180, 360, 1, FIG91_ANGLES[1], "body 2 angle (°)").make("body 2 angle (deg)"),
-            "t (s)": t,
+            "t (s)": self.time_control(),
             "velocity poles": W.Checkbox(value=False, description="velocity poles", indent=False),
             "acceleration poles": W.Checkbox(value=False, description="acceleration poles", indent=False),
             "reaction forces": W.Checkbox(value=True, description="pin and contact forces", indent=False),
         }
 
     def focus_options(self):
-        # The reactions one can focus on: the joints ``f₁ … f₉`` and, loops closed, the contacts ``F₁``, ``F₂``.
         loops = self.controls["loops"].value if "loops" in getattr(self, "controls", {}) else "closed"
         closed = str(loops).startswith("closed")
         return [symbol_of(f"f_{i + 1}") for i in range(N)] + (["F₁", "F₂"] if closed else [])
@@ -129,7 +101,6 @@ class TreeExplorer(Described, SceneTime, Explorer):
         Parameters
         ----------
         closed : bool
-            The loops of Fig 9.2 closed.
 
         Returns
         -------
@@ -164,7 +135,6 @@ class TreeExplorer(Described, SceneTime, Explorer):
 
     # ---------------------------------------------------------------- handles
     def handles(self):
-        # Drag the tip of body 1 (its angle) or the tip of body 2 (its angle); the loops close again.
         def tip(i):
             def where():
                 if self.state is None:
@@ -172,12 +142,10 @@ class TreeExplorer(Described, SceneTime, Explorer):
                 return tuple(self.state["tips"][i])
             return where
 
-        def near(deg, ref):
-            """``deg`` turned by whole turns to lie nearest ``ref`` (both in degrees)."""
+        def near(deg, ref):      # turned by whole turns to lie nearest ref
             return deg + 360.0 * round((ref - deg) / 360.0)
 
-        def current():
-            """Absolute angles (°) of bodies 1 and 2 as shown (Play moves them away from the controls)."""
+        def current():           # the angles shown (Play moves them away from the controls)
             th = np.degrees(self.state["sol"].data.pose[:2, 2])
             return float(th[0]), float(th[1])
 
@@ -199,19 +167,13 @@ class TreeExplorer(Described, SceneTime, Explorer):
         return [Handle("tip of body 1", tip(0), drag1), Handle("tip of body 2", tip(1), drag2)]
 
     def mechanism_points(self):
-        # Every joint and link tip of the pose shown (the view holds them).
         if self.state is None:
             return np.zeros((0, 2))
         return np.vstack([self.state["sol"].data.pose[:, :2], self.state["tips"]])
 
     # ------------------------------------------------------------------- Play (SceneTime: t from 0 to T_END)
     def _run_state(self, model, run: dict, t: float):
-        """``(q, qd, drift, events)`` at scene time ``t`` of ``run`` (:func:`run_to`, ``CHECKPOINT`` seconds apart).
-
-        One call spends at most :data:`UPDATE_EVALS` evaluations (a :class:`Budget`, give or take the last
-        checkpoint's): a time beyond raises its :class:`~planargeo.errors.SizeLimitError`, the checkpoints
-        done kept in ``run``, so that asking again goes on from there.
-        """
+        """``(q, qd, drift, events)`` at scene time ``t`` of ``run``, at most :data:`UPDATE_EVALS` spent."""
         budget = Budget(UPDATE_EVALS)
 
         def step(state, h, t0):
@@ -227,11 +189,7 @@ class TreeExplorer(Described, SceneTime, Explorer):
         return q, qd, drift, events
 
     def compute(self, values, changed):
-        # The state at time ``t`` of the run from the initial controls; one solve (9.5 or 9.39-9.43) with reactions.
-        # The pose at ``t = 0`` depends on the two angles alone (the rule of
-        # :func:`~planargeo.scenes.trees.tree_pose`), and the run on the initial
-        # controls alone (fixed checkpoints): the same controls give the same state
-        # after any history.
+        # one solve (9.5 or 9.39-9.43); the pose at t = 0 depends on the two angles alone
         closed = values["loops"].startswith("closed")
         model = self.model_for(closed, float(values["mass"]), float(values["gravity"]))
         _c, L, dof = self.geometry(closed)
@@ -267,7 +225,6 @@ class TreeExplorer(Described, SceneTime, Explorer):
         return st
 
     def scene_picture(self, state, view=None):
-        # The state's picture built natively (:func:`planargeo.draw.pictures.trees.trees_picture`).
         vals = self.values
         overlays = {k: bool(vals[k]) for k in ("reaction forces", "velocity poles", "acceleration poles")}
         contacts = [c.name for c in state["model"].contacts] if state["closed"] else []
@@ -276,7 +233,6 @@ class TreeExplorer(Described, SceneTime, Explorer):
                              view=view or self.limits, size=self.figure_px)
 
     def readout_of(self, state):
-        # The readout of the state ``state`` (and of the focus shown): energy, drifts, forces, accelerations.
         closed, model = state["closed"], state["model"]
         focus = self.values.get("focus", "all")
         reactions = {symbol_of(x.symbol): x for x in state["reactions"]}
@@ -310,7 +266,6 @@ class TreeExplorer(Described, SceneTime, Explorer):
         return out
 
     def explain(self):
-        # Every symbol and readout name on screen, with its thesis equation (the bodies' and forces' own).
         out = super().explain()
         for i in range(N):
             out[f"v{subscript(i + 1)}"] = f"velocity pole of body {i + 1}: the point it turns about now (section 4.5)"
@@ -331,11 +286,5 @@ class TreeExplorer(Described, SceneTime, Explorer):
             out[f"moment of {F} about its pin"] = f"moment of {F} about its own pin: 0 for a free pin (9.71)"
         return out
 
-    def disabled(self, values):
-        # The time is set by Play; the acceleration and velocity poles need a motion.
-        return {"t (s)": "set by Play (a new initial state starts it at 0)"}
-
     def figure_message(self, exc):
-        # Short text on the picture for a refused state: a time too far for one update in full (the base
-        # would cut it before "ask again"), anything else as the base writes it.
         return refusal_on_picture(str(exc)) or super().figure_message(exc)
