@@ -1,26 +1,16 @@
-"""Forward kinematics in world-frame, at-origin screw coordinates (thesis Chapter 2).
+"""Forward kinematics in world-frame, at-origin screw coordinates (thesis chapter 2).
 
 :func:`kinematics` walks the tree from the ground outwards and fills a
-:class:`planargeo.mechanics.model.Data` with, for every body ``i``:
+:class:`planargeo.mechanics.model.Data` (broadcast over batches of ``q``) with each body's pose
+and centre of mass, joint motion space ``s_i`` (a revolute joint at ``(x, y)`` is the point
+``[y, -x, 1]``, a prismatic one along ``d`` the ideal point ``[dx, dy, 0]``), inertia ``I_i``
+at the origin (4.58), twist ``v_i = v_{λ(i)} + s_i q̇_i`` (2.9, 3.32), bias acceleration
+``kappa_i`` (2.19, 3.33), applied wrench ``g_i`` (gravity plus ``f_ext``) and bias force
+``p_i = -(v_i×)^T I_i v_i - g_i`` (3.11, 3.34).
 
-* the world pose and centre of mass,
-* the joint motion space ``s_i`` (3×k unit twists at the global origin;
-  a revolute joint at ``(x, y)`` is the point ``[y, -x, 1]``, a prismatic
-  joint along ``d`` the ideal point ``[dx, dy, 0]``),
-* the spatial inertia ``I_i`` at the origin (4.58),
-* the twist ``v_i = v_{λ(i)} + s_i q̇_i`` (2.9, 3.32),
-* the bias acceleration ``kappa_i`` (2.19, 3.33),
-* the applied wrench ``g_i`` (gravity at the centre of mass plus ``f_ext``)
-  and the bias force ``p_i = -(v_i×)^T I_i v_i - g_i`` (3.11, 3.34).
-
-All arrays broadcast over leading batch dimensions of ``q``.
-
-Multi-dof joints: the columns of ``s_i`` are sequential screws (2.2); column
-``j`` is carried by the frame after the motions ``1..j-1``, so its rate is
-``ṡ_j = (v_{λ(i)} + Σ_{k<j} s_k q̇_k) × s_j`` and
-``kappa_i = v_{λ(i)} × s_i q̇_i + Σ_{k<j} (s_k q̇_k) × (s_j q̇_j)``.  For one-dof
-joints this is the printed ``v_i × s_i q̇_i`` (2.19); for multi-dof joints the
-printed form drops the cross terms (see ``docs/errata.md``).
+Multi-dof joints: the columns of ``s_i`` are sequential screws (2.2), so
+``kappa_i = v_{λ(i)} × s_i q̇_i + Σ_{k<j} (s_k q̇_k) × (s_j q̇_j)``; the printed 2.19 drops
+the cross terms (``docs/errata.md``).
 """
 from __future__ import annotations
 
@@ -30,25 +20,34 @@ import numpy as np
 
 from planargeo._validate import as_array
 from planargeo.errors import InputError, NonFiniteError, NumericOverflowError, ShapeError
+from planargeo.geometry._docs import entries
 from planargeo.mechanics.model import Data, Model
 
 __all__ = ["kinematics", "check_state", "cross_motion", "cross_force", "joint_axes"]
 
+#: Docstring entries shared here (:func:`planargeo.geometry._docs.entries`).
+_documented = entries({
+    "v": "v : numpy.ndarray, shape (..., 3)\n    Twist.",
+    "model": "model : Model\n    The mechanism.",
+    "q": "q : array_like, shape (..., nq)\n    Joint coordinates (m or rad each).",
+    "qd": "qd : array_like, shape (..., nq), optional\n    Joint velocities; None is zero.",
+    "f_ext": "f_ext : array_like, shape (..., N, 3), optional\n    External world wrenches at the origin, one per body.",
+})
 
+
+@_documented
 def cross_motion(v: np.ndarray, u: np.ndarray) -> np.ndarray:
     """``v × u`` for twists (thesis 2.16 projected; same as ``crm(v) @ u``).
 
     Parameters
     ----------
-    v : numpy.ndarray, shape (..., 3)
-        Twist.
+    {v}
     u : numpy.ndarray, shape (..., 3)
         Twist carried by ``v``.
 
     Returns
     -------
     numpy.ndarray, shape (..., 3)
-        ``v × u``.
 
     Examples
     --------
@@ -63,25 +62,19 @@ def cross_motion(v: np.ndarray, u: np.ndarray) -> np.ndarray:
     return out
 
 
+@_documented
 def cross_force(v: np.ndarray, f: np.ndarray) -> np.ndarray:
-    """``v ×* f = -(v×)^T f`` for a twist ``v`` and a wrench ``f`` (thesis 3.8, 3.11).
+    """``v ×* f = -(v×)^T f`` for a twist ``v`` and a wrench ``f`` carried by it (thesis 3.8, 3.11).
 
     Parameters
     ----------
-    v : numpy.ndarray, shape (..., 3)
-        Twist.
+    {v}
     f : numpy.ndarray, shape (..., 3)
-        Wrench carried by ``v``.
+        Wrench.
 
     Returns
     -------
     numpy.ndarray, shape (..., 3)
-        ``v ×* f``.
-
-    Examples
-    --------
-    >>> cross_force(np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]))
-    array([0., 1., 0.])
     """
     w = v[..., 2]
     out = np.empty(np.broadcast_shapes(v.shape, f.shape))
@@ -114,33 +107,23 @@ def _as_state(x, name: str, nq: int, finite: bool = True) -> np.ndarray:
     return a
 
 
+@_documented
 def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None, finite: bool = True):
     """Validate and broadcast a state; returns ``(q, qd, tau, f_ext, qdd, batch_shape)``.
 
-    ``q``, ``qd``, ``tau``, ``qdd`` have shape ``(..., nq)``; ``f_ext`` has
-    shape ``(..., N, 3)`` (world wrenches at the origin, one per body) or is
-    ``None``.  Every method of the package validates its state here, so they all
-    treat missing values alike: ``qd``, ``tau`` or ``qdd`` given as ``None`` are
-    zeros (returned as float64 zeros of shape ``(nq,)``); ``f_ext`` ``None`` is no
-    external load (returned as ``None``).  ``finite=False`` leaves out the test for NaN
-    and infinity (for a caller that makes it itself, as the compiled kernels do).
+    Every method of the package validates its state here: ``qd``, ``tau``, ``qdd`` given as
+    None are float64 zeros of shape ``(nq,)``, ``f_ext`` None stays None (no external load).
 
     Parameters
     ----------
-    model : Model
-        The mechanism.
-    q : array_like, shape (..., nq)
-        Joint coordinates (m or rad each).
-    qd : array_like, shape (..., nq), optional
-        Joint velocities; None is zero.
+    {model q qd}
     tau : array_like, shape (..., nq), optional
         Joint forces/torques (N or N·m); None is zero.
-    f_ext : array_like, shape (..., N, 3), optional
-        External world wrenches at the origin, one per body.
+    {f_ext}
     qdd : array_like, shape (..., nq), optional
         Joint accelerations; None is zero.
     finite : bool, optional
-        Check for NaN and infinity (default True).
+        Check for NaN and infinity (default True; the compiled kernels check themselves).
 
     Returns
     -------
@@ -161,16 +144,10 @@ def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None, fin
     >>> from planargeo.mechanics.model import chain_model
     >>> check_state(chain_model(2), [0.0, 0.0], [[1.0, 2.0]] * 4)[-1]
     (4,)
-    >>> check_state(chain_model(2), [0.0, 0.0])[1:3]            # qd, tau: None is zeros
-    (array([0., 0.]), array([0., 0.]))
     >>> check_state(chain_model(2), [0.0])
     Traceback (most recent call last):
     ...
     planargeo.errors.ShapeError: q must have shape (..., 2), got shape (1,)
-    >>> check_state(chain_model(2), [0.0, 1j])
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.InputError: q must be real, got complex values
     """
     nq, N = model.nq, model.N
     q = _as_state(q, "q", nq, finite)
@@ -206,12 +183,7 @@ def _rot2(c, s, x, y):
 
 
 def joint_axes(kind: str, ox, oy, phi, qi):
-    """World-frame motion space of one joint and the resulting body pose.
-
-    ``(ox, oy, phi)`` is the joint frame's world pose, ``qi`` (..., k) the joint
-    coordinates.  Returns ``(cols, (x, y, theta))`` with ``cols`` a list of k
-    arrays (..., 3): the unit twists at the origin (4.10, 5.51, 5.62; the
-    twin prismatic joint's two translations are 4.79 turned by ``phi``).
+    """World-frame motion space of one joint and the resulting body pose (4.10, 5.51, 5.62, 4.79).
 
     Parameters
     ----------
@@ -227,7 +199,7 @@ def joint_axes(kind: str, ox, oy, phi, qi):
     Returns
     -------
     tuple
-        ``(cols, (x, y, theta))``: k twists (..., 3) and the body's world pose.
+        ``(cols, (x, y, theta))``: k unit twists at the origin, each (..., 3), and the body's world pose.
 
     Raises
     ------
@@ -240,8 +212,6 @@ def joint_axes(kind: str, ox, oy, phi, qi):
     >>> np.round(np.array(cols), 12) + 0.0        # e = y, e⊥ = -x: ideal points
     array([[ 0.,  1.,  0.],
            [-1.,  0.,  0.]])
-    >>> np.round(pose, 12)                          # slid 0.5 along y, 0.25 along -x; not turned
-    array([0.75      , 2.5       , 1.57079633])
     """
     cols, pose = _axes(kind, ox, oy, phi, [qi[..., j] for j in range(qi.shape[-1])], np.cos(phi), np.sin(phi))
     return [np.stack(np.broadcast_arrays(*col), -1) for col in cols], pose
@@ -272,20 +242,13 @@ def _axes(kind: str, ox, oy, phi, q, c, s):
     raise AssertionError(kind)  # pragma: no cover (Joint validates kinds)
 
 
+@_documented
 def kinematics(model: Model, q, qd=None, f_ext=None) -> Data:
     """World-frame kinematics and bias terms of every body (thesis 3.6 step 2, 3.31-3.34).
 
     Parameters
     ----------
-    model : Model
-        The mechanism (bodies, joints, parents, gravity).
-    q : array_like (..., nq)
-        Joint coordinates.
-    qd : array_like (..., nq), optional
-        Joint speeds (zero if omitted).
-    f_ext : array_like (..., N, 3), optional
-        External wrenches at the origin applied to each body (the thesis's
-        ``g_i`` besides gravity).
+    {model q qd f_ext}
 
     Returns
     -------
@@ -295,19 +258,16 @@ def kinematics(model: Model, q, qd=None, f_ext=None) -> Data:
     Raises
     ------
     ShapeError, NonFiniteError, InputError
-        Arguments of the wrong shape, not finite, or complex (:func:`check_state`).
+        As for :func:`check_state`.
     NumericOverflowError
         If finite input gives fields that are not finite (e.g. speeds of 1e160).
 
     Examples
     --------
-    A unit link turning at 1 rad/s about the origin, at q = 0:
+    A unit link turning at 1 rad/s about the origin: the bias force pulls towards the pivot.
 
     >>> from planargeo.mechanics.model import chain_model
-    >>> d = kinematics(chain_model(1, gravity=(0, 0)), [0.0], [1.0])
-    >>> d.s(0)[:, 0], d.v[0]          # the joint is the point (0, 0) = [0, 0, 1]
-    (array([ 0., -0.,  1.]), array([0., 0., 1.]))
-    >>> d.p[0]                        # centripetal: the bias force pulls towards the pivot
+    >>> kinematics(chain_model(1, gravity=(0, 0)), [0.0], [1.0]).p[0]
     array([-0.5,  0. ,  0. ])
     """
     q, qd, _, f_ext, _, shape = check_state(model, q, qd, None, f_ext)
