@@ -1,23 +1,10 @@
-"""Screw sums of chapter 4 drawn into a :class:`~planargeo.draw.picture.Picture`.
+"""Screw sums of chapter 4 drawn into a :class:`~planargeo.draw.picture.Picture` (thesis 4.11–4.56).
 
-Picture-based ports of the twist and wrench sums and of the kinematics and
-Newton–Euler steps along a chain (thesis 4.11–4.56, Figs 4.1–4.9).  Each
-function takes the picture first, computes what its construction needs with the
-math modules (:mod:`planargeo.geometry.projective`, :mod:`planargeo.screws`) and
-adds plain elements to the picture: poles with their rotation glyphs (ideal ones
-as edge arrows), lines of action with their force arrows *to scale*, lever lines,
-dimensions.  It returns the elements it made, keyed by name (and, where the old
-drawing did, the computed arrays under ``"values"``).
-
-Every element has a stable id (``prefix`` + its name), a role (its style), its
-thesis symbol and a one-line description: meaning (equation): value.
-
-* :func:`twist_sum` — ``v₃ = v₁ + v₂`` on the lever line of the two poles (4.11–4.16);
-* :func:`wrench_sum` — ``f₃ = f₁ + f₂`` through the meet, with the force parallelogram
-  (4.33–4.46);
-* :func:`velocity_step` — ``vᵢ = vᵢ₋₁ + sᵢq̇ᵢ`` (4.47–4.49);
-* :func:`acceleration_step` — ``aᵢ = aᵢ₋₁ + sᵢq̈ᵢ + κᵢ`` (4.50–4.54);
-* :func:`newton_euler` — ``f_net = I a + p`` of one body (4.55–4.56).
+:func:`twist_sum` and :func:`wrench_sum` (Figs 4.1–4.6), one step of the velocity and
+acceleration kinematics along a chain (:func:`velocity_step`, :func:`acceleration_step`,
+Figs 4.7–4.8) and the Newton–Euler balance of a body (:func:`newton_euler`, Fig. 4.9).  Each
+adds poles (ideal ones as edge arrows), lines of action with force arrows to scale and lever
+lines, and returns its elements by name (and the computed arrays under ``"values"``).
 
 Examples
 --------
@@ -40,7 +27,7 @@ import math
 import numpy as np
 
 from planargeo._validate import as_mat3, as_scalar, as_vec3
-from planargeo.draw._shared import added, as_picture, documented, view_centre
+from planargeo.draw._shared import ENTRIES, added, as_picture, view_centre
 from planargeo.draw.picture import PX_PER_PT, Picture, _dash, plain_text
 from planargeo.draw.pictures._words import force as force_words, num, pair
 from planargeo.draw.pictures.common import label_toward
@@ -48,6 +35,7 @@ from planargeo.draw.pictures.kit import aim_label, force as force_arrow
 from planargeo.draw.sketch import dimension
 from planargeo.draw.style import COLORS, LINEWIDTHS, SUM
 from planargeo.errors import InputError
+from planargeo.geometry._docs import entries
 from planargeo.geometry.projective import is_at_infinity, is_ideal
 from planargeo.screws.inertia import centre_of_mass, mass
 from planargeo.screws.twists import bias_force, kappa
@@ -57,6 +45,8 @@ __all__ = ["twist_sum", "wrench_sum", "velocity_step", "acceleration_step", "new
 #: marker size (pixels) of a sum's pole, line width (pixels) of a sum's line of action
 _SUM_POINT_PX = SUM["point"]["markersize"] * PX_PER_PT
 _SUM_LINE_PX = SUM["line"]["linewidth"] * PX_PER_PT
+documented = entries(ENTRIES, {"toward": "toward : tuple of (float, float) or None\n    Per label, the "
+                                         "pixel direction (y up) in which it is put first (None: automatic)."})
 
 
 # --------------------------------------------------------------------------- checks and words
@@ -130,12 +120,10 @@ def _lever(pic: Picture, id: str, p, q, *, desc: str, width: float | None = None
 def _wrench(pic: Picture, id: str, f, *, role: str, label: str, desc: str, scale, anchor,
             emphasis: bool = False, toward=None, couples: list | None = None,
             corner: str = "right") -> dict | None:
-    """A wrench: its line of action with a force arrow ``scale |f|`` long centred at ``anchor``'s foot.
+    """A wrench: its line with a force arrow ``scale |f|`` long (None: no arrow) at ``anchor``'s foot.
 
-    ``scale`` None: the line alone.  A pure couple (the line at infinity) is the couple
-    glyph in an upper corner (``corner`` "right" or "left"; one row lower per couple
-    already drawn in that corner: ``couples``), labelled "label: couple (line at ∞)" (a
-    label that names the couple itself is kept as it is).  A zero wrench draws nothing (None).
+    A couple is the glyph in the upper ``corner``, a row lower per couple already there
+    (``couples``); a zero wrench draws nothing (None).
     """
     f = np.asarray(f, float)
     width = _SUM_LINE_PX if emphasis else None
@@ -217,29 +205,20 @@ def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), le
 
     The pole of the sum is ``P = Q₁ + β(Q₂ − Q₁)`` with ``β = ω₂/(ω₁ + ω₂)`` (4.12–4.13);
     a rotation plus a translation ``u`` is a rotation about ``Q + ρn``, ``ρ = u/ω`` (4.16).
-    The sum is a twist like its terms (same role colour), drawn as a larger diamond.
-    Coincident poles have no lever line (none is drawn), nor do two translations (their
-    poles join in the line at infinity).  Labels of the terms go on one side of the lever
-    line, the sum's on the other, unless ``toward`` says otherwise.
+    The sum is drawn as a larger diamond, its label across the lever line from the terms'.
 
     Parameters
     ----------
     {pic}
     v1, v2 : array_like (3,)
-        The twists ``[vx, vy, ω]`` to add: each a pole (a point) with its rate ω, an ideal pole
-        for a translation.
+        The twists ``[vx, vy, ω]`` to add.
     labels : (str, str, str)
-        Labels of ``v₁``, ``v₂`` and the sum (``$...$`` mathtext turns into Unicode); the
-        symbol of each is its text before a remark in brackets.
+        Labels of ``v₁``, ``v₂`` and the sum; the symbol is the text before a remark in brackets.
     lever : bool
-        Draw the line joining the poles.
+        Draw the line joining the poles (not for coincident poles or two translations).
     glyph_scale : float
         Rotation glyph radius (points per unit rate).
-    role : str
-        Style role of the three poles.
-    toward : (direction, direction, direction)
-        Pixel direction (x right, y up) in which each label is put first (None: automatic).
-    {prefix}
+    {role toward prefix}
 
     Returns
     -------
@@ -249,8 +228,7 @@ def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), le
     Raises
     ------
     InputError
-        ``pic`` not a Picture, a twist that is not 3 finite numbers (named), or ``labels`` /
-        ``toward`` without three entries.
+        ``pic`` not a Picture, a twist not 3 finite numbers, ``labels`` / ``toward`` not three.
 
     Examples
     --------
@@ -279,14 +257,11 @@ def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), le
             out["lever"] = el
     auto = _label_sides(pic, v1, v2)
     toward = [t if t is not None else a for t, a in zip(toward, auto)]
-    syms = [_symbol(x) for x in labels]
-    out["v1"] = _pole(pic, prefix + "v1", v1, role=role, label=labels[0], toward=toward[0],
-                      glyph_scale=glyph_scale, desc=f"twist {syms[0]} (4.10): {_pole_words(v1)}")
-    out["v2"] = _pole(pic, prefix + "v2", v2, role=role, label=labels[1], toward=toward[1],
-                      glyph_scale=glyph_scale, desc=f"twist {syms[1]} (4.10): {_pole_words(v2)}")
-    out["v3"] = _pole(pic, prefix + "v3", v3, role=role, label=labels[2], toward=toward[2],
-                      glyph_scale=glyph_scale, emphasis=True,
-                      desc=f"sum {syms[2]} (4.11–4.13): {_pole_words(v3)}")
+    for k, (name, v, what) in enumerate((("v1", v1, "twist {} (4.10)"), ("v2", v2, "twist {} (4.10)"),
+                                         ("v3", v3, "sum {} (4.11–4.13)"))):
+        out[name] = _pole(pic, prefix + name, v, role=role, label=labels[k], toward=toward[k],
+                          glyph_scale=glyph_scale, emphasis=name == "v3",
+                          desc=f"{what.format(_symbol(labels[k]))}: {_pole_words(v)}")
     return out
 
 
@@ -306,13 +281,10 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
                toward=(None, None, None), prefix: str = "") -> dict:
     """Wrench addition (thesis 4.33–4.46, Figs 4.4–4.6): ``f₃ = f₁ + f₂``.
 
-    Two crossing forces: ``f₃`` passes through their meet ``P = f₁ × f₂`` and the force
-    parallelogram is drawn there, the three arrows starting at ``P``.  Parallel forces:
-    ``f₃`` lies between them by the lever rule (4.43); a force and a couple: ``f₃`` is
-    parallel to ``f₁`` at ``ρ = τ/F`` (4.46).  A couple is the line at infinity: the
-    couple glyph in an upper corner (``f₂``'s on the left, the others' on the right).
-    The sum is a wrench like its terms, drawn with a heavier line, cut where its arrow's
-    head sits so that the head shows.  Labels sit at the arrows' tips.
+    Crossing forces: ``f₃`` passes through their meet ``P = f₁ × f₂``, where the force
+    parallelogram is drawn.  Parallel forces: ``f₃`` lies between them by the lever rule
+    (4.43); a force and a couple: ``f₃`` is parallel to ``f₁`` at ``ρ = τ/F`` (4.46).  A couple
+    is the glyph in an upper corner; the sum has a heavier line.
 
     Parameters
     ----------
@@ -320,20 +292,14 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
     f1, f2 : array_like (3,)
         The wrenches ``[fx, fy, τ]`` (lines).
     labels : (str, str, str)
-        Labels of ``f₁``, ``f₂`` and the sum (a couple's reads "label: couple (line at ∞)",
-        unless the label names the couple itself).
+        Labels of ``f₁``, ``f₂`` and the sum.
     scale : float or None
         Force arrow length per unit force (data units); None: no arrows.
     anchors : (xy, xy, xy)
-        Where each arrow sits (its middle at the anchor's foot on the line; None: the view
-        centre's foot).  Ignored when the parallelogram is drawn (the arrows start at ``P``).
+        Where each arrow sits (None: the view centre's foot); not with a parallelogram.
     parallelogram : bool
         Draw the force parallelogram at the meet of crossing lines.
-    role : str
-        Style role of the three lines.
-    toward : (direction, direction, direction)
-        Pixel direction (x right, y up) in which each label is put first (None: beside the arrow).
-    {prefix}
+    {role toward prefix}
 
     Returns
     -------
@@ -344,8 +310,8 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
     Raises
     ------
     InputError
-        ``pic`` not a Picture, a wrench that is not 3 finite numbers (named), a scale that is
-        not a positive number, or ``labels`` / ``anchors`` / ``toward`` without three entries.
+        ``pic`` not a Picture, a wrench not 3 finite numbers, a bad scale, or ``labels`` /
+        ``anchors`` / ``toward`` not three.
 
     Examples
     --------
@@ -407,11 +373,8 @@ def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot{q}_i$",
                   prefix: str = "") -> dict:
     """One step of velocity kinematics along a chain (thesis 4.47–4.49, Fig. 4.7).
 
-    ``vᵢ = vᵢ₋₁ + sᵢq̇ᵢ`` is a twist sum (:func:`twist_sum`): the pole of ``vᵢ`` lies on
-    the line joining the pole of ``vᵢ₋₁`` and the joint (the pole of ``sᵢ``), at ``βk``
-    from the former with ``β = q̇ᵢ/(q̇ᵢ + ωᵢ₋₁)`` (4.48).  With ``dims`` the distance ``k``
-    between the two poles is dimensioned (when both are finite), ``dim_offset`` to the
-    left of the lever line.
+    ``vᵢ = vᵢ₋₁ + sᵢq̇ᵢ`` is a twist sum (:func:`twist_sum`): the pole of ``vᵢ`` lies on the
+    line from the pole of ``vᵢ₋₁`` to the joint, at ``βk`` from it, ``β = q̇ᵢ/(q̇ᵢ + ωᵢ₋₁)`` (4.48).
 
     Parameters
     ----------
@@ -424,10 +387,9 @@ def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot{q}_i$",
         The joint speed ``q̇ᵢ``.
     labels : (str, str, str)
         Labels of ``vᵢ₋₁``, ``sᵢq̇ᵢ`` and ``vᵢ``.
-    toward : (direction, direction, direction)
-        Pixel directions in which the labels are put first (None: automatic).
+    {toward}
     dims, dim_offset
-        Dimension the distance ``k`` (offset to the left of the lever line, data units).
+        Dimension the distance ``k`` of finite poles (offset to the left of the lever line).
     {prefix}
 
     Returns
@@ -439,8 +401,7 @@ def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot{q}_i$",
     Raises
     ------
     InputError
-        ``pic`` not a Picture, a twist that is not 3 finite numbers or ``qd`` not a finite
-        number (named).
+        ``pic`` not a Picture, a twist not 3 finite numbers or ``qd`` not a finite number.
 
     Examples
     --------
@@ -449,8 +410,6 @@ def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot{q}_i$",
     >>> out = velocity_step(pic, 1.0 * unit_rotation([0, 0]), unit_rotation([3, 0]), 2.0)
     >>> out["values"]["v"].tolist()             # pole at beta k = 2/3 * 3 from the first (4.48)
     [0.0, -6.0, 3.0]
-    >>> out["k"]["symbol"]
-    'k'
     """
     pic = as_picture(pic)
     v_prev = as_vec3(v_prev, "v_prev")
@@ -477,40 +436,33 @@ def acceleration_step(pic, a_prev, v_prev, s, qd, qdd, *,
                       toward=(None,) * 5, prefix: str = "") -> dict:
     """One step of acceleration kinematics along a chain (thesis 4.50–4.54, Fig. 4.8).
 
-    ``aᵢ = aᵢ₋₁ + sᵢq̈ᵢ + κᵢ`` with the bias ``κᵢ = vᵢ × sᵢq̇ᵢ``
-    (:func:`planargeo.screws.twists.kappa`), a translation (an ideal point, an arrow at
-    the view's edge).  The joint's part ``sᵢq̈ᵢ + κᵢ`` is a rotation on the line through
-    the joint in the direction of that ideal point, offset by ``|κᵢ|/q̈ᵢ`` (4.54), and
-    ``aᵢ`` lies on its line to ``aᵢ₋₁``; all five are accelerations, ``aᵢ`` marked as the sum.
-    ``v_prev`` is the velocity of the body before the joint (``vᵢ × sᵢ = vᵢ₋₁ × sᵢ``).
+    ``aᵢ = aᵢ₋₁ + sᵢq̈ᵢ + κᵢ`` with the bias ``κᵢ = vᵢ × sᵢq̇ᵢ`` (a translation).  The joint's
+    part ``sᵢq̈ᵢ + κᵢ`` lies ``|κᵢ|/q̈ᵢ`` off the joint (4.54), and ``aᵢ`` on its line to ``aᵢ₋₁``.
 
     Parameters
     ----------
     {pic}
     a_prev, v_prev : array_like (3,)
-        The previous body's acceleration and velocity twists.
+        The previous body's acceleration and velocity twists (``vᵢ × sᵢ = vᵢ₋₁ × sᵢ``).
     s : array_like (3,)
         The joint's unit twist.
     qd, qdd : float
         Joint speed and acceleration.
     labels : tuple of 5 str
         Labels of ``aᵢ₋₁``, ``sᵢq̈ᵢ``, ``κᵢ``, ``sᵢq̈ᵢ + κᵢ`` and ``aᵢ``.
-    toward : tuple of 5 directions
-        Pixel directions in which the labels are put first (None: the placer's choice).
-    {prefix}
+    {toward prefix}
 
     Returns
     -------
     dict
         The elements ``{"a_prev", "joint", "bias", "joint_total", "a"}``, the lever lines
-        ``"lever"`` (``aᵢ₋₁`` to the joint's part) and ``"joint_lever"`` (``sᵢq̈ᵢ`` to ``κᵢ``)
-        when drawn, and ``"values"`` (the arrays of the five points).
+        ``"lever"`` and ``"joint_lever"`` (``sᵢq̈ᵢ`` to ``κᵢ``) when drawn, and ``"values"``.
 
     Raises
     ------
     InputError
-        ``pic`` not a Picture, a twist that is not 3 finite numbers, ``qd`` / ``qdd`` not
-        finite numbers (named), or ``labels`` / ``toward`` without five entries.
+        ``pic`` not a Picture, a twist not 3 finite numbers, ``qd`` / ``qdd`` not finite
+        numbers, or ``labels`` / ``toward`` not five.
 
     Examples
     --------
@@ -563,11 +515,8 @@ def newton_euler(pic, I, a, v, *, scale=None,
                  prefix: str = "") -> dict:
     """Newton–Euler balance of one body (thesis 4.55–4.56, Fig. 4.9): ``f_net = I a + p``.
 
-    ``I a`` is the axis of percussion of ``a`` (5.64), ``p = v ×* I v``
-    (:func:`planargeo.screws.twists.bias_force`, no gravity) the centripetal force
-    through the centre of mass toward the pole of ``v``, and ``f_net`` their sum, drawn
-    with the sum's heavier line.  The arrows sit at signed distances ``positions`` (for
-    ``Ia``, ``p``, ``f_net``) along each line from the foot of the centre of mass.
+    ``I a`` is the axis of percussion of ``a`` (5.64), ``p = v ×* I v`` the centripetal force
+    through the centre of mass toward the pole of ``v`` (no gravity), ``f_net`` their sum.
 
     Parameters
     ----------
@@ -581,9 +530,9 @@ def newton_euler(pic, I, a, v, *, scale=None,
     labels : tuple of 5 str
         Labels of ``v``, ``a``, ``Ia``, ``p`` and ``f_net``.
     positions : (float, float, float)
-        Where the arrows (and labels) of ``Ia``, ``p`` and ``f_net`` sit (see above).
-    toward : tuple of 5 directions
-        Pixel directions in which the labels are put first (None: the placer's choice).
+        Signed distances of the arrows of ``Ia``, ``p``, ``f_net`` along their lines from the
+        foot of the centre of mass.
+    {toward}
     inertia : bool
         Draw the inertia's circle of gyration.
     {prefix}
@@ -597,9 +546,8 @@ def newton_euler(pic, I, a, v, *, scale=None,
     Raises
     ------
     InputError
-        ``pic`` not a Picture, ``I`` not a finite 3×3 matrix, a twist that is not 3
-        finite numbers, a bad scale, or ``labels`` / ``toward`` / ``positions`` of the
-        wrong length.
+        ``pic`` not a Picture, ``I`` not a finite 3×3 matrix, a twist not 3 finite numbers,
+        a bad scale, or ``labels`` / ``toward`` / ``positions`` of the wrong length.
 
     Examples
     --------
@@ -609,8 +557,6 @@ def newton_euler(pic, I, a, v, *, scale=None,
     >>> out = newton_euler(pic, I, 2 * unit_rotation([1, -1]), 1.5 * unit_rotation([-1, 0]), scale=0.1)
     >>> out["values"]["p"].round(12).tolist()   # m l w^2 = 9 toward the pole, along -x through y = 0
     [-9.0, 0.0, 0.0]
-    >>> out["f_net"]["symbol"]
-    'fⁿᵉᵗ = Ia + p'
     """
     pic = as_picture(pic)
     I, a, v = as_mat3(I, "I"), as_vec3(a, "a"), as_vec3(v, "v")
