@@ -1,35 +1,12 @@
 """Car cornering explorer (thesis 6.9, Fig 6.6).
 
-The car turns about its instant centre of rotation (ICR) with the steering
-fixed; the two lateral tyre forces are the reactions of that "revolute joint"
-and follow from the projective decomposition ``f = T Q + R μ`` (scene
-``"car"``).  Controls: speed, turn radius, drive force, position of the
-centre of gravity, radius of gyration, mass, and the heading (how far the car
-has turned about the ICR).  Every element is labelled with its thesis symbol:
-the joint ``s`` at the ICR (the velocity pole of ``v = s ω``, 6.115), the
-acceleration ``a = s ω̇`` (pole also at the ICR), the centre of gravity
-``G``, the inertia ``I`` (6.117) as its conic, the tyre forces ``R₁μ₁``
-(rear) and ``R₂μ₂`` (front) (6.114, 6.133), the drive force ``f_A`` (6.120),
-the bias force ``p`` (6.119, the centrifugal force through the ICR) and the
-active-force line ``T`` (6.125, the percussion axis of the joint).
-
-By hand: drag the centre of gravity ``G`` along the car (sets ``ε``), the
-front tyre's trailing edge (sets the steering, hence the turn radius ``d``:
-the ICR is where the front axle meets the rear axle line) and the tip of the
-drive-force arrow (sets ``F_A``).
-
-Play drives the car round the corner with the steering fixed: the drive
-force gives the constant yaw acceleration ``ω̇`` of 6.131 (the centrifugal
-bias passes through the ICR, so ``ω̇`` does not depend on ``ω``), the car
-turns by ``Δθ = ω Δt + ω̇ Δt²/2`` and its speed becomes ``(ω + ω̇ Δt) d``;
-the tyre forces follow (6.133: they grow with ``ω²``).  The default drive is
-zero (the car goes round at constant speed).  Play ends at one of two stated
-events, each at its exact time: the car stops (a braking drive), or the
-acceleration of its centre of gravity reaches what the tyres hold, ``μ·g``
-(the friction control ``μ``): there the car slides out, and the picture and
-the readout say so.  The readout shows the kinetic energy
-(:func:`planargeo.simulate.energy`), the drive's power and ``dK/dt``: equal,
-since the tyre forces do no work.
+The car turns about its instant centre of rotation (ICR) with the steering fixed; the lateral
+tyre forces ``R₁μ₁``, ``R₂μ₂`` (6.114, 6.133) are the reactions of that "revolute joint", from
+``f = T Q + R μ`` (scene ``"car"``).  Drawn with their thesis symbols: the joint ``s`` at the ICR
+(6.115), ``G``, the inertia (6.117), the drive force ``f_A`` (6.120), the bias force ``p`` (6.119)
+and the active-force line ``T`` (6.125).  Drag ``G``, the steering, the ICR or the drive arrow.
+Play drives the car round the corner at the constant ``ω̇`` of 6.131, until it stops or its
+centre of gravity needs more than the tyres hold (``μ·g``: it slides out).
 """
 from __future__ import annotations
 
@@ -53,6 +30,7 @@ HEADING = "heading (deg)"
 FRICTION = "tyre friction μ"
 #: gravity (m/s²): the tyres hold a horizontal acceleration of at most μ·G_ROAD at the centre of gravity
 G_ROAD = 9.81
+
 
 def grip(res, mu: float):
     """The acceleration of the centre of gravity and what the tyres hold, ``(r_G √(ω⁴ + ω̇²), μ·g)`` (m/s²).
@@ -99,8 +77,6 @@ class CarExplorer(Described, Explorer):
         super().__init__(**kw)
 
     def make_controls(self):
-        # The controls: speed, turn radius, drive force, centre of gravity, gyration, mass, heading.
-        # Returns ``{name: widget}``.
         return {
             SPEED: Step(0.0, 30.0, 0.5, 4.0, SPEED).make("speed"),
             RADIUS: Step(2.0, 60.0, 0.5, 8.0, RADIUS).make("radius"),
@@ -121,7 +97,6 @@ class CarExplorer(Described, Explorer):
                            outlines=False)
 
     def compute(self, values, changed):
-        # The scene at the control values (the car at heading 0), its energy and the Play run.
         d = float(values[RADIUS])
         V = float(values[SPEED])
         if d <= 0:
@@ -133,14 +108,8 @@ class CarExplorer(Described, Explorer):
                 "speed": values[SPEED], "heading": values[HEADING]}
 
     def play_step(self, values: dict, dt: float):
-        # One Play step: the car drives ``dt`` seconds further round the turn (exact for any ``dt``).
-        # With the steering fixed, ``ω̇`` (6.131) is constant, so the step is exact:
-        # ``ω ← ω + ω̇ dt``, heading ``θ ← θ + ω dt + ω̇ dt²/2``.  Two events end
-        # Play, each at its exact time within the step: the car stops (a braking
-        # drive brings ``ω`` to 0), or the acceleration of the centre of gravity,
-        # ``r_G √(ω⁴ + ω̇²)``, reaches what the tyres hold, ``μ·g``: there the car
-        # slides out (the readout and the message say so).
-        # Returns New speed and heading, or None once the car has stopped or slides out.
+        # ω̇ (6.131) is constant: ω ← ω + ω̇ dt, θ ← θ + ω dt + ω̇ dt²/2, exact; the step ends at
+        # the exact time the car stops or r_G √(ω⁴ + ω̇²) reaches μ·g (it slides out)
         res = self._scene_of(values)
         d = res.params["d"]
         w0 = res.params["omega"]
@@ -177,13 +146,8 @@ class CarExplorer(Described, Explorer):
         return tuple(float(c) for c in R @ np.asarray(p, float) + t)
 
     def handles(self) -> list:
-        # Draggable handles: the centre of gravity, the steering, the ICR and the drive arrow's tip.
-        # * ``centre of gravity``: along the car (sets ε; it stays on the centre line);
-        # * ``steering``: the front tyre's leading edge; the wheel points at the
-        #   mouse, the ICR moves to where its axle meets the rear axle line
-        #   (sets the turn radius ``d = L / tan δ``);
-        # * ``ICR``: along the rear axle line (sets ``d``);
-        # * ``drive``: the tip of the ``f_A`` arrow, along the front wheel (sets ``F_A``).
+        # G along the car (ε); the front tyre's edge (steering: d = L / tan δ); the ICR along the
+        # rear axle line (d); the tip of the f_A arrow along the front wheel (F_A)
         return [Handle("centre of gravity", self._cg_where, self._cg_drag),
                 Handle("steering", self._steer_where, self._steer_drag),
                 Handle("ICR", self._icr_where, self._icr_drag),
@@ -237,7 +201,6 @@ class CarExplorer(Described, Explorer):
         return {DRIVE: float((p - ex["front_contact"]) @ ex["front_rolling"]) / FORCE_SCALE}
 
     def figure_message(self, exc: Exception) -> str:
-        # The refusal said on the picture, wrapped to stay inside it.
         return textwrap.fill(super().figure_message(exc), 40)
 
     def view_of(self, st):
@@ -246,24 +209,21 @@ class CarExplorer(Described, Explorer):
         Parameters
         ----------
         st : dict
-            The state, as :meth:`compute` gives it.
+            A state of :meth:`compute`.
 
         Returns
         -------
         tuple of float
-            ``(x0, x1, y0, y1)`` (m).
         """
         p = st["res"].params
         return view_box(p["d"], p["L"], math.radians(float(st["heading"])), p["F_A"])
 
     def scene_picture(self, state, view=None):
-        # The state's picture built natively (:func:`planargeo.draw.pictures.car.car_picture`).
         return car_picture(state["res"], heading=math.radians(float(state["heading"])),
                            view=view or self.view_of(state), slides=state["slides"], limit=state["limit"],
                            size=self.figure_px)
 
     def readout_of(self, state):
-        # The readout of the state ``state``: speed, yaw rate and acceleration, tyre forces, grip, energy.
         res = state["res"]
         q, x, p = res.quantities, res.extra, res.params
         mu = q["mu"]
@@ -289,9 +249,7 @@ class CarExplorer(Described, Explorer):
         }
 
     def mechanism_points(self):
-        # The car's corners, its centre of gravity, the steering and drive handles, and a near ICR.
-        # The ICR belongs to the view for turn radii up to
-        # :data:`~planargeo.draw.pictures.car.NEAR` only (beyond, an arrow at the edge points to it).
+        # the car's corners, G, the steering and drive handles, and the ICR when NEAR
         if self.state is None:
             return np.zeros((0, 2))
         res = self.state["res"]

@@ -1,10 +1,6 @@
-"""The front end of an explorer: its picture, its page widgets, readout and messages.
-
-Display modes (:class:`~planargeo.widgets.base.Explorer` ``display``): ``"page"`` (the
-browser draws the picture: :class:`~planargeo.widgets.canvas.PictureCanvas`), ``"image"``
-(a PNG of it, drawn by :mod:`planargeo.draw.render`, in an :class:`ipywidgets.Image`) and
-``"agg"`` (nothing shown; the picture is built when asked).  There is no matplotlib figure:
-the picture (:meth:`FrontMixin.picture`) is the one description of what is shown.
+"""The front end of an explorer: its picture (:meth:`FrontMixin.picture`, the one description of
+what is shown, drawn by the page's :class:`~planargeo.widgets.canvas.PictureCanvas` or as a PNG),
+its page widgets, readout and messages.
 """
 from __future__ import annotations
 
@@ -24,8 +20,6 @@ __all__ = ["FrontMixin"]
 
 #: width of a character of a label, in font sizes (the estimate the picture's label placer makes)
 _CHAR_EM = 0.6
-
-
 #: longest line of the key, in characters (a longer meaning ends at a word, with "…")
 _KEY_CHARS = 48
 
@@ -125,9 +119,8 @@ class FrontMixin:
         controls = W.VBox(list(self.controls.values()) + play + self.extra_widgets()
                           + [buttons, self.export_label],
                           layout=W.Layout(width="330px", min_width="330px", overflow="visible"))
-        # controls on the left; on the right a reserved message line, the picture and the readout
-        # under it: fixed widths and heights above the readout, so nothing moves when a message
-        # appears or the readout changes (the readout only grows downwards, with nothing below)
+        # controls on the left; on the right a reserved message line, the picture, the readout:
+        # fixed sizes above the readout, so nothing moves when a message appears
         right = W.VBox([self.message_box, fig_widget, self.readout, self.explain_box],
                        layout=W.Layout(align_items="flex-start", overflow="visible"))
         head = W.HTML(f"<h4 style='margin:2px'>{html.escape(self.title)}</h4>")
@@ -147,22 +140,14 @@ class FrontMixin:
         return PictureCanvas(on_drag=self._page_drag, on_view=self._page_view_to, around=self._page_after)
 
     def redraw(self) -> None:
-        """Send the shown state's picture to the front end.
-
-        The page's canvas gets the picture (it sends the page only what changed); an
-        image gets it drawn as PNG; without a front end nothing is built.
-        """
+        """Send the shown state's picture to the front end (the page's canvas, or a PNG)."""
         if self.display_mode == "page":
             self.canvas.picture = self.picture()
         elif self.display_mode == "image":
             self.image.value = self._png_bytes()
 
     def picture(self) -> dict:
-        """What is shown, as a picture's plain data (:mod:`planargeo.draw.picture`).
-
-        The explorer's :meth:`scene_picture` of the shown state, in the view the user zoomed
-        or panned to in the page, if any; with the handles that can be dragged now, the key
-        when it is on, and the message of a refused value.
+        """What is shown, as a picture's plain data: the scene, handles, key and refusal message.
 
         Returns
         -------
@@ -274,7 +259,6 @@ class FrontMixin:
         Returns
         -------
         Explorer
-            ``self``.
         """
         from IPython.display import display
 

@@ -1,27 +1,11 @@
 """Projective playground: a conic maps points to lines and back (thesis 5.2).
 
-Pick a real conic (circle, ellipse, hyperbola, parabola) or an inertia (an
-imaginary circle of radius ``ρ``, 5.4).  A movable point ``P`` maps to its
-polar line ``C P`` (5.36), a movable line ``M`` to its pole ``C⁻¹ M`` (5.37).
-For a real conic the geometric constructions of 5.2.2 follow the point:
-
-* ``P`` outside the conic: the two tangents from ``P``; the polar joins their
-  contact points (Fig 5.2);
-* ``P`` inside: two chords through ``P``; the tangents at their ends meet in
-  two poles, which the polar joins (Fig 5.3).
-
-The readout also shows the invariance of linear forms (5.40-5.41): the
-distance-like number ``P·M`` equals ``pole(M)·polar(P)``.  Ideal elements are
-ordinary: put ``P`` at infinity (a direction) and its polar is a diameter, a
-line through the centre; the line at infinity has the centre as its pole.
-
-Drag in the page (or call :meth:`Explorer.drag`):
-the point ``P``, the line ``M`` by a point on it (``M (point)``, first its point
-nearest the origin: a parallel move) or by a second point on it (``M (direction)``,
-a turn about the first), and the ``pole of M`` (``M`` becomes the polar of the dragged point).
-The *construction* and *line and its pole* checkboxes only redraw (nothing is
-recomputed).  The picture is built by
-:func:`planargeo.draw.pictures.projective.projective_picture`.
+A real conic or an inertia (an imaginary circle, 5.4) maps a movable point ``P`` to its polar
+``C P`` (5.36) and a movable line ``M`` to its pole ``C⁻¹ M`` (5.37); for a real conic the
+constructions of 5.2.2 follow ``P`` (tangents from outside, Fig 5.2; chords from inside, Fig 5.3).
+The readout shows the invariant ``P·M = pole(M)·polar(P)`` (5.40-5.41).  Ideal elements are
+ordinary: ``P`` at infinity has a diameter for its polar.  Drag ``P``, the line ``M`` by a point
+on it or by a second point (a turn), and the pole of ``M``.
 
 Examples
 --------
@@ -102,7 +86,6 @@ def _angle_offset(M) -> tuple[float, float]:
     if is_at_infinity(np.array([fx, fy, tz])):
         raise DegenerateGeometryError("the line is the line at infinity: no angle and offset")
     e = np.array([fx, fy]) / F
-    # a point (x, y) of the line: tz + y fx - x fy = 0; offset = -e_y x + e_x y = tz/F ... sign:
     # the foot offset * (-e_y, e_x) satisfies tz + offset (e_x fx + e_y fy) = 0 -> offset = -tz / F
     return math.degrees(math.atan2(e[1], e[0])), -tz / F
 
@@ -113,22 +96,12 @@ ROUNDING_UNITS = 64.0
 
 
 def _settle(x, C, operand, kind: str) -> np.ndarray:
-    """``x`` (a pole ``C⁻¹ M`` or a polar ``C P`` computed in floating point), exactly ideal when it is so within rounding.
+    """``x`` (a pole ``C⁻¹ M`` or a polar ``C P``), exactly ideal when it is so within rounding (5.37, 5.36).
 
-    A pole is ideal when its weight ``w`` is 0, a polar is the line at infinity
-    when its force ``(fx, fy)`` is 0 (5.37, 5.36).  Computed in floating point,
-    an exactly ideal result comes out with a weight of rounding size instead: the
-    pole of the line at infinity for a parabola (whose centre is at infinity) has
-    ``w ≈ 1e-17`` and would read as a point 10¹⁶ m away.  The decision is made on
-    the computed value against the error the computation can carry, not on an
-    input: ``solve`` is backward stable, so the computed pole is the exact pole of
-    a conic within ``ε‖C‖`` of ``C``, and its weight is uncertain by about
-    ``ε cond(C) ‖x‖`` (for ``C P``: ``ε ‖C‖ ‖P‖``).  A weight within
-    :data:`ROUNDING_UNITS` of that uncertainty cannot be told from 0 by any
-    computation in double precision, so it *is* 0 and is set exactly (the result
-    is then an ordinary ideal element, tested with ``is_ideal`` /
-    ``is_at_infinity``).  A genuinely far pole (a line one slider step from the
-    centre) has a weight 10¹⁰ times larger than this and stays finite.
+    The pole of the line at infinity for a parabola comes out with ``w ≈ 1e-17``, not 0.  ``solve``
+    is backward stable, so the weight is uncertain by about ``ε cond(C) ‖x‖`` (``C P``: ``ε ‖C‖ ‖P‖``);
+    within :data:`ROUNDING_UNITS` of that it cannot be told from 0 and is set to 0.  A genuinely far
+    pole has a weight 10¹⁰ times larger and stays finite.
     """
     x = np.array(x, dtype=float)
     eps = np.finfo(float).eps
@@ -154,8 +127,6 @@ class ProjectiveExplorer(Described, Explorer):
     scale = 4.0
 
     def make_controls(self):
-        # The controls (see the module docstring).
-        # Returns ``{name: widget}``.
         return {
             "P x": Step(-4, 4, 0.05, 2.0, "P x (m)").make("P x"),
             "P y": Step(-4, 4, 0.05, 1.5, "P y (m)").make("P y"),
@@ -174,8 +145,6 @@ class ProjectiveExplorer(Described, Explorer):
         }
 
     def disabled(self, values):
-        # Controls that change nothing in the state ``values`` (with the reason).
-        # Returns ``{control: reason}``.
         out = {}
         kind = values["conic"]
         if kind in ("circle", "parabola", "inertia (imaginary circle)"):
@@ -212,8 +181,7 @@ class ProjectiveExplorer(Described, Explorer):
         return pivot, pivot + arm * e
 
     def mechanism_points(self):
-        # What the fixed view must hold: ``P`` and the handles of ``M`` (not the pole of M, which
-        # may lie anywhere in the plane: a line near the centre has its pole far away).
+        # not the pole of M: a line near the centre has its pole far away
         pts = [h.where() for h in self.handles() if h.name != "pole of M"]
         return np.array([p for p in pts if p is not None], dtype=float).reshape(-1, 2)
 
@@ -253,7 +221,6 @@ class ProjectiveExplorer(Described, Explorer):
         return {"line angle (deg)": ang, "line offset": off}
 
     def handles(self):
-        # ``P``, ``M (point)``, ``M (direction)``, ``pole of M``.
         def pole_where():
             st = self.state
             if st is None or self._M_points() is None:
@@ -273,7 +240,6 @@ class ProjectiveExplorer(Described, Explorer):
         ]
 
     def compute(self, values, changed):
-        # The state for the control values ``values``.
         C = make_conic(values["conic"], values["a"], values["b"], values["tilt (deg)"])
         if values["P at infinity"]:
             # the ideal point in the direction (dx, dy): [dy, -dx, 0] (conventions: direction (-b, a))
@@ -311,7 +277,6 @@ class ProjectiveExplorer(Described, Explorer):
         return st
 
     def readout_of(self, state):
-        # The readout of the state ``state``: P, the polar's distance, the pole of M, the invariant P·M.
         v = self.values
         P, M, pol, pm = state["P"], state["M"], state["polar"], state["poleM"]
         # polar of P: normalised line [e, r] (5.55): direction and signed distance from the origin
@@ -334,7 +299,6 @@ class ProjectiveExplorer(Described, Explorer):
         return out
 
     def scene_picture(self, state, view=None):
-        # The state's picture (:func:`planargeo.draw.pictures.projective.projective_picture`).
         v = self.values
         return projective_picture(state, construction=bool(v["construction"]),
                                   line_and_pole=bool(v["line and its pole"]),
