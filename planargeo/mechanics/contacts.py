@@ -1,37 +1,14 @@
 """Contacts and loop closures between two bodies (thesis 9.3, 9.49-9.60).
 
-A :class:`Contact` joins body ``a`` to body ``b`` (or to the ground, ``b = -1``)
-*outside* the tree of a :class:`planargeo.mechanics.model.Model`; it closes a kinematic
-loop.  For a state (the world poses of the bodies) it provides
-
-* the contact motion space ``z`` (3×k unit twists at the global origin): the
-  relative motions the contact allows, ``v_a - v_b = z θ̇`` (9.54);
-* the contact reaction space ``B`` (3×(3-k) wrenches at the origin) with
-  ``z^T B = 0`` (9.60): the contact forces ``F = B ξ`` are powerless (9.59);
-* the position residual (zero when the loop is closed), used by the
-  stabilised simulation (:mod:`planargeo.simulate.loops`).
-
-Contact kinds
--------------
-============  ====  ===========================================================
-kind          k     meaning
-============  ====  ===========================================================
-``"pin"``     1     revolute contact: ``point_a`` (body a) coincides with
-                    ``point_b`` (body b); ``z`` is the rotation about it,
-                    ``B`` the two forces through it.
-``"slider"``  1     prismatic contact: ``point_a`` stays on the line through
-                    ``point_b`` along ``direction`` (both in body b's frame)
-                    and the relative angle stays ``angle``; ``z`` is the
-                    translation along the line, ``B`` the normal force
-                    through ``point_a`` and a couple.
-``"weld"``    0     rigid contact: ``point_a`` on ``point_b`` and relative
-                    angle ``angle``; ``B`` spans all wrenches.
-============  ====  ===========================================================
-
-Sign convention (Definition 42): contact ``k`` puts ``+1`` in column ``a`` and
-``-1`` in column ``b`` of the contact matrix ``G``; in (9.61)
-``Δ^T f = I a + p + G^T F`` the wrench ``-F`` acts on body ``a`` and ``+F`` on
-body ``b``.
+A :class:`Contact` joins body ``a`` to body ``b`` (or the ground, ``b = -1``) *outside* the tree of
+a :class:`planargeo.mechanics.model.Model`, closing a loop.  For the bodies' world poses it gives
+the motion space ``z`` (the relative motions allowed, ``v_a - v_b = z θ̇``, 9.54), the reaction
+space ``B`` (``zᵀB = 0``: contact forces ``F = B ξ`` are powerless, 9.59-9.60) and the position
+residual the stabilised simulation drives to zero (:mod:`planargeo.simulate.loops`).  Kinds:
+``"pin"`` (``point_a`` on ``point_b``), ``"slider"`` (``point_a`` on the line through ``point_b``
+along ``direction``, both in b's frame, relative angle ``angle``) and ``"weld"`` (point and
+angle).  Sign convention (Definition 42): contact ``k`` puts ``+1`` in column ``a`` and ``-1`` in
+column ``b`` of ``G``; in 9.61 the wrench ``-F`` acts on body ``a``, ``+F`` on ``b``.
 
 Examples
 --------
@@ -39,10 +16,8 @@ Examples
 >>> pose = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]])     # body 1 at (1, 0)
 >>> z_of(c, pose)[:, 0]        # rotation about (2, 0): the point [0, -2, 1]
 array([ 0., -2.,  1.])
->>> z_of(c, pose).T @ B_of(c, pose)
-array([[0., 0.]])
->>> residual(c, pose)
-array([0., 0.])
+>>> z_of(c, pose).T @ B_of(c, pose), residual(c, pose)
+(array([[0., 0.]]), array([0., 0.]))
 """
 from __future__ import annotations
 
@@ -50,9 +25,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from planargeo._validate import as_array, as_scalar, as_xy
+from planargeo._validate import as_array, as_scalar
 from planargeo.errors import DegenerateGeometryError, InputError, ShapeError
 from planargeo.geometry._docs import entries
+from planargeo.mechanics.model import _check_name, _finite_tuple
 
 __all__ = ["Contact", "CONTACT_DOFS", "contact_matrix", "validate_contacts", "world_point",
            "z_of", "B_of", "residual", "contact_bias", "stacked_contact_spaces"]
@@ -63,15 +39,10 @@ CONTACT_DOFS = {"pin": 1, "slider": 1, "weld": 0}
 #: The parameters of the per-contact functions, described once (:func:`planargeo.geometry._docs.entries`).
 _documented = entries({
     "contact": "contact : Contact\n    One contact.",
+    "contacts": "contacts : sequence of Contact\n    The model's contacts (loop closures).",
+    "n_bodies": "n_bodies : int\n    Number of bodies of the model.",
     "pose": "pose : array_like, shape (..., N, 3)\n    World poses ``(x, y, θ)`` of the N bodies (m, rad).",
 })
-
-
-def _xy_tuple(x, name):
-    a = as_xy(x, name)
-    if a.ndim != 1:
-        raise ShapeError(f"{name} must have shape (2,), got shape {a.shape}")
-    return (float(a[0]), float(a[1]))
 
 
 @dataclass(frozen=True)
@@ -130,16 +101,15 @@ class Contact:
             raise InputError(f"b must be a body index >= 0 or -1 (ground), got {self.b}")
         if self.a == self.b:
             raise InputError(f"a and b must be different bodies, got a = b = {self.a}")
-        object.__setattr__(self, "point_a", _xy_tuple(self.point_a, "point_a"))
-        object.__setattr__(self, "point_b", _xy_tuple(self.point_b, "point_b"))
-        d = _xy_tuple(self.direction, "direction")
+        object.__setattr__(self, "point_a", _finite_tuple(self.point_a, "point_a", 2))
+        object.__setattr__(self, "point_b", _finite_tuple(self.point_b, "point_b", 2))
+        d = _finite_tuple(self.direction, "direction", 2)
         if self.kind == "slider" and d == (0.0, 0.0):
             raise DegenerateGeometryError("direction must be non-zero for a slider contact, got (0, 0)")
         n = float(np.hypot(*d)) or 1.0
         object.__setattr__(self, "direction", (d[0] / n, d[1] / n))
         object.__setattr__(self, "angle", as_scalar(self.angle, "angle"))
-        if not isinstance(self.name, str):
-            raise InputError(f"name must be a string, got {self.name!r}")
+        _check_name(self.name)
 
     @property
     def dofs(self) -> int:
@@ -152,23 +122,17 @@ class Contact:
         return 3 - self.dofs
 
 
+@_documented
 def validate_contacts(contacts, n_bodies: int) -> tuple[Contact, ...]:
     """Check ``contacts`` against a model of ``n_bodies`` bodies; return them as a tuple (the rows of ``G``, 9.49).
 
-    Raises :class:`~planargeo.errors.InputError` naming the contact for a
-    non-:class:`Contact` entry or a body index out of range.
-
     Parameters
     ----------
-    contacts : iterable
-        Candidate contacts.
-    n_bodies : int
-        Number of bodies of the model.
+    {contacts n_bodies}
 
     Returns
     -------
     tuple of Contact
-        The contacts, checked.
 
     Raises
     ------
@@ -193,23 +157,17 @@ def validate_contacts(contacts, n_bodies: int) -> tuple[Contact, ...]:
     return out
 
 
+@_documented
 def contact_matrix(contacts, n_bodies: int) -> np.ndarray:
-    """The ``m × n`` contact matrix ``G`` (thesis Definition 42, 9.49).
-
-    Row ``k`` has ``+1`` in column ``a`` and ``-1`` in column ``b`` of contact
-    ``k`` (no entry for the ground).
+    """The ``m × n`` contact matrix ``G``: row ``k`` is ``+1`` at body ``a``, ``-1`` at ``b`` (thesis Definition 42, 9.49).
 
     Parameters
     ----------
-    contacts : sequence of Contact
-        The model's contacts (loop closures).
-    n_bodies : int
-        Number of bodies of the model.
+    {contacts n_bodies}
 
     Returns
     -------
     numpy.ndarray, shape (m, n_bodies)
-        ``G``, entries 0 and ±1.
 
     Examples
     --------
@@ -247,12 +205,6 @@ def world_point(pose, body: int, point) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 2)
-        World coordinates (m).
-
-    Examples
-    --------
-    >>> world_point(np.array([[1.0, 0.0, np.pi / 2]]), 0, (1.0, 0.0)).round(12)
-    array([1., 1.])
     """
     x, y, th = _pose_of(np.asarray(pose, dtype=float), body)
     c, s = np.cos(th), np.sin(th)
@@ -260,19 +212,17 @@ def world_point(pose, body: int, point) -> np.ndarray:
     return np.stack(np.broadcast_arrays(x + c * px - s * py, y + s * px + c * py), -1)
 
 
-def _pose(pose):
+def _pose(pose, contact=None):
+    """``pose`` checked as (..., N, 3), and ``contact`` (if given) as a Contact between its bodies."""
     p = as_array(pose, "pose")
     if p.ndim < 2 or p.shape[-1] != 3:
         raise ShapeError(f"pose must have shape (..., N, 3), got shape {p.shape}")
-    return p
-
-
-def _check_body(contact, pose):
-    if not isinstance(contact, Contact):
+    if contact is not None and not isinstance(contact, Contact):
         raise InputError(f"contact must be a Contact, got {type(contact).__name__}")
-    n = pose.shape[-2]
-    if contact.a >= n or contact.b >= n:
+    n = p.shape[-2]
+    if contact is not None and (contact.a >= n or contact.b >= n):
         raise InputError(f"contact refers to body {max(contact.a, contact.b)} but pose has {n} bodies")
+    return p
 
 
 def _slider_dir(contact, pose):
@@ -286,9 +236,8 @@ def _slider_dir(contact, pose):
 def z_of(contact: Contact, pose) -> np.ndarray:
     """Contact motion space ``z`` (3×k unit twists at the origin; thesis 9.54, 9.83).
 
-    Pin: the rotation ``[y, -x, 1]`` about the world contact point (taken on
-    body a); slider: the translation ``[dx, dy, 0]`` along the world sliding
-    direction; weld: an empty (3, 0) array.
+    Pin: the rotation ``[y, -x, 1]`` about the world contact point (on body a); slider: the
+    translation along the world sliding direction; weld: an empty (3, 0) array.
 
     Parameters
     ----------
@@ -297,18 +246,8 @@ def z_of(contact: Contact, pose) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3, k)
-        Unit twists of the contact's freedoms (k = 1 pin or slider, 0 weld).
-
-    Examples
-    --------
-    >>> c = Contact("slider", 0, -1, direction=(0.0, 1.0), angle=np.pi / 2)
-    >>> z_of(c, np.array([[0.0, 5.925, np.pi / 2]]))     # thesis 9.83
-    array([[0.],
-           [1.],
-           [0.]])
     """
-    pose = _pose(pose)
-    _check_body(contact, pose)
+    pose = _pose(pose, contact)
     shape = pose.shape[:-2]
     if contact.kind == "pin":
         P = world_point(pose, contact.a, contact.point_a)
@@ -325,17 +264,11 @@ def z_of(contact: Contact, pose) -> np.ndarray:
 def B_of(contact: Contact, pose) -> np.ndarray:
     """Contact reaction space ``B`` (3×(3-k) wrenches at the origin, ``z^T B = 0``; 9.59-9.60, 9.87).
 
-    Pin: the unit forces along x and y through the contact point; slider: the
-    unit force normal to the sliding direction (the direction turned by -90°)
-    through the contact point on body a, and the unit couple; weld: the identity.
-
-    These follow the conventions of the joints' reaction spaces
-    (:func:`planargeo.mechanics.joints.reaction_space`: unit forces through the joint,
-    unit couples), so the contact force components ``ξ`` (``F = B ξ``, 9.70)
-    read like a joint's ``μ``.  One difference, kept on purpose: a joint's
-    slider normal is the direction turned by **+90°** (thesis 5.63), a
-    contact's by **-90°**, as printed in the slider-crank example 9.87, so that
-    ``ξ`` compares directly with 9.90 (the thesis uses both orientations).
+    Pin: unit forces along x and y through the contact point; slider: the unit force normal
+    to the slide through the point on body a, and the unit couple; weld: the identity.  As
+    for joints (:func:`planargeo.mechanics.joints.reaction_space`), except that a contact's
+    slider normal is the direction turned by **-90°** (a joint's by +90°, 5.63), as printed in
+    9.87, so that ``ξ`` compares directly with 9.90.
 
     Parameters
     ----------
@@ -344,7 +277,6 @@ def B_of(contact: Contact, pose) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3-k)
-        Unit wrenches of the contact's reactions.
 
     Examples
     --------
@@ -354,8 +286,7 @@ def B_of(contact: Contact, pose) -> np.ndarray:
            [ 0.   ,  0.   ],
            [-5.925,  1.   ]])
     """
-    pose = _pose(pose)
-    _check_body(contact, pose)
+    pose = _pose(pose, contact)
     shape = pose.shape[:-2]
     one, zero = np.ones(shape), np.zeros(shape)
     P = world_point(pose, contact.a, contact.point_a)
@@ -373,12 +304,11 @@ def B_of(contact: Contact, pose) -> np.ndarray:
 
 @_documented
 def residual(contact: Contact, pose) -> np.ndarray:
-    """Position-level loop-closure residual (3-k values; zero when the loop is closed; position form of 9.59-9.60).
+    """Position-level loop-closure residual, zero when the loop is closed (position form of 9.59-9.60).
 
-    Pin: world ``point_a - point_b`` (2); slider: the signed distance of
-    ``point_a`` from the sliding line and the relative-angle error (2); weld:
-    the point difference and the angle error (3).  Angle errors are wrapped
-    to ``(-π, π]``.
+    Pin: world ``point_a - point_b``; slider: ``point_a``'s signed distance from the sliding line
+    and the relative-angle error; weld: the point difference and the angle error (wrapped to
+    ``(-π, π]``).
 
     Parameters
     ----------
@@ -391,12 +321,10 @@ def residual(contact: Contact, pose) -> np.ndarray:
 
     Examples
     --------
-    >>> c = Contact("slider", 0, -1, direction=(0.0, 1.0))
-    >>> residual(c, np.array([[0.25, 3.0, 0.1]]))
+    >>> residual(Contact("slider", 0, -1, direction=(0.0, 1.0)), np.array([[0.25, 3.0, 0.1]]))
     array([0.25, 0.1 ])
     """
-    pose = _pose(pose)
-    _check_body(contact, pose)
+    pose = _pose(pose, contact)
     Pa = world_point(pose, contact.a, contact.point_a)
     Pb = world_point(pose, contact.b, contact.point_b)
     dP = Pa - Pb
@@ -412,11 +340,7 @@ def residual(contact: Contact, pose) -> np.ndarray:
 
 
 def contact_bias(v_a, v_b) -> np.ndarray:
-    """Contact bias acceleration ``ν = v × z θ̇`` (thesis 9.55, 9.5 step 3).
-
-    With consistent velocities ``z θ̇ = v_a - v_b`` (9.54), and
-    ``v_a × (v_a - v_b) = v_b × (v_a - v_b)`` (a twist crossed with itself
-    vanishes), so ``ν`` does not depend on which body carries ``z``.
+    """Contact bias acceleration ``ν = v_a × (v_a - v_b)`` (thesis 9.55, 9.5 step 3), the same with ``v_b ×``.
 
     Parameters
     ----------
@@ -426,12 +350,6 @@ def contact_bias(v_a, v_b) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3)
-        ``ν = v_a × (v_a - v_b)``.
-
-    Examples
-    --------
-    >>> contact_bias([0.0, 0.0, 2.0], [0.0, 0.0, 0.0])   # a pin at the origin: no bias
-    array([0., 0., 0.])
     """
     from planargeo.screws.twists import crm
 
@@ -446,19 +364,17 @@ def stacked_contact_spaces(contacts, pose):
 
     Parameters
     ----------
-    contacts : sequence of Contact
-        The model's contacts (loop closures).
-    {pose}
+    {contacts pose}
 
     Returns
     -------
     tuple of numpy.ndarray
-        ``(z, B)``, shapes (..., 3m, Σk) and (..., 3m, Σ(3-k)).
+        ``(z, B)``, shapes (3m, Σk) and (3m, Σ(3-k)).
 
     Raises
     ------
     ShapeError
-        If ``pose`` is not ``(..., N, 3)``.
+        If ``pose`` is not ``(N, 3)``.
 
     Examples
     --------
