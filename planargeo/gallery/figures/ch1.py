@@ -18,10 +18,7 @@ DOT, DOT_OTHER = "#222222", "#999999"
 
 
 def _disk(ax):
-    """The disk spinning at constant ω about O, in the view of Figs 1.2-1.3.
-
-    Returns the picture, the disk's twist ``v`` and the velocity ``v_P`` of the body point at ``P``.
-    """
+    """Figs 1.2-1.3's disk spinning about O: ``(picture, twist v, velocity v_P of the point at P)``."""
     pic = panel(ax, [[-1.1, -1.1], [1.6, 1.1]], margin=0.03)
     t = np.linspace(0.0, 2 * np.pi, 97)[:-1]
     pic.path("disk", R_DISK * np.column_stack([np.cos(t), np.sin(t)]), role="body", closed=True,
@@ -35,10 +32,7 @@ def _disk(ax):
 
 
 def _vector(pic, id, p, d, *, role, symbol, desc, label=None, aim=None):
-    """An arrow from the data point ``p`` along the data vector ``d`` (its length to scale), labelled at its tip.
-
-    ``aim``: the pixel direction from the tip in which the label is tried first (default: up and right).
-    """
+    """An arrow from ``p`` along the data vector ``d``, labelled at its tip (tried first toward ``aim``)."""
     pic.path(id, np.zeros((0, 2)), role=role, symbol=symbol, desc=desc, color=COLORS[role], z=5)
     el = pic.elements[-1]
     el["parts"] = [{"p": "arrow", "x": float(p[0]), "y": float(p[1]),

@@ -21,12 +21,11 @@ def truncated_effective_quantities(lam: float, n: int = N_BODIES) -> np.ndarray:
     lam : float
         Size ratio ``λ = L/ρ``.
     n : int
-        Bodies in the chain.
 
     Returns
     -------
     ndarray (n, 3)
-        Row ``k``: the effective quantities (7.26) with ``k`` bodies outboard (``steps=k``).
+        Row ``k``: the effective quantities (7.26) with ``k`` bodies outboard.
 
     Examples
     --------

@@ -1,8 +1,4 @@
-"""Chapter 4 figures: twist and wrench addition, kinematics, Newton-Euler (4.1-4.10).
-
-Each figure is drawn from a :class:`~planargeo.draw.picture.Picture` (the constructions of
-:mod:`planargeo.draw.sums`, the basics of :mod:`planargeo.draw.sketch`), rendered on its axes.
-"""
+"""Chapter 4 figures: twist and wrench addition, kinematics, Newton-Euler (4.1-4.10)."""
 from __future__ import annotations
 
 import math

@@ -41,10 +41,7 @@ def _conic_label(pic, id, xy, text, toward, *, desc, gap=4.0):
 
 
 def _chain4(q, base="revolute"):
-    """The four-link chain of Figs 7.1, 7.2 and 7.11 at rest at ``q``.
-
-    Returns the model, its kinematics and the outline points of its bodies as drawn.
-    """
+    """The four-link chain of Figs 7.1, 7.2 and 7.11 at rest at ``q``: model, kinematics, outline."""
     m = chain(4, base=base)
     d = kinematics(m, q, np.zeros(m.nq))
     return m, d, shape_points(*model_shapes(m, d))

@@ -20,7 +20,6 @@ from planargeo.gallery.figures import chain, register, scene_state
 from planargeo.gallery.figures.ch3 import QD, QDD, Q
 
 
-
 def _caption(pic, id, text, *, desc):
     """A text in the lower left corner of the view on a white box (the lines pass behind it)."""
     x0, x1, y0, y1 = pic.box

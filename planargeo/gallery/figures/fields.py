@@ -1,12 +1,7 @@
 """Figures 1.1 and 1.4 (planar): the velocity field of a twist and the moment field of a wrench.
 
-The thesis's spatial figures show helical fields; in the plane the pitch is
-zero, and what remains is the tangential part: every body point moves
-perpendicular to its line to the pole (1.3 with ``ρ = 0``), and the moment of
-a force about a point grows with the point's distance from the line of action
-(1.43 with ``ρ = 0``).  Both are computed point by point with the frame changes
-``X_P`` (4.8) and ``X_P⁻ᵀ`` (4.24), not from the closed forms they illustrate
-(those are asserted).
+In the plane the helical fields keep their tangential part (1.3, 1.43 with ``ρ = 0``), computed
+point by point with ``X_P`` (4.8) and ``X_P⁻ᵀ`` (4.24); the closed forms are asserted.
 """
 from __future__ import annotations
 

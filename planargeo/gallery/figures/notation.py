@@ -39,25 +39,20 @@ def fig2_1(ax):
 
 
 def apparent_mass(m: float = 1.0):
-    """The articulated inertia of Fig. 3.3 and the apparent mass along each force direction.
+    """Fig. 3.3's articulated inertia ``A = I_c + I_s − I_s s (sᵀ I_s s)⁻¹ sᵀ I_s`` (3.20–3.27), apparent masses.
 
-    A disc of mass ``m`` (the thesis's sphere) slides freely along x on a slider of mass
-    ``m`` (the cylinder) at the origin.  Seen from the slider, the disc adds its inertia
-    projected across the prismatic joint ``s = [1, 0, 0]``:
-    ``A = I_c + I_s − I_s s (sᵀ I_s s)⁻¹ sᵀ I_s`` (3.20–3.27).  A force along ``e`` through
-    the centre gives the acceleration ``A⁻¹ f``; the apparent mass is ``1 / (eᵀ A⁻¹ e)``.
+    A disc (the sphere) slides along x on a slider (the cylinder), each of mass ``m``.
 
     Parameters
     ----------
     m : float
-        Mass of each body.
 
     Returns
     -------
     A : ndarray (3, 3)
         The articulated inertia at the slider.
     mass_along : callable
-        ``mass_along(theta)``: the apparent mass for a force at angle ``theta``.
+        ``mass_along(theta)``: the apparent mass ``1 / (eᵀ A⁻¹ e)`` for a force at angle ``theta``.
 
     Examples
     --------

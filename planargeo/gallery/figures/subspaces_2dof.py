@@ -1,11 +1,4 @@
-"""A 2-dof joint's subspaces drawn (thesis 6.1–6.4 for k = 2): a line of poles, a pencil of percussion lines.
-
-A pin in a slot (revolute + prismatic) allows rotations about every point of the line through the
-pin across the slot: the two columns of ``s`` (a translation along the slot, an ideal point, and
-the rotation about the pin) span that *line of poles*, which is the one reaction line ``R`` (the
-slot's push across, ``sᵀR = 0``).  Dually the two percussion lines ``T₁``, ``T₂`` meet at the one
-reactive-acceleration point ``U`` (``TᵀU = 0``): every active force is a line through ``U``.
-"""
+"""A 2-dof joint's subspaces drawn (thesis 6.1–6.4 for k = 2): a line of poles, a pencil of percussion lines."""
 from __future__ import annotations
 
 import numpy as np
