@@ -19,7 +19,7 @@ from planargeo.errors import InputError, ShapeError, SingularConfigurationError
 from planargeo.mechanics.kinematics import kinematics
 from planargeo.mechanics.model import Model
 from planargeo.algorithms.articulated_inertia import _one_state, _per_state
-from planargeo.algorithms.stacked import blocks, stacked_solve, trunk, adjacency
+from planargeo.algorithms.stacked import _blockdiag, adjacency, blocks, stacked_solve, trunk
 
 __all__ = ["LoopSolution", "Reaction", "loop_solve", "joint_wrenches", "loop_condition", "forward_dynamics_loops", "constrained_dynamics_lagrange",
            "branch_matrix", "SINGULAR_COND"]
@@ -318,115 +318,81 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
     tree = stacked_solve(model, q, qd, tau, f_ext, data=data)
     N = model.N
     sol = LoopSolution()
-    sol.tree = tree
-    sol.contacts = cs
-    # 1. preparatory work
+    sol.tree, sol.contacts, sol.data, sol._model = tree, cs, data, model
+    # 1. preparatory work; 2. the open-loop accelerations u = tree.a (9.63)
     G, sol.Upsilon, G3, U3 = _contact_topology(tuple(model.parents), tuple(cs))
-    sol.G = G
     z, B = stacked_contact_spaces(cs, data.pose)
-    v = data.v.reshape(-1)
-    # 2. open-loop accelerations (the tree's mobility enters below, through its contact columns)
-    u = tree.a
-    sol.u = u
+    sol.G, sol.G3, sol.z, sol.B, sol.u = G, G3, z, B, tree.a
     # 3. kinematics of the contacts (9.57, 9.58, 9.55)
-    J = U3 @ tree.I @ U3.T
-    sol.J = J
-    Gv = G3 @ v
-    zJz = z.T @ J @ z
+    sol.J = J = U3 @ tree.I @ U3.T
+    Gv = G3 @ data.v.reshape(-1)
+    theta_dot = np.zeros(0)
     if z.shape[1]:
         try:
-            theta_dot = np.linalg.solve(zJz, z.T @ J @ Gv)
+            theta_dot = np.linalg.solve(z.T @ J @ z, z.T @ J @ Gv)
         except np.linalg.LinAlgError:
             theta_dot = np.linalg.lstsq(z, Gv, rcond=None)[0]
-    else:
-        theta_dot = np.zeros(0)
     sol.theta_dot = theta_dot
     zt = z @ theta_dot
-    nu = np.zeros(3 * len(cs))
+    sol.nu = nu = np.zeros(3 * len(cs))
     for k, c in enumerate(cs):
-        va = data.v[c.a]
-        w = zt[3 * k:3 * k + 3]
+        va, w = data.v[c.a], zt[3 * k:3 * k + 3]
         nu[3 * k:3 * k + 3] = [-va[2] * w[1] + va[1] * w[2], va[2] * w[0] - va[0] * w[2], 0.0]
-    # drives: extra rows
-    G_rows, B_blocks, nu_rows = [G3], [B], [nu]
-    drive_cols = []
-    if prescribed:
-        for i, val in dict(prescribed).items():
-            if not (isinstance(i, (int, np.integer)) and 0 <= i < N):
-                raise InputError(f"prescribed keys must be joint indices in 0..{N - 1}, got {i!r}")
-            si = data.s(i)
-            k = si.shape[1]
-            if k == 0:
-                raise InputError(f"prescribed joint {i} is fixed (no coordinate to drive)")
-            val = np.broadcast_to(np.asarray(val, dtype=float), (k,))
-            row = np.zeros((3, 3 * N))
-            row[:, 3 * i:3 * i + 3] = np.eye(3)
-            j = model.parents[i]
-            if j >= 0:
-                row[:, 3 * j:3 * j + 3] = -np.eye(3)
-            G_rows.append(row)
-            B_blocks.append(si @ np.linalg.inv(si.T @ si))
-            nu_rows.append(data.kappa[i] + si @ val)
-            drive_cols.append((i, k, val))
+    # drives: one more contact each, between the body and its parent
+    G_rows, B_blocks, nu_rows, drive_cols = [G3], [B], [nu], []
+    for i, val in dict(prescribed or {}).items():
+        if not (isinstance(i, (int, np.integer)) and 0 <= i < N):
+            raise InputError(f"prescribed keys must be joint indices in 0..{N - 1}, got {i!r}")
+        si = data.s(i)
+        k = si.shape[1]
+        if k == 0:
+            raise InputError(f"prescribed joint {i} is fixed (no coordinate to drive)")
+        val = np.broadcast_to(np.asarray(val, dtype=float), (k,))
+        row = np.zeros((3, 3 * N))
+        row[:, 3 * i:3 * i + 3] = np.eye(3)
+        j = model.parents[i]
+        if j >= 0:
+            row[:, 3 * j:3 * j + 3] = -np.eye(3)
+        G_rows.append(row)
+        B_blocks.append(si @ np.linalg.inv(si.T @ si))
+        nu_rows.append(data.kappa[i] + si @ val)
+        drive_cols.append((i, k, val))
     Gall = np.vstack(G_rows)
-    nb = [b.shape[1] for b in B_blocks]
-    Ball = np.zeros((Gall.shape[0], sum(nb)))
-    r = c0 = 0
-    for b in B_blocks:
-        Ball[r:r + b.shape[0], c0:c0 + b.shape[1]] = b
-        r += b.shape[0]
-        c0 += b.shape[1]
-    nuall = np.concatenate(nu_rows)
-    sol.z, sol.B, sol.nu, sol.G3 = z, B, nu, G3
+    Ball = _blockdiag(B_blocks, [b.shape[0] for b in B_blocks], [b.shape[1] for b in B_blocks])
     # 4. contact forces (9.70-9.72): Λ^{-1} is read only as Λ^{-1} G^T
-    if mobility == "full":
-        LamGt = tree.mobility @ Gall.T
-    else:
-        LamGt = tree.mobility_times(Gall.T)
+    LamGt = tree.mobility @ Gall.T if mobility == "full" else tree.mobility_times(Gall.T)
     ncr = G3.shape[0]
     sol.Lambda_inv_Gt = LamGt[:, :ncr]
     GLG = Gall @ LamGt
     GLG = 0.5 * (GLG + GLG.T)                      # symmetric in exact arithmetic
     sol.contact_mobility = GLG[:ncr, :ncr]
-    K = Ball.T @ GLG @ Ball
-    sol.K = K
+    sol.K = K = Ball.T @ GLG @ Ball
+    sol.cond, Kinv = 1.0, K
     if K.size:
-        cond = float(np.linalg.cond(K))
-        sol.cond = cond
+        sol.cond = cond = float(np.linalg.cond(K))
         if not np.isfinite(cond) or cond > SINGULAR_COND:
             raise SingularConfigurationError(
                 "B^T G Λ^-1 G^T B is singular: the loop closures are redundant or locked "
                 "(e.g. a slider-crank with its piston pin on the crank pivot)", cond)
         Kinv = np.linalg.inv(K)
-    else:
-        sol.cond = 1.0
-        Kinv = K
-    Gamma = Ball @ Kinv @ Ball.T
-    rhs = Gall @ u - nuall
+    sol.Gamma = Gamma = Ball @ Kinv @ Ball.T
+    rhs = Gall @ tree.a - np.concatenate(nu_rows)
     xi_all = Kinv @ Ball.T @ rhs
     Fall = Gamma @ rhs
-    nbc = B.shape[1]
-    sol.Gamma = Gamma[:3 * len(cs), :3 * len(cs)] if not drive_cols else Gamma
-    sol.xi = xi_all[:nbc]
-    sol.F = Fall[:3 * len(cs)]
+    off = B.shape[1]
+    sol.xi, sol.F = xi_all[:off], Fall[:3 * len(cs)]
     # 5. closed-loop accelerations (9.73, 9.75)
-    a = u - LamGt @ Fall
-    sol.a = a
+    sol.a = a = tree.a - LamGt @ Fall
     sol.qdd = tree.T.T @ (a - tree.C @ a - tree.kappa)
-    tau_drive = np.array(tau, dtype=float)
-    off = nbc
+    sol.tau_drive = np.array(tau, dtype=float)
     for i, k, val in drive_cols:
-        tau_drive[model.q_slice(i)] -= xi_all[off:off + k]
-        # a driven coordinate's acceleration is the drive's, exactly (the solve above reproduces it only
-        # to rounding, e.g. -5e-13 for the constant-speed crank); a and F keep the solve's values
+        sol.tau_drive[model.q_slice(i)] -= xi_all[off:off + k]
+        # a driven coordinate's acceleration is the drive's exactly (the solve gives it to rounding)
         sol.qdd[model.q_slice(i)] = val
         off += k
-    sol.tau_drive = tau_drive
-    sol.data = data
     # 6. every pin and bearing force of the loop (9.61): Δᵀ f = I a + p + Gᵀ F, solved for f
     sol.f = joint_wrenches(model.parents, tree.I, a, tree.p, G3.T @ sol.F)
     sol.Q = tree.S.T @ sol.f
-    sol._model = model                 # for mu and reactions, built on first access
     return sol
 
 
@@ -499,6 +465,12 @@ def forward_dynamics_loops(model: Model, q, qd, tau, f_ext=None, contacts=None, 
 # ---------------------------------------------------------------------------
 # independent reference: maximal coordinates + Lagrange multipliers
 # ---------------------------------------------------------------------------
+#: Each joint kind's constraints in the reference: its point on the parent's (``"on"``) or on a line
+#: through it (``"line"``), and whether the angle is kept.
+_JOINT_CONSTRAINTS = {"revolute": ("on", False), "prismatic": ("line", True), "revolute_prismatic": ("line", False),
+                      "twin_prismatic": (None, True), "fixed": ("on", True), "plane": (None, False)}
+
+
 def _perp(v):
     return np.array([-v[1], v[0]])
 
@@ -591,23 +563,15 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
 
     rows, gam = [], []
 
-    def offset(i, r_body):            # world offset from the com of body i to a body-frame point
-        if i < 0:
-            return np.asarray(r_body, dtype=float)
-        return _rot(th[i]) @ (np.asarray(r_body, dtype=float) - com_b[i])
-
     def point_terms(i, r_body):
         """Jacobian (2, n), position, velocity, and quadratic acceleration term of a point."""
         Jp = np.zeros((2, n))
         if i < 0:
             return Jp, np.asarray(r_body, dtype=float), np.zeros(2), np.zeros(2)
-        rho = offset(i, r_body)
+        rho = _rot(th[i]) @ (np.asarray(r_body, dtype=float) - com_b[i])    # from the centre of mass
         Jp[:, 3 * i:3 * i + 2] = np.eye(2)
         Jp[:, 3 * i + 2] = _perp(rho)
         return Jp, c[i] + rho, cd[i] + w[i] * _perp(rho), -w[i] ** 2 * rho
-
-    def omega(i):
-        return 0.0 if i < 0 else w[i]
 
     def coincide(i, ri, j, rj):
         Ji, Pi, Vi, Qi = point_terms(i, ri)
@@ -622,36 +586,29 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
         nw = nj if j < 0 else _rot(th[j]) @ nj
         e, ed = Pi - Pj, Vi - Vj
         row = nw @ (Ji - Jj)
-        wj = omega(j)
+        wj = 0.0 if j < 0 else w[j]
         if j >= 0:
             row[3 * j + 2] += _perp(nw) @ e
         rows.append(row)
         gam.append(nw @ (Qi - Qj) - wj ** 2 * (nw @ e) + 2 * wj * (_perp(nw) @ ed))
 
-    def same_angle(i, j):
+    def same_angle(i, j, g=0.0):      # θ_i - θ_j = const (g: a drive's -q̈)
         row = np.zeros(n)
         row[3 * i + 2] = 1.0
         if j >= 0:
             row[3 * j + 2] = -1.0
         rows.append(row)
-        gam.append(0.0)
+        gam.append(g)
 
     for i, (jt, par) in enumerate(zip(model.joints, model.parents)):
         px, py, ph = jt.placement
-        axis_y = np.array([-np.sin(ph), np.cos(ph)])     # joint frame's y axis in the parent frame
-        if jt.kind == "revolute":
+        point, angle = _JOINT_CONSTRAINTS[jt.kind]
+        if point == "on":
             coincide(i, (0.0, 0.0), par, (px, py))
-        elif jt.kind == "prismatic":
-            on_line(i, (0.0, 0.0), par, (px, py), axis_y)
+        elif point == "line":                           # along the joint frame's x axis
+            on_line(i, (0.0, 0.0), par, (px, py), np.array([-np.sin(ph), np.cos(ph)]))
+        if angle:
             same_angle(i, par)
-        elif jt.kind == "revolute_prismatic":
-            on_line(i, (0.0, 0.0), par, (px, py), axis_y)
-        elif jt.kind == "twin_prismatic":               # two translations: only the angle is kept
-            same_angle(i, par)
-        elif jt.kind == "fixed":
-            coincide(i, (0.0, 0.0), par, (px, py))
-            same_angle(i, par)
-        # "plane": no constraint
     ncons_tree = len(gam)
     contact_rows = []
     for ct in cs:
@@ -665,23 +622,12 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
             same_angle(ct.a, ct.b)
         contact_rows.append((start, len(gam)))
     drive_rows = []
-    if prescribed:
-        # prescribed relative acceleration of joint i: S-coordinates of a_i - a_j - κ_i
-        for i, val in dict(prescribed).items():
-            si = data.s(i)
-            k = si.shape[1]
-            val = np.broadcast_to(np.asarray(val, dtype=float), (k,))
-            if model.joints[i].kind != "revolute":
-                raise InputError("the reference supports prescribed revolute joints only")
-            j = model.parents[i]
-            row = np.zeros(n)
-            row[3 * i + 2] = 1.0
-            if j >= 0:
-                row[3 * j + 2] = -1.0
-            start = len(gam)
-            rows.append(row)
-            gam.append(-val[0])
-            drive_rows.append((i, start))
+    for i, val in dict(prescribed or {}).items():      # a_i - a_λ - κ_i along s_i prescribed
+        val = np.broadcast_to(np.asarray(val, dtype=float), (data.s(i).shape[1],))
+        if model.joints[i].kind != "revolute":
+            raise InputError("the reference supports prescribed revolute joints only")
+        drive_rows.append((i, len(gam)))
+        same_angle(i, model.parents[i], -val[0])
     Phi = np.vstack(rows) if rows else np.zeros((0, n))
     gamma = np.array(gam, dtype=float)
     nc = Phi.shape[0]
