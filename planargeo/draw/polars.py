@@ -1,20 +1,9 @@
 """Pole and polar constructions on a :class:`~planargeo.draw.picture.Picture` (thesis 5.2, 5.4, 5.5).
 
-Each function takes the picture first and the quantities after it, computes what
-the construction needs with the math modules (conic polarity ``C p``, the inertia's
-axis of percussion ``I a``, the momentum ``I v``) and adds plain elements to the
-picture, each with a stable id, a role, its thesis symbol and a one-line
-description.  They return the elements they made, keyed by name (and the
-numbers of the construction), so that a figure can aim a label or read a place.
-
-* :func:`polar_exterior` — the polar of an exterior point: the tangents from it,
-  their contacts, and the line joining them (5.36, Fig. 5.2);
-* :func:`polar_interior` — the polar of an interior point from two chords and the
-  poles of the chords (5.36, Theorem 12, Fig. 5.3);
-* :func:`percussion` — the axis of percussion ``f = I a`` of an acceleration
-  pole, ``ρ²/d`` beyond the centre of mass (5.64–5.68, Fig. 5.6);
-* :func:`power` — powerless force and acceleration: ``vᵀf = 0``, ``pᵀa = 0``
-  with ``p = I v`` (5.69–5.74, Fig. 5.7).
+The polar of an exterior point from its tangents (:func:`polar_exterior`, 5.36, Fig. 5.2) and
+of an interior point from two chords (:func:`polar_interior`, Theorem 12, Fig. 5.3), the axis
+of percussion ``f = I a`` (:func:`percussion`, 5.64–5.68, Fig. 5.6) and powerless forces and
+accelerations (:func:`power`, 5.69–5.74, Fig. 5.7).  Each returns its elements by name.
 
 Examples
 --------
@@ -53,21 +42,21 @@ __all__ = ["line_conic_points", "interior_construction", "power_values", "polar_
 
 def _line(pic: Picture, id: str, l, role: str, symbol: str, desc: str, *, anchor=None,
           side: float = 1.0) -> dict:
-    """A line without a sense arrow, labelled with its symbol beside it (:func:`label_line`); the element."""
+    """A line without a sense arrow, labelled with its symbol beside it (:func:`label_line`)."""
     pic.line(id, l, role=role, arrow=False, label="", symbol=symbol, desc=desc)
     label_line(pic, id, plain_text(symbol), anchor=anchor, side=side)
     return pic.elements[-1]
 
 
 def _inertia(pic: Picture, prefix: str, I, more: str) -> dict:
-    """The inertia ``I`` as its circle of gyration (dashed), its description ending with ``more``; the element."""
+    """The inertia ``I`` as its circle of gyration (dashed), its description ending in ``more``."""
     return added(pic.conic, prefix + "I", I, role="inertia", symbol="I", label="",
                  desc="inertia I (5.64) as its circle of gyration" + more)
 
 
 def _polar_and_point(pic: Picture, out: dict, prefix: str, K, p, names, *, inside: bool, through: str,
                      anchor, side: float) -> dict:
-    """Add the polar ``L`` of a construction ``K`` (labelled) and its point ``P`` to ``out``; ``out``."""
+    """Add the polar ``L`` of a construction ``K`` (labelled) and its point ``P`` to ``out``."""
     P, L = names
     out["L"] = _line(pic, prefix + "L", K.polar, "wrench", L, anchor=anchor, side=side,
                      desc=f"polar L = C P of P (5.36): the line through {through}")
@@ -77,8 +66,7 @@ def _polar_and_point(pic: Picture, out: dict, prefix: str, K, p, names, *, insid
 
 
 def _conic(pic: Picture, id: str, C) -> dict:
-    """The conic ``C`` labelled ``C``: inside an ellipse, near its upper left (clear of the curve),
-    or at the first drawn point of another conic."""
+    """The conic ``C``, labelled inside an ellipse (upper left), or at another's first point."""
     el = added(pic.conic, id, C, role="conic", symbol="C", label="",
                desc="the conic C (5.35): the points x with xᵀCx = 0")
     e = next((q for q in el["parts"] if q["p"] in ("ellipse", "path")), None)
@@ -114,7 +102,7 @@ def line_conic_points(C, L) -> list[np.ndarray]:
     Returns
     -------
     list of ndarray (3,)
-        The two real common points, or an empty list when the line misses the conic.
+        The two real common points, or none when the line misses the conic.
 
     Raises
     ------
@@ -127,8 +115,6 @@ def line_conic_points(C, L) -> list[np.ndarray]:
     >>> C = conic_circle([0.0, 0.0], 2.0)
     >>> sorted(to_xy(X).round(6).tolist() for X in line_conic_points(C, [1.0, 0.0, 0.0]))  # y = 0
     [[-2.0, 0.0], [2.0, 0.0]]
-    >>> line_conic_points(C, [1.0, 0.0, -5.0])            # y = 5 misses the circle
-    []
     """
     X, real = line_conic_intersections(_mat(C, "C"), _vec(L, "L"))
     return [X[0], X[1]] if bool(real) else []
@@ -139,9 +125,6 @@ def line_conic_points(C, L) -> list[np.ndarray]:
 def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=None, L_side: float = 1.0,
                    prefix: str = "") -> dict:
     """Polar of an exterior point (thesis 5.36, Fig. 5.2): tangents from ``p``; ``L`` joins their contacts.
-
-    Adds the conic ``C``, the two tangents from ``p`` (construction lines), their
-    contacts (marks), the polar ``L = C p`` (labelled beside it) and the point.
 
     Parameters
     ----------
@@ -175,14 +158,8 @@ def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=No
     >>> from planargeo.geometry.conics import conic_circle
     >>> pic = Picture((-3, 3, -3, 3), size=(300, 300), ticks=False)
     >>> out = polar_exterior(pic, conic_circle([0.0, 0.0], 1.0), from_xy([2.0, 0.0]))
-    >>> [part["x"] for part in out["contacts"]["parts"]]          # both at x = 1/2
-    [0.5, 0.5]
-    >>> sorted(round(part["y"], 6) for part in out["contacts"]["parts"])   # y = ±√3/2
-    [-0.866025, 0.866025]
-    >>> polar_exterior(pic, conic_circle([0.0, 0.0], 1.0), from_xy([0.2, 0.0]))
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.InputError: p has no real tangents to C: it lies inside the conic (or C is imaginary); use on_interior='nan' to get NaN instead
+    >>> sorted((part["x"], round(part["y"], 6)) for part in out["contacts"]["parts"])  # x = 1/2
+    [(0.5, -0.866025), (0.5, 0.866025)]
     """
     pic = as_picture(pic)
     C, p = _mat(C, "C"), _vec(p, "p")
@@ -222,8 +199,7 @@ def interior_construction(C, p, angles=(0.35, 1.9)):
     Raises
     ------
     InputError
-        ``C`` or ``p`` not finite, ``p`` at infinity, not two angles, or a chord that does not
-        cut the conic in two points.
+        ``C`` or ``p`` not finite, ``p`` at infinity, not two angles, or a chord missing the conic.
 
     Examples
     --------
@@ -247,11 +223,8 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
                    L_anchor=None, L_side: float = 1.0, prefix: str = "") -> dict:
     """Polar of an interior point (thesis 5.36, Theorem 12, Fig. 5.3).
 
-    Two chords through ``p`` (at ``angles``); the tangents at each chord's ends
-    meet in a point ``R_k``; the two points span ``L``.  Each of them is the pole
-    of its chord (Theorem 12), which is why ``L`` passes through both.  A chord
-    that is a diameter has its pole at infinity (an arrow at the edge of the view,
-    pointing along its direction).
+    The tangents at the ends of each of two chords through ``p`` meet in the chord's pole
+    ``R_k`` (Theorem 12; at infinity for a diameter); ``L`` joins the two.
 
     Parameters
     ----------
@@ -281,9 +254,7 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
     >>> from planargeo.geometry.conics import conic_circle
     >>> pic = Picture((-5, 5, -5, 5), size=(300, 300), ticks=False)
     >>> out = polar_interior(pic, conic_circle([0.0, 0.0], 2.0), from_xy([1.0, 0.0]), angles=(0.7, 2.0))
-    >>> sorted(out["L"]["parts"][0]["xy"].round(9).tolist())  # x = r²/d = 4
-    [[4.0, -5.0], [4.0, 5.0]]
-    >>> [round(out[k]["parts"][0]["x"], 9) for k in ("R1", "R2")]
+    >>> [round(out[k]["parts"][0]["x"], 9) for k in ("R1", "R2")]    # on L: x = r²/d = 4
     [4.0, 4.0]
     """
     pic = as_picture(pic)
@@ -319,9 +290,7 @@ def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = Tr
                prefix: str = "") -> dict:
     """Axis of percussion ``f = I a`` of an acceleration pole ``a`` (thesis 5.64–5.68, Fig. 5.6).
 
-    Adds the inertia (its circle of gyration, dashed), the pole and the axis; with
-    ``dims`` the distances ``d`` (pole to centre of mass) and ``ρ²/d`` (centre of mass
-    to the axis) along the line through both, and that line (the lever).
+    With ``dims``: the lever from ``a`` through the centre of mass, the distances ``d``, ``ρ²/d``.
 
     Parameters
     ----------
@@ -348,8 +317,7 @@ def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = Tr
     Raises
     ------
     InputError
-        ``pic`` not a picture, ``I`` not a finite symmetric 3×3 matrix, ``a`` not a finite
-        homogeneous vector.
+        ``pic`` not a picture, ``I`` not a finite symmetric 3×3 matrix, ``a`` not finite.
 
     Examples
     --------
@@ -359,8 +327,6 @@ def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = Tr
     >>> out = percussion(pic, I, from_xy([-1.5, 0.0]))              # d = 1.5
     >>> out["values"]["foot"].round(9).tolist()                     # ρ²/d = 0.24 beyond c
     [0.24, 0.0]
-    >>> sorted(out["f"]["parts"][0]["xy"].round(9).tolist())        # the vertical axis x = 0.24
-    [[0.24, -2.0], [0.24, 2.0]]
     """
     pic = as_picture(pic)
     I, a = _mat(I, "inertia"), _vec(a, "a")
@@ -400,13 +366,8 @@ def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = Tr
 def power_values(v, I, *, f_angle: float = 0.6, a_distance: float = 1.6) -> dict:
     """The momentum ``p = I v``, a powerless force ``f`` and a powerless acceleration ``a`` (5.69–5.74).
 
-    ``f`` is the line through ``v`` whose direction is the momentum's turned by
-    ``f_angle`` (for a translation ``v``, an ideal point: the line through the
-    centre of mass across the translation); ``a`` is the point of ``p`` at signed
-    distance ``a_distance`` from the foot of the perpendicular from the centre of
-    mass.  Ideal elements are ordinary values: ``v`` at the centre of mass makes
-    ``p`` a pure couple (the line at infinity), and ``a`` is then an ideal point (a
-    translation) in the direction turned by ``f_angle`` from the x axis.
+    ``f`` passes through ``v`` (a translation: through the centre of mass, across it) along the
+    momentum's direction turned by ``f_angle``; ``a`` lies on ``p`` (``p`` a couple: ``a`` ideal).
 
     Parameters
     ----------
@@ -415,7 +376,7 @@ def power_values(v, I, *, f_angle: float = 0.6, a_distance: float = 1.6) -> dict
     I : array_like (3, 3)
         The inertia.
     f_angle, a_distance : float
-        Placement (see above).
+        Turn of ``f`` from ``p`` (radians); distance of ``a`` along ``p`` from the foot of ``c``.
 
     Returns
     -------
@@ -425,7 +386,7 @@ def power_values(v, I, *, f_angle: float = 0.6, a_distance: float = 1.6) -> dict
     Raises
     ------
     InputError
-        ``v`` or ``I`` not finite (or ``I`` not symmetric), or a placement that is not a finite number.
+        ``v`` or ``I`` not finite (or ``I`` not symmetric), or a placement not a finite number.
 
     Examples
     --------
@@ -462,14 +423,9 @@ def power_values(v, I, *, f_angle: float = 0.6, a_distance: float = 1.6) -> dict
 def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
           names=("$v$", "$p = Iv$", "$f$: $v^Tf = 0$", "$a$: $p^Ta = 0$"), f_label_at=1.6,
           p_label_at=None, f_side: float = 1.0, p_side: float = 1.0, prefix: str = "") -> dict:
-    """Power relations (thesis 5.69–5.74, Fig. 5.7).
+    """Power relations (thesis 5.69–5.74, Fig. 5.7): ``f`` through ``v``, ``a`` on ``p = I v``.
 
-    A powerless force ``f`` passes through the velocity pole ``v`` (``vᵀ f = 0``);
-    a powerless acceleration ``a`` lies on the momentum line ``p = I v``
-    (``pᵀ a = 0``).  The construction's
-    numbers are :func:`power_values`'s.  ``f_label_at`` and ``p_label_at`` put the
-    labels of ``f`` and ``p`` near the points at those signed distances along them
-    from ``v`` and from ``a`` (None: the view's centre).
+    ``vᵀ f = 0`` and ``pᵀ a = 0``: neither the force nor the acceleration does work.
 
     Parameters
     ----------
@@ -483,7 +439,7 @@ def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
     names : tuple of 4 str
         Symbols (labels) of ``v``, ``p``, ``f`` and ``a``.
     f_label_at, p_label_at : float, optional
-        Placement of the labels (see above).
+        Labels of ``f`` and ``p`` near the points this far from ``v`` and ``a`` (None: the centre).
     f_side, p_side : float
         +1: the label of ``f`` (``p``) above its line (right of a vertical one); -1: below it.
     {prefix}
@@ -505,8 +461,6 @@ def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
     >>> out = power(pic, unit_rotation([1.0, 0.0]), inertia_matrix(1.0, [0.0, 0.0], 0.5))
     >>> sorted(out["p"]["parts"][0]["xy"].round(9).tolist())   # p = I v: x = −ρ²/d = −0.5 (5.71)
     [[-0.5, -3.0], [-0.5, 3.0]]
-    >>> out["v"]["desc"]
-    'velocity pole v (5.69): at (1, 0) m, rate 1 rad/s'
     """
     pic = as_picture(pic)
     v, I = _vec(v, "v"), _mat(I, "inertia")
