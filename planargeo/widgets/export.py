@@ -1,9 +1,7 @@
 """Exports of what an explorer shows: SVG and PNG files, GIF and MP4 animations, download links.
 
-Every file is the explorer's picture (:meth:`~planargeo.widgets.front.FrontMixin.picture`)
-drawn by the matplotlib renderer (:func:`planargeo.draw.render.picture_bytes`), made in
-memory and written atomically (:func:`planargeo.files.atomic_write`).  The same view always
-gives the same file.
+Every file is the explorer's picture drawn by :func:`planargeo.draw.render.picture_bytes`, written
+atomically; the same view gives the same file.
 """
 from __future__ import annotations
 
@@ -63,15 +61,10 @@ class ExportMixin:
     def export_svg(self, path=None) -> Path:
         """Write the current view to an SVG file, atomically, and return its path.
 
-        The view is rendered to memory first and the file replaced in one step
-        (:func:`planargeo.files.atomic_write`): a failure leaves an existing file
-        as it was.  The file depends on the view only (no date, fixed element ids).
-
         Parameters
         ----------
         path : str or os.PathLike, optional
-            The file; default ``planargeo-<slug>-<pid>-<n>.svg`` in ``export_dir``
-            (or the current folder).
+            The file; default ``planargeo-<slug>-<pid>-<n>.svg`` in ``export_dir`` (or here).
 
         Returns
         -------
@@ -83,8 +76,7 @@ class ExportMixin:
         InputError
             ``path`` names no file.
         OutputError
-            The file cannot be written (no space, no permission, a folder or a
-            device such as ``/dev/full``, which is never replaced).
+            The file cannot be written (no space, no permission, a folder or a device).
         """
         return self._write(self._export_path(path, "svg"), self._svg_bytes())
 
@@ -122,13 +114,9 @@ class ExportMixin:
 
     def export_animation(self, path=None, *, format: str = "gif", frames: int = 60,
                          fps: int = 20, allow_long: bool = False) -> Path:
-        """Write ``frames`` Play frames from the shown state as a GIF or MP4 file, atomically.
+        """Write ``frames`` Play frames from the shown state as a GIF or MP4 file (real time), atomically.
 
-        The file plays in real time (× Play's speed and :attr:`time_scale`): frame
-        ``k`` shows the state ``k / fps`` of its seconds later.  The explorer
-        returns to the shown state afterwards; stopping (Ctrl-C) writes nothing
-        and leaves it there too.  GIF uses pillow; MP4 needs the ``ffmpeg``
-        program (Debian's ``ffmpeg`` package).
+        The explorer returns to the shown state afterwards.  MP4 needs the ``ffmpeg`` program.
 
         Parameters
         ----------
@@ -152,8 +140,7 @@ class ExportMixin:
         Raises
         ------
         InputError
-            No Play in this explorer, an unknown format, frames / fps not positive
-            integers, or more frames than the limit without ``allow_long``.
+            No Play, an unknown format, frames / fps not positive integers or beyond the limit.
         OutputError
             The file cannot be written, or MP4 without ffmpeg.
         """
@@ -229,15 +216,11 @@ class ExportMixin:
                                        f"{html.escape(str(exc))}</span>")
 
     def snapshot(self):
-        """The shown picture as a still image, for a notebook's output (drawn by matplotlib).
-
-        A lesson shows the state it has just computed this way: the image is stored in
-        the notebook and needs no kernel to be seen.
+        """The shown picture as a still PNG image, stored in a notebook's output (no kernel needed).
 
         Returns
         -------
         IPython.display.Image
-            The PNG of :meth:`picture`, at the explorer's size.
 
         Examples
         --------
@@ -253,10 +236,7 @@ class ExportMixin:
     def _repr_mimebundle_(self, **kwargs):
         """The widget view, plus a static PNG of the picture (shown where widgets are not, e.g. GitHub)."""
         bundle = self.widget._repr_mimebundle_(**kwargs)
-        if isinstance(bundle, tuple):  # (data, metadata)
-            data = bundle[0]
-        else:
-            data = bundle
+        data = bundle[0] if isinstance(bundle, tuple) else bundle     # (data, metadata)
         if isinstance(data, dict):
             try:
                 data["image/png"] = base64.b64encode(self._png_bytes()).decode("ascii")

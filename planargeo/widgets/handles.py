@@ -1,15 +1,7 @@
 """Handles and dragging: points of the picture the user (or a test) drags to set controls.
 
-A :class:`Handle` names a point, where it is now, and the control values a drag to a
-new point means.  The page hit-tests the handles and sends ``{"type": "drag", "id", "x",
-"y"}`` messages; :meth:`HandleMixin.drag` sends the same messages from Python, in every
-display mode, through the same check (:meth:`planargeo.widgets.canvas.PictureCanvas.handle_message`).
-
-Examples
---------
->>> h = Handle("P", lambda: (0.0, 0.0), lambda x, y: {"P x": x, "P y": y})
->>> h.drag(1.0, 2.0)
-{'P x': 1.0, 'P y': 2.0}
+The page sends ``{"type": "drag", "id", "x", "y"}`` messages; :meth:`HandleMixin.drag` sends the
+same from Python, through the same check (:meth:`planargeo.widgets.canvas.PictureCanvas.handle_message`).
 """
 from __future__ import annotations
 
@@ -35,19 +27,17 @@ class Handle:
     Parameters
     ----------
     name : str
-        Name of the handle (unique within an explorer), used by :meth:`Explorer.drag`.
+        Name of the handle (unique within an explorer).
     where : callable () -> (x, y) or None
         The handle's current data position; None when it cannot be dragged now.
     drag : callable (x, y) -> dict
-        The control values that a drag to the data point ``(x, y)`` means.  It may
-        raise a :class:`~planargeo.errors.PlanargeoError`: the drag step is refused,
-        the last good state stays, and the message names the reason.
+        The control values that a drag to ``(x, y)`` means (a PlanargeoError: the step is refused).
 
     Examples
     --------
     >>> h = Handle("P", lambda: (0.0, 0.0), lambda x, y: {"P x": x, "P y": y})
-    >>> h.where()
-    (0.0, 0.0)
+    >>> h.drag(1.0, 2.0)
+    {'P x': 1.0, 'P y': 2.0}
     """
 
     name: str
@@ -69,12 +59,7 @@ class HandleMixin:
         return np.array(pts, dtype=float).reshape(-1, 2)
 
     def all_handles(self) -> list[Handle]:
-        """The explorer's :meth:`handles` (what the picture shows and drags use).
-
-        Returns
-        -------
-        list of Handle
-        """
+        """The explorer's :meth:`handles` (what the picture shows and drags use)."""
         return list(self.handles())
 
     def handle_position(self, name: str):
@@ -104,14 +89,9 @@ class HandleMixin:
         return found[name]
 
     def drag(self, name: str, start, end, steps: int = 10) -> "Explorer":
-        """Drag handle ``name`` from data point ``start`` to ``end`` in ``steps`` moves.
+        """Drag handle ``name`` from data point ``start`` to ``end`` in ``steps`` moves, as the page does.
 
-        Works in every display mode, as the page's pointer does: each move is the page's
-        drag message, checked as the page's, and one update (or one refusal, which keeps the
-        last good state and names the reason in :attr:`message`); values are not snapped to
-        the sliders' grid.
-        The handle follows the pointer: move ``k`` asks ``drag`` of the point
-        ``start + (end - start) k / steps``.
+        Each move is one update or one refusal (named in :attr:`message`); values are not snapped.
 
         Parameters
         ----------
@@ -125,13 +105,11 @@ class HandleMixin:
         Returns
         -------
         Explorer
-            ``self``, dragged.
 
         Raises
         ------
         InputError
-            No handle of that name, the handle cannot be dragged now, a start or
-            end that is not two finite numbers, or ``steps`` not a positive integer.
+            No such handle, one not draggable now, bad points, or ``steps`` not a positive integer.
         """
         h = self._handle(name)
         if not isinstance(steps, numbers.Integral) or isinstance(steps, bool) or steps < 1:
@@ -155,12 +133,7 @@ class HandleMixin:
         return self
 
     def _drag_message(self, name: str, x: float, y: float) -> bool:
-        """One drag move sent as the page sends it (``{"type": "drag", ...}``), in any display mode.
-
-        The page's canvas (a headless one outside the page, holding the handles that
-        can be dragged now) checks the message and calls :meth:`_page_drag`; a message
-        it refuses is shown as a refused drag step.
-        """
+        """One drag move sent as the page sends it, checked by the page's canvas (or a headless one)."""
         if self.display_mode == "page":
             canvas = self.canvas
         else:

@@ -1,22 +1,10 @@
 """Impulse explorer: a bat or a door at rest struck by a short blow (thesis 5.4, 5.7, figure 3.3).
 
-A bat held at its grip (or a door, seen from above, held by its hinge) is at
-rest; a short blow of impulse ``ĵ`` strikes it along a line you drag (by a
-point and by the arrow's tip).  Shown live:
-
-* the velocity pole just after the blow (held: the grip ``P`` itself; free:
-  the percussion pole ``I⁻¹ĵ`` of the blow's line, 5.64–5.68),
-* where the body would turn about if nothing held it (``pole if free``),
-* the reaction impulse ``ĵᵣ`` of the grip or hinge (the "sting"): zero when
-  the line is the grip's axis of percussion, through the *centre of
-  percussion* at ``l = d + ρ²/d`` from the grip (5.67) — then the free pole is
-  the grip,
-* the apparent mass along the line of the blow (figure 3.3): impulse per unit
-  velocity change of the struck point along the line, held and free.
-
-*Play* runs the motion after the blow (the body turning about its velocity
-pole; the time ``t`` is a slider too).  The numbers come from the scene
-:func:`planargeo.scenes.impulse.impulse` (:mod:`planargeo.mechanics.impulse`).
+The body is held at its grip (or hinge) or free; a blow of impulse ``ĵ`` strikes it along a line
+you drag.  Shown: the velocity pole after the blow, the pole if free (``I⁻¹ĵ``, 5.64–5.68), the
+reaction impulse of the grip (zero through the centre of percussion, 5.67) and the apparent mass
+along the blow (figure 3.3); *Play* runs the motion after it
+(:func:`planargeo.scenes.impulse.impulse`).
 
 Examples
 --------
@@ -46,13 +34,12 @@ __all__ = ["ImpulseExplorer"]
 ARROW = 0.25
 #: longest time after the blow that Play runs (s)
 T_MAX = 60.0
+
+
 def pole_text(tw, pole, rest: str = "at rest") -> str:
     """Readout text of the pole of a twist ``[vx, vy, ω]``: ``"(x, y) m"``, ``"at infinity (direction …)"`` or ``rest``.
 
-    ``pole`` is the scene's pole of the twist (:mod:`planargeo.scenes.impulse`), None
-    for a translation: then the pole is the ideal point ``[vx, vy, 0]`` (thesis 4.10),
-    written by :func:`planargeo.widgets.readout.point_text`, which tells ideal points
-    by :func:`planargeo.geometry.projective.is_ideal`.
+    A translation (``pole`` None) has the ideal point ``[vx, vy, 0]`` for its pole (thesis 4.10).
 
     Parameters
     ----------
@@ -71,8 +58,6 @@ def pole_text(tw, pole, rest: str = "at rest") -> str:
     --------
     >>> pole_text([0.0, 2.0, 1.0], [-2.0, 0.0]), pole_text([1.0, 0.0, 0.0], None)
     ('(-2, 0) m', 'at infinity (direction (0, 1))')
-    >>> pole_text([0.0, 0.0, 0.0], None)
-    'at rest'
     """
     tw = np.asarray(tw, dtype=float)
     if not np.any(tw):
@@ -83,8 +68,7 @@ def pole_text(tw, pole, rest: str = "at rest") -> str:
 
 
 class ImpulseExplorer(Described, Explorer):
-    """A body at rest struck by a blow: velocity pole, reaction impulse, apparent mass (thesis 5.4, 6.93).
-    """
+    """A body at rest struck by a blow: velocity pole, reaction impulse, apparent mass (thesis 5.4, 6.93)."""
 
     title = "Impulse and the centre of percussion: a bat or a door struck at rest"
     slug = "impulse"
@@ -93,7 +77,6 @@ class ImpulseExplorer(Described, Explorer):
     display_controls = ("t",)
 
     def make_controls(self):
-        # The controls: body, support, mass, the blow (point, angle, impulse) and the time after it.
         return {
             "body": W.Dropdown(options=list(BODIES), value="bat", description="body",
                                tooltip="a bat held at its grip, or a door (top view) held by its hinge"),
@@ -107,44 +90,36 @@ class ImpulseExplorer(Described, Explorer):
             "t": Step(0.0, T_MAX, 0.01, 0.0, "time after the blow t (s)").make("t"),
         }
 
-
     # ------------------------------------------------------------------ handles and Play
     def handles(self):
-        # Draggable handles: the blow's point and its arrow's tip (the arrow is ARROW × J / 2 long).
         return [xy_handle(self, "blow point", "strike x", "strike y"),
                 arrow_handle(self, "blow tip", "strike x", "strike y", "strike angle", "J", per=ARROW / 2)]
 
     def play_step(self, values, dt):
-        # The next frame of the motion after the blow: ``t + dt`` (None at the end).
         t = float(values["t"]) + float(dt)
         return None if t > T_MAX + 1e-12 else {"t": min(t, T_MAX)}
 
     # ------------------------------------------------------------------ state
     def compute(self, values, changed):
-        # The scene :func:`~planargeo.scenes.impulse.impulse` of the controls.
         return impulse(body=values["body"], support=values["support"], m=float(values["m"]), x=float(values["strike x"]),
                        y=float(values["strike y"]), angle_deg=float(values["strike angle"]), J=float(values["J"]))
 
     def _view(self) -> tuple[float, float, float, float]:
-        """The fixed frame grown (never shrunk) to hold the blow's tip; no side shorter than the
-        mechanism (the body at rest, the blow's point and tip) and 0.2 m."""
+        """The fixed frame grown to hold the blow's tip; no side shorter than the mechanism and 0.2 m."""
         v = self.values
         tip = self.handle_position("blow tip")
         return grown_view(self.limits, [tip], 0.1, extra=0.2,
                           sized=np.vstack([body_outline(v["body"]), [v["strike x"], v["strike y"]], tip]))
 
     def mechanism_points(self):
-        # Points the view must hold: the handles and the body's outline at rest.
         pts = super().mechanism_points()
         st = self.state
         return pts if st is None else np.vstack([pts, np.asarray(st.extra["outline"], dtype=float)])
 
     def scene_picture(self, state, view=None):
-        # The state's picture, built natively (:func:`planargeo.draw.pictures.impulse.impulse_picture`).
         return impulse_picture(state, t=float(self.values["t"]), view=view or self._view(), size=self.figure_px)
 
     def readout_of(self, state):
-        # The readout of the result ``state`` (ω, poles, the reaction impulse, apparent masses, energy).
         r, q = state, state.quantities
         d = float(np.hypot(*q["com"]))
         return {

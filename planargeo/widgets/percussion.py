@@ -1,29 +1,10 @@
 """Inertia and percussion explorer: the sweet spot of thesis 5.4.
 
-A body at rest (a preset shape or your own polygon) has an inertia ``I``, an
-imaginary conic drawn as its radius-of-gyration circle.  ``I`` maps an
-acceleration pole ``a`` (a point) to the force ``f = I a`` (a line) that
-produces it: the *axis of percussion* of ``a`` (5.64-5.67).  It is
-perpendicular to the line from ``a`` to the centre of mass, on the far side,
-at ``r = ρ²/d`` from the centre of mass (5.68).
-
-Two ways to play:
-
-``drive = "acceleration pole"``
-    move the pole (sliders, or drag it in the page); the axis
-    of percussion follows; or drag the axis itself, by its point on the line
-    from the pole through ``c`` (a parallel move) or by a second point on it
-    (a turn), and the pole follows (``a = I⁻¹ f``);
-``drive = "impact"``
-    strike the body with a force across its long axis at a chosen place; the
-    pole of the resulting acceleration follows (``a = I⁻¹ f``).  Strike at
-    the sweet spot and the body starts turning exactly about the grip: the
-    hands feel no sting.
-
-The polygon is integrated once per shape (its area, centroid and polar
-moment); the inertia is linear in the mass, so a change of mass, pole or
-impact point needs no integration.  The angular acceleration ``α`` only
-enters the readout (``m d α``, 5.66): changing it only redraws.
+A body at rest (a preset shape or a polygon) has an inertia ``I``, drawn as its radius-of-gyration
+circle; ``I`` maps an acceleration pole ``a`` to the force ``f = I a`` that produces it, the
+*axis of percussion* (5.64-5.67), at ``r = ρ²/d`` beyond the centre of mass (5.68).  Drive by
+the pole (drag it, or drag the axis and the pole follows, ``a = I⁻¹ f``) or by an impact across
+the body: struck at the sweet spot, it starts turning about the grip.
 """
 from __future__ import annotations
 
@@ -54,10 +35,9 @@ PRESETS = {
     "custom polygon": None,
 }
 
+
 def parse_polygon(text: str) -> Polygon:
     """A shapely polygon from ``"x, y; x, y; ..."`` (at least three vertices).
-
-    Raises :class:`~planargeo.errors.InvalidPolygonError` naming ``polygon``.
 
     Parameters
     ----------
@@ -75,8 +55,6 @@ def parse_polygon(text: str) -> Polygon:
 
     Examples
     --------
-    >>> parse_polygon("0, 0; 2, 0; 0, 1").area
-    1.0
     >>> parse_polygon("0,0; 1,1; 1,0; 0,1")
     Traceback (most recent call last):
     ...
@@ -101,7 +79,7 @@ class PercussionExplorer(Described, Explorer):
     Parameters
     ----------
     **kw
-        Keyword arguments of :class:`~planargeo.widgets.base.Explorer` (``display``, control values...).
+        Keyword arguments of :class:`~planargeo.widgets.base.Explorer`.
     """
 
     title = "Inertia and percussion: the sweet spot"
@@ -115,8 +93,6 @@ class PercussionExplorer(Described, Explorer):
         super().__init__(**kw)
 
     def make_controls(self):
-        # The controls (see the module docstring).
-        # Returns ``{name: widget}``.
         return {
             "pole x": Step(-1.5, 2.0, 0.01, 0.0, "pole of a: x (m)").make("pole x"),
             "pole y": Step(-1.2, 1.2, 0.01, 0.0, "pole of a: y (m)").make("pole y"),
@@ -132,7 +108,6 @@ class PercussionExplorer(Described, Explorer):
         }
 
     def disabled(self, values):
-        # Controls that change nothing in the drive or shape chosen, with the reason.
         out = {}
         if values["drive"] == "impact":
             reason = "the impact sets the pole here (a = I⁻¹f): choose drive = acceleration pole to move it"
@@ -184,7 +159,6 @@ class PercussionExplorer(Described, Explorer):
         return self._pole_for_axis(np.array([d[0], d[1], -(foot[1] * d[0] - foot[0] * d[1])]))
 
     def handles(self):
-        # ``a`` (the pole), ``axis (point)``, ``axis (direction)`` (pole drive) or ``impact``.
         pole_drive = lambda: self.state is not None and self.values["drive"] == "acceleration pole"
         axis = lambda k: (tuple(self._axis_points()[k]) if pole_drive() and self._axis_points()
                           is not None else None)
@@ -207,7 +181,6 @@ class PercussionExplorer(Described, Explorer):
         return cached(self._inertias, key, integrate)
 
     def compute(self, values, changed):
-        # The state for the control values ``values``.
         shape, I0 = self._shape_inertia(values)
         m = float(values["mass (kg)"])
         # uniform lamina of mass m: the unit-density inertia scaled by m / area (1.65 is linear)
@@ -225,7 +198,6 @@ class PercussionExplorer(Described, Explorer):
         return {"shape": shape, "I": I, "c": c, "a": a, "f": line}
 
     def readout_of(self, state):
-        # The readout of the state ``state``: the pole, ``d``, ``r = ρ²/d``, the centres of percussion.
         c = state["c"]
         nums = percussion_numbers(state)
         rho, m, P, d = nums["rho"], nums["mass"], nums["P"], nums["d"]
@@ -255,7 +227,6 @@ class PercussionExplorer(Described, Explorer):
         return out
 
     def scene_picture(self, state, view=None):
-        # The state's picture (:func:`planargeo.draw.pictures.percussion.percussion_picture`).
         return percussion_picture(state, impact=self.values["drive"] == "impact",
                                   view=view or self._view(state), size=self.figure_px)
 
@@ -267,9 +238,8 @@ class PercussionExplorer(Described, Explorer):
         return (cx.min, cx.max, cy.min, cy.max)
 
     def mechanism_points(self):
-        # What the view holds: the body's outline, the grip, and the handles within the pole's reach.
-        # A handle of the axis far beyond the pole's sliders (a pole near ``c`` sends its axis
-        # far away, ``r = ρ²/d``) is left out: the axis is still drawn, clipped to the view.
+        # the outline, the grip and the handles within the pole's reach (a pole near c sends the
+        # axis far away: it is drawn clipped)
         st = self.state
         pts = [np.zeros((1, 2))]
         if st is not None:
@@ -282,11 +252,7 @@ class PercussionExplorer(Described, Explorer):
         return np.vstack(pts)
 
     def _view(self, st):
-        """The view: the body, the grip and the handles in reach, 0.25 m around, square, in steps of 0.25 m.
-
-        A function of the state alone (a fresh explorer with the same values shows the same
-        view); it changes in steps, not under every move of a drag.
-        """
+        """The view: the body, the grip and the handles in reach, 0.25 m around, square, in steps of 0.25 m."""
         pts = self.mechanism_points()
         lo, hi = pts.min(axis=0) - self._STEP, pts.max(axis=0) + self._STEP
         # as tall as wide (and the other way): the whole mechanism fits either way round

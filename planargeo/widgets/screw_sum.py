@@ -1,27 +1,11 @@
 """Twist and wrench addition explorer (thesis 4.2 and 4.4).
 
-Two twists (rotations about a pole, or translations) add to a twist whose pole
-lies on the line joining the two poles, at the lever ratio ``β = ω2/(ω1+ω2)``
-(4.11-4.13); a rotation plus a translation is a rotation shifted by
-``ρ = u/ω`` (4.16); two opposite rotations make a translation (an ideal pole).
-
-Dually, two wrenches (forces on lines, or couples) add to a wrench whose line
-passes through the meet of the two lines (4.4.1); parallel forces follow the
-lever rule (4.4.2), a force plus a couple is a parallel force shifted by
-``ρ = τ/F`` (4.4.3), and equal opposite parallel forces make a couple (the
-line at infinity).
-
-All the arithmetic is :func:`planargeo.screws.add_twists` /
-:func:`planargeo.screws.add_wrenches`; :func:`planargeo.draw.pictures.screw_sum.screw_sum_picture`
-draws it.  The readout
-names the special case reached (:mod:`planargeo.screws.special`, thesis 10.2.4):
-dragging or sliding into it passes through the ideal element (a pole at
-infinity, parallel lines meeting at infinity, a couple) without an error.
-
-Handles (dragged in the page, or :meth:`Explorer.drag` in tests): the
-poles ``v1``, ``v2`` of rotations; the directions ``v1 direction``,
-``v2 direction`` of translations; the force lines ``f1``, ``f2`` by a point
-and ``f1 direction``, ``f2 direction`` by the tip of their arrow.
+Two twists add to a twist whose pole lies on the line of their poles at the lever ratio
+``β = ω2/(ω1+ω2)`` (4.11-4.13); dually two wrenches add to a wrench through the meet of their
+lines (4.4.1).  The arithmetic is :func:`planargeo.screws.add_twists` /
+:func:`~planargeo.screws.add_wrenches`; the readout names the special case reached
+(:mod:`planargeo.screws.special`), passing through ideal elements without an error.  Drag the
+poles and directions of twists, the lines and arrow tips of forces.
 
 Examples
 --------
@@ -60,9 +44,9 @@ _OTHER = {"rotation": "force", "translation": "couple", "force": "rotation", "co
 _SIZE_LABEL = {"rotation": "ω{k} (rad/s)", "translation": "speed u{k} (m/s)",
                "force": "force F{k} (N)", "couple": "moment τ{k} (N·m)"}
 _SUBSCRIPT = {1: "₁", 2: "₂"}
-#: the sum's components: a twist [vx, vy, ω] (the velocity of the origin's point and the rate),
-#: a wrench [fx, fy, τ] (the force and its moment about the origin)
+#: the sum's components: a twist [vx, vy, ω], a wrench [fx, fy, τ] (about the origin)
 SUM_UNITS = {"twists": ("m/s", "m/s", "rad/s"), "wrenches": ("N", "N", "N·m")}
+
 
 def _xy_or_ideal(p):
     if p is None:
@@ -97,16 +81,10 @@ ARM = 1.0
 class ScrewSumExplorer(Described, Explorer):
     """Add two twists (points) or two wrenches (lines) and watch the construction (thesis 4.2, 4.4).
 
-    Controls: ``add`` (twists or wrenches), and per screw ``k = 1, 2`` its kind
-    (the menu offers the kinds of the mode: rotation or translation, force or couple),
-    point ``(xk, yk)`` [m], size (``ω`` [rad/s], speed [m/s], force [N] or
-    moment [N·m]) and direction ``anglek`` [deg].  The readout gives the
-    construction's numbers with units and the special case by name.
-
     Parameters
     ----------
     **kwargs
-        As :class:`~planargeo.widgets.base.Explorer` (``display``, initial control values).
+        As :class:`~planargeo.widgets.base.Explorer`.
     """
 
     title = "Twist and wrench addition"
@@ -129,7 +107,6 @@ class ScrewSumExplorer(Described, Explorer):
         return {**self.row_units, "sum": SUM_UNITS.get(getattr(self, "_mode", None) or self._first_mode)}
 
     def make_controls(self):
-        # The mode ``add`` and, per screw, its kind (of that mode), point, size and direction.
         kinds = W.ToggleButtons(options=("twists", "wrenches"), value=self._first_mode,
                                 description="add")
         c = {"add": kinds}
@@ -144,7 +121,7 @@ class ScrewSumExplorer(Described, Explorer):
         return c
 
     def _offer_kinds(self, mode: str) -> None:
-        """Offer the kinds of ``mode`` in both screws' menus; a kind of the other mode becomes its counterpart."""
+        """Offer the kinds of ``mode`` in both menus; a kind of the other mode becomes its counterpart."""
         if mode not in KINDS:
             return
         offered = KINDS[mode]
@@ -163,7 +140,6 @@ class ScrewSumExplorer(Described, Explorer):
         Parameters
         ----------
         **values
-            ``name=value`` per control.
 
         Returns
         -------
@@ -176,15 +152,12 @@ class ScrewSumExplorer(Described, Explorer):
         return super().set(**values)
 
     def adjust(self, values, changed):
-        # Kinds follow the mode: in twists mode a screw is a rotation or a translation, in wrenches a force or a couple.
-        # Returns Kinds that follow a change of ``add``.
         mode = values["add"]
         self._offer_kinds(mode)
         return {f"kind{k}": _OTHER[values[f"kind{k}"]] for k in (1, 2)
                 if values[f"kind{k}"] not in KINDS[mode]}
 
     def disabled(self, values):
-        # Sliders a screw of its kind does not use, with the reason.
         out = {}
         for k in (1, 2):
             kind = values[f"kind{k}"]
@@ -212,19 +185,15 @@ class ScrewSumExplorer(Described, Explorer):
         return Wrench.couple(m)
 
     def compute(self, values, changed):
-        # The sum's construction (:func:`~planargeo.screws.twists.add_twists` or ``add_wrenches``).
         mode = values["add"]
         for k in (1, 2):
             if values[f"kind{k}"] not in KINDS[mode]:
                 raise InputError(f"kind{k} must be one of {list(KINDS[mode])} when adding {mode}, "
                                  f"got {values[f'kind{k}']!r}")
-        s1, s2 = self._screw(values, 1), self._screw(values, 2)
-        if mode == "twists":
-            return {"mode": mode, "c": add_twists(s1, s2)}
-        return {"mode": mode, "c": add_wrenches(s1, s2)}
+        add = add_twists if mode == "twists" else add_wrenches
+        return {"mode": mode, "c": add(self._screw(values, 1), self._screw(values, 2))}
 
     def readout_of(self, state):
-        # The readout of ``state`` (numbers with units, the special case); the size sliders' names follow the kinds.
         c = state["c"]
         tw = state["mode"] == "twists"
         self._mode = state["mode"]
@@ -248,17 +217,13 @@ class ScrewSumExplorer(Described, Explorer):
         return out
 
     def scene_picture(self, state, view=None):
-        # The state's picture (:func:`planargeo.draw.pictures.screw_sum.screw_sum_picture`).
         v = self.shown_values or self.values
         return screw_sum_picture(state["mode"], state["c"], anchors=((v["x1"], v["y1"]), (v["x2"], v["y2"])),
                                  view=view or self.limits, size=self.figure_px)
 
     # ------------------------------------------------------------------ handles
     def handles(self) -> list[Handle]:
-        # ``v1``, ``v2``: a rotation's pole (``xk``, ``yk``); ``v1 direction``, ``v2 direction``: a
-        # translation's direction (``anglek``); ``f1``, ``f2``: a point of a force line; ``f1 direction``,
-        # ``f2 direction``: the tip of an arm :data:`ARM` long along the force.  A handle of a screw
-        # of another kind is not draggable now (``where()`` is None).
+        # a handle of a screw of another kind is not draggable now
         out = []
         for k in (1, 2):
             def kind_is(kind, k=k):

@@ -1,27 +1,12 @@
 """Constrained chain: articulated mobility and chain splitting (thesis sections 7.4-7.6, corrected 7.38a).
 
-A chain of ``n`` identical bodies (mass 1, joints ``L = 1`` apart, radius of gyration ``ρ``)
-is pinned to the ground at ``CJ_1``; every further joint bends it by ``φ``.  At rest, a pure
-couple ``f_{n+1} = [0, 0, τ]`` acts on the tip from a fictitious joint ``n + 1`` (7.44);
-gravity ``g`` may be added.
-
-Pick the joint where the chain is split (slider, or drag the split marker along the chain):
-bodies ``1..i`` below it form the *constrained chain* with articulated mobility ``Λ_i⁻¹``
-and bias ``b_i`` (7.4.1 with the corrected sign of 7.38a, ``docs/errata.md``), bodies
-``i+1..n`` above it the *free-floating chain* with articulated inertia ``A_{i+1}``.  The
-explorer shows
-
-* the acceleration of body ``i`` straight from the split (7.54) and the force of the split
-  joint ``f_{i+1}`` (7.56), drawn as its line of action;
-* the accelerations of all bodies (chain splitting at every joint, 7.6) as acceleration
-  poles, the lower half and the upper half in two colours;
-* where a couple on body ``i`` alone would turn it (the pole of ``-Λ_i⁻¹ [0, 0, 1]``: the
-  effective centre of mass of body ``i`` in the constrained chain, 7.5);
-* with ``n = 2``, thesis example 7.5: ``Λ_2⁻¹`` (7.43), ``a_2 = -Λ_2⁻¹ f_3`` (7.46) and the
-  position ``x/L`` of its pole (7.47-7.48) beside the closed form
-  ``1 + 2η² cos φ / (4 + 5η²)``.
-
-The state is a single instant (accelerations at rest): nothing moves, so there is no Play.
+A chain of ``n`` identical bodies pinned to the ground, every further joint bent by ``φ``, at rest
+under a couple on the tip (7.44) and gravity.  Split it at a joint (slider, or drag the marker):
+bodies ``1..i`` form the constrained chain with articulated mobility ``Λ_i⁻¹`` and bias ``b_i``
+(7.4.1, the corrected sign of 7.38a, ``docs/errata.md``), the rest the free-floating chain.
+Shown: the acceleration of body ``i`` from the split (7.54), the split joint's force (7.56),
+every body's acceleration pole (7.6), the centre of ``Λ_i⁻¹`` (7.5) and, for ``n = 2``, thesis
+example 7.5 beside its closed form (7.48).  A single instant: no Play.
 """
 from __future__ import annotations
 
@@ -46,11 +31,12 @@ NMAX = 8
 _ACC = ("m/s²", "m/s²", "rad/s²")
 
 _LAM = ("1/kg", "1/kg", "1/(kg·m)")
+
+
 def x_over_L_7_48(rho: float, L: float, phi: float) -> float:
     """Closed form of thesis 7.48: the pole of ``a_2`` of example 7.5 at ``x / L`` on ``y = 0``.
 
-    ``x / L = 1 + 2 η² cos φ / (4 + 5 η²)`` with ``η = L / ρ`` (7.49), derived by hand from the
-    2×2 joint-space inertia of the pinned pair (``H u = [1, 1]ᵀ`` for the couple on body 2).
+    ``x / L = 1 + 2 η² cos φ / (4 + 5 η²)`` with ``η = L / ρ`` (7.49).
 
     Parameters
     ----------
@@ -88,16 +74,13 @@ class SplittingExplorer(Described, ChainBodies, Explorer):
     slug = "splitting"
     figsize = (7.6, 5.2)
     display_controls = ("mobility centres",)
-    #: lengths in metres (L = 1); a value below ``zero_tol × scale`` is round-off and reads 0 (the smallest
-    #: real values here, a 0.05 N·m couple on 8 bodies of ρ = 2 m, are above 1e-4)
+    #: lengths in metres (L = 1); below ``zero_tol × scale`` is round-off (real values here are above 1e-4)
     scale = 1.0
     zero_tol = 1e-6
 
     spans = ("split at joint", 0, NMAX)
 
     def make_controls(self):
-        # The explorer's controls.
-        # Returns ``{name: widget}``.
         return {
             "bodies n": Step(2, NMAX, 1, 2, "bodies n", integer=True).make("bodies n"),
             "split at joint": Step(2, NMAX, 1, 2, "split at joint i+1", integer=True).make("split"),
@@ -106,28 +89,21 @@ class SplittingExplorer(Described, ChainBodies, Explorer):
             "couple τ (N·m)": Step(-5.0, 5.0, 0.05, 1.0, "couple τ on the tip (N·m)").make("tau"),
             "g (m/s²)": Step(0.0, 9.81, 0.01, 0.0, "g (m/s²)").make("g"),
             "mobility centres": W.Checkbox(value=True, description="mobility centres"),
-            # the focus of the base contract, made here so that it is an ordinary control (the base's
-            # test of display controls sets sliders and checkboxes only)
+            # the focus made here: an ordinary control, not a display control of the base
             "focus": W.Dropdown(options=["all", *self.focus_options()], value="all", description="focus",
                                 layout=W.Layout(width="310px")),
         }
 
     def adjust(self, values, changed):
-        # The split joint stays on the chain (``2 <= i+1 <= n``; its slider spans 2 to ``n`` once shown).
-        # Returns ``{"split at joint": n}`` when the chain became shorter than the split.
         n = int(values["bodies n"])
         return {"split at joint": n} if values["split at joint"] > n else {}
 
     def disabled(self, values):
-        # Controls that would change nothing, with the reason.
-        # Returns ``{"split at joint": reason}`` for two bodies (the only joint to split at is joint 2).
         if int(values["bodies n"]) == 2:
             return {"split at joint": "two bodies: joint 2 is the only joint to split at (add bodies to move it)"}
         return {}
 
     def explain(self):
-        # Every symbol and readout name on screen: one-line meaning and thesis equation (the split's own
-        # symbols as the figure names them).
         n = int(self.values["bodies n"])
         i = min(int(self.values["split at joint"]), n) - 1
         return {
@@ -144,12 +120,10 @@ class SplittingExplorer(Described, ChainBodies, Explorer):
         }
 
     def focus_options(self):
-        # Focus on one side of the split: the other side's links and poles fade.
-        # Returns ``"constrained part"`` (bodies ``1..i``) and ``"free-floating part"`` (``i+1..n``).
         return ["constrained part", "free-floating part"]
 
     def handles(self):
-        # Draggable handles: the split marker (snaps to the nearest joint) and the tip (bend ``φ``).
+        # the split marker (snaps to the nearest joint) and the tip (bend φ)
         def split_where():
             st = self.state
             if st is None or st["n"] < 3:             # two bodies: nowhere else to split (disabled)
@@ -164,7 +138,6 @@ class SplittingExplorer(Described, ChainBodies, Explorer):
         return [Handle("split", split_where, split_drag), self._tip_handle(bend_for_tip)]
 
     def compute(self, values, changed):
-        # Mobilities, the split solution and every body's acceleration.
         n, split = int(values["bodies n"]), int(values["split at joint"]) - 1
         rho, phi, tau = float(values["ρ (m)"]), math.radians(values["bend φ (deg)"]), float(values["couple τ (N·m)"])
         if tau == 0.0 and float(values["g (m/s²)"]) == 0.0:
@@ -177,8 +150,7 @@ class SplittingExplorer(Described, ChainBodies, Explorer):
         return st
 
     def _view(self, st) -> tuple[float, float, float, float]:
-        """The view of the state ``st``: every joint and the split force's arrow; the poles at the split and
-        the centre when near."""
+        """The view: every joint, the split force's arrow, the poles at the split and the centre."""
         i = st["split"]
         pts = st["joints"]
         f = st["f_split"]
@@ -191,13 +163,11 @@ class SplittingExplorer(Described, ChainBodies, Explorer):
         return fit_box(np.vstack(mech), np.vstack(extra) if extra else (), margin=0.15)
 
     def scene_picture(self, state, view=None):
-        # The state's picture, built natively (:func:`planargeo.draw.pictures.splitting.splitting_picture`).
         v = self.values
         return splitting_picture(state, view=view or self._view(state), focus=v.get("focus", "all"),
                                  centres=bool(v["mobility centres"]), size=self.figure_px)
 
     def readout_of(self, state):
-        # The readout of the state ``state`` (the split's accelerations and force, ``Λᵢ⁻¹``, ``bᵢ``, ``q̈``).
         n, i = state["n"], state["split"]
         f = state["f_split"]
         self._span(n)                                 # the split slider spans the chain's joints 2..n

@@ -1,30 +1,10 @@
-"""Subspace decomposition explorer: one body, one joint, one force (thesis 6.1–6.4, 6.63–6.97, figures 6.1–6.5).
+"""Subspace decomposition explorer: one body, one joint, one force (thesis chapter 6, figures 6.1–6.5).
 
-A body at rest (mass ``m``, radius of gyration ``ρ``, centre of mass ``c``) is
-held by a joint — a revolute pivot, a prismatic slider, a pin in a slot
-(revolute + prismatic) or the plane joint of 4.79 (two translations) — and
-loaded by a force ``f``.  Drag the joint, its direction, the force's point and
-its arrow tip; everything of chapter 6 follows live:
-
-* the motion space ``s`` (points: poles of the allowed motions) and the
-  reaction space ``R`` (lines through them, ``sᵀR = 0``),
-* ``T = I s (sᵀIs)⁻¹`` (lines: the axes of percussion of ``s``) and
-  ``U = I⁻¹R (RᵀI⁻¹R)⁻¹`` (points on them, ``TᵀU = 0``),
-* *wrench split* ``f = T Q + R μ`` (6.38): ``T Q`` accelerates the body along
-  the joint, ``R μ`` goes into the joint (which pushes back with ``−R μ``),
-* *twist split* of the free body's acceleration ``I⁻¹f = s ψ + U γ`` (6.44,
-  6.80–6.81): ``s ψ`` is how the held body accelerates, ``U γ`` the motion
-  the joint's base would need,
-* the joint-space inertia ``sᵀIs`` (6.67) and the power relations
-  (``sᵀT = 1``, ``RᵀU = 1``, ``TᵀU = 0``, ``T sᵀ + R Uᵀ = 1``, zero powers) as
-  residuals that must read 0.
-
-For the 2-dof joints the two points of ``s`` span a *line of poles* — every
-instant centre the joint allows — which is the reaction line ``R`` itself; the
-two lines of ``T`` meet at the one point ``U``: the active forces are the
-pencil of lines through ``U``.
-
-The numbers come from :func:`planargeo.scenes.subspace.subspace_state`.
+A body at rest held by a joint (revolute, prismatic, pin in a slot, or the plane joint of 4.79)
+and loaded by a force ``f``: drag the joint, its direction, the force's point and its arrow tip.
+Shown live: the motion space ``s`` and reaction space ``R``, ``T`` and ``U``, the wrench split
+``f = T Q + R μ``, the twist split ``I⁻¹f = s ψ + U γ``, ``sᵀIs`` and the power relations as
+residuals that read 0 (:func:`planargeo.scenes.subspace.subspace_state`).
 
 Examples
 --------
@@ -36,7 +16,6 @@ Examples
 (1.0, 0.0)
 """
 from __future__ import annotations
-
 
 import ipywidgets as W
 import numpy as np
@@ -63,7 +42,7 @@ _SUB = "₁₂"
 
 #: the heading row above the identity checks
 CHECKS_HEADING = "checks: thesis identities of s, R, T, U"
-#: residual of the scene -> (readout row, unit, why it must read 0), kept as data (``planargeo/data/quantities.toml``, its ``[explorer.*]`` tables)
+#: residual of the scene -> (readout row, unit, why it must read 0), kept as data
 CHECK_ROWS = {k: tuple(v) for k, v in explorer_data("subspace")["checks"].items()}
 
 
@@ -88,7 +67,6 @@ class SubspaceExplorer(Explorer):
     display_controls = ()   # "show" recomputes (cheap): the generic test flips display controls as sliders
 
     def make_controls(self):
-        # The controls: joint kind and pose, body, force, what to show.
         return {
             "joint": W.Dropdown(options=list(JOINT_OPTIONS), value="revolute", description="joint"),
             "joint x": Step(-1.4, 3.4, 0.01, 0.0, "joint x (m)").make("joint x"),
@@ -105,13 +83,11 @@ class SubspaceExplorer(Explorer):
         }
 
     def disabled(self, values):
-        # Controls that change nothing for the joint chosen, with the reason.
         if JOINT_OPTIONS[values["joint"]] == "revolute":
             return {"joint angle": "a revolute joint has no direction: only its pivot counts"}
         return {}
 
     def explain(self):
-        # Every symbol on screen, with its thesis equation.
         st = self.state
         k = 1 if st is None else int(st["s"].shape[1])
         out = dict(explorer_data("subspace")["symbols"])
@@ -134,7 +110,6 @@ class SubspaceExplorer(Explorer):
 
     # ------------------------------------------------------------------ handles
     def handles(self):
-        # Draggable handles: the joint, its direction (not a pivot's), the force's point and its arrow tip.
         slides = lambda: JOINT_OPTIONS[shown(self)["joint"]] != "revolute"
         return [xy_handle(self, "joint", "joint x", "joint y"),
                 arrow_handle(self, "joint direction", "joint x", "joint y", "joint angle", arm=DIR_HANDLE,
@@ -144,7 +119,6 @@ class SubspaceExplorer(Explorer):
 
     # ------------------------------------------------------------------ state
     def compute(self, values, changed):
-        # The decomposition of the controls' state (:func:`~planargeo.scenes.subspace.subspace_state`).
         m, rho = float(values["m"]), float(values["rho"])
         I = inertia_matrix(m, COM, m * rho * rho)
         e = float(values["F"]) * unit_direction(values["force angle"])
@@ -156,13 +130,11 @@ class SubspaceExplorer(Explorer):
         return st
 
     def scene_picture(self, state, view=None):
-        # The state's picture, built natively (:func:`planargeo.draw.pictures.subspace.subspace_picture`).
         v = self.values
         return subspace_picture(state, show=SHOW_OPTIONS[v["show"]], m=float(v["m"]), rho=float(v["rho"]),
                                 view=view or self._view(), size=self.figure_px)
 
     def mechanism_points(self):
-        # Points the view must hold: the handles and the body's corners.
         return np.vstack([super().mechanism_points(), BAR])
 
     def _view(self) -> tuple[float, float, float, float]:
@@ -170,7 +142,6 @@ class SubspaceExplorer(Explorer):
         return grown_view(self.limits, super().mechanism_points(), 0.3)
 
     def readout_of(self, state):
-        # The readout of the state (joint forces and accelerations, ``sᵀIs``, the checks), each row with its unit.
         st, k = state, int(state["s"].shape[1])
         s, R, sIs, reaction = st["s"], st["R"], st["sIs"], st["reaction"]
         rows = [("joint", _LABEL[st["joint"]], None), ("k (degrees of freedom)", k, "—")]
