@@ -1,24 +1,11 @@
 """Conics as symmetric 3×3 matrices: polarity, classification, constructions (thesis 5.2).
 
-A conic is a symmetric matrix ``C`` in the package's homogeneous coordinates
-(see :mod:`planargeo.geometry.projective`): its points are the ``Q`` with
-``Q @ C @ Q == 0`` (5.38).  It maps a point ``p`` to its *polar* line
-``C p`` (5.36) and a line ``l`` to its *pole* ``C⁻¹ l`` (5.37).  An inertia
-matrix is a positive definite, i.e. *imaginary*, conic (5.4): it has no real
-points, yet maps every real point (acceleration) to a real line (force).
-
-Every function broadcasts over leading dimensions unless said otherwise
-(matrices ``(..., 3, 3)``, vectors ``(..., 3)``).  Tolerances appear only
-where a decision is genuinely numerical (rank, "is a parabola", "is on the
-conic"); they are relative and exposed as ``rtol`` arguments (finite, >= 0).
-
-Finite in, finite out: the conic's matrix and the points and lines are scaled
-by powers of two where a product could overflow (exact: the geometry does not
-depend on the scale, and where the result's scale matters, as for
-:func:`polar` and :func:`pole` of an inertia, it is scaled back exactly); a
-result beyond double precision raises
-:class:`~planargeo.errors.NumericOverflowError`, and a construction that a
-degenerate conic leaves undefined raises :class:`DegenerateGeometryError`.
+A conic ``C`` in the package's homogeneous coordinates has the points ``Q @ C @ Q == 0``
+(5.38); it maps a point to its polar ``C p`` (5.36) and a line to its pole ``C⁻¹ l`` (5.37).
+An inertia is an imaginary (definite) conic (5.4).  Functions broadcast; tolerances are
+relative ``rtol`` arguments, used only where a decision is numerical.  Arguments are scaled
+exactly by powers of two where a product could overflow; a result beyond double precision
+raises :class:`~planargeo.errors.NumericOverflowError`.
 """
 from __future__ import annotations
 
@@ -146,11 +133,7 @@ def _nline(l):
 # --------------------------------------------------------------------------- polarity
 @_shared
 def polar(C, p) -> np.ndarray:
-    """Polar line ``C p`` of point ``p`` with respect to conic ``C`` (thesis 5.36).
-
-    For an inertia ``I`` and an acceleration pole ``a`` this is the axis of
-    percussion ``I a`` (5.64-5.68).  A point at infinity maps to a line
-    through the centre (a diameter).
+    """Polar line ``C p`` of point ``p`` (thesis 5.36); for an inertia, the axis of percussion (5.64).
 
     Parameters
     ----------
@@ -159,12 +142,11 @@ def polar(C, p) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3)
-        The polar line ``C p`` (not normalised: for an inertia it is the wrench).
+        ``C p``, not normalised.
 
     Examples
     --------
-    >>> C = conic_circle([0.0, 0.0], 1.0)
-    >>> polar(C, [0.0, -2.0, 1.0])          # the point (2, 0): polar is x = 1/2
+    >>> polar(conic_circle([0.0, 0.0], 1.0), [0.0, -2.0, 1.0])          # the point (2, 0): x = 1/2
     array([ 0., -2., -1.])
     """
     C = _conic(C)
@@ -175,30 +157,23 @@ def polar(C, p) -> np.ndarray:
 
 @_shared
 def pole(C, l, rtol: float = 1e-13) -> np.ndarray:
-    """Pole ``C⁻¹ l`` of line ``l`` with respect to conic ``C`` (thesis 5.37).
-
-    Solved with ``numpy.linalg.solve`` (no explicit inverse), so the scale is
-    exact: for an inertia ``I`` and a force ``f``, ``pole(I, f)`` is the
-    acceleration ``I⁻¹ f``.  The line at infinity maps to the centre.
+    """Pole ``C⁻¹ l`` of line ``l`` (thesis 5.37), solved (exact scale: for an inertia, the acceleration).
 
     Parameters
     ----------
-    {C}
-    l : array_like, shape (..., 3)
-        Homogeneous line (for an inertia: a wrench).
+    {C l}
     rtol : float, optional
         ``C`` counts as singular when its condition number exceeds ``1/rtol``.
 
     Returns
     -------
     numpy.ndarray, shape (..., 3)
-        The pole ``C⁻¹ l`` (not normalised: for an inertia, the acceleration).
+        ``C⁻¹ l``, not normalised.
 
     Raises
     ------
     DegenerateGeometryError
-        If ``C`` is singular (a degenerate conic, condition number above
-        ``1/rtol``): poles are then not unique.  The error carries ``.cond``.
+        ``C`` singular (poles not unique); carries ``.cond``.
 
     Examples
     --------
@@ -228,7 +203,6 @@ def conic_residual(C, p) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (...)
-        ``p @ C @ p`` (for an inertia and a twist: twice the kinetic energy, J).
 
     Examples
     --------
@@ -245,9 +219,6 @@ def conic_residual(C, p) -> np.ndarray:
 def is_on_conic(C, p, rtol: float = 1e-9) -> np.ndarray:
     """True where ``|p C p| <= rtol |C| |p|²`` (relative form of thesis 5.38).
 
-    ``p`` is scaled to unit length first, so far (near-ideal) points are
-    handled without overflow.
-
     Parameters
     ----------
     {C p}
@@ -257,7 +228,6 @@ def is_on_conic(C, p, rtol: float = 1e-9) -> np.ndarray:
     Returns
     -------
     numpy.ndarray of bool, shape (...)
-        ``True`` where ``p`` lies on ``C`` within ``rtol``.
 
     Examples
     --------
@@ -275,29 +245,24 @@ def is_on_conic(C, p, rtol: float = 1e-9) -> np.ndarray:
 # --------------------------------------------------------------------------- classification
 @dataclass(frozen=True)
 class ConicType:
-    """Result of :func:`classify`.
+    """Result of :func:`classify`; ``str`` gives e.g. ``'real ellipse'``.
 
     Attributes
     ----------
     reality : str
-        ``"real"`` (full rank, has real points), ``"imaginary"`` (full rank,
-        definite: no real points, like an inertia) or ``"degenerate"``.
+        ``"real"``, ``"imaginary"`` (definite, like an inertia) or ``"degenerate"``.
     kind : str
-        ``"ellipse"``, ``"parabola"``, ``"hyperbola"`` for full rank;
-        ``"line pair"``, ``"point"`` (two conjugate imaginary lines through a
-        real point), ``"double line"`` or ``"zero"`` for degenerate conics.
+        ``"ellipse"``, ``"parabola"``, ``"hyperbola"``; degenerate: ``"line pair"``, ``"point"``,
+        ``"double line"`` or ``"zero"``.
     is_circle : bool
-        An ellipse (real or imaginary) whose quadratic part is isotropic.
+        An ellipse whose quadratic part is isotropic.
     rank : int
-        Rank of the matrix: 3 for a proper conic, 2 a line pair, 1 a double line.
+        Rank of the matrix.
 
     Examples
     --------
-    >>> t = classify(conic_ellipse([0.0, 0.0], [2.0, 1.0]))
-    >>> t
+    >>> classify(conic_ellipse([0.0, 0.0], [2.0, 1.0]))
     ConicType(reality='real', kind='ellipse', is_circle=False, rank=3)
-    >>> str(t), str(classify(conic_circle([1.0, 0.0], 2.0, imaginary=True)))   # like an inertia
-    ('real ellipse', 'imaginary circle')
     """
 
     reality: str
@@ -340,12 +305,9 @@ def _classify1(S: np.ndarray, rtol: float) -> ConicType:
 def classify(C, rtol: float = 1e-10):
     """Classify a conic (thesis 5.2.2): real / imaginary / degenerate, and its kind.
 
-    Work is done in standard coordinates ``S = T C T`` (5.47), where the
-    conic reads ``u^T A u + 2 b^T u + c = 0`` with ``A = S[1:, 1:]``:
-    ``det S = 0`` is degenerate; ``S`` definite is imaginary (no real points);
-    otherwise ``det A > 0`` is an ellipse, ``< 0`` a hyperbola, ``= 0`` a
-    parabola.  Rank and "``det A = 0``" are decided with the relative
-    tolerance ``rtol`` on eigenvalues (a parabola is a measure-zero case).
+    In standard coordinates ``S = T C T`` (5.47), with ``A = S[1:, 1:]``: ``det S = 0`` is
+    degenerate, ``S`` definite imaginary, else ``det A`` > 0, < 0, = 0 an ellipse, hyperbola,
+    parabola (eigenvalues below ``rtol`` relative count as zero).
 
     Parameters
     ----------
@@ -359,12 +321,8 @@ def classify(C, rtol: float = 1e-10):
 
     Examples
     --------
-    >>> str(classify(conic_circle([1.0, 2.0], 3.0)))
-    'real circle'
     >>> str(classify(np.diag([2.0, 1.0, 5.0])))       # an inertia-like matrix
     'imaginary ellipse'
-    >>> str(classify(conic_parabola([0.0, 0.0], 1.0)))
-    'real parabola'
     """
     C = _fitq(_conic(C), 2)                  # the kind does not depend on C's scale
     rtol = check_tolerance(rtol)
@@ -380,15 +338,10 @@ def classify(C, rtol: float = 1e-10):
 
 @_shared
 def centre(C) -> np.ndarray:
-    """Centre of a conic: the pole of the line at infinity (thesis 5.2.2).
+    """Centre of a conic, normalised: the pole of the line at infinity (thesis 5.2.2).
 
-    Computed as ``C[0] × C[1]`` (the third column of the adjugate, proportional
-    to ``C⁻¹ [0, 0, 1]``), then normalised.  Its weight is the determinant of
-    the quadratic part, so the centre of a parabola is a point at infinity
-    (its axis direction), exactly so when that determinant is exactly zero;
-    a rotated parabola built in floating point has a tiny determinant and so a
-    very far finite centre on its axis.
-    For a line pair it is the vertex.  For an inertia it is the centre of mass.
+    ``C[0] × C[1]``: an ideal point for a parabola, the vertex of a line pair, the centre of mass
+    of an inertia.
 
     Parameters
     ----------
@@ -397,20 +350,16 @@ def centre(C) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3)
-        The centre, normalised (weight 1, or unit ``(a, b)`` when ideal).
 
     Raises
     ------
     DegenerateGeometryError
-        If the centre is not unique (rows 0 and 1 of ``C`` dependent, e.g. a
-        double line or two parallel lines).
+        The centre is not unique (a double line, two parallel lines).
 
     Examples
     --------
     >>> centre(conic_circle([1.0, 2.0], 3.0))      # the point (1, 2)
     array([ 2., -1.,  1.])
-    >>> centre(conic_parabola([0.0, 0.0], 1.0))    # axis along y: ideal point
-    array([1., 0., 0.])
     """
     C = _fitq(_conic(C), 2)                  # the centre does not depend on C's scale
     z = _cross(_fitq(C[..., 0, :]), _fitq(C[..., 1, :]))
@@ -455,23 +404,19 @@ def _intersections(C, l, rtol):
 def line_conic_intersections(C, l, rtol: float = 1e-9):
     """The two points where line ``l`` meets conic ``C`` (thesis 5.38 on a line).
 
-    The line is spanned by two of its points ``a, b``; ``X = α a + β b``
-    solves the binary quadratic ``α² aCa + 2αβ aCb + β² bCb = 0`` with the
-    cancellation-free root formula.  A discriminant negative by less than
-    ``rtol`` times its scale counts as zero (a tangent).  Points at infinity
-    (e.g. on the asymptotes of a hyperbola) are ordinary results.
+    Solves the binary quadratic on two points of the line without cancellation; a discriminant
+    negative by less than ``rtol`` of its scale counts as zero (a tangent).
 
     Parameters
     ----------
     {C l}
     rtol : float, optional
-        Relative tolerance below which a negative discriminant counts as zero.
+        Relative tolerance of the discriminant.
 
     Returns
     -------
     points : ndarray, shape (..., 2, 3)
-        Normalised points; NaN where the intersections are not real.  For a
-        tangent both rows are the contact point.
+        Normalised points; NaN where not real; a tangent gives the contact point twice.
     real : ndarray of bool, shape (...)
 
     Examples
@@ -490,38 +435,27 @@ def line_conic_intersections(C, l, rtol: float = 1e-9):
 
 @_shared
 def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
-    """The two tangents from a point to a conic, and their contact points (thesis 5.2.2).
-
-    The contact points are where the polar ``C p`` meets the conic; the
-    tangent at a contact point ``X`` is its polar ``C X`` (5.39), which passes
-    through ``p``.  A point on the conic gives its tangent twice.
+    """The two tangents from a point to a conic and their contact points (thesis 5.2.2, 5.39).
 
     Parameters
     ----------
-    {C}
-    p : array_like, shape (..., 3)
-        Homogeneous point.
+    {C p}
     on_interior : {"raise", "nan"}
-        What to do for a point with no real tangents (interior to ``C``, or any
-        point when ``C`` is imaginary): raise :class:`InputError`, or return
-        NaN rows for it.
+        For a point with no real tangents: raise :class:`InputError`, or give NaN rows.
     rtol : float
-        Tolerance for "on the conic" (see :func:`line_conic_intersections`).
+        Tolerance for "on the conic" (:func:`line_conic_intersections`).
 
     Returns
     -------
     lines : ndarray, shape (..., 2, 3)
-        Normalised tangent lines.
+        Normalised tangents.
     points : ndarray, shape (..., 2, 3)
-        Normalised contact points (row ``i`` is where ``lines[i]`` touches).
+        Normalised contact points (row ``i`` on ``lines[i]``).
 
     Raises
     ------
-    InputError
-        ``on_interior`` not ``"raise"``/``"nan"``, or (with ``"raise"``) a point that has no real
-        tangents.
-    DegenerateGeometryError
-        ``p`` (or a contact point) is the vertex of a degenerate conic.
+    InputError, DegenerateGeometryError
+        Bad ``on_interior`` or (with ``"raise"``) no real tangents; ``p`` the vertex of a degenerate conic.
 
     Examples
     --------
@@ -553,11 +487,7 @@ def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
 
 @dataclass(frozen=True)
 class ExteriorConstruction:
-    """Elements of the polar construction of an exterior point (thesis 5.2.2, Fig. 5.2).
-
-    Returned by :func:`polar_construction_exterior`, so that each step can be
-    drawn.  All arrays are normalised homogeneous coordinates (points with
-    ``w = 1``, lines with unit force).
+    """The steps of the polar construction of an exterior point (thesis 5.2.2, Fig. 5.2), normalised.
 
     Attributes
     ----------
@@ -566,20 +496,15 @@ class ExteriorConstruction:
     tangents : ndarray, shape (..., 2, 3)
         Step 1: the two tangents from ``p``.
     contacts : ndarray, shape (..., 2, 3)
-        Step 2: their contact points (``contacts[i]`` on ``tangents[i]``).
+        Step 2: their contact points.
     polar : ndarray, shape (..., 3)
-        Step 3: the line joining the contacts; equals ``C p`` (5.36) up to scale.
+        Step 3: the join of the contacts, ``C p`` (5.36).
 
     Examples
     --------
-    >>> from planargeo.geometry.elements import Line, Point
     >>> K = polar_construction_exterior(conic_circle([0.0, 0.0], 1.0), [0.0, -2.0, 1.0])  # p = (2, 0)
-    >>> Point(K.point), [Point(x) for x in K.contacts]
-    (Point(x=2, y=0), [Point(x=0.5, y=0.866025), Point(x=0.5, y=-0.866025)])
-    >>> Line(K.tangents[0])
-    Line(through=(0.5, 0.866025), direction=(0.866025, -0.5))
-    >>> Line(K.polar)                                    # x = 1/2 through both contacts
-    Line(through=(0.5, 0), direction=(0, -1))
+    >>> K.contacts[:, 1]                                 # at x = 1/2
+    array([-0.5, -0.5])
     """
 
     point: np.ndarray
@@ -590,11 +515,7 @@ class ExteriorConstruction:
 
 @dataclass(frozen=True)
 class InteriorConstruction:
-    """Elements of the polar construction of an interior point (thesis 5.2.2, Fig. 5.3).
-
-    Returned by :func:`polar_construction_interior`, so that each step can be
-    drawn.  All arrays are normalised homogeneous coordinates (points with
-    ``w = 1`` or unit length at infinity, lines with unit force).
+    """The steps of the polar construction of an interior point (thesis 5.2.2, Fig. 5.3), normalised.
 
     Attributes
     ----------
@@ -603,27 +524,19 @@ class InteriorConstruction:
     lines : ndarray, shape (..., 2, 3)
         Step 1: two lines through ``p``.
     chord_points : ndarray, shape (..., 2, 2, 3)
-        Step 1: the two points where line ``i`` cuts the conic.
+        Step 1: where line ``i`` cuts the conic.
     tangents : ndarray, shape (..., 2, 2, 3)
-        Step 2: the tangents at those points.
+        Step 2: the tangents there.
     poles : ndarray, shape (..., 2, 3)
-        Steps 3-4: where each pair of tangents meets, the pole of line ``i``
-        (Theorem 12); a point at infinity when line ``i`` is a diameter.
+        Steps 3-4: where each pair meets, the pole of line ``i`` (Theorem 12).
     polar : ndarray, shape (..., 3)
-        Step 5: the line joining the two poles; equals ``C p`` (5.36) up to scale.
+        Step 5: the join of the two poles, ``C p`` (5.36).
 
     Examples
     --------
-    >>> from planargeo.geometry.elements import Line, Point
     >>> K = polar_construction_interior(conic_circle([0.0, 0.0], 2.0), [0.0, -1.0, 1.0])  # p = (1, 0)
-    >>> [Line(l) for l in K.lines]                      # the x axis (a diameter) and x = 1
-    [Line(through=(0, 0), direction=(-1, 0)), Line(through=(1, 0), direction=(0, 1))]
-    >>> [Point(q) for q in K.chord_points[1]]           # x = 1 cuts the circle at (1, ±√3)
-    [Point(x=1, y=1.73205), Point(x=1, y=-1.73205)]
-    >>> [Point(q) for q in K.poles]                     # the diameter's pole is at infinity
-    [Point(at infinity, direction=(0, -1)), Point(x=4, y=0)]
-    >>> Line(K.polar)                                   # x = r²/|p| = 4
-    Line(through=(4, 0), direction=(0, -1))
+    >>> K.poles[1]                                       # x = 1 has its pole at (4, 0)
+    array([ 0., -4.,  1.])
     """
 
     point: np.ndarray
@@ -636,28 +549,19 @@ class InteriorConstruction:
 
 @_shared
 def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 1e-9) -> ExteriorConstruction:
-    """Geometric construction of the polar of an exterior point (thesis 5.2.2, Fig. 5.2).
-
-    1. the two tangents through ``p``; 2. their contact points; 3. the line
-    joining the contacts is the polar.  For ``p`` on the conic the contacts
-    coincide and the polar is the tangent there.  Interior points: see
-    ``on_interior`` of :func:`tangents_from_point`.
+    """Construct the polar of an exterior point (thesis 5.2.2, Fig. 5.2): the join of its tangents' contacts.
 
     Parameters
     ----------
-    {C}
-    p : array_like, shape (..., 3)
-        Homogeneous point, exterior to (or on) the conic.
+    {C p}
     on_interior : {"raise", "nan"}, optional
-        What to do for a point with no real tangents (see :func:`tangents_from_point`).
+        For a point with no real tangents (:func:`tangents_from_point`).
     rtol : float, optional
         Tolerance for "on the conic".
 
     Returns
     -------
     ExteriorConstruction
-        The point, its two tangents, their contact points and the polar (the join of the
-        contacts).
 
     Examples
     --------
@@ -679,47 +583,27 @@ def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 
 
 @_shared
 def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: float = 1e-9) -> InteriorConstruction:
-    """Geometric construction of the polar of an interior point (thesis 5.2.2, Fig. 5.3).
-
-    1. two lines through ``p`` cut the conic in two points each; 2. the
-    tangents at each pair of points 3. meet in a point (the pole of that
-    line, by Theorem 12); 4.-5. the line joining the two poles is the polar
-    of ``p``.  The construction works for any ``p`` whose chosen lines are
-    secants (every line through an interior point is).
+    """Construct the polar of an interior point (thesis 5.2.2, Fig. 5.3): the join of the poles of two chords.
 
     Parameters
     ----------
-    {C}
-    p : array_like, shape (..., 3)
-        Homogeneous point, interior to the conic (or any point with secants).
+    {C p}
     lines : array_like, shape (..., 2, 3), optional
-        Two distinct lines through ``p``.  Default: two of the vertical line,
-        the horizontal line and the line to the origin through ``p`` (the
-        pair ``p × e_i`` that is never degenerate).
+        Two distinct lines through ``p`` (default: two of ``p × e_i``).
     on_miss : {"raise", "nan"}
-        A line that does not cut the conic in two distinct real points raises
-        :class:`InputError` naming ``lines[i]``, or gives NaN elements.
+        A line that does not cut the conic in two real points raises, or gives NaN.
     rtol : float
-        Relative tolerance of both numerical tests: a given line passes through
-        ``p`` when ``|lines[i] · p| <= rtol |lines[i]| |p|`` (else
-        :class:`InputError` naming ``lines[i]``), and a line whose intersection
-        discriminant is within ``rtol`` of zero is a tangent (as in
-        :func:`line_conic_intersections`).
+        Relative tolerance of "through ``p``" and of a tangent.
 
     Returns
     -------
     InteriorConstruction
-        The point, the two chords, their end points, the tangents there, their meets (the
-        poles of the chords) and the polar (the join of the two poles).
 
     Raises
     ------
-    InputError
-        ``on_miss`` not ``"raise"``/``"nan"``; a given line not through ``p``; (with
-        ``"raise"``) a line that does not cut ``C`` in two real points.
-    DegenerateGeometryError
-        ``p`` is the zero vector, the two lines coincide, or a chord point is the vertex of a
-        degenerate conic.
+    InputError, DegenerateGeometryError
+        Bad ``on_miss``, a line not through ``p`` or (with ``"raise"``) missing ``C``; ``p`` zero,
+        the two lines the same, or a chord point a vertex of a degenerate conic.
 
     Examples
     --------
@@ -767,8 +651,7 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
 
 
 def _tangents_at(C, X, real, what: str, axes) -> np.ndarray:
-    """The tangents ``C X`` at the points ``X`` of the conic; where ``real``, a point that is the vertex of a
-    degenerate conic (no tangent there) is refused, naming it ``what`` (``axes``: those of ``X`` per conic)."""
+    """The tangents ``C X`` at points ``X`` of the conic, refusing (where ``real``) a vertex of a degenerate conic."""
     T = _mv(C, X)
     vertex = real[..., None] & np.all(T == 0, axis=-1)
     if np.any(vertex):
@@ -778,7 +661,7 @@ def _tangents_at(C, X, real, what: str, axes) -> np.ndarray:
 
 
 def _like_polar(L, C, p):
-    """``L`` oriented like the polar ``C p`` (so that drawings and comparisons agree), and ``p`` broadcast to it."""
+    """``L`` oriented like the polar ``C p``, and ``p`` broadcast to it."""
     s = np.einsum("...i,...i->...", L, _mv(C, p))
     L = np.where((s < 0)[..., None], -L, L)
     return L, np.broadcast_to(p, L.shape)
@@ -794,12 +677,10 @@ def _checked(construction, what: str, nan_asked: bool):
 # --------------------------------------------------------------------------- duality
 @_shared
 def correlation(C, Q, L, rtol: float = 1e-13):
-    """The correlation of Theorem 12: ``(P, M) = (pole(C, L), polar(C, Q))``.
+    """The correlation of Theorem 12: ``(P, M) = (pole(C, L), polar(C, Q))``, with ``P @ M == Q @ L`` (5.40-5.41).
 
-    Theorem 12 (corrected to the mapping direction of 5.36-5.37): if line
-    ``L`` passes through point ``Q``, then the pole ``P = C⁻¹ L`` lies on the
-    polar ``M = C Q``.  More strongly, linear forms are invariant (5.40-5.41):
-    ``P @ M == Q @ L`` for symmetric ``C``.
+    Theorem 12 (corrected to the direction of 5.36-5.37): if ``L`` passes through ``Q``, the pole
+    ``P`` lies on the polar ``M``.
 
     Parameters
     ----------
@@ -807,9 +688,9 @@ def correlation(C, Q, L, rtol: float = 1e-13):
     Q : array_like, shape (..., 3)
         A point.
     L : array_like, shape (..., 3)
-        A line (through ``Q`` for the theorem's incidence statement).
+        A line.
     rtol : float, optional
-        Singularity tolerance of the pole (see :func:`pole`).
+        Singularity tolerance of the pole (:func:`pole`).
 
     Returns
     -------
@@ -818,8 +699,7 @@ def correlation(C, Q, L, rtol: float = 1e-13):
 
     Examples
     --------
-    >>> C = np.diag([2.0, 1.0, 3.0])
-    >>> P, M = correlation(C, [1.0, 2.0, 3.0], [4.0, 5.0, 6.0])
+    >>> P, M = correlation(np.diag([2.0, 1.0, 3.0]), [1.0, 2.0, 3.0], [4.0, 5.0, 6.0])
     >>> float(P @ M), 1 * 4 + 2 * 5 + 3 * 6
     (32.0, 32)
     """
@@ -839,12 +719,8 @@ def _base(Q) -> np.ndarray:
 
 
 def _pow2(a: np.ndarray, core: int = 1) -> tuple[np.ndarray, np.ndarray]:
-    """``a`` with each element (a vector, ``core=2``: a matrix) whose largest |entry| lies outside
-    ``(1e-90, 1e90)`` scaled by ``2^-e`` to a largest entry in ``[0.5, 1)``, and the integer ``e``
-    per element (0 where untouched: every ordinary element keeps its bits).
-
-    Scaling by a power of two is exact, so a homogeneous element keeps its meaning: products of three
-    such entries (``Q C Q``) neither over- nor underflow, and a result is scaled back by ``ldexp``.
+    """``a`` with each element (``core=2``: matrix) outside ``(1e-90, 1e90)`` scaled exactly by ``2^-e``, and ``e``
+    (0 where untouched).
     """
     with np.errstate(invalid="ignore"):
         m = np.abs(a).max(axis=tuple(range(-core, 0)))
@@ -856,8 +732,7 @@ def _pow2(a: np.ndarray, core: int = 1) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _back(u: np.ndarray, e: np.ndarray, what: str, culprits: str) -> np.ndarray:
-    """Components ``u`` (..., 3) computed on scaled arguments, times ``2^e`` (exact), or a
-    :class:`NumericOverflowError` naming ``culprits`` when the true components lie beyond double precision."""
+    """Components ``u`` computed on scaled arguments, times ``2^e`` (exact), or a NumericOverflowError."""
     if np.any(e):
         with np.errstate(over="ignore", under="ignore"):
             u = np.ldexp(u, np.broadcast_to(e, u.shape))
@@ -865,8 +740,7 @@ def _back(u: np.ndarray, e: np.ndarray, what: str, culprits: str) -> np.ndarray:
 
 
 def _solve_basis(Mcols, v, name: str, rtol: float):
-    """The solution ``u`` of ``Mcols u = v``; a numerically singular base (by ``rtol``, or one LAPACK
-    cannot factor, or one that gives a non-finite ``u`` at ``rtol = 0``) is a :class:`DegenerateGeometryError`."""
+    """The solution ``u`` of ``Mcols u = v``, refusing a numerically singular base."""
     batch_shape(**{name: (Mcols, 2), "the decomposed element": (v, 1)})
     _check_invertible(Mcols, name, "singular: the three base elements are dependent (no basis)", rtol)
     Mcols, v = np.broadcast_arrays(Mcols, v[..., None, :])
@@ -898,7 +772,7 @@ def decompose_point(P, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     Raises
     ------
     DegenerateGeometryError
-        If ``Q1, Q2, Q3`` are collinear (no basis).
+        If ``Q1, Q2, Q3`` are collinear.
 
     Examples
     --------
@@ -913,17 +787,14 @@ def decompose_point(P, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
 
 @_shared
 def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
-    """Components ``u`` of ``L = u1 C Q1 + u2 C Q2 + u3 C Q3`` (thesis 5.43).
-
-    For ``L = C P`` these are the components of ``P`` on ``Q1, Q2, Q3``
-    (same proportionality ratios).
+    """Components ``u`` of ``L = u1 C Q1 + u2 C Q2 + u3 C Q3`` (thesis 5.43); for ``L = C P``, those of ``P``.
 
     Parameters
     ----------
     {C}
     {decomposed_L}
     Q1, Q2, Q3 : array_like, shape (..., 3)
-        Three non-collinear base points; the base lines are their polars ``C Qi``.
+        Three non-collinear base points (base lines: their polars).
     {rtol_base}
 
     {components}
@@ -931,7 +802,7 @@ def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     Raises
     ------
     DegenerateGeometryError
-        If the base lines ``C Qi`` are concurrent (no basis).
+        If the base lines ``C Qi`` are concurrent.
 
     Examples
     --------
@@ -953,10 +824,7 @@ def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
 @overflow_checked("C or Q1")
 @_shared
 def special_base(C, Q1, rtol: float = 1e-9):
-    """The special base of Fig. 5.4: ``Q1`` exterior, ``Q2, Q3`` its tangent contact points.
-
-    Then ``Q2 C Q2 = Q3 C Q3 = 0`` and ``Q1 C Q2 = Q1 C Q3 = 0`` (the
-    tangents at ``Q2, Q3`` pass through ``Q1``).
+    """The special base of Fig. 5.4: ``Q1`` exterior, ``Q2, Q3`` its tangents' contact points.
 
     Parameters
     ----------
@@ -964,7 +832,7 @@ def special_base(C, Q1, rtol: float = 1e-9):
     Q1 : array_like, shape (..., 3)
         A point exterior to the real conic ``C``.
     rtol : float, optional
-        Tolerance for "on the conic" of the tangent construction.
+        Tolerance for "on the conic".
 
     Returns
     -------
@@ -973,7 +841,7 @@ def special_base(C, Q1, rtol: float = 1e-9):
     Raises
     ------
     InputError
-        If ``Q1`` has no real tangents (interior, or ``C`` imaginary).
+        If ``Q1`` has no real tangents.
 
     Examples
     --------
@@ -993,11 +861,9 @@ def special_base(C, Q1, rtol: float = 1e-9):
 
 @_shared
 def decompose_point_special(C, P, Q1, Q2, Q3) -> np.ndarray:
-    """Components of ``P`` on the special base of Fig. 5.4 by projections (thesis 5.44-5.45).
+    """Components of ``P`` on a special base by projections (thesis 5.44-5.45).
 
-    ``u1 = Q1 C P / Q1 C Q1``, ``u2 = Q3 C P / Q3 C Q2``,
-    ``u3 = Q2 C P / Q2 C Q3``.  Only valid for a base from
-    :func:`special_base` (the decoupling needs ``Qi C Qj = 0`` as stated).
+    ``u1 = Q1 C P / Q1 C Q1``, ``u2 = Q3 C P / Q3 C Q2``, ``u3 = Q2 C P / Q2 C Q3``.
 
     Parameters
     ----------
@@ -1024,21 +890,15 @@ def decompose_point_special(C, P, Q1, Q2, Q3) -> np.ndarray:
 
 @_shared
 def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
-    """Components of ``L`` on the lines ``Mi = C Qi`` of the special base (thesis 5.46).
+    """Components of ``L`` on the lines ``C Qi`` of a special base (thesis 5.46), without an inverse.
 
-    Since ``Mi^T C⁻¹ = Qi^T`` and ``Mi^T C⁻¹ Mj = Qi C Qj``, (5.46) needs no
-    inverse: ``u1 = Q1·L / Q1 C Q1``, ``u2 = Q3·L / Q3 C Q2``,
-    ``u3 = Q2·L / Q2 C Q3``.
+    ``u1 = Q1·L / Q1 C Q1``, ``u2 = Q3·L / Q3 C Q2``, ``u3 = Q2·L / Q2 C Q3``.
 
     Parameters
     ----------
     {C decomposed_L special_base}
 
     {components not_special}
-
-    See Also
-    --------
-    decompose_point_special : the same components, of a point ``P`` with ``L = C P``.
 
     Examples
     --------
@@ -1056,8 +916,7 @@ def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
 
 
 def _special(x, C, Q, what: str, e) -> np.ndarray:
-    """``[Q1·x / Q1CQ1, Q3·x / Q3CQ2, Q2·x / Q2CQ3] · 2^e`` (5.44-5.46: ``x`` is ``C P`` or ``L``; ``e``: the
-    exponents of the scaled arguments, :func:`_pow2`), refusing a base that is not special."""
+    """``[Q1·x / Q1CQ1, Q3·x / Q3CQ2, Q2·x / Q2CQ3] · 2^e`` (5.44-5.46), refusing a base that is not special."""
     Q1, Q2, Q3 = Q
     with np.errstate(under="ignore"):
         n1, n2, n3 = (np.einsum("...i,...i->...", q, x) for q in (Q1, Q3, Q2))
@@ -1075,23 +934,11 @@ def _special(x, C, Q, what: str, e) -> np.ndarray:
 # --------------------------------------------------------------------------- drawing support
 @_shared
 def drawable_conic(C) -> np.ndarray:
-    """A real conic that shows an imaginary one (thesis 10.2.3).
+    """A real conic that shows an imaginary one (thesis 10.2.3); real conics unchanged.
 
-    For an imaginary (definite) conic, scaled to be positive definite, with
-    centre ``z`` (weight 1) and ``k = z C z = 1 / (C⁻¹)[2, 2] > 0`` the
-    minimum of the quadratic form over points of weight 1, returns
-
-        ``C' = C - 2 k e e^T``,  ``e = [0, 0, 1]`` (the line at infinity),
-
-    i.e. the sign of the homogeneous part flipped in the centred principal
-    frame (10.2.3).  Its real points ``Q`` (weight 1) are those where
-    ``Q C Q = 2 k``: twice the minimum.  For an inertia ``inertia_matrix(m,
-    c, J)`` this is the circle (or ellipse) of gyration about the centre of
-    mass, of radius ``sqrt(J/m)``.  The polar of any point with respect to
-    ``C'`` is the point reflection through the centre of its polar with
-    respect to ``C``: ``C'`` is the point-reflection partner of ``C``.
-
-    Real (and degenerate) conics are returned unchanged.
+    ``C' = C - 2 k e eᵀ`` with ``k = 1 / (C⁻¹)[2, 2]`` and ``e = [0, 0, 1]`` (``C`` made positive):
+    the sign of the homogeneous part flipped in the centred frame.  For an inertia it is the
+    circle of gyration; polars with respect to ``C'`` are those of ``C`` reflected through the centre.
 
     Parameters
     ----------
@@ -1100,7 +947,6 @@ def drawable_conic(C) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
-        ``C'`` for imaginary conics, ``C`` itself otherwise.
 
     Examples
     --------
@@ -1132,9 +978,7 @@ def _drawable(C):
 class AffineFrame:
     """``x = A u + t`` maps the unit curve of ``kind`` onto a real conic (see :func:`affine_frame`).
 
-    Unit curves: ``"ellipse"``: ``u1² + u2² = 1`` (``u = (cos s, sin s)``);
-    ``"hyperbola"``: ``u1² - u2² = 1`` (``u = (±cosh s, sinh s)``, two
-    branches); ``"parabola"``: ``u2 = u1²`` (``u = (s, s²)``).
+    Unit curves: ellipse ``u1² + u2² = 1``, hyperbola ``u1² - u2² = 1`` (two branches), parabola ``u2 = u1²``.
 
     Attributes
     ----------
@@ -1147,16 +991,8 @@ class AffineFrame:
 
     Examples
     --------
-    A hyperbola centred at ``(0, 1)`` with semi-axes 2 and 1: a point of the
-    unit hyperbola mapped by ``(A, t)`` lies on it.
-
-    >>> C = conic_hyperbola([0.0, 1.0], [2.0, 1.0])
-    >>> F = affine_frame(C)
-    >>> F.kind, F.t + 0.0
-    ('hyperbola', array([0., 1.]))
-    >>> x = F.A @ [np.cosh(0.5), np.sinh(0.5)] + F.t
-    >>> bool(abs(conic_residual(C, [x[1], -x[0], 1.0])) < 1e-12)
-    True
+    >>> affine_frame(conic_hyperbola([0.0, 1.0], [2.0, 1.0])).kind
+    'hyperbola'
     """
 
     kind: str
@@ -1174,40 +1010,31 @@ _UNIT_STD = {
 def affine_frame(C, rtol: float = 1e-10) -> AffineFrame:
     """Affine frame of a real conic: ``x = A u + t`` maps the unit curve onto it.
 
-    A drawing can then draw one fixed unit path (circle, hyperbola, parabola)
-    under the affine transform ``(A, t)``.  For an ellipse and a hyperbola
-    ``t`` is the centre and the columns of ``A`` are the semi-axes (for the
-    hyperbola the first column is the transverse semi-axis); for a parabola
-    ``t`` is the vertex, ``A[:, 0]`` a unit vector along the tangent at the
-    vertex and ``A[:, 1]`` points along the axis into the parabola.
+    For an ellipse or hyperbola ``t`` is the centre and ``A``'s columns the semi-axes (transverse
+    first); for a parabola ``t`` is the vertex, ``A[:, 0]`` along the tangent there and ``A[:, 1]``
+    along the axis, into the parabola.
 
     Parameters
     ----------
     C : array_like, shape (3, 3)
         A single conic.
     rtol : float
-        Classification tolerance (see :func:`classify`).
+        Classification tolerance (:func:`classify`).
 
     Returns
     -------
     AffineFrame
-        ``kind`` (``"ellipse"``, ``"hyperbola"`` or ``"parabola"``), ``A`` (2, 2) and ``t`` (2,).
 
     Raises
     ------
-    InputError
-        For an imaginary conic (use :func:`drawable_conic` first).
-    DegenerateGeometryError
-        For a degenerate conic.
+    InputError, DegenerateGeometryError
+        An imaginary conic (draw :func:`drawable_conic`), or a degenerate one.
 
     Examples
     --------
     >>> F = affine_frame(conic_ellipse([1.0, 2.0], [3.0, 1.0]))
     >>> F.kind, F.t
     ('ellipse', array([1., 2.]))
-    >>> np.abs(F.A).round(12)
-    array([[3., 0.],
-           [0., 1.]])
     """
     C = _fitq(_conic(C), 2)                  # the frame does not depend on C's scale
     if C.shape != (3, 3):
@@ -1248,24 +1075,20 @@ def _affine_frame(C, rtol):
 
 @overflow_checked("A or t")
 def conic_from_affine(kind: str, A, t) -> np.ndarray:
-    """The conic image of the unit curve ``kind`` under ``x = A u + t`` (inverse of :func:`affine_frame`).
-
-    In standard coordinates the map is ``X = M U`` with ``M = [[1, 0], [t, A]]``,
-    so ``S = M⁻ᵀ S_unit M⁻¹``; the result is ``T S T`` (5.47).
+    """The image of the unit curve ``kind`` under ``x = A u + t`` (inverse of :func:`affine_frame`; 5.47).
 
     Parameters
     ----------
     kind : {"ellipse", "hyperbola", "parabola"}
         The unit curve: ``u² + v² = 1``, ``u² - v² = 1`` or ``v = u²``.
     A : array_like, shape (..., 2, 2)
-        Linear part of the map (columns: images of the unit axes).
+        Linear part (columns: images of the unit axes).
     t : array_like, shape (..., 2)
         Translation (centre or vertex, m).
 
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
-        The symmetric conic matrix in the package's coordinates.
 
     Raises
     ------
@@ -1300,37 +1123,26 @@ def _rot(angle):
 
 
 def _turned(kind: str, centre, axes, angle) -> np.ndarray:
-    """The ellipse or hyperbola with semi-axes ``axes`` along the frame at ``centre`` turned by ``angle``."""
+    """The ellipse or hyperbola with semi-axes ``axes`` in the frame at ``centre`` turned by ``angle``."""
     axes = check_positive(as_xy(axes, "axes"), "axes")
     A = _rot(as_array(angle, "angle")) * axes[..., None, :]
     return conic_from_affine(kind, A, centre)
 
 
 @overflow_checked("centre or radius")
+@_shared
 def conic_circle(centre, radius, imaginary: bool = False) -> np.ndarray:
-    """Circle ``|x - c|² = r²`` (or the imaginary circle ``|x - c|² = -r²``).
-
-    In the package's coordinates (point ``[y, -x, w]``)::
-
-        [[ 1,   0,  -cy],
-         [ 0,   1,   cx],
-         [-cy,  cx,  cx² + cy² ∓ r²]]
-
-    The imaginary circle with ``r² = J/m`` is ``inertia_matrix(m, c, J) / m``.
+    """Circle ``|x - c|² = r²`` (or the imaginary ``|x - c|² = -r²``, an inertia over its mass).
 
     Parameters
     ----------
-    centre : array_like, shape (..., 2)
-        Centre ``c`` (m).
+    {centre}
     radius : array_like, shape (...)
         Radius ``r`` (m).
     imaginary : bool, optional
-        Build the imaginary circle ``|x - c|² = -r²`` instead.
+        Build the imaginary circle instead.
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
-        The conic matrix above.
+    {conic_matrix}
 
     Raises
     ------
@@ -1363,8 +1175,6 @@ def conic_circle(centre, radius, imaginary: bool = False) -> np.ndarray:
 def conic_ellipse(centre, axes, angle=0.0) -> np.ndarray:
     """Ellipse with semi-axes ``axes = (a, b)``, the first turned by ``angle`` from +x.
 
-    The image of the unit circle under ``x = R(angle) diag(a, b) u + centre`` (:func:`conic_from_affine`).
-
     Parameters
     ----------
     {centre ellipse_axes}
@@ -1384,8 +1194,6 @@ def conic_ellipse(centre, axes, angle=0.0) -> np.ndarray:
 def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
     """Hyperbola ``x'²/a² - y'²/b² = 1`` in the frame at ``centre`` turned by ``angle``.
 
-    Its asymptotes are ``y' = ±(b/a) x'`` in that frame.
-
     Parameters
     ----------
     {centre hyperbola_axes}
@@ -1394,9 +1202,8 @@ def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
 
     Examples
     --------
-    >>> H = conic_hyperbola([0.0, 0.0], [2.0, 1.0])
-    >>> str(classify(H)), float(conic_residual(H, [0.0, -2.0, 1.0]))    # through its vertex (2, 0)
-    ('real hyperbola', 0.0)
+    >>> float(conic_residual(conic_hyperbola([0.0, 0.0], [2.0, 1.0]), [0.0, -2.0, 1.0]))    # through (2, 0)
+    0.0
     """
     return _turned("hyperbola", centre, axes, angle)
 
@@ -1404,9 +1211,7 @@ def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
 @overflow_checked("vertex or focal_length")
 @_shared
 def conic_parabola(vertex, focal_length, angle=0.0) -> np.ndarray:
-    """Parabola ``y' = x'² / (4 f)`` in the frame at ``vertex`` turned by ``angle`` (opens to +y').
-
-    Its focus is ``(0, f)`` in that frame.
+    """Parabola ``y' = x'² / (4 f)`` in the frame at ``vertex`` turned by ``angle`` (focus ``(0, f)`` there).
 
     Parameters
     ----------
@@ -1431,6 +1236,7 @@ def conic_parabola(vertex, focal_length, angle=0.0) -> np.ndarray:
 
 
 @overflow_checked("a coefficient")
+@_shared
 def conic_from_coefficients(a, b, c, d, e, f) -> np.ndarray:
     """Conic ``a x² + b xy + c y² + d x + e y + f = 0`` (thesis 5.35 in standard coordinates).
 
@@ -1439,17 +1245,12 @@ def conic_from_coefficients(a, b, c, d, e, f) -> np.ndarray:
     a, b, c, d, e, f : array_like
         Coefficients of the implicit equation (broadcast together).
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
-        The symmetric conic matrix in the package's coordinates.
+    {conic_matrix}
 
     Examples
     --------
-    >>> conic_from_coefficients(1, 0, 1, 0, 0, -1)    # the unit circle
-    array([[ 1.,  0.,  0.],
-           [ 0.,  1.,  0.],
-           [ 0.,  0., -1.]])
+    >>> conic_from_coefficients(1, 0, 1, 0, 0, -1).diagonal()    # the unit circle
+    array([ 1.,  1., -1.])
     """
     a, b, c, d, e, f = np.broadcast_arrays(*(as_array(v, n) for v, n in
                                              zip((a, b, c, d, e, f), "abcdef")))
