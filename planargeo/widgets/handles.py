@@ -59,7 +59,12 @@ class HandleMixin:
         return np.array(pts, dtype=float).reshape(-1, 2)
 
     def all_handles(self) -> list[Handle]:
-        """The explorer's :meth:`handles` (what the picture shows and drags use)."""
+        """The explorer's :meth:`handles` (what the picture shows and drags use).
+
+        Returns
+        -------
+        list of Handle
+        """
         return list(self.handles())
 
     def handle_position(self, name: str):
