@@ -5,22 +5,10 @@ Usage::
     planargeo report SCENE [--set NAME=VALUE ...] [--json] [--allow-big]
     planargeo report --list [--json]
 
-``--list`` prints every scene with its parameters and, for each quantity it reports, a
-description, the thesis symbol and equation, and the unit (read from the data file
-``planargeo/data/quantities.toml``, :data:`QUANTITY_INFO`, :func:`quantity`; a scene
-module may add its own as a module attribute ``QUANTITY_INFO = {scene: {key: (description,
-symbol, equation, unit)}}``).  The table prints each quantity's unit after its value, and
-values whose magnitude is below :data:`ZERO_TOL` times the scene's scale for that unit (the
-largest magnitude among the scene's quantities in the same unit) as ``0.0``: round-off such
-as ``4.7e-11`` where the exact value is 0.  ``--json`` keeps every value at full precision.
-
-Values given with ``--set`` are read as ``int``, ``float`` (``1e-3``, ``nan``,
-``inf``), ``bool`` (``true``/``false``), ``none``, a JSON list (``[1, 2]``) or
-else kept as a string; an integer given for a parameter whose default is a
-float becomes a float.  Errors (unknown scene or parameter, a value that makes
-the scene impossible or beyond double precision, a size past the scene's limit
-without ``--allow-big``) exit with status 1 and one line on stderr; malformed
-arguments exit with status 2.
+``--list`` prints every scene's parameters and, per quantity, its description, thesis symbol,
+equation and unit (:data:`QUANTITY_INFO`).  The table prints each value's unit, and values below
+:data:`ZERO_TOL` times the scene's scale for that unit as ``0.0`` (round-off); ``--json`` keeps
+full precision.  Scene errors exit with status 1, malformed arguments with 2, one line on stderr.
 
 Examples
 --------
@@ -29,8 +17,6 @@ Examples
 >>> main(p.parse_args(["two-body", "--set", "phi=0", "--json"]))  # doctest: +ELLIPSIS
 {"scene": "two-body", "params": {"m": 1.0, "rho": 0.5, "L": 1.0, "phi": 0.0}, ...
 0
->>> parse_value("3"), parse_value("2.5"), parse_value("True"), parse_value("none"), parse_value("abc")
-(3, 2.5, True, None, 'abc')
 """
 from __future__ import annotations
 
@@ -38,11 +24,13 @@ import argparse
 import json
 import math
 import sys
+import unicodedata
 from typing import Any, NamedTuple
 
 import numpy as np
 
-from planargeo.files import WORDS_FILE
+from planargeo.errors import InputError, PlanargeoError
+from planargeo.files import WORDS_FILE, package_words
 
 __all__ = ["add_arguments", "main", "parse_value", "parse_sets", "to_plain", "format_table", "quantity_info",
            "quantity", "Quantity", "round_off", "format_listing", "QUANTITY_INFO", "QUANTITIES_FILE", "ZERO_TOL"]
@@ -50,15 +38,12 @@ __all__ = ["add_arguments", "main", "parse_value", "parse_sets", "to_plain", "fo
 #: Values below ``ZERO_TOL`` times the scene's scale for their unit print as 0 in the table.
 ZERO_TOL = 1e-9
 
-#: Where the quantities' descriptions live: one data file, shipped with the package (its
-#: ``[scene.*]`` tables; the explorers' words are its ``[explorer.*]`` tables).
+#: The data file of the quantities' descriptions (its ``[scene.*]`` tables).
 QUANTITIES_FILE = WORDS_FILE
 
 
 class Quantity(NamedTuple):
-    """What one reported quantity is: its description, thesis symbol, thesis equation and unit.
-
-    A record of :func:`quantity`, read from the package's data file ``planargeo/data/quantities.toml``.
+    """What one reported quantity is, read from ``planargeo/data/quantities.toml``.
 
     Attributes
     ----------
@@ -69,8 +54,8 @@ class Quantity(NamedTuple):
     equation : str
         The thesis's equation(s), section or figure (``"—"``: none).
     unit : str
-        The unit (``"—"``: dimensionless, or a basis of unit screws); a screw array's units per
-        component ``[x, y, z]`` at the global origin, e.g. ``"N, N, N·m"`` for a wrench.
+        The unit (``"—"``: dimensionless or a basis of unit screws); per component for a screw
+        array at the global origin, e.g. ``"N, N, N·m"``.
     """
 
     description: str
@@ -80,35 +65,27 @@ class Quantity(NamedTuple):
 
 
 def _read_quantities() -> dict[str, dict[str, Quantity]]:
-    from planargeo.files import package_words
-
     return {scene: {key: Quantity(**entry) for key, entry in table.items()}
             for scene, table in package_words("scene").items()}
 
 
-#: ``scene -> quantity -> (description, thesis symbol, thesis equation, unit)`` of every quantity
-#: ``planargeo report`` prints (``—``: dimensionless; screw arrays at the global origin), read from
-#: :data:`QUANTITIES_FILE` (each value a :class:`Quantity`, a tuple of those four strings).
+#: ``scene -> quantity -> Quantity`` of every quantity ``planargeo report`` prints, from :data:`QUANTITIES_FILE`.
 QUANTITY_INFO: dict[str, dict[str, Quantity]] = _read_quantities()
 
 
 def quantity(scene: str, key: str) -> Quantity:
     """Description, thesis symbol, equation and unit of one quantity ``planargeo report`` prints.
 
-    The one source of these texts for the report, the documentation and the explorers' readouts
-    (:func:`quantity_info` gives a whole scene's).
-
     Parameters
     ----------
     scene : str
         A registered scene name (:func:`planargeo.scenes.names`).
     key : str
-        The quantity's key in the scene's result (``SceneResult.quantities``).
+        The quantity's key in ``SceneResult.quantities``.
 
     Returns
     -------
     Quantity
-        ``(description, symbol, equation, unit)``.
 
     Raises
     ------
@@ -122,11 +99,7 @@ def quantity(scene: str, key: str) -> Quantity:
     >>> q = quantity("slider-crank", "F3")
     >>> q.symbol, q.equation, q.unit
     ('F₃ = B₃ ξ₃', '9.91, 9.92', 'N, N, N·m')
-    >>> quantity("car", "omega_dot").unit
-    'rad/s²'
     """
-    from planargeo.errors import InputError
-
     table = quantity_info(scene)
     if key not in table:
         raise InputError(f"key must be a quantity of scene {scene!r} ({', '.join(table) or 'none described'}), "
@@ -137,8 +110,7 @@ def quantity(scene: str, key: str) -> Quantity:
 def quantity_info(scene: str) -> dict[str, dict[str, str]]:
     """Description, thesis symbol, equation and unit of each quantity ``planargeo report`` prints for ``scene``.
 
-    From :data:`QUANTITY_INFO`, completed by the scene module's own ``QUANTITY_INFO``
-    attribute if it has one (``{scene: {key: (description, symbol, equation, unit)}}``).
+    From :data:`QUANTITY_INFO`, completed by the scene module's own ``QUANTITY_INFO`` if it has one.
 
     Parameters
     ----------
@@ -148,20 +120,13 @@ def quantity_info(scene: str) -> dict[str, dict[str, str]]:
     Returns
     -------
     dict
-        ``{key: {"description", "symbol", "equation", "unit"}}`` (empty for a scene nobody described).
+        ``{key: {"description", "symbol", "equation", "unit"}}``.
 
     Raises
     ------
     SceneError
         If no scene has that name.
-
-    Examples
-    --------
-    >>> quantity_info("slider-crank")["f"]["unit"], quantity_info("slider-crank")["f"]["equation"]
-    ('N, N, N·m', '9.61')
     """
-    import sys
-
     from planargeo import scenes
 
     fn = scenes.get(scene)
@@ -197,9 +162,8 @@ def _zeroed(v: Any, limit: float) -> Any:
 def round_off(quantities: dict, info: dict | None = None, tol: float = ZERO_TOL) -> dict:
     """Plain quantities with round-off shown as 0: magnitudes below ``tol`` × the scene's scale for their unit.
 
-    The scale of a unit is the largest magnitude among the quantities of that
-    unit (from ``info``, :func:`quantity_info`); a quantity without a unit is
-    its own group.  Integers, booleans and text are kept.
+    The scale of a unit is the largest magnitude among the quantities of that unit; a quantity
+    without a unit is its own group.  Integers, booleans and text are kept.
 
     Parameters
     ----------
@@ -208,7 +172,7 @@ def round_off(quantities: dict, info: dict | None = None, tol: float = ZERO_TOL)
     info : dict, optional
         ``{key: {"unit": ...}}`` as :func:`quantity_info` returns.
     tol : float
-        Relative threshold (default :data:`ZERO_TOL`).
+        Relative threshold.
 
     Returns
     -------
@@ -225,8 +189,6 @@ def round_off(quantities: dict, info: dict | None = None, tol: float = ZERO_TOL)
     >>> round_off({"a": [3.98e-12, -5.7, 1e-12], "b": 2.5e-11}, {"a": {"unit": "m/s²"}, "b": {"unit": "m/s²"}})
     {'a': [0.0, -5.7, 0.0], 'b': 0.0}
     """
-    from planargeo.errors import InputError
-
     if not (isinstance(tol, (int, float)) and math.isfinite(tol) and tol >= 0):
         raise InputError(f"tol must be a finite non-negative number, got {tol!r}")
     info = info or {}
@@ -239,8 +201,6 @@ def round_off(quantities: dict, info: dict | None = None, tol: float = ZERO_TOL)
 
 def _width(text: str) -> int:
     """Columns ``text`` takes in a terminal: combining marks (the dot of ``q̇``) take none."""
-    import unicodedata
-
     return sum(0 if unicodedata.combining(ch) else 1 for ch in text)
 
 
@@ -296,7 +256,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def parse_value(text: str) -> Any:
-    """Read a command-line value as int, float, bool, None, JSON list or string.
+    """Read a command-line value as int, float, bool, None, JSON list or (else) string.
 
     Parameters
     ----------
@@ -309,8 +269,8 @@ def parse_value(text: str) -> Any:
 
     Examples
     --------
-    >>> parse_value("-4"), parse_value("1e-3"), parse_value("[1, 2.5]"), parse_value("FALSE")
-    (-4, 0.001, [1, 2.5], False)
+    >>> parse_value("-4"), parse_value("1e-3"), parse_value("[1, 2.5]"), parse_value("FALSE"), parse_value("abc")
+    (-4, 0.001, [1, 2.5], False, 'abc')
     """
     t = text.strip()
     low = t.lower()
@@ -318,14 +278,11 @@ def parse_value(text: str) -> Any:
         return low == "true"
     if low in ("none", "null"):
         return None
-    try:
-        return int(t)
-    except ValueError:
-        pass
-    try:
-        return float(t)
-    except ValueError:
-        pass
+    for number in (int, float):
+        try:
+            return number(t)
+        except ValueError:
+            pass
     if t.startswith("["):
         try:
             return json.loads(t)
@@ -352,20 +309,13 @@ def parse_sets(sets: list[str], defaults: dict[str, Any] | None = None) -> dict[
     Raises
     ------
     InputError
-        For an item without ``=`` or with an empty name (``planargeo report`` exits
-        with status 2 on it).
+        An item without ``=`` or with an empty name (``planargeo report`` exits with status 2).
 
     Examples
     --------
     >>> parse_sets(["n=2", "lam=3"], {"n": 4, "lam": 2.0})
     {'n': 2, 'lam': 3.0}
-    >>> parse_sets(["n"])
-    Traceback (most recent call last):
-        ...
-    planargeo.errors.InputError: --set expects NAME=VALUE, got 'n'
     """
-    from planargeo.errors import InputError
-
     out: dict[str, Any] = {}
     for item in sets:
         name, sep, value = item.partition("=")
@@ -445,10 +395,8 @@ def _shape(v: Any) -> tuple[int, ...] | None:
 def _fmt_value(v: Any, indent: int) -> list[str]:
     """Lines for one value: scalars and vectors on one line, matrices as aligned rows.
 
-    A matrix wider than :data:`MAX_TABLE_COLUMNS` is summarised by its shape
-    (``--json`` gives its values); an array of three or more dimensions gets
-    a shape line, then its matrices one after the other, each labelled with
-    its leading indices.  Ragged nested lists are printed as JSON.
+    Wider than :data:`MAX_TABLE_COLUMNS`: its shape only; three or more dimensions: a shape line,
+    then each matrix labelled with its leading indices; ragged lists as JSON.
 
     Examples
     --------
@@ -459,8 +407,6 @@ def _fmt_value(v: Any, indent: int) -> list[str]:
          [0.0  1.0]
     [1]  [2.0  0.5]
          [0.5  3.0]
-    >>> _fmt_value([[0.0] * 27] * 27, 0)
-    ['27×27 matrix, too wide for the table (--json gives its values)']
     """
     shape = _shape(v)
     if shape is not None and len(shape) == 2 and shape[1] > MAX_TABLE_COLUMNS:
@@ -503,10 +449,9 @@ def format_table(result: dict, info: dict | None = None) -> str:
     Parameters
     ----------
     result : dict
-        The plain report (values as :func:`to_plain` gives them).
+        The plain report (:func:`to_plain`).
     info : dict, optional
-        :func:`quantity_info` of the scene: each quantity's unit is printed after its
-        first line (none for dimensionless ``—`` quantities).
+        :func:`quantity_info` of the scene: each quantity's unit is printed after its first line.
 
     Returns
     -------
@@ -564,7 +509,6 @@ def main(args: argparse.Namespace) -> int:
         0 on success, 1 for a scene error, 2 for a usage error (one line on stderr).
     """
     from planargeo import scenes
-    from planargeo.errors import InputError, PlanargeoError
 
     if args.list:
         listing, infos = {}, {}
