@@ -1,11 +1,9 @@
 """Shared basics of the gallery's pictures: a panel fitted to an axes, labels, dimensions, mechanisms.
 
-Plain functions that add elements with stable ids to a :class:`~planargeo.draw.picture.Picture`
-and return what they added: :func:`panel` (a Picture the size of an axes, its view fitted to
-points) and :func:`show`; texts and lines (:func:`label`, :func:`segment`, :func:`dimension`,
-:func:`arrow`); mechanisms (:func:`body`, :func:`link`, :func:`pin`, :func:`ground`,
-:func:`slider`, :func:`frame`, :func:`com`, a whole :func:`model`, its :func:`contact` s) and
-a joint force split into active and reaction parts (:func:`joint_split`, chapter 6).
+Functions that add elements with stable ids to a :class:`~planargeo.draw.picture.Picture`
+and return them: :func:`panel` and :func:`show`; :func:`label`, :func:`segment`,
+:func:`dimension`, :func:`arrow`; mechanisms (:func:`body`, :func:`pin`, :func:`ground`,
+:func:`slider`, :func:`com`, a whole :func:`model`...) and :func:`joint_split` (chapter 6).
 
 Examples
 --------
@@ -13,13 +11,10 @@ Examples
 >>> from matplotlib.figure import Figure
 >>> ax = Figure(figsize=(3.4, 2.0)).add_axes((0.0, 0.0, 1.0, 1.0))
 >>> pic = panel(ax, [[0.0, 0.0], [2.0, 1.0]], margin=0.1)
->>> pic.size
-(340, 200)
 >>> el = link(pic, "body 1", (0.0, 0.0), (2.0, 0.0), width=0.2)
 >>> _ = pin(pic, "joint 1", (0.0, 0.0))
->>> _ = dimension(pic, "L", (0.0, 0.5), (2.0, 0.5), "2 m")
->>> len(show(pic, ax)) > 0
-True
+>>> pic.size, len(show(pic, ax)) > 0
+((340, 200), True)
 """
 from __future__ import annotations
 
@@ -127,9 +122,8 @@ def panel(ax, points, *, margin=None, keep=None, min_span=None, fit_height=False
           hmax=4.6) -> Picture:
     """A Picture the size of the axes ``ax`` (pixels at 100 dpi), its view fitted to ``points``.
 
-    No ticks, no margin, the view :func:`planargeo.draw.layout.fit_box` gives.  With
-    ``fit_height`` the figure's height first follows the points' aspect (grown by the
-    margin, clamped to ``[hmin, hmax]`` inches).  The axes are not changed.
+    No ticks, no margin, the view of :func:`planargeo.draw.layout.fit_box`; with ``fit_height``
+    the figure's height first follows the points' aspect.  The axes are not changed.
 
     Parameters
     ----------
@@ -162,8 +156,8 @@ def panel(ax, points, *, margin=None, keep=None, min_span=None, fit_height=False
     >>> from matplotlib.figure import Figure
     >>> ax = Figure(figsize=(4, 2)).add_axes((0.0, 0.0, 1.0, 1.0))
     >>> pic = panel(ax, [[0, 0], [1, 1]], margin=0.0)
-    >>> pic.size, pic.box, pic.margin, pic.ticks
-    ((400, 200), (-0.5, 1.5, 0.0, 1.0), (0.0, 0.0, 0.0, 0.0), False)
+    >>> pic.size, pic.box
+    ((400, 200), (-0.5, 1.5, 0.0, 1.0))
     """
     if not (hasattr(ax, "get_position") and hasattr(ax, "figure")):
         raise InputError(f"ax must be a matplotlib axes, got {type(ax).__name__}")
@@ -227,7 +221,7 @@ def label(pic: Picture, id: str, xy, text: str, *, offset=(5, 5), ha: str = "lef
         Alignment at the shifted anchor.
     {role color symbol}
     fixed : bool
-        Keep the text where asked (the placer does not move it; others avoid it).
+        Keep the text where asked (others avoid it).
 
     {element}
 
@@ -239,8 +233,7 @@ def label(pic: Picture, id: str, xy, text: str, *, offset=(5, 5), ha: str = "lef
     Examples
     --------
     >>> pic = Picture((0, 1, 0, 1), size=(100, 100), ticks=False, margin=(0, 0, 0, 0))
-    >>> el = label(pic, "P", (0.5, 0.5), "$P_1$", offset=(0, 0))
-    >>> part = el["parts"][0]
+    >>> part = label(pic, "P", (0.5, 0.5), "$P_1$", offset=(0, 0))["parts"][0]
     >>> part["text"], part["x"], part["dx"]
     ('P₁', 0.5, 0.0)
     """
@@ -265,11 +258,11 @@ def segment(pic: Picture, id: str, p, q, *, role: str = "construct", label=None,
     ----------
     {pic id}
     p, q : (float, float)
-        End points.
+        End points (finite).
     role : str
         Style role (default ``"construct"``: thin, grey, dashed).
     label : str, optional
-        Text beside the segment's middle (placed).
+        Text beside the segment's middle.
     {color}
     width : float, optional
         Line width in pixels (default: the role's).
@@ -278,11 +271,6 @@ def segment(pic: Picture, id: str, p, q, *, role: str = "construct", label=None,
     {symbol z}
 
     {element}
-
-    Raises
-    ------
-    InputError
-        An end point that is not a finite point.
 
     Examples
     --------
@@ -320,13 +308,13 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
     offset : float
         Shift of the line to the left of ``p → q`` (data units).
     at : float
-        Where the text sits along the line (0: at ``p``, 1: at ``q``), 4 points off it on the left.
+        Where the text sits along the line (0: at ``p``, 1: at ``q``), 4 points off it.
     color : str, optional
-        Colour of the line, its ticks and its text (default: the construction grey).
+        Colour of the line, ticks and text (default: the construction grey).
     tick : float
-        Length of the end ticks (pixels), across the line.
+        Length of the end ticks (pixels).
     symbol : str, optional
-        Thesis symbol of the length (default: the text before its first ``" = "``, or all of it).
+        Thesis symbol (default: the text before its first ``" = "``, or all of it).
     desc : str
         One-line description (default: the text).
 
@@ -343,8 +331,6 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
     >>> el = dimension(pic, "d", (0, 0), (2, 0), "2 m", offset=1.0)
     >>> [part["xy"].tolist() for part in el["parts"][:3]]
     [[[0.0, 1.0], [2.0, 1.0]], [[0.0, 0.84], [0.0, 1.16]], [[2.0, 0.84], [2.0, 1.16]]]
-    >>> dimension(pic, "rho", (0, 0), (1, 0), "ρ = u/ω")["symbol"], el["symbol"]
-    ('ρ', '2 m')
     """
     p, q = _xy(p, "p"), _xy(q, "q")
     d = q - p
@@ -378,7 +364,7 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
 @_two_points
 def arrow(pic: Picture, id: str, p, q, *, role: str = "wrench", color=None, label=None,
           offset=(5, 5), symbol: str = "", desc: str = "", z: int = 5) -> dict:
-    """An arrow from ``p`` to ``q`` (data points; the picture's arrow: solid shaft, head at ``q``).
+    """An arrow from ``p`` to ``q`` (data points): a solid shaft, its head at ``q``.
 
     Parameters
     ----------
@@ -387,15 +373,12 @@ def arrow(pic: Picture, id: str, p, q, *, role: str = "wrench", color=None, labe
         Tail and tip (distinct).
     {role color}
     label : str, optional
-        Text at the tip, moved by ``offset`` points (placed).
+        Text at the tip, moved by ``offset`` points (y up).
     offset : (float, float)
-        Shift of the label (points, y up).
+        Shift of the label.
     {symbol z}
 
-    Returns
-    -------
-    dict
-        The element: ``[arrow, text]``.
+    {element}
 
     {distinct}
 
@@ -433,15 +416,9 @@ def link_polygon(p, q, width: float = 0.25):
     -------
     shapely.geometry.Polygon
 
-    Raises
-    ------
-    InputError
-        Not finite end points, or a width that is not positive.
-
     Examples
     --------
-    >>> g = link_polygon((0, 0), (2, 0), 0.5)
-    >>> [round(v, 6) for v in g.bounds]
+    >>> [round(v, 6) for v in link_polygon((0, 0), (2, 0), 0.5).bounds]
     [-0.25, -0.25, 2.25, 0.25]
     """
     from shapely.geometry import LineString, Point as SPoint
@@ -524,11 +501,6 @@ def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alp
 
     {element}
 
-    Raises
-    ------
-    InputError
-        A shape that is neither a polygon nor an array of 3 or more finite vertices.
-
     Examples
     --------
     >>> pic = Picture((-1, 2, -1, 2), size=(100, 100), ticks=False, margin=(0, 0, 0, 0))
@@ -579,13 +551,6 @@ def link(pic: Picture, id: str, p, q, *, width: float = 0.25, **kw) -> dict:
         Options of :func:`body`.
 
     {element}
-
-    Examples
-    --------
-    >>> pic = Picture((-1, 3, -1, 3), size=(100, 100), ticks=False, margin=(0, 0, 0, 0))
-    >>> xy = link(pic, "l", (0, 0), (2, 0), width=0.5)["parts"][0]["xy"]
-    >>> [round(float(v), 6) for v in (xy[:, 0].min(), xy[:, 0].max(), xy[:, 1].min(), xy[:, 1].max())]
-    [-0.25, 2.25, -0.25, 0.25]
     """
     return body(pic, id, link_polygon(p, q, width), **kw)
 
@@ -605,11 +570,6 @@ def pin(pic: Picture, id: str, xy, *, radius: float = 0.06, z: int = 6, symbol: 
     {z symbol}
 
     {element}
-
-    Raises
-    ------
-    InputError
-        ``xy`` not a finite point, or ``radius`` not positive.
 
     Examples
     --------
@@ -644,10 +604,7 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.8, angle: float = 0.0,
         Number of hatch strokes (at least 2).
     {z desc}
 
-    Returns
-    -------
-    dict
-        The element: one path part (line and strokes, separated).
+    {element}
 
     Raises
     ------
@@ -768,8 +725,7 @@ def frame(pic: Picture, id: str, origin, *, angle: float = 0.0, length: float = 
     Examples
     --------
     >>> pic = Picture((-1, 1, -1, 1), size=(100, 100), ticks=False, margin=(0, 0, 0, 0))
-    >>> el = frame(pic, "F", (0.0, 0.0), angle=np.pi / 2, length=0.5, labels=("", ""))
-    >>> tip = el["parts"][1]                     # the first axis's head points up, ends at (0, 0.5)
+    >>> tip = frame(pic, "F", (0.0, 0.0), angle=np.pi / 2, length=0.5)["parts"][1]   # the first head
     >>> round(tip["x"], 9), round(tip["y"] + tip["dy"] / 50, 9), round(tip["dx"], 9)
     (0.0, 0.5, 0.0)
     """
@@ -880,8 +836,7 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
     >>> m = chain(2)
     >>> d = kinematics(m, np.array([np.pi / 2, -np.pi / 2]), np.zeros(2))
     >>> pic = Picture((-1, 2, -1, 2), size=(200, 200), ticks=False, margin=(0, 0, 0, 0))
-    >>> out = model(pic, m, d)
-    >>> [round(v, 6) for v in out["shapes"][1].centroid.coords[0]]      # link 2: (0, 1) to (1, 1)
+    >>> [round(v, 6) for v in model(pic, m, d)["shapes"][1].centroid.coords[0]]   # (0, 1) to (1, 1)
     [0.5, 1.0]
     """
     as_picture(pic)
@@ -949,9 +904,8 @@ def slider_guide(contact, pose, body_shape=None, *, clearance: float = 0.04, mar
     Returns
     -------
     tuple
-        ``(p0, e, n, half_width, (s0, s1))``: a point on the guide line, its unit
-        direction, the unit normal (``e`` turned by +90°), the half distance between
-        the walls and the wall span ``p0 + e s`` for ``s`` in ``[s0, s1]``.
+        ``(p0, e, n, half_width, (s0, s1))``: a point of the guide line, its unit direction, the
+        unit normal, the half distance between the walls and the wall span ``p0 + e s``.
 
     Examples
     --------
@@ -1016,9 +970,7 @@ def contact(pic: Picture, id: str, contact, pose, *, body_shape=None, size: floa
     >>> from planargeo.mechanics.contacts import Contact
     >>> pic = Picture((-1, 1, -1, 1), size=(100, 100), ticks=False, margin=(0, 0, 0, 0))
     >>> c = Contact("pin", 0, -1, point_a=(0.5, 0.0))
-    >>> [el["id"] for el in contact(pic, "c", c, np.array([[0.0, 0.0, 0.0]]), size=0.2)]
-    ['c']
-    >>> np.round(pic.elements[-1]["parts"][0]["xy"], 9).tolist()
+    >>> np.round(contact(pic, "c", c, np.array([[0.0, 0.0, 0.0]]), size=0.2)[0]["parts"][0]["xy"], 9).tolist()
     [[0.4, -0.1], [0.6, -0.1], [0.6, 0.1], [0.4, 0.1]]
     """
     from planargeo.mechanics.contacts import world_point
@@ -1122,12 +1074,8 @@ def split_arrows(s, R, A, f, *, scale: float = 1.0, anchor, avoid=None, clearanc
 
     Parameters
     ----------
-    s : array_like (3, k)
-        The joint's motion space.
-    R : array_like (3, 3 - k)
-        Its reaction space.
-    A : array_like (3, 3)
-        The (articulated) inertia of the split.
+    s, R, A : array_like (3, k), (3, 3 - k), (3, 3)
+        The joint's motion and reaction spaces, and the (articulated) inertia of the split.
     f : array_like (3,)
         The joint force.
     scale : float
@@ -1228,14 +1176,10 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
     >>> from planargeo.screws.twists import inertia_matrix
     >>> pic = Picture((-1, 3, -2, 2), size=(200, 200), ticks=False, margin=(0, 0, 0, 0))
     >>> j = revolute([0.0, 0.0])
-    >>> A = inertia_matrix(2.0, [1.0, 0.0], 0.3)
-    >>> out, (Q, mu, TQ, Rmu) = joint_split(pic, "j1", j.s, j.R, A, [0.0, 1.0, 2.0], name="1",
-    ...                                     anchor=[0.0, 0.0])
+    >>> out, (Q, mu, TQ, Rmu) = joint_split(pic, "j1", j.s, j.R, inertia_matrix(2.0, [1.0, 0.0], 0.3),
+    ...                                     [0.0, 1.0, 2.0], name="1", anchor=[0.0, 0.0])
     >>> bool(np.allclose(TQ + Rmu, [0.0, 1.0, 2.0])), sorted(out)
     (True, ['active', 'f', 'reaction'])
-    >>> arrow = [p for p in out["f"]["parts"] if p["p"] == "arrow"][0]
-    >>> arrow["x"], arrow["y"], arrow["dy"]               # from (2, -0.5), 1 unit = 50 px up
-    (2.0, -0.5, 50.0)
     """
     as_picture(pic)
     if anchor is None:
