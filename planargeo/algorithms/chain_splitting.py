@@ -36,42 +36,31 @@ def _split(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next):
 def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) -> np.ndarray:
     """Acceleration of body ``i`` split from the rest of the chain at joint ``i+1`` (thesis 7.54).
 
-    ``a_i = C^-1 [b_i - Λ_i⁻¹ (T Q + R U^T (A κ + d))]``, all of the next body.
-
     Parameters
     ----------
-    Lam_i, b_i : (3, 3), (3,)
-        Articulated mobility and bias acceleration of body ``i`` (7.38).
-    A_next, d_next : (3, 3), (3,)
-        Articulated inertia and bias force of body ``i+1`` (7.7).
-    T_next, s_next : (3, k)
-        Active force subspace (6.105) and joint space of joint ``i+1``.
-    Q_next : (k,)
-        Force (torque) applied at joint ``i+1``.
-    kappa_next : (3,)
-        Bias acceleration of body ``i+1`` (2.19).
+    Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next : array_like
+        ``Λ_i⁻¹`` (3, 3) and ``b_i`` (3,) of body ``i`` (7.38); ``A`` (3, 3) and ``d`` (3,) of body
+        ``i+1`` (7.7); ``T`` (6.105) and ``s`` (3, k), ``Q`` (k,) of joint ``i+1``; its ``κ`` (3,) (2.19).
 
     Returns
     -------
     numpy.ndarray, shape (3,)
-        ``a_i = [ax, ay, α]``.
+        ``a_i = C⁻¹ [b_i - Λ_i⁻¹ (T Q + R Uᵀ (A κ + d))]``.
 
     Raises
     ------
     SingularConfigurationError
-        When the split matrix ``1 + Λ_i⁻¹ R Uᵀ A_{i+1}`` is singular.
+        When the split matrix ``C = 1 + Λ_i⁻¹ R Uᵀ A_{i+1}`` is singular.
 
     Examples
     --------
-    A pinned unit point mass at (1, 0) (body i) carrying a second one on a pin at
-    (1, 0), at rest, with a unit upward push on body i: the second mass halves the acceleration.
+    A pinned unit point mass at (1, 0) carrying a second one on a pin there, pushed up at unit rate:
+    the second mass halves the acceleration.
 
     >>> from planargeo.screws.twists import inertia_matrix
-    >>> A2 = inertia_matrix(1.0, [1.0, 0.0], 1e-3)
-    >>> s2 = np.array([[0.0], [-1.0], [1.0]])
-    >>> T2 = A2 @ s2 / (s2.T @ A2 @ s2)
-    >>> Lam1 = np.diag([0.0, 0.0, 1.0])
-    >>> split_acceleration(Lam1, [0, 0, 1.0], A2, np.zeros(3), T2, s2, [0.0], np.zeros(3)).round(12)
+    >>> A2, s2 = inertia_matrix(1.0, [1.0, 0.0], 1e-3), np.array([[0.0], [-1.0], [1.0]])
+    >>> args = (np.diag([0.0, 0.0, 1.0]), [0, 0, 1.0], A2, np.zeros(3), A2 @ s2 / (s2.T @ A2 @ s2), s2, [0.0], np.zeros(3))
+    >>> split_acceleration(*args).round(12)
     array([0. , 0. , 0.5])
     """
     Lam_i, b_i, A_next, d_next, T_next, Q_next, kappa_next, P, C = _split(
@@ -83,17 +72,16 @@ def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa
 def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) -> np.ndarray:
     """Internal force of joint ``i+1`` from the split chain (thesis 7.56).
 
-    ``f_{i+1} = C^-T [T Q + R U^T (A (b_i + κ) + d)]``, all of the next body.
-
     Parameters
     ----------
     Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next : array_like
-        The split at joint ``i+1`` (7.38, 7.7, 6.105, 2.19), as for :func:`split_acceleration`.
+        ``Λ_i⁻¹`` (3, 3) and ``b_i`` (3,) of body ``i`` (7.38); ``A`` (3, 3) and ``d`` (3,) of body
+        ``i+1`` (7.7); ``T`` (6.105) and ``s`` (3, k), ``Q`` (k,) of joint ``i+1``; its ``κ`` (3,) (2.19).
 
     Returns
     -------
     numpy.ndarray, shape (3,)
-        The wrench ``f_{i+1}`` body ``i`` exerts on body ``i+1`` through the joint.
+        ``f_{i+1} = C⁻ᵀ [T Q + R Uᵀ (A (b_i + κ) + d)]``, on body ``i+1`` through the joint.
 
     Raises
     ------
@@ -102,14 +90,12 @@ def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) 
 
     Examples
     --------
-    The example of :func:`split_acceleration`: the pin pushes the second mass with half the push.
+    The masses of :func:`split_acceleration`: the pin pushes the second one with half the push.
 
     >>> from planargeo.screws.twists import inertia_matrix
-    >>> A2 = inertia_matrix(1.0, [1.0, 0.0], 1e-3)
-    >>> s2 = np.array([[0.0], [-1.0], [1.0]])
-    >>> T2 = A2 @ s2 / (s2.T @ A2 @ s2)
-    >>> f = split_force(np.diag([0.0, 0.0, 1.0]), [0, 0, 1.0], A2, np.zeros(3), T2, s2, [0.0], np.zeros(3))
-    >>> f.round(12) + 0.0
+    >>> A2, s2 = inertia_matrix(1.0, [1.0, 0.0], 1e-3), np.array([[0.0], [-1.0], [1.0]])
+    >>> args = (np.diag([0.0, 0.0, 1.0]), [0, 0, 1.0], A2, np.zeros(3), A2 @ s2 / (s2.T @ A2 @ s2), s2, [0.0], np.zeros(3))
+    >>> split_force(*args).round(12) + 0.0
     array([0. , 0.5, 0.5])
     """
     Lam_i, b_i, A_next, d_next, T_next, Q_next, kappa_next, P, C = _split(
@@ -146,23 +132,15 @@ def chain_split(I, S, kappa, p, tau, parents=None, joint_points=None) -> ChainSp
 
     Parameters
     ----------
-    I : sequence of (3, 3) arrays
-        Rigid-body inertias in the common frame (5.58).
-    S : sequence of (3, k_i) arrays
-        Joint spaces ``s_i``.
-    kappa, p : (N, 3) arrays
-        Bias accelerations (2.19) and bias forces (3.11) of the bodies.
-    tau : sequence of (k_i,) arrays
-        Joint forces.
-    parents : sequence of int, optional
-        Must be ``[-1, 0, ..., N-2]``.
+    I, S, kappa, p, tau, parents
+        One state, as for :func:`planargeo.algorithms.articulated_inertia.articulated_recursion`
+        (inertias in the common frame (5.58), bias terms (2.19, 3.11)); ``parents`` only ``[-1, 0, ..., N-2]``.
     joint_points : (N, 2) array, optional
         Where each joint's conditioning is measured (default the origin).
 
     Returns
     -------
     ChainSplit
-        Body accelerations ``a``, joint forces ``f`` and joint accelerations ``qdd``.
 
     Raises
     ------
@@ -205,10 +183,9 @@ def mobility_split(model, q, qd=None, tau=None, f_ext=None) -> ChainSplit:
 
     Parameters
     ----------
-    model : Model
-        An unbranched chain hanging from the ground.
-    q, qd, tau, f_ext : array_like
-        One state, as for :func:`planargeo.algorithms.articulated_inertia.articulated_inertia`.
+    model, q, qd, tau, f_ext : Model, array_like
+        An unbranched chain hanging from the ground and one state, as for
+        :func:`planargeo.algorithms.articulated_inertia.articulated_inertia`.
 
     Returns
     -------
@@ -217,10 +194,8 @@ def mobility_split(model, q, qd=None, tau=None, f_ext=None) -> ChainSplit:
 
     Raises
     ------
-    TopologyError
-        When the model is not an unbranched chain.
-    SingularConfigurationError
-        When a joint-space or split matrix is singular.
+    TopologyError, SingularConfigurationError
+        As :func:`chain_split`.
 
     Examples
     --------
@@ -245,24 +220,17 @@ def forward_dynamics_mobility_split(model, q, qd, tau, f_ext=None) -> np.ndarray
 
     Parameters
     ----------
-    model : Model
-        An unbranched chain whose first body hangs from the ground.
-    q, qd, tau : array_like, shape (..., nq)
-        Joint coordinates, speeds and forces (leading dimensions: a batch).
-    f_ext : array_like, shape (..., N, 3), optional
-        External wrenches on the bodies.
+    model, q, qd, tau, f_ext : Model, array_like
+        An unbranched chain and its states, as for :func:`planargeo.algorithms.aba.forward_dynamics`.
 
     Returns
     -------
     numpy.ndarray, shape (..., nq)
-        Joint accelerations.
 
     Raises
     ------
-    TopologyError
-        When the model is not an unbranched chain.
-    SingularConfigurationError
-        When a joint-space matrix is singular.
+    TopologyError, SingularConfigurationError
+        As :func:`chain_split`.
 
     Examples
     --------

@@ -57,40 +57,33 @@ class LoopSolution:
     """All quantities of one constrained state (thesis 9.49-9.75; attributes named after the symbols).
 
     ``xi`` are the contact forces' components in the contact reaction spaces ``B``
-    (:func:`planargeo.mechanics.contacts.B_of`, ``F = B ξ``): a slider's normal is its direction
-    turned by -90° as in the thesis's 9.87 (a joint's is +90°, 5.63), so ``xi`` compares with 9.90.
+    (:func:`planargeo.mechanics.contacts.B_of`, ``F = B ξ``); a slider's normal is its direction turned
+    by -90° as in the thesis's 9.87 (a joint's is +90°, 5.63), so ``xi`` compares with 9.90.
 
     Attributes
     ----------
     tree : StackedSolution (the open tree; ``tree.a`` is ``u``)
-    G, Upsilon, G3 : contact and branch matrices (m, N), ``G`` in 3×3 blocks
-    z, B : block-diagonal contact motion / reaction spaces
+    G, Upsilon, G3, z, B : contact and branch matrices (``G3`` in 3×3 blocks), contact motion / reaction spaces
     u : (3N,) open-loop accelerations (9.63)
-    Lambda_inv : (3N, 3N) the tree's full mobility (9.65-9.73), built on first access
-    Lambda_inv_Gt : (3N, 3m) its contact columns ``Λ^{-1} G^T``
-    contact_mobility : (3m, 3m) ``G Λ^{-1} G^T``
-    J : (3m, 3m) branch composite inertia ``Υ I Υ^T`` (9.57)
-    theta_dot, nu : contact rates (9.58) and bias accelerations (9.55)
+    Lambda_inv, Lambda_inv_Gt, contact_mobility : the tree's full mobility (9.65-9.73, on first access),
+        its contact columns ``Λ^{-1} G^T``, and ``G Λ^{-1} G^T``
+    J, theta_dot, nu : branch composite inertia ``Υ I Υ^T`` (9.57), contact rates (9.58), ``ν`` (9.55)
     K, cond : ``B^T G Λ^{-1} G^T B`` and its condition number
     Gamma, xi, F : (9.72), reaction magnitudes in ``B`` (9.70), contact forces (9.71)
-    a, qdd : closed-loop accelerations (9.73, 9.75)
-    tau_drive : (nq,) joint torques including the drives
-    f : (3N,) joint wrenches from ``Δᵀ f = I a + p + Gᵀ F`` (9.61): ``f_i`` acts on body ``i`` from its parent
-    Q : (nq,) ``s_iᵀ f_i`` (6.38), equal to ``tau_drive``
-    mu : reaction magnitudes ``U_iᵀ f_i`` of every joint in its basis ``R_i`` (6.61b, 6.104)
+    a, qdd, tau_drive : closed-loop accelerations (9.73, 9.75), joint torques including the drives
+    f, Q, mu : joint wrenches from ``Δᵀ f = I a + p + Gᵀ F`` (9.61) on body ``i`` from its parent,
+        ``s_iᵀ f_i`` (6.38, equal to ``tau_drive``) and ``U_iᵀ f_i`` in the bases ``R_i`` (6.61b, 6.104)
     reactions : list of :class:`Reaction`, one per tree joint then one per contact
 
     Examples
     --------
-    A free body (``plane`` joint, m = 2) pinned to the ground at its centre of mass (3, 1): at rest
-    the pin carries its weight; ``-F`` acts on the body, so ``ξ = [0, -m g]``.
+    A free body (m = 2) pinned to the ground at its centre of mass: ``-F`` holds up its weight.
 
     >>> from planargeo.mechanics.contacts import Contact
     >>> from planargeo.mechanics.model import Body, Joint, Model
     >>> m = Model([Body(2.0, (0.0, 0.0), 0.5)], [Joint("plane")], [-1])
     >>> pin = Contact("pin", 0, -1, point_a=(0.0, 0.0), point_b=(3.0, 1.0))
-    >>> sol = loop_solve(m, [3.0, 1.0, 0.0], [0.0] * 3, [0.0] * 3, contacts=[pin])
-    >>> sol.xi.round(9) + 0.0
+    >>> loop_solve(m, [3.0, 1.0, 0.0], [0.0] * 3, [0.0] * 3, contacts=[pin]).xi.round(9) + 0.0
     array([ 0.  , -19.62])
     """
 
@@ -146,12 +139,8 @@ class Reaction:
 
     Attributes
     ----------
-    symbol : str
-        ``"f_i"`` for tree joint ``i`` (1-based), ``"F_k"`` for contact ``k``.
-    name : str
-        The joint's or contact's name in the model (may be empty).
-    kind : str
-        The joint kind or the contact kind (``"pin"``, ``"slider"``, ``"weld"``).
+    symbol, name, kind : str
+        ``"f_i"`` (tree joint ``i``, 1-based) or ``"F_k"`` (contact ``k``); its name in the model; its kind.
     body, other : int
         The body the wrench acts on and the body that exerts it (0-based; -1 the ground).
     point : ndarray (2,)
@@ -184,19 +173,15 @@ def joint_wrenches(parents, I, a, p, GtF=None) -> np.ndarray:
     ----------
     parents : sequence of int (N,)
         Parent of each body (-1: the ground), parents before children.
-    I : array_like (3N, 3N)
-        Stacked (block-diagonal) body inertias at the origin.
-    a : array_like (3N,)
-        Body accelerations.
-    p : array_like (3N,)
-        Bias forces (3.11, 3.34).
+    I, a, p : array_like (3N, 3N), (3N,), (3N,)
+        Stacked body inertias, accelerations and bias forces (3.11, 3.34).
     GtF : array_like (3N,), optional
         ``Gᵀ F``, the net contact wrenches of 9.61.
 
     Returns
     -------
     ndarray (3N,)
-        ``f``: ``f_i`` the wrench (at the origin) the parent exerts on body ``i`` through joint ``i``.
+        ``f_i``: the wrench (at the origin) the parent exerts on body ``i`` through joint ``i``.
 
     Raises
     ------
@@ -205,8 +190,6 @@ def joint_wrenches(parents, I, a, p, GtF=None) -> np.ndarray:
 
     Examples
     --------
-    Two bodies at rest: the root's joint also carries what its child draws from it.
-
     >>> joint_wrenches([-1, 0], np.eye(6), np.zeros(6), np.array([0.0, 1.0, 0.0, 0.0, 2.0, 0.0]))
     array([0., 3., 0., 0., 2., 0.])
     """
@@ -272,20 +255,15 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
 
     Parameters
     ----------
-    model : Model
-        The spanning tree; ``model.contacts`` closes the loops unless ``contacts`` is given.
-    q, qd, tau : array_like (nq,)
-        A state satisfying the loop closures (velocities included).
-    f_ext : array_like (N, 3), optional
-        External world wrenches.
+    model, q, qd, tau, f_ext : Model, array_like
+        The spanning tree and one state satisfying the loop closures (velocities included).
     contacts : sequence of Contact, optional
-        The loop closures.
+        The loop closures (default ``model.contacts``).
     prescribed : dict {joint index: qdd value(s)}, optional
         Drives (e.g. a crank at constant speed, ``{0: 0.0}``), each one more contact with
         ``B = s (s^T s)^{-1}``, ``ν = κ_i + s q̈``; their torques in ``tau_drive``, their ``qdd`` exact.
     mobility : {"columns", "full"}
-        ``"columns"`` forms only the columns ``Λ^{-1} G^T`` by two unit-triangular solves;
-        ``"full"`` builds the 3N×3N ``Λ^{-1}`` first (the direct transcription, kept as a check).
+        Form only the columns ``Λ^{-1} G^T`` by two triangular solves, or the full 3N×3N ``Λ^{-1}`` (a check).
 
     Returns
     -------
@@ -300,8 +278,7 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
 
     Examples
     --------
-    A parallelogram four-bar: three uniform unit links whose tip is pinned to the ground at (1, 0);
-    ``T = 5/6 φ̇²``, ``V = 2 g sin φ``, so ``φ̈ = -6/5 g cos φ``:
+    A parallelogram four-bar (three unit links, the tip pinned at (1, 0)): ``φ̈ = -6/5 g cos φ``.
 
     >>> from planargeo.mechanics.contacts import Contact
     >>> from planargeo.mechanics.model import chain_model
@@ -397,26 +374,18 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
 
 
 def loop_condition(model: Model, q, contacts=None, *, prescribed=None) -> float:
-    """Condition number of ``B^T G Λ^{-1} G^T B`` at ``q`` (thesis 9.70-9.72), without raising.
-
-    :func:`loop_solve` refuses it above :data:`SINGULAR_COND`; here a singular configuration (the
-    open tree's too) returns the condition number found, ``inf`` when exactly singular.
+    """Condition number of ``B^T G Λ^{-1} G^T B`` at ``q`` (thesis 9.70-9.72), without raising (``inf``: singular).
 
     Parameters
     ----------
-    model : Model
-        The spanning tree.
-    q : array_like (nq,)
-        Joint coordinates.
-    contacts : sequence of Contact, optional
-        Default ``model.contacts``.
-    prescribed : dict, optional
-        Driven joints, as in :func:`loop_solve`.
+    model, q : Model, array_like (nq,)
+        The spanning tree and its joint coordinates.
+    contacts, prescribed : optional
+        As in :func:`loop_solve`.
 
     Returns
     -------
     float
-        The condition number.
 
     Examples
     --------
@@ -436,21 +405,14 @@ def forward_dynamics_loops(model: Model, q, qd, tau, f_ext=None, contacts=None, 
 
     Parameters
     ----------
-    model : Model
-        The spanning tree.
-    q, qd, tau : array_like (..., nq)
-        States satisfying the loop closures.
-    f_ext : array_like (..., N, 3), optional
-        External world wrenches.
-    contacts : sequence of Contact, optional
-        Default ``model.contacts``.
-    prescribed : dict, optional
-        Driven joints (:func:`loop_solve`).
+    model, q, qd, tau, f_ext : Model, array_like
+        The spanning tree and its states, as for :func:`planargeo.algorithms.aba.forward_dynamics`.
+    contacts, prescribed : optional
+        As in :func:`loop_solve`.
 
     Returns
     -------
     ndarray (..., nq)
-        Joint accelerations ``q̈`` (9.75).
 
     Examples
     --------
@@ -484,40 +446,31 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
     """Independent reference: Lagrange multipliers in maximal coordinates, solved densely (reference for 9.73, 9.75).
 
     Each body has coordinates ``(c_x, c_y, θ)`` (centre of mass, angle) and mass ``diag(m, m, J)``;
-    joints and contacts are position constraints written by hand with analytic Jacobians ``Φ`` and
-    ``γ = Φ̇ ẋ``, and ``[[M, -Φ^T], [Φ, 0]] [ẍ, λ] = [F_applied, -γ]`` is solved densely.  Only the
-    poses and velocities of :func:`planargeo.mechanics.kinematics.kinematics` are shared with the stacked code.
+    joints and contacts are position constraints with analytic Jacobians ``Φ`` and ``γ = Φ̇ ẋ``, and
+    ``[[M, -Φ^T], [Φ, 0]] [ẍ, λ] = [F_applied, -γ]`` is solved densely.  Only the poses and
+    velocities of :func:`planargeo.mechanics.kinematics.kinematics` are shared with the stacked code.
 
     Parameters
     ----------
-    model : Model
-        The spanning tree.
-    q, qd, tau : array_like (nq,)
-        One state.
-    f_ext : array_like (N, 3), optional
-        External world wrenches.
-    contacts : sequence of Contact, optional
-        Default ``model.contacts``.
-    prescribed : dict, optional
-        Driven revolute joints ``{joint: qdd}``.
+    model, q, qd, tau, f_ext : Model, array_like
+        The spanning tree and one state.
+    contacts, prescribed : optional
+        As in :func:`loop_solve` (drives of revolute joints only).
 
     Returns
     -------
     dict
-        ``a`` (N, 3) accelerations at the origin, ``qdd`` (nq,) (least squares from ``Δ a - κ = S q̈``),
-        ``F`` (m, 3) contact forces (``-F`` acts on body ``a``), ``tau_drive``, ``lambda``, ``Phi``
-        and ``n_tree_constraints`` (the tree joints' rows come first).
+        ``a`` (N, 3), ``qdd`` (nq,) (least squares from ``Δ a - κ = S q̈``), ``F`` (m, 3) (``-F`` acts
+        on body ``a``), ``tau_drive``, ``lambda``, ``Phi`` and ``n_tree_constraints`` (its first rows).
 
     Raises
     ------
-    ShapeError
-        For a batch of states.
-    InputError
-        For a prescribed joint that is not revolute.
+    ShapeError, InputError
+        For a batch of states, or a prescribed joint that is not revolute.
 
     Examples
     --------
-    The four-bar of :func:`loop_solve`, ``φ̈ = -6/5 g cos φ``:
+    The four-bar of :func:`loop_solve`:
 
     >>> from planargeo.mechanics.contacts import Contact
     >>> from planargeo.mechanics.model import chain_model

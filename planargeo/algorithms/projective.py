@@ -40,20 +40,11 @@ def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.
 
     Parameters
     ----------
-    I : array_like, shape (3, 3)
-        Body inertia at the origin.
-    s : array_like, shape (3, k)
-        Joint motion space.
-    Q : array_like, shape (k,)
-        Joint force/torque.
-    p : array_like, shape (3,)
-        Bias force of the body (3.11), gravity included.
-    f_next : array_like, shape (3,)
-        Internal force of the child joints (their sum).
-    a_prev : array_like, shape (3,)
-        Acceleration of the parent body.
-    kappa : array_like, shape (3,)
-        Bias acceleration of the joint (2.19).
+    I, s, Q : array_like, shapes (3, 3), (3, k), (k,)
+        Body inertia at the origin, joint motion space, joint force.
+    p, f_next, a_prev, kappa : array_like, shape (3,)
+        The body's bias force (3.11), its child joints' summed force, the parent's acceleration,
+        the joint's bias acceleration (2.19).
     T : array_like, shape (3, k), optional
         ``I s (sᵀIs)⁻¹`` if already formed and checked; else :func:`planargeo.mechanics.subspaces.T_of`.
 
@@ -242,22 +233,19 @@ def projective_workspace(model, q, qd=None, tau=None, f_ext=None) -> ProjectiveW
 
     Parameters
     ----------
-    model : Model
-        The mechanism.
-    q, qd, tau, f_ext : array_like
-        One state, as for :func:`planargeo.algorithms.articulated_inertia.articulated_inertia`.
+    model, q, qd, tau, f_ext : Model, array_like
+        The mechanism and one state, as for :func:`planargeo.algorithms.articulated_inertia.articulated_inertia`.
 
     Returns
     -------
     ProjectiveWorkspace
-        The per-joint quantities.
 
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
     >>> ws = projective_workspace(chain_model(2, gravity=(0, 0)), [0.0, 0.0], [0.0, 0.0], [1.0, 0.0])
-    >>> [round(float(x), 12) for x in ws.qdd]
-    [1.714285714286, -4.285714285714]
+    >>> ws.qdd.round(9)
+    array([ 1.71428571, -4.28571429])
     """
     return projective_solve(*_state_arrays(model, q, qd, tau, f_ext)[1:])
 
@@ -274,17 +262,12 @@ def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
 
     Parameters
     ----------
-    model : Model
-        The mechanism.
-    q, qd, tau : array_like, shape (..., nq)
-        Joint coordinates, velocities and forces (leading dimensions: a batch).
-    f_ext : array_like, shape (..., N, 3), optional
-        External world wrenches at the origin on the bodies (besides gravity).
+    model, q, qd, tau, f_ext : Model, array_like
+        The mechanism and its states, as for :func:`planargeo.algorithms.aba.forward_dynamics`.
 
     Returns
     -------
     numpy.ndarray, shape (..., nq)
-        ``q̈``.
 
     Raises
     ------
@@ -293,10 +276,8 @@ def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
 
     Examples
     --------
-    A unit slender link along +x on a pin at the origin, under gravity: ``qdd = -g (L/2) / (L^2/3)``.
-
     >>> from planargeo.mechanics.model import chain_model
-    >>> forward_dynamics_projective(chain_model(1), [0.0], [0.0], [0.0]).round(6)
+    >>> forward_dynamics_projective(chain_model(1), [0.0], [0.0], [0.0]).round(6)    # -g (L/2) / (L²/3)
     array([-14.715])
     """
     return _per_state(_projective_qdd, model, q, qd, tau, f_ext)
