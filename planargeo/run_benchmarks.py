@@ -1,27 +1,11 @@
-"""``planargeo bench``: run the benchmark suite of a source checkout, side by side in one run.
+"""``planargeo bench``: run the benchmark suite of a source checkout into a results folder.
 
-The suite (``benchmarks/`` beside the package in a source checkout, or ``--suite``) is not part
-of the installed package: this command only finds it and runs ``benchmarks/run.py`` in a fresh
-process.  Results go to ``--out`` (default: a new temporary folder, printed at the end), never
-to the committed ``benchmarks/results``, ``benchmarks/RESULTS.md`` or ``gallery/`` files:
-only ``make bench`` rewrites those.
-
-A run never loses a file it did not write.  ``--out`` must be a new folder (its parent must
-exist), an empty one, or one ``planargeo bench`` made itself: such a folder holds the manifest
-``.planargeo-bench``, the SHA-256 and name of every file the command wrote there (the format of
-:mod:`planargeo.files`, as the gallery keeps).  Any other folder is refused unless ``--force``.
-The suite writes into a fresh hidden folder inside ``--out``; its files are then moved in,
-replacing only files that still hold what ``planargeo bench`` wrote (a file the user has
-changed or put there under the same name is left, and named in one line) unless ``--force``.
-Nothing is ever deleted.  Ctrl-C stops the suite and keeps the results it has written.
-
-Problems (a missing parent, a file in the way, a folder that cannot be created or written, a
-read-only file system) raise :class:`~planargeo.errors.OutputError`, which ``planargeo bench``
-prints as one line naming the folder (exit status 1, no success line).
-
-``--sizes`` (chain sizes ``N`` of the single-state tables) is bounded: each ``N`` a whole number
-from 1 to :data:`MAX_SIZE` (``--large``: up to the model builders' ``MAX_BODIES``), at most
-:data:`MAX_SIZE_COUNT` of them; anything else is refused before the run starts.
+The suite (``benchmarks/`` of a source checkout, or ``--suite``) is not part of the installed
+package: this command runs its ``run.py`` in a fresh process, writing into a hidden folder inside
+``--out`` (default: a new temporary folder), never into the committed results (``make bench``
+rewrites those).  ``--out`` must be new, empty, or made by ``planargeo bench`` (it keeps the
+manifest :data:`MANIFEST`, :mod:`planargeo.files`); files are moved in only over files that still
+hold what it wrote, unless ``--force``.  Nothing is ever deleted; Ctrl-C keeps what was written.
 """
 from __future__ import annotations
 
@@ -53,9 +37,6 @@ _STAGE = ".planargeo-bench-run-"
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Add ``planargeo bench``'s options to ``parser``.
-
-    ``--suite``, ``--out``, ``--quick``, ``--only``, ``--no-charts``, ``--sizes``, ``--large`` and
-    ``--force``.
 
     Parameters
     ----------
@@ -101,8 +82,7 @@ def parse_sizes(text: str, large: bool = False) -> tuple[int, ...]:
     NonFiniteError
         A size is ``inf`` or ``nan``.
     SizeLimitError
-        A size past the limit, or more than :data:`MAX_SIZE_COUNT` sizes (the message says how to
-        lift the limit, where it can be).
+        A size past the limit, or more than :data:`MAX_SIZE_COUNT` sizes.
     InputError
         A size that is not a positive whole number, or no size at all.
 
@@ -114,10 +94,6 @@ def parse_sizes(text: str, large: bool = False) -> tuple[int, ...]:
     Traceback (most recent call last):
     ...
     planargeo.errors.SizeLimitError: --sizes: N = 1e6 is past the limit of 500 bodies (single-state timings grow like N³); pass --large for a deliberate long run (up to 10000)
-    >>> parse_sizes("0")
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.InputError: --sizes: N must be a positive whole number, got 0
     """
     from planargeo.mechanics.model import MAX_BODIES
 
@@ -162,7 +138,7 @@ def find_suite(suite: str | None = None) -> Path:
     Raises
     ------
     InputError
-        If no folder with a ``run.py`` is found (an installed package without its checkout).
+        No folder with a ``run.py`` (an installed package without its checkout).
     """
     candidates = [Path(suite)] if suite else [Path.cwd() / "benchmarks",
                                               Path(__file__).resolve().parents[1] / "benchmarks"]
@@ -224,9 +200,8 @@ def out_folder(out: str | None, force: bool = False) -> Path:
     Raises
     ------
     OutputError
-        ``out`` has no existing parent, is a file, cannot be created or written into (no
-        permission, a read-only file system, ``/proc``), or holds files and no manifest of
-        ``planargeo bench`` while ``force`` is not given.
+        ``out`` has no parent, is a file, cannot be created or written into, or holds files and no
+        manifest of ``planargeo bench`` while ``force`` is not given.
 
     Examples
     --------
@@ -247,10 +222,10 @@ def _produced(stage: Path) -> dict[str, bytes]:
 
 
 def _move_in(stage: Path, out: Path, force: bool) -> tuple[list[str], list[str]]:
-    """Move the suite's files from ``stage`` into ``out``; return ``(written, left)``.
+    """Move the suite's files from ``stage`` into ``out``, rewriting the manifest; ``(written, left)``.
 
     A file of ``out`` is replaced only if it still holds what ``planargeo bench`` wrote (or with
-    ``force``); the others are ``left``.  The manifest is rewritten with the files written.
+    ``force``); the others are ``left``.
     """
     try:
         new = _produced(stage)
@@ -268,8 +243,7 @@ def _move_in(stage: Path, out: Path, force: bool) -> tuple[list[str], list[str]]
 
 
 def _run(cmd: list[str], cwd: str) -> tuple[int, bool]:
-    """``(exit status, interrupted)`` of the suite; on Ctrl-C the suite (which gets the signal too)
-    is given time to stop by itself, so that what it has written is kept."""
+    """``(exit status, interrupted)`` of the suite; on Ctrl-C it is given time to stop by itself."""
     proc = subprocess.Popen(cmd, cwd=cwd)
     try:
         return proc.wait(), False
@@ -293,9 +267,8 @@ def main(args: argparse.Namespace) -> int:
     Returns
     -------
     int
-        Exit status: 0, the suite's when it fails, 1 when a result was not written because a
-        file of the user's has its name, 2 when no suite is found, 130 after Ctrl-C (the results
-        written until then are kept).
+        0; the suite's status when it fails; 1 when a file of the user's kept a result out; 2 when
+        no suite is found; 130 after Ctrl-C.
 
     Raises
     ------
