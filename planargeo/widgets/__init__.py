@@ -1,17 +1,7 @@
-"""Interactive explorers (ipywidgets, drawn by the page) built on :mod:`planargeo.draw`.
-
-Each explorer turns its controls into a state, the state into a picture
-(:mod:`planargeo.draw.picture`) and a readout; the page draws the picture
-(:mod:`planargeo.widgets.canvas`), moves dragged handles at once, zooms and pans.
-Display one in a notebook by leaving it as the last expression of a cell (or
-calling ``.show()``)::
-
-    from planargeo.widgets import ProjectiveExplorer
-    ProjectiveExplorer()
-
-Where no widget can be shown (a saved notebook, the docs), the output holds a static
-PNG of the picture.  Explorers are imported lazily so that a missing optional module
-only affects the explorer that needs it.
+"""Interactive explorers (ipywidgets): controls → state → picture (:mod:`planargeo.draw.picture`)
+and readout, drawn by the page (:mod:`planargeo.widgets.canvas`).  Show one by leaving it as the
+last expression of a notebook cell, e.g. ``ProjectiveExplorer()``; a saved notebook keeps a PNG.
+Explorers are imported lazily: a missing optional module only affects the one that needs it.
 """
 from __future__ import annotations
 
@@ -23,11 +13,7 @@ __all__ = ["Explorer", "Handle", "fmt", "EXPLORERS", "use_widget_backend"]
 
 
 def use_widget_backend() -> str:
-    """The front end explorers use: the page draws their pictures (kept for notebooks that call it).
-
-    Explorers need no matplotlib backend (``%matplotlib widget`` is not needed): each draws
-    its picture in the page, in JupyterLab, Notebook and Voila alike.  Calling this changes
-    nothing.
+    """The front end explorers use: the page draws their pictures (kept for notebooks; changes nothing).
 
     Returns
     -------

@@ -260,15 +260,6 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         """
         return {}
 
-    def extra_widgets(self) -> list:
-        """Widgets shown below the controls (default: none).
-
-        Returns
-        -------
-        list
-        """
-        return []
-
     def handles(self) -> list[Handle]:
         """The draggable handles of the picture (default: none).
 
@@ -288,7 +279,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         values : dict
             The shown control values.
         dt : float
-            Time step (seconds of the scene).
+            Time step (s).
 
         Returns
         -------
@@ -312,12 +303,11 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         return {}
 
     def explain(self) -> dict[str, str]:
-        """The meaning of every symbol on screen (readout names, labels), shown in "what is shown".
+        """``{symbol or readout name: its one-line meaning and thesis equation}``, for "what is shown".
 
         Returns
         -------
         dict
-            ``{symbol or readout name: one-line meaning with its thesis equation}`` (default: none).
         """
         return {}
 
@@ -388,17 +378,14 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         Returns
         -------
         Explorer
-
-        Raises
-        ------
-        InputError
-            Never out of it: a bad name or value is refused and shown in :attr:`message`.
+            ``self``; a bad name or value is refused and shown in :attr:`message`, never raised.
         """
         problems = []
         for k, v in values.items():
+            if k not in self.controls:
+                problems.append(f"unknown control {k!r} (controls: {', '.join(self.controls)})")
+                continue
             try:
-                if k not in self.controls:
-                    raise InputError(f"unknown control {k!r} (controls: {', '.join(self.controls)})")
                 values[k] = check_control(k, self.controls[k], v)
             except InputError as exc:
                 problems.append(str(exc))

@@ -204,12 +204,11 @@ class CarExplorer(Described, Explorer):
         return textwrap.fill(super().figure_message(exc), 40)
 
     def view_of(self, st):
-        """The explorer's own view of the state ``st`` (:func:`~planargeo.draw.pictures.car.view_box`).
+        """The explorer's own view ``(x0, x1, y0, y1)`` of the state ``st`` (m).
 
         Parameters
         ----------
         st : dict
-            A state of :meth:`compute`.
 
         Returns
         -------

@@ -129,7 +129,8 @@ def parse_list(text: str, name: str) -> list[float]:
     Raises
     ------
     InputError
-        A part is not a finite number.
+        A part is not a finite number: the message names the list
+        and quotes the text.
 
     Examples
     --------
@@ -231,17 +232,8 @@ class ChainExplorer(Explorer):
         return self.controls[TIME]
 
     # -- model / state -------------------------------------------------------------
-    def model_for(self, v) -> Model:
-        """The chain of the control values ``v`` (kept while they do not change).
-
-        Parameters
-        ----------
-        v : dict
-
-        Returns
-        -------
-        Model
-        """
+    def _model_for(self, v) -> Model:
+        """The chain of the control values ``v`` (kept while they do not change)."""
         key = (v["links"], v["joints"], v["gravity"], v["base x (m)"], v["base y (m)"])
         if key != self._model_key:
             self._model = chain_for(*key[:3], base=key[3:])
@@ -254,6 +246,7 @@ class ChainExplorer(Explorer):
         Parameters
         ----------
         v : dict
+            The control values.
 
         Returns
         -------
@@ -264,7 +257,7 @@ class ChainExplorer(Explorer):
         InputError
             A per-joint list that is not a list of numbers.
         """
-        model = self.model_for(v)
+        model = self._model_for(v)
         q = np.empty(model.nq)
         for i, j in enumerate(model.joints):
             if j.kind == "revolute":

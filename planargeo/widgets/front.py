@@ -116,8 +116,7 @@ class FrontMixin:
         play = ([W.HBox([self.play_control, self.play_speed, self.play_scale, self.play_loop],
                          layout=W.Layout(flex_flow="row wrap", align_items="center"))]
                 if self.has_play else [])
-        controls = W.VBox(list(self.controls.values()) + play + self.extra_widgets()
-                          + [buttons, self.export_label],
+        controls = W.VBox(list(self.controls.values()) + play + [buttons, self.export_label],
                           layout=W.Layout(width="330px", min_width="330px", overflow="visible"))
         # controls on the left; on the right a reserved message line, the picture, the readout:
         # fixed sizes above the readout, so nothing moves when a message appears

@@ -110,6 +110,7 @@ class HandleMixin:
         Returns
         -------
         Explorer
+            ``self``, dragged.
 
         Raises
         ------

@@ -145,7 +145,6 @@ def value_text(x: Any, unit: Any = "", zero: float = 0.0, digits: int = 4) -> st
     Returns
     -------
     str
-        HTML-safe text.
 
     Examples
     --------
@@ -176,10 +175,8 @@ def point_text(p, unit: str = "m", zero: float = 0.0, digits: int = 4) -> str:
         Homogeneous point ``[a, b, w]`` (thesis 5.49).
     unit : str
         Unit of the coordinates.
-    zero : float
-        Round-off level of the coordinates.
-    digits : int
-        Significant digits.
+    zero, digits : float, int
+        Round-off level and significant digits of the coordinates (:func:`fmt`).
 
     Returns
     -------

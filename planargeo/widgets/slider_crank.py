@@ -219,18 +219,9 @@ class SliderCrankExplorer(SceneTime, Explorer):
         keep_run(self._runs, key, run)
         return st
 
-    def banner_of(self, st) -> str:
-        """The dead centre named on the picture: passing one now, or at one ("" between them).
-
-        Parameters
-        ----------
-        st : dict
-            A state of :meth:`compute`.
-
-        Returns
-        -------
-        str
-        """
+    @staticmethod
+    def _banner(st) -> str:
+        """The dead centre named on the picture: passing one now, or at one ("" between them)."""
         passed, now = st["passed"], st["time"]
         recent = bool(passed) and now - passed[-1][0] < 0.02
         conf = st["configuration"]
@@ -242,7 +233,7 @@ class SliderCrankExplorer(SceneTime, Explorer):
         return slider_crank_picture(state["sol"].data.pose, r=state["r"], t=state["t"], q=state["q"], reactions=state["reactions"],
                                     v=state["v"], a=state["a"], h=state["h"], overlays=overlays,
                                     view=view or slider_crank_view(state["r"], state["l"], state["t"]),
-                                    banner=self.banner_of(state), size=self.figure_px)
+                                    banner=self._banner(state), size=self.figure_px)
 
     def readout_of(self, state):
         sol = state["sol"]
