@@ -16,9 +16,9 @@ import math
 import numpy as np
 
 from planargeo.draw.geometry import clip_line
-from planargeo.draw.pictures.common import builder
+from planargeo.draw.pictures.common import builder, labelled_line
 from planargeo.draw.picture import PX_PER_PT, Picture, nice_ticks
-from planargeo.draw.pictures._words import force, labelled_line, num, pair, subscript, where
+from planargeo.draw.pictures._words import force, num, pair, subscript, where
 from planargeo.draw.style import COLORS
 from planargeo.geometry.conics import drawable_conic
 

@@ -66,8 +66,7 @@ def label_line(pic: Picture, id: str, text: str, *, anchor=None, gap: float = 7.
 
     Parameters
     ----------
-    pic : Picture
-    id, text : str
+    pic, id, text
     anchor : (float, float), optional
         Near which point of the line (default: the view's centre), kept within its middle 80 %.
     gap : float
@@ -103,10 +102,7 @@ def point_along(pic: Picture, id: str, p, **kw) -> None:
 
     Parameters
     ----------
-    pic : Picture
-    id : str
-    p : array_like (3,)
-    **kw
+    pic, id, p, **kw
     """
     kw.setdefault("glyph", False)
     pic.point(id, p, **kw)
@@ -131,9 +127,7 @@ def label_toward(el: dict, u, gap: float = 9.0) -> None:
 
     Parameters
     ----------
-    el : dict
-    u : (float, float)
-    gap : float
+    el, u, gap
     """
     u = np.asarray(u, float)
     u = u / max(math.hypot(*u), 1e-300)
@@ -142,3 +136,20 @@ def label_toward(el: dict, u, gap: float = 9.0) -> None:
             part["dx"], part["dy"] = float(u[0] * gap), float(u[1] * gap)
             part["ha"], part["va"] = _align(u)
             return
+
+
+def labelled_line(pic, id: str, l, text: str, *, anchor=None, side: float = 1.0, ahead: float = 0.0,
+                  **kw) -> None:
+    """The line ``l`` (:meth:`Picture.line`, ``**kw``) labelled ``text`` beside it, clear of its arrow.
+
+    The arrow sits near ``anchor``, the label ``ahead`` (data units) from it along the force, on
+    ``side`` +1 (above) or -1 (below); a couple keeps its glyph's label.
+    """
+    l = np.asarray(l, dtype=float)
+    if l[0] == 0.0 and l[1] == 0.0:
+        pic.line(id, l, label=text, anchor=anchor, **kw)
+        return
+    pic.line(id, l, label="", anchor=anchor, **kw)
+    if anchor is not None and ahead:
+        anchor = np.asarray(anchor, dtype=float) + ahead * l[:2] / math.hypot(l[0], l[1])
+    label_line(pic, id, text, anchor=anchor, side=side)

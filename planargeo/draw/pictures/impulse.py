@@ -18,9 +18,9 @@ import math
 
 import numpy as np
 
-from planargeo.draw.pictures.common import builder
+from planargeo.draw.pictures.common import builder, labelled_line
 from planargeo.draw.picture import Picture
-from planargeo.draw.pictures._words import force, labelled_line, num, pair, where
+from planargeo.draw.pictures._words import force, num, pair, where
 from planargeo.draw.style import COLORS
 from planargeo.mechanics.impulse import moved_points
 from planargeo.screws.inertia import percussion_axis

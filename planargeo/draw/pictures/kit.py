@@ -56,10 +56,7 @@ def label_at(pic: Picture, xy, text: str, *, gap: float = 6.0) -> None:
 
     Parameters
     ----------
-    pic : Picture
-    xy : (float, float)
-    text : str
-    gap : float
+    pic, xy, text, gap
     """
     x, y = (float(v) for v in xy)
     if text and math.isfinite(x) and math.isfinite(y):
@@ -140,12 +137,7 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.9, depth: float = 0.12
 
     Parameters
     ----------
-    pic : Picture
-    id, desc : str
-    xy : (float, float)
-    width, depth : float
-    n : int
-    opacity : float
+    pic, id, desc, xy, width, depth, n, opacity
     """
     x, y = (float(v) for v in xy)
     rows = [[x - width / 2, y], [x + width / 2, y], [np.nan, np.nan]]
@@ -161,8 +153,7 @@ def seg_distance(p, segs) -> float:
 
     Parameters
     ----------
-    p : (float, float)
-    segs : array_like (n, 2, 2)
+    p, segs
 
     Returns
     -------
@@ -189,8 +180,7 @@ def clearest(points, segs):
 
     Parameters
     ----------
-    points : array_like (m, 2)
-    segs : array_like (n, 2, 2)
+    points, segs
 
     Returns
     -------
@@ -210,10 +200,7 @@ def side_label(pic: Picture, a, b, text: str, segs, *, gap: float = 5.0) -> None
 
     Parameters
     ----------
-    pic : Picture
-    a, b : (float, float)
-    text : str
-    segs : array_like (n, 2, 2)
+    pic, a, b, text, segs
     gap : float
         Pixels from the segment.
     """
@@ -238,8 +225,7 @@ def where(p, *, far: float = 1e6) -> str:
 
     Parameters
     ----------
-    p : array_like (3,)
-    far : float
+    p, far
 
     Returns
     -------
@@ -263,9 +249,7 @@ def rate(p, unit: str, *, far: float = 1e6) -> str:
 
     Parameters
     ----------
-    p : array_like (3,)
-    unit : str
-    far : float
+    p, unit, far
 
     Returns
     -------
@@ -332,8 +316,7 @@ def scale_bar(pic: Picture, unit: str = "m") -> float:
 
     Parameters
     ----------
-    pic : Picture
-    unit : str
+    pic, unit
 
     Returns
     -------

@@ -25,7 +25,7 @@ import math
 import numpy as np
 
 from planargeo.draw.picture import Picture
-from planargeo.draw.pictures._words import num, where
+from planargeo.draw.pictures._words import num, pair, where
 from planargeo.draw.pictures.common import builder, label_line
 from planargeo.draw.style import COLORS
 from planargeo.geometry.projective import from_xy, is_ideal
@@ -104,7 +104,7 @@ def percussion_picture(st: dict, *, impact: bool = False, view, size=(600, 480))
     s = nums["grip_spot"] if grip_spot else nums["spot"]
     if s is not None:
         name = "sweet spot" if grip_spot else "centre of percussion"
-        where_ = f"at ({num(s[0])}, {num(s[1])}) m"
+        where_ = f"at {pair(s)} m"
         pic.marks("spot", [s], role="wrench", shape="D", size=10.0, color=COLORS["wrench"], z=6, symbol=name,
                   desc=f"sweet spot of the grip (5.67): strike there and the hands feel no sting, {where_}"
                   if grip_spot else f"centre of percussion (5.68): where the axis crosses the line a–c, {where_}")
@@ -112,7 +112,7 @@ def percussion_picture(st: dict, *, impact: bool = False, view, size=(600, 480))
                                           "dy": -7.0 if grip_spot else -11.0, "text": name, "ha": "left",
                                           "va": "top"})
     pic.point("c", from_xy(c), role="twist", glyph=False, color="#000000", size=6.5, symbol="c",
-              desc=f"centre of mass c (1.65): at ({num(c[0])}, {num(c[1])}) m")
+              desc=f"centre of mass c (1.65): at {pair(c)} m")
     pic.point("a", a, role="accel", glyph_scale=0.3, size=9.5, symbol="a",
               desc=f"acceleration pole a (5.64): the point of the body with no acceleration, {where(a)}")
     return pic

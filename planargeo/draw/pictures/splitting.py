@@ -22,9 +22,10 @@ import math
 
 import numpy as np
 
-from planargeo.draw.pictures.common import builder
+from planargeo.draw.pictures.common import builder, labelled_line
+from planargeo.draw.pictures.kit import label_at
 from planargeo.draw.picture import PX_PER_PT, Picture
-from planargeo.draw.pictures._words import force, labelled_line, num, pair, subscript, where
+from planargeo.draw.pictures._words import force, num, pair, subscript, where
 from planargeo.draw.style import COLORS, OKABE_ITO
 from planargeo.scenes.splitting import twist_pole
 
@@ -75,9 +76,7 @@ def splitting_picture(st: dict, *, view, focus: str = "all", centres: bool = Tru
               desc="joint 1, pinned to the ground: at (0, 0) m", z=3)
     pic.marks("split", [pts[i]], role="body", color=CUT, size=15.0, symbol="split",
               desc=f"the split joint i+1 = {i + 1} (7.4): at {pair(pts[i])} m", z=2)
-    el = pic.elements[-1]
-    el["parts"].append({"p": "text", "x": float(pts[i, 0]), "y": float(pts[i, 1]), "dx": 9.0, "dy": 9.0,
-                        "text": "split", "ha": "left", "va": "bottom"})
+    label_at(pic, pts[i], "split", gap=9.0)
     pic.marks("pins", pts[1:-1], role="body", color="#000000", size=5.0, symbol="joints",
               desc=f"the joints between the bodies, L = 1 m apart: {n - 1} pins", z=4)
     f = np.asarray(st["f_split"], float)

@@ -88,8 +88,7 @@ def legible_text(fig, min_pt: float = LABEL_PT):
 
     Parameters
     ----------
-    fig : matplotlib.figure.Figure
-    min_pt : float, optional
+    fig, min_pt
 
     Returns
     -------
@@ -183,7 +182,8 @@ def scene_state(name: str, **params):
     Parameters
     ----------
     name : str
-    **params :
+    **params
+        Scene parameters.
 
     Returns
     -------

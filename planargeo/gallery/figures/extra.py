@@ -12,7 +12,8 @@ from planargeo.screws.twists import inertia_matrix
 from planargeo.geometry.projective import from_xy, to_xy
 from planargeo.draw.layout import shape_points
 from planargeo.draw.picture import _CHAR_EM, FONT_PX, PX_PER_PT
-from planargeo.draw.pictures._words import labelled_line, subscript
+from planargeo.draw.pictures._words import subscript
+from planargeo.draw.pictures.common import labelled_line
 from planargeo.draw.pictures.kit import aim_label, foot_on_line, force, rate, where
 from planargeo.draw.sketch import (body, joint_split, label, link_polygon, model, model_shapes, panel,
                                    segment, show, split_arrows)

@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 
 from planargeo.draw.picture import PX_PER_PT
-from planargeo.draw.pictures._words import labelled_line
+from planargeo.draw.pictures.common import labelled_line
 from planargeo.draw.pictures.kit import where
 from planargeo.draw.sketch import com, link, panel, pin, segment, show
 from planargeo.draw.style import COLORS
