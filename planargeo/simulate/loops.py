@@ -1,49 +1,24 @@
-"""Simulation of closed-loop mechanisms (thesis 9.5 integrated in time).
+"""Simulation of closed-loop mechanisms (thesis 9.5 integrated in time; figures in ``docs/simulation.md``).
 
-:func:`simulate_loops` integrates the accelerations of the constrained
-projective dynamics algorithm (:func:`planargeo.algorithms.loops.loop_solve`)
-with :func:`planargeo.simulate.simulate`.  The loop closures hold exactly
-only at the acceleration level (``B^T (G a - ν) = 0``, 9.55/9.60), so the
-positions and velocities drift; two documented stabilisations are offered:
+:func:`simulate_loops` integrates the accelerations of the constrained projective dynamics
+(:func:`planargeo.algorithms.loops.loop_solve`) with :func:`planargeo.simulate.simulate`.  The
+closures hold only at the acceleration level (``B^T (G a - ν) = 0``, 9.55/9.60), so positions and
+velocities drift; the stabilisations:
 
 ``"projection"`` (default)
-    After every accepted step the state is pulled back onto the constraint
-    manifold: positions by Gauss-Newton iterations
-    ``q ← q - J_c^+ φ(q)`` until ``|φ| < tol``, then velocities by the
-    mass-weighted (kinetic-energy-minimal) projection
-    ``q̇ ← q̇ - H^{-1} J_c^T (J_c H^{-1} J_c^T)^{-1} J_c q̇``.
-    ``φ`` are the contacts' position residuals (:func:`planargeo.mechanics.contacts.residual`)
-    and ``J_c = B^T G J`` the closure Jacobian (``J`` the stacked body
-    Jacobians; ``J_c`` is the exact derivative of ``φ`` on the manifold).
+    After every accepted step, positions by Gauss-Newton ``q ← q - J_c^+ φ(q)`` until
+    ``|φ| < tol``, then velocities by the mass-weighted projection
+    ``q̇ ← q̇ - H^{-1} J_c^T (J_c H^{-1} J_c^T)^{-1} J_c q̇``; ``φ`` are the contacts' position
+    residuals (:func:`planargeo.mechanics.contacts.residual`), ``J_c = B^T G J`` their Jacobian.
 ``"baumgarte"``
-    The accelerations are corrected so that
-    ``φ̈ + 2 α φ̇ + β² φ = 0``: ``q̈ ← q̈ - H^{-1} J_c^T (J_c H^{-1} J_c^T)^{-1} (2 α φ̇ + β² φ)``
-    (parameters ``alpha``, ``beta`` in 1/s; critically damped for ``alpha = beta``).
+    ``q̈`` corrected so that ``φ̈ + 2 α φ̇ + β² φ = 0`` (``alpha``, ``beta`` in 1/s).
 ``"both"``, ``"none"``
     Both corrections, or neither (to see the drift).
 
-Diagnostics per recorded step (``result.residual`` columns and ``result.extra``):
-energy (kinetic + gravitational; conserved for a free mechanism without
-drives), the position residuals ``φ`` and the velocity residuals ``J_c q̇``.
-
-Documented tolerances (``docs/simulation.md``, the figures the tests assert):
-slider-crank of 9.6, free crank, g = 9.81, 10 s (44 crank turns), DOP853
-with ``rtol = 1e-7``, ``atol = 1e-9``, projection triggered above 1e-10:
-position and velocity residuals below 1e-9 (measured 8.6e-11 and 1.0e-10,
-the trigger), relative energy drift below 2e-5 (measured 4.1e-6; 6.9e-7 at
-``rtol = 1e-8``), 18 600 dynamics evaluations.  Without stabilisation the
-position residual reaches 4e-6 after 1 s at that tolerance.
-
-Integrators: every method of :func:`planargeo.simulate.simulate`.  The
-multistep ``"BDF"`` and ``"LSODA"`` take ``"baumgarte"`` or ``"none"`` only:
-each projection restarts them at order 1 with a tiny step (measured on the
-crank at ``rtol = 1e-8``: 0.01 s took 10 785 LSODA steps and 19 741 BDF steps,
-against about 20 for DOP853), so ``"projection"`` and ``"both"`` raise
-:class:`~planargeo.errors.InputError` with them.
-
-Singular configurations (a dead centre where ``BᵀGΛ⁻¹GᵀB`` loses rank) are
-watched and recorded as events (``result.cond``, ``result.events``; see
-:mod:`planargeo.simulate.integrate`).
+The multistep ``"BDF"`` and ``"LSODA"`` take ``"baumgarte"`` or ``"none"`` only: each
+projection restarts them at order 1 with a tiny step (0.01 s of the crank took 10 785 LSODA
+steps against about 20 for DOP853).  Dead centres (``BᵀGΛ⁻¹GᵀB`` losing rank) are watched and
+recorded as events (:mod:`planargeo.simulate.integrate`).
 """
 from __future__ import annotations
 
@@ -55,11 +30,12 @@ import numpy as np
 from planargeo.algorithms.loops import loop_condition, loop_solve
 from planargeo.algorithms.stacked import blocks
 from planargeo.mechanics.contacts import contact_matrix, residual as contact_residual, stacked_contact_spaces, validate_contacts
-from planargeo._validate import as_array, as_scalar, check_overflow, check_tolerance, overflow_checked
+from planargeo._validate import as_array, check_overflow, check_tolerance, overflow_checked
 from planargeo.errors import InputError, ShapeError
+from planargeo.geometry._docs import entries
 from planargeo.mechanics.kinematics import kinematics
-from planargeo.mechanics.model import Model
-from planargeo.simulate.integrate import MAX_STEPS, MULTISTEP, SimulationResult, simulate
+from planargeo.mechanics.model import Model, _positive
+from planargeo.simulate.integrate import MAX_STEPS, MULTISTEP, SimulationResult, _count, simulate
 
 __all__ = ["simulate_loops", "closure_residual", "closure_jacobian", "project_state", "baumgarte",
            "STABILIZATIONS", "LOOP_MAX_EVALS"]
@@ -68,8 +44,16 @@ STABILIZATIONS = ("projection", "baumgarte", "both", "none")
 
 #: Default budget of a closed-loop run (``max_evals`` of :func:`simulate_loops`): evaluations of the
 #: constrained dynamics, each about 0.5 ms for the slider-crank on a quiet core (with the projection),
-#: so about 10 s of work; the 10 s crank run of the module docstring takes 18 600.
+#: so about 10 s of work; the 10 s crank run of ``docs/simulation.md`` takes 18 600.
 LOOP_MAX_EVALS = 20_000
+
+#: Docstring entries shared here (:func:`planargeo.geometry._docs.entries`).
+_documented = entries({
+    "model": "model : Model\n    The mechanism (a spanning tree).",
+    "q": "q : array_like (nq,)\n    Joint coordinates.",
+    "contacts": "contacts : sequence of Contact, optional\n    The contacts closing the loops (default ``model.contacts``).",
+    "fixed": "fixed : sequence of int\n    Coordinates left unchanged (driven joints).",
+})
 
 
 def _cs(model, contacts):
@@ -93,27 +77,20 @@ def _free(model, fixed) -> np.ndarray:
     return np.setdiff1d(np.arange(model.nq), np.asarray(idx, dtype=int))
 
 
-def _rate(x, name: str) -> float:
-    """A Baumgarte rate (1/s): finite and non-negative."""
-    v = as_scalar(x, name)
-    if v < 0:
-        raise InputError(f"{name} must be non-negative, got {v!r}")
-    return v
+def _rates(alpha, beta) -> tuple[float, float]:
+    """The Baumgarte rates (1/s), finite and non-negative."""
+    return _positive(alpha, "alpha", strict=False), _positive(beta, "beta", strict=False)
 
 
+@_documented
 def closure_residual(model: Model, q, contacts=None) -> np.ndarray:
     """Position residuals ``φ(q)`` of all contacts, concatenated (thesis 9.54 in positions; zero when closed).
 
-    ``φ`` is the position-level form of the contact kinematics ``G v = z θ̇``
-    (9.54): the relative pose of the two contact frames, resolved along the
-    reaction space ``B`` (9.59-9.60), so ``φ̇ = Bᵀ G v``.
+    ``φ`` resolves the relative pose of the contact frames along ``B`` (9.59-9.60): ``φ̇ = Bᵀ G v``.
 
     Parameters
     ----------
-    model : Model
-    q : array_like (nq,)
-    contacts : sequence of Contact, optional
-        Default ``model.contacts``.
+    {model q contacts}
 
     Returns
     -------
@@ -134,28 +111,17 @@ def closure_residual(model: Model, q, contacts=None) -> np.ndarray:
     return np.concatenate([np.atleast_1d(contact_residual(c, pose)) for c in cs])
 
 
+@_documented
 def closure_jacobian(model: Model, q, contacts=None) -> np.ndarray:
     """Closure Jacobian ``J_c = B^T G J`` (``nc × nq``): ``φ̇ = J_c q̇`` on the manifold (thesis 9.54, 9.60).
 
-    ``J`` stacks the body Jacobians (Remark 8); ``Bᵀ G J q̇ = Bᵀ z θ̇ = 0``
-    on the manifold because ``zᵀ B = 0`` (9.60).
-
     Parameters
     ----------
-    model : Model
-    q : array_like (nq,)
-    contacts : sequence of Contact, optional
+    {model q contacts}
 
     Returns
     -------
     ndarray (nc, nq)
-
-    Examples
-    --------
-    >>> from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
-    >>> m = slider_crank_model(); q, qd = slider_crank_state()
-    >>> bool(np.abs(closure_jacobian(m, q) @ qd).max() < 1e-12)
-    True
     """
     cs = _cs(model, contacts)
     d = kinematics(model, q)
@@ -183,24 +149,19 @@ def _weighted_correction(model, q, J, rhs, free):
 
 
 @overflow_checked("q or qd")
+@_documented
 def project_state(model: Model, q, qd, contacts=None, *, fixed=(), tol: float = 1e-12, max_iter: int = 25):
     """Project ``(q, q̇)`` onto the constraint manifold, positions then velocities (thesis 9.54, 9.58, 9.60).
 
-    The velocity step removes the part of ``q̇`` that violates ``Bᵀ G v = 0``
-    (9.54 with 9.60), with the kinetic-energy metric ``H`` (as 9.56-9.58 project
-    the contact velocities with the stacked inertia).
-
-    Positions: Gauss-Newton ``q ← q - J_c^+ φ(q)`` until ``max |φ| < tol``.
-    Velocities: mass-weighted projection onto ``J_c q̇ = 0``.  Coordinates in
-    ``fixed`` (indices into ``q``, e.g. driven joints) are left unchanged.
+    Positions by Gauss-Newton ``q ← q - J_c^+ φ(q)`` until ``max |φ| < tol``; velocities onto
+    ``J_c q̇ = 0`` with the kinetic-energy metric ``H`` (as 9.56-9.58 project contact velocities).
 
     Parameters
     ----------
-    model : Model
-    q, qd : array_like (nq,)
-    contacts : sequence of Contact, optional
-    fixed : sequence of int
-        Coordinates the projection must not change.
+    {model q}
+    qd : array_like (nq,)
+        Joint velocities.
+    {contacts fixed}
     tol : float
         Position tolerance.
     max_iter : int
@@ -225,8 +186,7 @@ def project_state(model: Model, q, qd, contacts=None, *, fixed=(), tol: float = 
     """
     q, qd = _state(model, q, "q"), _state(model, qd, "qd")
     tol = check_tolerance(tol, "tol")
-    if isinstance(max_iter, bool) or not isinstance(max_iter, (int, np.integer)) or max_iter < 1:
-        raise InputError(f"max_iter must be a positive integer, got {max_iter!r}")
+    max_iter = _count(max_iter, "max_iter")
     cs = _cs(model, contacts)
     free = _free(model, fixed)
     if not cs:
@@ -242,21 +202,19 @@ def project_state(model: Model, q, qd, contacts=None, *, fixed=(), tol: float = 
     return q, qd
 
 
+@_documented
 def baumgarte(model: Model, contacts=None, alpha: float = 5.0, beta: float = 5.0, *, fixed=()) -> Callable:
     """A ``stabilize(t, q, qd, qdd)`` hook enforcing ``φ̈ + 2αφ̇ + β²φ = 0`` (Baumgarte; thesis 9.69 stabilised).
 
-    The accelerations from the loop algorithm satisfy ``φ̈ = 0`` (the contact
-    acceleration condition 9.68-9.69); the hook adds the mass-weighted
-    correction ``-H^{-1} J_c^T (J_c H^{-1} J_c^T)^{-1} (2α J_c q̇ + β² φ)``.
+    The loop algorithm's accelerations give ``φ̈ = 0`` (9.68-9.69); the hook adds
+    ``-H^{-1} J_c^T (J_c H^{-1} J_c^T)^{-1} (2α J_c q̇ + β² φ)``.
 
     Parameters
     ----------
-    model : Model
-    contacts : sequence of Contact, optional
+    {model contacts}
     alpha, beta : float
         Damping and stiffness rates (1/s), non-negative.
-    fixed : sequence of int
-        Coordinates left unchanged (driven joints).
+    {fixed}
 
     Returns
     -------
@@ -265,22 +223,18 @@ def baumgarte(model: Model, contacts=None, alpha: float = 5.0, beta: float = 5.0
 
     Examples
     --------
-    On the manifold the hook changes nothing; off it, the corrected
-    accelerations satisfy ``J_c Δq̈ = -(2α φ̇ + β² φ)``:
+    Off the manifold the correction satisfies ``J_c Δq̈ = -(2α φ̇ + β² φ)``:
 
     >>> from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
     >>> m = slider_crank_model(); q, qd = slider_crank_state()
-    >>> hook = baumgarte(m, alpha=5.0, beta=5.0)
-    >>> bool(np.abs(hook(0.0, q, qd, np.zeros(3))).max() < 1e-9)
-    True
     >>> q2 = q + [0.0, 1e-3, 0.0]
-    >>> dqdd = hook(0.0, q2, 0 * qd, np.zeros(3))
+    >>> dqdd = baumgarte(m, alpha=5.0, beta=5.0)(0.0, q2, 0 * qd, np.zeros(3))
     >>> bool(np.allclose(closure_jacobian(m, q2) @ dqdd, -25.0 * closure_residual(m, q2)))
     True
     """
     cs = _cs(model, contacts)
     free = _free(model, fixed)
-    alpha, beta = _rate(alpha, "alpha"), _rate(beta, "beta")
+    alpha, beta = _rates(alpha, beta)
 
     def stabilize(t, q, qd, qdd):
         if not cs:
@@ -294,6 +248,7 @@ def baumgarte(model: Model, contacts=None, alpha: float = 5.0, beta: float = 5.0
     return stabilize
 
 
+@_documented
 def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_ext=None,
                    method: str = "DOP853", rtol: float = 1e-8, atol: float = 1e-10, dt: float | None = None,
                    max_step: float = math.inf, stabilization: str = "projection", alpha: float = 5.0,
@@ -303,73 +258,44 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
                    max_evals: int | None = LOOP_MAX_EVALS) -> SimulationResult:
     """Integrate a closed-loop mechanism with stabilised loop closures (thesis 9.5, 9.65-9.75 in time).
 
-    The accelerations come from the constrained algorithm (open-loop ``u``
-    9.63, contact forces ``F = Γ(Gu - ν)`` 9.71, closed-loop ``a`` 9.73 and
-    ``q̈`` 9.75); positions and velocities are kept on the manifold by the
-    chosen ``stabilization`` (module docstring).
+    The accelerations come from the constrained algorithm (open-loop ``u`` 9.63, contact forces
+    ``F = Γ(Gu - ν)`` 9.71, closed-loop ``a`` 9.73 and ``q̈`` 9.75); the chosen ``stabilization``
+    keeps positions and velocities on the manifold (module docstring).
 
     Parameters
     ----------
     model : Model
         Spanning tree; ``model.contacts`` closes the loops unless ``contacts`` is given.
-    contacts : sequence of Contact, optional
-        The contacts closing the loops (default ``model.contacts``).
     q0, qd0 : array_like (nq,)
-        Initial state (projected onto the constraint manifold first when
-        ``project_initial``; with ``stabilization="none"`` it is used as given).
+        Initial state (projected onto the manifold first when ``project_initial``, unless ``"none"``).
     t_end : float
-    tau, f_ext : as in :func:`planargeo.simulate.simulate`
-    method, rtol, atol, dt, max_step : integrator settings (see :func:`planargeo.simulate.simulate`)
+        Final time (s).
+    {contacts}
+    tau, f_ext, method, rtol, atol, dt, max_step, cond_event, progress, max_steps
+        As for :func:`planargeo.simulate.simulate`.
     stabilization : {"projection", "baumgarte", "both", "none"}
         ``"BDF"`` and ``"LSODA"`` take ``"baumgarte"`` or ``"none"`` (module docstring).
     alpha, beta : float
         Baumgarte parameters (1/s).
     prescribed : dict {joint: qdd}, optional
-        Driven joints (e.g. ``{0: 0.0}`` for a crank at constant speed); their
-        coordinates are not changed by the projection.  Energy is not conserved
-        then (the drive does work).
+        Driven joints (e.g. ``{0: 0.0}``: a crank at constant speed), left alone by the projection.
     tol : float
         Position tolerance of the projection.
     trigger : float
-        The projection runs only when a position or velocity residual exceeds
-        ``trigger`` (each projection restarts the integrator); residuals stay
-        below ``trigger`` plus one step's drift.
+        The projection runs only when a position or velocity residual exceeds ``trigger``.
     project_initial : bool
         Project ``(q0, qd0)`` onto the manifold before starting.
     watch : bool
-        Record ``cond(BᵀGΛ⁻¹GᵀB)`` (9.70-9.72) at every recorded step
-        (``result.cond``) and its excursions above ``cond_event`` as
-        ``"near-singular"`` events (``result.events``; see
-        :mod:`planargeo.simulate.integrate`).  Nearly free: the value of the dynamics
-        evaluation at the accepted state is reused when there is one
-        (the first-same-as-last DOP853, RK45 and RK23), also after a
-        projection that moved ``q`` by ``|Δq|``
-        with ``cond |Δq| < 1e-8``; otherwise
-        :func:`planargeo.algorithms.loops.loop_condition`.
-        A configuration the solver refuses (condition number above
-        :data:`planargeo.algorithms.loops.SINGULAR_COND`, e.g. a folded dead
-        centre) stops the run with a ``"singular"`` event whatever ``watch``.
-    cond_event : float
-        Threshold of the near-singular events.
-    progress : bool or None
-        Progress bar (:func:`planargeo.simulate.progress_enabled`).
-    max_steps : int
-        Step limit of :func:`planargeo.simulate.simulate` (raise it for a deliberate long run).
+        Record ``cond(BᵀGΛ⁻¹GᵀB)`` (9.70-9.72) per step and its near-singular events, reusing
+        the dynamics' value at the accepted state where there is one (DOP853, RK45, RK23).
     max_evals : int or None
-        Budget of evaluations of the constrained dynamics (default :data:`LOOP_MAX_EVALS`, about
-        10 s of work): a run whose first steps extrapolate past it raises
-        :class:`~planargeo.errors.SizeLimitError` at once (e.g. ``RK23`` at ``rtol = 1e-10``, whose
-        order 3 takes about 60 000 evaluations per second of the crank); one that reaches it stops
-        with ``status == "limit"``, keeping what was computed.  Raise it (or None) for a
-        deliberate long run.
+        Budget of evaluations of the constrained dynamics (default :data:`LOOP_MAX_EVALS`).
 
     Returns
     -------
     SimulationResult
-        ``residual`` holds ``[φ(q), J_c q̇]`` per recorded step;
-        ``extra["position_residual"]`` and ``extra["velocity_residual"]`` their
-        maxima per step, ``extra["n_position"]`` the number of position residuals;
-        ``cond`` and ``events`` the watched condition number and the singular events.
+        ``residual`` holds ``[φ(q), J_c q̇]`` per recorded step; ``extra["position_residual"]``,
+        ``extra["velocity_residual"]`` their maxima, ``extra["n_position"]`` the count of ``φ``.
 
     Raises
     ------
@@ -393,7 +319,7 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
         raise InputError(f"stabilization={stabilization!r} cannot be used with method {method!r}: each projection "
                          "restarts a multistep method at order 1 with a tiny step; use stabilization='baumgarte' "
                          "(or 'none') with it, or a one-step method (DOP853, RK45, RK23, Radau, RK4)")
-    alpha, beta = _rate(alpha, "alpha"), _rate(beta, "beta")
+    alpha, beta = _rates(alpha, beta)
     tol, trigger = check_tolerance(tol, "tol"), check_tolerance(trigger, "trigger")
     q0, qd0 = _state(model, q0, "q0"), _state(model, qd0, "qd0")
     cs = _cs(model, contacts)
@@ -426,16 +352,16 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
     use_proj = stabilization in ("projection", "both")
     use_baum = stabilization in ("baumgarte", "both")
 
+    def resid(q, qd):
+        return np.concatenate([closure_residual(model, q, cs), closure_jacobian(model, q, cs) @ qd])
+
     def project(q, qd):
         # on demand: leave the state untouched (no integrator restart) while the
         # residuals are below ``trigger``; otherwise project to ``tol``
-        r = np.concatenate([closure_residual(model, q, cs), closure_jacobian(model, q, cs) @ qd])
+        r = resid(q, qd)
         if r.size == 0 or np.abs(r).max() <= trigger:
             return q, qd
         return project_state(model, q, qd, cs, fixed=fixed, tol=tol)
-
-    def resid(q, qd):
-        return np.concatenate([closure_residual(model, q, cs), closure_jacobian(model, q, cs) @ qd])
 
     if project_initial and stabilization != "none":
         q0, qd0 = project_state(model, q0, qd0, cs, fixed=fixed, tol=tol)
