@@ -1,30 +1,17 @@
 """The picture of a chain's solved state, built natively (no matplotlib): links, poles, forces, inertias.
 
-What the chain explorer shows, from the articulated-body workspace of one state
-(:func:`planargeo.scenes.chain.chain_workspace`): the links and the ground under
-the base, and per body or joint, as the overlays ask,
-
-* the velocity poles ``vᵢ`` (4.5) and acceleration poles ``aᵢ`` (4.6), points;
-* the bias acceleration ``κᵢ`` (a point) and bias force ``pᵢ`` (a line);
-* the joint forces ``fᵢ = Aᵢ aᵢ + dᵢ`` (3.13), lines;
-* the T/U split of each joint: the force ``fᵢ = TᵢQᵢ + Rᵢμᵢ`` (6.38) into its active
-  part along the percussion axis and the reaction through the joint, and the
-  acceleration ``aᵢ = sᵢψᵢ + Uᵢγᵢ`` (6.44);
-* the articulated inertias ``Aᵢ`` (3.38), conics.
-
-Each element carries its symbol (``v₃``), what it is, its equation and its value,
-shown when the pointer rests on it.  A focus fades every element but one link's or
-one joint's.
+From the articulated-body workspace of one state (:func:`planargeo.scenes.chain.chain_workspace`),
+per body or joint as the overlays ask (:data:`LAYERS`): velocity and acceleration poles, bias
+terms, joint forces, their T/U split and the articulated inertias, each with its symbol,
+equation and value shown on hover.  A focus fades every element but one link's or joint's.
 
 Examples
 --------
 >>> from planargeo.mechanics.model import chain_model
 >>> from planargeo.scenes.chain import chain_workspace
->>> m = chain_model(3)
->>> w = chain_workspace(m, [0.3, -0.2, 0.1], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0])
+>>> w = chain_workspace(chain_model(3), [0.3, -0.2, 0.1], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0])
 >>> pic = chain_picture(w, overlays={"velocity poles": True}, view=(-3.5, 3.5, -3.5, 3.5))
->>> d = pic.to_dict()
->>> sorted(e["symbol"] for e in d["elements"] if e["role"] == "twist")
+>>> sorted(e["symbol"] for e in pic.to_dict()["elements"] if e["role"] == "twist")
 ['v₁', 'v₂', 'v₃']
 """
 from __future__ import annotations
@@ -42,29 +29,35 @@ OVERLAYS = ("velocity poles", "acceleration poles", "bias terms", "internal forc
             "T/U split", "articulated inertias")
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
+#: key of the data (its symbol) | overlay | kind | per link or joint | role | colour's role |
+#: equation | unit, and below, the meaning
+_TABLE = """
+f  | internal forces      | line  | joint | wrench   | wrench   | 3.13 | N
+     force the joint passes on to the body outboard
+v  | velocity poles       | point | link  | twist    | twist    | 4.5  | rad/s
+     velocity pole of the link (its instant centre)
+a  | acceleration poles   | point | link  | accel    | accel    | 4.6  | rad/s²
+     acceleration pole of the link
+TQ | T/U split            | line  | joint | wrench   | wrench   | 6.38 | N
+     active part of the joint force, along the percussion axis
+Rμ | T/U split            | line  | joint | reaction | reaction | 6.38 | N
+     reaction part of the joint force, through the joint
+sψ | T/U split            | point | joint | accel    | accel    | 6.44 | rad/s²
+     part of the acceleration along the joint's motion space
+Uγ | T/U split            | point | joint | accel    | reaction | 6.44 | rad/s²
+     reactive part of the acceleration
+κ  | bias terms           | point | link  | accel    | momentum | 3.38 | rad/s²
+     bias acceleration of the link
+p  | bias terms           | line  | link  | momentum | momentum | 3.38 | N
+     bias force of the link
+A  | articulated inertias | conic | link  | inertia  | inertia  | 3.38 |
+     articulated inertia of the link, as a conic
+"""
+_ROWS = _TABLE.strip().splitlines()
 #: (key of the data, overlay, symbol, kind, per body or joint, role, colour, meaning, equation, unit)
-LAYERS = (
-    ("f", "internal forces", "f", "line", "joint", "wrench", COLORS["wrench"],
-     "force the joint passes on to the body outboard", "3.13", "N"),
-    ("v", "velocity poles", "v", "point", "link", "twist", COLORS["twist"],
-     "velocity pole of the link (its instant centre)", "4.5", "rad/s"),
-    ("a", "acceleration poles", "a", "point", "link", "accel", COLORS["accel"],
-     "acceleration pole of the link", "4.6", "rad/s²"),
-    ("TQ", "T/U split", "TQ", "line", "joint", "wrench", COLORS["wrench"],
-     "active part of the joint force, along the percussion axis", "6.38", "N"),
-    ("Rμ", "T/U split", "Rμ", "line", "joint", "reaction", COLORS["reaction"],
-     "reaction part of the joint force, through the joint", "6.38", "N"),
-    ("sψ", "T/U split", "sψ", "point", "joint", "accel", COLORS["accel"],
-     "part of the acceleration along the joint's motion space", "6.44", "rad/s²"),
-    ("Uγ", "T/U split", "Uγ", "point", "joint", "accel", COLORS["reaction"],
-     "reactive part of the acceleration", "6.44", "rad/s²"),
-    ("κ", "bias terms", "κ", "point", "link", "accel", COLORS["momentum"],
-     "bias acceleration of the link", "3.38", "rad/s²"),
-    ("p", "bias terms", "p", "line", "link", "momentum", COLORS["momentum"],
-     "bias force of the link", "3.38", "N"),
-    ("A", "articulated inertias", "A", "conic", "link", "inertia", COLORS["inertia"],
-     "articulated inertia of the link, as a conic", "3.38", ""),
-)
+LAYERS = tuple((key, overlay, key, kind, per, role, COLORS[colour], meaning.strip(), eq, unit)
+               for (key, overlay, kind, per, role, colour, eq, unit), meaning in
+               zip(([c.strip() for c in row.split("|")] for row in _ROWS[::2]), _ROWS[1::2]))
 #: the ground under the base, relative to it (NaN-separated strokes)
 _GROUND = np.vstack([[[-0.4, -0.1], [0.4, -0.1], [np.nan, np.nan]]]
                     + [[[x, -0.1], [x - 0.1, -0.2], [np.nan, np.nan]] for x in np.linspace(-0.35, 0.4, 6)])
@@ -111,8 +104,7 @@ def chain_picture(w, *, overlays: dict, view, split: dict | None = None, focus=N
     size : (int, int)
         Pixels.
     ends : array_like (N, 2), optional
-        The far ends of the links (default: the next joint, the last one reaching one
-        link length beyond its joint along the link).
+        The far ends of the links (default: the next joint; the last one link length on).
     time : float, optional
         The state's time (s), written in the lower right corner.
 

@@ -33,9 +33,9 @@ def plot_curves(x, ys, labels, ax=None, *, xlabel="", ylabel="", title=None, log
     ys : sequence of array_like (n,)
         One curve per entry.
     labels : sequence of str
-        The curves' names (the legend shows them when any is non-empty).
+        The curves' names (a legend when any is non-empty).
     ax : matplotlib.axes.Axes, optional
-        Where to draw (default: the current axes, :func:`~planargeo.draw.style.get_ax`).
+        Where to draw (default: the current axes).
     xlabel, ylabel, title : str
         Axis labels and title.
     logx : bool
@@ -48,17 +48,14 @@ def plot_curves(x, ys, labels, ax=None, *, xlabel="", ylabel="", title=None, log
     Returns
     -------
     list of matplotlib.lines.Line2D
-        The curves.
 
     Examples
     --------
     >>> import matplotlib; matplotlib.use("Agg")
-    >>> import matplotlib.pyplot as plt
-    >>> fig, ax = plt.subplots()
-    >>> arts = plot_curves([0, 1], [[0, 1], [1, 0]], ["up", "down"], ax, legend=dict(loc="center"))
+    >>> from matplotlib.figure import Figure
+    >>> arts = plot_curves([0, 1], [[0, 1], [1, 0]], ["up", "down"], Figure().add_subplot())
     >>> [a.get_label() for a in arts], arts[1].get_linestyle()
     (['up', 'down'], '--')
-    >>> plt.close(fig)
     """
     ax = get_ax(ax)
     arts = _curves(ax, x, ys, labels, title)
@@ -77,9 +74,8 @@ def plot_curves(x, ys, labels, ax=None, *, xlabel="", ylabel="", title=None, log
 def polar_curves(theta, rs, labels, ax=None, *, title=None, rlabel=""):
     """Polar curves ``rs[k](theta)`` on the polar axes ``ax``; ``rlabel`` names the radius.
 
-    The radial tick labels run along 100°; ``rlabel`` goes in the axes' upper-left
-    corner (outside the circle) so that it never sits on a tick label, and the key
-    to the right of the circle; both are the figure's texts, around the round panel.
+    The radial tick labels run along 100°; ``rlabel`` and the key are the figure's texts,
+    upper left and right of the round panel.
 
     Parameters
     ----------
@@ -92,18 +88,18 @@ def polar_curves(theta, rs, labels, ax=None, *, title=None, rlabel=""):
     ax : matplotlib.axes.Axes, optional
         A polar axes (default: the current axes).
     title : str, optional
+        The title.
     rlabel : str
         What the radius measures.
 
     Returns
     -------
     list of matplotlib.lines.Line2D
-        The curves.
 
     Raises
     ------
     InputError
-        If ``ax`` (or the current axes) is not a polar axes.
+        If ``ax`` is not a polar axes.
     """
     ax = get_ax(ax)
     if ax.name != "polar":

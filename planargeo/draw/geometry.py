@@ -1,18 +1,8 @@
 """Drawing geometry without a renderer: poles, clipped lines, conic curves, glyphs.
 
-Everything a picture needs from the projective plane, computed once in Python
-and handed to a renderer as plain coordinates:
-
-* :func:`point_xy`: the Euclidean pole of a homogeneous point, or None when it is
-  ideal (a translation) or beyond the float range;
-* :func:`clip_line`: an infinite line ``[fx, fy, tz]`` cut to a view box;
-* :func:`conic_geometry`: the class of a conic and the affine map that carries
-  a unit curve (circle, hyperbola, parabola) onto it, or its real lines;
-* :func:`conic_curves`: the conic as polylines inside a view box;
-* :func:`arc_glyph`: the 270° rotation arrow drawn around a pole.
-
-No module here imports matplotlib: the page and matplotlib draw the same
-numbers (:mod:`planargeo.draw.picture`).
+What a picture needs from the projective plane, as plain coordinates (no matplotlib here):
+:func:`point_xy`, :func:`clip_line`, :func:`conic_geometry` (the class of a conic and the
+affine map carrying a unit curve onto it), :func:`conic_curves` and :func:`arc_glyph`.
 """
 from __future__ import annotations
 
@@ -57,7 +47,7 @@ def _mat(x, name: str) -> np.ndarray:
 
 
 def point_xy(p) -> np.ndarray | None:
-    """Euclidean ``(x, y)`` of a homogeneous point, or None for an ideal point.
+    """Euclidean ``(x, y)`` of a homogeneous point, or None for an ideal one (or beyond the float range).
 
     Parameters
     ----------
@@ -70,12 +60,8 @@ def point_xy(p) -> np.ndarray | None:
 
     Examples
     --------
-    >>> point_xy([2.0, -1.0, 1.0])
-    array([1., 2.])
-    >>> point_xy([1.0, 0.0, 0.0]) is None
-    True
-    >>> point_xy([1e200, 1.0, 1e-200]) is None   # beyond the float range: drawn as ideal
-    True
+    >>> point_xy([2.0, -1.0, 1.0]), point_xy([1.0, 0.0, 0.0]), point_xy([1e200, 1.0, 1e-200])
+    (array([1., 2.]), None, None)
     """
     p = np.asarray(p, dtype=float)
     if p[2] == 0.0:
@@ -87,11 +73,9 @@ def point_xy(p) -> np.ndarray | None:
 
 
 def clip_line(line, box) -> np.ndarray | None:
-    """Endpoints ``(2, 2)`` of the infinite line ``[fx, fy, tz]`` inside ``box``.
+    """Endpoints ``(2, 2)`` of the infinite line ``[fx, fy, tz]`` inside ``box``, on its boundary.
 
-    ``box = (x0, x1, y0, y1)``.  Returns None if the line misses the box or is
-    the line at infinity.  The points satisfy ``tz + y fx - x fy = 0`` (4.27)
-    and lie on the boundary of the box.
+    The points satisfy ``tz + y fx - x fy = 0`` (4.27).
 
     Parameters
     ----------
@@ -103,6 +87,7 @@ def clip_line(line, box) -> np.ndarray | None:
     Returns
     -------
     numpy.ndarray or None
+        None if the line misses the box or is the line at infinity.
 
     Examples
     --------
@@ -165,6 +150,7 @@ def euclidean_conic(C) -> np.ndarray:
     Parameters
     ----------
     C : array_like (3, 3)
+        Conic matrix (package coordinates).
 
     Returns
     -------
@@ -186,26 +172,20 @@ def _line_from_euclid(a, b, c):
 def conic_geometry(C, *, rtol: float = 1e-9) -> dict:
     """How to draw the conic ``C`` (package coordinates).
 
-    Returns a dict with ``kind`` in {"ellipse", "hyperbola", "parabola",
-    "lines", "point", "empty"}, ``imaginary`` (True when ``C`` has no real
-    points and the sign-flipped conic is returned instead: the package
-    convention for inertias), and either ``affine`` (3×3 Euclidean matrix
-    mapping the unit curve of :data:`UNIT_CURVES` onto the curve), ``lines``
-    (list of package lines) or ``point`` (x, y).
-
-    The class tests use a relative tolerance ``rtol``: this is drawing, not
-    arithmetic.
-
     Parameters
     ----------
     C : array_like (3, 3)
-        Symmetric conic matrix (package coordinates).
+        Symmetric conic matrix.
     rtol : float
-        Relative tolerance of the class tests.
+        Relative tolerance of the class tests (this is drawing, not arithmetic).
 
     Returns
     -------
     dict
+        ``kind`` ("ellipse", "hyperbola", "parabola", "lines", "point" or "empty"),
+        ``imaginary`` (no real points: the sign-flipped conic is described instead, the package
+        convention for inertias), and ``affine`` (the 3×3 Euclidean map of the unit curve of
+        :data:`UNIT_CURVES` onto the curve), ``lines`` (package lines) or ``point``.
 
     Examples
     --------
@@ -312,13 +292,10 @@ def _runs(xy: np.ndarray, keep: np.ndarray) -> list[np.ndarray]:
 
 
 def conic_curves(C, box, geometry: dict | None = None) -> list[np.ndarray]:
-    """The real curve of ``C`` as polylines ``(n, 2)`` reaching across the view ``box``.
+    """The real curve of ``C`` (or of its real stand-in) as polylines ``(n, 2)`` across ``box``.
 
-    An ellipse is one closed polyline; a hyperbola or a parabola is cut into the
-    runs that pass through the box (each run goes one sample beyond the box, so it
-    reaches the edge); a degenerate conic gives its real lines clipped to the box.
-    An imaginary conic gives its package stand-in, the sign-flipped real conic
-    (:func:`conic_geometry`).
+    An ellipse is one closed polyline; a hyperbola or parabola the runs through the box (each
+    one sample beyond it); a degenerate conic its real lines, clipped.
 
     Parameters
     ----------
@@ -335,8 +312,6 @@ def conic_curves(C, box, geometry: dict | None = None) -> list[np.ndarray]:
 
     Examples
     --------
-    >>> [c.shape for c in conic_curves(np.diag([1.0, 1.0, -1.0]), (-2, 2, -2, 2))]
-    [(181, 2)]
     >>> len(conic_curves(np.diag([1.0, -1.0, -1.0]), (-3, 3, -3, 3)))   # two branches
     2
     """
@@ -358,9 +333,7 @@ def conic_curves(C, box, geometry: dict | None = None) -> list[np.ndarray]:
 
 
 def arc_glyph(radius: float, ccw: bool, npts: int = 40) -> tuple[np.ndarray, np.ndarray]:
-    """A rotation glyph about the origin: a 270° arc and the triangle of its head.
-
-    Both in the units of ``radius`` (pixels in a picture), y up.
+    """A rotation glyph about the origin: a 270° arc and its head (in the units of ``radius``, y up).
 
     Parameters
     ----------

@@ -1,24 +1,15 @@
 """One element drawn for a notebook: a point, line, conic, twist, wrench or inertia as a picture.
 
-A value shown at the end of a notebook cell is drawn, the way the explorers and the
-gallery draw it, as a :class:`~planargeo.draw.picture.Picture` (its geometry done once
-there: ideal points as edge arrows, the line at infinity as a couple glyph, an
-imaginary conic by its real partner, dashed, thesis 10.2.3), rendered by the one SVG
-writer, matplotlib (:func:`planargeo.draw.render.picture_bytes`).  The view is a
-square around the element and the origin ``O`` (grey cross, for orientation); the
-title names the element with its numbers.
-
-The math layers do not draw: ``import planargeo`` registers :func:`element_svg` with
-IPython's display formatter when it runs inside IPython (:func:`register`).
+A value at the end of a notebook cell is drawn as the explorers draw it, as a
+:class:`~planargeo.draw.picture.Picture` in a square view around it and the origin ``O``,
+titled with its numbers, and written as SVG by matplotlib.  ``import planargeo`` registers
+:func:`element_svg` with IPython when it runs inside it (:func:`register`).
 
 Examples
 --------
 >>> from planargeo.screws.twists import Twist
->>> pic = element_picture(Twist.rotation((1.0, 2.0), 3.0))
->>> pic.title
+>>> element_picture(Twist.rotation((1.0, 2.0), 3.0)).title
 'v: pole (1, 2), ω = 3'
->>> [p["p"] for p in next(e for e in pic.elements if e["id"] == "v")["parts"]]
-['mark', 'glyph', 'text']
 """
 from __future__ import annotations
 
@@ -57,8 +48,7 @@ def _pair(xy) -> str:
 
 
 def _frame(points, title: str, size, minimum: float = 1.0) -> Picture:
-    """A square view around the finite ``points`` and the origin, at least ``2 minimum`` wide,
-    with the origin marked."""
+    """A square view around the finite ``points`` and the marked origin, at least ``2 minimum`` wide."""
     P = np.vstack([np.zeros((1, 2)), np.asarray(points, float).reshape(-1, 2)])
     P = P[np.all(np.isfinite(P), axis=1)]
     lo, hi = P.min(axis=0), P.max(axis=0)
@@ -96,7 +86,6 @@ def element_picture(obj, *, size=SIZE) -> Picture:
     Returns
     -------
     Picture
-        The element in a square view around it and the origin, titled with its numbers.
 
     Raises
     ------
@@ -202,17 +191,16 @@ def _conic(C, name: str, inertia: bool, size) -> Picture:
 
 
 def element_svg(obj) -> str | None:
-    """The SVG of :func:`element_picture`, drawn by matplotlib; None for a batch (text is shown).
+    """The SVG of :func:`element_picture` (a Picture drawn as it is); None for a batch.
 
     Parameters
     ----------
     obj : Point, Line, Conic, Twist, Wrench, Inertia or Picture
-        What to draw (a :class:`Picture` is drawn as it is).
+        What to draw.
 
     Returns
     -------
     str or None
-        An SVG document.
 
     Examples
     --------
@@ -248,9 +236,8 @@ def register(shell) -> None:
     --------
     >>> from IPython.core.interactiveshell import InteractiveShell
     >>> from planargeo.geometry.elements import Point
-    >>> register(InteractiveShell.instance())
-    >>> data, _ = InteractiveShell.instance().display_formatter.format(Point.from_xy(1.0, 2.0))
-    >>> "image/svg+xml" in data
+    >>> register(shell := InteractiveShell.instance())
+    >>> "image/svg+xml" in shell.display_formatter.format(Point.from_xy(1.0, 2.0))[0]
     True
     """
     svg = shell.display_formatter.formatters["image/svg+xml"]

@@ -1,17 +1,14 @@
 """The matplotlib renderer of a :class:`~planargeo.draw.picture.Picture` (exports, stored pictures).
 
-It draws the picture's plain data through matplotlib's public API, with no geometry
-of its own: what the page shows live, this draws into SVG, PNG and the pictures
-stored in notebooks.  Pixel sizes of the picture become points at 100 dpi
-(:data:`~planargeo.draw.picture.PX_PER_PT`).
+It draws the picture's plain data with no geometry of its own, pixel sizes as points at
+100 dpi (:data:`~planargeo.draw.picture.PX_PER_PT`), as the page does.
 
 Examples
 --------
 >>> from planargeo.draw.picture import Picture
 >>> pic = Picture((-1, 1, -1, 1), size=(200, 200))
 >>> pic.line("f", [1.0, 0.0, 0.0], symbol="f")
->>> fig = figure(pic.to_dict())
->>> fig.get_size_inches().tolist()
+>>> figure(pic.to_dict()).get_size_inches().tolist()
 [2.0, 2.0]
 """
 from __future__ import annotations
@@ -36,24 +33,20 @@ _GLYPH_PX, _ARROW_PX, _HEAD_PX = 1.6, 1.9, 8.0
 def draw_picture(pic: dict, ax=None) -> list:
     """Draw the picture ``pic`` (:meth:`Picture.to_dict`) on the axes ``ax``.
 
-    Every artist's ``gid`` is its element's id (``"<id>:label"`` for a label), as in
-    the page, where each element is a group with that id.  Fixed pixel sizes (markers,
-    rotation glyphs, arrows, label offsets) have the page's geometry
-    (``planargeo/widgets/canvas.js``), so both renderers put everything at the same
-    pixel at the picture's size.
+    Every artist's ``gid`` is its element's id (``"<id>:label"`` for a label), and fixed pixel
+    sizes have the page's geometry (``planargeo/widgets/canvas.js``).
 
     Parameters
     ----------
     pic : dict
         A picture's data.
     ax : matplotlib.axes.Axes, optional
-        Axes whose position already matches the picture's plot area (default: the current axes).
+        Axes placed on the picture's plot area (default: the current axes).
 
     Returns
     -------
     list of (str, int, matplotlib.artist.Artist)
-        Each drawn artist with its element's id and the index of the part it draws
-        (a rotation glyph is two artists: the arc and its head).
+        Each drawn artist with its element's id and the index of the part it draws.
     """
     ax = get_ax(ax)
     x0, x1, y0, y1 = pic["box"]
@@ -154,8 +147,7 @@ def figure(pic: dict, artists: list | None = None) -> Figure:
     pic : dict
         A picture's data (:meth:`Picture.to_dict`).
     artists : list, optional
-        If given, the drawn artists are appended to it, as :func:`draw_picture` returns them
-        (``(element id, part index, artist)``).
+        If given, the drawn artists are appended to it (as :func:`draw_picture` returns them).
 
     Returns
     -------

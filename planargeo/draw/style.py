@@ -18,15 +18,9 @@ role           object                          look
 ``ground``     ground / fixed frame            dark grey hatching
 =============  ==============================  ==================================
 
-A sum keeps the role of its terms (a sum of twists is a twist, a sum of
-wrenches is a wrench): ``v₃ = v₁ + v₂`` or ``f₃ = f₁ + f₂`` is drawn in the
-same colour, told apart by weight (:data:`SUM`: a heavier line, a larger
-diamond marker).  :func:`legend` makes a key of roles for one panel.
-
-Use :func:`rc_context` to get the package's fixed fonts and sizes; gallery
-output is reproducible only inside that context.  Every function that draws on a
-matplotlib axes takes what it draws first and ``ax=None`` after it (None: the
-current axes, :func:`get_ax`).
+A sum keeps the role of its terms, told apart by weight (:data:`SUM`).  Gallery output is
+reproducible only inside :func:`rc_context` (fixed fonts and sizes).  Functions that draw on
+an axes take what they draw first and ``ax=None`` (the current axes, :func:`get_ax`) after it.
 """
 from __future__ import annotations
 
@@ -87,9 +81,7 @@ STYLES = {
     "inertia": dict(color=COLORS["inertia"], linewidth=LINEWIDTHS["inertia"], linestyle=(0, (5, 3))),
 }
 
-#: Emphasis of a sum (same colour as its terms, heavier): the width of a sum's line
-#: (``"line"``, points) and the marker of a sum's pole (``"point"``), in pictures
-#: (:mod:`planargeo.draw.sums`) and legend keys (:func:`legend`).
+#: Emphasis of a sum (same colour as its terms, heavier): its line width (points) and pole marker.
 SUM = {
     "line": dict(linewidth=3.4),
     "point": dict(marker="D", markersize=6.5),
@@ -97,18 +89,14 @@ SUM = {
 
 #: Smallest text on screen, in pixels at the displayed size (explorers, gallery, legibility checks).
 MIN_TEXT_PX = 11.0
-#: The one text size of every planargeo drawing, explorers and gallery alike (points): labels,
-#: tick labels, legends, dimension and chart texts.  A gallery SVG at its natural size in a
-#: browser shows a point as 96/72 px, so 8.25 pt is 11.0 px there (:data:`MIN_TEXT_PX`); an
-#: explorer's picture (100 dpi, shown at native size) shows it at 11.5 px.
+#: The one text size of every planargeo drawing (points): 11.0 px in a gallery SVG at its natural
+#: size (96/72 px per point, :data:`MIN_TEXT_PX`), 11.5 px in an explorer's picture (100 dpi).
 LABEL_PT = 8.25
 #: Titles (points), a little larger than :data:`LABEL_PT`.
 TITLE_PT = 8.75
-#: Explorers: resolution (figure pixels per inch; shown at native size), the narrowest
-#: figure (pixels; the notebook column), tick-label size (points, :data:`LABEL_PT`).
+#: Explorers: resolution (pixels per inch, shown at native size), the narrowest figure (pixels)
 EXPLORER_DPI = 100
 EXPLORER_MIN_WIDTH_PX = 560
-EXPLORER_TICK_PT = LABEL_PT
 
 #: Fixed rcParams: fonts, sizes (all :data:`LABEL_PT`) and SVG determinism (column width ≈ 3.4 in).
 RC = {
@@ -130,9 +118,8 @@ RC = {
     "axes.prop_cycle": None,  # filled in below
 }
 
-#: Column width (inches) and default figure size.
+#: Column width (inches).
 COLUMN_WIDTH = 3.4
-FIGSIZE = (COLUMN_WIDTH, 2.8)
 
 
 def _rc() -> dict:
@@ -146,7 +133,7 @@ def _rc() -> dict:
 
 @contextlib.contextmanager
 def rc_context():
-    """Context with the package's fixed fonts, sizes and SVG settings.
+    """Context with the package's fixed fonts, sizes and SVG settings (:data:`RC`).
 
     Yields
     ------
@@ -178,7 +165,6 @@ def style(role: str, **overrides) -> dict:
     Returns
     -------
     dict
-        Matplotlib's keyword arguments for an element in that role.
 
     Raises
     ------
@@ -187,10 +173,8 @@ def style(role: str, **overrides) -> dict:
 
     Examples
     --------
-    >>> style("wrench", linewidth=3)["linewidth"]
-    3
-    >>> style("twist")["color"]
-    '#0072B2'
+    >>> style("wrench", linewidth=3)["linewidth"], style("twist")["color"]
+    (3, '#0072B2')
     """
     return _entry(STYLES, role, "role", overrides)
 
@@ -208,7 +192,6 @@ def sum_style(kind: str, **overrides) -> dict:
     Returns
     -------
     dict
-        Matplotlib's keyword arguments that mark a sum: a wider line, or a diamond marker.
 
     Raises
     ------
@@ -217,8 +200,6 @@ def sum_style(kind: str, **overrides) -> dict:
 
     Examples
     --------
-    >>> sum_style("line")["linewidth"] > STYLES["wrench"]["linewidth"]
-    True
     >>> sum_style("point")["marker"]
     'D'
     """
@@ -226,15 +207,12 @@ def sum_style(kind: str, **overrides) -> dict:
 
 
 def legend(items, ax=None, *, loc="lower right", **kw):
-    """A key of roles for one panel.
-
-    ``items`` are ``(role, kind, text)`` with ``kind`` one of "point", "line",
-    "sum-point", "sum-line"; line roles use their style's dash pattern.
+    """A key of roles for one panel: ``items`` are ``(role, kind, text)``.
 
     Parameters
     ----------
     items : iterable of (str, str, str)
-        ``(role, kind, text)``.
+        ``(role, kind, text)``, ``kind`` one of "point", "line", "sum-point", "sum-line".
     ax : matplotlib.axes.Axes, optional
         Default: the current axes.
     loc : str
@@ -253,14 +231,11 @@ def legend(items, ax=None, *, loc="lower right", **kw):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")
-    >>> import matplotlib.pyplot as plt
-    >>> fig, ax = plt.subplots()
-    >>> leg = legend([("twist", "point", "twist"), ("wrench", "sum-line", "sum")], ax)
+    >>> import matplotlib; matplotlib.use("Agg")
+    >>> from matplotlib.figure import Figure
+    >>> leg = legend([("twist", "point", "twist"), ("wrench", "sum-line", "sum")], Figure().gca())
     >>> [t.get_text() for t in leg.get_texts()]
     ['twist', 'sum']
-    >>> plt.close(fig)
     """
     from matplotlib.lines import Line2D
 
@@ -296,7 +271,7 @@ def setup_axes(limits=None, ax=None, *, grid=False, axis_off=True):
     limits : (float, float, float, float), optional
         ``(x0, x1, y0, y1)``.
     ax : matplotlib.axes.Axes, optional
-        The axes (default: the current axes, :func:`get_ax`).
+        The axes (default: the current axes).
     grid : bool
         Draw a grid.
     axis_off : bool
@@ -305,7 +280,6 @@ def setup_axes(limits=None, ax=None, *, grid=False, axis_off=True):
     Returns
     -------
     matplotlib.axes.Axes
-        The axes set up.
     """
     ax = get_ax(ax)
     ax.set_aspect("equal", adjustable="box")
@@ -327,6 +301,7 @@ def get_ax(ax=None):
     Parameters
     ----------
     ax : matplotlib.axes.Axes, optional
+        The axes.
 
     Returns
     -------
