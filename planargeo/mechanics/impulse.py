@@ -1,26 +1,11 @@
 """A body at rest struck by a short blow: velocity change, reaction impulse, apparent mass (thesis 5.4, 6.3.2).
 
-A blow is a force so short that nothing moves while it acts: only its time
-integral, the *impulse* ``ĵ`` (a wrench ``[Jx, Jy, Jz]``, units N·s), matters.
-Integrating the equations of motion of a body at rest (6.63) over the blow
-gives ``I Δv = ĵ + ĵ_R`` with ``ĵ_R`` the reaction impulse of the support.
-
-* **Free body** (no support): ``Δv = I⁻¹ ĵ``, the *percussion pole* of the
-  blow's line (5.64–5.68 read backwards): the body starts turning about the
-  point whose axis of percussion is the line of the blow.
-* **Held by a joint** ``s`` (a grip pivot, a door hinge): the joint allows only
-  ``Δv = s ψ̂``, and as in 6.93 (applied-wrench sign, see ``docs/errata.md``)
-  ``Δv = s (sᵀIs)⁻¹ sᵀ ĵ``; the support answers with
-  ``ĵ_R = I Δv − ĵ = −R Uᵀ ĵ`` (6.38, 6.61b): zero exactly when the blow lies in
-  the percussion space ``T`` — for a pivot, on its axis of percussion, which
-  crosses the line pivot–centre of mass at the *centre of percussion*
-  ``l = d + ρ²/d`` from the pivot (5.67).
-
-The *apparent mass* along a line (figure 3.3) is the impulse per unit velocity
-change of the struck point along the line: ``m_app = 1 / (uᵀ M u)`` with ``u``
-the unit-force wrench on the line and ``M`` the body's mobility (``I⁻¹`` free,
-the effective mobility ``s (sᵀIs)⁻¹ sᵀ`` of 6.93 when held).  A blow along a
-line through the pivot moves nothing: its apparent mass is infinite.
+Only the blow's impulse ``ĵ`` (a wrench, N·s) matters: ``I Δv = ĵ + ĵ_R`` (6.63).  Free,
+``Δv = I⁻¹ ĵ``: the body starts turning about the percussion pole of the blow's line (5.64–5.68).
+Held by a joint ``s``, ``Δv = s (sᵀIs)⁻¹ sᵀ ĵ`` (6.93, applied-wrench sign) and the support answers
+with ``ĵ_R = −R Uᵀ ĵ`` (6.38, 6.61b), zero for a blow on the pivot's axis of percussion, through
+the centre of percussion ``l = d + ρ²/d`` (5.67).  The apparent mass along a line (figure 3.3) is
+``1 / (uᵀ M u)``, ``u`` the unit force on the line and ``M`` the body's (effective) mobility.
 """
 from __future__ import annotations
 
@@ -28,19 +13,31 @@ import math
 
 import numpy as np
 
-from planargeo._validate import as_array, as_scalar, as_vec3, as_xy
+from planargeo._validate import as_array, as_scalar
 from planargeo.errors import DegenerateGeometryError, NumericOverflowError, ShapeError
+from planargeo.geometry._docs import entries
 from planargeo.mechanics.subspaces import effective_mobility
 from planargeo.screws.inertia import centre_of_mass, mobility, radius_of_gyration
 
 __all__ = ["impulse_response", "apparent_mass", "centre_of_percussion", "moved_points"]
 
+_documented = entries({
+    "I": "I : array_like, shape (3, 3)\n    The body's inertia at the origin (symmetric; definite for a free body).",
+    "s": "s : array_like, shape (3, k) or (3,), optional\n    Motion space of the support (a pivot ``[y, -x, 1]``); None: a free body.",
+})
+
+
+def _single(x, name: str, n: int = 3) -> np.ndarray:
+    """One vector of shape ``(n,)``, or a named error."""
+    a = as_array(x, name, (n,))
+    if a.shape != (n,):
+        raise ShapeError(f"{name} must have shape ({n},), got {a.shape}")
+    return a
+
 
 def _unit_force(line) -> np.ndarray:
     """``line`` scaled to a unit force (``fx² + fy² = 1``); the line at infinity is refused."""
-    u = as_vec3(line, "line")
-    if u.shape != (3,):
-        raise ShapeError(f"line must have shape (3,), got {u.shape}")
+    u = _single(line, "line")
     F = math.hypot(float(u[0]), float(u[1]))
     if not F > 0:
         raise DegenerateGeometryError(
@@ -48,24 +45,21 @@ def _unit_force(line) -> np.ndarray:
     return u / F
 
 
+@_documented
 def impulse_response(I, impulse, s=None) -> tuple[np.ndarray, np.ndarray]:
     """Velocity change and reaction impulse of a body at rest struck by ``impulse`` (thesis 6.63, 6.93, 6.38).
 
     Parameters
     ----------
-    I : array_like, shape (3, 3)
-        The body's inertia at the origin (symmetric; positive definite when
-        ``s`` is None).
+    {I}
     impulse : array_like, shape (3,)
-        The blow's impulse wrench ``ĵ = [Jx, Jy, Jz]`` (N·s; its line is the
-        line of the blow).
-    s : array_like, shape (3, k) or (3,), optional
-        Motion space of the support (a pivot ``[y, -x, 1]``); None: a free body.
+        The blow's impulse wrench ``ĵ = [Jx, Jy, Jz]`` (N·s; its line is the line of the blow).
+    {s}
 
     Returns
     -------
     dv : ndarray, shape (3,)
-        The velocity twist just after the blow (its pole is the velocity pole).
+        The velocity twist just after the blow.
     reaction : ndarray, shape (3,)
         The support's reaction impulse ``I Δv − ĵ`` (zero for a free body).
 
@@ -80,28 +74,17 @@ def impulse_response(I, impulse, s=None) -> tuple[np.ndarray, np.ndarray]:
     SingularConfigurationError
         ``sᵀIs`` singular (e.g. a point mass pinned at its own place).
 
-    Notes
-    -----
-    Both results are linear in ``ĵ``; a blow whose largest entry lies outside
-    ``(2⁻⁵⁰⁰, 2⁵⁰⁰)`` is scaled by a power of two (exactly) before the products
-    and the results scaled back, so a blow of 1e-320 N·s or 1e300 N·s gives the
-    digits of a blow of 1 N·s, rounded once.
-
     Examples
     --------
-    A uniform rod (m = 3, L = 2, along x from the pivot at the origin) struck
-    across at x = 1 by a unit impulse: ``ω = J d / (m L²/3) = 0.25`` and the pivot
-    pulls back by ``J (3d/(2L) − 1) = −0.25``.
+    A uniform rod (m = 3, L = 2) pivoted at the origin, struck across at x = 1 by a unit impulse:
+    ``ω = J d / (m L²/3) = 0.25``, and the pivot pulls back by ``−0.25``.
 
     >>> from planargeo.screws.twists import inertia_matrix
-    >>> I = inertia_matrix(3.0, [1.0, 0.0], 1.0)
-    >>> dv, jr = impulse_response(I, [0.0, 1.0, 1.0], [0.0, 0.0, 1.0])
+    >>> dv, jr = impulse_response(inertia_matrix(3.0, [1.0, 0.0], 1.0), [0.0, 1.0, 1.0], [0.0, 0.0, 1.0])
     >>> dv + 0.0, jr + 0.0
     (array([0.  , 0.  , 0.25]), array([ 0.  , -0.25,  0.  ]))
     """
-    j = as_vec3(impulse, "impulse")
-    if j.shape != (3,):
-        raise ShapeError(f"impulse must have shape (3,), got {j.shape}")
+    j = _single(impulse, "impulse")
     M = mobility(I) if s is None else effective_mobility(I, s)
     # Δv and ĵᵣ are linear in ĵ: computed for ĵ scaled by 2^-e (exact) to a largest entry in [0.5, 1)
     # when it lies outside (2^-500, 2^500), then scaled back; a subnormal or huge blow keeps its digits
@@ -120,26 +103,23 @@ def impulse_response(I, impulse, s=None) -> tuple[np.ndarray, np.ndarray]:
     return dv + 0.0, reaction + 0.0
 
 
+@_documented
 def apparent_mass(I, line, s=None) -> float:
-    """Apparent mass of a body at rest along a force line (thesis figure 3.3, 6.93).
+    """Apparent mass ``1 / (uᵀ M u)`` of a body at rest along a force line (thesis figure 3.3, 6.93).
 
-    ``m_app = 1 / (uᵀ M u)``: the impulse along ``line`` per unit velocity change
-    of the body's point on the line, measured along the line.
+    The impulse along ``line`` per unit velocity change of the body's point on it, along it.
 
     Parameters
     ----------
-    I : array_like, shape (3, 3)
-        The body's inertia at the origin.
+    {I}
     line : array_like, shape (3,)
         The line (any non-zero multiple of a force wrench on it).
-    s : array_like, shape (3, k) or (3,), optional
-        Motion space of the support; None: a free body.
+    {s}
 
     Returns
     -------
     float
-        The apparent mass (kg); ``math.inf`` when the support takes the whole
-        blow (a line through a pivot).
+        The apparent mass (kg); ``math.inf`` when the support takes the whole blow.
 
     Raises
     ------
@@ -150,8 +130,7 @@ def apparent_mass(I, line, s=None) -> float:
 
     Examples
     --------
-    A uniform rod (m = 3, L = 2) pivoted at one end, struck across at its tip:
-    ``J_P / L² = (m L²/3) / L² = m/3 = 1``; free, ``1 / (1/m + (L/2)²/J_c) = m/4``.
+    A uniform rod (m = 3, L = 2) pivoted at one end, struck across at its tip: ``m/3``; free, ``m/4``.
 
     >>> from planargeo.screws.twists import inertia_matrix
     >>> I = inertia_matrix(3.0, [1.0, 0.0], 1.0)
@@ -168,11 +147,9 @@ def apparent_mass(I, line, s=None) -> float:
 
 
 def centre_of_percussion(I, pivot) -> np.ndarray:
-    """The centre of percussion of a pivot: where its axis of percussion crosses the line pivot–centre of mass (5.67).
+    """The centre of percussion of a pivot, ``l = d + ρ²/d`` from it beyond the centre of mass (5.67).
 
-    At ``l = d + ρ²/d`` from the pivot, on the far side of the centre of mass
-    (``d``: pivot to centre of mass, ``ρ``: radius of gyration).  A blow there,
-    across that line, leaves the pivot without any reaction impulse.
+    A blow there, across the line pivot–centre of mass, leaves the pivot without reaction.
 
     Parameters
     ----------
@@ -198,9 +175,7 @@ def centre_of_percussion(I, pivot) -> np.ndarray:
     >>> centre_of_percussion(inertia_matrix(3.0, [1.0, 0.0], 1.0), (0.0, 0.0))   # 2L/3 for a rod of L = 2
     array([1.33333333, 0.        ])
     """
-    P = as_xy(pivot, "pivot")
-    if P.shape != (2,):
-        raise ShapeError(f"pivot must have shape (2,), got {P.shape}")
+    P = _single(pivot, "pivot", 2)
     c = np.asarray(centre_of_mass(I), dtype=float)          # raises for a massless "inertia"
     rho = float(radius_of_gyration(I))
     d = c - P
@@ -214,19 +189,14 @@ def centre_of_percussion(I, pivot) -> np.ndarray:
 def moved_points(dv, points, t: float) -> np.ndarray:
     """Where body points are ``t`` seconds after the blow, the body moving with the constant twist ``dv``.
 
-    ``ṗ = v + ω J p`` (``J`` the quarter turn) from ``p(0) = p₀``: the turn by ``θ = ω t``
-    about the velocity pole, or the shift ``v t`` of a translation, written without the
-    pole (which lies beyond double precision's range when ``ω`` is subnormal)::
-
-        p(t) = R(θ) p₀ + t [[S, −K], [K, S]] v,   S = sin θ / θ,   K = (1 − cos θ) / θ
-
-    with ``S → 1``, ``K → θ/2`` as ``θ → 0``: every finite ``dv`` and ``t`` give finite points
-    near finite ones, continuous from a turn to a translation.
+    ``p(t) = R(θ) p₀ + t [[S, −K], [K, S]] v`` with ``θ = ω t``, ``S = sin θ / θ``,
+    ``K = (1 − cos θ) / θ`` (``S → 1``, ``K → θ/2`` as ``θ → 0``): written without the pole, so
+    finite for every finite ``dv`` and ``t``, continuous from a turn to a translation.
 
     Parameters
     ----------
     dv : array_like, shape (3,)
-        The twist ``[vx, vy, ω]`` (velocity of the point at the origin, angular velocity).
+        The twist ``[vx, vy, ω]``.
     points : array_like, shape (n, 2) or (2,)
         Body points at ``t = 0``.
     t : float
@@ -245,17 +215,13 @@ def moved_points(dv, points, t: float) -> np.ndarray:
 
     Examples
     --------
-    A quarter turn about the pole (1, 0) (``ω = 1``, ``v = (0, −1)``), and a translation:
+    A quarter turn about the pole (1, 0) (``ω = 1``, ``v = (0, −1)``):
 
     >>> moved_points([0.0, -1.0, 1.0], [[2.0, 0.0], [1.0, 0.0]], math.pi / 2).round(12) + 0.0
     array([[1., 1.],
            [1., 0.]])
-    >>> moved_points([2.0, 0.0, 0.0], [0.0, 1.0], 0.5)
-    array([1., 1.])
     """
-    tw = as_vec3(dv, "dv")
-    if tw.shape != (3,):
-        raise ShapeError(f"dv must have shape (3,), got {tw.shape}")
+    tw = _single(dv, "dv")
     P = as_array(points, "points")
     if P.shape[-1:] != (2,) or P.ndim > 2:
         raise ShapeError(f"points must have shape (n, 2) or (2,), got {P.shape}")
