@@ -1,31 +1,16 @@
-"""planargeo: planar rigid-body dynamics made visible.
+"""planargeo: planar rigid-body dynamics made visible (after the thesis *Projective Articulated Dynamics*).
 
-Twists are points, wrenches are lines, inertias are conics that map one to the
-other (after the thesis *Projective Articulated Dynamics*).  The mathematics is
-a set of functions on arrays that broadcast over leading dimensions; the
-classes (:class:`Point`, :class:`Line`, :class:`Conic`, :class:`Twist`,
-:class:`Wrench`, :class:`Inertia`) are thin wrappers over them.
+Twists are points, wrenches are lines, inertias are conics that map one to the other; functions
+on arrays that broadcast over leading dimensions, with thin classes (:class:`Point`,
+:class:`Twist`, :class:`Inertia`...) over them.  The main jobs load on first use, so ``import
+planargeo`` imports neither numba, scipy nor matplotlib: :func:`forward_dynamics` (thesis 3.6),
+:func:`inverse_dynamics` (3.9), :func:`simulate`, :func:`scene` and :mod:`scenes`.
 
 >>> import planargeo as pg
->>> v = pg.Twist.rotation((1.0, 2.0), 3.0)
->>> v.pole
+>>> pg.Twist.rotation((1.0, 2.0), 3.0).pole
 Point(x=1, y=2)
->>> f = pg.Wrench.force((0.0, 2.0), (1.0, 0.0))   # a force through the pole does no work
->>> float(v @ f)
-0.0
-
-The main jobs are one attribute away, loaded on first use (so ``import planargeo``
-imports neither numba nor scipy): :func:`forward_dynamics` (the articulated-body
-algorithm, thesis 3.6), :func:`inverse_dynamics` (recursive Newton-Euler, 3.9),
-:func:`simulate` (time integration), :func:`chain_model` (a chain of uniform links)
-and the named scenes, :func:`scene` (build one) and :mod:`scenes` (the registry).
-
->>> model = pg.chain_model(1)                # a uniform rod pinned at one end
->>> pg.forward_dynamics(model, [0.0], [0.0], [0.0])    # released horizontally: -3g/(2L)
+>>> pg.forward_dynamics(pg.chain_model(1), [0.0], [0.0], [0.0])    # a rod released horizontally: -3g/(2L)
 array([-14.715])
-
-Drawing (:mod:`planargeo.draw`) and widgets (:mod:`planargeo.widgets`) are
-imported on demand; importing ``planargeo`` never imports matplotlib.
 """
 from __future__ import annotations
 
@@ -98,12 +83,7 @@ def __getattr__(name: str):
 
 
 class _CallableSubpackage(type(simulate)):
-    """The subpackage :mod:`planargeo.simulate`, callable as its main function.
-
-    ``pg.simulate(model, q0, qd0, t_end, ...)`` is
-    :func:`planargeo.simulate.integrate.simulate`, while ``planargeo.simulate.integrate`` and
-    ``planargeo.simulate.loops`` stay the subpackage's modules (one name, both meanings).
-    """
+    """The subpackage :mod:`planargeo.simulate`, callable as :func:`planargeo.simulate.integrate.simulate`."""
 
     def __call__(self, *args, **kwargs):
         """Integrate a mechanism's motion: :func:`planargeo.simulate.integrate.simulate`."""
@@ -126,9 +106,7 @@ simulate.__class__ = _CallableSubpackage
 
 
 def _show_pictures_in_notebooks() -> None:
-    """Inside IPython, show points, lines, conics, twists, wrenches, inertias and pictures as
-    drawings (:func:`planargeo.draw.notebook.register`; numpy only until one is shown): the
-    math classes themselves never draw."""
+    """Inside IPython, show the math objects as drawings (:func:`planargeo.draw.notebook.register`)."""
     import sys
 
     ipython = sys.modules.get("IPython")

@@ -1,11 +1,8 @@
 """The ``planargeo`` command line: ``planargeo --help`` lists the subcommands.
 
-Each subcommand lives in its own module exposing ``add_arguments(parser)`` and
-``main(args) -> int``; modules are imported only when their command runs, so
-``planargeo --help`` stays fast.  A :class:`~planargeo.errors.PlanargeoError`
-out of a subcommand (e.g. an :class:`~planargeo.errors.OutputError` for a
-folder that cannot be written) is printed as one line and exits with status 1;
-Ctrl-C exits with status 130 and one line, never a traceback.
+Each subcommand's module (imported only when it runs) has ``add_arguments(parser)`` and
+``main(args) -> int``.  A :class:`~planargeo.errors.PlanargeoError` out of it prints one line and
+exits with status 1; Ctrl-C exits with 130, never a traceback.
 """
 from __future__ import annotations
 
@@ -34,7 +31,7 @@ def _available() -> dict[str, tuple[str, str]]:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    """The top-level parser, with one subcommand per available module of :data:`COMMANDS`.
+    """The top-level parser, one subcommand per available module of :data:`COMMANDS`.
 
     Returns
     -------
@@ -64,8 +61,7 @@ def main(argv: list[str] | None = None) -> int:
     Returns
     -------
     int
-        The exit status: 0 on success, 1 for a :class:`~planargeo.errors.PlanargeoError`,
-        2 for a usage error, 130 on Ctrl-C.
+        0 on success, 1 for a :class:`~planargeo.errors.PlanargeoError`, 2 for a usage error, 130 on Ctrl-C.
     """
     argv = list(sys.argv[1:] if argv is None else argv)
     parser = build_parser()

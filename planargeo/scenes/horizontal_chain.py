@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo.mechanics.model import Model
+from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.scenes import SceneResult, check_param, plain, register
 
 __all__ = ["horizontal_chain", "horizontal_chain_model", "effective_centre"]
@@ -40,9 +40,9 @@ def horizontal_chain_model(n: int, m: float, rho: float, L: float) -> Model:
     -------
     Model
     """
-    from planargeo.scenes.articulated import bent_chain_model      # here: keeps the scenes' order
-
-    return bent_chain_model(n, rho, L, m)
+    bodies = [Body(m, (L / 2, 0.0), m * rho * rho, name=f"body {i + 1}") for i in range(n)]
+    joints = [Joint("revolute", (0.0 if i == 0 else L, 0.0, 0.0), name=f"CJ{i + 1}") for i in range(n)]
+    return Model(bodies, joints, list(range(-1, n - 1)), gravity=(0.0, 0.0))
 
 
 def effective_centre(A) -> tuple[float, float, float, float]:
