@@ -15,7 +15,8 @@ from planargeo.draw.pictures._words import pair
 from planargeo.errors import InputError
 from planargeo.geometry._docs import entries
 
-__all__ = ["as_picture", "added", "view_centre", "line_words", "ENTRIES", "documented"]
+__all__ = ["as_picture", "added", "bare_line", "inertia", "view_centre", "line_words", "ENTRIES",
+           "documented"]
 
 
 def as_picture(pic) -> Picture:
@@ -35,6 +36,16 @@ def added(draw, *args, **kw) -> dict:
     """Call the picture's method ``draw`` (``pic.line``, ``pic.point``...) and return the element it added."""
     draw(*args, **kw)
     return draw.__self__.elements[-1]
+
+
+def bare_line(pic: Picture, id: str, l, **kw) -> dict:
+    """A line with neither sense arrow nor label (``pic.line`` with ``**kw``); the element."""
+    return added(pic.line, id, l, arrow=False, label="", **kw)
+
+
+def inertia(pic: Picture, id: str, I, desc: str) -> dict:
+    """The inertia ``I`` as its circle of gyration (dashed, centre marked, no label); the element."""
+    return added(pic.conic, id, I, role="inertia", symbol="I", label="", desc=desc)
 
 
 def view_centre(pic: Picture) -> np.ndarray:

@@ -23,7 +23,7 @@ import math
 
 import numpy as np
 
-from planargeo.draw._shared import added, as_picture, documented, line_words
+from planargeo.draw._shared import added, as_picture, bare_line, documented, inertia, line_words
 from planargeo.draw.geometry import _mat, _vec, point_xy
 from planargeo.draw.picture import PX_PER_PT, Picture, plain_text
 from planargeo.draw.pictures._words import num, pair, where
@@ -43,15 +43,14 @@ __all__ = ["line_conic_points", "interior_construction", "power_values", "polar_
 def _line(pic: Picture, id: str, l, role: str, symbol: str, desc: str, *, anchor=None,
           side: float = 1.0) -> dict:
     """A line without a sense arrow, labelled with its symbol beside it (:func:`label_line`)."""
-    pic.line(id, l, role=role, arrow=False, label="", symbol=symbol, desc=desc)
+    el = bare_line(pic, id, l, role=role, symbol=symbol, desc=desc)
     label_line(pic, id, plain_text(symbol), anchor=anchor, side=side)
-    return pic.elements[-1]
+    return el
 
 
 def _inertia(pic: Picture, prefix: str, I, more: str) -> dict:
-    """The inertia ``I`` as its circle of gyration (dashed), its description ending in ``more``."""
-    return added(pic.conic, prefix + "I", I, role="inertia", symbol="I", label="",
-                 desc="inertia I (5.64) as its circle of gyration" + more)
+    """The inertia ``I`` (:func:`inertia`), its description ending in ``more``."""
+    return inertia(pic, prefix + "I", I, "inertia I (5.64) as its circle of gyration" + more)
 
 
 def _polar_and_point(pic: Picture, out: dict, prefix: str, K, p, names, *, inside: bool, through: str,
@@ -167,9 +166,8 @@ def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=No
     contacts = [to_xy(X) for X in K.contacts]
     both = f"{pair(contacts[0], 3)} and {pair(contacts[1], 3)}"
     out = {"construction": K, "conic": _conic(pic, prefix + "C", C)}
-    out["tangents"] = [added(pic.line, f"{prefix}tangent {k + 1}", t, role="construct", arrow=False, label="",
-                             symbol=f"T{k + 1}",
-                             desc=f"tangent {k + 1} from P to C (5.38–5.39): touches C at {pair(xy, 3)}")
+    out["tangents"] = [bare_line(pic, f"{prefix}tangent {k + 1}", t, role="construct", symbol=f"T{k + 1}",
+                                 desc=f"tangent {k + 1} from P to C (5.38–5.39): touches C at {pair(xy, 3)}")
                        for k, (t, xy) in enumerate(zip(K.tangents, contacts))]
     out["contacts"] = added(pic.marks, prefix + "contacts", contacts, role="construct", size=3.5 * PX_PER_PT,
                             color=COLORS["construct"], z=5, symbol="contacts",
@@ -262,13 +260,12 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
     K = interior_construction(C, p, angles)
     out = {"construction": K, "conic": _conic(pic, prefix + "C", C)}
     ends = [[to_xy(X) for X in K.chord_points[k]] for k in range(2)]
-    out["chords"] = [added(pic.line, f"{prefix}chord {k + 1}", K.lines[k], role="construct", arrow=False,
-                           label="", symbol=f"chord {k + 1}",
-                           desc=f"chord {k + 1} through P (5.36, step 1): cuts C at {pair(ends[k][0], 3)} and "
-                                f"{pair(ends[k][1], 3)}") for k in range(2)]
-    out["tangents"] = [added(pic.line, f"{prefix}tangent {k + 1}.{j + 1}", K.tangents[k, j], role="construct",
-                             arrow=False, label="", width=0.6 * PX_PER_PT, symbol=f"tangent {k + 1}.{j + 1}",
-                             desc=f"tangent to C at the end {pair(ends[k][j], 3)} of chord {k + 1} (5.38–5.39)")
+    out["chords"] = [bare_line(pic, f"{prefix}chord {k + 1}", K.lines[k], role="construct",
+                               symbol=f"chord {k + 1}", desc=f"chord {k + 1} through P (5.36, step 1): cuts "
+                               f"C at {pair(ends[k][0], 3)} and {pair(ends[k][1], 3)}") for k in range(2)]
+    out["tangents"] = [bare_line(pic, f"{prefix}tangent {k + 1}.{j + 1}", K.tangents[k, j], role="construct",
+                                 width=0.6 * PX_PER_PT, symbol=f"tangent {k + 1}.{j + 1}",
+                                 desc=f"tangent to C at the end {pair(ends[k][j], 3)} of chord {k + 1} (5.38–5.39)")
                        for k in range(2) for j in range(2)]
     pts = [xy for pair_ in ends for xy in pair_]
     out["chord_points"] = added(pic.marks, prefix + "chord points", pts, role="construct", size=3.0 * PX_PER_PT,

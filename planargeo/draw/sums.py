@@ -27,7 +27,7 @@ import math
 import numpy as np
 
 from planargeo._validate import as_mat3, as_scalar, as_vec3
-from planargeo.draw._shared import ENTRIES, added, as_picture, view_centre
+from planargeo.draw._shared import ENTRIES, added, as_picture, bare_line, inertia as inertia_conic, view_centre
 from planargeo.draw.picture import PX_PER_PT, Picture, _dash, plain_text
 from planargeo.draw.pictures._words import force as force_words, num, pair
 from planargeo.draw.pictures.common import label_toward
@@ -114,7 +114,7 @@ def _lever(pic: Picture, id: str, p, q, *, desc: str, width: float | None = None
     line = np.cross(p, q)
     if not np.any(line) or bool(is_at_infinity(line)):
         return None
-    return added(pic.line, id, line, role="construct", arrow=False, label="", symbol=id, desc=desc, width=width)
+    return bare_line(pic, id, line, role="construct", symbol=id, desc=desc, width=width)
 
 
 def _wrench(pic: Picture, id: str, f, *, role: str, label: str, desc: str, scale, anchor,
@@ -576,9 +576,9 @@ def newton_euler(pic, I, a, v, *, scale=None,
 
     out = {}
     if inertia:
-        out["inertia"] = added(pic.conic, prefix + "inertia", I, role="inertia", symbol="I", label="",
-                               desc=f"inertia I (4.58) as its circle of gyration: m = {num(mass(I))} kg, "
-                                    f"centre of mass at {pair(c)} m")
+        out["inertia"] = inertia_conic(pic, prefix + "inertia", I,
+                                       f"inertia I (4.58) as its circle of gyration: m = {num(mass(I))} kg, "
+                                       f"centre of mass at {pair(c)} m")
     out["v"] = _pole(pic, prefix + "v", v, role="twist", label=labels[0], toward=toward[0],
                      desc=f"velocity {syms[0]} (4.10): {_pole_words(v)}")
     out["a"] = _pole(pic, prefix + "a", a, role="accel", label=labels[1], toward=toward[1],
