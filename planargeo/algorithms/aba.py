@@ -25,12 +25,8 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
 
     Parameters
     ----------
-    model : Model
-        The mechanism.
-    q, qd, tau : array_like (..., nq)
-        Joint coordinates, velocities and forces.
-    f_ext : array_like (..., N, 3), optional
-        External wrenches at the origin on each body.
+    model, q, qd, tau, f_ext : Model, array_like
+        The mechanism and its states, as for :func:`forward_dynamics`.
 
     Returns
     -------
@@ -40,21 +36,16 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
 
     Raises
     ------
-    ShapeError, NonFiniteError, InputError
-        Arguments of the wrong shape, not finite, or complex.
-    SingularConfigurationError
-        If some ``sᵀAs`` is singular by the rule of :data:`planargeo.errors.COND_LIMIT`.
-    NumericOverflowError
-        If finite input gives a ``q̈`` that is not finite.
+    ShapeError, NonFiniteError, InputError, SingularConfigurationError, NumericOverflowError
+        As :func:`forward_dynamics`.
 
     Examples
     --------
-    A unit point mass at distance 1 from its pivot (a simple pendulum), released horizontally:
+    A unit point mass at distance 1 from its pivot, released horizontally: ``g / L``, and no pivot load.
 
     >>> from planargeo.mechanics.model import Body, Joint, Model
-    >>> m = Model([Body(1.0, com=(1.0, 0.0))], [Joint("revolute")], [-1])
-    >>> w = articulated_body(m, [0.0], [0.0], [0.0])
-    >>> w.qdd, w.f[0]                  # g/L, and the pivot carries no load in free fall
+    >>> w = articulated_body(Model([Body(1.0, com=(1.0, 0.0))], [Joint("revolute")], [-1]), [0.0], [0.0], [0.0])
+    >>> w.qdd, w.f[0]
     (array([-9.81]), array([0., 0., 0.]))
     """
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)

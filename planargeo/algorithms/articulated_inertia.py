@@ -46,13 +46,10 @@ class ArticulatedInertias(_Reactions):
 
     Attributes
     ----------
-    A : (N, 3, 3) articulated inertias (7.7a).
-    d : (N, 3) articulated bias forces (7.7b).
-    S : list of (3, k_i) joint spaces.
-    T : list of (3, k_i) percussion spaces ``A_i s_i (s_i^T A_i s_i)^-1`` (6.105).
+    A, d : (N, 3, 3), (N, 3) articulated inertias (7.7a) and bias forces (7.7b).
+    S, T : lists of (3, k_i) joint spaces and percussion spaces ``A s (sᵀAs)⁻¹`` (6.105).
     P : list of (3, 3) projectors ``R_i U_i^T = 1 - T_i s_i^T`` (7.8).
-    gram : list of ``(A_i s_i, s_i^T A_i s_i)`` (``None`` for a fixed joint).
-    cond : (N,) the joints' condition numbers (1 for a fixed joint).
+    gram, cond : ``(A s, sᵀAs)`` (None for a fixed joint) and the joints' condition numbers (1 when fixed).
     points : (N, 2) or None, the points of the reaction bases of prismatic joints.
     steps : int or None, the truncation of the recursion (10.2.2; None: full).
     R, U : lists, built on first access: reaction spaces and reactive acceleration spaces (6.99).
@@ -83,21 +80,18 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
 
     Parameters
     ----------
-    I : (N, 3, 3) body inertias at the origin.
-    S : list of N (3, k_i) joint spaces.
+    I, S : (N, 3, 3) body inertias at the origin, list of N (3, k_i) joint spaces.
     kappa, p : (N, 3) bias accelerations (2.19) and bias forces (3.11, gravity and loads included).
     tau : list of N (k_i,) joint torques ``Q_i``.
     parents : sequence of N ints (``-1`` the ground, parents before children), default a chain.
-    points : (N, 2), optional
-        A point of each joint for the reaction bases ``R`` of prismatic joints; default the origin.
-    joint_points : (N, 2), optional
-        Each joint's point, where the rule of :data:`planargeo.errors.COND_LIMIT` is measured; default the origin.
+    points, joint_points : (N, 2), optional
+        Points for the reaction bases of prismatic joints, and where the rule of
+        :data:`planargeo.errors.COND_LIMIT` is measured; default the origin.
     check : bool
-        Raise for a singular joint (default); ``False`` records every ``cond`` and treats an
-        exactly singular joint as locked (``T = 0``).
+        Raise for a singular joint (default); ``False`` treats an exactly singular one as locked.
     steps : int, optional
-        Keep only the bodies at most ``steps`` joints outboard (thesis 10.2.2), by ``steps`` Jacobi
-        sweeps over all bodies at once; None (default) or at least the tree's depth: the full recursion.
+        Keep only the bodies at most ``steps`` joints outboard (thesis 10.2.2), by Jacobi sweeps;
+        None (default): the full recursion.
 
     Returns
     -------
@@ -105,24 +99,18 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
 
     Raises
     ------
-    SingularConfigurationError
-        When some ``s_i^T A_i s_i`` is singular by the rule (``.cond``; the message names the joint).
-    InputError
-        ``steps`` is not ``None`` or a non-negative integer.
+    SingularConfigurationError, InputError
+        A singular joint (``.cond``; the message names it), or a bad ``steps``.
 
     Examples
     --------
-    Thesis 7.2 with ``m = L = 1``, ``rho = 1/2``, ``phi = 0``: the two bodies in
-    line have ``m_x = 2 m`` (7.20).
+    Thesis 7.2 with ``m = L = 1``, ``rho = 1/2``: the two bodies in line have ``m_x = 2 m`` (7.20).
 
     >>> from planargeo.screws.twists import inertia_matrix
     >>> I = [inertia_matrix(1.0, [0.5, 0.0], 0.25), inertia_matrix(1.0, [1.5, 0.0], 0.25)]
     >>> S = [np.array([[0.0], [0.0], [1.0]]), np.array([[0.0], [-1.0], [1.0]])]
-    >>> r = articulated_recursion(I, S, np.zeros((2, 3)), np.zeros((2, 3)), [np.zeros(1)] * 2)
-    >>> r.A[0].round(12) + 0.0
-    array([[2. , 0. , 0. ],
-           [0. , 1.5, 1. ],
-           [0. , 1. , 1. ]])
+    >>> float(articulated_recursion(I, S, np.zeros((2, 3)), np.zeros((2, 3)), [np.zeros(1)] * 2).A[0][0, 0])
+    2.0
     """
     A = np.array(I, dtype=float)                   # (7.2): A_N = I_N, children added below
     N = A.shape[0]
@@ -234,8 +222,7 @@ def truncation_error(model, q, qd=None, tau=None, f_ext=None, *, steps: int) -> 
 
     Parameters
     ----------
-    model : planargeo.mechanics.model.Model
-    q, qd, tau, f_ext
+    model, q, qd, tau, f_ext : Model, array_like
         One state, as for :func:`articulated_inertia`.
     steps : int
         Bodies outboard kept by the truncated recursion.
@@ -243,21 +230,17 @@ def truncation_error(model, q, qd=None, tau=None, f_ext=None, *, steps: int) -> 
     Returns
     -------
     dict
-        ``"A"``: (N,) ``‖A_i^(k) - A_i‖_F / ‖A_i‖_F``; ``"d"``: (N,) ``max|d_i^(k) - d_i| / max_j max|d_j|``
-        (0 when every ``d_j`` is 0); ``"entries"``: (N, 3, 3) ``|A_i^(k) - A_i| / ‖A_i‖_F``;
-        ``"max_A"``, ``"max_d"``; ``"truncated"``, ``"full"``: both :class:`ArticulatedInertias`.
+        ``"A"``: (N,) ``‖A_i^(k) - A_i‖_F / ‖A_i‖_F``; ``"d"``: (N,) ``max|d_i^(k) - d_i| / max_j max|d_j|``;
+        ``"entries"``: (N, 3, 3) ``|A_i^(k) - A_i| / ‖A_i‖_F``; ``"max_A"``, ``"max_d"``; ``"truncated"``, ``"full"``.
 
     Raises
     ------
-    InputError
-        ``steps`` is not a non-negative integer.
-    SingularConfigurationError
-        A joint is singular in either recursion.
+    InputError, SingularConfigurationError
+        A bad ``steps``, or a singular joint.
 
     Examples
     --------
-    Thesis 7.3 at ``lambda = L / rho = 2``: one outboard body already gives the first body's
-    ``A_z``; only ``m_x = n m`` still grows.
+    Thesis 7.3 at ``lambda = L / rho = 2``: one outboard body already gives the first body's ``A_z``.
 
     >>> from planargeo.scenes.horizontal_chain import horizontal_chain_model
     >>> e = truncation_error(horizontal_chain_model(6, 1.0, 0.5, 1.0), np.zeros(6), steps=3)
@@ -283,11 +266,8 @@ def articulated_inertia(model, q, qd=None, tau=None, f_ext=None, *, steps: int |
 
     Parameters
     ----------
-    model : planargeo.mechanics.model.Model
-    q, qd, tau : array_like (nq,)
-        State and joint torques (zero if omitted).
-    f_ext : array_like (N, 3), optional
-        World wrenches at the origin applied to each body (besides gravity).
+    model, q, qd, tau, f_ext : Model, array_like
+        One state (``qd``, ``tau`` zero if omitted; ``f_ext`` (N, 3) world wrenches besides gravity).
     steps : int, optional
         Truncate the recursion after ``steps`` outboard bodies (:func:`articulated_recursion`).
 
@@ -297,17 +277,13 @@ def articulated_inertia(model, q, qd=None, tau=None, f_ext=None, *, steps: int |
 
     Raises
     ------
-    InputError
-        A state of the wrong shape, or a bad ``steps``.
-    SingularConfigurationError
-        A singular joint.
+    InputError, SingularConfigurationError
+        A bad state or ``steps``, or a singular joint.
 
     Examples
     --------
-    Two unit slender links in line on pins: the first body feels twice the mass along the chain.
-
     >>> from planargeo.mechanics.model import chain_model
-    >>> float(articulated_inertia(chain_model(2), [0.0, 0.0]).A[0][0, 0])
+    >>> float(articulated_inertia(chain_model(2), [0.0, 0.0]).A[0][0, 0])      # twice the mass along the chain
     2.0
     """
     return articulated_recursion(*_state_arrays(model, q, qd, tau, f_ext)[1:], steps=steps)

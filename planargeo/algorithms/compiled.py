@@ -34,25 +34,22 @@ Compiled = namedtuple("Compiled", "kernels tables state wrenches")
 
 
 def kernels_for(model):
-    """The :data:`Compiled` kernels of ``model`` if they cover it, else None (cached on the model).
+    """The :data:`Compiled` kernels of ``model`` if they cover it (joints revolute, prismatic or fixed), else None.
 
     Parameters
     ----------
     model : Model
-        The mechanism; covered when its joints are all revolute, prismatic or fixed.
+        The mechanism (the answer is cached on it).
 
     Returns
     -------
     Compiled or None
-        The kernels module, tables and shapes.
 
     Examples
     --------
-    >>> from planargeo.mechanics.model import Body, Joint, Model, chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> kernels_for(chain_model(2)).tables[0]            # joint codes: revolute
     array([1, 1])
-    >>> kernels_for(Model([Body(1.0)], [Joint("plane")], [-1])) is None
-    True
     """
     cache = model._arrays
     if "kernels" not in cache:
@@ -73,14 +70,10 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
 
     Parameters
     ----------
-    model : Model
-        The mechanism.
+    model, q, qd, z, f_ext : Model, array_like
+        The mechanism and its states (``(..., nq)``; ``f_ext`` ``(..., N, 3)`` or None).
     inverse : bool
         Inverse dynamics instead of forward.
-    q, qd, z : array_like, shape (..., nq)
-        Joint positions, velocities, and forces (forward) or accelerations (inverse).
-    f_ext : array_like, shape (..., N, 3) or None
-        External world wrenches.
     general : callable
         ``general(model, q, qd, z, f_ext)``, the general recursion for models the kernels do not cover.
 
@@ -168,7 +161,7 @@ def _failed(kernels, tables, model, inverse, q, qd, z, f_ext, general):
 
 
 def check_finite(result, what: str, **inputs):
-    """Return ``result``, or raise :class:`~planargeo.errors.NumericOverflowError` if it is not finite.
+    """Return ``result``, or raise :class:`~planargeo.errors.NumericOverflowError` naming the largest input.
 
     Parameters
     ----------
@@ -177,7 +170,7 @@ def check_finite(result, what: str, **inputs):
     what : str
         Its name in the message.
     **inputs : numpy.ndarray
-        The (finite) arguments it came from, by name; the message names the largest.
+        The (finite) arguments it came from, by name.
 
     Returns
     -------
@@ -211,10 +204,7 @@ _told = []
 
 
 def cache_is_warm(kernels=None) -> bool:
-    """Whether numba's cache holds the entry points of :mod:`planargeo.algorithms.kernels` for its current source.
-
-    numba's own rule (an index stamped for the source as it is now), else an index not older than
-    ``kernels.py``; compiles nothing.
+    """Whether numba's cache holds the kernels' entry points for the current source (compiles nothing).
 
     Parameters
     ----------
@@ -224,7 +214,6 @@ def cache_is_warm(kernels=None) -> bool:
     Returns
     -------
     bool
-        True if every entry point's compiled code in the cache is current.
 
     Examples
     --------
@@ -276,8 +265,8 @@ def warm(progress=None) -> list[tuple[str, float]]:
 
     Examples
     --------
-    >>> [step for step, _ in warm()][:2]
-    ['forward and inverse dynamics, one state', 'forward and inverse dynamics, one state, external wrenches']
+    >>> warm()[0][0]
+    'forward and inverse dynamics, one state'
     """
     from planargeo.mechanics.model import Body, Joint, Model
 

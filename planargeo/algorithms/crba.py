@@ -33,19 +33,15 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
     Returns
     -------
     ndarray (..., nq, nq)
-        Symmetric positive definite (for bodies with mass).
 
     Raises
     ------
-    InputError
-        An unknown ``method``, or ``q`` of the wrong shape, not finite, or complex.
-    NumericOverflowError
-        If ``H`` is not finite for finite ``q``.
+    InputError, NumericOverflowError
+        An unknown ``method`` or a bad ``q``, or an ``H`` that is not finite.
 
     Examples
     --------
-    Double pendulum of unit uniform links at q = 0, by hand:
-    ``H11 = 1/3 + (1/12 + 1.5²) = 8/3``, ``H12 = 1/12 + 1.5·0.5 = 5/6``, ``H22 = 1/12 + 0.5² = 1/3``:
+    Double pendulum of unit links at q = 0: ``H11 = 8/3``, ``H12 = 5/6``, ``H22 = 1/3``.
 
     >>> from planargeo.mechanics.model import chain_model
     >>> (mass_matrix(chain_model(2), [0.0, 0.0]) * 6).round(12)
@@ -108,15 +104,12 @@ def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     Returns
     -------
     ndarray (..., nq)
-        Empty for a model without coordinates.
 
     Raises
     ------
-    NumericOverflowError
-        If finite input gives a result that is not finite.
-    SingularConfigurationError
-        If ``λ_min(H) ≤ SINGULAR_RCOND λ_max(H)`` (``.cond = λ_max / λ_min``): a rule of its own, so it
-        may answer states the joints' rule refuses (``docs/simulation.md``).
+    NumericOverflowError, SingularConfigurationError
+        A result that is not finite, or ``λ_min(H) ≤ SINGULAR_RCOND λ_max(H)`` (a rule of its own:
+        it may answer states the joints' rule refuses, ``docs/simulation.md``).
 
     Examples
     --------

@@ -78,15 +78,12 @@ def tables(model):
     Returns
     -------
     tuple or None
-        ``(kind, parent, body, gravity)``, or None.
 
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
-    >>> kind, parent, body, gravity = tables(chain_model(2))
-    >>> kind, parent, body[1]
-    (array([1, 1]), array([-1,  0]), array([1.        , 0.        , 1.        , 0.        , 1.        ,
-           0.5       , 0.        , 0.08333333]))
+    >>> tables(chain_model(2))[:2]
+    (array([1, 1]), array([-1,  0]))
     """
     if not all(j.kind in _CODES for j in model.joints):
         return None
@@ -99,7 +96,7 @@ def tables(model):
 
 @inline
 def workspace(N):
-    """Fresh :data:`Workspace` arrays for one state of an ``N``-body model.
+    """Fresh, uninitialised :data:`Workspace` arrays for one state of an ``N``-body model.
 
     Parameters
     ----------
@@ -109,7 +106,6 @@ def workspace(N):
     Returns
     -------
     Workspace
-        Uninitialised arrays, one row per body.
     """
     return Workspace(np.empty((N, 2)), np.empty((N, 2)), np.empty((N, 4)), np.empty((N, 3)), np.empty((N, 3)),
                      np.empty((N, 3)), np.empty((N, 3, 3)), np.empty((N, 3)), np.empty((N, 3)), np.empty(N),
@@ -387,9 +383,7 @@ def _fits(kind, x, y, z, fext):
 @jit
 @_doc
 def dynamics_one(inverse, kind, parent, body, gravity, q, qd, z, fext):
-    """``q̈`` (forward, ``z = τ``) or ``τ`` (``inverse``, ``z = q̈``) of one state, or None if not :data:`OK`.
-
-    Arrays of other shapes give None too (the caller then validates them and names the problem).
+    """``q̈`` (forward, ``z = τ``) or ``τ`` (``inverse``, ``z = q̈``) of one state, or None if not :data:`OK` or misshapen.
 
     Parameters
     ----------
@@ -404,7 +398,6 @@ def dynamics_one(inverse, kind, parent, body, gravity, q, qd, z, fext):
     Returns
     -------
     numpy.ndarray, shape (nq,) or None
-        ``q̈`` or ``τ``, or None.
     """
     if not _fits(kind, q, qd, z, fext):
         return None
@@ -433,7 +426,6 @@ def singular_joint(kind, parent, body, gravity, q, qd, tau, fext):
     Returns
     -------
     tuple
-        ``(joint, cond)``.
     """
     w = workspace(kind.shape[0])
     status = articulated_body_state((kind, parent, body, gravity), q, qd, tau, fext, w, np.empty(q.shape[0]))
@@ -448,7 +440,7 @@ Columns = namedtuple("Columns", "x y z out origin r frame s sq v kappa A d U D u
 
 @inline
 def columns(N, nq, L):
-    """Fresh :data:`Columns` for blocks of up to ``L`` states of an ``N``-body model, the ground row at rest.
+    """Fresh :data:`Columns` for blocks of up to ``L`` states, ``N`` bodies, ``nq`` coordinates; the ground row at rest.
 
     Parameters
     ----------
@@ -458,7 +450,6 @@ def columns(N, nq, L):
     Returns
     -------
     Columns
-        Scratch arrays.
     """
     w = Columns(np.empty((nq, L)), np.empty((nq, L)), np.empty((nq, L)), np.empty((nq, L)),
                 np.zeros((N + 1, 2, L)), np.empty((N, 2, L)), np.zeros((N + 1, 4, L)), np.empty((N, 3, L)),
@@ -473,29 +464,25 @@ def columns(N, nq, L):
 def articulated_body_block(model, q, qd, tau, fext, lo, hi, w, qdd):
     """:func:`articulated_body_state` for the states ``lo:hi`` (at most :data:`BLOCK`) at once (thesis 3.31-3.42).
 
-    The same equations in the same order, each per-body step a loop over the block's states,
-    so every state gets the numbers it gets alone.
+    The same equations in the same order, each step a loop over the block's states.
 
     Parameters
     ----------
     model : tuple
         The model's :func:`tables`.
-    q, qd, tau : numpy.ndarray, shape (B, nq)
-        Joint positions, velocities and forces of B states.
+    q, qd, tau, qdd : numpy.ndarray, shape (B, nq)
+        Joint positions, velocities and forces of B states; the output, joint accelerations.
     fext : numpy.ndarray, shape (B, N, 3) or None
         External world wrenches at the origin.
     lo, hi : int
         The block's states ``lo:hi``.
     w : Columns
         Scratch arrays from :func:`columns`.
-    qdd : numpy.ndarray, shape (B, nq)
-        Output: joint accelerations.
 
     Returns
     -------
     bool
-        Whether every state succeeded; False (a state not finite or not clearly regular):
-        the caller reruns the block by :func:`articulated_body_state`, which tells.
+        Whether every state succeeded; else the caller reruns the block state by state, which tells.
     """
     kind, parent, body, gravity = model
     n, N = hi - lo, kind.shape[0]
@@ -702,7 +689,6 @@ def dynamics_many(inverse, kind, parent, body, gravity, x, y, z, fext):
     Returns
     -------
     tuple
-        ``(out, declined)``: ``q̈`` or ``τ`` (B, nq), and -1 or the first state declined.
     """
     out = np.empty(x.shape)
     B, model = x.shape[0], (kind, parent, body, gravity)

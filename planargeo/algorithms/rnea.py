@@ -22,10 +22,8 @@ def newton_euler(model: Model, q, qd, qdd, f_ext=None) -> Data:
 
     Parameters
     ----------
-    model, q, qd, f_ext : Model, array_like
-        The mechanism and its state, as for :func:`planargeo.algorithms.aba.articulated_body`.
-    qdd : array_like (..., nq)
-        Joint accelerations.
+    model, q, qd, qdd, f_ext : Model, array_like
+        The mechanism and its states, as for :func:`inverse_dynamics`.
 
     Returns
     -------
@@ -35,19 +33,14 @@ def newton_euler(model: Model, q, qd, qdd, f_ext=None) -> Data:
 
     Raises
     ------
-    ShapeError, NonFiniteError, InputError
-        Arguments of the wrong shape, not finite, or complex.
-    NumericOverflowError
-        If finite input gives a ``τ`` that is not finite.
+    ShapeError, NonFiniteError, InputError, NumericOverflowError
+        Arguments of the wrong shape, not finite or complex, or a ``τ`` that is not finite.
 
     Examples
     --------
-    Holding a horizontal uniform rod (m = 1, L = 1) still takes ``τ = m g L / 2``:
-
     >>> from planargeo.mechanics.model import chain_model
-    >>> w = newton_euler(chain_model(1), [0.0], [0.0], [0.0])
-    >>> w.tau, w.f[0]    # the joint carries the weight and the torque (a couple at the pivot)
-    (array([4.905]), array([0.   , 9.81 , 4.905]))
+    >>> newton_euler(chain_model(1), [0.0], [0.0], [0.0]).f[0]    # a horizontal unit rod held: weight, m g L / 2
+    array([0.   , 9.81 , 4.905])
     """
     q, qd, _, f_ext, qdd, shape = check_state(model, q, qd, None, f_ext, qdd=qdd)
     data = kinematics(model, q, qd, f_ext)
