@@ -47,7 +47,7 @@ COND_LIMIT2 = COND_LIMIT * COND_LIMIT
 
 #: The parameters most functions here take, described once (``{I s R}`` in a docstring: those entries)
 _parameters = entries({
-    "A": "A : array_like, shape (..., 3, 3)\n    Symmetric positive definite (articulated) inertia at the origin.",
+    "A": "A : array_like, shape (..., 3, 3)\n    Symmetric positive semi-definite (articulated) inertia at the origin.",
     "I": "I : array_like, shape (..., 3, 3)\n    Symmetric inertia (rigid or articulated) at the origin.",
     "s": "s : array_like, shape (..., 3, k)\n    Joint motion space (k unit twists as columns).",
     "R": "R : array_like, shape (..., 3, 3-k)\n    Joint reaction space (wrenches reciprocal to ``s``).",
@@ -58,24 +58,21 @@ _parameters = entries({
 
 
 def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
-    """The scale-free condition number of a joint's ``sᵀAs`` (the rule of :data:`planargeo.errors.COND_LIMIT`), as a float.
+    """The scale-free condition number ``‖A_P‖_F ‖s_P‖_F² / σ_min(sᵀAs)`` of a joint (the rule of :data:`planargeo.errors.COND_LIMIT`).
 
-    ``cond = ‖A_P‖_F ‖s_P‖_F² / σ_min(sᵀAs)`` with ``A`` and ``s`` at the joint's own point ``P``
-    (:func:`joint_scale`); the joint is singular when ``cond > COND_LIMIT``.
+    ``A_P``, ``s_P``: at the joint's own point (:func:`joint_scale`); singular when ``cond > COND_LIMIT``.
 
     Parameters
     ----------
     smin : float
         ``σ_min(sᵀAs)`` (``|sᵀAs|`` for one dof; its sign is ignored).
-    A_norm2 : float
-        ``‖A_P‖_F²`` of the articulated inertia at the joint's point ``P``.
-    s_norm2 : float
-        ``‖s_P‖_F²`` of the motion space at ``P`` (``1`` for a revolute or prismatic joint).
+    A_norm2, s_norm2 : float
+        ``‖A_P‖_F²`` and ``‖s_P‖_F²`` (``1`` for a revolute or prismatic joint).
 
     Returns
     -------
     float
-        ``‖A‖_F ‖s‖² / σ_min``; ``inf`` when ``σ_min = 0``.
+        ``inf`` when ``σ_min = 0``.
 
     Raises
     ------
@@ -84,9 +81,7 @@ def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
 
     Examples
     --------
-    A unit point mass ``d = 1e-6`` from its pivot: ``sᵀAs = d²``, ``‖A_P‖_F ≈ √2``.
-
-    >>> round(joint_cond(1e-12, 2.0 + 1e-24, 1.0) / 1e12, 6)
+    >>> round(joint_cond(1e-12, 2.0, 1.0) / 1e12, 6)      # a unit mass 1e-6 from its pivot
     1.414214
     """
     smin, A_norm2, s_norm2 = (as_scalar(x, name) for x, name in
@@ -97,36 +92,31 @@ def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
         return math.sqrt(A_norm2) * s_norm2 / abs(smin) if smin != 0 else math.inf
 
 
+@_parameters
 def joint_scale(A, s, point):
     """``‖A_P‖_F ‖s_P‖_F²``: the scale of the rule of :func:`joint_cond` at the joint's point ``P``.
 
-    ``A`` and ``s``, given at the origin, are moved to ``P = (x, y)``: ``s_P = X s`` with
-    ``X = [[1, 0, -y], [0, 1, x], [0, 0, 1]]`` (thesis 4.8), ``A_P = X⁻ᵀ A X⁻¹`` (1.68, 4.58).
-    Where the squares of the entries would leave the float range, the norm is taken of ``A_P``
-    divided by its largest entry and scaled back (the rule is scale invariant).
+    ``s_P = X s`` with ``X = [[1, 0, -y], [0, 1, x], [0, 0, 1]]`` (thesis 4.8), ``A_P = X⁻ᵀ A X⁻¹``
+    (1.68, 4.58); where squares would leave the float range the norm is taken scaled (scale invariant).
 
     Parameters
     ----------
-    A : array_like, shape (..., 3, 3)
-        Articulated inertia at the origin.
-    s : array_like, shape (..., 3, k)
-        Joint motion space (k unit twists as columns).
+    {A s}
     point : array_like, shape (..., 2)
         The joint's point ``P`` (m).
+
+    Returns
+    -------
+    float or ndarray (...)
 
     Raises
     ------
     ShapeError
         If ``s`` is not ``(..., 3, k)``.
 
-    Returns
-    -------
-    float or ndarray (...)
-
     Examples
     --------
-    A unit point mass at ``(1000.5, 0)`` on a pivot at ``(1000, 0)``: at the pivot
-    ``A_P = [[1, 0, 0], [0, 1, 0.5], [0, 0.5, 0.25]]`` and ``s_P = [0, 0, 1]``.
+    A unit point mass at ``(1000.5, 0)`` on a pivot at ``(1000, 0)``: ``‖A_P‖_F² = 2 + 2 · 0.5² + 0.25²``.
 
     >>> from planargeo.screws.twists import inertia_matrix
     >>> joint_scale(inertia_matrix(1.0, [1000.5, 0.0], 0.0), [0.0, -1000.0, 1.0], [1000.0, 0.0])
@@ -207,11 +197,6 @@ def singular_joint_error(i: int, cond: float) -> SingularConfigurationError:
     ------
     InputError
         If ``i`` is not an int.
-
-    Examples
-    --------
-    >>> str(singular_joint_error(3, 2e12))
-    'sᵀAs of joint 3 is singular: the inertia has (almost) nothing along s (condition number 2e+12)'
     """
     if isinstance(i, bool) or not isinstance(i, (int, np.integer)):
         raise InputError(f"i must be a joint index (an int), got {i!r}")
@@ -434,16 +419,14 @@ def _U(A, R: np.ndarray, s=None, T=None, *, name: str = "A", eig=None, what=None
 def T_of(A, s, *, what: str | None = None) -> np.ndarray:
     """Percussion (active-force) space ``T = A s (sᵀ A s)⁻¹`` (thesis 6.30, 6.36, 6.39, 6.105).
 
-    The weighted pseudo-inverse of ``s`` (6.26): ``sᵀT = 1`` (6.32), ``TᵀU = 0`` (6.46).
-    For a revolute joint its column is the pivot's axis of percussion (5.67).
+    The weighted pseudo-inverse of ``s`` (6.26): ``sᵀT = 1`` (6.32), ``TᵀU = 0`` (6.46); for a
+    revolute joint its column is the pivot's axis of percussion (5.67).
 
     Parameters
     ----------
     A : array_like, shape (..., 3, 3)
         Symmetric positive semi-definite inertia (singular is fine if ``sᵀAs`` is not).
-    s : array_like, shape (..., 3, k) or (3,)
-        Motion space (unit twists at the origin).
-    {what}
+    {s what}
 
     Returns
     -------
@@ -451,19 +434,15 @@ def T_of(A, s, *, what: str | None = None) -> np.ndarray:
 
     Raises
     ------
-    InputError
-        ``A`` is not symmetric.
-    SingularInertiaError
-        ``A`` has a negative eigenvalue.
+    InputError, SingularInertiaError
+        ``A`` is not symmetric, or has a negative eigenvalue.
     SingularConfigurationError
         ``sᵀAs`` is singular by the rule of :data:`planargeo.errors.COND_LIMIT` (at the origin).
 
     Examples
     --------
-    Pinned body of thesis 5.64 (``m = 2``, ``d = 1``, ``ρ² = 1/4``), pinned at the origin:
-
     >>> from planargeo.screws.twists import inertia_matrix
-    >>> T_of(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0]).ravel()   # at x = d + ρ²/d (5.67)
+    >>> T_of(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0]).ravel()   # at x = d + ρ²/d (5.64, 5.67)
     array([0. , 0.8, 1. ])
     """
     return _T(_inertia(A, "A"), _space(s, "s"), _what(what, "sᵀAs"))
@@ -480,8 +459,7 @@ def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
     ----------
     A : array_like, shape (..., 3, 3)
         Symmetric positive semi-definite inertia; definite unless ``s`` is given.
-    R : array_like, shape (..., 3, r) or (3,)
-        Reaction space (unit wrenches at the origin).
+    {R}
     s : array_like, shape (..., 3, 3 - r), optional
         The joint's motion space: then ``U = (1 - s Tᵀ) R (RᵀR)⁻¹`` (6.75), no ``A⁻¹`` needed.
     {what}
@@ -492,24 +470,18 @@ def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
 
     Raises
     ------
-    InputError
-        ``A`` is not symmetric, or ``sᵀR ≠ 0``.
-    SingularInertiaError
-        ``A`` has a negative eigenvalue, or is singular and ``s`` is not given.
+    InputError, SingularInertiaError
+        ``A`` not symmetric or ``sᵀR ≠ 0``; ``A`` with a negative eigenvalue, or singular without ``s``.
     SingularConfigurationError
         If ``RᵀA⁻¹R`` (or, with ``s``, ``sᵀAs``) is singular.
 
     Examples
     --------
-    A unit point mass at (1, 0) pinned at the origin (``A`` singular, thesis 7.40 with ``ρ = 0``):
+    A unit point mass at (1, 0) pinned at the origin (``A`` singular; thesis 7.40 with ``ρ = 0``):
 
     >>> from planargeo.screws.twists import inertia_matrix
-    >>> from planargeo.mechanics.joints import revolute
-    >>> j = revolute((0.0, 0.0))
-    >>> U_of(inertia_matrix(1.0, [1.0, 0.0], 0.0), j.R, j.s) + 0.0
-    array([[ 1.,  0.],
-           [ 0.,  1.],
-           [ 0., -1.]])
+    >>> U_of(inertia_matrix(1.0, [1.0, 0.0], 0.0), [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]], [0.0, 0.0, 1.0])[2]
+    array([ 0., -1.])
     """
     R = _space(R, "R")
     if s is None:
@@ -610,15 +582,12 @@ def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     Returns
     -------
     tuple of numpy.ndarray, each shape (..., 3, 3)
-        ``(T sᵀ, R Uᵀ)``.
 
     Examples
     --------
-    >>> P_act, P_rea = wrench_projectors(np.eye(3), [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
-    >>> P_act
-    array([[0., 0., 0.],
-           [0., 0., 0.],
-           [0., 0., 1.]])
+    >>> P_act, _ = wrench_projectors(np.eye(3), [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
+    >>> P_act[2]
+    array([0., 0., 1.])
     """
     d = Decomposition(A, s, R)
     return d.T @ _tr(d.s), d.R @ _tr(d.U)
@@ -638,7 +607,6 @@ def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     Returns
     -------
     tuple of numpy.ndarray, each shape (..., 3, 3)
-        ``(s Tᵀ, U Rᵀ)``.
     """
     return tuple(_tr(P) for P in wrench_projectors(A, s, R))     # (T sᵀ)ᵀ, (R Uᵀ)ᵀ: the duality
 
@@ -717,7 +685,6 @@ def inverse_inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     Returns
     -------
     tuple of numpy.ndarray, each shape (..., 3, 3)
-        ``(s Tᵀ I⁻¹, U Rᵀ I⁻¹)``.
     """
     d = Decomposition(I, s, R, name="I")
     IiR = _solve_A(d.A, d.R, "I")
@@ -790,21 +757,13 @@ class Decomposition:
 
     Raises
     ------
-    InputError
-        ``A`` not symmetric, or ``sᵀR ≠ 0``.
-    SingularInertiaError
-        ``A`` has a negative eigenvalue, or is singular when ``k < 3`` (with ``.cond``).
-    SingularConfigurationError
-        ``sᵀAs`` or ``RᵀA⁻¹R`` singular.
+    InputError, SingularInertiaError, SingularConfigurationError
+        As for :func:`T_of` and :func:`U_of`, and if ``sᵀR ≠ 0``.
 
     Attributes
     ----------
-    A, s, R : ndarray
-        Inertia (3, 3), joint motion space (3, k) and reaction space (3, 3-k), at the origin; batches broadcast.
-    T : ndarray, shape (..., 3, k)
-        Percussion space (6.39, :func:`T_of`).
-    U : ndarray, shape (..., 3, 3 - k)
-        Reactive-acceleration space (6.45, :func:`U_of`).
+    A, s, R, T, U : ndarray
+        The inertia and the spaces at the origin, ``T`` (6.39, :func:`T_of`), ``U`` (6.45, :func:`U_of`).
 
     Examples
     --------
@@ -835,7 +794,7 @@ class Decomposition:
     @classmethod
     @_parameters
     def from_joint(cls, A, joint, *, name: str = "A") -> "Decomposition":
-        """Build from a :class:`planargeo.mechanics.joints.JointSpace` (its ``s`` and ``R``, thesis 5.63, 6.1).
+        """Build from a :class:`planargeo.mechanics.joints.JointSpace`: ``Decomposition(A, joint.s, joint.R)``.
 
         Parameters
         ----------
@@ -848,17 +807,16 @@ class Decomposition:
         Returns
         -------
         Decomposition
-            ``Decomposition(A, joint.s, joint.R)``.
         """
         return cls(A, joint.s, joint.R, name=name)
 
+    @_parameters
     def split_wrench(self, f) -> tuple[np.ndarray, np.ndarray]:
         """``(Q, μ) = (sᵀf, Uᵀf)`` so that ``f = T Q + R μ`` (thesis 6.38, 6.61).
 
         Parameters
         ----------
-        f : array_like, shape (..., 3)
-            Wrench.
+        {f}
 
         Returns
         -------
@@ -881,17 +839,16 @@ class Decomposition:
         Returns
         -------
         numpy.ndarray, shape (..., 3)
-            ``f``.
         """
         return _combine(self.T, Q, self.R, mu, ("Q", "mu"))
 
+    @_parameters
     def split_twist(self, a) -> tuple[np.ndarray, np.ndarray]:
         """``(ψ, γ) = (Tᵀa, Rᵀa)`` so that ``a = s ψ + U γ`` (thesis 6.44, 6.62).
 
         Parameters
         ----------
-        a : array_like, shape (..., 3)
-            Acceleration twist.
+        {a}
 
         Returns
         -------
@@ -903,10 +860,8 @@ class Decomposition:
         A unit disc pinned at its centre, translated upwards: no joint acceleration.
 
         >>> dec = Decomposition(np.eye(3), [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
-        >>> dec.split_twist([0.0, 1.0, 0.0])
-        (array([0.]), array([0., 1.]))
-        >>> dec.join_twist([0.0], [0.0, 1.0])
-        array([0., 1., 0.])
+        >>> dec.split_twist([0.0, 1.0, 0.0]), dec.join_twist([0.0], [0.0, 1.0])
+        ((array([0.]), array([0., 1.])), array([0., 1., 0.]))
         """
         a = _vec(a, "a")
         return _tmul(self.T, a), _tmul(self.R, a)
@@ -924,7 +879,6 @@ class Decomposition:
         Returns
         -------
         numpy.ndarray, shape (..., 3)
-            ``a``.
         """
         return _combine(self.s, psi, self.U, gamma, ("psi", "gamma"))
 
