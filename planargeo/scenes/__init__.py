@@ -386,14 +386,11 @@ def check_param(name: str, value: Any, kind: str = "float", *, positive: bool = 
     if kind == "int":
         word = "positive " if positive else "non-negative " if nonnegative else "non-zero " if nonzero else ""
         msg = f"{name} must be a {word}integer, got {value!r}"
-        if isinstance(value, (bool, np.bool_)):
+        integral = isinstance(value, (int, np.integer)) or (
+            isinstance(value, (float, np.floating)) and float(value).is_integer())
+        if isinstance(value, (bool, np.bool_)) or not integral:
             raise SceneError(msg)
-        if isinstance(value, (int, np.integer)):
-            v = int(value)
-        elif isinstance(value, (float, np.floating)) and float(value).is_integer():
-            v = int(value)
-        else:
-            raise SceneError(msg)
+        v = int(value)
         if (positive and v <= 0) or (nonnegative and v < 0) or (nonzero and v == 0):
             raise SceneError(msg)
         return v
@@ -414,10 +411,8 @@ def check_param(name: str, value: Any, kind: str = "float", *, positive: bool = 
     v = float(a)
     if not np.isfinite(v):
         raise SceneNonFiniteError(f"{name} must be finite, got {v!r}")
-    if positive and not v > 0:
-        raise SceneError(f"{name} must be positive, got {v!r}")
-    if nonnegative and not v >= 0:
-        raise SceneError(f"{name} must be non-negative, got {v!r}")
-    if nonzero and v == 0:
-        raise SceneError(f"{name} must be non-zero, got {v!r}")
+    for bad, word in ((positive and not v > 0, "positive"), (nonnegative and not v >= 0, "non-negative"),
+                      (nonzero and v == 0, "non-zero")):
+        if bad:
+            raise SceneError(f"{name} must be {word}, got {v!r}")
     return v
