@@ -13,7 +13,7 @@ __all__ = ["Explorer", "Handle", "fmt", "EXPLORERS", "use_widget_backend"]
 
 
 def use_widget_backend() -> str:
-    """The front end explorers use: the page draws their pictures (kept for notebooks; changes nothing).
+    """The front end explorers use: the page draws their pictures (kept for notebooks).
 
     Returns
     -------

@@ -110,7 +110,7 @@ def readouts(explorer: str) -> tuple[dict, dict, dict]:
 
 
 class Described:
-    """An explorer whose readout rows and symbols are described as data (:func:`readouts` of its ``slug``)."""
+    """An explorer whose readout rows and symbols are data (:func:`readouts` of its ``slug``)."""
 
     def __init_subclass__(cls, **kw):
         super().__init_subclass__(**kw)
@@ -124,9 +124,9 @@ class Described:
 
 
 class ChainBodies:
-    """For an explorer of a chain of ``bodies n`` (mass 1, joints ``L = 1`` apart): the parts it shares."""
+    """What explorers of a chain of ``bodies n`` (mass 1, joints ``L = 1`` apart) share."""
 
-    #: ``(control, offset, widest)``: the control spans up to ``n + offset`` (while ``n`` is set, ``widest``)
+    #: ``(control, offset, widest)``: it spans up to ``n + offset`` (while ``n`` is set, ``widest``)
     spans: tuple[str, int, int] = ("", 0, 0)
 
     def __init__(self, **kw):
@@ -190,7 +190,7 @@ def time_text(t: float) -> str:
 
 
 def time_value(text, limit: float) -> float:
-    """The scene time (s) of the time field's ``text`` (at most ``limit``), or an :class:`InputError`."""
+    """The scene time (s) of the time field's ``text`` (at most ``limit``), or an InputError."""
     try:
         t = float(text)
     except (TypeError, ValueError):
@@ -204,9 +204,9 @@ def run_to(run: dict, t: float, checkpoint: float, step, budget=None):
     """``(state, drift, events)`` at scene time ``t`` of ``run``, its checkpoints extended in place.
 
     ``run`` holds ``ck`` (the state every ``checkpoint`` s), ``drift`` (the largest residual up to
-    each) and ``events``.  From the last checkpoint before ``t`` to ``t``: the same operations whatever
-    the history.  ``step(state, h, t0) -> (state, residual, events)``; a spent ``budget`` refuses
-    the next checkpoint.
+    each) and ``events``.  From the last checkpoint before ``t`` to ``t``: the same operations
+    whatever the history.  ``step(state, h, t0) -> (state, residual, events)``; a spent
+    ``budget`` refuses the next checkpoint.
     """
     ck = run["ck"]
     k = int(math.floor(t / checkpoint + 1e-9))

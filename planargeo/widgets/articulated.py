@@ -138,7 +138,7 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         }
 
     def adjust(self, values, changed):
-        # "outboard bodies" stays within the n − 1 bodies outboard of body 1 (at "all" it stays "all");
+        # "outboard bodies" stays within the n − 1 bodies after body 1 (at "all" it stays "all");
         # a change of the chain or its swing restarts the time at 0
         out = {}
         n = int(values["bodies n"])
@@ -197,7 +197,7 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
                 Handle("first body", base_where, base_drag)]
 
     def focus_options(self):
-        # before the first state every body of the longest chain: a focus given with "bodies n" is taken
+        # before the first state every body of the longest chain (a focus given with "bodies n")
         w = getattr(self, "controls", {}).get("bodies n")
         n = NMAX if w is None or getattr(self, "state", None) is None else int(w.value)
         return [f"body {i}" for i in range(1, n + 1)]
@@ -215,7 +215,7 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         return np.array([math.radians(v["base θ₁ (deg)"])] + [math.radians(v["bend φ (deg)"])] * (n - 1))
 
     def _motion(self, v) -> Motion:
-        """The swing of the configuration ``v`` from rest: ``y = (q, q̇, W)`` (kept per configuration)."""
+        """The swing of the configuration ``v`` from rest: ``y = (q, q̇, W)`` (kept)."""
         from planargeo.scenes.chain import chain_accelerations as forward_dynamics
 
         key = self._key(v)
@@ -254,7 +254,7 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         return 0 if focus == "all" else min(int(focus.split()[1]), n) - 1
 
     def _view(self, st) -> tuple[float, float, float, float]:
-        """The view: the chain, the centres, the pole and the conics on the left, the chart on the right."""
+        """The view: chain, centres, pole and conics on the left, the chart on the right."""
         v = self.values
         n = st["n"]
         pts = [st["joints"], st["centre"], st["centre_rigid"], [[v["pole x"], v["pole y"]]]]

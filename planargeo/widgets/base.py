@@ -244,7 +244,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         return True
 
     def adjust(self, values: dict[str, Any], changed: set[str]) -> dict[str, Any]:
-        """Values of controls that follow the ``changed`` ones, set and refused with them (default: none).
+        """Values of controls that follow the ``changed`` ones, set and refused with them.
 
         Parameters
         ----------
@@ -288,7 +288,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         return None
 
     def disabled(self, values: dict[str, Any]) -> dict[str, str]:
-        """Controls that would change nothing in the state of ``values`` (disabled, the reason as tooltip).
+        """Controls that would change nothing in the state of ``values``, with the reason.
 
         Parameters
         ----------
@@ -303,7 +303,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         return {}
 
     def explain(self) -> dict[str, str]:
-        """``{symbol or readout name: its one-line meaning and thesis equation}``, for "what is shown".
+        """``{symbol or readout name: one-line meaning and thesis equation}``, for "what is shown".
 
         Returns
         -------
@@ -312,7 +312,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         return {}
 
     def focus_options(self) -> list[str]:
-        """Names of bodies or joints to focus on (default: none, no "focus" control); read after each update.
+        """Names of bodies or joints to focus on (none: no "focus" control); read after each update.
 
         Returns
         -------

@@ -16,6 +16,7 @@ import ipywidgets as W
 import numpy as np
 
 from planargeo.draw.chain import chain_picture
+from planargeo.draw.pictures._words import subscript
 from planargeo.errors import InputError, SizeLimitError
 from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.mechanics.subspaces import T_of
@@ -51,12 +52,6 @@ ANGLE_LIMIT = 3600.0
 SLIDE = (-0.5, 1.0)
 #: unit of a joint's acceleration by joint kind
 QDD_UNIT = {"revolute": "rad/s²", "prismatic": "m/s²"}
-_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-
-
-def sub(i: int) -> str:
-    """``i`` as Unicode subscript digits (``sub(12) == "₁₂"``)."""
-    return str(i).translate(_SUB)
 
 
 def chain_for(n: int, joints: str = "revolute", gravity: bool = True, length: float = 1.0,
@@ -400,14 +395,14 @@ class ChainExplorer(Explorer):
         return st["split"]
 
     def figure_message(self, exc: Exception) -> str:
-        # wrapped to stay inside the axes; a time too far in its short form (not cut before "ask again")
+        # wrapped inside the axes; a time too far in its short form (not cut before "ask again")
         import textwrap
 
         return textwrap.fill(refusal_on_picture(str(exc)) or super().figure_message(exc), 40)
 
     # -- focus, handles, play ------------------------------------------------------
     def focus_options(self) -> list[str]:
-        # before the first state every link of the longest chain: a focus given with "links" is taken
+        # before the first state every link of the longest chain (a focus given with "links")
         w = getattr(self, "controls", {}).get("links")
         n = NMAX if w is None or getattr(self, "state", None) is None else int(w.value)
         return [f"link{i}" for i in range(1, n + 1)] + [f"joint{i}" for i in range(1, n + 1)]
@@ -447,9 +442,8 @@ class ChainExplorer(Explorer):
         n = st["model"].N if st is not None else int(self.values["links"])
 
         def here(sym):
-            return "; in the figure: " + ", ".join(f"{sym}{sub(i)}" for i in range(1, n + 1))
+            return "; in the figure: " + ", ".join(f"{sym}{subscript(i)}" for i in range(1, n + 1))
 
-        kind = {"revolute": "rad/s²", "prismatic": "m/s²"}
         out = {
             "vᵢ": "velocity pole of link i: the point it turns about (twist of link i, eq. 4.5)" + here("v"),
             "aᵢ": "acceleration pole of link i: the point with no acceleration (eq. 4.6)" + here("a"),
@@ -480,7 +474,8 @@ class ChainExplorer(Explorer):
         if st is not None:
             for k in sorted({0, n - 1}):
                 j = st["model"].joints[k].kind
-                out[f"q̈{sub(k + 1)}"] = f"acceleration of joint {k + 1} ({j}, {kind[j]}; eq. 3.41)"
+                out[f"q̈{subscript(k + 1)}"] = (
+                    f"acceleration of joint {k + 1} ({j}, {QDD_UNIT[j]}; eq. 3.41)")
         return out
 
     def _focus(self, n: int):
@@ -561,7 +556,7 @@ class ChainExplorer(Explorer):
         Parameters
         ----------
         duration : float, optional
-            Seconds of motion from ``t = 0``: one frame to the explorer's ``duration`` (the default).
+            Seconds of motion from ``t = 0``: a frame to the explorer's ``duration`` (the default).
         allow_long : bool
             Integrate beyond ``duration`` (Ctrl-C stops it and keeps what was computed).
 
@@ -619,9 +614,9 @@ class ChainExplorer(Explorer):
                "total energy (J)": e, "work of the joint forces (J)": work,
                "energy drift (J)": e - state["e0"] - work}
         out["q̈₁"] = float(w.qdd[0])
-        out[f"q̈{sub(n)}"] = float(w.qdd[-1])
+        out[f"q̈{subscript(n)}"] = float(w.qdd[-1])
         # a joint's acceleration: angular (revolute) or linear (prismatic)
-        self.units = {**type(self).units, **{f"q̈{sub(k + 1)}": QDD_UNIT[model.joints[k].kind]
+        self.units = {**type(self).units, **{f"q̈{subscript(k + 1)}": QDD_UNIT[model.joints[k].kind]
                                              for k in (0, n - 1)}}
         out["|base force| (N)"] = float(np.hypot(*w.f[0, :2]))
         return out

@@ -200,7 +200,7 @@ class ConstructionExplorer(Explorer):
         return c
 
     def adjust(self, values, changed):
-        # a new construction starts from its own defaults (those not set with it), showing every step
+        # a new construction starts from its own defaults (those not set with it), every step shown
         kind = values["construction"]
         if self._shown_kind is None or kind == self._shown_kind:
             return {}
@@ -275,12 +275,12 @@ class ConstructionExplorer(Explorer):
 
     # ------------------------------------------------------------------ export
     def export_layers(self, path=None) -> Path:
-        """Write the whole construction as an SVG with one ``<g id="step-K-name">`` per step, all at full strength.
+        """Write the construction as an SVG, each step at full strength in ``<g id="step-K-name">``.
 
         Parameters
         ----------
         path : str or Path, optional
-            Where to write (default: ``planargeo-construction-<kind>-layers.svg`` in the export folder).
+            Default: ``planargeo-construction-<kind>-layers.svg`` in the export folder.
 
         Returns
         -------

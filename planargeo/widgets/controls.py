@@ -342,7 +342,7 @@ def shown_as(name: str, value) -> str:
 
 
 class ControlsMixin:
-    """The controls of :class:`~planargeo.widgets.base.Explorer`: made, observed, echoes screened out."""
+    """The controls of :class:`~planargeo.widgets.base.Explorer`: made, observed, echoes ignored."""
 
     def _make_controls(self, values: dict[str, Any]) -> None:
         """The controls (described as data or as widgets), the base's key and focus, the given values."""

@@ -114,9 +114,9 @@ class ExportMixin:
 
     def export_animation(self, path=None, *, format: str = "gif", frames: int = 60,
                          fps: int = 20, allow_long: bool = False) -> Path:
-        """Write ``frames`` Play frames from the shown state as a GIF or MP4 file (real time), atomically.
+        """Write ``frames`` Play frames from the shown state as a GIF or MP4 file, atomically.
 
-        The explorer returns to the shown state afterwards.  MP4 needs the ``ffmpeg`` program.
+        The file plays in real time; the explorer returns to the shown state.  MP4 needs ``ffmpeg``.
 
         Parameters
         ----------

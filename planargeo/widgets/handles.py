@@ -1,7 +1,7 @@
 """Handles and dragging: points of the picture the user (or a test) drags to set controls.
 
 The page sends ``{"type": "drag", "id", "x", "y"}`` messages; :meth:`HandleMixin.drag` sends the
-same from Python, through the same check (:meth:`planargeo.widgets.canvas.PictureCanvas.handle_message`).
+same from Python, through the same check (``PictureCanvas.handle_message``).
 """
 from __future__ import annotations
 
@@ -94,7 +94,7 @@ class HandleMixin:
         return found[name]
 
     def drag(self, name: str, start, end, steps: int = 10) -> "Explorer":
-        """Drag handle ``name`` from data point ``start`` to ``end`` in ``steps`` moves, as the page does.
+        """Drag handle ``name`` from ``start`` to ``end`` in ``steps`` moves, as the page does.
 
         Each move is one update or one refusal (named in :attr:`message`); values are not snapped.
 
@@ -139,7 +139,7 @@ class HandleMixin:
         return self
 
     def _drag_message(self, name: str, x: float, y: float) -> bool:
-        """One drag move sent as the page sends it, checked by the page's canvas (or a headless one)."""
+        """One drag move sent as the page sends it, checked by the (page's or a headless) canvas."""
         if self.display_mode == "page":
             canvas = self.canvas
         else:

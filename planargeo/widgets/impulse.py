@@ -68,7 +68,7 @@ def pole_text(tw, pole, rest: str = "at rest") -> str:
 
 
 class ImpulseExplorer(Described, Explorer):
-    """A body at rest struck by a blow: velocity pole, reaction impulse, apparent mass (thesis 5.4, 6.93)."""
+    """A body at rest struck by a blow: pole, reaction impulse, apparent mass (thesis 5.4, 6.93)."""
 
     title = "Impulse and the centre of percussion: a bat or a door struck at rest"
     slug = "impulse"
@@ -105,7 +105,7 @@ class ImpulseExplorer(Described, Explorer):
                        y=float(values["strike y"]), angle_deg=float(values["strike angle"]), J=float(values["J"]))
 
     def _view(self) -> tuple[float, float, float, float]:
-        """The fixed frame grown to hold the blow's tip; no side shorter than the mechanism and 0.2 m."""
+        """The fixed frame grown to hold the blow's tip; no side shorter than the mechanism."""
         v = self.values
         tip = self.handle_position("blow tip")
         return grown_view(self.limits, [tip], 0.1, extra=0.2,

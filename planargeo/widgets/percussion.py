@@ -252,7 +252,7 @@ class PercussionExplorer(Described, Explorer):
         return np.vstack(pts)
 
     def _view(self, st):
-        """The view: the body, the grip and the handles in reach, 0.25 m around, square, in steps of 0.25 m."""
+        """The view: body, grip and handles in reach, 0.25 m around, square, in steps of 0.25 m."""
         pts = self.mechanism_points()
         lo, hi = pts.min(axis=0) - self._STEP, pts.max(axis=0) + self._STEP
         # as tall as wide (and the other way): the whole mechanism fits either way round

@@ -362,7 +362,7 @@ class PlayMixin:
         return False
 
     def _keep_play_hold(self, stack: contextlib.ExitStack) -> bool:
-        """While the page plays, keep the syncs ``stack`` holds (True); they go every PLAY_SYNC_S s."""
+        """While the page plays, keep the syncs ``stack`` holds (True); sent every PLAY_SYNC_S."""
         if not hasattr(self, "_play_hold"):      # before Play's controls exist
             return False
         playing = (self.has_play and self._page_plays and self.play_control is not None

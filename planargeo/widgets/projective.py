@@ -96,12 +96,12 @@ ROUNDING_UNITS = 64.0
 
 
 def _settle(x, C, operand, kind: str) -> np.ndarray:
-    """``x`` (a pole ``C⁻¹ M`` or a polar ``C P``), exactly ideal when it is so within rounding (5.37, 5.36).
+    """``x`` (a pole ``C⁻¹ M`` or polar ``C P``), exactly ideal if so within rounding (5.37, 5.36).
 
-    The pole of the line at infinity for a parabola comes out with ``w ≈ 1e-17``, not 0.  ``solve``
-    is backward stable, so the weight is uncertain by about ``ε cond(C) ‖x‖`` (``C P``: ``ε ‖C‖ ‖P‖``);
-    within :data:`ROUNDING_UNITS` of that it cannot be told from 0 and is set to 0.  A genuinely far
-    pole has a weight 10¹⁰ times larger and stays finite.
+    The pole of the line at infinity for a parabola comes out with ``w ≈ 1e-17``, not 0.
+    ``solve`` is backward stable: the weight is uncertain by about ``ε cond(C) ‖x‖`` (``C P``:
+    ``ε ‖C‖ ‖P‖``); within :data:`ROUNDING_UNITS` of that it cannot be told from 0 and is set to 0.
+    A genuinely far pole has a weight 10¹⁰ times larger and stays finite.
     """
     x = np.array(x, dtype=float)
     eps = np.finfo(float).eps

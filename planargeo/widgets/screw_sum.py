@@ -121,7 +121,7 @@ class ScrewSumExplorer(Described, Explorer):
         return c
 
     def _offer_kinds(self, mode: str) -> None:
-        """Offer the kinds of ``mode`` in both menus; a kind of the other mode becomes its counterpart."""
+        """Offer the kinds of ``mode`` in both menus (a kind of the other mode: its counterpart)."""
         if mode not in KINDS:
             return
         offered = KINDS[mode]

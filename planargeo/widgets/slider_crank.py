@@ -169,7 +169,7 @@ class SliderCrankExplorer(SceneTime, Explorer):
 
     # ------------------------------------------------------------------ state
     def _run_state(self, model, run, t, l, drive):
-        """``(psi, psidot, drift, passed)`` at scene time ``t`` of ``run``, at most :data:`UPDATE_EVALS` spent."""
+        """``(psi, psidot, drift, passed)`` at time ``t`` of ``run`` (UPDATE_EVALS at most)."""
         r = self.params["r"]
         budget = Budget(UPDATE_EVALS)
 
@@ -191,7 +191,7 @@ class SliderCrankExplorer(SceneTime, Explorer):
         return psi, psidot, drift, passed
 
     def compute(self, values, changed):
-        # the state at time t of the run from the initial crank state; the loop closed and solved (9.5, 9.61)
+        # the state at t of the run from the initial crank state, the loop closed (9.5, 9.61)
         psi0 = math.radians(values["crank angle (deg)"])
         l, g = float(values["rod length"]), float(values["gravity"])
         r, thick = self.params["r"], self.params["t"]

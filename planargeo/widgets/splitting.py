@@ -27,10 +27,6 @@ __all__ = ["SplittingExplorer", "NMAX", "x_over_L_7_48"]
 
 #: Most bodies the explorer shows.
 NMAX = 8
-#: units of an acceleration ``[a_x, a_y, α]``
-_ACC = ("m/s²", "m/s²", "rad/s²")
-
-_LAM = ("1/kg", "1/kg", "1/(kg·m)")
 
 
 def x_over_L_7_48(rho: float, L: float, phi: float) -> float:
@@ -74,7 +70,7 @@ class SplittingExplorer(Described, ChainBodies, Explorer):
     slug = "splitting"
     figsize = (7.6, 5.2)
     display_controls = ("mobility centres",)
-    #: lengths in metres (L = 1); below ``zero_tol × scale`` is round-off (real values here are above 1e-4)
+    #: lengths in m (L = 1); below ``zero_tol × scale`` is round-off (real values are above 1e-4)
     scale = 1.0
     zero_tol = 1e-6
 

@@ -1,4 +1,4 @@
-"""Subspace decomposition explorer: one body, one joint, one force (thesis chapter 6, figures 6.1–6.5).
+"""Subspace decomposition explorer: one body, one joint, one force (thesis ch. 6, figures 6.1–6.5).
 
 A body at rest held by a joint (revolute, prismatic, pin in a slot, or the plane joint of 4.79)
 and loaded by a force ``f``: drag the joint, its direction, the force's point and its arrow tip.

@@ -173,7 +173,7 @@ class TreeExplorer(Described, SceneTime, Explorer):
 
     # ------------------------------------------------------------------- Play (SceneTime: t from 0 to T_END)
     def _run_state(self, model, run: dict, t: float):
-        """``(q, qd, drift, events)`` at scene time ``t`` of ``run``, at most :data:`UPDATE_EVALS` spent."""
+        """``(q, qd, drift, events)`` at scene time ``t`` of ``run`` (UPDATE_EVALS at most)."""
         budget = Budget(UPDATE_EVALS)
 
         def step(state, h, t0):
