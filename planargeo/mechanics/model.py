@@ -228,23 +228,19 @@ class Model:
     Parameters
     ----------
     bodies : sequence of Body
-        The bodies, in an order where each parent comes before its children.
+        The bodies, each parent before its children.
     joints : sequence of Joint
         ``joints[i]`` connects body ``i`` to ``parents[i]``.
     parents : sequence of int
         ``parents[i]`` is ``-1`` (ground) or a body index ``< i``.
     {gravity}
     contacts : tuple
-        Contact / loop-closure descriptions (used by :mod:`planargeo.mechanics.contacts`).
+        Contact / loop-closure descriptions (:mod:`planargeo.mechanics.contacts`).
 
     Attributes
     ----------
-    N : int
-        Number of bodies.
-    nq : int
-        Number of joint coordinates.
-    q_offsets : tuple of int
-        ``q[q_offsets[i]:q_offsets[i+1]]`` are joint ``i``'s coordinates.
+    N, nq, q_offsets : int, int, tuple of int
+        Bodies, joint coordinates; ``q[q_offsets[i]:q_offsets[i+1]]`` are joint ``i``'s.
 
     Examples
     --------
@@ -306,11 +302,6 @@ class Model:
         ------
         InputError
             If ``i`` is not a body index.
-
-        Examples
-        --------
-        >>> chain_model(3).q_slice(1)
-        slice(1, 2, None)
         """
         if not -self.N <= i < self.N:
             raise InputError(f"i must be a body index in 0..{self.N - 1}, got {i}")
@@ -328,12 +319,6 @@ class Model:
         Returns
         -------
         tuple of int
-
-        Examples
-        --------
-        >>> m = chain_model(3)
-        >>> m.children(-1), m.children(0), m.children(2)
-        ((0,), (1,), ())
         """
         return tuple(k for k, p in enumerate(self.parents) if p == i)
 
@@ -346,11 +331,6 @@ class Model:
         Returns
         -------
         tuple of int
-
-        Examples
-        --------
-        >>> chain_model(3).ancestors(2)
-        (0, 1, 2)
         """
         path = []
         while i != -1:
@@ -431,9 +411,8 @@ class Model:
 class Data:
     """Per-state workspace of world-frame, at-origin quantities (mutable).
 
-    Filled by :func:`planargeo.mechanics.kinematics.kinematics`; the recursive
-    algorithms add their intermediates (``A``, ``d``, ``a``, ``f``, ``qdd``...).
-    Leading batch dimensions ``...`` are those of ``q``.
+    Filled by :func:`planargeo.mechanics.kinematics.kinematics`; the recursive algorithms add
+    their intermediates (``A``, ``d``, ``a``, ``f``, ``qdd``...).  Batch dimensions ``...`` are ``q``'s.
 
     Attributes
     ----------
@@ -441,24 +420,16 @@ class Data:
         The mechanism the state belongs to.
     q, qd : ndarray (..., nq)
         Joint coordinates and velocities of the state.
-    pose : ndarray (..., N, 3)
-        World pose ``(x, y, theta)`` of each body frame.
-    com : ndarray (..., N, 2)
-        World centre of mass of each body.
-    origin : ndarray (..., N, 2)
-        World position of each joint frame's origin (before the joint motion).
+    pose, com, origin : ndarray (..., N, 3), (..., N, 2), (..., N, 2)
+        World pose ``(x, y, θ)`` of each body frame, its centre of mass, its joint frame's origin.
     S : ndarray (..., 3, nq)
         All joint axes side by side, ``S[..., :, q_slice(i)] = s_i`` (thesis Remark 8).
     I : ndarray (..., N, 3, 3)
         Spatial inertias at the origin (thesis 4.58).
-    v : ndarray (..., N, 3)
-        Body twists (2.9 / 3.32).
-    kappa : ndarray (..., N, 3)
-        Bias accelerations (2.19 / 3.33, with the cross terms of multi-dof joints).
-    g : ndarray (..., N, 3)
-        Applied wrenches: gravity at the centre of mass plus ``f_ext``.
-    p : ndarray (..., N, 3)
-        Bias forces ``-(v×)^T I v - g`` (3.11 / 3.34).
+    v, kappa : ndarray (..., N, 3)
+        Body twists (2.9, 3.32) and bias accelerations (2.19, 3.33, with multi-dof cross terms).
+    g, p : ndarray (..., N, 3)
+        Applied wrenches (gravity plus ``f_ext``) and bias forces ``-(v×)ᵀ I v - g`` (3.11, 3.34).
 
     Examples
     --------
