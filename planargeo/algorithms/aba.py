@@ -1,10 +1,7 @@
 """Recursive articulated-body forward dynamics (thesis 3.6, 3.31-3.42).
 
-Inwards, ``D_i = s_iᵀ A_i s_i``, ``U_i = A_i s_i``, ``u_i = τ_i - s_iᵀ (A_i κ_i + d_i)`` and the
-parent receives ``A_i - U_i D_i⁻¹ U_iᵀ`` and ``A_i κ_i + d_i + U_i D_i⁻¹ u_i`` (3.37-3.39; trees
-sum every child); outwards ``q̈_i = D_i⁻¹ (u_i - U_iᵀ a_λ)`` and ``a_i = a_λ + s_i q̈_i + κ_i``
-(3.40-3.42).  :func:`articulated_body` runs it on arrays at the origin (any joint kind,
-batches, the whole workspace); :func:`forward_dynamics` runs the compiled
+:func:`articulated_body` runs the recursion on arrays at the origin (any joint kind, batches, the
+whole workspace); :func:`forward_dynamics` runs the compiled
 :func:`planargeo.algorithms.kernels.articulated_body_state` where it covers the model.
 """
 from __future__ import annotations

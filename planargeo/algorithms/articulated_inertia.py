@@ -1,11 +1,8 @@
 """Articulated inertia algorithm for a free-floating chain or tree (thesis 7.1, 7.1.1).
 
-``f_i = A_i a_i + d_i`` (7.1); tips to base ``A_N = I_N``, ``d_N = p_N`` and (7.7a, 7.7b, 7.8)
-``A_i = I_i + R U^T A_{i+1}``, ``d_i = p_i + T Q + R U^T (A_{i+1} κ_{i+1} + d_{i+1})`` with
-``R U^T = 1 - T s^T``, each child summed on a tree.  The listing prints ``+ g_i``; the loads enter
-with a minus sign (3.11, ``docs/errata.md``).  :func:`articulated_recursion` is the package's one
-copy, called by the projective (6.108-6.110), chain-splitting (7.6) and stacked (9.27-9.28)
-solutions; the module also holds the model glue they share.
+``f_i = A_i a_i + d_i`` (7.1), tips to base by 7.7a, 7.7b (the listing's ``+ g_i`` is a minus,
+``docs/errata.md``).  :func:`articulated_recursion` is the package's one copy of it; the module
+also holds the model glue the chapter 6-9 algorithms share.
 """
 from __future__ import annotations
 
@@ -289,9 +286,7 @@ def articulated_inertia(model, q, qd=None, tau=None, f_ext=None, *, steps: int |
     return articulated_recursion(*_state_arrays(model, q, qd, tau, f_ext)[1:], steps=steps)
 
 
-# ---------------------------------------------------------------------------
-# Model glue shared by the chapter 6-9 algorithms
-# ---------------------------------------------------------------------------
+# -- Model glue shared by the chapter 6-9 algorithms -------------------------------------------------
 def _state_arrays(model, q, qd, tau, f_ext, checked=False):
     """One state as the recursions take it: ``(data, I, S, kappa, p, tau, parents, points, joint_points)``.
 

@@ -1,12 +1,8 @@
 """Articulated mobility algorithm for a constrained chain or tree (thesis 7.4, 7.4.1).
 
-``a_i = -Λ_i⁻¹ f_{i+1} + b_i`` (7.28) for body ``i`` with the bodies from the ground up to it;
-base to tips with ``T_i``, ``U_i`` on the body inertia (6.36, 6.37): ``η_i`` (7.35),
-``Λ_1⁻¹``, ``b_1`` (7.31) and ``Λ_i⁻¹ = M_i⁻¹ (s T^T I⁻¹ + U R^T Λ_{i-1}⁻¹)``, ``b_i`` (7.38) with
-``M_i = 1 + U R^T Λ_{i-1}⁻¹ I_i``.  The printed minus sign in 7.36/7.38a and the loads dropped
-from ``p_i`` in 7.4.1 are corrected; on a tree the parent's mobility is first loaded with the
-siblings' articulated inertias (9.45; ``docs/errata.md``, chapter 9, item 5).
-:func:`mobility_recursion` is the package's one copy (chain splitting 7.6, stacked 9.48).
+``a_i = -Λ_i⁻¹ f_{i+1} + b_i`` (7.28), base to tips by 7.31, 7.35, 7.38 (the printed sign of
+7.36/7.38a and the loads dropped from ``p_i`` corrected; on a tree the siblings' articulated
+inertias load the parent first, 9.45: ``docs/errata.md``).  :func:`mobility_recursion` is the one copy.
 """
 from __future__ import annotations
 

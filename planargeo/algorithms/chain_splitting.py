@@ -1,10 +1,8 @@
 """Chain splitting: direct body accelerations and joint forces (thesis 7.6).
 
-Split at joint ``i+1``: bodies ``1..i`` with articulated mobility ``Λ_i⁻¹``, ``b_i`` (7.4.1), bodies
-``i+1..N`` with articulated inertia ``A_{i+1}``, ``d_{i+1}`` (7.1.1).  With
-``K = R_{i+1} U_{i+1}^T A_{i+1}`` and ``C = 1 + Λ_i⁻¹ K``, 7.54 gives ``a_i`` and 7.56 ``f_{i+1}``
-(through ``C^T = 1 + K Λ_i⁻¹``, 7.55, true only with the corrected 7.38a); ``a_N = b_N`` and
-``q̈`` by 6.110.
+Split at joint ``i+1`` into a constrained chain (mobility ``Λ_i⁻¹``, ``b_i``, 7.4.1) and a free one
+(inertia ``A_{i+1}``, ``d_{i+1}``, 7.1.1): 7.54 gives ``a_i``, 7.56 ``f_{i+1}`` (through 7.55, true
+only with the corrected 7.38a), ``a_N = b_N`` and ``q̈`` by 6.110.
 """
 from __future__ import annotations
 

@@ -309,14 +309,9 @@ def main(argv=None) -> int:
     int
         The exit status: 0, or 2 for arguments other than ``--warm``.
     """
-    import argparse
-
-    parser = argparse.ArgumentParser(prog="python -m planargeo.algorithms.compiled",
-                                     description="Compile the dynamics kernels into numba's cache ahead of time.")
-    parser.add_argument("--warm", action="store_true", help="compile (or load) every kernel signature")
-    args = parser.parse_args(argv)
-    if not args.warm:
-        parser.print_usage(sys.stderr)
+    if (sys.argv[1:] if argv is None else list(argv)) != ["--warm"]:
+        print("usage: python -m planargeo.algorithms.compiled --warm\n"
+              "Compile (or load) every dynamics kernel signature into numba's cache ahead of time.", file=sys.stderr)
         return 2
     print("planargeo: compiling the dynamics kernels into numba's cache (once per install) ...", flush=True)
     t = time.perf_counter()

@@ -1,11 +1,9 @@
 """Closed loops and contacts in stacked form (thesis 9.3-9.5).
 
-The tree is cut open at its contacts, solved as an open tree, and the contact forces that
-close the loops are added: ``G`` (9.49), ``Υ = G Δ^{-1}`` (9.50), ``z``, ``B`` (9.60); open-loop
-``u`` (9.63); contact rates and ``ν`` (9.55-9.58); ``Γ = B (B^T G Λ^{-1} G^T B)^{-1} B^T``,
-``F = Γ (G u - ν)`` (9.71-9.72); ``a = u - Λ^{-1} G^T F`` and ``q̈`` (9.73, 9.75).  ``Λ^{-1}``
-must be the tree's full stacked mobility, not the block diagonal of 7.37 (``docs/errata.md``).
-:func:`constrained_dynamics_lagrange` is the independent reference (maximal coordinates).
+The tree is cut open at its contacts, solved as an open tree, and the contact forces that close
+the loops are added (9.49-9.75).  ``Λ^{-1}`` there is the tree's full stacked mobility, not the
+block diagonal of 7.37 (``docs/errata.md``).  :func:`constrained_dynamics_lagrange` is the
+independent reference in maximal coordinates.
 """
 from __future__ import annotations
 
@@ -424,9 +422,7 @@ def forward_dynamics_loops(model: Model, q, qd, tau, f_ext=None, contacts=None, 
                       model, q, qd, tau, f_ext)
 
 
-# ---------------------------------------------------------------------------
-# independent reference: maximal coordinates + Lagrange multipliers
-# ---------------------------------------------------------------------------
+# -- independent reference: maximal coordinates + Lagrange multipliers -------------------------------
 #: Each joint kind's constraints in the reference: its point on the parent's (``"on"``) or on a line
 #: through it (``"line"``), and whether the angle is kept.
 _JOINT_CONSTRAINTS = {"revolute": ("on", False), "prismatic": ("line", True), "revolute_prismatic": ("line", False),

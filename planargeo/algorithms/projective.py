@@ -1,12 +1,8 @@
 """Projective articulated dynamics: subspaces, propagators, forward dynamics (thesis 6.5-6.8).
 
-Each joint splits its body's wrench and acceleration into an active and a reactive part,
-``f_i = T_i Q_i + R_i μ_i``, ``a_i = s_i ψ_i + U_i γ_i`` (6.38, 6.44), with ``T``, ``U`` on the
-articulated inertia (6.105, 6.99).  Base outwards (6.101-6.110): ``γ = Rᵀ (a_λ + κ)``,
-``ψ = Tᵀ A⁻¹ (T Q - d)``, ``a = s ψ + U γ``, ``μ = Uᵀ A U γ + Uᵀ d``, ``f = T Q + R μ``,
-``q̈ = Tᵀ (a - a_λ - κ)``; screws at the origin, ``R_i`` the package's one basis
-(:func:`planargeo.mechanics.joints.R_of`: for a free revolute joint ``μ`` is the pin force along
-x and y).  ``q̈`` does not depend on the basis.
+Each joint splits its body's wrench and acceleration into active and reactive parts,
+``f = T Q + R μ``, ``a = s ψ + U γ`` (6.38, 6.44), solved base outwards by 6.101-6.110 with
+``R_i`` the package's one basis (:func:`planargeo.mechanics.joints.R_of`); ``q̈`` does not depend on it.
 """
 from __future__ import annotations
 
@@ -21,9 +17,7 @@ __all__ = ["acceleration_propagator", "force_propagator", "joint_accelerations",
            "ProjectiveWorkspace", "projective_solve", "projective_workspace", "forward_dynamics_projective"]
 
 
-# ---------------------------------------------------------------------------
-# Propagators (thesis 6.113)
-# ---------------------------------------------------------------------------
+# -- Propagators (thesis 6.113) ----------------------------------------------------------------------
 def _propagator_args(I, s, Q, T):
     I = np.asarray(I, dtype=float)
     s = np.asarray(s, dtype=float).reshape(3, -1)
@@ -83,16 +77,13 @@ def force_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.ndarray
     Returns
     -------
     numpy.ndarray, shape (3,)
-        ``f_i``.
 
     Examples
     --------
-    The pinned point mass of :func:`acceleration_propagator`: the pin carries none of the push.
-
     >>> from planargeo.screws.twists import inertia_matrix
     >>> f = force_propagator(inertia_matrix(1.0, [1.0, 0.0], 0.0), [[0.0], [0.0], [1.0]], [0.0],
     ...                      [0.0, -1.0, -1.0], np.zeros(3), np.zeros(3), np.zeros(3))
-    >>> np.round(f, 12) + 0.0
+    >>> np.round(f, 12) + 0.0          # the pin carries none of a push through the mass
     array([0., 0., 0.])
     """
     I, s, Q, T = _propagator_args(I, s, Q, T)
@@ -126,9 +117,7 @@ def joint_accelerations(T, a, kappa, parents) -> np.ndarray:
     return np.concatenate(qdd) if qdd else np.zeros(0)
 
 
-# ---------------------------------------------------------------------------
-# Projective forward dynamics (thesis 6.101-6.110)
-# ---------------------------------------------------------------------------
+# -- Projective forward dynamics (thesis 6.101-6.110) ------------------------------------------------
 @dataclass
 class ProjectiveWorkspace:
     """Everything the projective solution computes, per body ``i`` (thesis 6.99-6.110; lists of arrays).
@@ -136,18 +125,11 @@ class ProjectiveWorkspace:
     Attributes
     ----------
     s, R, T, U : list of (3, k), (3, 3-k), (3, k), (3, 3-k)
-        Joint space, reaction space (:func:`planargeo.mechanics.joints.R_of`), active force and
-        reactive acceleration subspaces (6.99, 6.105).
-    A, d : (N, 3, 3), (N, 3)
-        Articulated inertias and bias forces (7.7a, 7.7b).
-    Q, mu : list of (k,), (3-k,)
-        Active (joint torque) and reaction components of ``f_i`` (6.104, 6.106a).
-    psi, gamma : list of (k,), (3-k,)
-        Active and reactive components of ``a_i`` (6.107, 6.101).
-    a, f : (N, 3)
-        Body accelerations (6.108) and internal joint forces (6.109).
-    qdd : (nq,)
-        Joint accelerations (6.110).
+        Joint and reaction spaces, active force and reactive acceleration subspaces (6.99, 6.105).
+    A, d : (N, 3, 3), (N, 3) articulated inertias and bias forces (7.7a, 7.7b).
+    Q, mu, psi, gamma : lists
+        Active and reaction components of ``f_i`` (6.104, 6.106a) and of ``a_i`` (6.107, 6.101).
+    a, f, qdd : body accelerations (6.108), joint forces (6.109), joint accelerations (6.110).
     """
 
     s: list
@@ -187,8 +169,7 @@ def projective_solve(I, S, kappa, p, tau, parents=None, points=None, joint_point
     ----------
     I, S, kappa, p, tau, parents, points, joint_points
         One state (bias accelerations (2.19) and forces (3.11)), as for
-        :func:`planargeo.algorithms.articulated_inertia.articulated_recursion`
-        (``points``: where the reaction forces of prismatic joints pass).
+        :func:`planargeo.algorithms.articulated_inertia.articulated_recursion`.
 
     Returns
     -------
@@ -198,17 +179,14 @@ def projective_solve(I, S, kappa, p, tau, parents=None, points=None, joint_point
     Raises
     ------
     SingularConfigurationError
-        When some ``s_i^T A_i s_i`` is singular (the rule of :data:`planargeo.errors.COND_LIMIT`).
+        When some ``s_i^T A_i s_i`` is singular.
 
     Examples
     --------
-    One unit point mass at (1, 0) on a pin at the origin, a unit torque: ``qdd = 1``.
-
     >>> from planargeo.screws.twists import inertia_matrix
-    >>> ws = projective_solve([inertia_matrix(1.0, [1.0, 0.0], 0.0)], [np.array([[0.0], [0.0], [1.0]])],
-    ...                       np.zeros((1, 3)), np.zeros((1, 3)), [np.array([1.0])])
-    >>> ws.qdd, ws.a[0]
-    (array([1.]), array([0., 0., 1.]))
+    >>> projective_solve([inertia_matrix(1.0, [1.0, 0.0], 0.0)], [np.array([[0.0], [0.0], [1.0]])],
+    ...                  np.zeros((1, 3)), np.zeros((1, 3)), [np.array([1.0])]).qdd    # unit torque, unit mass at 1
+    array([1.])
     """
     art = articulated_recursion(I, S, kappa, p, tau, parents, points, joint_points)
     N = len(art.S)

@@ -1,8 +1,6 @@
 """Recursive Newton-Euler inverse dynamics (thesis 3.5, 3.9-3.12).
 
-Outwards ``a_i = a_λ + s_i q̈_i + κ_i`` (2.18, ``a_ground = 0``, gravity in ``p_i``); inwards
-``f_i = I_i a_i + p_i + Σ_children f_c`` (3.10) and ``τ_i = s_iᵀ f_i`` (3.5).
-:func:`newton_euler` runs it on arrays; :func:`inverse_dynamics` runs the compiled
+:func:`newton_euler` runs the recursion on arrays; :func:`inverse_dynamics` runs the compiled
 :func:`planargeo.algorithms.kernels.newton_euler_state` where it covers the model.
 """
 from __future__ import annotations

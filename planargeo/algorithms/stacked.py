@@ -31,9 +31,7 @@ __all__ = ["adjacency", "trunk", "blocks", "StackedSolution", "stacked_solve", "
            "articulation_matrix", "direct_accelerations", "forward_dynamics_stacked"]
 
 
-# ---------------------------------------------------------------------------
-# topology
-# ---------------------------------------------------------------------------
+# -- topology ----------------------------------------------------------------------------------------
 def adjacency(parents) -> np.ndarray:
     """Adjacency matrix ``C`` of a tree (thesis Definition 41, 9.1, 9.2): ``C[i, j] = 1`` when ``parents[i] = j``.
 
@@ -368,15 +366,11 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     ks = [si.shape[1] for si in art.S]
     three = [3] * N
     sol = StackedSolution()
-    sol.N = N
+    sol.N, sol.parents, sol.articulated, sol.data, sol._args = N, tuple(model.parents), art, data, args[1:]
     sol.C, sol.Dinv = _topology(tuple(model.parents))
-    sol.S = _blockdiag(art.S, three, ks)
-    sol.T = _blockdiag(art.T, three, ks)
-    sol.P = _blockdiag(art.P, three, three)
-    sol.I = _blockdiag(list(data.I), three, three)
-    sol.A = _blockdiag(art.A, three, three)
-    sol.kappa = data.kappa.reshape(-1)
-    sol.p = data.p.reshape(-1)
+    sol.S, sol.T = _blockdiag(art.S, three, ks), _blockdiag(art.T, three, ks)
+    sol.P, sol.I, sol.A = (_blockdiag(x, three, three) for x in (art.P, list(data.I), art.A))
+    sol.kappa, sol.p = data.kappa.reshape(-1), data.p.reshape(-1)
     Q = np.concatenate(args[5]) if N else np.zeros(0)
     C, T, P, A = sol.C, sol.T, sol.P, sol.A
     # L = (1 - C^T R U^T)^-1 (9.31) is applied by solves with the unit upper triangular
@@ -396,21 +390,15 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
         mobs = [_effective_mobility(Ai, si, gram=g) for si, Ai, g in zip(art.S, art.A, art.gram)]
     sol.StTAinv = _blockdiag(mobs, three, three)
     sol.mobs = np.reshape(mobs, (N, 3, 3))         # its 3×3 blocks (mobility_times)
-    sol.parents = tuple(model.parents)
     sol.a = _unit_upper_solve(Linv, sol.StTAinv @ (T @ Q - sol.d) + P.T @ sol.kappa, trans=True)  # U R^T = P^T
     # (9.41) with (9.17): internal forces
     sol.f = T @ Q + P @ (A @ (C @ sol.a + sol.kappa) + sol.d)
     # (9.43): q̈ = T^T (Δ a - κ)
     sol.qdd = T.T @ (sol.a - C @ sol.a - sol.kappa)
-    sol.articulated = art
-    sol.data = data
-    sol._args = args[1:]
     return sol
 
 
-# ---------------------------------------------------------------------------
-# direct solution (9.2)
-# ---------------------------------------------------------------------------
+# -- direct solution (9.2) ---------------------------------------------------------------------------
 def direct_accelerations(sol: StackedSolution, Lambda_inv, b) -> np.ndarray:
     """Direct solution of the body accelerations (thesis 9.48, corrected).
 
