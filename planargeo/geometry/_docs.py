@@ -12,6 +12,10 @@ import textwrap
 
 _PLACE = re.compile(r"^( *)\{([\w ]+)\}$", re.M)
 
+#: Returns sections of broadcast arrays, by shape: every table holds them (a line ``{returns_3}``).
+RETURNS = {f"returns_{key}": f"Returns\n-------\nnumpy.ndarray{kind}, shape (...{shape})" for key, kind, shape in
+           [("scalar", "", ""), ("bool", " of bool", ""), ("2", "", ", 2"), ("3", "", ", 3"), ("3x3", "", ", 3, 3")]}
+
 
 def entries(*tables):
     """A decorator writing the entries of ``tables`` into a docstring where a line names them in braces.
@@ -19,7 +23,7 @@ def entries(*tables):
     Parameters
     ----------
     *tables : dict of str to str
-        Entries by name; a later table's entry replaces an earlier one's.
+        Entries by name; a later table's entry replaces an earlier one's (and :data:`RETURNS`).
 
     Returns
     -------
@@ -40,7 +44,7 @@ def entries(*tables):
     >>> print(f.__doc__.splitlines()[4])
         x : float
     """
-    table = {name: text for t in tables for name, text in t.items()}
+    table = {name: text for t in (RETURNS, *tables) for name, text in t.items()}
 
     def fill(match):
         names = match[2].split()

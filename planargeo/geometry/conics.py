@@ -30,8 +30,6 @@ __all__ = [
     "conic_circle", "conic_ellipse", "conic_hyperbola", "conic_parabola", "conic_from_coefficients",
 ]
 
-_E2 = np.array([0.0, 0.0, 1.0])
-
 #: Docstring entries many functions here share, each said once (a line ``{C p}`` in a docstring: those
 #: entries; :class:`planargeo.geometry.elements.Conic` uses them too).
 _ENTRIES = {
@@ -200,9 +198,7 @@ def conic_residual(C, p) -> np.ndarray:
     ----------
     {C p}
 
-    Returns
-    -------
-    numpy.ndarray, shape (...)
+    {returns_scalar}
 
     Examples
     --------
@@ -225,9 +221,7 @@ def is_on_conic(C, p, rtol: float = 1e-9) -> np.ndarray:
     rtol : float, optional
         Relative tolerance of the test.
 
-    Returns
-    -------
-    numpy.ndarray of bool, shape (...)
+    {returns_bool}
 
     Examples
     --------
@@ -347,9 +341,7 @@ def centre(C) -> np.ndarray:
     ----------
     {C}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
+    {returns_3}
 
     Raises
     ------
@@ -944,9 +936,7 @@ def drawable_conic(C) -> np.ndarray:
     ----------
     {C}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
+    {returns_3x3}
 
     Examples
     --------
@@ -1074,6 +1064,7 @@ def _affine_frame(C, rtol):
 
 
 @overflow_checked("A or t")
+@_shared
 def conic_from_affine(kind: str, A, t) -> np.ndarray:
     """The image of the unit curve ``kind`` under ``x = A u + t`` (inverse of :func:`affine_frame`; 5.47).
 
@@ -1086,9 +1077,7 @@ def conic_from_affine(kind: str, A, t) -> np.ndarray:
     t : array_like, shape (..., 2)
         Translation (centre or vertex, m).
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
+    {returns_3x3}
 
     Raises
     ------

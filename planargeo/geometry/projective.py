@@ -187,6 +187,7 @@ def normalize_line(l) -> np.ndarray:
         return check_overflow(l / den[..., None], "normalize_line(l)", "l's distance from the origin")
 
 
+@_shared
 def normalize(x, kind: str | None = None) -> np.ndarray:
     """Base coordinates of points or lines: :func:`normalize_point` or :func:`normalize_line` by ``kind``.
 
@@ -197,9 +198,7 @@ def normalize(x, kind: str | None = None) -> np.ndarray:
     kind : {"point", "line"}
         How to read ``x`` (required: the two are scaled differently).
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
+    {returns_3}
 
     Raises
     ------
@@ -228,9 +227,7 @@ def is_ideal(p) -> np.ndarray:
     ----------
     {p}
 
-    Returns
-    -------
-    numpy.ndarray of bool, shape (...)
+    {returns_bool}
 
     Examples
     --------
@@ -249,9 +246,7 @@ def is_at_infinity(l) -> np.ndarray:
     ----------
     {l}
 
-    Returns
-    -------
-    numpy.ndarray of bool, shape (...)
+    {returns_bool}
 
     Examples
     --------
@@ -263,6 +258,7 @@ def is_at_infinity(l) -> np.ndarray:
 
 
 # --------------------------------------------------------------------------- Euclidean <-> homogeneous
+@_shared
 def from_xy(xy) -> np.ndarray:
     """Homogeneous point ``[y, -x, 1]`` of Euclidean points (thesis 5.49, 5.51).
 
@@ -271,9 +267,7 @@ def from_xy(xy) -> np.ndarray:
     xy : array_like, shape (..., 2)
         Euclidean points ``(x, y)`` (m).
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
+    {returns_3}
 
     Examples
     --------
@@ -288,6 +282,7 @@ def from_xy(xy) -> np.ndarray:
     return out
 
 
+@_shared
 def from_direction(d) -> np.ndarray:
     """The point at infinity ``[dy, -dx, 0]`` in direction ``d`` (a translation perpendicular to ``d``).
 
@@ -296,9 +291,7 @@ def from_direction(d) -> np.ndarray:
     d : array_like, shape (..., 2)
         A non-zero Euclidean direction.
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
+    {returns_3}
 
     Raises
     ------
@@ -328,9 +321,7 @@ def to_xy(p) -> np.ndarray:
     ----------
     {p}
 
-    Returns
-    -------
-    ndarray, shape (..., 2)
+    {returns_2}
 
     Raises
     ------
@@ -357,9 +348,7 @@ def direction(p) -> np.ndarray:
     ----------
     {p}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 2)
+    {returns_2}
 
     Examples
     --------
@@ -382,9 +371,7 @@ def line_direction(l) -> np.ndarray:
     ----------
     {l}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 2)
+    {returns_2}
 
     Examples
     --------
@@ -406,9 +393,7 @@ def foot_point(l) -> np.ndarray:
     ----------
     {l}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
+    {returns_3}
 
     Examples
     --------
@@ -428,6 +413,7 @@ def foot_point(l) -> np.ndarray:
 
 
 # --------------------------------------------------------------------------- join / meet
+@_shared
 def cross_cond(a, b) -> np.ndarray:
     """Condition number ``κ = |a| |b| / |a × b|`` of :func:`join` and :func:`meet`.
 
@@ -439,9 +425,7 @@ def cross_cond(a, b) -> np.ndarray:
     a, b : array_like, shape (..., 3)
         Two homogeneous points, or two lines.
 
-    Returns
-    -------
-    numpy.ndarray, shape (...)
+    {returns_scalar}
 
     Examples
     --------
@@ -535,9 +519,7 @@ def join(p, q, cond_limit: float = COND_LIMIT) -> np.ndarray:
         Homogeneous points.
     {cond_limit}
 
-    Returns
-    -------
-    ndarray, shape (..., 3)
+    {returns_3}
 
     {cross_raises}
 
@@ -565,9 +547,7 @@ def meet(l, m, cond_limit: float = COND_LIMIT) -> np.ndarray:
         Homogeneous lines.
     {cond_limit}
 
-    Returns
-    -------
-    ndarray, shape (..., 3)
+    {returns_3}
 
     {cross_raises}
 
@@ -589,9 +569,7 @@ def incidence(p, l) -> np.ndarray:
     ----------
     {p l}
 
-    Returns
-    -------
-    numpy.ndarray, shape (...)
+    {returns_scalar}
 
     Examples
     --------
@@ -615,9 +593,7 @@ def signed_distance(p, l) -> np.ndarray:
     ----------
     {p l}
 
-    Returns
-    -------
-    numpy.ndarray, shape (...)
+    {returns_scalar}
 
     Examples
     --------
@@ -640,6 +616,7 @@ def signed_distance(p, l) -> np.ndarray:
     return check_overflow(out, "signed_distance(p, l)", "the distance", ok=ideal)
 
 
+@_shared
 def pencil(l1, l2, beta) -> np.ndarray:
     """Member ``l1 + beta (l2 - l1)`` of the pencil of two lines (thesis 5.20; of points, 5.9).
 
@@ -650,9 +627,7 @@ def pencil(l1, l2, beta) -> np.ndarray:
     beta : array_like, shape (...)
         ``0`` gives ``l1``, ``1`` gives ``l2``.
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
+    {returns_3}
 
     Examples
     --------
@@ -677,9 +652,7 @@ def line_through_point_direction(p, d) -> np.ndarray:
     d : array_like, shape (..., 2)
         Euclidean direction (non-zero).
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
+    {returns_3}
 
     Raises
     ------
@@ -701,6 +674,7 @@ def line_through_point_direction(p, d) -> np.ndarray:
 
 
 # --------------------------------------------------------------------------- standard coordinates
+@_shared
 def to_standard(x) -> np.ndarray:
     """Standard homogeneous coordinates ``T @ x`` (thesis 5.1-5.16, ``T`` of 5.47): ``(x, y)`` is ``[1, x, y]``.
 
@@ -709,9 +683,7 @@ def to_standard(x) -> np.ndarray:
     x : array_like, shape (..., 3)
         Points or lines in the package's coordinates.
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
+    {returns_3}
 
     Examples
     --------
@@ -722,6 +694,7 @@ def to_standard(x) -> np.ndarray:
     return np.einsum("ij,...j->...i", T_STD, x)
 
 
+@_shared
 def from_standard(x) -> np.ndarray:
     """The package's coordinates of standard homogeneous points or lines (thesis 5.47; ``T`` is its own inverse).
 
@@ -730,9 +703,7 @@ def from_standard(x) -> np.ndarray:
     x : array_like, shape (..., 3)
         Points ``[w, x, y]`` or lines in standard coordinates.
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
+    {returns_3}
 
     Examples
     --------

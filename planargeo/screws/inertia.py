@@ -89,9 +89,7 @@ def mass(inertia) -> np.ndarray:
     ----------
     {inertia}
 
-    Returns
-    -------
-    numpy.ndarray, shape (...)
+    {returns_scalar}
 
     Examples
     --------
@@ -120,9 +118,7 @@ def centre_of_mass(inertia) -> np.ndarray:
     ----------
     {inertia}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 2)
+    {returns_2}
 
     Raises
     ------
@@ -147,9 +143,7 @@ def rotational_inertia(inertia) -> np.ndarray:
     ----------
     {inertia}
 
-    Returns
-    -------
-    numpy.ndarray, shape (...)
+    {returns_scalar}
 
     Raises
     ------
@@ -174,9 +168,7 @@ def radius_of_gyration(inertia) -> np.ndarray:
     ----------
     {inertia}
 
-    Returns
-    -------
-    numpy.ndarray, shape (...)
+    {returns_scalar}
 
     Raises
     ------
@@ -200,9 +192,7 @@ def mobility(inertia) -> np.ndarray:
     ----------
     {inertia}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
+    {returns_3x3}
 
     Raises
     ------
@@ -304,9 +294,7 @@ def drawable_conic(inertia) -> np.ndarray:
     ----------
     {inertia}
 
-    Returns
-    -------
-    ndarray (..., 3, 3)
+    {returns_3x3}
 
     Raises
     ------
@@ -630,9 +618,7 @@ class Inertia(_Held):
         ----------
         {twist}
 
-        Returns
-        -------
-        numpy.ndarray, shape (...)
+        {returns_scalar}
 
         Examples
         --------
@@ -649,9 +635,7 @@ class Inertia(_Held):
         ----------
         {twist}
 
-        Returns
-        -------
-        numpy.ndarray, shape (..., 3)
+        {returns_3}
 
         Examples
         --------
@@ -668,9 +652,7 @@ class Inertia(_Held):
         ----------
         {pole}
 
-        Returns
-        -------
-        numpy.ndarray, shape (..., 3)
+        {returns_3}
 
         Examples
         --------
@@ -707,9 +689,7 @@ class Inertia(_Held):
         ----------
         {impulse}
 
-        Returns
-        -------
-        numpy.ndarray, shape (..., 3)
+        {returns_3}
 
         Examples
         --------
@@ -738,12 +718,11 @@ class Inertia(_Held):
         from planargeo.geometry.elements import Point
         return Point(self.percussion_pole_array(line))
 
+    @_documented
     def drawable_conic_matrix(self) -> np.ndarray:
         """:func:`drawable_conic` of this inertia, the radius-of-gyration circle's matrix.
 
-        Returns
-        -------
-        numpy.ndarray, shape (..., 3, 3)
+        {returns_3x3}
 
         Examples
         --------

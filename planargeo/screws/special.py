@@ -269,6 +269,7 @@ def wrenches_case(f1, f2, rtol: float = 1e-12) -> SpecialCase:
     return _case("concurrent")
 
 
+@_documented
 def horizon_point(handle, centre=(0.0, 0.0), radius=1.0) -> np.ndarray:
     """The homogeneous point a drag handle at ``handle`` means, in the disc model (thesis 10.2.4).
 
@@ -285,9 +286,7 @@ def horizon_point(handle, centre=(0.0, 0.0), radius=1.0) -> np.ndarray:
     radius : float
         Radius of the horizon (> 0).
 
-    Returns
-    -------
-    ndarray (..., 3)
+    {returns_3}
 
     Raises
     ------

@@ -36,9 +36,7 @@ def X_P(point) -> np.ndarray:
     ----------
     {point}
 
-    Returns
-    -------
-    ndarray, shape (..., 3, 3)
+    {returns_3x3}
 
     Examples
     --------
@@ -61,9 +59,7 @@ def X_P_inv_T(point) -> np.ndarray:
     ----------
     {point}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
+    {returns_3x3}
 
     Examples
     --------
@@ -73,6 +69,7 @@ def X_P_inv_T(point) -> np.ndarray:
     return np.ascontiguousarray(np.swapaxes(X_P(-as_xy(point, "point")), -1, -2))     # X_P(p)⁻¹ = X_P(-p)
 
 
+@documented
 def rot(theta) -> np.ndarray:
     """Rotation of screw coordinates by ``theta`` about the reference point (twists and wrenches alike).
 
@@ -81,9 +78,7 @@ def rot(theta) -> np.ndarray:
     theta : array_like, shape (...)
         Angle (rad).
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
+    {returns_3x3}
 
     Examples
     --------
@@ -102,6 +97,7 @@ def rot(theta) -> np.ndarray:
 
 
 @overflow_checked("theta or point")
+@documented
 def X_frame(theta, point) -> np.ndarray:
     """Twist transform to a frame at ``point`` turned by ``theta``: ``rot(θ) X_P(p)`` (thesis 1.56, 4.7).
 
@@ -112,9 +108,7 @@ def X_frame(theta, point) -> np.ndarray:
     point : array_like (..., 2)
         Origin of the new frame ``(x, y)`` (m).
 
-    Returns
-    -------
-    ndarray (..., 3, 3)
+    {returns_3x3}
 
     Examples
     --------
@@ -136,9 +130,7 @@ def X_frame_inv_T(theta, point) -> np.ndarray:
         Angle of the new frame (rad).
     {point}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
+    {returns_3x3}
 
     Examples
     --------
@@ -150,6 +142,7 @@ def X_frame_inv_T(theta, point) -> np.ndarray:
 
 
 @overflow_checked("theta or about")
+@documented
 def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
     """Twist map ``X_P(-c) rot(θ) X_P(c)`` of a rigid rotation by ``theta`` about ``about`` (thesis 4.8, 1.56).
 
@@ -162,9 +155,7 @@ def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
     about : array_like, shape (..., 2), optional
         Centre ``c`` of the rotation (m).
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
+    {returns_3x3}
 
     Examples
     --------
@@ -177,6 +168,7 @@ def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
     return X_P(-c) @ rot(theta) @ X_P(c)
 
 
+@documented
 def crm(v) -> np.ndarray:
     """Planar motion cross operator ``v×`` (thesis 2.16 projected, 4.63).
 
@@ -187,9 +179,7 @@ def crm(v) -> np.ndarray:
     v : array_like, shape (..., 3)
         Twist ``[vx, vy, ω]``.
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
+    {returns_3x3}
 
     Examples
     --------
@@ -205,6 +195,7 @@ def crm(v) -> np.ndarray:
     return out
 
 
+@documented
 def crf(v) -> np.ndarray:
     """Planar force cross operator ``v×* = -(v×)ᵀ`` (dual of :func:`crm`, thesis 3.8).
 
@@ -213,9 +204,7 @@ def crf(v) -> np.ndarray:
     v : array_like, shape (..., 3)
         Twist ``[vx, vy, ω]``.
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
+    {returns_3x3}
 
     Examples
     --------
@@ -233,9 +222,7 @@ def unit_rotation(point) -> np.ndarray:
     ----------
     {point}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
+    {returns_3}
 
     Examples
     --------
@@ -246,6 +233,7 @@ def unit_rotation(point) -> np.ndarray:
     return np.stack([p[..., 1], -p[..., 0], np.ones(p.shape[:-1])], axis=-1)
 
 
+@documented
 def unit_translation(direction) -> np.ndarray:
     """Unit twist ``[dx, dy, 0] / |d|`` of a translation along ``direction`` (thesis 5.62).
 
@@ -254,9 +242,7 @@ def unit_translation(direction) -> np.ndarray:
     direction : array_like, shape (..., 2)
         Direction of the velocity (non-zero).
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
+    {returns_3}
 
     Raises
     ------
@@ -278,6 +264,7 @@ def unit_translation(direction) -> np.ndarray:
 
 
 @overflow_checked("mass, com or inertia_about_com")
+@documented
 def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
     """Planar spatial inertia at the origin (thesis 1.68 projected; 4.58, 5.64).
 
@@ -296,9 +283,7 @@ def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
     inertia_about_com : array_like (...)
         ``J >= 0`` (kg·m²; ``J = 0`` is a point mass).
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
+    {returns_3x3}
 
     Raises
     ------
@@ -334,9 +319,7 @@ def power(twist, wrench) -> np.ndarray:
     ----------
     {twist wrench}
 
-    Returns
-    -------
-    numpy.ndarray, shape (...)
+    {returns_scalar}
 
     Examples
     --------
@@ -361,9 +344,7 @@ def kinetic_energy(inertia, twist) -> np.ndarray:
     ----------
     {inertia twist}
 
-    Returns
-    -------
-    numpy.ndarray, shape (...)
+    {returns_scalar}
 
     Raises
     ------
@@ -398,9 +379,7 @@ def twist_magnitude(twist) -> np.ndarray:
     ----------
     {twist}
 
-    Returns
-    -------
-    numpy.ndarray, shape (...)
+    {returns_scalar}
 
     Examples
     --------
@@ -419,9 +398,7 @@ def pole_xy(twist) -> np.ndarray:
     ----------
     {twist}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 2)
+    {returns_2}
 
     Examples
     --------
@@ -439,9 +416,7 @@ def wrench_magnitude(wrench) -> np.ndarray:
     ----------
     {wrench}
 
-    Returns
-    -------
-    numpy.ndarray, shape (...)
+    {returns_scalar}
 
     Examples
     --------
@@ -500,9 +475,7 @@ def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
     rtol : float, optional
         Relative tolerance of the zero-power test.
 
-    Returns
-    -------
-    numpy.ndarray of bool, shape (...)
+    {returns_bool}
 
     Examples
     --------
@@ -531,9 +504,7 @@ def inertia_at(inertia, point) -> np.ndarray:
     ----------
     {inertia point}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
+    {returns_3x3}
 
     Raises
     ------
@@ -568,9 +539,7 @@ def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
         Angle of the new frame (rad).
     {point}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
+    {returns_3x3}
 
     Raises
     ------
@@ -601,9 +570,7 @@ def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
     about : array_like (..., 2), optional
         Centre of the rotation (m).
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
+    {returns_3x3}
 
     Raises
     ------
@@ -630,9 +597,7 @@ def momentum(inertia, twist) -> np.ndarray:
     ----------
     {inertia twist}
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
+    {returns_3}
 
     Raises
     ------
@@ -717,9 +682,7 @@ def bias_force(inertia, twist, g=None) -> np.ndarray:
     g : array_like (..., 3), optional
         External wrench (gravity, loads) at the origin; default zero.
 
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3)
+    {returns_3}
 
     Raises
     ------
@@ -884,6 +847,7 @@ class _Screw(_Held):
         theirs = self._dual._coords(other)
         return (self._array, theirs) if self._dual is Wrench else (theirs, self._array)
 
+    @documented
     def power(self, other) -> np.ndarray:
         """Power ``vᵀf`` (W; thesis 5.73) with ``other`` of the dual kind; also ``v @ f``.
 
@@ -892,9 +856,7 @@ class _Screw(_Held):
         other : Twist, Wrench or array_like, shape (..., 3)
             The screw of the dual kind.
 
-        Returns
-        -------
-        numpy.ndarray, shape (...)
+        {returns_scalar}
 
         Examples
         --------
@@ -903,6 +865,7 @@ class _Screw(_Held):
         """
         return power(*self._pair(other))
 
+    @documented
     def reciprocal(self, other, rtol: float = 1e-12) -> np.ndarray:
         """True where this screw and ``other`` of the dual kind do no power (:func:`reciprocal`).
 
@@ -913,9 +876,7 @@ class _Screw(_Held):
         rtol : float, optional
             Relative tolerance of the zero-power test.
 
-        Returns
-        -------
-        numpy.ndarray of bool, shape (...)
+        {returns_bool}
 
         Examples
         --------
