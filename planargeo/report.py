@@ -96,9 +96,8 @@ def quantity(scene: str, key: str) -> Quantity:
 
     Examples
     --------
-    >>> q = quantity("slider-crank", "F3")
-    >>> q.symbol, q.equation, q.unit
-    ('F₃ = B₃ ξ₃', '9.91, 9.92', 'N, N, N·m')
+    >>> quantity("slider-crank", "F3").equation
+    '9.91, 9.92'
     """
     table = quantity_info(scene)
     if key not in table:
@@ -393,21 +392,7 @@ def _shape(v: Any) -> tuple[int, ...] | None:
 
 
 def _fmt_value(v: Any, indent: int) -> list[str]:
-    """Lines for one value: scalars and vectors on one line, matrices as aligned rows.
-
-    Wider than :data:`MAX_TABLE_COLUMNS`: its shape only; three or more dimensions: a shape line,
-    then each matrix labelled with its leading indices; ragged lists as JSON.
-
-    Examples
-    --------
-    >>> for line in _fmt_value([[[1.0, 0.0], [0.0, 1.0]], [[2.0, 0.5], [0.5, 3.0]]], 0):
-    ...     print(line)
-    shape (2, 2, 2)
-    [0]  [1.0  0.0]
-         [0.0  1.0]
-    [1]  [2.0  0.5]
-         [0.5  3.0]
-    """
+    """Lines for one value: scalars and vectors on one line, matrices as aligned rows, wider ones as their shape."""
     shape = _shape(v)
     if shape is not None and len(shape) == 2 and shape[1] > MAX_TABLE_COLUMNS:
         return [f"{shape[0]}×{shape[1]} matrix, too wide for the table (--json gives its values)"]
@@ -459,18 +444,8 @@ def format_table(result: dict, info: dict | None = None) -> str:
 
     Examples
     --------
-    >>> print(format_table({"scene": "x", "params": {"a": 1.5}, "state": {}, "quantities": {"M": [[1.0, 0.0], [0.0, 2.0]]}}))
-    scene: x
-    <BLANKLINE>
-    parameters
-      a  1.5
-    <BLANKLINE>
-    state
-      (none)
-    <BLANKLINE>
-    quantities
-      M  [1.0  0.0]
-         [0.0  2.0]
+    >>> format_table({"scene": "x", "params": {}, "state": {}, "quantities": {"M": [[1.0, 0.0], [0.0, 2.0]]}}).splitlines()[-2:]
+    ['  M  [1.0  0.0]', '     [0.0  2.0]']
     """
     out = [f"scene: {result['scene']}"]
     for title, key in (("parameters", "params"), ("state", "state"), ("quantities", "quantities")):
