@@ -139,11 +139,11 @@ def label_toward(el: dict, u, gap: float = 9.0) -> None:
 
 
 def labelled_line(pic, id: str, l, text: str, *, anchor=None, side: float = 1.0, ahead: float = 0.0,
-                  **kw) -> None:
+                  gap: float = 7.0, **kw) -> None:
     """The line ``l`` (:meth:`Picture.line`, ``**kw``) labelled ``text`` beside it, clear of its arrow.
 
-    The arrow sits near ``anchor``, the label ``ahead`` (data units) from it along the force, on
-    ``side`` +1 (above) or -1 (below); a couple keeps its glyph's label.
+    The arrow sits near ``anchor``, the label ``ahead`` (data units) from it along the force, ``gap``
+    pixels on ``side`` +1 (above) or -1 (below); a couple's glyph is labelled ``text: couple``.
     """
     l = np.asarray(l, dtype=float)
     if l[0] == 0.0 and l[1] == 0.0:
@@ -152,4 +152,4 @@ def labelled_line(pic, id: str, l, text: str, *, anchor=None, side: float = 1.0,
     pic.line(id, l, label="", anchor=anchor, **kw)
     if anchor is not None and ahead:
         anchor = np.asarray(anchor, dtype=float) + ahead * l[:2] / math.hypot(l[0], l[1])
-    label_line(pic, id, text, anchor=anchor, side=side)
+    label_line(pic, id, text, anchor=anchor, side=side, gap=gap)

@@ -22,7 +22,7 @@ import numpy as np
 
 from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.pictures._words import num, subscript, where
-from planargeo.draw.pictures.common import builder, label_line, label_toward
+from planargeo.draw.pictures.common import builder, label_toward, labelled_line
 from planargeo.draw.style import COLORS, SUM
 from planargeo.geometry.projective import is_at_infinity, is_ideal
 
@@ -98,29 +98,24 @@ def _twists(pic: Picture, c) -> None:
             label_toward(pic.elements[-1], u3, _glyph_gap(s[2]) + 3.0)
 
 
-def _couple_words(pic: Picture, text: str, row: int) -> None:
-    """The couple glyph of the element just drawn: its words, and one row lower per earlier couple."""
+def _lower(pic: Picture, rows: int) -> None:
+    """Move the couple glyph just drawn ``rows`` rows down (one per couple drawn before it)."""
     for part in pic.elements[-1]["parts"]:
-        if part["p"] == "text":
-            part["text"] = f"{text}: couple (line at ∞)"
         if part["p"] in ("text", "glyph"):
-            part["y"] -= row * 30.0 / pic.ky
+            part["y"] -= rows * 30.0 / pic.ky
 
 
 def _wrenches(pic: Picture, c, anchors) -> None:
     anchors = anchors or (None, None)
     couples = 0
-    f1, f2 = c.f1.array, c.f2.array
-    for k, f, a in ((1, f1, anchors[0]), (2, f2, anchors[1])):
-        pic.line(f"f{k}", f, role="wrench", symbol=f"f{subscript(k)}", anchor=a, label="",
-                 desc=f"wrench f{subscript(k)} on its line of action (4.27): {_wrench_words(f, k)}")
-        if bool(is_at_infinity(f)):     # the couple glyph's own words, with the symbol
-            _couple_words(pic, f"f{subscript(k)}", couples)
+    for k, f, a in ((1, c.f1.array, anchors[0]), (2, c.f2.array, anchors[1])):
+        sym = f"f{subscript(k)}"        # labelled a metre on along the force from its arrow (clear of P)
+        labelled_line(pic, f"f{k}", f, sym, role="wrench", symbol=sym, anchor=a, ahead=1.0,
+                      side=1.0 if k == 1 else -1.0,
+                      desc=f"wrench {sym} on its line of action (4.27): {_wrench_words(f, k)}")
+        if bool(is_at_infinity(f)):
+            _lower(pic, couples)
             couples += 1
-        else:   # the label a metre on along the force from its arrow (clear of the meet P)
-            e = np.array([f[0], f[1]]) / math.hypot(f[0], f[1])
-            at = None if a is None else np.asarray(a, float) + e
-            label_line(pic, f"f{k}", f"f{subscript(k)}", anchor=at, side=1.0 if k == 1 else -1.0)
     P = c.P
     if P is not None and not bool(is_ideal(P)):
         pic.point("P", P, role="twist", glyph=False, color=COLORS["construct"], symbol="P",
@@ -128,12 +123,8 @@ def _wrenches(pic: Picture, c, anchors) -> None:
     if c.L3 is not None:
         s = c.sum.array
         anchor = None if P is None or bool(is_ideal(P)) else [-P[1] / P[2], P[0] / P[2]]
-        pic.line("f3", s, role="wrench", symbol="f₃ = f₁ + f₂", anchor=anchor, label="",
-                 width=SUM["line"]["linewidth"] * PX_PER_PT,
-                 desc=f"sum f₃ = f₁ + f₂ (4.33): {_wrench_words(s, 3)}")
+        labelled_line(pic, "f3", s, "f₃ = f₁ + f₂", role="wrench", symbol="f₃ = f₁ + f₂", anchor=anchor,
+                      ahead=1.5, side=-1.0, gap=9.0, width=SUM["line"]["linewidth"] * PX_PER_PT,
+                      desc=f"sum f₃ = f₁ + f₂ (4.33): {_wrench_words(s, 3)}")
         if bool(is_at_infinity(s)):
-            _couple_words(pic, "f₃ = f₁ + f₂", couples)
-        else:
-            e = np.array([s[0], s[1]]) / math.hypot(s[0], s[1])
-            at = None if anchor is None else np.asarray(anchor, float) + 1.5 * e   # ahead of its arrow at P
-            label_line(pic, "f3", "f₃ = f₁ + f₂", anchor=at, side=-1.0, gap=9.0)
+            _lower(pic, couples)
