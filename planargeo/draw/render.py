@@ -70,28 +70,32 @@ def draw_picture(pic: dict, ax=None) -> list:
         op = el.get("opacity", 1.0)
         dashes = None if not el.get("dash") else [v / PX_PER_PT / lw for v in el["dash"]]
         gid = el["id"]
+
+        def head(xy, zorder):
+            """A filled triangle (a glyph's or an arrow's head)."""
+            return ax.add_patch(Polygon(xy, closed=True, facecolor=c, edgecolor="none",
+                                        zorder=zorder, gid=gid, alpha=op))
+
         for i, part in enumerate(el["parts"]):
             kind = part["p"]
             arts = []
-            if kind == "path":
-                xy = np.asarray(part["xy"], float).reshape(-1, 2)
-                if el.get("fill") or part.get("closed"):
-                    arts.append(ax.add_patch(Polygon(
-                        xy, closed=part.get("closed", False), facecolor=el.get("fill") or "none",
-                        edgecolor=c if c != "none" else "none", linewidth=lw,
-                        alpha=el.get("alpha", 1.0) * op, zorder=z, gid=gid)))
+            if kind == "path" and (el.get("fill") or part.get("closed")):
+                arts.append(ax.add_patch(Polygon(
+                    np.asarray(part["xy"], float).reshape(-1, 2), closed=part.get("closed", False),
+                    facecolor=el.get("fill") or "none", edgecolor=c if c != "none" else "none",
+                    linewidth=lw, alpha=el.get("alpha", 1.0) * op, zorder=z, gid=gid)))
+            elif kind in ("path", "ellipse"):
+                if kind == "path":
+                    xy = np.asarray(part["xy"], float).reshape(-1, 2)
+                    kw = {"solid_capstyle": "butt"}
                 else:
-                    (ln,) = ax.plot(xy[:, 0], xy[:, 1], color=c, linewidth=lw, zorder=z, gid=gid,
-                                    solid_capstyle="butt", alpha=op)
-                    arts.append(ln)
-                    if dashes:
-                        ln.set_dashes(dashes)
-            elif kind == "ellipse":
-                t = np.linspace(0.0, 2 * np.pi, 97)
-                a, b, cc, d = part["m"]
-                (ln,) = ax.plot(part["x"] + a * np.cos(t) + b * np.sin(t),
-                                part["y"] + cc * np.cos(t) + d * np.sin(t), color=c, linewidth=lw,
-                                zorder=z, gid=gid, alpha=op)
+                    t = np.linspace(0.0, 2 * np.pi, 97)
+                    a, b, cc, d = part["m"]
+                    xy = np.column_stack([part["x"] + a * np.cos(t) + b * np.sin(t),
+                                          part["y"] + cc * np.cos(t) + d * np.sin(t)])
+                    kw = {}
+                (ln,) = ax.plot(xy[:, 0], xy[:, 1], color=c, linewidth=lw, zorder=z, gid=gid,
+                                alpha=op, **kw)
                 arts.append(ln)
                 if dashes:
                     ln.set_dashes(dashes)
@@ -101,13 +105,11 @@ def draw_picture(pic: dict, ax=None) -> list:
                                 color=c, markeredgecolor="white", markeredgewidth=0.6, zorder=z + 0.5,
                                 gid=gid, alpha=op)
             elif kind == "glyph":
-                arc, head = arc_glyph(part["r"], part["ccw"])
+                arc, tri = arc_glyph(part["r"], part["ccw"])
+                part_xy = np.array([part["x"], part["y"]])
                 arts += ax.plot(part["x"] + arc[:, 0] / kx, part["y"] + arc[:, 1] / ky, color=c,
                                 linewidth=_GLYPH_PX / PX_PER_PT, zorder=z, gid=gid, alpha=op)
-                arts.append(ax.add_patch(Polygon(np.column_stack([part["x"] + head[:, 0] / kx,
-                                                                  part["y"] + head[:, 1] / ky]),
-                                         closed=True, facecolor=c, edgecolor="none", zorder=z,
-                                         gid=gid, alpha=op)))
+                arts.append(head(part_xy + tri / (kx, ky), z))
             elif kind == "arrow":
                 # the page's arrow (pixels, y up): a shaft to 0.8 of the head's length before the
                 # tip, and a head max(_HEAD_PX, 4 × the line's width) long and 0.7 of that wide
@@ -118,15 +120,13 @@ def draw_picture(pic: dict, ax=None) -> list:
                 nrm = np.array([-u[1], u[0]])
                 tip = np.array([dx, dy])
                 shaft = np.array([[0.0, 0.0], tip - u * 0.8 * hp])
-                head = np.array([tip, tip - u * hp + nrm * 0.35 * hp, tip - u * hp - nrm * 0.35 * hp])
+                tri = np.array([tip, tip - u * hp + nrm * 0.35 * hp, tip - u * hp - nrm * 0.35 * hp])
                 to_data = np.array([1.0 / kx, 1.0 / ky])
                 arts += ax.plot(part["x"] + shaft[:, 0] * to_data[0],
                                 part["y"] + shaft[:, 1] * to_data[1],
                                 color=c, linewidth=_ARROW_PX / PX_PER_PT, zorder=z + 0.5, gid=gid,
                                 alpha=op, solid_capstyle="butt")
-                arts.append(ax.add_patch(Polygon(np.array([part["x"], part["y"]]) + head * to_data,
-                                                 closed=True, facecolor=c, edgecolor="none",
-                                                 zorder=z + 0.5, gid=gid, alpha=op)))
+                arts.append(head(np.array([part["x"], part["y"]]) + tri * to_data, z + 0.5))
             elif kind == "text" and not part.get("hidden"):
                 arts.append(ax.annotate(
                     part["text"], (part["x"], part["y"]),

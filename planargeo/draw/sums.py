@@ -27,7 +27,8 @@ import math
 import numpy as np
 
 from planargeo._validate import as_mat3, as_scalar, as_vec3
-from planargeo.draw._shared import ENTRIES, added, as_picture, bare_line, inertia as inertia_conic, view_centre
+from planargeo.draw._shared import ENTRIES, added, as_picture, bare_line, view_centre
+from planargeo.draw._shared import inertia as inertia_conic
 from planargeo.draw.picture import PX_PER_PT, Picture, _dash, plain_text
 from planargeo.draw.pictures._words import force as force_words, num, pair
 from planargeo.draw.pictures.common import label_toward
