@@ -241,27 +241,16 @@ def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
 
     root_angle, speed = check_param("root_angle", root_angle), check_param("speed", speed)
     qd = speed * _QD_PATTERN
-    if q_start is not None:
-        q = np.array(q_start, dtype=float)
-        q[0] = root_angle
-        fixed = [0]
-        if angle2 is not None:
-            q[1] = check_param("angle2", angle2) - root_angle
-            fixed = [0, 1]
-        path = [q[1]]
-    else:
+    q = _default_q() if q_start is None else np.array(q_start, dtype=float)
+    q[0] = root_angle
+    fixed, path = ([0], [q[1]]) if angle2 is None else ([0, 1], [check_param("angle2", angle2) - root_angle])
+    if angle2 is not None and q_start is None:
         # the Fig 9.2 pose turned as a whole (its loops stay closed), then body 2 turned the shorter
         # way to angle2 in steps of at most 10° with the loops closed again after each step
-        q = _default_q()
-        q[0] = root_angle
-        fixed = [0]
-        path = [q[1]]
-        if angle2 is not None:
-            rel = check_param("angle2", angle2) - root_angle
-            turn = float(np.remainder(rel - q[1] + np.pi, 2 * np.pi) - np.pi)
-            n = int(np.ceil(abs(turn) / np.radians(10.0)))
-            path = [q[1] + turn * (k + 1) / n for k in range(n)] + [rel] if n else [rel]
-            fixed = [0, 1]
+        rel = path[0]
+        turn = float(np.remainder(rel - q[1] + np.pi, 2 * np.pi) - np.pi)
+        n = int(np.ceil(abs(turn) / np.radians(10.0)))
+        path = [q[1] + turn * (k + 1) / n for k in range(n)] + [rel] if n else [rel]
     if model.contacts:
         for a in path:
             q[1] = a
