@@ -114,19 +114,14 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
 
     Raises
     ------
-    ShapeError, NonFiniteError, InputError
-        Arguments of the wrong shape, not finite, or complex.
-    SingularConfigurationError
-        If some ``sᵀAs`` is singular by the rule of :data:`planargeo.errors.COND_LIMIT` (``.cond``).
-    NumericOverflowError
-        If finite input gives a ``q̈`` that is not finite (e.g. speeds of 1e160).
+    ShapeError, NonFiniteError, InputError, SingularConfigurationError, NumericOverflowError
+        Bad arguments; a joint singular by the rule of :data:`planargeo.errors.COND_LIMIT` (``.cond``);
+        a ``q̈`` that is not finite for finite input.
 
     Examples
     --------
-    A uniform unit rod pinned at one end, released horizontally: ``q̈ = -1.5 g``.
-
     >>> from planargeo.mechanics.model import chain_model
-    >>> forward_dynamics(chain_model(1), [0.0], [0.0], [0.0])
+    >>> forward_dynamics(chain_model(1), [0.0], [0.0], [0.0])     # a unit rod released horizontally: -1.5 g
     array([-14.715])
     """
     return evaluate(model, False, q, qd, tau, f_ext, _general)

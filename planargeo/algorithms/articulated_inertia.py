@@ -87,8 +87,7 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
     check : bool
         Raise for a singular joint (default); ``False`` treats an exactly singular one as locked.
     steps : int, optional
-        Keep only the bodies at most ``steps`` joints outboard (thesis 10.2.2), by Jacobi sweeps;
-        None (default): the full recursion.
+        Keep only the bodies at most ``steps`` joints outboard (10.2.2), by Jacobi sweeps; None: all.
 
     Returns
     -------
@@ -101,8 +100,6 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
 
     Examples
     --------
-    Thesis 7.2 with ``m = L = 1``, ``rho = 1/2``: the two bodies in line have ``m_x = 2 m`` (7.20).
-
     >>> from planargeo.screws.twists import inertia_matrix
     >>> I = [inertia_matrix(1.0, [0.5, 0.0], 0.25), inertia_matrix(1.0, [1.5, 0.0], 0.25)]
     >>> S = [np.array([[0.0], [0.0], [1.0]]), np.array([[0.0], [-1.0], [1.0]])]
@@ -227,8 +224,8 @@ def truncation_error(model, q, qd=None, tau=None, f_ext=None, *, steps: int) -> 
     Returns
     -------
     dict
-        ``"A"``: (N,) ``‖A_i^(k) - A_i‖_F / ‖A_i‖_F``; ``"d"``: (N,) ``max|d_i^(k) - d_i| / max_j max|d_j|``;
-        ``"entries"``: (N, 3, 3) ``|A_i^(k) - A_i| / ‖A_i‖_F``; ``"max_A"``, ``"max_d"``; ``"truncated"``, ``"full"``.
+        Per body ``"A"`` ``‖A_i^(k) - A_i‖_F / ‖A_i‖_F`` and ``"d"`` ``max|d_i^(k) - d_i| / max|d|``;
+        ``"entries"`` ``|A_i^(k) - A_i| / ‖A_i‖_F``; ``"max_A"``, ``"max_d"``, ``"truncated"``, ``"full"``.
 
     Raises
     ------
@@ -237,11 +234,9 @@ def truncation_error(model, q, qd=None, tau=None, f_ext=None, *, steps: int) -> 
 
     Examples
     --------
-    Thesis 7.3 at ``lambda = L / rho = 2``: one outboard body already gives the first body's ``A_z``.
-
     >>> from planargeo.scenes.horizontal_chain import horizontal_chain_model
     >>> e = truncation_error(horizontal_chain_model(6, 1.0, 0.5, 1.0), np.zeros(6), steps=3)
-    >>> round(float(e["A"][0]), 4), float(e["entries"][0][2, 2])
+    >>> round(float(e["A"][0]), 4), float(e["entries"][0][2, 2])     # A_z exact after one step (7.3)
     (0.3114, 0.0)
     """
     if steps is None:

@@ -166,16 +166,15 @@ def check_finite(result, what: str, **inputs):
     Parameters
     ----------
     result : numpy.ndarray
-        The computed result.
+        The computed result, named ``what`` in the message.
     what : str
-        Its name in the message.
+        Its name.
     **inputs : numpy.ndarray
         The (finite) arguments it came from, by name.
 
     Returns
     -------
     numpy.ndarray
-        ``result`` itself.
 
     Raises
     ------

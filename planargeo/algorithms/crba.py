@@ -20,15 +20,12 @@ SINGULAR_RCOND = 1e-13
 def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
     """Joint-space mass matrix ``H(q) = Σ_i J_iᵀ I_i J_i`` (..., nq, nq) (thesis 3.5, 3.10; Remark 8).
 
-    The composite-rigid-body recursion sums the inertias at the origin:
-    ``H[r, c] = s_rᵀ Ic_{body(c)} s_c`` for ``r`` on the path to ``body(c)``.
-
     Parameters
     ----------
     model, q : Model, array_like (..., nq)
         The mechanism and its joint coordinates (leading dimensions: a batch).
     method : {"crba", "jacobian"}
-        Composite-rigid-body recursion, or the direct sum ``Σ J_iᵀ I_i J_i``.
+        Composite-rigid-body recursion (``H[r, c] = s_rᵀ Ic_{body(c)} s_c``), or the direct sum.
 
     Returns
     -------
@@ -41,10 +38,8 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
 
     Examples
     --------
-    Double pendulum of unit links at q = 0: ``H11 = 8/3``, ``H12 = 5/6``, ``H22 = 1/3``.
-
     >>> from planargeo.mechanics.model import chain_model
-    >>> (mass_matrix(chain_model(2), [0.0, 0.0]) * 6).round(12)
+    >>> (mass_matrix(chain_model(2), [0.0, 0.0]) * 6).round(12)     # 8/3, 5/6, 1/3 by hand
     array([[16.,  5.],
            [ 5.,  2.]])
     """
@@ -71,8 +66,6 @@ def mass_matrix(model: Model, q, *, method: str = "crba") -> np.ndarray:
 
 def bias_forces(model: Model, q, qd, f_ext=None) -> np.ndarray:
     """Bias forces ``C(q, q̇) = τ(q, q̇, q̈ = 0)``: velocity terms, gravity, loads (thesis 3.5, 3.10, 3.11).
-
-    By the array recursion :func:`~planargeo.algorithms.rnea.newton_euler` (no code shared with the kernels).
 
     Parameters
     ----------

@@ -27,7 +27,7 @@ SINGULAR_COND = 1e10
 
 
 def branch_matrix(G, parents) -> np.ndarray:
-    """Branch matrix ``Υ = G Δ^{-1}`` (thesis 9.50, 9.51).
+    """Branch matrix ``Υ = G Δ^{-1}`` (thesis 9.50, 9.51): each loop's two branches from their common ancestor.
 
     Parameters
     ----------
@@ -39,7 +39,6 @@ def branch_matrix(G, parents) -> np.ndarray:
     Returns
     -------
     ndarray (m, N)
-        ``Υ``: the two branches of each loop from their common ancestor, ``+1`` and ``-1``.
 
     Examples
     --------
@@ -55,32 +54,26 @@ class LoopSolution:
     """All quantities of one constrained state (thesis 9.49-9.75; attributes named after the symbols).
 
     ``xi`` are the contact forces' components in the contact reaction spaces ``B``
-    (:func:`planargeo.mechanics.contacts.B_of`, ``F = B ξ``); a slider's normal is its direction turned
-    by -90° as in the thesis's 9.87 (a joint's is +90°, 5.63), so ``xi`` compares with 9.90.
+    (:func:`planargeo.mechanics.contacts.B_of`, ``F = B ξ``); a slider's normal is turned by -90° as in
+    the thesis's 9.87 (a joint's by +90°, 5.63), so ``xi`` compares with 9.90.
 
     Attributes
     ----------
-    tree : StackedSolution (the open tree; ``tree.a`` is ``u``)
+    tree : StackedSolution (the open tree; ``tree.a`` is ``u``, 9.63)
     G, Upsilon, G3, z, B : contact and branch matrices (``G3`` in 3×3 blocks), contact motion / reaction spaces
-    u : (3N,) open-loop accelerations (9.63)
-    Lambda_inv, Lambda_inv_Gt, contact_mobility : the tree's full mobility (9.65-9.73, on first access),
-        its contact columns ``Λ^{-1} G^T``, and ``G Λ^{-1} G^T``
-    J, theta_dot, nu : branch composite inertia ``Υ I Υ^T`` (9.57), contact rates (9.58), ``ν`` (9.55)
-    K, cond : ``B^T G Λ^{-1} G^T B`` and its condition number
+    Lambda_inv, Lambda_inv_Gt, contact_mobility : ``Λ^{-1}`` (9.65-9.73), ``Λ^{-1} G^T``, ``G Λ^{-1} G^T``
+    J, theta_dot, nu, K, cond : ``Υ I Υ^T`` (9.57), contact rates (9.58), ``ν`` (9.55), ``B^T G Λ^{-1} G^T B``
     Gamma, xi, F : (9.72), reaction magnitudes in ``B`` (9.70), contact forces (9.71)
-    a, qdd, tau_drive : closed-loop accelerations (9.73, 9.75), joint torques including the drives
-    f, Q, mu : joint wrenches from ``Δᵀ f = I a + p + Gᵀ F`` (9.61) on body ``i`` from its parent,
-        ``s_iᵀ f_i`` (6.38, equal to ``tau_drive``) and ``U_iᵀ f_i`` in the bases ``R_i`` (6.61b, 6.104)
+    u, a, qdd, tau_drive : open and closed-loop accelerations (9.73, 9.75), torques with the drives
+    f, Q, mu : joint wrenches from ``Δᵀ f = I a + p + Gᵀ F`` (9.61), ``s_iᵀ f_i`` (6.38), ``U_iᵀ f_i`` (6.61b, 6.104)
     reactions : list of :class:`Reaction`, one per tree joint then one per contact
 
     Examples
     --------
-    A free body (m = 2) pinned to the ground at its centre of mass: ``-F`` holds up its weight.
-
     >>> from planargeo.mechanics.contacts import Contact
     >>> from planargeo.mechanics.model import Body, Joint, Model
     >>> m = Model([Body(2.0, (0.0, 0.0), 0.5)], [Joint("plane")], [-1])
-    >>> pin = Contact("pin", 0, -1, point_a=(0.0, 0.0), point_b=(3.0, 1.0))
+    >>> pin = Contact("pin", 0, -1, point_a=(0.0, 0.0), point_b=(3.0, 1.0))     # at the centre of mass
     >>> loop_solve(m, [3.0, 1.0, 0.0], [0.0] * 3, [0.0] * 3, contacts=[pin]).xi.round(9) + 0.0
     array([ 0.  , -19.62])
     """
@@ -261,7 +254,7 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
         Drives (e.g. a crank at constant speed, ``{0: 0.0}``), each one more contact with
         ``B = s (s^T s)^{-1}``, ``ν = κ_i + s q̈``; their torques in ``tau_drive``, their ``qdd`` exact.
     mobility : {"columns", "full"}
-        Form only the columns ``Λ^{-1} G^T`` by two triangular solves, or the full 3N×3N ``Λ^{-1}`` (a check).
+        Form only the columns ``Λ^{-1} G^T`` by two triangular solves, or the full ``Λ^{-1}`` (a check).
 
     Returns
     -------
@@ -269,10 +262,8 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
 
     Raises
     ------
-    InputError
-        A bad ``mobility`` or ``prescribed`` joint.
-    SingularConfigurationError
-        If ``B^T G Λ^{-1} G^T B`` is singular (redundant or locked loops), ``.cond`` its condition number.
+    InputError, SingularConfigurationError
+        A bad ``mobility`` or ``prescribed``; a singular ``B^T G Λ^{-1} G^T B`` (redundant or locked loops, ``.cond``).
 
     Examples
     --------
@@ -441,10 +432,10 @@ def _rot(th):
 def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribed=None):
     """Independent reference: Lagrange multipliers in maximal coordinates, solved densely (reference for 9.73, 9.75).
 
-    Each body has coordinates ``(c_x, c_y, θ)`` (centre of mass, angle) and mass ``diag(m, m, J)``;
-    joints and contacts are position constraints with analytic Jacobians ``Φ`` and ``γ = Φ̇ ẋ``, and
-    ``[[M, -Φ^T], [Φ, 0]] [ẍ, λ] = [F_applied, -γ]`` is solved densely.  Only the poses and
-    velocities of :func:`planargeo.mechanics.kinematics.kinematics` are shared with the stacked code.
+    Each body has coordinates ``(c_x, c_y, θ)`` and mass ``diag(m, m, J)``; joints and contacts are
+    position constraints with analytic Jacobians ``Φ`` and ``γ = Φ̇ ẋ``, and
+    ``[[M, -Φ^T], [Φ, 0]] [ẍ, λ] = [F_applied, -γ]`` is solved densely.  Only the poses and velocities
+    of :func:`planargeo.mechanics.kinematics.kinematics` are shared with the stacked code.
 
     Parameters
     ----------
@@ -456,8 +447,8 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
     Returns
     -------
     dict
-        ``a`` (N, 3), ``qdd`` (nq,) (least squares from ``Δ a - κ = S q̈``), ``F`` (m, 3) (``-F`` acts
-        on body ``a``), ``tau_drive``, ``lambda``, ``Phi`` and ``n_tree_constraints`` (its first rows).
+        ``a`` (N, 3), ``qdd`` (least squares from ``Δ a - κ = S q̈``), ``F`` (m, 3) (``-F`` acts on body
+        ``a``), ``tau_drive``, ``lambda``, ``Phi`` and ``n_tree_constraints`` (its first rows).
 
     Raises
     ------
@@ -466,11 +457,9 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
 
     Examples
     --------
-    The four-bar of :func:`loop_solve`:
-
     >>> from planargeo.mechanics.contacts import Contact
     >>> from planargeo.mechanics.model import chain_model
-    >>> pin = Contact("pin", 2, -1, point_a=(1.0, 0.0), point_b=(1.0, 0.0))
+    >>> pin = Contact("pin", 2, -1, point_a=(1.0, 0.0), point_b=(1.0, 0.0))         # the four-bar of loop_solve
     >>> ref = constrained_dynamics_lagrange(chain_model(3), [1.2, -1.2, 1.2 - np.pi], [1.0, -1.0, 1.0],
     ...                                     [0.0] * 3, contacts=[pin])
     >>> bool(abs(ref["qdd"][0] - (-6 / 5 * 9.81 * np.cos(1.2))) < 1e-10)

@@ -67,12 +67,8 @@ def inverse_dynamics(model: Model, q, qd, qdd, f_ext=None, *, return_forces: boo
 
     Parameters
     ----------
-    model : Model
-        The mechanism.
-    q, qd, qdd : array_like (..., nq)
-        The state; ``qd`` or ``qdd`` None: zeros.
-    f_ext : array_like (..., N, 3), optional
-        External world wrenches at the origin, one per body (besides gravity).
+    model, q, qd, qdd, f_ext : Model, array_like
+        The mechanism and its states, as for :func:`planargeo.algorithms.aba.forward_dynamics`.
     return_forces : bool
         Also return the joint forces ``f`` (..., N, 3).
 
@@ -88,10 +84,8 @@ def inverse_dynamics(model: Model, q, qd, qdd, f_ext=None, *, return_forces: boo
 
     Examples
     --------
-    A unit rod about its end (``J_pivot = m L²/3 = 1/3``), no gravity:
-
     >>> from planargeo.mechanics.model import chain_model
-    >>> inverse_dynamics(chain_model(1, gravity=(0, 0)), [0.0], [0.0], [3.0])
+    >>> inverse_dynamics(chain_model(1, gravity=(0, 0)), [0.0], [0.0], [3.0])     # J_pivot = m L²/3
     array([1.])
     """
     if return_forces:
