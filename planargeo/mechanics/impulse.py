@@ -53,26 +53,20 @@ def impulse_response(I, impulse, s=None) -> tuple[np.ndarray, np.ndarray]:
     ----------
     {I}
     impulse : array_like, shape (3,)
-        The blow's impulse wrench ``ĵ = [Jx, Jy, Jz]`` (N·s; its line is the line of the blow).
+        The blow's impulse wrench ``ĵ = [Jx, Jy, Jz]`` (N·s), on the line of the blow.
     {s}
 
     Returns
     -------
-    dv : ndarray, shape (3,)
-        The velocity twist just after the blow.
-    reaction : ndarray, shape (3,)
-        The support's reaction impulse ``I Δv − ĵ`` (zero for a free body).
+    dv, reaction : ndarray, shape (3,)
+        The velocity twist just after the blow; the support's reaction impulse ``I Δv − ĵ``.
 
     Raises
     ------
-    InputError
-        ``I`` not symmetric, or a non-finite or wrongly shaped argument.
+    InputError, SingularInertiaError, SingularConfigurationError
+        A bad argument, ``I`` not symmetric positive semi-definite (definite when free), ``sᵀIs`` singular.
     NumericOverflowError
         ``Δv`` or the reaction beyond double precision (a huge blow on a tiny mass).
-    SingularInertiaError
-        ``I`` not positive semi-definite, or singular for a free body.
-    SingularConfigurationError
-        ``sᵀIs`` singular (e.g. a point mass pinned at its own place).
 
     Examples
     --------
@@ -107,8 +101,6 @@ def impulse_response(I, impulse, s=None) -> tuple[np.ndarray, np.ndarray]:
 def apparent_mass(I, line, s=None) -> float:
     """Apparent mass ``1 / (uᵀ M u)`` of a body at rest along a force line (thesis figure 3.3, 6.93).
 
-    The impulse along ``line`` per unit velocity change of the body's point on it, along it.
-
     Parameters
     ----------
     {I}
@@ -119,14 +111,12 @@ def apparent_mass(I, line, s=None) -> float:
     Returns
     -------
     float
-        The apparent mass (kg); ``math.inf`` when the support takes the whole blow.
+        The impulse per unit velocity change along the line (kg); ``inf`` through a pivot.
 
     Raises
     ------
     DegenerateGeometryError
         ``line`` is the line at infinity (a couple).
-    InputError, SingularInertiaError, SingularConfigurationError
-        As for :func:`impulse_response`.
 
     Examples
     --------
@@ -149,8 +139,6 @@ def apparent_mass(I, line, s=None) -> float:
 def centre_of_percussion(I, pivot) -> np.ndarray:
     """The centre of percussion of a pivot, ``l = d + ρ²/d`` from it beyond the centre of mass (5.67).
 
-    A blow there, across the line pivot–centre of mass, leaves the pivot without reaction.
-
     Parameters
     ----------
     I : array_like, shape (3, 3)
@@ -166,8 +154,6 @@ def centre_of_percussion(I, pivot) -> np.ndarray:
     ------
     DegenerateGeometryError
         The pivot is at the centre of mass (the axis is the line at infinity).
-    InputError, SingularInertiaError
-        ``I`` not a valid inertia.
 
     Examples
     --------
@@ -190,8 +176,7 @@ def moved_points(dv, points, t: float) -> np.ndarray:
     """Where body points are ``t`` seconds after the blow, the body moving with the constant twist ``dv``.
 
     ``p(t) = R(θ) p₀ + t [[S, −K], [K, S]] v`` with ``θ = ω t``, ``S = sin θ / θ``,
-    ``K = (1 − cos θ) / θ`` (``S → 1``, ``K → θ/2`` as ``θ → 0``): written without the pole, so
-    finite for every finite ``dv`` and ``t``, continuous from a turn to a translation.
+    ``K = (1 − cos θ) / θ``: without the pole, so finite from a turn to a translation.
 
     Parameters
     ----------
@@ -208,18 +193,13 @@ def moved_points(dv, points, t: float) -> np.ndarray:
 
     Raises
     ------
-    InputError
-        A non-finite or wrongly shaped argument.
     NumericOverflowError
         A point carried beyond double precision's range.
 
     Examples
     --------
-    A quarter turn about the pole (1, 0) (``ω = 1``, ``v = (0, −1)``):
-
-    >>> moved_points([0.0, -1.0, 1.0], [[2.0, 0.0], [1.0, 0.0]], math.pi / 2).round(12) + 0.0
-    array([[1., 1.],
-           [1., 0.]])
+    >>> moved_points([0.0, -1.0, 1.0], [[2.0, 0.0]], math.pi / 2).round(12) + 0.0   # a quarter turn about (1, 0)
+    array([[1., 1.]])
     """
     tw = _single(dv, "dv")
     P = as_array(points, "points")

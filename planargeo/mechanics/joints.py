@@ -34,16 +34,16 @@ import numpy as np
 from planargeo._validate import as_array, as_xy, overflow_checked
 from planargeo.errors import InputError, ShapeError
 from planargeo.geometry._docs import entries
+from planargeo.mechanics.model import JOINT_DOFS
 from planargeo.screws.twists import unit_rotation, unit_translation
 
 __all__ = ["KINDS", "DOF", "motion_space", "reaction_space", "R_of", "JointSpace",
            "revolute", "prismatic", "revolute_prismatic", "twin_prismatic", "plane", "fixed"]
 
+#: Degrees of freedom of each kind (the model's :data:`planargeo.mechanics.model.JOINT_DOFS`).
+DOF = dict(JOINT_DOFS)
 #: Joint kinds understood by :func:`motion_space` / :func:`reaction_space`.
-KINDS = ("revolute", "prismatic", "revolute_prismatic", "twin_prismatic", "plane", "fixed")
-
-#: Degrees of freedom of each kind.
-DOF = {"revolute": 1, "prismatic": 1, "revolute_prismatic": 2, "twin_prismatic": 2, "plane": 3, "fixed": 0}
+KINDS = tuple(DOF)
 
 _USES_DIRECTION = ("prismatic", "revolute_prismatic", "twin_prismatic", "plane")
 

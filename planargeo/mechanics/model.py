@@ -38,14 +38,8 @@ from planargeo.geometry._docs import entries
 __all__ = ["Body", "Joint", "Model", "Data", "JOINT_DOFS", "MAX_BODIES", "chain_model", "random_model"]
 
 #: Number of degrees of freedom of each joint kind.
-JOINT_DOFS: dict[str, int] = {
-    "revolute": 1,
-    "prismatic": 1,
-    "revolute_prismatic": 2,
-    "twin_prismatic": 2,
-    "plane": 3,
-    "fixed": 0,
-}
+JOINT_DOFS: dict[str, int] = {"revolute": 1, "prismatic": 1, "revolute_prismatic": 2, "twin_prismatic": 2,
+                              "plane": 3, "fixed": 0}
 
 #: Docstring entries shared here (:func:`planargeo.geometry._docs.entries`).
 _documented = entries({
