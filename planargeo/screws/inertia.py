@@ -6,6 +6,9 @@ gyration drawn for it.  Functions broadcast; :class:`Inertia` is a thin validate
 """
 from __future__ import annotations
 
+import inspect
+import re
+
 import numpy as np
 
 from planargeo._validate import (as_array, as_mat3, as_scalar, as_vec3, as_xy, batch_shape, check_overflow,
@@ -399,6 +402,22 @@ def _derived(function, doc: str) -> property:
     return property(get)
 
 
+
+def _of_matrix(function, name: str | None = None):
+    """A method of :class:`Inertia`: ``function`` of its matrix, documented by ``function`` (without ``inertia``)."""
+    def method(self, *args, **kwargs):
+        return function(self._array, *args, **kwargs)
+
+    own = inspect.signature(function)
+    first, *rest = own.parameters.values()
+    method.__signature__ = own.replace(parameters=[first.replace(name="self"), *rest])
+    method.__name__ = name or function.__name__
+    method.__qualname__ = f"Inertia.{method.__name__}"
+    doc = re.sub(r"\n    inertia : [^\n]*\n        [^\n]*", "", function.__doc__)    # and its errors:
+    doc = re.sub(r"    Raises\n    ------\n(    \S[^\n]*\n        [^\n]*``inertia``[^\n]*\n)+\n", "", doc)
+    method.__doc__ = doc.replace("    Parameters\n    ----------\n\n", "")
+    return method
+
 class Inertia(_Held):
     """A planar rigid-body inertia at the origin (thesis 1.66, 4.58, 5.64): an imaginary conic.
 
@@ -610,56 +629,12 @@ class Inertia(_Held):
         """
         return Inertia(inertia_rotated(self._array, theta, about))
 
-    @_documented
-    def kinetic_energy(self, twist) -> np.ndarray:
-        """Kinetic energy ``½ vᵀ I v`` (J; thesis 1.9).
-
-        Parameters
-        ----------
-        {twist}
-
-        {returns_scalar}
-
-        Examples
-        --------
-        >>> float(Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).kinetic_energy([1.0, 0.0, 0.0]))   # ½ m u²
-        1.0
-        """
-        return kinetic_energy(self._array, twist)
-
-    @_documented
-    def momentum(self, twist) -> np.ndarray:
-        """Momentum wrench ``I v`` (thesis 5.72).
-
-        Parameters
-        ----------
-        {twist}
-
-        {returns_3}
-
-        Examples
-        --------
-        >>> Inertia.from_mass(2.0, [0.0, 1.0], inertia=0.5).momentum([1.0, 0.0, 0.0])   # m u along y = 1
-        array([ 2.,  0., -2.])
-        """
-        return momentum(self._array, twist)
-
-    @_documented
-    def percussion_axis_array(self, point) -> np.ndarray:
-        """:func:`percussion_axis` ``I a`` of ``point``.
-
-        Parameters
-        ----------
-        {pole}
-
-        {returns_3}
-
-        Examples
-        --------
-        >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_axis_array([0.0, 0.0, 1.0])
-        array([0. , 2. , 2.5])
-        """
-        return percussion_axis(self._array, point)
+    # the module's functions of the matrix, documented there
+    kinetic_energy = _of_matrix(kinetic_energy)
+    momentum = _of_matrix(momentum)
+    percussion_axis_array = _of_matrix(percussion_axis, "percussion_axis_array")
+    percussion_pole_array = _of_matrix(percussion_pole, "percussion_pole_array")
+    drawable_conic_matrix = _of_matrix(drawable_conic, "drawable_conic_matrix")
 
     @_documented
     def percussion_axis(self, point):
@@ -682,23 +657,6 @@ class Inertia(_Held):
         return Line(self.percussion_axis_array(point))
 
     @_documented
-    def percussion_pole_array(self, line) -> np.ndarray:
-        """:func:`percussion_pole` ``I⁻¹ f`` of ``line``.
-
-        Parameters
-        ----------
-        {impulse}
-
-        {returns_3}
-
-        Examples
-        --------
-        >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_pole_array([0.0, 2.0, 2.5])
-        array([0., 0., 1.])
-        """
-        return percussion_pole(self._array, line)
-
-    @_documented
     def percussion_pole(self, line):
         """Pole whose axis of percussion is ``line``, as a :class:`planargeo.geometry.Point`.
 
@@ -717,19 +675,6 @@ class Inertia(_Held):
         """
         from planargeo.geometry.elements import Point
         return Point(self.percussion_pole_array(line))
-
-    @_documented
-    def drawable_conic_matrix(self) -> np.ndarray:
-        """:func:`drawable_conic` of this inertia, the radius-of-gyration circle's matrix.
-
-        {returns_3x3}
-
-        Examples
-        --------
-        >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).drawable_conic_matrix()[2, 2]   # -m ρ²
-        np.float64(-0.5)
-        """
-        return drawable_conic(self._array)
 
     def drawable_conic(self):
         """The radius-of-gyration circle (thesis 10.2.3) as a :class:`planargeo.geometry.Conic`.
