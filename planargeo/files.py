@@ -345,17 +345,13 @@ def package_words(part: str) -> dict:
     Returns
     -------
     dict
-        The part's tables by scene or explorer name (shared: do not modify).
+        The part's tables by scene or explorer name (shared: do not modify), e.g.
+        ``package_words("explorer")["impulse"]["rows"]["mass m"]`` is ``['kg', 'mass of the body']``.
 
     Raises
     ------
     InputError
         If ``part`` is neither.
-
-    Examples
-    --------
-    >>> package_words("explorer")["impulse"]["rows"]["mass m"]
-    ['kg', 'mass of the body']
     """
     import tomllib
     from importlib.resources import files

@@ -75,10 +75,8 @@ def horizontal_chain(n: int = 4, lam: float = 2.0) -> SceneResult:
 
     Parameters
     ----------
-    n : int
-        Number of bodies (>= 1).
-    lam : float
-        Size ratio ``lambda = L / rho`` (> 0, 7.21).
+    n, lam : int, float
+        Number of bodies (>= 1) and size ratio ``lambda = L / rho`` (> 0, 7.21).
 
     Returns
     -------
