@@ -53,14 +53,10 @@ class Contact:
     ----------
     kind : {"pin", "slider", "weld"}
         Pin (1 dof: rotation), slider (1 dof: translation) or weld (0 dof).
-    a : int
-        Body index (``>= 0``), the ``+1`` column of ``G`` (Definition 42).
-    b : int
-        Body index or ``-1`` for the ground, the ``-1`` column of ``G``.
-    point_a : (x, y)
-        Contact point in body a's frame.
-    point_b : (x, y)
-        Contact point in body b's frame (world frame for the ground).
+    a, b : int
+        Body indices, the ``+1`` and ``-1`` columns of ``G`` (``b = -1``: the ground).
+    point_a, point_b : (x, y)
+        The contact point in body a's frame, and in body b's (the world's for the ground).
     direction : (dx, dy)
         Slider only: the sliding direction in body b's frame (non-zero).
     angle : float
@@ -70,8 +66,6 @@ class Contact:
 
     Examples
     --------
-    >>> Contact("slider", 2, -1, direction=(0.0, 1.0), angle=np.pi / 2).dofs
-    1
     >>> Contact("glue", 0, -1)
     Traceback (most recent call last):
     ...
@@ -138,13 +132,6 @@ def validate_contacts(contacts, n_bodies: int) -> tuple[Contact, ...]:
     ------
     InputError
         For an entry that is not a Contact or names a body out of range.
-
-    Examples
-    --------
-    >>> validate_contacts([Contact("pin", 3, -1)], 2)
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.InputError: contacts[0].a must be a body index in 0..1, got 3
     """
     out = tuple(contacts)
     for k, c in enumerate(out):
@@ -375,12 +362,6 @@ def stacked_contact_spaces(contacts, pose):
     ------
     ShapeError
         If ``pose`` is not ``(N, 3)``.
-
-    Examples
-    --------
-    >>> z, B = stacked_contact_spaces([Contact("pin", 0, -1), Contact("weld", 0, -1)], np.zeros((1, 3)))
-    >>> z.shape, B.shape
-    ((6, 1), (6, 5))
     """
     pose = _pose(pose)
     cs = validate_contacts(contacts, pose.shape[-2])

@@ -165,11 +165,9 @@ def reaction_space(kind, point=(0.0, 0.0), direction=(1.0, 0.0)) -> np.ndarray:
 def R_of(s, point=(0.0, 0.0)) -> np.ndarray:
     """Reaction space ``R`` (``sᵀR = 0``) of the joint whose motion space is ``s`` (thesis 6.1, 5.63, 7.16).
 
-    The algorithms know a joint only by ``s``; this reads kind, pivot and slide direction off it
-    and returns :func:`reaction_space`, so every ``μ = Uᵀ f`` in the package is in the module
-    table's basis.  A rotation ``[a, b, w]`` (``w ≠ 0``, tested exactly) is a pivot at
-    ``(-b/w, a/w)`` (7.16); a translation a slide through ``point``; two columns a pin in a slot
-    (or, two translations, ``twin_prismatic``); three columns ``plane``; none a weld at ``point``.
+    The algorithms know a joint only by ``s``: this reads kind, pivot and slide off it (a rotation
+    ``[a, b, w]``, ``w ≠ 0`` exactly, is a pivot at ``(-b/w, a/w)``, 7.16) and returns
+    :func:`reaction_space`, so every ``μ = Uᵀ f`` in the package is in the module table's basis.
 
     Parameters
     ----------
@@ -238,25 +236,16 @@ class JointSpace:
     direction : array_like, shape (2,), optional
         Slide direction (non-zero), default +x; ignored by the revolute and fixed joints.
 
-    Attributes
-    ----------
-    kind, point, direction, s, R, dof
-        The properties below.
-
     Raises
     ------
-    InputError
-        For an unknown ``kind``.
-    ShapeError
-        If ``point`` or ``direction`` does not have shape (2,).
+    InputError, ShapeError
+        For an unknown ``kind``, or ``point`` or ``direction`` not of shape (2,).
 
     Examples
     --------
     >>> j = prismatic(point=(1.0, 0.0), direction=(0.0, 1.0))
-    >>> j
-    JointSpace('prismatic', point=(1.0, 0.0), direction=(0.0, 1.0))
-    >>> j.s.T @ j.R
-    array([[0., 0.]])
+    >>> j, j.s.T @ j.R
+    (JointSpace('prismatic', point=(1.0, 0.0), direction=(0.0, 1.0)), array([[0., 0.]]))
     """
 
     __slots__ = ("_kind", "_point", "_direction", "_s", "_R")
