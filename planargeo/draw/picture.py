@@ -222,11 +222,9 @@ _SPOT_HA = ["left" if c > 0.3 else "right" if c < -0.3 else "center" for c in _S
 _SPOT_VA = ["bottom" if c > 0.3 else "top" if c < -0.3 else "center" for c in _SPOT_DIR[:, 1]]
 _ALIGN_X = {"left": 0.0, "center": 0.5, "right": 1.0}
 _ALIGN_Y = {"bottom": 0.0, "center": 0.5, "top": 1.0}
-_SPOT_FX = np.array([_ALIGN_X[a] for a in _SPOT_HA])
-_SPOT_FY = np.array([_ALIGN_Y[a] for a in _SPOT_VA])
 #: the eight spots as plain floats: (cos, sin, box's left edge and bottom in box sizes)
-_SPOTS = [(float(c), float(s), float(fx), float(fy))
-          for (c, s), fx, fy in zip(_SPOT_DIR, _SPOT_FX, _SPOT_FY)]
+_SPOTS = [(float(c), float(s), _ALIGN_X[ha], _ALIGN_Y[va])
+          for (c, s), ha, va in zip(_SPOT_DIR, _SPOT_HA, _SPOT_VA)]
 
 
 def _z_of(el: dict):
@@ -252,8 +250,7 @@ class Picture:
     Parameters
     ----------
     view : (float, float, float, float)
-        ``(x0, x1, y0, y1)``: what must be in view.  With ``equal=True`` (one scale
-        on both axes) the box is widened on one axis to the plot area's shape.
+        ``(x0, x1, y0, y1)``: what must be in view (with ``equal``, widened to the plot area's shape).
     size : (int, int)
         Width and height in pixels.
     title : str
@@ -286,7 +283,7 @@ class Picture:
             margin = (44, 12, 26 if title else 10, 30) if ticks else (6, 6, 24 if title else 6, 6)
         self.margin = tuple(float(m) for m in margin)
         ml, mr, mt, mb = self.margin
-        pw, ph = w - ml - mr, h - mt - mb
+        self._plot = pw, ph = w - ml - mr, h - mt - mb      # the plot area (pixels)
         if equal:  # widen the box on one axis to the plot area's shape
             k = min(pw / (x1 - x0), ph / (y1 - y0))
             cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
@@ -300,10 +297,7 @@ class Picture:
 
     # ------------------------------------------------------------------ helpers
     def copy(self) -> "Picture":
-        """A picture with the same view and elements, to which more can be added.
-
-        Elements and handles added to the copy do not reach this picture (the elements
-        themselves are shared: a builder that caches a picture hands out copies).
+        """A picture with the same view and elements, to which more can be added (not reaching this one).
 
         Returns
         -------
@@ -312,11 +306,10 @@ class Picture:
         Examples
         --------
         >>> a = Picture((0, 1, 0, 1), size=(100, 100))
-        >>> a.marks("m", [[0.5, 0.5]])
         >>> b = a.copy()
-        >>> b.handle("h", (0.5, 0.5)); b.marks("n", [[0.2, 0.2]])
-        >>> len(a.elements), len(b.elements), len(a.handles), len(b.handles)
-        (1, 2, 0, 1)
+        >>> b.marks("n", [[0.2, 0.2]])
+        >>> len(a.elements), len(b.elements)
+        (0, 1)
         """
         out = object.__new__(Picture)
         out.__dict__.update(self.__dict__)
@@ -331,6 +324,7 @@ class Picture:
         Parameters
         ----------
         xy : array_like (..., 2)
+            Data points.
 
         Returns
         -------
@@ -362,8 +356,7 @@ class Picture:
 
     def _edge_arrow(self, n_px, t_px, length, text, infinite):
         """Parts of an arrow at the view's edge in the pixel direction ``n_px`` (along ``t_px``)."""
-        ml, mr, mt, mb = self.margin
-        pw, ph = self.size[0] - ml - mr, self.size[1] - mt - mb
+        pw, ph = self._plot
         n0, n1 = (float(v) for v in n_px)           # plain floats (the same arithmetic as arrays)
         hn = math.hypot(n0, n1)
         n0, n1 = n0 / hn, n1 / hn
@@ -391,10 +384,8 @@ class Picture:
               shape: str | None = None, color: str | None = None, glyph_scale: float = 6.0):
         """A homogeneous point (a twist's or an acceleration's pole) with its rotation glyph.
 
-        A finite pole in view is a marker, with a 270° arrow turning with the sign of
-        the weight (the rate of rotation, 4.10); a pole out of view is an arrow at the
-        view's edge pointing to it; an ideal point (a translation, weight 0) is an arrow
-        at the edge in the direction in which the point lies, along the translation.
+        A pole in view is a marker with a 270° arrow turning with the sign of the weight (the rate
+        of rotation, 4.10); a pole out of view, or an ideal point, is an arrow at the view's edge.
 
         Parameters
         ----------
@@ -432,8 +423,7 @@ class Picture:
         if xy is not None:
             x, y = xy
             qx, qy = (x - self.box[0]) * self.kx, (y - self.box[2]) * self.ky
-            ml, mr, mt, mb = self.margin
-            pw, ph = self.size[0] - ml - mr, self.size[1] - mt - mb
+            pw, ph = self._plot
             if -1 <= qx <= pw + 1 and -1 <= qy <= ph + 1:
                 parts.append({"p": "mark", "x": x, "y": y, "shape": shape or st.get("marker", "o"),
                               "size": size})
@@ -461,9 +451,8 @@ class Picture:
              width: float | None = None, dash=None):
         """A homogeneous line (a wrench's line of action), clipped to the view.
 
-        The force's sense is an arrow of fixed length on the line, at ``anchor`` (its
-        point nearest the view's centre by default).  The line at infinity (a pure
-        couple, 4.27) is a couple glyph in the upper right corner.
+        Its sense is an arrow on the line at ``anchor``; the line at infinity (a couple, 4.27) is a
+        couple glyph in the upper right corner.
 
         Parameters
         ----------
@@ -474,7 +463,7 @@ class Picture:
         label : str, optional
             Text at the line (default: ``symbol``).
         anchor : (float, float), optional
-            Where the sense arrow sits (projected onto the line).
+            Where the sense arrow sits (projected onto the line; default: the view's centre).
         arrow : bool
             Draw the sense arrow.
         {color}
@@ -669,7 +658,7 @@ class Picture:
         Parameters
         ----------
         id : str
-            The handle's name (the name of one of the explorer's handles).
+            The handle's name (one of the explorer's handles).
         xy : (float, float)
             Where it is.
         symbol, desc : str
@@ -681,16 +670,13 @@ class Picture:
 
     # ------------------------------------------------------------------ output
     def _place_labels(self) -> None:
-        """Move labels (among nine spots around their anchor) so that no two boxes overlap.
+        """Move labels among nine spots around their anchors so that no two boxes overlap.
 
-        Labels are placed in drawing order, topmost first; each takes its asked spot, or
-        the first of eight spots around its anchor that meets no placed label and stays
-        in the plot area.  A label with no free spot hides, where it was asked (its
-        element keeps its description, shown on hover).  Placed boxes are kept by row (one
-        label height), so that a spot is checked against the boxes of its rows only.
+        Topmost first, each takes its asked spot or the first of eight around its anchor that is
+        free and in the plot area, else hides (its element keeps its hover text).  Placed boxes are
+        kept by row (one label height), so that a spot meets only the boxes of its rows.
         """
-        ml, mr, mt, mb = self.margin
-        pw, ph = self.size[0] - ml - mr, self.size[1] - mt - mb
+        pw, ph = self._plot
         h = 1.25 * FONT_PX
         rows: dict[int, list[tuple[float, float, float, float]]] = {}   # boxes by row of one label height
         get = rows.get
