@@ -93,9 +93,8 @@ def energy(model: Model, q=None, qd=None, *, data=None) -> tuple[np.ndarray, np.
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
-    >>> T, V = energy(chain_model(1), [np.pi / 2], [3.0])   # rod upright, spinning at 3 rad/s
-    >>> float(T), float(V)                                  # ½ (1/3) 9, m g L/2
-    (1.5, 4.905)
+    >>> [float(x) for x in energy(chain_model(1), [np.pi / 2], [3.0])]   # upright at 3 rad/s: ½ (1/3) 9, m g L/2
+    [1.5, 4.905]
     """
     if data is None:
         data = kinematics(model, q, qd)
@@ -233,8 +232,8 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
              max_steps: int = MAX_STEPS, damping=None, max_evals: int | None = None) -> SimulationResult:
     """Integrate ``q̈ = forward(q, q̇, τ)`` from ``(q0, qd0)`` over ``[0, t_end]`` (thesis 3.41-3.42, 2.9 in time).
 
-    The state ``y = (q, q̇)`` obeys ``ẏ = (q̇, q̈)``, ``q̈`` from the forward dynamics (default
-    the articulated-body algorithm, 3.31-3.42); the thesis leaves the integration to the reader (3.6).
+    ``ẏ = (q̇, q̈)`` for ``y = (q, q̇)``, ``q̈`` from the forward dynamics (default the
+    articulated-body algorithm, 3.31-3.42); the thesis leaves the integration to the reader (3.6).
 
     Parameters
     ----------
@@ -244,18 +243,14 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         The initial state.
     t_end : float
         Final time (> 0).
-    tau : array_like (nq,) or callable ``tau(t, q, qd)``, optional
-        Joint forces (zero by default: a free, conservative mechanism).
-    f_ext : array_like (N, 3) or callable ``f_ext(t, q, qd)``, optional
-        External world wrenches at the origin.
+    tau, f_ext : array_like (nq,) and (N, 3), or callables ``(t, q, qd)``, optional
+        Joint forces (default zero) and external world wrenches at the origin.
     method : {"DOP853", "RK23", "RK45", "Radau", "BDF", "LSODA", "RK4"}
-        scipy's adaptive solvers (the implicit ones' finite-difference Jacobians count in ``nfev``)
-        or fixed-step RK4 (:data:`METHODS`).
+        scipy's adaptive solvers (implicit ones' Jacobian evaluations count in ``nfev``) or fixed-step RK4.
     rtol, atol : float
         Tolerances of the adaptive methods: ``rtol`` at least ``100 ε`` (2.2e-14), ``atol >= 0``.
     dt : float, optional
-        Step of ``"RK4"`` (required there); for the adaptive methods the output is then sampled
-        every ``dt`` (dense output) instead of at every accepted step.
+        Step of ``"RK4"`` (required there); the adaptive methods' output is then sampled every ``dt``.
     max_step : float
         Largest step of the adaptive methods (> 0; ``inf`` by default).
     forward, stabilize, project, residual, energy_fn : callables, optional
@@ -266,13 +261,11 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         A watched condition number above this opens a ``"near-singular"`` event.
     progress : bool or None
         Show a tqdm progress bar; ``None``: :func:`progress_enabled` decides.
-    max_steps : int
-        Largest number of steps (:data:`MAX_STEPS` by default): raise it for a deliberate long run.
+    max_steps, max_evals : int
+        Largest number of steps (:data:`MAX_STEPS`) and of evaluations of the dynamics (None: no limit).
     damping : float or array_like (nq,), optional
         Viscous coefficients ``c_j >= 0`` per joint coordinate: ``τ_j - c_j q̇_j`` replaces ``τ_j``;
         the dissipated ``W(t) = ∫ Σ c_j q̇_j² dt`` is integrated too (``result.dissipated``).
-    max_evals : int, optional
-        Largest number of evaluations of the dynamics; None: no limit beyond ``max_steps``.
 
     Returns
     -------
@@ -296,12 +289,6 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     >>> r = simulate(chain_model(1), [0.0], [0.0], 0.01, method="DOP853", rtol=1e-12, atol=1e-14)
     >>> r.status, round(float(r.q[-1, 0]) / (-0.5 * 14.715 * 0.01 ** 2), 4), bool(r.energy_drift() < 1e-10)
     ('ok', 1.0, True)
-
-    With damping at the pivot the energy it removes is ``dissipated``:
-
-    >>> r = simulate(chain_model(1), [0.0], [0.0], 2.0, damping=0.5)
-    >>> bool(r.dissipated[-1] > 0), bool(r.energy_drift() < 1e-7)
-    (True, True)
     """
     t_end, dt, rtol, atol, max_step, max_steps = _options(method, t_end, dt, rtol, atol, max_step, max_steps)
     max_evals = _eval_budget(max_evals, method, t_end, dt)
@@ -358,9 +345,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
             T, V = energy(model, q, qd)
             return float(T), float(V)
 
-    ts, ys = [], []
-
-    cs = []
+    ts, ys, cs = [], [], []          # times, states (q, q̇ and the dissipated energy), watched conditions
 
     def watch(y):
         # at record time: a hook may reuse the value of the dynamics evaluation at this very state
@@ -622,18 +607,15 @@ def _step_budget(k: int, t: float, t_end: float, max_steps: int, method: str) ->
 
 
 def near_singular_events(t, cond, threshold: float) -> list[dict]:
-    """``"near-singular"`` events of a condition-number series: one per excursion above ``threshold``.
+    """``"near-singular"`` events of a condition-number series, one per excursion above ``threshold``.
 
-    Each is ``{"kind", "t", "cond", "t_start", "t_end"}`` with the peak's time
-    and value and the first/last times above the threshold (``nan`` counts as
-    above: a condition number that could not be computed).
+    Each is ``{"kind", "t", "cond", "t_start", "t_end"}``: the peak and the first/last times
+    above (``nan`` counts as above: a condition number that could not be computed).
 
     Parameters
     ----------
-    t : array_like, shape (T,)
-        Times (s).
-    cond : array_like, shape (T,)
-        Condition numbers.
+    t, cond : array_like, shape (T,)
+        Times (s) and condition numbers.
     threshold : float
         The level above which a step is near-singular.
 
@@ -645,8 +627,8 @@ def near_singular_events(t, cond, threshold: float) -> list[dict]:
     Examples
     --------
     >>> ev = near_singular_events([0, 1, 2, 3, 4, 5], [1, 1e7, 1e9, 1e8, 1, 1e7], 1e6)
-    >>> [(e["t"], e["cond"], e["t_start"], e["t_end"]) for e in ev]
-    [(2.0, 1000000000.0, 1.0, 3.0), (5.0, 10000000.0, 5.0, 5.0)]
+    >>> [(e["t"], e["t_start"], e["t_end"]) for e in ev]
+    [(2.0, 1.0, 3.0), (5.0, 5.0, 5.0)]
     """
     t = np.asarray(t, dtype=float)
     c = np.asarray(cond, dtype=float)
