@@ -144,17 +144,13 @@ def chain_picture(w, *, overlays: dict, view, split: dict | None = None, focus=N
             desc = f"{meaning} ({eq}): {_value(kind, arr[i], unit)}"
             faded = focus is not None and focus != (per, i)
             eid = f"{key}{i + 1}"
+            kw = dict(role=role, color=color, symbol=symbol, desc=desc, label="" if faded else None)
             if kind == "point":
-                pic.point(eid, arr[i], role=role, color=color, symbol=symbol, desc=desc,
-                          glyph=key in ("v", "a"), glyph_scale=4.0 if key == "v" else 1.0,
-                          label="" if faded else None)
+                pic.point(eid, arr[i], glyph=key in ("v", "a"), glyph_scale=4.0 if key == "v" else 1.0, **kw)
             elif kind == "line":
-                pic.line(eid, arr[i], role=role, color=color, symbol=symbol, desc=desc,
-                         anchor=anchors[per][i], label="" if faded else None,
-                         dash=[1.5, 2.5] if key == "TQ" else None)
+                pic.line(eid, arr[i], anchor=anchors[per][i], dash=[1.5, 2.5] if key == "TQ" else None, **kw)
             else:
-                pic.conic(eid, arr[i], role=role, color=color, symbol=symbol, desc=desc,
-                          label="" if faded else None)
+                pic.conic(eid, arr[i], **kw)
             if faded:
                 pic.elements[-1]["opacity"] = FADED
     if time is not None:

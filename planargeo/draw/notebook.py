@@ -115,10 +115,8 @@ def element_picture(obj, *, size=SIZE) -> Picture:
 
 
 def _pole(p, name: str, twist: bool, size) -> Picture:
-    role = "twist" if twist else "point"
     if not np.any(p):
-        pic = _frame([], f"{name} = 0: zero twist, no pole", size)
-        return pic
+        return _frame([], f"{name} = 0: zero twist, no pole", size)
     if p[2] == 0:
         d = np.array([-p[1], p[0]]) / math.hypot(p[0], p[1])
         title = (f"{name}: translation, velocity {_pair(p[:2])}" if twist
