@@ -96,13 +96,6 @@ def closure_residual(model: Model, q, contacts=None) -> np.ndarray:
     -------
     ndarray
         One residual per constrained contact direction (m, rad).
-
-    Examples
-    --------
-    >>> from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
-    >>> m = slider_crank_model(); q, _ = slider_crank_state()
-    >>> bool(np.abs(closure_residual(m, q)).max() < 1e-14)
-    True
     """
     cs = _cs(model, contacts)
     pose = kinematics(model, q).pose
@@ -162,10 +155,8 @@ def project_state(model: Model, q, qd, contacts=None, *, fixed=(), tol: float = 
     qd : array_like (nq,)
         Joint velocities.
     {contacts fixed}
-    tol : float
-        Position tolerance.
-    max_iter : int
-        Gauss-Newton iterations at most.
+    tol, max_iter : float, int
+        Position tolerance; Gauss-Newton iterations at most.
 
     Returns
     -------
@@ -279,15 +270,12 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
         Baumgarte parameters (1/s).
     prescribed : dict {joint: qdd}, optional
         Driven joints (e.g. ``{0: 0.0}``: a crank at constant speed), left alone by the projection.
-    tol : float
-        Position tolerance of the projection.
-    trigger : float
-        The projection runs only when a position or velocity residual exceeds ``trigger``.
+    tol, trigger : float
+        Position tolerance of the projection; it runs only when a residual exceeds ``trigger``.
     project_initial : bool
         Project ``(q0, qd0)`` onto the manifold before starting.
     watch : bool
-        Record ``cond(BᵀGΛ⁻¹GᵀB)`` (9.70-9.72) per step and its near-singular events, reusing
-        the dynamics' value at the accepted state where there is one (DOP853, RK45, RK23).
+        Record ``cond(BᵀGΛ⁻¹GᵀB)`` (9.70-9.72) per step and its near-singular events.
     max_evals : int or None
         Budget of evaluations of the constrained dynamics (default :data:`LOOP_MAX_EVALS`).
 
@@ -302,8 +290,6 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
     InputError
         An unknown ``stabilization``, a projection with a multistep method, negative
         ``alpha``/``beta``, bad tolerances, or ``prescribed`` not a dict of joint indices.
-    SizeLimitError
-        A run predicted past ``max_steps`` or ``max_evals``.
 
     Examples
     --------
