@@ -116,17 +116,14 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_poi
     Raises
     ------
     SingularConfigurationError
-        When ``s_i^T I_i s_i`` (the joint rule) or ``1 + U_i R_i^T Lambda_{i-1}^-1 I_i``
-        (:data:`SOLVE_COND_LIMIT`) is singular.
+        A singular ``s_i^T I_i s_i`` (the joint rule) or ``1 + U_i R_i^T Λ_{i-1}⁻¹ I_i`` (:data:`SOLVE_COND_LIMIT`).
 
     Examples
     --------
-    Thesis 7.42 with ``m = L = 1``, ``rho = 1/2``: ``4 / (m (L^2 + 4 rho^2)) = 2``.
-
     >>> from planargeo.screws.twists import inertia_matrix
     >>> r = mobility_recursion([inertia_matrix(1.0, [0.5, 0.0], 0.25)], [np.array([[0.0], [0.0], [1.0]])],
     ...                        np.zeros((1, 3)), np.zeros((1, 3)), [np.zeros(1)])
-    >>> float(r.Lambda_inv[0][2, 2])
+    >>> float(r.Lambda_inv[0][2, 2])                  # 4 / (m (L² + 4 ρ²)), thesis 7.42
     2.0
     """
     I = np.asarray(I, dtype=float)

@@ -37,23 +37,22 @@ def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa
     Parameters
     ----------
     Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next : array_like
-        ``Λ_i⁻¹`` (3, 3) and ``b_i`` (3,) of body ``i`` (7.38); ``A`` (3, 3) and ``d`` (3,) of body
-        ``i+1`` (7.7); ``T`` (6.105) and ``s`` (3, k), ``Q`` (k,) of joint ``i+1``; its ``κ`` (3,) (2.19).
+        ``Λ_i⁻¹``, ``b_i`` of body ``i`` (7.38); ``A``, ``d`` of body ``i+1`` (7.7); ``T`` (6.105), ``s``,
+        ``Q`` of joint ``i+1``; its ``κ`` (2.19).
 
     Returns
     -------
     numpy.ndarray, shape (3,)
-        ``a_i = C⁻¹ [b_i - Λ_i⁻¹ (T Q + R Uᵀ (A κ + d))]``.
+        ``a_i = C⁻¹ [b_i - Λ_i⁻¹ (T Q + R Uᵀ (A κ + d))]``, ``C = 1 + Λ_i⁻¹ R Uᵀ A``.
 
     Raises
     ------
     SingularConfigurationError
-        When the split matrix ``C = 1 + Λ_i⁻¹ R Uᵀ A_{i+1}`` is singular.
+        When ``C`` is singular.
 
     Examples
     --------
-    A pinned unit point mass at (1, 0) carrying a second one on a pin there, pushed up at unit rate:
-    the second mass halves the acceleration.
+    A pinned unit point mass carrying a second one, pushed up: the second mass halves the acceleration.
 
     >>> from planargeo.screws.twists import inertia_matrix
     >>> A2, s2 = inertia_matrix(1.0, [1.0, 0.0], 1e-3), np.array([[0.0], [-1.0], [1.0]])
@@ -73,13 +72,13 @@ def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) 
     Parameters
     ----------
     Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next : array_like
-        ``Λ_i⁻¹`` (3, 3) and ``b_i`` (3,) of body ``i`` (7.38); ``A`` (3, 3) and ``d`` (3,) of body
-        ``i+1`` (7.7); ``T`` (6.105) and ``s`` (3, k), ``Q`` (k,) of joint ``i+1``; its ``κ`` (3,) (2.19).
+        ``Λ_i⁻¹``, ``b_i`` of body ``i`` (7.38); ``A``, ``d`` of body ``i+1`` (7.7); ``T`` (6.105), ``s``,
+        ``Q`` of joint ``i+1``; its ``κ`` (2.19).
 
     Returns
     -------
     numpy.ndarray, shape (3,)
-        ``f_{i+1} = C⁻ᵀ [T Q + R Uᵀ (A (b_i + κ) + d)]``, on body ``i+1`` through the joint.
+        ``f_{i+1} = C⁻ᵀ [T Q + R Uᵀ (A (b_i + κ) + d)]``, on body ``i+1``.
 
     Raises
     ------
@@ -88,12 +87,10 @@ def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) 
 
     Examples
     --------
-    The masses of :func:`split_acceleration`: the pin pushes the second one with half the push.
-
     >>> from planargeo.screws.twists import inertia_matrix
     >>> A2, s2 = inertia_matrix(1.0, [1.0, 0.0], 1e-3), np.array([[0.0], [-1.0], [1.0]])
     >>> args = (np.diag([0.0, 0.0, 1.0]), [0, 0, 1.0], A2, np.zeros(3), A2 @ s2 / (s2.T @ A2 @ s2), s2, [0.0], np.zeros(3))
-    >>> split_force(*args).round(12) + 0.0
+    >>> split_force(*args).round(12) + 0.0             # the masses of split_acceleration: half the push
     array([0. , 0.5, 0.5])
     """
     Lam_i, b_i, A_next, d_next, T_next, Q_next, kappa_next, P, C = _split(
@@ -142,10 +139,8 @@ def chain_split(I, S, kappa, p, tau, parents=None, joint_points=None) -> ChainSp
 
     Raises
     ------
-    TopologyError
-        When ``parents`` is not an unbranched chain.
-    SingularConfigurationError
-        When a joint-space matrix or a split matrix is singular.
+    TopologyError, SingularConfigurationError
+        ``parents`` not an unbranched chain; a singular joint-space or split matrix.
 
     Examples
     --------

@@ -11,7 +11,6 @@ cache is per machine, so ``make lab`` / ``make test`` fill it with
 from __future__ import annotations
 
 import math
-import os
 import sys
 import time
 from collections import namedtuple
@@ -222,19 +221,10 @@ def cache_is_warm(kernels=None) -> bool:
     if kernels is None:
         from planargeo.algorithms import kernels
     try:
-        for name in ENTRY_POINTS:
-            cache = getattr(kernels, name)._cache          # numba's FunctionCache (cache=True)
-            cache_file = getattr(cache, "_cache_file", None)
-            if cache_file is not None and hasattr(cache_file, "_load_index"):
-                if not cache_file._load_index():          # empty: none, or for another source (numba's stamp)
-                    return False
-                continue
-            index = getattr(cache, "_index_path", None) or cache_file._index_path
-            if os.stat(index).st_mtime < os.stat(kernels.__file__).st_mtime:
-                return False
+        # numba's index of each entry point: empty when there is none or it is for another source
+        return all(getattr(kernels, name)._cache._cache_file._load_index() for name in ENTRY_POINTS)
     except Exception:                                      # (unreadable or foreign files: not warm)
         return False
-    return True
 
 
 def _say_if_cold(kernels) -> None:

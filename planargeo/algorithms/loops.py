@@ -81,19 +81,15 @@ class LoopSolution:
     def __repr__(self):
         return f"LoopSolution(N={self.tree.N}, contacts={self.G.shape[0]}, cond={self.cond:.3g})"
 
-    @property
+    @functools.cached_property
     def mu(self) -> np.ndarray:
         """Reaction magnitudes ``μ_i = U_iᵀ f_i`` (6.61b) of every joint in its basis ``R_i``, built on first access."""
-        if not hasattr(self, "_mu"):
-            self._mu = self.tree.U.T @ self.f
-        return self._mu
+        return self.tree.U.T @ self.f
 
-    @property
+    @functools.cached_property
     def reactions(self) -> list:
         """Every pin and bearing force of the loop, a :class:`Reaction` per tree joint then per contact."""
-        if not hasattr(self, "_reactions"):
-            self._reactions = _reactions(self._model, self.contacts, self.data, self.f, self.F)
-        return self._reactions
+        return _reactions(self._model, self.contacts, self.data, self.f, self.F)
 
     def reaction(self, name: str) -> "Reaction":
         """The :class:`Reaction` named ``name`` (a joint's or contact's name, or its symbol ``f_1``, ``F_1``).
@@ -206,21 +202,12 @@ def joint_wrenches(parents, I, a, p, GtF=None) -> np.ndarray:
 
 def _reactions(model, cs, data, f, F) -> list:
     """The :class:`Reaction` list of one solved state: tree joints (``f_i``), then contacts (``-F_k`` on body a)."""
-    out = []
-    N = model.N
-    fw = f.reshape(N, 3)
-    for i, jt in enumerate(model.joints):
-        P = data.pose[i, :2].astype(float)
-        w = fw[i].copy()
-        out.append(Reaction(f"f_{i + 1}", jt.name, jt.kind, i, model.parents[i], P, w,
-                            float(w[2] + P[1] * w[0] - P[0] * w[1])))
-    Fw = F.reshape(-1, 3)
-    for k, c in enumerate(cs):
-        P = np.asarray(world_point(data.pose, c.a, c.point_a), dtype=float)
-        w = -Fw[k]
-        out.append(Reaction(f"F_{k + 1}", c.name, c.kind, c.a, c.b, P, w,
-                            float(w[2] + P[1] * w[0] - P[0] * w[1])))
-    return out
+    rows = [(f"f_{i + 1}", jt.name, jt.kind, i, model.parents[i], data.pose[i, :2].astype(float), w.copy())
+            for i, (jt, w) in enumerate(zip(model.joints, f.reshape(model.N, 3)))]
+    rows += [(f"F_{k + 1}", c.name, c.kind, c.a, c.b, np.asarray(world_point(data.pose, c.a, c.point_a), dtype=float),
+              -w) for k, (c, w) in enumerate(zip(cs, F.reshape(-1, 3)))]
+    return [Reaction(symbol, name, kind, body, other, P, w, float(w[2] + P[1] * w[0] - P[0] * w[1]))   # moment about P
+            for symbol, name, kind, body, other, P, w in rows]
 
 
 @functools.lru_cache(maxsize=256)

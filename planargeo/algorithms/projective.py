@@ -45,16 +45,12 @@ def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.
     Returns
     -------
     numpy.ndarray, shape (3,)
-        ``a_i`` at the origin.
 
     Examples
     --------
-    A unit point mass at (1, 0) pinned at the origin, pushed up by a unit force
-    through itself (``p = -g``): it turns at 1 rad/s².
-
     >>> from planargeo.screws.twists import inertia_matrix
     >>> acceleration_propagator(inertia_matrix(1.0, [1.0, 0.0], 0.0), [[0.0], [0.0], [1.0]], [0.0],
-    ...                         [0.0, -1.0, -1.0], np.zeros(3), np.zeros(3), np.zeros(3))
+    ...                         [0.0, -1.0, -1.0], np.zeros(3), np.zeros(3), np.zeros(3))   # pushed up: 1 rad/s²
     array([0., 0., 1.])
     """
     I, s, Q, T = _propagator_args(I, s, Q, T)

@@ -93,10 +93,10 @@ def trunk(C) -> np.ndarray:
 
     Examples
     --------
-    >>> trunk(adjacency([-1, 0, 1])).astype(int)
+    >>> trunk(adjacency([-1, 0, 0])).astype(int)
     array([[1, 0, 0],
            [1, 1, 0],
-           [1, 1, 1]])
+           [1, 0, 1]])
     """
     C = as_array(C, "C")
     if C.ndim != 2 or C.shape[0] != C.shape[1]:
@@ -154,15 +154,12 @@ def blocks(X, k: int = 3) -> np.ndarray:
 def joint_conditions(model: Model, q) -> np.ndarray:
     """Scale-free condition number of every joint's ``sᵀAs`` at ``q`` (thesis 7.7a, 6.105; the singular case of 3.6).
 
-    The rule of :data:`planargeo.errors.COND_LIMIT` on the tree's articulated inertias, never raising
-    (``articulated_recursion(..., check=False)``); watches simulations for singular configurations.
+    The rule of :data:`planargeo.errors.COND_LIMIT` on the tree's articulated inertias, never raising.
 
     Parameters
     ----------
-    model : Model
-        The mechanism.
-    q : array_like, shape (nq,)
-        Joint coordinates.
+    model, q : Model, array_like (nq,)
+        The mechanism and its joint coordinates.
 
     Returns
     -------
@@ -171,11 +168,9 @@ def joint_conditions(model: Model, q) -> np.ndarray:
 
     Examples
     --------
-    A point mass on the pivot of a rod along which a second one slides (at ``x``): ``cond ≈ √5 / x²``.
-
     >>> from planargeo.mechanics.model import Body, Joint, Model
     >>> m = Model([Body(1.0), Body(1.0)], [Joint("revolute"), Joint("prismatic")], [-1, 0])
-    >>> round(float(joint_conditions(m, [0.0, 1e-3])[0]) * 1e-6, 3)
+    >>> round(float(joint_conditions(m, [0.0, 1e-3])[0]) * 1e-6, 3)        # a point mass slid 1e-3 out: √5 / x²
     2.236
     """
     return articulated_recursion(*_state_arrays(model, q, None, None, None)[1:], check=False).cond
@@ -258,19 +253,15 @@ class StackedSolution:
     def __repr__(self):
         return f"StackedSolution(N={self.N}, nq={len(self.qdd)})"
 
-    @property
+    @functools.cached_property
     def articulated_mobilities(self):
         """The tree's articulated mobilities ``Λ_i⁻¹``, ``b_i`` (7.38 with the siblings loaded, 9.45 corrected), built on first access."""
-        if not hasattr(self, "_mobilities"):
-            self._mobilities = mobility_recursion(*self._args, articulated=self.articulated)
-        return self._mobilities
+        return mobility_recursion(*self._args, articulated=self.articulated)
 
-    @property
+    @functools.cached_property
     def L(self) -> np.ndarray:
         """Articulation matrix ``L = (1 - C^T R U^T)^{-1}`` (9.31), built on first access."""
-        if not hasattr(self, "_L"):
-            self._L = articulation_matrix(self.C, self.P)
-        return self._L
+        return articulation_matrix(self.C, self.P)
 
     def _stack(self, blocks) -> np.ndarray:
         kr = [3 - si.shape[1] for si in self.articulated.S]
@@ -286,13 +277,11 @@ class StackedSolution:
         """Block-diagonal quake spaces ``{{U_i}}`` (9.20, 6.99), ``U R^T = 1 - S T^T``."""
         return self._stack(self.articulated.U)
 
-    @property
+    @functools.cached_property
     def mobility(self) -> np.ndarray:
         """The tree's full stacked mobility ``Φ = L^T S T^T A^{-1} L`` (3N×3N): ``a = u - Φ w`` for wrenches ``-w``."""
-        if not hasattr(self, "_mob"):
-            self._mob = self.L.T @ self.StTAinv @ self.L
-            self._mob = 0.5 * (self._mob + self._mob.T)
-        return self._mob
+        M = self.L.T @ self.StTAinv @ self.L
+        return 0.5 * (M + M.T)
 
     def mobility_times(self, X) -> np.ndarray:
         """``Φ X`` without forming ``Φ`` or ``L``: ``Lᵀ (S Tᵀ A⁻¹ (L X))`` by an inward and an outward sweep (9.31, 9.34).
@@ -420,8 +409,8 @@ def direct_accelerations(sol: StackedSolution, Lambda_inv, b) -> np.ndarray:
     --------
     >>> from planargeo.mechanics.model import chain_model
     >>> sol = stacked_solve(chain_model(2), [0.0, 0.0], [0.0, 0.0], [1.0, 0.0])
-    >>> mob = sol.articulated_mobilities
-    >>> bool(np.allclose(direct_accelerations(sol, mob.Lambda_inv, mob.b), sol.a))
+    >>> bool(np.allclose(direct_accelerations(sol, sol.articulated_mobilities.Lambda_inv,
+    ...                                       sol.articulated_mobilities.b), sol.a))
     True
     """
     N = sol.N
