@@ -15,8 +15,7 @@ from planargeo._validate import (as_array, as_mat3, as_scalar, as_vec3, as_xy, b
                                  check_positive_definite, check_positive_semidefinite, overflow_checked, rescaled)
 from planargeo.errors import InputError, InvalidPolygonError, SingularInertiaError
 from planargeo.geometry._docs import entries
-from planargeo.screws._docs import SCREWS
-from planargeo.screws.twists import (_Held, inertia_at, inertia_matrix, inertia_rotated, kinetic_energy,
+from planargeo.screws.twists import (SCREWS, _Held, inertia_at, inertia_matrix, inertia_rotated, kinetic_energy,
                                       momentum)
 
 __all__ = [
@@ -28,7 +27,7 @@ __all__ = [
 _documented = entries(SCREWS, {
     "pole": "point : array_like, shape (..., 3)\n    Homogeneous acceleration pole (a twist).",
     "impulse": "line : array_like, shape (..., 3)\n    Homogeneous line (an impulse's line of action).",
-    "no_mass": "InputError\n    If the mass ``inertia[..., 0, 0]`` is not positive (no centre of mass to divide out).",
+    "no_mass": "Raises\n------\nInputError\n    If the mass ``inertia[..., 0, 0]`` is not positive (no centre of mass to divide out).",
 })
 
 
@@ -123,8 +122,6 @@ def centre_of_mass(inertia) -> np.ndarray:
 
     {returns_2}
 
-    Raises
-    ------
     {no_mass}
 
     Examples
@@ -148,8 +145,6 @@ def rotational_inertia(inertia) -> np.ndarray:
 
     {returns_scalar}
 
-    Raises
-    ------
     {no_mass}
 
     Examples
@@ -173,8 +168,6 @@ def radius_of_gyration(inertia) -> np.ndarray:
 
     {returns_scalar}
 
-    Raises
-    ------
     {no_mass}
 
     Examples
@@ -239,8 +232,6 @@ def percussion_axis(inertia, point) -> np.ndarray:
     ndarray (..., 3)
         The wrench ``I a`` (not normalised).
 
-    Raises
-    ------
     {not_psd}
 
     Examples
@@ -299,8 +290,6 @@ def drawable_conic(inertia) -> np.ndarray:
 
     {returns_3x3}
 
-    Raises
-    ------
     {not_psd}
 
     Examples

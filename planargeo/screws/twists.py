@@ -16,7 +16,7 @@ from planargeo._validate import (as_array, as_mat3, as_vec3, as_xy, batch_shape,
                                  check_positive_semidefinite, check_tolerance, overflow_checked, rescaled)
 from planargeo.errors import NumericOverflowError
 from planargeo.geometry.projective import _fit, normalize_line, normalize_point, to_xy
-from planargeo.screws._docs import documented
+from planargeo.geometry._docs import entries
 
 __all__ = [
     "X_P", "X_P_inv_T", "rot", "X_frame", "X_frame_inv_T", "rotation_about", "crm", "crf",
@@ -27,6 +27,21 @@ __all__ = [
     "Twist", "Wrench", "TwistSum", "WrenchSum", "add_twists", "add_wrenches",
 ]
 
+
+#: The docstring entries the screws share (a line ``{inertia twist}``; :func:`planargeo.geometry._docs.entries`).
+SCREWS = {
+    "twist": "twist : Twist or array_like, shape (..., 3)\n    Twist ``[vx, vy, ω]`` (m/s, rad/s).",
+    "wrench": "wrench : Wrench or array_like, shape (..., 3)\n    Wrench ``[fx, fy, τz]`` (N, N·m).",
+    "point": "point : array_like, shape (..., 2)\n    Reference point ``(x, y)`` (m).",
+    "theta": "theta : array_like, shape (...)\n    Angle (rad), counter-clockwise.",
+    "inertia": "inertia : array_like, shape (..., 3, 3)\n"
+               "    Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).",
+    "not_psd": "Raises\n------\nInputError, SingularInertiaError\n"
+               "    ``inertia`` not symmetric positive semi-definite (see :func:`planargeo.screws.kinetic_energy`).",
+    "bad_array": "Raises\n------\nShapeError, NonFiniteError, InputError\n"
+                 "    ``array`` without a last axis of 3, not finite, or not real numbers.",
+}
+documented = entries(SCREWS)
 
 @documented
 def X_P(point) -> np.ndarray:
@@ -75,8 +90,7 @@ def rot(theta) -> np.ndarray:
 
     Parameters
     ----------
-    theta : array_like, shape (...)
-        Angle (rad).
+    {theta}
 
     {returns_3x3}
 
@@ -103,8 +117,7 @@ def X_frame(theta, point) -> np.ndarray:
 
     Parameters
     ----------
-    theta : array_like (...)
-        Angle of the new frame (rad).
+    {theta}
     point : array_like (..., 2)
         Origin of the new frame ``(x, y)`` (m).
 
@@ -126,8 +139,7 @@ def X_frame_inv_T(theta, point) -> np.ndarray:
 
     Parameters
     ----------
-    theta : array_like, shape (...)
-        Angle of the new frame (rad).
+    {theta}
     {point}
 
     {returns_3x3}
@@ -150,8 +162,7 @@ def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
 
     Parameters
     ----------
-    theta : array_like, shape (...)
-        Angle (rad).
+    {theta}
     about : array_like, shape (..., 2), optional
         Centre ``c`` of the rotation (m).
 
@@ -346,8 +357,6 @@ def kinetic_energy(inertia, twist) -> np.ndarray:
 
     {returns_scalar}
 
-    Raises
-    ------
     {not_psd}
 
     Examples
@@ -506,8 +515,6 @@ def inertia_at(inertia, point) -> np.ndarray:
 
     {returns_3x3}
 
-    Raises
-    ------
     {not_psd}
 
     Examples
@@ -535,14 +542,11 @@ def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
     Parameters
     ----------
     {inertia}
-    theta : array_like (...)
-        Angle of the new frame (rad).
+    {theta}
     {point}
 
     {returns_3x3}
 
-    Raises
-    ------
     {not_psd}
 
     Examples
@@ -565,15 +569,12 @@ def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
     Parameters
     ----------
     {inertia}
-    theta : array_like (...)
-        Angle of the rotation (rad), counter-clockwise.
+    {theta}
     about : array_like (..., 2), optional
         Centre of the rotation (m).
 
     {returns_3x3}
 
-    Raises
-    ------
     {not_psd}
 
     Examples
@@ -599,8 +600,6 @@ def momentum(inertia, twist) -> np.ndarray:
 
     {returns_3}
 
-    Raises
-    ------
     {not_psd}
 
     Examples
@@ -684,8 +683,6 @@ def bias_force(inertia, twist, g=None) -> np.ndarray:
 
     {returns_3}
 
-    Raises
-    ------
     {not_psd}
 
     Examples
@@ -914,8 +911,6 @@ class Twist(_Screw):
     array : array_like, shape (..., 3), or Twist
         ``[vx, vy, ω]`` (m/s, rad/s); leading dimensions are a batch.  Stored read-only.
 
-    Raises
-    ------
     {bad_array}
 
     Examples
@@ -1027,8 +1022,6 @@ class Wrench(_Screw):
     array : array_like, shape (..., 3), or Wrench
         ``[fx, fy, τz]`` (N, N·m); leading dimensions are a batch.  Stored read-only.
 
-    Raises
-    ------
     {bad_array}
 
     Examples
