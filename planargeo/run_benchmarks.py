@@ -289,14 +289,9 @@ def main(args: argparse.Namespace) -> int:
     try:
         cmd = [sys.executable, str(suite / "run.py"), "--out", str(stage.resolve()),
                "--summary", str(stage.resolve() / "RESULTS.md"), "--gallery", ""]
-        if args.quick:
-            cmd.append("--quick")
-        if args.no_charts:
-            cmd.append("--no-charts")
-        if sizes:
-            cmd += ["--sizes", ",".join(map(str, sizes))]
-        for group in args.only or ():
-            cmd += ["--only", group]
+        cmd += [flag for flag, on in (("--quick", args.quick), ("--no-charts", args.no_charts)) if on]
+        cmd += ["--sizes", ",".join(map(str, sizes))] if sizes else []
+        cmd += [word for group in args.only or () for word in ("--only", group)]
         rc, interrupted = _run(cmd, str(suite.parent))
         written, left = _move_in(stage, out, args.force)
     finally:
