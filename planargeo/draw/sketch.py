@@ -22,7 +22,7 @@ import math
 
 import numpy as np
 
-from planargeo.draw._shared import ENTRIES, added, as_picture, documented, view_centre
+from planargeo.draw._shared import ENTRIES, added, as_picture, view_centre
 from planargeo.draw.geometry import clip_line
 from planargeo.draw.layout import fit_box, shape_points
 from planargeo.draw.picture import PX_PER_PT, Picture, _color as _role_color, _dash as _role_dash, plain_text
@@ -36,9 +36,18 @@ __all__ = ["panel", "fit_box", "show", "label", "segment", "dimension", "body_wo
            "transform_shape", "arrow", "body", "link", "pin", "ground", "slider", "frame", "com", "model",
            "model_shapes", "slider_guide", "contact", "split_arrows", "joint_split"]
 
-#: The shared docstring entries and what the two-point elements raise, written once
-_two_points = entries(ENTRIES, {
-    "distinct": "Raises\n------\nInputError\n    ``p`` and ``q`` coincide or are not finite points."})
+#: The shared docstring entries, what the two-point elements raise, and the entries of several
+#: mechanism and split functions, written once
+_ENTRIES = {**ENTRIES,
+            "distinct": "Raises\n------\nInputError\n    ``p`` and ``q`` coincide or are not finite points.",
+            "model": "model : planargeo.mechanics.model.Model\n    The model.\n"
+                     "data : planargeo.mechanics.model.Data\n    Its kinematics at the state to draw.",
+            "pose": "pose : array_like (N, 3)\n    The bodies' poses.",
+            "width": "width : float\n    Width of the default rounded links.",
+            "scale": "scale : float\n    Arrow length per unit force (data units).",
+            "avoid": "avoid : shapely geometry, optional\n    What the arrows keep clear of (e.g. the bodies).\n"
+                     "clearance : float\n    Free distance around ``avoid`` and earlier arrows (data units)."}
+documented = entries(_ENTRIES)
 
 #: outline colour of bodies and body labels
 BODY_EDGE = "#1f3a4d"
@@ -293,7 +302,7 @@ def segment(pic: Picture, id: str, p, q, *, role: str = "construct", label=None,
     return el
 
 
-@_two_points
+@documented
 def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at: float = 0.5,
               color=None, tick: float = 8.0, symbol: str | None = None, desc: str = "") -> dict:
     """A dimension line ``p q`` with end ticks, shifted ``offset`` to the left of ``p → q``, labelled.
@@ -361,7 +370,7 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
                     color=color or COLORS["construct"], width=0.7 * PX_PER_PT, z=2)
 
 
-@_two_points
+@documented
 def arrow(pic: Picture, id: str, p, q, *, role: str = "wrench", color=None, label=None,
           offset=(5, 5), symbol: str = "", desc: str = "", z: int = 5) -> dict:
     """An arrow from ``p`` to ``q`` (data points): a solid shaft, its head at ``q``.
@@ -796,13 +805,7 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
     Parameters
     ----------
     {pic}
-    model : planargeo.mechanics.model.Model
-        The model.
-    data : planargeo.mechanics.model.Data
-        Its kinematics at the state to draw.
-    {prefix}
-    width : float
-        Width of the default rounded links.
+    {model prefix width}
     labels : bool
         Label the bodies (their names, or their numbers), below their centroids.
     ground : bool
@@ -883,6 +886,7 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
     return out
 
 
+@documented
 def slider_guide(contact, pose, body_shape=None, *, clearance: float = 0.04, margin=None):
     """The guide of a slider contact in world coordinates: the line through ``point_b`` along ``direction`` (9.83).
 
@@ -892,8 +896,7 @@ def slider_guide(contact, pose, body_shape=None, *, clearance: float = 0.04, mar
     ----------
     contact : planargeo.mechanics.contacts.Contact
         A slider contact.
-    pose : array_like (N, 3)
-        The bodies' poses.
+    {pose}
     body_shape : shapely geometry, optional
         Body a as drawn, in world coordinates.
     clearance : float
@@ -950,8 +953,7 @@ def contact(pic: Picture, id: str, contact, pose, *, body_shape=None, size: floa
     {pic id}
     contact : planargeo.mechanics.contacts.Contact
         The contact.
-    pose : array_like (N, 3)
-        The bodies' poses.
+    {pose}
     body_shape : shapely geometry, optional
         Body a as drawn (sets a slider's guide walls).
     size : float
@@ -1023,6 +1025,7 @@ def _slide_clear(line, L, foot, blocked, clearance):
     return foot
 
 
+@documented
 def model_shapes(model, data, *, width: float = 0.18) -> list:
     """The bodies of ``model`` at the state ``data`` as :func:`model` draws them (world shapely shapes).
 
@@ -1031,12 +1034,7 @@ def model_shapes(model, data, *, width: float = 0.18) -> list:
 
     Parameters
     ----------
-    model : planargeo.mechanics.model.Model
-        The model.
-    data : planargeo.mechanics.model.Data
-        Its kinematics at the state.
-    width : float
-        Width of the default rounded links.
+    {model width}
 
     Returns
     -------
@@ -1066,6 +1064,7 @@ def model_shapes(model, data, *, width: float = 0.18) -> list:
     return out
 
 
+@documented
 def split_arrows(s, R, A, f, *, scale: float = 1.0, anchor, avoid=None, clearance: float = 0.1):
     """The split ``f = T Q + R μ`` of a joint force (6.38) and the arrows :func:`joint_split` draws.
 
@@ -1078,14 +1077,10 @@ def split_arrows(s, R, A, f, *, scale: float = 1.0, anchor, avoid=None, clearanc
         The joint's motion and reaction spaces, and the (articulated) inertia of the split.
     f : array_like (3,)
         The joint force.
-    scale : float
-        Arrow length per unit force (data units).
+    {scale}
     anchor : (float, float)
         Where the arrows sit along their lines.
-    avoid : shapely geometry, optional
-        What the arrows keep clear of.
-    clearance : float
-        Free distance around ``avoid`` and earlier arrows (data units).
+    {avoid}
 
     Returns
     -------
@@ -1154,16 +1149,12 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
         Motion space, reaction space, inertia of the split and the joint force.
     name : str
         Subscript of the labels (``f_name``, ``TQ_name``, ``Rμ_name``).
-    scale : float
-        Arrow length per unit force (data units).
+    {scale}
     anchor : (float, float), optional
         Where the arrows sit along their lines (default: the view's centre).
     gap : float
         Distance of a label from its arrow (points).
-    avoid : shapely geometry, optional
-        What the arrows keep ``clearance`` away from (e.g. the drawn bodies).
-    clearance : float
-        Free distance around ``avoid`` and earlier arrows (data units).
+    {avoid}
 
     Returns
     -------
