@@ -1,4 +1,6 @@
-"""The articulated-inertia explorer's picture: a chain, its inertias as conics, axes and a chart (thesis 7.1–7.3, 10.2.2–10.2.3).
+"""The articulated-inertia explorer's picture: a chain, its inertias as conics, axes, a chart.
+
+Thesis 7.1–7.3, 10.2.2–10.2.3.
 
 Rigid inertias ``Iᵢ`` and articulated ones ``Aᵢ`` (7.7a) are drawn as conics, the focused
 body's bold; the acceleration pole ``a``, its axes of percussion ``Aₖa``, ``Iₖa`` (5.64–5.68)

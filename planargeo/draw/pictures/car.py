@@ -144,12 +144,14 @@ def car_picture(res, *, heading: float, view, slides: bool = False, limit: float
     pic.path("body", body @ R.T + tr, role="body", symbol="car", closed=True, fill=COLORS["body"], alpha=0.5,
              color="#000000", width=1.0 * PX_PER_PT, z=2,
              desc=f"the car's body: wheelbase L = {L:.3g} m, track {2 * HALF_TRACK:.3g} m")
-    pic.path("rear tyre", [rear - TYRE * ahead, rear + TYRE * ahead], role="body", symbol="tyre 1", color="#000000",
-             width=4.0 * PX_PER_PT, z=3, desc=f"tyre (6.114): the rear one, rolling along the car; its axle passes through the ICR, d = {d:.3g} m away")
+    pic.path("rear tyre", [rear - TYRE * ahead, rear + TYRE * ahead], role="body", symbol="tyre 1",
+             color="#000000", width=4.0 * PX_PER_PT, z=3,
+             desc=f"tyre (6.114): the rear one, rolling along the car; its axle passes through the ICR, "
+                  f"d = {d:.3g} m away")
     pic.path("front tyre", [front - TYRE * roll, front + TYRE * roll], role="body", symbol="tyre 2",
-             color="#000000",
-             width=4.0 * PX_PER_PT, z=3,
-             desc=f"tyre (6.114): the front one, steered by {math.degrees(x['steer']):.3g}°; its axle passes through the ICR")
+             color="#000000", width=4.0 * PX_PER_PT, z=3,
+             desc=f"tyre (6.114): the front one, steered by {math.degrees(x['steer']):.3g}°; its axle passes "
+                  f"through the ICR")
     pic.path("axles", np.array([icr, rear, [np.nan, np.nan], icr, front]), role="construct", symbol="axles",
              color=COLORS["construct"], width=0.8 * PX_PER_PT, dash=[4.0, 3.0], z=1,
              desc=f"the axle lines: they meet at the ICR, d = {d:.3g} m from the rear tyre (6.114)")

@@ -1,4 +1,4 @@
-"""The impulse explorer's picture: a bat or door struck at rest, its poles and the sting (thesis 5.4, 5.64–5.68).
+"""The impulse explorer's picture: a bat or door struck at rest, its poles and the sting (thesis 5.4).
 
 The body ``t`` s after the blow (and at rest, dashed), the grip or hinge ``P`` with its axis
 and centre of percussion (5.67), the blow ``ĵ`` and the grip's reaction ``ĵᵣ``, the velocity
@@ -91,8 +91,8 @@ def impulse_picture(r, *, t: float, view, size=(640, 460)) -> Picture:
               symbol="centre of percussion",
               desc=f"the centre of percussion (5.67): where the axis of percussion of P crosses the body, "
                    f"at {pair(cop)} m", z=6)
-    labelled_line(pic, "blow", ex["impulse"], "ĵ (blow)", role="wrench", symbol="ĵ", anchor=(prm["x"], prm["y"]), ahead=0.15,
-             desc=f"the blow, an impulse along its line (5.64): {force(ex['impulse'], 'N·s')}")
+    labelled_line(pic, "blow", ex["impulse"], "ĵ (blow)", role="wrench", symbol="ĵ", anchor=(prm["x"], prm["y"]),
+                  ahead=0.15, desc=f"the blow, an impulse along its line (5.64): {force(ex['impulse'], 'N·s')}")
     jr = np.asarray(ex["reaction"], float)
     if held and bool(np.hypot(jr[0], jr[1]) > 1e-12 * abs(prm["J"])):
         u = jr[:2] / float(np.hypot(jr[0], jr[1]))

@@ -215,8 +215,24 @@ def side_label(pic: Picture, a, b, text: str, segs, *, gap: float = 5.0) -> None
     aim_label(pic.elements[-1], n if float((side - m) @ n) > 0 else -n, gap + 4.0)
 
 
+def pin_force(pic: Picture, sym: str, x, w, *, words: str, about: str, tiny: float, spots, obstacles,
+              **kw):
+    """A mechanism's pin force ``x`` (``point``, ``wrench``, ``moment``) drawn as ``w`` with :func:`force`.
+
+    Described as ``words, |sym| = … N`` with its moment about its ``about`` (above ``tiny``),
+    labelled at the point ``spots`` along its line from the pin clearest of ``obstacles``.
+    """
+    f = np.asarray(x.wrench, float)
+    F = math.hypot(f[0], f[1])
+    moment = f", moment {num(x.moment, 3, tiny)} N·m about its {about}" if abs(x.moment) > tiny else ""
+    e = f[:2] / F if F else np.zeros(2)
+    head = clearest([np.asarray(x.point, float) + k * e for k in spots], obstacles)
+    return force(pic, sym, w, anchor=x.point, symbol=sym, dash=[4.0, 3.0], label_xy=head,
+                 desc=f"{words}, |{sym}| = {num(F, 4, tiny)} N{moment}", **kw)
+
+
 def num(x: float, digits: int = 3, tiny: float = 1e-9) -> str:
-    """:func:`planargeo.draw.pictures._words.num` with three digits by default: ``num(2.987e4, 4)`` is ``'2.987e+04'``."""
+    """:func:`planargeo.draw.pictures._words.num`, three digits by default."""
     return _num(x, digits, tiny)
 
 

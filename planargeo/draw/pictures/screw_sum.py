@@ -123,8 +123,8 @@ def _wrenches(pic: Picture, c, anchors) -> None:
     if c.L3 is not None:
         s = c.sum.array
         anchor = None if P is None or bool(is_ideal(P)) else [-P[1] / P[2], P[0] / P[2]]
-        labelled_line(pic, "f3", s, "f₃ = f₁ + f₂", role="wrench", symbol="f₃ = f₁ + f₂", anchor=anchor,
-                      ahead=1.5, side=-1.0, gap=9.0, width=SUM["line"]["linewidth"] * PX_PER_PT,
+        labelled_line(pic, "f3", s, "f₃ = f₁ + f₂", role="wrench", symbol="f₃ = f₁ + f₂",
+                      anchor=anchor, ahead=1.5, side=-1.0, gap=9.0, width=SUM["line"]["linewidth"] * PX_PER_PT,
                       desc=f"sum f₃ = f₁ + f₂ (4.33): {_wrench_words(s, 3)}")
         if bool(is_at_infinity(s)):
             _lower(pic, couples)

@@ -7,11 +7,11 @@ banner at a dead centre.
 Examples
 --------
 >>> from types import SimpleNamespace
->>> def pin_force(p, f):                  # a force through the point p: its moment about the origin
+>>> def through(p, f):                    # a force through the point p: its moment about the origin
 ...     return SimpleNamespace(point=p, wrench=(f[0], f[1], p[0] * f[1] - p[1] * f[0]), moment=0.0)
 >>> pose = [[0.0, 0.0, 0.4], [2.108, 0.895, 2.006], [0.0, 5.429, 1.571]]
->>> reactions = {"f_1": pin_force((0.0, 0.0), (-126.4, -50.0)), "f_2": pin_force((2.108, 0.895), (-40.4, -21.9)),
-...              "f_3": pin_force((0.0, 5.429), (24.0, 1.1)), "F_1": pin_force((0.0, 5.929), (-24.0, 0.0))}
+>>> reactions = {"f_1": through((0.0, 0.0), (-126.4, -50.0)), "f_2": through((2.108, 0.895), (-40.4, -21.9)),
+...              "f_3": through((0.0, 5.429), (24.0, 1.1)), "F_1": through((0.0, 5.929), (-24.0, 0.0))}
 >>> twists = [[0.0, 0.0, 20.0], [1.0, 2.0, 3.0], [0.0, 50.5, 0.0]]
 >>> pic = slider_crank_picture(pose, r=2.29, t=0.5, q=[0.4, 1.6, -0.44], reactions=reactions, v=twists,
 ...                            a=twists, h=5.929, overlays={"reaction forces": True},
@@ -27,7 +27,7 @@ import numpy as np
 
 from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import PX_PER_PT, Picture
-from planargeo.draw.pictures.kit import clearest, force, ground, label_at, num, pole_overlays, scale_bar, side_label
+from planargeo.draw.pictures.kit import ground, label_at, num, pin_force, pole_overlays, scale_bar, side_label
 from planargeo.draw.style import COLORS, OKABE_ITO
 
 __all__ = ["slider_crank_picture", "slider_crank_view", "CONTACT_COLOR", "REACTIONS", "FORCE_LENGTH"]
@@ -129,18 +129,11 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
         obstacles = np.concatenate([links, np.stack([box, np.roll(box, -1, axis=0)], axis=1)])
         for key, sym, meaning, eq, at, color in REACTIONS:
             x = reactions[key]
-            w = np.asarray(x.wrench, float)
             role = "reaction" if key.startswith("f") else "momentum"
-            F = size_of[key]
-            tiny = 1e-9 * max(fmax, 1.0)
-            moment = f", moment {num(x.moment, 3, tiny)} N·m about its joint" if abs(x.moment) > tiny else ""
-            # the label on the line of action 0.9 to 1.2 m from the joint, where it is clearest of the links
-            # and the piston (off the pins)
-            e = w[:2] / F if F else np.zeros(2)
-            head = clearest([np.asarray(x.point, float) + k * e for k in (0.9, -0.9, 1.2, -1.2)], obstacles)
-            foot = force(pic, sym, w, scale=scale, anchor=x.point, role=role, symbol=sym, color=color,
-                         desc=f"{meaning} ({eq}): {at}, |{sym}| = {num(F, 4, tiny)} N{moment}", reach=1.2, dash=[4.0, 3.0],
-                         width=1.0 * PX_PER_PT, z=8, label_xy=head)
+            # the label on the line 0.9 to 1.2 m from the joint, clearest of the links and the piston
+            foot = pin_force(pic, sym, x, x.wrench, words=f"{meaning} ({eq}): {at}", about="joint",
+                             tiny=1e-9 * max(fmax, 1.0), spots=(0.9, -0.9, 1.2, -1.2), obstacles=obstacles,
+                             scale=scale, role=role, color=color, reach=1.2, width=1.0 * PX_PER_PT, z=8)
             if foot is not None and math.hypot(*(foot - np.asarray(x.point))) > 1e-9:
                 pic.path(f"{sym} lever", [x.point, foot], role="construct", symbol=f"{sym} arm", color=color,
                          width=0.8 * PX_PER_PT, dash=[1.0, 2.0], z=8,

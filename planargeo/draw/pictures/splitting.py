@@ -1,4 +1,4 @@
-"""The splitting explorer's picture: a pinned chain split at a joint, its poles and the split force (thesis 7.4–7.6).
+"""The splitting explorer's picture: a chain split at a joint, its poles, the split force (thesis 7.4–7.6).
 
 The two sides of the split in two colours, the split joint's force ``fᵢ₊₁`` (7.56), the
 couple ``−fₙ₊₁`` on the tip (7.44), every body's acceleration pole (4.6) and the centre

@@ -1,4 +1,4 @@
-"""The subspace explorer's picture: a body, its joint, ``s, R, T, U`` and the splits of ``f`` (thesis 6.1–6.4).
+"""The subspace explorer's picture: a body, its joint, ``s, R, T, U``, the splits of ``f`` (thesis 6.1–6.4).
 
 The motion space ``s`` (poles), with the forces the reaction space ``R`` and ``T`` (6.36),
 with the accelerations ``U`` (6.37), and the force ``f`` split as ``TQ + Rμ`` (6.38) or the

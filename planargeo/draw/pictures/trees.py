@@ -24,7 +24,7 @@ import numpy as np
 from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.pictures._words import SUB
-from planargeo.draw.pictures.kit import clearest, force, ground, num, pole_overlays, scale_bar, side_label
+from planargeo.draw.pictures.kit import ground, num, pin_force, pole_overlays, scale_bar, side_label
 from planargeo.draw.pictures.slider_crank import CONTACT_COLOR
 from planargeo.draw.style import COLORS
 
@@ -115,18 +115,14 @@ def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, f
             else:
                 meaning, eq, color = "contact force", "9.71", CONTACT_COLOR
                 at = f"the pin joining the tips of bodies {names[x.symbol]}"
-            tiny = 1e-9 * max(fmax, 1e-300)
-            moment = f", moment {num(x.moment, 3, tiny)} N·m about its pin" if abs(x.moment) > tiny else ""
-            # the label on the line of action where it is clearest of the links (pins share places)
-            e = w[:2] / F if F else np.zeros(2)
-            head = clearest([np.asarray(x.point, float) + k * e for k in (0.4, -0.4, 0.25, -0.25)], links)
             # drawn as the unit force's wrench times F / fmax: a ratio, never a scale 1/fmax that
-            # overflows when the largest force is subnormal
+            # overflows when the largest force is subnormal; labelled clearest of the links
             wn = w / F * (F / fmax) if F else w
-            force(pic, sym, wn, scale=FORCE_LENGTH, anchor=x.point, role="reaction" if sym[0] == "f" else "momentum",
-                  symbol=sym, color=color, desc=f"{meaning} ({eq}): {at}, |{sym}| = {num(F, 4, tiny)} N{moment}", reach=0.45,
-                  dash=[4.0, 3.0], width=(2.4 if focus == sym else 1.0) * PX_PER_PT, z=9 if focus == sym else 8,
-                  label=None if on else "", opacity=1.0 if on else FADED, label_xy=head)
+            pin_force(pic, sym, x, wn, words=f"{meaning} ({eq}): {at}", about="pin",
+                      tiny=1e-9 * max(fmax, 1e-300), spots=(0.4, -0.4, 0.25, -0.25), obstacles=links,
+                      scale=FORCE_LENGTH, role="reaction" if sym[0] == "f" else "momentum", color=color, reach=0.45,
+                      width=(2.4 if focus == sym else 1.0) * PX_PER_PT, z=9 if focus == sym else 8,
+                      label=None if on else "", opacity=1.0 if on else FADED)
     pole_overlays(pic, v, a, overlays, [f"body {i + 1}" for i in range(n)])
     scale_bar(pic)
     return pic
