@@ -4,20 +4,15 @@ A :class:`Contact` joins body ``a`` to body ``b`` (or the ground, ``b = -1``) *o
 a :class:`planargeo.mechanics.model.Model`, closing a loop.  For the bodies' world poses it gives
 the motion space ``z`` (the relative motions allowed, ``v_a - v_b = z θ̇``, 9.54), the reaction
 space ``B`` (``zᵀB = 0``: contact forces ``F = B ξ`` are powerless, 9.59-9.60) and the position
-residual the stabilised simulation drives to zero (:mod:`planargeo.simulate.loops`).  Kinds:
-``"pin"`` (``point_a`` on ``point_b``), ``"slider"`` (``point_a`` on the line through ``point_b``
-along ``direction``, both in b's frame, relative angle ``angle``) and ``"weld"`` (point and
-angle).  Sign convention (Definition 42): contact ``k`` puts ``+1`` in column ``a`` and ``-1`` in
-column ``b`` of ``G``; in 9.61 the wrench ``-F`` acts on body ``a``, ``+F`` on ``b``.
+residual the stabilised simulation drives to zero (:mod:`planargeo.simulate.loops`).  Sign
+convention (Definition 42): contact ``k`` puts ``+1`` in column ``a`` and ``-1`` in column ``b`` of
+``G``; in 9.61 the wrench ``-F`` acts on body ``a``, ``+F`` on ``b``.
 
 Examples
 --------
->>> c = Contact("pin", 1, -1, point_a=(1.0, 0.0), point_b=(2.0, 0.0))
->>> pose = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]])     # body 1 at (1, 0)
->>> z_of(c, pose)[:, 0]        # rotation about (2, 0): the point [0, -2, 1]
-array([ 0., -2.,  1.])
->>> z_of(c, pose).T @ B_of(c, pose), residual(c, pose)
-(array([[0., 0.]]), array([0., 0.]))
+>>> c, pose = Contact("pin", 1, -1, point_b=(2.0, 0.0)), np.array([[0.0, 0.0, 0.0], [2.0, 0.0, 0.0]])
+>>> z_of(c, pose)[:, 0], residual(c, pose)      # rotation about (2, 0): the point [0, -2, 1]; closed
+(array([ 0., -2.,  1.]), array([0., 0.]))
 """
 from __future__ import annotations
 

@@ -1,34 +1,17 @@
 """Time integration of a mechanism's equations of motion, with diagnostics (``docs/simulation.md``).
 
 :func:`simulate` integrates ``q̈ = forward(model, q, q̇, τ, f_ext)`` with one of scipy's adaptive
-integrators (:data:`METHODS`), stepped one accepted step at a time, or fixed-step classical
-Runge-Kutta ``"RK4"``, recording at every accepted step the energy (kinetic ``½ Σ vᵢᵀ Iᵢ vᵢ``
-plus gravitational) and any constraint residuals.  Hooks for constrained systems:
-
-``forward(model, q, qd, tau, f_ext) -> qdd``
-    The forward dynamics (default: :func:`planargeo.algorithms.aba.forward_dynamics`).
-``stabilize(t, q, qd, qdd) -> qdd``
-    Correct the accelerations, e.g. Baumgarte terms ``-2α φ̇ - β² φ``.
-``project(q, qd) -> (q, qd)``
-    Pull the state back onto the constraint manifold after each accepted step (the integrator
-    restarts from it; the multistep ``"BDF"`` and ``"LSODA"`` then restart at order 1).
-``residual(q, qd) -> array``, ``energy(q, qd) -> float``
-    Constraint residuals recorded at every step; a replacement for the default energy.
-``condition(q, qd) -> float``
-    A condition number watched at every recorded step (``"joints"``: the joints' ``sᵀAs``,
-    :func:`planargeo.algorithms.stacked.joint_conditions`).
-
-Singular configurations are events in ``result.events``, in time order:
-``{"kind": "near-singular", "t", "cond", "t_start", "t_end"}`` per excursion of the watched
-condition number above ``cond_event`` (the peak and the first/last steps above), and
-``{"kind": "singular", "t", "cond", "message"}`` when the dynamics raise a
-:class:`~planargeo.errors.SingularConfigurationError`: the run then stops cleanly with
-``status == "singular"``.  A run needs at most ``max_steps`` steps (:data:`MAX_STEPS`) and,
-if given, ``max_evals`` evaluations of the dynamics: a count known or extrapolated (at the 10th
-and 100th step) past them raises :class:`~planargeo.errors.SizeLimitError`; reaching them stops
-with ``status == "limit"``, Ctrl-C with ``"interrupted"``.  A start whose rates reach
-:data:`RATE_LIMIT` raises :class:`~planargeo.errors.NumericOverflowError`; a state leaving
-double precision on the way stops with ``status == "failed"``.
+integrators (:data:`METHODS`) or fixed-step ``"RK4"``, recording at every accepted step the energy
+and, through hooks, constraint residuals and a watched condition number.  Singular configurations
+are events in ``result.events``, in time order: ``{"kind": "near-singular", "t", "cond",
+"t_start", "t_end"}`` per excursion of the watched condition number above ``cond_event`` (its
+peak, first and last steps above), and ``{"kind": "singular", "t", "cond", "message"}`` when the
+dynamics raise a :class:`~planargeo.errors.SingularConfigurationError`: the run then stops
+cleanly with ``status == "singular"``.  A run takes at most ``max_steps`` steps and, if given,
+``max_evals`` evaluations of the dynamics: a count known or extrapolated (at the 10th and 100th
+step) past them raises :class:`~planargeo.errors.SizeLimitError`; reaching them stops with
+``status == "limit"``, Ctrl-C with ``"interrupted"``, a state leaving double precision with
+``"failed"``.
 
 Examples
 --------
@@ -253,10 +236,18 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
         Step of ``"RK4"`` (required there); the adaptive methods' output is then sampled every ``dt``.
     max_step : float
         Largest step of the adaptive methods (> 0; ``inf`` by default).
-    forward, stabilize, project, residual, energy_fn : callables, optional
-        Hooks, see the module docstring.
+    forward : callable ``(model, q, qd, tau, f_ext) -> qdd``, optional
+        The forward dynamics (default :func:`planargeo.algorithms.aba.forward_dynamics`).
+    stabilize : callable ``(t, q, qd, qdd) -> qdd``, optional
+        Corrects the accelerations, e.g. Baumgarte terms ``-2α φ̇ - β² φ``.
+    project : callable ``(q, qd) -> (q, qd)``, optional
+        Pulls the state back onto a constraint manifold after each accepted step (the integrator
+        restarts from it; the multistep :data:`MULTISTEP` then restart at order 1).
+    residual, energy_fn : callable ``(q, qd)``, optional
+        Constraint residuals recorded at every step; ``(T, V)`` replacing :func:`energy`.
     condition : callable ``(q, qd) -> float``, ``"joints"`` or None
-        Condition number watched at every recorded step (``"joints"``: the largest of the joints' ``sᵀAs``).
+        Condition number watched at every recorded step (``"joints"``: the largest of the joints'
+        ``sᵀAs``, :func:`planargeo.algorithms.stacked.joint_conditions`).
     cond_event : float
         A watched condition number above this opens a ``"near-singular"`` event.
     progress : bool or None

@@ -1,24 +1,14 @@
-"""Simulation of closed-loop mechanisms (thesis 9.5 integrated in time; figures in ``docs/simulation.md``).
+"""Simulation of closed-loop mechanisms (thesis 9.5 in time; measured figures in ``docs/simulation.md``).
 
 :func:`simulate_loops` integrates the accelerations of the constrained projective dynamics
 (:func:`planargeo.algorithms.loops.loop_solve`) with :func:`planargeo.simulate.simulate`.  The
-closures hold only at the acceleration level (``B^T (G a - ν) = 0``, 9.55/9.60), so positions and
-velocities drift; the stabilisations:
-
-``"projection"`` (default)
-    After every accepted step, positions by Gauss-Newton ``q ← q - J_c^+ φ(q)`` until
-    ``|φ| < tol``, then velocities by the mass-weighted projection
-    ``q̇ ← q̇ - H^{-1} J_c^T (J_c H^{-1} J_c^T)^{-1} J_c q̇``; ``φ`` are the contacts' position
-    residuals (:func:`planargeo.mechanics.contacts.residual`), ``J_c = B^T G J`` their Jacobian.
-``"baumgarte"``
-    ``q̈`` corrected so that ``φ̈ + 2 α φ̇ + β² φ = 0`` (``alpha``, ``beta`` in 1/s).
-``"both"``, ``"none"``
-    Both corrections, or neither (to see the drift).
-
-The multistep ``"BDF"`` and ``"LSODA"`` take ``"baumgarte"`` or ``"none"`` only: each
-projection restarts them at order 1 with a tiny step (0.01 s of the crank took 10 785 LSODA
-steps against about 20 for DOP853).  Dead centres (``BᵀGΛ⁻¹GᵀB`` losing rank) are watched and
-recorded as events (:mod:`planargeo.simulate.integrate`).
+closures hold only at the acceleration level (``Bᵀ (G a - ν) = 0``, 9.55/9.60), so positions and
+velocities drift: ``stabilization`` is ``"projection"`` onto the manifold after each accepted step
+(:func:`project_state`, the default), ``"baumgarte"`` (:func:`baumgarte`), ``"both"`` or ``"none"``
+(to see the drift).  The multistep ``"BDF"`` and ``"LSODA"`` take ``"baumgarte"`` or ``"none"``
+only: each projection restarts them at order 1 with a tiny step (0.01 s of the crank took 10 785
+LSODA steps against about 20 for DOP853).  Dead centres (``BᵀGΛ⁻¹GᵀB`` losing rank) are recorded
+as events (:mod:`planargeo.simulate.integrate`).
 """
 from __future__ import annotations
 
