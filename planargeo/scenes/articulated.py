@@ -130,10 +130,8 @@ def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int | 
     ----------
     n : int
         Number of bodies (>= 1).
-    lam : float
-        Size ratio ``lambda = L / rho`` (> 0, 7.21).
-    phi : float
-        Bend at every joint after the first [rad].
+    lam, phi : float
+        Size ratio ``lambda = L / rho`` (> 0, 7.21); bend at every joint after the first [rad].
     outboard : int or None
         Bodies beyond each body in its articulated inertia (>= 0; None: all, the full recursion).
     pole_x, pole_y : float

@@ -42,20 +42,12 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
 
     Parameters
     ----------
-    m : float
-        Mass [kg] (> 0).
-    rho : float
-        Radius of gyration about the centre of gravity [m] (> 0; yaw inertia ``m ρ²``).
-    L : float
-        Wheelbase [m] (> 0).
-    d : float
-        Radius of the turn at the rear axle [m] (rear speed ``V = ω d``).
-    eps : float
-        Centre of gravity behind the front axle, as a fraction of ``L``.
-    omega : float
-        Yaw rate about the ICR [rad/s].
-    F_A : float
-        Drive force at the front tyres along their rolling direction [N].
+    m, rho, L : float
+        Mass [kg], radius of gyration about the centre of gravity [m] and wheelbase [m] (> 0).
+    d, eps : float
+        Radius of the turn at the rear axle [m]; centre of gravity behind the front axle, per ``L``.
+    omega, F_A : float
+        Yaw rate about the ICR [rad/s]; drive force at the front tyres, along their rolling [N].
     outlines : bool
         Build the shapely outlines (body ``shape``, ``extra["tyres"]``; only Fig 6.6 draws them).
         A drawing option, not in ``params``; every other output is the same without.

@@ -83,12 +83,8 @@ def impulse(body: str = "bat", support: str = "held", m: float = 0.9, x: float =
         Whether the grip / hinge holds the body (a revolute joint) or nothing does.
     m : float
         Mass [kg] (> 0), spread uniformly over the outline.
-    x, y : float
-        A point of the blow's line [m].
-    angle_deg : float
-        Direction of the blow [deg].
-    J : float
-        Impulse of the blow [N·s] (non-zero).
+    x, y, angle_deg, J : float
+        A point of the blow's line [m], its direction [deg] and impulse [N·s] (non-zero).
 
     Returns
     -------

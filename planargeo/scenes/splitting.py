@@ -129,16 +129,10 @@ def splitting(n: int = 2, m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi:
     ----------
     n : int
         Number of bodies (>= 2).
-    m, rho, L : float
-        Mass, radius of gyration and length of each body (> 0).
-    phi : float
-        Bend at every joint after the first [rad].
-    tau : float
-        The couple on the tip [N·m] (non-zero).
-    split : int
-        Split at joint ``split + 1`` (1 <= split <= n - 1).
-    g : float
-        Gravity along -y [m/s²] (>= 0).
+    m, rho, L, phi : float
+        Mass, radius of gyration and length of each body (> 0); bend at every later joint [rad].
+    tau, split, g : float, int, float
+        The couple on the tip [N·m] (non-zero); split at joint ``split + 1``; gravity along -y (>= 0).
 
     Returns
     -------

@@ -139,22 +139,12 @@ def subspace(joint: str = "revolute", px: float = 0.0, py: float = 0.0, joint_an
     ----------
     joint : {"revolute", "prismatic", "revolute_prismatic", "twin_prismatic"}
         The joint (``twin_prismatic``: the plane joint of thesis 4.79).
-    px, py : float
-        The joint's point [m].
-    joint_angle_deg : float
-        The joint's direction [deg].
-    m : float
-        Mass [kg] (> 0).
-    cx, cy : float
-        Centre of mass [m].
-    rho : float
-        Radius of gyration about the centre of mass [m] (> 0).
-    ax, ay : float
-        A point of the applied force's line [m].
-    force_angle_deg : float
-        Direction of the applied force [deg].
-    F : float
-        Magnitude of the applied force [N] (non-zero; negative reverses it).
+    px, py, joint_angle_deg : float
+        The joint's point [m] and direction [deg].
+    m, cx, cy, rho : float
+        Mass [kg] (> 0), centre of mass [m], radius of gyration about it [m] (> 0).
+    ax, ay, force_angle_deg, F : float
+        A point of the applied force's line [m], its direction [deg] and magnitude [N] (non-zero).
 
     Returns
     -------
