@@ -1,22 +1,15 @@
 """Subspace decompositions of wrenches, twists and inertias (thesis chapter 6).
 
-A joint's motion space ``s`` (3×k) and reaction space ``R`` (3×(3-k)), ``sᵀR = 0``, are
-completed with an inertia ``A`` (rigid or articulated) into the percussion space
-``T = A s (sᵀAs)⁻¹`` (:func:`T_of`) and the reactive-acceleration space
-``U = A⁻¹R (RᵀA⁻¹R)⁻¹`` (:func:`U_of`), with ``sᵀT = 1``, ``RᵀU = 1``, ``TᵀU = 0`` (6.22, 6.23,
-6.46).  Any wrench splits as ``f = T Q + R μ`` (6.38), any acceleration as ``a = s ψ + U γ``
-(6.44), with ``Q = sᵀf``, ``μ = Uᵀf``, ``ψ = Tᵀa``, ``γ = Rᵀa`` (6.61–6.62).  Arguments: the
-inertia first, then ``s`` before ``R``, then the screw; everything broadcasts over leading
-dimensions, and a ``(3,)`` space is one column.  No matrix is inverted explicitly.
-
-The public functions validate and call unchecked kernels (``_T``, ``_U``,
-``_effective_mobility``), which the chain algorithms call per body.  The one singularity rule
-lives there: ``sᵀAs`` is singular when ``‖A‖_F ‖s‖_F² / σ_min(sᵀAs)`` (:func:`joint_cond`,
-measured at the joint's point by the algorithms, :func:`joint_scale`) exceeds
-:data:`planargeo.errors.COND_LIMIT`; it raises :class:`~planargeo.errors.SingularConfigurationError`,
-a singular ``A`` where ``A⁻¹`` is needed :class:`~planargeo.errors.SingularInertiaError` (both
-with ``.cond``).  Inertias must be symmetric and positive semi-definite; where only ``sᵀAs`` is
-inverted they may be singular (point masses).
+A joint's motion space ``s`` and reaction space ``R`` (``sᵀR = 0``) are completed with an inertia
+``A`` into the percussion space ``T = A s (sᵀAs)⁻¹`` (:func:`T_of`) and the reactive-acceleration
+space ``U = A⁻¹R (RᵀA⁻¹R)⁻¹`` (:func:`U_of`): ``sᵀT = 1``, ``RᵀU = 1``, ``TᵀU = 0`` (6.22, 6.23,
+6.46), ``f = T Q + R μ`` (6.38), ``a = s ψ + U γ`` (6.44).  Arguments: the inertia, then ``s``
+before ``R``, then the screw; all broadcast, a ``(3,)`` space is one column, nothing is inverted
+explicitly.  The public functions validate and call unchecked kernels (``_T``, ``_U``, ...), which
+the chain algorithms call per body, so the package's one singularity rule lives here:
+``‖A‖_F ‖s‖_F² / σ_min(sᵀAs)`` (:func:`joint_cond`, at the joint's point: :func:`joint_scale`) past
+:data:`planargeo.errors.COND_LIMIT` raises :class:`~planargeo.errors.SingularConfigurationError`
+(a singular ``A`` where ``A⁻¹`` is needed, :class:`~planargeo.errors.SingularInertiaError`).
 """
 from __future__ import annotations
 
@@ -24,7 +17,8 @@ import math
 
 import numpy as np
 
-from planargeo._validate import as_array, as_scalar, check_overflow, check_positive_semidefinite, overflow_checked
+from planargeo._validate import (as_array, as_scalar, as_vec3, check_overflow, check_positive_semidefinite,
+                                 overflow_checked)
 from planargeo.errors import (COND_LIMIT, InputError, ShapeError,
                               SingularConfigurationError, SingularInertiaError)
 from planargeo.geometry._docs import entries
@@ -338,10 +332,6 @@ def _check_complementary(s: np.ndarray, R: np.ndarray) -> None:
             raise InputError(f"R must be reciprocal to s (sᵀR = 0, thesis 6.1), got max |sᵀR| = {worst:.3g}")
 
 
-def _vec(x, name: str) -> np.ndarray:
-    return as_array(x, name, (3,))
-
-
 def _tmul(X: np.ndarray, v: np.ndarray) -> np.ndarray:
     """``Xᵀ v`` for stacks: X (..., 3, k), v (..., 3) -> (..., k)."""
     return (_tr(X) @ v[..., None])[..., 0]
@@ -349,7 +339,7 @@ def _tmul(X: np.ndarray, v: np.ndarray) -> np.ndarray:
 
 def _components(X, v, names: str) -> np.ndarray:
     """``Xᵀ v`` of a space and a screw given by the caller, validated under their ``names`` (6.61-6.62)."""
-    return _tmul(_space(X, names[0]), _vec(v, names[1]))
+    return _tmul(_space(X, names[0]), as_vec3(v, names[1]))
 
 
 def _combine(X, x, Y, y, names: tuple) -> np.ndarray:
@@ -823,7 +813,7 @@ class Decomposition:
         tuple of numpy.ndarray
             ``Q`` (..., k) and ``μ`` (..., 3-k).
         """
-        f = _vec(f, "f")
+        f = as_vec3(f, "f")
         return _tmul(self.s, f), _tmul(self.U, f)
 
     def join_wrench(self, Q, mu) -> np.ndarray:
@@ -863,7 +853,7 @@ class Decomposition:
         >>> dec.split_twist([0.0, 1.0, 0.0]), dec.join_twist([0.0], [0.0, 1.0])
         ((array([0.]), array([0., 1.])), array([0., 1., 0.]))
         """
-        a = _vec(a, "a")
+        a = as_vec3(a, "a")
         return _tmul(self.T, a), _tmul(self.R, a)
 
     def join_twist(self, psi, gamma) -> np.ndarray:
