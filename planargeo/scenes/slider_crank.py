@@ -292,14 +292,10 @@ def slider_crank_advance(model, psi, psidot, dt, r=2.29, l=5.00, drive="free", *
     ----------
     model : Model
         :func:`slider_crank_model` with the same ``r``, ``l``.
-    psi, psidot : float
-        Crank angle (rad) and speed (rad/s) at the start.
-    dt : float
-        Duration (s), > 0.
-    r, l : float
-        Crank and rod lengths.
-    drive : {"free", "constant-speed"}
-        As for :func:`slider_crank`.
+    psi, psidot, dt : float
+        Crank angle (rad) and speed (rad/s) at the start; duration (s, > 0).
+    r, l, drive : float, float, str
+        Crank and rod lengths; the drive, as for :func:`slider_crank`.
     rtol, atol : float
         Integrator tolerances (DOP853).
 

@@ -287,14 +287,10 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True):
     ----------
     model : Model
         :func:`tree_model`.
-    q, qd : array_like (9,)
-        The state at the start (on the loops).
-    dt : float
-        Duration (s), > 0.
-    rtol, atol : float
-        Integrator tolerances (DOP853).
-    cross : bool
-        Step over singular configurations (True) or stop there (False: the error).
+    q, qd, dt : array_like (9,), array_like (9,), float
+        The state at the start (on the loops) and the duration (s, > 0).
+    rtol, atol, cross : float, float, bool
+        Integrator tolerances (DOP853); step over singular configurations, or stop there.
 
     Returns
     -------
