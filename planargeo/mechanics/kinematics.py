@@ -1,16 +1,10 @@
 """Forward kinematics in world-frame, at-origin screw coordinates (thesis chapter 2).
 
 :func:`kinematics` walks the tree from the ground outwards and fills a
-:class:`planargeo.mechanics.model.Data` (broadcast over batches of ``q``) with each body's pose
-and centre of mass, joint motion space ``s_i`` (a revolute joint at ``(x, y)`` is the point
-``[y, -x, 1]``, a prismatic one along ``d`` the ideal point ``[dx, dy, 0]``), inertia ``I_i``
-at the origin (4.58), twist ``v_i = v_{λ(i)} + s_i q̇_i`` (2.9, 3.32), bias acceleration
-``kappa_i`` (2.19, 3.33), applied wrench ``g_i`` (gravity plus ``f_ext``) and bias force
-``p_i = -(v_i×)^T I_i v_i - g_i`` (3.11, 3.34).
-
-Multi-dof joints: the columns of ``s_i`` are sequential screws (2.2), so
-``kappa_i = v_{λ(i)} × s_i q̇_i + Σ_{k<j} (s_k q̇_k) × (s_j q̇_j)``; the printed 2.19 drops
-the cross terms (``docs/errata.md``).
+:class:`planargeo.mechanics.model.Data` (its fields and equations are listed there), broadcast
+over batches of ``q``.  Multi-dof joints' columns are sequential screws (2.2), so
+``kappa_i = v_{λ(i)} × s_i q̇_i + Σ_{k<j} (s_k q̇_k) × (s_j q̇_j)``; the printed 2.19 drops the
+cross terms (``docs/errata.md``).
 """
 from __future__ import annotations
 
