@@ -209,11 +209,9 @@ def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, an
     pts = AiR if inv else U
     keys = {"s": _keys("s", k), "T": _keys("T", k), "R": _keys("R", r),
             "P": _keys("AiR" if inv else "U", r)}
-    default = {**{n: _tex("s", k, j) for j, n in enumerate(keys["s"])},
-               **{n: _tex("T", k, j) for j, n in enumerate(keys["T"])},
-               **{n: _tex("R", r, j) for j, n in enumerate(keys["R"])},
-               **{n: (_tex("A^{-1}R", r, j) if r == 1 else f"$A^{{-1}}R_{j + 1}$") if inv
-                  else _tex("U", r, j) for j, n in enumerate(keys["P"])}}
+    tex = {"s": "s", "T": "T", "R": "R", "P": "A^{-1}R" if inv else "U"}
+    default = {n: _tex(tex[key], X.shape[1], j) for key, X in (("s", s), ("T", T), ("R", R), ("P", pts))
+               for j, n in enumerate(keys[key])}
     labels = {**default, **dict(labels or {})}
     anchors, sides, aims = dict(anchors or {}), dict(sides or {}), dict(aims or {})
     out: dict = {}
