@@ -493,10 +493,7 @@ def main(args: argparse.Namespace) -> int:
                 infos[name] = quantity_info(name)
             except PlanargeoError as exc:  # pragma: no cover - a broken scene module
                 return _error(str(exc).splitlines()[0], 1)
-        if args.json:
-            print(json.dumps({"scenes": listing, "quantities": infos}))
-        else:
-            print(format_listing(listing, infos))
+        print(json.dumps({"scenes": listing, "quantities": infos}) if args.json else format_listing(listing, infos))
         return 0
     if not args.scene:
         return _error("a scene name is required (planargeo report --list shows them)", 2)
