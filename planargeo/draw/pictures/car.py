@@ -10,8 +10,6 @@ Examples
 >>> d = car_picture(res, heading=0.0, view=view_box(8.0, 2.6, 0.0)).to_dict()
 >>> sorted(e["symbol"] for e in d["elements"] if e["role"] == "reaction")
 ['R₁μ₁', 'R₂μ₂']
->>> "a" in [e.get("symbol") for e in d["elements"]]          # coasting: ω̇ = 0, no acceleration pole
-False
 """
 from __future__ import annotations
 

@@ -13,8 +13,6 @@ Examples
 (2.25, 0.0)
 >>> els["v3"]["symbol"], els["v3"]["desc"]
 ('v₃ = v₁ + v₂', 'sum v₃ = v₁ + v₂ (4.11–4.13): rate 4 rad/s, at (2.25, 0) m')
->>> els["Q1"].get("opacity", 1.0) < 1.0, els["caption"]["parts"][1]["text"]
-(True, 'Step 3/3: v₃ on Q₁Q₂ at β = ω₂/(ω₁+ω₂) = 0.75 (4.11–4.13)')
 """
 from __future__ import annotations
 

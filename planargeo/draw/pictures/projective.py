@@ -16,8 +16,6 @@ Examples
 >>> els = {e["id"]: e for e in d["elements"]}
 >>> els["polar"]["parts"][0]["xy"]            # x = 1/2: the polar of (2, 0) for the unit circle
 [[0.5, 3.0], [0.5, -3.0]]
->>> els["pole of M"]["desc"]
-'pole C⁻¹ M of the line M (5.37): at (0, 2) m'
 """
 from __future__ import annotations
 

@@ -11,8 +11,6 @@ Examples
 >>> els = {e["id"]: e for e in d["elements"]}
 >>> v3 = els["v3"]["parts"][0]; (v3["x"], v3["y"])        # 3/4 of the way from Q₁ to Q₂ (4.12)
 (3.0, 0.0)
->>> els["v3"]["desc"]
-'sum v₃ = v₁ + v₂ (4.11–4.13): ω₃ = 4 rad/s, at (3, 0) m'
 """
 from __future__ import annotations
 

@@ -28,15 +28,13 @@ from planargeo.draw.pictures._words import force, num, pair, where
 from planargeo.draw.style import COLORS
 from planargeo.geometry.projective import is_ideal
 
-__all__ = ["subspace_picture", "BAR", "COM", "DIR_HANDLE", "SHOWS"]
+__all__ = ["subspace_picture", "BAR", "COM", "DIR_HANDLE"]
 
 #: the body: a bar along x with its centre of mass at (1, 0)
 COM = (1.0, 0.0)
 BAR = np.array([(-0.3, -0.12), (2.3, -0.12), (2.3, 0.12), (-0.3, 0.12)])
 #: distance of the joint's direction mark from the joint (m)
 DIR_HANDLE = 0.7
-#: what the "show" control draws
-SHOWS = ("wrench", "twist", "spaces")
 _SUB = "₁₂"
 _JOINT = {"revolute": "a revolute pivot", "prismatic": "a prismatic slide",
           "revolute_prismatic": "a pin in a slot (revolute + prismatic)",
