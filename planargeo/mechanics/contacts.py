@@ -58,13 +58,6 @@ class Contact:
         Slider and weld: the relative angle ``theta_a - theta_b`` kept by the contact.
     name : str
         A label for drawings and messages.
-
-    Examples
-    --------
-    >>> Contact("glue", 0, -1)
-    Traceback (most recent call last):
-    ...
-    planargeo.errors.InputError: kind must be one of ['pin', 'slider', 'weld'], got 'glue'
     """
 
     kind: str

@@ -34,7 +34,7 @@ import numpy as np
 from planargeo._validate import as_array, as_xy, overflow_checked
 from planargeo.errors import InputError, ShapeError
 from planargeo.geometry._docs import entries
-from planargeo.mechanics.model import JOINT_DOFS
+from planargeo.mechanics.model import JOINT_DOFS, _finite_tuple
 from planargeo.screws.twists import unit_rotation, unit_translation
 
 __all__ = ["KINDS", "DOF", "motion_space", "reaction_space", "R_of", "JointSpace",
@@ -252,16 +252,8 @@ class JointSpace:
 
     def __init__(self, kind: str, point=(0.0, 0.0), direction=(1.0, 0.0)):
         kind = _check_kind(kind)
-        p = as_xy(point, "point")
-        if p.shape != (2,):
-            raise ShapeError(f"point must have shape (2,), got shape {p.shape}")
-        if kind in _USES_DIRECTION:
-            d = as_xy(direction, "direction")
-            if d.shape != (2,):
-                raise ShapeError(f"direction must have shape (2,), got shape {d.shape}")
-            e = unit_translation(d)[:2]
-        else:
-            e = None
+        p = np.array(_finite_tuple(point, "point", 2))
+        e = unit_translation(_finite_tuple(direction, "direction", 2))[:2] if kind in _USES_DIRECTION else None
         object.__setattr__(self, "_kind", kind)
         object.__setattr__(self, "_point", _frozen(p))
         object.__setattr__(self, "_direction", None if e is None else _frozen(e))
@@ -284,13 +276,7 @@ class JointSpace:
 
     @property
     def direction(self) -> np.ndarray | None:
-        """Unit slide direction, shape (2,), read-only (prismatic kinds, twin prismatic, plane), else ``None``.
-
-        Examples
-        --------
-        >>> prismatic(direction=(3.0, 4.0)).direction
-        array([0.6, 0.8])
-        """
+        """Unit slide direction, shape (2,), read-only (prismatic kinds, twin prismatic, plane), else ``None``."""
         return self._direction
 
     @property
@@ -345,11 +331,6 @@ def revolute(point=(0.0, 0.0)) -> JointSpace:
     """Revolute (pin) joint about ``point`` (thesis 4.64): ``s`` = the point ``[y, -x, 1]``.
 
     {point joint}
-
-    Examples
-    --------
-    >>> revolute((2.0, 0.0)).s.ravel(), revolute((2.0, 0.0)).R[2]     # unit forces through (2, 0)
-    (array([ 0., -2.,  1.]), array([0., 2.]))
     """
     return JointSpace("revolute", point)
 

@@ -42,11 +42,6 @@ def cross_motion(v: np.ndarray, u: np.ndarray) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3)
-
-    Examples
-    --------
-    >>> cross_motion(np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]))
-    array([0., 1., 0.])
     """
     w = v[..., 2]
     out = np.empty(np.broadcast_shapes(v.shape, u.shape))
@@ -112,12 +107,6 @@ def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None, fin
     ------
     ShapeError, NonFiniteError, InputError
         A wrong shape or batch shapes that do not broadcast; NaN or infinity; not numeric, or complex.
-
-    Examples
-    --------
-    >>> from planargeo.mechanics.model import chain_model
-    >>> check_state(chain_model(2), [0.0, 0.0], [[1.0, 2.0]] * 4)[-1]
-    (4,)
     """
     nq, N = model.nq, model.N
     q = _as_state(q, "q", nq, finite)

@@ -128,11 +128,6 @@ class Joint:
         Pose of the joint frame in the parent body's frame (world frame for the ground).
     name : str
         A label for drawings and messages.
-
-    Examples
-    --------
-    >>> Joint("twin_prismatic").dofs              # thesis 4.79: translations along x and y
-    2
     """
 
     kind: str
@@ -570,12 +565,6 @@ def random_model(n: int, seed=None, *, kinds=("revolute", "prismatic"), tree: bo
     ------
     InputError
         For a bad ``n``, ``tree``, ``kinds`` or ``seed``.
-
-    Examples
-    --------
-    >>> m = random_model(5, seed=1, tree=True)
-    >>> m.N, all(p < i for i, p in enumerate(m.parents))
-    (5, True)
     """
     n = _body_count(n, allow_large)
     if not isinstance(tree, bool):

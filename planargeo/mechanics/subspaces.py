@@ -496,11 +496,6 @@ def active_force(s, f) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., k)
-
-    Examples
-    --------
-    >>> active_force([0.0, 0.0, 1.0], [1.0, 2.0, 3.0])   # the moment about the pivot
-    array([3.])
     """
     return _components(s, f, "sf")
 

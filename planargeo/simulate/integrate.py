@@ -178,12 +178,6 @@ def progress_enabled(progress: bool | None = None, stream=None) -> bool:
     Returns
     -------
     bool
-
-    Examples
-    --------
-    >>> import io
-    >>> progress_enabled(True), progress_enabled(False), progress_enabled(None, io.StringIO())
-    (True, False, False)
     """
     if progress is not None:
         return bool(progress)
