@@ -43,20 +43,7 @@ QUANTITIES_FILE = WORDS_FILE
 
 
 class Quantity(NamedTuple):
-    """What one reported quantity is, read from ``planargeo/data/quantities.toml``.
-
-    Attributes
-    ----------
-    description : str
-        What the quantity is, in words.
-    symbol : str
-        The thesis's symbol (``"—"``: none).
-    equation : str
-        The thesis's equation(s), section or figure (``"—"``: none).
-    unit : str
-        The unit (``"—"``: dimensionless or a basis of unit screws); per component for a screw
-        array at the global origin, e.g. ``"N, N, N·m"``.
-    """
+    """What one reported quantity is: ``description``, thesis ``symbol`` and ``equation`` (``"—"``: none), ``unit`` (``"—"``: dimensionless)."""
 
     description: str
     symbol: str

@@ -88,8 +88,6 @@ def parse_sizes(text: str, large: bool = False) -> tuple[int, ...]:
 
     Examples
     --------
-    >>> parse_sizes("1, 10,50")
-    (1, 10, 50)
     >>> parse_sizes("1e6")
     Traceback (most recent call last):
     ...
