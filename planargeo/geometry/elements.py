@@ -421,7 +421,7 @@ Point.distance_to = Line.signed_distance = _PointOrLine._signed_distance
 
 
 def _conic_of(make, examples: str) -> classmethod:
-    """A constructor of :class:`Conic` from ``make`` of :mod:`planargeo.geometry.conics`, documented by its docstring."""
+    """A constructor of :class:`Conic`: ``make`` of :mod:`planargeo.geometry.conics`, documented by ``make``."""
     def construct(cls, *args, **kwargs):
         return cls(make(*args, **kwargs))
 

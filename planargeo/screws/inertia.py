@@ -27,7 +27,7 @@ __all__ = [
 _documented = entries(SCREWS, {
     "pole": "point : array_like, shape (..., 3)\n    Homogeneous acceleration pole (a twist).",
     "impulse": "line : array_like, shape (..., 3)\n    Homogeneous line (an impulse's line of action).",
-    "no_mass": "Raises\n------\nInputError\n    If the mass ``inertia[..., 0, 0]`` is not positive (no centre of mass to divide out).",
+    "no_mass": "Raises\n------\nInputError\n    If the mass ``inertia[..., 0, 0]`` is not positive.",
 })
 
 
@@ -54,7 +54,7 @@ RIGID_RTOL = 1e-10
 
 
 def _check_rigid(M: np.ndarray, name: str) -> np.ndarray:
-    """``M``, unless not of the rigid-body form 4.58 (``M[0, 0] == M[1, 1]``, ``M[0, 1] == 0``, relative to ``max|M|``)."""
+    """``M``, checked to have the rigid-body form 4.58 (``M[0, 0] == M[1, 1]``, ``M[0, 1] == 0``)."""
     scale = np.abs(M).max(axis=(-2, -1), initial=0.0)
     dev = np.maximum(np.abs(M[..., 0, 0] - M[..., 1, 1]),
                      np.maximum(np.abs(M[..., 0, 1]), np.abs(M[..., 1, 0])))
@@ -78,11 +78,8 @@ def _vec(x, name) -> np.ndarray:
     return as_vec3(getattr(x, "array", x), name)
 
 
-# ---------------------------------------------------------------------------
-# Features of a rigid-body inertia (thesis 1.66, 4.58): read from the form 4.58, not checked
-# (Inertia checks it); those dividing by the mass reject inertia[0, 0] <= 0.
-# ---------------------------------------------------------------------------
-
+# ---------- Features of a rigid-body inertia (thesis 1.66, 4.58): read from the form 4.58,
+# not checked (Inertia checks it); those dividing by the mass reject inertia[0, 0] <= 0.
 @_documented
 def mass(inertia) -> np.ndarray:
     """Mass ``m = I[0, 0]`` (kg) of a rigid-body inertia (thesis 1.66, 4.58; the form is not checked).
@@ -211,10 +208,7 @@ def _solve(I: np.ndarray, b: np.ndarray) -> np.ndarray:
         raise SingularInertiaError("inertia must be invertible", float("inf")) from None
 
 
-# ---------------------------------------------------------------------------
-# Axis of percussion (thesis 5.64-5.68) and the drawable conic (10.2.3)
-# ---------------------------------------------------------------------------
-
+# ---------- Axis of percussion (thesis 5.64-5.68) and the drawable conic (10.2.3)
 @_documented
 def percussion_axis(inertia, point) -> np.ndarray:
     """Axis of percussion ``f = I a`` of an acceleration pole ``a`` (thesis 5.64-5.68).
@@ -304,10 +298,7 @@ def drawable_conic(inertia) -> np.ndarray:
     return _drawable_conic(_psd(inertia))
 
 
-# ---------------------------------------------------------------------------
-# Polygon moments
-# ---------------------------------------------------------------------------
-
+# ---------- Polygon moments
 def polygon_moments(geometry, name: str = "geometry"):
     """Area, centroid and polar second moment about the centroid of a shapely area.
 
@@ -378,10 +369,7 @@ def polygon_moments(geometry, name: str = "geometry"):
     return float(A), cl + o, float(J)
 
 
-# ---------------------------------------------------------------------------
-# The class
-# ---------------------------------------------------------------------------
-
+# ---------- The class
 def _derived(function, doc: str) -> property:
     """A read-only property of :class:`Inertia`: ``function`` of its matrix, documented by ``doc``."""
     def get(self):
@@ -562,7 +550,7 @@ class Inertia(_Held):
     mass = _derived(mass, """Mass ``m = matrix[0, 0]`` (kg), of the batch shape.""")
     com = _derived(centre_of_mass, """Centre of mass ``(x, y)`` (m).""")
     rotational_inertia = _derived(rotational_inertia, """``J`` about the centre of mass (kg·m²).""")
-    radius_of_gyration = _derived(radius_of_gyration, """Radius of gyration ``ρ = sqrt(J / m)`` (m; thesis 4.58, 5.64).""")
+    radius_of_gyration = _derived(radius_of_gyration, """Radius of gyration ``ρ = sqrt(J / m)`` (m; 4.58, 5.64).""")
     mobility = _derived(mobility, """Inverse inertia ``I⁻¹`` (via ``solve``).""")
 
     def __repr__(self) -> str:

@@ -376,10 +376,7 @@ def _inertia_psd(inertia, name: str = "inertia") -> np.ndarray:
     return check_positive_semidefinite(as_mat3(inertia, name), name)
 
 
-# ---------------------------------------------------------------------------
-# Scalar features of twists and wrenches (thesis 4.6-4.10, 4.22-4.32)
-# ---------------------------------------------------------------------------
-
+# ---------- Scalar features of twists and wrenches (thesis 4.6-4.10, 4.22-4.32)
 @documented
 def twist_magnitude(twist) -> np.ndarray:
     """Signed magnitude ``ω_z`` (rad/s) of a twist (thesis 4.6); 0 for a translation.
@@ -500,10 +497,7 @@ def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
         return np.asarray(np.abs(P) <= check_tolerance(rtol) * scale)
 
 
-# ---------------------------------------------------------------------------
-# Inertia frame change, momentum and bias terms (thesis 1.68, 2.19, 3.11, 5.72)
-# ---------------------------------------------------------------------------
-
+# ---------- Inertia frame change, momentum and bias terms (thesis 1.68, 2.19, 3.11, 5.72)
 @overflow_checked("inertia or point")
 @documented
 def inertia_at(inertia, point) -> np.ndarray:
@@ -564,7 +558,7 @@ def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
 @overflow_checked("inertia, theta or about")
 @documented
 def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
-    """Inertia ``M⁻ᵀ I M⁻¹`` of the body turned by ``theta`` about ``about`` (thesis 1.68; active, ``M`` of :func:`rotation_about`).
+    """Inertia ``M⁻ᵀ I M⁻¹`` of the body turned by ``theta`` about ``about`` (thesis 1.68, :func:`rotation_about`).
 
     Parameters
     ----------
@@ -700,10 +694,7 @@ def bias_force(inertia, twist, g=None) -> np.ndarray:
     return out
 
 
-# ---------------------------------------------------------------------------
-# Thin classes
-# ---------------------------------------------------------------------------
-
+# ---------- Thin classes
 def _batches(**named) -> tuple:
     """:func:`planargeo._validate.batch_shape` of arguments not yet converted."""
     return batch_shape(**{k: (as_array(x, k), nd) for k, (x, nd) in named.items()})
@@ -877,7 +868,7 @@ class _Screw(_Held):
 
         Examples
         --------
-        >>> bool(Wrench.couple(1.0).reciprocal(Twist.translation([1.0, 0.0])))   # a couple does no work on a translation
+        >>> bool(Wrench.couple(1.0).reciprocal(Twist.translation([1.0, 0.0])))   # no work on a translation
         True
         """
         return reciprocal(*self._pair(other), rtol)
@@ -1148,11 +1139,7 @@ for _kind in (Twist, Wrench):            # their own members (for the API pages)
 del _kind
 
 
-# ---------------------------------------------------------------------------
-# Twist and wrench addition as constructions (thesis 4.2, 4.4)
-# ---------------------------------------------------------------------------
-
-
+# ---------- Twist and wrench addition as constructions (thesis 4.2, 4.4)
 def _single(x, cls, name) -> np.ndarray:
     a = as_vec3(x.array if isinstance(x, cls) else x, name)
     if a.ndim != 1:
