@@ -70,6 +70,7 @@ def tree_solve(model, q, qd, tau=None):
     Returns
     -------
     StackedSolution or LoopSolution
+        From :func:`~planargeo.algorithms.stacked.stacked_solve` or :func:`~planargeo.algorithms.loops.loop_solve`.
 
     Examples
     --------
