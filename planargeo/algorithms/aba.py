@@ -38,22 +38,17 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
 
     Examples
     --------
-    A unit point mass at distance 1 from its pivot, released horizontally: ``g / L``, and no pivot load.
-
     >>> from planargeo.mechanics.model import Body, Joint, Model
     >>> w = articulated_body(Model([Body(1.0, com=(1.0, 0.0))], [Joint("revolute")], [-1]), [0.0], [0.0], [0.0])
-    >>> w.qdd, w.f[0]
+    >>> w.qdd, w.f[0]                     # a simple pendulum released horizontally: g / L, no pivot load
     (array([-9.81]), array([0., 0., 0.]))
     """
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
     data = kinematics(model, q, qd, f_ext)
     nq, N = model.nq, model.N
     tau = np.broadcast_to(tau, shape + (nq,))
-    A = data.I.copy()
-    d = data.p.copy()
+    A, d, parents = data.I.copy(), data.p.copy(), model.parents
     Dl, Ul, Dinvl, ul = [None] * N, [None] * N, [None] * N, [None] * N
-    parents = model.parents
-
     # 3. articulated inertias, tip to base (3.35-3.39)
     for i in range(N - 1, -1, -1):
         s = data.s(i)
@@ -74,10 +69,8 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
             UDinv = U @ Dinv
             A[..., par, :, :] += Ai - UDinv @ np.swapaxes(U, -1, -2)
             d[..., par, :] += c + np.einsum("...ij,...j->...i", UDinv, u)
-
     # 4. joint accelerations, base to tip (3.40-3.42)
-    a = np.zeros(shape + (N, 3))
-    qdd = np.zeros(shape + (nq,))
+    a, qdd = np.zeros(shape + (N, 3)), np.zeros(shape + (nq,))
     for i in range(N):
         par = parents[i]
         ap = a[..., par, :] if par >= 0 else np.zeros(shape + (3,))
@@ -87,10 +80,8 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
             qdd[..., model.q_slice(i)] = qi
             ai = ai + np.einsum("...ij,...j->...i", data.s(i), qi)
         a[..., i, :] = ai
-    data.tau = tau
-    data.A, data.d, data.a, data.qdd = A, d, a, qdd
+    data.tau, data.A, data.d, data.a, data.qdd, data.D, data.U, data.u = tau, A, d, a, qdd, Dl, Ul, ul
     data.f = np.einsum("...ij,...j->...i", A, a) + d
-    data.D, data.U, data.u = Dl, Ul, ul
     check_finite(qdd, "q̈", q=q, qd=qd, tau=tau, f_ext=f_ext)
     return data
 

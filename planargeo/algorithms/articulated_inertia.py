@@ -183,10 +183,8 @@ def _truncated(I, p, S, kappa, tau, parents, points, joint_points, check, steps)
     N = I.shape[0]
     par = np.asarray(parents, dtype=int)
     kids = np.flatnonzero(par >= 0)
-    groups = []
-    for k in sorted({s.shape[1] for s in S} - {0}):
-        idx = np.array([i for i in range(N) if S[i].shape[1] == k], dtype=int)
-        groups.append((k, idx, np.stack([S[i] for i in idx])))
+    idxs = {k: np.array([i for i in range(N) if S[i].shape[1] == k], dtype=int) for k in {s.shape[1] for s in S} - {0}}
+    groups = [(k, idx, np.stack([S[i] for i in idx])) for k, idx in sorted(idxs.items())]
     Tq = np.zeros((N, 3))                          # T_i Q_i comes after T_i is known
     A, d = I.copy(), p.copy()
     for _ in range(steps + 1):
@@ -198,10 +196,9 @@ def _truncated(I, p, S, kappa, tau, parents, points, joint_points, check, steps)
             Tq[i] = T[i, :, :S[i].shape[1]] @ tau[i]
         PA = P[kids] @ A[kids]
         pd = Tq[kids] + np.einsum("nij,nj->ni", P[kids], np.einsum("nij,nj->ni", A[kids], kappa[kids]) + d[kids])
-        A_new, d_new = I.copy(), p.copy()
-        np.add.at(A_new, par[kids], PA)            # (7.7a) from the previous sweep's outboard inertias
-        np.add.at(d_new, par[kids], pd)            # (7.7b)
-        A, d = A_new, d_new
+        A, d = I.copy(), p.copy()
+        np.add.at(A, par[kids], PA)                # (7.7a) from the previous sweep's outboard inertias
+        np.add.at(d, par[kids], pd)                # (7.7b)
     if check:
         for i in range(N):
             if S[i].shape[1] and not cond[i] <= COND_LIMIT:
@@ -275,8 +272,8 @@ def articulated_inertia(model, q, qd=None, tau=None, f_ext=None, *, steps: int |
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
-    >>> float(articulated_inertia(chain_model(2), [0.0, 0.0]).A[0][0, 0])      # twice the mass along the chain
-    2.0
+    >>> articulated_inertia(chain_model(2), [0.0, 0.0]).A[0][0, 0]      # twice the mass along the chain
+    np.float64(2.0)
     """
     return articulated_recursion(*_state_arrays(model, q, qd, tau, f_ext)[1:], steps=steps)
 

@@ -20,15 +20,17 @@ __all__ = ["ChainSplit", "split_acceleration", "split_force", "chain_split",
            "mobility_split", "forward_dynamics_mobility_split"]
 
 
-def _split(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next):
-    """The arguments of 7.54 / 7.56 as float arrays, ``R U^T = 1 - T s^T`` (7.8) and ``C = 1 + Λ_i⁻¹ R Uᵀ A``."""
-    Lam_i, b_i, A_next, d_next, kappa_next = (np.asarray(x, dtype=float) for x in (Lam_i, b_i, A_next, d_next,
-                                                                                 kappa_next))
-    T_next = np.asarray(T_next, dtype=float).reshape(3, -1)
-    P = _EYE3 - T_next @ np.asarray(s_next, dtype=float).reshape(3, -1).T
-    C = _EYE3 + Lam_i @ (P @ A_next)
+def _split(force, Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next):
+    """7.54 (``a_i``), or 7.56 (``force``: ``f_{i+1}``), with ``R Uᵀ = 1 - T sᵀ`` (7.8) and ``C = 1 + Λ_i⁻¹ R Uᵀ A``."""
+    Lam, b, A, d, kappa = (np.asarray(x, dtype=float) for x in (Lam_i, b_i, A_next, d_next, kappa_next))
+    T = np.asarray(T_next, dtype=float).reshape(3, -1)
+    TQ = T @ np.asarray(Q_next, dtype=float).reshape(-1)
+    P = _EYE3 - T @ np.asarray(s_next, dtype=float).reshape(3, -1).T
+    C = _EYE3 + Lam @ (P @ A)
     _check_solvable(C, "1 + Lambda^-1 R U^T A of the split")
-    return Lam_i, b_i, A_next, d_next, T_next, np.asarray(Q_next, dtype=float).reshape(-1), kappa_next, P, C
+    if force:                                       # through C^T = 1 + R Uᵀ A Λ_i⁻¹ (7.55)
+        return _solve(C.T, TQ + P @ (A @ (b + kappa) + d), "1 + Lambda^-1 R U^T A of the split")
+    return _solve(C, b - Lam @ (TQ + P @ (A @ kappa + d)), "1 + Lambda^-1 R U^T A of the split")
 
 
 def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) -> np.ndarray:
@@ -60,10 +62,7 @@ def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa
     >>> split_acceleration(*args).round(12)
     array([0. , 0. , 0.5])
     """
-    Lam_i, b_i, A_next, d_next, T_next, Q_next, kappa_next, P, C = _split(
-        Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next)
-    rhs = b_i - Lam_i @ (T_next @ Q_next + P @ (A_next @ kappa_next + d_next))
-    return _solve(C, rhs, "1 + Lambda^-1 R U^T A of the split")
+    return _split(False, Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next)
 
 
 def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) -> np.ndarray:
@@ -93,10 +92,7 @@ def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) 
     >>> split_force(*args).round(12) + 0.0             # the masses of split_acceleration: half the push
     array([0. , 0.5, 0.5])
     """
-    Lam_i, b_i, A_next, d_next, T_next, Q_next, kappa_next, P, C = _split(
-        Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next)
-    rhs = T_next @ Q_next + P @ (A_next @ (b_i + kappa_next) + d_next)
-    return _solve(C.T, rhs, "1 + Lambda^-1 R U^T A of the split")
+    return _split(True, Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next)
 
 
 @dataclass

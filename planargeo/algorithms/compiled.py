@@ -1,12 +1,9 @@
 """How the dynamics functions reach the compiled kernels (:mod:`planargeo.algorithms.kernels`).
 
-``import planargeo`` imports neither numba nor the kernels: :func:`kernels_for` imports them
-for the first model they cover.  :func:`evaluate` hands one float64 state straight to the
-kernel (compiled for that one type; any other type raises numba's ``TypeError`` instead of
-compiling), validates anything else by :func:`planargeo.mechanics.kinematics.check_state`, and
-turns a state the kernel does not finish into the general recursion's named error.  numba's
-cache is per machine, so ``make lab`` / ``make test`` fill it with
-``python -m planargeo.algorithms.compiled --warm`` (:func:`warm`); a cold cache says so once.
+numba is imported for the first model the kernels cover (:func:`kernels_for`).  :func:`evaluate`
+hands one float64 state straight to the kernel (compiled for that one type), validates anything
+else, and turns a state the kernel does not finish into the general recursion's named error.
+``make lab`` fills numba's per-machine cache with ``python -m planargeo.algorithms.compiled --warm``.
 """
 from __future__ import annotations
 
@@ -274,14 +271,13 @@ def warm(progress=None) -> list[tuple[str, float]]:
     for inverse, kind in ((False, "forward"), (True, "inverse")):
         for extra, fe in (("", None), (", external wrenches", feB)):
             runs.append((f"{kind} dynamics, batch{extra}", partial(k.dynamics_many, inverse, *tables, rows, rows, rows, fe)))
+    progress = progress or (lambda line: None)
     for what, run in runs:
-        if progress is not None:
-            progress(f"  {what} ...")
+        progress(f"  {what} ...")
         t = time.perf_counter()
         run()
         steps.append((what, time.perf_counter() - t))
-        if progress is not None:
-            progress(f"  {what}: {steps[-1][1]:.2f} s")
+        progress(f"  {what}: {steps[-1][1]:.2f} s")
     return steps
 
 

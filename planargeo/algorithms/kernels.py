@@ -1,16 +1,10 @@
 """The compiled recursions: ABA (thesis 3.31-3.42) and RNEA (2.18, 3.10, 3.5), one state at a time or a block.
 
-The hot loops of :func:`planargeo.algorithms.aba.forward_dynamics` and
-:func:`planargeo.algorithms.rnea.inverse_dynamics` for revolute, prismatic and fixed joints:
-plain loops over the bodies on arrays allocated once per call, compiled by numba
-(``NUMBA_DISABLE_JIT=1`` runs them as Python).  Each body is taken at its joint's point ``o_i``
-(world axes), where a revolute joint is ``s = [0, 0, 1]`` and a prismatic one ``[c, s, 0]``;
-twists move out and wrenches and inertias move in by ``r_i = o_i - o_λ`` (4.8, 4.24, 1.68), so
-only offsets, never world positions, enter.  A state kernel returns :data:`OK`, the index of a
-joint the rule of :data:`planargeo.errors.COND_LIMIT` refuses (its condition number left in
-``w.D``), or :data:`NOT_FINITE`; the caller then runs the general path, which raises.
-Model tables (:func:`tables`): ``kind``, ``parent`` (N,), ``body`` (N, 8)
-``[px, py, cos θ, sin θ, m, cx, cy, J]`` and ``gravity`` (2,).
+Plain loops over the bodies on arrays allocated once per call, compiled by numba
+(``NUMBA_DISABLE_JIT=1`` runs them as Python).  Each body is taken at its joint's point ``o_i``:
+twists move out and wrenches and inertias move in by ``r_i = o_i - o_λ`` (4.8, 4.24, 1.68), so only
+offsets enter.  A state kernel returns :data:`OK`, :data:`NOT_FINITE`, or a joint the rule of
+:data:`planargeo.errors.COND_LIMIT` refuses (its condition number left in ``w.D``).
 """
 from __future__ import annotations
 
@@ -464,8 +458,6 @@ def columns(N, nq, L):
 def articulated_body_block(model, q, qd, tau, fext, lo, hi, w, qdd):
     """:func:`articulated_body_state` for the states ``lo:hi`` (at most :data:`BLOCK`) at once (thesis 3.31-3.42).
 
-    The same equations in the same order, each step a loop over the block's states.
-
     Parameters
     ----------
     model : tuple
@@ -482,7 +474,7 @@ def articulated_body_block(model, q, qd, tau, fext, lo, hi, w, qdd):
     Returns
     -------
     bool
-        Whether every state succeeded; else the caller reruns the block state by state, which tells.
+        Whether every state succeeded with the numbers it gets alone; else the caller reruns the block.
     """
     kind, parent, body, gravity = model
     n, N = hi - lo, kind.shape[0]
@@ -673,8 +665,8 @@ def _pool():
 def dynamics_many(inverse, kind, parent, body, gravity, x, y, z, fext):
     """``(out, declined)`` of B states, :func:`dynamics_one` of each; ``declined`` is -1 or the first failed state.
 
-    Runs :func:`_range` on whole blocks per thread: Python's threads, which sleep while they
-    wait, not numba's OpenMP ones, which spin (3× slower on a busy 2-core machine).
+    Large batches run on Python's threads, which sleep while they wait (numba's OpenMP ones spin:
+    3× slower on a busy 2-core machine).
 
     Parameters
     ----------

@@ -130,12 +130,11 @@ class Reaction:
         ``"f_i"`` (tree joint ``i``, 1-based) or ``"F_k"`` (contact ``k``); its name in the model; its kind.
     body, other : int
         The body the wrench acts on and the body that exerts it (0-based; -1 the ground).
-    point : ndarray (2,)
-        Where it acts: the joint's position, the contact point on body ``a`` (m).
-    wrench : ndarray (3,)
-        ``[fx, fy, τ_o]`` acting **on** ``body`` (moment about the origin): ``f_i``, or ``-F_k`` (9.61).
+    point, wrench : ndarray (2,), (3,)
+        Where it acts (the joint, or the contact point on body ``a``), and ``[fx, fy, τ_o]`` acting **on**
+        ``body``, moment about the origin: ``f_i``, or ``-F_k`` (9.61).
     moment : float
-        Moment of ``wrench`` about ``point`` (N·m): a drive torque, zero for a free pin, a slider's couple.
+        Moment of ``wrench`` about ``point``: a drive torque, zero for a free pin, a slider's couple.
     """
 
     symbol: str

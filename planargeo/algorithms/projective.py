@@ -217,8 +217,7 @@ def projective_workspace(model, q, qd=None, tau=None, f_ext=None) -> ProjectiveW
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
-    >>> ws = projective_workspace(chain_model(2, gravity=(0, 0)), [0.0, 0.0], [0.0, 0.0], [1.0, 0.0])
-    >>> ws.qdd.round(9)
+    >>> projective_workspace(chain_model(2, gravity=(0, 0)), [0.0, 0.0], [0.0, 0.0], [1.0, 0.0]).qdd.round(9)
     array([ 1.71428571, -4.28571429])
     """
     return projective_solve(*_state_arrays(model, q, qd, tau, f_ext)[1:])

@@ -1,16 +1,9 @@
 """Trees in stacked form (thesis 9.1-9.2): adjacency, trunk, articulation matrix.
 
-Per-body quantities stacked into block vectors and block-diagonal matrices; the topology enters
-through the adjacency ``C`` (9.1) and trunk ``Δ^{-1} = (1 - C)^{-1}`` (9.12).  Two solutions:
-the articulated one (9.39) with ``L = (1 - C^T R U^T)^{-1}`` (9.31) and ``q̈ = T^T (Δ a - κ)``
-(9.43), and the direct one (9.48) from the articulated mobilities.  Printed 9.27, 9.28/9.32, 9.44b
-and 7.38a are corrected (``docs/errata.md``).  Dense blocks on purpose: O((3N)³).
-
-Examples
---------
->>> C = adjacency([-1, 0, 1, 2, 0, 4, 5, 5, 0])          # Fig 9.1, thesis 9.1
->>> trunk(C)[7].astype(int)                               # row 8 of 9.13: bodies 1, 5, 6, 8
-array([1, 0, 0, 0, 1, 1, 0, 1, 0])
+Per-body quantities stacked into block vectors and block-diagonal matrices (dense on purpose,
+O((3N)³)); the topology enters through ``C`` (9.1) and ``Δ^{-1} = (1 - C)^{-1}`` (9.12).  The articulated
+solution (9.39, 9.43) and the direct one (9.48), with printed 9.27, 9.28/9.32, 9.44b and 7.38a
+corrected (``docs/errata.md``).
 """
 from __future__ import annotations
 
@@ -51,10 +44,8 @@ def adjacency(parents) -> np.ndarray:
 
     Examples
     --------
-    >>> adjacency([-1, 0, 1]).astype(int)                 # a serial chain (9.2)
-    array([[0, 0, 0],
-           [1, 0, 0],
-           [0, 1, 0]])
+    >>> adjacency([-1, 0, 1]).astype(int)[2]                 # a serial chain (9.2): body 3's parent is body 2
+    array([0, 1, 0])
     """
     try:
         ps = [int(p) for p in parents]
@@ -432,7 +423,7 @@ def forward_dynamics_stacked(model: Model, q, qd, tau, f_ext=None, *, method: st
 
     Returns
     -------
-    qdd : ndarray (..., nq)
+    ndarray (..., nq)
 
     Raises
     ------
