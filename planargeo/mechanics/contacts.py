@@ -134,7 +134,7 @@ def validate_contacts(contacts, n_bodies: int) -> tuple[Contact, ...]:
 
 @_documented
 def contact_matrix(contacts, n_bodies: int) -> np.ndarray:
-    """The ``m × n`` contact matrix ``G``: row ``k`` is ``+1`` at body ``a``, ``-1`` at ``b`` (thesis Definition 42, 9.49).
+    """The ``m × n`` contact matrix ``G``: row ``k`` ``+1`` at body ``a``, ``-1`` at ``b`` (Definition 42, 9.49).
 
     Parameters
     ----------

@@ -22,8 +22,8 @@ from planargeo.screws.inertia import centre_of_mass, mobility, radius_of_gyratio
 __all__ = ["impulse_response", "apparent_mass", "centre_of_percussion", "moved_points"]
 
 _documented = entries({
-    "I": "I : array_like, shape (3, 3)\n    The body's inertia at the origin (symmetric; definite for a free body).",
-    "s": "s : array_like, shape (3, k) or (3,), optional\n    Motion space of the support (a pivot ``[y, -x, 1]``); None: a free body.",
+    "I": "I : array_like, shape (3, 3)\n    The body's inertia at the origin (definite for a free body).",
+    "s": "s : array_like, shape (3, k) or (3,), optional\n    The support's motion space; None: a free body.",
 })
 
 
@@ -198,7 +198,7 @@ def moved_points(dv, points, t: float) -> np.ndarray:
 
     Examples
     --------
-    >>> moved_points([0.0, -1.0, 1.0], [[2.0, 0.0]], math.pi / 2).round(12) + 0.0   # a quarter turn about (1, 0)
+    >>> moved_points([0.0, -1.0, 1.0], [[2.0, 0.0]], math.pi / 2).round(12) + 0.0   # turned about (1, 0)
     array([[1., 1.]])
     """
     tw = _single(dv, "dv")

@@ -253,7 +253,9 @@ class JointSpace:
     def __init__(self, kind: str, point=(0.0, 0.0), direction=(1.0, 0.0)):
         kind = _check_kind(kind)
         p = np.array(_finite_tuple(point, "point", 2))
-        e = unit_translation(_finite_tuple(direction, "direction", 2))[:2] if kind in _USES_DIRECTION else None
+        e = None
+        if kind in _USES_DIRECTION:
+            e = unit_translation(_finite_tuple(direction, "direction", 2))[:2]
         object.__setattr__(self, "_kind", kind)
         object.__setattr__(self, "_point", _frozen(p))
         object.__setattr__(self, "_direction", None if e is None else _frozen(e))
@@ -271,22 +273,22 @@ class JointSpace:
 
     @property
     def point(self) -> np.ndarray:
-        """The joint's point, shape (2,), read-only: pivot / point on the slide / joint-frame origin / weld point."""
+        """The joint's point, shape (2,), read-only: pivot, point on the slide, frame origin or weld point."""
         return self._point
 
     @property
     def direction(self) -> np.ndarray | None:
-        """Unit slide direction, shape (2,), read-only (prismatic kinds, twin prismatic, plane), else ``None``."""
+        """Unit slide direction, shape (2,), read-only (kinds with a slide), else ``None``."""
         return self._direction
 
     @property
     def s(self) -> np.ndarray:
-        """Motion space ``s``, shape (3, k), read-only: unit twists at the origin as columns (thesis 4.64-4.79)."""
+        """Motion space ``s``, shape (3, k), read-only: unit twists at the origin (thesis 4.64-4.79)."""
         return self._s
 
     @property
     def R(self) -> np.ndarray:
-        """Reaction space ``R``, shape (3, 3 - k), read-only: unit wrenches at the origin, ``sᵀR = 0`` (thesis 5.63, 6.1)."""
+        """Reaction space ``R``, shape (3, 3 - k), read-only: unit wrenches, ``sᵀR = 0`` (thesis 5.63, 6.1)."""
         return self._R
 
     @property
@@ -302,7 +304,8 @@ class JointSpace:
         return f"JointSpace({self._kind!r}, point={p}, direction={d})"
 
     def _key(self):
-        return self._kind, tuple(self._point), None if self._direction is None else tuple(self._direction)
+        d = None if self._direction is None else tuple(self._direction)
+        return self._kind, tuple(self._point), d
 
     def __eq__(self, other) -> bool:
         if not isinstance(other, JointSpace):

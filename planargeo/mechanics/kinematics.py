@@ -25,7 +25,7 @@ _documented = entries({
     "model": "model : Model\n    The mechanism.",
     "q": "q : array_like, shape (..., nq)\n    Joint coordinates (m or rad each).",
     "qd": "qd : array_like, shape (..., nq), optional\n    Joint velocities; None is zero.",
-    "f_ext": "f_ext : array_like, shape (..., N, 3), optional\n    External world wrenches at the origin, one per body.",
+    "f_ext": "f_ext : array_like, shape (..., N, 3), optional\n    External world wrenches at the origin.",
 })
 
 
@@ -74,7 +74,9 @@ def cross_force(v: np.ndarray, f: np.ndarray) -> np.ndarray:
 
 
 def _as_state(x, name: str, nq: int, finite: bool = True) -> np.ndarray:
-    a = x if type(x) is np.ndarray and x.dtype == np.float64 else as_array(x, name, finite=False)  # refuses complex
+    a = x
+    if not (type(a) is np.ndarray and a.dtype == np.float64):
+        a = as_array(x, name, finite=False)            # refuses complex values too
     if a.ndim == 0 or a.shape[-1] != nq:
         raise ShapeError(f"{name} must have shape (..., {nq}), got shape {a.shape}")
     if finite and not np.isfinite(a).all():

@@ -38,8 +38,8 @@ from planargeo.geometry._docs import entries
 __all__ = ["Body", "Joint", "Model", "Data", "JOINT_DOFS", "MAX_BODIES", "chain_model", "random_model"]
 
 #: Number of degrees of freedom of each joint kind.
-JOINT_DOFS: dict[str, int] = {"revolute": 1, "prismatic": 1, "revolute_prismatic": 2, "twin_prismatic": 2,
-                              "plane": 3, "fixed": 0}
+JOINT_DOFS: dict[str, int] = {"revolute": 1, "prismatic": 1, "revolute_prismatic": 2,
+                              "twin_prismatic": 2, "plane": 3, "fixed": 0}
 
 #: Docstring entries shared here (:func:`planargeo.geometry._docs.entries`).
 _documented = entries({
@@ -85,10 +85,8 @@ class Body:
 
     Examples
     --------
-    >>> Body(2.0, com=(0.5, 0.0), inertia=1 / 6).spatial_inertia()      # at the body-frame origin (thesis 5.64)
-    array([[2.        , 0.        , 0.        ],
-           [0.        , 2.        , 1.        ],
-           [0.        , 1.        , 0.66666667]])
+    >>> Body(2.0, com=(0.5, 0.0), inertia=1 / 6).spatial_inertia()[2]      # at the frame origin (5.64)
+    array([0.        , 1.        , 0.66666667])
     """
 
     mass: float
@@ -256,7 +254,8 @@ class Model:
         for what, items, cls in (("bodies", bodies, Body), ("joints", joints, Joint)):
             for i, x in enumerate(items):
                 if not isinstance(x, cls):
-                    raise InputError(f"{what}[{i}] must be a {cls.__name__}, got {type(x).__name__}")
+                    raise InputError(f"{what}[{i}] must be a {cls.__name__}, "
+                                     f"got {type(x).__name__}")
         if len(bodies) == 0:
             raise InputError("bodies must not be empty")
         if len(joints) != len(bodies):
@@ -363,13 +362,6 @@ class Model:
         Returns
         -------
         numpy.ndarray of bool, shape (N, nq)
-
-        Examples
-        --------
-        >>> chain_model(3).ancestor_mask().astype(int)
-        array([[1, 0, 0],
-               [1, 1, 0],
-               [1, 1, 1]])
         """
         a = self._arrays
         if "ancestor_mask" not in a:
@@ -445,7 +437,7 @@ class Data:
 
     @_documented
     def jacobian(self, i: int) -> np.ndarray:
-        """Body ``i``'s Jacobian (..., 3, nq): ``v_i = J_i qd`` (thesis Remark 8), zero for joints not on its path.
+        """Body ``i``'s Jacobian (..., 3, nq): ``v_i = J_i qd`` (thesis Remark 8), zero off its path.
 
         {i}
 
@@ -521,12 +513,6 @@ def chain_model(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str =
     ------
     InputError
         ``n`` not an integer or out of range; ``mass`` or ``length`` not positive or too large.
-
-    Examples
-    --------
-    >>> m = chain_model(3, joint="prismatic")
-    >>> [j.kind for j in m.joints], m.joints[1].placement
-    (['prismatic', 'prismatic', 'prismatic'], (1.0, 0.0, 0.0))
     """
     n = _body_count(n, allow_large)
     L = _positive(length, "length")
@@ -542,7 +528,7 @@ def chain_model(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str =
 @_documented
 def random_model(n: int, seed=None, *, kinds=("revolute", "prismatic"), tree: bool = False,
                  gravity=(0.0, -9.81), allow_large: bool = False) -> Model:
-    """A random model for tests: ``n`` bodies (limited as in :func:`chain_model`), joint kinds drawn from ``kinds``.
+    """A random model for tests: ``n`` bodies (as for :func:`chain_model`), joint kinds from ``kinds``.
 
     Parameters
     ----------

@@ -17,8 +17,8 @@ import math
 
 import numpy as np
 
-from planargeo._validate import (as_array, as_scalar, as_vec3, check_overflow, check_positive_semidefinite,
-                                 overflow_checked)
+from planargeo._validate import (as_array, as_scalar, as_vec3, check_overflow,
+                                 check_positive_semidefinite, overflow_checked)
 from planargeo.errors import (COND_LIMIT, InputError, ShapeError,
                               SingularConfigurationError, SingularInertiaError)
 from planargeo.geometry._docs import entries
@@ -41,18 +41,18 @@ COND_LIMIT2 = COND_LIMIT * COND_LIMIT
 
 #: The parameters most functions here take, described once (``{I s R}`` in a docstring: those entries)
 _parameters = entries({
-    "A": "A : array_like, shape (..., 3, 3)\n    Symmetric positive semi-definite (articulated) inertia at the origin.",
+    "A": "A : array_like, shape (..., 3, 3)\n    Symmetric positive semi-definite inertia at the origin.",
     "I": "I : array_like, shape (..., 3, 3)\n    Symmetric inertia (rigid or articulated) at the origin.",
     "s": "s : array_like, shape (..., 3, k)\n    Joint motion space (k unit twists as columns).",
     "R": "R : array_like, shape (..., 3, 3-k)\n    Joint reaction space (wrenches reciprocal to ``s``).",
     "f": "f : array_like, shape (..., 3)\n    Wrench.",
     "a": "a : array_like, shape (..., 3)\n    Acceleration twist.",
-    "what": "what : str, optional\n    Name of the matrix in the singularity error's message, e.g. ``\"sᵀAs of joint 3\"``.",
+    "what": "what : str, optional\n    Name of the matrix in the singularity error's message.",
 })
 
 
 def joint_cond(smin: float, A_norm2: float, s_norm2: float) -> float:
-    """The scale-free condition number ``‖A_P‖_F ‖s_P‖_F² / σ_min(sᵀAs)`` of a joint (the rule of :data:`planargeo.errors.COND_LIMIT`).
+    """A joint's scale-free condition number ``‖A_P‖_F ‖s_P‖_F² / σ_min(sᵀAs)`` (the rule of ``COND_LIMIT``).
 
     ``A_P``, ``s_P``: at the joint's own point (:func:`joint_scale`); singular when ``cond > COND_LIMIT``.
 
@@ -267,7 +267,7 @@ def _check(cond, error, message: str) -> None:
 
 
 def _weighted_gram(X: np.ndarray, AX: np.ndarray, A_norm, scale=None):
-    """``M = Xᵀ (A X)`` (symmetrised) and its condition number ``scale / σ_min(M)``, ``scale`` default ``‖A‖ ‖X‖²``."""
+    """``M = Xᵀ (A X)`` (symmetrised) and its condition ``scale / σ_min(M)``, default scale ``‖A‖ ‖X‖²``."""
     if X.shape == (3, 1) and AX.ndim == 2:
         M = X.T @ AX
         smin = abs(float(M[0, 0]))     # the rule of joint_cond, without squaring the scale (no overflow)
@@ -351,21 +351,21 @@ def _combine(X, x, Y, y, names: tuple) -> np.ndarray:
 
 # ----------------------------------------------------------------------------- kernels (unchecked arguments)
 def _gram(A: np.ndarray, s: np.ndarray, point=None):
-    """``(A s, sᵀ A s, cond)`` (6.67, :func:`joint_cond`), the rule measured at ``point`` (default the origin); never raises."""
+    """``(A s, sᵀ A s, cond)`` (6.67, :func:`joint_cond`), measured at ``point`` (or the origin); never raises."""
     As = A @ s
     M, cond = _weighted_gram(s, As, _norm(A), None if point is None else joint_scale(A, s, point))
     return As, M, cond
 
 
 def _checked_gram(A: np.ndarray, s: np.ndarray, what: str, point=None) -> tuple[np.ndarray, np.ndarray]:
-    """``(A s, sᵀ A s)`` of :func:`_gram`, raising SingularConfigurationError past the limit (``what`` names ``sᵀAs``)."""
+    """``(A s, sᵀ A s)`` of :func:`_gram`, raising past the limit (``what`` names ``sᵀAs`` in the message)."""
     As, M, cond = _gram(A, s, point)
     _check(cond, SingularConfigurationError, f"{what} is singular: the inertia has (almost) nothing along s")
     return As, M
 
 
 def _T(A: np.ndarray, s: np.ndarray, what: str = "sᵀAs", gram=None, point=None) -> np.ndarray:
-    """``T = A s (sᵀ A s)⁻¹`` (6.30, 6.36, 6.39, 6.105), the kernel of :func:`T_of`; ``gram`` if already formed."""
+    """``T = A s (sᵀ A s)⁻¹`` (6.30, 6.36, 6.39, 6.105), the kernel of :func:`T_of` (``gram`` if formed)."""
     if s.shape[-1] == 0:
         return np.zeros(np.broadcast_shapes(s.shape[:-2], A.shape[:-2]) + (3, 0))
     As, M = _checked_gram(A, s, what, point) if gram is None else gram
@@ -567,12 +567,6 @@ def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     Returns
     -------
     tuple of numpy.ndarray, each shape (..., 3, 3)
-
-    Examples
-    --------
-    >>> P_act, _ = wrench_projectors(np.eye(3), [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
-    >>> P_act[2]
-    array([0., 0., 1.])
     """
     d = Decomposition(A, s, R)
     return d.T @ _tr(d.s), d.R @ _tr(d.U)
@@ -609,12 +603,6 @@ def joint_space_inertia(I, s) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., k, k)
-
-    Examples
-    --------
-    >>> from planargeo.screws.twists import inertia_matrix
-    >>> joint_space_inertia(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0])   # m (ρ² + d²)
-    array([[2.5]])
     """
     I = _inertia(I, "I")
     s = _space(s, "s")

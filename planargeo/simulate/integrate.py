@@ -52,7 +52,7 @@ MULTISTEP = ("BDF", "LSODA")
 
 
 def energy(model: Model, q=None, qd=None, *, data=None) -> tuple[np.ndarray, np.ndarray]:
-    """Kinetic and gravitational potential energy ``(T, V)``, ``T = ½ Σ vᵢᵀ Iᵢ vᵢ`` (thesis 1.9), ``V = -Σ mᵢ g · cᵢ``.
+    """Kinetic and potential energy ``T = ½ Σ vᵢᵀ Iᵢ vᵢ`` (thesis 1.9) and ``V = -Σ mᵢ g · cᵢ``.
 
     Parameters
     ----------
@@ -72,12 +72,6 @@ def energy(model: Model, q=None, qd=None, *, data=None) -> tuple[np.ndarray, np.
     ------
     InputError
         If both a state and ``data`` are given.
-
-    Examples
-    --------
-    >>> from planargeo.mechanics.model import chain_model
-    >>> [float(x) for x in energy(chain_model(1), [np.pi / 2], [3.0])]   # upright at 3 rad/s: ½ (1/3) 9, m g L/2
-    [1.5, 4.905]
     """
     if data is None:
         data = kinematics(model, q, qd)
@@ -107,7 +101,7 @@ class SimulationResult:
     events : list of dict
         Singular and near-singular events (module docstring).
     status : str
-        ``"ok"``, ``"singular"``, ``"failed"``, ``"limit"`` or ``"interrupted"``; the trajectory holds what was computed.
+        ``"ok"``, ``"singular"``, ``"failed"``, ``"limit"`` or ``"interrupted"`` (then what was computed).
     message : str
     method : str
     nfev : int
@@ -166,7 +160,7 @@ def _in_ipython_kernel() -> bool:
 
 
 def progress_enabled(progress: bool | None = None, stream=None) -> bool:
-    """Whether :func:`simulate` shows a progress bar: ``progress`` if given, else when ``stream`` is a terminal or in a Jupyter kernel.
+    """Whether :func:`simulate` shows a progress bar: ``progress``, or on a terminal or in a Jupyter kernel.
 
     Parameters
     ----------
@@ -330,7 +324,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
             T, V = energy(model, q, qd)
             return float(T), float(V)
 
-    ts, ys, cs = [], [], []          # times, states (q, q̇ and the dissipated energy), watched conditions
+    ts, ys, cs = [], [], []          # times, states (q, q̇, dissipated energy), watched conditions
 
     def watch(y):
         # at record time: a hook may reuse the value of the dynamics evaluation at this very state

@@ -41,7 +41,7 @@ LOOP_MAX_EVALS = 20_000
 _documented = entries({
     "model": "model : Model\n    The mechanism (a spanning tree).",
     "q": "q : array_like (nq,)\n    Joint coordinates.",
-    "contacts": "contacts : sequence of Contact, optional\n    The contacts closing the loops (default ``model.contacts``).",
+    "contacts": "contacts : sequence of Contact, optional\n    The loops' contacts (default ``model.contacts``).",
     "fixed": "fixed : sequence of int\n    Coordinates left unchanged (driven joints).",
 })
 
@@ -325,9 +325,6 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
         last["q"], last["cond"] = np.array(q, dtype=float), c
         return c
 
-    use_proj = stabilization in ("projection", "both")
-    use_baum = stabilization in ("baumgarte", "both")
-
     def resid(q, qd):
         return np.concatenate([closure_residual(model, q, cs), closure_jacobian(model, q, cs) @ qd])
 
@@ -343,8 +340,9 @@ def simulate_loops(model: Model, q0, qd0, t_end, *, contacts=None, tau=None, f_e
         q0, qd0 = project_state(model, q0, qd0, cs, fixed=fixed, tol=tol)
     res = simulate(model, q0, qd0, t_end, tau=tau, f_ext=f_ext, method=method, rtol=rtol, atol=atol, dt=dt,
                    max_step=max_step, forward=forward,
-                   stabilize=baumgarte(model, cs, alpha, beta, fixed=fixed) if use_baum else None,
-                   project=project if use_proj else None, residual=resid,
+                   stabilize=(baumgarte(model, cs, alpha, beta, fixed=fixed)
+                              if stabilization in ("baumgarte", "both") else None),
+                   project=project if stabilization in ("projection", "both") else None, residual=resid,
                    condition=condition if watch else None, cond_event=cond_event, progress=progress,
                    max_steps=max_steps, max_evals=max_evals)
     npos = sum(c.nc for c in cs)
