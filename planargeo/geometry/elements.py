@@ -26,7 +26,8 @@ _EQ_TOL = 1e-12
 
 #: Docstring entries the classes share, said once (a line ``{point}`` in a docstring).
 _shared = entries({"point": "point : Point or array_like, shape (3,)\n    A Point or homogeneous point array.",
-                   "line": "line : Line or array_like, shape (3,)\n    A Line or homogeneous line array."})
+                   "line": "line : Line or array_like, shape (3,)\n    A Line or homogeneous line array."},
+                  {f"returns_{kind.lower()}": f"Returns\n-------\n{kind}" for kind in ("Point", "Line", "Conic")})
 
 
 def _fmt(v: float) -> str:
@@ -195,6 +196,7 @@ class Point(_PointOrLine):
 
     # constructors
     @classmethod
+    @_shared
     def from_xy(cls, x, y=None) -> "Point":
         """The finite point ``(x, y)``: ``from_xy(x, y)`` or ``from_xy((x, y))``.
 
@@ -205,9 +207,7 @@ class Point(_PointOrLine):
         y : float, optional
             ``y`` (m).
 
-        Returns
-        -------
-        Point
+        {returns_point}
 
         Raises
         ------
@@ -222,6 +222,7 @@ class Point(_PointOrLine):
         return cls(_p.from_xy(_one(x if y is None else (x, y), "xy", 2)))
 
     @classmethod
+    @_shared
     def at_infinity(cls, direction) -> "Point":
         """The point at infinity in ``direction``.
 
@@ -230,9 +231,7 @@ class Point(_PointOrLine):
         direction : array_like, shape (2,)
             A non-zero direction.
 
-        Returns
-        -------
-        Point
+        {returns_point}
 
         Raises
         ------
@@ -258,6 +257,7 @@ class Point(_PointOrLine):
         return bool(_p.is_ideal(self._a))
 
     # geometry
+    @_shared
     def join(self, other) -> "Line":
         """The line through this point and ``other`` (thesis 5.32); also ``p ^ q``.
 
@@ -266,9 +266,7 @@ class Point(_PointOrLine):
         other : Point or array_like, shape (3,)
             The second point.
 
-        Returns
-        -------
-        Line
+        {returns_line}
 
         Examples
         --------
@@ -310,6 +308,7 @@ class Line(_PointOrLine):
     _normalize, _direction = staticmethod(_p.normalize_line), staticmethod(_p.line_direction)
 
     @classmethod
+    @_shared
     def through(cls, p, q) -> "Line":
         """The line from ``p`` to ``q`` (thesis 5.32).
 
@@ -318,9 +317,7 @@ class Line(_PointOrLine):
         p, q : Point or array_like, shape (3,)
             Two distinct points.
 
-        Returns
-        -------
-        Line
+        {returns_line}
 
         Examples
         --------
@@ -330,12 +327,11 @@ class Line(_PointOrLine):
         return cls(_p.join(_as_point_array(p, "p"), _as_point_array(q, "q")))
 
     @classmethod
+    @_shared
     def at_infinity(cls) -> "Line":
         """The line at infinity ``[0, 0, 1]`` (thesis 5.16).
 
-        Returns
-        -------
-        Line
+        {returns_line}
 
         Examples
         --------
@@ -345,6 +341,7 @@ class Line(_PointOrLine):
         return cls(_p.LINE_AT_INFINITY)
 
     @classmethod
+    @_shared
     def from_point_direction(cls, point, direction) -> "Line":
         """The line through ``point`` (a Point, or ``(x, y)``) along ``direction``.
 
@@ -355,9 +352,7 @@ class Line(_PointOrLine):
         direction : array_like, shape (2,)
             Direction of the line (non-zero).
 
-        Returns
-        -------
-        Line
+        {returns_line}
 
         Raises
         ------
@@ -382,6 +377,7 @@ class Line(_PointOrLine):
         """The point of the line nearest to the origin (``None`` for the line at infinity)."""
         return None if self.is_at_infinity else Point(_p.foot_point(self._a))
 
+    @_shared
     def meet(self, other) -> Point:
         """The common point with ``other`` (thesis 5.34); also ``l ^ m``.  Parallel lines meet at infinity.
 
@@ -390,9 +386,7 @@ class Line(_PointOrLine):
         other : Line or array_like, shape (3,)
             The second line.
 
-        Returns
-        -------
-        Point
+        {returns_point}
 
         Examples
         --------
@@ -500,9 +494,7 @@ class Conic(_Homogeneous):
         ----------
         {point}
 
-        Returns
-        -------
-        Line
+        {returns_line}
 
         Examples
         --------
@@ -519,9 +511,7 @@ class Conic(_Homogeneous):
         ----------
         {line}
 
-        Returns
-        -------
-        Point
+        {returns_point}
 
         Examples
         --------
@@ -617,12 +607,11 @@ class Conic(_Homogeneous):
         """
         return _c.affine_frame(self._a)
 
+    @_shared
     def drawable(self) -> "Conic":
         """The real point-reflection partner of an imaginary conic (thesis 10.2.3); self if real.
 
-        Returns
-        -------
-        Conic
+        {returns_conic}
 
         Examples
         --------

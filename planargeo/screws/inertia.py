@@ -27,6 +27,7 @@ __all__ = [
 _documented = entries(SCREWS, {
     "pole": "point : array_like, shape (..., 3)\n    Homogeneous acceleration pole (a twist).",
     "impulse": "line : array_like, shape (..., 3)\n    Homogeneous line (an impulse's line of action).",
+    "returns_inertia": "Returns\n-------\nInertia",
     "no_mass": "Raises\n------\nInputError\n    If the mass ``inertia[..., 0, 0]`` is not positive.",
 })
 
@@ -437,6 +438,7 @@ class Inertia(_Held):
 
     # -- constructors ---------------------------------------------------
     @classmethod
+    @_documented
     def from_mass(cls, mass, com, radius_of_gyration=None, inertia=None) -> "Inertia":
         """Inertia of mass ``mass`` centred at ``com``, given ``ρ`` or ``J = m ρ²`` (thesis 4.58, 5.64).
 
@@ -449,9 +451,7 @@ class Inertia(_Held):
         radius_of_gyration, inertia : float or array_like, optional
             Exactly one: ``ρ > 0`` (m) or ``J > 0`` about the centre of mass (kg·m²).
 
-        Returns
-        -------
-        Inertia
+        {returns_inertia}
 
         Raises
         ------
@@ -476,6 +476,7 @@ class Inertia(_Held):
         return cls(inertia_matrix(m, c, J))
 
     @classmethod
+    @_documented
     def from_polygon(cls, geometry, density=1.0) -> "Inertia":
         """Inertia of a uniform lamina (shapely ``Polygon`` / ``MultiPolygon``; see :func:`polygon_moments`).
 
@@ -486,9 +487,7 @@ class Inertia(_Held):
         density : float, optional
             Mass per unit area (kg/m²), positive.
 
-        Returns
-        -------
-        Inertia
+        {returns_inertia}
 
         Raises
         ------
@@ -511,6 +510,7 @@ class Inertia(_Held):
         return cls(inertia_matrix(rho_d * A, c, rho_d * J))
 
     @classmethod
+    @_documented
     def composite(cls, parts) -> "Inertia":
         """Inertia of rigidly joined parts: the sum of their matrices (thesis 1.65 is linear).
 
@@ -519,9 +519,7 @@ class Inertia(_Held):
         parts : iterable of Inertia
             The bodies (at least one).
 
-        Returns
-        -------
-        Inertia
+        {returns_inertia}
 
         Raises
         ------
@@ -566,6 +564,7 @@ class Inertia(_Held):
         return Inertia(self._array + other._array)
 
     # -- operations ------------------------------------------------------
+    @_documented
     def at(self, point) -> "Inertia":
         """The same body expressed at ``point`` (thesis 1.68: ``X_P⁻ᵀ I X_P⁻¹``).
 
@@ -574,9 +573,7 @@ class Inertia(_Held):
         point : array_like, shape (2,)
             New reference point (m).
 
-        Returns
-        -------
-        Inertia
+        {returns_inertia}
 
         Examples
         --------
@@ -585,6 +582,7 @@ class Inertia(_Held):
         """
         return Inertia(inertia_at(self._array, point))
 
+    @_documented
     def rotated(self, theta, about=(0.0, 0.0)) -> "Inertia":
         """The body turned by ``theta`` about ``about`` (thesis 1.68; :func:`planargeo.screws.inertia_rotated`).
 
@@ -595,9 +593,7 @@ class Inertia(_Held):
         about : array_like, shape (2,), optional
             Centre of the rotation (m).
 
-        Returns
-        -------
-        Inertia
+        {returns_inertia}
 
         Examples
         --------

@@ -36,6 +36,8 @@ SCREWS = {
     "theta": "theta : array_like, shape (...)\n    Angle (rad), counter-clockwise.",
     "inertia": "inertia : array_like, shape (..., 3, 3)\n"
                "    Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).",
+    "returns_twist": "Returns\n-------\nTwist",
+    "returns_wrench": "Returns\n-------\nWrench",
     "not_psd": "Raises\n------\nInputError, SingularInertiaError\n"
                "    ``inertia`` not symmetric positive semi-definite (see :func:`planargeo.screws.kinetic_energy`).",
     "bad_array": "Raises\n------\nShapeError, NonFiniteError, InputError\n"
@@ -919,6 +921,7 @@ class Twist(_Screw):
     _element = ("Point", "pole", "pole")
 
     @classmethod
+    @documented
     def rotation(cls, point, omega=1.0) -> "Twist":
         """Rotation ``omega [y, -x, 1]`` about ``point`` (thesis 4.10, 5.51).
 
@@ -929,9 +932,7 @@ class Twist(_Screw):
         omega : float or array_like, optional
             Angular velocity (rad/s), counter-clockwise positive.
 
-        Returns
-        -------
-        Twist
+        {returns_twist}
 
         Examples
         --------
@@ -943,6 +944,7 @@ class Twist(_Screw):
             return cls(check_overflow(unit_rotation(point) * w[..., None], "Twist.rotation", "point or omega"))
 
     @classmethod
+    @documented
     def translation(cls, velocity) -> "Twist":
         """Pure translation ``[vx, vy, 0]`` (a point at infinity).
 
@@ -951,9 +953,7 @@ class Twist(_Screw):
         velocity : array_like, shape (..., 2)
             Linear velocity ``(vx, vy)`` (m/s).
 
-        Returns
-        -------
-        Twist
+        {returns_twist}
 
         Examples
         --------
@@ -1030,6 +1030,7 @@ class Wrench(_Screw):
     _element = ("Line", "line", "line of action")
 
     @classmethod
+    @documented
     def force(cls, point, force) -> "Wrench":
         """Pure force ``(fx, fy)`` along the line through ``point``: ``[fx, fy, x fy - y fx]`` (4.27).
 
@@ -1040,9 +1041,7 @@ class Wrench(_Screw):
         force : array_like, shape (..., 2)
             Force ``(fx, fy)`` (N).
 
-        Returns
-        -------
-        Wrench
+        {returns_wrench}
 
         Examples
         --------
@@ -1058,6 +1057,7 @@ class Wrench(_Screw):
         return cls(np.stack([fx, fy, tau], axis=-1))
 
     @classmethod
+    @documented
     def couple(cls, tau) -> "Wrench":
         """Pure couple ``[0, 0, tau]``: the line at infinity.
 
@@ -1066,9 +1066,7 @@ class Wrench(_Screw):
         tau : float or array_like, shape (...)
             Moment (N·m), counter-clockwise positive.
 
-        Returns
-        -------
-        Wrench
+        {returns_wrench}
 
         Examples
         --------
