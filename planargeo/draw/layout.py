@@ -136,7 +136,7 @@ def fit_view(points, *, ax=None, margin=None, aspect=None, keep=None, min_span=N
     Raises
     ------
     InputError
-        As :func:`fit_box`.
+        No finite point, or a bad ``margin``, ``aspect`` or ``min_span`` (:func:`fit_box`).
 
     Examples
     --------

@@ -86,6 +86,7 @@ def element_picture(obj, *, size=SIZE) -> Picture:
     Returns
     -------
     Picture
+        The element in a square view around it and the origin, titled with its numbers.
 
     Raises
     ------
@@ -199,6 +200,7 @@ def element_svg(obj) -> str | None:
     Returns
     -------
     str or None
+        An SVG document.
 
     Examples
     --------

@@ -297,11 +297,12 @@ class Picture:
 
     # ------------------------------------------------------------------ helpers
     def copy(self) -> "Picture":
-        """A picture with the same view and elements, to which more can be added (not reaching this one).
+        """A picture with the same view and elements, to which more can be added.
 
         Returns
         -------
         Picture
+            What is added to it does not reach this picture (the elements themselves are shared).
 
         Examples
         --------
@@ -458,7 +459,8 @@ class Picture:
         ----------
         {id}
         l : array_like (3,)
-            ``[fx, fy, tz]``.
+            ``[fx, fy, tz]``: the force and its moment about the origin, as in 4.27; a zero
+            force is the line at infinity.
         {role symbol}
         label : str, optional
             Text at the line (default: ``symbol``).

@@ -154,6 +154,7 @@ def panel(ax, points, *, margin=None, keep=None, min_span=None, fit_height=False
     Returns
     -------
     Picture
+        Sized to the axes, with neither ticks nor margin.
 
     Raises
     ------
@@ -763,7 +764,11 @@ def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: 
         The centre of mass.
     radius : float
         Radius of the symbol (data units).
-    {z symbol}
+    {z}
+    symbol : str
+        Thesis symbol of the centre of mass (default ``"c"``; ``"$c_2$"`` reads c₂).
+    desc : str
+        One-line description.
 
     Returns
     -------

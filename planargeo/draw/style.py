@@ -165,6 +165,7 @@ def style(role: str, **overrides) -> dict:
     Returns
     -------
     dict
+        Matplotlib's keyword arguments for an element in that role.
 
     Raises
     ------
@@ -192,6 +193,7 @@ def sum_style(kind: str, **overrides) -> dict:
     Returns
     -------
     dict
+        Matplotlib's keyword arguments that mark a sum: a wider line, or a diamond marker.
 
     Raises
     ------
