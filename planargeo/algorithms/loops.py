@@ -221,11 +221,6 @@ def _contact_topology(parents: tuple, contacts: tuple):
     return out
 
 
-def _contacts_of(model, contacts):
-    cs = model.contacts if contacts is None else contacts
-    return validate_contacts(cs, model.N)
-
-
 def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribed=None,
                mobility: str = "columns") -> LoopSolution:
     """Constrained projective dynamics algorithm, one state (thesis 9.5).
@@ -265,7 +260,7 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
     if mobility not in ("columns", "full"):
         raise InputError(f"mobility must be 'columns' or 'full', got {mobility!r}")
     q, qd, tau, f_ext = _one_state(model, q, qd, tau, f_ext, "loop_solve")
-    cs = _contacts_of(model, contacts)
+    cs = validate_contacts(model.contacts if contacts is None else contacts, model.N)
     data = kinematics(model, q, qd, f_ext)
     tree = stacked_solve(model, q, qd, tau, f_ext, data=data)
     N = model.N
@@ -453,7 +448,7 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
     """
     q, qd, tau, f_ext = _one_state(model, q, qd, tau, f_ext, "constrained_dynamics_lagrange")
     nq, N = model.nq, model.N
-    cs = _contacts_of(model, contacts)
+    cs = validate_contacts(model.contacts if contacts is None else contacts, model.N)
     data = kinematics(model, q, qd, None)
     arr = model.arrays()
     m_, J_, com_b = arr["mass"], arr["J"], arr["com"]
@@ -553,16 +548,10 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
         drive_rows.append((i, len(gam)))
         same_angle(i, model.parents[i], -val[0])
     Phi = np.vstack(rows) if rows else np.zeros((0, n))
-    gamma = np.array(gam, dtype=float)
-    nc = Phi.shape[0]
-    KKT = np.zeros((n + nc, n + nc))
-    KKT[:n, :n] = np.diag(Mdiag)
-    KKT[:n, n:] = -Phi.T
-    KKT[n:, :n] = Phi
-    rhs = np.concatenate([Fapp, -gamma])
+    KKT = np.block([[np.diag(Mdiag), -Phi.T], [Phi, np.zeros((len(gam), len(gam)))]])
+    rhs = np.concatenate([Fapp, -np.array(gam, dtype=float)])
     sol = np.linalg.lstsq(KKT, rhs, rcond=None)[0] if np.linalg.cond(KKT) > 1e14 else np.linalg.solve(KKT, rhs)
-    xdd, lam = sol[:n], sol[n:]
-    cdd = xdd.reshape(N, 3)
+    cdd, lam = sol[:n].reshape(N, 3), sol[n:]
     wd = cdd[:, 2]
     a = np.stack([cdd[:, 0] + wd * c[:, 1] + w * cd[:, 1],
                   cdd[:, 1] - wd * c[:, 0] - w * cd[:, 0], wd], -1)

@@ -175,13 +175,9 @@ def _blockdiag(mats, rows, cols):
         k = np.arange(n)
         out.reshape(n, r, n, c)[k, :, k, :] = np.asarray(mats, dtype=float).reshape(n, r, c)
         return out
-    out = np.zeros((sum(rows), sum(cols)))
-    r = c = 0
-    for M, nr, nc in zip(mats, rows, cols):
-        out[r:r + nr, c:c + nc] = M
-        r += nr
-        c += nc
-    return out
+    from scipy.linalg import block_diag
+
+    return block_diag(*mats) if n else np.zeros((0, 0))
 
 
 def _unit_upper_solve(M, b, trans: bool = False) -> np.ndarray:
