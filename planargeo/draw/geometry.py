@@ -225,21 +225,16 @@ def conic_geometry(C, *, rtol: float = 1e-9) -> dict:
                 imaginary = True
                 k = -k
             ax_ = np.sqrt(-k / lam)
-            S = np.diag(ax_)
             kind = "ellipse"
         else:
             # hyperbola: the axis whose eigenvalue has the sign of -k is the real one
-            if lam[0] * k < 0:
-                ax_ = np.sqrt(np.abs(k / lam))
-                Rr = R
-            else:
-                ax_ = np.sqrt(np.abs(k / lam))[::-1]
-                Rr = np.column_stack([R[:, 1], -R[:, 0]])
-            S = np.diag(ax_)
-            R = Rr
+            ax_ = np.sqrt(np.abs(k / lam))
+            if lam[0] * k >= 0:
+                ax_ = ax_[::-1]
+                R = np.column_stack([R[:, 1], -R[:, 0]])
             kind = "hyperbola"
         aff = np.eye(3)
-        aff[:2, :2] = R @ S
+        aff[:2, :2] = R @ np.diag(ax_)
         aff[:2, 2] = x0
         return {"kind": kind, "affine": aff, "imaginary": imaginary, "center": x0}
     if abs(lam[0]) > tol:
