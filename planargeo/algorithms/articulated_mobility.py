@@ -130,17 +130,14 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_poi
     N = I.shape[0]
     parents = _chain(N) if parents is None else [int(x) for x in parents]
     S, tau = _lists(S, tau)
-    kappa = np.asarray(kappa, dtype=float)
-    p = np.asarray(p, dtype=float)
+    kappa, p = np.asarray(kappa, dtype=float), np.asarray(p, dtype=float)
     children = [[] for _ in range(N)]
     for i, j in enumerate(parents):
         if j >= 0:
             children[j].append(i)
     if articulated is None and any(len(c) > 1 for c in children):
         articulated = articulated_recursion(I, S, kappa, p, tau, parents, points, joint_points)
-    Lam = np.zeros((N, 3, 3))
-    b = np.zeros((N, 3))
-    T = [None] * N
+    Lam, b, T = np.zeros((N, 3, 3)), np.zeros((N, 3)), [None] * N
     for i in range(N):
         Si, Ii = S[i], I[i]
         gram = _checked_gram(Ii, Si, f"sᵀIs of joint {i}",

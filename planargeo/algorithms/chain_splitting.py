@@ -152,9 +152,7 @@ def chain_split(I, S, kappa, p, tau, parents=None, joint_points=None) -> ChainSp
     art = articulated_recursion(I, S, kappa, p, tau, parents, None, joint_points)      # (7.1.1)
     mob = mobility_recursion(I, S, kappa, p, tau, parents, None, joint_points)        # (7.4.1)
     S, T, A, d, tau = art.S, art.T, art.A, art.d, [np.asarray(x, dtype=float).reshape(-1) for x in tau]
-    kappa = np.asarray(kappa, dtype=float)
-    a = np.zeros((N, 3))
-    f = np.zeros((N, 3))
+    kappa, a, f = np.asarray(kappa, dtype=float), np.zeros((N, 3)), np.zeros((N, 3))
     for i in range(N - 1):
         j = i + 1
         args = (mob.Lambda_inv[i], mob.b[i], A[j], d[j], T[j], S[j], tau[j], kappa[j])

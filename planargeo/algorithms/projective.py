@@ -146,8 +146,7 @@ class ProjectiveWorkspace:
 def _accelerations(art, kappa, tau, parents):
     """``psi_i`` (6.107) and ``a_i`` (6.108), base to tips: ``psi = (s^T A s)^-1 (Q - s^T d)``, ``U R^T = 1 - s T^T``."""
     N = len(art.S)
-    a = np.zeros((N, 3))
-    psi = [None] * N
+    a, psi = np.zeros((N, 3)), [None] * N
     for i in range(N):
         j = parents[i]
         base = (a[j] if j >= 0 else 0.0) + kappa[i]
@@ -187,12 +186,10 @@ def projective_solve(I, S, kappa, p, tau, parents=None, points=None, joint_point
     art = articulated_recursion(I, S, kappa, p, tau, parents, points, joint_points)
     N = len(art.S)
     parents = list(range(-1, N - 1)) if parents is None else [int(x) for x in parents]
-    kappa = np.asarray(kappa, dtype=float)
-    tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
+    kappa, tau = np.asarray(kappa, dtype=float), [np.asarray(x, dtype=float).reshape(-1) for x in tau]
     psi, a = _accelerations(art, kappa, tau, parents)
     A, d, T, R, U = art.A, art.d, art.T, art.R, art.U
-    f = np.zeros((N, 3))
-    mu, gamma = [None] * N, [None] * N
+    f, mu, gamma = np.zeros((N, 3)), [None] * N, [None] * N
     for i in range(N):
         j = parents[i]
         gamma[i] = R[i].T @ ((a[j] if j >= 0 else 0.0) + kappa[i])     # (6.101)

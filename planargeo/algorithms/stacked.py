@@ -84,10 +84,8 @@ def trunk(C) -> np.ndarray:
 
     Examples
     --------
-    >>> trunk(adjacency([-1, 0, 0])).astype(int)
-    array([[1, 0, 0],
-           [1, 1, 0],
-           [1, 0, 1]])
+    >>> trunk(adjacency([-1, 0, 0]))[2]                   # body 3 hangs from body 1
+    array([1., 0., 1.])
     """
     C = as_array(C, "C")
     if C.ndim != 2 or C.shape[0] != C.shape[1]:
