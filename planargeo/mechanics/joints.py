@@ -376,13 +376,6 @@ def twin_prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     for drawing).  Like :func:`prismatic`, it takes ``point`` and ``direction`` by name.
 
     {point_direction joint}
-
-    Examples
-    --------
-    >>> twin_prismatic(direction=(0.0, 2.0)).s    # e = y, e⊥ = -x
-    array([[ 0., -1.],
-           [ 1.,  0.],
-           [ 0.,  0.]])
     """
     return JointSpace("twin_prismatic", point, direction)
 

@@ -444,14 +444,6 @@ class Data:
         Returns
         -------
         numpy.ndarray, shape (..., 3, nq)
-
-        Examples
-        --------
-        >>> from planargeo.mechanics.kinematics import kinematics
-        >>> kinematics(chain_model(3), [0.0, 0.0, 0.0]).jacobian(1) + 0.0    # joint 2 does not move body 1
-        array([[ 0.,  0.,  0.],
-               [ 0., -1.,  0.],
-               [ 1.,  1.,  0.]])
         """
         return self.S * self.model.ancestor_mask()[i]
 

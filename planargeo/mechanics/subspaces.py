@@ -679,12 +679,6 @@ def effective_mobility(I, s, *, what: str | None = None) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
-
-    Examples
-    --------
-    >>> from planargeo.screws.twists import inertia_matrix
-    >>> effective_mobility(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0])[2]
-    array([0. , 0. , 0.4])
     """
     return _effective_mobility(_inertia(I, "I"), _space(s, "s"), _what(what, "sᵀIs"))
 
@@ -827,14 +821,6 @@ class Decomposition:
         -------
         tuple of numpy.ndarray
             ``ψ`` (..., k) and ``γ`` (..., 3-k).
-
-        Examples
-        --------
-        A unit disc pinned at its centre, translated upwards: no joint acceleration.
-
-        >>> dec = Decomposition(np.eye(3), [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
-        >>> dec.split_twist([0.0, 1.0, 0.0]), dec.join_twist([0.0], [0.0, 1.0])
-        ((array([0.]), array([0., 1.])), array([0., 1., 0.]))
         """
         a = as_vec3(a, "a")
         return _tmul(self.T, a), _tmul(self.R, a)

@@ -17,6 +17,7 @@ from typing import Callable
 
 import numpy as np
 
+from planargeo.algorithms.crba import mass_matrix
 from planargeo.algorithms.loops import loop_condition, loop_solve
 from planargeo.algorithms.stacked import blocks
 from planargeo.mechanics.contacts import contact_matrix, residual as contact_residual, stacked_contact_spaces, validate_contacts
@@ -115,14 +116,9 @@ def closure_jacobian(model: Model, q, contacts=None) -> np.ndarray:
     return B.T @ blocks(contact_matrix(cs, model.N)) @ Jb
 
 
-def _mass_matrix(model, q):
-    from planargeo.algorithms.crba import mass_matrix
-    return mass_matrix(model, q)
-
-
 def _weighted_correction(model, q, J, rhs, free):
     """``H^{-1} J^T (J H^{-1} J^T)^{-1} rhs`` restricted to the ``free`` coordinates."""
-    H = _mass_matrix(model, q)[np.ix_(free, free)]
+    H = mass_matrix(model, q)[np.ix_(free, free)]
     Jf = J[:, free]
     HiJt = np.linalg.solve(H, Jf.T)
     lam = np.linalg.lstsq(Jf @ HiJt, rhs, rcond=None)[0]
