@@ -29,17 +29,9 @@ import contextlib
 from planargeo.errors import InputError
 
 #: Okabe-Ito colour-blind-safe palette.
-OKABE_ITO = {
-    "black": "#000000",
-    "orange": "#E69F00",
-    "skyblue": "#56B4E9",
-    "green": "#009E73",
-    "yellow": "#F0E442",
-    "blue": "#0072B2",
-    "vermillion": "#D55E00",
-    "purple": "#CC79A7",
-    "grey": "#7F7F7F",
-}
+OKABE_ITO = {"black": "#000000", "orange": "#E69F00", "skyblue": "#56B4E9", "green": "#009E73",
+             "yellow": "#F0E442", "blue": "#0072B2", "vermillion": "#D55E00", "purple": "#CC79A7",
+             "grey": "#7F7F7F"}
 
 #: Colour per role (see module docstring).
 COLORS = {
@@ -57,16 +49,8 @@ COLORS = {
 }
 
 #: Line widths (points) per role.
-LINEWIDTHS = {
-    "wrench": 1.8,
-    "reaction": 1.8,
-    "momentum": 1.8,
-    "conic": 1.3,
-    "inertia": 1.2,
-    "construct": 0.8,
-    "body": 1.0,
-    "chart": 1.5,
-}
+LINEWIDTHS = {"wrench": 1.8, "reaction": 1.8, "momentum": 1.8, "conic": 1.3, "inertia": 1.2,
+              "construct": 0.8, "body": 1.0, "chart": 1.5}
 
 #: Style per role: colour, line width (points), dash (matplotlib ``linestyle``) and marker;
 #: a :class:`~planargeo.draw.picture.Picture` turns them into pixels.
@@ -99,24 +83,11 @@ EXPLORER_DPI = 100
 EXPLORER_MIN_WIDTH_PX = 560
 
 #: Fixed rcParams: fonts, sizes (all :data:`LABEL_PT`) and SVG determinism (column width ≈ 3.4 in).
-RC = {
-    "font.family": "DejaVu Sans",
-    "font.size": LABEL_PT,
-    "axes.titlesize": TITLE_PT,
-    "axes.labelsize": LABEL_PT,
-    "legend.fontsize": LABEL_PT,
-    "xtick.labelsize": LABEL_PT,
-    "ytick.labelsize": LABEL_PT,
-    "lines.linewidth": 1.3,
-    "legend.frameon": False,
-    "figure.dpi": 100,
-    "savefig.dpi": 100,
-    "svg.hashsalt": "planargeo",
-    "svg.fonttype": "path",
-    "svg.id": None,
-    "path.simplify": False,
-    "axes.prop_cycle": None,  # filled in below
-}
+RC = {"font.family": "DejaVu Sans", "font.size": LABEL_PT, "axes.titlesize": TITLE_PT,
+      **{k: LABEL_PT for k in ("axes.labelsize", "legend.fontsize", "xtick.labelsize", "ytick.labelsize")},
+      "lines.linewidth": 1.3, "legend.frameon": False, "figure.dpi": 100, "savefig.dpi": 100,
+      "svg.hashsalt": "planargeo", "svg.fonttype": "path", "svg.id": None, "path.simplify": False,
+      "axes.prop_cycle": None}  # the cycle is filled in by _rc
 
 #: Column width (inches).
 COLUMN_WIDTH = 3.4
