@@ -59,14 +59,6 @@ def _proportional(a: np.ndarray, b: np.ndarray) -> bool:
     return bool(min(np.linalg.norm(a - b), np.linalg.norm(a + b)) <= _EQ_TOL * 10)
 
 
-def _as_point_array(p, name: str = "p") -> np.ndarray:
-    return p.array if isinstance(p, Point) else _vec(p, name)
-
-
-def _as_line_array(l, name: str = "l") -> np.ndarray:
-    return l.array if isinstance(l, Line) else _vec(l, name)
-
-
 class _Homogeneous:
     """Common base: one read-only array ``_a``, compared projectively."""
 
@@ -273,7 +265,7 @@ class Point(_PointOrLine):
         >>> Point.from_xy(0, 2).join(Point.at_infinity((1, 0)))     # the horizontal line y = 2
         Line(through=(0, 2), direction=(1, 0))
         """
-        return Line(_p.join(self._a, _as_point_array(other, "other")))
+        return Line(_p.join(self._a, _vec(other, "other")))
 
     _wedge = join
 
@@ -324,7 +316,7 @@ class Line(_PointOrLine):
         >>> Line.through(Point.from_xy(0, 1), Point.from_xy(2, 1))
         Line(through=(0, 1), direction=(1, 0))
         """
-        return cls(_p.join(_as_point_array(p, "p"), _as_point_array(q, "q")))
+        return cls(_p.join(_vec(p, "p"), _vec(q, "q")))
 
     @classmethod
     @_shared
@@ -393,7 +385,7 @@ class Line(_PointOrLine):
         >>> Line.from_point_direction((0, 1), (1, 0)).meet(Line.from_point_direction((2, 0), (0, 1)))
         Point(x=2, y=1)
         """
-        return Point(_p.meet(self._a, _as_line_array(other, "other")))
+        return Point(_p.meet(self._a, _vec(other, "other")))
 
     _wedge = meet
 
@@ -501,7 +493,7 @@ class Conic(_Homogeneous):
         >>> Conic.circle((0, 0), 1).polar(Point.from_xy(2, 0))                # x = r²/2 = 1/2
         Line(through=(0.5, 0), direction=(0, -1))
         """
-        return Line(_c.polar(self._a, _as_point_array(point, "point")))
+        return Line(_c.polar(self._a, _vec(point, "point")))
 
     @_shared
     def pole(self, line) -> Point:
@@ -518,7 +510,7 @@ class Conic(_Homogeneous):
         >>> Conic.circle((0, 0), 1).pole(Line.from_point_direction((0.5, 0), (0, 1)))   # x = 1/2
         Point(x=2, y=0)
         """
-        return Point(_c.pole(self._a, _as_line_array(line, "line")))
+        return Point(_c.pole(self._a, _vec(line, "line")))
 
     def classify(self, rtol: float = 1e-10) -> _c.ConicType:
         """Real / imaginary / degenerate and kind (thesis 5.2.2; :func:`planargeo.geometry.conics.classify`).
@@ -569,7 +561,7 @@ class Conic(_Homogeneous):
         >>> Conic.hyperbola((0, 0), (1, 1)).contains(Point.at_infinity((1, 1)))   # asymptote y = x
         True
         """
-        return bool(_c.is_on_conic(self._a, _as_point_array(point, "point"), rtol=rtol))
+        return bool(_c.is_on_conic(self._a, _vec(point, "point"), rtol=rtol))
 
     @_shared
     def tangents_from(self, point):
@@ -590,7 +582,7 @@ class Conic(_Homogeneous):
         >>> x1                                      # on the polar x = 1/2
         Point(x=0.5, y=0.866025)
         """
-        L, X = _c.tangents_from_point(self._a, _as_point_array(point, "point"))
+        L, X = _c.tangents_from_point(self._a, _vec(point, "point"))
         return (Line(L[0]), Line(L[1])), (Point(X[0]), Point(X[1]))
 
     def affine_frame(self) -> _c.AffineFrame:

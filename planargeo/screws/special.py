@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from planargeo._validate import as_vec3, as_xy, check_positive, check_tolerance
-from planargeo.errors import ShapeError
+from planargeo.errors import DegenerateGeometryError, ShapeError
 from planargeo.geometry.projective import _fit
 from planargeo.geometry._docs import entries
 
@@ -332,8 +332,6 @@ def horizon_handle(p, centre=(0.0, 0.0), radius=1.0) -> np.ndarray:
     >>> horizon_handle([0.0, 1.0, 0.0])              # the ideal point in direction (-1, 0)
     array([-1.,  0.])
     """
-    from planargeo.errors import DegenerateGeometryError
-
     a = _single(p, "p")
     if not np.any(a):
         raise DegenerateGeometryError("p is the zero vector, which is no point")

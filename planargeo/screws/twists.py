@@ -14,7 +14,7 @@ import numpy as np
 
 from planargeo._validate import (as_array, as_mat3, as_vec3, as_xy, batch_shape, check_overflow, check_positive,
                                  check_positive_semidefinite, check_tolerance, overflow_checked, rescaled)
-from planargeo.errors import NumericOverflowError
+from planargeo.errors import DegenerateGeometryError, NumericOverflowError, ShapeError
 from planargeo.geometry.projective import _fit, normalize_line, normalize_point, to_xy
 from planargeo.geometry._docs import entries
 
@@ -267,8 +267,6 @@ def unit_translation(direction) -> np.ndarray:
     >>> unit_translation([0.0, 2.0])
     array([0., 1., 0.])
     """
-    from planargeo.errors import DegenerateGeometryError
-
     d = _fit(as_xy(direction, "direction"))       # exact rescaling: |d| cannot overflow
     n = np.hypot(d[..., 0], d[..., 1])
     if np.any(n == 0):
@@ -281,11 +279,7 @@ def unit_translation(direction) -> np.ndarray:
 def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
     """Planar spatial inertia at the origin (thesis 1.68 projected; 4.58, 5.64).
 
-    For mass ``m``, centre of mass ``(cx, cy)`` and ``J`` about it::
-
-        [[ m,     0,    -m cy          ],
-         [ 0,     m,     m cx          ],
-         [-m cy,  m cx,  J + m |c|²    ]]
+    ``[[m, 0, -m cy], [0, m, m cx], [-m cy, m cx, J + m |c|²]]`` for the centre of mass ``c``.
 
     Parameters
     ----------
@@ -648,11 +642,9 @@ def kappa(twist, s, qd) -> np.ndarray:
         U = (S * q[..., None])[..., None]
     elif S.ndim >= 2 and S.shape[-2] == 3:
         if q.ndim == 0 or q.shape[-1] != S.shape[-1]:
-            from planargeo.errors import ShapeError
             raise ShapeError(f"qd must have shape (..., {S.shape[-1]}) to match s, got shape {q.shape}")
         U = S * q[..., None, :]
     else:
-        from planargeo.errors import ShapeError
         raise ShapeError(f"s must have shape (..., 3) or (..., 3, k), got shape {S.shape}")
     shape = batch_shape(twist=(v, 1), **{"s q̇": (U, 2)})
     out = np.zeros(shape + (3,))
@@ -781,17 +773,6 @@ class _Screw(_Held):
     def rotated(self, theta, about=None):
         """The screw turned by ``theta`` about ``about`` (default the reference point); power is unchanged.
 
-        Parameters
-        ----------
-        theta : float or array_like
-            Angle (rad), counter-clockwise.
-        about : array_like, shape (..., 2), optional
-            Centre of the rotation (m).
-
-        Returns
-        -------
-        Twist or Wrench
-
         Examples
         --------
         >>> Twist.rotation([1.0, 0.0]).rotated(np.pi / 2).pole_xy.round(12)   # the pole turns with it
@@ -886,10 +867,8 @@ class _Screw(_Held):
         """The projective element this screw is (a twist's pole, a wrench's line; thesis 5.51, 5.56)."""
         cls, attr, noun = self._element
         if self._array.ndim != 1:
-            from planargeo.errors import ShapeError
             raise ShapeError(f"{self._name} must be a single (3,) {self._name} for .{attr}, got shape {self._array.shape}")
         if not np.any(self._array):
-            from planargeo.errors import DegenerateGeometryError
             raise DegenerateGeometryError(f"{self._name} is zero: the zero {self._name} has no {noun}")
         from planargeo.geometry import elements
         return getattr(elements, cls)(self._array)
@@ -1141,10 +1120,8 @@ del _kind
 def _single(x, cls, name) -> np.ndarray:
     a = as_vec3(x.array if isinstance(x, cls) else x, name)
     if a.ndim != 1:
-        from planargeo.errors import ShapeError
         raise ShapeError(f"{name} must have shape (3,) for a construction, got shape {a.shape}")
     if not np.any(a):
-        from planargeo.errors import DegenerateGeometryError
         raise DegenerateGeometryError(f"{name} must be non-zero, got {a!r}")
     return a
 
