@@ -170,9 +170,8 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
         ``f`` (9.61), ``mu``.
     """
     from planargeo.algorithms.loops import loop_solve
-    from planargeo.algorithms.stacked import blocks
-    from planargeo.mechanics.contacts import Contact, contact_matrix, stacked_contact_spaces
-    from planargeo.mechanics.kinematics import kinematics
+    from planargeo.mechanics.contacts import Contact
+    from planargeo.simulate.loops import closure_jacobian
 
     mass, length = check_param("mass", mass, positive=True), check_param("length", length, positive=True)
     g, speed = check_param("g", g), check_param("speed", speed)
@@ -181,10 +180,7 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
                 Contact("pin", 7, 8, (L, 0.0), (L, 0.0), name="8-9"))
     model = tree_model(mass, length, g, contacts)
     q = _default_q()
-    d = kinematics(model, q)
-    _, B = stacked_contact_spaces(contacts, d.pose)
-    Jb = np.concatenate([d.jacobian(i) for i in range(9)], 0)
-    Jc = B.T @ blocks(contact_matrix(contacts, 9)) @ Jb
+    Jc = closure_jacobian(model, q)
     qd = speed * _QD_PATTERN
     qd = qd - np.linalg.pinv(Jc) @ (Jc @ qd)
     tau = np.zeros(9)
