@@ -518,18 +518,15 @@ def projective_step(pic: Picture, s, R, A, a_prev, a, kappa, *,
     out = {"T": _line(pic, prefix + "T", T[:, 0], names[0], role="momentum", symbol=names[0],
                       desc="axis of percussion of the joint, T = A s (sᵀAs)⁻¹ (6.39), picks the "
                            f"joint's part of an acceleration: {line_words(T[:, 0])}",
-                      anchor=T_anchor, side=T_side, aims=aims, key="T"),
-           "s": _point(pic, prefix + "s", dec.s[:, 0], names[1], role="twist", symbol=names[1],
-                       desc=f"the joint, its unit twist (6.1): {where(dec.s[:, 0])}", glyph=False,
-                       aims=aims, key="s"),
-           "a_prev": _point(pic, prefix + "a_prev", a_prev, names[2], role="accel", symbol=names[2],
-                            desc=f"acceleration of the parent, ψ = Tᵀa = {num(psi_prev[0])} rad/s² "
-                                 f"along the joint (6.100): {_accel_words(a_prev)}",
-                            glyph=True, aims=aims, key="a_prev"),
-           "a": _point(pic, prefix + "a", a, names[3], role="accel", symbol=names[3],
-                       desc=f"acceleration of the body, ψ = Tᵀa = {num(psi[0])} rad/s² along the "
-                            f"joint, q̈ = ψᵢ − Tᵀ(aᵢ₋₁ + κ) = {num(qdd[0])} rad/s² (6.100, 6.110): "
-                            + _accel_words(a),
-                       glyph=True, aims=aims, key="a")}
+                      anchor=T_anchor, side=T_side, aims=aims, key="T")}
+    for k, (key, p, role, desc) in enumerate((
+            ("s", dec.s[:, 0], "twist", f"the joint, its unit twist (6.1): {where(dec.s[:, 0])}"),
+            ("a_prev", a_prev, "accel", f"acceleration of the parent, ψ = Tᵀa = {num(psi_prev[0])} "
+                                        f"rad/s² along the joint (6.100): {_accel_words(a_prev)}"),
+            ("a", a, "accel", f"acceleration of the body, ψ = Tᵀa = {num(psi[0])} rad/s² along the "
+                              f"joint, q̈ = ψᵢ − Tᵀ(aᵢ₋₁ + κ) = {num(qdd[0])} rad/s² (6.100, 6.110): "
+                              + _accel_words(a)))):
+        out[key] = _point(pic, prefix + key, p, names[k + 1], role=role, symbol=names[k + 1], desc=desc,
+                          glyph=key != "s", aims=aims, key=key)
     out["values"] = {"T": T, "psi": psi, "psi_prev": psi_prev, "qdd": qdd}
     return out
