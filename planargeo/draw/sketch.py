@@ -757,7 +757,7 @@ def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: 
         desc: str = "centre of mass") -> dict:
     """The centre-of-mass symbol: a white disc (``id + ":disc"``) and two black quarters (``id``).
 
-    The black quarters fill the first and third quadrants, as in the thesis's figures.
+    The black quarters fill the first and third quadrants.
 
     Parameters
     ----------
