@@ -315,7 +315,9 @@ def residual(contact: Contact, pose) -> np.ndarray:
 
 
 def contact_bias(v_a, v_b) -> np.ndarray:
-    """Contact bias acceleration ``ν = v_a × (v_a - v_b)`` (thesis 9.55, 9.5 step 3), the same with ``v_b ×``.
+    """Contact bias acceleration ``ν = v_a × (v_a - v_b)`` (thesis 9.55, 9.5 step 3).
+
+    With ``z θ̇ = v_a - v_b`` (9.54) it equals ``v_b × (v_a - v_b)``: either body may carry ``z``.
 
     Parameters
     ----------

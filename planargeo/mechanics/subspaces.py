@@ -443,7 +443,7 @@ def T_of(A, s, *, what: str | None = None) -> np.ndarray:
 def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
     """Reactive-acceleration space ``U = A⁻¹ R (Rᵀ A⁻¹ R)⁻¹`` (thesis 6.37, 6.45, 6.99; 6.33 corrected).
 
-    ``RᵀU = 1`` (6.35), ``TᵀU = 0`` (6.46); thesis 6.33 omits the inverse (``docs/errata.md``).
+    ``RᵀU = 1`` (6.35), ``TᵀU = 0`` (6.46); the printed 6.33 omits the inverse (``docs/errata.md``).
 
     Parameters
     ----------
@@ -761,7 +761,7 @@ class Decomposition:
     @classmethod
     @_parameters
     def from_joint(cls, A, joint, *, name: str = "A") -> "Decomposition":
-        """Build from a :class:`planargeo.mechanics.joints.JointSpace`: ``Decomposition(A, joint.s, joint.R)``.
+        """``Decomposition(A, joint.s, joint.R)`` of a :class:`~planargeo.mechanics.joints.JointSpace` (thesis 6.1).
 
         Parameters
         ----------

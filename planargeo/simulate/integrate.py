@@ -204,7 +204,7 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     """Integrate ``q̈ = forward(q, q̇, τ)`` from ``(q0, qd0)`` over ``[0, t_end]`` (thesis 3.41-3.42, 2.9 in time).
 
     ``ẏ = (q̇, q̈)`` for ``y = (q, q̇)``, ``q̈`` from the forward dynamics (default the
-    articulated-body algorithm, 3.31-3.42); the thesis leaves the integration to the reader (3.6).
+    articulated-body algorithm, 3.31-3.42); the thesis leaves the integration to the reader (section 3.6).
 
     Parameters
     ----------

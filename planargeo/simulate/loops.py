@@ -183,7 +183,7 @@ def project_state(model: Model, q, qd, contacts=None, *, fixed=(), tol: float = 
 def baumgarte(model: Model, contacts=None, alpha: float = 5.0, beta: float = 5.0, *, fixed=()) -> Callable:
     """A ``stabilize(t, q, qd, qdd)`` hook enforcing ``φ̈ + 2αφ̇ + β²φ = 0`` (Baumgarte; thesis 9.69 stabilised).
 
-    The loop algorithm's accelerations give ``φ̈ = 0`` (9.68-9.69); the hook adds
+    The loop algorithm's accelerations give ``φ̈ = 0`` (contact condition 9.68-9.69); the hook adds
     ``-H^{-1} J_c^T (J_c H^{-1} J_c^T)^{-1} (2α J_c q̇ + β² φ)``.
 
     Parameters
