@@ -4,12 +4,6 @@ A value at the end of a notebook cell is drawn as the explorers draw it, as a
 :class:`~planargeo.draw.picture.Picture` in a square view around it and the origin ``O``,
 titled with its numbers, and written as SVG by matplotlib.  ``import planargeo`` registers
 :func:`element_svg` with IPython when it runs inside it (:func:`register`).
-
-Examples
---------
->>> from planargeo.screws.twists import Twist
->>> element_picture(Twist.rotation((1.0, 2.0), 3.0)).title
-'v: pole (1, 2), ω = 3'
 """
 from __future__ import annotations
 

@@ -4,18 +4,6 @@ The polar of an exterior point from its tangents (:func:`polar_exterior`, 5.36, 
 of an interior point from two chords (:func:`polar_interior`, Theorem 12, Fig. 5.3), the axis
 of percussion ``f = I a`` (:func:`percussion`, 5.64–5.68, Fig. 5.6) and powerless forces and
 accelerations (:func:`power`, 5.69–5.74, Fig. 5.7).  Each returns its elements by name.
-
-Examples
---------
->>> import numpy as np
->>> from planargeo.draw.picture import Picture
->>> from planargeo.geometry.conics import conic_circle
->>> pic = Picture((-3, 3, -3, 3), size=(300, 300), ticks=False)
->>> out = polar_exterior(pic, conic_circle([0.0, 0.0], 1.0), [0.0, -2.0, 1.0])   # P = (2, 0)
->>> sorted(out["L"]["parts"][0]["xy"].round(6).tolist())   # the polar x = 1/2, clipped to the view
-[[0.5, -3.0], [0.5, 3.0]]
->>> out["L"]["desc"]
-'polar L = C P of P (5.36): the line through the contacts (0.5, 0.866) and (0.5, -0.866)'
 """
 from __future__ import annotations
 

@@ -6,20 +6,6 @@ forces and accelerations (thesis 6.2–6.3, 6.36–6.48): :func:`decomposition` 
 and a force ``f = TQ + Rμ`` with their parts (Figs 6.3, 6.4), :func:`projective_step` the
 joint acceleration across one joint (Fig. 6.5); :func:`twist_parts` and :func:`wrench_parts`
 compute the splits alone.  Each returns its elements by name and the arrays under ``"values"``.
-
-Examples
---------
-A rod of mass 1, centre of mass at (1, 0), pinned at the origin: its axis of percussion
-is the vertical line ``x = 1.25``.
-
->>> from planargeo.draw.picture import Picture
->>> from planargeo.mechanics.joints import revolute
->>> from planargeo.screws.twists import inertia_matrix
->>> j, A = revolute([0.0, 0.0]), inertia_matrix(1.0, [1.0, 0.0], 0.25)
->>> pic = Picture((-1, 3, -2, 2), size=(300, 300), ticks=False)
->>> out = decomposition(pic, j.s, j.R, A)
->>> [float(x) for p in out["T"]["parts"] if p["p"] == "path" for x, y in p["xy"]]  # x = 1.25
-[1.25, 1.25]
 """
 from __future__ import annotations
 

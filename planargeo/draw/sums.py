@@ -5,20 +5,6 @@ acceleration kinematics along a chain (:func:`velocity_step`, :func:`acceleratio
 Figs 4.7–4.8) and the Newton–Euler balance of a body (:func:`newton_euler`, Fig. 4.9).  Each
 adds poles (ideal ones as edge arrows), lines of action with force arrows to scale and lever
 lines, and returns its elements by name (and the computed arrays under ``"values"``).
-
-Examples
---------
->>> from planargeo.draw.picture import Picture
->>> from planargeo.screws.twists import unit_rotation
->>> pic = Picture((-1, 4, -2, 2), size=(300, 200), ticks=False)
->>> out = twist_sum(pic, unit_rotation([0, 0]), 2 * unit_rotation([3, 0]))
->>> sorted(out)
-['lever', 'v1', 'v2', 'v3']
->>> mark = out["v3"]["parts"][0]
->>> mark["x"], mark["y"]              # beta = 2/3 of the way from Q1 to Q2 (4.12-4.13)
-(2.0, 0.0)
->>> out["v3"]["desc"]
-'sum v₃ = v₁ + v₂ (4.11–4.13): ω = 3 rad/s, pole at (2, 0) m'
 """
 from __future__ import annotations
 
