@@ -209,13 +209,14 @@ def articulated_state(model, q, *, outboard: int | None = None, pole=(0.0, 0.0),
         A singular joint (never for bodies with mass and rotational inertia).
     """
     from planargeo.algorithms.articulated_inertia import articulated_inertia
+    from planargeo.mechanics.kinematics import kinematics
 
     q = np.asarray(q, dtype=float)
     n = model.N
     pts = joint_points(q, L)
     full = articulated_inertia(model, q)
     shown = full if outboard is None else articulated_inertia(model, q, steps=outboard)
-    I = np.asarray(_rigid(model, q), dtype=float)
+    I = np.asarray(kinematics(model, q).I, dtype=float)          # the bodies' inertias at the origin
     a = np.array([pole[1], -pole[0], 1.0])
     comps, errs = [[] for _ in range(n)], [[] for _ in range(n)]
     nA = np.linalg.norm(full.A, axis=(1, 2))
@@ -233,10 +234,3 @@ def articulated_state(model, q, *, outboard: int | None = None, pole=(0.0, 0.0),
         "components": [np.array(c) for c in comps], "error": [np.array(e) for e in errs],
         "result": shown, "full": full,
     }
-
-
-def _rigid(model, q):
-    """The bodies' inertias at the origin in the configuration ``q``."""
-    from planargeo.mechanics.kinematics import kinematics
-
-    return kinematics(model, q).I
