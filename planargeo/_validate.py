@@ -1,4 +1,4 @@
-"""Argument validation shared by the whole package (private): wrong shapes and non-finite numbers reported uniformly, naming the argument."""
+"""Argument validation shared by the whole package (private): bad shapes and values named uniformly."""
 from __future__ import annotations
 
 import functools

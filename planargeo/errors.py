@@ -22,9 +22,10 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["PlanargeoError", "InputError", "ShapeError", "NonFiniteError", "InvalidPolygonError", "TopologyError",
-           "SceneError", "NumericOverflowError", "SizeLimitError", "DegenerateGeometryError", "SingularError",
-           "SingularInertiaError", "SingularConfigurationError", "CyclicTopologyError", "OutputError", "COND_LIMIT"]
+__all__ = ["PlanargeoError", "InputError", "ShapeError", "NonFiniteError", "InvalidPolygonError",
+           "TopologyError", "SceneError", "NumericOverflowError", "SizeLimitError", "DegenerateGeometryError",
+           "SingularError", "SingularInertiaError", "SingularConfigurationError", "CyclicTopologyError",
+           "OutputError", "COND_LIMIT"]
 
 #: The package's one condition limit: a result whose relative error can reach ``ε κ`` (``κ`` the
 #: condition number of its problem) is refused when ``κ > COND_LIMIT`` (past it, fewer than about

@@ -43,7 +43,7 @@ QUANTITIES_FILE = WORDS_FILE
 
 
 class Quantity(NamedTuple):
-    """What one reported quantity is: ``description``, thesis ``symbol`` and ``equation`` (``"—"``: none), ``unit`` (``"—"``: dimensionless)."""
+    """One reported quantity: ``description``, thesis ``symbol``, ``equation``, ``unit`` (``"—"``: none)."""
 
     description: str
     symbol: str
@@ -480,7 +480,8 @@ def main(args: argparse.Namespace) -> int:
                 infos[name] = quantity_info(name)
             except PlanargeoError as exc:  # pragma: no cover - a broken scene module
                 return _error(str(exc).splitlines()[0], 1)
-        print(json.dumps({"scenes": listing, "quantities": infos}) if args.json else format_listing(listing, infos))
+        listed = {"scenes": listing, "quantities": infos}
+        print(json.dumps(listed) if args.json else format_listing(listing, infos))
         return 0
     if not args.scene:
         return _error("a scene name is required (planargeo report --list shows them)", 2)

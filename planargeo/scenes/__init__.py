@@ -38,9 +38,9 @@ class SceneRangeError(SceneError, NumericOverflowError):
     """Finite parameters the scene cannot evaluate in double precision (overflow, a zero that underflowed)."""
 
 # Scene modules, imported on first use (a module that does not exist yet is skipped).
-_MODULES = [f"planargeo.scenes.{m}" for m in ("chain", "car", "two_body", "horizontal_chain", "mobility_example",
-                                               "slider_crank", "trees", "subspace", "impulse", "articulated",
-                                               "splitting")]
+_MODULES = [f"planargeo.scenes.{m}" for m in (
+    "chain", "car", "two_body", "horizontal_chain", "mobility_example", "slider_crank", "trees", "subspace",
+    "impulse", "articulated", "splitting")]
 
 _REGISTRY: dict[str, Callable[..., "SceneResult"]] = {}
 _LIMITS: dict[str, dict[str, tuple[int, str]]] = {}

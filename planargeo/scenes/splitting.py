@@ -1,4 +1,4 @@
-"""Scene ``splitting``: a constrained chain's articulated mobilities and chain splitting (thesis 7.4-7.6: 7.28-7.56).
+"""Scene ``splitting``: articulated mobilities and chain splitting (thesis 7.4-7.6: 7.28-7.56).
 
 ``n`` bodies (joints ``L`` apart) hang from ``CJ_1`` at the origin, each further joint bent by
 ``phi``, at rest, gravity ``g`` (0: the thesis's example).  A couple ``f_{n+1} = [0, 0, tau]``

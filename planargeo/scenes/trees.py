@@ -70,7 +70,7 @@ def tree_solve(model, q, qd, tau=None):
     Returns
     -------
     StackedSolution or LoopSolution
-        From :func:`~planargeo.algorithms.stacked.stacked_solve` or :func:`~planargeo.algorithms.loops.loop_solve`.
+        From :func:`~planargeo.algorithms.stacked.stacked_solve` or ``loops.loop_solve``.
 
     Examples
     --------
@@ -240,7 +240,10 @@ def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
     qd = speed * _QD_PATTERN
     q = _default_q() if q_start is None else np.array(q_start, dtype=float)
     q[0] = root_angle
-    fixed, path = ([0], [q[1]]) if angle2 is None else ([0, 1], [check_param("angle2", angle2) - root_angle])
+    if angle2 is None:
+        fixed, path = [0], [q[1]]
+    else:
+        fixed, path = [0, 1], [check_param("angle2", angle2) - root_angle]
     if angle2 is not None and q_start is None:
         # the Fig 9.2 pose turned as a whole (its loops stay closed), then body 2 turned the shorter
         # way to angle2 in steps of at most 10° with the loops closed again after each step
