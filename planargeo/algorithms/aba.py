@@ -39,8 +39,9 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
     Examples
     --------
     >>> from planargeo.mechanics.model import Body, Joint, Model
-    >>> w = articulated_body(Model([Body(1.0, com=(1.0, 0.0))], [Joint("revolute")], [-1]), [0.0], [0.0], [0.0])
-    >>> w.qdd, w.f[0]                     # a simple pendulum released horizontally: g / L, no pivot load
+    >>> pendulum = Model([Body(1.0, com=(1.0, 0.0))], [Joint("revolute")], [-1])
+    >>> w = articulated_body(pendulum, [0.0], [0.0], [0.0])
+    >>> w.qdd, w.f[0]                     # released horizontally: g / L, no pivot load
     (array([-9.81]), array([0., 0., 0.]))
     """
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
@@ -80,7 +81,8 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
             qdd[..., model.q_slice(i)] = qi
             ai = ai + np.einsum("...ij,...j->...i", data.s(i), qi)
         a[..., i, :] = ai
-    data.tau, data.A, data.d, data.a, data.qdd, data.D, data.U, data.u = tau, A, d, a, qdd, Dl, Ul, ul
+    data.tau, data.A, data.d, data.a, data.qdd = tau, A, d, a, qdd
+    data.D, data.U, data.u = Dl, Ul, ul
     data.f = np.einsum("...ij,...j->...i", A, a) + d
     check_finite(qdd, "q̈", q=q, qd=qd, tau=tau, f_ext=f_ext)
     return data
@@ -112,7 +114,7 @@ def forward_dynamics(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
-    >>> forward_dynamics(chain_model(1), [0.0], [0.0], [0.0])     # a unit rod released horizontally: -1.5 g
+    >>> forward_dynamics(chain_model(1), [0.0], [0.0], [0.0])     # a unit rod released: -1.5 g
     array([-14.715])
     """
     return evaluate(model, False, q, qd, tau, f_ext, _general)

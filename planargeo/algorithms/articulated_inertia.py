@@ -103,7 +103,8 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
     >>> from planargeo.screws.twists import inertia_matrix
     >>> I = [inertia_matrix(1.0, [0.5, 0.0], 0.25), inertia_matrix(1.0, [1.5, 0.0], 0.25)]
     >>> S = [np.array([[0.0], [0.0], [1.0]]), np.array([[0.0], [-1.0], [1.0]])]
-    >>> float(articulated_recursion(I, S, np.zeros((2, 3)), np.zeros((2, 3)), [np.zeros(1)] * 2).A[0][0, 0])
+    >>> r = articulated_recursion(I, S, np.zeros((2, 3)), np.zeros((2, 3)), [np.zeros(1)] * 2)
+    >>> float(r.A[0][0, 0])
     2.0
     """
     A = np.array(I, dtype=float)                   # (7.2): A_N = I_N, children added below
@@ -183,7 +184,8 @@ def _truncated(I, p, S, kappa, tau, parents, points, joint_points, check, steps)
     N = I.shape[0]
     par = np.asarray(parents, dtype=int)
     kids = np.flatnonzero(par >= 0)
-    idxs = {k: np.array([i for i in range(N) if S[i].shape[1] == k], dtype=int) for k in {s.shape[1] for s in S} - {0}}
+    idxs = {k: np.array([i for i in range(N) if S[i].shape[1] == k], dtype=int)
+            for k in {s.shape[1] for s in S} - {0}}
     groups = [(k, idx, np.stack([S[i] for i in idx])) for k, idx in sorted(idxs.items())]
     Tq = np.zeros((N, 3))                          # T_i Q_i comes after T_i is known
     A, d = I.copy(), p.copy()
@@ -197,7 +199,7 @@ def _truncated(I, p, S, kappa, tau, parents, points, joint_points, check, steps)
         PA = P[kids] @ A[kids]
         pd = Tq[kids] + np.einsum("nij,nj->ni", P[kids], np.einsum("nij,nj->ni", A[kids], kappa[kids]) + d[kids])
         A, d = I.copy(), p.copy()
-        np.add.at(A, par[kids], PA)                # (7.7a) from the previous sweep's outboard inertias
+        np.add.at(A, par[kids], PA)                # (7.7a) from the previous sweep's inertias
         np.add.at(d, par[kids], pd)                # (7.7b)
     if check:
         for i in range(N):
@@ -233,7 +235,7 @@ def truncation_error(model, q, qd=None, tau=None, f_ext=None, *, steps: int) -> 
     --------
     >>> from planargeo.scenes.horizontal_chain import horizontal_chain_model
     >>> e = truncation_error(horizontal_chain_model(6, 1.0, 0.5, 1.0), np.zeros(6), steps=3)
-    >>> round(float(e["A"][0]), 4), float(e["entries"][0][2, 2])     # A_z exact after one step (7.3)
+    >>> round(float(e["A"][0]), 4), float(e["entries"][0][2, 2])     # A_z exact after one step
     (0.3114, 0.0)
     """
     if steps is None:
@@ -272,13 +274,13 @@ def articulated_inertia(model, q, qd=None, tau=None, f_ext=None, *, steps: int |
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
-    >>> articulated_inertia(chain_model(2), [0.0, 0.0]).A[0][0, 0]      # twice the mass along the chain
+    >>> articulated_inertia(chain_model(2), [0.0, 0.0]).A[0][0, 0]      # twice the mass
     np.float64(2.0)
     """
     return articulated_recursion(*_state_arrays(model, q, qd, tau, f_ext)[1:], steps=steps)
 
 
-# -- Model glue shared by the chapter 6-9 algorithms -------------------------------------------------
+# -- Model glue shared by the chapter 6-9 algorithms ----------------------------------------------
 def _state_arrays(model, q, qd, tau, f_ext, checked=False):
     """One state as the recursions take it: ``(data, I, S, kappa, p, tau, parents, points, joint_points)``.
 

@@ -38,17 +38,13 @@ class ArticulatedMobilities(_Reactions):
     points: np.ndarray | None = None
 
 
-#: Backstop for the method's own 3×3 solves (``1 + U Rᵀ Λ⁻¹ I`` of 7.38, the siblings' ``1 + Λ⁻¹ E``,
-#: ``1 + Λ⁻¹ R Uᵀ A`` of 7.54): raise only when numerically singular (``cond ≥ 1/ε``).  Whether a
-#: configuration is singular is decided by the joints' rule (:data:`planargeo.errors.COND_LIMIT`, checked
-#: on every ``sᵀIs``) as for every other method; these matrices inherit their conditioning from the
-#: joints' (measured up to ~30 × the joint's ``cond`` near the limit: a point-mass tip), so a tighter
-#: limit here would refuse states the other methods accept.
+#: Backstop for the method's own 3×3 solves (7.38, 9.45, 7.54): singular only at ``cond ≥ 1/ε``, as
+#: they inherit the joints' conditioning (up to ~30×), which the joints' rule already decides.
 SOLVE_COND_LIMIT = 1e16
 
 
 def _cond(M) -> float:
-    """Cheap condition number ``‖M‖_F ‖M⁻¹‖_F`` of a small square matrix (between cond₂ and k cond₂); ``inf`` if singular."""
+    """Cheap ``‖M‖_F ‖M⁻¹‖_F`` of a small square matrix (cond₂ to k cond₂); ``inf`` if singular."""
     if M.shape == (3, 3):                       # adjugate and determinant on Python floats
         (a, b, c), (d, e, f), (g, h, k) = M.tolist()
         adj = (e * k - f * h, c * h - b * k, b * f - c * e,
@@ -57,9 +53,7 @@ def _cond(M) -> float:
         det = a * adj[0] + b * adj[3] + c * adj[6]
         if det == 0.0:
             return math.inf
-        n2 = a * a + b * b + c * c + d * d + e * e + f * f + g * g + h * h + k * k
-        m0, m1, m2, m3, m4, m5, m6, m7, m8 = adj
-        a2 = m0 * m0 + m1 * m1 + m2 * m2 + m3 * m3 + m4 * m4 + m5 * m5 + m6 * m6 + m7 * m7 + m8 * m8
+        n2, a2 = sum(x * x for x in (a, b, c, d, e, f, g, h, k)), sum(x * x for x in adj)
         cond = math.sqrt(n2 * a2) / abs(det)
         return cond if cond == cond else math.inf
     try:
@@ -84,7 +78,7 @@ def _checked_solve(M, B, what: str):
 
 
 def _siblings_loaded(art: ArticulatedInertias, tau, kappa, children, i, j, Lam_j, b_j):
-    """The parent's ``(Λ_j⁻¹, b_j)`` with the articulated inertias of ``i``'s siblings attached (thesis 9.45, corrected)."""
+    """The parent's ``(Λ_j⁻¹, b_j)`` with ``i``'s siblings' articulated inertias attached (thesis 9.45, corrected)."""
     sib = [k for k in children[j] if k != i]
     if not sib:
         return Lam_j, b_j
@@ -148,8 +142,7 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_poi
         P = _EYE3 - Si @ Ti.T                               # U R^T (6.75)
         j = parents[i]
         if j < 0:                                           # (7.31a, 7.31b): a_0 = 0
-            Lam[i] = G
-            b[i] = eta + P @ kappa[i]
+            Lam[i], b[i] = G, eta + P @ kappa[i]
         else:
             M, beta = _siblings_loaded(articulated, tau, kappa, children, i, j, Lam[j], b[j])
             X = _EYE3 + P @ M @ Ii
@@ -176,7 +169,7 @@ def articulated_mobility(model, q, qd=None, tau=None, f_ext=None) -> Articulated
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
-    >>> float(np.abs(articulated_mobility(chain_model(2, gravity=(0, 0)), [0.0, 0.0]).b).max())    # at rest
+    >>> float(np.abs(articulated_mobility(chain_model(2, gravity=(0, 0)), [0.0, 0.0]).b).max())
     0.0
     """
     return mobility_recursion(*_state_arrays(model, q, qd, tau, f_ext)[1:])

@@ -22,7 +22,8 @@ __all__ = ["ChainSplit", "split_acceleration", "split_force", "chain_split",
 
 def _split(force, Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next):
     """7.54 (``a_i``), or 7.56 (``force``: ``f_{i+1}``), with ``R Uᵀ = 1 - T sᵀ`` (7.8) and ``C = 1 + Λ_i⁻¹ R Uᵀ A``."""
-    Lam, b, A, d, kappa = (np.asarray(x, dtype=float) for x in (Lam_i, b_i, A_next, d_next, kappa_next))
+    Lam, b, A, d, kappa = (np.asarray(x, dtype=float) for x in (Lam_i, b_i, A_next, d_next,
+                                                                 kappa_next))
     T = np.asarray(T_next, dtype=float).reshape(3, -1)
     TQ = T @ np.asarray(Q_next, dtype=float).reshape(-1)
     P = _EYE3 - T @ np.asarray(s_next, dtype=float).reshape(3, -1).T
@@ -54,12 +55,11 @@ def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa
 
     Examples
     --------
-    A pinned unit point mass carrying a second one, pushed up: the second mass halves the acceleration.
-
     >>> from planargeo.screws.twists import inertia_matrix
     >>> A2, s2 = inertia_matrix(1.0, [1.0, 0.0], 1e-3), np.array([[0.0], [-1.0], [1.0]])
-    >>> args = (np.diag([0.0, 0.0, 1.0]), [0, 0, 1.0], A2, np.zeros(3), A2 @ s2 / (s2.T @ A2 @ s2), s2, [0.0], np.zeros(3))
-    >>> split_acceleration(*args).round(12)
+    >>> T2 = A2 @ s2 / (s2.T @ A2 @ s2)
+    >>> args = (np.diag([0.0, 0.0, 1.0]), [0, 0, 1.0], A2, np.zeros(3), T2, s2, [0.0], np.zeros(3))
+    >>> split_acceleration(*args).round(12)           # a second point mass halves it
     array([0. , 0. , 0.5])
     """
     return _split(False, Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next)
@@ -88,8 +88,9 @@ def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) 
     --------
     >>> from planargeo.screws.twists import inertia_matrix
     >>> A2, s2 = inertia_matrix(1.0, [1.0, 0.0], 1e-3), np.array([[0.0], [-1.0], [1.0]])
-    >>> args = (np.diag([0.0, 0.0, 1.0]), [0, 0, 1.0], A2, np.zeros(3), A2 @ s2 / (s2.T @ A2 @ s2), s2, [0.0], np.zeros(3))
-    >>> split_force(*args).round(12) + 0.0             # the masses of split_acceleration: half the push
+    >>> T2 = A2 @ s2 / (s2.T @ A2 @ s2)
+    >>> args = (np.diag([0.0, 0.0, 1.0]), [0, 0, 1.0], A2, np.zeros(3), T2, s2, [0.0], np.zeros(3))
+    >>> split_force(*args).round(12) + 0.0             # half the push
     array([0. , 0.5, 0.5])
     """
     return _split(True, Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next)
@@ -187,7 +188,7 @@ def mobility_split(model, q, qd=None, tau=None, f_ext=None) -> ChainSplit:
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
-    >>> mobility_split(chain_model(2, gravity=(0, 0)), [0.0, 0.0], [0.0, 0.0], [1.0, 0.0]).qdd.round(9)
+    >>> mobility_split(chain_model(2, gravity=(0, 0)), [0.0] * 2, [0.0] * 2, [1, 0]).qdd.round(9)
     array([ 1.71428571, -4.28571429])
     """
     return _chain_split(_state_arrays(model, q, qd, tau, f_ext))

@@ -24,8 +24,7 @@ __all__ = ["Compiled", "kernels_for", "evaluate", "check_finite", "warm", "cache
 _ARRAY = np.ndarray
 
 
-#: What :func:`kernels_for` returns: the kernels module, the model's tables, and the shapes of
-#: one state ``(nq,)`` and of one set of external wrenches ``(N, 3)``
+#: What :func:`kernels_for` returns: the kernels module, tables, the shapes ``(nq,)``, ``(N, 3)``
 Compiled = namedtuple("Compiled", "kernels tables state wrenches")
 
 
@@ -209,11 +208,6 @@ def cache_is_warm(kernels=None) -> bool:
     Returns
     -------
     bool
-
-    Examples
-    --------
-    >>> isinstance(cache_is_warm(), bool)
-    True
     """
     if kernels is None:
         from planargeo.algorithms import kernels
@@ -296,7 +290,8 @@ def main(argv=None) -> int:
     """
     if (sys.argv[1:] if argv is None else list(argv)) != ["--warm"]:
         print("usage: python -m planargeo.algorithms.compiled --warm\n"
-              "Compile (or load) every dynamics kernel signature into numba's cache ahead of time.", file=sys.stderr)
+              "Compile (or load) every dynamics kernel into numba's cache ahead of time.",
+              file=sys.stderr)
         return 2
     print("planargeo: compiling the dynamics kernels into numba's cache (once per install) ...", flush=True)
     t = time.perf_counter()

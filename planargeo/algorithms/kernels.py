@@ -36,10 +36,9 @@ inline = njit(cache=True, nogil=True, error_model="numpy", inline="always")
 #: Parameter entries the kernels' docstrings share (:func:`_doc`).
 _PARAMETERS = {"{tables}": """kind, parent : numpy.ndarray of int, shape (N,)
         Joint kind codes and parent indices (:func:`tables`).
-    body : numpy.ndarray, shape (N, 8)
-        Per body: joint placement ``(x, y, cos φ, sin φ)``, mass, centre of mass, inertia (:func:`tables`).
-    gravity : numpy.ndarray, shape (2,)
-        Gravity (m/s²).""", "{model}": """model : tuple
+    body, gravity : numpy.ndarray, shapes (N, 8), (2,)
+        Per body its joint placement ``(x, y, cos φ, sin φ)``, mass, centre of mass, inertia;
+        gravity (m/s²).""", "{model}": """model : tuple
         The model's :func:`tables`.
     q, qd : numpy.ndarray, shape (nq,)
         Joint positions and velocities (float64).""", "{scratch}": """fext : numpy.ndarray, shape (N, 3) or None
@@ -55,9 +54,10 @@ def _doc(f):
     return f
 
 
-#: Per-state arrays, one row per body at its joint point: ``origin`` ``o_i``, ``r = o_i - o_λ``, ``frame``
-#: (origin less ``o_i``, cos θ, sin θ), ``s``, ``v`` (3.32), ``kappa`` (3.33), ``I`` (then ``A``), ``p``
-#: (3.34; then ``d`` or ``f``), ``U = A s``, ``D = sᵀAs``, ``u = τ - sᵀ(Aκ + d)``, ``a`` (3.42, 2.18).
+#: Per-state arrays, one row per body at its joint point: ``origin`` ``o_i``, ``r = o_i - o_λ``,
+#: ``frame`` (origin less ``o_i``, cos θ, sin θ), ``s``, ``v`` (3.32), ``kappa`` (3.33), ``I`` (then
+#: ``A``), ``p`` (3.34; then ``d`` or ``f``), ``U = A s``, ``D = sᵀAs``, ``u = τ - sᵀ(Aκ + d)``,
+#: ``a`` (3.42, 2.18).
 Workspace = namedtuple("Workspace", "origin r frame s v kappa I p U D u a")
 
 
@@ -361,7 +361,7 @@ def newton_euler_state(model, q, qd, qdd, fext, w, tau):
     return OK if _finite(tau) else NOT_FINITE
 
 
-# -- entry points: the model's tables as separate arrays (cheaper to pass), then one state or a batch ----------------
+# -- entry points: the model's tables as separate arrays (cheaper to pass), one state or a batch ---
 @inline
 def _fits(kind, x, y, z, fext):
     """Whether ``x, y, z`` have the model's ``nq`` rows and ``fext`` (or None) is (N, 3): the one-state shapes."""
@@ -377,7 +377,7 @@ def _fits(kind, x, y, z, fext):
 @jit
 @_doc
 def dynamics_one(inverse, kind, parent, body, gravity, q, qd, z, fext):
-    """``q̈`` (forward, ``z = τ``) or ``τ`` (``inverse``, ``z = q̈``) of one state, or None if not :data:`OK` or misshapen.
+    """``q̈`` (forward, ``z = τ``) or ``τ`` (``inverse``, ``z = q̈``) of one state; None if not :data:`OK`.
 
     Parameters
     ----------
@@ -428,7 +428,7 @@ def singular_joint(kind, parent, body, gravity, q, qd, tau, fext):
 
 #: Per-block arrays, the block's states innermost (they vectorise); one row more than bodies, the
 #: last (parent -1) the ground at rest.  ``x, y, z, out`` (nq, BLOCK); ``A``, ``B`` upper triangles
-#: ``A00 A01 A02 A11 A12 A22``; ``c`` (3.39); ``sq = s q̇``; ``ok``: passed the quick singularity test.
+#: ``A00 A01 A02 A11 A12 A22``; ``c`` (3.39); ``sq = s q̇``; ``ok``: passed the quick singular test
 Columns = namedtuple("Columns", "x y z out origin r frame s sq v kappa A d U D u a c B ok")
 
 
@@ -634,7 +634,7 @@ def _block(inverse, model, x, y, z, fext, out, lo, hi):
 
 @jit
 def _range(inverse, model, x, y, z, fext, out, lo, hi):
-    """The states ``lo:hi``, forward a :data:`BLOCK` at a time (a failed block state by state); the first failure, or ``hi``."""
+    """The states ``lo:hi`` (forward: a :data:`BLOCK` at a time); the first failure, or ``hi``."""
     if inverse or hi - lo == 1:                     # (one state: its columns would cost more than the kernel)
         return _block(inverse, model, x, y, z, fext, out, lo, hi)
     w = columns(model[0].shape[0], x.shape[1], min(BLOCK, hi - lo))

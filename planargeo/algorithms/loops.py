@@ -73,7 +73,7 @@ class LoopSolution:
     >>> from planargeo.mechanics.contacts import Contact
     >>> from planargeo.mechanics.model import Body, Joint, Model
     >>> m = Model([Body(2.0, (0.0, 0.0), 0.5)], [Joint("plane")], [-1])
-    >>> pin = Contact("pin", 0, -1, point_a=(0.0, 0.0), point_b=(3.0, 1.0))     # at the centre of mass
+    >>> pin = Contact("pin", 0, -1, point_a=(0.0, 0.0), point_b=(3.0, 1.0))     # at its centre
     >>> loop_solve(m, [3.0, 1.0, 0.0], [0.0] * 3, [0.0] * 3, contacts=[pin]).xi.round(9) + 0.0
     array([ 0.  , -19.62])
     """
@@ -201,12 +201,13 @@ def joint_wrenches(parents, I, a, p, GtF=None) -> np.ndarray:
 
 def _reactions(model, cs, data, f, F) -> list:
     """The :class:`Reaction` list of one solved state: tree joints (``f_i``), then contacts (``-F_k`` on body a)."""
-    rows = [(f"f_{i + 1}", jt.name, jt.kind, i, model.parents[i], data.pose[i, :2].astype(float), w.copy())
-            for i, (jt, w) in enumerate(zip(model.joints, f.reshape(model.N, 3)))]
-    rows += [(f"F_{k + 1}", c.name, c.kind, c.a, c.b, np.asarray(world_point(data.pose, c.a, c.point_a), dtype=float),
-              -w) for k, (c, w) in enumerate(zip(cs, F.reshape(-1, 3)))]
-    return [Reaction(symbol, name, kind, body, other, P, w, float(w[2] + P[1] * w[0] - P[0] * w[1]))   # moment about P
-            for symbol, name, kind, body, other, P, w in rows]
+    rows = [(f"f_{i + 1}", jt.name, jt.kind, i, model.parents[i], data.pose[i, :2].astype(float),
+             w.copy()) for i, (jt, w) in enumerate(zip(model.joints, f.reshape(model.N, 3)))]
+    rows += [(f"F_{k + 1}", c.name, c.kind, c.a, c.b,
+              np.asarray(world_point(data.pose, c.a, c.point_a), dtype=float), -w)
+             for k, (c, w) in enumerate(zip(cs, F.reshape(-1, 3)))]
+    return [Reaction(symbol, name, kind, body, other, P, w, float(w[2] + P[1] * w[0] - P[0] * w[1]))
+            for symbol, name, kind, body, other, P, w in rows]          # the moment about P last
 
 
 @functools.lru_cache(maxsize=256)
@@ -248,11 +249,9 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
 
     Examples
     --------
-    A parallelogram four-bar (three unit links, the tip pinned at (1, 0)): ``φ̈ = -6/5 g cos φ``.
-
     >>> from planargeo.mechanics.contacts import Contact
     >>> from planargeo.mechanics.model import chain_model
-    >>> pin = Contact("pin", 2, -1, point_a=(1.0, 0.0), point_b=(1.0, 0.0))
+    >>> pin = Contact("pin", 2, -1, point_a=(1.0, 0.0), point_b=(1.0, 0.0))    # φ̈ = -6/5 g cos φ
     >>> sol = loop_solve(chain_model(3), [1.2, -1.2, 1.2 - np.pi], [1.0, -1.0, 1.0], [0.0] * 3, contacts=[pin])
     >>> bool(abs(sol.qdd[0] - (-6 / 5 * 9.81 * np.cos(1.2))) < 1e-12)
     True
@@ -394,11 +393,12 @@ def forward_dynamics_loops(model: Model, q, qd, tau, f_ext=None, contacts=None, 
                       model, q, qd, tau, f_ext)
 
 
-# -- independent reference: maximal coordinates + Lagrange multipliers -------------------------------
+# -- independent reference: maximal coordinates + Lagrange multipliers ----------------------------
 #: Each joint kind's constraints in the reference: its point on the parent's (``"on"``) or on a line
 #: through it (``"line"``), and whether the angle is kept.
-_JOINT_CONSTRAINTS = {"revolute": ("on", False), "prismatic": ("line", True), "revolute_prismatic": ("line", False),
-                      "twin_prismatic": (None, True), "fixed": ("on", True), "plane": (None, False)}
+_JOINT_CONSTRAINTS = {"revolute": ("on", False), "prismatic": ("line", True),
+                      "revolute_prismatic": ("line", False), "twin_prismatic": (None, True),
+                      "fixed": ("on", True), "plane": (None, False)}
 
 
 def _perp(v):
@@ -440,7 +440,7 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
     --------
     >>> from planargeo.mechanics.contacts import Contact
     >>> from planargeo.mechanics.model import chain_model
-    >>> pin = Contact("pin", 2, -1, point_a=(1.0, 0.0), point_b=(1.0, 0.0))         # the four-bar of loop_solve
+    >>> pin = Contact("pin", 2, -1, point_a=(1.0, 0.0), point_b=(1.0, 0.0))    # loop_solve's four-bar
     >>> ref = constrained_dynamics_lagrange(chain_model(3), [1.2, -1.2, 1.2 - np.pi], [1.0, -1.0, 1.0],
     ...                                     [0.0] * 3, contacts=[pin])
     >>> bool(abs(ref["qdd"][0] - (-6 / 5 * 9.81 * np.cos(1.2))) < 1e-10)
@@ -452,7 +452,7 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
     data = kinematics(model, q, qd, None)
     arr = model.arrays()
     m_, J_, com_b = arr["mass"], arr["J"], arr["com"]
-    c, th, w = data.com.copy(), data.pose[:, 2], data.v[:, 2]     # centres of mass, angles, angular speeds
+    c, th, w = data.com.copy(), data.pose[:, 2], data.v[:, 2]     # centres of mass, angles, spins
     cd = np.stack([data.v[:, 0] - w * c[:, 1], data.v[:, 1] + w * c[:, 0]], -1)
     n = 3 * N
     Mdiag = np.concatenate([[m_[i], m_[i], J_[i]] for i in range(N)])
@@ -484,7 +484,7 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
         Jp = np.zeros((2, n))
         if i < 0:
             return Jp, np.asarray(r_body, dtype=float), np.zeros(2), np.zeros(2)
-        rho = _rot(th[i]) @ (np.asarray(r_body, dtype=float) - com_b[i])    # from the centre of mass
+        rho = _rot(th[i]) @ (np.asarray(r_body, dtype=float) - com_b[i])    # from the com
         Jp[:, 3 * i:3 * i + 2] = np.eye(2)
         Jp[:, 3 * i + 2] = _perp(rho)
         return Jp, c[i] + rho, cd[i] + w[i] * _perp(rho), -w[i] ** 2 * rho

@@ -17,7 +17,7 @@ __all__ = ["acceleration_propagator", "force_propagator", "joint_accelerations",
            "ProjectiveWorkspace", "projective_solve", "projective_workspace", "forward_dynamics_projective"]
 
 
-# -- Propagators (thesis 6.113) ----------------------------------------------------------------------
+# -- Propagators (thesis 6.113) -------------------------------------------------------------------
 def _propagator_args(I, s, Q, T):
     I = np.asarray(I, dtype=float)
     s = np.asarray(s, dtype=float).reshape(3, -1)
@@ -50,7 +50,7 @@ def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.
     --------
     >>> from planargeo.screws.twists import inertia_matrix
     >>> acceleration_propagator(inertia_matrix(1.0, [1.0, 0.0], 0.0), [[0.0], [0.0], [1.0]], [0.0],
-    ...                         [0.0, -1.0, -1.0], np.zeros(3), np.zeros(3), np.zeros(3))   # pushed up: 1 rad/s²
+    ...                         [0.0, -1.0, -1.0], np.zeros(3), np.zeros(3), np.zeros(3))  # 1 rad/s²
     array([0., 0., 1.])
     """
     I, s, Q, T = _propagator_args(I, s, Q, T)
@@ -113,7 +113,7 @@ def joint_accelerations(T, a, kappa, parents) -> np.ndarray:
     return np.concatenate(qdd) if qdd else np.zeros(0)
 
 
-# -- Projective forward dynamics (thesis 6.101-6.110) ------------------------------------------------
+# -- Projective forward dynamics (thesis 6.101-6.110) ---------------------------------------------
 @dataclass
 class ProjectiveWorkspace:
     """Everything the projective solution computes, per body ``i`` (thesis 6.99-6.110; lists of arrays).
@@ -144,7 +144,7 @@ class ProjectiveWorkspace:
 
 
 def _accelerations(art, kappa, tau, parents):
-    """``psi_i`` (6.107) and ``a_i`` (6.108), base to tips: ``psi = (s^T A s)^-1 (Q - s^T d)``, ``U R^T = 1 - s T^T``."""
+    """``psi_i = (sᵀAs)⁻¹ (Q - sᵀd)`` (6.107) and ``a_i`` (6.108, ``U Rᵀ = 1 - s Tᵀ``), base to tips."""
     N = len(art.S)
     a, psi = np.zeros((N, 3)), [None] * N
     for i in range(N):
@@ -180,13 +180,14 @@ def projective_solve(I, S, kappa, p, tau, parents=None, points=None, joint_point
     --------
     >>> from planargeo.screws.twists import inertia_matrix
     >>> projective_solve([inertia_matrix(1.0, [1.0, 0.0], 0.0)], [np.array([[0.0], [0.0], [1.0]])],
-    ...                  np.zeros((1, 3)), np.zeros((1, 3)), [np.array([1.0])]).qdd    # unit torque, unit mass at 1
+    ...                  np.zeros((1, 3)), np.zeros((1, 3)), [np.array([1.0])]).qdd    # unit torque
     array([1.])
     """
     art = articulated_recursion(I, S, kappa, p, tau, parents, points, joint_points)
     N = len(art.S)
     parents = list(range(-1, N - 1)) if parents is None else [int(x) for x in parents]
-    kappa, tau = np.asarray(kappa, dtype=float), [np.asarray(x, dtype=float).reshape(-1) for x in tau]
+    kappa = np.asarray(kappa, dtype=float)
+    tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
     psi, a = _accelerations(art, kappa, tau, parents)
     A, d, T, R, U = art.A, art.d, art.T, art.R, art.U
     f, mu, gamma = np.zeros((N, 3)), [None] * N, [None] * N
@@ -214,7 +215,7 @@ def projective_workspace(model, q, qd=None, tau=None, f_ext=None) -> ProjectiveW
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
-    >>> projective_workspace(chain_model(2, gravity=(0, 0)), [0.0, 0.0], [0.0, 0.0], [1.0, 0.0]).qdd.round(9)
+    >>> projective_workspace(chain_model(2, gravity=(0, 0)), [0, 0], [0, 0], [1, 0]).qdd.round(9)
     array([ 1.71428571, -4.28571429])
     """
     return projective_solve(*_state_arrays(model, q, qd, tau, f_ext)[1:])
@@ -247,7 +248,7 @@ def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
-    >>> forward_dynamics_projective(chain_model(1), [0.0], [0.0], [0.0]).round(6)    # -g (L/2) / (L²/3)
+    >>> forward_dynamics_projective(chain_model(1), [0.0], [0.0], [0.0]).round(6)    # -3g / 2L
     array([-14.715])
     """
     return _per_state(_projective_qdd, model, q, qd, tau, f_ext)

@@ -37,7 +37,7 @@ def newton_euler(model: Model, q, qd, qdd, f_ext=None) -> Data:
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
-    >>> newton_euler(chain_model(1), [0.0], [0.0], [0.0]).f[0]    # a horizontal unit rod held: weight, m g L / 2
+    >>> newton_euler(chain_model(1), [0.0], [0.0], [0.0]).f[0]    # a unit rod held: m g, m g L / 2
     array([0.   , 9.81 , 4.905])
     """
     q, qd, _, f_ext, qdd, shape = check_state(model, q, qd, None, f_ext, qdd=qdd)
@@ -63,7 +63,7 @@ def newton_euler(model: Model, q, qd, qdd, f_ext=None) -> Data:
 
 
 def inverse_dynamics(model: Model, q, qd, qdd, f_ext=None, *, return_forces: bool = False):
-    """Joint forces/torques ``τ_i = s_iᵀ f_i`` that produce ``qdd`` (thesis 3.5, 3.10, 3.12, 2.18; recursive Newton-Euler).
+    """Joint forces/torques ``τ_i = s_iᵀ f_i`` that produce ``qdd`` (thesis 3.5, 3.10, 3.12, 2.18; RNEA).
 
     Parameters
     ----------

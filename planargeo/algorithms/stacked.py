@@ -24,7 +24,7 @@ __all__ = ["adjacency", "trunk", "blocks", "StackedSolution", "stacked_solve", "
            "articulation_matrix", "direct_accelerations", "forward_dynamics_stacked"]
 
 
-# -- topology ----------------------------------------------------------------------------------------
+# -- topology -------------------------------------------------------------------------------------
 def adjacency(parents) -> np.ndarray:
     """Adjacency matrix ``C`` of a tree (thesis Definition 41, 9.1, 9.2): ``C[i, j] = 1`` when ``parents[i] = j``.
 
@@ -44,7 +44,7 @@ def adjacency(parents) -> np.ndarray:
 
     Examples
     --------
-    >>> adjacency([-1, 0, 1]).astype(int)[2]                 # a serial chain (9.2): body 3's parent is body 2
+    >>> adjacency([-1, 0, 1]).astype(int)[2]                 # a serial chain (9.2)
     array([0, 1, 0])
     """
     try:
@@ -159,7 +159,7 @@ def joint_conditions(model: Model, q) -> np.ndarray:
     --------
     >>> from planargeo.mechanics.model import Body, Joint, Model
     >>> m = Model([Body(1.0), Body(1.0)], [Joint("revolute"), Joint("prismatic")], [-1, 0])
-    >>> round(float(joint_conditions(m, [0.0, 1e-3])[0]) * 1e-6, 3)        # a point mass slid 1e-3 out: √5 / x²
+    >>> round(float(joint_conditions(m, [0.0, 1e-3])[0]) * 1e-6, 3)        # slid x out: √5 / x²
     2.236
     """
     return articulated_recursion(*_state_arrays(model, q, None, None, None)[1:], check=False).cond
@@ -227,11 +227,9 @@ class StackedSolution:
 
     Examples
     --------
-    A unit link on a pin at the origin, released: ``μ = Uᵀ f`` (6.61b) is the pin force along x and y.
-
-    >>> from planargeo.mechanics.model import chain_model
+>>> from planargeo.mechanics.model import chain_model
     >>> sol = stacked_solve(chain_model(1), [0.0], [0.0], [0.0])
-    >>> (sol.U.T @ sol.f).round(6) + 0.0
+    >>> (sol.U.T @ sol.f).round(6) + 0.0       # a released link's pin force (μ = Uᵀ f)
     array([0.    , 2.4525])
     """
 
@@ -240,7 +238,7 @@ class StackedSolution:
 
     @functools.cached_property
     def articulated_mobilities(self):
-        """The tree's articulated mobilities ``Λ_i⁻¹``, ``b_i`` (7.38 with the siblings loaded, 9.45 corrected), built on first access."""
+        """The tree's articulated mobilities ``Λ_i⁻¹``, ``b_i`` (7.38 with the siblings, 9.45 corrected)."""
         return mobility_recursion(*self._args, articulated=self.articulated)
 
     @functools.cached_property
@@ -269,7 +267,7 @@ class StackedSolution:
         return 0.5 * (M + M.T)
 
     def mobility_times(self, X) -> np.ndarray:
-        """``Φ X`` without forming ``Φ`` or ``L``: ``Lᵀ (S Tᵀ A⁻¹ (L X))`` by an inward and an outward sweep (9.31, 9.34).
+        """``Φ X`` without forming ``Φ`` or ``L``: ``Lᵀ (S Tᵀ A⁻¹ (L X))`` by two sweeps (9.31, 9.34).
 
         Parameters
         ----------
@@ -328,7 +326,7 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     Examples
     --------
     >>> from planargeo.mechanics.model import chain_model
-    >>> stacked_solve(chain_model(1), [0.0], [0.0], [0.0]).qdd.round(6)      # rod from its end: -3g/(2L)
+    >>> stacked_solve(chain_model(1), [0.0], [0.0], [0.0]).qdd.round(6)      # -3g / 2L
     array([-14.715])
     """
     q, qd, tau, f_ext = _one_state(model, q, qd, tau, f_ext, "stacked_solve")
@@ -340,7 +338,8 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     ks = [si.shape[1] for si in art.S]
     three = [3] * N
     sol = StackedSolution()
-    sol.N, sol.parents, sol.articulated, sol.data, sol._args = N, tuple(model.parents), art, data, args[1:]
+    sol.N, sol.parents, sol.articulated, sol.data = N, tuple(model.parents), art, data
+    sol._args = args[1:]
     sol.C, sol.Dinv = _topology(tuple(model.parents))
     sol.S, sol.T = _blockdiag(art.S, three, ks), _blockdiag(art.T, three, ks)
     sol.P, sol.I, sol.A = (_blockdiag(x, three, three) for x in (art.P, list(data.I), art.A))
@@ -372,7 +371,7 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     return sol
 
 
-# -- direct solution (9.2) ---------------------------------------------------------------------------
+# -- direct solution (9.2) ------------------------------------------------------------------------
 def direct_accelerations(sol: StackedSolution, Lambda_inv, b) -> np.ndarray:
     """Direct solution of the body accelerations (thesis 9.48, corrected).
 
