@@ -18,30 +18,17 @@ RETURNS = {f"returns_{key}": f"Returns\n-------\nnumpy.ndarray{kind}, shape (...
 
 
 def entries(*tables):
-    """A decorator writing the entries of ``tables`` into a docstring where a line names them in braces.
+    """A decorator writing the entries of ``tables`` (and :data:`RETURNS`; a later entry wins) into a docstring.
 
-    Parameters
-    ----------
-    *tables : dict of str to str
-        Entries by name; a later table's entry replaces an earlier one's (and :data:`RETURNS`).
+    It fills the docstring of the function or class it decorates, and of the function it wraps.
 
-    Returns
-    -------
-    callable
-        The decorator; it returns the function (or class) itself, its docstring filled in
-        (and that of the function it wraps, if any).
-
-    Examples
-    --------
     >>> @entries({"x": "x : float\\n    A number."})
     ... def f(x):
     ...     '''Nothing.
     ...
-    ...     Parameters
-    ...     ----------
     ...     {x}
     ...     '''
-    >>> print(f.__doc__.splitlines()[4])
+    >>> print(f.__doc__.splitlines()[2])
         x : float
     """
     table = {name: text for t in (RETURNS, *tables) for name, text in t.items()}

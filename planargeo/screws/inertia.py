@@ -289,10 +289,8 @@ def drawable_conic(inertia) -> np.ndarray:
 
     Examples
     --------
-    >>> drawable_conic(inertia_matrix(2.0, [0.0, 0.0], 0.5))
-    array([[ 2. ,  0. ,  0. ],
-           [ 0. ,  2. ,  0. ],
-           [ 0. ,  0. , -0.5]])
+    >>> drawable_conic(inertia_matrix(2.0, [0.0, 0.0], 0.5)).diagonal()   # -m ρ² last
+    array([ 2. ,  2. , -0.5])
     """
     from planargeo.geometry.conics import drawable_conic as _drawable_conic
 

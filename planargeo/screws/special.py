@@ -137,7 +137,6 @@ def twist_case(v, rtol: float = 1e-12) -> SpecialCase:
     Parameters
     ----------
     v : Twist or array_like (3,)
-        The twist.
     {rtol}
 
     {case}
@@ -157,7 +156,6 @@ def wrench_case(f, rtol: float = 1e-12) -> SpecialCase:
     Parameters
     ----------
     f : Wrench or array_like (3,)
-        The wrench.
     {rtol}
 
     {case}
@@ -177,9 +175,7 @@ def pair_case(v, f, rtol: float = 1e-12) -> SpecialCase:
     Parameters
     ----------
     v : Twist or array_like (3,)
-        The twist.
     f : Wrench or array_like (3,)
-        The wrench.
     {rtol}
 
     {case}
@@ -207,7 +203,6 @@ def twists_case(v1, v2, rtol: float = 1e-12) -> SpecialCase:
     Parameters
     ----------
     v1, v2 : Twist or array_like (3,)
-        The twists.
     {rtol}
 
     {case}
@@ -241,7 +236,6 @@ def wrenches_case(f1, f2, rtol: float = 1e-12) -> SpecialCase:
     Parameters
     ----------
     f1, f2 : Wrench or array_like (3,)
-        The wrenches.
     {rtol}
 
     {case}

@@ -509,10 +509,8 @@ def inertia_at(inertia, point) -> np.ndarray:
 
     Examples
     --------
-    >>> inertia_at(inertia_matrix(2.0, [1.0, 0.0], 0.5), [1.0, 0.0])   # at the centre of mass
-    array([[2. , 0. , 0. ],
-           [0. , 2. , 0. ],
-           [0. , 0. , 0.5]])
+    >>> inertia_at(inertia_matrix(2.0, [1.0, 0.0], 0.5), [1.0, 0.0])[2]   # at the centre of mass: J
+    array([0. , 0. , 0.5])
     """
     I = _inertia_psd(inertia)
     _batches(inertia=(I, 2), point=(point, 1))
