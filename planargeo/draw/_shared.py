@@ -44,7 +44,7 @@ def bare_line(pic: Picture, id: str, l, **kw) -> dict:
 
 
 def inertia(pic: Picture, id: str, I, desc: str) -> dict:
-    """The inertia ``I`` as its circle of gyration (dashed, centre marked, no label); the element."""
+    """The inertia ``I`` as its circle of gyration (dashed, centre marked, no label)."""
     return added(pic.conic, id, I, role="inertia", symbol="I", label="", desc=desc)
 
 

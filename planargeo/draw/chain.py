@@ -146,9 +146,11 @@ def chain_picture(w, *, overlays: dict, view, split: dict | None = None, focus=N
             eid = f"{key}{i + 1}"
             kw = dict(role=role, color=color, symbol=symbol, desc=desc, label="" if faded else None)
             if kind == "point":
-                pic.point(eid, arr[i], glyph=key in ("v", "a"), glyph_scale=4.0 if key == "v" else 1.0, **kw)
+                pic.point(eid, arr[i], glyph=key in ("v", "a"),
+                          glyph_scale=4.0 if key == "v" else 1.0, **kw)
             elif kind == "line":
-                pic.line(eid, arr[i], anchor=anchors[per][i], dash=[1.5, 2.5] if key == "TQ" else None, **kw)
+                pic.line(eid, arr[i], anchor=anchors[per][i],
+                         dash=[1.5, 2.5] if key == "TQ" else None, **kw)
             else:
                 pic.conic(eid, arr[i], **kw)
             if faded:

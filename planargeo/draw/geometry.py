@@ -47,7 +47,7 @@ def _mat(x, name: str) -> np.ndarray:
 
 
 def point_xy(p) -> np.ndarray | None:
-    """Euclidean ``(x, y)`` of a homogeneous point, or None for an ideal one (or beyond the float range).
+    """Euclidean ``(x, y)`` of a homogeneous point; None for an ideal one (or beyond the floats).
 
     Parameters
     ----------
@@ -328,7 +328,7 @@ def conic_curves(C, box, geometry: dict | None = None) -> list[np.ndarray]:
 
 
 def arc_glyph(radius: float, ccw: bool, npts: int = 40) -> tuple[np.ndarray, np.ndarray]:
-    """A rotation glyph about the origin: a 270° arc and its head (in the units of ``radius``, y up).
+    """A rotation glyph about the origin: a 270° arc and its head (units of ``radius``, y up).
 
     Parameters
     ----------

@@ -42,7 +42,7 @@ def _pair(xy) -> str:
 
 
 def _frame(points, title: str, size, minimum: float = 1.0) -> Picture:
-    """A square view around the finite ``points`` and the marked origin, at least ``2 minimum`` wide."""
+    """A square view, at least ``2 minimum`` wide, around the finite ``points`` and the origin."""
     P = np.vstack([np.zeros((1, 2)), np.asarray(points, float).reshape(-1, 2)])
     P = P[np.all(np.isfinite(P), axis=1)]
     lo, hi = P.min(axis=0), P.max(axis=0)

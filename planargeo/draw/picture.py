@@ -250,7 +250,7 @@ class Picture:
     Parameters
     ----------
     view : (float, float, float, float)
-        ``(x0, x1, y0, y1)``: what must be in view (with ``equal``, widened to the plot area's shape).
+        ``(x0, x1, y0, y1)``: what must be in view (``equal``: widened to the plot area's shape).
     size : (int, int)
         Width and height in pixels.
     title : str

@@ -154,8 +154,9 @@ def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=No
     contacts = [to_xy(X) for X in K.contacts]
     both = f"{pair(contacts[0], 3)} and {pair(contacts[1], 3)}"
     out = {"construction": K, "conic": _conic(pic, prefix + "C", C)}
-    out["tangents"] = [bare_line(pic, f"{prefix}tangent {k + 1}", t, role="construct", symbol=f"T{k + 1}",
-                                 desc=f"tangent {k + 1} from P to C (5.38–5.39): touches C at {pair(xy, 3)}")
+    out["tangents"] = [bare_line(pic, f"{prefix}tangent {k + 1}", t, role="construct",
+                                 symbol=f"T{k + 1}", desc=f"tangent {k + 1} from P to C "
+                                 f"(5.38–5.39): touches C at {pair(xy, 3)}")
                        for k, (t, xy) in enumerate(zip(K.tangents, contacts))]
     out["contacts"] = added(pic.marks, prefix + "contacts", contacts, role="construct", size=3.5 * PX_PER_PT,
                             color=COLORS["construct"], z=5, symbol="contacts",
@@ -249,11 +250,14 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
     out = {"construction": K, "conic": _conic(pic, prefix + "C", C)}
     ends = [[to_xy(X) for X in K.chord_points[k]] for k in range(2)]
     out["chords"] = [bare_line(pic, f"{prefix}chord {k + 1}", K.lines[k], role="construct",
-                               symbol=f"chord {k + 1}", desc=f"chord {k + 1} through P (5.36, step 1): cuts "
-                               f"C at {pair(ends[k][0], 3)} and {pair(ends[k][1], 3)}") for k in range(2)]
-    out["tangents"] = [bare_line(pic, f"{prefix}tangent {k + 1}.{j + 1}", K.tangents[k, j], role="construct",
-                                 width=0.6 * PX_PER_PT, symbol=f"tangent {k + 1}.{j + 1}",
-                                 desc=f"tangent to C at the end {pair(ends[k][j], 3)} of chord {k + 1} (5.38–5.39)")
+                               symbol=f"chord {k + 1}",
+                               desc=f"chord {k + 1} through P (5.36, step 1): "
+                                    f"cuts C at {pair(ends[k][0], 3)} and {pair(ends[k][1], 3)}")
+                     for k in range(2)]
+    out["tangents"] = [bare_line(pic, f"{prefix}tangent {k + 1}.{j + 1}", K.tangents[k, j],
+                                 role="construct", width=0.6 * PX_PER_PT,
+                                 symbol=f"tangent {k + 1}.{j + 1}", desc=f"tangent to C at the end "
+                                 f"{pair(ends[k][j], 3)} of chord {k + 1} (5.38–5.39)")
                        for k in range(2) for j in range(2)]
     pts = [xy for pair_ in ends for xy in pair_]
     out["chord_points"] = added(pic.marks, prefix + "chord points", pts, role="construct", size=3.0 * PX_PER_PT,

@@ -120,7 +120,8 @@ def draw_picture(pic: dict, ax=None) -> list:
                 nrm = np.array([-u[1], u[0]])
                 tip = np.array([dx, dy])
                 shaft = np.array([[0.0, 0.0], tip - u * 0.8 * hp])
-                tri = np.array([tip, tip - u * hp + nrm * 0.35 * hp, tip - u * hp - nrm * 0.35 * hp])
+                tri = np.array([tip, tip - u * hp + nrm * 0.35 * hp,
+                                tip - u * hp - nrm * 0.35 * hp])
                 to_data = np.array([1.0 / kx, 1.0 / ky])
                 arts += ax.plot(part["x"] + shaft[:, 0] * to_data[0],
                                 part["y"] + shaft[:, 1] * to_data[1],

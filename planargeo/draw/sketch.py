@@ -38,15 +38,16 @@ __all__ = ["panel", "fit_box", "show", "label", "segment", "dimension", "body_wo
 
 #: The shared docstring entries, what the two-point elements raise, and the entries of several
 #: mechanism and split functions, written once
-_ENTRIES = {**ENTRIES,
-            "distinct": "Raises\n------\nInputError\n    ``p`` and ``q`` coincide or are not finite points.",
-            "model": "model : planargeo.mechanics.model.Model\n    The model.\n"
-                     "data : planargeo.mechanics.model.Data\n    Its kinematics at the state to draw.",
-            "pose": "pose : array_like (N, 3)\n    The bodies' poses.",
-            "width": "width : float\n    Width of the default rounded links.",
-            "scale": "scale : float\n    Arrow length per unit force (data units).",
-            "avoid": "avoid : shapely geometry, optional\n    What the arrows keep clear of (e.g. the bodies).\n"
-                     "clearance : float\n    Free distance around ``avoid`` and earlier arrows (data units)."}
+_ENTRIES = {
+    **ENTRIES,
+    "distinct": "Raises\n------\nInputError\n    ``p`` and ``q`` coincide or are not finite.",
+    "model": "model : planargeo.mechanics.model.Model\n    The model.\n"
+             "data : planargeo.mechanics.model.Data\n    Its kinematics at the state to draw.",
+    "pose": "pose : array_like (N, 3)\n    The bodies' poses.",
+    "width": "width : float\n    Width of the default rounded links.",
+    "scale": "scale : float\n    Arrow length per unit force (data units).",
+    "avoid": "avoid : shapely geometry, optional\n    What the arrows keep clear of (the bodies).\n"
+             "clearance : float\n    Free distance around ``avoid`` and earlier arrows."}
 documented = entries(_ENTRIES)
 
 #: outline colour of bodies and body labels
@@ -216,7 +217,7 @@ def show(pic: Picture, ax=None) -> list:
 def label(pic: Picture, id: str, xy, text: str, *, offset=(5, 5), ha: str = "left",
           va: str = "bottom", role: str = "text", color=None, symbol: str = "", desc: str = "",
           fixed: bool = False) -> dict:
-    """A text at the data point ``xy``, moved by ``offset`` points (the placer may move it unless ``fixed``).
+    """A text at the data point ``xy``, moved by ``offset`` points (placed, unless ``fixed``).
 
     Parameters
     ----------
@@ -487,7 +488,7 @@ def _polygons(shape):
 @documented
 def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alpha: float = 0.35,
          edgecolor: str = BODY_EDGE, z: int = 1, com=None, symbol: str = "", desc: str = "") -> dict:
-    """A body: a filled polygon, its holes white (``id + ":holes"``), its centre of mass marked (``id + ":com"``).
+    """A body: a filled polygon, holes white (``id + ":holes"``), centre of mass (``id + ":com"``).
 
     Parameters
     ----------
@@ -647,7 +648,7 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.8, angle: float = 0.0,
 @documented
 def slider(pic: Picture, id: str, xy, direction, *, size=(0.35, 0.2), track: float = 1.6,
            z: int = 3, desc: str = "a prismatic joint") -> dict:
-    """A prismatic joint: a block on a hatched track (:func:`ground`, ``id + ":track"``) along ``direction``.
+    """A prismatic joint: a block on a hatched track (``id + ":track"``) along ``direction``.
 
     Parameters
     ----------
@@ -735,7 +736,7 @@ def frame(pic: Picture, id: str, origin, *, angle: float = 0.0, length: float = 
     Examples
     --------
     >>> pic = Picture((-1, 1, -1, 1), size=(100, 100), ticks=False, margin=(0, 0, 0, 0))
-    >>> tip = frame(pic, "F", (0.0, 0.0), angle=np.pi / 2, length=0.5)["parts"][1]   # the first head
+    >>> tip = frame(pic, "F", (0.0, 0.0), angle=np.pi / 2, length=0.5)["parts"][1]   # 1st head
     >>> round(tip["x"], 9), round(tip["y"] + tip["dy"] / 50, 9), round(tip["dx"], 9)
     (0.0, 0.5, 0.0)
     """
@@ -895,7 +896,7 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
 
 @documented
 def slider_guide(contact, pose, body_shape=None, *, clearance: float = 0.04, margin=None):
-    """The guide of a slider contact in world coordinates: the line through ``point_b`` along ``direction`` (9.83).
+    """The guide of a slider contact: the world line through ``point_b`` along ``direction`` (9.83).
 
     Its walls sit ``clearance`` outside the drawn body a and span its extent along the guide.
 
@@ -979,7 +980,8 @@ def contact(pic: Picture, id: str, contact, pose, *, body_shape=None, size: floa
     >>> from planargeo.mechanics.contacts import Contact
     >>> pic = Picture((-1, 1, -1, 1), size=(100, 100), ticks=False, margin=(0, 0, 0, 0))
     >>> c = Contact("pin", 0, -1, point_a=(0.5, 0.0))
-    >>> np.round(contact(pic, "c", c, np.array([[0.0, 0.0, 0.0]]), size=0.2)[0]["parts"][0]["xy"], 9).tolist()
+    >>> el = contact(pic, "c", c, np.array([[0.0, 0.0, 0.0]]), size=0.2)[0]
+    >>> np.round(el["parts"][0]["xy"], 9).tolist()
     [[0.4, -0.1], [0.6, -0.1], [0.6, 0.1], [0.4, 0.1]]
     """
     from planargeo.mechanics.contacts import world_point
@@ -1174,8 +1176,9 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
     >>> from planargeo.screws.twists import inertia_matrix
     >>> pic = Picture((-1, 3, -2, 2), size=(200, 200), ticks=False, margin=(0, 0, 0, 0))
     >>> j = revolute([0.0, 0.0])
-    >>> out, (Q, mu, TQ, Rmu) = joint_split(pic, "j1", j.s, j.R, inertia_matrix(2.0, [1.0, 0.0], 0.3),
-    ...                                     [0.0, 1.0, 2.0], name="1", anchor=[0.0, 0.0])
+    >>> A = inertia_matrix(2.0, [1.0, 0.0], 0.3)
+    >>> out, (Q, mu, TQ, Rmu) = joint_split(pic, "j1", j.s, j.R, A, [0.0, 1.0, 2.0], name="1",
+    ...                                     anchor=[0.0, 0.0])
     >>> bool(np.allclose(TQ + Rmu, [0.0, 1.0, 2.0])), sorted(out)
     (True, ['active', 'f', 'reaction'])
     """

@@ -108,8 +108,8 @@ def _line(pic: Picture, id: str, l, text, *, role: str, symbol: str, desc: str, 
           aims: dict, key: str) -> dict:
     """A line without a sense arrow, labelled beside it near ``anchor`` (a couple: at its glyph)."""
     finite = math.hypot(float(l[0]), float(l[1])) > 0.0
-    el = added(pic.line, id, l, role=role, symbol=symbol, desc=desc, label="" if finite else text or "",
-               arrow=False)
+    el = added(pic.line, id, l, role=role, symbol=symbol, desc=desc, arrow=False,
+               label="" if finite else text or "")
     if finite:
         _label_beside(pic, el, plain_text(text or ""), anchor, side)
     _aim(el, aims, key)
@@ -196,8 +196,9 @@ def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, an
     keys = {"s": _keys("s", k), "T": _keys("T", k), "R": _keys("R", r),
             "P": _keys("AiR" if inv else "U", r)}
     tex = {"s": "s", "T": "T", "R": "R", "P": "A^{-1}R" if inv else "U"}
-    default = {n: _tex(tex[key], X.shape[1], j) for key, X in (("s", s), ("T", T), ("R", R), ("P", pts))
-               for j, n in enumerate(keys[key])}
+    spaces = (("s", s), ("T", T), ("R", R), ("P", pts))
+    default = {n: _tex(tex[key], X.shape[1], j)
+               for key, X in spaces for j, n in enumerate(keys[key])}
     labels = {**default, **dict(labels or {})}
     anchors, sides, aims = dict(anchors or {}), dict(sides or {}), dict(aims or {})
     out: dict = {}
@@ -509,10 +510,10 @@ def projective_step(pic: Picture, s, R, A, a_prev, a, kappa, *,
             ("s", dec.s[:, 0], "twist", f"the joint, its unit twist (6.1): {where(dec.s[:, 0])}"),
             ("a_prev", a_prev, "accel", f"acceleration of the parent, ψ = Tᵀa = {num(psi_prev[0])} "
                                         f"rad/s² along the joint (6.100): {_accel_words(a_prev)}"),
-            ("a", a, "accel", f"acceleration of the body, ψ = Tᵀa = {num(psi[0])} rad/s² along the "
-                              f"joint, q̈ = ψᵢ − Tᵀ(aᵢ₋₁ + κ) = {num(qdd[0])} rad/s² (6.100, 6.110): "
-                              + _accel_words(a)))):
-        out[key] = _point(pic, prefix + key, p, names[k + 1], role=role, symbol=names[k + 1], desc=desc,
-                          glyph=key != "s", aims=aims, key=key)
+            ("a", a, "accel", f"acceleration of the body, ψ = Tᵀa = {num(psi[0])} rad/s² along "
+                              f"the joint, q̈ = ψᵢ − Tᵀ(aᵢ₋₁ + κ) = {num(qdd[0])} rad/s² "
+                              f"(6.100, 6.110): {_accel_words(a)}"))):
+        out[key] = _point(pic, prefix + key, p, names[k + 1], role=role, symbol=names[k + 1],
+                          desc=desc, glyph=key != "s", aims=aims, key=key)
     out["values"] = {"T": T, "psi": psi, "psi_prev": psi_prev, "qdd": qdd}
     return out

@@ -84,7 +84,8 @@ EXPLORER_MIN_WIDTH_PX = 560
 
 #: Fixed rcParams: fonts, sizes (all :data:`LABEL_PT`) and SVG determinism (column width ≈ 3.4 in).
 RC = {"font.family": "DejaVu Sans", "font.size": LABEL_PT, "axes.titlesize": TITLE_PT,
-      **{k: LABEL_PT for k in ("axes.labelsize", "legend.fontsize", "xtick.labelsize", "ytick.labelsize")},
+      "axes.labelsize": LABEL_PT, "legend.fontsize": LABEL_PT, "xtick.labelsize": LABEL_PT,
+      "ytick.labelsize": LABEL_PT,
       "lines.linewidth": 1.3, "legend.frameon": False, "figure.dpi": 100, "savefig.dpi": 100,
       "svg.hashsalt": "planargeo", "svg.fonttype": "path", "svg.id": None, "path.simplify": False,
       "axes.prop_cycle": None}  # the cycle is filled in by _rc

@@ -33,9 +33,10 @@ __all__ = ["twist_sum", "wrench_sum", "velocity_step", "acceleration_step", "new
 _SUM_POINT_PX = SUM["point"]["markersize"] * PX_PER_PT
 _SUM_LINE_PX = SUM["line"]["linewidth"] * PX_PER_PT
 documented = entries(ENTRIES, {
-    "toward": "toward : tuple of (float, float) or None\n    Per label, the pixel direction (y up) in "
-              "which it is put first (None: automatic).",
-    "scale": "scale : float or None\n    Force arrow length per unit force (data units); None: no arrows."})
+    "toward": "toward : tuple of (float, float) or None\n    Per label, the pixel direction (y up) "
+              "in which it is put first (None: automatic).",
+    "scale": "scale : float or None\n    Force arrow length per unit force (data units); None: "
+             "no arrows."})
 
 
 # --------------------------------------------------------------------------- checks and words
@@ -109,7 +110,7 @@ def _lever(pic: Picture, id: str, p, q, *, desc: str, width: float | None = None
 def _wrench(pic: Picture, id: str, f, *, role: str, label: str, desc: str, scale, anchor,
             emphasis: bool = False, toward=None, couples: list | None = None,
             corner: str = "right") -> dict | None:
-    """A wrench: its line with a force arrow ``scale |f|`` long (None: no arrow) at ``anchor``'s foot.
+    """A wrench: its line, a force arrow ``scale |f|`` long (None: none) at ``anchor``'s foot.
 
     A couple is the glyph in the upper ``corner``, a row lower per couple already there
     (``couples``); a zero wrench draws nothing (None).
@@ -242,7 +243,8 @@ def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), le
             out["lever"] = el
     auto = _label_sides(pic, v1, v2)
     toward = [t if t is not None else a for t, a in zip(toward, auto)]
-    for k, (name, v, what) in enumerate((("v1", v1, "twist {} (4.10)"), ("v2", v2, "twist {} (4.10)"),
+    for k, (name, v, what) in enumerate((("v1", v1, "twist {} (4.10)"),
+                                         ("v2", v2, "twist {} (4.10)"),
                                          ("v3", v3, "sum {} (4.11–4.13)"))):
         out[name] = _pole(pic, prefix + name, v, role=role, label=labels[k], toward=toward[k],
                           glyph_scale=glyph_scale, emphasis=name == "v3",
@@ -556,8 +558,8 @@ def newton_euler(pic, I, a, v, *, scale=None,
     out = {}
     if inertia:
         out["inertia"] = inertia_conic(pic, prefix + "inertia", I,
-                                       f"inertia I (4.58) as its circle of gyration: m = {num(mass(I))} kg, "
-                                       f"centre of mass at {pair(c)} m")
+                                       f"inertia I (4.58) as its circle of gyration: "
+                                       f"m = {num(mass(I))} kg, centre of mass at {pair(c)} m")
     out["v"] = _pole(pic, prefix + "v", v, role="twist", label=labels[0], toward=toward[0],
                      desc=f"velocity {syms[0]} (4.10): {_pole_words(v)}")
     out["a"] = _pole(pic, prefix + "a", a, role="accel", label=labels[1], toward=toward[1],
