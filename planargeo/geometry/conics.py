@@ -1,11 +1,9 @@
 """Conics as symmetric 3×3 matrices: polarity, classification, constructions (thesis 5.2).
 
-A conic ``C`` in the package's homogeneous coordinates has the points ``Q @ C @ Q == 0``
-(5.38); it maps a point to its polar ``C p`` (5.36) and a line to its pole ``C⁻¹ l`` (5.37).
-An inertia is an imaginary (definite) conic (5.4).  Functions broadcast; tolerances are
-relative ``rtol`` arguments, used only where a decision is numerical.  Arguments are scaled
-exactly by powers of two where a product could overflow; a result beyond double precision
-raises :class:`~planargeo.errors.NumericOverflowError`.
+A conic ``C`` has the points ``Q @ C @ Q == 0`` (5.38) and maps a point to its polar ``C p``
+(5.36), a line to its pole ``C⁻¹ l`` (5.37); an inertia is an imaginary conic (5.4).  Functions
+broadcast; tolerances are relative ``rtol`` arguments; arguments are rescaled exactly where a
+product could overflow.
 """
 from __future__ import annotations
 
@@ -926,11 +924,10 @@ def _special(x, C, Q, what: str, e) -> np.ndarray:
 # --------------------------------------------------------------------------- drawing support
 @_shared
 def drawable_conic(C) -> np.ndarray:
-    """A real conic that shows an imaginary one (thesis 10.2.3); real conics unchanged.
+    """A real conic that shows an imaginary one (thesis 10.2.3): ``C - 2 k e eᵀ``; real conics unchanged.
 
-    ``C' = C - 2 k e eᵀ`` with ``k = 1 / (C⁻¹)[2, 2]`` and ``e = [0, 0, 1]`` (``C`` made positive):
-    the sign of the homogeneous part flipped in the centred frame.  For an inertia it is the
-    circle of gyration; polars with respect to ``C'`` are those of ``C`` reflected through the centre.
+    ``k = 1 / (C⁻¹)[2, 2]``, ``e = [0, 0, 1]``: for an inertia, the circle of gyration; its polars are
+    those of ``C`` reflected through the centre.
 
     Parameters
     ----------

@@ -1,10 +1,7 @@
 """Thin classes over the array functions: :class:`Point`, :class:`Line`, :class:`Conic` (thesis ch. 5).
 
-Each holds one read-only array (``[y, -x, w]``, ``[fx, fy, tz]``, a symmetric 3×3), validated;
-the mathematics lives in :mod:`~planargeo.geometry.projective` and :mod:`~planargeo.geometry.conics`,
-whose functions also broadcast over batches.  Equality is projective (proportional arrays, up
-to 1e-12), so the classes are not hashable.  ``p ^ q`` is the join, ``l ^ m`` the meet,
-``p @ l`` the incidence form.
+Each holds one validated read-only array; equality is projective (proportional arrays), so they
+are not hashable.  ``p ^ q`` is the join, ``l ^ m`` the meet, ``p @ l`` the incidence form.
 """
 from __future__ import annotations
 

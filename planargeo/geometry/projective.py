@@ -1,12 +1,10 @@
 """Points and lines of the projective plane as arrays (thesis chapter 5).
 
 The thesis's alternative homogeneous coordinates (5.47-5.56) are screw coordinates: a point
-``(x, y)`` is ``[y, -x, 1]``, the unit rotation about it (5.51), with weight ``w = p[2]``
-(``w = 0``: a point at infinity, a translation); a line is a wrench ``[fx, fy, tz]`` along it
-(5.56), ``[0, 0, 1]`` the line at infinity; incidence is ``p @ l == 0`` (5.24).  Ideal
-elements are ordinary values, decided by exact zeros.  :func:`join` and :func:`meet` refuse
-nearly coincident inputs past :data:`planargeo.errors.COND_LIMIT`.  Functions broadcast; vectors
-whose products could overflow are rescaled exactly (:func:`_fit`), and a result beyond double
+``(x, y)`` is ``[y, -x, 1]`` (5.51), weight ``w = 0`` at infinity; a line is a wrench
+``[fx, fy, tz]`` (5.56), ``[0, 0, 1]`` the line at infinity; incidence is ``p @ l == 0`` (5.24).
+Ideal elements are ordinary values, decided by exact zeros.  Functions broadcast; vectors are
+rescaled exactly where products could overflow (:func:`_fit`), and a result beyond double
 precision raises :class:`~planargeo.errors.NumericOverflowError`.
 """
 from __future__ import annotations
@@ -415,10 +413,7 @@ def foot_point(l) -> np.ndarray:
 # --------------------------------------------------------------------------- join / meet
 @_shared
 def cross_cond(a, b) -> np.ndarray:
-    """Condition number ``κ = |a| |b| / |a × b|`` of :func:`join` and :func:`meet`.
-
-    One over the sine of the angle between ``a`` and ``b``; the relative error of ``a × b`` is at
-    most about ``ε κ``; ``inf`` for dependent vectors.
+    """Condition number ``κ = |a| |b| / |a × b|`` of :func:`join` and :func:`meet`: ``a × b`` is good to ``ε κ``.
 
     Parameters
     ----------

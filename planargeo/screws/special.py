@@ -1,18 +1,9 @@
 """Special cases of twists, wrenches and their pairs, named (thesis 4.2, 4.4, 5.69, 10.2.4).
 
-A twist is a point and a wrench a line (5.51, 5.56), so the special cases of mechanics are
-special positions of projective geometry (:data:`CASES` names them, with their equations).
-Tests use the homogeneous coordinates themselves, so a pole or line dragged to infinity passes
-through the ideal element without a jump; a quantity counts as zero when at most ``rtol``
-times the size of what it is computed from.  :func:`horizon_point` and :func:`horizon_handle`
-give a drag handle that can reach infinity (the plane seen as a disc whose rim is the line at
-infinity).
-
-Examples
---------
->>> from planargeo.screws.twists import Twist, Wrench
->>> pair_case(Twist.rotation([1.0, 0.0]), Wrench.force([1.0, 5.0], [0.0, 1.0])).name   # pole on x = 1
-'workless'
+The special cases of mechanics are special positions of projective geometry (:data:`CASES`).
+Tests use the homogeneous coordinates themselves, so an element dragged to infinity passes
+through the ideal element without a jump; a quantity counts as zero when at most ``rtol`` times
+the size of what it comes from.  :func:`horizon_point` gives drag handles that reach infinity.
 """
 from __future__ import annotations
 

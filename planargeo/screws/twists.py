@@ -1,10 +1,7 @@
-"""Planar screws as arrays: twists ``[vx, vy, ω]`` and wrenches ``[fx, fy, τz]`` (thesis ch. 1, 4).
+"""Planar screws as arrays (thesis ch. 1, 4): twists ``[vx, vy, ω]`` are points, wrenches ``[fx, fy, τz]`` lines.
 
-Quantities are given at a reference point (the origin by default), linear part first, and
-broadcast over leading dimensions.  A twist *is* a point (its pole, 5.51) and a wrench a line
-(its line of action, 5.56) of :mod:`planargeo.geometry.projective`.  A result beyond double
-precision raises :class:`~planargeo.errors.NumericOverflowError`; powers and energies that
-overflow only in an intermediate step are evaluated rescaled.
+Quantities are given at the origin unless said otherwise and broadcast over leading dimensions;
+a result beyond double precision raises :class:`~planargeo.errors.NumericOverflowError`.
 """
 from __future__ import annotations
 
