@@ -23,7 +23,9 @@ _EQ_TOL = 1e-12
 
 #: Docstring entries the classes share, said once (a line ``{point}`` in a docstring).
 _shared = entries({"point": "point : Point or array_like, shape (3,)\n    A Point or homogeneous point array.",
-                   "line": "line : Line or array_like, shape (3,)\n    A Line or homogeneous line array."},
+                   "line": "line : Line or array_like, shape (3,)\n    A Line or homogeneous line array.",
+                   "other": "other : Point, Line or array_like, shape (3,)\n    The element of the dual kind.",
+                   "not_pair": "Raises\n------\nShapeError\n    A pair of coordinates not of shape (2,)."},
                   {f"returns_{kind.lower()}": f"Returns\n-------\n{kind}" for kind in ("Point", "Line", "Conic")})
 
 
@@ -112,13 +114,13 @@ class _PointOrLine(_Homogeneous):
         theirs = other.array if isinstance(other, self._dual) else _vec(other, name)
         return (self._a, theirs) if self._dual is Line else (theirs, self._a)
 
+    @_shared
     def incidence(self, other) -> float:
         """The form ``p @ l`` with ``other`` of the dual kind (thesis 5.23): zero iff the point is on the line.
 
         Parameters
         ----------
-        other : Point, Line or array_like, shape (3,)
-            The element of the dual kind.
+        {other}
 
         Returns
         -------
@@ -131,13 +133,13 @@ class _PointOrLine(_Homogeneous):
         """
         return float(_p.incidence(*self._pair(other)))
 
+    @_shared
     def _signed_distance(self, other) -> float:
         """Signed distance (m) of the point from the line, positive on its left (thesis 5.23); ``±inf`` or NaN if ideal.
 
         Parameters
         ----------
-        other : Point, Line or array_like, shape (3,)
-            The element of the dual kind.
+        {other}
 
         Returns
         -------
@@ -198,10 +200,7 @@ class Point(_PointOrLine):
 
         {returns_point}
 
-        Raises
-        ------
-        ShapeError
-            The pair given alone is not of shape (2,).
+        {not_pair}
 
         Examples
         --------
@@ -222,10 +221,7 @@ class Point(_PointOrLine):
 
         {returns_point}
 
-        Raises
-        ------
-        ShapeError
-            ``direction`` not of shape (2,).
+        {not_pair}
 
         Examples
         --------
@@ -343,10 +339,7 @@ class Line(_PointOrLine):
 
         {returns_line}
 
-        Raises
-        ------
-        ShapeError
-            ``point`` given as coordinates not of shape (2,).
+        {not_pair}
 
         Examples
         --------
