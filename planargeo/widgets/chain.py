@@ -596,7 +596,7 @@ class ChainExplorer(Explorer):
         return min(motion.reached, d)
 
     # -- drawing ---------------------------------------------------------------------
-    def _view(self, st, focus=None) -> tuple[float, float, float, float]:
+    def _view(self, st) -> tuple[float, float, float, float]:
         """The view: the whole chain's reach about the ground origin (with or without a focus)."""
         model, w = st["model"], st["w"]
         chain = np.vstack([np.asarray(w.origin[0], float)[None, :], w.pose[:, :2], self._state_ends(st)])
