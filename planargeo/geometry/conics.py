@@ -129,7 +129,7 @@ def _nline(l):
 # --------------------------------------------------------------------------- polarity
 @_shared
 def polar(C, p) -> np.ndarray:
-    """Polar line ``C p`` of point ``p`` (thesis 5.36); for an inertia, the axis of percussion (5.64).
+    """Polar line ``C p`` of point ``p`` (thesis 5.36); for an inertia, the axis of percussion (5.64-5.68).
 
     Parameters
     ----------
@@ -1061,7 +1061,7 @@ def _affine_frame(C, rtol):
 @overflow_checked("A or t")
 @_shared
 def conic_from_affine(kind: str, A, t) -> np.ndarray:
-    """The image of the unit curve ``kind`` under ``x = A u + t`` (inverse of :func:`affine_frame`; 5.47).
+    """The image of the unit curve ``kind`` under ``x = A u + t`` (inverse of :func:`affine_frame`, thesis 5.47).
 
     Parameters
     ----------

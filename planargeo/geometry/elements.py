@@ -470,7 +470,7 @@ class Conic(_Homogeneous):
 
     @_shared
     def polar(self, point) -> Line:
-        """The polar line ``C p`` of ``point`` (thesis 5.36).
+        """The polar line ``C p`` of ``point`` (thesis 5.36, 5.64).
 
         Parameters
         ----------
@@ -523,7 +523,7 @@ class Conic(_Homogeneous):
 
     @property
     def centre(self) -> Point:
-        """The centre, the pole of the line at infinity (thesis 5.2.2); ideal for a parabola.
+        """The centre, the pole of the line at infinity (thesis 5.2.2, 4.58); ideal for a parabola.
 
         Examples
         --------

@@ -187,7 +187,7 @@ def normalize_line(l) -> np.ndarray:
 
 @_shared
 def normalize(x, kind: str | None = None) -> np.ndarray:
-    """Base coordinates of points or lines: :func:`normalize_point` or :func:`normalize_line` by ``kind``.
+    """Base coordinates of points or lines by ``kind`` (thesis 5.49, 5.55; :func:`normalize_point`, :func:`normalize_line`).
 
     Parameters
     ----------
@@ -558,7 +558,7 @@ def meet(l, m, cond_limit: float = COND_LIMIT) -> np.ndarray:
 
 @_shared
 def incidence(p, l) -> np.ndarray:
-    """The form ``p @ l`` (thesis 5.23): zero iff ``p`` lies on ``l`` (5.24); the power of twist on wrench.
+    """The form ``p @ l`` (thesis 5.23): zero iff ``p`` lies on ``l`` (5.24); a power (5.69).
 
     Parameters
     ----------
@@ -613,7 +613,7 @@ def signed_distance(p, l) -> np.ndarray:
 
 @_shared
 def pencil(l1, l2, beta) -> np.ndarray:
-    """Member ``l1 + beta (l2 - l1)`` of the pencil of two lines (thesis 5.20; of points, 5.9).
+    """Member ``l1 + beta (l2 - l1)`` of the pencil of two lines (thesis 5.20, 5.21, 5.22; of points, thesis 5.9).
 
     Parameters
     ----------
@@ -671,7 +671,7 @@ def line_through_point_direction(p, d) -> np.ndarray:
 # --------------------------------------------------------------------------- standard coordinates
 @_shared
 def to_standard(x) -> np.ndarray:
-    """Standard homogeneous coordinates ``T @ x`` (thesis 5.1-5.16, ``T`` of 5.47): ``(x, y)`` is ``[1, x, y]``.
+    """Standard homogeneous coordinates ``T @ x`` (thesis 5.1-5.16, 5.47): ``(x, y)`` is ``[1, x, y]``.
 
     Parameters
     ----------

@@ -55,7 +55,7 @@ RIGID_RTOL = 1e-10
 
 
 def _check_rigid(M: np.ndarray, name: str) -> np.ndarray:
-    """``M``, checked to have the rigid-body form 4.58 (``M[0, 0] == M[1, 1]``, ``M[0, 1] == 0``)."""
+    """``M``, checked to have the rigid-body form ``M[0, 0] == M[1, 1]``, ``M[0, 1] == 0`` (thesis 4.58)."""
     scale = np.abs(M).max(axis=(-2, -1), initial=0.0)
     dev = np.maximum(np.abs(M[..., 0, 0] - M[..., 1, 1]),
                      np.maximum(np.abs(M[..., 0, 1]), np.abs(M[..., 1, 0])))

@@ -391,7 +391,7 @@ def twist_magnitude(twist) -> np.ndarray:
 
 @documented
 def pole_xy(twist) -> np.ndarray:
-    """Euclidean pole ``(-v_y/ω, v_x/ω)`` of a twist (thesis 4.10); NaN for a translation, silently.
+    """Euclidean pole ``(-v_y/ω, v_x/ω)`` of a twist (thesis 4.10, 5.51); NaN for a translation, silently.
 
     Parameters
     ----------
@@ -494,7 +494,7 @@ def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
 @overflow_checked("inertia or point")
 @documented
 def inertia_at(inertia, point) -> np.ndarray:
-    """Inertia expressed at ``point``: ``X_P⁻ᵀ I X_P⁻¹`` (thesis 1.68, parallel axis theorem).
+    """Inertia expressed at ``point``: ``X_P⁻ᵀ I X_P⁻¹`` (thesis 1.68, 4.24; parallel axis theorem).
 
     Parameters
     ----------
@@ -577,7 +577,7 @@ def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
 @overflow_checked("inertia or twist")
 @documented
 def momentum(inertia, twist) -> np.ndarray:
-    """Momentum wrench ``p = I v`` (thesis 1.65, 5.72); its line passes through the centre of mass.
+    """Momentum wrench ``p = I v`` (thesis 1.65, 5.72); its line passes through the centre of mass (1.60).
 
     Parameters
     ----------
@@ -602,9 +602,9 @@ def momentum(inertia, twist) -> np.ndarray:
 def kappa(twist, s, qd) -> np.ndarray:
     """Bias acceleration ``κ = ṡ q̇`` of a joint with sequential screws (thesis 2.19, 4.61).
 
-    Column ``j`` of ``s`` moves with ``v + Σ_{l<j} s_l q̇_l``, so
+    Column ``j`` of ``s`` (sequential screws, thesis 2.2) moves with ``v + Σ_{l<j} s_l q̇_l``, so (2.14)
     ``κ = v × s q̇ + Σ_{l<j} (s_l q̇_l) × (s_j q̇_j)``: the printed 2.19/4.61 for one column; for
-    several the printed form drops the cross terms (``docs/errata.md``, 4.77).
+    several the printed form drops the cross terms (``docs/errata.md``; thesis 4.77, 3.33, 4.53).
 
     Parameters
     ----------
@@ -656,7 +656,7 @@ def kappa(twist, s, qd) -> np.ndarray:
 @overflow_checked("inertia, twist or g")
 @documented
 def bias_force(inertia, twist, g=None) -> np.ndarray:
-    """Bias force ``p = -(v×)ᵀ I v - g = crf(v) I v - g`` (thesis 3.11, 4.56, 4.62).
+    """Bias force ``p = -(v×)ᵀ I v - g = crf(v) I v - g`` (thesis 3.11, 4.56, 4.62, 4.7).
 
     Parameters
     ----------
@@ -873,6 +873,8 @@ class _Screw(_Held):
 class Twist(_Screw):
     """A planar velocity (or acceleration) twist ``[vx, vy, ω]`` at the origin (thesis 4.6): a point, its pole (5.51).
 
+    ``.at(P)`` is the same motion at ``P``, ``X_P v`` (thesis 4.8).
+
     Parameters
     ----------
     array : array_like, shape (..., 3), or Twist
@@ -980,7 +982,8 @@ class Twist(_Screw):
 class Wrench(_Screw):
     """A planar force wrench ``[fx, fy, τz]`` at the origin (thesis 4.21): a line, its line of action (5.56).
 
-    ``.magnitude`` is ``F = |f|`` (4.22), 0 for a couple, whose strength is ``.moment``.
+    ``.magnitude`` is ``F = |f|`` (4.22), 0 for a couple, whose strength is ``.moment``; ``.at(P)`` is
+    ``X_P⁻ᵀ f`` (thesis 4.24, 4.26).
 
     Parameters
     ----------
