@@ -61,10 +61,8 @@ def joint_points(q, L: float = 1.0) -> np.ndarray:
 
     Examples
     --------
-    >>> joint_points([0.0, np.pi / 2]).round(12) + 0.0
-    array([[0., 0.],
-           [1., 0.],
-           [1., 1.]])
+    >>> joint_points([0.0, np.pi / 2]).round(12)[-1]           # the tip's end
+    array([1., 1.])
     """
     th = np.cumsum(np.asarray(q, dtype=float))
     steps = L * np.column_stack([np.cos(th), np.sin(th)])
@@ -86,10 +84,8 @@ def inertia_at(A, point) -> np.ndarray:
     Examples
     --------
     >>> from planargeo.screws.twists import inertia_matrix
-    >>> inertia_at(inertia_matrix(2.0, [1.0, 0.0], 0.5), (1.0, 0.0)).round(12) + 0.0   # at the centre of mass
-    array([[2. , 0. , 0. ],
-           [0. , 2. , 0. ],
-           [0. , 0. , 0.5]])
+    >>> np.diag(inertia_at(inertia_matrix(2.0, [1.0, 0.0], 0.5), (1.0, 0.0)))   # at the centre of mass
+    array([2. , 2. , 0.5])
     """
     x, y = (float(v) for v in point)
     Xi = np.array([[1.0, 0.0, y], [0.0, 1.0, -x], [0.0, 0.0, 1.0]])     # X⁻¹
