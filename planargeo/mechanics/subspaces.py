@@ -798,10 +798,8 @@ class Decomposition:
 
         Parameters
         ----------
-        Q : numpy.ndarray, shape (..., k)
-            Active force.
-        mu : numpy.ndarray, shape (..., 3-k)
-            Reaction components.
+        Q, mu : numpy.ndarray, shapes (..., k) and (..., 3-k)
+            Active force and reaction components.
 
         Returns
         -------
@@ -830,10 +828,8 @@ class Decomposition:
 
         Parameters
         ----------
-        psi : numpy.ndarray, shape (..., k)
-            Joint accelerations.
-        gamma : numpy.ndarray, shape (..., 3-k)
-            Reactive components.
+        psi, gamma : numpy.ndarray, shapes (..., k) and (..., 3-k)
+            Joint accelerations and reactive components.
 
         Returns
         -------
