@@ -104,26 +104,24 @@ def _unit(v):
     return np.where(np.isnan(n)[..., None] | (n != 0)[..., None], out, v)
 
 
+def _divided(x, den):
+    """``x / den`` (per vector) where ``den != 0``, NaN elsewhere; beyond range: inf, for the caller's check."""
+    out = np.full(x.shape, np.nan)
+    with np.errstate(over="ignore"):
+        np.divide(x, den[..., None], out=out, where=(den != 0)[..., None])
+    return out + 0.0
+
+
 def _npoint(p):
     """Normalise points (w = 1, or unit length if ideal), letting NaN and zero through silently."""
     p = _unit(p)
-    n = np.linalg.norm(p, axis=-1)
-    w = p[..., 2]
-    den = np.where(w != 0, w, n)
-    out = np.full(p.shape, np.nan)
-    with np.errstate(over="ignore"):           # a point beyond range: inf, for the caller's check_overflow
-        np.divide(p, den[..., None], out=out, where=(den != 0)[..., None])
-    return out + 0.0
+    return _divided(p, np.where(p[..., 2] != 0, p[..., 2], np.linalg.norm(p, axis=-1)))
 
 
 def _nline(l):
     """Normalise lines (|f| = 1, or tz = ±1 for the line at infinity), letting NaN through."""
     f = np.hypot(l[..., 0], l[..., 1])
-    den = np.where(f != 0, f, np.abs(l[..., 2]))
-    out = np.full(l.shape, np.nan)
-    with np.errstate(over="ignore"):
-        np.divide(l, den[..., None], out=out, where=(den != 0)[..., None])
-    return out + 0.0
+    return _divided(l, np.where(f != 0, f, np.abs(l[..., 2])))
 
 
 # --------------------------------------------------------------------------- polarity

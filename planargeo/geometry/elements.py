@@ -25,7 +25,8 @@ _EQ_TOL = 1e-12
 _shared = entries({"point": "point : Point or array_like, shape (3,)\n    A Point or homogeneous point array.",
                    "line": "line : Line or array_like, shape (3,)\n    A Line or homogeneous line array.",
                    "other": "other : Point, Line or array_like, shape (3,)\n    The element of the dual kind.",
-                   "not_pair": "Raises\n------\nShapeError\n    A pair of coordinates not of shape (2,)."},
+                   "not_pair": "Raises\n------\nShapeError\n    A pair of coordinates not of shape (2,).",
+                   "not_one": "Raises\n------\nShapeError, DegenerateGeometryError\n    ``array`` not of shape (3,), or zero."},
                   {f"returns_{kind.lower()}": f"Returns\n-------\n{kind}" for kind in ("Point", "Line", "Conic")})
 
 
@@ -163,6 +164,7 @@ class _PointOrLine(_Homogeneous):
         return NotImplemented
 
 
+@_shared
 class Point(_PointOrLine):
     """A point of the projective plane (thesis 5.49): a twist's pole.
 
@@ -171,10 +173,7 @@ class Point(_PointOrLine):
     array : array_like, shape (3,)
         ``[y, -x, w]`` (any non-zero multiple); ``w = 0`` at infinity.
 
-    Raises
-    ------
-    ShapeError, DegenerateGeometryError
-        ``array`` not of shape (3,), or zero.
+    {not_one}
 
     Examples
     --------
@@ -270,6 +269,7 @@ class Point(_PointOrLine):
         return f"Point(x={_fmt(x)}, y={_fmt(y)})"
 
 
+@_shared
 class Line(_PointOrLine):
     """A line of the projective plane (thesis 5.55): a wrench's line of action.
 
@@ -278,10 +278,7 @@ class Line(_PointOrLine):
     array : array_like, shape (3,)
         ``[fx, fy, tz]``: the points with ``tz + y fx - x fy = 0``, directed along ``(fx, fy)``.
 
-    Raises
-    ------
-    ShapeError, DegenerateGeometryError
-        ``array`` not of shape (3,), or zero.
+    {not_one}
 
     Examples
     --------
