@@ -71,6 +71,13 @@ CELLS = [
                                 "ConstructionExplorer", "ArticulatedExplorer", "SplittingExplorer")]
 
 
+#: The floor measured after the same idle pause as the steps (a ping sent as soon as the last
+#: reply arrived waits for whatever the kernel still does after a reply).
+PAUSED_F = "F after the steps' pause"
+
+#: Every drag step's timings in the page (input, sent, ack, applied, painted; the kernel's ms), in order.
+STEPS: list[dict] = []
+
 #: Seconds the page is left idle before each drag or slider step (the same for both).
 PAUSE = 0.03
 
@@ -152,10 +159,11 @@ def _wait_idle(cv) -> None:
     _until(cv, "!p.busy()", 4000.0)
 
 
-def floor(cv, steps: int) -> list[float]:
+def floor(cv, steps: int, pause: float = 0.0) -> list[float]:
     cv, out = _fast(cv), []
     for _ in range(steps):
         _wait_idle(cv)
+        time.sleep(pause)
         n = _api(cv, "p.stats.length")
         _api(cv, "p.ping()")
         s = _until(cv, f"p.stats.length > {n} && p.stats[p.stats.length - 1].tAck"
@@ -202,6 +210,7 @@ def drag(page, cv, handle: str | None, steps: int, px: float = 3.0, pause: float
         s = _until(cv, f"p.stats.length > {n} && p.stats[{n}].tPaint ? p.stats[{n}] : null")
         if s:
             lat.append(s["tPaint"] - s["tInput"])
+            STEPS.append(s)
         refused += bool(_api(cv, "p.status()"))
     page.mouse.up()
     _wait_idle(cv)
@@ -287,7 +296,7 @@ def measure(page, steps: int) -> dict:
     titles = _titles()
     ex, cv = _canvas(page, titles["ChainExplorer"])
     time.sleep(1.0)
-    r = {"F (ping round trip)": _stat(floor(cv, steps))}
+    r = {"F (ping round trip)": _stat(floor(cv, steps)), PAUSED_F: _stat(floor(cv, steps, PAUSE))}
     lat, hp, refused, _ = drag(page, cv, "link 10 end", steps)
     r["drag step"], r["handle repaint"] = _stat(lat), _stat(hp)
     lat, applied = slider(page, ex, cv, "angle", steps)
@@ -403,13 +412,15 @@ def main(argv=None) -> int:
              f"{results['when']}, {results['machine']}, load average {load0[0]:.2f} at the start and "
              f"{load1[0]:.2f} at the end; medians (90th percentiles) of {a.steps} steps, ms.",
              "F is the round trip of an empty request through the same widget (the floor), measured "
-             "before and after the chain's steps.", "",
+             "before and after the chain's steps, each request sent as soon as the last reply arrived; "
+             f"F, paused: the same after the page was idle for {PAUSE} s, as before each drag and slider step.", "",
              f"## {CHAIN}", "",
-             "| medium | F | drag step | handle repaint | slider step | (page applies it) | F after |",
-             "|---|---|---|---|---|---|---|"]
+             "| medium | F | F, paused | drag step | handle repaint | slider step | (page applies it) | F after |",
+             "|---|---|---|---|---|---|---|---|"]
     for m in media:
         r = results[m][CHAIN]
-        lines.append(f"| {m} | {_cell(r['F (ping round trip)'])} | {_cell(r['drag step'])} | "
+        lines.append(f"| {m} | {_cell(r['F (ping round trip)'])} | {_cell(r.get(PAUSED_F))} | "
+                     f"{_cell(r['drag step'])} | "
                      f"{_cell(r['handle repaint'])} | {_cell(r['slider step'])} | "
                      f"{_cell(r.get('slider: page applies the picture'))} | "
                      f"{_cell(r['F after (ping round trip)'])} |")

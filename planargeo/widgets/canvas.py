@@ -308,6 +308,9 @@ class PictureCanvas(anywidget.AnyWidget):
     snapshot
         The whole current picture in the page's format (synced: read by a view when it
         opens; never sent on its own).
+    defer : bool
+        Answer each request after the kernel's message handler has returned (class
+        attribute, default True; without a running event loop requests are answered at once).
     n_requests : int
         Requests answered so far.
     version : int
@@ -315,6 +318,14 @@ class PictureCanvas(anywidget.AnyWidget):
     last_update : dict or None
         The last update made (for tests and benchmarks).
     """
+
+    #: Answer a request after the kernel's message handler has returned (when an event
+    #: loop runs): the kernel publishes "idle" as its handler returns, so its busy/idle
+    #: pair reaches the page while the request is worked on, before the reply.  JupyterLab
+    #: works on every busy/idle change (the favicon, the toolbar's kernel status, a forced
+    #: layout: about 10 ms of the page's main thread per pair, page_trace.py); after the
+    #: reply it would delay the new picture's paint.
+    defer = True
 
     _esm = Path(__file__).with_name("canvas.js")
     _css = _CSS
@@ -530,6 +541,16 @@ class PictureCanvas(anywidget.AnyWidget):
             return False, str(exc), {}
 
     def _on_msg(self, _widget, content, _buffers) -> None:
+        loop = None
+        if self.defer:
+            with contextlib.suppress(RuntimeError):
+                loop = asyncio.get_running_loop()
+        if loop is None:       # no event loop (no kernel: tests, scripts): answered at once
+            self._answer_around(content)
+        else:                  # after the kernel has said it is idle again (class docstring, defer)
+            loop.call_soon(self._answer_around, content)
+
+    def _answer_around(self, content) -> None:
         with self.around():      # the reply leaves before what the wrapper held
             self._answer(content)
 
