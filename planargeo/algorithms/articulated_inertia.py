@@ -282,24 +282,19 @@ def articulated_inertia(model, q, qd=None, tau=None, f_ext=None, *, steps: int |
 
 # -- Model glue shared by the chapter 6-9 algorithms ----------------------------------------------
 def _state_arrays(model, q, qd, tau, f_ext, checked=False):
-    """One state as the recursions take it: ``(data, I, S, kappa, p, tau, parents, points, joint_points)``.
-
-    ``S``, ``tau`` per joint; ``points`` the body frames' origins, ``joint_points`` the joint frames'.
-    ``checked``: already one state validated by ``check_state`` (as in :func:`_per_state`).
-    """
+    """``(data, I, S, kappa, p, tau, parents, points, joint_points)`` of one state (``checked``: validated)."""
     if not checked:
-        q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
-        if shape != ():
-            raise ShapeError(f"q must describe one state (shape (nq,)), got batch shape {shape}; "
-                             "loop over states or use planargeo.algorithms.aba for batches")
+        q, qd, tau, f_ext = _one_state(model, q, qd, tau, f_ext, None)
     return _data_arrays(model, _kinematics_scalar(model, q, np.zeros(model.nq) if qd is None else qd, f_ext), tau)
 
 
-def _one_state(model, q, qd, tau, f_ext, who: str):
-    """``(q, qd, tau, f_ext)`` checked as one state; a batch: ShapeError naming ``who``."""
+def _one_state(model, q, qd, tau, f_ext, who: str | None):
+    """``(q, qd, tau, f_ext)`` checked as one state; a batch: ShapeError naming ``who`` (or ``q``)."""
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
     if shape != ():
-        raise ShapeError(f"{who} takes one state, got batch shape {shape}")
+        raise ShapeError(f"{who} takes one state, got batch shape {shape}" if who else
+                         f"q must describe one state (shape (nq,)), got batch shape {shape}; "
+                         "loop over states or use planargeo.algorithms.aba for batches")
     return q, qd, tau, f_ext
 
 

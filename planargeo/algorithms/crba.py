@@ -111,8 +111,7 @@ def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     array([-14.715])
     """
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
-    H = mass_matrix(model, q)
-    H = np.broadcast_to(H, shape + H.shape[-2:])
+    H = np.broadcast_to(mass_matrix(model, q), shape + (model.nq, model.nq))
     C = bias_forces(model, q, qd, f_ext)
     with np.errstate(over="ignore", invalid="ignore"):
         rhs = check_finite(np.broadcast_to(tau, shape + (model.nq,)) - C, "τ - C", tau=tau, C=C)

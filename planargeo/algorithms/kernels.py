@@ -38,13 +38,16 @@ _PARAMETERS = {"{tables}": """kind, parent : numpy.ndarray of int, shape (N,)
         Joint kind codes and parent indices (:func:`tables`).
     body, gravity : numpy.ndarray, shapes (N, 8), (2,)
         Per body its joint placement ``(x, y, cos φ, sin φ)``, mass, centre of mass, inertia;
-        gravity (m/s²).""", "{model}": """model : tuple
+        gravity (m/s²).""",
+               "{model}": """model : tuple
         The model's :func:`tables`.
     q, qd : numpy.ndarray, shape (nq,)
-        Joint positions and velocities (float64).""", "{scratch}": """fext : numpy.ndarray, shape (N, 3) or None
-        External world wrenches at the origin.
+        Joint positions and velocities (float64).""",
+               "{scratch}": """{fext}
     w : Workspace
-        Scratch arrays from :func:`workspace`, filled in place."""}
+        Scratch arrays from :func:`workspace`, filled in place.""",
+               "{fext}": """fext : numpy.ndarray, shape (N, 3) or None
+        External world wrenches at the origin."""}
 
 
 def _doc(f):
@@ -386,8 +389,7 @@ def dynamics_one(inverse, kind, parent, body, gravity, q, qd, z, fext):
     {tables}
     q, qd, z : numpy.ndarray, shape (nq,)
         Joint positions, velocities, and forces (forward) or accelerations (inverse).
-    fext : numpy.ndarray, shape (N, 3) or None
-        External world wrenches at the origin.
+    {fext}
 
     Returns
     -------
@@ -414,8 +416,7 @@ def singular_joint(kind, parent, body, gravity, q, qd, tau, fext):
     {tables}
     q, qd, tau : numpy.ndarray, shape (nq,)
         Joint positions, velocities and forces.
-    fext : numpy.ndarray, shape (N, 3) or None
-        External world wrenches at the origin.
+    {fext}
 
     Returns
     -------

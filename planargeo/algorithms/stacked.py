@@ -143,8 +143,6 @@ def blocks(X, k: int = 3) -> np.ndarray:
 def joint_conditions(model: Model, q) -> np.ndarray:
     """Scale-free condition number of every joint's ``sᵀAs`` at ``q`` (thesis 7.7a, 6.105; the singular case of 3.6).
 
-    The rule of :data:`planargeo.errors.COND_LIMIT` on the tree's articulated inertias, never raising.
-
     Parameters
     ----------
     model, q : Model, array_like (nq,)
@@ -153,7 +151,7 @@ def joint_conditions(model: Model, q) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (N,)
-        ``cond_i``: ``inf`` for a singular joint, 1 for a fixed one.
+        ``cond_i`` by the rule of :data:`planargeo.errors.COND_LIMIT`, never raising: ``inf`` when singular.
 
     Examples
     --------
