@@ -191,16 +191,12 @@ def mobility_split(model, q, qd=None, tau=None, f_ext=None) -> ChainSplit:
     >>> mobility_split(chain_model(2, gravity=(0, 0)), [0.0] * 2, [0.0] * 2, [1, 0]).qdd.round(9)
     array([ 1.71428571, -4.28571429])
     """
-    return _chain_split(_state_arrays(model, q, qd, tau, f_ext))
+    return _chain_split(model, q, qd, tau, f_ext)
 
 
-def _chain_split(state):
-    _, I, S, kappa, p, taus, parents, _, joint_points = state
+def _chain_split(model, q, qd, tau, f_ext, checked=False):
+    _, I, S, kappa, p, taus, parents, _, joint_points = _state_arrays(model, q, qd, tau, f_ext, checked)
     return chain_split(I, S, kappa, p, taus, parents, joint_points)
-
-
-def _mobility_split_qdd(model, q, qd, tau, f_ext):
-    return _chain_split(_state_arrays(model, q, qd, tau, f_ext, checked=True)).qdd
 
 
 def forward_dynamics_mobility_split(model, q, qd, tau, f_ext=None) -> np.ndarray:
@@ -227,4 +223,4 @@ def forward_dynamics_mobility_split(model, q, qd, tau, f_ext=None) -> np.ndarray
     array([-14.715])
     """
     _check_chain(model.parents, model.N)
-    return _per_state(_mobility_split_qdd, model, q, qd, tau, f_ext)
+    return _per_state(lambda *state: _chain_split(*state, checked=True).qdd, model, q, qd, tau, f_ext)
