@@ -22,7 +22,7 @@ from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.mechanics.subspaces import T_of
 from planargeo.scenes.chain import chain_workspace
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._explorer import time_step
+from planargeo.widgets._explorer import Described, explorer_data, time_step
 from planargeo.widgets._motion import Motion, refusal_on_picture
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
@@ -52,6 +52,10 @@ ANGLE_LIMIT = 3600.0
 SLIDE = (-0.5, 1.0)
 #: unit of a joint's acceleration by joint kind
 QDD_UNIT = {"revolute": "rad/s²", "prismatic": "m/s²"}
+#: how a symbol of each link or joint is named in the figure (``{i}``: 1 … n, ``{s}``: in subscript digits)
+_IN_FIGURE = explorer_data("chain")["in_figure"]
+#: the rows of the first and last joints (``{kind}``, ``{unit}``: the joint's own)
+_EACH_JOINT = explorer_data("chain")["each_joint"]
 
 
 def chain_for(n: int, joints: str = "revolute", gravity: bool = True, length: float = 1.0,
@@ -153,7 +157,7 @@ def _num(x: float) -> str:
     return f"{x:.10g}"
 
 
-class ChainExplorer(Explorer):
+class ChainExplorer(Described, Explorer):
     """Interactive N-link chain with velocity/acceleration poles, forces and inertias.
 
     Parameters
@@ -178,10 +182,6 @@ class ChainExplorer(Explorer):
     grid = False
     display_controls = OVERLAYS
     scale = 1.0
-    units = {"links": "—", "t (s)": "s", "kinetic energy (J)": "J",
-             "potential energy (J)": "J", "total energy (J)": "J", "energy drift (J)": "J",
-             "work of the joint forces (J)": "J",
-             "|base force| (N)": "N"}
 
     def make_controls(self):
         c = {
@@ -441,41 +441,16 @@ class ChainExplorer(Explorer):
         st = getattr(self, "state", None)
         n = st["model"].N if st is not None else int(self.values["links"])
 
-        def here(sym):
-            return "; in the figure: " + ", ".join(f"{sym}{subscript(i)}" for i in range(1, n + 1))
+        def here(form):
+            return "; in the figure: " + ", ".join(form.format(i=i, s=subscript(i)) for i in range(1, n + 1))
 
-        out = {
-            "vᵢ": "velocity pole of link i: the point it turns about (twist of link i, eq. 4.5)" + here("v"),
-            "aᵢ": "acceleration pole of link i: the point with no acceleration (eq. 4.6)" + here("a"),
-            "κᵢ": "bias acceleration of link i: its acceleration from the joint speeds alone (eq. 3.33)" + here("κ"),
-            "pᵢ": "bias force of link i: the line of its velocity-product force (eq. 3.11)" + here("p"),
-            "fᵢ": "force of joint i on link i, as its line of action: fᵢ = Aᵢ aᵢ + dᵢ (eq. 3.13)" + here("f"),
-            "TQᵢ": "active part of fᵢ, along the axis of percussion of joint i's motion (eq. 6.38, 6.104)"
-                   + here("TQ"),
-            "Rμᵢ": "reaction part of fᵢ: the force the joint takes without doing work (eq. 6.38)" + here("Rμ"),
-            "sψᵢ": "part of aᵢ along joint i's motion space, ψᵢ = Tᵢᵀ aᵢ (eq. 6.44, 6.100)" + here("sψ"),
-            "Uγᵢ": "reactive part of aᵢ, in the quake space Uᵢ (eq. 6.44, 6.45, 6.101)" + here("Uγ"),
-            "Aᵢ": "articulated inertia of link i with the links beyond it, drawn as a conic (eq. 3.38)" + here("A"),
-            "q̈ᵢ": "acceleration of joint i: angular (rad/s²) or along the slide (m/s²) (eq. 3.41)",
-            "i": "index of a link and of the joint at its inner end (joint i carries link i)",
-            "link i, joint i": "the focused link or joint (focus); in the figure: "
-                               + ", ".join(f"link {i}, joint {i}" for i in range(1, n + 1)),
-            "∞": "an arrow at the edge marked ∞ points to a pole out of view: far away, or at infinity",
-            "t": "time since the state the controls set (s)",
-            "links": "number of links in the chain",
-            "t (s)": "time since the state the controls set",
-            "kinetic energy (J)": "½ Σ vᵢᵀ Iᵢ vᵢ over the links (eq. 1.9)",
-            "potential energy (J)": "Σ mᵢ g yᵢ over the links (centres of mass)",
-            "total energy (J)": "E = kinetic + potential energy",
-            "work of the joint forces (J)": "W = τ·(q − q₀): work of the constant joint forces since t = 0",
-            "energy drift (J)": "E − E₀ − W: zero but for the integration error (the chain has no constraint)",
-            "|base force| (N)": "size of the force f₁ the base puts on link 1 (eq. 3.13)",
-        }
+        out = {k: m + here(_IN_FIGURE[k]) if k in _IN_FIGURE else m for k, m in self.symbols.items()}
+        out.update(self.meanings)
         if st is not None:
             for k in sorted({0, n - 1}):
                 j = st["model"].joints[k].kind
-                out[f"q̈{subscript(k + 1)}"] = (
-                    f"acceleration of joint {k + 1} ({j}, {QDD_UNIT[j]}; eq. 3.41)")
+                words = {"i": k + 1, "s": subscript(k + 1), "kind": j, "unit": QDD_UNIT[j]}
+                out.update({key.format(**words): m.format(**words) for key, m in _EACH_JOINT.items()})
         return out
 
     def _focus(self, n: int):

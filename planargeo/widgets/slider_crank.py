@@ -21,7 +21,7 @@ from planargeo.errors import InputError, PlanargeoError, SceneError
 from planargeo.scenes.slider_crank import (DEAD_CENTRE_TOL, dead_centre_at, slider_crank_advance,
                                            slider_crank_model, slider_crank_reactions, slider_crank_solve)
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._explorer import SceneTime, keep_run, run_to, time_value
+from planargeo.widgets._explorer import SceneTime, explorer_data, keep_run, run_to, time_value
 from planargeo.widgets._motion import Budget, refusal_on_picture
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
@@ -36,6 +36,8 @@ T_END = 10.0
 #: evaluations of the loop's dynamics one update may spend (~0.8 ms each: the chain explorer's
 #: MAX_EVALS in the same seconds; about 2.4 scene seconds of the default crank)
 UPDATE_EVALS = 6_000
+#: its symbols and readout rows, kept as data: ``symbol = meaning``, ``row = [unit, meaning]``
+_WORDS = explorer_data("slider-crank")["explain"]
 
 
 def wrap_message(text: str, width: int = 38) -> str:
@@ -95,11 +97,8 @@ class SliderCrankExplorer(SceneTime, Explorer):
     time_scale = 0.1
     #: relative tolerance of the Play integration (DOP853; energy drift ~1e-6 per crank turn)
     play_rtol = 1e-7
-    units = {"t": "s", "crank angle ψ": "°", "crank speed ψ̇": "rad/s", "rod angle θ": "°", "piston angle φ": "°",
-             "piston height h": "m", "piston speed": "m/s", "piston acceleration": "m/s²", "ψ̈ crank": "rad/s²",
-             "|f₁| crank pivot": "N", "|f₂| crank pin": "N", "|f₃| wrist pin": "N", "|F₃| slider bearing": "N",
-             "bearing couple": "N·m", "drive torque Q₁": "N·m", "energy E": "J", "energy drift ΔE/E₀": "—",
-             "closure drift": "m", "configuration": "—", "last dead centre passed": "—"}
+    #: readout units, from its words (``[explorer."slider-crank".explain]``)
+    units = {k: m[0] for k, m in _WORDS.items() if isinstance(m, list)}
 
     def __init__(self, **kw):
         p = scenes.parameters("slider-crank")     # the thesis 9.6 masses and lengths
@@ -264,46 +263,8 @@ class SliderCrankExplorer(SceneTime, Explorer):
         return out
 
     def explain(self):
-        return {
-            "t": "scene time since the start of the motion (Play advances it, 0.1 s per second at 1×)",
-            "ψ": "crank angle: the coordinate of joint 1 (9.6)",
-            "crank angle ψ": "crank angle now, wrapped to ±180° (9.6)",
-            "crank speed ψ̇": "crank speed now (9.6)",
-            "θ": "rod angle, given by closing the loop (9.6)",
-            "rod angle θ": "rod angle, given by closing the loop (9.6)",
-            "φ": "piston angle: the piston's joint coordinate (9.6)",
-            "piston angle φ": "piston angle: the piston's joint coordinate (9.6)",
-            "piston height h": "height of the wrist pin above the crank pivot",
-            "piston speed": "vertical speed of the piston (9.73)",
-            "piston acceleration": "vertical acceleration of the piston (9.73)",
-            "ψ̈ crank": "angular acceleration of the crank (9.75)",
-            "f₁": "pin force at the crank pivot, on the crank from the ground (9.61)",
-            "f₂": "pin force at the crank pin, on the rod from the crank (9.61)",
-            "f₃": "pin force at the wrist pin, on the piston from the rod (9.61)",
-            "F₃": "bearing force of the slide on the piston (9.71, 9.84)",
-            "|f₁| crank pivot": "size of f₁ (9.61)", "|f₂| crank pin": "size of f₂ (9.61)",
-            "|f₃| wrist pin": "size of f₃ (9.61)", "|F₃| slider bearing": "size of F₃ (9.71)",
-            "bearing couple": "moment the slide's bearing carries about the wrist pin (9.71)",
-            "drive torque Q₁": "torque the drive puts on the crank; 0 when free (6.38)",
-            "energy E": "kinetic plus potential energy (K = ½ vᵀ I v, section 1.9)",
-            "energy drift ΔE/E₀": "relative change of E since t = 0; 0 for the exact free motion",
-            "closure drift": "largest gap opened in the loop by the integration so far, position form of 9.54",
-            "configuration": "dead centre when the crank is in line with the rod (the loop cannot pass a force)",
-            "last dead centre passed": "the last dead centre the crank turned through, and when",
-            "1": "body 1, the crank", "2": "body 2, the rod", "3": "body 3, the piston",
-            "v₁": "velocity pole of the crank: the point it turns about now (section 4.5)",
-            "v₂": "velocity pole of the rod (section 4.5)",
-            "v₃": "velocity pole of the piston: at infinity, it slides (section 4.5)",
-            "a₁": "acceleration pole of the crank: its point without acceleration (section 4.6)",
-            "a₂": "acceleration pole of the rod (section 4.6)",
-            "a₃": "acceleration pole of the piston: at infinity, it slides (section 4.6)",
-            "∞": "the pole named beside this arrow lies at infinity, in the arrow's direction (a translation, 4.10)",
-            "at top dead centre": "the crank points up, in line with the rod: a push on the piston cannot turn it",
-            "at bottom dead centre": "the crank points down, in line with the rod",
-            "passing top dead centre": "the crank is turning through the top dead centre",
-            "passing bottom dead centre": "the crank is turning through the bottom dead centre",
-        }
-
+        # every symbol and readout row, in the order of the data
+        return {k: m[1] if isinstance(m, list) else m for k, m in _WORDS.items()}
 
     def figure_message(self, exc):
         text = str(exc)

@@ -22,13 +22,17 @@ from planargeo.errors import InputError, PlanargeoError
 from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_reactions,
                                     tree_solve)
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._explorer import Described, SceneTime, keep_run, run_to, time_value
+from planargeo.widgets._explorer import Described, SceneTime, explorer_data, keep_run, run_to, time_value
 from planargeo.widgets._motion import Budget, refusal_on_picture
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["TreeExplorer"]
 
 N = 9
+#: the pins that close the loops (Fig 9.2), by the bodies whose tips they join
+CONTACTS = ("4-7", "8-9")
+#: the words of each body, pin and contact (``{i}``: its number, ``{s}``: in subscript digits)
+_WORDS = explorer_data("trees")
 #: controls that set the state at t = 0 (a change starts the time again)
 INITIAL = ("speed", "loops", "gravity", "mass", "body 1 angle (deg)", "body 2 angle (deg)")
 #: default gravity (m/s²) and speed (rad/s): the links coast, slowly enough for Play to keep up with
@@ -267,23 +271,12 @@ class TreeExplorer(Described, SceneTime, Explorer):
 
     def explain(self):
         out = super().explain()
-        for i in range(N):
-            out[f"v{subscript(i + 1)}"] = f"velocity pole of body {i + 1}: the point it turns about now (section 4.5)"
-            out[f"a{subscript(i + 1)}"] = f"acceleration pole of body {i + 1}: its point without acceleration (4.6)"
-        for i in range(N):
-            out[symbol_of(f"f_{i + 1}")] = (f"pin force of joint {i + 1}: the wrench on body {i + 1} from its "
-                                              "parent (9.61; 9.41 for the open tree)")
-        for k, name in enumerate(("4-7", "8-9")):
-            out[symbol_of(f"F_{k + 1}")] = f"contact force of the pin joining the tips of bodies {name} (9.71)"
-            out[f"|F{subscript(k + 1)}| (pin {name})"] = f"size of the contact force F{subscript(k + 1)} (9.71)"
-        for i in range(N):
-            f = symbol_of(f"f_{i + 1}")
-            out[f"|{f}|"] = f"size of the pin force {f} (9.61)"
-            out[f"moment of {f} about its pin"] = f"moment of {f} about its own pin: 0 for a free pin (9.61)"
-        for k in range(2):
-            F = symbol_of(f"F_{k + 1}")
-            out[f"|{F}|"] = f"size of the contact force {F} (9.71)"
-            out[f"moment of {F} about its pin"] = f"moment of {F} about its own pin: 0 for a free pin (9.71)"
+        nine = [{"i": i, "s": subscript(i)} for i in range(1, N + 1)]                # bodies or pins
+        contacts = [{"i": k, "s": subscript(k), "name": name} for k, name in enumerate(CONTACTS, start=1)]
+        for part, each in (("bodies", nine), ("pins", nine), ("contacts", contacts), ("pin_forces", nine),
+                           ("contact_forces", contacts)):
+            for words in each:
+                out.update({key.format(**words): m.format(**words) for key, m in _WORDS[part].items()})
         return out
 
     def figure_message(self, exc):
