@@ -13,12 +13,13 @@ import textwrap
 _PLACE = re.compile(r"^( *)\{([\w ]+)\}$", re.M)
 
 #: Returns sections of broadcast arrays, by shape: every table holds them (a line ``{returns_3}``).
-RETURNS = {f"returns_{key}": f"Returns\n-------\nnumpy.ndarray{kind}, shape (...{shape})" for key, kind, shape in
-           [("scalar", "", ""), ("bool", " of bool", ""), ("2", "", ", 2"), ("3", "", ", 3"), ("3x3", "", ", 3, 3")]}
+RETURNS = {f"returns_{key}": f"Returns\n-------\nnumpy.ndarray{kind}, shape (...{shape})"
+           for key, kind, shape in [("scalar", "", ""), ("bool", " of bool", ""), ("2", "", ", 2"),
+                                    ("3", "", ", 3"), ("3x3", "", ", 3, 3")]}
 
 
 def entries(*tables):
-    """A decorator writing the entries of ``tables`` (and :data:`RETURNS`; a later entry wins) into a docstring.
+    """A decorator writing the entries of ``tables`` and :data:`RETURNS` into a docstring (a later entry wins).
 
     It fills the docstring of the function or class it decorates, and of the function it wraps.
 

@@ -443,7 +443,7 @@ def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
     Raises
     ------
     InputError, DegenerateGeometryError
-        Bad ``on_interior`` or (with ``"raise"``) no real tangents; ``p`` the vertex of a degenerate conic.
+        Bad ``on_interior``, or (``"raise"``) no real tangents; ``p`` a degenerate conic's vertex.
 
     Examples
     --------
@@ -924,8 +924,8 @@ def _special(x, C, Q, what: str, e) -> np.ndarray:
 def drawable_conic(C) -> np.ndarray:
     """A real conic that shows an imaginary one (thesis 10.2.3): ``C - 2 k e eᵀ``; real conics unchanged.
 
-    ``k = 1 / (C⁻¹)[2, 2]``, ``e = [0, 0, 1]``: for an inertia, the circle of gyration; its polars are
-    those of ``C`` reflected through the centre.
+    ``k = 1 / (C⁻¹)[2, 2]``, ``e = [0, 0, 1]``: for an inertia, the circle of gyration; its polars
+    are those of ``C`` reflected through the centre.
 
     Parameters
     ----------
@@ -961,7 +961,7 @@ def _drawable(C):
 class AffineFrame:
     """``x = A u + t`` maps the unit curve of ``kind`` onto a real conic (see :func:`affine_frame`).
 
-    Unit curves: ellipse ``u1² + u2² = 1``, hyperbola ``u1² - u2² = 1`` (two branches), parabola ``u2 = u1²``.
+    Unit curves: ellipse ``u1² + u2² = 1``, hyperbola ``u1² - u2² = 1``, parabola ``u2 = u1²``.
 
     Attributes
     ----------

@@ -22,12 +22,14 @@ _EQ_TOL = 1e-12
 
 
 #: Docstring entries the classes share, said once (a line ``{point}`` in a docstring).
-_shared = entries({"point": "point : Point or array_like, shape (3,)\n    A Point or homogeneous point array.",
-                   "line": "line : Line or array_like, shape (3,)\n    A Line or homogeneous line array.",
-                   "other": "other : Point, Line or array_like, shape (3,)\n    The element of the dual kind.",
-                   "not_pair": "Raises\n------\nShapeError\n    A pair of coordinates not of shape (2,).",
-                   "not_one": "Raises\n------\nShapeError, DegenerateGeometryError\n    ``array`` not of shape (3,), or zero."},
-                  {f"returns_{kind.lower()}": f"Returns\n-------\n{kind}" for kind in ("Point", "Line", "Conic")})
+_shared = entries({
+    "point": "point : Point or array_like, shape (3,)\n    A Point or homogeneous point array.",
+    "line": "line : Line or array_like, shape (3,)\n    A Line or homogeneous line array.",
+    "other": "other : Point, Line or array_like, shape (3,)\n    The element of the dual kind.",
+    "not_pair": "Raises\n------\nShapeError\n    A pair of coordinates not of shape (2,).",
+    "not_one": "Raises\n------\nShapeError, DegenerateGeometryError\n"
+               "    ``array`` not of shape (3,), or zero.",
+}, {f"returns_{kind.lower()}": f"Returns\n-------\n{kind}" for kind in ("Point", "Line", "Conic")})
 
 
 def _fmt(v: float) -> str:

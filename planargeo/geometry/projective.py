@@ -47,7 +47,8 @@ _ENTRIES = {
                   "    Largest accepted condition number ``κ`` (:func:`cross_cond`; default\n"
                   "    :data:`planargeo.errors.COND_LIMIT`, ``1e12``).",
     "cross_raises": "Raises\n------\nDegenerateGeometryError\n"
-                    "    The two are the same element or one is zero (``.cond`` is ``inf``), or ``κ > cond_limit``.",
+                    "    The two are the same element or one is zero (``.cond`` is ``inf``),\n"
+                    "    or κ > ``cond_limit``.",
     "standard": "Returns\n-------\nnumpy.ndarray, shape (..., 3, 3)",
 }
 _shared = entries(_ENTRIES)

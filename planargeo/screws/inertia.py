@@ -15,8 +15,8 @@ from planargeo._validate import (as_array, as_mat3, as_scalar, as_vec3, as_xy, b
                                  check_positive_definite, check_positive_semidefinite, overflow_checked, rescaled)
 from planargeo.errors import InputError, InvalidPolygonError, SingularInertiaError
 from planargeo.geometry._docs import entries
-from planargeo.screws.twists import (SCREWS, _Held, inertia_at, inertia_matrix, inertia_rotated, kinetic_energy,
-                                      momentum)
+from planargeo.screws.twists import (SCREWS, _Held, inertia_at, inertia_matrix, inertia_rotated,
+                                      kinetic_energy, momentum)
 
 __all__ = [
     "Inertia", "mass", "centre_of_mass", "rotational_inertia", "radius_of_gyration",
@@ -28,7 +28,7 @@ _documented = entries(SCREWS, {
     "pole": "point : array_like, shape (..., 3)\n    Homogeneous acceleration pole (a twist).",
     "impulse": "line : array_like, shape (..., 3)\n    Homogeneous line (an impulse's line of action).",
     "returns_inertia": "Returns\n-------\nInertia",
-    "no_mass": "Raises\n------\nInputError\n    If the mass ``inertia[..., 0, 0]`` is not positive.",
+    "no_mass": "Raises\n------\nInputError\n    A mass ``inertia[..., 0, 0]`` not positive.",
 })
 
 
@@ -215,8 +215,8 @@ def percussion_axis(inertia, point) -> np.ndarray:
     """Axis of percussion ``f = I a`` of an acceleration pole ``a`` (thesis 5.64-5.68).
 
     The force that, applied at rest, accelerates the body about ``point``: perpendicular to the
-    line from the pole to the centre of mass ``c``, beyond ``c`` at ``ρ²/d`` (5.67-5.68).  The pole at
-    ``c`` gives the line at infinity; a pole at infinity a line through ``c``.
+    line from the pole to the centre of mass ``c``, beyond ``c`` at ``ρ²/d`` (5.67-5.68).  The
+    pole at ``c`` gives the line at infinity; a pole at infinity a line through ``c``.
 
     Parameters
     ----------
@@ -380,7 +380,7 @@ def _derived(function, doc: str) -> property:
 
 
 def _of_matrix(function, name: str | None = None):
-    """A method of :class:`Inertia`: ``function`` of its matrix, documented by ``function`` (without ``inertia``)."""
+    """A method of :class:`Inertia`: ``function`` of its matrix, documented by it (without ``inertia``)."""
     def method(self, *args, **kwargs):
         return function(self._array, *args, **kwargs)
 
@@ -389,17 +389,19 @@ def _of_matrix(function, name: str | None = None):
     method.__signature__ = own.replace(parameters=[first.replace(name="self"), *rest])
     method.__name__ = name or function.__name__
     method.__qualname__ = f"Inertia.{method.__name__}"
-    doc = re.sub(r"\n    inertia : [^\n]*\n        [^\n]*", "", function.__doc__)    # and its errors:
-    doc = re.sub(r"    Raises\n    ------\n(    \S[^\n]*\n        [^\n]*``inertia``[^\n]*\n)+\n", "", doc)
+    doc = re.sub(r"\n    inertia : [^\n]*\n        [^\n]*", "", function.__doc__)
+    raises = r"    Raises\n    ------\n(    \S[^\n]*\n        [^\n]*``inertia``[^\n]*\n)+\n"   # of ``inertia``
+    doc = re.sub(raises, "", doc)
     method.__doc__ = doc.replace("    Parameters\n    ----------\n\n", "")
     return method
+
 
 class Inertia(_Held):
     """A planar rigid-body inertia at the origin (thesis 1.66, 4.58, 5.64): an imaginary conic.
 
-    One read-only ``(..., 3, 3)`` matrix of the rigid-body form 4.58 (:func:`~planargeo.screws.twists.inertia_matrix`).
-    Articulated inertias (chapters 6-7) have no mass or centre: they stay plain arrays, which every
-    function accepts.
+    One read-only ``(..., 3, 3)`` matrix of the rigid-body form 4.58 (:func:`inertia_matrix`).
+    Articulated inertias (chapters 6-7) have no mass or centre: they stay plain arrays, which
+    every function accepts.
 
     Parameters
     ----------
@@ -546,7 +548,7 @@ class Inertia(_Held):
     mass = _derived(mass, """Mass ``m = matrix[0, 0]`` (kg), of the batch shape.""")
     com = _derived(centre_of_mass, """Centre of mass ``(x, y)`` (m).""")
     rotational_inertia = _derived(rotational_inertia, """``J`` about the centre of mass (kg·m²).""")
-    radius_of_gyration = _derived(radius_of_gyration, """Radius of gyration ``ρ = sqrt(J / m)`` (m; 4.58, 5.64).""")
+    radius_of_gyration = _derived(radius_of_gyration, """Radius of gyration ``sqrt(J / m)`` (m).""")
     mobility = _derived(mobility, """Inverse inertia ``I⁻¹`` (via ``solve``).""")
 
     def __repr__(self) -> str:

@@ -25,10 +25,11 @@ __all__ = [
 ]
 
 
-#: The docstring entries the screws share (a line ``{inertia twist}``; :func:`planargeo.geometry._docs.entries`).
+#: The docstring entries the screws share (a line ``{inertia twist}``; see geometry/_docs.py).
 SCREWS = {
     "twist": "twist : Twist or array_like, shape (..., 3)\n    Twist ``[vx, vy, ω]`` (m/s, rad/s).",
-    "wrench": "wrench : Wrench or array_like, shape (..., 3)\n    Wrench ``[fx, fy, τz]`` (N, N·m).",
+    "wrench": "wrench : Wrench or array_like, shape (..., 3)\n"
+              "    Wrench ``[fx, fy, τz]`` (N, N·m).",
     "point": "point : array_like, shape (..., 2)\n    Reference point ``(x, y)`` (m).",
     "theta": "theta : array_like, shape (...)\n    Angle (rad), counter-clockwise.",
     "inertia": "inertia : array_like, shape (..., 3, 3)\n"
@@ -36,11 +37,12 @@ SCREWS = {
     "returns_twist": "Returns\n-------\nTwist",
     "returns_wrench": "Returns\n-------\nWrench",
     "not_psd": "Raises\n------\nInputError, SingularInertiaError\n"
-               "    ``inertia`` not symmetric positive semi-definite (see :func:`planargeo.screws.kinetic_energy`).",
+               "    ``inertia`` not symmetric positive semi-definite.",
     "bad_array": "Raises\n------\nShapeError, NonFiniteError, InputError\n"
                  "    ``array`` without a last axis of 3, not finite, or not real numbers.",
 }
 documented = entries(SCREWS)
+
 
 @documented
 def X_P(point) -> np.ndarray:
@@ -602,9 +604,10 @@ def momentum(inertia, twist) -> np.ndarray:
 def kappa(twist, s, qd) -> np.ndarray:
     """Bias acceleration ``κ = ṡ q̇`` of a joint with sequential screws (thesis 2.19, 4.61).
 
-    Column ``j`` of ``s`` (sequential screws, thesis 2.2) moves with ``v + Σ_{l<j} s_l q̇_l``, so (2.14)
-    ``κ = v × s q̇ + Σ_{l<j} (s_l q̇_l) × (s_j q̇_j)``: the printed 2.19/4.61 for one column; for
-    several the printed form drops the cross terms (``docs/errata.md``; thesis 4.77, 3.33, 4.53).
+    Column ``j`` of ``s`` (sequential screws, thesis 2.2) moves with ``v + Σ_{l<j} s_l q̇_l``,
+    so (2.14) ``κ = v × s q̇ + Σ_{l<j} (s_l q̇_l) × (s_j q̇_j)``: the printed 2.19/4.61 for one
+    column; for several the printed form drops the cross terms (``docs/errata.md``; thesis 4.77,
+    3.33, 4.53).
 
     Parameters
     ----------
@@ -982,8 +985,8 @@ class Twist(_Screw):
 class Wrench(_Screw):
     """A planar force wrench ``[fx, fy, τz]`` at the origin (thesis 4.21): a line, its line of action (5.56).
 
-    ``.magnitude`` is ``F = |f|`` (4.22), 0 for a couple, whose strength is ``.moment``; ``.at(P)`` is
-    ``X_P⁻ᵀ f`` (thesis 4.24, 4.26).
+    ``.magnitude`` is ``F = |f|`` (4.22), 0 for a couple, whose strength is ``.moment``;
+    ``.at(P)`` is ``X_P⁻ᵀ f`` (thesis 4.24, 4.26).
 
     Parameters
     ----------
@@ -1128,7 +1131,7 @@ def _single(x, cls, name) -> np.ndarray:
 class TwistSum:
     """Construction of ``v3 = v1 + v2`` (thesis 4.2), for drawing.
 
-    Points and lines are normalised homogeneous arrays (:func:`planargeo.geometry.projective.normalize_point`,
+    Points and lines are normalised homogeneous arrays (``normalize_point``,
     ``normalize_line``); the pole ``P`` of the sum lies on ``line``, the join of ``Q1`` and ``Q2``.
 
     Attributes
@@ -1145,7 +1148,7 @@ class TwistSum:
     omega1, omega2, omega3 : float
         Magnitudes; ``omega3 = omega1 + omega2`` (4.11).
     beta : float or None
-        Lever ratio ``ω2/(ω1+ω2)``, ``P = Q1 + β (Q2 - Q1)`` (4.12-4.13); ``inf`` for opposite rotations.
+        Lever ratio ``ω2/(ω1+ω2)``, ``P = Q1 + β (Q2 - Q1)`` (4.12-4.13); ``inf`` if opposite.
     rho : float or None
         Offset ``u/ω`` of 4.16: ``P = Q + ρ n``, ``n`` the translation turned by +90°.
     line : ndarray (3,) or None
