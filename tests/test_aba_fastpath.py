@@ -9,6 +9,7 @@ gravity and external wrenches, for single states and batches of every shape and
 layout; the physics references (Pinocchio, Lagrange's equations) are in
 test_dyn_aba.py and test_pinocchio.py.
 """
+import numba
 import numpy as np
 import pytest
 from hypothesis import given
@@ -94,6 +95,7 @@ def test_other_inputs_take_the_validated_road():
     assert _rel(forward_dynamics(m, q32, qd, tau, f_ext), _general(m, q32.astype(float), qd, tau, f_ext)) < 1e-12
 
 
+@pytest.mark.skipif(numba.config.DISABLE_JIT, reason="checks the compiled kernels")
 def test_one_state_kernels_compile_one_type_and_check_shapes():
     """The one-state kernel is compiled for C-contiguous writeable float64 arrays only (without and with
     external wrenches): other types go the validated road, compiling nothing; float64 arrays of the wrong

@@ -11,6 +11,7 @@ import os
 import subprocess
 import sys
 
+import numba
 import numpy as np
 import pytest
 
@@ -112,6 +113,7 @@ print(json.dumps([forward_dynamics(m, q[0], qd[0], tau[0]).tolist(), forward_dyn
 """
 
 
+@pytest.mark.skipif(numba.config.DISABLE_JIT, reason="checks the compiled kernels")
 def test_kernels_run_uncompiled_with_the_same_numbers():
     """NUMBA_DISABLE_JIT=1: the kernels are plain Python (to step through), and give the compiled numbers."""
     from planargeo.algorithms import kernels

@@ -83,7 +83,7 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
     if c is None:
         return general(model, q, qd, z, f_ext)
     kernels, tables = c.kernels, c.tables
-    if (type(q) is _ARRAY and q.ndim == 1 and type(qd) is _ARRAY and type(z) is _ARRAY
+    if (kernels.TYPED and type(q) is _ARRAY and q.ndim == 1 and type(qd) is _ARRAY and type(z) is _ARRAY
             and (f_ext is None or type(f_ext) is _ARRAY)):
         try:                # numba checks the types (float64, C-contiguous, writeable), the kernel the shapes
             out = kernels.dynamics_one(inverse, *tables, q, qd, z, f_ext)

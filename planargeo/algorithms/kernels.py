@@ -14,6 +14,7 @@ from collections import namedtuple
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
+import numba
 from numba import get_num_threads, njit
 
 from planargeo.errors import COND_LIMIT
@@ -32,6 +33,10 @@ BLOCK = 256
 
 jit = njit(cache=True, nogil=True, error_model="numpy")
 inline = njit(cache=True, nogil=True, error_model="numpy", inline="always")
+#: numba checks the types of a one-state call; run as Python (``NUMBA_DISABLE_JIT=1``), nothing does
+TYPED = not numba.config.DISABLE_JIT
+if not TYPED:                   # as Python, a float error gives inf or nan silently, as compiled
+    jit = inline = np.errstate(divide="ignore", invalid="ignore", over="ignore")
 
 #: Parameter entries the kernels' docstrings share (:func:`_doc`).
 _PARAMETERS = {"{tables}": """kind, parent : numpy.ndarray of int, shape (N,)
