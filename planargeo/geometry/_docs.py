@@ -19,7 +19,7 @@ RETURNS = {f"returns_{key}": f"Returns\n-------\nnumpy.ndarray{kind}, shape (...
 
 
 def entries(*tables):
-    """A decorator writing the entries of ``tables`` and :data:`RETURNS` into a docstring (a later entry wins).
+    """A decorator writing the entries of ``tables`` and :data:`RETURNS` into a docstring.
 
     It fills the docstring of the function or class it decorates, and of the function it wraps.
 

@@ -105,7 +105,7 @@ def _unit(v):
 
 
 def _divided(x, den):
-    """``x / den`` (per vector) where ``den != 0``, NaN elsewhere; beyond range: inf, for the caller's check."""
+    """``x / den`` (per vector) where ``den != 0``, else NaN; inf beyond range."""
     out = np.full(x.shape, np.nan)
     with np.errstate(over="ignore"):
         np.divide(x, den[..., None], out=out, where=(den != 0)[..., None])
@@ -127,7 +127,7 @@ def _nline(l):
 # --------------------------------------------------------------------------- polarity
 @_shared
 def polar(C, p) -> np.ndarray:
-    """Polar line ``C p`` of point ``p`` (thesis 5.36); for an inertia, the axis of percussion (5.64-5.68).
+    """Polar line ``C p`` of point ``p`` (thesis 5.36): an inertia's percussion axis (5.64-5.68).
 
     Parameters
     ----------
@@ -151,7 +151,7 @@ def polar(C, p) -> np.ndarray:
 
 @_shared
 def pole(C, l, rtol: float = 1e-13) -> np.ndarray:
-    """Pole ``C⁻¹ l`` of line ``l`` (thesis 5.37), solved (exact scale: for an inertia, the acceleration).
+    """Pole ``C⁻¹ l`` of line ``l`` (thesis 5.37), solved: of an inertia, the acceleration.
 
     Parameters
     ----------
@@ -475,7 +475,7 @@ def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
 
 @dataclass(frozen=True)
 class ExteriorConstruction:
-    """The steps of the polar construction of an exterior point (thesis 5.2.2, Fig. 5.2), normalised.
+    """The steps of the polar construction of an exterior point (thesis 5.2.2, Fig. 5.2).
 
     Attributes
     ----------
@@ -503,7 +503,7 @@ class ExteriorConstruction:
 
 @dataclass(frozen=True)
 class InteriorConstruction:
-    """The steps of the polar construction of an interior point (thesis 5.2.2, Fig. 5.3), normalised.
+    """The steps of the polar construction of an interior point (thesis 5.2.2, Fig. 5.3).
 
     Attributes
     ----------
@@ -537,7 +537,7 @@ class InteriorConstruction:
 
 @_shared
 def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 1e-9) -> ExteriorConstruction:
-    """Construct the polar of an exterior point (thesis 5.2.2, Fig. 5.2): the join of its tangents' contacts.
+    """The polar of an exterior point constructed (thesis 5.2.2, Fig. 5.2): its tangents' contacts.
 
     Parameters
     ----------
@@ -571,7 +571,7 @@ def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 
 
 @_shared
 def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: float = 1e-9) -> InteriorConstruction:
-    """Construct the polar of an interior point (thesis 5.2.2, Fig. 5.3): the join of the poles of two chords.
+    """The polar of an interior point constructed (thesis 5.2.2, Fig. 5.3): two chords' poles.
 
     Parameters
     ----------
@@ -639,7 +639,7 @@ def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: 
 
 
 def _tangents_at(C, X, real, what: str, axes) -> np.ndarray:
-    """The tangents ``C X`` at points ``X`` of the conic, refusing (where ``real``) a vertex of a degenerate conic."""
+    """The tangents ``C X`` at points ``X`` of the conic (a degenerate conic's vertex refused)."""
     T = _mv(C, X)
     vertex = real[..., None] & np.all(T == 0, axis=-1)
     if np.any(vertex):
@@ -665,7 +665,7 @@ def _checked(construction, what: str, nan_asked: bool):
 # --------------------------------------------------------------------------- duality
 @_shared
 def correlation(C, Q, L, rtol: float = 1e-13):
-    """The correlation of Theorem 12: ``(P, M) = (pole(C, L), polar(C, Q))``, with ``P @ M == Q @ L`` (5.40-5.41).
+    """Theorem 12's correlation ``(pole(C, L), polar(C, Q))``, with ``P @ M == Q @ L`` (5.40-5.41).
 
     Theorem 12 (corrected to the direction of 5.36-5.37): if ``L`` passes through ``Q``, the pole
     ``P`` lies on the polar ``M``.
@@ -707,7 +707,7 @@ def _base(Q) -> np.ndarray:
 
 
 def _pow2(a: np.ndarray, core: int = 1) -> tuple[np.ndarray, np.ndarray]:
-    """``a`` with each element (``core=2``: matrix) outside ``(1e-90, 1e90)`` scaled exactly by ``2^-e``, and ``e``
+    """``a``, each element (``core=2``: matrix) beyond ``(1e-90, 1e90)`` times ``2^-e``; and ``e``
     (0 where untouched).
     """
     with np.errstate(invalid="ignore"):
@@ -720,7 +720,7 @@ def _pow2(a: np.ndarray, core: int = 1) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _back(u: np.ndarray, e: np.ndarray, what: str, culprits: str) -> np.ndarray:
-    """Components ``u`` computed on scaled arguments, times ``2^e`` (exact), or a NumericOverflowError."""
+    """Components ``u`` of scaled arguments times ``2^e`` (exact), or a NumericOverflowError."""
     if np.any(e):
         with np.errstate(over="ignore", under="ignore"):
             u = np.ldexp(u, np.broadcast_to(e, u.shape))
@@ -775,7 +775,7 @@ def decompose_point(P, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
 
 @_shared
 def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
-    """Components ``u`` of ``L = u1 C Q1 + u2 C Q2 + u3 C Q3`` (thesis 5.43); for ``L = C P``, those of ``P``.
+    """Components ``u`` of ``L = u1 C Q1 + u2 C Q2 + u3 C Q3`` (thesis 5.43).
 
     Parameters
     ----------
@@ -878,7 +878,7 @@ def decompose_point_special(C, P, Q1, Q2, Q3) -> np.ndarray:
 
 @_shared
 def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
-    """Components of ``L`` on the lines ``C Qi`` of a special base (thesis 5.46), without an inverse.
+    """Components of ``L`` on the lines ``C Qi`` of a special base (thesis 5.46), with no inverse.
 
     ``u1 = Q1·L / Q1 C Q1``, ``u2 = Q3·L / Q3 C Q2``, ``u3 = Q2·L / Q2 C Q3``.
 
@@ -904,7 +904,7 @@ def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
 
 
 def _special(x, C, Q, what: str, e) -> np.ndarray:
-    """``[Q1·x / Q1CQ1, Q3·x / Q3CQ2, Q2·x / Q2CQ3] · 2^e`` (5.44-5.46), refusing a base that is not special."""
+    """``[Q1·x / Q1CQ1, Q3·x / Q3CQ2, Q2·x / Q2CQ3] · 2^e`` (5.44-5.46) of a special base."""
     Q1, Q2, Q3 = Q
     with np.errstate(under="ignore"):
         n1, n2, n3 = (np.einsum("...i,...i->...", q, x) for q in (Q1, Q3, Q2))
@@ -922,7 +922,7 @@ def _special(x, C, Q, what: str, e) -> np.ndarray:
 # --------------------------------------------------------------------------- drawing support
 @_shared
 def drawable_conic(C) -> np.ndarray:
-    """A real conic that shows an imaginary one (thesis 10.2.3): ``C - 2 k e eᵀ``; real conics unchanged.
+    """A real conic showing an imaginary one: ``C - 2 k e eᵀ`` (thesis 10.2.3).
 
     ``k = 1 / (C⁻¹)[2, 2]``, ``e = [0, 0, 1]``: for an inertia, the circle of gyration; its polars
     are those of ``C`` reflected through the centre.
@@ -935,7 +935,7 @@ def drawable_conic(C) -> np.ndarray:
 
     Examples
     --------
-    >>> drawable_conic(np.diag([2.0, 2.0, 8.0])).diagonal()   # inertia m = 2, J = 8 at the origin: radius 2
+    >>> drawable_conic(np.diag([2.0, 2.0, 8.0])).diagonal()   # inertia m = 2, J = 8: radius 2
     array([ 2.,  2., -8.])
     """
     C = _conic(C)
@@ -1059,7 +1059,7 @@ def _affine_frame(C, rtol):
 @overflow_checked("A or t")
 @_shared
 def conic_from_affine(kind: str, A, t) -> np.ndarray:
-    """The image of the unit curve ``kind`` under ``x = A u + t`` (inverse of :func:`affine_frame`, thesis 5.47).
+    """The unit curve ``kind`` mapped by ``x = A u + t`` (thesis 5.47; see :func:`affine_frame`).
 
     Parameters
     ----------
@@ -1103,7 +1103,7 @@ def _rot(angle):
 
 
 def _turned(kind: str, centre, axes, angle) -> np.ndarray:
-    """The ellipse or hyperbola with semi-axes ``axes`` in the frame at ``centre`` turned by ``angle``."""
+    """The ellipse or hyperbola of semi-axes ``axes`` in the turned frame at ``centre``."""
     axes = check_positive(as_xy(axes, "axes"), "axes")
     A = _rot(as_array(angle, "angle")) * axes[..., None, :]
     return conic_from_affine(kind, A, centre)
@@ -1182,7 +1182,7 @@ def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
 
     Examples
     --------
-    >>> float(conic_residual(conic_hyperbola([0.0, 0.0], [2.0, 1.0]), [0.0, -2.0, 1.0]))    # through (2, 0)
+    >>> float(conic_residual(conic_hyperbola([0.0, 0.0], [2.0, 1.0]), [0.0, -2.0, 1.0]))  # (2, 0)
     0.0
     """
     return _turned("hyperbola", centre, axes, angle)
@@ -1191,7 +1191,7 @@ def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
 @overflow_checked("vertex or focal_length")
 @_shared
 def conic_parabola(vertex, focal_length, angle=0.0) -> np.ndarray:
-    """Parabola ``y' = x'² / (4 f)`` in the frame at ``vertex`` turned by ``angle`` (focus ``(0, f)`` there).
+    """Parabola ``y' = x'² / (4 f)`` (focus ``(0, f)``) in the turned frame at ``vertex``.
 
     Parameters
     ----------

@@ -1,4 +1,4 @@
-"""Thin classes over the array functions: :class:`Point`, :class:`Line`, :class:`Conic` (thesis ch. 5).
+"""Thin classes over the array functions: :class:`Point`, :class:`Line`, :class:`Conic` (thesis 5).
 
 Each holds one validated read-only array; equality is projective (proportional arrays), so they
 are not hashable.  ``p ^ q`` is the join, ``l ^ m`` the meet, ``p @ l`` the incidence form.
@@ -77,7 +77,7 @@ class _Homogeneous:
 
 
 class _PointOrLine(_Homogeneous):
-    """What a point and a line share through the duality (thesis 5.3): ``^`` is ``_wedge``, ``@`` the incidence."""
+    """What points and lines share by duality (thesis 5.3): ``^`` is ``_wedge``, ``@`` incidence."""
 
     __slots__ = ()
 
@@ -88,7 +88,7 @@ class _PointOrLine(_Homogeneous):
         self._a = a
 
     def normalized(self):
-        """The same element normalised: a point at ``w = 1``, a line with unit force (thesis 5.49, 5.55).
+        """The element normalised: a point at ``w = 1``, a line of unit force (thesis 5.49, 5.55).
 
         Returns
         -------
@@ -108,7 +108,7 @@ class _PointOrLine(_Homogeneous):
 
     @property
     def direction(self) -> np.ndarray:
-        """Unit direction of a point at infinity, or along a line; NaN for a finite point and the line at infinity."""
+        """Unit direction of an ideal point, or along a line; else NaN."""
         return self._direction(self._a)
 
     def _pair(self, other) -> tuple:
@@ -119,7 +119,7 @@ class _PointOrLine(_Homogeneous):
 
     @_shared
     def incidence(self, other) -> float:
-        """The form ``p @ l`` with ``other`` of the dual kind (thesis 5.23): zero iff the point is on the line.
+        """The form ``p @ l`` with ``other`` of the dual kind (thesis 5.23): zero iff incident.
 
         Parameters
         ----------
@@ -138,7 +138,7 @@ class _PointOrLine(_Homogeneous):
 
     @_shared
     def _signed_distance(self, other) -> float:
-        """Signed distance (m) of the point from the line, positive on its left (thesis 5.23); ``±inf`` or NaN if ideal.
+        """Signed distance (m) of the point from the line, positive on its left (thesis 5.23).
 
         Parameters
         ----------
@@ -360,7 +360,7 @@ class Line(_PointOrLine):
 
     @_shared
     def meet(self, other) -> Point:
-        """The common point with ``other`` (thesis 5.34); also ``l ^ m``.  Parallel lines meet at infinity.
+        """The common point with ``other`` (thesis 5.34), at infinity if parallel; also ``l ^ m``.
 
         Parameters
         ----------
@@ -371,7 +371,7 @@ class Line(_PointOrLine):
 
         Examples
         --------
-        >>> Line.from_point_direction((0, 1), (1, 0)).meet(Line.from_point_direction((2, 0), (0, 1)))
+        >>> Line([0.0, 1.0, 2.0]).meet(Line.from_point_direction((0, 1), (1, 0)))   # x = 2, y = 1
         Point(x=2, y=1)
         """
         return Point(_p.meet(self._a, _vec(other, "other")))
@@ -396,7 +396,7 @@ Point.distance_to = Line.signed_distance = _PointOrLine._signed_distance
 
 
 def _conic_of(make, examples: str) -> classmethod:
-    """A constructor of :class:`Conic`: ``make`` of :mod:`planargeo.geometry.conics`, documented by ``make``."""
+    """A constructor of :class:`Conic`: ``make`` of the conics module, with its docstring."""
     def construct(cls, *args, **kwargs):
         return cls(make(*args, **kwargs))
 
@@ -502,7 +502,7 @@ class Conic(_Homogeneous):
         return Point(_c.pole(self._a, _vec(line, "line")))
 
     def classify(self, rtol: float = 1e-10) -> _c.ConicType:
-        """Real / imaginary / degenerate and kind (thesis 5.2.2; :func:`planargeo.geometry.conics.classify`).
+        """Real / imaginary / degenerate and kind (thesis 5.2.2; :func:`~.conics.classify`).
 
         Parameters
         ----------
@@ -554,7 +554,7 @@ class Conic(_Homogeneous):
 
     @_shared
     def tangents_from(self, point):
-        """The two tangents from an exterior ``point`` and their contact points (thesis 5.2.2, 5.39).
+        """The two tangents from an exterior ``point``, and their contacts (thesis 5.2.2, 5.39).
 
         Parameters
         ----------
@@ -575,7 +575,7 @@ class Conic(_Homogeneous):
         return (Line(L[0]), Line(L[1])), (Point(X[0]), Point(X[1]))
 
     def affine_frame(self) -> _c.AffineFrame:
-        """``x = A u + t`` mapping the unit curve onto this real conic (:func:`planargeo.geometry.conics.affine_frame`).
+        """``x = A u + t`` mapping the unit curve onto this real conic (``conics.affine_frame``).
 
         Returns
         -------

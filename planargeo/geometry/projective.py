@@ -105,7 +105,7 @@ def _fit(a: np.ndarray, core: int = 1, tiny: float = _TINY, huge: float = _HUGE)
 
 
 def _fit_line(l: np.ndarray) -> np.ndarray:
-    """Lines scaled exactly by a power of two to a force ``|(fx, fy)|`` near 1 (the line at infinity: ``|tz|``)."""
+    """Lines scaled exactly by a power of two to a force ``|(fx, fy)|`` (else ``|tz|``) near 1."""
     if l.ndim == 1:                           # one line: plain floats are faster
         fx, fy, tz = l.tolist()
         m = max(abs(fx), abs(fy)) or abs(tz)
@@ -159,7 +159,7 @@ def normalize_point(p) -> np.ndarray:
 
 @_shared
 def normalize_line(l) -> np.ndarray:
-    """Base coordinates of lines (thesis 5.11, 5.55): unit force, or ``tz = ±1`` at infinity (sign kept).
+    """Base coordinates of lines (thesis 5.11, 5.55): unit force, or ``tz = ±1`` at infinity.
 
     Parameters
     ----------
@@ -188,7 +188,7 @@ def normalize_line(l) -> np.ndarray:
 
 @_shared
 def normalize(x, kind: str | None = None) -> np.ndarray:
-    """Base coordinates of points or lines by ``kind`` (thesis 5.49, 5.55; :func:`normalize_point`, :func:`normalize_line`).
+    """Base coordinates of points or lines by ``kind`` (thesis 5.49, 5.55; ``normalize_*``).
 
     Parameters
     ----------
@@ -283,7 +283,7 @@ def from_xy(xy) -> np.ndarray:
 
 @_shared
 def from_direction(d) -> np.ndarray:
-    """The point at infinity ``[dy, -dx, 0]`` in direction ``d`` (a translation perpendicular to ``d``).
+    """The point at infinity ``[dy, -dx, 0]`` in direction ``d`` (a translation normal to ``d``).
 
     Parameters
     ----------
@@ -314,7 +314,7 @@ def from_direction(d) -> np.ndarray:
 
 @_shared
 def to_xy(p) -> np.ndarray:
-    """Euclidean coordinates ``(x, y) = (-p1/w, p0/w)`` of points (thesis 5.51); NaN at infinity, silently.
+    """Euclidean coordinates ``(-p1/w, p0/w)`` of points (thesis 5.51); NaN at infinity, silently.
 
     Parameters
     ----------
@@ -341,7 +341,7 @@ def to_xy(p) -> np.ndarray:
 
 @_shared
 def direction(p) -> np.ndarray:
-    """Unit direction ``(-b, a)/|(a, b)|`` of a point at infinity ``[a, b, 0]``; NaN for finite points.
+    """Unit direction ``(-b, a)/|(a, b)|`` of an ideal point ``[a, b, 0]``; NaN for finite points.
 
     Parameters
     ----------
@@ -414,7 +414,7 @@ def foot_point(l) -> np.ndarray:
 # --------------------------------------------------------------------------- join / meet
 @_shared
 def cross_cond(a, b) -> np.ndarray:
-    """Condition number ``κ = |a| |b| / |a × b|`` of :func:`join` and :func:`meet`: ``a × b`` is good to ``ε κ``.
+    """Condition number ``κ = |a| |b| / |a × b|`` of :func:`join` and :func:`meet`.
 
     Parameters
     ----------
@@ -614,7 +614,7 @@ def signed_distance(p, l) -> np.ndarray:
 
 @_shared
 def pencil(l1, l2, beta) -> np.ndarray:
-    """Member ``l1 + beta (l2 - l1)`` of the pencil of two lines (thesis 5.20, 5.21, 5.22; of points, thesis 5.9).
+    """Member ``l1 + beta (l2 - l1)`` of the pencil of two lines (thesis 5.20-5.22; points: (5.9)).
 
     Parameters
     ----------
@@ -640,7 +640,7 @@ def pencil(l1, l2, beta) -> np.ndarray:
 
 @_shared
 def line_through_point_direction(p, d) -> np.ndarray:
-    """The line through point ``p`` along direction ``d``: for ``w = 1`` the wrench of force ``d`` through ``p``.
+    """The line through point ``p`` along ``d`` (for ``w = 1``: the wrench of force ``d`` at ``p``).
 
     Parameters
     ----------
@@ -672,7 +672,7 @@ def line_through_point_direction(p, d) -> np.ndarray:
 # --------------------------------------------------------------------------- standard coordinates
 @_shared
 def to_standard(x) -> np.ndarray:
-    """Standard homogeneous coordinates ``T @ x`` (thesis 5.1-5.16, 5.47): ``(x, y)`` is ``[1, x, y]``.
+    """Standard coordinates ``T @ x`` (thesis 5.1-5.16, 5.47): ``(x, y)`` is ``[1, x, y]``.
 
     Parameters
     ----------
@@ -692,7 +692,7 @@ def to_standard(x) -> np.ndarray:
 
 @_shared
 def from_standard(x) -> np.ndarray:
-    """The package's coordinates of standard homogeneous points or lines (thesis 5.47; ``T`` is its own inverse).
+    """The package's coordinates of standard points or lines (thesis 5.47; ``T`` is self-inverse).
 
     Parameters
     ----------

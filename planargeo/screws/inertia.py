@@ -55,7 +55,7 @@ RIGID_RTOL = 1e-10
 
 
 def _check_rigid(M: np.ndarray, name: str) -> np.ndarray:
-    """``M``, checked to have the rigid-body form ``M[0, 0] == M[1, 1]``, ``M[0, 1] == 0`` (thesis 4.58)."""
+    """``M``, checked for the rigid form ``M[0, 0] == M[1, 1]``, ``M[0, 1] == 0`` (thesis 4.58)."""
     scale = np.abs(M).max(axis=(-2, -1), initial=0.0)
     dev = np.maximum(np.abs(M[..., 0, 0] - M[..., 1, 1]),
                      np.maximum(np.abs(M[..., 0, 1]), np.abs(M[..., 1, 0])))
@@ -83,7 +83,7 @@ def _vec(x, name) -> np.ndarray:
 # not checked (Inertia checks it); those dividing by the mass reject inertia[0, 0] <= 0.
 @_documented
 def mass(inertia) -> np.ndarray:
-    """Mass ``m = I[0, 0]`` (kg) of a rigid-body inertia (thesis 1.66, 4.58; the form is not checked).
+    """Mass ``m = I[0, 0]`` (kg) of a rigid-body inertia (thesis 1.66, 4.58; form not checked).
 
     Parameters
     ----------
@@ -231,7 +231,7 @@ def percussion_axis(inertia, point) -> np.ndarray:
 
     Examples
     --------
-    >>> percussion_axis(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0])   # 5.66: the line x = 1.25
+    >>> percussion_axis(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0])   # 5.66: x = 1.25
     array([0. , 2. , 2.5])
     """
     I = _psd(inertia)
@@ -261,7 +261,7 @@ def percussion_pole(inertia, line) -> np.ndarray:
 
     Examples
     --------
-    >>> percussion_pole(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0])   # a couple: about the centre
+    >>> percussion_pole(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0])   # a couple: centre
     array([ 0., -1.,  1.])
     """
     I = _pd(inertia)
@@ -380,7 +380,7 @@ def _derived(function, doc: str) -> property:
 
 
 def _of_matrix(function, name: str | None = None):
-    """A method of :class:`Inertia`: ``function`` of its matrix, documented by it (without ``inertia``)."""
+    """A method of :class:`Inertia`: ``function`` of its matrix, documented by it."""
     def method(self, *args, **kwargs):
         return function(self._array, *args, **kwargs)
 
@@ -390,7 +390,7 @@ def _of_matrix(function, name: str | None = None):
     method.__name__ = name or function.__name__
     method.__qualname__ = f"Inertia.{method.__name__}"
     doc = re.sub(r"\n    inertia : [^\n]*\n        [^\n]*", "", function.__doc__)
-    raises = r"    Raises\n    ------\n(    \S[^\n]*\n        [^\n]*``inertia``[^\n]*\n)+\n"   # of ``inertia``
+    raises = r"    Raises\n    ------\n(    \S[^\n]*\n        [^\n]*``inertia``[^\n]*\n)+\n"
     doc = re.sub(raises, "", doc)
     method.__doc__ = doc.replace("    Parameters\n    ----------\n\n", "")
     return method
@@ -440,7 +440,7 @@ class Inertia(_Held):
     @classmethod
     @_documented
     def from_mass(cls, mass, com, radius_of_gyration=None, inertia=None) -> "Inertia":
-        """Inertia of mass ``mass`` centred at ``com``, given ``ρ`` or ``J = m ρ²`` (thesis 4.58, 5.64).
+        """Inertia of mass ``mass`` at ``com``, given ``ρ`` or ``J = m ρ²`` (thesis 4.58, 5.64).
 
         Parameters
         ----------
@@ -478,7 +478,7 @@ class Inertia(_Held):
     @classmethod
     @_documented
     def from_polygon(cls, geometry, density=1.0) -> "Inertia":
-        """Inertia of a uniform lamina (shapely ``Polygon`` / ``MultiPolygon``; see :func:`polygon_moments`).
+        """Inertia of a uniform lamina, a shapely (Multi)Polygon (see :func:`polygon_moments`).
 
         Parameters
         ----------
@@ -623,7 +623,7 @@ class Inertia(_Held):
 
         Examples
         --------
-        >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_axis([0.0, 0.0, 1.0])   # x = 1.25
+        >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_axis([0.0, 0.0, 1.0])
         Line(through=(1.25, 0), direction=(0, 1))
         """
         from planargeo.geometry.elements import Line

@@ -55,7 +55,7 @@ CASES = {
 
 @dataclass(frozen=True)
 class SpecialCase:
-    """A named case: ``name`` (a key of :data:`CASES`), ``text`` (ending with the equation) and ``equation``.
+    """A named case: ``name`` (a key of :data:`CASES`), ``text`` (ending with it) and ``equation``.
 
     Attributes
     ----------
@@ -98,7 +98,7 @@ def _small(x: float, scale: float, rtol: float) -> bool:
 
 
 def _one(x, name: str, rtol, cases: tuple, part) -> SpecialCase:
-    """The case of one twist or wrench ``x``: ``cases`` = (zero, ideal, finite); ideal when ``part(x)`` is small."""
+    """The case of one twist or wrench among ``cases``: zero, ideal (``part(x)`` small), finite."""
     a, rtol = _single(x, name), check_tolerance(rtol)
     n = float(np.linalg.norm(a))
     if n == 0:
@@ -123,7 +123,7 @@ def _coincide(A: np.ndarray, B: np.ndarray, rtol) -> bool:
 
 @_documented
 def twist_case(v, rtol: float = 1e-12) -> SpecialCase:
-    """Name the case of one twist: ``zero_twist``, ``pure_translation`` (``ω ≈ 0``) or ``pure_rotation``.
+    """Name the case of one twist: ``zero_twist``, ``pure_translation`` or ``pure_rotation``.
 
     Parameters
     ----------
@@ -161,7 +161,7 @@ def wrench_case(f, rtol: float = 1e-12) -> SpecialCase:
 
 @_documented
 def pair_case(v, f, rtol: float = 1e-12) -> SpecialCase:
-    """Name the relation of a twist and a wrench: ``workless`` (``|v·f| ≤ rtol |v| |f|``, thesis 5.69) or ``power``.
+    """Name a twist and wrench ``workless`` (``|v·f| ≤ rtol |v| |f|``, thesis 5.69) or ``power``.
 
     Parameters
     ----------
@@ -292,7 +292,7 @@ def horizon_point(handle, centre=(0.0, 0.0), radius=1.0) -> np.ndarray:
 
 
 def horizon_handle(p, centre=(0.0, 0.0), radius=1.0) -> np.ndarray:
-    """Where the drag handle of :func:`horizon_point` sits for the point ``p`` (inside or on the horizon).
+    """Where the drag handle of :func:`horizon_point` sits for the point ``p`` (within the horizon).
 
     Parameters
     ----------

@@ -1,4 +1,4 @@
-"""Planar screws as arrays (thesis ch. 1, 4): twists ``[vx, vy, ω]`` are points, wrenches ``[fx, fy, τz]`` lines.
+"""Planar screws as arrays (thesis 1, 4): twists ``[vx, vy, ω]`` are points, wrenches lines.
 
 Quantities are given at the origin unless said otherwise and broadcast over leading dimensions;
 a result beyond double precision raises :class:`~planargeo.errors.NumericOverflowError`.
@@ -46,7 +46,7 @@ documented = entries(SCREWS)
 
 @documented
 def X_P(point) -> np.ndarray:
-    """Twist transform from the origin to ``point`` (thesis 4.8): ``X_P(p) @ v`` is ``v`` seen at ``p``.
+    """Twist transform from the origin to ``point`` (thesis 4.8): ``X_P(p) @ v`` is ``v`` at ``p``.
 
     Parameters
     ----------
@@ -87,7 +87,7 @@ def X_P_inv_T(point) -> np.ndarray:
 
 @documented
 def rot(theta) -> np.ndarray:
-    """Rotation of screw coordinates by ``theta`` about the reference point (twists and wrenches alike).
+    """Rotation of screw coordinates by ``theta`` about the reference point (twists, wrenches).
 
     Parameters
     ----------
@@ -114,7 +114,7 @@ def rot(theta) -> np.ndarray:
 @overflow_checked("theta or point")
 @documented
 def X_frame(theta, point) -> np.ndarray:
-    """Twist transform to a frame at ``point`` turned by ``theta``: ``rot(θ) X_P(p)`` (thesis 1.56, 4.7).
+    """Twist transform ``rot(θ) X_P(p)`` to a turned frame at ``point`` (thesis 1.56, 4.7).
 
     Parameters
     ----------
@@ -157,7 +157,7 @@ def X_frame_inv_T(theta, point) -> np.ndarray:
 @overflow_checked("theta or about")
 @documented
 def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
-    """Twist map ``X_P(-c) rot(θ) X_P(c)`` of a rigid rotation by ``theta`` about ``about`` (thesis 4.8, 1.56).
+    """Twist map ``X_P(-c) rot(θ) X_P(c)``: a turn by ``theta`` about ``about`` (thesis 4.8, 1.56).
 
     Wrenches are carried by its inverse transpose, inertias by :func:`inertia_rotated`.
 
@@ -228,7 +228,7 @@ def crf(v) -> np.ndarray:
 
 @documented
 def unit_rotation(point) -> np.ndarray:
-    """Unit twist ``[y, -x, 1]`` of a counter-clockwise rotation about ``point`` (thesis 4.10, 5.51).
+    """Unit twist ``[y, -x, 1]`` of a counter-clockwise turn about ``point`` (thesis 4.10, 5.51).
 
     Parameters
     ----------
@@ -356,7 +356,7 @@ def kinetic_energy(inertia, twist) -> np.ndarray:
 
     Examples
     --------
-    >>> float(kinetic_energy(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 3.0]))   # ½ (J + m d²) ω²
+    >>> float(kinetic_energy(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 3.0]))  # ½(J+md²)ω²
     11.25
     """
     I = _inertia_psd(inertia)
@@ -393,7 +393,7 @@ def twist_magnitude(twist) -> np.ndarray:
 
 @documented
 def pole_xy(twist) -> np.ndarray:
-    """Euclidean pole ``(-v_y/ω, v_x/ω)`` of a twist (thesis 4.10, 5.51); NaN for a translation, silently.
+    """Euclidean pole ``(-v_y/ω, v_x/ω)`` of a twist (thesis 4.10, 5.51); NaN for a translation.
 
     Parameters
     ----------
@@ -431,7 +431,7 @@ def wrench_magnitude(wrench) -> np.ndarray:
 
 @documented
 def wrench_axis(wrench):
-    """Direction ``e = f/F``, distance ``d = τ/F`` and normal ``n`` of a line of action (thesis 4.28-4.32).
+    """Direction ``e``, distance ``d = τ/F``, normal ``n`` of a line of action (thesis 4.28-4.32).
 
     The point nearest the origin is ``n d`` (4.30).  A couple gives NaN ``e``, ``n`` and
     ``d = ±inf``; the zero wrench all NaN; no warnings.
@@ -468,7 +468,7 @@ def wrench_axis(wrench):
 
 @documented
 def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
-    """True where twist and wrench are reciprocal, ``|vᵀf| <= rtol |v| |f|`` (thesis 1.9, 5.61, 5.69).
+    """Twist and wrench reciprocal, ``|vᵀf| <= rtol |v| |f|`` (thesis 1.9, 5.61, 5.69).
 
     Parameters
     ----------
@@ -551,7 +551,7 @@ def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
 @overflow_checked("inertia, theta or about")
 @documented
 def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
-    """Inertia ``M⁻ᵀ I M⁻¹`` of the body turned by ``theta`` about ``about`` (thesis 1.68, :func:`rotation_about`).
+    """Inertia ``M⁻ᵀ I M⁻¹`` of the body turned by ``theta`` about ``about`` (thesis 1.68, 4.8).
 
     Parameters
     ----------
@@ -579,7 +579,7 @@ def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
 @overflow_checked("inertia or twist")
 @documented
 def momentum(inertia, twist) -> np.ndarray:
-    """Momentum wrench ``p = I v`` (thesis 1.65, 5.72); its line passes through the centre of mass (1.60).
+    """Momentum wrench ``p = I v`` (thesis 1.65, 5.72), its line through the centre of mass (1.60).
 
     Parameters
     ----------
@@ -697,7 +697,7 @@ def _is_number(x) -> bool:
 
 
 class _Held:
-    """Common base of :class:`Twist`, :class:`Wrench` and :class:`planargeo.screws.Inertia`: one read-only array."""
+    """Common base of :class:`Twist`, :class:`Wrench` and ``Inertia``: one read-only array."""
 
     __slots__ = ("_array",)
     __hash__ = None
@@ -769,7 +769,7 @@ class _Screw(_Held):
     __rmul__ = __mul__
 
     def rotated(self, theta, about=None):
-        """The screw turned by ``theta`` about ``about`` (default the reference point); power is unchanged.
+        """The screw turned by ``theta`` about ``about`` (the reference point by default).
 
         Examples
         --------
@@ -787,7 +787,7 @@ class _Screw(_Held):
             return self._new(np.einsum("...ij,...j->...i", M, self._array), "rotated")
 
     def at(self, point):
-        """The same screw at ``point``: a twist ``X_P v`` (thesis 4.8), a wrench ``X_P⁻ᵀ f`` (4.24, 4.26).
+        """The same screw at ``point``: ``X_P v`` (thesis 4.8) or ``X_P⁻ᵀ f`` (4.24, 4.26).
 
         Parameters
         ----------
@@ -849,7 +849,7 @@ class _Screw(_Held):
 
         Examples
         --------
-        >>> bool(Wrench.couple(1.0).reciprocal(Twist.translation([1.0, 0.0])))   # no work on a translation
+        >>> bool(Wrench.couple(1.0).reciprocal(Twist.translation([1.0, 0.0])))   # no work
         True
         """
         return reciprocal(*self._pair(other), rtol)
@@ -874,9 +874,9 @@ class _Screw(_Held):
 
 @documented
 class Twist(_Screw):
-    """A planar velocity (or acceleration) twist ``[vx, vy, ω]`` at the origin (thesis 4.6): a point, its pole (5.51).
+    """A velocity (or acceleration) twist ``[vx, vy, ω]`` at the origin (thesis 4.6, 5.51).
 
-    ``.at(P)`` is the same motion at ``P``, ``X_P v`` (thesis 4.8).
+    It is a point, its pole; ``.at(P)`` is the same motion at ``P``, ``X_P v`` (thesis 4.8).
 
     Parameters
     ----------
@@ -983,10 +983,10 @@ class Twist(_Screw):
 
 @documented
 class Wrench(_Screw):
-    """A planar force wrench ``[fx, fy, τz]`` at the origin (thesis 4.21): a line, its line of action (5.56).
+    """A force wrench ``[fx, fy, τz]`` at the origin (thesis 4.21), its line of action (5.56).
 
-    ``.magnitude`` is ``F = |f|`` (4.22), 0 for a couple, whose strength is ``.moment``;
-    ``.at(P)`` is ``X_P⁻ᵀ f`` (thesis 4.24, 4.26).
+    It is a line; ``.magnitude`` is ``F = |f|`` (4.22), 0 for a couple, whose strength is
+    ``.moment``; ``.at(P)`` is ``X_P⁻ᵀ f`` (thesis 4.24, 4.26).
 
     Parameters
     ----------
@@ -1012,7 +1012,7 @@ class Wrench(_Screw):
     @classmethod
     @documented
     def force(cls, point, force) -> "Wrench":
-        """Pure force ``(fx, fy)`` along the line through ``point``: ``[fx, fy, x fy - y fx]`` (4.27).
+        """Pure force ``(fx, fy)`` on the line through ``point``: ``[fx, fy, x fy - y fx]`` (4.27).
 
         Parameters
         ----------
