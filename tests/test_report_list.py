@@ -54,7 +54,14 @@ def test_list_text_shows_symbols_equations_and_units(capsys):
 def test_list_columns_line_up_with_combining_marks(capsys):
     """q̇ (q + a combining dot) takes one column: the equation column starts at the same place in each row."""
     _, out, _ = call("--list", capsys=capsys)
-    rows = out.split("chain:")[1].split("car:")[0].splitlines()[1:]
+    lines = out.splitlines()
+    start = next(i for i, ln in enumerate(lines) if ln.startswith("chain:")) + 1
+    rows = []
+    for ln in lines[start:]:                    # the chain's rows: indented, up to the next scene
+        if not ln.startswith(" "):
+            break
+        rows.append(ln)
+    assert len(rows) >= 4
     cols = {report._width(r[:r.index("(")]) for r in rows}
     assert len(cols) == 1
 
