@@ -93,6 +93,7 @@ def benchmark_charts(folder) -> list[str]:
     Parameters
     ----------
     folder : str or pathlib.Path
+        Where the benchmarks wrote their charts.
 
     Returns
     -------

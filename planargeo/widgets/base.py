@@ -266,6 +266,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         Returns
         -------
         list of Handle
+            Each a point the user drags, with the control values a drag sets.
         """
         return []
 
@@ -317,6 +318,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         Returns
         -------
         list of str
+            The choices of the "focus" menu after "all", in menu order.
         """
         return []
 

@@ -45,6 +45,7 @@ def grip(res, mu: float):
     Returns
     -------
     tuple of float
+        The acceleration, then the most the tyres hold; they slip where the first is larger.
 
     Examples
     --------

@@ -78,6 +78,7 @@ def chain_for(n: int, joints: str = "revolute", gravity: bool = True, length: fl
     Returns
     -------
     Model
+        The chain, its first joint at ``base`` on the ground.
 
     Raises
     ------

@@ -52,6 +52,7 @@ def cached(cache: dict, key, make: Callable[[], Any]) -> Any:
     Returns
     -------
     Any
+        The entry, whether built now or by an earlier call.
 
     Examples
     --------

@@ -286,10 +286,12 @@ def nice_length(span: float) -> float:
     Parameters
     ----------
     span : float
+        Width of the view (m).
 
     Returns
     -------
     float
+        The length of the scale bar (m).
 
     Examples
     --------
