@@ -12,10 +12,12 @@ import textwrap
 
 _PLACE = re.compile(r"^( *)\{([\w ]+)\}$", re.M)
 
-#: Returns sections of broadcast arrays, by shape: every table holds them (a line ``{returns_3}``).
+#: Returns sections of broadcast arrays, by shape, and the Parameters heading: every table holds
+#: them (a line ``{parameters point returns_3}`` is a whole Parameters and Returns).
 RETURNS = {f"returns_{key}": f"Returns\n-------\nnumpy.ndarray{kind}, shape (...{shape})"
            for key, kind, shape in [("scalar", "", ""), ("bool", " of bool", ""), ("2", "", ", 2"),
                                     ("3", "", ", 3"), ("3x3", "", ", 3, 3")]}
+RETURNS["parameters"] = "Parameters\n----------"
 
 
 def entries(*tables):

@@ -129,9 +129,7 @@ def _nline(l):
 def polar(C, p) -> np.ndarray:
     """Polar line ``C p`` of point ``p`` (thesis 5.36): an inertia's percussion axis (5.64-5.68).
 
-    Parameters
-    ----------
-    {C p}
+    {parameters C p}
 
     Returns
     -------
@@ -153,9 +151,7 @@ def polar(C, p) -> np.ndarray:
 def pole(C, l, rtol: float = 1e-13) -> np.ndarray:
     """Pole ``C⁻¹ l`` of line ``l`` (thesis 5.37), solved: of an inertia, the acceleration.
 
-    Parameters
-    ----------
-    {C l}
+    {parameters C l}
     rtol : float, optional
         ``C`` counts as singular when its condition number exceeds ``1/rtol``.
 
@@ -190,11 +186,7 @@ def pole(C, l, rtol: float = 1e-13) -> np.ndarray:
 def conic_residual(C, p) -> np.ndarray:
     """The quadratic form ``p @ C @ p`` (thesis 5.38); zero on the conic.
 
-    Parameters
-    ----------
-    {C p}
-
-    {returns_scalar}
+    {parameters C p returns_scalar}
 
     Examples
     --------
@@ -211,9 +203,7 @@ def conic_residual(C, p) -> np.ndarray:
 def is_on_conic(C, p, rtol: float = 1e-9) -> np.ndarray:
     """True where ``|p C p| <= rtol |C| |p|²`` (relative form of thesis 5.38).
 
-    Parameters
-    ----------
-    {C p}
+    {parameters C p}
     rtol : float, optional
         Relative tolerance of the test.
 
@@ -299,9 +289,7 @@ def classify(C, rtol: float = 1e-10):
     degenerate, ``S`` definite imaginary, else ``det A`` > 0, < 0, = 0 an ellipse, hyperbola,
     parabola (eigenvalues below ``rtol`` relative count as zero).
 
-    Parameters
-    ----------
-    {C}
+    {parameters C}
     rtol : float
         Relative tolerance below which an eigenvalue counts as zero.
 
@@ -333,11 +321,7 @@ def centre(C) -> np.ndarray:
     ``C[0] × C[1]``: an ideal point for a parabola, the vertex of a line pair, the centre of mass
     of an inertia.
 
-    Parameters
-    ----------
-    {C}
-
-    {returns_3}
+    {parameters C returns_3}
 
     Raises
     ------
@@ -395,9 +379,7 @@ def line_conic_intersections(C, l, rtol: float = 1e-9):
     Solves the binary quadratic on two points of the line without cancellation; a discriminant
     negative by less than ``rtol`` of its scale counts as zero (a tangent).
 
-    Parameters
-    ----------
-    {C l}
+    {parameters C l}
     rtol : float, optional
         Relative tolerance of the discriminant.
 
@@ -425,9 +407,7 @@ def line_conic_intersections(C, l, rtol: float = 1e-9):
 def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
     """The two tangents from a point to a conic and their contact points (thesis 5.2.2, 5.39).
 
-    Parameters
-    ----------
-    {C p}
+    {parameters C p}
     on_interior : {"raise", "nan"}
         For a point with no real tangents: raise :class:`InputError`, or give NaN rows.
     rtol : float
@@ -539,9 +519,7 @@ class InteriorConstruction:
 def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 1e-9) -> ExteriorConstruction:
     """The polar of an exterior point constructed (thesis 5.2.2, Fig. 5.2): its tangents' contacts.
 
-    Parameters
-    ----------
-    {C p}
+    {parameters C p}
     on_interior : {"raise", "nan"}, optional
         For a point with no real tangents (:func:`tangents_from_point`).
     rtol : float, optional
@@ -573,9 +551,7 @@ def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 
 def polar_construction_interior(C, p, lines=None, on_miss: str = "raise", rtol: float = 1e-9) -> InteriorConstruction:
     """The polar of an interior point constructed (thesis 5.2.2, Fig. 5.3): two chords' poles.
 
-    Parameters
-    ----------
-    {C p}
+    {parameters C p}
     lines : array_like, shape (..., 2, 3), optional
         Two distinct lines through ``p`` (default: two of ``p × e_i``).
     on_miss : {"raise", "nan"}
@@ -670,9 +646,7 @@ def correlation(C, Q, L, rtol: float = 1e-13):
     Theorem 12 (corrected to the direction of 5.36-5.37): if ``L`` passes through ``Q``, the pole
     ``P`` lies on the polar ``M``.
 
-    Parameters
-    ----------
-    {C}
+    {parameters C}
     Q : array_like, shape (..., 3)
         A point.
     L : array_like, shape (..., 3)
@@ -748,9 +722,7 @@ def _solve_basis(Mcols, v, name: str, rtol: float):
 def decompose_point(P, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     """Components ``u`` of ``P = u1 Q1 + u2 Q2 + u3 Q3`` (thesis 5.42).
 
-    Parameters
-    ----------
-    {decomposed_P}
+    {parameters decomposed_P}
     Q1, Q2, Q3 : array_like, shape (..., 3)
         Three non-collinear base points.
     {rtol_base}
@@ -777,10 +749,7 @@ def decompose_point(P, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
 def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
     """Components ``u`` of ``L = u1 C Q1 + u2 C Q2 + u3 C Q3`` (thesis 5.43).
 
-    Parameters
-    ----------
-    {C}
-    {decomposed_L}
+    {parameters C decomposed_L}
     Q1, Q2, Q3 : array_like, shape (..., 3)
         Three non-collinear base points (base lines: their polars).
     {rtol_base}
@@ -814,9 +783,7 @@ def decompose_line(C, L, Q1, Q2, Q3, rtol: float = 1e-13) -> np.ndarray:
 def special_base(C, Q1, rtol: float = 1e-9):
     """The special base of Fig. 5.4: ``Q1`` exterior, ``Q2, Q3`` its tangents' contact points.
 
-    Parameters
-    ----------
-    {C}
+    {parameters C}
     Q1 : array_like, shape (..., 3)
         A point exterior to the real conic ``C``.
     rtol : float, optional
@@ -853,11 +820,7 @@ def decompose_point_special(C, P, Q1, Q2, Q3) -> np.ndarray:
 
     ``u1 = Q1 C P / Q1 C Q1``, ``u2 = Q3 C P / Q3 C Q2``, ``u3 = Q2 C P / Q2 C Q3``.
 
-    Parameters
-    ----------
-    {C decomposed_P special_base}
-
-    {components not_special}
+    {parameters C decomposed_P special_base components not_special}
 
     Examples
     --------
@@ -882,11 +845,7 @@ def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
 
     ``u1 = Q1·L / Q1 C Q1``, ``u2 = Q3·L / Q3 C Q2``, ``u3 = Q2·L / Q2 C Q3``.
 
-    Parameters
-    ----------
-    {C decomposed_L special_base}
-
-    {components not_special}
+    {parameters C decomposed_L special_base components not_special}
 
     Examples
     --------
@@ -927,11 +886,7 @@ def drawable_conic(C) -> np.ndarray:
     ``k = 1 / (C⁻¹)[2, 2]``, ``e = [0, 0, 1]``: for an inertia, the circle of gyration; its polars
     are those of ``C`` reflected through the centre.
 
-    Parameters
-    ----------
-    {C}
-
-    {returns_3x3}
+    {parameters C returns_3x3}
 
     Examples
     --------
@@ -1114,9 +1069,7 @@ def _turned(kind: str, centre, axes, angle) -> np.ndarray:
 def conic_circle(centre, radius, imaginary: bool = False) -> np.ndarray:
     """Circle ``|x - c|² = r²`` (or the imaginary ``|x - c|² = -r²``, an inertia over its mass).
 
-    Parameters
-    ----------
-    {centre}
+    {parameters centre}
     radius : array_like, shape (...)
         Radius ``r`` (m).
     imaginary : bool, optional
@@ -1155,11 +1108,7 @@ def conic_circle(centre, radius, imaginary: bool = False) -> np.ndarray:
 def conic_ellipse(centre, axes, angle=0.0) -> np.ndarray:
     """Ellipse with semi-axes ``axes = (a, b)``, the first turned by ``angle`` from +x.
 
-    Parameters
-    ----------
-    {centre ellipse_axes}
-
-    {conic_matrix}
+    {parameters centre ellipse_axes conic_matrix}
 
     Examples
     --------
@@ -1174,11 +1123,7 @@ def conic_ellipse(centre, axes, angle=0.0) -> np.ndarray:
 def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
     """Hyperbola ``x'²/a² - y'²/b² = 1`` in the frame at ``centre`` turned by ``angle``.
 
-    Parameters
-    ----------
-    {centre hyperbola_axes}
-
-    {conic_matrix}
+    {parameters centre hyperbola_axes conic_matrix}
 
     Examples
     --------
@@ -1193,11 +1138,7 @@ def conic_hyperbola(centre, axes, angle=0.0) -> np.ndarray:
 def conic_parabola(vertex, focal_length, angle=0.0) -> np.ndarray:
     """Parabola ``y' = x'² / (4 f)`` (focus ``(0, f)``) in the turned frame at ``vertex``.
 
-    Parameters
-    ----------
-    {parabola}
-
-    {conic_matrix}
+    {parameters parabola conic_matrix}
 
     Examples
     --------

@@ -121,9 +121,7 @@ class _PointOrLine(_Homogeneous):
     def incidence(self, other) -> float:
         """The form ``p @ l`` with ``other`` of the dual kind (thesis 5.23): zero iff incident.
 
-        Parameters
-        ----------
-        {other}
+        {parameters other}
 
         Returns
         -------
@@ -140,9 +138,7 @@ class _PointOrLine(_Homogeneous):
     def _signed_distance(self, other) -> float:
         """Signed distance (m) of the point from the line, positive on its left (thesis 5.23).
 
-        Parameters
-        ----------
-        {other}
+        {parameters other}
 
         Returns
         -------
@@ -471,11 +467,7 @@ class Conic(_Homogeneous):
     def polar(self, point) -> Line:
         """The polar line ``C p`` of ``point`` (thesis 5.36, 5.64).
 
-        Parameters
-        ----------
-        {point}
-
-        {returns_line}
+        {parameters point returns_line}
 
         Examples
         --------
@@ -488,11 +480,7 @@ class Conic(_Homogeneous):
     def pole(self, line) -> Point:
         """The pole ``C⁻¹ l`` of ``line`` (thesis 5.37), the inverse of :meth:`polar`.
 
-        Parameters
-        ----------
-        {line}
-
-        {returns_point}
+        {parameters line returns_point}
 
         Examples
         --------
@@ -535,9 +523,7 @@ class Conic(_Homogeneous):
     def contains(self, point, rtol: float = 1e-9) -> bool:
         """True if ``point`` lies on the conic: ``|p C p| <= rtol |C| |p|²`` (thesis 5.38).
 
-        Parameters
-        ----------
-        {point}
+        {parameters point}
         rtol : float, optional
             Relative tolerance of the test.
 
@@ -556,9 +542,7 @@ class Conic(_Homogeneous):
     def tangents_from(self, point):
         """The two tangents from an exterior ``point``, and their contacts (thesis 5.2.2, 5.39).
 
-        Parameters
-        ----------
-        {point}
+        {parameters point}
 
         Returns
         -------

@@ -132,11 +132,7 @@ def _refuse_zero(x: np.ndarray, name: str, what: str) -> None:
 def normalize_point(p) -> np.ndarray:
     """Base coordinates of points (thesis 5.2, 5.49): weight ``w = 1``, or unit length at infinity.
 
-    Parameters
-    ----------
-    {p}
-
-    {normalized}
+    {parameters p normalized}
 
     Raises
     ------
@@ -161,11 +157,7 @@ def normalize_point(p) -> np.ndarray:
 def normalize_line(l) -> np.ndarray:
     """Base coordinates of lines (thesis 5.11, 5.55): unit force, or ``tz = ±1`` at infinity.
 
-    Parameters
-    ----------
-    {l}
-
-    {normalized}
+    {parameters l normalized}
 
     Raises
     ------
@@ -222,11 +214,7 @@ def normalize(x, kind: str | None = None) -> np.ndarray:
 def is_ideal(p) -> np.ndarray:
     """True for points at infinity: weight ``w = p[..., 2]`` exactly zero (thesis 5.5).
 
-    Parameters
-    ----------
-    {p}
-
-    {returns_bool}
+    {parameters p returns_bool}
 
     Examples
     --------
@@ -241,11 +229,7 @@ def is_ideal(p) -> np.ndarray:
 def is_at_infinity(l) -> np.ndarray:
     """True for the line at infinity: force ``(fx, fy)`` exactly zero (thesis 5.16).
 
-    Parameters
-    ----------
-    {l}
-
-    {returns_bool}
+    {parameters l returns_bool}
 
     Examples
     --------
@@ -316,11 +300,7 @@ def from_direction(d) -> np.ndarray:
 def to_xy(p) -> np.ndarray:
     """Euclidean coordinates ``(-p1/w, p0/w)`` of points (thesis 5.51); NaN at infinity, silently.
 
-    Parameters
-    ----------
-    {p}
-
-    {returns_2}
+    {parameters p returns_2}
 
     Raises
     ------
@@ -343,11 +323,7 @@ def to_xy(p) -> np.ndarray:
 def direction(p) -> np.ndarray:
     """Unit direction ``(-b, a)/|(a, b)|`` of an ideal point ``[a, b, 0]``; NaN for finite points.
 
-    Parameters
-    ----------
-    {p}
-
-    {returns_2}
+    {parameters p returns_2}
 
     Examples
     --------
@@ -366,11 +342,7 @@ def direction(p) -> np.ndarray:
 def line_direction(l) -> np.ndarray:
     """Unit direction ``(fx, fy)/|f|`` along a line (thesis 5.55); NaN for the line at infinity.
 
-    Parameters
-    ----------
-    {l}
-
-    {returns_2}
+    {parameters l returns_2}
 
     Examples
     --------
@@ -388,11 +360,7 @@ def line_direction(l) -> np.ndarray:
 def foot_point(l) -> np.ndarray:
     """The point of a line nearest the origin, at weight 1 (NaN for the line at infinity).
 
-    Parameters
-    ----------
-    {l}
-
-    {returns_3}
+    {parameters l returns_3}
 
     Examples
     --------
@@ -561,11 +529,7 @@ def meet(l, m, cond_limit: float = COND_LIMIT) -> np.ndarray:
 def incidence(p, l) -> np.ndarray:
     """The form ``p @ l`` (thesis 5.23): zero iff ``p`` lies on ``l`` (5.24); a power (5.69).
 
-    Parameters
-    ----------
-    {p l}
-
-    {returns_scalar}
+    {parameters p l returns_scalar}
 
     Examples
     --------
@@ -585,11 +549,7 @@ def signed_distance(p, l) -> np.ndarray:
 
     Ideal elements give ``±inf``, or NaN for an ideal point on the line; no warning.
 
-    Parameters
-    ----------
-    {p l}
-
-    {returns_scalar}
+    {parameters p l returns_scalar}
 
     Examples
     --------
@@ -642,9 +602,7 @@ def pencil(l1, l2, beta) -> np.ndarray:
 def line_through_point_direction(p, d) -> np.ndarray:
     """The line through point ``p`` along ``d`` (for ``w = 1``: the wrench of force ``d`` at ``p``).
 
-    Parameters
-    ----------
-    {p}
+    {parameters p}
     d : array_like, shape (..., 2)
         Euclidean direction (non-zero).
 

@@ -85,11 +85,7 @@ def _vec(x, name) -> np.ndarray:
 def mass(inertia) -> np.ndarray:
     """Mass ``m = I[0, 0]`` (kg) of a rigid-body inertia (thesis 1.66, 4.58; form not checked).
 
-    Parameters
-    ----------
-    {inertia}
-
-    {returns_scalar}
+    {parameters inertia returns_scalar}
 
     Examples
     --------
@@ -114,13 +110,7 @@ def _with_mass(inertia, name: str = "inertia") -> np.ndarray:
 def centre_of_mass(inertia) -> np.ndarray:
     """Centre of mass ``c = (I[1, 2], -I[0, 2]) / m`` (m; thesis 1.66, 4.58): the conic's centre.
 
-    Parameters
-    ----------
-    {inertia}
-
-    {returns_2}
-
-    {no_mass}
+    {parameters inertia returns_2 no_mass}
 
     Examples
     --------
@@ -137,13 +127,7 @@ def centre_of_mass(inertia) -> np.ndarray:
 def rotational_inertia(inertia) -> np.ndarray:
     """Rotational inertia ``J = m ρ²`` (kg·m²) about the centre of mass (thesis 1.68, 4.58).
 
-    Parameters
-    ----------
-    {inertia}
-
-    {returns_scalar}
-
-    {no_mass}
+    {parameters inertia returns_scalar no_mass}
 
     Examples
     --------
@@ -160,13 +144,7 @@ def rotational_inertia(inertia) -> np.ndarray:
 def radius_of_gyration(inertia) -> np.ndarray:
     """Radius of gyration ``ρ = sqrt(J / m)`` (m; thesis 4.58, 5.64).
 
-    Parameters
-    ----------
-    {inertia}
-
-    {returns_scalar}
-
-    {no_mass}
+    {parameters inertia returns_scalar no_mass}
 
     Examples
     --------
@@ -182,11 +160,7 @@ def radius_of_gyration(inertia) -> np.ndarray:
 def mobility(inertia) -> np.ndarray:
     """Mobility ``I⁻¹``, the dual conic (thesis 8.3.5), computed with ``solve``.
 
-    Parameters
-    ----------
-    {inertia}
-
-    {returns_3x3}
+    {parameters inertia returns_3x3}
 
     Raises
     ------
@@ -218,9 +192,7 @@ def percussion_axis(inertia, point) -> np.ndarray:
     line from the pole to the centre of mass ``c``, beyond ``c`` at ``ρ²/d`` (5.67-5.68).  The
     pole at ``c`` gives the line at infinity; a pole at infinity a line through ``c``.
 
-    Parameters
-    ----------
-    {inertia pole}
+    {parameters inertia pole}
 
     Returns
     -------
@@ -245,9 +217,7 @@ def percussion_axis(inertia, point) -> np.ndarray:
 def percussion_pole(inertia, line) -> np.ndarray:
     """Acceleration pole ``a = I⁻¹ f`` whose axis of percussion is ``line`` (inverse of :func:`percussion_axis`).
 
-    Parameters
-    ----------
-    {inertia impulse}
+    {parameters inertia impulse}
 
     Returns
     -------
@@ -279,13 +249,7 @@ def drawable_conic(inertia) -> np.ndarray:
     mass.  The axis of percussion of a point is the reflection through the centre of its polar
     with respect to this circle (:func:`planargeo.geometry.conics.drawable_conic`).
 
-    Parameters
-    ----------
-    {inertia}
-
-    {returns_3x3}
-
-    {not_psd}
+    {parameters inertia returns_3x3 not_psd}
 
     Examples
     --------
@@ -613,9 +577,7 @@ class Inertia(_Held):
     def percussion_axis(self, point):
         """Axis of percussion of ``point`` as a :class:`planargeo.geometry.Line` (thesis 5.67).
 
-        Parameters
-        ----------
-        {pole}
+        {parameters pole}
 
         Returns
         -------
@@ -633,9 +595,7 @@ class Inertia(_Held):
     def percussion_pole(self, line):
         """Pole whose axis of percussion is ``line``, as a :class:`planargeo.geometry.Point`.
 
-        Parameters
-        ----------
-        {impulse}
+        {parameters impulse}
 
         Returns
         -------

@@ -48,11 +48,7 @@ documented = entries(SCREWS)
 def X_P(point) -> np.ndarray:
     """Twist transform from the origin to ``point`` (thesis 4.8): ``X_P(p) @ v`` is ``v`` at ``p``.
 
-    Parameters
-    ----------
-    {point}
-
-    {returns_3x3}
+    {parameters point returns_3x3}
 
     Examples
     --------
@@ -71,11 +67,7 @@ def X_P(point) -> np.ndarray:
 def X_P_inv_T(point) -> np.ndarray:
     """Wrench transform from the origin to ``point`` (thesis 4.24): ``inv(X_P(p)).T``.
 
-    Parameters
-    ----------
-    {point}
-
-    {returns_3x3}
+    {parameters point returns_3x3}
 
     Examples
     --------
@@ -89,11 +81,7 @@ def X_P_inv_T(point) -> np.ndarray:
 def rot(theta) -> np.ndarray:
     """Rotation of screw coordinates by ``theta`` about the reference point (twists, wrenches).
 
-    Parameters
-    ----------
-    {theta}
-
-    {returns_3x3}
+    {parameters theta returns_3x3}
 
     Examples
     --------
@@ -116,9 +104,7 @@ def rot(theta) -> np.ndarray:
 def X_frame(theta, point) -> np.ndarray:
     """Twist transform ``rot(θ) X_P(p)`` to a turned frame at ``point`` (thesis 1.56, 4.7).
 
-    Parameters
-    ----------
-    {theta}
+    {parameters theta}
     point : array_like (..., 2)
         Origin of the new frame ``(x, y)`` (m).
 
@@ -138,12 +124,7 @@ def X_frame(theta, point) -> np.ndarray:
 def X_frame_inv_T(theta, point) -> np.ndarray:
     """Wrench transform matching :func:`X_frame`: ``X⁻ᵀ = rot(θ) X_P⁻ᵀ`` (thesis 1.58, 4.24).
 
-    Parameters
-    ----------
-    {theta}
-    {point}
-
-    {returns_3x3}
+    {parameters theta point returns_3x3}
 
     Examples
     --------
@@ -161,9 +142,7 @@ def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
 
     Wrenches are carried by its inverse transpose, inertias by :func:`inertia_rotated`.
 
-    Parameters
-    ----------
-    {theta}
+    {parameters theta}
     about : array_like, shape (..., 2), optional
         Centre ``c`` of the rotation (m).
 
@@ -230,11 +209,7 @@ def crf(v) -> np.ndarray:
 def unit_rotation(point) -> np.ndarray:
     """Unit twist ``[y, -x, 1]`` of a counter-clockwise turn about ``point`` (thesis 4.10, 5.51).
 
-    Parameters
-    ----------
-    {point}
-
-    {returns_3}
+    {parameters point returns_3}
 
     Examples
     --------
@@ -321,11 +296,7 @@ def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
 def power(twist, wrench) -> np.ndarray:
     """Power ``vᵀf`` (W) of a wrench on a twist (thesis 5.73); zero means incidence.
 
-    Parameters
-    ----------
-    {twist wrench}
-
-    {returns_scalar}
+    {parameters twist wrench returns_scalar}
 
     Examples
     --------
@@ -346,13 +317,7 @@ def _dot(a, b):
 def kinetic_energy(inertia, twist) -> np.ndarray:
     """Kinetic energy ``½ vᵀ I v`` (J; thesis 1.9), invariant under frame changes.
 
-    Parameters
-    ----------
-    {inertia twist}
-
-    {returns_scalar}
-
-    {not_psd}
+    {parameters inertia twist returns_scalar not_psd}
 
     Examples
     --------
@@ -376,11 +341,7 @@ def _inertia_psd(inertia, name: str = "inertia") -> np.ndarray:
 def twist_magnitude(twist) -> np.ndarray:
     """Signed magnitude ``ω_z`` (rad/s) of a twist (thesis 4.6); 0 for a translation.
 
-    Parameters
-    ----------
-    {twist}
-
-    {returns_scalar}
+    {parameters twist returns_scalar}
 
     Examples
     --------
@@ -395,11 +356,7 @@ def twist_magnitude(twist) -> np.ndarray:
 def pole_xy(twist) -> np.ndarray:
     """Euclidean pole ``(-v_y/ω, v_x/ω)`` of a twist (thesis 4.10, 5.51); NaN for a translation.
 
-    Parameters
-    ----------
-    {twist}
-
-    {returns_2}
+    {parameters twist returns_2}
 
     Examples
     --------
@@ -413,11 +370,7 @@ def pole_xy(twist) -> np.ndarray:
 def wrench_magnitude(wrench) -> np.ndarray:
     """Magnitude ``F = sqrt(f_x² + f_y²)`` (N) of a wrench (thesis 4.22, 4.29); 0 for a couple.
 
-    Parameters
-    ----------
-    {wrench}
-
-    {returns_scalar}
+    {parameters wrench returns_scalar}
 
     Examples
     --------
@@ -436,9 +389,7 @@ def wrench_axis(wrench):
     The point nearest the origin is ``n d`` (4.30).  A couple gives NaN ``e``, ``n`` and
     ``d = ±inf``; the zero wrench all NaN; no warnings.
 
-    Parameters
-    ----------
-    {wrench}
+    {parameters wrench}
 
     Returns
     -------
@@ -470,9 +421,7 @@ def wrench_axis(wrench):
 def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
     """Twist and wrench reciprocal, ``|vᵀf| <= rtol |v| |f|`` (thesis 1.9, 5.61, 5.69).
 
-    Parameters
-    ----------
-    {twist wrench}
+    {parameters twist wrench}
     rtol : float, optional
         Relative tolerance of the zero-power test.
 
@@ -498,13 +447,7 @@ def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
 def inertia_at(inertia, point) -> np.ndarray:
     """Inertia expressed at ``point``: ``X_P⁻ᵀ I X_P⁻¹`` (thesis 1.68, 4.24; parallel axis theorem).
 
-    Parameters
-    ----------
-    {inertia point}
-
-    {returns_3x3}
-
-    {not_psd}
+    {parameters inertia point returns_3x3 not_psd}
 
     Examples
     --------
@@ -526,15 +469,7 @@ def _congruence(W: np.ndarray, I: np.ndarray) -> np.ndarray:
 def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
     """Inertia in the frame of :func:`X_frame`: ``I_B = X⁻ᵀ I X⁻¹`` (thesis 1.68; passive).
 
-    Parameters
-    ----------
-    {inertia}
-    {theta}
-    {point}
-
-    {returns_3x3}
-
-    {not_psd}
+    {parameters inertia theta point returns_3x3 not_psd}
 
     Examples
     --------
@@ -553,10 +488,7 @@ def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
 def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
     """Inertia ``M⁻ᵀ I M⁻¹`` of the body turned by ``theta`` about ``about`` (thesis 1.68, 4.8).
 
-    Parameters
-    ----------
-    {inertia}
-    {theta}
+    {parameters inertia theta}
     about : array_like (..., 2), optional
         Centre of the rotation (m).
 
@@ -581,13 +513,7 @@ def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
 def momentum(inertia, twist) -> np.ndarray:
     """Momentum wrench ``p = I v`` (thesis 1.65, 5.72), its line through the centre of mass (1.60).
 
-    Parameters
-    ----------
-    {inertia twist}
-
-    {returns_3}
-
-    {not_psd}
+    {parameters inertia twist returns_3 not_psd}
 
     Examples
     --------
@@ -661,9 +587,7 @@ def kappa(twist, s, qd) -> np.ndarray:
 def bias_force(inertia, twist, g=None) -> np.ndarray:
     """Bias force ``p = -(v×)ᵀ I v - g = crf(v) I v - g`` (thesis 3.11, 4.56, 4.62, 4.7).
 
-    Parameters
-    ----------
-    {inertia twist}
+    {parameters inertia twist}
     g : array_like (..., 3), optional
         External wrench (gravity, loads) at the origin; default zero.
 
