@@ -708,6 +708,43 @@ def effective_base_inertia(I, R) -> np.ndarray:
 
 
 # ----------------------------------------------------------------------------- class
+#: The wrench and twist sides of a :class:`Decomposition`, duals: one split and one join serve both,
+#: with the spaces and names of the side (the methods' Parameters and Returns: :data:`_SPLIT`, :data:`_JOIN`)
+_WRENCH = dict(x="f", screw="Wrench", spaces=("s", "U"), bases=("T", "R"), names=("Q", "mu"), parts=("Q", "μ"),
+               words="Active force and reaction components")
+_TWIST = dict(x="a", screw="Acceleration twist", spaces=("T", "R"), bases=("s", "U"), names=("psi", "gamma"),
+              parts=("ψ", "γ"), words="Joint accelerations and reactive components")
+_SPLIT = """
+Parameters
+----------
+{x} : array_like, shape (..., 3)
+    {screw}.
+
+Returns
+-------
+tuple of numpy.ndarray
+    ``{parts[0]}`` (..., k) and ``{parts[1]}`` (..., 3-k).
+"""
+_JOIN = """
+Parameters
+----------
+{names[0]}, {names[1]} : numpy.ndarray, shapes (..., k) and (..., 3-k)
+    {words}.
+
+Returns
+-------
+numpy.ndarray, shape (..., 3)
+"""
+
+
+def _dual_doc(sections: str, dual: dict):
+    """A decorator ending a :class:`Decomposition` method's one-line docstring with ``sections`` filled for ``dual``."""
+    def document(method):
+        method.__doc__ += "\n" + sections.format(**dual)
+        return method
+    return document
+
+
 class Decomposition:
     """Decompose wrenches and twists about a joint with an inertia (thesis 6.2–6.3).
 
@@ -777,65 +814,35 @@ class Decomposition:
         """
         return cls(A, joint.s, joint.R, name=name)
 
-    @_parameters
+    def _split(self, x, dual: dict) -> tuple[np.ndarray, np.ndarray]:
+        """A screw's components along the dual's two spaces (``Xᵀ x``, ``Yᵀ x``)."""
+        x = as_vec3(x, dual["x"])
+        return tuple(_tmul(getattr(self, name), x) for name in dual["spaces"])
+
+    def _join(self, x, y, dual: dict) -> np.ndarray:
+        """The screw ``X x + Y y`` along the dual's two bases."""
+        X, Y = (getattr(self, name) for name in dual["bases"])
+        return _combine(X, x, Y, y, dual["names"])
+
+    @_dual_doc(_SPLIT, _WRENCH)
     def split_wrench(self, f) -> tuple[np.ndarray, np.ndarray]:
-        """``(Q, μ) = (sᵀf, Uᵀf)`` so that ``f = T Q + R μ`` (thesis 6.38, 6.61).
+        """``(Q, μ) = (sᵀf, Uᵀf)`` so that ``f = T Q + R μ`` (thesis 6.38, 6.61)."""
+        return self._split(f, _WRENCH)
 
-        Parameters
-        ----------
-        {f}
-
-        Returns
-        -------
-        tuple of numpy.ndarray
-            ``Q`` (..., k) and ``μ`` (..., 3-k).
-        """
-        f = as_vec3(f, "f")
-        return _tmul(self.s, f), _tmul(self.U, f)
-
-    def join_wrench(self, Q, mu) -> np.ndarray:
-        """``f = T Q + R μ`` (thesis 6.38).
-
-        Parameters
-        ----------
-        Q, mu : numpy.ndarray, shapes (..., k) and (..., 3-k)
-            Active force and reaction components.
-
-        Returns
-        -------
-        numpy.ndarray, shape (..., 3)
-        """
-        return _combine(self.T, Q, self.R, mu, ("Q", "mu"))
-
-    @_parameters
+    @_dual_doc(_SPLIT, _TWIST)
     def split_twist(self, a) -> tuple[np.ndarray, np.ndarray]:
-        """``(ψ, γ) = (Tᵀa, Rᵀa)`` so that ``a = s ψ + U γ`` (thesis 6.44, 6.62).
+        """``(ψ, γ) = (Tᵀa, Rᵀa)`` so that ``a = s ψ + U γ`` (thesis 6.44, 6.62)."""
+        return self._split(a, _TWIST)
 
-        Parameters
-        ----------
-        {a}
+    @_dual_doc(_JOIN, _WRENCH)
+    def join_wrench(self, Q, mu) -> np.ndarray:
+        """``f = T Q + R μ`` (thesis 6.38)."""
+        return self._join(Q, mu, _WRENCH)
 
-        Returns
-        -------
-        tuple of numpy.ndarray
-            ``ψ`` (..., k) and ``γ`` (..., 3-k).
-        """
-        a = as_vec3(a, "a")
-        return _tmul(self.T, a), _tmul(self.R, a)
-
+    @_dual_doc(_JOIN, _TWIST)
     def join_twist(self, psi, gamma) -> np.ndarray:
-        """``a = s ψ + U γ`` (thesis 6.44).
-
-        Parameters
-        ----------
-        psi, gamma : numpy.ndarray, shapes (..., k) and (..., 3-k)
-            Joint accelerations and reactive components.
-
-        Returns
-        -------
-        numpy.ndarray, shape (..., 3)
-        """
-        return _combine(self.s, psi, self.U, gamma, ("psi", "gamma"))
+        """``a = s ψ + U γ`` (thesis 6.44)."""
+        return self._join(psi, gamma, _TWIST)
 
     def __repr__(self) -> str:
         return (f"Decomposition(k={self.s.shape[-1]}, batch={self.A.shape[:-2]}, "
