@@ -26,6 +26,8 @@ _shared = entries({
     "point": "point : Point or array_like, shape (3,)\n    A Point or homogeneous point array.",
     "line": "line : Line or array_like, shape (3,)\n    A Line or homogeneous line array.",
     "other": "other : Point, Line or array_like, shape (3,)\n    The element of the dual kind.",
+    **{f"other_{kind.lower()}": f"other : {kind} or array_like, shape (3,)\n    The second {kind.lower()}."
+       for kind in ("Point", "Line")},
     "not_pair": "Raises\n------\nShapeError\n    A pair of coordinates not of shape (2,).",
     "not_one": "Raises\n------\nShapeError, DegenerateGeometryError\n"
                "    ``array`` not of shape (3,), or zero.",
@@ -243,12 +245,9 @@ class Point(_PointOrLine):
     def join(self, other) -> "Line":
         """The line through this point and ``other`` (thesis 5.32); also ``p ^ q``.
 
-        Parameters
-        ----------
-        other : Point or array_like, shape (3,)
-            The second point.
+        With ``other`` at infinity, it is the line through this point in that direction.
 
-        {returns_line}
+        {parameters other_point returns_line}
 
         Examples
         --------
@@ -358,12 +357,7 @@ class Line(_PointOrLine):
     def meet(self, other) -> Point:
         """The common point with ``other`` (thesis 5.34), at infinity if parallel; also ``l ^ m``.
 
-        Parameters
-        ----------
-        other : Line or array_like, shape (3,)
-            The second line.
-
-        {returns_point}
+        {parameters other_line returns_point}
 
         Examples
         --------

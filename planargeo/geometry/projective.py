@@ -42,7 +42,9 @@ LINE_AT_INFINITY.setflags(write=False)
 _ENTRIES = {
     "p": "p : array_like, shape (..., 3)\n    Homogeneous points.",
     "l": "l : array_like, shape (..., 3)\n    Homogeneous lines ``[fx, fy, tz]``.",
-    "normalized": "Returns\n-------\nndarray, shape (..., 3)\n    The base coordinates.",
+    "normalized": "Returns\n-------\nndarray, shape (..., 3)\n    The base coordinates.\n\n"
+                  "Raises\n------\nDegenerateGeometryError, NumericOverflowError\n"
+                  "    Some element is the zero vector, or a finite one lies beyond double precision.",
     "cond_limit": "cond_limit : float, optional\n"
                   "    Largest accepted condition number ``κ`` (:func:`cross_cond`; default\n"
                   "    :data:`planargeo.errors.COND_LIMIT`, ``1e12``).",
@@ -134,11 +136,6 @@ def normalize_point(p) -> np.ndarray:
 
     {parameters p normalized}
 
-    Raises
-    ------
-    DegenerateGeometryError, NumericOverflowError
-        Some ``p`` is the zero vector, or a finite point lies beyond double precision.
-
     Examples
     --------
     >>> normalize_point([4.0, -2.0, 2.0])
@@ -157,12 +154,9 @@ def normalize_point(p) -> np.ndarray:
 def normalize_line(l) -> np.ndarray:
     """Base coordinates of lines (thesis 5.11, 5.55): unit force, or ``tz = ±1`` at infinity.
 
-    {parameters l normalized}
+    A finite line gets a unit force ``(fx, fy)``, so that ``|tz|`` is its distance from the origin.
 
-    Raises
-    ------
-    DegenerateGeometryError, NumericOverflowError
-        Some ``l`` is the zero vector, or a finite line lies beyond double precision.
+    {parameters l normalized}
 
     Examples
     --------

@@ -127,6 +127,8 @@ def centre_of_mass(inertia) -> np.ndarray:
 def rotational_inertia(inertia) -> np.ndarray:
     """Rotational inertia ``J = m ρ²`` (kg·m²) about the centre of mass (thesis 1.68, 4.58).
 
+    By the parallel axis theorem, ``J = I[2, 2] - m |c|²`` with ``c`` the centre of mass.
+
     {parameters inertia returns_scalar no_mass}
 
     Examples
@@ -143,6 +145,8 @@ def rotational_inertia(inertia) -> np.ndarray:
 @_documented
 def radius_of_gyration(inertia) -> np.ndarray:
     """Radius of gyration ``ρ = sqrt(J / m)`` (m; thesis 4.58, 5.64).
+
+    The radius of the circle :func:`drawable_conic` draws about the centre of mass.
 
     {parameters inertia returns_scalar no_mass}
 

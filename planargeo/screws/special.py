@@ -125,6 +125,8 @@ def _coincide(A: np.ndarray, B: np.ndarray, rtol) -> bool:
 def twist_case(v, rtol: float = 1e-12) -> SpecialCase:
     """Name the case of one twist: ``zero_twist``, ``pure_translation`` or ``pure_rotation``.
 
+    A translation has ``|ω| <= rtol |v|``: its pole is at infinity.
+
     Parameters
     ----------
     v : Twist or array_like (3,)

@@ -28,6 +28,7 @@ __all__ = [
 #: The docstring entries the screws share (a line ``{inertia twist}``; see geometry/_docs.py).
 SCREWS = {
     "twist": "twist : Twist or array_like, shape (..., 3)\n    Twist ``[vx, vy, ω]`` (m/s, rad/s).",
+    "v": "v : array_like, shape (..., 3)\n    Twist ``[vx, vy, ω]``.",
     "wrench": "wrench : Wrench or array_like, shape (..., 3)\n"
               "    Wrench ``[fx, fy, τz]`` (N, N·m).",
     "point": "point : array_like, shape (..., 2)\n    Reference point ``(x, y)`` (m).",
@@ -165,12 +166,7 @@ def crm(v) -> np.ndarray:
 
     ``crm(v) @ s`` is the rate of change of a twist ``s`` carried by a body moving with twist ``v``.
 
-    Parameters
-    ----------
-    v : array_like, shape (..., 3)
-        Twist ``[vx, vy, ω]``.
-
-    {returns_3x3}
+    {parameters v returns_3x3}
 
     Examples
     --------
@@ -190,12 +186,7 @@ def crm(v) -> np.ndarray:
 def crf(v) -> np.ndarray:
     """Planar force cross operator ``v×* = -(v×)ᵀ`` (dual of :func:`crm`, thesis 3.8).
 
-    Parameters
-    ----------
-    v : array_like, shape (..., 3)
-        Twist ``[vx, vy, ω]``.
-
-    {returns_3x3}
+    {parameters v returns_3x3}
 
     Examples
     --------
