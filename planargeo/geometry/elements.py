@@ -31,7 +31,7 @@ _shared = entries({
     "not_pair": "Raises\n------\nShapeError\n    A pair of coordinates not of shape (2,).",
     "not_one": "Raises\n------\nShapeError, DegenerateGeometryError\n"
                "    ``array`` not of shape (3,), or zero.",
-}, {f"returns_{kind.lower()}": f"Returns\n-------\n{kind}" for kind in ("Point", "Line", "Conic")})
+}, {f"returns_{kind.lower()}": f"Returns\n-------\n{kind}" for kind in ("Point", "Line", "Conic", "float")})
 
 
 def _fmt(v: float) -> str:
@@ -123,11 +123,7 @@ class _PointOrLine(_Homogeneous):
     def incidence(self, other) -> float:
         """The form ``p @ l`` with ``other`` of the dual kind (thesis 5.23): zero iff incident.
 
-        {parameters other}
-
-        Returns
-        -------
-        float
+        {parameters other returns_float}
 
         Examples
         --------

@@ -21,6 +21,8 @@ __all__ = ["SpecialCase", "CASES", "twist_case", "wrench_case", "pair_case", "tw
 
 #: The docstring entries the case functions share (:func:`planargeo.geometry._docs.entries`).
 _documented = entries({
+    "v": "v : Twist or array_like (3,)", "f": "f : Wrench or array_like (3,)",
+    "v1_v2": "v1, v2 : Twist or array_like (3,)", "f1_f2": "f1, f2 : Wrench or array_like (3,)",
     "rtol": "rtol : float\n    Relative size below which a quantity counts as zero.",
     "case": ("Returns\n-------\nSpecialCase\n    The case, named.\n\n"
              "Raises\n------\n"
@@ -127,12 +129,7 @@ def twist_case(v, rtol: float = 1e-12) -> SpecialCase:
 
     A translation has ``|ω| <= rtol |v|``: its pole is at infinity.
 
-    Parameters
-    ----------
-    v : Twist or array_like (3,)
-    {rtol}
-
-    {case}
+    {parameters v rtol case}
 
     Examples
     --------
@@ -146,12 +143,7 @@ def twist_case(v, rtol: float = 1e-12) -> SpecialCase:
 def wrench_case(f, rtol: float = 1e-12) -> SpecialCase:
     """Name the case of one wrench: ``zero_wrench``, ``pure_couple`` (``F ≈ 0``) or ``pure_force``.
 
-    Parameters
-    ----------
-    f : Wrench or array_like (3,)
-    {rtol}
-
-    {case}
+    {parameters f rtol case}
 
     Examples
     --------
@@ -165,13 +157,7 @@ def wrench_case(f, rtol: float = 1e-12) -> SpecialCase:
 def pair_case(v, f, rtol: float = 1e-12) -> SpecialCase:
     """Name a twist and wrench ``workless`` (``|v·f| ≤ rtol |v| |f|``, thesis 5.69) or ``power``.
 
-    Parameters
-    ----------
-    v : Twist or array_like (3,)
-    f : Wrench or array_like (3,)
-    {rtol}
-
-    {case}
+    {parameters v f rtol case}
 
     Examples
     --------
@@ -193,12 +179,7 @@ def twists_case(v1, v2, rtol: float = 1e-12) -> SpecialCase:
     In order: ``zero_sum``, ``coincident_poles``, ``opposite_rotations``, ``translations``,
     ``rotation_translation``, ``rotations``.
 
-    Parameters
-    ----------
-    v1, v2 : Twist or array_like (3,)
-    {rtol}
-
-    {case}
+    {parameters v1_v2 rtol case}
 
     Examples
     --------
@@ -226,12 +207,7 @@ def wrenches_case(f1, f2, rtol: float = 1e-12) -> SpecialCase:
     In order: ``zero_sum``, ``couples``, ``force_couple``, ``same_line``, ``couple_from_forces``,
     ``parallel_forces``, ``concurrent``.
 
-    Parameters
-    ----------
-    f1, f2 : Wrench or array_like (3,)
-    {rtol}
-
-    {case}
+    {parameters f1_f2 rtol case}
 
     Examples
     --------
