@@ -495,7 +495,8 @@ def active_force(s, f) -> np.ndarray:
 
     Returns
     -------
-    numpy.ndarray, shape (..., k)
+    Q : numpy.ndarray, shape (..., k)
+        The joint force (a torque at a revolute joint): ``f = T Q + R μ`` (6.38).
     """
     return _components(s, f, "sf")
 
@@ -513,7 +514,8 @@ def reaction_force(U, f) -> np.ndarray:
 
     Returns
     -------
-    numpy.ndarray, shape (..., 3-k)
+    mu : numpy.ndarray, shape (..., 3-k)
+        Components of the reaction, the part ``R μ`` of ``f`` that the joint carries.
     """
     return _components(U, f, "Uf")
 
@@ -531,7 +533,8 @@ def active_acceleration(T, a) -> np.ndarray:
 
     Returns
     -------
-    numpy.ndarray, shape (..., k)
+    psi : numpy.ndarray, shape (..., k)
+        Joint accelerations: ``a = s ψ + U γ`` (6.44).
     """
     return _components(T, a, "Ta")
 
@@ -547,7 +550,8 @@ def reactive_acceleration(R, a) -> np.ndarray:
 
     Returns
     -------
-    numpy.ndarray, shape (..., 3-k)
+    gamma : numpy.ndarray, shape (..., 3-k)
+        The acceleration in the directions the joint forbids; zero when ``a`` keeps to the joint.
     """
     return _components(R, a, "Ra")
 
@@ -566,7 +570,8 @@ def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 
     Returns
     -------
-    tuple of numpy.ndarray, each shape (..., 3, 3)
+    active, reaction : numpy.ndarray, each shape (..., 3, 3)
+        ``T sᵀ`` and ``R Uᵀ``.
     """
     d = Decomposition(A, s, R)
     return d.T @ _tr(d.s), d.R @ _tr(d.U)
@@ -585,7 +590,8 @@ def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 
     Returns
     -------
-    tuple of numpy.ndarray, each shape (..., 3, 3)
+    joint, reactive : numpy.ndarray, each shape (..., 3, 3)
+        ``s Tᵀ`` and ``U Rᵀ``.
     """
     return tuple(_tr(P) for P in wrench_projectors(A, s, R))     # (T sᵀ)ᵀ, (R Uᵀ)ᵀ: the duality
 
