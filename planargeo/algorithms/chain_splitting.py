@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from planargeo.errors import TopologyError
+from planargeo.geometry._docs import entries
 from planargeo.mechanics.subspaces import _solve
 from planargeo.algorithms.articulated_inertia import _EYE3, _per_state, _state_arrays, articulated_recursion
 from planargeo.algorithms.articulated_mobility import _check_solvable, mobility_recursion
@@ -18,6 +19,13 @@ from planargeo.algorithms.projective import force_propagator, joint_acceleration
 
 __all__ = ["ChainSplit", "split_acceleration", "split_force", "chain_split",
            "mobility_split", "forward_dynamics_mobility_split"]
+
+
+#: The examples' split: body ``i`` turning about the origin, a unit point mass pinned to it at (1, 0).
+_SPLIT = {"two_masses": """>>> from planargeo.screws.twists import inertia_matrix
+>>> A2, s2 = inertia_matrix(1.0, [1.0, 0.0], 1e-3), np.array([[0.0], [-1.0], [1.0]])
+>>> T2 = A2 @ s2 / (s2.T @ A2 @ s2)
+>>> args = (np.diag([0.0, 0.0, 1.0]), [0, 0, 1.0], A2, np.zeros(3), T2, s2, [0.0], np.zeros(3))"""}
 
 
 def _split(force, Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next):
@@ -34,6 +42,7 @@ def _split(force, Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next
     return _solve(C, b - Lam @ (TQ + P @ (A @ kappa + d)), "1 + Lambda^-1 R U^T A of the split")
 
 
+@entries(_SPLIT)
 def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) -> np.ndarray:
     """Acceleration of body ``i`` split from the rest of the chain at joint ``i+1`` (thesis 7.54).
 
@@ -51,28 +60,25 @@ def split_acceleration(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa
     Raises
     ------
     SingularConfigurationError
-        When ``C`` is singular.
+        When ``C = 1 + Λ_i⁻¹ R Uᵀ A`` is singular.
 
     Examples
     --------
-    >>> from planargeo.screws.twists import inertia_matrix
-    >>> A2, s2 = inertia_matrix(1.0, [1.0, 0.0], 1e-3), np.array([[0.0], [-1.0], [1.0]])
-    >>> T2 = A2 @ s2 / (s2.T @ A2 @ s2)
-    >>> args = (np.diag([0.0, 0.0, 1.0]), [0, 0, 1.0], A2, np.zeros(3), T2, s2, [0.0], np.zeros(3))
+    {two_masses}
     >>> split_acceleration(*args).round(12)           # a second point mass halves it
     array([0. , 0. , 0.5])
     """
     return _split(False, Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next)
 
 
+@entries(_SPLIT)
 def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) -> np.ndarray:
     """Internal force of joint ``i+1`` from the split chain (thesis 7.56).
 
     Parameters
     ----------
     Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next : array_like
-        ``Λ_i⁻¹``, ``b_i`` of body ``i`` (7.38); ``A``, ``d`` of body ``i+1`` (7.7); ``T`` (6.105), ``s``,
-        ``Q`` of joint ``i+1``; its ``κ`` (2.19).
+        The split at joint ``i+1``, as for :func:`split_acceleration`.
 
     Returns
     -------
@@ -86,10 +92,7 @@ def split_force(Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next) 
 
     Examples
     --------
-    >>> from planargeo.screws.twists import inertia_matrix
-    >>> A2, s2 = inertia_matrix(1.0, [1.0, 0.0], 1e-3), np.array([[0.0], [-1.0], [1.0]])
-    >>> T2 = A2 @ s2 / (s2.T @ A2 @ s2)
-    >>> args = (np.diag([0.0, 0.0, 1.0]), [0, 0, 1.0], A2, np.zeros(3), T2, s2, [0.0], np.zeros(3))
+    {two_masses}
     >>> split_force(*args).round(12) + 0.0             # half the push
     array([0. , 0.5, 0.5])
     """
@@ -213,8 +216,8 @@ def forward_dynamics_mobility_split(model, q, qd, tau, f_ext=None) -> np.ndarray
 
     Raises
     ------
-    TopologyError, SingularConfigurationError
-        As :func:`chain_split`.
+    ShapeError, NonFiniteError, InputError, TopologyError, SingularConfigurationError
+        Bad arguments, as for :func:`planargeo.algorithms.aba.forward_dynamics`; else as :func:`chain_split`.
 
     Examples
     --------

@@ -75,6 +75,7 @@ def bias_forces(model: Model, q, qd, f_ext=None) -> np.ndarray:
     Returns
     -------
     ndarray (..., nq)
+        ``C``, the joint forces that hold the state with ``q̈ = 0``.
 
     Examples
     --------
@@ -92,11 +93,13 @@ def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     Parameters
     ----------
     model, q, qd, tau, f_ext : Model, array_like
-        The mechanism and its state, as for :func:`planargeo.algorithms.aba.forward_dynamics`.
+        The mechanism and its states (leading dimensions a batch), as for
+        :func:`planargeo.algorithms.aba.forward_dynamics`.
 
     Returns
     -------
     ndarray (..., nq)
+        ``q̈ = H⁻¹ (τ - C)``.
 
     Raises
     ------

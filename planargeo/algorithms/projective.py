@@ -45,6 +45,7 @@ def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.
     Returns
     -------
     numpy.ndarray, shape (3,)
+        ``a_i``, the body's acceleration.
 
     Examples
     --------
@@ -73,6 +74,7 @@ def force_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.ndarray
     Returns
     -------
     numpy.ndarray, shape (3,)
+        ``f_i``, on body ``i`` from its parent through joint ``i``.
 
     Examples
     --------
@@ -206,11 +208,13 @@ def projective_workspace(model, q, qd=None, tau=None, f_ext=None) -> ProjectiveW
     Parameters
     ----------
     model, q, qd, tau, f_ext : Model, array_like
-        The mechanism and one state, as for :func:`planargeo.algorithms.articulated_inertia.articulated_inertia`.
+        The mechanism and one state (``q``, ``qd``, ``tau`` of shape (nq,)), as for
+        :func:`planargeo.algorithms.articulated_inertia.articulated_inertia`.
 
     Returns
     -------
     ProjectiveWorkspace
+        As :func:`projective_solve` returns it.
 
     Examples
     --------
@@ -242,8 +246,8 @@ def forward_dynamics_projective(model, q, qd, tau, f_ext=None) -> np.ndarray:
 
     Raises
     ------
-    SingularConfigurationError
-        When some ``s_i^T A_i s_i`` is singular.
+    ShapeError, NonFiniteError, InputError, SingularConfigurationError
+        Bad arguments, as for :func:`planargeo.algorithms.aba.forward_dynamics`; a singular ``s_i^T A_i s_i``.
 
     Examples
     --------
