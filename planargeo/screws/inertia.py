@@ -634,6 +634,7 @@ class Inertia(_Held):
         Returns
         -------
         Conic
+            Imaginary, with no real points, for a body of positive rotational inertia.
 
         Examples
         --------
