@@ -110,10 +110,17 @@ def _open_lab(browser, tmp: Path, name: str, server_config: dict | None, a):
     if server_config:
         extra = tmp / f"{name}-extra-config"
         extra.mkdir()
-        (extra / "jupyter_server_config.json").write_text(json.dumps(server_config))
+        if "_py" in server_config:          # a Python config file's text (JupyterLab's and Voila's)
+            (extra / "jupyter_server_config.py").write_text(server_config["_py"])
+            (extra / "voila.py").write_text(server_config["_py"])
+        else:
+            (extra / "jupyter_server_config.json").write_text(json.dumps(server_config))
         os.environ["JUPYTER_CONFIG_PATH"] = str(extra)
     try:
-        server = LabServer(root, tmp / f"{name}-srv")
+        if a.only == ["voila"]:
+            server = VoilaServer(root / "page.ipynb", tmp / f"{name}-srv")
+        else:
+            server = LabServer(root, tmp / f"{name}-srv")
     finally:
         if server_config:
             if old is None:
@@ -121,6 +128,10 @@ def _open_lab(browser, tmp: Path, name: str, server_config: dict | None, a):
             else:
                 os.environ["JUPYTER_CONFIG_PATH"] = old
     page = browser.new_page(viewport={"width": 1400, "height": 1100})
+    if a.only == ["voila"]:
+        page.goto(server.url, wait_until="domcontentloaded", timeout=120_000)
+        ex, cv = pl._canvas(page, pl._titles()["ChainExplorer"])
+        return server, page, ex, cv
     page.goto(f"{server.url}/lab/tree/page.ipynb?reset", wait_until="domcontentloaded", timeout=120_000)
     page.wait_for_function("window.jupyterapp && window.jupyterapp.shell.currentWidget"
                            " && window.jupyterapp.shell.currentWidget.sessionContext.session"
@@ -133,8 +144,8 @@ def _open_lab(browser, tmp: Path, name: str, server_config: dict | None, a):
 
 def run_two_labs(browser, tmp: Path, a) -> dict:
     """A: a JupyterLab as configured by the harness; B: the same with ``--lab-config-b`` added."""
-    res = {k: {"F": [], "drag": [], "slider": [], "drag: ack → painted": [], "drag: sent → ack": [],
-               "drag: kernel ms": []} for k in "AB"}
+    res = {k: {"F": [], "F after the steps' pause": [], "drag": [], "slider": [], "drag: ack → painted": [],
+               "drag: sent → ack": [], "drag: kernel ms": []} for k in "AB"}
     opened = {}
     try:
         for k in ("BA" if a.swap else "AB"):      # --swap: B's server and page opened first
@@ -149,6 +160,7 @@ def run_two_labs(browser, tmp: Path, a) -> dict:
                 cv.scroll_into_view_if_needed()
                 time.sleep(0.3)
                 res[k]["F"] += pl.floor(cv, a.block)
+                res[k]["F after the steps' pause"] += pl.floor(cv, a.block, pl.PAUSE)
                 n0 = len(pl.STEPS)
                 res[k]["drag"] += pl.drag(page, cv, "link 10 end", a.block)[0]
                 for st in pl.STEPS[n0:]:
@@ -174,7 +186,8 @@ def main(argv=None) -> int:
     ap.add_argument("--block", type=int, default=8)
     ap.add_argument("--no-slider", action="store_true")
     ap.add_argument("--lab-config-b", default=None,
-                    help="JSON server config added for B: two JupyterLab servers, A and B (--a/--b unused)")
+                    help="JSON server config (or a .py config file) added for B: two JupyterLab servers, A and B"
+                         " (--a/--b unused)")
     ap.add_argument("--harness-ab", action="store_true",
                     help="A: the harness polls every 5 ms (page_latency.WAIT = 'poll'); B: the page waits ('page')")
     ap.add_argument("--swap", action="store_true", help="with --lab-config-b: open B's server first")
@@ -191,9 +204,12 @@ def main(argv=None) -> int:
                 out[medium] = run(browser, medium, Path(tmp), a)
                 print(medium, json.dumps(out[medium]), flush=True)
             if a.lab_config_b:
+                if Path(a.lab_config_b).suffix == ".py":
+                    a.lab_config_b = json.dumps({"_py": Path(a.lab_config_b).read_text()})
                 out["lab config (B)"] = json.loads(a.lab_config_b)
-                out["jupyterlab"] = run_two_labs(browser, Path(tmp), a)
-                print("jupyterlab", json.dumps(out["jupyterlab"]), flush=True)
+                m = "voila" if a.only == ["voila"] else "jupyterlab"
+                out[m] = run_two_labs(browser, Path(tmp), a)
+                print(m, json.dumps(out[m]), flush=True)
         finally:
             browser.close()
     print(json.dumps(out, indent=1))
