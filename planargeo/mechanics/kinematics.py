@@ -35,19 +35,17 @@ def cross_motion(v: np.ndarray, u: np.ndarray) -> np.ndarray:
 
     Parameters
     ----------
-    {v}
-    u : numpy.ndarray, shape (..., 3)
-        Twist carried by ``v``.
+    v, u : numpy.ndarray, shape (..., 3)
+        Twists: ``u`` is carried by the motion ``v``.
 
     Returns
     -------
     numpy.ndarray, shape (..., 3)
+        The rate of change of the twist ``u`` carried along by the motion ``v``.
     """
-    w = v[..., 2]
-    out = np.empty(np.broadcast_shapes(v.shape, u.shape))
-    out[..., 0] = -w * u[..., 1] + v[..., 1] * u[..., 2]
-    out[..., 1] = w * u[..., 0] - v[..., 0] * u[..., 2]
-    out[..., 2] = 0.0
+    out = _turned(v, u)
+    out[..., 0] += v[..., 1] * u[..., 2]
+    out[..., 1] -= v[..., 0] * u[..., 2]
     return out
 
 
@@ -64,12 +62,20 @@ def cross_force(v: np.ndarray, f: np.ndarray) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3)
+        The rate of change of the wrench ``f`` carried along by ``v``.
     """
-    w = v[..., 2]
-    out = np.empty(np.broadcast_shapes(v.shape, f.shape))
-    out[..., 0] = -w * f[..., 1]
-    out[..., 1] = w * f[..., 0]
+    out = _turned(v, f)
     out[..., 2] = v[..., 0] * f[..., 1] - v[..., 1] * f[..., 0]
+    return out
+
+
+def _turned(v: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """``(-ω x₁, ω x₀, 0)`` with ``ω = v₂``: the part both cross products share (a new array)."""
+    w = v[..., 2]
+    out = np.empty(np.broadcast_shapes(v.shape, x.shape))
+    out[..., 0] = -w * x[..., 1]
+    out[..., 1] = w * x[..., 0]
+    out[..., 2] = 0.0
     return out
 
 
@@ -119,23 +125,24 @@ def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None, fin
             out.append(np.zeros(nq))
             continue
         a = _as_state(x, name, nq, finite)
-        if a.ndim > 1 or shape:
-            try:
-                shape = np.broadcast_shapes(shape, a.shape[:-1])
-            except ValueError:
-                raise ShapeError(
-                    f"{name} of shape {a.shape} does not broadcast with q of shape {q.shape}") from None
+        shape = _batch(shape, a, 1, name, q)
         out.append(a)
     if f_ext is not None:
         f_ext = as_array(f_ext, "f_ext", (N, 3), finite=finite)
-        if f_ext.ndim > 2 or shape:
-            try:
-                shape = np.broadcast_shapes(shape, f_ext.shape[:-2])
-            except ValueError:
-                raise ShapeError(
-                    f"f_ext of shape {f_ext.shape} does not broadcast with q of shape {q.shape}") from None
+        shape = _batch(shape, f_ext, 2, "f_ext", q)
     qd, tau, qdd = out
     return q, qd, tau, f_ext, qdd, shape
+
+
+def _batch(shape: tuple, a: np.ndarray, core: int, name: str, q: np.ndarray) -> tuple:
+    """``shape`` broadcast with the batch shape of ``a`` (all but its last ``core`` axes)."""
+    if a.ndim > core or shape:
+        try:
+            return np.broadcast_shapes(shape, a.shape[:-core])
+        except ValueError:
+            raise ShapeError(
+                f"{name} of shape {a.shape} does not broadcast with q of shape {q.shape}") from None
+    return shape
 
 
 def _rot2(c, s, x, y):
