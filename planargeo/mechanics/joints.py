@@ -384,6 +384,8 @@ def twin_prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Free planar (3-dof) joint: slides along ``direction`` and its normal, turns about ``point`` (thesis 4.79 + 4.64, 5.62).
 
+    ``s`` spans every twist and ``R`` is empty: the joint transmits no force.
+
     {point_direction joint}
     """
     return JointSpace("plane", point, direction)
