@@ -425,13 +425,14 @@ class Data:
 
     @_documented
     def s(self, i: int) -> np.ndarray:
-        """Joint ``i``'s world-frame motion space, shape (..., 3, k).
+        """Joint ``i``'s world-frame motion space ``s_i``: its columns of ``S``.
 
         {i}
 
         Returns
         -------
         numpy.ndarray, shape (..., 3, k)
+            The joint's unit twists at the world origin, one column per coordinate.
         """
         return self.S[..., :, self.model.q_slice(i)]
 
@@ -443,7 +444,8 @@ class Data:
 
         Returns
         -------
-        numpy.ndarray, shape (..., 3, nq)
+        J_i : numpy.ndarray, shape (..., 3, nq)
+            ``S`` with the columns of the joints not between body ``i`` and the ground set to zero.
         """
         return self.S * self.model.ancestor_mask()[i]
 
@@ -500,6 +502,7 @@ def chain_model(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str =
     Returns
     -------
     Model
+        The chain: bodies ``link1`` to ``linkn``, each jointed to the one before.
 
     Raises
     ------
