@@ -39,6 +39,8 @@ def kernels_for(model):
     Returns
     -------
     Compiled or None
+        The kernels with the model's :func:`~planargeo.algorithms.kernels.tables`; None where a joint
+        is of another kind.
 
     Examples
     --------
@@ -174,7 +176,7 @@ def check_finite(result, what: str, **inputs):
     Raises
     ------
     NumericOverflowError
-        If ``result`` holds NaN or infinity.
+        If ``result`` holds NaN or infinity although the inputs are finite.
 
     Examples
     --------

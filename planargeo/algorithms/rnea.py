@@ -18,10 +18,12 @@ __all__ = ["inverse_dynamics", "newton_euler"]
 def newton_euler(model: Model, q, qd, qdd, f_ext=None) -> Data:
     """Recursive Newton-Euler pass (thesis 2.18, 3.10, 3.5); returns the workspace with ``a``, ``f``, ``tau``.
 
+    Accelerations go base to tip (2.18), loads tip to base (3.10), and ``τ_i = s_iᵀ f_i`` (3.5).
+
     Parameters
     ----------
     model, q, qd, qdd, f_ext : Model, array_like
-        The mechanism and its states, as for :func:`inverse_dynamics`.
+        As for :func:`inverse_dynamics`: the mechanism and its states.
 
     Returns
     -------

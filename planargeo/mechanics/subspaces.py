@@ -489,6 +489,8 @@ def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
 def active_force(s, f) -> np.ndarray:
     """Active (joint) force ``Q = sᵀ f`` (thesis 6.61a, 6.51).
 
+    ``Qᵀq̇`` is the power of ``f`` on the joint's motion ``s q̇``.
+
     Parameters
     ----------
     {s f}
@@ -506,6 +508,8 @@ def active_force(s, f) -> np.ndarray:
 def reaction_force(U, f) -> np.ndarray:
     """Reaction-force components ``μ = Uᵀ f`` (thesis 6.61b, 6.54).
 
+    ``R μ`` is the part of ``f`` that the joint carries; it does no work on the joint's motion.
+
     Parameters
     ----------
     U : array_like, shape (..., 3, 3-k)
@@ -515,7 +519,7 @@ def reaction_force(U, f) -> np.ndarray:
     Returns
     -------
     mu : numpy.ndarray, shape (..., 3-k)
-        Components of the reaction, the part ``R μ`` of ``f`` that the joint carries.
+        Reaction components: ``f = T Q + R μ`` (6.38).
     """
     return _components(U, f, "Uf")
 
@@ -544,6 +548,8 @@ def active_acceleration(T, a) -> np.ndarray:
 def reactive_acceleration(R, a) -> np.ndarray:
     """Reactive-acceleration components ``γ = Rᵀ a`` (thesis 6.62a, 6.60).
 
+    Zero for every acceleration ``s ψ`` the joint allows, since ``Rᵀs = 0``.
+
     Parameters
     ----------
     {R a}
@@ -551,7 +557,7 @@ def reactive_acceleration(R, a) -> np.ndarray:
     Returns
     -------
     gamma : numpy.ndarray, shape (..., 3-k)
-        The acceleration in the directions the joint forbids; zero when ``a`` keeps to the joint.
+        Components of ``a`` along ``U``: ``a = s ψ + U γ`` (6.44).
     """
     return _components(R, a, "Ra")
 
@@ -570,8 +576,8 @@ def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 
     Returns
     -------
-    active, reaction : numpy.ndarray, each shape (..., 3, 3)
-        ``T sᵀ`` and ``R Uᵀ``.
+    tuple of numpy.ndarray, each shape (..., 3, 3)
+        The active projector ``T sᵀ`` and the reaction projector ``R Uᵀ``.
     """
     d = Decomposition(A, s, R)
     return d.T @ _tr(d.s), d.R @ _tr(d.U)
@@ -582,8 +588,6 @@ def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     """The twist projectors ``(s Tᵀ, U Rᵀ)``: the transposes of :func:`wrench_projectors` (dual of thesis 6.75).
 
-    ``s Tᵀ a = s ψ`` is the joint part of an acceleration, ``U Rᵀ a = U γ`` its reactive part (6.44, 6.62).
-
     Parameters
     ----------
     {A s R}
@@ -591,7 +595,7 @@ def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     Returns
     -------
     joint, reactive : numpy.ndarray, each shape (..., 3, 3)
-        ``s Tᵀ`` and ``U Rᵀ``.
+        ``s Tᵀ a = s ψ`` is the joint part of an acceleration, ``U Rᵀ a = U γ`` its reactive part (6.44, 6.62).
     """
     return tuple(_tr(P) for P in wrench_projectors(A, s, R))     # (T sᵀ)ᵀ, (R Uᵀ)ᵀ: the duality
 
@@ -601,6 +605,8 @@ def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 @_parameters
 def joint_space_inertia(I, s) -> np.ndarray:
     """Joint-space inertia ``sᵀ I s`` (thesis 6.67, 6.74c): ``Q = (sᵀIs) ψ``; ``I`` may be singular.
+
+    Symmetric, positive definite when ``I`` is and the columns of ``s`` are independent.
 
     Parameters
     ----------
@@ -657,13 +663,18 @@ def inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
 def inverse_inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     """Split an inverse inertia as ``I⁻¹ = s Tᵀ I⁻¹ + U Rᵀ I⁻¹`` (thesis 6.79–6.81); both parts symmetric.
 
+    The first part is the effective mobility ``s (sᵀIs)⁻¹ sᵀ`` (6.93, :func:`effective_mobility`).
+
     Parameters
     ----------
     {I s R}
 
     Returns
     -------
-    tuple of numpy.ndarray, each shape (..., 3, 3)
+    mobility : numpy.ndarray, shape (..., 3, 3)
+        ``s Tᵀ I⁻¹``.
+    reactive : numpy.ndarray, shape (..., 3, 3)
+        ``U Rᵀ I⁻¹``.
     """
     d = Decomposition(I, s, R, name="I")
     IiR = _solve_A(d.A, d.R, "I")
