@@ -21,7 +21,7 @@ __all__ = ["ChainSplit", "split_acceleration", "split_force", "chain_split",
            "mobility_split", "forward_dynamics_mobility_split"]
 
 
-#: The examples' split: body ``i`` turning about the origin, a unit point mass pinned to it at (1, 0).
+#: The examples' split: body ``i`` turning about the origin, a unit point mass pinned at (1, 0).
 _SPLIT = {"two_masses": """>>> from planargeo.screws.twists import inertia_matrix
 >>> A2, s2 = inertia_matrix(1.0, [1.0, 0.0], 1e-3), np.array([[0.0], [-1.0], [1.0]])
 >>> T2 = A2 @ s2 / (s2.T @ A2 @ s2)

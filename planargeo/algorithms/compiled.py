@@ -39,8 +39,7 @@ def kernels_for(model):
     Returns
     -------
     Compiled or None
-        The kernels with the model's :func:`~planargeo.algorithms.kernels.tables`; None where a joint
-        is of another kind.
+        The kernels with the model's :func:`~planargeo.algorithms.kernels.tables`, or None.
 
     Examples
     --------

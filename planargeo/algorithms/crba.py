@@ -93,8 +93,7 @@ def forward_dynamics_crba(model: Model, q, qd, tau, f_ext=None) -> np.ndarray:
     Parameters
     ----------
     model, q, qd, tau, f_ext : Model, array_like
-        The mechanism and its states (leading dimensions a batch), as for
-        :func:`planargeo.algorithms.aba.forward_dynamics`.
+        As for :func:`planargeo.algorithms.aba.forward_dynamics`; leading dimensions are a batch.
 
     Returns
     -------
