@@ -191,7 +191,7 @@ def main(argv=None) -> int:
     ap.add_argument("--harness-ab", action="store_true",
                     help="A: the harness polls every 5 ms (page_latency.WAIT = 'poll'); B: the page waits ('page')")
     ap.add_argument("--swap", action="store_true", help="with --lab-config-b: open B's server first")
-    ap.add_argument("--wait", choices=("page", "poll"), default="page", help="page_latency.WAIT")
+    ap.add_argument("--wait", choices=("page", "poll"), default="poll", help="page_latency.WAIT")
     a = ap.parse_args(argv)
     pl.WAIT = a.wait
     from playwright.sync_api import sync_playwright

@@ -22,11 +22,13 @@ Measured in Debian's headless chromium, in the same run and through the same wid
 * **every explorer's drag step** (its first handle inside the view, 3 px moves);
 
   every drag and slider step starts after the page has been idle for the same
-  :data:`PAUSE` (0.03 s): the slider steps used to wait 0.25 s and the drag steps
-  0.03 s, so the two were not measured alike.  At equal pauses the slider step is
-  within a few ms of the drag step in Voila (the gap there was the method's); in
-  JupyterLab it stays about 10 ms above the drag step (not yet explained: the kernel's
-  share is the same);
+  :data:`PAUSE` (0.03 s), and F is also measured after that pause ("F, paused": a ping
+  sent as soon as the last reply arrived can wait for the server and kernel, e.g. ~35 ms
+  more in Voila on a loaded machine, 2026-11-27; :data:`WAIT`).  Where JupyterLab's extra
+  time goes is measured by ``page_trace.py`` and A/B'd by ``page_ab.py``: JupyterLab works
+  on every kernel busy/idle pair (favicon swap and fetch, the toolbar's kernel status and a
+  forced layout, about 10 ms of main thread per pair), and its kernel websocket holds small
+  messages for the browser's delayed ACK (Nagle; ``nodelay_config.py`` removes that);
 * **Play** also records the kernel's milliseconds per frame (``ms`` in each tick's
   ack) and the tick's round trip, to tell the kernel's share from the messaging's;
 * the **Python side** of one chain update (compute, picture, the update message) and
@@ -117,12 +119,13 @@ def _canvas(page, title: str):
     return ex, cv
 
 
-#: How the harness waits for the page: ``"page"`` (one call that returns when the page is done:
-#: the page itself checks, on a 2 ms timer) or ``"poll"`` (the harness asks
-#: every 5 ms, the way it measured until 2026-11-27).  Each question runs in the page's main
-#: thread, and a question through a locator filtered by text walks the whole document's text:
-#: in JupyterLab (a far larger document) polling took main-thread time from the step it measured.
-WAIT = "page"
+#: How the harness waits for the page: ``"poll"`` (it asks every 5 ms through the canvas's
+#: locator) or ``"page"`` (one call that the page answers when the step is done, checking on a
+#: 2 ms timer).  Each question runs in the page's main thread, but A/B runs (page_ab.py
+#: --harness-ab, 2026-11-27) showed no step made slower by polling: with "page" the reply's
+#: paint came 2-5 ms later and an F ping sent within a millisecond of the last reply waited
+#: ~35 ms more (Voila and JupyterLab), so "poll" stays the default.
+WAIT = "poll"
 
 
 def _api(cv, expr: str):
@@ -132,9 +135,8 @@ def _api(cv, expr: str):
 def _until(cv, expr: str, timeout_ms: float = 5000.0):
     """The value of ``expr`` (in the page, ``p``: the canvas API) once it is truthy (None: timed out).
 
-    With :data:`WAIT` ``"page"`` the page checks it every 2 ms (a timer: an animation-frame loop
-    kept the page drawing every frame and added about 3 ms to the step it measured) and answers
-    when it holds (one call, no polling from here); with ``"poll"`` the harness asks every 5 ms.
+    With :data:`WAIT` ``"page"`` the page checks it every 2 ms and answers when it holds (one
+    call, no polling from here); with ``"poll"`` the harness asks every 5 ms.
     """
     if WAIT == "poll":
         for _ in range(int(timeout_ms / 5)):
