@@ -485,10 +485,12 @@ class ExteriorConstruction:
 class InteriorConstruction:
     """The steps of the polar construction of an interior point (thesis 5.2.2, Fig. 5.3).
 
+    An interior point has no real tangents: the construction goes through the poles of two chords.
+
     Attributes
     ----------
     point : ndarray, shape (..., 3)
-        The point ``p``.
+        The point ``p``, inside the conic.
     lines : ndarray, shape (..., 2, 3)
         Step 1: two lines through ``p``.
     chord_points : ndarray, shape (..., 2, 2, 3)
@@ -796,7 +798,7 @@ def special_base(C, Q1, rtol: float = 1e-9):
     Raises
     ------
     InputError
-        If ``Q1`` has no real tangents.
+        ``Q1`` is not exterior to ``C``: it has no real tangents.
 
     Examples
     --------

@@ -219,7 +219,10 @@ def percussion_axis(inertia, point) -> np.ndarray:
 
 @_documented
 def percussion_pole(inertia, line) -> np.ndarray:
-    """Acceleration pole ``a = I⁻¹ f`` whose axis of percussion is ``line`` (inverse of :func:`percussion_axis`).
+    """Acceleration pole ``a = I⁻¹ f`` whose axis of percussion is ``line``.
+
+    The inverse of :func:`percussion_axis`: a couple (the line at infinity) turns the body about its
+    centre of mass.
 
     {parameters inertia impulse}
 

@@ -68,6 +68,8 @@ def X_P(point) -> np.ndarray:
 def X_P_inv_T(point) -> np.ndarray:
     """Wrench transform from the origin to ``point`` (thesis 4.24): ``inv(X_P(p)).T``.
 
+    As ``X_P(p)⁻¹ = X_P(-p)``, it is ``X_P(-p).T``.
+
     {parameters point returns_3x3}
 
     Examples
@@ -75,7 +77,7 @@ def X_P_inv_T(point) -> np.ndarray:
     >>> X_P_inv_T([0.0, 1.0]) @ [1.0, 0.0, 0.0]   # force along x through the origin, moment about (0, 1)
     array([1., 0., 1.])
     """
-    return np.ascontiguousarray(np.swapaxes(X_P(-as_xy(point, "point")), -1, -2))     # X_P(p)⁻¹ = X_P(-p)
+    return np.ascontiguousarray(np.swapaxes(X_P(-as_xy(point, "point")), -1, -2))
 
 
 @documented
@@ -225,7 +227,7 @@ def unit_translation(direction) -> np.ndarray:
     Raises
     ------
     DegenerateGeometryError
-        If ``direction`` is the zero vector.
+        ``direction`` is zero, so there is no velocity to scale.
 
     Examples
     --------
@@ -347,6 +349,8 @@ def twist_magnitude(twist) -> np.ndarray:
 def pole_xy(twist) -> np.ndarray:
     """Euclidean pole ``(-v_y/ω, v_x/ω)`` of a twist (thesis 4.10, 5.51); NaN for a translation.
 
+    The point that does not move: there the twist is ``ω [y, -x, 1]``.
+
     {parameters twist returns_2}
 
     Examples
@@ -436,7 +440,9 @@ def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
 @overflow_checked("inertia or point")
 @documented
 def inertia_at(inertia, point) -> np.ndarray:
-    """Inertia expressed at ``point``: ``X_P⁻ᵀ I X_P⁻¹`` (thesis 1.68, 4.24; parallel axis theorem).
+    """Inertia expressed at ``point``: ``X_P⁻ᵀ I X_P⁻¹`` (thesis 1.68, 4.24).
+
+    This is the parallel axis theorem: at the centre of mass, ``I[2, 2]`` is ``J``.
 
     {parameters inertia point returns_3x3 not_psd}
 
@@ -883,6 +889,8 @@ class Twist(_Screw):
     def pole(self):
         """The pole as a :class:`planargeo.geometry.Point` (thesis 5.51).
 
+        The point that does not move; at infinity for a translation.
+
         Raises
         ------
         ShapeError, DegenerateGeometryError
@@ -1014,7 +1022,7 @@ class Wrench(_Screw):
         Raises
         ------
         ShapeError, DegenerateGeometryError
-            A batch of wrenches, or the zero wrench.
+            A batch of wrenches; the zero wrench, which has no line.
 
         Examples
         --------
@@ -1111,10 +1119,7 @@ def add_twists(v1, v2, rtol: float = 1e-12) -> TwistSum:
     >>> c.case, c.beta, c.P
     ('rotations', 0.75, array([ 0., -3.,  1.]))
     """
-    a = _single(v1, Twist, "v1")
-    b = _single(v2, Twist, "v2")
-    with np.errstate(over="ignore", invalid="ignore"):
-        return _finite_sum(_add_twists(a, b, check_tolerance(rtol)), "add_twists", "v1 or v2")
+    return _finite_sum(_add_twists, Twist, (v1, v2), ("v1", "v2"), rtol)
 
 
 def _add_twists(a, b, rtol) -> TwistSum:
@@ -1219,10 +1224,7 @@ def add_wrenches(f1, f2, rtol: float = 1e-12) -> WrenchSum:
     >>> c.case, c.beta, c.d3                          # lever rule: resultant on x = 3
     ('parallel', 0.75, 3.0)
     """
-    a = _single(f1, Wrench, "f1")
-    b = _single(f2, Wrench, "f2")
-    with np.errstate(over="ignore", invalid="ignore"):
-        return _finite_sum(_add_wrenches(a, b, check_tolerance(rtol)), "add_wrenches", "f1 or f2")
+    return _finite_sum(_add_wrenches, Wrench, (f1, f2), ("f1", "f2"), rtol)
 
 
 def _add_wrenches(a, b, rtol) -> WrenchSum:
@@ -1263,11 +1265,16 @@ def _add_wrenches(a, b, rtol) -> WrenchSum:
     )
 
 
-def _finite_sum(c, what: str, culprits: str):
-    """The construction ``c`` if every number in it is finite (``beta = inf`` of opposite rotations aside)."""
+def _finite_sum(add, cls, pair, names, rtol):
+    """The construction ``add(a, b, rtol)`` of two screws of class ``cls``, if every number in it is
+    finite (``beta = inf`` of opposite rotations aside)."""
+    a, b = (_single(x, cls, name) for x, name in zip(pair, names))
+    with np.errstate(over="ignore", invalid="ignore"):
+        c = add(a, b, check_tolerance(rtol))
     for k, v in vars(c).items():
         if v is None or isinstance(v, str) or (k == "beta" and c.case == "opposite_rotations"):
             continue
         if not np.all(np.isfinite(getattr(v, "array", v))):
-            raise NumericOverflowError(f"{what}: {k} overflows double precision ({culprits} too large)")
+            raise NumericOverflowError(f"{add.__name__[1:]}: {k} overflows double precision "
+                                       f"({' or '.join(names)} too large)")
     return c
