@@ -45,6 +45,8 @@ _ENTRIES = {
     "normalized": "Returns\n-------\nndarray, shape (..., 3)\n    The base coordinates.\n\n"
                   "Raises\n------\nDegenerateGeometryError, NumericOverflowError\n"
                   "    Some element is the zero vector, or a finite one lies beyond double precision.",
+    "p_q": "p, q : array_like, shape (..., 3)\n    Homogeneous points.",
+    "l_m": "l, m : array_like, shape (..., 3)\n    Homogeneous lines.",
     "cond_limit": "cond_limit : float, optional\n"
                   "    Largest accepted condition number ``κ`` (:func:`cross_cond`; default\n"
                   "    :data:`planargeo.errors.COND_LIMIT`, ``1e12``).",
@@ -319,6 +321,8 @@ def to_xy(p) -> np.ndarray:
 def direction(p) -> np.ndarray:
     """Unit direction ``(-b, a)/|(a, b)|`` of an ideal point ``[a, b, 0]``; NaN for finite points.
 
+    The inverse of :func:`from_direction`, up to length.
+
     {parameters p returns_2}
 
     Examples
@@ -337,6 +341,8 @@ def direction(p) -> np.ndarray:
 @_shared
 def line_direction(l) -> np.ndarray:
     """Unit direction ``(fx, fy)/|f|`` along a line (thesis 5.55); NaN for the line at infinity.
+
+    A line ``[fx, fy, tz]`` points along its force ``(fx, fy)``.
 
     {parameters l returns_2}
 
@@ -473,15 +479,7 @@ def join(p, q, cond_limit: float = COND_LIMIT) -> np.ndarray:
     For points at ``w = 1`` it is the wrench with force ``q - p``; two ideal points give the line
     at infinity.
 
-    Parameters
-    ----------
-    p, q : array_like, shape (..., 3)
-        Homogeneous points.
-    {cond_limit}
-
-    {returns_3}
-
-    {cross_raises}
+    {parameters p_q cond_limit returns_3 cross_raises}
 
     Examples
     --------
@@ -501,15 +499,7 @@ def join(p, q, cond_limit: float = COND_LIMIT) -> np.ndarray:
 def meet(l, m, cond_limit: float = COND_LIMIT) -> np.ndarray:
     """The point common to two lines, ``l × m`` (thesis 5.33-5.34); parallel lines meet at infinity.
 
-    Parameters
-    ----------
-    l, m : array_like, shape (..., 3)
-        Homogeneous lines.
-    {cond_limit}
-
-    {returns_3}
-
-    {cross_raises}
+    {parameters l_m cond_limit returns_3 cross_raises}
 
     Examples
     --------

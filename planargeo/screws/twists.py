@@ -816,8 +816,7 @@ class Twist(_Screw):
     """
 
     __slots__ = ()
-    _name = "twist"
-    _carry = staticmethod(X_P)
+    _name, _carry = "twist", staticmethod(X_P)
     _element = ("Point", "pole", "pole")
 
     @classmethod
@@ -928,8 +927,7 @@ class Wrench(_Screw):
     """
 
     __slots__ = ()
-    _name = "wrench"
-    _carry = staticmethod(X_P_inv_T)
+    _name, _carry = "wrench", staticmethod(X_P_inv_T)
     _element = ("Line", "line", "line of action")
 
     @classmethod
