@@ -516,10 +516,12 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         Parameters
         ----------
         exc : Exception
+            What refused the update.
 
         Returns
         -------
         str
+            The reason, cut to at most 90 characters.
         """
         return short_text(self._reason(exc))
 
@@ -541,6 +543,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         Returns
         -------
         callable
+            Takes ``callback``'s arguments and gives its result, or None after an error (shown).
         """
         def run(*args):
             try:
