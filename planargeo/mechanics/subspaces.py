@@ -725,8 +725,9 @@ def effective_base_inertia(I, R) -> np.ndarray:
 
 
 # ----------------------------------------------------------------------------- class
-#: The wrench and twist sides of a :class:`Decomposition`, duals: one split and one join serve both,
-#: with the spaces and names of the side (the methods' Parameters and Returns: :data:`_SPLIT`, :data:`_JOIN`)
+#: The two sides of a :class:`Decomposition`, duals: a wrench ``f = T Q + R μ`` is split by ``(s, U)``
+#: (6.38, 6.61), a twist ``a = s ψ + U γ`` by ``(T, R)`` (6.44, 6.62).  One split and one join serve
+#: both sides; :data:`_SPLIT` and :data:`_JOIN` are their Parameters and Returns, filled per side.
 _WRENCH = dict(x="f", screw="Wrench", spaces=("s", "U"), bases=("T", "R"), names=("Q", "mu"), parts=("Q", "μ"),
                words="Active force and reaction components")
 _TWIST = dict(x="a", screw="Acceleration twist", spaces=("T", "R"), bases=("s", "U"), names=("psi", "gamma"),
