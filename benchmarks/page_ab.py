@@ -118,7 +118,8 @@ def _open_lab(browser, tmp: Path, name: str, server_config: dict | None, a):
         os.environ["JUPYTER_CONFIG_PATH"] = str(extra)
     try:
         if a.only == ["voila"]:
-            server = VoilaServer(root / "page.ipynb", tmp / f"{name}-srv")
+            # without the app's config (its config path would hide B's config file)
+            server = VoilaServer(root / "page.ipynb", tmp / f"{name}-srv", app_config=False)
         else:
             server = LabServer(root, tmp / f"{name}-srv")
     finally:
