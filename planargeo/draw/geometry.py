@@ -169,6 +169,74 @@ def _line_from_euclid(a, b, c):
     return np.array([b, -a, c])
 
 
+_EPS = 2.0 ** -53                    # LAPACK's dlamch("E")
+_SAFMIN = 2.2250738585072014e-308    # dlamch("S")
+_RMIN = 1.4916681462400413e-154      # below this LAPACK's syevd rescales first: left to numpy
+
+
+def _eigh2(a: float, b: float, c: float):
+    """Eigenvalues (ascending) and unit eigenvectors of ``[[a, b], [b, c]]`` in plain floats.
+
+    The same values and the same eigenvector signs as :func:`numpy.linalg.eigh` (LAPACK
+    ``syevd``: a 2×2 block is split off when ``b`` is negligible, else turned by ``dlaev2``'s
+    rotation), without numpy's per-call cost; a matrix so small that LAPACK rescales it goes to
+    numpy.  Returns ``((l0, l1), (r0, r1))`` with ``r0``, ``r1`` the eigenvector columns.
+    """
+    m = max(abs(a), abs(b), abs(c))
+    if 0.0 < m < _RMIN or not math.isfinite(m):
+        lam, R = np.linalg.eigh(np.array([[a, b], [b, c]]))
+        return (float(lam[0]), float(lam[1])), (tuple(R[:, 0].tolist()), tuple(R[:, 1].tolist()))
+    if (b == 0.0 or abs(b) <= math.sqrt(abs(a)) * math.sqrt(abs(c)) * _EPS
+            or b * b <= (_EPS * _EPS * abs(a)) * abs(c) + _SAFMIN):
+        d0, d1, z0, z1 = a, c, (1.0, 0.0), (0.0, 1.0)
+    else:   # the rotation of LAPACK's dlaev2, step by step
+        sm, df, tb = a + c, a - c, b + b
+        adf, ab = abs(df), abs(tb)
+        acmx, acmn = (a, c) if abs(a) > abs(c) else (c, a)
+        if adf > ab:
+            rt = adf * math.sqrt(1.0 + (ab / adf) ** 2)
+        elif adf < ab:
+            rt = ab * math.sqrt(1.0 + (adf / ab) ** 2)
+        else:
+            rt = ab * math.sqrt(2.0)
+        if sm < 0.0:
+            rt1, sgn1 = 0.5 * (sm - rt), -1
+            rt2 = (acmx / rt1) * acmn - (b / rt1) * b
+        elif sm > 0.0:
+            rt1, sgn1 = 0.5 * (sm + rt), 1
+            rt2 = (acmx / rt1) * acmn - (b / rt1) * b
+        else:
+            rt1, rt2, sgn1 = 0.5 * rt, -0.5 * rt, 1
+        cs, sgn2 = (df + rt, 1) if df >= 0.0 else (df - rt, -1)
+        if abs(cs) > ab:
+            ct = -tb / cs
+            sn1 = 1.0 / math.sqrt(1.0 + ct * ct)
+            cs1 = ct * sn1
+        elif ab == 0.0:
+            cs1, sn1 = 1.0, 0.0
+        else:
+            tn = -cs / tb
+            cs1 = 1.0 / math.sqrt(1.0 + tn * tn)
+            sn1 = tn * cs1
+        if sgn1 == sgn2:
+            cs1, sn1 = -sn1, cs1
+        d0, d1, z0, z1 = rt1, rt2, (cs1, sn1), (-sn1, cs1)
+    if d0 > d1:
+        d0, d1, z0, z1 = d1, d0, z1, z0
+    return (d0, d1), (z0, z1)
+
+
+def _solve2(a00: float, a01: float, a10: float, a11: float, b0: float, b1: float):
+    """``[[a00, a01], [a10, a11]] x = b`` by LU with partial pivoting (as LAPACK ``gesv``)."""
+    if abs(a10) > abs(a00):
+        a00, a01, a10, a11, b0, b1 = a10, a11, a00, a01, b1, b0
+    l = a10 * (1.0 / a00)
+    u11 = a11 - l * a01
+    y1 = b1 - l * b0
+    x1 = y1 / u11
+    return (b0 - x1 * a01) / a00, x1
+
+
 def conic_geometry(C, *, rtol: float = 1e-9) -> dict:
     """How to draw the conic ``C`` (package coordinates).
 
@@ -193,77 +261,77 @@ def conic_geometry(C, *, rtol: float = 1e-9) -> dict:
     >>> g["kind"], np.round(g["affine"][:2, :2], 12).tolist()
     ('ellipse', [[2.0, 0.0], [0.0, 2.0]])
     """
-    E = euclidean_conic(_mat(C, "conic"))
-    scale = float(np.abs(E).max())
+    # plain floats (a 2×2 eigen-decomposition and solve in closed form, as LAPACK does them:
+    # the numbers numpy.linalg gives, at a fraction of its per-call cost)
+    (p00, p01, p02), (_, p11, p12), (_, _, p22) = _mat(C, "conic").tolist()
+    # the Euclidean matrix Mᵀ C M (euclidean_conic), entry by entry
+    e00, e01, e02, e11, e12, e22 = p11, -p01, -p12, p00, p02, p22
+    scale = max(abs(e00), abs(e01), abs(e02), abs(e11), abs(e12), abs(e22))
     if scale == 0.0:
         return {"kind": "empty", "imaginary": False}
-    E = E / scale
-    A, b, c = E[:2, :2], E[:2, 2], E[2, 2]
-    lam, R = np.linalg.eigh(A)
-    order = np.argsort(-np.abs(lam))
-    lam, R = lam[order], R[:, order]
-    if np.linalg.det(R) < 0:
-        R[:, 1] = -R[:, 1]
+    e00, e01, e02, e11, e12, e22 = (v / scale for v in (e00, e01, e02, e11, e12, e22))
+    b0, b1, c = e02, e12, e22
+    (l0, l1), (r0, r1) = _eigh2(e00, e01, e11)
+    if abs(l0) < abs(l1):          # the larger |eigenvalue| first
+        l0, l1, r0, r1 = l1, l0, r1, r0
+    if r0[0] * r1[1] - r0[1] * r1[0] < 0:
+        r1 = (-r1[0], -r1[1])
     tol = rtol
-    if abs(lam[1]) > tol * max(1.0, abs(lam[0])) and abs(lam[0]) > tol:
+    if abs(l1) > tol * max(1.0, abs(l0)) and abs(l0) > tol:
         # central conic
-        x0 = -np.linalg.solve(A, b)
-        k = c + b @ x0
-        if abs(k) <= tol * max(abs(lam[0]), 1.0) * max(1.0, x0 @ x0):
-            if lam[0] * lam[1] > 0:
-                return {"kind": "point", "point": x0, "imaginary": False}
+        x, y = _solve2(e00, e01, e01, e11, b0, b1)
+        x, y = -x, -y
+        k = c + (b0 * x + b1 * y)
+        if abs(k) <= tol * max(abs(l0), 1.0) * max(1.0, x * x + y * y):
+            if l0 * l1 > 0:
+                return {"kind": "point", "point": np.array([x, y]), "imaginary": False}
             # two lines through x0: sqrt|l0| u = ± sqrt|l1| v in the eigenframe
-            s0, s1 = np.sqrt(abs(lam[0])), np.sqrt(abs(lam[1]))
+            s0, s1 = math.sqrt(abs(l0)), math.sqrt(abs(l1))
             lines = []
             for sg in (1.0, -1.0):
-                nrm = s0 * R[:, 0] - sg * s1 * R[:, 1]
-                lines.append(_line_from_euclid(nrm[0], nrm[1], -nrm @ x0))
+                n0, n1 = s0 * r0[0] - sg * s1 * r1[0], s0 * r0[1] - sg * s1 * r1[1]
+                lines.append(_line_from_euclid(n0, n1, -(n0 * x + n1 * y)))
             return {"kind": "lines", "lines": lines, "imaginary": False}
         imaginary = False
-        if lam[0] * lam[1] > 0:
-            if lam[0] * k > 0:  # no real points: flip the sign of k (package convention)
+        if l0 * l1 > 0:
+            if l0 * k > 0:  # no real points: flip the sign of k (package convention)
                 imaginary = True
                 k = -k
-            ax_ = np.sqrt(-k / lam)
+            a0, a1 = math.sqrt(-k / l0), math.sqrt(-k / l1)
             kind = "ellipse"
         else:
             # hyperbola: the axis whose eigenvalue has the sign of -k is the real one
-            ax_ = np.sqrt(np.abs(k / lam))
-            if lam[0] * k >= 0:
-                ax_ = ax_[::-1]
-                R = np.column_stack([R[:, 1], -R[:, 0]])
+            a0, a1 = math.sqrt(abs(k / l0)), math.sqrt(abs(k / l1))
+            if l0 * k >= 0:
+                a0, a1 = a1, a0
+                r0, r1 = r1, (-r0[0], -r0[1])
             kind = "hyperbola"
-        aff = np.eye(3)
-        aff[:2, :2] = R @ np.diag(ax_)
-        aff[:2, 2] = x0
-        return {"kind": kind, "affine": aff, "imaginary": imaginary, "center": x0}
-    if abs(lam[0]) > tol:
+        aff = np.array([[r0[0] * a0, r1[0] * a1, x], [r0[1] * a0, r1[1] * a1, y], [0.0, 0.0, 1.0]])
+        return {"kind": kind, "affine": aff, "imaginary": imaginary, "center": np.array([x, y])}
+    if abs(l0) > tol:
         # A has rank one: parabola or parallel lines
-        e, f = R[:, 0], R[:, 1]
-        l0 = lam[0]
-        be, bf = b @ e, b @ f
+        be, bf = b0 * r0[0] + b1 * r0[1], b0 * r1[0] + b1 * r1[1]
         if abs(bf) > tol * max(1.0, abs(be), abs(c)):
             # l0 u^2 + 2 be u + 2 bf v + c = 0  ->  v = -(l0 u^2 + 2 be u + c) / (2 bf)
             u0 = -be / l0
             v0 = -(c - be * be / l0) / (2 * bf)
             kcoef = -l0 / (2 * bf)  # v - v0 = kcoef (u - u0)^2
             # unit parabola (s, s^2): u = u0 + s / kcoef, v = v0 + s^2 / kcoef
-            aff = np.eye(3)
-            aff[:2, 0] = e / kcoef
-            aff[:2, 1] = f / kcoef
-            aff[:2, 2] = u0 * e + v0 * f
+            aff = np.array([[r0[0] / kcoef, r1[0] / kcoef, u0 * r0[0] + v0 * r1[0]],
+                            [r0[1] / kcoef, r1[1] / kcoef, u0 * r0[1] + v0 * r1[1]],
+                            [0.0, 0.0, 1.0]])
             return {"kind": "parabola", "affine": aff, "imaginary": False}
         disc = be * be - l0 * c
         if disc < -tol:
             return {"kind": "empty", "imaginary": True}
-        r = np.sqrt(max(disc, 0.0))
+        r = math.sqrt(max(disc, 0.0))
         us = sorted({(-be + r) / l0, (-be - r) / l0}) if r > 0 else [-be / l0]
         return {"kind": "lines", "imaginary": False,
-                "lines": [_line_from_euclid(e[0], e[1], -u) for u in us]}
+                "lines": [_line_from_euclid(r0[0], r0[1], -u) for u in us]}
     # A == 0: the line at infinity times a finite line  2 b.x + c = 0
-    if np.hypot(*b) > tol:
+    if math.hypot(b0, b1) > tol:
         return {"kind": "lines", "imaginary": False,
-                "lines": [_line_from_euclid(2 * b[0], 2 * b[1], c)], "line_at_infinity": True}
+                "lines": [_line_from_euclid(2 * b0, 2 * b1, c)], "line_at_infinity": True}
     return {"kind": "lines", "imaginary": False, "lines": [], "line_at_infinity": True}
 
 
