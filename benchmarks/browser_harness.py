@@ -59,7 +59,9 @@ class LabServer:
                        "extension_manager": "readonly",
                        "expose_app_in_browser": True},
             "ServerApp": {"token": "", "password": "", "disable_check_xsrf": True,
-                          "open_browser": False},
+                          "open_browser": False,       # as make lab (scripts/lab.py):
+                          "kernel_websocket_connection_class":
+                              "planargeo.widgets.server.PromptKernelConnection"},
         }))
         (settings / "notification.jupyterlab-settings").write_text(
             json.dumps({"fetchNews": "false", "checkForUpdates": False}))

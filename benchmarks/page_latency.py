@@ -28,7 +28,10 @@ Measured in Debian's headless chromium, in the same run and through the same wid
   time goes is measured by ``page_trace.py`` and A/B'd by ``page_ab.py``: JupyterLab works
   on every kernel busy/idle pair (favicon swap and fetch, the toolbar's kernel status and a
   forced layout, about 10 ms of main thread per pair), and its kernel websocket holds small
-  messages for the browser's delayed ACK (Nagle; ``nodelay_config.py`` removes that);
+  messages for the browser's delayed ACK (Nagle's algorithm). ``make lab``, ``make app`` and
+  the servers measured here switch that off (:mod:`planargeo.widgets.server`); Jupyter's
+  default is A/B'd by ``page_ab.py --lab-config-b '{"ServerApp": {"kernel_websocket_connection_class":
+  "jupyter_server.services.kernels.connection.channels.ZMQChannelsWebsocketConnection"}}'``;
 * **Play** also records the kernel's milliseconds per frame (``ms`` in each tick's
   ack) and the tick's round trip, to tell the kernel's share from the messaging's;
 * the **Python side** of one chain update (compute, picture, the update message) and

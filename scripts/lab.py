@@ -25,6 +25,8 @@ from pathlib import Path
 #: Always last on Jupyter's command line, so that they win over the caller's options and every
 #: configuration file: loopback only, no remote access, the token (filled in at start).
 FORCED = ("--ServerApp.ip=127.0.0.1", "--ServerApp.allow_remote_access=False")
+#: First, so the caller may override it: kernel messages sent at once (planargeo.widgets.server).
+PROMPT = "--ServerApp.kernel_websocket_connection_class=planargeo.widgets.server.PromptKernelConnection"
 
 
 def lab_url(serverapp, token: str) -> str:
@@ -52,7 +54,7 @@ def main(argv: list[str]) -> int:
                   "every start) and cannot be changed", file=sys.stderr)
             return 2
     token = secrets.token_hex(24)
-    serverapp = LabApp.initialize_server(argv=[*argv, *FORCED, f"--IdentityProvider.token={token}"])
+    serverapp = LabApp.initialize_server(argv=[PROMPT, *argv, *FORCED, f"--IdentityProvider.token={token}"])
     if serverapp.ip != "127.0.0.1" or serverapp.identity_provider.token != token:   # belt and braces
         print("make lab: refusing to start: the server would not be on 127.0.0.1 with the token", file=sys.stderr)
         return 1

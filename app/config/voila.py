@@ -27,6 +27,10 @@ c.MappingKernelManager.cull_busy = False
 # Voila stops waiting ("Timeout waiting for IOPub output") and the page comes up without some explorers
 c.VoilaExecutor.iopub_timeout = 60
 
+# kernel messages sent at once, not held for the browser's delayed acknowledgement (about 40 ms a
+# step otherwise): planargeo/widgets/server.py
+c.Voila.kernel_websocket_connection_class = "planargeo.widgets.server.PromptKernelConnection"
+
 # never send a traceback to the page
 c.VoilaConfiguration.show_tracebacks = False
 
