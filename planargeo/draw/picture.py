@@ -765,6 +765,7 @@ class Picture:
             return v
 
         elements = []
+        paths: list[tuple[dict, np.ndarray]] = []   # (n, 2) float paths, rounded together below
         for el in sorted(self.elements, key=_z_of):
             parts = []
             for part in el["parts"]:
@@ -775,7 +776,11 @@ class Picture:
                     y = part["y"]
                     part["y"] = round(y, nd) + 0.0 if type(y) is float else rnd(y)
                 if "xy" in part:
-                    part["xy"] = rnd(part["xy"])
+                    xy = part["xy"]
+                    if type(xy) is np.ndarray and xy.dtype == np.float64 and xy.ndim == 2 and xy.shape[1] == 2:
+                        paths.append((part, xy))
+                    else:
+                        part["xy"] = rnd(xy)
                 if "m" in part:
                     part["m"] = [round(v, nd + 2) + 0.0 for v in part["m"]]
                 parts.append(part)
@@ -786,6 +791,15 @@ class Picture:
                     out.pop(k, None)
             out["parts"] = parts
             elements.append(out)
+        if paths:   # one np.round for all paths (elementwise: the same numbers as one by one)
+            rows = np.round(np.concatenate([xy for _, xy in paths]), nd)
+            rows += 0.0
+            rows = rows.tolist()
+            i = 0
+            for part, xy in paths:
+                n = len(xy)
+                part["xy"] = rows[i:i + n]
+                i += n
         ticks = ({"x": nice_ticks(self.box[0], self.box[1]), "y": nice_ticks(self.box[2], self.box[3])}
                  if self.ticks else None)
         return {"size": list(self.size), "margin": list(self.margin),
