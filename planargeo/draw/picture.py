@@ -231,6 +231,10 @@ def _z_of(el: dict):
     return el["z"]
 
 
+def _first(t: tuple):
+    return t[0]
+
+
 #: Docstring entries of the element methods (and of :mod:`planargeo.draw._shared`), written once
 _ENTRIES = {"id": "id : str\n    Stable name of the element.",
             "role": "role : str\n    Style role (:mod:`planargeo.draw.style`).",
@@ -696,42 +700,55 @@ class Picture:
 
         # texts written at a fixed place (a key's rows, a scale bar's length, a message) come
         # first: the labels placed after them keep clear of them
+        free_els = []            # (z, the element's labels to place), in drawing order
         for el in self.elements:
+            mine = None
             for part in el["parts"]:
-                if part["p"] == "text" and part.get("fixed") and part["text"] and not part.get("over"):
-                    w = em * len(part["text"])
-                    x0 = (part["x"] - bx0) * kx + part["dx"] - _ALIGN_X[part["ha"]] * w
-                    y0 = (part["y"] - by0) * ky + part["dy"] - _ALIGN_Y[part["va"]] * h
-                    reserve(x0, y0, x0 + w, y0 + h)
-
-        for el in sorted(self.elements, key=lambda e: -e["z"]):
-            for part in el["parts"]:
-                if part["p"] != "text" or part.get("fixed") or not part["text"]:
+                if part["p"] != "text" or not part["text"]:
                     continue
+                if part.get("fixed"):
+                    if not part.get("over"):
+                        w = em * len(part["text"])
+                        x0 = (part["x"] - bx0) * kx + part["dx"] - _ALIGN_X[part["ha"]] * w
+                        y0 = (part["y"] - by0) * ky + part["dy"] - _ALIGN_Y[part["va"]] * h
+                        reserve(x0, y0, x0 + w, y0 + h)
+                elif mine is None:
+                    mine = [part]
+                    free_els.append((-el["z"], mine))
+                else:
+                    mine.append(part)
+        free_els.sort(key=_first)   # topmost first (a stable sort: the elements' order otherwise)
+
+        for _, parts in free_els:
+            for part in parts:
                 w = em * len(part["text"])
                 qx = (part["x"] - bx0) * kx
                 qy = (part["y"] - by0) * ky
                 dx, dy = part["dx"], part["dy"]
-                r = max(math.hypot(dx, dy), 6.0)
                 fx, fy = _ALIGN_X[part["ha"]], _ALIGN_Y[part["va"]]
+                r = None
                 k = 0
                 while True:    # the asked spot, then the eight around the anchor
                     if k:
+                        if r is None:
+                            r = max(math.hypot(dx, dy), 6.0)
                         c, s_, fx, fy = _SPOTS[k - 1]
                         dx, dy = r * c, r * s_
                     x0 = qx + dx - fx * w
                     y0 = qy + dy - fy * h
                     x1, y1 = x0 + w, y0 + h
                     if x0 >= 0.0 and y0 >= 0.0 and x1 <= pw and y1 <= ph:
-                        free = True        # no placed box in the rows this one covers meets it
+                        # free: no placed box in the rows this one covers meets it
                         for j in range(int(y0 // h), int(y1 // h) + 1):
-                            for px0, py0, px1, py1 in get(j, ()):
-                                if x0 < px1 and px0 < x1 and y0 < py1 and py0 < y1:
-                                    free = False
-                                    break
-                            if not free:
+                            row = get(j)
+                            if row is not None:
+                                for px0, py0, px1, py1 in row:
+                                    if x0 < px1 and px0 < x1 and y0 < py1 and py0 < y1:
+                                        break
+                                else:
+                                    continue
                                 break
-                        if free:
+                        else:
                             break
                     k += 1
                     if k > 8:
