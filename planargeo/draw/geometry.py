@@ -96,12 +96,18 @@ def clip_line(line, box) -> np.ndarray | None:
            [ 1. ,  0.5]])
     """
     fx, fy, tz = (float(v) for v in line)
+    x0, x1, y0, y1 = (float(v) for v in box)
+    out = _clip(fx, fy, tz, x0, x1, y0, y1)
+    return None if out is None else np.array(out)
+
+
+def _clip(fx: float, fy: float, tz: float, x0: float, x1: float, y0: float, y1: float):
+    """:func:`clip_line` on plain floats: ``[[x, y], [x, y]]`` (lists) or None."""
     sc = max(abs(fx), abs(fy))
     if sc == 0.0 or abs(tz) >= sc * 1e300:  # the line at infinity (or beyond any view)
         return None
     fx, fy, tz = fx / sc, fy / sc, tz / sc  # homogeneous rescaling: same line
     F2 = fx * fx + fy * fy
-    x0, x1, y0, y1 = (float(v) for v in box)
     # plain floats (the same IEEE operations as on arrays: a clipped line costs microseconds)
     p0, p1 = fy * tz / F2, -fx * tz / F2  # foot of the perpendicular from the origin
     n = math.sqrt(F2)
@@ -126,7 +132,7 @@ def clip_line(line, box) -> np.ndarray | None:
                 q[k] = lo
             elif abs(q[k] - hi) <= 1e-12 * max(1.0, abs(hi)):
                 q[k] = hi
-    return np.array(out)
+    return out
 
 
 def _unit_curves() -> dict[str, list[np.ndarray]]:

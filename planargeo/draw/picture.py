@@ -41,7 +41,7 @@ from typing import Any
 
 import numpy as np
 
-from planargeo.draw.geometry import clip_line, conic_curves, conic_geometry
+from planargeo.draw.geometry import _clip, conic_curves, conic_geometry
 from planargeo.draw.style import COLORS, LABEL_PT, LINEWIDTHS, STYLES
 from planargeo.errors import InputError, NonFiniteError, ShapeError
 from planargeo.geometry._docs import entries
@@ -487,12 +487,11 @@ class Picture:
         cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
         if F != 0.0 and abs(lz + cy * lx - cx * ly) > FAR * math.hypot(x1 - x0, y1 - y0) * F:
             F = lx = ly = 0.0     # farther than FAR view diagonals: drawn like the line at infinity
-        l = np.array([lx, ly, lz])
-        seg = clip_line(l, self.box) if F else None
+        seg = _clip(lx, ly, lz, x0, x1, y0, y1) if F else None   # clip_line, on floats
         if seg is not None:
-            parts.append({"p": "path", "xy": seg, "closed": False})
+            parts.append({"p": "path", "xy": np.array(seg), "closed": False})
             ex, ey = lx / F, ly / F
-            (sx, sy), (tx, ty) = seg.tolist()
+            (sx, sy), (tx, ty) = seg
             if anchor is None:
                 ax, ay = (self.box[0] + self.box[1]) / 2, (self.box[2] + self.box[3]) / 2
             else:
