@@ -28,12 +28,17 @@ def _vec(x, name: str) -> np.ndarray:
 
 
 def _mat(x, name: str) -> np.ndarray:
+    return np.array(_sym_rows(x, name))
+
+
+def _sym_rows(x, name: str) -> list[list[float]]:
+    """A symmetric 3×3 matrix (array_like or ``.matrix`` / ``.array``) as rows of floats, ``(m + mᵀ)/2``."""
     if not isinstance(x, np.ndarray):
         for attr in ("matrix", "array"):
             if hasattr(x, attr):
                 x = getattr(x, attr)
                 break
-    m = as_array(x, name, (3, 3)).copy()
+    m = as_array(x, name, (3, 3))
     if m.ndim != 2:
         raise InputError(f"{name} must be a single (3, 3) matrix, got shape {m.shape}")
     # np.allclose(m, m.T, rtol=1e-10, atol=…) on plain floats (as_array checked they are
@@ -43,7 +48,10 @@ def _mat(x, name: str) -> np.ndarray:
     for u, v in ((b, d), (c, g), (f, h)):
         if not (abs(u - v) <= atol + 1e-10 * abs(v) and abs(v - u) <= atol + 1e-10 * abs(u)):
             raise InputError(f"{name} must be symmetric")
-    return 0.5 * (m + m.T)
+    # 0.5 * (m + m.T), entry by entry (the same IEEE operations)
+    return [[0.5 * (a + a), 0.5 * (b + d), 0.5 * (c + g)],
+            [0.5 * (d + b), 0.5 * (e + e), 0.5 * (f + h)],
+            [0.5 * (g + c), 0.5 * (h + f), 0.5 * (i + i)]]
 
 
 def point_xy(p) -> np.ndarray | None:
@@ -269,7 +277,7 @@ def conic_geometry(C, *, rtol: float = 1e-9) -> dict:
     """
     # plain floats (a 2×2 eigen-decomposition and solve in closed form, as LAPACK does them:
     # the numbers numpy.linalg gives, at a fraction of its per-call cost)
-    (p00, p01, p02), (_, p11, p12), (_, _, p22) = _mat(C, "conic").tolist()
+    (p00, p01, p02), (_, p11, p12), (_, _, p22) = _sym_rows(C, "conic")
     # the Euclidean matrix Mᵀ C M (euclidean_conic), entry by entry
     e00, e01, e02, e11, e12, e22 = p11, -p01, -p12, p00, p02, p22
     scale = max(abs(e00), abs(e01), abs(e02), abs(e11), abs(e12), abs(e22))

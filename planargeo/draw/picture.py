@@ -540,9 +540,8 @@ class Picture:
         color = _color(role, color)
         text = symbol if label is None else label
         if g["kind"] == "ellipse":  # the unit circle under an affine map: six numbers
-            A = g["affine"]
-            parts = [{"p": "ellipse", "x": float(A[0, 2]), "y": float(A[1, 2]),
-                      "m": [float(A[0, 0]), float(A[0, 1]), float(A[1, 0]), float(A[1, 1])]}]
+            (a, b, x), (c, d, y), _ = g["affine"].tolist()
+            parts = [{"p": "ellipse", "x": x, "y": y, "m": [a, b, c, d]}]
         else:
             parts = [{"p": "path", "xy": c, "closed": False} for c in conic_curves(C, self.box, g)]
         imaginary = bool(g.get("imaginary"))
