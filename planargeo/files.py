@@ -143,6 +143,11 @@ def digest(data) -> str:
     Returns
     -------
     str
+
+    Examples
+    --------
+    >>> digest(b"abc")[:16]
+    'ba7816bf8f01cfea'
     """
     if isinstance(data, str):
         data = data.encode("utf-8")
@@ -228,6 +233,11 @@ def manifest_bytes(head: str, entries) -> bytes:
     Returns
     -------
     bytes
+
+    Examples
+    --------
+    >>> manifest_bytes("# mine", {"b": "0" * 64}).decode().splitlines()[1][62:]
+    '00  b'
     """
     head = head.rstrip("\n") + "\n"
     return (head + "".join(f"{h}  {n}\n" if h else f"{n}\n"
@@ -352,6 +362,13 @@ def package_words(part: str) -> dict:
     ------
     InputError
         If ``part`` is neither.
+
+    Examples
+    --------
+    >>> package_words("scene")["car"]["omega_dot"]["unit"]
+    'rad/s²'
+    >>> package_words("explorer")["impulse"]["rows"]["mass m"]
+    ['kg', 'mass of the body']
     """
     import tomllib
     from importlib.resources import files

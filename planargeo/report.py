@@ -112,6 +112,11 @@ def quantity_info(scene: str) -> dict[str, dict[str, str]]:
     ------
     SceneError
         If no scene has that name.
+
+    Examples
+    --------
+    >>> quantity_info("slider-crank")["f"]["unit"], quantity_info("slider-crank")["f"]["equation"]
+    ('N, N, N·m', '9.61')
     """
     from planargeo import scenes
 

@@ -209,6 +209,11 @@ def cache_is_warm(kernels=None) -> bool:
     Returns
     -------
     bool
+
+    Examples
+    --------
+    >>> isinstance(cache_is_warm(), bool)
+    True
     """
     if kernels is None:
         from planargeo.algorithms import kernels

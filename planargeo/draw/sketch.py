@@ -562,6 +562,13 @@ def link(pic: Picture, id: str, p, q, *, width: float = 0.25, **kw) -> dict:
         Options of :func:`body`.
 
     {element}
+
+    Examples
+    --------
+    >>> pic = Picture((-1, 3, -1, 3), size=(100, 100), ticks=False, margin=(0, 0, 0, 0))
+    >>> xy = link(pic, "l", (0, 0), (2, 0), width=0.5)["parts"][0]["xy"]
+    >>> [round(float(v), 6) for v in (xy[:, 0].min(), xy[:, 0].max(), xy[:, 1].min(), xy[:, 1].max())]
+    [-0.25, 2.25, -0.25, 0.25]
     """
     return body(pic, id, link_polygon(p, q, width), **kw)
 

@@ -58,6 +58,15 @@ class Contact:
         Slider and weld: the relative angle ``theta_a - theta_b`` kept by the contact.
     name : str
         A label for drawings and messages.
+
+    Examples
+    --------
+    >>> Contact("slider", 2, -1, direction=(0.0, 1.0), angle=np.pi / 2).dofs
+    1
+    >>> Contact("glue", 0, -1)
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: kind must be one of ['pin', 'slider', 'weld'], got 'glue'
     """
 
     kind: str
@@ -120,6 +129,13 @@ def validate_contacts(contacts, n_bodies: int) -> tuple[Contact, ...]:
     ------
     InputError
         For an entry that is not a Contact or names a body out of range.
+
+    Examples
+    --------
+    >>> validate_contacts([Contact("pin", 3, -1)], 2)
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: contacts[0].a must be a body index in 0..1, got 3
     """
     out = tuple(contacts)
     for k, c in enumerate(out):
@@ -180,6 +196,11 @@ def world_point(pose, body: int, point) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 2)
+
+    Examples
+    --------
+    >>> world_point(np.array([[1.0, 0.0, np.pi / 2]]), 0, (1.0, 0.0)).round(12)
+    array([1., 1.])
     """
     x, y, th = _pose_of(np.asarray(pose, dtype=float), body)
     c, s = np.cos(th), np.sin(th)
@@ -221,6 +242,14 @@ def z_of(contact: Contact, pose) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3, k)
+
+    Examples
+    --------
+    >>> c = Contact("slider", 0, -1, direction=(0.0, 1.0), angle=np.pi / 2)
+    >>> z_of(c, np.array([[0.0, 5.925, np.pi / 2]]))     # thesis 9.83
+    array([[0.],
+           [1.],
+           [0.]])
     """
     pose = _pose(pose, contact)
     shape = pose.shape[:-2]
@@ -327,6 +356,11 @@ def contact_bias(v_a, v_b) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3)
+
+    Examples
+    --------
+    >>> contact_bias([0.0, 0.0, 2.0], [0.0, 0.0, 0.0])   # a pin at the origin: no bias
+    array([0., 0., 0.])
     """
     from planargeo.screws.twists import crm
 
@@ -352,6 +386,12 @@ def stacked_contact_spaces(contacts, pose):
     ------
     ShapeError
         If ``pose`` is not ``(N, 3)``.
+
+    Examples
+    --------
+    >>> z, B = stacked_contact_spaces([Contact("pin", 0, -1), Contact("weld", 0, -1)], np.zeros((1, 3)))
+    >>> z.shape, B.shape
+    ((6, 1), (6, 5))
     """
     pose = _pose(pose)
     cs = validate_contacts(contacts, pose.shape[-2])

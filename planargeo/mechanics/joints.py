@@ -268,27 +268,63 @@ class JointSpace:
 
     @property
     def kind(self) -> str:
-        """Joint kind, one of :data:`KINDS`."""
+        """Joint kind, one of :data:`KINDS`.
+
+        Examples
+        --------
+        >>> revolute((1.0, 2.0)).kind
+        'revolute'
+        """
         return self._kind
 
     @property
     def point(self) -> np.ndarray:
-        """The joint's point, shape (2,), read-only: pivot, point on the slide, frame origin or weld point."""
+        """The joint's point, shape (2,), read-only: pivot, point on the slide, frame origin or weld point.
+
+        Examples
+        --------
+        >>> prismatic(point=(3.0, 0.0), direction=(0.0, 1.0)).point
+        array([3., 0.])
+        """
         return self._point
 
     @property
     def direction(self) -> np.ndarray | None:
-        """Unit slide direction, shape (2,), read-only (kinds with a slide), else ``None``."""
+        """Unit slide direction, shape (2,), read-only (kinds with a slide), else ``None``.
+
+        Examples
+        --------
+        >>> prismatic(direction=(3.0, 4.0)).direction
+        array([0.6, 0.8])
+        >>> revolute().direction is None
+        True
+        """
         return self._direction
 
     @property
     def s(self) -> np.ndarray:
-        """Motion space ``s``, shape (3, k), read-only: unit twists at the origin (thesis 4.64-4.79)."""
+        """Motion space ``s``, shape (3, k), read-only: unit twists at the origin (thesis 4.64-4.79).
+
+        Examples
+        --------
+        >>> revolute((2.0, 0.0)).s                 # rotation about (2, 0): the point [y, -x, 1]
+        array([[ 0.],
+               [-2.],
+               [ 1.]])
+        """
         return self._s
 
     @property
     def R(self) -> np.ndarray:
-        """Reaction space ``R``, shape (3, 3 - k), read-only: unit wrenches, ``sᵀR = 0`` (thesis 5.63, 6.1)."""
+        """Reaction space ``R``, shape (3, 3 - k), read-only: unit wrenches, ``sᵀR = 0`` (thesis 5.63, 6.1).
+
+        Examples
+        --------
+        >>> revolute((2.0, 0.0)).R                 # unit forces along x and y through (2, 0)
+        array([[1., 0.],
+               [0., 1.],
+               [0., 2.]])
+        """
         return self._R
 
     @property
@@ -334,6 +370,11 @@ def revolute(point=(0.0, 0.0)) -> JointSpace:
     """Revolute (pin) joint about ``point`` (thesis 4.64): ``s`` = the point ``[y, -x, 1]``.
 
     {point joint}
+
+    Examples
+    --------
+    >>> revolute((0.0, 0.0)).s.ravel()          # thesis 4.64
+    array([0., 0., 1.])
     """
     return JointSpace("revolute", point)
 
@@ -363,6 +404,13 @@ def revolute_prismatic(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Two-dof pin-in-slot joint: slide along ``direction``, turn about ``point`` (thesis 4.74).
 
     {point_direction joint}
+
+    Examples
+    --------
+    >>> revolute_prismatic((0.0, 0.0), (1.0, 0.0)).s     # thesis 4.74 with λ = 0
+    array([[1., 0.],
+           [0., 0.],
+           [0., 1.]])
     """
     return JointSpace("revolute_prismatic", point, direction)
 
@@ -376,6 +424,22 @@ def twin_prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     for drawing).  Like :func:`prismatic`, it takes ``point`` and ``direction`` by name.
 
     {point_direction joint}
+
+    Examples
+    --------
+    >>> j = twin_prismatic()
+    >>> j.s                                      # thesis 4.79
+    array([[1., 0.],
+           [0., 1.],
+           [0., 0.]])
+    >>> j.R                                      # the unit couple
+    array([[0.],
+           [0.],
+           [1.]])
+    >>> twin_prismatic(direction=(0.0, 2.0)).s    # e = y, e⊥ = -x
+    array([[ 0., -1.],
+           [ 1.,  0.],
+           [ 0.,  0.]])
     """
     return JointSpace("twin_prismatic", point, direction)
 
@@ -387,6 +451,15 @@ def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     ``s`` spans every twist and ``R`` is empty: the joint transmits no force.
 
     {point_direction joint}
+
+    Examples
+    --------
+    >>> plane().s
+    array([[1., 0., 0.],
+           [0., 1., 0.],
+           [0., 0., 1.]])
+    >>> plane().R.shape
+    (3, 0)
     """
     return JointSpace("plane", point, direction)
 
@@ -396,5 +469,12 @@ def fixed(point=(0.0, 0.0)) -> JointSpace:
     """Weld (0-dof) at ``point``: ``s`` is empty, ``R`` = forces through ``point`` along x, y and a couple (thesis 6.10).
 
     {point joint}
+
+    Examples
+    --------
+    >>> fixed((0.0, 0.0)).R
+    array([[1., 0., 0.],
+           [0., 1., 0.],
+           [0., 0., 1.]])
     """
     return JointSpace("fixed", point)

@@ -42,6 +42,11 @@ def cross_motion(v: np.ndarray, u: np.ndarray) -> np.ndarray:
     -------
     numpy.ndarray, shape (..., 3)
         The rate of change of the twist ``u`` carried along by the motion ``v``.
+
+    Examples
+    --------
+    >>> cross_motion(np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]))
+    array([0., 1., 0.])
     """
     out = _turned(v, u)
     out[..., 0] += v[..., 1] * u[..., 2]
@@ -63,6 +68,11 @@ def cross_force(v: np.ndarray, f: np.ndarray) -> np.ndarray:
     -------
     numpy.ndarray, shape (..., 3)
         The rate of change of the wrench ``f`` carried along by ``v``.
+
+    Examples
+    --------
+    >>> cross_force(np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]))
+    array([0., 1., 0.])
     """
     out = _turned(v, f)
     out[..., 2] = v[..., 0] * f[..., 1] - v[..., 1] * f[..., 0]
@@ -115,6 +125,22 @@ def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None, fin
     ------
     ShapeError, NonFiniteError, InputError
         A wrong shape or batch shapes that do not broadcast; NaN or infinity; not numeric, or complex.
+
+    Examples
+    --------
+    >>> from planargeo.mechanics.model import chain_model
+    >>> check_state(chain_model(2), [0.0, 0.0], [[1.0, 2.0]] * 4)[-1]
+    (4,)
+    >>> check_state(chain_model(2), [0.0, 0.0])[1:3]            # qd, tau: None is zeros
+    (array([0., 0.]), array([0., 0.]))
+    >>> check_state(chain_model(2), [0.0])
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.ShapeError: q must have shape (..., 2), got shape (1,)
+    >>> check_state(chain_model(2), [0.0, 1j])
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: q must be real, got complex values
     """
     nq, N = model.nq, model.N
     q = _as_state(q, "q", nq, finite)

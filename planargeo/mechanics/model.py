@@ -108,6 +108,13 @@ class Body:
         -------
         numpy.ndarray, shape (3, 3)
             ``inertia_matrix(mass, com, inertia)``.
+
+        Examples
+        --------
+        >>> Body(2.0, (1.0, 0.0), 0.5).spatial_inertia()      # J + m |c|² = 0.5 + 2
+        array([[2. , 0. , 0. ],
+               [0. , 2. , 2. ],
+               [0. , 2. , 2.5]])
         """
         from planargeo.screws.twists import inertia_matrix
 
@@ -126,6 +133,17 @@ class Joint:
         Pose of the joint frame in the parent body's frame (world frame for the ground).
     name : str
         A label for drawings and messages.
+
+    Examples
+    --------
+    >>> Joint("revolute", (1.0, 0.0, 0.0)).dofs
+    1
+    >>> Joint("twin_prismatic").dofs              # thesis 4.79: translations along x and y
+    2
+    >>> Joint("hinge")
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: kind must be one of ['revolute', 'prismatic', 'revolute_prismatic', 'twin_prismatic', 'plane', 'fixed'], got 'hinge'
     """
 
     kind: str
@@ -290,6 +308,11 @@ class Model:
         ------
         InputError
             If ``i`` is not a body index.
+
+        Examples
+        --------
+        >>> chain_model(3).q_slice(1)
+        slice(1, 2, None)
         """
         if not -self.N <= i < self.N:
             raise InputError(f"i must be a body index in 0..{self.N - 1}, got {i}")
@@ -307,6 +330,12 @@ class Model:
         Returns
         -------
         tuple of int
+
+        Examples
+        --------
+        >>> m = chain_model(3)
+        >>> m.children(-1), m.children(0), m.children(2)
+        ((0,), (1,), ())
         """
         return tuple(k for k, p in enumerate(self.parents) if p == i)
 
@@ -319,6 +348,11 @@ class Model:
         Returns
         -------
         tuple of int
+
+        Examples
+        --------
+        >>> chain_model(3).ancestors(2)
+        (0, 1, 2)
         """
         path = []
         while i != -1:
@@ -344,6 +378,11 @@ class Model:
         -------
         dict of str to numpy.ndarray
             ``mass``, ``com``, ``J``, ``placement``, ``parents``.
+
+        Examples
+        --------
+        >>> sorted(chain_model(3).arrays())
+        ['J', 'com', 'mass', 'parents', 'placement']
         """
         a = self._arrays
         if "mass" not in a:
@@ -362,6 +401,13 @@ class Model:
         Returns
         -------
         numpy.ndarray of bool, shape (N, nq)
+
+        Examples
+        --------
+        >>> chain_model(3).ancestor_mask().astype(int)
+        array([[1, 0, 0],
+               [1, 1, 0],
+               [1, 1, 1]])
         """
         a = self._arrays
         if "ancestor_mask" not in a:
@@ -385,6 +431,11 @@ class Model:
         Returns
         -------
         Model
+
+        Examples
+        --------
+        >>> chain_model(3).with_gravity((0.0, 0.0)).gravity
+        (0.0, 0.0)
         """
         return Model(self.bodies, self.joints, self.parents, gravity, self.contacts)
 
@@ -433,6 +484,12 @@ class Data:
         -------
         numpy.ndarray, shape (..., 3, k)
             The joint's unit twists at the world origin, one column per coordinate.
+
+        Examples
+        --------
+        >>> from planargeo.mechanics.kinematics import kinematics
+        >>> kinematics(chain_model(3), [0.0, 0.0, 0.0]).s(1)[:, 0]     # a pin at (1, 0): the point [0, -1, 1]
+        array([ 0., -1.,  1.])
         """
         return self.S[..., :, self.model.q_slice(i)]
 
@@ -446,6 +503,14 @@ class Data:
         -------
         J_i : numpy.ndarray, shape (..., 3, nq)
             ``S`` with the columns of the joints not between body ``i`` and the ground set to zero.
+
+        Examples
+        --------
+        >>> from planargeo.mechanics.kinematics import kinematics
+        >>> kinematics(chain_model(3), [0.0, 0.0, 0.0]).jacobian(1) + 0.0    # joint 2 does not move body 1
+        array([[ 0.,  0.,  0.],
+               [ 0., -1.,  0.],
+               [ 1.,  1.,  0.]])
         """
         return self.S * self.model.ancestor_mask()[i]
 
@@ -508,6 +573,16 @@ def chain_model(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str =
     ------
     InputError
         ``n`` not an integer or out of range; ``mass`` or ``length`` not positive or too large.
+
+    Examples
+    --------
+    >>> m = chain_model(3, joint="prismatic")
+    >>> [j.kind for j in m.joints], m.joints[1].placement
+    (['prismatic', 'prismatic', 'prismatic'], (1.0, 0.0, 0.0))
+    >>> chain_model(1.5)
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: n must be an integer, got 1.5
     """
     n = _body_count(n, allow_large)
     L = _positive(length, "length")
@@ -546,6 +621,12 @@ def random_model(n: int, seed=None, *, kinds=("revolute", "prismatic"), tree: bo
     ------
     InputError
         For a bad ``n``, ``tree``, ``kinds`` or ``seed``.
+
+    Examples
+    --------
+    >>> m = random_model(5, seed=1, tree=True)
+    >>> m.N, all(p < i for i, p in enumerate(m.parents))
+    (5, True)
     """
     n = _body_count(n, allow_large)
     if not isinstance(tree, bool):

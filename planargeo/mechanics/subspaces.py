@@ -191,6 +191,12 @@ def singular_joint_error(i: int, cond: float) -> SingularConfigurationError:
     ------
     InputError
         If ``i`` is not an int.
+
+    Examples
+    --------
+
+    >>> str(singular_joint_error(3, 2e12))
+    'sᵀAs of joint 3 is singular: the inertia has (almost) nothing along s (condition number 2e+12)'
     """
     if isinstance(i, bool) or not isinstance(i, (int, np.integer)):
         raise InputError(f"i must be a joint index (an int), got {i!r}")
@@ -499,6 +505,11 @@ def active_force(s, f) -> np.ndarray:
     -------
     Q : numpy.ndarray, shape (..., k)
         The joint force (a torque at a revolute joint): ``f = T Q + R μ`` (6.38).
+
+    Examples
+    --------
+    >>> active_force([0.0, 0.0, 1.0], [1.0, 2.0, 3.0])   # the moment about the pivot
+    array([3.])
     """
     return _components(s, f, "sf")
 
@@ -520,6 +531,11 @@ def reaction_force(U, f) -> np.ndarray:
     -------
     mu : numpy.ndarray, shape (..., 3-k)
         Reaction components: ``f = T Q + R μ`` (6.38).
+
+    Examples
+    --------
+    >>> reaction_force(np.eye(3)[:, :2], [1.0, 2.0, 3.0])
+    array([1., 2.])
     """
     return _components(U, f, "Uf")
 
@@ -539,6 +555,11 @@ def active_acceleration(T, a) -> np.ndarray:
     -------
     psi : numpy.ndarray, shape (..., k)
         Joint accelerations: ``a = s ψ + U γ`` (6.44).
+
+    Examples
+    --------
+    >>> active_acceleration([0.0, 0.8, 1.0], [0.0, 0.0, 2.0])
+    array([2.])
     """
     return _components(T, a, "Ta")
 
@@ -558,6 +579,11 @@ def reactive_acceleration(R, a) -> np.ndarray:
     -------
     gamma : numpy.ndarray, shape (..., 3-k)
         Components of ``a`` along ``U``: ``a = s ψ + U γ`` (6.44).
+
+    Examples
+    --------
+    >>> reactive_acceleration([[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]], [0.0, 0.0, 2.0])  # pin at origin
+    array([0., 0.])
     """
     return _components(R, a, "Ra")
 
@@ -578,6 +604,14 @@ def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     -------
     tuple of numpy.ndarray, each shape (..., 3, 3)
         The active projector ``T sᵀ`` and the reaction projector ``R Uᵀ``.
+
+    Examples
+    --------
+    >>> P_act, P_rea = wrench_projectors(np.eye(3), [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
+    >>> P_act + P_rea
+    array([[1., 0., 0.],
+           [0., 1., 0.],
+           [0., 0., 1.]])
     """
     d = Decomposition(A, s, R)
     return d.T @ _tr(d.s), d.R @ _tr(d.U)
@@ -596,6 +630,19 @@ def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     -------
     joint, reactive : numpy.ndarray, each shape (..., 3, 3)
         ``s Tᵀ a = s ψ`` is the joint part of an acceleration, ``U Rᵀ a = U γ`` its reactive part (6.44, 6.62).
+
+    Examples
+    --------
+    A pin at the origin: the joint part of an acceleration is its rotation about the pin.
+
+    >>> A, s, R = np.eye(3), [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]]
+    >>> P_joint, P_react = twist_projectors(A, s, R)
+    >>> P_joint
+    array([[0., 0., 0.],
+           [0., 0., 0.],
+           [0., 0., 1.]])
+    >>> all(np.array_equal(P.T, W) for P, W in zip(twist_projectors(A, s, R), wrench_projectors(A, s, R)))
+    True
     """
     return tuple(_tr(P) for P in wrench_projectors(A, s, R))     # (T sᵀ)ᵀ, (R Uᵀ)ᵀ: the duality
 
@@ -615,6 +662,12 @@ def joint_space_inertia(I, s) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., k, k)
+
+    Examples
+    --------
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> joint_space_inertia(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0])   # m (ρ² + d²)
+    array([[2.5]])
     """
     I = _inertia(I, "I")
     s = _space(s, "s")
@@ -633,6 +686,11 @@ def reaction_space_inverse_inertia(I, R) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3-k, 3-k)
+
+    Examples
+    --------
+    >>> reaction_space_inverse_inertia(np.diag([2.0, 2.0, 1.0]), [[1.0], [0.0], [0.0]])
+    array([[0.5]])
     """
     I, eig = _inertia_eig(I, "I")
     R = _space(R, "R")
@@ -653,6 +711,14 @@ def inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     Returns
     -------
     (ndarray, ndarray), each shape (..., 3, 3)
+
+    Examples
+    --------
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> I = inertia_matrix(2.0, [1.0, 0.0], 0.5)
+    >>> Ia, Ib = inertia_decomposition(I, [0.0, 0.0, 1.0], [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
+    >>> np.allclose(Ia + Ib, I)
+    True
     """
     d = Decomposition(I, s, R, name="I")
     return d.T @ _tr(d.s) @ d.A, d.R @ _tr(d.U) @ d.A
@@ -675,6 +741,15 @@ def inverse_inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
         ``s Tᵀ I⁻¹``.
     reactive : numpy.ndarray, shape (..., 3, 3)
         ``U Rᵀ I⁻¹``.
+
+    Examples
+    --------
+    >>> Ma, Mb = inverse_inertia_decomposition(np.diag([2.0, 2.0, 4.0]), [0.0, 0.0, 1.0],
+    ...                                        [[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]])
+    >>> Ma + Mb
+    array([[0.5 , 0.  , 0.  ],
+           [0.  , 0.5 , 0.  ],
+           [0.  , 0.  , 0.25]])
     """
     d = Decomposition(I, s, R, name="I")
     IiR = _solve_A(d.A, d.R, "I")
@@ -696,6 +771,14 @@ def effective_mobility(I, s, *, what: str | None = None) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (..., 3, 3)
+
+    Examples
+    --------
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> effective_mobility(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0])
+    array([[0. , 0. , 0. ],
+           [0. , 0. , 0. ],
+           [0. , 0. , 0.4]])
     """
     return _effective_mobility(_inertia(I, "I"), _space(s, "s"), _what(what, "sᵀIs"))
 
@@ -715,6 +798,13 @@ def effective_base_inertia(I, R) -> np.ndarray:
     -------
     numpy.ndarray, shape (..., 3, 3)
         Zero for an empty ``R``.
+
+    Examples
+    --------
+    >>> effective_base_inertia(np.diag([2.0, 2.0, 4.0]), [[0.0], [0.0], [1.0]])   # only a couple: J
+    array([[0., 0., 0.],
+           [0., 0., 0.],
+           [0., 0., 4.]])
     """
     I, eig = _inertia_eig(I, "I")
     R = _space(R, "R")
@@ -829,6 +919,12 @@ class Decomposition:
         Returns
         -------
         Decomposition
+
+        Examples
+        --------
+        >>> from planargeo.mechanics.joints import revolute
+        >>> Decomposition.from_joint(np.eye(3), revolute((0.0, 0.0))).T.ravel()   # a unit disc: T = s
+        array([0., 0., 1.])
         """
         return cls(A, joint.s, joint.R, name=name)
 
@@ -844,22 +940,86 @@ class Decomposition:
 
     @_dual_doc(_SPLIT, _WRENCH)
     def split_wrench(self, f) -> tuple[np.ndarray, np.ndarray]:
-        """``(Q, μ) = (sᵀf, Uᵀf)`` so that ``f = T Q + R μ`` (thesis 6.38, 6.61)."""
+        """``(Q, μ) = (sᵀf, Uᵀf)`` so that ``f = T Q + R μ`` (thesis 6.38, 6.61).
+
+        Examples
+        --------
+        A pendulum (m = 2, centre of mass at (1, 0), J = 0.5 about it) on a
+        revolute joint at the origin, loaded by a unit couple: the joint
+        torque is ``Q = sᵀf = 1``; the body turns at ``α = 1 / (J + m d²) = 0.4``,
+        its centre of mass accelerates by (0, 0.4), which takes the force
+        (0, 0.8) of ``T Q = [0, 0.8, 1]``; the pivot supplies the rest,
+        ``μ = (0, -0.8)`` (unit forces along x and y through the pivot).
+
+        >>> from planargeo.mechanics.joints import revolute
+        >>> from planargeo.screws.twists import inertia_matrix
+        >>> dec = Decomposition.from_joint(inertia_matrix(2.0, [1.0, 0.0], 0.5), revolute((0.0, 0.0)))
+        >>> dec.split_wrench([0.0, 0.0, 1.0])
+        (array([1.]), array([ 0. , -0.8]))
+        """
         return self._split(f, _WRENCH)
 
     @_dual_doc(_SPLIT, _TWIST)
     def split_twist(self, a) -> tuple[np.ndarray, np.ndarray]:
-        """``(ψ, γ) = (Tᵀa, Rᵀa)`` so that ``a = s ψ + U γ`` (thesis 6.44, 6.62)."""
+        """``(ψ, γ) = (Tᵀa, Rᵀa)`` so that ``a = s ψ + U γ`` (thesis 6.44, 6.62).
+
+        Examples
+        --------
+        The pendulum of :meth:`split_wrench` translated upwards at unit
+        acceleration: ``γ = Rᵀa = (0, 1)`` is the pivot's acceleration.  With
+        no joint torque the pivot's push would turn the body at
+        ``-m d / (J + m d²) = -0.8`` (``U γ = [0, 1, -0.8]``); ``ψ = 0.8`` is
+        the joint acceleration that cancels that turn.
+
+        >>> from planargeo.mechanics.joints import revolute
+        >>> from planargeo.screws.twists import inertia_matrix
+        >>> dec = Decomposition.from_joint(inertia_matrix(2.0, [1.0, 0.0], 0.5), revolute((0.0, 0.0)))
+        >>> dec.split_twist([0.0, 1.0, 0.0])
+        (array([0.8]), array([0., 1.]))
+        """
         return self._split(a, _TWIST)
 
     @_dual_doc(_JOIN, _WRENCH)
     def join_wrench(self, Q, mu) -> np.ndarray:
-        """``f = T Q + R μ`` (thesis 6.38)."""
+        """``f = T Q + R μ`` (thesis 6.38).
+
+        Examples
+        --------
+        The pendulum of :meth:`split_wrench`: ``T = [0, 0.8, 1]`` (the wrench
+        of unit joint torque) plus the pivot's force (0, -0.8) through the
+        origin is the unit couple again.
+
+        >>> from planargeo.mechanics.joints import revolute
+        >>> from planargeo.screws.twists import inertia_matrix
+        >>> dec = Decomposition.from_joint(inertia_matrix(2.0, [1.0, 0.0], 0.5), revolute((0.0, 0.0)))
+        >>> dec.T.ravel()
+        array([0. , 0.8, 1. ])
+        >>> dec.join_wrench([1.0], [0.0, -0.8]) + 0.0
+        array([0., 0., 1.])
+        """
         return self._join(Q, mu, _WRENCH)
 
     @_dual_doc(_JOIN, _TWIST)
     def join_twist(self, psi, gamma) -> np.ndarray:
-        """``a = s ψ + U γ`` (thesis 6.44)."""
+        """``a = s ψ + U γ`` (thesis 6.44).
+
+        Examples
+        --------
+        The pendulum of :meth:`split_twist`: the reactive acceleration of a
+        unit upward push on the pivot, ``U[:, 1] = [0, 1, -0.8]``, plus the
+        joint's ``s ψ = [0, 0, 0.8]`` is the pure translation; a joint
+        acceleration alone is a rotation about the pivot.
+
+        >>> from planargeo.mechanics.joints import revolute
+        >>> from planargeo.screws.twists import inertia_matrix
+        >>> dec = Decomposition.from_joint(inertia_matrix(2.0, [1.0, 0.0], 0.5), revolute((0.0, 0.0)))
+        >>> dec.U[:, 1]
+        array([ 0. ,  1. , -0.8])
+        >>> dec.join_twist([0.8], [0.0, 1.0]) + 0.0
+        array([0., 1., 0.])
+        >>> dec.join_twist([1.0], [0.0, 0.0])
+        array([0., 0., 1.])
+        """
         return self._join(psi, gamma, _TWIST)
 
     def __repr__(self) -> str:

@@ -143,6 +143,11 @@ def get(name: str) -> Callable[..., SceneResult]:
     ------
     SceneError
         If ``name`` is not registered.
+
+    Examples
+    --------
+    >>> get("two-body").__name__
+    'two_body'
     """
     _load()
     try:

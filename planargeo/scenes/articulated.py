@@ -39,6 +39,11 @@ def bent_chain_model(n: int, rho: float, L: float = 1.0, m: float = 1.0, g: floa
     Returns
     -------
     Model
+
+    Examples
+    --------
+    >>> bent_chain_model(2, 0.5).N
+    2
     """
     bodies = [Body(m, (L / 2, 0.0), m * rho * rho, name=f"body {i + 1}") for i in range(n)]
     joints = [Joint("revolute", (0.0 if i == 0 else L, 0.0, 0.0), name=f"CJ{i + 1}") for i in range(n)]
@@ -203,6 +208,12 @@ def articulated_state(model, q, *, outboard: int | None = None, pole=(0.0, 0.0),
     ------
     SingularConfigurationError
         A singular joint (never for bodies with mass and rotational inertia).
+
+    Examples
+    --------
+    >>> st = articulated_state(bent_chain_model(2, 0.5), [0.0, 0.0], outboard=0)
+    >>> bool(np.allclose(st["A"], st["I"]))
+    True
     """
     from planargeo.algorithms.articulated_inertia import articulated_inertia
     from planargeo.mechanics.kinematics import kinematics

@@ -41,6 +41,11 @@ def available_methods() -> dict:
     -------
     dict
         Method name -> ``forward_dynamics(model, q, qd, tau, f_ext=None)``.
+
+    Examples
+    --------
+    >>> list(available_methods())
+    ['aba', 'projective', 'mobility_split', 'stacked', 'crba']
     """
     return dict(METHODS)
 
@@ -62,6 +67,12 @@ def chain_workspace(model, q, qd, tau):
     -------
     Data
         From :func:`planargeo.algorithms.aba.articulated_body`.
+
+    Examples
+    --------
+    >>> w = chain_workspace(chain_model(1), [0.0], [0.0], [0.0])
+    >>> w.qdd                                   # a rod released horizontally: -1.5 g
+    array([-14.715])
     """
     return articulated_body(model, q, qd, tau)
 

@@ -83,6 +83,11 @@ def horizontal_chain(n: int = 4, lam: float = 2.0) -> SceneResult:
     SceneResult
         ``d_over_L``, ``mx_over_m``, ``my_over_m``, ``Az_over_m_rho2`` of body 1 (7.26) and
         ``A1`` at the origin, for ``m = L = 1``.
+
+    Examples
+    --------
+    >>> horizontal_chain(n=1, lam=3.0).quantities["d_over_L"]
+    0.5
     """
     from planargeo.algorithms.articulated_inertia import articulated_inertia
 

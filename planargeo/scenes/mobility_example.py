@@ -41,6 +41,12 @@ def mobility_example(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: floa
     SceneResult
         ``Lambda1_inv`` (7.42), ``Lambda2_inv`` (7.43), ``f3`` (7.44), ``a2`` (7.46), ``x_over_L``
         (7.48), ``eta`` (7.49), ``T1``, ``U1`` (7.40), ``T2``, ``U2`` (7.41).
+
+    Examples
+    --------
+    >>> r = mobility_example(phi=0.0)
+    >>> round(r.quantities["x_over_L"], 12)    # 1 + 2*4/(4 + 20)
+    1.333333333333
     """
     from planargeo.algorithms.articulated_mobility import articulated_mobility
     m, rho, L = (check_param(k, v, positive=True) for k, v in (("m", m), ("rho", rho), ("L", L)))

@@ -72,6 +72,16 @@ def energy(model: Model, q=None, qd=None, *, data=None) -> tuple[np.ndarray, np.
     ------
     InputError
         If both a state and ``data`` are given.
+
+    Examples
+    --------
+    >>> from planargeo.mechanics.model import chain_model
+    >>> T, V = energy(chain_model(1), [np.pi / 2], [3.0])   # rod upright, spinning at 3 rad/s
+    >>> float(T), float(V)                                  # ½ (1/3) 9, m g L/2
+    (1.5, 4.905)
+    >>> d = kinematics(chain_model(1), [np.pi / 2], [3.0])
+    >>> [float(x) for x in energy(chain_model(1), data=d)]
+    [1.5, 4.905]
     """
     if data is None:
         data = kinematics(model, q, qd)
@@ -172,6 +182,12 @@ def progress_enabled(progress: bool | None = None, stream=None) -> bool:
     Returns
     -------
     bool
+
+    Examples
+    --------
+    >>> import io
+    >>> progress_enabled(True), progress_enabled(False), progress_enabled(None, io.StringIO())
+    (True, False, False)
     """
     if progress is not None:
         return bool(progress)

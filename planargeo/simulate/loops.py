@@ -87,6 +87,13 @@ def closure_residual(model: Model, q, contacts=None) -> np.ndarray:
     -------
     ndarray
         One residual per constrained contact direction (m, rad).
+
+    Examples
+    --------
+    >>> from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
+    >>> m = slider_crank_model(); q, _ = slider_crank_state()
+    >>> bool(np.abs(closure_residual(m, q)).max() < 1e-14)
+    True
     """
     cs = _cs(model, contacts)
     pose = kinematics(model, q).pose
@@ -106,6 +113,13 @@ def closure_jacobian(model: Model, q, contacts=None) -> np.ndarray:
     Returns
     -------
     ndarray (nc, nq)
+
+    Examples
+    --------
+    >>> from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
+    >>> m = slider_crank_model(); q, qd = slider_crank_state()
+    >>> bool(np.abs(closure_jacobian(m, q) @ qd).max() < 1e-12)
+    True
     """
     cs = _cs(model, contacts)
     d = kinematics(model, q)

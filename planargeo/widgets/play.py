@@ -99,6 +99,13 @@ def check_duration(name: str, value: Any, limit: float, allow_long: bool = False
     ------
     InputError
         Not a positive finite number, or beyond ``limit`` without ``allow_long``.
+
+    Examples
+    --------
+    >>> check_duration("seconds", float("nan"), 10.0)
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: seconds must be a positive finite number of seconds, got nan
     """
     real = isinstance(value, numbers.Real) and not isinstance(value, bool)
     if not real or not math.isfinite(float(value)) or float(value) <= 0:

@@ -118,6 +118,11 @@ def split_units(unit, n: int) -> list[str]:
     ------
     ValueError
         A tuple whose length is not ``n`` (a programming error in an explorer's units).
+
+    Examples
+    --------
+    >>> split_units("m", 2), split_units(("m/s", "rad/s"), 2)
+    (['m', 'm'], ['m/s', 'rad/s'])
     """
     if isinstance(unit, (tuple, list)):
         units = [("" if u in NO_UNIT else str(u)) for u in unit]
@@ -236,6 +241,11 @@ def explain_html(meanings: dict[str, str], title: str = "What is shown") -> str:
     -------
     str
         HTML (a ``<details>`` list; empty text when there is nothing to explain).
+
+    Examples
+    --------
+    >>> "<b>ω</b>" in explain_html({"ω": "angular velocity (thesis 2.3)"})
+    True
     """
     if not meanings:
         return ""
