@@ -34,19 +34,25 @@ def _cells(a: str, b: str) -> list[str]:
             f"exec({a!r}, globals())\nab"]
 
 
+def _block(res: dict, page, ex, cv, a) -> None:
+    """One block of steps in the page's current set-up: F, F after a pause, drags, slider steps."""
+    res["F"] += pl.floor(cv, a.block)
+    res["F after the steps' pause"] += pl.floor(cv, a.block, pl.PAUSE)
+    n0 = len(pl.STEPS)
+    res["drag"] += pl.drag(page, cv, "link 10 end", a.block)[0]
+    for st in pl.STEPS[n0:]:
+        res["drag: ack → painted"].append(st["tPaint"] - st["tAck"])
+        res["drag: sent → ack"].append(st["tAck"] - st["tSent"])
+        res["drag: kernel ms"].append(st.get("kernelMs"))
+    if not a.no_slider:
+        res["slider"] += pl.slider(page, ex, cv, "angle", a.block)[0]
+
+
 def run(browser, medium: str, tmp: Path, a) -> dict:
     root = tmp / medium
     root.mkdir()
-    nb = pl.nbformat.v4.new_notebook()
-    nb.cells = [pl.nbformat.v4.new_code_cell(c) for c in _cells(a.a, a.b)]
-    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
-    pl.nbformat.write(nb, root / "page.ipynb")
-    if medium == "voila":
-        server = VoilaServer(root / "page.ipynb", tmp / f"{medium}-srv")
-        url = server.url
-    else:
-        server = LabServer(root, tmp / f"{medium}-srv")
-        url = f"{server.url}/lab/tree/page.ipynb?reset"
+    pl._notebook(root / "page.ipynb", _cells(a.a, a.b))
+    server, url = pl.serve(medium, root, tmp)
     page = browser.new_page(viewport={"width": 1400, "height": 1100})
     res = {k: {"F": [], "F after the steps' pause": [], "drag": [], "slider": [], "drag: ack → painted": [], "drag: sent → ack": [],
                "drag: kernel ms": []} for k in "AB"}
@@ -79,16 +85,7 @@ def run(browser, medium: str, tmp: Path, a) -> dict:
                                   " document.head.appendChild(s); } s.textContent = on ? css : ''; }",
                                   [k == "B", a.css])
                 cv.scroll_into_view_if_needed()
-                res[k]["F"] += pl.floor(cv, a.block)
-                res[k]["F after the steps' pause"] += pl.floor(cv, a.block, pl.PAUSE)
-                n0 = len(pl.STEPS)
-                res[k]["drag"] += pl.drag(page, cv, "link 10 end", a.block)[0]
-                for st in pl.STEPS[n0:]:
-                    res[k]["drag: ack → painted"].append(st["tPaint"] - st["tAck"])
-                    res[k]["drag: sent → ack"].append(st["tAck"] - st["tSent"])
-                    res[k]["drag: kernel ms"].append(st.get("kernelMs"))
-                if not a.no_slider:
-                    res[k]["slider"] += pl.slider(page, ex, cv, "angle", a.block)[0]
+                _block(res[k], page, ex, cv, a)
     finally:
         page.close()
         server.stop()
@@ -160,16 +157,7 @@ def run_two_labs(browser, tmp: Path, a) -> dict:
                 page.bring_to_front()
                 cv.scroll_into_view_if_needed()
                 time.sleep(0.3)
-                res[k]["F"] += pl.floor(cv, a.block)
-                res[k]["F after the steps' pause"] += pl.floor(cv, a.block, pl.PAUSE)
-                n0 = len(pl.STEPS)
-                res[k]["drag"] += pl.drag(page, cv, "link 10 end", a.block)[0]
-                for st in pl.STEPS[n0:]:
-                    res[k]["drag: ack → painted"].append(st["tPaint"] - st["tAck"])
-                    res[k]["drag: sent → ack"].append(st["tAck"] - st["tSent"])
-                    res[k]["drag: kernel ms"].append(st.get("kernelMs"))
-                if not a.no_slider:
-                    res[k]["slider"] += pl.slider(page, ex, cv, "angle", a.block)[0]
+                _block(res[k], page, ex, cv, a)
     finally:
         for server, page, _ex, _cv in opened.values():
             page.close()

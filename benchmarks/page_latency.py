@@ -94,11 +94,20 @@ def _titles() -> dict[str, str]:
     return {n: getattr(pw, n).title for n in pw.EXPLORERS}
 
 
-def _notebook(path: Path) -> None:
+def _notebook(path: Path, cells=None) -> None:
     nb = nbformat.v4.new_notebook()
-    nb.cells = [nbformat.v4.new_code_cell(c) for c in CELLS]
+    nb.cells = [nbformat.v4.new_code_cell(c) for c in (CELLS if cells is None else cells)]
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
     nbformat.write(nb, path)
+
+
+def serve(medium: str, root: Path, tmp: Path):
+    """Serve ``root/page.ipynb`` in ``medium``: the server and the URL of the page."""
+    if medium == "voila":
+        server = VoilaServer(root / "page.ipynb", tmp / f"{medium}-srv")
+        return server, server.url
+    server = LabServer(root, tmp / f"{medium}-srv")
+    return server, f"{server.url}/lab/tree/page.ipynb?reset"
 
 
 def _stat(xs: list[float]) -> dict:
@@ -387,12 +396,7 @@ def main(argv=None) -> int:
                 root = tmp / medium
                 root.mkdir()
                 _notebook(root / "page.ipynb")
-                if medium == "voila":
-                    server = VoilaServer(root / "page.ipynb", tmp / f"{medium}-srv")
-                    url = server.url
-                else:
-                    server = LabServer(root, tmp / f"{medium}-srv")
-                    url = f"{server.url}/lab/tree/page.ipynb?reset"
+                server, url = serve(medium, root, tmp)
                 page = browser.new_page(viewport={"width": 1400, "height": 1100})
                 try:
                     page.goto(url, wait_until="domcontentloaded", timeout=120_000)

@@ -36,7 +36,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import page_latency as pl  # noqa: E402
-from browser_harness import LabServer, VoilaServer, launch_chromium  # noqa: E402
+from browser_harness import launch_chromium  # noqa: E402
 
 CATEGORIES = ",".join(["devtools.timeline", "disabled-by-default-devtools.timeline", "v8", "blink",
                        "blink.user_timing", "toplevel", "loading", "v8.execute"])
@@ -265,16 +265,8 @@ def open_lab(page) -> None:
 def run_medium(browser, medium: str, steps: int, tmp: Path, raw: Path | None) -> dict:
     root = tmp / medium
     root.mkdir()
-    nb = pl.nbformat.v4.new_notebook()
-    nb.cells = [pl.nbformat.v4.new_code_cell(c) for c in pl.CELLS[:2]]
-    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
-    pl.nbformat.write(nb, root / "page.ipynb")
-    if medium == "voila":
-        server = VoilaServer(root / "page.ipynb", tmp / f"{medium}-srv")
-        url = server.url
-    else:
-        server = LabServer(root, tmp / f"{medium}-srv")
-        url = f"{server.url}/lab/tree/page.ipynb?reset"
+    pl._notebook(root / "page.ipynb", pl.CELLS[:2])
+    server, url = pl.serve(medium, root, tmp)
     page = browser.new_page(viewport={"width": 1400, "height": 1100})
     frames = Frames(page)
     out = {}
