@@ -61,9 +61,7 @@ def run(browser, medium: str, tmp: Path, a) -> dict:
         if medium == "jupyterlab":
             import page_trace
 
-            page.wait_for_function("window.jupyterapp && window.jupyterapp.shell.currentWidget"
-                                   " && window.jupyterapp.shell.currentWidget.sessionContext.session"
-                                   " && window.jupyterapp.shell.currentWidget.sessionContext.session.kernel",
+            page.wait_for_function(pl.KERNEL_READY,
                                    timeout=120_000)
             page_trace.open_lab(page)
         ex, cv = pl._canvas(page, pl._titles()["ChainExplorer"])
@@ -131,9 +129,7 @@ def _open_lab(browser, tmp: Path, name: str, server_config: dict | None, a):
         ex, cv = pl._canvas(page, pl._titles()["ChainExplorer"])
         return server, page, ex, cv
     page.goto(f"{server.url}/lab/tree/page.ipynb?reset", wait_until="domcontentloaded", timeout=120_000)
-    page.wait_for_function("window.jupyterapp && window.jupyterapp.shell.currentWidget"
-                           " && window.jupyterapp.shell.currentWidget.sessionContext.session"
-                           " && window.jupyterapp.shell.currentWidget.sessionContext.session.kernel",
+    page.wait_for_function(pl.KERNEL_READY,
                            timeout=120_000)
     page_trace.open_lab(page)
     ex, cv = pl._canvas(page, pl._titles()["ChainExplorer"])

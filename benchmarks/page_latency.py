@@ -94,6 +94,12 @@ def _titles() -> dict[str, str]:
     return {n: getattr(pw, n).title for n in pw.EXPLORERS}
 
 
+#: true once JupyterLab's current notebook has a kernel (the page can be driven)
+KERNEL_READY = ("window.jupyterapp && window.jupyterapp.shell.currentWidget"
+                " && window.jupyterapp.shell.currentWidget.sessionContext.session"
+                " && window.jupyterapp.shell.currentWidget.sessionContext.session.kernel")
+
+
 def _notebook(path: Path, cells=None) -> None:
     nb = nbformat.v4.new_notebook()
     nb.cells = [nbformat.v4.new_code_cell(c) for c in (CELLS if cells is None else cells)]
@@ -402,9 +408,7 @@ def main(argv=None) -> int:
                     page.goto(url, wait_until="domcontentloaded", timeout=120_000)
                     if medium == "jupyterlab":
                         page.wait_for_function(
-                            "window.jupyterapp && window.jupyterapp.shell.currentWidget"
-                            " && window.jupyterapp.shell.currentWidget.sessionContext.session"
-                            " && window.jupyterapp.shell.currentWidget.sessionContext.session.kernel",
+                            KERNEL_READY,
                             timeout=120_000)
                         page.evaluate("window.jupyterapp.commands.execute('notebook:run-all-cells')")
                     results[medium] = measure(page, a.steps)

@@ -274,9 +274,7 @@ def run_medium(browser, medium: str, steps: int, tmp: Path, raw: Path | None) ->
         page.goto(url, wait_until="domcontentloaded", timeout=120_000)
         if medium == "jupyterlab":
             page.wait_for_function(
-                "window.jupyterapp && window.jupyterapp.shell.currentWidget"
-                " && window.jupyterapp.shell.currentWidget.sessionContext.session"
-                " && window.jupyterapp.shell.currentWidget.sessionContext.session.kernel", timeout=120_000)
+                pl.KERNEL_READY, timeout=120_000)
             open_lab(page)
         ex, cv = pl._canvas(page, pl._titles()["ChainExplorer"])
         time.sleep(1.5)
