@@ -355,13 +355,12 @@ def package_words(part: str) -> dict:
     Returns
     -------
     dict
-        The part's tables by scene or explorer name (shared: do not modify), e.g.
-        ``package_words("explorer")["impulse"]["rows"]["mass m"]`` is ``['kg', 'mass of the body']``.
+        The part's tables by scene or explorer name (shared: do not modify).
 
     Raises
     ------
     InputError
-        If ``part`` is neither.
+        If ``part`` is neither ``"scene"`` nor ``"explorer"``: the data file has no other part.
 
     Examples
     --------

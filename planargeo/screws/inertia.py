@@ -364,6 +364,9 @@ def _of_matrix(function, name: str | None = None):
     raises = r"    Raises\n    ------\n(    \S[^\n]*\n        [^\n]*``inertia``[^\n]*\n)+\n"
     doc = re.sub(raises, "", doc)
     method.__doc__ = doc.replace("    Parameters\n    ----------\n\n", "")
+    if "inertia :" in method.__doc__:     # the function's docstring changed shape: say so at import
+        raise RuntimeError(f"Inertia.{method.__name__}: the inertia entry of {function.__name__}'s "
+                           "docstring was not taken out")
     return method
 
 
