@@ -11,10 +11,12 @@ import re
 
 import numpy as np
 
-from planargeo._validate import (as_array, as_mat3, as_scalar, as_vec3, as_xy, batch_shape, check_overflow,
+from planargeo._validate import (as_mat3, as_scalar, as_vec3, as_xy, batch_shape, check_overflow, check_positive,
                                  check_positive_definite, check_positive_semidefinite, overflow_checked, rescaled)
 from planargeo.errors import InputError, InvalidPolygonError, SingularInertiaError
+from planargeo.geometry import conics
 from planargeo.geometry._docs import entries
+from planargeo.geometry.elements import Conic, Line, Point
 from planargeo.screws.twists import (SCREWS, _Held, inertia_at, inertia_matrix, inertia_rotated,
                                       kinetic_energy, momentum)
 
@@ -30,15 +32,6 @@ _documented = entries(SCREWS, {
     "returns_inertia": "Returns\n-------\nInertia",
     "no_mass": "Raises\n------\nInputError\n    A mass ``inertia[..., 0, 0]`` not positive.",
 })
-
-
-def _positive(x, name: str) -> np.ndarray:
-    """Like ``_validate.check_positive`` but with a plain-float message ("got -1.0")."""
-    a = as_array(x, name)
-    bad = ~(a > 0)
-    if np.any(bad):
-        raise InputError(f"{name} must be positive, got {float(a[bad].ravel()[0])!r}")
-    return a
 
 
 def _mat(x, name="inertia") -> np.ndarray:
@@ -263,9 +256,7 @@ def drawable_conic(inertia) -> np.ndarray:
     >>> drawable_conic(inertia_matrix(2.0, [0.0, 0.0], 0.5)).diagonal()   # -m ρ² last
     array([ 2. ,  2. , -0.5])
     """
-    from planargeo.geometry.conics import drawable_conic as _drawable_conic
-
-    return _drawable_conic(_psd(inertia))
+    return conics.drawable_conic(_psd(inertia))
 
 
 # ---------- Polygon moments
@@ -301,12 +292,9 @@ def polygon_moments(geometry, name: str = "geometry"):
     >>> float(A), c, float(J)
     (2.0, array([1. , 0.5]), 0.833333)
     """
-    try:
-        from shapely.geometry import MultiPolygon, Polygon
-        from shapely.geometry.polygon import orient
-        from shapely.validation import explain_validity
-    except ImportError as exc:  # pragma: no cover - shapely is a dependency
-        raise InputError("shapely is required for polygon inertias") from exc
+    from shapely.geometry import MultiPolygon, Polygon
+    from shapely.geometry.polygon import orient
+    from shapely.validation import explain_validity
     if not isinstance(geometry, (Polygon, MultiPolygon)):
         raise InvalidPolygonError(
             f"{name} must be a shapely Polygon or MultiPolygon, got {type(geometry).__name__}")
@@ -347,7 +335,6 @@ def _derived(function, doc: str) -> property:
 
     get.__doc__ = doc
     return property(get)
-
 
 
 def _of_matrix(function, name: str | None = None):
@@ -437,16 +424,16 @@ class Inertia(_Held):
         >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).matrix.diagonal()
         array([2. , 2. , 0.5])
         """
-        m = _positive(mass, "mass")
+        m = check_positive(mass, "mass")
         c = as_xy(com, "com")
         if (radius_of_gyration is None) == (inertia is None):
             raise InputError("give exactly one of radius_of_gyration or inertia")
         if inertia is None:
-            rho = _positive(radius_of_gyration, "radius_of_gyration")
+            rho = check_positive(radius_of_gyration, "radius_of_gyration")
             with np.errstate(over="ignore"):
                 J = check_overflow(m * rho * rho, "Inertia.from_mass", "mass or radius_of_gyration")
         else:
-            J = _positive(inertia, "inertia")
+            J = check_positive(inertia, "inertia")
         return cls(inertia_matrix(m, c, J))
 
     @classmethod
@@ -475,9 +462,7 @@ class Inertia(_Held):
         >>> float(I.mass), float(I.rotational_inertia)        # m (b² + h²)/12 = 6 · 5/48
         (6.0, 2.5)
         """
-        rho_d = as_scalar(density, "density")
-        if not rho_d > 0:
-            raise InputError(f"density must be positive, got {rho_d!r}")
+        rho_d = float(check_positive(as_scalar(density, "density"), "density"))
         A, c, J = polygon_moments(geometry, "geometry")
         if not J > 0:
             raise InvalidPolygonError(f"geometry must have a positive polar moment, got {J!r}")
@@ -598,7 +583,6 @@ class Inertia(_Held):
         >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_axis([0.0, 0.0, 1.0])
         Line(through=(1.25, 0), direction=(0, 1))
         """
-        from planargeo.geometry.elements import Line
         return Line(self.percussion_axis_array(point))
 
     @_documented
@@ -616,7 +600,6 @@ class Inertia(_Held):
         >>> Inertia.from_mass(2.0, [1.0, 0.0], inertia=0.5).percussion_pole([0.0, 0.0, 1.0])   # a couple: the centre
         Point(x=1, y=0)
         """
-        from planargeo.geometry.elements import Point
         return Point(self.percussion_pole_array(line))
 
     def drawable_conic(self):
@@ -631,7 +614,6 @@ class Inertia(_Held):
         >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).drawable_conic()
         Conic(real circle, centre=(0, 0))
         """
-        from planargeo.geometry.elements import Conic
         return Conic(self.drawable_conic_matrix())
 
     def conic(self):
@@ -647,5 +629,4 @@ class Inertia(_Held):
         >>> Inertia.from_mass(2.0, [0.0, 0.0], inertia=0.5).conic()
         Conic(imaginary circle, centre=(0, 0))
         """
-        from planargeo.geometry.elements import Conic
         return Conic(self._array)
