@@ -123,16 +123,16 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
     # ------------------------------------------------------------------ controls
     def make_controls(self):
         return {
-            "bodies n": Step(1, NMAX, 1, 4, "bodies n", integer=True).make("bodies n"),
-            "λ = L/ρ": Step(0.5, 8.0, 0.05, 3.0, "λ = L/ρ").make("lam"),
-            "bend φ (deg)": Step(-180.0, 180.0, 0.5, 25.0, "bend φ (deg)").make("phi"),
-            "base θ₁ (deg)": Step(-180.0, 180.0, 0.5, 0.0, "base θ₁ (deg)").make("base"),
-            "outboard bodies": Step(0, NMAX - 1, 1, NMAX - 1, "outboard bodies", integer=True).make("outboard"),
-            "pole x": Step(-4.0, 6.0, 0.01, 0.0, "pole a: x (m)").make("pole x"),
-            "pole y": Step(-5.0, 5.0, 0.01, -0.8, "pole a: y (m)").make("pole y"),
-            "g (m/s²)": Step(0.0, 9.81, 0.01, 9.81, "g (m/s²) for Play").make("g"),
-            "damping c": Step(0.0, 3.0, 0.01, 0.3, "damping c (N·m·s/rad)").make("c"),
-            "time (s)": Step(0.0, T_MAX, 0.01, 0.0, "time (s)").make("time"),
+            "bodies n": Step(1, NMAX, 1, 4, "bodies n", integer=True),
+            "λ = L/ρ": Step(0.5, 8.0, 0.05, 3.0, "λ = L/ρ"),
+            "bend φ (deg)": Step(-180.0, 180.0, 0.5, 25.0, "bend φ (deg)"),
+            "base θ₁ (deg)": Step(-180.0, 180.0, 0.5, 0.0, "base θ₁ (deg)"),
+            "outboard bodies": Step(0, NMAX - 1, 1, NMAX - 1, "outboard bodies", integer=True),
+            "pole x": Step(-4.0, 6.0, 0.01, 0.0, "pole a: x (m)"),
+            "pole y": Step(-5.0, 5.0, 0.01, -0.8, "pole a: y (m)"),
+            "g (m/s²)": Step(0.0, 9.81, 0.01, 9.81, "g (m/s²) for Play"),
+            "damping c": Step(0.0, 3.0, 0.01, 0.3, "damping c (N·m·s/rad)"),
+            "time (s)": Step(0.0, T_MAX, 0.01, 0.0, "time (s)"),
             "rigid inertias": W.Checkbox(value=True, description="rigid inertias I_i"),
             "percussion axes": W.Checkbox(value=True, description="percussion axes"),
         }

@@ -79,14 +79,14 @@ class CarExplorer(Described, Explorer):
 
     def make_controls(self):
         return {
-            SPEED: Step(0.0, 30.0, 0.5, 4.0, SPEED).make("speed"),
-            RADIUS: Step(2.0, 60.0, 0.5, 8.0, RADIUS).make("radius"),
-            DRIVE: Step(-6000, 6000, 100, 0, DRIVE).make("drive"),
-            FRICTION: Step(0.1, 1.2, 0.05, 0.9, FRICTION).make("mu"),
-            EPS: Step(0.0, 1.0, 0.01, 0.45, EPS).make("eps"),
-            "radius of gyration (m)": Step(0.3, 3.0, 0.05, 1.2, "radius of gyration (m)").make("rho"),
-            "mass (kg)": Step(400, 3000, 50, 1200, "mass (kg)").make("m"),
-            HEADING: Step(0.0, 360.0, 1.0, 0.0, HEADING).make("heading"),
+            SPEED: Step(0.0, 30.0, 0.5, 4.0, SPEED),
+            RADIUS: Step(2.0, 60.0, 0.5, 8.0, RADIUS),
+            DRIVE: Step(-6000, 6000, 100, 0, DRIVE),
+            FRICTION: Step(0.1, 1.2, 0.05, 0.9, FRICTION),
+            EPS: Step(0.0, 1.0, 0.01, 0.45, EPS),
+            "radius of gyration (m)": Step(0.3, 3.0, 0.05, 1.2, "radius of gyration (m)"),
+            "mass (kg)": Step(400, 3000, 50, 1200, "mass (kg)"),
+            HEADING: Step(0.0, 360.0, 1.0, 0.0, HEADING),
         }
 
     # -- physics -------------------------------------------------------------------

@@ -24,7 +24,7 @@ from planargeo.scenes.chain import chain_workspace
 from planargeo.simulate.integrate import energy
 from planargeo.widgets._explorer import Described, explorer_data, time_step
 from planargeo.widgets._motion import Motion, refusal_on_picture
-from planargeo.widgets.base import Explorer, Handle, Step, cached
+from planargeo.widgets.base import Explorer, Handle, Step, Toggle, cached
 
 __all__ = ["ChainExplorer", "chain_for", "parse_list"]
 
@@ -186,25 +186,24 @@ class ChainExplorer(Described, Explorer):
 
     def make_controls(self):
         c = {
-            "links": Step(1, NMAX, 1, 4, "links", integer=True).make("links"),
+            "links": Step(1, NMAX, 1, 4, "links", integer=True),
             "joints": W.Dropdown(options=JOINT_SETS, value="revolute", description="joints"),
-            "angle": Step(-180, 180, 1, -30, "angle (deg)").make("angle"),
-            "bend": Step(-90, 90, 1, 20, "bend (deg)").make("bend"),
-            "slide": Step(*SLIDE, 0.05, 0.2, "slide (m)").make("slide"),
-            "speed": Step(-5, 5, 0.1, 1.0, "speed (rad/s, m/s)").make("speed"),
-            "torque": Step(-50, 50, 0.5, 0.0, "torque (N·m, N)").make("torque"),
+            "angle": Step(-180, 180, 1, -30, "angle (deg)"),
+            "bend": Step(-90, 90, 1, 20, "bend (deg)"),
+            "slide": Step(*SLIDE, 0.05, 0.2, "slide (m)"),
+            "speed": Step(-5, 5, 0.1, 1.0, "speed (rad/s, m/s)"),
+            "torque": Step(-50, 50, 0.5, 0.0, "torque (N·m, N)"),
             "torque on": W.Dropdown(options=TORQUE_ON, value="all joints", description="torque on"),
             "gravity": W.Checkbox(value=True, description="gravity"),
-            "base x (m)": Step(-3, 3, 0.1, 0.0, "base x (m)").make("base x (m)"),
-            "base y (m)": Step(-3, 3, 0.1, 0.0, "base y (m)").make("base y (m)"),
+            "base x (m)": Step(-3, 3, 0.1, 0.0, "base x (m)"),
+            "base y (m)": Step(-3, 3, 0.1, 0.0, "base y (m)"),
             LIST_Q: _list_text(LIST_Q, "e.g. 30, -20, 0.4"),
             "joint speeds": _list_text("joint speeds", "e.g. 1, 0, -2"),
             "joint torques": _list_text("joint torques", "e.g. 0, 5"),
         }
         for name in OVERLAYS:
-            c[name] = W.Checkbox(value=name in ("velocity poles", "internal forces"), description=name,
-                                 indent=False)
-        c[TIME] = Step(0.0, self.duration, 0.01, 0.0, "time t (s)").make(TIME)
+            c[name] = Toggle(name in ("velocity poles", "internal forces"), name)
+        c[TIME] = Step(0.0, self.duration, 0.01, 0.0, "time t (s)")
         return c
 
     def __init__(self, *, duration: float = 60.0, fps: int = 25, **kw):

@@ -190,13 +190,13 @@ class ConstructionExplorer(Explorer):
         n = len(construct(self._first).steps)
         c = {"construction": W.Dropdown(options=CHOICES, value=self._first, description="construction",
                                         layout=W.Layout(width="310px")),
-             "step": Step(1, n, 1, n, "step", integer=True).make("step"),
+             "step": Step(1, n, 1, n, "step", integer=True),
              "earlier": W.ToggleButtons(options=("faded", "shown", "hidden"), value="faded",
                                         description="earlier steps",
                                         style={"description_width": "initial"})}
         for name, default in self._all_params.items():
             lo, hi, st, _unit = _range(name)
-            c[name] = Step(lo, hi, st, default, _label(self._first, name)).make(name)
+            c[name] = Step(lo, hi, st, default, _label(self._first, name))
         return c
 
     def adjust(self, values, changed):

@@ -82,12 +82,12 @@ class ImpulseExplorer(Described, Explorer):
                                tooltip="a bat held at its grip, or a door (top view) held by its hinge"),
             "support": W.ToggleButtons(options=["held", "free"], value="held", description="support",
                                        tooltips=["held at the grip / hinge (a revolute joint)", "nothing holds it"]),
-            "m": Step(0.1, 30.0, 0.05, 0.9, "mass m (kg)").make("m"),
-            "strike x": Step(-0.4, 1.15, 0.005, 0.55, "blow point x (m)").make("strike x"),
-            "strike y": Step(-0.55, 0.55, 0.005, 0.0, "blow point y (m)").make("strike y"),
-            "strike angle": Step(-180, 180, 1.0, 90.0, "blow angle (deg)").make("strike angle"),
-            "J": Step(-5.0, 5.0, 0.05, 1.0, "impulse J (N·s)").make("J"),
-            "t": Step(0.0, T_MAX, 0.01, 0.0, "time after the blow t (s)").make("t"),
+            "m": Step(0.1, 30.0, 0.05, 0.9, "mass m (kg)"),
+            "strike x": Step(-0.4, 1.15, 0.005, 0.55, "blow point x (m)"),
+            "strike y": Step(-0.55, 0.55, 0.005, 0.0, "blow point y (m)"),
+            "strike angle": Step(-180, 180, 1.0, 90.0, "blow angle (deg)"),
+            "J": Step(-5.0, 5.0, 0.05, 1.0, "impulse J (N·s)"),
+            "t": Step(0.0, T_MAX, 0.01, 0.0, "time after the blow t (s)"),
         }
 
     # ------------------------------------------------------------------ handles and Play

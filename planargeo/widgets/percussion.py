@@ -94,17 +94,17 @@ class PercussionExplorer(Described, Explorer):
 
     def make_controls(self):
         return {
-            "pole x": Step(-1.5, 2.0, 0.01, 0.0, "pole of a: x (m)").make("pole x"),
-            "pole y": Step(-1.2, 1.2, 0.01, 0.0, "pole of a: y (m)").make("pole y"),
-            "impact at": Step(-0.5, 1.5, 0.005, 0.5, "impact at x (m)").make("impact at"),
+            "pole x": Step(-1.5, 2.0, 0.01, 0.0, "pole of a: x (m)"),
+            "pole y": Step(-1.2, 1.2, 0.01, 0.0, "pole of a: y (m)"),
+            "impact at": Step(-0.5, 1.5, 0.005, 0.5, "impact at x (m)"),
             "drive": W.ToggleButtons(options=("acceleration pole", "impact"),
                                      value="acceleration pole", description="drive"),
             "shape": W.Dropdown(options=list(PRESETS), value="bat", description="shape"),
             "polygon": W.Text(value="0,-0.05; 1,-0.05; 1,0.05; 0,0.05", description="polygon",
                               continuous_update=False,
                               tooltip="vertices 'x, y; x, y; ...' (used with shape = custom polygon)"),
-            "mass (kg)": Step(0.1, 5.0, 0.05, 1.0, "mass (kg)").make("mass"),
-            "angular accel. α": Step(-50, 50, 0.5, 10.0, "angular accel. α (rad/s²)").make("alpha"),
+            "mass (kg)": Step(0.1, 5.0, 0.05, 1.0, "mass (kg)"),
+            "angular accel. α": Step(-50, 50, 0.5, 10.0, "angular accel. α (rad/s²)"),
         }
 
     def disabled(self, values):

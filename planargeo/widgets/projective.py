@@ -27,7 +27,7 @@ from planargeo.draw.pictures.projective import projective_picture
 from planargeo.errors import DegenerateGeometryError, InputError
 from planargeo.geometry.projective import from_xy, is_at_infinity, is_ideal
 from planargeo.widgets._explorer import Described, xy_handle
-from planargeo.widgets.base import Explorer, Handle, Step
+from planargeo.widgets.base import Explorer, Handle, Step, Toggle
 from planargeo.widgets.readout import point_value
 
 __all__ = ["ProjectiveExplorer", "CONICS", "make_conic"]
@@ -128,20 +128,18 @@ class ProjectiveExplorer(Described, Explorer):
 
     def make_controls(self):
         return {
-            "P x": Step(-4, 4, 0.05, 2.0, "P x (m)").make("P x"),
-            "P y": Step(-4, 4, 0.05, 1.5, "P y (m)").make("P y"),
-            "line angle (deg)": Step(-180, 180, 1, 100, "line angle (deg)").make("angle"),
-            "line offset": Step(-4, 4, 0.05, 0.5, "line offset (m)").make("offset"),
+            "P x": Step(-4, 4, 0.05, 2.0, "P x (m)"),
+            "P y": Step(-4, 4, 0.05, 1.5, "P y (m)"),
+            "line angle (deg)": Step(-180, 180, 1, 100, "line angle (deg)"),
+            "line offset": Step(-4, 4, 0.05, 0.5, "line offset (m)"),
             "conic": W.Dropdown(options=CONICS, value="ellipse", description="conic"),
-            "a": Step(0.2, 3, 0.05, 1.5, "semi-axis a (m)").make("a"),
-            "b": Step(0.2, 3, 0.05, 1.0, "semi-axis b (m)").make("b"),
-            "tilt (deg)": Step(-90, 90, 1, 20, "tilt (deg)").make("tilt"),
-            "P at infinity": W.Checkbox(value=False, indent=False,
-                                        description="P at infinity (direction P x, P y)"),
-            "M at infinity": W.Checkbox(value=False, indent=False, description="M = line at infinity"),
-            "construction": W.Checkbox(value=True, description="construction (5.2.2)", indent=False),
-            "line and its pole": W.Checkbox(value=True, description="line and its pole",
-                                            indent=False),
+            "a": Step(0.2, 3, 0.05, 1.5, "semi-axis a (m)"),
+            "b": Step(0.2, 3, 0.05, 1.0, "semi-axis b (m)"),
+            "tilt (deg)": Step(-90, 90, 1, 20, "tilt (deg)"),
+            "P at infinity": Toggle(False, "P at infinity (direction P x, P y)"),
+            "M at infinity": Toggle(False, "M = line at infinity"),
+            "construction": Toggle(True, "construction (5.2.2)"),
+            "line and its pole": Toggle(True, "line and its pole"),
         }
 
     def disabled(self, values):

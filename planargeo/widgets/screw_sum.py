@@ -114,10 +114,10 @@ class ScrewSumExplorer(Described, Explorer):
         for k, (x, y, mag, ang) in ((1, (-1.5, 0.0, 1.0, 0.0)), (2, (1.5, 0.5, 2.0, 90.0))):
             sub = _SUBSCRIPT[k]
             c[f"kind{k}"] = W.Dropdown(options=offered, value=offered[0], description=f"screw {k}")
-            c[f"x{k}"] = Step(-3, 3, 0.05, x, f"x{sub} (m)").make(f"x{k}")
-            c[f"y{k}"] = Step(-3, 3, 0.05, y, f"y{sub} (m)").make(f"y{k}")
-            c[f"size{k}"] = Step(-3, 3, 0.05, mag, _SIZE_LABEL[offered[0]].format(k=sub)).make(f"size{k}")
-            c[f"angle{k}"] = Step(-180, 180, 5, ang, f"angle{sub} (deg)").make(f"angle{k}")
+            c[f"x{k}"] = Step(-3, 3, 0.05, x, f"x{sub} (m)")
+            c[f"y{k}"] = Step(-3, 3, 0.05, y, f"y{sub} (m)")
+            c[f"size{k}"] = Step(-3, 3, 0.05, mag, _SIZE_LABEL[offered[0]].format(k=sub))
+            c[f"angle{k}"] = Step(-180, 180, 5, ang, f"angle{sub} (deg)")
         return c
 
     def _offer_kinds(self, mode: str) -> None:

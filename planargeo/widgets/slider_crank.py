@@ -23,7 +23,7 @@ from planargeo.scenes.slider_crank import (DEAD_CENTRE_TOL, dead_centre_at, slid
 from planargeo.simulate.integrate import energy
 from planargeo.widgets._explorer import SceneTime, explorer_data, keep_run, run_to, time_value
 from planargeo.widgets._motion import Budget, refusal_on_picture
-from planargeo.widgets.base import Explorer, Handle, Step, cached
+from planargeo.widgets.base import Explorer, Handle, Step, Toggle, cached
 
 __all__ = ["SliderCrankExplorer"]
 
@@ -125,15 +125,15 @@ class SliderCrankExplorer(SceneTime, Explorer):
     def make_controls(self):
         return {
             "crank angle (deg)": Step(-180, 180, 1, 23.0,
-                                      "crank angle ψ at t = 0 (°)").make("crank angle (deg)"),
-            "crank speed": Step(-100, 100, 0.5, 20.0, "crank speed ψ̇ at t = 0 (rad/s)").make("crank speed"),
+                                      "crank angle ψ at t = 0 (°)"),
+            "crank speed": Step(-100, 100, 0.5, 20.0, "crank speed ψ̇ at t = 0 (rad/s)"),
             "t (s)": self.time_control(),
             "drive": W.ToggleButtons(options=("free", "constant-speed"), value="free", description="crank"),
-            "rod length": Step(1.0, 8.0, 0.01, 5.0, "rod length l (m)").make("rod length"),
-            "gravity": Step(0.0, 20.0, 0.01, 9.81, "g (m/s²)").make("gravity"),
-            "reaction forces": W.Checkbox(value=True, description="pin and bearing forces", indent=False),
-            "velocity poles": W.Checkbox(value=False, description="velocity poles", indent=False),
-            "acceleration poles": W.Checkbox(value=False, description="acceleration poles", indent=False),
+            "rod length": Step(1.0, 8.0, 0.01, 5.0, "rod length l (m)"),
+            "gravity": Step(0.0, 20.0, 0.01, 9.81, "g (m/s²)"),
+            "reaction forces": Toggle(True, "pin and bearing forces"),
+            "velocity poles": Toggle(False, "velocity poles"),
+            "acceleration poles": Toggle(False, "acceleration poles"),
         }
 
     # ----------------------------------------------------------------- handles

@@ -78,12 +78,12 @@ class SplittingExplorer(Described, ChainBodies, Explorer):
 
     def make_controls(self):
         return {
-            "bodies n": Step(2, NMAX, 1, 2, "bodies n", integer=True).make("bodies n"),
-            "split at joint": Step(2, NMAX, 1, 2, "split at joint i+1", integer=True).make("split"),
-            "ρ (m)": Step(0.05, 2.0, 0.01, 0.5, "ρ (m), L = 1").make("rho"),
-            "bend φ (deg)": Step(-180.0, 180.0, 0.5, 45.0, "bend φ (deg)").make("phi"),
-            "couple τ (N·m)": Step(-5.0, 5.0, 0.05, 1.0, "couple τ on the tip (N·m)").make("tau"),
-            "g (m/s²)": Step(0.0, 9.81, 0.01, 0.0, "g (m/s²)").make("g"),
+            "bodies n": Step(2, NMAX, 1, 2, "bodies n", integer=True),
+            "split at joint": Step(2, NMAX, 1, 2, "split at joint i+1", integer=True),
+            "ρ (m)": Step(0.05, 2.0, 0.01, 0.5, "ρ (m), L = 1"),
+            "bend φ (deg)": Step(-180.0, 180.0, 0.5, 45.0, "bend φ (deg)"),
+            "couple τ (N·m)": Step(-5.0, 5.0, 0.05, 1.0, "couple τ on the tip (N·m)"),
+            "g (m/s²)": Step(0.0, 9.81, 0.01, 0.0, "g (m/s²)"),
             "mobility centres": W.Checkbox(value=True, description="mobility centres"),
             # the focus made here: an ordinary control, not a display control of the base
             "focus": W.Dropdown(options=["all", *self.focus_options()], value="all", description="focus",

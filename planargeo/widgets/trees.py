@@ -24,7 +24,7 @@ from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_m
 from planargeo.simulate.integrate import energy
 from planargeo.widgets._explorer import Described, SceneTime, explorer_data, keep_run, run_to, time_value
 from planargeo.widgets._motion import Budget, refusal_on_picture
-from planargeo.widgets.base import Explorer, Handle, Step, cached
+from planargeo.widgets.base import Explorer, Handle, Step, Toggle, cached
 
 __all__ = ["TreeExplorer"]
 
@@ -81,17 +81,17 @@ class TreeExplorer(Described, SceneTime, Explorer):
 
     def make_controls(self):
         return {
-            "speed": Step(-3, 3, 0.05, DEFAULT_SPEED, "speed (rad/s)").make("speed"),
+            "speed": Step(-3, 3, 0.05, DEFAULT_SPEED, "speed (rad/s)"),
             "loops": W.ToggleButtons(options=("closed (Fig 9.2)", "open (Fig 9.1)"), value="closed (Fig 9.2)",
                                      description="loops"),
-            "gravity": Step(0, 20, 0.01, DEFAULT_G, "g (m/s²)").make("gravity"),
-            "mass": Step(0.1, 5, 0.1, 1.0, "link mass (kg)").make("mass"),
-            "body 1 angle (deg)": Step(-180, 180, 1, FIG91_ANGLES[0], "body 1 angle (°)").make("body 1 angle (deg)"),
-            "body 2 angle (deg)": Step(-180, 360, 1, FIG91_ANGLES[1], "body 2 angle (°)").make("body 2 angle (deg)"),
+            "gravity": Step(0, 20, 0.01, DEFAULT_G, "g (m/s²)"),
+            "mass": Step(0.1, 5, 0.1, 1.0, "link mass (kg)"),
+            "body 1 angle (deg)": Step(-180, 180, 1, FIG91_ANGLES[0], "body 1 angle (°)"),
+            "body 2 angle (deg)": Step(-180, 360, 1, FIG91_ANGLES[1], "body 2 angle (°)"),
             "t (s)": self.time_control(),
-            "velocity poles": W.Checkbox(value=False, description="velocity poles", indent=False),
-            "acceleration poles": W.Checkbox(value=False, description="acceleration poles", indent=False),
-            "reaction forces": W.Checkbox(value=True, description="pin and contact forces", indent=False),
+            "velocity poles": Toggle(False, "velocity poles"),
+            "acceleration poles": Toggle(False, "acceleration poles"),
+            "reaction forces": Toggle(True, "pin and contact forces"),
         }
 
     def focus_options(self):
