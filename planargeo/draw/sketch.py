@@ -23,11 +23,10 @@ import math
 import numpy as np
 
 from planargeo.draw._shared import ENTRIES, added, as_picture, view_centre
-from planargeo.draw.geometry import clip_line
 from planargeo.draw.layout import fit_box, shape_points
 from planargeo.draw.picture import PX_PER_PT, Picture, _color as _role_color, _dash as _role_dash, plain_text
 from planargeo.draw.pictures.common import _align
-from planargeo.draw.pictures.kit import foot_on_line, seg_distance
+from planargeo.draw.pictures.kit import foot_on_line, force as force_arrow, seg_distance
 from planargeo.draw.style import COLORS, LINEWIDTHS
 from planargeo.errors import InputError
 from planargeo.geometry._docs import entries
@@ -1217,14 +1216,11 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
                 out[k] = None
             continue
         tail, tip = arrows[k]
-        parts = []
-        seg = clip_line(w, pic.box)
-        if seg is not None:
-            parts.append({"p": "path", "xy": np.asarray(seg, float), "closed": False})
-        d = tip - tail
-        parts.append({"p": "arrow", "x": float(tail[0]), "y": float(tail[1]),
-                      "dx": float(d[0] * pic.kx), "dy": float(d[1] * pic.ky)})
         mid = 0.5 * (tail + tip)
+        force_arrow(pic, eid, w, scale=scale, anchor=mid, role=role, symbol=text, desc=desc, label="",
+                    width=LINEWIDTHS[role] * PX_PER_PT, dash=dash)
+        out[k] = pic.elements[-1]
+        d = tip - tail
         L = float(np.hypot(*d))
         n = np.array([-d[1], d[0]]) / L
         others = [v for j, v in segs.items() if j != k]
@@ -1243,9 +1239,5 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
         u = side * n * (pic.kx, pic.ky)
         u = u / math.hypot(*u)
         g = gap * PX_PER_PT
-        parts.append(_text_part(mid[0], mid[1], text, g * u[0], g * u[1], *_align(u)))
-        out[k] = _element(pic, eid, role, parts, symbol=text, desc=desc, color=COLORS[role],
-                          width=LINEWIDTHS[role] * PX_PER_PT, z=5)
-        if dash:
-            out[k]["dash"] = dash
+        out[k]["parts"].append(_text_part(mid[0], mid[1], text, g * u[0], g * u[1], *_align(u)))
     return out, split
