@@ -32,6 +32,8 @@ SCREWS = {
     "wrench": "wrench : Wrench or array_like, shape (..., 3)\n"
               "    Wrench ``[fx, fy, τz]`` (N, N·m).",
     "point": "point : array_like, shape (..., 2)\n    Reference point ``(x, y)`` (m).",
+    "other": "other : Twist, Wrench or array_like, shape (..., 3)\n    The screw of the dual kind.",
+    "rtol": "rtol : float, optional\n    Relative tolerance of the zero-power test.",
     "theta": "theta : array_like, shape (...)\n    Angle (rad), counter-clockwise.",
     "inertia": "inertia : array_like, shape (..., 3, 3)\n"
                "    Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).",
@@ -299,11 +301,8 @@ def power(twist, wrench) -> np.ndarray:
     v = as_vec3(twist, "twist")
     f = as_vec3(wrench, "wrench")
     batch_shape(twist=(v, 1), wrench=(f, 1))
-    return np.asarray(rescaled(_dot, (v, f), (1, 1), (1, 1), 0, "power(twist, wrench)", "twist or wrench"))
-
-
-def _dot(a, b):
-    return np.einsum("...i,...i->...", a, b)
+    return np.asarray(rescaled(lambda v, f: np.einsum("...i,...i->...", v, f), (v, f), (1, 1), (1, 1), 0,
+                               "power(twist, wrench)", "twist or wrench"))
 
 
 @documented
@@ -416,11 +415,7 @@ def wrench_axis(wrench):
 def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
     """Twist and wrench reciprocal, ``|vᵀf| <= rtol |v| |f|`` (thesis 1.9, 5.61, 5.69).
 
-    {parameters twist wrench}
-    rtol : float, optional
-        Relative tolerance of the zero-power test.
-
-    {returns_bool}
+    {parameters twist wrench rtol returns_bool}
 
     Examples
     --------
@@ -613,10 +608,6 @@ def _batches(**named) -> tuple:
     return batch_shape(**{k: (as_array(x, k), nd) for k, (x, nd) in named.items()})
 
 
-def _is_number(x) -> bool:
-    return isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, bool)
-
-
 class _Held:
     """Common base of :class:`Twist`, :class:`Wrench` and ``Inertia``: one read-only array."""
 
@@ -682,7 +673,8 @@ class _Screw(_Held):
         return type(self)(-self._array)
 
     def __mul__(self, k):
-        if not _is_number(k) and not (isinstance(k, np.ndarray) and k.ndim == 0):
+        number = isinstance(k, (int, float, np.integer, np.floating)) and not isinstance(k, bool)
+        if not number and not (isinstance(k, np.ndarray) and k.ndim == 0):
             return NotImplemented
         with np.errstate(over="ignore", invalid="ignore"):
             return self._new(self._array * float(k), "*")
@@ -707,13 +699,11 @@ class _Screw(_Held):
         with np.errstate(over="ignore", invalid="ignore"):
             return self._new(np.einsum("...ij,...j->...i", M, self._array), "rotated")
 
+    @documented
     def at(self, point):
         """The same screw at ``point``: ``X_P v`` (thesis 4.8) or ``X_P⁻ᵀ f`` (4.24, 4.26).
 
-        Parameters
-        ----------
-        point : array_like, shape (..., 2)
-            Reference point ``(x, y)`` (m).
+        {parameters point}
 
         Returns
         -------
@@ -727,26 +717,16 @@ class _Screw(_Held):
         with np.errstate(over="ignore", invalid="ignore"):
             return self._new(np.einsum("...ij,...j->...i", self._carry(point), self._array), "at")
 
-    @classmethod
-    def _coords(cls, x) -> np.ndarray:
-        """The validated coordinates of ``x``, a screw of this kind or its array."""
-        return as_vec3(x.array if isinstance(x, cls) else x, cls._name)
-
     def _pair(self, other) -> tuple:
         """``(twist, wrench)`` arrays of this screw and ``other`` of the dual kind."""
-        theirs = self._dual._coords(other)
+        theirs = as_vec3(other.array if isinstance(other, self._dual) else other, self._dual._name)
         return (self._array, theirs) if self._dual is Wrench else (theirs, self._array)
 
     @documented
     def power(self, other) -> np.ndarray:
         """Power ``vᵀf`` (W; thesis 5.73) with ``other`` of the dual kind; also ``v @ f``.
 
-        Parameters
-        ----------
-        other : Twist, Wrench or array_like, shape (..., 3)
-            The screw of the dual kind.
-
-        {returns_scalar}
+        {parameters other returns_scalar}
 
         Examples
         --------
@@ -759,14 +739,7 @@ class _Screw(_Held):
     def reciprocal(self, other, rtol: float = 1e-12) -> np.ndarray:
         """True where this screw and ``other`` of the dual kind do no power (:func:`reciprocal`).
 
-        Parameters
-        ----------
-        other : Twist, Wrench or array_like, shape (..., 3)
-            The screw of the dual kind.
-        rtol : float, optional
-            Relative tolerance of the zero-power test.
-
-        {returns_bool}
+        {parameters other rtol returns_bool}
 
         Examples
         --------
@@ -824,10 +797,7 @@ class Twist(_Screw):
     def rotation(cls, point, omega=1.0) -> "Twist":
         """Rotation ``omega [y, -x, 1]`` about ``point`` (thesis 4.10, 5.51).
 
-        Parameters
-        ----------
-        point : array_like, shape (..., 2)
-            Reference point ``(x, y)`` (m).
+        {parameters point}
         omega : float or array_like, optional
             Angular velocity (rad/s), counter-clockwise positive.
 
@@ -935,10 +905,7 @@ class Wrench(_Screw):
     def force(cls, point, force) -> "Wrench":
         """Pure force ``(fx, fy)`` on the line through ``point``: ``[fx, fy, x fy - y fx]`` (4.27).
 
-        Parameters
-        ----------
-        point : array_like, shape (..., 2)
-            Reference point ``(x, y)`` (m).
+        {parameters point}
         force : array_like, shape (..., 2)
             Force ``(fx, fy)`` (N).
 
