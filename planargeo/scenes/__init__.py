@@ -5,6 +5,7 @@ report`` all build scenes by name.
 """
 from __future__ import annotations
 
+import functools
 import importlib
 import importlib.util
 import inspect
@@ -54,9 +55,9 @@ class SceneResult:
     Attributes
     ----------
     name : str
-        Registered scene name, e.g. ``"slider-crank"``.
+        Registered scene name, e.g. ``"slider-crank"`` (set by :func:`register`).
     params : dict
-        Every parameter with the value used.
+        Every parameter with the value used (set by :func:`register`).
     model : object or None
         The mechanism (``planargeo.mechanics.model.Model``), if the scene has one.
     state : dict
@@ -67,16 +68,17 @@ class SceneResult:
         Anything else a drawing may want (numpy arrays allowed).
     """
 
-    name: str
-    params: dict[str, Any]
+    name: str = ""
+    params: dict[str, Any] = field(default_factory=dict)
     model: Any = None
     state: dict[str, Any] = field(default_factory=dict)
     quantities: dict[str, Any] = field(default_factory=dict)
     extra: dict[str, Any] = field(default_factory=dict)
 
 
-def register(name: str, limits: dict[str, tuple[int, str]] | None = None):
-    """Decorator registering a scene function under ``name``.
+def register(name: str, limits: dict[str, tuple[int, str]] | None = None,
+             checks: dict | None = None):
+    """Decorator registering a scene function under ``name``, its parameters checked up front.
 
     Parameters
     ----------
@@ -85,20 +87,46 @@ def register(name: str, limits: dict[str, tuple[int, str]] | None = None):
     limits : dict, optional
         ``{size parameter: (largest value, what that costs)}``, e.g. ``{"n": (200, "about 0.5 s")}``:
         :func:`build` refuses larger values unless ``allow_big=True``.
+    checks : dict, optional
+        ``{parameter: rule}`` for :func:`check_param`: words among ``int``, ``positive``,
+        ``nonnegative``, ``nonzero``, ``optional``, a tuple of choices, or None for a drawing
+        option left to the function and not in ``params``.  A parameter not named is a float.
 
     Returns
     -------
     callable
-        The decorator; it returns the scene function unchanged.
+        The decorator; it returns the scene function calling the original with the checked
+        values and setting ``name`` and ``params`` of its result.
     """
 
     def deco(fn):
-        _REGISTRY[name] = fn
+        sig = inspect.signature(fn)
+        rules = {k: (checks or {}).get(k, "") for k in sig.parameters}
+
+        @functools.wraps(fn)
+        def scene(*args, **kwargs):
+            bound = sig.bind(*args, **kwargs)
+            bound.apply_defaults()
+            values = {k: v if rules[k] is None else _check(k, v, rules[k])
+                      for k, v in bound.arguments.items()}
+            res = fn(**values)
+            res.name, res.params = name, {k: v for k, v in values.items() if rules[k] is not None}
+            return res
+
+        _REGISTRY[name] = scene
         _LIMITS[name] = dict(limits or {})
-        fn.scene_name = name
-        return fn
+        return scene
 
     return deco
+
+
+def _check(name: str, value: Any, rule: str | tuple) -> Any:
+    """:func:`check_param` of one parameter by its rule (see :func:`register`)."""
+    if isinstance(rule, tuple):
+        return check_param(name, value, "choice", choices=rule)
+    words = rule.split()
+    kind = "int" if "int" in words else "float"
+    return check_param(name, value, kind, **{w: True for w in words if w != "int"})
 
 
 def _load() -> None:

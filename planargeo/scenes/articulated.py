@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from planargeo.mechanics.model import Body, Joint, Model
-from planargeo.scenes import SceneResult, check_param, plain, register
+from planargeo.scenes import SceneResult, plain, register
 
 __all__ = ["articulated", "articulated_state", "bent_chain_model", "joint_points", "inertia_at", "conic_centre", "COMPONENTS"]
 
@@ -122,7 +122,8 @@ def _components(A) -> list[float]:
     return [float(A[0, 0]), float(A[1, 1]), float(A[2, 2]), float(A[0, 1]), float(A[0, 2]), float(A[1, 2])]
 
 
-@register("articulated", limits={"n": (40, "n = 40 takes about 0.1 s; the chart grows as n²")})
+@register("articulated", limits={"n": (40, "n = 40 takes about 0.1 s; the chart grows as n²")},
+          checks={"n": "int positive", "lam": "positive", "outboard": "int nonnegative optional"})
 def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int | None = None,
                 pole_x: float = 0.0, pole_y: float = -0.6) -> SceneResult:
     """Rigid and articulated inertias of a bent chain, their axes of percussion and convergence (7.7a, 7.26, 5.64-5.68).
@@ -157,12 +158,6 @@ def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int | 
     """
     from planargeo.scenes.horizontal_chain import effective_centre
 
-    n = check_param("n", n, "int", positive=True)
-    lam = check_param("lam", lam, positive=True)
-    phi = check_param("phi", phi)
-    outboard = check_param("outboard", outboard, "int", nonnegative=True, optional=True)
-    pole_x, pole_y = check_param("pole_x", pole_x), check_param("pole_y", pole_y)
-    params = dict(n=n, lam=lam, phi=phi, outboard=outboard, pole_x=pole_x, pole_y=pole_y)
     L, m = 1.0, 1.0
     rho = L / lam
     model = bent_chain_model(n, rho, L, m)
@@ -176,7 +171,7 @@ def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int | 
     quantities["effective_7_26"] = {"d_over_L": d / L, "mx_over_m": mx / m, "my_over_m": my / m,
                                     "Az_over_m_rho2": Az / (m * rho * rho)}
     state = {"q": plain(q), "qd": [0.0] * n, "tau": [0.0] * n}
-    return SceneResult("articulated", params, model, state, quantities,
+    return SceneResult(model=model, state=state, quantities=quantities,
                        extra={"articulated": st["result"], "full": st["full"], "rho": rho, "L": L})
 
 

@@ -17,7 +17,7 @@ from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.screws.twists import crf, crm, inertia_matrix
 from planargeo.mechanics.subspaces import Decomposition
 from planargeo.errors import SceneError
-from planargeo.scenes import SceneResult, check_param, register
+from planargeo.scenes import SceneResult, register
 
 __all__ = ["car"]
 
@@ -35,7 +35,7 @@ def _outlines(d: float, L: float, steer: float):
     return body, rear, front
 
 
-@register("car")
+@register("car", checks={"m": "positive", "rho": "positive", "L": "positive", "outlines": None})
 def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps: float = 0.45,
         omega: float = 0.5, F_A: float = 2000.0, outlines: bool = True) -> SceneResult:
     """Car cornering and accelerating at the same time (thesis 6.9, 6.114–6.133).
@@ -72,14 +72,6 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
     >>> round(res.quantities["omega_dot"], 4), [round(x, 1) for x in res.quantities["mu"]]
     (0.2077, [-1102.4, -1089.3])
     """
-    m = check_param("m", m, positive=True)
-    rho = check_param("rho", rho, positive=True)
-    L = check_param("L", L, positive=True)
-    d = check_param("d", d)
-    eps = check_param("eps", eps)
-    omega = check_param("omega", omega)
-    F_A = check_param("F_A", F_A)
-    params = dict(m=m, rho=rho, L=L, d=d, eps=eps, omega=omega, F_A=F_A)
     if not isinstance(outlines, (bool, np.bool_)):
         raise SceneError(f"outlines must be True or False, got {outlines!r}")
 
@@ -136,5 +128,4 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
     model = Model([Body(m, com=tuple(cg), inertia=m * rho ** 2, shape=body_shape, name="car")],
                   [Joint("revolute", (0.0, 0.0, 0.0), name="icr")], [-1], gravity=(0.0, 0.0))
     state = {"q": [0.0], "qd": [omega], "tau": [0.0], "f_ext": [f_A.tolist()], "omega": omega}
-    return SceneResult(name="car", params=params, model=model, state=state,
-                       quantities=quantities, extra=extra)
+    return SceneResult(model=model, state=state, quantities=quantities, extra=extra)

@@ -20,7 +20,7 @@ from planargeo.algorithms.crba import forward_dynamics_crba
 from planargeo.algorithms.projective import forward_dynamics_projective
 from planargeo.algorithms.stacked import forward_dynamics_stacked
 from planargeo.mechanics.model import JOINT_DOFS, chain_model
-from planargeo.scenes import SceneResult, check_param, register
+from planargeo.scenes import SceneResult, register
 
 __all__ = ["chain", "chain_workspace", "chain_accelerations", "METHODS", "available_methods"]
 
@@ -98,7 +98,9 @@ def chain_accelerations(model, q, qd, tau):
     return forward_dynamics(model, q, qd, tau)
 
 
-@register("chain", limits={"n": (200, "n = 200 takes about 0.5 s; the cost grows as n³")})
+@register("chain", limits={"n": (200, "n = 200 takes about 0.5 s; the cost grows as n³")},
+          checks={"n": "int positive", "mass": "positive", "length": "positive",
+                  "joint": ("revolute", "prismatic"), "seed": "int nonnegative optional"})
 def chain(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str = "revolute", seed=None,
           gravity: float = -9.81) -> SceneResult:
     """A chain of ``n`` uniform links hanging from the origin.
@@ -123,26 +125,17 @@ def chain(n: int = 3, mass: float = 1.0, length: float = 1.0, joint: str = "revo
         (6.108-6.113), ``mobility_split`` (7.54/7.56), ``stacked`` (9.39/9.48), ``crba``, and
         ``max_disagreement``; ``extra["data"]``: the ABA workspace.
     """
-    n_int = check_param("n", n, "int", positive=True)
-    mass_v = check_param("mass", mass, positive=True)
-    length_v = check_param("length", length, positive=True)
-    joint = check_param("joint", joint, "choice", choices=("revolute", "prismatic"))
-    seed = check_param("seed", seed, "int", nonnegative=True, optional=True)
-    g = check_param("gravity", gravity)
-    model = chain_model(n_int, mass_v, length_v, joint, gravity=(0.0, g))
+    model = chain_model(n, mass, length, joint, gravity=(0.0, gravity))
     if seed is None:
-        q = qd = tau = np.zeros(n_int)
+        q = qd = tau = np.zeros(n)
     else:
         rng = np.random.default_rng(seed)
-        q, qd, tau = rng.normal(size=(3, n_int))
+        q, qd, tau = rng.normal(size=(3, n))
     qdd = {name: np.asarray(fn(model, q, qd, tau), dtype=float).tolist() for name, fn in METHODS.items()}
     vals = [np.asarray(v) for v in qdd.values()]
     disagreement = max(float(np.abs(v - vals[0]).max(initial=0.0)) for v in vals)
     data = chain_workspace(model, q, qd, tau)
-    params = {"n": n_int, "mass": mass_v, "length": length_v, "joint": joint, "seed": seed, "gravity": g}
     state = {"q": q.tolist(), "qd": qd.tolist(), "tau": tau.tolist()}
-    return SceneResult(
-        name="chain", params=params, model=model, state=state,
-        quantities={**state, "qdd": qdd, "max_disagreement": disagreement},
-        extra={"methods": list(qdd), "data": data, "joint_dofs": JOINT_DOFS[joint]},
-    )
+    return SceneResult(model=model, state=state,
+                       quantities={**state, "qdd": qdd, "max_disagreement": disagreement},
+                       extra={"methods": list(qdd), "data": data, "joint_dofs": JOINT_DOFS[joint]})

@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from planargeo.mechanics.model import Body, Joint, Model
-from planargeo.scenes import SceneResult, check_param, plain, register
+from planargeo.scenes import SceneResult, plain, register
 
 __all__ = ["horizontal_chain", "horizontal_chain_model", "effective_centre"]
 
@@ -69,7 +69,8 @@ def effective_centre(A) -> tuple[float, float, float, float]:
     return float(d), float(A[0, 0]), float(A[1, 1]), float(A[2, 2] - A[1, 2] ** 2 / A[1, 1])
 
 
-@register("horizontal-chain", limits={"n": (2000, "n = 2000 takes about 1 s; the cost grows as n²")})
+@register("horizontal-chain", limits={"n": (2000, "n = 2000 takes about 1 s; the cost grows as n²")},
+          checks={"n": "int positive", "lam": "positive"})
 def horizontal_chain(n: int = 4, lam: float = 2.0) -> SceneResult:
     """Effective centre and inertia of the first body of a horizontal chain (thesis 7.3, 7.25-7.27).
 
@@ -91,9 +92,6 @@ def horizontal_chain(n: int = 4, lam: float = 2.0) -> SceneResult:
     """
     from planargeo.algorithms.articulated_inertia import articulated_inertia
 
-    n = check_param("n", n, "int", positive=True)
-    lam = check_param("lam", lam, positive=True)
-    params = dict(n=n, lam=lam)
     m, L = 1.0, 1.0
     rho = L / lam
     model = horizontal_chain_model(n, m, rho, L)
@@ -102,5 +100,5 @@ def horizontal_chain(n: int = 4, lam: float = 2.0) -> SceneResult:
     quantities = {"d_over_L": d / L, "mx_over_m": mx / m, "my_over_m": my / m,
                   "Az_over_m_rho2": Az / (m * rho * rho), "A1": plain(r.A[0])}
     state = {"q": [0.0] * n, "qd": [0.0] * n, "tau": [0.0] * n}
-    return SceneResult("horizontal-chain", params, model, state, quantities,
+    return SceneResult(model=model, state=state, quantities=quantities,
                        extra={"articulated": r, "effective_centre": np.array([d, 0.0])})

@@ -70,7 +70,8 @@ def _pole(tw, size: float = 1.0) -> list | None:
     return [float(-tw[1] / tw[2]) + 0.0, float(tw[0] / tw[2]) + 0.0]
 
 
-@register("impulse")
+@register("impulse", checks={"body": tuple(BODIES), "support": SUPPORTS, "m": "positive",
+                             "J": "nonzero"})
 def impulse(body: str = "bat", support: str = "held", m: float = 0.9, x: float = 0.55, y: float = 0.0,
             angle_deg: float = 90.0, J: float = 1.0) -> SceneResult:
     """A body at rest struck by a blow: velocity pole, reaction impulse, apparent mass (thesis 5.4, 6.93).
@@ -108,12 +109,6 @@ def impulse(body: str = "bat", support: str = "held", m: float = 0.9, x: float =
     >>> round(r.quantities["omega"], 12) == round(0.9 / (3.0 * (4 * 0.81 + 0.0016) / 12), 12)
     True
     """
-    body = check_param("body", body, "choice", choices=tuple(BODIES))
-    support = check_param("support", support, "choice", choices=SUPPORTS)
-    m = check_param("m", m, positive=True)
-    x, y, a = check_param("x", x), check_param("y", y), check_param("angle_deg", angle_deg)
-    J = check_param("J", J, nonzero=True)
-    params = dict(body=body, support=support, m=m, x=x, y=y, angle_deg=a, J=J)
     from shapely.geometry import Polygon
 
     unit = Inertia.from_polygon(Polygon(BODIES[body]))
@@ -121,7 +116,7 @@ def impulse(body: str = "bat", support: str = "held", m: float = 0.9, x: float =
     inertia = Inertia(I)
     c = np.asarray(inertia.com, dtype=float)
     rho = float(inertia.radius_of_gyration)
-    e = J * unit_direction(a)
+    e = J * unit_direction(angle_deg)
     j = np.array([e[0], e[1], x * e[1] - y * e[0]])              # the blow's impulse wrench (5.56)
     s = motion_space("revolute", (0.0, 0.0))
     dv, reaction = impulse_response(I, j, s if support == "held" else None)
@@ -144,6 +139,6 @@ def impulse(body: str = "bat", support: str = "held", m: float = 0.9, x: float =
     }
     q["apparent_mass"] = q["apparent_mass_held"] if support == "held" else q["apparent_mass_free"]
     outline = np.array(BODIES[body], dtype=float)
-    return SceneResult("impulse", params, None, {"v": [0.0, 0.0, 0.0]}, q,
+    return SceneResult(state={"v": [0.0, 0.0, 0.0]}, quantities=q,
                        extra={"outline": outline, "I": I, "impulse": j, "dv": dv, "dv_free": dv_free,
                               "reaction": reaction, "s": s})

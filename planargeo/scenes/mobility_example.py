@@ -16,13 +16,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo.scenes import SceneResult, check_param, plain, register
+from planargeo.scenes import SceneResult, plain, register
 from planargeo.scenes.two_body import two_body_model
 
 __all__ = ["mobility_example"]
 
 
-@register("mobility-example")
+@register("mobility-example", checks={"m": "positive", "rho": "positive", "L": "positive",
+                                      "tau": "nonzero"})    # a zero couple has no instant centre
 def mobility_example(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: float = np.pi / 4,
                      tau: float = 1.0) -> SceneResult:
     """A pure couple on the tip of a pinned two-body chain (thesis 7.5, 7.40-7.49).
@@ -49,10 +50,6 @@ def mobility_example(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: floa
     1.333333333333
     """
     from planargeo.algorithms.articulated_mobility import articulated_mobility
-    m, rho, L = (check_param(k, v, positive=True) for k, v in (("m", m), ("rho", rho), ("L", L)))
-    phi = check_param("phi", phi)
-    tau = check_param("tau", tau, nonzero=True)   # a zero couple has no instant centre
-    params = dict(m=m, rho=rho, L=L, phi=phi, tau=tau)
     model = two_body_model(m, rho, L)
     q = np.array([0.0, phi])
     r = articulated_mobility(model, q)
@@ -64,5 +61,5 @@ def mobility_example(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: floa
         "T1": plain(r.T[0][:, 0]), "U1": plain(r.U[0]), "T2": plain(r.T[1][:, 0]), "U2": plain(r.U[1]),
     }
     state = {"q": plain(q), "qd": [0.0, 0.0], "tau": [0.0, 0.0]}
-    return SceneResult("mobility-example", params, model, state, quantities,
+    return SceneResult(model=model, state=state, quantities=quantities,
                        extra={"mobility": r, "instant_centre": np.array([-a2[1] / a2[2], 0.0])})

@@ -175,7 +175,8 @@ def _tolist(x):
     return np.asarray(x, dtype=float).tolist()
 
 
-@register("slider-crank")
+@register("slider-crank", checks={**{k: "positive" for k in ("m1", "m2", "m3", "r", "l", "t")},
+                                  "drive": ("free", "constant-speed")})
 def slider_crank(psi: float = 0.4, psidot: float = 20.0, m1: float = 0.40, m2: float = 0.15,
                  m3: float = 0.30, r: float = 2.29, l: float = 5.00, t: float = 0.5, g: float = 9.81,
                  drive: str = "free") -> SceneResult:
@@ -198,8 +199,6 @@ def slider_crank(psi: float = 0.4, psidot: float = 20.0, m1: float = 0.40, m2: f
         and every pin and bearing force (9.61): ``f``, ``mu`` (6.61b), ``pin_forces``,
         ``reaction_moments``.
     """
-    psi, psidot = check_param("psi", psi), check_param("psidot", psidot)
-    drive = check_param("drive", drive, "choice", choices=("free", "constant-speed"))
     model = slider_crank_model(m1, m2, m3, r, l, t, g)
     q, qd, sol, h = slider_crank_solve(model, psi, psidot, r, l, t, drive)
     tau = np.zeros(3)
@@ -219,9 +218,7 @@ def slider_crank(psi: float = 0.4, psidot: float = 20.0, m1: float = 0.40, m2: f
         "pin_forces": {r.symbol: _tolist(r.wrench) for r in sol.reactions},
         "reaction_moments": {r.symbol: float(r.moment) for r in sol.reactions},
     }
-    params = dict(psi=psi, psidot=psidot, m1=m1, m2=m2, m3=m3, r=r, l=l, t=t, g=g, drive=drive)
-    return SceneResult("slider-crank", params, model,
-                       state={"q": _tolist(q), "qd": _tolist(qd), "tau": _tolist(tau)},
+    return SceneResult(model=model, state={"q": _tolist(q), "qd": _tolist(qd), "tau": _tolist(tau)},
                        quantities=quantities, extra={"solution": sol})
 
 

@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from planargeo.errors import SceneError
-from planargeo.scenes import SceneResult, check_param, plain, register
+from planargeo.scenes import SceneResult, plain, register
 from planargeo.scenes.articulated import bent_chain_model, joint_points
 
 __all__ = ["splitting", "splitting_state", "twist_pole"]
@@ -120,7 +120,9 @@ def splitting_state(model, q, split: int, tau: float, *, L: float = 1.0) -> dict
     }
 
 
-@register("splitting", limits={"n": (200, "n = 200 takes about 0.2 s")})
+@register("splitting", limits={"n": (200, "n = 200 takes about 0.2 s")},
+          checks={"n": "int positive", "m": "positive", "rho": "positive", "L": "positive",
+                  "tau": "nonzero", "split": "int positive", "g": "nonnegative"})
 def splitting(n: int = 2, m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: float = np.pi / 4,
               tau: float = 1.0, split: int = 1, g: float = 0.0) -> SceneResult:
     """A couple on the tip of a pinned chain, solved by articulated mobility and chain splitting (7.38, 7.54, 7.56).
@@ -151,15 +153,8 @@ def splitting(n: int = 2, m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi:
     >>> round(r.quantities["x_over_L"], 12)      # at 90 degrees: the joint of body 2
     1.0
     """
-    n = check_param("n", n, "int", positive=True)
     if n < 2:
         raise SceneError(f"n must be at least 2 (a chain to split), got {n}")
-    m, rho, L = (check_param(k, v, positive=True) for k, v in (("m", m), ("rho", rho), ("L", L)))
-    phi = check_param("phi", phi)
-    tau = check_param("tau", tau, nonzero=True)
-    split = check_param("split", split, "int", positive=True)
-    g = check_param("g", g, nonnegative=True)
-    params = dict(n=n, m=m, rho=rho, L=L, phi=phi, tau=tau, split=split, g=g)
     model = bent_chain_model(n, rho, L, m, g)
     q = np.array([0.0] + [phi] * (n - 1))
     st = splitting_state(model, q, split, tau, L=L)
@@ -174,4 +169,4 @@ def splitting(n: int = 2, m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi:
         "eta": L / rho,
     })
     state = {"q": plain(q), "qd": [0.0] * n, "tau": [0.0] * n}
-    return SceneResult("splitting", params, model, state, quantities, extra={"state": st})
+    return SceneResult(model=model, state=state, quantities=quantities, extra={"state": st})

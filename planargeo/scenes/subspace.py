@@ -23,7 +23,7 @@ from planargeo.errors import DegenerateGeometryError
 from planargeo.mechanics.joints import reaction_space, motion_space
 from planargeo.mechanics.subspaces import (Decomposition, joint_space_inertia,
                                            reaction_space_inverse_inertia)
-from planargeo.scenes import SceneResult, check_param, plain, register
+from planargeo.scenes import SceneResult, plain, register
 from planargeo.screws.twists import inertia_matrix
 
 __all__ = ["subspace", "JOINT_KINDS", "subspace_state", "unit_direction"]
@@ -129,7 +129,8 @@ def subspace_state(joint: str, point, direction, I, force) -> dict:
             "T_pencil": _span_line(T), "residuals": residuals}
 
 
-@register("subspace")
+@register("subspace", checks={"joint": JOINT_KINDS, "m": "positive", "rho": "positive",
+                              "F": "nonzero"})
 def subspace(joint: str = "revolute", px: float = 0.0, py: float = 0.0, joint_angle_deg: float = 0.0,
              m: float = 2.0, cx: float = 1.0, cy: float = 0.0, rho: float = 0.5,
              ax: float = 1.6, ay: float = 0.0, force_angle_deg: float = 90.0, F: float = 1.0) -> SceneResult:
@@ -164,18 +165,10 @@ def subspace(joint: str = "revolute", px: float = 0.0, py: float = 0.0, joint_an
     >>> r.quantities["T"]
     [[1.0, 0.0], [0.0, 1.0], [0.0, 1.0]]
     """
-    joint = check_param("joint", joint, "choice", choices=JOINT_KINDS)
-    px, py, ja = check_param("px", px), check_param("py", py), check_param("joint_angle_deg", joint_angle_deg)
-    m, rho = check_param("m", m, positive=True), check_param("rho", rho, positive=True)
-    cx, cy = check_param("cx", cx), check_param("cy", cy)
-    ax, ay = check_param("ax", ax), check_param("ay", ay)
-    fa, F = check_param("force_angle_deg", force_angle_deg), check_param("F", F, nonzero=True)
-    params = dict(joint=joint, px=px, py=py, joint_angle_deg=ja, m=m, cx=cx, cy=cy, rho=rho, ax=ax, ay=ay,
-                  force_angle_deg=fa, F=F)
     I = inertia_matrix(m, (cx, cy), m * rho * rho)
-    e = F * unit_direction(fa)
+    e = F * unit_direction(force_angle_deg)
     f = np.array([e[0], e[1], ax * e[1] - ay * e[0]])           # the force e through (ax, ay) (5.56)
-    st = subspace_state(joint, (px, py), unit_direction(ja), I, f)
+    st = subspace_state(joint, (px, py), unit_direction(joint_angle_deg), I, f)
     q = {k: (None if v is None else (dict(v) if isinstance(v, dict) else plain(v)))
          for k, v in st.items() if k != "joint"}
-    return SceneResult("subspace", params, None, {"v": [0.0, 0.0, 0.0]}, q, extra={"state": st})
+    return SceneResult(state={"v": [0.0, 0.0, 0.0]}, quantities=q, extra={"state": st})

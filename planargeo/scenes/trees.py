@@ -114,7 +114,7 @@ def _default_q():
     return np.array([th[i] - (th[p] if p >= 0 else 0.0) for i, p in enumerate(FIG91_PARENTS)])
 
 
-@register("tree")
+@register("tree", checks={"mass": "positive", "length": "positive"})
 def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float = 1.0) -> SceneResult:
     """The open tree of Fig 9.1 in the default pose, joint speeds ``speed × pattern``, no torques.
 
@@ -133,7 +133,6 @@ def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float =
     """
     from planargeo.algorithms.stacked import adjacency, direct_accelerations, stacked_solve, trunk
 
-    speed = check_param("speed", speed)
     model = tree_model(mass, length, g)
     q = _default_q()
     qd = speed * _QD_PATTERN
@@ -147,12 +146,11 @@ def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float =
                   "Lambda_inv": plain(np.stack(Lam)), "b": plain(np.stack(b)), "qdd": plain(sol.qdd),
                   "qdd_direct": plain(qdd_direct), "a": plain(sol.a.reshape(9, 3)),
                   "f": plain(sol.f.reshape(9, 3))}
-    return SceneResult("tree", dict(mass=mass, length=length, g=g, speed=speed), model,
-                       state={"q": plain(q), "qd": plain(qd), "tau": plain(tau)},
+    return SceneResult(model=model, state={"q": plain(q), "qd": plain(qd), "tau": plain(tau)},
                        quantities=quantities, extra={"solution": sol})
 
 
-@register("constrained-tree")
+@register("constrained-tree", checks={"mass": "positive", "length": "positive"})
 def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float = 1.0) -> SceneResult:
     """The tree of Fig 9.2: pins between the tips of bodies 4 and 7 and of bodies 8 and 9.
 
@@ -173,8 +171,6 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
     from planargeo.mechanics.contacts import Contact
     from planargeo.simulate.loops import closure_jacobian
 
-    mass, length = check_param("mass", mass, positive=True), check_param("length", length, positive=True)
-    g, speed = check_param("g", g), check_param("speed", speed)
     L = length
     contacts = (Contact("pin", 3, 6, (L, 0.0), (L, 0.0), name="4-7"),
                 Contact("pin", 7, 8, (L, 0.0), (L, 0.0), name="8-9"))
@@ -190,8 +186,7 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
                   "F": plain(sol.F.reshape(-1, 3)), "xi": plain(sol.xi), "cond": float(sol.cond),
                   # every pin force of the closed tree (9.61): f_i on body i from its parent through joint i
                   "f": plain(sol.f.reshape(9, 3)), "mu": plain(sol.mu.reshape(9, 2))}
-    return SceneResult("constrained-tree", dict(mass=mass, length=length, g=g, speed=speed), model,
-                       state={"q": plain(q), "qd": plain(qd), "tau": plain(tau)},
+    return SceneResult(model=model, state={"q": plain(q), "qd": plain(qd), "tau": plain(tau)},
                        quantities=quantities, extra={"solution": sol})
 
 

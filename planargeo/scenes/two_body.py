@@ -46,7 +46,7 @@ def two_body_model(m: float, rho: float, L: float) -> Model:
                  [-1, 0], gravity=(0.0, 0.0))
 
 
-@register("two-body")
+@register("two-body", checks={"m": "positive", "rho": "positive", "L": "positive"})
 def two_body(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: float = np.pi / 4) -> SceneResult:
     """Two joined bodies pushed horizontally (thesis 7.2, 7.9-7.24).
 
@@ -71,9 +71,6 @@ def two_body(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: float = np.p
     """
     from planargeo.algorithms.articulated_inertia import articulated_inertia
 
-    m, rho, L = positive(m, "m"), positive(rho, "rho"), positive(L, "L")
-    phi = check_param("phi", phi)
-    params = dict(m=m, rho=rho, L=L, phi=phi)
     model = two_body_model(m, rho, L)
     q = np.array([0.0, phi])
     r = articulated_inertia(model, q)
@@ -84,5 +81,5 @@ def two_body(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: float = np.p
         "s": [plain(r.S[0][:, 0]), plain(r.S[1][:, 0])], "R": [plain(r.R[0]), plain(r.R[1])],
     }
     state = {"q": plain(q), "qd": [0.0, 0.0], "tau": [0.0, 0.0]}
-    return SceneResult("two-body", params, model, state, quantities,
+    return SceneResult(model=model, state=state, quantities=quantities,
                        extra={"articulated": r, "force_direction": np.array([1.0, 0.0])})
