@@ -15,7 +15,7 @@ from planargeo.draw.pictures._words import pair
 from planargeo.errors import InputError
 from planargeo.geometry._docs import entries
 
-__all__ = ["as_picture", "added", "bare_line", "inertia", "view_centre", "line_words", "ENTRIES",
+__all__ = ["as_picture", "added", "number", "bare_line", "inertia", "view_centre", "line_words", "ENTRIES",
            "documented"]
 
 
@@ -36,6 +36,18 @@ def added(draw, *args, **kw) -> dict:
     """Call the picture's method ``draw`` (``pic.line``, ``pic.point``...) and return the element it added."""
     draw(*args, **kw)
     return draw.__self__.elements[-1]
+
+
+def number(v, name: str, *, positive: bool = False) -> float:
+    """``v`` as a finite float (> 0 with ``positive``, else >= 0), or an InputError naming ``name``."""
+    try:
+        f = float(v)
+    except (TypeError, ValueError):
+        f = float("nan")
+    if not (math.isfinite(f) and (f > 0 if positive else f >= 0)):
+        kind = "positive" if positive else "non-negative"
+        raise InputError(f"{name} must be a {kind} finite number, got {v!r}")
+    return f
 
 
 def bare_line(pic: Picture, id: str, l, **kw) -> dict:

@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 
+from planargeo.draw._shared import number
 from planargeo.draw.style import MIN_TEXT_PX, get_ax
 from planargeo.errors import InputError
 
@@ -75,9 +76,9 @@ def fit_box(points, aspect: float, *, margin=None, keep=None, min_span=None) -> 
     >>> fit_box(folded, 1.0, margin=0.0)[:2], fit_box([[1e8, 0]], 1.0, margin=0, keep=folded)[:2]
     ((0.0, 1.0), (0.0, 1.0))
     """
-    aspect = _number(aspect, "aspect", positive=True)
-    margin = 0.25 if margin is None else _number(margin, "margin")
-    min_span = 0.0 if min_span is None else _number(min_span, "min_span")
+    aspect = number(aspect, "aspect", positive=True)
+    margin = 0.25 if margin is None else number(margin, "margin")
+    min_span = 0.0 if min_span is None else number(min_span, "min_span")
     try:
         P = np.asarray(points, float).reshape(-1, 2)
         K = np.zeros((0, 2)) if keep is None else np.asarray(keep, float).reshape(-1, 2)
@@ -102,18 +103,6 @@ def fit_box(points, aspect: float, *, margin=None, keep=None, min_span=None) -> 
         w = h / aspect
     return tuple(round(float(v), 12) + 0.0 for v in (c[0] - w / 2, c[0] + w / 2, c[1] - h / 2,
                                                       c[1] + h / 2))
-
-
-def _number(v, name: str, *, positive: bool = False) -> float:
-    """``v`` as a finite float (> 0 with ``positive``, else >= 0), or an InputError naming ``name``."""
-    try:
-        f = float(v)
-    except (TypeError, ValueError):
-        f = float("nan")
-    if not (math.isfinite(f) and (f > 0 if positive else f >= 0)):
-        kind = "positive" if positive else "non-negative"
-        raise InputError(f"{name} must be a {kind} finite number, got {v!r}")
-    return f
 
 
 def fit_view(points, *, ax=None, margin=None, aspect=None, keep=None, min_span=None):

@@ -22,7 +22,7 @@ import math
 
 import numpy as np
 
-from planargeo.draw._shared import ENTRIES, added, as_picture, view_centre
+from planargeo.draw._shared import ENTRIES, added, as_picture, number, view_centre
 from planargeo.draw.layout import fit_box, shape_points
 from planargeo.draw.picture import PX_PER_PT, Picture, _color as _role_color, _dash as _role_dash, plain_text
 from planargeo.draw.pictures.common import _align
@@ -65,17 +65,6 @@ def _xy(v, name: str) -> np.ndarray:
     if a.shape != (2,) or not np.all(np.isfinite(a)):
         raise InputError(f"{name} must be a point (x, y) of two finite numbers, got {v!r}")
     return a
-
-
-def _positive(v, name: str) -> float:
-    """``v`` as a positive finite float, or an InputError naming ``name``."""
-    try:
-        f = float(v)
-    except (TypeError, ValueError):
-        raise InputError(f"{name} must be a positive number, got {v!r}") from None
-    if not (math.isfinite(f) and f > 0):
-        raise InputError(f"{name} must be a positive finite number, got {v!r}")
-    return f
 
 
 def _text_part(x, y, text, dx=0.0, dy=0.0, ha="left", va="bottom") -> dict:
@@ -434,7 +423,7 @@ def link_polygon(p, q, width: float = 0.25):
     from shapely.geometry import LineString, Point as SPoint
 
     p, q = tuple(map(float, _xy(p, "p"))), tuple(map(float, _xy(q, "q")))
-    width = _positive(width, "width")
+    width = number(width, "width", positive=True)
     geom = SPoint(p) if p == q else LineString([p, q])
     return geom.buffer(width / 2, quad_segs=12)
 
@@ -596,7 +585,7 @@ def pin(pic: Picture, id: str, xy, *, radius: float = 0.06, z: int = 6, symbol: 
     True
     """
     c = _xy(xy, "xy")
-    r = _positive(radius, "radius")
+    r = number(radius, "radius", positive=True)
     return added(as_picture(pic).path, id, _circle(c, r), role="body", symbol=symbol, desc=desc, closed=True,
                  fill="white", color=DARK, width=1.0 * PX_PER_PT, z=z)
 
@@ -636,7 +625,7 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.8, angle: float = 0.0,
     [[[-0.5, 0.0], [0.5, 0.0]], [[-0.5, 0.0], [-0.6, -0.1]], [[0.5, 0.0], [0.4, -0.1]]]
     """
     c = _xy(xy, "xy")
-    width = _positive(width, "width")
+    width = number(width, "width", positive=True)
     if int(n) != n or n < 2:
         raise InputError(f"n must be an integer of at least 2, got {n!r}")
     angle = float(angle)
@@ -691,11 +680,12 @@ def slider(pic: Picture, id: str, xy, direction, *, size=(0.35, 0.2), track: flo
     L = math.hypot(*d)
     if L == 0.0:
         raise InputError("slider: direction must not be zero")
-    w, h = (_positive(v, "size") for v in size)
+    w, h = (number(v, "size", positive=True) for v in size)
     e = d / L
     nrm = np.array([-e[1], e[0]])
     ang = math.atan2(e[1], e[0])
-    ground(pic, f"{id}:track", c - nrm * h / 2, width=_positive(track, "track"), angle=ang)
+    ground(pic, f"{id}:track", c - nrm * h / 2, width=number(track, "track", positive=True),
+           angle=ang)
     corners = np.array([[-w / 2, -h / 2], [w / 2, -h / 2], [w / 2, h / 2], [-w / 2, h / 2]])
     xy_ = c + corners[:, :1] * e + corners[:, 1:] * nrm
     return added(pic.path, id, xy_, role="body", desc=desc, closed=True, fill="#dddddd", color=DARK,
@@ -747,7 +737,7 @@ def frame(pic: Picture, id: str, origin, *, angle: float = 0.0, length: float = 
     (0.0, 0.5, 0.0)
     """
     o = _xy(origin, "origin")
-    length = _positive(length, "length")
+    length = number(length, "length", positive=True)
     parts = []
     as_picture(pic)
     for k, lab in enumerate(labels):
@@ -792,7 +782,7 @@ def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: 
     (True, 0.1)
     """
     c = _xy(xy, "xy")
-    r = _positive(radius, "radius")
+    r = number(radius, "radius", positive=True)
     as_picture(pic).path(f"{id}:disc", _circle(c, r), role="body", symbol=symbol, desc=desc, closed=True,
                          fill="white", color="black", width=0.6 * PX_PER_PT, z=z)
     parts = []
@@ -993,7 +983,7 @@ def contact(pic: Picture, id: str, contact, pose, *, body_shape=None, size: floa
     from planargeo.mechanics.contacts import world_point
 
     as_picture(pic)
-    size = _positive(size, "size")
+    size = number(size, "size", positive=True)
     pose = np.asarray(pose, float)
     pa = np.asarray(world_point(pose, contact.a, contact.point_a), float)
     name = getattr(contact, "name", "") or id
