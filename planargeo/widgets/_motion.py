@@ -23,12 +23,8 @@ class _OverBudget(Exception):
 
 
 class Budget:
-    """The evaluations of the dynamics one update may spend, and the refusal when they run out.
-
-    Parameters
-    ----------
-    max_evals : int
-        Evaluations the update may spend (at least 1).
+    """The ``max_evals`` (at least 1) evaluations of the dynamics one update may spend, and the
+    refusal when they run out.
 
     Examples
     --------
@@ -74,14 +70,6 @@ class Budget:
 def refusal_on_picture(text: str) -> str | None:
     """The short form of a :meth:`Budget.refusal` for the picture, or None for another message.
 
-    Parameters
-    ----------
-    text : str
-
-    Returns
-    -------
-    str or None
-
     Examples
     --------
     >>> refusal_on_picture(str(Budget(10).refusal(30.0, 1.5)))
@@ -96,18 +84,8 @@ def refusal_on_picture(text: str) -> str | None:
 class Motion:
     """``y(t)`` of ``ẏ = rhs(t, y)`` from ``y(0) = y0``, integrated in chunks of ``chunk`` seconds.
 
-    Parameters
-    ----------
-    rhs : callable ``(t, y) -> ẏ``
-        The right-hand side (time-invariant systems: ``t`` is the time within a chunk).
-    y0 : array_like
-        The initial state.
-    chunk : float
-        Length of a chunk (s).
-    rtol, atol : float
-        DOP853 tolerances.
-    max_evals : int
-        Evaluations of ``rhs`` one call of :meth:`extend` (or :meth:`at`) may spend.
+    ``rhs`` of a time-invariant system (``t`` is the time within a chunk); ``rtol``, ``atol``: DOP853's
+    tolerances; ``max_evals``: evaluations of ``rhs`` one call of :meth:`extend` (or :meth:`at`) may spend.
 
     Examples
     --------
@@ -133,12 +111,8 @@ class Motion:
     def extend(self, t: float) -> None:
         """Compute the chunks up to time ``t`` (each kept as soon as it is done: Ctrl-C keeps them).
 
-        Raises
-        ------
-        SingularConfigurationError
-            The integrator stopped.
-        SizeLimitError
-            Reaching ``t`` needs more than :attr:`max_evals` evaluations in this call.
+        A SingularConfigurationError if the integrator stops, a SizeLimitError if reaching ``t``
+        needs more than :attr:`max_evals` evaluations in this call.
         """
         need = int(math.floor(t / self.chunk)) + 1
         budget = Budget(self.max_evals)
@@ -149,23 +123,11 @@ class Motion:
                 raise budget.refusal(t, self.reached) from None
 
     def work_ahead(self, t: float, seconds: float) -> bool:
-        """Spend about ``seconds`` of wall time computing the chunks up to time ``t``, then stop.
+        """Spend about ``seconds`` of wall time (one integrator step more at worst) computing the
+        chunks up to time ``t``; True while work is left.
 
         The same steps as :meth:`extend` (the same states, bit for bit); a failure is left for
         :meth:`extend` to report.
-
-        Parameters
-        ----------
-        t : float
-            The time to compute up to.
-        seconds : float
-            Wall seconds to spend at most (one step of the integrator more, at worst).
-
-        Returns
-        -------
-        bool
-            True while work up to ``t`` is left.
-
         """
         import time
 
@@ -229,16 +191,7 @@ class Motion:
             f"the motion could not be integrated past t = {self.reached:.4g} s: {why}")
 
     def at(self, t: float) -> np.ndarray:
-        """The state at time ``t >= 0`` (chunk start: exactly the stored state).
-
-        Parameters
-        ----------
-        t : float
-
-        Returns
-        -------
-        ndarray
-        """
+        """The state at time ``t >= 0`` (chunk start: exactly the stored state)."""
         t = float(t)
         k = int(math.floor(t / self.chunk))
         self.extend(t)

@@ -26,7 +26,6 @@ import ipywidgets as W
 from planargeo.draw.pictures._words import subscript
 from planargeo.draw.pictures.construction import construction_picture
 from planargeo.errors import InputError
-from planargeo.files import atomic_write
 from planargeo.scenes.construction import CONSTRUCTIONS, construct, parameters
 from planargeo.widgets._explorer import arrow_handle, explorer_data, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step
@@ -293,18 +292,10 @@ class ConstructionExplorer(Explorer):
         OutputError
             The file cannot be written.
         """
-        if path is None:
-            d = self.export_dir or Path.cwd()
-            path = Path(d) / f"planargeo-construction-{self.construction}-layers.svg"
-        try:
-            path = Path(path)
-        except TypeError:
-            raise InputError(f"path must be a str or os.PathLike naming a file, got {path!r}") from None
-        c = self.state["c"]
-        pic = self.scene_picture(self.state, None, all_steps=True, caption=c.title).to_dict()
-        written = atomic_write(path, layered_svg(pic, self.step_ids())).resolve()
-        self.last_export = written
-        return written
+        name = f"planargeo-construction-{self.construction}-layers.svg"
+        path = self._export_path(Path(self.export_dir or Path.cwd()) / name if path is None else path, "svg")
+        pic = self.scene_picture(self.state, None, all_steps=True, caption=self.state["c"].title).to_dict()
+        return self._write(path, layered_svg(pic, self.step_ids()))
 
     def step_ids(self) -> list[str]:
         """The SVG group ids of the steps of the construction shown, in order (``step-K-name``).
@@ -319,19 +310,8 @@ class ConstructionExplorer(Explorer):
 
 
 def layered_svg(pic: dict, step_ids: list[str]) -> bytes:
-    """The picture ``pic`` as SVG, every step's elements in one group ``<g id="step-K-name">``.
-
-    Parameters
-    ----------
-    pic : dict
-        A construction's picture, whose elements carry their ``step`` (1-based).
-    step_ids : list of str
-        The group id of each step.
-
-    Returns
-    -------
-    bytes
-    """
+    """The picture ``pic`` (its elements carry their 1-based ``step``) as SVG, every step's elements in
+    one group ``<g id="step-K-name">`` of ``step_ids``."""
     import xml.etree.ElementTree as ET
 
     from planargeo.draw.render import figure

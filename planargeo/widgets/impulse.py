@@ -37,22 +37,10 @@ T_MAX = 60.0
 
 
 def pole_text(tw, pole, rest: str = "at rest") -> str:
-    """Readout text of the pole of a twist ``[vx, vy, ω]``: ``"(x, y) m"``, ``"at infinity (direction …)"`` or ``rest``.
+    """Readout text of the ``pole`` (as the scene gives it) of a twist ``tw = [vx, vy, ω]``: ``"(x, y) m"``,
+    ``"at infinity (direction …)"`` or ``rest`` (no motion at all).
 
     A translation (``pole`` None) has the ideal point ``[vx, vy, 0]`` for its pole (thesis 4.10).
-
-    Parameters
-    ----------
-    tw : array_like (3,)
-        The twist.
-    pole : sequence of 2 float or None
-        Its pole as the scene gives it.
-    rest : str
-        Text for no motion at all.
-
-    Returns
-    -------
-    str
 
     Examples
     --------

@@ -43,15 +43,6 @@ _WORDS = explorer_data("slider-crank")["explain"]
 def wrap_message(text: str, width: int = 38) -> str:
     """``text`` broken into lines of at most ``width`` characters (a refusal inside the picture).
 
-    Parameters
-    ----------
-    text : str
-    width : int
-
-    Returns
-    -------
-    str
-
     Examples
     --------
     >>> print(wrap_message("singular configuration: the rod lies along the horizontal"))
