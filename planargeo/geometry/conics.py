@@ -15,7 +15,7 @@ from planargeo._validate import (as_array, as_mat3, as_vec3, as_xy, batch_shape,
                                  check_symmetric, check_tolerance, overflow_checked, rescaled)
 from planargeo.errors import DegenerateGeometryError, InputError, ShapeError
 from planargeo.geometry._docs import entries
-from planargeo.geometry.projective import T_STD, _cross, _first_index, _fit, _refuse_zero
+from planargeo.geometry.projective import T_STD, _cross, _first_index, _fit, _refuse_zero, _safe_div
 
 __all__ = [
     "polar", "pole", "conic_residual", "is_on_conic", "ConicType", "classify", "centre",
@@ -70,20 +70,15 @@ def _quad(u, M, v):
     return np.einsum("...i,...ij,...j->...", u, M, v)
 
 
-def _cond(M) -> np.ndarray:
-    s = np.linalg.svd(M, compute_uv=False)
-    out = np.full(s.shape[:-1], np.inf)
-    np.divide(s[..., 0], s[..., -1], out=out, where=s[..., -1] > 0)
-    return out
-
-
 def _fitq(x, core: int = 1) -> np.ndarray:
     """:func:`~planargeo.geometry.projective._fit` for quadratic forms: entries within ``(1e-90, 1e90)``."""
     return _fit(x, core, 1e-90, 1e90)
 
 
 def _check_invertible(M, name: str, what: str, rtol: float) -> None:
-    cond = _cond(_fitq(M, 2))
+    s = np.linalg.svd(_fitq(M, 2), compute_uv=False)
+    cond = np.full(s.shape[:-1], np.inf)
+    np.divide(s[..., 0], s[..., -1], out=cond, where=s[..., -1] > 0)
     with np.errstate(invalid="ignore"):        # inf · 0: singular whatever the tolerance
         bad = ~(cond * check_tolerance(rtol) < 1.0)
     if np.any(bad):
@@ -104,24 +99,16 @@ def _unit(v):
     return np.where(np.isnan(n)[..., None] | (n != 0)[..., None], out, v)
 
 
-def _divided(x, den):
-    """``x / den`` (per vector) where ``den != 0``, else NaN; inf beyond range."""
-    out = np.full(x.shape, np.nan)
-    with np.errstate(over="ignore"):
-        np.divide(x, den[..., None], out=out, where=(den != 0)[..., None])
-    return out + 0.0
-
-
 def _npoint(p):
     """Normalise points (w = 1, or unit length if ideal), letting NaN and zero through silently."""
     p = _unit(p)
-    return _divided(p, np.where(p[..., 2] != 0, p[..., 2], np.linalg.norm(p, axis=-1)))
+    return _safe_div(p, np.where(p[..., 2] != 0, p[..., 2], np.linalg.norm(p, axis=-1))[..., None]) + 0.0
 
 
 def _nline(l):
     """Normalise lines (|f| = 1, or tz = ±1 for the line at infinity), letting NaN through."""
     f = np.hypot(l[..., 0], l[..., 1])
-    return _divided(l, np.where(f != 0, f, np.abs(l[..., 2])))
+    return _safe_div(l, np.where(f != 0, f, np.abs(l[..., 2]))[..., None]) + 0.0
 
 
 # --------------------------------------------------------------------------- polarity
@@ -832,13 +819,7 @@ def decompose_point_special(C, P, Q1, Q2, Q3) -> np.ndarray:
     >>> np.allclose(u[0] * B[0] + u[1] * B[1] + u[2] * B[2], [0.3, 0.1, 1.0])
     True
     """
-    C, P = _conic(C), as_vec3(P, "P")
-    Q, e = _scaled_base(Q1, Q2, Q3)
-    batch_shape(C=(C, 2), P=(P, 1), Q1=(Q[0], 1), Q2=(Q[1], 1), Q3=(Q[2], 1))
-    (C, _), (P, eP) = _pow2(C, 2), _pow2(P)               # u is of degree 0 in C, 1 in P, -1 in its own Qi
-    with np.errstate(under="ignore"):
-        CP = _mv(C, P)
-    return _special(CP, C, Q, "decompose_point_special", eP[..., None] - e)
+    return _special(C, P, "P", (Q1, Q2, Q3), "decompose_point_special")
 
 
 @_shared
@@ -857,16 +838,20 @@ def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
     >>> np.allclose(decompose_line_special(C, C @ P, *B), decompose_point_special(C, P, *B))
     True
     """
-    C, L = _conic(C), as_vec3(L, "L")
-    Q, e = _scaled_base(Q1, Q2, Q3)
-    batch_shape(C=(C, 2), L=(L, 1), Q1=(Q[0], 1), Q2=(Q[1], 1), Q3=(Q[2], 1))
-    (C, eC), (L, eL) = _pow2(C, 2), _pow2(L)              # u is of degree -1 in C, 1 in L, -1 in its own Qi
-    return _special(L, C, Q, "decompose_line_special", (eL - eC)[..., None] - e)
+    return _special(C, L, "L", (Q1, Q2, Q3), "decompose_line_special")
 
 
-def _special(x, C, Q, what: str, e) -> np.ndarray:
-    """``[Q1·x / Q1CQ1, Q3·x / Q3CQ2, Q2·x / Q2CQ3] · 2^e`` (5.44-5.46) of a special base."""
-    Q1, Q2, Q3 = Q
+def _special(C, x, name: str, Q, what: str) -> np.ndarray:
+    """``[Q1·y / Q1CQ1, Q3·y / Q3CQ2, Q2·y / Q2CQ3]`` (5.44-5.46) on a special base ``Q``, where
+    ``y = C x`` for a point ``x`` (``name`` "P") and ``y = x`` for a line (``name`` "L")."""
+    C, x = _conic(C), as_vec3(x, name)
+    (Q1, Q2, Q3), e = _scaled_base(*Q)
+    batch_shape(C=(C, 2), **{name: (x, 1)}, Q1=(Q1, 1), Q2=(Q2, 1), Q3=(Q3, 1))
+    (C, eC), (x, ex) = _pow2(C, 2), _pow2(x)      # u is of degree 1 in x, -1 in its own Qi, 0 (P) or -1 (L) in C
+    if name == "P":
+        with np.errstate(under="ignore"):
+            x = _mv(C, x)
+    e = (ex if name == "P" else ex - eC)[..., None] - e
     with np.errstate(under="ignore"):
         n1, n2, n3 = (np.einsum("...i,...i->...", q, x) for q in (Q1, Q3, Q2))
     with np.errstate(all="ignore"):
