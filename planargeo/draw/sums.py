@@ -1,10 +1,6 @@
 """Screw sums of chapter 4 drawn into a :class:`~planargeo.draw.picture.Picture` (thesis 4.11–4.56).
 
-:func:`twist_sum` and :func:`wrench_sum` (Figs 4.1–4.6), one step of the velocity and
-acceleration kinematics along a chain (:func:`velocity_step`, :func:`acceleration_step`,
-Figs 4.7–4.8) and the Newton–Euler balance of a body (:func:`newton_euler`, Fig. 4.9).  Each
-adds poles (ideal ones as edge arrows), lines of action with force arrows to scale and lever
-lines, and returns its elements by name (and the computed arrays under ``"values"``).
+Figs 4.1–4.9; each function returns its elements by name (and the computed arrays under ``"values"``).
 """
 from __future__ import annotations
 
@@ -79,19 +75,15 @@ def _pole_words(p, unit: str = "rad/s", speed: str = "m/s") -> str:
     return f"ω = {num(w)} {unit}, pole at {pair((-p[1] / w, p[0] / w))} m"
 
 
-def _gap(w: float, glyph_scale: float = 6.0) -> float:
-    """Pixels from a pole to its label: clear of its rotation glyph (which grows with |w|)."""
-    return 0.75 * min(max(glyph_scale * abs(w), 4.0), 16.0) * PX_PER_PT + 5.0
-
-
 def _pole(pic: Picture, id: str, p, *, role: str, label: str, desc: str, toward=None,
           emphasis: bool = False, glyph_scale: float = 6.0) -> dict:
     """A pole (:meth:`Picture.point`); a sum's as a larger diamond; its label put ``toward`` first."""
     kw = dict(shape="D", size=_SUM_POINT_PX) if emphasis else {}
     el = added(pic.point, id, p, role=role, symbol=_symbol(label), desc=desc, label=plain_text(label),
                glyph_scale=glyph_scale, **kw)
-    if toward is not None and not bool(is_ideal(p)):
-        label_toward(el, toward, _gap(p[2], glyph_scale) + (3.0 if emphasis else 0.0))
+    if toward is not None and not bool(is_ideal(p)):      # clear of the glyph, which grows with |ω|
+        gap = 0.75 * min(max(glyph_scale * abs(p[2]), 4.0), 16.0) * PX_PER_PT + 5.0
+        label_toward(el, toward, gap + (3.0 if emphasis else 0.0))
     return el
 
 
@@ -237,10 +229,8 @@ def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), le
     if lever:
         beta = (f"β = ω₂/(ω₁ + ω₂) = {num(v2[2] / v3[2])}" if v3[2] != 0.0
                 else "β = ∞: the sum is a translation")
-        el = _lever(pic, prefix + "lever", v1, v2,
-                    desc=f"lever line Q₁Q₂ through both poles (4.11–4.13): the sum's pole lies on it, {beta}")
-        if el is not None:
-            out["lever"] = el
+        out["lever"] = _lever(pic, prefix + "lever", v1, v2, desc="lever line Q₁Q₂ through both poles "
+                              f"(4.11–4.13): the sum's pole lies on it, {beta}")
     auto = _label_sides(pic, v1, v2)
     toward = [t if t is not None else a for t, a in zip(toward, auto)]
     for k, (name, v, what) in enumerate((("v1", v1, "twist {} (4.10)"),
@@ -249,7 +239,7 @@ def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), le
         out[name] = _pole(pic, prefix + name, v, role=role, label=labels[k], toward=toward[k],
                           glyph_scale=glyph_scale, emphasis=name == "v3",
                           desc=f"{what.format(_symbol(labels[k]))}: {_pole_words(v)}")
-    return out
+    return {k: v for k, v in out.items() if v is not None}
 
 
 def _label_sides(pic: Picture, p, q):
@@ -330,12 +320,10 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
     out, couples = {}, []
     for k, (name, f, what, eq) in enumerate((("f1", f1, "wrench", "4.27"), ("f2", f2, "wrench", "4.27"),
                                              ("f3", f3, "sum", "4.33–4.46"))):
-        el = _wrench(pic, prefix + name, f, role=role, label=labels[k], scale=scale, anchor=anchors[k],
-                     emphasis=name == "f3", toward=toward[k], couples=couples,
-                     corner="left" if name == "f2" else "right",
-                     desc=f"{what} {syms[k]} on its line of action ({eq}): {force_words(f)}")
-        if el is not None:
-            out[name] = el
+        out[name] = _wrench(pic, prefix + name, f, role=role, label=labels[k], scale=scale,
+                            anchor=anchors[k], emphasis=name == "f3", toward=toward[k], couples=couples,
+                            corner="left" if name == "f2" else "right",
+                            desc=f"{what} {syms[k]} on its line of action ({eq}): {force_words(f)}")
     if finite_meet:
         out["meet"] = added(pic.marks, prefix + "meet", [Pxy], role="construct", symbol="P", shape="o",
                             size=3.5 * PX_PER_PT, z=6,
@@ -347,7 +335,7 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
                                          role="construct", dash=_dash("construct"), z=2, symbol="parallelogram",
                                          width=LINEWIDTHS["construct"] * PX_PER_PT,
                                          desc="force parallelogram (4.33): the sum's arrow is its diagonal from P")
-    return out
+    return {k: v for k, v in out.items() if v is not None}
 
 
 # --------------------------------------------------------------------------- chains, one body
@@ -399,9 +387,7 @@ def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot{q}_i$",
     v_prev = as_vec3(v_prev, "v_prev")
     u = as_vec3(s, "s") * as_scalar(qd, "qd")
     art = twist_sum(pic, v_prev, u, labels=labels, toward=toward, prefix=prefix)
-    out = {"v_prev": art["v1"], "joint": art["v2"], "v": art["v3"]}
-    if "lever" in art:
-        out["lever"] = art["lever"]
+    out = {"v_prev": art["v1"], "joint": art["v2"], "v": art["v3"], "lever": art.get("lever")}
     out["values"] = {"joint": u, "v": v_prev + u}
     if dims and v_prev[2] != 0.0 and u[2] != 0.0 and np.any(np.cross(v_prev, u)):
         a = np.array([-v_prev[1] / v_prev[2], v_prev[0] / v_prev[2]])
@@ -410,7 +396,7 @@ def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot{q}_i$",
                              desc=f"distance k between the poles of {_symbol(labels[0])} and the joint "
                                   f"(4.48): {num(math.hypot(*(b - a)))} m")
         out["k"]["symbol"] = "k"
-    return out
+    return {k: v for k, v in out.items() if v is not None}
 
 
 @documented
@@ -467,16 +453,12 @@ def acceleration_step(pic, a_prev, v_prev, s, qd, qdd, *,
     a = a_prev + combo
     syms = [_symbol(x) for x in labels]
     out = {}
-    el = _lever(pic, prefix + "lever", a_prev, combo,
-                desc=f"lever line of {syms[0]} and {syms[3]} (4.52): {syms[4]} lies on it")
-    if el is not None:
-        out["lever"] = el
-    el = _lever(pic, prefix + "joint_lever", rel, bias, width=0.6 * PX_PER_PT,
-                desc=f"line of {syms[1]} and {syms[2]} (4.54): {syms[3]} lies on it, "
-                     f"|κ|/q̈ = {num(math.hypot(bias[0], bias[1]) / abs(qdd)) if qdd else '∞'} m "
-                     f"from the joint")
-    if el is not None:
-        out["joint_lever"] = el
+    out["lever"] = _lever(pic, prefix + "lever", a_prev, combo,
+                          desc=f"lever line of {syms[0]} and {syms[3]} (4.52): {syms[4]} lies on it")
+    reach = num(math.hypot(bias[0], bias[1]) / abs(qdd)) if qdd else "∞"
+    out["joint_lever"] = _lever(pic, prefix + "joint_lever", rel, bias, width=0.6 * PX_PER_PT,
+                                desc=f"line of {syms[1]} and {syms[2]} (4.54): {syms[3]} lies on it, "
+                                     f"|κ|/q̈ = {reach} m from the joint")
     words = (("a_prev", a_prev, "acceleration of the previous body", "4.50"),
              ("joint", rel, "joint acceleration", "4.52"),
              ("bias", bias, "bias acceleration κ = v × s q̇", "4.53"),
@@ -487,7 +469,7 @@ def acceleration_step(pic, a_prev, v_prev, s, qd, qdd, *,
                           emphasis=name == "a",
                           desc=f"{what} {syms[k]} ({eq}): {_pole_words(p, 'rad/s²', 'm/s²')}")
     out["values"] = {"a_prev": a_prev, "joint": rel, "bias": bias, "joint_total": combo, "a": a}
-    return out
+    return {k: v for k, v in out.items() if v is not None}
 
 
 @documented
@@ -568,10 +550,8 @@ def newton_euler(pic, I, a, v, *, scale=None,
               ("p", p, "momentum", "centripetal force p = v ×* I v through the centre of mass", "4.56"),
               ("f_net", fnet, "wrench", "net force f = I a + p", "4.55"))
     for k, (name, f, role, what, eq) in enumerate(forces):
-        el = _wrench(pic, prefix + name, f, role=role, label=labels[k + 2], scale=scale,
-                     anchor=along(f, positions[k]), emphasis=name == "f_net", toward=toward[k + 2],
-                     desc=f"{what} ({eq}): {force_words(f)}")
-        if el is not None:
-            out[name] = el
+        out[name] = _wrench(pic, prefix + name, f, role=role, label=labels[k + 2], scale=scale,
+                            anchor=along(f, positions[k]), emphasis=name == "f_net",
+                            toward=toward[k + 2], desc=f"{what} ({eq}): {force_words(f)}")
     out["values"] = {"Ia": Ia, "p": p, "f_net": fnet}
-    return out
+    return {k: v for k, v in out.items() if v is not None}
