@@ -129,17 +129,14 @@ class ChainBodies:
     #: ``(control, offset, widest)``: it spans up to ``n + offset`` (while ``n`` is set, ``widest``)
     spans: tuple[str, int, int] = ("", 0, 0)
 
-    def __init__(self, **kw):
-        self._models: dict = {}
-        super().__init__(**kw)
-
     def __repr__(self) -> str:
         return f"{type(self).__name__}(...)"
 
     def _model(self, n, rho, g=0.0):
         from planargeo.scenes.articulated import bent_chain_model
 
-        return cached(self._models, (n, rho, g), lambda: bent_chain_model(n, rho, 1.0, 1.0, g))
+        return cached(self._cache("_models"), (n, rho, g),
+                      lambda: bent_chain_model(n, rho, 1.0, 1.0, g))
 
     def _span(self, n: int, *, widest: bool = False) -> None:
         """The spanned slider up to ``n + offset`` (or its widest range), its value kept."""

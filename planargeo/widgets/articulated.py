@@ -116,10 +116,6 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
 
     spans = ("outboard bodies", -1, NMAX - 1)
 
-    def __init__(self, **kw):
-        self._motions: dict = {}     # the swing of each configuration (Motion of (q, q̇, W))
-        super().__init__(**kw)
-
     # ------------------------------------------------------------------ controls
     def make_controls(self):
         return {
@@ -228,7 +224,7 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
             return np.concatenate([qd, qdd, [c * float(qd @ qd)]])
 
         y0 = np.concatenate([self._q0(v), np.zeros(n), [0.0]])
-        return cached(self._motions, key, lambda: Motion(rhs, y0, chunk=1.0))
+        return cached(self._cache("_motions"), key, lambda: Motion(rhs, y0, chunk=1.0))
 
     def compute(self, values, changed):
         from planargeo.simulate.integrate import energy

@@ -533,6 +533,10 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         except Exception as exc:  # noqa: BLE001
             self._message = self._message or f"drawing failed ({type(exc).__name__}): {exc}"
 
+    def _cache(self, name: str) -> dict:
+        """The explorer's own cache ``name``, a dict made at its first use (see :func:`cached`)."""
+        return self.__dict__.setdefault(name, {})
+
     def guarded(self, callback: Callable) -> Callable:
         """``callback`` for a button or the page: an exception becomes a message, never escapes.
 

@@ -218,7 +218,6 @@ class ChainExplorer(Described, Explorer):
         self.play_fps = self.fps             # Play at 1×: a frame of 1 / fps s per tick
         self._model_key = None
         self._model = None
-        self._motions: dict = {}             # initial state -> its Motion (kept: Play, the time slider)
         super().__init__(**kw)
 
     @property
@@ -320,7 +319,7 @@ class ChainExplorer(Described, Explorer):
         def rhs(_t, y):
             return np.concatenate([y[n:], forward_dynamics(model, y[:n], y[n:], tau)])
 
-        return cached(self._motions, key,
+        return cached(self._cache("_motions"), key,
                       lambda: Motion(rhs, np.concatenate([q0, qd0]), CHUNK, rtol=1e-8, atol=1e-10))
 
     def play_ahead(self, values, seconds: float) -> bool:
@@ -352,7 +351,7 @@ class ChainExplorer(Described, Explorer):
         st = {"model": model, "w": w, "t": t, "tau": tau, "q0": q0}
         st["ke"], st["pe"] = (float(e) for e in energy(model, data=w))
         # the starting energy, kept per starting state: a frame at t > 0 costs one kinematics pass
-        e0s, key = self.__dict__.setdefault("_e0s", {}), (self._model_key, tuple(q0), tuple(qd0))
+        e0s, key = self._cache("_e0s"), (self._model_key, tuple(q0), tuple(qd0))
         if t == 0.0:
             e0s.pop(key, None)
         st["e0"] = cached(e0s, key, lambda: st["ke"] + st["pe"] if t == 0.0

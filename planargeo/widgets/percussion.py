@@ -88,10 +88,6 @@ class PercussionExplorer(Described, Explorer):
     limits = (-0.9, 1.6, -0.9, 0.9)
     display_controls = ("angular accel. α",)
 
-    def __init__(self, **kw):
-        self._inertias: dict = {}   # shape key -> (shape, unit-density Inertia)
-        super().__init__(**kw)
-
     def make_controls(self):
         return {
             "pole x": Step(-1.5, 2.0, 0.01, 0.0, "pole of a: x (m)"),
@@ -178,7 +174,7 @@ class PercussionExplorer(Described, Explorer):
             shape = parse_polygon(v["polygon"]) if key[1] is not None else PRESETS[key[0]]
             return shape, Inertia.from_polygon(shape)
 
-        return cached(self._inertias, key, integrate)
+        return cached(self._cache("_inertias"), key, integrate)
 
     def compute(self, values, changed):
         shape, I0 = self._shape_inertia(values)

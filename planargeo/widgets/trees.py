@@ -72,13 +72,6 @@ class TreeExplorer(Described, SceneTime, Explorer):
     display_controls = ("velocity poles", "acceleration poles", "reaction forces")
     initial, t_end = INITIAL, T_END
 
-    def __init__(self, **kw):
-        self._geometry: dict = {}   # closed -> (contacts, length, dof)
-        self._models: dict = {}     # (closed, mass, g) -> Model
-        self._runs: dict = {}       # initial controls -> {"ck": checkpoints, "drift": ..., "events": ...}
-        self._poses: dict = {}      # (closed, body 1 angle, body 2 angle) -> (q at t = 0, unit speeds)
-        super().__init__(**kw)
-
     def make_controls(self):
         return {
             "speed": Step(-3, 3, 0.05, DEFAULT_SPEED, "speed (rad/s)"),
@@ -111,12 +104,12 @@ class TreeExplorer(Described, SceneTime, Explorer):
         tuple
             ``(contacts, length, dof)``.
         """
-        if closed not in self._geometry:
+        def find():
             res = scenes.get("constrained-tree" if closed else "tree")(speed=1.0)
             q = np.array(res.state["q"], dtype=float)
-            self._geometry[closed] = (tuple(res.model.contacts), float(res.params["length"]),
-                                      tree_dof(res.model, q))
-        return self._geometry[closed]
+            return tuple(res.model.contacts), float(res.params["length"]), tree_dof(res.model, q)
+
+        return cached(self._cache("_geometry"), closed, find)
 
     def model_for(self, closed: bool, mass: float, g: float):
         """The nine-link model (with the pins when ``closed``), kept per (mass, g).
@@ -135,7 +128,7 @@ class TreeExplorer(Described, SceneTime, Explorer):
             contacts, L, _dof = self.geometry(closed)
             return tree_model(mass, L, g, contacts)
 
-        return cached(self._models, (closed, mass, g), build)
+        return cached(self._cache("_models"), (closed, mass, g), build)
 
     # ---------------------------------------------------------------- handles
     def handles(self):
@@ -199,16 +192,17 @@ class TreeExplorer(Described, SceneTime, Explorer):
         _c, L, dof = self.geometry(closed)
         a1, a2, speed = float(values["body 1 angle (deg)"]), float(values["body 2 angle (deg)"]), float(values["speed"])
         pose_key = (closed, a1, a2)
-        pose = self._poses.get(pose_key)
+        poses, runs = self._cache("_poses"), self._cache("_runs")   # (q(0), speeds); checkpoints
+        pose = poses.get(pose_key)
         if pose is None:
             pose = tree_pose(model, math.radians(a1), 1.0, angle2=math.radians(a2))
         key = (closed, float(values["mass"]), float(values["gravity"]), speed, a1, a2)
-        run = self._runs.get(key)
+        run = runs.get(key)
         if run is None:
             run = {"ck": [(pose[0], speed * pose[1])], "drift": [0.0], "events": []}
         t = time_value(values["t (s)"], T_END)
         # kept before the integration: the checkpoints of a refused time stay for the next ask
-        keep_run(self._runs, key, run)
+        keep_run(runs, key, run)
         q, qd, drift, events = self._run_state(model, run, t)
         sol = tree_solve(model, q, qd)                               # 9.5 closed, 9.39-9.43 open
         E = float(sum(energy(model, data=sol.data)))
@@ -224,8 +218,8 @@ class TreeExplorer(Described, SceneTime, Explorer):
             st["F"] = sol.F.reshape(-1, 3)
             st["cond"] = float(sol.cond)
         # the state is good: keep its pose and run (the last two runs)
-        cached(self._poses, pose_key, lambda: pose)
-        keep_run(self._runs, key, run)
+        cached(poses, pose_key, lambda: pose)
+        keep_run(runs, key, run)
         return st
 
     def scene_picture(self, state, view=None):
