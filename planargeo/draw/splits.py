@@ -1,11 +1,8 @@
 """The T/U decompositions of chapter 6 drawn into a :class:`~planargeo.draw.picture.Picture`.
 
-A joint's motion space ``s`` and reaction space ``R``, completed by an inertia ``A``, split
-forces and accelerations (thesis 6.2–6.3, 6.36–6.48): :func:`decomposition` draws the spaces
-(Figs 6.1, 6.2), :func:`twist_split` and :func:`wrench_split` an acceleration ``a = sψ + Uγ``
-and a force ``f = TQ + Rμ`` with their parts (Figs 6.3, 6.4), :func:`projective_step` the
-joint acceleration across one joint (Fig. 6.5); :func:`twist_parts` and :func:`wrench_parts`
-compute the splits alone.  Each returns its elements by name and the arrays under ``"values"``.
+A joint's spaces ``s``, ``R`` and an inertia ``A`` split forces and accelerations (thesis
+6.2–6.3, 6.36–6.48, Figs 6.1–6.5); each function returns its elements by name and the arrays
+under ``"values"``.
 """
 from __future__ import annotations
 
@@ -122,16 +119,6 @@ def _point(pic: Picture, id: str, p, text, *, role: str, symbol: str, desc: str,
     el = added(pic.point, id, p, role=role, symbol=symbol, desc=desc, label=text or "", glyph=glyph)
     _aim(el, aims, key)
     return el
-
-
-def _parts_arg(parts) -> tuple[int, ...]:
-    try:
-        show = tuple(int(p) for p in parts)
-    except (TypeError, ValueError):
-        show = ()
-    if not show or any(p not in (1, 2) for p in show):
-        raise InputError(f"parts must be a non-empty selection of 1 and 2, got {parts!r}")
-    return show
 
 
 # --------------------------------------------------------------------------- decomposition
@@ -307,18 +294,15 @@ _SPLITS = {
                 "f2": "the reaction part of f, f₂ = Rμ, μ = Uᵀf, through the joint (6.38): "})}
 
 
-def _arrow_scale(f, scale, arrow_length) -> float:
-    """Data units per newton: ``arrow_length / |F|`` when a fixed arrow length is asked for."""
-    if arrow_length is not None:
-        F = math.hypot(float(f[0]), float(f[1]))
-        return 0.0 if F == 0.0 else float(arrow_length) / F
-    return 0.0 if scale is None else float(scale)
-
-
 def _split(kind, pic, s, R, A, x, *, parts, names, aims, anchors, scale, arrow_length, show_T, prefix):
     """Split ``x`` (:data:`_SPLITS` ``[kind]``); draw the axis ``T`` and the chosen parts ``(a_k, f_k)``."""
     as_picture(pic)
-    show = _parts_arg(parts)
+    try:
+        show = tuple(int(p) for p in parts)
+    except (TypeError, ValueError):
+        show = ()
+    if not show or any(p not in (1, 2) for p in show):
+        raise InputError(f"parts must be a non-empty selection of 1 and 2, got {parts!r}")
     compute, default, descs = _SPLITS[kind]
     vals = compute(s, R, A, x)
     names = {**default, **(names or {})}
@@ -326,20 +310,21 @@ def _split(kind, pic, s, R, A, x, *, parts, names, aims, anchors, scale, arrow_l
     T = vals["T"]
     aims, anchors = dict(aims or {}), dict(anchors or {})
     if show_T:
-        for j in range(T.shape[1]):
-            n = "T" if T.shape[1] == 1 else f"T{j + 1}"
-            out[n] = _line(pic, prefix + n, T[:, j], names.get(n, _tex("T", T.shape[1], j)),
-                           role="construct", symbol=_tex("T", T.shape[1], j),
-                           desc=_T_WORDS + line_words(T[:, j]),
-                           anchor=anchors.get(n), side=-1.0, aims=aims, key=n)
+        for j, n in enumerate(_keys("T", T.shape[1])):
+            sym = _tex("T", T.shape[1], j)
+            out[n] = _line(pic, prefix + n, T[:, j], names.get(n, sym), role="construct", symbol=sym,
+                           desc=_T_WORDS + line_words(T[:, j]), anchor=anchors.get(n), side=-1.0,
+                           aims=aims, key=n)
     for k in show:
         a, f = vals[f"a{k}"], vals[f"f{k}"]
         ka, kf = f"a{k}", f"f{k}"
         out[ka] = _point(pic, prefix + ka, a, names.get(ka), role="accel", symbol=f"$a_{k}$",
                          desc=descs[ka] + _accel_words(a), glyph=True, aims=aims, key=ka)
-        if math.hypot(float(f[0]), float(f[1])) > 0.0:
+        F = math.hypot(float(f[0]), float(f[1]))
+        if F > 0.0:                             # data units per newton, or a fixed arrow length
+            sc = float(arrow_length) / F if arrow_length is not None else float(scale or 0.0)
             at = anchors.get(kf)
-            _force_arrow(pic, prefix + kf, f, scale=_arrow_scale(f, scale, arrow_length),
+            _force_arrow(pic, prefix + kf, f, scale=sc,
                          anchor=view_centre(pic) if at is None else at, role="wrench",
                          symbol=f"$f_{k}$", label=plain_text(names.get(kf) or ""),
                          desc=descs[kf] + _wrench_words(f))
