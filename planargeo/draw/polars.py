@@ -1,9 +1,7 @@
 """Pole and polar constructions on a :class:`~planargeo.draw.picture.Picture` (thesis 5.2, 5.4, 5.5).
 
-The polar of an exterior point from its tangents (:func:`polar_exterior`, 5.36, Fig. 5.2) and
-of an interior point from two chords (:func:`polar_interior`, Theorem 12, Fig. 5.3), the axis
-of percussion ``f = I a`` (:func:`percussion`, 5.64–5.68, Fig. 5.6) and powerless forces and
-accelerations (:func:`power`, 5.69–5.74, Fig. 5.7).  Each returns its elements by name.
+Polars (Figs 5.2, 5.3), the axis of percussion (Fig. 5.6) and power (Fig. 5.7); each function
+returns its elements by name.
 """
 from __future__ import annotations
 
