@@ -144,7 +144,8 @@ def chain_picture(w, *, overlays: dict, view, split: dict | None = None, focus=N
             desc = f"{meaning} ({eq}): {_value(kind, arr[i], unit)}"
             faded = focus is not None and focus != (per, i)
             eid = f"{key}{i + 1}"
-            kw = dict(role=role, color=color, symbol=symbol, desc=desc, label="" if faded else None)
+            kw = dict(role=role, color=color, symbol=symbol, desc=desc, label="" if faded else None,
+                      opacity=FADED if faded else 1.0)
             if kind == "point":
                 pic.point(eid, arr[i], glyph=key in ("v", "a"),
                           glyph_scale=4.0 if key == "v" else 1.0, **kw)
@@ -153,8 +154,6 @@ def chain_picture(w, *, overlays: dict, view, split: dict | None = None, focus=N
                          dash=[1.5, 2.5] if key == "TQ" else None, **kw)
             else:
                 pic.conic(eid, arr[i], **kw)
-            if faded:
-                pic.elements[-1]["opacity"] = FADED
     if time is not None:
         x1, y0 = pic.box[1], pic.box[2]
         pic.text("time", (x1, y0), f"t = {time:.2f} s", ha="right", va="bottom", dx=-6.0, dy=4.0,

@@ -37,6 +37,7 @@ Examples
 from __future__ import annotations
 
 import math
+from operator import itemgetter
 from typing import Any
 
 import numpy as np
@@ -227,20 +228,13 @@ _SPOTS = [(float(c), float(s), _ALIGN_X[ha], _ALIGN_Y[va])
           for (c, s), ha, va in zip(_SPOT_DIR, _SPOT_HA, _SPOT_VA)]
 
 
-def _z_of(el: dict):
-    return el["z"]
-
-
-def _first(t: tuple):
-    return t[0]
-
-
 #: Docstring entries of the element methods (and of :mod:`planargeo.draw._shared`), written once
 _ENTRIES = {"id": "id : str\n    Stable name of the element.",
             "role": "role : str\n    Style role (:mod:`planargeo.draw.style`).",
             "symbol": "symbol, desc : str\n    Thesis symbol and a one-line description.",
             "color": "color : str, optional\n    Colour instead of the role's.",
-            "z": "z : int\n    Drawing order."}
+            "z": "z : int\n    Drawing order.",
+            "opacity": "opacity : float\n    Opacity of the whole element (faded: below 1)."}
 _documented = entries(_ENTRIES)
 
 #: element keys left out of the data when they hold these values
@@ -386,7 +380,8 @@ class Picture:
     @_documented
     def point(self, id: str, p, *, role: str = "twist", symbol: str = "", desc: str = "",
               label: str | None = None, glyph: bool = True, size: float | None = None,
-              shape: str | None = None, color: str | None = None, glyph_scale: float = 6.0):
+              shape: str | None = None, color: str | None = None, glyph_scale: float = 6.0,
+              opacity: float = 1.0):
         """A homogeneous point (a twist's or an acceleration's pole) with its rotation glyph.
 
         A pole in view is a marker with a 270° arrow turning with the sign of the weight (the rate
@@ -406,7 +401,7 @@ class Picture:
             Marker size in pixels.
         shape : {"o", "D", "s"}, optional
             Marker shape.
-        {color}
+        {color opacity}
         glyph_scale : float
             Glyph radius in pixels per unit ``|w|`` (clamped to [5, 22] px).
         """
@@ -448,12 +443,12 @@ class Picture:
             t = (a * self.kx, b * self.ky)
             L = min(max(glyph_scale * math.hypot(a, b), 12.0), 40.0) * PX_PER_PT
             parts += self._edge_arrow(n, t, L, text, infinite=True)
-        self._add(id, role, symbol, desc, parts, color=color, z=7)
+        self._add(id, role, symbol, desc, parts, color=color, z=7, opacity=opacity)
 
     @_documented
     def line(self, id: str, l, *, role: str = "wrench", symbol: str = "", desc: str = "",
              label: str | None = None, anchor=None, arrow: bool = True, color: str | None = None,
-             width: float | None = None, dash=None):
+             width: float | None = None, dash=None, opacity: float = 1.0):
         """A homogeneous line (a wrench's line of action), clipped to the view.
 
         Its sense is an arrow on the line at ``anchor``; the line at infinity (a couple, 4.27) is a
@@ -472,7 +467,7 @@ class Picture:
             Where the sense arrow sits (projected onto the line; default: the view's centre).
         arrow : bool
             Draw the sense arrow.
-        {color}
+        {color opacity}
         width : float, optional
             Line width in pixels.
         dash : list of float, optional
@@ -515,11 +510,12 @@ class Picture:
             parts.append(self._label((text + ": " if text else "") + "couple (line at ∞)",
                                      x, y, -18.0, 0.0, "right", "center"))
         self._add(id, role, symbol, desc, parts, color=color, width=width,
-                  dash=dash if dash is not None else _dash(role))
+                  dash=dash if dash is not None else _dash(role), opacity=opacity)
 
     @_documented
     def conic(self, id: str, C, *, role: str = "conic", symbol: str = "", desc: str = "",
-              label: str | None = None, mark_center: bool | None = None, color: str | None = None):
+              label: str | None = None, mark_center: bool | None = None, color: str | None = None,
+              opacity: float = 1.0):
         """A conic (an inertia's imaginary conic drawn by its real stand-in, dashed).
 
         Parameters
@@ -534,7 +530,7 @@ class Picture:
             Text at the curve (default: ``symbol``).
         mark_center : bool, optional
             Mark the centre (default: for inertias and imaginary conics).
-        {color}
+        {color opacity}
         """
         g = conic_geometry(C)
         color = _color(role, color)
@@ -557,13 +553,13 @@ class Picture:
             x, y = (float(v) for v in g["point"])
             parts.append({"p": "mark", "x": x, "y": y, "shape": "o", "size": 5.0})
         dash = _dash("inertia") if (imaginary or role == "inertia") else _dash(role)
-        self._add(id, role, symbol, desc, parts, color=color, dash=dash, z=2)
+        self._add(id, role, symbol, desc, parts, color=color, dash=dash, z=2, opacity=opacity)
 
     @_documented
     def path(self, id: str, xy, *, role: str = "body", symbol: str = "", desc: str = "",
              closed: bool = False, fill: str | None = None, color: str | None = None,
              width: float | None = None, dash=None, alpha: float = 1.0, label: str | None = None,
-             z: int = 1):
+             z: int = 1, opacity: float = 1.0):
         """A polyline or polygon in data coordinates (bodies, links, ground, charts).
 
         Parameters
@@ -586,7 +582,7 @@ class Picture:
             Opacity of the fill.
         label : str, optional
             Text at the first vertex.
-        {z}
+        {z opacity}
         """
         xy = np.asarray(xy, dtype=float).reshape(-1, 2)
         ok = np.all(np.isfinite(xy), axis=1)
@@ -599,11 +595,12 @@ class Picture:
         if label and ok[0]:
             parts.append(self._label(label, float(xy[0, 0]), float(xy[0, 1]), 4.0, 4.0))
         self._add(id, role, symbol, desc, parts, color=_color(role, color), width=width,
-                  dash=dash, fill=fill, alpha=alpha, z=z)
+                  dash=dash, fill=fill, alpha=alpha, z=z, opacity=opacity)
 
     @_documented
     def marks(self, id: str, xy, *, role: str = "body", symbol: str = "", desc: str = "",
-              shape: str = "o", size: float = 6.0, color: str | None = None, z: int = 4):
+              shape: str = "o", size: float = 6.0, color: str | None = None, z: int = 4,
+              opacity: float = 1.0):
         """Markers of one size at data points (pins, centres of mass, samples).
 
         Parameters
@@ -616,12 +613,12 @@ class Picture:
             Marker shape.
         size : float
             Marker size in pixels.
-        {color z}
+        {color z opacity}
         """
         xy = np.asarray(xy, dtype=float).reshape(-1, 2)
         parts = [{"p": "mark", "x": float(x), "y": float(y), "shape": shape, "size": float(size)}
                  for x, y in xy if math.isfinite(x) and math.isfinite(y)]
-        self._add(id, role, symbol, desc, parts, color=_color(role, color), z=z)
+        self._add(id, role, symbol, desc, parts, color=_color(role, color), z=z, opacity=opacity)
 
     @_documented
     def text(self, id: str, xy, text: str, *, role: str = "text", symbol: str = "", desc: str = "",
@@ -715,7 +712,7 @@ class Picture:
                     free_els.append((-el["z"], mine))
                 else:
                     mine.append(part)
-        free_els.sort(key=_first)   # topmost first (a stable sort: the elements' order otherwise)
+        free_els.sort(key=itemgetter(0))   # topmost first (a stable sort: the elements' order otherwise)
 
         for _, parts in free_els:
             for part in parts:
@@ -781,7 +778,7 @@ class Picture:
 
         elements = []
         paths: list[tuple[dict, np.ndarray]] = []   # (n, 2) float paths, rounded together below
-        for el in sorted(self.elements, key=_z_of):
+        for el in sorted(self.elements, key=itemgetter("z")):
             parts = []
             for part in el["parts"]:
                 part = dict(part)

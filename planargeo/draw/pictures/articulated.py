@@ -121,8 +121,7 @@ def articulated_picture(st: dict, *, k: int, focus_all: bool, rigid: bool, axes:
     pts = np.asarray(st["joints"], float)
     pic = Picture(view, size=size, ticks=False, margin=MARGIN)
     pic.path("links", pts, role="body", color=COLORS["body"], width=7.0 * PX_PER_PT, symbol="links",
-             desc=f"the chain: {n} bodies of 1 kg, joints L = 1 m apart", z=1)
-    pic.elements[-1]["opacity"] = 0.55
+             desc=f"the chain: {n} bodies of 1 kg, joints L = 1 m apart", z=1, opacity=0.55)
     pic.marks("pins", pts[:-1], role="body", color="#000000", size=6.0, symbol="joints",
               desc=f"the joints: {n} pins (joint 1 on the ground)", z=4)
     pic.marks("ground", [pts[0]], role="ground", color=COLORS["ground"], shape="s", size=10.0, symbol="ground",
@@ -138,9 +137,8 @@ def articulated_picture(st: dict, *, k: int, focus_all: bool, rigid: bool, axes:
             if name == "A" or rigid:
                 pic.conic(f"{name}{i + 1}", st[name][i], role="inertia", color=color, symbol=f"{name}{sub}",
                           label=f"{name}{sub}" if i == k else "",
-                          desc=f"{what.format(i=i + 1)} at {pair(np.asarray(st[centre][i], float))} m")
-                if not bold:
-                    pic.elements[-1]["opacity"] = faded
+                          desc=f"{what.format(i=i + 1)} at {pair(np.asarray(st[centre][i], float))} m",
+                          opacity=1.0 if bold else faded)
     a = np.asarray(st["pole"], float)
     pic.point("a", a, role="accel", glyph=False, size=8.0, symbol="a",
               desc=f"the acceleration pole a of body {k + 1} (4.6): {where(a)}")
@@ -246,8 +244,8 @@ def _chart(pic, st, k: int) -> None:
              ha="center", va="bottom", dy=4.0, symbol=f"A{kk}", desc=f"the chart: {what}")
     shown_k = min(int(st["outboard"]), len(comps) - 1)
     pic.path("chart now", at([shown_k, shown_k], [lo, hi]), role="chart", color=_ART, width=1.2,
-             symbol="outboard bodies", desc=f"the recursion steps shown in the chain: {shown_k}", z=2)
-    pic.elements[-1]["opacity"] = 0.7
+             symbol="outboard bodies", desc=f"the recursion steps shown in the chain: {shown_k}", z=2,
+             opacity=0.7)
     for j, (name, color, y) in enumerate(curves):
         xy = at(steps, y)
         pic.path(f"chart {name}", xy, role="chart", color=color, width=1.5, symbol=name,

@@ -124,10 +124,8 @@ def force(pic: Picture, id: str, w, *, scale: float, anchor, role: str = "reacti
     if role in ("reaction", "wrench", "momentum"):
         color = color or COLORS[role]
     pic.path(id, np.zeros((0, 2)), role=role, symbol=symbol, desc=desc, color=color, width=width,
-             dash=dash, z=z)
-    el = pic.elements[-1]
-    el["parts"] = parts
-    el["opacity"] = float(opacity)
+             dash=dash, z=z, opacity=float(opacity))
+    pic.elements[-1]["parts"] = parts
     return foot
 
 
@@ -144,8 +142,7 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.9, depth: float = 0.12
     for u in np.linspace(x - width / 2 + depth, x + width / 2, n):
         rows += [[u, y], [u - depth, y - depth], [np.nan, np.nan]]
     pic.path(id, np.array(rows), role="ground", symbol="ground", color=COLORS["ground"], width=1.4, desc=desc,
-             z=1)
-    pic.elements[-1]["opacity"] = float(opacity)
+             z=1, opacity=float(opacity))
 
 
 def seg_distance(p, segs) -> float:

@@ -66,12 +66,12 @@ def splitting_picture(st: dict, *, view, focus: str = "all", centres: bool = Tru
     pic = Picture(view, size=size)
     thick = 7.0 * PX_PER_PT
     pic.path("lower", pts[:i + 1], role="body", color=LOWER, width=thick, symbol=f"1…{i}" if i > 1 else "1",
-             desc=f"the constrained chain below the split (7.4): {_bodies(1, i)}, 1 kg each", z=1)
-    pic.elements[-1]["opacity"] = 0.55 * low
+             desc=f"the constrained chain below the split (7.4): {_bodies(1, i)}, 1 kg each", z=1,
+             opacity=0.55 * low)
     pic.path("upper", pts[i:], role="body", color=UPPER, width=thick,
              symbol=f"{i + 1}…{n}" if n > i + 1 else str(n),
-             desc=f"the free-floating chain above the split (7.4): {_bodies(i + 1, n)}, 1 kg each", z=1)
-    pic.elements[-1]["opacity"] = 0.55 * up
+             desc=f"the free-floating chain above the split (7.4): {_bodies(i + 1, n)}, 1 kg each", z=1,
+             opacity=0.55 * up)
     pic.marks("ground", [pts[0]], role="ground", color=COLORS["ground"], shape="s", size=9.0, symbol="CJ₁",
               desc="joint 1, pinned to the ground: at (0, 0) m", z=3)
     pic.marks("split", [pts[i]], role="body", color=CUT, size=15.0, symbol="split",

@@ -86,8 +86,7 @@ def subspace_picture(st: dict, *, show: str, m: float, rho: float, view, size=(6
                  np.array([p - 0.5 * e, p + 0.5 * e, [np.nan, np.nan], p - 0.5 * nrm, p + 0.5 * nrm]))
         deg = math.degrees(math.atan2(e[1], e[0]))
         pic.path("joint", track, role="ground", color=COLORS["ground"], width=7.0,
-                 symbol="joint", desc=f"{jdesc}, direction {num(deg)}° from x", z=2)
-        pic.elements[-1]["opacity"] = 0.45
+                 symbol="joint", desc=f"{jdesc}, direction {num(deg)}° from x", z=2, opacity=0.45)
         pic.marks("joint direction", [p + DIR_HANDLE * e], role="body", color=COLORS["ground"], shape="D",
                   size=7.0, symbol="joint", desc=f"the joint's direction: {num(deg)}° from x", z=6)
     if kind in ("revolute", "revolute_prismatic"):
