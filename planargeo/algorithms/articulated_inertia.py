@@ -113,9 +113,12 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
     S, tau = _lists(S, tau)
     kappa = np.asarray(kappa, dtype=float)
     d = np.array(p, dtype=float)                   # d_N = p_N
-    steps = _check_steps(steps)
-    if steps is not None and steps < _depth(parents):
-        return _truncated(A, d, S, kappa, tau, parents, points, joint_points, check, steps)
+    if steps is not None:
+        if isinstance(steps, (bool, np.bool_)) or not isinstance(steps, (int, np.integer)) or steps < 0:
+            raise InputError(f"steps must be None or a non-negative integer, got {steps!r}")
+        steps = int(steps)
+        if steps < _depth(parents):
+            return _truncated(A, d, S, kappa, tau, parents, points, joint_points, check, steps)
     T, P, gram = [None] * N, [None] * N, [None] * N
     cond = np.ones(N)
     for i in reversed(range(N)):
@@ -135,15 +138,6 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
             d[j] += Ti @ tau[i] + Pi @ (Ai @ kappa[i] + d[i])   # (7.7b)
     return ArticulatedInertias(A, d, S, T, P, gram, cond, None if points is None else np.asarray(points, float),
                                steps)
-
-
-def _check_steps(steps):
-    """``steps`` as an int (or None); InputError naming ``steps`` otherwise."""
-    if steps is None:
-        return None
-    if isinstance(steps, (bool, np.bool_)) or not isinstance(steps, (int, np.integer)) or steps < 0:
-        raise InputError(f"steps must be None or a non-negative integer, got {steps!r}")
-    return int(steps)
 
 
 def _depth(parents) -> int:

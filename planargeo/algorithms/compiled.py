@@ -54,7 +54,9 @@ def kernels_for(model):
         tables = kernels.tables(model)
         if tables is not None:
             _say_if_cold(kernels)
-            _closed(kernels)
+            if hasattr(kernels.dynamics_one, "_can_compile"):   # (NUMBA_DISABLE_JIT=1: a plain Python function)
+                # numba's disable_compile(), allowed before any signature: another type raises TypeError at once
+                kernels.dynamics_one._can_compile = False
         cache["kernels"] = None if tables is None else Compiled(kernels, tables, (model.nq,), (model.N, 3))
     return cache["kernels"]
 
@@ -113,13 +115,6 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
 
 
 _READY: set = set()
-
-
-def _closed(kernels) -> None:
-    """Let the one-state kernel compile nothing at call time: another type raises ``TypeError`` at once."""
-    kernel = kernels.dynamics_one
-    if hasattr(kernel, "_can_compile"):             # (NUMBA_DISABLE_JIT=1: a plain Python function)
-        kernel._can_compile = False                 # numba's disable_compile(), allowed before any signature
 
 
 def _ready(kernels, wrenches: bool) -> None:

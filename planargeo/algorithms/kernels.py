@@ -131,7 +131,7 @@ def _finite_inputs(x, y, z, fext):
         return False
     if fext is not None:
         for i in range(fext.shape[0]):
-            if not (math.isfinite(fext[i, 0]) and math.isfinite(fext[i, 1]) and math.isfinite(fext[i, 2])):
+            if not _finite(fext[i]):
                 return False
     return True
 
@@ -226,14 +226,6 @@ def joint_cond(A, s, D):
 
 
 @inline
-def _clearly_regular(A, s, D):
-    """The rule of ``COND_LIMIT`` squared, where the squares are in range: ``‖A‖_F² ‖s‖⁴ < D² COND_LIMIT²``."""
-    F2 = A[0, 0] ** 2 + A[1, 1] ** 2 + A[2, 2] ** 2 + 2.0 * (A[0, 1] ** 2 + A[0, 2] ** 2 + A[1, 2] ** 2)
-    ss = s[0] * s[0] + s[1] * s[1] + s[2] * s[2]
-    return 1e-300 < F2 < 1e300 and F2 * ss * ss < D * D * COND_LIMIT2
-
-
-@inline
 def _parent_acceleration(a, r, lam, i):
     """The parent's acceleration ``a_λ`` moved out to body ``i``'s joint point by ``r_i`` (4.8); ``a_0 = 0`` (3.40)."""
     if lam < 0:
@@ -280,7 +272,11 @@ def articulated_body_state(model, q, qd, tau, fext, w, qdd):
             for j in range(3):                              # U = A_i s_i, D = s_iᵀ A_i s_i
                 U[i, j] = A[i, j, 0] * s[i, 0] + A[i, j, 1] * s[i, 1] + A[i, j, 2] * s[i, 2]
             D = s[i, 0] * U[i, 0] + s[i, 1] * U[i, 1] + s[i, 2] * U[i, 2]
-            if not _clearly_regular(A[i], s[i], D):                 # else the exact, scale-safe rule
+            # ‖A‖_F² ‖s‖⁴ < D² COND_LIMIT²: the rule squared where the squares are in range; else the exact rule
+            F2 = A[i, 0, 0] ** 2 + A[i, 1, 1] ** 2 + A[i, 2, 2] ** 2 + 2.0 * (
+                A[i, 0, 1] ** 2 + A[i, 0, 2] ** 2 + A[i, 1, 2] ** 2)
+            ss = s[i, 0] * s[i, 0] + s[i, 1] * s[i, 1] + s[i, 2] * s[i, 2]
+            if not (1e-300 < F2 < 1e300 and F2 * ss * ss < D * D * COND_LIMIT2):
                 cond = joint_cond(A[i], s[i], D)
                 if math.isnan(cond):                                # the inertia is out of the float range
                     return NOT_FINITE
@@ -330,8 +326,6 @@ def articulated_body_state(model, q, qd, tau, fext, w, qdd):
 def newton_euler_state(model, q, qd, qdd, fext, w, tau):
     """Inverse dynamics (thesis 2.18, 3.10, 3.5) for one state: writes ``τ`` into ``tau``.
 
-    Accelerations base to tip (2.18), then forces tip to base (3.10), moved in to ``o_λ`` (4.24).
-
     Parameters
     ----------
     {model}
@@ -373,18 +367,6 @@ def newton_euler_state(model, q, qd, qdd, fext, w, tau):
 
 
 # -- entry points: the model's tables as separate arrays (cheaper to pass), one state or a batch ---
-@inline
-def _fits(kind, x, y, z, fext):
-    """Whether ``x, y, z`` have the model's ``nq`` rows and ``fext`` (or None) is (N, 3): the one-state shapes."""
-    nq = 0
-    for i in range(kind.shape[0]):
-        if kind[i] != FIXED:
-            nq += 1
-    if x.shape[0] != nq or y.shape[0] != nq or z.shape[0] != nq:
-        return False
-    return fext is None or (fext.shape[0] == kind.shape[0] and fext.shape[1] == 3)
-
-
 @jit
 @_doc
 def dynamics_one(inverse, kind, parent, body, gravity, q, qd, z, fext):
@@ -403,7 +385,13 @@ def dynamics_one(inverse, kind, parent, body, gravity, q, qd, z, fext):
     -------
     numpy.ndarray, shape (nq,) or None
     """
-    if not _fits(kind, q, qd, z, fext):
+    nq = 0                                          # the one-state shapes: (nq,) and (N, 3) or None
+    for i in range(kind.shape[0]):
+        if kind[i] != FIXED:
+            nq += 1
+    if q.shape[0] != nq or qd.shape[0] != nq or z.shape[0] != nq:
+        return None
+    if fext is not None and not (fext.shape[0] == kind.shape[0] and fext.shape[1] == 3):
         return None
     out = np.empty(q.shape[0])
     model, w = (kind, parent, body, gravity), workspace(kind.shape[0])
@@ -577,7 +565,7 @@ def articulated_body_block(model, q, qd, tau, fext, lo, hi, w, qdd):
                 U1 = A01 * s0 + A11 * s1 + A12 * s2
                 U2 = A02 * s0 + A12 * s1 + A22 * s2
                 Di = s0 * U0 + s1 * U1 + s2 * U2
-                F2 = A00 ** 2 + A11 ** 2 + A22 ** 2 + 2.0 * (A01 ** 2 + A02 ** 2 + A12 ** 2)   # _clearly_regular
+                F2 = A00 ** 2 + A11 ** 2 + A22 ** 2 + 2.0 * (A01 ** 2 + A02 ** 2 + A12 ** 2)   # the quick rule
                 ss = s0 * s0 + s1 * s1 + s2 * s2
                 ok[b] &= (1e-300 < F2) & (F2 < 1e300) & (F2 * ss * ss < Di * Di * COND_LIMIT2)
                 ui = z[k, b] - (s0 * c[0, b] + s1 * c[1, b] + s2 * c[2, b])   # u = τ_i - s_iᵀ c

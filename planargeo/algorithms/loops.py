@@ -89,7 +89,13 @@ class LoopSolution:
     @functools.cached_property
     def reactions(self) -> list:
         """Every pin and bearing force of the loop, a :class:`Reaction` per tree joint then per contact."""
-        return _reactions(self._model, self.contacts, self.data, self.f, self.F)
+        model, pose = self._model, self.data.pose          # tree joints (f_i), then contacts (-F_k on body a)
+        rows = [(f"f_{i + 1}", jt.name, jt.kind, i, model.parents[i], pose[i, :2].astype(float), w.copy())
+                for i, (jt, w) in enumerate(zip(model.joints, self.f.reshape(model.N, 3)))]
+        rows += [(f"F_{k + 1}", c.name, c.kind, c.a, c.b, np.asarray(world_point(pose, c.a, c.point_a), dtype=float),
+                  -w) for k, (c, w) in enumerate(zip(self.contacts, self.F.reshape(-1, 3)))]
+        return [Reaction(symbol, name, kind, body, other, P, w, float(w[2] + P[1] * w[0] - P[0] * w[1]))
+                for symbol, name, kind, body, other, P, w in rows]          # the moment about P last
 
     def reaction(self, name: str) -> "Reaction":
         """The :class:`Reaction` named ``name`` (a joint's or contact's name, or its symbol ``f_1``, ``F_1``).
@@ -199,17 +205,6 @@ def joint_wrenches(parents, I, a, p, GtF=None) -> np.ndarray:
     return f.reshape(-1)
 
 
-def _reactions(model, cs, data, f, F) -> list:
-    """The :class:`Reaction` list of one solved state: tree joints (``f_i``), then contacts (``-F_k`` on body a)."""
-    rows = [(f"f_{i + 1}", jt.name, jt.kind, i, model.parents[i], data.pose[i, :2].astype(float),
-             w.copy()) for i, (jt, w) in enumerate(zip(model.joints, f.reshape(model.N, 3)))]
-    rows += [(f"F_{k + 1}", c.name, c.kind, c.a, c.b,
-              np.asarray(world_point(data.pose, c.a, c.point_a), dtype=float), -w)
-             for k, (c, w) in enumerate(zip(cs, F.reshape(-1, 3)))]
-    return [Reaction(symbol, name, kind, body, other, P, w, float(w[2] + P[1] * w[0] - P[0] * w[1]))
-            for symbol, name, kind, body, other, P, w in rows]          # the moment about P last
-
-
 @functools.lru_cache(maxsize=256)
 def _contact_topology(parents: tuple, contacts: tuple):
     """Cached ``G``, ``Υ`` and their 3×3 block forms for a tree and its contacts."""
@@ -304,7 +299,7 @@ def loop_solve(model: Model, q, qd, tau, f_ext=None, contacts=None, *, prescribe
         nu_rows.append(data.kappa[i] + si @ val)
         drive_cols.append((i, k, val))
     Gall = np.vstack(G_rows)
-    Ball = _blockdiag(B_blocks, [b.shape[0] for b in B_blocks], [b.shape[1] for b in B_blocks])
+    Ball = _blockdiag(B_blocks)
     # 4. contact forces (9.70-9.72): Λ^{-1} is read only as Λ^{-1} G^T
     LamGt = tree.mobility @ Gall.T if mobility == "full" else tree.mobility_times(Gall.T)
     ncr = G3.shape[0]

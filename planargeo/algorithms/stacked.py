@@ -163,10 +163,11 @@ def joint_conditions(model: Model, q) -> np.ndarray:
     return articulated_recursion(*_state_arrays(model, q, None, None, None)[1:], check=False).cond
 
 
-def _blockdiag(mats, rows, cols):
-    n = len(mats)
-    if n and all(r == rows[0] for r in rows) and all(c == cols[0] for c in cols):   # equal blocks: one assignment
-        r, c = rows[0], cols[0]
+def _blockdiag(mats) -> np.ndarray:
+    """The block-diagonal matrix of the 2-d arrays ``mats``."""
+    n, shapes = len(mats), {np.shape(m) for m in mats}
+    if len(shapes) == 1:                           # equal blocks: one assignment
+        (r, c), = shapes
         out = np.zeros((n * r, n * c))
         k = np.arange(n)
         out.reshape(n, r, n, c)[k, :, k, :] = np.asarray(mats, dtype=float).reshape(n, r, c)
@@ -244,19 +245,15 @@ class StackedSolution:
         """Articulation matrix ``L = (1 - C^T R U^T)^{-1}`` (9.31), built on first access."""
         return articulation_matrix(self.C, self.P)
 
-    def _stack(self, blocks) -> np.ndarray:
-        kr = [3 - si.shape[1] for si in self.articulated.S]
-        return _blockdiag(blocks, [3] * self.N, kr)
-
     @property
     def R(self) -> np.ndarray:
         """Block-diagonal reaction spaces ``{{R_i}}`` (``S^T R = 0``, thesis 9.20)."""
-        return self._stack(self.articulated.R)
+        return _blockdiag(self.articulated.R)
 
     @property
     def U(self) -> np.ndarray:
         """Block-diagonal quake spaces ``{{U_i}}`` (9.20, 6.99), ``U R^T = 1 - S T^T``."""
-        return self._stack(self.articulated.U)
+        return _blockdiag(self.articulated.U)
 
     @functools.cached_property
     def mobility(self) -> np.ndarray:
@@ -333,14 +330,11 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
         data = _kinematics_scalar(model, q, qd, f_ext)   # kinematics(), checked
     args = _data_arrays(model, data, tau)
     art = articulated_recursion(*args[1:])          # 7.7a/7.7b = 9.27/9.28 corrected, 7.8
-    ks = [si.shape[1] for si in art.S]
-    three = [3] * N
     sol = StackedSolution()
     sol.N, sol.parents, sol.articulated, sol.data = N, tuple(model.parents), art, data
     sol._args = args[1:]
     sol.C, sol.Dinv = _topology(tuple(model.parents))
-    sol.S, sol.T = _blockdiag(art.S, three, ks), _blockdiag(art.T, three, ks)
-    sol.P, sol.I, sol.A = (_blockdiag(x, three, three) for x in (art.P, list(data.I), art.A))
+    sol.S, sol.T, sol.P, sol.I, sol.A = (_blockdiag(x) for x in (art.S, art.T, art.P, data.I, art.A))
     sol.kappa, sol.p = data.kappa.reshape(-1), data.p.reshape(-1)
     Q = np.concatenate(args[5]) if N else np.zeros(0)
     C, T, P, A = sol.C, sol.T, sol.P, sol.A
@@ -354,12 +348,12 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     sol.d = _unit_upper_solve(Linv, sol.p + C.T @ (T @ Q) + C.T @ (P @ (A @ sol.kappa)))
     # (9.39): a = L^T [S T^T A^-1 (T Q - d) + U R^T κ]
     # S T^T A^-1 = S (S^T A S)^-1 S^T: no inverse of A needed
-    if N and all(k == 1 for k in ks):              # one-dof joints: all bodies in one call (sᵀAs checked above)
+    if N and all(si.shape[1] == 1 for si in art.S):    # one-dof joints: all bodies in one call (sᵀAs checked)
         mobs = _effective_mobility(art.A, np.stack(art.S),
                                    gram=(np.stack([g[0] for g in art.gram]), np.stack([g[1] for g in art.gram])))
     else:
         mobs = [_effective_mobility(Ai, si, gram=g) for si, Ai, g in zip(art.S, art.A, art.gram)]
-    sol.StTAinv = _blockdiag(mobs, three, three)
+    sol.StTAinv = _blockdiag(mobs)
     sol.mobs = np.reshape(mobs, (N, 3, 3))         # its 3×3 blocks (mobility_times)
     sol.a = _unit_upper_solve(Linv, sol.StTAinv @ (T @ Q - sol.d) + P.T @ sol.kappa, trans=True)  # U R^T = P^T
     # (9.41) with (9.17): internal forces
@@ -396,10 +390,8 @@ def direct_accelerations(sol: StackedSolution, Lambda_inv, b) -> np.ndarray:
     True
     """
     N = sol.N
-    Lam = _blockdiag(Lambda_inv, [3] * N, [3] * N)
-    bb = np.concatenate(b)
-    K = Lam @ sol.C.T @ sol.Dinv.T
-    return np.linalg.solve(np.eye(3 * N) + K @ sol.I, bb - K @ sol.p)
+    K = _blockdiag(Lambda_inv) @ sol.C.T @ sol.Dinv.T
+    return np.linalg.solve(np.eye(3 * N) + K @ sol.I, np.concatenate(b) - K @ sol.p)
 
 
 def forward_dynamics_stacked(model: Model, q, qd, tau, f_ext=None, *, method: str = "articulation"):
