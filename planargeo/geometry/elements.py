@@ -35,10 +35,7 @@ _shared = entries({
 
 
 def _fmt(v: float) -> str:
-    v = float(v)
-    if v == 0:
-        return "0"
-    return f"{v:.6g}"
+    return "0" if float(v) == 0 else f"{float(v):.6g}"
 
 
 def _one(x, name: str, n: int) -> np.ndarray:
@@ -50,8 +47,6 @@ def _one(x, name: str, n: int) -> np.ndarray:
 
 
 def _vec(x, name: str) -> np.ndarray:
-    if isinstance(x, (Point, Line)):
-        x = x.array
     a = _one(x, name, 3) + 0.0
     a.setflags(write=False)
     return a
@@ -115,8 +110,7 @@ class _PointOrLine(_Homogeneous):
 
     def _pair(self, other) -> tuple:
         """``(point, line)`` arrays of this element and ``other`` of the dual kind."""
-        name = self._dual.__name__.lower()
-        theirs = other.array if isinstance(other, self._dual) else _vec(other, name)
+        theirs = _vec(other, self._dual.__name__.lower())
         return (self._a, theirs) if self._dual is Line else (theirs, self._a)
 
     @_shared
@@ -420,8 +414,6 @@ class Conic(_Homogeneous):
     __slots__ = ()
 
     def __init__(self, matrix):
-        if isinstance(matrix, Conic):
-            matrix = matrix.matrix
         m = _c._conic(matrix, "matrix")
         if m.shape != (3, 3):
             raise ShapeError(f"matrix must have shape (3, 3), got shape {m.shape}")

@@ -17,7 +17,7 @@ from planargeo.errors import InputError, InvalidPolygonError, SingularInertiaErr
 from planargeo.geometry import conics
 from planargeo.geometry._docs import entries
 from planargeo.geometry.elements import Conic, Line, Point
-from planargeo.screws.twists import (SCREWS, _Held, inertia_at, inertia_matrix, inertia_rotated,
+from planargeo.screws.twists import (SCREWS, _Held, _inertia_psd, inertia_at, inertia_matrix, inertia_rotated,
                                       kinetic_energy, momentum)
 
 __all__ = [
@@ -32,15 +32,6 @@ _documented = entries(SCREWS, {
     "returns_inertia": "Returns\n-------\nInertia",
     "no_mass": "Raises\n------\nInputError\n    A mass ``inertia[..., 0, 0]`` not positive.",
 })
-
-
-def _mat(x, name="inertia") -> np.ndarray:
-    return as_mat3(x.matrix if isinstance(x, Inertia) else x, name)
-
-
-def _psd(x, name="inertia") -> np.ndarray:
-    """An inertia that must be symmetric positive *semi*-definite (a point mass is allowed)."""
-    return check_positive_semidefinite(_mat(x, name), name)
 
 
 #: Relative tolerance of the rigid-body structure test of :class:`Inertia`.
@@ -65,11 +56,7 @@ def _check_rigid(M: np.ndarray, name: str) -> np.ndarray:
 
 def _pd(x, name="inertia") -> np.ndarray:
     """An inertia that must be symmetric positive definite (it is inverted)."""
-    return check_positive_definite(_mat(x, name), name)
-
-
-def _vec(x, name) -> np.ndarray:
-    return as_vec3(getattr(x, "array", x), name)
+    return check_positive_definite(as_mat3(x, name), name)
 
 
 # ---------- Features of a rigid-body inertia (thesis 1.66, 4.58): read from the form 4.58,
@@ -85,12 +72,12 @@ def mass(inertia) -> np.ndarray:
     >>> mass(inertia_matrix(2.0, [1.0, 0.0], 0.5))
     array(2.)
     """
-    return np.asarray(_mat(inertia)[..., 0, 0])
+    return np.asarray(as_mat3(inertia, "inertia")[..., 0, 0])
 
 
 def _with_mass(inertia, name: str = "inertia") -> np.ndarray:
     """The inertia array, after checking every mass ``inertia[0, 0] > 0`` (InputError naming it)."""
-    I = _mat(inertia, name)
+    I = as_mat3(inertia, name)
     m = I[..., 0, 0]
     bad = ~(m > 0)
     if np.any(bad):
@@ -203,8 +190,8 @@ def percussion_axis(inertia, point) -> np.ndarray:
     >>> percussion_axis(inertia_matrix(2.0, [1.0, 0.0], 0.5), [0.0, 0.0, 1.0])   # 5.66: x = 1.25
     array([0. , 2. , 2.5])
     """
-    I = _psd(inertia)
-    a = _vec(point, "point")
+    I = _inertia_psd(inertia)
+    a = as_vec3(point, "point")
     batch_shape(inertia=(I, 2), point=(a, 1))
     return rescaled(lambda I, a: np.einsum("...ij,...j->...i", I, a), (I, a), (1, 1), (2, 1), 1,
                     "percussion_axis(inertia, point)", "inertia or point")
@@ -235,7 +222,7 @@ def percussion_pole(inertia, line) -> np.ndarray:
     array([ 0., -1.,  1.])
     """
     I = _pd(inertia)
-    f = _vec(line, "line")
+    f = as_vec3(line, "line")
     batch_shape(inertia=(I, 2), line=(f, 1))
     return rescaled(lambda I, f: _solve(I, f[..., None])[..., 0], (I, f), (-1, 1), (2, 1), 1,
                     "percussion_pole(inertia, line)", "line, or the inverse inertia,")
@@ -256,7 +243,7 @@ def drawable_conic(inertia) -> np.ndarray:
     >>> drawable_conic(inertia_matrix(2.0, [0.0, 0.0], 0.5)).diagonal()   # -m ρ² last
     array([ 2. ,  2. , -0.5])
     """
-    return conics.drawable_conic(_psd(inertia))
+    return conics.drawable_conic(_inertia_psd(inertia))
 
 
 # ---------- Polygon moments
@@ -386,8 +373,6 @@ class Inertia(_Held):
     __slots__ = ()
 
     def __init__(self, matrix):
-        if isinstance(matrix, Inertia):
-            matrix = matrix.matrix
         M = np.array(as_mat3(matrix, "matrix"), dtype=float)
         if np.any(M[..., 0, 0] <= 0):
             bad = M[..., 0, 0][M[..., 0, 0] <= 0].ravel()[0]
@@ -494,7 +479,7 @@ class Inertia(_Held):
         parts = list(parts)
         if not parts:
             raise InputError("parts must contain at least one inertia")
-        total = sum(_mat(p, f"parts[{i}]") for i, p in enumerate(parts))
+        total = sum(as_mat3(p, f"parts[{i}]") for i, p in enumerate(parts))
         return cls(total)
 
     # -- data ------------------------------------------------------------

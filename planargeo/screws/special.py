@@ -85,7 +85,7 @@ def _case(name: str) -> SpecialCase:
 
 
 def _raw(x, name: str) -> np.ndarray:
-    a = as_vec3(getattr(x, "array", x), name)
+    a = as_vec3(x, name)
     if a.shape != (3,):
         raise ShapeError(f"{name} must have shape (3,), got shape {a.shape}")
     return a + 0.0

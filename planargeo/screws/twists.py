@@ -634,8 +634,6 @@ class _Screw(_Held):
     _name = "screw"
 
     def __init__(self, array):
-        if isinstance(array, _Screw):
-            array = array.array
         a = np.array(as_vec3(array, self._name), dtype=float)
         a.flags.writeable = False
         self._array = a
@@ -719,7 +717,7 @@ class _Screw(_Held):
 
     def _pair(self, other) -> tuple:
         """``(twist, wrench)`` arrays of this screw and ``other`` of the dual kind."""
-        theirs = as_vec3(other.array if isinstance(other, self._dual) else other, self._dual._name)
+        theirs = as_vec3(other, self._dual._name)
         return (self._array, theirs) if self._dual is Wrench else (theirs, self._array)
 
     @documented
@@ -1006,8 +1004,8 @@ del _kind
 
 
 # ---------- Twist and wrench addition as constructions (thesis 4.2, 4.4)
-def _single(x, cls, name) -> np.ndarray:
-    a = as_vec3(x.array if isinstance(x, cls) else x, name)
+def _single(x, name) -> np.ndarray:
+    a = as_vec3(x, name)
     if a.ndim != 1:
         raise ShapeError(f"{name} must have shape (3,) for a construction, got shape {a.shape}")
     if not np.any(a):
@@ -1084,7 +1082,7 @@ def add_twists(v1, v2, rtol: float = 1e-12) -> TwistSum:
     >>> c.case, c.beta, c.P
     ('rotations', 0.75, array([ 0., -3.,  1.]))
     """
-    return _finite_sum(_add_twists, Twist, (v1, v2), ("v1", "v2"), rtol)
+    return _finite_sum(_add_twists, (v1, v2), ("v1", "v2"), rtol)
 
 
 def _add_twists(a, b, rtol) -> TwistSum:
@@ -1189,7 +1187,7 @@ def add_wrenches(f1, f2, rtol: float = 1e-12) -> WrenchSum:
     >>> c.case, c.beta, c.d3                          # lever rule: resultant on x = 3
     ('parallel', 0.75, 3.0)
     """
-    return _finite_sum(_add_wrenches, Wrench, (f1, f2), ("f1", "f2"), rtol)
+    return _finite_sum(_add_wrenches, (f1, f2), ("f1", "f2"), rtol)
 
 
 def _add_wrenches(a, b, rtol) -> WrenchSum:
@@ -1230,10 +1228,10 @@ def _add_wrenches(a, b, rtol) -> WrenchSum:
     )
 
 
-def _finite_sum(add, cls, pair, names, rtol):
-    """The construction ``add(a, b, rtol)`` of two screws of class ``cls``, if every number in it is
+def _finite_sum(add, pair, names, rtol):
+    """The construction ``add(a, b, rtol)`` of two screws, if every number in it is
     finite (``beta = inf`` of opposite rotations aside)."""
-    a, b = (_single(x, cls, name) for x, name in zip(pair, names))
+    a, b = (_single(x, name) for x, name in zip(pair, names))
     with np.errstate(over="ignore", invalid="ignore"):
         c = add(a, b, check_tolerance(rtol))
     for k, v in vars(c).items():
