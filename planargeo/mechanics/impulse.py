@@ -16,6 +16,7 @@ import numpy as np
 from planargeo._validate import as_array, as_scalar
 from planargeo.errors import DegenerateGeometryError, NumericOverflowError, ShapeError
 from planargeo.geometry._docs import entries
+from planargeo.mechanics.model import _finite_tuple
 from planargeo.mechanics.subspaces import effective_mobility
 from planargeo.screws.inertia import centre_of_mass, mobility, radius_of_gyration
 
@@ -29,10 +30,7 @@ _documented = entries({
 
 def _single(x, name: str, n: int = 3) -> np.ndarray:
     """One vector of shape ``(n,)``, or a named error."""
-    a = as_array(x, name, (n,))
-    if a.shape != (n,):
-        raise ShapeError(f"{name} must have shape ({n},), got {a.shape}")
-    return a
+    return np.array(_finite_tuple(x, name, n))
 
 
 def _unit_force(line) -> np.ndarray:

@@ -1,10 +1,8 @@
 """Planar joints: motion spaces ``s`` and reaction spaces ``R`` (thesis 4.8, 5.61–5.63, 6.1).
 
-A ``k``-dof joint has a motion space ``s`` (3×k unit twists) and a reaction space ``R``
-(3×(3-k) unit wrenches) with ``sᵀR = 0`` (5.61, 6.1): in homogeneous coordinates a unit rotation
-*is* its point and a unit force *is* its line, so the reaction lines pass through the pivot
-(revolute) or the slide's ideal point (prismatic).  World coordinates at the origin; twists
-``[vx, vy, wz]``, wrenches ``[fx, fy, tz]``.  The bases follow thesis 4.8 / 5.63:
+A ``k``-dof joint has ``k`` unit twists ``s`` and ``3-k`` unit wrenches ``R``, ``sᵀR = 0``, world
+coordinates at the origin (twists ``[vx, vy, wz]``, wrenches ``[fx, fy, tz]``); ``e⊥`` is ``e``
+turned by +90° (5.63), and thesis 4.79's 2-dof "plane joint" is ``twin_prismatic`` here:
 
 ============================  ==============================  =============================================
 kind (dof)                    ``s`` columns                   ``R`` columns
@@ -18,12 +16,6 @@ kind (dof)                    ``s`` columns                   ``R`` columns
                               rotation about ``p``
 ``fixed`` (0)                 (none)                          unit forces through ``p`` along x, y, couple
 ============================  ==============================  =============================================
-
-``e⊥`` is ``e`` turned by +90° (5.63).  Thesis 4.8.4's 2-dof "plane joint" (4.79) is
-``twin_prismatic`` here; ``plane`` is the 3-dof free joint of :class:`planargeo.mechanics.model.Joint`.
-Column orders match :func:`planargeo.mechanics.kinematics.joint_axes`.  :class:`JointSpace` is one
-frozen joint (made by :func:`revolute` ... :func:`fixed`); :func:`motion_space` and
-:func:`reaction_space` broadcast; :func:`R_of` reads ``R`` off a joint's ``s``.
 """
 from __future__ import annotations
 

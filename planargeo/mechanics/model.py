@@ -1,10 +1,8 @@
 """Frozen mechanism descriptions :class:`Body`, :class:`Joint`, :class:`Model`, and the per-state :class:`Data`.
 
-A :class:`Model` is a tree: body ``i`` hangs from ``parents[i] < i`` (``-1`` the ground) through
-``joints[i]``; everything is validated up front, so every algorithm runs on any model that
-exists.  ``Joint.placement = (x, y, theta)`` is the joint frame's pose in the parent's frame (the
-world's for the ground); :class:`Body` mass properties are in the body frame.  The joint moves
-the body frame relative to the joint frame (thesis chapter 2):
+A :class:`Model` is a tree, validated up front: body ``i`` hangs from ``parents[i] < i`` (``-1`` the
+ground) through ``joints[i]``, whose frame has the pose ``placement = (x, y, theta)`` in the parent's
+frame; the joint moves the body frame relative to it (thesis chapter 2):
 
 ============================  ====  =================================================
 kind                          dofs  body frame = joint frame ...
@@ -19,11 +17,10 @@ kind                          dofs  body frame = joint frame ...
                                     rotated by ``q[2]`` (a free body)
 ``"fixed"``                   0     unchanged (a weld)
 ============================  ====  =================================================
-
-:func:`planargeo.mechanics.kinematics.kinematics` fills a :class:`Data` for a state.
 """
 from __future__ import annotations
 
+import itertools
 import math
 import operator
 from dataclasses import dataclass, field
@@ -278,20 +275,13 @@ class Model:
             raise InputError("bodies must not be empty")
         if len(joints) != len(bodies):
             raise InputError(f"joints must have one entry per body ({len(bodies)}), got {len(joints)}")
-        parents = _check_parents(self.parents, len(bodies))
-        g = _finite_tuple(self.gravity, "gravity", 2)
-        object.__setattr__(self, "bodies", bodies)
-        object.__setattr__(self, "joints", joints)
-        object.__setattr__(self, "parents", parents)
-        object.__setattr__(self, "gravity", g)
-        object.__setattr__(self, "contacts", tuple(self.contacts))
-        offs = [0]
-        for j in joints:
-            offs.append(offs[-1] + j.dofs)
-        object.__setattr__(self, "N", len(bodies))
-        object.__setattr__(self, "nq", offs[-1])
-        object.__setattr__(self, "q_offsets", tuple(offs))
-        object.__setattr__(self, "_arrays", {})
+        offs = (0, *itertools.accumulate(j.dofs for j in joints))
+        for name, value in (("bodies", bodies), ("joints", joints),
+                            ("parents", _check_parents(self.parents, len(bodies))),
+                            ("gravity", _finite_tuple(self.gravity, "gravity", 2)),
+                            ("contacts", tuple(self.contacts)), ("N", len(bodies)), ("nq", offs[-1]),
+                            ("q_offsets", offs), ("_arrays", {})):
+            object.__setattr__(self, name, value)
 
     # -- structure -------------------------------------------------------
     @_documented

@@ -406,7 +406,6 @@ def _U(A, R: np.ndarray, s=None, T=None, *, name: str = "A", eig=None, what=None
     if s is not None:
         return _right_solve((np.eye(3) - s @ _tr(T)) @ R, _tr(R) @ R)
     return _right_solve(*_reaction_gram(A, R, name, eig, what))
-    return _right_solve(AiR, M)
 
 
 # ----------------------------------------------------------------------------- T and U
@@ -493,9 +492,7 @@ def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
 @overflow_checked("s or f")
 @_parameters
 def active_force(s, f) -> np.ndarray:
-    """Active (joint) force ``Q = sᵀ f`` (thesis 6.61a, 6.51).
-
-    ``Qᵀq̇`` is the power of ``f`` on the joint's motion ``s q̇``.
+    """Active (joint) force ``Q = sᵀ f`` (thesis 6.61a, 6.51): ``Qᵀq̇`` is the power of ``f``.
 
     Parameters
     ----------
@@ -517,9 +514,7 @@ def active_force(s, f) -> np.ndarray:
 @overflow_checked("U or f")
 @_parameters
 def reaction_force(U, f) -> np.ndarray:
-    """Reaction-force components ``μ = Uᵀ f`` (thesis 6.61b, 6.54).
-
-    ``R μ`` is the part of ``f`` that the joint carries; it does no work on the joint's motion.
+    """Reaction-force components ``μ = Uᵀ f`` (thesis 6.61b, 6.54): ``R μ``: what the joint carries.
 
     Parameters
     ----------
@@ -567,9 +562,7 @@ def active_acceleration(T, a) -> np.ndarray:
 @overflow_checked("R or a")
 @_parameters
 def reactive_acceleration(R, a) -> np.ndarray:
-    """Reactive-acceleration components ``γ = Rᵀ a`` (thesis 6.62a, 6.60).
-
-    Zero for every acceleration ``s ψ`` the joint allows, since ``Rᵀs = 0``.
+    """Reactive-acceleration components ``γ = Rᵀ a`` (thesis 6.62a, 6.60); zero along ``s``.
 
     Parameters
     ----------
@@ -592,9 +585,7 @@ def reactive_acceleration(R, a) -> np.ndarray:
 @overflow_checked("A or s or R")
 @_parameters
 def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
-    """The complementary wrench projectors ``(T sᵀ, R Uᵀ)``, summing to 1 (thesis 6.75).
-
-    ``T sᵀ f = T Q`` is the active part of a wrench, ``R Uᵀ f = R μ`` its reaction part (6.38, 6.61).
+    """The complementary wrench projectors ``(T sᵀ, R Uᵀ)``, summing to 1 (thesis 6.75, 6.38, 6.61).
 
     Parameters
     ----------
@@ -653,8 +644,6 @@ def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 def joint_space_inertia(I, s) -> np.ndarray:
     """Joint-space inertia ``sᵀ I s`` (thesis 6.67, 6.74c): ``Q = (sᵀIs) ψ``; ``I`` may be singular.
 
-    Symmetric, positive definite when ``I`` is and the columns of ``s`` are independent.
-
     Parameters
     ----------
     {I s}
@@ -700,9 +689,7 @@ def reaction_space_inverse_inertia(I, R) -> np.ndarray:
 @overflow_checked("I or s or R")
 @_parameters
 def inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
-    """Split an inertia as ``I = T sᵀ I + R Uᵀ I`` (thesis 6.76); errors as for :class:`Decomposition`.
-
-    The second part is the effective inertia of the joint base (6.97, :func:`effective_base_inertia`).
+    """Split an inertia as ``I = T sᵀ I + R Uᵀ I`` (thesis 6.76, 6.97); errors as for :class:`Decomposition`.
 
     Parameters
     ----------
@@ -727,9 +714,7 @@ def inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
 @overflow_checked("I or s or R")
 @_parameters
 def inverse_inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
-    """Split an inverse inertia as ``I⁻¹ = s Tᵀ I⁻¹ + U Rᵀ I⁻¹`` (thesis 6.79–6.81); both parts symmetric.
-
-    The first part is the effective mobility ``s (sᵀIs)⁻¹ sᵀ`` (6.93, :func:`effective_mobility`).
+    """Split an inverse inertia as ``I⁻¹ = s Tᵀ I⁻¹ + U Rᵀ I⁻¹`` (thesis 6.79–6.81, 6.93).
 
     Parameters
     ----------
@@ -786,9 +771,7 @@ def effective_mobility(I, s, *, what: str | None = None) -> np.ndarray:
 @overflow_checked("I or R")
 @_parameters
 def effective_base_inertia(I, R) -> np.ndarray:
-    """Effective inertia of the joint base ``R Uᵀ I = R (RᵀI⁻¹R)⁻¹ Rᵀ`` (thesis 6.97); ``I`` definite.
-
-    The projection the articulated-body recursion adds to the parent (6.76, chapter 7).
+    """Effective inertia of the joint base ``R Uᵀ I = R (RᵀI⁻¹R)⁻¹ Rᵀ`` (6.97, 6.76); ``I`` definite.
 
     Parameters
     ----------
@@ -944,12 +927,8 @@ class Decomposition:
 
         Examples
         --------
-        A pendulum (m = 2, centre of mass at (1, 0), J = 0.5 about it) on a
-        revolute joint at the origin, loaded by a unit couple: the joint
-        torque is ``Q = sᵀf = 1``; the body turns at ``α = 1 / (J + m d²) = 0.4``,
-        its centre of mass accelerates by (0, 0.4), which takes the force
-        (0, 0.8) of ``T Q = [0, 0.8, 1]``; the pivot supplies the rest,
-        ``μ = (0, -0.8)`` (unit forces along x and y through the pivot).
+        The class's pendulum loaded by a unit couple: joint torque ``Q = 1``; ``T Q = [0, 0.8, 1]``
+        turns it at ``α = 0.4`` and the pivot supplies the rest, ``μ = (0, -0.8)``.
 
         >>> from planargeo.mechanics.joints import revolute
         >>> from planargeo.screws.twists import inertia_matrix
@@ -965,11 +944,8 @@ class Decomposition:
 
         Examples
         --------
-        The pendulum of :meth:`split_wrench` translated upwards at unit
-        acceleration: ``γ = Rᵀa = (0, 1)`` is the pivot's acceleration.  With
-        no joint torque the pivot's push would turn the body at
-        ``-m d / (J + m d²) = -0.8`` (``U γ = [0, 1, -0.8]``); ``ψ = 0.8`` is
-        the joint acceleration that cancels that turn.
+        The class's pendulum translated upwards at unit acceleration: the pivot's ``γ = (0, 1)``
+        alone would turn it at ``-0.8`` (``U γ``); ``ψ = 0.8`` cancels that turn.
 
         >>> from planargeo.mechanics.joints import revolute
         >>> from planargeo.screws.twists import inertia_matrix
@@ -985,9 +961,7 @@ class Decomposition:
 
         Examples
         --------
-        The pendulum of :meth:`split_wrench`: ``T = [0, 0.8, 1]`` (the wrench
-        of unit joint torque) plus the pivot's force (0, -0.8) through the
-        origin is the unit couple again.
+        The class's pendulum: ``T`` plus the pivot's force (0, -0.8) is the unit couple again.
 
         >>> from planargeo.mechanics.joints import revolute
         >>> from planargeo.screws.twists import inertia_matrix
@@ -1005,10 +979,8 @@ class Decomposition:
 
         Examples
         --------
-        The pendulum of :meth:`split_twist`: the reactive acceleration of a
-        unit upward push on the pivot, ``U[:, 1] = [0, 1, -0.8]``, plus the
-        joint's ``s ψ = [0, 0, 0.8]`` is the pure translation; a joint
-        acceleration alone is a rotation about the pivot.
+        The class's pendulum: ``U[:, 1]`` plus ``s ψ = [0, 0, 0.8]`` is the pure translation;
+        a joint acceleration alone is a rotation about the pivot.
 
         >>> from planargeo.mechanics.joints import revolute
         >>> from planargeo.screws.twists import inertia_matrix

@@ -1,17 +1,11 @@
 """Time integration of a mechanism's equations of motion, with diagnostics (``docs/simulation.md``).
 
-:func:`simulate` integrates ``q̈ = forward(model, q, q̇, τ, f_ext)`` with one of scipy's adaptive
-integrators (:data:`METHODS`) or fixed-step ``"RK4"``, recording at every accepted step the energy
-and, through hooks, constraint residuals and a watched condition number.  Singular configurations
-are events in ``result.events``, in time order: ``{"kind": "near-singular", "t", "cond",
-"t_start", "t_end"}`` per excursion of the watched condition number above ``cond_event`` (its
-peak, first and last steps above), and ``{"kind": "singular", "t", "cond", "message"}`` when the
-dynamics raise a :class:`~planargeo.errors.SingularConfigurationError`: the run then stops
-cleanly with ``status == "singular"``.  A run takes at most ``max_steps`` steps and, if given,
-``max_evals`` evaluations of the dynamics: a count known or extrapolated (at the 10th and 100th
-step) past them raises :class:`~planargeo.errors.SizeLimitError`; reaching them stops with
-``status == "limit"``, Ctrl-C with ``"interrupted"``, a state leaving double precision with
-``"failed"``.
+:func:`simulate` integrates ``q̈ = forward(model, q, q̇, τ, f_ext)`` with scipy (:data:`METHODS`) or
+fixed-step ``"RK4"``, recording the energy and, through hooks, residuals and a watched condition
+number.  ``result.events``, in time order: ``{"kind": "near-singular", "t", "cond", "t_start",
+"t_end"}`` per excursion of that number above ``cond_event`` (:func:`near_singular_events`), and
+``{"kind": "singular", "t", "cond", "message"}`` when the dynamics raise a
+:class:`~planargeo.errors.SingularConfigurationError`, which stops the run cleanly.
 
 Examples
 --------
@@ -265,7 +259,8 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     Returns
     -------
     SimulationResult
-        ``status`` ``"ok"``, ``"singular"``, ``"failed"``, ``"limit"`` or ``"interrupted"``.
+        ``status`` ``"ok"``, ``"singular"``, ``"failed"`` (the state left double precision), ``"limit"``
+        (``max_steps`` or ``max_evals`` reached) or ``"interrupted"`` (Ctrl-C).
 
     Raises
     ------
@@ -466,13 +461,9 @@ def simulate(model: Model, q0, qd0, t_end, *, tau=None, f_ext=None, method: str 
     if residual is not None:
         res = np.array([np.atleast_1d(np.asarray(residual(qs[k], qds[k]), dtype=float)) for k in range(len(ts))])
     tt = np.array(ts)
-    conds = None
-    events = []
-    if condition is not None:
-        conds = np.array(cs)
-        events = near_singular_events(tt, conds, cond_event)
-    if singular is not None:
-        events.append(singular)
+    conds = None if condition is None else np.array(cs)
+    events = [] if conds is None else near_singular_events(tt, conds, cond_event)
+    events += [] if singular is None else [singular]
     return SimulationResult(t=tt, q=qs, qd=qds, kinetic=Ts, potential=Vs, energy=Ts + Vs,
                             residual=res, status=status, message=message, method=method, nfev=nfev,
                             cond=conds, events=events, dissipated=dissipated)

@@ -21,11 +21,11 @@ from planargeo.algorithms.crba import mass_matrix
 from planargeo.algorithms.loops import loop_condition, loop_solve
 from planargeo.algorithms.stacked import blocks
 from planargeo.mechanics.contacts import contact_matrix, residual as contact_residual, stacked_contact_spaces, validate_contacts
-from planargeo._validate import as_array, check_overflow, check_tolerance, overflow_checked
-from planargeo.errors import InputError, ShapeError
+from planargeo._validate import check_overflow, check_tolerance, overflow_checked
+from planargeo.errors import InputError
 from planargeo.geometry._docs import entries
 from planargeo.mechanics.kinematics import kinematics
-from planargeo.mechanics.model import Model, _positive
+from planargeo.mechanics.model import Model, _finite_tuple, _positive
 from planargeo.simulate.integrate import MAX_STEPS, MULTISTEP, SimulationResult, _count, simulate
 
 __all__ = ["simulate_loops", "closure_residual", "closure_jacobian", "project_state", "baumgarte",
@@ -53,10 +53,7 @@ def _cs(model, contacts):
 
 def _state(model, x, name: str) -> np.ndarray:
     """One state vector ``(nq,)`` of ``model`` (a fresh float array), or a named error."""
-    a = as_array(x, name, (model.nq,))
-    if a.ndim != 1:
-        raise ShapeError(f"{name} must have shape ({model.nq},), got shape {a.shape}")
-    return np.array(a)
+    return np.array(_finite_tuple(x, name, model.nq))
 
 
 def _free(model, fixed) -> np.ndarray:
