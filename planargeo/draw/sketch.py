@@ -1,10 +1,5 @@
 """Shared basics of the gallery's pictures: a panel fitted to an axes, labels, dimensions, mechanisms.
 
-Functions that add elements with stable ids to a :class:`~planargeo.draw.picture.Picture`
-and return them: :func:`panel` and :func:`show`; :func:`label`, :func:`segment`,
-:func:`dimension`, :func:`arrow`; mechanisms (:func:`body`, :func:`pin`, :func:`ground`,
-:func:`slider`, :func:`com`, a whole :func:`model`...) and :func:`joint_split` (chapter 6).
-
 Examples
 --------
 >>> import matplotlib; matplotlib.use("Agg")
@@ -22,6 +17,7 @@ import math
 
 import numpy as np
 
+from planargeo._validate import as_scalar
 from planargeo.draw._shared import ENTRIES, added, as_picture, number, view_centre
 from planargeo.draw.layout import fit_box, shape_points
 from planargeo.draw.picture import PX_PER_PT, Picture, _color as _role_color, _dash as _role_dash, plain_text
@@ -120,8 +116,7 @@ def panel(ax, points, *, margin=None, keep=None, min_span=None, fit_height=False
           hmax=4.6) -> Picture:
     """A Picture the size of the axes ``ax`` (pixels at 100 dpi), its view fitted to ``points``.
 
-    No ticks, no margin, the view of :func:`planargeo.draw.layout.fit_box`; with ``fit_height``
-    the figure's height first follows the points' aspect.  The axes are not changed.
+    The view of :func:`planargeo.draw.layout.fit_box`; the axes are not changed.
 
     Parameters
     ----------
@@ -336,12 +331,7 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
     L = math.hypot(*d)
     if L == 0.0:
         raise InputError("dimension: p and q must be distinct points")
-    try:
-        offset, at = float(offset), float(at)
-    except (TypeError, ValueError):
-        raise InputError(f"offset and at must be numbers, got {offset!r}, {at!r}") from None
-    if not (math.isfinite(offset) and math.isfinite(at)):
-        raise InputError(f"offset and at must be finite, got {offset!r}, {at!r}")
+    offset, at = as_scalar(offset, "offset"), as_scalar(at, "at")
     as_picture(pic)
     n = np.array([-d[1], d[0]]) / L
     p2, q2 = p + offset * n, q + offset * n
@@ -752,9 +742,7 @@ def frame(pic: Picture, id: str, origin, *, angle: float = 0.0, length: float = 
 @documented
 def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: str = "c",
         desc: str = "centre of mass") -> dict:
-    """The centre-of-mass symbol: a white disc (``id + ":disc"``) and two black quarters (``id``).
-
-    The black quarters fill the first and third quadrants.
+    """The centre-of-mass mark: a white disc (``id + ":disc"``), black 1st and 3rd quarters (``id``).
 
     Parameters
     ----------
@@ -855,10 +843,7 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
         raise InputError(f"names must hold one label per body ({model.N}), got {len(names)}")
     out["shapes"] = model_shapes(model, data, width=width)
     for i, (b, shape) in enumerate(zip(model.bodies, out["shapes"])):
-        if names is not None:
-            name = names[i]
-        else:
-            name = b.name if labels and b.name else (str(i + 1) if labels else None)
+        name = names[i] if names is not None else (b.name or str(i + 1)) if labels else None
         words = body_words(name, i + 1)
         el = body(pic, f"{prefix}body {i + 1}", shape, alpha=alpha, symbol=str(name or i + 1),
                   desc=words)
