@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import argparse
 import importlib
-import importlib.util
 import sys
 
 # name -> (module, one-line help)
@@ -19,19 +18,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
 }
 
 
-def _available() -> dict[str, tuple[str, str]]:
-    out = {}
-    for name, (mod, helptext) in COMMANDS.items():
-        try:
-            if importlib.util.find_spec(mod) is not None:
-                out[name] = (mod, helptext)
-        except ModuleNotFoundError:
-            pass
-    return out
-
-
 def build_parser() -> argparse.ArgumentParser:
-    """The top-level parser, one subcommand per available module of :data:`COMMANDS`.
+    """The top-level parser, one subcommand per module of :data:`COMMANDS`.
 
     Returns
     -------
@@ -45,7 +33,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     parser.add_argument("--version", action="version", version=f"planargeo {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
-    for name, (_mod, helptext) in _available().items():
+    for name, (_mod, helptext) in COMMANDS.items():
         sub.add_parser(name, help=helptext, description=helptext)
     return parser
 
@@ -70,14 +58,14 @@ def main(argv: list[str] | None = None) -> int:
         parser.print_help()
         return 0
     name = argv[0]
-    cmds = _available()
-    if name not in cmds:
+    if name not in COMMANDS:
         parser.print_usage(sys.stderr)
-        print(f"planargeo: error: unknown command {name!r} (choose from {', '.join(cmds)})",
+        print(f"planargeo: error: unknown command {name!r} (choose from {', '.join(COMMANDS)})",
               file=sys.stderr)
         return 2
-    mod = importlib.import_module(cmds[name][0])
-    sub = argparse.ArgumentParser(prog=f"planargeo {name}", description=cmds[name][1])
+    module, helptext = COMMANDS[name]
+    mod = importlib.import_module(module)
+    sub = argparse.ArgumentParser(prog=f"planargeo {name}", description=helptext)
     mod.add_arguments(sub)
     args = sub.parse_args(argv[1:])
     from planargeo.errors import PlanargeoError

@@ -159,11 +159,8 @@ def _file_digest(path: Path) -> str | None:
     try:
         if not path.is_file():
             return None
-        h = hashlib.sha256()
         with open(path, "rb") as fh:
-            for block in iter(lambda: fh.read(1 << 20), b""):
-                h.update(block)
-        return h.hexdigest()
+            return hashlib.file_digest(fh, "sha256").hexdigest()
     except OSError:
         return None
 

@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import functools
 import importlib
-import importlib.util
 import inspect
 import math
 import warnings
@@ -38,7 +37,7 @@ class SceneSizeError(SceneError, SizeLimitError):
 class SceneRangeError(SceneError, NumericOverflowError):
     """Finite parameters the scene cannot evaluate in double precision (overflow, a zero that underflowed)."""
 
-# Scene modules, imported on first use (a module that does not exist yet is skipped).
+# Scene modules, imported on first use.
 _MODULES = [f"planargeo.scenes.{m}" for m in (
     "chain", "car", "two_body", "horizontal_chain", "mobility_example", "slider_crank", "trees", "subspace",
     "impulse", "articulated", "splitting")]
@@ -134,8 +133,7 @@ def _load() -> None:
     if _loaded:
         return
     for mod in _MODULES:
-        if importlib.util.find_spec(mod) is not None:
-            importlib.import_module(mod)
+        importlib.import_module(mod)
     _loaded = True
 
 

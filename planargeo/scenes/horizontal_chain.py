@@ -20,8 +20,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo.mechanics.model import Body, Joint, Model
+from planargeo.mechanics.model import Model
 from planargeo.scenes import SceneResult, plain, register
+from planargeo.scenes.articulated import bent_chain_model
 
 __all__ = ["horizontal_chain", "horizontal_chain_model", "effective_centre"]
 
@@ -40,9 +41,7 @@ def horizontal_chain_model(n: int, m: float, rho: float, L: float) -> Model:
     -------
     Model
     """
-    bodies = [Body(m, (L / 2, 0.0), m * rho * rho, name=f"body {i + 1}") for i in range(n)]
-    joints = [Joint("revolute", (0.0 if i == 0 else L, 0.0, 0.0), name=f"CJ{i + 1}") for i in range(n)]
-    return Model(bodies, joints, list(range(-1, n - 1)), gravity=(0.0, 0.0))
+    return bent_chain_model(n, rho, L, m)
 
 
 def effective_centre(A) -> tuple[float, float, float, float]:

@@ -16,8 +16,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo.mechanics.model import Body, Joint, Model
+from planargeo.mechanics.model import Model
 from planargeo.scenes import SceneResult, check_param, plain, register
+from planargeo.scenes.articulated import bent_chain_model
 
 __all__ = ["two_body", "positive"]
 
@@ -41,9 +42,7 @@ def positive(value, name: str) -> float:
 
 def two_body_model(m: float, rho: float, L: float) -> Model:
     """Two identical bodies on revolute joints at the origin and at ``(L, 0)`` of body 1, no gravity."""
-    return Model([Body(m, (L / 2, 0.0), m * rho * rho, name=f"body {i}") for i in (1, 2)],
-                 [Joint("revolute", (0.0, 0.0, 0.0), name="CJ1"), Joint("revolute", (L, 0.0, 0.0), name="CJ2")],
-                 [-1, 0], gravity=(0.0, 0.0))
+    return bent_chain_model(2, rho, L, m)
 
 
 @register("two-body", checks={"m": "positive", "rho": "positive", "L": "positive"})
