@@ -21,13 +21,13 @@ import math
 import numpy as np
 
 from planargeo.draw.picture import Picture
+from planargeo.draw.pictures._words import subscript
 from planargeo.draw.style import COLORS
 
 __all__ = ["chain_picture", "OVERLAYS", "LAYERS"]
 
 OVERLAYS = ("velocity poles", "acceleration poles", "bias terms", "internal forces",
             "T/U split", "articulated inertias")
-_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 #: key of the data (its symbol) | overlay | kind | per link or joint | role | colour's role |
 #: equation | unit, and below, the meaning
@@ -140,7 +140,7 @@ def chain_picture(w, *, overlays: dict, view, split: dict | None = None, focus=N
         for i in range(n):
             if key == "TQ" and not split["active_on"][i]:
                 continue
-            symbol = sym + str(i + 1).translate(_SUB)
+            symbol = sym + subscript(i + 1)
             desc = f"{meaning} ({eq}): {_value(kind, arr[i], unit)}"
             faded = focus is not None and focus != (per, i)
             eid = f"{key}{i + 1}"

@@ -1,8 +1,7 @@
-"""Drawing geometry without a renderer: poles, clipped lines, conic curves, glyphs.
+"""What a picture needs from the projective plane, as plain coordinates (no matplotlib here).
 
-What a picture needs from the projective plane, as plain coordinates (no matplotlib here):
-:func:`point_xy`, :func:`clip_line`, :func:`conic_geometry` (the class of a conic and the
-affine map carrying a unit curve onto it), :func:`conic_curves` and :func:`arc_glyph`.
+Poles (:func:`point_xy`), clipped lines, a conic's class and the affine map carrying a unit curve
+onto it (:func:`conic_geometry`), its curves, and the rotation glyph.
 """
 from __future__ import annotations
 
@@ -290,13 +289,12 @@ def conic_geometry(C, *, rtol: float = 1e-9) -> dict:
         l0, l1, r0, r1 = l1, l0, r1, r0
     if r0[0] * r1[1] - r0[1] * r1[0] < 0:
         r1 = (-r1[0], -r1[1])
-    tol = rtol
-    if abs(l1) > tol * max(1.0, abs(l0)) and abs(l0) > tol:
+    if abs(l1) > rtol * max(1.0, abs(l0)) and abs(l0) > rtol:
         # central conic
         x, y = _solve2(e00, e01, e01, e11, b0, b1)
         x, y = -x, -y
         k = c + (b0 * x + b1 * y)
-        if abs(k) <= tol * max(abs(l0), 1.0) * max(1.0, x * x + y * y):
+        if abs(k) <= rtol * max(abs(l0), 1.0) * max(1.0, x * x + y * y):
             if l0 * l1 > 0:
                 return {"kind": "point", "point": np.array([x, y]), "imaginary": False}
             # two lines through x0: sqrt|l0| u = ± sqrt|l1| v in the eigenframe
@@ -322,10 +320,10 @@ def conic_geometry(C, *, rtol: float = 1e-9) -> dict:
             kind = "hyperbola"
         aff = np.array([[r0[0] * a0, r1[0] * a1, x], [r0[1] * a0, r1[1] * a1, y], [0.0, 0.0, 1.0]])
         return {"kind": kind, "affine": aff, "imaginary": imaginary, "center": np.array([x, y])}
-    if abs(l0) > tol:
+    if abs(l0) > rtol:
         # A has rank one: parabola or parallel lines
         be, bf = b0 * r0[0] + b1 * r0[1], b0 * r1[0] + b1 * r1[1]
-        if abs(bf) > tol * max(1.0, abs(be), abs(c)):
+        if abs(bf) > rtol * max(1.0, abs(be), abs(c)):
             # l0 u^2 + 2 be u + 2 bf v + c = 0  ->  v = -(l0 u^2 + 2 be u + c) / (2 bf)
             u0 = -be / l0
             v0 = -(c - be * be / l0) / (2 * bf)
@@ -336,22 +334,17 @@ def conic_geometry(C, *, rtol: float = 1e-9) -> dict:
                             [0.0, 0.0, 1.0]])
             return {"kind": "parabola", "affine": aff, "imaginary": False}
         disc = be * be - l0 * c
-        if disc < -tol:
+        if disc < -rtol:
             return {"kind": "empty", "imaginary": True}
         r = math.sqrt(max(disc, 0.0))
         us = sorted({(-be + r) / l0, (-be - r) / l0}) if r > 0 else [-be / l0]
         return {"kind": "lines", "imaginary": False,
                 "lines": [_line_from_euclid(r0[0], r0[1], -u) for u in us]}
     # A == 0: the line at infinity times a finite line  2 b.x + c = 0
-    if math.hypot(b0, b1) > tol:
+    if math.hypot(b0, b1) > rtol:
         return {"kind": "lines", "imaginary": False,
                 "lines": [_line_from_euclid(2 * b0, 2 * b1, c)], "line_at_infinity": True}
     return {"kind": "lines", "imaginary": False, "lines": [], "line_at_infinity": True}
-
-
-def _inside(xy: np.ndarray, box) -> np.ndarray:
-    x0, x1, y0, y1 = box
-    return (xy[:, 0] >= x0) & (xy[:, 0] <= x1) & (xy[:, 1] >= y0) & (xy[:, 1] <= y1)
 
 
 def _runs(xy: np.ndarray, keep: np.ndarray) -> list[np.ndarray]:
@@ -398,10 +391,12 @@ def conic_curves(C, box, geometry: dict | None = None) -> list[np.ndarray]:
         curves = [c @ A[:2, :2].T + A[:2, 2] for c in UNIT_CURVES[g["kind"]]]
         if g["kind"] == "ellipse":
             return curves
+        x0, x1, y0, y1 = box
         out = []
         for c in curves:
-            ok = np.all(np.isfinite(c), axis=1)
-            out += _runs(c, ok & _inside(c, box))
+            x, y = c[:, 0], c[:, 1]
+            keep = np.all(np.isfinite(c), axis=1) & (x >= x0) & (x <= x1) & (y >= y0) & (y <= y1)
+            out += _runs(c, keep)
         return out
     if g["kind"] == "lines":
         segs = (clip_line(ln, box) for ln in g["lines"])

@@ -36,6 +36,7 @@ Examples
 """
 from __future__ import annotations
 
+import copy
 import math
 from operator import itemgetter
 from typing import Any
@@ -217,10 +218,16 @@ def _dash(role: str):
     return None
 
 
+def _align(n) -> tuple[str, str]:
+    """Text alignment for a label put beside an anchor in the pixel direction ``n``."""
+    ha = "left" if n[0] > 0.3 else "right" if n[0] < -0.3 else "center"
+    va = "bottom" if n[1] > 0.3 else "top" if n[1] < -0.3 else "center"
+    return ha, va
+
+
 _SPOT_ANGLES = np.deg2rad([45, 135, 225, 315, 0, 90, 180, 270])
 _SPOT_DIR = np.column_stack([np.cos(_SPOT_ANGLES), np.sin(_SPOT_ANGLES)])
-_SPOT_HA = ["left" if c > 0.3 else "right" if c < -0.3 else "center" for c in _SPOT_DIR[:, 0]]
-_SPOT_VA = ["bottom" if c > 0.3 else "top" if c < -0.3 else "center" for c in _SPOT_DIR[:, 1]]
+_SPOT_HA, _SPOT_VA = zip(*map(_align, _SPOT_DIR))
 _ALIGN_X = {"left": 0.0, "center": 0.5, "right": 1.0}
 _ALIGN_Y = {"bottom": 0.0, "center": 0.5, "top": 1.0}
 #: the eight spots as plain floats: (cos, sin, box's left edge and bottom in box sizes)
@@ -310,8 +317,7 @@ class Picture:
         >>> len(a.elements), len(b.elements)
         (0, 1)
         """
-        out = object.__new__(Picture)
-        out.__dict__.update(self.__dict__)
+        out = copy.copy(self)
         out.elements = list(self.elements)
         out.handles = list(self.handles)
         out._ids = set(self._ids)

@@ -21,7 +21,7 @@ import re
 
 import numpy as np
 
-from planargeo.draw.picture import Picture
+from planargeo.draw.picture import Picture, _align
 from planargeo.geometry.projective import is_ideal
 
 __all__ = ["label_line", "label_toward", "point_along", "builder"]
@@ -51,13 +51,6 @@ def builder(fn):
     fn.__doc__ = "\n".join([doc] + [text for key, text in _BUILDER_DOC.items()
                                      if not re.search(rf"^{key}\b", doc, re.M)])
     return fn
-
-
-def _align(n) -> tuple[str, str]:
-    """Text alignment for a label put beside an anchor in the pixel direction ``n``."""
-    ha = "left" if n[0] > 0.3 else "right" if n[0] < -0.3 else "center"
-    va = "bottom" if n[1] > 0.3 else "top" if n[1] < -0.3 else "center"
-    return ha, va
 
 
 def label_line(pic: Picture, id: str, text: str, *, anchor=None, gap: float = 7.0,
