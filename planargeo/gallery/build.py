@@ -1,14 +1,8 @@
-"""``planargeo gallery``: regenerate (or ``--check``) the SVG gallery.
+"""``planargeo gallery``: regenerate (or ``--check``) the SVG gallery, the same bytes on every run.
 
-Each registered figure (:mod:`planargeo.gallery.figures`) is rendered to ``<out>/<name>.svg``
-in the package's fixed style, so two runs give identical bytes; ``<out>/README.md`` indexes
-them with their captions and the benchmark charts ``planargeo bench`` copies into
-``<out>/benchmarks/``.  ``--check`` renders into a temporary folder and lists stale, missing
-or extra files.  A run never loses a file it did not write: the manifest
-``.planargeo-gallery`` lists each file written with its SHA-256, and only files still holding
-those bytes are overwritten or deleted (:func:`planargeo.files.owned_files`; ``--force``
-overwrites a user's file of a figure's name).  All files are written together
-(:func:`planargeo.files.atomic_write_many`); problems raise
+A run never loses a file it did not write: the manifest ``.planargeo-gallery`` lists each file
+written with its SHA-256, and only files still holding those bytes are overwritten or deleted
+(``--force`` overwrites a user's file of a figure's name); problems raise
 :class:`~planargeo.errors.OutputError`.
 """
 from __future__ import annotations
