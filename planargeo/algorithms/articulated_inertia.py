@@ -63,12 +63,13 @@ class ArticulatedInertias(_Reactions):
     steps: int | None = None
 
 
-def _chain(N):
-    return list(range(-1, N - 1))
-
-
-def _lists(S, tau):
-    return [np.asarray(x, dtype=float).reshape(3, -1) for x in S], [np.asarray(x, dtype=float).reshape(-1) for x in tau]
+def _arrays(I, S, kappa, p, tau, parents):
+    """The arguments of a recursion on arrays as float arrays and lists (``parents`` default: a chain)."""
+    I = np.asarray(I, dtype=float)
+    S = [np.asarray(x, dtype=float).reshape(3, -1) for x in S]
+    tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
+    parents = list(range(-1, I.shape[0] - 1)) if parents is None else [int(x) for x in parents]
+    return I, S, np.asarray(kappa, dtype=float), np.asarray(p, dtype=float), tau, parents
 
 
 def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_points=None, *,
@@ -107,12 +108,8 @@ def articulated_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_
     >>> float(r.A[0][0, 0])
     2.0
     """
-    A = np.array(I, dtype=float)                   # (7.2): A_N = I_N, children added below
-    N = A.shape[0]
-    parents = _chain(N) if parents is None else [int(x) for x in parents]
-    S, tau = _lists(S, tau)
-    kappa = np.asarray(kappa, dtype=float)
-    d = np.array(p, dtype=float)                   # d_N = p_N
+    I, S, kappa, p, tau, parents = _arrays(I, S, kappa, p, tau, parents)
+    A, d, N = I.copy(), p.copy(), I.shape[0]       # (7.2): A_N = I_N, d_N = p_N, children added below
     if steps is not None:
         if isinstance(steps, (bool, np.bool_)) or not isinstance(steps, (int, np.integer)) or steps < 0:
             raise InputError(f"steps must be None or a non-negative integer, got {steps!r}")

@@ -13,8 +13,8 @@ import numpy as np
 
 from planargeo.errors import SingularConfigurationError
 from planargeo.mechanics.subspaces import _checked_gram, _effective_mobility, _solve, _T
-from planargeo.algorithms.articulated_inertia import (_EYE3, ArticulatedInertias, _chain, _lists, _Reactions,
-                                                      _state_arrays, articulated_recursion)
+from planargeo.algorithms.articulated_inertia import (_EYE3, ArticulatedInertias, _arrays, _Reactions, _state_arrays,
+                                                      articulated_recursion)
 
 __all__ = ["ArticulatedMobilities", "mobility_recursion", "articulated_mobility", "SOLVE_COND_LIMIT"]
 
@@ -120,11 +120,8 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_poi
     >>> float(r.Lambda_inv[0][2, 2])                  # 4 / (m (L² + 4 ρ²)), thesis 7.42
     2.0
     """
-    I = np.asarray(I, dtype=float)
+    I, S, kappa, p, tau, parents = _arrays(I, S, kappa, p, tau, parents)
     N = I.shape[0]
-    parents = _chain(N) if parents is None else [int(x) for x in parents]
-    S, tau = _lists(S, tau)
-    kappa, p = np.asarray(kappa, dtype=float), np.asarray(p, dtype=float)
     children = [[] for _ in range(N)]
     for i, j in enumerate(parents):
         if j >= 0:

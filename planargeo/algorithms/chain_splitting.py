@@ -13,7 +13,7 @@ import numpy as np
 from planargeo.errors import TopologyError
 from planargeo.geometry._docs import entries
 from planargeo.mechanics.subspaces import _solve
-from planargeo.algorithms.articulated_inertia import _EYE3, _per_state, _state_arrays, articulated_recursion
+from planargeo.algorithms.articulated_inertia import _EYE3, _arrays, _per_state, _state_arrays, articulated_recursion
 from planargeo.algorithms.articulated_mobility import _check_solvable, mobility_recursion
 from planargeo.algorithms.projective import force_propagator, joint_accelerations
 
@@ -152,11 +152,10 @@ def chain_split(I, S, kappa, p, tau, parents=None, joint_points=None) -> ChainSp
     """
     N = len(S)
     _check_chain(parents, N)
-    parents = list(range(-1, N - 1))
+    I, S, kappa, p, tau, parents = _arrays(I, S, kappa, p, tau, None)
     art = articulated_recursion(I, S, kappa, p, tau, parents, None, joint_points)      # (7.1.1)
     mob = mobility_recursion(I, S, kappa, p, tau, parents, None, joint_points)        # (7.4.1)
-    S, T, A, d, tau = art.S, art.T, art.A, art.d, [np.asarray(x, dtype=float).reshape(-1) for x in tau]
-    kappa, a, f = np.asarray(kappa, dtype=float), np.zeros((N, 3)), np.zeros((N, 3))
+    T, A, d, a, f = art.T, art.A, art.d, np.zeros((N, 3)), np.zeros((N, 3))
     for i in range(N - 1):
         j = i + 1
         args = (mob.Lambda_inv[i], mob.b[i], A[j], d[j], T[j], S[j], tau[j], kappa[j])

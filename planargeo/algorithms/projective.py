@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from planargeo.mechanics.subspaces import _effective_mobility, _solve, T_of
-from planargeo.algorithms.articulated_inertia import _per_state, _state_arrays, articulated_recursion
+from planargeo.algorithms.articulated_inertia import _arrays, _per_state, _state_arrays, articulated_recursion
 
 __all__ = ["acceleration_propagator", "force_propagator", "joint_accelerations",
            "ProjectiveWorkspace", "projective_solve", "projective_workspace", "forward_dynamics_projective"]
@@ -185,11 +185,9 @@ def projective_solve(I, S, kappa, p, tau, parents=None, points=None, joint_point
     ...                  np.zeros((1, 3)), np.zeros((1, 3)), [np.array([1.0])]).qdd    # unit torque
     array([1.])
     """
+    I, S, kappa, p, tau, parents = _arrays(I, S, kappa, p, tau, parents)
     art = articulated_recursion(I, S, kappa, p, tau, parents, points, joint_points)
     N = len(art.S)
-    parents = list(range(-1, N - 1)) if parents is None else [int(x) for x in parents]
-    kappa = np.asarray(kappa, dtype=float)
-    tau = [np.asarray(x, dtype=float).reshape(-1) for x in tau]
     psi, a = _accelerations(art, kappa, tau, parents)
     A, d, T, R, U = art.A, art.d, art.T, art.R, art.U
     f, mu, gamma = np.zeros((N, 3)), [None] * N, [None] * N
