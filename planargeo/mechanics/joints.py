@@ -244,16 +244,15 @@ class JointSpace:
 
     def __init__(self, kind: str, point=(0.0, 0.0), direction=(1.0, 0.0)):
         kind = _check_kind(kind)
-        p = np.array(_finite_tuple(point, "point", 2))
+        p = _frozen(_finite_tuple(point, "point", 2))
         e = None
         if kind in _USES_DIRECTION:
-            e = unit_translation(_finite_tuple(direction, "direction", 2))[:2]
-        object.__setattr__(self, "_kind", kind)
-        object.__setattr__(self, "_point", _frozen(p))
-        object.__setattr__(self, "_direction", None if e is None else _frozen(e))
+            e = _frozen(unit_translation(_finite_tuple(direction, "direction", 2))[:2])
         dirn = (1.0, 0.0) if e is None else e
-        object.__setattr__(self, "_s", _frozen(motion_space(kind, p, dirn)))
-        object.__setattr__(self, "_R", _frozen(reaction_space(kind, p, dirn)))
+        for name, value in (("_kind", kind), ("_point", p), ("_direction", e),
+                            ("_s", _frozen(motion_space(kind, p, dirn))),
+                            ("_R", _frozen(reaction_space(kind, p, dirn)))):
+            object.__setattr__(self, name, value)
 
     def __setattr__(self, name, value):
         raise AttributeError(f"JointSpace is frozen; cannot set {name!r}")
@@ -325,15 +324,13 @@ class JointSpace:
         return DOF[self._kind]
 
     def __repr__(self) -> str:
-        p = tuple(float(x) for x in self._point)
-        if self._direction is None:
-            return f"JointSpace({self._kind!r}, point={p})"
-        d = tuple(float(x) for x in self._direction)
-        return f"JointSpace({self._kind!r}, point={p}, direction={d})"
+        kind, p, d = self._key()
+        direction = "" if d is None else f", direction={d}"
+        return f"JointSpace({kind!r}, point={p}{direction})"
 
     def _key(self):
-        d = None if self._direction is None else tuple(self._direction)
-        return self._kind, tuple(self._point), d
+        d = None if self._direction is None else tuple(map(float, self._direction))
+        return self._kind, tuple(map(float, self._point)), d
 
     def __eq__(self, other) -> bool:
         if not isinstance(other, JointSpace):

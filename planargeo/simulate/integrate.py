@@ -27,7 +27,7 @@ from planargeo._validate import as_array, as_scalar
 from planargeo.errors import (InputError, NumericOverflowError, PlanargeoError, ShapeError,
                               SingularConfigurationError, SizeLimitError)
 from planargeo.mechanics.kinematics import check_state, kinematics
-from planargeo.mechanics.model import Model
+from planargeo.mechanics.model import Model, _positive
 
 __all__ = ["simulate", "SimulationResult", "energy", "progress_enabled", "near_singular_events", "METHODS",
            "MULTISTEP", "MAX_STEPS", "RATE_LIMIT"]
@@ -498,7 +498,9 @@ def _options(method, t_end, dt, rtol, atol, max_step, max_steps):
     atol = as_scalar(atol, "atol")
     if not atol >= 0:
         raise InputError(f"atol must be non-negative, got {atol!r}")
-    max_step = _positive(max_step, "max_step", finite=False)
+    max_step = as_scalar(max_step, "max_step", finite=False)
+    if not max_step > 0:                # NaN too
+        raise InputError(f"max_step must be positive, got {max_step!r}")
     with np.errstate(over="ignore"):
         needs = {"t_end / dt": t_end / dt if dt is not None else 0.0,
                  "t_end / max_step": t_end / max_step if method != "RK4" else 0.0}
@@ -513,13 +515,6 @@ def _count(x, name: str, alternative: str = "") -> int:
     if isinstance(x, (bool, np.bool_)) or not isinstance(x, (int, np.integer)) or x < 1:
         raise InputError(f"{name} must be a positive integer{alternative}, got {x!r}")
     return int(x)
-
-
-def _positive(x, name: str, finite: bool = True) -> float:
-    v = as_scalar(x, name, finite=finite)
-    if not v > 0:
-        raise InputError(f"{name} must be positive, got {v!r}")
-    return v
 
 
 def _eval_budget(max_evals, method: str, t_end: float, dt) -> int | None:
