@@ -241,7 +241,10 @@ _ENTRIES = {"id": "id : str\n    Stable name of the element.",
             "symbol": "symbol, desc : str\n    Thesis symbol and a one-line description.",
             "color": "color : str, optional\n    Colour instead of the role's.",
             "z": "z : int\n    Drawing order.",
-            "opacity": "opacity : float\n    Opacity of the whole element (faded: below 1)."}
+            "opacity": "opacity : float\n    Opacity of the whole element (faded: below 1).",
+            "label": "label : str, optional\n    Its text in the picture (default: ``symbol``).",
+            "width": "width : float, optional\n    Line width in pixels.",
+            "dash": "dash : list of float, optional\n    Dash pattern in pixels (a line's default: its role's)."}
 _documented = entries(_ENTRIES)
 
 #: element keys left out of the data when they hold these values
@@ -399,8 +402,7 @@ class Picture:
         p : array_like (3,)
             ``[vx, vy, w]``.
         {role symbol}
-        label : str, optional
-            Text beside the pole (default: ``symbol``).
+        {label}
         glyph : bool
             Draw the rotation glyph.
         size : float, optional
@@ -467,17 +469,13 @@ class Picture:
             ``[fx, fy, tz]``: the force and its moment about the origin, as in 4.27; a zero
             force is the line at infinity.
         {role symbol}
-        label : str, optional
-            Text at the line (default: ``symbol``).
+        {label}
         anchor : (float, float), optional
             Where the sense arrow sits (projected onto the line; default: the view's centre).
         arrow : bool
             Draw the sense arrow.
         {color opacity}
-        width : float, optional
-            Line width in pixels.
-        dash : list of float, optional
-            Dash pattern in pixels (default: the role's).
+        {width dash}
         """
         lx, ly, lz = _three(id, l, "line")
         color = _color(role, color)
@@ -532,8 +530,7 @@ class Picture:
         role : str
             ``"conic"`` or ``"inertia"`` (dashed, centre marked).
         {symbol}
-        label : str, optional
-            Text at the curve (default: ``symbol``).
+        {label}
         mark_center : bool, optional
             Mark the centre (default: for inertias and imaginary conics).
         {color opacity}
@@ -580,10 +577,7 @@ class Picture:
             Fill colour.
         color : str, optional
             Stroke colour (``"none"``: no stroke).
-        width : float, optional
-            Stroke width in pixels.
-        dash : list of float, optional
-            Dash pattern in pixels.
+        {width dash}
         alpha : float
             Opacity of the fill.
         label : str, optional

@@ -24,6 +24,7 @@ import numpy as np
 from planargeo.draw.picture import FONT_PX, PX_PER_PT, Picture, plain_text
 from planargeo.draw.pictures._words import num, where, words_data
 from planargeo.draw.pictures.common import _align, builder, label_line, label_toward
+from planargeo.draw.pictures.kit import label_at
 from planargeo.draw.style import COLORS, SUM
 from planargeo.geometry.projective import is_at_infinity, is_ideal
 from planargeo.screws.inertia import mass, radius_of_gyration
@@ -152,9 +153,8 @@ def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(56
     pic.path("caption", [[bx0, by0], [bx1, by0], [bx1, band_top], [bx0, band_top]], role="text",
              closed=True, fill="#FFFFFF", color="#444444", width=0.6, z=20, symbol="step",
              desc=f"the step shown: {caption}")
-    pic.elements[-1]["parts"] += [
-        {"p": "text", "x": bx0, "y": band_top, "dx": 6.0, "dy": -5.0 - 1.3 * FONT_PX * i, "text": line,
-         "ha": "left", "va": "top"} for i, line in enumerate(lines)]
+    for i, line in enumerate(lines):
+        label_at(pic, (bx0, band_top), line, gap=6.0, dy=-5.0 - 1.3 * FONT_PX * i, va="top")
     centre, nrm = _frame(c, shown)
     view_centre = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
     lines_labelled = 0
@@ -220,9 +220,7 @@ def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(56
                     d = (b - a) * np.array([pic.kx, pic.ky])
                     u = np.array([-d[1], d[0]]) / max(math.hypot(*d), 1e-300)
                     ha, va = _align(u)
-                    pic.elements[-1]["parts"].append(
-                        {"p": "text", "x": float((a[0] + b[0]) / 2), "y": float((a[1] + b[1]) / 2),
-                         "dx": float(u[0] * 8), "dy": float(u[1] * 8), "text": label, "ha": ha, "va": va})
+                    label_at(pic, (a + b) / 2, label, gap=float(u[0] * 8), dy=float(u[1] * 8), ha=ha, va=va)
             if faded:
                 pic.elements[-1]["opacity"] = FADED
             pic.elements[-1]["step"] = i + 1

@@ -51,17 +51,20 @@ def foot_on_line(w, p) -> np.ndarray:
     return p - (m_p / F) * np.array([-fy, fx]) / F
 
 
-def label_at(pic: Picture, xy, text: str, *, gap: float = 6.0) -> None:
+def label_at(pic: Picture, xy, text: str, *, gap: float = 6.0, dy: float | None = None,
+             ha: str = "left", va: str = "bottom") -> None:
     """Add a label (moved by the picture's placer) ``gap`` pixels from ``xy`` to the element added last.
 
     Parameters
     ----------
     pic, xy, text, gap
+    dy, ha, va : optional
+        Its offset up in pixels (default: ``gap``) and its alignment.
     """
     x, y = (float(v) for v in xy)
     if text and math.isfinite(x) and math.isfinite(y):
-        pic.elements[-1]["parts"].append({"p": "text", "x": x, "y": y, "dx": gap, "dy": gap,
-                                          "text": text, "ha": "left", "va": "bottom"})
+        pic.elements[-1]["parts"].append({"p": "text", "x": x, "y": y, "dx": gap, "dy": gap if dy is None else dy,
+                                          "text": text, "ha": ha, "va": va})
 
 
 def force(pic: Picture, id: str, w, *, scale: float, anchor, role: str = "reaction",
@@ -344,7 +347,5 @@ def scale_bar(pic: Picture, unit: str = "m") -> float:
     xy = np.array([[x0 + pad_x, y0 + pad_y], [x0 + pad_x + L, y0 + pad_y]])
     pic.path("scale bar", xy, role="construct", symbol="scale", color=COLORS["text"], width=2.0 * PX_PER_PT,
              desc=f"scale bar: {L:g} {unit}", z=1)
-    pic.elements[-1]["parts"].append({"p": "text", "x": float(xy[1, 0]), "y": float(xy[1, 1]),
-                                      "dx": 4.0, "dy": 0.0, "text": f"{L:g} {unit}", "ha": "left",
-                                      "va": "center"})
+    label_at(pic, xy[1], f"{L:g} {unit}", gap=4.0, dy=0.0, va="center")
     return L

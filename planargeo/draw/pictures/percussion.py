@@ -27,6 +27,7 @@ import numpy as np
 from planargeo.draw.picture import Picture
 from planargeo.draw.pictures._words import num, pair, where
 from planargeo.draw.pictures.common import builder, label_line
+from planargeo.draw.pictures.kit import label_at
 from planargeo.draw.style import COLORS
 from planargeo.geometry.projective import from_xy, is_ideal
 
@@ -82,9 +83,7 @@ def percussion_picture(st: dict, *, impact: bool = False, view, size=(600, 480))
                                  f"area {num(st['shape'].area)} m²")
     pic.marks("grip", [[0.0, 0.0]], role="body", shape="s", size=9.0, color=COLORS["ground"], z=3,
               symbol="grip", desc="the grip, where the hands hold the body: at the origin (0, 0) m")
-    grip = pic.elements[-1]
-    grip["parts"].append({"p": "text", "x": 0.0, "y": 0.0, "dx": -7.0, "dy": -7.0, "text": "grip",
-                          "ha": "right", "va": "top"})
+    label_at(pic, (0.0, 0.0), "grip", gap=-7.0, ha="right", va="top")
     pic.conic("I", st["I"].matrix, role="inertia", symbol="I", label="ρ", mark_center=False,
               desc=f"inertia I as its circle of gyration (5.4, 1.65): radius ρ = {num(rho)} m")
     if nums["spot"] is not None:
@@ -108,9 +107,7 @@ def percussion_picture(st: dict, *, impact: bool = False, view, size=(600, 480))
         pic.marks("spot", [s], role="wrench", shape="D", size=10.0, color=COLORS["wrench"], z=6, symbol=name,
                   desc=f"sweet spot of the grip (5.67): strike there and the hands feel no sting, {where_}"
                   if grip_spot else f"centre of percussion (5.68): where the axis crosses the line a–c, {where_}")
-        pic.elements[-1]["parts"].append({"p": "text", "x": float(s[0]), "y": float(s[1]), "dx": 7.0,
-                                          "dy": -7.0 if grip_spot else -11.0, "text": name, "ha": "left",
-                                          "va": "top"})
+        label_at(pic, s, name, gap=7.0, dy=-7.0 if grip_spot else -11.0, va="top")
     pic.point("c", from_xy(c), role="twist", glyph=False, color="#000000", size=6.5, symbol="c",
               desc=f"centre of mass c (1.65): at {pair(c)} m")
     pic.point("a", a, role="accel", glyph_scale=0.3, size=9.5, symbol="a",
