@@ -102,7 +102,8 @@ def _unit(v):
 def _npoint(p):
     """Normalise points (w = 1, or unit length if ideal), letting NaN and zero through silently."""
     p = _unit(p)
-    return _safe_div(p, np.where(p[..., 2] != 0, p[..., 2], np.linalg.norm(p, axis=-1))[..., None]) + 0.0
+    w = np.where(p[..., 2] != 0, p[..., 2], np.linalg.norm(p, axis=-1))
+    return _safe_div(p, w[..., None]) + 0.0
 
 
 def _nline(l):
@@ -847,7 +848,7 @@ def _special(C, x, name: str, Q, what: str) -> np.ndarray:
     C, x = _conic(C), as_vec3(x, name)
     (Q1, Q2, Q3), e = _scaled_base(*Q)
     batch_shape(C=(C, 2), **{name: (x, 1)}, Q1=(Q1, 1), Q2=(Q2, 1), Q3=(Q3, 1))
-    (C, eC), (x, ex) = _pow2(C, 2), _pow2(x)      # u is of degree 1 in x, -1 in its own Qi, 0 (P) or -1 (L) in C
+    (C, eC), (x, ex) = _pow2(C, 2), _pow2(x)   # u: degree 1 in x, -1 in its Qi, 0 (P) or -1 (L) in C
     if name == "P":
         with np.errstate(under="ignore"):
             x = _mv(C, x)

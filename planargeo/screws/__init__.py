@@ -1,7 +1,5 @@
-"""Screws: twists as points, wrenches as lines, inertias as conics (thesis ch. 1, 4, 5.4).
+"""Screws (thesis ch. 1, 4, 5.4), built on :mod:`planargeo.geometry` only.
 
-* :mod:`planargeo.screws.twists` -- transforms, twists, wrenches, power and their sums;
-* :mod:`planargeo.screws.inertia` -- planar inertias, the axis of percussion and its pole.
-
-Builds on :mod:`planargeo.geometry` only.
+Twists as points and wrenches as lines (:mod:`~planargeo.screws.twists`), inertias as conics
+(:mod:`~planargeo.screws.inertia`).
 """

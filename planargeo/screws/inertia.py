@@ -12,13 +12,13 @@ import re
 import numpy as np
 
 from planargeo._validate import (as_mat3, as_scalar, as_vec3, as_xy, batch_shape, check_overflow, check_positive,
-                                 check_positive_definite, check_positive_semidefinite, overflow_checked, rescaled)
+                                 check_positive_definite, overflow_checked, rescaled)
 from planargeo.errors import InputError, InvalidPolygonError, SingularInertiaError
 from planargeo.geometry import conics
 from planargeo.geometry._docs import entries
 from planargeo.geometry.elements import Conic, Line, Point
-from planargeo.screws.twists import (SCREWS, _Held, _inertia_psd, inertia_at, inertia_matrix, inertia_rotated,
-                                      kinetic_energy, momentum)
+from planargeo.screws.twists import (SCREWS, _Held, _inertia_psd, inertia_at, inertia_matrix,
+                                      inertia_rotated, kinetic_energy, momentum)
 
 __all__ = [
     "Inertia", "mass", "centre_of_mass", "rotational_inertia", "radius_of_gyration",

@@ -301,8 +301,8 @@ def power(twist, wrench) -> np.ndarray:
     v = as_vec3(twist, "twist")
     f = as_vec3(wrench, "wrench")
     batch_shape(twist=(v, 1), wrench=(f, 1))
-    return np.asarray(rescaled(lambda v, f: np.einsum("...i,...i->...", v, f), (v, f), (1, 1), (1, 1), 0,
-                               "power(twist, wrench)", "twist or wrench"))
+    return np.asarray(rescaled(lambda v, f: np.einsum("...i,...i->...", v, f), (v, f), (1, 1),
+                               (1, 1), 0, "power(twist, wrench)", "twist or wrench"))
 
 
 @documented
