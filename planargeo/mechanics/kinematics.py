@@ -102,10 +102,7 @@ def _as_state(x, name: str, nq: int, finite: bool = True) -> np.ndarray:
 
 @_documented
 def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None, finite: bool = True):
-    """Validate and broadcast a state; returns ``(q, qd, tau, f_ext, qdd, batch_shape)``.
-
-    Every method of the package validates its state here: ``qd``, ``tau``, ``qdd`` given as
-    None are float64 zeros of shape ``(nq,)``, ``f_ext`` None stays None (no external load).
+    """Validate and broadcast a state (every method of the package validates its state here).
 
     Parameters
     ----------
@@ -119,7 +116,8 @@ def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None, fin
     Returns
     -------
     tuple
-        ``(q, qd, tau, f_ext, qdd, batch_shape)``, float64 arrays (``f_ext`` may be None).
+        ``(q, qd, tau, f_ext, qdd, batch_shape)``, float64 arrays; ``qd``, ``tau``, ``qdd`` given as
+        None are zeros of shape ``(nq,)``, ``f_ext`` None stays None (no external load).
 
     Raises
     ------
@@ -191,11 +189,6 @@ def joint_axes(kind: str, ox, oy, phi, qi):
     -------
     tuple
         ``(cols, (x, y, theta))``: k unit twists at the origin, each (..., 3), and the body's world pose.
-
-    Raises
-    ------
-    AssertionError
-        For an unknown kind (never reached: :class:`~planargeo.mechanics.model.Joint` validates kinds).
 
     Examples
     --------
