@@ -5,7 +5,7 @@ import numpy as np
 
 from planargeo.draw.picture import PX_PER_PT
 from planargeo.draw.pictures.kit import aim_label, label_at
-from planargeo.draw.sketch import panel, show
+from planargeo.draw.sketch import arrow, panel, show
 from planargeo.draw.style import COLORS
 from planargeo.gallery.figures import register
 from planargeo.screws.twists import X_P, crm, unit_rotation
@@ -33,11 +33,9 @@ def _disk(ax):
 
 def _vector(pic, id, p, d, *, role, symbol, desc, label=None, aim=None):
     """An arrow from ``p`` along the data vector ``d``, labelled at its tip (tried first toward ``aim``)."""
-    pic.path(id, np.zeros((0, 2)), role=role, symbol=symbol, desc=desc, color=COLORS[role], z=5)
-    el = pic.elements[-1]
-    el["parts"] = [{"p": "arrow", "x": float(p[0]), "y": float(p[1]),
-                    "dx": float(d[0] * pic.kx), "dy": float(d[1] * pic.ky)}]
-    label_at(pic, np.asarray(p) + np.asarray(d), symbol if label is None else label, gap=4.0)
+    tip = np.asarray(p) + np.asarray(d)
+    el = arrow(pic, id, p, tip, role=role, symbol=symbol, desc=desc)
+    label_at(pic, tip, symbol if label is None else label, gap=4.0)
     if aim is not None:
         aim_label(el, aim, 8.0)
 

@@ -1,35 +1,19 @@
 """Chapter 4 figures: twist and wrench addition, kinematics, Newton-Euler (4.1-4.10)."""
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from planargeo.algorithms.rnea import newton_euler
-from planargeo.draw.picture import Picture
+from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.pictures._words import force as force_words, num
 from planargeo.draw.pictures.kit import aim_label, force
-from planargeo.draw.sketch import com, dimension, frame, ground, label, link, model, panel, pin, show
-from planargeo.draw.style import COLORS, legend
+from planargeo.draw.sketch import arrow, com, dimension, frame, ground, label, link, model, panel, pin, show
+from planargeo.draw.style import legend
 from planargeo.draw.sums import acceleration_step, newton_euler as newton_euler_balance, twist_sum, \
     velocity_step, wrench_sum
 from planargeo.gallery.figures import chain, register
 from planargeo.geometry.projective import from_xy, join, meet, to_xy
 from planargeo.screws.twists import inertia_matrix, unit_rotation, unit_translation
-
-
-def _arrow(pic: Picture, id: str, p, q, text: str, *, role: str = "twist", desc: str = "") -> dict:
-    """An arrow from ``p`` to ``q`` (data points) in a role's colour, labelled at its tip."""
-    p, q = np.asarray(p, float), np.asarray(q, float)
-    pic.path(id, np.zeros((0, 2)), role=role, symbol=text, desc=desc, color=COLORS[role], z=5)
-    el = pic.elements[-1]
-    d = (q - p) * (pic.kx, pic.ky)
-    u = d / math.hypot(*d)
-    el["parts"] = [{"p": "arrow", "x": float(p[0]), "y": float(p[1]), "dx": float(d[0]), "dy": float(d[1])},
-                   {"p": "text", "x": float(q[0]), "y": float(q[1]), "dx": float(6 * u[0]),
-                    "dy": float(6 * u[1]), "text": text, "ha": "left" if u[0] >= 0 else "right",
-                    "va": "bottom" if u[1] >= 0 else "top"}]
-    return el
 
 
 @register(4.01, height=1.9)
@@ -106,7 +90,8 @@ def fig4_3(ax):
               toward=((1.0, -1.0), None, (1.0, -0.5)))
     dimension(pic, "rho", Q, P, "ρ = u/ω", offset=0.25,
               desc=f"distance ρ = u/ω from Q to the sum's pole P (4.16): {num(u / omega)} m")
-    _arrow(pic, "e", Q, Q + 0.8 * e, "e", desc="direction e of the translation v₂ (4.16): 30° from x")
+    arrow(pic, "e", Q, Q + 0.8 * e, role="twist", label="e", offset=6 * e / PX_PER_PT, symbol="e",
+          desc="direction e of the translation v₂ (4.16): 30° from x")     # the label 6 px beyond the tip
     show(pic, ax)
 
 

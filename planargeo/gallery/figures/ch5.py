@@ -7,7 +7,7 @@ from planargeo.draw.picture import PX_PER_PT
 from planargeo.draw.pictures.common import label_line, label_toward
 from planargeo.draw.polars import (interior_construction, line_conic_points, percussion, polar_exterior,
                                    polar_interior, power, power_values)
-from planargeo.draw.sketch import body, label, link_polygon, panel, segment, show
+from planargeo.draw.sketch import _arrow_parts, body, label, link_polygon, panel, segment, show
 from planargeo.draw.style import COLORS
 from planargeo.gallery.figures import register
 from planargeo.geometry.conics import (conic_ellipse, decompose_line_special, decompose_point_special, polar,
@@ -24,15 +24,9 @@ HEAD_PX = 8.0
 def _vec_arrow(pic, id, p, d, text, *, color, symbol, desc, offset=(5, 5), width=1.0):
     """An arrow from the data point ``p`` along the data vector ``d``, its text at the tip (``offset`` points)."""
     p = np.asarray(p, float)
-    d = np.asarray(d, float)
-    dpx = d * (pic.kx, pic.ky)
-    u = dpx / np.hypot(*dpx)
-    head = min(HEAD_PX, float(np.hypot(*dpx)))
-    base = p + d - u * head / (pic.kx, pic.ky)          # the shaft (this width) ends under the head
-    pic.path(id, np.array([p, base]), role="construct", symbol=symbol, desc=desc, color=color,
+    pic.path(id, np.zeros((0, 2)), role="construct", symbol=symbol, desc=desc, color=color,
              width=width * PX_PER_PT, dash=[], z=5)
-    pic.elements[-1]["parts"].append({"p": "arrow", "x": float(base[0]), "y": float(base[1]),
-                                      "dx": float(u[0] * head), "dy": float(u[1] * head)})
+    pic.elements[-1]["parts"] = _arrow_parts(pic, p, p + np.asarray(d, float), head=HEAD_PX)
     if text:
         label(pic, id + ":label", p + d, text, offset=offset, color=color, symbol=symbol, desc=desc)
 
