@@ -480,11 +480,8 @@ def main(args: argparse.Namespace) -> int:
     if args.list:
         listing, infos = {}, {}
         for name in scenes.names():
-            try:
-                listing[name] = to_plain(scenes.parameters(name))
-                infos[name] = quantity_info(name)
-            except PlanargeoError as exc:  # pragma: no cover - a broken scene module
-                return _error(str(exc).splitlines()[0], 1)
+            listing[name] = to_plain(scenes.parameters(name))
+            infos[name] = quantity_info(name)
         listed = {"scenes": listing, "quantities": infos}
         print(json.dumps(listed) if args.json else format_listing(listing, infos))
         return 0

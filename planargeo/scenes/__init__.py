@@ -274,13 +274,10 @@ def build(name: str, *, allow_big: bool = False, **params) -> SceneResult:
         return problem
     culprits = [k for k in params if isinstance(_evaluate(fn, {j: v for j, v in params.items() if j != k}),
                                                     SceneResult)] or list(params)
-    given = ", ".join(f"{k}={_fmt(params[k])}" for k in culprits)
+    given = ", ".join(f"{k}={params[k]:g}" if isinstance(params[k], float) else f"{k}={params[k]}"
+                      for k in culprits)
     raise SceneRangeError(f"scene {name!r} {problem} " + (f"with {given} " if params else "with the default "
                           "parameters ") + "(beyond what double precision can evaluate)")
-
-
-#: The numerical failures of a scene evaluated beyond double precision (package errors pass through).
-_NUMERICAL = (ArithmeticError, np.linalg.LinAlgError)
 
 
 def _evaluate(fn, params) -> SceneResult | str:
@@ -293,17 +290,13 @@ def _evaluate(fn, params) -> SceneResult | str:
         if not isinstance(exc, NumericOverflowError):
             raise
         return f"overflows ({exc})"
-    except _NUMERICAL as exc:
+    except (ArithmeticError, np.linalg.LinAlgError) as exc:    # beyond double precision
         return f"fails ({type(exc).__name__}: {exc})"
     bad = non_finite(res)
     if bad:
         return ("gives non-finite results (" + ", ".join(b.split(".", 1)[1] for b in bad[:8])
                 + (", ...)" if len(bad) > 8 else ")"))
     return res
-
-
-def _fmt(v) -> str:
-    return f"{v:g}" if isinstance(v, float) else str(v)
 
 
 def plain(x) -> list | float | None:

@@ -4,18 +4,8 @@ A *construction* takes a few numbers and returns the ordered steps by which the 
 its figure: what each step adds, the equation it uses, the elements it draws (homogeneous
 points, lines, segments, a conic) and the numbers a reader checks by hand.  Nothing here draws
 (:class:`~planargeo.widgets.construction.ConstructionExplorer` does).  Special cases (a pole at
-infinity, parallel lines, a couple) are ordinary values, named in the caption (10.2.4).
-
-=================  ============================================================  ============
-kind               what is constructed                                           thesis
-=================  ============================================================  ============
-``twist_sum``      ``v₃ = v₁ + v₂``: the pole on the line of the poles           4.11–4.16
-``wrench_sum``     ``f₃ = f₁ + f₂``: the line through the meet of the lines      4.33–4.46
-``velocity``       ``vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ`` across a revolute joint                 4.47–4.49
-``acceleration``   ``aᵢ = aᵢ₋₁ + sᵢ q̈ᵢ + vᵢ × sᵢ q̇ᵢ``                            4.52–4.54
-``newton_euler``   ``fⁿᵉᵗ = I a + p`` and the joint torque as ``ρ = τ/|fⁿᵉᵗ|``   4.55–4.57
-``through_inf…``   a pole dragged through infinity (``through_infinity``)        10.2.4
-=================  ============================================================  ============
+infinity, parallel lines, a couple) are ordinary values, named in the caption (10.2.4).  The
+kinds, with their thesis sections, are :data:`CONSTRUCTIONS`.
 
 Examples
 --------
@@ -212,7 +202,7 @@ def _operands(id_, title, eq, element, name, a, b, role, sym) -> ConstructionSte
                                              element(f"{name}2", b, role, f"${sym}_2$")))
 
 
-# --------------------------------------------------------------------------- twist sum (4.2)
+# ------------------------------------------------------------ twist sum (4.2): 4.11–4.16
 def _twist_sum(x1=-1.5, y1=0.0, w1=1.0, u1=0.0, angle1=0.0,
                x2=1.5, y2=0.5, w2=2.0, u2=0.0, angle2=90.0) -> Construction:
     v1, v2 = _twist(x1, y1, w1, u1, angle1, 1), _twist(x2, y2, w2, u2, angle2, 2)
@@ -247,7 +237,7 @@ def _twist_sum(x1=-1.5, y1=0.0, w1=1.0, u1=0.0, angle1=0.0,
     return Construction("twist_sum", "Twist addition", tuple(steps), values, case.text)
 
 
-# --------------------------------------------------------------------------- wrench sum (4.4)
+# ------------------------------------------------------------ wrench sum (4.4): 4.33–4.46
 def _wrench_sum(x1=-1.5, y1=-0.5, F1=1.0, angle1=60.0, tau1=0.0,
                 x2=1.5, y2=0.0, F2=1.5, angle2=120.0, tau2=0.0) -> Construction:
     f1, f2 = _wrench(x1, y1, F1, angle1, tau1, 1), _wrench(x2, y2, F2, angle2, tau2, 2)
@@ -302,7 +292,7 @@ def _wrench_sum(x1=-1.5, y1=-0.5, F1=1.0, angle1=60.0, tau1=0.0,
     return Construction("wrench_sum", "Wrench addition", tuple(steps), values, case.text)
 
 
-# --------------------------------------------------------------------------- velocity (4.5)
+# ------------------------------------------------------------ velocity (4.5): 4.47–4.49
 def _velocity(xv=-1.5, yv=1.0, w=1.0, xj=1.0, yj=0.0, qd=1.5) -> Construction:
     v_prev = _nonzero(w * unit_rotation([xv, yv]), "v_prev", "twist")
     s = unit_rotation([xj, yj])
@@ -332,7 +322,7 @@ def _velocity(xv=-1.5, yv=1.0, w=1.0, xj=1.0, yj=0.0, qd=1.5) -> Construction:
     return Construction("velocity", "Velocity kinematics", tuple(steps), values, case.text)
 
 
-# --------------------------------------------------------------------------- acceleration (4.6)
+# ------------------------------------------------------------ acceleration (4.6): 4.52–4.54
 def _acceleration(xv=-1.5, yv=1.0, w=1.0, xa=-1.0, ya=-1.0, alpha=0.5, xj=1.0, yj=0.0, qd=1.5,
                   qdd=2.0) -> Construction:
     v_prev = w * unit_rotation([xv, yv])
@@ -383,7 +373,7 @@ def _acceleration(xv=-1.5, yv=1.0, w=1.0, xa=-1.0, ya=-1.0, alpha=0.5, xj=1.0, y
     return Construction("acceleration", "Acceleration kinematics", tuple(steps), values, case.text)
 
 
-# --------------------------------------------------------------------------- Newton–Euler (4.7)
+# ------------------------------------------------------------ Newton–Euler (4.7): 4.55–4.57
 def _newton_euler(m=1.0, xc=0.5, yc=0.0, r=0.4, xv=0.5, yv=2.0, w=1.5, xa=2.0, ya=-1.0, alpha=1.5,
                   xj=-0.5, yj=0.0) -> Construction:
     if not m > 0:
@@ -441,7 +431,7 @@ def _newton_euler(m=1.0, xc=0.5, yc=0.0, r=0.4, xv=0.5, yv=2.0, w=1.5, xa=2.0, y
     return Construction("newton_euler", "Newton–Euler balance of one body", tuple(steps), values, case)
 
 
-# --------------------------------------------------------------------------- 10.2.4
+# ------------------------------------------------------------ a pole through infinity (10.2.4)
 #: radius of the horizon of :func:`_through_infinity` (the line at infinity in the disc model)
 HORIZON = 2.0
 

@@ -131,13 +131,13 @@ def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float =
         ``C`` (9.1), ``Dinv`` (9.13), ``L`` (9.31), ``Lambda_inv`` (7.37) and ``b``, the inputs of
         9.48; ``qdd`` (9.39/9.43), ``qdd_direct`` (9.48), ``a``, ``f`` (0-based bodies, origin).
     """
-    from planargeo.algorithms.stacked import adjacency, direct_accelerations, stacked_solve, trunk
+    from planargeo.algorithms.stacked import adjacency, direct_accelerations, trunk
 
     model = tree_model(mass, length, g)
     q = _default_q()
     qd = speed * _QD_PATTERN
     tau = np.zeros(9)
-    sol = stacked_solve(model, q, qd, tau)
+    sol = tree_solve(model, q, qd, tau)
     Lam, b = sol.articulated_mobilities.Lambda_inv, sol.articulated_mobilities.b
     a_direct = direct_accelerations(sol, Lam, b)
     qdd_direct = sol.T.T @ (a_direct - sol.C @ a_direct - sol.kappa)
@@ -167,7 +167,6 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
         ``G`` (9.49), ``Upsilon`` (9.51), ``qdd``, ``a``, ``u``, ``F`` (9.71), ``xi``, ``cond``,
         ``f`` (9.61), ``mu``.
     """
-    from planargeo.algorithms.loops import loop_solve
     from planargeo.mechanics.contacts import Contact
     from planargeo.simulate.loops import closure_jacobian
 
@@ -180,7 +179,7 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
     qd = speed * _QD_PATTERN
     qd = qd - np.linalg.pinv(Jc) @ (Jc @ qd)
     tau = np.zeros(9)
-    sol = loop_solve(model, q, qd, tau)
+    sol = tree_solve(model, q, qd, tau)
     quantities = {"G": plain(sol.G), "Upsilon": plain(sol.Upsilon), "qdd": plain(sol.qdd),
                   "a": plain(sol.a.reshape(9, 3)), "u": plain(sol.u.reshape(9, 3)),
                   "F": plain(sol.F.reshape(-1, 3)), "xi": plain(sol.xi), "cond": float(sol.cond),
