@@ -25,11 +25,8 @@ __all__ = ["element_picture", "element_svg", "register", "SIZE"]
 
 #: Width and height (pixels) of an element's picture.
 SIZE = (280, 300)
-#: The classes drawn for notebooks, by module and name (for IPython's formatter).
-DRAWN = (("planargeo.geometry.elements", "Point"), ("planargeo.geometry.elements", "Line"),
-         ("planargeo.geometry.elements", "Conic"), ("planargeo.screws.twists", "Twist"),
-         ("planargeo.screws.twists", "Wrench"), ("planargeo.screws.inertia", "Inertia"),
-         ("planargeo.draw.picture", "Picture"))
+#: The classes drawn for notebooks.
+DRAWN = (Point, Line, Conic, Twist, Wrench, Inertia, Picture)
 
 
 def num(x: float) -> str:
@@ -235,5 +232,5 @@ def register(shell) -> None:
     True
     """
     svg = shell.display_formatter.formatters["image/svg+xml"]
-    for module, name in DRAWN:
-        svg.for_type_by_name(module, name, element_svg)
+    for cls in DRAWN:
+        svg.for_type(cls, element_svg)

@@ -207,6 +207,11 @@ def _three(id, v, what: str) -> tuple[float, float, float]:
     return a, b, c
 
 
+def _glyph_radius(w: float, scale: float = 6.0) -> float:
+    """Radius (points) of the rotation glyph of a pole of weight ``w``: ``scale |w|`` within [4, 16]."""
+    return min(max(scale * abs(w), 4.0), 16.0)
+
+
 def _color(role: str, color: str | None) -> str:
     return color or COLORS.get(role) or STYLES.get(role, {}).get("color") or COLORS["text"]
 
@@ -435,7 +440,7 @@ class Picture:
             if -1 <= qx <= pw + 1 and -1 <= qy <= ph + 1:
                 parts.append({"p": "mark", "x": x, "y": y, "shape": shape or st.get("marker", "o"),
                               "size": size})
-                r = min(max(glyph_scale * abs(p2), 4.0), 16.0) * PX_PER_PT
+                r = _glyph_radius(p2, glyph_scale) * PX_PER_PT
                 if glyph:
                     parts.append({"p": "glyph", "x": x, "y": y, "r": round(r, 2), "ccw": p2 > 0})
                 if text:

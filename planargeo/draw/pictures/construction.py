@@ -21,7 +21,7 @@ import textwrap
 
 import numpy as np
 
-from planargeo.draw.picture import FONT_PX, PX_PER_PT, Picture, plain_text
+from planargeo.draw.picture import FONT_PX, PX_PER_PT, Picture, _glyph_radius, plain_text
 from planargeo.draw.pictures._words import num, where, words_data
 from planargeo.draw.pictures.common import _align, builder, label_line, label_toward
 from planargeo.draw.pictures.kit import label_at
@@ -181,7 +181,7 @@ def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(56
                         away = away / np.hypot(*away)
                         if abs(away @ nrm) < 0.3:
                             u = away
-                    r = min(max(6.0 * abs(v[2]), 4.0), 16.0) if glyph else 0.0
+                    r = _glyph_radius(v[2]) if glyph else 0.0
                     label_toward(pic.elements[-1], u, (7.0 + 0.75 * r) * PX_PER_PT)
             elif e.kind == "line":
                 anchor = None

@@ -18,7 +18,7 @@ import math
 
 import numpy as np
 
-from planargeo.draw.picture import PX_PER_PT, Picture
+from planargeo.draw.picture import PX_PER_PT, Picture, _glyph_radius
 from planargeo.draw.pictures._words import num, subscript, where
 from planargeo.draw.pictures.common import builder, label_toward, labelled_line
 from planargeo.draw.style import COLORS, SUM
@@ -42,7 +42,7 @@ def _wrench_words(f, k) -> str:
 
 def _glyph_gap(w: float) -> float:
     """Pixels from a pole to its label: clear of its rotation glyph (which grows with |ω|)."""
-    return (6.0 + min(max(6.0 * abs(w), 4.0), 16.0)) * PX_PER_PT * 0.8
+    return (6.0 + _glyph_radius(w)) * PX_PER_PT * 0.8
 
 
 @builder
