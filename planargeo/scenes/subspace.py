@@ -169,6 +169,5 @@ def subspace(joint: str = "revolute", px: float = 0.0, py: float = 0.0, joint_an
     e = F * unit_direction(force_angle_deg)
     f = np.array([e[0], e[1], ax * e[1] - ay * e[0]])           # the force e through (ax, ay) (5.56)
     st = subspace_state(joint, (px, py), unit_direction(joint_angle_deg), I, f)
-    q = {k: (None if v is None else (dict(v) if isinstance(v, dict) else plain(v)))
-         for k, v in st.items() if k != "joint"}
+    q = {k: dict(v) if isinstance(v, dict) else plain(v) for k, v in st.items() if k != "joint"}
     return SceneResult(state={"v": [0.0, 0.0, 0.0]}, quantities=q, extra={"state": st})
