@@ -28,9 +28,8 @@ __all__ = [
     "conic_circle", "conic_ellipse", "conic_hyperbola", "conic_parabola", "conic_from_coefficients",
 ]
 
-#: Docstring entries many functions here share, each said once (a line ``{C p}`` in a docstring: those
-#: entries; :class:`planargeo.geometry.elements.Conic` uses them too).
-_ENTRIES = {
+#: Docstring entries many functions here share, each said once (a line ``{C p}`` in a docstring).
+_shared = entries({
     "C": "C : array_like, shape (..., 3, 3)\n    Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).",
     "p": "p : array_like, shape (..., 3)\n    Homogeneous points.",
     "l": "l : array_like, shape (..., 3)\n    Homogeneous lines.",
@@ -51,8 +50,7 @@ _ENTRIES = {
                 "focal_length : float\n    Distance ``f`` from the vertex to the focus (m).\n"
                 "angle : float, optional\n    Rotation of the parabola's frame from the axes (rad).",
     "conic_matrix": "Returns\n-------\nnumpy.ndarray, shape (3, 3)\n    The conic matrix.",
-}
-_shared = entries(_ENTRIES)
+})
 
 
 # --------------------------------------------------------------------------- helpers

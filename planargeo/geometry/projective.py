@@ -39,7 +39,7 @@ LINE_AT_INFINITY.setflags(write=False)
 
 
 #: Docstring entries many functions here share, each said once (a line ``{p l}`` in a docstring).
-_ENTRIES = {
+_shared = entries({
     "p": "p : array_like, shape (..., 3)\n    Homogeneous points.",
     "l": "l : array_like, shape (..., 3)\n    Homogeneous lines ``[fx, fy, tz]``.",
     "normalized": "Returns\n-------\nndarray, shape (..., 3)\n    The base coordinates.\n\n"
@@ -54,8 +54,7 @@ _ENTRIES = {
                     "    The two are the same element or one is zero (``.cond`` is ``inf``),\n"
                     "    or κ > ``cond_limit``.",
     "standard": "Returns\n-------\nnumpy.ndarray, shape (..., 3, 3)",
-}
-_shared = entries(_ENTRIES)
+})
 
 
 def _first_index(mask: np.ndarray) -> str:

@@ -232,9 +232,8 @@ def percussion_pole(inertia, line) -> np.ndarray:
 def drawable_conic(inertia) -> np.ndarray:
     """The real conic drawn for an inertia: the radius-of-gyration circle (thesis 10.2.3).
 
-    ``I`` with ``2 m ρ²`` taken from ``I[2, 2]``: the circle of radius ``ρ`` about the centre of
-    mass.  The axis of percussion of a point is the reflection through the centre of its polar
-    with respect to this circle (:func:`planargeo.geometry.conics.drawable_conic`).
+    ``I`` with ``2 m ρ²`` taken from ``I[2, 2]``; the axis of percussion of a point is its polar
+    reflected through the centre (:func:`planargeo.geometry.conics.drawable_conic`).
 
     {parameters inertia returns_3x3 not_psd}
 

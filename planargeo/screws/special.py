@@ -24,6 +24,8 @@ _documented = entries({
     "v": "v : Twist or array_like (3,)", "f": "f : Wrench or array_like (3,)",
     "v1_v2": "v1, v2 : Twist or array_like (3,)", "f1_f2": "f1, f2 : Wrench or array_like (3,)",
     "rtol": "rtol : float\n    Relative size below which a quantity counts as zero.",
+    "disc": "centre : array_like (2,)\n    Centre of the disc.\n"
+            "radius : float\n    Radius of the horizon (> 0).",
     "case": ("Returns\n-------\nSpecialCase\n    The case, named.\n\n"
              "Raises\n------\n"
              "ShapeError\n    A screw argument is not one (3,) twist or wrench.\n"
@@ -244,10 +246,7 @@ def horizon_point(handle, centre=(0.0, 0.0), radius=1.0) -> np.ndarray:
     ----------
     handle : array_like (..., 2)
         Handle positions.
-    centre : array_like (2,)
-        Centre of the disc.
-    radius : float
-        Radius of the horizon (> 0).
+    {disc}
 
     {returns_3}
 
@@ -269,6 +268,7 @@ def horizon_point(handle, centre=(0.0, 0.0), radius=1.0) -> np.ndarray:
     return np.stack([c[..., 1] * w + d[..., 1], -(c[..., 0] * w + d[..., 0]), w], axis=-1)
 
 
+@_documented
 def horizon_handle(p, centre=(0.0, 0.0), radius=1.0) -> np.ndarray:
     """Where the drag handle of :func:`horizon_point` sits for the point ``p`` (within the horizon).
 
@@ -276,10 +276,7 @@ def horizon_handle(p, centre=(0.0, 0.0), radius=1.0) -> np.ndarray:
     ----------
     p : array_like (3,)
         A homogeneous point (not zero).
-    centre : array_like (2,)
-        Centre of the disc.
-    radius : float
-        Radius of the horizon (> 0).
+    {disc}
 
     Returns
     -------

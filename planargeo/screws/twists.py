@@ -70,8 +70,6 @@ def X_P(point) -> np.ndarray:
 def X_P_inv_T(point) -> np.ndarray:
     """Wrench transform from the origin to ``point`` (thesis 4.24): ``inv(X_P(p)).T``.
 
-    As ``X_P(p)⁻¹ = X_P(-p)``, it is ``X_P(-p).T``.
-
     {parameters point returns_3x3}
 
     Examples
@@ -79,7 +77,8 @@ def X_P_inv_T(point) -> np.ndarray:
     >>> X_P_inv_T([0.0, 1.0]) @ [1.0, 0.0, 0.0]   # force along x through the origin, moment about (0, 1)
     array([1., 0., 1.])
     """
-    return np.ascontiguousarray(np.swapaxes(X_P(-as_xy(point, "point")), -1, -2))
+    inverse = X_P(-as_xy(point, "point"))           # X_P(p)⁻¹ = X_P(-p)
+    return np.ascontiguousarray(np.swapaxes(inverse, -1, -2))
 
 
 @documented
