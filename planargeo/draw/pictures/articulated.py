@@ -205,19 +205,16 @@ def _chart(pic, st, k: int) -> None:
     full = comps[-1]
     scale = np.linalg.norm(st["A_full"][k])
     kk = subscript(k + 1)
-    curves = []
-    for j, (name, color) in enumerate(CHART):
-        if abs(full[j]) > 1e-9 * scale:
-            curves.append((name, color, comps[:, j] / full[j]))
-    vis = [c[2] for c in curves] + [errs]
-    lo = min(0.0, float(np.min(np.concatenate(vis)))) - 0.05
-    hi = max(1.05, float(np.max(np.concatenate(vis)))) + 0.1
+    # the entries that are not zero, over their full values, and the error
+    curves = [(name, color, comps[:, j] / full[j]) for j, (name, color) in enumerate(CHART)
+              if abs(full[j]) > 1e-9 * scale] + [("error", "#000000", errs)]
+    vis = np.concatenate([c[2] for c in curves])
+    lo = min(0.0, float(np.min(vis))) - 0.05
+    hi = max(1.05, float(np.max(vis))) + 0.1
     s0, s1 = -0.3, max(len(comps) - 1, 1) + 0.3
     X0, X1, Y0, Y1 = pic.box
-    W, H = X1 - X0, Y1 - Y0
-    fx = 1.0 / pic.kx        # data units per pixel
-    fy = 1.0 / pic.ky
-    cx0, cx1 = X0 + (CHAIN_SHARE + 0.08) * W, X1 - 14.0 * fx
+    fx, fy = 1.0 / pic.kx, 1.0 / pic.ky        # data units per pixel
+    cx0, cx1 = X0 + (CHAIN_SHARE + 0.08) * (X1 - X0), X1 - 14.0 * fx
     cy0, cy1 = Y0 + 44.0 * fy, Y1 - 30.0 * fy
 
     sx, sy = (cx1 - cx0) / (s1 - s0), (cy1 - cy0) / (hi - lo)
@@ -246,27 +243,23 @@ def _chart(pic, st, k: int) -> None:
     pic.path("chart now", at([shown_k, shown_k], [lo, hi]), role="chart", color=_ART, width=1.2,
              symbol="outboard bodies", desc=f"the recursion steps shown in the chain: {shown_k}", z=2,
              opacity=0.7)
-    for j, (name, color, y) in enumerate(curves):
+    for name, color, y in curves:
+        err = name == "error"
         xy = at(steps, y)
-        pic.path(f"chart {name}", xy, role="chart", color=color, width=1.5, symbol=name,
-                 desc=f"entry {name} of A{kk} at joint {k + 1} over its full value (10.2.2): "
-                      + ", ".join(num(v, 3) for v in y), z=3)
-        pic.elements[-1]["parts"] += [{"p": "mark", "x": float(x), "y": float(v), "shape": "o", "size": 4.0}
-                                      for x, v in xy]
-    xy = at(steps, errs)
-    pic.path("chart error", xy, role="chart", color="#000000", width=1.2, dash=[1.5, 2.5], symbol="error",
-             desc=f"‖A{kk} after so many steps − A{kk}‖ / ‖A{kk}‖ (10.2.2): " + ", ".join(num(v, 3) for v in errs),
-             z=3)
-    pic.elements[-1]["parts"] += [{"p": "mark", "x": float(x), "y": float(v), "shape": "s", "size": 4.0}
-                                  for x, v in xy]
+        meaning = (f"‖A{kk} after so many steps − A{kk}‖ / ‖A{kk}‖" if err else
+                   f"entry {name} of A{kk} at joint {k + 1} over its full value")
+        pic.path(f"chart {name}", xy, role="chart", color=color, width=1.2 if err else 1.5,
+                 dash=[1.5, 2.5] if err else None, symbol=name,
+                 desc=f"{meaning} (10.2.2): " + ", ".join(num(v, 3) for v in y), z=3)
+        pic.elements[-1]["parts"] += [{"p": "mark", "x": float(x), "y": float(v), "shape": "s" if err else "o",
+                                       "size": 4.0} for x, v in xy]
     # the legend: two columns in the lower right corner of the chart
-    names = [(c[0], c[1]) for c in curves] + [("error", "#000000")]
-    rows = (len(names) + 1) // 2
+    rows = (len(curves) + 1) // 2
     kx0, ky1 = cx1 - 2 * 50.0 * fx, cy0 + rows * 15.0 * fy + 4.0 * fy
     pic.path("key box", [[kx0, cy0 + 2.0 * fy], [cx1 - 2.0 * fx, cy0 + 2.0 * fy], [cx1 - 2.0 * fx, ky1],
                            [kx0, ky1]], role="chart", closed=True, fill="#ffffff", alpha=0.85, color="#cccccc",
-             width=0.6, symbol="key", desc=f"the chart's key: {len(names)} curves", z=5)
-    for m, (name, color) in enumerate(names):
+             width=0.6, symbol="key", desc=f"the chart's key: {len(curves)} curves", z=5)
+    for m, (name, color, _) in enumerate(curves):
         col, row = divmod(m, rows)
         x = cx1 - (2 - col) * 50.0 * fx + 4.0 * fx
         y = cy0 + (rows - row) * 15.0 * fy - 4.0 * fy

@@ -124,8 +124,6 @@ def force(pic: Picture, id: str, w, *, scale: float, anchor, role: str = "reacti
         at = tail + 0.5 * v if label_xy is None else foot_on_line(w, label_xy)
         parts.append({"p": "text", "x": float(at[0]), "y": float(at[1]), "dx": 6.0, "dy": 6.0,
                       "text": text, "ha": "left", "va": "bottom"})
-    if role in ("reaction", "wrench", "momentum"):
-        color = color or COLORS[role]
     pic.path(id, np.zeros((0, 2)), role=role, symbol=symbol, desc=desc, color=color, width=width,
              dash=dash, z=z, opacity=float(opacity))
     pic.elements[-1]["parts"] = parts
