@@ -1,14 +1,8 @@
 """``planargeo report``: print a scene's parameters, state and solved quantities.
 
-Usage::
-
-    planargeo report SCENE [--set NAME=VALUE ...] [--json] [--allow-big]
-    planargeo report --list [--json]
-
 ``--list`` prints every scene's parameters and, per quantity, its description, thesis symbol,
-equation and unit (:data:`QUANTITY_INFO`).  The table prints each value's unit, and values below
-:data:`ZERO_TOL` times the scene's scale for that unit as ``0.0`` (round-off); ``--json`` keeps
-full precision.  Scene errors exit with status 1, malformed arguments with 2, one line on stderr.
+equation and unit (:data:`QUANTITY_INFO`).  The table prints each value's unit, and round-off
+(:func:`round_off`) as ``0.0``; ``--json`` keeps full precision.
 
 Examples
 --------

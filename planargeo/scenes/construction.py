@@ -151,23 +151,15 @@ def _xy_or_inf(p) -> Any:
     p = np.asarray(p, float)
     if bool(is_ideal(p)):
         d = direction(p)
-        return f"at infinity (direction ({_num4(d[0])}, {_num4(d[1])}))"
+        return f"at infinity (direction ({_num(d[0], 4)}, {_num(d[1], 4)}))"
     return tuple(float(v) + 0.0 for v in to_xy(p))
 
 
-def _num4(x) -> str:
+def _num(x, digits: int = 3) -> str:
     x = float(x) + 0.0
-    if abs(x) <= 1e-12:
-        return "0"
-    return f"{x:.4g}"
-
-
-def _num(x) -> str:
-    x = float(x)
     if not math.isfinite(x):
         return "∞"
-    s = f"{x:.3g}"
-    return "0" if s in ("-0", "0", "-0.0") or abs(x) < 1e-12 else s
+    return "0" if abs(x) < 1e-12 else f"{x:.{digits}g}"
 
 
 def _nonzero(v: np.ndarray, name: str, what: str) -> np.ndarray:
