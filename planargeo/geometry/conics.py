@@ -362,12 +362,9 @@ def _intersections(C, l, rtol):
 def line_conic_intersections(C, l, rtol: float = 1e-9):
     """The two points where line ``l`` meets conic ``C`` (thesis 5.38 on a line).
 
-    Solves the binary quadratic on two points of the line without cancellation; a discriminant
-    negative by less than ``rtol`` of its scale counts as zero (a tangent).
-
     {parameters C l}
     rtol : float, optional
-        Relative tolerance of the discriminant.
+        A discriminant negative by less than ``rtol`` of its scale counts as zero (a tangent).
 
     Returns
     -------

@@ -1,9 +1,8 @@
 """Special cases of twists, wrenches and their pairs, named (thesis 4.2, 4.4, 5.69, 10.2.4).
 
 The special cases of mechanics are special positions of projective geometry (:data:`CASES`).
-Tests use the homogeneous coordinates themselves, so an element dragged to infinity passes
-through the ideal element without a jump; a quantity counts as zero when at most ``rtol`` times
-the size of what it comes from.  :func:`horizon_point` gives drag handles that reach infinity.
+Tests use the homogeneous coordinates themselves, so an element dragged to infinity (with the
+handles of :func:`horizon_point`) passes through the ideal element without a jump.
 """
 from __future__ import annotations
 
