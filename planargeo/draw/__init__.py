@@ -1,14 +1,13 @@
 """Drawing: twists as points, wrenches as lines, inertias as conics.
 
-A drawing is a :class:`~planargeo.draw.picture.Picture`: plain elements whose geometry is
-computed once in Python (:mod:`~planargeo.draw.geometry`), drawn live by the page and by
-matplotlib (:mod:`~planargeo.draw.render`) for the gallery, exports and stored pictures.
-``import planargeo.draw`` does not import matplotlib.  The gallery's basics are in
-:mod:`~planargeo.draw.sketch`, the thesis's constructions in :mod:`~planargeo.draw.sums`
-(chapter 4), :mod:`~planargeo.draw.polars` (5) and :mod:`~planargeo.draw.splits` (6), the
-explorers' pictures in :mod:`~planargeo.draw.pictures` and :mod:`~planargeo.draw.chain`, a
-notebook value's in :mod:`~planargeo.draw.notebook`; :mod:`~planargeo.draw.style` holds the
-one visual language, :mod:`~planargeo.draw.layout` view fitting and the legibility check.
+A drawing is a :class:`~planargeo.draw.picture.Picture`, drawn live by the page and by
+matplotlib (:mod:`~planargeo.draw.render`; ``import planargeo.draw`` does not import it).  The
+gallery's basics are in :mod:`~planargeo.draw.sketch`, the thesis's constructions in
+:mod:`~planargeo.draw.sums` (chapter 4), :mod:`~planargeo.draw.polars` (5) and
+:mod:`~planargeo.draw.splits` (6), the explorers' pictures in :mod:`~planargeo.draw.pictures` and
+:mod:`~planargeo.draw.chain`, a notebook value's in :mod:`~planargeo.draw.notebook`;
+:mod:`~planargeo.draw.style` holds the one visual language, :mod:`~planargeo.draw.layout` view
+fitting and the legibility check.
 
 Examples
 --------

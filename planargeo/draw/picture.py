@@ -1,11 +1,9 @@
-"""A picture described once: plain elements that every renderer draws the same way.
+"""A picture described once, its geometry done here: plain elements every renderer draws alike.
 
-A :class:`Picture` does all of its geometry here, once (ideal poles as edge arrows, lines
-clipped to the view, conics sampled, the line at infinity as a couple glyph, labels placed
-apart); :meth:`Picture.to_dict` gives plain JSON that the page (``planargeo/widgets/canvas.js``)
-and matplotlib (:func:`planargeo.draw.render.draw_picture`) draw alike.  Every element has a
-stable ``id``, a ``role`` (its style, :mod:`planargeo.draw.style`), its thesis ``symbol`` and
-a description ``desc`` shown on hover, and is drawn from *parts* in data coordinates:
+:meth:`Picture.to_dict` gives plain JSON that the page (``planargeo/widgets/canvas.js``) and
+matplotlib (:func:`planargeo.draw.render.draw_picture`) draw.  Every element has a stable ``id``,
+a ``role`` (its style, :mod:`planargeo.draw.style`), its thesis ``symbol`` and a description
+``desc`` shown on hover, and is drawn from *parts* in data coordinates:
 
 ``{"p": "path", "xy": [[x, y], ...], "closed": bool}``
     a polyline or polygon (stroke, and fill when the element has one);
@@ -86,9 +84,8 @@ def nice_ticks(lo: float, hi: float, n: int = 5) -> list[float]:
     mag = 10.0 ** math.floor(math.log10(raw))
     # the 1-2-5 step whose tick count is nearest n
     step = min((m * mag for m in (0.5, 1, 2, 5, 10)), key=lambda s: abs(span / s + 1 - n))
-    first = math.ceil(lo / step - 1e-9)
     out = []
-    k = first
+    k = math.ceil(lo / step - 1e-9)
     while k * step <= hi + 1e-9 * step:
         out.append(round(k * step, 12) + 0.0)
         k += 1

@@ -81,11 +81,8 @@ def _frame(c, upto: int):
     P = np.array([[-e.value[1] / e.value[2], e.value[0] / e.value[2]] for e in c.elements(upto)
                   if e.kind == "point" and e.value[2] != 0] or [[0.0, 0.0]])
     m = P.mean(axis=0)
-    if len(P) > 1 and np.ptp(P, axis=0).max() > 0:
-        _, _, vt = np.linalg.svd(P - m)
-        d = vt[0]
-    else:
-        d = np.array([1.0, 0.0])
+    spread = len(P) > 1 and np.ptp(P, axis=0).max() > 0
+    d = np.linalg.svd(P - m)[2][0] if spread else np.array([1.0, 0.0])     # the line's direction
     n = np.array([-d[1], d[0]])
     if n[1] < 0 or (n[1] == 0 and n[0] < 0):
         n = -n
