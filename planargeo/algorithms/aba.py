@@ -1,9 +1,4 @@
-"""Recursive articulated-body forward dynamics (thesis 3.6, 3.31-3.42).
-
-:func:`articulated_body` runs the recursion on arrays at the origin (any joint kind, batches, the
-whole workspace); :func:`forward_dynamics` runs the compiled
-:func:`planargeo.algorithms.kernels.articulated_body_state` where it covers the model.
-"""
+"""Recursive articulated-body forward dynamics (thesis 3.6, 3.31-3.42), on arrays or by the compiled kernels."""
 from __future__ import annotations
 
 import numpy as np

@@ -13,8 +13,8 @@ import numpy as np
 
 from planargeo.errors import SingularConfigurationError
 from planargeo.mechanics.subspaces import _checked_gram, _effective_mobility, _solve, _T
-from planargeo.algorithms.articulated_inertia import (_EYE3, ArticulatedInertias, _arrays, _Reactions, _state_arrays,
-                                                      articulated_recursion)
+from planargeo.algorithms.articulated_inertia import (_EYE3, ArticulatedInertias, _arrays, _Reactions,
+                                                      _state_arrays, articulated_recursion)
 
 __all__ = ["ArticulatedMobilities", "mobility_recursion", "articulated_mobility", "SOLVE_COND_LIMIT"]
 

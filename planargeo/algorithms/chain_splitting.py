@@ -13,7 +13,8 @@ import numpy as np
 from planargeo.errors import TopologyError
 from planargeo.geometry._docs import entries
 from planargeo.mechanics.subspaces import _solve
-from planargeo.algorithms.articulated_inertia import _EYE3, _arrays, _per_state, _state_arrays, articulated_recursion
+from planargeo.algorithms.articulated_inertia import (_EYE3, _arrays, _per_state, _state_arrays,
+                                                      articulated_recursion)
 from planargeo.algorithms.articulated_mobility import _check_solvable, mobility_recursion
 from planargeo.algorithms.projective import force_propagator, joint_accelerations
 

@@ -54,8 +54,8 @@ def kernels_for(model):
         tables = kernels.tables(model)
         if tables is not None:
             _say_if_cold(kernels)
-            if hasattr(kernels.dynamics_one, "_can_compile"):   # (NUMBA_DISABLE_JIT=1: a plain Python function)
-                # numba's disable_compile(), allowed before any signature: another type raises TypeError at once
+            if hasattr(kernels.dynamics_one, "_can_compile"):   # (not under NUMBA_DISABLE_JIT=1)
+                # numba's disable_compile() before any signature: another type raises TypeError at once
                 kernels.dynamics_one._can_compile = False
         cache["kernels"] = None if tables is None else Compiled(kernels, tables, (model.nq,), (model.N, 3))
     return cache["kernels"]

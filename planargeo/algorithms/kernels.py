@@ -272,7 +272,7 @@ def articulated_body_state(model, q, qd, tau, fext, w, qdd):
             for j in range(3):                              # U = A_i s_i, D = s_iᵀ A_i s_i
                 U[i, j] = A[i, j, 0] * s[i, 0] + A[i, j, 1] * s[i, 1] + A[i, j, 2] * s[i, 2]
             D = s[i, 0] * U[i, 0] + s[i, 1] * U[i, 1] + s[i, 2] * U[i, 2]
-            # ‖A‖_F² ‖s‖⁴ < D² COND_LIMIT²: the rule squared where the squares are in range; else the exact rule
+            # ‖A‖_F² ‖s‖⁴ < D² COND_LIMIT²: the rule squared where in range; else the exact rule
             F2 = A[i, 0, 0] ** 2 + A[i, 1, 1] ** 2 + A[i, 2, 2] ** 2 + 2.0 * (
                 A[i, 0, 1] ** 2 + A[i, 0, 2] ** 2 + A[i, 1, 2] ** 2)
             ss = s[i, 0] * s[i, 0] + s[i, 1] * s[i, 1] + s[i, 2] * s[i, 2]

@@ -89,11 +89,12 @@ class LoopSolution:
     @functools.cached_property
     def reactions(self) -> list:
         """Every pin and bearing force of the loop, a :class:`Reaction` per tree joint then per contact."""
-        model, pose = self._model, self.data.pose          # tree joints (f_i), then contacts (-F_k on body a)
-        rows = [(f"f_{i + 1}", jt.name, jt.kind, i, model.parents[i], pose[i, :2].astype(float), w.copy())
-                for i, (jt, w) in enumerate(zip(model.joints, self.f.reshape(model.N, 3)))]
-        rows += [(f"F_{k + 1}", c.name, c.kind, c.a, c.b, np.asarray(world_point(pose, c.a, c.point_a), dtype=float),
-                  -w) for k, (c, w) in enumerate(zip(self.contacts, self.F.reshape(-1, 3)))]
+        model, pose = self._model, self.data.pose      # tree joints (f_i), then contacts (-F_k on body a)
+        rows = [(f"f_{i + 1}", jt.name, jt.kind, i, model.parents[i], pose[i, :2].astype(float),
+                 w.copy()) for i, (jt, w) in enumerate(zip(model.joints, self.f.reshape(model.N, 3)))]
+        rows += [(f"F_{k + 1}", c.name, c.kind, c.a, c.b,
+                  np.asarray(world_point(pose, c.a, c.point_a), dtype=float), -w)
+                 for k, (c, w) in enumerate(zip(self.contacts, self.F.reshape(-1, 3)))]
         return [Reaction(symbol, name, kind, body, other, P, w, float(w[2] + P[1] * w[0] - P[0] * w[1]))
                 for symbol, name, kind, body, other, P, w in rows]          # the moment about P last
 

@@ -1,8 +1,4 @@
-"""Recursive Newton-Euler inverse dynamics (thesis 3.5, 3.9-3.12).
-
-:func:`newton_euler` runs the recursion on arrays; :func:`inverse_dynamics` runs the compiled
-:func:`planargeo.algorithms.kernels.newton_euler_state` where it covers the model.
-"""
+"""Recursive Newton-Euler inverse dynamics (thesis 3.5, 3.9-3.12), on arrays or by the compiled kernels."""
 from __future__ import annotations
 
 import numpy as np
@@ -17,8 +13,6 @@ __all__ = ["inverse_dynamics", "newton_euler"]
 @np.errstate(over="ignore", invalid="ignore")   # out of the float range: check_finite says so by name
 def newton_euler(model: Model, q, qd, qdd, f_ext=None) -> Data:
     """Recursive Newton-Euler pass (thesis 2.18, 3.10, 3.5); returns the workspace with ``a``, ``f``, ``tau``.
-
-    Accelerations go base to tip (2.18), loads tip to base (3.10), and ``τ_i = s_iᵀ f_i`` (3.5).
 
     Parameters
     ----------

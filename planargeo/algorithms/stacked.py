@@ -344,10 +344,8 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     for i, j in enumerate(model.parents):
         if j >= 0:
             Linv[3 * j:3 * j + 3, 3 * i:3 * i + 3] = -art.P[i]
-    # (9.32) corrected: d = L (p + C^T T Q + C^T R U^T A κ)
-    sol.d = _unit_upper_solve(Linv, sol.p + C.T @ (T @ Q) + C.T @ (P @ (A @ sol.kappa)))
-    # (9.39): a = L^T [S T^T A^-1 (T Q - d) + U R^T κ]
-    # S T^T A^-1 = S (S^T A S)^-1 S^T: no inverse of A needed
+    sol.d = _unit_upper_solve(Linv, sol.p + C.T @ (T @ Q) + C.T @ (P @ (A @ sol.kappa)))   # (9.32) corrected
+    # (9.39) with S T^T A^-1 = S (S^T A S)^-1 S^T: no inverse of A needed
     if N and all(si.shape[1] == 1 for si in art.S):    # one-dof joints: all bodies in one call (sᵀAs checked)
         mobs = _effective_mobility(art.A, np.stack(art.S),
                                    gram=(np.stack([g[0] for g in art.gram]), np.stack([g[1] for g in art.gram])))
@@ -356,10 +354,8 @@ def stacked_solve(model: Model, q, qd, tau, f_ext=None, *, data=None) -> Stacked
     sol.StTAinv = _blockdiag(mobs)
     sol.mobs = np.reshape(mobs, (N, 3, 3))         # its 3×3 blocks (mobility_times)
     sol.a = _unit_upper_solve(Linv, sol.StTAinv @ (T @ Q - sol.d) + P.T @ sol.kappa, trans=True)  # U R^T = P^T
-    # (9.41) with (9.17): internal forces
-    sol.f = T @ Q + P @ (A @ (C @ sol.a + sol.kappa) + sol.d)
-    # (9.43): q̈ = T^T (Δ a - κ)
-    sol.qdd = T.T @ (sol.a - C @ sol.a - sol.kappa)
+    sol.f = T @ Q + P @ (A @ (C @ sol.a + sol.kappa) + sol.d)           # (9.41) with (9.17)
+    sol.qdd = T.T @ (sol.a - C @ sol.a - sol.kappa)                     # (9.43)
     return sol
 
 
