@@ -4,7 +4,6 @@ that explorers and the gallery share (:func:`legibility_problems`).
 from __future__ import annotations
 
 import itertools
-import math
 
 import numpy as np
 

@@ -7,7 +7,6 @@ from planargeo.draw.picture import PX_PER_PT
 from planargeo.draw.pictures.common import labelled_line
 from planargeo.draw.pictures.kit import where
 from planargeo.draw.sketch import com, link, panel, pin, segment, show
-from planargeo.draw.style import COLORS
 from planargeo.gallery.figures import register
 from planargeo.scenes.subspace import subspace_state, unit_direction
 from planargeo.screws.twists import inertia_matrix
