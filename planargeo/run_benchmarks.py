@@ -275,8 +275,7 @@ def main(args: argparse.Namespace) -> int:
     OutputError
         ``--out`` cannot be used (:func:`out_folder`).
     """
-    sizes = parse_sizes(args.sizes, getattr(args, "large", False)) if getattr(args, "sizes", None) is not None \
-        else None
+    sizes = None if args.sizes is None else parse_sizes(args.sizes, args.large)
     try:
         suite = find_suite(args.suite)
     except InputError as e:
