@@ -33,6 +33,8 @@ _shared = entries({
     "C": "C : array_like, shape (..., 3, 3)\n    Symmetric conic matrix (for an inertia: the 3x3 inertia matrix).",
     "p": "p : array_like, shape (..., 3)\n    Homogeneous points.",
     "l": "l : array_like, shape (..., 3)\n    Homogeneous lines.",
+    "rtol_on": "rtol : float, optional\n"
+               "    Tolerance for \"on the conic\" (:func:`line_conic_intersections`).",
     "rtol_base": "rtol : float, optional\n"
                  "    The base counts as singular when its condition number exceeds ``1/rtol``.",
     "decomposed_P": "P : array_like, shape (..., 3)\n    The point to decompose.",
@@ -393,8 +395,7 @@ def tangents_from_point(C, p, on_interior: str = "raise", rtol: float = 1e-9):
     {parameters C p}
     on_interior : {"raise", "nan"}
         For a point with no real tangents: raise :class:`InputError`, or give NaN rows.
-    rtol : float
-        Tolerance for "on the conic" (:func:`line_conic_intersections`).
+    {rtol_on}
 
     Returns
     -------
@@ -507,8 +508,7 @@ def polar_construction_exterior(C, p, on_interior: str = "raise", rtol: float = 
     {parameters C p}
     on_interior : {"raise", "nan"}, optional
         For a point with no real tangents (:func:`tangents_from_point`).
-    rtol : float, optional
-        Tolerance for "on the conic".
+    {rtol_on}
 
     Returns
     -------
@@ -771,8 +771,7 @@ def special_base(C, Q1, rtol: float = 1e-9):
     {parameters C}
     Q1 : array_like, shape (..., 3)
         A point exterior to the real conic ``C``.
-    rtol : float, optional
-        Tolerance for "on the conic".
+    {rtol_on}
 
     Returns
     -------

@@ -387,12 +387,7 @@ class Inertia(_Held):
     def from_mass(cls, mass, com, radius_of_gyration=None, inertia=None) -> "Inertia":
         """Inertia of mass ``mass`` at ``com``, given ``ρ`` or ``J = m ρ²`` (thesis 4.58, 5.64).
 
-        Parameters
-        ----------
-        mass : float or array_like, shape (...)
-            Mass ``m > 0`` (kg).
-        com : array_like, shape (..., 2)
-            Centre of mass ``c`` (m).
+        {parameters mass_com}
         radius_of_gyration, inertia : float or array_like, optional
             Exactly one: ``ρ > 0`` (m) or ``J > 0`` about the centre of mass (kg·m²).
 
@@ -511,12 +506,7 @@ class Inertia(_Held):
     def at(self, point) -> "Inertia":
         """The same body expressed at ``point`` (thesis 1.68: ``X_P⁻ᵀ I X_P⁻¹``).
 
-        Parameters
-        ----------
-        point : array_like, shape (2,)
-            New reference point (m).
-
-        {returns_inertia}
+        {parameters point returns_inertia}
 
         Examples
         --------
@@ -529,14 +519,7 @@ class Inertia(_Held):
     def rotated(self, theta, about=(0.0, 0.0)) -> "Inertia":
         """The body turned by ``theta`` about ``about`` (thesis 1.68; :func:`planargeo.screws.inertia_rotated`).
 
-        Parameters
-        ----------
-        theta : float
-            Angle (rad), counter-clockwise.
-        about : array_like, shape (2,), optional
-            Centre of the rotation (m).
-
-        {returns_inertia}
+        {parameters theta about returns_inertia}
 
         Examples
         --------

@@ -35,6 +35,9 @@ SCREWS = {
     "other": "other : Twist, Wrench or array_like, shape (..., 3)\n    The screw of the dual kind.",
     "rtol": "rtol : float, optional\n    Relative tolerance of the zero-power test.",
     "theta": "theta : array_like, shape (...)\n    Angle (rad), counter-clockwise.",
+    "about": "about : array_like, shape (..., 2), optional\n    Centre ``c`` of the rotation (m).",
+    "mass_com": "mass : float or array_like, shape (...)\n    Mass ``m > 0`` (kg).\n"
+                "com : array_like, shape (..., 2)\n    Centre of mass ``c = (cx, cy)`` (m).",
     "inertia": "inertia : array_like, shape (..., 3, 3)\n"
                "    Symmetric inertia matrix at the origin (kg, kg·m, kg·m²).",
     "returns_twist": "Returns\n-------\nTwist",
@@ -146,11 +149,7 @@ def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
 
     Wrenches are carried by its inverse transpose, inertias by :func:`inertia_rotated`.
 
-    {parameters theta}
-    about : array_like, shape (..., 2), optional
-        Centre ``c`` of the rotation (m).
-
-    {returns_3x3}
+    {parameters theta about returns_3x3}
 
     Examples
     --------
@@ -249,12 +248,7 @@ def inertia_matrix(mass, com, inertia_about_com) -> np.ndarray:
 
     ``[[m, 0, -m cy], [0, m, m cx], [-m cy, m cx, J + m |c|²]]`` for the centre of mass ``c``.
 
-    Parameters
-    ----------
-    mass : array_like (...)
-        ``m > 0`` (kg).
-    com : array_like (..., 2)
-        Centre of mass ``(cx, cy)`` (m).
+    {parameters mass_com}
     inertia_about_com : array_like (...)
         ``J >= 0`` (kg·m²; ``J = 0`` is a point mass).
 
@@ -479,13 +473,7 @@ def inertia_transform(inertia, theta=0.0, point=(0.0, 0.0)) -> np.ndarray:
 def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
     """Inertia ``M⁻ᵀ I M⁻¹`` of the body turned by ``theta`` about ``about`` (thesis 1.68, 4.8).
 
-    {parameters inertia theta}
-    about : array_like (..., 2), optional
-        Centre of the rotation (m).
-
-    {returns_3x3}
-
-    {not_psd}
+    {parameters inertia theta about returns_3x3 not_psd}
 
     Examples
     --------
