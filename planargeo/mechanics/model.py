@@ -514,9 +514,7 @@ class Data:
         return f"Data(N={self.model.N}, nq={self.model.nq}, fields={keys})"
 
 
-# ---------------------------------------------------------------------------
-# Builders (used by scenes and tests)
-# ---------------------------------------------------------------------------
+# -- builders (used by scenes and tests) ----------------------------------------------------
 #: The builders (:func:`chain_model`, :func:`random_model`) make at most this many bodies unless
 #: ``allow_large=True``: a request for millions of bodies is refused at once, not after minutes
 #: (10 000 links take about 0.4 s to build and 0.2 s per batch-free ``kinematics`` call).
