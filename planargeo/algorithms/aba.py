@@ -52,19 +52,17 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
         Ai, di = A[..., i, :, :], d[..., i, :]
         c = np.einsum("...ij,...j->...i", Ai, data.kappa[..., i, :]) + di
         par = parents[i]
-        if k == 0:
+        if k:                                       # a weld passes on A_i and c whole
+            U, D = _checked_gram(Ai, s, f"sᵀAs of joint {i}", data.origin[..., i, :])
+            Dinv = 1.0 / D if k == 1 else np.linalg.inv(D)
+            u = tau[..., model.q_slice(i)] - np.einsum("...ij,...i->...j", s, c)
+            Dl[i], Ul[i], Dinvl[i], ul[i] = D, U, Dinv, u
             if par >= 0:
-                A[..., par, :, :] += Ai
-                d[..., par, :] += c
-            continue
-        U, D = _checked_gram(Ai, s, f"sᵀAs of joint {i}", data.origin[..., i, :])
-        Dinv = 1.0 / D if k == 1 else np.linalg.inv(D)
-        u = tau[..., model.q_slice(i)] - np.einsum("...ij,...i->...j", s, c)
-        Dl[i], Ul[i], Dinvl[i], ul[i] = D, U, Dinv, u
+                UDinv = U @ Dinv
+                Ai, c = Ai - UDinv @ np.swapaxes(U, -1, -2), c + np.einsum("...ij,...j->...i", UDinv, u)
         if par >= 0:
-            UDinv = U @ Dinv
-            A[..., par, :, :] += Ai - UDinv @ np.swapaxes(U, -1, -2)
-            d[..., par, :] += c + np.einsum("...ij,...j->...i", UDinv, u)
+            A[..., par, :, :] += Ai
+            d[..., par, :] += c
     # 4. joint accelerations, base to tip (3.40-3.42)
     a, qdd = np.zeros(shape + (N, 3)), np.zeros(shape + (nq,))
     for i in range(N):

@@ -44,24 +44,17 @@ SOLVE_COND_LIMIT = 1e16
 
 
 def _cond(M) -> float:
-    """Cheap ``‖M‖_F ‖M⁻¹‖_F`` of a small square matrix (cond₂ to k cond₂); ``inf`` if singular."""
-    if M.shape == (3, 3):                       # adjugate and determinant on Python floats
-        (a, b, c), (d, e, f), (g, h, k) = M.tolist()
-        adj = (e * k - f * h, c * h - b * k, b * f - c * e,
-               f * g - d * k, a * k - c * g, c * d - a * f,
-               d * h - e * g, b * g - a * h, a * e - b * d)
-        det = a * adj[0] + b * adj[3] + c * adj[6]
-        if det == 0.0:
-            return math.inf
-        n2, a2 = sum(x * x for x in (a, b, c, d, e, f, g, h, k)), sum(x * x for x in adj)
-        cond = math.sqrt(n2 * a2) / abs(det)
-        return cond if cond == cond else math.inf
-    try:
-        Mi = np.linalg.inv(M)
-    except np.linalg.LinAlgError:
+    """Cheap ``‖M‖_F ‖M⁻¹‖_F`` of a 3×3 matrix (cond₂ to 3 cond₂) by its adjugate; ``inf`` if singular."""
+    (a, b, c), (d, e, f), (g, h, k) = M.tolist()     # on Python floats
+    adj = (e * k - f * h, c * h - b * k, b * f - c * e,
+           f * g - d * k, a * k - c * g, c * d - a * f,
+           d * h - e * g, b * g - a * h, a * e - b * d)
+    det = a * adj[0] + b * adj[3] + c * adj[6]
+    if det == 0.0:
         return math.inf
-    c = math.sqrt(float(np.vdot(M, M)) * float(np.vdot(Mi, Mi)))
-    return c if c == c else math.inf
+    n2, a2 = sum(x * x for x in (a, b, c, d, e, f, g, h, k)), sum(x * x for x in adj)
+    cond = math.sqrt(n2 * a2) / abs(det)
+    return cond if cond == cond else math.inf
 
 
 def _check_solvable(M, what: str) -> None:
