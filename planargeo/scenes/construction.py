@@ -23,6 +23,7 @@ from typing import Any, Callable
 
 import numpy as np
 
+from planargeo._validate import check_positive
 from planargeo.errors import InputError
 from planargeo.geometry.projective import direction, from_xy, is_ideal, join, to_xy
 from planargeo.screws.inertia import centre_of_mass
@@ -368,10 +369,8 @@ def _acceleration(xv=-1.5, yv=1.0, w=1.0, xa=-1.0, ya=-1.0, alpha=0.5, xj=1.0, y
 # ------------------------------------------------------------ Newton–Euler (4.7): 4.55–4.57
 def _newton_euler(m=1.0, xc=0.5, yc=0.0, r=0.4, xv=0.5, yv=2.0, w=1.5, xa=2.0, ya=-1.0, alpha=1.5,
                   xj=-0.5, yj=0.0) -> Construction:
-    if not m > 0:
-        raise InputError(f"m must be positive, got {m!r}")
-    if not r > 0:
-        raise InputError(f"r must be positive, got {r!r}")
+    check_positive(m, "m")
+    check_positive(r, "r")
     I = inertia_matrix(m, [xc, yc], m * r * r)
     v = w * unit_rotation([xv, yv])
     a = alpha * unit_rotation([xa, ya])
