@@ -268,15 +268,9 @@ def _kinematics_batch(model: Model, q, qd, f_ext, shape) -> Data:
     N, nq = model.N, model.nq
     gx, gy = model.gravity
 
-    pose = np.empty(shape + (N, 3))
-    com = np.empty(shape + (N, 2))
-    origin = np.empty(shape + (N, 2))
-    S = np.zeros(shape + (3, nq))
-    I = np.zeros(shape + (N, 3, 3))
-    v = np.empty(shape + (N, 3))
-    kappa = np.empty(shape + (N, 3))
-    g = np.empty(shape + (N, 3))
-    zeros = np.zeros(shape)
+    pose, v, kappa, g = (np.empty(shape + (N, 3)) for _ in range(4))
+    com, origin = np.empty(shape + (N, 2)), np.empty(shape + (N, 2))
+    S, I, zeros = np.zeros(shape + (3, nq)), np.zeros(shape + (N, 3, 3)), np.zeros(shape)
 
     for i, (joint, par) in enumerate(zip(model.joints, model.parents)):
         px, py, pth = arr["placement"][i]
