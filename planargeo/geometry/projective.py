@@ -414,10 +414,7 @@ def _cross_cond(a, b, c) -> np.ndarray:
     if np.all(ok):
         return out
     # rare: rescale to unit largest component (a zero vector gives NaN there, hence κ = inf)
-    ma = np.abs(a).max(axis=-1, keepdims=True)
-    mb = np.abs(b).max(axis=-1, keepdims=True)
-    a = _safe_div(a, ma)
-    b = _safe_div(b, mb)
+    a, b = (_safe_div(x, np.abs(x).max(axis=-1, keepdims=True)) for x in (a, b))
     num = np.linalg.norm(a, axis=-1) * np.linalg.norm(b, axis=-1)
     c = _cross(a, b)
     mc = np.abs(c).max(axis=-1)
