@@ -15,7 +15,7 @@ from planargeo.draw.pictures._words import pair
 from planargeo.errors import InputError
 from planargeo.geometry._docs import entries
 
-__all__ = ["as_picture", "added", "number", "bare_line", "inertia", "view_centre", "line_words", "ENTRIES",
+__all__ = ["as_picture", "added", "number", "texts", "bare_line", "inertia", "view_centre", "line_words", "ENTRIES",
            "documented"]
 
 
@@ -48,6 +48,17 @@ def number(v, name: str, *, positive: bool = False) -> float:
         kind = "positive" if positive else "non-negative"
         raise InputError(f"{name} must be a {kind} finite number, got {v!r}")
     return f
+
+
+def texts(x, n: int, name: str) -> tuple:
+    """``x`` as a tuple of ``n`` entries (a label or offset per element), checked."""
+    try:
+        t = tuple(x)
+    except TypeError:
+        raise InputError(f"{name} must be a sequence of {n} entries, got {x!r}") from None
+    if len(t) != n:
+        raise InputError(f"{name} must have {n} entries, got {len(t)}")
+    return t
 
 
 def bare_line(pic: Picture, id: str, l, **kw) -> dict:

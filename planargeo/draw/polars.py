@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 
-from planargeo.draw._shared import added, as_picture, bare_line, documented, inertia, line_words
+from planargeo.draw._shared import added, as_picture, bare_line, documented, inertia, line_words, texts
 from planargeo.draw.geometry import _mat, _vec, point_xy
 from planargeo.draw.picture import PX_PER_PT, Picture, plain_text
 from planargeo.draw.pictures._words import num, pair, where
@@ -42,7 +42,7 @@ def _inertia(pic: Picture, prefix: str, I, more: str) -> dict:
 def _polar_and_point(pic: Picture, out: dict, prefix: str, K, p, names, *, inside: bool, through: str,
                      anchor, side: float) -> dict:
     """Add the polar ``L`` of a construction ``K`` (labelled) and its point ``P`` to ``out``."""
-    P, L = names
+    P, L = texts(names, 2, "names")
     out["L"] = _line(pic, prefix + "L", K.polar, "wrench", L, anchor=anchor, side=side,
                      desc=f"polar L = C P of P (5.36): the line through {through}")
     out["P"] = added(pic.point, prefix + "P", p, role="twist", glyph=False, symbol=P,
@@ -135,8 +135,8 @@ def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=No
     Raises
     ------
     InputError
-        ``pic`` not a picture, ``C`` or ``p`` not finite (or ``C`` not symmetric), or an
-        interior point (no real tangents).
+        ``pic`` not a picture, ``C`` or ``p`` not finite (or ``C`` not symmetric), an interior
+        point (no real tangents), or ``names`` not two.
 
     Examples
     --------
@@ -231,8 +231,8 @@ def polar_interior(pic: Picture, C, p, *, angles=(0.35, 1.9), names=("$P$", "$L 
     Raises
     ------
     InputError
-        ``pic`` not a picture, bad ``C``, ``p`` or ``angles``, or a chord that misses the conic
-        (``p`` not inside it).
+        ``pic`` not a picture, bad ``C``, ``p``, ``angles`` or ``names``, or a chord that misses
+        the conic (``p`` not inside it).
 
     Examples
     --------
@@ -304,7 +304,8 @@ def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = Tr
     Raises
     ------
     InputError
-        ``pic`` not a picture, ``I`` not a finite symmetric 3×3 matrix, ``a`` not finite.
+        ``pic`` not a picture, ``I`` not a finite symmetric 3×3 matrix, ``a`` not finite, or
+        ``names`` not two.
 
     Examples
     --------
@@ -320,7 +321,7 @@ def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = Tr
     f = percussion_axis(I, a)
     c = centre_of_mass(I)
     rho = float(radius_of_gyration(I))
-    a_name, f_name = names
+    a_name, f_name = texts(names, 2, "names")
     foot = None
     if not bool(is_ideal(a)) and np.any(f[:2]) and not np.allclose(to_xy(a), c, rtol=0, atol=1e-12 * max(1.0, rho)):
         foot = to_xy(meet(f, join(a, from_xy(c))))
@@ -439,7 +440,8 @@ def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
     Raises
     ------
     InputError
-        ``pic`` not a picture, ``v`` or ``I`` not finite, or a placement not a finite number.
+        ``pic`` not a picture, ``v`` or ``I`` not finite, a placement not a finite number, or
+        ``names`` not four.
 
     Examples
     --------
@@ -457,7 +459,7 @@ def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
     f_anchor = to_xy(v) + float(f_label_at) * ef if (v[2] != 0.0 and f_label_at is not None) else None
     p_anchor = (to_xy(a) + float(p_label_at) * p[:2] / F
                 if (p_label_at is not None and F != 0.0 and a[2] != 0.0) else None)
-    nv, np_, nf, na = names
+    nv, np_, nf, na = texts(names, 4, "names")
     out = {"values": val}
     out["inertia"] = _inertia(pic, prefix, I, f" about the centre of mass {pair(val['c'], 3)} m")
     rate = f", rate {num(v[2])} rad/s" if point_xy(v) is not None else " (a translation)"

@@ -11,7 +11,7 @@ import math
 import numpy as np
 
 from planargeo._validate import as_vec3
-from planargeo.draw._shared import ENTRIES, added, as_picture, line_words, view_centre
+from planargeo.draw._shared import ENTRIES, added, as_picture, line_words, texts, view_centre
 from planargeo.draw.picture import Picture, plain_text
 from planargeo.draw.pictures.common import label_toward
 from planargeo.draw.pictures.kit import force as _force_arrow
@@ -478,9 +478,7 @@ def projective_step(pic: Picture, s, R, A, a_prev, a, kappa, *,
     [2.0]
     """
     as_picture(pic)
-    names = tuple(names)
-    if len(names) != 4:
-        raise InputError(f"names must be 4 labels (Tᵢ, sᵢ, aᵢ₋₁, aᵢ), got {len(names)}")
+    names = texts(names, 4, "names")                    # Tᵢ, sᵢ, aᵢ₋₁, aᵢ
     a_prev, a, kap = as_vec3(a_prev, "a_prev"), as_vec3(a, "a"), as_vec3(kappa, "kappa")
     dec = Decomposition(A, s, R)
     T = dec.T

@@ -9,7 +9,7 @@ import math
 import numpy as np
 
 from planargeo._validate import as_mat3, as_scalar, as_vec3
-from planargeo.draw._shared import ENTRIES, added, as_picture, bare_line, view_centre
+from planargeo.draw._shared import ENTRIES, added, as_picture, bare_line, texts, view_centre
 from planargeo.draw._shared import inertia as inertia_conic
 from planargeo.draw.picture import PX_PER_PT, Picture, _dash, plain_text
 from planargeo.draw.pictures._words import force as force_words, num, pair
@@ -36,17 +36,6 @@ documented = entries(ENTRIES, {
 
 
 # --------------------------------------------------------------------------- checks and words
-def _texts(x, n: int, name: str) -> tuple:
-    """``x`` as a tuple of ``n`` entries (a label or offset per element), checked."""
-    try:
-        t = tuple(x)
-    except TypeError:
-        raise InputError(f"{name} must be a sequence of {n} entries, got {x!r}") from None
-    if len(t) != n:
-        raise InputError(f"{name} must have {n} entries, got {len(t)}")
-    return t
-
-
 def _scale(scale) -> float | None:
     """A force arrow's length per unit force: None (no arrows) or a positive number, checked."""
     if scale is None:
@@ -222,8 +211,8 @@ def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), le
     """
     pic = as_picture(pic)
     v1, v2 = as_vec3(v1, "v1"), as_vec3(v2, "v2")
-    labels = _texts(labels, 3, "labels")
-    toward = list(_texts(toward, 3, "toward"))
+    labels = texts(labels, 3, "labels")
+    toward = list(texts(toward, 3, "toward"))
     v3 = v1 + v2
     out = {}
     if lever:
@@ -299,9 +288,9 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
     pic = as_picture(pic)
     f1, f2 = as_vec3(f1, "f1"), as_vec3(f2, "f2")
     scale = _scale(scale)
-    labels = _texts(labels, 3, "labels")
-    anchors = list(_texts(anchors, 3, "anchors"))
-    toward = _texts(toward, 3, "toward")
+    labels = texts(labels, 3, "labels")
+    anchors = list(texts(anchors, 3, "anchors"))
+    toward = texts(toward, 3, "toward")
     f3 = f1 + f2
     P = np.cross(f1, f2)
     finite_meet = bool(np.any(P)) and not bool(is_ideal(P)) and not bool(is_at_infinity(f1)) \
@@ -445,8 +434,8 @@ def acceleration_step(pic, a_prev, v_prev, s, qd, qdd, *,
     pic = as_picture(pic)
     a_prev, v_prev, s = as_vec3(a_prev, "a_prev"), as_vec3(v_prev, "v_prev"), as_vec3(s, "s")
     qd, qdd = as_scalar(qd, "qd"), as_scalar(qdd, "qdd")
-    labels = _texts(labels, 5, "labels")
-    toward = _texts(toward, 5, "toward")
+    labels = texts(labels, 5, "labels")
+    toward = texts(toward, 5, "toward")
     rel = s * qdd
     bias = kappa(v_prev, s, qd)
     combo = rel + bias
@@ -524,9 +513,9 @@ def newton_euler(pic, I, a, v, *, scale=None,
     pic = as_picture(pic)
     I, a, v = as_mat3(I, "I"), as_vec3(a, "a"), as_vec3(v, "v")
     scale = _scale(scale)
-    labels = _texts(labels, 5, "labels")
-    toward = _texts(toward, 5, "toward")
-    positions = [as_scalar(t, "positions") for t in _texts(positions, 3, "positions")]
+    labels = texts(labels, 5, "labels")
+    toward = texts(toward, 5, "toward")
+    positions = [as_scalar(t, "positions") for t in texts(positions, 3, "positions")]
     Ia = I @ a
     p = bias_force(I, v)
     fnet = Ia + p
