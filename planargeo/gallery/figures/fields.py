@@ -1,8 +1,4 @@
-"""Figures 1.1 and 1.4 (planar): the velocity field of a twist and the moment field of a wrench.
-
-In the plane the helical fields keep their tangential part (1.3, 1.43 with ``ρ = 0``), computed
-point by point with ``X_P`` (4.8) and ``X_P⁻ᵀ`` (4.24); the closed forms are asserted.
-"""
+"""Figures 1.1 and 1.4 (planar): the velocity field of a twist and the moment field of a wrench."""
 from __future__ import annotations
 
 import numpy as np
