@@ -32,12 +32,14 @@ def _conic_xy(C, n: int = 48) -> np.ndarray:
     return (A @ np.vstack([np.cos(t), np.sin(t), np.ones(n)]))[:2].T
 
 
-def _conic_label(pic, id, xy, text, toward, *, desc, gap=4.0):
-    """Label a conic (drawn from the points ``xy``) at its point farthest in the direction ``toward``, outside it."""
+def _inertia(pic, id, A, symbol, toward, *, desc, text=None):
+    """The inertia ``A``, labelled ``text`` (or ``symbol``) outside its point farthest ``toward``."""
+    pic.conic(id, A, role="inertia", symbol=symbol, label="", desc=desc)
+    xy, text = _conic_xy(A), text or symbol
     u = np.asarray(toward, float) / np.hypot(*toward)
-    at = xy[np.argmax(xy @ u)]
     ha, va = _align(u)
-    label(pic, id, at, text, offset=(gap * u[0], gap * u[1]), ha=ha, va=va, symbol=text, desc=desc)
+    label(pic, id + ":label", xy[np.argmax(xy @ u)], text, offset=(4.0 * u[0], 4.0 * u[1]), ha=ha, va=va,
+          symbol=text, desc=desc)
 
 
 def _chain4(q, base="revolute"):
@@ -63,10 +65,8 @@ def fig7_1(ax):
     model(pic, m, d, show_com=False)
     pic.conic("I2", d.I[i], role="inertia", color=COLORS["construct"], mark_center=False, label="",
               symbol="I₂", desc="inertia I₂ of body 2 alone (5.64), as its circle of gyration")
-    desc = "articulated inertia A₂ of bodies 2–4, free-floating (7.1–7.8): its sign-flipped conic about the " \
-           "effective centre"
-    pic.conic("A2", A, role="inertia", symbol="A₂", label="", desc=desc)
-    _conic_label(pic, "A2:label", _conic_xy(A), "A₂", (-1.0, 1.0), desc=desc)
+    _inertia(pic, "A2", A, "A₂", (-1.0, 1.0), desc="articulated inertia A₂ of bodies 2–4, free-floating "
+             "(7.1–7.8): its sign-flipped conic about the effective centre")
     force(pic, "f2", f, scale=0.6, anchor=o - [0.5, 0.0], symbol="f₂",
           desc=f"the internal force f₂ at joint 2 (7.1): 1 N along +x through ({num(o[0], 3)}, {num(o[1], 3)}) m")
     pic.point("a2", a, role="accel", symbol="a₂", label="a₂ = A₂⁻¹f₂", glyph_scale=2.0,
@@ -180,9 +180,8 @@ def fig7_5(ax):
     pic = panel(ax, [[-0.3, -1.1], [4.2, 0.7]], margin=0.02)
     model(pic, res.model, d, show_com=True, ground=False, labels=False)
     A1 = np.array(res.quantities["A1"])
-    desc = "articulated inertia A₁ of the first body with 4 bodies (7.25–7.27), about its effective centre"
-    pic.conic("A1", A1, role="inertia", symbol="A₁", label="", desc=desc)
-    _conic_label(pic, "A1:label", _conic_xy(A1), "A₁ (n = 4)", (0.0, 1.0), desc=desc)
+    _inertia(pic, "A1", A1, "A₁", (0.0, 1.0), text="A₁ (n = 4)", desc="articulated inertia A₁ of the "
+             "first body with 4 bodies (7.25–7.27), about its effective centre")
     groups = {}
     for n in range(1, 5):
         dn = build_scene("horizontal-chain", n=n, lam=lam).quantities["d_over_L"]
@@ -302,9 +301,8 @@ def fig7_11(ax):
     pic = panel(ax, [*outline, *_conic_xy(A3), tip, to_xy(sol.a[1]), to_xy(sol.a[2]),
                      d.origin[0] - [0.0, 0.2]], margin=0.05, fit_height=True)
     model(pic, m, d, show_com=False)
-    desc = "articulated inertia A₃ of the free-floating chain, bodies 3–4 (7.52–7.55)"
-    pic.conic("A3", A3, role="inertia", symbol="A₃", label="", desc=desc)
-    _conic_label(pic, "A3:label", _conic_xy(A3), "A₃", (0.0, -1.0), desc=desc)      # below A₃, off link 3
+    _inertia(pic, "A3", A3, "A₃", (0.0, -1.0),                                        # below A₃, off link 3
+             desc="articulated inertia A₃ of the free-floating chain, bodies 3–4 (7.52–7.55)")
     force(pic, "F", F[3], scale=0.5, anchor=tip, role="wrench", symbol="F",
           desc="the external force F: 1 N downward through the tip of body 4")
     force(pic, "f3", f3, scale=0.5, anchor=d.origin[2], symbol="f₃",
