@@ -35,6 +35,16 @@ def xy_handle(ex, name: str, kx: str, ky: str, when=None) -> Handle:
     return Handle(name, where, lambda x, y: {kx: x, ky: y})
 
 
+def state_handle(ex, name: str, at, drag) -> Handle:
+    """A handle at ``at(state)`` of the state shown; not draggable before the first state or where
+    ``at`` gives None."""
+    def where():
+        p = None if ex.state is None else at(ex.state)
+        return None if p is None else tuple(p)
+
+    return Handle(name, where, drag)
+
+
 def arrow_handle(ex, name: str, kx: str, ky: str, kangle: str, ksize: str | None = None, *,
                  arm: float = 1.0, per: float | None = None, flip: bool = False, when=None) -> Handle:
     """The tip of an arrow from ``(values[kx], values[ky])`` along ``values[kangle]`` (degrees).
@@ -162,16 +172,15 @@ class ChainBodies:
     def _tip_handle(self, bend_for_tip, base: str | None = None) -> Handle:
         """The chain's tip: dragged, it sets the bend ``φ`` that brings it nearest (``bend_for_tip``; the
         first body at the angle control ``base``)."""
-        def where():
-            pts = None if self.state is None else self.state["joints"]
-            return None if pts is None or len(pts) < 3 else tuple(pts[-1])
-
         def drag(x, y):
             v = self.values
             phi = bend_for_tip((x, y), int(v["bodies n"]), math.radians(v[base]) if base else 0.0)
             return {"bend φ (deg)": float(np.clip(math.degrees(phi), -180.0, 180.0))}
 
-        return Handle("tip", where, drag)
+        def tip(st):
+            return st["joints"][-1] if len(st["joints"]) >= 3 else None
+
+        return state_handle(self, "tip", tip, drag)
 
 
 def time_text(t: float) -> str:

@@ -20,8 +20,8 @@ from planargeo.draw.pictures._words import subscript
 from planargeo.draw.pictures.articulated import MARGIN, articulated_picture, chain_view, fit_box
 from planargeo.scenes.articulated import articulated_state, inertia_at
 from planargeo.widgets._motion import Motion
-from planargeo.widgets._explorer import ChainBodies, Described, time_step, xy_handle
-from planargeo.widgets.base import Explorer, Handle, Step, cached, point_text
+from planargeo.widgets._explorer import ChainBodies, Described, state_handle, time_step, xy_handle
+from planargeo.widgets.base import Explorer, Step, cached, point_text
 
 __all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip"]
 
@@ -181,16 +181,13 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
 
     # ------------------------------------------------------------------ handles and Play
     def handles(self):
-        def base_where():
-            return None if self.state is None else tuple(self.state["joints"][1])
-
         def base_drag(x, y):
             if x == 0 and y == 0:
                 return {}
             return {"base θ₁ (deg)": float(math.degrees(math.atan2(y, x)))}
 
         return [xy_handle(self, "pole a", "pole x", "pole y"), self._tip_handle(bend_for_tip, "base θ₁ (deg)"),
-                Handle("first body", base_where, base_drag)]
+                state_handle(self, "first body", lambda st: st["joints"][1], base_drag)]
 
     def focus_options(self):
         # before the first state every body of the longest chain (a focus given with "bodies n")

@@ -1,15 +1,11 @@
 """The :class:`Explorer` base class shared by every interactive explorer.
 
-An explorer is a scene made interactive: controls as data (:class:`Step`, :class:`Choice`,
-:class:`Toggle`), ``compute(values) -> state``, ``scene_picture(state) -> Picture`` and
-``readout_of(state)``, handles to drag and an optional Play step.  The parts, one job each:
-:mod:`~planargeo.widgets.controls` (controls and their checks), :mod:`~planargeo.widgets.handles`
-(drags), :mod:`~planargeo.widgets.play` (Play), :mod:`~planargeo.widgets.export` (files),
-:mod:`~planargeo.widgets.front` (picture, widgets, readout); this module: the state, its updates
-and refusals.  Displays: ``"page"`` (the browser draws the picture; the default ``"auto"``),
-``"image"`` (a PNG) and ``"agg"`` (nothing shown: tests).  A value that cannot be shown is
-*refused*: the message names the control and the reason, and controls, picture and readout stay
-on the last computed state; no exception escapes a callback.
+An explorer is a scene made interactive (the hooks a subclass writes: :class:`Explorer`).  Its
+parts, one job each: :mod:`~planargeo.widgets.controls`, :mod:`~planargeo.widgets.handles`,
+:mod:`~planargeo.widgets.play`, :mod:`~planargeo.widgets.export`, :mod:`~planargeo.widgets.front`;
+this module: the state, its updates and refusals.  A value that cannot be shown is *refused*: the
+message names the control and the reason, and controls, picture and readout stay on the last
+computed state; no exception escapes a callback.
 
 Examples
 --------
@@ -40,9 +36,9 @@ import numpy as np
 
 from planargeo.draw.style import EXPLORER_DPI
 from planargeo.errors import InputError, PlanargeoError
-from planargeo.widgets.controls import (TEXT_LIMIT, Choice, ControlsMixin, FloatSlider, IntSlider, Step,
-                                         Toggle, numeric_failure, same_value, short_text, shown_as, cached,
-                                         check_control)
+from planargeo.widgets.controls import (TEXT_LIMIT, Choice, ControlsMixin, Step, Toggle, cached,
+                                         check_control, numeric_failure, same_value, short_text,
+                                         shown_as)
 from planargeo.widgets.export import ExportMixin
 from planargeo.widgets.front import FrontMixin
 from planargeo.widgets.handles import Handle, HandleMixin
@@ -60,7 +56,8 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
 
     Subclasses implement
 
-    * :meth:`make_controls` -> ``{name: description or widget}`` (initial values are the defaults),
+    * :meth:`make_controls` -> ``{name: description or widget}`` (descriptions: :class:`Step`,
+      :class:`Choice`, :class:`Toggle`; initial values are the defaults),
     * :meth:`compute` ``(values, changed) -> state``: may raise PlanargeoError,
     * :meth:`scene_picture` ``(state, view) -> Picture``: what is drawn,
     * :meth:`readout_of` ``(state) -> dict``: the numbers shown,
@@ -73,7 +70,8 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
     Parameters
     ----------
     display : {"auto", "page", "image", "agg"}
-        Front end (see the module docstring).
+        ``"page"`` (the browser draws the picture; ``"auto"``), ``"image"`` (a PNG) or ``"agg"``
+        (nothing shown: tests).
     figsize : (float, float)
         Picture size in inches (at ``dpi``).
     export_dir : str or Path, optional

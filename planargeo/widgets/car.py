@@ -16,7 +16,7 @@ import textwrap
 import numpy as np
 
 from planargeo import scenes
-from planargeo.draw.pictures.car import (FORCE_SCALE, HALF_TRACK, NEAR, OVERHANG, SLIDES, TYRE, car_picture,
+from planargeo.draw.pictures.car import (FORCE_SCALE, HALF_TRACK, NEAR, OVERHANG, TYRE, car_picture,
                                          moves, view_box)
 from planargeo.errors import InputError, SceneError
 from planargeo.simulate.integrate import energy

@@ -25,6 +25,7 @@ from planargeo.simulate.integrate import energy
 from planargeo.widgets._explorer import Described, explorer_data, time_step
 from planargeo.widgets._motion import Motion, refusal_on_picture
 from planargeo.widgets.base import Explorer, Handle, Step, Toggle, cached
+from planargeo.widgets.play import check_duration
 
 __all__ = ["ChainExplorer", "chain_for", "parse_list"]
 
@@ -273,14 +274,11 @@ class ChainExplorer(Described, Explorer):
                     raise InputError(f"{LIST_Q}: joint {i + 1} (prismatic) slides between {SLIDE[0]:g} and "
                                      f"{SLIDE[1]:g} m, got {x:g}")
                 q[i] = x
-        for i, x in enumerate(parse_list(v["joint speeds"], "joint speeds")[:model.nq]):
-            _check_typed("joint speeds", i, x, SPEED_LIMIT,
-                         " rad/s" if model.joints[i].kind == "revolute" else " m/s")
-            qd[i] = x
-        for i, x in enumerate(parse_list(v["joint torques"], "joint torques")[:model.nq]):
-            _check_typed("joint torques", i, x, TORQUE_LIMIT,
-                         " N·m" if model.joints[i].kind == "revolute" else " N")
-            tau[i] = x
+        for field, typed, limit, units in (("joint speeds", qd, SPEED_LIMIT, (" rad/s", " m/s")),
+                                           ("joint torques", tau, TORQUE_LIMIT, (" N·m", " N"))):
+            for i, x in enumerate(parse_list(v[field], field)[:model.nq]):
+                _check_typed(field, i, x, limit, units[model.joints[i].kind != "revolute"])
+                typed[i] = x
         return model, q, qd, tau
 
     def adjust(self, values, changed):
@@ -546,11 +544,7 @@ class ChainExplorer(Described, Explorer):
         SizeLimitError
             A duration beyond the explorer's ``duration`` without ``allow_long``.
         """
-        d = self.duration if duration is None else duration
-        if isinstance(d, bool) or not isinstance(d, (int, float, np.integer, np.floating)) or \
-                not math.isfinite(float(d)) or not float(d) > 0.0:
-            raise InputError(f"duration must be a positive finite number of seconds, got {duration!r}")
-        d = float(d)
+        d = check_duration("duration", self.duration if duration is None else duration, math.inf)
         if d < 1.0 / self.fps:
             raise InputError(f"duration must be at least one frame (1/fps = {1.0 / self.fps:g} s), "
                              f"got {duration!r}")

@@ -187,25 +187,17 @@ class ExportMixin:
         """True when MP4 export works here (the ``ffmpeg`` program is installed)."""
         return shutil.which("ffmpeg") is not None
 
-    def _export_bytes(self, kind: str) -> bytes:
-        if kind == "svg":
-            return self._svg_bytes()
-        if kind == "png":
-            return self._png_bytes()
-        return self._animation_bytes(kind, 60, self.play_fps)
-
     def _export_clicked(self, kind: str = "svg") -> None:
         """Export button: a download link in the page (and the file in ``export_dir`` if set)."""
         mime = {"svg": "image/svg+xml", "png": "image/png", "gif": "image/gif",
                 "mp4": "video/mp4"}[kind]
         try:
+            data = {"svg": self._svg_bytes, "png": self._png_bytes}.get(
+                kind, lambda: self._animation_bytes(kind, 60, self.play_fps))()
+            name, saved = f"planargeo-{self.slug}.{kind}", ""
             if self.export_dir is not None:
-                p = {"svg": self.export_svg, "png": self.export_png}.get(
-                    kind, lambda: self.export_animation(format=kind, fps=self.play_fps))()
-                data, name = p.read_bytes(), p.name
-                saved = f"saved <code>{html.escape(str(p))}</code> "
-            else:
-                data, name, saved = self._export_bytes(kind), f"planargeo-{self.slug}.{kind}", ""
+                p = self._write(self._export_path(None, kind), data)
+                name, saved = p.name, f"saved <code>{html.escape(str(p))}</code> "
             href = f"data:{mime};base64,{base64.b64encode(data).decode('ascii')}"
             self.export_label.value = (
                 f"<div style='white-space:nowrap;overflow:hidden;text-overflow:ellipsis'>"

@@ -21,9 +21,10 @@ from planargeo.errors import InputError, PlanargeoError, SceneError
 from planargeo.scenes.slider_crank import (DEAD_CENTRE_TOL, dead_centre_at, slider_crank_advance,
                                            slider_crank_model, slider_crank_reactions, slider_crank_solve)
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._explorer import SceneTime, explorer_data, keep_run, run_to, time_value
+from planargeo.widgets._explorer import (SceneTime, explorer_data, keep_run, run_to, state_handle,
+                                         time_value)
 from planargeo.widgets._motion import Budget, refusal_on_picture
-from planargeo.widgets.base import Explorer, Handle, Step, Toggle, cached
+from planargeo.widgets.base import Explorer, Step, Toggle, cached
 
 __all__ = ["SliderCrankExplorer"]
 
@@ -130,12 +131,6 @@ class SliderCrankExplorer(SceneTime, Explorer):
     # ----------------------------------------------------------------- handles
     def handles(self):
         # the crank pin sets ψ; the piston sets its height, the crank keeps its side
-        def pin():
-            return None if self.state is None else tuple(self.state["sol"].data.pose[1, :2])
-
-        def piston():
-            return None if self.state is None else tuple(self.state["sol"].data.pose[2, :2])
-
         def drag_pin(x, y):
             if math.hypot(x, y) < 1e-9:
                 raise InputError("the crank pin cannot be dragged onto the crank pivot: no crank angle there")
@@ -155,7 +150,8 @@ class SliderCrankExplorer(SceneTime, Explorer):
             px = side * math.sqrt(max(r * r - py * py, 0.0))
             return {"crank angle (deg)": math.degrees(math.atan2(py, px))}
 
-        return [Handle("crank pin", pin, drag_pin), Handle("piston", piston, drag_piston)]
+        return [state_handle(self, "crank pin", lambda st: st["sol"].data.pose[1, :2], drag_pin),
+                state_handle(self, "piston", lambda st: st["sol"].data.pose[2, :2], drag_piston)]
 
     # ------------------------------------------------------------------ state
     def _run_state(self, model, run, t, l, drive):
@@ -206,7 +202,6 @@ class SliderCrankExplorer(SceneTime, Explorer):
         st["configuration"] = name
         if name and t == 0.0:
             st["message"] = f"dead centre ({name}): a force on the piston cannot turn the crank here"
-        keep_run(self._runs, key, run)
         return st
 
     @staticmethod

@@ -19,9 +19,9 @@ from planargeo.draw.pictures.articulated import fit_box
 from planargeo.draw.pictures.splitting import splitting_picture
 from planargeo.draw.pictures._words import subscript
 from planargeo.scenes.splitting import splitting_state, twist_pole
-from planargeo.widgets._explorer import ChainBodies, Described
+from planargeo.widgets._explorer import ChainBodies, Described, state_handle
 from planargeo.widgets.articulated import bend_for_tip
-from planargeo.widgets.base import Explorer, Handle, Step, point_text
+from planargeo.widgets.base import Explorer, Step, point_text
 
 __all__ = ["SplittingExplorer", "NMAX", "x_over_L_7_48"]
 
@@ -120,18 +120,15 @@ class SplittingExplorer(Described, ChainBodies, Explorer):
 
     def handles(self):
         # the split marker (snaps to the nearest joint) and the tip (bend φ)
-        def split_where():
-            st = self.state
-            if st is None or st["n"] < 3:             # two bodies: nowhere else to split (disabled)
-                return None
-            return tuple(st["joints"][st["split"]])
-
         def split_drag(x, y):
             st = self.state
             d = np.hypot(*(st["joints"][1:st["n"]] - [x, y]).T)
             return {"split at joint": int(np.argmin(d)) + 2}
 
-        return [Handle("split", split_where, split_drag), self._tip_handle(bend_for_tip)]
+        def split_at(st):             # two bodies: nowhere else to split (disabled)
+            return st["joints"][st["split"]] if st["n"] >= 3 else None
+
+        return [state_handle(self, "split", split_at, split_drag), self._tip_handle(bend_for_tip)]
 
     def compute(self, values, changed):
         n, split = int(values["bodies n"]), int(values["split at joint"]) - 1

@@ -22,9 +22,10 @@ from planargeo.errors import InputError, PlanargeoError
 from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_reactions,
                                     tree_solve)
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._explorer import Described, SceneTime, explorer_data, keep_run, run_to, time_value
+from planargeo.widgets._explorer import (Described, SceneTime, explorer_data, keep_run, run_to,
+                                         state_handle, time_value)
 from planargeo.widgets._motion import Budget, refusal_on_picture
-from planargeo.widgets.base import Explorer, Handle, Step, Toggle, cached
+from planargeo.widgets.base import Explorer, Step, Toggle, cached
 
 __all__ = ["TreeExplorer"]
 
@@ -132,13 +133,6 @@ class TreeExplorer(Described, SceneTime, Explorer):
 
     # ---------------------------------------------------------------- handles
     def handles(self):
-        def tip(i):
-            def where():
-                if self.state is None:
-                    return None
-                return tuple(self.state["tips"][i])
-            return where
-
         def near(deg, ref):      # turned by whole turns to lie nearest ref
             return deg + 360.0 * round((ref - deg) / 360.0)
 
@@ -161,7 +155,8 @@ class TreeExplorer(Described, SceneTime, Explorer):
             new = near(math.degrees(math.atan2(y - base[1], x - base[0])), a2)
             return {"body 1 angle (deg)": (a1 + 180.0) % 360.0 - 180.0, "body 2 angle (deg)": new}
 
-        return [Handle("tip of body 1", tip(0), drag1), Handle("tip of body 2", tip(1), drag2)]
+        return [state_handle(self, "tip of body 1", lambda st: st["tips"][0], drag1),
+                state_handle(self, "tip of body 2", lambda st: st["tips"][1], drag2)]
 
     def mechanism_points(self):
         if self.state is None:
@@ -217,9 +212,7 @@ class TreeExplorer(Described, SceneTime, Explorer):
         if closed:
             st["F"] = sol.F.reshape(-1, 3)
             st["cond"] = float(sol.cond)
-        # the state is good: keep its pose and run (the last two runs)
-        cached(poses, pose_key, lambda: pose)
-        keep_run(runs, key, run)
+        cached(poses, pose_key, lambda: pose)          # the state is good: keep its pose
         return st
 
     def scene_picture(self, state, view=None):
