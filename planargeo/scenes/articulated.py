@@ -18,7 +18,8 @@ import numpy as np
 from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.scenes import SceneResult, plain, register
 
-__all__ = ["articulated", "articulated_state", "bent_chain_model", "joint_points", "inertia_at", "conic_centre", "COMPONENTS"]
+__all__ = ["articulated", "articulated_state", "bent_chain_model", "joint_points", "inertia_at", "conic_centre",
+           "effective_centre", "COMPONENTS"]
 
 #: the six independent components of a planar inertia, in the order of the convergence chart
 COMPONENTS = ("m_x", "m_y", "A_z", "m_xy", "c_x", "c_y")
@@ -118,6 +119,30 @@ def conic_centre(A) -> np.ndarray:
     return np.array([-P[1] / P[2], P[0] / P[2]])
 
 
+def effective_centre(A) -> tuple[float, float, float, float]:
+    """``(d, m_x, m_y, A_z)`` of an inertia symmetric about the x axis: where it is diagonal (thesis 7.26).
+
+    Parameters
+    ----------
+    A : array_like, shape (3, 3)
+        An inertia symmetric about the x axis.
+
+    Returns
+    -------
+    tuple of float
+        The centre ``d`` on the x axis (m), the two masses (kg) and the rotational inertia there.
+
+    Examples
+    --------
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> effective_centre(inertia_matrix(2.0, [0.5, 0.0], 0.3))
+    (0.5, 2.0, 2.0, 0.3)
+    """
+    A = np.asarray(A, dtype=float)
+    d = A[1, 2] / A[1, 1]
+    return float(d), float(A[0, 0]), float(A[1, 1]), float(A[2, 2] - A[1, 2] ** 2 / A[1, 1])
+
+
 def _components(A) -> list[float]:
     return [float(A[0, 0]), float(A[1, 1]), float(A[2, 2]), float(A[0, 1]), float(A[0, 2]), float(A[1, 2])]
 
@@ -156,8 +181,6 @@ def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int | 
     >>> r.quantities["A"][0] == r.quantities["I"][0]       # no outboard body: the rigid inertia
     True
     """
-    from planargeo.scenes.horizontal_chain import effective_centre
-
     L, m = 1.0, 1.0
     rho = L / lam
     model = bent_chain_model(n, rho, L, m)

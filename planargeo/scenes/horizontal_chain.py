@@ -22,7 +22,7 @@ import numpy as np
 
 from planargeo.mechanics.model import Model
 from planargeo.scenes import SceneResult, plain, register
-from planargeo.scenes.articulated import bent_chain_model
+from planargeo.scenes.articulated import bent_chain_model, effective_centre
 
 __all__ = ["horizontal_chain", "horizontal_chain_model", "effective_centre"]
 
@@ -42,30 +42,6 @@ def horizontal_chain_model(n: int, m: float, rho: float, L: float) -> Model:
     Model
     """
     return bent_chain_model(n, rho, L, m)
-
-
-def effective_centre(A) -> tuple[float, float, float, float]:
-    """``(d, m_x, m_y, A_z)`` of an inertia symmetric about the x axis: where it is diagonal (thesis 7.26).
-
-    Parameters
-    ----------
-    A : array_like, shape (3, 3)
-        An inertia symmetric about the x axis.
-
-    Returns
-    -------
-    tuple of float
-        The centre ``d`` on the x axis (m), the two masses (kg) and the rotational inertia there.
-
-    Examples
-    --------
-    >>> from planargeo.screws.twists import inertia_matrix
-    >>> effective_centre(inertia_matrix(2.0, [0.5, 0.0], 0.3))
-    (0.5, 2.0, 2.0, 0.3)
-    """
-    A = np.asarray(A, dtype=float)
-    d = A[1, 2] / A[1, 1]
-    return float(d), float(A[0, 0]), float(A[1, 1]), float(A[2, 2] - A[1, 2] ** 2 / A[1, 1])
 
 
 @register("horizontal-chain", limits={"n": (2000, "n = 2000 takes about 1 s; the cost grows as n²")},
