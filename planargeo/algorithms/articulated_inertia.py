@@ -301,12 +301,10 @@ def _data_arrays(model, d, tau):
 def _per_state(fn, model, q, qd, tau, f_ext):
     """The one-state solver ``fn(model, q, qd, tau, f_ext) -> (nq,)`` over batch dimensions, validated once."""
     q, qd, tau, f_ext, _, shape = check_state(model, q, qd, tau, f_ext)
-    nq, N = model.nq, model.N
-    q = np.broadcast_to(q, shape + (nq,))
-    qd = np.zeros(shape + (nq,)) if qd is None else np.broadcast_to(qd, shape + (nq,))
-    tau = np.zeros(shape + (nq,)) if tau is None else np.broadcast_to(tau, shape + (nq,))
-    fx = None if f_ext is None else np.broadcast_to(f_ext, shape + (N, 3))
-    out = np.empty(shape + (nq,))
+    full = shape + (model.nq,)
+    q, qd, tau = (np.zeros(full) if x is None else np.broadcast_to(x, full) for x in (q, qd, tau))
+    fx = None if f_ext is None else np.broadcast_to(f_ext, shape + (model.N, 3))
+    out = np.empty(full)
     for idx in np.ndindex(*shape):
         out[idx] = fn(model, q[idx], qd[idx], tau[idx], None if fx is None else fx[idx])
     return out

@@ -131,7 +131,7 @@ def _finite_inputs(x, y, z, fext):
         return False
     if fext is not None:
         for i in range(fext.shape[0]):
-            if not _finite(fext[i]):
+            if not (math.isfinite(fext[i, 0]) and math.isfinite(fext[i, 1]) and math.isfinite(fext[i, 2])):
                 return False
     return True
 

@@ -112,10 +112,10 @@ def trunk(C) -> np.ndarray:
 def _topology(parents: tuple) -> tuple[np.ndarray, np.ndarray]:
     """Cached block adjacency and trunk matrices ``(C ⊗ 1_3, Δ^{-1} ⊗ 1_3)`` of a parent tuple."""
     C = adjacency(parents)
-    C3, D3 = blocks(C), blocks(trunk(C))
-    C3.setflags(write=False)
-    D3.setflags(write=False)
-    return C3, D3
+    out = blocks(C), blocks(trunk(C))
+    for x in out:
+        x.setflags(write=False)
+    return out
 
 
 def blocks(X, k: int = 3) -> np.ndarray:
