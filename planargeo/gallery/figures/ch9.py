@@ -12,22 +12,13 @@ from planargeo.draw.style import COLORS
 from planargeo.gallery.figures import register, scene_state
 
 
-def _contact_points(model, data):
-    """World contact points on body a of every contact (9.49)."""
-    return [world_point(data.pose, c.a, c.point_a) for c in model.contacts]
-
-
-def _tips(model, data):
-    """Far ends of the bodies drawn as links through their centres of mass."""
-    return [data.pose[i, :2] + 2 * (data.com[i] - data.pose[i, :2]) for i in range(model.N)]
-
-
 @register(9.01, height=3.0)
 def fig9_1(ax):
     """Fig. 9.1 — the rigid-body tree of scene 'tree': body 1 is the root (pinned), bodies 4, 7, 8
     and 9 are the tips of the branches (parents (9.1): −, 1, 2, 3, 1, 5, 6, 6, 1)."""
     res, d = scene_state("tree")
-    pic = panel(ax, [*d.origin, *_tips(res.model, d)], margin=0.08)
+    tips = d.pose[:, :2] + 2 * (d.com - d.pose[:, :2])     # the links through their centres of mass
+    pic = panel(ax, [*d.origin, *tips], margin=0.08)
     model(pic, res.model, d, width=0.14, show_com=False, names=[str(k + 1) for k in range(9)])
     show(pic, ax)
 
@@ -50,7 +41,8 @@ def fig9_2(ax):
     sc = 0.12
     P = [shape_points(*shapes)]
     mags, lines, arrows = [], [], []
-    for k, (c, p) in enumerate(zip(m.contacts, _contact_points(m, d))):
+    for k, c in enumerate(m.contacts):
+        p = world_point(d.pose, c.a, c.point_a)            # the contact point on body a (9.49)
         f = F[k]                          # Definition 42: +F acts on body b, −F on body a
         mag = np.hypot(*f[:2])
         e = f[:2] / mag
