@@ -121,9 +121,8 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
         "tyre_wrenches": R * mu, "decomposition": dec,
     }
     body_shape = None
-    if outlines:                             # shapely work only Fig 6.6 reads
-        steer = float(np.arctan2(L, d))      # heading (0, 1) turned by steer = front rolling direction
-        body_shape, rear_tyre, front_tyre = _outlines(d, L, steer)
+    if outlines:        # shapely work only Fig 6.6 reads (steer: heading (0, 1) to front rolling)
+        body_shape, rear_tyre, front_tyre = _outlines(d, L, extra["steer"])
         extra["tyres"] = [rear_tyre, front_tyre]
     model = Model([Body(m, com=tuple(cg), inertia=m * rho ** 2, shape=body_shape, name="car")],
                   [Joint("revolute", (0.0, 0.0, 0.0), name="icr")], [-1], gravity=(0.0, 0.0))
