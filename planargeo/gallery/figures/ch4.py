@@ -175,10 +175,6 @@ def chain47_state():
     return m, newton_euler(m, Q47, QD47, QDD47)
 
 
-def _tip(w, i):
-    return w.pose[i, :2] + 0.8 * np.array([np.cos(w.pose[i, 2]), np.sin(w.pose[i, 2])])
-
-
 @register(4.07, height=2.6)
 def fig4_7(ax):
     """Fig. 4.7 — velocity kinematics v_i = v_{i−1} + s_i q̇_i (4.47): the pole of v₃ lies on the
@@ -186,7 +182,8 @@ def fig4_7(ax):
     computed with planargeo.mechanics.kinematics."""
     m, d = chain47_state()
     i = 2
-    pic = panel(ax, [to_xy(d.v[i - 1]), to_xy(d.v[i]), *d.origin, _tip(d, i)], margin=0.12)
+    tip = d.pose[i, :2] + 0.8 * np.array([np.cos(d.pose[i, 2]), np.sin(d.pose[i, 2])])   # of the 0.8 link
+    pic = panel(ax, [to_xy(d.v[i - 1]), to_xy(d.v[i]), *d.origin, tip], margin=0.12)
     model(pic, m, d, show_com=False)
     out = velocity_step(pic, d.v[i - 1], d.s(i)[:, 0], QD47[i],
                         labels=("$v_2$", r"$s_3\dot{q}_3$", "$v_3$"), dim_offset=0.4,

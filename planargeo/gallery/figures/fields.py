@@ -16,11 +16,6 @@ POLE, OMEGA = np.array([0.4, 0.2]), 1.2
 LINE_POINT, ANGLE = np.array([0.0, -0.3]), np.radians(25.0)
 
 
-def _grid(n=7, half=1.5):
-    t = np.linspace(-half, half, n)
-    return np.array([[x, y] for y in t for x in t])
-
-
 @register(1.01, height=2.9)
 def fig1_1(ax):
     """Fig. 1.1 — the velocity field of a planar twist v (ω = 1.2 about the pole): the velocity of
@@ -28,7 +23,8 @@ def fig1_1(ax):
     the pole to P and grows with the distance r as ω r (1.3 with pitch 0: the helical field of the
     spatial case without its axial part); at the pole it vanishes."""
     v = Twist.rotation(POLE, OMEGA).array
-    P = _grid()
+    t = np.linspace(-1.5, 1.5, 7)
+    P = np.array([[x, y] for y in t for x in t])                                # a 7 × 7 grid
     V = np.array([(X_P(p) @ v)[:2] for p in P])
     r = P - POLE
     assert np.allclose(np.einsum("ij,ij->i", V, r), 0.0)                       # perpendicular
