@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo.errors import COND_LIMIT, SceneError, SingularConfigurationError
+from planargeo.errors import COND_LIMIT, PlanargeoError, SceneError, SingularConfigurationError
 from planargeo.scenes import SceneResult, check_param, register
 
 __all__ = ["slider_crank", "slider_crank_model", "slider_crank_solve", "slider_crank_state", "slider_crank_advance",
@@ -318,7 +318,6 @@ def slider_crank_advance(model, psi, psidot, dt, r=2.29, l=5.00, drive="free", *
     >>> out["status"], bool(out["position_residual"] < 1e-9), bool(0.5 < out["psi"] < 0.7)
     ('ok', True, True)
     """
-    from planargeo.errors import PlanargeoError
     from planargeo.simulate.loops import simulate_loops
 
     dt = check_param("dt", dt, positive=True)

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from planargeo.errors import PlanargeoError, SceneError
 from planargeo.scenes import SceneResult, check_param, plain, register
 
 __all__ = ["tree", "constrained_tree", "tree_model", "tree_solve", "tree_dof", "tree_pose", "tree_advance",
@@ -227,7 +228,6 @@ def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
     >>> bool(np.allclose(q, closed.state["q"])), bool(np.allclose(qd, closed.state["qd"]))
     (True, True)
     """
-    from planargeo.errors import SceneError
     from planargeo.simulate.loops import closure_jacobian, closure_residual, project_state
 
     root_angle, speed = check_param("root_angle", root_angle), check_param("speed", speed)
@@ -306,7 +306,6 @@ def tree_advance(model, q, qd, dt, *, rtol=1e-8, atol=1e-10, cross=True):
     >>> out["status"], bool(out["position_residual"] < 1e-9)
     ('ok', True)
     """
-    from planargeo.errors import PlanargeoError
     from planargeo.simulate.loops import simulate_loops
 
     dt = check_param("dt", dt, positive=True)
