@@ -36,11 +36,11 @@ def _split(force, Lam_i, b_i, A_next, d_next, T_next, s_next, Q_next, kappa_next
     T = np.asarray(T_next, dtype=float).reshape(3, -1)
     TQ = T @ np.asarray(Q_next, dtype=float).reshape(-1)
     P = _EYE3 - T @ np.asarray(s_next, dtype=float).reshape(3, -1).T
-    C = _EYE3 + Lam @ (P @ A)
-    _check_solvable(C, "1 + Lambda^-1 R U^T A of the split")
+    C, what = _EYE3 + Lam @ (P @ A), "1 + Lambda^-1 R U^T A of the split"
+    _check_solvable(C, what)
     if force:                                       # through C^T = 1 + R Uᵀ A Λ_i⁻¹ (7.55)
-        return _solve(C.T, TQ + P @ (A @ (b + kappa) + d), "1 + Lambda^-1 R U^T A of the split")
-    return _solve(C, b - Lam @ (TQ + P @ (A @ kappa + d)), "1 + Lambda^-1 R U^T A of the split")
+        return _solve(C.T, TQ + P @ (A @ (b + kappa) + d), what)
+    return _solve(C, b - Lam @ (TQ + P @ (A @ kappa + d)), what)
 
 
 @entries(_SPLIT)

@@ -18,11 +18,11 @@ __all__ = ["acceleration_propagator", "force_propagator", "joint_accelerations",
 
 
 # -- Propagators (thesis 6.113) -------------------------------------------------------------------
-def _propagator_args(I, s, Q, T):
+def _propagator_args(I, s, Q, T, *vectors):
     I = np.asarray(I, dtype=float)
     s = np.asarray(s, dtype=float).reshape(3, -1)
     T = T_of(I, s) if T is None else np.asarray(T, dtype=float).reshape(3, -1)
-    return I, s, np.asarray(Q, dtype=float).reshape(-1), T
+    return (I, s, np.asarray(Q, dtype=float).reshape(-1), T, *(np.asarray(x, dtype=float) for x in vectors))
 
 
 def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.ndarray:
@@ -54,10 +54,9 @@ def acceleration_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.
     ...                         [0.0, -1.0, -1.0], np.zeros(3), np.zeros(3), np.zeros(3))  # 1 rad/s²
     array([0., 0., 1.])
     """
-    I, s, Q, T = _propagator_args(I, s, Q, T)
-    base = np.asarray(a_prev, dtype=float) + np.asarray(kappa, dtype=float)
-    rhs = T @ Q - np.asarray(p, dtype=float) - np.asarray(f_next, dtype=float)
-    return _effective_mobility(I, s, gram=(I @ s, s.T @ I @ s)) @ rhs + base - s @ (T.T @ base)
+    I, s, Q, T, p, f_next, a_prev, kappa = _propagator_args(I, s, Q, T, p, f_next, a_prev, kappa)
+    base = a_prev + kappa
+    return _effective_mobility(I, s, gram=(I @ s, s.T @ I @ s)) @ (T @ Q - p - f_next) + base - s @ (T.T @ base)
 
 
 def force_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.ndarray:
@@ -84,9 +83,8 @@ def force_propagator(I, s, Q, p, f_next, a_prev, kappa, *, T=None) -> np.ndarray
     >>> np.round(f, 12) + 0.0          # the pin carries none of a push through the mass
     array([0., 0., 0.])
     """
-    I, s, Q, T = _propagator_args(I, s, Q, T)
-    load = I @ (np.asarray(a_prev, dtype=float) + np.asarray(kappa, dtype=float)) + np.asarray(p, dtype=float) \
-        + np.asarray(f_next, dtype=float)
+    I, s, Q, T, p, f_next, a_prev, kappa = _propagator_args(I, s, Q, T, p, f_next, a_prev, kappa)
+    load = I @ (a_prev + kappa) + p + f_next
     return T @ Q + load - T @ (s.T @ load)
 
 
