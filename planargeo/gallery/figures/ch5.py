@@ -31,18 +31,15 @@ def _vec_arrow(pic, id, p, d, text, *, color, symbol, desc, offset=(5, 5), width
         label(pic, id + ":label", p + d, text, offset=offset, color=color, symbol=symbol, desc=desc)
 
 
-def _axes_cross(pic, size=2.6):
-    for k, (d, name) in enumerate(((np.array([1.0, 0.0]), "x"), (np.array([0.0, 1.0]), "y"))):
+def _coords(ax, alternative: bool):
+    """A point P and a line L in standard (Fig. 5.1) or alternative (Fig. 5.5) coordinates."""
+    pic = panel(ax, [[-0.6, -1.6], [2.8, 2.6]], margin=0.03)
+    size = 2.6                                          # the axes, from -0.3 to size + 0.3
+    for d, name in ((np.array([1.0, 0.0]), "x"), (np.array([0.0, 1.0]), "y")):
         _vec_arrow(pic, f"{name} axis", -0.3 * d, (size + 0.3) * d, "", color=AXES, symbol=name,
                    desc=f"the {name} axis", width=0.7)
     label(pic, "x", [size, 0], "x", offset=(2, -10), color=AXES, symbol="x", desc="the x axis")
     label(pic, "y", [0, size], "y", offset=(-10, 0), va="top", color=AXES, symbol="y", desc="the y axis")
-
-
-def _coords(ax, alternative: bool):
-    """A point P and a line L in standard (Fig. 5.1) or alternative (Fig. 5.5) coordinates."""
-    pic = panel(ax, [[-0.6, -1.6], [2.8, 2.6]], margin=0.03)
-    _axes_cross(pic)
     lamP, rP = np.deg2rad(62), 2.0
     lamL, rL = np.deg2rad(-20), 1.8
     # the point and the line are built from their standard coordinates (5.4, 5.14a)
