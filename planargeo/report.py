@@ -119,8 +119,7 @@ def quantity_info(scene: str) -> dict[str, dict[str, str]]:
     own = getattr(sys.modules.get(getattr(fn, "__module__", ""), None), "QUANTITY_INFO", None)
     if isinstance(own, dict) and own is not QUANTITY_INFO and isinstance(own.get(scene), dict):
         table.update(own[scene])
-    keys = ("description", "symbol", "equation", "unit")
-    return {k: dict(zip(keys, v)) for k, v in table.items()}
+    return {k: Quantity(*v)._asdict() for k, v in table.items()}
 
 
 def _magnitude(v: Any) -> float:
