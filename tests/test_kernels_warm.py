@@ -5,6 +5,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numba
 import numpy as np
 import pytest
 
@@ -14,8 +15,11 @@ from planargeo.algorithms.rnea import inverse_dynamics
 from planargeo.mechanics.model import chain_model
 
 ROOT = Path(__file__).resolve().parents[1]
+#: these read numba's dispatchers and cache, which NUMBA_DISABLE_JIT=1 does not make
+COMPILED = pytest.mark.skipif(numba.config.DISABLE_JIT, reason="inspects numba's compiled dispatchers and cache")
 
 
+@COMPILED
 def test_warm_compiles_every_signature_the_package_calls():
     steps = [what for what, _ in compiled.warm()]
     for what in ("forward and inverse dynamics, one state", "forward dynamics, batch", "inverse dynamics, batch"):
@@ -52,6 +56,7 @@ def test_warm_command_and_its_place_in_the_install_step():
     assert warm > pip                              # after the install, before the stamp
 
 
+@COMPILED
 def test_a_cold_cache_is_seen_without_compiling(tmp_path):
     """With numba's cache in an empty folder the kernels are cold (the first call would compile): ``cache_is_warm``
     says so without compiling anything (warm after ``--warm``: the first test)."""
