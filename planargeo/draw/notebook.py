@@ -7,13 +7,16 @@ titled with its numbers, and written as SVG by matplotlib.  ``import planargeo``
 """
 from __future__ import annotations
 
+import io
 import math
 
 import numpy as np
 
+from planargeo.draw.geometry import conic_geometry
 from planargeo.draw.picture import Picture
 from planargeo.draw.pictures._words import num as _num
 from planargeo.draw.pictures.kit import foot_on_line
+from planargeo.draw.style import rc_context
 from planargeo.errors import InputError
 from planargeo.geometry.conics import centre, classify
 from planargeo.geometry.elements import Conic, Line, Point
@@ -54,8 +57,6 @@ def _frame(points, title: str, size, minimum: float = 1.0) -> Picture:
 
 def _ring(C) -> np.ndarray:
     """Points of the conic's real curve or real partner (for the view)."""
-    from planargeo.draw.geometry import conic_geometry
-
     g = conic_geometry(C)
     if "affine" not in g:
         return np.zeros((0, 2))
@@ -199,10 +200,7 @@ def element_svg(obj) -> str | None:
     >>> element_svg(Point.from_xy(1.0, 2.0)).lstrip().startswith("<?xml")
     True
     """
-    import io
-
-    from planargeo.draw.render import figure
-    from planargeo.draw.style import rc_context
+    from planargeo.draw.render import figure   # matplotlib: imported when needed
 
     if not isinstance(obj, Picture):
         try:

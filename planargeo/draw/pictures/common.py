@@ -16,6 +16,7 @@ True
 """
 from __future__ import annotations
 
+import inspect
 import math
 import re
 
@@ -45,8 +46,6 @@ def builder(fn):
     callable
         ``fn``, its docstring completed.
     """
-    import inspect
-
     doc = inspect.cleandoc(fn.__doc__ or "")
     fn.__doc__ = "\n".join([doc] + [text for key, text in _BUILDER_DOC.items()
                                      if not re.search(rf"^{key}\b", doc, re.M)])

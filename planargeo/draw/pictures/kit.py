@@ -16,6 +16,7 @@ import math
 
 import numpy as np
 
+from planargeo.draw.geometry import clip_line, point_xy
 from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.pictures._words import num as _num, subscript
 from planargeo.draw.pictures.common import label_toward as aim_label
@@ -107,8 +108,6 @@ def force(pic: Picture, id: str, w, *, scale: float, anchor, role: str = "reacti
     e = w[:2] / F
     foot = foot_on_line(w, anchor)
     if reach is None:
-        from planargeo.draw.geometry import clip_line
-
         seg = clip_line(w, pic.box)
         seg = [] if seg is None else [np.asarray(seg, float)]
     else:
@@ -250,8 +249,6 @@ def where(p, *, far: float = 1e6) -> str:
     >>> where([0.0, -2.0, 1.0]), where([1.0, 0.0, 8.88e-16])
     ('at (2, 0) m', 'at infinity (a translation)')
     """
-    from planargeo.draw.geometry import point_xy
-
     xy = point_xy(p)
     if xy is None or not np.all(np.isfinite(xy)) or math.hypot(*xy) > far:
         return "at infinity (a translation)"
