@@ -22,9 +22,9 @@ from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.mechanics.subspaces import T_of
 from planargeo.scenes.chain import chain_workspace
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._explorer import Described, explorer_data, time_step
+from planargeo.widgets._explorer import Described, explorer_data, state_handle, time_step, xy_handle
 from planargeo.widgets._motion import Motion, refusal_on_picture
-from planargeo.widgets.base import Explorer, Handle, Step, Toggle, cached
+from planargeo.widgets.base import Explorer, Step, Toggle, cached
 from planargeo.widgets.play import check_duration
 
 __all__ = ["ChainExplorer", "chain_for", "parse_list"]
@@ -472,20 +472,14 @@ class ChainExplorer(Described, Explorer):
 
     def handles(self) -> list:
         # the base, and each link's end: it sets its joint (angle or slide), keeping the others
-        out = [Handle("base", lambda: (self.values["base x (m)"], self.values["base y (m)"]),
-                      lambda x, y: {"base x (m)": float(x), "base y (m)": float(y)})]
-        for i in range(NMAX):
-            out.append(Handle(f"link {i + 1} end", self._end_where(i), self._end_drag(i)))
-        return out
+        def end(i):
+            def at(st):
+                ends = self._state_ends(st)
+                return tuple(float(c) for c in ends[i]) if i < st["model"].N else None
+            return at
 
-    def _end_where(self, i: int):
-        def where():
-            st = self.state
-            if st is None or i >= st["model"].N:
-                return None
-            x, y = self._state_ends(st)[i]
-            return (float(x), float(y))
-        return where
+        return [xy_handle(self, "base", "base x (m)", "base y (m)")] + [
+            state_handle(self, f"link {i + 1} end", end(i), self._end_drag(i)) for i in range(NMAX)]
 
     def _end_drag(self, i: int):
         def drag(x: float, y: float) -> dict:

@@ -34,13 +34,6 @@ def _clip_words(text: str, n: int) -> str:
     return cut.rstrip(" ,;:") + "…"
 
 
-def _panel(pic, id: str, x0: float, x1: float, y0: float, y1: float, *, color: str, z: int,
-           desc: str) -> None:
-    """A white panel with a thin frame under texts written over the drawing (the key, a message)."""
-    pic.path(id, [[x0, y0], [x1, y0], [x1, y1], [x0, y1]], role="text", closed=True, fill="white",
-             alpha=0.9, color=color, width=0.8, z=z, desc=desc)
-
-
 def _value_and_unit(full: str, bare: str) -> tuple[str, str]:
     """The readout's value and unit columns: a common unit goes in its own column (HTML-safe)."""
     if full.startswith(bare) and full[len(bare):].startswith(" "):
@@ -202,9 +195,11 @@ class FrontMixin:
         lines = [_clip_words(f"{sym}: {meaning}", _KEY_CHARS) if meaning else sym
                  for sym, meaning, _c in entries]
         wide = _CHAR_EM * FONT_PX * max(map(len, lines)) + 8.0
-        _panel(pic, "key panel", x0 + 2.0 / pic.kx, x0 + (6.0 + wide) / pic.kx,
-               y1 - (8.0 + 14.0 * len(lines)) / pic.ky, y1 - 1.0 / pic.ky, color="#888888", z=89,
-               desc="the key: each symbol drawn, in its colour, and its meaning")
+        left, right = x0 + 2.0 / pic.kx, x0 + (6.0 + wide) / pic.kx       # a white panel under it
+        low, top = y1 - (8.0 + 14.0 * len(lines)) / pic.ky, y1 - 1.0 / pic.ky
+        pic.path("key panel", [[left, low], [right, low], [right, top], [left, top]], role="text",
+                 closed=True, fill="white", alpha=0.9, color="#888888", width=0.8, z=89,
+                 desc="the key: each symbol drawn, in its colour, and its meaning")
         for k, (sym, meaning, color) in enumerate(entries):
             text = f"{sym}: {meaning}" if meaning else sym
             pic.text(f"key {k + 1}", (x0, y1), lines[k], role="text", color=color, ha="left",

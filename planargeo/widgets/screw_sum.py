@@ -135,16 +135,7 @@ class ScrewSumExplorer(Described, Explorer):
                 w.value = value
 
     def set(self, **values):
-        """As :meth:`Explorer.set`; a change of ``add`` comes first, so that its kinds can be chosen with it.
-
-        Parameters
-        ----------
-        **values
-
-        Returns
-        -------
-        ScrewSumExplorer
-        """
+        # a change of "add" comes first, so that its kinds can be chosen with it
         if "add" in values and len(values) > 1:
             super().set(add=values.pop("add"))
             if self.message:
