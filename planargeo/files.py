@@ -21,12 +21,6 @@ __all__ = ["package_words", "WORDS_FILE", "atomic_write", "atomic_write_many", "
            "make_folder"]
 
 
-def _umask_mode() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return 0o666 & ~mask
-
-
 def _stage(path: Path, data: bytes, mode: int) -> str:
     """Write ``data`` to a new temporary file beside ``path``; return its name."""
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
@@ -92,7 +86,9 @@ def atomic_write_many(files) -> list[Path]:
     OutputError
         A file cannot be staged (see :func:`atomic_write`); then no target has been touched.
     """
-    mode = _umask_mode()
+    mask = os.umask(0)                  # read the umask (setting it is the only way)
+    os.umask(mask)
+    mode = 0o666 & ~mask
     staged: list[tuple[str, Path]] = []
     try:
         for path, data in dict(files).items():

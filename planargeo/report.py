@@ -45,13 +45,10 @@ class Quantity(NamedTuple):
     unit: str
 
 
-def _read_quantities() -> dict[str, dict[str, Quantity]]:
-    return {scene: {key: Quantity(**entry) for key, entry in table.items()}
-            for scene, table in package_words("scene").items()}
-
-
 #: ``scene -> quantity -> Quantity`` of every quantity ``planargeo report`` prints, from :data:`QUANTITIES_FILE`.
-QUANTITY_INFO: dict[str, dict[str, Quantity]] = _read_quantities()
+QUANTITY_INFO: dict[str, dict[str, Quantity]] = {
+    scene: {key: Quantity(**entry) for key, entry in table.items()}
+    for scene, table in package_words("scene").items()}
 
 
 def quantity(scene: str, key: str) -> Quantity:

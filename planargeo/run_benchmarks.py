@@ -213,12 +213,6 @@ def out_folder(out: str | None, force: bool = False) -> Path:
     return p
 
 
-def _produced(stage: Path) -> dict[str, bytes]:
-    """``{relative name: bytes}`` of the regular files under ``stage``."""
-    return {p.relative_to(stage).as_posix(): p.read_bytes()
-            for p in sorted(stage.rglob("*")) if p.is_file() and not p.is_symlink()}
-
-
 def _move_in(stage: Path, out: Path, force: bool) -> tuple[list[str], list[str]]:
     """Move the suite's files from ``stage`` into ``out``, rewriting the manifest; ``(written, left)``.
 
@@ -226,7 +220,8 @@ def _move_in(stage: Path, out: Path, force: bool) -> tuple[list[str], list[str]]
     ``force``); the others are ``left``.
     """
     try:
-        new = _produced(stage)
+        new = {p.relative_to(stage).as_posix(): p.read_bytes()          # the regular files staged
+               for p in sorted(stage.rglob("*")) if p.is_file() and not p.is_symlink()}
         own, _changed = owned_files(out, read_manifest(out / MANIFEST) or {})
         taken = {n for n in new if (out / n).exists() or (out / n).is_symlink()}
     except OSError as e:

@@ -143,10 +143,6 @@ def effective_centre(A) -> tuple[float, float, float, float]:
     return float(d), float(A[0, 0]), float(A[1, 1]), float(A[2, 2] - A[1, 2] ** 2 / A[1, 1])
 
 
-def _components(A) -> list[float]:
-    return [float(A[0, 0]), float(A[1, 1]), float(A[2, 2]), float(A[0, 1]), float(A[0, 2]), float(A[1, 2])]
-
-
 @register("articulated", limits={"n": (40, "n = 40 takes about 0.1 s; the chart grows as n²")},
           checks={"n": "int positive", "lam": "positive", "outboard": "int nonnegative optional"})
 def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int | None = None,
@@ -248,7 +244,8 @@ def articulated_state(model, q, *, outboard: int | None = None, pole=(0.0, 0.0),
     for k in range(n):                                   # one truncated recursion per k, all bodies at once
         Ak = full.A if k == n - 1 else articulated_inertia(model, q, steps=k).A
         for i in range(n - k):                           # body i has n-1-i bodies outboard
-            comps[i].append(_components(inertia_at(Ak[i], pts[i])))
+            Ai = inertia_at(Ak[i], pts[i])               # at its joint, as the COMPONENTS
+            comps[i].append(Ai[[0, 1, 2, 0, 0, 1], [0, 1, 2, 1, 2, 2]].tolist())
             errs[i].append(float(np.linalg.norm(Ak[i] - full.A[i]) / nA[i]))
     return {
         "joints": pts, "I": I, "A": shown.A, "A_full": full.A,

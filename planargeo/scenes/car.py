@@ -22,19 +22,6 @@ from planargeo.scenes import SceneResult, register
 __all__ = ["car"]
 
 
-def _outlines(d: float, L: float, steer: float):
-    """Car body (body frame = world frame at q = 0) and the two tyres, as shapely polygons."""
-    from shapely import affinity
-    from shapely.geometry import box
-
-    w, over = 0.7 * L, 0.3 * L
-    body = box(d - w / 2, -over, d + w / 2, L + over)
-    tyre = box(-0.06 * L, -0.13 * L, 0.06 * L, 0.13 * L)
-    rear = affinity.translate(tyre, d, 0.0)
-    front = affinity.translate(affinity.rotate(tyre, steer, origin=(0, 0), use_radians=True), d, L)
-    return body, rear, front
-
-
 @register("car", checks={"m": "positive", "rho": "positive", "L": "positive", "outlines": None})
 def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps: float = 0.45,
         omega: float = 0.5, F_A: float = 2000.0, outlines: bool = True) -> SceneResult:
@@ -121,9 +108,15 @@ def car(m: float = 1200.0, rho: float = 1.2, L: float = 2.6, d: float = 8.0, eps
         "tyre_wrenches": R * mu, "decomposition": dec,
     }
     body_shape = None
-    if outlines:        # shapely work only Fig 6.6 reads (steer: heading (0, 1) to front rolling)
-        body_shape, rear_tyre, front_tyre = _outlines(d, L, extra["steer"])
-        extra["tyres"] = [rear_tyre, front_tyre]
+    if outlines:      # body (its frame = world frame at q = 0) and tyres: only Fig 6.6 reads them
+        from shapely import affinity
+        from shapely.geometry import box
+
+        w, over = 0.7 * L, 0.3 * L
+        body_shape = box(d - w / 2, -over, d + w / 2, L + over)
+        tyre = box(-0.06 * L, -0.13 * L, 0.06 * L, 0.13 * L)
+        steered = affinity.rotate(tyre, extra["steer"], origin=(0, 0), use_radians=True)
+        extra["tyres"] = [affinity.translate(tyre, d, 0.0), affinity.translate(steered, d, L)]
     model = Model([Body(m, com=tuple(cg), inertia=m * rho ** 2, shape=body_shape, name="car")],
                   [Joint("revolute", (0.0, 0.0, 0.0), name="icr")], [-1], gravity=(0.0, 0.0))
     state = {"q": [0.0], "qd": [omega], "tau": [0.0], "f_ext": [f_A.tolist()], "omega": omega}
