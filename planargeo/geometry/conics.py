@@ -1088,9 +1088,7 @@ def conic_circle(centre, radius, imaginary: bool = False) -> np.ndarray:
 @overflow_checked("centre or axes")
 @_shared
 def conic_ellipse(centre, axes, angle=0.0) -> np.ndarray:
-    """Ellipse with semi-axes ``axes = (a, b)``, the first turned by ``angle`` from +x.
-
-    Its equation is ``x'²/a² + y'²/b² = 1`` in the frame at ``centre`` turned by ``angle``.
+    """Ellipse ``x'²/a² + y'²/b² = 1`` in the frame at ``centre`` turned by ``angle``.
 
     {parameters centre ellipse_axes conic_matrix}
 
