@@ -326,6 +326,8 @@ def articulated_body_state(model, q, qd, tau, fext, w, qdd):
 def newton_euler_state(model, q, qd, qdd, fext, w, tau):
     """Inverse dynamics (thesis 2.18, 3.10, 3.5) for one state: writes ``τ`` into ``tau``.
 
+    Accelerations base to tip (2.18), then forces tip to base (3.10), moved in to ``o_λ`` (4.24).
+
     Parameters
     ----------
     {model}
