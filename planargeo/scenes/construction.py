@@ -147,6 +147,11 @@ def _seg(name, p, q, role="construct", label="") -> Element:
     return Element(name, "segment", np.array([p, q], float), role, label)
 
 
+def _drawn(*elements: Element) -> tuple:
+    """The elements with a non-zero value: a zero twist has no pole, a zero wrench no line."""
+    return tuple(e for e in elements if np.any(e.value))
+
+
 def _xy_or_inf(p) -> Any:
     """``(x, y)`` of a finite point; "at infinity (direction (dx, dy))" for an ideal one (:func:`is_ideal`)."""
     p = np.asarray(p, float)
@@ -328,16 +333,15 @@ def _acceleration(xv=-1.5, yv=1.0, w=1.0, xa=-1.0, ya=-1.0, alpha=0.5, xj=1.0, y
     a = a_prev + combo
     k = math.hypot(xj - xv, yj - yv)
     steps = [ConstructionStep("previous", "aᵢ₋₁: the acceleration pole of the previous body",
-                              "4.52", (_pt("a_prev", a_prev, "accel", "$a_{i-1}$"),) if np.any(a_prev)
-                              else ()),
+                              "4.52", _drawn(_pt("a_prev", a_prev, "accel", "$a_{i-1}$"))),
              ConstructionStep("velocity", "vᵢ = vᵢ₋₁ + sᵢ q̇ᵢ: the velocity pole", "4.47",
-                              (_pt("v", v, "twist", "$v_i$"),) if np.any(v) else ()),
+                              _drawn(_pt("v", v, "twist", "$v_i$"))),
              ConstructionStep("joint", "sᵢ q̈ᵢ: the relative acceleration about the joint", "4.52",
-                              (_pt("rel", rel, "accel", r"$s_i\ddot q_i$"),) if qdd != 0 else ())]
+                              _drawn(_pt("rel", rel, "accel", r"$s_i\ddot q_i$")))]
     kn = float(np.hypot(kap[0], kap[1]))
     steps.append(ConstructionStep("bias", f"κᵢ = vᵢ × sᵢ q̇ᵢ: a translation along the line to "
                                   f"the joint, |κᵢ| = ωᵢ₋₁ q̇ᵢ kᵢ = {_num(kn)}", "4.53",
-                                  (_pt("kappa", kap, "accel", r"$\kappa_i$"),) if kn else ()))
+                                  _drawn(_pt("kappa", kap, "accel", r"$\kappa_i$"))))
     if qdd == 0 and np.any(combo):
         rho = float("inf")
         steps.append(ConstructionStep("combined", "q̈ᵢ = 0: sᵢ q̈ᵢ + κᵢ is κᵢ itself, a translation "
@@ -384,16 +388,14 @@ def _newton_euler(m=1.0, xc=0.5, yc=0.0, r=0.4, xv=0.5, yv=2.0, w=1.5, xa=2.0, y
                               f"r = {_num(r)} about the centre of mass", "4.58, 10.2.3",
                               (Element("I", "conic", I, "inertia", "$I$"),)),
              ConstructionStep("motion", "v, a: the velocity and acceleration poles", "4.47, 4.52",
-                              tuple(e for e in (_pt("v", v, "twist", "$v$") if np.any(v) else None,
-                                                _pt("a", a, "accel", "$a$") if np.any(a) else None)
-                                    if e is not None))]
+                              _drawn(_pt("v", v, "twist", "$v$"), _pt("a", a, "accel", "$a$")))]
     steps.append(ConstructionStep("Ia", "I a: the axis of percussion of a", "5.64",
-                                  (_ln("Ia", Ia, "wrench", "$Ia$"),) if np.any(Ia) else ()))
+                                  _drawn(_ln("Ia", Ia, "wrench", "$Ia$"))))
     c = centre_of_mass(I)
     l = math.hypot(xv - c[0], yv - c[1])
     steps.append(ConstructionStep("p", f"p = −(v×)ᵀIv: through the centre of mass toward v, "
                                   f"|p| = m l ω² = {_num(m * l * w * w)}", "4.56",
-                                  (_ln("p", p, "momentum", "$p$"),) if np.any(p) else ()))
+                                  _drawn(_ln("p", p, "momentum", "$p$"))))
     if not np.any(f):
         steps.append(ConstructionStep("fnet", "fⁿᵉᵗ = 0: the body needs no force", "4.55"))
         rho = float("nan")
