@@ -648,16 +648,9 @@ def _range(inverse, model, x, y, z, fext, out, lo, hi):
 
 #: batches of fewer states run on the calling thread alone: handing them to threads costs more than it saves
 PARALLEL_STATES = 4 * BLOCK
+#: the threads that share a large batch (``NUMBA_NUM_THREADS`` of them), started on first use
 _POOL = []
 _POOL_LOCK = threading.Lock()
-
-
-def _pool():
-    """The threads that share a large batch (``NUMBA_NUM_THREADS`` of them), started on first use."""
-    with _POOL_LOCK:
-        if not _POOL:
-            _POOL.append(ThreadPoolExecutor(get_num_threads(), thread_name_prefix="planargeo-kernels"))
-    return _POOL[0]
 
 
 @_doc
@@ -689,5 +682,8 @@ def dynamics_many(inverse, kind, parent, body, gravity, x, y, z, fext):
     nblocks = (B + BLOCK - 1) // BLOCK
     n = min(get_num_threads(), nblocks)
     runs = [(r * nblocks // n * BLOCK, min(B, (r + 1) * nblocks // n * BLOCK)) for r in range(n)]
-    firsts = list(_pool().map(lambda run: _range(inverse, model, x, y, z, fext, out, *run), runs))
+    with _POOL_LOCK:
+        if not _POOL:
+            _POOL.append(ThreadPoolExecutor(get_num_threads(), thread_name_prefix="planargeo-kernels"))
+    firsts = list(_POOL[0].map(lambda run: _range(inverse, model, x, y, z, fext, out, *run), runs))
     return out, next((b for b, (lo, hi) in zip(firsts, runs) if b < hi), -1)
