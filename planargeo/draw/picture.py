@@ -227,6 +227,12 @@ def _align(n) -> tuple[str, str]:
     return ha, va
 
 
+def _text_part(x, y, text, dx=0.0, dy=0.0, ha="left", va="bottom") -> dict:
+    """A text part: ``text`` (mathtext made plain) at ``(x, y)``, moved ``(dx, dy)`` pixels."""
+    return {"p": "text", "x": float(x), "y": float(y), "dx": float(dx), "dy": float(dy),
+            "text": plain_text(text), "ha": ha, "va": va}
+
+
 _SPOT_ANGLES = np.deg2rad([45, 135, 225, 315, 0, 90, 180, 270])
 _SPOT_DIR = np.column_stack([np.cos(_SPOT_ANGLES), np.sin(_SPOT_ANGLES)])
 _SPOT_HA, _SPOT_VA = zip(*map(_align, _SPOT_DIR))
@@ -360,10 +366,6 @@ class Picture:
         self.elements.append(el)
         return el
 
-    def _label(self, text, x, y, dx, dy, ha="left", va="bottom"):
-        return {"p": "text", "x": x, "y": y, "dx": dx, "dy": dy, "text": plain_text(text), "ha": ha,
-                "va": va}
-
     def _edge_arrow(self, n_px, t_px, length, text, infinite):
         """Parts of an arrow at the view's edge in the pixel direction ``n_px`` (along ``t_px``)."""
         pw, ph = self._plot
@@ -384,7 +386,7 @@ class Picture:
         ha = "right" if n0 > 0.5 else "left" if n0 < -0.5 else "center"
         va = "top" if n1 > 0.5 else "bottom" if n1 < -0.5 else "center"
         words = (text + " " if text else "") + ("at ∞" if infinite else "(off view)")
-        parts.append(self._label(words, lx, ly, 0.0, 0.0, ha, va))
+        parts.append(_text_part(lx, ly, words, 0.0, 0.0, ha, va))
         return parts
 
     # ------------------------------------------------------------------ elements
@@ -442,7 +444,7 @@ class Picture:
                     parts.append({"p": "glyph", "x": x, "y": y, "r": round(r, 2), "ccw": p2 > 0})
                 if text:
                     gap = (0.75 * r + 3.0) if glyph else size / 2 + 3.0
-                    parts.append(self._label(text, x, y, gap, gap))
+                    parts.append(_text_part(x, y, text, gap, gap))
             else:
                 d = (qx - pw / 2, qy - ph / 2)
                 parts += self._edge_arrow(d, d, 22.0, text, infinite=False)
@@ -508,13 +510,13 @@ class Picture:
             if arrow:
                 parts.append({"p": "arrow", "x": fx, "y": fy, "dx": epx * 24, "dy": epy * 24})
             if text:
-                parts.append(self._label(text, fx, fy, -epy * 8 + epx * 12, epx * 8 + epy * 12))
+                parts.append(_text_part(fx, fy, text, -epy * 8 + epx * 12, epx * 8 + epy * 12))
         elif F == 0.0 and lz != 0.0:
             x0, x1, y0, y1 = self.box
             x, y = x1 - 26 / self.kx, y1 - 26 / self.ky
             parts.append({"p": "glyph", "x": x, "y": y, "r": 12.0, "ccw": lz > 0})
-            parts.append(self._label((text + ": " if text else "") + "couple (line at ∞)",
-                                     x, y, -18.0, 0.0, "right", "center"))
+            parts.append(_text_part(x, y, (text + ": " if text else "") + "couple (line at ∞)",
+                                    -18.0, 0.0, "right", "center"))
         self._add(id, role, symbol, desc, parts, color=color, width=width,
                   dash=dash if dash is not None else _dash(role), opacity=opacity)
 
@@ -553,7 +555,7 @@ class Picture:
                 parts.append({"p": "mark", "x": cx, "y": cy, "shape": "o", "size": 4.0})
             if text:
                 top = g["affine"] @ [0.7071, 0.7071, 1.0]
-                parts.append(self._label(text, float(top[0]), float(top[1]), 4.0, 4.0))
+                parts.append(_text_part(top[0], top[1], text, 4.0, 4.0))
         elif g["kind"] == "point":
             x, y = (float(v) for v in g["point"])
             parts.append({"p": "mark", "x": x, "y": y, "shape": "o", "size": 5.0})
@@ -595,7 +597,7 @@ class Picture:
             pieces = (q[np.all(np.isfinite(q), axis=1)] for q in np.split(xy, cuts))
             parts = [{"p": "path", "xy": q, "closed": bool(closed)} for q in pieces if len(q) > 1]
         if label and ok[0]:
-            parts.append(self._label(label, float(xy[0, 0]), float(xy[0, 1]), 4.0, 4.0))
+            parts.append(_text_part(xy[0, 0], xy[0, 1], label, 4.0, 4.0))
         self._add(id, role, symbol, desc, parts, color=_color(role, color), width=width,
                   dash=dash, fill=fill, alpha=alpha, z=z, opacity=opacity)
 
@@ -649,7 +651,7 @@ class Picture:
         if not (math.isfinite(x) and math.isfinite(y)):
             return
         va = {"baseline": "bottom", "center_baseline": "center"}.get(va, va)
-        part = self._label(str(text), x, y, float(dx), float(dy), ha, va)
+        part = _text_part(x, y, str(text), dx, dy, ha, va)
         part["fixed"] = True
         if not obstacle:
             part["over"] = True

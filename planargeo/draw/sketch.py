@@ -20,8 +20,8 @@ import numpy as np
 from planargeo._validate import as_scalar
 from planargeo.draw._shared import ENTRIES, added, as_picture, number, view_centre
 from planargeo.draw.layout import fit_box, shape_points
-from planargeo.draw.picture import PX_PER_PT, Picture, _color as _role_color, _dash as _role_dash, plain_text
-from planargeo.draw.pictures.common import _align
+from planargeo.draw.picture import PX_PER_PT, Picture, _align, _text_part, plain_text
+from planargeo.draw.picture import _color as _role_color, _dash as _role_dash
 from planargeo.draw.pictures.kit import foot_on_line, force as force_arrow, seg_distance
 from planargeo.draw.style import COLORS, LINEWIDTHS
 from planargeo.errors import InputError
@@ -61,11 +61,6 @@ def _xy(v, name: str) -> np.ndarray:
     if a.shape != (2,) or not np.all(np.isfinite(a)):
         raise InputError(f"{name} must be a point (x, y) of two finite numbers, got {v!r}")
     return a
-
-
-def _text_part(x, y, text, dx=0.0, dy=0.0, ha="left", va="bottom") -> dict:
-    return {"p": "text", "x": float(x), "y": float(y), "dx": float(dx), "dy": float(dy),
-            "text": plain_text(text), "ha": ha, "va": va}
 
 
 def _element(pic: Picture, id: str, role: str, parts: list, *, color: str, width: float,

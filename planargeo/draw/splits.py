@@ -13,7 +13,7 @@ import numpy as np
 from planargeo._validate import as_vec3
 from planargeo.draw._shared import ENTRIES, added, as_picture, line_words, texts, view_centre
 from planargeo.draw.picture import Picture, plain_text
-from planargeo.draw.pictures.common import label_toward
+from planargeo.draw.pictures.common import label_line, label_toward
 from planargeo.draw.pictures.kit import force as _force_arrow
 from planargeo.draw.pictures._words import num, where
 from planargeo.errors import InputError
@@ -75,32 +75,6 @@ def _aim(el: dict, aims: dict, key: str) -> None:
             label_toward(el, u, gap)
 
 
-def _label_beside(pic: Picture, el: dict, text: str, anchor, side: float, gap: float = 7.0,
-                  end: float = 14.0) -> None:
-    """Label the clipped line ``el`` ``gap`` pixels off it on ``side`` (+1: above), near ``anchor``,
-    at least ``end`` pixels from the ends of the drawn segment."""
-    seg = next((p["xy"] for p in el["parts"] if p["p"] == "path"), None)
-    if seg is None or not text:
-        return
-    seg = np.asarray(seg, float)
-    a = view_centre(pic) if anchor is None else np.asarray(anchor, float)
-    d = seg[1] - seg[0]
-    dp = np.array([d[0] * pic.kx, d[1] * pic.ky])
-    Lp = math.hypot(*dp)
-    if Lp == 0.0:
-        return
-    lo = min(end / Lp, 0.5)
-    t = float(np.clip((a - seg[0]) @ d / float(d @ d), lo, 1.0 - lo))
-    foot = seg[0] + t * d
-    n = np.array([-dp[1], dp[0]]) / Lp
-    if n[1] < -1e-9 or (abs(n[1]) <= 1e-9 and n[0] < 0):
-        n = -n
-    n = n * (1.0 if side >= 0 else -1.0)
-    el["parts"].append({"p": "text", "x": float(foot[0]), "y": float(foot[1]), "dx": 0.0, "dy": 0.0,
-                        "text": text, "ha": "left", "va": "bottom"})
-    label_toward(el, n, gap)
-
-
 def _line(pic: Picture, id: str, l, text, *, role: str, symbol: str, desc: str, anchor, side: float,
           aims: dict, key: str) -> dict:
     """A line without a sense arrow, labelled beside it near ``anchor`` (a couple: at its glyph)."""
@@ -108,7 +82,7 @@ def _line(pic: Picture, id: str, l, text, *, role: str, symbol: str, desc: str, 
     el = added(pic.line, id, l, role=role, symbol=symbol, desc=desc, arrow=False,
                label="" if finite else text or "")
     if finite:
-        _label_beside(pic, el, plain_text(text or ""), anchor, side)
+        label_line(pic, id, plain_text(text or ""), anchor=anchor, side=side, end=14.0)
     _aim(el, aims, key)
     return el
 

@@ -11,10 +11,10 @@ import numpy as np
 from planargeo._validate import as_mat3, as_scalar, as_vec3
 from planargeo.draw._shared import ENTRIES, added, as_picture, bare_line, texts, view_centre
 from planargeo.draw._shared import inertia as inertia_conic
-from planargeo.draw.picture import PX_PER_PT, Picture, _dash, plain_text
+from planargeo.draw.picture import PX_PER_PT, Picture, _dash, _glyph_radius, plain_text
 from planargeo.draw.pictures._words import force as force_words, num, pair
 from planargeo.draw.pictures.common import label_toward
-from planargeo.draw.pictures.kit import aim_label, force as force_arrow
+from planargeo.draw.pictures.kit import force as force_arrow
 from planargeo.draw.sketch import dimension
 from planargeo.draw.style import COLORS, LINEWIDTHS, SUM
 from planargeo.errors import InputError
@@ -71,7 +71,7 @@ def _pole(pic: Picture, id: str, p, *, role: str, label: str, desc: str, toward=
     el = added(pic.point, id, p, role=role, symbol=_symbol(label), desc=desc, label=plain_text(label),
                glyph_scale=glyph_scale, **kw)
     if toward is not None and not bool(is_ideal(p)):      # clear of the glyph, which grows with |ω|
-        gap = 0.75 * min(max(glyph_scale * abs(p[2]), 4.0), 16.0) * PX_PER_PT + 5.0
+        gap = 0.75 * _glyph_radius(p[2], glyph_scale) * PX_PER_PT + 5.0
         label_toward(el, toward, gap + (3.0 if emphasis else 0.0))
     return el
 
@@ -139,7 +139,7 @@ def _wrench(pic: Picture, id: str, f, *, role: str, label: str, desc: str, scale
         if emphasis:
             _notch(pic, el, arrow, tip)
     if toward is not None:
-        aim_label(el, toward, gap=12.0 if emphasis else 9.0)
+        label_toward(el, toward, gap=12.0 if emphasis else 9.0)
     return el
 
 

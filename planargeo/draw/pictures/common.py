@@ -53,17 +53,20 @@ def builder(fn):
 
 
 def label_line(pic: Picture, id: str, text: str, *, anchor=None, gap: float = 7.0,
-               side: float = 1.0) -> None:
+               side: float = 1.0, end: float | None = None) -> None:
     """Label the line element ``id`` ``gap`` pixels off it, aligned away from it, near ``anchor``.
 
     Parameters
     ----------
     pic, id, text
     anchor : (float, float), optional
-        Near which point of the line (default: the view's centre), kept within its middle 80 %.
+        Near which point of the line (default: the view's centre).
     gap : float
     side : float
         +1: above the line (right of a vertical one); -1: below it.
+    end : float, optional
+        Keep the label at least this many pixels from the drawn segment's ends (default: within
+        its middle 80 %).
     """
     el = next(e for e in pic.elements if e["id"] == id)
     seg = next((p["xy"] for p in el["parts"] if p["p"] == "path"), None)
@@ -73,12 +76,12 @@ def label_line(pic: Picture, id: str, text: str, *, anchor=None, gap: float = 7.
     a = np.array([(pic.box[0] + pic.box[1]) / 2, (pic.box[2] + pic.box[3]) / 2]) if anchor is None \
         else np.asarray(anchor, float)
     d = seg[1] - seg[0]
-    L2 = float(d @ d)
-    t = 0.5 if L2 == 0 else float(np.clip((a - seg[0]) @ d / L2, 0.1, 0.9))
-    foot = seg[0] + t * d
     dp = np.array([d[0] * pic.kx, d[1] * pic.ky])
-    dp /= max(math.hypot(*dp), 1e-300)
-    n = np.array([-dp[1], dp[0]])
+    Lp = max(math.hypot(*dp), 1e-300)
+    lo = 0.1 if end is None else min(end / Lp, 0.5)
+    t = 0.5 if float(d @ d) == 0 else float(np.clip((a - seg[0]) @ d / float(d @ d), lo, 1.0 - lo))
+    foot = seg[0] + t * d
+    n = np.array([-dp[1], dp[0]]) / Lp
     if n[1] < -1e-9 or (abs(n[1]) <= 1e-9 and n[0] < 0):
         n = -n
     n = n * side

@@ -21,9 +21,9 @@ import textwrap
 
 import numpy as np
 
-from planargeo.draw.picture import FONT_PX, PX_PER_PT, Picture, _glyph_radius, plain_text
+from planargeo.draw.picture import FONT_PX, PX_PER_PT, Picture, _align, _glyph_radius, plain_text
 from planargeo.draw.pictures._words import num, where, words_data
-from planargeo.draw.pictures.common import _align, builder, label_line, label_toward
+from planargeo.draw.pictures.common import builder, label_line, label_toward
 from planargeo.draw.pictures.kit import label_at
 from planargeo.draw.style import COLORS, SUM
 from planargeo.geometry.projective import is_at_infinity, is_ideal

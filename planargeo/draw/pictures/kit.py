@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from planargeo.draw.geometry import clip_line, point_xy
-from planargeo.draw.picture import PX_PER_PT, Picture
+from planargeo.draw.picture import PX_PER_PT, Picture, _text_part
 from planargeo.draw.pictures._words import num as _num, subscript
 from planargeo.draw.pictures.common import label_toward as aim_label
 from planargeo.draw.style import COLORS
@@ -64,8 +64,7 @@ def label_at(pic: Picture, xy, text: str, *, gap: float = 6.0, dy: float | None 
     """
     x, y = (float(v) for v in xy)
     if text and math.isfinite(x) and math.isfinite(y):
-        pic.elements[-1]["parts"].append({"p": "text", "x": x, "y": y, "dx": gap, "dy": gap if dy is None else dy,
-                                          "text": text, "ha": ha, "va": va})
+        pic.elements[-1]["parts"].append(_text_part(x, y, text, gap, gap if dy is None else dy, ha, va))
 
 
 def force(pic: Picture, id: str, w, *, scale: float, anchor, role: str = "reaction",

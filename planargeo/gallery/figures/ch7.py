@@ -10,9 +10,9 @@ from planargeo.algorithms.chain_splitting import mobility_split
 from planargeo.draw.charts import plot_curves, polar_curves
 from planargeo.draw.geometry import conic_geometry
 from planargeo.draw.layout import shape_points
-from planargeo.draw.picture import PX_PER_PT
+from planargeo.draw.picture import PX_PER_PT, _align
 from planargeo.draw.pictures._words import num
-from planargeo.draw.pictures.common import _align, label_toward
+from planargeo.draw.pictures.common import label_toward
 from planargeo.draw.pictures.kit import force, where
 from planargeo.draw.sketch import dimension, label, model, model_shapes, panel, segment, show
 from planargeo.draw.style import COLORS, LABEL_PT
