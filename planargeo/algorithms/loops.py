@@ -443,8 +443,8 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
     True
     """
     q, qd, tau, f_ext = _one_state(model, q, qd, tau, f_ext, "constrained_dynamics_lagrange")
-    nq, N = model.nq, model.N
-    cs = validate_contacts(model.contacts if contacts is None else contacts, model.N)
+    N = model.N
+    cs = validate_contacts(model.contacts if contacts is None else contacts, N)
     data = kinematics(model, q, qd, None)
     arr = model.arrays()
     m_, J_, com_b = arr["mass"], arr["J"], arr["com"]
@@ -556,10 +556,7 @@ def constrained_dynamics_lagrange(model: Model, q, qd, tau, f_ext=None, contacts
     # joint accelerations from Δ a - κ = S q̈
     C3 = blocks(adjacency(model.parents))
     rel = a.reshape(-1) - C3 @ a.reshape(-1) - data.kappa.reshape(-1)
-    S = np.zeros((n, nq))
-    for i in range(N):
-        S[3 * i:3 * i + 3, model.q_slice(i)] = data.s(i)
-    qdd = np.linalg.lstsq(S, rel, rcond=None)[0]
+    qdd = np.linalg.lstsq(_blockdiag([data.s(i) for i in range(N)]), rel, rcond=None)[0]
     tau_drive = np.array(tau, dtype=float)
     for i, s0 in drive_rows:
         tau_drive[model.q_slice(i)] += lam[s0]
