@@ -13,7 +13,7 @@ import numpy as np
 from planargeo._validate import as_vec3
 from planargeo.draw._shared import ENTRIES, added, as_picture, line_words, texts, view_centre
 from planargeo.draw.picture import Picture, plain_text
-from planargeo.draw.pictures.common import label_line, label_toward
+from planargeo.draw.pictures.common import label_toward, labelled_line
 from planargeo.draw.pictures.kit import force as _force_arrow
 from planargeo.draw.pictures._words import num, where
 from planargeo.errors import InputError
@@ -78,11 +78,8 @@ def _aim(el: dict, aims: dict, key: str) -> None:
 def _line(pic: Picture, id: str, l, text, *, role: str, symbol: str, desc: str, anchor, side: float,
           aims: dict, key: str) -> dict:
     """A line without a sense arrow, labelled beside it near ``anchor`` (a couple: at its glyph)."""
-    finite = math.hypot(float(l[0]), float(l[1])) > 0.0
-    el = added(pic.line, id, l, role=role, symbol=symbol, desc=desc, arrow=False,
-               label="" if finite else text or "")
-    if finite:
-        label_line(pic, id, plain_text(text or ""), anchor=anchor, side=side, end=14.0)
+    el = labelled_line(pic, id, l, plain_text(text or ""), anchor=anchor, side=side, end=14.0,
+                       role=role, symbol=symbol, desc=desc, arrow=False)
     _aim(el, aims, key)
     return el
 

@@ -231,9 +231,9 @@ def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), le
     return {k: v for k, v in out.items() if v is not None}
 
 
-def _label_sides(pic: Picture, p, q):
-    """Label directions (pixels): both terms on the upper side of their lever line, the sum below."""
-    if p[2] == 0.0 or q[2] == 0.0 or not np.any(np.cross(p, q)):
+def _label_sides(pic: Picture, p, q, apart: bool = True):
+    """Label directions (pixels): the terms above their lever line, the sum below (or spread)."""
+    if not apart or p[2] == 0.0 or q[2] == 0.0 or not np.any(np.cross(p, q)):
         return [(-0.7, 0.7), (0.7, 0.7), (0.0, -1.0)]
     d = np.array([(p[1] / p[2] - q[1] / q[2]) * pic.kx, (q[0] / q[2] - p[0] / p[2]) * pic.ky])
     d = d / math.hypot(*d)

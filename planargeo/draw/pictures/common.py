@@ -22,6 +22,7 @@ import re
 
 import numpy as np
 
+from planargeo.draw._shared import view_centre
 from planargeo.draw.picture import Picture, _align
 from planargeo.geometry.projective import is_ideal
 
@@ -73,8 +74,7 @@ def label_line(pic: Picture, id: str, text: str, *, anchor=None, gap: float = 7.
     if seg is None or not text:
         return
     seg = np.asarray(seg, float)
-    a = np.array([(pic.box[0] + pic.box[1]) / 2, (pic.box[2] + pic.box[3]) / 2]) if anchor is None \
-        else np.asarray(anchor, float)
+    a = view_centre(pic) if anchor is None else np.asarray(anchor, float)
     d = seg[1] - seg[0]
     dp = np.array([d[0] * pic.kx, d[1] * pic.ky])
     Lp = max(math.hypot(*dp), 1e-300)
@@ -134,17 +134,18 @@ def label_toward(el: dict, u, gap: float = 9.0) -> None:
 
 
 def labelled_line(pic, id: str, l, text: str, *, anchor=None, side: float = 1.0, ahead: float = 0.0,
-                  gap: float = 7.0, **kw) -> None:
-    """The line ``l`` (:meth:`Picture.line`, ``**kw``) labelled ``text`` beside it, clear of its arrow.
+                  gap: float = 7.0, end: float | None = None, **kw) -> dict:
+    """The line ``l`` (:meth:`Picture.line`, ``**kw``) labelled ``text`` beside it; its element.
 
     The arrow sits near ``anchor``, the label ``ahead`` (data units) from it along the force, ``gap``
-    pixels on ``side`` +1 (above) or -1 (below); a couple's glyph is labelled ``text: couple``.
+    pixels on ``side`` +1 (above) or -1 (below), ``end`` pixels or more from the drawn ends
+    (:func:`label_line`); a couple's glyph is labelled ``text: couple``.
     """
     l = np.asarray(l, dtype=float)
-    if l[0] == 0.0 and l[1] == 0.0:
-        pic.line(id, l, label=text, anchor=anchor, **kw)
-        return
-    pic.line(id, l, label="", anchor=anchor, **kw)
-    if anchor is not None and ahead:
-        anchor = np.asarray(anchor, dtype=float) + ahead * l[:2] / math.hypot(l[0], l[1])
-    label_line(pic, id, text, anchor=anchor, side=side, gap=gap)
+    couple = l[0] == 0.0 and l[1] == 0.0
+    pic.line(id, l, label=text if couple else "", anchor=anchor, **kw)
+    if not couple:
+        if anchor is not None and ahead:
+            anchor = np.asarray(anchor, dtype=float) + ahead * l[:2] / math.hypot(l[0], l[1])
+        label_line(pic, id, text, anchor=anchor, side=side, gap=gap, end=end)
+    return pic.elements[-1]

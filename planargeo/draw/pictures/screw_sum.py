@@ -22,6 +22,7 @@ from planargeo.draw.picture import PX_PER_PT, Picture, _glyph_radius
 from planargeo.draw.pictures._words import num, subscript, where
 from planargeo.draw.pictures.common import builder, label_toward, labelled_line
 from planargeo.draw.style import COLORS, SUM
+from planargeo.draw.sums import _label_sides
 from planargeo.geometry.projective import is_at_infinity, is_ideal
 
 __all__ = ["screw_sum_picture"]
@@ -73,15 +74,7 @@ def _twists(pic: Picture, c) -> None:
         for part in pic.elements[-1]["parts"]:      # two translations: their poles' join is the line at ∞
             if part["p"] == "text":
                 part["text"] = "Q₁Q₂: the line at ∞"
-    # labels: v₁, v₂ on one side of the lever line, the sum's on the other (coincident: spread)
-    if c.line is None or q1[2] == 0 or q2[2] == 0:
-        u1, u2, u3 = (-0.7, 0.7), (0.7, 0.7), (0.0, -1.0)
-    else:
-        d = np.array([-q2[1] + q1[1], q2[0] - q1[0]]) * np.array([pic.kx, pic.ky])   # Q₂ − Q₁ in pixels
-        d = d / math.hypot(*d)
-        n = np.array([-d[1], d[0]]) if d[0] >= 0 else np.array([d[1], -d[0]])      # the upper side
-        u1 = u2 = tuple(n)
-        u3 = tuple(-n)
+    u1, u2, u3 = _label_sides(pic, q1, q2, apart=c.line is not None)
     for k, t, u in ((1, c.v1.array, u1), (2, c.v2.array, u2)):
         pic.point(f"v{k}", t, role="twist", symbol=f"v{subscript(k)}",
                   desc=f"twist v{subscript(k)} (4.10): {_twist_words(t, k)}")
