@@ -11,7 +11,7 @@ import numpy as np
 
 from planargeo.draw._shared import added, as_picture, bare_line, documented, inertia, line_words, texts
 from planargeo.draw.geometry import _mat, _vec, point_xy
-from planargeo.draw.picture import PX_PER_PT, Picture, plain_text
+from planargeo.draw.picture import PX_PER_PT, Picture, _text_part, plain_text
 from planargeo.draw.pictures._words import num, pair, where
 from planargeo.draw.pictures.common import label_line, point_along
 from planargeo.draw.sketch import dimension, segment
@@ -69,8 +69,7 @@ def _conic(pic: Picture, id: str, C) -> dict:
         x, y = (float(v) for v in np.asarray(e["xy"], float)[0])
         dx = dy = 4.0
         ha, va = "left", "bottom"
-    el["parts"].append({"p": "text", "x": float(x), "y": float(y), "dx": dx, "dy": dy, "text": "C",
-                        "ha": ha, "va": va})
+    el["parts"].append(_text_part(x, y, "C", dx, dy, ha, va))
     return el
 
 

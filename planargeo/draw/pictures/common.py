@@ -23,7 +23,7 @@ import re
 import numpy as np
 
 from planargeo.draw._shared import view_centre
-from planargeo.draw.picture import Picture, _align
+from planargeo.draw.picture import Picture, _align, _text_part
 from planargeo.geometry.projective import is_ideal
 
 __all__ = ["label_line", "label_toward", "point_along", "builder"]
@@ -85,9 +85,7 @@ def label_line(pic: Picture, id: str, text: str, *, anchor=None, gap: float = 7.
     if n[1] < -1e-9 or (abs(n[1]) <= 1e-9 and n[0] < 0):
         n = -n
     n = n * side
-    ha, va = _align(n)
-    el["parts"].append({"p": "text", "x": float(foot[0]), "y": float(foot[1]), "dx": float(n[0] * gap),
-                        "dy": float(n[1] * gap), "text": text, "ha": ha, "va": va})
+    el["parts"].append(_text_part(foot[0], foot[1], text, n[0] * gap, n[1] * gap, *_align(n)))
 
 
 def point_along(pic: Picture, id: str, p, **kw) -> None:

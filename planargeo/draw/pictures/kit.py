@@ -121,7 +121,7 @@ def force(pic: Picture, id: str, w, *, scale: float, anchor, role: str = "reacti
     if text:
         at = tail + 0.5 * v if label_xy is None else foot_on_line(w, label_xy)
         parts.append({"p": "text", "x": float(at[0]), "y": float(at[1]), "dx": 6.0, "dy": 6.0,
-                      "text": text, "ha": "left", "va": "bottom"})
+                      "text": text, "ha": "left", "va": "bottom"})     # mathtext kept for matplotlib
     pic.path(id, np.zeros((0, 2)), role=role, symbol=symbol, desc=desc, color=color, width=width,
              dash=dash, z=z, opacity=float(opacity))
     pic.elements[-1]["parts"] = parts

@@ -10,7 +10,7 @@ from planargeo.algorithms.chain_splitting import mobility_split
 from planargeo.draw.charts import plot_curves, polar_curves
 from planargeo.draw.geometry import conic_geometry
 from planargeo.draw.layout import shape_points
-from planargeo.draw.picture import PX_PER_PT, _align
+from planargeo.draw.picture import PX_PER_PT, _align, _text_part
 from planargeo.draw.pictures._words import num
 from planargeo.draw.pictures.common import label_toward
 from planargeo.draw.pictures.kit import force, where
@@ -254,8 +254,7 @@ def fig7_9(ax):
             desc=f"the load −f₃ on body 2: a pure couple of {-f3[2]:.3g} N·m (the line at infinity, 4.27)")
     pic.elements[-1]["parts"] = [
         {"p": "glyph", "x": float(gx), "y": float(gy), "r": 12.0, "ccw": bool(-f3[2] > 0)},
-        {"p": "text", "x": float(gx), "y": float(gy), "dx": 18.0, "dy": 0.0, "ha": "left", "va": "center",
-         "text": "−f₃: couple on body 2 (line at ∞)"}]
+        _text_part(gx, gy, "−f₃: couple on body 2 (line at ∞)", 18.0, 0.0, "left", "center")]
     pic.point("a2", a2, role="accel", symbol="a₂",
               desc=f"acceleration pole a₂ of body 2 (7.40–7.49): {where(a2)}, on the x axis")
     xl = res.quantities["x_over_L"]
