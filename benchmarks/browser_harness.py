@@ -63,6 +63,10 @@ class LabServer:
                           "kernel_websocket_connection_class":
                               "planargeo.widgets.server.PromptKernelConnection"},
         }))
+        # as make lab: the tab's busy icon off (planargeo.widgets.server.quiet_page_config)
+        (cfg / "jupyter_server_config.py").write_text(
+            "from planargeo.widgets.server import quiet_page_config\n"
+            "c.ServerApp.tornado_settings = {'page_config_hook': quiet_page_config}\n")
         (settings / "notification.jupyterlab-settings").write_text(
             json.dumps({"fetchNews": "false", "checkForUpdates": False}))
         env = dict(os.environ)

@@ -25,7 +25,7 @@ from pathlib import Path
 #: Always last on Jupyter's command line, so that they win over the caller's options and every
 #: configuration file: loopback only, no remote access, the token (filled in at start).
 FORCED = ("--ServerApp.ip=127.0.0.1", "--ServerApp.allow_remote_access=False")
-#: First, so the caller may override it: kernel messages sent at once (planargeo.widgets.server).
+#: Unless the caller gives their own: kernel messages sent at once (planargeo.widgets.server).
 PROMPT = "--ServerApp.kernel_websocket_connection_class=planargeo.widgets.server.PromptKernelConnection"
 
 
@@ -44,9 +44,23 @@ def lab_url(serverapp, token: str) -> str:
     return f"http://127.0.0.1:{serverapp.port}{path}?{urllib.parse.urlencode({'token': token})}"
 
 
-def main(argv: list[str]) -> int:
+def make_server(argv: list[str], token: str):
+    """JupyterLab's server as ``make lab`` runs it (not started): :data:`PROMPT`, ``argv``,
+    :data:`FORCED` and ``token``, and the tab's busy icon off (JupyterLab swaps and fetches it
+    twice per step: :func:`planargeo.widgets.server.quiet_page_config`)."""
     from jupyterlab.labapp import LabApp
 
+    from planargeo.widgets.server import quiet_page_config
+
+    # the caller's own connection class wins (Jupyter refuses an option given twice)
+    own = any(a.split("=", 1)[0].lstrip("-") == PROMPT.split("=", 1)[0].lstrip("-") for a in argv)
+    first = [] if own else [PROMPT]
+    serverapp = LabApp.initialize_server(argv=[*first, *argv, *FORCED, f"--IdentityProvider.token={token}"])
+    serverapp.web_app.settings["page_config_hook"] = quiet_page_config
+    return serverapp
+
+
+def main(argv: list[str]) -> int:
     for a in argv:
         key = a.split("=", 1)[0].lstrip("-").lower()
         if key == "ip" or key.endswith((".ip", "token", ".allow_remote_access")):
@@ -54,7 +68,7 @@ def main(argv: list[str]) -> int:
                   "every start) and cannot be changed", file=sys.stderr)
             return 2
     token = secrets.token_hex(24)
-    serverapp = LabApp.initialize_server(argv=[PROMPT, *argv, *FORCED, f"--IdentityProvider.token={token}"])
+    serverapp = make_server(argv, token)
     if serverapp.ip != "127.0.0.1" or serverapp.identity_provider.token != token:   # belt and braces
         print("make lab: refusing to start: the server would not be on 127.0.0.1 with the token", file=sys.stderr)
         return 1

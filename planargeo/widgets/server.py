@@ -13,12 +13,21 @@ JupyterLab on the 10-link chain (``benchmarks/page_ab.py``): the empty round tri
         "planargeo.widgets.server.PromptKernelConnection")
 
 and for Voila, ``c.Voila.kernel_websocket_connection_class`` likewise.
+
+JupyterLab also swaps the browser tab's icon at every busy and idle message of the kernel, so twice
+per step, and fetches the new icon each time: :func:`quiet_page_config` switches that plugin off
+(:data:`QUIET_LAB`), and ``make lab`` uses it. Measured the same way: the empty round trip went from
+20 to 16 ms and a drag step from 46 to 39 ms. The kernel's state still shows in the notebook's
+toolbar and status bar.
 """
 from __future__ import annotations
 
 from jupyter_server.services.kernels.connection.channels import ZMQChannelsWebsocketConnection
 
-__all__ = ["PromptKernelConnection"]
+__all__ = ["PromptKernelConnection", "QUIET_LAB", "quiet_page_config"]
+
+#: The JupyterLab plugins :func:`quiet_page_config` switches off: the tab's busy icon.
+QUIET_LAB = ("@jupyterlab/application-extension:faviconbusy",)
 
 
 class PromptKernelConnection(ZMQChannelsWebsocketConnection):
@@ -41,3 +50,31 @@ class PromptKernelConnection(ZMQChannelsWebsocketConnection):
         """
         self.websocket_handler.set_nodelay(True)
         return super().connect()
+
+
+def quiet_page_config(handler, page_config: dict) -> dict:
+    """JupyterLab's page configuration with the plugins of :data:`QUIET_LAB` switched off.
+
+    A ``page_config_hook`` of JupyterLab's server (its web application's settings, or
+    ``c.ServerApp.tornado_settings = {"page_config_hook": quiet_page_config}``).
+
+    Parameters
+    ----------
+    handler : tornado.web.RequestHandler
+        The page's handler (unused).
+    page_config : dict
+        The page's configuration; its ``disabledExtensions`` is a list of plugin ids.
+
+    Returns
+    -------
+    dict
+        ``page_config``, with :data:`QUIET_LAB` added to ``disabledExtensions``.
+
+    Examples
+    --------
+    >>> quiet_page_config(None, {"disabledExtensions": ["x"]})["disabledExtensions"]
+    ['x', '@jupyterlab/application-extension:faviconbusy']
+    """
+    off = list(page_config.get("disabledExtensions") or [])
+    page_config["disabledExtensions"] = off + [p for p in QUIET_LAB if p not in off]
+    return page_config

@@ -1,4 +1,5 @@
-"""`make lab` prints a URL that works when pasted, token included (issue 23.7).
+"""`make lab` prints a URL that works when pasted, token included (issue 23.7), and serves
+JupyterLab without the tab's busy icon (issue 21).
 
 The test takes the command line `make lab` runs from `make -n lab`, starts it headless (a free
 port, --no-browser, Jupyter's configuration and runtime folders in a temporary folder), reads the
@@ -131,6 +132,11 @@ def test_make_lab_prints_a_url_that_opens_jupyterlab(tmp_path, browser):
             page.wait_for_selector(".jp-Notebook", timeout=180_000)            # the tour, open
             assert page.locator("input[name=password]").count() == 0
             assert "00-tour.ipynb" in page.locator(".lm-DockPanel-tabBar .lm-TabBar-tabLabel").all_inner_texts()
+            # the tab's busy icon is off (planargeo.widgets.server.quiet_page_config): JupyterLab
+            # would swap it at every kernel message, twice per drag step
+            off = page.evaluate("JSON.parse(document.getElementById('jupyter-config-data').textContent)"
+                                ".disabledExtensions")
+            assert "@jupyterlab/application-extension:faviconbusy" in off, off
             page.close()
             # without the token: the login page, not the lab
             stranger = other_ctx.new_page()
