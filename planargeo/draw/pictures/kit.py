@@ -144,6 +144,19 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.9, depth: float = 0.12
              z=1, opacity=float(opacity))
 
 
+def _distances(points, segs) -> np.ndarray:
+    """The distance from each of ``points`` ``(k, 2)`` to the nearest of the segments ``segs`` ``(n, 2, 2)``."""
+    points = np.asarray(points, dtype=float).reshape(-1, 2)
+    segs = np.asarray(segs, dtype=float).reshape(-1, 2, 2)
+    if not len(segs):
+        return np.full(len(points), math.inf)
+    a, d = segs[:, 0], segs[:, 1] - segs[:, 0]
+    L2 = np.einsum("ij,ij->i", d, d)
+    t = np.clip(np.einsum("kij,ij->ki", points[:, None] - a, d) / np.where(L2 > 0, L2, 1.0), 0.0, 1.0)
+    gap = a + t[..., None] * d - points[:, None]
+    return np.min(np.hypot(gap[..., 0], gap[..., 1]), axis=1)
+
+
 def seg_distance(p, segs) -> float:
     """The distance from the point ``p`` to the nearest of the segments ``segs`` ``(n, 2, 2)``.
 
@@ -160,15 +173,7 @@ def seg_distance(p, segs) -> float:
     >>> seg_distance((0.0, 1.0), [[[-1.0, 0.0], [1.0, 0.0]], [[3.0, 0.0], [3.0, 2.0]]])
     1.0
     """
-    segs = np.asarray(segs, dtype=float).reshape(-1, 2, 2)
-    if not len(segs):
-        return math.inf
-    p = np.asarray(p, dtype=float)
-    a, b = segs[:, 0], segs[:, 1]
-    d = b - a
-    L2 = np.einsum("ij,ij->i", d, d)
-    t = np.clip(np.einsum("ij,ij->i", p - a, d) / np.where(L2 > 0, L2, 1.0), 0.0, 1.0)
-    return float(np.min(np.hypot(*(a + t[:, None] * d - p).T)))
+    return float(_distances(p, segs)[0])
 
 
 def clearest(points, segs):
@@ -188,7 +193,7 @@ def clearest(points, segs):
     [0.0, 2.0]
     """
     points = np.asarray(points, dtype=float).reshape(-1, 2)
-    return points[int(np.argmax([seg_distance(q, segs) for q in points]))]
+    return points[int(np.argmax(_distances(points, segs)))]
 
 
 def side_label(pic: Picture, a, b, text: str, segs, *, gap: float = 5.0) -> None:
