@@ -353,7 +353,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         self._after_depth = 1
         stack = contextlib.ExitStack()
         try:
-            for w in self._synced_widgets():
+            for w in [*self.controls.values(), self.readout, self.message_box]:
                 stack.enter_context(w.hold_sync())
             yield
         finally:
@@ -362,10 +362,6 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
             # every PLAY_SYNC_S seconds (a hold inside Play's hold holds nothing of its own)
             if not self._keep_play_hold(stack):
                 stack.close()
-
-    def _synced_widgets(self) -> list:
-        """The widgets whose values follow the shown state: the controls, the readout, the message."""
-        return [*self.controls.values(), self.readout, self.message_box]
 
     def set(self, **values) -> "Explorer":
         """Set several controls at once (one update); if one value is refused, none is set.
@@ -480,7 +476,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         self.readout_values = readout
         self.readout.value = table
         self._set_message(message)
-        self._show_figure_message(message)
+        self._figure_text = message
         self._follow_shown()
         self.n_updates += 1
         self._safe_redraw()
@@ -505,7 +501,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         self._changed.clear()
         self._pending = False
         self._set_message(message)
-        self._show_figure_message(short_text(message) if figure_text is None else figure_text)
+        self._figure_text = short_text(message) if figure_text is None else figure_text
         self._safe_redraw()
 
     def figure_message(self, exc: Exception) -> str:

@@ -34,13 +34,6 @@ def _clip_words(text: str, n: int) -> str:
     return cut.rstrip(" ,;:") + "…"
 
 
-def _value_and_unit(full: str, bare: str) -> tuple[str, str]:
-    """The readout's value and unit columns: a common unit goes in its own column (HTML-safe)."""
-    if full.startswith(bare) and full[len(bare):].startswith(" "):
-        return bare, full[len(bare) + 1:]
-    return full, ""
-
-
 class FrontMixin:
     """The front end of :class:`~planargeo.widgets.base.Explorer` (picture, widgets, readout)."""
 
@@ -218,9 +211,6 @@ class FrontMixin:
         else:
             self.message_box.value = ""
 
-    def _show_figure_message(self, text: str) -> None:
-        self._figure_text = text
-
     @property
     def figure_text(self) -> str:
         """The message written on the picture ("" when none is shown)."""
@@ -235,7 +225,8 @@ class FrontMixin:
                 continue
             full = value_text(v, self.units.get(k, ""), zero=zero)
             self.readout_strings[str(k)] = html.unescape(full)
-            text, unit = _value_and_unit(full, fmt(v, zero=zero))
+            bare = fmt(v, zero=zero)        # a common unit goes in its own column (HTML-safe)
+            text, unit = (bare, full[len(bare) + 1:]) if full.startswith(bare + " ") else (full, "")
             rows.append(
                 f"<tr><td style='padding-right:6px;line-height:1.25;white-space:nowrap;"
                 f"overflow:hidden;text-overflow:ellipsis;max-width:300px' title='{html.escape(str(k))}'>"

@@ -196,5 +196,5 @@ class HandleMixin:
         self._update()                             # no control changed: a render of the shown state
         if message and not self._message:          # a refused last step keeps its message
             self._set_message(message)
-            self._show_figure_message(short_text(message))
+            self._figure_text = short_text(message)
             self._safe_redraw()

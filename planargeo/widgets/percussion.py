@@ -226,12 +226,8 @@ class PercussionExplorer(Described, Explorer):
         return percussion_picture(state, impact=self.values["drive"] == "impact",
                                   view=view or self._view(state), size=self.figure_px)
 
-    #: the work area: where the pole's sliders reach (m), and the view's step (m)
+    #: the view's step (m)
     _STEP = 0.25
-
-    def _work_area(self):
-        cx, cy = self.controls["pole x"], self.controls["pole y"]
-        return (cx.min, cx.max, cy.min, cy.max)
 
     def mechanism_points(self):
         # the outline, the grip and the handles within the pole's reach (a pole near c sends the
@@ -240,10 +236,10 @@ class PercussionExplorer(Described, Explorer):
         pts = [np.zeros((1, 2))]
         if st is not None:
             pts.append(np.asarray(st["shape"].exterior.coords, float))
-        x0, x1, y0, y1 = self._work_area()
+        px, py = self.controls["pole x"], self.controls["pole y"]
         for h in self.handles():
             xy = h.where()
-            if xy is not None and x0 <= xy[0] <= x1 and y0 <= xy[1] <= y1:
+            if xy is not None and px.min <= xy[0] <= px.max and py.min <= xy[1] <= py.max:
                 pts.append(np.asarray(xy, float).reshape(1, 2))
         return np.vstack(pts)
 

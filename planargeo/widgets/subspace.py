@@ -46,16 +46,6 @@ CHECKS_HEADING = "checks: thesis identities of s, R, T, U"
 CHECK_ROWS = {k: tuple(v) for k, v in explorer_data("subspace")["checks"].items()}
 
 
-def _kind_units(s_col) -> tuple[str, str]:
-    """(joint force unit, joint acceleration unit) of a motion-space column: a rotation or a translation."""
-    return ("N", "m/s²") if bool(is_ideal(s_col)) else ("N·m", "rad/s²")
-
-
-def _reaction_units(R_col) -> tuple[str, str]:
-    """(reaction unit, reactive-acceleration unit) of a reaction column: a force or a couple."""
-    return ("N·m", "rad/s²") if bool(is_at_infinity(R_col)) else ("N", "m/s²")
-
-
 class SubspaceExplorer(Explorer):
     """Subspaces ``s, R, T, U`` of one joint and the splits of one force (thesis 6.1–6.4, 6.63–6.97).
     """
@@ -146,11 +136,13 @@ class SubspaceExplorer(Explorer):
         s, R, sIs, reaction = st["s"], st["R"], st["sIs"], st["reaction"]
         rows = [("joint", _LABEL[st["joint"]], None), ("k (degrees of freedom)", k, "—")]
         for i in range(k):
-            fu, au = _kind_units(s[:, i])
+            # a joint force and acceleration: of a translation (s ideal) or of a rotation
+            fu, au = ("N", "m/s²") if bool(is_ideal(s[:, i])) else ("N·m", "rad/s²")
             sub = _SUB[i] if k > 1 else ""
             rows += [(f"Q{sub} = s{sub}ᵀf", float(st["Q"][i]), fu), (f"ψ{sub} = T{sub}ᵀI⁻¹f", float(st["psi"][i]), au)]
         for j in range(3 - k):
-            fu, au = _reaction_units(R[:, j])
+            # a reaction and reactive acceleration: of a couple (R at infinity) or of a force
+            fu, au = ("N·m", "rad/s²") if bool(is_at_infinity(R[:, j])) else ("N", "m/s²")
             sub = _SUB[j] if 3 - k > 1 else ""
             rows += [(f"μ{sub} = U{sub}ᵀf", float(st["mu"][j]), fu), (f"γ{sub} = R{sub}ᵀI⁻¹f", float(st["gamma"][j]), au)]
         rot = [not bool(is_ideal(s[:, i])) for i in range(k)]   # sᵀIs: kg·m² rotation–rotation, kg·m mixed, else kg
