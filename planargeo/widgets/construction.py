@@ -47,7 +47,6 @@ _RANGES = {
 CHOICES = [(title, key) for key, (title, _) in CONSTRUCTIONS.items()]
 
 ARM = 1.0
-FADED = 0.4
 
 #: the construction's words, kept as data: slider labels, readout units, meanings
 _DATA = explorer_data("construction")
