@@ -19,7 +19,11 @@ Measured in Debian's headless chromium, in the same run and through the same wid
     animation frame that shows a new picture), and the time scale (seconds of motion per
     second of wall clock, read off the picture's ``t = … s``);
 
-* **every explorer's drag step** (its first handle inside the view, 3 px moves);
+* **every explorer's drag step** (its first handle inside the view, 3 px moves), all twelve
+  explorers shown in one page (the Voila app; in JupyterLab, one notebook holding all of them);
+* in JupyterLab also **each explorer in a notebook of its own**, as a lesson shows one (the
+  lessons hold 1-3 explorers each): F and the drag step there (and the chain's slider step),
+  each notebook's kernel shut down before the next opens;
 
   every drag and slider step starts after the page has been idle for the same
   :data:`PAUSE` (0.03 s), and F is also measured after that pause ("F, paused": a ping
@@ -339,6 +343,48 @@ def measure(page, steps: int) -> dict:
     return res
 
 
+def _own_cells(name: str) -> list[str]:
+    """A notebook of one explorer (the chain with 10 links and every overlay, as in :data:`CELLS`)."""
+    extra = ", links=10, **{k: True for k in %r}" % (OVERLAYS,) if name == "ChainExplorer" else ""
+    return ["import planargeo.widgets as pw", f"ex = pw.{name}(display='page'{extra})\nex"]
+
+
+def _shut_down(page) -> None:
+    """Shut the current notebook's kernel down (JupyterLab), so that it takes no part in what follows."""
+    try:
+        page.evaluate("window.jupyterapp.shell.currentWidget.sessionContext.shutdown()")
+    except Exception:  # noqa: BLE001 - a page that is gone has no kernel to stop
+        pass
+
+
+def measure_own(browser, server, root: Path, steps: int) -> dict:
+    """Each explorer alone in a notebook of its own (JupyterLab): F, its drag step, the chain's slider step."""
+    out = {}
+    for name, title in _titles().items():
+        chain = name == "ChainExplorer"
+        _notebook(root / f"own-{name}.ipynb", _own_cells(name))
+        page = browser.new_page(viewport={"width": 1400, "height": 1100})
+        try:
+            page.goto(f"{server.url}/lab/tree/own-{name}.ipynb?reset", wait_until="domcontentloaded",
+                      timeout=120_000)
+            page.wait_for_function(KERNEL_READY, timeout=120_000)
+            page.evaluate("window.jupyterapp.commands.execute('notebook:run-all-cells')")
+            ex, cv = _canvas(page, title)
+            time.sleep(1.0)
+            r = {"F": _stat(floor(cv, steps, PAUSE))}
+            lat, _hp, refused, hid = drag(page, cv, "link 10 end" if chain else None, steps)
+            r.update({"drag step": _stat(lat), "handle": hid, "refused": refused})
+            if chain:
+                r["slider step"] = _stat(slider(page, ex, cv, "angle", steps)[0])
+            out[name] = r
+        except Exception as exc:  # noqa: BLE001 - one explorer's failure is reported, not fatal
+            out[name] = {"drag step": _stat([]), "error": f"{type(exc).__name__}: {exc}"[:200]}
+        finally:
+            _shut_down(page)
+            page.close()
+    return out
+
+
 def python_side(repeat: int = 25) -> dict:
     """One chain update in this process: the drag step and the slider step, and their messages."""
     from planargeo.widgets import ChainExplorer
@@ -412,8 +458,14 @@ def main(argv=None) -> int:
                             timeout=120_000)
                         page.evaluate("window.jupyterapp.commands.execute('notebook:run-all-cells')")
                     results[medium] = measure(page, a.steps)
+                    if medium == "jupyterlab":
+                        _shut_down(page)
+                        page.close()
+                        page = None
+                        results[medium]["own notebook"] = measure_own(browser, server, root, a.steps)
                 finally:
-                    page.close()
+                    if page is not None:
+                        page.close()
                     server.stop()
         finally:
             browser.close()
@@ -438,6 +490,11 @@ def main(argv=None) -> int:
                      f"{_cell(r['handle repaint'])} | {_cell(r['slider step'])} | "
                      f"{_cell(r.get('slider: page applies the picture'))} | "
                      f"{_cell(r['F after (ping round trip)'])} |")
+    own = results.get("jupyterlab", {}).get("own notebook", {})
+    if own.get("ChainExplorer", {}).get("F"):
+        r = own["ChainExplorer"]
+        lines.append(f"| jupyterlab, the chain in a notebook of its own | — | {_cell(r['F'])} | "
+                     f"{_cell(r['drag step'])} | — | {_cell(r.get('slider step'))} | — | — |")
     lines += ["", "Play at 1× for 10 s (frames painted per second; seconds of motion per second of wall clock):", "",
               "| medium | fps | frames | time scale | frame gap median (p90), ms | frames sent alone per s "
               "| tick round trip | kernel per tick |",
@@ -449,7 +506,11 @@ def main(argv=None) -> int:
                      f"{q.get('frames sent alone per second', '—')} | {_cell(q.get('tick round trip (ms)'))} | "
                      f"{_cell(q.get('kernel per tick (ms)'))} |")
     lines += ["", "## Drag step of every explorer", "",
-              "| explorer | handle | " + " | ".join(media) + " |", "|---|---|" + "---|" * len(media)]
+              "All twelve in one page (the Voila app; one JupyterLab notebook)"
+              + ("; and in JupyterLab each in a notebook of its own, with that notebook's F (paused)"
+                 if own else "") + ".", "",
+              "| explorer | handle | " + " | ".join(media) + (" | jupyterlab, own notebook | its F |" if own else " |"),
+              "|---|---|" + "---|" * (len(media) + 2 * bool(own))]
     for name in _titles():
         cells = []
         hid = None
@@ -458,6 +519,10 @@ def main(argv=None) -> int:
             hid = hid or e.get("handle")
             note = f" ({e['refused']} refused)" if e.get("refused") else ""
             cells.append(_cell(e.get("drag step")) + note if "error" not in e else "error: " + e["error"][:60])
+        if own:
+            e = own.get(name, {})
+            cells += [_cell(e.get("drag step")) if "error" not in e else "error: " + e["error"][:60],
+                      _cell(e.get("F"))]
         lines.append(f"| {name} | {hid or '—'} | " + " | ".join(cells) + " |")
     py = results["python"]
     lines += ["", "## Python side of one chain update (this process)", "",
