@@ -48,7 +48,7 @@ def bent_chain_model(n: int, rho: float, L: float = 1.0, m: float = 1.0, g: floa
     """
     bodies = [Body(m, (L / 2, 0.0), m * rho * rho, name=f"body {i + 1}") for i in range(n)]
     joints = [Joint("revolute", (0.0 if i == 0 else L, 0.0, 0.0), name=f"CJ{i + 1}") for i in range(n)]
-    return Model(bodies, joints, list(range(-1, n - 1)), gravity=(0.0, -float(g)))
+    return Model(bodies, joints, list(range(-1, n - 1)), gravity=(0.0, 0.0 - float(g)))   # g = 0: +0.0
 
 
 def joint_points(q, L: float = 1.0) -> np.ndarray:
