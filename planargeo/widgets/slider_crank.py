@@ -184,16 +184,19 @@ class SliderCrankExplorer(SceneTime, Explorer):
         model = self.model_for(l, g)
         drive = values["drive"]
         key = (psi0, float(values["crank speed"]), drive, l, g)
-        run = self._runs.get(key)
+        run, first = self._runs.get(key), None
         if run is None:
-            q0, qd0, sol0, _h = slider_crank_solve(model, psi0, float(values["crank speed"]), r, l, thick, drive)
+            first = slider_crank_solve(model, psi0, float(values["crank speed"]), r, l, thick, drive)
             run = {"ck": [(psi0, float(values["crank speed"]))], "drift": [0.0], "events": [],
-                   "E0": float(sum(energy(model, data=sol0.data)))}
+                   "E0": float(sum(energy(model, data=first[2].data)))}
         t = time_value(values["t (s)"], T_END)
         # kept before the integration: the checkpoints of a refused time stay for the next ask
         keep_run(self._runs, key, run)
         psi, psidot, drift, passed = self._run_state(model, run, t, l, drive)
-        q, qd, sol, h = slider_crank_solve(model, psi, psidot, r, l, thick, drive)
+        if first is not None and (psi, psidot) == run["ck"][0]:    # at the start (a drag): solved above
+            q, qd, sol, h = first
+        else:
+            q, qd, sol, h = slider_crank_solve(model, psi, psidot, r, l, thick, drive)
         E = float(sum(energy(model, data=sol.data)))
         st = {"sol": sol, "reactions": slider_crank_reactions(sol), "q": q, "qd": qd, "r": r, "l": l, "t": thick,
               "h": h, "v": sol.data.v, "a": sol.a.reshape(3, 3), "F3": np.asarray(sol.F, dtype=float), "E": E,
