@@ -173,3 +173,30 @@ def test_refusals_and_exports(tmp_path):
     _legible(ex)
     assert ex.export_svg(tmp_path / "a.svg").stat().st_size > 1000
     assert ex.export_png(tmp_path / "a.png").stat().st_size > 1000
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_bend_for_tip_finds_the_nearest_tip_of_a_dense_search(seed):
+    """The tip drag's bend against a brute-force search of its own: every 0.001° of φ, the tip
+    summed link by link with math.cos/sin (the explorer measures a grid coarsely, then refines)."""
+    from planargeo.widgets.articulated import bend_for_tip
+
+    rng = np.random.default_rng(seed)
+    for _ in range(4):
+        n, L, base = int(rng.integers(2, 9)), float(rng.uniform(0.3, 2.0)), float(rng.uniform(-3, 3))
+        r, a = rng.uniform(0.0, 1.2) * n * L, rng.uniform(-math.pi, math.pi)
+        target = (r * math.cos(a), r * math.sin(a))
+
+        def dist(phi):
+            x = sum(L * math.cos(base + k * phi) for k in range(n))
+            y = sum(L * math.sin(base + k * phi) for k in range(n))
+            return math.hypot(x - target[0], y - target[1])
+
+        phis = np.linspace(-math.pi, math.pi, 360001)
+        k = np.arange(n)
+        th = base + np.multiply.outer(phis, k)
+        best = float(np.min(np.hypot(L * np.cos(th).sum(1) - target[0], L * np.sin(th).sum(1) - target[1])))
+        phi = bend_for_tip(target, n, base, L)
+        assert -math.pi <= phi <= math.pi
+        # no φ of the dense search brings the tip nearer (to the grid's resolution: |tip'| ≤ L Σk)
+        assert dist(phi) <= best + 1e-12 * (1 + best), (n, L, base, target, math.degrees(phi))
