@@ -25,13 +25,15 @@ import page_latency as pl  # noqa: E402
 from browser_harness import LabServer, VoilaServer, launch_chromium  # noqa: E402
 
 
-def _cells(a: str, b: str) -> list[str]:
+def _cells(a: str, b: str, every: bool = False) -> list[str]:
+    """The A/B notebook: the chain, the A/B checkbox and, with ``every``, the other eleven explorers
+    after them (as in :data:`page_latency.CELLS`: JupyterLab's work per step grows with the page)."""
     make = "pw.ChainExplorer(display='page', links=10, **{k: True for k in %r})" % (pl.OVERLAYS,)
     return ["import planargeo.widgets as pw\nimport ipywidgets as W\nfrom planargeo.widgets.canvas import PictureCanvas",
             f"chain = {make}\nchain",
             "ab = W.Checkbox(description='B', value=False)\n"
             f"ab.observe(lambda c: exec({b!r} if c.new else {a!r}, globals()), 'value')\n"
-            f"exec({a!r}, globals())\nab"]
+            f"exec({a!r}, globals())\nab"] + (pl.CELLS[2:] if every else [])
 
 
 def _block(res: dict, page, ex, cv, a) -> None:
@@ -51,7 +53,7 @@ def _block(res: dict, page, ex, cv, a) -> None:
 def run(browser, medium: str, tmp: Path, a) -> dict:
     root = tmp / medium
     root.mkdir()
-    pl._notebook(root / "page.ipynb", _cells(a.a, a.b))
+    pl._notebook(root / "page.ipynb", _cells(a.a, a.b, a.every))
     server, url = pl.serve(medium, root, tmp)
     page = browser.new_page(viewport={"width": 1400, "height": 1100})
     res = {k: {"F": [], "F after the steps' pause": [], "drag": [], "slider": [], "drag: ack → painted": [], "drag: sent → ack": [],
@@ -170,6 +172,7 @@ def main(argv=None) -> int:
     ap.add_argument("--rounds", type=int, default=4)
     ap.add_argument("--block", type=int, default=8)
     ap.add_argument("--no-slider", action="store_true")
+    ap.add_argument("--every", action="store_true", help="the other eleven explorers in the page too")
     ap.add_argument("--lab-config-b", default=None,
                     help="JSON server config (or a .py config file) added for B: two JupyterLab servers, A and B"
                          " (--a/--b unused)")
