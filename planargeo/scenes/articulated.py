@@ -18,7 +18,7 @@ import numpy as np
 from planargeo.mechanics.model import Body, Joint, Model
 from planargeo.scenes import SceneResult, plain, register
 
-__all__ = ["articulated", "articulated_state", "bent_chain_model", "joint_points", "inertia_at", "conic_centre",
+__all__ = ["articulated", "articulated_state", "percussion_axes", "bent_chain_model", "joint_points", "inertia_at", "conic_centre",
            "effective_centre", "COMPONENTS"]
 
 #: the six independent components of a planar inertia, in the order of the convergence chart
@@ -238,7 +238,6 @@ def articulated_state(model, q, *, outboard: int | None = None, pole=(0.0, 0.0),
     full = articulated_inertia(model, q)
     shown = full if outboard is None else articulated_inertia(model, q, steps=outboard)
     I = np.asarray(kinematics(model, q).I, dtype=float)          # the bodies' inertias at the origin
-    a = np.array([pole[1], -pole[0], 1.0])
     comps, errs = [[] for _ in range(n)], [[] for _ in range(n)]
     nA = np.linalg.norm(full.A, axis=(1, 2))
     for k in range(n):                                   # one truncated recursion per k, all bodies at once
@@ -247,12 +246,40 @@ def articulated_state(model, q, *, outboard: int | None = None, pole=(0.0, 0.0),
             Ai = inertia_at(Ak[i], pts[i])               # at its joint, as the COMPONENTS
             comps[i].append(Ai[[0, 1, 2, 0, 0, 1], [0, 1, 2, 1, 2, 2]].tolist())
             errs[i].append(float(np.linalg.norm(Ak[i] - full.A[i]) / nA[i]))
-    return {
+    st = {
         "joints": pts, "I": I, "A": shown.A, "A_full": full.A,
         "centre_rigid": np.array([conic_centre(x) for x in I]),
         "centre": np.array([conic_centre(x) for x in shown.A]),
-        "pole": a, "axis_rigid": I @ a, "axis": shown.A @ a,
         "truncation_error": np.linalg.norm(shown.A - full.A, axis=(1, 2)) / nA,
         "components": [np.array(c) for c in comps], "error": [np.array(e) for e in errs],
         "result": shown, "full": full,
     }
+    return {**st, **percussion_axes(st, pole)}
+
+
+def percussion_axes(state: dict, pole) -> dict:
+    """The axes of percussion of every body for the acceleration pole ``pole`` (thesis 5.64-5.68).
+
+    The part of :func:`articulated_state` that depends on the pole (an explorer dragging the pole
+    keeps the rest).
+
+    Parameters
+    ----------
+    state : dict
+        :func:`articulated_state` of the configuration (its ``I`` and ``A``).
+    pole : (float, float)
+        The acceleration pole ``a``: a unit rotation about it.
+
+    Returns
+    -------
+    dict
+        ``pole`` (the twist ``a``), ``axis_rigid`` = ``I_i a`` and ``axis`` = ``A_i a``.
+
+    Examples
+    --------
+    >>> st = articulated_state(bent_chain_model(2, 0.5), [0.0, 0.0])
+    >>> percussion_axes(st, (1.0, 0.0))["pole"].tolist()
+    [0.0, -1.0, 1.0]
+    """
+    a = np.array([pole[1], -pole[0], 1.0])
+    return {"pole": a, "axis_rigid": state["I"] @ a, "axis": state["A"] @ a}

@@ -18,7 +18,7 @@ import numpy as np
 from planargeo.draw.geometry import conic_geometry
 from planargeo.draw.pictures._words import subscript
 from planargeo.draw.pictures.articulated import MARGIN, articulated_picture, chain_view, fit_box
-from planargeo.scenes.articulated import articulated_state, inertia_at
+from planargeo.scenes.articulated import articulated_state, inertia_at, percussion_axes
 from planargeo.widgets._motion import Motion
 from planargeo.widgets._explorer import ChainBodies, Described, state_handle, time_step, xy_handle
 from planargeo.widgets.base import Explorer, Step, cached, point_text
@@ -244,8 +244,10 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         E0 = float(sum(energy(model_g, self._q0(values), np.zeros(n))))
         out_k = int(values["outboard bodies"])
         outboard = None if out_k >= n - 1 else out_k
-        st = articulated_state(self._model(n, 1.0 / lam), q, outboard=outboard,
-                               pole=(float(values["pole x"]), float(values["pole y"])))
+        # the configuration's inertias, kept while only the pole moves (a drag of the pole)
+        shape = cached(self._cache("_shapes"), (n, lam, q.tobytes(), outboard),
+                       lambda: articulated_state(self._model(n, 1.0 / lam), q, outboard=outboard))
+        st = {**shape, **percussion_axes(shape, (float(values["pole x"]), float(values["pole y"])))}
         st.update(n=n, lam=lam, q=q, outboard=out_k, t=t, energy=(float(T + V), W, E0), c=float(values["damping c"]))
         return st
 
