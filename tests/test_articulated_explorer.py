@@ -200,3 +200,15 @@ def test_bend_for_tip_finds_the_nearest_tip_of_a_dense_search(seed):
         assert -math.pi <= phi <= math.pi
         # no φ of the dense search brings the tip nearer (to the grid's resolution: |tip'| ≤ L Σk)
         assert dist(phi) <= best + 1e-12 * (1 + best), (n, L, base, target, math.degrees(phi))
+
+
+def test_bend_for_tip_refuses_a_target_that_is_not_one_finite_point():
+    from planargeo.errors import NonFiniteError, ShapeError
+    from planargeo.widgets.articulated import bend_for_tip
+
+    with pytest.raises(NonFiniteError, match="xy"):
+        bend_for_tip((float("nan"), 0.0), 3, 0.0)
+    with pytest.raises(ShapeError, match="one point"):
+        bend_for_tip([(1.0, 2.0), (3.0, 4.0)], 3, 0.0)
+    # far beyond the chain's reach (distances overflow): still an angle in range, as the whole grid gives
+    assert -math.pi <= bend_for_tip((1e308, 1e308), 3, 0.0) <= math.pi

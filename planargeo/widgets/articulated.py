@@ -15,9 +15,11 @@ import math
 import ipywidgets as W
 import numpy as np
 
+from planargeo._validate import as_array
 from planargeo.draw.geometry import conic_geometry
 from planargeo.draw.pictures._words import subscript
 from planargeo.draw.pictures.articulated import MARGIN, articulated_picture, chain_view, fit_box
+from planargeo.errors import ShapeError
 from planargeo.scenes.articulated import articulated_state, inertia_at, percussion_axes
 from planargeo.widgets._motion import Motion
 from planargeo.widgets._explorer import ChainBodies, Described, state_handle, time_step, xy_handle
@@ -58,14 +60,21 @@ def bend_for_tip(xy, n: int, base: float, L: float = 1.0) -> float:
     float
         ``φ`` in ``[-π, π]``.
 
+    Raises
+    ------
+    NonFiniteError, ShapeError
+        ``xy`` is not one finite point.
+
     Examples
     --------
     >>> round(math.degrees(bend_for_tip((1.0, 1.0), 2, 0.0)), 6)    # an elbow of 90 degrees
     90.0
     """
+    target = as_array(xy, "xy", (2,))
+    if target.shape != (2,):
+        raise ShapeError(f"xy must be one point (x, y), got shape {target.shape}")
     if n < 2:
         return 0.0
-    target = np.asarray(xy, dtype=float)
     k = np.arange(n)
 
     def dist(phi):
@@ -78,9 +87,11 @@ def bend_for_tip(xy, n: int, base: float, L: float = 1.0) -> float:
     # them the distance dips at most the tip's largest speed (L Σk per radian) times half the gap
     # below their mean, so only the stretches that could dip below the best are measured in full
     coarse = dist(grid[::10])
-    dip = 0.5 * L * n * (n - 1) / 2 * (grid[10] - grid[0])
-    near = np.flatnonzero(0.5 * (coarse[:-1] + coarse[1:]) - dip <= coarse.min() * (1 + 1e-9) + 1e-12)
-    idx = np.unique((10 * near[:, None] + np.arange(11)).ravel())
+    dip = 0.5 * abs(L) * n * (n - 1) / 2 * (grid[10] - grid[0])
+    with np.errstate(over="ignore"):                # a tip beyond the float range: no stretch, below
+        near = np.flatnonzero(0.5 * (coarse[:-1] + coarse[1:]) - dip <= coarse.min() * (1 + 1e-9) + 1e-12)
+    # no stretch qualifies only when the distances overflowed: then the whole grid, as it is
+    idx = np.unique((10 * near[:, None] + np.arange(11)).ravel()) if len(near) else np.arange(len(grid))
     j = int(idx[np.argmin(dist(grid[idx]))])
     lo, hi = grid[max(j - 1, 0)], grid[min(j + 1, len(grid) - 1)]
     g = (math.sqrt(5) - 1) / 2
