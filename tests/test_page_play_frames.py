@@ -120,6 +120,34 @@ def test_work_ahead_between_frames_gives_the_states_solve_ivp_gives():
         assert np.array_equal(sliced.at((k + 1) * 0.5), y)
 
 
+def test_a_time_early_in_a_chunk_is_read_before_the_chunk_is_done():
+    # Play's first frame waits for the steps up to its time, not for the whole chunk; the states
+    # are still scipy's whole-chunk interpolant's, bit for bit
+    import numpy as np
+    from scipy.integrate import solve_ivp
+
+    from planargeo.widgets._motion import Motion
+
+    calls = [0]
+
+    def rhs(_t, y):
+        calls[0] += 1
+        return np.array([y[1], -9.81 * np.sin(y[0]) - 2.0 * y[0]])
+
+    whole = solve_ivp(rhs, (0.0, 0.5), [1.0, 0.0], method="DOP853", rtol=1e-9, atol=1e-11,
+                      dense_output=True)
+    chunk_calls, calls[0] = calls[0], 0
+    m = Motion(rhs, [1.0, 0.0], chunk=0.5)
+    assert np.array_equal(m.at(0.05), whole.sol(0.05))
+    assert m.reached == 0.0 and calls[0] < chunk_calls / 3       # the chunk is not done yet
+    for t in (0.02, 0.3, 0.05, 0.49):                          # later and earlier times of the chunk
+        assert np.array_equal(m.at(t), whole.sol(t))
+    nxt = solve_ivp(rhs, (0.0, 0.5), whole.y[:, -1], method="DOP853", rtol=1e-9, atol=1e-11,
+                    dense_output=True)
+    assert np.array_equal(m.at(0.6), nxt.sol(0.6 - 0.5)) and m.reached == 0.5
+    assert np.array_equal(m.at(0.5), whole.y[:, -1])
+
+
 def test_play_works_ahead_between_frames_and_shows_the_same_times():
     ex, c, sent = _playing_chain()
     model, q0, qd0, tau = ex.initial_state(ex.values)

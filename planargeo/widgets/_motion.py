@@ -143,8 +143,9 @@ class Motion:
             return False
         return False
 
-    def _steps(self, budget: Budget, until: float | None) -> bool:
-        """Steps of the chunk being computed, until it is done (True) or past ``until`` (False)."""
+    def _steps(self, budget: Budget, until: float | None, cover: float | None = None) -> bool:
+        """Steps of the chunk being computed, until it is done (True), past the wall time ``until``
+        or, with ``cover``, once its steps reach the time ``cover`` within it (False)."""
         import time
 
         from scipy.integrate import DOP853, OdeSolution
@@ -171,7 +172,8 @@ class Motion:
                     ts.append(solver.t)
                 if solver.status == "finished":
                     break
-                if until is not None and time.perf_counter() > until:
+                if (until is not None and time.perf_counter() > until) or \
+                        (cover is not None and ts[-1] >= cover):
                     return False
         except _OverBudget:
             self._open = None       # the chunk starts again at the next call (as before)
@@ -191,11 +193,28 @@ class Motion:
             f"the motion could not be integrated past t = {self.reached:.4g} s: {why}")
 
     def at(self, t: float) -> np.ndarray:
-        """The state at time ``t >= 0`` (chunk start: exactly the stored state)."""
+        """The state at time ``t >= 0`` (chunk start: exactly the stored state).
+
+        Its chunk is computed only as far as ``t`` (the rest later, by the same steps): the first
+        frame of Play does not wait for a whole chunk.  The value is the one the whole chunk's
+        interpolant gives, bit for bit (the same step's dense output).
+        """
         t = float(t)
         k = int(math.floor(t / self.chunk))
-        self.extend(t)
         s = t - k * self.chunk
+        self.extend(t - self.chunk)            # the chunks before k
         if s <= 0.0:
             return self.starts[k].copy()
-        return np.asarray(self.sols[k](s), dtype=float)
+        budget = Budget(self.max_evals)
+        while len(self.sols) <= k:
+            try:
+                if not self._steps(budget, None, cover=s):
+                    break
+            except _OverBudget:
+                raise budget.refusal(t, self.reached) from None
+        if len(self.sols) > k:
+            return np.asarray(self.sols[k](s), dtype=float)
+        from scipy.integrate import OdeSolution
+
+        _solver, ts, interpolants = self._open      # chunk k's steps so far reach s
+        return np.asarray(OdeSolution(np.array(ts), interpolants, alt_segment=False)(s), dtype=float)
