@@ -158,3 +158,30 @@ def test_play_works_ahead_between_frames_and_shows_the_same_times():
     fresh = ChainExplorer(display="agg", links=3)
     fresh.set(**{"time (s)": ex.shown_values["time (s)"]})
     assert fresh.readout_values == ex.readout_values
+
+
+def test_plays_first_frame_is_computed_ahead_once_the_explorer_is_shown():
+    # in a kernel, a second after it is shown, the explorer computes Play's first frame and drops
+    # it: nothing shown changes, and pressing Play then costs no new evaluation of the dynamics
+    from planargeo.widgets.play import WARM_PLAY_S
+
+    async def run():
+        ex = ChainExplorer(display="page", links=3)
+        sent = []
+        ex.canvas.send = lambda m, *a, **k: sent.append(m)
+        shown = (dict(ex.values), dict(ex.readout_values), ex.canvas.picture, ex.n_updates)
+        await asyncio.sleep(WARM_PLAY_S + 0.3)
+        assert (dict(ex.values), dict(ex.readout_values), ex.canvas.picture, ex.n_updates) == shown
+        assert not sent
+        motion = ex.motion_for(*ex.initial_state(ex.values))
+        calls, rhs = [0], motion.rhs
+
+        def counted(t, y):
+            calls[0] += 1
+            return rhs(t, y)
+
+        motion.rhs = counted
+        ex.advance(1)
+        assert ex.values["time (s)"] > 0.0 and calls[0] == 0
+
+    asyncio.run(run())

@@ -114,13 +114,18 @@ class Motion:
         A SingularConfigurationError if the integrator stops, a SizeLimitError if reaching ``t``
         needs more than :attr:`max_evals` evaluations in this call.
         """
-        need = int(math.floor(t / self.chunk)) + 1
+        self._complete(int(math.floor(t / self.chunk)) + 1, t)
+
+    def _complete(self, need: int, t: float) -> Budget:
+        """Compute the first ``need`` chunks (:meth:`extend`, on its way to ``t``); what is left of
+        this call's budget."""
         budget = Budget(self.max_evals)
         while len(self.sols) < need:
             try:
                 self._steps(budget, None)
             except _OverBudget:
                 raise budget.refusal(t, self.reached) from None
+        return budget
 
     def work_ahead(self, t: float, seconds: float) -> bool:
         """Spend about ``seconds`` of wall time (one integrator step more at worst) computing the
@@ -202,14 +207,12 @@ class Motion:
         t = float(t)
         k = int(math.floor(t / self.chunk))
         s = t - k * self.chunk
-        self.extend(t - self.chunk)            # the chunks before k
+        budget = self._complete(k, t)          # the chunks before k
         if s <= 0.0:
             return self.starts[k].copy()
-        budget = Budget(self.max_evals)
-        while len(self.sols) <= k:
+        while len(self.sols) <= k and (self._open is None or self._open[1][-1] < s):
             try:
-                if not self._steps(budget, None, cover=s):
-                    break
+                self._steps(budget, None, cover=s)
             except _OverBudget:
                 raise budget.refusal(t, self.reached) from None
         if len(self.sols) > k:

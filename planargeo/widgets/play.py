@@ -12,6 +12,7 @@ Examples
 """
 from __future__ import annotations
 
+import asyncio
 import contextlib
 import math
 import numbers
@@ -37,6 +38,9 @@ MAX_ADVANCE_FRAMES = 10_000
 MAX_ADVANCE_SECONDS = 3600.0
 #: frames of an exported animation without ``allow_long=True`` (a minute at 20 frames per second)
 MAX_ANIMATION_FRAMES = 1200
+#: seconds after an explorer is shown in a kernel before Play's first frame is computed ahead
+#: (not shown): the imports and compiled kernels it needs load then, not when Play is pressed
+WARM_PLAY_S = 1.0
 
 
 def check_count(name: str, value: Any, limit: int, allow_long: bool | None = False) -> int:
@@ -339,6 +343,20 @@ class PlayMixin:
             self.canvas.on_idle = self._page_idle
         self.play_control.interval = 10 ** 7
         self._play_link = W.link((self.play_control, "playing"), (self.canvas, "playing"))
+        with contextlib.suppress(RuntimeError):       # in a kernel (an event loop runs)
+            asyncio.get_running_loop().call_later(WARM_PLAY_S, self._warm_play)
+
+    def _warm_play(self) -> None:
+        """Play's first frame computed and dropped: loads what it needs (about 0.6 s the first time
+        in a kernel: the integrator's module and compiled dynamics) before Play is pressed."""
+        if self.play_control.playing:
+            return
+        start = dict(self.shown_values or self.values)
+        values, _ended, exc = run_substeps(self.play_step, start, self.play_dt, self.play_max_dt)
+        if exc is None:
+            changed = {k for k, v in values.items() if k in self.controls and not same_value(v, start.get(k))}
+            with contextlib.suppress(Exception):     # a failure is Play's to report, when pressed
+                self.compute(values, changed)
 
     def _page_idle(self, seconds: float) -> bool:
         """Between the page's frames: the explorer's ``play_ahead`` for at most about ``seconds``."""
