@@ -45,6 +45,26 @@ def test_door_struck_across_against_the_rod_closed_forms(m, d):
     assert q["kinetic_energy"] == pytest.approx(0.5 * ref["JP"] * ref["omega"] ** 2, rel=1e-12)
 
 
+def test_body_inertia_kept_per_outline_and_mass_follows_every_change():
+    """The scene keeps each body's inertia per (outline, mass): after changes of body and mass each
+    door still meets its closed forms, the bat its polygon's inertia, and the kept matrix is read-only."""
+    from shapely.geometry import Polygon
+
+    from planargeo.screws.inertia import Inertia
+
+    for body, m in (("door", 3.0), ("bat", 3.0), ("door", 0.5), ("bat", 0.9), ("door", 3.0)):
+        r = scenes.build("impulse", body=body, m=m, x=0.6, angle_deg=90.0, J=1.0)
+        if body == "door":
+            ref = door_closed_forms(m, 0.6)
+            assert r.quantities["omega"] == pytest.approx(ref["omega"], rel=1e-12)
+            assert r.quantities["rho"] == pytest.approx(math.sqrt(ref["Jc"] / m), rel=1e-12)
+        else:
+            unit = Inertia.from_polygon(Polygon(BODIES["bat"]))
+            assert np.allclose(r.extra["I"], unit.matrix * (m / float(unit.mass)), rtol=1e-14, atol=0.0)
+        with pytest.raises(ValueError):
+            r.extra["I"][0, 0] = 1.0
+
+
 def test_thin_rod_limit_3d_over_2L():
     """w → 0: reaction J (3d/(2L) − 1), zero at d = 2L/3 (the brief's hand derivation)."""
     m, d = 2.0, 0.3

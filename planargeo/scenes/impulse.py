@@ -14,6 +14,7 @@ Examples
 """
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -70,6 +71,24 @@ def _pole(tw, size: float = 1.0) -> list | None:
     return [float(-tw[1] / tw[2]) + 0.0, float(tw[0] / tw[2]) + 0.0]
 
 
+@functools.lru_cache(maxsize=16)
+def _body_inertia(outline: tuple, m: float) -> tuple:
+    """``(I, com, ρ, centre of percussion about the origin)`` of a uniform lamina of mass ``m`` (read-only).
+
+    Kept per (outline, mass): a blow moved over the same body reuses it.
+    """
+    from shapely.geometry import Polygon
+
+    unit = Inertia.from_polygon(Polygon(outline))
+    I = unit.matrix * (m / float(unit.mass))
+    inertia = Inertia(I)
+    c = np.asarray(inertia.com, dtype=float)
+    cop = np.asarray(centre_of_percussion(I, (0.0, 0.0)), dtype=float)
+    for a in (I, c, cop):
+        a.flags.writeable = False
+    return I, c, float(inertia.radius_of_gyration), cop
+
+
 @register("impulse", checks={"body": tuple(BODIES), "support": SUPPORTS, "m": "positive",
                              "J": "nonzero"})
 def impulse(body: str = "bat", support: str = "held", m: float = 0.9, x: float = 0.55, y: float = 0.0,
@@ -109,13 +128,7 @@ def impulse(body: str = "bat", support: str = "held", m: float = 0.9, x: float =
     >>> round(r.quantities["omega"], 12) == round(0.9 / (3.0 * (4 * 0.81 + 0.0016) / 12), 12)
     True
     """
-    from shapely.geometry import Polygon
-
-    unit = Inertia.from_polygon(Polygon(BODIES[body]))
-    I = unit.matrix * (m / float(unit.mass))
-    inertia = Inertia(I)
-    c = np.asarray(inertia.com, dtype=float)
-    rho = float(inertia.radius_of_gyration)
+    I, c, rho, cop = _body_inertia(tuple(map(tuple, BODIES[body])), float(m))
     e = J * unit_direction(angle_deg)
     j = np.array([e[0], e[1], x * e[1] - y * e[0]])              # the blow's impulse wrench (5.56)
     s = motion_space("revolute", (0.0, 0.0))
@@ -132,7 +145,7 @@ def impulse(body: str = "bat", support: str = "held", m: float = 0.9, x: float =
         "reaction": plain(reaction), "reaction_force": plain(rf),
         "reaction_across": float(rf @ t), "reaction_along": float(rf @ n),
         "pole_if_free": _pole(dv_free, size),
-        "centre_of_percussion": plain(centre_of_percussion(I, (0.0, 0.0))),
+        "centre_of_percussion": plain(cop),
         "apparent_mass_held": _finite_or_none(apparent_mass(I, j, s)),
         "apparent_mass_free": _finite_or_none(apparent_mass(I, j)),
         "kinetic_energy": float(0.5 * dv @ I @ dv), "v_grip": plain(v_grip),
