@@ -22,7 +22,8 @@ from planargeo.draw.pictures._words import num as _num, subscript
 from planargeo.draw.pictures.common import label_toward as aim_label
 from planargeo.draw.style import COLORS
 
-__all__ = ["force", "ground", "scale_bar", "label_at", "aim_label", "side_label", "clearest", "seg_distance",
+__all__ = ["force", "ground", "scale_bar", "label_at", "aim_label", "side_label", "clearest", "clearest_sides",
+           "pin_heads", "seg_distance",
            "foot_on_line", "nice_length", "where", "rate", "pole_overlays"]
 
 
@@ -144,17 +145,19 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.9, depth: float = 0.12
              z=1, opacity=float(opacity))
 
 
-def _distances(points, segs) -> np.ndarray:
-    """The distance from each of ``points`` ``(k, 2)`` to the nearest of the segments ``segs`` ``(n, 2, 2)``."""
+def _distances(points, segs, *, each: bool = False) -> np.ndarray:
+    """The distance from each of ``points`` ``(k, 2)`` to the nearest of the segments ``segs`` ``(n, 2, 2)``
+    (``each``: to every segment, ``(k, n)``)."""
     points = np.asarray(points, dtype=float).reshape(-1, 2)
     segs = np.asarray(segs, dtype=float).reshape(-1, 2, 2)
     if not len(segs):
-        return np.full(len(points), math.inf)
+        return np.full((len(points), 0) if each else len(points), math.inf)
     a, d = segs[:, 0], segs[:, 1] - segs[:, 0]
     L2 = np.einsum("ij,ij->i", d, d)
     t = np.clip(np.einsum("kij,ij->ki", points[:, None] - a, d) / np.where(L2 > 0, L2, 1.0), 0.0, 1.0)
     gap = a + t[..., None] * d - points[:, None]
-    return np.min(np.hypot(gap[..., 0], gap[..., 1]), axis=1)
+    gap = np.hypot(gap[..., 0], gap[..., 1])
+    return gap if each else np.min(gap, axis=1)
 
 
 def seg_distance(p, segs) -> float:
@@ -196,7 +199,43 @@ def clearest(points, segs):
     return points[int(np.argmax(_distances(points, segs)))]
 
 
-def side_label(pic: Picture, a, b, text: str, segs, *, gap: float = 5.0) -> None:
+def _sides(a, b):
+    """The middle ``m`` of the segment ``a``–``b``, its unit normal ``n`` and the spots ``m ± span n`` beside it."""
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    m = 0.5 * (a + b)
+    d = b - a
+    L = math.hypot(*d)
+    n = np.array([-d[1], d[0]]) / L if L > 0 else np.array([0.0, 1.0])
+    span = 0.25 * max(L, 1e-9)
+    return m, n, [m + span * n, m - span * n]
+
+
+def clearest_sides(segs) -> np.ndarray:
+    """For each of the segments ``segs`` ``(n, 2, 2)``, the spot beside it clearer of the others (as
+    :func:`side_label` picks it, in one measure).
+
+    Parameters
+    ----------
+    segs
+
+    Returns
+    -------
+    numpy.ndarray (n, 2)
+
+    Examples
+    --------
+    >>> clearest_sides([[[0.0, 0.0], [2.0, 0.0]], [[0.0, 1.0], [2.0, 1.0]]]).tolist()     # two rails
+    [[1.0, -0.5], [1.0, 1.5]]
+    """
+    segs = np.asarray(segs, dtype=float).reshape(-1, 2, 2)
+    spots = np.array([_sides(a, b)[2] for a, b in segs]).reshape(-1, 2)           # (2n, 2)
+    gap = _distances(spots, segs, each=True)
+    gap[np.arange(len(spots)), np.arange(len(spots)) // 2] = math.inf              # not its own segment
+    far = np.argmax(np.min(gap, axis=1, initial=math.inf).reshape(-1, 2), axis=1)
+    return spots.reshape(-1, 2, 2)[np.arange(len(segs)), far]
+
+
+def side_label(pic: Picture, a, b, text: str, segs, *, gap: float = 5.0, side=None) -> None:
     """Label the segment ``a``–``b`` (the element added last) at its middle, on its side clearer of ``segs``.
 
     Parameters
@@ -204,30 +243,57 @@ def side_label(pic: Picture, a, b, text: str, segs, *, gap: float = 5.0) -> None
     pic, a, b, text, segs
     gap : float
         Pixels from the segment.
+    side : (float, float), optional
+        The spot beside it already picked (:func:`clearest_sides`; then ``segs`` is not used).
     """
-    a, b = np.asarray(a, float), np.asarray(b, float)
-    m = 0.5 * (a + b)
-    d = b - a
-    L = math.hypot(*d)
-    n = np.array([-d[1], d[0]]) / L if L > 0 else np.array([0.0, 1.0])
-    span = 0.25 * max(L, 1e-9)
-    side = clearest([m + span * n, m - span * n], segs)
+    m, n, spots = _sides(a, b)
+    side = clearest(spots, segs) if side is None else side
     label_at(pic, m, text, gap=gap)
     aim_label(pic.elements[-1], n if float((side - m) @ n) > 0 else -n, gap + 4.0)
 
 
+def pin_heads(forces, spots, obstacles) -> np.ndarray:
+    """For each pin force (``point``, ``wrench``) of ``forces``, the point ``spots`` along its line from
+    the pin clearest of the segments ``obstacles`` (one measure for all).
+
+    Parameters
+    ----------
+    forces, spots, obstacles
+
+    Returns
+    -------
+    numpy.ndarray (len(forces), 2)
+
+    Examples
+    --------
+    >>> from types import SimpleNamespace
+    >>> up = SimpleNamespace(point=(0.0, 0.0), wrench=(0.0, 2.0, 0.0))
+    >>> pin_heads([up], (0.5, -0.5), [[[-1.0, 0.4], [1.0, 0.4]]]).tolist()       # below, clear of the bar
+    [[0.0, -0.5]]
+    """
+    pts = []
+    for x in forces:
+        f = np.asarray(x.wrench, float)
+        F = math.hypot(f[0], f[1])
+        e = f[:2] / F if F else np.zeros(2)
+        pts += [np.asarray(x.point, float) + k * e for k in spots]
+    pts = np.asarray(pts, dtype=float).reshape(len(forces), len(spots), 2)
+    far = np.argmax(_distances(pts, obstacles).reshape(len(forces), len(spots)), axis=1)
+    return pts[np.arange(len(forces)), far]
+
+
 def pin_force(pic: Picture, sym: str, x, w, *, words: str, about: str, tiny: float, spots, obstacles,
-              **kw):
+              head=None, **kw):
     """A mechanism's pin force ``x`` (``point``, ``wrench``, ``moment``) drawn as ``w`` with :func:`force`.
 
     Described as ``words, |sym| = … N`` with its moment about its ``about`` (above ``tiny``),
-    labelled at the point ``spots`` along its line from the pin clearest of ``obstacles``.
+    labelled at the point ``spots`` along its line from the pin clearest of ``obstacles``
+    (:func:`pin_heads`; ``head``: that point already found).
     """
     f = np.asarray(x.wrench, float)
     F = math.hypot(f[0], f[1])
     moment = f", moment {num(x.moment, 3, tiny)} N·m about its {about}" if abs(x.moment) > tiny else ""
-    e = f[:2] / F if F else np.zeros(2)
-    head = clearest([np.asarray(x.point, float) + k * e for k in spots], obstacles)
+    head = pin_heads([x], spots, obstacles)[0] if head is None else head
     return force(pic, sym, w, anchor=x.point, symbol=sym, dash=[4.0, 3.0], label_xy=head,
                  desc=f"{words}, |{sym}| = {num(F, 4, tiny)} N{moment}", **kw)
 

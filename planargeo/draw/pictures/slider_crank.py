@@ -27,7 +27,8 @@ import numpy as np
 
 from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import PX_PER_PT, Picture
-from planargeo.draw.pictures.kit import ground, label_at, num, pin_force, pole_overlays, scale_bar, side_label
+from planargeo.draw.pictures.kit import (ground, label_at, num, pin_force, pin_heads, pole_overlays, scale_bar,
+                                        side_label)
 from planargeo.draw.style import COLORS, OKABE_ITO
 
 __all__ = ["slider_crank_picture", "slider_crank_view", "CONTACT_COLOR", "REACTIONS", "FORCE_LENGTH"]
@@ -127,12 +128,13 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
         fmax = max(size_of.values(), default=0.0)
         scale = FORCE_LENGTH / fmax if fmax > 0 else 0.0
         obstacles = np.concatenate([links, np.stack([box, np.roll(box, -1, axis=0)], axis=1)])
-        for key, sym, meaning, eq, at, color in REACTIONS:
+        # the labels on the lines 0.9 to 1.2 m from the joints, clearest of the links and the piston
+        heads = pin_heads([reactions[r[0]] for r in REACTIONS], (0.9, -0.9, 1.2, -1.2), obstacles)
+        for (key, sym, meaning, eq, at, color), head in zip(REACTIONS, heads):
             x = reactions[key]
             role = "reaction" if key.startswith("f") else "momentum"
-            # the label on the line 0.9 to 1.2 m from the joint, clearest of the links and the piston
             foot = pin_force(pic, sym, x, x.wrench, words=f"{meaning} ({eq}): {at}", about="joint",
-                             tiny=1e-9 * max(fmax, 1.0), spots=(0.9, -0.9, 1.2, -1.2), obstacles=obstacles,
+                             tiny=1e-9 * max(fmax, 1.0), spots=None, obstacles=None, head=head,
                              scale=scale, role=role, color=color, reach=1.2, width=1.0 * PX_PER_PT, z=8)
             if foot is not None and math.hypot(*(foot - np.asarray(x.point))) > 1e-9:
                 pic.path(f"{sym} lever", [x.point, foot], role="construct", symbol=f"{sym} arm", color=color,

@@ -24,7 +24,8 @@ import numpy as np
 from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.pictures._words import SUB
-from planargeo.draw.pictures.kit import ground, num, pin_force, pole_overlays, scale_bar, side_label
+from planargeo.draw.pictures.kit import (clearest_sides, ground, num, pin_force, pin_heads, pole_overlays, scale_bar,
+                                        side_label)
 from planargeo.draw.pictures.slider_crank import CONTACT_COLOR
 from planargeo.draw.style import COLORS
 
@@ -85,12 +86,13 @@ def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, f
     pic = Picture(view, size=size, ticks=False, margin=(6, 6, 6, 6))
     ground(pic, "ground", (0.0, 0.0), width=0.9, desc="the ground: body 1 turns about the pivot (0, 0) m")
     links = np.stack([pose[:, :2], tips], axis=1)                   # (n, 2, 2) segments
+    sides = clearest_sides(links)                                   # each link's label off the others
     for i in range(n):
         pic.path(f"body {i + 1}", [pose[i, :2], tips[i]], role="body", symbol=str(i + 1),
                  color=COLORS["ground"], width=2.5 * PX_PER_PT, z=5,
                  desc=f"link (Fig 9.1): body {i + 1}, {math.hypot(*(tips[i] - pose[i, :2])):.3g} m long, "
                       f"at {math.degrees(pose[i, 2]):.4g}°")
-        side_label(pic, pose[i, :2], tips[i], str(i + 1), np.delete(links, i, axis=0), gap=3.0)
+        side_label(pic, pose[i, :2], tips[i], str(i + 1), None, gap=3.0, side=sides[i])
     pic.marks("joints", pose[:, :2], role="body", symbol="joints", color=COLORS["ground"], size=5.0, z=6,
               desc=f"the {n} joints: joint 1 at the pivot (0, 0) m")
     contact = [x for x in reactions if x.symbol.startswith("F")]
@@ -103,7 +105,8 @@ def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, f
         size_of = {x.symbol: math.hypot(*np.asarray(x.wrench, float)[:2]) for x in reactions}
         fmax = max(size_of.values(), default=0.0)
         names = dict(zip((f"F_{k + 1}" for k in range(len(contacts))), contacts))
-        for x in reactions:
+        heads = pin_heads(reactions, (0.4, -0.4, 0.25, -0.25), links)
+        for x, head in zip(reactions, heads):
             sym = symbol_of(x.symbol)
             w = np.asarray(x.wrench, float)
             F = size_of[x.symbol]
@@ -119,7 +122,7 @@ def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, f
             # overflows when the largest force is subnormal; labelled clearest of the links
             wn = w / F * (F / fmax) if F else w
             pin_force(pic, sym, x, wn, words=f"{meaning} ({eq}): {at}", about="pin",
-                      tiny=1e-9 * max(fmax, 1e-300), spots=(0.4, -0.4, 0.25, -0.25), obstacles=links,
+                      tiny=1e-9 * max(fmax, 1e-300), spots=None, obstacles=None, head=head,
                       scale=FORCE_LENGTH, role="reaction" if sym[0] == "f" else "momentum", color=color, reach=0.45,
                       width=(2.4 if focus == sym else 1.0) * PX_PER_PT, z=9 if focus == sym else 8,
                       label=None if on else "", opacity=1.0 if on else FADED)
