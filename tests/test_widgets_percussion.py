@@ -212,3 +212,19 @@ def test_a_fresh_explorer_from_the_values_shows_the_same(ex):
     ex.set(**{"angular accel. α": -4.0})
     fresh = PercussionExplorer(display="agg", **ex.values)
     assert fresh.readout_strings == ex.readout_strings
+
+
+def test_kept_inertia_follows_mass_and_shape_while_the_pole_is_dragged(ex):
+    """The scaled inertia is kept per shape and mass: after changes of either, and drags of the pole, the
+    rod still meets ρ² = (L² + w²)/12 and m d α (5.66), and each preset its own ρ (as a fresh explorer's)."""
+    for shape, m in (("uniform rod", 2.0), ("disc", 2.0), ("uniform rod", 0.5), ("uniform rod", 2.0)):
+        ex.set(shape=shape, **{"mass (kg)": m})
+        ex.drag("a", (0.0, 0.0), (-0.3, 0.2), steps=3)
+        r = ex.readout_values
+        assert r["mass m"] == pytest.approx(m, rel=1e-12)
+        if shape == "uniform rod":
+            assert r["radius of gyration ρ"] == pytest.approx(math.sqrt(RHO2), rel=1e-12)
+            d = math.hypot(-0.3 - 0.5, 0.2)
+            assert r["force for α: m d α (5.66)"] == pytest.approx(m * d * 10.0, rel=1e-9)
+        fresh = PercussionExplorer(display="agg", **ex.values)
+        assert fresh.readout_strings == ex.readout_strings

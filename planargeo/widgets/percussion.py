@@ -179,9 +179,15 @@ class PercussionExplorer(Described, Explorer):
     def compute(self, values, changed):
         shape, I0 = self._shape_inertia(values)
         m = float(values["mass (kg)"])
-        # uniform lamina of mass m: the unit-density inertia scaled by m / area (1.65 is linear)
-        I = Inertia(I0.matrix * (m / float(I0.mass)))
-        c = np.asarray(I.com, dtype=float)
+
+        def scaled():      # uniform lamina of mass m: the unit-density inertia scaled by m / area (1.65 is linear)
+            I = Inertia(I0.matrix * (m / float(I0.mass)))
+            c = np.array(I.com, dtype=float)
+            c.flags.writeable = False
+            return I0, I, c, float(I.radius_of_gyration), float(I.mass)
+
+        # kept per shape and mass (the entry holds I0: its id stays its own), for drags of the pole or impact
+        _I0, I, c, rho, mass = cached(self._cache("_scaled"), (id(I0), m), scaled)
         Imat = I.matrix
         if values["drive"] == "impact":
             s = float(values["impact at"])
@@ -191,7 +197,7 @@ class PercussionExplorer(Described, Explorer):
         else:
             a = from_xy([values["pole x"], values["pole y"]])
             line = percussion_axis(Imat, a)
-        return {"shape": shape, "I": I, "c": c, "a": a, "f": line}
+        return {"shape": shape, "I": I, "c": c, "a": a, "f": line, "rho": rho, "mass": mass}
 
     def readout_of(self, state):
         c = state["c"]

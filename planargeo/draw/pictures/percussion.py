@@ -40,7 +40,8 @@ def percussion_numbers(st: dict) -> dict:
     Parameters
     ----------
     st : dict
-        ``I`` (:class:`~planargeo.screws.inertia.Inertia`), ``c`` (centre of mass), ``a`` (pole).
+        ``I`` (:class:`~planargeo.screws.inertia.Inertia`), ``c`` (centre of mass), ``a`` (pole);
+        optionally ``rho``, ``mass`` (``I``'s, already found).
 
     Returns
     -------
@@ -48,8 +49,9 @@ def percussion_numbers(st: dict) -> dict:
         ``P``, ``d``, ``rho``, ``mass``, ``r``, ``spot``, ``grip_spot`` (None where undefined).
     """
     I, c, a = st["I"], np.asarray(st["c"], float), np.asarray(st["a"], float)
-    rho = float(I.radius_of_gyration)
-    out = {"rho": rho, "mass": float(I.mass), "P": None, "d": math.inf, "r": None, "spot": None}
+    rho = st["rho"] if "rho" in st else float(I.radius_of_gyration)
+    out = {"rho": rho, "mass": st["mass"] if "mass" in st else float(I.mass), "P": None, "d": math.inf, "r": None,
+           "spot": None}
     if not bool(is_ideal(a)):
         P = np.array([-a[1] / a[2], a[0] / a[2]])
         d = float(np.hypot(*(P - c)))
