@@ -196,7 +196,8 @@ ROLES = frozenset(COLORS) | frozenset(STYLES) | frozenset(LINEWIDTHS)
 def _three(id, v, what: str) -> tuple[float, float, float]:
     """``v`` as three finite floats, or the package's error naming the element."""
     try:
-        a, b, c = (float(x) for x in v)
+        a, b, c = v
+        a, b, c = float(a), float(b), float(c)
     except (TypeError, ValueError):
         raise ShapeError(f"{what} {id!r} must be three numbers, got {v!r}") from None
     if not (math.isfinite(a) and math.isfinite(b) and math.isfinite(c)):
@@ -784,13 +785,17 @@ class Picture:
         paths: list[tuple[dict, np.ndarray]] = []   # (n, 2) float paths, rounded together below
         for el in sorted(self.elements, key=itemgetter("z")):
             parts = []
+            x0 = y0 = rx = ry = None     # the last point rounded (a pole's marker, glyph and label share it)
             for part in el["parts"]:
                 part = dict(part)
                 x = part.get("x")
                 if x is not None:
-                    part["x"] = round(x, nd) + 0.0 if type(x) is float else rnd(x)
                     y = part["y"]
-                    part["y"] = round(y, nd) + 0.0 if type(y) is float else rnd(y)
+                    if x is not x0 or y is not y0:
+                        x0, y0 = x, y
+                        rx = round(x, nd) + 0.0 if type(x) is float else rnd(x)
+                        ry = round(y, nd) + 0.0 if type(y) is float else rnd(y)
+                    part["x"], part["y"] = rx, ry
                 if "xy" in part:
                     xy = part["xy"]
                     if type(xy) is np.ndarray and xy.dtype == np.float64 and xy.ndim == 2 and xy.shape[1] == 2:

@@ -157,6 +157,7 @@ COORD_LIMIT = 1e9
 _STYLE = ("role", "symbol", "color", "width", "dash", "fill", "alpha", "opacity")
 _HA = {"left": "l", "center": "c", "right": "r"}
 _VA = {"bottom": "b", "center": "c", "top": "t"}
+_KINDS = {"text", "mark", "arrow", "glyph", "ellipse"}
 
 _CSS = """
 .pg-canvas { position: relative; font-family: 'DejaVu Sans', sans-serif; user-select: none; }
@@ -243,32 +244,36 @@ def wire_element(el: dict, nd: int) -> dict:
         out["d"] = 1
     rnd = round
     parts = []
+    add = parts.append
+    x0 = y0 = rx = ry = None     # the last point rounded (a pole's marker, glyph and label share it)
     for p in el.get("parts", ()):
         k = p.get("p")
-        if k == "text":
-            if p.get("hidden"):
-                continue
-            parts.append(["T", rnd(p["x"], nd), rnd(p["y"], nd), rnd(p.get("dx", 0.0), 1),
-                          rnd(p.get("dy", 0.0), 1), p.get("text", ""),
-                          _HA.get(p.get("ha"), "l") + _VA.get(p.get("va"), "b")])
-        elif k == "mark":
-            parts.append(["M", rnd(p["x"], nd), rnd(p["y"], nd), p.get("shape", "o"), rnd(p.get("size", 6.0), 1)])
-        elif k == "path":
+        if k == "path":
             xy = p["xy"]
             head = ["P", 1 if p.get("closed") else 0]
             if len(xy) > 3:        # rounded together (numpy: a long path costs microseconds)
-                parts.append(head + (np.round(np.asarray(xy, dtype=float).ravel(), nd) + 0.0).tolist())
+                add(head + (np.round(np.asarray(xy, dtype=float).ravel(), nd) + 0.0).tolist())
             else:
                 for x, y in xy:
                     head += (rnd(x, nd), rnd(y, nd))
-                parts.append(head)
+                add(head)
+            continue
+        if k not in _KINDS or k == "text" and p.get("hidden"):
+            continue
+        x, y = p["x"], p["y"]
+        if x is not x0 or y is not y0:
+            x0, y0, rx, ry = x, y, rnd(x, nd), rnd(y, nd)
+        if k == "text":
+            add(["T", rx, ry, rnd(p.get("dx", 0.0), 1), rnd(p.get("dy", 0.0), 1), p.get("text", ""),
+                 _HA.get(p.get("ha"), "l") + _VA.get(p.get("va"), "b")])
+        elif k == "mark":
+            add(["M", rx, ry, p.get("shape", "o"), rnd(p.get("size", 6.0), 1)])
         elif k == "arrow":
-            parts.append(["A", rnd(p["x"], nd), rnd(p["y"], nd), rnd(p.get("dx", 0.0), 1),
-                          rnd(p.get("dy", 0.0), 1)])
+            add(["A", rx, ry, rnd(p.get("dx", 0.0), 1), rnd(p.get("dy", 0.0), 1)])
         elif k == "glyph":
-            parts.append(["G", rnd(p["x"], nd), rnd(p["y"], nd), rnd(p.get("r", 8.0), 1), 1 if p.get("ccw") else 0])
+            add(["G", rx, ry, rnd(p.get("r", 8.0), 1), 1 if p.get("ccw") else 0])
         elif k == "ellipse":
-            parts.append(["E", rnd(p["x"], nd), rnd(p["y"], nd), *(rnd(v, nd + 1) for v in p["m"])])
+            add(["E", rx, ry, *(rnd(v, nd + 1) for v in p["m"])])
     out["parts"] = parts
     return out
 
