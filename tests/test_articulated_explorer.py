@@ -121,6 +121,30 @@ def test_chart_components_and_error_per_step():
     _legible(ex)
 
 
+def test_kept_chart_view_and_energies_follow_the_chain_while_the_pole_is_dragged():
+    """The chart, the conics' boxes and the energies are kept while only the pole moves: after each
+    change of the bend and drags of the pole the chart's errors are the dense reference's, every drawn
+    articulated conic's centre is in view, and E₀ is the chain's potential energy at rest (m g Σ y_c)."""
+    ex = ArticulatedExplorer(display="agg", **{"bodies n": 4})
+    for phi in (25.0, 70.0, 25.0, -40.0):
+        ex.set(**{"bend φ (deg)": phi})
+        ex.drag("pole a", (0.0, -0.8), (0.3, -0.5), steps=2)
+        full = _reference_A(4, 3.0, phi, 0.0, 0)
+        want = [np.linalg.norm(_reference_A(4, 3.0, phi, 0.0, 0, outboard=k) - full) / np.linalg.norm(full)
+                for k in range(4)]
+        els = elements(ex.picture())
+        shown = [float(v) for v in els["chart error"]["desc"].rsplit(": ", 1)[1].split(", ")]
+        assert shown == pytest.approx(want, rel=5e-3, abs=1e-12)
+        x0, x1, y0, y1 = ex.picture()["box"]
+        for k in range(4):
+            (e,) = [p for p in els[f"A{k + 1}"]["parts"] if p["p"] == "ellipse"]
+            assert x0 < e["x"] < x1 and y0 < e["y"] < y1
+        th = np.radians([0.0] + [phi * j for j in range(1, 4)])
+        joints = np.concatenate([[0.0], np.cumsum(np.sin(th))])
+        assert ex.readout_values["initial energy E₀"] == pytest.approx(
+            9.81 * sum(joints[j] + 0.5 * math.sin(th[j]) for j in range(4)), rel=1e-9, abs=1e-9)
+
+
 def test_drags_pole_tip_and_first_body():
     ex = ArticulatedExplorer(display="agg", **{"bodies n": 2})
     ex.drag("pole a", (0.0, -0.8), (1.2345, 0.6789), steps=3)

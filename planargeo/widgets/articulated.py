@@ -261,8 +261,10 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         y = motion.at(t)
         q, qd, W = y[:n], y[n:2 * n], float(y[2 * n])
         model_g = self._model(n, 1.0 / lam, float(values["g (m/s²)"]))
-        T, V = energy(model_g, q, qd)
-        E0 = float(sum(energy(model_g, self._q0(values), np.zeros(n))))
+        # the energies kept per state of the swing (and E₀ per swing): a drag of the pole reuses them
+        key = self._key(values)
+        T, V = cached(self._cache("_energies"), (key, q.tobytes(), qd.tobytes()), lambda: energy(model_g, q, qd))
+        E0 = cached(self._cache("_E0"), key, lambda: float(sum(energy(model_g, self._q0(values), np.zeros(n)))))
         out_k = int(values["outboard bodies"])
         outboard = None if out_k >= n - 1 else out_k
         # the configuration's inertias, kept while only the pole moves (a drag of the pole)
@@ -282,12 +284,21 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
         v = self.values
         n = st["n"]
         pts = [st["joints"], st["centre"], st["centre_rigid"], [[v["pole x"], v["pole y"]]]]
-        for C in list(st["A"][:n]) + (list(st["I"][:n]) if v["rigid inertias"] else []):
-            g = conic_geometry(C)
-            if "affine" in g:                  # the drawn ellipse's box: centre ± the affine's row norms
-                A = g["affine"]
-                half = np.hypot(A[:2, 0], A[:2, 1])
-                pts.append([A[:2, 2] - half, A[:2, 2] + half])
+
+        def boxes(Cs):                         # each drawn ellipse's box: centre ± the affine's row norms
+            out = []
+            for C in Cs:
+                g = conic_geometry(C)
+                if "affine" in g:
+                    A = g["affine"]
+                    half = np.hypot(A[:2, 0], A[:2, 1])
+                    out.append([A[:2, 2] - half, A[:2, 2] + half])
+            return out
+
+        # kept per set of inertias: a drag of the pole measures the conics once
+        for Cs in [st["A"][:n]] + ([st["I"][:n]] if v["rigid inertias"] else []):
+            Cs = np.ascontiguousarray(Cs, dtype=float)
+            pts += cached(self._cache("_conic_boxes"), Cs.tobytes(), lambda: boxes(Cs))
         box = fit_box(np.vstack(pts), margin=0.1)
         return chain_view(box, self.figure_px, MARGIN)
 

@@ -198,12 +198,45 @@ def _scale_bar(pic) -> None:
              symbol="scale", desc=f"the scale bar's length: {num(length)} m")
 
 
+class _Calls:
+    """Stands for a picture (its view) and records what is drawn on it, to draw it again on another."""
+
+    def __init__(self, pic):
+        self.box, self.kx, self.ky, self.calls = pic.box, pic.kx, pic.ky, []
+        self.elements = [{}]
+
+    def __getattr__(self, kind):          # path, text: (kind, args, kwargs, the marks added to it)
+        def call(*args, **kw):
+            self.calls.append((kind, args, kw, []))
+            self.elements[-1] = {"parts": self.calls[-1][3]}
+        return call
+
+
+#: the charts drawn lately by what they depend on (a drag of the pole draws the same chart again)
+_CHARTS: dict = {}
+
+
 def _chart(pic, st, k: int) -> None:
-    """The convergence chart in the right part of the view (module docstring)."""
+    """The convergence chart in the right part of the view (module docstring), drawn as kept for its inputs."""
     comps, errs = np.asarray(st["components"][k], float), np.asarray(st["error"][k], float)
+    scale = float(np.linalg.norm(st["A_full"][k]))
+    key = (k, int(st["outboard"]), pic.box, pic.kx, pic.ky, scale, comps.shape, comps.tobytes(), errs.tobytes())
+    calls = _CHARTS.get(key)
+    if calls is None:
+        rec = _Calls(pic)
+        _draw_chart(rec, comps, errs, scale, int(st["outboard"]), k)
+        if len(_CHARTS) > 32:
+            _CHARTS.clear()
+        calls = _CHARTS[key] = rec.calls
+    for kind, args, kw, marks in calls:
+        getattr(pic, kind)(*args, **kw)
+        if marks:
+            pic.elements[-1]["parts"] += [dict(m) for m in marks]
+
+
+def _draw_chart(pic, comps, errs, scale: float, outboard: int, k: int) -> None:
     steps = np.arange(len(comps))
     full = comps[-1]
-    scale = np.linalg.norm(st["A_full"][k])
     kk = subscript(k + 1)
     # the entries that are not zero, over their full values, and the error
     curves = [(name, color, comps[:, j] / full[j]) for j, (name, color) in enumerate(CHART)
@@ -239,7 +272,7 @@ def _chart(pic, st, k: int) -> None:
                                             "(10.2.2): 0 to " + str(len(comps) - 1))
     pic.text("chart title", ((cx0 + cx1) / 2, cy1), f"entries of A{kk} at joint {k + 1} / full value",
              ha="center", va="bottom", dy=4.0, symbol=f"A{kk}", desc=f"the chart: {what}")
-    shown_k = min(int(st["outboard"]), len(comps) - 1)
+    shown_k = min(outboard, len(comps) - 1)
     pic.path("chart now", at([shown_k, shown_k], [lo, hi]), role="chart", color=_ART, width=1.2,
              symbol="outboard bodies", desc=f"the recursion steps shown in the chain: {shown_k}", z=2,
              opacity=0.7)
