@@ -27,8 +27,8 @@ import numpy as np
 
 from planargeo.draw.pictures.common import builder
 from planargeo.draw.picture import PX_PER_PT, Picture
-from planargeo.draw.pictures.kit import (ground, label_at, num, pin_force, pin_heads, pole_overlays, scale_bar,
-                                        side_label)
+from planargeo.draw.pictures.kit import (clearest_sides, ground, label_at, num, pin_force, pin_heads, pole_overlays,
+                                        scale_bar, side_label)
 from planargeo.draw.style import COLORS, OKABE_ITO
 
 __all__ = ["slider_crank_picture", "slider_crank_view", "CONTACT_COLOR", "REACTIONS", "FORCE_LENGTH"]
@@ -103,10 +103,11 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
     pic.path("crank", [pivot, pin], role="body", symbol="1", color=COLORS["ground"], width=4.0 * PX_PER_PT, z=5,
              desc=f"crank, body 1 (9.6): r = {r:.3g} m, at ψ = {num(psi, 4)}°")
     links = np.array([[pivot, pin], [pin, wrist]])
-    side_label(pic, pivot, pin, "1", links[1:], gap=4.0)            # beside the crank, away from the rod
+    sides = clearest_sides(links)                                   # each beside its link, away from the other
+    side_label(pic, pivot, pin, "1", None, gap=4.0, side=sides[0])
     pic.path("rod", [pin, wrist], role="body", symbol="2", color=COLORS["body"], width=3.0 * PX_PER_PT, z=5,
              desc=f"rod, body 2 (9.6): l = {math.hypot(*(wrist - pin)):.3g} m, at θ = {num(theta, 4)}°")
-    side_label(pic, pin, wrist, "2", links[:1], gap=4.0)
+    side_label(pic, pin, wrist, "2", None, gap=4.0, side=sides[1])
     box = np.array([[-0.3, 0.0], [0.3, 0.0], [0.3, 2 * t], [-0.3, 2 * t]]) + wrist
     pic.path("piston", box, role="body", symbol="3", closed=True, fill=COLORS["body"], alpha=0.6,
              color="#000000", width=1.0 * PX_PER_PT, z=4,
