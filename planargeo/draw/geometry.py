@@ -32,17 +32,22 @@ def _mat(x, name: str) -> np.ndarray:
 
 def _sym_rows(x, name: str) -> list[list[float]]:
     """A symmetric 3×3 matrix (array_like or ``.matrix`` / ``.array``) as rows of floats, ``(m + mᵀ)/2``."""
+    rows = None
     if not isinstance(x, np.ndarray):
         for attr in ("matrix", "array"):
             if hasattr(x, attr):
                 x = getattr(x, attr)
                 break
-    m = as_array(x, name, (3, 3))
-    if m.ndim != 2:
-        raise InputError(f"{name} must be a single (3, 3) matrix, got shape {m.shape}")
+    if type(x) is np.ndarray and x.dtype == np.float64 and x.shape == (3, 3):
+        rows = x.tolist()       # finite when their sum is (else as_array names the problem)
+    if not (rows and math.isfinite(sum(rows[0]) + sum(rows[1]) + sum(rows[2]))):
+        m = as_array(x, name, (3, 3))
+        if m.ndim != 2:
+            raise InputError(f"{name} must be a single (3, 3) matrix, got shape {m.shape}")
+        rows = m.tolist()
     # np.allclose(m, m.T, rtol=1e-10, atol=…) on plain floats (as_array checked they are
     # finite; the diagonal always passes): the same comparisons, a fraction of the time
-    (a, b, c), (d, e, f), (g, h, i) = m.tolist()
+    (a, b, c), (d, e, f), (g, h, i) = rows
     atol = 1e-12 * max(1.0, abs(a), abs(b), abs(c), abs(d), abs(e), abs(f), abs(g), abs(h), abs(i))
     for u, v in ((b, d), (c, g), (f, h)):
         if not (abs(u - v) <= atol + 1e-10 * abs(v) and abs(v - u) <= atol + 1e-10 * abs(u)):

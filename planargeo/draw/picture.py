@@ -552,7 +552,7 @@ class Picture:
         if "affine" in g:
             mark = mark_center if mark_center is not None else (imaginary or role == "inertia")
             if mark and g["kind"] != "parabola":
-                cx, cy = (float(v) for v in g["affine"][:2, 2])
+                (_, _, cx), (_, _, cy), _ = g["affine"].tolist()
                 parts.append({"p": "mark", "x": cx, "y": cy, "shape": "o", "size": 4.0})
             if text:
                 top = g["affine"] @ [0.7071, 0.7071, 1.0]

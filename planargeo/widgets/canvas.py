@@ -409,7 +409,8 @@ class PictureCanvas(anywidget.AnyWidget):
                 changed[eid] = w
                 continue
             diff = {k: v for k, v in w.items() if old.get(k) != v}
-            diff.update({k: None for k in old if k not in w})
+            if old.keys() != w.keys():
+                diff.update({k: None for k in old if k not in w})
             if diff:
                 changed[eid] = diff
         self._sent, self._src = new_sent, new_src

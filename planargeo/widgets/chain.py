@@ -438,8 +438,10 @@ class ChainExplorer(Described, Explorer):
         st = getattr(self, "state", None)
         n = st["model"].N if st is not None else int(self.values["links"])
 
+        subs = [(i, subscript(i)) for i in range(1, n + 1)]
+
         def here(form):
-            return "; in the figure: " + ", ".join(form.format(i=i, s=subscript(i)) for i in range(1, n + 1))
+            return "; in the figure: " + ", ".join([form.format(i=i, s=s) for i, s in subs])
 
         out = {k: m + here(_IN_FIGURE[k]) if k in _IN_FIGURE else m for k, m in self.symbols.items()}
         out.update(self.meanings)

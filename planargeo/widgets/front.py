@@ -227,10 +227,10 @@ class FrontMixin:
             self.readout_strings[str(k)] = html.unescape(full)
             bare = fmt(v, zero=zero)        # a common unit goes in its own column (HTML-safe)
             text, unit = (bare, full[len(bare) + 1:]) if full.startswith(bare + " ") else (full, "")
+            name = html.escape(str(k))
             rows.append(
                 f"<tr><td style='padding-right:6px;line-height:1.25;white-space:nowrap;"
-                f"overflow:hidden;text-overflow:ellipsis;max-width:300px' title='{html.escape(str(k))}'>"
-                f"{html.escape(str(k))}</td>"
+                f"overflow:hidden;text-overflow:ellipsis;max-width:300px' title='{name}'>{name}</td>"
                 f"<td style='text-align:right;font-family:monospace;line-height:1.25;"
                 f"white-space:nowrap'>{text}</td>"
                 f"<td style='padding-left:3px;line-height:1.25;white-space:nowrap;color:#555'>"
