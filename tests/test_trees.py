@@ -129,6 +129,26 @@ def test_tree_pose_closes_the_loops_and_keeps_the_fixed_angles():
     assert np.abs(closure_jacobian(m, q) @ qd).max() < 1e-12
 
 
+@pytest.mark.parametrize("a1, a2", [(80.0, 150.0), (95.0, 135.0), (-30.0, 200.0), (120.0, 60.0)])
+def test_tree_pose_is_project_states_closure_step_by_step(a1, a2):
+    """tree_pose closes the loops by positions alone: the same pose as project_state on the same path."""
+    from planargeo.scenes.trees import FIG91_ANGLES, FIG91_PARENTS, constrained_tree, tree_pose
+    from planargeo.simulate.loops import project_state
+
+    m = constrained_tree().model
+    q, _qd = tree_pose(m, np.radians(a1), 1.0, angle2=np.radians(a2))
+    th = np.radians(FIG91_ANGLES)                   # the Fig 9.2 pose, relative angles
+    ref = np.array([th[i] - (th[p] if p >= 0 else 0.0) for i, p in enumerate(FIG91_PARENTS)])
+    ref[0] = np.radians(a1)
+    rel = np.radians(a2) - np.radians(a1)
+    turn = float(np.remainder(rel - ref[1] + np.pi, 2 * np.pi) - np.pi)
+    n = int(np.ceil(abs(turn) / np.radians(10.0)))
+    for a in [ref[1] + turn * (k + 1) / n for k in range(n)] + [rel]:
+        ref[1] = a
+        ref, _ = project_state(m, ref, np.zeros(9), fixed=[0, 1], tol=1e-13, max_iter=50)
+    np.testing.assert_array_equal(q, ref)
+
+
 def test_tree_advance_keeps_energy_and_loops():
     from planargeo.errors import SceneError
     from planargeo.scenes.trees import constrained_tree, tree_advance
