@@ -21,7 +21,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
-from hypothesis import given, strategies as st  # noqa: E402
+from hypothesis import given, settings, strategies as st  # noqa: E402
 
 import planargeo.draw  # noqa: E402
 from planargeo.draw import sketch  # noqa: E402
@@ -731,3 +731,28 @@ def test_a_models_bodies_joints_and_centres_of_mass_are_named_once():
     assert sketch.dimension(pic, "d3", (0, 0), (1, 0), "2 m", symbol="L")["symbol"] == "L"
     # the dimension's text has the line's colour (its docstring says so): one colour per element
     assert dims[0]["color"] == planargeo.draw.COLORS["construct"]
+
+
+@settings(max_examples=80, deadline=None)
+@given(st.lists(st.floats(-1e3, 1e3), min_size=6, max_size=6))
+def test_a_float_array_and_the_same_nested_lists_draw_one_conic(v):
+    # an array's rows are read at once; the nested lists go through the full check: same geometry
+    a, b, c, d, e, f = v
+    C = np.array([[a, b, c], [b, d, e], [c, e, f]])
+    g_arr, g_list = conic_geometry(C), conic_geometry(C.tolist())
+    assert g_arr.keys() == g_list.keys() and g_arr["kind"] == g_list["kind"]
+    for k in ("affine", "center", "point"):
+        if k in g_arr:
+            assert np.array_equal(g_arr[k], g_list[k])
+
+
+def test_a_non_finite_or_huge_conic_array_is_checked_like_its_lists():
+    for bad in (np.nan, np.inf, -np.inf):
+        C = np.diag([1.0, 1.0, -1.0])
+        C[1, 1] = bad
+        with pytest.raises(NonFiniteError, match="conic must be finite"):
+            conic_geometry(C)
+    big = np.diag([1e308, 1e308, -1e308])        # finite, though its entries' sum is not
+    assert conic_geometry(big)["kind"] == conic_geometry(big.tolist())["kind"]
+    with pytest.raises(InputError, match="conic must be symmetric"):
+        conic_geometry(np.array([[1.0, 2.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, -1.0]]))
