@@ -499,7 +499,8 @@ class Picture:
             if anchor is None:
                 ax, ay = (self.box[0] + self.box[1]) / 2, (self.box[2] + self.box[3]) / 2
             else:
-                ax, ay = (float(v) for v in anchor)
+                ax, ay = anchor
+                ax, ay = float(ax), float(ay)
             t_end = (tx - sx) * ex + (ty - sy) * ey
             lo, hi = min(0.0, t_end), max(0.0, t_end)
             t = (ax - sx) * ex + (ay - sy) * ey
@@ -670,7 +671,8 @@ class Picture:
         symbol, desc : str
             What dragging it changes.
         """
-        x, y = (float(v) for v in xy)
+        x, y = xy
+        x, y = float(x), float(y)
         if math.isfinite(x) and math.isfinite(y):
             self.handles.append({"id": str(id), "x": x, "y": y, "symbol": symbol, "desc": desc})
 
@@ -787,7 +789,6 @@ class Picture:
             parts = []
             x0 = y0 = rx = ry = None     # the last point rounded (a pole's marker, glyph and label share it)
             for part in el["parts"]:
-                part = dict(part)
                 x = part.get("x")
                 if x is not None:
                     y = part["y"]
@@ -795,7 +796,9 @@ class Picture:
                         x0, y0 = x, y
                         rx = round(x, nd) + 0.0 if type(x) is float else rnd(x)
                         ry = round(y, nd) + 0.0 if type(y) is float else rnd(y)
-                    part["x"], part["y"] = rx, ry
+                    part = {**part, "x": rx, "y": ry}
+                else:
+                    part = dict(part)
                 if "xy" in part:
                     xy = part["xy"]
                     if type(xy) is np.ndarray and xy.dtype == np.float64 and xy.ndim == 2 and xy.shape[1] == 2:
