@@ -230,7 +230,8 @@ def test_the_time_scale_is_shown_beside_the_speed_menu():
         time_scale = 0.1
 
     assert "1× = real time" in Dot(display="agg").play_scale.value
-    assert "0.1× real time" in Slow(display="agg").play_scale.value
+    assert "1× plays 0.1 s of motion a second" in Slow(display="agg").play_scale.value
+    assert Dot(display="agg").play_speed.description == "play at"     # not a second "speed"
 
 
 PageDot = Counted

@@ -225,13 +225,13 @@ class PlayMixin:
                                    show_repeat=False)
         self.play_speed = W.Dropdown(options=[("¼×", 0.25), ("½×", 0.5), ("1×", 1.0),
                                               ("2×", 2.0), ("4×", 4.0)], value=1.0,
-                                     description="speed", layout=W.Layout(width="150px"))
+                                     description="play at", layout=W.Layout(width="150px"))
         self.play_loop = W.Checkbox(value=True, description="loop", indent=False,
                                     layout=W.Layout(width="80px"))
         scale = float(self.time_scale)
         self.play_scale = W.HTML(
             f"<span style='white-space:nowrap' title='1× plays {scale:g} simulated seconds per second'>"
-            + ("1× = real time" if scale == 1.0 else f"1× = {scale:g}× real time") + "</span>")
+            + ("1× = real time" if scale == 1.0 else f"1× plays {scale:g} s of motion a second") + "</span>")
         self.play_speed.observe(self.guarded(lambda _c: self._restart_clock()), names="value")
         self.play_control.observe(self.guarded(self._play_tick), names="value")
         self.play_control.observe(self.guarded(self._play_toggled), names="playing")
