@@ -207,6 +207,9 @@ class _Calls:
 
     def __getattr__(self, kind):          # path, text: (kind, args, kwargs, the marks added to it)
         def call(*args, **kw):
+            for a in args:             # drawn again on other pictures: never changed in place
+                if isinstance(a, np.ndarray):
+                    a.flags.writeable = False
             self.calls.append((kind, args, kw, []))
             self.elements[-1] = {"parts": self.calls[-1][3]}
         return call
