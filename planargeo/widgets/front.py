@@ -273,7 +273,7 @@ class FrontMixin:
             if bool(w.disabled) != (reason is not None):
                 w.disabled = reason is not None
             tip = str(reason) if reason is not None else self._tooltips.get(k)
-            if hasattr(w, "tooltip") and w.tooltip != tip:
+            if getattr(w, "tooltip", tip) != tip:      # (a widget without a tooltip: nothing to do)
                 w.tooltip = tip
         try:
             text = explain_html(dict(self.explain()))
