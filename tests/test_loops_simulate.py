@@ -4,7 +4,8 @@ import pytest
 
 from planargeo.errors import InputError
 from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
-from planargeo.simulate.loops import closure_jacobian, closure_residual, project_state, simulate_loops
+from planargeo.simulate.loops import (close_loops, closure_jacobian, closure_residual, project_state,
+                                      simulate_loops)
 
 import _slider_crank_reference as scref
 
@@ -74,6 +75,21 @@ def test_project_state(crank):
     assert np.abs(closure_residual(m, q2)).max() < 1e-12
     assert np.abs(closure_jacobian(m, q2) @ qd2).max() < 1e-10
     assert qd2[0] == qd[0]
+
+
+def test_close_loops_meets_the_slider_crank_closed_form(crank):
+    # the crank held at ψ = 0.7 rad: the rod and piston angles follow from the triangle,
+    # β = arccos(-r cos ψ / l), θ = β - ψ, φ = π/2 - β (r = 2.29, l = 5 of the scene's defaults)
+    m, q, qd = crank
+    psi, r, l = 0.7, 2.29, 5.0
+    beta = np.arccos(-r * np.cos(psi) / l)
+    q2 = close_loops(m, [psi, q[1], q[2]], fixed=[0])
+    assert q2[0] == psi
+    assert np.allclose(q2, [psi, beta - psi, np.pi / 2 - beta], rtol=0.0, atol=1e-12)
+    # project_state's positions are these, bit for bit
+    assert np.array_equal(project_state(m, [psi, q[1], q[2]], qd, fixed=[0])[0], q2)
+    with pytest.raises(InputError, match="fixed must be indices"):
+        close_loops(m, q, fixed=[5])
 
 
 @pytest.mark.parametrize("kw, msg", [(dict(stabilization="magic"), "stabilization must be one of"),

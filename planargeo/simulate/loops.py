@@ -28,7 +28,7 @@ from planargeo.mechanics.kinematics import kinematics
 from planargeo.mechanics.model import Model, _finite_tuple, _positive
 from planargeo.simulate.integrate import MAX_STEPS, MULTISTEP, SimulationResult, _count, simulate
 
-__all__ = ["simulate_loops", "closure_residual", "closure_jacobian", "project_state", "baumgarte",
+__all__ = ["simulate_loops", "closure_residual", "closure_jacobian", "close_loops", "project_state", "baumgarte",
            "STABILIZATIONS", "LOOP_MAX_EVALS"]
 
 STABILIZATIONS = ("projection", "baumgarte", "both", "none")
@@ -138,6 +138,53 @@ def _weighted_correction(model, q, J, rhs, free):
     return out
 
 
+@overflow_checked("q")
+@_documented
+def close_loops(model: Model, q, contacts=None, *, fixed=(), tol: float = 1e-12, max_iter: int = 25):
+    """Close the loops: Gauss-Newton ``q ← q - J_c^+ φ(q)`` until ``max |φ| < tol`` (thesis 9.54).
+
+    The positions half of :func:`project_state`.
+
+    Parameters
+    ----------
+    {model q}
+    {contacts fixed}
+    tol, max_iter : float, int
+        Position tolerance; Gauss-Newton iterations at most.
+
+    Returns
+    -------
+    q : ndarray (nq,)
+        The closed configuration (``max |φ| < tol`` unless ``max_iter`` ran out).
+
+    Raises
+    ------
+    InputError
+        For a bad ``tol``, ``max_iter`` or ``fixed``.
+
+    Examples
+    --------
+    >>> from planargeo.scenes.slider_crank import slider_crank_model, slider_crank_state
+    >>> m = slider_crank_model(); q, _ = slider_crank_state()
+    >>> q2 = close_loops(m, q + [0.0, 0.01, -0.02], fixed=[0])
+    >>> bool(np.abs(closure_residual(m, q2)).max() < 1e-12), float(q2[0]) == float(q[0])
+    (True, True)
+    """
+    q = _state(model, q, "q")
+    tol = check_tolerance(tol, "tol")
+    max_iter = _count(max_iter, "max_iter")
+    cs = _cs(model, contacts)
+    free = _free(model, fixed)
+    if cs:
+        for _ in range(max_iter):
+            phi = closure_residual(model, q, cs)
+            if np.abs(phi).max() < tol:
+                break
+            J = closure_jacobian(model, q, cs)[:, free]
+            q[free] -= np.linalg.lstsq(J, phi, rcond=None)[0]
+    return q
+
+
 @overflow_checked("q or qd")
 @_documented
 def project_state(model: Model, q, qd, contacts=None, *, fixed=(), tol: float = 1e-12, max_iter: int = 25):
@@ -173,18 +220,11 @@ def project_state(model: Model, q, qd, contacts=None, *, fixed=(), tol: float = 
     (True, True)
     """
     q, qd = _state(model, q, "q"), _state(model, qd, "qd")
-    tol = check_tolerance(tol, "tol")
-    max_iter = _count(max_iter, "max_iter")
+    q = close_loops(model, q, contacts, fixed=fixed, tol=tol, max_iter=max_iter)
     cs = _cs(model, contacts)
-    free = _free(model, fixed)
     if not cs:
         return q, qd
-    for _ in range(max_iter):
-        phi = closure_residual(model, q, cs)
-        if np.abs(phi).max() < tol:
-            break
-        J = closure_jacobian(model, q, cs)[:, free]
-        q[free] -= np.linalg.lstsq(J, phi, rcond=None)[0]
+    free = _free(model, fixed)
     J = closure_jacobian(model, q, cs)
     qd = qd - _weighted_correction(model, q, J, J @ qd, free)
     return q, qd
