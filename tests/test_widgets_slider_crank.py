@@ -171,3 +171,20 @@ def test_folded_dead_centre_reports_the_contact_matrix(ex):
         scenes.build("slider-crank", l=2.29, psi=math.pi)
     assert ex.message == f"{err.value} (refused: crank angle (deg) = 180, rod length = 2.29)"
     assert err.value.cond > 1e12
+
+
+@pytest.mark.parametrize("frames", [1, 45, 90])
+def test_joint_angles_read_within_half_a_turn_during_play(ex, frames):
+    # the crank turns many times in Play: each joint angle reads in (−180°, 180°], and is the
+    # relative turn between its bodies from the pins' positions (ψ + θ + φ = 90° on the loop, 9.6)
+    for _ in range(frames // 10):
+        ex.advance(10)
+    ex.advance(frames % 10 or 1)
+    r = ex.readout_values
+    psi, h = math.radians(r["crank angle ψ"]), r["piston height h"]
+    pin, wrist = np.array([R * math.cos(psi), R * math.sin(psi)]), np.array([0.0, h - T])
+    rod = math.degrees(math.atan2(*(wrist - pin)[::-1]))               # the rod's direction, absolute
+    for key, expected in (("rod angle θ", rod - r["crank angle ψ"]), ("piston angle φ", 90.0 - rod)):
+        assert -180.0 < r[key] <= 180.0, (key, r[key])
+        assert math.remainder(r[key] - expected, 360.0) == pytest.approx(0.0, abs=1e-6), key
+    assert -180.0 < r["crank angle ψ"] <= 180.0

@@ -55,6 +55,17 @@ def wrap_message(text: str, width: int = 38) -> str:
     return "\n".join(textwrap.wrap(text, width)) or text
 
 
+def wrapped_degrees(rad: float) -> float:
+    """The angle ``rad`` (radians) in degrees, wrapped to (−180°, 180°] (a joint angle as read).
+
+    Examples
+    --------
+    >>> [round(wrapped_degrees(math.radians(a)), 6) for a in (-387.4, -180.0, 180.0, 190.0, 23.0)]
+    [-27.4, 180.0, 180.0, -170.0, 23.0]
+    """
+    return 180.0 - (180.0 - math.degrees(rad)) % 360.0
+
+
 class SliderCrankExplorer(SceneTime, Explorer):
     """Slider-crank of thesis 9.6: every pin and bearing force (9.61), Play through ``simulate_loops``.
 
@@ -235,9 +246,9 @@ class SliderCrankExplorer(SceneTime, Explorer):
         driven = state["drive"] == "constant-speed"
         drift = (state["E"] - E0) / abs(E0) if E0 else 0.0
         out = {
-            "t": now, "crank angle ψ": (math.degrees(qq[0]) + 180.0) % 360.0 - 180.0,
-            "crank speed ψ̇": state["qd"][0], "rod angle θ": math.degrees(qq[1]),
-            "piston angle φ": math.degrees(qq[2]),
+            "t": now, "crank angle ψ": wrapped_degrees(qq[0]),
+            "crank speed ψ̇": state["qd"][0], "rod angle θ": wrapped_degrees(qq[1]),
+            "piston angle φ": wrapped_degrees(qq[2]),
             "piston height h": state["h"], "piston speed": vel[2][1], "piston acceleration": acc[2][1],
             "ψ̈ crank": qdd[0],
             "|f₁| crank pivot": force["f_1"], "|f₂| crank pin": force["f_2"],

@@ -95,7 +95,7 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
     pic = Picture(view, size=size, ticks=False, margin=(6, 6, 6, 6))
     x0, x1, y0, y1 = pic.box
     pivot, pin, wrist = pose[0, :2], pose[1, :2], pose[2, :2]
-    psi, theta, phi = (math.degrees(float(x)) for x in q)
+    psi, theta, phi = (180.0 - (180.0 - math.degrees(float(x))) % 360.0 for x in q)    # in (−180°, 180°]
     pic.path("slide", [[-BORE, y0], [-BORE, y1], [np.nan, np.nan], [BORE, y0], [BORE, y1]], role="construct",
              symbol="slide", color=COLORS["ground"], width=1.0 * PX_PER_PT, dash=[4.0, 3.0], z=1,
              desc=f"the slide (9.6): the piston moves along it, {2 * BORE:.3g} m wide")
