@@ -341,3 +341,22 @@ def test_earlier_steps_control_is_disabled_at_step_one(ex):
     shown = ex.picture()["elements"]
     ex.set(earlier="hidden")                    # indeed nothing changes: one step is shown
     assert ex.readout_values == before and ex.picture()["elements"] == shown
+
+
+def test_a_line_of_the_construction_is_described_as_a_line_not_a_force():
+    """A lever line joins two poles: its hover text gives its place (by hand), never a force's size."""
+    def desc(e, name):
+        (el,) = [el for el in e.picture()["elements"] if el["id"] == name]
+        return el["desc"]
+
+    # Q₁ = (0, 0), Q₂ = (3, 0): the lever line is the x axis, 0 m from the origin; through (0, 1), (3, 1)
+    # it is 1 m from the origin
+    e = ConstructionExplorer("twist_sum", display="agg", x1=0.0, y1=1.0, w1=1.0, x2=3.0, y2=1.0, w2=3.0)
+    text = desc(e, "Q1Q2")
+    assert "force" not in text and " N" not in text, text
+    assert text.endswith("a line 1 m from the origin"), text
+    e.set(construction="velocity")
+    assert "force" not in desc(e, "lever") and "m from the origin" in desc(e, "lever")
+    # a force's line still says its size: f₁ of 1 N at 60° through (1, 0) … by the wrench's own numbers
+    e.set(construction="wrench_sum")
+    assert desc(e, "f1").split(": ")[-1].startswith("|force| ")

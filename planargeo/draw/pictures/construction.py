@@ -58,16 +58,20 @@ def _symbol(label: str) -> str:
 
 
 def _value(e) -> str:
-    """The element's value in words (a pole's rate and place, a force's size and line, a length)."""
+    """The element's value in words (a pole's rate and place, a force's size and line, a construction
+    line's place, a length)."""
     v = np.asarray(e.value, float)
     if e.kind == "point":
         unit = _RATE_UNIT.get(e.role)
         return (f"rate {num(v[2])} {unit}, " if unit and not bool(is_ideal(v)) else
                 "a translation, " if unit else "") + where(v)
     if e.kind == "line":
+        F = math.hypot(v[0], v[1])
+        if e.role == "construct":    # a line of the construction (a join of poles): no size, no unit
+            return ("the line at infinity" if bool(is_at_infinity(v)) else
+                    f"a line {num(abs(v[2]) / F)} m from the origin")
         if bool(is_at_infinity(v)):
             return f"a couple of {num(v[2])} N·m (the line at infinity)"
-        F = math.hypot(v[0], v[1])
         return f"|force| {num(F)} N, {num(abs(v[2]) / F)} m from the origin"
     if e.kind == "segment":
         return f"length {num(float(np.hypot(*(v[1] - v[0]))))} m"
