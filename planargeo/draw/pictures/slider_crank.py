@@ -118,9 +118,10 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
                    f"wrist pin ({num(wrist[0])}, {num(wrist[1])}) m")
     # the joint angles a little way along their links (the pins are the forces' places)
     for sym, at, meaning, val in (("ψ", 0.3 * pin, "crank angle", psi),
-                                  ("θ", pin + 0.2 * (wrist - pin), "rod angle, from closing the loop", theta),
-                                  ("φ", wrist + np.array([0.0, 2.8 * t]), "piston angle, its joint coordinate",
-                                   phi)):
+                                  ("θ", pin + 0.2 * (wrist - pin), "turn of the rod from the crank, at the crank pin "
+                                   "(from closing the loop)", theta),
+                                  ("φ", wrist + np.array([0.0, 2.8 * t]), "turn of the piston from the rod, at the "
+                                   "wrist pin (the piston itself stays upright)", phi)):
         pic.marks(f"angle {sym}", np.zeros((0, 2)), role="text", symbol=sym, color="#303030",
                   desc=f"joint angle (9.6): {meaning}, {sym} = {num(val, 4)}°")
         label_at(pic, at, sym, gap=5.0)
