@@ -236,3 +236,21 @@ def test_bend_for_tip_refuses_a_target_that_is_not_one_finite_point():
         bend_for_tip([(1.0, 2.0), (3.0, 4.0)], 3, 0.0)
     # far beyond the chain's reach (distances overflow): still an angle in range, as the whole grid gives
     assert -math.pi <= bend_for_tip((1e308, 1e308), 3, 0.0) <= math.pi
+
+
+def test_outboard_slider_follows_bodies_in_the_page():
+    """n = 1, then n = 8 (as the page sends them): the outboard slider is enabled, spans 0..7 and reads 7
+    ("all" outboard bodies of 8), in the kernel and in the page, whatever order the page applies an
+    update's keys in (a value never travels beyond the range the page holds)."""
+    from _page_slider import PageSlider
+
+    ex = ArticulatedExplorer(display="agg")
+    w = ex.controls["outboard bodies"]
+    page = PageSlider(w)
+    ex.controls["bodies n"].set_state({"value": 1})
+    assert (w.value, w.max, w.disabled) == (0, 0, True)
+    ex.controls["bodies n"].set_state({"value": 8})
+    assert (w.value, w.max, w.disabled) == (7, 7, False)
+    assert ex.readout_values["outboard included"] == "7 of 7"
+    assert page.problems == []
+    assert page.shown == {"value": 7, "min": 0, "max": 7, "disabled": False}
