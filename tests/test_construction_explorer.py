@@ -360,3 +360,24 @@ def test_a_line_of_the_construction_is_described_as_a_line_not_a_force():
     # a force's line still says its size: f₁ of 1 N at 60° through (1, 0) … by the wrench's own numbers
     e.set(construction="wrench_sum")
     assert desc(e, "f1").split(": ")[-1].startswith("|force| ")
+
+
+@pytest.mark.parametrize("first", ["twist_sum", "wrench_sum"])
+def test_a_new_construction_opens_with_every_step_and_the_page_shows_it(first):
+    """Step 1, then every construction from the menu (as the page picks it): each opens with all of
+    its steps, and the step slider equals the step drawn, in the kernel and in the page, whatever
+    order the page applies an update's keys in."""
+    from _page_slider import PageSlider
+
+    e = ConstructionExplorer(first, display="agg")
+    w = e.controls["step"]
+    page = PageSlider(w)
+    w.set_state({"value": 1})
+    for kind in ["wrench_sum", "acceleration", "velocity", "newton_euler", "twist_sum", "through_infinity"]:
+        if kind == e.construction:
+            continue
+        e.controls["construction"].set_state({"index": list(CONSTRUCTIONS).index(kind)})
+        n = len(construct(kind).steps)
+        assert e.construction == kind and (w.value, w.max) == (n, n)
+        assert e.readout_values["step"] == f"{n}/{n}" and e.caption.startswith(f"Step {n}/{n}:")
+        assert page.problems == [] and (page.shown["value"], page.shown["max"]) == (n, n), kind

@@ -28,6 +28,7 @@ from planargeo.draw.pictures.construction import construction_picture
 from planargeo.errors import InputError
 from planargeo.scenes.construction import CONSTRUCTIONS, construct, parameters
 from planargeo.widgets._explorer import arrow_handle, explorer_data, xy_handle
+from planargeo.widgets.articulated import widen
 from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["ConstructionExplorer"]
@@ -171,7 +172,9 @@ class ConstructionExplorer(Explorer):
                 else len(construct(kind).steps)
         w = self.controls["step"]
         with self._quietly():
-            if w.max != n:
+            if w.max < n:          # ahead of the value, or the page pulls it back to the old range's end
+                widen(w, n)
+            elif w.max != n:
                 w.max = n
         used = set(parameters(kind))
         for name in self._all_params:
