@@ -105,3 +105,19 @@ def test_the_time_field_is_read_only_bounded_and_exact():
         assert "t (s)" in ex.message and ex.values == shown
         ex.set(**{"t (s)": "soon"})
         assert "t (s)" in ex.message and ex.values == shown
+
+
+@pytest.mark.parametrize("frames", [1, 7])
+def test_the_page_shows_play_time_to_the_millisecond_the_state_keeps_the_exact_time(frames):
+    from planargeo.widgets.slider_crank import SliderCrankExplorer
+
+    for cls in (TreeExplorer, SliderCrankExplorer):
+        ex = cls(display="agg")
+        ex.advance(frames)
+        exact = frames * ex.play_dt
+        on_page = ex.controls["t (s)"].get_state("value")["value"]     # what the browser is sent
+        assert on_page == f"{exact:.3f}", (cls.__name__, on_page)
+        assert float(ex.values["t (s)"]) == pytest.approx(exact, abs=1e-9) == ex.readout_values["t"]
+        fresh = cls(display="agg", **ex.values)                       # the same state from the same values
+        assert fresh.message == "" and fresh.readout_values == ex.readout_values
+        np.testing.assert_array_equal(fresh.state["q"], ex.state["q"])

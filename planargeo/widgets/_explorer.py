@@ -14,6 +14,7 @@ import math
 
 import ipywidgets as W
 import numpy as np
+import traitlets
 
 from planargeo.draw.pictures._words import words_data
 from planargeo.errors import DegenerateGeometryError, InputError
@@ -211,6 +212,31 @@ def time_text(t: float) -> str:
     return "0" if text in ("", "-0") else text
 
 
+def time_shown(text, widget=None) -> str:
+    """The time field's ``text`` as the page shows it: to the millisecond (other text as it is).
+
+    The field keeps the exact time (the state's time, :func:`time_text`); the student reads it
+    rounded, as Play's clock.
+
+    Examples
+    --------
+    >>> time_shown("0.325875691"), time_shown("2.9725"), time_shown("0"), time_shown("soon")
+    ('0.326', '2.973', '0.000', 'soon')
+    """
+    try:
+        t = float(text)
+    except (TypeError, ValueError):
+        return text
+    return f"{t:.3f}" if math.isfinite(t) else text
+
+
+class TimeField(W.Text):
+    """The read-only scene time field: its value is the exact time (``ex.values``: the state at a
+    time depends on that time alone), the page shows it to the millisecond (:func:`time_shown`)."""
+
+    value = traitlets.Unicode(help="String value").tag(sync=True, to_json=time_shown)
+
+
 def time_value(text, limit: float) -> float:
     """The scene time (s) of the time field's ``text`` (at most ``limit``), or an InputError."""
     try:
@@ -273,7 +299,7 @@ class SceneTime:
 
     def time_control(self) -> W.Text:
         """The read-only time field."""
-        return W.Text(value="0", description="t (s)", disabled=True, tooltip=self._SET_BY_PLAY)
+        return TimeField(value="0", description="t (s)", disabled=True, tooltip=self._SET_BY_PLAY)
 
     def disabled(self, values):
         return {"t (s)": self._SET_BY_PLAY}
