@@ -56,8 +56,8 @@ def test_drag_centre_of_gravity_sets_eps(ex):
 def test_steering_drag_moves_the_icr_to_l_over_tan_delta(ex, delta_deg):
     delta = math.radians(delta_deg)
     front = np.array([0.0, L])
-    wheel = np.array([-math.sin(delta), math.cos(delta)])          # turned left by δ
-    ex.drag("steering", ex.handles()[1].where(), front + 0.6 * wheel, steps=5)
+    axle = -np.array([math.cos(delta), math.sin(delta)])            # the front axle line, wheel turned left by δ
+    ex.drag("steering", ex.handles()[1].where(), front + 1.3 * axle, steps=5)
     d = L / math.tan(delta)
     r_g = math.hypot(d, (1 - 0.45) * L)
     acc = r_g * math.hypot((4.0 / d) ** 2, ex.readout_values["yaw acceleration ω̇"])
@@ -134,3 +134,29 @@ def test_play_stops_at_rest_when_braking_exactly_at_the_stop():
     n = ex.n_updates
     ex.advance(5)                                  # stopped: Play ended
     assert ex.n_updates == n
+
+
+def test_steering_lever_is_apart_from_the_drive_handle_and_steers_smoothly():
+    """The steering handle is the end of a lever of about 100 px along the front axle line, ≥ 60 px from the
+    drive handle; a 15 px drag across it turns the wheel by at most 9° (atan(15/100) = 8.5°, by hand),
+    and the front axle line through it still meets the rear axle line at the ICR (d = L / tan δ)."""
+    ex = CarExplorer(display="agg")                               # coasting: the drive handle on the tyre
+    x0, x1, y0, y1 = ex.view_of(ex.state)
+    px = ex.figure_px[0] / (x1 - x0)                              # pixels per metre of the view
+    steer, drive = (np.array(ex.handles()[k].where()) for k in (1, 3))
+    front = np.array([0.0, L])
+    assert np.hypot(*(steer - front)) * px >= 99.0
+    assert np.hypot(*(steer - drive)) * px >= 60.0
+    d0 = ex.values[RADIUS]
+    delta0 = math.atan2(L, d0)
+    assert ex.readout_values["steering angle"] == pytest.approx(math.degrees(delta0))
+    across = np.array([math.sin(delta0), -math.cos(delta0)])      # perpendicular to the lever
+    ex.drag("steering", tuple(steer), tuple(steer + 15.0 / px * across), steps=3)
+    assert ex.message == ""
+    delta1 = math.radians(ex.readout_values["steering angle"])
+    assert 0.0 < abs(delta1 - delta0) <= math.radians(9.0)
+    assert ex.values[RADIUS] == pytest.approx(L / math.tan(delta1), rel=1e-9)
+    end = np.array(ex.handles()[1].where())                       # on the line from the front to the ICR
+    icr = np.array(ex.handles()[2].where())
+    u, w = end - front, icr - front
+    assert abs(u[0] * w[1] - u[1] * w[0]) <= 1e-9 * np.hypot(*u) * np.hypot(*w) and u @ w > 0

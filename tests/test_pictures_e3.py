@@ -67,7 +67,7 @@ def _states(name):
     yield "default", cls(display="agg")
     if name == "car":
         ex = cls(display="agg", **{"drive force (N)": 2500.0})
-        ex.drag("steering", ex.handles()[1].where(), (-0.6, L + 0.5), steps=3)
+        ex.drag("steering", ex.handles()[1].where(), (-0.5, L - 0.6), steps=3)     # the wheel turned by 50°
         ex.drag("centre of gravity", ex.handles()[0].where(), (0.0, 0.9), steps=2)
         yield "dragged", ex
         ex.advance(12)
@@ -154,11 +154,12 @@ def test_car_drive_arrow_ends_at_its_handle():
     ex = CarExplorer(display="agg", **{"drive force (N)": 2000.0, "heading (deg)": 30.0})
     vec, mid = drawn_arrow(ex.picture(), "f_A")
     tail = mid - vec / 2
-    front = ex.handles()[1].where()                           # the steering handle: front + 0.35 m along the wheel
+    (wheel,) = parts(elements(ex.picture())["front tyre"], "path")
+    front = np.mean(np.array(wheel["xy"], float), axis=0)      # the front tyre's middle: its contact
     tip = np.array(ex.handles()[3].where())
     assert tail + vec == pytest.approx(tip, abs=1e-3)
     assert np.hypot(*vec) == pytest.approx(2.0, abs=1e-3)      # 2000 N at 1 mm/N
-    assert np.hypot(*(tail - np.array(front))) == pytest.approx(0.35, abs=1e-3)
+    assert tail == pytest.approx(front, abs=1e-3)                # from the front tyre's contact
 
 
 def test_car_labels_are_off_the_body():

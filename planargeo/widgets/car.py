@@ -16,7 +16,7 @@ import textwrap
 import numpy as np
 
 from planargeo import scenes
-from planargeo.draw.pictures.car import (FORCE_SCALE, HALF_TRACK, NEAR, OVERHANG, TYRE, car_picture,
+from planargeo.draw.pictures.car import (FORCE_SCALE, HALF_TRACK, NEAR, OVERHANG, car_picture, steer_lever,
                                          moves, view_box)
 from planargeo.errors import InputError, SceneError
 from planargeo.simulate.integrate import energy
@@ -147,7 +147,7 @@ class CarExplorer(Described, Explorer):
         return tuple(float(c) for c in R @ np.asarray(p, float) + t)
 
     def handles(self) -> list:
-        # G along the car (ε); the front tyre's edge (steering: d = L / tan δ); the ICR along the
+        # G along the car (ε); the steering lever's end on the front axle line (d = L / tan δ); the ICR along the
         # rear axle line (d); the tip of the f_A arrow along the front wheel (F_A)
         return [Handle("centre of gravity", self._cg_where, self._cg_drag),
                 Handle("steering", self._steer_where, self._steer_drag),
@@ -166,18 +166,22 @@ class CarExplorer(Described, Explorer):
         return {EPS: eps}
 
     def _steer_where(self):
-        x = self.state["res"].extra
-        return self._drawn(x["front_contact"] + TYRE * x["front_rolling"])
+        return self._drawn(steer_lever(self.state["res"].extra))
 
     def _steer_drag(self, x, y):
+        # the lever lies along the front axle line towards the ICR: at a steering angle δ (to the left)
+        # it points along −(cos δ, sin δ) in the car's frame; the turn radius is L / tan δ (6.114),
+        # held at the slider's ends (a drag beyond them holds there)
         R, t, res = self._car_frame()
         front = np.array(self._drawn(res.extra["front_contact"]))
-        r = R.T @ (np.array([x, y], float) - front)          # the wheel's direction, car frame
-        delta = math.atan2(-r[0], r[1])                       # steering angle, to the left
+        r = R.T @ (np.array([x, y], float) - front)          # along the front axle line, car frame
+        delta = math.atan2(-r[1], -r[0])                      # steering angle, to the left
         if not 0.0 < delta < math.pi / 2:
             raise InputError(f"the steering angle must turn the car left, between 0 and 90°, got "
-                             f"{math.degrees(delta):.3g}° (straight ahead the ICR is at infinity)")
-        return {RADIUS: res.params["L"] / math.tan(delta)}
+                             f"{math.degrees(delta):.3g}°: keep the lever's end left of the front wheel and "
+                             f"behind it (straight ahead the ICR is at infinity)")
+        w = self.controls[RADIUS]
+        return {RADIUS: float(np.clip(res.params["L"] / math.tan(delta), w.min, w.max))}
 
     def _icr_where(self):
         return self._drawn((0.0, 0.0))

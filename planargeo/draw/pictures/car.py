@@ -22,8 +22,8 @@ from planargeo.draw.picture import PX_PER_PT, Picture
 from planargeo.draw.pictures.kit import aim_label, force, label_at, num, scale_bar, where
 from planargeo.draw.style import COLORS
 
-__all__ = ["car_picture", "moves", "view_box", "FORCE_SCALE", "HALF_TRACK", "OVERHANG", "TYRE",
-           "VIEW_MARGIN", "NEAR", "SLIDES"]
+__all__ = ["car_picture", "moves", "view_box", "steer_lever", "FORCE_SCALE", "HALF_TRACK", "OVERHANG", "TYRE",
+           "VIEW_MARGIN", "NEAR", "SLIDES", "STEER_ARM"]
 
 #: metres of arrow per newton for the tyre, drive and bias forces
 FORCE_SCALE = 1e-3
@@ -36,6 +36,38 @@ VIEW_MARGIN = 1.0
 NEAR = 10.0
 #: the picture's banner once the tyres reach their limit
 SLIDES = "the car slides out: its tyres reach μ·g"
+#: length (m) of the steering lever: from the front tyre along its axle line, towards the ICR (at most
+#: half way there); 100 px or more in the explorer's view, clear of the drive arrow along the wheel
+STEER_ARM = 2.0
+
+
+def steer_lever(extra) -> np.ndarray:
+    """The end of the steering lever, in the car's frame (m): the front axle line turns with the wheel.
+
+    It lies :data:`STEER_ARM` from the front tyre towards the ICR (at most half way there), on the
+    front axle line, which meets the rear axle line at the ICR (6.114).
+
+    Parameters
+    ----------
+    extra : dict
+        The scene ``"car"``'s ``extra`` (``front_contact``, ``icr``).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``(x, y)`` (m).
+
+    Examples
+    --------
+    >>> from planargeo.scenes.car import car
+    >>> end = steer_lever(car(d=8.0, outlines=False).extra)     # front tyre at (8, 2.6), ICR at (0, 0)
+    >>> [round(float(v), 4) for v in end]
+    [6.0979, 1.9818]
+    """
+    front = np.asarray(extra["front_contact"], float)
+    to_icr = np.asarray(extra["icr"], float) - front
+    dist = math.hypot(*to_icr)
+    return front + min(STEER_ARM, 0.5 * dist) * to_icr / dist
 
 
 def moves(theta: float, d: float):
@@ -153,6 +185,10 @@ def car_picture(res, *, heading: float, view, slides: bool = False, limit: float
     pic.path("axles", np.array([icr, rear, [np.nan, np.nan], icr, front]), role="construct", symbol="axles",
              color=COLORS["construct"], width=0.8 * PX_PER_PT, dash=[4.0, 3.0], z=1,
              desc=f"the axle lines: they meet at the ICR, d = {d:.3g} m from the rear tyre (6.114)")
+    pic.path("steering lever", np.array([front, R @ steer_lever(x) + tr]), role="body", symbol="steering",
+             color="#000000", width=2.4 * PX_PER_PT, z=5,            # over R₂μ₂'s line, which runs along it
+             desc=f"steering lever along the front axle line (6.114): drag its end to turn the front wheel, "
+                  f"now by {math.degrees(x['steer']):.3g}°; the axle line meets the rear axle line at the ICR")
     t = np.linspace(0.0, 2 * np.pi, 181)
     pic.path("path of G", icr + r_cg * np.column_stack([np.cos(t), np.sin(t)]), role="construct", symbol="circle of G",
              color=COLORS["construct"], width=0.8 * PX_PER_PT, dash=[1.0, 2.5], z=1,
