@@ -297,7 +297,7 @@ def test_car_explorer_skips_the_outlines():
     # what it shows is still the thesis's closed form (6.131, 6.133)
     v = ex.values
     _T, _U, omega_dot, mu = thesis_closed_forms(m=v["mass (kg)"], rho=v["radius of gyration (m)"], L=2.6,
-                                                d=20.0, eps=v["COM behind front (ε)"], omega=9.0 / 20.0,
+                                                d=20.0, eps=v["centre of mass ε (× L)"], omega=9.0 / 20.0,
                                                 F_A=-1000.0)
     r = ex.readout_values
     assert r["yaw acceleration ω̇"] == pytest.approx(omega_dot, rel=1e-10)

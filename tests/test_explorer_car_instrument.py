@@ -18,7 +18,7 @@ from planargeo.widgets.car import CarExplorer
 from test_widgets_car import newton_euler
 
 L = 2.6
-EPS, RADIUS, DRIVE, SPEED, HEADING = ("COM behind front (ε)", "turn radius (m)", "drive force (N)",
+EPS, RADIUS, DRIVE, SPEED, HEADING = ("centre of mass ε (× L)", "turn radius (m)", "drive force (N)",
                                       "speed (m/s)", "heading (deg)")
 
 

@@ -37,14 +37,14 @@ def ex():
 @pytest.mark.parametrize("vals", [
     {},
     {"speed (m/s)": 12.0, "turn radius (m)": 30.0},
-    {"drive force (N)": -3000.0, "COM behind front (ε)": 0.7, "radius of gyration (m)": 2.0},
+    {"drive force (N)": -3000.0, "centre of mass ε (× L)": 0.7, "radius of gyration (m)": 2.0},
     {"mass (kg)": 2000.0, "speed (m/s)": 0.0},
 ])
 def test_tyre_forces_match_newton_euler(ex, vals):
     ex.set(**vals)
     v = ex.values
     wd, mu1, mu2 = newton_euler(v["mass (kg)"], v["radius of gyration (m)"], v["turn radius (m)"],
-                                v["COM behind front (ε)"], v["speed (m/s)"], v["drive force (N)"])
+                                v["centre of mass ε (× L)"], v["speed (m/s)"], v["drive force (N)"])
     r = ex.readout_values
     assert ex.message == ""
     assert r["yaw acceleration ω̇"] == pytest.approx(wd, rel=1e-9, abs=1e-12)
@@ -83,3 +83,18 @@ def test_more_speed_more_tyre_force(ex):
     ex.controls["speed (m/s)"].value = 8.0
     assert abs(ex.readout_values["rear tyre force μ₁"]) > abs(f1)
     assert ex.readout_values["steering angle"] == pytest.approx(math.degrees(math.atan2(L, 8.0)))
+
+
+def test_the_centre_of_mass_control_says_its_unit_and_range_in_words():
+    """Its label is symbol and unit (wheelbases), its meaning and range on hover; "COM" is nowhere on screen,
+    not even in the message that refuses a value beyond the rear axle."""
+    from planargeo.widgets.car import EPS
+
+    ex = CarExplorer(display="agg")
+    w = ex.controls[EPS]
+    assert w.description == "ε (× L)" and (w.min, w.max) == (0.0, 1.0)
+    assert "centre of mass" in w.tooltip and "front axle" in w.tooltip and "rear axle" in w.tooltip
+    assert 310 - 7 * len(w.description) - 90 >= 120             # the track a student drags (as for the others)
+    ex.set(**{EPS: 1.5})
+    assert ex.values[EPS] == 0.45 and ex.message and "centre of mass" in ex.message
+    assert all("COM" not in t for t in (ex.message, w.description, w.tooltip, *ex.readout_values))
