@@ -191,3 +191,19 @@ def test_every_pole_is_shown_and_labelled_in_or_out_of_view():
         x0, y0, x1, y1 = shown[text]
         assert -0.5 <= x0 and x1 <= w - ml - mr + 0.5 and -0.5 <= y0 and y1 <= h - mt - mb + 0.5, text
     _legible(ex)
+
+
+def test_hover_texts_count_bodies_and_pins_in_good_english():
+    """One pin is "a pin", one body is "body k, of 1 kg"; several are counted, "1 kg each"."""
+    def descs(ex):
+        return {e["id"]: e["desc"] for e in ex.picture()["elements"]}
+
+    ex = SplittingExplorer(display="agg", **{"bodies n": 2, "split at joint": 2})
+    d = descs(ex)
+    assert d["pins"] == "the joint between the two bodies: a pin L = 1 m from the ground"
+    assert d["lower"].endswith("body 1, of 1 kg") and d["upper"].endswith("body 2, of 1 kg")
+    ex.set(**{"bodies n": 5, "split at joint": 3})
+    d = descs(ex)
+    assert d["pins"] == "the joints between the bodies: 4 pins, L = 1 m apart"
+    assert d["lower"].endswith("bodies 1…2, of 1 kg each") and d["upper"].endswith("bodies 3…5, of 1 kg each")
+    assert not any(" 1 pins" in t or "1 kg each" in t and "bodies" not in t for t in d.values())

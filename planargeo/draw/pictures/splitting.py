@@ -39,7 +39,14 @@ FADED = 0.2
 
 
 def _bodies(a: int, b: int) -> str:
-    return f"body {a}" if a == b else f"bodies {a}…{b}"
+    """Bodies ``a`` to ``b`` and their mass, in words (one body, or several of 1 kg each)."""
+    return f"body {a}, of 1 kg" if a == b else f"bodies {a}…{b}, of 1 kg each"
+
+
+def _pins(k: int) -> str:
+    """The ``k`` pins between the bodies, in words."""
+    return ("the joint between the two bodies: a pin L = 1 m from the ground" if k == 1 else
+            f"the joints between the bodies: {k} pins, L = 1 m apart")
 
 
 def _acc(a) -> str:
@@ -66,11 +73,11 @@ def splitting_picture(st: dict, *, view, focus: str = "all", centres: bool = Tru
     pic = Picture(view, size=size)
     thick = 7.0 * PX_PER_PT
     pic.path("lower", pts[:i + 1], role="body", color=LOWER, width=thick, symbol=f"1…{i}" if i > 1 else "1",
-             desc=f"the constrained chain below the split (7.4): {_bodies(1, i)}, 1 kg each", z=1,
+             desc=f"the constrained chain below the split (7.4): {_bodies(1, i)}", z=1,
              opacity=0.55 * low)
     pic.path("upper", pts[i:], role="body", color=UPPER, width=thick,
              symbol=f"{i + 1}…{n}" if n > i + 1 else str(n),
-             desc=f"the free-floating chain above the split (7.4): {_bodies(i + 1, n)}, 1 kg each", z=1,
+             desc=f"the free-floating chain above the split (7.4): {_bodies(i + 1, n)}", z=1,
              opacity=0.55 * up)
     pic.marks("ground", [pts[0]], role="ground", color=COLORS["ground"], shape="s", size=9.0, symbol="CJ₁",
               desc="joint 1, pinned to the ground: at (0, 0) m", z=3)
@@ -78,7 +85,7 @@ def splitting_picture(st: dict, *, view, focus: str = "all", centres: bool = Tru
               desc=f"the split joint i+1 = {i + 1} (7.4): at {pair(pts[i])} m", z=2)
     label_at(pic, pts[i], "split", gap=9.0)
     pic.marks("pins", pts[1:-1], role="body", color="#000000", size=5.0, symbol="joints",
-              desc=f"the joints between the bodies, L = 1 m apart: {n - 1} pins", z=4)
+              desc=_pins(n - 1), z=4)
     f = np.asarray(st["f_split"], float)
     fs = f"f{subscript(i + 1)}"
     labelled_line(pic, "f", f, fs, role="reaction", symbol=fs, anchor=pts[i], ahead=0.3,
