@@ -6,7 +6,7 @@ import pytest
 
 from planargeo import scenes
 from planargeo.algorithms.loops import constrained_dynamics_lagrange
-from picture_checks import drawn_arrow, elements, overlapping_labels, parts, px_per_unit, undescribed
+from picture_checks import drawn_arrow, elements, overlapping_labels, parts, px_per_unit, shown_labels, undescribed
 from planargeo.widgets.trees import TreeExplorer
 
 
@@ -163,3 +163,27 @@ def test_a_speed_change_runs_one_solve_and_no_direct_solution(ex):
     assert run(("speed", 0.7), ("loops", "closed (Fig 9.2)"), ("loops", "open (Fig 9.1)")) == {
         "direct": 0, "model": 0, "loop": 1, "stacked": 2}   # everything cached
     assert run(("mass", 2.0)) == {"direct": 0, "model": 1, "loop": 0, "stacked": 1}  # a new model
+
+
+@pytest.mark.parametrize("overlay, key", [("velocity poles", "v"), ("acceleration poles", "a")])
+def test_poles_drawn_together_share_one_label(overlay, key):
+    # the default state puts several velocity poles within a few pixels of the ground pivot: each
+    # pole is named exactly once on the picture, and no two labelled poles are closer than 20 px
+    ex = TreeExplorer(display="agg", **{overlay: True})
+    pic = ex.picture()
+    k = px_per_unit(pic)
+    marks, named = {}, []
+    for i in range(1, 10):
+        el = elements(pic)[f"{key}{i}".translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))]
+        mark = parts(el, "mark")
+        texts = [t["text"].split(" (")[0] for t in parts(el, "text") if t["text"] and not t.get("hidden")]
+        named += [n for t in texts for n in t.split(", ")]
+        if mark and texts:
+            marks[el["symbol"]] = np.array([mark[0]["x"], mark[0]["y"]]) * k
+    assert sorted(named) == sorted(f"{key}{i}".translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
+                                   for i in range(1, 10))
+    close = [(a, b) for a in marks for b in marks if a < b and np.hypot(*(marks[a] - marks[b])) < 20.0]
+    assert close == []
+    if key == "v":                                     # the default's pile at the pivot is named together
+        assert any(len(t.split(", ")) > 2 for _id, t in shown_labels(pic) if t.startswith("v"))
+    assert overlapping_labels(pic) + undescribed(pic) == []

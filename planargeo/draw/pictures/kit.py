@@ -24,7 +24,7 @@ from planargeo.draw.style import COLORS
 
 __all__ = ["force", "ground", "scale_bar", "label_at", "aim_label", "side_label", "clearest", "clearest_sides",
            "pin_heads", "seg_distance",
-           "foot_on_line", "nice_length", "where", "rate", "pole_overlays"]
+           "foot_on_line", "nice_length", "where", "rate", "pole_overlays", "pole_groups", "POLES_APART_PX"]
 
 
 def foot_on_line(w, p) -> np.ndarray:
@@ -368,8 +368,45 @@ def nice_length(span: float) -> float:
     return max((m * mag for m in (1.0, 2.0, 5.0) if m * mag <= raw * 1.5), default=mag)
 
 
+#: poles closer than this on the picture (px) share one label naming them all (their glyphs pile up)
+POLES_APART_PX = 20.0
+
+
+def pole_groups(pic: Picture, pts) -> list[list[int]]:
+    """The poles ``pts`` (rows ``[vx, vy, w]``) drawn within :data:`POLES_APART_PX` of one another, chained:
+    groups of indices, in order; a pole at infinity or out of view is a group of its own.
+
+    Examples
+    --------
+    >>> pic = Picture((-2, 2, -2, 2), size=(200, 200), ticks=False)       # 50 px a metre
+    >>> pole_groups(pic, [[0, 0, 1], [0.0, 0.2, 1], [0, 0, 0], [0.0, 0.4, 1.0], [0, 0, 2]])
+    [[0, 1, 3, 4], [2]]
+    """
+    pts = np.asarray(pts, float).reshape(-1, 3)
+    x0, x1, y0, y1 = pic.box
+    at = {}
+    for i, (p0, p1, p2) in enumerate(pts):
+        if p2 != 0.0:
+            x, y = -p1 / p2, p0 / p2                     # point_xy of a finite pole
+            if math.isfinite(x) and math.isfinite(y) and x0 <= x <= x1 and y0 <= y <= y1:
+                at[i] = (x * pic.kx, y * pic.ky)
+    group = list(range(len(pts)))                        # each pole's group: the least index joined to it
+    for i in at:
+        for j in at:
+            if j < i and math.hypot(at[i][0] - at[j][0], at[i][1] - at[j][1]) < POLES_APART_PX:
+                gi, gj = group[i], group[j]
+                group = [min(gi, gj) if g in (gi, gj) else g for g in group]
+    out: dict[int, list[int]] = {}
+    for i, g in enumerate(group):
+        out.setdefault(g, []).append(i)
+    return list(out.values())
+
+
 def pole_overlays(pic: Picture, v, a, overlays: dict, bodies, scales=(3.0, 0.3)) -> None:
     """The velocity poles (4.5) and acceleration poles (4.6) of the bodies, as ``overlays`` asks.
+
+    Poles drawn closer than :data:`POLES_APART_PX` share one label naming them all (``v₁, v₅, v₆``),
+    at the first of them; each keeps its glyph and description.
 
     Parameters
     ----------
@@ -382,16 +419,31 @@ def pole_overlays(pic: Picture, v, a, overlays: dict, bodies, scales=(3.0, 0.3))
         Each body's name in the descriptions (``"body 1"``, ``"of the crank"``).
     scales : (float, float)
         Glyph scales of the velocity and the acceleration poles.
+
+    Examples
+    --------
+    >>> pic = Picture((-2, 2, -2, 2), size=(200, 200), ticks=False)
+    >>> pole_overlays(pic, [[0, 0, 1], [0.0, 0.1, 2]], None, {"velocity poles": True}, ["body 1", "body 2"])
+    >>> [[q["text"] for q in e["parts"] if q["p"] == "text"] for e in pic.elements]
+    [['v₁, v₂'], []]
     """
     for key, pts, flag, role, gs, meaning, eq, unit in (
             ("v", v, "velocity poles", "twist", scales[0], "velocity pole", "4.5", "rad/s"),
             ("a", a, "acceleration poles", "accel", scales[1], "acceleration pole", "4.6", "rad/s²")):
         if overlays.get(flag):
             pts = np.asarray(pts, float)
+            label, said = {}, {}                   # a shared label, and what each description adds
+            for g in pole_groups(pic, pts[:len(bodies)]):
+                if len(g) > 1:
+                    names = ", ".join(f"{key}{subscript(i + 1)}" for i in g)
+                    first = f"{key}{subscript(g[0] + 1)}"
+                    label.update({i: "" for i in g})
+                    label[g[0]] = names
+                    said.update({i: f"; drawn close together, {names}, named in one label at {first}" for i in g})
             for i, body in enumerate(bodies):
                 sym = f"{key}{subscript(i + 1)}"
-                pic.point(sym, pts[i], role=role, symbol=sym, glyph_scale=gs,
-                          desc=f"{meaning} ({eq}): {body}, {rate(pts[i], unit)}, {where(pts[i])}")
+                pic.point(sym, pts[i], role=role, symbol=sym, glyph_scale=gs, label=label.get(i),
+                          desc=f"{meaning} ({eq}): {body}, {rate(pts[i], unit)}, {where(pts[i])}{said.get(i, '')}")
 
 
 def scale_bar(pic: Picture, unit: str = "m") -> float:
