@@ -308,3 +308,25 @@ def test_controls_a_kind_does_not_use_are_disabled_with_a_reason(ex):
     before = dict(ex.readout_values)
     ex.set(x1=1.0, y1=-1.0, angle1=45.0)          # indeed they change nothing
     assert ex.readout_values == before
+
+
+@pytest.mark.parametrize("state", [dict(kind1="translation"), dict(kind2="translation"),
+                                   dict(kind1="translation", angle1=90.0, y2=-1.0),
+                                   dict(kind2="translation", x1=0.5, size1=2.0, size2=3.0, angle2=0.0)])
+def test_a_translation_term_leaves_the_sums_label_off_the_other_pole(ex, state):
+    # with one term a translation, the other term's pole and the sum's lie on one line (4.11): the
+    # label "v₃ = v₁ + v₂" must not be drawn over that pole's glyph (the review saw it on v₂)
+    from picture_checks import label_boxes
+
+    ex.set(**state)
+    pic = ex.picture()
+    x0, x1, y0, y1 = pic["box"]
+    (w, h), (ml, mr, mt, mb) = pic["size"], pic["margin"]
+    k = np.array([(w - ml - mr) / (x1 - x0), (h - mt - mb) / (y1 - y0)])
+    term = next(i for i in ("v1", "v2") if any(p["p"] == "mark" for p in elements(pic)[i]["parts"]))
+    (glyph,) = [p for p in elements(pic)[term]["parts"] if p["p"] == "glyph"]
+    centre = (np.array([glyph["x"], glyph["y"]]) - [x0, y0]) * k
+    (box,) = [b for t, b in label_boxes(pic) if t == "v₃ = v₁ + v₂"]
+    nearest = np.clip(centre, box[:2], box[2:])
+    assert np.hypot(*(centre - nearest)) > glyph["r"], (term, box, centre)
+    assert problems(pic) == []

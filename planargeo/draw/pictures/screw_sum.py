@@ -75,6 +75,8 @@ def _twists(pic: Picture, c) -> None:
             if part["p"] == "text":
                 part["text"] = "Q₁Q₂: the line at ∞"
     u1, u2, u3 = _label_sides(pic, q1, q2, apart=c.line is not None)
+    if c.P is not None:
+        u1, u2, u3 = _beside_the_line(pic, (c.v1.array, c.v2.array, c.sum.array), (u1, u2, u3))
     for k, t, u in ((1, c.v1.array, u1), (2, c.v2.array, u2)):
         pic.point(f"v{k}", t, role="twist", symbol=f"v{subscript(k)}",
                   desc=f"twist v{subscript(k)} (4.10): {_twist_words(t, k)}")
@@ -87,6 +89,25 @@ def _twists(pic: Picture, c) -> None:
                   desc=f"sum v₃ = v₁ + v₂ (4.11–4.13): {_twist_words(s, 3)}")
         if not bool(is_ideal(s)):
             label_toward(pic.elements[-1], u3, _glyph_gap(s[2]) + 3.0)
+
+
+def _beside_the_line(pic: Picture, twists, sides):
+    """Label directions (px) of ``v₁, v₂, v₃`` when one term is a translation: the other term's pole and
+    the sum's lie on one line through it (4.11), so their labels go to either side of that line, not
+    along it (one label would fall on the other pole)."""
+    finite = [k for k in (0, 1) if not bool(is_ideal(twists[k]))]
+    s = twists[2]
+    if len(finite) != 1 or bool(is_ideal(s)):
+        return sides
+    t = twists[finite[0]]
+    d = np.array([(-s[1] / s[2] + t[1] / t[2]) * pic.kx, (s[0] / s[2] - t[0] / t[2]) * pic.ky])
+    if not math.hypot(*d) > 1e-9:
+        return sides
+    n = np.array([-d[1], d[0]]) / math.hypot(*d)
+    n = n if (n[1], n[0]) >= (0.0, 0.0) else -n             # the term's label above (or right of) the line
+    out = list(sides)
+    out[finite[0]], out[2] = tuple(n), tuple(-n)
+    return tuple(out)
 
 
 def _lower(pic: Picture, rows: int) -> None:
