@@ -98,7 +98,7 @@ def test_every_readout_row_and_label_is_explained():
     for k in ex.readout_values:
         assert k in meaning, k
         assert "(" not in k                                  # units are the readout's, not in the names
-    for lab in ("G", "a", "v = sω (ICR)", "R₁μ₁", "R₂μ₂", "f_A", "p", "T", "I"):
+    for lab in ("G", "a", "v = sω (ICR)", "R₁μ₁", "R₂μ₂", "f (drive)", "p", "T", "I"):
         assert lab in meaning
 
 

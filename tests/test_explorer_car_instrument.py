@@ -35,7 +35,7 @@ def legibility_problems(ex) -> list:
 
 def test_every_element_labelled_and_legible(ex):
     texts = [t for _id, t in shown_labels(ex.picture())]
-    for sym in ("G", "a", "v = sω (ICR)", "R₁μ₁", "R₂μ₂", "f_A", "p", "T", "I"):
+    for sym in ("G", "a", "v = sω (ICR)", "R₁μ₁", "R₂μ₂", "f (drive)", "p", "T", "I"):
         assert sym in texts, sym
     assert legibility_problems(ex) == []
     assert ex.units["rear tyre force μ₁"] == "N" and ex.readout_strings["rear tyre force μ₁"].endswith(" N")

@@ -181,7 +181,7 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
             "g (m/s²)": Step(0.0, 9.81, 0.01, 9.81, "g (m/s²) for Play"),
             "damping c": Step(0.0, 3.0, 0.01, 0.3, "damping c (N·m·s/rad)"),
             "time (s)": Step(0.0, T_MAX, 0.01, 0.0, "time (s)"),
-            "rigid inertias": W.Checkbox(value=True, description="rigid inertias I_i"),
+            "rigid inertias": W.Checkbox(value=True, description="rigid inertias Iᵢ"),
             "percussion axes": W.Checkbox(value=True, description="percussion axes"),
         }
 

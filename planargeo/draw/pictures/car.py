@@ -222,7 +222,7 @@ def car_picture(res, *, heading: float, view, slides: bool = False, limit: float
               label_xy=R @ [d + HALF_TRACK + 0.9, (0.0, L)[k]] + tr)   # beside the car, off the body
     fA = np.asarray(q["f_A"], float)
     if np.any(fA[:2]):
-        force(pic, "f_A", W @ fA, scale=FORCE_SCALE, anchor=front, role="wrench", symbol="f_A", start=True,
+        force(pic, "f_A", W @ fA, scale=FORCE_SCALE, anchor=front, role="wrench", symbol="f (drive)", start=True,
               desc=f"drive force (6.120): at the front tyre, along its rolling direction, {num(F_A, 4)} N", z=4)
     pb = np.asarray(q["p"], float)
     if np.any(pb[:2]):
