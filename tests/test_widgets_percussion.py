@@ -4,6 +4,7 @@ What is drawn is read off the explorer's picture (``ex.picture()``): the axis of
 percussion is its clipped segment, the pole and the centre of percussion their markers.
 """
 import math
+import re
 
 import numpy as np
 import pytest
@@ -228,3 +229,19 @@ def test_kept_inertia_follows_mass_and_shape_while_the_pole_is_dragged(ex):
             assert r["force for α: m d α (5.66)"] == pytest.approx(m * d * 10.0, rel=1e-9)
         fresh = PercussionExplorer(display="agg", **ex.values)
         assert fresh.readout_strings == ex.readout_strings
+
+
+@pytest.mark.parametrize("s", [0.9, 0.52])
+def test_greyed_pole_sliders_show_no_number_and_say_where_the_impact_put_the_pole(ex, s):
+    # struck across the rod at x = s, the pole is on the axis at c − ρ²/(s − c) (5.68): the greyed
+    # pole sliders must not read 0.00 against it; their tooltip says where it is
+    ex.set(drive="impact", **{"impact at": s})
+    x = 0.5 - RHO2 / (s - 0.5)
+    for name in ("pole x", "pole y"):
+        w = ex.controls[name]
+        assert w.disabled and not w.readout, name
+        got = [float(v) for v in re.findall(r"\((-?[\d.]+), (-?[\d.]+)\) m", w.tooltip)[0]]
+        assert got == pytest.approx([x, 0.0], rel=1e-3, abs=1e-9) and "not used" in w.tooltip
+    assert ex.readout_values["pole"] == pytest.approx((x, 0.0), rel=1e-9, abs=1e-12)
+    ex.set(drive="acceleration pole")                  # in use again: its number is back
+    assert all(ex.controls[n].readout and not ex.controls[n].disabled for n in ("pole x", "pole y"))

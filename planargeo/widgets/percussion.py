@@ -19,6 +19,7 @@ from planargeo.draw.pictures.percussion import percussion_numbers, percussion_pi
 from planargeo.errors import DegenerateGeometryError, InputError, InvalidPolygonError
 from planargeo.screws.inertia import Inertia, percussion_axis, percussion_pole
 from planargeo.geometry.projective import from_xy, is_ideal
+from planargeo.draw.pictures._words import num
 from planargeo.widgets.readout import point_value
 from planargeo.widgets._explorer import Described, tipped, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step, cached
@@ -73,6 +74,18 @@ def parse_polygon(text: str) -> Polygon:
     return poly
 
 
+def pole_words(a) -> str:
+    """Where the pole ``a`` (``[a, b, w]``, thesis 5.49) is, in words.
+
+    Examples
+    --------
+    >>> pole_words([0.0, 18.2, 1.0]), pole_words([1.0, 0.0, 0.0])
+    ('at (-18.2, 0) m', 'at infinity (direction (0, 1))')
+    """
+    p = point_value(a)
+    return p if isinstance(p, str) else f"at ({num(p[0])}, {num(p[1])}) m"
+
+
 class PercussionExplorer(Described, Explorer):
     """Acceleration pole and axis of percussion of a body at rest (thesis 5.4).
 
@@ -104,10 +117,21 @@ class PercussionExplorer(Described, Explorer):
                                        "angular acceleration α of the body (rad/s²)"),
         }
 
+    def __init__(self, **kw):
+        super().__init__(**kw)
+        # a greyed pole slider shows no number: the impact's pole is elsewhere (its tooltip says where)
+        for name in ("pole x", "pole y"):
+            w = self.controls[name]
+            w.readout = not w.disabled
+            w.observe(lambda ch, w=w: setattr(w, "readout", not ch["new"]), names="disabled")
+
     def disabled(self, values):
         out = {}
         if values["drive"] == "impact":
-            reason = "the impact sets the pole here (a = I⁻¹f): choose drive = acceleration pole to move it"
+            a = None if self.state is None else self.state["a"]
+            at = "" if a is None else f", now {pole_words(a)}"
+            reason = (f"not used: the impact sets the pole (a = I⁻¹f){at}; choose drive = acceleration pole "
+                      "to move it")
             out["pole x"] = out["pole y"] = reason
         else:
             out["impact at"] = "only the impact drive strikes the body: choose drive = impact"
