@@ -121,3 +121,19 @@ def test_the_page_shows_play_time_to_the_millisecond_the_state_keeps_the_exact_t
         fresh = cls(display="agg", **ex.values)                       # the same state from the same values
         assert fresh.message == "" and fresh.readout_values == ex.readout_values
         np.testing.assert_array_equal(fresh.state["q"], ex.state["q"])
+
+
+@pytest.mark.parametrize("seconds", [None, 0.033])
+def test_play_ahead_between_frames_leaves_every_frame_bit_identical(seconds):
+    # Play's work between frames (the checkpoints the next frames start from) changes no state: the
+    # state at a time depends on the time alone, whoever integrated the checkpoints before it
+    plain, ahead = TreeExplorer(display="agg"), TreeExplorer(display="agg")
+    for _ in range(6):
+        while ahead.play_ahead(ahead.shown_values, 1.0):
+            pass
+        assert ahead.play_ahead(ahead.shown_values, 1.0) is False          # nothing left to do
+        for ex in (plain, ahead):
+            ex.advance(1, seconds=seconds)             # a frame of Play's step, or of a page's tick
+        assert ahead.values == plain.values and ahead.readout_values == plain.readout_values
+        np.testing.assert_array_equal(ahead.state["q"], plain.state["q"])
+        np.testing.assert_array_equal(ahead.state["qd"], plain.state["qd"])

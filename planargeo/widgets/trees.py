@@ -164,10 +164,9 @@ class TreeExplorer(Described, SceneTime, Explorer):
         return np.vstack([self.state["sol"].data.pose[:, :2], self.state["tips"]])
 
     # ------------------------------------------------------------------- Play (SceneTime: t from 0 to T_END)
-    def _run_state(self, model, run: dict, t: float):
-        """``(q, qd, drift, events)`` at scene time ``t`` of ``run`` (UPDATE_EVALS at most)."""
-        budget = Budget(UPDATE_EVALS)
-
+    @staticmethod
+    def _stepper(model, budget):
+        """The step of a run: ``(state, h, t0) -> (state, residual, events)`` (:func:`run_to`)."""
         def step(state, h, t0):
             try:
                 out = tree_advance(model, *state, h, rtol=PLAY_RTOL, atol=PLAY_RTOL * 1e-2)
@@ -177,13 +176,69 @@ class TreeExplorer(Described, SceneTime, Explorer):
             return (out["q"], out["qd"]), out["position_residual"], [(t0 + float(e["t"]), e["kind"])
                                                                      for e in out["events"]]
 
-        (q, qd), drift, events = run_to(run, t, CHECKPOINT, step, budget)
+        return step
+
+    def _run_state(self, model, run: dict, t: float):
+        """``(q, qd, drift, events)`` at scene time ``t`` of ``run`` (UPDATE_EVALS at most)."""
+        budget = Budget(UPDATE_EVALS)
+        (q, qd), drift, events = run_to(run, t, CHECKPOINT, self._stepper(model, budget), budget)
         return q, qd, drift, events
+
+    def _run_key(self, values):
+        """``(closed, model, key)``: the run of ``values`` is ``_runs[key]``."""
+        closed = values["loops"].startswith("closed")
+        model = self.model_for(closed, float(values["mass"]), float(values["gravity"]))
+        a1, a2 = float(values["body 1 angle (deg)"]), float(values["body 2 angle (deg)"])
+        return closed, model, (closed, float(values["mass"]), float(values["gravity"]), float(values["speed"]), a1, a2)
+
+    def play_ahead(self, values, seconds: float) -> bool:
+        """Play's work between frames: the checkpoints the next frames start from (the same states).
+
+        A frame at ``t`` integrates from the last checkpoint before ``t``; the checkpoints up to two
+        frames on are integrated here, while the page draws, one at a time for about ``seconds``.
+
+        Parameters
+        ----------
+        values : dict
+            The controls' values shown.
+        seconds : float
+            About how much wall time to spend now.
+
+        Returns
+        -------
+        bool
+            True while work is left.
+
+        Examples
+        --------
+        >>> ex = TreeExplorer(display="agg")
+        >>> ex.play_ahead(ex.values, 1.0), ex.play_ahead(ex.values, 1.0)     # three checkpoints, then none
+        (False, False)
+        """
+        import time
+
+        _closed, model, key = self._run_key(values)
+        run = self._cache("_runs").get(key)
+        if run is None:
+            return False
+        t = time_value(values["t (s)"], T_END)
+        last = min(int(math.floor((t + 2.0 * self.play_dt) / CHECKPOINT + 1e-9)) + 1,
+                   int(math.floor(T_END / CHECKPOINT + 1e-9)))
+        end = time.perf_counter() + float(seconds)
+        budget = Budget(UPDATE_EVALS)
+        try:
+            while len(run["ck"]) <= last:
+                n = len(run["ck"])
+                run_to(run, n * CHECKPOINT, CHECKPOINT, self._stepper(model, budget), budget)
+                if time.perf_counter() >= end:
+                    break
+        except PlanargeoError:           # the frame that reaches it says why
+            return False
+        return len(run["ck"]) <= last
 
     def compute(self, values, changed):
         # one solve (9.5 or 9.39-9.43); the pose at t = 0 depends on the two angles alone
-        closed = values["loops"].startswith("closed")
-        model = self.model_for(closed, float(values["mass"]), float(values["gravity"]))
+        closed, model, key = self._run_key(values)
         _c, L, dof = self.geometry(closed)
         a1, a2, speed = float(values["body 1 angle (deg)"]), float(values["body 2 angle (deg)"]), float(values["speed"])
         pose_key = (closed, a1, a2)
@@ -191,7 +246,6 @@ class TreeExplorer(Described, SceneTime, Explorer):
         pose = poses.get(pose_key)
         if pose is None:
             pose = tree_pose(model, math.radians(a1), 1.0, angle2=math.radians(a2))
-        key = (closed, float(values["mass"]), float(values["gravity"]), speed, a1, a2)
         run = runs.get(key)
         if run is None:
             run = {"ck": [(pose[0], speed * pose[1])], "drift": [0.0], "events": []}
