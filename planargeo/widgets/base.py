@@ -515,7 +515,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         Returns
         -------
         str
-            The reason, cut to at most 90 characters.
+            The reason, whole (the picture wraps it onto lines).
         """
         return short_text(self._reason(exc))
 

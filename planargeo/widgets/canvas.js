@@ -145,7 +145,7 @@ function render({ model, el }) {
       return;
     }
     if (m.type === "halt") {        // Play refused in a frame the kernel sent alone
-      status.textContent = m.message || "";
+      status.title = status.textContent = m.message || "";
       tickHalted = true;
       return;
     }
@@ -164,7 +164,7 @@ function render({ model, el }) {
     if (m.update) applyFrame(m.update);
     if (done) { done.tAck = tAck; done.tApplied = performance.now(); done.kernelMs = m.ms; }
     requestAnimationFrame(() => { if (done) done.tPaint = performance.now(); });
-    status.textContent = m.ok === false && m.message ? m.message : "";
+    status.title = status.textContent = m.ok === false && m.message ? m.message : "";
     if (done && done.type === "sync") syncAsked = false;
     if (done && done.type === "tick" && m.ok === false) tickHalted = true;
     if (done && done.type === "view" && !m.update?.head && !pending.has("view")) clearLocalView();
@@ -282,6 +282,7 @@ function render({ model, el }) {
     kx = pw / (box[1] - box[0]);
     ky = ph / (box[3] - box[2]);
     svg.setAttribute("width", W);
+    bar.style.width = `${W}px`;     // the status line is cut at the figure's width (whole: its title)
     svg.setAttribute("height", H);
     svg.setAttribute("viewBox", `0 0 ${W} ${H}`);
     const defs = mk("defs", {}, svg);

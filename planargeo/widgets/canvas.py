@@ -164,7 +164,8 @@ _CSS = """
 .pg-canvas svg { display: block; touch-action: none; outline: none; }
 .pg-bar { display: flex; gap: 8px; align-items: center; height: 24px; font-size: 12px; }
 .pg-bar button { font-size: 12px; padding: 1px 8px; }
-.pg-status { color: #b00020; white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }
+.pg-status { color: #b00020; white-space: nowrap; overflow: hidden; text-overflow: ellipsis;
+             min-width: 0; flex: 1 1 auto; }
 .pg-bg { fill: white; }
 .pg-frame { fill: none; stroke: #444; stroke-width: 1; pointer-events: none; }
 .pg-axes line { stroke: #444; stroke-width: 1; }

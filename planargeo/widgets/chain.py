@@ -392,10 +392,8 @@ class ChainExplorer(Described, Explorer):
         return st["split"]
 
     def figure_message(self, exc: Exception) -> str:
-        # wrapped inside the axes; a time too far in its short form (not cut before "ask again")
-        import textwrap
-
-        return textwrap.fill(refusal_on_picture(str(exc)) or super().figure_message(exc), 40)
+        # a time too far in its short form (the picture wraps it within the figure)
+        return refusal_on_picture(str(exc)) or super().figure_message(exc)
 
     # -- focus, handles, play ------------------------------------------------------
     def focus_options(self) -> list[str]:

@@ -333,7 +333,12 @@ def numeric_failure(exc: Exception) -> bool:
 
 
 def short_text(text: str) -> str:
-    return text if len(text) < 90 else text[:87] + "..."
+    """``text`` on one line, whole (the picture wraps it onto lines of its width).
+
+    >>> short_text("rod too short:\\n  l = 1")
+    'rod too short: l = 1'
+    """
+    return " ".join(str(text).split())
 
 
 def shown_as(name: str, value) -> str:

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import contextlib
 import html
+import textwrap
 from typing import Any
 
 import ipywidgets as W
@@ -20,6 +21,8 @@ __all__ = ["FrontMixin"]
 
 #: width of a character of a label, in font sizes (the estimate the picture's label placer makes)
 _CHAR_EM = 0.6
+#: height of a line of text, in pixels
+_LINE_PX = 1.25 * FONT_PX
 #: longest line of the key, in characters (a longer meaning ends at a word, with "…")
 _KEY_CHARS = 48
 
@@ -42,9 +45,8 @@ class FrontMixin:
         fig_w = f"{self.figure_px[0]}px"
         self.readout = W.HTML(layout=W.Layout(width=fig_w, max_width="100%", overflow="hidden"))
         self.readout_strings: dict[str, str] = {}
-        self.message_box = W.HTML(layout=W.Layout(width=fig_w, max_width="100%", height="2.8em",
-                                                  min_height="2.8em", max_height="2.8em",
-                                                  overflow="auto"))
+        # two lines reserved (a refusal of two lines moves nothing); a longer one grows the line
+        self.message_box = W.HTML(layout=W.Layout(width=fig_w, max_width="100%", min_height="2.8em"))
 
         def button(description, icon, tooltip, click):
             b = W.Button(description=description, icon=icon, tooltip=tooltip, layout=W.Layout(width="auto"))
@@ -153,12 +155,16 @@ class FrontMixin:
         if self._figure_text:   # a refused value, said on the picture, on a white panel
             (x0, x1, y0, y1) = pic.box
             cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-            w = (_CHAR_EM * FONT_PX * len(self._figure_text) / 2 + 8.0) / pic.kx
-            h = (0.625 * FONT_PX + 5.0) / pic.ky
-            pic.text("figure message", (cx, cy), self._figure_text, role="text", color="#b00020",
+            lines = textwrap.wrap(self._figure_text, max(20, int(
+                ((x1 - x0) * pic.kx - 40.0) / (_CHAR_EM * FONT_PX))))       # within the figure
+            w = (_CHAR_EM * FONT_PX * max(map(len, lines)) / 2 + 8.0) / pic.kx
+            h = (_LINE_PX * len(lines) / 2 + 5.0) / pic.ky
+            pic.text("figure message", (cx, cy), lines[0], role="text", color="#b00020",
                      ha="center", va="center", z=100, desc=f"message: {self._figure_text}",
-                     obstacle=False)
+                     obstacle=False, dy=_LINE_PX * (len(lines) - 1) / 2)
             el = pic.elements[-1]                # the panel: a part of the message, drawn first
+            el["parts"] += [{**el["parts"][0], "text": line, "dy": el["parts"][0]["dy"] - _LINE_PX * k}
+                            for k, line in enumerate(lines[1:], 1)]
             el["parts"].insert(0, {"p": "path", "closed": True, "xy": np.array(
                 [[cx - w, cy - h], [cx + w, cy - h], [cx + w, cy + h], [cx - w, cy + h]])})
             el.update(fill="white", alpha=0.9, width=0.8)
@@ -206,7 +212,7 @@ class FrontMixin:
     def _set_message(self, text: str) -> None:
         self._message = text
         if text:
-            self.message_box.value = (f"<div style='color:#b00020;font-weight:bold'>"
+            self.message_box.value = (f"<div style='color:#b00020;font-weight:bold;line-height:1.3'>"
                                       f"⚠ {html.escape(text)}</div>")
         else:
             self.message_box.value = ""

@@ -1,0 +1,40 @@
+"""A refusal is said whole: on the picture, wrapped onto lines inside the figure, and in the
+message line, which reserves two lines and grows for a longer one (review H4: both were cut)."""
+from __future__ import annotations
+
+from planargeo.draw.picture import FONT_PX
+from planargeo.widgets import ChainExplorer
+from planargeo.widgets.slider_crank import SliderCrankExplorer
+
+CHAR_PX = 0.6 * FONT_PX        # the widest a character of the label font is estimated at
+
+
+def _message_lines(pic):
+    (el,) = [e for e in pic["elements"] if e["id"] == "figure message"]
+    return [p for p in el["parts"] if p["p"] == "text"]
+
+
+def test_a_long_refusal_is_written_whole_inside_the_figure():
+    ex = ChainExplorer(display="agg")
+    typed = "fast, then faster, and then as fast as the chain can go without flying apart"
+    ex.set(**{"joint speeds": typed})                   # refused, the typed text said back
+    assert ex.message.startswith("joint speeds must be numbers") and typed in ex.figure_text
+    pic = ex.picture()
+    lines = _message_lines(pic)
+    assert len(lines) >= 2
+    # every word of the refusal, in order, none cut ("…" or "...")
+    assert " ".join(p["text"] for p in lines).split() == ex.figure_text.split()
+    assert not any(p["text"].endswith(("…", "...")) for p in lines)
+    plot_px = pic["size"][0] - pic["margin"][0] - pic["margin"][1]
+    for p in lines:                       # centred lines, each narrower than the plot
+        assert p["ha"] == "center" and len(p["text"]) * CHAR_PX < plot_px
+    dys = [p["dy"] for p in lines]        # one below the other, a line height apart
+    assert all(a - b >= FONT_PX for a, b in zip(dys, dys[1:]))
+
+
+def test_the_message_line_reserves_two_lines_and_is_never_cut():
+    ex = SliderCrankExplorer(display="agg")
+    box = ex.message_box.layout
+    assert box.min_height == "2.8em"                    # nothing moves for a message of two lines
+    assert box.height in (None, "", "auto") and box.max_height in (None, "")   # a longer one: grows
+    assert box.overflow in (None, "", "visible")
