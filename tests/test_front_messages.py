@@ -38,3 +38,42 @@ def test_the_message_line_reserves_two_lines_and_is_never_cut():
     assert box.min_height == "2.8em"                    # nothing moves for a message of two lines
     assert box.height in (None, "", "auto") and box.max_height in (None, "")   # a longer one: grows
     assert box.overflow in (None, "", "visible")
+
+
+def _key(pic):
+    return {e["id"]: e for e in pic["elements"] if e["id"].startswith("key ")}
+
+
+def test_the_key_says_each_meaning_whole_within_half_the_figure():
+    ex = ChainExplorer(display="agg", key=True)
+    pic = ex.picture()
+    plot_px = pic["size"][0] - pic["margin"][0] - pic["margin"][1]
+    entries = [e for k, e in _key(pic).items() if k != "key panel"]
+    said = [" ".join(p["text"] for p in e["parts"] if p["p"] == "text").split() for e in entries]
+    # the meaning of the joint forces, whole (it was cut to "…passes on to the body…")
+    assert "f₁…f₄: force the joint passes on to the body outboard".split() in said
+    for e in entries:
+        assert e["desc"].startswith("key: ")
+        texts = [p["text"] for p in e["parts"] if p["p"] == "text"]
+        assert " ".join(texts).split() == e["desc"][5:].split()           # the whole entry
+        assert all(len(t) <= max(40, plot_px / 2 / CHAR_PX) for t in texts)    # half the width
+
+
+def _inside(xy, box):
+    (u0, v0), (u1, v1) = xy.min(axis=0), xy.max(axis=0)
+    return (box[:, 0] > u0) & (box[:, 0] < u1) & (box[:, 1] > v0) & (box[:, 1] < v1)
+
+
+def test_the_key_covers_neither_the_chain_nor_its_forces_and_poles():
+    import numpy as np
+
+    ex = ChainExplorer(display="agg", key=True)
+    pic = ex.picture()
+    panel = np.asarray(_key(pic)["key panel"]["parts"][0]["xy"], float)
+    for el in pic["elements"]:
+        if el["id"] in ("links", "joints") or el["id"][0] in "fv":
+            for q in el["parts"]:
+                pts = np.asarray(q["xy"], float) if "xy" in q else np.array([[q["x"], q["y"]]])
+                t = np.linspace(0.0, 1.0, 200)[:, None]       # points all along each segment
+                dense = np.concatenate([pts[:1]] + [a + t * (b - a) for a, b in zip(pts[:-1], pts[1:])])
+                assert not _inside(panel, dense).any(), el["id"]

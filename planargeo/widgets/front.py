@@ -23,18 +23,30 @@ __all__ = ["FrontMixin"]
 _CHAR_EM = 0.6
 #: height of a line of text, in pixels
 _LINE_PX = 1.25 * FONT_PX
-#: longest line of the key, in characters (a longer meaning ends at a word, with "…")
-_KEY_CHARS = 48
 
 
-def _clip_words(text: str, n: int) -> str:
-    """``text`` cut to at most ``n`` characters at a word's end, with "…" when cut."""
-    if len(text) <= n:
-        return text
-    cut = text[:n - 1]
-    if " " in cut:
-        cut = cut[:cut.rindex(" ")]
-    return cut.rstrip(" ,;:") + "…"
+def _ink(pic) -> np.ndarray:
+    """Points (pixels from the plot's lower left) along what the picture draws, a few px apart."""
+    x0, _x1, y0, _y1 = pic.box
+    pts = []
+    for el in pic.elements:
+        for q in el["parts"]:
+            if "xy" in q:
+                xy = np.asarray(q["xy"], float).reshape(-1, 2)
+                for a, b in zip(xy[:-1], xy[1:]):
+                    n = int(min(400, np.hypot(*((b - a) * (pic.kx, pic.ky))) / 4.0)) + 2
+                    pts.append(a + np.linspace(0.0, 1.0, n)[:, None] * (b - a))
+            elif q["p"] == "ellipse":
+                t = np.linspace(0.0, 2 * np.pi, 48)
+                a, b, c, d = q["m"]
+                pts.append(np.column_stack([q["x"] + a * np.cos(t) + b * np.sin(t),
+                                            q["y"] + c * np.cos(t) + d * np.sin(t)]))
+            elif "x" in q:
+                pts.append(np.full((4, 2), (q["x"], q["y"]), float))   # a mark, arrow or label
+    if not pts:
+        return np.zeros((0, 2))
+    xy = np.concatenate(pts)
+    return np.column_stack([(xy[:, 0] - x0) * pic.kx, (xy[:, 1] - y0) * pic.ky])
 
 
 class FrontMixin:
@@ -186,23 +198,37 @@ class FrontMixin:
                 for (meaning, color), syms in groups.items()]
 
     def _add_key(self, pic) -> None:
-        """The key: one line per symbol of the picture, in its colour, at the upper left."""
-        x0, _x1, _y0, y1 = pic.box
+        """The key: one entry per meaning drawn, in its colour, wrapped at half the figure's
+        width (40 characters at least), on a white panel in the corner where least is drawn."""
+        x0, x1, y0, y1 = pic.box
         entries = self._key_entries(pic)[:12]
         if not entries:
             return
-        lines = [_clip_words(f"{sym}: {meaning}", _KEY_CHARS) if meaning else sym
-                 for sym, meaning, _c in entries]
-        wide = _CHAR_EM * FONT_PX * max(map(len, lines)) + 8.0
-        left, right = x0 + 2.0 / pic.kx, x0 + (6.0 + wide) / pic.kx       # a white panel under it
-        low, top = y1 - (8.0 + 14.0 * len(lines)) / pic.ky, y1 - 1.0 / pic.ky
-        pic.path("key panel", [[left, low], [right, low], [right, top], [left, top]], role="text",
+        pw, ph = (x1 - x0) * pic.kx, (y1 - y0) * pic.ky
+        chars = max(40, int(0.5 * pw / (_CHAR_EM * FONT_PX)))
+        texts = [f"{sym}: {meaning}" if meaning else sym for sym, meaning, _c in entries]
+        lines = [textwrap.wrap(t, chars, subsequent_indent="  ") or [t] for t in texts]
+        wide = _CHAR_EM * FONT_PX * max(len(li) for ls in lines for li in ls) + 8.0
+        tall = 8.0 + 14.0 * sum(map(len, lines))
+        ink = _ink(pic)
+        left, top = min(((2.0, ph - 1.0), (pw - 2.0 - wide, ph - 1.0), (2.0, tall + 1.0),
+                         (pw - 2.0 - wide, tall + 1.0)),      # upper left first when ties
+                        key=lambda c: int(np.count_nonzero(
+                            (ink[:, 0] > c[0]) & (ink[:, 0] < c[0] + wide)
+                            & (ink[:, 1] < c[1]) & (ink[:, 1] > c[1] - tall))))
+        u0, u1 = x0 + left / pic.kx, x0 + (left + wide) / pic.kx
+        v0, v1 = y0 + (top - tall) / pic.ky, y0 + top / pic.ky
+        pic.path("key panel", [[u0, v0], [u1, v0], [u1, v1], [u0, v1]], role="text",
                  closed=True, fill="white", alpha=0.9, color="#888888", width=0.8, z=89,
                  desc="the key: each symbol drawn, in its colour, and its meaning")
-        for k, (sym, meaning, color) in enumerate(entries):
-            text = f"{sym}: {meaning}" if meaning else sym
-            pic.text(f"key {k + 1}", (x0, y1), lines[k], role="text", color=color, ha="left",
-                     va="top", dx=6.0, dy=-4.0 - 14.0 * k, z=90, desc=f"key: {text}")
+        row = 0
+        for k, ((_s, _m, color), text, ls) in enumerate(zip(entries, texts, lines)):
+            pic.text(f"key {k + 1}", (u0, v1), ls[0], role="text", color=color, ha="left",
+                     va="top", dx=4.0, dy=-4.0 - 14.0 * row, z=90, desc=f"key: {text}")
+            el = pic.elements[-1]            # an entry's further lines: parts of the same element
+            el["parts"] += [{**el["parts"][0], "text": li, "dy": -4.0 - 14.0 * (row + j)}
+                            for j, li in enumerate(ls[1:], 1)]
+            row += len(ls)
 
     def _page_view_to(self, box) -> None:
         """The user zoomed or panned in the page (None: back to the explorer's own view)."""
