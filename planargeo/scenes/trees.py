@@ -195,7 +195,7 @@ def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
 
     Without ``q_start``: the pose of Fig 9.2 turned as a whole to ``root_angle``, then body 2 turned
     the shorter way to ``angle2`` in steps of at most 10°, the loops closed after each step by
-    Gauss-Newton (as :func:`planargeo.simulate.loops.project_state`, positions only; 9.54).  With
+    Gauss-Newton (:func:`planargeo.simulate.loops.close_loops`, 9.54).  With
     ``q_start``: closed from there in one go.  Velocities: the scene's pattern less its part that
     breaks the loops, so ``root_angle = 90°`` gives the scene's state.
 
@@ -228,7 +228,7 @@ def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
     >>> bool(np.allclose(q, closed.state["q"])), bool(np.allclose(qd, closed.state["qd"]))
     (True, True)
     """
-    from planargeo.simulate.loops import closure_jacobian, closure_residual
+    from planargeo.simulate.loops import close_loops, closure_jacobian, closure_residual
 
     root_angle, speed = check_param("root_angle", root_angle), check_param("speed", speed)
     qd = speed * _QD_PATTERN
@@ -246,15 +246,9 @@ def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
         n = int(np.ceil(abs(turn) / np.radians(10.0)))
         path = [q[1] + turn * (k + 1) / n for k in range(n)] + [rel] if n else [rel]
     if model.contacts:
-        free = np.setdiff1d(np.arange(9), fixed)
         for a in path:
             q[1] = a
-            # positions only: project_state's Gauss-Newton (tol 1e-13, 50 steps), not its velocity pass
-            for _ in range(50):
-                phi = closure_residual(model, q)
-                if np.abs(phi).max() < 1e-13:
-                    break
-                q[free] -= np.linalg.lstsq(closure_jacobian(model, q)[:, free], phi, rcond=None)[0]
+            q = close_loops(model, q, fixed=fixed, tol=1e-13, max_iter=50)
         if not np.abs(closure_residual(model, q)).max() < 1e-9:
             where = f"body 1 at {np.degrees(root_angle):.4g}°" + (
                 "" if angle2 is None else f", body 2 at {np.degrees(angle2):.4g}°")
