@@ -80,11 +80,11 @@ def test_extreme_typed_values_are_refused_in_the_package_words(field, text, word
 
 def test_focus_options_follow_the_number_of_links():
     ex = ChainExplorer(display="agg")
-    expect = [f"link{i}" for i in range(1, 5)] + [f"joint{i}" for i in range(1, 5)]
+    expect = [f"link {i}" for i in range(1, 5)] + [f"joint {i}" for i in range(1, 5)]
     assert ex.focus_options() == expect
     ex.set(links=2)
-    assert ex.focus_options() == ["link1", "link2", "joint1", "joint2"]
-    assert list(ex.controls["focus"].options) == ["all", "link1", "link2", "joint1", "joint2"]
+    assert ex.focus_options() == ["link 1", "link 2", "joint 1", "joint 2"]      # words, spaced
+    assert list(ex.controls["focus"].options) == ["all", "link 1", "link 2", "joint 1", "joint 2"]
 
 
 def test_slide_is_disabled_with_revolute_joints_and_changes_nothing_there():

@@ -177,10 +177,10 @@ def test_play_stops_at_the_end_and_restarts_on_a_new_state():
 
 def test_focus_options_fade_and_label():
     ex = ChainExplorer(display="agg", links=10, torque=2.0, **ALL)
-    assert ex.focus_options()[:2] == ["link1", "link2"] and "joint10" in ex.focus_options()
+    assert ex.focus_options()[:2] == ["link 1", "link 2"] and "joint 10" in ex.focus_options()
     full = ex.picture()["box"]
     assert legible(ex) == []
-    ex.set(focus="joint4")
+    ex.set(focus="joint 4")
     assert ex.message == ""
     shown = shown_labels(ex)
     for sym in ("f₄", "TQ₄", "Rμ₄"):
@@ -190,7 +190,7 @@ def test_focus_options_fade_and_label():
     assert e["f4"].get("opacity", 1.0) == 1.0 and e["f3"]["opacity"] < 0.5    # the rest faded
     assert ex.picture()["box"] == pytest.approx(full)              # no zoom: the whole chain stays in view
     assert legible(ex) == []
-    ex.set(focus="link7")
+    ex.set(focus="link 7")
     assert "v₇" in shown_labels(ex) and "A₇" in shown_labels(ex)
     assert legible(ex) == []
     ex.set(focus="all")

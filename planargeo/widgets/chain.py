@@ -400,7 +400,7 @@ class ChainExplorer(Described, Explorer):
         # before the first state every link of the longest chain (a focus given with "links")
         w = getattr(self, "controls", {}).get("links")
         n = NMAX if w is None or getattr(self, "state", None) is None else int(w.value)
-        return [f"link{i}" for i in range(1, n + 1)] + [f"joint{i}" for i in range(1, n + 1)]
+        return [f"link {i}" for i in range(1, n + 1)] + [f"joint {i}" for i in range(1, n + 1)]
 
     def disabled(self, values: dict) -> dict:
         n, kinds = int(values["links"]), values["joints"]
@@ -455,8 +455,8 @@ class ChainExplorer(Described, Explorer):
         focus = self.controls.get("focus")
         name = "all" if focus is None else str(focus.value)
         for kind in ("link", "joint"):
-            if name.startswith(kind) and name[len(kind):].isdigit():
-                i = int(name[len(kind):]) - 1
+            if name.startswith(kind + " ") and name[len(kind) + 1:].isdigit():
+                i = int(name[len(kind) + 1:]) - 1
                 return (kind, i) if 0 <= i < n else None
         return None
 
