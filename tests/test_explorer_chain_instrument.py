@@ -67,13 +67,16 @@ def test_dragging_a_link_end_sets_its_joint_angle_by_atan2(link):
     parent = 0.0 if link == 1 else _abs_angles(ex)[link - 2]
     want = _wrap(math.atan2(target[1] - joint[1], target[0] - joint[0]) - parent)
     q = ex.state["w"].q
-    assert q[link - 1] == pytest.approx(want, abs=1e-9)
-    assert _abs_angles(ex)[link - 1] == pytest.approx(2.0, abs=1e-9)   # the link points at the mouse
+    # the joint angle as a student types it: to 0.01° (joint 1: the angle slider, exact)
+    assert q[link - 1] == pytest.approx(math.radians(round(math.degrees(want), 2)) if link > 1 else want,
+                                        abs=1e-12)
+    tol = math.radians(0.005)
+    assert _abs_angles(ex)[link - 1] == pytest.approx(2.0, abs=tol)     # the link points at the mouse
     keep = [i for i in range(5) if i != link - 1]
     assert q[keep] == pytest.approx(before[keep], abs=1e-9)              # the other joints kept
     # the handle is now at the link's end, on the ray to the mouse
     end = np.array(ex.handles()[link].where())
-    assert end == pytest.approx(joint + [math.cos(2.0), math.sin(2.0)], abs=1e-9)
+    assert end == pytest.approx(joint + [math.cos(2.0), math.sin(2.0)], abs=tol)
     assert legible(ex) == []
 
 
@@ -84,6 +87,10 @@ def test_drag_of_link_1_moves_the_angle_slider_and_sliders_move_dragged_joints()
     ex.drag("link 3 end", ex.handles()[3].where(), (3.0, 3.0), steps=4)
     text = ex.values["joint values (deg / m)"]
     assert text and ex.message == ""
+    # as a student would type them: at most two decimals (the dragged joint was 49.13529911)
+    assert all(len(t.strip().partition(".")[2]) <= 2 for t in text.split(",")), text
+    fresh = ChainExplorer(display="agg", **ex.values)        # the state the field says, exactly
+    assert fresh.state["w"].q == pytest.approx(ex.state["w"].q, abs=0.0)
     q3 = ex.state["w"].q[2]
     ex.controls["angle"].value = 45.0              # the slider still moves joint 1; joint 3 is kept
     assert ex.state["w"].q[0] == pytest.approx(math.radians(45.0))

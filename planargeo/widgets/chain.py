@@ -154,9 +154,13 @@ def _check_typed(field: str, i: int, x: float, limit: float, unit: str) -> None:
         raise InputError(f"{field}: joint {i + 1} takes at most {limit:g}{unit} in magnitude, got {x:g}")
 
 
-def _num(x: float) -> str:
-    """A list entry: short, and exact enough to round-trip a dragged value (10 digits)."""
-    return f"{x:.10g}"
+def _num(x: float, decimals: int = 2) -> str:
+    """A list entry as a student types it: to ``decimals`` places (a drag sets the value so rounded).
+
+    >>> _num(49.13529911), _num(-0.0001), _num(0.6999999, 3)
+    ('49.14', '0', '0.7')
+    """
+    return f"{round(float(x), decimals) + 0.0:g}"
 
 
 class ChainExplorer(Described, Explorer):
@@ -508,8 +512,9 @@ class ChainExplorer(Described, Explorer):
                     raise InputError(f"joint {i + 1} slides between {SLIDE[0]:g} and {SLIDE[1]:g} m, "
                                      f"the drag asks for {s:.3g} m")
                 q[i] = s
-            shown = [math.degrees(v) if j.kind == "revolute" else v for v, j in zip(q, model.joints)]
-            return {LIST_Q: ", ".join(_num(v) for v in shown)}
+            # to 0.01° and 1 mm: the state is the one the list says (a fresh explorer shows it)
+            return {LIST_Q: ", ".join(_num(math.degrees(v)) if j.kind == "revolute" else _num(v, 3)
+                                      for v, j in zip(q, model.joints))}
         return drag
 
     def play_step(self, values: dict, dt: float):
