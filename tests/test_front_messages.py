@@ -77,3 +77,17 @@ def test_the_key_covers_neither_the_chain_nor_its_forces_and_poles():
                 t = np.linspace(0.0, 1.0, 200)[:, None]       # points all along each segment
                 dense = np.concatenate([pts[:1]] + [a + t * (b - a) for a, b in zip(pts[:-1], pts[1:])])
                 assert not _inside(panel, dense).any(), el["id"]
+
+
+def test_the_readout_says_each_unit_once():
+    import html
+    import re
+
+    ex = ChainExplorer(display="agg")
+    rows = [[html.unescape(re.sub("<[^>]+>", "", c)).strip() for c in re.findall(r"<td[^>]*>(.*?)</td>", r)]
+            for r in re.findall(r"<tr>(.*?)</tr>", ex.readout.value)]
+    by_name = {name: (value, unit) for name, value, unit in rows}
+    assert by_name["kinetic energy"][1] == "J" and by_name["t"][1] == "s"
+    assert by_name["|base force|"] == (f"{ex.readout_values['|base force| (N)']:.4g}", "N")
+    for name, _value, unit in rows:            # never "kinetic energy (J) … J"
+        assert not (unit and f"({unit})" in name), name

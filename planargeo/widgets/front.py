@@ -259,7 +259,8 @@ class FrontMixin:
             self.readout_strings[str(k)] = html.unescape(full)
             bare = fmt(v, zero=zero)        # a common unit goes in its own column (HTML-safe)
             text, unit = (bare, full[len(bare) + 1:]) if full.startswith(bare + " ") else (full, "")
-            name = html.escape(str(k))
+            said = f" ({html.unescape(unit)})"          # a name's unit is said once, in its column
+            name = html.escape(str(k)[:-len(said)] if unit and str(k).endswith(said) else str(k))
             rows.append(
                 f"<tr><td style='padding-right:6px;line-height:1.25;white-space:nowrap;"
                 f"overflow:hidden;text-overflow:ellipsis;max-width:300px' title='{name}'>{name}</td>"
