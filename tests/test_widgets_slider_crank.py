@@ -184,7 +184,7 @@ def test_joint_angles_read_within_half_a_turn_during_play(ex, frames):
     psi, h = math.radians(r["crank angle ψ"]), r["piston height h"]
     pin, wrist = np.array([R * math.cos(psi), R * math.sin(psi)]), np.array([0.0, h - T])
     rod = math.degrees(math.atan2(*(wrist - pin)[::-1]))               # the rod's direction, absolute
-    for key, expected in (("rod angle θ", rod - r["crank angle ψ"]), ("piston angle φ", 90.0 - rod)):
+    for key, expected in (("rod joint angle θ", rod - r["crank angle ψ"]), ("wrist joint angle φ", 90.0 - rod)):
         assert -180.0 < r[key] <= 180.0, (key, r[key])
         assert math.remainder(r[key] - expected, 360.0) == pytest.approx(0.0, abs=1e-6), key
     assert -180.0 < r["crank angle ψ"] <= 180.0

@@ -249,8 +249,8 @@ class SliderCrankExplorer(SceneTime, Explorer):
         drift = (state["E"] - E0) / abs(E0) if E0 else 0.0
         out = {
             "t": now, "crank angle ψ": wrapped_degrees(qq[0]),
-            "crank speed ψ̇": state["qd"][0], "rod angle θ": wrapped_degrees(qq[1]),
-            "piston angle φ": wrapped_degrees(qq[2]),
+            "crank speed ψ̇": state["qd"][0], "rod joint angle θ": wrapped_degrees(qq[1]),
+            "wrist joint angle φ": wrapped_degrees(qq[2]),
             "piston height h": state["h"], "piston speed": vel[2][1], "piston acceleration": acc[2][1],
             "ψ̈ crank": qdd[0],
             "|f₁| crank pivot": force["f_1"], "|f₂| crank pin": force["f_2"],
