@@ -309,6 +309,7 @@ class Picture:
         self.box = (x0, x1, y0, y1)
         self.kx, self.ky = pw / (x1 - x0), ph / (y1 - y0)  # pixels per data unit
         self.elements: list[dict] = []
+        self._edge_labels: dict[tuple, tuple[dict, list[str]]] = {}   # edge arrows' labels, by place
         self.handles: list[dict] = []
         self._ids: set[str] = set()
 
@@ -368,7 +369,10 @@ class Picture:
         return el
 
     def _edge_arrow(self, n_px, t_px, length, text, infinite):
-        """Parts of an arrow at the view's edge in the pixel direction ``n_px`` (along ``t_px``)."""
+        """Parts of an arrow at the view's edge in the pixel direction ``n_px`` (along ``t_px``).
+
+        Arrows drawn at one place share one label naming them all (``v₁, v₂ at ∞``), at the first.
+        """
         pw, ph = self._plot
         n0, n1 = (float(v) for v in n_px)           # plain floats (the same arithmetic as arrays)
         hn = math.hypot(n0, n1)
@@ -386,8 +390,16 @@ class Picture:
         ly = self.box[2] + (b1 - n1 * (length / 2 + 6)) / self.ky
         ha = "right" if n0 > 0.5 else "left" if n0 < -0.5 else "center"
         va = "top" if n1 > 0.5 else "bottom" if n1 < -0.5 else "center"
-        words = (text + " " if text else "") + ("at ∞" if infinite else "(off view)")
-        parts.append(_text_part(lx, ly, words, 0.0, 0.0, ha, va))
+        where = "at ∞" if infinite else "(off view)"
+        place = (round(b0), round(b1), round(t0, 2), round(t1, 2), where)
+        if text and place in self._edge_labels:       # the first arrow here names this one too
+            first, names = self._edge_labels[place]
+            names.append(text)
+            first["text"] = plain_text(f"{', '.join(names)} {where}")
+            return parts
+        parts.append(_text_part(lx, ly, (text + " " if text else "") + where, 0.0, 0.0, ha, va))
+        if text:
+            self._edge_labels[place] = (parts[-1], [text])
         return parts
 
     # ------------------------------------------------------------------ elements
