@@ -44,6 +44,7 @@ _documented = entries({
     "q": "q : array_like (nq,)\n    Joint coordinates.",
     "contacts": "contacts : sequence of Contact, optional\n    The loops' contacts (default ``model.contacts``).",
     "fixed": "fixed : sequence of int\n    Coordinates left unchanged (driven joints).",
+    "tol": "tol, max_iter : float, int\n    Position tolerance; Gauss-Newton iterations at most.",
 })
 
 
@@ -149,8 +150,7 @@ def close_loops(model: Model, q, contacts=None, *, fixed=(), tol: float = 1e-12,
     ----------
     {model q}
     {contacts fixed}
-    tol, max_iter : float, int
-        Position tolerance; Gauss-Newton iterations at most.
+    {tol}
 
     Returns
     -------
@@ -199,8 +199,7 @@ def project_state(model: Model, q, qd, contacts=None, *, fixed=(), tol: float = 
     qd : array_like (nq,)
         Joint velocities.
     {contacts fixed}
-    tol, max_iter : float, int
-        Position tolerance; Gauss-Newton iterations at most.
+    {tol}
 
     Returns
     -------
@@ -209,7 +208,7 @@ def project_state(model: Model, q, qd, contacts=None, *, fixed=(), tol: float = 
     Raises
     ------
     InputError
-        For a bad ``tol``, ``max_iter`` or ``fixed``.
+        As :func:`close_loops`.
 
     Examples
     --------

@@ -339,7 +339,7 @@ class PlayMixin:
         if not (self.has_play and self._page_plays):
             return
         self.canvas.on_tick = self._page_tick
-        if hasattr(self, "play_ahead"):
+        if type(self).play_ahead is not PlayMixin.play_ahead:
             self.canvas.on_idle = self._page_idle
         self.play_control.interval = 10 ** 7
         self._play_link = W.link((self.play_control, "playing"), (self.canvas, "playing"))
@@ -357,6 +357,24 @@ class PlayMixin:
             changed = {k for k, v in values.items() if k in self.controls and not same_value(v, start.get(k))}
             with contextlib.suppress(Exception):     # a failure is Play's to report, when pressed
                 self.compute(values, changed)
+
+    def play_ahead(self, values, seconds: float) -> bool:
+        """Play's work between the page's frames (an explorer's own; none here): the motion the next
+        frames show, computed ahead by the same steps, so the states stay bit-identical.
+
+        Parameters
+        ----------
+        values : dict
+            The controls' values shown.
+        seconds : float
+            About how much wall time to spend now.
+
+        Returns
+        -------
+        bool
+            True while work is left.
+        """
+        return False
 
     def _page_idle(self, seconds: float) -> bool:
         """Between the page's frames: the explorer's ``play_ahead`` for at most about ``seconds``."""

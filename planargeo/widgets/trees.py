@@ -192,29 +192,8 @@ class TreeExplorer(Described, SceneTime, Explorer):
         return closed, model, (closed, float(values["mass"]), float(values["gravity"]), float(values["speed"]), a1, a2)
 
     def play_ahead(self, values, seconds: float) -> bool:
-        """Play's work between frames: the checkpoints the next frames start from (the same states).
-
-        A frame at ``t`` integrates from the last checkpoint before ``t``; the checkpoints up to two
-        frames on are integrated here, while the page draws, one at a time for about ``seconds``.
-
-        Parameters
-        ----------
-        values : dict
-            The controls' values shown.
-        seconds : float
-            About how much wall time to spend now.
-
-        Returns
-        -------
-        bool
-            True while work is left.
-
-        Examples
-        --------
-        >>> ex = TreeExplorer(display="agg")
-        >>> ex.play_ahead(ex.values, 1.0), ex.play_ahead(ex.values, 1.0)     # three checkpoints, then none
-        (False, False)
-        """
+        # a frame at t integrates from the last checkpoint before t; the checkpoints up to two
+        # frames on are integrated here, while the page draws, one at a time for about `seconds`
         import time
 
         _closed, model, key = self._run_key(values)

@@ -373,8 +373,19 @@ POLES_APART_PX = 20.0
 
 
 def pole_groups(pic: Picture, pts) -> list[list[int]]:
-    """The poles ``pts`` (rows ``[vx, vy, w]``) drawn within :data:`POLES_APART_PX` of one another, chained:
-    groups of indices, in order; a pole at infinity or out of view is a group of its own.
+    """The poles ``pts`` drawn within :data:`POLES_APART_PX` of one another, chained, as groups.
+
+    Parameters
+    ----------
+    pic : Picture
+        The picture they are drawn in (its view and scale).
+    pts : array_like (n, 3)
+        The poles, rows ``[vx, vy, w]``.
+
+    Returns
+    -------
+    list of list of int
+        Groups of indices, in order; a pole at infinity or out of view is a group of its own.
 
     Examples
     --------
