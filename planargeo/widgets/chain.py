@@ -183,7 +183,7 @@ class ChainExplorer(Described, Explorer):
 
     title = "Chain: poles, forces and articulated inertias"
     slug = "chain"
-    figsize = (6.4, 5.6)
+    figsize = (6.2, 5.4)          # beside the controls in JupyterLab with its file browser open
     limits = (-4.5, 4.5, -4.5, 4.5)
     grid = False
     display_controls = OVERLAYS

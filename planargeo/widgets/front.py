@@ -123,8 +123,10 @@ class FrontMixin:
         right = W.VBox([self.message_box, fig_widget, self.readout, self.explain_box],
                        layout=W.Layout(align_items="flex-start", overflow="visible"))
         head = W.HTML(f"<h4 style='margin:2px'>{html.escape(self.title)}</h4>")
+        # side by side, tops aligned; in a column too narrow for both, the picture above the
+        # controls (the lines of a reversed wrap stack upwards), so that it stays in sight
         body = W.HBox([controls, right],
-                      layout=W.Layout(flex_flow="row wrap", align_items="flex-start"))
+                      layout=W.Layout(flex_flow="row wrap-reverse", align_items="flex-end"))
         root = W.VBox([head, body])
         root.add_class("planargeo-explorer")
         self.readout.add_class("planargeo-readout")

@@ -59,3 +59,54 @@ def test_a_broken_layout_is_seen(page):
 def test_a_sound_layout_passes(page):
     page.set_content(PAGE.format(bx=160, cover=400, ro=400, cell=300))
     assert check_layout(page, page.locator(".planargeo-explorer")) == []
+
+
+LAB_CELLS = ["from planargeo.widgets import ChainExplorer",
+             "ChainExplorer()",                              # 620 px: fits beside the controls
+             "ChainExplorer(figsize=(9.6, 5.4))"]            # 960 px: wider than the column
+
+BOXES = """e => Object.fromEntries(Object.entries({figure: '.planargeo-figure', explorer: ':scope',
+  controls: '.widget-hbox > .widget-vbox:first-child'}).map(([k, s]) => {
+    const r = (s === ':scope' ? e : e.querySelector(s)).getBoundingClientRect();
+    return [k, {left: r.left, right: r.right, top: r.top, bottom: r.bottom}]; }))"""
+
+
+def test_the_figure_stays_in_sight_in_jupyterlab_with_its_file_browser(lab, browser):
+    """In JupyterLab at 1400 × 1100 with the file browser open (a notebook ~970 px wide) the
+    chain's figure is beside its controls; a figure too wide for that comes above them, not
+    below a controls column a screen long (review H4: 1287–1787 px down)."""
+    import time
+
+    import nbformat
+
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in LAB_CELLS])
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+    nbformat.write(nb, lab.root / "layout.ipynb")
+    page = browser.new_page(viewport={"width": 1400, "height": 1100})
+    try:
+        page.goto(f"{lab.url}/lab/tree/layout.ipynb?reset", wait_until="domcontentloaded", timeout=120_000)
+        page.wait_for_function("window.jupyterapp && window.jupyterapp.shell.currentWidget"
+                               " && window.jupyterapp.shell.currentWidget.sessionContext.session"
+                               " && window.jupyterapp.shell.currentWidget.sessionContext.session.kernel",
+                               timeout=120_000)
+        if page.evaluate("window.jupyterapp.shell.leftCollapsed"):
+            page.evaluate("window.jupyterapp.commands.execute('filebrowser:activate')")
+        page.wait_for_function("!window.jupyterapp.shell.leftCollapsed", timeout=30_000)
+        page.evaluate("window.jupyterapp.commands.execute('notebook:run-all-cells')")
+        explorers = page.locator(".planargeo-explorer")
+        boxes = []
+        for k in range(2):
+            ex = explorers.nth(k)
+            ex.locator("svg .pg-frame").first.wait_for(state="attached", timeout=240_000)
+            ex.scroll_into_view_if_needed()
+            time.sleep(0.5)                                   # the layout settles
+            boxes.append(ex.evaluate(BOXES))
+        width = boxes[0]["explorer"]["right"] - boxes[0]["explorer"]["left"]
+        assert 900 < width < 1000, width                      # the notebook's column, file browser open
+        fig, ctl = boxes[0]["figure"], boxes[0]["controls"]
+        assert fig["left"] >= ctl["right"] - 1 and abs(fig["top"] - ctl["top"]) < 60, boxes[0]
+        fig, ctl, whole = boxes[1]["figure"], boxes[1]["controls"], boxes[1]["explorer"]
+        assert fig["bottom"] <= ctl["top"] + 1, boxes[1]       # wrapped: the figure first
+        assert fig["top"] - whole["top"] < 100, boxes[1]      # at the explorer's top, in sight
+    finally:
+        page.close()
