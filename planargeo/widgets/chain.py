@@ -325,20 +325,7 @@ class ChainExplorer(Described, Explorer):
                       lambda: Motion(rhs, np.concatenate([q0, qd0]), CHUNK, rtol=1e-8, atol=1e-10))
 
     def play_ahead(self, values, seconds: float) -> bool:
-        """Play's work ahead between frames: the motion one chunk past the time shown (same states).
-
-        Parameters
-        ----------
-        values : dict
-            The controls' values.
-        seconds : float
-            About how much wall time to spend now.
-
-        Returns
-        -------
-        bool
-            True while work is left.
-        """
+        # the motion one chunk past the time shown, by the same steps
         model, q0, qd0, tau = self.initial_state(values)
         return self.motion_for(model, q0, qd0, tau).work_ahead(float(values[TIME]) + CHUNK, seconds)
 

@@ -60,7 +60,7 @@ class ImpulseExplorer(Described, Explorer):
 
     title = "Impulse and the centre of percussion: a bat or a door struck at rest"
     slug = "impulse"
-    figsize = (6.4, 4.6)
+    figsize = (6.2, 4.6)          # beside the controls in JupyterLab with its file browser open
     limits = (-0.45, 1.2, -0.6, 0.6)
     display_controls = ("t",)
 

@@ -52,7 +52,7 @@ class SubspaceExplorer(Explorer):
 
     title = "Subspaces of a joint: s, R, T, U and the splits of a force (thesis 6.1–6.4)"
     slug = "subspace"
-    figsize = (6.4, 5.0)
+    figsize = (6.2, 5.0)          # beside the controls in JupyterLab with its file browser open
     limits = (-1.5, 3.5, -2.0, 2.0)
     display_controls = ()   # "show" recomputes (cheap): the generic test flips display controls as sliders
 
