@@ -24,8 +24,9 @@ from planargeo.scenes.articulated import articulated_state, inertia_at, percussi
 from planargeo.widgets._motion import Motion
 from planargeo.widgets._explorer import ChainBodies, Described, state_handle, time_step, xy_handle
 from planargeo.widgets.base import Explorer, Step, cached, point_text
+from planargeo.widgets.controls import widen
 
-__all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip", "widen"]
+__all__ = ["ArticulatedExplorer", "NMAX", "bend_for_tip"]
 
 #: Most bodies the explorer shows.
 NMAX = 8
@@ -42,29 +43,6 @@ _CHAIN = ("bodies n", "λ = L/ρ", "bend φ (deg)", "base θ₁ (deg)", "g (m/s�
 #: the grid of bends :func:`bend_for_tip` searches (0.01°) and e^{iφ} on its every 10th point
 _GRID = np.linspace(-math.pi, math.pi, 36001)
 _COARSE = np.exp(1j * _GRID[::10])
-
-
-def widen(slider, top) -> None:
-    """Widen ``slider``'s range to ``top`` and send the new range to the page at once, in a message of its own.
-
-    The page may apply one message's value before its range: a value beyond the range it still held
-    would be pulled back to that range's end (and the rest of the message, e.g. ``disabled``, not
-    shown).  Sent ahead, the wider range is there when the value arrives.
-
-    Parameters
-    ----------
-    slider : ipywidgets IntSlider or FloatSlider
-    top : number
-        The new ``max``.
-
-    Examples
-    --------
-    >>> s = W.IntSlider(value=0, min=0, max=0)
-    >>> widen(s, 7); s.max
-    7
-    """
-    slider.max = top
-    slider.send_state("max")
 
 
 def bend_for_tip(xy, n: int, base: float, L: float = 1.0) -> float:

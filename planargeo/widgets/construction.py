@@ -28,8 +28,8 @@ from planargeo.draw.pictures.construction import construction_picture
 from planargeo.errors import InputError
 from planargeo.scenes.construction import CONSTRUCTIONS, construct, parameters
 from planargeo.widgets._explorer import arrow_handle, explorer_data, xy_handle
-from planargeo.widgets.articulated import widen
 from planargeo.widgets.base import Explorer, Handle, Step
+from planargeo.widgets.controls import widen
 
 __all__ = ["ConstructionExplorer"]
 

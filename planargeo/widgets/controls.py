@@ -30,7 +30,7 @@ from traitlets import validate
 from planargeo.errors import InputError
 
 __all__ = ["CACHE_LIMIT", "TEXT_LIMIT", "cached", "Step", "Choice", "Toggle",
-           "make_control", "check_control", "ControlsMixin"]
+           "make_control", "check_control", "widen", "ControlsMixin"]
 
 
 #: entries an explorer's per-parameter cache holds before it is emptied
@@ -205,6 +205,29 @@ def make_control(name: str, spec):
 
 
 _SELECTIONS = (W.Dropdown, W.ToggleButtons, W.RadioButtons, W.Select)
+
+
+def widen(slider, top) -> None:
+    """Widen ``slider``'s range to ``top`` and send the new range to the page at once, in a message of its own.
+
+    The page may apply one message's value before its range: a value beyond the range it still held
+    would be pulled back to that range's end (and the rest of the message, e.g. ``disabled``, not
+    shown).  Sent ahead, the wider range is there when the value arrives.
+
+    Parameters
+    ----------
+    slider : ipywidgets IntSlider or FloatSlider
+    top : number
+        The new ``max``.
+
+    Examples
+    --------
+    >>> s = W.IntSlider(value=0, min=0, max=0)
+    >>> widen(s, 7); s.max
+    7
+    """
+    slider.max = top
+    slider.send_state("max")
 
 
 def check_control(name: str, widget, value):
