@@ -330,3 +330,26 @@ def test_a_translation_term_leaves_the_sums_label_off_the_other_pole(ex, state):
     nearest = np.clip(centre, box[:2], box[2:])
     assert np.hypot(*(centre - nearest)) > glyph["r"], (term, box, centre)
     assert problems(pic) == []
+
+
+@pytest.mark.parametrize("state", [dict(kind2="translation"), dict(kind1="translation"),
+                                   dict(kind2="translation", x1=-3.0, size1=1.0, size2=1.0)])
+def test_a_translations_label_at_the_edge_is_clear_of_every_pole(ex, state):
+    # the review saw "v₂ at ∞" drawn over by the sum's pole glyph at (−3.5, 0): "v₂ ⊕ ∞"
+    from picture_checks import label_boxes
+
+    ex.set(**state)
+    pic = ex.picture()
+    x0, x1, y0, y1 = pic["box"]
+    (w, h), (ml, mr, mt, mb) = pic["size"], pic["margin"]
+    k = np.array([(w - ml - mr) / (x1 - x0), (h - mt - mb) / (y1 - y0)])
+    boxes = [b for t, b in label_boxes(pic) if t.endswith("at ∞")]
+    assert boxes, label_boxes(pic)
+    glyphs = [p for e in pic["elements"] for p in e["parts"] if p["p"] == "glyph"]
+    assert len(glyphs) == 2                        # the other term's pole and the sum's, both in view
+    for box in boxes:
+        for g in glyphs:
+            centre = (np.array([g["x"], g["y"]]) - [x0, y0]) * k
+            nearest = np.clip(centre, box[:2], box[2:])
+            assert np.hypot(*(centre - nearest)) > g["r"], (box, g)
+    assert problems(pic) == []

@@ -18,7 +18,7 @@ import math
 
 import numpy as np
 
-from planargeo.draw.picture import PX_PER_PT, Picture, _glyph_radius
+from planargeo.draw.picture import FONT_PX, PX_PER_PT, Picture, _glyph_radius
 from planargeo.draw.pictures._words import num, subscript, where
 from planargeo.draw.pictures.common import builder, label_toward, labelled_line
 from planargeo.draw.style import COLORS, SUM
@@ -89,6 +89,7 @@ def _twists(pic: Picture, c) -> None:
                   desc=f"sum v₃ = v₁ + v₂ (4.11–4.13): {_twist_words(s, 3)}")
         if not bool(is_ideal(s)):
             label_toward(pic.elements[-1], u3, _glyph_gap(s[2]) + 3.0)
+    _edge_labels_off_the_poles(pic)
 
 
 def _beside_the_line(pic: Picture, twists, sides):
@@ -108,6 +109,49 @@ def _beside_the_line(pic: Picture, twists, sides):
     out = list(sides)
     out[finite[0]], out[2] = tuple(n), tuple(-n)
     return tuple(out)
+
+
+def _text_box(pic: Picture, p) -> tuple:
+    """Pixel box ``(x0, y0, x1, y1)`` of a text part (from the plot area's lower left), estimated."""
+    bw, bh = 0.6 * FONT_PX * len(p["text"]), 1.25 * FONT_PX
+    qx = (p["x"] - pic.box[0]) * pic.kx + p["dx"] - {"left": 0.0, "center": 0.5, "right": 1.0}[p["ha"]] * bw
+    qy = (p["y"] - pic.box[2]) * pic.ky + p["dy"] - {"bottom": 0.0, "center": 0.5, "top": 1.0}[p["va"]] * bh
+    return qx, qy, qx + bw, qy + bh
+
+
+def _edge_labels_off_the_poles(pic: Picture) -> None:
+    """Move a translation's label at the view's edge ("v₂ at ∞") above or below its arrow when a
+    pole's glyph, or another label, is drawn over it where it stands (beside the arrow)."""
+    glyphs = [(p["x"], p["y"], p.get("r", 0.0) + 2.0) for e in pic.elements for p in e["parts"]
+              if p["p"] in ("glyph", "mark")]
+    texts = [p for e in pic.elements for p in e["parts"] if p["p"] == "text"]
+
+    def clear(p) -> bool:
+        x0, y0, x1, y1 = _text_box(pic, p)
+        for gx, gy, r in glyphs:
+            cx, cy = (gx - pic.box[0]) * pic.kx, (gy - pic.box[2]) * pic.ky
+            if math.hypot(cx - min(max(cx, x0), x1), cy - min(max(cy, y0), y1)) <= r:
+                return False
+        for q in texts:
+            if q is not p:
+                a0, b0, a1, b1 = _text_box(pic, q)
+                if min(x1, a1) - max(x0, a0) > 0.5 and min(y1, b1) - max(y0, b0) > 0.5:
+                    return False
+        return True
+
+    for e in pic.elements:
+        arrows = [p for p in e["parts"] if p["p"] == "arrow"]
+        for p in e["parts"]:
+            if p["p"] != "text" or not p["text"].endswith(" at ∞") or not arrows or clear(p):
+                continue
+            reach = abs(arrows[0]["dy"]) / 2 + 3.0        # past the arrow's end (px), then a row on
+            tries = [(va, sign * (reach + row * 1.25 * FONT_PX)) for row in range(3)
+                     for va, sign in (("bottom", 1.0), ("top", -1.0))]
+            for va, dy in tries:
+                moved = dict(p, va=va, dy=p["dy"] + dy)
+                if clear(moved):
+                    p.update(moved)
+                    break
 
 
 def _lower(pic: Picture, rows: int) -> None:
