@@ -137,8 +137,9 @@ function render({ model, el }) {
 
   model.on("msg:custom", (m) => {
     if (!m) return;
-    if (m.type === "update") {
+    if (m.type === "update") {     // a new state shown: a refusal said beside "reset view" is past
       nPushed += 1;
+      if (!tickHalted) status.title = status.textContent = "";
       arrivals.push(performance.now());
       if (arrivals.length > 1000) arrivals.shift();
       applyFrame(m);

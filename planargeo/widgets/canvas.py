@@ -163,7 +163,7 @@ _CSS = """
 .pg-canvas { position: relative; font-family: 'DejaVu Sans', sans-serif; user-select: none; }
 .pg-canvas svg { display: block; touch-action: none; outline: none; }
 .pg-bar { display: flex; gap: 8px; align-items: center; height: 24px; font-size: 12px; }
-.pg-bar button { font-size: 12px; padding: 1px 8px; }
+.pg-bar button { font-size: 12px; padding: 1px 8px; flex: 0 0 auto; white-space: nowrap; }
 .pg-status { color: #b00020; white-space: nowrap; overflow: hidden; text-overflow: ellipsis;
              min-width: 0; flex: 1 1 auto; }
 .pg-bg { fill: white; }

@@ -8,7 +8,8 @@ horizontal line through it, slowly on purpose (0.15 s per request), and refuses
 * the dragged handle moves in the same event as the mouse (before any reply);
 * at most one request is in flight: ten quick moves reach the kernel as two or three
   requests, and the last position wins;
-* a refused position snaps the handle back to the last accepted one, with the reason;
+* a refused position snaps the handle back to the last accepted one, with the reason, which
+  stays until the next picture;
 * the wheel zooms at once and the kernel redraws the new view; *reset view* returns;
 * hovering an element shows its symbol and description (asked of the kernel);
 * Play: while ``playing`` is on the page asks for frames by itself (``tick``), one at a
@@ -77,7 +78,12 @@ def show_again(_):
     with out:
         display(c)
 again.on_click(show_again)
-display(c, W.HBox([play, again]), out)
+redraw = W.Button(description="redraw")
+def do_redraw(_):
+    state["xy"] = (0.5, 0.5)
+    c.picture = make()
+redraw.on_click(do_redraw)
+display(c, W.HBox([play, again, redraw]), out)
 """
 
 
@@ -142,6 +148,9 @@ def _exercise(page, where: str) -> None:
     _wait_for(lambda: "at most 3" in status.inner_text(), 20, f"{where}: the refusal's reason")
     _wait_for(lambda: abs(float(handle.get_attribute("cx")) - accepted) < 1.5, 10,
               f"{where}: the refused handle to snap back")
+    # a new state from the kernel (not an answer to the page): the refusal said is past
+    page.get_by_role("button", name="redraw").click()
+    _wait_for(lambda: status.inner_text() == "", 20, f"{where}: the refusal cleared by a new picture")
     # 4. zoom at once, then the kernel's picture of the new view; reset view returns
     ticks_before = page.locator(".pg-axes text").all_text_contents()
     svg.hover()
