@@ -160,3 +160,61 @@ def test_steering_lever_is_apart_from_the_drive_handle_and_steers_smoothly():
     icr = np.array(ex.handles()[2].where())
     u, w = end - front, icr - front
     assert abs(u[0] * w[1] - u[1] * w[0]) <= 1e-9 * np.hypot(*u) * np.hypot(*w) and u @ w > 0
+
+
+def _page_pointer(ex, qx, qy):
+    """The data point under the pixel ``(qx, qy)`` (from the plot area's lower left) of the picture shown."""
+    pic = ex.picture()
+    x0, x1, y0, y1 = pic["box"]
+    (w, h), (ml, mr, mt, mb) = pic["size"], pic["margin"]
+    return x0 + qx * (x1 - x0) / (w - ml - mr), y0 + qy * (y1 - y0) / (h - mt - mb)
+
+
+def _page_pixel(ex, x, y):
+    pic = ex.picture()
+    x0, x1, y0, y1 = pic["box"]
+    (w, h), (ml, mr, mt, mb) = pic["size"], pic["margin"]
+    return (x - x0) * (w - ml - mr) / (x1 - x0), (y - y0) * (h - mt - mb) / (y1 - y0)
+
+
+def test_a_slow_steering_drag_in_the_page_turns_the_wheel_smoothly_and_keeps_the_view():
+    """The review dragged the lever's end down 2 px at a time in the page: the view zoomed in under the
+    pointer and the wheel ran away (19°, 23°, 35°, 52°, then refused). Driven as the page drives it (the
+    pointer's pixel read through the picture shown, no release), the view must stay put and the wheel
+    follow the pointer: δ = atan2(−r_y, −r_x) of the pointer r from the front tyre (heading 0: the front
+    tyre drawn at (0, L)); 2 px seen from ≥ r px away subtend at most asin(2/r), r the lever (≈ 91 px)."""
+    ex = CarExplorer(display="page")
+    box = ex.picture()["box"]
+    qx, qy = _page_pixel(ex, *ex.handle_position("steering"))
+    lever = float(np.hypot(*(np.array((qx, qy)) - _page_pixel(ex, 0.0, L))))      # px of the plot area
+    assert lever >= 90.0
+    angles = [ex.readout_values["steering angle"]]
+    for k in range(1, 31):
+        x, y = _page_pointer(ex, qx, qy - 2.0 * k)
+        ok, why = ex.canvas.handle_message({"type": "drag", "id": "steering", "x": x, "y": y, "seq": k})
+        assert ok and ex.message == "", why
+        assert ex.picture()["box"] == box
+        angles.append(ex.readout_values["steering angle"])
+        assert angles[-1] == pytest.approx(math.degrees(math.atan2(-(y - L), -x)), abs=1e-9)
+        assert ex.values[RADIUS] == pytest.approx(L / math.tan(math.radians(angles[-1])), rel=1e-9)
+    steps = np.diff(angles)
+    assert np.all(steps > 0.0) and np.all(steps <= math.degrees(math.asin(2.0 / lever)) + 1e-9), steps
+    assert ex.values[RADIUS] > 2.0                 # 60 px down: δ ≈ 45°, the radius ≈ 2.6 m, not at its stop
+    # a diagonal drag of 15 × 10 px after Reset (refused at 153° in the review)
+    ex.reset()
+    qx, qy = _page_pixel(ex, *ex.handle_position("steering"))
+    before = ex.readout_values["steering angle"]
+    for k in range(1, 6):
+        x, y = _page_pointer(ex, qx + 3.0 * k, qy - 2.0 * k)
+        ok, why = ex.canvas.handle_message({"type": "drag", "id": "steering", "x": x, "y": y, "seq": 40 + k})
+        assert ok and ex.message == "", why
+        after = ex.readout_values["steering angle"]
+        assert after == pytest.approx(math.degrees(math.atan2(-(y - L), -x)), abs=1e-9)
+        assert 0.0 < after - before < 3.0                   # 3.6 px, ≥ 75 px from the tyre: < 2.8°
+        before = after
+    # a slider's change ends the held view: the view fits the state again, as a fresh explorer's
+    ex.set(**{SPEED: 5.0})
+    assert ex.picture()["box"] == CarExplorer(display="agg", **ex.values).picture()["box"]
+    # and the radius slider's step turns the wheel by under 1° even at its smallest radius
+    w = ex.controls[RADIUS]
+    assert math.degrees(math.atan(L / w.min) - math.atan(L / (w.min + w.step))) < 1.0

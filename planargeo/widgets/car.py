@@ -75,12 +75,17 @@ class CarExplorer(Described, Explorer):
     def __init__(self, **kw):
         # the scene function itself (scenes.build checks parameter names on every call)
         self._scene = scenes.get("car")
+        # the view shown when a handle's drag began: kept while the drag goes on (the pointer's place
+        # in the page must keep its meaning), dropped by the first update that is not a drag's
+        self._held_view = None
+        self._drag_update = False
         super().__init__(**kw)
 
     def make_controls(self):
         return {
             SPEED: Step(0.0, 30.0, 0.5, 4.0, SPEED),
-            RADIUS: Step(2.0, 60.0, 0.5, 8.0, RADIUS),
+            # 5 cm steps: at a 2 m radius a step turns the wheel by 0.7° (a dragged radius is not jumpy)
+            RADIUS: Step(2.0, 60.0, 0.05, 8.0, RADIUS),
             DRIVE: Step(-6000, 6000, 100, 0, DRIVE),
             FRICTION: Step(0.1, 1.2, 0.05, 0.9, FRICTION),
             # a short label (symbol and unit: the slider keeps its length), the meaning on hover
@@ -101,6 +106,9 @@ class CarExplorer(Described, Explorer):
                            outlines=False)
 
     def compute(self, values, changed):
+        dragged, self._drag_update = self._drag_update, False
+        if not dragged:                 # a slider, Play or reset: the view fits the state again
+            self._held_view = None
         d = float(values[RADIUS])
         V = float(values[SPEED])
         if d <= 0:
@@ -152,10 +160,26 @@ class CarExplorer(Described, Explorer):
     def handles(self) -> list:
         # G along the car (ε); the steering lever's end on the front axle line (d = L / tan δ); the ICR along the
         # rear axle line (d); the tip of the f_A arrow along the front wheel (F_A)
-        return [Handle("centre of gravity", self._cg_where, self._cg_drag),
-                Handle("steering", self._steer_where, self._steer_drag),
-                Handle("ICR", self._icr_where, self._icr_drag),
-                Handle("drive", self._drive_where, self._drive_drag)]
+        return [Handle("centre of gravity", self._cg_where, self._holding(self._cg_drag)),
+                Handle("steering", self._steer_where, self._holding(self._steer_drag)),
+                Handle("ICR", self._icr_where, self._holding(self._icr_drag)),
+                Handle("drive", self._drive_where, self._holding(self._drive_drag))]
+
+    def _holding(self, drag):
+        """``drag``, keeping the view shown while a handle is dragged: the view fits the state
+        (:meth:`view_of`), so it would zoom under the pointer and a handle would run away from it."""
+        def held(x, y):
+            vals = drag(x, y)                       # a refused step (raised) holds nothing
+            if self._held_view is None and self.state is not None:
+                self._held_view = self.view_of(self.state)
+            self._drag_update = True
+            return vals
+        return held
+
+    def _release(self):
+        # the end of a drag (HandleMixin.drag): the view fits the state again, as a fresh explorer's
+        self._held_view, self._drag_update = None, False
+        super()._release()
 
     def _cg_where(self):
         return self._drawn(self.state["res"].extra["cg"])
@@ -227,7 +251,7 @@ class CarExplorer(Described, Explorer):
 
     def scene_picture(self, state, view=None):
         return car_picture(state["res"], heading=math.radians(float(state["heading"])),
-                           view=view or self.view_of(state), slides=state["slides"], limit=state["limit"],
+                           view=view or self._held_view or self.view_of(state), slides=state["slides"], limit=state["limit"],
                            size=self.figure_px)
 
     def readout_of(self, state):
