@@ -78,6 +78,7 @@ class CarExplorer(Described, Explorer):
         # the view shown when a handle's drag began: kept while the drag goes on (the pointer's place
         # in the page must keep its meaning), dropped by the first update that is not a drag's
         self._held_view = None
+        self._held_rear = None          # and where the rear tyre was drawn: the car is held still too
         self._drag_update = False
         super().__init__(**kw)
 
@@ -108,7 +109,7 @@ class CarExplorer(Described, Explorer):
     def compute(self, values, changed):
         dragged, self._drag_update = self._drag_update, False
         if not dragged:                 # a slider, Play or reset: the view fits the state again
-            self._held_view = None
+            self._held_view = self._held_rear = None
         d = float(values[RADIUS])
         V = float(values[SPEED])
         if d <= 0:
@@ -146,8 +147,16 @@ class CarExplorer(Described, Explorer):
         """``(R, t, res)`` of the state shown: the drawing's placement (:func:`_moves`) and the scene."""
         res = self.state["res"]
         th = math.radians(float(self.shown_values.get(HEADING, self.values[HEADING])))
-        R, t, _V, _W = moves(th, res.params["d"])
+        R, t, _V, _W = moves(th, res.params["d"], self._shift(res.params["d"], th))
         return R, t, res
+
+    def _shift(self, d, th):
+        """How far the drawing is moved (m) so that a drag holds the rear tyre where it was drawn: the
+        car is drawn turned by the heading about the ICR, which a drag of the radius moves."""
+        if self._held_rear is None:
+            return (0.0, 0.0)
+        R, t, _V, _W = moves(th, d)
+        return tuple(float(v) for v in self._held_rear - (R @ [d, 0.0] + t))
 
     def _to_scene(self, x, y):
         R, t, res = self._car_frame()
@@ -172,13 +181,14 @@ class CarExplorer(Described, Explorer):
             vals = drag(x, y)                       # a refused step (raised) holds nothing
             if self._held_view is None and self.state is not None:
                 self._held_view = self.view_of(self.state)
+                self._held_rear = np.array(self._drawn(self.state["res"].extra["rear_contact"]))
             self._drag_update = True
             return vals
         return held
 
     def _release(self):
         # the end of a drag (HandleMixin.drag): the view fits the state again, as a fresh explorer's
-        self._held_view, self._drag_update = None, False
+        self._held_view, self._held_rear, self._drag_update = None, None, False
         super()._release()
 
     def _cg_where(self):
@@ -250,9 +260,10 @@ class CarExplorer(Described, Explorer):
         return view_box(p["d"], p["L"], math.radians(float(st["heading"])), p["F_A"])
 
     def scene_picture(self, state, view=None):
-        return car_picture(state["res"], heading=math.radians(float(state["heading"])),
-                           view=view or self._held_view or self.view_of(state), slides=state["slides"], limit=state["limit"],
-                           size=self.figure_px)
+        th = math.radians(float(state["heading"]))
+        return car_picture(state["res"], heading=th, view=view or self._held_view or self.view_of(state),
+                           slides=state["slides"], limit=state["limit"], size=self.figure_px,
+                           shift=self._shift(state["res"].params["d"], th))
 
     def readout_of(self, state):
         res = state["res"]

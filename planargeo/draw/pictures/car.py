@@ -70,10 +70,10 @@ def steer_lever(extra) -> np.ndarray:
     return front + min(STEER_ARM, 0.5 * dist) * to_icr / dist
 
 
-def moves(theta: float, d: float):
+def moves(theta: float, d: float, shift=(0.0, 0.0)):
     """The drawing's placement of the scene: turned by ``theta`` about the ICR, rear tyre at the origin.
 
-    A scene point ``p`` is drawn at ``R p + t`` (``t = (-d, 0)``); twists and points map by
+    A scene point ``p`` is drawn at ``R p + t`` (``t = (-d, 0) + shift``); twists and points map by
     ``V = [[R, -J t], [0, 1]]``, wrenches and lines by ``W = V⁻ᵀ``, inertias by ``W I Wᵀ``.
 
     Parameters
@@ -82,6 +82,8 @@ def moves(theta: float, d: float):
         Heading (rad).
     d : float
         Turn radius (m).
+    shift : (float, float)
+        The whole drawing moved by this (m): the explorer holds the car still while a handle is dragged.
 
     Returns
     -------
@@ -96,7 +98,7 @@ def moves(theta: float, d: float):
     """
     c, s = math.cos(theta), math.sin(theta)
     R = np.array([[c, -s], [s, c]])
-    t = np.array([-float(d), 0.0])
+    t = np.array([-float(d) + float(shift[0]), float(shift[1])])
     V = np.eye(3)
     V[:2, :2] = R
     V[:2, 2] = -np.array([-t[1], t[0]])
@@ -145,7 +147,7 @@ def view_box(d: float, L: float, theta: float, F_A: float = 0.0):
 
 @builder
 def car_picture(res, *, heading: float, view, slides: bool = False, limit: float = 0.0,
-                size=(600, 560)) -> Picture:
+                size=(600, 560), shift=(0.0, 0.0)) -> Picture:
     """The picture of the car of the scene ``res`` turned by ``heading`` (module docstring).
 
     Parameters
@@ -158,10 +160,12 @@ def car_picture(res, *, heading: float, view, slides: bool = False, limit: float
         The tyres have reached their limit: the banner says so.
     limit : float
         What the tyres hold, μ·g (m/s²).
+    shift : (float, float)
+        The whole drawing moved by this (m) (:func:`moves`).
     """
     q, x, p = res.quantities, res.extra, res.params
     L, d = p["L"], p["d"]
-    R, tr, V, W = moves(heading, d)
+    R, tr, V, W = moves(heading, d, shift)
     pic = Picture(view, size=size, ticks=False, margin=(6, 6, 6, 6))
     rear, front, cg = (R @ x[k] + tr for k in ("rear_contact", "front_contact", "cg"))
     icr = tr.copy()
