@@ -245,3 +245,13 @@ def test_greyed_pole_sliders_show_no_number_and_say_where_the_impact_put_the_pol
     assert ex.readout_values["pole"] == pytest.approx((x, 0.0), rel=1e-9, abs=1e-12)
     ex.set(drive="acceleration pole")                  # in use again: its number is back
     assert all(ex.controls[n].readout and not ex.controls[n].disabled for n in ("pole x", "pole y"))
+
+
+def test_a_flat_polygon_is_refused_as_flat_and_its_value_said_once():
+    ex = PercussionExplorer(display="agg", shape="custom polygon")
+    shown = dict(ex.readout_values)
+    ex.set(polygon="0,0; 1,0; 1,0")                  # three vertices, no area
+    assert "vertices lie on one line" in ex.message and "self-intersecting" not in ex.message
+    assert ex.message.count("0,0; 1,0; 1,0") == 1 and ex.readout_values == shown
+    ex.set(polygon="0,0; 1,1; 1,0; 0,1")             # a bow tie: its two halves cancel to no area
+    assert "self-intersecting" in ex.message and ex.message.count("0,0; 1,1; 1,0; 0,1") == 1

@@ -460,7 +460,8 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
         except Exception as exc:  # noqa: BLE001 - refused and reported, never raised
             if initial:
                 raise
-            refused = ", ".join(shown_as(k, w.value) for k, w in self.controls.items() if k in changed)
+            refused = ", ".join(shown_as(k, w.value) for k, w in self.controls.items()    # unless said
+                                if k in changed and f"got {w.value!r}" not in str(exc))
             reason = self._reason(exc)
             if numeric_failure(exc) and refused:
                 reason = (f"{refused} cannot be computed: a number left double precision's range "

@@ -52,7 +52,8 @@ def parse_polygon(text: str) -> Polygon:
     Raises
     ------
     InvalidPolygonError
-        Fewer than three vertices, unreadable numbers, or a self-intersecting outline.
+        Fewer than three vertices, unreadable numbers, vertices on one line, or a self-intersecting
+        outline.
 
     Examples
     --------
@@ -69,6 +70,8 @@ def parse_polygon(text: str) -> Polygon:
     if len(pts) < 3 or any(len(p) != 2 for p in pts):
         raise InvalidPolygonError(f"polygon needs at least three 'x, y' vertices, got {text!r}")
     poly = Polygon(pts)
+    if poly.convex_hull.area <= 0:
+        raise InvalidPolygonError(f"polygon must enclose an area (its vertices lie on one line), got {text!r}")
     if not poly.is_valid or poly.area <= 0:
         raise InvalidPolygonError(f"polygon must be a simple (non self-intersecting) area, got {text!r}")
     return poly
