@@ -233,3 +233,17 @@ def test_play_with_every_overlay_stays_legible(ex):
         legible(ex.advance(2))
     els = elements(ex.picture())
     assert all(f"{k}{i}" in els for k in "va" for i in "₁₂₃")
+
+
+def test_the_key_leaves_the_piston_uncovered():
+    # the key goes to the corner where least is drawn, a body's area counting (not only its outline):
+    # the piston stands in the middle of the upper half, where a key half the figure wide covered it
+    pic = SliderCrankExplorer(display="agg", key=True).picture()
+    by_id = {e["id"]: e for e in pic["elements"]}
+
+    def box(el):
+        xy = np.concatenate([np.asarray(q["xy"], float) for q in el["parts"] if "xy" in q])
+        return xy.min(0), xy.max(0)
+
+    (k0, k1), (p0, p1) = box(by_id["key panel"]), box(by_id["piston"])
+    assert (p1 < k0).any() or (k1 < p0).any(), "the key panel covers the piston"

@@ -25,8 +25,20 @@ _CHAR_EM = 0.6
 _LINE_PX = 1.25 * FONT_PX
 
 
+def _inside(xy: np.ndarray, step: float) -> np.ndarray:
+    """Points ``step`` apart inside the polygon ``xy`` (even-odd rule)."""
+    (u0, v0), (u1, v1) = xy.min(0), xy.max(0)
+    gx, gy = np.meshgrid(np.arange(u0, u1, step) + step / 2, np.arange(v0, v1, step) + step / 2)
+    px, py = gx.ravel()[:, None], gy.ravel()[:, None]
+    (ax, ay), (bx, by) = xy.T, np.roll(xy, -1, 0).T
+    with np.errstate(divide="ignore", invalid="ignore"):
+        cross = ((ay > py) != (by > py)) & (px < ax + (py - ay) * (bx - ax) / (by - ay))
+    return np.column_stack([px[:, 0], py[:, 0]])[np.count_nonzero(cross, axis=1) % 2 == 1]
+
+
 def _ink(pic) -> np.ndarray:
-    """Points (pixels from the plot's lower left) along what the picture draws, a few px apart."""
+    """Points (pixels from the plot's lower left) along what the picture draws, a few px apart, and
+    over the area of a filled shape (a body covered weighs more than a line crossed)."""
     x0, _x1, y0, _y1 = pic.box
     pts = []
     for el in pic.elements:
@@ -36,6 +48,10 @@ def _ink(pic) -> np.ndarray:
                 for a, b in zip(xy[:-1], xy[1:]):
                     n = int(min(400, np.hypot(*((b - a) * (pic.kx, pic.ky))) / 4.0)) + 2
                     pts.append(a + np.linspace(0.0, 1.0, n)[:, None] * (b - a))
+                if q.get("closed") and el.get("fill") not in (None, "none") and len(xy) > 2 \
+                        and not el["id"].startswith("key"):
+                    px = _inside((xy - (x0, y0)) * (pic.kx, pic.ky), 4.0)
+                    pts.append(px / (pic.kx, pic.ky) + (x0, y0))
             elif q["p"] == "ellipse":
                 t = np.linspace(0.0, 2 * np.pi, 48)
                 a, b, c, d = q["m"]
