@@ -227,3 +227,22 @@ def test_a_slow_steering_drag_in_the_page_turns_the_wheel_smoothly_and_keeps_the
     # and the radius slider's step turns the wheel by under 1° even at its smallest radius
     w = ex.controls[RADIUS]
     assert math.degrees(math.atan(L / w.min) - math.atan(L / (w.min + w.step))) < 1.0
+
+
+def test_letting_go_of_a_page_drag_fits_the_view_to_the_state_again():
+    # the page says when the mouse lets go ("release", after the drag's last request): the held
+    # view ends there, as at the end of a drag from Python, not at the next slider change
+    ex = CarExplorer(display="page", **{HEADING: 90.0})
+    qx, qy = _page_pixel(ex, *ex.handle_position("steering"))
+    for k in range(1, 6):
+        x, y = _page_pointer(ex, qx, qy - 2.0 * k)
+        ok, why = ex.canvas.handle_message({"type": "drag", "id": "steering", "x": x, "y": y, "seq": k})
+        assert ok, why
+    held = ex.picture()["box"]
+    fresh = CarExplorer(display="agg", **ex.values).picture()["box"]
+    assert held != fresh                                   # the drag moved the state under a held view
+    ok, why = ex.canvas.handle_message({"type": "release", "id": "steering", "seq": 9})
+    assert ok, why
+    assert ex.picture()["box"] == fresh and ex.message == ""
+    ok, why = ex.canvas.handle_message({"type": "release", "id": "no such handle", "seq": 10})
+    assert not ok and "no handle" in why

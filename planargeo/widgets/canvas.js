@@ -9,7 +9,7 @@
 //   * zoom (wheel), pan (drag the background) and reset move the drawing at once;
 //   * hover highlights an element and shows its description (asked of the kernel when
 //     the picture changed since it was last asked); a click focuses it.
-// What goes to the kernel: {type: "drag" | "view" | "tick" | "describe" | "sync" | "ping", ...},
+// What goes to the kernel: {type: "drag" | "release" | "view" | "tick" | "describe" | "sync" | "ping", ...},
 // at most one in flight; while one is in flight only the latest request of each type is
 // kept, and the next is sent when the kernel's "ack" arrives.  While the synced "playing"
 // is true, a "tick" is sent as soon as the previous reply has arrived (the kernel computes
@@ -490,6 +490,7 @@ function render({ model, el }) {
       const t = performance.now();
       requestAnimationFrame(() => handlePaints.push(performance.now() - t));
       const [x, y] = dataOf(px, py);
+      drag.moved = true;
       send({ type: "drag", id: drag.id, x, y }, t);
       return;
     }
@@ -530,6 +531,7 @@ function render({ model, el }) {
   svg.addEventListener("pointerup", () => {
     if (drag) {
       drag.circle.classList.remove("pg-dragging");
+      if (drag.moved) send({ type: "release", id: drag.id });   // after the drag's last request
       drag = null;
       if (!inflight && !pending.size) { placeHandles(); maybeTick(); }  // a refused position snaps back
     }

@@ -35,6 +35,8 @@ request of each type and sends it when the ``ack`` arrives.  Every request carri
 
 ``{"type": "drag", "id": str, "x": float, "y": float}``
     a handle moved to ``(x, y)`` (data coordinates);
+``{"type": "release", "id": str}``
+    the drag of a handle ended (the mouse let go), after its last ``drag``;
 ``{"type": "view", "box": [x0, x1, y0, y1] | None}``
     the user zoomed or panned (None: back to the explorer's own view);
 ``{"type": "tick"}``
@@ -289,6 +291,8 @@ class PictureCanvas(anywidget.AnyWidget):
         to refuse the position (the page snaps the handle back and shows the reason).
     on_view : callable ``(box or None) -> None``, optional
         Called for a checked zoom / pan / reset request.
+    on_release : callable ``(handle id) -> None``, optional
+        Called when the page's drag of a handle has ended.
     on_tick : callable ``() -> None``, optional
         Called for each checked Play tick while :attr:`playing` is true; it advances the
         motion and sets the new picture, or raises a
@@ -343,7 +347,8 @@ class PictureCanvas(anywidget.AnyWidget):
                  on_view: Callable[[Any], Any] | None = None,
                  on_tick: Callable[[], Any] | None = None,
                  around: Callable[[], Any] | None = None,
-                 on_idle: Callable[[float], Any] | None = None, **kwargs):
+                 on_idle: Callable[[float], Any] | None = None,
+                 on_release: Callable[[str], Any] | None = None, **kwargs):
         # what the page holds (set before the widget opens: opening reads the snapshot)
         self.version = 0
         self.last_update = None
@@ -366,6 +371,7 @@ class PictureCanvas(anywidget.AnyWidget):
         self.on_view = on_view
         self.on_tick = on_tick
         self.on_idle = on_idle
+        self.on_release = on_release
         self.around = around or contextlib.nullcontext
         self.n_requests = 0
         self.on_msg(self._on_msg)
@@ -502,11 +508,15 @@ class PictureCanvas(anywidget.AnyWidget):
             kind = msg.get("type")
             if kind == "ping":
                 return True, "", {}
-            if kind == "drag":
+            if kind in ("drag", "release"):
                 hid = msg.get("id")
                 if not isinstance(hid, str) or hid not in {h.get("id") for h in
                                                            self.picture.get("handles", [])}:
                     raise PlanargeoError(f"no handle {hid!r} in the picture")
+                if kind == "release":
+                    if self.on_release is not None:
+                        self.on_release(hid)
+                    return True, "", {}
                 x, y = _finite("x", msg.get("x")), _finite("y", msg.get("y"))
                 if self.on_drag is not None:
                     self.on_drag(hid, x, y)

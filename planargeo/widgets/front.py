@@ -154,7 +154,8 @@ class FrontMixin:
         from planargeo.widgets.canvas import PictureCanvas
 
         # the controls', readout's and message's syncs leave after each reply (the picture first)
-        return PictureCanvas(on_drag=self._page_drag, on_view=self._page_view_to, around=self._page_after)
+        return PictureCanvas(on_drag=self._page_drag, on_view=self._page_view_to, around=self._page_after,
+                             on_release=self._page_release)
 
     def redraw(self) -> None:
         """Send the shown state's picture to the front end (the page's canvas, or a PNG)."""

@@ -187,6 +187,11 @@ class HandleMixin:
         if not self._drag_to(self._handle(name), x, y):
             raise PlanargeoError(self.message or f"drag of {name} refused")
 
+    def _page_release(self, name: str) -> None:
+        """The page's drag of ``name`` ended: as the end of a :meth:`drag` from Python."""
+        self._drag_active = self._handle(name)
+        self._release()
+
     def _release(self) -> None:
         """End of a :meth:`drag`: the shown state drawn again as a fresh explorer would draw it."""
         h, self._drag_active = self._drag_active, None
