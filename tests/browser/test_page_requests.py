@@ -6,7 +6,8 @@ the anywidget model that keeps what the page sends).  A handle is dragged with r
 mouse events through twenty moves while the "kernel" answers nothing: the page must
 have sent one request only; when that one is acknowledged, it sends exactly one more,
 the pointer's latest position (in data coordinates, from the picture's own view), and
-then nothing until that is acknowledged too.  The same real-browser rule is read off
+then nothing until that is acknowledged too; letting go sends one ``release`` after it, and
+then nothing more.  The same real-browser rule is read off
 the websocket for every explorer in ``test_page_explorers.py``.
 """
 from __future__ import annotations
@@ -64,4 +65,7 @@ def test_one_request_in_flight_and_the_latest_position_wins(harness_page):
     page.mouse.up()
     assert len(_requests(page)) == 2, "a request sent while the second was unanswered"
     _ack(page, last)
-    assert len(_requests(page)) == 2, "a request sent with nothing new to ask"
+    sent = _requests(page)        # the mouse let go: the release, after the drag's last request
+    assert [m["type"] for m in sent[2:]] == ["release"] and sent[2]["id"] == "P", sent[2:]
+    _ack(page, sent[2])
+    assert len(_requests(page)) == 3, "a request sent with nothing new to ask"
