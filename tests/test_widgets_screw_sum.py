@@ -310,6 +310,15 @@ def test_controls_a_kind_does_not_use_are_disabled_with_a_reason(ex):
     assert ex.readout_values == before
 
 
+def _clear_of(pic, box, glyph) -> bool:
+    """Whether a label's box (plot px, from the lower left) stays clear of a pole glyph's circle."""
+    x0, x1, y0, y1 = pic["box"]
+    (w, h), (ml, mr, mt, mb) = pic["size"], pic["margin"]
+    k = np.array([(w - ml - mr) / (x1 - x0), (h - mt - mb) / (y1 - y0)])
+    centre = (np.array([glyph["x"], glyph["y"]]) - [x0, y0]) * k
+    return bool(np.hypot(*(centre - np.clip(centre, box[:2], box[2:]))) > glyph["r"])
+
+
 @pytest.mark.parametrize("state", [dict(kind1="translation"), dict(kind2="translation"),
                                    dict(kind1="translation", angle1=90.0, y2=-1.0),
                                    dict(kind2="translation", x1=0.5, size1=2.0, size2=3.0, angle2=0.0)])
@@ -320,15 +329,10 @@ def test_a_translation_term_leaves_the_sums_label_off_the_other_pole(ex, state):
 
     ex.set(**state)
     pic = ex.picture()
-    x0, x1, y0, y1 = pic["box"]
-    (w, h), (ml, mr, mt, mb) = pic["size"], pic["margin"]
-    k = np.array([(w - ml - mr) / (x1 - x0), (h - mt - mb) / (y1 - y0)])
     term = next(i for i in ("v1", "v2") if any(p["p"] == "mark" for p in elements(pic)[i]["parts"]))
     (glyph,) = [p for p in elements(pic)[term]["parts"] if p["p"] == "glyph"]
-    centre = (np.array([glyph["x"], glyph["y"]]) - [x0, y0]) * k
     (box,) = [b for t, b in label_boxes(pic) if t == "v₃ = v₁ + v₂"]
-    nearest = np.clip(centre, box[:2], box[2:])
-    assert np.hypot(*(centre - nearest)) > glyph["r"], (term, box, centre)
+    assert _clear_of(pic, box, glyph), (term, box, glyph)
     assert problems(pic) == []
 
 
@@ -340,16 +344,11 @@ def test_a_translations_label_at_the_edge_is_clear_of_every_pole(ex, state):
 
     ex.set(**state)
     pic = ex.picture()
-    x0, x1, y0, y1 = pic["box"]
-    (w, h), (ml, mr, mt, mb) = pic["size"], pic["margin"]
-    k = np.array([(w - ml - mr) / (x1 - x0), (h - mt - mb) / (y1 - y0)])
     boxes = [b for t, b in label_boxes(pic) if t.endswith("at ∞")]
     assert boxes, label_boxes(pic)
     glyphs = [p for e in pic["elements"] for p in e["parts"] if p["p"] == "glyph"]
     assert len(glyphs) == 2                        # the other term's pole and the sum's, both in view
     for box in boxes:
         for g in glyphs:
-            centre = (np.array([g["x"], g["y"]]) - [x0, y0]) * k
-            nearest = np.clip(centre, box[:2], box[2:])
-            assert np.hypot(*(centre - nearest)) > g["r"], (box, g)
+            assert _clear_of(pic, box, g), (box, g)
     assert problems(pic) == []
