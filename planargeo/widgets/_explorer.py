@@ -184,22 +184,6 @@ class ChainBodies:
         return state_handle(self, "tip", tip, drag)
 
 
-def tipped(control, name: str, tooltip: str) -> W.ValueWidget:
-    """The widget of ``control`` (a description such as :class:`~planargeo.widgets.controls.Step`) with
-    ``tooltip``: a short label (symbol and unit) beside its slider, its meaning on hover.
-
-    Examples
-    --------
-    >>> from planargeo.widgets.controls import Step
-    >>> w = tipped(Step(0.05, 1.5, 0.01, 0.5, "ρ (m)"), "rho", "radius of gyration ρ (m)")
-    >>> w.description, w.tooltip
-    ('ρ (m)', 'radius of gyration ρ (m)')
-    """
-    w = control.make(name)
-    w.tooltip = tooltip
-    return w
-
-
 def time_text(t: float) -> str:
     """The scene time ``t`` (s) as the read-only time field holds it: to the nanosecond, no trailing zeros.
 

@@ -20,7 +20,7 @@ from planargeo.draw.pictures.car import (FORCE_SCALE, HALF_TRACK, NEAR, OVERHANG
                                          moves, view_box)
 from planargeo.errors import InputError, SceneError
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._explorer import Described, tipped
+from planargeo.widgets._explorer import Described
 from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["CarExplorer", "view_box", "grip"]
@@ -90,9 +90,9 @@ class CarExplorer(Described, Explorer):
             DRIVE: Step(-6000, 6000, 100, 0, DRIVE),
             FRICTION: Step(0.1, 1.2, 0.05, 0.9, FRICTION),
             # a short label (symbol and unit: the slider keeps its length), the meaning on hover
-            EPS: tipped(Step(0.0, 1.0, 0.01, 0.45, "ε (× L)"), EPS,
-                        "centre of mass ε L behind the front axle, in wheelbases L: 0 on the front axle, "
-                        "1 on the rear axle (6.114)"),
+            EPS: Step(0.0, 1.0, 0.01, 0.45, "ε (× L)",
+                      tip="centre of mass ε L behind the front axle, in wheelbases L: 0 on the front "
+                          "axle, 1 on the rear axle (6.114)"),
             "radius of gyration (m)": Step(0.3, 3.0, 0.05, 1.2, "radius of gyration (m)"),
             "mass (kg)": Step(400, 3000, 50, 1200, "mass (kg)"),
             HEADING: Step(0.0, 360.0, 1.0, 0.0, HEADING),

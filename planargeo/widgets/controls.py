@@ -120,23 +120,28 @@ class Step(_Control):
     value : float
         Default value.
     label : str
-        Description shown beside the slider (default: the control's name).
+        Description shown beside the slider (default: the control's name): short, a symbol and unit.
     integer : bool
         An integer slider.
+    tip : str
+        What the slider means, shown on hover (default: none).
     """
 
     def __init__(self, lo: float, hi: float, step: float, value: float, label: str = "",
-                 integer: bool = False):
+                 integer: bool = False, tip: str = ""):
         self.lo, self.hi, self.step, self.value, self.label = lo, hi, step, value, label
-        self.integer = integer
+        self.integer, self.tip = integer, tip
 
     def make(self, name: str) -> FloatSlider | IntSlider:
         # a default off the grid makes the step finer: it must be shown exactly
         step = self.step if self.integer else _representable_step(self.value, self.lo, self.step)
         cls, shown = (IntSlider, "d") if self.integer else (FloatSlider, f".{_decimals(step)}f")
-        return cls(value=self.value, min=self.lo, max=self.hi, step=step,
-                   description=self.label or name, continuous_update=True, readout_format=shown,
-                   style={"description_width": "initial"}, layout=W.Layout(width="310px"))
+        w = cls(value=self.value, min=self.lo, max=self.hi, step=step,
+                description=self.label or name, continuous_update=True, readout_format=shown,
+                style={"description_width": "initial"}, layout=W.Layout(width="310px"))
+        if self.tip:
+            w.tooltip = self.tip
+        return w
 
 
 class Choice(_Control):

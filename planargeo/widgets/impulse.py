@@ -25,7 +25,7 @@ import numpy as np
 
 from planargeo.draw.pictures.impulse import impulse_picture
 from planargeo.scenes.impulse import BODIES, body_outline, impulse
-from planargeo.widgets._explorer import Described, arrow_handle, grown_view, tipped, xy_handle
+from planargeo.widgets._explorer import Described, arrow_handle, grown_view, xy_handle
 from planargeo.widgets.base import Explorer, Step, point_text
 
 __all__ = ["ImpulseExplorer"]
@@ -75,7 +75,7 @@ class ImpulseExplorer(Described, Explorer):
             "strike y": Step(-0.55, 0.55, 0.005, 0.0, "blow point y (m)"),
             "strike angle": Step(-180, 180, 1.0, 90.0, "blow angle (deg)"),
             "J": Step(-5.0, 5.0, 0.05, 1.0, "impulse J (N·s)"),
-            "t": tipped(Step(0.0, T_MAX, 0.01, 0.0, "t (s)"), "t", "time after the blow t (s)"),
+            "t": Step(0.0, T_MAX, 0.01, 0.0, "t (s)", tip="time after the blow t (s)"),
         }
 
     # ------------------------------------------------------------------ handles and Play

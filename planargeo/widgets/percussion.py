@@ -21,7 +21,7 @@ from planargeo.screws.inertia import Inertia, percussion_axis, percussion_pole
 from planargeo.geometry.projective import from_xy, is_ideal
 from planargeo.draw.pictures._words import num
 from planargeo.widgets.readout import point_value
-from planargeo.widgets._explorer import Described, tipped, xy_handle
+from planargeo.widgets._explorer import Described, xy_handle
 from planargeo.widgets.base import Explorer, Handle, Step, cached
 
 __all__ = ["PercussionExplorer", "PRESETS", "parse_polygon"]
@@ -116,8 +116,8 @@ class PercussionExplorer(Described, Explorer):
                               continuous_update=False,
                               tooltip="vertices 'x, y; x, y; ...' (used with shape = custom polygon)"),
             "mass (kg)": Step(0.1, 5.0, 0.05, 1.0, "mass (kg)"),
-            "angular accel. α": tipped(Step(-50, 50, 0.5, 10.0, "α (rad/s²)"), "angular accel. α",
-                                       "angular acceleration α of the body (rad/s²)"),
+            "angular accel. α": Step(-50, 50, 0.5, 10.0, "α (rad/s²)",
+                                     tip="angular acceleration α of the body (rad/s²)"),
         }
 
     def __init__(self, **kw):

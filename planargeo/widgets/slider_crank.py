@@ -22,7 +22,7 @@ from planargeo.scenes.slider_crank import (DEAD_CENTRE_TOL, dead_centre_at, slid
                                            slider_crank_model, slider_crank_reactions, slider_crank_solve)
 from planargeo.simulate.integrate import energy
 from planargeo.widgets._explorer import (SceneTime, explorer_data, keep_run, run_to, state_handle,
-                                         time_value, tipped)
+                                         time_value)
 from planargeo.widgets._motion import Budget, refusal_on_picture
 from planargeo.widgets.base import Explorer, Step, Toggle, cached
 
@@ -128,10 +128,9 @@ class SliderCrankExplorer(SceneTime, Explorer):
     def make_controls(self):
         return {
             # short labels (symbol and unit: the slider keeps its length), the meaning on hover
-            "crank angle (deg)": tipped(Step(-180, 180, 1, 23.0, "ψ₀ (°)"), "crank angle (deg)",
-                                        "crank angle ψ₀ at t = 0 (°): where Play starts"),
-            "crank speed": tipped(Step(-100, 100, 0.5, 20.0, "ψ̇₀ (rad/s)"), "crank speed",
-                                  "crank speed ψ̇₀ at t = 0 (rad/s)"),
+            "crank angle (deg)": Step(-180, 180, 1, 23.0, "ψ₀ (°)",
+                                      tip="crank angle ψ₀ at t = 0 (°): where Play starts"),
+            "crank speed": Step(-100, 100, 0.5, 20.0, "ψ̇₀ (rad/s)", tip="crank speed ψ̇₀ at t = 0 (rad/s)"),
             "t (s)": self.time_control(),
             "drive": W.ToggleButtons(options=("free", "constant-speed"), value="free", description="crank"),
             "rod length": Step(1.0, 8.0, 0.01, 5.0, "rod length l (m)"),

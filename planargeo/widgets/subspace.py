@@ -25,7 +25,7 @@ from planargeo.scenes.subspace import subspace_state, unit_direction
 from planargeo.screws.twists import inertia_matrix
 from planargeo.geometry.projective import is_at_infinity, is_ideal
 from planargeo.widgets.readout import point_value
-from planargeo.widgets._explorer import arrow_handle, explorer_data, grown_view, shown, tipped, xy_handle
+from planargeo.widgets._explorer import arrow_handle, explorer_data, grown_view, shown, xy_handle
 from planargeo.widgets.base import Explorer, Step
 
 __all__ = ["SubspaceExplorer", "JOINT_OPTIONS", "SHOW_OPTIONS"]
@@ -67,7 +67,7 @@ class SubspaceExplorer(Explorer):
             "force angle": Step(-180, 180, 1.0, 90.0, "force angle (deg)"),
             "F": Step(-4.0, 4.0, 0.05, 1.0, "force F (N)"),
             "m": Step(0.2, 10.0, 0.1, 2.0, "mass m (kg)"),
-            "rho": tipped(Step(0.05, 1.5, 0.01, 0.5, "ρ (m)"), "rho", "radius of gyration ρ of the body (m)"),
+            "rho": Step(0.05, 1.5, 0.01, 0.5, "ρ (m)", tip="radius of gyration ρ of the body (m)"),
             "show": W.ToggleButtons(options=list(SHOW_OPTIONS), value="f = TQ + Rμ", description="show",
                                     style={"button_width": "auto"}),
         }
