@@ -5,13 +5,14 @@
 // are redrawn; the handles keep their nodes.  A view starts from the synced "snapshot"
 // and asks for the whole picture ("sync") whenever an update does not apply to its version.
 // What happens in the page, at once:
-//   * a dragged handle follows the pointer in the same animation frame;
+//   * a dragged handle follows the pointer in the same animation frame; arrow keys nudge the
+//     handle last clicked, and letting go of them ends the nudges as a mouse-up ends a drag;
 //   * zoom (wheel), pan (drag the background) and reset move the drawing at once;
 //   * hover highlights an element and shows its description (asked of the kernel when
 //     the picture changed since it was last asked); a click focuses it.
 // What goes to the kernel: {type: "drag" | "release" | "view" | "tick" | "describe" | "sync" | "ping", ...},
 // at most one in flight; while one is in flight only the latest request of each type is
-// kept, and the next is sent when the kernel's "ack" arrives.  While the synced "playing"
+// kept (in the order last asked), and the next is sent when the kernel's "ack" arrives.  While the synced "playing"
 // is true, a "tick" is sent as soon as the previous reply has arrived (the kernel computes
 // the next frame while the page paints this one, and sends one more frame alone halfway to
 // the next tick; a "halt" message says that Play was refused in such a frame).  While Play
@@ -111,7 +112,8 @@ function render({ model, el }) {
   const stats = [];
   let current = null;
   function send(msg, tInput) {
-    if (inflight) { pending.set(msg.type, { msg, tInput }); return; }
+    // the latest of each type, kept in the order last asked: a release asked after a drag goes after it
+    if (inflight) { pending.delete(msg.type); pending.set(msg.type, { msg, tInput }); return; }
     inflight = true;
     seq += 1;
     current = { seq, type: msg.type, tInput: tInput ?? performance.now(), tSent: performance.now() };
@@ -546,18 +548,38 @@ function render({ model, el }) {
     setLocalView([x + (box[0] - x) * f, x + (box[1] - x) * f, y + (box[2] - y) * f, y + (box[3] - y) * f]);
     send({ type: "view", box: box });
   }, { passive: false });
+  // arrow keys nudge the focused handle (a drag); letting go of the last arrow key held (or the
+  // picture losing the keyboard's focus) ends the nudges as a mouse-up ends a drag: a "release"
+  const DIRS = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] };
+  const keysHeld = new Set();
+  let nudged = null;              // the handle nudged since the last release
+  function endNudge() {
+    keysHeld.clear();
+    if (nudged === null) return;
+    const id = nudged;
+    nudged = null;
+    send({ type: "release", id });
+  }
   svg.addEventListener("keydown", (ev) => {
-    const dirs = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] };
-    if (!(ev.key in dirs) || !focusHandle || !frame) return;
+    if (!(ev.key in DIRS) || !focusHandle || !frame) return;
     const h = st.handles.find((q) => q[0] === focusHandle);
     if (!h) return;
     ev.preventDefault();
-    const step = (ev.shiftKey ? 20 : 2) / kx, [dx, dy] = dirs[ev.key];
+    if (nudged !== null && nudged !== h[0]) endNudge();
+    keysHeld.add(ev.key);
+    const step = (ev.shiftKey ? 20 : 2) / kx, [dx, dy] = DIRS[ev.key];
     h[1] += dx * step;
     h[2] += dy * step;
     placeHandles();
+    nudged = h[0];
     send({ type: "drag", id: h[0], x: h[1], y: h[2] });
   });
+  svg.addEventListener("keyup", (ev) => {
+    if (!(ev.key in DIRS)) return;
+    keysHeld.delete(ev.key);
+    if (!keysHeld.size) endNudge();
+  });
+  svg.addEventListener("blur", endNudge);
   reset.addEventListener("click", () => send({ type: "view", box: null }));
 
   const snap = model.get("snapshot");

@@ -30,13 +30,15 @@ asks for the whole picture again whenever an update does not apply to its versio
 Page → kernel
 -------------
 At most one request is in flight; while one is, the page keeps only the latest
-request of each type and sends it when the ``ack`` arrives.  Every request carries
+request of each type (in the order they were last asked) and sends them one by one as
+the ``ack`` arrives.  Every request carries
 ``"seq"`` (an int) and the page's ``"client"`` id (echoed in the ack):
 
 ``{"type": "drag", "id": str, "x": float, "y": float}``
     a handle moved to ``(x, y)`` (data coordinates);
 ``{"type": "release", "id": str}``
-    the drag of a handle ended (the mouse let go), after its last ``drag``;
+    the drag of a handle ended (the mouse let go, or the last arrow key that nudged it:
+    each press of an arrow key is a ``drag`` of the handle last clicked), after its last ``drag``;
 ``{"type": "view", "box": [x0, x1, y0, y1] | None}``
     the user zoomed or panned (None: back to the explorer's own view);
 ``{"type": "tick"}``
