@@ -154,3 +154,65 @@ def test_apparent_mass_of_an_articulated_inertia_figure_3_3(theta):
     ref = 1.0 / (math.cos(theta) ** 2 / m + math.sin(theta) ** 2 / (2 * m))
     assert apparent_mass(A, line) == pytest.approx(ref, rel=1e-12)
     assert apparent_mass(A, np.multiply(line, -3.0)) == pytest.approx(ref, rel=1e-12)   # any multiple
+
+
+_BLOWS = [(0.0, 1.0, 0.55), (0.6, -0.8, 0.3), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (-3.0, 4.0, -1.2),
+          (5e-320, 0.0, 1e-320), (0.0, 1e300, 9e299), (2.0 ** 600, -(2.0 ** 599), 0.0)]
+
+
+def _bits(a) -> bytes:
+    return np.asarray(a, dtype=float).tobytes()
+
+
+@pytest.mark.parametrize("held", [True, False])
+@pytest.mark.parametrize("body", list(BODIES))
+def test_struck_body_answers_many_blows_as_the_one_blow_functions_bit_for_bit(body, held):
+    """A body inverted once (StruckBody) gives, blow after blow, exactly the bits of impulse_response and
+    apparent_mass, which check and invert the inertia anew each call; the door meets its closed forms."""
+    from planargeo.mechanics.impulse import StruckBody
+
+    I = np.asarray(scenes.build("impulse", body=body, m=3.0).quantities["I"], dtype=float)
+    s = [0.0, 0.0, 1.0] if held else None
+    b = StruckBody(I, s)
+    assert b.held is held and not b.M.flags.writeable and not b.I.flags.writeable
+    for j in _BLOWS:
+        dv, jr = b.response(j)
+        dv1, jr1 = impulse_response(I, j, s)
+        assert _bits(dv) == _bits(dv1) and _bits(jr) == _bits(jr1), j
+        if math.hypot(j[0], j[1]) > 0:
+            assert _bits(b.apparent_mass(j)) == _bits(apparent_mass(I, j, s)), j
+    if body == "door":
+        ref = door_closed_forms(3.0, 0.6)
+        omega = ref["omega"] if held else (0.6 - L / 2) / ref["Jc"]         # about the hinge / the centre
+        assert b.response([0.0, 1.0, 0.6])[0][2] == pytest.approx(omega, rel=1e-12)
+        assert b.apparent_mass([0.0, 1.0, 0.6]) == pytest.approx(ref["held" if held else "free"], rel=1e-12)
+
+
+@pytest.mark.parametrize("support", ["held", "free"])
+def test_scene_struck_over_one_body_equals_the_one_blow_functions_bit_for_bit(support):
+    """The scene keeps one inverted body per (outline, mass): a blow moved over it gives exactly what
+    impulse_response and apparent_mass give for the scene's own I, ĵ and joint."""
+    for x, y, a in ((0.55, 0.0, 90.0), (0.3, 0.02, 33.0), (0.0, 0.0, 90.0), (0.8, -0.01, 180.0)):
+        r = scenes.build("impulse", body="bat", support=support, m=0.9, x=x, y=y, angle_deg=a, J=1.0)
+        I, j, s = r.extra["I"], r.extra["impulse"], r.extra["s"]
+        dv, jr = impulse_response(I, j, s if support == "held" else None)
+        assert _bits(r.extra["dv"]) == _bits(dv) and _bits(r.extra["reaction"]) == _bits(jr)
+        assert _bits(r.extra["dv_free"]) == _bits(impulse_response(I, j)[0])
+        held = apparent_mass(I, j, s)
+        assert r.quantities["apparent_mass_held"] == (held if math.isfinite(held) else None)
+        assert _bits(r.quantities["apparent_mass_free"]) == _bits(apparent_mass(I, j))
+
+
+def test_struck_body_refuses_bad_input_by_name():
+    from planargeo.errors import InputError, SingularInertiaError
+    from planargeo.mechanics.impulse import StruckBody
+
+    with pytest.raises(SingularInertiaError):
+        StruckBody(np.diag([1.0, 1.0, 0.0]))
+    with pytest.raises(InputError, match=r"^I must have shape \(\.\.\., 3, 3\)"):
+        StruckBody([[1.0, 0.0], [0.0, 1.0]], [0.0, 0.0, 1.0])
+    b = StruckBody(np.diag([2.0, 2.0, 1.0]))
+    with pytest.raises(InputError, match="impulse"):
+        b.response([1.0, float("nan"), 0.0])
+    with pytest.raises(DegenerateGeometryError, match="line"):
+        b.apparent_mass([0.0, 0.0, 1.0])

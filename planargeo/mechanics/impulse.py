@@ -6,6 +6,9 @@ Held by a joint ``s``, ``Δv = s (sᵀIs)⁻¹ sᵀ ĵ`` (6.93, applied-wrench s
 with ``ĵ_R = −R Uᵀ ĵ`` (6.38, 6.61b), zero for a blow on the pivot's axis of percussion, through
 the centre of percussion ``l = d + ρ²/d`` (5.67).  The apparent mass along a line (figure 3.3) is
 ``1 / (uᵀ M u)``, ``u`` the unit force on the line and ``M`` the body's (effective) mobility.
+
+:class:`StruckBody` checks and inverts the inertia once for any number of blows (a blow dragged
+over the same body); :func:`impulse_response` and :func:`apparent_mass` are one blow's shorthands.
 """
 from __future__ import annotations
 
@@ -20,7 +23,7 @@ from planargeo.mechanics.model import _finite_tuple
 from planargeo.mechanics.subspaces import effective_mobility
 from planargeo.screws.inertia import centre_of_mass, mobility, radius_of_gyration
 
-__all__ = ["impulse_response", "apparent_mass", "centre_of_percussion", "moved_points"]
+__all__ = ["StruckBody", "impulse_response", "apparent_mass", "centre_of_percussion", "moved_points"]
 
 _documented = entries({
     "I": "I : array_like, shape (3, 3)\n    The body's inertia at the origin (definite for a free body).",
@@ -41,6 +44,116 @@ def _unit_force(line) -> np.ndarray:
         raise DegenerateGeometryError(
             f"line must be a force line, not the line at infinity (a couple has no apparent mass), got {u!r}")
     return u / F
+
+
+@_documented
+class StruckBody:
+    """A body at rest, free or held by a joint, ready to be struck: its mobility computed once.
+
+    The inertia is checked and inverted here, once (``I⁻¹`` free, ``s (sᵀIs)⁻¹ sᵀ`` held, 6.93);
+    :meth:`response` and :meth:`apparent_mass` then only multiply.
+
+    Parameters
+    ----------
+    {I}
+    {s}
+
+    Attributes
+    ----------
+    I, M : ndarray, shape (3, 3)
+        The inertia and the body's (effective) mobility (read-only).
+    held : bool
+        Whether a joint holds the body.
+
+    Raises
+    ------
+    InputError, SingularInertiaError, SingularConfigurationError
+        A bad argument, ``I`` not symmetric positive semi-definite (definite when free), ``sᵀIs`` singular.
+
+    Examples
+    --------
+    A uniform rod (m = 3, L = 2) pivoted at the origin: struck across at x = 1 and at its tip.
+
+    >>> from planargeo.screws.twists import inertia_matrix
+    >>> rod = StruckBody(inertia_matrix(3.0, [1.0, 0.0], 1.0), [0.0, 0.0, 1.0])
+    >>> [float(rod.response([0.0, 1.0, x])[0][2]) for x in (1.0, 2.0)]
+    [0.25, 0.5]
+    >>> round(rod.apparent_mass([0.0, 1.0, 2.0]), 12)
+    1.0
+    """
+
+    def __init__(self, I, s=None) -> None:
+        M = mobility(I) if s is None else effective_mobility(I, s)     # a fresh array: kept as it is
+        self.I = np.array(I, dtype=float, order="K")
+        self.M = M
+        self.held = s is not None
+        for a in (self.I, self.M):
+            a.flags.writeable = False
+
+    def __repr__(self) -> str:
+        return f"StruckBody({'held' if self.held else 'free'}, I={self.I.tolist()})"
+
+    def response(self, impulse) -> tuple[np.ndarray, np.ndarray]:
+        """Velocity change and reaction impulse after the blow ``impulse`` (:func:`impulse_response`).
+
+        Parameters
+        ----------
+        impulse : array_like, shape (3,)
+            The blow's impulse wrench ``ĵ`` (N·s).
+
+        Returns
+        -------
+        dv, reaction : ndarray, shape (3,)
+
+        Raises
+        ------
+        InputError
+            ``impulse`` not three finite numbers.
+        NumericOverflowError
+            ``Δv`` or the reaction beyond double precision.
+        """
+        j = _single(impulse, "impulse")
+        # Δv and ĵᵣ are linear in ĵ: computed for ĵ scaled by 2^-e (exact) to a largest entry in [0.5, 1)
+        # when it lies outside (2^-500, 2^500), then scaled back; a subnormal or huge blow keeps its digits
+        # and no product of the matrices with it under- or overflows on the way.
+        m = float(np.max(np.abs(j)))
+        e = math.frexp(m)[1] if m > 0 and not 2.0 ** -500 < m < 2.0 ** 500 else 0
+        js = np.ldexp(j, -e) if e else j
+        dv = self.M @ js
+        reaction = self.I @ dv - js if self.held else np.zeros(3)
+        if e:
+            with np.errstate(over="ignore", under="ignore"):
+                dv, reaction = np.ldexp(dv, e), np.ldexp(reaction, e)
+        if not (np.isfinite(dv).all() and np.isfinite(reaction).all()):
+            raise NumericOverflowError(f"impulse_response: the velocity change or the reaction overflows double "
+                                       f"precision (impulse {tuple(map(float, j))} too large for this inertia)")
+        return dv + 0.0, reaction + 0.0
+
+    def apparent_mass(self, line) -> float:
+        """Apparent mass ``1 / (uᵀ M u)`` along a force line (:func:`apparent_mass`).
+
+        Parameters
+        ----------
+        line : array_like, shape (3,)
+            The line (any non-zero multiple of a force wrench on it).
+
+        Returns
+        -------
+        float
+            kg; ``inf`` through a pivot.
+
+        Raises
+        ------
+        DegenerateGeometryError
+            ``line`` is the line at infinity (a couple).
+        """
+        u = _unit_force(line)
+        M = self.M
+        w = float(u @ M @ u)
+        scale = float(np.max(np.abs(M))) * float(u @ u)
+        if w <= 1e-14 * scale:
+            return math.inf
+        return 1.0 / w
 
 
 @_documented
@@ -66,6 +179,10 @@ def impulse_response(I, impulse, s=None) -> tuple[np.ndarray, np.ndarray]:
     NumericOverflowError
         ``Δv`` or the reaction beyond double precision (a huge blow on a tiny mass).
 
+    See Also
+    --------
+    StruckBody : many blows on one body, its inertia inverted once.
+
     Examples
     --------
     A uniform rod (m = 3, L = 2) pivoted at the origin, struck across at x = 1 by a unit impulse:
@@ -76,23 +193,8 @@ def impulse_response(I, impulse, s=None) -> tuple[np.ndarray, np.ndarray]:
     >>> dv + 0.0, jr + 0.0
     (array([0.  , 0.  , 0.25]), array([ 0.  , -0.25,  0.  ]))
     """
-    j = _single(impulse, "impulse")
-    M = mobility(I) if s is None else effective_mobility(I, s)
-    # Δv and ĵᵣ are linear in ĵ: computed for ĵ scaled by 2^-e (exact) to a largest entry in [0.5, 1)
-    # when it lies outside (2^-500, 2^500), then scaled back; a subnormal or huge blow keeps its digits
-    # and no product of the matrices with it under- or overflows on the way.
-    m = float(np.max(np.abs(j)))
-    e = math.frexp(m)[1] if m > 0 and not 2.0 ** -500 < m < 2.0 ** 500 else 0
-    js = np.ldexp(j, -e) if e else j
-    dv = M @ js
-    reaction = np.zeros(3) if s is None else np.asarray(I, dtype=float) @ dv - js
-    if e:
-        with np.errstate(over="ignore", under="ignore"):
-            dv, reaction = np.ldexp(dv, e), np.ldexp(reaction, e)
-    if not (np.isfinite(dv).all() and np.isfinite(reaction).all()):
-        raise NumericOverflowError(f"impulse_response: the velocity change or the reaction overflows double "
-                                   f"precision (impulse {tuple(map(float, j))} too large for this inertia)")
-    return dv + 0.0, reaction + 0.0
+    _single(impulse, "impulse")                  # a bad blow is named before the inertia is inverted
+    return StruckBody(I, s).response(impulse)
 
 
 @_documented
@@ -116,6 +218,10 @@ def apparent_mass(I, line, s=None) -> float:
     DegenerateGeometryError
         ``line`` is the line at infinity (a couple).
 
+    See Also
+    --------
+    StruckBody : many lines on one body, its inertia inverted once.
+
     Examples
     --------
     A uniform rod (m = 3, L = 2) pivoted at one end, struck across at its tip: ``m/3``; free, ``m/4``.
@@ -125,13 +231,8 @@ def apparent_mass(I, line, s=None) -> float:
     >>> round(apparent_mass(I, [0.0, 1.0, 2.0], [0.0, 0.0, 1.0]), 12), round(apparent_mass(I, [0.0, 1.0, 2.0]), 12)
     (1.0, 0.75)
     """
-    u = _unit_force(line)
-    M = mobility(I) if s is None else effective_mobility(I, s)
-    w = float(u @ M @ u)
-    scale = float(np.max(np.abs(M))) * float(u @ u)
-    if w <= 1e-14 * scale:
-        return math.inf
-    return 1.0 / w
+    _unit_force(line)                            # the line at infinity is named before the inertia is inverted
+    return StruckBody(I, s).apparent_mass(line)
 
 
 def centre_of_percussion(I, pivot) -> np.ndarray:

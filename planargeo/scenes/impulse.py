@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from planargeo.mechanics.impulse import apparent_mass, centre_of_percussion, impulse_response
+from planargeo.mechanics.impulse import StruckBody, centre_of_percussion
 from planargeo.mechanics.joints import motion_space
 from planargeo.scenes import SceneResult, check_param, plain, register
 from planargeo.scenes.subspace import unit_direction
@@ -89,6 +89,14 @@ def _body_inertia(outline: tuple, m: float) -> tuple:
     return I, c, float(inertia.radius_of_gyration), cop
 
 
+@functools.lru_cache(maxsize=16)
+def _struck(outline: tuple, m: float) -> tuple[StruckBody, StruckBody]:
+    """The body held at the origin by a revolute joint and free, each inertia checked and inverted
+    once per (outline, mass): a blow dragged over the same body only multiplies (thesis 6.93)."""
+    I = _body_inertia(outline, m)[0]
+    return StruckBody(I, motion_space("revolute", (0.0, 0.0))), StruckBody(I)
+
+
 @register("impulse", checks={"body": tuple(BODIES), "support": SUPPORTS, "m": "positive",
                              "J": "nonzero"})
 def impulse(body: str = "bat", support: str = "held", m: float = 0.9, x: float = 0.55, y: float = 0.0,
@@ -128,12 +136,14 @@ def impulse(body: str = "bat", support: str = "held", m: float = 0.9, x: float =
     >>> round(r.quantities["omega"], 12) == round(0.9 / (3.0 * (4 * 0.81 + 0.0016) / 12), 12)
     True
     """
-    I, c, rho, cop = _body_inertia(tuple(map(tuple, BODIES[body])), float(m))
+    key = (tuple(map(tuple, BODIES[body])), float(m))
+    I, c, rho, cop = _body_inertia(*key)
+    held, free = _struck(*key)
     e = J * unit_direction(angle_deg)
     j = np.array([e[0], e[1], x * e[1] - y * e[0]])              # the blow's impulse wrench (5.56)
     s = motion_space("revolute", (0.0, 0.0))
-    dv, reaction = impulse_response(I, j, s if support == "held" else None)
-    dv_free, _ = impulse_response(I, j, None)
+    dv, reaction = (held if support == "held" else free).response(j)
+    dv_free, _ = free.response(j)
     size = float(np.ptp(np.array(BODIES[body]), axis=0).max())
     n = c / float(np.hypot(*c))                                  # along grip -> centre of mass
     t = np.array([-n[1], n[0]])                                  # across
@@ -146,8 +156,8 @@ def impulse(body: str = "bat", support: str = "held", m: float = 0.9, x: float =
         "reaction_across": float(rf @ t), "reaction_along": float(rf @ n),
         "pole_if_free": _pole(dv_free, size),
         "centre_of_percussion": plain(cop),
-        "apparent_mass_held": _finite_or_none(apparent_mass(I, j, s)),
-        "apparent_mass_free": _finite_or_none(apparent_mass(I, j)),
+        "apparent_mass_held": _finite_or_none(held.apparent_mass(j)),
+        "apparent_mass_free": _finite_or_none(free.apparent_mass(j)),
         "kinetic_energy": float(0.5 * dv @ I @ dv), "v_grip": plain(v_grip),
     }
     q["apparent_mass"] = q["apparent_mass_held"] if support == "held" else q["apparent_mass_free"]
