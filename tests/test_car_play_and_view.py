@@ -126,3 +126,25 @@ def test_a_fresh_car_after_a_long_drag_history_shows_the_same_state():
         return {**pic, "elements": [el for el in pic["elements"] if el["id"] != "figure message"]}
 
     assert drawn(fresh) == drawn(ex)
+
+
+@pytest.mark.parametrize("heading", [0.0, 120.0])
+def test_keyboard_nudges_hold_the_view_and_their_release_fits_it_again(heading):
+    """Arrow keys nudge a handle by 2 px, each a ``drag`` message; letting go sends ``release``
+    (canvas.js; the page's side: tests/browser/test_keyboard_release.py).  The nudges keep the view they
+    began in; the release shows what a fresh explorer of the same values shows."""
+    ex = CarExplorer(display="page", **{HEADING: heading})
+    c = ex.canvas
+    before = c.picture["box"]
+    x, y = ex.handle_position("ICR")
+    step = 2.0 / c.picture["size"][0] * (before[1] - before[0])        # about 2 px of the view
+    ux, uy = math.cos(math.radians(heading)), math.sin(math.radians(heading))   # along the rear axle line
+    for k in range(1, 6):                                               # five presses: the ICR nearer
+        assert c.handle_message({"type": "drag", "id": "ICR", "x": x + k * step * ux, "y": y + k * step * uy,
+                                 "seq": k}) == (True, "")
+    assert ex.values[RADIUS] == pytest.approx(8.0 - 5 * step, abs=1e-9)
+    assert c.picture["box"] == before                                    # the view held while nudged
+    assert c.handle_message({"type": "release", "id": "ICR", "seq": 9}) == (True, "")
+    fresh = CarExplorer(display="page", **ex.values)
+    assert c.picture == fresh.canvas.picture
+    assert c.picture["box"] != before                                    # fitted to the nearer ICR
