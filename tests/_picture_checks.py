@@ -94,3 +94,98 @@ def fill(pic: dict, pts) -> float:
     x0, x1, y0, y1 = pic["box"]
     pts = np.asarray(pts, float).reshape(-1, 2)
     return max(float(np.ptp(pts[:, 0])) / (x1 - x0), float(np.ptp(pts[:, 1])) / (y1 - y0))
+
+
+def _arc(r: float, ccw: bool, n: int = 40) -> np.ndarray:
+    """A pole glyph's 270° arc and head about the origin (pixels), drawn as the page does (-45° on)."""
+    a0, span = math.radians(-45.0), math.radians(270.0)
+    t = np.linspace(a0, a0 + span, n) if ccw else np.linspace(a0 + span, a0, n)
+    arc = r * np.column_stack([np.cos(t), np.sin(t)])
+    te = t[-1]
+    tang = np.array([-math.sin(te), math.cos(te)]) * (1.0 if ccw else -1.0)
+    nrm = np.array([math.cos(te), math.sin(te)])
+    h = min(max(3.0, 0.45 * r), 6.0)
+    end = arc[-1]
+    return arc, np.array([end + tang * h, end - 0.5 * h * nrm, end + 0.5 * h * nrm, end + tang * h])
+
+
+def strokes(pic: dict) -> list[tuple[str, np.ndarray]]:
+    """``(element id, (n, 2) pixel polyline)`` of everything drawn with a line: paths, ellipses,
+    pole glyphs (arc and head), arrows (shaft and head) and markers (their outline square)."""
+    out = []
+    for e in pic["elements"]:
+        if e.get("color") == "none":
+            continue
+        eid = e["id"]
+        for part in e["parts"]:
+            k = part["p"]
+            if k == "path":
+                xy = np.asarray(part["xy"], float).reshape(-1, 2)
+                if part.get("closed"):
+                    xy = np.vstack([xy, xy[:1]])
+                out.append((eid, np.array([to_px(pic, x, y) for x, y in xy])))
+                continue
+            if k in ("text",) or "x" not in part:
+                continue
+            q = np.array(to_px(pic, part["x"], part["y"]))
+            if k == "ellipse":
+                t = np.linspace(0.0, 2 * np.pi, 97)
+                a, b, c, d = part["m"]
+                xy = np.column_stack([part["x"] + a * np.cos(t) + b * np.sin(t),
+                                      part["y"] + c * np.cos(t) + d * np.sin(t)])
+                out.append((eid, np.array([to_px(pic, x, y) for x, y in xy])))
+            elif k == "glyph":
+                arc, head = _arc(part["r"], part["ccw"])
+                out += [(eid, q + arc), (eid, q + head)]
+            elif k == "arrow":
+                tip = np.array([part["dx"], part["dy"]])
+                hp = max(8.0, 4.0 * e["width"])
+                u = tip / (float(np.hypot(*tip)) or 1.0)
+                n = np.array([-u[1], u[0]])
+                tri = [tip, tip - u * hp + n * 0.35 * hp, tip - u * hp - n * 0.35 * hp, tip]
+                out += [(eid, q + np.array([[0.0, 0.0], tip - u * 0.8 * hp])), (eid, q + np.array(tri))]
+            elif k == "mark":
+                s = part["size"] / 2
+                out.append((eid, q + np.array([[-s, -s], [s, -s], [s, s], [-s, s], [-s, -s]])))
+    return out
+
+
+def _meets(xy: np.ndarray, box, tol: float) -> bool:
+    """Whether a polyline passes through a box shrunk by ``tol`` pixels (Liang-Barsky per segment)."""
+    x0, y0, x1, y1 = box[0] + tol, box[1] + tol, box[2] - tol, box[3] - tol
+    if x0 >= x1 or y0 >= y1:
+        return False
+    a, b = xy[:-1], xy[1:]
+    keep = ~((np.maximum(a[:, 0], b[:, 0]) < x0) | (np.minimum(a[:, 0], b[:, 0]) > x1)
+             | (np.maximum(a[:, 1], b[:, 1]) < y0) | (np.minimum(a[:, 1], b[:, 1]) > y1))
+    for (px, py), (qx, qy) in zip(a[keep], b[keep]):
+        t0, t1, dx, dy = 0.0, 1.0, qx - px, qy - py
+        for p, q in ((-dx, px - x0), (dx, x1 - px), (-dy, py - y0), (dy, y1 - py)):
+            if p == 0:
+                if q < 0:
+                    break
+            else:
+                r = q / p
+                if p < 0:
+                    t0 = max(t0, r)
+                else:
+                    t1 = min(t1, r)
+        else:
+            if t0 <= t1:
+                return True
+    return False
+
+
+def crossed_labels(pic: dict, tol: float = 1.0, skip=BASE_IDS) -> list[tuple[str, str, str]]:
+    """``(element id, label text, other element id)`` for each shown label whose box (shrunk by
+    ``tol`` pixels) is crossed by another element's stroke (:func:`strokes`) or meets another
+    element's label box.  Elements whose id ``skip`` matches (the base's key and message) are left out."""
+    boxes = [b for b in label_boxes(pic) if not (skip and skip.fullmatch(b[0]))]
+    lines = [s for s in strokes(pic) if not (skip and skip.fullmatch(s[0]))]
+    out = []
+    for eid, text, box in boxes:
+        hits = {oid for oid, xy in lines if oid != eid and _meets(xy, box, tol)}
+        hits |= {oid for oid, _t, b in boxes if oid != eid and min(box[2], b[2]) - max(box[0], b[0]) > tol
+                 and min(box[3], b[3]) - max(box[1], b[1]) > tol}
+        out += [(eid, text, oid) for oid in sorted(hits)]
+    return out

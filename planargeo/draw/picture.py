@@ -41,6 +41,7 @@ from typing import Any
 
 import numpy as np
 
+from planargeo.draw._labels import _align, place_labels
 from planargeo.draw.geometry import _clip, conic_curves, conic_geometry
 from planargeo.draw.style import COLORS, LABEL_PT, LINEWIDTHS, STYLES
 from planargeo.errors import InputError, NonFiniteError, ShapeError
@@ -221,27 +222,17 @@ def _dash(role: str):
     return None
 
 
-def _align(n) -> tuple[str, str]:
-    """Text alignment for a label put beside an anchor in the pixel direction ``n``."""
-    ha = "left" if n[0] > 0.3 else "right" if n[0] < -0.3 else "center"
-    va = "bottom" if n[1] > 0.3 else "top" if n[1] < -0.3 else "center"
-    return ha, va
+def _text_part(x, y, text, dx=0.0, dy=0.0, ha="left", va="bottom", along=None) -> dict:
+    """A text part: ``text`` (mathtext made plain) at ``(x, y)``, moved ``(dx, dy)`` pixels.
 
-
-def _text_part(x, y, text, dx=0.0, dy=0.0, ha="left", va="bottom") -> dict:
-    """A text part: ``text`` (mathtext made plain) at ``(x, y)``, moved ``(dx, dy)`` pixels."""
-    return {"p": "text", "x": float(x), "y": float(y), "dx": float(dx), "dy": float(dy),
+    ``along``: the pixel direction of a line the label may slide along, on either side (the
+    placer's, left out of the data).
+    """
+    part = {"p": "text", "x": float(x), "y": float(y), "dx": float(dx), "dy": float(dy),
             "text": plain_text(text), "ha": ha, "va": va}
-
-
-_SPOT_ANGLES = np.deg2rad([45, 135, 225, 315, 0, 90, 180, 270])
-_SPOT_DIR = np.column_stack([np.cos(_SPOT_ANGLES), np.sin(_SPOT_ANGLES)])
-_SPOT_HA, _SPOT_VA = zip(*map(_align, _SPOT_DIR))
-_ALIGN_X = {"left": 0.0, "center": 0.5, "right": 1.0}
-_ALIGN_Y = {"bottom": 0.0, "center": 0.5, "top": 1.0}
-#: the eight spots as plain floats: (cos, sin, box's left edge and bottom in box sizes)
-_SPOTS = [(float(c), float(s), _ALIGN_X[ha], _ALIGN_Y[va])
-          for (c, s), ha, va in zip(_SPOT_DIR, _SPOT_HA, _SPOT_VA)]
+    if along is not None:
+        part["along"] = (float(along[0]), float(along[1]))
+    return part
 
 
 #: Docstring entries of the element methods (and of :mod:`planargeo.draw._shared`), written once
@@ -524,7 +515,8 @@ class Picture:
             if arrow:
                 parts.append({"p": "arrow", "x": fx, "y": fy, "dx": epx * 24, "dy": epy * 24})
             if text:
-                parts.append(_text_part(fx, fy, text, -epy * 8 + epx * 12, epx * 8 + epy * 12))
+                parts.append(_text_part(fx, fy, text, -epy * 8 + epx * 12, epx * 8 + epy * 12,
+                                        along=(epx, epy)))
         elif F == 0.0 and lz != 0.0:
             x0, x1, y0, y1 = self.box
             x, y = x1 - 26 / self.kx, y1 - 26 / self.ky
@@ -690,91 +682,8 @@ class Picture:
 
     # ------------------------------------------------------------------ output
     def _place_labels(self) -> None:
-        """Move labels among nine spots around their anchors so that no two boxes overlap.
-
-        Topmost first, each takes its asked spot or the first of eight around its anchor that is
-        free and in the plot area, else hides (its element keeps its hover text).  Placed boxes are
-        kept by row (one label height), so that a spot meets only the boxes of its rows.
-        """
-        pw, ph = self._plot
-        h = 1.25 * FONT_PX
-        rows: dict[int, list[tuple[float, float, float, float]]] = {}   # boxes by row of one label height
-        get = rows.get
-        bx0, by0, kx, ky = self.box[0], self.box[2], self.kx, self.ky
-        em = _CHAR_EM * FONT_PX
-
-        def reserve(x0, y0, x1, y1) -> None:
-            box = (x0, y0, x1, y1)
-            for j in range(int(y0 // h), int(y1 // h) + 1):
-                row = get(j)
-                if row is None:
-                    rows[j] = [box]
-                else:
-                    row.append(box)
-
-        # texts written at a fixed place (a key's rows, a scale bar's length, a message) come
-        # first: the labels placed after them keep clear of them
-        free_els = []            # (z, the element's labels to place), in drawing order
-        for el in self.elements:
-            mine = None
-            for part in el["parts"]:
-                if part["p"] != "text" or not part["text"]:
-                    continue
-                if part.get("fixed"):
-                    if not part.get("over"):
-                        w = em * len(part["text"])
-                        x0 = (part["x"] - bx0) * kx + part["dx"] - _ALIGN_X[part["ha"]] * w
-                        y0 = (part["y"] - by0) * ky + part["dy"] - _ALIGN_Y[part["va"]] * h
-                        reserve(x0, y0, x0 + w, y0 + h)
-                elif mine is None:
-                    mine = [part]
-                    free_els.append((-el["z"], mine))
-                else:
-                    mine.append(part)
-        free_els.sort(key=itemgetter(0))   # topmost first (a stable sort: the elements' order otherwise)
-
-        for _, parts in free_els:
-            for part in parts:
-                w = em * len(part["text"])
-                qx = (part["x"] - bx0) * kx
-                qy = (part["y"] - by0) * ky
-                dx, dy = part["dx"], part["dy"]
-                fx, fy = _ALIGN_X[part["ha"]], _ALIGN_Y[part["va"]]
-                r = None
-                k = 0
-                while True:    # the asked spot, then the eight around the anchor
-                    if k:
-                        if r is None:
-                            r = max(math.hypot(dx, dy), 6.0)
-                        c, s_, fx, fy = _SPOTS[k - 1]
-                        dx, dy = r * c, r * s_
-                    x0 = qx + dx - fx * w
-                    y0 = qy + dy - fy * h
-                    x1, y1 = x0 + w, y0 + h
-                    if x0 >= 0.0 and y0 >= 0.0 and x1 <= pw and y1 <= ph:
-                        # free: no placed box in the rows this one covers meets it
-                        for j in range(int(y0 // h), int(y1 // h) + 1):
-                            row = get(j)
-                            if row is not None:
-                                for px0, py0, px1, py1 in row:
-                                    if x0 < px1 and px0 < x1 and y0 < py1 and py0 < y1:
-                                        break
-                                else:
-                                    continue
-                                break
-                        else:
-                            break
-                    k += 1
-                    if k > 8:
-                        break
-                if k > 8:      # no free place: the label hides (the element keeps its hover text)
-                    part["hidden"] = True
-                    continue
-                if k:
-                    part["dx"], part["dy"] = round(float(dx), 2), round(float(dy), 2)
-                    part["ha"], part["va"] = _SPOT_HA[k - 1], _SPOT_VA[k - 1]
-                part.pop("hidden", None)
-                reserve(x0, y0, x1, y1)
+        """Move labels off other elements' lines, glyphs and labels (:mod:`planargeo.draw._labels`)."""
+        place_labels(self, FONT_PX, _CHAR_EM)
 
     def to_dict(self) -> dict[str, Any]:
         """The picture as plain JSON data (labels placed, numbers rounded to 1e-4 of the view).
@@ -809,6 +718,8 @@ class Picture:
                         rx = round(x, nd) + 0.0 if type(x) is float else rnd(x)
                         ry = round(y, nd) + 0.0 if type(y) is float else rnd(y)
                     part = {**part, "x": rx, "y": ry}
+                    if "along" in part:
+                        del part["along"]
                 else:
                     part = dict(part)
                 if "xy" in part:

@@ -85,7 +85,8 @@ def label_line(pic: Picture, id: str, text: str, *, anchor=None, gap: float = 7.
     if n[1] < -1e-9 or (abs(n[1]) <= 1e-9 and n[0] < 0):
         n = -n
     n = n * side
-    el["parts"].append(_text_part(foot[0], foot[1], text, n[0] * gap, n[1] * gap, *_align(n)))
+    el["parts"].append(_text_part(foot[0], foot[1], text, n[0] * gap, n[1] * gap, *_align(n),
+                                   along=dp / Lp))
 
 
 def point_along(pic: Picture, id: str, p, **kw) -> None:

@@ -1,0 +1,282 @@
+"""The label placer of :class:`planargeo.draw.picture.Picture`: labels kept off lines, glyphs and labels.
+
+Every element's drawn strokes (paths, ellipses, pole glyphs, arrows, markers) are sampled every
+:data:`STEP` pixels into a raster of :data:`CELL`-pixel cells that records, per cell, which element
+drew there or that several did.  A label box is clear when the cells it covers hold nothing or
+only its own element's strokes (a label may touch its own element); summed-area tables answer
+that for every candidate spot of every label at once.  Labels are then placed topmost first:
+each takes the first spot, among the asked one and the rings around its anchor, that is clear
+and meets no label placed before it; when no spot is clear, the first that meets no label (the
+label then crosses some line); when none is, it hides (its element keeps its hover text).
+
+Examples
+--------
+>>> from planargeo.draw.picture import Picture
+>>> pic = Picture((-2, 2, -2, 2), size=(300, 300), ticks=False)
+>>> pic.line("f", [1.0, 0.0, 0.0], symbol="f")       # the x axis: its label 12 px on, 8 px above
+>>> pic.to_dict()["elements"][0]["parts"][-1]["dx"]
+12.0
+>>> pic.line("g", [0.0, 1.0, 0.2], symbol="g")       # the line x = 0.2, 14 px right of the centre
+>>> [p["dx"] for e in pic.to_dict()["elements"] for p in e["parts"] if p["p"] == "text"]  # f's slid on
+[40.65, -8.0]
+"""
+from __future__ import annotations
+
+import math
+from operator import itemgetter
+
+import numpy as np
+
+#: Pixels between samples along a stroke, and the raster's cell size (pixels).
+STEP, CELL = 3.0, 4.0
+#: A stroke may graze a label box's edge by this many pixels (the box has room around its text).
+TOL = 1.0
+
+
+def _align(n) -> tuple[str, str]:
+    """Text alignment for a label put beside an anchor in the pixel direction ``n``."""
+    ha = "left" if n[0] > 0.3 else "right" if n[0] < -0.3 else "center"
+    va = "bottom" if n[1] > 0.3 else "top" if n[1] < -0.3 else "center"
+    return ha, va
+
+
+ALIGN_X = {"left": 0.0, "center": 0.5, "right": 1.0}
+ALIGN_Y = {"bottom": 0.0, "center": 0.5, "top": 1.0}
+_ANGLES = np.deg2rad([45, 135, 225, 315, 0, 90, 180, 270])
+_DIR = np.column_stack([np.cos(_ANGLES), np.sin(_ANGLES)])
+_HA, _VA = zip(*map(_align, _DIR))
+#: the eight spots around an anchor: direction and the box's left edge and bottom in box sizes
+_FX = np.array([ALIGN_X[a] for a in _HA])
+_FY = np.array([ALIGN_Y[a] for a in _VA])
+#: slides of a line's label: the side (+1 the asked one) and the shift along the line (label heights × 2)
+_SIDE = np.array([1, 1, 1, 1, 1, 1, -1, -1, -1, -1, -1, -1, -1], float)
+_SHIFT = np.array([1, -1, 2, -2, 3, -3, 0, 1, -1, 2, -2, 3, -3], float)
+#: the first ring's column among a label's candidate spots (the asked one, then the slides)
+_RING = 1 + len(_SIDE)
+#: the code of a raster cell where several elements draw (above any element's number)
+_SEVERAL = 1 << 16
+#: a pole glyph (planargeo.draw.geometry.arc_glyph): its 270° arc, per unit radius
+_T = np.deg2rad(np.linspace(-45.0, 225.0, 19))
+_ARC = np.column_stack([np.cos(_T), np.sin(_T)])
+_CIRCLE = np.column_stack([np.cos(np.linspace(0, 2 * np.pi, 33)), np.sin(np.linspace(0, 2 * np.pi, 33))])
+_SQUARE = np.array([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0], [-1.0, -1.0]])
+
+
+def _strokes(pic) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(a, b, owner)``: every drawn straight piece as pixel segments ``a → b`` and its element (1, 2, ...)."""
+    bx0, by0, kx, ky = pic.box[0], pic.box[2], pic.kx, pic.ky
+    paths, path_own = [], []
+    fixed: dict[str, list] = {"glyph": [], "arrow": [], "mark": [], "ellipse": []}
+    for i, el in enumerate(pic.elements, 1):
+        if el["color"] == "none":
+            continue
+        for part in el["parts"]:
+            p = part["p"]
+            if p == "path":
+                xy = np.asarray(part["xy"], float)
+                if part.get("closed"):
+                    xy = np.vstack([xy, xy[:1]])
+                paths.append(xy)
+                path_own.append(i)
+            elif p in fixed:
+                fixed[p].append((i, part, el["width"]))
+    a, b, own = [], [], []
+    if paths:
+        n = [len(xy) for xy in paths]
+        xy = (np.concatenate(paths) - (bx0, by0)) * (kx, ky)
+        cut = np.cumsum(n)[:-1] - 1                    # a path's last point starts no segment
+        ok = np.ones(len(xy) - 1, bool)
+        ok[cut] = False
+        a.append(xy[:-1][ok])
+        b.append(xy[1:][ok])
+        own.append(np.repeat(np.array(path_own), n)[:-1][ok])
+
+    def polylines(rows, shape):     # (m, k, 2) pixel polylines of one kind, their owners
+        if not rows:
+            return
+        own_k = np.array([r[0] for r in rows])
+        q = np.array(shape(rows))
+        a.append(q[:, :-1].reshape(-1, 2))
+        b.append(q[:, 1:].reshape(-1, 2))
+        own.append(np.repeat(own_k, q.shape[1] - 1))
+
+    def at(part):
+        return (part["x"] - bx0) * kx, (part["y"] - by0) * ky
+
+    def glyphs(rows):    # the arc, then the head at its end (planargeo.draw.geometry.arc_glyph)
+        c = np.array([at(p) for _, p, _w in rows])[:, None, :]
+        r = np.array([p["r"] for _, p, _w in rows])[:, None, None]
+        ccw = np.array([p["ccw"] for _, p, _w in rows])[:, None, None]
+        hd = np.clip(0.45 * r, 3.0, 6.0)
+        end = np.where(ccw, _ARC[-1], _ARC[0])                   # (m, 1, 2)
+        tang = np.where(ccw, 1.0, -1.0) * end[..., ::-1] * (-1.0, 1.0)
+        tip = r * end + hd * tang
+        head = np.concatenate([tip, (r - 0.5 * hd) * end, (r + 0.5 * hd) * end, tip], axis=1)
+        return c + np.concatenate([r * np.where(ccw, _ARC, _ARC[::-1]), head], axis=1)
+
+    def arrows(rows):    # the shaft and the head's triangle (the page's: max(8, 4 × width) long)
+        out = []
+        for _, p, w in rows:
+            x, y = at(p)
+            dx, dy = p["dx"], p["dy"]
+            hp = max(8.0, 4.0 * w)
+            L = math.hypot(dx, dy) or 1.0
+            ux, uy = dx / L * hp, dy / L * hp
+            tx, ty = x + dx, y + dy
+            out.append([(x, y), (tx, ty), (tx - ux - 0.35 * uy, ty - uy + 0.35 * ux),
+                        (tx - ux + 0.35 * uy, ty - uy - 0.35 * ux), (tx, ty)])
+        return out
+
+    def marks(rows):
+        c = np.array([at(p) for _, p, _w in rows])[:, None, :]
+        s = np.array([p["size"] / 2 for _, p, _w in rows])[:, None, None]
+        return c + s * _SQUARE
+
+    def ellipses(rows):
+        m = np.array([p["m"] for _, p, _w in rows])                 # (n, 4): a, b, c, d
+        c = np.array([at(p) for _, p, _w in rows])[:, None, :]
+        ex = _CIRCLE[:, 0] * m[:, None, 0] + _CIRCLE[:, 1] * m[:, None, 1]
+        ey = _CIRCLE[:, 0] * m[:, None, 2] + _CIRCLE[:, 1] * m[:, None, 3]
+        return c + np.stack([ex * kx, ey * ky], axis=-1)
+
+    polylines(fixed["glyph"], glyphs)
+    polylines(fixed["arrow"], arrows)
+    polylines(fixed["mark"], marks)
+    polylines(fixed["ellipse"], ellipses)
+    if not a:
+        return np.zeros((0, 2)), np.zeros((0, 2)), np.zeros(0, int)
+    return np.concatenate(a), np.concatenate(b), np.concatenate(own)
+
+
+def _tables(pic) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Summed-area tables (``rows + 1, cols + 1``) of the raster's cells that hold strokes: their
+    count, the sum of their codes and of the codes' squares (a cell's code: its one owner, or
+    :data:`_SEVERAL` when several elements draw there)."""
+    pw, ph = pic._plot
+    nx, ny = int(pw // CELL) + 1, int(ph // CELL) + 1
+    a, b, own = _strokes(pic)
+    d = b - a
+    n = (np.hypot(d[:, 0], d[:, 1]) * (1.0 / STEP)).astype(int) + 2      # samples of each segment
+    seg = np.repeat(np.arange(len(a)), n)
+    t = np.arange(len(seg)) - np.repeat(np.cumsum(n) - n, n)
+    t = t / np.repeat(n - 1.0, n)
+    q = (a[seg] + t[:, None] * d[seg]) * (1.0 / CELL)
+    ix, iy = np.floor(q.T).astype(int)
+    inside = (ix >= 0) & (ix < nx) & (iy >= 0) & (iy < ny)
+    cell = (iy * (nx + 1) + ix + nx + 2)[inside]          # in the tables' frame (a zero row and column first)
+    o = own[seg][inside]
+    size = (ny + 1) * (nx + 1)
+    lo = np.full(size, _SEVERAL)
+    np.minimum.at(lo, cell, o)
+    hi = np.zeros(size, int)
+    np.maximum.at(hi, cell, o)
+    code = np.where(lo == hi, hi, np.where(hi > 0, _SEVERAL, 0)).astype(float).reshape(ny + 1, nx + 1)
+    return tuple(c.cumsum(0).cumsum(1) for c in (code > 0, code, code * code))
+
+
+def place_labels(pic, font_px: float, char_em: float) -> None:
+    """Place the labels of a :class:`~planargeo.draw.picture.Picture` (module docstring).
+
+    Each label tries its asked spot, then eight around its anchor at the asked distance ``r``
+    (at least 6 px), then eight at ``r`` plus one label height.  Texts written at a fixed place
+    are not moved; the labels keep clear of them unless they are marked ``over``.
+    """
+    pw, ph = pic._plot
+    h = 1.25 * font_px
+    em = char_em * font_px
+    bx0, by0, kx, ky = pic.box[0], pic.box[2], pic.kx, pic.ky
+    rows: dict[int, list[tuple[float, float, float, float]]] = {}   # placed boxes by row of one label height
+    get = rows.get
+
+    def reserve(x0, y0, x1, y1) -> None:
+        box = (x0, y0, x1, y1)
+        for j in range(int(y0 // h), int(y1 // h) + 1):
+            row = get(j)
+            if row is None:
+                rows[j] = [box]
+            else:
+                row.append(box)
+
+    def meets_label(x0, y0, x1, y1) -> bool:
+        for j in range(int(y0 // h), int(y1 // h) + 1):
+            for px0, py0, px1, py1 in get(j, ()):
+                if x0 < px1 and px0 < x1 and y0 < py1 and py0 < y1:
+                    return True
+        return False
+
+    # texts written at a fixed place (a key's rows, a scale bar's length, a message) first
+    free = []            # (-z, owner, part): the labels to place
+    for i, el in enumerate(pic.elements, 1):
+        for part in el["parts"]:
+            if part["p"] != "text" or not part["text"]:
+                continue
+            if not part.get("fixed"):
+                free.append((-el["z"], i, part))
+            elif not part.get("over"):
+                w = em * len(part["text"])
+                x0 = (part["x"] - bx0) * kx + part["dx"] - ALIGN_X[part["ha"]] * w
+                y0 = (part["y"] - by0) * ky + part["dy"] - ALIGN_Y[part["va"]] * h
+                reserve(x0, y0, x0 + w, y0 + h)
+    if not free:
+        return
+    free.sort(key=itemgetter(0))   # topmost first (a stable sort: the elements' order otherwise)
+
+    # every candidate box of every label: the asked spot, slides along its line (a label that
+    # has one) on either side, then two rings of eight around its anchor
+    parts = [p for _, _, p in free]
+    m = len(parts)
+    e = np.array([i for _, i, _ in free], float)
+    w = np.array([em * len(p["text"]) for p in parts])
+    qx = np.array([(p["x"] - bx0) * kx for p in parts])
+    qy = np.array([(p["y"] - by0) * ky for p in parts])
+    dx0 = np.array([p["dx"] for p in parts])
+    dy0 = np.array([p["dy"] for p in parts])
+    ux, uy = np.array([p.get("along", (0.0, 0.0)) for p in parts]).reshape(m, 2).T
+    a0 = dx0 * ux + dy0 * uy                         # the asked offset: along the line and across it
+    vx, vy = dx0 - a0 * ux, dy0 - a0 * uy
+    g = np.hypot(vx, vy)
+    flat = g < 1e-9
+    nnx, nny = np.where(flat, -uy, vx / np.where(flat, 1.0, g)), np.where(flat, ux, vy / np.where(flat, 1.0, g))
+    g = np.maximum(g, 6.0)[:, None]
+    sx, sy = _SIDE * nnx[:, None], _SIDE * nny[:, None]           # (m, 13): the side of each slide
+    t = a0[:, None] + _SHIFT * (2.0 * h)
+    r = np.maximum(np.hypot(dx0, dy0), 6.0)[:, None]
+    dx = np.hstack([dx0[:, None], t * ux[:, None] + g * sx, r * _DIR[:, 0], (r + h) * _DIR[:, 0]])
+    dy = np.hstack([dy0[:, None], t * uy[:, None] + g * sy, r * _DIR[:, 1], (r + h) * _DIR[:, 1]])
+    fx = np.hstack([[[ALIGN_X[p["ha"]]] for p in parts], np.where(sx > 0.3, 0.0, np.where(sx < -0.3, 1.0, 0.5)),
+                    np.tile(_FX, (m, 2))])
+    fy = np.hstack([[[ALIGN_Y[p["va"]]] for p in parts], np.where(sy > 0.3, 0.0, np.where(sy < -0.3, 1.0, 0.5)),
+                    np.tile(_FY, (m, 2))])
+    x0 = qx[:, None] + dx - fx * w[:, None]
+    y0 = qy[:, None] + dy - fy * h
+    x1, y1 = x0 + w[:, None], y0 + h
+    inside = (x0 >= 0.0) & (y0 >= 0.0) & (x1 <= pw) & (y1 <= ph)
+    inside[:, 1:_RING] &= (ux != 0.0)[:, None] | (uy != 0.0)[:, None]     # slides: labels of lines only
+    # clear of every other element's strokes: the cells the box (less TOL) covers hold none
+    sat = _tables(pic)
+    ny, nx = sat[0].shape[0] - 1, sat[0].shape[1] - 1
+    i0 = np.clip(np.floor((x0 + TOL) * (1.0 / CELL)), 0, nx).astype(int)
+    i1 = np.clip(np.floor((x1 - TOL) * (1.0 / CELL)) + 1, 0, nx).astype(int)
+    j0 = np.clip(np.floor((y0 + TOL) * (1.0 / CELL)), 0, ny).astype(int)
+    j1 = np.clip(np.floor((y1 - TOL) * (1.0 / CELL)) + 1, 0, ny).astype(int)
+    cnt, s, s2 = (t[j1, i1] - t[j0, i1] - t[j1, i0] + t[j0, i0] for t in sat)
+    e = e[:, None]
+    clear = inside & (s == cnt * e) & (s2 == cnt * e * e)     # every code in the box is e
+
+    # the clear spots in their order, then the others by how many cells of strokes they cover
+    n = clear.shape[1]
+    rank = np.where(clear, 0, (cnt + 1) * n) + np.arange(n)
+    rank[~inside] = -1
+    for part, X0, Y0, X1, Y1, ranks, out, DX, DY, SX, SY in zip(
+            parts, x0.tolist(), y0.tolist(), x1.tolist(), y1.tolist(), np.argsort(rank, 1).tolist(),
+            (~inside).sum(1).tolist(), dx.tolist(), dy.tolist(), sx.tolist(), sy.tolist()):
+        k = next((k for k in ranks[out:] if not meets_label(X0[k], Y0[k], X1[k], Y1[k])), None)
+        if k is None:    # no free place: the label hides (the element keeps its hover text)
+            part["hidden"] = True
+            continue
+        if k:
+            part["dx"], part["dy"] = round(DX[k], 2), round(DY[k], 2)
+            part["ha"], part["va"] = (_align((SX[k - 1], SY[k - 1])) if k < _RING else
+                                      (_HA[(k - _RING) % 8], _VA[(k - _RING) % 8]))
+        part.pop("hidden", None)
+        reserve(X0[k], Y0[k], X1[k], Y1[k])
