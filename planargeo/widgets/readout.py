@@ -1,13 +1,20 @@
 """Readout text of the explorers: numbers with their units, points, and the "what is shown" panel.
 
-A unit follows numbers only (never a word, "at rest"), one per component or one common; round-off
-prints as ``0``; a point at infinity (:func:`~planargeo.geometry.projective.is_ideal`) reads
+The readout says each unit once.  A row whose numbers share one unit -- a number, a vector or a
+point -- reads ``numbers unit`` (``"(0, -0.8) m"``) and the table puts the unit in its own column;
+a vector whose components differ in unit names each after its number
+(``"(1 m/s, -1.5 m/s, 3 rad/s)"``).  A unit follows numbers only (never a word, "at rest"), and
+reads as a student writes it: ``kg⁻¹`` for ``1/kg`` (never ``0 1/kg``).  Numbers keep 4
+significant digits, plain from 0.001 to 100000 (``10120``, not ``1.012e+04``); round-off prints
+as ``0``; a point at infinity (:func:`~planargeo.geometry.projective.is_ideal`) reads
 "at infinity (direction (dx, dy))".
 """
 from __future__ import annotations
 
 import html
+import math
 import numbers
+import re
 from typing import Any
 
 import numpy as np
@@ -15,11 +22,78 @@ import numpy as np
 from planargeo.draw.picture import plain_text
 from planargeo.geometry.projective import direction, is_ideal, to_xy
 
-__all__ = ["fmt", "point_text", "point_value", "value_text", "split_units", "explain_html", "is_numeric",
+__all__ = ["QuantityText", "fmt", "unit_text", "point_text", "point_value", "value_text", "split_units", "explain_html", "is_numeric",
            "plain_symbol"]
 
 #: units that mean "dimensionless": nothing is written
 NO_UNIT = ("", "—", "-")
+
+
+class QuantityText(str):
+    """Text of numbers with one unit, ``"(1, 2) m"``, that keeps its numbers and unit apart.
+
+    It is the text itself (a ``str``, equal to ``"(1, 2) m"``); :func:`fmt` gives its numbers and
+    :func:`value_text` its numbers and unit, so a readout table puts the unit in its own column,
+    as for any other row (:func:`point_text` returns one).
+
+    Parameters
+    ----------
+    numbers : str
+        The numbers, already formatted (plain text).
+    unit : str
+        Their unit ("" or "—": none).
+
+    Examples
+    --------
+    >>> q = QuantityText("(1, 2)", "m")
+    >>> q == "(1, 2) m", q.numbers, q.unit, fmt(q), value_text(q)
+    (True, '(1, 2)', 'm', '(1, 2)', '(1, 2) m')
+    """
+
+    numbers: str
+    unit: str
+
+    def __new__(cls, numbers: str, unit: str = "") -> "QuantityText":
+        unit = "" if unit in NO_UNIT or unit is None else str(unit)
+        self = super().__new__(cls, f"{numbers} {unit}" if unit else str(numbers))
+        self.numbers, self.unit = str(numbers), unit
+        return self
+
+    def __reduce__(self):
+        return (QuantityText, (self.numbers, self.unit))
+
+
+_FACTOR = re.compile(r"^([A-Za-zΩμ°]+)([²³]?)$")
+_INVERSE = {"": "⁻¹", "²": "⁻²", "³": "⁻³"}
+
+
+def unit_text(unit: str) -> str:
+    """A unit as a student reads it: a reciprocal ``1/…`` in negative powers, others unchanged.
+
+    Parameters
+    ----------
+    unit : str
+        A unit of the explorers' data (``"m/s²"``, ``"1/kg"``, ``"1/(kg·m²)"``).
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> unit_text("1/kg"), unit_text("1/(kg·m²)"), unit_text("m/s²"), unit_text("N·m")
+    ('kg⁻¹', 'kg⁻¹·m⁻²', 'm/s²', 'N·m')
+    """
+    u = str(unit)
+    if not u.startswith("1/"):
+        return u
+    rest = u[2:]
+    if rest.startswith("(") and rest.endswith(")"):
+        rest = rest[1:-1]
+    factors = [_FACTOR.match(f) for f in rest.split("·")]
+    if not rest or not all(factors):
+        return u
+    return "·".join(f[1] + _INVERSE[f[2]] for f in factors)
 
 
 def fmt(x: Any, digits: int = 4, zero: float = 0.0) -> str:
@@ -43,7 +117,11 @@ def fmt(x: Any, digits: int = 4, zero: float = 0.0) -> str:
     --------
     >>> fmt(0.123456), fmt(float("inf")), fmt((1.0, -2.5)), fmt(True), fmt(-1.2e-16, zero=1e-9)
     ('0.1235', '∞', '(1, -2.5)', 'yes', '0')
+    >>> fmt(10116.3), fmt(123456.0), fmt(QuantityText("(0, -0.8)", "m"))
+    ('10120', '1.235e+05', '(0, -0.8)')
     """
+    if isinstance(x, QuantityText):
+        return html.escape(x.numbers)
     if isinstance(x, (bool, np.bool_)):
         return "yes" if x else "no"
     if isinstance(x, (int, np.integer)):
@@ -55,6 +133,8 @@ def fmt(x: Any, digits: int = 4, zero: float = 0.0) -> str:
             return "0"
         if abs(x) >= 1e5 or abs(x) < 1e-3:
             return f"{x:.{digits - 1}e}"
+        if abs(x) >= 10.0 ** digits:          # 10116.3 -> 10120 ("g" would write 1.012e+04)
+            return f"{round(float(x), digits - 1 - int(math.floor(math.log10(abs(x))))):.0f}"
         return f"{x:.{digits}g}"
     if isinstance(x, (tuple, list, np.ndarray)):
         return "(" + ", ".join(fmt(v, digits, zero) for v in _components(x)) + ")"
@@ -155,19 +235,23 @@ def value_text(x: Any, unit: Any = "", zero: float = 0.0, digits: int = 4) -> st
     --------
     >>> value_text((1.0, -2.0, 0.5), ("m/s", "m/s", "rad/s")), value_text("at rest", "m")
     ('(1 m/s, -2 m/s, 0.5 rad/s)', 'at rest')
+    >>> value_text((0.0, 2.0), ("1/kg", "1/(kg·m)")), value_text(point_text([0.0, -2.0, 1.0]))
+    ('(0 kg⁻¹, 2 kg⁻¹·m⁻¹)', '(2, 0) m')
     """
     text = fmt(x, digits, zero)
+    if isinstance(x, QuantityText):
+        return f"{text} {html.escape(unit_text(x.unit))}" if x.unit else text
     if not is_numeric(x):
         return text
     if isinstance(x, (tuple, list, np.ndarray)):
         comps = _components(x)
-        units = split_units(unit, len(comps))
+        units = [unit_text(u) for u in split_units(unit, len(comps))]
         if len(set(units)) == 1:
             return f"{text} {html.escape(units[0])}" if units[0] else text
         parts = [fmt(v, digits, zero) + (f" {html.escape(u)}" if u else "")
                  for v, u in zip(comps, units)]
         return "(" + ", ".join(parts) + ")"
-    u = split_units(unit, 1)[0]
+    u = unit_text(split_units(unit, 1)[0])
     return f"{text} {html.escape(u)}" if u else text
 
 
@@ -185,19 +269,21 @@ def point_text(p, unit: str = "m", zero: float = 0.0, digits: int = 4) -> str:
 
     Returns
     -------
-    str
+    QuantityText or str
+        The coordinates and their unit (a readout table puts the unit in its own column), or words.
 
     Examples
     --------
     >>> point_text([4.0, -2.0, 2.0]), point_text([0.0, 1.0, 0.0])
     ('(1, 2) m', 'at infinity (direction (-1, 0))')
+    >>> point_text([4.0, -2.0, 2.0]).unit
+    'm'
     """
     p = np.asarray(p, dtype=float).reshape(3)
     if bool(is_ideal(p)):
         return f"at infinity (direction {fmt(tuple(direction(p)), digits, 1e-12)})"
     xy = to_xy(p)
-    text = fmt(tuple(xy), digits, zero)
-    return f"{text} {html.escape(unit)}" if unit not in NO_UNIT else text
+    return QuantityText(html.unescape(fmt(tuple(xy), digits, zero)), unit)
 
 
 def point_value(p):
