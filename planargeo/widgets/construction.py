@@ -172,8 +172,8 @@ class ConstructionExplorer(Explorer):
                 else len(construct(kind).steps)
         w = self.controls["step"]
         # (In the page, the End key on the slider still goes to the max the slider was first shown
-        # with, 3: ipywidgets 8.1's noUiSlider reads Home / End from its creation range, as a bare
-        # IntSlider does after its max grows; the mouse, the arrows and the readout use the new range.)
+        # with (3 for twist addition): ipywidgets 8.1's noUiSlider takes Home / End from its creation
+        # range, a bare IntSlider whose max grows does the same; mouse and arrows use the new range.)
         with self._quietly():
             if w.max < n:          # ahead of the value, or the page pulls it back to the old range's end
                 widen(w, n)
