@@ -179,11 +179,15 @@ def _meets(xy: np.ndarray, box, tol: float) -> bool:
 def crossed_labels(pic: dict, tol: float = 1.0, skip=BASE_IDS) -> list[tuple[str, str, str]]:
     """``(element id, label text, other element id)`` for each shown label whose box (shrunk by
     ``tol`` pixels) is crossed by another element's stroke (:func:`strokes`) or meets another
-    element's label box.  Elements whose id ``skip`` matches (the base's key and message) are left out."""
+    element's text box.  Texts written at a fixed place (not placed) are obstacles only; elements
+    whose id ``skip`` matches (the base's key and message) are left out."""
     boxes = [b for b in label_boxes(pic) if not (skip and skip.fullmatch(b[0]))]
     lines = [s for s in strokes(pic) if not (skip and skip.fullmatch(s[0]))]
+    fixed = {(e["id"], p["text"]) for e in pic["elements"] for p in e["parts"] if p["p"] == "text" and p.get("fixed")}
     out = []
     for eid, text, box in boxes:
+        if (eid, text) in fixed:         # written at a fixed place (a key's row): not the placer's
+            continue
         hits = {oid for oid, xy in lines if oid != eid and _meets(xy, box, tol)}
         hits |= {oid for oid, _t, b in boxes if oid != eid and min(box[2], b[2]) - max(box[0], b[0]) > tol
                  and min(box[3], b[3]) - max(box[1], b[1]) > tol}

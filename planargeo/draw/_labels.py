@@ -51,10 +51,10 @@ _FY = np.array([ALIGN_Y[a] for a in _VA])
 #: slides of a line's label: the side (+1 the asked one) and the shift along the line (label heights × 2)
 _SIDE = np.array([1, 1, 1, 1, 1, 1, -1, -1, -1, -1, -1, -1, -1], float)
 _SHIFT = np.array([1, -1, 2, -2, 3, -3, 0, 1, -1, 2, -2, 3, -3], float)
+#: how many of a label's spots, best first, are tried before it hides
+_TRIES = 12
 #: the first ring's column among a label's candidate spots (the asked one, then the slides)
 _RING = 1 + len(_SIDE)
-#: the code of a raster cell where several elements draw (above any element's number)
-_SEVERAL = 1 << 16
 #: a pole glyph (planargeo.draw.geometry.arc_glyph): its 270° arc, per unit radius
 _T = np.deg2rad(np.linspace(-45.0, 225.0, 19))
 _ARC = np.column_stack([np.cos(_T), np.sin(_T)])
@@ -148,30 +148,29 @@ def _strokes(pic) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return np.concatenate(a), np.concatenate(b), np.concatenate(own)
 
 
-def _tables(pic) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Summed-area tables (``rows + 1, cols + 1``) of the raster's cells that hold strokes: their
-    count, the sum of their codes and of the codes' squares (a cell's code: its one owner, or
-    :data:`_SEVERAL` when several elements draw there)."""
+def _tables(pic) -> tuple[np.ndarray, np.ndarray]:
+    """Summed-area tables (``rows + 1, cols + 1``) of the stroke samples in each raster cell:
+    their count, and the sum of their owners' unit numbers ``exp(2πi owner / elements)``."""
     pw, ph = pic._plot
     nx, ny = int(pw // CELL) + 1, int(ph // CELL) + 1
     a, b, own = _strokes(pic)
     d = b - a
     n = (np.hypot(d[:, 0], d[:, 1]) * (1.0 / STEP)).astype(int) + 2      # samples of each segment
-    seg = np.repeat(np.arange(len(a)), n)
-    t = np.arange(len(seg)) - np.repeat(np.cumsum(n) - n, n)
-    t = t / np.repeat(n - 1.0, n)
-    q = (a[seg] + t[:, None] * d[seg]) * (1.0 / CELL)
-    ix, iy = np.floor(q.T).astype(int)
+    start = np.repeat(np.cumsum(n) - n, n)
+    t = (np.arange(len(start)) - start) / np.repeat(n - 1.0, n)
+    ix = np.floor((np.repeat(a[:, 0], n) + t * np.repeat(d[:, 0], n)) * (1.0 / CELL)).astype(int)
+    iy = np.floor((np.repeat(a[:, 1], n) + t * np.repeat(d[:, 1], n)) * (1.0 / CELL)).astype(int)
     inside = (ix >= 0) & (ix < nx) & (iy >= 0) & (iy < ny)
     cell = (iy * (nx + 1) + ix + nx + 2)[inside]          # in the tables' frame (a zero row and column first)
-    o = own[seg][inside]
+    unit = np.exp(2j * np.pi / (len(pic.elements) + 1) * np.arange(len(pic.elements) + 1))
+    owner = np.repeat(own, n)[inside]
     size = (ny + 1) * (nx + 1)
-    lo = np.full(size, _SEVERAL)
-    np.minimum.at(lo, cell, o)
-    hi = np.zeros(size, int)
-    np.maximum.at(hi, cell, o)
-    code = np.where(lo == hi, hi, np.where(hi > 0, _SEVERAL, 0)).astype(float).reshape(ny + 1, nx + 1)
-    return tuple(c.cumsum(0).cumsum(1) for c in (code > 0, code, code * code))
+    count = np.bincount(cell, minlength=size).astype(float).reshape(ny + 1, nx + 1)
+    z = np.empty(size, complex)
+    z.real = np.bincount(cell, unit.real[owner], size)
+    z.imag = np.bincount(cell, unit.imag[owner], size)
+    z = z.reshape(ny + 1, nx + 1)
+    return count.cumsum(0).cumsum(1), z.cumsum(0).cumsum(1)
 
 
 def place_labels(pic, font_px: float, char_em: float) -> None:
@@ -253,30 +252,34 @@ def place_labels(pic, font_px: float, char_em: float) -> None:
     inside = (x0 >= 0.0) & (y0 >= 0.0) & (x1 <= pw) & (y1 <= ph)
     inside[:, 1:_RING] &= (ux != 0.0)[:, None] | (uy != 0.0)[:, None]     # slides: labels of lines only
     # clear of every other element's strokes: the cells the box (less TOL) covers hold none
-    sat = _tables(pic)
-    ny, nx = sat[0].shape[0] - 1, sat[0].shape[1] - 1
+    count, z = _tables(pic)
+    ny, nx = count.shape[0] - 1, count.shape[1] - 1
     i0 = np.clip(np.floor((x0 + TOL) * (1.0 / CELL)), 0, nx).astype(int)
     i1 = np.clip(np.floor((x1 - TOL) * (1.0 / CELL)) + 1, 0, nx).astype(int)
     j0 = np.clip(np.floor((y0 + TOL) * (1.0 / CELL)), 0, ny).astype(int)
     j1 = np.clip(np.floor((y1 - TOL) * (1.0 / CELL)) + 1, 0, ny).astype(int)
-    cnt, s, s2 = (t[j1, i1] - t[j0, i1] - t[j1, i0] + t[j0, i0] for t in sat)
-    e = e[:, None]
-    clear = inside & (s == cnt * e) & (s2 == cnt * e * e)     # every code in the box is e
+    cnt, zs = (t[j1, i1] - t[j0, i1] - t[j1, i0] + t[j0, i0] for t in (count, z))
+    # every sample is the label's own element's: the sum of their unit numbers is cnt times its own
+    # (another's makes the sum's part along it smaller by 1 - cos(2π / elements) or more)
+    u = np.exp(-2j * np.pi / (len(pic.elements) + 1) * e)[:, None]
+    clear = inside & ((zs * u).real >= cnt - 0.25 * (1.0 - math.cos(2.0 * math.pi / (len(pic.elements) + 1))))
 
-    # the clear spots in their order, then the others by how many cells of strokes they cover
+    # the clear spots in their order, then the others by how many stroke samples they cover
     n = clear.shape[1]
-    rank = np.where(clear, 0, (cnt + 1) * n) + np.arange(n)
-    rank[~inside] = -1
-    for part, X0, Y0, X1, Y1, ranks, out, DX, DY, SX, SY in zip(
-            parts, x0.tolist(), y0.tolist(), x1.tolist(), y1.tolist(), np.argsort(rank, 1).tolist(),
-            (~inside).sum(1).tolist(), dx.tolist(), dy.tolist(), sx.tolist(), sy.tolist()):
-        k = next((k for k in ranks[out:] if not meets_label(X0[k], Y0[k], X1[k], Y1[k])), None)
-        if k is None:    # no free place: the label hides (the element keeps its hover text)
+    rank = np.where(inside, np.where(clear, 0.0, (cnt + 1.0) * n) + np.arange(n), np.inf)
+    best = np.argsort(rank, 1)[:, :_TRIES]
+    tries = np.isfinite(np.take_along_axis(rank, best, 1)).sum(1)
+    for i, (part, ks, X0, Y0, m, W) in enumerate(zip(parts, best.tolist(), np.take_along_axis(x0, best, 1).tolist(),
+                                                     np.take_along_axis(y0, best, 1).tolist(), tries.tolist(),
+                                                     w.tolist())):
+        j = next((j for j in range(m) if not meets_label(X0[j], Y0[j], X0[j] + W, Y0[j] + h)), None)
+        if j is None:    # no free place: the label hides (the element keeps its hover text)
             part["hidden"] = True
             continue
+        k = ks[j]
         if k:
-            part["dx"], part["dy"] = round(DX[k], 2), round(DY[k], 2)
-            part["ha"], part["va"] = (_align((SX[k - 1], SY[k - 1])) if k < _RING else
+            part["dx"], part["dy"] = round(float(dx[i, k]), 2), round(float(dy[i, k]), 2)
+            part["ha"], part["va"] = (_align((float(sx[i, k - 1]), float(sy[i, k - 1]))) if k < _RING else
                                       (_HA[(k - _RING) % 8], _VA[(k - _RING) % 8]))
         part.pop("hidden", None)
-        reserve(X0[k], Y0[k], X1[k], Y1[k])
+        reserve(X0[j], Y0[j], X0[j] + W, Y0[j] + h)
