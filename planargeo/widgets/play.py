@@ -30,7 +30,8 @@ __all__ = ["MAX_CATCHUP", "MAX_ADVANCE_FRAMES", "MAX_ADVANCE_SECONDS", "MAX_ANIM
 
 #: wall seconds a single Play tick may catch up (a longer gap: the motion resumes, it does not jump)
 MAX_CATCHUP = 0.5
-#: while the page plays, controls and readout reach it at most this often (s); pictures at once
+#: while the page plays, controls and readout reach it at most this often (s); pictures at once,
+#: and with each picture the controls Play moves (the time: the number compared with the picture)
 PLAY_SYNC_S = 0.25
 #: frames one call of ``advance`` may take without ``allow_long=True``
 MAX_ADVANCE_FRAMES = 10_000
@@ -218,6 +219,8 @@ class PlayMixin:
         self._last_tick = (0.0, 0.0)
         self._play_hold: contextlib.ExitStack | None = None
         self._play_synced = 0.0
+        self._play_moved: tuple[str, ...] = ()     # the controls the last Play frame moved
+        self._play_sent: dict[str, Any] = {}       # their values sent with a frame, since the last sync
         if not self.has_play:
             return
         self.play_control = W.Play(value=0, min=0, max=10 ** 9, step=1,
@@ -291,6 +294,7 @@ class PlayMixin:
         start = dict(self.shown_values or self.values)
         vals, ended, exc = run_substeps(self.play_step, start, seconds, self.play_max_dt)
         new = {k: v for k, v in vals.items() if k in self.controls and not same_value(v, start.get(k))}
+        self._play_moved = tuple(new)
         before = self.n_updates
         if new:
             self.set(**new)
@@ -405,7 +409,11 @@ class PlayMixin:
         return False
 
     def _keep_play_hold(self, stack: contextlib.ExitStack) -> bool:
-        """While the page plays, keep the syncs ``stack`` holds (True); sent every PLAY_SYNC_S."""
+        """While the page plays, keep the syncs ``stack`` holds (True); sent every PLAY_SYNC_S.
+
+        Called as each update's syncs would go (after its picture); while they are held, the
+        controls the last Play frame moved (the time) go at once (:meth:`_send_play_moved`).
+        """
         if not hasattr(self, "_play_hold"):      # before Play's controls exist
             return False
         playing = (self.has_play and self._page_plays and self.play_control is not None
@@ -413,14 +421,29 @@ class PlayMixin:
         now = time.monotonic()
         if playing and self._play_hold is None:
             self._play_hold, self._play_synced = stack, now
+            self._send_play_moved()
             return True
-        if self._play_hold is not None and (not playing or now - self._play_synced >= PLAY_SYNC_S):
-            self._release_play_hold()
+        if self._play_hold is not None:
+            if not playing or now - self._play_synced >= PLAY_SYNC_S:
+                self._release_play_hold()
+            else:
+                self._send_play_moved()
         return False
+
+    def _send_play_moved(self) -> None:
+        """The values of the controls the last Play frame moved, sent now (the rest wait for the
+        next sync): the time field follows every picture; one small message per control moved."""
+        for k in self._play_moved:
+            w = self.controls.get(k)
+            if w is None or k in self._play_sent and same_value(self._play_sent[k], w.value):
+                continue
+            w.send_state("value")
+            self._play_sent[k] = w.value
 
     def _release_play_hold(self) -> None:
         """Send the controls' and readout's held values to the page (Play's periodic sync)."""
         hold, self._play_hold = self._play_hold, None
+        self._play_sent.clear()
         if hold is not None:
             hold.close()
 
