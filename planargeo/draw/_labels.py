@@ -51,6 +51,13 @@ _FY = np.array([ALIGN_Y[a] for a in _VA])
 #: slides of a line's label: the side (+1 the asked one) and the shift along the line (label heights × 2)
 _SIDE = np.array([1, 1, 1, 1, 1, 1, -1, -1, -1, -1, -1, -1, -1], float)
 _SHIFT = np.array([1, -1, 2, -2, 3, -3, 0, 1, -1, 2, -2, 3, -3], float)
+#: the rings' spots: direction, radius (the asked distance, plus one label height for the second
+#: ring) and the box's left edge and bottom in box sizes
+_RING_X, _RING_Y = np.tile(_DIR[:, 0], 2), np.tile(_DIR[:, 1], 2)
+_RADII, _REACH = np.ones(16), np.repeat([0.0, 1.0], 8)
+_FX2, _FY2 = np.tile(_FX, 2), np.tile(_FY, 2)
+_HA_OF = {0.0: "left", 0.5: "center", 1.0: "right"}
+_VA_OF = {0.0: "bottom", 0.5: "center", 1.0: "top"}
 #: how many of a label's spots, best first, are tried before it hides
 _TRIES = 12
 #: the first ring's column among a label's candidate spots (the asked one, then the slides)
@@ -163,9 +170,9 @@ def _tables(pic) -> tuple[np.ndarray, np.ndarray]:
     inside = (ix >= 0) & (ix < nx) & (iy >= 0) & (iy < ny)
     cell = (iy * (nx + 1) + ix + nx + 2)[inside]          # in the tables' frame (a zero row and column first)
     unit = np.exp(2j * np.pi / (len(pic.elements) + 1) * np.arange(len(pic.elements) + 1))
-    owner = np.repeat(own, n)[inside]
     size = (ny + 1) * (nx + 1)
     count = np.bincount(cell, minlength=size).astype(float).reshape(ny + 1, nx + 1)
+    owner = np.repeat(own, n)[inside]
     z = np.empty(size, complex)
     z.real = np.bincount(cell, unit.real[owner], size)
     z.imag = np.bincount(cell, unit.imag[owner], size)
@@ -223,63 +230,55 @@ def place_labels(pic, font_px: float, char_em: float) -> None:
     # every candidate box of every label: the asked spot, slides along its line (a label that
     # has one) on either side, then two rings of eight around its anchor
     parts = [p for _, _, p in free]
-    m = len(parts)
-    e = np.array([i for _, i, _ in free], float)
-    w = np.array([em * len(p["text"]) for p in parts])
-    qx = np.array([(p["x"] - bx0) * kx for p in parts])
-    qy = np.array([(p["y"] - by0) * ky for p in parts])
-    dx0 = np.array([p["dx"] for p in parts])
-    dy0 = np.array([p["dy"] for p in parts])
-    ux, uy = np.array([p.get("along", (0.0, 0.0)) for p in parts]).reshape(m, 2).T
+    qx, qy, dx0, dy0, fx0, fy0, w, ux, uy, e = np.array(
+        [((p["x"] - bx0) * kx, (p["y"] - by0) * ky, p["dx"], p["dy"], ALIGN_X[p["ha"]], ALIGN_Y[p["va"]],
+          em * len(p["text"]), *p.get("along", (0.0, 0.0)), i) for _, i, p in free]).T[:, :, None]
     a0 = dx0 * ux + dy0 * uy                         # the asked offset: along the line and across it
     vx, vy = dx0 - a0 * ux, dy0 - a0 * uy
     g = np.hypot(vx, vy)
     flat = g < 1e-9
-    nnx, nny = np.where(flat, -uy, vx / np.where(flat, 1.0, g)), np.where(flat, ux, vy / np.where(flat, 1.0, g))
-    g = np.maximum(g, 6.0)[:, None]
-    sx, sy = _SIDE * nnx[:, None], _SIDE * nny[:, None]           # (m, 13): the side of each slide
-    t = a0[:, None] + _SHIFT * (2.0 * h)
-    r = np.maximum(np.hypot(dx0, dy0), 6.0)[:, None]
-    dx = np.hstack([dx0[:, None], t * ux[:, None] + g * sx, r * _DIR[:, 0], (r + h) * _DIR[:, 0]])
-    dy = np.hstack([dy0[:, None], t * uy[:, None] + g * sy, r * _DIR[:, 1], (r + h) * _DIR[:, 1]])
-    fx = np.hstack([[[ALIGN_X[p["ha"]]] for p in parts], np.where(sx > 0.3, 0.0, np.where(sx < -0.3, 1.0, 0.5)),
-                    np.tile(_FX, (m, 2))])
-    fy = np.hstack([[[ALIGN_Y[p["va"]]] for p in parts], np.where(sy > 0.3, 0.0, np.where(sy < -0.3, 1.0, 0.5)),
-                    np.tile(_FY, (m, 2))])
-    x0 = qx[:, None] + dx - fx * w[:, None]
-    y0 = qy[:, None] + dy - fy * h
-    x1, y1 = x0 + w[:, None], y0 + h
+    g = np.where(flat, 1.0, g)
+    sx = _SIDE * np.where(flat, -uy, vx / g)        # (m, 13): the side of each slide, a unit vector
+    sy = _SIDE * np.where(flat, ux, vy / g)
+    g = np.maximum(np.where(flat, 0.0, g), 6.0)
+    t = a0 + _SHIFT * (2.0 * h)
+    r = np.maximum(np.hypot(dx0, dy0), 6.0) * _RADII + _REACH * h       # (m, 16): the rings' radii
+    dx = np.hstack([dx0, t * ux + g * sx, r * _RING_X])
+    dy = np.hstack([dy0, t * uy + g * sy, r * _RING_Y])
+    fx = np.hstack([fx0, (sx <= 0.3) * (0.5 + 0.5 * (sx < -0.3)), np.broadcast_to(_FX2, (len(parts), 16))])
+    fy = np.hstack([fy0, (sy <= 0.3) * (0.5 + 0.5 * (sy < -0.3)), np.broadcast_to(_FY2, (len(parts), 16))])
+    x0 = qx + dx - fx * w
+    y0 = qy + dy - fy * h
+    x1, y1 = x0 + w, y0 + h
     inside = (x0 >= 0.0) & (y0 >= 0.0) & (x1 <= pw) & (y1 <= ph)
-    inside[:, 1:_RING] &= (ux != 0.0)[:, None] | (uy != 0.0)[:, None]     # slides: labels of lines only
+    inside[:, 1:_RING] &= (ux != 0.0) | (uy != 0.0)     # slides: labels of lines only
     # clear of every other element's strokes: the cells the box (less TOL) covers hold none
     count, z = _tables(pic)
     ny, nx = count.shape[0] - 1, count.shape[1] - 1
-    i0 = np.clip(np.floor((x0 + TOL) * (1.0 / CELL)), 0, nx).astype(int)
-    i1 = np.clip(np.floor((x1 - TOL) * (1.0 / CELL)) + 1, 0, nx).astype(int)
-    j0 = np.clip(np.floor((y0 + TOL) * (1.0 / CELL)), 0, ny).astype(int)
-    j1 = np.clip(np.floor((y1 - TOL) * (1.0 / CELL)) + 1, 0, ny).astype(int)
-    cnt, zs = (t[j1, i1] - t[j0, i1] - t[j1, i0] + t[j0, i0] for t in (count, z))
+    i0 = np.clip(((x0 + TOL) * (1.0 / CELL)).astype(int), 0, nx)       # x0 + TOL > 0: a floor
+    i1 = np.clip(((x1 - TOL) * (1.0 / CELL)).astype(int) + 1, 0, nx)
+    j0 = np.clip(((y0 + TOL) * (1.0 / CELL)).astype(int), 0, ny)
+    j1 = np.clip(((y1 - TOL) * (1.0 / CELL)).astype(int) + 1, 0, ny)
+    cnt = count[j1, i1] - count[j0, i1] - count[j1, i0] + count[j0, i0]
+    zs = z[j1, i1] - z[j0, i1] - z[j1, i0] + z[j0, i0]
     # every sample is the label's own element's: the sum of their unit numbers is cnt times its own
     # (another's makes the sum's part along it smaller by 1 - cos(2π / elements) or more)
-    u = np.exp(-2j * np.pi / (len(pic.elements) + 1) * e)[:, None]
-    clear = inside & ((zs * u).real >= cnt - 0.25 * (1.0 - math.cos(2.0 * math.pi / (len(pic.elements) + 1))))
+    turn = 2.0 * math.pi / (len(pic.elements) + 1)
+    clear = inside & ((zs * np.exp(-1j * turn * e)).real >= cnt - 0.25 * (1.0 - math.cos(turn)))
 
     # the clear spots in their order, then the others by how many stroke samples they cover
     n = clear.shape[1]
     rank = np.where(inside, np.where(clear, 0.0, (cnt + 1.0) * n) + np.arange(n), np.inf)
     best = np.argsort(rank, 1)[:, :_TRIES]
-    tries = np.isfinite(np.take_along_axis(rank, best, 1)).sum(1)
-    for i, (part, ks, X0, Y0, m, W) in enumerate(zip(parts, best.tolist(), np.take_along_axis(x0, best, 1).tolist(),
-                                                     np.take_along_axis(y0, best, 1).tolist(), tries.tolist(),
-                                                     w.tolist())):
+    tries = np.isfinite(np.take_along_axis(rank, best, 1)).sum(1).tolist()
+    spots = np.take_along_axis(np.stack([x0, y0, dx, dy, fx, fy], 1), best[:, None, :], 2).tolist()
+    for part, ks, (X0, Y0, DX, DY, FX, FY), m, W in zip(parts, best.tolist(), spots, tries, w[:, 0].tolist()):
         j = next((j for j in range(m) if not meets_label(X0[j], Y0[j], X0[j] + W, Y0[j] + h)), None)
         if j is None:    # no free place: the label hides (the element keeps its hover text)
             part["hidden"] = True
             continue
-        k = ks[j]
-        if k:
-            part["dx"], part["dy"] = round(float(dx[i, k]), 2), round(float(dy[i, k]), 2)
-            part["ha"], part["va"] = (_align((float(sx[i, k - 1]), float(sy[i, k - 1]))) if k < _RING else
-                                      (_HA[(k - _RING) % 8], _VA[(k - _RING) % 8]))
+        if ks[j]:           # not the asked spot
+            part["dx"], part["dy"] = round(DX[j], 2), round(DY[j], 2)
+            part["ha"], part["va"] = _HA_OF[FX[j]], _VA_OF[FY[j]]
         part.pop("hidden", None)
         reserve(X0[j], Y0[j], X0[j] + W, Y0[j] + h)
