@@ -48,6 +48,45 @@ _SUBSCRIPT = {1: "₁", 2: "₂"}
 SUM_UNITS = {"twists": ("m/s", "m/s", "rad/s"), "wrenches": ("N", "N", "N·m")}
 
 
+def zero_screw_message(kind: str, k: int) -> str:
+    """Why a screw of ``kind`` and size 0 is refused, in the symbols its slider and picture show.
+
+    A zero twist is no motion and a zero wrench no load: neither is a point or a line (not even
+    one at infinity), so there is nothing to add.  A pure translation or a couple is an ordinary
+    value, offered as the other kind of the screw's menu.
+
+    Parameters
+    ----------
+    kind : {"rotation", "translation", "force", "couple"}
+        The screw's kind.
+    k : {1, 2}
+        The screw.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> print(zero_screw_message("rotation", 1))
+    ω₁ = 0 rad/s makes v₁ the zero twist: no motion, so no pole to add. Choose ω₁ ≠ 0, or screw 1: translation for a pole at infinity.
+    >>> print(zero_screw_message("couple", 2))
+    τ₂ = 0 N·m makes f₂ the zero wrench: no load, so no line to add. Choose τ₂ ≠ 0.
+    """
+    s = _SUBSCRIPT[k]
+    symbol, unit = {"rotation": ("ω", "rad/s"), "translation": ("u", "m/s"),
+                    "force": ("F", "N"), "couple": ("τ", "N·m")}[kind]
+    twist = kind in _TWIST_KINDS
+    text = (f"{symbol}{s} = 0 {unit} makes {'v' if twist else 'f'}{s} the zero "
+            f"{'twist: no motion, so no pole' if twist else 'wrench: no load, so no line'} to add. "
+            f"Choose {symbol}{s} ≠ 0")
+    if kind == "rotation":
+        return f"{text}, or screw {k}: translation for a pole at infinity."
+    if kind == "force":
+        return f"{text}, or screw {k}: couple for the line at infinity."
+    return f"{text}."
+
+
 def _xy_or_ideal(p):
     if p is None:
         return "none (the sum is zero)"
@@ -181,6 +220,9 @@ class ScrewSumExplorer(Described, Explorer):
             if values[f"kind{k}"] not in KINDS[mode]:
                 raise InputError(f"kind{k} must be one of {list(KINDS[mode])} when adding {mode}, "
                                  f"got {values[f'kind{k}']!r}")
+        for k in (1, 2):
+            if values[f"size{k}"] == 0.0:
+                raise InputError(zero_screw_message(values[f"kind{k}"], k))
         add = add_twists if mode == "twists" else add_wrenches
         return {"mode": mode, "c": add(self._screw(values, 1), self._screw(values, 2))}
 
