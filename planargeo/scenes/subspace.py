@@ -100,7 +100,9 @@ def subspace_state(joint: str, point, direction, I, force) -> dict:
     """
     f = np.asarray(force, dtype=float)
     if not (f[0] != 0.0 or f[1] != 0.0):
-        raise DegenerateGeometryError(f"the applied force must be non-zero to have a line, got f = {tuple(f)}")
+        got = ("F = 0 N" if f[2] == 0.0 else           # a couple: its line is the line at infinity
+               f"a pure couple of {float(f[2]):.3g} N·m, whose line is at infinity")
+        raise DegenerateGeometryError(f"the applied force must be non-zero to have a finite line, got {got}")
     s = motion_space(joint, point, direction)
     R = reaction_space(joint, point, direction)
     dec = Decomposition(I, s, R, name="I")
