@@ -168,10 +168,20 @@ def _num(x, digits: int = 3) -> str:
     return "0" if abs(x) < 1e-12 else f"{x:.{digits}g}"
 
 
-def _nonzero(v: np.ndarray, name: str, what: str) -> np.ndarray:
+def _nonzero(v: np.ndarray, name: str, what: str, *zeros: tuple[str, str]) -> np.ndarray:
+    """``v``, or :class:`InputError` saying which values (symbol, unit) make twist or wrench ``name`` zero.
+
+    >>> _nonzero(np.zeros(3), "v₁", "twist", ("ω₁", "rad/s"), ("u₁", "m/s"))
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: ω₁ = 0 rad/s and u₁ = 0 m/s make v₁ the zero twist: no motion, so no pole. Choose ω₁ ≠ 0 or u₁ ≠ 0.
+    """
     if not np.any(v):
-        raise InputError(f"{name} must be non-zero: with these values it is the zero {what} "
-                         f"(no {'pole' if what == 'twist' else 'line'})")
+        said = " and ".join(f"{sym} = 0 {unit}" for sym, unit in zeros)
+        nothing = "no motion, so no pole" if what == "twist" else "no load, so no line"
+        choose = " or ".join(f"{sym} ≠ 0" for sym, _ in zeros)
+        raise InputError(f"{said} make{'s' if len(zeros) == 1 else ''} {name} the zero {what}: "
+                         f"{nothing}. Choose {choose}.")
     return v
 
 
@@ -185,13 +195,16 @@ def _direction(angle_deg: float) -> np.ndarray:
 def _twist(x, y, w, u, angle, k) -> np.ndarray:
     """Twist ``v_k``: a rotation ``w`` about ``(x, y)`` plus a translation ``u`` at ``angle`` degrees."""
     v = w * unit_rotation([x, y]) + np.append(u * _direction(angle), 0.0)
-    return _nonzero(v, f"v{k}", "twist")
+    s = "₁₂"[k - 1]
+    return _nonzero(v, f"v{s}", "twist", (f"ω{s}", "rad/s"), (f"u{s}", "m/s"))
 
 
 def _wrench(x, y, F, angle, tau, k) -> np.ndarray:
     """Wrench ``f_k``: a force ``F`` at ``angle`` degrees through ``(x, y)`` plus a couple ``tau``."""
     d = F * _direction(angle)
-    return _nonzero(np.array([d[0], d[1], x * d[1] - y * d[0] + tau]), f"f{k}", "wrench")
+    s = "₁₂"[k - 1]
+    return _nonzero(np.array([d[0], d[1], x * d[1] - y * d[0] + tau]), f"f{s}", "wrench",
+                    (f"F{s}", "N"), (f"τ{s}", "N·m"))
 
 
 def _operands(id_, title, eq, element, name, a, b, role, sym) -> ConstructionStep:
@@ -292,9 +305,9 @@ def _wrench_sum(x1=-1.5, y1=-0.5, F1=1.0, angle1=60.0, tau1=0.0,
 
 # ------------------------------------------------------------ velocity (4.5): 4.47–4.49
 def _velocity(xv=-1.5, yv=1.0, w=1.0, xj=1.0, yj=0.0, qd=1.5) -> Construction:
-    v_prev = _nonzero(w * unit_rotation([xv, yv]), "v_prev", "twist")
+    v_prev = _nonzero(w * unit_rotation([xv, yv]), "vᵢ₋₁", "twist", ("ωᵢ₋₁", "rad/s"))
     s = unit_rotation([xj, yj])
-    u = _nonzero(s * qd, "s q̇", "twist")
+    u = _nonzero(s * qd, "sᵢ q̇ᵢ", "twist", ("q̇ᵢ", "rad/s"))
     v = v_prev + u
     k = math.hypot(xj - xv, yj - yv)
     case = twists_case(v_prev, u)
@@ -430,9 +443,9 @@ HORIZON = 2.0
 
 
 def _through_infinity(x1=-1.5, y1=-1.0, w1=1.0, hx=1.0, hy=0.5, k=1.5) -> Construction:
-    v1 = _nonzero(w1 * unit_rotation([x1, y1]), "v1", "twist")
+    v1 = _nonzero(w1 * unit_rotation([x1, y1]), "v₁", "twist", ("ω₁", "rad/s"))
     v2 = k * horizon_point([hx, hy], (0.0, 0.0), HORIZON)
-    v2 = _nonzero(v2, "v2", "twist")
+    v2 = _nonzero(v2, "v₂", "twist", ("k", "rad/s"))
     c = add_twists(v1, v2)
     horizon = np.diag([1.0, 1.0, -HORIZON ** 2])           # the circle |x| = R (5.35)
     w = 1.0 - np.hypot(hx, hy) / HORIZON
