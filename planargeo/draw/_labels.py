@@ -1,13 +1,18 @@
 """The label placer of :class:`planargeo.draw.picture.Picture`: labels kept off lines, glyphs and labels.
 
 Every element's drawn strokes (paths, ellipses, pole glyphs, arrows, markers) are sampled every
-:data:`STEP` pixels into a raster of :data:`CELL`-pixel cells that records, per cell, which element
-drew there or that several did.  A label box is clear when the cells it covers hold nothing or
-only its own element's strokes (a label may touch its own element); summed-area tables answer
-that for every candidate spot of every label at once.  Labels are then placed topmost first:
-each takes the first spot, among the asked one and the rings around its anchor, that is clear
-and meets no label placed before it; when no spot is clear, the first that meets no label (the
-label then crosses some line); when none is, it hides (its element keeps its hover text).
+:data:`STEP` pixels into a raster of :data:`CELL`-pixel cells holding, per cell, how many samples
+fell there and the sum of their elements' unit numbers ``exp(2πi k / n)`` (element ``k`` of ``n``).
+A spot is clear when every sample in the cells whose centres lie in its box (less :data:`TOL`) is
+its own element's (a label may touch its own element): then that sum is the count times its own
+unit number, and any other's sample makes it fall short.  Summed-area tables answer this for every
+spot of every label at once.
+
+Labels are placed topmost first.  Each tries its asked spot, then (the label of a line) spots
+beside its line on either side, up to three label widths along it, then two rings of eight around
+its anchor; it takes the first that is clear and meets no label placed before it.  With none
+clear, it takes the free one that covers the fewest samples (it then crosses some stroke); with
+none free among its best :data:`_TRIES`, it hides (its element keeps its hover text).
 
 Examples
 --------
@@ -29,7 +34,8 @@ import numpy as np
 
 #: Pixels between samples along a stroke, and the raster's cell size (pixels).
 STEP, CELL = 3.0, 4.0
-#: A stroke may graze a label box's edge by this many pixels (the box has room around its text).
+#: A stroke may graze a label box's edge by this many pixels, and about half a cell more (the box
+#: is 1.25 font sizes high and 0.6 of one per character: room around its text).
 TOL = 1.0
 
 
@@ -255,10 +261,10 @@ def place_labels(pic, font_px: float, char_em: float) -> None:
     # clear of every other element's strokes: the cells the box (less TOL) covers hold none
     count, z = _tables(pic)
     ny, nx = count.shape[0] - 1, count.shape[1] - 1
-    i0 = np.clip(((x0 + TOL) * (1.0 / CELL)).astype(int), 0, nx)       # x0 + TOL > 0: a floor
-    i1 = np.clip(((x1 - TOL) * (1.0 / CELL)).astype(int) + 1, 0, nx)
-    j0 = np.clip(((y0 + TOL) * (1.0 / CELL)).astype(int), 0, ny)
-    j1 = np.clip(((y1 - TOL) * (1.0 / CELL)).astype(int) + 1, 0, ny)
+    i0 = np.clip(((x0 + TOL) * (1.0 / CELL) + 0.5).astype(int), 0, nx)    # the cells whose centres
+    i1 = np.clip(((x1 - TOL) * (1.0 / CELL) + 0.5).astype(int), 0, nx)    # are in the box
+    j0 = np.clip(((y0 + TOL) * (1.0 / CELL) + 0.5).astype(int), 0, ny)
+    j1 = np.clip(((y1 - TOL) * (1.0 / CELL) + 0.5).astype(int), 0, ny)
     cnt = count[j1, i1] - count[j0, i1] - count[j1, i0] + count[j0, i0]
     zs = z[j1, i1] - z[j0, i1] - z[j1, i0] + z[j0, i0]
     # every sample is the label's own element's: the sum of their unit numbers is cnt times its own
