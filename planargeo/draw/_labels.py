@@ -1,12 +1,10 @@
 """The label placer of :class:`planargeo.draw.picture.Picture`: labels kept off lines, glyphs and labels.
 
 Every element's drawn strokes (paths, ellipses, pole glyphs, arrows, markers) are sampled every
-:data:`STEP` pixels into a raster of :data:`CELL`-pixel cells holding, per cell, how many samples
-fell there and the sum of their elements' unit numbers ``exp(2πi k / n)`` (element ``k`` of ``n``).
-A spot is clear when every sample in the cells whose centres lie in its box (less :data:`TOL`) is
-its own element's (a label may touch its own element): then that sum is the count times its own
-unit number, and any other's sample makes it fall short.  Summed-area tables answer this for every
-spot of every label at once.
+:data:`STEP` pixels and counted in a raster of :data:`CELL`-pixel cells; a summed-area table of the
+counts tells, for every spot of every label at once, whether a stroke passes through the cells whose
+centres lie in its box (less :data:`TOL`).  A spot is clear when none does (its own element's
+strokes count too: the spots beside a line or a pole are off it).
 
 Labels are placed topmost first.  Each tries its asked spot, then (the label of a line) spots
 beside its line on either side, up to three label widths along it, then two rings of eight around
@@ -27,7 +25,6 @@ Examples
 """
 from __future__ import annotations
 
-import math
 from operator import itemgetter
 
 import numpy as np
@@ -75,98 +72,71 @@ _CIRCLE = np.column_stack([np.cos(np.linspace(0, 2 * np.pi, 33)), np.sin(np.lins
 _SQUARE = np.array([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0], [-1.0, -1.0]])
 
 
-def _strokes(pic) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """``(a, b, owner)``: every drawn straight piece as pixel segments ``a → b`` and its element (1, 2, ...)."""
+def _strokes(pic) -> tuple[np.ndarray, np.ndarray]:
+    """``(a, b)``: every drawn straight piece as pixel segments ``a → b``."""
     bx0, by0, kx, ky = pic.box[0], pic.box[2], pic.kx, pic.ky
-    paths, path_own = [], []
-    fixed: dict[str, list] = {"glyph": [], "arrow": [], "mark": [], "ellipse": []}
-    for i, el in enumerate(pic.elements, 1):
+    paths = []
+    kinds: dict[str, list] = {"glyph": [], "arrow": [], "mark": [], "ellipse": []}
+    for el in pic.elements:
         if el["color"] == "none":
             continue
         for part in el["parts"]:
             p = part["p"]
             if p == "path":
                 xy = np.asarray(part["xy"], float)
-                if part.get("closed"):
-                    xy = np.vstack([xy, xy[:1]])
-                paths.append(xy)
-                path_own.append(i)
-            elif p in fixed:
-                fixed[p].append((i, part, el["width"]))
-    a, b, own = [], [], []
+                paths.append(np.vstack([xy, xy[:1]]) if part.get("closed") else xy)
+            elif p in kinds:
+                kinds[p].append((part, el["width"]))
+    a, b = [], []
     if paths:
-        n = [len(xy) for xy in paths]
         xy = (np.concatenate(paths) - (bx0, by0)) * (kx, ky)
-        cut = np.cumsum(n)[:-1] - 1                    # a path's last point starts no segment
         ok = np.ones(len(xy) - 1, bool)
-        ok[cut] = False
+        ok[np.cumsum([len(q) for q in paths])[:-1] - 1] = False        # a path's last point starts none
         a.append(xy[:-1][ok])
         b.append(xy[1:][ok])
-        own.append(np.repeat(np.array(path_own), n)[:-1][ok])
 
-    def polylines(rows, shape):     # (m, k, 2) pixel polylines of one kind, their owners
-        if not rows:
-            return
-        own_k = np.array([r[0] for r in rows])
-        q = np.array(shape(rows))
-        a.append(q[:, :-1].reshape(-1, 2))
-        b.append(q[:, 1:].reshape(-1, 2))
-        own.append(np.repeat(own_k, q.shape[1] - 1))
-
-    def at(part):
-        return (part["x"] - bx0) * kx, (part["y"] - by0) * ky
+    def at(rows):        # (m, 1, 2) pixel anchors
+        return np.array([((p["x"] - bx0) * kx, (p["y"] - by0) * ky) for p, _w in rows])[:, None, :]
 
     def glyphs(rows):    # the arc, then the head at its end (planargeo.draw.geometry.arc_glyph)
-        c = np.array([at(p) for _, p, _w in rows])[:, None, :]
-        r = np.array([p["r"] for _, p, _w in rows])[:, None, None]
-        ccw = np.array([p["ccw"] for _, p, _w in rows])[:, None, None]
+        r, ccw = np.array([(p["r"], p["ccw"]) for p, _w in rows]).T[:, :, None, None]
+        ccw = ccw > 0
         hd = np.clip(0.45 * r, 3.0, 6.0)
         end = np.where(ccw, _ARC[-1], _ARC[0])                   # (m, 1, 2)
-        tang = np.where(ccw, 1.0, -1.0) * end[..., ::-1] * (-1.0, 1.0)
-        tip = r * end + hd * tang
+        tip = r * end + hd * np.where(ccw, 1.0, -1.0) * end[..., ::-1] * (-1.0, 1.0)
         head = np.concatenate([tip, (r - 0.5 * hd) * end, (r + 0.5 * hd) * end, tip], axis=1)
-        return c + np.concatenate([r * np.where(ccw, _ARC, _ARC[::-1]), head], axis=1)
+        return at(rows) + np.concatenate([r * np.where(ccw, _ARC, _ARC[::-1]), head], axis=1)
 
     def arrows(rows):    # the shaft and the head's triangle (the page's: max(8, 4 × width) long)
-        out = []
-        for _, p, w in rows:
-            x, y = at(p)
-            dx, dy = p["dx"], p["dy"]
-            hp = max(8.0, 4.0 * w)
-            L = math.hypot(dx, dy) or 1.0
-            ux, uy = dx / L * hp, dy / L * hp
-            tx, ty = x + dx, y + dy
-            out.append([(x, y), (tx, ty), (tx - ux - 0.35 * uy, ty - uy + 0.35 * ux),
-                        (tx - ux + 0.35 * uy, ty - uy - 0.35 * ux), (tx, ty)])
-        return out
+        v, hp = np.array([(p["dx"], p["dy"]) for p, _w in rows]), np.maximum(8.0, 4.0 * np.array([w for _p, w in rows]))
+        u = v / np.maximum(np.hypot(v[:, 0], v[:, 1]), 1e-9)[:, None] * hp[:, None]
+        n = u[:, ::-1] * (-0.35, 0.35)
+        return at(rows) + np.stack([0.0 * v, v, v - u + n, v - u - n, v], axis=1)
 
     def marks(rows):
-        c = np.array([at(p) for _, p, _w in rows])[:, None, :]
-        s = np.array([p["size"] / 2 for _, p, _w in rows])[:, None, None]
-        return c + s * _SQUARE
+        return at(rows) + np.array([p["size"] / 2 for p, _w in rows])[:, None, None] * _SQUARE
 
     def ellipses(rows):
-        m = np.array([p["m"] for _, p, _w in rows])                 # (n, 4): a, b, c, d
-        c = np.array([at(p) for _, p, _w in rows])[:, None, :]
+        m = np.array([p["m"] for p, _w in rows])                 # (n, 4): a, b, c, d
         ex = _CIRCLE[:, 0] * m[:, None, 0] + _CIRCLE[:, 1] * m[:, None, 1]
         ey = _CIRCLE[:, 0] * m[:, None, 2] + _CIRCLE[:, 1] * m[:, None, 3]
-        return c + np.stack([ex * kx, ey * ky], axis=-1)
+        return at(rows) + np.stack([ex * kx, ey * ky], axis=-1)
 
-    polylines(fixed["glyph"], glyphs)
-    polylines(fixed["arrow"], arrows)
-    polylines(fixed["mark"], marks)
-    polylines(fixed["ellipse"], ellipses)
+    for kind, shape in (("glyph", glyphs), ("arrow", arrows), ("mark", marks), ("ellipse", ellipses)):
+        if kinds[kind]:
+            q = shape(kinds[kind])                          # (m, k, 2) pixel polylines
+            a.append(q[:, :-1].reshape(-1, 2))
+            b.append(q[:, 1:].reshape(-1, 2))
     if not a:
-        return np.zeros((0, 2)), np.zeros((0, 2)), np.zeros(0, int)
-    return np.concatenate(a), np.concatenate(b), np.concatenate(own)
+        return np.zeros((0, 2)), np.zeros((0, 2))
+    return np.concatenate(a), np.concatenate(b)
 
 
-def _tables(pic) -> tuple[np.ndarray, np.ndarray]:
-    """Summed-area tables (``rows + 1, cols + 1``) of the stroke samples in each raster cell:
-    their count, and the sum of their owners' unit numbers ``exp(2πi owner / elements)``."""
+def _table(pic) -> np.ndarray:
+    """Summed-area table (``rows + 1, cols + 1``) of the stroke samples in each raster cell."""
     pw, ph = pic._plot
     nx, ny = int(pw // CELL) + 1, int(ph // CELL) + 1
-    a, b, own = _strokes(pic)
+    a, b = _strokes(pic)
     d = b - a
     n = (np.hypot(d[:, 0], d[:, 1]) * (1.0 / STEP)).astype(int) + 2      # samples of each segment
     start = np.repeat(np.cumsum(n) - n, n)
@@ -174,24 +144,24 @@ def _tables(pic) -> tuple[np.ndarray, np.ndarray]:
     ix = np.floor((np.repeat(a[:, 0], n) + t * np.repeat(d[:, 0], n)) * (1.0 / CELL)).astype(int)
     iy = np.floor((np.repeat(a[:, 1], n) + t * np.repeat(d[:, 1], n)) * (1.0 / CELL)).astype(int)
     inside = (ix >= 0) & (ix < nx) & (iy >= 0) & (iy < ny)
-    cell = (iy * (nx + 1) + ix + nx + 2)[inside]          # in the tables' frame (a zero row and column first)
-    unit = np.exp(2j * np.pi / (len(pic.elements) + 1) * np.arange(len(pic.elements) + 1))
-    size = (ny + 1) * (nx + 1)
-    count = np.bincount(cell, minlength=size).astype(float).reshape(ny + 1, nx + 1)
-    owner = np.repeat(own, n)[inside]
-    z = np.empty(size, complex)
-    z.real = np.bincount(cell, unit.real[owner], size)
-    z.imag = np.bincount(cell, unit.imag[owner], size)
-    z = z.reshape(ny + 1, nx + 1)
-    return count.cumsum(0).cumsum(1), z.cumsum(0).cumsum(1)
+    cell = (iy * (nx + 1) + ix + nx + 2)[inside]          # in the table's frame (a zero row and column first)
+    count = np.bincount(cell, minlength=(ny + 1) * (nx + 1)).reshape(ny + 1, nx + 1)
+    return count.cumsum(0).cumsum(1)
 
 
 def place_labels(pic, font_px: float, char_em: float) -> None:
     """Place the labels of a :class:`~planargeo.draw.picture.Picture` (module docstring).
 
-    Each label tries its asked spot, then eight around its anchor at the asked distance ``r``
-    (at least 6 px), then eight at ``r`` plus one label height.  Texts written at a fixed place
-    are not moved; the labels keep clear of them unless they are marked ``over``.
+    The rings are at the asked distance ``r`` (at least 6 px) and at ``r`` plus one label height.
+    Texts written at a fixed place are not moved; the labels keep clear of them unless they are
+    marked ``over``.  A label moved gets its new offset and alignment; one that cannot be placed
+    gets ``hidden``.
+
+    Parameters
+    ----------
+    pic : Picture
+    font_px, char_em : float
+        The label font size (pixels) and a character's estimated advance (font sizes).
     """
     pw, ph = pic._plot
     h = 1.25 * font_px
@@ -217,13 +187,13 @@ def place_labels(pic, font_px: float, char_em: float) -> None:
         return False
 
     # texts written at a fixed place (a key's rows, a scale bar's length, a message) first
-    free = []            # (-z, owner, part): the labels to place
-    for i, el in enumerate(pic.elements, 1):
+    free = []            # (-z, part): the labels to place
+    for el in pic.elements:
         for part in el["parts"]:
             if part["p"] != "text" or not part["text"]:
                 continue
             if not part.get("fixed"):
-                free.append((-el["z"], i, part))
+                free.append((-el["z"], part))
             elif not part.get("over"):
                 w = em * len(part["text"])
                 x0 = (part["x"] - bx0) * kx + part["dx"] - ALIGN_X[part["ha"]] * w
@@ -235,10 +205,10 @@ def place_labels(pic, font_px: float, char_em: float) -> None:
 
     # every candidate box of every label: the asked spot, slides along its line (a label that
     # has one) on either side, then two rings of eight around its anchor
-    parts = [p for _, _, p in free]
-    qx, qy, dx0, dy0, fx0, fy0, w, ux, uy, e = np.array(
+    parts = [p for _, p in free]
+    qx, qy, dx0, dy0, fx0, fy0, w, ux, uy = np.array(
         [((p["x"] - bx0) * kx, (p["y"] - by0) * ky, p["dx"], p["dy"], ALIGN_X[p["ha"]], ALIGN_Y[p["va"]],
-          em * len(p["text"]), *p.get("along", (0.0, 0.0)), i) for _, i, p in free]).T[:, :, None]
+          em * len(p["text"]), *p.get("along", (0.0, 0.0))) for p in parts]).T[:, :, None]
     a0 = dx0 * ux + dy0 * uy                         # the asked offset: along the line and across it
     vx, vy = dx0 - a0 * ux, dy0 - a0 * uy
     g = np.hypot(vx, vy)
@@ -258,19 +228,15 @@ def place_labels(pic, font_px: float, char_em: float) -> None:
     x1, y1 = x0 + w, y0 + h
     inside = (x0 >= 0.0) & (y0 >= 0.0) & (x1 <= pw) & (y1 <= ph)
     inside[:, 1:_RING] &= (ux != 0.0) | (uy != 0.0)     # slides: labels of lines only
-    # clear of every other element's strokes: the cells the box (less TOL) covers hold none
-    count, z = _tables(pic)
-    ny, nx = count.shape[0] - 1, count.shape[1] - 1
+    # clear of strokes: the cells whose centres lie in the box (less TOL) hold no sample
+    table = _table(pic)
+    ny, nx = table.shape[0] - 1, table.shape[1] - 1
     i0 = np.clip(((x0 + TOL) * (1.0 / CELL) + 0.5).astype(int), 0, nx)    # the cells whose centres
     i1 = np.clip(((x1 - TOL) * (1.0 / CELL) + 0.5).astype(int), 0, nx)    # are in the box
     j0 = np.clip(((y0 + TOL) * (1.0 / CELL) + 0.5).astype(int), 0, ny)
     j1 = np.clip(((y1 - TOL) * (1.0 / CELL) + 0.5).astype(int), 0, ny)
-    cnt = count[j1, i1] - count[j0, i1] - count[j1, i0] + count[j0, i0]
-    zs = z[j1, i1] - z[j0, i1] - z[j1, i0] + z[j0, i0]
-    # every sample is the label's own element's: the sum of their unit numbers is cnt times its own
-    # (another's makes the sum's part along it smaller by 1 - cos(2π / elements) or more)
-    turn = 2.0 * math.pi / (len(pic.elements) + 1)
-    clear = inside & ((zs * np.exp(-1j * turn * e)).real >= cnt - 0.25 * (1.0 - math.cos(turn)))
+    cnt = table[j1, i1] - table[j0, i1] - table[j1, i0] + table[j0, i0]
+    clear = inside & (cnt == 0)
 
     # the clear spots in their order, then the others by how many stroke samples they cover
     n = clear.shape[1]
