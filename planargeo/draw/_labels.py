@@ -145,7 +145,7 @@ def _table(pic) -> np.ndarray:
     iy = np.floor((np.repeat(a[:, 1], n) + t * np.repeat(d[:, 1], n)) * (1.0 / CELL)).astype(int)
     inside = (ix >= 0) & (ix < nx) & (iy >= 0) & (iy < ny)
     cell = (iy * (nx + 1) + ix + nx + 2)[inside]          # in the table's frame (a zero row and column first)
-    count = np.bincount(cell, minlength=(ny + 1) * (nx + 1)).reshape(ny + 1, nx + 1)
+    count = np.bincount(cell, minlength=(ny + 1) * (nx + 1)).reshape(ny + 1, nx + 1).astype(float)
     return count.cumsum(0).cumsum(1)
 
 
@@ -243,14 +243,18 @@ def place_labels(pic, font_px: float, char_em: float) -> None:
     rank = np.where(inside, np.where(clear, 0.0, (cnt + 1.0) * n) + np.arange(n), np.inf)
     best = np.argsort(rank, 1)[:, :_TRIES]
     tries = np.isfinite(np.take_along_axis(rank, best, 1)).sum(1).tolist()
-    spots = np.take_along_axis(np.stack([x0, y0, dx, dy, fx, fy], 1), best[:, None, :], 2).tolist()
-    for part, ks, (X0, Y0, DX, DY, FX, FY), m, W in zip(parts, best.tolist(), spots, tries, w[:, 0].tolist()):
-        j = next((j for j in range(m) if not meets_label(X0[j], Y0[j], X0[j] + W, Y0[j] + h)), None)
-        if j is None:    # no free place: the label hides (the element keeps its hover text)
+    bx = np.take_along_axis(x0, best, 1).tolist()
+    by = np.take_along_axis(y0, best, 1).tolist()
+    for i, (part, ks, X0, Y0, m, W) in enumerate(zip(parts, best.tolist(), bx, by, tries, w[:, 0].tolist())):
+        for j in range(m):
+            if not meets_label(X0[j], Y0[j], X0[j] + W, Y0[j] + h):
+                break
+        else:            # no free place: the label hides (the element keeps its hover text)
             part["hidden"] = True
             continue
-        if ks[j]:           # not the asked spot
-            part["dx"], part["dy"] = round(DX[j], 2), round(DY[j], 2)
-            part["ha"], part["va"] = _HA_OF[FX[j]], _VA_OF[FY[j]]
+        k = ks[j]
+        if k:            # not the asked spot
+            part["dx"], part["dy"] = round(float(dx[i, k]), 2), round(float(dy[i, k]), 2)
+            part["ha"], part["va"] = _HA_OF[float(fx[i, k])], _VA_OF[float(fy[i, k])]
         part.pop("hidden", None)
         reserve(X0[j], Y0[j], X0[j] + W, Y0[j] + h)
