@@ -245,6 +245,8 @@ def main(argv=None) -> int:
     ap.add_argument("--b", default=None, help="Python run in the kernel for the B blocks (none: no A/B)")
     ap.add_argument("--out", type=Path, default=Path("/tmp/slider_breakdown.json"))
     ap.add_argument("--trace", action="store_true", help="trace each block: the frame's costs per step")
+    ap.add_argument("--press", action="store_true",
+                    help="with --mouse-ab: B also holds the mouse button down there during the slider steps")
     ap.add_argument("--mouse-ab", default=None, metavar="X,Y",
                     help="no kernel A/B: A leaves the mouse where the drag let go (over the picture), "
                          "B moves it to the page point X,Y before the slider steps")
@@ -294,9 +296,13 @@ def main(argv=None) -> int:
                     if a.mouse_ab is not None and k == "B":
                         x, y = (float(v) for v in a.mouse_ab.split(","))
                         page.mouse.move(x, y)
+                        if a.press:
+                            page.mouse.down()
                     if tr:
                         tr.start()
                     s_rows = slider_steps(page, ex, cv, a.steps)
+                    if a.mouse_ab is not None and a.press and k == "B":
+                        page.mouse.up()
                     if tr:
                         ev = tr.stop()
                         have = [q for q in s_rows if q["_pic"] is not None]
