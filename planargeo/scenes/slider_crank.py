@@ -98,7 +98,7 @@ def slider_crank_state(psi=0.4, psidot=20.0, r=2.29, l=5.00):
     if abs(c) > 1.0:
         raise SceneError(
             f"rod too short: l = {l:g} cannot reach the piston line x = 0 from the crank pin at "
-            f"x = r cos ψ = {r * np.cos(psi):.6g} (need l ≥ r |cos ψ|)")
+            f"x = r cos ψ = {r * np.cos(psi):.4g} m (need l ≥ r |cos ψ|)")
     beta = float(np.arccos(c))          # psi + theta, in [0, pi]: piston above the crank pin
     theta = beta - psi
     phi = np.pi / 2 - beta

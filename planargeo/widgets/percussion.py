@@ -162,13 +162,15 @@ class PercussionExplorer(Described, Explorer):
         a = percussion_pole(self.state["I"].matrix, f)
         if bool(is_ideal(a)) or abs(a[2]) <= 1e-12 * float(np.abs(a).max()):
             raise DegenerateGeometryError("an axis through the centre of mass has its pole at "
-                                          "infinity (a pure translation)")
+                                          "infinity (a pure translation), where the pole sliders "
+                                          "cannot go: to see it, choose drive = impact and strike "
+                                          "at the centre of mass")
         x, y = float(-a[1] / a[2]), float(a[0] / a[2])
         for name, v in (("pole x", x), ("pole y", y)):
             w = self.controls[name]
             if not w.min <= v <= w.max:
-                raise InputError(f"{name} must stay between {w.min:g} and {w.max:g}: this axis "
-                                 f"needs {v:.3g}")
+                raise InputError(f"this axis needs the pole of a at {name[-1]} = {v:.3g} m, beyond "
+                                 f"its slider ({w.min:g} to {w.max:g} m)")
         return {"pole x": x, "pole y": y}
 
     def _drag_axis_point(self, x, y):
@@ -179,7 +181,7 @@ class PercussionExplorer(Described, Explorer):
         foot = self._axis_points()[0]
         d = np.array([x, y]) - foot
         if math.hypot(*d) < 1e-9:
-            raise DegenerateGeometryError("the direction point is on the turning point")
+            raise DegenerateGeometryError("the direction handle is on the axis point: no direction there")
         return self._pole_for_axis(np.array([d[0], d[1], -(foot[1] * d[0] - foot[0] * d[1])]))
 
     def handles(self):

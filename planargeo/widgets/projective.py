@@ -201,7 +201,8 @@ class ProjectiveExplorer(Described, Explorer):
         foot = pts[0]  # the pivot: M turns about it
         d = (np.array([x, y]) - foot) * (1.0 if self._M_arm > 0 else -1.0)   # along M's direction
         if np.hypot(*d) < 1e-9:
-            raise DegenerateGeometryError("the direction point is on the turning point")
+            raise DegenerateGeometryError("the direction handle is on the point M turns about: "
+                                          "no direction there")
         ang = math.degrees(math.atan2(d[1], d[0]))
         t = math.radians(ang)
         return {"line angle (deg)": ang, "line offset": -math.sin(t) * foot[0] + math.cos(t) * foot[1]}
@@ -210,12 +211,14 @@ class ProjectiveExplorer(Described, Explorer):
         C = self.state["C"]
         M = polar(C, from_xy([x, y]))
         if math.hypot(M[0], M[1]) <= 1e-12 * float(np.abs(M).max()):
-            raise DegenerateGeometryError("the polar of this point is the line at infinity (the centre)")
+            raise DegenerateGeometryError("the polar of the conic's centre is the line at infinity, "
+                                          "which the line sliders cannot hold: tick "
+                                          "“M = line at infinity” to show it")
         ang, off = _angle_offset(M)
         lo, hi = self.controls["line offset"].min, self.controls["line offset"].max
         if not lo <= off <= hi:
-            raise InputError(f"line offset must stay between {lo:g} and {hi:g}: the polar of "
-                             f"({x:.3g}, {y:.3g}) is {off:.3g} from the origin")
+            raise InputError(f"the polar of ({x:.3g}, {y:.3g}) m lies {off:.3g} m from the origin, "
+                             f"beyond the line offset slider ({lo:g} to {hi:g} m)")
         return {"line angle (deg)": ang, "line offset": off}
 
     def handles(self):
@@ -243,7 +246,8 @@ class ProjectiveExplorer(Described, Explorer):
             # the ideal point in the direction (dx, dy): [dy, -dx, 0] (conventions: direction (-b, a))
             P = np.array([values["P y"], -values["P x"], 0.0])
             if not np.any(P):
-                raise DegenerateGeometryError("P x, P y must not both be zero for a point at infinity")
+                raise DegenerateGeometryError("P x = P y = 0 gives no direction: a point at "
+                                              "infinity needs (P x, P y) ≠ (0, 0)")
         else:
             P = from_xy([values["P x"], values["P y"]])
         M = np.array([0.0, 0.0, 1.0]) if values["M at infinity"] else _line(values["line angle (deg)"],
