@@ -7,7 +7,7 @@ each label's box, less :data:`PAD` px of room around its text, against every oth
 segments, arcs, arrow heads, markers and texts), not by the placer's raster.
 
 Where a label still crosses something, no spot near it is free: every spot the placer may use (its
-asked one, beside its line up to three label widths along it on either side, two rings of eight
+asked one, beside its line up to six label heights along it on either side, two rings of eight
 around its anchor) is crossed or taken by a label placed before it.  There the count is bounded by
 the old placer's count minus the crossings this change removed (old → new, the same check).
 """

@@ -7,7 +7,7 @@ centres lie in its box (less :data:`TOL`).  A spot is clear when none does (its 
 strokes count too: the spots beside a line or a pole are off it).
 
 Labels are placed topmost first.  Each tries its asked spot, then (the label of a line) spots
-beside its line on either side, up to three label widths along it, then two rings of eight around
+beside its line on either side, up to six label heights along it, then two rings of eight around
 its anchor; it takes the first that is clear and meets no label placed before it.  With none
 clear, it takes the free one that covers the fewest samples (it then crosses some stroke); with
 none free among its best :data:`_TRIES`, it hides (its element keeps its hover text).
