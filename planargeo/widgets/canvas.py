@@ -121,7 +121,7 @@ Updates carry what changed: a moved point sends its parts, not its colour.
 >>> def picture(x):
 ...     pic = Picture((-2, 2, -2, 2), size=(200, 200))
 ...     pic.point("P", [0.0, -x, 1.0], role="twist", symbol="P", desc=f"a pole at x = {x}")
-...     pic.line("l", [1.0, 0.0, 0.0], role="wrench", symbol="l")
+...     pic.line("l", [1.0, 0.0, -1.0], role="wrench", symbol="l")     # clear of P (its label stays)
 ...     return pic.to_dict()
 >>> c = PictureCanvas()
 >>> c.picture = picture(0.5)
