@@ -120,12 +120,13 @@ def test_a_fresh_car_after_a_long_drag_history_shows_the_same_state():
             ex.advance(rng.choice([1, 3]))
     fresh = CarExplorer(display="agg", **ex.values)
     assert fresh.message == "" and fresh.readout_values == ex.readout_values
-
-    def drawn(e):            # the picture without a refusal's message (the last drag may have been refused)
-        pic = e.picture()
-        return {**pic, "elements": [el for el in pic["elements"] if el["id"] != "figure message"]}
-
-    assert drawn(fresh) == drawn(ex)
+    # the last drag was refused: its message is on the picture and the labels keep clear of it; the
+    # shown state is drawn again without it (a control moved and back) before the pictures are compared
+    if ex.message:
+        mu = ex.values[FRICTION]
+        ex.set(**{FRICTION: 1.1 if mu == 1.2 else 1.2})
+        ex.set(**{FRICTION: mu})
+    assert ex.message == "" and ex.picture() == fresh.picture()
 
 
 @pytest.mark.parametrize("heading", [0.0, 120.0])
