@@ -137,7 +137,8 @@ class Seen:
             restore()
             if h.where() is None:
                 continue
-            others = [tuple(o.where()) for o in ex.all_handles() if o.name != h.name and o.where() is not None]
+            others = [tuple(float(c) for c in o.where()) for o in ex.all_handles()
+                      if o.name != h.name and o.where() is not None]
             for end in (*FAR, *others):
                 restore()
                 if h.where() is None:
@@ -241,7 +242,7 @@ def _label(w) -> tuple[str, str]:
 
 def _symbols(label: str) -> list[str]:
     """The symbols in a label, the words that are not plain English: ``"couple τ on the tip"`` -> ``["τ"]``."""
-    return [w for w in label.split() if len(w) <= 3 and not (w.isascii() and len(w) > 1)]
+    return [w for w in label.split() if len(w) == 1 or not w.isascii()]
 
 
 def _said_right(item: str, labels: list[tuple[str, str]], message: str) -> str:

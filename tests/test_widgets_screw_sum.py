@@ -180,42 +180,42 @@ def test_units_and_special_case_in_the_readout(ex):
 
 def test_drag_a_pole_moves_the_sum_by_the_lever_rule(ex):
     ex.set(x1=0.0, y1=0.0, size1=1.0, size2=3.0)
-    ex.drag("v2", ex.handle_position("v2"), (2.0, 2.0), steps=5)
+    ex.drag("v₂", ex.handle_position("v₂"), (2.0, 2.0), steps=5)
     assert ex.values["x2"] == pytest.approx(2.0) and ex.values["y2"] == pytest.approx(2.0)
     # P = (1 · (0, 0) + 3 · (2, 2)) / 4 (4.12), with no snapping to the 0.05 slider grid on the way
     assert ex.readout_values["pole of sum"] == pytest.approx((1.5, 1.5))
-    ex.drag("v2", (2.0, 2.0), (2.013, 2.0), steps=1)
+    ex.drag("v₂", (2.0, 2.0), (2.013, 2.0), steps=1)
     assert ex.values["x2"] == pytest.approx(2.013)
 
 
 def test_drag_a_pole_onto_the_other(ex):
-    ex.drag("v2", ex.handle_position("v2"), ex.handle_position("v1"), steps=4)
+    ex.drag("v₂", ex.handle_position("v₂"), ex.handle_position("v₁"), steps=4)
     assert ex.message == ""
     assert ex.readout_values["case"] == "coincident poles (4.11)"
 
 
 def test_force_lines_by_point_and_by_direction(ex):
     ex.set(add="wrenches", x1=0.0, y1=0.0, angle1=0.0, size1=1.0, x2=2.0, y2=1.0, angle2=90.0)
-    assert ex.handle_position("f2 direction") == pytest.approx((2.0, 2.0))
-    assert ex.handle_position("v2") is None                 # not a rotation now
+    assert ex.handle_position("f₂ direction") == pytest.approx((2.0, 2.0))
+    assert ex.handle_position("v₂") is None                 # not a rotation now
     # turn f2 by its arrow tip through the direction of f1: the meet runs off to infinity and
     # comes back from the other side, no refusal on the way (10.2.4)
     cases = []
     for tip in [(3.0, 1.5), (3.0, 1.1), (3.0, 1.0), (3.0, 0.9), (3.0, 0.5)]:
-        ex.drag("f2 direction", ex.handle_position("f2 direction"), tip, steps=1)
+        ex.drag("f₂ direction", ex.handle_position("f₂ direction"), tip, steps=1)
         assert ex.message == ""
         cases.append(ex.readout_values["case"])
     assert cases == ["concurrent forces (4.4.1)"] * 2 + ["parallel forces (4.43)"] + ["concurrent forces (4.4.1)"] * 2
     # the meet of y = 0 with the line through (2, 1) along (1, -0.5): (4, 0), by hand
     assert ex.readout_values["meet of lines"] == pytest.approx((4.0, 0.0))
-    ex.drag("f1", ex.handle_position("f1"), (0.0, 1.0), steps=2)       # f1 now on y = 1
+    ex.drag("f₁", ex.handle_position("f₁"), (0.0, 1.0), steps=2)       # f1 now on y = 1
     assert ex.readout_values["meet of lines"] == pytest.approx((2.0, 1.0))
 
 
 def test_direction_handle_on_its_point_is_refused_with_the_reason(ex):
     ex.set(add="wrenches")
     good = dict(ex.values)
-    ex.drag("f1 direction", ex.handle_position("f1 direction"),
+    ex.drag("f₁ direction", ex.handle_position("f₁ direction"),
             (good["x1"], good["y1"]), steps=1)
     assert "no direction" in ex.message
     assert ex.values == good
@@ -293,7 +293,7 @@ def test_every_number_has_a_unit_and_every_row_a_meaning(ex):
 
 def test_a_fresh_explorer_from_the_values_shows_the_same(ex):
     ex.set(add="wrenches", kind2="couple", size2=2.0)
-    ex.drag("f1", ex.handle_position("f1"), (0.5, 0.5), steps=2)
+    ex.drag("f₁", ex.handle_position("f₁"), (0.5, 0.5), steps=2)
     fresh = ScrewSumExplorer(display="agg", **ex.values)
     assert fresh.readout_strings == ex.readout_strings
     ex.reset()

@@ -5,14 +5,15 @@ Two twists add to a twist whose pole lies on the line of their poles at the leve
 lines (4.4.1).  The arithmetic is :func:`planargeo.screws.add_twists` /
 :func:`~planargeo.screws.add_wrenches`; the readout names the special case reached
 (:mod:`planargeo.screws.special`), passing through ideal elements without an error.  Drag the
-poles and directions of twists, the lines and arrow tips of forces.
+poles and directions of twists, the lines and arrow tips of forces (handles named as the picture
+labels them: ``"v₁"``, ``"v₂ direction"``, ``"f₁"``, ``"f₂ direction"``).
 
 Examples
 --------
 >>> ex = ScrewSumExplorer(display="agg", add="wrenches")
 >>> ex.readout_values["case"], ex.controls["kind1"].options     # a wrench is a force or a couple
 ('concurrent forces (4.4.1)', ('force', 'couple'))
->>> _ = ex.drag("f2 direction", ex.handle_position("f2 direction"), (2.5, 0.5))  # turned parallel to f1
+>>> _ = ex.drag("f₂ direction", ex.handle_position("f₂ direction"), (2.5, 0.5))  # turned parallel to f₁
 >>> ex.readout_values["case"], ex.readout_values["meet of lines"], ex.message
 ('parallel forces (4.43)', 'at infinity (direction (1, 0))', '')
 """
@@ -256,15 +257,17 @@ class ScrewSumExplorer(Described, Explorer):
 
     # ------------------------------------------------------------------ handles
     def handles(self) -> list[Handle]:
-        # a handle of a screw of another kind is not draggable now
+        # a handle of a screw of another kind is not draggable now; named as the picture labels
+        # the screw (v₁, f₂), since a refused drag names its handle
         out = []
         for k in (1, 2):
+            s = _SUBSCRIPT[k]
             def kind_is(kind, k=k):
                 return lambda: shown(self).get(f"kind{k}") == kind
             xy = (f"x{k}", f"y{k}")
             turn = (f"angle{k}", f"size{k}")
-            out += [xy_handle(self, f"v{k}", *xy, when=kind_is("rotation")),
-                    arrow_handle(self, f"v{k} direction", *xy, *turn, arm=ARM, when=kind_is("translation")),
-                    xy_handle(self, f"f{k}", *xy, when=kind_is("force")),
-                    arrow_handle(self, f"f{k} direction", *xy, *turn, arm=ARM, flip=True, when=kind_is("force"))]
+            out += [xy_handle(self, f"v{s}", *xy, when=kind_is("rotation")),
+                    arrow_handle(self, f"v{s} direction", *xy, *turn, arm=ARM, when=kind_is("translation")),
+                    xy_handle(self, f"f{s}", *xy, when=kind_is("force")),
+                    arrow_handle(self, f"f{s} direction", *xy, *turn, arm=ARM, flip=True, when=kind_is("force"))]
         return out
