@@ -5,6 +5,8 @@ checkbox ("B"); ticking it runs ``--b`` (Python, e.g. ``PictureCanvas.defer = Fa
 clearing it runs ``--a``.  ``--css`` is CSS the harness adds to the page during the B blocks.
 Blocks of ``--block`` floor (ping), drag and slider steps alternate between A and B,
 ``--rounds`` times (ABBA order), so both see the same machine load and the same page.
+Besides the steps as page_latency stamps them ("painted": the painting frame's rAF callback),
+each step is also taken to the end of that frame's work ("→ frame end", :data:`FRAME_END_HOOK`).
 
 Run::
 
@@ -36,6 +38,32 @@ def _cells(a: str, b: str, every: bool = False) -> list[str]:
             f"exec({a!r}, globals())\nab"] + (pl.CELLS[2:] if every else [])
 
 
+#: The end of each frame's main-thread work (style, layout, paint, commit): a task posted from the
+#: frame's animation-frame callbacks runs after them.  "painted" (page_latency) is stamped in the
+#: frame's rAF callback; what the frame does before its rAF callbacks (a hover hit test after the
+#: picture changed under a resting pointer runs style and layout there) counts in a step, what it
+#: does after them does not: "→ frame end" counts the whole frame, for drag and slider alike.
+FRAME_END_HOOK = """() => {
+  if (window.__pgFrameEnds) return;
+  window.__pgFrameEnds = [];
+  const ch = new MessageChannel();
+  let posted = false;
+  ch.port1.onmessage = () => { posted = false; window.__pgFrameEnds.push(performance.now());
+                               if (window.__pgFrameEnds.length > 5000) window.__pgFrameEnds.shift(); };
+  const raf = window.requestAnimationFrame.bind(window);
+  window.requestAnimationFrame = (cb) => raf((t) => {
+    if (!posted) { posted = true; ch.port2.postMessage(0); }
+    return cb(t);
+  });
+}"""
+
+
+def _to_frame_end(page, pairs: list) -> list:
+    """For each ``(input, painted)`` (page ms): the end of the painting frame's work, from the input."""
+    return page.evaluate("(ps) => ps.map(([t0, t1]) => { const e = window.__pgFrameEnds.find(t => t >= t1);"
+                         " return e === undefined ? null : e - t0; })", pairs)
+
+
 def _block(res: dict, page, ex, cv, a) -> None:
     """One block of steps in the page's current set-up: F, F after a pause, drags, slider steps."""
     res["F"] += pl.floor(cv, a.block)
@@ -46,8 +74,15 @@ def _block(res: dict, page, ex, cv, a) -> None:
         res["drag: ack → painted"].append(st["tPaint"] - st["tAck"])
         res["drag: sent → ack"].append(st["tAck"] - st["tSent"])
         res["drag: kernel ms"].append(st.get("kernelMs"))
+    res["drag → frame end"] += _to_frame_end(page, [[st["tInput"], st["tPaint"]] for st in pl.STEPS[n0:]])
     if not a.no_slider:
         res["slider"] += pl.slider(page, ex, cv, "angle", a.block)[0]
+        # the block's key presses (the slider starts its list again; a listener more each block: one
+        # press is stamped once per listener, within a millisecond), the steps' first
+        pairs = pl._api(cv, "window.__pgKeys.filter((k, i, ks) => i === 0 || k - ks[i - 1] > 1)"
+                            f".slice(0, {a.block}).map(k => [k, p.paintTimes.find(t => t > k)])"
+                            ".filter(q => q[1] !== undefined)")
+        res["slider → frame end"] += _to_frame_end(page, pairs)
 
 
 def run(browser, medium: str, tmp: Path, a) -> dict:
@@ -57,7 +92,7 @@ def run(browser, medium: str, tmp: Path, a) -> dict:
     server, url = pl.serve(medium, root, tmp)
     page = browser.new_page(viewport={"width": 1400, "height": 1100})
     res = {k: {"F": [], "F after the steps' pause": [], "drag": [], "slider": [], "drag: ack → painted": [], "drag: sent → ack": [],
-               "drag: kernel ms": []} for k in "AB"}
+               "drag: kernel ms": [], "drag → frame end": [], "slider → frame end": []} for k in "AB"}
     try:
         page.goto(url, wait_until="domcontentloaded", timeout=120_000)
         if medium == "jupyterlab":
@@ -67,6 +102,7 @@ def run(browser, medium: str, tmp: Path, a) -> dict:
                                    timeout=120_000)
             page_trace.open_lab(page)
         ex, cv = pl._canvas(page, pl._titles()["ChainExplorer"])
+        page.evaluate(FRAME_END_HOOK)
         box = page.locator(".widget-checkbox input").first
         box.wait_for(state="attached", timeout=120_000)
         time.sleep(1.0)
@@ -129,19 +165,22 @@ def _open_lab(browser, tmp: Path, name: str, server_config: dict | None, a):
     if a.only == ["voila"]:
         page.goto(server.url, wait_until="domcontentloaded", timeout=120_000)
         ex, cv = pl._canvas(page, pl._titles()["ChainExplorer"])
+        page.evaluate(FRAME_END_HOOK)
         return server, page, ex, cv
     page.goto(f"{server.url}/lab/tree/page.ipynb?reset", wait_until="domcontentloaded", timeout=120_000)
     page.wait_for_function(pl.KERNEL_READY,
                            timeout=120_000)
     page_trace.open_lab(page)
     ex, cv = pl._canvas(page, pl._titles()["ChainExplorer"])
+    page.evaluate(FRAME_END_HOOK)
     return server, page, ex, cv
 
 
 def run_two_labs(browser, tmp: Path, a) -> dict:
     """A: a JupyterLab as configured by the harness; B: the same with ``--lab-config-b`` added."""
     res = {k: {"F": [], "F after the steps' pause": [], "drag": [], "slider": [], "drag: ack → painted": [],
-               "drag: sent → ack": [], "drag: kernel ms": []} for k in "AB"}
+               "drag: sent → ack": [], "drag: kernel ms": [], "drag → frame end": [], "slider → frame end": []}
+           for k in "AB"}
     opened = {}
     try:
         for k in ("BA" if a.swap else "AB"):      # --swap: B's server and page opened first

@@ -25,7 +25,6 @@ True
 """
 from __future__ import annotations
 
-import asyncio
 import contextlib
 import time
 import warnings
@@ -345,12 +344,6 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
                     self._pending = False
                     self._update()
 
-    #: Seconds the controls', readout's and message's new values wait after the picture (page
-    #: display, a running event loop; 0: they follow it at once).  Sent right behind it, they
-    #: reach the page with it and the page works on them (the readout's table parsed, styled
-    #: and laid out) before it paints the picture; a frame later, the picture is painted first.
-    after_picture_s: float = 0.02
-
     @contextlib.contextmanager
     def _page_after(self):
         """The controls', readout's and message's new values reach the page after the picture."""
@@ -368,20 +361,7 @@ class Explorer(ControlsMixin, FrontMixin, HandleMixin, PlayMixin, ExportMixin):
             # while the page plays the syncs wait longer (PlayMixin._keep_play_hold): at most
             # every PLAY_SYNC_S seconds (a hold inside Play's hold holds nothing of its own)
             if not self._keep_play_hold(stack):
-                self._send_after_picture(stack)
-
-    def _send_after_picture(self, stack: contextlib.ExitStack) -> None:
-        """Release the syncs ``stack`` holds :attr:`after_picture_s` from now (at once without a
-        running event loop or outside the page).  Values set meanwhile join them (a hold inside a
-        hold holds nothing of its own): each leaves once, with its latest value."""
-        loop = None
-        if self.display_mode == "page" and self.after_picture_s > 0:
-            with contextlib.suppress(RuntimeError):
-                loop = asyncio.get_running_loop()
-        if loop is None:
-            stack.close()
-            return
-        loop.call_later(self.after_picture_s, stack.close)
+                stack.close()
 
     def set(self, **values) -> "Explorer":
         """Set several controls at once (one update); if one value is refused, none is set.
