@@ -52,6 +52,18 @@ PAGE_HOOK = r"""
     }
     return k;
   };
+  // the end of each frame's main-thread work (style, layout, paint, commit): a task posted from
+  // the frame's animation-frame callbacks runs after them
+  window.__pgFrameEnds = [];
+  const ch = new MessageChannel();
+  let posted = false;
+  ch.port1.onmessage = () => { posted = false; window.__pgFrameEnds.push(performance.now());
+                               if (window.__pgFrameEnds.length > 2000) window.__pgFrameEnds.shift(); };
+  const raf = window.requestAnimationFrame.bind(window);
+  window.requestAnimationFrame = (cb) => raf((t) => {
+    if (!posted) { posted = true; ch.port2.postMessage(0); }
+    return cb(t);
+  });
   const send = WebSocket.prototype.send;
   WebSocket.prototype.send = function (d) {
     if (!this.__pgHooked) {
@@ -174,6 +186,14 @@ def _stages(t_input: float, t_paint: float, frames: list, picture_kind: str) -> 
     return out
 
 
+def _frame_end(page, st: dict, t_input: float, t_raf: float, t_pic) -> None:
+    """The end of the frame that painted the picture (its main-thread work done), from the input and
+    from the picture's arrival: "painted" as the step's end, whatever the frame did before its rAF."""
+    end = page.evaluate(f"window.__pgFrameEnds.find(t => t >= {t_raf})")
+    st["input → frame end"] = None if end is None else end - t_input
+    st["picture → frame end"] = None if end is None or t_pic is None else end - t_pic
+
+
 def slider_steps(page, ex, cv, steps: int, pause: float = pl.PAUSE) -> list[dict]:
     sl = ex.locator(".widget-slider").filter(has_text="angle").first
     knob = sl.locator(".noUi-handle").first
@@ -204,6 +224,7 @@ def slider_steps(page, ex, cv, steps: int, pause: float = pl.PAUSE) -> list[dict
         st["page applies"] = ap[0] if ap else None
         pic = next((f[0] for f in fr if f[1] == "in" and f[2] == "comm_msg:custom:update"), None)
         st["_pic"], st["_raf"] = pic, got[1]
+        _frame_end(page, st, got[0], got[1], pic)
         out.append(st)
     for _ in range(abs(net)):
         time.sleep(0.25)
@@ -222,6 +243,7 @@ def drag_steps(page, cv, steps: int) -> list[dict]:
         st["kernel (ack ms)"] = s.get("kernelMs")
         st["_pic"] = next((f[0] for f in fr if f[1] == "in" and f[2] == "comm_msg:custom:ack"), None)
         st["_raf"] = s["tPaint"]
+        _frame_end(page, st, s["tInput"], s["tPaint"], st["_pic"])
         out.append(st)
     return out
 
