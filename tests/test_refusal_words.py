@@ -289,3 +289,19 @@ def test_a_zero_twist_is_said_with_the_slider_symbol():
     ex.controls["kind1"].value = "translation"           # a pure translation: a pole at infinity, shown
     assert ex.message == "" and ex.readout_values["ω₁"] == 0.0
     assert ex.readout_values["pole of sum"] != good["pole of sum"]
+
+
+@pytest.mark.parametrize("text, typed, caught", [
+    ("v1 must be non-zero, got array([0., 0., 0.])", None, True),                 # the review's
+    ("got f = (np.float64(0.0), np.float64(0.0), np.float64(0.0))", None, True),
+    ("v_prev must be non-zero", None, True),
+    ("internal error (ZeroDivisionError): float division by zero", None, True),
+    ("kind must be one of ['force', 'couple'], got None", None, True),
+    ("the pole is at (nan, nan)", None, True),
+    ("joint speeds: numbers typed here must lie between -1e+06 and 1e+06, got nan", "nan", False),
+    ("ω₁ = 0 rad/s makes v₁ the zero twist: no motion, so no pole to add", None, False),
+    ("screw 1: translation for a pole at infinity; q̇ᵢ = 1e6 rad/s (4.4.1)", None, False),
+])
+def test_the_code_patterns_catch_the_reviews_messages(text, typed, caught):
+    """The patterns find the code the review read on screen, and pass words, symbols and numbers."""
+    assert bool(_code_in(text, typed)) is caught, _code_in(text, typed)
