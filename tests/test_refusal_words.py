@@ -102,6 +102,8 @@ class Seen:
 
     def __init__(self, ex):
         self.ex, self.messages, self.inconsistent = ex, [], []
+        self.handles: set[str] = set()       # the handles' names met (each drawn as its symbol)
+        self._drawn: set[str] = set()
 
     def note(self, what: str, typed: str | None = None, readout: dict | None = None,
              handle: str | None = None) -> None:
@@ -117,6 +119,11 @@ class Seen:
             self.inconsistent.append(f"{what}: controls {off} not at the shown values")
         if readout is not None and ex.readout_values != readout:
             self.inconsistent.append(f"{what}: the readout changed with a refusal")
+        if ex.figure_text not in self._drawn:   # each message drawn once: on the picture, whole
+            self._drawn.add(ex.figure_text)
+            said = [e.get("desc") for e in ex.picture()["elements"] if e["id"] == "figure message"]
+            if said != [f"message: {ex.figure_text}"]:
+                self.inconsistent.append(f"{what}: the picture says {said}, not {ex.figure_text!r}")
 
     def set(self, what: str, k: str, v) -> None:
         ex, before = self.ex, dict(self.ex.readout_values)
@@ -137,6 +144,7 @@ class Seen:
             restore()
             if h.where() is None:
                 continue
+            self.handles.add(h.name)
             others = [tuple(float(c) for c in o.where()) for o in ex.all_handles()
                       if o.name != h.name and o.where() is not None]
             for end in (*FAR, *others):
@@ -222,7 +230,8 @@ def test_refusals_are_said_in_words(name):
 
 @pytest.mark.parametrize("name", NAMES)
 def test_a_refused_drag_names_the_handle_in_words(name):
-    """A refused drag says which handle in words (``"drag of f1 direction refused"`` is code: v₁, f₁).
+    """A handle is named in words: a refused drag says its name (``"drag of f1 direction refused"`` is
+    code: v₁, f₁), and the picture draws it as the handle's symbol.
 
     The name is the handle's (:class:`~planargeo.widgets.base.Handle`), put in the message by
     :mod:`planargeo.widgets.handles` and :func:`planargeo.widgets._explorer.arrow_handle`.
@@ -230,6 +239,8 @@ def test_a_refused_drag_names_the_handle_in_words(name):
     seen = driven(name)
     bad = {f"{m.handle!r}: {m.message}" for m in seen.messages
            if m.handle and m.handle in m.message and _code_in(m.handle, None)}
+    # the picture draws each handle with its name as symbol ("drag to change <name>")
+    bad |= {f"{h!r} drawn as a handle's symbol" for h in seen.handles if _code_in(h, None)}
     assert not bad, "\n".join(sorted(bad)[:20])
 
 
