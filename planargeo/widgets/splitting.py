@@ -136,7 +136,8 @@ class SplittingExplorer(Described, ChainBodies, Explorer):
         if tau == 0.0 and float(values["g (m/s²)"]) == 0.0:
             from planargeo.errors import InputError
 
-            raise InputError("couple τ must be non-zero without gravity: nothing would move")
+            raise InputError("couple τ must be non-zero without gravity: with τ = 0 N·m and g = 0 m/s² "
+                             "nothing would move. Choose τ ≠ 0 or g > 0.")
         q = np.array([0.0] + [phi] * (n - 1))
         st = splitting_state(self._model(n, rho, float(values["g (m/s²)"])), q, split, tau)
         st.update(n=n, split=split, rho=rho, phi=phi, tau=tau)
