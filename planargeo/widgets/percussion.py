@@ -61,14 +61,25 @@ def parse_polygon(text: str) -> Polygon:
     Traceback (most recent call last):
     ...
     planargeo.errors.InvalidPolygonError: polygon must be a simple (non self-intersecting) area, got '0,0; 1,1; 1,0; 0,1'
+    >>> parse_polygon("0,0; 1,0")
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InvalidPolygonError: polygon needs at least three vertices x, y (m), got '0,0; 1,0', 2 of them
     """
     try:
         pts = [tuple(float(c) for c in item.replace(" ", "").split(","))
                for item in text.strip().strip(";").split(";") if item.strip()]
     except ValueError:
-        raise InvalidPolygonError(f"polygon must be 'x, y; x, y; ...', got {text!r}") from None
-    if len(pts) < 3 or any(len(p) != 2 for p in pts):
-        raise InvalidPolygonError(f"polygon needs at least three 'x, y' vertices, got {text!r}")
+        raise InvalidPolygonError(f"polygon must be numbers, vertices x, y (m) separated by ';' "
+                                  f"as in 0,0; 1,0; 0,1, got {text!r}") from None
+    if not pts:
+        raise InvalidPolygonError("polygon is empty: type at least three vertices x, y (m) separated "
+                                  "by ';', as in 0,0; 1,0; 0,1")
+    if any(len(p) != 2 for p in pts):
+        raise InvalidPolygonError(f"polygon: each vertex is two numbers x, y (m), vertices separated by "
+                                  f"';', got {text!r}")
+    if len(pts) < 3:
+        raise InvalidPolygonError(f"polygon needs at least three vertices x, y (m), got {text!r}, {len(pts)} of them")
     poly = Polygon(pts)
     if poly.convex_hull.area <= 0:
         raise InvalidPolygonError(f"polygon must enclose an area (its vertices lie on one line), got {text!r}")
