@@ -59,6 +59,7 @@ _SHIFT = np.array([1, -1, 2, -2, 3, -3, 0, 1, -1, 2, -2, 3, -3], float)
 _RING_X, _RING_Y = np.tile(_DIR[:, 0], 2), np.tile(_DIR[:, 1], 2)
 _RADII, _REACH = np.ones(16), np.repeat([0.0, 1.0], 8)
 _FX2, _FY2 = np.tile(_FX, 2), np.tile(_FY, 2)
+_NOT_ALONG = (0.0, 0.0)
 _HA_OF = {0.0: "left", 0.5: "center", 1.0: "right"}
 _VA_OF = {0.0: "bottom", 0.5: "center", 1.0: "top"}
 #: how many of a label's spots, best first, are tried before it hides
@@ -73,80 +74,116 @@ _SQUARE = np.array([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0], [-1.0, -
 
 
 def _strokes(pic) -> tuple[np.ndarray, np.ndarray]:
-    """``(a, b)``: every drawn straight piece as pixel segments ``a → b``."""
-    bx0, by0, kx, ky = pic.box[0], pic.box[2], pic.kx, pic.ky
-    paths = []
-    kinds: dict[str, list] = {"glyph": [], "arrow": [], "mark": [], "ellipse": []}
+    """``(a, b)``: every drawn straight piece as pixel segments ``a → b`` (elements that are obstacles)."""
+    return _segments(pic, _gather(pic)[0])
+
+
+def _obstacle(el) -> bool:
+    """Labels keep off the element: it is drawn and not a passing note (``Picture.text(obstacle=False)``)."""
+    return el["color"] != "none" and el.get("obstacle", True)
+
+
+def _gather(pic) -> tuple[tuple, list, list]:
+    """One pass over the parts: the strokes by kind, the fixed texts' boxes to keep clear of, the labels."""
+    paths, glyphs, arrows, marks, ellipses = [], [], [], [], []
+    texts, free = [], []
     for el in pic.elements:
-        if el["color"] == "none":
-            continue
+        stroke = _obstacle(el)
         for part in el["parts"]:
             p = part["p"]
-            if p == "path":
-                xy = np.asarray(part["xy"], float)
-                paths.append(np.vstack([xy, xy[:1]]) if part.get("closed") else xy)
-            elif p in kinds:
-                kinds[p].append((part, el["width"]))
+            if p == "text":
+                if not part["text"]:
+                    continue
+                if not part.get("fixed"):
+                    free.append((-el["z"], part))
+                elif not part.get("over"):
+                    texts.append(part)
+            elif not stroke:
+                continue
+            elif p == "path":
+                xy = part["xy"]
+                if part.get("closed"):
+                    xy = np.vstack([xy, xy[:1]])
+                paths.append(xy)
+            elif p == "mark":
+                marks.append((part["x"], part["y"], part["size"] / 2))
+            elif p == "arrow":
+                arrows.append((part["x"], part["y"], part["dx"], part["dy"], el["width"]))
+            elif p == "glyph":
+                glyphs.append((part["x"], part["y"], part["r"], part["ccw"]))
+            elif p == "ellipse":
+                ellipses.append((part["x"], part["y"], *part["m"]))
+    return (paths, glyphs, arrows, marks, ellipses), texts, free
+
+
+def _segments(pic, kinds) -> tuple[np.ndarray, np.ndarray]:
+    """``(a, b)``: the pixel segments of the strokes gathered by :func:`_gather`."""
+    paths, glyphs, arrows, marks, ellipses = kinds
+    bx0, by0, kx, ky = pic.box[0], pic.box[2], pic.kx, pic.ky
     a, b = [], []
     if paths:
-        xy = (np.concatenate(paths) - (bx0, by0)) * (kx, ky)
+        xy = np.concatenate(paths)
+        xy = (xy - (bx0, by0)) * (kx, ky)
         ok = np.ones(len(xy) - 1, bool)
         ok[np.cumsum([len(q) for q in paths])[:-1] - 1] = False        # a path's last point starts none
         a.append(xy[:-1][ok])
         b.append(xy[1:][ok])
 
-    def at(rows):        # (m, 1, 2) pixel anchors
-        return np.array([((p["x"] - bx0) * kx, (p["y"] - by0) * ky) for p, _w in rows])[:, None, :]
+    def at(q):           # (m, 1, 2) pixel anchors
+        return ((q[:, :2] - (bx0, by0)) * (kx, ky))[:, None, :]
 
-    def glyphs(rows):    # the arc, then the head at its end (planargeo.draw.geometry.arc_glyph)
-        r, ccw = np.array([(p["r"], p["ccw"]) for p, _w in rows]).T[:, :, None, None]
-        ccw = ccw > 0
+    polys = []
+    if glyphs:           # the arc, then the head at its end (planargeo.draw.geometry.arc_glyph)
+        q = np.array(glyphs, float)
+        r, ccw = q[:, 2, None, None], q[:, 3, None, None] > 0
         hd = np.clip(0.45 * r, 3.0, 6.0)
         end = np.where(ccw, _ARC[-1], _ARC[0])                   # (m, 1, 2)
         tip = r * end + hd * np.where(ccw, 1.0, -1.0) * end[..., ::-1] * (-1.0, 1.0)
         head = np.concatenate([tip, (r - 0.5 * hd) * end, (r + 0.5 * hd) * end, tip], axis=1)
-        return at(rows) + np.concatenate([r * np.where(ccw, _ARC, _ARC[::-1]), head], axis=1)
-
-    def arrows(rows):    # the shaft and the head's triangle (the page's: max(8, 4 × width) long)
-        v, hp = np.array([(p["dx"], p["dy"]) for p, _w in rows]), np.maximum(8.0, 4.0 * np.array([w for _p, w in rows]))
+        polys.append(at(q) + np.concatenate([r * np.where(ccw, _ARC, _ARC[::-1]), head], axis=1))
+    if arrows:           # the shaft and the head's triangle (the page's: max(8, 4 × width) long)
+        q = np.array(arrows, float)
+        v, hp = q[:, 2:4], np.maximum(8.0, 4.0 * q[:, 4])
         u = v / np.maximum(np.hypot(v[:, 0], v[:, 1]), 1e-9)[:, None] * hp[:, None]
         n = u[:, ::-1] * (-0.35, 0.35)
-        return at(rows) + np.stack([0.0 * v, v, v - u + n, v - u - n, v], axis=1)
-
-    def marks(rows):
-        return at(rows) + np.array([p["size"] / 2 for p, _w in rows])[:, None, None] * _SQUARE
-
-    def ellipses(rows):
-        m = np.array([p["m"] for p, _w in rows])                 # (n, 4): a, b, c, d
-        ex = _CIRCLE[:, 0] * m[:, None, 0] + _CIRCLE[:, 1] * m[:, None, 1]
-        ey = _CIRCLE[:, 0] * m[:, None, 2] + _CIRCLE[:, 1] * m[:, None, 3]
-        return at(rows) + np.stack([ex * kx, ey * ky], axis=-1)
-
-    for kind, shape in (("glyph", glyphs), ("arrow", arrows), ("mark", marks), ("ellipse", ellipses)):
-        if kinds[kind]:
-            q = shape(kinds[kind])                          # (m, k, 2) pixel polylines
-            a.append(q[:, :-1].reshape(-1, 2))
-            b.append(q[:, 1:].reshape(-1, 2))
+        polys.append(at(q) + np.stack([0.0 * v, v, v - u + n, v - u - n, v], axis=1))
+    if marks:
+        q = np.array(marks, float)
+        polys.append(at(q) + q[:, 2, None, None] * _SQUARE)
+    if ellipses:
+        q = np.array(ellipses, float)                       # x, y and the matrix a, b, c, d
+        ex = _CIRCLE[:, 0] * q[:, None, 2] + _CIRCLE[:, 1] * q[:, None, 3]
+        ey = _CIRCLE[:, 0] * q[:, None, 4] + _CIRCLE[:, 1] * q[:, None, 5]
+        polys.append(at(q) + np.stack([ex * kx, ey * ky], axis=-1))
+    for q in polys:      # (m, k, 2) pixel polylines
+        a.append(q[:, :-1].reshape(-1, 2))
+        b.append(q[:, 1:].reshape(-1, 2))
     if not a:
         return np.zeros((0, 2)), np.zeros((0, 2))
     return np.concatenate(a), np.concatenate(b)
 
 
-def _table(pic) -> np.ndarray:
+def _table(pic, kinds=None) -> np.ndarray:
     """Summed-area table (``rows + 1, cols + 1``) of the stroke samples in each raster cell."""
     pw, ph = pic._plot
     nx, ny = int(pw // CELL) + 1, int(ph // CELL) + 1
-    a, b = _strokes(pic)
+    a, b = _segments(pic, _gather(pic)[0] if kinds is None else kinds)
     d = b - a
-    n = (np.hypot(d[:, 0], d[:, 1]) * (1.0 / STEP)).astype(int) + 2      # samples of each segment
-    start = np.repeat(np.cumsum(n) - n, n)
-    t = (np.arange(len(start)) - start) / np.repeat(n - 1.0, n)
-    ix = np.floor((np.repeat(a[:, 0], n) + t * np.repeat(d[:, 0], n)) * (1.0 / CELL)).astype(int)
-    iy = np.floor((np.repeat(a[:, 1], n) + t * np.repeat(d[:, 1], n)) * (1.0 / CELL)).astype(int)
-    inside = (ix >= 0) & (ix < nx) & (iy >= 0) & (iy < ny)
-    cell = (iy * (nx + 1) + ix + nx + 2)[inside]          # in the table's frame (a zero row and column first)
-    count = np.bincount(cell, minlength=(ny + 1) * (nx + 1)).reshape(ny + 1, nx + 1).astype(float)
-    return count.cumsum(0).cumsum(1)
+    n = (np.hypot(d[:, 0], d[:, 1]) * (1.0 / STEP)).astype(np.intp) + 2      # samples of each segment
+    seg = np.repeat(np.arange(len(n)), n)
+    t = np.arange(len(seg)) - (np.cumsum(n) - n)[seg]
+    t = t / (n - 1.0)[seg]
+    ix = np.floor((a[:, 0][seg] + t * d[:, 0][seg]) * (1.0 / CELL))
+    iy = np.floor((a[:, 1][seg] + t * d[:, 1][seg]) * (1.0 / CELL))
+    # outside the raster: into the table's zero row (dropped); in the table's frame otherwise
+    ix = np.clip(ix, -1.0, nx, out=ix)
+    iy = np.clip(iy, -1.0, ny, out=iy)
+    out = (ix < 0.0) | (ix >= nx) | (iy >= ny) | (iy < 0.0)
+    cell = (iy * (nx + 1) + (ix + nx + 2)).astype(np.intp)
+    cell[out] = 0
+    count = np.bincount(cell, minlength=(ny + 1) * (nx + 1)).reshape(ny + 1, nx + 1)
+    count[0, 0] = 0
+    return np.cumsum(np.cumsum(count, 0, dtype=np.int32), 1, dtype=np.int32)
 
 
 def place_labels(pic, font_px: float, char_em: float) -> None:
@@ -167,94 +204,116 @@ def place_labels(pic, font_px: float, char_em: float) -> None:
     h = 1.25 * font_px
     em = char_em * font_px
     bx0, by0, kx, ky = pic.box[0], pic.box[2], pic.kx, pic.ky
+    kinds, texts, free = _gather(pic)
+    if not free:
+        return
     rows: dict[int, list[tuple[float, float, float, float]]] = {}   # placed boxes by row of one label height
     get = rows.get
 
-    def reserve(x0, y0, x1, y1) -> None:
-        box = (x0, y0, x1, y1)
-        for j in range(int(y0 // h), int(y1 // h) + 1):
-            row = get(j)
-            if row is None:
-                rows[j] = [box]
+    def reserve(box) -> None:
+        for row in range(int(box[1] // h), int(box[3] // h) + 1):
+            placed = get(row)
+            if placed is None:
+                rows[row] = [box]
             else:
-                row.append(box)
-
-    def meets_label(x0, y0, x1, y1) -> bool:
-        for j in range(int(y0 // h), int(y1 // h) + 1):
-            for px0, py0, px1, py1 in get(j, ()):
-                if x0 < px1 and px0 < x1 and y0 < py1 and py0 < y1:
-                    return True
-        return False
+                placed.append(box)
 
     # texts written at a fixed place (a key's rows, a scale bar's length, a message) first
-    free = []            # (-z, part): the labels to place
-    for el in pic.elements:
-        for part in el["parts"]:
-            if part["p"] != "text" or not part["text"]:
-                continue
-            if not part.get("fixed"):
-                free.append((-el["z"], part))
-            elif not part.get("over"):
-                w = em * len(part["text"])
-                x0 = (part["x"] - bx0) * kx + part["dx"] - ALIGN_X[part["ha"]] * w
-                y0 = (part["y"] - by0) * ky + part["dy"] - ALIGN_Y[part["va"]] * h
-                reserve(x0, y0, x0 + w, y0 + h)
-    if not free:
-        return
+    for part in texts:
+        w = em * len(part["text"])
+        x0 = (part["x"] - bx0) * kx + part["dx"] - ALIGN_X[part["ha"]] * w
+        y0 = (part["y"] - by0) * ky + part["dy"] - ALIGN_Y[part["va"]] * h
+        reserve((x0, y0, x0 + w, y0 + h))
     free.sort(key=itemgetter(0))   # topmost first (a stable sort: the elements' order otherwise)
 
     # every candidate box of every label: the asked spot, slides along its line (a label that
     # has one) on either side, then two rings of eight around its anchor
     parts = [p for _, p in free]
-    qx, qy, dx0, dy0, fx0, fy0, w, ux, uy = np.array(
-        [((p["x"] - bx0) * kx, (p["y"] - by0) * ky, p["dx"], p["dy"], ALIGN_X[p["ha"]], ALIGN_Y[p["va"]],
-          em * len(p["text"]), *p.get("along", (0.0, 0.0))) for p in parts]).T[:, :, None]
+    m = len(parts)
+    num = itemgetter("x", "y", "dx", "dy")
+    q = np.empty((m, 9))
+    q[:, :4] = [num(p) for p in parts]
+    q[:, 4] = [ALIGN_X[p["ha"]] for p in parts]
+    q[:, 5] = [ALIGN_Y[p["va"]] for p in parts]
+    q[:, 6] = [len(p["text"]) for p in parts]
+    q[:, 7:] = [p.get("along", _NOT_ALONG) for p in parts]
+    qx = (q[:, 0:1] - bx0) * kx
+    qy = (q[:, 1:2] - by0) * ky
+    dx0, dy0, w = q[:, 2:3], q[:, 3:4], em * q[:, 6:7]
+    ux, uy = q[:, 7:8], q[:, 8:9]
     a0 = dx0 * ux + dy0 * uy                         # the asked offset: along the line and across it
     vx, vy = dx0 - a0 * ux, dy0 - a0 * uy
     g = np.hypot(vx, vy)
     flat = g < 1e-9
-    g = np.where(flat, 1.0, g)
+    g[flat] = 1.0
     sx = _SIDE * np.where(flat, -uy, vx / g)        # (m, 13): the side of each slide, a unit vector
     sy = _SIDE * np.where(flat, ux, vy / g)
-    g = np.maximum(np.where(flat, 0.0, g), 6.0)
+    g[flat] = 0.0
+    g = np.maximum(g, 6.0)
     t = a0 + _SHIFT * (2.0 * h)
     r = np.maximum(np.hypot(dx0, dy0), 6.0) * _RADII + _REACH * h       # (m, 16): the rings' radii
-    dx = np.hstack([dx0, t * ux + g * sx, r * _RING_X])
-    dy = np.hstack([dy0, t * uy + g * sy, r * _RING_Y])
-    fx = np.hstack([fx0, (sx <= 0.3) * (0.5 + 0.5 * (sx < -0.3)), np.broadcast_to(_FX2, (len(parts), 16))])
-    fy = np.hstack([fy0, (sy <= 0.3) * (0.5 + 0.5 * (sy < -0.3)), np.broadcast_to(_FY2, (len(parts), 16))])
+    n = _RING + 16
+    dx, dy, fx, fy = np.empty((4, m, n))
+    dx[:, :1], dx[:, 1:_RING], dx[:, _RING:] = dx0, t * ux + g * sx, r * _RING_X
+    dy[:, :1], dy[:, 1:_RING], dy[:, _RING:] = dy0, t * uy + g * sy, r * _RING_Y
+    fx[:, :1], fx[:, 1:_RING], fx[:, _RING:] = q[:, 4:5], (sx <= 0.3) * (0.5 + 0.5 * (sx < -0.3)), _FX2
+    fy[:, :1], fy[:, 1:_RING], fy[:, _RING:] = q[:, 5:6], (sy <= 0.3) * (0.5 + 0.5 * (sy < -0.3)), _FY2
     x0 = qx + dx - fx * w
     y0 = qy + dy - fy * h
     x1, y1 = x0 + w, y0 + h
     inside = (x0 >= 0.0) & (y0 >= 0.0) & (x1 <= pw) & (y1 <= ph)
     inside[:, 1:_RING] &= (ux != 0.0) | (uy != 0.0)     # slides: labels of lines only
     # clear of strokes: the cells whose centres lie in the box (less TOL) hold no sample
-    table = _table(pic)
+    table = _table(pic, kinds)
     ny, nx = table.shape[0] - 1, table.shape[1] - 1
-    i0 = np.clip(((x0 + TOL) * (1.0 / CELL) + 0.5).astype(int), 0, nx)    # the cells whose centres
-    i1 = np.clip(((x1 - TOL) * (1.0 / CELL) + 0.5).astype(int), 0, nx)    # are in the box
-    j0 = np.clip(((y0 + TOL) * (1.0 / CELL) + 0.5).astype(int), 0, ny)
-    j1 = np.clip(((y1 - TOL) * (1.0 / CELL) + 0.5).astype(int), 0, ny)
-    cnt = table[j1, i1] - table[j0, i1] - table[j1, i0] + table[j0, i0]
-    clear = inside & (cnt == 0)
+    i0 = np.clip(((x0 + TOL) * (1.0 / CELL) + 0.5).astype(np.intp), 0, nx)    # the cells whose centres
+    i1 = np.clip(((x1 - TOL) * (1.0 / CELL) + 0.5).astype(np.intp), 0, nx)    # are in the box
+    j0 = np.clip(((y0 + TOL) * (1.0 / CELL) + 0.5).astype(np.intp), 0, ny) * (nx + 1)
+    j1 = np.clip(((y1 - TOL) * (1.0 / CELL) + 0.5).astype(np.intp), 0, ny) * (nx + 1)
+    flat_table = table.ravel()
+    cnt = flat_table[j1 + i1] - flat_table[j0 + i1] - flat_table[j1 + i0] + flat_table[j0 + i0]
 
     # the clear spots in their order, then the others by how many stroke samples they cover
-    n = clear.shape[1]
-    rank = np.where(inside, np.where(clear, 0.0, (cnt + 1.0) * n) + np.arange(n), np.inf)
+    rank = (cnt + 1.0) * n
+    rank[cnt == 0] = 0.0
+    rank += np.arange(n)
+    rank[~inside] = np.inf
     best = np.argsort(rank, 1)[:, :_TRIES]
-    tries = np.isfinite(np.take_along_axis(rank, best, 1)).sum(1).tolist()
-    bx = np.take_along_axis(x0, best, 1).tolist()
-    by = np.take_along_axis(y0, best, 1).tolist()
-    for i, (part, ks, X0, Y0, m, W) in enumerate(zip(parts, best.tolist(), bx, by, tries, w[:, 0].tolist())):
-        for j in range(m):
-            if not meets_label(X0[j], Y0[j], X0[j] + W, Y0[j] + h):
+    best += np.arange(0, m * n, n)[:, None]          # flat indices
+    tries = np.minimum(inside.sum(1), _TRIES).tolist()
+    bx, by = x0.ravel()[best].tolist(), y0.ravel()[best].tolist()
+    moved, took = [], []
+    for i, (part, X0, Y0, W) in enumerate(zip(parts, bx, by, w[:, 0].tolist())):
+        for j in range(tries[i]):
+            x0_, y0_ = X0[j], Y0[j]
+            x1_, y1_ = x0_ + W, y0_ + h
+            r0, r1 = int(y0_ // h), int(y1_ // h) + 1
+            for row in range(r0, r1):
+                for px0, py0, px1, py1 in get(row, ()):
+                    if x0_ < px1 and px0 < x1_ and y0_ < py1 and py0 < y1_:
+                        break
+                else:
+                    continue
+                break
+            else:        # meets no label placed before
                 break
         else:            # no free place: the label hides (the element keeps its hover text)
             part["hidden"] = True
             continue
-        k = ks[j]
-        if k:            # not the asked spot
-            part["dx"], part["dy"] = round(float(dx[i, k]), 2), round(float(dy[i, k]), 2)
-            part["ha"], part["va"] = _HA_OF[float(fx[i, k])], _VA_OF[float(fy[i, k])]
+        if best[i, j] != i * n:          # not the asked spot
+            moved.append(part)
+            took.append((i, j))
         part.pop("hidden", None)
-        reserve(X0[j], Y0[j], X0[j] + W, Y0[j] + h)
+        box = (x0_, y0_, x1_, y1_)
+        for row in range(r0, r1):
+            placed = get(row)
+            if placed is None:
+                rows[row] = [box]
+            else:
+                placed.append(box)
+    if moved:            # the moved labels' new offsets and alignments
+        took = best[tuple(np.array(took).T)]
+        for part, dx_, dy_, fx_, fy_ in zip(moved, np.round(dx.ravel()[took], 2).tolist(),
+                                            np.round(dy.ravel()[took], 2).tolist(),
+                                            fx.ravel()[took].tolist(), fy.ravel()[took].tolist()):
+            part["dx"], part["dy"], part["ha"], part["va"] = dx_, dy_, _HA_OF[fx_], _VA_OF[fy_]
