@@ -19,7 +19,7 @@ import planargeo.widgets as pw
 from planargeo.draw.chain import OVERLAYS
 from planargeo.widgets import EXPLORERS, ChainExplorer, TreeExplorer
 
-from _picture_checks import crossed_labels, label_boxes
+from _picture_checks import crossed_labels, label_boxes, to_px
 
 #: the box is 1.25 font sizes high and 0.6 of one per character: room around the text a stroke may graze
 PAD = 2.0
@@ -83,3 +83,28 @@ def test_chain_tu_split_labels_keep_apart():
     assert len(crossed) <= 31 - 30
     split = {eid for eid, _t, _b in label_boxes(pic) if eid[:2] in ("sψ", "Rμ", "Uγ")}
     assert split == {f"{k}{i}" for k in ("sψ", "Rμ", "Uγ") for i in range(1, 5)}     # all drawn
+
+
+def _placed(pic) -> dict:
+    """Every label but the refusal's: where it is put (offset, alignment) or that it hides."""
+    return {(e["id"], k): (p["dx"], p["dy"], p["ha"], p["va"], p.get("hidden", False))
+            for e in pic["elements"] if e["id"] != "figure message"
+            for k, p in enumerate(e["parts"]) if p["p"] == "text"}
+
+
+def test_a_refusal_drawn_over_the_picture_moves_no_label():
+    # the refusal's words and white panel are a passing note over everything (Picture.text with
+    # obstacle=False): the labels stay where they are without it, some of them under the panel
+    ex = ChainExplorer(display="agg")
+    before = ex.picture()
+    ex.set(**{"joint speeds": "fast, then faster, and then as fast as the chain can go without flying apart"})
+    assert ex.message.startswith("joint speeds must be numbers")        # refused: the state is kept
+    after = ex.picture()
+    assert _placed(after) == _placed(before)
+    (msg,) = [e for e in after["elements"] if e["id"] == "figure message"]
+    (panel,) = [p for p in msg["parts"] if p["p"] == "path"]
+    corners = [to_px(after, x, y) for x, y in panel["xy"]]
+    (x0, y0), (x1, y1) = min(corners), max(corners)
+    under = [text for eid, text, (a, b, c, d) in label_boxes(after)
+             if eid != "figure message" and a < x1 and x0 < c and b < y1 and y0 < d]
+    assert under, "no label lies under the panel: the check above tells nothing"

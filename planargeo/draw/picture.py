@@ -651,7 +651,8 @@ class Picture:
             Offset in pixels (y up).
         {z}
         obstacle : bool
-            The placed labels keep clear of it (default; False for a passing note over everything).
+            The placed labels keep clear of it (default; False for a passing note over everything:
+            labels may then lie under it and under the element's other parts, such as a panel).
         """
         x, y = (float(v) for v in xy)
         if not (math.isfinite(x) and math.isfinite(y)):
@@ -659,9 +660,10 @@ class Picture:
         va = {"baseline": "bottom", "center_baseline": "center"}.get(va, va)
         part = _text_part(x, y, str(text), dx, dy, ha, va)
         part["fixed"] = True
-        if not obstacle:
+        el = self._add(id, role, symbol, desc, [part], color=_color(role, color), z=z)
+        if not obstacle:     # neither the text nor parts added to it later (a panel) move labels
             part["over"] = True
-        self._add(id, role, symbol, desc, [part], color=_color(role, color), z=z)
+            el["obstacle"] = False
 
     def handle(self, id: str, xy, *, symbol: str = "", desc: str = ""):
         """A point the user may drag (the page hit-tests it and moves it at once).
@@ -733,6 +735,7 @@ class Picture:
                 parts.append(part)
             # keys at their defaults are left out (the renderers read them with defaults)
             out = dict(el)
+            out.pop("obstacle", None)        # the label placer's (Picture.text)
             for k, d in _DEFAULT_ITEMS:
                 if out.get(k, d) == d:
                     out.pop(k, None)
