@@ -267,7 +267,8 @@ def _said_right(item: str, labels: list[tuple[str, str]], message: str) -> str:
     if re.match(r"^['\"]", value):
         return f"a Python repr of typed text ({value})"
     units = {u for _, u in fits}
-    if "" not in units and not any(value.endswith(u) or (u == "deg" and value.endswith("°")) for u in units):
+    number = re.match(r"^[-+−]?(?:\d|\.\d|inf)", value)        # typed text has no unit to say
+    if number and "" not in units and not any(value.endswith(u) or (u == "deg" and value.endswith("°")) for u in units):
         return f"no unit ({' or '.join(sorted(units))})"
     if message.count(f"{name} = {value.split()[0]}") > 1:
         return "said twice: the message already names the value"
@@ -316,3 +317,20 @@ def test_a_zero_twist_is_said_with_the_slider_symbol():
 def test_the_code_patterns_catch_the_reviews_messages(text, typed, caught):
     """The patterns find the code the review read on screen, and pass words, symbols and numbers."""
     assert bool(_code_in(text, typed)) is caught, _code_in(text, typed)
+
+
+@pytest.mark.parametrize("item, labels, message, right", [
+    ("size1 = 0", [("ω₁", "rad/s")], "ω₁ = 0 rad/s makes v₁ the zero twist", False),   # the key
+    ("ω₁ = 0", [("ω₁", "rad/s")], "no motion", False),                                 # no unit
+    ("ω₁ = 0 rad/s", [("ω₁", "rad/s")], "ω₁ = 0 rad/s makes v₁ the zero twist (refused: ω₁ = 0 rad/s)",
+     False),                                                                               # said twice
+    ("joint speeds = '1e6, 0, 0, 0'", [("joint speeds", "")], "joint 1 takes at most", False),  # a repr
+    ("ω₁ = 0 rad/s", [("ω₁", "rad/s")], "no motion", True),                            # the fixed form
+    ("force F = 0 N", [("force F", "N")], "no line", True),
+    ("F = 0 N", [("force F", "N")], "no line", True),                                  # its symbol
+    ("joint speeds = “1e6, 0, 0, 0”", [("joint speeds", "")], "joint 1 takes at most", True),
+    ("joint values = “1e6, 0”", [("joint values", "deg / m")], "at most 3600°", True),  # text: no unit
+])
+def test_the_suffix_rule_takes_the_label_and_unit(item, labels, message, right):
+    """What :func:`test_the_refused_suffix_names_the_control_as_shown` asks of base.py, on examples."""
+    assert (_said_right(item, labels, message) == "") is right, _said_right(item, labels, message)
