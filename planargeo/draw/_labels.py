@@ -69,6 +69,20 @@ _RING = 1 + len(_SIDE)
 #: a pole glyph (planargeo.draw.geometry.arc_glyph): its 270° arc, per unit radius
 _T = np.deg2rad(np.linspace(-45.0, 225.0, 19))
 _ARC = np.column_stack([np.cos(_T), np.sin(_T)])
+
+
+def _glyph_templates():
+    """A pole glyph's polyline as ``r × R + hd × HD`` (radius r, head length hd), clockwise and counter-clockwise."""
+    R, HD = [], []
+    for ccw in (False, True):
+        end = _ARC[-1] if ccw else _ARC[0]
+        side = (1.0 if ccw else -1.0) * end[::-1] * (-1.0, 1.0)     # across the arc's end
+        R.append(np.vstack([_ARC if ccw else _ARC[::-1], end, end, end, end]))
+        HD.append(np.vstack([np.zeros_like(_ARC), side, -0.5 * end, 0.5 * end, side]))
+    return np.array(R), np.array(HD)
+
+
+_GLYPH_R, _GLYPH_HD = _glyph_templates()
 _CIRCLE = np.column_stack([np.cos(np.linspace(0, 2 * np.pi, 33)), np.sin(np.linspace(0, 2 * np.pi, 33))])
 _SQUARE = np.array([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0], [-1.0, -1.0]])
 
@@ -135,12 +149,9 @@ def _segments(pic, kinds) -> tuple[np.ndarray, np.ndarray]:
     polys = []
     if glyphs:           # the arc, then the head at its end (planargeo.draw.geometry.arc_glyph)
         q = np.array(glyphs, float)
-        r, ccw = q[:, 2, None, None], q[:, 3, None, None] > 0
-        hd = np.clip(0.45 * r, 3.0, 6.0)
-        end = np.where(ccw, _ARC[-1], _ARC[0])                   # (m, 1, 2)
-        tip = r * end + hd * np.where(ccw, 1.0, -1.0) * end[..., ::-1] * (-1.0, 1.0)
-        head = np.concatenate([tip, (r - 0.5 * hd) * end, (r + 0.5 * hd) * end, tip], axis=1)
-        polys.append(at(q) + np.concatenate([r * np.where(ccw, _ARC, _ARC[::-1]), head], axis=1))
+        r = q[:, 2, None, None]
+        ccw = (q[:, 3] > 0).astype(np.intp)
+        polys.append(at(q) + r * _GLYPH_R[ccw] + np.clip(0.45 * r, 3.0, 6.0) * _GLYPH_HD[ccw])
     if arrows:           # the shaft and the head's triangle (the page's: max(8, 4 × width) long)
         q = np.array(arrows, float)
         v, hp = q[:, 2:4], np.maximum(8.0, 4.0 * q[:, 4])
