@@ -71,6 +71,13 @@ function fmtTick(v) {
 
 const f2 = (v) => (Math.round(v * 100) / 100).toString();
 
+// the figure shrinks to fit its container down to this scale (below it: a horizontal scrollbar)
+const MIN_SCALE = 0.55;
+// text is never shown smaller than this (CSS pixels): a shrunk figure draws its labels larger
+const MIN_TEXT_PX = 11;
+// pointer tolerance for hover / click (CSS pixels): the nearest element within it is hit
+const HIT_PX = 6;
+
 function render({ model, el }) {
   const client = Math.random().toString(36).slice(2);
   const root = document.createElement("div");
@@ -97,12 +104,25 @@ function render({ model, el }) {
   const nodes = new Map();      // element id -> its <g>
   const circles = new Map();    // handle id -> its <circle>
   const descs = new Map();      // element id -> {version, text}
-  let focusId = null, focusHandle = null, hoverId = null;
+  let focusId = null, focusHandle = null, hoverId = null, lastPointer = null;
   let drag = null, pan = null;
   let inflight = false, seq = 0, tickHalted = false, syncAsked = false;
   const pending = new Map();    // request type -> the latest request of that type
   const handlePaints = [];
   const arrivals = [];          // when each update sent alone arrived (for benchmarks)
+
+  // the shown scale: CSS pixels per SVG unit (the figure fits its container, see buildFrame)
+  let shown = 1;
+  function rescale() {
+    if (!W) return;
+    const w = svg.getBoundingClientRect().width;
+    const s = w > 0 ? w / W : 1;
+    shown = s;
+    const font = st.head && st.head.font_px ? st.head.font_px : 12;
+    svg.style.setProperty("--pg-font", `${Math.max(font, MIN_TEXT_PX / s)}px`);
+    for (const c of circles.values()) c.setAttribute("r", f2(8 / Math.min(s, 1)));
+  }
+  if (typeof ResizeObserver !== "undefined") new ResizeObserver(() => rescale()).observe(svg);
 
   const X = (x) => (x - box[0]) * kx;
   const Y = (y) => ph - (y - box[2]) * ky;
@@ -173,7 +193,10 @@ function render({ model, el }) {
     if (done && done.type === "view" && !m.update?.head && !pending.has("view")) clearLocalView();
     if (m.desc !== undefined && m.id) {
       descs.set(m.id, { version: st.version, text: m.desc });
-      if (hoverId === m.id && tip.style.display !== "none") tip.textContent = m.desc;
+      if (hoverId === m.id && tip.style.display !== "none") {
+        tip.textContent = m.desc;
+        if (lastPointer) placeTip(lastPointer[0], lastPointer[1]);    // its new size kept inside
+      }
     }
     if (!sendNext() && !drag) placeHandles();
     // Play: the next frame, if not asked for yet (the wall clock sets how far each frame goes)
@@ -182,8 +205,9 @@ function render({ model, el }) {
   model.on("change:playing", () => { tickHalted = false; maybeTick(); });
 
   function localPoint(ev) {
-    const r = svg.getBoundingClientRect();
-    return [ev.clientX - r.left - ml, ev.clientY - r.top - mt];
+    // the pointer in the plot's SVG units (the figure may be shown smaller than its size)
+    const r = svg.getBoundingClientRect(), s = r.width > 0 && W ? r.width / W : 1;
+    return [(ev.clientX - r.left) / s - ml, (ev.clientY - r.top) / s - mt];
   }
 
   // ------------------------------------------------------------------ drawing
@@ -288,6 +312,12 @@ function render({ model, el }) {
     bar.style.width = `${W}px`;     // the status line is cut at the figure's width (whole: its title)
     svg.setAttribute("height", H);
     svg.setAttribute("viewBox", `0 0 ${W} ${H}`);
+    // shown at the container's width when narrower (aspect kept), down to MIN_SCALE; narrower
+    // still, a horizontal scrollbar.  The labels' shown size stays at least MIN_TEXT_PX.
+    svg.style.width = "100%";
+    svg.style.maxWidth = `${W}px`;
+    svg.style.minWidth = `${Math.ceil(W * MIN_SCALE)}px`;
+    rescale();
     const defs = mk("defs", {}, svg);
     const clipId = "pgclip" + Math.random().toString(36).slice(2);
     mk("rect", { x: 0, y: 0, width: pw, height: ph }, mk("clipPath", { id: clipId }, defs));
@@ -394,6 +424,7 @@ function render({ model, el }) {
     if (!frame) return;
     // elements: drop the gone, redraw the changed (all after a new view), keep the order
     for (const [id, g] of nodes) if (!st.els.has(id)) { g.remove(); nodes.delete(id); }
+    if (focusId !== null && !st.els.has(focusId)) setFocus(null);    // its element is gone: no focus
     for (const id of rebuild ? st.order : changed) if (st.els.has(id)) drawElement(id);
     if (rebuild || u.order || changed.some((id) => nodes.has(id) && !nodes.get(id).parentNode)) {
       const inner = frame.inner;
@@ -412,13 +443,16 @@ function render({ model, el }) {
       seen.add(id);
       let c = circles.get(id);
       if (!c) {
-        c = mk("circle", { r: 8, "data-handle": id, class: "pg-handle", tabindex: "-1" }, frame.handleLayer);
+        c = mk("circle", { r: f2(8 / Math.min(shown, 1)), "data-handle": id, class: "pg-handle", tabindex: "-1" },
+               frame.handleLayer);
         mk("title", {}, c);
         circles.set(id, c);
       }
       if (u.tips || rebuild || !c.firstChild.textContent) c.firstChild.textContent = st.tips[id] || "drag";
     }
     for (const [id, c] of circles) if (!seen.has(id)) { c.remove(); circles.delete(id); }
+    if (focusHandle !== null && !seen.has(focusHandle)) focusHandle = null;
+    markHandle();
     placeHandles();
   }
 
@@ -465,6 +499,80 @@ function render({ model, el }) {
     }
   }
 
+  // ------------------------------------------------------------------ hit-testing
+  // The element under the pointer is the one nearest it among those within HIT_PX (shown
+  // pixels), not the first drawn there: a thin line under a larger element can be hovered.
+  // Ties go to the topmost (drawn last).  The inside of a filled shape counts as near, but
+  // less near than a line or mark within the tolerance.
+  function segDist(px, py, ax, ay, bx, by) {
+    const dx = bx - ax, dy = by - ay, L2 = dx * dx + dy * dy;
+    let t = L2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / L2 : 0;
+    t = Math.max(0, Math.min(1, t));
+    return Math.hypot(px - ax - t * dx, py - ay - t * dy);
+  }
+  function polyDist(pts, closed, filled, px, py, tol) {
+    let d = Infinity, inside = false;
+    const n = pts.length;
+    for (let i = 0; i + 1 < n; i++) d = Math.min(d, segDist(px, py, pts[i][0], pts[i][1], pts[i + 1][0], pts[i + 1][1]));
+    if (n === 1) d = Math.hypot(px - pts[0][0], py - pts[0][1]);
+    if (closed && n > 2) d = Math.min(d, segDist(px, py, pts[n - 1][0], pts[n - 1][1], pts[0][0], pts[0][1]));
+    if (filled && n > 2) {
+      for (let i = 0, j = n - 1; i < n; j = i++) {
+        const [xi, yi] = pts[i], [xj, yj] = pts[j];
+        if ((yi > py) !== (yj > py) && px < ((xj - xi) * (py - yi)) / (yj - yi) + xi) inside = !inside;
+      }
+      if (inside) d = Math.min(d, 0.9 * tol);
+    }
+    return d;
+  }
+  function elementDist(e, g, px, py, tol, r, s) {
+    let d = Infinity;
+    for (const q of e.parts || []) {
+      const k = q[0];
+      if (k === "P") {
+        const pts = [];
+        for (let i = 2; i + 1 < q.length; i += 2) pts.push([X(q[i]), Y(q[i + 1])]);
+        d = Math.min(d, polyDist(pts, !!q[1], !!e.fill, px, py, tol));
+      } else if (k === "E") {
+        const [, cx, cy, a, b, c, dd] = q, pts = CIRCLE.map(([u, v]) => [X(cx + a * u + b * v), Y(cy + c * u + dd * v)]);
+        d = Math.min(d, polyDist(pts, true, false, px, py, tol));
+      } else if (k === "M") {
+        d = Math.min(d, Math.max(0, Math.hypot(px - X(q[1]), py - Y(q[2])) - q[4] / 2));
+      } else if (k === "G") {
+        d = Math.min(d, Math.abs(Math.hypot(px - X(q[1]), py - Y(q[2])) - q[3]));
+      } else if (k === "A") {
+        const x = X(q[1]), y = Y(q[2]);
+        d = Math.min(d, segDist(px, py, x, y, x + q[3], y - q[4]));
+      }
+    }
+    for (const t of g.querySelectorAll("text")) {     // a label: its box as shown
+      const b = t.getBoundingClientRect();
+      if (!b.width) continue;
+      const x0 = (b.left - r.left) / s - ml, x1 = (b.right - r.left) / s - ml;
+      const y0 = (b.top - r.top) / s - mt, y1 = (b.bottom - r.top) / s - mt;
+      d = Math.min(d, Math.hypot(Math.max(x0 - px, 0, px - x1), Math.max(y0 - py, 0, py - y1)));
+    }
+    return d;
+  }
+  function hitAt(px, py) {
+    if (!frame || !box) return null;
+    const r = svg.getBoundingClientRect(), s = r.width > 0 && W ? r.width / W : 1;
+    const tol = HIT_PX / s;
+    if (px < -tol || py < -tol || px > pw + tol || py > ph + tol) return null;
+    let best = null, bestD = Infinity;
+    for (const id of st.order) {             // drawn first to last: a tie goes to the later
+      const e = st.els.get(id), g = nodes.get(id);
+      if (!e || !g || !g.parentNode) continue;
+      const d = elementDist(e, g, px, py, tol, r, s);
+      if (d <= tol && d <= bestD + 1e-9) { best = id; bestD = d; }
+    }
+    return best;
+  }
+  function setFocus(id) {
+    focusId = id && st.els.has(id) ? id : null;
+    for (const [k, n] of nodes) n.classList.toggle("pg-faded", !!focusId && k !== focusId);
+  }
+
   function showTip(ev, id) {
     const e = st.els.get(id);
     if (!e || !e.d) { tip.style.display = "none"; return; }
@@ -478,10 +586,24 @@ function render({ model, el }) {
       }
     }
     hoverId = id;
-    const r = root.getBoundingClientRect();
-    tip.style.left = Math.min(ev.clientX - r.left + 12, W - 220) + "px";
-    tip.style.top = ev.clientY - r.top + 14 + "px";
     tip.style.display = "block";
+    placeTip(ev.clientX, ev.clientY);
+  }
+  function placeTip(cx, cy) {
+    // beside the pointer, flipped to its other side (and then clamped) so that the whole box
+    // stays inside the figure as shown (the part of it in view when the figure scrolls)
+    const r = root.getBoundingClientRect(), f = svg.getBoundingClientRect();
+    const left = Math.max(f.left, r.left), right = Math.min(f.right, r.right);
+    const top = Math.max(f.top, r.top), bottom = Math.min(f.bottom, r.bottom);
+    tip.style.maxWidth = `${Math.max(80, Math.min(210, right - left - 4))}px`;
+    const tw = tip.offsetWidth, th = tip.offsetHeight;
+    let x = cx + 12, y = cy + 14;
+    if (x + tw > right) x = cx - 12 - tw;
+    if (y + th > bottom) y = cy - 10 - th;
+    x = Math.max(left, Math.min(x, right - tw));
+    y = Math.max(top, Math.min(y, bottom - th));
+    tip.style.left = `${x - r.left + root.scrollLeft}px`;
+    tip.style.top = `${y - r.top + root.scrollTop}px`;
   }
 
   svg.addEventListener("pointermove", (ev) => {
@@ -499,15 +621,20 @@ function render({ model, el }) {
     if (pan) {
       const [px, py] = localPoint(ev);
       const dx = px - pan.start[0], dy = py - pan.start[1];
+      if (!pan.moved && Math.hypot(dx, dy) < 3) return;     // a click, not yet a pan
+      pan.moved = true;
       setLocalView([pan.box0[0] - dx / kx, pan.box0[1] - dx / kx, pan.box0[2] + dy / ky, pan.box0[3] + dy / ky]);
       send({ type: "view", box: box });
       return;
     }
-    const g = ev.target.closest && ev.target.closest(".pg-el");
+    lastPointer = [ev.clientX, ev.clientY];
+    const onHandle = ev.target.dataset && ev.target.dataset.handle;
+    const id = onHandle ? null : hitAt(...localPoint(ev));
+    const g = id === null ? null : nodes.get(id);
     for (const n of svg.querySelectorAll(".pg-hover")) if (n !== g) n.classList.remove("pg-hover");
     if (g) {
       g.classList.add("pg-hover");
-      showTip(ev, g.dataset.id);
+      showTip(ev, id);
     } else { tip.style.display = "none"; hoverId = null; }
   });
   svg.addEventListener("pointerleave", () => { tip.style.display = "none"; hoverId = null; });
@@ -517,20 +644,21 @@ function render({ model, el }) {
     if (hid) {
       drag = { id: hid, circle: ev.target };
       focusHandle = hid;
+      markHandle();
       ev.target.classList.add("pg-dragging");
       svg.focus();
       ev.preventDefault();
       return;
     }
-    const g = ev.target.closest && ev.target.closest(".pg-el");
-    if (g) {
-      focusId = focusId === g.dataset.id ? null : g.dataset.id;
-      for (const [id, n] of nodes) n.classList.toggle("pg-faded", !!focusId && id !== focusId);
+    const id = hitAt(...localPoint(ev));
+    if (id !== null) {
+      setFocus(focusId === id ? null : id);
       return;
     }
-    if (box) pan = { start: localPoint(ev), box0: box.slice() };
+    if (box) pan = { start: localPoint(ev), box0: box.slice(), moved: false };
   });
   svg.addEventListener("pointerup", () => {
+    if (pan && !pan.moved && focusId !== null) setFocus(null);   // a click on the background: no focus
     if (drag) {
       drag.circle.classList.remove("pg-dragging");
       if (drag.moved) send({ type: "release", id: drag.id });   // after the drag's last request
@@ -560,7 +688,30 @@ function render({ model, el }) {
     nudged = null;
     send({ type: "release", id });
   }
+  // Tab / Shift-Tab move the keyboard's handle through the handles (marked while the figure has
+  // the focus); past the last (first) one the focus leaves the figure.  Escape: no handle.
+  let pointerFocus = false;
+  function markHandle() {
+    for (const [id, c] of circles) c.classList.toggle("pg-kbd", id === focusHandle);
+  }
+  svg.addEventListener("pointerdown", () => { pointerFocus = true; }, true);
+  svg.addEventListener("focus", () => {
+    if (!pointerFocus && focusHandle === null && st.handles.length) focusHandle = st.handles[0][0];
+    pointerFocus = false;
+    markHandle();
+  });
   svg.addEventListener("keydown", (ev) => {
+    if (ev.key === "Tab" && st.handles.length) {
+      const ids = st.handles.map((q) => q[0]), i = ids.indexOf(focusHandle);
+      const j = i < 0 ? (ev.shiftKey ? ids.length - 1 : 0) : i + (ev.shiftKey ? -1 : 1);
+      if (j < 0 || j >= ids.length) { endNudge(); focusHandle = null; markHandle(); return; }  // leave
+      ev.preventDefault();
+      if (nudged !== null) endNudge();
+      focusHandle = ids[j];
+      markHandle();
+      return;
+    }
+    if (ev.key === "Escape") { endNudge(); focusHandle = null; markHandle(); return; }
     if (!(ev.key in DIRS) || !focusHandle || !frame) return;
     const h = st.handles.find((q) => q[0] === focusHandle);
     if (!h) return;

@@ -164,9 +164,13 @@ _VA = {"bottom": "b", "center": "c", "top": "t"}
 _KINDS = {"text", "mark", "arrow", "glyph", "ellipse"}
 
 _CSS = """
-.pg-canvas { position: relative; font-family: 'DejaVu Sans', sans-serif; user-select: none; }
-.pg-canvas svg { display: block; touch-action: none; outline: none; }
-.pg-bar { display: flex; gap: 8px; align-items: center; height: 24px; font-size: 12px; }
+.pg-canvas { position: relative; font-family: 'DejaVu Sans', sans-serif; user-select: none;
+             max-width: 100%; min-width: 0; overflow-x: auto; overflow-y: hidden; }
+.pg-canvas svg { display: block; touch-action: none; outline: none; height: auto; }
+.pg-canvas svg:focus-visible { outline: 2px solid #1a73e8; outline-offset: -2px; }
+.pg-canvas svg text { font-size: var(--pg-font); }
+.pg-canvas svg text.pg-title { font-size: calc(var(--pg-font) + 1px); }
+.pg-bar { display: flex; gap: 8px; align-items: center; height: 24px; font-size: 12px; max-width: 100%; }
 .pg-bar button { font-size: 12px; padding: 1px 8px; flex: 0 0 auto; white-space: nowrap; }
 .pg-status { color: #b00020; white-space: nowrap; overflow: hidden; text-overflow: ellipsis;
              min-width: 0; flex: 1 1 auto; }
@@ -178,6 +182,7 @@ _CSS = """
 .pg-el.pg-hover path, .pg-el.pg-hover line { stroke-width: 3; }
 .pg-handle { fill: rgba(0, 0, 0, 0); stroke: rgba(0, 0, 0, 0.35); stroke-width: 1; cursor: grab; }
 .pg-handle:hover, .pg-handle.pg-dragging { stroke: #000; stroke-width: 1.6; fill: rgba(255, 255, 0, 0.25); }
+.pg-canvas svg:focus .pg-handle.pg-kbd { stroke: #1a73e8; stroke-width: 2.5; fill: rgba(26, 115, 232, 0.2); }
 .pg-tip { position: absolute; max-width: 210px; background: #fffff0; border: 1px solid #888;
           padding: 3px 6px; font-size: 12px; pointer-events: none; z-index: 2; }
 """
