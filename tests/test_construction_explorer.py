@@ -162,12 +162,12 @@ def test_step_slider_draws_one_step_more_without_recomputing(ex):
 
 
 def test_dragging_an_input_redoes_the_construction(ex):
-    ex.drag("v2", ex.handle_position("v2"), (3.0, 1.0), steps=3)
+    ex.drag("v₂", ex.handle_position("v₂"), (3.0, 1.0), steps=3)
     assert ex.readout_values["pole of v₃"] == pytest.approx((2.25, 0.75))
     w = ConstructionExplorer("wrench_sum", display="agg", x1=-1.0, y1=0.0, F1=1.0, angle1=0.0,
                              x2=2.0, y2=1.0, F2=2.0, angle2=90.0)
-    assert w.handle_position("f2 direction") == pytest.approx((2.0, 2.0))
-    w.drag("f2 direction", (2.0, 2.0), (3.0, 1.0), steps=4)          # turned parallel to f1
+    assert w.handle_position("f₂ direction") == pytest.approx((2.0, 2.0))
+    w.drag("f₂ direction", (2.0, 2.0), (3.0, 1.0), steps=4)          # turned parallel to f1
     assert w.message == "" and w.readout_values["meet P"] .startswith("at infinity (direction (")
     assert w.readout_values["case"] == "parallel forces (4.43)"
 
@@ -324,7 +324,7 @@ def test_sliders_say_symbols_and_units_not_code_names():
 def test_a_fresh_explorer_from_the_values_shows_the_same_after_a_history():
     e = ConstructionExplorer(display="agg")
     e.set(construction="wrench_sum")
-    e.drag("f1", e.handle_position("f1"), (0.5, 1.0), steps=2)
+    e.drag("f₁", e.handle_position("f₁"), (0.5, 1.0), steps=2)
     e.set(step=2, earlier="hidden")
     fresh = ConstructionExplorer(display="agg", **e.values)
     assert fresh.readout_strings == e.readout_strings and fresh.caption == e.caption

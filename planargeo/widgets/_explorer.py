@@ -69,9 +69,13 @@ def arrow_handle(ex, name: str, kx: str, ky: str, kangle: str, ksize: str | None
         d = np.array([x - v[kx], y - v[ky]]) * sense(v)
         n = float(np.hypot(*d))
         if not n > 1e-9:
-            what = ksize if per is not None else name
-            raise DegenerateGeometryError(f"{what} must be non-zero: the arrow's tip is on its foot "
-                                          "(no direction)")
+            # said in words, the size by its symbol as its slider shows it ("F", not a key)
+            zero = ""
+            if per is not None:
+                label = str(getattr(ex.controls.get(ksize), "description", "") or ksize)
+                zero = f"{label.split(' (')[0].strip()} would be 0 and "
+            raise DegenerateGeometryError(f"the tip of {name} is on the arrow's foot: {zero}the arrow "
+                                          "would have no direction; drag the tip away from the foot")
         out = {kangle: math.degrees(math.atan2(d[1], d[0]))}
         if per is not None:
             out[ksize] = n / per
@@ -222,13 +226,29 @@ class TimeField(W.Text):
 
 
 def time_value(text, limit: float) -> float:
-    """The scene time (s) of the time field's ``text`` (at most ``limit``), or an InputError."""
+    """The scene time (s) of the time field's ``text`` (at most ``limit``), or an InputError.
+
+    The refusal is said in words, the time by its symbol as the field shows it (``t``).
+
+    Examples
+    --------
+    >>> time_value("1.5", 3.0)
+    1.5
+    >>> time_value(" ", 3.0)
+    Traceback (most recent call last):
+    ...
+    planargeo.errors.InputError: the time t is empty: type a time in seconds, from 0 to 3 s
+    """
+    said = str(text if text is not None else "").strip()
+    if not said:
+        raise InputError(f"the time t is empty: type a time in seconds, from 0 to {limit:g} s")
     try:
-        t = float(text)
+        t = float(said)
     except (TypeError, ValueError):
-        raise InputError(f"t (s) must be a time in seconds, got {text!r}") from None
+        raise InputError(f"the time t must be a number of seconds, from 0 to {limit:g} s, "
+                         f"got “{said}”") from None
     if not 0.0 <= t <= limit + 1e-9:
-        raise InputError(f"t (s) must lie between 0 and {limit:g} s, got {text!r}")
+        raise InputError(f"the time t must lie between 0 and {limit:g} s, got {said} s")
     return t
 
 

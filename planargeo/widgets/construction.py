@@ -11,7 +11,7 @@ Examples
 ...                           x2=4.0 - 1.0, y2=0.0, w2=3.0)
 >>> ex.readout_values["pole of v₃"]                 # β = 3/4 of the way from Q₁ to Q₂ (4.12)
 (2.25, 0.0)
->>> _ = ex.drag("v2", (3.0, 0.0), (3.0, 1.0), steps=2)   # the whole construction follows
+>>> _ = ex.drag("v₂", (3.0, 0.0), (3.0, 1.0), steps=2)   # the whole construction follows
 >>> ex.readout_values["pole of v₃"]
 (2.25, 0.75)
 """
@@ -66,20 +66,21 @@ def _label(kind: str, name: str) -> str:
     return name if unit == "—" else f"{name} ({unit})"
 
 
-#: draggable points per construction: (handle name, x parameter, y parameter)
+#: draggable points per construction: (handle name, x parameter, y parameter); a handle is named as
+#: the picture labels what it moves (v₁, f₂, vᵢ₋₁), since a refused drag names its handle
 _POINTS = {
-    "twist_sum": [("v1", "x1", "y1"), ("v2", "x2", "y2")],
-    "wrench_sum": [("f1", "x1", "y1"), ("f2", "x2", "y2")],
-    "velocity": [("v_prev", "xv", "yv"), ("joint", "xj", "yj")],
-    "acceleration": [("v_prev", "xv", "yv"), ("a_prev", "xa", "ya"), ("joint", "xj", "yj")],
+    "twist_sum": [("v₁", "x1", "y1"), ("v₂", "x2", "y2")],
+    "wrench_sum": [("f₁", "x1", "y1"), ("f₂", "x2", "y2")],
+    "velocity": [("vᵢ₋₁", "xv", "yv"), ("joint", "xj", "yj")],
+    "acceleration": [("vᵢ₋₁", "xv", "yv"), ("aᵢ₋₁", "xa", "ya"), ("joint", "xj", "yj")],
     "newton_euler": [("centre of mass", "xc", "yc"), ("v", "xv", "yv"), ("a", "xa", "ya"),
                      ("joint", "xj", "yj")],
-    "through_infinity": [("v1", "x1", "y1"), ("h", "hx", "hy")],
+    "through_infinity": [("v₁", "x1", "y1"), ("h", "hx", "hy")],
 }
 #: direction handles: (handle name, x, y, angle parameter, size parameter)
 _DIRECTIONS = {
-    "wrench_sum": [("f1 direction", "x1", "y1", "angle1", "F1"),
-                   ("f2 direction", "x2", "y2", "angle2", "F2")],
+    "wrench_sum": [("f₁ direction", "x1", "y1", "angle1", "F1"),
+                   ("f₂ direction", "x2", "y2", "angle2", "F2")],
 }
 
 #: readout units by key (a vector: one per component)
