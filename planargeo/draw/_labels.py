@@ -182,18 +182,30 @@ def _table(pic, kinds=None) -> np.ndarray:
     d = b - a
     n = (np.hypot(d[:, 0], d[:, 1]) * (1.0 / STEP)).astype(np.intp) + 2      # samples of each segment
     seg = np.repeat(np.arange(len(n)), n)
-    t = np.arange(len(seg)) - (np.cumsum(n) - n)[seg]
-    t = t / (n - 1.0)[seg]
-    ix = np.floor((a[:, 0][seg] + t * d[:, 0][seg]) * (1.0 / CELL))
-    iy = np.floor((a[:, 1][seg] + t * d[:, 1][seg]) * (1.0 / CELL))
-    # outside the raster: into the table's zero row (dropped); in the table's frame otherwise
-    ix = np.clip(ix, -1.0, nx, out=ix)
-    iy = np.clip(iy, -1.0, ny, out=iy)
-    out = (ix < 0.0) | (ix >= nx) | (iy >= ny) | (iy < 0.0)
-    cell = (iy * (nx + 1) + (ix + nx + 2)).astype(np.intp)
-    cell[out] = 0
-    count = np.bincount(cell, minlength=(ny + 1) * (nx + 1)).reshape(ny + 1, nx + 1)
-    count[0, 0] = 0
+    t = np.arange(len(seg), dtype=float)
+    t -= (np.cumsum(n) - n).take(seg)
+    t /= (n - 1.0).take(seg)
+    # the samples' cells, in place (few large arrays: the allocator's pages are reused); columns
+    # -1 … nx and rows -1 … ny, the samples outside the raster in the first or last ones
+    cells = []
+    for k, top in ((0, nx), (1, ny)):
+        c = d[:, k].take(seg)
+        c *= t
+        c += a[:, k].take(seg)
+        c *= 1.0 / CELL
+        np.floor(c, out=c)
+        np.clip(c, -1.0, top, out=c)
+        cells.append(c)
+    del seg, t
+    ix, iy = cells
+    iy *= nx + 2
+    iy += ix
+    iy += nx + 3
+    del ix, cells
+    count = np.bincount(iy.astype(np.intp), minlength=(ny + 2) * (nx + 2)).reshape(ny + 2, nx + 2)
+    count[0] = 0                  # the first row and column: samples below or left of the raster,
+    count[:, 0] = 0               # then the table's zero row and column
+    count = count[:ny + 1, :nx + 1]
     return np.cumsum(np.cumsum(count, 0, dtype=np.int32), 1, dtype=np.int32)
 
 
