@@ -226,3 +226,48 @@ def test_the_time_follows_every_frame_and_everything_agrees_when_play_stops():
     assert fresh.readout.value == ex.readout.value and fresh.canvas.picture == ex.canvas.picture
     assert {k: w.get_state().get("value") for k, w in fresh.controls.items()} == \
         {k: w.get_state().get("value") for k, w in ex.controls.items()}
+
+
+def test_a_stop_that_arrives_while_a_frame_is_computed_ends_play_at_that_frame():
+    """The page's Stop reaches the kernel while it computes a tick's frame (a slow frame).  In the
+    kernel a message that arrived meanwhile is read when the event loop is free, then handed to
+    the message loop (a queue, one more turn); the extra frame the tick schedules must not run in
+    between: after Stop no frame is added, and the time shown, the readout and the picture are
+    the tick's frame's (the last the page is sent)."""
+    ex, c, sent = _playing_chain()
+    frame_tick = c.on_tick
+
+    async def run():
+        loop = asyncio.get_running_loop()
+        shell = asyncio.Queue()               # the kernel's message loop: one message at a time
+
+        async def dispatch():
+            while True:
+                handle = await shell.get()
+                handle()
+
+        consumer = asyncio.create_task(dispatch())
+
+        def stop():
+            ex.play_control.playing = False   # the Play button's message: playing off
+
+        def slow_tick():
+            frame_tick()
+            loop.call_soon(shell.put_nowait, stop)      # the Stop that arrived meanwhile, read now
+
+        c.on_tick = slow_tick
+        shell.put_nowait(lambda: c._on_msg(None, {"type": "tick", "seq": 0, "client": "t"}, None))
+        await asyncio.sleep(0.3)
+        consumer.cancel()
+
+    asyncio.run(run())
+    assert not ex.play_control.playing and not c.playing
+    frames = [m for m in sent if m["type"] == "update" or m.get("update")]
+    assert [m["type"] for m in sent] == ["ack"] and len(frames) == 1, [m["type"] for m in sent]
+    assert c.n_extra_frames == 0
+    # one frame of FRAME_S wall seconds (and Play's lead of one frame) at 1×
+    want = FRAME_S + 1.0 / ex.play_fps
+    assert abs(ex.shown_values["time (s)"] - want) < 1e-9
+    assert abs(ex.readout_values["t (s)"] - want) < 1e-9
+    fresh = ChainExplorer(display="page", links=3, **{"time (s)": ex.shown_values["time (s)"]})
+    assert fresh.canvas.picture == ex.canvas.picture

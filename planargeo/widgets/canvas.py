@@ -155,6 +155,9 @@ __all__ = ["PictureCanvas", "COORD_LIMIT", "wire_digits", "wire_element"]
 
 #: Wall seconds of Play's work ahead done after each frame has gone (``on_idle``).
 IDLE_SLICE = 0.006
+#: Shortest wait (s) before the extra Play frame: a message that reached the kernel while the
+#: tick's frame was computed (the page's Stop) is read, queued and handled first.
+EXTRA_MIN_S = 0.005
 #: Largest coordinate (in absolute value) a message from the page may carry.
 COORD_LIMIT = 1e9
 #: Element fields that travel to the page as they are (the rest: parts, described mark).
@@ -382,6 +385,11 @@ class PictureCanvas(anywidget.AnyWidget):
         self.around = around or contextlib.nullcontext
         self.n_requests = 0
         self.on_msg(self._on_msg)
+
+    @traitlets.observe("playing")
+    def _playing_set(self, change) -> None:
+        if not change["new"]:          # Play stopped: no frame after it
+            self._cancel_extra()
 
     # ------------------------------------------------------------------ kernel → page
     @traitlets.observe("picture")
@@ -617,7 +625,9 @@ class PictureCanvas(anywidget.AnyWidget):
         except RuntimeError:       # no event loop (no kernel): one frame per tick
             return
         gap = self._tick_gap if self._tick_gap is not None else 0.0
-        delay = min(max(0.5 * gap - self._tick_cost, 0.0), 0.1)
+        # never at once: the kernel hands a message that came during the frame (a Stop) to its
+        # message loop one event-loop turn after reading it; at once, this frame would go first
+        delay = min(max(0.5 * gap - self._tick_cost, EXTRA_MIN_S), 0.1)
         self._extra = loop.call_later(delay, self._extra_frame)
 
     def _cancel_extra(self) -> None:
