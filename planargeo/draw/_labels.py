@@ -102,7 +102,7 @@ def _gather(pic) -> tuple[tuple, list, list]:
     paths, glyphs, arrows, marks, ellipses = [], [], [], [], []
     texts, free = [], []
     for el in pic.elements:
-        stroke = _obstacle(el)
+        stroke = el["color"] != "none" and el.get("obstacle", True)      # _obstacle(el)
         for part in el["parts"]:
             p = part["p"]
             if p == "text":
