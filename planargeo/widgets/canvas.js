@@ -10,6 +10,7 @@
 //   * zoom (wheel), pan (drag the background) and reset move the drawing at once;
 //   * hover highlights an element and shows its description (asked of the kernel when
 //     the picture changed since it was last asked); a click focuses it.
+// From the kernel besides pictures: "download" (an export's file: the page saves it at once).
 // What goes to the kernel: {type: "drag" | "release" | "view" | "tick" | "describe" | "sync" | "ping", ...},
 // at most one in flight; while one is in flight only the latest request of each type is
 // kept (in the order last asked), and the next is sent when the kernel's "ack" arrives.  While the synced "playing"
@@ -167,6 +168,11 @@ function render({ model, el }) {
       applyFrame(m);
       return;
     }
+    if (m.type === "download") {    // an export button's file: saved at once (the view last used)
+      if (m.client && m.client !== client) return;
+      download(m.name, m.mime, m.data);
+      return;
+    }
     if (m.type === "halt") {        // Play refused in a frame the kernel sent alone
       status.title = status.textContent = m.message || "";
       tickHalted = true;
@@ -203,6 +209,21 @@ function render({ model, el }) {
     maybeTick();
   });
   model.on("change:playing", () => { tickHalted = false; maybeTick(); });
+
+  function download(name, mime, b64) {
+    // the bytes as a Blob, saved through a temporary link (no server: works offline)
+    const bin = atob(b64), bytes = new Uint8Array(bin.length);
+    for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+    const url = URL.createObjectURL(new Blob([bytes], { type: mime || "application/octet-stream" }));
+    const a = document.createElement("a");
+    a.href = url;
+    a.download = name;
+    a.style.display = "none";
+    root.appendChild(a);
+    a.click();
+    a.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 60_000);
+  }
 
   function localPoint(ev) {
     // the pointer in the plot's SVG units (the figure may be shown smaller than its size)

@@ -138,6 +138,7 @@ Updates carry what changed: a moved point sends its parts, not its colour.
 from __future__ import annotations
 
 import asyncio
+import base64
 import contextlib
 import math
 import numbers
@@ -149,7 +150,7 @@ import anywidget
 import numpy as np
 import traitlets
 
-from planargeo.errors import PlanargeoError
+from planargeo.errors import InputError, PlanargeoError
 
 __all__ = ["PictureCanvas", "COORD_LIMIT", "wire_digits", "wire_element"]
 
@@ -372,6 +373,7 @@ class PictureCanvas(anywidget.AnyWidget):
         self._dirty = False
         self._in_request = False
         self._extra = None                 # the pending extra Play frame (an event loop's handle)
+        self._last_client = None           # the view that sent the last request (downloads go there)
         self._tick_at = None               # when the last tick arrived (perf_counter)
         self._tick_gap = None              # seconds between the last two ticks
         self._tick_cost = 0.0              # seconds the last tick's frame took
@@ -468,6 +470,48 @@ class PictureCanvas(anywidget.AnyWidget):
         return {"version": getattr(self, "version", 0), "base": None, "head": getattr(self, "_head", {}),
                 "order": list(getattr(self, "_order", [])), "set": dict(getattr(self, "_sent", {})),
                 "handles": getattr(self, "_handles", []), "tips": getattr(self, "_tips", {})}
+
+    def download(self, name: str, mime: str, data: bytes) -> dict:
+        """Make the page download ``data`` as the file ``name`` (one click on an export button).
+
+        The bytes travel in a message (base64); the view the page last used saves them through a
+        Blob and a temporary link (no server, works offline).  Only that view downloads (a
+        second display of the widget does not save the file twice).
+
+        Parameters
+        ----------
+        name : str
+            The file's name (no folders).
+        mime : str
+            Its media type, e.g. ``"image/svg+xml"``.
+        data : bytes
+            Its contents.
+
+        Returns
+        -------
+        dict
+            The message sent.
+
+        Raises
+        ------
+        InputError
+            A name with a folder in it, or data that is not bytes.
+
+        Examples
+        --------
+        >>> c = PictureCanvas()
+        >>> m = c.download("a.svg", "image/svg+xml", b"<svg/>")
+        >>> m["type"], m["name"], m["data"]
+        ('download', 'a.svg', 'PHN2Zy8+')
+        """
+        if not isinstance(name, str) or not name or "/" in name or "\\" in name:
+            raise InputError(f"name must be a file name without folders, got {name!r}")
+        if not isinstance(data, (bytes, bytearray)):
+            raise InputError(f"data must be bytes, got {type(data).__name__}")
+        msg = {"type": "download", "name": name, "mime": str(mime),
+               "data": base64.b64encode(bytes(data)).decode("ascii"), "client": self._last_client}
+        self.send(msg)
+        return msg
 
     def describe(self, eid: str) -> str:
         """The hover text of the element ``eid``: its symbol and description.
@@ -598,6 +642,8 @@ class PictureCanvas(anywidget.AnyWidget):
         self.n_requests += 1
         seq = content.get("seq") if isinstance(content, dict) else None
         client = content.get("client") if isinstance(content, dict) else None
+        if isinstance(client, str):
+            self._last_client = client
         ack = {"type": "ack", "seq": seq if isinstance(seq, int) else None,
                "client": client if isinstance(client, str) else None, "ok": ok, "message": why}
         try:

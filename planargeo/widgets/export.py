@@ -188,7 +188,8 @@ class ExportMixin:
         return shutil.which("ffmpeg") is not None
 
     def _export_clicked(self, kind: str = "svg") -> None:
-        """Export button: a download link in the page (and the file in ``export_dir`` if set)."""
+        """Export button: the file downloaded in the page at once (a page canvas), a link to it
+        (to save it again, or where the page cannot), and the file in ``export_dir`` if set."""
         mime = {"svg": "image/svg+xml", "png": "image/png", "gif": "image/gif",
                 "mp4": "video/mp4"}[kind]
         try:
@@ -198,9 +199,17 @@ class ExportMixin:
             if self.export_dir is not None:
                 p = self._write(self._export_path(None, kind), data)
                 name, saved = p.name, f"saved <code>{html.escape(str(p))}</code> "
+            # in the page the file is saved at once (one click); the link stays to save it again
+            from planargeo.widgets.canvas import PictureCanvas
+
+            canvas = getattr(self, "canvas", None)
+            sent = isinstance(canvas, PictureCanvas)
+            if sent:
+                canvas.download(name, mime, data)
             href = f"data:{mime};base64,{base64.b64encode(data).decode('ascii')}"
+            again = "downloaded; again: " if sent else ""
             self.export_label.value = (
-                f"<div style='white-space:nowrap;overflow:hidden;text-overflow:ellipsis'>"
+                f"<div style='white-space:nowrap;overflow:hidden;text-overflow:ellipsis'>{again}"
                 f"<a download='{html.escape(name)}' href='{href}' class='planargeo-download' "
                 f"style='font-weight:bold'>⬇ {html.escape(name)}</a> {saved}</div>")
         except Exception as exc:  # noqa: BLE001

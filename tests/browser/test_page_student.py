@@ -240,3 +240,49 @@ def test_the_hover_goes_to_the_nearest_element_not_the_topmost(harness_page):
     assert _hovered(page) == ["body"]
     page.mouse.move(*_at(page, 1.8, 1.8))                     # the background
     assert _hovered(page) == []
+
+
+@pytest.mark.parametrize("kind, magic", [("svg", b"<?xml"), ("png", b"\x89PNG\r\n\x1a\n")])
+def test_an_export_message_downloads_the_file_at_once(harness_page, kind, magic, tmp_path):
+    # the message an export button's click sends (Python's own), handed to the page: a download
+    # of that name and those bytes, with no further click; another view's message is not saved
+    from planargeo.widgets import ProjectiveExplorer
+
+    page = harness_page
+    _open(page, _focus_picture())
+    ex = ProjectiveExplorer(display="page")
+    sent = []
+    ex.canvas.send = lambda m, *a, **k: sent.append(m)
+    {"svg": ex.export_button, "png": ex.export_png_button}[kind].click()
+    (m,) = [m for m in sent if m["type"] == "download"]
+    with page.expect_download(timeout=10_000) as info:
+        page.evaluate("(m) => window.deliver(m)", m)
+    d = info.value
+    assert d.suggested_filename == f"planargeo-{ex.slug}.{kind}"
+    path = tmp_path / d.suggested_filename
+    d.save_as(path)
+    data = path.read_bytes()
+    assert data.lstrip().startswith(magic) and data == (ex._svg_bytes() if kind == "svg" else ex._png_bytes())
+    if kind == "svg":
+        import xml.etree.ElementTree as ET
+
+        assert ET.fromstring(data).tag.endswith("svg")
+    else:
+        from io import BytesIO
+
+        from PIL import Image
+
+        assert Image.open(BytesIO(data)).size[0] > 100
+    # a message for another view: nothing saved
+    downloads = []
+
+    def seen(dl):
+        downloads.append(dl)
+
+    page.on("download", seen)
+    try:
+        page.evaluate("(m) => window.deliver(m)", {**m, "client": "another-view"})
+        page.wait_for_timeout(300)
+    finally:
+        page.remove_listener("download", seen)
+    assert downloads == []
