@@ -13,10 +13,12 @@ the old placer's count minus the crossings this change removed (old → new, the
 """
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 import planargeo.widgets as pw
 from planargeo.draw.chain import OVERLAYS
+from planargeo.draw.picture import Picture
 from planargeo.widgets import EXPLORERS, ChainExplorer, TreeExplorer
 
 from _picture_checks import crossed_labels, label_boxes, to_px
@@ -94,17 +96,43 @@ def _placed(pic) -> dict:
 
 def test_a_refusal_drawn_over_the_picture_moves_no_label():
     # the refusal's words and white panel are a passing note over everything (Picture.text with
-    # obstacle=False): the labels stay where they are without it, some of them under the panel
+    # obstacle=False): the labels stay where they are without it
     ex = ChainExplorer(display="agg")
     before = ex.picture()
     ex.set(**{"joint speeds": "fast, then faster, and then as fast as the chain can go without flying apart"})
     assert ex.message.startswith("joint speeds must be numbers")        # refused: the state is kept
     after = ex.picture()
+    assert any(e["id"] == "figure message" for e in after["elements"])
     assert _placed(after) == _placed(before)
-    (msg,) = [e for e in after["elements"] if e["id"] == "figure message"]
-    (panel,) = [p for p in msg["parts"] if p["p"] == "path"]
-    corners = [to_px(after, x, y) for x, y in panel["xy"]]
-    (x0, y0), (x1, y1) = min(corners), max(corners)
-    under = [text for eid, text, (a, b, c, d) in label_boxes(after)
-             if eid != "figure message" and a < x1 and x0 < c and b < y1 and y0 < d]
-    assert under, "no label lies under the panel: the check above tells nothing"
+
+
+PANEL = [(-0.8, -0.8), (0.8, -0.8), (0.8, 0.2), (-0.8, 0.2)]      # its top edge 14 px above the x axis
+
+
+def _panel_picture(panel: str | None) -> dict:
+    """The x axis labelled f, with a white panel's edge across its label: a passing note's (drawn
+    with its words, as the explorers draw a refusal), an ordinary element, or none."""
+    pic = Picture((-2, 2, -2, 2), size=(300, 300), ticks=False)
+    pic.line("f", [1.0, 0.0, 0.0], symbol="f")
+    if panel == "note":
+        pic.text("note", (0.0, 0.0), "refused", obstacle=False, z=100)
+        pic.elements[-1]["parts"].insert(0, {"p": "path", "closed": True, "xy": np.array(PANEL)})
+        pic.elements[-1].update(fill="white")
+    elif panel == "element":
+        pic.path("panel", PANEL, closed=True, fill="white", z=100)
+    return pic.to_dict()
+
+
+def _f_label(pic) -> list:
+    return [v for (eid, _k), v in _placed(pic).items() if eid == "f"]
+
+
+def test_a_panel_drawn_with_a_passing_note_moves_no_label():
+    alone = _f_label(_panel_picture(None))
+    assert len(alone) == 1 and _f_label(_panel_picture("note")) == alone
+    # the same panel as an ordinary element: f's label leaves its edge (the check above can fail)
+    assert _f_label(_panel_picture("element")) != alone
+    pic = _panel_picture(None)
+    ((_eid, _text, (x0, y0, x1, y1)),) = [b for b in label_boxes(pic) if b[0] == "f"]
+    (px0, _), (px1, top) = to_px(pic, *PANEL[0]), to_px(pic, *PANEL[2])
+    assert px0 < x0 < x1 < px1 and y0 + PAD < top < y1 - PAD       # alone, the edge crosses it

@@ -4,7 +4,8 @@ Every element's drawn strokes (paths, ellipses, pole glyphs, arrows, markers) ar
 :data:`STEP` pixels and counted in a raster of :data:`CELL`-pixel cells; a summed-area table of the
 counts tells, for every spot of every label at once, whether a stroke passes through the cells whose
 centres lie in its box (less :data:`TOL`).  A spot is clear when none does (its own element's
-strokes count too: the spots beside a line or a pole are off it).
+strokes count too: the spots beside a line or a pole are off it).  An element written with
+``Picture.text(..., obstacle=False)`` (a refusal's words and the panel drawn with them) is none.
 
 Labels are placed topmost first.  Each tries its asked spot, then (the label of a line) spots
 beside its line on either side, up to six label heights along it, then two rings of eight around
@@ -132,16 +133,22 @@ def _gather(pic) -> tuple[tuple, list, list]:
 
 def _segments(pic, kinds) -> tuple[np.ndarray, np.ndarray]:
     """``(a, b)``: the pixel segments of the strokes gathered by :func:`_gather`."""
+    xy, ends = _polylines(pic, kinds)
+    ok = np.ones(max(len(xy) - 1, 0), bool)
+    ok[ends] = False
+    return xy[:-1][ok], xy[1:][ok]
+
+
+def _polylines(pic, kinds) -> tuple[np.ndarray, np.ndarray]:
+    """``(xy, ends)``: the strokes gathered by :func:`_gather` as pixel polylines one after another,
+    and where each but the last ends (its last point starts no segment)."""
     paths, glyphs, arrows, marks, ellipses = kinds
     bx0, by0, kx, ky = pic.box[0], pic.box[2], pic.kx, pic.ky
-    a, b = [], []
+    pieces, ends = [], []
     if paths:
         xy = np.concatenate(paths)
-        xy = (xy - (bx0, by0)) * (kx, ky)
-        ok = np.ones(len(xy) - 1, bool)
-        ok[np.cumsum([len(q) for q in paths])[:-1] - 1] = False        # a path's last point starts none
-        a.append(xy[:-1][ok])
-        b.append(xy[1:][ok])
+        pieces.append((xy - (bx0, by0)) * (kx, ky))
+        ends.append(np.cumsum([len(q) for q in paths]) - 1)
 
     def at(q):           # (m, 1, 2) pixel anchors
         return ((q[:, :2] - (bx0, by0)) * (kx, ky))[:, None, :]
@@ -166,21 +173,25 @@ def _segments(pic, kinds) -> tuple[np.ndarray, np.ndarray]:
         ex = _CIRCLE[:, 0] * q[:, None, 2] + _CIRCLE[:, 1] * q[:, None, 3]
         ey = _CIRCLE[:, 0] * q[:, None, 4] + _CIRCLE[:, 1] * q[:, None, 5]
         polys.append(at(q) + np.stack([ex * kx, ey * ky], axis=-1))
+    start = len(pieces[0]) if pieces else 0
     for q in polys:      # (m, k, 2) pixel polylines
-        a.append(q[:, :-1].reshape(-1, 2))
-        b.append(q[:, 1:].reshape(-1, 2))
-    if not a:
-        return np.zeros((0, 2)), np.zeros((0, 2))
-    return np.concatenate(a), np.concatenate(b)
+        m, k = q.shape[:2]
+        pieces.append(q.reshape(-1, 2))
+        ends.append(np.arange(start + k - 1, start + m * k, k))
+        start += m * k
+    if not pieces:
+        return np.zeros((0, 2)), np.zeros(0, np.intp)
+    return np.concatenate(pieces), np.concatenate(ends)[:-1]
 
 
 def _table(pic, kinds=None) -> np.ndarray:
     """Summed-area table (``rows + 1, cols + 1``) of the stroke samples in each raster cell."""
     pw, ph = pic._plot
     nx, ny = int(pw // CELL) + 1, int(ph // CELL) + 1
-    a, b = _segments(pic, _gather(pic)[0] if kinds is None else kinds)
-    d = b - a
+    xy, ends = _polylines(pic, _gather(pic)[0] if kinds is None else kinds)
+    a, d = xy[:-1], np.diff(xy, axis=0)
     n = (np.hypot(d[:, 0], d[:, 1]) * (1.0 / STEP)).astype(np.intp) + 2      # samples of each segment
+    n[ends] = 0                   # none from a polyline's end to the next one's start
     seg = np.repeat(np.arange(len(n)), n)
     t = np.arange(len(seg), dtype=float)
     t -= (np.cumsum(n) - n).take(seg)
