@@ -154,6 +154,22 @@ def _check_typed(field: str, i: int, x: float, limit: float, unit: str) -> None:
         raise InputError(f"{field}: joint {i + 1} takes at most {limit:g}{unit} in magnitude, got {x:g}")
 
 
+def _count(n: int) -> str:
+    """``"1 value"``, ``"4 values"``."""
+    return f"{n} value" if n == 1 else f"{n} values"
+
+
+def _kinds(n: int, joints: str) -> list[str]:
+    """The joint kinds of a chain of ``n`` links with ``joints`` (a :data:`JOINT_SETS` option)."""
+    return ["revolute" if joints == "revolute" or (joints == "alternating" and i % 2 == 0) else "prismatic"
+            for i in range(n)]
+
+
+#: the sliders that set each kind of joint when no value is typed
+_SET_BY = {"revolute": "the angle and bend sliders", "prismatic": "the slide slider",
+           "alternating": "the angle, bend and slide sliders"}
+
+
 def _num(x: float, decimals: int = 2) -> str:
     """A list entry as a student types it: to ``decimals`` places (a drag sets the value so rounded).
 
@@ -268,8 +284,10 @@ class ChainExplorer(Described, Explorer):
         sel = {"all joints": slice(None), "first joint": slice(0, 1),
                "last joint": slice(model.nq - 1, None)}[v["torque on"]]
         tau[sel] = float(v["torque"])
-        # per-joint values typed as lists override the patterns, joint by joint
-        for i, x in enumerate(parse_list(v[LIST_Q], "joint values")[:model.nq]):
+        # per-joint values typed as lists override the patterns: the joint values one per joint
+        # (a links change pads or cuts them, see adjust), speeds and forces the first joints'
+        typed_q = parse_list(v[LIST_Q], "joint values")
+        for i, x in enumerate(typed_q[:model.nq]):
             if model.joints[i].kind == "revolute":
                 _check_typed(LIST_Q, i, x, ANGLE_LIMIT, "°")
                 q[i] = math.radians(x)
@@ -278,19 +296,55 @@ class ChainExplorer(Described, Explorer):
                     raise InputError(f"{LIST_Q}: joint {i + 1} (prismatic) slides between {SLIDE[0]:g} and "
                                      f"{SLIDE[1]:g} m, got {x:g}")
                 q[i] = x
+        if typed_q and len(typed_q) != model.nq:
+            raise InputError(f"{LIST_Q} needs {_count(model.nq)}, one per joint, got {_count(len(typed_q))}: "
+                             f"type {model.nq} numbers, or empty the box to set the joints by the sliders")
         for field, typed, limit, units in (("joint speeds", qd, SPEED_LIMIT, (" rad/s", " m/s")),
                                            ("joint torques", tau, TORQUE_LIMIT, (" N·m", " N"))):
-            for i, x in enumerate(parse_list(v[field], field)[:model.nq]):
+            said = parse_list(v[field], field)
+            for i, x in enumerate(said[:model.nq]):
                 _check_typed(field, i, x, limit, units[model.joints[i].kind != "revolute"])
                 typed[i] = x
+            if len(said) > model.nq:
+                raise InputError(f"{field} takes at most {_count(model.nq)}, one per joint, got "
+                                 f"{_count(len(said))} (the joints not typed take the slider's value)")
         return model, q, qd, tau
 
     def adjust(self, values, changed):
         # a new initial state starts at t = 0; with a typed list, "angle" still moves joint 1 and
         # "bend" / "slide" empty the list, so that no slider is ever dead
         out = {}
+        self._note = ""
         if changed & set(INITIAL) and TIME not in changed and values[TIME] != 0:
             out[TIME] = 0.0
+        was = self.shown_values if self.state is not None else None
+        if was and "joints" in changed and values["joints"] != was.get("joints"):
+            # another joint type: typed values of the old kinds (degrees or metres, rad/s or m/s,
+            # N·m or N) mean nothing now; the joints start from the type's sliders, said in a note
+            cleared = [f for f in (LIST_Q, "joint speeds", "joint torques")
+                       if values[f].strip() and f not in changed]
+            out.update({f: "" for f in cleared})
+            values = {**values, **out}
+            if cleared:
+                words = {LIST_Q: "joint values", "joint speeds": "joint speeds",
+                         "joint torques": "joint torques"}
+                said = [words[f] for f in cleared]
+                said = said[0] if len(said) == 1 else ", ".join(said[:-1]) + " and " + said[-1]
+                self._note = (f"joints are now {values['joints']}: the typed {said} were for the old "
+                              f"joints and are cleared; the joints start from {_SET_BY[values['joints']]}")
+        elif was and "links" in changed and int(values["links"]) != int(was.get("links", 0)):
+            n = int(values["links"])
+            kinds = _kinds(n, values["joints"])
+            for f in (LIST_Q, "joint speeds", "joint torques"):
+                if f in changed or not values[f].strip():
+                    continue
+                items = [t.strip() for t in values[f].replace(";", ",").split(",") if t.strip()]
+                if f == LIST_Q:    # one per joint: a new joint takes its slider's value
+                    items += [_num(values["bend"]) if k == "revolute" else _num(values["slide"], 3)
+                              for k in kinds[len(items):]]
+                if len(items) > n or f == LIST_Q:
+                    out[f] = ", ".join(items[:n])
+            values = {**values, **out}
         text = values[LIST_Q]
         if text.strip() and LIST_Q not in changed:
             if changed & {"bend", "slide"}:
@@ -337,7 +391,8 @@ class ChainExplorer(Described, Explorer):
             y = self.motion_for(model, q0, qd0, tau).at(t)
             q, qd = y[:model.nq], y[model.nq:]
         w = chain_workspace(model, q, qd, tau)
-        st = {"model": model, "w": w, "t": t, "tau": tau, "q0": q0}
+        st = {"model": model, "w": w, "t": t, "tau": tau, "q0": q0,
+              "message": getattr(self, "_note", "")}      # a joint type's note (not a refusal)
         st["ke"], st["pe"] = (float(e) for e in energy(model, data=w))
         # the starting energy, kept per starting state: a frame at t > 0 costs one kinematics pass
         e0s, key = self._cache("_e0s"), (self._model_key, tuple(q0), tuple(qd0))
@@ -394,9 +449,8 @@ class ChainExplorer(Described, Explorer):
         return [f"link {i}" for i in range(1, n + 1)] + [f"joint {i}" for i in range(1, n + 1)]
 
     def disabled(self, values: dict) -> dict:
-        n, kinds = int(values["links"]), values["joints"]
-        kind = ["revolute" if kinds == "revolute" or (kinds == "alternating" and i % 2 == 0) else "prismatic"
-                for i in range(n)]
+        n = int(values["links"])
+        kind = _kinds(n, values["joints"])
 
         def typed(name):
             try:

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import contextlib
 import html
+import math
 import textwrap
 from typing import Any
 
@@ -63,6 +64,68 @@ def _ink(pic) -> np.ndarray:
         return np.zeros((0, 2))
     xy = np.concatenate(pts)
     return np.column_stack([(xy[:, 0] - x0) * pic.kx, (xy[:, 1] - y0) * pic.ky])
+
+
+#: roles whose paths are bodies (their outline and area): the key never covers them
+_BODY_ROLES = ("body", "ground")
+#: pixels kept between the key's panel and what it must not cover
+_KEY_CLEAR_PX = 3.0
+#: radius of a handle's circle in the page (px)
+_HANDLE_PX = 8.0
+
+
+def _keep_clear(pic) -> tuple[np.ndarray, np.ndarray]:
+    """What the key must never cover, as points (pixels from the plot's lower left) and a radius
+    (px) for each: the handles, the bodies (outline and area), every mark (pins, poles, centres),
+    every pole glyph and the arrows' heads."""
+    x0, _x1, y0, _y1 = pic.box
+    k = np.array([pic.kx, pic.ky])
+    pts: list[np.ndarray] = []
+    rad: list[np.ndarray] = []
+
+    def add(xy_px, r):
+        xy_px = np.asarray(xy_px, float).reshape(-1, 2)
+        pts.append(xy_px)
+        rad.append(np.full(len(xy_px), float(r)))
+
+    def along(xy_px, step=3.0):
+        out = [xy_px[:1]]
+        for a, b in zip(xy_px[:-1], xy_px[1:]):
+            n = int(min(2000, np.hypot(*(b - a)) / step)) + 2
+            out.append(a + np.linspace(0.0, 1.0, n)[:, None] * (b - a))
+        return np.concatenate(out)
+
+    for h in pic.handles:
+        add((np.array([h["x"], h["y"]], float) - (x0, y0)) * k, _HANDLE_PX + 1.0)
+    for el in pic.elements:
+        if el["id"].startswith("key ") or el["id"] == "figure message":
+            continue
+        body = el.get("role") in _BODY_ROLES
+        for q in el["parts"]:
+            if "xy" in q and body:
+                xy = (np.asarray(q["xy"], float).reshape(-1, 2) - (x0, y0)) * k
+                if len(xy) > 1:
+                    add(along(xy), 0.5 * float(el.get("width") or 2.0) + 1.0)
+                if q.get("closed") and len(xy) > 2:
+                    add(_inside(xy, 4.0), 3.0)
+            elif q["p"] == "mark":
+                add((np.array([q["x"], q["y"]], float) - (x0, y0)) * k, 0.5 * float(q.get("size", 6.0)) + 1.0)
+            elif q["p"] == "glyph":
+                add((np.array([q["x"], q["y"]], float) - (x0, y0)) * k, float(q["r"]) + 2.0)
+            elif q["p"] == "arrow":
+                foot = (np.array([q["x"], q["y"]], float) - (x0, y0)) * k
+                add(along(np.array([foot, foot + (q["dx"], q["dy"])])), 3.0)
+    if not pts:
+        return np.zeros((0, 2)), np.zeros(0)
+    return np.concatenate(pts), np.concatenate(rad)
+
+
+def _covers(box, pts: np.ndarray, rad: np.ndarray) -> int:
+    """How many of the points (with their radii) the box ``(left, bottom, right, top)`` (px) touches."""
+    left, bottom, right, top = box
+    r = rad + _KEY_CLEAR_PX
+    return int(np.count_nonzero((pts[:, 0] > left - r) & (pts[:, 0] < right + r)
+                                & (pts[:, 1] > bottom - r) & (pts[:, 1] < top + r)))
 
 
 class FrontMixin:
@@ -181,24 +244,11 @@ class FrontMixin:
         pic = self.scene_picture(self.state, self._page_view)
         for h in self._handle_list():
             pic.handle(h["id"], (h["x"], h["y"]), symbol=h["id"], desc=f"drag to change {h['id']}")
+        self._key_strip = 0.0
         if self.controls["key"].value:
             self._add_key(pic)
-        if self._figure_text:   # a refused value, said on the picture, on a white panel
-            (x0, x1, y0, y1) = pic.box
-            cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-            lines = textwrap.wrap(self._figure_text, max(20, int(
-                ((x1 - x0) * pic.kx - 40.0) / (_CHAR_EM * FONT_PX))))       # within the figure
-            w = (_CHAR_EM * FONT_PX * max(map(len, lines)) / 2 + 8.0) / pic.kx
-            h = (_LINE_PX * len(lines) / 2 + 5.0) / pic.ky
-            pic.text("figure message", (cx, cy), lines[0], role="text", color="#b00020",
-                     ha="center", va="center", z=100, desc=f"message: {self._figure_text}",
-                     obstacle=False, dy=_LINE_PX * (len(lines) - 1) / 2)
-            el = pic.elements[-1]                # the panel: a part of the message, drawn first
-            el["parts"] += [{**el["parts"][0], "text": line, "dy": el["parts"][0]["dy"] - _LINE_PX * k}
-                            for k, line in enumerate(lines[1:], 1)]
-            el["parts"].insert(0, {"p": "path", "closed": True, "xy": np.array(
-                [[cx - w, cy - h], [cx + w, cy - h], [cx + w, cy + h], [cx - w, cy + h]])})
-            el.update(fill="white", alpha=0.9, width=0.8)
+        if self._figure_text:
+            self._add_banner(pic)
         return pic.to_dict()
 
     @staticmethod
@@ -216,9 +266,42 @@ class FrontMixin:
         return [(", ".join(syms) if len(syms) <= 2 else f"{syms[0]}…{syms[-1]}", meaning, color)
                 for (meaning, color), syms in groups.items()]
 
+    def _note_shown(self) -> bool:
+        """Whether the message shown is the shown state's note (not a refusal)."""
+        st = self.state
+        note = st.get("message", "") if isinstance(st, dict) else getattr(st, "message", "")
+        return bool(note) and note == self._figure_text == self._message
+
+    def _add_banner(self, pic) -> None:
+        """The message on the picture (kept in stored pictures and exports): a banner along the
+        top edge of the plot area, the plot's full width, wrapped, on a white panel, so that the
+        mechanism stays in sight.  A refusal in red; a state's note in dark blue.  Written with
+        ``obstacle=False``: no label moves for it."""
+        (x0, x1, y0, y1) = pic.box
+        text = self._figure_text
+        pw = (x1 - x0) * pic.kx
+        lines = textwrap.wrap(text, max(20, int((pw - 24.0) / (_CHAR_EM * FONT_PX)))) or [text]
+        tall = _LINE_PX * len(lines) + 8.0                    # px, from the plot's top edge
+        top = y1 - 1.0 / pic.ky
+        bottom = y1 - tall / pic.ky
+        cx = (x0 + x1) / 2
+        note = self._note_shown()
+        pic.text("figure message", (cx, top), lines[0], role="text",
+                 color="#1a4f8a" if note else "#b00020", ha="center", va="top", z=100,
+                 desc=f"message: {text}", obstacle=False, dy=-4.0)
+        el = pic.elements[-1]                # the panel: a part of the message, drawn first
+        el["parts"] += [{**el["parts"][0], "text": line, "dy": el["parts"][0]["dy"] - _LINE_PX * k}
+                        for k, line in enumerate(lines[1:], 1)]
+        el["parts"].insert(0, {"p": "path", "closed": True, "xy": np.array(
+            [[x0, bottom], [x1, bottom], [x1, y1], [x0, y1]])})
+        el.update(fill="white", alpha=0.92, width=0.8)
+
     def _add_key(self, pic) -> None:
         """The key: one entry per meaning drawn, in its colour, wrapped at half the figure's
-        width (40 characters at least), on a white panel in the corner where least is drawn."""
+        width (40 characters at least), on a white panel in a corner of the plot area that
+        covers no handle, body, mark, pole glyph or arrow head (of those, where least is drawn);
+        when no corner is clear, in a strip the figure grows below the plot area (the view and
+        the scale kept: the mechanism stays where it was)."""
         x0, x1, y0, y1 = pic.box
         entries = self._key_entries(pic)[:12]
         if not entries:
@@ -230,11 +313,23 @@ class FrontMixin:
         wide = _CHAR_EM * FONT_PX * max(len(li) for ls in lines for li in ls) + 8.0
         tall = 8.0 + 14.0 * sum(map(len, lines))
         ink = _ink(pic)
-        left, top = min(((2.0, ph - 1.0), (pw - 2.0 - wide, ph - 1.0), (2.0, tall + 1.0),
-                         (pw - 2.0 - wide, tall + 1.0)),      # upper left first when ties
-                        key=lambda c: int(np.count_nonzero(
-                            (ink[:, 0] > c[0]) & (ink[:, 0] < c[0] + wide)
-                            & (ink[:, 1] < c[1]) & (ink[:, 1] > c[1] - tall))))
+        corners = ((2.0, ph - 1.0), (pw - 2.0 - wide, ph - 1.0), (2.0, tall + 1.0),
+                   (pw - 2.0 - wide, tall + 1.0))      # upper left first when ties
+        pts, rad = _keep_clear(pic)
+        clear = [c for c in corners if _covers((c[0], c[1] - tall, c[0] + wide, c[1]), pts, rad) == 0]
+        if clear:
+            left, top = min(clear, key=lambda c: int(np.count_nonzero(
+                (ink[:, 0] > c[0]) & (ink[:, 0] < c[0] + wide)
+                & (ink[:, 1] < c[1]) & (ink[:, 1] > c[1] - tall))))
+        else:   # a strip below the plot area, as tall as the key: the figure grows, the view stays
+            strip = float(math.ceil(tall + 4.0))
+            w, h = pic.size
+            pic.size = (w, int(h + strip))
+            pic._plot = (pic._plot[0], pic._plot[1] + strip)
+            pic.box = (x0, x1, y0 - strip / pic.ky, y1)
+            x0, x1, y0, y1 = pic.box
+            self._key_strip = strip / (ph + strip)
+            left, top = 2.0, tall + 1.0
         u0, u1 = x0 + left / pic.kx, x0 + (left + wide) / pic.kx
         v0, v1 = y0 + (top - tall) / pic.ky, y0 + top / pic.ky
         pic.path("key panel", [[u0, v0], [u1, v0], [u1, v1], [u0, v1]], role="text",
@@ -251,12 +346,21 @@ class FrontMixin:
 
     def _page_view_to(self, box) -> None:
         """The user zoomed or panned in the page (None: back to the explorer's own view)."""
+        if box is not None and getattr(self, "_key_strip", 0.0):
+            # the page's box holds the key's strip below the view: the view is the part above it
+            x0, x1, y0, y1 = (float(v) for v in box)
+            box = (x0, x1, y0 + self._key_strip * (y1 - y0), y1)
         self._page_view = None if box is None else tuple(box)
         self._safe_redraw()
 
     def _set_message(self, text: str) -> None:
         self._message = text
-        if text:
+        st = getattr(self, "state", None)
+        note = st.get("message", "") if isinstance(st, dict) else getattr(st, "message", "")
+        if text and text == note:     # the shown state's note: said, not an error
+            self.message_box.value = (f"<div style='color:#1a4f8a;line-height:1.3'>"
+                                      f"ℹ {html.escape(text)}</div>")
+        elif text:
             self.message_box.value = (f"<div style='color:#b00020;font-weight:bold;line-height:1.3'>"
                                       f"⚠ {html.escape(text)}</div>")
         else:
