@@ -197,21 +197,43 @@ class FrontMixin:
                 if self.has_play else [])
         controls = W.VBox(list(self.controls.values()) + play + [buttons, self.export_label],
                           layout=W.Layout(width="330px", min_width="330px", overflow="visible"))
-        # controls on the left; on the right a reserved message line, the picture, the readout:
-        # fixed sizes above the readout, so nothing moves when a message appears
-        right = W.VBox([self.message_box, fig_widget, self.readout, self.explain_box],
-                       layout=W.Layout(align_items="flex-start", overflow="visible"))
+        # controls on the left; on the right a reserved message line and the picture, the readout
+        # below them: fixed sizes above the readout, so nothing moves when a message appears.
+        # In a column too narrow for both (the explorer's own width: a container query) the
+        # picture first, then the controls, then the readout: the figure and its sliders in sight
+        # together (the figure scales down to the column, canvas.js)
+        figure = W.VBox([self.message_box, fig_widget],
+                        layout=W.Layout(align_items="flex-start", overflow="visible", grid_area="figure",
+                                        min_width="0"))
+        below = W.VBox([self.readout, self.explain_box],
+                       layout=W.Layout(align_items="flex-start", overflow="visible", grid_area="readout",
+                                       min_width="0"))
+        controls.layout.grid_area = "controls"
         head = W.HTML(f"<h4 style='margin:2px'>{html.escape(self.title)}</h4>")
-        # side by side, tops aligned; in a column too narrow for both, the picture above the
-        # controls (the lines of a reversed wrap stack upwards), so that it stays in sight
-        body = W.HBox([controls, right],
-                      layout=W.Layout(flex_flow="row wrap-reverse", align_items="flex-end"))
-        root = W.VBox([head, body])
+        # (placed by their grid areas: the readout's column second, as before, for code that finds it)
+        body = W.HBox([controls, below, figure],
+                      layout=W.Layout(display="grid", grid_template_columns="330px minmax(0, max-content)",
+                                      grid_template_rows="auto 1fr",
+                                      grid_template_areas='"controls figure" "controls readout"',
+                                      align_items="flex-start", justify_content="flex-start"))
+        body.add_class("planargeo-body")
+        body.add_class(f"planargeo-body-{wpx}")
+        root = W.VBox([head, body, W.HTML(self._layout_css(wpx), layout=W.Layout(display="none"))])
         root.add_class("planargeo-explorer")
         self.readout.add_class("planargeo-readout")
         self.message_box.add_class("planargeo-message")
         fig_widget.add_class("planargeo-figure")
         return root
+
+    @staticmethod
+    def _layout_css(wpx: int) -> str:
+        """The stylesheet of the narrow layout: below the controls' and the figure's widths side by
+        side (the explorer's width, a container query) one column: figure, controls, readout."""
+        narrow = 330 + int(wpx) + 8
+        return ("<style>.planargeo-explorer{container-type:inline-size}"
+                f"@container (max-width:{narrow - 1}px){{.planargeo-body.planargeo-body-{int(wpx)}{{"
+                "grid-template-columns:minmax(0,1fr) !important;grid-template-rows:auto auto auto !important;"
+                "grid-template-areas:'figure' 'controls' 'readout' !important}}</style>")
 
     def _make_canvas(self):
         from planargeo.widgets.canvas import PictureCanvas
