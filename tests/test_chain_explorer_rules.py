@@ -205,3 +205,69 @@ def test_compute_raises_only_package_errors_for_hard_input():
         assert "cannot compute" not in ex.message and "internal error" not in ex.message
     with pytest.raises(PlanargeoError):
         ex.initial_state(dict(ex.values, **{"joint speeds": "1e6"}))
+
+
+LIST_Q = "joint values (deg / m)"
+
+
+def _dragged_to_big_angles() -> ChainExplorer:
+    """The review's state: link 4's end dragged, the joint values box holds four angles in degrees."""
+    ex = ChainExplorer(display="agg")
+    ex.drag("link 4 end", ex.handle_position("link 4 end"), (3.0, -1.0))
+    typed = [float(t) for t in ex.values[LIST_Q].split(",")]
+    assert len(typed) == 4 and typed[0] == -30.0 and abs(typed[3]) > 1.0       # degrees, beyond a slide
+    return ex
+
+
+@pytest.mark.parametrize("joints", ["prismatic", "alternating"])
+def test_a_new_joint_type_starts_from_its_own_state_with_a_note(joints):
+    ex = _dragged_to_big_angles()
+    ex.set(**{"joint speeds": "1, -2", "joint torques": "0, 5"})
+    ex.set(joints=joints)
+    assert ex.values["joints"] == joints                                 # taken, not snapped back
+    assert ex.values[LIST_Q] == ex.values["joint speeds"] == ex.values["joint torques"] == ""
+    assert "refused" not in ex.message and "cleared" in ex.message and joints in ex.message
+    assert "⚠" not in ex.message_box.value and "b00020" not in ex.message_box.value   # a note, not an error
+    # the state is the type's default one: a fresh explorer with that joint type shows the same
+    fresh = ChainExplorer(display="agg", joints=joints)
+    assert ex.readout_values == pytest.approx(fresh.readout_values)
+    ex.set(**{"time (s)": 0.25})                                         # the note was for that change
+    assert ex.message == ""
+
+
+def test_the_same_joint_type_keeps_the_typed_values():
+    ex = _dragged_to_big_angles()
+    typed = ex.values[LIST_Q]
+    ex.set(joints="revolute", gravity=False)
+    assert ex.values[LIST_Q] == typed and ex.message == ""
+
+
+@pytest.mark.parametrize("text, got", [("10, 20, 30, 40, 50", "got 5 values"), ("10, 20", "got 2 values"),
+                                       ("10", "got 1 value")])
+def test_joint_values_of_the_wrong_count_are_refused_saying_how_many(text, got):
+    ex = ChainExplorer(display="agg")                                    # 4 links
+    shown = dict(ex.readout_values)
+    ex.set(**{LIST_Q: text})
+    assert "needs 4 values, one per joint" in ex.message and got in ex.message, ex.message
+    assert ex.values[LIST_Q] == "" and ex.readout_values == shown
+    ex.set(**{LIST_Q: "10, 20, 30, 40"})
+    assert ex.message == "" and ex.values[LIST_Q] == "10, 20, 30, 40"
+
+
+def test_more_speeds_than_joints_are_refused():
+    ex = ChainExplorer(display="agg", links=3)
+    ex.set(**{"joint speeds": "1, 2, 3, 4"})
+    assert "at most 3 values" in ex.message and ex.values["joint speeds"] == ""
+
+
+def test_a_links_change_keeps_one_joint_value_per_joint():
+    ex = ChainExplorer(display="agg")
+    ex.set(**{LIST_Q: "10, 20, 30, 40", "joint speeds": "1, 2, 3, 4"})
+    ex.set(links=6)                      # the new joints take the bend slider's angle (20°)
+    assert ex.message == "" and ex.values[LIST_Q] == "10, 20, 30, 40, 20, 20"
+    assert ex.values["joint speeds"] == "1, 2, 3, 4"     # speeds: the joints not typed take the slider's
+    ex.set(links=2)
+    assert ex.message == "" and ex.values[LIST_Q] == "10, 20" and ex.values["joint speeds"] == "1, 2"
+    # the state is the one the boxes say: a fresh explorer so set shows the same
+    fresh = ChainExplorer(display="agg", links=2, **{LIST_Q: "10, 20", "joint speeds": "1, 2"})
+    assert ex.readout_values == pytest.approx(fresh.readout_values)

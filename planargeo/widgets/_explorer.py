@@ -74,8 +74,8 @@ def arrow_handle(ex, name: str, kx: str, ky: str, kangle: str, ksize: str | None
             if per is not None:
                 label = str(getattr(ex.controls.get(ksize), "description", "") or ksize)
                 zero = f"{label.split(' (')[0].strip()} would be 0 and "
-            raise DegenerateGeometryError(f"the tip of {name} is on the arrow's foot: {zero}the arrow "
-                                          "would have no direction; drag the tip away from the foot")
+            raise DegenerateGeometryError(f"{name} cannot be on the arrow's foot: {zero}the arrow "
+                                          "would have no direction; drag it away from the foot")
         out = {kangle: math.degrees(math.atan2(d[1], d[0]))}
         if per is not None:
             out[ksize] = n / per
