@@ -369,10 +369,42 @@ def short_text(text: str) -> str:
     return " ".join(str(text).split())
 
 
-def shown_as(name: str, value) -> str:
-    """``name = value`` for a message (numbers short, text quoted)."""
-    real = isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_))
-    return f"{name} = {value:g}" if real else f"{name} = {value!r}"
+def shown_as(widget, value) -> tuple[str, str]:
+    """``(name, value)`` of a control for a message, as the student reads it.
+
+    The name is the control's label without its unit; a number gets the label's unit, typed text
+    its quotes, a checkbox on or off.
+
+    Parameters
+    ----------
+    widget : ipywidgets.ValueWidget
+        The control (its ``description`` is the label shown).
+    value : Any
+        The value to say.
+
+    Returns
+    -------
+    tuple of str
+        The name and the value, to be written ``f"{name} = {value}"``.
+
+    Examples
+    --------
+    >>> shown_as(Step(-2, 2, 0.1, 1.0, "ω₁ (rad/s)").make("size1"), 0.0)
+    ('ω₁', '0 rad/s')
+    >>> shown_as(W.Text(description="joint speeds"), "1e6, 0")
+    ('joint speeds', '“1e6, 0”')
+    """
+    label = " ".join(str(widget.description or "").split())
+    m = re.match(r"^(?P<name>.*?)\s*\((?P<unit>[^()]*)\)$", label)
+    name, unit = (m["name"], m["unit"]) if m else (label, "")
+    if isinstance(widget, W.Checkbox):
+        return name, "on" if value else "off"
+    if isinstance(widget, W.Text):
+        return name, f"“{value}”"
+    if isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_)):
+        unit = unit.replace(", ", " or ")
+        return name, f"{value:g}" + ("" if not unit else unit if unit == "°" else f" {unit}")
+    return name, str(value)
 
 
 class ControlsMixin:
