@@ -330,7 +330,7 @@ function render({ model, el }) {
     kx = pw / (box[1] - box[0]);
     ky = ph / (box[3] - box[2]);
     svg.setAttribute("width", W);
-    bar.style.width = `${W}px`;     // the status line is cut at the figure's width (whole: its title)
+    bar.style.maxWidth = `${W}px`;  // the status line is cut at the figure's width (whole: its title)
     svg.setAttribute("height", H);
     svg.setAttribute("viewBox", `0 0 ${W} ${H}`);
     // shown at the container's width when narrower (aspect kept), down to MIN_SCALE; narrower
@@ -715,13 +715,16 @@ function render({ model, el }) {
   function markHandle() {
     for (const [id, c] of circles) c.classList.toggle("pg-kbd", id === focusHandle);
   }
-  svg.addEventListener("pointerdown", () => { pointerFocus = true; }, true);
+  // the focus ring shows when the keyboard is used, not after a click or a drag
+  svg.addEventListener("pointerdown", () => { pointerFocus = true; svg.classList.add("pg-pointer"); }, true);
+  svg.addEventListener("pointerup", () => { pointerFocus = false; });
   svg.addEventListener("focus", () => {
     if (!pointerFocus && focusHandle === null && st.handles.length) focusHandle = st.handles[0][0];
     pointerFocus = false;
     markHandle();
   });
   svg.addEventListener("keydown", (ev) => {
+    svg.classList.remove("pg-pointer");
     if (ev.key === "Tab" && st.handles.length) {
       const ids = st.handles.map((q) => q[0]), i = ids.indexOf(focusHandle);
       const j = i < 0 ? (ev.shiftKey ? ids.length - 1 : 0) : i + (ev.shiftKey ? -1 : 1);

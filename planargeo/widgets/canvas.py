@@ -171,7 +171,7 @@ _CSS = """
 .pg-canvas { position: relative; font-family: 'DejaVu Sans', sans-serif; user-select: none;
              max-width: 100%; min-width: 0; overflow-x: auto; overflow-y: hidden; }
 .pg-canvas svg { display: block; touch-action: none; outline: none; height: auto; }
-.pg-canvas svg:focus-visible { outline: 2px solid #1a73e8; outline-offset: -2px; }
+.pg-canvas svg:focus-visible:not(.pg-pointer) { outline: 2px solid #1a73e8; outline-offset: -2px; }
 .pg-canvas svg text { font-size: var(--pg-font); }
 .pg-canvas svg text.pg-title { font-size: calc(var(--pg-font) + 1px); }
 .pg-bar { display: flex; gap: 8px; align-items: center; height: 24px; font-size: 12px; max-width: 100%; }
