@@ -844,7 +844,9 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
                   desc=words)
         if (labels or names is not None) and name:
             c = shape.centroid
-            el["parts"].append(_text_part(c.x, c.y, str(name), 0.0, -9 * PX_PER_PT, "center", "center"))
+            part = _text_part(c.x, c.y, str(name), 0.0, -9 * PX_PER_PT, "center", "center")
+            part["fixed"] = True         # a body's number stays on its body: the placer moves others off it
+            el["parts"].append(part)
         out["bodies"].append(el)
         if show_com:
             out["com"].append(com(pic, f"{prefix}com {i + 1}", cm[i], radius=0.9 * pin_radius,

@@ -79,7 +79,7 @@ def fig9_2(ax):
 
         u = n if line_dist(cxy + 0.25 * n) >= line_dist(cxy - 0.25 * n) else -n
         label(pic, f"body label {i + 1}", cxy, str(i + 1), offset=tuple(9 * u), color=BODY_EDGE,
-              ha="center", va="center", desc=f"body {i + 1}")
+              ha="center", va="center", fixed=True, desc=f"body {i + 1}")
     x0, x1, y0, y1 = pic.box
     for j, text in enumerate(reversed(mags)):     # the magnitudes in the lower left, first on top
         label(pic, f"magnitude {len(mags) - j}", (x0, y0), text, role="reaction",
