@@ -218,7 +218,7 @@ class ChainExplorer(Described, Explorer):
             "gravity": W.Checkbox(value=True, description="gravity"),
             "base x (m)": Step(-3, 3, 0.1, 0.0, "base x (m)"),
             "base y (m)": Step(-3, 3, 0.1, 0.0, "base y (m)"),
-            LIST_Q: _list_text(LIST_Q, "e.g. 30, -20, 0.4"),
+            LIST_Q: _list_text(LIST_Q, "one per joint, e.g. 30, -20, 10, -10"),
             "joint speeds": _list_text("joint speeds", "e.g. 1, 0, -2"),
             "joint torques": _list_text("joint torques", "e.g. 0, 5"),
         }
