@@ -78,6 +78,8 @@ const MIN_SCALE = 0.55;
 const MIN_TEXT_PX = 11;
 // pointer tolerance for hover / click (CSS pixels): the nearest element within it is hit
 const HIT_PX = 6;
+// the pointer resting this long on a handle asks for the description of what lies under it (ms)
+const HANDLE_DESC_MS = 250;
 
 function render({ model, el }) {
   const client = Math.random().toString(36).slice(2);
@@ -105,7 +107,7 @@ function render({ model, el }) {
   const nodes = new Map();      // element id -> its <g>
   const circles = new Map();    // handle id -> its <circle>
   const descs = new Map();      // element id -> {version, text}
-  let focusId = null, focusHandle = null, hoverId = null, lastPointer = null;
+  let focusId = null, focusHandle = null, hoverId = null, lastPointer = null, descTimer = null;
   let drag = null, pan = null;
   let inflight = false, seq = 0, tickHalted = false, syncAsked = false;
   const pending = new Map();    // request type -> the latest request of that type
@@ -523,7 +525,7 @@ function render({ model, el }) {
   // ------------------------------------------------------------------ hit-testing
   // The element under the pointer is the one nearest it among those within HIT_PX (shown
   // pixels), not the first drawn there: a thin line under a larger element can be hovered.
-  // Ties go to the topmost (drawn last).  The inside of a filled shape counts as near, but
+  // Ties (within a pixel) go to the topmost (drawn last).  The inside of a filled shape counts as near, but
   // less near than a line or mark within the tolerance.
   function segDist(px, py, ax, ay, bx, by) {
     const dx = bx - ax, dy = by - ay, L2 = dx * dx + dy * dy;
@@ -585,7 +587,8 @@ function render({ model, el }) {
       const e = st.els.get(id), g = nodes.get(id);
       if (!e || !g || !g.parentNode) continue;
       const d = elementDist(e, g, px, py, tol, r, s);
-      if (d <= tol && d <= bestD + 1e-9) { best = id; bestD = d; }
+      // within a pixel of the nearest: a tie (lines drawn on each other), the later wins
+      if (d <= tol && d <= bestD + 1 / s) { best = id; bestD = Math.min(d, bestD); }
     }
     return best;
   }
@@ -602,8 +605,20 @@ function render({ model, el }) {
     else {
       tip.textContent = (e.symbol ? e.symbol + " \u2014 " : "") + "\u2026";
       if (hoverId !== id || !known || known.asked !== st.version) {
-        descs.set(id, { ...(known || {}), asked: st.version });
-        send({ type: "describe", id });
+        const ask = () => {
+          descTimer = null;
+          if (hoverId !== id || drag) return;
+          const k = descs.get(id);
+          descs.set(id, { ...(k || {}), asked: st.version });
+          send({ type: "describe", id });
+        };
+        clearTimeout(descTimer);
+        // on a handle the pointer may be about to drag: asked once it rests (a drag's first
+        // request does not wait behind a description)
+        const onHandle = ev.target && ev.target.dataset && ev.target.dataset.handle;
+        if (onHandle) {
+          if (hoverId !== id || !descTimer) descTimer = setTimeout(ask, HANDLE_DESC_MS);
+        } else { hoverId = id; ask(); }
       }
     }
     hoverId = id;
@@ -649,8 +664,7 @@ function render({ model, el }) {
       return;
     }
     lastPointer = [ev.clientX, ev.clientY];
-    const onHandle = ev.target.dataset && ev.target.dataset.handle;
-    const id = onHandle ? null : hitAt(...localPoint(ev));
+    const id = hitAt(...localPoint(ev));      // on a handle too: what it moves is described
     const g = id === null ? null : nodes.get(id);
     for (const n of svg.querySelectorAll(".pg-hover")) if (n !== g) n.classList.remove("pg-hover");
     if (g) {
@@ -660,6 +674,8 @@ function render({ model, el }) {
   });
   svg.addEventListener("pointerleave", () => { tip.style.display = "none"; hoverId = null; });
   svg.addEventListener("pointerdown", (ev) => {
+    clearTimeout(descTimer);
+    descTimer = null;
     const hid = ev.target.dataset && ev.target.dataset.handle;
     svg.setPointerCapture(ev.pointerId);
     if (hid) {
