@@ -357,3 +357,21 @@ def test_in_a_narrow_jupyterlab_the_figure_fits_and_a_drag_lands_under_the_point
         assert (got[0] - start[0]) ** 2 + (got[1] - start[1]) ** 2 > 15 ** 2, (got, start)
     finally:
         page.close()
+
+
+def test_a_mark_under_a_handle_is_described_once_the_pointer_rests(harness_page):
+    # a joint drawn under its handle: the pointer on the handle hovers the joint; its description
+    # is asked for only once the pointer rests (a drag starting at once does not wait behind it)
+    page = harness_page
+    pic = _square(400)
+    pic.marks("J", [[0.5, 0.5]], symbol="J", desc="a joint", size=8)
+    pic.handle("J", (0.5, 0.5), symbol="J", desc="drag J")
+    _open(page, pic.to_dict())
+    page.mouse.move(*_at(page, 0.5, 0.5))
+    assert _hovered(page) == ["J"]
+    assert [m for m in page.evaluate("window.sent") if m["type"] == "describe"] == []
+    page.wait_for_timeout(500)
+    asked = [m for m in page.evaluate("window.sent") if m["type"] == "describe"]
+    assert [m["id"] for m in asked] == ["J"]
+    _ack_all(page, desc="J — a joint")
+    assert page.locator(".pg-tip").text_content() == "J — a joint"
