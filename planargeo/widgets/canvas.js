@@ -5,11 +5,16 @@
 // are redrawn; the handles keep their nodes.  A view starts from the synced "snapshot"
 // and asks for the whole picture ("sync") whenever an update does not apply to its version.
 // What happens in the page, at once:
+//   * the figure fits its container (shrunk down to MIN_SCALE, its text never below MIN_TEXT_PX
+//     as shown; narrower: a scrollbar); pointer positions are read in the shown scale;
 //   * a dragged handle follows the pointer in the same animation frame; arrow keys nudge the
-//     handle last clicked, and letting go of them ends the nudges as a mouse-up ends a drag;
+//     handle last clicked or marked with Tab / Shift-Tab, and letting go of them ends the
+//     nudges as a mouse-up ends a drag;
 //   * zoom (wheel), pan (drag the background) and reset move the drawing at once;
-//   * hover highlights an element and shows its description (asked of the kernel when
-//     the picture changed since it was last asked); a click focuses it.
+//   * hover highlights the element nearest the pointer and shows its description, kept inside
+//     the figure (asked of the kernel when the picture changed since it was last asked); a
+//     click focuses it, a click on the background (or the element leaving) ends the focus;
+//   * a "download" message (an export button) saves its file at once.
 // From the kernel besides pictures: "download" (an export's file: the page saves it at once).
 // What goes to the kernel: {type: "drag" | "release" | "view" | "tick" | "describe" | "sync" | "ping", ...},
 // at most one in flight; while one is in flight only the latest request of each type is

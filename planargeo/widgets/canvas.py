@@ -26,6 +26,20 @@ rests on it.  An update made while a request is answered travels in the request'
 ``{"type": "update", ...}``.  A view that opens (a page reload, a second display)
 starts from the synced ``snapshot`` (the whole current picture, wire format) and
 asks for the whole picture again whenever an update does not apply to its version.
+An export button's file goes as ``{"type": "download", "name", "mime", "data" (base64),
+"client"}`` (:meth:`PictureCanvas.download`): the view that last sent a request (or any
+view, ``client`` None) saves it at once through a Blob and a temporary link.
+
+In the page
+-----------
+The figure is shown at its container's width when that is narrower than the picture
+(aspect kept), down to 0.55 of its size (narrower: a horizontal scrollbar); its text is
+drawn larger as it shrinks so that it is never shown below 11 px.  Pointer positions are
+read in the shown scale.  The element hovered or clicked is the nearest to the pointer
+within 6 px (ties within a pixel: the one drawn last); a click focuses it (the rest
+faded), a click on the background or the element leaving the picture ends the focus.
+The figure takes the keyboard's focus (Tab; a visible outline): Tab and Shift-Tab mark
+each handle in turn, the arrow keys nudge the marked one (Shift: 10 times as far).
 
 Page → kernel
 -------------
@@ -67,11 +81,14 @@ Each checked tick calls ``on_tick()``, which advances the motion by the wall-clo
 time since the last tick and sets the new picture (its update travels in the ack).
 ``on_tick`` raising a :class:`~planargeo.errors.PlanargeoError` refuses the tick: its
 message is shown in the page's status line, and the page sends no further tick until
-``playing`` is set again.  A tick that arrives after Play stopped does nothing.
+``playing`` is set again.  A tick that arrives after Play stopped does nothing, and
+stopping cancels the extra frame below.
 
 The kernel keeps two frames in flight: after answering a tick it calls ``on_tick()``
 once more, halfway to the next tick (the interval between the last two ticks, less
-the time a frame takes), and sends that frame alone as an ``update``.  The page
+the time a frame takes, at least :data:`EXTRA_MIN_S`: a Stop that reached the kernel
+while the tick's frame was computed is handled first), and sends that frame alone as an
+``update``.  The page
 still sends one request at a time; a frame a page cannot paint in time is only a
 display frame dropped (each frame covers the wall-clock time since the one before,
 so no physics step is skipped).  The page shows at most one new picture per animation

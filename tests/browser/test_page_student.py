@@ -49,6 +49,20 @@ def _ack_all(page, desc: str | None = None) -> list:
     return sent
 
 
+def _settle(page) -> list:
+    """Acknowledge each request as it comes until the page sends no more; what was sent."""
+    done = 0
+    for _ in range(20):
+        sent = page.evaluate("window.sent.slice()")
+        for m in sent[done:]:
+            page.evaluate("(m) => window.deliver(m)", {"type": "ack", "seq": m["seq"], "client": m.get("client"),
+                                                        "ok": True, "message": ""})
+        if len(sent) == done:
+            return sent
+        done = len(sent)
+    raise AssertionError("the page kept sending requests")
+
+
 def _box(page, selector: str) -> dict:
     return page.locator(selector).first.bounding_box()
 
@@ -93,6 +107,15 @@ def test_a_narrow_container_shows_the_whole_figure_and_a_drag_lands_under_the_po
     assert drags and drags[-1]["x"] == pytest.approx(1.0, abs=4 / svg["width"] * 1.01)
     assert drags[-1]["y"] == pytest.approx(1.0, abs=4 / svg["width"] * 1.01)
     page.mouse.up()
+    _settle(page)
+    # the wheel zooms about the point under the pointer: data (-1, 0.5) stays there
+    page.evaluate("window.sent.length = 0")
+    page.mouse.move(svg["x"] + 0.25 * svg["width"], svg["y"] + 0.375 * svg["height"])
+    page.mouse.wheel(0, 100)
+    (view,) = [m for m in page.evaluate("window.sent") if m["type"] == "view"]
+    x0, x1, y0, y1 = view["box"]
+    assert x1 - x0 > 4.0 and (-1.0 - x0) / (x1 - x0) == pytest.approx(0.25, abs=2 / svg["width"])
+    assert (y1 - 0.5) / (y1 - y0) == pytest.approx(0.375, abs=2 / svg["height"])
     _ack_all(page)
 
 
