@@ -27,7 +27,7 @@ def test_a_far_time_says_ask_again_on_the_picture():
     for _ in range(2):
         m = ask(ex, TIME, 3600.0)
         assert m, ex.message
-        assert "(refused: time (s) = 3600" in ex.message                   # the control named
+        assert "(refused: time t = 3600 s" in ex.message                   # the control named
         # the shown state stays: controls and readout of t = 0
         assert ex.values == values and ex.readout_values == shown
         on_picture = _message_on_picture(ex)

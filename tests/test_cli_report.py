@@ -224,7 +224,7 @@ def test_folded_slider_crank_reports_the_singular_contact_matrix_with_its_condit
     line = lines[0]
     assert line.startswith("planargeo report: error: singular configuration: slider-crank at a dead centre "
                            "with the piston pin on the crank pivot")
-    assert "the contact matrix B^T G Λ^-1 G^T B of the piston slider is singular" in line
+    assert "the contact matrix Bᵀ G Λ⁻¹ Gᵀ B of the piston slider is singular" in line
     cond = float(line.rsplit("(condition number ", 1)[1].rstrip(")"))
     assert cond > 1e10
 
@@ -248,7 +248,7 @@ def test_folded_slider_crank_in_process_error_and_independent_condition():
     # a rod too short for the pivot but horizontal at psi = arccos(l / r) is only a kinematic limit:
     # the contact matrix is regular there and the velocity closure's error stands
     with pytest.raises(SingularConfigurationError,
-                       match=r"loop closure is singular \(rod along the horizontal\): theta_dot undetermined") as e:
+                       match=r"loop closure is singular \(rod along the horizontal\): the rod's turning rate θ̇ is undetermined") as e:
         scenes.build("slider-crank", l=2.0, psi=float(np.arccos(2.0 / R_)))
     assert "piston pin" not in str(e.value)
     assert e.value.cond > 1e12

@@ -169,7 +169,7 @@ def test_folded_dead_centre_reports_the_contact_matrix(ex):
     assert cond > 1e12
     with pytest.raises(SingularConfigurationError) as err:
         scenes.build("slider-crank", l=2.29, psi=math.pi)
-    assert ex.message == f"{err.value} (refused: crank angle (deg) = 180, rod length = 2.29)"
+    assert ex.message == f"{err.value} (refused: ψ₀ = 180°, rod length l = 2.29 m)"
     assert err.value.cond > 1e12
 
 

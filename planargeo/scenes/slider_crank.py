@@ -107,7 +107,8 @@ def slider_crank_state(psi=0.4, psidot=20.0, r=2.29, l=5.00):
     cond = np.linalg.cond(Jdep)
     if not np.isfinite(cond) or cond > COND_LIMIT:
         raise SingularConfigurationError(
-            "slider-crank loop closure is singular (rod along the horizontal): theta_dot undetermined", cond)
+            "slider-crank loop closure is singular (rod along the horizontal): the rod's turning rate θ̇ "
+            "is undetermined", cond)
     wrod = -r * np.sin(psi) * psidot / (l * sb)         # psidot + thetadot
     q = np.array([psi, theta, phi])
     qd = np.array([psidot, wrod - psidot, -wrod])
@@ -163,8 +164,8 @@ def slider_crank_solve(model, psi, psidot, r, l, t, drive="free"):
         if not cond <= SINGULAR_COND:
             raise SingularConfigurationError(
                 f"singular configuration: slider-crank at a dead centre with the piston pin on the crank pivot "
-                f"(l = r = {l:g}, psi = {psi:g}): the contact matrix B^T G Λ^-1 G^T B of the piston slider is "
-                f"singular and theta_dot undetermined", cond) from None
+                f"(l = r = {l:g} m, ψ = {np.degrees(psi):.4g}°): the contact matrix Bᵀ G Λ⁻¹ Gᵀ B of the piston slider "
+                f"is singular and the rod's turning rate θ̇ undetermined", cond) from None
         raise
     sol = loop_solve(model, q, qd, np.zeros(3), prescribed={0: 0.0} if drive == "constant-speed" else None)
     h = r * np.sin(q[0]) + l * np.sin(q[0] + q[1]) + t * np.sin(q.sum())     # (9.85)
