@@ -5,8 +5,9 @@
 // are redrawn; the handles keep their nodes.  A view starts from the synced "snapshot"
 // and asks for the whole picture ("sync") whenever an update does not apply to its version.
 // What happens in the page, at once:
-//   * the figure fits its container (shrunk down to MIN_SCALE, its text never below MIN_TEXT_PX
-//     as shown; narrower: a scrollbar); pointer positions are read in the shown scale;
+//   * the figure fits its container: shrunk (its text drawn larger, never shown below MIN_TEXT_PX)
+//     as long as the text grows at most MAX_TEXT_GROW times; narrower, a horizontal scrollbar;
+//     pointer positions are read in the shown scale;
 //   * a dragged handle follows the pointer in the same animation frame; arrow keys nudge the
 //     handle last clicked or marked with Tab / Shift-Tab, and letting go of them ends the
 //     nudges as a mouse-up ends a drag;
@@ -77,10 +78,11 @@ function fmtTick(v) {
 
 const f2 = (v) => (Math.round(v * 100) / 100).toString();
 
-// the figure shrinks to fit its container down to this scale (below it: a horizontal scrollbar)
-const MIN_SCALE = 0.55;
 // text is never shown smaller than this (CSS pixels): a shrunk figure draws its labels larger
 const MIN_TEXT_PX = 11;
+// ... but at most this many times their size (the labels were placed for their own size): the
+// figure shrinks down to MIN_TEXT_PX / (MAX_TEXT_GROW × its font); narrower, a scrollbar
+const MAX_TEXT_GROW = 1.15;
 // pointer tolerance for hover / click (CSS pixels): the nearest element within it is hit
 const HIT_PX = 6;
 // the pointer resting this long on a handle asks for the description of what lies under it (ms)
@@ -103,6 +105,8 @@ function render({ model, el }) {
   tip.className = "pg-tip";
   tip.style.display = "none";
   root.append(bar, svg, tip);
+  // the widget's own box is never wider than its container (in a notebook its layout says so:
+  // canvas.py); a figure too wide to shrink scrolls inside it (root: overflow-x auto)
   el.appendChild(root);
 
   // the picture held: its version, view, elements by id (wire format), handles
@@ -340,11 +344,13 @@ function render({ model, el }) {
     bar.style.maxWidth = `${W}px`;  // the status line is cut at the figure's width (whole: its title)
     svg.setAttribute("height", H);
     svg.setAttribute("viewBox", `0 0 ${W} ${H}`);
-    // shown at the container's width when narrower (aspect kept), down to MIN_SCALE; narrower
-    // still, a horizontal scrollbar.  The labels' shown size stays at least MIN_TEXT_PX.
+    // shown at the container's width when narrower (aspect kept), down to the smallest scale
+    // whose text is MIN_TEXT_PX when drawn MAX_TEXT_GROW times larger; narrower still, a
+    // horizontal scrollbar.  The labels' shown size stays at least MIN_TEXT_PX.
+    const minScale = Math.min(1, MIN_TEXT_PX / (MAX_TEXT_GROW * (h.font_px || MIN_TEXT_PX)));
     svg.style.width = "100%";
     svg.style.maxWidth = `${W}px`;
-    svg.style.minWidth = `${Math.ceil(W * MIN_SCALE)}px`;
+    svg.style.minWidth = `${Math.ceil(W * minScale)}px`;
     rescale();
     const defs = mk("defs", {}, svg);
     const clipId = "pgclip" + Math.random().toString(36).slice(2);

@@ -33,8 +33,10 @@ view, ``client`` None) saves it at once through a Blob and a temporary link.
 In the page
 -----------
 The figure is shown at its container's width when that is narrower than the picture
-(aspect kept), down to 0.55 of its size (narrower: a horizontal scrollbar); its text is
-drawn larger as it shrinks so that it is never shown below 11 px.  Pointer positions are
+(aspect kept); its text is drawn larger as it shrinks so that it is never shown below
+11 px, but at most 1.15 times larger (the labels were placed for their own size): with
+the labels' 11.46 px, down to 0.835 of the figure's size.  Narrower, the figure keeps that
+size and its container scrolls sideways.  Pointer positions are
 read in the shown scale.  The element hovered or clicked is the nearest to the pointer
 within 6 px (ties within a pixel: the one drawn last); a click focuses it (the rest
 faded), a click on the background or the element leaving the picture ends the focus.
@@ -191,7 +193,8 @@ _CSS = """
 .pg-canvas svg:focus-visible:not(.pg-pointer) { outline: 2px solid #1a73e8; outline-offset: -2px; }
 .pg-canvas svg text { font-size: var(--pg-font); }
 .pg-canvas svg text.pg-title { font-size: calc(var(--pg-font) + 1px); }
-.pg-bar { display: flex; gap: 8px; align-items: center; height: 24px; font-size: 12px; max-width: 100%; }
+.pg-bar { display: flex; gap: 8px; align-items: center; height: 24px; font-size: 12px; max-width: 100%;
+          position: sticky; left: 0; }
 .pg-bar button { font-size: 12px; padding: 1px 8px; flex: 0 0 auto; white-space: nowrap; }
 .pg-status { color: #b00020; white-space: nowrap; overflow: hidden; text-overflow: ellipsis;
              min-width: 0; flex: 1 1 auto; }
@@ -402,6 +405,12 @@ class PictureCanvas(anywidget.AnyWidget):
         self.on_idle = on_idle
         self.on_release = on_release
         self.around = around or contextlib.nullcontext
+        # never wider than its container (ipywidgets' layout owns the box's inline style): a
+        # figure too wide to shrink scrolls inside the widget instead of being cut off
+        if self.layout.max_width is None:
+            self.layout.max_width = "100%"
+        if self.layout.min_width is None:
+            self.layout.min_width = "0"
         self.n_requests = 0
         self.on_msg(self._on_msg)
 

@@ -6,8 +6,8 @@ not the page's code:
 
 * in a container narrower than the figure, the figure is shown whole, scaled to the container's
   width (its aspect kept, its text at least 11 px as shown), and a handle dragged to a point
-  reaches the kernel as that point's data coordinates; narrower than the smallest scale, the
-  figure keeps that scale and its container scrolls sideways;
+  reaches the kernel as that point's data coordinates; narrower than the smallest scale (text
+  drawn 1.15 times larger), the figure keeps that scale and its container scrolls sideways;
 * a click on an element focuses it (the rest faded); a click on the background clears the focus,
   and a focus on an element that left the picture is dropped;
 * a hover description near any edge of the figure is shown whole inside the figure;
@@ -22,6 +22,15 @@ import pytest
 pytestmark = pytest.mark.browser
 
 MIN_TEXT_PX = 11.0
+
+
+def _font_px():
+    from planargeo.draw.picture import FONT_PX
+
+    return FONT_PX
+
+
+FONT_PX = _font_px()
 
 
 def _open(page, pic: dict, host_width: int | None = None):
@@ -83,11 +92,11 @@ def _narrow_picture():
 
 def test_a_narrow_container_shows_the_whole_figure_and_a_drag_lands_under_the_pointer(harness_page):
     page = harness_page
-    _open(page, _narrow_picture(), host_width=400)
+    _open(page, _narrow_picture(), host_width=560)
     host, svg = _box(page, "#host"), _box(page, ".pg-canvas svg")
     # whole, inside the container, aspect kept
     assert svg["x"] >= host["x"] - 0.5 and svg["x"] + svg["width"] <= host["x"] + host["width"] + 0.5, (svg, host)
-    assert svg["width"] == pytest.approx(400, abs=1) and svg["height"] == pytest.approx(svg["width"], abs=1)
+    assert svg["width"] == pytest.approx(560, abs=1) and svg["height"] == pytest.approx(svg["width"], abs=1)
     # the text as shown: at least 11 px
     shown = page.evaluate("""() => { const t = document.querySelector('.pg-canvas g[data-id="far"] text');
         const r = t.getBoundingClientRect(); return [parseFloat(getComputedStyle(t).fontSize), r.right, r.bottom]; }""")
@@ -121,9 +130,10 @@ def test_a_narrow_container_shows_the_whole_figure_and_a_drag_lands_under_the_po
 
 def test_narrower_than_the_smallest_scale_the_container_scrolls(harness_page):
     page = harness_page
-    _open(page, _narrow_picture(), host_width=200)
+    _open(page, _narrow_picture(), host_width=400)
     svg = _box(page, ".pg-canvas svg")
-    assert svg["width"] > 200
+    # the smallest scale: the labels (FONT_PX) drawn at most 1.15 times larger, shown at 11 px
+    assert svg["width"] == pytest.approx(620 * 11 / (1.15 * FONT_PX), abs=1.5), svg
     text_px = page.evaluate("""() => parseFloat(getComputedStyle(
         document.querySelector('.pg-canvas g[data-id="far"] text')).fontSize)""")
     assert text_px * svg["width"] / 620 >= MIN_TEXT_PX - 0.01
@@ -312,13 +322,15 @@ def test_an_export_message_downloads_the_file_at_once(harness_page, kind, magic,
 
 
 NARROW_CELLS = ["from planargeo.widgets import ChainExplorer",
-                "ChainExplorer(figsize=(9.6, 5.4))"]         # 960 px: wider than the column
+                "ChainExplorer()",                           # 620 px: shrunk to the column
+                "ChainExplorer(figsize=(9.6, 5.4))"]         # 960 px: too wide to shrink, scrolls
 
 
 def test_in_a_narrow_jupyterlab_the_figure_fits_and_a_drag_lands_under_the_pointer(lab, browser):
     """JupyterLab at 1000 × 900 with the file browser open (the review's window: an output column
-    of about 570 px): the chain's 960 px figure is shown whole inside the explorer, and its first
-    handle dragged to a point is drawn there once the kernel has answered."""
+    of about 570 px): the chain's 620 px figure is shown whole inside the explorer, and its first
+    handle dragged to a point is drawn there once the kernel has answered; a 960 px figure keeps
+    its smallest scale and scrolls sideways inside the column (nothing cut out of reach)."""
     import time
 
     import nbformat
@@ -350,12 +362,12 @@ def test_in_a_narrow_jupyterlab_the_figure_fits_and_a_drag_lands_under_the_point
                           "const p = e.closest('.jp-OutputArea-output') || e.parentElement; const q = p.getBoundingClientRect();"
                           "return [r.left, r.right, q.left, q.right]; }")
         box = svg.bounding_box()
-        assert box["width"] < 960 * 0.99, box                       # scaled down
-        assert box["height"] == pytest.approx(box["width"] * 540 / 960, abs=2)
+        assert box["width"] < 620 * 0.99, box                       # scaled down
+        assert box["height"] == pytest.approx(box["width"] * 540 / 620, abs=2)
         assert box["x"] >= out[2] - 1 and box["x"] + box["width"] <= out[3] + 1, (box, out)
         font = page.evaluate("(s) => parseFloat(getComputedStyle(s.querySelector('text')).fontSize)",
                              svg.element_handle())
-        assert font * box["width"] / 960 >= 11 - 0.01
+        assert font * box["width"] / 620 >= 11 - 0.01
         handle = ex.locator("circle.pg-handle").first
         h = handle.bounding_box()
         start = (h["x"] + h["width"] / 2, h["y"] + h["height"] / 2)
@@ -378,6 +390,21 @@ def test_in_a_narrow_jupyterlab_the_figure_fits_and_a_drag_lands_under_the_point
         got = (h2["x"] + h2["width"] / 2, h2["y"] + h2["height"] / 2)
         assert abs(got[0] - to[0]) < h2["width"] and abs(got[1] - to[1]) < h2["height"], (got, to)
         assert (got[0] - start[0]) ** 2 + (got[1] - start[1]) ** 2 > 15 ** 2, (got, start)
+        # the 960 px figure: its smallest scale, a scrollbar; scrolled to the end, its right edge in view
+        wide = page.locator(".planargeo-explorer").nth(1)
+        wide.locator("svg .pg-frame").first.wait_for(state="attached", timeout=240_000)
+        wide.locator(".pg-canvas svg").first.scroll_into_view_if_needed()
+        time.sleep(0.5)
+        cv = wide.locator(".pg-canvas").first
+        sizes = cv.evaluate("(c) => [c.scrollWidth, c.clientWidth]")
+        wbox = wide.locator(".pg-canvas svg").first.bounding_box()
+        assert wbox["width"] == pytest.approx(960 * 11 / (1.15 * FONT_PX), abs=1.5), wbox
+        assert sizes[0] > sizes[1] and sizes[0] == pytest.approx(wbox["width"], abs=1.5), sizes
+        cv.evaluate("(c) => { c.scrollLeft = c.scrollWidth; }")
+        time.sleep(0.3)
+        page.screenshot(path=str(ARTIFACTS / "narrow-lab-chain-960-scrolled.png"))
+        wbox, cbox = wide.locator(".pg-canvas svg").first.bounding_box(), cv.bounding_box()
+        assert abs(wbox["x"] + wbox["width"] - (cbox["x"] + cbox["width"])) < 1.5, (wbox, cbox)
     finally:
         page.close()
 
