@@ -146,7 +146,7 @@ class FrontMixin:
 
         self.reset_button = button("Reset", "undo", "Return every control to its default", self.reset)
         self.export_button, self.export_png_button, self.export_gif_button, self.export_mp4_button = (
-            button(kind.upper(), icon, f"Export {what} as {kind.upper()} (a download link)",
+            button(kind.upper(), icon, f"Export {what} as {kind.upper()} (downloads the file)",
                    lambda kind=kind: self._export_clicked(kind))
             for kind, icon, what in (("svg", "download", "the current view"),
                                      ("png", "download", "the current view"),
