@@ -327,6 +327,37 @@ class Picture:
         out._ids = set(self._ids)
         return out
 
+    def grow_below(self, px: float) -> tuple:
+        """Make the figure and its view ``px`` pixels taller below, at the same scale.
+
+        What is drawn keeps its place on screen; the new strip (e.g. for a key) is part of the plot.
+
+        Parameters
+        ----------
+        px : float
+            Pixels added below the plot area.
+
+        Returns
+        -------
+        tuple
+            The new view ``(x0, x1, y0, y1)``.
+
+        Examples
+        --------
+        >>> pic = Picture((0, 1, 0, 1), size=(100, 100), ticks=False, margin=(0, 0, 0, 0))
+        >>> pic.grow_below(50.0), pic.size
+        ((0.0, 1.0, -0.5, 1.0), (100, 150))
+        """
+        px = float(px)
+        if not (math.isfinite(px) and px >= 0):
+            raise InputError(f"px must be a finite number of pixels >= 0, got {px!r}")
+        w, h = self.size
+        self.size = (w, int(round(h + px)))
+        self._plot = (self._plot[0], self._plot[1] + px)
+        x0, x1, y0, y1 = self.box
+        self.box = (x0, x1, y0 - px / self.ky, y1)
+        return self.box
+
     def to_px(self, xy) -> np.ndarray:
         """Pixel coordinates (from the plot area's lower left, y up) of data points.
 

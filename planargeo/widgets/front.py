@@ -345,11 +345,7 @@ class FrontMixin:
                 & (ink[:, 1] < c[1]) & (ink[:, 1] > c[1] - tall))))
         else:   # a strip below the plot area, as tall as the key: the figure grows, the view stays
             strip = float(math.ceil(tall + 4.0))
-            w, h = pic.size
-            pic.size = (w, int(h + strip))
-            pic._plot = (pic._plot[0], pic._plot[1] + strip)
-            pic.box = (x0, x1, y0 - strip / pic.ky, y1)
-            x0, x1, y0, y1 = pic.box
+            x0, x1, y0, y1 = pic.grow_below(strip)
             self._key_strip = strip / (ph + strip)
             left, top = 2.0, tall + 1.0
         u0, u1 = x0 + left / pic.kx, x0 + (left + wide) / pic.kx
