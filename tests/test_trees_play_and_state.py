@@ -102,9 +102,9 @@ def test_the_time_field_is_read_only_bounded_and_exact():
             ex.values["t (s)"])
         shown = dict(ex.values)
         ex.set(**{"t (s)": "1e6"})                                  # beyond the end: refused by name
-        assert "t (s)" in ex.message and ex.values == shown
+        assert "time t" in ex.message and ex.values == shown
         ex.set(**{"t (s)": "soon"})
-        assert "t (s)" in ex.message and ex.values == shown
+        assert "time t" in ex.message and ex.values == shown
 
 
 @pytest.mark.parametrize("frames", [1, 7])

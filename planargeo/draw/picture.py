@@ -342,6 +342,11 @@ class Picture:
         tuple
             The new view ``(x0, x1, y0, y1)``.
 
+        Raises
+        ------
+        InputError
+            ``px`` is not a finite number of pixels ≥ 0.
+
         Examples
         --------
         >>> pic = Picture((0, 1, 0, 1), size=(100, 100), ticks=False, margin=(0, 0, 0, 0))
