@@ -124,8 +124,9 @@ def test_tour_slider_updates_readout_and_figure(lab, browser):
 
         figure = explorer.locator(".planargeo-figure").first
         figure.scroll_into_view_if_needed()
-        _wait_for(lambda: figure.bounding_box() and figure.bounding_box()["height"] > 50, 30,
-                  "the figure to render")
+        _wait_for(lambda: figure.bounding_box() and figure.bounding_box()["height"] > 50
+                  and figure.locator("svg path").count() > 5, 30,
+                  "the figure to render")       # its picture drawn, not only its box laid out
         slider = explorer.locator(".widget-slider").first
         label = slider.locator(".widget-label").first.inner_text().strip().split(" (")[0]  # "P x (m)": row "P x"
         value_box = slider.locator(".widget-readout").first
