@@ -74,3 +74,53 @@ def harness_page(browser):
             yield page
         finally:
             page.close()
+
+
+def write_notebook(path: Path, cells) -> Path:
+    """A notebook of code ``cells`` on the Python 3 kernel, written to ``path``."""
+    import nbformat
+
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in cells])
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+    nbformat.write(nb, path)
+    return path
+
+
+def open_in_lab(page, lab, name: str, file_browser: bool | None = None) -> None:
+    """Open notebook ``name`` of ``lab`` in ``page``, wait for its kernel, open (True) or close (False)
+    the file browser, and run all cells."""
+    page.goto(f"{lab.url}/lab/tree/{name}?reset", wait_until="domcontentloaded", timeout=120_000)
+    page.wait_for_function("window.jupyterapp && window.jupyterapp.shell.currentWidget"
+                           " && window.jupyterapp.shell.currentWidget.sessionContext.session"
+                           " && window.jupyterapp.shell.currentWidget.sessionContext.session.kernel",
+                           timeout=120_000)
+    collapsed = page.evaluate("window.jupyterapp.shell.leftCollapsed")
+    if file_browser is True and collapsed:
+        page.evaluate("window.jupyterapp.commands.execute('filebrowser:activate')")
+    elif file_browser is False and not collapsed:
+        page.evaluate("window.jupyterapp.commands.execute('application:toggle-left-area')")
+    if file_browser is not None:
+        page.wait_for_function(f"{'!' if file_browser else ''}window.jupyterapp.shell.leftCollapsed",
+                               timeout=30_000)
+    page.evaluate("window.jupyterapp.commands.execute('notebook:run-all-cells')")
+
+
+def one_handle_picture() -> dict:
+    """A 300 px picture of one point ``P`` with its handle, 75 px a unit (the page harness's tests)."""
+    from planargeo.draw.picture import Picture
+
+    pic = Picture((-2, 2, -2, 2), size=(300, 300), ticks=False, margin=(0, 0, 0, 0))
+    pic.marks("P", [[0.0, 0.0]], role="twist", symbol="P", desc="a point")
+    pic.handle("P", (0.0, 0.0), symbol="P", desc="drag P")
+    return pic.to_dict()
+
+
+def requests_sent(page) -> list:
+    """The requests the harness page sent (syncs and descriptions left out)."""
+    return page.evaluate("window.sent.filter((m) => m.type !== 'sync' && m.type !== 'describe')")
+
+
+def ack(page, m) -> None:
+    """Acknowledge request ``m`` in the harness page, as the kernel does."""
+    page.evaluate("(m) => window.deliver(m)",
+                  {"type": "ack", "seq": m["seq"], "client": m.get("client"), "ok": True, "message": ""})

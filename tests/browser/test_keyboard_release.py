@@ -13,38 +13,22 @@ from __future__ import annotations
 
 import pytest
 
+from .conftest import ack, one_handle_picture, requests_sent
+
 pytestmark = pytest.mark.browser
 
-PX_PER_UNIT = 75.0          # the picture below: 300 px for 4 units
-
-
-def _picture():
-    from planargeo.draw.picture import Picture
-
-    pic = Picture((-2, 2, -2, 2), size=(300, 300), ticks=False, margin=(0, 0, 0, 0))
-    pic.marks("P", [[0.0, 0.0]], role="twist", symbol="P", desc="a point")
-    pic.handle("P", (0.0, 0.0), symbol="P", desc="drag P")
-    return pic.to_dict()
-
-
-def _requests(page):
-    return page.evaluate("window.sent.filter((m) => m.type !== 'sync' && m.type !== 'describe')")
-
-
-def _ack(page, m):
-    page.evaluate("(m) => window.deliver(m)",
-                  {"type": "ack", "seq": m["seq"], "client": m.get("client"), "ok": True, "message": ""})
+PX_PER_UNIT = 75.0          # one_handle_picture: 300 px for 4 units
 
 
 def _answer_all(page, limit: int = 20):
     """Acknowledge each request as it comes (the kernel taking every one); what was sent, in order."""
     done = 0
     for _ in range(limit):
-        sent = _requests(page)
+        sent = requests_sent(page)
         if len(sent) == done:
             return sent
         for m in sent[done:]:
-            _ack(page, m)
+            ack(page, m)
         done = len(sent)
     raise AssertionError("the page kept sending requests")
 
@@ -54,15 +38,15 @@ def _focused_view(page):
     from planargeo.widgets.canvas import PictureCanvas
 
     c = PictureCanvas()
-    c.picture = _picture()
+    c.picture = one_handle_picture()
     page.evaluate("(s) => window.openView(s)",
                   {k: v for k, v in c.get_state().items() if k in ("snapshot", "playing")})
     for m in page.evaluate("window.sent"):        # the view's own first request (a sync), answered
-        _ack(page, m)
+        ack(page, m)
     page.evaluate("window.sent.length = 0")
     box = page.locator("circle.pg-handle").first.bounding_box()
     page.mouse.click(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
-    assert _requests(page) == [], "a click without a move sent a request"
+    assert requests_sent(page) == [], "a click without a move sent a request"
 
 
 def test_letting_go_of_an_arrow_key_releases_the_nudged_handle(harness_page):
@@ -70,10 +54,10 @@ def test_letting_go_of_an_arrow_key_releases_the_nudged_handle(harness_page):
     _focused_view(page)
     for _ in range(3):                        # the key held: three presses (the key's repeat)
         page.keyboard.down("ArrowRight")
-    sent = _requests(page)
+    sent = requests_sent(page)
     assert [m["type"] for m in sent] == ["drag"], sent          # one request in flight
     page.keyboard.up("ArrowRight")
-    assert len(_requests(page)) == 1, "a request sent while the first was unanswered"
+    assert len(requests_sent(page)) == 1, "a request sent while the first was unanswered"
     sent = _answer_all(page)
     assert [m["type"] for m in sent] == ["drag", "drag", "release"], sent
     last = sent[1]                            # 3 nudges of 2 px to the right
@@ -114,7 +98,7 @@ def test_quick_taps_while_the_kernel_is_busy_end_with_a_release(harness_page):
     _focused_view(page)
     page.keyboard.press("ArrowRight")
     page.keyboard.press("ArrowRight")
-    assert [m["type"] for m in _requests(page)] == ["drag"]
+    assert [m["type"] for m in requests_sent(page)] == ["drag"]
     sent = _answer_all(page)
     assert [m["type"] for m in sent][-2:] == ["drag", "release"], sent
     assert abs(sent[-2]["x"] - 4 / PX_PER_UNIT) < 1e-9

@@ -9,6 +9,8 @@ import time
 
 import pytest
 
+from .conftest import open_in_lab, write_notebook
+
 pytestmark = pytest.mark.browser
 
 CELLS = ["from planargeo.widgets import ChainExplorer",
@@ -22,26 +24,11 @@ BOXES = """e => Object.fromEntries(Object.entries({explorer: ':scope', figure: '
 
 
 def _boxes(lab, browser, width: int, height: int, browser_open: bool) -> dict:
-    import nbformat
-
-    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in CELLS])
-    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
     name = f"order{width}.ipynb"
-    nbformat.write(nb, lab.root / name)
+    write_notebook(lab.root / name, CELLS)
     page = browser.new_page(viewport={"width": width, "height": height})
     try:
-        page.goto(f"{lab.url}/lab/tree/{name}?reset", wait_until="domcontentloaded", timeout=120_000)
-        page.wait_for_function("window.jupyterapp && window.jupyterapp.shell.currentWidget"
-                               " && window.jupyterapp.shell.currentWidget.sessionContext.session"
-                               " && window.jupyterapp.shell.currentWidget.sessionContext.session.kernel",
-                               timeout=120_000)
-        if browser_open and page.evaluate("window.jupyterapp.shell.leftCollapsed"):
-            page.evaluate("window.jupyterapp.commands.execute('filebrowser:activate')")
-            page.wait_for_function("!window.jupyterapp.shell.leftCollapsed", timeout=30_000)
-        if not browser_open and not page.evaluate("window.jupyterapp.shell.leftCollapsed"):
-            page.evaluate("window.jupyterapp.commands.execute('application:toggle-left-area')")
-            page.wait_for_function("window.jupyterapp.shell.leftCollapsed", timeout=30_000)
-        page.evaluate("window.jupyterapp.commands.execute('notebook:run-all-cells')")
+        open_in_lab(page, lab, name, file_browser=browser_open)
         ex = page.locator(".planargeo-explorer").first
         ex.locator("svg .pg-frame").first.wait_for(state="attached", timeout=240_000)
         ex.scroll_into_view_if_needed()

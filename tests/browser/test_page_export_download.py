@@ -15,7 +15,7 @@ import xml.etree.ElementTree as ET
 import nbformat
 import pytest
 
-from .conftest import ARTIFACTS, VoilaServer
+from .conftest import ARTIFACTS, VoilaServer, open_in_lab
 
 pytestmark = pytest.mark.browser
 
@@ -85,12 +85,7 @@ def test_one_click_downloads_in_jupyterlab(lab, browser, tmp_path):
     requests: list[str] = []
     page.on("request", lambda r: requests.append(r.url))
     try:
-        page.goto(f"{lab.url}/lab/tree/export.ipynb?reset", wait_until="domcontentloaded", timeout=120_000)
-        page.wait_for_function("window.jupyterapp && window.jupyterapp.shell.currentWidget"
-                               " && window.jupyterapp.shell.currentWidget.sessionContext.session"
-                               " && window.jupyterapp.shell.currentWidget.sessionContext.session.kernel",
-                               timeout=120_000)
-        page.evaluate("window.jupyterapp.commands.execute('notebook:run-all-cells')")
+        open_in_lab(page, lab, "export.ipynb")
         _downloads(page, "jupyterlab", tmp_path)
     finally:
         page.close()

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import pytest
 
+from .conftest import open_in_lab, write_notebook
 from .test_page_explorers import check_layout
 
 pytestmark = pytest.mark.browser
@@ -77,22 +78,10 @@ def test_the_figure_stays_in_sight_in_jupyterlab_with_its_file_browser(lab, brow
     below a controls column a screen long (review H4: 1287–1787 px down)."""
     import time
 
-    import nbformat
-
-    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in LAB_CELLS])
-    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
-    nbformat.write(nb, lab.root / "layout.ipynb")
+    write_notebook(lab.root / "layout.ipynb", LAB_CELLS)
     page = browser.new_page(viewport={"width": 1400, "height": 1100})
     try:
-        page.goto(f"{lab.url}/lab/tree/layout.ipynb?reset", wait_until="domcontentloaded", timeout=120_000)
-        page.wait_for_function("window.jupyterapp && window.jupyterapp.shell.currentWidget"
-                               " && window.jupyterapp.shell.currentWidget.sessionContext.session"
-                               " && window.jupyterapp.shell.currentWidget.sessionContext.session.kernel",
-                               timeout=120_000)
-        if page.evaluate("window.jupyterapp.shell.leftCollapsed"):
-            page.evaluate("window.jupyterapp.commands.execute('filebrowser:activate')")
-        page.wait_for_function("!window.jupyterapp.shell.leftCollapsed", timeout=30_000)
-        page.evaluate("window.jupyterapp.commands.execute('notebook:run-all-cells')")
+        open_in_lab(page, lab, "layout.ipynb", file_browser=True)
         explorers = page.locator(".planargeo-explorer")
         boxes = []
         for k in range(2):

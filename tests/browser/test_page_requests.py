@@ -14,38 +14,22 @@ from __future__ import annotations
 
 import pytest
 
+from .conftest import ack, one_handle_picture, requests_sent
+
 pytestmark = pytest.mark.browser
-
-
-def _picture():
-    from planargeo.draw.picture import Picture
-
-    pic = Picture((-2, 2, -2, 2), size=(300, 300), ticks=False, margin=(0, 0, 0, 0))
-    pic.marks("P", [[0.0, 0.0]], role="twist", symbol="P", desc="a point")
-    pic.handle("P", (0.0, 0.0), symbol="P", desc="drag P")
-    return pic.to_dict()
-
-
-def _requests(page):
-    return page.evaluate("window.sent.filter((m) => m.type !== 'sync' && m.type !== 'describe')")
-
-
-def _ack(page, m):
-    page.evaluate("(m) => window.deliver(m)",
-                  {"type": "ack", "seq": m["seq"], "client": m.get("client"), "ok": True, "message": ""})
 
 
 def test_one_request_in_flight_and_the_latest_position_wins(harness_page):
     page = harness_page
     from planargeo.widgets.canvas import PictureCanvas
 
-    pic = _picture()
+    pic = one_handle_picture()
     c = PictureCanvas()
     c.picture = pic
     page.evaluate("(s) => window.openView(s)",
                   {k: v for k, v in c.get_state().items() if k in ("snapshot", "playing")})
     for m in page.evaluate("window.sent"):        # the view's own first request (a sync), answered
-        _ack(page, m)
+        ack(page, m)
     page.evaluate("window.sent.length = 0")
     box = page.locator("circle.pg-handle").first.bounding_box()
     x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
@@ -53,19 +37,19 @@ def test_one_request_in_flight_and_the_latest_position_wins(harness_page):
     page.mouse.down()
     for k in range(1, 21):
         page.mouse.move(x + 3 * k, y - 2 * k)
-    sent = _requests(page)
+    sent = requests_sent(page)
     assert [m["type"] for m in sent] == ["drag"], f"{len(sent)} requests sent while the first was unanswered"
-    _ack(page, sent[0])
-    sent = _requests(page)
+    ack(page, sent[0])
+    sent = requests_sent(page)
     assert len(sent) == 2, f"after the ack: {len(sent) - 1} requests, not 1"
     last = sent[1]
     # the pointer's last place, (60, 40) px right and up of P at the picture's 75 px per unit
     assert last["type"] == "drag" and last["id"] == "P"
     assert abs(last["x"] - 60 / 75) < 0.02 and abs(last["y"] - 40 / 75) < 0.02, last
     page.mouse.up()
-    assert len(_requests(page)) == 2, "a request sent while the second was unanswered"
-    _ack(page, last)
-    sent = _requests(page)        # the mouse let go: the release, after the drag's last request
+    assert len(requests_sent(page)) == 2, "a request sent while the second was unanswered"
+    ack(page, last)
+    sent = requests_sent(page)        # the mouse let go: the release, after the drag's last request
     assert [m["type"] for m in sent[2:]] == ["release"] and sent[2]["id"] == "P", sent[2:]
-    _ack(page, sent[2])
-    assert len(_requests(page)) == 3, "a request sent with nothing new to ask"
+    ack(page, sent[2])
+    assert len(requests_sent(page)) == 3, "a request sent with nothing new to ask"

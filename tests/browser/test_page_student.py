@@ -333,24 +333,12 @@ def test_in_a_narrow_jupyterlab_the_figure_fits_and_a_drag_lands_under_the_point
     its smallest scale and scrolls sideways inside the column (nothing cut out of reach)."""
     import time
 
-    import nbformat
+    from .conftest import ARTIFACTS, open_in_lab, write_notebook
 
-    from .conftest import ARTIFACTS
-
-    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in NARROW_CELLS])
-    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
-    nbformat.write(nb, lab.root / "narrow.ipynb")
+    write_notebook(lab.root / "narrow.ipynb", NARROW_CELLS)
     page = browser.new_page(viewport={"width": 1000, "height": 900})
     try:
-        page.goto(f"{lab.url}/lab/tree/narrow.ipynb?reset", wait_until="domcontentloaded", timeout=120_000)
-        page.wait_for_function("window.jupyterapp && window.jupyterapp.shell.currentWidget"
-                               " && window.jupyterapp.shell.currentWidget.sessionContext.session"
-                               " && window.jupyterapp.shell.currentWidget.sessionContext.session.kernel",
-                               timeout=120_000)
-        if page.evaluate("window.jupyterapp.shell.leftCollapsed"):
-            page.evaluate("window.jupyterapp.commands.execute('filebrowser:activate')")
-        page.wait_for_function("!window.jupyterapp.shell.leftCollapsed", timeout=30_000)
-        page.evaluate("window.jupyterapp.commands.execute('notebook:run-all-cells')")
+        open_in_lab(page, lab, "narrow.ipynb", file_browser=True)
         ex = page.locator(".planargeo-explorer").first
         ex.locator("svg .pg-frame").first.wait_for(state="attached", timeout=240_000)
         svg = ex.locator(".pg-canvas svg").first
