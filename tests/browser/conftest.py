@@ -124,3 +124,19 @@ def ack(page, m) -> None:
     """Acknowledge request ``m`` in the harness page, as the kernel does."""
     page.evaluate("(m) => window.deliver(m)",
                   {"type": "ack", "seq": m["seq"], "client": m.get("client"), "ok": True, "message": ""})
+
+
+def open_harness_view(page, pic: dict) -> tuple[float, float]:
+    """Open a view of ``pic`` in the harness page, answer its first request (a sync), forget what was
+    sent, and give the pixel centre of its first handle."""
+    from planargeo.widgets.canvas import PictureCanvas
+
+    c = PictureCanvas()
+    c.picture = pic
+    page.evaluate("(s) => window.openView(s)",
+                  {k: v for k, v in c.get_state().items() if k in ("snapshot", "playing")})
+    for m in page.evaluate("window.sent"):
+        ack(page, m)
+    page.evaluate("window.sent.length = 0")
+    box = page.locator("circle.pg-handle").first.bounding_box()
+    return box["x"] + box["width"] / 2, box["y"] + box["height"] / 2

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import pytest
 
-from .conftest import ack, one_handle_picture, requests_sent
+from .conftest import ack, one_handle_picture, open_harness_view, requests_sent
 
 pytestmark = pytest.mark.browser
 
@@ -35,17 +35,7 @@ def _answer_all(page, limit: int = 20):
 
 def _focused_view(page):
     """A view of the picture whose handle P has the keyboard (clicked, not moved)."""
-    from planargeo.widgets.canvas import PictureCanvas
-
-    c = PictureCanvas()
-    c.picture = one_handle_picture()
-    page.evaluate("(s) => window.openView(s)",
-                  {k: v for k, v in c.get_state().items() if k in ("snapshot", "playing")})
-    for m in page.evaluate("window.sent"):        # the view's own first request (a sync), answered
-        ack(page, m)
-    page.evaluate("window.sent.length = 0")
-    box = page.locator("circle.pg-handle").first.bounding_box()
-    page.mouse.click(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    page.mouse.click(*open_harness_view(page, one_handle_picture()))
     assert requests_sent(page) == [], "a click without a move sent a request"
 
 

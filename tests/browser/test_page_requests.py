@@ -14,25 +14,14 @@ from __future__ import annotations
 
 import pytest
 
-from .conftest import ack, one_handle_picture, requests_sent
+from .conftest import ack, one_handle_picture, open_harness_view, requests_sent
 
 pytestmark = pytest.mark.browser
 
 
 def test_one_request_in_flight_and_the_latest_position_wins(harness_page):
     page = harness_page
-    from planargeo.widgets.canvas import PictureCanvas
-
-    pic = one_handle_picture()
-    c = PictureCanvas()
-    c.picture = pic
-    page.evaluate("(s) => window.openView(s)",
-                  {k: v for k, v in c.get_state().items() if k in ("snapshot", "playing")})
-    for m in page.evaluate("window.sent"):        # the view's own first request (a sync), answered
-        ack(page, m)
-    page.evaluate("window.sent.length = 0")
-    box = page.locator("circle.pg-handle").first.bounding_box()
-    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    x, y = open_harness_view(page, one_handle_picture())
     page.mouse.move(x, y)
     page.mouse.down()
     for k in range(1, 21):
