@@ -117,9 +117,7 @@ class Contact:
 def validate_contacts(contacts, n_bodies: int) -> tuple[Contact, ...]:
     """Check ``contacts`` against a model of ``n_bodies`` bodies; return them as a tuple (the rows of ``G``, 9.49).
 
-    Parameters
-    ----------
-    {contacts n_bodies}
+    {parameters contacts n_bodies}
 
     Returns
     -------
@@ -152,9 +150,7 @@ def validate_contacts(contacts, n_bodies: int) -> tuple[Contact, ...]:
 def contact_matrix(contacts, n_bodies: int) -> np.ndarray:
     """The ``m × n`` contact matrix ``G``: row ``k`` ``+1`` at body ``a``, ``-1`` at ``b`` (Definition 42, 9.49).
 
-    Parameters
-    ----------
-    {contacts n_bodies}
+    {parameters contacts n_bodies}
 
     Returns
     -------
@@ -185,9 +181,7 @@ def _pose_of(pose, i):
 def world_point(pose, body: int, point) -> np.ndarray:
     """World coordinates of ``point`` given in ``body``'s frame (``body = -1``: world; the pose of 2.1-2.9).
 
-    Parameters
-    ----------
-    {pose}
+    {parameters pose}
     body : int
         Body index, or ``-1`` for the world frame.
     point : array_like, shape (2,)
@@ -235,9 +229,7 @@ def z_of(contact: Contact, pose) -> np.ndarray:
     Pin: the rotation ``[y, -x, 1]`` about the world contact point (on body a); slider: the
     translation along the world sliding direction; weld: an empty (3, 0) array.
 
-    Parameters
-    ----------
-    {contact pose}
+    {parameters contact pose}
 
     Returns
     -------
@@ -274,9 +266,7 @@ def B_of(contact: Contact, pose) -> np.ndarray:
     slider normal is the direction turned by **-90°** (a joint's by +90°, 5.63), as printed in
     9.87, so that ``ξ`` compares directly with 9.90.
 
-    Parameters
-    ----------
-    {contact pose}
+    {parameters contact pose}
 
     Returns
     -------
@@ -314,9 +304,7 @@ def residual(contact: Contact, pose) -> np.ndarray:
     and the relative-angle error; weld: the point difference and the angle error (wrapped to
     ``(-π, π]``).
 
-    Parameters
-    ----------
-    {contact pose}
+    {parameters contact pose}
 
     Returns
     -------
@@ -373,9 +361,7 @@ def contact_bias(v_a, v_b) -> np.ndarray:
 def stacked_contact_spaces(contacts, pose):
     """Block-diagonal ``z = {{z_k}}`` (3m×Σk) and ``B = {{B_k}}`` (3m×Σ(3-k)) for all contacts (thesis 9.54, 9.60).
 
-    Parameters
-    ----------
-    {contacts pose}
+    {parameters contacts pose}
 
     Returns
     -------

@@ -53,9 +53,7 @@ class StruckBody:
     The inertia is checked and inverted here, once (``I⁻¹`` free, ``s (sᵀIs)⁻¹ sᵀ`` held, 6.93);
     :meth:`response` and :meth:`apparent_mass` then only multiply.
 
-    Parameters
-    ----------
-    {I}
+    {parameters I}
     {s}
 
     Attributes
@@ -160,9 +158,7 @@ class StruckBody:
 def impulse_response(I, impulse, s=None) -> tuple[np.ndarray, np.ndarray]:
     """Velocity change and reaction impulse of a body at rest struck by ``impulse`` (thesis 6.63, 6.93, 6.38).
 
-    Parameters
-    ----------
-    {I}
+    {parameters I}
     impulse : array_like, shape (3,)
         The blow's impulse wrench ``ĵ = [Jx, Jy, Jz]`` (N·s), on the line of the blow.
     {s}
@@ -201,9 +197,7 @@ def impulse_response(I, impulse, s=None) -> tuple[np.ndarray, np.ndarray]:
 def apparent_mass(I, line, s=None) -> float:
     """Apparent mass ``1 / (uᵀ M u)`` of a body at rest along a force line (thesis figure 3.3, 6.93).
 
-    Parameters
-    ----------
-    {I}
+    {parameters I}
     line : array_like, shape (3,)
         The line (any non-zero multiple of a force wrench on it).
     {s}

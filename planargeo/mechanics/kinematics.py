@@ -58,9 +58,7 @@ def cross_motion(v: np.ndarray, u: np.ndarray) -> np.ndarray:
 def cross_force(v: np.ndarray, f: np.ndarray) -> np.ndarray:
     """``v ×* f = -(v×)^T f`` for a twist ``v`` and a wrench ``f`` carried by it (thesis 3.8, 3.11).
 
-    Parameters
-    ----------
-    {v}
+    {parameters v}
     f : numpy.ndarray, shape (..., 3)
         Wrench.
 
@@ -104,9 +102,7 @@ def _as_state(x, name: str, nq: int, finite: bool = True) -> np.ndarray:
 def check_state(model: Model, q, qd=None, tau=None, f_ext=None, *, qdd=None, finite: bool = True):
     """Validate and broadcast a state (every method of the package validates its state here).
 
-    Parameters
-    ----------
-    {model q qd}
+    {parameters model q qd}
     tau, qdd : array_like, shape (..., nq), optional
         Joint forces/torques (N or N·m) and accelerations; None is zero.
     {f_ext}
@@ -230,9 +226,7 @@ def _axes(kind: str, ox, oy, phi, q, c, s):
 def kinematics(model: Model, q, qd=None, f_ext=None) -> Data:
     """World-frame kinematics and bias terms of every body (thesis 3.6 step 2, 3.31-3.34).
 
-    Parameters
-    ----------
-    {model q qd f_ext}
+    {parameters model q qd f_ext}
 
     Returns
     -------

@@ -414,9 +414,7 @@ class Model:
     def with_gravity(self, gravity) -> "Model":
         """A copy with another gravity vector.
 
-        Parameters
-        ----------
-        {gravity}
+        {parameters gravity}
 
         Returns
         -------

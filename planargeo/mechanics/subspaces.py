@@ -93,9 +93,7 @@ def joint_scale(A, s, point):
     ``s_P = X s`` with ``X = [[1, 0, -y], [0, 1, x], [0, 0, 1]]`` (thesis 4.8), ``A_P = X⁻ᵀ A X⁻¹``
     (1.68, 4.58); where squares would leave the float range the norm is taken scaled (scale invariant).
 
-    Parameters
-    ----------
-    {A s}
+    {parameters A s}
     point : array_like, shape (..., 2)
         The joint's point ``P`` (m).
 
@@ -494,9 +492,7 @@ def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
 def active_force(s, f) -> np.ndarray:
     """Active (joint) force ``Q = sᵀ f`` (thesis 6.61a, 6.51): ``Qᵀq̇`` is the power of ``f``.
 
-    Parameters
-    ----------
-    {s f}
+    {parameters s f}
 
     Returns
     -------
@@ -564,9 +560,7 @@ def active_acceleration(T, a) -> np.ndarray:
 def reactive_acceleration(R, a) -> np.ndarray:
     """Reactive-acceleration components ``γ = Rᵀ a`` (thesis 6.62a, 6.60); zero along ``s``.
 
-    Parameters
-    ----------
-    {R a}
+    {parameters R a}
 
     Returns
     -------
@@ -587,9 +581,7 @@ def reactive_acceleration(R, a) -> np.ndarray:
 def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     """The complementary wrench projectors ``(T sᵀ, R Uᵀ)``, summing to 1 (thesis 6.75, 6.38, 6.61).
 
-    Parameters
-    ----------
-    {A s R}
+    {parameters A s R}
 
     Returns
     -------
@@ -613,9 +605,7 @@ def wrench_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
     """The twist projectors ``(s Tᵀ, U Rᵀ)``: the transposes of :func:`wrench_projectors` (dual of thesis 6.75).
 
-    Parameters
-    ----------
-    {A s R}
+    {parameters A s R}
 
     Returns
     -------
@@ -644,9 +634,7 @@ def twist_projectors(A, s, R) -> tuple[np.ndarray, np.ndarray]:
 def joint_space_inertia(I, s) -> np.ndarray:
     """Joint-space inertia ``sᵀ I s`` (thesis 6.67, 6.74c): ``Q = (sᵀIs) ψ``; ``I`` may be singular.
 
-    Parameters
-    ----------
-    {I s}
+    {parameters I s}
 
     Returns
     -------
@@ -668,9 +656,7 @@ def joint_space_inertia(I, s) -> np.ndarray:
 def reaction_space_inverse_inertia(I, R) -> np.ndarray:
     """Reaction-space inverse inertia ``Rᵀ I⁻¹ R`` (thesis 6.71): ``γ = (RᵀI⁻¹R) μ``; ``I`` definite.
 
-    Parameters
-    ----------
-    {I R}
+    {parameters I R}
 
     Returns
     -------
@@ -691,9 +677,7 @@ def reaction_space_inverse_inertia(I, R) -> np.ndarray:
 def inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     """Split an inertia as ``I = T sᵀ I + R Uᵀ I`` (thesis 6.76, 6.97); errors as for :class:`Decomposition`.
 
-    Parameters
-    ----------
-    {I s R}
+    {parameters I s R}
 
     Returns
     -------
@@ -716,9 +700,7 @@ def inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
 def inverse_inertia_decomposition(I, s, R) -> tuple[np.ndarray, np.ndarray]:
     """Split an inverse inertia as ``I⁻¹ = s Tᵀ I⁻¹ + U Rᵀ I⁻¹`` (thesis 6.79–6.81, 6.93).
 
-    Parameters
-    ----------
-    {I s R}
+    {parameters I s R}
 
     Returns
     -------
@@ -749,13 +731,7 @@ def effective_mobility(I, s, *, what: str | None = None) -> np.ndarray:
     A body at rest loaded by the wrench ``f`` accelerates by ``a = s Tᵀ I⁻¹ f``
     (``f`` applied to the body: the thesis's minus sign, ``docs/errata.md``).
 
-    Parameters
-    ----------
-    {I s what}
-
-    Returns
-    -------
-    numpy.ndarray, shape (..., 3, 3)
+    {parameters I s what returns_3x3}
 
     Examples
     --------
@@ -773,9 +749,7 @@ def effective_mobility(I, s, *, what: str | None = None) -> np.ndarray:
 def effective_base_inertia(I, R) -> np.ndarray:
     """Effective inertia of the joint base ``R Uᵀ I = R (RᵀI⁻¹R)⁻¹ Rᵀ`` (6.97, 6.76); ``I`` definite.
 
-    Parameters
-    ----------
-    {I R}
+    {parameters I R}
 
     Returns
     -------
@@ -891,9 +865,7 @@ class Decomposition:
     def from_joint(cls, A, joint, *, name: str = "A") -> "Decomposition":
         """``Decomposition(A, joint.s, joint.R)`` of a :class:`~planargeo.mechanics.joints.JointSpace` (thesis 6.1).
 
-        Parameters
-        ----------
-        {A}
+        {parameters A}
         joint : JointSpace
             The joint.
         name : str, optional

@@ -77,9 +77,7 @@ def closure_residual(model: Model, q, contacts=None) -> np.ndarray:
 
     ``φ`` resolves the relative pose of the contact frames along ``B`` (9.59-9.60): ``φ̇ = Bᵀ G v``.
 
-    Parameters
-    ----------
-    {model q contacts}
+    {parameters model q contacts}
 
     Returns
     -------
@@ -104,9 +102,7 @@ def closure_residual(model: Model, q, contacts=None) -> np.ndarray:
 def closure_jacobian(model: Model, q, contacts=None) -> np.ndarray:
     """Closure Jacobian ``J_c = B^T G J`` (``nc × nq``): ``φ̇ = J_c q̇`` on the manifold (thesis 9.54, 9.60).
 
-    Parameters
-    ----------
-    {model q contacts}
+    {parameters model q contacts}
 
     Returns
     -------
@@ -146,9 +142,7 @@ def close_loops(model: Model, q, contacts=None, *, fixed=(), tol: float = 1e-12,
 
     The positions half of :func:`project_state`.
 
-    Parameters
-    ----------
-    {model q}
+    {parameters model q}
     {contacts fixed}
     {tol}
 
@@ -193,9 +187,7 @@ def project_state(model: Model, q, qd, contacts=None, *, fixed=(), tol: float = 
     Positions by Gauss-Newton ``q ← q - J_c^+ φ(q)`` until ``max |φ| < tol``; velocities onto
     ``J_c q̇ = 0`` with the kinetic-energy metric ``H`` (as 9.56-9.58 project contact velocities).
 
-    Parameters
-    ----------
-    {model q}
+    {parameters model q}
     qd : array_like (nq,)
         Joint velocities.
     {contacts fixed}
@@ -236,9 +228,7 @@ def baumgarte(model: Model, contacts=None, alpha: float = 5.0, beta: float = 5.0
     The loop algorithm's accelerations give ``φ̈ = 0`` (contact condition 9.68-9.69); the hook adds
     ``-H^{-1} J_c^T (J_c H^{-1} J_c^T)^{-1} (2α J_c q̇ + β² φ)``.
 
-    Parameters
-    ----------
-    {model contacts}
+    {parameters model contacts}
     alpha, beta : float
         Damping and stiffness rates (1/s), non-negative.
     {fixed}
