@@ -23,6 +23,7 @@ from planargeo.draw.layout import fit_box, shape_points
 from planargeo.draw.picture import PX_PER_PT, Picture, _align, _text_part, plain_text
 from planargeo.draw.picture import _color as _role_color, _dash as _role_dash
 from planargeo.draw.pictures.kit import foot_on_line, force as force_arrow, seg_distance
+from planargeo.draw.splits import wrench_parts
 from planargeo.draw.style import COLORS, LINEWIDTHS
 from planargeo.errors import InputError
 from planargeo.geometry._docs import entries
@@ -36,6 +37,7 @@ __all__ = ["panel", "fit_box", "show", "label", "segment", "dimension", "body_wo
 _ENTRIES = {
     **ENTRIES,
     "distinct": "Raises\n------\nInputError\n    ``p`` and ``q`` coincide or are not finite.",
+    "pq": "p, q : (float, float)\n    End points (finite).",
     "model": "model : planargeo.mechanics.model.Model\n    The model.\n"
              "data : planargeo.mechanics.model.Data\n    Its kinematics at the state to draw.",
     "pose": "pose : array_like (N, 3)\n    The bodies' poses.",
@@ -63,13 +65,11 @@ def _xy(v, name: str) -> np.ndarray:
     return a
 
 
-def _element(pic: Picture, id: str, role: str, parts: list, *, color: str, width: float,
-             symbol: str = "", desc: str = "", fill=None, alpha: float = 1.0, z: int = 3) -> dict:
-    """Add an element of the given ``parts`` (through :meth:`Picture.path`); the element."""
-    el = added(pic.path, id, np.zeros((2, 2)), role=role, symbol=symbol, desc=desc, color=color, width=width,
-               fill=fill, alpha=alpha, z=z)
-    el["parts"] = parts
-    return el
+def _beside(pic: Picture, m, n, text: str, gap: float) -> dict:
+    """A text part at ``m``, ``gap`` pixels off along the data direction ``n``, aligned away."""
+    u = n * (pic.kx, pic.ky)
+    u = u / math.hypot(*u)
+    return _text_part(m[0], m[1], text, gap * u[0], gap * u[1], *_align(u))
 
 
 def _circle(c, r, n: int = 36) -> np.ndarray:
@@ -333,15 +333,13 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
     npx = n * (pic.kx, pic.ky)
     npx = npx / math.hypot(*npx)
     half = np.array([npx[0] / pic.kx, npx[1] / pic.ky]) * tick / 2     # half a tick, data units
-    m = p2 + at * (q2 - p2)
-    gap = 4.0 * PX_PER_PT
     parts = [{"p": "path", "xy": np.array([p2, q2]), "closed": False},
              {"p": "path", "xy": np.array([p2 - half, p2 + half]), "closed": False},
              {"p": "path", "xy": np.array([q2 - half, q2 + half]), "closed": False},
-             _text_part(m[0], m[1], text, gap * npx[0], gap * npx[1], *_align(npx))]
+             _beside(pic, p2 + at * (q2 - p2), n, text, 4.0 * PX_PER_PT)]
     if symbol is None:
         symbol = str(text).split(" = ", 1)[0]
-    return _element(pic, id, "construct", parts, symbol=symbol, desc=desc or text,
+    return pic._add(id, "construct", symbol, desc or text, parts,
                     color=color or COLORS["construct"], width=0.7 * PX_PER_PT, z=2)
 
 
@@ -381,8 +379,7 @@ def arrow(pic: Picture, id: str, p, q, *, role: str = "wrench", color=None, labe
     parts = [{"p": "arrow", "x": float(p[0]), "y": float(p[1]), "dx": float(d[0]), "dy": float(d[1])}]
     if label:
         parts.append(_text_part(q[0], q[1], label, offset[0] * PX_PER_PT, offset[1] * PX_PER_PT))
-    return _element(pic, id, role, parts, symbol=symbol, desc=desc, color=_role_color(role, color),
-                    width=LINEWIDTHS.get(role, 1.3) * PX_PER_PT, z=z)
+    return pic._add(id, role, symbol, desc, parts, color=_role_color(role, color), z=z)
 
 
 # --------------------------------------------------------------------------- shapes
@@ -501,10 +498,9 @@ def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alp
         shape = transform_shape(shape, pose)
     outer, holes = _polygons(shape)
     parts = [{"p": "path", "xy": r, "closed": True} for r in outer]
-    el = _element(pic, id, "body", parts, symbol=symbol,
-                  desc=desc or body_words(label), color=edgecolor,
-                  width=LINEWIDTHS["body"] * PX_PER_PT, fill=color or COLORS["body"],
-                  alpha=float(alpha), z=z)
+    edge = _role_color("body", edgecolor)
+    el = pic._add(id, "body", symbol, desc or body_words(label), parts, color=edge,
+                  fill=color or COLORS["body"], alpha=float(alpha), z=z)
     if label is not None and str(label):
         if hasattr(shape, "representative_point"):
             c = shape.representative_point()
@@ -513,8 +509,8 @@ def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alp
             cx, cy = outer[0].mean(axis=0)
         el["parts"].append(_text_part(cx, cy, str(label), 0.0, 0.0, "center", "center"))
     if holes:
-        _element(pic, f"{id}:holes", "body", [{"p": "path", "xy": h, "closed": True} for h in holes],
-                 color=edgecolor, width=LINEWIDTHS["body"] * PX_PER_PT, fill="white", z=z)
+        holes = [{"p": "path", "xy": h, "closed": True} for h in holes]
+        pic._add(f"{id}:holes", "body", "", "", holes, color=edge, fill="white", z=z)
     if com is not None:
         _com(pic, f"{id}:com", com, desc=f"centre of mass of {desc or body_words(label)}")
     return el
@@ -621,8 +617,8 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.8, angle: float = 0.0,
     for t in np.linspace(0, 1, int(n)):
         s = a + (b - a) * t
         parts.append({"p": "path", "xy": np.array([s, s - (e + nrm) * depth]), "closed": False})
-    return _element(as_picture(pic), id, "ground", parts, symbol="ground", desc=desc, color=COLORS["ground"],
-                    width=1.0 * PX_PER_PT, z=z)
+    return as_picture(pic)._add(id, "ground", "ground", desc, parts, color=COLORS["ground"],
+                                width=PX_PER_PT, z=z)
 
 
 @documented
@@ -731,7 +727,8 @@ def frame(pic: Picture, id: str, origin, *, angle: float = 0.0, length: float = 
         parts += _arrow_parts(pic, o, tip, head=8.0)
         if lab:
             parts.append(_text_part(tip[0], tip[1], lab, 3 * PX_PER_PT, 3 * PX_PER_PT))
-    return _element(pic, id, "construct", parts, desc=desc, color=color, width=0.9 * PX_PER_PT, z=4)
+    return pic._add(id, "construct", "", desc, parts, color=_role_color("construct", color),
+                    width=0.9 * PX_PER_PT, z=4)
 
 
 @documented
@@ -773,8 +770,8 @@ def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: 
         t = np.linspace(k * np.pi / 2, (k + 1) * np.pi / 2, 10)
         xy_ = np.vstack([c, np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])])
         parts.append({"p": "path", "xy": xy_, "closed": True})
-    return _element(pic, id, "body", parts, symbol=symbol, desc=desc, color="black",
-                    width=0.6 * PX_PER_PT, fill="black", z=z)
+    return pic._add(id, "body", symbol, desc, parts, color="black", width=0.6 * PX_PER_PT,
+                    fill="black", z=z)
 
 
 _com, _ground = com, ground      # for the functions with keywords of these names
@@ -1092,14 +1089,10 @@ def split_arrows(s, R, A, f, *, scale: float = 1.0, anchor, avoid=None, clearanc
     """
     from shapely.geometry import LineString
 
-    from planargeo.mechanics.subspaces import Decomposition
-
     anchor = _xy(anchor, "anchor")
     f = np.asarray(f, float).reshape(3)
-    dec = Decomposition(np.asarray(A, float), np.asarray(s, float), np.asarray(R, float))
-    Q, mu = dec.split_wrench(f)
-    active = dec.T @ Q
-    react = dec.R @ mu
+    v = wrench_parts(s, R, A, f)
+    Q, mu, active, react = v["Q"], v["mu"], v["f1"], v["f2"]
     arrows = {}
     blocked = avoid
     for k, w in (("f", f), ("active", active), ("reaction", react)):
@@ -1160,6 +1153,8 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
     >>> bool(np.allclose(TQ + Rmu, [0.0, 1.0, 2.0])), sorted(out)
     (True, ['active', 'f', 'reaction'])
     """
+    from shapely.geometry import Point as SPoint
+
     as_picture(pic)
     if anchor is None:
         anchor = view_centre(pic)
@@ -1172,8 +1167,7 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
                         "active part T Q of the joint force (6.38)"),
              "reaction": (react, "reaction", [2.0 * PX_PER_PT, 2.0 * PX_PER_PT], f"$R\\mu_{{{name}}}$",
                           "reaction part R μ of the joint force (6.38)")}
-    out = {}
-    placed = []
+    out, placed = {}, []
     segs = {k: v for k, v in arrows.items() if v is not None}
     for k, (w, role, dash, text, meaning) in lines.items():
         text = plain_text(text)
@@ -1201,15 +1195,10 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
             c = mid + side * n * 0.25 * L
             dist = [seg_distance(c, [o]) for o in others] + [float(np.hypot(*(c - p))) for p in placed]
             if avoid is not None:
-                from shapely.geometry import Point as SPoint
-
                 dist.append(float(avoid.distance(SPoint(*c))))
             return min(dist) if dist else 0.0
 
         side = 1.0 if label_room(1.0) >= label_room(-1.0) else -1.0
         placed.append(mid + side * n * 0.25 * L)
-        u = side * n * (pic.kx, pic.ky)
-        u = u / math.hypot(*u)
-        g = gap * PX_PER_PT
-        out[k]["parts"].append(_text_part(mid[0], mid[1], text, g * u[0], g * u[1], *_align(u)))
+        out[k]["parts"].append(_beside(pic, mid, side * n, text, gap * PX_PER_PT))
     return out, split
