@@ -110,9 +110,7 @@ def polar_exterior(pic: Picture, C, p, *, names=("$P$", "$L = CP$"), L_anchor=No
                    prefix: str = "") -> dict:
     """Polar of an exterior point (thesis 5.36, Fig. 5.2): tangents from ``p``; ``L`` joins their contacts.
 
-    Parameters
-    ----------
-    {pic}
+    {parameters pic}
     C : array_like (3, 3)
         A real conic.
     p : array_like (3,)
@@ -278,9 +276,7 @@ def percussion(pic: Picture, I, a, *, names=("$a$", "$f = Ia$"), dims: bool = Tr
 
     With ``dims``: the lever from ``a`` through the centre of mass, the distances ``d``, ``ρ²/d``.
 
-    Parameters
-    ----------
-    {pic}
+    {parameters pic}
     I : array_like (3, 3)
         The inertia.
     a : array_like (3,)
@@ -414,9 +410,7 @@ def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
 
     ``vᵀ f = 0`` and ``pᵀ a = 0``: neither the force nor the acceleration does work.
 
-    Parameters
-    ----------
-    {pic}
+    {parameters pic}
     v : array_like (3,)
         The velocity twist.
     I : array_like (3, 3)

@@ -111,20 +111,14 @@ def panel(ax, points, *, margin=None, keep=None, min_span=None, fit_height=False
           hmax=4.6) -> Picture:
     """A Picture the size of the axes ``ax`` (pixels at 100 dpi), its view fitted to ``points``.
 
-    The view of :func:`planargeo.draw.layout.fit_box`; the axes are not changed.
-
     Parameters
     ----------
     ax : matplotlib.axes.Axes
         The panel the picture will be drawn on.
-    points : array_like (n, 2)
-        Points to keep in view (far outliers excepted).
+    points, keep, min_span
+        As :func:`fit_box`.
     margin : float, optional
-        Margin, a fraction of the larger extent (default 0.25; with ``fit_height`` 0.08).
-    keep : array_like (m, 2), optional
-        Points always in view (the mechanism).
-    min_span : float, optional
-        Smallest width and height of the view before the margin.
+        As :func:`fit_box` (default 0.25; with ``fit_height`` 0.08).
     fit_height : bool
         Set the figure's height to the points' aspect first.
     hmin, hmax : float
@@ -174,9 +168,7 @@ def panel(ax, points, *, margin=None, keep=None, min_span=None, fit_height=False
 def show(pic: Picture, ax=None) -> list:
     """Draw the picture on the axes ``ax`` (:func:`planargeo.draw.render.draw_picture`).
 
-    Parameters
-    ----------
-    {pic}
+    {parameters pic}
     ax : matplotlib.axes.Axes, optional
         The axes :func:`panel` sized the picture to (default: the current axes).
 
@@ -197,9 +189,7 @@ def label(pic: Picture, id: str, xy, text: str, *, offset=(5, 5), ha: str = "lef
           fixed: bool = False) -> dict:
     """A text at the data point ``xy``, moved by ``offset`` points (placed, unless ``fixed``).
 
-    Parameters
-    ----------
-    {pic id}
+    {parameters pic id}
     xy : (float, float)
         The point the text refers to.
     text : str
@@ -243,11 +233,7 @@ def segment(pic: Picture, id: str, p, q, *, role: str = "construct", label=None,
             width=None, dash=None, symbol: str = "", desc: str = "", z: int = 2) -> dict:
     """A finite segment ``p q`` in a role's style (colour, width, dash), optionally labelled.
 
-    Parameters
-    ----------
-    {pic id}
-    p, q : (float, float)
-        End points (finite).
+    {parameters pic id pq}
     role : str
         Style role (default ``"construct"``: thin, grey, dashed).
     label : str, optional
@@ -287,11 +273,7 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
               color=None, tick: float = 8.0, symbol: str | None = None, desc: str = "") -> dict:
     """A dimension line ``p q`` with end ticks, shifted ``offset`` to the left of ``p → q``, labelled.
 
-    Parameters
-    ----------
-    {pic id}
-    p, q : (float, float)
-        Distinct end points.
+    {parameters pic id pq}
     text : str
         The dimension.
     offset : float
@@ -348,12 +330,7 @@ def arrow(pic: Picture, id: str, p, q, *, role: str = "wrench", color=None, labe
           offset=(5, 5), symbol: str = "", desc: str = "", z: int = 5) -> dict:
     """An arrow from ``p`` to ``q`` (data points): a solid shaft, its head at ``q``.
 
-    Parameters
-    ----------
-    {pic id}
-    p, q : (float, float)
-        Tail and tip (distinct).
-    {role color}
+    {parameters pic id pq role color}
     label : str, optional
         Text at the tip, moved by ``offset`` points (y up).
     offset : (float, float)
@@ -460,9 +437,7 @@ def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alp
          edgecolor: str = BODY_EDGE, z: int = 1, com=None, symbol: str = "", desc: str = "") -> dict:
     """A body: a filled polygon, holes white (``id + ":holes"``), centre of mass (``id + ":com"``).
 
-    Parameters
-    ----------
-    {pic id}
+    {parameters pic id}
     shape : shapely Polygon or MultiPolygon, or array_like (n, 2)
         The body; in world coordinates, or in its body frame when ``pose`` is given.
     pose : (float, float, float), optional
@@ -520,11 +495,7 @@ def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alp
 def link(pic: Picture, id: str, p, q, *, width: float = 0.25, **kw) -> dict:
     """A default rounded link between two points (:func:`link_polygon`, drawn by :func:`body`).
 
-    Parameters
-    ----------
-    {pic id}
-    p, q : (float, float)
-        The link's end points.
+    {parameters pic id pq}
     width : float
         Width of the link (data units).
     **kw
@@ -547,9 +518,7 @@ def pin(pic: Picture, id: str, xy, *, radius: float = 0.06, z: int = 6, symbol: 
         desc: str = "a revolute joint") -> dict:
     """A revolute joint: a white disc with a dark rim, ``radius`` data units.
 
-    Parameters
-    ----------
-    {pic id}
+    {parameters pic id}
     xy : (float, float)
         The joint.
     radius : float
@@ -576,9 +545,7 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.8, angle: float = 0.0,
            n: int = 7, z: int = 1, desc: str = "the ground") -> dict:
     """A ground line ``width`` long centred on ``xy``, at ``angle``, hatched on its right-hand side.
 
-    Parameters
-    ----------
-    {pic id}
+    {parameters pic id}
     xy : (float, float)
         Middle of the ground line.
     width : float
@@ -626,9 +593,7 @@ def slider(pic: Picture, id: str, xy, direction, *, size=(0.35, 0.2), track: flo
            z: int = 3, desc: str = "a prismatic joint") -> dict:
     """A prismatic joint: a block on a hatched track (``id + ":track"``) along ``direction``.
 
-    Parameters
-    ----------
-    {pic id}
+    {parameters pic id}
     xy : (float, float)
         Centre of the block.
     direction : (float, float)
@@ -690,9 +655,7 @@ def frame(pic: Picture, id: str, origin, *, angle: float = 0.0, length: float = 
           labels=("x", "y"), color: str = DARK, desc: str = "a body frame") -> dict:
     """Coordinate axes arrows at ``origin``, the first at ``angle``, ``length`` data units long.
 
-    Parameters
-    ----------
-    {pic id}
+    {parameters pic id}
     origin : (float, float)
         Where the axes start.
     angle : float
@@ -736,9 +699,7 @@ def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: 
         desc: str = "centre of mass") -> dict:
     """The centre-of-mass mark: a white disc (``id + ":disc"``), black 1st and 3rd quarters (``id``).
 
-    Parameters
-    ----------
-    {pic id}
+    {parameters pic id}
     xy : (float, float)
         The centre of mass.
     radius : float
@@ -786,9 +747,7 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
     Element ids (``prefix`` first): ``body i``, ``com i``, ``joint i``, ``ground i``,
     ``slider i``, ``contact k`` (numbers from 1).
 
-    Parameters
-    ----------
-    {pic}
+    {parameters pic}
     {model prefix width}
     labels : bool
         Label the bodies (their names, or their numbers), below their centroids.
@@ -931,9 +890,7 @@ def contact(pic: Picture, id: str, contact, pose, *, body_shape=None, size: floa
     A pin is a white square, a weld a dark one; a slider is the two guide walls of
     :func:`slider_guide` (``id + ":wall 1"``, ``":wall 2"``) and a dot on body a (``id``).
 
-    Parameters
-    ----------
-    {pic id}
+    {parameters pic id}
     contact : planargeo.mechanics.contacts.Contact
         The contact.
     {pose}
@@ -1016,9 +973,7 @@ def model_shapes(model, data, *, width: float = 0.18) -> list:
     A body's ``shape`` moved by its pose, else a rounded link from its joint to each child's
     (a tip body: through its centre of mass to twice as far).
 
-    Parameters
-    ----------
-    {model width}
+    {parameters model width}
 
     Returns
     -------
@@ -1120,9 +1075,7 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
     Three lines with arrows (:func:`split_arrows`): ``id + ":f"``, ``":active"`` (dashed) and
     ``":reaction"`` (dotted), each labelled on the side of its arrow with the most room.
 
-    Parameters
-    ----------
-    {pic}
+    {parameters pic}
     id : str
         Stem of the three elements' ids.
     s, R, A, f

@@ -103,9 +103,7 @@ def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, an
     decoupled ``U = A⁻¹R(RᵀA⁻¹R)⁻¹`` (6.45, ``RᵀU = 1``, all on ``T``) or, with
     ``reactive="inverse"``, the plain ``A⁻¹R_k`` (Fig. 6.1).
 
-    Parameters
-    ----------
-    {pic sRA}
+    {parameters pic sRA}
     reactive : {"U", "inverse"}
         Which accelerations to mark for the reactions.
     labels : dict, optional
@@ -182,9 +180,7 @@ def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, an
 def twist_parts(s, R, A, a) -> dict:
     """The split of an acceleration by a joint: ``a = sψ + Uγ`` and the forces ``f_k = A a_k`` (6.44, 6.76).
 
-    Parameters
-    ----------
-    {sRA}
+    {parameters sRA}
     a : array_like (3,)
         The acceleration to split.
 
@@ -316,9 +312,7 @@ def twist_split(pic: Picture, s, R, A, a, *, parts=(1, 2), names=None, aims=None
     about the joint, ``a₂ = Uγ`` lies on ``T``; their forces ``f_k = A a_k`` (6.76):
     ``f₁ = T sᵀA a`` a multiple of ``T``, ``f₂ = R UᵀA a`` through the joint.
 
-    Parameters
-    ----------
-    {pic sRA}
+    {parameters pic sRA}
     a : array_like (3,)
         The acceleration to split.
     parts : sequence of {1, 2}
@@ -410,9 +404,7 @@ def projective_step(pic: Picture, s, R, A, a_prev, a, kappa, *,
     ``Tᵢ`` (6.36) picks the joint's part of an acceleration, as 6.44: ``ψᵢ = Tᵢᵀaᵢ``,
     ``ψᵢ₋₁ = Tᵢᵀaᵢ₋₁``, and ``q̈ᵢ = ψᵢ − Tᵢᵀ(aᵢ₋₁ + κᵢ)`` (6.100, 6.110).
 
-    Parameters
-    ----------
-    {pic sRA}
+    {parameters pic sRA}
     a_prev, a : array_like (3,)
         Accelerations of the parent and of the body.
     kappa : array_like (3,)

@@ -178,9 +178,7 @@ def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), le
     a rotation plus a translation ``u`` is a rotation about ``Q + ρn``, ``ρ = u/ω`` (4.16).
     The sum is drawn as a larger diamond, its label across the lever line from the terms'.
 
-    Parameters
-    ----------
-    {pic}
+    {parameters pic}
     v1, v2 : array_like (3,)
         The twists ``[vx, vy, ω]`` to add.
     labels : (str, str, str)
@@ -252,9 +250,7 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
     (4.43); a force and a couple: ``f₃`` is parallel to ``f₁`` at ``ρ = τ/F`` (4.46).  A couple
     is the glyph in an upper corner; the sum has a heavier line.
 
-    Parameters
-    ----------
-    {pic}
+    {parameters pic}
     f1, f2 : array_like (3,)
         The wrenches ``[fx, fy, τ]`` (lines).
     labels : (str, str, str)
@@ -337,9 +333,7 @@ def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot{q}_i$",
     ``vᵢ = vᵢ₋₁ + sᵢq̇ᵢ`` is a twist sum (:func:`twist_sum`): the pole of ``vᵢ`` lies on the
     line from the pole of ``vᵢ₋₁`` to the joint, at ``βk`` from it, ``β = q̇ᵢ/(q̇ᵢ + ωᵢ₋₁)`` (4.48).
 
-    Parameters
-    ----------
-    {pic}
+    {parameters pic}
     v_prev : array_like (3,)
         The previous body's twist ``vᵢ₋₁``.
     s : array_like (3,)
@@ -398,9 +392,7 @@ def acceleration_step(pic, a_prev, v_prev, s, qd, qdd, *,
     ``aᵢ = aᵢ₋₁ + sᵢq̈ᵢ + κᵢ`` with the bias ``κᵢ = vᵢ × sᵢq̇ᵢ`` (a translation).  The joint's
     part ``sᵢq̈ᵢ + κᵢ`` lies ``|κᵢ|/q̈ᵢ`` off the joint (4.54), and ``aᵢ`` on its line to ``aᵢ₋₁``.
 
-    Parameters
-    ----------
-    {pic}
+    {parameters pic}
     a_prev, v_prev : array_like (3,)
         The previous body's acceleration and velocity twists (``vᵢ × sᵢ = vᵢ₋₁ × sᵢ``).
     s : array_like (3,)
@@ -471,9 +463,7 @@ def newton_euler(pic, I, a, v, *, scale=None,
     ``I a`` is the axis of percussion of ``a`` (5.64), ``p = v ×* I v`` the centripetal force
     through the centre of mass toward the pole of ``v`` (no gravity), ``f_net`` their sum.
 
-    Parameters
-    ----------
-    {pic}
+    {parameters pic}
     I : array_like (3, 3)
         The body's inertia.
     a, v : array_like (3,)
