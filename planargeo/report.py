@@ -376,12 +376,10 @@ def _shape(v: Any) -> tuple[int, ...] | None:
 def _fmt_value(v: Any, indent: int) -> list[str]:
     """Lines for one value: scalars and vectors on one line, matrices as aligned rows, wider ones as their shape."""
     shape = _shape(v)
-    if shape is not None and len(shape) == 2 and shape[1] > MAX_TABLE_COLUMNS:
-        return [f"{shape[0]}×{shape[1]} matrix, too wide for the table (--json gives its values)"]
+    if shape is not None and len(shape) >= 2 and shape[-1] > MAX_TABLE_COLUMNS:
+        what = f"{shape[0]}×{shape[1]} matrix" if len(shape) == 2 else f"{' × '.join(map(str, shape))} array"
+        return [f"{what}, too wide for the table (--json gives its values)"]
     if shape is not None and len(shape) >= 3:
-        if shape[-1] > MAX_TABLE_COLUMNS:
-            dims = " × ".join(map(str, shape))
-            return [f"{dims} array, too wide for the table (--json gives its values)"]
         lines = [f"shape {shape}"]
         width = len(str(shape[0] - 1)) + 2
         for i, sub in enumerate(v):

@@ -214,11 +214,7 @@ def out_folder(out: str | None, force: bool = False) -> Path:
 
 
 def _move_in(stage: Path, out: Path, force: bool) -> tuple[list[str], list[str]]:
-    """Move the suite's files from ``stage`` into ``out``, rewriting the manifest; ``(written, left)``.
-
-    A file of ``out`` is replaced only if it still holds what ``planargeo bench`` wrote (or with
-    ``force``); the others are ``left``.
-    """
+    """Move the files into ``out`` over ones still as written (or ``force``): ``written, left``."""
     try:
         new = {p.relative_to(stage).as_posix(): p.read_bytes()          # the regular files staged
                for p in sorted(stage.rglob("*")) if p.is_file() and not p.is_symlink()}

@@ -6,9 +6,6 @@ Held by a joint ``s``, ``Δv = s (sᵀIs)⁻¹ sᵀ ĵ`` (6.93, applied-wrench s
 with ``ĵ_R = −R Uᵀ ĵ`` (6.38, 6.61b), zero for a blow on the pivot's axis of percussion, through
 the centre of percussion ``l = d + ρ²/d`` (5.67).  The apparent mass along a line (figure 3.3) is
 ``1 / (uᵀ M u)``, ``u`` the unit force on the line and ``M`` the body's (effective) mobility.
-
-:class:`StruckBody` checks and inverts the inertia once for any number of blows (a blow dragged
-over the same body); :func:`impulse_response` and :func:`apparent_mass` are one blow's shorthands.
 """
 from __future__ import annotations
 

@@ -198,11 +198,7 @@ def joint_axes(kind: str, ox, oy, phi, qi):
 
 
 def _axes(kind: str, ox, oy, phi, q, c, s):
-    """:func:`joint_axes` with the columns as ``(s0, s1, s2)`` triples, of floats or arrays alike.
-
-    ``q`` holds the joint's coordinates, ``c, s`` the cosine and sine of ``phi`` (each caller
-    computes them its own way: NumPy for batches, :mod:`math` for one state).
-    """
+    """:func:`joint_axes` on floats or arrays, columns as triples; ``c, s``: cos, sin of ``phi``."""
     if kind == "revolute":
         return [(oy, -ox, 1.0)], (ox, oy, phi + q[0])
     if kind == "prismatic":
@@ -313,11 +309,7 @@ def _body_terms(m, J, cx, cy, gx, gy):
 
 
 def _data(model: Model, q, qd, f_ext, pose, com, origin, S, I, v, kappa, g) -> Data:
-    """The :class:`Data` of :func:`kinematics`, with ``g`` plus ``f_ext`` and ``p = -(v×)ᵀ I v - g`` (3.11, 3.34).
-
-    Raises :class:`~planargeo.errors.NumericOverflowError` if a field is not finite (finite
-    input out of the float range, e.g. speeds of 1e160: ``p`` squares them).
-    """
+    """:func:`kinematics`'s :class:`Data`: ``g + f_ext``, ``p = -(v×)ᵀ I v - g`` (3.11, 3.34)."""
     if f_ext is not None:
         g = g + f_ext
     with np.errstate(over="ignore", invalid="ignore"):

@@ -174,11 +174,7 @@ def _find_cycle(ps) -> tuple[int, ...]:
 
 
 def _cycle_error(ps, cycle, message: str | None = None) -> CyclicTopologyError:
-    """The :class:`~planargeo.errors.CyclicTopologyError` of a parent list with a ``cycle``.
-
-    ``1 - C`` (thesis 9.12) is exactly singular (``eᵀ (1 - C) = 0`` for the cycle's indicator
-    ``e``, checked in exact 0/1 arithmetic): ``cond = inf``.  ``message`` replaces the default text.
-    """
+    """The :class:`CyclicTopologyError` of parents ``ps`` with a ``cycle`` (or ``message``)."""
     ps = [int(p) for p in ps]
     n = len(ps)
     C = np.zeros((n, n))
@@ -187,7 +183,7 @@ def _cycle_error(ps, cycle, message: str | None = None) -> CyclicTopologyError:
             C[i, p] = 1.0
     e = np.zeros(n)
     e[list(cycle)] = 1.0
-    singular = not np.any(e @ (np.eye(n) - C))        # exact: small integers
+    singular = not np.any(e @ (np.eye(n) - C))        # eᵀ (1 - C) = 0 (9.12), exact: small integers
     cond = math.inf if singular else float(np.linalg.cond(np.eye(n) - C))
     path = " -> ".join(str(b) for b in (*cycle, cycle[0]))
     if message is None:

@@ -225,16 +225,12 @@ def _space(x, name: str) -> np.ndarray:
     return a
 
 
-def _inertia(A, name: str) -> np.ndarray:
-    """An inertia argument: (..., 3, 3), finite, symmetric, positive semi-definite (named ``name``)."""
-    return check_positive_semidefinite(as_array(A, name, (3, 3)), name)
-
-
-def _inertia_eig(A, name: str):
-    """:func:`_inertia` and the ``(largest, smallest)`` |eigenvalue| of ``A`` (for :func:`_solve_A`), one eigen-solve."""
+def _inertia(A, name: str, eig: bool = False):
+    """An inertia argument: (..., 3, 3), finite, symmetric, positive semi-definite (named ``name``);
+    with ``eig``, also its ``(largest, smallest)`` |eigenvalue| (for :func:`_solve_A`)."""
     a, w = check_positive_semidefinite(as_array(A, name, (3, 3)), name, eig=True)
     w = np.abs(w)
-    return a, (w.max(axis=-1), w.min(axis=-1))
+    return (a, (w.max(axis=-1), w.min(axis=-1))) if eig else a
 
 
 def _tr(x: np.ndarray) -> np.ndarray:
@@ -299,16 +295,12 @@ def _solve_A(A: np.ndarray, B: np.ndarray, name: str, eig=None) -> np.ndarray:
 
 
 def _solve(M: np.ndarray, b: np.ndarray, what: str = "a recursion matrix") -> np.ndarray:
-    """``M⁻¹ b`` for one small ``M`` already checked non-singular.
-
-    LAPACK may still find it exactly singular (round-off, e.g. masses over 14 decades in 7.38):
-    that is a SingularConfigurationError with ``cond = inf``, not numpy's LinAlgError.
-    """
+    """``M⁻¹ b`` for one small ``M`` checked non-singular (LAPACK may still find it singular)."""
     if M.shape == (1, 1):
         return b / M[0, 0]                  # the LU solve's numbers, without its overhead
     try:
         return np.linalg.solve(M, b)
-    except np.linalg.LinAlgError:
+    except np.linalg.LinAlgError:        # round-off, e.g. masses over 14 decades in 7.38
         raise SingularConfigurationError(f"{what} is singular to working precision", math.inf) from None
 
 
@@ -478,7 +470,7 @@ def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
     """
     R = _space(R, "R")
     if s is None:
-        A, eig = _inertia_eig(A, "A")
+        A, eig = _inertia(A, "A", eig=True)
         return _U(A, R, eig=eig, what=_what(what, None))
     s = _space(s, "s")
     _check_complementary(s, R)
@@ -667,7 +659,7 @@ def reaction_space_inverse_inertia(I, R) -> np.ndarray:
     >>> reaction_space_inverse_inertia(np.diag([2.0, 2.0, 1.0]), [[1.0], [0.0], [0.0]])
     array([[0.5]])
     """
-    I, eig = _inertia_eig(I, "I")
+    I, eig = _inertia(I, "I", eig=True)
     R = _space(R, "R")
     return _tr(R) @ _solve_A(I, R, "I", eig)
 
@@ -763,7 +755,7 @@ def effective_base_inertia(I, R) -> np.ndarray:
            [0., 0., 0.],
            [0., 0., 4.]])
     """
-    I, eig = _inertia_eig(I, "I")
+    I, eig = _inertia(I, "I", eig=True)
     R = _space(R, "R")
     if R.shape[-1] == 0:                                # no reaction (a plane joint): nothing is transmitted
         return np.zeros(np.broadcast_shapes(I.shape, R.shape[:-2] + (3, 3)))
@@ -852,7 +844,7 @@ class Decomposition:
     __slots__ = ("A", "s", "R", "T", "U")
 
     def __init__(self, A, s, R, *, name: str = "A"):
-        A, eig = _inertia_eig(A, name)
+        A, eig = _inertia(A, name, eig=True)
         s = _space(s, "s")
         R = _space(R, "R")
         _check_complementary(s, R)

@@ -531,15 +531,13 @@ def _eval_budget(max_evals, method: str, t_end: float, dt) -> int | None:
 
 
 def _eval_check(nfev: int, k: int, t: float, t_end: float, max_evals: int | None, method: str) -> str:
-    """The message of a run stopped by ``max_evals`` after ``nfev`` evaluations ("" to go on); raises when the
-    evaluations so far extrapolate past ``10 max_evals`` at the 10th step, or past ``max_evals`` at the
-    :data:`_PROBE`-th (fail fast: the first steps of an adaptive run are the smallest)."""
+    """The message of a run stopped by ``max_evals`` ("" to go on); raises on bad extrapolation."""
     if max_evals is None:
         return ""
     if nfev >= max_evals:
         return (f"stopped at t = {t:.6g}: max_evals = {max_evals} evaluations of the dynamics done; pass a "
                 "larger max_evals for a deliberate long run")
-    factor = 10 if k == 10 else 1 if k == _PROBE else 0
+    factor = 10 if k == 10 else 1 if k == _PROBE else 0     # fail fast: first steps are smallest
     if factor and t > 0 and t_end / (factor * max_evals) > t / nfev:       # overflow-free
         raise SizeLimitError(f"{method} would need {_about(t_end, t, nfev)} evaluations of the dynamics to "
                              f"reach t_end = {t_end:g} (extrapolated from the first {k} steps, {nfev} evaluations), "
@@ -572,8 +570,7 @@ def _about(t_end: float, t: float, n: int) -> str:
 
 
 def _step_budget(k: int, t: float, t_end: float, max_steps: int, method: str) -> str:
-    """The message of a run stopped after ``k`` steps at ``t`` by ``max_steps`` ("" to go on); raises when
-    the first :data:`_PROBE` steps extrapolate past ten times ``max_steps`` (fail fast)."""
+    """The message of a run stopped by ``max_steps`` ("" to go on); raises on bad extrapolation."""
     if k >= max_steps:
         return (f"stopped at t = {t:.6g}: max_steps = {max_steps} steps taken; pass a larger max_steps "
                 "for a deliberate long run")
