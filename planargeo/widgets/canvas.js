@@ -92,6 +92,7 @@ function render({ model, el }) {
   const client = Math.random().toString(36).slice(2);
   const root = document.createElement("div");
   root.className = "pg-canvas";
+  root.style.overscrollBehaviorX = "contain";   // a sideways scroll ends at its edge
   const bar = document.createElement("div");
   bar.className = "pg-bar";
   const reset = document.createElement("button");
@@ -716,8 +717,12 @@ function render({ model, el }) {
     pan = null;
   });
   svg.addEventListener("wheel", (ev) => {
-    if (!box) return;
+    // a sideways wheel (or Shift + wheel) scrolls a figure wider than its column and never
+    // zooms; it never reaches the page either (there it would be a "back" gesture)
+    const sideways = ev.shiftKey || Math.abs(ev.deltaX) > Math.abs(ev.deltaY);
+    if (sideways && root.scrollWidth > root.clientWidth) return;
     ev.preventDefault();
+    if (!box || sideways) return;
     const [px, py] = localPoint(ev);
     const [x, y] = dataOf(px, py);
     const f = Math.exp(Math.sign(ev.deltaY) * 0.15);

@@ -10,7 +10,8 @@ horizontal line through it, slowly on purpose (0.15 s per request), and refuses
   requests, and the last position wins;
 * a refused position snaps the handle back to the last accepted one, with the reason, which
   stays until the next picture;
-* the wheel zooms at once and the kernel redraws the new view; *reset view* returns;
+* the wheel zooms at once and the kernel redraws the new view (a sideways wheel does not zoom);
+  *reset view* returns;
 * hovering an element shows its symbol and description (asked of the kernel);
 * Play: while ``playing`` is on the page asks for frames by itself (``tick``), one at a
   time, and stops when it is off;
@@ -154,6 +155,11 @@ def _exercise(page, where: str) -> None:
     # 4. zoom at once, then the kernel's picture of the new view; reset view returns
     ticks_before = page.locator(".pg-axes text").all_text_contents()
     svg.hover()
+    n_before = n_requests()
+    page.mouse.wheel(-400, 0)            # sideways: scrolls the page, never zooms
+    time.sleep(0.3)
+    assert n_requests() == n_before, f"{where}: a sideways wheel asked for a new view"
+    assert page.locator(".pg-axes text").all_text_contents() == ticks_before
     page.mouse.wheel(0, -400)
     _wait_for(lambda: page.locator(".pg-axes text").all_text_contents() != ticks_before, 20,
               f"{where}: the zoomed view redrawn by the kernel")
