@@ -261,12 +261,6 @@ def generate(out, only=None, *, benchmarks=None, force: bool = False, say=_say) 
     return files
 
 
-def _managed(folder: Path) -> set[str]:
-    if not folder.is_dir():
-        return set()
-    return {p.name for p in folder.iterdir() if p.suffix == ".svg" or p.name in ("README.md", MANIFEST)}
-
-
 def check(out) -> list[str]:
     """Problems of ``out`` against a fresh render (empty list: up to date).
 
@@ -282,7 +276,8 @@ def check(out) -> list[str]:
     out = Path(out)
     with tempfile.TemporaryDirectory() as tmp:
         fresh = generate(tmp, benchmarks=out / "benchmarks")
-    have = _managed(out)
+    have = ({p.name for p in out.iterdir() if p.suffix == ".svg" or p.name in ("README.md", MANIFEST)}
+            if out.is_dir() else set())
     problems = []
     for fname, data in sorted(fresh.items()):
         if fname not in have:

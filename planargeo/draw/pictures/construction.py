@@ -45,13 +45,6 @@ _RATE_UNIT = {"twist": "rad/s", "accel": "rad/s²"}
 _SYMBOLS = {r"$f^{net}$": "fⁿᵉᵗ"}
 
 
-def _meaning(kind: str, e) -> tuple[str, str]:
-    """(symbol, meaning with equation) of the element ``e`` of construction ``kind``."""
-    text = MEANINGS.get(kind, {}).get(e.name, e.name)
-    sym, meaning = text if isinstance(text, tuple) else ("", text)
-    return (_symbol(e.label) if e.label else sym), meaning
-
-
 def _symbol(label: str) -> str:
     """The thesis symbol of a mathtext label (superscript words the Unicode table lacks, by hand)."""
     return _SYMBOLS.get(label) or plain_text(label)
@@ -164,9 +157,11 @@ def construction_picture(c, *, step: int, earlier: str = "faded", view, size=(56
             continue
         faded = earlier == "faded" and i != shown - 1
         for e in c.steps[i].elements:
-            sym, meaning = _meaning(c.kind, e)
-            desc = f"{meaning}: {_value(e)}" if _value(e) else meaning
             label = _symbol(e.label) if e.label else ""
+            text = MEANINGS.get(c.kind, {}).get(e.name, e.name)
+            sym, meaning = text if isinstance(text, tuple) else ("", text)
+            sym = label or sym
+            desc = f"{meaning}: {_value(e)}" if _value(e) else meaning
             v = np.asarray(e.value, float)
             if e.kind == "point":
                 glyph = e.role in ("twist", "accel")

@@ -282,18 +282,13 @@ def pin_heads(forces, spots, obstacles) -> np.ndarray:
     return pts[np.arange(len(forces)), far]
 
 
-def pin_force(pic: Picture, sym: str, x, w, *, words: str, about: str, tiny: float, spots, obstacles,
-              head=None, **kw):
-    """A mechanism's pin force ``x`` (``point``, ``wrench``, ``moment``) drawn as ``w`` with :func:`force`.
-
-    Described as ``words, |sym| = … N`` with its moment about its ``about`` (above ``tiny``),
-    labelled at the point ``spots`` along its line from the pin clearest of ``obstacles``
-    (:func:`pin_heads`; ``head``: that point already found).
-    """
+def pin_force(pic: Picture, sym: str, x, w, *, words: str, about: str, tiny: float, head, **kw):
+    """A mechanism's pin force ``x`` (``point``, ``wrench``, ``moment``) drawn as ``w`` with :func:`force`,
+    described as ``words, |sym| = … N`` with its moment about its ``about`` (above ``tiny``),
+    labelled at ``head`` (:func:`pin_heads`)."""
     f = np.asarray(x.wrench, float)
     F = math.hypot(f[0], f[1])
     moment = f", moment {num(x.moment, 3, tiny)} N·m about its {about}" if abs(x.moment) > tiny else ""
-    head = pin_heads([x], spots, obstacles)[0] if head is None else head
     return force(pic, sym, w, anchor=x.point, symbol=sym, dash=[4.0, 3.0], label_xy=head,
                  desc=f"{words}, |{sym}| = {num(F, 4, tiny)} N{moment}", **kw)
 

@@ -134,10 +134,9 @@ def slider_crank_picture(pose, *, r: float, t: float, q, reactions: dict, v, a, 
         heads = pin_heads([reactions[r[0]] for r in REACTIONS], (0.9, -0.9, 1.2, -1.2), obstacles)
         for (key, sym, meaning, eq, at, color), head in zip(REACTIONS, heads):
             x = reactions[key]
-            role = "reaction" if key.startswith("f") else "momentum"
             foot = pin_force(pic, sym, x, x.wrench, words=f"{meaning} ({eq}): {at}", about="joint",
-                             tiny=1e-9 * max(fmax, 1.0), spots=None, obstacles=None, head=head,
-                             scale=scale, role=role, color=color, reach=1.2, width=1.0 * PX_PER_PT, z=8)
+                             tiny=1e-9 * max(fmax, 1.0), head=head, scale=scale, color=color, reach=1.2,
+                             role="reaction" if key.startswith("f") else "momentum", width=1.0 * PX_PER_PT, z=8)
             if foot is not None and math.hypot(*(foot - np.asarray(x.point))) > 1e-9:
                 pic.path(f"{sym} lever", [x.point, foot], role="construct", symbol=f"{sym} arm", color=color,
                          width=0.8 * PX_PER_PT, dash=[1.0, 2.0], z=8,

@@ -43,16 +43,6 @@ def _bodies(a: int, b: int) -> str:
     return f"body {a}, of 1 kg" if a == b else f"bodies {a}…{b}, of 1 kg each"
 
 
-def _pins(k: int) -> str:
-    """The ``k`` pins between the bodies, in words."""
-    return ("the joint between the two bodies: a pin L = 1 m from the ground" if k == 1 else
-            f"the joints between the bodies: {k} pins, L = 1 m apart")
-
-
-def _acc(a) -> str:
-    return f"({num(a[0])} m/s², {num(a[1])} m/s², {num(a[2])} rad/s²)"
-
-
 @builder
 def splitting_picture(st: dict, *, view, focus: str = "all", centres: bool = True,
                       size=(760, 520)) -> Picture:
@@ -84,8 +74,9 @@ def splitting_picture(st: dict, *, view, focus: str = "all", centres: bool = Tru
     pic.marks("split", [pts[i]], role="body", color=CUT, size=15.0, symbol="split",
               desc=f"the split joint i+1 = {i + 1} (7.4): at {pair(pts[i])} m", z=2)
     label_at(pic, pts[i], "split", gap=9.0)
-    pic.marks("pins", pts[1:-1], role="body", color="#000000", size=5.0, symbol="joints",
-              desc=_pins(n - 1), z=4)
+    pic.marks("pins", pts[1:-1], role="body", color="#000000", size=5.0, symbol="joints", z=4,
+              desc="the joint between the two bodies: a pin L = 1 m from the ground" if n == 2 else
+              f"the joints between the bodies: {n - 1} pins, L = 1 m apart")
     f = np.asarray(st["f_split"], float)
     fs = f"f{subscript(i + 1)}"
     labelled_line(pic, "f", f, fs, role="reaction", symbol=fs, anchor=pts[i], ahead=0.3,
@@ -103,13 +94,14 @@ def splitting_picture(st: dict, *, view, focus: str = "all", centres: bool = Tru
         if b == hide:
             continue
         a = np.array(st["a"][b], dtype=float)
+        ax, ay, az = (num(v) for v in a)
         if poles[b] is None:
             a[2] = 0.0                                     # a translation: its pole is the ideal point
         side = "the constrained chain" if b < i else "the free-floating chain"
         pic.point(f"a{b + 1}", a, role="accel", color=LOWER if b < i else UPPER, glyph=False, size=6.0,
                   symbol=f"a{subscript(b + 1)}",
-                  desc=f"acceleration of body {b + 1} ({side}) as its pole (4.6, 7.54): {_acc(st['a'][b])}, "
-                       f"pole {where(a)}")
+                  desc=f"acceleration of body {b + 1} ({side}) as its pole (4.6, 7.54): "
+                       f"({ax} m/s², {ay} m/s², {az} rad/s²), pole {where(a)}")
         if (b < i and low < 1) or (b >= i and up < 1):
             pic.elements[-1]["opacity"] = FADED
             for part in pic.elements[-1]["parts"]:

@@ -122,8 +122,8 @@ def trees_picture(pose, tips, *, reactions, contacts=(), v, a, overlays: dict, f
             # overflows when the largest force is subnormal; labelled clearest of the links
             wn = w / F * (F / fmax) if F else w
             pin_force(pic, sym, x, wn, words=f"{meaning} ({eq}): {at}", about="pin",
-                      tiny=1e-9 * max(fmax, 1e-300), spots=None, obstacles=None, head=head,
-                      scale=FORCE_LENGTH, role="reaction" if sym[0] == "f" else "momentum", color=color, reach=0.45,
+                      tiny=1e-9 * max(fmax, 1e-300), head=head, scale=FORCE_LENGTH,
+                      role="reaction" if sym[0] == "f" else "momentum", color=color, reach=0.45,
                       width=(2.4 if focus == sym else 1.0) * PX_PER_PT, z=9 if focus == sym else 8,
                       label=None if on else "", opacity=1.0 if on else FADED)
     pole_overlays(pic, v, a, overlays, [f"body {i + 1}" for i in range(n)])

@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 
 from planargeo.draw.picture import PX_PER_PT
-from planargeo.draw.pictures.common import label_line, label_toward
+from planargeo.draw.pictures.common import label_toward, labelled_line
 from planargeo.draw.polars import (interior_construction, line_conic_points, percussion, polar_exterior,
                                    polar_interior, power, power_values)
 from planargeo.draw.sketch import _arrow_parts, body, label, link_polygon, panel, segment, show
@@ -49,10 +49,9 @@ def _coords(ax, alternative: bool):
     foot = rL * np.array([np.cos(lamL), np.sin(lamL)])
     segment(pic, "r_P", [0, 0], Pxy, symbol="r", desc=f"distance r of P from the origin (5.4): {rP:g}")
     segment(pic, "r_L", [0, 0], foot, symbol="r", desc=f"distance r of L from the origin (5.14): {rL:g}")
-    pic.line("L", L, role="wrench", arrow=False, label="", symbol="L",
-             desc=f"the line L at distance r = {rL:g} from the origin, unit normal n at "
-                  f"{np.rad2deg(lamL):.0f}° (5.14): L = [r; −n]")
-    label_line(pic, "L", "L", anchor=[2.5, -1.0], side=-1.0)
+    labelled_line(pic, "L", L, "L", role="wrench", arrow=False, symbol="L", anchor=[2.5, -1.0], side=-1.0,
+                  desc=f"the line L at distance r = {rL:g} from the origin, unit normal n at "
+                       f"{np.rad2deg(lamL):.0f}° (5.14): L = [r; −n]")
     pic.point("P", P, role="twist", glyph=False, symbol="P",
               desc=f"the point P at distance r = {rP:g} from the origin, direction n at "
                    f"{np.rad2deg(lamP):.0f}° (5.4): P = [1; r n]")
@@ -105,9 +104,9 @@ def fig5_2(ax):
     q = max(line_conic_points(C, ray), key=lambda X: to_xy(X) @ [np.cos(th), np.sin(th)])
     assert abs(q @ C @ q) < 1e-9 * np.abs(C).max() * (q @ q)
     qxy = to_xy(q)
-    pic.line("M", polar(C, q), role="construct", color=COLORS["accel"], arrow=False, label="", symbol="M = CQ",
-             desc="the polar M = C Q of a point Q on C: its tangent there (5.38–5.39)")
-    label_line(pic, "M", "M = CQ", anchor=qxy + [0.9, -0.2], side=-1.0)    # below M, right of Q
+    labelled_line(pic, "M", polar(C, q), "M = CQ", role="construct", color=COLORS["accel"], arrow=False,
+                  symbol="M = CQ", anchor=qxy + [0.9, -0.2], side=-1.0,    # below M, right of Q
+                  desc="the polar M = C Q of a point Q on C: its tangent there (5.38–5.39)")
     pic.point("Q", q, role="accel", glyph=False, symbol="Q",
               desc=f"a point Q on the conic C (5.38): at ({qxy[0]:.3g}, {qxy[1]:.3g})")
     label_toward(pic.elements[-1], (-1.0, -1.0), 8.0)
@@ -153,12 +152,12 @@ def fig5_4(ax):
     what = ("the chord through Q₂ and Q₃", "the tangent at Q₂ (through Q₁)", "the tangent at Q₃ (through Q₁)")
     sub = "₁₂₃"
     for k, Q in enumerate((Q1, Q2, Q3)):
-        pic.line(f"M{k + 1}", polar(C, Q), role="construct", arrow=False, label="", symbol=f"M{sub[k]}",
-                 desc=f"the polar M{sub[k]} = C Q{sub[k]} (5.43): {what[k]}")
-        label_line(pic, f"M{k + 1}", f"M{sub[k]}", anchor=anchors[k], side=-1.0 if k == 2 else 1.0)
-    pic.line("L", polar(C, P), role="wrench", arrow=False, label="", symbol="L = CP",
-             desc="the polar L = C P (5.36), decomposed on the Mᵢ with the same uᵢ (5.43, 5.46)")
-    label_line(pic, "L", "L = CP", anchor=[1.0, -1.2], side=-1.0)
+        labelled_line(pic, f"M{k + 1}", polar(C, Q), f"M{sub[k]}", role="construct", arrow=False,
+                      symbol=f"M{sub[k]}", anchor=anchors[k], side=-1.0 if k == 2 else 1.0,
+                      desc=f"the polar M{sub[k]} = C Q{sub[k]} (5.43): {what[k]}")
+    labelled_line(pic, "L", polar(C, P), "L = CP", role="wrench", arrow=False, symbol="L = CP",
+                  anchor=[1.0, -1.2], side=-1.0,
+                  desc="the polar L = C P (5.36), decomposed on the Mᵢ with the same uᵢ (5.43, 5.46)")
     for k, (Q, xy) in enumerate(zip((Q1, Q2, Q3), (q1, q2, q3))):
         pic.point(f"Q{k + 1}", Q, role="twist", glyph=False, symbol=f"Q{sub[k]}",
                   desc=f"base point Q{sub[k]} (5.42): at ({xy[0]:.3g}, {xy[1]:.3g}), u{sub[k]} = {uu[k]:.2f}")

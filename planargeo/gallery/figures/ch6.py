@@ -4,7 +4,6 @@ from __future__ import annotations
 import numpy as np
 from shapely.geometry import Point
 
-from planargeo.algorithms.rnea import newton_euler
 from planargeo.draw.layout import shape_points
 from planargeo.draw.pictures._words import num, pair
 from planargeo.draw.pictures.kit import aim_label, force as force_arrow, label_at
@@ -12,7 +11,7 @@ from planargeo.draw.sketch import body, com, link_polygon, model, model_shapes, 
 from planargeo.draw.splits import (decomposition, projective_step, twist_parts, twist_split,
                                    wrench_parts, wrench_split)
 from planargeo.gallery.figures import register
-from planargeo.gallery.figures.ch4 import Q47, QD47, QDD47, _chain3
+from planargeo.gallery.figures.ch4 import QDD47, chain47_state
 from planargeo.geometry.projective import from_xy, join, to_xy
 from planargeo.mechanics.joints import revolute
 from planargeo.mechanics.subspaces import Decomposition
@@ -171,8 +170,7 @@ def fig6_5(ax):
     """Fig. 6.5 — projective kinematics (6.98–6.101): ψ_i = T_iᵀa_i and ψ_{i−1} = T_iᵀa_{i−1} are
     the absolute accelerations along joint i, q̈_i = ψ_i − T_iᵀ(a_{i−1} + κ_i); T_i from the body
     inertia of link 2 (RNEA state). Drawn by splits.projective_step."""
-    m = _chain3()
-    w = newton_euler(m, Q47, QD47, QDD47)
+    m, w = chain47_state()
     i = 1
     P = np.vstack([shape_points(*model_shapes(m, w)), to_xy(w.a[i - 1]), to_xy(w.a[i])])
     lo = P.min(axis=0)
