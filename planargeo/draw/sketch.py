@@ -72,9 +72,18 @@ def _beside(pic: Picture, m, n, text: str, gap: float) -> dict:
     return _text_part(m[0], m[1], text, gap * u[0], gap * u[1], *_align(u))
 
 
-def _circle(c, r, n: int = 36) -> np.ndarray:
-    t = np.linspace(0.0, 2 * np.pi, n, endpoint=False)
+def _arc(c, r, t) -> np.ndarray:
     return np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])
+
+
+def _disc(pic: Picture, id: str, xy, radius, *, color: str, width: float, **kw) -> tuple:
+    """A white disc of ``radius`` at ``xy`` (checked), its rim ``width`` points: its centre, radius."""
+    c = _xy(xy, "xy")
+    r = number(radius, "radius", positive=True)
+    rim = _arc(c, r, np.linspace(0.0, 2 * np.pi, 36, endpoint=False))
+    as_picture(pic).path(id, rim, role="body", closed=True, fill="white", color=color,
+                         width=width * PX_PER_PT, **kw)
+    return c, r
 
 
 def body_words(name=None, number=None) -> str:
@@ -360,13 +369,11 @@ def arrow(pic: Picture, id: str, p, q, *, role: str = "wrench", color=None, labe
 
 
 # --------------------------------------------------------------------------- shapes
+@documented
 def link_polygon(p, q, width: float = 0.25):
-    """A rounded link (stadium) between Euclidean points ``p`` and ``q`` as a shapely polygon.
+    """A rounded link (stadium) from ``p`` to ``q`` (a disc if they coincide) as a shapely polygon.
 
-    Parameters
-    ----------
-    p, q : (float, float)
-        The link's end points (a single point gives a disc).
+    {parameters pq}
     width : float
         Width of the link (the diameter of its rounded ends).
 
@@ -534,10 +541,8 @@ def pin(pic: Picture, id: str, xy, *, radius: float = 0.06, z: int = 6, symbol: 
     >>> bool(np.allclose(np.hypot(xy[:, 0] - 0.5, xy[:, 1]), 0.1))
     True
     """
-    c = _xy(xy, "xy")
-    r = number(radius, "radius", positive=True)
-    return added(as_picture(pic).path, id, _circle(c, r), role="body", symbol=symbol, desc=desc, closed=True,
-                 fill="white", color=DARK, width=1.0 * PX_PER_PT, z=z)
+    _disc(pic, id, xy, radius, color=DARK, width=1.0, symbol=symbol, desc=desc, z=z)
+    return pic.elements[-1]
 
 
 @documented
@@ -722,15 +727,10 @@ def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: 
     >>> bool(q1[:, 0].min() >= 0 and q1[:, 1].min() >= 0), round(float(np.hypot(*q1[1])), 9)
     (True, 0.1)
     """
-    c = _xy(xy, "xy")
-    r = number(radius, "radius", positive=True)
-    as_picture(pic).path(f"{id}:disc", _circle(c, r), role="body", symbol=symbol, desc=desc, closed=True,
-                         fill="white", color="black", width=0.6 * PX_PER_PT, z=z)
-    parts = []
-    for k in (0, 2):
-        t = np.linspace(k * np.pi / 2, (k + 1) * np.pi / 2, 10)
-        xy_ = np.vstack([c, np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])])
-        parts.append({"p": "path", "xy": xy_, "closed": True})
+    c, r = _disc(pic, f"{id}:disc", xy, radius, color="black", width=0.6, symbol=symbol, desc=desc,
+                 z=z)
+    quarters = (np.linspace(k * np.pi / 2, (k + 1) * np.pi / 2, 10) for k in (0, 2))
+    parts = [{"p": "path", "xy": np.vstack([c, _arc(c, r, t)]), "closed": True} for t in quarters]
     return pic._add(id, "body", symbol, desc, parts, color="black", width=0.6 * PX_PER_PT,
                     fill="black", z=z)
 
