@@ -25,6 +25,15 @@ __all__ = ["StruckBody", "impulse_response", "apparent_mass", "centre_of_percuss
 _documented = entries({
     "I": "I : array_like, shape (3, 3)\n    The body's inertia at the origin (definite for a free body).",
     "s": "s : array_like, shape (3, k) or (3,), optional\n    The support's motion space; None: a free body.",
+    "impulse": "impulse : array_like, shape (3,)\n"
+               "    The blow's impulse wrench ``ĵ = [Jx, Jy, Jz]`` (N·s).",
+    "line": "line : array_like, shape (3,)\n"
+            "    The line (any non-zero multiple of a force wrench on it).",
+    "dv": "Returns\n-------\ndv, reaction : ndarray, shape (3,)\n    The velocity twist just after "
+          "the blow; the support's reaction impulse ``I Δv − ĵ``.",
+    "mass": "Returns\n-------\nfloat\n    The impulse per unit velocity change along the line "
+            "(kg); ``inf`` through a pivot.\n\nRaises\n------\nDegenerateGeometryError\n"
+            "    ``line`` is the line at infinity (a couple).",
 })
 
 
@@ -50,8 +59,7 @@ class StruckBody:
     The inertia is checked and inverted here, once (``I⁻¹`` free, ``s (sᵀIs)⁻¹ sᵀ`` held, 6.93);
     :meth:`response` and :meth:`apparent_mass` then only multiply.
 
-    {parameters I}
-    {s}
+    {parameters I s}
 
     Attributes
     ----------
@@ -88,17 +96,11 @@ class StruckBody:
     def __repr__(self) -> str:
         return f"StruckBody({'held' if self.held else 'free'}, I={self.I.tolist()})"
 
+    @_documented
     def response(self, impulse) -> tuple[np.ndarray, np.ndarray]:
         """Velocity change and reaction impulse after the blow ``impulse`` (:func:`impulse_response`).
 
-        Parameters
-        ----------
-        impulse : array_like, shape (3,)
-            The blow's impulse wrench ``ĵ`` (N·s).
-
-        Returns
-        -------
-        dv, reaction : ndarray, shape (3,)
+        {parameters impulse dv}
 
         Raises
         ------
@@ -124,23 +126,11 @@ class StruckBody:
                                        f"precision (impulse {tuple(map(float, j))} too large for this inertia)")
         return dv + 0.0, reaction + 0.0
 
+    @_documented
     def apparent_mass(self, line) -> float:
         """Apparent mass ``1 / (uᵀ M u)`` along a force line (:func:`apparent_mass`).
 
-        Parameters
-        ----------
-        line : array_like, shape (3,)
-            The line (any non-zero multiple of a force wrench on it).
-
-        Returns
-        -------
-        float
-            kg; ``inf`` through a pivot.
-
-        Raises
-        ------
-        DegenerateGeometryError
-            ``line`` is the line at infinity (a couple).
+        {parameters line mass}
         """
         u = _unit_force(line)
         M = self.M
@@ -155,15 +145,7 @@ class StruckBody:
 def impulse_response(I, impulse, s=None) -> tuple[np.ndarray, np.ndarray]:
     """Velocity change and reaction impulse of a body at rest struck by ``impulse`` (thesis 6.63, 6.93, 6.38).
 
-    {parameters I}
-    impulse : array_like, shape (3,)
-        The blow's impulse wrench ``ĵ = [Jx, Jy, Jz]`` (N·s), on the line of the blow.
-    {s}
-
-    Returns
-    -------
-    dv, reaction : ndarray, shape (3,)
-        The velocity twist just after the blow; the support's reaction impulse ``I Δv − ĵ``.
+    {parameters I impulse s dv}
 
     Raises
     ------
@@ -194,20 +176,7 @@ def impulse_response(I, impulse, s=None) -> tuple[np.ndarray, np.ndarray]:
 def apparent_mass(I, line, s=None) -> float:
     """Apparent mass ``1 / (uᵀ M u)`` of a body at rest along a force line (thesis figure 3.3, 6.93).
 
-    {parameters I}
-    line : array_like, shape (3,)
-        The line (any non-zero multiple of a force wrench on it).
-    {s}
-
-    Returns
-    -------
-    float
-        The impulse per unit velocity change along the line (kg); ``inf`` through a pivot.
-
-    Raises
-    ------
-    DegenerateGeometryError
-        ``line`` is the line at infinity (a couple).
+    {parameters I line s mass}
 
     See Also
     --------

@@ -142,9 +142,7 @@ def close_loops(model: Model, q, contacts=None, *, fixed=(), tol: float = 1e-12,
 
     The positions half of :func:`project_state`.
 
-    {parameters model q}
-    {contacts fixed}
-    {tol}
+    {parameters model q contacts fixed tol}
 
     Returns
     -------
@@ -190,8 +188,7 @@ def project_state(model: Model, q, qd, contacts=None, *, fixed=(), tol: float = 
     {parameters model q}
     qd : array_like (nq,)
         Joint velocities.
-    {contacts fixed}
-    {tol}
+    {contacts fixed tol}
 
     Returns
     -------
