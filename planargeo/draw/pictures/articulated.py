@@ -1,10 +1,8 @@
 """The articulated-inertia explorer's picture: a chain, its inertias as conics, axes, a chart.
 
-Thesis 7.1–7.3, 10.2.2–10.2.3.
-
-Rigid inertias ``Iᵢ`` and articulated ones ``Aᵢ`` (7.7a) are drawn as conics, the focused
-body's bold; the acceleration pole ``a``, its axes of percussion ``Aₖa``, ``Iₖa`` (5.64–5.68)
-and its polar; on the right a chart of ``Aₖ`` against the recursion steps (10.2.2).
+Thesis 7.1–7.3, 10.2.2–10.2.3: rigid inertias ``Iᵢ`` and articulated ones ``Aᵢ`` (7.7a) as
+conics, the focused body's bold; the acceleration pole ``a``, its axes of percussion ``Aₖa``,
+``Iₖa`` (5.64–5.68) and its polar; on the right a chart of ``Aₖ`` against the recursion steps.
 
 Examples
 --------
