@@ -26,6 +26,7 @@ Examples
 """
 from __future__ import annotations
 
+import math
 from operator import itemgetter
 
 import numpy as np
@@ -88,22 +89,12 @@ _CIRCLE = np.column_stack([np.cos(np.linspace(0, 2 * np.pi, 33)), np.sin(np.lins
 _SQUARE = np.array([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0], [-1.0, -1.0]])
 
 
-def _strokes(pic) -> tuple[np.ndarray, np.ndarray]:
-    """``(a, b)``: every drawn straight piece as pixel segments ``a → b`` (elements that are obstacles)."""
-    return _segments(pic, _gather(pic)[0])
-
-
-def _obstacle(el) -> bool:
-    """Labels keep off the element: it is drawn and not a passing note (``Picture.text(obstacle=False)``)."""
-    return el["color"] != "none" and el.get("obstacle", True)
-
-
 def _gather(pic) -> tuple[tuple, list, list]:
     """One pass over the parts: the strokes by kind, the fixed texts' boxes to keep clear of, the labels."""
     paths, glyphs, arrows, marks, ellipses = [], [], [], [], []
     texts, free = [], []
     for el in pic.elements:
-        stroke = el["color"] != "none" and el.get("obstacle", True)      # _obstacle(el)
+        stroke = el["color"] != "none" and el.get("obstacle", True)      # not Picture.text(obstacle=False)
         for part in el["parts"]:
             p = part["p"]
             if p == "text":
@@ -129,14 +120,6 @@ def _gather(pic) -> tuple[tuple, list, list]:
             elif p == "ellipse":
                 ellipses.append((part["x"], part["y"], *part["m"]))
     return (paths, glyphs, arrows, marks, ellipses), texts, free
-
-
-def _segments(pic, kinds) -> tuple[np.ndarray, np.ndarray]:
-    """``(a, b)``: the pixel segments of the strokes gathered by :func:`_gather`."""
-    xy, ends = _polylines(pic, kinds)
-    ok = np.ones(max(len(xy) - 1, 0), bool)
-    ok[ends] = False
-    return xy[:-1][ok], xy[1:][ok]
 
 
 def _polylines(pic, kinds) -> tuple[np.ndarray, np.ndarray]:
@@ -187,37 +170,62 @@ def _polylines(pic, kinds) -> tuple[np.ndarray, np.ndarray]:
 def _table(pic, kinds=None) -> np.ndarray:
     """Summed-area table (``rows + 1, cols + 1``) of the stroke samples in each raster cell."""
     pw, ph = pic._plot
-    nx, ny = int(pw // CELL) + 1, int(ph // CELL) + 1
     xy, ends = _polylines(pic, _gather(pic)[0] if kinds is None else kinds)
-    a, d = xy[:-1], np.diff(xy, axis=0)
+    d = np.diff(xy, axis=0)
     n = (np.hypot(d[:, 0], d[:, 1]) * (1.0 / STEP)).astype(np.intp) + 2      # samples of each segment
     n[ends] = 0                   # none from a polyline's end to the next one's start
-    seg = np.repeat(np.arange(len(n)), n)
-    t = np.arange(len(seg), dtype=float)
-    t -= (np.cumsum(n) - n).take(seg)
-    t /= (n - 1.0).take(seg)
-    # the samples' cells, in place (few large arrays: the allocator's pages are reused); columns
-    # -1 … nx and rows -1 … ny, the samples outside the raster in the first or last ones
-    cells = []
-    for k, top in ((0, nx), (1, ny)):
-        c = d[:, k].take(seg)
-        c *= t
-        c += a[:, k].take(seg)
-        c *= 1.0 / CELL
-        np.floor(c, out=c)
-        np.clip(c, -1.0, top, out=c)
-        cells.append(c)
-    del seg, t
-    ix, iy = cells
-    iy *= nx + 2
-    iy += ix
-    iy += nx + 3
-    del ix, cells
-    count = np.bincount(iy.astype(np.intp), minlength=(ny + 2) * (nx + 2)).reshape(ny + 2, nx + 2)
-    count[0] = 0                  # the first row and column: samples below or left of the raster,
-    count[:, 0] = 0               # then the table's zero row and column
-    count = count[:ny + 1, :nx + 1]
-    return np.cumsum(np.cumsum(count, 0, dtype=np.int32), 1, dtype=np.int32)
+    return _compiled(_count)(xy, d, n, int(pw // CELL) + 1, int(ph // CELL) + 1)
+
+
+def _count(xy, d, n, nx, ny):
+    """:func:`_table` from the segments ``xy[s] → xy[s] + d[s]`` (pixels), ``n[s]`` samples each."""
+    count = np.zeros((ny + 2, nx + 2), np.int64)     # columns -1 … nx and rows -1 … ny: the samples
+    for s in range(len(n)):                          # outside the raster in the first or last ones
+        for k in range(n[s]):
+            t = k / (n[s] - 1.0)
+            i = math.floor(min(max((d[s, 0] * t + xy[s, 0]) * (1.0 / CELL), -1.0), nx))
+            j = math.floor(min(max((d[s, 1] * t + xy[s, 1]) * (1.0 / CELL), -1.0), ny))
+            count[j + 1, i + 1] += 1
+    table = count[:ny + 1, :nx + 1]    # the first row and column (below or left of the raster) become
+    table[0] = 0                       # the table's zero row and column
+    table[:, 0] = 0
+    for j in range(ny + 1):
+        for i in range(1, nx + 1):
+            table[j, i] += table[j, i - 1]
+    for j in range(1, ny + 1):
+        table[j] += table[j - 1]
+    return table
+
+
+def _first_free(bx, by, w, h, tries, boxes, p):
+    """Each label's first try, in order, whose box meets none of ``boxes[:p]`` and the labels'
+    placed before it (added to ``boxes``): its column in ``bx, by`` (left, bottom), or -1."""
+    took = np.full(len(tries), -1)
+    for i in range(len(tries)):
+        for j in range(tries[i]):
+            x0, y0 = bx[i, j], by[i, j]
+            x1, y1 = x0 + w[i], y0 + h
+            k = 0
+            while k < p and not (x0 < boxes[k, 2] and boxes[k, 0] < x1 and y0 < boxes[k, 3] and boxes[k, 1] < y1):
+                k += 1
+            if k == p:
+                boxes[p, 0], boxes[p, 1], boxes[p, 2], boxes[p, 3] = x0, y0, x1, y1
+                p += 1
+                took[i] = j
+                break
+    return took
+
+
+_JIT: dict = {}
+
+
+def _compiled(f):
+    """``f`` compiled by numba (imported with the first picture; the machine code cached on disk)."""
+    if f not in _JIT:
+        from numba import njit
+
+        _JIT[f] = njit(cache=True, nogil=True)(f)
+    return _JIT[f]
 
 
 def place_labels(pic, font_px: float, char_em: float) -> None:
@@ -241,23 +249,14 @@ def place_labels(pic, font_px: float, char_em: float) -> None:
     kinds, texts, free = _gather(pic)
     if not free:
         return
-    rows: dict[int, list[tuple[float, float, float, float]]] = {}   # placed boxes by row of one label height
-    get = rows.get
-
-    def reserve(box) -> None:
-        for row in range(int(box[1] // h), int(box[3] // h) + 1):
-            placed = get(row)
-            if placed is None:
-                rows[row] = [box]
-            else:
-                placed.append(box)
-
-    # texts written at a fixed place (a key's rows, a scale bar's length, a message) first
-    for part in texts:
+    # texts written at a fixed place (a key's rows, a scale bar's length, a message) first, then
+    # the labels' boxes as they are placed
+    boxes = np.empty((len(texts) + len(free), 4))
+    for k, part in enumerate(texts):
         w = em * len(part["text"])
         x0 = (part["x"] - bx0) * kx + part["dx"] - ALIGN_X[part["ha"]] * w
         y0 = (part["y"] - by0) * ky + part["dy"] - ALIGN_Y[part["va"]] * h
-        reserve((x0, y0, x0 + w, y0 + h))
+        boxes[k] = x0, y0, x0 + w, y0 + h
     free.sort(key=itemgetter(0))   # topmost first (a stable sort: the elements' order otherwise)
 
     # every candidate box of every label: the asked spot, slides along its line (a label that
@@ -314,40 +313,19 @@ def place_labels(pic, font_px: float, char_em: float) -> None:
     rank[~inside] = np.inf
     best = np.argsort(rank, 1)[:, :_TRIES]
     best += np.arange(0, m * n, n)[:, None]          # flat indices
-    tries = np.minimum(inside.sum(1), _TRIES).tolist()
-    bx, by = x0.ravel()[best].tolist(), y0.ravel()[best].tolist()
-    moved, took = [], []
-    for i, (part, X0, Y0, W) in enumerate(zip(parts, bx, by, w[:, 0].tolist())):
-        for j in range(tries[i]):
-            x0_, y0_ = X0[j], Y0[j]
-            x1_, y1_ = x0_ + W, y0_ + h
-            r0, r1 = int(y0_ // h), int(y1_ // h) + 1
-            for row in range(r0, r1):
-                for px0, py0, px1, py1 in get(row, ()):
-                    if x0_ < px1 and px0 < x1_ and y0_ < py1 and py0 < y1_:
-                        break
-                else:
-                    continue
-                break
-            else:        # meets no label placed before
-                break
-        else:            # no free place: the label hides (the element keeps its hover text)
+    tries = np.minimum(inside.sum(1), _TRIES)
+    flat_x0, flat_y0 = x0.ravel(), y0.ravel()
+    took = _compiled(_first_free)(flat_x0[best], flat_y0[best], w.ravel(), h, tries, boxes, len(texts))
+    for part, hide in zip(parts, (took < 0).tolist()):
+        if hide:         # no free place: the label hides (the element keeps its hover text)
             part["hidden"] = True
-            continue
-        if best[i, j] != i * n:          # not the asked spot
-            moved.append(part)
-            took.append((i, j))
-        part.pop("hidden", None)
-        box = (x0_, y0_, x1_, y1_)
-        for row in range(r0, r1):
-            placed = get(row)
-            if placed is None:
-                rows[row] = [box]
-            else:
-                placed.append(box)
-    if moved:            # the moved labels' new offsets and alignments
-        took = best[tuple(np.array(took).T)]
-        for part, dx_, dy_, fx_, fy_ in zip(moved, np.round(dx.ravel()[took], 2).tolist(),
-                                            np.round(dy.ravel()[took], 2).tolist(),
-                                            fx.ravel()[took].tolist(), fy.ravel()[took].tolist()):
-            part["dx"], part["dy"], part["ha"], part["va"] = dx_, dy_, _HA_OF[fx_], _VA_OF[fy_]
+        else:
+            part.pop("hidden", None)
+    spot = best[np.arange(m), took]
+    moved = np.flatnonzero((took >= 0) & (spot != np.arange(0, m * n, n)))      # not the asked spot
+    if len(moved):       # the moved labels' new offsets and alignments
+        spot = spot[moved]
+        for i, dx_, dy_, fx_, fy_ in zip(moved.tolist(), np.round(dx.ravel()[spot], 2).tolist(),
+                                         np.round(dy.ravel()[spot], 2).tolist(),
+                                         fx.ravel()[spot].tolist(), fy.ravel()[spot].tolist()):
+            parts[i]["dx"], parts[i]["dy"], parts[i]["ha"], parts[i]["va"] = dx_, dy_, _HA_OF[fx_], _VA_OF[fy_]
