@@ -13,9 +13,9 @@ import numpy as np
 from planargeo.errors import TopologyError
 from planargeo.geometry._docs import entries
 from planargeo.mechanics.subspaces import _solve
-from planargeo.algorithms.articulated_inertia import (_EYE3, _arrays, _per_state, _state_arrays,
-                                                      articulated_recursion)
-from planargeo.algorithms.articulated_mobility import _check_solvable, mobility_recursion
+from planargeo.algorithms.articulated_inertia import (_EYE3, ArticulatedInertias, _arrays, _per_state,
+                                                      _state_arrays, articulated_recursion)
+from planargeo.algorithms.articulated_mobility import ArticulatedMobilities, _check_solvable, mobility_recursion
 from planargeo.algorithms.projective import force_propagator, joint_accelerations
 
 __all__ = ["ChainSplit", "split_acceleration", "split_force", "chain_split",
@@ -109,11 +109,14 @@ class ChainSplit:
     a : (N, 3) body accelerations (7.54; ``a_N = b_N``).
     f : (N, 3) joint forces: ``f[i]``, ``i >= 1``, from 7.56; ``f[0]`` from the force propagator (6.113b).
     qdd : (nq,) joint accelerations (6.110).
+    articulated, mobilities : the recursions split at every joint (7.1.1, 7.4.1).
     """
 
     a: np.ndarray
     f: np.ndarray
     qdd: np.ndarray
+    articulated: ArticulatedInertias
+    mobilities: ArticulatedMobilities
 
 
 def _check_chain(parents, N):
@@ -166,7 +169,7 @@ def chain_split(I, S, kappa, p, tau, parents=None, joint_points=None) -> ChainSp
         a[N - 1] = mob.b[N - 1]
         f[0] = force_propagator(I[0], S[0], tau[0], p[0], f[1] if N > 1 else np.zeros(3), np.zeros(3), kappa[0],
                                 T=mob.T[0])
-    return ChainSplit(a, f, joint_accelerations(T, a, kappa, parents))       # (6.110)
+    return ChainSplit(a, f, joint_accelerations(T, a, kappa, parents), art, mob)       # (6.110)
 
 
 def mobility_split(model, q, qd=None, tau=None, f_ext=None) -> ChainSplit:

@@ -89,14 +89,11 @@ class LoopSolution:
     @functools.cached_property
     def reactions(self) -> list:
         """Every pin and bearing force of the loop, a :class:`Reaction` per tree joint then per contact."""
-        model, pose = self._model, self.data.pose      # tree joints (f_i), then contacts (-F_k on body a)
-        rows = [(f"f_{i + 1}", jt.name, jt.kind, i, model.parents[i], pose[i, :2].astype(float),
-                 w.copy()) for i, (jt, w) in enumerate(zip(model.joints, self.f.reshape(model.N, 3)))]
-        rows += [(f"F_{k + 1}", c.name, c.kind, c.a, c.b,
-                  np.asarray(world_point(pose, c.a, c.point_a), dtype=float), -w)
-                 for k, (c, w) in enumerate(zip(self.contacts, self.F.reshape(-1, 3)))]
-        return [Reaction(symbol, name, kind, body, other, P, w, float(w[2] + P[1] * w[0] - P[0] * w[1]))
-                for symbol, name, kind, body, other, P, w in rows]          # the moment about P last
+        pose = self.data.pose                           # tree joints (f_i), then contacts (-F_k on body a)
+        return _joint_reactions(self._model, pose, self.f) + [
+            _reaction(f"F_{k + 1}", c.name, c.kind, c.a, c.b,
+                      np.asarray(world_point(pose, c.a, c.point_a), dtype=float), -w)
+            for k, (c, w) in enumerate(zip(self.contacts, self.F.reshape(-1, 3)))]
 
     def reaction(self, name: str) -> "Reaction":
         """The :class:`Reaction` named ``name`` (a joint's or contact's name, or its symbol ``f_1``, ``F_1``).
@@ -157,6 +154,17 @@ class Reaction:
     def force(self) -> float:
         """Magnitude ``|(fx, fy)|`` of the force (N)."""
         return float(np.hypot(self.wrench[0], self.wrench[1]))
+
+
+def _reaction(symbol, name, kind, body, other, P, w) -> Reaction:
+    """The :class:`Reaction` of the wrench ``w`` on ``body`` acting at ``P``, its moment about ``P`` last."""
+    return Reaction(symbol, name, kind, body, other, P, w, float(w[2] + P[1] * w[0] - P[0] * w[1]))
+
+
+def _joint_reactions(model, pose, f) -> list:
+    """A :class:`Reaction` per tree joint: ``f_i`` (stacked ``f``) on body ``i`` from its parent (9.61, 9.41)."""
+    return [_reaction(f"f_{i + 1}", jt.name, jt.kind, i, model.parents[i], pose[i, :2].astype(float),
+                      w.copy()) for i, (jt, w) in enumerate(zip(model.joints, np.reshape(f, (model.N, 3))))]
 
 
 def joint_wrenches(parents, I, a, p, GtF=None) -> np.ndarray:

@@ -85,10 +85,9 @@ def splitting_state(model, q, split: int, tau: float, *, L: float = 1.0) -> dict
     >>> bool(np.allclose(st["a_split"], st["a"][0])), bool(np.allclose(st["a_tip_7_37"], st["a"][1]))
     (True, True)
     """
-    from planargeo.algorithms.articulated_inertia import _state_arrays, articulated_recursion
-    from planargeo.algorithms.articulated_mobility import articulated_mobility, mobility_recursion
-    from planargeo.algorithms.chain_splitting import split_acceleration, split_force
-    from planargeo.algorithms.projective import force_propagator, joint_accelerations
+    from planargeo.algorithms.articulated_inertia import _state_arrays
+    from planargeo.algorithms.articulated_mobility import articulated_mobility
+    from planargeo.algorithms.chain_splitting import chain_split
 
     n = model.N
     if not 1 <= split < n:
@@ -98,19 +97,11 @@ def splitting_state(model, q, split: int, tau: float, *, L: float = 1.0) -> dict
     f_tip = np.array([0.0, 0.0, float(tau)])
     f_ext = np.zeros((n, 3))
     f_ext[-1] = -f_tip                                   # joint n+1 pushes the tip with -f_{n+1} (3.1)
-    # one state, each recursion once: the mobilities (7.4.1) and inertias (7.1.1) with the couple,
-    # split at every joint (7.54, 7.56; chain_split's assembly on them), and the mobilities without it
-    _d, I, S, kappa, p, taus, parents, points, jp = _state_arrays(model, q, z, z, f_ext)
-    mob = mobility_recursion(I, S, kappa, p, taus, parents, points, jp)
-    art = articulated_recursion(I, S, kappa, p, taus, parents, points, jp)
+    # one state split at every joint with the couple (7.6), and the mobilities (7.4.1) without it
+    _d, I, S, kappa, p, taus, parents, _points, jp = _state_arrays(model, q, z, z, f_ext)
+    cs = chain_split(I, S, kappa, p, taus, parents, jp)
+    mob, art, a, f = cs.mobilities, cs.articulated, cs.a, cs.f
     free = articulated_mobility(model, q, z, z)
-    a, f = np.zeros((n, 3)), np.zeros((n, 3))
-    for i in range(n - 1):
-        args = (mob.Lambda_inv[i], mob.b[i], art.A[i + 1], art.d[i + 1], art.T[i + 1], S[i + 1], taus[i + 1],
-                kappa[i + 1])
-        a[i], f[i + 1] = split_acceleration(*args), split_force(*args)
-    a[-1] = mob.b[-1]                                    # a_n = b_n; f_1 by 6.113b with a_0 = 0
-    f[0] = force_propagator(I[0], S[0], taus[0], p[0], f[1], np.zeros(3), kappa[0], T=mob.T[0])
     centres = []
     for Lam in free.Lambda_inv:
         c = twist_pole(-Lam @ [0.0, 0.0, 1.0])
@@ -119,7 +110,7 @@ def splitting_state(model, q, split: int, tau: float, *, L: float = 1.0) -> dict
         "joints": joint_points(q, L), "Lambda_inv": mob.Lambda_inv, "b": mob.b,
         "Lambda_inv_free": free.Lambda_inv, "b_free": free.b, "A": art.A, "d": art.d,
         "a_split": a[split - 1], "f_split": f[split],
-        "a": a, "f": f, "qdd": joint_accelerations(art.T, a, kappa, parents),
+        "a": a, "f": f, "qdd": cs.qdd,
         "a_tip_7_37": -free.Lambda_inv[-1] @ f_tip + free.b[-1], "f_tip": f_tip,
         "centres": np.array(centres),
     }

@@ -115,6 +115,24 @@ def _default_q():
     return np.array([th[i] - (th[p] if p >= 0 else 0.0) for i, p in enumerate(FIG91_PARENTS)])
 
 
+def _loop_speeds(model, q, speed):
+    """``speed`` times the speed pattern, less its part that breaks the loops (least squares)."""
+    from planargeo.simulate.loops import closure_jacobian
+
+    qd = speed * _QD_PATTERN
+    if not model.contacts:
+        return qd
+    Jc = closure_jacobian(model, q)
+    return qd - np.linalg.pinv(Jc) @ (Jc @ qd)
+
+
+def _default_state(model, speed):
+    """The scenes' state record (the default pose, :func:`_loop_speeds`, no torques) and its solution."""
+    q, tau = _default_q(), np.zeros(9)
+    qd = _loop_speeds(model, q, speed)
+    return {"q": plain(q), "qd": plain(qd), "tau": plain(tau)}, tree_solve(model, q, qd, tau)
+
+
 @register("tree", checks={"mass": "positive", "length": "positive"})
 def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float = 1.0) -> SceneResult:
     """The open tree of Fig 9.1 in the default pose, joint speeds ``speed × pattern``, no torques.
@@ -135,10 +153,7 @@ def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float =
     from planargeo.algorithms.stacked import adjacency, direct_accelerations, trunk
 
     model = tree_model(mass, length, g)
-    q = _default_q()
-    qd = speed * _QD_PATTERN
-    tau = np.zeros(9)
-    sol = tree_solve(model, q, qd, tau)
+    state, sol = _default_state(model, speed)
     Lam, b = sol.articulated_mobilities.Lambda_inv, sol.articulated_mobilities.b
     a_direct = direct_accelerations(sol, Lam, b)
     qdd_direct = sol.T.T @ (a_direct - sol.C @ a_direct - sol.kappa)
@@ -147,8 +162,7 @@ def tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, speed: float =
                   "Lambda_inv": plain(np.stack(Lam)), "b": plain(np.stack(b)), "qdd": plain(sol.qdd),
                   "qdd_direct": plain(qdd_direct), "a": plain(sol.a.reshape(9, 3)),
                   "f": plain(sol.f.reshape(9, 3))}
-    return SceneResult(model=model, state={"q": plain(q), "qd": plain(qd), "tau": plain(tau)},
-                       quantities=quantities, extra={"solution": sol})
+    return SceneResult(model=model, state=state, quantities=quantities, extra={"solution": sol})
 
 
 @register("constrained-tree", checks={"mass": "positive", "length": "positive"})
@@ -169,25 +183,18 @@ def constrained_tree(mass: float = 1.0, length: float = 1.0, g: float = 9.81, sp
         ``f`` (9.61), ``mu``.
     """
     from planargeo.mechanics.contacts import Contact
-    from planargeo.simulate.loops import closure_jacobian
 
     L = length
     contacts = (Contact("pin", 3, 6, (L, 0.0), (L, 0.0), name="4-7"),
                 Contact("pin", 7, 8, (L, 0.0), (L, 0.0), name="8-9"))
     model = tree_model(mass, length, g, contacts)
-    q = _default_q()
-    Jc = closure_jacobian(model, q)
-    qd = speed * _QD_PATTERN
-    qd = qd - np.linalg.pinv(Jc) @ (Jc @ qd)
-    tau = np.zeros(9)
-    sol = tree_solve(model, q, qd, tau)
+    state, sol = _default_state(model, speed)
     quantities = {"G": plain(sol.G), "Upsilon": plain(sol.Upsilon), "qdd": plain(sol.qdd),
                   "a": plain(sol.a.reshape(9, 3)), "u": plain(sol.u.reshape(9, 3)),
                   "F": plain(sol.F.reshape(-1, 3)), "xi": plain(sol.xi), "cond": float(sol.cond),
                   # every pin force of the closed tree (9.61): f_i on body i from its parent through joint i
                   "f": plain(sol.f.reshape(9, 3)), "mu": plain(sol.mu.reshape(9, 2))}
-    return SceneResult(model=model, state={"q": plain(q), "qd": plain(qd), "tau": plain(tau)},
-                       quantities=quantities, extra={"solution": sol})
+    return SceneResult(model=model, state=state, quantities=quantities, extra={"solution": sol})
 
 
 def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
@@ -228,10 +235,9 @@ def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
     >>> bool(np.allclose(q, closed.state["q"])), bool(np.allclose(qd, closed.state["qd"]))
     (True, True)
     """
-    from planargeo.simulate.loops import close_loops, closure_jacobian, closure_residual
+    from planargeo.simulate.loops import close_loops, closure_residual
 
     root_angle, speed = check_param("root_angle", root_angle), check_param("speed", speed)
-    qd = speed * _QD_PATTERN
     q = _default_q() if q_start is None else np.array(q_start, dtype=float)
     q[0] = root_angle
     if angle2 is None:
@@ -253,11 +259,9 @@ def tree_pose(model, root_angle, speed=1.0, q_start=None, angle2=None):
             where = f"body 1 at {np.degrees(root_angle):.4g}°" + (
                 "" if angle2 is None else f", body 2 at {np.degrees(angle2):.4g}°")
             raise SceneError(f"the loops cannot close with {where}: the pins are out of reach")
-        Jc = closure_jacobian(model, q)
-        qd = qd - np.linalg.pinv(Jc) @ (Jc @ qd)
     else:
         q[1] = path[-1]
-    return q, qd
+    return q, _loop_speeds(model, q, speed)
 
 
 #: condition number of ``BᵀGΛ⁻¹GᵀB`` below which :func:`tree_advance` integrates adaptively again
@@ -385,15 +389,6 @@ def tree_reactions(model, sol) -> list:
     >>> [r.symbol for r in tree_reactions(closed.model, closed.extra["solution"])][-3:]
     ['f_9', 'F_1', 'F_2']
     """
-    from planargeo.algorithms.loops import Reaction
+    from planargeo.algorithms.loops import _joint_reactions
 
-    if hasattr(sol, "reactions"):
-        return list(sol.reactions)
-    out = []
-    fw = np.asarray(sol.f, dtype=float).reshape(model.N, 3)
-    for i, jt in enumerate(model.joints):
-        P = sol.data.pose[i, :2].astype(float)
-        w = fw[i].copy()
-        out.append(Reaction(f"f_{i + 1}", jt.name, jt.kind, i, model.parents[i], P, w,
-                            float(w[2] + P[1] * w[0] - P[0] * w[1])))
-    return out
+    return list(sol.reactions) if hasattr(sol, "reactions") else _joint_reactions(model, sol.data.pose, sol.f)
