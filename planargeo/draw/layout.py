@@ -241,9 +241,7 @@ def legibility_problems(fig, *, scale: float = 1.0, min_px: float = MIN_TEXT_PX)
     InputError
         ``scale`` or ``min_px`` not a positive finite number.
     """
-    for name, v in (("scale", scale), ("min_px", min_px)):
-        if not (isinstance(v, (int, float)) and np.isfinite(v) and v > 0):
-            raise InputError(f"{name} must be a positive finite number, got {v!r}")
+    scale, min_px = number(scale, "scale", positive=True), number(min_px, "min_px", positive=True)
     texts = drawn_texts(fig)
     px_per_pt = fig.dpi / 72.0 * scale
     problems = []

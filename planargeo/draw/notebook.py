@@ -91,20 +91,18 @@ def element_picture(obj, *, size=SIZE) -> Picture:
     >>> element_picture(Line.at_infinity()).title
     'l = the line at infinity'
     """
-    if isinstance(obj, (Point, Line, Twist, Wrench)):
-        a = np.asarray(obj.array, float)
-        if a.shape != (3,):
-            raise InputError(f"obj must be a single element, got a batch of shape {a.shape}")
-        if isinstance(obj, (Point, Twist)):
-            return _pole(a, "P" if isinstance(obj, Point) else "v", isinstance(obj, Twist), size)
-        return _line(a, "l" if isinstance(obj, Line) else "f", isinstance(obj, Wrench), size)
-    if isinstance(obj, (Conic, Inertia)):
-        C = np.asarray(obj.matrix, float)
-        if C.shape != (3, 3):
-            raise InputError(f"obj must be a single element, got a batch of shape {C.shape}")
-        return _conic(C, "C" if isinstance(obj, Conic) else "I", isinstance(obj, Inertia), size)
-    raise InputError(f"obj must be a Point, Line, Conic, Twist, Wrench or Inertia, got "
-                     f"{type(obj).__name__}")
+    if not isinstance(obj, (Point, Line, Conic, Twist, Wrench, Inertia)):
+        raise InputError(f"obj must be a Point, Line, Conic, Twist, Wrench or Inertia, got "
+                         f"{type(obj).__name__}")
+    conic = isinstance(obj, (Conic, Inertia))
+    a = np.asarray(obj.matrix if conic else obj.array, float)
+    if a.shape != ((3, 3) if conic else (3,)):
+        raise InputError(f"obj must be a single element, got a batch of shape {a.shape}")
+    if conic:
+        return _conic(a, "C" if isinstance(obj, Conic) else "I", isinstance(obj, Inertia), size)
+    if isinstance(obj, (Point, Twist)):
+        return _pole(a, "P" if isinstance(obj, Point) else "v", isinstance(obj, Twist), size)
+    return _line(a, "l" if isinstance(obj, Line) else "f", isinstance(obj, Wrench), size)
 
 
 def _pole(p, name: str, twist: bool, size) -> Picture:

@@ -9,6 +9,7 @@ import math
 
 import numpy as np
 
+from planargeo._validate import as_scalar
 from planargeo.draw._shared import added, as_picture, bare_line, documented, inertia, line_words, texts
 from planargeo.draw.geometry import _mat, _vec, point_xy
 from planargeo.draw.picture import PX_PER_PT, Picture, _text_part, plain_text
@@ -380,9 +381,7 @@ def power_values(v, I, *, f_angle: float = 0.6, a_distance: float = 1.6) -> dict
     (0.0, 0.0)
     """
     v, I = _vec(v, "v"), _mat(I, "inertia")
-    for name, x in (("f_angle", f_angle), ("a_distance", a_distance)):
-        if not isinstance(x, (int, float, np.floating, np.integer)) or not math.isfinite(float(x)):
-            raise InputError(f"{name} must be a finite number, got {x!r}")
+    f_angle, a_distance = as_scalar(f_angle, "f_angle"), as_scalar(a_distance, "a_distance")
     p = I @ v
     c = centre_of_mass(I)
     F = math.hypot(p[0], p[1])

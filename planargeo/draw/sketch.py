@@ -51,6 +51,7 @@ documented = entries(_ENTRIES)
 BODY_EDGE = "#1f3a4d"
 #: outline colour of pins, sliders and frames
 DARK = "#222222"
+_SQUARE = np.array([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]])   # side 2, about 0
 
 
 # --------------------------------------------------------------------------- checks
@@ -637,7 +638,7 @@ def slider(pic: Picture, id: str, xy, direction, *, size=(0.35, 0.2), track: flo
     ang = math.atan2(e[1], e[0])
     ground(pic, f"{id}:track", c - nrm * h / 2, width=number(track, "track", positive=True),
            angle=ang)
-    corners = np.array([[-w / 2, -h / 2], [w / 2, -h / 2], [w / 2, h / 2], [-w / 2, h / 2]])
+    corners = _SQUARE * (w / 2, h / 2)
     xy_ = c + corners[:, :1] * e + corners[:, 1:] * nrm
     return added(pic.path, id, xy_, role="body", desc=desc, closed=True, fill="#dddddd", color=DARK,
                  width=1.0 * PX_PER_PT, z=z)
@@ -944,8 +945,7 @@ def contact(pic: Picture, id: str, contact, pose, *, body_shape=None, size: floa
                          desc=f"slider contact {name} (9.83): its point on body {contact.a + 1}"))
         return out
     filled = contact.kind == "weld"
-    sq = pa + np.array([[-1, -1], [1, -1], [1, 1], [-1, 1]]) * size / 2
-    out.append(added(pic.path, id, sq, role="body", closed=True, fill=DARK if filled else "white", color=DARK,
+    out.append(added(pic.path, id, pa + _SQUARE * size / 2, role="body", closed=True, fill=DARK if filled else "white", color=DARK,
                      width=1.0 * PX_PER_PT, z=z, desc=f"{contact.kind} contact {name} (9.49)"))
     return out
 
