@@ -39,12 +39,10 @@ KINDS = tuple(DOF)
 
 _USES_DIRECTION = ("prismatic", "revolute_prismatic", "twin_prismatic", "plane")
 
-_POINT = "point : array_like, shape (2,), optional\n    A point of the joint (m); default the origin."
-_DIRECTION = "direction : array_like, shape (2,), optional\n    Sliding direction (non-zero); default +x."
 #: The sections of the joint constructors, written once (:func:`planargeo.geometry._docs.entries`).
 _documented = entries({
-    "point": f"Parameters\n----------\n{_POINT}",
-    "point_direction": f"Parameters\n----------\n{_POINT}\n{_DIRECTION}",
+    "point": "point : array_like, shape (2,), optional\n    A point of the joint (m); default the origin.",
+    "direction": "direction : array_like, shape (2,), optional\n    Sliding direction (non-zero); default +x.",
     "joint": "Returns\n-------\nJointSpace\n    The joint (its ``s`` and ``R``: module table).",
 })
 
@@ -358,7 +356,7 @@ def _by_name(constructor):
 def revolute(point=(0.0, 0.0)) -> JointSpace:
     """Revolute (pin) joint about ``point`` (thesis 4.64): ``s`` = the point ``[y, -x, 1]``.
 
-    {point joint}
+    {parameters point joint}
 
     Examples
     --------
@@ -376,7 +374,7 @@ def prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     ``point`` and ``direction`` are given by name (a positional call raises
     :class:`~planargeo.errors.InputError`: the order was once ``(direction, point)``).
 
-    {point_direction joint}
+    {parameters point direction joint}
 
     Examples
     --------
@@ -392,7 +390,7 @@ def prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 def revolute_prismatic(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     """Two-dof pin-in-slot joint: slide along ``direction``, turn about ``point`` (thesis 4.74).
 
-    {point_direction joint}
+    {parameters point direction joint}
 
     Examples
     --------
@@ -412,7 +410,7 @@ def twin_prismatic(*, point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
     ``s = [e, e⊥]``, ``R = [0, 0, 1]`` (the line at infinity, whatever ``point``, which is kept
     for drawing).  Like :func:`prismatic`, it takes ``point`` and ``direction`` by name.
 
-    {point_direction joint}
+    {parameters point direction joint}
 
     Examples
     --------
@@ -439,7 +437,7 @@ def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 
     ``s`` spans every twist and ``R`` is empty: the joint transmits no force.
 
-    {point_direction joint}
+    {parameters point direction joint}
 
     Examples
     --------
@@ -457,7 +455,7 @@ def plane(point=(0.0, 0.0), direction=(1.0, 0.0)) -> JointSpace:
 def fixed(point=(0.0, 0.0)) -> JointSpace:
     """Weld (0-dof) at ``point``: ``s`` is empty, ``R`` = forces through ``point`` along x, y and a couple (thesis 6.10).
 
-    {point joint}
+    {parameters point joint}
 
     Examples
     --------

@@ -48,6 +48,18 @@ _parameters = entries({
     "f": "f : array_like, shape (..., 3)\n    Wrench.",
     "a": "a : array_like, shape (..., 3)\n    Acceleration twist.",
     "what": "what : str, optional\n    Name of the matrix in the singularity error's message.",
+    "U": "U : array_like, shape (..., 3, 3-k)\n"
+         "    The joint's reactive-acceleration space (:func:`U_of`).",
+    "T": "T : array_like, shape (..., 3, k)\n    The joint's percussion space (:func:`T_of`).",
+    # the four projections' results (6.61-6.62), the components of f = T Q + R μ and a = s ψ + U γ
+    "Q": "Returns\n-------\nQ : numpy.ndarray, shape (..., k)\n"
+         "    The joint force (a torque at a revolute joint): ``f = T Q + R μ`` (6.38).",
+    "mu": "Returns\n-------\nmu : numpy.ndarray, shape (..., 3-k)\n"
+          "    Reaction components: ``f = T Q + R μ`` (6.38).",
+    "psi": "Returns\n-------\npsi : numpy.ndarray, shape (..., k)\n"
+           "    Joint accelerations: ``a = s ψ + U γ`` (6.44).",
+    "gamma": "Returns\n-------\ngamma : numpy.ndarray, shape (..., 3-k)\n"
+             "    Components of ``a`` along ``U``: ``a = s ψ + U γ`` (6.44).",
 })
 
 
@@ -484,12 +496,7 @@ def U_of(A, R, s=None, *, what: str | None = None) -> np.ndarray:
 def active_force(s, f) -> np.ndarray:
     """Active (joint) force ``Q = sᵀ f`` (thesis 6.61a, 6.51): ``Qᵀq̇`` is the power of ``f``.
 
-    {parameters s f}
-
-    Returns
-    -------
-    Q : numpy.ndarray, shape (..., k)
-        The joint force (a torque at a revolute joint): ``f = T Q + R μ`` (6.38).
+    {parameters s f Q}
 
     Examples
     --------
@@ -504,16 +511,7 @@ def active_force(s, f) -> np.ndarray:
 def reaction_force(U, f) -> np.ndarray:
     """Reaction-force components ``μ = Uᵀ f`` (thesis 6.61b, 6.54): ``R μ``: what the joint carries.
 
-    Parameters
-    ----------
-    U : array_like, shape (..., 3, 3-k)
-        The joint's reactive-acceleration space (:func:`U_of`).
-    {f}
-
-    Returns
-    -------
-    mu : numpy.ndarray, shape (..., 3-k)
-        Reaction components: ``f = T Q + R μ`` (6.38).
+    {parameters U f mu}
 
     Examples
     --------
@@ -528,16 +526,7 @@ def reaction_force(U, f) -> np.ndarray:
 def active_acceleration(T, a) -> np.ndarray:
     """Active (absolute joint) acceleration ``ψ = Tᵀ a`` (thesis 6.62b, 6.57).
 
-    Parameters
-    ----------
-    T : array_like, shape (..., 3, k)
-        The joint's percussion space (:func:`T_of`).
-    {a}
-
-    Returns
-    -------
-    psi : numpy.ndarray, shape (..., k)
-        Joint accelerations: ``a = s ψ + U γ`` (6.44).
+    {parameters T a psi}
 
     Examples
     --------
@@ -552,12 +541,7 @@ def active_acceleration(T, a) -> np.ndarray:
 def reactive_acceleration(R, a) -> np.ndarray:
     """Reactive-acceleration components ``γ = Rᵀ a`` (thesis 6.62a, 6.60); zero along ``s``.
 
-    {parameters R a}
-
-    Returns
-    -------
-    gamma : numpy.ndarray, shape (..., 3-k)
-        Components of ``a`` along ``U``: ``a = s ψ + U γ`` (6.44).
+    {parameters R a gamma}
 
     Examples
     --------
