@@ -405,9 +405,7 @@ def power_values(v, I, *, f_angle: float = 0.6, a_distance: float = 1.6) -> dict
 def power(pic: Picture, v, I, *, f_angle: float = 0.6, a_distance: float = 1.6,
           names=("$v$", "$p = Iv$", "$f$: $v^Tf = 0$", "$a$: $p^Ta = 0$"), f_label_at=1.6,
           p_label_at=None, f_side: float = 1.0, p_side: float = 1.0, prefix: str = "") -> dict:
-    """Power relations (thesis 5.69–5.74, Fig. 5.7): ``f`` through ``v``, ``a`` on ``p = I v``.
-
-    ``vᵀ f = 0`` and ``pᵀ a = 0``: neither the force nor the acceleration does work.
+    """Power (thesis 5.69–5.74, Fig. 5.7): ``f`` through ``v`` (``vᵀf = 0``), ``a`` on ``p = I v``.
 
     {parameters pic}
     v : array_like (3,)

@@ -98,10 +98,8 @@ def decomposition(pic: Picture, s, R, A, *, reactive: str = "U", labels=None, an
                   sides=None, aims=None, prefix: str = "") -> dict:
     """A joint's spaces completed by an inertia (thesis 6.2–6.3, 6.36–6.48, Figs 6.1, 6.2).
 
-    The joint poles ``s``, the percussion space ``T = A s (sᵀAs)⁻¹`` (6.36, lines, ``sᵀT = 1``),
-    the reactions ``R`` (lines through the joint) and the accelerations they produce: the
-    decoupled ``U = A⁻¹R(RᵀA⁻¹R)⁻¹`` (6.45, ``RᵀU = 1``, all on ``T``) or, with
-    ``reactive="inverse"``, the plain ``A⁻¹R_k`` (Fig. 6.1).
+    The poles ``s``, the lines ``T = A s (sᵀAs)⁻¹`` (6.36) and ``R``, and the poles
+    ``U = A⁻¹R(RᵀA⁻¹R)⁻¹`` (6.45, on ``T``) or, with ``reactive="inverse"``, ``A⁻¹R`` (Fig. 6.1).
 
     {parameters pic sRA}
     reactive : {"U", "inverse"}
@@ -308,9 +306,7 @@ def twist_split(pic: Picture, s, R, A, a, *, parts=(1, 2), names=None, aims=None
                 scale=1.0, arrow_length=None, show_T: bool = True, prefix: str = "") -> dict:
     """An acceleration split by a joint, and the forces of its parts (thesis 6.44, 6.75–6.76, Fig. 6.3).
 
-    ``a = s ψ + U γ`` with ``ψ = Tᵀa``, ``γ = Rᵀa`` (6.44, 6.62): ``a₁ = sψ`` turns the body
-    about the joint, ``a₂ = Uγ`` lies on ``T``; their forces ``f_k = A a_k`` (6.76):
-    ``f₁ = T sᵀA a`` a multiple of ``T``, ``f₂ = R UᵀA a`` through the joint.
+    ``a = sψ + Uγ``, ``ψ = Tᵀa``, ``γ = Rᵀa`` (6.44, 6.62); the forces ``f_k = A a_k`` (6.76).
 
     {parameters pic sRA}
     a : array_like (3,)
@@ -360,8 +356,7 @@ def wrench_split(pic: Picture, s, R, A, f, *, parts=(1, 2), names=None, aims=Non
                  scale=1.0, arrow_length=None, show_T: bool = True, prefix: str = "") -> dict:
     """A force split by a joint, and the accelerations of its parts (thesis 6.38, 6.77–6.81, Fig. 6.4).
 
-    ``f = T Q + R μ`` with ``Q = sᵀf``, ``μ = Uᵀf`` (6.38, 6.61): the active part ``f₁ = TQ``
-    gives ``a₁ = A⁻¹f₁ = s TᵀA⁻¹f``, the reaction ``f₂ = Rμ`` gives ``a₂ = U RᵀA⁻¹f`` (6.80–6.81).
+    ``f = TQ + Rμ``, ``Q = sᵀf``, ``μ = Uᵀf`` (6.38, 6.61); their accelerations ``A⁻¹f_k`` (6.80).
 
     Parameters
     ----------

@@ -174,9 +174,7 @@ def twist_sum(pic, v1, v2, *, labels=("$v_1$", "$v_2$", "$v_3 = v_1 + v_2$"), le
               prefix: str = "") -> dict:
     """Twist addition (thesis 4.11–4.16, Figs 4.1, 4.3): ``v₃ = v₁ + v₂`` lies on the lever line of the poles.
 
-    The pole of the sum is ``P = Q₁ + β(Q₂ − Q₁)`` with ``β = ω₂/(ω₁ + ω₂)`` (4.12–4.13);
-    a rotation plus a translation ``u`` is a rotation about ``Q + ρn``, ``ρ = u/ω`` (4.16).
-    The sum is drawn as a larger diamond, its label across the lever line from the terms'.
+    The sum is a larger diamond, its label across the lever line from the terms'.
 
     {parameters pic}
     v1, v2 : array_like (3,)
@@ -245,10 +243,8 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
                toward=(None, None, None), prefix: str = "") -> dict:
     """Wrench addition (thesis 4.33–4.46, Figs 4.4–4.6): ``f₃ = f₁ + f₂``.
 
-    Crossing forces: ``f₃`` passes through their meet ``P = f₁ × f₂``, where the force
-    parallelogram is drawn.  Parallel forces: ``f₃`` lies between them by the lever rule
-    (4.43); a force and a couple: ``f₃`` is parallel to ``f₁`` at ``ρ = τ/F`` (4.46).  A couple
-    is the glyph in an upper corner; the sum has a heavier line.
+    The force parallelogram sits at the meet ``P = f₁ × f₂``, a couple is the glyph in an upper
+    corner, the sum has a heavier line.
 
     {parameters pic}
     f1, f2 : array_like (3,)
@@ -328,10 +324,9 @@ def wrench_sum(pic, f1, f2, *, labels=("$f_1$", "$f_2$", "$f_3 = f_1 + f_2$"), s
 def velocity_step(pic, v_prev, s, qd, *, labels=("$v_{i-1}$", r"$s_i\dot{q}_i$", "$v_i$"),
                   toward=(None, None, None), dims: bool = True, dim_offset: float = 0.25,
                   prefix: str = "") -> dict:
-    """One step of velocity kinematics along a chain (thesis 4.47–4.49, Fig. 4.7).
+    """Velocity kinematics across a joint, ``vᵢ = vᵢ₋₁ + sᵢq̇ᵢ`` (thesis 4.47–4.49, Fig. 4.7).
 
-    ``vᵢ = vᵢ₋₁ + sᵢq̇ᵢ`` is a twist sum (:func:`twist_sum`): the pole of ``vᵢ`` lies on the
-    line from the pole of ``vᵢ₋₁`` to the joint, at ``βk`` from it, ``β = q̇ᵢ/(q̇ᵢ + ωᵢ₋₁)`` (4.48).
+    A twist sum (:func:`twist_sum`), the distance ``k`` of 4.48 dimensioned.
 
     {parameters pic}
     v_prev : array_like (3,)
@@ -387,10 +382,7 @@ def acceleration_step(pic, a_prev, v_prev, s, qd, qdd, *,
                       labels=("$a_{i-1}$", r"$s_i\ddot{q}_i$", r"$v_i \times s_i\dot{q}_i$",
                               r"$s_i\ddot{q}_i + v_i \times s_i\dot{q}_i$", "$a_i$"),
                       toward=(None,) * 5, prefix: str = "") -> dict:
-    """One step of acceleration kinematics along a chain (thesis 4.50–4.54, Fig. 4.8).
-
-    ``aᵢ = aᵢ₋₁ + sᵢq̈ᵢ + κᵢ`` with the bias ``κᵢ = vᵢ × sᵢq̇ᵢ`` (a translation).  The joint's
-    part ``sᵢq̈ᵢ + κᵢ`` lies ``|κᵢ|/q̈ᵢ`` off the joint (4.54), and ``aᵢ`` on its line to ``aᵢ₋₁``.
+    """Acceleration across a joint, ``aᵢ = aᵢ₋₁ + sᵢq̈ᵢ + vᵢ × sᵢq̇ᵢ`` (thesis 4.50–4.54, Fig. 4.8).
 
     {parameters pic}
     a_prev, v_prev : array_like (3,)
@@ -458,10 +450,7 @@ def newton_euler(pic, I, a, v, *, scale=None,
                  labels=("$v$", "$a$", "$Ia$", "$p$", "fⁿᵉᵗ = Ia + p"),
                  positions=(-1.0, -0.9, 1.0), toward=(None,) * 5, inertia: bool = True,
                  prefix: str = "") -> dict:
-    """Newton–Euler balance of one body (thesis 4.55–4.56, Fig. 4.9): ``f_net = I a + p``.
-
-    ``I a`` is the axis of percussion of ``a`` (5.64), ``p = v ×* I v`` the centripetal force
-    through the centre of mass toward the pole of ``v`` (no gravity), ``f_net`` their sum.
+    """Newton–Euler balance of a body, ``f_net = I a + v ×* I v`` (thesis 4.55–4.56, 5.64, Fig. 4.9).
 
     {parameters pic}
     I : array_like (3, 3)
