@@ -66,10 +66,9 @@ def _xy(v, name: str) -> np.ndarray:
     return a
 
 
-def _beside(pic: Picture, m, n, text: str, gap: float) -> dict:
-    """A text part at ``m``, ``gap`` pixels off along the data direction ``n``, aligned away."""
-    u = n * (pic.kx, pic.ky)
-    u = u / math.hypot(*u)
+def _beside(m, u, text: str, gap: float) -> dict:
+    """A text part at ``m``, ``gap`` pixels off in the pixel direction ``u``, aligned away."""
+    u = np.asarray(u, float) / math.hypot(*u)
     return _text_part(m[0], m[1], text, gap * u[0], gap * u[1], *_align(u))
 
 
@@ -271,10 +270,8 @@ def segment(pic: Picture, id: str, p, q, *, role: str = "construct", label=None,
                dash=(dash or None) if dash is not None else _role_dash(role), z=z)
     if label:
         d = (q - p) * (pic.kx, pic.ky)
-        L = math.hypot(*d)
-        n = np.array([-d[1], d[0]]) / L if L else np.array([0.0, 1.0])
-        m = (p + q) / 2
-        el["parts"].append(_text_part(m[0], m[1], label, 5 * n[0], 5 * n[1], *_align(n)))
+        n = (-d[1], d[0]) if math.hypot(*d) else (0.0, 1.0)
+        el["parts"].append(_beside((p + q) / 2, n, label, 5))
     return el
 
 
@@ -328,7 +325,7 @@ def dimension(pic: Picture, id: str, p, q, text: str, *, offset: float = 0.0, at
     parts = [{"p": "path", "xy": np.array([p2, q2]), "closed": False},
              {"p": "path", "xy": np.array([p2 - half, p2 + half]), "closed": False},
              {"p": "path", "xy": np.array([q2 - half, q2 + half]), "closed": False},
-             _beside(pic, p2 + at * (q2 - p2), n, text, 4.0 * PX_PER_PT)]
+             _beside(p2 + at * (q2 - p2), n * (pic.kx, pic.ky), text, 4.0 * PX_PER_PT)]
     if symbol is None:
         symbol = str(text).split(" = ", 1)[0]
     return pic._add(id, "construct", symbol, desc or text, parts,
@@ -787,13 +784,11 @@ def model(pic: Picture, model, data, *, prefix: str = "", width: float = 0.18, l
     [0.5, 1.0]
     """
     as_picture(pic)
-    pose = np.asarray(data.pose, float)
-    cm = np.asarray(data.com, float)
-    origin = np.asarray(data.origin, float)
-    out = {"bodies": [], "joints": [], "com": [], "contacts": [], "shapes": []}
+    pose, cm, origin = (np.asarray(v, float) for v in (data.pose, data.com, data.origin))
     if names is not None and len(names) != model.N:
         raise InputError(f"names must hold one label per body ({model.N}), got {len(names)}")
-    out["shapes"] = model_shapes(model, data, width=width)
+    out = {"bodies": [], "joints": [], "com": [], "contacts": [],
+           "shapes": model_shapes(model, data, width=width)}
     for i, (b, shape) in enumerate(zip(model.bodies, out["shapes"])):
         name = names[i] if names is not None else (b.name or str(i + 1)) if labels else None
         words = body_words(name, i + 1)
@@ -990,9 +985,7 @@ def model_shapes(model, data, *, width: float = 0.18) -> list:
     """
     from shapely.ops import unary_union
 
-    pose = np.asarray(data.pose, float)
-    cm = np.asarray(data.com, float)
-    origin = np.asarray(data.origin, float)
+    pose, cm, origin = (np.asarray(v, float) for v in (data.pose, data.com, data.origin))
     out = []
     for i, b in enumerate(model.bodies):
         if b.shape is not None:
@@ -1153,5 +1146,5 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
 
         side = 1.0 if label_room(1.0) >= label_room(-1.0) else -1.0
         placed.append(mid + side * n * 0.25 * L)
-        out[k]["parts"].append(_beside(pic, mid, side * n, text, gap * PX_PER_PT))
+        out[k]["parts"].append(_beside(mid, side * n * (pic.kx, pic.ky), text, gap * PX_PER_PT))
     return out, split
