@@ -94,10 +94,9 @@ def evaluate(model, inverse: bool, q, qd, z, f_ext, general):
             out = None
         if out is not None:
             return out
-    if inverse:                         # the kernels test for NaN and infinity themselves
-        q, qd, _, f_ext, z, shape = check_state(model, q, qd, None, f_ext, qdd=z, finite=False)
-    else:
-        q, qd, z, f_ext, _, shape = check_state(model, q, qd, z, f_ext, finite=False)
+    tau, qdd = (None, z) if inverse else (z, None)      # the kernels test for NaN and infinity themselves
+    q, qd, tau, f_ext, qdd, shape = check_state(model, q, qd, tau, f_ext, qdd=qdd, finite=False)
+    z = qdd if inverse else tau
     nq, N = model.nq, model.N
     B = math.prod(shape)
     rows = [_rows(a, shape + (nq,), (B, nq)) for a in (q, qd, z)]

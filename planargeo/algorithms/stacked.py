@@ -226,7 +226,7 @@ class StackedSolution:
 
     Examples
     --------
->>> from planargeo.mechanics.model import chain_model
+    >>> from planargeo.mechanics.model import chain_model
     >>> sol = stacked_solve(chain_model(1), [0.0], [0.0], [0.0])
     >>> (sol.U.T @ sol.f).round(6) + 0.0       # a released link's pin force (μ = Uᵀ f)
     array([0.    , 2.4525])

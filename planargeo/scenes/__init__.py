@@ -319,6 +319,11 @@ def plain(x) -> list | float | None:
     return None if x is None else (np.asarray(x, dtype=float) + 0.0).tolist()
 
 
+def _at_rest(q) -> dict:
+    """The state record of a mechanism at rest at ``q``: ``q`` :func:`plain`, ``qd`` and ``tau`` zero."""
+    return {"q": plain(q), "qd": [0.0] * len(q), "tau": [0.0] * len(q)}
+
+
 def non_finite(result: SceneResult) -> list[str]:
     """Names (``section.key``) of the parameters, state and quantities of ``result`` holding NaN or infinity.
 

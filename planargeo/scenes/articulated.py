@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from planargeo.mechanics.model import Body, Joint, Model
-from planargeo.scenes import SceneResult, plain, register
+from planargeo.scenes import SceneResult, _at_rest, plain, register
 
 __all__ = ["articulated", "articulated_state", "percussion_axes", "bent_chain_model", "joint_points", "inertia_at", "conic_centre",
            "effective_centre", "COMPONENTS"]
@@ -189,8 +189,7 @@ def articulated(n: int = 4, lam: float = 3.0, phi: float = 0.4, outboard: int | 
     quantities["error"] = [plain(e) for e in st["error"]]
     quantities["effective_7_26"] = {"d_over_L": d / L, "mx_over_m": mx / m, "my_over_m": my / m,
                                     "Az_over_m_rho2": Az / (m * rho * rho)}
-    state = {"q": plain(q), "qd": [0.0] * n, "tau": [0.0] * n}
-    return SceneResult(model=model, state=state, quantities=quantities,
+    return SceneResult(model=model, state=_at_rest(q), quantities=quantities,
                        extra={"articulated": st["result"], "full": st["full"], "rho": rho, "L": L})
 
 

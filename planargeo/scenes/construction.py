@@ -86,12 +86,7 @@ class ConstructionStep:
 
     @property
     def caption(self) -> str:
-        """``title (equation)``: the caption shown with the step.
-
-        Returns
-        -------
-        str
-        """
+        """``title (equation)``: the caption shown with the step."""
         return f"{self.title} ({self.equation})"
 
 

@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from planargeo.mechanics.model import Model
-from planargeo.scenes import SceneResult, plain, register
+from planargeo.scenes import SceneResult, _at_rest, plain, register
 from planargeo.scenes.articulated import bent_chain_model, effective_centre
 
 __all__ = ["horizontal_chain", "horizontal_chain_model", "effective_centre"]
@@ -69,11 +69,10 @@ def horizontal_chain(n: int = 4, lam: float = 2.0) -> SceneResult:
 
     m, L = 1.0, 1.0
     rho = L / lam
-    model = horizontal_chain_model(n, m, rho, L)
-    r = articulated_inertia(model, np.zeros(n))
+    model, q = horizontal_chain_model(n, m, rho, L), np.zeros(n)
+    r = articulated_inertia(model, q)
     d, mx, my, Az = effective_centre(r.A[0])
     quantities = {"d_over_L": d / L, "mx_over_m": mx / m, "my_over_m": my / m,
                   "Az_over_m_rho2": Az / (m * rho * rho), "A1": plain(r.A[0])}
-    state = {"q": [0.0] * n, "qd": [0.0] * n, "tau": [0.0] * n}
-    return SceneResult(model=model, state=state, quantities=quantities,
+    return SceneResult(model=model, state=_at_rest(q), quantities=quantities,
                        extra={"articulated": r, "effective_centre": np.array([d, 0.0])})

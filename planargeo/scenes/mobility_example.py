@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from planargeo.scenes import SceneResult, plain, register
+from planargeo.scenes import SceneResult, _at_rest, plain, register
 from planargeo.scenes.two_body import two_body_model
 
 __all__ = ["mobility_example"]
@@ -60,6 +60,5 @@ def mobility_example(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: floa
         "a2": plain(a2), "x_over_L": float(-a2[1] / (L * a2[2])), "eta": L / rho,      # x/L: (7.47)
         "T1": plain(r.T[0][:, 0]), "U1": plain(r.U[0]), "T2": plain(r.T[1][:, 0]), "U2": plain(r.U[1]),
     }
-    state = {"q": plain(q), "qd": [0.0, 0.0], "tau": [0.0, 0.0]}
-    return SceneResult(model=model, state=state, quantities=quantities,
+    return SceneResult(model=model, state=_at_rest(q), quantities=quantities,
                        extra={"mobility": r, "instant_centre": np.array([-a2[1] / a2[2], 0.0])})

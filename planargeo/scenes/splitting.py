@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from planargeo.errors import SceneError
-from planargeo.scenes import SceneResult, plain, register
+from planargeo.scenes import SceneResult, _at_rest, plain, register
 from planargeo.scenes.articulated import bent_chain_model, joint_points
 
 __all__ = ["splitting", "splitting_state", "twist_pole"]
@@ -164,5 +164,4 @@ def splitting(n: int = 2, m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi:
         "x_over_L": float(-a_tip[1] / (L * a_tip[2])),
         "eta": L / rho,
     })
-    state = {"q": plain(q), "qd": [0.0] * n, "tau": [0.0] * n}
-    return SceneResult(model=model, state=state, quantities=quantities, extra={"state": st})
+    return SceneResult(model=model, state=_at_rest(q), quantities=quantities, extra={"state": st})

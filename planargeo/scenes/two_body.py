@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from planargeo.mechanics.model import Model
-from planargeo.scenes import SceneResult, check_param, plain, register
+from planargeo.scenes import SceneResult, _at_rest, check_param, plain, register
 from planargeo.scenes.articulated import bent_chain_model
 
 __all__ = ["two_body", "positive"]
@@ -79,6 +79,5 @@ def two_body(m: float = 1.0, rho: float = 0.5, L: float = 1.0, phi: float = np.p
         "A2": plain(r.A[1]), "U2": plain(r.U[1]), "T2": plain(r.T[1][:, 0]),
         "s": [plain(r.S[0][:, 0]), plain(r.S[1][:, 0])], "R": [plain(r.R[0]), plain(r.R[1])],
     }
-    state = {"q": plain(q), "qd": [0.0, 0.0], "tau": [0.0, 0.0]}
-    return SceneResult(model=model, state=state, quantities=quantities,
+    return SceneResult(model=model, state=_at_rest(q), quantities=quantities,
                        extra={"articulated": r, "force_direction": np.array([1.0, 0.0])})
