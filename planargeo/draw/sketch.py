@@ -482,11 +482,8 @@ def body(pic: Picture, id: str, shape, pose=None, *, label=None, color=None, alp
     el = pic._add(id, "body", symbol, desc or body_words(label), parts, color=edge,
                   fill=color or COLORS["body"], alpha=float(alpha), z=z)
     if label is not None and str(label):
-        if hasattr(shape, "representative_point"):
-            c = shape.representative_point()
-            cx, cy = c.x, c.y
-        else:
-            cx, cy = outer[0].mean(axis=0)
+        inside = hasattr(shape, "representative_point")
+        cx, cy = shape.representative_point().coords[0] if inside else outer[0].mean(axis=0)
         el["parts"].append(_text_part(cx, cy, str(label), 0.0, 0.0, "center", "center"))
     if holes:
         holes = [{"p": "path", "xy": h, "closed": True} for h in holes]
