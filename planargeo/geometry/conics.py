@@ -1,9 +1,7 @@
 """Conics as symmetric 3×3 matrices: polarity, classification, constructions (thesis 5.2).
 
-A conic ``C`` has the points ``Q @ C @ Q == 0`` (5.38) and maps a point to its polar ``C p``
-(5.36), a line to its pole ``C⁻¹ l`` (5.37); an inertia is an imaginary conic (5.4).  Functions
-broadcast; tolerances are relative ``rtol`` arguments; arguments are rescaled exactly where a
-product could overflow.
+Functions broadcast; tolerances are relative ``rtol`` arguments; arguments are rescaled exactly
+where a product could overflow.
 """
 from __future__ import annotations
 
@@ -306,8 +304,7 @@ def classify(C, rtol: float = 1e-10):
 def centre(C) -> np.ndarray:
     """Centre of a conic, normalised: the pole of the line at infinity (thesis 5.2.2).
 
-    ``C[0] × C[1]``: an ideal point for a parabola, the vertex of a line pair, the centre of mass
-    of an inertia.
+    ``C[0] × C[1]``: ideal for a parabola, the vertex of a line pair, an inertia's centre of mass.
 
     {parameters C returns_3}
 
@@ -666,9 +663,7 @@ def _base(Q) -> np.ndarray:
 
 
 def _pow2(a: np.ndarray, core: int = 1) -> tuple[np.ndarray, np.ndarray]:
-    """``a``, each element (``core=2``: matrix) beyond ``(1e-90, 1e90)`` times ``2^-e``; and ``e``
-    (0 where untouched).
-    """
+    """``a``, each vector (``core=2``: matrix) beyond ``(1e-90, 1e90)`` times ``2^-e``; ``e``."""
     with np.errstate(invalid="ignore"):
         m = np.abs(a).max(axis=tuple(range(-core, 0)))
         keep = ((m > 1e-90) & (m < 1e90)) | (m == 0) | ~np.isfinite(m)
@@ -837,8 +832,7 @@ def decompose_line_special(C, L, Q1, Q2, Q3) -> np.ndarray:
 
 
 def _special(C, x, name: str, Q, what: str) -> np.ndarray:
-    """``[Q1·y / Q1CQ1, Q3·y / Q3CQ2, Q2·y / Q2CQ3]`` (5.44-5.46) on a special base ``Q``, where
-    ``y = C x`` for a point ``x`` (``name`` "P") and ``y = x`` for a line (``name`` "L")."""
+    """``[Q1·y/Q1CQ1, Q3·y/Q3CQ2, Q2·y/Q2CQ3]`` (5.44-5.46); ``y``: ``C x`` (a point) or ``x``."""
     C, x = _conic(C), as_vec3(x, name)
     (Q1, Q2, Q3), e = _scaled_base(*Q)
     batch_shape(C=(C, 2), **{name: (x, 1)}, Q1=(Q1, 1), Q2=(Q2, 1), Q3=(Q3, 1))

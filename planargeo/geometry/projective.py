@@ -1,11 +1,9 @@
 """Points and lines of the projective plane as arrays (thesis chapter 5).
 
-The thesis's alternative homogeneous coordinates (5.47-5.56) are screw coordinates: a point
-``(x, y)`` is ``[y, -x, 1]`` (5.51), weight ``w = 0`` at infinity; a line is a wrench
-``[fx, fy, tz]`` (5.56), ``[0, 0, 1]`` the line at infinity; incidence is ``p @ l == 0`` (5.24).
-Ideal elements are ordinary values, decided by exact zeros.  Functions broadcast; vectors are
-rescaled exactly where products could overflow (:func:`_fit`), and a result beyond double
-precision raises :class:`~planargeo.errors.NumericOverflowError`.
+A point ``(x, y)`` is ``[y, -x, 1]`` (5.51), a line a wrench ``[fx, fy, tz]`` (5.56).  Ideal
+elements are ordinary values, decided by exact zeros.  Functions broadcast; vectors are rescaled
+exactly where products could overflow, and a result beyond double precision raises
+:class:`~planargeo.errors.NumericOverflowError`.
 """
 from __future__ import annotations
 
@@ -94,9 +92,8 @@ _TINY2, _HUGE2 = _TINY * _TINY, _HUGE * _HUGE   # the same bounds on the squared
 
 
 def _fit(a: np.ndarray, core: int = 1, tiny: float = _TINY, huge: float = _HUGE) -> np.ndarray:
-    """``a`` with each vector (``core=2``: matrix) whose largest |entry| lies outside ``(tiny, huge)``
-    scaled exactly by a power of two to a largest entry in ``[0.5, 1)``; others unchanged.
-    """
+    """``a``, each vector (``core=2``: matrix) with largest |entry| outside ``(tiny, huge)`` scaled
+    exactly by a power of two to a largest entry in ``[0.5, 1)``."""
     if a.ndim == core == 1:                   # one vector: plain floats are faster
         m = max(map(abs, a.tolist()), default=0.0)
         return a if tiny < m < huge or m == 0 or m != m else np.ldexp(a, -math.frexp(m)[1])

@@ -1,8 +1,6 @@
 """Planar rigid-body inertias as (imaginary) conics (thesis 1.8, 4.58, 5.4, 10.2.3).
 
-An inertia maps an acceleration pole (a point) to the wrench that produces it from rest (a
-line: its axis of percussion, 5.64-5.68); :func:`drawable_conic` gives the real circle of
-gyration drawn for it.  Functions broadcast; :class:`Inertia` is a thin validated wrapper.
+Functions broadcast; :class:`Inertia` is a thin validated wrapper.
 """
 from __future__ import annotations
 
@@ -17,8 +15,8 @@ from planargeo.errors import InputError, InvalidPolygonError, SingularInertiaErr
 from planargeo.geometry import conics
 from planargeo.geometry._docs import entries
 from planargeo.geometry.elements import Conic, Line, Point
-from planargeo.screws.twists import (SCREWS, _Held, _inertia_psd, inertia_at, inertia_matrix,
-                                      inertia_rotated, kinetic_energy, momentum)
+from planargeo.screws.twists import (SCREWS, _derived, _Held, _inertia_psd, inertia_at,
+                                      inertia_matrix, inertia_rotated, kinetic_energy, momentum)
 
 __all__ = [
     "Inertia", "mass", "centre_of_mass", "rotational_inertia", "radius_of_gyration",
@@ -126,8 +124,6 @@ def rotational_inertia(inertia) -> np.ndarray:
 def radius_of_gyration(inertia) -> np.ndarray:
     """Radius of gyration ``ρ = sqrt(J / m)`` (m; thesis 4.58, 5.64).
 
-    The radius of the circle :func:`drawable_conic` draws about the centre of mass.
-
     {parameters inertia returns_scalar no_mass}
 
     Examples
@@ -172,10 +168,6 @@ def _solve(I: np.ndarray, b: np.ndarray) -> np.ndarray:
 def percussion_axis(inertia, point) -> np.ndarray:
     """Axis of percussion ``f = I a`` of an acceleration pole ``a`` (thesis 5.64-5.68).
 
-    The force that, applied at rest, accelerates the body about ``point``: perpendicular to the
-    line from the pole to the centre of mass ``c``, beyond ``c`` at ``ρ²/d`` (5.67-5.68).  The
-    pole at ``c`` gives the line at infinity; a pole at infinity a line through ``c``.
-
     {parameters inertia pole}
 
     Returns
@@ -199,10 +191,7 @@ def percussion_axis(inertia, point) -> np.ndarray:
 
 @_documented
 def percussion_pole(inertia, line) -> np.ndarray:
-    """Acceleration pole ``a = I⁻¹ f`` whose axis of percussion is ``line``.
-
-    The inverse of :func:`percussion_axis`: a couple (the line at infinity) turns the body about its
-    centre of mass.
+    """Acceleration pole ``a = I⁻¹ f`` of the axis of percussion ``line`` (:func:`percussion_axis`).
 
     {parameters inertia impulse}
 
@@ -232,8 +221,7 @@ def percussion_pole(inertia, line) -> np.ndarray:
 def drawable_conic(inertia) -> np.ndarray:
     """The real conic drawn for an inertia: the radius-of-gyration circle (thesis 10.2.3).
 
-    ``I`` with ``2 m ρ²`` taken from ``I[2, 2]``; the axis of percussion of a point is its polar
-    reflected through the centre (:func:`planargeo.geometry.conics.drawable_conic`).
+    ``I`` with ``2 m ρ²`` taken from ``I[2, 2]`` (:func:`planargeo.geometry.conics.drawable_conic`).
 
     {parameters inertia returns_3x3 not_psd}
 
@@ -314,15 +302,6 @@ def polygon_moments(geometry, name: str = "geometry"):
 
 
 # ---------- The class
-def _derived(function, doc: str) -> property:
-    """A read-only property of :class:`Inertia`: ``function`` of its matrix, documented by ``doc``."""
-    def get(self):
-        return function(self._array)
-
-    get.__doc__ = doc
-    return property(get)
-
-
 def _of_matrix(function, name: str | None = None):
     """A method of :class:`Inertia`: ``function`` of its matrix, documented by it."""
     def method(self, *args, **kwargs):
@@ -477,12 +456,8 @@ class Inertia(_Held):
         return cls(total)
 
     # -- data ------------------------------------------------------------
-    @property
-    def matrix(self) -> np.ndarray:
-        """The ``(..., 3, 3)`` matrix at the origin (read-only)."""
-        return self._array
-
-    # the body's quantities: the module's functions of its matrix
+    # the matrix and the body's quantities: the module's functions of it
+    matrix = _derived(np.asarray, """The ``(..., 3, 3)`` matrix at the origin (read-only).""")
     mass = _derived(mass, """Mass ``m = matrix[0, 0]`` (kg), of the batch shape.""")
     com = _derived(centre_of_mass, """Centre of mass ``(x, y)`` (m).""")
     rotational_inertia = _derived(rotational_inertia, """``J`` about the centre of mass (kg·m²).""")

@@ -166,8 +166,6 @@ def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
 def crm(v) -> np.ndarray:
     """Planar motion cross operator ``v×`` (thesis 2.16 projected, 4.63).
 
-    ``crm(v) @ s`` is the rate of change of a twist ``s`` carried by a body moving with twist ``v``.
-
     {parameters v returns_3x3}
 
     Examples
@@ -341,8 +339,6 @@ def twist_magnitude(twist) -> np.ndarray:
 def pole_xy(twist) -> np.ndarray:
     """Euclidean pole ``(-v_y/ω, v_x/ω)`` of a twist (thesis 4.10, 5.51); NaN for a translation.
 
-    The point that does not move: there the twist is ``ω [y, -x, 1]``.
-
     {parameters twist returns_2}
 
     Examples
@@ -429,8 +425,6 @@ def reciprocal(twist, wrench, rtol: float = 1e-12) -> np.ndarray:
 @documented
 def inertia_at(inertia, point) -> np.ndarray:
     """Inertia expressed at ``point``: ``X_P⁻ᵀ I X_P⁻¹`` (thesis 1.68, 4.24).
-
-    This is the parallel axis theorem: at the centre of mass, ``I[2, 2]`` is ``J``.
 
     {parameters inertia point returns_3x3 not_psd}
 
@@ -595,6 +589,19 @@ def _batches(**named) -> tuple:
     return batch_shape(**{k: (as_array(x, k), nd) for k, (x, nd) in named.items()})
 
 
+def _derived(function, doc: str) -> property:
+    """A read-only property: ``function`` of the held array, documented by ``doc``."""
+    def get(self):
+        return function(self._array)
+
+    get.__doc__ = doc
+    return property(get)
+
+
+def _xy(a: np.ndarray) -> np.ndarray:
+    return a[..., :2].copy()
+
+
 class _Held:
     """Common base of :class:`Twist`, :class:`Wrench` and ``Inertia``: one read-only array."""
 
@@ -625,34 +632,28 @@ class _Screw(_Held):
         a.flags.writeable = False
         self._array = a
 
-    @property
-    def array(self) -> np.ndarray:
-        """The screw coordinates (read-only)."""
-        return self._array
-
-    @property
-    def shape(self) -> tuple:
-        """Batch shape (leading dimensions)."""
-        return self._array.shape[:-1]
+    array = _derived(np.asarray, "The screw coordinates (read-only).")
+    shape = _derived(lambda a: a.shape[:-1], "Batch shape (leading dimensions).")
 
     def __repr__(self) -> str:
         body = np.array2string(self._array, separator=", ", precision=6, suppress_small=True)
         return f"{type(self).__name__}({body})"
 
-    def _new(self, array, op: str):
+    def _new(self, op: str, function, *args):
+        """A screw of this kind, ``function(*args)``, refused if a coordinate overflows."""
+        with np.errstate(over="ignore", invalid="ignore"):
+            array = function(*args)
         return type(self)(check_overflow(array, f"{type(self).__name__} {op}", "a coordinate"))
 
     def __add__(self, other):
         if type(other) is not type(self):
             return NotImplemented
-        with np.errstate(over="ignore", invalid="ignore"):
-            return self._new(self._array + other._array, "+")
+        return self._new("+", np.add, self._array, other._array)
 
     def __sub__(self, other):
         if type(other) is not type(self):
             return NotImplemented
-        with np.errstate(over="ignore", invalid="ignore"):
-            return self._new(self._array - other._array, "-")
+        return self._new("-", np.subtract, self._array, other._array)
 
     def __neg__(self):
         return type(self)(-self._array)
@@ -661,8 +662,7 @@ class _Screw(_Held):
         number = isinstance(k, (int, float, np.integer, np.floating)) and not isinstance(k, bool)
         if not number and not (isinstance(k, np.ndarray) and k.ndim == 0):
             return NotImplemented
-        with np.errstate(over="ignore", invalid="ignore"):
-            return self._new(self._array * float(k), "*")
+        return self._new("*", np.multiply, self._array, float(k))
 
     __rmul__ = __mul__
 
@@ -681,8 +681,7 @@ class _Screw(_Held):
             c = as_xy(about, "about")
             _batches(theta=(theta, 0), about=(c, 1), twist_or_wrench=(self._array, 1))
             M = self._carry(-c) @ rot(theta) @ self._carry(c)
-        with np.errstate(over="ignore", invalid="ignore"):
-            return self._new(np.einsum("...ij,...j->...i", M, self._array), "rotated")
+        return self._new("rotated", np.einsum, "...ij,...j->...i", M, self._array)
 
     @documented
     def at(self, point):
@@ -699,8 +698,7 @@ class _Screw(_Held):
         >>> Twist.rotation([0.0, 0.0], 1.0).at([2.0, 0.0])   # the point (2, 0) moves up at 2
         Twist([0., 2., 1.])
         """
-        with np.errstate(over="ignore", invalid="ignore"):
-            return self._new(np.einsum("...ij,...j->...i", self._carry(point), self._array), "at")
+        return self._new("at", np.einsum, "...ij,...j->...i", self._carry(point), self._array)
 
     def _pair(self, other) -> tuple:
         """``(twist, wrench)`` arrays of this screw and ``other`` of the dual kind."""
@@ -754,8 +752,6 @@ class _Screw(_Held):
 @documented
 class Twist(_Screw):
     """A velocity (or acceleration) twist ``[vx, vy, ω]`` at the origin (thesis 4.6, 5.51).
-
-    It is a point, its pole; ``.at(P)`` is the same motion at ``P``, ``X_P v`` (thesis 4.8).
 
     Parameters
     ----------
@@ -817,33 +813,17 @@ class Twist(_Screw):
         u = as_xy(velocity, "velocity")
         return cls(np.concatenate([u, np.zeros(u.shape[:-1] + (1,))], axis=-1))
 
-    @property
-    def magnitude(self) -> np.ndarray:
-        """``ω_z`` (thesis 4.6), signed; 0 for a translation (whose speed is ``|velocity|``)."""
-        return twist_magnitude(self._array)
-
-    omega = magnitude
-
-    @property
-    def velocity(self) -> np.ndarray:
-        """Linear velocity ``(vx, vy)`` of the body point at the reference point."""
-        return self._array[..., :2].copy()
-
-    @property
-    def is_translation(self) -> np.ndarray:
-        """True where ``ω == 0`` (pole at infinity)."""
-        return np.asarray(self._array[..., 2] == 0)
-
-    @property
-    def pole_xy(self) -> np.ndarray:
-        """Euclidean pole (thesis 4.10); NaN for translations."""
-        return pole_xy(self._array)
+    magnitude = omega = _derived(twist_magnitude, "``ω_z`` (thesis 4.6), signed; 0 for a "
+                                                  "translation (whose speed is ``|velocity|``).")
+    velocity = _derived(_xy, "Linear velocity ``(vx, vy)`` of the body point at the "
+                             "reference point.")
+    is_translation = _derived(lambda a: np.asarray(a[..., 2] == 0),
+                              "True where ``ω == 0`` (pole at infinity).")
+    pole_xy = _derived(pole_xy, "Euclidean pole (thesis 4.10); NaN for translations.")
 
     @property
     def pole(self):
-        """The pole as a :class:`planargeo.geometry.Point` (thesis 5.51).
-
-        The point that does not move; at infinity for a translation.
+        """The pole as a :class:`planargeo.geometry.Point` (thesis 5.51); ideal for a translation.
 
         Raises
         ------
@@ -861,9 +841,6 @@ class Twist(_Screw):
 @documented
 class Wrench(_Screw):
     """A force wrench ``[fx, fy, τz]`` at the origin (thesis 4.21), its line of action (5.56).
-
-    It is a line; ``.magnitude`` is ``F = |f|`` (4.22), 0 for a couple, whose strength is
-    ``.moment``; ``.at(P)`` is ``X_P⁻ᵀ f`` (thesis 4.24, 4.26).
 
     Parameters
     ----------
@@ -930,40 +907,18 @@ class Wrench(_Screw):
         z = np.zeros(t.shape)
         return cls(np.stack([z, z, t], axis=-1))
 
-    @property
-    def magnitude(self) -> np.ndarray:
-        """``F = sqrt(fx² + fy²)`` (thesis 4.22); 0 for a pure couple."""
-        return wrench_magnitude(self._array)
-
-    @property
-    def force_xy(self) -> np.ndarray:
-        """The force vector ``(fx, fy)``."""
-        return self._array[..., :2].copy()
-
-    @property
-    def moment(self) -> np.ndarray:
-        """``τz`` about the reference point."""
-        return np.asarray(self._array[..., 2])
-
-    @property
-    def is_couple(self) -> np.ndarray:
-        """True where the force part is zero (line at infinity)."""
-        return np.asarray(np.all(self._array[..., :2] == 0, axis=-1))
-
-    @property
-    def direction(self) -> np.ndarray:
-        """Unit direction ``e`` of the line of action (thesis 4.28); NaN for couples."""
-        return wrench_axis(self._array)[0]
-
-    @property
-    def distance(self) -> np.ndarray:
-        """Signed distance ``d = τ/F`` of the line from the origin (thesis 4.31)."""
-        return wrench_axis(self._array)[1]
-
-    @property
-    def normal(self) -> np.ndarray:
-        """Unit normal ``n = (fy, -fx)/F`` (thesis 4.32); the nearest point is ``n d`` (4.30)."""
-        return wrench_axis(self._array)[2]
+    magnitude = _derived(wrench_magnitude,
+                         "``F = sqrt(fx² + fy²)`` (thesis 4.22); 0 for a pure couple.")
+    force_xy = _derived(_xy, "The force vector ``(fx, fy)``.")
+    moment = _derived(lambda a: np.asarray(a[..., 2]), "``τz`` about the reference point.")
+    is_couple = _derived(lambda a: np.asarray(np.all(a[..., :2] == 0, axis=-1)),
+                         "True where the force part is zero (line at infinity).")
+    direction = _derived(lambda a: wrench_axis(a)[0], "Unit direction ``e`` of the line of action "
+                                                       "(thesis 4.28); NaN for couples.")
+    distance = _derived(lambda a: wrench_axis(a)[1],
+                        "Signed distance ``d = τ/F`` of the line from the origin (thesis 4.31).")
+    normal = _derived(lambda a: wrench_axis(a)[2], "Unit normal ``n = (fy, -fx)/F`` (thesis 4.32); "
+                                                   "the nearest point is ``n d`` (4.30).")
 
     @property
     def line(self):
@@ -1216,8 +1171,7 @@ def _add_wrenches(a, b, rtol) -> WrenchSum:
 
 
 def _finite_sum(add, pair, names, rtol):
-    """The construction ``add(a, b, rtol)`` of two screws, if every number in it is
-    finite (``beta = inf`` of opposite rotations aside)."""
+    """``add(a, b, rtol)`` of two single screws, refused unless finite (β = ∞ of ω1 = -ω2 aside)."""
     a, b = (_single(x, name) for x, name in zip(pair, names))
     with np.errstate(over="ignore", invalid="ignore"):
         c = add(a, b, check_tolerance(rtol))
