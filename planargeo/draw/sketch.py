@@ -38,6 +38,8 @@ _ENTRIES = {
     **ENTRIES,
     "distinct": "Raises\n------\nInputError\n    ``p`` and ``q`` coincide or are not finite.",
     "pq": "p, q : (float, float)\n    End points (finite).",
+    "xy": "xy : (float, float)\n    Where it is (finite, data units).",
+    "radius": "radius : float\n    Radius of the disc (data units).",
     "model": "model : planargeo.mechanics.model.Model\n    The model.\n"
              "data : planargeo.mechanics.model.Data\n    Its kinematics at the state to draw.",
     "pose": "pose : array_like (N, 3)\n    The bodies' poses.",
@@ -198,9 +200,7 @@ def label(pic: Picture, id: str, xy, text: str, *, offset=(5, 5), ha: str = "lef
           fixed: bool = False) -> dict:
     """A text at the data point ``xy``, moved by ``offset`` points (placed, unless ``fixed``).
 
-    {parameters pic id}
-    xy : (float, float)
-        The point the text refers to.
+    {parameters pic id xy}
     text : str
         The text (``$..$`` mathtext becomes Unicode).
     offset : (float, float)
@@ -518,14 +518,9 @@ def link(pic: Picture, id: str, p, q, *, width: float = 0.25, **kw) -> dict:
 @documented
 def pin(pic: Picture, id: str, xy, *, radius: float = 0.06, z: int = 6, symbol: str = "joint",
         desc: str = "a revolute joint") -> dict:
-    """A revolute joint: a white disc with a dark rim, ``radius`` data units.
+    """A revolute joint at ``xy``: a white disc with a dark rim, ``radius`` data units.
 
-    {parameters pic id}
-    xy : (float, float)
-        The joint.
-    radius : float
-        Radius of the disc (data units).
-    {z symbol}
+    {parameters pic id xy radius z symbol}
 
     {element}
 
@@ -545,9 +540,7 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.8, angle: float = 0.0,
            n: int = 7, z: int = 1, desc: str = "the ground") -> dict:
     """A ground line ``width`` long centred on ``xy``, at ``angle``, hatched on its right-hand side.
 
-    {parameters pic id}
-    xy : (float, float)
-        Middle of the ground line.
+    {parameters pic id xy}
     width : float
         Length of the line.
     angle : float
@@ -591,11 +584,9 @@ def ground(pic: Picture, id: str, xy, *, width: float = 0.8, angle: float = 0.0,
 @documented
 def slider(pic: Picture, id: str, xy, direction, *, size=(0.35, 0.2), track: float = 1.6,
            z: int = 3, desc: str = "a prismatic joint") -> dict:
-    """A prismatic joint: a block on a hatched track (``id + ":track"``) along ``direction``.
+    """Prismatic joint: a block at ``xy`` on a hatched track ``id + ":track"`` along ``direction``.
 
-    {parameters pic id}
-    xy : (float, float)
-        Centre of the block.
+    {parameters pic id xy}
     direction : (float, float)
         Direction of sliding (not zero).
     size : (float, float)
@@ -697,18 +688,12 @@ def frame(pic: Picture, id: str, origin, *, angle: float = 0.0, length: float = 
 @documented
 def com(pic: Picture, id: str, xy, *, radius: float = 0.07, z: int = 6, symbol: str = "c",
         desc: str = "centre of mass") -> dict:
-    """The centre-of-mass mark: a white disc (``id + ":disc"``), black 1st and 3rd quarters (``id``).
+    """Centre-of-mass mark at ``xy``: a white disc (``id + ":disc"``), black quarters 1, 3 (``id``).
 
-    {parameters pic id}
-    xy : (float, float)
-        The centre of mass.
-    radius : float
-        Radius of the symbol (data units).
-    {z}
+    {parameters pic id xy radius z}
     symbol : str
         Thesis symbol of the centre of mass (default ``"c"``; ``"$c_2$"`` reads c₂).
-    desc : str
-        One-line description.
+    {desc}
 
     Returns
     -------
