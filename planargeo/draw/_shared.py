@@ -1,9 +1,4 @@
-"""What the gallery's drawing modules share (private): the picture check, a few words, the docstrings.
-
-:mod:`~planargeo.draw.sketch`, :mod:`~planargeo.draw.sums`, :mod:`~planargeo.draw.polars`,
-:mod:`~planargeo.draw.splits` and :mod:`~planargeo.draw.notebook` add elements to a
-:class:`~planargeo.draw.picture.Picture`; the helpers they all need are written here once.
-"""
+"""What the gallery's drawing modules share (private): the picture check, a few words, the docstrings."""
 from __future__ import annotations
 
 import math

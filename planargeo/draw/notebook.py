@@ -1,9 +1,7 @@
 """One element drawn for a notebook: a point, line, conic, twist, wrench or inertia as a picture.
 
-A value at the end of a notebook cell is drawn as the explorers draw it, as a
-:class:`~planargeo.draw.picture.Picture` in a square view around it and the origin ``O``,
-titled with its numbers, and written as SVG by matplotlib.  ``import planargeo`` registers
-:func:`element_svg` with IPython when it runs inside it (:func:`register`).
+A value at the end of a cell is a :class:`~planargeo.draw.picture.Picture` around it and the origin,
+written as SVG by matplotlib; ``import planargeo`` registers :func:`element_svg` with IPython.
 """
 from __future__ import annotations
 

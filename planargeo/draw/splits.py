@@ -1,8 +1,7 @@
 """The T/U decompositions of chapter 6 drawn into a :class:`~planargeo.draw.picture.Picture`.
 
-A joint's spaces ``s``, ``R`` and an inertia ``A`` split forces and accelerations (thesis
-6.2–6.3, 6.36–6.48, Figs 6.1–6.5); each function returns its elements by name and the arrays
-under ``"values"``.
+A joint's spaces ``s``, ``R`` and an inertia ``A`` split forces and accelerations (thesis 6.2–6.3,
+6.36–6.48, Figs 6.1–6.5); each function returns its elements by name, arrays under ``"values"``.
 """
 from __future__ import annotations
 
