@@ -1100,19 +1100,16 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
     for k, (w, role, dash, text, meaning) in lines.items():
         text = plain_text(text)
         F = math.hypot(w[0], w[1])
-        desc = f"{meaning}: |{text}| = {F:.3g} N"
         eid = f"{id}:{k}"
         if arrows[k] is None:
-            if abs(w[2]) > 1e-12 * max(1.0, float(np.max(np.abs(f)))) and F == 0.0:
-                out[k] = added(pic.line, eid, w, role=role, symbol=text,
-                               desc=f"{meaning}: a couple of {w[2]:.3g} N·m", dash=dash)
-            else:
-                out[k] = None
+            couple = abs(w[2]) > 1e-12 * max(1.0, float(np.max(np.abs(f)))) and F == 0.0
+            out[k] = added(pic.line, eid, w, role=role, symbol=text, dash=dash,
+                           desc=f"{meaning}: a couple of {w[2]:.3g} N·m") if couple else None
             continue
         tail, tip = arrows[k]
         mid = 0.5 * (tail + tip)
-        force_arrow(pic, eid, w, scale=scale, anchor=mid, role=role, symbol=text, desc=desc, label="",
-                    width=LINEWIDTHS[role] * PX_PER_PT, dash=dash)
+        force_arrow(pic, eid, w, scale=scale, anchor=mid, role=role, symbol=text, label="", dash=dash,
+                    desc=f"{meaning}: |{text}| = {F:.3g} N", width=LINEWIDTHS[role] * PX_PER_PT)
         out[k] = pic.elements[-1]
         d = tip - tail
         L = float(np.hypot(*d))

@@ -104,8 +104,8 @@ def _wrench(pic: Picture, id: str, f, *, role: str, label: str, desc: str, scale
         return None
     if bool(is_at_infinity(f)):
         el = added(pic.line, id, f, role=role, symbol=symbol, desc=desc, label=text, width=width)
-        row = 0 if couples is None else sum(1 for c in couples if c == corner)
-        x0, x1, _, _ = pic.box
+        row = 0 if couples is None else couples.count(corner)
+        x0 = pic.box[0]
         for part in el["parts"]:
             if part["p"] in ("text", "glyph"):
                 part["y"] -= row * 30.0 / pic.ky
