@@ -466,8 +466,6 @@ class ExteriorConstruction:
 class InteriorConstruction:
     """The steps of the polar construction of an interior point (thesis 5.2.2, Fig. 5.3).
 
-    An interior point has no real tangents: the construction goes through the poles of two chords.
-
     Attributes
     ----------
     point : ndarray, shape (..., 3)

@@ -235,8 +235,6 @@ class Point(_PointOrLine):
     def join(self, other) -> "Line":
         """The line through this point and ``other`` (thesis 5.32); also ``p ^ q``.
 
-        With ``other`` at infinity, it is the line through this point in that direction.
-
         {parameters other_point returns_line}
 
         Examples

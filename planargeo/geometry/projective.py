@@ -132,8 +132,6 @@ def _refuse_zero(x: np.ndarray, name: str, what: str) -> None:
 def normalize_point(p) -> np.ndarray:
     """Base coordinates of points (thesis 5.2, 5.49): weight ``w = 1``, or unit length at infinity.
 
-    A finite point ``(x, y)`` becomes ``[y, -x, 1]`` (5.51).
-
     {parameters p normalized}
 
     Examples
@@ -153,8 +151,6 @@ def normalize_point(p) -> np.ndarray:
 @_shared
 def normalize_line(l) -> np.ndarray:
     """Base coordinates of lines (thesis 5.11, 5.55): unit force, or ``tz = ±1`` at infinity.
-
-    A finite line gets a unit force ``(fx, fy)``, so that ``|tz|`` is its distance from the origin.
 
     {parameters l normalized}
 
@@ -317,8 +313,6 @@ def to_xy(p) -> np.ndarray:
 def direction(p) -> np.ndarray:
     """Unit direction ``(-b, a)/|(a, b)|`` of an ideal point ``[a, b, 0]``; NaN for finite points.
 
-    The inverse of :func:`from_direction`, up to length.
-
     {parameters p returns_2}
 
     Examples
@@ -337,8 +331,6 @@ def direction(p) -> np.ndarray:
 @_shared
 def line_direction(l) -> np.ndarray:
     """Unit direction ``(fx, fy)/|f|`` along a line (thesis 5.55); NaN for the line at infinity.
-
-    A line ``[fx, fy, tz]`` points along its force ``(fx, fy)``.
 
     {parameters l returns_2}
 
@@ -468,9 +460,6 @@ def _checked_cross(a, b, names: str, what: str, cond_limit: float) -> np.ndarray
 @_shared
 def join(p, q, cond_limit: float = COND_LIMIT) -> np.ndarray:
     """The line through two points, ``p × q`` (thesis 5.27-5.32; 5.32 has the opposite orientation).
-
-    For points at ``w = 1`` it is the wrench with force ``q - p``; two ideal points give the line
-    at infinity.
 
     {parameters p_q cond_limit returns_3 cross_raises}
 

@@ -159,7 +159,12 @@ def rotation_about(theta, about=(0.0, 0.0)) -> np.ndarray:
     """
     c = as_xy(about, "about")
     _batches(theta=(theta, 0), about=(c, 1))
-    return X_P(-c) @ rot(theta) @ X_P(c)
+    return _turn(X_P, theta, c)
+
+
+def _turn(carry, theta, c) -> np.ndarray:
+    """``carry(-c) rot(θ) carry(c)``: a turn about ``c`` of twists (``carry = X_P``) or wrenches."""
+    return carry(-c) @ rot(theta) @ carry(c)
 
 
 @documented
@@ -478,7 +483,7 @@ def inertia_rotated(inertia, theta, about=(0.0, 0.0)) -> np.ndarray:
     I = _inertia_psd(inertia)
     c = as_xy(about, "about")
     _batches(inertia=(I, 2), theta=(theta, 0), about=(c, 1))
-    return _congruence(X_P_inv_T(-c) @ rot(theta) @ X_P_inv_T(c), I)
+    return _congruence(_turn(X_P_inv_T, theta, c), I)
 
 
 @overflow_checked("inertia or twist")
@@ -680,7 +685,7 @@ class _Screw(_Held):
         else:
             c = as_xy(about, "about")
             _batches(theta=(theta, 0), about=(c, 1), twist_or_wrench=(self._array, 1))
-            M = self._carry(-c) @ rot(theta) @ self._carry(c)
+            M = _turn(self._carry, theta, c)
         return self._new("rotated", np.einsum, "...ij,...j->...i", M, self._array)
 
     @documented
