@@ -197,23 +197,68 @@ def _count(xy, d, n, nx, ny):
     return table
 
 
-def _first_free(bx, by, w, h, tries, boxes, p):
-    """Each label's first try, in order, whose box meets none of ``boxes[:p]`` and the labels'
-    placed before it (added to ``boxes``): its column in ``bx, by`` (left, bottom), or -1."""
-    took = np.full(len(tries), -1)
-    for i in range(len(tries)):
-        for j in range(tries[i]):
-            x0, y0 = bx[i, j], by[i, j]
-            x1, y1 = x0 + w[i], y0 + h
-            k = 0
-            while k < p and not (x0 < boxes[k, 2] and boxes[k, 0] < x1 and y0 < boxes[k, 3] and boxes[k, 1] < y1):
-                k += 1
-            if k == p:
-                boxes[p, 0], boxes[p, 1], boxes[p, 2], boxes[p, 3] = x0, y0, x1, y1
-                p += 1
-                took[i] = j
+def _place(q, a0, g0, r0, view, table, boxes, p):
+    """The labels' spots, in order (:func:`place_labels`): ``(m, 5)`` rows of the spot taken (0 the
+    asked one; -1: none free) and its offset and box corner ``dx, dy, fx, fy``.
+
+    ``q``: the labels' anchors, asked offsets, alignments, lengths and line directions, with the
+    asked offset along the line ``a0``, its distance from it ``g0`` and its length ``r0`` (at least
+    6 px); ``view``: the view's corner and scale, the label sizes and the plot area;
+    ``boxes[:p]``: the fixed texts' boxes (the placed labels' are added after them).
+    """
+    bx0, by0, kx, ky, em, h, pw, ph = view
+    ny, nx = table.shape[0] - 1, table.shape[1] - 1
+    n = _RING + 16
+    out = np.full((len(q), 5), -1.0)
+    dx, dy, fx, fy = np.empty(n), np.empty(n), np.empty(n), np.empty(n)    # a label's spots: offsets, box
+    x0, y0, rank = np.empty(n), np.empty(n), np.empty(n)                  # corners, boxes, ranks
+    for i in range(len(q)):
+        w, ux, uy = em * q[i, 6], q[i, 7], q[i, 8]
+        flat = g0[i] < 1e-9       # the slides' sides: across the line, away from the asked spot
+        sx = -uy if flat else (q[i, 2] - a0[i] * ux) / g0[i]
+        sy = ux if flat else (q[i, 3] - a0[i] * uy) / g0[i]
+        g = max(0.0 if flat else g0[i], 6.0)
+        dx[0], dy[0], fx[0], fy[0] = q[i, 2], q[i, 3], q[i, 4], q[i, 5]
+        for j in range(1, n):
+            if j < _RING:         # a slide along the line
+                vx, vy, t = _SIDE[j - 1] * sx, _SIDE[j - 1] * sy, a0[i] + _SHIFT[j - 1] * (2.0 * h)
+                dx[j], dy[j] = t * ux + g * vx, t * uy + g * vy
+                fx[j] = 0.0 if vx > 0.3 else 1.0 if vx < -0.3 else 0.5
+                fy[j] = 0.0 if vy > 0.3 else 1.0 if vy < -0.3 else 0.5
+            else:                 # a spot on a ring
+                r = r0[i] * _RADII[j - _RING] + _REACH[j - _RING] * h
+                dx[j], dy[j], fx[j], fy[j] = r * _RING_X[j - _RING], r * _RING_Y[j - _RING], _FX2[j - _RING], _FY2[j - _RING]
+        for j in range(n):
+            x0[j] = (q[i, 0] - bx0) * kx + dx[j] - fx[j] * w
+            y0[j] = (q[i, 1] - by0) * ky + dy[j] - fy[j] * h
+            x1, y1 = x0[j] + w, y0[j] + h
+            if not (x0[j] >= 0.0 and y0[j] >= 0.0 and x1 <= pw and y1 <= ph) or (
+                    0 < j < _RING and ux == 0.0 and uy == 0.0):       # slides: labels of lines only
+                rank[j] = np.inf
+                continue
+            # clear of strokes: the cells whose centres lie in the box (less TOL) hold no sample
+            i0 = int(min(max((x0[j] + TOL) * (1.0 / CELL) + 0.5, 0.0), nx))
+            i1 = int(min(max((x1 - TOL) * (1.0 / CELL) + 0.5, 0.0), nx))
+            j0 = int(min(max((y0[j] + TOL) * (1.0 / CELL) + 0.5, 0.0), ny))
+            j1 = int(min(max((y1 - TOL) * (1.0 / CELL) + 0.5, 0.0), ny))
+            cnt = table[j1, i1] - table[j0, i1] - table[j1, i0] + table[j0, i0]
+            # the clear spots in their order, then the others by how many stroke samples they cover
+            rank[j] = j if cnt == 0 else (cnt + 1.0) * n + j
+        order = np.argsort(rank)
+        for k in range(_TRIES):   # the first that meets no box placed before
+            j = order[k]
+            if rank[j] == np.inf:
                 break
-    return took
+            x1, y1 = x0[j] + w, y0[j] + h
+            c = 0
+            while c < p and not (x0[j] < boxes[c, 2] and boxes[c, 0] < x1 and y0[j] < boxes[c, 3] and boxes[c, 1] < y1):
+                c += 1
+            if c == p:
+                boxes[p, 0], boxes[p, 1], boxes[p, 2], boxes[p, 3] = x0[j], y0[j], x1, y1
+                p += 1
+                out[i, 0], out[i, 1], out[i, 2], out[i, 3], out[i, 4] = j, dx[j], dy[j], fx[j], fy[j]
+                break
+    return out
 
 
 _JIT: dict = {}
@@ -262,70 +307,27 @@ def place_labels(pic, font_px: float, char_em: float) -> None:
     # every candidate box of every label: the asked spot, slides along its line (a label that
     # has one) on either side, then two rings of eight around its anchor
     parts = [p for _, p in free]
-    m = len(parts)
     num = itemgetter("x", "y", "dx", "dy")
-    q = np.empty((m, 9))
+    q = np.empty((len(parts), 9))
     q[:, :4] = [num(p) for p in parts]
     q[:, 4] = [ALIGN_X[p["ha"]] for p in parts]
     q[:, 5] = [ALIGN_Y[p["va"]] for p in parts]
     q[:, 6] = [len(p["text"]) for p in parts]
     q[:, 7:] = [p.get("along", _NOT_ALONG) for p in parts]
-    qx = (q[:, 0:1] - bx0) * kx
-    qy = (q[:, 1:2] - by0) * ky
-    dx0, dy0, w = q[:, 2:3], q[:, 3:4], em * q[:, 6:7]
-    ux, uy = q[:, 7:8], q[:, 8:9]
-    a0 = dx0 * ux + dy0 * uy                         # the asked offset: along the line and across it
-    vx, vy = dx0 - a0 * ux, dy0 - a0 * uy
-    g = np.hypot(vx, vy)
-    flat = g < 1e-9
-    g[flat] = 1.0
-    sx = _SIDE * np.where(flat, -uy, vx / g)        # (m, 13): the side of each slide, a unit vector
-    sy = _SIDE * np.where(flat, ux, vy / g)
-    g[flat] = 0.0
-    g = np.maximum(g, 6.0)
-    t = a0 + _SHIFT * (2.0 * h)
-    r = np.maximum(np.hypot(dx0, dy0), 6.0) * _RADII + _REACH * h       # (m, 16): the rings' radii
-    n = _RING + 16
-    dx, dy, fx, fy = np.empty((4, m, n))
-    dx[:, :1], dx[:, 1:_RING], dx[:, _RING:] = dx0, t * ux + g * sx, r * _RING_X
-    dy[:, :1], dy[:, 1:_RING], dy[:, _RING:] = dy0, t * uy + g * sy, r * _RING_Y
-    fx[:, :1], fx[:, 1:_RING], fx[:, _RING:] = q[:, 4:5], (sx <= 0.3) * (0.5 + 0.5 * (sx < -0.3)), _FX2
-    fy[:, :1], fy[:, 1:_RING], fy[:, _RING:] = q[:, 5:6], (sy <= 0.3) * (0.5 + 0.5 * (sy < -0.3)), _FY2
-    x0 = qx + dx - fx * w
-    y0 = qy + dy - fy * h
-    x1, y1 = x0 + w, y0 + h
-    inside = (x0 >= 0.0) & (y0 >= 0.0) & (x1 <= pw) & (y1 <= ph)
-    inside[:, 1:_RING] &= (ux != 0.0) | (uy != 0.0)     # slides: labels of lines only
-    # clear of strokes: the cells whose centres lie in the box (less TOL) hold no sample
-    table = _table(pic, kinds)
-    ny, nx = table.shape[0] - 1, table.shape[1] - 1
-    i0 = np.clip(((x0 + TOL) * (1.0 / CELL) + 0.5).astype(np.intp), 0, nx)    # the cells whose centres
-    i1 = np.clip(((x1 - TOL) * (1.0 / CELL) + 0.5).astype(np.intp), 0, nx)    # are in the box
-    j0 = np.clip(((y0 + TOL) * (1.0 / CELL) + 0.5).astype(np.intp), 0, ny) * (nx + 1)
-    j1 = np.clip(((y1 - TOL) * (1.0 / CELL) + 0.5).astype(np.intp), 0, ny) * (nx + 1)
-    flat_table = table.ravel()
-    cnt = flat_table[j1 + i1] - flat_table[j0 + i1] - flat_table[j1 + i0] + flat_table[j0 + i0]
-
-    # the clear spots in their order, then the others by how many stroke samples they cover
-    rank = (cnt + 1.0) * n
-    rank[cnt == 0] = 0.0
-    rank += np.arange(n)
-    rank[~inside] = np.inf
-    best = np.argsort(rank, 1)[:, :_TRIES]
-    best += np.arange(0, m * n, n)[:, None]          # flat indices
-    tries = np.minimum(inside.sum(1), _TRIES)
-    flat_x0, flat_y0 = x0.ravel(), y0.ravel()
-    took = _compiled(_first_free)(flat_x0[best], flat_y0[best], w.ravel(), h, tries, boxes, len(texts))
-    for part, hide in zip(parts, (took < 0).tolist()):
-        if hide:         # no free place: the label hides (the element keeps its hover text)
+    a0 = q[:, 2] * q[:, 7] + q[:, 3] * q[:, 8]       # the asked offset: along the line and across it
+    g0 = np.hypot(q[:, 2] - a0 * q[:, 7], q[:, 3] - a0 * q[:, 8])
+    r0 = np.maximum(np.hypot(q[:, 2], q[:, 3]), 6.0)
+    view = tuple(float(v) for v in (bx0, by0, kx, ky, em, h, pw, ph))
+    took = _compiled(_place)(q, a0, g0, r0, view, _table(pic, kinds), boxes, len(texts))
+    moved = []
+    for part, (spot, *new) in zip(parts, took.tolist()):
+        if spot < 0:     # no free place: the label hides (the element keeps its hover text)
             part["hidden"] = True
-        else:
-            part.pop("hidden", None)
-    spot = best[np.arange(m), took]
-    moved = np.flatnonzero((took >= 0) & (spot != np.arange(0, m * n, n)))      # not the asked spot
-    if len(moved):       # the moved labels' new offsets and alignments
-        spot = spot[moved]
-        for i, dx_, dy_, fx_, fy_ in zip(moved.tolist(), np.round(dx.ravel()[spot], 2).tolist(),
-                                         np.round(dy.ravel()[spot], 2).tolist(),
-                                         fx.ravel()[spot].tolist(), fy.ravel()[spot].tolist()):
-            parts[i]["dx"], parts[i]["dy"], parts[i]["ha"], parts[i]["va"] = dx_, dy_, _HA_OF[fx_], _VA_OF[fy_]
+            continue
+        part.pop("hidden", None)
+        if spot > 0:     # not the asked spot: its new offset and alignment
+            moved.append((part, new))
+    if moved:
+        dxy = np.round([new[:2] for _, new in moved], 2).tolist()
+        for (part, (_, _, fx, fy)), (dx, dy) in zip(moved, dxy):
+            part["dx"], part["dy"], part["ha"], part["va"] = dx, dy, _HA_OF[fx], _VA_OF[fy]
