@@ -18,6 +18,7 @@ import traitlets
 
 from planargeo.draw.pictures._words import words_data
 from planargeo.errors import DegenerateGeometryError, InputError
+from planargeo.widgets._motion import Budget, refusal_on_picture
 from planargeo.widgets.controls import cached
 from planargeo.widgets.handles import Handle
 
@@ -316,3 +317,17 @@ class SceneTime:
     def play_step(self, values, dt):
         t = time_value(values["t (s)"], self.t_end) + float(dt)
         return None if t > self.t_end + 1e-9 else {"t (s)": time_text(t)}
+
+    def run_at(self, key, start, text, step, checkpoint: float, evals: int):
+        """``(run, t, state, drift, events)`` at the time ``text`` of the run ``key`` (made by
+        ``start()``), kept before it is integrated (a refused time's checkpoints stay); ``step(budget)``
+        is its step (:func:`run_to`), one update spends at most ``evals`` evaluations."""
+        runs = self._cache("_runs")
+        run = runs.get(key) or start()
+        t = time_value(text, self.t_end)
+        keep_run(runs, key, run)
+        budget = Budget(evals)
+        return (run, t, *run_to(run, t, checkpoint, step(budget), budget))
+
+    def figure_message(self, exc):
+        return refusal_on_picture(str(exc)) or super().figure_message(exc)

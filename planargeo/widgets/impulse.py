@@ -25,7 +25,7 @@ import numpy as np
 
 from planargeo.draw.pictures.impulse import impulse_picture
 from planargeo.scenes.impulse import BODIES, body_outline, impulse
-from planargeo.widgets._explorer import Described, arrow_handle, grown_view, xy_handle
+from planargeo.widgets._explorer import Described, arrow_handle, grown_view, time_step, xy_handle
 from planargeo.widgets.base import Explorer, Step, point_text
 
 __all__ = ["ImpulseExplorer"]
@@ -84,8 +84,7 @@ class ImpulseExplorer(Described, Explorer):
                 arrow_handle(self, "blow tip", "strike x", "strike y", "strike angle", "J", per=ARROW / 2)]
 
     def play_step(self, values, dt):
-        t = float(values["t"]) + float(dt)
-        return None if t > T_MAX + 1e-12 else {"t": min(t, T_MAX)}
+        return time_step(values, dt, "t", T_MAX)
 
     # ------------------------------------------------------------------ state
     def compute(self, values, changed):

@@ -35,37 +35,30 @@ from planargeo.widgets.base import Explorer, Handle, Step
 
 __all__ = ["ScrewSumExplorer"]
 
-_TWIST_KINDS = ("rotation", "translation")
-_WRENCH_KINDS = ("force", "couple")
 #: the kinds each mode adds: a twist is a rotation or a translation, a wrench a force or a couple
-KINDS = {"twists": _TWIST_KINDS, "wrenches": _WRENCH_KINDS}
+KINDS = {"twists": ("rotation", "translation"), "wrenches": ("force", "couple")}
 #: a kind's counterpart in the other mode (a finite pole / line, or the ideal one)
 _OTHER = {"rotation": "force", "translation": "couple", "force": "rotation", "couple": "translation"}
-#: the size slider's label per kind (symbol and unit), k = screw 1 or 2
-_SIZE_LABEL = {"rotation": "ω{k} (rad/s)", "translation": "speed u{k} (m/s)",
-               "force": "force F{k} (N)", "couple": "moment τ{k} (N·m)"}
+#: each kind's size: its symbol, unit and the word before them in its slider's label
+_SIZE = {"rotation": ("ω", "rad/s", ""), "translation": ("u", "m/s", "speed "),
+         "force": ("F", "N", "force "), "couple": ("τ", "N·m", "moment ")}
 _SUBSCRIPT = {1: "₁", 2: "₂"}
 #: the sum's components: a twist [vx, vy, ω], a wrench [fx, fy, τ] (about the origin)
 SUM_UNITS = {"twists": ("m/s", "m/s", "rad/s"), "wrenches": ("N", "N", "N·m")}
 
 
+def _size_label(kind: str, k: int) -> str:
+    """The size slider's label of screw ``k`` of ``kind``: ``"speed u₁ (m/s)"``."""
+    symbol, unit, word = _SIZE[kind]
+    return f"{word}{symbol}{_SUBSCRIPT[k]} ({unit})"
+
+
 def zero_screw_message(kind: str, k: int) -> str:
-    """Why a screw of ``kind`` and size 0 is refused, in the symbols its slider and picture show.
+    """Why screw ``k`` (1 or 2) of ``kind`` and size 0 is refused, in the symbols its slider and picture show.
 
     A zero twist is no motion and a zero wrench no load: neither is a point or a line (not even
     one at infinity), so there is nothing to add.  A pure translation or a couple is an ordinary
     value, offered as the other kind of the screw's menu.
-
-    Parameters
-    ----------
-    kind : {"rotation", "translation", "force", "couple"}
-        The screw's kind.
-    k : {1, 2}
-        The screw.
-
-    Returns
-    -------
-    str
 
     Examples
     --------
@@ -75,9 +68,8 @@ def zero_screw_message(kind: str, k: int) -> str:
     τ₂ = 0 N·m makes f₂ the zero wrench: no load, so no line to add. Choose τ₂ ≠ 0.
     """
     s = _SUBSCRIPT[k]
-    symbol, unit = {"rotation": ("ω", "rad/s"), "translation": ("u", "m/s"),
-                    "force": ("F", "N"), "couple": ("τ", "N·m")}[kind]
-    twist = kind in _TWIST_KINDS
+    symbol, unit, _word = _SIZE[kind]
+    twist = kind in KINDS["twists"]
     text = (f"{symbol}{s} = 0 {unit} makes {'v' if twist else 'f'}{s} the zero "
             f"{'twist: no motion, so no pole' if twist else 'wrench: no load, so no line'} to add. "
             f"Choose {symbol}{s} ≠ 0")
@@ -156,7 +148,7 @@ class ScrewSumExplorer(Described, Explorer):
             c[f"kind{k}"] = W.Dropdown(options=offered, value=offered[0], description=f"screw {k}")
             c[f"x{k}"] = Step(-3, 3, 0.05, x, f"x{sub} (m)")
             c[f"y{k}"] = Step(-3, 3, 0.05, y, f"y{sub} (m)")
-            c[f"size{k}"] = Step(-3, 3, 0.05, mag, _SIZE_LABEL[offered[0]].format(k=sub))
+            c[f"size{k}"] = Step(-3, 3, 0.05, mag, _size_label(offered[0], k))
             c[f"angle{k}"] = Step(-180, 180, 5, ang, f"angle{sub} (deg)")
         return c
 
@@ -234,7 +226,7 @@ class ScrewSumExplorer(Described, Explorer):
         v = self.values
         for k in (1, 2):   # the size slider names what it sets
             w = self.controls[f"size{k}"]
-            label = _SIZE_LABEL.get(v[f"kind{k}"], "size{k}").format(k=_SUBSCRIPT[k])
+            label = _size_label(v[f"kind{k}"], k)
             if w.description != label:
                 w.description = label
         out = {}

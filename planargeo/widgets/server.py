@@ -1,24 +1,7 @@
-"""Jupyter server setting that sends the explorers' messages at once (issue 21).
-
-Each drag or slider step is one small request from the page and a few small replies. Jupyter's
-kernel websockets keep Nagle's algorithm on: a small reply written while the previous one is not yet
-acknowledged waits for the browser's delayed acknowledgement, about 40 ms on Linux. Measured in
-JupyterLab on the 10-link chain (``benchmarks/page_ab.py``): the empty round trip went from 54 to
-19–28 ms and a drag step from 67–69 to 51–53 ms with the delay off.
-
-``make lab`` and ``make app`` use it. For a Jupyter server of your own, add to its configuration
-(``jupyter_server_config.py``)::
-
-    c.ServerApp.kernel_websocket_connection_class = (
-        "planargeo.widgets.server.PromptKernelConnection")
-
-and for Voila, ``c.Voila.kernel_websocket_connection_class`` likewise.
-
-JupyterLab also swaps the browser tab's icon at every busy and idle message of the kernel, so twice
-per step, and fetches the new icon each time: :func:`quiet_page_config` switches that plugin off
-(:data:`QUIET_LAB`), and ``make lab`` uses it. Measured the same way: the empty round trip went from
-20 to 16 ms and a drag step from 46 to 39 ms. The kernel's state still shows in the notebook's
-toolbar and status bar.
+"""Jupyter server settings that send the explorers' messages at once (issue 21): TCP_NODELAY on the
+kernel websocket (:class:`PromptKernelConnection`, without it a small reply waits ~40 ms for the
+browser's delayed acknowledgement) and JupyterLab's busy tab icon off (:func:`quiet_page_config`).
+``make lab`` and ``make app`` use them; ``docs/serving.md`` has the configuration and measurements.
 """
 from __future__ import annotations
 

@@ -11,6 +11,7 @@ crank pin (sets ``ψ``) or the piston (sets its height).
 from __future__ import annotations
 
 import math
+from functools import partial
 
 import ipywidgets as W
 import numpy as np
@@ -21,9 +22,7 @@ from planargeo.errors import InputError, PlanargeoError, SceneError
 from planargeo.scenes.slider_crank import (DEAD_CENTRE_TOL, dead_centre_at, slider_crank_advance,
                                            slider_crank_model, slider_crank_reactions, slider_crank_solve)
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._explorer import (SceneTime, explorer_data, keep_run, run_to, state_handle,
-                                         time_value)
-from planargeo.widgets._motion import Budget, refusal_on_picture
+from planargeo.widgets._explorer import SceneTime, explorer_data, state_handle
 from planargeo.widgets.base import Explorer, Step, Toggle, cached
 
 __all__ = ["SliderCrankExplorer"]
@@ -107,8 +106,6 @@ class SliderCrankExplorer(SceneTime, Explorer):
         p = scenes.parameters("slider-crank")     # the thesis 9.6 masses and lengths
         self.params = {k: p[k] for k in ("m1", "m2", "m3", "r", "t")}
         self.scale = float(p["l"])
-        self._models: dict = {}
-        self._runs: dict = {}                     # initial controls -> checkpoints of the run
         super().__init__(**kw)
 
     def model_for(self, l: float, g: float):
@@ -123,7 +120,7 @@ class SliderCrankExplorer(SceneTime, Explorer):
         -------
         Model
         """
-        return cached(self._models, (l, g), lambda: slider_crank_model(l=l, g=g, **self.params))
+        return cached(self._cache("_models"), (l, g), lambda: slider_crank_model(l=l, g=g, **self.params))
 
     def make_controls(self):
         return {
@@ -166,45 +163,39 @@ class SliderCrankExplorer(SceneTime, Explorer):
                 state_handle(self, "piston", lambda st: st["sol"].data.pose[2, :2], drag_piston)]
 
     # ------------------------------------------------------------------ state
-    def _run_state(self, model, run, t, l, drive):
-        """``(psi, psidot, drift, passed)`` at time ``t`` of ``run`` (UPDATE_EVALS at most)."""
-        r = self.params["r"]
-        budget = Budget(UPDATE_EVALS)
-
-        def step(state, h, t0):
-            psi, psidot = state
-            try:
-                out = slider_crank_advance(model, psi, psidot, h, r, l, drive, rtol=self.play_rtol,
-                                           atol=self.play_rtol * 1e-2)
-            except PlanargeoError as exc:     # its times are the step's own: say where the step began
-                exc.args = (f"the motion stopped in its step from t = {t0:.4g} s (computed up to there, kept): "
-                            f"{exc}",)
-                raise
-            budget.charge(out["nfev"])
-            turn = out["psi"] - psi
-            passed = [(t0 + (h * (a - psi) / turn if turn else 0.0), name) for name, a in out["dead_centres"]]
-            return (out["psi"], out["psidot"]), out["position_residual"], passed
-
-        (psi, psidot), drift, passed = run_to(run, t, CHECKPOINT, step, budget)
-        return psi, psidot, drift, passed
+    def _step(self, model, l, drive, budget, state, h, t0):
+        """A step of a run (:func:`run_to`): ``(state, residual, dead centres passed)``."""
+        psi, psidot = state
+        try:
+            out = slider_crank_advance(model, psi, psidot, h, self.params["r"], l, drive, rtol=self.play_rtol,
+                                       atol=self.play_rtol * 1e-2)
+        except PlanargeoError as exc:     # its times are the step's own: say where the step began
+            exc.args = (f"the motion stopped in its step from t = {t0:.4g} s (computed up to there, kept): "
+                        f"{exc}",)
+            raise
+        budget.charge(out["nfev"])
+        turn = out["psi"] - psi
+        passed = [(t0 + (h * (a - psi) / turn if turn else 0.0), name) for name, a in out["dead_centres"]]
+        return (out["psi"], out["psidot"]), out["position_residual"], passed
 
     def compute(self, values, changed):
         # the state at t of the run from the initial crank state, the loop closed (9.5, 9.61)
-        psi0 = math.radians(values["crank angle (deg)"])
+        psi0, speed = math.radians(values["crank angle (deg)"]), float(values["crank speed"])
         l, g = float(values["rod length"]), float(values["gravity"])
         r, thick = self.params["r"], self.params["t"]
         model = self.model_for(l, g)
         drive = values["drive"]
-        key = (psi0, float(values["crank speed"]), drive, l, g)
-        run, first = self._runs.get(key), None
-        if run is None:
-            first = slider_crank_solve(model, psi0, float(values["crank speed"]), r, l, thick, drive)
-            run = {"ck": [(psi0, float(values["crank speed"]))], "drift": [0.0], "events": [],
-                   "E0": float(sum(energy(model, data=first[2].data)))}
-        t = time_value(values["t (s)"], T_END)
-        # kept before the integration: the checkpoints of a refused time stay for the next ask
-        keep_run(self._runs, key, run)
-        psi, psidot, drift, passed = self._run_state(model, run, t, l, drive)
+        first = None
+
+        def start():
+            nonlocal first
+            first = slider_crank_solve(model, psi0, speed, r, l, thick, drive)
+            return {"ck": [(psi0, speed)], "drift": [0.0], "events": [],
+                    "E0": float(sum(energy(model, data=first[2].data)))}
+
+        run, t, (psi, psidot), drift, passed = self.run_at(
+            (psi0, speed, drive, l, g), start, values["t (s)"],
+            lambda budget: partial(self._step, model, l, drive, budget), CHECKPOINT, UPDATE_EVALS)
         if first is not None and (psi, psidot) == run["ck"][0]:    # at the start (a drag): solved above
             q, qd, sol, h = first
         else:
@@ -270,7 +261,7 @@ class SliderCrankExplorer(SceneTime, Explorer):
     def figure_message(self, exc):
         text = str(exc)
         short = next((s for key, s in _SHORT if key in text), None)
-        return wrap_message(short or refusal_on_picture(text) or super().figure_message(exc))
+        return wrap_message(short or super().figure_message(exc))
 
 
 #: the short text drawn for a refused state, by a part of its message (the first that matches)

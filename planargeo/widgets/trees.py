@@ -11,6 +11,7 @@ Drag the tips of bodies 1 and 2 to set their angles (:func:`~planargeo.scenes.tr
 from __future__ import annotations
 
 import math
+from functools import partial
 
 import ipywidgets as W
 import numpy as np
@@ -22,9 +23,8 @@ from planargeo.errors import InputError, PlanargeoError
 from planargeo.scenes.trees import (FIG91_ANGLES, tree_advance, tree_dof, tree_model, tree_pose, tree_reactions,
                                     tree_solve)
 from planargeo.simulate.integrate import energy
-from planargeo.widgets._explorer import (Described, SceneTime, explorer_data, keep_run, run_to,
-                                         state_handle, time_value)
-from planargeo.widgets._motion import Budget, refusal_on_picture
+from planargeo.widgets._explorer import Described, SceneTime, explorer_data, run_to, state_handle, time_value
+from planargeo.widgets._motion import Budget
 from planargeo.widgets.base import Explorer, Step, Toggle, cached
 
 __all__ = ["TreeExplorer"]
@@ -165,24 +165,15 @@ class TreeExplorer(Described, SceneTime, Explorer):
 
     # ------------------------------------------------------------------- Play (SceneTime: t from 0 to T_END)
     @staticmethod
-    def _stepper(model, budget):
-        """The step of a run: ``(state, h, t0) -> (state, residual, events)`` (:func:`run_to`)."""
-        def step(state, h, t0):
-            try:
-                out = tree_advance(model, *state, h, rtol=PLAY_RTOL, atol=PLAY_RTOL * 1e-2)
-            except PlanargeoError as exc:
-                raise PlanargeoError(f"the loops locked at t ≈ {t0:.2f} s: {exc}") from exc
-            budget.charge(out["nfev"])
-            return (out["q"], out["qd"]), out["position_residual"], [(t0 + float(e["t"]), e["kind"])
-                                                                     for e in out["events"]]
-
-        return step
-
-    def _run_state(self, model, run: dict, t: float):
-        """``(q, qd, drift, events)`` at scene time ``t`` of ``run`` (UPDATE_EVALS at most)."""
-        budget = Budget(UPDATE_EVALS)
-        (q, qd), drift, events = run_to(run, t, CHECKPOINT, self._stepper(model, budget), budget)
-        return q, qd, drift, events
+    def _step(model, budget, state, h, t0):
+        """A step of a run (:func:`run_to`): ``(state, residual, events)``."""
+        try:
+            out = tree_advance(model, *state, h, rtol=PLAY_RTOL, atol=PLAY_RTOL * 1e-2)
+        except PlanargeoError as exc:
+            raise PlanargeoError(f"the loops locked at t ≈ {t0:.2f} s: {exc}") from exc
+        budget.charge(out["nfev"])
+        return (out["q"], out["qd"]), out["position_residual"], [(t0 + float(e["t"]), e["kind"])
+                                                                 for e in out["events"]]
 
     def _run_key(self, values):
         """``(closed, model, key)``: the run of ``values`` is ``_runs[key]``."""
@@ -208,7 +199,7 @@ class TreeExplorer(Described, SceneTime, Explorer):
         try:
             while len(run["ck"]) <= last:
                 n = len(run["ck"])
-                run_to(run, n * CHECKPOINT, CHECKPOINT, self._stepper(model, budget), budget)
+                run_to(run, n * CHECKPOINT, CHECKPOINT, partial(self._step, model, budget), budget)
                 if time.perf_counter() >= end:
                     break
         except PlanargeoError:           # the frame that reaches it says why
@@ -220,18 +211,11 @@ class TreeExplorer(Described, SceneTime, Explorer):
         closed, model, key = self._run_key(values)
         _c, L, dof = self.geometry(closed)
         a1, a2, speed = float(values["body 1 angle (deg)"]), float(values["body 2 angle (deg)"]), float(values["speed"])
-        pose_key = (closed, a1, a2)
-        poses, runs = self._cache("_poses"), self._cache("_runs")   # (q(0), speeds); checkpoints
-        pose = poses.get(pose_key)
-        if pose is None:
-            pose = tree_pose(model, math.radians(a1), 1.0, angle2=math.radians(a2))
-        run = runs.get(key)
-        if run is None:
-            run = {"ck": [(pose[0], speed * pose[1])], "drift": [0.0], "events": []}
-        t = time_value(values["t (s)"], T_END)
-        # kept before the integration: the checkpoints of a refused time stay for the next ask
-        keep_run(runs, key, run)
-        q, qd, drift, events = self._run_state(model, run, t)
+        pose_key, poses = (closed, a1, a2), self._cache("_poses")     # q(0) and its speeds, kept
+        pose = poses.get(pose_key) or tree_pose(model, math.radians(a1), 1.0, angle2=math.radians(a2))
+        run, t, (q, qd), drift, events = self.run_at(
+            key, lambda: {"ck": [(pose[0], speed * pose[1])], "drift": [0.0], "events": []}, values["t (s)"],
+            lambda budget: partial(self._step, model, budget), CHECKPOINT, UPDATE_EVALS)
         sol = tree_solve(model, q, qd)                               # 9.5 closed, 9.39-9.43 open
         E = float(sum(energy(model, data=sol.data)))
         if "E0" not in run:                                         # the energy at t = 0, once per run
@@ -298,6 +282,3 @@ class TreeExplorer(Described, SceneTime, Explorer):
             for words in each:
                 out.update({key.format(**words): m.format(**words) for key, m in _WORDS[part].items()})
         return out
-
-    def figure_message(self, exc):
-        return refusal_on_picture(str(exc)) or super().figure_message(exc)
