@@ -1,4 +1,4 @@
-"""What the gallery's drawing modules share (private): the picture check, a few words, the docstrings."""
+"""What the drawing modules share (private): the picture check, a few words, the docstrings."""
 from __future__ import annotations
 
 import math

@@ -79,7 +79,7 @@ def _arc(c, r, t) -> np.ndarray:
 
 
 def _disc(pic: Picture, id: str, xy, radius, *, color: str, width: float, **kw) -> tuple:
-    """A white disc of ``radius`` at ``xy`` (checked), its rim ``width`` points: its centre, radius."""
+    """A white disc of ``radius`` at ``xy``, its rim ``width`` points: its centre and radius."""
     c = _xy(xy, "xy")
     r = number(radius, "radius", positive=True)
     rim = _arc(c, r, np.linspace(0.0, 2 * np.pi, 36, endpoint=False))
@@ -922,8 +922,9 @@ def contact(pic: Picture, id: str, contact, pose, *, body_shape=None, size: floa
                          desc=f"slider contact {name} (9.83): its point on body {contact.a + 1}"))
         return out
     filled = contact.kind == "weld"
-    out.append(added(pic.path, id, pa + _SQUARE * size / 2, role="body", closed=True, fill=DARK if filled else "white", color=DARK,
-                     width=1.0 * PX_PER_PT, z=z, desc=f"{contact.kind} contact {name} (9.49)"))
+    out.append(added(pic.path, id, pa + _SQUARE * size / 2, role="body", closed=True, color=DARK,
+                     fill=DARK if filled else "white", width=1.0 * PX_PER_PT, z=z,
+                     desc=f"{contact.kind} contact {name} (9.49)"))
     return out
 
 
@@ -1108,8 +1109,9 @@ def joint_split(pic: Picture, id: str, s, R, A, f, *, name: str = "", scale: flo
             continue
         tail, tip = arrows[k]
         mid = 0.5 * (tail + tip)
-        force_arrow(pic, eid, w, scale=scale, anchor=mid, role=role, symbol=text, label="", dash=dash,
-                    desc=f"{meaning}: |{text}| = {F:.3g} N", width=LINEWIDTHS[role] * PX_PER_PT)
+        force_arrow(pic, eid, w, scale=scale, anchor=mid, role=role, symbol=text, label="",
+                    dash=dash, desc=f"{meaning}: |{text}| = {F:.3g} N",
+                    width=LINEWIDTHS[role] * PX_PER_PT)
         out[k] = pic.elements[-1]
         d = tip - tail
         L = float(np.hypot(*d))

@@ -450,7 +450,7 @@ def newton_euler(pic, I, a, v, *, scale=None,
                  labels=("$v$", "$a$", "$Ia$", "$p$", "fⁿᵉᵗ = Ia + p"),
                  positions=(-1.0, -0.9, 1.0), toward=(None,) * 5, inertia: bool = True,
                  prefix: str = "") -> dict:
-    """Newton–Euler balance of a body, ``f_net = I a + v ×* I v`` (thesis 4.55–4.56, 5.64, Fig. 4.9).
+    """A body's Newton–Euler balance ``f_net = I a + v ×* I v`` (thesis 4.55–4.56, 5.64, Fig. 4.9).
 
     {parameters pic}
     I : array_like (3, 3)
