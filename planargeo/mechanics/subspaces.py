@@ -116,7 +116,7 @@ def joint_scale(A, s, point):
     Raises
     ------
     ShapeError
-        If ``s`` is not ``(..., 3, k)``.
+        If ``s`` is not ``(..., 3, k)`` with ``k <= 3``.
 
     Examples
     --------
@@ -126,12 +126,7 @@ def joint_scale(A, s, point):
     >>> joint_scale(inertia_matrix(1.0, [1000.5, 0.0], 0.0), [0.0, -1000.0, 1.0], [1000.0, 0.0])
     1.6007810593582121
     """
-    A, P = as_array(A, "A", (3, 3)), as_array(point, "point", (2,))
-    s = as_array(s, "s")
-    if s.ndim == 1:
-        s = s[:, None]
-    if s.ndim < 2 or s.shape[-2] != 3:
-        raise ShapeError(f"s must have shape (..., 3, k), got shape {s.shape}")
+    A, P, s = as_array(A, "A", (3, 3)), as_array(point, "point", (2,)), _space(s, "s")
     if A.ndim == 2 and s.ndim == 2 and P.ndim == 1:      # one joint: the same arithmetic on Python floats
         out = _joint_scale_one(A.tolist(), s.T.tolist(), *P.tolist())
         if out is not None:
