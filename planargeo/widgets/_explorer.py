@@ -286,14 +286,6 @@ def time_step(values: dict, dt: float, name: str, end: float) -> dict | None:
     return None if t >= end else {name: min(t + float(dt), end)}
 
 
-def keep_run(runs: dict, key, run: dict, most: int = 2) -> None:
-    """Keep ``run`` under ``key`` as the newest of ``runs``, the ``most`` newest only."""
-    runs.pop(key, None)
-    runs[key] = run
-    while len(runs) > most:
-        runs.pop(next(iter(runs)))
-
-
 class SceneTime:
     """Play advances a scene time kept as text in ``"t (s)"`` up to :attr:`t_end`; a change of a
     control in :attr:`initial` starts it again."""
@@ -320,12 +312,16 @@ class SceneTime:
 
     def run_at(self, key, start, text, step, checkpoint: float, evals: int):
         """``(run, t, state, drift, events)`` at the time ``text`` of the run ``key`` (made by
-        ``start()``), kept before it is integrated (a refused time's checkpoints stay); ``step(budget)``
-        is its step (:func:`run_to`), one update spends at most ``evals`` evaluations."""
+        ``start()``), kept before it is integrated (a refused time's checkpoints stay) as the newer of
+        two; ``step(budget)`` is its step (:func:`run_to`), one update spends at most ``evals``
+        evaluations."""
         runs = self._cache("_runs")
         run = runs.get(key) or start()
         t = time_value(text, self.t_end)
-        keep_run(runs, key, run)
+        runs.pop(key, None)
+        runs[key] = run
+        while len(runs) > 2:
+            runs.pop(next(iter(runs)))
         budget = Budget(evals)
         return (run, t, *run_to(run, t, checkpoint, step(budget), budget))
 

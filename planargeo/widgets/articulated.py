@@ -5,8 +5,7 @@ after the first bent by ``φ``.  Drawn: each body's rigid inertia ``I_i`` and ar
 ``A_i`` (7.7a) as the real conics of 10.2.3; for the focused body the axes of percussion ``I_k a``
 and ``A_k a`` of the pole ``a`` (5.64-5.68); and, as the *outboard bodies* slider truncates the
 recursion (10.2.2), a chart of ``A_k``'s entries against the steps taken.  *Play* lets the chain
-swing under gravity with joint damping (:class:`planargeo.widgets._motion.Motion`).  Handles: the
-pole ``a``, the chain's tip (``φ``) and the first body's end (``θ₁``).
+swing under gravity with joint damping.
 """
 from __future__ import annotations
 

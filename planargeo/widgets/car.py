@@ -4,9 +4,8 @@ The car turns about its instant centre of rotation (ICR) with the steering fixed
 tyre forces ``R₁μ₁``, ``R₂μ₂`` (6.114, 6.133) are the reactions of that "revolute joint", from
 ``f = T Q + R μ`` (scene ``"car"``).  Drawn with their thesis symbols: the joint ``s`` at the ICR
 (6.115), ``G``, the inertia (6.117), the drive force ``f_A`` (6.120), the bias force ``p`` (6.119)
-and the active-force line ``T`` (6.125).  Drag ``G``, the steering, the ICR or the drive arrow.
-Play drives the car round the corner at the constant ``ω̇`` of 6.131, until it stops or its
-centre of gravity needs more than the tyres hold (``μ·g``: it slides out).
+and the active-force line ``T`` (6.125).  Play drives the car round the corner at the constant
+``ω̇`` of 6.131, until it stops or slides out (its centre of gravity needs more than ``μ·g``).
 """
 from __future__ import annotations
 

@@ -370,22 +370,9 @@ def short_text(text: str) -> str:
 
 
 def shown_as(widget, value) -> tuple[str, str]:
-    """``(name, value)`` of a control for a message, as the student reads it.
-
-    The name is the control's label without its unit; a number gets the label's unit, typed text
-    its quotes, a checkbox on or off.
-
-    Parameters
-    ----------
-    widget : ipywidgets.ValueWidget
-        The control (its ``description`` is the label shown).
-    value : Any
-        The value to say.
-
-    Returns
-    -------
-    tuple of str
-        The name and the value, to be written ``f"{name} = {value}"``.
+    """``(name, value)`` of a control ``widget`` for a message ``f"{name} = {value}"``, as the student
+    reads it: the name is the label without its unit; a number gets the unit, typed text its quotes,
+    a checkbox on or off.
 
     Examples
     --------

@@ -1,10 +1,8 @@
 """Impulse explorer: a bat or a door at rest struck by a short blow (thesis 5.4, 5.7, figure 3.3).
 
-The body is held at its grip (or hinge) or free; a blow of impulse ``ĵ`` strikes it along a line
-you drag.  Shown: the velocity pole after the blow, the pole if free (``I⁻¹ĵ``, 5.64–5.68), the
-reaction impulse of the grip (zero through the centre of percussion, 5.67) and the apparent mass
-along the blow (figure 3.3); *Play* runs the motion after it
-(:func:`planargeo.scenes.impulse.impulse`).
+Shown: the velocity pole after the blow, the pole if free (``I⁻¹ĵ``, 5.64–5.68), the reaction
+impulse of the grip or hinge (zero through the centre of percussion, 5.67) and the apparent mass
+along the blow (figure 3.3); *Play* runs the motion after it (:func:`planargeo.scenes.impulse.impulse`).
 
 Examples
 --------

@@ -3,9 +3,8 @@
 A real conic or an inertia (an imaginary circle, 5.4) maps a movable point ``P`` to its polar
 ``C P`` (5.36) and a movable line ``M`` to its pole ``C⁻¹ M`` (5.37); for a real conic the
 constructions of 5.2.2 follow ``P`` (tangents from outside, Fig 5.2; chords from inside, Fig 5.3).
-The readout shows the invariant ``P·M = pole(M)·polar(P)`` (5.40-5.41).  Ideal elements are
-ordinary: ``P`` at infinity has a diameter for its polar.  Drag ``P``, the line ``M`` by a point
-on it or by a second point (a turn), and the pole of ``M``.
+The readout shows the invariant ``P·M = pole(M)·polar(P)`` (5.40-5.41); ideal elements are
+ordinary (``P`` at infinity has a diameter for its polar).
 
 Examples
 --------

@@ -2,11 +2,8 @@
 
 Two twists add to a twist whose pole lies on the line of their poles at the lever ratio
 ``β = ω2/(ω1+ω2)`` (4.11-4.13); dually two wrenches add to a wrench through the meet of their
-lines (4.4.1).  The arithmetic is :func:`planargeo.screws.add_twists` /
-:func:`~planargeo.screws.add_wrenches`; the readout names the special case reached
-(:mod:`planargeo.screws.special`), passing through ideal elements without an error.  Drag the
-poles and directions of twists, the lines and arrow tips of forces (handles named as the picture
-labels them: ``"v₁"``, ``"v₂ direction"``, ``"f₁"``, ``"f₂ direction"``).
+lines (4.4.1) (:func:`planargeo.screws.add_twists`, :func:`~planargeo.screws.add_wrenches`); the
+readout names the special case reached, ideal elements included.
 
 Examples
 --------

@@ -3,10 +3,8 @@
 The crank angle ``ψ`` and speed ``ψ̇`` at ``t = 0`` set the motion; the constrained algorithm
 (:func:`planargeo.scenes.slider_crank.slider_crank_solve`) gives the closed-loop accelerations and
 every pin and bearing force of the loop (9.61, 9.71), drawn as lines of action.  *Play* advances
-the scene time in slow motion (:attr:`SliderCrankExplorer.time_scale`), free or with the crank
-driven, from checkpoint to checkpoint (the controls alone decide the state; one update spends at
-most :data:`UPDATE_EVALS` evaluations); the readout names the dead centres passed.  Drag the
-crank pin (sets ``ψ``) or the piston (sets its height).
+the scene time in slow motion, free or with the crank driven; the readout names the dead centres
+passed.
 """
 from __future__ import annotations
 

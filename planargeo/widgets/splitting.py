@@ -1,8 +1,7 @@
 """Constrained chain: articulated mobility and chain splitting (thesis sections 7.4-7.6, corrected 7.38a).
 
 A chain of ``n`` identical bodies pinned to the ground, every further joint bent by ``φ``, at rest
-under a couple on the tip (7.44) and gravity.  Split it at a joint (slider, or drag the marker):
-bodies ``1..i`` form the constrained chain with articulated mobility ``Λ_i⁻¹`` and bias ``b_i``
+under a couple on the tip (7.44) and gravity.  Split at a joint, bodies ``1..i`` form the constrained chain with articulated mobility ``Λ_i⁻¹`` and bias ``b_i``
 (7.4.1, the corrected sign of 7.38a, ``docs/errata.md``), the rest the free-floating chain.
 Shown: the acceleration of body ``i`` from the split (7.54), the split joint's force (7.56),
 every body's acceleration pole (7.6), the centre of ``Λ_i⁻¹`` (7.5) and, for ``n = 2``, thesis

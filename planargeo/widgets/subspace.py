@@ -1,10 +1,8 @@
 """Subspace decomposition explorer: one body, one joint, one force (thesis ch. 6, figures 6.1–6.5).
 
-A body at rest held by a joint (revolute, prismatic, pin in a slot, or the plane joint of 4.79)
-and loaded by a force ``f``: drag the joint, its direction, the force's point and its arrow tip.
-Shown live: the motion space ``s`` and reaction space ``R``, ``T`` and ``U``, the wrench split
-``f = T Q + R μ``, the twist split ``I⁻¹f = s ψ + U γ``, ``sᵀIs`` and the power relations as
-residuals that read 0 (:func:`planargeo.scenes.subspace.subspace_state`).
+A body at rest held by a joint and loaded by a force ``f``: the spaces ``s, R, T, U``, the splits
+``f = T Q + R μ`` and ``I⁻¹f = s ψ + U γ``, ``sᵀIs`` and the power relations as residuals that
+read 0 (:func:`planargeo.scenes.subspace.subspace_state`).
 
 Examples
 --------

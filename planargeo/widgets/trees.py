@@ -3,10 +3,8 @@
 Open, the nine links form a tree (Fig 9.1, 9.1-9.2); closed with pins between the tips of bodies
 4 and 7 and of 8 and 9 (Fig 9.2), the constrained algorithm (9.4-9.5) adds the contact forces
 ``F₁``, ``F₂``.  Every pin force ``f₁ … f₉`` (9.61; 9.41 open) and contact force is drawn at its
-joint; *focus* picks one.  *Play* advances the scene time from checkpoint to checkpoint
-(:func:`planargeo.scenes.trees.tree_advance`: the controls alone decide the state; one update
-spends at most :data:`UPDATE_EVALS` evaluations), through the poses where a loop lies flat.
-Drag the tips of bodies 1 and 2 to set their angles (:func:`~planargeo.scenes.trees.tree_pose`).
+joint; *focus* picks one.  *Play* advances the scene time
+(:func:`planargeo.scenes.trees.tree_advance`), through the poses where a loop lies flat.
 """
 from __future__ import annotations
 
