@@ -31,7 +31,8 @@ _shared = entries({
     "not_pair": "Raises\n------\nShapeError\n    A pair of coordinates not of shape (2,).",
     "not_one": "Raises\n------\nShapeError, DegenerateGeometryError\n"
                "    ``array`` not of shape (3,), or zero.",
-}, {f"returns_{kind.lower()}": f"Returns\n-------\n{kind}" for kind in ("Point", "Line", "Conic", "float")})
+}, {f"returns_{kind.lower()}": f"Returns\n-------\n{kind}"
+    for kind in ("Point", "Line", "Conic", "float", "bool")})
 
 
 def _fmt(v: float) -> str:
@@ -130,11 +131,7 @@ class _PointOrLine(_Homogeneous):
     def _signed_distance(self, other) -> float:
         """Signed distance (m) of the point from the line, positive on its left (thesis 5.23).
 
-        {parameters other}
-
-        Returns
-        -------
-        float
+        {parameters other returns_float}
 
         Examples
         --------
@@ -507,9 +504,7 @@ class Conic(_Homogeneous):
         rtol : float, optional
             Relative tolerance of the test.
 
-        Returns
-        -------
-        bool
+        {returns_bool}
 
         Examples
         --------

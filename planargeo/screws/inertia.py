@@ -27,7 +27,8 @@ __all__ = [
 _documented = entries(SCREWS, {
     "pole": "point : array_like, shape (..., 3)\n    Homogeneous acceleration pole (a twist).",
     "impulse": "line : array_like, shape (..., 3)\n    Homogeneous line (an impulse's line of action).",
-    "returns_inertia": "Returns\n-------\nInertia",
+    **{f"returns_{kind.lower()}": f"Returns\n-------\n{kind}"
+       for kind in ("Inertia", "Line", "Point", "Conic")},
     "no_mass": "Raises\n------\nInputError\n    A mass ``inertia[..., 0, 0]`` not positive.",
 })
 
@@ -514,11 +515,7 @@ class Inertia(_Held):
     def percussion_axis(self, point):
         """Axis of percussion of ``point`` as a :class:`planargeo.geometry.Line` (thesis 5.67).
 
-        {parameters pole}
-
-        Returns
-        -------
-        Line
+        {parameters pole returns_line}
 
         Examples
         --------
@@ -531,11 +528,7 @@ class Inertia(_Held):
     def percussion_pole(self, line):
         """Pole whose axis of percussion is ``line``, as a :class:`planargeo.geometry.Point`.
 
-        {parameters impulse}
-
-        Returns
-        -------
-        Point
+        {parameters impulse returns_point}
 
         Examples
         --------
@@ -544,12 +537,11 @@ class Inertia(_Held):
         """
         return Point(self.percussion_pole_array(line))
 
+    @_documented
     def drawable_conic(self):
         """The radius-of-gyration circle (thesis 10.2.3) as a :class:`planargeo.geometry.Conic`.
 
-        Returns
-        -------
-        Conic
+        {returns_conic}
 
         Examples
         --------

@@ -10,8 +10,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from planargeo._validate import as_vec3, as_xy, check_positive, check_tolerance
-from planargeo.errors import DegenerateGeometryError, ShapeError
+from planargeo._validate import as_xy, check_positive, check_tolerance
+from planargeo.errors import DegenerateGeometryError
+from planargeo.geometry.elements import _one as _vector
 from planargeo.geometry.projective import _fit
 from planargeo.geometry._docs import entries
 
@@ -86,10 +87,7 @@ def _case(name: str) -> SpecialCase:
 
 
 def _raw(x, name: str) -> np.ndarray:
-    a = as_vec3(x, name)
-    if a.shape != (3,):
-        raise ShapeError(f"{name} must have shape (3,), got shape {a.shape}")
-    return a + 0.0
+    return _vector(x, name, 3) + 0.0
 
 
 def _single(x, name: str) -> np.ndarray:
