@@ -23,6 +23,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
+from planargeo._validate import check_tolerance
 from planargeo.errors import InputError, PlanargeoError
 from planargeo.files import WORDS_FILE, package_words
 
@@ -170,8 +171,7 @@ def round_off(quantities: dict, info: dict | None = None, tol: float = ZERO_TOL)
     >>> round_off({"a": [3.98e-12, -5.7, 1e-12], "b": 2.5e-11}, {"a": {"unit": "m/s²"}, "b": {"unit": "m/s²"}})
     {'a': [0.0, -5.7, 0.0], 'b': 0.0}
     """
-    if not (isinstance(tol, (int, float)) and math.isfinite(tol) and tol >= 0):
-        raise InputError(f"tol must be a finite non-negative number, got {tol!r}")
+    tol = check_tolerance(tol, "tol")
     info = info or {}
     unit_of = {k: (info.get(k) or {}).get("unit") or f"\0{k}" for k in quantities}
     scale: dict[str, float] = {}
