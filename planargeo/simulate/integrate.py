@@ -23,7 +23,7 @@ from typing import Any, Callable
 
 import numpy as np
 
-from planargeo._validate import as_array, as_scalar, check_tolerance
+from planargeo._validate import as_array, as_scalar
 from planargeo.errors import (InputError, NumericOverflowError, PlanargeoError, ShapeError,
                               SingularConfigurationError, SizeLimitError)
 from planargeo.mechanics.kinematics import check_state, kinematics
@@ -495,7 +495,9 @@ def _options(method, t_end, dt, rtol, atol, max_step, max_steps):
     rtol = as_scalar(rtol, "rtol")
     if not rtol >= 100 * np.finfo(float).eps:
         raise InputError(f"rtol must be at least 100 ε = 2.2e-14 (scipy's floor), got {rtol!r}")
-    atol = check_tolerance(atol, "atol")
+    atol = as_scalar(atol, "atol")
+    if not atol >= 0:
+        raise InputError(f"atol must be non-negative, got {atol!r}")
     max_step = as_scalar(max_step, "max_step", finite=False)
     if not max_step > 0:                # NaN too
         raise InputError(f"max_step must be positive, got {max_step!r}")
