@@ -270,5 +270,26 @@ def test_subspace_state_refuses_a_zero_direction_by_name():
     I = np.diag([1.0, 1.0, 1.0])
     with pytest.raises(DegenerateGeometryError, match="direction"):
         subspace_state("prismatic", (0.0, 0.0), (0.0, 0.0), I, [0.0, 1.0, 0.0])
-    with pytest.raises(DegenerateGeometryError, match="force must be non-zero"):
-        subspace_state("revolute", (0.0, 0.0), (1.0, 0.0), I, [0.0, 0.0, 1.0])
+    with pytest.raises(DegenerateGeometryError, match="force must be non-zero, or the wrench a pure couple"):
+        subspace_state("revolute", (0.0, 0.0), (1.0, 0.0), I, [0.0, 0.0, 0.0])
+
+
+@pytest.mark.parametrize("tau", [1.0, -2.5])
+def test_a_pure_couple_is_an_ordinary_load(tau):
+    """A couple tau (its line the line at infinity) on a body pinned at the origin, by hand.
+
+    Body: m = 2 kg, centre of mass (1, 0), J_c = 0.5 kg·m²; about the pin J_o = J_c + m·1² = 2.5,
+    so the held body turns at θ̈ = tau / J_o: a = [0, 0, θ̈] at the origin.  Newton: the pin's
+    force is I a − f = [0, m θ̈, 0] (the centre of mass's acceleration times m, through the pin).
+    """
+    from planargeo.scenes.subspace import subspace_state
+    m, J_c = 2.0, 0.5
+    I = np.array([[m, 0.0, 0.0], [0.0, m, m * 1.0], [0.0, m * 1.0, J_c + m * 1.0]])
+    st = subspace_state("revolute", (0.0, 0.0), (1.0, 0.0), I, [0.0, 0.0, tau])
+    thdd = tau / (J_c + m)
+    np.testing.assert_allclose(st["Q"], [tau], atol=1e-15)
+    np.testing.assert_allclose(st["s_psi"], [0.0, 0.0, thdd], atol=1e-15)
+    # Newton: the pin's force is m times the centre of mass's acceleration (0, thdd·1) minus nothing
+    # applied (a couple has no force), acting through the pin (moment 0 about the origin)
+    np.testing.assert_allclose(st["reaction"], [0.0, m * thdd, 0.0], atol=1e-14)
+    assert all(abs(r) < 1e-14 for r in st["residuals"].values())

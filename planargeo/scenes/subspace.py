@@ -94,15 +94,14 @@ def subspace_state(joint: str, point, direction, I, force) -> dict:
     InputError
         An unknown joint kind, or non-finite input.
     DegenerateGeometryError
-        A zero joint direction, or a zero applied force (a line needs a force).
+        A zero joint direction, or the zero wrench (a pure couple, on the line at infinity, is taken).
     SingularInertiaError, SingularConfigurationError
         ``I`` not positive definite, or ``sᵀIs`` / ``RᵀI⁻¹R`` singular.
     """
     f = np.asarray(force, dtype=float)
-    if not (f[0] != 0.0 or f[1] != 0.0):
-        got = ("F = 0 N" if f[2] == 0.0 else           # a couple: its line is the line at infinity
-               f"a pure couple of {float(f[2]):.3g} N·m, whose line is at infinity")
-        raise DegenerateGeometryError(f"the applied force must be non-zero to have a finite line, got {got}")
+    if not np.any(f):        # a pure couple is the line at infinity, an ordinary wrench; zero is none
+        raise DegenerateGeometryError("the applied force must be non-zero, or the wrench a pure couple; "
+                                      "got no force and no couple")
     s = motion_space(joint, point, direction)
     R = reaction_space(joint, point, direction)
     dec = Decomposition(I, s, R, name="I")
