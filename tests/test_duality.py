@@ -94,20 +94,18 @@ def test_twist_projectors_are_the_wrench_projectors_transposed():
 
 @pytest.mark.parametrize("wrenches", [False, True])
 def test_one_state_and_many_state_kernels_are_one_road(wrenches):
-    from planargeo.algorithms import kernels
+    """A batch in one call (the many-state kernel) gives, bit for bit, what each state gives alone."""
+    import planargeo as pg
 
     m = random_model(6, seed=24, kinds=("revolute", "prismatic", "fixed"), tree=True, gravity=(0.5, -9.81))
-    tables = kernels.tables(m)
     B = 40
     rng = np.random.default_rng(7)
     q, qd, tau = (np.ascontiguousarray(rng.normal(size=(B, m.nq))) for _ in range(3))
     fe = np.ascontiguousarray(rng.normal(size=(B, m.N, 3))) if wrenches else None
-    qdd, declined = kernels.dynamics_many(False, *tables, q, qd, tau, fe)
-    assert declined == -1
-    back, declined = kernels.dynamics_many(True, *tables, q, qd, qdd, fe)
-    assert declined == -1
+    qdd = pg.forward_dynamics(m, q, qd, tau, fe)
+    back = pg.inverse_dynamics(m, q, qd, qdd, fe)
     np.testing.assert_allclose(back, tau, rtol=1e-9, atol=1e-9 * np.abs(tau).max())
     for b in range(B):
         f = None if fe is None else fe[b]
-        np.testing.assert_array_equal(kernels.dynamics_one(False, *tables, q[b], qd[b], tau[b], f), qdd[b])
-        np.testing.assert_array_equal(kernels.dynamics_one(True, *tables, q[b], qd[b], qdd[b], f), back[b])
+        np.testing.assert_array_equal(pg.forward_dynamics(m, q[b], qd[b], tau[b], f), qdd[b])
+        np.testing.assert_array_equal(pg.inverse_dynamics(m, q[b], qd[b], qdd[b], f), back[b])
