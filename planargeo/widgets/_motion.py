@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 import re
+import time
 
 import numpy as np
 
@@ -134,8 +135,6 @@ class Motion:
         The same steps as :meth:`extend` (the same states, bit for bit); a failure is left for
         :meth:`extend` to report.
         """
-        import time
-
         need = int(math.floor(t / self.chunk)) + 1
         end = time.perf_counter() + float(seconds)
         try:
@@ -151,8 +150,6 @@ class Motion:
     def _steps(self, budget: Budget, until: float | None, cover: float | None = None) -> bool:
         """Steps of the chunk being computed, until it is done (True), past the wall time ``until``
         or, with ``cover``, once its steps reach the time ``cover`` within it (False)."""
-        import time
-
         from scipy.integrate import DOP853, OdeSolution
 
         if self._open is None:

@@ -9,6 +9,7 @@ joint; *focus* picks one.  *Play* advances the scene time
 from __future__ import annotations
 
 import math
+import time
 from functools import partial
 
 import ipywidgets as W
@@ -183,8 +184,6 @@ class TreeExplorer(Described, SceneTime, Explorer):
     def play_ahead(self, values, seconds: float) -> bool:
         # a frame at t integrates from the last checkpoint before t; the checkpoints up to two
         # frames on are integrated here, while the page draws, one at a time for about `seconds`
-        import time
-
         _closed, model, key = self._run_key(values)
         run = self._cache("_runs").get(key)
         if run is None:
