@@ -117,7 +117,7 @@ def test_massless_tip_raises_singular_configuration_with_cond():
     # a point mass sitting on its own revolute joint: s^T A s = 0
     I = [inertia_matrix(1.0, [0.5, 0.0], 0.1), inertia_matrix(1.0, [1.0, 0.0], 0.0)]
     S = [np.array([[0.0], [0.0], [1.0]]), np.array([[0.0], [-1.0], [1.0]])]
-    with pytest.raises(SingularConfigurationError, match="sᵀAs of joint 1 is singular") as e:
+    with pytest.raises(SingularConfigurationError, match="sᵀAs of joint 2 is singular") as e:
         articulated_recursion(I, S, np.zeros((2, 3)), np.zeros((2, 3)), [np.zeros(1)] * 2)
     assert e.value.cond > COND_LIMIT
 

@@ -125,7 +125,7 @@ def test_singular_joint_of_a_tree_raises_with_cond():
     model = Model([Body(1.0, (0.5, 0.0), 0.1), Body(1.0, (0.5, 0.0), 0.1), Body(1.0, (0.0, 0.0), 0.0)],
                   [Joint("revolute"), Joint("revolute", (1.0, 0.0, 0.0)), Joint("revolute", (1.0, 0.0, 0.0))],
                   [-1, 0, 0])
-    with pytest.raises(SingularConfigurationError, match="of joint 2 is singular") as e:
+    with pytest.raises(SingularConfigurationError, match="of joint 3 is singular") as e:
         articulated_mobility(model, np.zeros(3))
     assert e.value.cond == np.inf
 

@@ -92,7 +92,7 @@ def test_singular_state_at_every_entry_point(batch):
     """A point mass on its own pivot: sᵀAs = 0, refused with cond = inf by the one rule."""
     m = Model([Body(1.0, (0.0, 0.0), 0.0)], [Joint("revolute")], [-1])
     z = np.zeros((4, 1)) if batch else np.zeros(1)
-    with pytest.raises(SingularConfigurationError, match="sᵀAs of joint 0 is singular") as e:
+    with pytest.raises(SingularConfigurationError, match="sᵀAs of joint 1 is singular") as e:
         forward_dynamics(m, z, z, z)
     assert e.value.cond == np.inf
     # inverse dynamics needs no inverse: the torque that holds it is zero

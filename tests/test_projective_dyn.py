@@ -156,7 +156,7 @@ def test_thesis_7_41_U2_and_corrected_T2():
 def test_singular_joint_raises_with_cond_array_level():
     I = np.stack([inertia_matrix(1.0, [0.5, 0.0], 0.1), np.zeros((3, 3))])
     S = [np.array([[0.0], [0.0], [1.0]]), np.array([[0.0], [-1.0], [1.0]])]
-    with pytest.raises(SingularConfigurationError, match="sᵀAs of joint 1 is singular") as e:
+    with pytest.raises(SingularConfigurationError, match="sᵀAs of joint 2 is singular") as e:
         projective_solve(I, S, np.zeros((2, 3)), np.zeros((2, 3)), [np.zeros(1)] * 2)
     assert e.value.cond == np.inf
 

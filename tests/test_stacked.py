@@ -293,7 +293,7 @@ def test_erratum_7_38a_sign_in_chain_mobility():
 def test_singular_joint_inertia_raises_with_cond():
     # a point mass on its own revolute axis: s^T A s = 0
     m = Model([Body(1.0, (0.0, 0.0), 0.0)], [Joint("revolute")], [-1])
-    with pytest.raises(SingularConfigurationError, match="sᵀAs of joint 0 is singular") as e:
+    with pytest.raises(SingularConfigurationError, match="sᵀAs of joint 1 is singular") as e:
         forward_dynamics_stacked(m, [0.0], [0.0], [0.0])
     assert e.value.cond > COND_LIMIT
 

@@ -53,7 +53,7 @@ def articulated_body(model: Model, q, qd, tau, f_ext=None) -> Data:
         c = np.einsum("...ij,...j->...i", Ai, data.kappa[..., i, :]) + di
         par = parents[i]
         if k:                                       # a weld passes on A_i and c whole
-            U, D = _checked_gram(Ai, s, f"sᵀAs of joint {i}", data.origin[..., i, :])
+            U, D = _checked_gram(Ai, s, f"sᵀAs of joint {i + 1}", data.origin[..., i, :])
             Dinv = 1.0 / D if k == 1 else np.linalg.inv(D)
             u = tau[..., model.q_slice(i)] - np.einsum("...ij,...i->...j", s, c)
             Dl[i], Ul[i], Dinvl[i], ul[i] = D, U, Dinv, u

@@ -124,7 +124,7 @@ def mobility_recursion(I, S, kappa, p, tau, parents=None, points=None, joint_poi
     Lam, b, T = np.zeros((N, 3, 3)), np.zeros((N, 3)), [None] * N
     for i in range(N):
         Si, Ii = S[i], I[i]
-        gram = _checked_gram(Ii, Si, f"sᵀIs of joint {i}",
+        gram = _checked_gram(Ii, Si, f"sᵀIs of joint {i + 1}",
                              None if joint_points is None else joint_points[i]) if Si.shape[1] else None
         T[i] = Ti = _T(Ii, Si, gram=gram)                   # (6.36)
         G = _effective_mobility(Ii, Si, gram=gram)          # s T^T I^-1 = s (s^T I s)^-1 s^T (6.93)

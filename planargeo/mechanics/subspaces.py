@@ -183,7 +183,8 @@ def singular_joint_error(i: int, cond: float) -> SingularConfigurationError:
     Parameters
     ----------
     i : int
-        Joint index.
+        The model's joint index, counted from 0; the message counts from 1, as the thesis and the
+        pictures do (index 3 is joint 4).
     cond : float
         Its condition number.
 
@@ -201,13 +202,13 @@ def singular_joint_error(i: int, cond: float) -> SingularConfigurationError:
     --------
 
     >>> str(singular_joint_error(3, 2e12))
-    'sᵀAs of joint 3 is singular: the inertia has (almost) nothing along s (condition number 2e+12)'
+    'sᵀAs of joint 4 is singular: the inertia has (almost) nothing along s (condition number 2e+12)'
     """
     if isinstance(i, bool) or not isinstance(i, (int, np.integer)):
         raise InputError(f"i must be a joint index (an int), got {i!r}")
     cond = as_scalar(cond, "cond", finite=False)
     return SingularConfigurationError(
-        f"sᵀAs of joint {i} is singular: the inertia has (almost) nothing along s", cond)
+        f"sᵀAs of joint {i + 1} is singular: the inertia has (almost) nothing along s", cond)
 
 
 # ----------------------------------------------------------------------------- helpers
