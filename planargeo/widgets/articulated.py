@@ -145,7 +145,6 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
 
     spans = ("outboard bodies", -1, NMAX - 1)
 
-    # ------------------------------------------------------------------ controls
     def make_controls(self):
         return {
             "bodies n": Step(1, NMAX, 1, 4, "bodies n", integer=True),
@@ -208,7 +207,6 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
             **self.meanings,
         }
 
-    # ------------------------------------------------------------------ handles and Play
     def handles(self):
         def base_drag(x, y):
             if x == 0 and y == 0:
@@ -227,7 +225,6 @@ class ArticulatedExplorer(Described, ChainBodies, Explorer):
     def play_step(self, values, dt):
         return time_step(values, dt, TIME, T_MAX)
 
-    # ------------------------------------------------------------------ physics
     def _key(self, v):
         return (int(v["bodies n"]), float(v["λ = L/ρ"]), float(v["bend φ (deg)"]), float(v["base θ₁ (deg)"]),
                 float(v["g (m/s²)"]), float(v["damping c"]))

@@ -97,7 +97,6 @@ class CarExplorer(Described, Explorer):
             HEADING: Step(0.0, 360.0, 1.0, 0.0, HEADING),
         }
 
-    # -- physics -------------------------------------------------------------------
     def _scene_of(self, values):
         """The scene ``"car"`` of the control values (the outlines are drawn by gallery Fig 6.6, not here)."""
         d = float(values[RADIUS])
@@ -141,7 +140,6 @@ class CarExplorer(Described, Explorer):
         turn = w0 * tau + 0.5 * wd * tau * tau
         return {SPEED: w1 * d, HEADING: (float(values[HEADING]) + math.degrees(turn)) % 360.0}
 
-    # -- handles ---------------------------------------------------------------------
     def _car_frame(self):
         """``(R, t, res)`` of the state shown: the drawing's placement (:func:`_moves`) and the scene."""
         res = self.state["res"]

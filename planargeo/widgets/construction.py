@@ -146,7 +146,6 @@ class ConstructionExplorer(Explorer):
             self.guarded(lambda ch: self._follow_kind(ch["new"])), names="value")
         self._follow_kind(self.values["construction"])
 
-    # ------------------------------------------------------------------ the chosen construction
     @property
     def construction(self) -> str:
         """The construction shown (a key of :data:`~planargeo.scenes.construction.CONSTRUCTIONS`)."""
@@ -190,7 +189,6 @@ class ConstructionExplorer(Explorer):
             if c.layout.display != display:
                 c.layout.display = display
 
-    # ------------------------------------------------------------------ explorer
     def make_controls(self):
         n = len(construct(self._first).steps)
         c = {"construction": W.Dropdown(options=CHOICES, value=self._first, description="construction",
@@ -273,12 +271,10 @@ class ConstructionExplorer(Explorer):
                                     view=view or self.VIEWS.get(state["kind"], self.VIEW), size=self.figure_px,
                                     all_steps=all_steps, caption=caption, band_below=view is None)
 
-    # ------------------------------------------------------------------ handles
     def handles(self) -> list[Handle]:
         return ([xy_handle(self, *p) for p in _POINTS[self.construction]]
                 + [arrow_handle(self, *d, arm=ARM, flip=True) for d in _DIRECTIONS.get(self.construction, [])])
 
-    # ------------------------------------------------------------------ export
     def export_layers(self, path=None) -> Path:
         """Write the construction as an SVG, each step at full strength in ``<g id="step-K-name">``.
 

@@ -76,7 +76,6 @@ class ImpulseExplorer(Described, Explorer):
             "t": Step(0.0, T_MAX, 0.01, 0.0, "t (s)", tip="time after the blow t (s)"),
         }
 
-    # ------------------------------------------------------------------ handles and Play
     def handles(self):
         return [xy_handle(self, "blow point", "strike x", "strike y"),
                 arrow_handle(self, "blow tip", "strike x", "strike y", "strike angle", "J", per=ARROW / 2)]
@@ -84,7 +83,6 @@ class ImpulseExplorer(Described, Explorer):
     def play_step(self, values, dt):
         return time_step(values, dt, "t", T_MAX)
 
-    # ------------------------------------------------------------------ state
     def compute(self, values, changed):
         return impulse(body=values["body"], support=values["support"], m=float(values["m"]), x=float(values["strike x"]),
                        y=float(values["strike y"]), angle_deg=float(values["strike angle"]), J=float(values["J"]))

@@ -153,7 +153,6 @@ class PercussionExplorer(Described, Explorer):
             out["polygon"] = "used with shape = custom polygon"
         return out
 
-    # -- handles -------------------------------------------------------------------
     def _axis_points(self):
         """(point on the axis nearest ``c``, a second point on it), or None (no finite axis)."""
         st = self.state

@@ -154,7 +154,6 @@ class ProjectiveExplorer(Described, Explorer):
             out["construction"] = "an imaginary conic has no real tangents to construct with"
         return out
 
-    # -- handles -------------------------------------------------------------------
     def _M_points(self):
         """(foot, second point) of the finite line M: its point nearest the origin, one unit on."""
         st = self.state

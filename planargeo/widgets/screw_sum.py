@@ -244,7 +244,6 @@ class ScrewSumExplorer(Described, Explorer):
         return screw_sum_picture(state["mode"], state["c"], anchors=((v["x1"], v["y1"]), (v["x2"], v["y2"])),
                                  view=view or self.limits, size=self.figure_px)
 
-    # ------------------------------------------------------------------ handles
     def handles(self) -> list[Handle]:
         # a handle of a screw of another kind is not draggable now; named as the picture labels
         # the screw (v₁, f₂), since a refused drag names its handle

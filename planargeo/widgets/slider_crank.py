@@ -135,7 +135,6 @@ class SliderCrankExplorer(SceneTime, Explorer):
             "acceleration poles": Toggle(False, "acceleration poles"),
         }
 
-    # ----------------------------------------------------------------- handles
     def handles(self):
         # the crank pin sets ψ; the piston sets its height, the crank keeps its side
         def drag_pin(x, y):
@@ -160,7 +159,6 @@ class SliderCrankExplorer(SceneTime, Explorer):
         return [state_handle(self, "crank pin", lambda st: st["sol"].data.pose[1, :2], drag_pin),
                 state_handle(self, "piston", lambda st: st["sol"].data.pose[2, :2], drag_piston)]
 
-    # ------------------------------------------------------------------ state
     def _step(self, model, l, drive, budget, state, h, t0):
         """A step of a run (:func:`run_to`): ``(state, residual, dead centres passed)``."""
         psi, psidot = state

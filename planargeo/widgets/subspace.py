@@ -96,7 +96,6 @@ class SubspaceExplorer(Explorer):
             out[row] = why
         return out
 
-    # ------------------------------------------------------------------ handles
     def handles(self):
         slides = lambda: JOINT_OPTIONS[shown(self)["joint"]] != "revolute"
         return [xy_handle(self, "joint", "joint x", "joint y"),
@@ -105,7 +104,6 @@ class SubspaceExplorer(Explorer):
                 xy_handle(self, "force point", "force x", "force y"),
                 arrow_handle(self, "force tip", "force x", "force y", "force angle", "F", per=ARROW / 2)]
 
-    # ------------------------------------------------------------------ state
     def compute(self, values, changed):
         m, rho = float(values["m"]), float(values["rho"])
         I = inertia_matrix(m, COM, m * rho * rho)

@@ -130,7 +130,6 @@ class TreeExplorer(Described, SceneTime, Explorer):
 
         return cached(self._cache("_models"), (closed, mass, g), build)
 
-    # ---------------------------------------------------------------- handles
     def handles(self):
         def near(deg, ref):      # turned by whole turns to lie nearest ref
             return deg + 360.0 * round((ref - deg) / 360.0)
@@ -162,7 +161,7 @@ class TreeExplorer(Described, SceneTime, Explorer):
             return np.zeros((0, 2))
         return np.vstack([self.state["sol"].data.pose[:, :2], self.state["tips"]])
 
-    # ------------------------------------------------------------------- Play (SceneTime: t from 0 to T_END)
+    # Play: SceneTime's t from 0 to T_END
     @staticmethod
     def _step(model, budget, state, h, t0):
         """A step of a run (:func:`run_to`): ``(state, residual, events)``."""
