@@ -43,6 +43,8 @@ $(BIN)/python:
 PIP_STAMP      := $(VENV)/.pip-stamp
 KERNEL_SOURCES := planargeo/algorithms/kernels.py planargeo/algorithms/compiled.py
 KERNEL_LIMITS  := planargeo/errors.py planargeo/mechanics/subspaces.py
+# the label placer's two loops (numba too): every picture's labels; compiled with the kernels
+PLACER_SOURCE  := planargeo/draw/_labels.py
 
 $(PIP_STAMP): pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e '.[dev]'
@@ -51,11 +53,12 @@ $(PIP_STAMP): pyproject.toml | $(BIN)/python
 # `make -n lab STAMP=Makefile` (tests/test_readme.py: the set-up taken as done) must not remake this Makefile:
 # GNU make runs the recipe of a rule that remakes a makefile even under -n, so then no rule names it.
 ifneq ($(STAMP),Makefile)
-$(STAMP): $(PIP_STAMP) $(KERNEL_SOURCES) $(KERNEL_LIMITS)
+$(STAMP): $(PIP_STAMP) $(KERNEL_SOURCES) $(KERNEL_LIMITS) $(PLACER_SOURCE)
 	@if [ -f $(STAMP) ] && [ -n "$(filter $(KERNEL_LIMITS),$?)" ]; then \
 	  echo "kernel limits changed ($(filter $(KERNEL_LIMITS),$?)): the kernels are compiled afresh"; \
 	  touch planargeo/algorithms/kernels.py; fi
 	$(BIN)/python -m planargeo.algorithms.compiled --warm
+	$(BIN)/python -c "from planargeo.draw._labels import warm; warm()"
 	@touch $(STAMP)
 endif
 

@@ -20,7 +20,7 @@ def _fake_tree(tmp_path: Path) -> tuple[Path, Path]:
     that logs its arguments instead of installing or compiling."""
     shutil.copy(ROOT / "Makefile", tmp_path / "Makefile")
     for rel in ("pyproject.toml", "planargeo/algorithms/kernels.py", "planargeo/algorithms/compiled.py",
-                "planargeo/errors.py", "planargeo/mechanics/subspaces.py"):
+                "planargeo/errors.py", "planargeo/mechanics/subspaces.py", "planargeo/draw/_labels.py"):
         (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
         (tmp_path / rel).write_text("# stand-in\n")
     log = tmp_path / "calls.log"
@@ -32,13 +32,14 @@ def _fake_tree(tmp_path: Path) -> tuple[Path, Path]:
 
 
 def _install(tmp_path: Path, log: Path) -> list[str]:
-    """``make install`` in the fake tree: the python calls it made ("pip" / "warm"), in order."""
+    """``make install`` in the fake tree: the python calls it made ("pip" / "warm" / "placer"), in order."""
     if log.exists():
         log.unlink()
     subprocess.run(["make", "--no-print-directory", "install"], cwd=tmp_path, check=True, capture_output=True,
                    text=True, timeout=60)
     calls = log.read_text().splitlines() if log.exists() else []
-    return ["pip" if "pip install" in c else "warm" if "compiled --warm" in c else c for c in calls]
+    return ["pip" if "pip install" in c else "warm" if "compiled --warm" in c else
+            "placer" if "_labels import warm" in c else c for c in calls]
 
 
 def _newer(path: Path) -> None:
@@ -50,18 +51,21 @@ def _newer(path: Path) -> None:
 @pytest.mark.skipif(shutil.which("make") is None, reason="make is not installed")
 def test_the_kernel_cache_is_filled_again_when_a_kernel_source_changes(tmp_path):
     log, _ = _fake_tree(tmp_path)
-    assert _install(tmp_path, log) == ["pip", "warm"]          # a fresh clone: install, then fill the cache
+    both = ["warm", "placer"]                                  # the kernels, then the label placer's loops
+    assert _install(tmp_path, log) == ["pip", *both]           # a fresh clone: install, then fill the cache
     assert _install(tmp_path, log) == []                       # nothing changed: nothing to do
     kernels = tmp_path / "planargeo/algorithms/kernels.py"
     _newer(kernels)
-    assert _install(tmp_path, log) == ["warm"]                 # an edited kernel: compiled again, no re-install
+    assert _install(tmp_path, log) == both                     # an edited kernel: compiled again, no re-install
     before = kernels.stat().st_mtime
     _newer(tmp_path / "planargeo/errors.py")                   # COND_LIMIT is frozen into the machine code
-    assert _install(tmp_path, log) == ["warm"]
+    assert _install(tmp_path, log) == both
     assert kernels.stat().st_mtime > before                    # numba sees a new kernels.py: no stale load
     assert _install(tmp_path, log) == []                       # and that touch asks for nothing more
+    _newer(tmp_path / "planargeo/draw/_labels.py")
+    assert _install(tmp_path, log) == both                     # an edited placer: its loops compiled again
     _newer(tmp_path / "pyproject.toml")
-    assert _install(tmp_path, log) == ["pip", "warm"]          # new dependencies: install, then the cache
+    assert _install(tmp_path, log) == ["pip", *both]           # new dependencies: install, then the cache
     # a dry run with the set-up taken as done (tests/test_readme.py) runs nothing and leaves the Makefile alone
     _newer(kernels)
     made = (tmp_path / "Makefile").stat().st_mtime_ns

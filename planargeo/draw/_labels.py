@@ -27,6 +27,7 @@ Examples
 from __future__ import annotations
 
 import math
+import sys
 from operator import itemgetter
 
 import numpy as np
@@ -269,8 +270,45 @@ def _compiled(f):
     if f not in _JIT:
         from numba import njit
 
-        _JIT[f] = njit(cache=True, nogil=True)(f)
+        _JIT[f] = jit = njit(cache=True, nogil=True)(f)
+        interactive = "ipykernel" in sys.modules or getattr(sys.stderr, "isatty", lambda: False)()
+        if interactive and not _cached(jit):
+            print("planargeo: compiling the label placer for this machine (once; a few seconds). "
+                  "`make install` does it ahead of time.", file=sys.stderr, flush=True)
     return _JIT[f]
+
+
+def _cached(jit) -> bool:
+    """Whether ``jit`` needs no compiling: numba's cache holds its code for the current source, or
+    numba is off (``NUMBA_DISABLE_JIT=1``: plain Python)."""
+    if not hasattr(jit, "_cache"):
+        return True
+    try:
+        return bool(jit._cache._cache_file._load_index())
+    except Exception:                                      # (unreadable or foreign files: not cached)
+        return False
+
+
+def warm() -> bool:
+    """Compile (or load from numba's cache) the placer's loops, as the first picture would.
+
+    Returns
+    -------
+    bool
+        Whether nothing needed compiling (both loops were in numba's cache, or numba is off).
+
+    Examples
+    --------
+    >>> isinstance(warm(), bool)
+    True
+    """
+    from planargeo.draw.picture import Picture
+
+    cached = all(_cached(_compiled(f)) for f in (_count, _place))
+    pic = Picture((-1, 1, -1, 1), size=(200, 200), ticks=False)
+    pic.line("l", [0.0, 1.0, 0.0], symbol="l")
+    pic.to_dict()
+    return cached
 
 
 def place_labels(pic, font_px: float, char_em: float) -> None:
