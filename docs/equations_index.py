@@ -1,8 +1,9 @@
 """Build ``docs/equations.md``: the thesis's equation numbers → the functions that implement them.
 
 Every implementing function cites its equations in its docstring, the way the code cites the
-book: ``(thesis 3.31-3.42)``, ``(6.113b)``, ``thesis 7.54/7.56``.  This script reads the
-docstrings of ``planargeo/`` (by parsing, without importing anything), keeps the numbers that
+book: ``(thesis 3.31-3.42)``, ``(6.113b)``, ``thesis 7.54/7.56``.  This script finds the public
+functions, classes, methods and properties of ``planargeo/`` by parsing, reads each one's
+docstring as a reader sees it (imported: with its shared entries filled in), keeps the numbers that
 are equation labels of the thesis (``(3.31)`` in ``shared/thesis``; a range ``3.31-3.42`` is
 every label between), and writes one table row per equation.  ``planargeo/gallery/`` is left
 out: its figure functions' docstrings are captions, citing what a figure illustrates.
@@ -13,6 +14,8 @@ Run: ``python docs/equations_index.py`` (rewrites ``docs/equations.md``).
 from __future__ import annotations
 
 import ast
+import importlib
+import inspect
 import re
 import sys
 from collections import defaultdict
@@ -77,22 +80,37 @@ def implementations(labels: list[str]) -> dict[str, list[str]]:
     """``{label: ["planargeo.module.function", ...]}`` over the public functions, classes and methods."""
     index = defaultdict(list)
     for path in sorted(PKG.rglob("*.py")):
-        if (PKG / "gallery") in path.parents:             # captions of figures, not implementations
+        if (PKG / "gallery") in path.parents or path.name == "__main__.py":   # captions; the command
             continue
         parts = list(path.relative_to(ROOT).with_suffix("").parts)
         if parts[-1] == "__init__":
             parts.pop()
         module = ".".join(parts)
         tree = ast.parse(path.read_text(encoding="utf-8"))
+        mod = importlib.import_module(module)
+
+        def doc(name, fallback):
+            obj = mod
+            for part in name.split("."):
+                obj = getattr(obj, part, None)
+            return (inspect.getdoc(obj) if obj is not None else None) or fallback
+
+        def add(name, text):
+            for label in dict.fromkeys(cited(text, labels)):
+                index[label].append(f"{module}.{name}")
 
         def walk(nodes, prefix):
             for node in nodes:
                 if isinstance(node, (ast.FunctionDef, ast.ClassDef)) and not node.name.startswith("_"):
                     name = f"{prefix}{node.name}"
-                    for label in dict.fromkeys(cited(ast.get_docstring(node) or "", labels)):
-                        index[label].append(f"{module}.{name}")
+                    add(name, doc(name, ast.get_docstring(node) or ""))
                     if isinstance(node, ast.ClassDef):
                         walk(node.body, f"{name}.")
+                elif prefix and isinstance(node, ast.Assign) and isinstance(node.value, ast.Call):
+                    # properties made by a factory (``x = _derived(f, "...")``): their own docstrings
+                    for t in node.targets:
+                        if isinstance(t, ast.Name) and not t.id.startswith("_"):
+                            add(f"{prefix}{t.id}", doc(f"{prefix}{t.id}", ""))
 
         walk(tree.body, "")
     return index

@@ -132,6 +132,8 @@ def _refuse_zero(x: np.ndarray, name: str, what: str) -> None:
 def normalize_point(p) -> np.ndarray:
     """Base coordinates of points (thesis 5.2, 5.49): weight ``w = 1``, or unit length at infinity.
 
+    A finite point ``(x, y)`` becomes ``[y, -x, 1]`` (5.51).
+
     {parameters p normalized}
 
     Examples

@@ -758,6 +758,8 @@ class _Screw(_Held):
 class Twist(_Screw):
     """A velocity (or acceleration) twist ``[vx, vy, ω]`` at the origin (thesis 4.6, 5.51).
 
+    It is a point, its pole; ``.at(P)`` is the same motion at ``P``, ``X_P v`` (thesis 4.8).
+
     Parameters
     ----------
     array : array_like, shape (..., 3), or Twist
@@ -846,6 +848,9 @@ class Twist(_Screw):
 @documented
 class Wrench(_Screw):
     """A force wrench ``[fx, fy, τz]`` at the origin (thesis 4.21), its line of action (5.56).
+
+    It is a line; ``.magnitude`` is ``F = |f|`` (4.22), 0 for a couple, whose strength is
+    ``.moment``; ``.at(P)`` is ``X_P⁻ᵀ f`` (thesis 4.24, 4.26).
 
     Parameters
     ----------
