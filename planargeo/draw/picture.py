@@ -57,6 +57,8 @@ FONT_PX = round(LABEL_PT * PX_PER_PT, 2)
 _CHAR_EM = 0.6
 #: A finite pole farther than this many view diagonals is drawn like an ideal point.
 FAR = 1e6
+#: Height of a line of text below the plot area (:meth:`Picture.below`), and the room left under the last.
+_BELOW_LINE_PX, _BELOW_PAD_PX = 14.0, 4.0
 
 
 def nice_ticks(lo: float, hi: float, n: int = 5) -> list[float]:
@@ -303,6 +305,7 @@ class Picture:
         self._edge_labels: dict[tuple, tuple[dict, list[str]]] = {}   # edge arrows' labels, by place
         self.handles: list[dict] = []
         self._ids: set[str] = set()
+        self._below: list[dict] = []      # lines of text under the plot area (Picture.below)
 
     # ------------------------------------------------------------------ helpers
     def copy(self) -> "Picture":
@@ -325,43 +328,47 @@ class Picture:
         out.elements = list(self.elements)
         out.handles = list(self.handles)
         out._ids = set(self._ids)
+        out._below = list(self._below)
         return out
 
-    def grow_below(self, px: float) -> tuple:
-        """Make the figure and its view ``px`` pixels taller below, at the same scale.
+    def below(self, id: str, lines, *, color: str | None = None, desc: str = "") -> None:
+        """Lines of text under the plot area, below its tick labels, outside the plot (a key).
 
-        What is drawn keeps its place on screen; the new strip (e.g. for a key) is part of the plot.
+        The figure grows by their height; the plot area, its view, scale and ticks stay as
+        they were.  Each line is drawn left-aligned at the plot's left edge, its top
+        ``y`` pixels below the plot area's bottom edge (``"below"`` in :meth:`to_dict`).
 
         Parameters
         ----------
-        px : float
-            Pixels added below the plot area.
-
-        Returns
-        -------
-        tuple
-            The new view ``(x0, x1, y0, y1)``.
-
-        Raises
-        ------
-        InputError
-            ``px`` is not a finite number of pixels ≥ 0.
+        id : str
+            What the lines belong to (one entry of a key).
+        lines : list of str
+            The lines, one under the other.
+        color : str, optional
+            Their colour (default: the text's).
+        desc : str
+            A one-line description (the page shows it on hover).
 
         Examples
         --------
-        >>> pic = Picture((0, 1, 0, 1), size=(100, 100), ticks=False, margin=(0, 0, 0, 0))
-        >>> pic.grow_below(50.0), pic.size
-        ((0.0, 1.0, -0.5, 1.0), (100, 150))
+        >>> pic = Picture((0, 1, 0, 1), size=(200, 200))
+        >>> pic.below("key 1", ["P: a pole"], color="#d62728", desc="key: P: a pole")
+        >>> d = pic.to_dict()
+        >>> d["size"], d["margin"], d["below"][0]["y"]     # 14 px a line and 4 px to spare
+        ([200, 218], [44.0, 12.0, 10.0, 48.0], 30.0)
         """
-        px = float(px)
-        if not (math.isfinite(px) and px >= 0):
-            raise InputError(f"px must be a finite number of pixels >= 0, got {px!r}")
+        if not lines:
+            return
+        if not self._below:
+            self._below_top = self.margin[3]      # below the tick labels
+        grow = _BELOW_LINE_PX * len(lines) + (0.0 if self._below else _BELOW_PAD_PX)
+        for line in lines:
+            self._below.append({"id": str(id), "text": plain_text(line), "color": _color("text", color),
+                                "desc": str(desc), "x": 0.0,
+                                "y": self._below_top + _BELOW_LINE_PX * len(self._below)})
         w, h = self.size
-        self.size = (w, int(round(h + px)))
-        self._plot = (self._plot[0], self._plot[1] + px)
-        x0, x1, y0, y1 = self.box
-        self.box = (x0, x1, y0 - px / self.ky, y1)
-        return self.box
+        self.size = (w, int(round(h + grow)))
+        self.margin = (*self.margin[:3], self.margin[3] + grow)
 
     def to_px(self, xy) -> np.ndarray:
         """Pixel coordinates (from the plot area's lower left, y up) of data points.
@@ -729,7 +736,10 @@ class Picture:
         Returns
         -------
         dict
-            ``{"size", "margin", "box", "title", "ticks", "elements", "handles"}``.
+            ``{"size", "margin", "box", "title", "ticks", "elements", "handles"}``, and
+            ``"below"`` when there are lines below the plot area (:meth:`Picture.below`):
+            ``{"id", "text", "color", "desc", "x", "y"}`` each, ``x``, ``y`` the pixels from the
+            plot area's lower left corner to the line's upper left (``y`` down).
         """
         self._place_labels()
         span = max(self.box[1] - self.box[0], self.box[3] - self.box[2])
@@ -788,7 +798,10 @@ class Picture:
                 i += n
         ticks = ({"x": nice_ticks(self.box[0], self.box[1]), "y": nice_ticks(self.box[2], self.box[3])}
                  if self.ticks else None)
-        return {"size": list(self.size), "margin": list(self.margin),
-                "box": [round(v, nd) + 0.0 for v in self.box], "title": self.title,
-                "ticks": ticks, "font_px": FONT_PX, "elements": elements,
-                "handles": [{**h, "x": rnd(h["x"]), "y": rnd(h["y"])} for h in self.handles]}
+        out = {"size": list(self.size), "margin": list(self.margin),
+               "box": [round(v, nd) + 0.0 for v in self.box], "title": self.title,
+               "ticks": ticks, "font_px": FONT_PX, "elements": elements,
+               "handles": [{**h, "x": rnd(h["x"]), "y": rnd(h["y"])} for h in self.handles]}
+        if self._below:
+            out["below"] = [dict(line) for line in self._below]
+        return out

@@ -18,6 +18,7 @@ import io
 import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.patches import Polygon
+from matplotlib.transforms import offset_copy
 
 from planargeo.draw.geometry import arc_glyph
 from planargeo.draw.picture import PX_PER_PT
@@ -34,7 +35,9 @@ def draw_picture(pic: dict, ax=None) -> list:
     """Draw the picture ``pic`` (:meth:`Picture.to_dict`) on the axes ``ax``.
 
     Every artist's ``gid`` is its element's id (``"<id>:label"`` for a label), and fixed pixel
-    sizes have the page's geometry (``planargeo/widgets/canvas.js``).
+    sizes have the page's geometry (``planargeo/widgets/canvas.js``).  The lines below the
+    plot (``pic["below"]``) are texts of the axes' figure, placed in pixels from the axes'
+    lower left corner (``gid`` ``"<id>:below"``; not in the list returned).
 
     Parameters
     ----------
@@ -137,6 +140,11 @@ def draw_picture(pic: dict, ax=None) -> list:
                     fontsize=LABEL_PT, color=c, zorder=z + 1, gid=gid + ":label",
                     annotation_clip=False, alpha=op))
             drawn += [(gid, i, a) for a in arts]
+    for b in pic.get("below", ()):      # lines under the plot's tick labels: figure texts, no axes
+        at = offset_copy(ax.transAxes, fig=ax.figure, x=b["x"] / PX_PER_PT, y=-b["y"] / PX_PER_PT,
+                         units="points")
+        ax.figure.text(0.0, 0.0, b["text"], transform=at, ha="left", va="top", fontsize=LABEL_PT,
+                       color=b["color"], gid=b["id"] + ":below")
     return drawn
 
 

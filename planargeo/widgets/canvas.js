@@ -326,7 +326,7 @@ function render({ model, el }) {
   }
 
   function buildFrame() {
-    // the parts that depend on the view only: size, clip, title, ticks, background, border
+    // the parts that depend on the view only: size, clip, title, ticks, lines below, background, border
     const h = st.head;
     svg.textContent = "";
     nodes.clear();
@@ -379,6 +379,13 @@ function render({ model, el }) {
                                "font-size": h.font_px }, axes);
         t.textContent = fmtTick(v);
       }
+    }
+    // lines below the plot, under the x tick labels (a key no corner had room for): y down
+    for (const b of h.below || []) {
+      const t = mk("text", { x: b.x, y: ph + b.y, fill: b.color, "dominant-baseline": "text-before-edge",
+                             "font-size": h.font_px, class: "pg-below", "data-below": b.id }, plot);
+      t.textContent = b.text;
+      if (b.desc) mk("title", {}, t).textContent = b.desc;
     }
     const content = mk("g", { "clip-path": `url(#${clipId})` }, plot);
     const inner = mk("g", { class: "pg-content" }, content);

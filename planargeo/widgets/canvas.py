@@ -12,7 +12,7 @@ Setting :attr:`PictureCanvas.picture` (the complete plain dict of
 only what changed since the version it holds, as an *update*::
 
     {"version": n, "base": n - 1,            # applies to version n - 1 only
-     "head": {...},                          # view, size, ticks, title (when changed)
+     "head": {...},                          # view, size, ticks, title, lines below (when changed)
      "order": [id, ...],                     # drawing order (when it changed)
      "set": {id: {field: value, ...}},       # changed fields of new or changed elements
      "handles": [[id, x, y], ...],           # when they moved
@@ -435,7 +435,7 @@ class PictureCanvas(anywidget.AnyWidget):
         self._dirty = False
         pic = self.picture
         update: dict[str, Any] = {}
-        head = {k: pic[k] for k in ("size", "margin", "box", "title", "ticks", "font_px") if k in pic}
+        head = {k: pic[k] for k in ("size", "margin", "box", "title", "ticks", "font_px", "below") if k in pic}
         if head != self._head_src:
             self._head_src = head
             self._head = {**head, "nd": wire_digits(head)}

@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import contextlib
 import html
-import math
 import textwrap
 from typing import Any
 
@@ -266,7 +265,6 @@ class FrontMixin:
         pic = self.scene_picture(self.state, self._page_view)
         for h in self._handle_list():
             pic.handle(h["id"], (h["x"], h["y"]), symbol=h["id"], desc=f"drag to change {h['id']}")
-        self._key_strip = 0.0
         if self.controls["key"].value:
             self._add_key(pic)
         if self._figure_text:
@@ -322,8 +320,9 @@ class FrontMixin:
         """The key: one entry per meaning drawn, in its colour, wrapped at half the figure's
         width (40 characters at least), on a white panel in a corner of the plot area that
         covers no handle, body, mark, pole glyph or arrow head (of those, where least is drawn);
-        when no corner is clear, in a strip the figure grows below the plot area (the view and
-        the scale kept: the mechanism stays where it was)."""
+        when no corner is clear, below the plot's x tick labels, outside the plot, wrapped at
+        the plot's width (:meth:`~planargeo.draw.picture.Picture.below`: the figure grows, the
+        plot and its view stay)."""
         x0, x1, y0, y1 = pic.box
         entries = self._key_entries(pic)[:12]
         if not entries:
@@ -339,15 +338,15 @@ class FrontMixin:
                    (pw - 2.0 - wide, tall + 1.0))      # upper left first when ties
         pts, rad = _keep_clear(pic)
         clear = [c for c in corners if _covers((c[0], c[1] - tall, c[0] + wide, c[1]), pts, rad) == 0]
-        if clear:
-            left, top = min(clear, key=lambda c: int(np.count_nonzero(
-                (ink[:, 0] > c[0]) & (ink[:, 0] < c[0] + wide)
-                & (ink[:, 1] < c[1]) & (ink[:, 1] > c[1] - tall))))
-        else:   # a strip below the plot area, as tall as the key: the figure grows, the view stays
-            strip = float(math.ceil(tall + 4.0))
-            x0, x1, y0, y1 = pic.grow_below(strip)
-            self._key_strip = strip / (ph + strip)
-            left, top = 2.0, tall + 1.0
+        if not clear:     # below the plot, outside it: the figure grows by the key's height
+            chars = max(40, int(pw / (_CHAR_EM * FONT_PX)))
+            for k, ((_s, _m, color), text) in enumerate(zip(entries, texts)):
+                pic.below(f"key {k + 1}", textwrap.wrap(text, chars, subsequent_indent="  ") or [text],
+                          color=color, desc=f"key: {text}")
+            return
+        left, top = min(clear, key=lambda c: int(np.count_nonzero(
+            (ink[:, 0] > c[0]) & (ink[:, 0] < c[0] + wide)
+            & (ink[:, 1] < c[1]) & (ink[:, 1] > c[1] - tall))))
         u0, u1 = x0 + left / pic.kx, x0 + (left + wide) / pic.kx
         v0, v1 = y0 + (top - tall) / pic.ky, y0 + top / pic.ky
         pic.path("key panel", [[u0, v0], [u1, v0], [u1, v1], [u0, v1]], role="text",
@@ -364,10 +363,6 @@ class FrontMixin:
 
     def _page_view_to(self, box) -> None:
         """The user zoomed or panned in the page (None: back to the explorer's own view)."""
-        if box is not None and getattr(self, "_key_strip", 0.0):
-            # the page's box holds the key's strip below the view: the view is the part above it
-            x0, x1, y0, y1 = (float(v) for v in box)
-            box = (x0, x1, y0 + self._key_strip * (y1 - y0), y1)
         self._page_view = None if box is None else tuple(box)
         self._safe_redraw()
 
