@@ -4,8 +4,10 @@
   overlay on, the grip P, the reaction impulse and the velocity pole of the impulse explorer, the
   base and the "a" handle of the articulated explorer after a drag.  Now its panel touches no handle
   (the page's circle, 8 px), no body outline (paths of the body and ground roles) and no pole glyph
-  or mark; when no corner of the plot is clear the figure grows a strip below the plot for it, and
-  the plot keeps its size, its view and its scale (the mechanism stays where it was).
+  or mark; when no corner of the plot is clear it goes below the plot's x tick labels, outside the
+  plot (the figure grows by its height), and the plot, its frame, ticks and view are exactly as
+  without the key (the strip the plot once grew below itself put the frame around the key, the
+  y tick labels beside it and the x tick labels under it, and cut the lines at its top edge).
 * A refusal's words were a white panel in the middle of the figure; now a banner along the top
   edge of the plot area, the plot's full width, under which no handle of the default chain lies.
 
@@ -103,37 +105,82 @@ STATES = {"slider-crank, every overlay": _slider_crank, "impulse, every overlay"
           "chain, key on": lambda: ChainExplorer(display="agg", key=True)}
 
 
+STATES["impulse, key on"] = lambda: ImpulseExplorer(display="agg", key=True)
+#: the states whose key no corner has room for (the others' key is in a corner)
+BELOW = {"slider-crank, every overlay", "impulse, every overlay", "articulated after drags",
+         "impulse, key on"}
+
+
 @pytest.mark.parametrize("state", list(STATES))
 def test_the_key_covers_no_handle_body_or_pole(state):
     ex = STATES[state]()
     assert ex.controls["key"].value and not ex.message, ex.message
     pic = ex.picture()
+    ids = {e["id"] for e in pic["elements"]}
+    if state in BELOW:      # under the plot: nothing of the key inside it
+        entries = {f"key {k}" for k in range(1, 13)} | {"key panel"}
+        assert "below" in pic and not ids & entries, sorted(ids & entries)
+        return
+    assert "below" not in pic
     covered = _covered(pic, _panel(pic, "key panel"))
     assert not covered, f"{state}: the key covers {covered}"
 
 
-@pytest.mark.parametrize("state", list(STATES))
-def test_the_key_keeps_the_plot_its_view_and_scale(state):
-    ex = STATES[state]()
-    on = ex.picture()
+def _without_key(ex) -> dict:
     ex.set(key=False)
     off = ex.picture()
+    ex.set(key=True)
+    return off
+
+
+@pytest.mark.parametrize("state", list(STATES))
+def test_the_key_keeps_the_plot_its_frame_ticks_and_view(state):
+    ex = STATES[state]()
+    on = ex.picture()
+    off = _without_key(ex)
+    assert on == ex.picture()                       # the key back on: the same picture again
+    # the plot area: the same pixels from the figure's top left, the same view and ticks
+    assert on["margin"][:3] == off["margin"][:3] and on["size"][0] == off["size"][0]
+    assert on["box"] == off["box"] and on["ticks"] == off["ticks"]
+    ph_on = on["size"][1] - on["margin"][2] - on["margin"][3]
+    ph_off = off["size"][1] - off["margin"][2] - off["margin"][3]
+    assert ph_on == ph_off and on["handles"] == off["handles"]
+    if state not in BELOW:
+        assert on["size"] == off["size"] and on["margin"] == off["margin"]
+        return
+    # below: the figure grows by the key's lines (14 px each and 4 to spare), nothing else changes
+    lines = on["below"]
+    grow = on["size"][1] - off["size"][1]
+    assert grow == on["margin"][3] - off["margin"][3] == 14 * len(lines) + 4
+    assert on["elements"] == off["elements"]        # every line drawn to the view's edge, as without
+
+
+@pytest.mark.parametrize("state", sorted(BELOW))
+def test_the_key_below_is_under_the_tick_labels_inside_the_figure(state):
+    ex = STATES[state]()
+    on = ex.picture()
+    off = _without_key(ex)
     ml, mr, mt, mb = on["margin"]
-    w_on, h_on = on["size"][0] - ml - mr, on["size"][1] - mt - mb
-    w_off, h_off = off["size"][0] - ml - mr, off["size"][1] - mt - mb
-    assert on["margin"] == off["margin"] and w_on == w_off and h_on >= h_off
-    assert on["box"][0] == off["box"][0] and on["box"][1] == off["box"][1] and on["box"][3] == off["box"][3]
-    assert on["box"][2] <= off["box"][2]
-    # one scale: the strip below (if any) is as many pixels as data units times the scale
-    ky_on = h_on / (on["box"][3] - on["box"][2])
-    ky_off = h_off / (off["box"][3] - off["box"][2])
-    assert ky_on == pytest.approx(ky_off, rel=1e-3)
-    # every handle at the same pixels from the plot's top left
-    top_on = {h["id"]: (_px(on, [h["x"], h["y"]])[0] - (0.0, h_on)) for h in on["handles"]}
-    top_off = {h["id"]: (_px(off, [h["x"], h["y"]])[0] - (0.0, h_off)) for h in off["handles"]}
-    assert top_on.keys() == top_off.keys()
-    for k in top_on:
-        assert top_on[k] == pytest.approx(top_off[k], abs=0.5), k
+    w, h = on["size"]
+    tops = [b["y"] for b in on["below"]]
+    # the first line where the figure without the key ended (under the x tick labels), then
+    # one line under the other, the last inside the figure
+    assert tops[0] == off["margin"][3] and np.all(np.diff(tops) == 14.0)
+    assert h - mt - (h - mt - mb) - tops[-1] >= 14.0 + 4.0 - 1e-9
+    for b in on["below"]:
+        assert b["x"] == 0.0 and ml + len(b["text"]) * 0.6 * on["font_px"] <= w
+    # the entries of the key, their colours and wording, as drawn in a corner: each entry's
+    # lines say its description, in the colour of what it names
+    colors = {e["id"]: e["color"] for e in off["elements"]}
+    by_id: dict[str, list] = {}
+    for b in on["below"]:
+        by_id.setdefault(b["id"], []).append(b)
+    assert list(by_id) == [f"key {k}" for k in range(1, len(by_id) + 1)]
+    for bs in by_id.values():
+        desc = bs[0]["desc"]
+        assert desc.startswith("key: ") and all(b["desc"] == desc for b in bs)
+        assert " ".join(b["text"] for b in bs).split() == desc[5:].split()
+        assert bs[0]["color"] in colors.values()
 
 
 def test_a_refusal_is_a_banner_along_the_top_of_the_plot():

@@ -2,7 +2,7 @@
 
 For every explorer, in each state the browser tests visit (the default; after a
 drag of its first handle in view; after a slider change; with a display toggle and
-with a focus; zoomed in, as the page asks), the explorer's picture (``ex.picture()``, plain data) is drawn
+with a focus; with its key on; zoomed in, as the page asks), the explorer's picture (``ex.picture()``, plain data) is drawn
 
 * by the page: ``canvas.js`` as SVG in headless chromium, in one static page served
   from 127.0.0.1 with a stand-in for the anywidget model
@@ -11,7 +11,9 @@ with a focus; zoomed in, as the page asks), the explorer's picture (``ex.picture
   element's id, its place read through matplotlib's own transforms
   (``get_window_extent`` at the picture's size, 100 dpi).
 
-The two must show the same elements: the same ids and roles (the page writes each
+The two must show the same elements, and the same lines below the plot (a key no corner
+had room for, the picture's ``"below"``: the same texts and colours, in order, each at the
+same place); the same ids and roles (the page writes each
 element's role as ``data-role``), the same colours per element, the same label texts, and every
 marker, rotation glyph, arrow, line, curve and label at the same pixel, within 1 px
 at the same size.  A label's place is its box's edge (or centre) on the side it is
@@ -109,6 +111,13 @@ def visited_states(name: str):
         ex.set(focus=ex.controls["focus"].options[1])
         if not ex.message:
             out.append((f"focus {ex.controls['focus'].value}", ex.picture()))
+    # the key on (in a corner of the plot, or below it when no corner has room)
+    ex.reset()
+    if "key" in ex.controls and not ex.controls["key"].disabled:
+        ex.set(key=True)
+        if not ex.message:
+            out.append(("key on", ex.picture()))
+        ex.set(key=False)
     # zoomed in about a point off centre, as the page asks for it (the canvas's checked view message)
     ex.reset()
     bx0, bx1, by0, by1 = ex.picture()["box"]
@@ -158,6 +167,61 @@ def matplotlib_measure(pic: dict) -> dict:
         out.setdefault(gid, []).append({"part": i, "box": box, "text": text, "colors": colors,
                                         "kind": type(art).__name__})
     return out
+
+
+def matplotlib_below(pic: dict) -> list[dict]:
+    """The lines below the plot as matplotlib draws them: text, colour, box (pixels, y down)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.colors import to_hex
+
+    from planargeo.draw import render
+    from planargeo.draw.style import rc_context
+
+    fig = render.figure(pic)
+    FigureCanvasAgg(fig)
+    with rc_context():
+        renderer = fig.canvas.get_renderer()
+        fig.draw(renderer)
+        H = fig.get_size_inches()[1] * fig.dpi
+        out = []
+        for t in fig.texts:
+            if (t.get_gid() or "").endswith(":below"):
+                bb = t.get_window_extent(renderer)
+                out.append({"text": t.get_text(), "color": to_hex(t.get_color()),
+                            "box": [bb.x0, H - bb.y1, bb.x1, H - bb.y0],
+                            "px": t.get_fontsize() * fig.dpi / 72.0})
+    return out
+
+
+#: The page's lines below the plot (``text.pg-below``): text, colour, box and advance (SVG pixels)
+PAGE_BELOW_JS = """() => {
+  const svg = document.querySelector(".pg-canvas svg"), r0 = svg.getBoundingClientRect();
+  return [...svg.querySelectorAll("text.pg-below")].map((t) => {
+    const r = t.getBoundingClientRect(), n = t.getNumberOfChars(), m = t.getCTM();
+    const a = t.getExtentOfChar(0), b = t.getExtentOfChar(n - 1);
+    return { text: t.textContent.replace(t.querySelector("title")?.textContent ?? "", ""),
+             color: t.getAttribute("fill"), box: [r.left - r0.left, r.top - r0.top, r.right - r0.left, r.bottom - r0.top],
+             advance: [m.a * a.x + m.e, m.a * (b.x + b.width) + m.e],
+             px: parseFloat(getComputedStyle(t).fontSize) * r0.width / svg.viewBox.baseVal.width };
+  });
+}"""
+
+
+def compare_below(pic: dict, page_below: list[dict], mpl_below: list[dict]) -> list[str]:
+    """Differences between the two renderers' lines below the plot (empty: the same)."""
+    from matplotlib.colors import to_hex
+
+    want = [(b["text"], to_hex(b["color"])) for b in pic.get("below", [])]
+    got_page = [(b["text"], to_hex(b["color"])) for b in page_below]
+    got_mpl = [(b["text"], b["color"]) for b in mpl_below]
+    if not (want == got_page == got_mpl):
+        return [f"lines below: {want} in the picture, {got_page} in the page, {got_mpl} in matplotlib"]
+    problems = []
+    for p, m in zip(page_below, mpl_below):
+        if abs(p["advance"][0] - m["box"][0]) > TOL_PX or abs(p["box"][1] - m["box"][1]) > TEXT_DY_PX:
+            problems.append(f"below {p['text']!r}: left, top ({p['advance'][0]:.1f}, {p['box'][1]:.1f}) in "
+                            f"the page, ({m['box'][0]:.1f}, {m['box'][1]:.1f}) in matplotlib")
+    return problems
 
 
 # --------------------------------------------------------------------------- comparison
@@ -315,6 +379,7 @@ def _drawn(harness_page, name):
     view = PageView(harness_page)
     for state, pic in visited_states(name):
         page = view.show(pic)
+        page["below"] = harness_page.evaluate(PAGE_BELOW_JS)
         assert page["size"] == pic["size"], f"{name} {state}: the page's SVG is {page['size']}, not {pic['size']}"
         yield state, pic, page
 
@@ -324,6 +389,7 @@ def test_page_and_matplotlib_draw_the_same(harness_page, name):
     failures = []
     for state, pic, page in _drawn(harness_page, name):
         failures += [f"{state}: {p}" for p in compare(pic, page, matplotlib_measure(pic))]
+        failures += [f"{state}: {p}" for p in compare_below(pic, page["below"], matplotlib_below(pic))]
     assert not failures, f"{name}:\n" + "\n".join(failures)
 
 
