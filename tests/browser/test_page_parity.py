@@ -427,3 +427,14 @@ def test_the_comparison_sees_a_pixel_moved(harness_page):
     assert any("label 'P' in the page, 'Q' in matplotlib" in p for p in renamed), renamed
     more = compare(picture(extra=True), shown, matplotlib_measure(picture(extra=True)))
     assert any("missing ['m']" in p for p in more), more
+    # lines below the plot: the same, then one moved 3 px down, then another text, in matplotlib
+    pic = Picture((-2, 2, -2, 2), size=(300, 300))
+    pic.below("key 1", ["P: a pole", "  and more"], color="#d62728", desc="key: P: a pole and more")
+    d = pic.to_dict()
+    PageView(harness_page).show(d)
+    below = harness_page.evaluate(PAGE_BELOW_JS)
+    assert len(below) == 2 and compare_below(d, below, matplotlib_below(d)) == []
+    moved = {**d, "below": [d["below"][0], {**d["below"][1], "y": d["below"][1]["y"] + 3.0}]}
+    assert any("below '  and more'" in p for p in compare_below(d, below, matplotlib_below(moved))), moved
+    other = {**d, "below": [d["below"][0], {**d["below"][1], "text": "  and less"}]}
+    assert compare_below(d, below, matplotlib_below(other))
