@@ -58,7 +58,7 @@ $(STAMP): $(PIP_STAMP) $(KERNEL_SOURCES) $(KERNEL_LIMITS) $(PLACER_SOURCE)
 	  echo "kernel limits changed ($(filter $(KERNEL_LIMITS),$?)): the kernels are compiled afresh"; \
 	  touch planargeo/algorithms/kernels.py; fi
 	$(BIN)/python -m planargeo.algorithms.compiled --warm
-	$(BIN)/python -c "from planargeo.draw._labels import warm; warm()"
+	$(BIN)/python -c "from planargeo.draw.picture import warm_labels; warm_labels()"
 	@touch $(STAMP)
 endif
 

@@ -54,7 +54,7 @@ def test_warm_command_and_its_place_in_the_install_step():
     pip = next(i for i, x in enumerate(lines) if "pip install" in x and "-e" in x)
     warm = next(i for i, x in enumerate(lines) if "-m planargeo.algorithms.compiled --warm" in x)
     assert warm > pip                              # after the install, before the stamp
-    placer = next(i for i, x in enumerate(lines) if "from planargeo.draw._labels import warm" in x)
+    placer = next(i for i, x in enumerate(lines) if "from planargeo.draw.picture import warm_labels" in x)
     assert placer > pip                            # the label placer's loops too (every picture's labels)
 
 
@@ -64,7 +64,7 @@ def test_the_label_placer_is_compiled_once_then_loaded(tmp_path):
     import os
 
     env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path), MPLBACKEND="Agg")
-    code = "from planargeo.draw._labels import warm; print(warm())"
+    code = "from planargeo.draw.picture import warm_labels; print(warm_labels())"
     runs = [subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, timeout=600,
                            check=True).stdout.split() for _ in range(2)]
     assert runs == [["False"], ["True"]]

@@ -39,7 +39,7 @@ def _install(tmp_path: Path, log: Path) -> list[str]:
                    text=True, timeout=60)
     calls = log.read_text().splitlines() if log.exists() else []
     return ["pip" if "pip install" in c else "warm" if "compiled --warm" in c else
-            "placer" if "_labels import warm" in c else c for c in calls]
+            "placer" if "import warm_labels" in c else c for c in calls]
 
 
 def _newer(path: Path) -> None:

@@ -289,26 +289,9 @@ def _cached(jit) -> bool:
         return False
 
 
-def warm() -> bool:
-    """Compile (or load from numba's cache) the placer's loops, as the first picture would.
-
-    Returns
-    -------
-    bool
-        Whether nothing needed compiling (both loops were in numba's cache, or numba is off).
-
-    Examples
-    --------
-    >>> isinstance(warm(), bool)
-    True
-    """
-    from planargeo.draw.picture import Picture
-
-    cached = all(_cached(_compiled(f)) for f in (_count, _place))
-    pic = Picture((-1, 1, -1, 1), size=(200, 200), ticks=False)
-    pic.line("l", [0.0, 1.0, 0.0], symbol="l")
-    pic.to_dict()
-    return cached
+def loops_cached() -> bool:
+    """Whether the placer's two loops need no compiling (in numba's cache, or numba off); compiles nothing."""
+    return all(_cached(_compiled(f)) for f in (_count, _place))
 
 
 def place_labels(pic, font_px: float, char_em: float) -> None:

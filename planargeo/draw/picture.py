@@ -41,13 +41,13 @@ from typing import Any
 
 import numpy as np
 
-from planargeo.draw._labels import _align, place_labels
+from planargeo.draw._labels import _align, loops_cached, place_labels
 from planargeo.draw.geometry import _clip, conic_curves, conic_geometry
 from planargeo.draw.style import COLORS, LABEL_PT, LINEWIDTHS, STYLES
 from planargeo.errors import InputError, NonFiniteError, ShapeError
 from planargeo.geometry._docs import entries
 
-__all__ = ["Picture", "PX_PER_PT", "FONT_PX", "nice_ticks", "plain_text"]
+__all__ = ["Picture", "PX_PER_PT", "FONT_PX", "nice_ticks", "plain_text", "warm_labels"]
 
 #: Pixels per point of a picture (the explorers' 100 dpi).
 PX_PER_PT = 100.0 / 72.0
@@ -110,6 +110,28 @@ _SUB = dict(zip("0123456789+-=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈
 _SUP = dict(zip("0123456789+-=()inT", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁱⁿᵀ"))
 _ACCENT = {"dot": "\u0307", "ddot": "\u0308", "hat": "\u0302", "bar": "\u0304", "tilde": "\u0303",
            "vec": "\u20d7"}
+
+
+def warm_labels() -> bool:
+    """Compile (or load from numba's cache) the label placer's loops, as the first picture would.
+
+    ``make install`` runs it after the dynamics kernels, so that no lesson waits for the compiler.
+
+    Returns
+    -------
+    bool
+        Whether nothing needed compiling (both loops were in numba's cache, or numba is off).
+
+    Examples
+    --------
+    >>> isinstance(warm_labels(), bool)
+    True
+    """
+    cached = loops_cached()
+    pic = Picture((-1, 1, -1, 1), size=(200, 200), ticks=False)
+    pic.line("l", [0.0, 1.0, 0.0], symbol="l")
+    pic.to_dict()
+    return cached
 
 
 def _math_to_unicode(m: str) -> str:
