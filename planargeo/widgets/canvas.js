@@ -36,6 +36,20 @@ function mk(tag, attrs, parent) {
   return e;
 }
 
+// Writes to a drawn node only the attributes whose value changed since its last drawing (the
+// values written are kept on the node, as the strings setAttribute stores; null: no attribute):
+// a value written again unchanged would still make the browser restyle, lay out and repaint it.
+function setChanged(n, attrs) {
+  const last = n.__pgAttrs || (n.__pgAttrs = {});
+  for (const k in attrs) {
+    const v = attrs[k] === null || attrs[k] === undefined ? null : String(attrs[k]);
+    if (last[k] === v || (v === null && last[k] === undefined)) continue;
+    if (v === null) n.removeAttribute(k); else n.setAttribute(k, v);
+    last[k] = v;
+  }
+  return n;
+}
+
 const glyphs = new Map();      // (r, ccw) -> the glyph's paths about its centre (pixels, y down)
 function glyphPaths(r, ccw) {
   const key = r + (ccw ? "+" : "-");
@@ -133,7 +147,7 @@ function render({ model, el }) {
     shown = s;
     const font = st.head && st.head.font_px ? st.head.font_px : 12;
     svg.style.setProperty("--pg-font", `${Math.max(font, MIN_TEXT_PX / s)}px`);
-    for (const c of circles.values()) c.setAttribute("r", f2(8 / Math.min(s, 1)));
+    for (const c of circles.values()) setChanged(c, { r: f2(8 / Math.min(s, 1)) });
   }
   if (typeof ResizeObserver !== "undefined") new ResizeObserver(() => rescale()).observe(svg);
 
@@ -306,10 +320,8 @@ function render({ model, el }) {
       nodes.set(id, g);
     }
     g.classList.toggle("pg-faded", !!focusId && focusId !== id);
-    if (e.opacity !== undefined && e.opacity !== null && e.opacity !== 1) g.setAttribute("opacity", e.opacity);
-    else g.removeAttribute("opacity");
-    if (e.d) g.setAttribute("data-described", ""); else g.removeAttribute("data-described");
-    if (e.role) g.setAttribute("data-role", e.role); else g.removeAttribute("data-role");
+    setChanged(g, { opacity: e.opacity !== undefined && e.opacity !== 1 ? e.opacity : null,
+                    "data-described": e.d ? "" : null, "data-role": e.role || null });
     // the same kinds of parts as drawn last: their nodes are kept and only moved
     const parts = e.parts || [];
     let sig = (e.fill ? "f" : "") + (e.dash ? "d" : "") + ":";
@@ -318,8 +330,8 @@ function render({ model, el }) {
     let i = 0;
     const reuse = g.__sig === sig;
     const put = reuse
-      ? (tag, attrs) => { const n = kids[i++]; for (const k in attrs) n.setAttribute(k, attrs[k]); return n; }
-      : (tag, attrs) => mk(tag, attrs, g);
+      ? (tag, attrs) => setChanged(kids[i++], attrs)
+      : (tag, attrs) => setChanged(mk(tag, {}, g), attrs);
     if (!reuse) g.textContent = "";
     for (const q of parts) drawPart(put, q, e);
     g.__sig = sig;
@@ -529,15 +541,13 @@ function render({ model, el }) {
       if (!c) continue;
       if (drag && drag.id === id) {  // the dragged one stays under the pointer
         if (drag.circle !== c) {
-          c.setAttribute("cx", drag.circle.getAttribute("cx"));
-          c.setAttribute("cy", drag.circle.getAttribute("cy"));
+          setChanged(c, { cx: drag.circle.getAttribute("cx"), cy: drag.circle.getAttribute("cy") });
           c.classList.add("pg-dragging");
           drag.circle = c;
         }
         continue;
       }
-      c.setAttribute("cx", X(x));
-      c.setAttribute("cy", Y(y));
+      setChanged(c, { cx: X(x), cy: Y(y) });
     }
   }
 
@@ -664,8 +674,7 @@ function render({ model, el }) {
   svg.addEventListener("pointermove", (ev) => {
     if (drag) {
       const [px, py] = localPoint(ev);
-      drag.circle.setAttribute("cx", px);
-      drag.circle.setAttribute("cy", py);
+      setChanged(drag.circle, { cx: px, cy: py });
       const t = performance.now();
       requestAnimationFrame(() => handlePaints.push(performance.now() - t));
       const [x, y] = dataOf(px, py);

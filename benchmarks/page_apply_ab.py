@@ -1,0 +1,214 @@
+"""A/B of the page renderer (canvas.js) alone: two versions of it on the same updates, in one page.
+
+The 10-link chain with every overlay (as in page_latency.py) is driven in this process: drags of
+its last link's end, toggles of its overlays and steps of its angle slider; every update the
+kernel would send is kept.  One static page (no kernel, no server but a file server on
+127.0.0.1) loads both versions of ``canvas.js`` (A: a file or a git revision's; B: the package's
+own) with a stand-in for the anywidget model, and delivers the same updates to a view of each in
+turn, in interleaved blocks (ABBA...), so both see the same machine load.  For each update:
+
+* apply: the renderer's own ``applyTimes`` (the update handled, DOM written);
+* apply + style/layout: the same, then ``document.body.offsetHeight`` read (style and layout forced);
+* → frame end: from before the update to the end of the next frame's main-thread work (a task
+  posted from that frame's animation-frame callback: style, layout, paint of the frame).
+
+Sameness: after every update the figure's SVG (its outerHTML, the clip path's random id and
+attribute order normalised) of A and B must be the same; the first difference is printed.
+
+Run::
+
+    MPLBACKEND=Agg .venv/bin/python benchmarks/page_apply_ab.py [--a-rev HEAD | --a-file old.js]
+"""
+from __future__ import annotations
+
+import argparse
+import http.server
+import json
+import statistics
+import subprocess
+import sys
+import threading
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from browser_harness import launch_chromium  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[1]
+OVERLAYS = ("velocity poles", "acceleration poles", "bias terms", "internal forces", "T/U split",
+            "articulated inertias")
+
+PAGE = """<!doctype html><html><head><meta charset="utf-8"><style>body { margin: 0; } %s</style></head>
+<body><div id="host"></div><script type="module">
+import A from "/a.js";
+import B from "/b.js";
+const mods = { A: A, B: B };
+let handlers = {}, data = {};
+const model = {
+  get: (k) => data[k], set: (k, v) => { data[k] = v; }, save_changes: () => {},
+  on: (ev, cb) => { (handlers[ev] = handlers[ev] || []).push(cb); },
+  off: () => {}, send: () => {},
+};
+// the next frame: [its animation-frame callback's time, the end of its main-thread work]
+const frameEnd = () => new Promise((res) => requestAnimationFrame(() => {
+  const ch = new MessageChannel(), t = performance.now();
+  ch.port1.onmessage = () => res([t, performance.now()]);
+  ch.port2.postMessage(0);
+}));
+window.open_ = async (which, state) => {
+  handlers = {}; data = { ...state };
+  const host = document.getElementById("host");
+  host.textContent = "";
+  mods[which].render({ model, el: host });
+  await frameEnd();
+};
+// the figure's SVG, normalised: the clip path's random id, attributes in name order
+window.svgText = () => {
+  const svg = document.querySelector(".pg-canvas svg").cloneNode(true);
+  const clip = svg.querySelector("clipPath");
+  const walk = (n) => {
+    if (n.nodeType !== 1) return n.nodeType === 3 ? n.textContent : "";
+    const names = [...n.attributes].map((a) => a.name).sort();
+    const at = names.map((k) => { let v = n.getAttribute(k);
+      if (clip) v = v.split(clip.id).join("CLIP"); return ` ${k}="${v}"`; }).join("");
+    return `<${n.tagName}${at}>` + [...n.childNodes].map(walk).join("") + `</${n.tagName}>`;
+  };
+  return walk(svg);
+};
+window.run = async (msgs, withSvg) => {
+  const p = document.querySelector(".pg-canvas").__planargeo, out = [];
+  for (const m of msgs) {
+    await frameEnd();                    // start from a quiet page
+    const n = p.applyTimes.length, t0 = performance.now();
+    for (const cb of handlers["msg:custom"] || []) cb(m, []);
+    const t1 = performance.now();
+    void document.body.offsetHeight;     // style and layout, forced
+    const t2 = performance.now();
+    const [tr, te] = await frameEnd();
+    out.push({ apply: p.applyTimes[n], applyLayout: t2 - t0, frame: te - tr, total: t2 - t0 + te - tr,
+               svg: withSvg ? window.svgText() : null });
+  }
+  return out;
+};
+window.ready = true;
+</script></body></html>"""
+
+
+def chain_updates(n_drag: int = 40) -> tuple[dict, list[dict], list[str]]:
+    """The chain's first view state and the updates of drags, overlay toggles and slider steps."""
+    from planargeo.widgets import ChainExplorer
+
+    ex = ChainExplorer(display="page", links=10, **{k: True for k in OVERLAYS})
+    sent = []
+    ex.canvas.send = lambda m, *a, **k: sent.append(m)
+    state = {"snapshot": json.loads(json.dumps(ex.canvas._snapshot())), "playing": False}
+    msgs, kinds = [], []
+
+    def take(kind):
+        for m in sent:
+            u = m if m.get("type") == "update" else m.get("update")
+            if u:
+                msgs.append(json.loads(json.dumps({**u, "type": "update"})))
+                kinds.append(kind)
+        del sent[:]
+
+    h = next(h for h in ex.canvas.picture["handles"] if h["id"] == "link 10 end")
+    for k in range(n_drag):
+        d = 0.02 * (k % 10 if k % 20 < 10 else 10 - k % 10)
+        ex.canvas._on_msg(None, {"type": "drag", "id": "link 10 end", "x": h["x"] + d, "y": h["y"] - d,
+                                 "seq": k + 1}, None)
+        take("drag")
+    ex.canvas._on_msg(None, {"type": "release", "id": "link 10 end", "seq": n_drag + 1}, None)
+    take("release")
+    for name in OVERLAYS[2:4]:
+        for on in (False, True):
+            ex.controls[name].value = on
+            take("toggle")
+    for k in range(8):
+        ex.controls["angle"].value = -30.0 + k
+        take("slider")
+    return state, msgs, kinds
+
+
+def serve(files: dict) -> http.server.ThreadingHTTPServer:
+    class Handler(http.server.BaseHTTPRequestHandler):
+        def do_GET(self):  # noqa: N802
+            body, kind = files.get(self.path.split("?")[0], (None, None))
+            if body is None:
+                self.send_error(404)
+                return
+            self.send_response(200)
+            self.send_header("Content-Type", kind + "; charset=utf-8")
+            self.send_header("Content-Length", str(len(body)))
+            self.end_headers()
+            self.wfile.write(body)
+
+        def log_message(self, *args):
+            pass
+
+    srv = http.server.ThreadingHTTPServer(("127.0.0.1", 0), Handler)
+    threading.Thread(target=srv.serve_forever, daemon=True).start()
+    return srv
+
+
+def _med(xs):
+    xs = sorted(x for x in xs if x is not None)
+    return (round(statistics.median(xs), 2), round(xs[int(0.9 * (len(xs) - 1))], 2)) if xs else None
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--a-rev", default="HEAD", help="git revision whose canvas.js is A")
+    ap.add_argument("--a-file", default=None, help="a file that is A (instead of --a-rev)")
+    ap.add_argument("--rounds", type=int, default=6)
+    a = ap.parse_args(argv)
+    from playwright.sync_api import sync_playwright
+
+    from planargeo.widgets.canvas import PictureCanvas
+
+    old = (Path(a.a_file).read_text() if a.a_file else
+           subprocess.run(["git", "show", f"{a.a_rev}:planargeo/widgets/canvas.js"], cwd=ROOT,
+                          check=True, capture_output=True, text=True).stdout)
+    new = (ROOT / "planargeo" / "widgets" / "canvas.js").read_text()
+    state, msgs, kinds = chain_updates()
+    print(f"{len(msgs)} updates: " + ", ".join(f"{k} {kinds.count(k)}" for k in dict.fromkeys(kinds)))
+    srv = serve({"/": ((PAGE % str(PictureCanvas._css)).encode(), "text/html"),
+                 "/a.js": (old.encode(), "text/javascript"), "/b.js": (new.encode(), "text/javascript")})
+    res = {k: {m: [] for m in ("apply", "applyLayout", "frame", "total")} for k in "AB"}
+    same = True
+    with sync_playwright() as p:
+        browser = launch_chromium(p)
+        try:
+            page = browser.new_page(viewport={"width": 1200, "height": 900})
+            page.goto(f"http://127.0.0.1:{srv.server_address[1]}/")
+            page.wait_for_function("window.ready === true")
+            svgs = {}
+            for r in range(a.rounds + 1):
+                for k in ("AB" if r % 2 == 0 else "BA"):
+                    page.evaluate("([k, s]) => window.open_(k, s)", [k, state])
+                    out = page.evaluate("([m, s]) => window.run(m, s)", [msgs, r == 0])
+                    if r == 0:                  # a warm-up round: the SVGs compared
+                        svgs[k] = [o["svg"] for o in out]
+                        continue
+                    for o, kind in zip(out, kinds):
+                        if kind == "drag":
+                            for m in res[k]:
+                                res[k][m].append(o[m])
+            for i, (sa, sb) in enumerate(zip(svgs["A"], svgs["B"])):
+                if sa != sb:
+                    same = False
+                    j = next(j for j in range(min(len(sa), len(sb))) if sa[j] != sb[j])
+                    print(f"update {i} ({kinds[i]}): SVGs differ at {j}:\n A …{sa[max(0, j - 200):j + 200]}\n"
+                          f" B …{sb[max(0, j - 200):j + 200]}")
+                    break
+        finally:
+            browser.close()
+            srv.shutdown()
+    print("same SVG after every update:", same)
+    print("drag updates, ms: median (p90)")
+    for m in ("apply", "applyLayout", "frame", "total"):
+        print(f"  {m:12s} A {_med(res['A'][m])}   B {_med(res['B'][m])}")
+    return 0 if same else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
