@@ -10,9 +10,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from planargeo._validate import as_xy, check_positive, check_tolerance
-from planargeo.errors import DegenerateGeometryError
-from planargeo.geometry.elements import _one as _vector
+from planargeo._validate import as_vec3, as_xy, check_positive, check_tolerance
+from planargeo.errors import DegenerateGeometryError, ShapeError
 from planargeo.geometry.projective import _fit
 from planargeo.geometry._docs import entries
 
@@ -87,7 +86,10 @@ def _case(name: str) -> SpecialCase:
 
 
 def _raw(x, name: str) -> np.ndarray:
-    return _vector(x, name, 3) + 0.0
+    a = as_vec3(x, name)
+    if a.shape != (3,):
+        raise ShapeError(f"{name} must have shape (3,), got shape {a.shape}")
+    return a + 0.0
 
 
 def _single(x, name: str) -> np.ndarray:
