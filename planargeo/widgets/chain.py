@@ -480,6 +480,11 @@ class ChainExplorer(Described, Explorer):
     def explain(self) -> dict:
         st = getattr(self, "state", None)
         n = st["model"].N if st is not None else int(self.values["links"])
+        # the meanings depend on the links and the first and last joints' kinds alone: kept for them
+        key = (n, None if st is None else (st["model"].joints[0].kind, st["model"].joints[n - 1].kind))
+        last = getattr(self, "_explained", None)
+        if last is not None and last[0] == key:
+            return dict(last[1])
 
         subs = [(i, subscript(i)) for i in range(1, n + 1)]
 
@@ -492,8 +497,9 @@ class ChainExplorer(Described, Explorer):
             for k in sorted({0, n - 1}):
                 j = st["model"].joints[k].kind
                 words = {"i": k + 1, "s": subscript(k + 1), "kind": j, "unit": QDD_UNIT[j]}
-                out.update({key.format(**words): m.format(**words) for key, m in _EACH_JOINT.items()})
-        return out
+                out.update({row.format(**words): m.format(**words) for row, m in _EACH_JOINT.items()})
+        self._explained = (key, out)
+        return dict(out)
 
     def _focus(self, n: int):
         """``("link" | "joint", index)`` of the focus, or None (all; or beyond the chain)."""
@@ -516,15 +522,21 @@ class ChainExplorer(Described, Explorer):
         return w.pose[:, :2] + np.column_stack([np.cos(w.pose[:, 2]), np.sin(w.pose[:, 2])])
 
     def handles(self) -> list:
-        # the base, and each link's end: it sets its joint (angle or slide), keeping the others
+        # the base, and each link's end: it sets its joint (angle or slide), keeping the others;
+        # they read the shown state when asked, so they are made once (every update lists them)
+        made = self.__dict__.get("_handles_made")
+        if made is not None:
+            return list(made)
+
         def end(i):
             def at(st):
                 ends = self._state_ends(st)
                 return tuple(float(c) for c in ends[i]) if i < st["model"].N else None
             return at
 
-        return [xy_handle(self, "base", "base x (m)", "base y (m)")] + [
+        self._handles_made = [xy_handle(self, "base", "base x (m)", "base y (m)")] + [
             state_handle(self, f"link {i + 1} end", end(i), self._end_drag(i)) for i in range(NMAX)]
+        return list(self._handles_made)
 
     def _end_drag(self, i: int):
         def drag(x: float, y: float) -> dict:

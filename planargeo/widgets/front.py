@@ -445,7 +445,13 @@ class FrontMixin:
             if getattr(w, "tooltip", tip) != tip:      # (a widget without a tooltip: nothing to do)
                 w.tooltip = tip
         try:
-            text = explain_html(dict(self.explain()))
+            meanings = dict(self.explain())
+            last = getattr(self, "_explained_html", None)     # the same meanings: the same text
+            if last is not None and last[0] == meanings:
+                text = last[1]
+            else:
+                text = explain_html(meanings)
+                self._explained_html = (meanings, text)
         except Exception as exc:  # noqa: BLE001
             text = f"<i>no explanation: {html.escape(str(exc))}</i>"
         if self.explain_box.value != text:

@@ -158,7 +158,13 @@ class HandleMixin:
         out = []
         for h in self.all_handles():
             try:   # a handle that cannot say where it is, or is not at a finite point: not shown
-                x, y = (float(v) for v in np.asarray(h.where(), dtype=float).reshape(2))
+                p = h.where()
+                if p is None:
+                    continue
+                if type(p) is tuple and len(p) == 2 and type(p[0]) is float and type(p[1]) is float:
+                    x, y = p          # (most handles: two floats already)
+                else:
+                    x, y = (float(v) for v in np.asarray(p, dtype=float).reshape(2))
             except Exception:  # noqa: BLE001
                 continue
             if math.isfinite(x) and math.isfinite(y):
