@@ -273,7 +273,6 @@ _documented = entries(_ENTRIES)
 
 #: element keys left out of the data when they hold these values
 _DEFAULTS = {"dash": None, "fill": None, "alpha": 1.0, "opacity": 1.0, "desc": "", "symbol": ""}
-_DEFAULT_ITEMS = tuple(_DEFAULTS.items())
 
 
 class Picture:
@@ -801,12 +800,10 @@ class Picture:
                 if "m" in part:
                     part["m"] = [round(v, nd + 2) + 0.0 for v in part["m"]]
                 parts.append(part)
-            # keys at their defaults are left out (the renderers read them with defaults)
-            out = dict(el)
-            out.pop("obstacle", None)        # the label placer's (Picture.text)
-            for k, d in _DEFAULT_ITEMS:
-                if out.get(k, d) == d:
-                    out.pop(k, None)
+            # keys at their defaults are left out (the renderers read them with defaults), and
+            # "obstacle" (the label placer's, Picture.text)
+            out = {k: v for k, v in el.items()
+                   if k != "obstacle" and (k not in _DEFAULTS or not v == _DEFAULTS[k])}
             out["parts"] = parts
             elements.append(out)
         if paths:   # one np.round for all paths (elementwise: the same numbers as one by one)

@@ -458,6 +458,8 @@ class PictureCanvas(anywidget.AnyWidget):
             if old is None:
                 changed[eid] = w
                 continue
+            if w == old:                    # the page holds it already (rounded the same)
+                continue
             diff = {k: v for k, v in w.items() if old.get(k) != v}
             if old.keys() != w.keys():
                 diff.update({k: None for k in old if k not in w})

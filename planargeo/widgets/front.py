@@ -15,7 +15,7 @@ import numpy as np
 from planargeo.draw.picture import FONT_PX
 from planargeo.draw.style import EXPLORER_MIN_WIDTH_PX
 from planargeo.errors import PlanargeoError
-from planargeo.widgets.readout import explain_html, fmt, value_text
+from planargeo.widgets.readout import explain_html, value_texts
 
 __all__ = ["FrontMixin"]
 
@@ -391,9 +391,10 @@ class FrontMixin:
         for k, v in values.items():
             if str(k).startswith("_"):
                 continue
-            full = value_text(v, self.units.get(k, ""), zero=zero)
+            # the numbers alone (bare) and with their unit (full); a common unit goes in its own
+            # column (HTML-safe)
+            bare, full = value_texts(v, self.units.get(k, ""), zero=zero)
             self.readout_strings[str(k)] = html.unescape(full)
-            bare = fmt(v, zero=zero)        # a common unit goes in its own column (HTML-safe)
             text, unit = (bare, full[len(bare) + 1:]) if full.startswith(bare + " ") else (full, "")
             said = f" ({html.unescape(unit)})"          # a name's unit is said once, in its column
             name = html.escape(str(k)[:-len(said)] if unit and str(k).endswith(said) else str(k))

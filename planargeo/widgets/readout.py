@@ -22,8 +22,8 @@ import numpy as np
 from planargeo.draw.picture import plain_text
 from planargeo.geometry.projective import direction, is_ideal, to_xy
 
-__all__ = ["QuantityText", "fmt", "unit_text", "point_text", "point_value", "value_text", "split_units", "explain_html", "is_numeric",
-           "plain_symbol"]
+__all__ = ["QuantityText", "fmt", "unit_text", "point_text", "point_value", "value_text", "value_texts",
+           "split_units", "explain_html", "is_numeric", "plain_symbol"]
 
 #: units that mean "dimensionless": nothing is written
 NO_UNIT = ("", "—", "-")
@@ -238,7 +238,32 @@ def value_text(x: Any, unit: Any = "", zero: float = 0.0, digits: int = 4) -> st
     >>> value_text((0.0, 2.0), ("1/kg", "1/(kg·m)")), value_text(point_text([0.0, -2.0, 1.0]))
     ('(0 kg⁻¹, 2 kg⁻¹·m⁻¹)', '(2, 0) m')
     """
+    return value_texts(x, unit, zero, digits)[1]
+
+
+def value_texts(x: Any, unit: Any = "", zero: float = 0.0, digits: int = 4) -> tuple[str, str]:
+    """The numbers of a value alone (:func:`fmt`) and with its unit (:func:`value_text`).
+
+    Parameters
+    ----------
+    x, unit, zero, digits
+        As for :func:`value_text`.
+
+    Returns
+    -------
+    (str, str)
+
+    Examples
+    --------
+    >>> value_texts(2.5, "m"), value_texts((1.0, 2.0), ("m", "rad"))
+    (('2.5', '2.5 m'), ('(1, 2)', '(1 m, 2 rad)'))
+    """
     text = fmt(x, digits, zero)
+    return text, _with_unit(text, x, unit, zero, digits)
+
+
+def _with_unit(text: str, x: Any, unit: Any, zero: float, digits: int) -> str:
+    """:func:`value_text` of ``x`` from its numbers ``text`` (:func:`fmt`)."""
     if isinstance(x, QuantityText):
         return f"{text} {html.escape(unit_text(x.unit))}" if x.unit else text
     if not is_numeric(x):
