@@ -15,9 +15,14 @@ turn, in interleaved blocks (ABBA...), so both see the same machine load.  For e
 Sameness: after every update the figure's SVG (its outerHTML, the clip path's random id and
 attribute order normalised) of A and B must be the same; the first difference is printed.
 
+With ``--voila``, the same A/B in the page students get: Voila showing two such chains, the first
+drawn by A, the second by B (each widget's own ``_esm``), in blocks of F (an empty request's round
+trip, after a pause as before a drag step), drag steps (mouse move → painted, page_latency.drag)
+and their apply times (the renderer's ``applyTimes``), in ABBA order.
+
 Run::
 
-    MPLBACKEND=Agg .venv/bin/python benchmarks/page_apply_ab.py [--a-rev HEAD | --a-file old.js]
+    MPLBACKEND=Agg .venv/bin/python benchmarks/page_apply_ab.py [--a-rev HEAD | --a-file old.js] [--voila]
 """
 from __future__ import annotations
 
@@ -150,6 +155,61 @@ def serve(files: dict) -> http.server.ThreadingHTTPServer:
     return srv
 
 
+def voila(old: str, new: str, rounds: int, block: int) -> dict:
+    """Drag steps, F and apply times in Voila: two chains in one page, one drawn by A, one by B."""
+    import tempfile
+    import time
+
+    import page_latency as pl
+    from playwright.sync_api import sync_playwright
+
+    res = {k: {"F": [], "drag": [], "apply": [], "ack → painted": []} for k in "AB"}
+    make = "pw.ChainExplorer(display='page', links=10, **{k: True for k in %r})" % (OVERLAYS,)
+    with tempfile.TemporaryDirectory() as tmp, sync_playwright() as p:
+        tmp = Path(tmp)
+        root = tmp / "voila"
+        root.mkdir()
+        cells = ["import planargeo.widgets as pw"]
+        for k, js in (("A", old), ("B", new)):
+            (tmp / f"{k}.js").write_text(js)
+            cells.append(f"chain{k} = {make}\nchain{k}.canvas._esm = open({str(tmp / f'{k}.js')!r}).read()\nchain{k}")
+        pl._notebook(root / "page.ipynb", cells)
+        server, url = pl.serve("voila", root, tmp)
+        browser = launch_chromium(p)
+        try:
+            page = browser.new_page(viewport={"width": 1400, "height": 1100})
+            page.goto(url, wait_until="domcontentloaded", timeout=120_000)
+            pl._canvas(page, pl._titles()["ChainExplorer"])
+            views = {}
+            for i, k in enumerate("AB"):
+                ex = page.locator(".planargeo-explorer").filter(has_text=pl._titles()["ChainExplorer"]).nth(i)
+                cv = ex.locator(".pg-canvas").first
+                cv.wait_for(state="visible", timeout=60_000)
+                pl._until(cv, "p.elements() > 0 && !p.busy()", 60_000)
+                # B's module keeps the attributes it wrote on the nodes: each view runs its own module
+                marked = cv.evaluate("(el) => !!el.querySelector('.pg-el > *').__pgAttrs")
+                if marked != (k == "B"):
+                    raise RuntimeError(f"the view {k} does not run module {k}")
+                views[k] = cv
+            for r in range(rounds + 1):
+                for k in ("AB" if r % 2 == 0 else "BA"):
+                    cv = views[k]
+                    cv.scroll_into_view_if_needed()
+                    time.sleep(0.3)
+                    pl.drag(page, cv, "link 10 end", 2)          # warm
+                    if r == 0:
+                        continue
+                    res[k]["F"] += pl.floor(cv, block, pl.PAUSE)
+                    n0, a0 = len(pl.STEPS), pl._api(cv, "p.applyTimes.length")
+                    res[k]["drag"] += pl.drag(page, cv, "link 10 end", block)[0]
+                    res[k]["apply"] += pl._api(cv, f"p.applyTimes.slice({a0})")
+                    res[k]["ack → painted"] += [st["tPaint"] - st["tAck"] for st in pl.STEPS[n0:]]
+        finally:
+            browser.close()
+            server.stop()
+    return res
+
+
 def _med(xs):
     xs = sorted(x for x in xs if x is not None)
     return (round(statistics.median(xs), 2), round(xs[int(0.9 * (len(xs) - 1))], 2)) if xs else None
@@ -160,6 +220,8 @@ def main(argv=None) -> int:
     ap.add_argument("--a-rev", default="HEAD", help="git revision whose canvas.js is A")
     ap.add_argument("--a-file", default=None, help="a file that is A (instead of --a-rev)")
     ap.add_argument("--rounds", type=int, default=6)
+    ap.add_argument("--voila", action="store_true", help="the A/B in Voila (module docstring)")
+    ap.add_argument("--block", type=int, default=8, help="--voila: steps per block")
     a = ap.parse_args(argv)
     from playwright.sync_api import sync_playwright
 
@@ -169,6 +231,12 @@ def main(argv=None) -> int:
            subprocess.run(["git", "show", f"{a.a_rev}:planargeo/widgets/canvas.js"], cwd=ROOT,
                           check=True, capture_output=True, text=True).stdout)
     new = (ROOT / "planargeo" / "widgets" / "canvas.js").read_text()
+    if a.voila:
+        res = voila(old, new, a.rounds, a.block)
+        print("Voila, the chain: ms, median (p90)")
+        for m in res["A"]:
+            print(f"  {m:14s} A {_med(res['A'][m])}   B {_med(res['B'][m])}   (n {len(res['A'][m])}, {len(res['B'][m])})")
+        return 0
     state, msgs, kinds = chain_updates()
     print(f"{len(msgs)} updates: " + ", ".join(f"{k} {kinds.count(k)}" for k in dict.fromkeys(kinds)))
     srv = serve({"/": ((PAGE % str(PictureCanvas._css)).encode(), "text/html"),

@@ -178,6 +178,9 @@ function render({ model, el }) {
   function maybeTick() {
     if (model.get("playing") && !tickHalted && !inflight && !pending.size && !drag) send({ type: "tick" });
   }
+  function say(text) {          // beside "reset view" (whole in its title); written only when it changes
+    if (status.textContent !== text) status.title = status.textContent = text;
+  }
   function askSync() {
     if (syncAsked) return;
     syncAsked = true;
@@ -188,7 +191,7 @@ function render({ model, el }) {
     if (!m) return;
     if (m.type === "update") {     // a new state shown: a refusal said beside "reset view" is past
       nPushed += 1;
-      if (!tickHalted) status.title = status.textContent = "";
+      if (!tickHalted) say("");
       arrivals.push(performance.now());
       if (arrivals.length > 1000) arrivals.shift();
       applyFrame(m);
@@ -200,7 +203,7 @@ function render({ model, el }) {
       return;
     }
     if (m.type === "halt") {        // Play refused in a frame the kernel sent alone
-      status.title = status.textContent = m.message || "";
+      say(m.message || "");
       tickHalted = true;
       return;
     }
@@ -219,7 +222,7 @@ function render({ model, el }) {
     if (m.update) applyFrame(m.update);
     if (done) { done.tAck = tAck; done.tApplied = performance.now(); done.kernelMs = m.ms; }
     requestAnimationFrame(() => { if (done) done.tPaint = performance.now(); });
-    status.title = status.textContent = m.ok === false && m.message ? m.message : "";
+    say(m.ok === false && m.message ? m.message : "");
     if (done && done.type === "sync") syncAsked = false;
     if (done && done.type === "tick" && m.ok === false) tickHalted = true;
     if (done && done.type === "view" && !m.update?.head && !pending.has("view")) clearLocalView();
