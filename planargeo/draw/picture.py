@@ -662,10 +662,10 @@ class Picture:
         ok = np.all(np.isfinite(xy), axis=1)
         if ok.all():
             parts = [{"p": "path", "xy": xy, "closed": bool(closed)}]
-        else:  # non-finite rows separate pieces (matplotlib's convention)
-            cuts = np.flatnonzero(~ok)
-            pieces = (q[np.all(np.isfinite(q), axis=1)] for q in np.split(xy, cuts))
-            parts = [{"p": "path", "xy": q, "closed": bool(closed)} for q in pieces if len(q) > 1]
+        else:  # non-finite rows separate pieces (matplotlib's convention): the rows between cuts
+            cuts = np.flatnonzero(~ok).tolist()
+            parts = [{"p": "path", "xy": xy[a + 1:b].copy(), "closed": bool(closed)}
+                     for a, b in zip([-1, *cuts], [*cuts, len(xy)]) if b - a > 2]
         if label and ok[0]:
             parts.append(_text_part(xy[0, 0], xy[0, 1], label, 4.0, 4.0))
         self._add(id, role, symbol, desc, parts, color=_color(role, color), width=width,
