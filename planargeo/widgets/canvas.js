@@ -2,7 +2,7 @@
 //
 // The picture arrives as keyed updates (planargeo/widgets/canvas.py's docstring): each
 // element keeps its SVG group, found by id, and only the elements whose data changed
-// are redrawn; the handles keep their nodes.  A view starts from the synced "snapshot"
+// are redrawn (writing only the attributes whose value changed); the handles keep their nodes.  A view starts from the synced "snapshot"
 // and asks for the whole picture ("sync") whenever an update does not apply to its version.
 // What happens in the page, at once:
 //   * the figure fits its container: shrunk (its text drawn larger, never shown below MIN_TEXT_PX)
